@@ -1,0 +1,207 @@
+"""The parameter catalogue: the single source of truth for every valve parameter.
+
+The table, the diagram, the *.prm format, the emulator's object dictionary and the EDS export
+all derive from :data:`CATALOGUE`. Nothing about a parameter is written down anywhere else.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterable, Iterator, Mapping
+from dataclasses import dataclass
+
+from prm9tool.catalogue._comm import (
+    COMMUNICATION,
+    ERROR_HISTORY_DEPTH,
+    LOAD_SIGNATURE,
+    SAVE_SIGNATURE,
+)
+from prm9tool.catalogue._control import (
+    CANOPEN_SETTINGS,
+    CONTROLLERS,
+    CURRENT_AND_DITHER,
+    DEVICE_PROFILE,
+    EXTERNAL_SENSOR,
+    EXTERNAL_SENSOR_DATA,
+    MONITORING,
+)
+from prm9tool.catalogue._setpoint import (
+    IDENTITY,
+    LIVE,
+    SETPOINT,
+    SETPOINT_LINEARIZATION,
+    SIGNAL_TYPES,
+)
+from prm9tool.catalogue.schema import (
+    Access,
+    Applies,
+    DataType,
+    ObjAccess,
+    Parameter,
+    Texts,
+)
+from prm9tool.variant import Coils, Variant
+
+__all__ = [
+    "CATALOGUE",
+    "ERROR_HISTORY_DEPTH",
+    "LOAD_SIGNATURE",
+    "SAVE_SIGNATURE",
+    "SIGNAL_TYPES",
+    "Access",
+    "Applies",
+    "Catalogue",
+    "DataType",
+    "ObjAccess",
+    "Parameter",
+    "Problem",
+    "Texts",
+]
+
+# Recommended setpoint signal types per coil layout (manual table 8-4).
+RECOMMENDED_SETPOINT_TYPES: Mapping[Coils, frozenset[int]] = {
+    Coils.AB: frozenset({9, 5, 3}),  # ±10 V, ±10 mA, 12±8 mA (= 4…20 mA bipolar)
+    Coils.A: frozenset({6, 0, 2}),  # 0…10 V, 0…20 mA, 4…20 mA
+    Coils.B: frozenset({6, 0, 2}),
+}
+
+
+@dataclass(frozen=True)
+class Problem:
+    """A rule violation in a parameter set; ``severity`` is ``error`` or ``warning``."""
+
+    mnemonics: tuple[str, ...]
+    message: str
+    severity: str = "error"
+
+
+class Catalogue:
+    """All parameters, with lookups by mnemonic and by object-dictionary address."""
+
+    def __init__(self, parameters: Iterable[Parameter]) -> None:
+        self._parameters = tuple(parameters)
+        self._by_mnemonic = {p.mnemonic: p for p in self._parameters}
+        self._by_key = {p.key: p for p in self._parameters}
+
+    def __iter__(self) -> Iterator[Parameter]:
+        return iter(self._parameters)
+
+    def __len__(self) -> int:
+        return len(self._parameters)
+
+    def __contains__(self, mnemonic: object) -> bool:
+        return mnemonic in self._by_mnemonic
+
+    def __getitem__(self, mnemonic: str) -> Parameter:
+        return self._by_mnemonic[mnemonic]
+
+    def get(self, mnemonic: str) -> Parameter | None:
+        """The parameter with that mnemonic, or None."""
+        return self._by_mnemonic.get(mnemonic)
+
+    def by_address(self, index: int, subindex: int) -> Parameter | None:
+        """The parameter at ``index``/``subindex``, or None."""
+        return self._by_key.get((index, subindex))
+
+    def indices(self) -> set[int]:
+        """All object indices that exist in the catalogue."""
+        return {p.index for p in self._parameters}
+
+    def for_variant(self, variant: Variant) -> list[Parameter]:
+        """Every parameter that exists on ``variant``, in catalogue order."""
+        return [p for p in self._parameters if p.applies(variant)]
+
+    def file_parameters(self, variant: Variant) -> list[Parameter]:
+        """The parameter set a *.prm file and an upload carry for ``variant``."""
+        return [p for p in self.for_variant(variant) if p.in_file]
+
+    def visible(self, variant: Variant, access: Access) -> list[Parameter]:
+        """Parameters shown in the parameter list at ``access`` (Basic hides expert ones)."""
+        result = []
+        for p in self.for_variant(variant):
+            if p.group == "canopen_comm" or p.group == "profile_types":
+                continue
+            if access is Access.BASIC and p.access is Access.EXPERT:
+                continue
+            if p.group == "process_values" and access is Access.BASIC:
+                continue
+            result.append(p)
+        return result
+
+    def defaults(self, variant: Variant, node_id: int = 0) -> dict[str, int | str]:
+        """Factory defaults (raw) of every parameter on ``variant``."""
+        return {p.mnemonic: p.default_for(variant, node_id) for p in self.for_variant(variant)}
+
+    def check_rules(self, variant: Variant, values: Mapping[str, int | str]) -> list[Problem]:
+        """Cross-parameter rules (current limits, monotonic curves, recommended types)."""
+        problems: list[Problem] = []
+        curnorm = values.get("CURNORM", self["CURNORM"].default)
+        for mn in ("LIMTA", "LIMTB"):
+            value = values.get(mn)
+            if isinstance(value, int) and isinstance(curnorm, int) and value > curnorm:
+                problems.append(
+                    Problem(
+                        (mn, "CURNORM"),
+                        f"{mn} = {value} mA is above the nominal coil current CURNORM = {curnorm} mA",
+                    )
+                )
+        for prefix in ("SETPLIN", "SENSLIN"):
+            problems.extend(_check_curve(prefix, values))
+        setp_type = values.get("AINSETP")
+        if isinstance(setp_type, int) and setp_type != 14:
+            recommended = RECOMMENDED_SETPOINT_TYPES[variant.coils]
+            if setp_type not in recommended:
+                label = self["AINSETP"].choice_text(setp_type)
+                problems.append(
+                    Problem(
+                        ("AINSETP",),
+                        f"AINSETP: {label} is not a recommended setpoint type for "
+                        f"{variant.label} valves (manual table 8-4)",
+                        "warning",
+                    )
+                )
+        if not variant.canopen:
+            for mn in ("AINSETP", "SENSTYPE"):
+                if values.get(mn) == 14:
+                    problems.append(Problem((mn,), f"{mn}: 'value over CANopen' needs a -CA valve"))
+        return problems
+
+
+def _check_curve(prefix: str, values: Mapping[str, int | str]) -> list[Problem]:
+    problems = []
+    for axis in ("X", "Y"):
+        names = [f"{prefix}{axis}{letter}" for letter in "ABCDEFGHI"]
+        points = [values.get(n) for n in names]
+        if not all(isinstance(v, int) for v in points):
+            continue
+        for left, right, a, b in zip(names, names[1:], points, points[1:], strict=False):
+            assert isinstance(a, int) and isinstance(b, int)
+            if b < a or (axis == "X" and b == a):
+                rule = "increase strictly" if axis == "X" else "be monotonic"
+                problems.append(
+                    Problem(
+                        (left, right),
+                        f"{prefix} linearization points must {rule}: {right} < {left}"
+                        if b < a
+                        else f"{prefix}: {right} equals {left}; X points must differ",
+                    )
+                )
+                break
+    return problems
+
+
+CATALOGUE = Catalogue(
+    [
+        *IDENTITY,
+        *LIVE,
+        *SETPOINT,
+        *SETPOINT_LINEARIZATION,
+        *CONTROLLERS,
+        *CURRENT_AND_DITHER,
+        *MONITORING,
+        *EXTERNAL_SENSOR,
+        *EXTERNAL_SENSOR_DATA,
+        *CANOPEN_SETTINGS,
+        *DEVICE_PROFILE,
+        *COMMUNICATION,
+    ]
+)

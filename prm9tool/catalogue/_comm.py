@@ -1,0 +1,379 @@
+"""Catalogue data: the CiA 301 communication profile area of a -CA valve (manual table 7-13).
+
+These objects are configured by the CANopen master and kept by the valve with 0x1010; they are
+not part of the *.prm parameter set (``in_file=False``), because COB-IDs depend on the node ID
+of each valve on a production line (decision).
+"""
+
+from __future__ import annotations
+
+import dataclasses
+
+from prm9tool.catalogue._setpoint import CA_ONLY, RO, STR, U8, U16, U32, T
+from prm9tool.catalogue.schema import (
+    EVERY_VARIANT as ALL,
+)
+from prm9tool.catalogue.schema import Access, DataType, ObjAccess, Parameter, Texts
+
+WO = ObjAccess.WO
+CONST = ObjAccess.CONST
+ERROR_HISTORY_DEPTH = 8  # 0x1003 keeps the 8 newest errors (decision)
+SAVE_SIGNATURE = 0x65766173  # "save" little-endian (CiA 301)
+LOAD_SIGNATURE = 0x64616F6C  # "load" little-endian (CiA 301)
+
+
+def _c(
+    mnemonic: str,
+    index: int,
+    sub: int,
+    dtype: DataType,
+    default: int | str,
+    text: Texts,
+    obj: ObjAccess = RO,
+    lo: int | None = None,
+    hi: int | None = None,
+    node_relative: bool = False,
+    applies: object = CA_ONLY,
+    source: str = "table 7-13",
+    unit: str = "",
+) -> Parameter:
+    nat_lo, nat_hi = dtype.natural_range
+    return Parameter(
+        mnemonic,
+        index,
+        sub,
+        dtype,
+        nat_lo if lo is None else lo,
+        nat_hi if hi is None else hi,
+        default,
+        group="canopen_comm",
+        access=Access.EXPERT if obj in (ObjAccess.RW, WO) else Access.READ_ONLY,
+        obj_access=obj,
+        in_file=False,
+        node_relative=node_relative,
+        text=text,
+        applies=applies,  # type: ignore[arg-type]
+        source=source,
+        unit=unit,
+    )
+
+
+def _pdo(
+    kind: str, n: int, comm: int, mapping: tuple[int, ...], cob: int, with_timer: bool
+) -> list[Parameter]:
+    rx = kind == "RPDO"
+    result = [
+        _c(
+            f"{kind}{n}SUBS",
+            comm,
+            0,
+            U8,
+            5 if not rx else 2,
+            T(
+                f"{kind}{n} communication: highest subindex",
+                f"{kind}{n} Kommunikation: höchster Subindex",
+                f"{kind}{n} komunikace: nejvyšší subindex",
+            ),
+        ),
+        _c(
+            f"{kind}{n}COBID",
+            comm,
+            1,
+            U32,
+            cob,
+            T(f"{kind}{n} COB-ID", f"{kind}{n} COB-ID", f"{kind}{n} COB-ID"),
+            ObjAccess.RW,
+            node_relative=True,
+        ),
+        _c(
+            f"{kind}{n}TYPE",
+            comm,
+            2,
+            U8,
+            0xFF,
+            T(
+                f"{kind}{n} transmission type",
+                f"{kind}{n} Übertragungsart",
+                f"{kind}{n} typ přenosu",
+            ),
+            ObjAccess.RW,
+            source="table 7-13, 7-12 (RPDO type writable as §7.6 writes it: decision)",
+        ),
+    ]
+    if with_timer:
+        result.append(
+            _c(
+                f"{kind}{n}TIMER",
+                comm,
+                5,
+                U16,
+                0x1388,
+                T(
+                    f"{kind}{n} event timer",
+                    f"{kind}{n} Ereignis-Timer",
+                    f"{kind}{n} časovač událostí",
+                ),
+                ObjAccess.RW,
+                unit="ms",
+            )
+        )
+    map_index = (0x1600 if rx else 0x1A00) + n - 1
+    result.append(
+        _c(
+            f"{kind}{n}MAPN",
+            map_index,
+            0,
+            U8,
+            len(mapping),
+            T(
+                f"{kind}{n} mapping: number of entries",
+                f"{kind}{n} Mapping: Anzahl Einträge",
+                f"{kind}{n} mapování: počet položek",
+            ),
+        )
+    )
+    for sub, entry in enumerate(mapping, start=1):
+        result.append(
+            _c(
+                f"{kind}{n}MAP{sub}",
+                map_index,
+                sub,
+                U32,
+                entry,
+                T(
+                    f"{kind}{n} mapping entry {sub}",
+                    f"{kind}{n} Mapping-Eintrag {sub}",
+                    f"{kind}{n} mapovaný objekt {sub}",
+                ),
+            )
+        )
+    return result
+
+
+COMMUNICATION: list[Parameter] = [
+    _c(
+        "DEVTYPE",
+        0x1000,
+        0,
+        U32,
+        0x198,
+        T("Device type", "Gerätetyp", "Typ zařízení"),
+        CONST,
+        applies=ALL,
+    ),
+    _c("ERRREG", 0x1001, 0, U8, 0, T("Error register", "Fehlerregister", "Chybový registr")),
+    _c(
+        "ERRCOUNT",
+        0x1003,
+        0,
+        U8,
+        0,
+        T(
+            "Pre-defined error field: number of errors",
+            "Fehlerspeicher: Anzahl Fehler",
+            "Předdefinované chybové pole: počet položek",
+        ),
+        ObjAccess.RW,
+        0,
+        0,
+        source="table 7-13 (only 0 may be written: clears the history, CiA 301)",
+    ),
+    *[
+        _c(
+            f"ERRHIST{k}",
+            0x1003,
+            k,
+            U32,
+            0,
+            T(
+                f"Error history entry {k}",
+                f"Fehlerspeicher Eintrag {k}",
+                f"Položka chybového pole {k}",
+            ),
+        )
+        for k in range(1, ERROR_HISTORY_DEPTH + 1)
+    ],
+    _c(
+        "COBIDSYNC",
+        0x1005,
+        0,
+        U32,
+        0x80,
+        T("COB-ID SYNC", "COB-ID SYNC", "COB-ID zprávy SYNC"),
+        ObjAccess.RW,
+    ),
+    _c(
+        "CYCLEPERIOD",
+        0x1006,
+        0,
+        U32,
+        0,
+        T("Communication cycle period", "Kommunikationszykluszeit", "Perioda komunikačního cyklu"),
+        ObjAccess.RW,
+        unit="µs",
+    ),
+    _c(
+        "DEVNAME",
+        0x1008,
+        0,
+        STR,
+        "PRM9",
+        T("Manufacturer device name", "Gerätename des Herstellers", "Název zařízení výrobce"),
+        CONST,
+    ),
+    _c(
+        "HWVER",
+        0x1009,
+        0,
+        STR,
+        "1.00",
+        T("Manufacturer hardware version", "Hardware-Version", "Verze HW výrobce"),
+        CONST,
+    ),
+    _c(
+        "STORESUBS",
+        0x1010,
+        0,
+        U8,
+        1,
+        T(
+            "Store parameters: highest subindex",
+            "Parameter speichern: höchster Subindex",
+            "Uložení parametrů: nejvyšší subindex",
+        ),
+        source="CiA 301 (0x1010: seed 003)",
+    ),
+    _c(
+        "STOREALL",
+        0x1010,
+        1,
+        U32,
+        1,
+        T(
+            'Store all parameters (write "save")',
+            'Alle Parameter speichern ("save")',
+            'Uložit všechny parametry ("save")',
+        ),
+        ObjAccess.RW,
+        source="CiA 301 (reads 1: stores on command)",
+    ),
+    _c(
+        "RESTORESUBS",
+        0x1011,
+        0,
+        U8,
+        1,
+        T(
+            "Restore defaults: highest subindex",
+            "Werkseinstellung: höchster Subindex",
+            "Obnovení výchozích hodnot: nejvyšší subindex",
+        ),
+        source="CiA 301",
+    ),
+    _c(
+        "RESTOREALL",
+        0x1011,
+        1,
+        U32,
+        1,
+        T(
+            'Restore all default parameters (write "load")',
+            'Alle Werkseinstellungen laden ("load")',
+            'Obnovit všechny výchozí parametry ("load")',
+        ),
+        ObjAccess.RW,
+        source="CiA 301",
+    ),
+    _c(
+        "COBIDEMCY",
+        0x1014,
+        0,
+        U32,
+        0x80,
+        T("COB-ID emergency message", "COB-ID Emergency", "COB-ID emergency zpráv"),
+        ObjAccess.RW,
+        node_relative=True,
+        source="table 7-13 (U32 as §7.6 writes 4 bytes; default 0x80+node: decision)",
+    ),
+    _c(
+        "HEARTBEAT",
+        0x1017,
+        0,
+        U16,
+        1000,
+        T("Producer heartbeat time", "Heartbeat-Zeit", "Doba heartbeat odesílatele"),
+        ObjAccess.RW,
+        unit="ms",
+    ),
+    _c(
+        "IDSUBS",
+        0x1018,
+        0,
+        U8,
+        4,
+        T("Identity: highest subindex", "Identität: höchster Subindex", "Identita: počet položek"),
+    ),
+    _c("VENDORID", 0x1018, 1, U32, 0xE6, T("Vendor ID", "Hersteller-ID", "Vendor ID"), CONST),
+    _c(
+        "PRODCODE",
+        0x1018,
+        2,
+        U32,
+        0x0009,
+        T("Product code", "Produktcode", "Produktový klíč"),
+        source="table 7-13 (value: decision)",
+    ),
+    _c(
+        "REVISION",
+        0x1018,
+        3,
+        U32,
+        0,
+        T(
+            "Revision number (firmware major<<16 | minor<<8 | patch)",
+            "Revisionsnummer",
+            "Číslo revize",
+        ),
+        source="table 7-13 (encoding: decision)",
+    ),
+    _c(
+        "NMTSTARTUP",
+        0x1F80,
+        0,
+        U32,
+        2,
+        T(
+            "NMT startup (0 = start automatically)",
+            "NMT-Start (0 = automatisch)",
+            "Spuštění NMT (0 = automaticky)",
+        ),
+        ObjAccess.RW,
+        0,
+        2,
+    ),
+    *_pdo("RPDO", 1, 0x1400, (0x60400010, 0x63000110), 0x40000200, with_timer=False),
+    *_pdo("RPDO", 2, 0x1401, (0x21000210,), 0x40000300, with_timer=False),
+    *_pdo("TPDO", 1, 0x1800, (0x60410010, 0x63010110), 0x180, with_timer=True),
+    *_pdo("TPDO", 2, 0x1801, (0x21000110, 0x21000610), 0x280, with_timer=True),
+]
+
+
+_EVERY_VALVE = {
+    "DEVTYPE",
+    "ERRREG",
+    "ERRCOUNT",
+    "DEVNAME",
+    "HWVER",
+    "STORESUBS",
+    "STOREALL",
+    "RESTORESUBS",
+    "RESTOREALL",
+    "IDSUBS",
+    "VENDORID",
+    "PRODCODE",
+    "REVISION",
+    *(f"ERRHIST{k}" for k in range(1, ERROR_HISTORY_DEPTH + 1)),
+}
+COMMUNICATION = [
+    dataclasses.replace(p, applies=ALL) if p.mnemonic in _EVERY_VALVE else p for p in COMMUNICATION
+]

@@ -1,0 +1,293 @@
+"""Typed description of one valve parameter (object-dictionary entry)."""
+
+from __future__ import annotations
+
+import math
+import struct
+from dataclasses import dataclass, field
+from enum import IntEnum, StrEnum
+
+from prm9tool.errors import ValueRangeError
+from prm9tool.variant import Coils, Config, Variant
+
+
+class DataType(IntEnum):
+    """CiA 301 data types used by the PRM9 (the numbers are the CiA 301 type codes)."""
+
+    BOOLEAN = 0x01
+    INTEGER8 = 0x02
+    INTEGER16 = 0x03
+    INTEGER32 = 0x04
+    UNSIGNED8 = 0x05
+    UNSIGNED16 = 0x06
+    UNSIGNED32 = 0x07
+    VISIBLE_STRING = 0x09
+
+    @property
+    def size(self) -> int:
+        """Encoded size in bytes (0 for variable-length strings)."""
+        return _SIZES[self]
+
+    @property
+    def is_string(self) -> bool:
+        """True for the variable-length string type."""
+        return self is DataType.VISIBLE_STRING
+
+    @property
+    def natural_range(self) -> tuple[int, int]:
+        """The full range the type can hold."""
+        return _RANGES[self]
+
+    def encode(self, value: int | str) -> bytes:
+        """Encode a raw value little-endian as on the CAN bus."""
+        if self.is_string:
+            return str(value).encode("latin-1", errors="replace")
+        return struct.pack("<" + _FORMATS[self], int(value))
+
+    def decode(self, data: bytes) -> int | str:
+        """Decode little-endian bytes; raises ``struct.error``/``ValueError`` on wrong length."""
+        if self.is_string:
+            return data.decode("latin-1")
+        return int(struct.unpack("<" + _FORMATS[self], data)[0])
+
+
+_SIZES = {
+    DataType.BOOLEAN: 1,
+    DataType.INTEGER8: 1,
+    DataType.INTEGER16: 2,
+    DataType.INTEGER32: 4,
+    DataType.UNSIGNED8: 1,
+    DataType.UNSIGNED16: 2,
+    DataType.UNSIGNED32: 4,
+    DataType.VISIBLE_STRING: 0,
+}
+_FORMATS = {
+    DataType.BOOLEAN: "B",
+    DataType.INTEGER8: "b",
+    DataType.INTEGER16: "h",
+    DataType.INTEGER32: "i",
+    DataType.UNSIGNED8: "B",
+    DataType.UNSIGNED16: "H",
+    DataType.UNSIGNED32: "I",
+}
+_RANGES = {
+    DataType.BOOLEAN: (0, 1),
+    DataType.INTEGER8: (-128, 127),
+    DataType.INTEGER16: (-32768, 32767),
+    DataType.INTEGER32: (-(2**31), 2**31 - 1),
+    DataType.UNSIGNED8: (0, 255),
+    DataType.UNSIGNED16: (0, 65535),
+    DataType.UNSIGNED32: (0, 2**32 - 1),
+    DataType.VISIBLE_STRING: (0, 0),
+}
+
+
+class Access(StrEnum):
+    """Who may change a parameter in the program."""
+
+    BASIC = "basic"  # visible and editable at Basic level
+    EXPERT = "expert"  # visible and editable only at Expert level
+    READ_ONLY = "read-only"  # live or identity values, never written by the program
+
+
+class ObjAccess(StrEnum):
+    """Object-dictionary access as seen over SDO/USB (CiA 301 notation)."""
+
+    RO = "ro"
+    RW = "rw"
+    WO = "wo"
+    CONST = "const"
+
+
+@dataclass(frozen=True)
+class Texts:
+    """A text in the three program languages."""
+
+    en: str
+    de: str
+    cs: str
+
+    def get(self, language: str) -> str:
+        """The text in ``language`` (``en``, ``de`` or ``cs``), English as fallback."""
+        return getattr(self, language, None) or self.en
+
+
+@dataclass(frozen=True)
+class Applies:
+    """The variants a parameter exists on."""
+
+    configs: frozenset[Config] = frozenset(Config)
+    coils: frozenset[Coils] = frozenset(Coils)
+    canopen_only: bool = False
+
+    def __call__(self, variant: Variant) -> bool:
+        return (
+            variant.config in self.configs
+            and variant.coils in self.coils
+            and (variant.canopen or not self.canopen_only)
+        )
+
+    def describe(self) -> str:
+        """Human-readable list of the variants, e.g. ``E04, coils AB/A, -CA only``."""
+        parts = ["/".join(sorted(c.value for c in self.configs))]
+        if self.coils != frozenset(Coils):
+            parts.append("coils " + "/".join(sorted(c.value for c in self.coils)))
+        if self.canopen_only:
+            parts.append("-CA only")
+        return ", ".join(parts)
+
+
+EVERY_VARIANT = Applies()
+
+
+@dataclass(frozen=True)
+class Parameter:
+    """One object-dictionary entry with everything the program needs to know about it.
+
+    ``display = raw * scale``; ``decimals`` is the number of decimals an edit field offers.
+    ``default_e04`` overrides ``default`` on E04 valves; ``node_relative`` means the real
+    default is ``default + node ID`` (CANopen COB-IDs, written ``$NODEID+...`` in an EDS).
+    ``in_file`` parameters form the parameter set that *.prm files and uploads carry.
+    """
+
+    mnemonic: str
+    index: int
+    subindex: int
+    dtype: DataType
+    raw_min: int
+    raw_max: int
+    default: int | str
+    text: Texts
+    group: str
+    access: Access = Access.EXPERT
+    obj_access: ObjAccess = ObjAccess.RW
+    unit: str = ""
+    scale: float = 1.0
+    decimals: int = 0
+    applies: Applies = EVERY_VARIANT
+    in_file: bool = True
+    choices: tuple[tuple[int, Texts], ...] = ()
+    default_e04: int | None = None
+    node_relative: bool = False
+    help: Texts | None = None
+    source: str = ""
+    extra: dict[str, str] = field(default_factory=dict, compare=False, hash=False)
+
+    # --- identity -----------------------------------------------------------------
+    @property
+    def key(self) -> tuple[int, int]:
+        """``(index, subindex)``."""
+        return (self.index, self.subindex)
+
+    @property
+    def address(self) -> str:
+        """``0x6345/1`` style address."""
+        return f"0x{self.index:04X}/{self.subindex}"
+
+    @property
+    def is_string(self) -> bool:
+        """True for string parameters (type key, firmware version, device name)."""
+        return self.dtype.is_string
+
+    @property
+    def writable(self) -> bool:
+        """True if the object dictionary accepts writes."""
+        return self.obj_access in (ObjAccess.RW, ObjAccess.WO)
+
+    def default_for(self, variant: Variant, node_id: int = 0) -> int | str:
+        """Factory default raw value on ``variant`` (``node_id`` for node-relative COB-IDs)."""
+        value = self.default
+        if variant.config is Config.E04 and self.default_e04 is not None:
+            value = self.default_e04
+        if self.node_relative and isinstance(value, int):
+            value += node_id
+        return value
+
+    # --- raw <-> display --------------------------------------------------------------
+    def to_display(self, raw: int | str) -> float | int | str:
+        """Convert a raw value to display units (int when the scale is 1)."""
+        if self.is_string or isinstance(raw, str):
+            return raw
+        if self.scale == 1.0:
+            return int(raw)
+        return raw * self.scale
+
+    def to_raw(self, display: float | int | str) -> int | str:
+        """Convert a display value to the nearest raw value (no range check)."""
+        if self.is_string:
+            return str(display)
+        value = float(display)
+        if not math.isfinite(value):
+            raise ValueRangeError(f"{self.mnemonic}: {display!r} is not a number")
+        return round(value / self.scale)
+
+    def format_display(self, raw: int | str) -> str:
+        """Shortest decimal text that reads back to exactly ``raw`` (used by files and tables)."""
+        if self.is_string or isinstance(raw, str):
+            return str(raw)
+        if self.scale == 1.0:
+            return str(int(raw))
+        value = raw * self.scale
+        for decimals in range(9):
+            text = f"{value:.{decimals}f}"
+            if round(float(text) / self.scale) == raw:
+                return _tidy(text)
+        return repr(value)
+
+    def parse_display(self, text: str) -> int | str:
+        """Parse a display text to a raw value; raises ValueRangeError with the reason."""
+        if self.is_string:
+            return text
+        cleaned = text.strip().replace(",", ".") if text.count(",") == 1 else text.strip()
+        if self.choices and not _is_number(cleaned):
+            for code, label in self.choices:
+                if cleaned.lower() in (label.en.lower(), label.de.lower(), label.cs.lower()):
+                    return code
+        if not _is_number(cleaned):
+            raise ValueRangeError(f"{self.mnemonic}: {text.strip()!r} is not a number")
+        raw = self.to_raw(cleaned)
+        assert isinstance(raw, int)
+        return raw
+
+    # --- validation --------------------------------------------------------------------
+    def check_raw(self, raw: int | str) -> None:
+        """Raise ValueRangeError with a user-facing message if ``raw`` is not allowed."""
+        if self.is_string:
+            if not isinstance(raw, str):
+                raise ValueRangeError(f"{self.mnemonic}: expected text, got {raw!r}")
+            return
+        if isinstance(raw, (str, bool)):
+            raise ValueRangeError(f"{self.mnemonic}: expected a number, got {raw!r}")
+        if self.choices and raw not in {code for code, _ in self.choices}:
+            allowed = ", ".join(str(code) for code, _ in self.choices)
+            raise ValueRangeError(
+                f"{self.mnemonic}: {raw} is not one of the allowed codes {allowed}"
+            )
+        if not self.raw_min <= raw <= self.raw_max:
+            lo, hi = self.format_display(self.raw_min), self.format_display(self.raw_max)
+            unit = f" {self.unit}" if self.unit else ""
+            got = self.format_display(raw)
+            raise ValueRangeError(
+                f"{self.mnemonic}: {got}{unit} is outside the allowed range {lo} … {hi}{unit}"
+            )
+
+    def choice_text(self, raw: int, language: str = "en") -> str:
+        """The label of an enumerated value (or the number if it is not enumerated)."""
+        for code, label in self.choices:
+            if code == raw:
+                return label.get(language)
+        return str(raw)
+
+
+def _is_number(text: str) -> bool:
+    try:
+        float(text)
+    except ValueError:
+        return False
+    return True
+
+
+def _tidy(text: str) -> str:
+    if "." in text:
+        text = text.rstrip("0").rstrip(".")
+    return "0" if text in ("-0", "") else text

@@ -1,0 +1,133 @@
+"""Command line: one parser for the GUI, the offline file tools and the headless batch mode.
+
+Commands other than the GUI never import Qt's GUI modules, so they run on a production line
+without a display. Each command lives in its own module and is imported only when used.
+"""
+
+from __future__ import annotations
+
+import argparse
+import sys
+from collections.abc import Sequence
+from enum import IntEnum
+
+
+class ExitCode(IntEnum):
+    """Documented exit codes (README, docs/batch.md)."""
+
+    OK = 0
+    VERIFY_FAILED = 1
+    USAGE = 2
+    INVALID_FILE = 3
+    NO_DEVICE = 4
+    TYPE_MISMATCH = 5
+    COMMUNICATION = 6
+
+
+def add_device_options(parser: argparse.ArgumentParser) -> None:
+    """Device selection shared by the GUI and the batch mode (one device factory)."""
+    group = parser.add_argument_group("device selection")
+    group.add_argument(
+        "--device",
+        action="append",
+        default=[],
+        metavar="ID",
+        help="USB valve to use (serial number or HID path); repeatable",
+    )
+    group.add_argument("--all", action="store_true", help="use every connected valve")
+    group.add_argument(
+        "--emulator",
+        action="append",
+        default=[],
+        nargs="?",
+        const="",
+        metavar="TYPEKEY[:SERIAL]",
+        help="use an emulated valve of that type; repeatable",
+    )
+    group.add_argument(
+        "--can-interface",
+        default="virtual",
+        help="python-can interface for an emulated -CA valve (default: virtual)",
+    )
+    group.add_argument(
+        "--can-channel", default="prm9tool", help="python-can channel (default: prm9tool)"
+    )
+    group.add_argument(
+        "--can-bitrate",
+        type=int,
+        default=None,
+        help="CAN bit rate in bit/s (default: from the valve's switches)",
+    )
+
+
+def build_parser() -> argparse.ArgumentParser:
+    """The complete argument parser."""
+    parser = argparse.ArgumentParser(
+        prog="prm9tool",
+        description="Parameterize PRM9 proportional valves (GUI, file tools, batch upload).",
+    )
+    parser.add_argument("file", nargs="?", help="*.prm file to open in the GUI")
+    parser.add_argument("--version", action="store_true", help="print the version and exit")
+    files = parser.add_argument_group("offline file tools (no GUI)")
+    files.add_argument(
+        "--new", metavar="TYPEKEY", help="write the factory defaults for TYPEKEY to the -o file"
+    )
+    files.add_argument("--check", metavar="FILE.prm", help="validate a *.prm file")
+    files.add_argument("--export-eds", metavar="TYPEKEY", help="write a CiA 306 EDS for TYPEKEY")
+    files.add_argument("-o", "--output", metavar="FILE", help="output file")
+    batch = parser.add_argument_group("headless production mode (no GUI)")
+    batch.add_argument("--list-devices", action="store_true", help="list valves and exit")
+    batch.add_argument(
+        "--batch",
+        nargs="?",
+        const="",
+        metavar="FILE.prm",
+        help="upload, verify and store FILE.prm into the selected valves",
+    )
+    batch.add_argument(
+        "--download", metavar="OUT.prm", help="with --batch: save a valve's parameters"
+    )
+    batch.add_argument("--report", metavar="REPORT.json", help="with --batch: JSON report file")
+    batch.add_argument(
+        "--force-type",
+        action="store_true",
+        help="with --batch: upload even if the type key does not fit the valve",
+    )
+    batch.add_argument(
+        "--dry-run", action="store_true", help="with --batch: check everything, write nothing"
+    )
+    add_device_options(parser)
+    return parser
+
+
+def main(argv: Sequence[str] | None = None) -> int:
+    """Entry point of ``prm9tool`` and ``python -m prm9tool``; returns the exit code."""
+    parser = build_parser()
+    try:
+        args = parser.parse_args(argv)
+    except SystemExit as exc:
+        return int(exc.code or 0)
+    if args.version:
+        from prm9tool import __version__
+
+        print(f"prm9tool {__version__}")
+        return ExitCode.OK
+    if args.new is not None or args.check is not None:
+        from prm9tool import prmcli
+
+        return prmcli.run(args)
+    if args.export_eds is not None:
+        from prm9tool import eds
+
+        return eds.run(args)
+    if args.list_devices or args.batch is not None:
+        from prm9tool import batch
+
+        return batch.run(args)
+    from prm9tool import app
+
+    return app.run(args)
+
+
+if __name__ == "__main__":  # pragma: no cover
+    sys.exit(main())

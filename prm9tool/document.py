@@ -1,0 +1,232 @@
+"""The parameter document: a valve's parameter set being edited, with undo/redo.
+
+The document holds raw values (as the object dictionary does) for every parameter of its
+variant that belongs in a *.prm file, plus the read-only values last read from a valve. It
+emits Qt signals (QtCore only) so views can observe it; every user edit is one QUndoCommand.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Mapping
+from dataclasses import dataclass, field
+from pathlib import Path
+
+from PySide6.QtCore import QObject, Signal
+
+from prm9tool.catalogue import CATALOGUE, Parameter, Problem
+from prm9tool.errors import ValueRangeError
+from prm9tool.typekey import TypeKey
+from prm9tool.variant import Variant
+
+Raw = int | str
+
+
+@dataclass
+class Edit:
+    """One user edit as data: what changes, and how to go back (the undo layer stores these)."""
+
+    text: str
+    new: dict[str, Raw]
+    old: dict[str, Raw]
+    new_key: TypeKey | None = None
+    old_key: TypeKey | None = None
+    replace: bool = field(default=False)  # True: ``new`` replaces the whole value set
+
+
+class ParameterDocument(QObject):
+    """A parameter set for one valve type; the model every view observes."""
+
+    value_changed = Signal(str)  # mnemonic; emitted once per changed value
+    values_reset = Signal()  # many values or the type key changed at once
+    type_key_changed = Signal(str)
+    modified_changed = Signal(bool)
+    path_changed = Signal(str)
+    validity_changed = Signal()  # problems() may have changed
+
+    def __init__(self, type_key: TypeKey | str, parent: QObject | None = None) -> None:
+        super().__init__(parent)
+        self._type_key = TypeKey.parse(type_key) if isinstance(type_key, str) else type_key
+        self._values: dict[str, Raw] = self._factory_values(self._type_key)
+        self._live: dict[str, Raw] = {}
+        self._path: Path | None = None
+        self.source_serial: int | None = None
+        self.source_firmware: str | None = None
+        self.unknown_entries: list[tuple[str, str]] = []  # kept from files, written back
+        self._saved: tuple[TypeKey, dict[str, Raw]] = (self._type_key, dict(self._values))
+        self._was_modified = False
+        self._edit_sink: Callable[[Edit], None] | None = None
+
+    # --- properties ------------------------------------------------------------------
+    @property
+    def type_key(self) -> TypeKey:
+        """The valve type this document is for."""
+        return self._type_key
+
+    @property
+    def variant(self) -> Variant:
+        """The electronics variant derived from the type key."""
+        return self._type_key.variant
+
+    @property
+    def values(self) -> Mapping[str, Raw]:
+        """Raw values of the file parameter set (read-only view)."""
+        return self._values
+
+    @property
+    def path(self) -> Path | None:
+        """The file the document was loaded from or saved to."""
+        return self._path
+
+    @property
+    def modified(self) -> bool:
+        """True when the values differ from the last load/save (undo back to it clears it)."""
+        return (self._type_key, self._values) != self._saved
+
+    def set_edit_sink(self, sink: Callable[[Edit], None] | None) -> None:
+        """Route edits through ``sink`` (the undo stack), which must call :meth:`redo_edit`."""
+        self._edit_sink = sink
+
+    def redo_edit(self, edit: Edit) -> None:
+        """Apply an edit (used by the undo layer and when no undo layer is attached)."""
+        if edit.new_key is not None:
+            self._replace(edit.new_key, edit.new)
+        else:
+            self._apply(edit.new)
+
+    def undo_edit(self, edit: Edit) -> None:
+        """Revert an edit."""
+        if edit.old_key is not None:
+            self._replace(edit.old_key, edit.old)
+        else:
+            self._apply(edit.old)
+
+    def _commit(self, edit: Edit) -> None:
+        if self._edit_sink is not None:
+            self._edit_sink(edit)
+        else:
+            self.redo_edit(edit)
+
+    def parameters(self) -> list[Parameter]:
+        """The file parameters of this document's variant, in catalogue order."""
+        return CATALOGUE.file_parameters(self.variant)
+
+    # --- values ----------------------------------------------------------------------------
+    def value(self, mnemonic: str) -> Raw:
+        """Raw value of a file parameter, or the last live/read-only value, or its default."""
+        if mnemonic in self._values:
+            return self._values[mnemonic]
+        if mnemonic in self._live:
+            return self._live[mnemonic]
+        return CATALOGUE[mnemonic].default_for(self.variant)
+
+    def display(self, mnemonic: str) -> str:
+        """The value as shown to a user (shortest exact decimal, in display units)."""
+        return CATALOGUE[mnemonic].format_display(self.value(mnemonic))
+
+    def is_default(self, mnemonic: str) -> bool:
+        """True if the value equals the factory default of this variant."""
+        return self.value(mnemonic) == CATALOGUE[mnemonic].default_for(self.variant)
+
+    def validate(self, mnemonic: str, raw: Raw) -> None:
+        """Raise ValueRangeError if ``raw`` may not be set (range, existence, cross rules)."""
+        param = CATALOGUE.get(mnemonic)
+        if param is None or mnemonic not in self._values:
+            raise ValueRangeError(f"{mnemonic}: no such parameter on a {self.variant.label} valve")
+        param.check_raw(raw)
+        trial = dict(self._values)
+        trial[mnemonic] = raw
+        trial.update({k: v for k, v in self._live.items() if k == "CURNORM"})
+        errors = [
+            p
+            for p in CATALOGUE.check_rules(self.variant, trial)
+            if p.severity == "error" and mnemonic in p.mnemonics
+        ]
+        if errors:
+            raise ValueRangeError(errors[0].message)
+
+    def set_value(self, mnemonic: str, raw: Raw, text: str | None = None) -> None:
+        """Set one value as one undoable user edit; raises ValueRangeError with the reason."""
+        self.validate(mnemonic, raw)
+        if self._values[mnemonic] == raw:
+            return
+        label = text or f"{mnemonic} = {CATALOGUE[mnemonic].format_display(raw)}"
+        self._commit(Edit(label, {mnemonic: raw}, {mnemonic: self._values[mnemonic]}))
+
+    def set_values(self, values: Mapping[str, Raw], text: str, validate: bool = True) -> None:
+        """Set many values as ONE undoable step (e.g. "Download from valve", "all ramps")."""
+        changed = {
+            mn: v for mn, v in values.items() if mn in self._values and self._values[mn] != v
+        }
+        if validate:
+            for mn, v in changed.items():
+                CATALOGUE[mn].check_raw(v)
+        if changed:
+            self._commit(Edit(text, changed, {mn: self._values[mn] for mn in changed}))
+
+    def set_type_key(self, key: TypeKey | str) -> None:
+        """Change the valve type: one undoable step; values become that type's defaults."""
+        key = TypeKey.parse(key) if isinstance(key, str) else key
+        if key == self._type_key:
+            return
+        self._commit(
+            Edit(
+                f"Valve selection {key}",
+                self._factory_values(key),
+                dict(self._values),
+                new_key=key,
+                old_key=self._type_key,
+            )
+        )
+
+    def set_live(self, values: Mapping[str, Raw]) -> None:
+        """Record read-only values read from a valve (not undoable, not a modification)."""
+        for mn, v in values.items():
+            if self._live.get(mn) != v:
+                self._live[mn] = v
+                self.value_changed.emit(mn)
+
+    def problems(self) -> list[Problem]:
+        """Cross-parameter problems of the current values (errors and warnings)."""
+        values = dict(self._values)
+        if "CURNORM" in self._live:
+            values["CURNORM"] = self._live["CURNORM"]
+        return CATALOGUE.check_rules(self.variant, values)
+
+    def mark_saved(self, path: Path | None = None) -> None:
+        """Record that the document now equals the file at ``path``."""
+        if path is not None and path != self._path:
+            self._path = path
+            self.path_changed.emit(str(path))
+        self._saved = (self._type_key, dict(self._values))
+        self._emit_modified()
+
+    def _emit_modified(self) -> None:
+        if self.modified != self._was_modified:
+            self._was_modified = self.modified
+            self.modified_changed.emit(self._was_modified)
+
+    # --- internals used by the undo commands ------------------------------------------------
+    def _apply(self, values: Mapping[str, Raw]) -> None:
+        for mn, v in values.items():
+            self._values[mn] = v
+        if len(values) > 8:
+            self.values_reset.emit()
+        else:
+            for mn in values:
+                self.value_changed.emit(mn)
+        self.validity_changed.emit()
+        self._emit_modified()
+
+    def _replace(self, key: TypeKey, values: Mapping[str, Raw]) -> None:
+        self._type_key = key
+        self._values = dict(values)
+        self.type_key_changed.emit(str(key))
+        self.values_reset.emit()
+        self.validity_changed.emit()
+        self._emit_modified()
+
+    @staticmethod
+    def _factory_values(key: TypeKey) -> dict[str, Raw]:
+        return {
+            p.mnemonic: p.default_for(key.variant) for p in CATALOGUE.file_parameters(key.variant)
+        }

@@ -1,0 +1,138 @@
+"""The one exception tree of prm9tool, and the CiA 301 SDO abort codes.
+
+Every error a user can meet derives from :class:`Prm9Error`, so a caller (the GUI, the
+batch mode) can catch one type and show ``str(error)``, which is always a complete sentence.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from enum import IntEnum
+
+
+class AbortCode(IntEnum):
+    """CiA 301 SDO abort codes (the subset a PRM9 answers with)."""
+
+    TOGGLE_BIT = 0x05030000
+    SDO_TIMEOUT = 0x05040000
+    INVALID_COMMAND = 0x05040001
+    OUT_OF_MEMORY = 0x05040005
+    UNSUPPORTED_ACCESS = 0x06010000
+    WRITE_ONLY = 0x06010001
+    READ_ONLY = 0x06010002
+    NO_SUCH_OBJECT = 0x06020000
+    NOT_MAPPABLE = 0x06040041
+    PDO_TOO_LONG = 0x06040042
+    PARAMETER_INCOMPATIBLE = 0x06040043
+    HARDWARE_ERROR = 0x06060000
+    WRONG_LENGTH = 0x06070010
+    LENGTH_TOO_HIGH = 0x06070012
+    LENGTH_TOO_LOW = 0x06070013
+    NO_SUCH_SUBINDEX = 0x06090011
+    INVALID_VALUE = 0x06090030
+    VALUE_TOO_HIGH = 0x06090031
+    VALUE_TOO_LOW = 0x06090032
+    MAX_BELOW_MIN = 0x06090036
+    GENERAL_ERROR = 0x08000000
+    CANNOT_STORE = 0x08000020
+    CANNOT_STORE_LOCAL_CONTROL = 0x08000021
+    CANNOT_STORE_DEVICE_STATE = 0x08000022
+    NO_DATA = 0x08000024
+
+    @property
+    def text(self) -> str:
+        """A short English explanation of the abort code."""
+        return _ABORT_TEXTS.get(self, self.name.replace("_", " ").lower())
+
+
+_ABORT_TEXTS: dict[AbortCode, str] = {
+    AbortCode.TOGGLE_BIT: "toggle bit not alternated",
+    AbortCode.SDO_TIMEOUT: "SDO protocol timed out",
+    AbortCode.INVALID_COMMAND: "command specifier not valid or unknown",
+    AbortCode.UNSUPPORTED_ACCESS: "unsupported access to an object",
+    AbortCode.WRITE_ONLY: "attempt to read a write-only object",
+    AbortCode.READ_ONLY: "attempt to write a read-only object",
+    AbortCode.NO_SUCH_OBJECT: "object does not exist in the object dictionary",
+    AbortCode.WRONG_LENGTH: "data type does not match, length of service parameter does not match",
+    AbortCode.LENGTH_TOO_HIGH: "data type does not match, length too high",
+    AbortCode.LENGTH_TOO_LOW: "data type does not match, length too low",
+    AbortCode.NO_SUCH_SUBINDEX: "sub-index does not exist",
+    AbortCode.INVALID_VALUE: "invalid value for parameter",
+    AbortCode.VALUE_TOO_HIGH: "value of parameter written too high",
+    AbortCode.VALUE_TOO_LOW: "value of parameter written too low",
+    AbortCode.GENERAL_ERROR: "general error",
+    AbortCode.CANNOT_STORE: "data cannot be transferred or stored to the application",
+    AbortCode.CANNOT_STORE_DEVICE_STATE: (
+        "data cannot be transferred or stored because of the present device state"
+    ),
+}
+
+
+class Prm9Error(Exception):
+    """Base of every error prm9tool raises on purpose."""
+
+
+class CommunicationError(Prm9Error):
+    """The valve could not be reached, or the link broke."""
+
+
+class DeviceTimeoutError(CommunicationError):
+    """The valve did not answer in time."""
+
+
+class ProtocolError(CommunicationError):
+    """The valve answered something that is not a valid answer."""
+
+
+class DeviceDisconnectedError(CommunicationError):
+    """The valve (or its USB cable) went away."""
+
+
+class AccessDeniedError(Prm9Error):
+    """The operation is not allowed at the current access level or device state."""
+
+
+class ValueRangeError(Prm9Error):
+    """A value is outside the limits the catalogue allows."""
+
+
+class TypeKeyError(Prm9Error):
+    """A type key is malformed; the message names the wrong part."""
+
+
+@dataclass(frozen=True)
+class FileProblem:
+    """One problem found in a *.prm file, with its 1-based line number (0 = whole file)."""
+
+    line: int
+    message: str
+    severity: str = "error"  # "error" or "warning"
+
+    def format(self, path: str) -> str:
+        """Return the problem as ``FILE:LINE: message`` (the compiler convention)."""
+        prefix = "warning: " if self.severity == "warning" else ""
+        return f"{path}:{self.line}: {prefix}{self.message}"
+
+
+class FileFormatError(Prm9Error):
+    """A *.prm file cannot be used; ``problems`` lists every problem with its line."""
+
+    def __init__(self, path: str, problems: list[FileProblem]) -> None:
+        self.path = path
+        self.problems = problems
+        lines = [p.format(path) for p in problems]
+        super().__init__("\n".join(lines) if lines else f"{path}: invalid file")
+
+
+class SdoAbortError(Prm9Error):
+    """The valve refused an object-dictionary access with a CiA 301 abort code."""
+
+    def __init__(self, index: int, subindex: int, code: int) -> None:
+        self.index = index
+        self.subindex = subindex
+        self.code = code
+        try:
+            text = AbortCode(code).text
+        except ValueError:
+            text = "unknown abort code"
+        super().__init__(f"0x{index:04X}/{subindex}: abort 0x{code:08X} ({text})")

@@ -1,0 +1,260 @@
+"""Measuring points: the signals of the valve's signal chain that can be watched live.
+
+These are the red dots of the signal-flow diagram (manual §8.7.2) and the channels of the
+oscilloscope. The emulator computes every one of them each 200 µs cycle; the USB stream carries
+them by ``code``. Values are raw integers (S16 process values ±16384 = ±100 %, currents in mA,
+duty in 0.01 %, supply in mV, temperature in 0.1 °C); ``scale`` converts to ``unit``.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+from prm9tool.catalogue.schema import EVERY_VARIANT, Applies, Texts
+from prm9tool.variant import Coils, Config, Variant
+
+PERCENT = 100.0 / 16384.0
+T = Texts
+_E04 = Applies(configs=frozenset({Config.E04}))
+_COIL_A = Applies(coils=frozenset({Coils.AB, Coils.A}))
+_COIL_B = Applies(coils=frozenset({Coils.AB, Coils.B}))
+
+
+@dataclass(frozen=True)
+class Signal:
+    """One measuring point."""
+
+    code: int  # stable number used on the USB stream
+    key: str  # stable name used in code, CSV headers and the diagram
+    text: Texts
+    unit: str
+    scale: float
+    block: str  # diagram block the dot sits after
+    applies: Applies = EVERY_VARIANT
+
+    def to_display(self, raw: float) -> float:
+        """Raw value to display units."""
+        return raw * self.scale
+
+
+SIGNALS: tuple[Signal, ...] = (
+    Signal(
+        1,
+        "setpoint_raw",
+        T("Setpoint input", "Sollwerteingang", "Vstup žádané hodnoty"),
+        "%",
+        PERCENT,
+        "setpoint_input",
+    ),
+    Signal(
+        2,
+        "setpoint_threshold",
+        T(
+            "Setpoint after polarity and threshold",
+            "Sollwert nach Polarität und Schwelle",
+            "Žádaná hodnota za polaritou a prahem",
+        ),
+        "%",
+        PERCENT,
+        "threshold",
+    ),
+    Signal(
+        3,
+        "setpoint_gain",
+        T(
+            "Setpoint after gain and offset",
+            "Sollwert nach Verstärkung und Offset",
+            "Žádaná hodnota za zesílením a posunutím",
+        ),
+        "%",
+        PERCENT,
+        "gain_offset",
+    ),
+    Signal(
+        4,
+        "setpoint_linearized",
+        T(
+            "Setpoint after linearization",
+            "Sollwert nach Linearisierung",
+            "Žádaná hodnota za linearizací",
+        ),
+        "%",
+        PERCENT,
+        "setpoint_linearization",
+    ),
+    Signal(
+        5,
+        "demand",
+        T(
+            "Demand value after ramp (0x6310)",
+            "Sollwert nach Rampe (0x6310)",
+            "Hodnota požadavku za rampou (0x6310)",
+        ),
+        "%",
+        PERCENT,
+        "ramps",
+    ),
+    Signal(
+        6,
+        "process_setpoint",
+        T("Process setpoint", "Prozesssollwert", "Žádaná procesní veličina"),
+        "%",
+        PERCENT,
+        "ramps",
+        _E04,
+    ),
+    Signal(
+        7,
+        "process_actual",
+        T(
+            "Process actual value (0x6381)",
+            "Prozessistwert (0x6381)",
+            "Skutečná procesní veličina (0x6381)",
+        ),
+        "%",
+        PERCENT,
+        "ext_sensor_linearization",
+        _E04,
+    ),
+    Signal(
+        8,
+        "process_deviation",
+        T(
+            "Process deviation after gain and offset",
+            "Prozessabweichung nach Verstärkung und Offset",
+            "Regulační odchylka za zesílením a posunutím",
+        ),
+        "%",
+        PERCENT,
+        "gain_offset",
+        _E04,
+    ),
+    Signal(
+        9,
+        "position_setpoint",
+        T("Position setpoint", "Lagesollwert", "Žádaná poloha šoupátka"),
+        "%",
+        PERCENT,
+        "process_controller",
+    ),
+    Signal(
+        10,
+        "position_actual",
+        T(
+            "Spool position actual (0x6301)",
+            "Schieberlage Ist (0x6301)",
+            "Skutečná poloha šoupátka (0x6301)",
+        ),
+        "%",
+        PERCENT,
+        "position_sensor",
+    ),
+    Signal(
+        11,
+        "position_deviation",
+        T(
+            "Position control deviation (0x6350)",
+            "Lageregelabweichung (0x6350)",
+            "Odchylka řízení polohy (0x6350)",
+        ),
+        "%",
+        PERCENT,
+        "position_controller",
+    ),
+    Signal(
+        12,
+        "controller_output",
+        T("Position controller output", "Ausgang Lageregler", "Výstup regulátoru polohy"),
+        "%",
+        PERCENT,
+        "position_controller",
+    ),
+    Signal(
+        13,
+        "current_setpoint_a",
+        T("Current setpoint coil A", "Stromsollwert Spule A", "Žádaný proud cívky A"),
+        "mA",
+        1.0,
+        "current_limit",
+        _COIL_A,
+    ),
+    Signal(
+        14,
+        "current_setpoint_b",
+        T("Current setpoint coil B", "Stromsollwert Spule B", "Žádaný proud cívky B"),
+        "mA",
+        1.0,
+        "current_limit",
+        _COIL_B,
+    ),
+    Signal(
+        15,
+        "current_a",
+        T("Coil current A", "Spulenstrom A", "Proud cívky A"),
+        "mA",
+        1.0,
+        "dither",
+        _COIL_A,
+    ),
+    Signal(
+        16,
+        "current_b",
+        T("Coil current B", "Spulenstrom B", "Proud cívky B"),
+        "mA",
+        1.0,
+        "dither",
+        _COIL_B,
+    ),
+    Signal(
+        17,
+        "pwm_a",
+        T("PWM duty coil A", "PWM-Tastgrad Spule A", "Střída PWM cívky A"),
+        "%",
+        0.01,
+        "dither",
+        _COIL_A,
+    ),
+    Signal(
+        18,
+        "pwm_b",
+        T("PWM duty coil B", "PWM-Tastgrad Spule B", "Střída PWM cívky B"),
+        "%",
+        0.01,
+        "dither",
+        _COIL_B,
+    ),
+    Signal(
+        19,
+        "supply_voltage",
+        T("Supply voltage", "Versorgungsspannung", "Napájecí napětí"),
+        "V",
+        0.001,
+        "supply",
+    ),
+    Signal(
+        20,
+        "temperature",
+        T("Electronics temperature", "Elektroniktemperatur", "Teplota elektroniky"),
+        "°C",
+        0.1,
+        "supply",
+    ),
+    Signal(
+        21,
+        "sensor_raw",
+        T("External sensor input", "Eingang externer Sensor", "Vstup externího snímače"),
+        "%",
+        PERCENT,
+        "ext_sensor",
+        _E04,
+    ),
+)
+
+BY_KEY = {s.key: s for s in SIGNALS}
+BY_CODE = {s.code: s for s in SIGNALS}
+MAX_CHANNELS = 3  # the valve streams at most three measuring points at once (manual §8.7.2)
+
+
+def signals_for(variant: Variant) -> list[Signal]:
+    """The measuring points that exist on ``variant``."""
+    return [s for s in SIGNALS if s.applies(variant)]

@@ -1,0 +1,127 @@
+"""The parameter catalogue is consistent: unique names and addresses, sane defaults, texts."""
+
+from __future__ import annotations
+
+import pytest
+
+from prm9tool.catalogue import CATALOGUE, Access, ObjAccess
+from prm9tool.variant import ALL_VARIANTS, Coils, Config, Variant
+
+BASIC_LIST = [
+    "AINSETP",
+    "INVERSEP",
+    "THRESETP",
+    "RAMPSETPOSUP",
+    "RAMPSETPOSDOWN",
+    "RAMPSETNEGUP",
+    "RAMPSETNEGDOWN",
+    "GAINSETPOS",
+    "GAINSETNEG",
+    "OFFSETPOS",
+    "OFFSETNEG",
+    "LIMTA",
+    "LIMTB",
+    "DYNFREQ",
+    "DTAMP",
+]
+
+
+def test_mnemonics_and_addresses_are_unique():
+    mnemonics = [p.mnemonic for p in CATALOGUE]
+    keys = [p.key for p in CATALOGUE]
+    assert len(set(mnemonics)) == len(mnemonics)
+    assert len(set(keys)) == len(keys)
+
+
+@pytest.mark.parametrize("variant", ALL_VARIANTS, ids=lambda v: v.label)
+def test_defaults_lie_within_ranges(variant):
+    for p in CATALOGUE.for_variant(variant):
+        if not p.is_string and p.obj_access is not ObjAccess.WO and p.group != "canopen_comm":
+            p.check_raw(p.default_for(variant))
+
+
+def test_every_parameter_has_three_languages():
+    for p in CATALOGUE:
+        assert p.text.en and p.text.de and p.text.cs, p.mnemonic
+        for _, label in p.choices:
+            assert label.en and label.de and label.cs
+
+
+def test_basic_list_of_figure_8_18_is_basic_with_the_manual_defaults():
+    two_coils = Variant(Config.E02, Coils.AB)
+    visible = {p.mnemonic for p in CATALOGUE.visible(two_coils, Access.BASIC)}
+    assert set(BASIC_LIST) <= visible
+    defaults = CATALOGUE.defaults(two_coils)
+    shown = {mn: CATALOGUE[mn].format_display(defaults[mn]) for mn in BASIC_LIST}
+    assert shown["AINSETP"] == "9"
+    assert shown["THRESETP"] == "5"
+    assert shown["LIMTA"] == shown["LIMTB"] == "2400"
+    assert shown["DYNFREQ"] == "80"
+    assert shown["DTAMP"] == "15"
+    assert shown["GAINSETPOS"] == "1"
+
+
+def test_basic_level_hides_controllers_and_linearizations():
+    e04 = Variant(Config.E04, Coils.AB, True)
+    basic = {p.mnemonic for p in CATALOGUE.visible(e04, Access.BASIC)}
+    expert = {p.mnemonic for p in CATALOGUE.visible(e04, Access.EXPERT)}
+    for hidden in ("POSKP", "PRCKI", "SETPLINXA", "SENSLINYI", "SENSGAIN"):
+        assert hidden not in basic
+        assert hidden in expert
+
+
+def test_variant_filtering():
+    coil_a = Variant(Config.E02, Coils.A)
+    names = {p.mnemonic for p in CATALOGUE.for_variant(coil_a)}
+    assert "LIMTA" in names and "LIMTB" not in names
+    assert "PRCKP" not in names and "HEARTBEAT" not in names
+    e04_ca = Variant(Config.E04, Coils.B, True)
+    names = {p.mnemonic for p in CATALOGUE.for_variant(e04_ca)}
+    assert {"LIMTB", "PRCKP", "SENSTYPE", "HEARTBEAT", "NODEID"} <= names
+    assert "LIMTA" not in names
+
+
+def test_manual_objects_are_present():
+    for index, sub in [
+        (0x1000, 0),
+        (0x1017, 0),
+        (0x1018, 4),
+        (0x1400, 1),
+        (0x1A01, 2),
+        (0x2004, 1),
+        (0x2005, 4),
+        (0x2008, 0),
+        (0x2100, 6),
+        (0x6040, 0),
+        (0x6301, 1),
+        (0x6353, 1),
+        (0x6362, 1),
+        (0x6381, 1),
+    ]:
+        assert CATALOGUE.by_address(index, sub) is not None, hex(index)
+
+
+def test_display_text_round_trips_every_raw_value_of_scaled_parameters():
+    for mn in ("THRESETP", "DTAMP", "GAINSETPOS", "SENSGAIN", "POSKP", "PWR"):
+        p = CATALOGUE[mn]
+        for raw in range(p.raw_min, p.raw_max + 1, max(1, (p.raw_max - p.raw_min) // 997)):
+            assert p.parse_display(p.format_display(raw)) == raw
+
+
+def test_out_of_range_message_names_limits_and_unit():
+    with pytest.raises(Exception, match=r"LIMTA: 4200 mA is outside the allowed range 0 … 4000 mA"):
+        CATALOGUE["LIMTA"].check_raw(4200)
+
+
+def test_cross_rules():
+    variant = Variant(Config.E02, Coils.AB)
+    values = CATALOGUE.defaults(variant)
+    assert CATALOGUE.check_rules(variant, values) == []
+    values["LIMTA"] = 3000
+    values["SETPLINYC"] = -16384
+    values["AINSETP"] = 6
+    problems = CATALOGUE.check_rules(variant, values)
+    messages = " | ".join(p.message for p in problems)
+    assert "LIMTA = 3000 mA is above the nominal coil current CURNORM = 2600 mA" in messages
+    assert "SETPLIN linearization points must be monotonic" in messages
+    assert any(p.severity == "warning" and "table 8-4" in p.message for p in problems)
