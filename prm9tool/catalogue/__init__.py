@@ -23,6 +23,7 @@ from prm9tool.catalogue._control import (
     EXTERNAL_SENSOR,
     EXTERNAL_SENSOR_DATA,
     MONITORING,
+    SERVICE,
 )
 from prm9tool.catalogue._setpoint import (
     IDENTITY,
@@ -118,7 +119,7 @@ class Catalogue:
         """Parameters shown in the parameter list at ``access`` (Basic hides expert ones)."""
         result = []
         for p in self.for_variant(variant):
-            if p.group == "canopen_comm" or p.group == "profile_types":
+            if p.group in ("canopen_comm", "profile_types", "service"):
                 continue
             if access is Access.BASIC and p.access is Access.EXPERT:
                 continue
@@ -202,6 +203,7 @@ CATALOGUE = Catalogue(
         *EXTERNAL_SENSOR_DATA,
         *CANOPEN_SETTINGS,
         *DEVICE_PROFILE,
+        *SERVICE,
         *COMMUNICATION,
     ]
 )

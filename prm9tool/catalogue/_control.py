@@ -717,3 +717,44 @@ __all__ = [
     "MONITORING",
     "U8",
 ]
+
+# Service objects for tuning from the PC (decision, not in the manual): while SETPOVRON = 1
+# the firmware uses SETPOVR instead of the analog setpoint. The firmware switches the override
+# off by itself on restart and when no USB report arrived for 500 ms (a dropped cable never
+# leaves a generator running).
+SERVICE: list[Parameter] = [
+    Parameter(
+        "SETPOVRON",
+        0x2050,
+        1,
+        U8,
+        0,
+        1,
+        0,
+        group="service",
+        in_file=False,
+        choices=OFF_ON,
+        text=T(
+            "Setpoint override from the PC on/off",
+            "Sollwertvorgabe vom PC ein/aus",
+            "Žádaná hodnota z PC zapnuto/vypnuto",
+        ),
+        source="decision (tuning generator)",
+    ),
+    Parameter(
+        "SETPOVR",
+        0x2050,
+        2,
+        S16,
+        -16384,
+        16384,
+        0,
+        group="service",
+        in_file=False,
+        unit="%",
+        scale=PERCENT,
+        decimals=1,
+        text=T("Setpoint override value", "Sollwertvorgabe vom PC", "Žádaná hodnota z PC"),
+        source="decision (tuning generator)",
+    ),
+]
