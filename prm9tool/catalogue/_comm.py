@@ -377,3 +377,13 @@ _EVERY_VALVE = {
 COMMUNICATION = [
     dataclasses.replace(p, applies=ALL) if p.mnemonic in _EVERY_VALVE else p for p in COMMUNICATION
 ]
+
+# Table 7-13: RPDO1/TPDO1 entry 2 follow the control mode 0x6043. ``default`` is the control
+# mode 2 mapping, ``default_e04`` the control mode 4 one (4 is the E04 default of CTRLMODE).
+_CONTROL_MODE_4_MAPPING = {"RPDO1MAP2": 0x63800110, "TPDO1MAP2": 0x63810110}
+COMMUNICATION = [
+    dataclasses.replace(p, default_e04=_CONTROL_MODE_4_MAPPING[p.mnemonic])
+    if p.mnemonic in _CONTROL_MODE_4_MAPPING
+    else p
+    for p in COMMUNICATION
+]
