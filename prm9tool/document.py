@@ -52,6 +52,10 @@ class ParameterDocument(QObject):
         self.source_serial: int | None = None
         self.source_firmware: str | None = None
         self.unknown_entries: list[tuple[str, str]] = []  # kept from files, written back
+        # Comment lines before each file entry, and the comment after its value (prmfile.py);
+        # kept from files and written back so that comments survive a load/save round trip.
+        self.comments: dict[str, list[str]] = {}
+        self.inline_comments: dict[str, str] = {}
         self._saved: tuple[TypeKey, dict[str, Raw]] = (self._type_key, dict(self._values))
         self._was_modified = False
         self._edit_sink: Callable[[Edit], None] | None = None

@@ -219,6 +219,8 @@ class Parameter:
         value = float(display)
         if not math.isfinite(value):
             raise ValueRangeError(f"{self.mnemonic}: {display!r} is not a number")
+        if not math.isfinite(value / self.scale):  # e.g. 1e308 % overflows the raw value
+            raise ValueRangeError(f"{self.mnemonic}: {display!r} is far outside the range")
         return round(value / self.scale)
 
     def format_display(self, raw: int | str) -> str:

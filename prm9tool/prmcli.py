@@ -1,0 +1,80 @@
+"""Offline file commands: ``--new TYPEKEY -o FILE.prm`` and ``--check FILE.prm``.
+
+Both run without Qt (no QtCore either), so they work on a build server or a production line
+without a display. Problems are printed as ``FILE:LINE: message`` on standard output, the
+summary and usage errors on standard error.
+"""
+
+from __future__ import annotations
+
+import argparse
+import sys
+from pathlib import Path
+
+from prm9tool.cli import ExitCode
+from prm9tool.errors import FileFormatError, FileProblem, TypeKeyError
+from prm9tool.prmfile import PrmContents, check_file, write_file
+from prm9tool.typekey import TypeKey
+
+
+def run(args: argparse.Namespace) -> int:
+    """Run ``--new`` or ``--check`` as given in ``args``; returns the exit code."""
+    if args.new is not None and args.check is not None:
+        return _usage("use --new and --check one at a time")
+    if args.new is not None:
+        return new_file(args.new, args.output)
+    return check(args.check)
+
+
+def new_file(type_key_text: str, output: str | None) -> int:
+    """Write the factory defaults of a valve type to ``output`` (``-`` = standard output).
+
+    An existing file is never overwritten: exit code 2 and a message instead.
+    """
+    if not output:
+        return _usage("--new needs an output file: -o FILE.prm (or -o - for standard output)")
+    try:
+        contents = PrmContents.factory(TypeKey.parse(type_key_text))
+    except TypeKeyError as exc:
+        return _usage(str(exc))
+    if output == "-":
+        sys.stdout.write(contents.to_text())
+        return ExitCode.OK
+    if Path(output).exists():
+        return _usage(f"{output} already exists; --new never overwrites a file")
+    try:
+        written = write_file(contents, output, backup=False)
+    except FileFormatError as exc:
+        return _usage(str(exc))
+    _print_problems(output, written.warnings)
+    count = len(written.values)
+    print(f"{output}: factory defaults of {contents.type_key}, {count} parameters", file=sys.stderr)
+    return ExitCode.OK
+
+
+def check(path: str) -> int:
+    """Validate a *.prm file: 0 when it can be used (warnings allowed), 3 when not."""
+    result = check_file(path)
+    _print_problems(path, result.problems)
+    errors = len(result.errors)
+    warnings = len(result.problems) - errors
+    if result.valid:
+        print(f"{path}: valid ({_count(warnings, 'warning')})", file=sys.stderr)
+        return ExitCode.OK
+    counts = f"{_count(errors, 'error')}, {_count(warnings, 'warning')}"
+    print(f"{path}: NOT valid ({counts})", file=sys.stderr)
+    return ExitCode.INVALID_FILE
+
+
+def _print_problems(path: str, problems: list[FileProblem]) -> None:
+    for problem in problems:
+        print(problem.format(path))
+
+
+def _count(number: int, noun: str) -> str:
+    return f"{number} {noun}{'' if number == 1 else 's'}"
+
+
+def _usage(message: str) -> int:
+    print(f"prm9tool: error: {message}", file=sys.stderr)
+    return ExitCode.USAGE

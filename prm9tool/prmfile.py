@@ -1,0 +1,368 @@
+"""*.prm parameter files: read with every problem reported by line, write atomically.
+
+The format is specified in docs/prm-format.md::
+
+    # comments and blank lines anywhere before the checksum
+    format = prm9tool 1
+    type_key = PRM9-06.3Z11/30-24E04S02-CA
+    serial = 1234567                  (optional: the valve the values were read from)
+    firmware = V0.35.16               (optional)
+    AINSETP = 9  # Setpoint signal: signal type
+    ...                               (one MNEMONIC = value per parameter, display units)
+    checksum = crc32:0123abcd         (always the last line)
+
+This module uses no Qt, so ``--check`` and ``--new`` run without it; only
+:func:`load_document` and :func:`save_document` import the (QtCore) document model.
+"""
+
+from __future__ import annotations
+
+import os
+import re
+import zlib
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import TYPE_CHECKING
+
+from prm9tool.atomicfile import atomic_write
+from prm9tool.catalogue import CATALOGUE, Parameter
+from prm9tool.errors import FileFormatError, FileProblem
+from prm9tool.prmcheck import FORMAT_NAME, FORMAT_VERSION, Entry, Header, check_entries
+from prm9tool.typekey import TypeKey
+
+if TYPE_CHECKING:
+    from prm9tool.document import ParameterDocument
+
+MAX_FILE_SIZE = 1 << 20  # a full file is about 4 kB; anything near 1 MiB is not a *.prm file
+BANNER = (
+    "# PRM9 valve parameters, written by prm9tool (format: docs/prm-format.md).",
+    "# One MNEMONIC = value per line, in display units; lines starting with # are comments.",
+)
+
+_NAME = re.compile(r"[A-Za-z_][A-Za-z0-9_.\-]*")
+_CHECKSUM = re.compile(r"^crc32:[0-9a-f]{8}$")
+_BOM = b"\xef\xbb\xbf"
+
+
+@dataclass
+class PrmContents:
+    """Everything a *.prm file holds; values are raw (as in the object dictionary)."""
+
+    type_key: TypeKey
+    values: dict[str, int | str]
+    serial: int | None = None
+    firmware: str | None = None
+    unknown: list[tuple[str, str]] = field(default_factory=list)
+    comments: dict[str, list[str]] = field(default_factory=dict)  # lines before an entry
+    inline_comments: dict[str, str] = field(default_factory=dict)  # "  # ..." after a value
+    warnings: list[FileProblem] = field(default_factory=list)  # found while reading
+
+    @classmethod
+    def factory(cls, type_key: TypeKey) -> PrmContents:
+        """The factory defaults of ``type_key`` (what ``--new`` writes)."""
+        params = CATALOGUE.file_parameters(type_key.variant)
+        return cls(type_key, {p.mnemonic: p.default_for(type_key.variant) for p in params})
+
+    def to_text(self) -> str:
+        """The file text: header, parameters in catalogue order, unknown entries, checksum."""
+        lines: list[str] = []
+        self._emit(lines, "format", f"{FORMAT_NAME} {FORMAT_VERSION}", list(BANNER))
+        self._emit(lines, "type_key", str(self.type_key))
+        if self.serial is not None:
+            self._emit(lines, "serial", str(self.serial))
+        if self.firmware:
+            self._emit(lines, "firmware", self.firmware)
+        for number, param in enumerate(CATALOGUE.file_parameters(self.type_key.variant)):
+            value = param.format_display(self.values[param.mnemonic])
+            self._emit(lines, param.mnemonic, value, [""] if number == 0 else [], _hint(param))
+        for name, value in self.unknown:
+            self._emit(lines, name, value)
+        lines.extend(self.comments.get("checksum", [""]))
+        lines.append(f"checksum = {checksum(lines)}")
+        return "\n".join(lines) + "\n"
+
+    def _emit(
+        self,
+        lines: list[str],
+        name: str,
+        value: str,
+        leading: list[str] | None = None,
+        hint: str = "",
+    ) -> None:
+        lines.extend(self.comments.get(name, leading or []))
+        entry = f"{name} = {value}" if value else f"{name} ="
+        lines.append(entry + self.inline_comments.get(name, hint))
+
+
+def _hint(param: Parameter) -> str:
+    unit = f" [{param.unit}]" if param.unit else ""
+    return f"  # {param.text.en}{unit}"
+
+
+def checksum(lines: list[str]) -> str:
+    """The integrity check of the lines before the checksum line (docs/prm-format.md)."""
+    crc = 0
+    for line in lines:
+        crc = zlib.crc32(line.encode("utf-8") + b"\n", crc)
+    return f"crc32:{crc:08x}"
+
+
+@dataclass
+class CheckResult:
+    """The outcome of reading a file: every problem, and the contents when there is no error."""
+
+    problems: list[FileProblem]
+    contents: PrmContents | None
+
+    @property
+    def errors(self) -> list[FileProblem]:
+        """The problems that make the file unusable."""
+        return [p for p in self.problems if p.severity == "error"]
+
+    @property
+    def valid(self) -> bool:
+        """True when the file can be used (warnings allowed)."""
+        return self.contents is not None
+
+
+# --- reading ----------------------------------------------------------------------------------
+class _Lexer:
+    """Splits the bytes into entries and comment lines; finds what makes a file corrupt."""
+
+    def __init__(self) -> None:
+        self.problems: list[FileProblem] = []
+        self.entries: dict[str, Entry] = {}
+        self.order: list[Entry] = []
+        self.pending: list[str] = []  # comment and blank lines waiting for their entry
+        self.seen: list[str] = []  # decoded lines before the checksum line
+        self.checksum: Entry | None = None
+        self.last_line = 0
+
+    def error(self, line: int, message: str) -> None:
+        self.problems.append(FileProblem(line, message))
+
+    def run(self, data: bytes) -> None:
+        if data.startswith(_BOM):
+            data = data[len(_BOM) :]
+        raw_lines = data.split(b"\n")
+        if raw_lines[-1] == b"":
+            raw_lines.pop()
+        self.last_line = len(raw_lines)
+        for number, raw in enumerate(raw_lines, start=1):
+            text = self._decode(number, raw.removesuffix(b"\r"))
+            if text is not None:
+                self._line(number, text)
+
+    def _decode(self, number: int, raw: bytes) -> str | None:
+        try:
+            text = raw.decode("utf-8")
+        except UnicodeDecodeError as exc:
+            self.error(
+                number, f"byte 0x{raw[exc.start]:02X} is not UTF-8 text: the file is corrupt"
+            )
+            return None
+        bad = next((ch for ch in text if _is_control(ch)), None)
+        if bad is not None:
+            self.error(
+                number, f"control character U+{ord(bad):04X}: binary data, the file is corrupt"
+            )
+            return None
+        return text
+
+    def _line(self, number: int, text: str) -> None:
+        stripped = text.strip()
+        if self.checksum is not None:
+            if stripped:
+                self.error(number, "text after the checksum line, which must be the last line")
+            return
+        entry = _split_entry(number, text) if stripped and stripped[0] != "#" else None
+        if entry is None:
+            if stripped and stripped[0] != "#":
+                self.error(
+                    number, "garbled line: expected 'NAME = value', a '#' comment or a blank line"
+                )
+            self.pending.append(text)
+            self.seen.append(text)
+            return
+        if entry.name != "checksum":
+            self.seen.append(text)
+        self._entry(entry)
+
+    def _entry(self, entry: Entry) -> None:
+        entry.leading, self.pending = self.pending, []
+        if entry.name == "checksum":
+            self.checksum = entry
+            return
+        first = self.entries.get(entry.name)
+        if first is not None:
+            self.error(entry.line, f"{entry.name} is set twice (first on line {first.line})")
+            return
+        self.entries[entry.name] = entry
+        self.order.append(entry)
+
+
+def _split_entry(number: int, text: str) -> Entry | None:
+    """``NAME = value  # comment`` as an Entry, or None (linear time, whatever the line)."""
+    name, equals, rest = text.partition("=")
+    name = name.strip()
+    if not equals or not _NAME.fullmatch(name):
+        return None
+    hash_at = rest.find("#")
+    while hash_at > 0 and not rest[hash_at - 1].isspace():
+        hash_at = rest.find("#", hash_at + 1)
+    if hash_at <= 0:
+        return Entry(number, name, rest.strip())
+    value_end = len(rest[:hash_at].rstrip())
+    return Entry(number, name, rest[:value_end].strip(), rest[value_end:])
+
+
+def _is_control(ch: str) -> bool:
+    code = ord(ch)
+    return (code < 0x20 and ch != "\t") or 0x7F <= code <= 0x9F
+
+
+def check_bytes(data: bytes) -> CheckResult:
+    """Read a file's bytes and report every problem; never raises."""
+    if len(data) > MAX_FILE_SIZE:
+        size = f"{len(data)} bytes, more than {MAX_FILE_SIZE}"
+        return CheckResult([FileProblem(0, f"too large to be a parameter file ({size})")], None)
+    lexer = _Lexer()
+    lexer.run(data)
+    if lexer.last_line == 0:
+        return CheckResult([FileProblem(0, "the file is empty")], None)
+    problems = list(lexer.problems)
+    header = Header(lexer.order, lexer.last_line)
+    problems.extend(header.problems)
+    if not header.readable:  # not a prm9tool file: checking its entries would only add noise
+        return CheckResult(sorted(problems, key=lambda p: p.line), None)
+    problems.extend(_check_integrity(lexer))
+    checked = check_entries(lexer.order, header.type_key, header.type_key_line)
+    problems.extend(checked.problems)
+    problems.sort(key=lambda p: p.line)
+    if any(p.severity == "error" for p in problems) or header.type_key is None:
+        return CheckResult(problems, None)
+    contents = PrmContents(
+        header.type_key,
+        checked.values,
+        header.serial,
+        header.firmware,
+        checked.unknown,
+        {e.name: e.leading for e in [*lexer.order, lexer.checksum] if e is not None},
+        {e.name: e.comment for e in lexer.order},
+        problems,
+    )
+    return CheckResult(problems, contents)
+
+
+def _check_integrity(lexer: _Lexer) -> list[FileProblem]:
+    entry = lexer.checksum
+    if entry is None:
+        return [
+            FileProblem(
+                lexer.last_line,
+                "no 'checksum = ...' line at the end: the file is truncated (a file written by "
+                "hand must end with one, e.g. 'checksum = crc32:00000000')",
+            )
+        ]
+    if not _CHECKSUM.match(entry.value):
+        message = f"checksum {entry.value!r} is damaged (expected crc32: and 8 hex digits)"
+        return [FileProblem(entry.line, message)]
+    if entry.value != checksum(lexer.seen):
+        message = (
+            "checksum does not match: the file was changed outside prm9tool (edited by hand?); "
+            "saving it from prm9tool writes a new checksum"
+        )
+        return [FileProblem(entry.line, message, "warning")]
+    return []
+
+
+def check_file(path: str | os.PathLike[str]) -> CheckResult:
+    """Read and check the file at ``path``; never raises (I/O errors become problems)."""
+    try:
+        with open(path, "rb") as stream:
+            data = stream.read(MAX_FILE_SIZE + 1)
+    except OSError as exc:
+        return CheckResult([FileProblem(0, f"cannot read the file: {exc.strerror or exc}")], None)
+    return check_bytes(data)
+
+
+def read_bytes(data: bytes, path: str = "<bytes>") -> PrmContents:
+    """Parse file bytes; raises FileFormatError listing every problem (never anything else)."""
+    return _contents_or_raise(check_bytes(data), path)
+
+
+def read_file(path: str | os.PathLike[str]) -> PrmContents:
+    """Read a *.prm file; raises FileFormatError listing every problem (never anything else)."""
+    return _contents_or_raise(check_file(path), os.fspath(path))
+
+
+def _contents_or_raise(result: CheckResult, path: str) -> PrmContents:
+    if result.contents is None:
+        raise FileFormatError(path, result.problems)
+    return result.contents
+
+
+# --- writing ----------------------------------------------------------------------------------
+def write_file(
+    contents: PrmContents, path: str | os.PathLike[str], backup: bool = True
+) -> PrmContents:
+    """Write ``contents`` atomically (old file kept as ``<name>.bak``); returns what was written.
+
+    The result is the written file read back: its comments are the ones the file now has and
+    its ``warnings`` the file's warnings.
+
+    Refuses (FileFormatError, nothing written) to write a file it could not read back, and
+    turns I/O errors into FileFormatError (line 0); the old file is then untouched.
+    """
+    text = contents.to_text()
+    result = check_bytes(text.encode("utf-8"))
+    if result.contents is None:
+        raise FileFormatError(os.fspath(path), result.errors)
+    try:
+        atomic_write(Path(path), text.encode("utf-8"), backup=backup)
+    except OSError as exc:
+        problem = FileProblem(0, f"cannot save the file: {exc.strerror or exc}")
+        raise FileFormatError(os.fspath(path), [problem]) from exc
+    return result.contents
+
+
+# --- documents --------------------------------------------------------------------------------
+def document_from(contents: PrmContents, path: Path | None = None) -> ParameterDocument:
+    """A new, unmodified document holding ``contents`` (``path``: where it was read from)."""
+    from prm9tool.document import ParameterDocument
+
+    doc = ParameterDocument(contents.type_key)
+    doc.set_values(contents.values, "Open file", validate=False)
+    doc.source_serial = contents.serial
+    doc.source_firmware = contents.firmware
+    doc.unknown_entries = list(contents.unknown)
+    doc.comments = {name: list(lines) for name, lines in contents.comments.items()}
+    doc.inline_comments = dict(contents.inline_comments)
+    doc.mark_saved(path)
+    return doc
+
+
+def contents_of(doc: ParameterDocument) -> PrmContents:
+    """What saving ``doc`` writes."""
+    return PrmContents(
+        doc.type_key,
+        dict(doc.values),
+        doc.source_serial,
+        doc.source_firmware,
+        list(doc.unknown_entries),
+        {name: list(lines) for name, lines in doc.comments.items()},
+        dict(doc.inline_comments),
+    )
+
+
+def load_document(path: str | os.PathLike[str]) -> ParameterDocument:
+    """Read a *.prm file into a new document; raises FileFormatError with every problem."""
+    return document_from(read_file(path), Path(path))
+
+
+def save_document(doc: ParameterDocument, path: str | os.PathLike[str]) -> None:
+    """Save ``doc`` atomically, keep the old file as ``.bak``, mark the document saved."""
+    written = write_file(contents_of(doc), path)
+    doc.comments = written.comments  # so that the next save reproduces this file exactly
+    doc.inline_comments = written.inline_comments
+    doc.mark_saved(Path(path))
