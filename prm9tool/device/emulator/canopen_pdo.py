@@ -1,0 +1,191 @@
+"""The PRM9's four PDO channels (manual §7.2.5-7.2.6, table 7-13): fixed mapping, CiA 301 timing.
+
+A channel reads its communication parameters (COB-ID, transmission type, event timer) from the
+valve's object dictionary and its mapping from the catalogue; RPDO1/TPDO1 entry 2 follow the
+control mode 0x6043. Time is counted in whole milliseconds of simulated time.
+"""
+
+from __future__ import annotations
+
+import logging
+from collections.abc import Callable
+from dataclasses import dataclass, field
+from typing import Protocol
+
+from prm9tool.catalogue import CATALOGUE, Parameter
+from prm9tool.eds import mapping_for_control_mode
+from prm9tool.errors import SdoAbortError
+
+log = logging.getLogger(__name__)
+
+COB_INVALID = 0x80000000  # bit 31: PDO does not exist / is not valid
+CAN_ID_MASK = 0x7FF
+SYNC_TYPES = range(241)  # 0 acyclic synchronous, 1-240 every n-th SYNC
+EVENT_TYPES = (254, 255)
+CHANGE_INHIBIT_MS = 10  # decision: event timer 0 -> on change, at most every 10 ms
+CONTROL_MODE = (0x6043, 0)
+
+
+class Dictionary(Protocol):
+    """The part of the emulated valve a PDO channel needs."""
+
+    def read(self, index: int, subindex: int) -> int | str: ...
+    def read_bytes(self, index: int, subindex: int) -> bytes: ...
+    def write_bytes(self, index: int, subindex: int, data: bytes) -> None: ...
+
+
+def _mapping_parameters(map_index: int) -> list[Parameter]:
+    entries = [p for p in CATALOGUE if p.index == map_index and p.subindex > 0]
+    return sorted(entries, key=lambda p: p.subindex)
+
+
+def mapping(valve: Dictionary, map_index: int) -> list[tuple[int, int, int]]:
+    """The ``(index, subindex, bits)`` entries of a mapping object in the current control mode."""
+    mode = int(valve.read(*CONTROL_MODE))
+    result = []
+    for param in _mapping_parameters(map_index):
+        value = mapping_for_control_mode(param, mode)
+        result.append((value >> 16, (value >> 8) & 0xFF, value & 0xFF))
+    return result
+
+
+@dataclass
+class PdoChannel:
+    """One RPDO or TPDO: configuration cache plus its run-time counters."""
+
+    number: int
+    transmit: bool
+    cob_id: int = COB_INVALID
+    trans_type: int = 255
+    event_timer: int = 0
+    sync_count: int = 0
+    next_due_ms: int = 0
+    last_sent_ms: int = -(10**9)
+    last_data: bytes | None = None
+    pending: bytes | None = field(default=None, repr=False)  # RPDO data waiting for SYNC
+
+    @property
+    def comm_index(self) -> int:
+        """0x1400.. for RPDOs, 0x1800.. for TPDOs."""
+        return (0x1800 if self.transmit else 0x1400) + self.number - 1
+
+    @property
+    def map_index(self) -> int:
+        """0x1600.. for RPDOs, 0x1A00.. for TPDOs."""
+        return (0x1A00 if self.transmit else 0x1600) + self.number - 1
+
+    @property
+    def valid(self) -> bool:
+        """True unless bit 31 of the COB-ID marks the PDO invalid."""
+        return not self.cob_id & COB_INVALID
+
+    @property
+    def can_id(self) -> int:
+        """The 11-bit CAN identifier."""
+        return self.cob_id & CAN_ID_MASK
+
+    def load(self, valve: Dictionary) -> None:
+        """Refresh the configuration from the object dictionary."""
+        self.cob_id = int(valve.read(self.comm_index, 1))
+        self.trans_type = int(valve.read(self.comm_index, 2))
+        self.event_timer = int(valve.read(self.comm_index, 5)) if self.transmit else 0
+
+    def restart(self, now_ms: int) -> None:
+        """Reset the counters (entering OPERATIONAL, configuration changed)."""
+        self.sync_count = 0
+        self.next_due_ms = now_ms + self.event_timer
+        self.last_data = None
+        self.pending = None
+
+
+class TpdoLogic:
+    """When a TPDO is due and what it carries."""
+
+    def __init__(self, channel: PdoChannel, valve: Dictionary) -> None:
+        self.channel = channel
+        self._valve = valve
+
+    def data(self) -> bytes | None:
+        """The mapped bytes, or None if a mapped object does not exist on this valve."""
+        payload = b""
+        try:
+            for index, subindex, bits in mapping(self._valve, self.channel.map_index):
+                payload += self._valve.read_bytes(index, subindex)[: bits // 8]
+        except SdoAbortError:
+            return None  # decision: e.g. TPDO2 on an E02 valve (no 0x2100) is never sent
+        return payload
+
+    def on_sync(self) -> bytes | None:
+        """Data to send on a SYNC (transmission types 0-240), or None."""
+        channel = self.channel
+        if not channel.valid or channel.trans_type not in SYNC_TYPES:
+            return None
+        if channel.trans_type == 0:
+            data = self.data()
+            return data if data is not None and data != channel.last_data else None
+        channel.sync_count += 1
+        if channel.sync_count < channel.trans_type:
+            return None
+        channel.sync_count = 0
+        return self.data()
+
+    def on_tick(self, now_ms: int) -> bytes | None:
+        """Data to send at ``now_ms`` (event timer, or change of data when the timer is 0)."""
+        channel = self.channel
+        if not channel.valid or channel.trans_type not in EVENT_TYPES:
+            return None
+        if channel.event_timer:
+            if now_ms < channel.next_due_ms:
+                return None
+            channel.next_due_ms = now_ms + channel.event_timer
+            return self.data()
+        if now_ms - channel.last_sent_ms < CHANGE_INHIBIT_MS:
+            return None
+        data = self.data()
+        return data if data is not None and data != channel.last_data else None
+
+    def sent(self, data: bytes, now_ms: int) -> None:
+        """Record a transmission (for change detection)."""
+        self.channel.last_data = data
+        self.channel.last_sent_ms = now_ms
+        if self.channel.event_timer:
+            self.channel.next_due_ms = now_ms + self.channel.event_timer
+
+
+class RpdoLogic:
+    """Applying received RPDO data to the object dictionary."""
+
+    def __init__(
+        self, channel: PdoChannel, valve: Dictionary, length_error: Callable[[], None]
+    ) -> None:
+        self.channel = channel
+        self._valve = valve
+        self._length_error = length_error
+
+    def received(self, data: bytes) -> None:
+        """A frame on the RPDO's COB-ID arrived (NMT OPERATIONAL)."""
+        if self.channel.trans_type in SYNC_TYPES:
+            self.channel.pending = bytes(data)
+        else:
+            self.apply(bytes(data))
+
+    def on_sync(self) -> None:
+        """Synchronous RPDOs take effect at the SYNC after reception."""
+        if self.channel.pending is not None:
+            data, self.channel.pending = self.channel.pending, None
+            self.apply(data)
+
+    def apply(self, data: bytes) -> None:
+        """Write the mapped objects; a too short frame is refused (CiA 301 EMCY 0x8210)."""
+        entries = mapping(self._valve, self.channel.map_index)
+        if len(data) < sum(bits // 8 for _, _, bits in entries):
+            self._length_error()
+            return
+        offset = 0
+        for index, subindex, bits in entries:
+            size = bits // 8
+            try:
+                self._valve.write_bytes(index, subindex, data[offset : offset + size])
+            except SdoAbortError as exc:
+                log.info("RPDO%d: %s", self.channel.number, exc)
+            offset += size

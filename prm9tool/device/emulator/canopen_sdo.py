@@ -1,0 +1,150 @@
+"""CiA 301 SDO server protocol: expedited and segmented upload/download, abort codes.
+
+Pure protocol, no bus and no valve: :class:`SdoServer` turns one request (8 data bytes) into
+the response bytes, calling ``read``/``write`` for the object-dictionary access. Block
+transfer is not supported (answered with "command specifier not valid").
+"""
+
+from __future__ import annotations
+
+import logging
+import struct
+from collections.abc import Callable
+from dataclasses import dataclass
+
+from prm9tool.errors import AbortCode, SdoAbortError
+
+log = logging.getLogger(__name__)
+
+Reader = Callable[[int, int], bytes]
+Writer = Callable[[int, int, bytes], None]
+
+# client command specifiers (bits 7..5 of byte 0)
+CCS_DOWNLOAD_SEGMENT = 0
+CCS_INITIATE_DOWNLOAD = 1
+CCS_INITIATE_UPLOAD = 2
+CCS_UPLOAD_SEGMENT = 3
+CCS_ABORT = 4
+RESPONSE_DOWNLOAD = 0x60
+RESPONSE_UPLOAD_SEGMENTED = 0x41
+RESPONSE_ABORT = 0x80
+
+
+@dataclass
+class _Transfer:
+    """A segmented transfer in progress."""
+
+    index: int
+    subindex: int
+    upload: bool
+    data: bytearray
+    size: int | None
+    toggle: int = 0
+
+
+def abort_frame(index: int, subindex: int, code: int) -> bytes:
+    """The 8 data bytes of an SDO abort."""
+    return struct.pack("<BHBI", RESPONSE_ABORT, index, subindex, code)
+
+
+class SdoServer:
+    """One SDO server channel (the PRM9 has exactly one: 0x600/0x580 + node ID)."""
+
+    def __init__(self, read: Reader, write: Writer) -> None:
+        self._read = read
+        self._write = write
+        self._transfer: _Transfer | None = None
+
+    def reset(self) -> None:
+        """Forget a transfer in progress (NMT reset, state change)."""
+        self._transfer = None
+
+    def handle(self, request: bytes) -> bytes | None:
+        """The response to ``request``, or None when the protocol requires no answer."""
+        data = bytes(request).ljust(8, b"\x00")
+        ccs = data[0] >> 5
+        index, subindex = struct.unpack_from("<HB", data, 1)
+        try:
+            return self._dispatch(ccs, data, index, subindex)
+        except SdoAbortError as exc:
+            self._transfer = None
+            return abort_frame(exc.index, exc.subindex, exc.code)
+        except Exception:  # a firmware bug must not kill the server: CiA 301 "general error"
+            log.exception("SDO request %s failed", data.hex(" "))
+            self._transfer = None
+            return abort_frame(index, subindex, AbortCode.GENERAL_ERROR)
+
+    def _dispatch(self, ccs: int, data: bytes, index: int, subindex: int) -> bytes | None:
+        if ccs == CCS_ABORT:
+            self._transfer = None
+            return None
+        if ccs == CCS_INITIATE_UPLOAD:
+            return self._initiate_upload(index, subindex)
+        if ccs == CCS_INITIATE_DOWNLOAD:
+            return self._initiate_download(data, index, subindex)
+        if ccs == CCS_UPLOAD_SEGMENT:
+            return self._upload_segment(data)
+        if ccs == CCS_DOWNLOAD_SEGMENT:
+            return self._download_segment(data)
+        raise self._abort(index, subindex, AbortCode.INVALID_COMMAND)
+
+    def _abort(self, index: int, subindex: int, code: AbortCode) -> SdoAbortError:
+        return SdoAbortError(index, subindex, int(code))
+
+    # --- upload (server -> client) -------------------------------------------------------
+    def _initiate_upload(self, index: int, subindex: int) -> bytes:
+        self._transfer = None
+        value = self._read(index, subindex)
+        if 0 < len(value) <= 4:
+            command = 0x43 | ((4 - len(value)) << 2)
+            return struct.pack("<BHB", command, index, subindex) + value.ljust(4, b"\x00")
+        self._transfer = _Transfer(index, subindex, True, bytearray(value), len(value))
+        return struct.pack("<BHBI", RESPONSE_UPLOAD_SEGMENTED, index, subindex, len(value))
+
+    def _upload_segment(self, data: bytes) -> bytes:
+        transfer = self._current(upload=True)
+        toggle = (data[0] >> 4) & 1
+        if toggle != transfer.toggle:
+            raise self._abort(transfer.index, transfer.subindex, AbortCode.TOGGLE_BIT)
+        chunk = bytes(transfer.data[:7])
+        del transfer.data[:7]
+        last = not transfer.data
+        command = (toggle << 4) | ((7 - len(chunk)) << 1) | (1 if last else 0)
+        transfer.toggle ^= 1
+        if last:
+            self._transfer = None
+        return bytes([command]) + chunk.ljust(7, b"\x00")
+
+    # --- download (client -> server) -----------------------------------------------------
+    def _initiate_download(self, data: bytes, index: int, subindex: int) -> bytes:
+        self._transfer = None
+        expedited, size_indicated = bool(data[0] & 0x02), bool(data[0] & 0x01)
+        if expedited:
+            length = 4 - ((data[0] >> 2) & 0x03) if size_indicated else 4
+            self._write(index, subindex, data[4 : 4 + length])
+        else:
+            size = struct.unpack_from("<I", data, 4)[0] if size_indicated else None
+            self._transfer = _Transfer(index, subindex, False, bytearray(), size)
+        return struct.pack("<BHBI", RESPONSE_DOWNLOAD, index, subindex, 0)
+
+    def _download_segment(self, data: bytes) -> bytes:
+        transfer = self._current(upload=False)
+        toggle = (data[0] >> 4) & 1
+        if toggle != transfer.toggle:
+            raise self._abort(transfer.index, transfer.subindex, AbortCode.TOGGLE_BIT)
+        unused = (data[0] >> 1) & 0x07
+        transfer.data += data[1 : 8 - unused]
+        transfer.toggle ^= 1
+        if data[0] & 0x01:
+            self._transfer = None
+            if transfer.size is not None and transfer.size != len(transfer.data):
+                raise self._abort(transfer.index, transfer.subindex, AbortCode.WRONG_LENGTH)
+            self._write(transfer.index, transfer.subindex, bytes(transfer.data))
+        return bytes([0x20 | (toggle << 4)]) + bytes(7)
+
+    def _current(self, upload: bool) -> _Transfer:
+        transfer = self._transfer
+        if transfer is None or transfer.upload != upload:
+            self._transfer = None
+            raise self._abort(0, 0, AbortCode.INVALID_COMMAND)
+        return transfer

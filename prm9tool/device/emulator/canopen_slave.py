@@ -1,0 +1,261 @@
+"""The emulated valve as a CiA 301 slave on a python-can bus (manual chapter 7, SPEC §3).
+
+:class:`CanopenSlave` receives frames in a python-can Notifier thread and runs its timers
+(heartbeat, PDO event timers) from the valve's 1 ms cycle listener, so the same code runs in
+simulated time under :meth:`EmulatedValve.advance` and in real time under the paced thread.
+Every object-dictionary access goes through ``valve.read_bytes``/``valve.write_bytes``; every
+public entry point takes ``valve.lock``.
+"""
+
+from __future__ import annotations
+
+import logging
+import struct
+from typing import TYPE_CHECKING
+
+import can
+
+from prm9tool.catalogue import LOAD_SIGNATURE, SAVE_SIGNATURE
+from prm9tool.device.emulator.canopen_pdo import PdoChannel, RpdoLogic, TpdoLogic, mapping
+from prm9tool.device.emulator.canopen_sdo import SdoServer
+from prm9tool.device.emulator.canopen_settings import (
+    CanSettings,
+    NmtState,
+    can_settings,
+    check_comm_write,
+)
+from prm9tool.errors import AbortCode, SdoAbortError
+
+if TYPE_CHECKING:
+    from prm9tool.device.emulator.valve import EmulatedValve
+
+log = logging.getLogger(__name__)
+
+NMT_START, NMT_STOP, NMT_PRE_OPERATIONAL = 0x01, 0x02, 0x80
+NMT_RESET_NODE, NMT_RESET_COMMUNICATION = 0x81, 0x82
+HEARTBEAT_CODES = {
+    NmtState.INITIALISING: 0x00,
+    NmtState.STOPPED: 0x04,
+    NmtState.OPERATIONAL: 0x05,
+    NmtState.PRE_OPERATIONAL: 0x7F,
+}
+NMT_EVENTS = {
+    NmtState.OPERATIONAL: "operational",
+    NmtState.STOPPED: "stopped",
+    NmtState.PRE_OPERATIONAL: "preoperational",
+}
+EMCY_RPDO_LENGTH = 0x8210  # CiA 301: PDO not processed due to length error
+SYNC_COB_ID, EMCY_COB_ID, HEARTBEAT_TIME, NMT_STARTUP = 0x1005, 0x1014, 0x1017, 0x1F80
+STORE, RESTORE = (0x1010, 1), (0x1011, 1)
+
+
+class CanopenSlave:
+    """CiA 301 NMT slave, SDO server, 2 RPDO + 2 TPDO, SYNC consumer, heartbeat, EMCY."""
+
+    def __init__(self, valve: EmulatedValve, bus: can.BusABC) -> None:
+        self._valve = valve
+        self._bus = bus
+        self._sdo = SdoServer(self._sdo_read, self._sdo_write)
+        self._rpdos = [PdoChannel(n, transmit=False) for n in (1, 2)]
+        self._tpdos = [PdoChannel(n, transmit=True) for n in (1, 2)]
+        self._rpdo_logic = [RpdoLogic(c, valve, self._rpdo_length_error) for c in self._rpdos]
+        self._tpdo_logic = [TpdoLogic(c, valve) for c in self._tpdos]
+        self._now_ms = 0
+        self._heartbeat_due_ms = 0
+        self._closed = False
+        self.state = NmtState.OFF
+        self.settings = CanSettings(False, 0, None, False)
+        with valve.lock:
+            self._power_up()
+            valve.add_cycle_listener(self._on_cycle)
+            valve.add_error_listener(self._on_error)
+            valve.add_restart_listener(self._on_restart)
+        self._notifier = can.Notifier(bus, [self._on_message], timeout=0.1)
+
+    # --- public --------------------------------------------------------------------------
+    @property
+    def node_id(self) -> int:
+        """The node ID read at power-up (0 while CANopen is switched off)."""
+        return self.settings.node_id
+
+    @property
+    def bitrate(self) -> int | None:
+        """The bit rate the switches (or 0x2030/2) select, None for automatic bit rate."""
+        return self.settings.bitrate
+
+    def close(self) -> None:
+        """Stop receiving and transmitting (the bus itself belongs to the caller)."""
+        self._notifier.stop()
+        with self._valve.lock:
+            self._closed = True
+            self.state = NmtState.OFF
+
+    # --- power-up, NMT ---------------------------------------------------------------------
+    def _power_up(self) -> None:
+        self.settings = can_settings(self._valve)
+        self._sdo.reset()
+        self.state = NmtState.INITIALISING if self.settings.enabled else NmtState.OFF
+
+    def _on_restart(self) -> None:
+        if not self._closed:
+            self._power_up()
+
+    def _boot_up(self) -> None:
+        """End of initialisation: reload the communication objects, boot-up, PRE-OPERATIONAL."""
+        self._load_config()
+        self._send(0x700 + self.node_id, b"\x00")
+        self._heartbeat_due_ms = self._now_ms + self._heartbeat_ms()
+        self._enter(NmtState.PRE_OPERATIONAL)
+        status = self._valve.status()
+        if status.error_code:
+            self._send_emcy(status.error_code, status.error_register)
+        if int(self._valve.read(NMT_STARTUP, 0)) == 0:
+            self._enter(NmtState.OPERATIONAL)
+
+    def _enter(self, state: NmtState) -> None:
+        if state is self.state:
+            return
+        self.state = state
+        self._sdo.reset()
+        self._valve.nmt_event(NMT_EVENTS[state])
+        if state is NmtState.OPERATIONAL:
+            for channel in (*self._rpdos, *self._tpdos):
+                channel.restart(self._now_ms)
+            for logic in self._tpdo_logic:
+                if logic.channel.trans_type in (254, 255):
+                    self._transmit(logic, logic.data())
+
+    def _on_nmt(self, data: bytes) -> None:
+        if len(data) < 2 or data[1] not in (0, self.node_id):
+            return
+        if self.state is NmtState.INITIALISING:
+            return  # manual table 7-4: no NMT service while initialising
+        command = data[0]
+        if command == NMT_START:
+            self._enter(NmtState.OPERATIONAL)
+        elif command == NMT_STOP:
+            self._enter(NmtState.STOPPED)
+        elif command == NMT_PRE_OPERATIONAL:
+            self._enter(NmtState.PRE_OPERATIONAL)
+        elif command == NMT_RESET_NODE:
+            self.state = NmtState.INITIALISING
+            self._valve.nmt_event("reset_node")  # restarts the valve -> _on_restart
+        elif command == NMT_RESET_COMMUNICATION:
+            self.state = NmtState.INITIALISING
+            self._valve.nmt_event("reset_comm")
+            self._boot_up()
+
+    # --- frames ------------------------------------------------------------------------------
+    def _on_message(self, msg: can.Message) -> None:
+        if msg.is_error_frame or msg.is_remote_frame or msg.is_extended_id:
+            return
+        with self._valve.lock:
+            if self.state in (NmtState.OFF, NmtState.INITIALISING) and msg.arbitration_id:
+                return
+            if self.state is not NmtState.OFF:
+                self._dispatch(msg.arbitration_id, bytes(msg.data))
+
+    def _dispatch(self, can_id: int, data: bytes) -> None:
+        if can_id == 0:
+            self._on_nmt(data)
+            return
+        if self.state is NmtState.STOPPED:
+            return  # manual table 7-4: only NMT while stopped
+        if can_id == 0x600 + self.node_id:
+            response = self._sdo.handle(data)
+            if response is not None:
+                self._send(0x580 + self.node_id, response)
+        elif can_id == int(self._valve.read(SYNC_COB_ID, 0)) & 0x7FF:
+            self._on_sync()
+        elif self.state is NmtState.OPERATIONAL:
+            for logic in self._rpdo_logic:
+                if logic.channel.valid and logic.channel.can_id == can_id:
+                    logic.received(data)
+
+    def _on_sync(self) -> None:
+        if self.state is not NmtState.OPERATIONAL:
+            return
+        for rpdo in self._rpdo_logic:
+            rpdo.on_sync()
+        for tpdo in self._tpdo_logic:
+            self._transmit(tpdo, tpdo.on_sync())
+
+    def _send(self, can_id: int, data: bytes) -> None:
+        try:
+            self._bus.send(can.Message(arbitration_id=can_id, data=data, is_extended_id=False))
+        except can.CanError as exc:
+            log.warning("CAN transmit of 0x%03X failed: %s", can_id, exc)
+
+    # --- timers ----------------------------------------------------------------------------
+    def _on_cycle(self, sim_time: float) -> None:
+        self._now_ms = round(sim_time * 1000)
+        if self._closed or self.state is NmtState.OFF:
+            return
+        if self.state is NmtState.INITIALISING:
+            if not self._valve.status().booting:
+                self._boot_up()
+            return
+        period = self._heartbeat_ms()
+        if period and self._now_ms >= self._heartbeat_due_ms:
+            self._send(0x700 + self.node_id, bytes([HEARTBEAT_CODES[self.state]]))
+            self._heartbeat_due_ms = self._now_ms + period
+        if self.state is NmtState.OPERATIONAL:
+            for tpdo in self._tpdo_logic:
+                self._transmit(tpdo, tpdo.on_tick(self._now_ms))
+
+    def _heartbeat_ms(self) -> int:
+        return int(self._valve.read(HEARTBEAT_TIME, 0))
+
+    def _transmit(self, logic: TpdoLogic, data: bytes | None) -> None:
+        if data is None or not logic.channel.valid:
+            return
+        self._send(logic.channel.can_id, data)
+        logic.sent(data, self._now_ms)
+
+    # --- EMCY ------------------------------------------------------------------------------
+    def _on_error(self, code: int, error_register: int) -> None:
+        if self.state in (NmtState.PRE_OPERATIONAL, NmtState.OPERATIONAL):
+            self._send_emcy(code, error_register)
+
+    def _send_emcy(self, code: int, error_register: int) -> None:
+        cob_id = int(self._valve.read(EMCY_COB_ID, 0))
+        if not cob_id & 0x80000000:
+            self._send(cob_id & 0x7FF, struct.pack("<HB5x", code, error_register))
+
+    def _rpdo_length_error(self) -> None:
+        status = self._valve.status()
+        self._send_emcy(EMCY_RPDO_LENGTH, status.error_register | 0x10)
+
+    # --- SDO access ------------------------------------------------------------------------
+    def _sdo_read(self, index: int, subindex: int) -> bytes:
+        if index in (0x1600, 0x1A00) and subindex == 2:
+            self._valve.read_bytes(index, subindex)  # existence and access check
+            entry_index, entry_sub, bits = mapping(self._valve, index)[subindex - 1]
+            return struct.pack("<I", (entry_index << 16) | (entry_sub << 8) | bits)
+        return self._valve.read_bytes(index, subindex)
+
+    def _sdo_write(self, index: int, subindex: int, data: bytes) -> None:
+        check_comm_write(index, subindex, data, self.state)
+        if (index, subindex) in (STORE, RESTORE):
+            self._store_or_restore((index, subindex), data)
+            return
+        self._valve.write_bytes(index, subindex, data)
+        if 0x1000 <= index < 0x2000:
+            self._load_config()
+            if index == HEARTBEAT_TIME:
+                self._heartbeat_due_ms = self._now_ms + self._heartbeat_ms()
+
+    def _store_or_restore(self, key: tuple[int, int], data: bytes) -> None:
+        if len(data) != 4:
+            raise SdoAbortError(key[0], key[1], AbortCode.WRONG_LENGTH)
+        signature = struct.unpack("<I", data)[0]
+        if key == STORE and signature == SAVE_SIGNATURE:
+            self._valve.store()
+        elif key == RESTORE and signature == LOAD_SIGNATURE:
+            self._valve.restore_factory()
+        else:
+            raise SdoAbortError(key[0], key[1], AbortCode.CANNOT_STORE)
+
+    def _load_config(self) -> None:
+        for channel in (*self._rpdos, *self._tpdos):
+            channel.load(self._valve)
