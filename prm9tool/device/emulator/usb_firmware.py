@@ -1,0 +1,292 @@
+"""The valve firmware's USB handler: answers the protocol's reports from an EmulatedValve.
+
+Every request report gets exactly one answer report, built with the same codec the host uses,
+so host and firmware agree byte for byte. Junk gets a well-formed error answer, never an
+exception; the guarded commands (store, restore, restart) need their 4-byte signature, so
+random reports cannot change the stored parameters. Stream samples are collected every
+millisecond of simulated time into an outbox of reports, as the USB interrupt endpoint would
+send them whether or not the host reads.
+"""
+
+from __future__ import annotations
+
+import logging
+import weakref
+from collections import deque
+from dataclasses import dataclass
+from typing import TYPE_CHECKING
+
+import numpy as np
+
+from prm9tool.device.protocol import (
+    MAX_SEGMENTED_LENGTH,
+    PROTOCOL_VERSION,
+    SEGMENT_READ_CHUNK,
+    STREAM_BASE_RATE_HZ,
+    AbortReply,
+    Done,
+    Identify,
+    IdentifyReply,
+    MalformedReportError,
+    ReadEntries,
+    ReadReply,
+    Request,
+    Response,
+    Restart,
+    RestoreFactory,
+    SegmentRead,
+    SegmentReadReply,
+    SegmentWrite,
+    SegmentWriteReply,
+    StatusReply,
+    StatusRequest,
+    Store,
+    StreamData,
+    StreamStart,
+    StreamStarted,
+    StreamStop,
+    WriteEntries,
+    WriteReply,
+    decode_request,
+    encode_response,
+    encode_stream,
+    malformed_answer,
+)
+from prm9tool.device.protocol.packing import READ_ANSWER_ROOM
+from prm9tool.device.protocol.status import MAX_ACTIVE_ERRORS, MAX_TEXT_BYTES
+from prm9tool.errors import AbortCode, Prm9Error, SdoAbortError
+from prm9tool.signals import BY_CODE, signals_for
+
+if TYPE_CHECKING:
+    from prm9tool.device.emulator import EmulatedValve
+
+log = logging.getLogger("prm9tool.device.emulator.usb")
+OUTBOX_REPORTS = 256  # stream reports buffered for the host (hidraw keeps 64; assumption)
+FLUSH_S = 0.010  # a partly filled stream report is sent after 10 ms (scope latency at low rates)
+_FIRMWARES: weakref.WeakKeyDictionary[EmulatedValve, UsbFirmware] = weakref.WeakKeyDictionary()
+
+
+@dataclass
+class _Assembly:
+    """A segmented write in progress."""
+
+    index: int
+    subindex: int
+    total: int
+    data: bytearray
+
+
+@dataclass
+class _Stream:
+    """A running stream: channel codes, pending samples, sequence counter."""
+
+    codes: tuple[int, ...]
+    capacity: int
+    pending: list[tuple[int, ...]]
+    sequence: int = 0
+    oldest: float = 0.0
+
+
+class UsbFirmware:
+    """The USB side of one emulated valve (one per valve: use :meth:`of`)."""
+
+    def __init__(self, valve: EmulatedValve) -> None:
+        self._valve = valve
+        self._last: tuple[bytes, bytes] | None = None
+        self._assembly: _Assembly | None = None
+        self._stream: _Stream | None = None
+        self.outbox: deque[tuple[float, bytes]] = deque(maxlen=OUTBOX_REPORTS)
+        self.internal_errors = 0  # exceptions the handler had to swallow (a bug if > 0)
+        valve.add_cycle_listener(self._on_cycle)
+        valve.add_restart_listener(self._on_restart)
+
+    @classmethod
+    def of(cls, valve: EmulatedValve) -> UsbFirmware:
+        """The firmware handler of ``valve`` (created on first use)."""
+        with valve.lock:
+            firmware = _FIRMWARES.get(valve)
+            if firmware is None:
+                firmware = _FIRMWARES[valve] = cls(valve)
+            return firmware
+
+    @property
+    def streaming(self) -> bool:
+        """True while a stream runs."""
+        return self._stream is not None
+
+    def handle(self, report: bytes) -> bytes:
+        """Answer one request report (always exactly one 64-byte answer, never an exception)."""
+        report = bytes(report)
+        with self._valve.lock:
+            self._valve.usb_activity()
+            if self._last is not None and self._last[0] == report:
+                return self._last[1]  # a repeated report: answer again, do not execute again
+            try:
+                seq, request = decode_request(report)
+            except MalformedReportError as exc:
+                return malformed_answer(report, exc)
+            answer = encode_response(request.op, seq, self._execute(request))
+            self._last = (report, answer)
+            if isinstance(request, Restart):
+                self._valve.restart()
+            return answer
+
+    # --- requests --------------------------------------------------------------------------
+    def _execute(self, request: Request) -> Response:
+        try:
+            return self._dispatch(request)
+        except SdoAbortError as exc:
+            return AbortReply(exc.code, exc.index, exc.subindex)
+        except Prm9Error as exc:
+            log.info("USB request %s refused: %s", type(request).__name__, exc)
+            code = AbortCode.CANNOT_STORE if isinstance(request, Store) else AbortCode.GENERAL_ERROR
+            return AbortReply(code)
+        except Exception:  # the firmware must answer whatever happens
+            self.internal_errors += 1
+            log.exception("USB firmware failed on %r", request)
+            return AbortReply(AbortCode.GENERAL_ERROR)
+
+    def _dispatch(self, request: Request) -> Response:
+        valve = self._valve
+        if isinstance(request, Identify):
+            return IdentifyReply(
+                PROTOCOL_VERSION, valve.serial, str(valve.type_key), valve.firmware_version
+            )
+        if isinstance(request, ReadEntries):
+            return self._read(request)
+        if isinstance(request, WriteEntries):
+            return self._write(request)
+        if isinstance(request, SegmentRead):
+            return self._segment_read(request)
+        if isinstance(request, SegmentWrite):
+            return self._segment_write(request)
+        if isinstance(request, StatusRequest):
+            return self._status(request.text_offset)
+        if isinstance(request, StreamStart):
+            return self._stream_start(request)
+        if isinstance(request, StreamStop):
+            self._stream_stop()
+        elif isinstance(request, Store):
+            valve.store()
+        elif isinstance(request, RestoreFactory):
+            valve.restore_factory()
+        return Done()  # Restart: executed in handle() after the answer is built
+
+    def _read(self, request: ReadEntries) -> ReadReply:
+        values: list[bytes | int] = []
+        room = READ_ANSWER_ROOM
+        for index, subindex in request.addresses:
+            try:
+                value: bytes | int = self._valve.read_bytes(index, subindex)
+            except SdoAbortError as exc:
+                value = exc.code
+            if ReadReply.entry_size(value) > room:
+                if not values:  # too long for any READ answer: the host must read it segmented
+                    values.append(int(AbortCode.LENGTH_TOO_HIGH))
+                break
+            values.append(value)
+            room -= ReadReply.entry_size(value)
+        return ReadReply(tuple(values))
+
+    def _write(self, request: WriteEntries) -> Response:
+        for position, (index, subindex, data) in enumerate(request.entries):
+            try:
+                self._valve.write_bytes(index, subindex, data)
+            except SdoAbortError as exc:
+                return AbortReply(exc.code, index, subindex, position)
+        return WriteReply(len(request.entries))
+
+    def _segment_read(self, request: SegmentRead) -> Response:
+        data = self._valve.read_bytes(request.index, request.subindex)[:MAX_SEGMENTED_LENGTH]
+        if request.offset > len(data):
+            return AbortReply(AbortCode.LENGTH_TOO_LOW, request.index, request.subindex)
+        chunk = data[request.offset : request.offset + SEGMENT_READ_CHUNK]
+        return SegmentReadReply(len(data), request.offset, chunk)
+
+    def _segment_write(self, request: SegmentWrite) -> Response:
+        key = (request.index, request.subindex)
+        if request.offset == 0:
+            self._assembly = _Assembly(*key, request.total, bytearray())
+        current = self._assembly
+        if current is None or (current.index, current.subindex, current.total) != (
+            *key,
+            request.total,
+        ):
+            return AbortReply(AbortCode.TOGGLE_BIT, *key)  # segment without a first segment
+        if request.offset != len(current.data):
+            self._assembly = None
+            return AbortReply(AbortCode.TOGGLE_BIT, *key)  # segment out of sequence
+        current.data += request.data
+        if request.total > MAX_SEGMENTED_LENGTH or len(current.data) > request.total:
+            self._assembly = None
+            return AbortReply(AbortCode.LENGTH_TOO_HIGH, *key)
+        if len(current.data) < request.total:
+            return SegmentWriteReply(len(current.data), False)
+        self._assembly = None
+        self._valve.write_bytes(request.index, request.subindex, bytes(current.data))
+        return SegmentWriteReply(len(current.data), True)
+
+    def _status(self, offset: int) -> StatusReply:
+        status = self._valve.status()
+        active = tuple(status.active_errors[:MAX_ACTIVE_ERRORS])
+        text = _truncate_utf8(status.error_text, MAX_TEXT_BYTES)
+        offset = min(offset, len(text))
+        chunk = text[offset : offset + StatusReply.chunk_room(len(active))]
+        return StatusReply(
+            str(status.device_state), status.error_code, status.error_register,
+            status.warning, status.booting, status.nmt_state,
+            tuple((led.color, led.pattern, led.lit) for led in status.leds),
+            status.temperature_c, status.supply_v, active, len(text), offset, chunk,
+        )  # fmt: skip
+
+    # --- streaming ------------------------------------------------------------------------
+    def _stream_start(self, request: StreamStart) -> Response:
+        available = {s.code for s in signals_for(self._valve.variant)}
+        for position, code in enumerate(request.codes):
+            if code not in available:
+                return AbortReply(AbortCode.INVALID_VALUE, 0, code, position)
+        if not 1 <= request.decimation <= STREAM_BASE_RATE_HZ:
+            return AbortReply(AbortCode.INVALID_VALUE)
+        self._stream_stop()
+        self._valve.capture_start([BY_CODE[c].key for c in request.codes], request.decimation)
+        capacity = StreamData.capacity(len(request.codes))
+        self._stream = _Stream(request.codes, capacity, [], oldest=self._valve.time)
+        return StreamStarted(capacity)
+
+    def _stream_stop(self) -> None:
+        if self._stream is not None:
+            self._stream = None
+            self._valve.capture_stop()
+
+    def _on_cycle(self, sim_time: float) -> None:
+        stream = self._stream
+        if stream is None:
+            return
+        block = self._valve.capture_read()
+        if len(block):
+            if not stream.pending:
+                stream.oldest = sim_time
+            clipped = np.clip(np.rint(block), -32768, 32767).astype(np.int64)
+            stream.pending.extend(tuple(int(v) for v in row) for row in clipped)
+        while len(stream.pending) >= stream.capacity:
+            self._emit(stream, sim_time, stream.capacity)
+        if stream.pending and sim_time - stream.oldest >= FLUSH_S:
+            self._emit(stream, sim_time, len(stream.pending))
+
+    def _emit(self, stream: _Stream, sim_time: float, count: int) -> None:
+        samples, stream.pending = stream.pending[:count], stream.pending[count:]
+        data = StreamData(stream.sequence, len(stream.codes), tuple(samples))
+        self.outbox.append((sim_time, encode_stream(data)))  # a full outbox drops the oldest
+        stream.sequence = (stream.sequence + 1) & 0xFFFF
+        stream.oldest = sim_time
+
+    def _on_restart(self) -> None:
+        self._last = None
+        self._assembly = None
+        self._stream = None
+        self.outbox.clear()
+
+
+def _truncate_utf8(text: str, limit: int) -> bytes:
+    data = text.encode("utf-8")[:limit]
+    return data.decode("utf-8", errors="ignore").encode("utf-8")

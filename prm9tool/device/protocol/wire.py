@@ -1,0 +1,131 @@
+"""Byte-level helpers of the USB protocol: fixed 64-byte reports, little-endian fields."""
+
+from __future__ import annotations
+
+import struct
+
+from prm9tool.errors import ProtocolError
+
+REPORT_SIZE = 64  # USB full-speed HID interrupt report
+HEADER_SIZE = 2  # opcode, sequence number
+BODY_SIZE = REPORT_SIZE - HEADER_SIZE  # 62
+
+
+class MalformedReportError(ProtocolError):
+    """A report that does not follow the protocol; ``op``/``seq`` as far as they were read."""
+
+    def __init__(self, reason: str, op: int = -1, seq: int = 0) -> None:
+        super().__init__(reason)
+        self.op = op
+        self.seq = seq
+
+
+class Writer:
+    """Builds one report; every field is range-checked (a host bug fails loudly)."""
+
+    def __init__(self) -> None:
+        self._data = bytearray()
+
+    def _pack(self, fmt: str, value: int) -> Writer:
+        try:
+            self._data += struct.pack("<" + fmt, value)
+        except struct.error as exc:
+            raise ValueError(f"{value!r} does not fit the field ({exc})") from None
+        return self
+
+    def u8(self, value: int) -> Writer:
+        """Append an unsigned byte."""
+        return self._pack("B", value)
+
+    def u16(self, value: int) -> Writer:
+        """Append an unsigned 16-bit number."""
+        return self._pack("H", value)
+
+    def i16(self, value: int) -> Writer:
+        """Append a signed 16-bit number."""
+        return self._pack("h", value)
+
+    def u32(self, value: int) -> Writer:
+        """Append an unsigned 32-bit number."""
+        return self._pack("I", value)
+
+    def raw(self, data: bytes) -> Writer:
+        """Append bytes as they are."""
+        self._data += data
+        return self
+
+    def text(self, value: str) -> Writer:
+        """Append a length byte and the UTF-8 text."""
+        data = value.encode("utf-8")
+        return self.u8(len(data)).raw(data)
+
+    def report(self) -> bytes:
+        """The finished report, zero-padded to 64 bytes."""
+        if len(self._data) > REPORT_SIZE:
+            raise ValueError(f"report of {len(self._data)} bytes exceeds {REPORT_SIZE}")
+        return bytes(self._data.ljust(REPORT_SIZE, b"\x00"))
+
+
+class Reader:
+    """Reads fields from a report; any inconsistency raises :class:`MalformedReportError`."""
+
+    def __init__(self, data: bytes, *, exact: bool = True) -> None:
+        if exact and len(data) != REPORT_SIZE:
+            raise MalformedReportError(f"report has {len(data)} bytes, expected {REPORT_SIZE}")
+        self._data = bytes(data)
+        self._pos = 0
+
+    def _unpack(self, fmt: str, size: int) -> int:
+        chunk = self.raw(size)
+        return int(struct.unpack("<" + fmt, chunk)[0])
+
+    def u8(self) -> int:
+        """Next unsigned byte."""
+        return self._unpack("B", 1)
+
+    def u16(self) -> int:
+        """Next unsigned 16-bit number."""
+        return self._unpack("H", 2)
+
+    def i16(self) -> int:
+        """Next signed 16-bit number."""
+        return self._unpack("h", 2)
+
+    def u32(self) -> int:
+        """Next unsigned 32-bit number."""
+        return self._unpack("I", 4)
+
+    def raw(self, size: int) -> bytes:
+        """Next ``size`` bytes."""
+        end = self._pos + size
+        if end > len(self._data):
+            raise MalformedReportError(f"field at byte {self._pos} runs past the end of the report")
+        chunk = self._data[self._pos : end]
+        self._pos = end
+        return chunk
+
+    def count(self, lowest: int, highest: int) -> int:
+        """Next byte as a count that must lie in ``lowest…highest``."""
+        position = self._pos
+        value = self.u8()
+        if not lowest <= value <= highest:
+            raise MalformedReportError(f"byte {position}: count {value} not in {lowest}…{highest}")
+        return value
+
+    def flag(self) -> int:
+        """Next byte as a 0/1 flag."""
+        return self.count(0, 1)
+
+    def text(self) -> str:
+        """Next length-prefixed UTF-8 text."""
+        data = self.raw(self.u8())
+        try:
+            return data.decode("utf-8")
+        except UnicodeDecodeError:
+            raise MalformedReportError("text is not UTF-8") from None
+
+    def end(self) -> None:
+        """Check that the rest of the report is zero padding."""
+        rest = self._data[self._pos :]
+        if rest.strip(b"\x00"):
+            raise MalformedReportError(f"non-zero bytes after the message at byte {self._pos}")
