@@ -188,12 +188,13 @@ class TriggerEngine:
             return Frame(buffer.total - self.window, self.window, 0, False)
         if self.done:
             return self._shown
-        if self._pending is not None and buffer.total >= self._pending.stop:
-            self._complete(buffer.total)
         if self._pending is None:
             self._search(buffer)
         if self._pending is not None:
-            return self._pending
+            if buffer.total < self._pending.stop:
+                return self._pending  # still filling
+            self._complete(buffer.total)
+            return self._shown
         if mode is TriggerMode.AUTO and buffer.total - self._since > self.window:
             start = buffer.total - self.window
             return Frame(start, self.window, start + self.pre, False)

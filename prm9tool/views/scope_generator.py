@@ -1,0 +1,185 @@
+"""Setpoint generator for tuning: drives the valve's setpoint through the override objects.
+
+While SETPOVRON = 1 the firmware takes its setpoint from SETPOVR instead of the analog input.
+The generator writes SETPOVR every tick in which the value changed and at least every 100 ms
+(the firmware drops the override after 500 ms without USB traffic), and writes SETPOVRON = 0
+when it stops. When the link drops it only stops its timer: nothing can be written any more,
+and the firmware switches the override off by itself.
+"""
+
+from __future__ import annotations
+
+import time
+from typing import Any
+
+from PySide6.QtCore import QObject, QTimer, Signal
+from PySide6.QtWidgets import (
+    QComboBox,
+    QDoubleSpinBox,
+    QFormLayout,
+    QGroupBox,
+    QHBoxLayout,
+    QPushButton,
+    QWidget,
+)
+
+from prm9tool.scope import GeneratorSettings, Waveform, setpoint_limits
+
+TICK_MS = 20  # setpoint update period (50 Hz)
+KEEPALIVE_S = 0.1  # rewrite an unchanged setpoint this often
+
+
+class SetpointGenerator(QObject):
+    """Runs a :class:`GeneratorSettings` waveform on the valve's setpoint override."""
+
+    running_changed = Signal(bool)
+    stopped_by_link = Signal()  # the link dropped while running
+
+    def __init__(self, connection: Any, parent: QObject | None = None) -> None:
+        super().__init__(parent)
+        self._connection = connection
+        self._settings = GeneratorSettings()
+        self._timer = QTimer(self)
+        self._timer.setInterval(TICK_MS)
+        self._timer.timeout.connect(self._on_tick)
+        self._started = 0.0
+        self._last_raw: int | None = None
+        self._last_write = 0.0
+        connection.lost.connect(self._on_link_lost)
+        connection.online_changed.connect(self._on_online_changed)
+
+    @property
+    def running(self) -> bool:
+        """True while the generator drives the setpoint."""
+        return self._timer.isActive()
+
+    def start(self, settings: GeneratorSettings) -> None:
+        """Check ``settings``, switch the override on and start the waveform.
+
+        Raises ValueRangeError for a waveform outside the setpoint range and RuntimeError
+        when no valve is online. The caller has asked the user to confirm.
+        """
+        settings.check()
+        if not self._connection.is_online:
+            raise RuntimeError("The setpoint generator needs a connected valve.")
+        self._settings = settings
+        self._started = time.monotonic()
+        self._last_raw = None
+        self._write_setpoint(0.0)
+        self._connection.write("SETPOVRON", 1)
+        self._timer.start()
+        self.running_changed.emit(True)
+
+    def stop(self) -> None:
+        """Switch the override off (when online) and stop."""
+        if not self.running:
+            return
+        self._timer.stop()
+        if self._connection.is_online:
+            self._connection.write("SETPOVRON", 0)
+        self.running_changed.emit(False)
+
+    def _on_tick(self) -> None:
+        self._write_setpoint(time.monotonic() - self._started)
+
+    def _write_setpoint(self, elapsed: float) -> None:
+        raw = self._settings.raw_at(elapsed)
+        now = time.monotonic()
+        if raw != self._last_raw or now - self._last_write >= KEEPALIVE_S:
+            self._connection.write("SETPOVR", raw)
+            self._last_raw, self._last_write = raw, now
+
+    def _on_link_lost(self, *_: object) -> None:
+        if self.running:
+            self._timer.stop()
+            self.running_changed.emit(False)
+            self.stopped_by_link.emit()
+
+    def _on_online_changed(self, online: bool) -> None:
+        if not online:
+            self._on_link_lost()
+
+
+class GeneratorPanel(QGroupBox):
+    """Waveform, amplitude, offset and period, and a Start/Stop button."""
+
+    start_requested = Signal(object)  # GeneratorSettings
+    stop_requested = Signal()
+
+    def __init__(self, parent: QWidget | None = None) -> None:
+        super().__init__(parent)
+        low, high = setpoint_limits()
+        self.waveform = QComboBox()
+        for waveform in Waveform:
+            self.waveform.addItem("", waveform)
+        self.amplitude, self.offset, self.period = (QDoubleSpinBox() for _ in range(3))
+        for box, value in ((self.amplitude, 20.0), (self.offset, 0.0)):
+            box.setRange(low - high, high - low)
+            box.setDecimals(1)
+            box.setSuffix(" %")
+            box.setValue(value)
+        self.offset.setRange(low, high)
+        self.period.setRange(0.05, 60.0)
+        self.period.setDecimals(2)
+        self.period.setSuffix(" s")
+        self.period.setValue(1.0)
+        self.button = QPushButton()
+        self.button.setCheckable(True)
+        self.button.clicked.connect(self._on_button_clicked)
+        form = QFormLayout()
+        self.form = form
+        form.addRow("", self.waveform)
+        form.addRow("", self.amplitude)
+        row = QHBoxLayout()
+        row.addWidget(self.offset)
+        row.addWidget(self.period)
+        form.addRow("", row)
+        form.addRow(self.button)
+        self.setLayout(form)
+        self.retranslate()
+
+    def retranslate(self) -> None:
+        """Re-read user-visible texts (after a language change)."""
+        self.setTitle(self.tr("Setpoint generator"))
+        names = {
+            Waveform.STEP: self.tr("Step"),
+            Waveform.SQUARE: self.tr("Square"),
+            Waveform.SINE: self.tr("Sine"),
+        }
+        for row in range(self.waveform.count()):
+            self.waveform.setItemText(row, names[Waveform(self.waveform.itemData(row))])
+        labels = (self.tr("Waveform"), self.tr("Amplitude"), self.tr("Offset / period"))
+        for row, label in enumerate(labels):
+            item = self.form.itemAt(row, QFormLayout.ItemRole.LabelRole)
+            if item is not None and item.widget() is not None:
+                item.widget().setText(label)
+        self.amplitude.setToolTip(
+            self.tr(
+                "Step and square: height of the step above the offset. Sine: peak value. "
+                "In % of the setpoint range."
+            )
+        )
+        self.set_running(self.button.isChecked())
+
+    def settings(self) -> GeneratorSettings:
+        """The waveform as set up."""
+        return GeneratorSettings(
+            waveform=Waveform(self.waveform.currentData()),
+            amplitude=self.amplitude.value(),
+            offset=self.offset.value(),
+            period=self.period.value(),
+        )
+
+    def set_running(self, running: bool) -> None:
+        """Show the generator as running or stopped."""
+        self.button.setChecked(running)
+        self.button.setText(self.tr("Stop generator") if running else self.tr("Start generator"))
+        for box in (self.waveform, self.amplitude, self.offset, self.period):
+            box.setEnabled(not running)
+
+    def _on_button_clicked(self, checked: bool) -> None:
+        self.button.setChecked(not checked)  # the widget confirms the state via set_running
+        if checked:
+            self.start_requested.emit(self.settings())
+        else:
+            self.stop_requested.emit()

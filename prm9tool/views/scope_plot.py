@@ -1,0 +1,219 @@
+"""The oscilloscope's plot: one ViewBox and axis per channel, A/B cursors, a live legend.
+
+Channel 1 uses the plot's own ViewBox and left axis; channels 2 and 3 get their own ViewBoxes
+(x-linked, stacked below the main one so the mouse and the cursors stay on it) with axes on the
+right. Each channel therefore has its own colour, unit and scale; dragging or wheeling on an
+axis zooms that channel alone. Curves clip to the view and peak-downsample, so a 10 s window at
+5 kHz draws as a few thousand points.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Sequence
+
+import numpy as np
+import pyqtgraph as pg
+from PySide6.QtCore import Qt, Signal
+from PySide6.QtGui import QImage
+from PySide6.QtWidgets import QHBoxLayout, QLabel, QPushButton, QVBoxLayout, QWidget
+
+from prm9tool.i18n import text
+from prm9tool.signals import MAX_CHANNELS
+from prm9tool.signals import Signal as MeasuringPoint
+
+COLOURS = ("#ffd43b", "#4dd0e1", "#ff7eb6")  # channel 1, 2, 3
+CURSOR_COLOUR = "#e0e0e0"
+
+
+def _format(value: float, unit: str) -> str:
+    """A value with 4 significant digits and its unit ('—' for NaN)."""
+    return "—" if math.isnan(value) else f"{value:.4g} {unit}"
+
+
+class _LegendEntry(QWidget):
+    """Colour, name, live value and an autoscale button of one channel."""
+
+    def __init__(self, slot: int, parent: QWidget | None = None) -> None:
+        super().__init__(parent)
+        self.label = QLabel()
+        self.label.setTextFormat(Qt.TextFormat.RichText)
+        self.autoscale = QPushButton()
+        self.autoscale.setFlat(True)
+        layout = QHBoxLayout(self)
+        layout.setContentsMargins(0, 0, 0, 0)
+        layout.addWidget(self.label)
+        layout.addWidget(self.autoscale)
+        self._colour = COLOURS[slot]
+        self._name = ""
+        self._unit = ""
+
+    def set_signal(self, signal: MeasuringPoint) -> None:
+        """Show ``signal``'s name and unit."""
+        self._name, self._unit = text(signal.text), signal.unit
+        self.set_value(math.nan)
+
+    def set_value(self, value: float) -> None:
+        """Show the live value."""
+        self.label.setText(
+            f'<span style="color:{self._colour}">■</span> {self._name}: '
+            f"<b>{_format(value, self._unit)}</b>"
+        )
+
+
+class ScopePlot(QWidget):
+    """Plot area of the oscilloscope (no data logic: the owner pushes arrays in)."""
+
+    cursors_moved = Signal()
+    x_range_changed = Signal()  # the user zoomed or panned the time axis
+
+    def __init__(self, parent: QWidget | None = None) -> None:
+        super().__init__(parent)
+        self.graphics = pg.GraphicsLayoutWidget()
+        self.graphics.setBackground("#111418")
+        self.item = self.graphics.addPlot(row=0, col=0)
+        self.item.showGrid(x=True, y=True, alpha=0.25)
+        self.item.hideButtons()
+        self.views = [self.item.getViewBox(), pg.ViewBox(), pg.ViewBox()]
+        self.axes = [self.item.getAxis("left"), self.item.getAxis("right"), pg.AxisItem("right")]
+        self.item.showAxis("right")
+        self.item.layout.addItem(self.axes[2], 2, 3)
+        for view, axis in zip(self.views[1:], self.axes[1:], strict=True):
+            self.item.scene().addItem(view)
+            axis.linkToView(view)
+            view.setXLink(self.item)
+            view.setZValue(-10)  # below the main plot: mouse and cursors act on channel 1's view
+        self.views[0].sigResized.connect(self._sync_geometry)
+        self.views[0].sigRangeChangedManually.connect(lambda *_: self.x_range_changed.emit())
+        self.curves = [self._make_curve(slot) for slot in range(MAX_CHANNELS)]
+        self.cursors = [self._make_cursor(name) for name in ("A", "B")]
+        self.legend = [_LegendEntry(slot) for slot in range(MAX_CHANNELS)]
+        for slot, entry in enumerate(self.legend):
+            entry.autoscale.clicked.connect(lambda _=False, s=slot: self.autoscale(s))
+        self._build_layout()
+        self.set_channels([])
+        self.set_cursors_visible(False)
+        self.retranslate()
+
+    def _make_curve(self, slot: int) -> pg.PlotDataItem:
+        curve = pg.PlotDataItem(pen=pg.mkPen(COLOURS[slot], width=1.5))
+        curve.setClipToView(True)
+        curve.setDownsampling(auto=True, method="peak")
+        curve.setSkipFiniteCheck(True)
+        self.views[slot].addItem(curve)
+        return curve
+
+    def _make_cursor(self, name: str) -> pg.InfiniteLine:
+        pen = pg.mkPen(CURSOR_COLOUR, width=1, style=Qt.PenStyle.DashLine)
+        line = pg.InfiniteLine(angle=90, movable=True, pen=pen, label=name)
+        line.label.setColor(CURSOR_COLOUR)
+        line.label.setPosition(0.96)
+        line.sigPositionChanged.connect(lambda *_: self.cursors_moved.emit())
+        self.item.addItem(line, ignoreBounds=True)
+        return line
+
+    def _build_layout(self) -> None:
+        strip = QHBoxLayout()
+        for entry in self.legend:
+            strip.addWidget(entry)
+        strip.addStretch(1)
+        layout = QVBoxLayout(self)
+        layout.setContentsMargins(0, 0, 0, 0)
+        layout.addLayout(strip)
+        layout.addWidget(self.graphics, 1)
+
+    def _sync_geometry(self) -> None:
+        for view in self.views[1:]:
+            view.setGeometry(self.views[0].sceneBoundingRect())
+            view.linkedViewChanged(self.views[0], view.XAxis)
+
+    def retranslate(self) -> None:
+        """Re-read user-visible texts (after a language change)."""
+        for entry in self.legend:
+            entry.autoscale.setText(self.tr("Auto"))
+            entry.autoscale.setToolTip(self.tr("Scale this channel to its data again"))
+
+    # --- channels and data ---------------------------------------------------------------------
+    def set_channels(self, signals: Sequence[MeasuringPoint]) -> None:
+        """Show one axis, curve and legend entry per signal (at most three)."""
+        for slot in range(MAX_CHANNELS):
+            used = slot < len(signals)
+            self.axes[slot].setVisible(used or slot == 0)
+            self.legend[slot].setVisible(used)
+            self.curves[slot].setData([], [])
+            if used:
+                signal = signals[slot]
+                axis = self.axes[slot]
+                axis.setLabel(f"{text(signal.text)} [{signal.unit}]", color=COLOURS[slot])
+                axis.setTextPen(COLOURS[slot])
+                self.legend[slot].set_signal(signal)
+                self.autoscale(slot)
+        if not signals:
+            self.axes[0].setLabel("")
+        self._channels = len(signals)
+
+    def set_time_label(self, label: str) -> None:
+        """Label of the time axis."""
+        self.item.setLabel("bottom", label)
+
+    def show_data(self, t: np.ndarray, values: np.ndarray) -> None:
+        """Draw ``values[:, c]`` over ``t`` for every channel."""
+        for slot in range(self._channels):
+            self.curves[slot].setData(t, values[:, slot])
+
+    def show_latest(self, values: np.ndarray) -> None:
+        """Live values in the legend (one per channel, NaN when unknown)."""
+        for slot in range(self._channels):
+            self.legend[slot].set_value(float(values[slot]))
+
+    def set_x_range(self, x0: float, x1: float) -> None:
+        """Show times ``x0`` … ``x1``."""
+        self.views[0].setXRange(x0, x1, padding=0)
+
+    def x_range(self) -> tuple[float, float]:
+        """The time range on screen."""
+        x0, x1 = self.views[0].viewRange()[0]
+        return float(x0), float(x1)
+
+    def set_time_interactive(self, interactive: bool) -> None:
+        """Allow zooming and panning the time axis with the mouse (when the display holds)."""
+        self.views[0].setMouseEnabled(x=interactive, y=True)
+
+    def autoscale(self, slot: int) -> None:
+        """Scale channel ``slot``'s axis to its data, and keep doing so as data arrives."""
+        self.views[slot].enableAutoRange(axis=pg.ViewBox.YAxis, enable=True)
+
+    def y_range(self, slot: int) -> tuple[float, float]:
+        """The value range shown on channel ``slot``'s axis."""
+        y0, y1 = self.views[slot].viewRange()[1]
+        return float(y0), float(y1)
+
+    # --- cursors -------------------------------------------------------------------------------
+    def set_cursors_visible(self, visible: bool) -> None:
+        """Show the A/B cursors; they appear at ¼ and ¾ of the visible time range."""
+        if visible:
+            x0, x1 = self.x_range()
+            for line, share in zip(self.cursors, (0.25, 0.75), strict=True):
+                if not x0 <= line.value() <= x1:
+                    line.setValue(x0 + share * (x1 - x0))
+        for line in self.cursors:
+            line.setVisible(visible)
+        self.cursors_moved.emit()
+
+    @property
+    def cursors_visible(self) -> bool:
+        """True while the A/B cursors are shown."""
+        return self.cursors[0].isVisible()
+
+    def cursor_times(self) -> tuple[float, float]:
+        """Times of cursors A and B."""
+        return float(self.cursors[0].value()), float(self.cursors[1].value())
+
+    def set_cursor_times(self, t_a: float, t_b: float) -> None:
+        """Place cursors A and B."""
+        self.cursors[0].setValue(t_a)
+        self.cursors[1].setValue(t_b)
+
+    def render_image(self) -> QImage:
+        """The legend strip and plot as an image (PNG export)."""
+        return self.grab().toImage()

@@ -1,0 +1,189 @@
+"""Cursor read-out and step-response figures shown next to the oscilloscope plot."""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Sequence
+
+from PySide6.QtCore import Signal
+from PySide6.QtWidgets import (
+    QComboBox,
+    QFormLayout,
+    QGridLayout,
+    QGroupBox,
+    QLabel,
+    QVBoxLayout,
+    QWidget,
+)
+
+from prm9tool.i18n import text
+from prm9tool.scope import CursorReadout, StepFigures
+from prm9tool.signals import MAX_CHANNELS
+from prm9tool.signals import Signal as MeasuringPoint
+from prm9tool.views.scope_plot import COLOURS
+
+
+def _value(value: float, unit: str, digits: int = 4) -> str:
+    return "—" if math.isnan(value) else f"{value:.{digits}g} {unit}".rstrip()
+
+
+def _time(seconds: float) -> str:
+    if math.isnan(seconds):
+        return "—"
+    if abs(seconds) < 1.0:
+        return f"{seconds * 1000:.4g} ms"
+    return f"{seconds:.4g} s"
+
+
+class CursorPanel(QGroupBox):
+    """Δt, 1/Δt and per channel the values at A and B and their difference."""
+
+    def __init__(self, parent: QWidget | None = None) -> None:
+        super().__init__(parent)
+        grid = QGridLayout(self)
+        self.headers = [QLabel() for _ in range(4)]
+        for col, header in enumerate(self.headers):
+            grid.addWidget(header, 0, col)
+        self.cells = [[QLabel() for _ in range(4)] for _ in range(MAX_CHANNELS)]
+        for row, cells in enumerate(self.cells, start=1):
+            for col, cell in enumerate(cells):
+                grid.addWidget(cell, row, col)
+        self.dt = QLabel()
+        grid.addWidget(self.dt, MAX_CHANNELS + 1, 0, 1, 4)
+        self._units: list[str] = []
+        self.retranslate()
+        self.show_readout(None)
+
+    def retranslate(self) -> None:
+        """Re-read user-visible texts (after a language change)."""
+        self.setTitle(self.tr("Cursors"))
+        for header, label in zip(self.headers, ("", "A", "B", "B − A"), strict=True):
+            header.setText(f"<b>{label}</b>")
+
+    def set_channels(self, signals: Sequence[MeasuringPoint]) -> None:
+        """One row per active channel."""
+        self._units = [s.unit for s in signals]
+        for slot, cells in enumerate(self.cells):
+            for cell in cells:
+                cell.setVisible(slot < len(signals))
+            if slot < len(signals):
+                cells[0].setText(f'<span style="color:{COLOURS[slot]}">■</span> {slot + 1}')
+                cells[0].setToolTip(text(signals[slot].text))
+        self.show_readout(None)
+
+    def show_readout(self, readout: CursorReadout | None) -> None:
+        """Show the values of ``readout`` (None: cursors off)."""
+        for slot, unit in enumerate(self._units):
+            values = (
+                (readout.a[slot], readout.b[slot], readout.delta[slot])
+                if readout is not None
+                else (math.nan,) * 3
+            )
+            for cell, value in zip(self.cells[slot][1:], values, strict=True):
+                cell.setText(_value(float(value), unit))
+        if readout is None:
+            self.dt.setText(self.tr("Switch the cursors on to measure."))
+        else:
+            self.dt.setText(
+                self.tr("Δt = {0}    1/Δt = {1}").format(
+                    _time(readout.dt), _value(readout.frequency, "Hz")
+                )
+            )
+
+
+class StepPanel(QGroupBox):
+    """Rise time, overshoot, settling time and steady-state error of the response channel."""
+
+    channels_changed = Signal()
+
+    def __init__(self, parent: QWidget | None = None) -> None:
+        super().__init__(parent)
+        self.reference, self.response = QComboBox(), QComboBox()
+        self.region = QLabel()
+        self.region.setWordWrap(True)
+        self.figures = {
+            name: QLabel() for name in ("step", "rise", "overshoot", "settling", "error")
+        }
+        self.form = QFormLayout()
+        self.form.addRow("", self.reference)
+        self.form.addRow("", self.response)
+        for label in self.figures.values():
+            self.form.addRow("", label)
+        layout = QVBoxLayout(self)
+        layout.addLayout(self.form)
+        layout.addWidget(self.region)
+        self.reference.currentIndexChanged.connect(lambda _: self.channels_changed.emit())
+        self.response.currentIndexChanged.connect(lambda _: self.channels_changed.emit())
+        self._units: list[str] = []
+        self.retranslate()
+        self.show_figures(None, "")
+
+    def retranslate(self) -> None:
+        """Re-read user-visible texts (after a language change)."""
+        self.setTitle(self.tr("Step response"))
+        labels = (
+            self.tr("Reference"),
+            self.tr("Response"),
+            self.tr("Step"),
+            self.tr("Rise time 10–90 %"),
+            self.tr("Overshoot"),
+            self.tr("Settling time ±2 %"),
+            self.tr("Steady-state error"),
+        )
+        for row, label in enumerate(labels):
+            item = self.form.itemAt(row, QFormLayout.ItemRole.LabelRole)
+            if item is not None and isinstance(item.widget(), QLabel):
+                item.widget().setText(label)
+        if self.reference.count():
+            self.reference.setItemText(0, self.tr("(none: step on the response)"))
+
+    def set_channels(self, signals: Sequence[MeasuringPoint]) -> None:
+        """Offer the active channels; default: channel 1 is the reference, channel 2 responds."""
+        self._units = [s.unit for s in signals]
+        for combo in (self.reference, self.response):
+            combo.blockSignals(True)
+            combo.clear()
+        self.reference.addItem(self.tr("(none: step on the response)"), -1)
+        for slot, signal in enumerate(signals):
+            label = f"{slot + 1}: {text(signal.text)}"
+            self.reference.addItem(label, slot)
+            self.response.addItem(label, slot)
+        two = len(signals) >= 2
+        self.reference.setCurrentIndex(1 if two else 0)
+        self.response.setCurrentIndex(1 if two else 0)
+        for combo in (self.reference, self.response):
+            combo.blockSignals(False)
+        self.channels_changed.emit()
+
+    def reference_slot(self) -> int | None:
+        """Channel whose step is the reference (None: detect the step on the response)."""
+        slot = self.reference.currentData()
+        return None if slot is None or slot < 0 else int(slot)
+
+    def response_slot(self) -> int | None:
+        """Channel whose response is measured."""
+        slot = self.response.currentData()
+        return None if slot is None else int(slot)
+
+    def show_figures(self, figures: StepFigures | None, region: str) -> None:
+        """Show ``figures`` computed on ``region`` (a description like 'between the cursors')."""
+        slot = self.response_slot()
+        unit = self._units[slot] if slot is not None and slot < len(self._units) else ""
+        if figures is None:
+            for label in self.figures.values():
+                label.setText("—")
+            self.region.setText(self.tr("No step found in {0}.").format(region) if region else "")
+            return
+        self.figures["step"].setText(
+            f"{_value(figures.initial, unit)} → {_value(figures.final, unit)}"
+            f"  @ {_time(figures.t_step)}"
+        )
+        self.figures["rise"].setText(_time(figures.rise_time))
+        self.figures["overshoot"].setText(f"{figures.overshoot:.1f} %")
+        self.figures["settling"].setText(
+            _time(figures.settling_time)
+            if not math.isnan(figures.settling_time)
+            else self.tr("not settled in the window")
+        )
+        self.figures["error"].setText(_value(figures.steady_state_error, unit, 3))
+        self.region.setText(self.tr("Measured on {0}.").format(region))

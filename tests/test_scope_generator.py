@@ -1,0 +1,117 @@
+"""Setpoint generator safety: confirmation, override on/off, stop on Stop, close and link loss."""
+
+from __future__ import annotations
+
+import pytest
+from PySide6.QtWidgets import QMessageBox
+from scope_fakes import FakeConnection
+
+from prm9tool.document import ParameterDocument
+from prm9tool.scope import Waveform
+from prm9tool.views.scope import ScopeWidget
+
+YES, NO = QMessageBox.StandardButton.Yes, QMessageBox.StandardButton.No
+
+
+@pytest.fixture
+def conn():
+    return FakeConnection()
+
+
+@pytest.fixture
+def scope(qtbot, conn):
+    widget = ScopeWidget(conn, ParameterDocument("PRM9-06.3Z11/30-24E02S02"))
+    qtbot.addWidget(widget)
+    return widget
+
+
+@pytest.fixture
+def answer(monkeypatch):
+    """What the user answers in the confirmation box (records that it was asked)."""
+    asked: list[str] = []
+    reply = {"button": YES}
+
+    def question(_parent, _title, text, *_args):
+        asked.append(text)
+        return reply["button"]
+
+    monkeypatch.setattr(QMessageBox, "question", question)
+    reply["asked"] = asked
+    return reply
+
+
+def _start(scope: ScopeWidget, waveform=Waveform.SQUARE, amplitude=30.0, offset=10.0):
+    panel = scope.generator_panel
+    panel.waveform.setCurrentIndex(panel.waveform.findData(waveform))
+    panel.amplitude.setValue(amplitude)
+    panel.offset.setValue(offset)
+    panel.period.setValue(0.2)
+    panel.button.click()
+
+
+def test_generator_asks_first_then_switches_the_override_on(scope, conn, answer, qtbot):
+    _start(scope)
+    assert answer["asked"] and "valve will move" in answer["asked"][0]
+    assert conn.writes[:2] == [("SETPOVR", 1638), ("SETPOVRON", 1)]  # 10 % of ±16384
+    assert scope.generator.running and scope.generator_panel.button.isChecked()
+    qtbot.waitUntil(lambda: ("SETPOVR", 6554) in conn.writes, timeout=2000)  # 40 % after T/2
+
+
+def test_declining_the_confirmation_writes_nothing(scope, conn, answer):
+    answer["button"] = NO
+    _start(scope)
+    assert conn.writes == []
+    assert not scope.generator.running
+    assert not scope.generator_panel.button.isChecked()
+
+
+def test_stop_button_switches_the_override_off(scope, conn, answer):
+    _start(scope)
+    scope.generator_panel.button.click()
+    assert conn.writes[-1] == ("SETPOVRON", 0)
+    assert not scope.generator.running
+    assert scope.generator_panel.button.text() == "Start generator"
+
+
+def test_scope_stop_and_close_stop_the_generator(scope, conn, answer):
+    _start(scope)
+    scope.stop()
+    assert conn.writes[-1] == ("SETPOVRON", 0) and not scope.generator.running
+    _start(scope)
+    scope.close()
+    assert conn.writes[-1] == ("SETPOVRON", 0) and not scope.generator.running
+
+
+def test_link_loss_stops_the_generator_without_writing(scope, conn, answer, qtbot):
+    _start(scope)
+    count = len(conn.writes)
+    conn.drop_link()  # FakeConnection.write raises if anything is written offline
+    assert not scope.generator.running
+    assert not scope.generator_panel.isEnabled()
+    assert "generator has stopped" in scope.status.text()
+    qtbot.wait(100)
+    assert len(conn.writes) == count
+
+
+def test_going_offline_stops_the_generator(scope, conn, answer):
+    _start(scope)
+    conn.is_online = False
+    conn.online_changed.emit(False)
+    assert not scope.generator.running
+
+
+def test_a_waveform_outside_the_setpoint_range_is_refused_with_its_reason(
+    scope, conn, answer, monkeypatch
+):
+    shown: list[str] = []
+    monkeypatch.setattr(QMessageBox, "warning", lambda _p, _t, text, *_a: shown.append(text))
+    _start(scope, Waveform.SINE, amplitude=60.0, offset=50.0)
+    assert shown == [
+        "The waveform reaches -10 … 110 %; the setpoint must stay within -100 … 100 %."
+    ]
+    assert conn.writes == [] and answer["asked"] == []
+
+
+def test_unchanged_setpoint_is_rewritten_as_keepalive(scope, conn, answer, qtbot):
+    _start(scope, Waveform.STEP, amplitude=0.0, offset=20.0)
+    qtbot.waitUntil(lambda: conn.writes.count(("SETPOVR", 3277)) >= 3, timeout=2000)

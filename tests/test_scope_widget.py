@@ -1,0 +1,240 @@
+"""The oscilloscope widget against a fake connection: channels, capture, triggers, export."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+from PySide6.QtCore import Qt
+from scope_fakes import FakeConnection
+
+from prm9tool.document import ParameterDocument
+from prm9tool.scope import TriggerMode
+from prm9tool.signals import signals_for
+from prm9tool.views.scope import ScopeWidget
+
+E02 = "PRM9-06.3Z11/30-24E02S02"
+E04 = "PRM9-10.2Z51/60-24E04S02-CA"
+
+
+@pytest.fixture
+def conn():
+    return FakeConnection()
+
+
+@pytest.fixture
+def doc():
+    return ParameterDocument(E02)
+
+
+@pytest.fixture
+def scope(qtbot, conn, doc):
+    widget = ScopeWidget(conn, doc)
+    qtbot.addWidget(widget)
+    widget.resize(1400, 800)
+    widget.show()
+    return widget
+
+
+def _check(scope: ScopeWidget, row: int) -> None:
+    scope.channels.list.item(row).setCheckState(Qt.CheckState.Checked)
+
+
+def _step_block(count: int, at: int, channels: int = 2) -> np.ndarray:
+    """Raw block: channel 0 steps from 0 to 8192 (50 %) at ``at``; others follow with lag."""
+    ref = np.where(np.arange(count) >= at, 8192, 0)
+    lagged = np.where(np.arange(count) >= at + 50, 8192, 0)
+    return np.column_stack([ref, lagged, np.full(count, 700)][:channels])
+
+
+def test_lists_every_measuring_point_of_the_variant(scope, doc):
+    names = [scope.channels.list.item(r).text() for r in range(scope.channels.list.count())]
+    assert len(names) == len(signals_for(doc.variant))
+    assert not any("Process actual" in name for name in names)  # E04 only
+
+
+def test_a_new_valve_type_relists_the_points_and_keeps_those_that_exist(scope, doc):
+    scope.preselect("position_actual")
+    doc.set_type_key(E04)
+    names = [scope.channels.list.item(r).text() for r in range(scope.channels.list.count())]
+    assert len(names) == len(signals_for(doc.variant))
+    assert any("Process actual" in name for name in names)
+    assert scope.channels.selected() == ["position_actual"]
+
+
+def test_a_fourth_channel_is_refused_with_a_message(scope):
+    for row in range(4):
+        _check(scope, row)
+    assert len(scope.channels.selected()) == 3
+    assert scope.channels.list.item(3).checkState() == Qt.CheckState.Unchecked
+    assert "At most three measuring points" in scope.channels.message.text()
+    scope.channels.list.item(0).setCheckState(Qt.CheckState.Unchecked)
+    _check(scope, 3)
+    assert len(scope.channels.selected()) == 3
+    assert scope.channels.message.text() == ""
+
+
+def test_preselect_activates_the_signal_and_shows_its_axis(scope):
+    scope.preselect("position_actual")
+    assert scope.channels.selected() == ["position_actual"]
+    assert scope.plot.legend[0].isVisibleTo(scope)
+    assert "Spool position actual" in scope.plot.axes[0].labelText
+
+
+def test_preselect_with_three_active_replaces_the_third(scope):
+    for key in ("setpoint_raw", "demand", "position_setpoint", "position_actual"):
+        scope.preselect(key)
+    assert scope.channels.selected() == ["setpoint_raw", "demand", "position_actual"]
+    assert "replaces" in scope.channels.message.text()
+
+
+def test_offline_the_scope_cannot_start_and_says_why(qtbot, doc):
+    conn = FakeConnection(online=False)
+    widget = ScopeWidget(conn, doc)
+    qtbot.addWidget(widget)
+    widget.preselect("current_a")
+    assert not widget.controls.start.isEnabled()
+    assert not widget.generator_panel.isEnabled()
+    assert "needs a connected valve" in widget.status.text()
+    widget.start()
+    assert conn.streams == []
+    conn.go_online()
+    assert widget.controls.start.isEnabled()
+
+
+def test_start_streams_the_selected_points_into_the_buffer_and_draws(scope, conn):
+    scope.preselect("demand")
+    scope.preselect("position_actual")
+    scope.controls.rate.setCurrentIndex(scope.controls.rate.findData(1000))
+    scope.start()
+    assert conn.streams == [(["demand", "position_actual"], 1000)]
+    conn.samples_received.emit(_step_block(500, 100))
+    scope._redraw()
+    assert scope.capture.buffer.total == 500
+    x, y = scope.plot.curves[1].getData()
+    assert len(x) > 0 and y.max() == pytest.approx(50.0)
+    assert "50 %" in scope.plot.legend[0].label.text()
+
+
+def test_changing_channels_or_rate_while_running_restarts_cleanly(scope, conn):
+    scope.preselect("demand")
+    scope.start()
+    conn.samples_received.emit(_step_block(100, 10, channels=1))
+    scope.preselect("current_a")
+    assert conn.streams[-1] == (["demand", "current_a"], 5000)
+    assert scope.capture.buffer.total == 0
+    conn.samples_received.emit(np.zeros((20, 1)))  # a late block of the old stream
+    assert scope.capture.buffer.total == 0
+    scope.controls.rate.setCurrentIndex(scope.controls.rate.findData(500))
+    assert conn.streams[-1] == (["demand", "current_a"], 500)
+    assert scope.capture.rate_hz == 500
+
+
+def test_single_trigger_holds_the_captured_step(scope, conn):
+    scope.preselect("demand")
+    scope.preselect("position_actual")
+    c = scope.controls
+    c.mode.setCurrentIndex(c.mode.findData(TriggerMode.SINGLE))
+    c.level.setValue(25.0)
+    c.window.setCurrentIndex(c.window.findData(0.1))  # 500 samples at 5 kHz
+    scope.start()
+    conn.samples_received.emit(np.zeros((300, 2)))
+    scope._redraw()
+    assert "Waiting for the trigger" in scope.status.text()
+    conn.samples_received.emit(_step_block(1000, 200))
+    scope._redraw()
+    assert "Single capture complete" in scope.status.text()
+    assert scope.controls.pause.isChecked()
+    x0, x1 = scope.plot.x_range()
+    assert x0 == pytest.approx(-0.02) and x1 == pytest.approx(0.08)
+    conn.samples_received.emit(_step_block(1000, 200))  # recording goes on, display holds
+    assert scope.capture.buffer.total == 2300
+    assert len(scope._view_data()[0]) == 1300
+
+
+def test_pause_holds_the_display_and_allows_time_zoom(scope, conn):
+    scope.preselect("demand")
+    scope.start()
+    conn.samples_received.emit(np.zeros((100, 1)))
+    scope._redraw()
+    scope.controls.pause.click()
+    held = scope._view_data()[0].copy()
+    conn.samples_received.emit(np.ones((100, 1)))
+    scope._redraw()
+    np.testing.assert_array_equal(scope._view_data()[0], held)
+    assert scope.plot.views[0].state["mouseEnabled"][0]
+    scope.controls.pause.click()
+    scope._redraw()
+    assert len(scope._view_data()[0]) == 200
+    assert not scope.plot.views[0].state["mouseEnabled"][0]
+
+
+def test_cursors_read_values_and_differences(scope, conn):
+    scope.preselect("demand")
+    scope.preselect("current_a")
+    scope.start()
+    ramp = np.column_stack([np.arange(5000) * 2, np.full(5000, 650)])  # 0.2 s at 5 kHz
+    conn.samples_received.emit(ramp)
+    scope._redraw()
+    scope.stop()
+    scope.controls.cursors.setChecked(True)
+    scope.plot.set_cursor_times(0.1, 0.5)
+    cells = scope.cursor_panel.cells
+    expected_a = 500 * 2 * 100 / 16384  # sample 500 at 0.1 s, in %
+    assert cells[0][1].text() == f"{expected_a:.4g} %"
+    assert cells[1][3].text() == "0 mA"
+    assert "Δt = 400 ms" in scope.cursor_panel.dt.text()
+    assert "2.5 Hz" in scope.cursor_panel.dt.text()
+
+
+def test_step_figures_are_shown_for_the_captured_step(scope, conn):
+    scope.preselect("demand")
+    scope.preselect("position_actual")
+    scope.controls.window.setCurrentIndex(scope.controls.window.findData(0.5))
+    scope.start()
+    t = np.arange(2500) / 5000.0
+    resp = np.where(t >= 0.1, 8192 * (1 - np.exp(-(t - 0.1) / 0.01)), 0)
+    conn.samples_received.emit(np.column_stack([np.where(t >= 0.1, 8192, 0), resp]))
+    scope._redraw()
+    scope.stop()
+    scope._update_readouts()
+    figures = scope.step_panel.figures
+    assert figures["rise"].text() == "21.97 ms"  # τ·ln 9
+    assert figures["overshoot"].text() == "0.0 %"
+
+
+def test_csv_export_of_the_whole_recording_and_of_the_visible_window(scope, conn, tmp_path):
+    scope.preselect("demand")
+    scope.preselect("current_a")
+    scope.start()
+    conn.samples_received.emit(np.column_stack([np.arange(1000), np.full(1000, 700)]))
+    scope._redraw()
+    scope.stop()
+    whole = tmp_path / "whole.csv"
+    assert scope.export_csv(whole, whole=True) == 1000
+    lines = whole.read_text(encoding="utf-8").splitlines()
+    assert lines[0] == "time [s],demand [%],current_a [mA]"
+    assert lines[2].startswith("0.000200,0.0061")
+    scope.plot.set_x_range(0.05, 0.1)
+    part = tmp_path / "part.csv"
+    rows = scope.export_csv(part, whole=False)
+    assert 240 <= rows <= 252
+    assert part.read_text(encoding="utf-8").splitlines()[1].startswith("0.05")
+
+
+def test_png_export_writes_an_image(scope, conn, tmp_path):
+    scope.preselect("demand")
+    scope.start()
+    conn.samples_received.emit(np.zeros((100, 1)))
+    scope._redraw()
+    scope.export_png(tmp_path / "scope.png")
+    assert (tmp_path / "scope.png").read_bytes()[:4] == b"\x89PNG"
+
+
+def test_link_loss_stops_the_recording_and_keeps_the_data(scope, conn):
+    scope.preselect("demand")
+    scope.start()
+    conn.samples_received.emit(np.zeros((100, 1)))
+    conn.drop_link()
+    assert not scope.running
+    assert len(scope._view_data()[0]) == 100
+    assert "needs a connected valve" in scope.status.text()
