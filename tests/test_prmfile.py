@@ -5,6 +5,7 @@ from __future__ import annotations
 import errno
 import os
 import stat
+from pathlib import Path
 
 import pytest
 from hypothesis import given
@@ -515,3 +516,29 @@ def test_load_document_of_a_bad_file_raises_with_every_problem(qapp, tmp_path):
     assert lines[0] == f"{path}:{line_of(text, 'LIMTA')}: LIMTA: 'x' is not a number"
     assert lines[1].startswith(f"{path}:{line_of(text, 'DTAMP')}: DTAMP: 999 % is outside")
     assert lines[2].startswith(f"{path}:{text.count(chr(10))}: warning: checksum does not match")
+
+
+# --- docs/prm-format.md stays true ------------------------------------------------------------
+DOC = Path(__file__).parents[1] / "docs" / "prm-format.md"
+
+
+def _doc_block(marker: str) -> str:
+    text = DOC.read_text(encoding="utf-8")
+    start = text.index("```text\n", text.index(f"<!-- generated: {marker} -->")) + len("```text\n")
+    return text[start : text.index("```", start)]
+
+
+def test_the_example_in_the_format_specification_is_what_prm9tool_writes():
+    contents = PrmContents.factory(E04_CA)
+    contents.serial, contents.firmware = 1234567, "V0.35.16"
+    assert _doc_block("example") == contents.to_text()
+
+
+def test_the_check_output_in_the_format_specification_is_what_prm9tool_reports():
+    text = _doc_block("example")
+    text = replace_line(text, "THRESETP =", "THRESETP = 5.001  # Setpoint signal: threshold [%]")
+    text = replace_line(text, "PRCKP =", "PRCKP = 2x  # Process controller: proportional gain Kp")
+    text = replace_line(text, "LIMTA =", "LIMTA = 2700  # bigger solenoid")
+    text = replace_line(text, "CANTERM =", "CANTERM = 0\nCOLOR = blue")
+    output = "".join(p.format("edited.prm") + "\n" for p in problems_of(text))
+    assert _doc_block("check") == output
