@@ -42,6 +42,7 @@ BANNER = (
 _NAME = re.compile(r"[A-Za-z_][A-Za-z0-9_.\-]*")
 _CHECKSUM = re.compile(r"^crc32:[0-9a-f]{8}$")
 _BOM = b"\xef\xbb\xbf"
+_CONTROL = re.compile(r"[\x00-\x08\x0a-\x1f\x7f-\x9f]")  # all but TAB: binary data
 
 
 @dataclass
@@ -161,11 +162,10 @@ class _Lexer:
                 number, f"byte 0x{raw[exc.start]:02X} is not UTF-8 text: the file is corrupt"
             )
             return None
-        bad = next((ch for ch in text if _is_control(ch)), None)
+        bad = _CONTROL.search(text)
         if bad is not None:
-            self.error(
-                number, f"control character U+{ord(bad):04X}: binary data, the file is corrupt"
-            )
+            code = ord(bad.group())
+            self.error(number, f"control character U+{code:04X}: binary data, the file is corrupt")
             return None
         return text
 
@@ -214,11 +214,6 @@ def _split_entry(number: int, text: str) -> Entry | None:
         return Entry(number, name, rest.strip())
     value_end = len(rest[:hash_at].rstrip())
     return Entry(number, name, rest[:value_end].strip(), rest[value_end:])
-
-
-def _is_control(ch: str) -> bool:
-    code = ord(ch)
-    return (code < 0x20 and ch != "\t") or 0x7F <= code <= 0x9F
 
 
 def check_bytes(data: bytes) -> CheckResult:
