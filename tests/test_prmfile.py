@@ -468,10 +468,8 @@ def test_a_failure_midway_through_saving_leaves_the_old_file_untouched(
         save_document(doc, path)
     assert info.value.problems == [FileProblem(0, "cannot save the file: No space left on device")]
     assert path.read_bytes() == before
-    assert sorted(p.name for p in tmp_path.iterdir()) in (
-        ["valve.prm"],
-        ["valve.prm", "valve.prm.bak"],
-    )
+    left = ["valve.prm"] if failing_call == 1 else ["valve.prm", "valve.prm.bak"]
+    assert sorted(p.name for p in tmp_path.iterdir()) == left  # no temporary file left
     assert doc.modified and doc.value("DTAMP") == 1000  # nothing lost in the program either
 
 
