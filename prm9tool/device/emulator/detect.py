@@ -1,0 +1,101 @@
+"""Raw fault conditions the firmware evaluates every 1 ms (manual table 5-1).
+
+Each function of the table returns ``(condition, detection_delay_s)``; :class:`FaultMonitor`
+debounces them. What the injected faults do physically is described in docs/emulator.md.
+"""
+
+from __future__ import annotations
+
+from typing import TYPE_CHECKING
+
+from prm9tool.device.emulator.inputs import INPUT_TYPES
+from prm9tool.device.emulator.states import DeviceState, Fault
+from prm9tool.variant import Coils, Config
+
+if TYPE_CHECKING:
+    from prm9tool.device.emulator.firmware import Firmware
+
+
+def conditions(fw: Firmware) -> dict[str, tuple[bool, float]]:
+    """Every raw condition with its detection delay."""
+    c = fw.fw
+    injected = fw.injected
+    coils = fw.variant.coils
+    has_a = coils in (Coils.AB, Coils.A)
+    has_b = coils in (Coils.AB, Coils.B)
+    ia, ib = fw.loop.current_ma
+    return {
+        "coil_a_open": (has_a and Fault.COIL_A_OPEN in injected, c.coil_open_delay_s),
+        "coil_b_open": (has_b and Fault.COIL_B_OPEN in injected, c.coil_open_delay_s),
+        "coil_a_overcurrent": (
+            has_a and _overcurrent(fw, ia, "coil_a_overcurrent", Fault.COIL_A_OVERCURRENT),
+            c.overcurrent_delay_s,
+        ),
+        "coil_b_overcurrent": (
+            has_b and _overcurrent(fw, ib, "coil_b_overcurrent", Fault.COIL_B_OVERCURRENT),
+            c.overcurrent_delay_s,
+        ),
+        "setpoint": (_setpoint_error(fw), c.setpoint_error_delay_s),
+        "sensor": (_sensor_error(fw), c.sensor_error_delay_s),
+        "position_sensor": (Fault.POSITION_SENSOR_BREAK in injected, c.position_sensor_delay_s),
+        "supply": (_supply_error(fw), c.supply_delay_s),
+        "temperature": (_temperature_error(fw), c.temp_delay_s),
+        "monitoring": (_monitoring(fw), fw.value("MONDELAY") / 1000.0),
+    }
+
+
+def _overcurrent(fw: Firmware, current_ma: float, key: str, fault: Fault) -> bool:
+    """Comparator on the coil current; once tripped, the stage diagnostic keeps seeing the short."""
+    if current_ma > fw.fw.overcurrent_ma:
+        return True
+    return fw.faults.is_present(key) and fault in fw.injected
+
+
+def _setpoint_error(fw: Firmware) -> bool:
+    if fw.digital_setpoint or fw.value("SETPOVRON"):
+        return False
+    kind = INPUT_TYPES.get(fw.value("AINSETP"))
+    if kind is None:
+        return False
+    return kind.signal_error(fw.setpoint_electrical(), fw.supply, fw.fw)
+
+
+def _sensor_error(fw: Firmware) -> bool:
+    if fw.variant.config is not Config.E04:
+        return False
+    if Fault.SENSOR_BREAK in fw.injected:
+        return True  # a cut cable draws no current from the sensor supply pin (assumption)
+    kind = INPUT_TYPES.get(fw.value("SENSTYPE"))
+    if kind is None or fw.inputs["sensor_from_plant"] >= 0.5:
+        return False
+    return kind.signal_error(fw.inputs["sensor"], fw.supply, fw.fw)
+
+
+def _supply_error(fw: Firmware) -> bool:
+    c = fw.fw
+    v = fw.supply
+    if fw.faults.is_present("supply"):
+        hyst = c.supply_hysteresis_v
+        return not c.supply_min_v + hyst <= v <= c.supply_max_v - hyst
+    return not c.supply_min_v <= v <= c.supply_max_v
+
+
+def _temperature_error(fw: Firmware) -> bool:
+    c = fw.fw
+    limit = c.temp_error_c
+    if fw.faults.is_present("temperature"):
+        limit -= c.temp_hysteresis_c
+    return fw.temperature > limit
+
+
+def _monitoring(fw: Firmware) -> bool:
+    """|0x6350| beyond 0x6353, counted in DEVICE_MODE_ACTIVE; kept until the deviation is back.
+
+    While the monitoring error holds the spool centred the demand value keeps following the
+    setpoint, so the error goes away when the setpoint is brought back to where the valve is
+    (decision: re-arm at the actual value).
+    """
+    beyond = abs(fw.loop.ctrl_dev) > fw.value("MONTHRES")
+    if not beyond:
+        return False
+    return fw.sm.state is DeviceState.DEVICE_MODE_ACTIVE or fw.faults.is_present("monitoring")

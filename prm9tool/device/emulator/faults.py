@@ -1,0 +1,162 @@
+"""Error detection bookkeeping: debounce, display hold, error register, history, EMCY listeners.
+
+Each error kind of manual table 5-1 has a raw *condition* the firmware evaluates every 1 ms.
+A condition that has lasted its detection delay makes the error *present* (the valve centres
+the spool). An error stays *active* (shown by the LEDs, 0x2040, 0x1001 and the EMCY state) while
+it is present and for ``fault_display_hold_s`` (~10 s, manual §5.5) after the condition went
+away; the valve itself resumes as soon as the error is no longer present.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from dataclasses import dataclass
+
+from prm9tool.catalogue import ERROR_HISTORY_DEPTH
+
+
+@dataclass(frozen=True)
+class ErrorKind:
+    """One row of manual table 5-1 (plus the monitoring and communication errors)."""
+
+    key: str
+    code: int  # CANopen EMCY code
+    text: str
+    led1: tuple[str, str]  # colour, pattern
+    led2: str  # pattern of the red error LED
+    register_bit: int  # bit of 0x1001 besides bit 0 (generic), -1 = none
+
+
+# In order of severity (first = most severe); the order decides error_code and the LEDs.
+ERROR_KINDS: tuple[ErrorKind, ...] = (
+    ErrorKind("supply", 0x3410, "Supply voltage out of range", ("red", "2Hz"), "on", 2),
+    ErrorKind(
+        "temperature", 0x4211, "Electronics temperature above 100 °C", ("orange", "2Hz"), "on", 3
+    ),
+    ErrorKind("coil_a_overcurrent", 0x5411, "Solenoid A over-current", ("blue", "on"), "2Hz", 1),
+    ErrorKind("coil_b_overcurrent", 0x5412, "Solenoid B over-current", ("magenta", "on"), "2Hz", 1),
+    ErrorKind("coil_a_open", 0x5411, "Solenoid A disconnected", ("blue", "on"), "1Hz", 1),
+    ErrorKind("coil_b_open", 0x5412, "Solenoid B disconnected", ("magenta", "on"), "1Hz", 1),
+    ErrorKind(
+        "position_sensor", 0x7300, "Internal position sensor error", ("red", "1Hz"), "1Hz", 7
+    ),
+    ErrorKind("sensor", 0x5230, "External sensor error", ("red", "1Hz"), "1Hz", 7),
+    ErrorKind(
+        "setpoint", 0x3420, "Setpoint signal error on the analog input", ("red", "2Hz"), "1Hz", 2
+    ),
+    ErrorKind(
+        "monitoring",
+        0x1000,
+        "Control deviation beyond the monitoring threshold (0x6353)",
+        ("red", "on"),
+        "on",
+        5,
+    ),
+    ErrorKind(
+        "communication",
+        0x8100,
+        "CANopen error-control event (heartbeat or node guarding)",
+        ("green", "on"),
+        "double_flash",
+        4,
+    ),
+)
+KINDS = {k.key: k for k in ERROR_KINDS}
+WARNING_TEXT = "Warning: electronics temperature above 70 °C"
+
+ErrorListener = Callable[[int, int], None]
+
+
+class _Timer:
+    __slots__ = ("active_until", "present", "since")
+
+    def __init__(self) -> None:
+        self.since = -1.0  # time the raw condition started, -1 = not pending
+        self.present = False
+        self.active_until = -1.0  # display hold end; -1 = not active
+
+
+class FaultMonitor:
+    """Debounces conditions, keeps the active set, error register and history 0x1003."""
+
+    def __init__(self, hold_s: float) -> None:
+        self.hold_s = hold_s
+        self.timers = {k.key: _Timer() for k in ERROR_KINDS}
+        self.history: list[int] = []  # newest first (0x1003 sub 1 = newest)
+        self.listeners: list[ErrorListener] = []
+        self.active: tuple[ErrorKind, ...] = ()
+        self.warning = False
+
+    def update(self, now: float, conditions: dict[str, tuple[bool, float]]) -> None:
+        """Feed the raw conditions ``{key: (condition, delay_s)}`` at time ``now``."""
+        for key, (condition, delay) in conditions.items():
+            t = self.timers[key]
+            if condition:
+                if t.since < 0.0:
+                    t.since = now
+                if not t.present and now - t.since >= delay - 1e-9:
+                    t.present = True
+                if t.present:
+                    t.active_until = float("inf")
+            else:
+                t.since = -1.0
+                if t.present:
+                    t.present = False
+                    t.active_until = now + self.hold_s
+        self._refresh(now)
+
+    def force(self, key: str, present: bool, now: float) -> None:
+        """Set an error directly (communication errors reported by the CANopen slave)."""
+        t = self.timers[key]
+        if present:
+            t.present, t.since, t.active_until = True, now, float("inf")
+        elif t.present:
+            t.present, t.since, t.active_until = False, -1.0, now + self.hold_s
+        self._refresh(now)
+
+    def present(self) -> bool:
+        """True while any error is present (the valve must keep the spool centred)."""
+        return any(t.present for t in self.timers.values())
+
+    def is_present(self, key: str) -> bool:
+        """True while the error ``key`` is present."""
+        return self.timers[key].present
+
+    def register(self) -> int:
+        """Error register 0x1001 (CiA 301 bits: 0 generic, 1 current, 2 voltage, ...)."""
+        if not self.active:
+            return 0
+        reg = 1
+        for kind in self.active:
+            if kind.register_bit > 0:
+                reg |= 1 << kind.register_bit
+        return reg
+
+    def code(self) -> int:
+        """EMCY code of the most severe active error (0 = none)."""
+        return self.active[0].code if self.active else 0
+
+    def clear_history(self) -> None:
+        """0x1003 sub 0 written with 0."""
+        self.history.clear()
+
+    def reset(self) -> None:
+        """Power cycle: forget every condition (the history is kept in RAM: cleared too)."""
+        self.timers = {k.key: _Timer() for k in ERROR_KINDS}
+        self.active = ()
+        self.warning = False
+        self.history.clear()
+
+    def _refresh(self, now: float) -> None:
+        before = self.active
+        self.active = tuple(k for k in ERROR_KINDS if self.timers[k.key].active_until > now)
+        if self.active == before:
+            return
+        appeared = [k for k in self.active if k not in before]
+        for kind in appeared:
+            self.history.insert(0, kind.code)
+        del self.history[ERROR_HISTORY_DEPTH:]
+        code = appeared[0].code if appeared else self.code()
+        reg = self.register()
+        for listener in self.listeners:
+            listener(code, reg)

@@ -1,0 +1,385 @@
+"""The valve firmware around the control loop: power-up, the 1 ms task, faults, NV memory.
+
+:class:`Firmware` is not thread-safe by itself; :class:`~.valve.EmulatedValve` serializes every
+access with its lock.
+"""
+
+from __future__ import annotations
+
+import os
+from collections.abc import Callable, Generator
+from typing import Any
+
+from prm9tool.catalogue import CATALOGUE
+from prm9tool.device.emulator import config
+from prm9tool.device.emulator.constants import (
+    CYCLE_S,
+    FULL,
+    TICK_CYCLES,
+    FirmwareConstants,
+    PlantConstants,
+)
+from prm9tool.device.emulator.faults import FaultMonitor
+from prm9tool.device.emulator.inputs import CANOPEN_TYPE, INPUT_TYPES
+from prm9tool.device.emulator.kernel import MODE_ACTIVE, MODE_HOLD, MODE_OFF, LoopState
+from prm9tool.device.emulator.kernel import control_loop as make_loop
+from prm9tool.device.emulator.nvimage import NvImage, is_nonvolatile
+from prm9tool.device.emulator.objdict import ObjectDictionary
+from prm9tool.device.emulator.statemachine import DeviceStateMachine
+from prm9tool.device.emulator.states import DeviceState, Fault
+from prm9tool.typekey import TypeKey
+
+BITRATES = (20_000, 50_000, 125_000, 250_000, 500_000, 800_000, 1_000_000)  # switch 2..8 / 9..15
+PARAM_BITRATES = (1_000_000, 800_000, 500_000, 250_000, 125_000, 50_000, 20_000)  # BITRATE 0..6
+AUTO_CONTROL_WORD = 0x0F  # analog-only mode: the firmware enables itself (decision)
+_ACTIVE_STATES = (DeviceState.HOLD, DeviceState.DEVICE_MODE_ACTIVE, DeviceState.FAULT_HOLD)
+
+
+class Firmware:
+    """Object dictionary, NV image, state machine, fault monitor and the loop generator."""
+
+    def __init__(
+        self,
+        type_key: TypeKey,
+        serial: int,
+        firmware_version: str,
+        nv_path: str | os.PathLike[str] | None,
+        switches: tuple[int, int] | None,
+        plant: PlantConstants,
+        fw: FirmwareConstants,
+    ) -> None:
+        self.type_key = type_key
+        self.variant = type_key.variant
+        self.serial = serial
+        self.firmware_version = firmware_version
+        self.plant = plant
+        self.fw = fw
+        self.od = ObjectDictionary(self.variant)
+        self.od.on_change = self._on_parameter_changed
+        self.nv = NvImage(str(type_key), serial, nv_path)
+        self.loop = LoopState()
+        self.sm = DeviceStateMachine()
+        self.faults = FaultMonitor(fw.fault_display_hold_s)
+        self.inputs: dict[str, float] = {
+            "setpoint": 0.0,
+            "sensor": 0.0,
+            "supply_voltage": 24.0,
+            "ambient_temperature": 25.0,
+            "sensor_from_plant": 1.0,
+        }
+        defaults = (CATALOGUE["SWBAUD"].default, CATALOGUE["SWNODE"].default)
+        self.switches = list(switches if switches is not None else defaults)
+        self.latched_switches = tuple(self.switches)
+        self.injected: set[Fault] = set()
+        self.cycles = 0
+        self.tick_countdown = TICK_CYCLES
+        self.temperature_rise = 0.0
+        self.warning = False
+        self.override_last = 0.0
+        self.nmt_state = "off"
+        self.booting = True
+        self.node_id = 0
+        self.cycle_listeners: list[Callable[[float], None]] = []
+        self.setpoint_dirty = True
+        self.config_dirty = True
+        self.coil_temperature = 25.0
+        self.gen: Generator[None, int, None] = make_loop(self.loop)
+        from prm9tool.device.emulator.odsetup import install
+
+        install(self)
+        self.power_up()
+
+    # --- time -------------------------------------------------------------------------
+    @property
+    def time(self) -> float:
+        """Simulated seconds since power-up."""
+        return self.cycles * CYCLE_S
+
+    def run(self, cycles: int) -> None:
+        """Run ``cycles`` control cycles, with the 1 ms task every 5 cycles."""
+        send = self.gen.send
+        while cycles > 0:
+            if self.setpoint_dirty or self.config_dirty:
+                self._refresh_inputs()
+            n = min(cycles, self.tick_countdown)
+            send(n)
+            self.cycles += n
+            cycles -= n
+            self.tick_countdown -= n
+            if self.tick_countdown == 0:
+                self.tick_countdown = TICK_CYCLES
+                self.tick()
+
+    # --- power ------------------------------------------------------------------------
+    def power_up(self) -> None:
+        """Power cycle: RAM from the NV image, switches latched, boot timeline restarted."""
+        self.cycles = 0
+        self.tick_countdown = TICK_CYCLES
+        self.latched_switches = (self.switches[0], self.switches[1])
+        self._load_ram()
+        self.booting = True
+        self.nmt_state = "initialising" if self.can_enabled else "off"
+        self.sm.power_on()
+        self.faults.reset()
+        self.warning = False
+        self.od.values[CATALOGUE["SETPOVRON"].key] = 0
+        self.gen = make_loop(self.loop)
+        next(self.gen)
+        self.loop.mode = MODE_OFF
+        self.setpoint_dirty = self.config_dirty = True
+
+    def _load_ram(self) -> None:
+        od = self.od
+        od.values = {}
+        for key, param in od.entries.items():
+            if param.group != "od_structure":
+                od.values[key] = param.default_for(self.variant)
+        for mnemonic, value in self.nv.values.items():
+            if od.has(mnemonic) and is_nonvolatile(od.param(mnemonic)):
+                od.values[od.param(mnemonic).key] = value
+        self.node_id = self._node_id()
+        for param in od.entries.values():
+            if param.node_relative and param.mnemonic not in self.nv.values:
+                od.values[param.key] = param.default_for(self.variant, self.node_id)
+
+    def reset_communication(self) -> None:
+        """NMT reset communication: communication objects back to their power-on values."""
+        od = self.od
+        for param in od.entries.values():
+            if 0x1000 <= param.index <= 0x1FFF and param.group != "od_structure":
+                value = self.nv.values.get(param.mnemonic)
+                if value is None or not is_nonvolatile(param):
+                    value = param.default_for(self.variant, self.node_id)
+                if param.key not in od.getters:
+                    od.values[param.key] = value
+        self.nmt_state = "pre-operational"
+
+    def nonvolatile_values(self) -> dict[str, int | str]:
+        """The RAM values the store command writes (node-relative defaults left out)."""
+        image = {}
+        for param in self.od.entries.values():
+            if not is_nonvolatile(param):
+                continue
+            value = self.od.values[param.key]
+            if param.node_relative and value == param.default_for(self.variant, self.node_id):
+                continue
+            image[param.mnemonic] = value
+        return image
+
+    # --- CANopen interface settings (latched at power-up) ----------------------------------
+    @property
+    def can_enabled(self) -> bool:
+        """True on a -CA valve whose interface switch is not 0/1 (analog only)."""
+        return self.variant.canopen and self.latched_switches[0] >= 2
+
+    @property
+    def bitrate(self) -> int:
+        """CAN bit rate in bit/s (0 when CANopen is off)."""
+        if not self.can_enabled:
+            return 0
+        if self.latched_switches[1] == 0:
+            return PARAM_BITRATES[int(self.od.get("BITRATE"))]
+        return BITRATES[(self.latched_switches[0] - 2) % 7]
+
+    @property
+    def terminator(self) -> bool:
+        """True if the 120 Ω terminator is on (switch 9..F, or CANTERM with node switch 0)."""
+        if not self.can_enabled:
+            return False
+        if self.latched_switches[1] == 0:
+            return self.od.get("CANTERM") == 1
+        return self.latched_switches[0] >= 9
+
+    def _node_id(self) -> int:
+        if not self.variant.canopen:
+            return 0
+        switch = self.latched_switches[1]
+        if switch <= 1:  # 0: set by software; 1: LSS (not emulated: software node ID)
+            return int(self.od.get("NODEID"))
+        return 10 + 5 * (switch - 2)
+
+    @property
+    def analog_only(self) -> bool:
+        """True when the valve runs from the analog input without a CANopen master."""
+        return not self.can_enabled
+
+    # --- the 1 ms task ------------------------------------------------------------------
+    def tick(self) -> None:
+        """Boot timeline, thermal model, fault detection, state machine, outputs, listeners."""
+        now = self.time
+        dt = TICK_CYCLES * CYCLE_S
+        if self.booting and now >= self.fw.boot_s - 1e-9:
+            self._boot_finished()
+        self._thermal(dt)
+        self.faults.update(now, self._conditions())
+        temp = self.temperature
+        self.warning = temp > self.fw.temp_warning_c or (
+            self.warning and temp > self.fw.temp_warning_c - self.fw.temp_hysteresis_c
+        )
+        if self.faults.present():
+            self.sm.fault(self.fw.fault_reaction_s)
+        self.sm.tick(dt)
+        if self.analog_only and not self.booting:
+            self._auto_reset()
+        self._update_outputs()
+        if self.od.get("SETPOVRON") and now - self.override_last > self.fw.override_timeout_s:
+            self.od.values[CATALOGUE["SETPOVRON"].key] = 0
+            self.setpoint_dirty = True
+        for listener in self.cycle_listeners:
+            listener(now)
+
+    def _boot_finished(self) -> None:
+        self.booting = False
+        self.sm.init_done()
+        if self.can_enabled:
+            self.nmt_state = "operational" if self.od.get("NMTSTARTUP") == 0 else "pre-operational"
+        else:
+            self.sm.write_control_word(AUTO_CONTROL_WORD, self.faults.present())
+        self.setpoint_dirty = True
+
+    def _auto_reset(self) -> None:
+        sm = self.sm
+        if sm.state in (DeviceState.FAULT, DeviceState.FAULT_HOLD) and not self.faults.present():
+            sm.write_control_word(AUTO_CONTROL_WORD & ~0x08, False)
+            sm.write_control_word(AUTO_CONTROL_WORD, False)
+
+    def _update_outputs(self) -> None:
+        loop = self.loop
+        state = self.sm.state
+        if self.booting or self.faults.present() or state not in _ACTIVE_STATES:
+            loop.mode = MODE_OFF
+        elif state is DeviceState.DEVICE_MODE_ACTIVE:
+            loop.mode = MODE_ACTIVE
+        else:
+            loop.mode = MODE_HOLD
+        loop.stage_on = (
+            not self.faults.is_present("coil_a_overcurrent"),
+            not self.faults.is_present("coil_b_overcurrent"),
+        )
+        loop.temperature_c = self.temperature
+
+    def _thermal(self, dt: float) -> None:
+        ia, ib = self.loop.current_ma
+        r = config.coil_resistance(self.coil_temperature, self.plant)
+        power = r * (ia * ia + ib * ib) * 1e-6 + self.plant.electronics_loss_w
+        rise = self.temperature_rise
+        rise += (self.plant.thermal_k_per_w * power - rise) * dt / self.plant.thermal_tau_s
+        self.temperature_rise = rise
+        model = self.inputs["ambient_temperature"] + rise
+        if abs(model - self.coil_temperature) > 0.5:
+            self.coil_temperature = model
+            self.config_dirty = True
+
+    @property
+    def temperature(self) -> float:
+        """Electronics temperature reading, °C."""
+        if Fault.OVER_TEMPERATURE in self.injected:
+            return self.fw.injected_temperature_c
+        return self.inputs["ambient_temperature"] + self.temperature_rise
+
+    @property
+    def supply(self) -> float:
+        """Supply voltage at the valve, V."""
+        if Fault.SUPPLY_LOW in self.injected:
+            return self.fw.injected_low_supply_v
+        if Fault.SUPPLY_HIGH in self.injected:
+            return self.fw.injected_high_supply_v
+        return self.inputs["supply_voltage"]
+
+    def _conditions(self) -> dict[str, tuple[bool, float]]:
+        from prm9tool.device.emulator.detect import conditions
+
+        return conditions(self)
+
+    # --- inputs to the loop -----------------------------------------------------------
+    def _on_parameter_changed(self, mnemonic: str) -> None:
+        self.setpoint_dirty = True
+        self.config_dirty = True
+        del mnemonic
+
+    def value(self, mnemonic: str) -> int:
+        """Integer RAM value of a parameter; 0 if it does not exist on this variant."""
+        if not self.od.has(mnemonic):
+            return 0
+        value = self.od.get(mnemonic)
+        return value if isinstance(value, int) else 0
+
+    def _refresh_inputs(self) -> None:
+        loop = self.loop
+        supply = self.supply
+        if self.config_dirty:
+            loop.coefficients = config.coefficients(
+                self.variant, self.value, self.plant, self.fw, self.coil_temperature, supply
+            )
+            loop.version += 1
+            self.setp_curve = config.curve_of(self.value, "SETPLIN")
+        loop.supply_v = supply
+        loop.coil_open = (Fault.COIL_A_OPEN in self.injected, Fault.COIL_B_OPEN in self.injected)
+        loop.coil_short = (
+            Fault.COIL_A_OVERCURRENT in self.injected,
+            Fault.COIL_B_OVERCURRENT in self.injected,
+        )
+        loop.lvdt_break = Fault.POSITION_SENSOR_BREAK in self.injected
+        self._refresh_sensor(supply)
+        signals = config.static_setpoint(
+            self.variant, self.value, self.raw_setpoint(supply), self.setp_curve
+        )
+        loop.static_signals = signals
+        loop.target = signals[3]
+        self.setpoint_dirty = self.config_dirty = False
+
+    def _refresh_sensor(self, supply: float) -> None:
+        loop = self.loop
+        code = self.value("SENSTYPE")
+        kind = INPUT_TYPES.get(code)
+        loop.sensor_from_plant = self.inputs["sensor_from_plant"] >= 0.5 and kind is not None
+        if kind is None:
+            loop.sensor_static = float(self.value("SENSIN"))
+        else:
+            loop.sensor_static = kind.to_normalized(self.inputs["sensor"], supply, self.fw)
+        broken = Fault.SENSOR_BREAK in self.injected
+        loop.sensor_break_value = (
+            (kind.to_normalized(0.0, supply, self.fw) if kind else 0.0) if broken else None
+        )
+
+    @property
+    def digital_setpoint(self) -> bool:
+        """True if the setpoint comes from the object dictionary (0x6300/0x6380)."""
+        return self.can_enabled or self.value("AINSETP") == CANOPEN_TYPE
+
+    def setpoint_electrical(self) -> float:
+        """The analog setpoint input as the A/D converter sees it (0 with a cut wire)."""
+        if Fault.SETPOINT_WIRE_BREAK in self.injected:
+            return 0.0
+        return self.inputs["setpoint"]
+
+    def raw_setpoint(self, supply: float) -> float:
+        """The setpoint before polarity: override, object dictionary or analog input."""
+        if self.value("SETPOVRON"):
+            return float(self.value("SETPOVR"))
+        if self.digital_setpoint:
+            mnemonic = "PRCSETP" if config.process_loop_on(self.variant, self.value) else "POSSETP"
+            return float(self.value(mnemonic))
+        kind = INPUT_TYPES.get(self.value("AINSETP"))
+        if kind is None:
+            return 0.0
+        return kind.to_normalized(self.setpoint_electrical(), supply, self.fw)
+
+    def signal_values(self) -> dict[str, float]:
+        """Latest value of every measuring point."""
+        from prm9tool.device.emulator.kernel import SIGNAL_ORDER
+
+        return dict(zip(SIGNAL_ORDER, self.loop.signals, strict=True))
+
+    def clamp_pv(self, value: float) -> int:
+        """A process value as the S16 object-dictionary integer."""
+        return int(max(-FULL, min(FULL, round(value))))
+
+    def info(self) -> dict[str, Any]:
+        """Diagnostics for tools: node ID, bit rate, terminator, analog-only flag."""
+        return {
+            "node_id": self.node_id,
+            "bitrate": self.bitrate,
+            "terminator": self.terminator,
+            "analog_only": self.analog_only,
+        }

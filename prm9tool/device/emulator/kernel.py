@@ -1,0 +1,444 @@
+"""The 200 µs control loop and the plant, as one lean generator.
+
+Hot-loop design (docs/PERFORMANCE.md): the generator keeps every state variable in local
+variables of its frame across batches, so a batch costs no attribute look-ups and no
+allocation per cycle. :class:`LoopState` is the mailbox between the loop and the firmware's
+1 ms task: *coefficients* (rebuilt by :mod:`.config` and re-read only when ``version``
+changes), *per-batch inputs* (mode, static setpoint, supply, plant faults) and *outputs*
+(every measuring point, written back once per batch).
+
+Units inside the loop: process values in normalized counts (±16384 = ±100 %), currents in mA,
+voltages in V, forces in N, spool travel in m, actuator position as a fraction 0…1 of stroke.
+"""
+
+from __future__ import annotations
+
+import math
+from bisect import bisect_right
+from collections.abc import Generator
+from typing import Any
+
+MODE_OFF = 0  # output stage off, controllers reset, spool spring-centred
+MODE_HOLD = 1  # position loop holds the preset hold setpoint (0 %)
+MODE_ACTIVE = 2  # the signal chain drives the valve
+
+SIGNAL_ORDER = (
+    "setpoint_raw",
+    "setpoint_threshold",
+    "setpoint_gain",
+    "setpoint_linearized",
+    "demand",
+    "process_setpoint",
+    "process_actual",
+    "process_deviation",
+    "position_setpoint",
+    "position_actual",
+    "position_deviation",
+    "controller_output",
+    "current_setpoint_a",
+    "current_setpoint_b",
+    "current_a",
+    "current_b",
+    "pwm_a",
+    "pwm_b",
+    "supply_voltage",
+    "temperature",
+    "sensor_raw",
+)
+"""Order of the values the loop hands to the capture (one slot per measuring point)."""
+
+
+class LoopState:
+    """Mailbox between the control loop and the firmware (see module docstring)."""
+
+    def __init__(self) -> None:
+        self.version = 0
+        self.coefficients: dict[str, Any] = {}
+        # per-batch inputs
+        self.mode = MODE_OFF
+        self.target = 0.0  # static part of the setpoint chain (after linearization)
+        self.static_signals = (0.0, 0.0, 0.0, 0.0)  # raw, threshold, gain, linearized
+        self.supply_v = 24.0
+        self.temperature_c = 25.0
+        self.coil_r = (4.0, 4.0)  # actual resistance A, B (temperature dependent)
+        self.coil_open = (False, False)
+        self.coil_short = (False, False)
+        self.stage_on = (True, True)  # the firmware's safety switch per output stage
+        self.lvdt_break = False
+        self.sensor_static = 0.0  # sensor value when it does not come from the plant
+        self.sensor_from_plant = True
+        self.sensor_break_value = None  # normalized reading of a broken sensor, or None
+        self.capture: Any = None  # (extend, itemgetter, decimation) or None
+        # outputs (measuring points and plant state), written back every batch
+        self.signals: tuple[float, ...] = (0.0,) * len(SIGNAL_ORDER)
+        self.ctrl_dev = 0.0  # 0x6350: deviation of the active control mode
+        self.spool_m = 0.0
+        self.spool_v = 0.0
+        self.actuator = 0.5
+        self.current_ma = (0.0, 0.0)
+        self.sensor_chain = (0.0, 0.0, 0.0, 0.0, 0.0)  # 0x2100/1, /3, /4, /5, /6
+
+
+Curve = tuple[list[float], list[float], list[float]]
+
+
+def prepare_curve(xs: list[int], ys: list[int]) -> Curve:
+    """Prepare a 9-point characteristic: breakpoints, per-segment slope and intercept.
+
+    ``bisect_right(breakpoints, v)`` selects the segment: 0 is "below X_A" (constant Y_A),
+    1…8 interpolate between neighbouring points, 9 is "at or above X_I" (constant Y_I). X points
+    that do not increase are raised to the previous one (a curve being edited point by point
+    is never an error for the firmware).
+    """
+    fixed = [float(xs[0])]
+    for x in xs[1:]:
+        fixed.append(max(float(x), fixed[-1]))
+    slopes, icepts = [0.0], [float(ys[0])]
+    for i in range(len(fixed) - 1):
+        dx = fixed[i + 1] - fixed[i]
+        k = (ys[i + 1] - ys[i]) / dx if dx > 0 else 0.0
+        slopes.append(k)
+        icepts.append(ys[i] - k * fixed[i])
+    slopes.append(0.0)
+    icepts.append(float(ys[-1]))
+    return fixed, slopes, icepts
+
+
+def evaluate_curve(curve: Curve, v: float) -> float:
+    """The characteristic's output at ``v`` (the loop inlines the same two lines)."""
+    i = bisect_right(curve[0], v)
+    return curve[2][i] + curve[1][i] * v
+
+
+def control_loop(s: LoopState) -> Generator[None, int, None]:
+    """Run ``n`` cycles per ``send(n)``; see the module docstring for the contract."""
+    sin = math.sin
+    bis = bisect_right
+    two_pi = 2.0 * math.pi
+    # --- dynamic state (kept in this frame) ------------------------------------------------
+    r = 0.0  # ramp output (demand value)
+    x = s.spool_m
+    v = s.spool_v
+    act = s.actuator
+    ia = ib = 0.0  # coil currents, mA
+    ia_i = ib_i = 0.0  # current-controller integrators, V
+    p_int = p_d = p_prev = 0.0  # position PIDT1
+    q_int = q_d = q_prev = 0.0  # process PIDT1
+    ph = 0.0  # dither phase, rad
+    cap_count = 0
+    w = u = ca = cb = ka = kb = da = db = xm = pe = 0.0
+    s0 = s1 = s2 = s3 = pv = dev = dg = 0.0
+    n = yield
+    while True:
+        c = s.coefficients
+        version = s.version
+        e04 = c["process_loop"]
+        coils = c["coils"]  # "AB", "A" or "B"
+        two = coils == "AB"
+        only_b = coils == "B"
+        rpu, rpd, rnu, rnd = c["ramp_steps"]
+        pkp, pki, pkd, pt1 = c["position_pid"]
+        qkp, qki, qkd, qt1 = c["process_pid"]
+        out_lo = 0.0 if not two else -16384.0
+        kcur = c["ma_per_count"]
+        lim_a, lim_b = c["limits_ma"]
+        damp, dph = c["dither"]
+        ckp, cki, rff_a, rff_b = c["current_pi"]
+        vmax_i = c["max_current_v"]
+        kf, ks, cd, fc, fs, im, h, nsub, xmax = c["mechanics"]
+        kx, lvdt_q, lvdt_lo = c["lvdt"]
+        s_a, s_b, s_q, s_o, sinv, soffs, sgain, slin = c["sensor"]
+        sl_x, sl_k, sl_b = c["sensor_curve"]
+        gp, op, gn, on_ = c["deviation_gain"]
+        act_k, overlap = c["actuator"]
+        aa_c, ba_c, ab_c, bb_c = c["coil_discrete"]
+        subs = range(nsub)
+        while s.version == version:
+            mode = s.mode
+            tgt = s.target
+            vs = s.supply_v
+            inv_vs = 1.0 / vs if vs > 0.5 else 2.0
+            open_a, open_b = s.coil_open
+            short_a, short_b = s.coil_short
+            on_a, on_b = s.stage_on
+            aa = 0.0 if open_a else aa_c
+            ba = 0.0 if open_a else ba_c
+            ab = 0.0 if open_b else ab_c
+            bb = 0.0 if open_b else bb_c
+            lvdt_break = s.lvdt_break
+            plant_sensor = s.sensor_from_plant
+            s_static = s.sensor_static
+            s_broken = s.sensor_break_value
+            if s_broken is not None:
+                plant_sensor = False
+                s_static = s_broken
+            active = mode == MODE_ACTIVE
+            process = e04 and active
+            if mode == MODE_OFF:
+                ia_i = ib_i = p_int = p_d = p_prev = 0.0
+            if not process:
+                q_int = q_d = q_prev = 0.0
+            stat = s.static_signals
+            cap = s.capture
+            if cap is not None:
+                cap_ext, cap_get, cap_dec = cap
+            temp10 = s.temperature_c * 10.0
+            for _ in range(n):
+                # --- demand value generator: four ramps ---------------------------------
+                if r != tgt:
+                    if r > 0.0 or (r == 0.0 and tgt > 0.0):
+                        if tgt > r:
+                            r += rpu
+                            if r > tgt:
+                                r = tgt
+                        else:
+                            r -= rpd
+                            lo = tgt if tgt > 0.0 else 0.0
+                            if r < lo:
+                                r = lo
+                    elif tgt < r:
+                        r -= rnu
+                        if r < tgt:
+                            r = tgt
+                    else:
+                        r += rnd
+                        hi = tgt if tgt < 0.0 else 0.0
+                        if r > hi:
+                            r = hi
+                # --- spool position measurement (LVDT, 12 bit) --------------------------
+                if lvdt_break:
+                    xm = lvdt_lo
+                else:
+                    xm = round(x * kx) * lvdt_q
+                # --- external sensor and process controller (E04) -----------------------
+                if e04:
+                    if plant_sensor:
+                        s0 = round(act * s_a + s_b) * s_q + s_o
+                    else:
+                        s0 = s_static
+                    s1 = -s0 if sinv else s0
+                    s2 = s1 + soffs
+                    s3 = s2 * sgain
+                    if s3 > 16384.0:
+                        s3 = 16384.0
+                    elif s3 < -16384.0:
+                        s3 = -16384.0
+                    if slin:
+                        i = bis(sl_x, s3)
+                        pv = sl_b[i] + sl_k[i] * s3
+                    else:
+                        pv = s3
+                    dev = r - pv
+                    if dev > 0.0:
+                        dg = dev * gp + op
+                    elif dev < 0.0:
+                        dg = dev * gn - on_
+                    else:
+                        dg = 0.0
+                if process:
+                    q_int += qki * dg
+                    if q_int > 16384.0:
+                        q_int = 16384.0
+                    elif q_int < out_lo:
+                        q_int = out_lo
+                    q_d = qt1 * q_d + qkd * (dg - q_prev)
+                    q_prev = dg
+                    w = qkp * dg + q_int + q_d
+                    if w > 16384.0:
+                        w = 16384.0
+                    elif w < out_lo:
+                        w = out_lo
+                elif active:
+                    w = r
+                else:
+                    w = 0.0
+                # --- position PIDT1 -------------------------------------------------------
+                pe = w - xm
+                if mode:
+                    p_int += pki * pe
+                    if p_int > 16384.0:
+                        p_int = 16384.0
+                    elif p_int < out_lo:
+                        p_int = out_lo
+                    p_d = pt1 * p_d + pkd * (pe - p_prev)
+                    p_prev = pe
+                    u = pkp * pe + p_int + p_d
+                    if u > 16384.0:
+                        u = 16384.0
+                    elif u < out_lo:
+                        u = out_lo
+                else:
+                    u = 0.0
+                # --- current limiter per coil and dither ---------------------------------
+                if u > 0.0:
+                    if only_b:
+                        ca = 0.0
+                        cb = u * kcur
+                        if cb > lim_b:
+                            cb = lim_b
+                    else:
+                        cb = 0.0
+                        ca = u * kcur
+                        if ca > lim_a:
+                            ca = lim_a
+                elif u < 0.0:
+                    ca = 0.0
+                    cb = -u * kcur
+                    if cb > lim_b:
+                        cb = lim_b
+                else:
+                    ca = cb = 0.0
+                ph += dph
+                if ph > two_pi:
+                    ph -= two_pi
+                dv = damp * sin(ph)
+                ka = ca + dv if ca > 0.0 else 0.0
+                if ka < 0.0:
+                    ka = 0.0
+                kb = cb + dv if cb > 0.0 else 0.0
+                if kb < 0.0:
+                    kb = 0.0
+                # --- current controllers, PWM duty, solenoid R-L circuits -----------------
+                if on_a:
+                    err = ka - ia
+                    ia_i += cki * err
+                    if ia_i > vmax_i:
+                        ia_i = vmax_i
+                    elif ia_i < -vmax_i:
+                        ia_i = -vmax_i
+                    da = (rff_a * ka + ckp * err + ia_i) * inv_vs
+                    if da > 1.0:
+                        da = 1.0
+                    elif da < 0.0:
+                        da = 0.0
+                    ia = ia * aa + ba * (vs if short_a else da * vs)
+                else:
+                    da = ia_i = 0.0
+                    ia = ia * aa
+                if on_b:
+                    err = kb - ib
+                    ib_i += cki * err
+                    if ib_i > vmax_i:
+                        ib_i = vmax_i
+                    elif ib_i < -vmax_i:
+                        ib_i = -vmax_i
+                    db = (rff_b * kb + ckp * err + ib_i) * inv_vs
+                    if db > 1.0:
+                        db = 1.0
+                    elif db < 0.0:
+                        db = 0.0
+                    ib = ib * ab + bb * (vs if short_b else db * vs)
+                else:
+                    db = ib_i = 0.0
+                    ib = ib * ab
+                # --- spool: force, spring, damping, friction, stroke limits ---------------
+                if two:
+                    f = kf * (ia - ib)
+                elif only_b:
+                    f = kf * ib
+                else:
+                    f = kf * ia
+                for _k in subs:
+                    fn = f - ks * x - cd * v
+                    if v > 0.0:
+                        nv = v + (fn - fc) * im
+                        if nv < 0.0:
+                            nv = 0.0
+                    elif v < 0.0:
+                        nv = v + (fn + fc) * im
+                        if nv > 0.0:
+                            nv = 0.0
+                    elif fn > fs:
+                        nv = (fn - fc) * im
+                    elif fn < -fs:
+                        nv = (fn + fc) * im
+                    else:
+                        nv = 0.0
+                    v = nv
+                    x += v * h
+                    if x > xmax:
+                        x = xmax
+                        if v > 0.0:
+                            v = 0.0
+                    elif x < -xmax:
+                        x = -xmax
+                        if v < 0.0:
+                            v = 0.0
+                # --- hydraulic actuator (E04 load) ----------------------------------------
+                if e04:
+                    opening = x
+                    if overlap:
+                        if opening > overlap:
+                            opening -= overlap
+                        elif opening < -overlap:
+                            opening += overlap
+                        else:
+                            opening = 0.0
+                    act += opening * act_k
+                    if act > 1.0:
+                        act = 1.0
+                    elif act < 0.0:
+                        act = 0.0
+                # --- capture -------------------------------------------------------------
+                if cap is not None:
+                    cap_count -= 1
+                    if cap_count <= 0:
+                        cap_count = cap_dec
+                        cap_ext(
+                            cap_get(
+                                (
+                                    stat[0],
+                                    stat[1],
+                                    stat[2],
+                                    stat[3],
+                                    r,
+                                    r,
+                                    pv,
+                                    dg,
+                                    w,
+                                    xm,
+                                    pe,
+                                    u,
+                                    ca,
+                                    cb,
+                                    ia,
+                                    ib,
+                                    da * 10000.0,
+                                    db * 10000.0,
+                                    vs * 1000.0,
+                                    temp10,
+                                    s0,
+                                )
+                            )
+                        )
+            # --- write back once per batch --------------------------------------------------
+            s.signals = (
+                stat[0],
+                stat[1],
+                stat[2],
+                stat[3],
+                r,
+                r,
+                pv,
+                dg,
+                w,
+                xm,
+                pe,
+                u,
+                ca,
+                cb,
+                ia,
+                ib,
+                da * 10000.0,
+                db * 10000.0,
+                vs * 1000.0,
+                temp10,
+                s0,
+            )
+            s.ctrl_dev = dev if process else r - xm
+            s.spool_m = x
+            s.spool_v = v
+            s.actuator = act
+            s.current_ma = (ia, ib)
+            s.sensor_chain = (s0, s1, s2, s3, pv)
+            n = yield

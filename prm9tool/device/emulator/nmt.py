@@ -1,0 +1,44 @@
+"""Coupling of the CANopen NMT state machine to the device state machine (table 7-21)."""
+
+from __future__ import annotations
+
+from typing import TYPE_CHECKING
+
+from prm9tool.device.emulator.states import DeviceState
+from prm9tool.errors import ValueRangeError
+
+if TYPE_CHECKING:
+    from prm9tool.device.emulator.firmware import Firmware
+
+NMT_EVENTS = ("operational", "stopped", "preoperational", "reset_node", "reset_comm", "comm_error")
+
+
+def apply_nmt_event(fw: Firmware, event: str) -> None:
+    """Apply an NMT event (``reset_node`` is handled by the valve: it power-cycles).
+
+    * ``stopped`` (CiA 301 transitions 5, 8) and ``reset_comm`` (12, 13, 14): a valve in
+      DEVICE_MODE_ACTIVE goes to FAULT_REACTION (table 7-21, D8).
+    * ``comm_error`` (heartbeat/guarding event): the communication error 8100h becomes
+      present (EMCY, LED2 double flash) and a valve in DEVICE_MODE_ACTIVE reacts as above; it
+      goes away with the next ``operational`` event.
+    """
+    if event not in NMT_EVENTS:
+        raise ValueRangeError(f"unknown NMT event {event!r}; events are: {', '.join(NMT_EVENTS)}")
+    if not fw.can_enabled or fw.booting:
+        return
+    sm = fw.sm
+    now = fw.time
+    if event == "operational":
+        fw.nmt_state = "operational"
+        fw.faults.force("communication", False, now)
+    elif event == "preoperational":
+        fw.nmt_state = "pre-operational"
+    elif event in ("stopped", "reset_comm", "comm_error"):
+        if sm.state is DeviceState.DEVICE_MODE_ACTIVE:
+            sm.fault(fw.fw.fault_reaction_s)
+        if event == "stopped":
+            fw.nmt_state = "stopped"
+        elif event == "reset_comm":
+            fw.reset_communication()
+        else:
+            fw.faults.force("communication", True, now)

@@ -1,0 +1,95 @@
+"""The emulated valve's non-volatile memory (EEPROM image), optionally kept in a file.
+
+The image holds every catalogue parameter with object access RW that belongs to the *.prm
+parameter set, plus the CANopen communication objects the master configures (0x1005, 0x1006,
+0x1014, 0x1017, the PDO communication parameters 0x1400-0x1801, 0x1F80). A node-relative
+COB-ID that still has its default is not stored, so it follows the node ID at power-up as on a
+real CANopen device. The file is JSON, written atomically (temporary file + rename).
+"""
+
+from __future__ import annotations
+
+import json
+import os
+import tempfile
+from pathlib import Path
+
+from prm9tool.catalogue import ObjAccess, Parameter
+from prm9tool.errors import FileFormatError, FileProblem
+
+FORMAT = "prm9tool-emulator-eeprom"
+VERSION = 1
+_COMM_INDICES = (0x1005, 0x1006, 0x1014, 0x1017, 0x1F80)
+NEVER_STORED = frozenset({0x2050})  # setpoint override (service objects)
+
+
+def is_nonvolatile(param: Parameter) -> bool:
+    """True if ``param`` lives in the EEPROM image."""
+    if param.obj_access is not ObjAccess.RW or param.index in NEVER_STORED:
+        return False
+    if param.in_file:
+        return True
+    return param.index in _COMM_INDICES or 0x1400 <= param.index <= 0x1801
+
+
+class NvImage:
+    """The stored values by mnemonic; missing entries mean the factory default."""
+
+    def __init__(self, type_key: str, serial: int, path: str | os.PathLike[str] | None) -> None:
+        self.type_key = type_key
+        self.serial = serial
+        self.path = Path(path) if path is not None else None
+        self.values: dict[str, int | str] = {}
+        if self.path is not None and self.path.exists():
+            self.values = self._load(self.path)
+
+    def replace(self, values: dict[str, int | str]) -> None:
+        """Make ``values`` the new image and write it to the file (if any)."""
+        self.values = dict(values)
+        if self.path is not None:
+            self._save(self.path)
+
+    def _load(self, path: Path) -> dict[str, int | str]:
+        try:
+            data = json.loads(path.read_text(encoding="utf-8"))
+        except (OSError, ValueError) as exc:
+            problem = FileProblem(0, f"unreadable EEPROM image: {exc}")
+            raise FileFormatError(str(path), [problem]) from exc
+        problems = []
+        if not isinstance(data, dict) or data.get("format") != FORMAT:
+            problems.append(FileProblem(0, f"not an emulator EEPROM image (format {FORMAT!r})"))
+        elif data.get("version") != VERSION:
+            problems.append(FileProblem(0, f"unsupported image version {data.get('version')!r}"))
+        elif data.get("type_key") != self.type_key:
+            problems.append(
+                FileProblem(
+                    0,
+                    f"the image belongs to a {data.get('type_key')} valve, not to {self.type_key}",
+                )
+            )
+        elif not isinstance(data.get("values"), dict):
+            problems.append(FileProblem(0, "the image has no 'values' table"))
+        if problems:
+            raise FileFormatError(str(path), problems)
+        return {str(k): v for k, v in data["values"].items() if isinstance(v, (int, str))}
+
+    def _save(self, path: Path) -> None:
+        payload = {
+            "format": FORMAT,
+            "version": VERSION,
+            "type_key": self.type_key,
+            "serial": self.serial,
+            "values": dict(sorted(self.values.items())),
+        }
+        path.parent.mkdir(parents=True, exist_ok=True)
+        fd, tmp = tempfile.mkstemp(prefix=path.name, suffix=".tmp", dir=path.parent)
+        try:
+            with os.fdopen(fd, "w", encoding="utf-8") as handle:
+                json.dump(payload, handle, indent=1)
+                handle.write("\n")
+                handle.flush()
+                os.fsync(handle.fileno())
+            os.replace(tmp, path)
+        except BaseException:
+            Path(tmp).unlink(missing_ok=True)
+            raise

@@ -1,0 +1,160 @@
+"""The emulated valve's object dictionary: RAM values, live getters, write hooks, abort codes.
+
+Every entry comes from the parameter catalogue. The only entries added here are the CiA 301
+"highest sub-index" entries (sub 0) of records and arrays, derived from the catalogue's own
+sub-indices. Errors are raised as :class:`SdoAbortError` with the CiA 301 abort code.
+"""
+
+from __future__ import annotations
+
+import struct
+from collections.abc import Callable
+
+from prm9tool.catalogue import CATALOGUE, Catalogue, DataType, ObjAccess, Parameter, Texts
+from prm9tool.errors import AbortCode, SdoAbortError
+from prm9tool.variant import Variant
+
+Value = int | str
+Key = tuple[int, int]
+Getter = Callable[[], Value]
+Hook = Callable[[Value], None]
+
+_READABLE = (ObjAccess.RO, ObjAccess.RW, ObjAccess.CONST)
+
+
+def _sub0(index: int, highest: int) -> Parameter:
+    return Parameter(
+        f"SUB0_{index:04X}",
+        index,
+        0,
+        DataType.UNSIGNED8,
+        highest,
+        highest,
+        highest,
+        Texts("Highest sub-index supported", "Höchster Subindex", "Nejvyšší subindex"),
+        group="od_structure",
+        obj_access=ObjAccess.CONST,
+        in_file=False,
+        source="CiA 301 (derived from the catalogue's sub-indices)",
+    )
+
+
+def abort(key: Key, code: AbortCode) -> SdoAbortError:
+    """An SdoAbortError for ``key`` with ``code``."""
+    return SdoAbortError(key[0], key[1], int(code))
+
+
+class ObjectDictionary:
+    """RAM image of one valve's object dictionary, with access rules and hooks.
+
+    ``getters`` supply live values (read-only process data); ``hooks`` replace the plain store
+    of a validated write (commands such as 0x1010 "save"); ``checks`` validate a value beyond
+    the catalogue range (cross-parameter limits, device-state rules) and refuse it by raising
+    :class:`SdoAbortError`; ``on_change`` is told the mnemonic after every accepted write.
+    """
+
+    def __init__(self, variant: Variant, catalogue: Catalogue = CATALOGUE) -> None:
+        self.variant = variant
+        self.entries: dict[Key, Parameter] = {p.key: p for p in catalogue.for_variant(variant)}
+        self.by_mnemonic: dict[str, Parameter] = {p.mnemonic: p for p in self.entries.values()}
+        subs: dict[int, list[int]] = {}
+        for index, sub in self.entries:
+            subs.setdefault(index, []).append(sub)
+        for index, sub_list in subs.items():
+            if 0 not in sub_list:
+                self.entries[(index, 0)] = _sub0(index, max(sub_list))
+        self.indices = set(subs)
+        self.values: dict[Key, Value] = {}
+        self.getters: dict[Key, Getter] = {}
+        self.hooks: dict[Key, Hook] = {}
+        self.checks: dict[Key, Hook] = {}
+        self.on_change: Callable[[str], None] | None = None
+
+    # --- lookups -----------------------------------------------------------------------
+    def entry(self, index: int, subindex: int) -> Parameter:
+        """The catalogue entry at the address, or an abort (no such object / sub-index)."""
+        param = self.entries.get((index, subindex))
+        if param is None:
+            code = AbortCode.NO_SUCH_SUBINDEX if index in self.indices else AbortCode.NO_SUCH_OBJECT
+            raise abort((index, subindex), code)
+        return param
+
+    def param(self, mnemonic: str) -> Parameter:
+        """The entry with ``mnemonic`` (KeyError if it does not exist on this variant)."""
+        return self.by_mnemonic[mnemonic]
+
+    def has(self, mnemonic: str) -> bool:
+        """True if the parameter exists on this variant."""
+        return mnemonic in self.by_mnemonic
+
+    def get(self, mnemonic: str) -> Value:
+        """Current RAM value of a stored parameter (no access check; for the firmware)."""
+        return self.values[self.by_mnemonic[mnemonic].key]
+
+    # --- access ------------------------------------------------------------------------
+    def read(self, index: int, subindex: int) -> Value:
+        """Read with CiA 301 access rules."""
+        param = self.entry(index, subindex)
+        key = param.key
+        if param.obj_access not in _READABLE:
+            raise abort(key, AbortCode.WRITE_ONLY)
+        getter = self.getters.get(key)
+        if getter is not None:
+            return getter()
+        value = self.values.get(key)
+        return param.default if value is None else value
+
+    def write(self, index: int, subindex: int, value: Value) -> None:
+        """Write with CiA 301 access and range rules; runs the check and hook of the entry."""
+        param = self.entry(index, subindex)
+        key = param.key
+        if not param.writable:
+            raise abort(key, AbortCode.READ_ONLY)
+        validate(param, value)
+        check = self.checks.get(key)
+        if check is not None:
+            check(value)
+        hook = self.hooks.get(key)
+        if hook is not None:
+            hook(value)
+        else:
+            self.values[key] = value
+        if self.on_change is not None:
+            self.on_change(param.mnemonic)
+
+    def read_bytes(self, index: int, subindex: int) -> bytes:
+        """Read and encode per the catalogue data type (little-endian)."""
+        param = self.entry(index, subindex)
+        return param.dtype.encode(self.read(index, subindex))
+
+    def write_bytes(self, index: int, subindex: int, data: bytes) -> None:
+        """Decode per the catalogue data type and write; wrong lengths abort."""
+        param = self.entry(index, subindex)
+        if not param.writable:
+            raise abort(param.key, AbortCode.READ_ONLY)
+        size = param.dtype.size
+        if size and len(data) != size:
+            code = AbortCode.LENGTH_TOO_HIGH if len(data) > size else AbortCode.LENGTH_TOO_LOW
+            raise abort(param.key, code)
+        try:
+            value = param.dtype.decode(bytes(data))
+        except (struct.error, UnicodeDecodeError) as exc:
+            raise abort(param.key, AbortCode.WRONG_LENGTH) from exc
+        self.write(index, subindex, value)
+
+
+def validate(param: Parameter, value: Value) -> None:
+    """Raise the CiA 301 abort a valve answers for ``value`` outside the catalogue limits."""
+    key = param.key
+    if param.is_string:
+        if not isinstance(value, str):
+            raise abort(key, AbortCode.WRONG_LENGTH)
+        return
+    if isinstance(value, bool) or not isinstance(value, int):
+        raise abort(key, AbortCode.WRONG_LENGTH)
+    if value < param.raw_min:
+        raise abort(key, AbortCode.VALUE_TOO_LOW)
+    if value > param.raw_max:
+        raise abort(key, AbortCode.VALUE_TOO_HIGH)
+    if param.choices and value not in {code for code, _ in param.choices}:
+        raise abort(key, AbortCode.INVALID_VALUE)

@@ -1,0 +1,144 @@
+"""Wiring of the object dictionary to the firmware: live values, commands and write rules."""
+
+from __future__ import annotations
+
+from typing import TYPE_CHECKING
+
+from prm9tool.catalogue import LOAD_SIGNATURE, SAVE_SIGNATURE
+from prm9tool.device.emulator.inputs import CANOPEN_TYPE
+from prm9tool.device.emulator.kernel import SIGNAL_ORDER
+from prm9tool.device.emulator.objdict import Value, abort
+from prm9tool.device.emulator.states import DeviceState
+from prm9tool.errors import AbortCode
+
+if TYPE_CHECKING:
+    from prm9tool.device.emulator.firmware import Firmware
+
+_SIG = {key: i for i, key in enumerate(SIGNAL_ORDER)}
+
+
+def revision(version: str) -> int:
+    """0x1018/3 from a ``major.minor.patch`` version text (decision: major<<16|minor<<8|patch)."""
+    parts = [int(p) if p.isdigit() else 0 for p in version.split(".")[:3]]
+    parts += [0] * (3 - len(parts))
+    return (parts[0] & 0xFFFF) << 16 | (parts[1] & 0xFF) << 8 | (parts[2] & 0xFF)
+
+
+def install(fw: Firmware) -> None:
+    """Install getters, hooks and checks on ``fw.od``."""
+    _identity(fw)
+    _live(fw)
+    _errors(fw)
+    _commands(fw)
+    _rules(fw)
+
+
+def _getter(fw: Firmware, mnemonic: str, fn: object) -> None:
+    if fw.od.has(mnemonic):
+        fw.od.getters[fw.od.param(mnemonic).key] = fn  # type: ignore[assignment]
+
+
+def _identity(fw: Firmware) -> None:
+    _getter(fw, "PCODE", lambda: str(fw.type_key))
+    _getter(fw, "SNV", lambda: fw.serial)
+    _getter(fw, "FWVER", lambda: fw.firmware_version)
+    _getter(fw, "REVISION", lambda: revision(fw.firmware_version))
+    _getter(fw, "SWBAUD", lambda: fw.latched_switches[0])
+    _getter(fw, "SWNODE", lambda: fw.latched_switches[1])
+
+
+def _pv(fw: Firmware, signal: str) -> int:
+    return fw.clamp_pv(fw.loop.signals[_SIG[signal]])
+
+
+def _live(fw: Firmware) -> None:
+    _getter(fw, "PWR", lambda: int(min(65535, max(0, round(fw.supply * 1000)))))
+    _getter(fw, "TEMP", lambda: int(min(127, max(-128, round(fw.temperature)))))
+    _getter(fw, "STATUSWORD", lambda: fw.sm.status_word())
+    _getter(fw, "CONTROLWORD", lambda: fw.sm.control_word)
+    _getter(fw, "POSACT", lambda: _pv(fw, "position_actual"))
+    _getter(fw, "DEMAND", lambda: _pv(fw, "demand"))
+    _getter(fw, "CTRLDEV", lambda: fw.clamp_pv(fw.loop.ctrl_dev))
+    _getter(fw, "PRCACT", lambda: _pv(fw, "process_actual"))
+    for i, mnemonic in enumerate(("SENSVAL", "SENSAFTINV", "SENSAFTOFFS", "SENSAFTGAIN")):
+        _getter(fw, mnemonic, lambda i=i: fw.clamp_pv(fw.loop.sensor_chain[i]))
+    _getter(fw, "SENSAFTLIN", lambda: fw.clamp_pv(fw.loop.sensor_chain[4]))
+
+
+def _errors(fw: Firmware) -> None:
+    _getter(fw, "ERROR", lambda: fw.faults.code())
+    _getter(fw, "ERRREG", lambda: fw.faults.register())
+    _getter(fw, "ERRCOUNT", lambda: len(fw.faults.history))
+    for k in range(1, 9):
+        _getter(fw, f"ERRHIST{k}", lambda k=k: _history(fw, k))
+    if fw.od.has("ERRCOUNT"):
+        fw.od.hooks[fw.od.param("ERRCOUNT").key] = lambda _v: fw.faults.clear_history()
+
+
+def _history(fw: Firmware, k: int) -> int:
+    if k > len(fw.faults.history):
+        raise abort((0x1003, k), AbortCode.NO_DATA)
+    return fw.faults.history[k - 1]
+
+
+def _commands(fw: Firmware) -> None:
+    od = fw.od
+
+    def save(value: Value) -> None:
+        if value != SAVE_SIGNATURE:
+            raise abort((0x1010, 1), AbortCode.CANNOT_STORE)
+        fw.nv.replace(fw.nonvolatile_values())
+
+    def load(value: Value) -> None:
+        if value != LOAD_SIGNATURE:
+            raise abort((0x1011, 1), AbortCode.CANNOT_STORE)
+        fw.nv.replace({})
+
+    def control_word(value: Value) -> None:
+        if fw.analog_only:
+            raise abort((0x6040, 0), AbortCode.CANNOT_STORE_LOCAL_CONTROL)
+        assert isinstance(value, int)
+        fw.sm.write_control_word(value, fw.faults.present())
+
+    def override_on(value: Value) -> None:
+        od.values[od.param("SETPOVRON").key] = value
+        fw.override_last = fw.time
+
+    od.hooks[od.param("STOREALL").key] = save
+    od.hooks[od.param("RESTOREALL").key] = load
+    od.hooks[od.param("CONTROLWORD").key] = control_word
+    od.hooks[od.param("SETPOVRON").key] = override_on
+
+
+def _rules(fw: Firmware) -> None:
+    od = fw.od
+
+    def not_in_active_mode(mnemonic: str) -> None:
+        def check(_value: Value) -> None:
+            if fw.sm.state is DeviceState.DEVICE_MODE_ACTIVE:
+                raise abort(od.param(mnemonic).key, AbortCode.CANNOT_STORE_DEVICE_STATE)
+
+        od.checks[od.param(mnemonic).key] = check
+
+    def at_most_curnorm(mnemonic: str) -> None:
+        def check(value: Value) -> None:
+            if isinstance(value, int) and value > fw.value("CURNORM"):
+                raise abort(od.param(mnemonic).key, AbortCode.VALUE_TOO_HIGH)
+
+        od.checks[od.param(mnemonic).key] = check
+
+    def needs_canopen(mnemonic: str) -> None:
+        def check(value: Value) -> None:
+            if value == CANOPEN_TYPE and not fw.variant.canopen:
+                raise abort(od.param(mnemonic).key, AbortCode.INVALID_VALUE)
+
+        od.checks[od.param(mnemonic).key] = check
+
+    for mnemonic in ("DEVMODE", "CTRLMODE"):
+        not_in_active_mode(mnemonic)
+    for mnemonic in ("LIMTA", "LIMTB"):
+        if od.has(mnemonic):
+            at_most_curnorm(mnemonic)
+    for mnemonic in ("AINSETP", "SENSTYPE"):
+        if od.has(mnemonic):
+            needs_canopen(mnemonic)

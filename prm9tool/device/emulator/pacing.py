@@ -1,0 +1,66 @@
+"""Pacing the simulation to a wall clock: drift-free, in batches, catching up after a stall.
+
+The pacer never accumulates sleep errors: the number of cycles due is always computed from
+the absolute time since :meth:`Pacer.reset`, so a late wake-up is followed by a bigger batch
+and a stall by a run of back-to-back batches until the simulation has caught up. A lag longer
+than ``max_lag_s`` (the process was suspended, a debugger held it) is dropped instead of
+replayed, and counted in ``dropped_cycles``.
+"""
+
+from __future__ import annotations
+
+import time
+from collections.abc import Callable
+
+
+class Pacer:
+    """Decides how many control cycles are due at the current wall-clock time."""
+
+    def __init__(
+        self,
+        cycle_s: float,
+        clock: Callable[[], float] = time.monotonic,
+        min_batch: int = 10,
+        max_batch: int = 50,
+        max_lag_s: float = 5.0,
+    ) -> None:
+        self.cycle_s = cycle_s
+        self.clock = clock
+        self.min_batch = min_batch
+        self.max_batch = max_batch
+        self.max_lag_cycles = int(max_lag_s / cycle_s)
+        self.start = clock()
+        self.cycles_done = 0
+        self.dropped_cycles = 0
+
+    def reset(self) -> None:
+        """Start a new time base at the current wall-clock time."""
+        self.start = self.clock()
+        self.cycles_done = 0
+        self.dropped_cycles = 0
+
+    def due(self) -> int:
+        """Cycles to run now (0 if fewer than ``min_batch`` are due), at most ``max_batch``."""
+        target = int((self.clock() - self.start) / self.cycle_s)
+        lag = target - self.cycles_done
+        if lag > self.max_lag_cycles:
+            skipped = lag - self.max_lag_cycles
+            self.cycles_done += skipped
+            self.dropped_cycles += skipped
+            lag = self.max_lag_cycles
+        if lag < self.min_batch:
+            return 0
+        return min(lag, self.max_batch)
+
+    def done(self, cycles: int) -> None:
+        """Record that ``cycles`` cycles were run."""
+        self.cycles_done += cycles
+
+    def wait_s(self) -> float:
+        """Seconds until the next batch of ``min_batch`` cycles is due (0 if already due)."""
+        next_due = self.start + (self.cycles_done + self.min_batch) * self.cycle_s
+        return max(0.0, next_due - self.clock())
+
+    def lag_s(self) -> float:
+        """How far the simulation is behind the wall clock, in seconds."""
+        return (self.clock() - self.start) - self.cycles_done * self.cycle_s

@@ -1,0 +1,125 @@
+"""The CiA 408 / VDMA device state machine (manual §7.4, tables 7-19 and 7-20).
+
+Control word bits: D (0) disabled, H (1) hold enabled, M (2) device mode active enabled,
+R (3) reset fault. Level-triggered transitions cascade until the state is stable, so the
+manual's sequence 08h → 09h → 0Bh → 0Fh walks INIT → DISABLED → HOLD → DEVICE_MODE_ACTIVE one
+step per write, and a single 0Fh does the same in one write.
+
+Decisions where table 7-20 is garbled (documented in docs/emulator.md):
+
+* FAULT_REACTION ends in FAULT_HOLD when H = 1 and in FAULT when H = 0 (transitions 9/12).
+* A fault is reset by a rising edge of R while no fault condition is present: from FAULT to
+  DISABLED, from FAULT_HOLD to HOLD (transitions 10/11); the level rules then continue.
+"""
+
+from __future__ import annotations
+
+from prm9tool.device.emulator.states import DeviceState as S
+
+BIT_D = 0x01
+BIT_H = 0x02
+BIT_M = 0x04
+BIT_R = 0x08
+
+_FUNCTIONAL = (S.INIT, S.DISABLED, S.HOLD, S.DEVICE_MODE_ACTIVE)
+
+
+class DeviceStateMachine:
+    """State, last control word and the fault-reaction timer."""
+
+    def __init__(self) -> None:
+        self.state = S.NOT_READY
+        self.control_word = 0
+        self.reaction_left_s = 0.0
+
+    def power_on(self) -> None:
+        """Transition 0: power on, self test."""
+        self.state = S.NOT_READY
+        self.control_word = 0
+        self.reaction_left_s = 0.0
+
+    def init_done(self) -> None:
+        """Transition 1: device initialisation successful."""
+        if self.state is S.NOT_READY:
+            self.state = S.INIT
+            self._settle()
+
+    def write_control_word(self, word: int, fault_present: bool) -> None:
+        """Apply a new control word (edge of R resets a fault that has gone)."""
+        rising_r = bool(word & BIT_R) and not self.control_word & BIT_R
+        self.control_word = word & 0xFFFF
+        if rising_r and not fault_present:
+            if self.state is S.FAULT:
+                self.state = S.DISABLED  # transition 10
+            elif self.state is S.FAULT_HOLD:
+                self.state = S.HOLD  # transition 11
+        self._settle()
+
+    def fault(self, reaction_s: float) -> None:
+        """Transition 8: a fault was detected."""
+        if self.state in _FUNCTIONAL:
+            self.state = S.FAULT_REACTION
+            self.reaction_left_s = reaction_s
+
+    def tick(self, dt: float) -> None:
+        """Advance the fault-reaction timer (transitions 9 and 12)."""
+        if self.state is S.FAULT_REACTION:
+            self.reaction_left_s -= dt
+            if self.reaction_left_s <= 0.0:
+                self.state = S.FAULT_HOLD if self.control_word & BIT_H else S.FAULT
+
+    def deactivate(self) -> None:
+        """NMT coupling (table 7-21, reset node): DEVICE_MODE_ACTIVE → INIT."""
+        if self.state in (S.DEVICE_MODE_ACTIVE, S.HOLD, S.DISABLED):
+            self.state = S.INIT
+
+    def status_word(self) -> int:
+        """0x6041: the control-word bits the state confirms, plus the state in bits 8…11.
+
+        Bits 0…3 mirror D, H, M, R as CiA 408 defines for the status word (D/H/M set when the
+        state has reached them, R = a fault is pending); bits 8…11 hold the state number of
+        figure 7-11 (1 NOT_READY … 8 FAULT_REACTION) (decision).
+        """
+        s = self.state
+        bits = 0
+        if s in (S.DISABLED, S.HOLD, S.DEVICE_MODE_ACTIVE):
+            bits |= BIT_D
+        if s in (S.HOLD, S.DEVICE_MODE_ACTIVE, S.FAULT_HOLD):
+            bits |= BIT_H
+        if s is S.DEVICE_MODE_ACTIVE:
+            bits |= BIT_M
+        if s in (S.FAULT, S.FAULT_HOLD, S.FAULT_REACTION):
+            bits |= BIT_R
+        return bits | (_STATE_NUMBERS[s] << 8)
+
+    def _settle(self) -> None:
+        word = self.control_word
+        d, h, m = word & BIT_D, word & BIT_H, word & BIT_M
+        for _ in range(4):
+            s = self.state
+            if s is S.INIT and d:
+                self.state = S.DISABLED  # 2
+            elif s is S.DISABLED and d and h:
+                self.state = S.HOLD  # 3
+            elif s is S.DISABLED and not (d or h or m):
+                self.state = S.INIT  # 7
+            elif s is S.HOLD and d and h and m:
+                self.state = S.DEVICE_MODE_ACTIVE  # 4
+            elif s is S.HOLD and not (h or m):
+                self.state = S.DISABLED  # 6
+            elif s is S.DEVICE_MODE_ACTIVE and not m:
+                self.state = S.HOLD  # 5
+            else:
+                return
+
+
+_STATE_NUMBERS = {
+    S.NOT_READY: 1,
+    S.INIT: 2,
+    S.DISABLED: 3,
+    S.HOLD: 4,
+    S.DEVICE_MODE_ACTIVE: 5,
+    S.FAULT_HOLD: 6,
+    S.FAULT: 7,
+    S.FAULT_REACTION: 8,
+}

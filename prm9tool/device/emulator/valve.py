@@ -1,0 +1,304 @@
+"""EmulatedValve: the public face of the emulated PRM9 (API contract: docs/emulator.md)."""
+
+from __future__ import annotations
+
+import os
+import threading
+from collections.abc import Callable, Sequence
+from typing import TYPE_CHECKING
+
+import numpy as np
+
+from prm9tool.catalogue import LOAD_SIGNATURE, SAVE_SIGNATURE
+from prm9tool.device.emulator.capture import Capture
+from prm9tool.device.emulator.constants import (
+    CYCLE_S,
+    FIRMWARE,
+    PLANT,
+    FirmwareConstants,
+    PlantConstants,
+)
+from prm9tool.device.emulator.faults import WARNING_TEXT
+from prm9tool.device.emulator.firmware import Firmware
+from prm9tool.device.emulator.leds import leds
+from prm9tool.device.emulator.pacing import Pacer
+from prm9tool.device.emulator.states import DeviceState, Fault, ValveStatus
+from prm9tool.errors import AccessDeniedError, ValueRangeError
+from prm9tool.signals import BY_KEY
+from prm9tool.typekey import TypeKey
+from prm9tool.variant import Variant
+
+if TYPE_CHECKING:
+    import can
+
+    from prm9tool.device.emulator.canopen_slave import CanopenSlave
+
+INPUT_NAMES = (
+    "setpoint",
+    "sensor",
+    "supply_voltage",
+    "ambient_temperature",
+    "switch_baud",
+    "switch_node",
+    "sensor_from_plant",
+)
+
+
+class EmulatedValve:
+    """An emulated PRM9 valve: firmware, control loop, plant, faults, LEDs and NV memory.
+
+    Every public method takes :attr:`lock`; the paced thread holds it for one batch of at most
+    10 ms of simulated time, so callers wait at most that long.
+    """
+
+    CYCLE_S = CYCLE_S
+
+    def __init__(
+        self,
+        type_key: str | TypeKey,
+        serial: int = 1,
+        firmware_version: str = "1.0.0",
+        nv_path: str | os.PathLike[str] | None = None,
+        switches: tuple[int, int] | None = None,
+        plant: PlantConstants = PLANT,
+        constants: FirmwareConstants = FIRMWARE,
+    ) -> None:
+        self.type_key = type_key if isinstance(type_key, TypeKey) else TypeKey.parse(type_key)
+        self.variant: Variant = self.type_key.variant
+        self.serial = serial
+        self.firmware_version = firmware_version
+        self.lock = threading.RLock()
+        self._fw = Firmware(
+            self.type_key, serial, firmware_version, nv_path, switches, plant, constants
+        )
+        self._capture = Capture(self._fw.loop)
+        self._restart_listeners: list[Callable[[], None]] = []
+        self._thread: threading.Thread | None = None
+        self._stop = threading.Event()
+        self.pacer = Pacer(CYCLE_S)
+
+    # --- object dictionary ------------------------------------------------------------
+    def read(self, index: int, subindex: int) -> int | str:
+        """Read an object; raises SdoAbortError with the CiA 301 abort code."""
+        with self.lock:
+            return self._fw.od.read(index, subindex)
+
+    def write(self, index: int, subindex: int, value: int | str) -> None:
+        """Write an object; raises SdoAbortError with the CiA 301 abort code."""
+        with self.lock:
+            self._fw.od.write(index, subindex, value)
+
+    def read_bytes(self, index: int, subindex: int) -> bytes:
+        """Read an object encoded per its catalogue data type (little-endian)."""
+        with self.lock:
+            return self._fw.od.read_bytes(index, subindex)
+
+    def write_bytes(self, index: int, subindex: int, data: bytes) -> None:
+        """Write encoded bytes; a wrong length aborts (LENGTH_TOO_HIGH / LENGTH_TOO_LOW)."""
+        with self.lock:
+            self._fw.od.write_bytes(index, subindex, data)
+
+    def store(self) -> None:
+        """RAM → non-volatile image (and the nv_path file, atomically)."""
+        self.write(0x1010, 1, SAVE_SIGNATURE)
+
+    def restore_factory(self) -> None:
+        """Non-volatile image ← factory defaults; effective after the next restart."""
+        self.write(0x1011, 1, LOAD_SIGNATURE)
+
+    def restart(self) -> None:
+        """Power cycle: RAM ← NV image, switches re-read, boot timeline replayed."""
+        with self.lock:
+            self._fw.power_up()
+            for listener in self._restart_listeners:
+                listener()
+
+    # --- simulation -------------------------------------------------------------------
+    @property
+    def time(self) -> float:
+        """Simulated seconds since the last power-up."""
+        return self._fw.time
+
+    def advance(self, seconds: float) -> None:
+        """Run the firmware for ``seconds`` of simulated time (rounded to whole cycles)."""
+        if seconds < 0:
+            raise ValueRangeError(f"advance: {seconds} s is negative")
+        cycles = round(seconds / CYCLE_S)
+        done = 0
+        while done < cycles:
+            batch = min(cycles - done, 5000)
+            with self.lock:
+                self._fw.run(batch)
+                self._capture.trim()
+            done += batch
+
+    def start(self) -> None:
+        """Run paced to the wall clock in a background thread."""
+        with self.lock:
+            if self._thread is not None:
+                return
+            self._stop.clear()
+            self.pacer.reset()
+            self._thread = threading.Thread(target=self._paced, name="prm9-emulator", daemon=True)
+            self._thread.start()
+
+    def stop(self) -> None:
+        """Stop the paced thread (returns when it has ended)."""
+        thread = self._thread
+        if thread is None:
+            return
+        self._stop.set()
+        thread.join()
+        self._thread = None
+
+    @property
+    def running(self) -> bool:
+        """True while the paced thread runs."""
+        return self._thread is not None
+
+    def _paced(self) -> None:
+        pacer = self.pacer
+        while not self._stop.is_set():
+            due = pacer.due()
+            if due == 0:
+                self._stop.wait(pacer.wait_s())
+                continue
+            with self.lock:
+                self._fw.run(due)
+                self._capture.trim()
+            pacer.done(due)
+
+    # --- inputs and faults ------------------------------------------------------------
+    def set_input(self, name: str, value: float) -> None:
+        """Set an input: see INPUT_NAMES (switches are read at power-up only)."""
+        if name not in INPUT_NAMES:
+            raise ValueRangeError(f"unknown input {name!r}; inputs are: {', '.join(INPUT_NAMES)}")
+        value = float(value)
+        with self.lock:
+            if name.startswith("switch_"):
+                if not (0 <= value <= 15 and value.is_integer()):
+                    raise ValueRangeError(f"{name}: {value:g} is not a switch position 0…15")
+                self._fw.switches[0 if name == "switch_baud" else 1] = int(value)
+                return
+            self._fw.inputs[name] = value
+            self._fw.setpoint_dirty = True
+            if name == "supply_voltage":
+                self._fw.config_dirty = True
+
+    def inject(self, fault: Fault) -> None:
+        """Make the physical fault happen (see docs/emulator.md for what each one does)."""
+        with self.lock:
+            self._fw.injected.add(Fault(fault))
+            self._fw.setpoint_dirty = self._fw.config_dirty = True
+
+    def clear(self, fault: Fault) -> None:
+        """Remove an injected physical fault; the firmware recovers by itself."""
+        with self.lock:
+            self._fw.injected.discard(Fault(fault))
+            self._fw.setpoint_dirty = self._fw.config_dirty = True
+
+    def usb_activity(self) -> None:
+        """Called by the USB firmware for every report it receives (override watchdog)."""
+        with self.lock:
+            self._fw.override_last = self._fw.time
+
+    # --- measuring points -------------------------------------------------------------
+    def signal(self, key: str) -> float:
+        """Latest raw value of a measuring point (prm9tool.signals key)."""
+        if key not in BY_KEY:
+            raise ValueRangeError(f"unknown measuring point {key!r}")
+        with self.lock:
+            return self._fw.signal_values()[key]
+
+    def capture_start(self, keys: Sequence[str], decimation: int = 1) -> None:
+        """Record up to three measuring points every ``decimation`` cycles."""
+        with self.lock:
+            self._capture.start(keys, decimation)
+
+    def capture_read(self) -> np.ndarray:
+        """Drain the capture buffer: shape (n, len(keys)), raw values."""
+        with self.lock:
+            return self._capture.read()
+
+    def capture_stop(self) -> None:
+        """Stop recording (the buffer is discarded)."""
+        with self.lock:
+            self._capture.stop()
+
+    # --- status -----------------------------------------------------------------------
+    def status(self) -> ValveStatus:
+        """Snapshot of state, errors, LEDs, temperature and supply."""
+        with self.lock:
+            fw = self._fw
+            active = fw.faults.active
+            text = active[0].text if active else (WARNING_TEXT if fw.warning else "")
+            return ValveStatus(
+                device_state=fw.sm.state,
+                error_code=fw.faults.code(),
+                error_text=text,
+                warning=fw.warning,
+                active_errors=tuple(dict.fromkeys(k.code for k in active)),
+                error_register=fw.faults.register(),
+                leds=leds(
+                    fw.time, fw.booting, self.variant.canopen, fw.nmt_state, active, fw.warning
+                ),
+                temperature_c=fw.temperature,
+                supply_v=fw.supply,
+                nmt_state=fw.nmt_state,
+                booting=fw.booting,
+            )
+
+    @property
+    def device_state(self) -> DeviceState:
+        """Current CiA 408 device state."""
+        return self._fw.sm.state
+
+    @property
+    def node_id(self) -> int:
+        """CANopen node ID latched at power-up (0 on a valve without -CA)."""
+        return self._fw.node_id
+
+    @property
+    def bitrate(self) -> int:
+        """CAN bit rate latched at power-up in bit/s (0 when CANopen is off)."""
+        return self._fw.bitrate
+
+    @property
+    def can_enabled(self) -> bool:
+        """True on a -CA valve whose interface switch enables CANopen."""
+        return self._fw.can_enabled
+
+    # --- hooks for the CANopen slave --------------------------------------------------
+    def add_cycle_listener(self, fn: Callable[[float], None]) -> None:
+        """``fn(sim_time)`` every 1 ms of simulated time (loop thread, lock held)."""
+        with self.lock:
+            self._fw.cycle_listeners.append(fn)
+
+    def add_error_listener(self, fn: Callable[[int, int], None]) -> None:
+        """``fn(emcy_code, error_register)`` on every change of the active error set."""
+        with self.lock:
+            self._fw.faults.listeners.append(fn)
+
+    def add_restart_listener(self, fn: Callable[[], None]) -> None:
+        """``fn()`` after every power cycle."""
+        with self.lock:
+            self._restart_listeners.append(fn)
+
+    def nmt_event(self, event: str) -> None:
+        """NMT state change reported by the CANopen slave (coupling: manual table 7-21)."""
+        from prm9tool.device.emulator.nmt import apply_nmt_event
+
+        with self.lock:
+            if event == "reset_node":
+                self._fw.sm.deactivate()
+                self.restart()
+                return
+            apply_nmt_event(self._fw, event)
+
+    def connect_can(self, bus: can.BusABC) -> CanopenSlave:
+        """Put the valve on a python-can bus; AccessDeniedError on a valve without -CA."""
+        if not self.variant.canopen:
+            raise AccessDeniedError(f"{self.type_key} has no CANopen interface (no -CA suffix)")
+        from prm9tool.device.emulator.canopen_slave import CanopenSlave
+
+        return CanopenSlave(self, bus)
