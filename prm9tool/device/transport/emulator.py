@@ -1,11 +1,12 @@
 """The emulator backend: the same 64-byte reports, handed to an emulated valve's USB firmware.
 
 The link is modelled like USB full speed: at most one report per millisecond in each
-direction, an answer at the earliest one frame after its request. ``paced=True`` runs on the
-wall clock next to the valve's real-time thread (the GUI); ``paced=False`` runs on a simulated
-link clock and steps the valve deterministically to it (tests, benchmarks, batch mode), so a
-wait costs no real time. :class:`LinkFaults` injects what real cables do: a link that dies
-after report N, and lost, duplicated or late reports.
+direction, an answer at the earliest one frame after its request. The link has its own clock:
+``paced=True`` keeps it on the wall clock (each report really takes its frame), ``paced=False``
+lets it run as fast as the host asks (tests, tools), so a wait costs no real time. Unless the
+valve runs its own real-time thread (the GUI), the transport steps the valve's simulation
+deterministically to the link clock. :class:`LinkFaults` injects what real cables do: a link
+that dies after report N, and lost, duplicated or late reports.
 """
 
 from __future__ import annotations
@@ -61,7 +62,10 @@ class EmulatorTransport(Transport):
         self.faults = faults or LinkFaults()
         self.firmware = UsbFirmware.of(valve)
         self.firmware.outbox.clear()
-        self._clock = 0.0  # simulated link time (paced=False)
+        self._clock = 0.0  # link time: seconds since the transport opened
+        self._wall0 = time.monotonic()
+        self._stepped_to = 0.0  # link time the valve's simulation has been advanced to
+        self._valve_seen = valve.time  # valve time after our last step (detects outside steps)
         self._next_out = 0.0
         self._next_in = 0.0
         self._number = 0
@@ -70,7 +74,18 @@ class EmulatorTransport(Transport):
 
     # --- hooks ---------------------------------------------------------------------------
     def _now(self) -> float:
-        return time.monotonic() if self.paced else self._clock
+        if self.paced:
+            return time.monotonic() - self._wall0
+        self._follow_valve()
+        return self._clock
+
+    def _follow_valve(self) -> None:
+        """A test or tool stepped the valve itself: the unpaced link clock moves along."""
+        moved = self.valve.time - self._valve_seen
+        if moved > 0:
+            self._clock += moved
+            self._stepped_to += moved
+        self._valve_seen = self.valve.time
 
     def _write(self, report: bytes) -> None:
         number = self._take_number()
@@ -133,14 +148,16 @@ class EmulatorTransport(Transport):
             self._queue(now - max(0.0, valve_now - sim_time), report)
 
     def _wait_until(self, moment: float) -> None:
-        if self.paced:  # the valve's own real-time thread moves the simulation
-            while (remaining := moment - time.monotonic()) > 0:
+        if self.paced:
+            while (remaining := moment - self._now()) > 0:
                 time.sleep(min(remaining, _SPIN_S))
-            return
-        step = moment - self._clock
-        if step > 0:
-            self.valve.advance(step)
-            self._clock = moment
+        self._clock = max(self._clock, moment)
+        if self.valve.running:  # the valve's own real-time thread moves the simulation
+            self._stepped_to = self._clock
+        elif self._clock > self._stepped_to:
+            self.valve.advance(self._clock - self._stepped_to)
+            self._stepped_to = self._clock
+            self._valve_seen = self.valve.time
 
     @property
     def link_time(self) -> float:

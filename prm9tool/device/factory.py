@@ -1,0 +1,276 @@
+"""The one device factory of prm9tool: the GUI and the batch mode list and open valves here.
+
+A device is a USB valve (``usb:<HID path>``) or an emulated valve
+(``emulator:<type key>:<serial>``). Emulated valves live in this process, one per serial
+number, and keep their non-volatile memory in ``<user data dir>/emulator/<serial>.json``
+(``PRM9TOOL_DATA_DIR`` overrides the user data dir), so what one run stores the next one sees.
+"""
+
+from __future__ import annotations
+
+import logging
+import threading
+from collections.abc import Callable, Sequence
+from dataclasses import dataclass
+from pathlib import Path
+from typing import TYPE_CHECKING, Any
+
+from prm9tool.device.session import ValveSession
+from prm9tool.errors import CommunicationError, Prm9Error, TypeKeyError
+from prm9tool.typekey import TypeKey
+
+if TYPE_CHECKING:
+    from prm9tool.device.emulator import EmulatedValve
+
+log = logging.getLogger("prm9tool.device.factory")
+DEFAULT_EMULATOR_TYPE = "PRM9-06.3Z11/30-24E02S02"
+USB, EMULATOR = "usb", "emulator"
+
+
+@dataclass(frozen=True)
+class DeviceEntry:
+    """One valve that can be opened."""
+
+    device_id: str
+    kind: str  # "usb" | "emulator"
+    type_key: str
+    serial: int
+    firmware: str
+    description: str
+
+
+@dataclass(frozen=True)
+class CanOptions:
+    """Where an emulated -CA valve puts its CANopen interface (a python-can bus)."""
+
+    interface: str = "virtual"
+    channel: str = "prm9tool"
+    bitrate: int | None = None  # None: whatever the bus backend uses by default
+
+    @classmethod
+    def from_args(cls, args: Any) -> CanOptions:
+        """The options of the CLI's ``--can-interface/--can-channel/--can-bitrate``."""
+        return cls(args.can_interface, args.can_channel, args.can_bitrate)
+
+
+def emulator_nv_path(serial: int) -> Path:
+    """The EEPROM image file of the emulated valve with ``serial``."""
+    from prm9tool.backup import user_data_dir  # the one definition of the user data dir
+
+    return user_data_dir() / "emulator" / f"{serial}.json"
+
+
+def parse_emulator_spec(spec: str, default_serial: int = 1) -> tuple[str, int]:
+    """``TYPEKEY[:SERIAL]`` → (normalized type key, serial); raises TypeKeyError."""
+    text, serial = spec.strip() or DEFAULT_EMULATOR_TYPE, default_serial
+    head, sep, tail = text.rpartition(":")
+    if sep:
+        if not tail.isdigit() or not 0 < int(tail) < 2**32:
+            raise TypeKeyError(f"emulator {spec!r}: serial {tail!r} must be a number 1…4294967295")
+        text, serial = head, int(tail)
+    return str(TypeKey.parse(text)), serial
+
+
+def emulator_entries(specs: Sequence[str]) -> list[DeviceEntry]:
+    """Entries for ``--emulator`` specs; specs without a serial get the lowest free ones."""
+    parsed = [parse_emulator_spec(s, 0) for s in specs]
+    taken = {serial for _, serial in parsed if serial}
+    free = (n for n in range(1, 2**32) if n not in taken)
+    entries, seen = [], set()
+    for type_key, serial in parsed:
+        serial = serial or next(free)
+        if serial in seen:
+            raise TypeKeyError(f"two emulated valves with serial {serial}")
+        seen.add(serial)
+        valve = emulated_valve(type_key, serial)
+        entries.append(_emulator_entry(valve))
+    return entries
+
+
+def _emulator_entry(valve: EmulatedValve) -> DeviceEntry:
+    key = str(valve.type_key)
+    return DeviceEntry(
+        f"{EMULATOR}:{key}:{valve.serial}",
+        EMULATOR,
+        key,
+        valve.serial,
+        valve.firmware_version,
+        f"emulated {key}, serial {valve.serial}",
+    )
+
+
+def usb_entries() -> list[DeviceEntry]:
+    """Entries for the valves on USB (raises CommunicationError when hidapi is missing)."""
+    from prm9tool.device.discovery import usb_valves
+
+    return [
+        DeviceEntry(
+            f"{USB}:{v.path.decode(errors='replace')}",
+            USB,
+            v.type_key,
+            v.serial,
+            v.firmware,
+            f"USB {v.path.decode(errors='replace')} {v.product}".rstrip(),
+        )
+        for v in usb_valves()
+    ]
+
+
+def usb_unavailable_reason() -> str | None:
+    """Why USB valves cannot be listed on this machine, or None if hidapi works."""
+    from prm9tool.device.transport.hidapi import load_hid
+
+    try:
+        load_hid()
+    except CommunicationError as exc:
+        return str(exc)
+    return None
+
+
+def list_devices(emulators: Sequence[str] = ()) -> list[DeviceEntry]:
+    """USB valves (if hidapi works) followed by the emulated valves of ``emulators``."""
+    try:
+        found = usb_entries()
+    except CommunicationError as exc:
+        log.info("no USB valves listed: %s", exc)
+        found = []
+    return found + emulator_entries(emulators)
+
+
+# --- emulated valves of this process ---------------------------------------------------------
+_VALVES: dict[int, EmulatedValve] = {}
+_RUNNING: dict[int, int] = {}  # paced sessions per serial (the valve's thread runs while > 0)
+_LOCK = threading.Lock()
+
+
+def emulated_valve(type_key: str, serial: int) -> EmulatedValve:
+    """The emulated valve with ``serial`` in this process (created with its EEPROM file)."""
+    from prm9tool.device.emulator import EmulatedValve
+
+    with _LOCK:
+        valve = _VALVES.get(serial)
+        if valve is None:
+            valve = EmulatedValve(type_key, serial, nv_path=emulator_nv_path(serial))
+            _VALVES[serial] = valve
+        elif str(valve.type_key) != str(TypeKey.parse(type_key)):
+            raise Prm9Error(
+                f"emulated valve {serial} is a {valve.type_key}; choose another serial "
+                f"for a {type_key}"
+            )
+        return valve
+
+
+def forget_emulated_valves() -> None:
+    """Drop this process's emulated valves (their EEPROM files stay); for tests and tools."""
+    with _LOCK:
+        for serial, valve in _VALVES.items():
+            if _RUNNING.pop(serial, 0):
+                valve.stop()
+        _VALVES.clear()
+
+
+# --- opening ---------------------------------------------------------------------------------
+def open_session(
+    entry: DeviceEntry | str,
+    *,
+    paced: bool = True,
+    can: CanOptions | None = None,
+    link_paced: bool | None = None,
+) -> ValveSession:
+    """Open a session to ``entry`` (a DeviceEntry or its ``device_id``).
+
+    Emulated valves: ``paced`` runs the valve in real time in its own thread (GUI); False
+    steps its simulation on the link's clock instead (tests, tools, batch mode).
+    ``link_paced`` (default: ``paced``) holds the emulated USB link to one report per
+    millisecond of wall-clock time. ``can``: put an emulated -CA valve on that python-can bus.
+    """
+    device_id = entry.device_id if isinstance(entry, DeviceEntry) else entry
+    kind, _, rest = device_id.partition(":")
+    if kind == USB:
+        return _open_usb(rest, device_id)
+    if kind == EMULATOR:
+        type_key, _, serial = rest.rpartition(":")
+        link = paced if link_paced is None else link_paced
+        return _open_emulator(type_key, int(serial), device_id, (paced, link), can)
+    raise Prm9Error(f"unknown device {device_id!r}: expected 'usb:…' or 'emulator:…'")
+
+
+def _open_usb(path: str, device_id: str) -> ValveSession:
+    from prm9tool.device.discovery import find_serial
+    from prm9tool.device.transport.hidapi import HidTransport
+
+    serial_box: list[int] = []
+    transport = HidTransport(path.encode(), finder=lambda: find_serial(serial_box[0]))
+    try:
+        session = ValveSession(transport, device_id)
+    except BaseException:
+        transport.close()
+        raise
+    serial_box.append(session.info.serial)
+    return session
+
+
+def _open_emulator(
+    type_key: str,
+    serial: int,
+    device_id: str,
+    pacing: tuple[bool, bool],
+    can: CanOptions | None,
+) -> ValveSession:
+    from prm9tool.device.transport.emulator import EmulatorTransport
+
+    valve = emulated_valve(type_key, serial)
+    closers: list[Callable[[], None]] = []
+    try:
+        if pacing[0]:
+            _run(valve)
+            closers.append(lambda: _halt(valve))
+        if can is not None and valve.variant.canopen:
+            closers.append(_connect_can(valve, can))
+        transport = EmulatorTransport(valve, paced=pacing[1])
+        return ValveSession(transport, device_id, on_close=lambda: _all(closers))
+    except BaseException:
+        _all(closers)
+        raise
+
+
+def _connect_can(valve: EmulatedValve, options: CanOptions) -> Callable[[], None]:
+    import can
+
+    kwargs: dict[str, Any] = {"interface": options.interface, "channel": options.channel}
+    if options.bitrate is not None:
+        kwargs["bitrate"] = options.bitrate
+    try:
+        bus = can.Bus(**kwargs)
+    except (can.CanError, OSError, ValueError, ImportError) as exc:
+        raise CommunicationError(f"cannot open CAN bus {options}: {exc}") from exc
+    slave = valve.connect_can(bus)
+
+    def close() -> None:
+        stop = getattr(slave, "stop", None)
+        if callable(stop):
+            stop()
+        bus.shutdown()
+
+    return close
+
+
+def _run(valve: EmulatedValve) -> None:
+    with _LOCK:
+        count = _RUNNING.get(valve.serial, 0)
+        _RUNNING[valve.serial] = count + 1
+        if count == 0 and not valve.running:
+            valve.start()
+
+
+def _halt(valve: EmulatedValve) -> None:
+    with _LOCK:
+        count = _RUNNING.get(valve.serial, 0) - 1
+        _RUNNING[valve.serial] = max(count, 0)
+        if count <= 0 and valve.running:
+            valve.stop()
+
+
+def _all(closers: list[Callable[[], None]]) -> None:
+    for close in reversed(closers):
+        close()

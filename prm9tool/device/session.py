@@ -1,0 +1,447 @@
+"""The valve session: what the GUI and the batch mode do with one valve, over any transport.
+
+Long operations are synchronous (run them off the GUI thread), report ``progress(done, total,
+step)`` and stop at the next report when ``cancel`` is set. Failures raise the typed errors of
+:mod:`prm9tool.errors`; an upload never stores anything it has not read back and compared.
+"""
+
+from __future__ import annotations
+
+import struct
+import threading
+import time
+from collections.abc import Callable, Mapping, Sequence
+from dataclasses import dataclass
+from typing import TypeVar
+
+import numpy as np
+
+from prm9tool.catalogue import CATALOGUE, Parameter
+from prm9tool.device.emulator.states import DeviceState, LedState, ValveStatus
+from prm9tool.device.protocol import (
+    PROTOCOL_VERSION,
+    AbortReply,
+    Done,
+    Identify,
+    IdentifyReply,
+    ReadEntries,
+    ReadReply,
+    Request,
+    Response,
+    Restart,
+    RestoreFactory,
+    SegmentRead,
+    SegmentReadReply,
+    SegmentWriteReply,
+    StatusReply,
+    StatusRequest,
+    Store,
+    WriteEntries,
+    WriteReply,
+    pack_reads,
+    pack_writes,
+    segments,
+)
+from prm9tool.device.stream import StreamReceiver
+from prm9tool.device.transport import Transport
+from prm9tool.errors import CommunicationError, Prm9Error, ProtocolError, SdoAbortError
+from prm9tool.typekey import TypeKey
+
+Progress = Callable[[int, int, str], None]
+Value = int | str
+R = TypeVar("R", bound=Response)
+STEPS = {"write": "writing the parameters", "verify": "reading them back", "store": "storing"}
+
+
+class OperationCancelledError(Prm9Error):
+    """The user cancelled a long operation; ``step`` says where it stopped."""
+
+    def __init__(self, step: str) -> None:
+        self.step = step
+        super().__init__(f"cancelled while {STEPS.get(step, step)}; nothing was stored")
+
+
+@dataclass(frozen=True)
+class DeviceInfo:
+    """Who the valve is (from the identification exchange)."""
+
+    type_key: str
+    serial: int
+    firmware: str
+    protocol_version: int
+    device_id: str
+
+
+@dataclass
+class UploadResult:
+    """Outcome of an upload; ``failed_step`` is ``write``, ``verify``, ``store`` or None."""
+
+    written: int
+    verified: bool
+    stored: bool
+    mismatches: dict[str, tuple[Value, Value]]
+    duration_s: float
+    failed_step: str | None
+
+
+class ValveSession:
+    """One open valve. Thread-safe: the transport serializes the exchanges."""
+
+    def __init__(
+        self,
+        transport: Transport,
+        device_id: str,
+        on_close: Callable[[], None] | None = None,
+    ) -> None:
+        self._transport = transport
+        self._device_id = device_id
+        self._on_close = on_close
+        self.info = self.identify()
+        self.variant = TypeKey.parse(self.info.type_key).variant
+        self._params = {p.mnemonic: p for p in CATALOGUE.for_variant(self.variant)}
+        self._stream = StreamReceiver(self._call, transport)
+
+    @property
+    def transport(self) -> Transport:
+        """The link this session talks over (statistics, fault injection in tests)."""
+        return self._transport
+
+    # --- identity and single values -------------------------------------------------------
+    def identify(self) -> DeviceInfo:
+        """Ask the valve who it is; refuses a valve speaking another protocol version."""
+        reply = self._call(Identify(), IdentifyReply)
+        if reply.protocol_version != PROTOCOL_VERSION:
+            raise ProtocolError(
+                f"the valve speaks USB protocol version {reply.protocol_version}; "
+                f"this prm9tool speaks version {PROTOCOL_VERSION}"
+            )
+        return DeviceInfo(
+            reply.type_key, reply.serial, reply.firmware, reply.protocol_version, self._device_id
+        )
+
+    def read(self, mnemonic: str) -> Value:
+        """Raw value of one parameter."""
+        return self.read_many([mnemonic])[mnemonic]
+
+    def write(self, mnemonic: str, raw: Value) -> None:
+        """Write one raw value (ValueRangeError before sending, SdoAbortError if refused)."""
+        self.write_many({mnemonic: raw})
+
+    def read_many(self, mnemonics: Sequence[str]) -> dict[str, Value]:
+        """Raw values of several parameters (as few reports as possible)."""
+        params = [self._param(m) for m in mnemonics]
+        results = self._read_entries(params)
+        for param in params:
+            outcome = results[param.mnemonic]
+            if isinstance(outcome, SdoAbortError):
+                raise outcome
+        return {m: results[m] for m in mnemonics}  # type: ignore[misc]
+
+    def write_many(self, values: Mapping[str, Value]) -> None:
+        """Write several raw values; all are range-checked before the first is sent."""
+        params = self._checked(values)
+        self._write_entries(params, values)
+
+    # --- upload / download ----------------------------------------------------------------
+    def upload(
+        self,
+        values: Mapping[str, Value],
+        progress: Progress | None = None,
+        cancel: threading.Event | None = None,
+    ) -> UploadResult:
+        """Write all → read back and compare → store. Only a verified set is stored.
+
+        A refusal or mismatch returns a result with ``failed_step``; a broken link raises the
+        communication error with the failed step named. Either way nothing was stored unless
+        ``stored`` is True, so a restart returns the valve to its previous parameters.
+        """
+        start = time.monotonic()
+        params = self._checked(values)
+        total = 2 * len(params) + 1
+        step, written = "write", 0
+        try:
+            written = self._write_entries(params, values, _Steps(progress, total, 0, step), cancel)
+            step = "verify"
+            verify = _Steps(progress, total, len(params), step)
+            actual = self._read_entries(params, verify, cancel)
+            mismatches = {
+                p.mnemonic: (values[p.mnemonic], _shown(actual[p.mnemonic]))
+                for p in params
+                if actual[p.mnemonic] != values[p.mnemonic]
+            }
+            if mismatches:
+                return UploadResult(written, False, False, mismatches, _since(start), "verify")
+            step = "store"
+            _check_cancel(cancel, step)
+            self.store()
+        except _RefusedError as refused:
+            mismatch = {refused.mnemonic: (values[refused.mnemonic], str(refused.error))}
+            return UploadResult(refused.done, False, False, mismatch, _since(start), "write")
+        except CommunicationError as exc:
+            raise _step_error(exc, step) from exc
+        if progress:
+            progress(total, total, "store")
+        return UploadResult(written, True, True, {}, _since(start), None)
+
+    def download(
+        self, progress: Progress | None = None, cancel: threading.Event | None = None
+    ) -> dict[str, Value]:
+        """The raw values of the *.prm parameter set of the valve's variant."""
+        params = CATALOGUE.file_parameters(self.variant)
+        results = self._read_entries(params, _Steps(progress, len(params), 0, "download"), cancel)
+        for outcome in results.values():
+            if isinstance(outcome, SdoAbortError):
+                raise outcome
+        return dict(results)  # type: ignore[arg-type]
+
+    # --- commands -------------------------------------------------------------------------
+    def store(self) -> None:
+        """Make the working parameters permanent (non-volatile memory)."""
+        self._call(Store(), Done)
+
+    def restore_factory(self) -> None:
+        """Reset the stored parameters to factory values; effective after :meth:`restart`."""
+        self._call(RestoreFactory(), Done)
+
+    def restart(self) -> None:
+        """Power-cycle the valve's electronics and reconnect (only with hydraulics off)."""
+        self._call(Restart(), Done)
+        self._stream.forget()
+        self._transport.reconnect()
+
+    def status(self) -> ValveStatus:
+        """Device state, errors, LEDs, temperature and supply voltage."""
+        reply = self._call(StatusRequest(0), StatusReply)
+        text = bytearray(reply.text_chunk)
+        for _ in range(16):
+            if len(text) >= reply.text_total:
+                break
+            more = self._call(StatusRequest(len(text)), StatusReply)
+            if more.text_total != reply.text_total or more.text_offset != len(text):
+                reply, text = more, bytearray()  # the error changed meanwhile: start over
+                continue
+            text += more.text_chunk
+        return _status(reply, text.decode("utf-8", errors="replace"))
+
+    # --- streaming ------------------------------------------------------------------------
+    def stream_start(self, keys: Sequence[str], rate_hz: int = 5000) -> None:
+        """Stream up to three measuring points (signals.py keys) at ``rate_hz``."""
+        self._stream.start(keys, rate_hz)
+
+    def stream_read(self) -> np.ndarray:
+        """Samples received since the last call: shape (n, len(keys)), raw values."""
+        return self._stream.read()
+
+    @property
+    def samples_lost(self) -> int:
+        """Samples lost since :meth:`stream_start` (gaps in the stream sequence numbers)."""
+        return self._stream.lost
+
+    def stream_stop(self) -> None:
+        """Stop streaming."""
+        self._stream.stop()
+
+    def close(self) -> None:
+        """Stop any stream and close the link (idempotent)."""
+        if self._transport.closed:
+            return
+        try:
+            if self._stream.running:
+                self._stream.stop()
+        except CommunicationError:
+            pass
+        self._transport.close()
+        if self._on_close is not None:
+            self._on_close()
+
+    def __enter__(self) -> ValveSession:
+        return self
+
+    def __exit__(self, *exc: object) -> None:
+        self.close()
+
+    # --- internals ------------------------------------------------------------------------
+    def _call(self, request: Request, expected: type[R]) -> R:
+        reply = self._transport.request(request)
+        if isinstance(reply, AbortReply):
+            raise SdoAbortError(reply.index, reply.subindex, reply.code)
+        if not isinstance(reply, expected):
+            raise ProtocolError(
+                f"the valve answered {type(request).__name__} with {type(reply).__name__}"
+            )
+        return reply
+
+    def _param(self, mnemonic: str) -> Parameter:
+        param = self._params.get(mnemonic)
+        if param is None:
+            where = "" if mnemonic in CATALOGUE else " in the catalogue"
+            raise Prm9Error(f"{mnemonic}: no such parameter{where} on a {self.variant.label} valve")
+        return param
+
+    def _checked(self, values: Mapping[str, Value]) -> list[Parameter]:
+        params = [self._param(m) for m in values]
+        for param in params:
+            param.check_raw(values[param.mnemonic])
+        return params
+
+    def _read_entries(
+        self,
+        params: Sequence[Parameter],
+        steps: _Steps | None = None,
+        cancel: threading.Event | None = None,
+    ) -> dict[str, Value | SdoAbortError]:
+        by_key = {p.key: p for p in params}
+        results: dict[str, Value | SdoAbortError] = {}
+        pending = [(p.index, p.subindex, p.dtype.size) for p in params if not p.is_string]
+        for batch in pack_reads(pending):
+            addresses = list(batch.addresses)
+            while addresses:  # the valve may answer fewer entries than asked (long values)
+                _check_cancel(cancel, steps.step if steps else "read")
+                reply = self._call(ReadEntries(tuple(addresses)), ReadReply)
+                if not reply.values:
+                    raise ProtocolError("the valve answered a READ with no values")
+                for key, value in zip(addresses, reply.values, strict=False):
+                    results[by_key[key].mnemonic] = _decode(by_key[key], value)
+                addresses = addresses[len(reply.values) :]
+                if steps:
+                    steps.advance(len(reply.values))
+        for param in (p for p in params if p.is_string):
+            _check_cancel(cancel, steps.step if steps else "read")
+            results[param.mnemonic] = self._read_segmented(param)
+            if steps:
+                steps.advance(1)
+        return results
+
+    def _read_segmented(self, param: Parameter) -> Value | SdoAbortError:
+        data = bytearray()
+        while True:
+            try:
+                reply = self._call(
+                    SegmentRead(param.index, param.subindex, len(data)), SegmentReadReply
+                )
+            except SdoAbortError as exc:
+                return exc
+            if reply.offset != len(data) or (not reply.data and len(data) < reply.total):
+                raise ProtocolError(f"{param.mnemonic}: segmented read out of step")
+            data += reply.data
+            if len(data) >= reply.total:
+                return _decode(param, bytes(data[: reply.total]))
+
+    def _write_entries(
+        self,
+        params: Sequence[Parameter],
+        values: Mapping[str, Value],
+        steps: _Steps | None = None,
+        cancel: threading.Event | None = None,
+    ) -> int:
+        by_key = {p.key: p for p in params}
+        encoded = [(p.index, p.subindex, p.dtype.encode(values[p.mnemonic])) for p in params]
+        done = 0
+        for batch in pack_writes([e for e in encoded if not by_key[e[:2]].is_string]):
+            _check_cancel(cancel, "write")
+            done = self._write_batch(batch, by_key, done)
+            if steps:
+                steps.advance(len(batch.entries))
+        for index, subindex, data in (e for e in encoded if by_key[e[:2]].is_string):
+            _check_cancel(cancel, "write")
+            for piece in segments(index, subindex, data):
+                try:
+                    self._call(piece, SegmentWriteReply)
+                except SdoAbortError as exc:
+                    raise _RefusedError(by_key[(index, subindex)].mnemonic, exc, done) from exc
+            done += 1
+            if steps:
+                steps.advance(1)
+        return done
+
+    def _write_batch(self, batch: WriteEntries, by_key: dict, done: int) -> int:
+        try:
+            reply = self._call(batch, WriteReply)
+        except SdoAbortError as exc:
+            param = by_key.get((exc.index, exc.subindex))
+            if param is None:
+                raise
+            position = next(i for i, e in enumerate(batch.entries) if e[:2] == param.key)
+            raise _RefusedError(param.mnemonic, exc, done + position) from exc
+        if reply.count != len(batch.entries):
+            raise ProtocolError(f"the valve wrote {reply.count} of {len(batch.entries)} entries")
+        return done + reply.count
+
+
+class _RefusedError(Exception):
+    """Internal: the valve refused one entry of an upload."""
+
+    def __init__(self, mnemonic: str, error: SdoAbortError, done: int) -> None:
+        super().__init__(mnemonic)
+        self.mnemonic, self.error, self.done = mnemonic, error, done
+
+
+class _Steps:
+    """Progress of one step of an operation, as ``progress(done, total, step)`` calls."""
+
+    def __init__(self, progress: Progress | None, total: int, done: int, step: str) -> None:
+        self.progress, self.total, self.done, self.step = progress, total, done, step
+
+    def advance(self, count: int) -> None:
+        """``count`` more entries are done."""
+        self.done += count
+        if self.progress is not None:
+            self.progress(self.done, self.total, self.step)
+
+
+def _decode(param: Parameter, value: bytes | int) -> Value | SdoAbortError:
+    if isinstance(value, int):
+        return SdoAbortError(param.index, param.subindex, value)
+    try:
+        return param.dtype.decode(value)
+    except (struct.error, ValueError) as exc:
+        raise ProtocolError(
+            f"{param.mnemonic}: the valve sent {len(value)} bytes for a {param.dtype.name} ({exc})"
+        ) from exc
+
+
+def _shown(value: Value | SdoAbortError) -> Value:
+    return str(value) if isinstance(value, SdoAbortError) else value
+
+
+def _check_cancel(cancel: threading.Event | None, step: str) -> None:
+    if cancel is not None and cancel.is_set():
+        raise OperationCancelledError(step)
+
+
+def _since(start: float) -> float:
+    return time.monotonic() - start
+
+
+def _step_error(exc: CommunicationError, step: str) -> CommunicationError:
+    number = list(STEPS).index(step) + 1
+    if step == "store":
+        outcome = (
+            "the store may not have completed: after a restart the valve holds either its "
+            "previous parameters or the complete new set — download to check"
+        )
+    else:
+        outcome = "nothing was stored: after a restart the valve holds its previous parameters"
+    error = type(exc)(f"upload failed while {STEPS[step]} (step {number} of 3): {exc}; {outcome}")
+    error.step = step  # type: ignore[attr-defined]
+    return error
+
+
+def _status(reply: StatusReply, text: str) -> ValveStatus:
+    try:
+        state = DeviceState(reply.device_state)
+    except ValueError:
+        raise ProtocolError(f"the valve reported an unknown state {reply.device_state!r}") from None
+    return ValveStatus(
+        device_state=state,
+        error_code=reply.error_code,
+        error_text=text,
+        warning=reply.warning,
+        active_errors=reply.active_errors,
+        error_register=reply.error_register,
+        leds=tuple(LedState(c, p, lit) for c, p, lit in reply.leds),  # type: ignore[arg-type]
+        temperature_c=reply.temperature_c,
+        supply_v=reply.supply_v,
+        nmt_state=reply.nmt_state,
+        booting=reply.booting,
+    )
