@@ -125,3 +125,13 @@ def test_cross_rules():
     assert "LIMTA = 3000 mA is above the nominal coil current CURNORM = 2600 mA" in messages
     assert "SETPLIN linearization points must be monotonic" in messages
     assert any(p.severity == "warning" and "table 8-4" in p.message for p in problems)
+
+
+def test_factory_setpoint_type_follows_the_coil_layout():
+    # Table 7-22: ±10 V bipolar on delivery; table 8-4 recommends unipolar types for one coil.
+    ainsetp = CATALOGUE["AINSETP"]
+    assert ainsetp.default_for(Variant(Config.E02, Coils.AB)) == 9
+    for coils in (Coils.A, Coils.B):
+        variant = Variant(Config.E04, coils)
+        assert ainsetp.default_for(variant) == 6
+        assert CATALOGUE.check_rules(variant, CATALOGUE.defaults(variant)) == []

@@ -38,14 +38,14 @@ def test_new_writes_the_factory_defaults_and_check_accepts_them(tmp_path):
     assert check.stderr == f"{path}: valid (0 warnings)\n"
 
 
-def test_new_prints_the_warnings_of_the_valve_type(tmp_path):
+def test_new_factory_defaults_of_a_one_coil_valve_are_clean(tmp_path):
+    # One-coil valves default to 0…10 V (table 8-4), so --new prints no warning for them.
     path = tmp_path / "coil_a.prm"
     result = prm9tool("--new", COIL_A, "-o", str(path))
     assert result.returncode == ExitCode.OK
-    assert result.stdout == (
-        f"{path}:6: warning: AINSETP: ±10 V bipolar is not a recommended setpoint type for "
-        "E02 coil A valves (manual table 8-4)\n"
-    )
+    assert result.stdout == ""
+    assert "AINSETP = 6" in path.read_text(encoding="utf-8")
+    assert prm9tool("--check", str(path)).returncode == ExitCode.OK
 
 
 def test_new_to_standard_output(tmp_path):

@@ -192,6 +192,7 @@ SETPOINT: list[Parameter] = [
         0,
         14,
         9,
+        default_one_coil=6,
         group="setpoint_input",
         access=Access.BASIC,
         choices=SIGNAL_TYPES,
@@ -200,7 +201,7 @@ SETPOINT: list[Parameter] = [
             "Sollwertsignal: Signaltyp",
             "Řídicí signál: typ signálu",
         ),
-        source="fig. 8-18, table 7-15, 7-22 (object 0x2010/1: decision)",
+        source="fig. 8-18, tables 7-15/7-22; one coil: 0…10 V per table 8-4 (decision); object: decision",
     ),
     Parameter(
         "INVERSEP",

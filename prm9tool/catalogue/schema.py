@@ -145,7 +145,8 @@ class Parameter:
     """One object-dictionary entry with everything the program needs to know about it.
 
     ``display = raw * scale``; ``decimals`` is the number of decimals an edit field offers.
-    ``default_e04`` overrides ``default`` on E04 valves; ``node_relative`` means the real
+    ``default_e04`` overrides ``default`` on E04 valves, ``default_one_coil`` on valves with
+    one coil (A or B only); ``node_relative`` means the real
     default is ``default + node ID`` (CANopen COB-IDs, written ``$NODEID+...`` in an EDS).
     ``in_file`` parameters form the parameter set that *.prm files and uploads carry.
     """
@@ -168,6 +169,7 @@ class Parameter:
     in_file: bool = True
     choices: tuple[tuple[int, Texts], ...] = ()
     default_e04: int | None = None
+    default_one_coil: int | None = None
     node_relative: bool = False
     help: Texts | None = None
     source: str = ""
@@ -199,6 +201,8 @@ class Parameter:
         value = self.default
         if variant.config is Config.E04 and self.default_e04 is not None:
             value = self.default_e04
+        if variant.coils is not Coils.AB and self.default_one_coil is not None:
+            value = self.default_one_coil
         if self.node_relative and isinstance(value, int):
             value += node_id
         return value
