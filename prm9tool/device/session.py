@@ -7,7 +7,6 @@ step)`` and stop at the next report when ``cancel`` is set. Failures raise the t
 
 from __future__ import annotations
 
-import struct
 import threading
 import time
 from collections.abc import Callable, Mapping, Sequence
@@ -18,47 +17,37 @@ import numpy as np
 
 from prm9tool.catalogue import CATALOGUE, Parameter
 from prm9tool.device.emulator.states import DeviceState, LedState, ValveStatus
+from prm9tool.device.entries import (
+    STEPS,
+    EntryIO,
+    OperationCancelledError,
+    Progress,
+    RefusedError,
+    Steps,
+    Value,
+    check_cancel,
+)
 from prm9tool.device.protocol import (
     PROTOCOL_VERSION,
     AbortReply,
     Done,
     Identify,
     IdentifyReply,
-    ReadEntries,
-    ReadReply,
     Request,
     Response,
     Restart,
     RestoreFactory,
-    SegmentRead,
-    SegmentReadReply,
-    SegmentWriteReply,
     StatusReply,
     StatusRequest,
     Store,
-    WriteEntries,
-    WriteReply,
-    pack_reads,
-    pack_writes,
-    segments,
 )
 from prm9tool.device.stream import StreamReceiver
 from prm9tool.device.transport import Transport
 from prm9tool.errors import CommunicationError, Prm9Error, ProtocolError, SdoAbortError
 from prm9tool.typekey import TypeKey
 
-Progress = Callable[[int, int, str], None]
-Value = int | str
 R = TypeVar("R", bound=Response)
-STEPS = {"write": "writing the parameters", "verify": "reading them back", "store": "storing"}
-
-
-class OperationCancelledError(Prm9Error):
-    """The user cancelled a long operation; ``step`` says where it stopped."""
-
-    def __init__(self, step: str) -> None:
-        self.step = step
-        super().__init__(f"cancelled while {STEPS.get(step, step)}; nothing was stored")
+__all__ = ["DeviceInfo", "OperationCancelledError", "UploadResult", "ValveSession"]
 
 
 @dataclass(frozen=True)
@@ -100,6 +89,7 @@ class ValveSession:
         self.variant = TypeKey.parse(self.info.type_key).variant
         self._params = {p.mnemonic: p for p in CATALOGUE.for_variant(self.variant)}
         self._stream = StreamReceiver(self._call, transport)
+        self._entries = EntryIO(self._call)
 
     @property
     def transport(self) -> Transport:
@@ -130,7 +120,7 @@ class ValveSession:
     def read_many(self, mnemonics: Sequence[str]) -> dict[str, Value]:
         """Raw values of several parameters (as few reports as possible)."""
         params = [self._param(m) for m in mnemonics]
-        results = self._read_entries(params)
+        results = self._entries.read(params)
         for param in params:
             outcome = results[param.mnemonic]
             if isinstance(outcome, SdoAbortError):
@@ -140,7 +130,10 @@ class ValveSession:
     def write_many(self, values: Mapping[str, Value]) -> None:
         """Write several raw values; all are range-checked before the first is sent."""
         params = self._checked(values)
-        self._write_entries(params, values)
+        try:
+            self._entries.write(params, values)
+        except RefusedError as refused:
+            raise refused.error from None
 
     # --- upload / download ----------------------------------------------------------------
     def upload(
@@ -160,10 +153,10 @@ class ValveSession:
         total = 2 * len(params) + 1
         step, written = "write", 0
         try:
-            written = self._write_entries(params, values, _Steps(progress, total, 0, step), cancel)
+            written = self._entries.write(params, values, Steps(progress, total, 0, step), cancel)
             step = "verify"
-            verify = _Steps(progress, total, len(params), step)
-            actual = self._read_entries(params, verify, cancel)
+            verify = Steps(progress, total, len(params), step)
+            actual = self._entries.read(params, verify, cancel)
             mismatches = {
                 p.mnemonic: (values[p.mnemonic], _shown(actual[p.mnemonic]))
                 for p in params
@@ -172,9 +165,9 @@ class ValveSession:
             if mismatches:
                 return UploadResult(written, False, False, mismatches, _since(start), "verify")
             step = "store"
-            _check_cancel(cancel, step)
+            check_cancel(cancel, step)
             self.store()
-        except _RefusedError as refused:
+        except RefusedError as refused:
             mismatch = {refused.mnemonic: (values[refused.mnemonic], str(refused.error))}
             return UploadResult(refused.done, False, False, mismatch, _since(start), "write")
         except CommunicationError as exc:
@@ -188,7 +181,7 @@ class ValveSession:
     ) -> dict[str, Value]:
         """The raw values of the *.prm parameter set of the valve's variant."""
         params = CATALOGUE.file_parameters(self.variant)
-        results = self._read_entries(params, _Steps(progress, len(params), 0, "download"), cancel)
+        results = self._entries.read(params, Steps(progress, len(params), 0, "download"), cancel)
         for outcome in results.values():
             if isinstance(outcome, SdoAbortError):
                 raise outcome
@@ -284,129 +277,9 @@ class ValveSession:
             param.check_raw(values[param.mnemonic])
         return params
 
-    def _read_entries(
-        self,
-        params: Sequence[Parameter],
-        steps: _Steps | None = None,
-        cancel: threading.Event | None = None,
-    ) -> dict[str, Value | SdoAbortError]:
-        by_key = {p.key: p for p in params}
-        results: dict[str, Value | SdoAbortError] = {}
-        pending = [(p.index, p.subindex, p.dtype.size) for p in params if not p.is_string]
-        for batch in pack_reads(pending):
-            addresses = list(batch.addresses)
-            while addresses:  # the valve may answer fewer entries than asked (long values)
-                _check_cancel(cancel, steps.step if steps else "read")
-                reply = self._call(ReadEntries(tuple(addresses)), ReadReply)
-                if not reply.values:
-                    raise ProtocolError("the valve answered a READ with no values")
-                for key, value in zip(addresses, reply.values, strict=False):
-                    results[by_key[key].mnemonic] = _decode(by_key[key], value)
-                addresses = addresses[len(reply.values) :]
-                if steps:
-                    steps.advance(len(reply.values))
-        for param in (p for p in params if p.is_string):
-            _check_cancel(cancel, steps.step if steps else "read")
-            results[param.mnemonic] = self._read_segmented(param)
-            if steps:
-                steps.advance(1)
-        return results
-
-    def _read_segmented(self, param: Parameter) -> Value | SdoAbortError:
-        data = bytearray()
-        while True:
-            try:
-                reply = self._call(
-                    SegmentRead(param.index, param.subindex, len(data)), SegmentReadReply
-                )
-            except SdoAbortError as exc:
-                return exc
-            if reply.offset != len(data) or (not reply.data and len(data) < reply.total):
-                raise ProtocolError(f"{param.mnemonic}: segmented read out of step")
-            data += reply.data
-            if len(data) >= reply.total:
-                return _decode(param, bytes(data[: reply.total]))
-
-    def _write_entries(
-        self,
-        params: Sequence[Parameter],
-        values: Mapping[str, Value],
-        steps: _Steps | None = None,
-        cancel: threading.Event | None = None,
-    ) -> int:
-        by_key = {p.key: p for p in params}
-        encoded = [(p.index, p.subindex, p.dtype.encode(values[p.mnemonic])) for p in params]
-        done = 0
-        for batch in pack_writes([e for e in encoded if not by_key[e[:2]].is_string]):
-            _check_cancel(cancel, "write")
-            done = self._write_batch(batch, by_key, done)
-            if steps:
-                steps.advance(len(batch.entries))
-        for index, subindex, data in (e for e in encoded if by_key[e[:2]].is_string):
-            _check_cancel(cancel, "write")
-            for piece in segments(index, subindex, data):
-                try:
-                    self._call(piece, SegmentWriteReply)
-                except SdoAbortError as exc:
-                    raise _RefusedError(by_key[(index, subindex)].mnemonic, exc, done) from exc
-            done += 1
-            if steps:
-                steps.advance(1)
-        return done
-
-    def _write_batch(self, batch: WriteEntries, by_key: dict, done: int) -> int:
-        try:
-            reply = self._call(batch, WriteReply)
-        except SdoAbortError as exc:
-            param = by_key.get((exc.index, exc.subindex))
-            if param is None:
-                raise
-            position = next(i for i, e in enumerate(batch.entries) if e[:2] == param.key)
-            raise _RefusedError(param.mnemonic, exc, done + position) from exc
-        if reply.count != len(batch.entries):
-            raise ProtocolError(f"the valve wrote {reply.count} of {len(batch.entries)} entries")
-        return done + reply.count
-
-
-class _RefusedError(Exception):
-    """Internal: the valve refused one entry of an upload."""
-
-    def __init__(self, mnemonic: str, error: SdoAbortError, done: int) -> None:
-        super().__init__(mnemonic)
-        self.mnemonic, self.error, self.done = mnemonic, error, done
-
-
-class _Steps:
-    """Progress of one step of an operation, as ``progress(done, total, step)`` calls."""
-
-    def __init__(self, progress: Progress | None, total: int, done: int, step: str) -> None:
-        self.progress, self.total, self.done, self.step = progress, total, done, step
-
-    def advance(self, count: int) -> None:
-        """``count`` more entries are done."""
-        self.done += count
-        if self.progress is not None:
-            self.progress(self.done, self.total, self.step)
-
-
-def _decode(param: Parameter, value: bytes | int) -> Value | SdoAbortError:
-    if isinstance(value, int):
-        return SdoAbortError(param.index, param.subindex, value)
-    try:
-        return param.dtype.decode(value)
-    except (struct.error, ValueError) as exc:
-        raise ProtocolError(
-            f"{param.mnemonic}: the valve sent {len(value)} bytes for a {param.dtype.name} ({exc})"
-        ) from exc
-
 
 def _shown(value: Value | SdoAbortError) -> Value:
     return str(value) if isinstance(value, SdoAbortError) else value
-
-
-def _check_cancel(cancel: threading.Event | None, step: str) -> None:
-    if cancel is not None and cancel.is_set():
-        raise OperationCancelledError(step)
 
 
 def _since(start: float) -> float:
