@@ -204,6 +204,29 @@ class ParameterDocument(QObject):
         self._saved = (self._type_key, dict(self._values))
         self._emit_modified()
 
+    def replace_with(self, other: ParameterDocument) -> None:
+        """Take over everything ``other`` holds (file opened, new valve type); not undoable.
+
+        The main window keeps one document object for its lifetime so that every view stays
+        connected to it; live values read from a valve are kept.
+        """
+        path_differs = self._path != other._path
+        self._type_key = other._type_key
+        self._values = dict(other._values)
+        self._path = other._path
+        self.source_serial = other.source_serial
+        self.source_firmware = other.source_firmware
+        self.unknown_entries = list(other.unknown_entries)
+        self.comments = {name: list(lines) for name, lines in other.comments.items()}
+        self.inline_comments = dict(other.inline_comments)
+        self._saved = (other._saved[0], dict(other._saved[1]))
+        self.type_key_changed.emit(str(self._type_key))
+        self.values_reset.emit()
+        self.validity_changed.emit()
+        if path_differs:
+            self.path_changed.emit(str(self._path) if self._path is not None else "")
+        self._emit_modified()
+
     def _emit_modified(self) -> None:
         if self.modified != self._was_modified:
             self._was_modified = self.modified

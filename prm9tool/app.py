@@ -1,0 +1,149 @@
+"""The composition root of the GUI: application, settings, translations, models, main window.
+
+``prm9tool`` opens the window; ``prm9tool FILE.prm`` opens a file; ``prm9tool --emulator
+[TYPEKEY]`` starts online with an emulated valve. Heavy modules (the device layer, pyqtgraph,
+the views) are imported here, lazily, so the command-line tools never load them.
+"""
+
+from __future__ import annotations
+
+import argparse
+import sys
+from collections.abc import Callable
+from dataclasses import dataclass
+from pathlib import Path
+from typing import TYPE_CHECKING
+
+from prm9tool.cli import ExitCode
+
+if TYPE_CHECKING:
+    from PySide6.QtWidgets import QApplication
+
+    from prm9tool.views.main_window import MainWindow
+
+DEFAULT_EMULATOR_TYPE_KEY = "PRM9-06.3Z11/30-24E02S02-CA"
+DEFAULT_EMULATOR_SERIAL = 1001
+
+
+@dataclass
+class StartPlan:
+    """What to do after the window is shown."""
+
+    file: Path | None
+    emulators: list[str]
+    devices: list[str]
+
+
+def plan_from(args: argparse.Namespace) -> StartPlan:
+    """Read the GUI-relevant options of the command line."""
+    emulators = [
+        _emulator_spec(spec) for spec in (getattr(args, "emulator", None) or []) if spec is not None
+    ]
+    file = Path(args.file) if getattr(args, "file", None) else None
+    return StartPlan(file, emulators, list(getattr(args, "device", None) or []))
+
+
+def _emulator_spec(spec: str) -> str:
+    """``TYPEKEY[:SERIAL]`` with the defaults filled in."""
+    key, _, serial = (spec or DEFAULT_EMULATOR_TYPE_KEY).partition(":")
+    return f"{key or DEFAULT_EMULATOR_TYPE_KEY}:{serial or DEFAULT_EMULATOR_SERIAL}"
+
+
+def create_application(argv: list[str] | None = None) -> QApplication:
+    """The QApplication (reused if one exists), with names for QSettings."""
+    from PySide6.QtCore import QCoreApplication
+    from PySide6.QtWidgets import QApplication
+
+    QCoreApplication.setOrganizationName("prm9tool")
+    QCoreApplication.setApplicationName("prm9tool")
+    from prm9tool import __version__
+
+    QCoreApplication.setApplicationVersion(__version__)
+    app = QApplication.instance() or QApplication(argv or sys.argv[:1])
+    assert isinstance(app, QApplication)
+    return app
+
+
+def create_window(args: argparse.Namespace) -> MainWindow:
+    """Build models and the main window for ``args`` (the application must exist)."""
+    from PySide6.QtCore import QSettings
+
+    from prm9tool import i18n
+    from prm9tool.access import AccessModel
+    from prm9tool.connection import ValveConnection
+    from prm9tool.document import ParameterDocument
+    from prm9tool.undo import DocumentUndo
+    from prm9tool.views.main_window import MainWindow
+    from prm9tool.views.valve_selection import DEFAULT_TYPE_KEY
+
+    settings = QSettings()
+    language = str(settings.value("language", i18n.system_language()))
+    i18n.set_language(language if language in i18n.LANGUAGES else i18n.DEFAULT_LANGUAGE)
+    doc = ParameterDocument(DEFAULT_TYPE_KEY)
+    undo = DocumentUndo(doc)
+    connection = ValveConnection(opener=_opener(args), lister=_lister)
+    return MainWindow(doc, undo, AccessModel(), connection, settings)
+
+
+def start(window: MainWindow, plan: StartPlan) -> None:
+    """Open the file and/or go online, as the command line asked."""
+    if plan.file is not None:
+        window.files.open_path(plan.file, ask=False)
+    if plan.emulators:
+        from prm9tool.views.hid_dialog import SELECTED_KEY, saved_emulators
+
+        known = saved_emulators(window.settings)
+        window.settings.setValue(
+            "hid/emulators", known + [e for e in plan.emulators if e not in known]
+        )
+        entries = window.connection.list_devices(plan.emulators)
+        wanted = [e for e in entries if getattr(e, "kind", "") == "emulator"]
+        if wanted:
+            window.settings.setValue(SELECTED_KEY, str(getattr(wanted[0], "device_id", "")))
+            window.valve.go_online(wanted[0])
+    elif plan.devices:
+        entries = window.connection.list_devices(())
+        wanted = [e for e in entries if _matches(e, plan.devices[0])]
+        if wanted:
+            window.valve.go_online(wanted[0])
+        else:
+            window.status.showMessage(f"--device {plan.devices[0]}: no such valve", 10000)
+
+
+def _matches(entry: object, wanted: str) -> bool:
+    return wanted in (str(getattr(entry, "device_id", "")), str(getattr(entry, "serial", "")))
+
+
+def _opener(args: argparse.Namespace) -> Callable[[object], object]:
+    """Open sessions through the one device factory, with the command line's CAN options."""
+
+    def open_session(entry: object) -> object:
+        from prm9tool.device import factory
+
+        can = _can_options(args, factory)
+        return factory.open_session(entry, paced=True, can=can)  # type: ignore[arg-type]
+
+    return open_session
+
+
+def _can_options(args: argparse.Namespace, factory: object) -> object | None:
+    options = getattr(factory, "CanOptions", None)
+    if options is None or not hasattr(args, "can_interface"):
+        return None
+    return options(interface=args.can_interface, channel=args.can_channel, bitrate=args.can_bitrate)
+
+
+def _lister(emulators: object) -> list[object]:
+    from prm9tool.device import factory
+
+    return list(factory.list_devices(emulators))  # type: ignore[arg-type]
+
+
+def run(args: argparse.Namespace) -> int:
+    """Start the GUI; returns the exit code."""
+    app = create_application()
+    window = create_window(args)
+    window.show()
+    start(window, plan_from(args))
+    code = app.exec()
+    return ExitCode.OK if code == 0 else int(code)

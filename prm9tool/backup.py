@@ -1,0 +1,69 @@
+"""Backups of a valve's own parameters, taken before the first upload to that valve.
+
+The manual (§8.7.1) recommends saving the valve's data to a *.prm file before the first
+change; the program does it automatically: before uploading to a valve whose serial number
+has no backup yet, it downloads the valve's parameters into
+``<user data dir>/backups/<serial>/<type key>_<serial>_<date-time>.prm``. No Qt.
+"""
+
+from __future__ import annotations
+
+import os
+import sys
+import threading
+from collections.abc import Callable, Mapping
+from datetime import datetime
+from pathlib import Path
+from typing import Any
+
+from prm9tool.prmfile import PrmContents, write_file
+from prm9tool.typekey import TypeKey
+
+Progress = Callable[[int, int, str], None]
+
+
+def user_data_dir() -> Path:
+    """prm9tool's data folder (``PRM9TOOL_DATA_DIR`` overrides the platform default)."""
+    override = os.environ.get("PRM9TOOL_DATA_DIR")
+    if override:
+        return Path(override)
+    if sys.platform.startswith("win"):
+        base = os.environ.get("LOCALAPPDATA") or str(Path.home() / "AppData" / "Local")
+        return Path(base) / "prm9tool"
+    base = os.environ.get("XDG_DATA_HOME") or str(Path.home() / ".local" / "share")
+    return Path(base) / "prm9tool"
+
+
+def backup_dir(serial: int) -> Path:
+    """Folder of the backups of the valve with ``serial``."""
+    return user_data_dir() / "backups" / str(serial)
+
+
+def existing_backups(serial: int) -> list[Path]:
+    """Backups of that valve, oldest first."""
+    folder = backup_dir(serial)
+    return sorted(folder.glob("*.prm")) if folder.is_dir() else []
+
+
+def write_backup(
+    type_key: str, serial: int, firmware: str, values: Mapping[str, int | str]
+) -> Path:
+    """Write a backup file; raises FileFormatError (nothing written) if that fails."""
+    key = TypeKey.parse(type_key)
+    stamp = datetime.now().strftime("%Y%m%d-%H%M%S")
+    path = backup_dir(serial) / f"{str(key).replace('/', '_')}_{serial}_{stamp}.prm"
+    path.parent.mkdir(parents=True, exist_ok=True)
+    contents = PrmContents(key, dict(values), serial, firmware or None)
+    write_file(contents, path, backup=False)
+    return path
+
+
+def ensure_backup(
+    session: Any, progress: Progress | None = None, cancel: threading.Event | None = None
+) -> Path | None:
+    """Back up the session's valve unless it has a backup already; returns the new file."""
+    info = session.info
+    if existing_backups(info.serial):
+        return None
+    values = session.download(progress, cancel)
+    return write_backup(info.type_key, info.serial, info.firmware, values)

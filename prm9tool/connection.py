@@ -1,0 +1,503 @@
+"""The valve connection: runs a valve session in a worker thread and reports through Qt signals.
+
+One worker thread owns the session; the GUI thread only queues jobs (go online, write, upload,
+…) and receives results as signals, so the GUI never blocks on the valve. Between jobs the
+worker polls the valve: status (≈ 2 Hz), read-only live values, watched measuring points
+(≈ 4 Hz) and the oscilloscope stream. A communication error ends the session: the connection
+reports ``lost`` and is offline afterwards. QtCore only; the device layer is imported lazily.
+"""
+
+from __future__ import annotations
+
+import logging
+import queue
+import threading
+import time
+from collections.abc import Callable, Mapping, Sequence
+from dataclasses import dataclass
+from typing import Any
+
+from PySide6.QtCore import QObject, Qt, Signal
+
+from prm9tool.backup import ensure_backup
+from prm9tool.catalogue import CATALOGUE
+from prm9tool.errors import CommunicationError, Prm9Error, SdoAbortError
+from prm9tool.signals import MAX_CHANNELS, signals_for
+
+log = logging.getLogger(__name__)
+
+Opener = Callable[[object], Any]  # entry -> ValveSession
+Lister = Callable[[Sequence[str]], list[Any]]  # emulator specs -> [DeviceEntry]
+LIVE_GROUPS = ("identity", "live", "current_limit", "process_values", "ext_sensor_data")
+STATUS_PERIOD_S = 0.5
+SIGNAL_PERIOD_S = 0.25
+IDLE_TICK_S = 0.05
+STREAM_TICK_S = 0.02
+PROGRESS_PERIOD_S = 0.05
+WATCH_RATE_HZ = 250  # the slow stream that refreshes the diagram's measuring points
+
+
+@dataclass
+class _Job:
+    name: str
+    run: Callable[[Any], object]  # session -> result (runs in the worker)
+    on_done: Callable[[object], None] | None = None  # result -> None (runs in the GUI thread)
+    report: bool = True  # emit operation_finished(name, result)
+    on_error: Callable[[], None] | None = None  # runs in the GUI thread after a failure
+
+
+class ValveConnection(QObject):
+    """Online/offline state and asynchronous operations on one valve (see gui_contracts.md)."""
+
+    online_changed = Signal(bool)
+    device_changed = Signal(object)  # DeviceInfo or None
+    status_changed = Signal(object)  # ValveStatus
+    live_values_changed = Signal(dict)  # {mnemonic: raw}
+    signal_values_changed = Signal(dict)  # {measuring-point key: raw}
+    samples_received = Signal(object)  # numpy (n, k) raw block, in stream key order
+    stream_started = Signal(list)
+    stream_stopped = Signal()
+    failed = Signal(str)
+    lost = Signal(str)
+    progress = Signal(int, int, str)
+    operation_finished = Signal(str, object)
+    busy_changed = Signal(bool)
+    write_failed = Signal(list)  # mnemonics whose write failed (the valve state is unknown)
+    backup_written = Signal(str)  # path of the backup taken before the first upload
+    _posted = Signal(object)  # a callable the GUI thread runs (results of the worker)
+
+    def __init__(
+        self,
+        opener: Opener | None = None,
+        lister: Lister | None = None,
+        parent: QObject | None = None,
+    ) -> None:
+        super().__init__(parent)
+        self._opener = opener or _default_opener
+        self._lister = lister or _default_lister
+        self._jobs: queue.Queue[_Job | None] = queue.Queue()
+        self._thread: threading.Thread | None = None
+        self._cancel = threading.Event()
+        self._session: Any = None  # touched by the worker thread only
+        self._online = False
+        self._device: object | None = None
+        self._busy = 0
+        self._live_mnemonics: list[str] = []
+        self._live_explicit = False
+        self._last_progress = 0.0
+        self._watched: list[str] = []
+        self._stream_keys: list[str] = []
+        self._last_stream_row: dict[str, float] = {}
+        self._watch_chunk: list[str] = []  # measuring points of the running "watch" stream
+        self._watch_index = 0
+        self._signal_keys: set[str] = set()  # measuring points of the connected variant
+        self._posted.connect(self._on_posted, Qt.ConnectionType.QueuedConnection)
+
+    # --- state --------------------------------------------------------------------------------
+    @property
+    def is_online(self) -> bool:
+        """True while a session is open."""
+        return self._online
+
+    @property
+    def device(self) -> object | None:
+        """The DeviceInfo of the connected valve, or None."""
+        return self._device
+
+    @property
+    def is_busy(self) -> bool:
+        """True while a long operation (upload, download, …) runs."""
+        return self._busy > 0
+
+    @property
+    def streaming_keys(self) -> list[str]:
+        """The measuring points of the running stream ([] when none runs)."""
+        return list(self._stream_keys)
+
+    def list_devices(self, emulators: Sequence[str] = ()) -> list[Any]:
+        """Connected valves plus the emulated valves ``emulators`` ("TYPEKEY[:SERIAL]")."""
+        return self._lister(emulators)
+
+    # --- commands (GUI thread) ------------------------------------------------------------------
+    def go_online(self, entry: object) -> None:
+        """Open a session to ``entry`` (a DeviceEntry or device-id string)."""
+        if self._online:
+            self.failed.emit(self.tr("Already online; go offline first."))
+            return
+        self._ensure_worker()
+        self._submit(_Job("online", lambda _s: self._open(entry), self._on_opened, False))
+
+    def go_offline(self) -> None:
+        """Close the session (the stream stops); online_changed(False) follows."""
+        if self._online:
+            self._cancel.set()
+            self._submit(_Job("offline", lambda _s: self._close(), self._on_closed, False))
+
+    def write(self, mnemonic: str, raw: int | str) -> None:
+        """Write one value to the valve; failures arrive as ``failed`` and ``write_failed``."""
+        self.write_many({mnemonic: raw})
+
+    def write_many(self, values: Mapping[str, int | str]) -> None:
+        """Write values to the valve; failures arrive as ``failed`` and ``write_failed``."""
+        values = dict(values)
+        names = list(values)
+
+        def run(session: Any) -> None:
+            if len(values) == 1:
+                session.write(names[0], values[names[0]])
+            else:
+                session.write_many(values)
+
+        self._submit(
+            _Job("write", run, None, False, on_error=lambda: self.write_failed.emit(names))
+        )
+
+    def store(self) -> None:
+        """Copy the valve's working values to its non-volatile memory."""
+        self._long_job("store", lambda s: s.store())
+
+    def read_many(self, mnemonics: Sequence[str], tag: str = "read") -> None:
+        """Read values; the result arrives as operation_finished(tag, {mnemonic: raw})."""
+        names = list(mnemonics)
+        self._submit(_Job(tag, lambda s: s.read_many(names)))
+
+    def upload(self, values: Mapping[str, int | str], backup: bool = True) -> None:
+        """Write → read back and compare → store; result: operation_finished("upload", …).
+
+        With ``backup``, a valve that has no backup yet is downloaded into one first
+        (``backup_written`` reports the file).
+        """
+        values = dict(values)
+
+        def run(session: Any) -> object:
+            if backup:
+                path = ensure_backup(session, self._progress, self._cancel)
+                if path is not None:
+                    self._post(lambda: self.backup_written.emit(str(path)))
+            return session.upload(values, self._progress, self._cancel)
+
+        self._long_job("upload", run)
+
+    def download(self, tag: str = "download") -> None:
+        """Read the valve's file parameters; result: operation_finished(tag, {mnemonic: raw})."""
+        self._long_job(tag, lambda s: s.download(self._progress, self._cancel))
+
+    def run_job(self, name: str, work: Callable[[Any], object]) -> None:
+        """Run ``work(session)`` as a long operation; result: operation_finished(name, …)."""
+        self._long_job(name, work)
+
+    def cancel(self) -> None:
+        """Ask the running long operation to stop at the next safe point."""
+        self._cancel.set()
+
+    def restore_factory(self) -> None:
+        """Reset the valve to its factory values; result: operation_finished("restore_factory")."""
+        self._long_job("restore_factory", lambda s: s.restore_factory())
+
+    def restart(self) -> None:
+        """Restart the valve electronics; result: operation_finished("restart", None)."""
+        self._long_job("restart", lambda s: s.restart())
+
+    def start_stream(self, keys: Sequence[str], rate_hz: int) -> None:
+        """Stream up to three measuring points; samples arrive as ``samples_received``."""
+        names = list(keys)
+
+        def run(session: Any) -> list[str]:
+            self._stop_watch(session)
+            if self._stream_keys:
+                session.stream_stop()
+            session.stream_start(names, rate_hz)
+            self._stream_keys = names
+            return names
+
+        self._submit(_Job("stream_start", run, lambda keys: self.stream_started.emit(keys), False))
+
+    def stop_stream(self) -> None:
+        """Stop the stream (``stream_stopped`` follows)."""
+        self._submit(_Job("stream_stop", self._stop_stream, self._on_stream_stopped, False))
+
+    def watch_signals(self, keys: Sequence[str]) -> None:
+        """Measuring points whose values ``signal_values_changed`` carries (≈ 4 Hz)."""
+        self._watched = list(keys)
+
+    def watch_live(self, mnemonics: Sequence[str]) -> None:
+        """Read-only values polled for ``live_values_changed`` (default: the variant's)."""
+        self._live_mnemonics = list(mnemonics)
+        self._live_explicit = True
+
+    def shutdown(self, timeout_s: float = 3.0) -> None:
+        """Close the session and end the worker thread (application exit)."""
+        if self._thread is None:
+            return
+        self._cancel.set()
+        self._jobs.put(None)
+        self._thread.join(timeout_s)
+        self._thread = None
+
+    # --- GUI-thread helpers --------------------------------------------------------------------
+    def _submit(self, job: _Job) -> None:
+        if job.name not in ("online",) and not self._online:
+            self.failed.emit(self.tr("Not connected to a valve."))
+            return
+        self._jobs.put(job)
+
+    def _long_job(self, name: str, run: Callable[[Any], object]) -> None:
+        if not self._online:
+            self.failed.emit(self.tr("Not connected to a valve."))
+            return
+        self._cancel.clear()
+        self._set_busy(+1)
+        done = lambda: self._set_busy(-1)  # noqa: E731
+        self._jobs.put(_Job(name, run, lambda _r: done(), on_error=done))
+
+    def _set_busy(self, delta: int) -> None:
+        was = self.is_busy
+        self._busy = max(0, self._busy + delta)
+        if was != self.is_busy:
+            self.busy_changed.emit(self.is_busy)
+
+    def _post(self, action: Callable[[], None]) -> None:
+        self._posted.emit(action)
+
+    def _on_posted(self, action: object) -> None:
+        assert callable(action)
+        action()
+
+    def _ensure_worker(self) -> None:
+        if self._thread is None:
+            self._thread = threading.Thread(target=self._worker_main, name="valve", daemon=True)
+            self._thread.start()
+
+    def _on_opened(self, info: object) -> None:
+        self._online = True
+        self._device = info
+        self.device_changed.emit(info)
+        self.online_changed.emit(True)
+
+    def _on_closed(self, _result: object = None) -> None:
+        if not self._online:
+            return
+        self._online = False
+        self._device = None
+        self._busy = 0
+        self.busy_changed.emit(False)
+        if self._stream_keys:
+            self._stream_keys = []
+            self.stream_stopped.emit()
+        self.device_changed.emit(None)
+        self.online_changed.emit(False)
+
+    def _on_stream_stopped(self, _result: object) -> None:
+        self.stream_stopped.emit()
+
+    # --- worker thread -------------------------------------------------------------------------
+    def _worker_main(self) -> None:
+        next_status = next_signals = 0.0
+        while True:
+            tick = STREAM_TICK_S if self._stream_keys else IDLE_TICK_S
+            try:
+                job = self._jobs.get(timeout=tick)
+            except queue.Empty:
+                job = _IDLE
+            if job is None:
+                self._close()
+                return
+            if job is not _IDLE:
+                self._execute(job)
+                continue
+            if self._session is None:
+                continue
+            now = time.monotonic()
+            poll_status, poll_signals = now >= next_status, now >= next_signals
+            if poll_status:
+                next_status = now + STATUS_PERIOD_S
+            if poll_signals:
+                next_signals = now + SIGNAL_PERIOD_S
+            self._guarded(lambda s=poll_status, g=poll_signals: self._poll(s, g))
+
+    def _execute(self, job: _Job) -> None:
+        def run() -> None:
+            if job.name != "online" and self._session is None:
+                raise CommunicationError("The valve is not connected.")
+            result = job.run(self._session)
+            self._post(lambda: self._finish(job, result))
+
+        if not self._guarded(run) and job.on_error is not None:
+            self._post(job.on_error)
+
+    def _finish(self, job: _Job, result: object) -> None:
+        if job.on_done is not None:
+            job.on_done(result)
+        if job.report:
+            self.operation_finished.emit(job.name, result)
+
+    def _guarded(self, work: Callable[[], None]) -> bool:
+        """Run ``work``; turn errors into signals. Returns False if it failed."""
+        try:
+            work()
+        except CommunicationError as exc:
+            self._close()
+            message = str(exc)
+            self._post(lambda: self._report_lost(message))
+            return False
+        except Prm9Error as exc:
+            message = str(exc)
+            self._post(lambda: self.failed.emit(message))
+            return False
+        except Exception as exc:  # a bug must not kill the worker thread
+            log.exception("valve worker")
+            message = f"{type(exc).__name__}: {exc}"
+            self._post(lambda: self.failed.emit(message))
+            return False
+        return True
+
+    def _report_lost(self, message: str) -> None:
+        if self._online:
+            self._on_closed()
+            self.lost.emit(message)
+        else:
+            self.failed.emit(message)
+
+    def _open(self, entry: object) -> object:
+        self._cancel.clear()
+        self._session = self._opener(entry)
+        info = self._session.identify()
+        self._stream_keys = []
+        self._watch_chunk = []
+        self._signal_keys = _signal_keys_for(info)
+        if not self._live_explicit:
+            self._live_mnemonics = _live_mnemonics_for(info)
+        return info
+
+    def _close(self) -> None:
+        session, self._session = self._session, None
+        self._stream_keys = []
+        self._watch_chunk = []
+        if session is not None:
+            try:
+                session.close()
+            except Prm9Error as exc:  # closing a broken link must not raise
+                log.debug("closing the session failed: %s", exc)
+
+    def _stop_stream(self, session: Any) -> None:
+        if self._stream_keys:
+            self._stream_keys = []
+            session.stream_stop()
+
+    def _progress(self, done: int, total: int, step: str) -> None:
+        now = time.monotonic()
+        if done < total and now - self._last_progress < PROGRESS_PERIOD_S:
+            return
+        self._last_progress = now
+        self._post(lambda: self.progress.emit(done, total, step))
+
+    def _poll(self, status: bool, signals: bool) -> None:
+        session = self._session
+        if self._stream_keys:
+            block = session.stream_read()
+            if len(block):
+                keys = self._stream_keys
+                self._last_stream_row = {k: float(v) for k, v in zip(keys, block[-1], strict=False)}
+                self._post(lambda: self.samples_received.emit(block))
+        if status:
+            valve_status = session.status()
+            self._post(lambda: self.status_changed.emit(valve_status))
+            live = self._read_live(session)
+            if live:
+                self._post(lambda: self.live_values_changed.emit(live))
+        if signals and (self._watched or self._watch_chunk):
+            values = self._read_signals(session, self._watched)
+            if values:
+                self._post(lambda: self.signal_values_changed.emit(values))
+
+    def _read_live(self, session: Any) -> dict[str, int | str]:
+        """Read the live values; one the valve refuses is dropped from the list, not retried."""
+        names = list(self._live_mnemonics)
+        if not names:
+            return {}
+        try:
+            return dict(session.read_many(names))
+        except SdoAbortError as exc:
+            refused = CATALOGUE.by_address(exc.index, exc.subindex)
+            log.info("live value refused, no longer polled: %s", exc)
+            if refused is None:
+                self._live_mnemonics = []
+            else:
+                self._live_mnemonics = [n for n in names if n != refused.mnemonic]
+            return {}
+
+    def _read_signals(self, session: Any, keys: list[str]) -> dict[str, float]:
+        """Latest values of watched measuring points.
+
+        The valve reports measuring points only in its stream (at most three at once). While
+        the oscilloscope streams, its samples serve; otherwise a slow "watch" stream visits
+        the watched points three at a time, so each one is refreshed every few ticks.
+        """
+        if self._stream_keys:
+            return {k: v for k, v in self._last_stream_row.items() if k in keys}
+        values: dict[str, float] = {}
+        if self._watch_chunk:
+            block = session.stream_read()
+            if len(block):
+                values = {k: float(v) for k, v in zip(self._watch_chunk, block[-1], strict=True)}
+        chunk = self._next_watch_chunk(keys)
+        if chunk:
+            session.stream_start(chunk, WATCH_RATE_HZ)
+        elif self._watch_chunk:
+            session.stream_stop()
+        self._watch_chunk = chunk
+        return values
+
+    def _next_watch_chunk(self, keys: list[str]) -> list[str]:
+        usable = [k for k in keys if k in self._signal_keys]
+        if not usable:
+            return []
+        start = self._watch_index % len(usable)
+        self._watch_index = start + MAX_CHANNELS
+        return [usable[(start + i) % len(usable)] for i in range(min(MAX_CHANNELS, len(usable)))]
+
+    def _stop_watch(self, session: Any) -> None:
+        if self._watch_chunk:
+            self._watch_chunk = []
+            session.stream_stop()
+
+
+_IDLE = _Job("idle", lambda _s: None)
+
+
+def _live_mnemonics_for(info: object) -> list[str]:
+    """Read-only values worth polling on the connected valve's variant."""
+    from prm9tool.typekey import TypeKey
+
+    try:
+        variant = TypeKey.parse(str(getattr(info, "type_key", ""))).variant
+    except Prm9Error:
+        return ["PWR", "TEMP", "ERROR"]
+    return [
+        p.mnemonic
+        for p in CATALOGUE.for_variant(variant)
+        if p.group in LIVE_GROUPS and not p.in_file and p.dtype.size
+    ]
+
+
+def _signal_keys_for(info: object) -> set[str]:
+    """Measuring points that exist on the connected valve's variant."""
+    from prm9tool.typekey import TypeKey
+
+    try:
+        variant = TypeKey.parse(str(getattr(info, "type_key", ""))).variant
+    except Prm9Error:
+        return set()
+    return {s.key for s in signals_for(variant)}
+
+
+def _default_opener(entry: object) -> Any:
+    from prm9tool.device import factory
+
+    return factory.open_session(entry)  # type: ignore[arg-type]
+
+
+def _default_lister(emulators: Sequence[str]) -> list[Any]:
+    from prm9tool.device import factory
+
+    return list(factory.list_devices(emulators))

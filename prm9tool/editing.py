@@ -1,0 +1,40 @@
+"""User edits that depend on the access level (shared by the parameter list and the diagram).
+
+At Basic access level the four setpoint ramps are set together (manual §8.7.2, "Rampová
+funkce"): changing one ramp sets every ramp of the valve to that value as one undo step.
+"""
+
+from __future__ import annotations
+
+from prm9tool.access import AccessModel
+from prm9tool.catalogue import CATALOGUE, Access
+from prm9tool.document import ParameterDocument, Raw
+from prm9tool.errors import AccessDeniedError
+
+RAMPS: tuple[str, ...] = ("RAMPSETPOSUP", "RAMPSETPOSDOWN", "RAMPSETNEGUP", "RAMPSETNEGDOWN")
+
+
+def linked_mnemonics(doc: ParameterDocument, access: AccessModel, mnemonic: str) -> list[str]:
+    """The parameters an edit of ``mnemonic`` changes at the current level (itself, or all ramps)."""
+    if mnemonic in RAMPS and access.level is Access.BASIC:
+        return [mn for mn in RAMPS if mn in doc.values]
+    return [mnemonic]
+
+
+def apply_edit(doc: ParameterDocument, access: AccessModel, mnemonic: str, raw: Raw) -> None:
+    """Set ``mnemonic`` as the user at the current access level would; one undo step.
+
+    Raises AccessDeniedError if the level may not change it, ValueRangeError with the reason
+    if the value is not allowed. Nothing changes when an error is raised.
+    """
+    param = CATALOGUE[mnemonic]
+    if not access.may_edit(param):
+        raise AccessDeniedError(access.why_locked(param))
+    targets = linked_mnemonics(doc, access, mnemonic)
+    for target in targets:
+        doc.validate(target, raw)
+    if len(targets) == 1:
+        doc.set_value(mnemonic, raw)
+    else:
+        label = f"All ramps = {param.format_display(raw)} {param.unit}".rstrip()
+        doc.set_values(dict.fromkeys(targets, raw), label)

@@ -1,0 +1,111 @@
+"""Password dialogs of the Expert access level (manual §8.5, View / Access level)."""
+
+from __future__ import annotations
+
+from PySide6.QtWidgets import (
+    QDialog,
+    QDialogButtonBox,
+    QFormLayout,
+    QLabel,
+    QLineEdit,
+    QVBoxLayout,
+    QWidget,
+)
+
+from prm9tool.password import MIN_LENGTH, PasswordStore
+
+
+def _password_field() -> QLineEdit:
+    field = QLineEdit()
+    field.setEchoMode(QLineEdit.EchoMode.Password)
+    return field
+
+
+def _error_label() -> QLabel:
+    label = QLabel()
+    label.setStyleSheet("color: #d03030;")
+    label.setWordWrap(True)
+    label.hide()
+    return label
+
+
+class PasswordDialog(QDialog):
+    """Asks for the Expert password; accepts only the right one."""
+
+    def __init__(self, store: PasswordStore, parent: QWidget | None = None) -> None:
+        super().__init__(parent)
+        self._store = store
+        self.setWindowTitle(self.tr("Expert access level"))
+        self.password = _password_field()
+        self.error_label = _error_label()
+        intro = QLabel(
+            self.tr(
+                "The Expert level unlocks the controllers and the linearizations. "
+                "Changing them needs the appropriate qualification."
+            )
+        )
+        intro.setWordWrap(True)
+        buttons = QDialogButtonBox(
+            QDialogButtonBox.StandardButton.Ok | QDialogButtonBox.StandardButton.Cancel
+        )
+        buttons.accepted.connect(self._on_accepted)
+        buttons.rejected.connect(self.reject)
+        form = QFormLayout()
+        form.addRow(self.tr("Password:"), self.password)
+        layout = QVBoxLayout(self)
+        layout.addWidget(intro)
+        layout.addLayout(form)
+        layout.addWidget(self.error_label)
+        layout.addWidget(buttons)
+
+    def _on_accepted(self) -> None:
+        if self._store.check(self.password.text()):
+            self.accept()
+            return
+        self.error_label.setText(self.tr("Wrong password."))
+        self.error_label.show()
+        self.password.selectAll()
+
+
+class ChangePasswordDialog(QDialog):
+    """Changes the Expert password (offered only at Expert level)."""
+
+    def __init__(self, store: PasswordStore, parent: QWidget | None = None) -> None:
+        super().__init__(parent)
+        self._store = store
+        self.setWindowTitle(self.tr("Change Expert password"))
+        self.old = _password_field()
+        self.new = _password_field()
+        self.repeat = _password_field()
+        self.error_label = _error_label()
+        buttons = QDialogButtonBox(
+            QDialogButtonBox.StandardButton.Ok | QDialogButtonBox.StandardButton.Cancel
+        )
+        buttons.accepted.connect(self._on_accepted)
+        buttons.rejected.connect(self.reject)
+        form = QFormLayout()
+        form.addRow(self.tr("Current password:"), self.old)
+        form.addRow(self.tr("New password:"), self.new)
+        form.addRow(self.tr("Repeat new password:"), self.repeat)
+        layout = QVBoxLayout(self)
+        layout.addLayout(form)
+        layout.addWidget(self.error_label)
+        layout.addWidget(buttons)
+
+    def _problem(self) -> str:
+        if not self._store.check(self.old.text()):
+            return self.tr("The current password is wrong.")
+        if len(self.new.text()) < MIN_LENGTH:
+            return self.tr("The new password must have at least {0} characters.").format(MIN_LENGTH)
+        if self.new.text() != self.repeat.text():
+            return self.tr("The two new passwords differ.")
+        return ""
+
+    def _on_accepted(self) -> None:
+        problem = self._problem()
+        if problem:
+            self.error_label.setText(problem)
+            self.error_label.show()
+            return
+        self._store.change(self.old.text(), self.new.text())
+        self.accept()

@@ -1,0 +1,206 @@
+"""File workflows: new, open, save, save as, recent files, unsaved-changes prompt."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+from PySide6.QtCore import QObject, QSettings, Signal
+from PySide6.QtWidgets import QFileDialog, QMenu, QWidget
+
+from prm9tool import prmfile
+from prm9tool.document import ParameterDocument
+from prm9tool.errors import FileFormatError
+from prm9tool.typekey import TypeKey
+from prm9tool.undo import DocumentUndo
+from prm9tool.views import prompts
+
+MAX_RECENT = 8
+RECENT_KEY = "files/recent"
+FOLDER_KEY = "files/last_folder"
+
+
+class FileWorkflow(QObject):
+    """Everything the File menu does with the one document of the window."""
+
+    recent_changed = Signal()
+    message_posted = Signal(str)  # a short status-bar message
+
+    def __init__(
+        self,
+        window: QWidget,
+        doc: ParameterDocument,
+        undo: DocumentUndo,
+        settings: QSettings,
+    ) -> None:
+        super().__init__(window)
+        self._window = window
+        self._doc = doc
+        self._undo = undo
+        self._settings = settings
+
+    # --- settings ----------------------------------------------------------------------------
+    def last_folder(self) -> str:
+        """The folder of the last file opened or saved (home at first)."""
+        return str(self._settings.value(FOLDER_KEY, str(Path.home())))
+
+    def recent_files(self) -> list[str]:
+        """Most recently used files, newest first."""
+        value = self._settings.value(RECENT_KEY, [])
+        if isinstance(value, str):
+            value = [value]
+        return [str(v) for v in value or []]
+
+    def _remember(self, path: Path) -> None:
+        self._settings.setValue(FOLDER_KEY, str(path.parent))
+        files = [str(path)] + [f for f in self.recent_files() if f != str(path)]
+        self._settings.setValue(RECENT_KEY, files[:MAX_RECENT])
+        self.recent_changed.emit()
+
+    def _forget(self, path: str) -> None:
+        self._settings.setValue(RECENT_KEY, [f for f in self.recent_files() if f != path])
+        self.recent_changed.emit()
+
+    def fill_recent_menu(self, menu: QMenu) -> None:
+        """Rebuild the "Open recent" submenu."""
+        menu.clear()
+        for number, path in enumerate(self.recent_files(), start=1):
+            action = menu.addAction(f"&{number} {Path(path).name}")
+            action.setToolTip(path)
+            action.setStatusTip(path)
+            action.triggered.connect(lambda _checked=False, p=path: self.open_recent(p))
+        menu.setEnabled(bool(self.recent_files()))
+
+    # --- unsaved changes ---------------------------------------------------------------------------
+    def maybe_save(self) -> bool:
+        """Ask what to do with unsaved changes; False means the user cancelled."""
+        if not self._doc.modified:
+            return True
+        name = self._doc.path.name if self._doc.path else self.tr("untitled")
+        answer = prompts.ask(
+            self._window,
+            prompts.Icon.Warning,
+            self.tr("Unsaved changes"),
+            self.tr("The parameters in “{0}” have been changed. Save the changes?").format(name),
+            prompts.Button.Save | prompts.Button.Discard | prompts.Button.Cancel,
+            prompts.Button.Save,
+        )
+        if answer == prompts.Button.Save:
+            return self.save()
+        return answer == prompts.Button.Discard
+
+    # --- commands ------------------------------------------------------------------------------------
+    def new_document(self, type_key: TypeKey) -> bool:
+        """Replace the document by the factory defaults of ``type_key`` (asks first)."""
+        if not self.maybe_save():
+            return False
+        self._replace(ParameterDocument(type_key))
+        self.message_posted.emit(self.tr("New parameter set for {0}").format(str(type_key)))
+        return True
+
+    def open_dialog(self) -> bool:
+        """Ask for a file and open it."""
+        if not self.maybe_save():
+            return False
+        path, _filter = QFileDialog.getOpenFileName(
+            self._window,
+            self.tr("Open parameter file"),
+            self.last_folder(),
+            self.tr("Parameter files (*.prm);;All files (*)"),
+        )
+        return bool(path) and self.open_path(Path(path), ask=False)
+
+    def open_recent(self, path: str) -> bool:
+        """Open a file of the recent-files menu (forgotten if it no longer exists)."""
+        if not Path(path).exists():
+            self._forget(path)
+            prompts.inform(
+                self._window,
+                prompts.Icon.Warning,
+                self.tr("File not found"),
+                self.tr("“{0}” no longer exists; it was removed from the list.").format(path),
+            )
+            return False
+        return self.open_path(Path(path))
+
+    def open_path(self, path: Path, ask: bool = True) -> bool:
+        """Open ``path``; a broken file is reported with every problem and changes nothing."""
+        if ask and not self.maybe_save():
+            return False
+        try:
+            contents = prmfile.read_file(path)
+        except FileFormatError as exc:
+            self._report_file_error(self.tr("Cannot open “{0}”").format(path.name), exc)
+            return False
+        self._replace(prmfile.document_from(contents, path))
+        self._remember(path)
+        self.message_posted.emit(self.tr("Opened {0}").format(str(path)))
+        if contents.warnings:
+            prompts.inform(
+                self._window,
+                prompts.Icon.Information,
+                self.tr("Opened with warnings"),
+                self.tr(
+                    "“{0}” was opened; %n warning(s) were found.", "", len(contents.warnings)
+                ).format(path.name),
+                "\n".join(p.format(path.name) for p in contents.warnings),
+            )
+        return True
+
+    def save(self) -> bool:
+        """Save to the current file, or ask for a name if there is none."""
+        if self._doc.path is None:
+            return self.save_as()
+        return self.save_to(self._doc.path)
+
+    def save_as(self) -> bool:
+        """Ask for a file name and save there."""
+        suggestion = self._doc.path or Path(self.last_folder()) / self._suggested_name()
+        path, _filter = QFileDialog.getSaveFileName(
+            self._window,
+            self.tr("Save parameter file"),
+            str(suggestion),
+            self.tr("Parameter files (*.prm)"),
+        )
+        if not path:
+            return False
+        target = Path(path)
+        if target.suffix.lower() != ".prm":
+            target = target.with_name(target.name + ".prm")
+        return self.save_to(target)
+
+    def save_to(self, path: Path) -> bool:
+        """Save atomically to ``path``; errors are reported and nothing is lost."""
+        try:
+            prmfile.save_document(self._doc, path)
+        except FileFormatError as exc:
+            self._report_file_error(self.tr("Cannot save “{0}”").format(path.name), exc)
+            return False
+        self._remember(path)
+        self.message_posted.emit(self.tr("Saved {0}").format(str(path)))
+        return True
+
+    def _suggested_name(self) -> str:
+        key = str(self._doc.type_key).replace("/", "_")
+        serial = f"_{self._doc.source_serial}" if self._doc.source_serial else ""
+        return f"{key}{serial}.prm"
+
+    def _replace(self, new: ParameterDocument) -> None:
+        self._doc.replace_with(new)
+        self._undo.stack.clear()
+
+    def _report_file_error(self, title: str, exc: FileFormatError) -> None:
+        problems = exc.problems
+        first = problems[0].format(Path(exc.path).name) if problems else str(exc)
+        more = (
+            self.tr("%n more problem(s) in the details.", "", len(problems) - 1)
+            if len(problems) > 1
+            else ""
+        )
+        prompts.ask(
+            self._window,
+            prompts.Icon.Critical,
+            title,
+            f"{first}\n{more}".strip(),
+            prompts.Button.Ok,
+            details=str(exc) if len(problems) > 1 else "",
+        )

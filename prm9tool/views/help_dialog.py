@@ -1,0 +1,90 @@
+"""Help: the program's own help page (shipped HTML), the homepage, and About with versions."""
+
+from __future__ import annotations
+
+import platform
+from importlib import metadata
+from pathlib import Path
+
+from PySide6 import __version__ as pyside_version
+from PySide6.QtCore import QEvent, QUrl, qVersion
+from PySide6.QtGui import QDesktopServices
+from PySide6.QtWidgets import QDialog, QDialogButtonBox, QTextBrowser, QVBoxLayout, QWidget
+
+from prm9tool import __version__
+from prm9tool.i18n import current_language
+
+HELP_DIR = Path(__file__).resolve().parent.parent / "resources" / "help"
+HOMEPAGE = "https://www.argo-hytos.com"
+
+
+def help_file(language: str) -> Path:
+    """The help page in ``language`` (English if there is none in that language)."""
+    path = HELP_DIR / f"help_{language}.html"
+    return path if path.exists() else HELP_DIR / "help_en.html"
+
+
+class HelpWindow(QDialog):
+    """Shows the local help page; follows the program language."""
+
+    def __init__(self, parent: QWidget | None = None) -> None:
+        super().__init__(parent)
+        self.browser = QTextBrowser()
+        self.browser.setOpenExternalLinks(True)
+        buttons = QDialogButtonBox(QDialogButtonBox.StandardButton.Close)
+        buttons.rejected.connect(self.close)
+        layout = QVBoxLayout(self)
+        layout.addWidget(self.browser)
+        layout.addWidget(buttons)
+        self.resize(760, 640)
+        self.retranslate()
+
+    def retranslate(self) -> None:
+        """Load the page in the current language."""
+        self.setWindowTitle(self.tr("prm9tool help"))
+        path = help_file(current_language())
+        self.browser.setSearchPaths([str(path.parent)])
+        self.browser.setSource(QUrl.fromLocalFile(str(path)))
+
+    def changeEvent(self, event: QEvent) -> None:
+        """Reload when the program language changes."""
+        if event.type() == QEvent.Type.LanguageChange:
+            self.retranslate()
+        super().changeEvent(event)
+
+
+def open_homepage() -> bool:
+    """Open the manufacturer's homepage in the browser."""
+    return QDesktopServices.openUrl(QUrl(HOMEPAGE))
+
+
+def _version(package: str) -> str:
+    try:
+        return metadata.version(package)
+    except metadata.PackageNotFoundError:
+        return "—"
+
+
+def versions() -> list[tuple[str, str]]:
+    """(component, version) of the program and what it runs on."""
+    return [
+        ("prm9tool", __version__),
+        ("Python", platform.python_version()),
+        ("Qt", qVersion()),
+        ("PySide6", pyside_version),
+        ("pyqtgraph", _version("pyqtgraph")),
+        ("numpy", _version("numpy")),
+        ("hidapi", _version("hidapi")),
+        ("python-can", _version("python-can")),
+        (platform.system(), platform.release()),
+    ]
+
+
+def about_html(title: str, description: str, licence: str) -> str:
+    """The About text: description, versions, links."""
+    rows = "".join(f"<tr><td>{name}</td><td>{version}</td></tr>" for name, version in versions())
+    return (
+        f"<h3>{title}</h3><p>{description}</p><table>{rows}</table>"
+        f"<p>{licence}</p>"
+        f"<p><a href='{HOMEPAGE}'>{HOMEPAGE}</a></p>"
+    )

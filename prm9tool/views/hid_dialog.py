@@ -1,0 +1,219 @@
+"""HID configuration (manual §8.5, Communication): choose the valve to communicate with.
+
+Lists the valves connected over USB and the emulated valves the user added (type key and
+serial number). The emulated valves and the choice are remembered in QSettings.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Sequence
+
+from PySide6.QtCore import QEvent, QSettings, Qt
+from PySide6.QtWidgets import (
+    QAbstractItemView,
+    QDialog,
+    QDialogButtonBox,
+    QFormLayout,
+    QHBoxLayout,
+    QHeaderView,
+    QLabel,
+    QPushButton,
+    QSpinBox,
+    QTableWidget,
+    QTableWidgetItem,
+    QVBoxLayout,
+    QWidget,
+)
+
+from prm9tool.typekey import TypeKey
+from prm9tool.views.valve_selection import ValveSelectionDialog
+
+EMULATORS_KEY = "hid/emulators"
+SELECTED_KEY = "hid/selected"
+DEFAULT_EMULATOR = "PRM9-06.3Z11/30-24E02S02-CA:1001"
+Lister = Callable[[Sequence[str]], list[object]]
+
+
+def saved_emulators(settings: QSettings) -> list[str]:
+    """The emulated valves the user added ("TYPEKEY:SERIAL"); one default at first."""
+    value = settings.value(EMULATORS_KEY, None)
+    if value is None:
+        return [DEFAULT_EMULATOR]
+    if isinstance(value, str):
+        return [value] if value else []
+    return [str(v) for v in value]
+
+
+def describe(entry: object) -> list[str]:
+    """Table cells for a device entry: kind, type key, serial, firmware, description."""
+    kind = str(getattr(entry, "kind", ""))
+    return [
+        kind,
+        str(getattr(entry, "type_key", "")),
+        str(getattr(entry, "serial", "")),
+        str(getattr(entry, "firmware", "")),
+        str(getattr(entry, "description", "")),
+    ]
+
+
+class EmulatorDialog(QDialog):
+    """Add an emulated valve: type key (the valve-selection builder) and serial number."""
+
+    def __init__(self, parent: QWidget | None = None) -> None:
+        super().__init__(parent)
+        self.setWindowTitle(self.tr("Add emulated valve"))
+        self.selection = ValveSelectionDialog(TypeKey.parse(DEFAULT_EMULATOR.split(":")[0]), self)
+        self.selection.setWindowFlags(Qt.WindowType.Widget)
+        self.selection.buttons.hide()
+        self.serial = QSpinBox()
+        self.serial.setRange(1, 99_999_999)
+        self.serial.setValue(1002)
+        form = QFormLayout()
+        form.addRow(self.tr("Serial number:"), self.serial)
+        buttons = QDialogButtonBox(
+            QDialogButtonBox.StandardButton.Ok | QDialogButtonBox.StandardButton.Cancel
+        )
+        buttons.accepted.connect(self.accept)
+        buttons.rejected.connect(self.reject)
+        layout = QVBoxLayout(self)
+        layout.addWidget(self.selection)
+        layout.addLayout(form)
+        layout.addWidget(buttons)
+
+    def spec(self) -> str:
+        """``TYPEKEY:SERIAL`` of the emulated valve."""
+        return f"{self.selection.selected_type_key()}:{self.serial.value()}"
+
+
+class HidConfigurationDialog(QDialog):
+    """Lists connected and emulated valves; ``selected_entry()`` after ``accept``."""
+
+    def __init__(self, lister: Lister, settings: QSettings, parent: QWidget | None = None) -> None:
+        super().__init__(parent)
+        self._lister = lister
+        self._settings = settings
+        self._entries: list[object] = []
+        self.table = QTableWidget(0, 5)
+        self.table.setSelectionBehavior(QAbstractItemView.SelectionBehavior.SelectRows)
+        self.table.setSelectionMode(QAbstractItemView.SelectionMode.SingleSelection)
+        self.table.setEditTriggers(QAbstractItemView.EditTrigger.NoEditTriggers)
+        self.table.verticalHeader().hide()
+        self.table.horizontalHeader().setSectionResizeMode(QHeaderView.ResizeMode.Stretch)
+        self.table.horizontalHeader().setSectionResizeMode(
+            1, QHeaderView.ResizeMode.ResizeToContents
+        )
+        self.table.itemSelectionChanged.connect(self._on_selection_changed)
+        self.table.doubleClicked.connect(lambda _index: self.accept())
+        self.info = QLabel()
+        self.info.setWordWrap(True)
+        self.add_button = QPushButton()
+        self.remove_button = QPushButton()
+        self.refresh_button = QPushButton()
+        self.add_button.clicked.connect(self._on_add_clicked)
+        self.remove_button.clicked.connect(self._on_remove_clicked)
+        self.refresh_button.clicked.connect(self.refresh)
+        self.buttons = QDialogButtonBox(
+            QDialogButtonBox.StandardButton.Ok | QDialogButtonBox.StandardButton.Cancel
+        )
+        self.buttons.accepted.connect(self.accept)
+        self.buttons.rejected.connect(self.reject)
+        row = QHBoxLayout()
+        for button in (self.add_button, self.remove_button, self.refresh_button):
+            row.addWidget(button)
+        row.addStretch(1)
+        layout = QVBoxLayout(self)
+        layout.addWidget(self.info)
+        layout.addWidget(self.table)
+        layout.addLayout(row)
+        layout.addWidget(self.buttons)
+        self.resize(760, 320)
+        self.retranslate()
+        self.refresh()
+
+    def retranslate(self) -> None:
+        """Set every text in the current language."""
+        self.setWindowTitle(self.tr("HID configuration"))
+        self.info.setText(
+            self.tr(
+                "Valves connected to this computer and emulated valves. Choose the one to "
+                "communicate with."
+            )
+        )
+        self.table.setHorizontalHeaderLabels(
+            [
+                self.tr("Connection"),
+                self.tr("Type key"),
+                self.tr("Serial number"),
+                self.tr("Firmware"),
+                self.tr("Description"),
+            ]
+        )
+        self.add_button.setText(self.tr("Add emulated valve…"))
+        self.remove_button.setText(self.tr("Remove emulated valve"))
+        self.refresh_button.setText(self.tr("Refresh"))
+
+    def changeEvent(self, event: QEvent) -> None:
+        """Retranslate when the program language changes."""
+        if event.type() == QEvent.Type.LanguageChange:
+            self.retranslate()
+        super().changeEvent(event)
+
+    def refresh(self) -> None:
+        """List the valves again."""
+        try:
+            self._entries = list(self._lister(saved_emulators(self._settings)))
+        except Exception as exc:  # a broken USB stack must not prevent choosing an emulator
+            self._entries = []
+            self.info.setText(self.tr("Listing the valves failed: {0}").format(str(exc)))
+        self.table.setRowCount(len(self._entries))
+        selected = str(self._settings.value(SELECTED_KEY, ""))
+        for row, entry in enumerate(self._entries):
+            cells = describe(entry)
+            cells[0] = self._kind_text(cells[0])
+            for column, cell in enumerate(cells):
+                self.table.setItem(row, column, QTableWidgetItem(cell))
+            if str(getattr(entry, "device_id", "")) == selected:
+                self.table.selectRow(row)
+        if self._entries and not self.table.selectedItems():
+            self.table.selectRow(0)
+        self._on_selection_changed()
+
+    def _kind_text(self, kind: str) -> str:
+        return self.tr("Emulated valve") if kind == "emulator" else self.tr("USB")
+
+    def selected_entry(self) -> object | None:
+        """The chosen device entry (None if the list is empty)."""
+        rows = self.table.selectionModel().selectedRows()
+        return self._entries[rows[0].row()] if rows else None
+
+    def _on_selection_changed(self) -> None:
+        entry = self.selected_entry()
+        self.buttons.button(QDialogButtonBox.StandardButton.Ok).setEnabled(entry is not None)
+        self.remove_button.setEnabled(getattr(entry, "kind", "") == "emulator")
+
+    def accept(self) -> None:
+        """Remember the choice."""
+        entry = self.selected_entry()
+        if entry is None:
+            return
+        self._settings.setValue(SELECTED_KEY, str(getattr(entry, "device_id", "")))
+        super().accept()
+
+    def _on_add_clicked(self) -> None:
+        dialog = EmulatorDialog(self)
+        if dialog.exec() == QDialog.DialogCode.Accepted:
+            self.add_emulator(dialog.spec())
+
+    def add_emulator(self, spec: str) -> None:
+        """Add an emulated valve ``TYPEKEY:SERIAL`` to the list and select it."""
+        emulators = [e for e in saved_emulators(self._settings) if e != spec] + [spec]
+        self._settings.setValue(EMULATORS_KEY, emulators)
+        self.refresh()
+        self.table.selectRow(self.table.rowCount() - 1)
+
+    def _on_remove_clicked(self) -> None:
+        entry = self.selected_entry()
+        spec = f"{getattr(entry, 'type_key', '')}:{getattr(entry, 'serial', '')}"
+        emulators = [e for e in saved_emulators(self._settings) if e != spec]
+        self._settings.setValue(EMULATORS_KEY, emulators)
+        self.refresh()

@@ -1,0 +1,338 @@
+"""The main window (manual §8.4): menus, toolbar, the three views, status bar.
+
+The window composes the workflows (files, valve) and views; it holds no parameter state of its
+own. It keeps one document object for its whole life, so every view stays connected to it.
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+from PySide6.QtCore import QByteArray, QEvent, QSettings
+from PySide6.QtGui import QCloseEvent, QDragEnterEvent, QDropEvent
+from PySide6.QtWidgets import QMainWindow, QStackedWidget, QWidget
+
+from prm9tool import i18n
+from prm9tool.access import AccessModel
+from prm9tool.catalogue import Access
+from prm9tool.connection import ValveConnection
+from prm9tool.document import ParameterDocument
+from prm9tool.password import PasswordStore
+from prm9tool.sync import ValveSync
+from prm9tool.undo import DocumentUndo
+from prm9tool.views import prompts
+from prm9tool.views.access_dialog import ChangePasswordDialog, PasswordDialog
+from prm9tool.views.actions import MainActions
+from prm9tool.views.emcy import status_summary
+from prm9tool.views.file_workflow import FileWorkflow
+from prm9tool.views.help_dialog import HelpWindow, about_html, open_homepage
+from prm9tool.views.icons import icon
+from prm9tool.views.parameter_view import ParameterListView
+from prm9tool.views.record_actions import RecordActions
+from prm9tool.views.status_bar import MainStatusBar
+from prm9tool.views.valve_selection import ValveSelectionDialog
+from prm9tool.views.valve_status import ValveStatusWindow
+from prm9tool.views.valve_workflow import ValveWorkflow
+
+VIEWS = ("diagram", "parameters", "scope")
+VIEW_KEY = "window/view"
+
+
+class MainWindow(QMainWindow):
+    """prm9tool's main window."""
+
+    def __init__(
+        self,
+        doc: ParameterDocument,
+        undo: DocumentUndo,
+        access: AccessModel,
+        connection: ValveConnection,
+        settings: QSettings,
+        parent: QWidget | None = None,
+    ) -> None:
+        super().__init__(parent)
+        self.doc, self.undo, self.access = doc, undo, access
+        self.connection, self.settings = connection, settings
+        self.passwords = PasswordStore(settings)
+        self.sync = ValveSync(doc, connection, self)
+        self.files = FileWorkflow(self, doc, undo, settings)
+        self.valve = ValveWorkflow(self, doc, undo, connection, self.sync, settings)
+        self.records = RecordActions(self)
+        self.actions = MainActions(self)
+        self.actions.build_menus(self.menuBar())
+        self.actions.build_toolbar(self.addToolBar("toolbar"))
+        self.status = MainStatusBar(self)
+        self.setStatusBar(self.status)
+        self.parameter_view = ParameterListView(doc, access, self)
+        self.stack = QStackedWidget(self)
+        self.views: dict[str, QWidget] = {
+            "diagram": self._make_diagram_view(),
+            "parameters": self.parameter_view,
+            "scope": self._make_scope_view(),
+        }
+        for name in VIEWS:
+            self.stack.addWidget(self.views[name])
+        self.setCentralWidget(self.stack)
+        self.status_window: ValveStatusWindow | None = None
+        self.help_window: HelpWindow | None = None
+        self.canopen_window: QWidget | None = None
+        self.setWindowIcon(icon("app"))
+        self.setAcceptDrops(True)
+        self._connect_actions()
+        self._connect_models()
+        self._restore_settings()
+        self.retranslate()
+        self._update_actions()
+
+    # --- view factories (filled in by the diagram and oscilloscope work) ---------------------------
+    def _make_diagram_view(self) -> QWidget:
+        from prm9tool.views.diagram import DiagramView
+
+        view = DiagramView(self.doc, self.access, self.connection, self)
+        view.measuring_point_clicked.connect(self.open_scope)
+        return view
+
+    def _make_scope_view(self) -> QWidget:
+        from prm9tool.views.scope import ScopeWidget
+
+        return ScopeWidget(self.connection, self.doc, self)
+
+    def open_scope(self, key: str | None = None) -> None:
+        """Switch to the oscilloscope (online only) and preselect measuring point ``key``."""
+        if not self.connection.is_online:
+            self.status.showMessage(self.tr("The oscilloscope works in online mode only."), 5000)
+            return
+        self.show_view("scope")
+        scope = self.views["scope"]
+        if key and hasattr(scope, "preselect"):
+            scope.preselect(key)
+
+    def show_view(self, name: str) -> None:
+        """Show ``diagram``, ``parameters`` or ``scope`` in the main area."""
+        if name == "scope" and not self.connection.is_online:
+            name = "parameters" if self.current_view() == "scope" else self.current_view()
+        self.stack.setCurrentWidget(self.views[name])
+        self.actions[f"view_{name}"].setChecked(True)
+        self.settings.setValue(VIEW_KEY, name)
+
+    def current_view(self) -> str:
+        """Name of the view shown."""
+        return VIEWS[self.stack.currentIndex()]
+
+    # --- wiring --------------------------------------------------------------------------------------
+    def _connect_actions(self) -> None:
+        a = self.actions
+        handlers = {
+            "new": self.new_document,
+            "open": self.files.open_dialog,
+            "save": self.files.save,
+            "save_as": self.files.save_as,
+            "undo": self.undo.stack.undo,
+            "redo": self.undo.stack.redo,
+            "print": self.records.print_record,
+            "export_pdf": self.records.export_pdf_dialog,
+            "exit": self.close,
+            "view_diagram": lambda: self.show_view("diagram"),
+            "view_parameters": lambda: self.show_view("parameters"),
+            "view_scope": lambda: self.open_scope(),
+            "canopen": self.show_canopen_window,
+            "level_basic": lambda: self.access.set_level(Access.BASIC),
+            "level_expert": self.request_expert,
+            "change_password": self.change_password,
+            "valve_selection": self.new_document,
+            "valve_status": self.show_status_window,
+            "upload": self.valve.upload,
+            "download": self.valve.download,
+            "restore_factory": self.valve.restore_factory,
+            "restart": self.valve.restart,
+            "hid_configuration": self.valve.configure_hid,
+            "online": lambda: self.valve.go_online(),
+            "offline": self.valve.go_offline,
+            "help": self.show_help,
+            "homepage": open_homepage,
+            "about": self.show_about,
+        }
+        for name, handler in handlers.items():
+            a[name].triggered.connect(lambda _checked=False, h=handler: h())
+        for language, action in a.language_actions.items():
+            action.triggered.connect(lambda _checked=False, lang=language: self.set_language(lang))
+        a.menus["recent"].aboutToShow.connect(
+            lambda: self.files.fill_recent_menu(a.menus["recent"])
+        )
+
+    def _connect_models(self) -> None:
+        c, d, s = self.connection, self.doc, self.status
+        for signal in (c.online_changed, c.busy_changed, d.modified_changed, d.type_key_changed):
+            signal.connect(self._update_actions)
+        self.undo.stack.canUndoChanged.connect(self._update_actions)
+        self.undo.stack.canRedoChanged.connect(self._update_actions)
+        self.access.level_changed.connect(self._update_actions)
+        c.online_changed.connect(s.set_online)
+        c.online_changed.connect(self._on_connection_online_changed)
+        c.device_changed.connect(lambda info: s.set_firmware(str(getattr(info, "firmware", ""))))
+        c.status_changed.connect(lambda status: s.set_device_status(status_summary(status)))
+        d.type_key_changed.connect(s.set_type_key)
+        for signal in (d.modified_changed, d.path_changed):
+            signal.connect(self._show_file)
+        for source in (self.files, self.valve, self.records):
+            source.message_posted.connect(lambda text: s.showMessage(text, 8000))
+
+    def _on_connection_online_changed(self, online: bool) -> None:
+        if not online and self.current_view() == "scope":
+            self.show_view("parameters")
+
+    def _update_actions(self, *_args: object) -> None:
+        a, online, busy = self.actions, self.connection.is_online, self.connection.is_busy
+        ready = online and not busy
+        enabled = {
+            "save": self.doc.modified or self.doc.path is None,
+            "undo": self.undo.stack.canUndo(),
+            "redo": self.undo.stack.canRedo(),
+            "online": not online and not busy,
+            "offline": online,
+            "upload": ready,
+            "download": ready,
+            "restart": ready,
+            "restore_factory": not busy,
+            "view_scope": online,
+            "canopen": self.doc.variant.canopen,
+            "change_password": self.access.level is Access.EXPERT,
+            "valve_selection": not online,
+            "new": not online,
+            "open": not busy,
+        }
+        for name, value in enabled.items():
+            a[name].setEnabled(value)
+        a["level_expert" if self.access.level is Access.EXPERT else "level_basic"].setChecked(True)
+        a.language_actions[i18n.current_language()].setChecked(True)
+        self.status.set_type_key(str(self.doc.type_key))
+
+    def _show_file(self, *_args: object) -> None:
+        self.status.set_file(self.doc.path, self.doc.modified)
+        name = self.doc.path.name if self.doc.path else self.tr("untitled")
+        self.setWindowTitle(f"{name}[*] – prm9tool")
+        self.setWindowModified(self.doc.modified)
+
+    # --- commands ------------------------------------------------------------------------------------
+    def new_document(self) -> bool:
+        """Valve selection: a new document with the factory defaults of the chosen type key."""
+        dialog = ValveSelectionDialog(self.doc.type_key, self)
+        if dialog.exec() != ValveSelectionDialog.DialogCode.Accepted:
+            return False
+        return self.files.new_document(dialog.selected_type_key())
+
+    def request_expert(self) -> bool:
+        """Switch to Expert after the password dialog; stays at Basic if cancelled."""
+        accepted = PasswordDialog.DialogCode.Accepted
+        if self.access.level is not Access.EXPERT and self._ask_password() == accepted:
+            self.access.set_level(Access.EXPERT)
+        self._update_actions()
+        return self.access.level is Access.EXPERT
+
+    def _ask_password(self) -> int:
+        return PasswordDialog(self.passwords, self).exec()
+
+    def change_password(self) -> None:
+        """Change the Expert password (Expert level only)."""
+        if self.access.level is Access.EXPERT:
+            ChangePasswordDialog(self.passwords, self).exec()
+
+    def set_language(self, language: str) -> None:
+        """Switch the program language now and remember it."""
+        i18n.set_language(language)
+        self.settings.setValue("language", language)
+        self._update_actions()
+
+    def show_status_window(self) -> ValveStatusWindow:
+        """Show the (non-modal) valve status window."""
+        if self.status_window is None:
+            self.status_window = ValveStatusWindow(self.connection, self)
+        self.status_window.show()
+        self.status_window.raise_()
+        return self.status_window
+
+    def show_canopen_window(self) -> QWidget:
+        """Show the CANopen window of a -CA valve."""
+        if self.canopen_window is None:
+            from prm9tool.views.canopen_window import CanopenWindow
+
+            self.canopen_window = CanopenWindow(self.doc, self.connection, self)
+        self.canopen_window.show()
+        self.canopen_window.raise_()
+        return self.canopen_window
+
+    def show_help(self) -> HelpWindow:
+        """Show the help page of this program."""
+        if self.help_window is None:
+            self.help_window = HelpWindow(self)
+        self.help_window.show()
+        self.help_window.raise_()
+        return self.help_window
+
+    def show_about(self) -> None:
+        """Versions and contact."""
+        text = about_html(
+            self.tr("prm9tool"),
+            self.tr("Parameterization of PRM9 proportional directional valves."),
+            self.tr("Free software under the GNU General Public License v3 or later."),
+        )
+        prompts.ask(
+            self, prompts.Icon.Information, self.tr("About prm9tool"), text, prompts.Button.Ok
+        )
+
+    # --- language, settings, events ------------------------------------------------------------------
+    def retranslate(self) -> None:
+        """Set every text in the current language."""
+        self.actions.retranslate()
+        self._show_file()
+
+    def changeEvent(self, event: QEvent) -> None:
+        """Retranslate when the program language changes."""
+        if event.type() == QEvent.Type.LanguageChange:
+            self.retranslate()
+        super().changeEvent(event)
+
+    def _restore_settings(self) -> None:
+        geometry = self.settings.value("window/geometry")
+        if isinstance(geometry, QByteArray) and not geometry.isEmpty():
+            self.restoreGeometry(geometry)
+        else:
+            self.resize(1200, 800)
+        state = self.settings.value("window/state")
+        if isinstance(state, QByteArray):
+            self.restoreState(state)
+        view = str(self.settings.value(VIEW_KEY, "diagram"))
+        self.show_view(view if view in VIEWS and view != "scope" else "diagram")
+
+    def _save_settings(self) -> None:
+        self.settings.setValue("window/geometry", self.saveGeometry())
+        self.settings.setValue("window/state", self.saveState())
+
+    def closeEvent(self, event: QCloseEvent) -> None:
+        """Ask about unsaved changes, go offline, remember the window."""
+        if not self.files.maybe_save() or not self.valve.go_offline():
+            event.ignore()
+            return
+        self._save_settings()
+        self.connection.shutdown()
+        event.accept()
+
+    def dragEnterEvent(self, event: QDragEnterEvent) -> None:
+        """Accept *.prm files."""
+        if _dropped_prm(event) is not None:
+            event.acceptProposedAction()
+
+    def dropEvent(self, event: QDropEvent) -> None:
+        """Open a dropped *.prm file."""
+        path = _dropped_prm(event)
+        if path is not None:
+            event.acceptProposedAction()
+            self.files.open_path(path)
+
+
+def _dropped_prm(event: QDragEnterEvent | QDropEvent) -> Path | None:
+    mime = event.mimeData()
+    for url in mime.urls() if mime.hasUrls() else []:
+        if url.isLocalFile() and url.toLocalFile().lower().endswith(".prm"):
+            return Path(url.toLocalFile())
+    return None

@@ -1,0 +1,172 @@
+"""Edit one parameter: limits, unit, default and an input field (manual figure 8-19).
+
+The dialog refuses a value the document refuses and shows the reason; it closes only when
+the edit went through (as one undo step, or all four ramps at once at Basic level).
+"""
+
+from __future__ import annotations
+
+from PySide6.QtCore import QEvent
+from PySide6.QtWidgets import (
+    QComboBox,
+    QDialog,
+    QDialogButtonBox,
+    QFormLayout,
+    QLabel,
+    QLineEdit,
+    QVBoxLayout,
+    QWidget,
+)
+
+from prm9tool.access import AccessModel
+from prm9tool.catalogue import CATALOGUE, Access, Parameter
+from prm9tool.document import ParameterDocument, Raw
+from prm9tool.editing import apply_edit, linked_mnemonics
+from prm9tool.errors import AccessDeniedError, ValueRangeError
+from prm9tool.i18n import current_language, text
+
+
+class ParameterEditDialog(QDialog):
+    """Shows a parameter's limits and default and lets the user enter a new value."""
+
+    def __init__(
+        self,
+        doc: ParameterDocument,
+        access: AccessModel,
+        mnemonic: str,
+        parent: QWidget | None = None,
+    ) -> None:
+        super().__init__(parent)
+        self._doc = doc
+        self._access = access
+        self.param: Parameter = CATALOGUE[mnemonic]
+        self._editor: QLineEdit | QComboBox = self._make_editor()
+        self.error_label = QLabel()
+        self.error_label.setWordWrap(True)
+        self.error_label.setStyleSheet("color: #d03030;")
+        self.error_label.hide()
+        self._labels = {name: QLabel() for name in ("current", "range", "default", "hint")}
+        self._form_titles = {name: QLabel() for name in ("current", "range", "default", "new")}
+        self._buttons = QDialogButtonBox(
+            QDialogButtonBox.StandardButton.Ok | QDialogButtonBox.StandardButton.Cancel
+        )
+        self._buttons.accepted.connect(self._on_accepted)
+        self._buttons.rejected.connect(self.reject)
+        self._build_layout()
+        self.editable = access.may_edit(self.param)
+        if not self.editable:
+            self._editor.setEnabled(False)
+            self._buttons.setStandardButtons(QDialogButtonBox.StandardButton.Close)
+        self.retranslate()
+
+    def _make_editor(self) -> QLineEdit | QComboBox:
+        value = self._doc.value(self.param.mnemonic)
+        if self.param.choices:
+            combo = QComboBox()
+            for code, label in self.param.choices:
+                combo.addItem(f"{code}: {label.get(current_language())}", code)
+            combo.setCurrentIndex(max(0, combo.findData(value)))
+            return combo
+        line = QLineEdit(self.param.format_display(value))
+        line.selectAll()
+        line.textEdited.connect(lambda _text: self.error_label.hide())
+        return line
+
+    def _build_layout(self) -> None:
+        self._heading = QLabel()
+        self._heading.setWordWrap(True)
+        form = QFormLayout()
+        for name in ("current", "range", "default"):
+            form.addRow(self._form_titles[name], self._labels[name])
+        form.addRow(self._form_titles["new"], self._editor)
+        layout = QVBoxLayout(self)
+        layout.addWidget(self._heading)
+        layout.addLayout(form)
+        layout.addWidget(self._labels["hint"])
+        layout.addWidget(self.error_label)
+        layout.addWidget(self._buttons)
+        self._labels["hint"].setWordWrap(True)
+
+    def retranslate(self) -> None:
+        """Set every text in the current language."""
+        p = self.param
+        self.setWindowTitle(self.tr("Parameter {0}").format(p.mnemonic))
+        heading = f"<b>[{p.mnemonic}] {text(p.text)}</b>"
+        if p.help is not None:
+            heading += f"<br>{text(p.help)}"
+        self._heading.setText(heading)
+        self._form_titles["current"].setText(self.tr("Current value:"))
+        self._form_titles["range"].setText(self.tr("Allowed range:"))
+        self._form_titles["default"].setText(self.tr("Factory default:"))
+        self._form_titles["new"].setText(self.tr("New value:"))
+        unit = f" {p.unit}" if p.unit else ""
+        self._labels["current"].setText(self._doc.display(p.mnemonic) + unit)
+        self._labels["range"].setText(self._range_text() + unit)
+        self._labels["default"].setText(p.format_display(p.default_for(self._doc.variant)) + unit)
+        linked = linked_mnemonics(self._doc, self._access, p.mnemonic)
+        hint = ""
+        if not self.editable:
+            hint = self._lock_reason()
+        elif len(linked) > 1:
+            hint = self.tr("At Basic access level all ramps are set together: {0}.").format(
+                ", ".join(linked)
+            )
+        self._labels["hint"].setText(hint)
+        self._labels["hint"].setVisible(bool(hint))
+
+    def _lock_reason(self) -> str:
+        if not self.param.writable or self.param.access is Access.READ_ONLY:
+            return self.tr("Read-only value of the valve.")
+        return self.tr("Can only be changed at Expert access level.")
+
+    def _range_text(self) -> str:
+        p = self.param
+        if p.choices:
+            return ", ".join(str(code) for code, _label in p.choices)
+        return f"{p.format_display(p.raw_min)} … {p.format_display(p.raw_max)}"
+
+    def changeEvent(self, event: QEvent) -> None:
+        """Retranslate when the program language changes."""
+        if event.type() == QEvent.Type.LanguageChange:
+            self.retranslate()
+        super().changeEvent(event)
+
+    def set_text(self, value: str) -> None:
+        """Put ``value`` into the input field (choices: select the matching code or label)."""
+        if isinstance(self._editor, QComboBox):
+            raw = self.param.parse_display(value)
+            self._editor.setCurrentIndex(self._editor.findData(raw))
+        else:
+            self._editor.setText(value)
+
+    def _entered_raw(self) -> Raw:
+        if isinstance(self._editor, QComboBox):
+            return int(self._editor.currentData())
+        entered = self._editor.text()
+        try:
+            raw = self.param.parse_display(entered)
+        except ValueRangeError:
+            raise ValueRangeError(
+                self.tr("{0}: “{1}” is not a number.").format(self.param.mnemonic, entered.strip())
+            ) from None
+        if isinstance(raw, int) and not self.param.raw_min <= raw <= self.param.raw_max:
+            unit = f" {self.param.unit}" if self.param.unit else ""
+            raise ValueRangeError(
+                self.tr("{0}: {1}{2} is outside the allowed range {3}{2}.").format(
+                    self.param.mnemonic, entered.strip(), unit, self._range_text()
+                )
+            )
+        return raw
+
+    def _on_accepted(self) -> None:
+        try:
+            apply_edit(self._doc, self._access, self.param.mnemonic, self._entered_raw())
+        except (ValueRangeError, AccessDeniedError) as exc:
+            self.show_error(str(exc))
+            return
+        self.accept()
+
+    def show_error(self, message: str) -> None:
+        """Show why the value was refused; the dialog stays open."""
+        self.error_label.setText(message)
+        self.error_label.show()

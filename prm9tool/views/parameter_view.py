@@ -1,0 +1,117 @@
+"""The parameter list view (manual figure 8-18): search, "modified only", table, edit dialog."""
+
+from __future__ import annotations
+
+from PySide6.QtCore import QEvent, QModelIndex, Qt, Signal
+from PySide6.QtWidgets import (
+    QAbstractItemView,
+    QCheckBox,
+    QHBoxLayout,
+    QHeaderView,
+    QLineEdit,
+    QTableView,
+    QVBoxLayout,
+    QWidget,
+)
+
+from prm9tool.access import AccessModel
+from prm9tool.document import ParameterDocument
+from prm9tool.views.parameter_dialog import ParameterEditDialog
+from prm9tool.views.parameter_model import (
+    MNEMONIC_ROLE,
+    Column,
+    ParameterFilterProxy,
+    ParameterTableModel,
+)
+
+
+class ParameterListView(QWidget):
+    """Table of every parameter of the variant at the current access level."""
+
+    edit_requested = Signal(str)  # mnemonic whose edit dialog is about to open
+
+    def __init__(
+        self, doc: ParameterDocument, access: AccessModel, parent: QWidget | None = None
+    ) -> None:
+        super().__init__(parent)
+        self._doc = doc
+        self._access = access
+        self.model = ParameterTableModel(doc, access, self)
+        self.proxy = ParameterFilterProxy(self)
+        self.proxy.setSourceModel(self.model)
+        self.search = QLineEdit()
+        self.search.setClearButtonEnabled(True)
+        self.search.textChanged.connect(self.proxy.set_search)
+        self.modified_only = QCheckBox()
+        self.modified_only.toggled.connect(self.proxy.set_non_default_only)
+        self.table = self._make_table()
+        self._build_layout()
+        self.retranslate()
+
+    def _make_table(self) -> QTableView:
+        table = QTableView()
+        table.setModel(self.proxy)
+        table.setSelectionBehavior(QAbstractItemView.SelectionBehavior.SelectRows)
+        table.setSelectionMode(QAbstractItemView.SelectionMode.SingleSelection)
+        table.setEditTriggers(QAbstractItemView.EditTrigger.NoEditTriggers)
+        table.setAlternatingRowColors(True)
+        table.setWordWrap(False)
+        header = table.horizontalHeader()
+        header.setSectionResizeMode(Column.MNEMONIC, QHeaderView.ResizeMode.ResizeToContents)
+        header.setSectionResizeMode(Column.DESCRIPTION, QHeaderView.ResizeMode.Stretch)
+        header.setSectionResizeMode(Column.VALUE, QHeaderView.ResizeMode.ResizeToContents)
+        header.setSectionResizeMode(Column.UNIT, QHeaderView.ResizeMode.ResizeToContents)
+        table.verticalHeader().setDefaultSectionSize(table.fontMetrics().height() + 8)
+        table.doubleClicked.connect(self._on_table_double_clicked)
+        table.activated.connect(self._on_table_double_clicked)
+        return table
+
+    def _build_layout(self) -> None:
+        bar = QHBoxLayout()
+        bar.addWidget(self.search, 1)
+        bar.addWidget(self.modified_only)
+        layout = QVBoxLayout(self)
+        layout.setContentsMargins(4, 4, 4, 4)
+        layout.addLayout(bar)
+        layout.addWidget(self.table)
+
+    def retranslate(self) -> None:
+        """Set every text in the current language (parameter texts come from the catalogue)."""
+        self.search.setPlaceholderText(self.tr("Search mnemonic or description…"))
+        self.modified_only.setText(self.tr("Modified only"))
+        self.modified_only.setToolTip(
+            self.tr("Show only the values that differ from the factory defaults")
+        )
+        self.model.refresh()
+
+    def changeEvent(self, event: QEvent) -> None:
+        """Retranslate when the program language changes."""
+        if event.type() == QEvent.Type.LanguageChange:
+            self.retranslate()
+        super().changeEvent(event)
+
+    def _on_table_double_clicked(self, index: QModelIndex) -> None:
+        mnemonic = self.proxy.data(index, MNEMONIC_ROLE)
+        if mnemonic:
+            self.edit_parameter(str(mnemonic))
+
+    def make_edit_dialog(self, mnemonic: str) -> ParameterEditDialog:
+        """The edit dialog for ``mnemonic`` (not yet shown)."""
+        return ParameterEditDialog(self._doc, self._access, mnemonic, self)
+
+    def edit_parameter(self, mnemonic: str) -> None:
+        """Open the edit dialog for ``mnemonic`` (modal)."""
+        self.edit_requested.emit(mnemonic)
+        dialog = self.make_edit_dialog(mnemonic)
+        dialog.setAttribute(Qt.WidgetAttribute.WA_DeleteOnClose)
+        dialog.open()
+
+    def select(self, mnemonic: str) -> None:
+        """Scroll to and select the row of ``mnemonic`` if it is shown."""
+        row = self.model.row_of(mnemonic)
+        if row < 0:
+            return
+        index = self.proxy.mapFromSource(self.model.index(row, 0))
+        if index.isValid():
+            self.table.selectRow(index.row())
+            self.table.scrollTo(index)

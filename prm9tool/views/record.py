@@ -1,0 +1,124 @@
+"""The printed parameter record: header, every parameter with its unit, the diagram picture.
+
+The same QTextDocument is printed (print dialog) and written to PDF, so the two agree.
+"""
+
+from __future__ import annotations
+
+import html
+from collections.abc import Callable
+from dataclasses import dataclass
+from datetime import datetime
+from pathlib import Path
+
+from PySide6.QtCore import QCoreApplication, QMarginsF, QRectF, QUrl
+from PySide6.QtGui import QImage, QPageLayout, QPageSize, QPainter, QTextDocument
+from PySide6.QtPrintSupport import QPrinter
+
+from prm9tool.document import ParameterDocument
+from prm9tool.i18n import current_language, text
+
+translate = QCoreApplication.translate
+DiagramPainter = Callable[[QPainter, QRectF], None]
+DIAGRAM_URL = "prm9tool://diagram.png"
+
+
+@dataclass
+class RecordHeader:
+    """What the record's header shows besides the document's own data."""
+
+    access_level: str
+    serial: str = ""
+    firmware: str = ""
+    date: datetime | None = None
+
+
+def record_rows(doc: ParameterDocument) -> list[tuple[str, str, str, str]]:
+    """(mnemonic, description, value, unit) of every file parameter, in catalogue order."""
+    rows = []
+    for param in doc.parameters():
+        raw = doc.value(param.mnemonic)
+        value = param.format_display(raw)
+        if param.choices and isinstance(raw, int):
+            value = f"{raw}: {param.choice_text(raw, current_language())}"
+        rows.append((param.mnemonic, text(param.text), value, param.unit))
+    return rows
+
+
+def build_record(
+    doc: ParameterDocument, header: RecordHeader, diagram: DiagramPainter | None = None
+) -> QTextDocument:
+    """The record as a text document ready to print."""
+    record = QTextDocument()
+    record.setDocumentMargin(0)
+    if diagram is not None:
+        record.addResource(
+            QTextDocument.ResourceType.ImageResource, QUrl(DIAGRAM_URL), _picture(diagram)
+        )
+    record.setHtml(_html(doc, header, diagram is not None))
+    return record
+
+
+def _picture(diagram: DiagramPainter) -> QImage:
+    image = QImage(1600, 900, QImage.Format.Format_ARGB32)
+    image.fill(0xFFFFFFFF)
+    painter = QPainter(image)
+    painter.setRenderHint(QPainter.RenderHint.Antialiasing)
+    diagram(painter, QRectF(0, 0, image.width(), image.height()))
+    painter.end()
+    return image
+
+
+def _html(doc: ParameterDocument, header: RecordHeader, with_diagram: bool) -> str:
+    t = html.escape
+    date = (header.date or datetime.now()).strftime("%Y-%m-%d %H:%M")
+    file_name = str(doc.path) if doc.path else translate("Record", "untitled")
+    serial = header.serial or (str(doc.source_serial) if doc.source_serial else "—")
+    firmware = header.firmware or doc.source_firmware or "—"
+    facts = [
+        (translate("Record", "Type key"), str(doc.type_key)),
+        (translate("Record", "Serial number"), serial),
+        (translate("Record", "Firmware"), firmware),
+        (translate("Record", "File"), file_name),
+        (translate("Record", "Date"), date),
+        (translate("Record", "Access level"), header.access_level),
+    ]
+    head = "".join(f"<tr><td><b>{t(k)}:</b></td><td>{t(v)}</td></tr>" for k, v in facts)
+    rows = "".join(
+        f"<tr><td>{t(mn)}</td><td>{t(desc)}</td><td align='right'>{t(value)}</td>"
+        f"<td>{t(unit)}</td></tr>"
+        for mn, desc, value, unit in record_rows(doc)
+    )
+    picture = f"<p><img src='{DIAGRAM_URL}' width='640'></p>" if with_diagram else ""
+    titles = (
+        translate("Record", "Mnemonic"),
+        translate("Record", "Description"),
+        translate("Record", "Value"),
+        translate("Record", "Unit"),
+    )
+    heading = "".join(f"<th align='left'>{t(title)}</th>" for title in titles)
+    return (
+        f"<h2>{t(translate('Record', 'PRM9 parameter record'))}</h2>"
+        f"<table cellspacing='2'>{head}</table>{picture}"
+        f"<table border='1' cellspacing='0' cellpadding='3' width='100%'>"
+        f"<thead><tr>{heading}</tr></thead>{rows}</table>"
+    )
+
+
+def configure_pdf(printer: QPrinter, path: Path, title: str) -> None:
+    """Make ``printer`` write an A4 PDF to ``path``."""
+    printer.setOutputFormat(QPrinter.OutputFormat.PdfFormat)
+    printer.setOutputFileName(str(path))
+    printer.setDocName(title)
+    printer.setCreator("prm9tool")
+    printer.setPageSize(QPageSize(QPageSize.PageSizeId.A4))
+    printer.setPageMargins(QMarginsF(15, 15, 15, 15), QPageLayout.Unit.Millimeter)
+
+
+def write_pdf(record: QTextDocument, path: Path, title: str) -> None:
+    """Write ``record`` as an A4 PDF to ``path``; raises OSError if it cannot be written."""
+    printer = QPrinter(QPrinter.PrinterMode.HighResolution)
+    configure_pdf(printer, path, title)
+    record.print_(printer)
+    if not path.exists() or path.stat().st_size == 0:
+        raise OSError(f"cannot write {path}")

@@ -1,0 +1,84 @@
+"""Status bar (manual §8.8): ``Mode | Status | FW | type key | file name *``."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+from PySide6.QtCore import QEvent
+from PySide6.QtWidgets import QFrame, QLabel, QStatusBar, QWidget
+
+
+class MainStatusBar(QStatusBar):
+    """Five permanent fields, updated from the window's slots."""
+
+    def __init__(self, parent: QWidget | None = None) -> None:
+        super().__init__(parent)
+        self.mode_label = QLabel()
+        self.status_label = QLabel()
+        self.firmware_label = QLabel()
+        self.type_key_label = QLabel()
+        self.file_label = QLabel()
+        for label in self.labels():
+            label.setFrameShape(QFrame.Shape.StyledPanel)
+            label.setContentsMargins(6, 0, 6, 0)
+            self.addPermanentWidget(label)
+        self._online = False
+        self._status = ""
+        self._firmware = ""
+        self._path: Path | None = None
+        self._modified = False
+        self.retranslate()
+
+    def labels(self) -> list[QLabel]:
+        """The five fields from left to right."""
+        return [
+            self.mode_label,
+            self.status_label,
+            self.firmware_label,
+            self.type_key_label,
+            self.file_label,
+        ]
+
+    def set_online(self, online: bool) -> None:
+        """Show the communication mode."""
+        self._online = online
+        if not online:
+            self._status = ""
+            self._firmware = ""
+        self.retranslate()
+
+    def set_device_status(self, status: str) -> None:
+        """Show the valve's state (``ok``, or the active error) — only meaningful online."""
+        self._status = status
+        self.retranslate()
+
+    def set_firmware(self, firmware: str) -> None:
+        """Show the firmware version of the connected valve."""
+        self._firmware = firmware
+        self.retranslate()
+
+    def set_type_key(self, type_key: str) -> None:
+        """Show the valve type of the document."""
+        self.type_key_label.setText(type_key)
+
+    def set_file(self, path: Path | None, modified: bool) -> None:
+        """Show the file name and a ``*`` when there are unsaved changes."""
+        self._path = path
+        self._modified = modified
+        self.retranslate()
+
+    def retranslate(self) -> None:
+        """Set every text in the current language."""
+        mode = self.tr("ONLINE") if self._online else self.tr("OFFLINE")
+        self.mode_label.setText(self.tr("Mode: {0}").format(mode))
+        self.status_label.setText(self.tr("Status: {0}").format(self._status or "—"))
+        self.firmware_label.setText(self.tr("FW: {0}").format(self._firmware or "—"))
+        name = self._path.name if self._path is not None else self.tr("untitled")
+        self.file_label.setText(f"{name} *" if self._modified else name)
+        self.file_label.setToolTip(str(self._path) if self._path is not None else "")
+
+    def changeEvent(self, event: QEvent) -> None:
+        """Retranslate when the program language changes."""
+        if event.type() == QEvent.Type.LanguageChange:
+            self.retranslate()
+        super().changeEvent(event)

@@ -1,0 +1,225 @@
+"""Valve status window (manual §8.5, figure 8-3): state, identity, errors and the three LEDs.
+
+The LEDs blink by themselves in the pattern the valve reports (manual tables 5-1, 5-2,
+7-18; CiA 303-3 timing), because a 2 Hz status poll cannot sample a 2.5 Hz blink.
+"""
+
+from __future__ import annotations
+
+from PySide6.QtCore import QEvent, QPointF, QRectF, Qt, QTimer
+from PySide6.QtGui import QColor, QPainter, QPaintEvent, QPen, QRadialGradient
+from PySide6.QtWidgets import (
+    QDialog,
+    QFormLayout,
+    QGridLayout,
+    QGroupBox,
+    QLabel,
+    QListWidget,
+    QVBoxLayout,
+    QWidget,
+)
+
+from prm9tool.connection import ValveConnection
+from prm9tool.views.emcy import emcy_text
+
+COLOURS = {
+    "white": "#f4f4f4",
+    "green": "#30c040",
+    "orange": "#ff9a1a",
+    "red": "#ee2a2a",
+    "blue": "#3a7bff",
+    "magenta": "#e040e0",
+}
+# pattern -> ((lit, milliseconds), ...) repeated; CiA 303-3 indicator timing
+PATTERNS: dict[str, tuple[tuple[bool, int], ...]] = {
+    "on": ((True, 1000),),
+    "off": ((False, 1000),),
+    "1Hz": ((True, 500), (False, 500)),
+    "2Hz": ((True, 250), (False, 250)),
+    "2.5Hz": ((True, 200), (False, 200)),
+    "single_flash": ((True, 200), (False, 1000)),
+    "double_flash": ((True, 200), (False, 200), (True, 200), (False, 1000)),
+    "triple_flash": ((True, 200), (False, 200)) * 2 + ((True, 200), (False, 1000)),
+    "quadruple_flash": ((True, 200), (False, 200)) * 3 + ((True, 200), (False, 1000)),
+    "boot": ((True, 500), (False, 500), (True, 500), (False, 500)),
+}
+
+
+class LedWidget(QWidget):
+    """One LED drawn as a lamp; blinks in its pattern while visible."""
+
+    def __init__(self, parent: QWidget | None = None) -> None:
+        super().__init__(parent)
+        self.colour = "off"
+        self.pattern = "off"
+        self.lit = False
+        self._step = 0
+        self._timer = QTimer(self)
+        self._timer.setSingleShot(True)
+        self._timer.timeout.connect(self._on_timer_timeout)
+        self.setMinimumSize(36, 36)
+
+    def set_state(self, colour: str, pattern: str, lit: bool) -> None:
+        """Show ``colour`` in ``pattern`` (restarts the blink cycle if the pattern changed)."""
+        changed = (colour, pattern) != (self.colour, self.pattern)
+        self.colour, self.pattern = colour, pattern
+        if changed:
+            self._step = 0
+            self._timer.stop()
+            self.lit = lit if pattern not in PATTERNS else PATTERNS[pattern][0][0]
+            self._schedule()
+        self.update()
+
+    def _schedule(self) -> None:
+        steps = PATTERNS.get(self.pattern)
+        if steps and len(steps) > 1:
+            self._timer.start(steps[self._step][1])
+
+    def _on_timer_timeout(self) -> None:
+        steps = PATTERNS[self.pattern]
+        self._step = (self._step + 1) % len(steps)
+        self.lit = steps[self._step][0]
+        self.update()
+        self._schedule()
+
+    def paintEvent(self, event: QPaintEvent) -> None:
+        """Draw the lamp: coloured and glowing when lit, dark grey when not."""
+        side = min(self.width(), self.height()) - 4
+        rect = QRectF((self.width() - side) / 2, (self.height() - side) / 2, side, side)
+        on = self.lit and self.colour in COLOURS
+        base = QColor(COLOURS.get(self.colour, "#555555")) if on else QColor("#3c3f44")
+        gradient = QRadialGradient(rect.center() - QPointF(side / 6, side / 6), side / 1.6)
+        gradient.setColorAt(0.0, base.lighter(170 if on else 130))
+        gradient.setColorAt(1.0, base.darker(130))
+        painter = QPainter(self)
+        painter.setRenderHint(QPainter.RenderHint.Antialiasing)
+        painter.setPen(QPen(QColor("#202225"), 1.5))
+        painter.setBrush(gradient)
+        painter.drawEllipse(rect)
+        painter.end()
+
+
+class ValveStatusWindow(QDialog):
+    """Non-modal window that follows the connection's status live."""
+
+    def __init__(self, connection: ValveConnection, parent: QWidget | None = None) -> None:
+        super().__init__(parent)
+        self._connection = connection
+        self._status: object | None = None
+        self.fields = {name: QLabel() for name in _FIELDS}
+        for label in self.fields.values():
+            label.setTextInteractionFlags(Qt.TextInteractionFlag.TextSelectableByMouse)
+        self._field_titles = {name: QLabel() for name in _FIELDS}
+        self.errors = QListWidget()
+        self.leds = [LedWidget() for _ in range(3)]
+        self._led_titles = [QLabel() for _ in range(3)]
+        self._led_states = [QLabel() for _ in range(3)]
+        self._groups = {name: QGroupBox() for name in ("valve", "errors", "leds")}
+        self._build_layout()
+        connection.status_changed.connect(self._on_connection_status_changed)
+        connection.device_changed.connect(self._on_connection_device_changed)
+        connection.online_changed.connect(self._on_connection_online_changed)
+        self.retranslate()
+
+    def _build_layout(self) -> None:
+        form = QFormLayout(self._groups["valve"])
+        for name in _FIELDS:
+            form.addRow(self._field_titles[name], self.fields[name])
+        QVBoxLayout(self._groups["errors"]).addWidget(self.errors)
+        grid = QGridLayout(self._groups["leds"])
+        for column, (led, title, state) in enumerate(
+            zip(self.leds, self._led_titles, self._led_states, strict=True)
+        ):
+            grid.addWidget(led, 0, column, Qt.AlignmentFlag.AlignCenter)
+            grid.addWidget(title, 1, column, Qt.AlignmentFlag.AlignCenter)
+            grid.addWidget(state, 2, column, Qt.AlignmentFlag.AlignCenter)
+        layout = QVBoxLayout(self)
+        for group in self._groups.values():
+            layout.addWidget(group)
+        self.errors.setMaximumHeight(110)
+        self.resize(460, 560)
+
+    def retranslate(self) -> None:
+        """Set every text in the current language and refresh the values."""
+        self.setWindowTitle(self.tr("Valve status"))
+        self._groups["valve"].setTitle(self.tr("Valve"))
+        self._groups["errors"].setTitle(self.tr("Active errors"))
+        self._groups["leds"].setTitle(self.tr("LEDs"))
+        titles = {
+            "mode": self.tr("Mode:"),
+            "firmware": self.tr("Firmware version:"),
+            "serial": self.tr("Serial number:"),
+            "type_key": self.tr("Type key:"),
+            "state": self.tr("Device state:"),
+            "nmt": self.tr("CANopen NMT state:"),
+            "temperature": self.tr("Temperature:"),
+            "supply": self.tr("Supply voltage:"),
+        }
+        for name, title in titles.items():
+            self._field_titles[name].setText(title)
+        led_names = (self.tr("LED 1 power"), self.tr("LED 2 error"), self.tr("LED 3 CAN"))
+        for label, name in zip(self._led_titles, led_names, strict=True):
+            label.setText(name)
+        self._show_device(self._connection.device)
+        self._show_status(self._status)
+
+    def changeEvent(self, event: QEvent) -> None:
+        """Retranslate when the program language changes."""
+        if event.type() == QEvent.Type.LanguageChange:
+            self.retranslate()
+        super().changeEvent(event)
+
+    def _on_connection_online_changed(self, online: bool) -> None:
+        if not online:
+            self._status = None
+        self._show_device(self._connection.device)
+        self._show_status(self._status)
+
+    def _on_connection_device_changed(self, info: object) -> None:
+        self._show_device(info)
+
+    def _on_connection_status_changed(self, status: object) -> None:
+        self._status = status
+        self._show_status(status)
+
+    def _show_device(self, info: object | None) -> None:
+        online = self._connection.is_online
+        self.fields["mode"].setText(self.tr("ONLINE") if online else self.tr("OFFLINE"))
+        for name, attribute in (("firmware", "firmware"), ("serial", "serial")):
+            self.fields[name].setText(str(getattr(info, attribute, "—")) if info else "—")
+        self.fields["type_key"].setText(str(getattr(info, "type_key", "—")) if info else "—")
+
+    def _show_status(self, status: object | None) -> None:
+        if status is None:
+            for name in ("state", "nmt", "temperature", "supply"):
+                self.fields[name].setText("—")
+            self.errors.clear()
+            self.errors.addItem(self.tr("No status: the valve is offline."))
+            for led, state in zip(self.leds, self._led_states, strict=True):
+                led.set_state("off", "off", False)
+                state.setText("—")
+            return
+        self.fields["state"].setText(str(getattr(status, "device_state", "")))
+        self.fields["nmt"].setText(str(getattr(status, "nmt_state", "")))
+        self.fields["temperature"].setText(f"{getattr(status, 'temperature_c', 0.0):.1f} °C")
+        self.fields["supply"].setText(f"{getattr(status, 'supply_v', 0.0):.2f} V")
+        self._show_errors(status)
+        for led, state, led_state in zip(
+            self.leds, self._led_states, getattr(status, "leds", ()), strict=False
+        ):
+            led.set_state(led_state.color, led_state.pattern, led_state.lit)
+            state.setText(f"{led_state.color}, {led_state.pattern}")
+
+    def _show_errors(self, status: object) -> None:
+        self.errors.clear()
+        codes = list(getattr(status, "active_errors", ()))
+        fallback = str(getattr(status, "error_text", ""))
+        for code in codes:
+            self.errors.addItem(f"0x{code:04X}  {emcy_text(code, fallback)}")
+        if not codes and getattr(status, "warning", False):
+            self.errors.addItem(f"0x0000  {emcy_text(0, fallback)}")
+        if self.errors.count() == 0:
+            self.errors.addItem(self.tr("No error."))
+
+
+_FIELDS = ("mode", "firmware", "serial", "type_key", "state", "nmt", "temperature", "supply")

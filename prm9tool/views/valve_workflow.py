@@ -1,0 +1,375 @@
+"""Valve and Communication workflows: online/offline with the diff prompt, upload, download,
+factory values, restart, and what happens when the valve is lost.
+
+Nothing here touches the device: it drives the ValveConnection (which runs the I/O in its
+worker thread) and the document, and reacts to their signals.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Mapping
+from typing import Any
+
+from PySide6.QtCore import QObject, QSettings, Qt, Signal
+from PySide6.QtWidgets import QDialog, QProgressDialog, QWidget
+
+from prm9tool.connection import ValveConnection
+from prm9tool.document import ParameterDocument, Raw
+from prm9tool.errors import TypeKeyError
+from prm9tool.sync import ValveSync
+from prm9tool.typekey import TypeKey
+from prm9tool.undo import DocumentUndo
+from prm9tool.views import prompts
+from prm9tool.views.hid_dialog import (
+    SELECTED_KEY,
+    HidConfigurationDialog,
+    saved_emulators,
+)
+from prm9tool.views.online_dialogs import DiffChoice, OnlineDiffDialog, RestartDialog
+
+COMPARE = "compare"  # download made on going online, to compare with the document
+AFTER_RESTART = "after_restart"
+
+
+class ValveWorkflow(QObject):
+    """What the Valve and Communication menus do."""
+
+    message_posted = Signal(str)  # a short status-bar message
+    diff_dialog_created = Signal(object)  # OnlineDiffDialog, before it is shown (tests, help)
+
+    def __init__(
+        self,
+        window: QWidget,
+        doc: ParameterDocument,
+        undo: DocumentUndo,
+        connection: ValveConnection,
+        sync: ValveSync,
+        settings: QSettings,
+    ) -> None:
+        super().__init__(window)
+        self._window = window
+        self._doc = doc
+        self._undo = undo
+        self._connection = connection
+        self._sync = sync
+        self._settings = settings
+        self.progress_dialog: QProgressDialog | None = None
+        self._operation = ""
+        connection.online_changed.connect(self._on_connection_online_changed)
+        connection.operation_finished.connect(self._on_connection_operation_finished)
+        connection.progress.connect(self._on_connection_progress)
+        connection.failed.connect(self._on_connection_failed)
+        connection.lost.connect(self._on_connection_lost)
+        connection.live_values_changed.connect(doc.set_live)
+        connection.write_failed.connect(sync.forget)
+        connection.backup_written.connect(self._on_connection_backup_written)
+
+    # --- communication -----------------------------------------------------------------------
+    def configure_hid(self) -> object | None:
+        """Show the HID configuration; returns the chosen device entry (or None)."""
+        dialog = HidConfigurationDialog(self._connection.list_devices, self._settings, self._window)
+        if dialog.exec() != QDialog.DialogCode.Accepted:
+            return None
+        return dialog.selected_entry()
+
+    def chosen_entry(self) -> object | None:
+        """The valve to go online with: the one chosen before, the only one, or ask."""
+        try:
+            entries = self._connection.list_devices(saved_emulators(self._settings))
+        except Exception as exc:  # a broken USB stack must not prevent the HID dialog
+            self.message_posted.emit(str(exc))
+            entries = []
+        selected = str(self._settings.value(SELECTED_KEY, ""))
+        for entry in entries:
+            if str(getattr(entry, "device_id", "")) == selected:
+                return entry
+        if len(entries) == 1:
+            return entries[0]
+        return self.configure_hid()
+
+    def go_online(self, entry: object | None = None) -> None:
+        """Connect to ``entry`` (default: :meth:`chosen_entry`)."""
+        if self._connection.is_online:
+            return
+        entry = entry if entry is not None else self.chosen_entry()
+        if entry is None:
+            return
+        self.message_posted.emit(self.tr("Connecting to {0}…").format(_name(entry)))
+        self._connection.go_online(entry)
+
+    def go_offline(self) -> bool:
+        """Disconnect (offering to store values changed online); False if the user cancelled."""
+        if self._connection.is_online and self._sync.unstored:
+            answer = prompts.ask(
+                self._window,
+                prompts.Icon.Question,
+                self.tr("Store changes in the valve"),
+                self.tr(
+                    "Values changed online are active in the valve but not stored: a restart "
+                    "of the valve would undo them. Store them in the valve now?"
+                ),
+                prompts.Button.Yes | prompts.Button.No | prompts.Button.Cancel,
+                prompts.Button.Yes,
+            )
+            if answer == prompts.Button.Cancel:
+                return False
+            if answer == prompts.Button.Yes:
+                self._connection.store()
+        self._sync.stop()
+        self._connection.go_offline()
+        return True
+
+    def _on_connection_online_changed(self, online: bool) -> None:
+        if not online:
+            self._sync.stop()
+            self._close_progress()
+            self.message_posted.emit(self.tr("Offline"))
+            return
+        self._start(COMPARE, self.tr("Reading the valve's parameters…"), cancellable=False)
+        self._connection.download(COMPARE)
+
+    # --- the diff prompt --------------------------------------------------------------------------
+    def _on_compare_finished(self, values: Mapping[str, Raw]) -> None:
+        valve_key = self._valve_key()
+        if valve_key is None:
+            return
+        pristine = self._doc.path is None and not self._doc.modified
+        if pristine:
+            self._adopt_valve(valve_key, values)
+            return
+        same_key = valve_key == self._doc.type_key
+        differs = any(self._doc.values.get(mn) != value for mn, value in values.items())
+        if same_key and not differs:
+            self._sync.start(values)
+            self.message_posted.emit(self.tr("Online: document and valve agree"))
+            return
+        self._ask_about_differences(valve_key, values)
+
+    def _ask_about_differences(self, valve_key: TypeKey, values: Mapping[str, Raw]) -> None:
+        dialog = OnlineDiffDialog(
+            dict(self._doc.values), values, str(self._doc.type_key), str(valve_key), self._window
+        )
+        self.diff_dialog_created.emit(dialog)
+        dialog.exec()
+        if dialog.choice is DiffChoice.TAKE_VALVE:
+            self.take_valve_values(values, self.tr("Values read from the valve"))
+        elif dialog.choice is DiffChoice.SEND_DOCUMENT:
+            self.upload()
+        else:
+            self.go_offline()
+
+    def _adopt_valve(self, key: TypeKey, values: Mapping[str, Raw]) -> None:
+        """An untouched new document simply becomes the valve's parameter set."""
+        fresh = ParameterDocument(key)
+        fresh.set_values(values, "valve", validate=False)
+        self._stamp(fresh)
+        fresh.mark_saved(None)
+        with self._sync.suspended():
+            self._doc.replace_with(fresh)
+        self._undo.stack.clear()
+        self._sync.start(values)
+        self.message_posted.emit(self.tr("Online: parameters read from the valve"))
+
+    def take_valve_values(self, values: Mapping[str, Raw], label: str) -> None:
+        """The document takes the valve's type key and values as one undo step."""
+        key = self._valve_key()
+        if key is None:
+            return
+        with self._sync.suspended():
+            self._undo.stack.beginMacro(label)
+            self._doc.set_type_key(key)
+            self._doc.set_values(values, label, validate=False)
+            self._undo.stack.endMacro()
+        self._stamp(self._doc)
+        self._sync.start(values)
+        self.message_posted.emit(label)
+
+    def _stamp(self, doc: ParameterDocument) -> None:
+        info = self._connection.device
+        doc.source_serial = getattr(info, "serial", None)
+        doc.source_firmware = getattr(info, "firmware", None)
+
+    def _valve_key(self) -> TypeKey | None:
+        text = str(getattr(self._connection.device, "type_key", ""))
+        try:
+            return TypeKey.parse(text)
+        except TypeKeyError as exc:
+            self._on_connection_failed(
+                self.tr("The valve reports an unknown type key: {0}").format(str(exc))
+            )
+            self.go_offline()
+            return None
+
+    # --- valve commands ---------------------------------------------------------------------------
+    def upload(self) -> None:
+        """Write the document into the valve (backup first, then write → verify → store)."""
+        key = self._valve_key()
+        if key is None:
+            return
+        if key.variant != self._doc.variant:
+            prompts.ask(
+                self._window,
+                prompts.Icon.Warning,
+                self.tr("Upload to valve"),
+                self.tr(
+                    "The document is for a {0} valve, the connected valve is a {1} valve. "
+                    "Choose the matching valve type or download the valve's parameters first."
+                ).format(self._doc.variant.label, key.variant.label),
+                prompts.Button.Ok,
+            )
+            return
+        self._start("upload", self.tr("Uploading the parameters to the valve…"))
+        self._connection.upload(self._doc.values)
+
+    def download(self) -> None:
+        """Read the valve's parameters into the document (one undo step)."""
+        self._start("download", self.tr("Downloading the parameters from the valve…"))
+        self._connection.download()
+
+    def restore_factory(self) -> None:
+        """Factory values: online into the valve (after a restart), offline into the document."""
+        online = self._connection.is_online
+        question = (
+            self.tr(
+                "Reset the valve's stored parameters to the factory values and restart it? "
+                "Only allowed with the hydraulics disconnected."
+            )
+            if online
+            else self.tr("Set every parameter of the document to the factory default?")
+        )
+        answer = prompts.ask(
+            self._window,
+            prompts.Icon.Question,
+            self.tr("Restore factory values"),
+            question,
+            prompts.Button.Yes | prompts.Button.No,
+            prompts.Button.No,
+        )
+        if answer != prompts.Button.Yes:
+            return
+        if not online:
+            defaults = ParameterDocument(self._doc.type_key).values
+            self._doc.set_values(defaults, self.tr("Restore factory values"))
+            return
+        self._start("restore_factory", self.tr("Restoring the factory values…"), False)
+        self._connection.run_job("restore_factory", _restore_factory_and_read)
+
+    def restart(self) -> None:
+        """Restart the valve after the user confirmed that the hydraulics are disconnected."""
+        dialog = RestartDialog(self._window)
+        if dialog.exec() != QDialog.DialogCode.Accepted:
+            return
+        self._start("restart", self.tr("Restarting the valve…"), cancellable=False)
+        self._connection.run_job(AFTER_RESTART, _restart_and_read)
+
+    # --- results ------------------------------------------------------------------------------------
+    def _on_connection_operation_finished(self, name: str, result: object) -> None:
+        self._close_progress()
+        if name == COMPARE and isinstance(result, Mapping):
+            self._on_compare_finished(result)
+        elif name == "download" and isinstance(result, Mapping):
+            self.take_valve_values(result, self.tr("Download from valve"))
+        elif name == "restore_factory" and isinstance(result, Mapping):
+            self.take_valve_values(result, self.tr("Factory values of the valve"))
+        elif name == AFTER_RESTART and isinstance(result, Mapping):
+            self.message_posted.emit(self.tr("The valve restarted"))
+            self._sync.stop()
+            self._on_compare_finished(result)
+        elif name == "upload":
+            self._on_upload_finished(result)
+        elif name == "store":
+            self._sync.unstored = False
+            self.message_posted.emit(self.tr("The valve stored its parameters"))
+
+    def _on_upload_finished(self, result: object) -> None:
+        if getattr(result, "stored", False):
+            self._sync.start(self._doc.values)
+            count = int(getattr(result, "written", 0))
+            self.message_posted.emit(
+                self.tr("%n parameter(s) written, verified and stored", "", count)
+            )
+            return
+        mismatches = getattr(result, "mismatches", {}) or {}
+        details = "\n".join(f"{mn}: {want} → {got}" for mn, (want, got) in mismatches.items())
+        prompts.inform(
+            self._window,
+            prompts.Icon.Warning,
+            self.tr("Upload failed"),
+            self.tr(
+                "The upload failed at step “{0}”. Nothing was stored: after a restart the valve "
+                "holds its previous parameters."
+            ).format(str(getattr(result, "failed_step", ""))),
+            details,
+        )
+
+    def _on_connection_progress(self, done: int, total: int, step: str) -> None:
+        dialog = self.progress_dialog
+        if dialog is None:
+            return
+        dialog.setMaximum(max(total, 1))
+        dialog.setValue(min(done, total))
+        dialog.setLabelText(f"{self._operation}\n{step}")
+
+    def _on_connection_failed(self, message: str) -> None:
+        self._close_progress()
+        self.message_posted.emit(message)
+        prompts.inform(self._window, prompts.Icon.Warning, self.tr("Valve communication"), message)
+
+    def _on_connection_lost(self, message: str) -> None:
+        self._close_progress()
+        prompts.inform(
+            self._window,
+            prompts.Icon.Critical,
+            self.tr("Connection to the valve lost"),
+            self.tr(
+                "The connection to the valve was lost; prm9tool is offline now.\n"
+                "Every value is kept in the document: save it, or go online again and send it."
+            ),
+            message,
+        )
+
+    def _on_connection_backup_written(self, path: str) -> None:
+        self.message_posted.emit(
+            self.tr("Backup of the valve's parameters saved: {0}").format(path)
+        )
+
+    # --- progress dialog ----------------------------------------------------------------------------
+    def _start(self, operation: str, label: str, cancellable: bool = True) -> None:
+        self._close_progress()
+        self._operation = label
+        dialog = QProgressDialog(label, self.tr("Cancel") if cancellable else "", 0, 0)
+        dialog.setParent(self._window, dialog.windowFlags())
+        dialog.setObjectName(f"progress_{operation}")
+        dialog.setWindowTitle("prm9tool")
+        dialog.setWindowModality(Qt.WindowModality.WindowModal)
+        dialog.setMinimumDuration(300)
+        dialog.setAutoClose(False)
+        dialog.setAutoReset(False)
+        if not cancellable:
+            dialog.setCancelButton(None)
+        dialog.canceled.connect(self._connection.cancel)
+        self.progress_dialog = dialog
+
+    def _close_progress(self) -> None:
+        dialog, self.progress_dialog = self.progress_dialog, None
+        if dialog is not None:
+            dialog.canceled.disconnect(self._connection.cancel)
+            dialog.close()
+            dialog.deleteLater()
+
+
+def _restore_factory_and_read(session: Any) -> dict[str, Raw]:
+    """Worker job: factory values become effective after a restart; read them back."""
+    session.restore_factory()
+    session.restart()
+    return dict(session.download())
+
+
+def _restart_and_read(session: Any) -> dict[str, Raw]:
+    """Worker job: restart, then read the (stored) parameters the valve runs with now."""
+    session.restart()
+    return dict(session.download())
+
+
+def _name(entry: object) -> str:
+    return f"{getattr(entry, 'type_key', '')} #{getattr(entry, 'serial', '')}".strip()
