@@ -15,16 +15,9 @@ from typing import TYPE_CHECKING
 
 import can
 
-from prm9tool.catalogue import LOAD_SIGNATURE, SAVE_SIGNATURE
 from prm9tool.device.emulator.canopen_pdo import PdoChannel, RpdoLogic, TpdoLogic, mapping
+from prm9tool.device.emulator.canopen_rules import NmtState, check_comm_write
 from prm9tool.device.emulator.canopen_sdo import SdoServer
-from prm9tool.device.emulator.canopen_settings import (
-    CanSettings,
-    NmtState,
-    can_settings,
-    check_comm_write,
-)
-from prm9tool.errors import AbortCode, SdoAbortError
 
 if TYPE_CHECKING:
     from prm9tool.device.emulator.valve import EmulatedValve
@@ -45,8 +38,9 @@ NMT_EVENTS = {
     NmtState.PRE_OPERATIONAL: "preoperational",
 }
 EMCY_RPDO_LENGTH = 0x8210  # CiA 301: PDO not processed due to length error
-SYNC_COB_ID, EMCY_COB_ID, HEARTBEAT_TIME, NMT_STARTUP = 0x1005, 0x1014, 0x1017, 0x1F80
-STORE, RESTORE = (0x1010, 1), (0x1011, 1)
+SYNC_COB_ID, CYCLE_PERIOD, EMCY_COB_ID = 0x1005, 0x1006, 0x1014
+HEARTBEAT_TIME, NMT_STARTUP = 0x1017, 0x1F80
+SYNC_TIMEOUT_FACTOR = 1.5  # decision: SYNC missing for 1.5 x 0x1006 = communication error
 
 
 class CanopenSlave:
@@ -62,9 +56,10 @@ class CanopenSlave:
         self._tpdo_logic = [TpdoLogic(c, valve) for c in self._tpdos]
         self._now_ms = 0
         self._heartbeat_due_ms = 0
+        self._last_sync_ms: int | None = None
         self._closed = False
         self.state = NmtState.OFF
-        self.settings = CanSettings(False, 0, None, False)
+        self.node_id = 0
         with valve.lock:
             self._power_up()
             valve.add_cycle_listener(self._on_cycle)
@@ -74,14 +69,9 @@ class CanopenSlave:
 
     # --- public --------------------------------------------------------------------------
     @property
-    def node_id(self) -> int:
-        """The node ID read at power-up (0 while CANopen is switched off)."""
-        return self.settings.node_id
-
-    @property
-    def bitrate(self) -> int | None:
-        """The bit rate the switches (or 0x2030/2) select, None for automatic bit rate."""
-        return self.settings.bitrate
+    def bitrate(self) -> int:
+        """The bit rate the switches (or 0x2030/2) selected at power-up, bit/s (0 = CAN off)."""
+        return self._valve.bitrate
 
     def close(self) -> None:
         """Stop receiving and transmitting (the bus itself belongs to the caller)."""
@@ -92,9 +82,9 @@ class CanopenSlave:
 
     # --- power-up, NMT ---------------------------------------------------------------------
     def _power_up(self) -> None:
-        self.settings = can_settings(self._valve)
+        self.node_id = self._valve.node_id
         self._sdo.reset()
-        self.state = NmtState.INITIALISING if self.settings.enabled else NmtState.OFF
+        self.state = NmtState.INITIALISING if self._valve.can_enabled else NmtState.OFF
 
     def _on_restart(self) -> None:
         if not self._closed:
@@ -119,6 +109,7 @@ class CanopenSlave:
         self._sdo.reset()
         self._valve.nmt_event(NMT_EVENTS[state])
         if state is NmtState.OPERATIONAL:
+            self._last_sync_ms = None
             for channel in (*self._rpdos, *self._tpdos):
                 channel.restart(self._now_ms)
             for logic in self._tpdo_logic:
@@ -175,6 +166,7 @@ class CanopenSlave:
     def _on_sync(self) -> None:
         if self.state is not NmtState.OPERATIONAL:
             return
+        self._last_sync_ms = self._now_ms
         for rpdo in self._rpdo_logic:
             rpdo.on_sync()
         for tpdo in self._tpdo_logic:
@@ -200,8 +192,18 @@ class CanopenSlave:
             self._send(0x700 + self.node_id, bytes([HEARTBEAT_CODES[self.state]]))
             self._heartbeat_due_ms = self._now_ms + period
         if self.state is NmtState.OPERATIONAL:
+            self._check_sync_timeout()
             for tpdo in self._tpdo_logic:
                 self._transmit(tpdo, tpdo.on_tick(self._now_ms))
+
+    def _check_sync_timeout(self) -> None:
+        """0x1006 != 0: a SYNC missing for 1.5 periods is a communication error (EMCY 8100h)."""
+        period_us = int(self._valve.read(CYCLE_PERIOD, 0))
+        if not period_us or self._last_sync_ms is None:
+            return
+        if self._now_ms - self._last_sync_ms > SYNC_TIMEOUT_FACTOR * period_us / 1000:
+            self._last_sync_ms = None  # one event per loss of SYNC
+            self._valve.nmt_event("comm_error")
 
     def _heartbeat_ms(self) -> int:
         return int(self._valve.read(HEARTBEAT_TIME, 0))
@@ -236,25 +238,11 @@ class CanopenSlave:
 
     def _sdo_write(self, index: int, subindex: int, data: bytes) -> None:
         check_comm_write(index, subindex, data, self.state)
-        if (index, subindex) in (STORE, RESTORE):
-            self._store_or_restore((index, subindex), data)
-            return
         self._valve.write_bytes(index, subindex, data)
         if 0x1000 <= index < 0x2000:
             self._load_config()
             if index == HEARTBEAT_TIME:
                 self._heartbeat_due_ms = self._now_ms + self._heartbeat_ms()
-
-    def _store_or_restore(self, key: tuple[int, int], data: bytes) -> None:
-        if len(data) != 4:
-            raise SdoAbortError(key[0], key[1], AbortCode.WRONG_LENGTH)
-        signature = struct.unpack("<I", data)[0]
-        if key == STORE and signature == SAVE_SIGNATURE:
-            self._valve.store()
-        elif key == RESTORE and signature == LOAD_SIGNATURE:
-            self._valve.restore_factory()
-        else:
-            raise SdoAbortError(key[0], key[1], AbortCode.CANNOT_STORE)
 
     def _load_config(self) -> None:
         for channel in (*self._rpdos, *self._tpdos):
