@@ -120,17 +120,10 @@ def _opener(args: argparse.Namespace) -> Callable[[object], object]:
     def open_session(entry: object) -> object:
         from prm9tool.device import factory
 
-        can = _can_options(args, factory)
+        can = factory.CanOptions.from_args(args) if hasattr(args, "can_interface") else None
         return factory.open_session(entry, paced=True, can=can)  # type: ignore[arg-type]
 
     return open_session
-
-
-def _can_options(args: argparse.Namespace, factory: object) -> object | None:
-    options = getattr(factory, "CanOptions", None)
-    if options is None or not hasattr(args, "can_interface"):
-        return None
-    return options(interface=args.can_interface, channel=args.can_channel, bitrate=args.can_bitrate)
 
 
 def _lister(emulators: object) -> list[object]:

@@ -20,21 +20,18 @@ from typing import Any
 from PySide6.QtCore import QObject, Qt, Signal
 
 from prm9tool.backup import ensure_backup
-from prm9tool.catalogue import CATALOGUE
-from prm9tool.errors import CommunicationError, Prm9Error, SdoAbortError
-from prm9tool.signals import MAX_CHANNELS, signals_for
+from prm9tool.errors import CommunicationError, Prm9Error
+from prm9tool.polling import Poller
 
 log = logging.getLogger(__name__)
 
 Opener = Callable[[object], Any]  # entry -> ValveSession
 Lister = Callable[[Sequence[str]], list[Any]]  # emulator specs -> [DeviceEntry]
-LIVE_GROUPS = ("identity", "live", "current_limit", "process_values", "ext_sensor_data")
 STATUS_PERIOD_S = 0.5
 SIGNAL_PERIOD_S = 0.25
 IDLE_TICK_S = 0.05
 STREAM_TICK_S = 0.02
 PROGRESS_PERIOD_S = 0.05
-WATCH_RATE_HZ = 250  # the slow stream that refreshes the diagram's measuring points
 
 
 @dataclass
@@ -82,15 +79,9 @@ class ValveConnection(QObject):
         self._online = False
         self._device: object | None = None
         self._busy = 0
-        self._live_mnemonics: list[str] = []
-        self._live_explicit = False
         self._last_progress = 0.0
-        self._watched: list[str] = []
-        self._stream_keys: list[str] = []
-        self._last_stream_row: dict[str, float] = {}
-        self._watch_chunk: list[str] = []  # measuring points of the running "watch" stream
-        self._watch_index = 0
-        self._signal_keys: set[str] = set()  # measuring points of the connected variant
+        self._poller = Poller()  # worker-side state of the periodic reads
+        self._stream_keys: list[str] = []  # GUI-side: keys of the running stream
         self._posted.connect(self._on_posted, Qt.ConnectionType.QueuedConnection)
 
     # --- state --------------------------------------------------------------------------------
@@ -201,29 +192,27 @@ class ValveConnection(QObject):
     def start_stream(self, keys: Sequence[str], rate_hz: int) -> None:
         """Stream up to three measuring points; samples arrive as ``samples_received``."""
         names = list(keys)
-
-        def run(session: Any) -> list[str]:
-            self._stop_watch(session)
-            if self._stream_keys:
-                session.stream_stop()
-            session.stream_start(names, rate_hz)
-            self._stream_keys = names
-            return names
-
-        self._submit(_Job("stream_start", run, lambda keys: self.stream_started.emit(keys), False))
+        self._submit(
+            _Job(
+                "stream_start",
+                lambda s: self._poller.start_stream(s, names, rate_hz),
+                self._on_stream_started,
+                False,
+            )
+        )
 
     def stop_stream(self) -> None:
         """Stop the stream (``stream_stopped`` follows)."""
-        self._submit(_Job("stream_stop", self._stop_stream, self._on_stream_stopped, False))
+        self._submit(_Job("stream_stop", self._poller.stop_stream, self._on_stream_stopped, False))
 
     def watch_signals(self, keys: Sequence[str]) -> None:
         """Measuring points whose values ``signal_values_changed`` carries (≈ 4 Hz)."""
-        self._watched = list(keys)
+        self._poller.watched = list(keys)
 
     def watch_live(self, mnemonics: Sequence[str]) -> None:
         """Read-only values polled for ``live_values_changed`` (default: the variant's)."""
-        self._live_mnemonics = list(mnemonics)
-        self._live_explicit = True
+        self._poller.live = list(mnemonics)
+        self._poller.live_explicit = True
 
     def shutdown(self, timeout_s: float = 3.0) -> None:
         """Close the session and end the worker thread (application exit)."""
@@ -287,14 +276,19 @@ class ValveConnection(QObject):
         self.device_changed.emit(None)
         self.online_changed.emit(False)
 
+    def _on_stream_started(self, keys: object) -> None:
+        self._stream_keys = list(keys)  # type: ignore[call-overload]
+        self.stream_started.emit(self._stream_keys)
+
     def _on_stream_stopped(self, _result: object) -> None:
+        self._stream_keys = []
         self.stream_stopped.emit()
 
     # --- worker thread -------------------------------------------------------------------------
     def _worker_main(self) -> None:
         next_status = next_signals = 0.0
         while True:
-            tick = STREAM_TICK_S if self._stream_keys else IDLE_TICK_S
+            tick = STREAM_TICK_S if self._poller.stream_keys else IDLE_TICK_S
             try:
                 job = self._jobs.get(timeout=tick)
             except queue.Empty:
@@ -362,27 +356,17 @@ class ValveConnection(QObject):
         self._cancel.clear()
         self._session = self._opener(entry)
         info = self._session.identify()
-        self._stream_keys = []
-        self._watch_chunk = []
-        self._signal_keys = _signal_keys_for(info)
-        if not self._live_explicit:
-            self._live_mnemonics = _live_mnemonics_for(info)
+        self._poller.reset(info)
         return info
 
     def _close(self) -> None:
         session, self._session = self._session, None
-        self._stream_keys = []
-        self._watch_chunk = []
+        self._poller.forget_streams()
         if session is not None:
             try:
                 session.close()
             except Prm9Error as exc:  # closing a broken link must not raise
                 log.debug("closing the session failed: %s", exc)
-
-    def _stop_stream(self, session: Any) -> None:
-        if self._stream_keys:
-            self._stream_keys = []
-            session.stream_stop()
 
     def _progress(self, done: int, total: int, step: str) -> None:
         now = time.monotonic()
@@ -392,103 +376,22 @@ class ValveConnection(QObject):
         self._post(lambda: self.progress.emit(done, total, step))
 
     def _poll(self, status: bool, signals: bool) -> None:
-        session = self._session
-        if self._stream_keys:
-            block = session.stream_read()
-            if len(block):
-                keys = self._stream_keys
-                self._last_stream_row = {k: float(v) for k, v in zip(keys, block[-1], strict=False)}
-                self._post(lambda: self.samples_received.emit(block))
-        if status:
-            valve_status = session.status()
+        result = self._poller.poll(self._session, status, signals)
+        if result.samples is not None:
+            samples = result.samples
+            self._post(lambda: self.samples_received.emit(samples))
+        if result.status is not None:
+            valve_status = result.status
             self._post(lambda: self.status_changed.emit(valve_status))
-            live = self._read_live(session)
-            if live:
-                self._post(lambda: self.live_values_changed.emit(live))
-        if signals and (self._watched or self._watch_chunk):
-            values = self._read_signals(session, self._watched)
-            if values:
-                self._post(lambda: self.signal_values_changed.emit(values))
-
-    def _read_live(self, session: Any) -> dict[str, int | str]:
-        """Read the live values; one the valve refuses is dropped from the list, not retried."""
-        names = list(self._live_mnemonics)
-        if not names:
-            return {}
-        try:
-            return dict(session.read_many(names))
-        except SdoAbortError as exc:
-            refused = CATALOGUE.by_address(exc.index, exc.subindex)
-            log.info("live value refused, no longer polled: %s", exc)
-            if refused is None:
-                self._live_mnemonics = []
-            else:
-                self._live_mnemonics = [n for n in names if n != refused.mnemonic]
-            return {}
-
-    def _read_signals(self, session: Any, keys: list[str]) -> dict[str, float]:
-        """Latest values of watched measuring points.
-
-        The valve reports measuring points only in its stream (at most three at once). While
-        the oscilloscope streams, its samples serve; otherwise a slow "watch" stream visits
-        the watched points three at a time, so each one is refreshed every few ticks.
-        """
-        if self._stream_keys:
-            return {k: v for k, v in self._last_stream_row.items() if k in keys}
-        values: dict[str, float] = {}
-        if self._watch_chunk:
-            block = session.stream_read()
-            if len(block):
-                values = {k: float(v) for k, v in zip(self._watch_chunk, block[-1], strict=True)}
-        chunk = self._next_watch_chunk(keys)
-        if chunk:
-            session.stream_start(chunk, WATCH_RATE_HZ)
-        elif self._watch_chunk:
-            session.stream_stop()
-        self._watch_chunk = chunk
-        return values
-
-    def _next_watch_chunk(self, keys: list[str]) -> list[str]:
-        usable = [k for k in keys if k in self._signal_keys]
-        if not usable:
-            return []
-        start = self._watch_index % len(usable)
-        self._watch_index = start + MAX_CHANNELS
-        return [usable[(start + i) % len(usable)] for i in range(min(MAX_CHANNELS, len(usable)))]
-
-    def _stop_watch(self, session: Any) -> None:
-        if self._watch_chunk:
-            self._watch_chunk = []
-            session.stream_stop()
+        if result.live:
+            live = result.live
+            self._post(lambda: self.live_values_changed.emit(live))
+        if result.signals:
+            values = result.signals
+            self._post(lambda: self.signal_values_changed.emit(values))
 
 
 _IDLE = _Job("idle", lambda _s: None)
-
-
-def _live_mnemonics_for(info: object) -> list[str]:
-    """Read-only values worth polling on the connected valve's variant."""
-    from prm9tool.typekey import TypeKey
-
-    try:
-        variant = TypeKey.parse(str(getattr(info, "type_key", ""))).variant
-    except Prm9Error:
-        return ["PWR", "TEMP", "ERROR"]
-    return [
-        p.mnemonic
-        for p in CATALOGUE.for_variant(variant)
-        if p.group in LIVE_GROUPS and not p.in_file and p.dtype.size
-    ]
-
-
-def _signal_keys_for(info: object) -> set[str]:
-    """Measuring points that exist on the connected valve's variant."""
-    from prm9tool.typekey import TypeKey
-
-    try:
-        variant = TypeKey.parse(str(getattr(info, "type_key", ""))).variant
-    except Prm9Error:
-        return set()
-    return {s.key for s in signals_for(variant)}
 
 
 def _default_opener(entry: object) -> Any:

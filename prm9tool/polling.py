@@ -1,0 +1,156 @@
+"""What the connection's worker thread reads between jobs: status, live values, measuring
+points and the oscilloscope stream. Runs in the worker thread only; no Qt.
+"""
+
+from __future__ import annotations
+
+import logging
+from dataclasses import dataclass, field
+from typing import Any
+
+import numpy as np
+
+from prm9tool.catalogue import CATALOGUE
+from prm9tool.errors import Prm9Error, SdoAbortError
+from prm9tool.signals import MAX_CHANNELS, signals_for
+from prm9tool.typekey import TypeKey
+from prm9tool.variant import Variant
+
+log = logging.getLogger(__name__)
+WATCH_RATE_HZ = 250  # the slow stream that refreshes the diagram's measuring points
+HIDDEN_GROUPS = ("canopen_comm", "profile_types", "service")
+
+
+@dataclass
+class PollResult:
+    """What one poll read (None / empty: nothing new)."""
+
+    status: object | None = None
+    live: dict[str, int | str] = field(default_factory=dict)
+    signals: dict[str, float] = field(default_factory=dict)
+    samples: np.ndarray | None = None
+
+
+def variant_of(info: object) -> Variant | None:
+    """The variant of a DeviceInfo's type key (None if it cannot be parsed)."""
+    try:
+        return TypeKey.parse(str(getattr(info, "type_key", ""))).variant
+    except Prm9Error:
+        return None
+
+
+def live_mnemonics(variant: Variant | None) -> list[str]:
+    """Read-only numeric values of the parameter list worth polling on ``variant``."""
+    if variant is None:
+        return ["PWR", "TEMP", "ERROR"]
+    return [
+        p.mnemonic
+        for p in CATALOGUE.for_variant(variant)
+        if not p.in_file and p.dtype.size and p.group not in HIDDEN_GROUPS
+    ]
+
+
+class Poller:
+    """Worker-side state of the periodic reads of one session."""
+
+    def __init__(self) -> None:
+        self.live: list[str] = []
+        self.live_explicit = False
+        self.watched: list[str] = []
+        self.stream_keys: list[str] = []
+        self._last_row: dict[str, float] = {}
+        self._watch_chunk: list[str] = []
+        self._watch_index = 0
+        self._signal_keys: set[str] = set()
+
+    def reset(self, info: object) -> None:
+        """A session to the valve ``info`` was opened."""
+        variant = variant_of(info)
+        self.stream_keys, self._watch_chunk, self._last_row = [], [], {}
+        self._signal_keys = {s.key for s in signals_for(variant)} if variant else set()
+        if not self.live_explicit:
+            self.live = live_mnemonics(variant)
+
+    def forget_streams(self) -> None:
+        """The session closed: no stream runs any more."""
+        self.stream_keys, self._watch_chunk = [], []
+
+    # --- the oscilloscope stream -----------------------------------------------------------------
+    def start_stream(self, session: Any, keys: list[str], rate_hz: int) -> list[str]:
+        """Start the oscilloscope's stream (the watch stream gives way)."""
+        self._stop_watch(session)
+        if self.stream_keys:
+            session.stream_stop()
+        session.stream_start(keys, rate_hz)
+        self.stream_keys = list(keys)
+        return self.stream_keys
+
+    def stop_stream(self, session: Any) -> None:
+        """Stop the oscilloscope's stream."""
+        if self.stream_keys:
+            self.stream_keys = []
+            session.stream_stop()
+
+    # --- polling ----------------------------------------------------------------------------------
+    def poll(self, session: Any, status: bool, signals: bool) -> PollResult:
+        """Read what is due; communication errors propagate (the link is lost)."""
+        result = PollResult()
+        if self.stream_keys:
+            block = session.stream_read()
+            if len(block):
+                self._last_row = dict(zip(self.stream_keys, map(float, block[-1]), strict=False))
+                result.samples = block
+        if status:
+            result.status = session.status()
+            result.live = self._read_live(session)
+        if signals and (self.watched or self._watch_chunk):
+            result.signals = self._read_signals(session)
+        return result
+
+    def _read_live(self, session: Any) -> dict[str, int | str]:
+        """Read the live values; one the valve refuses is dropped from the list, not retried."""
+        names = list(self.live)
+        if not names:
+            return {}
+        try:
+            return dict(session.read_many(names))
+        except SdoAbortError as exc:
+            refused = CATALOGUE.by_address(exc.index, exc.subindex)
+            log.info("live value refused, no longer polled: %s", exc)
+            self.live = [] if refused is None else [n for n in names if n != refused.mnemonic]
+            return {}
+
+    def _read_signals(self, session: Any) -> dict[str, float]:
+        """Latest values of the watched measuring points.
+
+        The valve reports measuring points only in its stream (at most three at once). While
+        the oscilloscope streams, its samples serve; otherwise a slow "watch" stream visits
+        the watched points three at a time, so each one is refreshed every few polls.
+        """
+        if self.stream_keys:
+            return {k: v for k, v in self._last_row.items() if k in self.watched}
+        values: dict[str, float] = {}
+        if self._watch_chunk:
+            block = session.stream_read()
+            if len(block):
+                values = dict(zip(self._watch_chunk, map(float, block[-1]), strict=True))
+        chunk = self._next_watch_chunk()
+        if chunk:
+            session.stream_start(chunk, WATCH_RATE_HZ)
+        elif self._watch_chunk:
+            session.stream_stop()
+        self._watch_chunk = chunk
+        return values
+
+    def _next_watch_chunk(self) -> list[str]:
+        usable = [k for k in self.watched if k in self._signal_keys]
+        if not usable:
+            return []
+        start = self._watch_index % len(usable)
+        self._watch_index = start + MAX_CHANNELS
+        return [usable[(start + i) % len(usable)] for i in range(min(MAX_CHANNELS, len(usable)))]
+
+    def _stop_watch(self, session: Any) -> None:
+        if self._watch_chunk:
+            self._watch_chunk = []
+            session.stream_stop()
