@@ -160,6 +160,11 @@ class EmulatorTransport(Transport):
             self._valve_seen = self.valve.time
 
     @property
+    def reports_on_link(self) -> int:
+        """Reports put on the link so far, both directions (the numbering of LinkFaults)."""
+        return self._number
+
+    @property
     def link_time(self) -> float:
         """Seconds of link time elapsed (simulated when unpaced)."""
         return self._now()

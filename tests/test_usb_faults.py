@@ -1,0 +1,166 @@
+"""Link faults on the emulated USB cable: unplug at every point of an upload; lost,
+duplicated and late reports."""
+
+from __future__ import annotations
+
+import pytest
+
+from prm9tool.catalogue import CATALOGUE
+from prm9tool.device.emulator import EmulatedValve
+from prm9tool.device.session import ValveSession
+from prm9tool.device.transport.emulator import EmulatorTransport, LinkFaults
+from prm9tool.errors import DeviceDisconnectedError, DeviceTimeoutError
+
+E04 = "PRM9-06.3Z11/30-24E04S02-CA"
+
+
+def new_values(variant) -> dict[str, int | str]:
+    """A complete parameter set that differs from the factory defaults in every entry."""
+    values = {}
+    for param in CATALOGUE.file_parameters(variant):
+        allowed = [code for code, _ in param.choices] or [param.raw_min, param.raw_max]
+        values[param.mnemonic] = next(v for v in allowed if v != param.default_for(variant))
+    return values
+
+
+def open_session(valve: EmulatedValve) -> tuple[ValveSession, EmulatorTransport]:
+    transport = EmulatorTransport(valve)
+    return ValveSession(transport, "emulator:faults"), transport
+
+
+def reports_of_a_full_upload(tmp_path) -> int:
+    valve = EmulatedValve(E04, 1, nv_path=tmp_path / "count.json")
+    session, transport = open_session(valve)
+    before = transport.reports_on_link
+    session.upload(new_values(session.variant))
+    return transport.reports_on_link - before
+
+
+def test_unplugged_at_every_point_of_an_upload(tmp_path):
+    total = reports_of_a_full_upload(tmp_path)
+    nv_file = tmp_path / "nv.json"
+    for survived in range(total):
+        valve = EmulatedValve(E04, 1, nv_path=nv_file)
+        session, transport = open_session(valve)
+        stored_before = session.download()
+        transport.faults = LinkFaults(die_after=transport.reports_on_link + survived)
+        with pytest.raises(DeviceDisconnectedError) as caught:
+            session.upload(new_values(session.variant))
+        message = str(caught.value)
+        step = caught.value.step
+        assert f"upload failed while {STEP_TEXT[step]}" in message
+        assert "USB link is down" in message
+        store_request_arrived = survived >= total - 1
+        if store_request_arrived:
+            assert step == "store"
+
+        valve.restart()
+        after = open_session(valve)[0].download()
+        if store_request_arrived:  # only the store's answer was lost
+            assert after == new_values(session.variant)
+            assert "may not have completed" in message
+        else:
+            assert after == stored_before, f"half-written valve after report {survived}"
+            assert "nothing was stored" in message or step == "store"
+        reloaded = EmulatedValve(E04, 1, nv_path=nv_file)  # the EEPROM file agrees
+        assert open_session(reloaded)[0].download() == after
+        nv_file.unlink(missing_ok=True)
+
+
+STEP_TEXT = {"write": "writing the parameters", "verify": "reading them back", "store": "storing"}
+
+
+def test_every_step_can_fail_and_is_named(tmp_path):
+    total = reports_of_a_full_upload(tmp_path)
+    steps = set()
+    for survived in range(0, total, 1):
+        valve = EmulatedValve(E04, 1)
+        session, transport = open_session(valve)
+        transport.faults = LinkFaults(die_after=transport.reports_on_link + survived)
+        with pytest.raises(DeviceDisconnectedError) as caught:
+            session.upload(new_values(session.variant))
+        steps.add(caught.value.step)
+    assert steps == {"write", "verify", "store"}
+
+
+def test_after_the_link_died_every_request_fails_at_once(tmp_path):
+    session, transport = open_session(EmulatedValve(E04, 1))
+    transport.faults = LinkFaults(die_after=transport.reports_on_link)
+    for _ in range(2):
+        with pytest.raises(DeviceDisconnectedError, match="USB link is down"):
+            session.read("LIMTA")
+
+
+@pytest.fixture
+def link():
+    valve = EmulatedValve(E04, 1)
+    session, transport = open_session(valve)
+    return valve, session, transport
+
+
+def count_writes(valve, monkeypatch) -> list[tuple[int, int]]:
+    calls: list[tuple[int, int]] = []
+    original = valve.write_bytes
+
+    def counting(index, subindex, data):
+        calls.append((index, subindex))
+        original(index, subindex, data)
+
+    monkeypatch.setattr(valve, "write_bytes", counting)
+    return calls
+
+
+def test_lost_request_is_repeated(link):
+    _valve, session, transport = link
+    transport.faults = LinkFaults(drop=frozenset({transport.reports_on_link + 1}))
+    assert session.read("SNV") == 1
+    assert transport.stats.retries == 1
+
+
+def test_lost_answer_to_a_write_repeats_the_request_but_not_the_write(link, monkeypatch):
+    valve, session, transport = link
+    calls = count_writes(valve, monkeypatch)
+    transport.faults = LinkFaults(drop=frozenset({transport.reports_on_link + 2}))
+    session.write("LIMTA", 1500)
+    assert transport.stats.retries == 1
+    assert calls == [CATALOGUE["LIMTA"].key]  # the valve answered the repeat from its cache
+    assert session.read("LIMTA") == 1500
+
+
+def test_duplicated_request_is_executed_once_and_the_extra_answer_discarded(link, monkeypatch):
+    valve, session, transport = link
+    calls = count_writes(valve, monkeypatch)
+    transport.faults = LinkFaults(duplicate=frozenset({transport.reports_on_link + 1}))
+    session.write("LIMTB", 1600)
+    assert calls == [CATALOGUE["LIMTB"].key]
+    assert session.read("LIMTB") == 1600
+    assert transport.stats.discarded == 1
+
+
+def test_late_answer_is_discarded_after_the_retry(link):
+    valve, session, transport = link
+    late = {transport.reports_on_link + 2: 0.4}  # later than the 0.25 s timeout
+    transport.faults = LinkFaults(late=late)
+    assert session.read_many(["SNV", "AINSETP"]) == {"SNV": 1, "AINSETP": 9}
+    assert transport.stats.retries == 1
+    valve.advance(0.5)  # the late answer arrives meanwhile
+    assert session.read("SNV") == 1
+    assert transport.stats.discarded == 1
+
+
+def test_a_lost_restart_is_not_repeated(link):
+    _valve, session, transport = link
+    transport.faults = LinkFaults(drop=frozenset({transport.reports_on_link + 1}))
+    with pytest.raises(DeviceTimeoutError, match=r"did not answer RESTART within 0.25 s"):
+        session.restart()
+    assert transport.stats.retries == 0
+
+
+def test_silent_valve_times_out_after_the_retries(link):
+    _valve, session, transport = link
+    first = transport.reports_on_link + 1
+    transport.faults = LinkFaults(drop=frozenset(range(first, first + 8)))
+    with pytest.raises(
+        DeviceTimeoutError, match=r"did not answer READ within 0.25 s \(4 attempts\)"
+    ):
+        session.read("SNV")
