@@ -148,7 +148,7 @@ def test_single_trigger_holds_the_captured_step(scope, conn):
     assert x0 == pytest.approx(-0.02) and x1 == pytest.approx(0.08)
     conn.samples_received.emit(_step_block(1000, 200))  # recording goes on, display holds
     assert scope.capture.buffer.total == 2300
-    assert len(scope._view_data()[0]) == 1300
+    assert len(scope.display.data()[0]) == 1300
 
 
 def test_pause_holds_the_display_and_allows_time_zoom(scope, conn):
@@ -157,14 +157,14 @@ def test_pause_holds_the_display_and_allows_time_zoom(scope, conn):
     conn.samples_received.emit(np.zeros((100, 1)))
     scope._redraw()
     scope.controls.pause.click()
-    held = scope._view_data()[0].copy()
+    held = scope.display.data()[0].copy()
     conn.samples_received.emit(np.ones((100, 1)))
     scope._redraw()
-    np.testing.assert_array_equal(scope._view_data()[0], held)
+    np.testing.assert_array_equal(scope.display.data()[0], held)
     assert scope.plot.views[0].state["mouseEnabled"][0]
     scope.controls.pause.click()
     scope._redraw()
-    assert len(scope._view_data()[0]) == 200
+    assert len(scope.display.data()[0]) == 200
     assert not scope.plot.views[0].state["mouseEnabled"][0]
 
 
@@ -196,7 +196,7 @@ def test_step_figures_are_shown_for_the_captured_step(scope, conn):
     conn.samples_received.emit(np.column_stack([np.where(t >= 0.1, 8192, 0), resp]))
     scope._redraw()
     scope.stop()
-    scope._update_readouts()
+    scope.display.update_readouts()
     figures = scope.step_panel.figures
     assert figures["rise"].text() == "21.97 ms"  # τ·ln 9
     assert figures["overshoot"].text() == "0.0 %"
@@ -236,5 +236,5 @@ def test_link_loss_stops_the_recording_and_keeps_the_data(scope, conn):
     conn.samples_received.emit(np.zeros((100, 1)))
     conn.drop_link()
     assert not scope.running
-    assert len(scope._view_data()[0]) == 100
+    assert len(scope.display.data()[0]) == 100
     assert "needs a connected valve" in scope.status.text()

@@ -10,8 +10,6 @@ on. Online only, like PRM9.exe.
 
 from __future__ import annotations
 
-import time
-from collections import deque
 from pathlib import Path
 from typing import Any
 
@@ -28,26 +26,15 @@ from PySide6.QtWidgets import (
 )
 
 from prm9tool.errors import ValueRangeError
-from prm9tool.scope import (
-    Capture,
-    Frame,
-    GeneratorSettings,
-    StepFigures,
-    TriggerEngine,
-    TriggerMode,
-    TriggerSettings,
-    cursor_readout,
-    step_figures,
-    write_csv,
-)
+from prm9tool.scope import Capture, GeneratorSettings, write_csv
 from prm9tool.signals import BY_KEY, signals_for
+from prm9tool.views.scope_display import ScopeDisplay
 from prm9tool.views.scope_generator import GeneratorPanel, SetpointGenerator
 from prm9tool.views.scope_panels import ChannelPanel, ControlPanel
 from prm9tool.views.scope_plot import ScopePlot
 from prm9tool.views.scope_readout import CursorPanel, StepPanel
 
 REDRAW_MS = 33  # ~30 Hz
-FIGURES_EVERY = 8  # live step figures every 8th redraw (~4 Hz)
 
 
 class ScopeWidget(QWidget):
@@ -57,17 +44,9 @@ class ScopeWidget(QWidget):
         super().__init__(parent)
         self._connection = connection
         self._document = document
-        self._capture: Capture | None = None
-        self._engine = TriggerEngine(TriggerSettings(), 1)
         self._running = False
         self._accepting = False  # False between a (re)start request and stream_started
-        self._frozen: tuple[np.ndarray, np.ndarray] | None = None
-        self._shown: tuple[np.ndarray, np.ndarray] = (np.empty(0), np.empty((0, 0)))
-        self._frame: Frame | None = None
-        self._drawn_total = -1
-        self._redraws = 0
         self._generator_note = ""
-        self.redraw_durations: deque[float] = deque(maxlen=100_000)
         self.generator = SetpointGenerator(connection, self)
         self._build()
         self._connect()
@@ -81,6 +60,7 @@ class ScopeWidget(QWidget):
         self.step_panel = StepPanel()
         self.controls = ControlPanel()
         self.generator_panel = GeneratorPanel()
+        self.display = ScopeDisplay(self.plot, self.cursor_panel, self.step_panel, self)
         self.status = QLabel()
         self.status.setTextInteractionFlags(Qt.TextInteractionFlag.TextSelectableByMouse)
         self._timer = QTimer(self)
@@ -119,9 +99,7 @@ class ScopeWidget(QWidget):
         c.cursors_toggled.connect(self.plot.set_cursors_visible)
         c.csv_requested.connect(self._on_csv_requested)
         c.png_requested.connect(self._on_png_requested)
-        self.plot.cursors_moved.connect(self._update_readouts)
-        self.plot.x_range_changed.connect(self._update_readouts)
-        self.step_panel.channels_changed.connect(self._update_readouts)
+        self.display.held.connect(self._on_display_held)
         self.generator_panel.start_requested.connect(self._on_generator_start_requested)
         self.generator_panel.stop_requested.connect(self.generator.stop)
         self.generator.running_changed.connect(self.generator_panel.set_running)
@@ -136,7 +114,7 @@ class ScopeWidget(QWidget):
     @property
     def capture(self) -> Capture | None:
         """The current (or last) recording."""
-        return self._capture
+        return self.display.capture
 
     def preselect(self, key: str) -> None:
         """Activate measuring point ``key`` (a red dot of the diagram was clicked)."""
@@ -162,7 +140,7 @@ class ScopeWidget(QWidget):
             self._accepting = False
             if self._connection.is_online:
                 self._connection.stop_stream()
-            self._freeze()
+            self.display.freeze()
         self._timer.stop()
         self._update_controls()
 
@@ -171,123 +149,38 @@ class ScopeWidget(QWidget):
         """(Re)start the stream cleanly: samples of the old stream are dropped."""
         self._accepting = False
         self._connection.stop_stream()
-        self._capture = Capture([BY_KEY[k] for k in keys], self.controls.rate_hz())
-        self._frozen = None
+        self.display.set_capture(Capture([BY_KEY[k] for k in keys], self.controls.rate_hz()))
         self.controls.set_paused(False)
         self._new_engine()
         self._connection.start_stream(keys, self.controls.rate_hz())
-        self.plot.set_time_interactive(False)
         self._timer.start()
         self._update_controls()
 
     def _on_stream_started(self, keys: list[str]) -> None:
-        if self._capture is not None and self._running and list(keys) == self._capture.keys:
-            self._capture.buffer.clear()
-            self._engine.rearm()
+        capture = self.display.capture
+        if capture is not None and self._running and list(keys) == capture.keys:
+            capture.buffer.clear()
+            self.display.engine.rearm()
             self._accepting = True
 
     def _on_samples_received(self, block: np.ndarray) -> None:
-        if not self._accepting or self._capture is None:
+        capture = self.display.capture
+        if not self._accepting or capture is None:
             return
-        if block.ndim != 2 or block.shape[1] != len(self._capture.signals):
+        if block.ndim != 2 or block.shape[1] != len(capture.signals):
             return
-        self._capture.feed(block)
+        capture.feed(block)
 
     def _new_engine(self) -> None:
-        rate = self._capture.rate_hz if self._capture else self.controls.rate_hz()
-        window = round(self.controls.window_s() * rate)
-        settings = self.controls.trigger_settings()
-        self._engine = TriggerEngine(settings, window)
-        if self._capture is not None:
-            self._engine.rearm(self._capture.buffer.total)
-        roll = settings.mode is TriggerMode.ROLL
-        self.plot.set_time_label(self.tr("Time [s]") if roll else self.tr("Time from trigger [s]"))
-        self._drawn_total = -1
+        self.display.set_trigger(self.controls.trigger_settings(), self.controls.window_s())
 
-    # --- drawing -----------------------------------------------------------------------------
     def _redraw(self) -> None:
-        capture = self._capture
-        if capture is None or self._frozen is not None:
-            return
-        if capture.buffer.total == self._drawn_total:
-            return
-        started = time.perf_counter()
-        self._drawn_total = capture.buffer.total
-        frame = self._engine.update(capture.buffer)
-        if frame is not None:
-            self._draw_frame(capture, frame)
-        if self._engine.done:
-            self._freeze()
-            self.controls.set_paused(True)
-        self._redraws += 1
-        if self.plot.cursors_visible or self._redraws % FIGURES_EVERY == 0:
-            self._update_readouts()
+        if self.display.redraw():
+            self._update_status()
+
+    def _on_display_held(self) -> None:
+        self.controls.set_paused(True)
         self._update_status()
-        self.redraw_durations.append(time.perf_counter() - started)
-
-    def _draw_frame(self, capture: Capture, frame: Frame) -> None:
-        start, values = capture.buffer.window(frame.start, frame.stop)
-        t = capture.times(start, len(values), frame.origin)
-        self._frame = frame
-        self._shown = (t, values)
-        self.plot.show_data(t, values)
-        rate = capture.rate_hz
-        self.plot.set_x_range(
-            (frame.start - frame.origin) / rate, (frame.stop - frame.origin) / rate
-        )
-        _, latest = capture.buffer.latest(1)
-        if len(latest):
-            self.plot.show_latest(latest[0])
-
-    def _freeze(self) -> None:
-        """Hold the display on a copy of everything recorded (zoom and pan with the mouse)."""
-        capture = self._capture
-        if capture is None or self._frozen is not None:
-            return
-        origin = self._frame.origin if self._frame is not None else 0
-        start, values = capture.buffer.window(capture.buffer.first, capture.buffer.total)
-        self._frozen = (capture.times(start, len(values), origin), values.copy())
-        self.plot.show_data(*self._frozen)
-        self.plot.set_time_interactive(True)
-        self._update_readouts()
-        self._update_status()
-
-    def _thaw(self) -> None:
-        self._frozen = None
-        self._drawn_total = -1
-        self.plot.set_time_interactive(False)
-        if self._engine.done and self._capture is not None:
-            self._engine.rearm(self._capture.buffer.total)
-
-    def _view_data(self) -> tuple[np.ndarray, np.ndarray]:
-        """Times and values of what the plot holds."""
-        return self._frozen if self._frozen is not None else self._shown
-
-    def _update_readouts(self) -> None:
-        t, values = self._view_data()
-        if not len(t):
-            self.cursor_panel.show_readout(None)
-            self.step_panel.show_figures(None, "")
-            return
-        if self.plot.cursors_visible:
-            self.cursor_panel.show_readout(cursor_readout(t, values, *self.plot.cursor_times()))
-            x0, x1 = sorted(self.plot.cursor_times())
-            region = self.tr("the samples between cursors A and B")
-        else:
-            self.cursor_panel.show_readout(None)
-            x0, x1 = self.plot.x_range()
-            region = self.tr("the visible window")
-        self.step_panel.show_figures(self._figures(t, values, x0, x1), region)
-
-    def _figures(
-        self, t: np.ndarray, values: np.ndarray, x0: float, x1: float
-    ) -> StepFigures | None:
-        response, reference = self.step_panel.response_slot(), self.step_panel.reference_slot()
-        if response is None or response >= values.shape[1]:
-            return None
-        inside = (t >= x0) & (t <= x1)
-        ref = values[inside, reference] if reference is not None else None
-        return step_figures(t[inside], values[inside, response], ref)
 
     # --- controls ----------------------------------------------------------------------------
     def _on_selection_changed(self, keys: list[str]) -> None:
@@ -304,19 +197,21 @@ class ScopeWidget(QWidget):
         self._update_controls()
 
     def _on_rate_changed(self, _rate: int) -> None:
-        if self._running and self._capture is not None:
-            self._start_capture(self._capture.keys)
+        if self._running and self.display.capture is not None:
+            self._start_capture(self.display.capture.keys)
 
     def _on_trigger_changed(self, *_: object) -> None:
         self._new_engine()
-        if self._frozen is not None and self._running and not self.controls.pause.isChecked():
-            self._thaw()
+        if self.display.frozen and self._running and not self.controls.pause.isChecked():
+            self.display.thaw()
+        self._update_status()
 
     def _on_pause_toggled(self, paused: bool) -> None:
         if paused:
-            self._freeze()
+            self.display.freeze()
         else:
-            self._thaw()
+            self.display.thaw()
+        self._update_status()
 
     def _on_type_key_changed(self, *_: object) -> None:
         self.channels.set_signals(signals_for(self._document.variant))
@@ -334,14 +229,14 @@ class ScopeWidget(QWidget):
         if self._running:
             self._running = False
             self._accepting = False
-            self._freeze()
+            self.display.freeze()
             self._timer.stop()
         self._update_controls()
 
     def _update_controls(self) -> None:
         online = bool(self._connection.is_online)
         self.controls.set_running(self._running, online and bool(self.channels.selected()))
-        if self._frozen is not None and self._running:
+        if self.display.frozen and self._running:
             self.controls.set_paused(True)
         self.generator_panel.setEnabled(online)
         self._update_status()
@@ -351,17 +246,17 @@ class ScopeWidget(QWidget):
             self._say(" ".join(filter(None, (self._generator_note, self._offline_text()))))
         elif not self._running:
             self._say(self.tr("Stopped. Choose up to three measuring points and press Start."))
-        elif self._engine.done:
+        elif self.display.engine.done:
             self._say(self.tr("Single capture complete. Resume arms the trigger again."))
-        elif self._frozen is not None:
+        elif self.display.frozen:
             self._say(self.tr("Paused: zoom and pan with the mouse; recording continues."))
-        elif self._engine.waiting and self._frame is None:
+        elif self.display.waiting:
             self._say(self.tr("Waiting for the trigger…"))
         else:
             self._say(self._recording_text())
 
     def _recording_text(self) -> str:
-        rate = self._capture.rate_hz if self._capture else 0
+        rate = self.display.capture.rate_hz if self.display.capture else 0
         lost = getattr(self._connection, "samples_lost", 0) or 0
         text = self.tr("Recording at {0} Hz.").format(rate)
         if lost:
@@ -407,19 +302,12 @@ class ScopeWidget(QWidget):
     # --- export ------------------------------------------------------------------------------
     def export_csv(self, path: str | Path, whole: bool) -> int:
         """Write the visible window (or the whole recording) as CSV; returns the row count."""
-        if self._capture is None:
+        capture = self.display.capture
+        if capture is None:
             raise ValueError(self.tr("Nothing recorded yet."))
-        t, values = self._view_data()
-        if whole and self._frozen is None:
-            origin = self._frame.origin if self._frame is not None else 0
-            start, values = self._capture.buffer.window(0, self._capture.buffer.total)
-            t = self._capture.times(start, len(values), origin)
-        elif not whole:
-            x0, x1 = self.plot.x_range()
-            inside = (t >= x0) & (t <= x1)
-            t, values = t[inside], values[inside]
+        t, values = self.display.whole_data() if whole else self.display.visible_data()
         with open(path, "w", encoding="utf-8", newline="") as out:
-            return write_csv(out, t, values, self._capture.signals)
+            return write_csv(out, t, values, capture.signals)
 
     def export_png(self, path: str | Path) -> None:
         """Save the plot with its legend as a PNG image."""

@@ -72,7 +72,10 @@ class ScopePlot(QWidget):
         self.graphics = pg.GraphicsLayoutWidget()
         self.graphics.setBackground("#111418")
         self.item = self.graphics.addPlot(row=0, col=0)
-        self.item.showGrid(x=True, y=True, alpha=0.25)
+        self.item.showGrid(x=True, y=True, alpha=0.3)
+        self.item.getAxis("right").setGrid(False)  # the grid follows channel 1 only
+        for name in ("left", "bottom"):  # grid at major ticks only: minor grid lines cost ~15 ms
+            self.item.getAxis(name).setStyle(maxTickLevel=0)
         self.item.hideButtons()
         self.views = [self.item.getViewBox(), pg.ViewBox(), pg.ViewBox()]
         self.axes = [self.item.getAxis("left"), self.item.getAxis("right"), pg.AxisItem("right")]
@@ -96,7 +99,7 @@ class ScopePlot(QWidget):
         self.retranslate()
 
     def _make_curve(self, slot: int) -> pg.PlotDataItem:
-        curve = pg.PlotDataItem(pen=pg.mkPen(COLOURS[slot], width=1.5))
+        curve = pg.PlotDataItem(pen=pg.mkPen(COLOURS[slot], width=1))  # cosmetic: fast path
         curve.setClipToView(True)
         curve.setDownsampling(auto=True, method="peak")
         curve.setSkipFiniteCheck(True)
