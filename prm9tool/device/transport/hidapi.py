@@ -9,6 +9,7 @@ a USB device is actually used, so a machine without a working hidapi runs the em
 from __future__ import annotations
 
 import os
+import time
 from collections.abc import Callable
 from dataclasses import dataclass
 from types import ModuleType
@@ -84,7 +85,13 @@ def enumerate_valves(usb_filter: UsbFilter | None = None) -> list[dict[str, Any]
 
 
 class HidTransport(Transport):
-    """A valve on USB, opened by its HID device path."""
+    """A valve on USB, opened by its HID device path.
+
+    ``finder`` locates the valve again after a restart (USB re-enumeration may give it a new
+    path); ``settle_s`` is how long the valve needs to drop off the bus after a restart.
+    """
+
+    settle_s = 0.5
 
     def __init__(
         self,
@@ -134,6 +141,7 @@ class HidTransport(Transport):
         super().reconnect()
         with self._lock:
             self._device.close()
+            time.sleep(self.settle_s)
             path = self._finder() if self._finder else self.path
             if path is None:
                 self._broken = DeviceDisconnectedError(
