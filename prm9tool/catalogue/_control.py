@@ -120,7 +120,7 @@ CONTROLLERS: list[Parameter] = [
         0x2020,
         T("Position controller", "Lageregler", "Regulátor polohy"),
         Applies(),
-        (800, 0, 0, 20),
+        (40, 1000, 40, 20),  # tuned on the emulator plant: docs/emulator.md (decision)
     ),
     *_pidt1(
         "PRC",

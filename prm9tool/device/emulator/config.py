@@ -98,7 +98,7 @@ def coefficients(
             min(values("LIMTB"), fw.max_current_ma),
         ),
         "dither": (
-            values("DTAMP") / FULL * curnorm,
+            values("DTAMP") / FULL * curnorm * fw.dither_full_scale,
             2.0 * math.pi * min(values("DYNFREQ"), fw.dither_max_hz) * CYCLE_S,
         ),
         "current_pi": (
@@ -119,6 +119,7 @@ def coefficients(
         "actuator": (
             CYCLE_S / plant.actuator_full_speed_s / plant.stroke_m,
             plant.spool_overlap * plant.stroke_m,
+            0.0 if variant.coils is Coils.AB else CYCLE_S / plant.actuator_return_s,
         ),
         "coil_discrete": (*coil_discrete(r_coil, plant), *coil_discrete(r_coil, plant)),
     }
@@ -135,7 +136,8 @@ def _mechanics(plant: PlantConstants) -> tuple[float, ...]:
         h / plant.spool_mass_kg,
         h,
         plant.substeps,
-        plant.stroke_m,
+        plant.stroke_m * plant.end_stop,
+        1.0 - math.exp(-CYCLE_S / plant.force_lag_s),
     )
 
 

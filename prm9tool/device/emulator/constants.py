@@ -23,10 +23,12 @@ class PlantConstants:
     force_n_per_a: float = 30.0  # solenoid force constant (assumption: 78 N at 2.6 A)
     spring_n_per_m: float = 21600.0  # centring spring rate (assumption: 54 N at full stroke)
     spool_mass_kg: float = 0.06  # spool + armatures (assumption; 95 Hz natural frequency)
-    damping_n_s_per_m: float = 36.0  # viscous + flow-force damping (assumption; zeta = 0.5)
-    coulomb_friction_n: float = 1.0  # sliding friction (assumption)
-    static_friction_n: float = 1.5  # break-away friction (assumption)
-    stroke_m: float = 0.0025  # spool stroke to each side = 100 % (assumption, Dn06)
+    damping_n_s_per_m: float = 72.0  # viscous + flow-force damping (assumption; zeta = 1)
+    coulomb_friction_n: float = 0.3  # sliding friction (assumption)
+    static_friction_n: float = 0.5  # break-away friction (assumption)
+    stroke_m: float = 0.0025  # spool travel for 100 % opening (assumption, Dn06)
+    end_stop: float = 1.15  # mechanical end stops at ±115 % of that travel (assumption)
+    force_lag_s: float = 0.003  # eddy-current lag of the magnetic force (assumption)
     substeps: int = 2  # mechanical integration sub-steps per 200 µs cycle
     lvdt_adc_bits: int = 12  # manual §2.2: 12-bit A/D converters
     lvdt_span: float = 1.25  # the LVDT ADC range covers ±125 % of the stroke (assumption)
@@ -34,6 +36,7 @@ class PlantConstants:
     actuator_full_speed_s: float = (
         0.5  # E04 load: full stroke in 0.5 s at 100 % opening (assumption)
     )
+    actuator_return_s: float = 1.0  # single-coil valves drive a spring-return load (assumption)
     actuator_start: float = 0.5  # E04 load starts at mid-stroke (assumption)
     spool_overlap: float = 0.0  # hydraulic overlap as a fraction of stroke (assumption: none)
     thermal_k_per_w: float = 1.2  # electronics temperature rise per W of coil loss (assumption)
@@ -50,6 +53,7 @@ class FirmwareConstants:
     current_kp_v_per_a: float = 100.0  # current PI, proportional (assumption: ~0.3 ms loop)
     current_ki_v_per_as: float = 20000.0  # current PI, integral (assumption)
     max_current_ma: float = 4000.0  # output stage limit (manual §2.2: max 4 A)
+    dither_full_scale: float = 0.10  # DTAMP 100 % = a peak dither of 10 % CURNORM (decision)
     dither_max_hz: float = 2500.0  # Nyquist of the 200 µs loop; higher settings are clamped
     fault_display_hold_s: float = 10.0  # error message returns to normal ~10 s (§5.5)
     fault_reaction_s: float = 0.005  # FAULT_REACTION -> FAULT/FAULT_HOLD after outputs off

@@ -44,6 +44,15 @@ def conditions(fw: Firmware) -> dict[str, tuple[bool, float]]:
     }
 
 
+def static_alarm(fw: Firmware) -> bool:
+    """True if a condition that only inputs, parameters or injections change is raised.
+
+    Evaluated when those change; the 1 ms task then runs the full table only while this, a
+    dynamic threshold (current, temperature, control deviation) or a pending error needs it.
+    """
+    return bool(fw.injected) or _setpoint_error(fw) or _sensor_error(fw) or _supply_error(fw)
+
+
 def _overcurrent(fw: Firmware, current_ma: float, key: str, fault: Fault) -> bool:
     """Comparator on the coil current; once tripped, the stage diagnostic keeps seeing the short."""
     if current_ma > fw.fw.overcurrent_ma:

@@ -85,7 +85,8 @@ class FaultMonitor:
         self.history: list[int] = []  # newest first (0x1003 sub 1 = newest)
         self.listeners: list[ErrorListener] = []
         self.active: tuple[ErrorKind, ...] = ()
-        self.warning = False
+        self.any_present = False  # some error is present (the spool must stay centred)
+        self.busy = False  # some condition is pending, present or on display hold
 
     def update(self, now: float, conditions: dict[str, tuple[bool, float]]) -> None:
         """Feed the raw conditions ``{key: (condition, delay_s)}`` at time ``now``."""
@@ -114,10 +115,6 @@ class FaultMonitor:
             t.present, t.since, t.active_until = False, -1.0, now + self.hold_s
         self._refresh(now)
 
-    def present(self) -> bool:
-        """True while any error is present (the valve must keep the spool centred)."""
-        return any(t.present for t in self.timers.values())
-
     def is_present(self, key: str) -> bool:
         """True while the error ``key`` is present."""
         return self.timers[key].present
@@ -144,10 +141,16 @@ class FaultMonitor:
         """Power cycle: forget every condition (the history is kept in RAM: cleared too)."""
         self.timers = {k.key: _Timer() for k in ERROR_KINDS}
         self.active = ()
-        self.warning = False
+        self.any_present = self.busy = False
         self.history.clear()
 
     def _refresh(self, now: float) -> None:
+        timers = self.timers.values()
+        for t in timers:
+            if 0.0 <= t.active_until <= now:
+                t.active_until = -1.0  # display hold over
+        self.any_present = any(t.present for t in timers)
+        self.busy = any(t.since >= 0.0 or t.active_until >= 0.0 for t in timers)
         before = self.active
         self.active = tuple(k for k in ERROR_KINDS if self.timers[k.key].active_until > now)
         if self.active == before:

@@ -11,7 +11,7 @@ from collections.abc import Callable, Generator
 from typing import Any
 
 from prm9tool.catalogue import CATALOGUE
-from prm9tool.device.emulator import config
+from prm9tool.device.emulator import config, detect
 from prm9tool.device.emulator.constants import (
     CYCLE_S,
     FULL,
@@ -28,10 +28,12 @@ from prm9tool.device.emulator.objdict import ObjectDictionary
 from prm9tool.device.emulator.statemachine import DeviceStateMachine
 from prm9tool.device.emulator.states import DeviceState, Fault
 from prm9tool.typekey import TypeKey
+from prm9tool.variant import Coils
 
 BITRATES = (20_000, 50_000, 125_000, 250_000, 500_000, 800_000, 1_000_000)  # switch 2..8 / 9..15
 PARAM_BITRATES = (1_000_000, 800_000, 500_000, 250_000, 125_000, 50_000, 20_000)  # BITRATE 0..6
 AUTO_CONTROL_WORD = 0x0F  # analog-only mode: the firmware enables itself (decision)
+THERMAL_TICKS = 10  # the thermal model runs every 10 ms (time constant: minutes)
 _ACTIVE_STATES = (DeviceState.HOLD, DeviceState.DEVICE_MODE_ACTIVE, DeviceState.FAULT_HOLD)
 
 
@@ -58,6 +60,7 @@ class Firmware:
         self.od.on_change = self._on_parameter_changed
         self.nv = NvImage(str(type_key), serial, nv_path)
         self.loop = LoopState()
+        self.loop.actuator = plant.actuator_start if self.variant.coils is Coils.AB else 0.0
         self.sm = DeviceStateMachine()
         self.faults = FaultMonitor(fw.fault_display_hold_s)
         self.inputs: dict[str, float] = {
@@ -72,7 +75,11 @@ class Firmware:
         self.latched_switches = tuple(self.switches)
         self.injected: set[Fault] = set()
         self.cycles = 0
+        self.ticks = 0
         self.tick_countdown = TICK_CYCLES
+        self.override_on = False
+        self.monitoring_threshold = 16384
+        self.static_alarm = False
         self.temperature_rise = 0.0
         self.warning = False
         self.override_last = 0.0
@@ -114,6 +121,7 @@ class Firmware:
     def power_up(self) -> None:
         """Power cycle: RAM from the NV image, switches latched, boot timeline restarted."""
         self.cycles = 0
+        self.ticks = 0
         self.tick_countdown = TICK_CYCLES
         self.latched_switches = (self.switches[0], self.switches[1])
         self._load_ram()
@@ -205,28 +213,51 @@ class Firmware:
 
     # --- the 1 ms task ------------------------------------------------------------------
     def tick(self) -> None:
-        """Boot timeline, thermal model, fault detection, state machine, outputs, listeners."""
+        """Boot timeline, thermal model, fault detection, state machine, outputs, listeners.
+
+        The common case (no fault pending, nothing near a threshold) costs a few comparisons;
+        the full condition table is evaluated only when something may have changed.
+        """
         now = self.time
-        dt = TICK_CYCLES * CYCLE_S
         if self.booting and now >= self.fw.boot_s - 1e-9:
             self._boot_finished()
-        self._thermal(dt)
-        self.faults.update(now, self._conditions())
-        temp = self.temperature
-        self.warning = temp > self.fw.temp_warning_c or (
-            self.warning and temp > self.fw.temp_warning_c - self.fw.temp_hysteresis_c
-        )
-        if self.faults.present():
-            self.sm.fault(self.fw.fault_reaction_s)
-        self.sm.tick(dt)
-        if self.analog_only and not self.booting:
+        self.ticks += 1
+        if self.ticks % THERMAL_TICKS == 0:
+            self._thermal(THERMAL_TICKS * TICK_CYCLES * CYCLE_S)
+        faults = self.faults
+        if self.static_alarm or faults.busy or self._dynamic_alarm():
+            faults.update(now, detect.conditions(self))
+        self._update_warning()
+        sm = self.sm
+        if faults.any_present:
+            sm.fault(self.fw.fault_reaction_s)
+        if sm.state is DeviceState.FAULT_REACTION:
+            sm.tick(TICK_CYCLES * CYCLE_S)
+        elif self.analog_only and not self.booting:
             self._auto_reset()
         self._update_outputs()
-        if self.od.get("SETPOVRON") and now - self.override_last > self.fw.override_timeout_s:
+        if self.override_on and now - self.override_last > self.fw.override_timeout_s:
             self.od.values[CATALOGUE["SETPOVRON"].key] = 0
             self.setpoint_dirty = True
         for listener in self.cycle_listeners:
             listener(now)
+
+    def _dynamic_alarm(self) -> bool:
+        ia, ib = self.loop.current_ma
+        limit = self.fw.overcurrent_ma
+        if ia > limit or ib > limit or self.temperature > self.fw.temp_warning_c:
+            return True
+        return (
+            abs(self.loop.ctrl_dev) > self.monitoring_threshold
+            and self.sm.state is DeviceState.DEVICE_MODE_ACTIVE
+        )
+
+    def _update_warning(self) -> None:
+        c = self.fw
+        temp = self.temperature
+        self.warning = temp > c.temp_warning_c or (
+            self.warning and temp > c.temp_warning_c - c.temp_hysteresis_c
+        )
 
     def _boot_finished(self) -> None:
         self.booting = False
@@ -234,19 +265,19 @@ class Firmware:
         if self.can_enabled:
             self.nmt_state = "operational" if self.od.get("NMTSTARTUP") == 0 else "pre-operational"
         else:
-            self.sm.write_control_word(AUTO_CONTROL_WORD, self.faults.present())
+            self.sm.write_control_word(AUTO_CONTROL_WORD, self.faults.any_present)
         self.setpoint_dirty = True
 
     def _auto_reset(self) -> None:
         sm = self.sm
-        if sm.state in (DeviceState.FAULT, DeviceState.FAULT_HOLD) and not self.faults.present():
+        if sm.state in (DeviceState.FAULT, DeviceState.FAULT_HOLD) and not self.faults.any_present:
             sm.write_control_word(AUTO_CONTROL_WORD & ~0x08, False)
             sm.write_control_word(AUTO_CONTROL_WORD, False)
 
     def _update_outputs(self) -> None:
         loop = self.loop
         state = self.sm.state
-        if self.booting or self.faults.present() or state not in _ACTIVE_STATES:
+        if self.booting or self.faults.any_present or state not in _ACTIVE_STATES:
             loop.mode = MODE_OFF
         elif state is DeviceState.DEVICE_MODE_ACTIVE:
             loop.mode = MODE_ACTIVE
@@ -286,11 +317,6 @@ class Firmware:
             return self.fw.injected_high_supply_v
         return self.inputs["supply_voltage"]
 
-    def _conditions(self) -> dict[str, tuple[bool, float]]:
-        from prm9tool.device.emulator.detect import conditions
-
-        return conditions(self)
-
     # --- inputs to the loop -----------------------------------------------------------
     def _on_parameter_changed(self, mnemonic: str) -> None:
         self.setpoint_dirty = True
@@ -326,6 +352,9 @@ class Firmware:
         )
         loop.static_signals = signals
         loop.target = signals[3]
+        self.override_on = bool(self.value("SETPOVRON"))
+        self.monitoring_threshold = self.value("MONTHRES")
+        self.static_alarm = detect.static_alarm(self)
         self.setpoint_dirty = self.config_dirty = False
 
     def _refresh_sensor(self, supply: float) -> None:

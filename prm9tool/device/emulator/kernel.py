@@ -121,6 +121,7 @@ def control_loop(s: LoopState) -> Generator[None, int, None]:
     v = s.spool_v
     act = s.actuator
     ia = ib = 0.0  # coil currents, mA
+    f = 0.0  # magnetic force, N
     ia_i = ib_i = 0.0  # current-controller integrators, V
     p_int = p_d = p_prev = 0.0  # position PIDT1
     q_int = q_d = q_prev = 0.0  # process PIDT1
@@ -145,12 +146,12 @@ def control_loop(s: LoopState) -> Generator[None, int, None]:
         damp, dph = c["dither"]
         ckp, cki, rff_a, rff_b = c["current_pi"]
         vmax_i = c["max_current_v"]
-        kf, ks, cd, fc, fs, im, h, nsub, xmax = c["mechanics"]
+        kf, ks, cd, fc, fs, im, h, nsub, xmax, flag = c["mechanics"]
         kx, lvdt_q, lvdt_lo = c["lvdt"]
         s_a, s_b, s_q, s_o, sinv, soffs, sgain, slin = c["sensor"]
         sl_x, sl_k, sl_b = c["sensor_curve"]
         gp, op, gn, on_ = c["deviation_gain"]
-        act_k, overlap = c["actuator"]
+        act_k, overlap, act_ret = c["actuator"]
         aa_c, ba_c, ab_c, bb_c = c["coil_discrete"]
         subs = range(nsub)
         while s.version == version:
@@ -333,11 +334,11 @@ def control_loop(s: LoopState) -> Generator[None, int, None]:
                     ib = ib * ab
                 # --- spool: force, spring, damping, friction, stroke limits ---------------
                 if two:
-                    f = kf * (ia - ib)
+                    f += (kf * (ia - ib) - f) * flag
                 elif only_b:
-                    f = kf * ib
+                    f += (kf * ib - f) * flag
                 else:
-                    f = kf * ia
+                    f += (kf * ia - f) * flag
                 for _k in subs:
                     fn = f - ks * x - cd * v
                     if v > 0.0:
@@ -374,7 +375,7 @@ def control_loop(s: LoopState) -> Generator[None, int, None]:
                             opening += overlap
                         else:
                             opening = 0.0
-                    act += opening * act_k
+                    act += opening * act_k - act * act_ret
                     if act > 1.0:
                         act = 1.0
                     elif act < 0.0:

@@ -98,7 +98,7 @@ def _commands(fw: Firmware) -> None:
         if fw.analog_only:
             raise abort((0x6040, 0), AbortCode.CANNOT_STORE_LOCAL_CONTROL)
         assert isinstance(value, int)
-        fw.sm.write_control_word(value, fw.faults.present())
+        fw.sm.write_control_word(value, fw.faults.any_present)
 
     def override_on(value: Value) -> None:
         od.values[od.param("SETPOVRON").key] = value

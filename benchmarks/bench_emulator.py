@@ -1,0 +1,149 @@
+"""Emulator speed: real-time factor of E02 and E04 with every feature on, and paced accuracy.
+
+The reference, measured in the same run, is a minimal inline Python cascade (threshold, ramp,
+PID, first-order coil, spring-mass spool) written below: the least any pure-Python 200 µs loop
+has to do. The ratio emulator/reference is the price of the full firmware and plant.
+
+    /work/venv/bin/python benchmarks/bench_emulator.py              # speed, ~30 s
+    /work/venv/bin/python benchmarks/bench_emulator.py --paced 10   # plus a 10 s paced run
+"""
+
+from __future__ import annotations
+
+import argparse
+import cProfile
+import pstats
+import statistics
+import time
+
+from prm9tool.device.emulator import EmulatedValve
+
+CYCLE_S = EmulatedValve.CYCLE_S
+TYPE_KEYS = {
+    "E02": "PRM9-06.3Z11/30-24E02S02-CA",
+    "E04": "PRM9-06.3Z11/30-24E04S02-CA",
+}
+
+
+def all_features(type_key: str) -> EmulatedValve:
+    """A booted valve in analog mode with ramps, linearizations, dither and a 3-channel capture."""
+    valve = EmulatedValve(type_key, switches=(0, 2))
+    valve.write(0x6332, 1, 200)  # ramps
+    valve.write(0x6335, 1, 200)
+    valve.write(0x6333, 1, 200)
+    valve.write(0x6336, 1, 200)
+    valve.write(0x6346, 0, -1)  # setpoint linearization on
+    if "E04" in type_key:
+        valve.write(0x2008, 0, 1)  # sensor linearization on
+        valve.write(0x2021, 2, 20)  # process Ki
+    valve.advance(2.0)
+    valve.capture_start(["position_actual", "current_a", "demand"])
+    return valve
+
+
+def emulator_cycle_s(type_key: str, seconds: float, repeat: int) -> float:
+    """Median wall time per 200 µs cycle, a square-wave setpoint keeping everything moving."""
+    valve = all_features(type_key)
+    times = []
+    for _ in range(repeat):
+        start = time.perf_counter()
+        for k in range(int(seconds / 0.1)):
+            valve.set_input("setpoint", 5.0 if k % 2 else -5.0)
+            valve.advance(0.1)
+            valve.capture_read()
+        times.append((time.perf_counter() - start) / (seconds / CYCLE_S))
+    return statistics.median(times)
+
+
+def reference_cycle_s(cycles: int, repeat: int) -> float:
+    """Median wall time per cycle of a minimal inline cascade (same loop style, no features)."""
+    times = []
+    for _ in range(repeat):
+        start = time.perf_counter()
+        minimal_cascade(cycles)
+        times.append((time.perf_counter() - start) / cycles)
+    return statistics.median(times)
+
+
+def minimal_cascade(cycles: int) -> float:
+    """Threshold, ramp, PID, first-order coil, spring-mass spool: locals only, one loop."""
+    dt = CYCLE_S
+    setpoint, threshold, step = 8192.0, 819.0, 16384.0 * dt / 0.2
+    kp, ki, kd = 0.4, 100.0 * dt, 0.0004 / dt
+    a_coil, b_coil = 0.9737, 0.0066  # L/R = 7.5 ms, mA per V per cycle
+    kf, ks, cd, im, xn = 0.03, 21600.0, 72.0, dt / 0.06, 16384.0 / 0.0025
+    ramp = integ = prev = current = x = v = 0.0
+    for k in range(cycles):
+        raw = setpoint if k % 10000 < 5000 else -setpoint
+        target = raw if abs(raw) >= threshold else 0.0
+        if ramp < target:
+            ramp = min(ramp + step, target)
+        elif ramp > target:
+            ramp = max(ramp - step, target)
+        error = ramp - x * xn
+        integ += ki * error
+        u = kp * error + integ + kd * (error - prev)
+        prev = error
+        volts = min(max(u * 0.0015, 0.0), 24.0)
+        current = a_coil * current + b_coil * volts * 1000.0
+        force = kf * current
+        v += (force - ks * x - cd * v) * im
+        x += v * dt
+    return x
+
+
+def paced_run(seconds: float) -> tuple[float, float, int]:
+    """(simulated s, wall s, dropped cycles) of a real paced run with every feature on."""
+    valve = all_features(TYPE_KEYS["E04"])
+    sim0 = valve.time
+    wall0 = time.monotonic()
+    valve.start()
+    time.sleep(seconds)
+    valve.stop()
+    wall = time.monotonic() - wall0
+    return valve.time - sim0, wall, valve.pacer.dropped_cycles
+
+
+def profile(type_key: str) -> None:
+    """Print where the time of one simulated second goes (cProfile, by total time)."""
+    valve = all_features(type_key)
+    profiler = cProfile.Profile()
+    profiler.enable()
+    for k in range(10):
+        valve.set_input("setpoint", 5.0 if k % 2 else -5.0)
+        valve.advance(0.1)
+        valve.capture_read()
+    profiler.disable()
+    pstats.Stats(profiler).sort_stats("tottime").print_stats(8)
+
+
+def main() -> None:
+    """Print the figures recorded in docs/PERFORMANCE.md."""
+    parser = argparse.ArgumentParser(description=__doc__)
+    parser.add_argument("--seconds", type=float, default=2.0, help="simulated s per repeat")
+    parser.add_argument("--repeat", type=int, default=5)
+    parser.add_argument("--paced", type=float, default=0.0, help="also run paced for N s")
+    parser.add_argument("--profile", action="store_true", help="print a cProfile summary")
+    args = parser.parse_args()
+    cycles = int(args.seconds / CYCLE_S)
+    reference = reference_cycle_s(cycles, args.repeat)
+    print(f"minimal inline cascade: {reference * 1e6:6.2f} µs/cycle")
+    for name, type_key in TYPE_KEYS.items():
+        cost = emulator_cycle_s(type_key, args.seconds, args.repeat)
+        print(
+            f"{name} all features: {cost * 1e6:6.2f} µs/cycle, "
+            f"{CYCLE_S / cost:6.1f}x real time, {cost / reference:4.2f}x the minimal cascade"
+        )
+        if args.profile:
+            profile(type_key)
+    if args.paced > 0:
+        sim, wall, dropped = paced_run(args.paced)
+        error = (sim - wall) / wall * 100
+        print(
+            f"paced E04 run: {sim:.4f} s simulated in {wall:.4f} s wall "
+            f"({error:+.3f} %), dropped cycles: {dropped}"
+        )
+
+
+if __name__ == "__main__":
+    main()
