@@ -1,0 +1,103 @@
+"""The two CANopen rotary switches of a -CA valve (manual §7.3.1 table 7-17, §8.7 fig. 8-17).
+
+Pure data and arithmetic, no Qt: the CANopen window draws the two switch tables from it and
+the diagram's CANopen block summarises the effective settings. Where table 7-17 is garbled
+the reading of SPEC §3 applies **(inference)**:
+
+* interface/bit-rate switch: 0 = analog only, CAN off; 1 = reserved (same as 0); 2…8 = 20 k,
+  50 k, 125 k, 250 k, 500 k, 800 k, 1 M without terminator; 9…F = the same seven rates with the
+  120 Ω terminator switched on. At 2…8 the terminator can be switched on over USB (CANTERM).
+* node-ID switch: 0 = node ID, bit rate and terminator set by software over USB (NODEID,
+  BITRATE, CANTERM); 1 = LSS and automatic bit-rate detection (node ID from NODEID, which an
+  LSS master stores; terminator CANTERM); 2…F = node ID 10, 15, …, 75 with the bit rate of the
+  interface switch. These are the rules of the emulated valve's CANopen interface
+  (prm9tool/device/emulator/canopen_settings.py).
+
+Switch positions are read by the valve at power-up only.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+BITRATES_KBIT: tuple[int, ...] = (20, 50, 125, 250, 500, 800, 1000)
+"""Bit rates of switch positions 2…8 (and 9…F), slowest first."""
+BITRATE_CODES_KBIT: tuple[int, ...] = (1000, 800, 500, 250, 125, 50, 20)
+"""Bit rate of each code of the catalogue parameter BITRATE (0 = 1 Mbit/s … 6 = 20 kbit/s)."""
+POSITIONS = range(16)
+
+
+@dataclass(frozen=True)
+class BaudPosition:
+    """What one position of the interface/bit-rate switch selects."""
+
+    position: int
+    can_enabled: bool
+    bitrate_kbit: int | None
+    terminator: bool  # switched on by the switch itself (positions 9…F)
+
+
+@dataclass(frozen=True)
+class NodePosition:
+    """What one position of the node-ID switch selects."""
+
+    position: int
+    node_id: int | None  # None: set by software (0) or by LSS (1)
+    software: bool  # position 0: node ID from the NODEID parameter
+    lss: bool  # position 1: LSS and automatic bit rate
+
+
+@dataclass(frozen=True)
+class CanSettings:
+    """The effective CANopen settings after power-up for given switches and parameters."""
+
+    can_enabled: bool
+    node_id: int | None  # None while CANopen is off
+    bitrate_kbit: int | None  # None: automatic bit-rate detection
+    terminator: bool
+
+
+def baud_position(position: int) -> BaudPosition:
+    """Decode interface/bit-rate switch ``position`` (0…15); ValueError outside."""
+    _check(position)
+    if position < 2:
+        return BaudPosition(position, False, None, False)
+    rate = BITRATES_KBIT[(position - 2) % len(BITRATES_KBIT)]
+    return BaudPosition(position, True, rate, position >= 9)
+
+
+def node_position(position: int) -> NodePosition:
+    """Decode node-ID switch ``position`` (0…15); ValueError outside."""
+    _check(position)
+    if position == 0:
+        return NodePosition(0, None, True, False)
+    if position == 1:
+        return NodePosition(1, None, False, True)
+    return NodePosition(position, 10 + 5 * (position - 2), False, False)
+
+
+def effective(
+    switch_baud: int, switch_node: int, node_id: int, bitrate_code: int, canterm: int
+) -> CanSettings:
+    """The settings a valve with these switches and parameters (raw values) runs with."""
+    baud, node = baud_position(switch_baud), node_position(switch_node)
+    if not baud.can_enabled:
+        return CanSettings(False, None, None, False)
+    terminator = baud.terminator or bool(canterm)
+    if node.lss:
+        return CanSettings(True, None, None, terminator)
+    if node.software:
+        return CanSettings(True, node_id, BITRATE_CODES_KBIT[bitrate_code], terminator)
+    return CanSettings(True, node.node_id, baud.bitrate_kbit, terminator)
+
+
+def format_bitrate(kbit: int | None) -> str:
+    """``500 kbit/s``, ``1 Mbit/s``; ``auto`` for None."""
+    if kbit is None:
+        return "auto"
+    return "1 Mbit/s" if kbit == 1000 else f"{kbit} kbit/s"
+
+
+def _check(position: int) -> None:
+    if position not in POSITIONS:
+        raise ValueError(f"a rotary switch has positions 0…15 (0…F), not {position}")

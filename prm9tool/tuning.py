@@ -1,0 +1,263 @@
+"""Simulated closed-loop step responses for tuning the PIDT1 controllers (model layer, QtCore).
+
+The controller dialogs show how the loop answers a setpoint step with the gains being tried.
+The answer comes from the emulator's firmware (the same 200 µs control loop and plant the
+emulated valve runs), stepped faster than real time in a worker thread; the GUI thread only
+receives finished :class:`StepResponse` objects through a queued signal.
+
+The simulated valve is an analog-only copy of the document's valve type (no CANopen master
+needed) with the document's parameters. The setpoint chain in front of the loop under test is
+made transparent (±10 V input, no threshold, no ramps, no linearization) so the response shows
+the loop alone; for the process loop (E04) the deviation gain/offset stay, they are part of it.
+"""
+
+from __future__ import annotations
+
+import threading
+from collections.abc import Mapping
+from dataclasses import dataclass, field
+
+from PySide6.QtCore import QCoreApplication, QObject, Signal
+
+from prm9tool.catalogue import CATALOGUE
+from prm9tool.document import ParameterDocument
+from prm9tool.errors import Prm9Error
+from prm9tool.signals import BY_KEY
+from prm9tool.typekey import TypeKey
+
+Raw = int | str
+
+LOOPS: dict[str, tuple[str, str, float, float]] = {
+    # loop: (setpoint signal, actual signal, step %, simulated seconds after the step)
+    "position": ("position_setpoint", "position_actual", 50.0, 0.06),
+    "process": ("process_setpoint", "process_actual", 20.0, 1.0),
+}
+PRE_STEP_S = 0.005
+SAMPLES = 300  # points per drawn response (the capture is decimated to about this many)
+VOLTS_PER_PERCENT = 0.1  # setpoint type 9: ±10 V = ±100 %
+_TRANSPARENT: dict[str, int] = {
+    "AINSETP": 9,
+    "INVERSEP": 0,
+    "THRESETP": 0,
+    "SETPLINON": 0,
+    "RAMPSETPOSUP": 0,
+    "RAMPSETPOSDOWN": 0,
+    "RAMPSETNEGUP": 0,
+    "RAMPSETNEGDOWN": 0,
+}
+# The position loop alone: spool position control mode (no process loop on E04), no gain/offset.
+_POSITION_ONLY: dict[str, int] = {
+    "CTRLMODE": 2,
+    "GAINSETPOS": 16384,
+    "GAINSETNEG": 16384,
+    "OFFSETPOS": 0,
+    "OFFSETNEG": 0,
+}
+
+
+@dataclass(frozen=True)
+class StepFigures:
+    """Figures of a step response, in % of the step and seconds."""
+
+    overshoot_pct: float
+    rise_time_s: float | None  # 10 → 90 % of the step; None if never reached
+    settling_time_s: float | None  # into ±2 % of the step for good; None if not settled
+    steady_error_pct: float
+
+
+@dataclass(frozen=True)
+class StepResponse:
+    """One simulated step: time (s, 0 = step) and the loop's setpoint and actual value (%)."""
+
+    loop: str
+    values: dict[str, int]
+    t: tuple[float, ...]
+    setpoint: tuple[float, ...]
+    actual: tuple[float, ...]
+    step_pct: float
+    actual_label: str = field(default="actual value")
+
+    def figures(self) -> StepFigures:
+        """Overshoot, rise time, settling time and steady-state error relative to the step."""
+        after = [(t, a) for t, a in zip(self.t, self.actual, strict=True) if t >= 0.0]
+        step = self.step_pct
+        start = self.actual[0] if self.actual else 0.0
+        rel = [(t, (a - start) / step) for t, a in after]
+        peak = max((r for _t, r in rel), default=0.0)
+        t10 = next((t for t, r in rel if r >= 0.1), None)
+        t90 = next((t for t, r in rel if r >= 0.9), None)
+        rise = t90 - t10 if t10 is not None and t90 is not None else None
+        outside = [t for t, r in rel if abs(r - 1.0) > 0.02]
+        settled = (
+            None
+            if not rel or (outside and outside[-1] == rel[-1][0])
+            else (outside[-1] if outside else 0.0)
+        )
+        final = rel[-1][1] if rel else 0.0
+        return StepFigures(max(0.0, (peak - 1.0) * 100.0), rise, settled, (1.0 - final) * 100.0)
+
+    def summary(self) -> str:
+        """One line for the dialog: overshoot, rise time, settling time, remaining error."""
+        f = self.figures()
+        tr = QCoreApplication.translate
+
+        def ms(value: float | None) -> str:
+            return (
+                tr("StepResponse", "not reached") if value is None else f"{value * 1000.0:.1f} ms"
+            )
+
+        return (
+            tr(
+                "StepResponse",
+                "Step %1 %: overshoot %2 %, rise time %3, settling (±2 %) %4, remaining error %5 %",
+            )
+            .replace("%1", f"{self.step_pct:g}")
+            .replace("%2", f"{f.overshoot_pct:.1f}")
+            .replace("%3", ms(f.rise_time_s))
+            .replace("%4", ms(f.settling_time_s))
+            .replace("%5", f"{f.steady_error_pct:.1f}")
+        )
+
+
+def simulation_values(base: Mapping[str, Raw], loop: str) -> dict[str, Raw]:
+    """The parameter set the simulated valve gets: ``base`` with the chain made transparent."""
+    values = dict(base)
+    values.update(_TRANSPARENT)
+    if loop == "position":
+        values.update(_POSITION_ONLY)
+    return values
+
+
+def simulate_step(type_key: str | TypeKey, values: Mapping[str, Raw], loop: str) -> StepResponse:
+    """Run the emulated valve through a setpoint step and return the loop's response.
+
+    Blocking (tens to hundreds of milliseconds): call it off the GUI thread. Raises
+    Prm9Error subclasses if the parameters are refused by the emulated valve.
+    """
+    from prm9tool.device.emulator import EmulatedValve  # lazy: the emulator is heavy to import
+
+    key = TypeKey.parse(str(type_key))
+    analog = TypeKey(key.size, key.spool, key.flow, key.supply, key.config, False)
+    sp_key, act_key, step, duration = LOOPS[loop]
+    valve = EmulatedValve(analog)
+    for mnemonic, raw in simulation_values(values, loop).items():
+        param = CATALOGUE.get(mnemonic)
+        if param is not None and param.writable and param.applies(analog.variant):
+            valve.write(param.index, param.subindex, raw)
+    valve.set_input("setpoint", 0.0)
+    if loop == "process":
+        valve.set_input("sensor_from_plant", 1)
+    _power_up(valve)
+    total = PRE_STEP_S + duration
+    decimation = max(1, round(total / valve.CYCLE_S / SAMPLES))
+    valve.capture_start([sp_key, act_key], decimation)
+    valve.advance(PRE_STEP_S)
+    valve.set_input("setpoint", step * VOLTS_PER_PERCENT)
+    valve.advance(duration)
+    data = valve.capture_read()
+    valve.capture_stop()
+    dt = valve.CYCLE_S * decimation
+    scale = BY_KEY[sp_key].scale
+    times = tuple(n * dt - PRE_STEP_S for n in range(len(data)))
+    controller = {mn: int(v) for mn, v in values.items() if mn.startswith(("POS", "PRC"))}
+    return StepResponse(
+        loop,
+        controller,
+        times,
+        tuple(float(v) * scale for v in data[:, 0]),
+        tuple(float(v) * BY_KEY[act_key].scale for v in data[:, 1]),
+        step,
+    )
+
+
+def _power_up(valve: object, limit_s: float = 5.0, step_s: float = 0.05) -> None:
+    """Advance through the boot timeline until the setpoint is effective, then settle."""
+    elapsed = 0.0
+    while valve.status().booting and elapsed < limit_s:  # type: ignore[attr-defined]
+        valve.advance(step_s)  # type: ignore[attr-defined]
+        elapsed += step_s
+    valve.advance(step_s)  # type: ignore[attr-defined]
+
+
+class _Relay(QObject):
+    """Carries results from the worker thread to the GUI thread (queued signals)."""
+
+    finished = Signal(object)
+    failed = Signal(str)
+
+
+class StepSimulator(QObject):
+    """Runs :func:`simulate_step` in a worker thread; the newest request wins.
+
+    ``request(values)`` may be called as often as a slider moves: while one simulation runs,
+    only the latest pending request is kept and run next.
+    """
+
+    response_ready = Signal(object)  # StepResponse
+    failed = Signal(str)
+
+    def __init__(
+        self,
+        type_key: str,
+        base_values: Mapping[str, Raw],
+        loop: str,
+        parent: QObject | None = None,
+    ) -> None:
+        super().__init__(parent)
+        if loop not in LOOPS:
+            raise ValueError(f"unknown loop {loop!r}; expected one of {', '.join(LOOPS)}")
+        self.type_key, self.loop = type_key, loop
+        self._base = dict(base_values)
+        self._lock = threading.Lock()
+        self._pending: dict[str, int] | None = None
+        self._thread: threading.Thread | None = None
+        self._stopped = False
+        self._relay = _Relay()
+        self._relay.finished.connect(self.response_ready)
+        self._relay.failed.connect(self.failed)
+
+    @classmethod
+    def for_document(cls, document: ParameterDocument, loop: str) -> StepSimulator:
+        """A simulator for ``document``'s valve type and current parameter values."""
+        return cls(str(document.type_key), dict(document.values), loop)
+
+    @property
+    def busy(self) -> bool:
+        """True while a simulation runs or waits."""
+        thread = self._thread
+        return thread is not None and thread.is_alive()
+
+    def request(self, controller_values: Mapping[str, int]) -> None:
+        """Simulate with ``controller_values`` overriding the base set (asynchronous)."""
+        with self._lock:
+            if self._stopped:
+                return
+            self._pending = dict(controller_values)
+            if self._thread is None or not self._thread.is_alive():
+                self._thread = threading.Thread(
+                    target=self._work, name="step-simulator", daemon=True
+                )
+                self._thread.start()
+
+    def stop(self, timeout: float = 5.0) -> None:
+        """Drop pending requests and wait for a running simulation to end."""
+        with self._lock:
+            self._stopped = True
+            self._pending = None
+            thread = self._thread
+        if thread is not None:
+            thread.join(timeout)
+
+    def _work(self) -> None:
+        relay = self._relay  # keeps the relay alive while the thread runs
+        while True:
+            with self._lock:
+                values, self._pending = self._pending, None
+            if values is None:
+                return
+            try:
+                response = simulate_step(self.type_key, {**self._base, **values}, self.loop)
+            except (Prm9Error, ValueError) as exc:
+                relay.failed.emit(str(exc))
+                continue
+            relay.finished.emit(response)

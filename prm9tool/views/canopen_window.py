@@ -1,0 +1,364 @@
+"""The CANopen window (manual §8.7, figure 8-17): rotary switches, terminator, node ID.
+
+Left: the interface/bit-rate switch table with the current position marked (mark "a") and
+the terminator state of positions 9…F (mark "c"). Right: the node-ID switch table with the
+current position (mark "d"). Below: the terminator on/off choice (mark "b") and the node ID
+1…127 used when the node-ID switch is at 0 (mark "e"), plus the software bit rate.
+
+The valve reads its switches at power-up only, so the positions shown are those of the last
+start. A change is an undoable document edit and, online, is written to the valve and stored
+in its non-volatile memory; it takes effect after the next restart, which the window says.
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+from PySide6.QtCore import QEvent, QObject, QSignalBlocker, Qt
+from PySide6.QtGui import QBrush, QColor, QFont
+from PySide6.QtWidgets import (
+    QAbstractItemView,
+    QCheckBox,
+    QComboBox,
+    QDialog,
+    QDialogButtonBox,
+    QFormLayout,
+    QGroupBox,
+    QHBoxLayout,
+    QHeaderView,
+    QLabel,
+    QSpinBox,
+    QTableWidget,
+    QTableWidgetItem,
+    QVBoxLayout,
+    QWidget,
+)
+
+from prm9tool.canopen_switches import (
+    POSITIONS,
+    baud_position,
+    effective,
+    format_bitrate,
+    node_position,
+)
+from prm9tool.catalogue import CATALOGUE
+from prm9tool.document import ParameterDocument, Raw
+from prm9tool.errors import ValueRangeError
+from prm9tool.i18n import current_language
+
+SETTINGS = ("NODEID", "BITRATE", "CANTERM")
+SWITCHES = ("SWBAUD", "SWNODE")
+READ_TAG = "canopen_window"
+CURRENT_BRUSH = QBrush(QColor("#ffe9a8"))
+
+
+class CanopenWindow(QDialog):
+    """Switch tables, terminator and node ID of a -CA valve."""
+
+    def __init__(
+        self,
+        document: ParameterDocument,
+        connection: QObject | None = None,
+        parent: QWidget | None = None,
+    ) -> None:
+        super().__init__(parent)
+        self._doc, self._connection = document, connection
+        self.switches: tuple[int, int] | None = None  # (interface, node) at the last power-up
+        self.valve_values: dict[str, Raw] = {}  # NODEID, BITRATE, CANTERM as read from the valve
+        self.restart_pending = False
+        self._build()
+        document.value_changed.connect(self._on_document_value_changed)
+        document.values_reset.connect(self.refresh)
+        if connection is not None:
+            connection.online_changed.connect(self._on_online_changed)
+            connection.operation_finished.connect(self._on_operation_finished)
+        self.retranslate()
+        self.refresh()
+        self.read_from_valve()
+
+    # --- building ------------------------------------------------------------------------------
+    def _build(self) -> None:
+        self.intro = QLabel()
+        self.intro.setWordWrap(True)
+        self.baud_table = self._table(3)
+        self.node_table = self._table(2)
+        self.baud_box, self.node_box = QGroupBox(), QGroupBox()
+        QVBoxLayout(self.baud_box).addWidget(self.baud_table)
+        QVBoxLayout(self.node_box).addWidget(self.node_table)
+        tables = QHBoxLayout()
+        tables.addWidget(self.baud_box, 3)
+        tables.addWidget(self.node_box, 2)
+        self.terminator = QCheckBox()
+        self.terminator.toggled.connect(self._on_terminator_toggled)
+        self.node_id = QSpinBox()
+        param = CATALOGUE["NODEID"]
+        self.node_id.setRange(param.raw_min, param.raw_max)
+        self.node_id.setMaximumWidth(120)
+        self.node_id.editingFinished.connect(self._on_node_id_edited)
+        self.bitrate = QComboBox()
+        self.bitrate.setMaximumWidth(160)
+        self.bitrate.activated.connect(self._on_bitrate_activated)
+        self.settings_box = QGroupBox()
+        form = QFormLayout(self.settings_box)
+        self.captions = [QLabel(), QLabel(), QLabel()]
+        form.addRow(self.captions[0], self.terminator)
+        form.addRow(self.captions[1], self.node_id)
+        form.addRow(self.captions[2], self.bitrate)
+        self.state_label = QLabel()
+        self.state_label.setWordWrap(True)
+        self.effective_label = QLabel()
+        self.effective_label.setWordWrap(True)
+        self.effective_label.setStyleSheet("font-weight: bold;")
+        self.restart_label = QLabel()
+        self.restart_label.setWordWrap(True)
+        self.restart_label.setStyleSheet(
+            "background: #fff4d6; color: #6b4a00; padding: 6px; border-radius: 4px;"
+        )
+        self.error_label = QLabel()
+        self.error_label.setWordWrap(True)
+        self.error_label.setStyleSheet("color: #d03030; font-weight: bold;")
+        buttons = QDialogButtonBox(QDialogButtonBox.StandardButton.Close)
+        buttons.rejected.connect(self.close)
+        root = QVBoxLayout(self)
+        for widget in (self.intro, self.state_label):
+            root.addWidget(widget)
+        root.addLayout(tables, 1)
+        for widget in (self.settings_box, self.effective_label, self.restart_label):
+            root.addWidget(widget)
+        root.addWidget(self.error_label)
+        root.addWidget(buttons)
+        self.resize(900, 720)
+
+    @staticmethod
+    def _table(columns: int) -> QTableWidget:
+        table = QTableWidget(len(POSITIONS), columns)
+        table.verticalHeader().hide()
+        table.setEditTriggers(QAbstractItemView.EditTrigger.NoEditTriggers)
+        table.setSelectionMode(QAbstractItemView.SelectionMode.NoSelection)
+        table.setFocusPolicy(Qt.FocusPolicy.NoFocus)
+        table.verticalHeader().setDefaultSectionSize(22)
+        table.setMinimumHeight(22 * len(POSITIONS) + 30)
+        table.setVerticalScrollBarPolicy(Qt.ScrollBarPolicy.ScrollBarAlwaysOff)
+        header = table.horizontalHeader()
+        header.setSectionResizeMode(QHeaderView.ResizeMode.ResizeToContents)
+        header.setStretchLastSection(True)
+        return table
+
+    # --- texts ------------------------------------------------------------------------------------
+    def retranslate(self) -> None:
+        """Every visible text in the current language."""
+        self.setWindowTitle(self.tr("CANopen"))
+        self.intro.setText(
+            self.tr(
+                "The valve reads its two rotary switches at power-up only; the marked rows are "
+                "the positions it read at its last start. Terminator, node ID and bit rate set "
+                "here are stored in the valve and take effect after the next restart."
+            )
+        )
+        self.baud_box.setTitle(self.tr("Interface / bit-rate switch"))
+        self.node_box.setTitle(self.tr("Node-ID switch"))
+        self.settings_box.setTitle(self.tr("Settings made by software (USB)"))
+        self.baud_table.setHorizontalHeaderLabels(
+            [self.tr("Position"), self.tr("Interface / bit rate"), self.tr("Terminator")]
+        )
+        self.node_table.setHorizontalHeaderLabels([self.tr("Position"), self.tr("Node ID")])
+        self.captions[0].setText(self.tr("CAN terminator 120 Ω"))
+        self.captions[1].setText(self.tr("Node ID (node switch at 0)"))
+        self.captions[2].setText(self.tr("Bit rate (node switch at 0)"))
+        self.terminator.setText(self.tr("on"))
+        with QSignalBlocker(self.bitrate):
+            self.bitrate.clear()
+            for code, label in CATALOGUE["BITRATE"].choices:
+                self.bitrate.addItem(label.get(current_language()), code)
+        self.refresh()
+
+    def _baud_texts(self, position: int) -> tuple[str, str]:
+        decoded = baud_position(position)
+        if position == 0:
+            return self.tr("CANopen off, analog setpoint only"), "—"
+        if position == 1:
+            return self.tr("reserved (as position 0)"), "—"
+        rate = format_bitrate(decoded.bitrate_kbit)
+        terminator = self.tr("on") if decoded.terminator else self.tr("off (on by software)")
+        return self.tr("CANopen, %1").replace("%1", rate), terminator
+
+    def _node_text(self, position: int) -> str:
+        decoded = node_position(position)
+        if decoded.software:
+            return self.tr("set by software: 1 … 127 (below)")
+        if decoded.lss:
+            return self.tr("LSS, automatic bit rate")
+        return str(decoded.node_id)
+
+    # --- showing ----------------------------------------------------------------------------------
+    def refresh(self) -> None:
+        """Redraw the tables, settings and the effective result from the current state."""
+        if not hasattr(self, "bitrate"):
+            return
+        baud, node = self.switches if self.switches is not None else (None, None)
+        for position in POSITIONS:
+            cells = (f"{position:X}", *self._baud_texts(position))
+            self._fill_row(self.baud_table, position, cells, position == baud)
+            cells = (f"{position:X}", self._node_text(position))
+            self._fill_row(self.node_table, position, cells, position == node)
+        self._show_settings(node)
+        self._show_state()
+
+    def _fill_row(
+        self, table: QTableWidget, row: int, cells: tuple[str, ...], current: bool
+    ) -> None:
+        for column, text in enumerate(cells):
+            shown = f"▶ {text}" if current and column == 0 else text
+            item = QTableWidgetItem(shown)
+            if current:
+                font = QFont(item.font())
+                font.setBold(True)
+                item.setFont(font)
+                item.setBackground(CURRENT_BRUSH)
+                item.setToolTip(self.tr("Position read by the valve at its last power-up"))
+            table.setItem(row, column, item)
+
+    def _value(self, mnemonic: str) -> int:
+        return int(self._doc.value(mnemonic))
+
+    def _show_settings(self, node_switch: int | None) -> None:
+        software = node_switch is None or node_switch == 0
+        with QSignalBlocker(self.terminator):
+            self.terminator.setChecked(self._value("CANTERM") == 1)
+        with QSignalBlocker(self.node_id):
+            self.node_id.setValue(self._value("NODEID"))
+        with QSignalBlocker(self.bitrate):
+            self.bitrate.setCurrentIndex(max(0, self.bitrate.findData(self._value("BITRATE"))))
+        available = self._doc.variant.canopen
+        self.terminator.setEnabled(available)
+        self.node_id.setEnabled(available and software)
+        self.bitrate.setEnabled(available and software)
+        if available and not software:
+            tip = self.tr("The node-ID switch is not at 0: the switch sets the node ID.")
+            self.node_id.setToolTip(tip)
+            self.bitrate.setToolTip(tip)
+
+    def _show_state(self) -> None:
+        online = bool(getattr(self._connection, "is_online", False))
+        if not self._doc.variant.canopen:
+            state = self.tr("This valve type has no CANopen interface (no -CA in the type key).")
+        elif self.switches is None and not online:
+            state = self.tr(
+                "Offline: the switch positions are unknown. Settings changed here go into the "
+                "document; upload it to the valve and restart the valve."
+            )
+        elif self.switches is None:
+            state = self.tr("Reading the switch positions from the valve …")
+        else:
+            state = self.tr("Switch positions read from the valve at its last power-up.")
+        self.state_label.setText(state)
+        self.effective_label.setText(self._effective_text())
+        self.restart_label.setVisible(self.restart_pending)
+
+    def _effective_text(self) -> str:
+        """What the valve uses with its switches and the settings it holds (read back)."""
+        if self.switches is None or not all(mn in self.valve_values for mn in SETTINGS):
+            return ""
+        values = [int(self.valve_values[mn]) for mn in SETTINGS]
+        settings = effective(*self.switches, *values)
+        if self.restart_pending:
+            prefix = self.tr("After the next restart the valve uses:")
+        else:
+            prefix = self.tr("The valve uses:")
+        if not settings.can_enabled:
+            return f"{prefix} {self.tr('CANopen off (analog setpoint only).')}"
+        terminator = self.tr("on") if settings.terminator else self.tr("off")
+        details = (
+            self.tr("node ID %1, %2, terminator %3.")
+            .replace("%1", str(settings.node_id))
+            .replace("%2", format_bitrate(settings.bitrate_kbit))
+            .replace("%3", terminator)
+        )
+        return f"{prefix} {details}"
+
+    # --- editing ------------------------------------------------------------------------------------
+    def apply(self, mnemonic: str, raw: Raw) -> bool:
+        """Set a CANopen setting: document (undoable) and, online, valve + non-volatile store."""
+        if self._doc.value(mnemonic) == raw and not self._online():
+            return True
+        try:
+            self._doc.set_value(mnemonic, raw)
+        except ValueRangeError as exc:
+            self.error_label.setText(str(exc))
+            self.refresh()
+            return False
+        self.error_label.clear()
+        if self._online():
+            assert self._connection is not None
+            self._connection.write(mnemonic, raw)
+            self._connection.store()
+            self.valve_values[mnemonic] = raw
+            self.restart_pending = True
+            self.restart_label.setText(
+                self.tr(
+                    "Written to the valve and stored. The change takes effect after the valve "
+                    "restarts (Valve → Restart valve)."
+                )
+            )
+        else:
+            self.restart_pending = True
+            self.restart_label.setText(
+                self.tr(
+                    "Changed in the document. Upload it to the valve; the change takes effect "
+                    "after the valve restarts."
+                )
+            )
+        self._show_state()
+        return True
+
+    def _online(self) -> bool:
+        return bool(getattr(self._connection, "is_online", False))
+
+    def _on_terminator_toggled(self, checked: bool) -> None:
+        self.apply("CANTERM", 1 if checked else 0)
+
+    def _on_node_id_edited(self) -> None:
+        if self.node_id.value() != self._value("NODEID"):
+            self.apply("NODEID", self.node_id.value())
+
+    def _on_bitrate_activated(self, index: int) -> None:
+        self.apply("BITRATE", self.bitrate.itemData(index))
+
+    # --- valve ----------------------------------------------------------------------------------------
+    def read_from_valve(self) -> None:
+        """Ask the connected valve for its switch positions and CANopen settings."""
+        if self._online() and self._doc.variant.canopen:
+            assert self._connection is not None
+            self._connection.read_many([*SWITCHES, *SETTINGS], READ_TAG)
+
+    def _on_operation_finished(self, name: str, result: Any) -> None:
+        if name == READ_TAG and isinstance(result, dict):
+            self._take_valve_values(result)
+        elif name == "restart":
+            self.restart_pending = False
+            self.switches = None
+            self.valve_values = {}
+            self.refresh()
+            self.read_from_valve()
+
+    def _take_valve_values(self, values: dict[str, Raw]) -> None:
+        if "SWBAUD" in values and "SWNODE" in values:
+            self.switches = (int(values["SWBAUD"]), int(values["SWNODE"]))
+        self.valve_values = {mn: values[mn] for mn in SETTINGS if mn in values}
+        self.refresh()
+
+    def _on_online_changed(self, online: bool) -> None:
+        if not online:
+            self.switches = None
+            self.valve_values = {}
+        self.refresh()
+        self.read_from_valve()
+
+    def _on_document_value_changed(self, mnemonic: str) -> None:
+        if mnemonic in SETTINGS or mnemonic in SWITCHES:
+            self.refresh()
+
+    def changeEvent(self, event: QEvent) -> None:
+        if event.type() == QEvent.Type.LanguageChange:
+            self.retranslate()
+        super().changeEvent(event)

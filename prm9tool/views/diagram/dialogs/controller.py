@@ -1,0 +1,187 @@
+"""Position PIDT1 and (E04) process PIDT1 (manual figure 8-12).
+
+Kp, Ki, Kd and T1 are typed or set with logarithmic sliders; the simulated closed-loop step
+response (the emulator's control loop run faster than real time off the GUI thread, see
+:mod:`prm9tool.tuning`) follows the trial values while a slider moves. Releasing a slider or
+finishing a typed entry is one undo step.
+"""
+
+from __future__ import annotations
+
+import math
+from typing import Any
+
+from PySide6.QtCore import Qt
+from PySide6.QtWidgets import QGridLayout, QLabel, QSlider, QWidget
+
+from prm9tool.catalogue import CATALOGUE
+from prm9tool.views.diagram.dialogs.base import BlockContext, BlockDialog
+from prm9tool.views.diagram.dialogs.plot import BLUE, GREY, ORANGE, Axes, Curve, PlotWidget
+
+SLIDER_STEPS = 1000
+GAINS = ("KP", "KI", "KD", "T1")
+
+
+def slider_to_raw(position: int, raw_max: int) -> int:
+    """Logarithmic slider position (0…1000) → raw value 0…``raw_max``."""
+    return round(10 ** (position / SLIDER_STEPS * math.log10(raw_max + 1)) - 1)
+
+
+def raw_to_slider(raw: int, raw_max: int) -> int:
+    """Raw value → nearest logarithmic slider position."""
+    return round(math.log10(max(raw, 0) + 1) / math.log10(raw_max + 1) * SLIDER_STEPS)
+
+
+class ControllerDialog(BlockDialog):
+    """The four PIDT1 values of one loop, sliders and the simulated step response."""
+
+    def __init__(
+        self,
+        ctx: BlockContext,
+        block_id: str,
+        title: str,
+        prefix: str,
+        loop: str,
+        parent: QWidget | None = None,
+    ) -> None:
+        super().__init__(ctx, block_id, title, parent)
+        self.prefix, self.loop = prefix, loop
+        self.names = [f"{prefix}{g}" for g in GAINS]
+        for name in self.names:
+            self.value_field(name)
+        self.sliders = {name: self._make_slider(name) for name in self.names}
+        self._trial: dict[str, int] = {}
+        self._last_applied: Any = None
+        self._current: Any = None
+        self.plot = PlotWidget()
+        self.figures = QLabel()
+        self.figures.setWordWrap(True)
+        self.side.addWidget(self.plot, 1)
+        self.side.addWidget(self.figures)
+        self.side.addLayout(self._slider_grid())
+        self.simulator = self._make_simulator()
+        self.finish()
+        self._simulate()
+
+    def _make_slider(self, name: str) -> QSlider:
+        slider = QSlider(Qt.Orientation.Horizontal)
+        slider.setRange(0, SLIDER_STEPS)
+        slider.setMinimumWidth(240)
+        slider.valueChanged.connect(lambda pos, n=name: self._on_slider_moved(n, pos))
+        slider.sliderReleased.connect(lambda n=name: self._on_slider_released(n))
+        return slider
+
+    def _slider_grid(self) -> QGridLayout:
+        grid = QGridLayout()
+        self.slider_labels = {}
+        for row, name in enumerate(self.names):
+            label = QLabel(name[len(self.prefix) :].title())  # Kp, Ki, Kd, T1
+            self.slider_labels[name] = label
+            grid.addWidget(label, row, 0)
+            grid.addWidget(self.sliders[name], row, 1)
+        return grid
+
+    def _make_simulator(self) -> Any:
+        factory = self.ctx.simulator_factory
+        if factory is None:
+            return None
+        simulator = factory(self.doc, self.loop)
+        simulator.response_ready.connect(self._on_response_ready)
+        simulator.failed.connect(self._on_simulation_failed)
+        return simulator
+
+    # --- values -------------------------------------------------------------------------------
+    def trial_values(self) -> dict[str, int]:
+        """The controller values the simulation uses: the document's, overlaid by slider trials."""
+        values = {name: int(self.doc.value(name)) for name in self.names}
+        values.update(self._trial)
+        return values
+
+    def refresh_extra(self) -> None:
+        for name, slider in self.sliders.items():
+            if not slider.isSliderDown():
+                slider.blockSignals(True)
+                slider.setValue(raw_to_slider(int(self.doc.value(name)), CATALOGUE[name].raw_max))
+                slider.blockSignals(False)
+        if not any(s.isSliderDown() for s in self.sliders.values()):
+            self._trial.clear()
+            self._simulate()
+
+    def update_access_extra(self, read_only: bool) -> None:
+        for name, slider in self.sliders.items():
+            slider.setEnabled(not read_only and self.access.may_edit(CATALOGUE[name]))
+
+    def retranslate(self) -> None:
+        super().retranslate()
+        if self.ctx.simulator_factory is None:
+            self.figures.setText(self.tr("No simulation available."))
+
+    # --- simulation -----------------------------------------------------------------------------
+    def _simulate(self) -> None:
+        if self.simulator is not None:
+            self.simulator.request(self.trial_values())
+
+    def _on_response_ready(self, response: Any) -> None:
+        if response.values == {n: int(self.doc.value(n)) for n in self.names}:
+            self._last_applied = response
+        self._current = response
+        self._draw()
+
+    def _on_simulation_failed(self, message: str) -> None:
+        self.figures.setText(self.tr("Simulation failed: %1").replace("%1", message))
+
+    def _draw(self) -> None:
+        response = self._current
+        if response is None:
+            return
+        t_ms = [t * 1000.0 for t in response.t]
+        curves = [
+            Curve(list(zip(t_ms, response.setpoint, strict=True)), ORANGE, self.tr("setpoint"))
+        ]
+        previous = self._last_applied
+        if previous is not None and previous is not response:
+            prev_t = [t * 1000.0 for t in previous.t]
+            curves.append(
+                Curve(
+                    list(zip(prev_t, previous.actual, strict=True)),
+                    GREY,
+                    self.tr("applied values"),
+                    dashed=True,
+                )
+            )
+        curves.append(
+            Curve(list(zip(t_ms, response.actual, strict=True)), BLUE, response.actual_label)
+        )
+        peak = max([*response.actual, *response.setpoint, 1.0])
+        low = min([*response.actual, *response.setpoint, 0.0])
+        span = peak - low
+        self.plot.set_axes(
+            Axes(
+                (t_ms[0], t_ms[-1]),
+                (low - 0.08 * span, peak + 0.12 * span),
+                self.tr("Time (ms)"),
+                self.tr("Value (%)"),
+            )
+        )
+        self.plot.set_curves(curves)
+        self.figures.setText(response.summary())
+
+    # --- sliders ------------------------------------------------------------------------------------
+    def _on_slider_moved(self, name: str, position: int) -> None:
+        raw = slider_to_raw(position, CATALOGUE[name].raw_max)
+        if self.sliders[name].isSliderDown():
+            self._trial[name] = raw
+            self.fields[name].setText(CATALOGUE[name].format_display(raw))
+            self._simulate()
+        else:
+            self.apply_value(name, raw)
+
+    def _on_slider_released(self, name: str) -> None:
+        raw = self._trial.pop(name, None)
+        if raw is not None:
+            self.apply_value(name, raw)
+
+    def closeEvent(self, event: Any) -> None:
+        if self.simulator is not None:
+            self.simulator.stop()
+        super().closeEvent(event)

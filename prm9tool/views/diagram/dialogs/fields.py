@@ -1,0 +1,132 @@
+"""One small binding per control: a catalogue parameter shown in a line edit or a combo box.
+
+The binding pushes the document's value into the control (with the control's signals blocked)
+and hands a user's entry to its dialog on ``editingFinished`` / ``activated``; the dialog
+applies it as one undoable edit or shows why it was refused.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Iterable
+
+from PySide6.QtCore import QSignalBlocker
+from PySide6.QtWidgets import QComboBox, QLineEdit, QWidget
+
+from prm9tool.access import AccessModel
+from prm9tool.catalogue import CATALOGUE, Parameter
+from prm9tool.document import ParameterDocument, Raw
+from prm9tool.errors import ValueRangeError
+from prm9tool.i18n import current_language
+
+Apply = Callable[[str, Raw], bool]  # returns False (and shows the reason) when refused
+Report = Callable[[str], None]  # shows a refusal reason
+ERROR_STYLE = "border: 2px solid #d03030;"
+
+
+def range_text(param: Parameter) -> str:
+    """``0 … 100 %`` — the allowed range of a numeric parameter in display units."""
+    unit = f" {param.unit}" if param.unit else ""
+    return f"{param.format_display(param.raw_min)} … {param.format_display(param.raw_max)}{unit}"
+
+
+class ValueField(QLineEdit):
+    """A numeric parameter typed in display units; refused text stays, marked red."""
+
+    def __init__(
+        self, mnemonic: str, apply: Apply, report: Report, parent: QWidget | None = None
+    ) -> None:
+        super().__init__(parent)
+        self.param = CATALOGUE[mnemonic]
+        self._apply = apply
+        self._report = report
+        self._shown = ""
+        self.setMaximumWidth(110)
+        self.setPlaceholderText(range_text(self.param))
+        self.editingFinished.connect(self._on_editing_finished)
+        self.textEdited.connect(lambda _text: self.setStyleSheet(""))
+
+    @property
+    def mnemonic(self) -> str:
+        """The parameter this field edits."""
+        return self.param.mnemonic
+
+    def show_value(self, doc: ParameterDocument) -> None:
+        """Display the document's value (does not emit edit signals)."""
+        self._shown = self.param.format_display(doc.value(self.mnemonic))
+        with QSignalBlocker(self):
+            self.setText(self._shown)
+        self.setStyleSheet("")
+
+    def update_access(self, access: AccessModel, read_only: bool) -> None:
+        """Enable the field if the access level may change the parameter."""
+        allowed = access.may_edit(self.param) and not read_only
+        self.setEnabled(allowed)
+        reason = access.why_locked(self.param)
+        self.setToolTip(reason or f"{self.mnemonic}: {range_text(self.param)}")
+
+    def _on_editing_finished(self) -> None:
+        text = self.text().strip()
+        if text == self._shown:
+            return
+        try:
+            raw = self.param.parse_display(text)
+        except ValueRangeError as exc:
+            self.setStyleSheet(ERROR_STYLE)
+            self._report(str(exc))
+            return
+        if not self._apply(self.mnemonic, raw):
+            self.setStyleSheet(ERROR_STYLE)
+
+
+class ChoiceField(QComboBox):
+    """An enumerated parameter (signal type, polarity, on/off) as a combo box."""
+
+    def __init__(
+        self,
+        mnemonic: str,
+        apply: Apply,
+        codes: Iterable[int] | None = None,
+        decorate: Callable[[int, str], str] | None = None,
+        parent: QWidget | None = None,
+    ) -> None:
+        super().__init__(parent)
+        self.param = CATALOGUE[mnemonic]
+        self._apply = apply
+        self._codes = list(codes) if codes is not None else [c for c, _ in self.param.choices]
+        self._decorate = decorate or (lambda _code, label: label)
+        self.fill()
+        self.activated.connect(self._on_activated)
+
+    @property
+    def mnemonic(self) -> str:
+        """The parameter this field edits."""
+        return self.param.mnemonic
+
+    def fill(self) -> None:
+        """(Re)build the items in the current language."""
+        with QSignalBlocker(self):
+            current = self.currentData()
+            self.clear()
+            for code in self._codes:
+                label = self.param.choice_text(code, current_language())
+                self.addItem(self._decorate(code, label), code)
+            if current is not None:
+                self.setCurrentIndex(max(0, self.findData(current)))
+
+    def show_value(self, doc: ParameterDocument) -> None:
+        """Select the document's value; an unlisted value is added so nothing is hidden."""
+        raw = doc.value(self.mnemonic)
+        with QSignalBlocker(self):
+            index = self.findData(raw)
+            if index < 0 and isinstance(raw, int):
+                self.addItem(self.param.choice_text(raw, current_language()), raw)
+                index = self.count() - 1
+            self.setCurrentIndex(index)
+
+    def update_access(self, access: AccessModel, read_only: bool) -> None:
+        """Enable the box if the access level may change the parameter."""
+        self.setEnabled(access.may_edit(self.param) and not read_only)
+        self.setToolTip(access.why_locked(self.param))
+
+    def _on_activated(self, index: int) -> None:
+        self._apply(self.mnemonic, self.itemData(index))

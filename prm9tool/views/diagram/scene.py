@@ -1,0 +1,144 @@
+"""Builds the QGraphicsScene of one variant's diagram from :mod:`.layout`."""
+
+from __future__ import annotations
+
+from PySide6.QtCore import QCoreApplication, QPointF, QRectF
+from PySide6.QtGui import QColor, QFont
+from PySide6.QtWidgets import QGraphicsScene, QGraphicsSimpleTextItem
+
+from prm9tool.views.diagram.items import INK, ArrowItem, BlockItem, DotItem, SumItem
+from prm9tool.views.diagram.layout import (
+    COL_PITCH,
+    DOT_STEP,
+    ROW_PITCH,
+    SUM_R,
+    BlockSpec,
+    Layout,
+    Link,
+    block_rect,
+)
+
+GAP = COL_PITCH - block_rect(BlockSpec("", "", (), 0, 1))[2]
+JOG = 24.0  # horizontal run of an arrow before it turns
+FEEDBACK_DROP = 34.0
+
+
+class DiagramScene(QGraphicsScene):
+    """The items of one layout, with lookups by block id and measuring-point key."""
+
+    def __init__(self, layout: Layout) -> None:
+        super().__init__()
+        self.layout = layout
+        self.setBackgroundBrush(QColor("white"))
+        self.blocks: dict[str, BlockItem] = {}
+        self.sums: dict[str, SumItem] = {}
+        self.dots: dict[str, DotItem] = {}
+        self._rects: dict[str, QRectF] = {}
+        for spec in layout.blocks:
+            self._add_block(spec)
+        for sum_id, block_id in layout.sums.items():
+            self._add_sum(sum_id, block_id)
+        for link in layout.links:
+            self.addItem(ArrowItem(self._route(link), dashed=link.route == "down"))
+        self._add_feedback_label()
+        for key, (block_id, side, index) in layout.dots.items():
+            self._add_dot(key, block_id, side, index)
+        # room on the right and below for the live values that appear online
+        self.setSceneRect(self.itemsBoundingRect().adjusted(-18, -18, 70, 24))
+
+    # --- items -------------------------------------------------------------------------
+    def _add_block(self, spec: BlockSpec) -> None:
+        rect = QRectF(*block_rect(spec, self.layout.compact_header))
+        item = BlockItem(spec.id, rect, info=spec.info)
+        self.addItem(item)
+        self.blocks[spec.id] = item
+        self._rects[spec.id] = rect
+
+    def _add_sum(self, sum_id: str, block_id: str) -> None:
+        rect = self._rects[block_id]
+        centre = QPointF(rect.left() - GAP / 2, rect.center().y())
+        minus_at = "top" if sum_id == "sum_process" else "bottom"
+        item = SumItem(centre, minus_at)
+        self.addItem(item)
+        self.sums[sum_id] = item
+        self._rects[sum_id] = QRectF(centre.x() - SUM_R, centre.y() - SUM_R, 2 * SUM_R, 2 * SUM_R)
+
+    def _add_dot(self, key: str, block_id: str, side: str, index: int) -> None:
+        if side == "feedback":
+            valve = self._rects["valve"]
+            centre = QPointF(valve.center().x() - COL_PITCH / 2, valve.bottom() + FEEDBACK_DROP)
+            label_side = "below_centre"
+        elif side == "in":
+            rect = self._rects[block_id]
+            centre = QPointF(rect.left() - 13, rect.center().y() + index * DOT_STEP)
+            label_side = "below"
+        else:
+            rect = self._rects[block_id]
+            # before the process junction the sensor arrives from above: label below instead
+            crowded = any(
+                link.source == block_id and link.target == "sum_process"
+                for link in self.layout.links
+            )
+            step = index + 1 if crowded and index else index
+            centre = QPointF(rect.right() + 13, rect.center().y() + step * DOT_STEP)
+            label_side = ("below" if crowded else "above") if index == 0 else "right"
+        item = DotItem(key, centre, label_side)
+        self.addItem(item)
+        self.dots[key] = item
+
+    def _add_feedback_label(self) -> None:
+        valve = self._rects["valve"]
+        label = QGraphicsSimpleTextItem(
+            QCoreApplication.translate("DiagramBlock", "spool position (LVDT)")
+        )
+        font = QFont()
+        font.setPixelSize(12)
+        font.setItalic(True)
+        label.setFont(font)
+        label.setBrush(INK)
+        label.setPos(self._rects["sum_position"].right() + 14, valve.bottom() + FEEDBACK_DROP + 2)
+        self.addItem(label)
+        self.feedback_label = label
+
+    # --- arrow routes ------------------------------------------------------------------------
+    def _out(self, item_id: str) -> QPointF:
+        rect = self._rects[item_id]
+        return QPointF(rect.right(), rect.center().y())
+
+    def _in(self, item_id: str) -> QPointF:
+        rect = self._rects[item_id]
+        return QPointF(rect.left(), rect.center().y())
+
+    def _route(self, link: Link) -> list[QPointF]:
+        src, dst = self._rects[link.source], self._rects[link.target]
+        if link.route == "right":
+            return [self._out(link.source), self._in(link.target)]
+        if link.route == "wrap":
+            start, end = self._out(link.source), self._in(link.target)
+            mid_y = src.bottom() + (ROW_PITCH - src.height()) / 2
+            return [
+                start,
+                QPointF(start.x() + JOG, start.y()),
+                QPointF(start.x() + JOG, mid_y),
+                QPointF(end.x() - JOG, mid_y),
+                QPointF(end.x() - JOG, end.y()),
+                end,
+            ]
+        if link.route == "feedback":
+            start = QPointF(src.center().x(), src.bottom())
+            low = src.bottom() + FEEDBACK_DROP
+            return [
+                start,
+                QPointF(start.x(), low),
+                QPointF(dst.center().x(), low),
+                QPointF(dst.center().x(), dst.bottom()),
+            ]
+        if link.route == "sensor":
+            start = self._out(link.source)
+            return [
+                start,
+                QPointF(dst.center().x(), start.y()),
+                QPointF(dst.center().x(), dst.top()),
+            ]
+        # "down": a dashed optional path straight down into the block below
+        return [QPointF(src.center().x(), src.bottom()), QPointF(dst.center().x(), dst.top())]

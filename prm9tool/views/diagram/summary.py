@@ -1,0 +1,157 @@
+"""The key values a diagram block shows, formatted through the catalogue (e.g. "Kp 8")."""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+
+from PySide6.QtCore import QCoreApplication
+
+from prm9tool.catalogue import CATALOGUE
+from prm9tool.document import ParameterDocument
+from prm9tool.i18n import current_language
+
+_CTX = "DiagramSummary"
+NO_VALUE = "—"
+
+
+def _tr(text: str) -> str:
+    return QCoreApplication.translate(_CTX, text)
+
+
+def value_text(doc: ParameterDocument, mnemonic: str) -> str:
+    """``raw`` of ``mnemonic`` in display units with its unit, or its choice label."""
+    param = CATALOGUE[mnemonic]
+    raw = doc.value(mnemonic)
+    if param.choices and isinstance(raw, int):
+        return param.choice_text(raw, current_language())
+    unit = f" {param.unit}" if param.unit else ""
+    return f"{param.format_display(raw)}{unit}"
+
+
+def _bare(doc: ParameterDocument, mnemonic: str) -> str:
+    return CATALOGUE[mnemonic].format_display(doc.value(mnemonic))
+
+
+def _has(doc: ParameterDocument, mnemonic: str) -> bool:
+    return CATALOGUE[mnemonic].applies(doc.variant)
+
+
+def _setpoint_input(doc: ParameterDocument) -> list[str]:
+    return [
+        value_text(doc, "AINSETP"),
+        _tr("Polarity: %1").replace("%1", value_text(doc, "INVERSEP")),
+    ]
+
+
+def _threshold(doc: ParameterDocument) -> list[str]:
+    return [_tr("Threshold %1").replace("%1", value_text(doc, "THRESETP"))]
+
+
+def _pair(doc: ParameterDocument, pos: str, neg: str, unit: str) -> str:
+    if _has(doc, neg):
+        return f"+{_bare(doc, pos)} / −{_bare(doc, neg)}{unit}"
+    return f"{_bare(doc, pos)}{unit}"
+
+
+def _gain_offset(doc: ParameterDocument) -> list[str]:
+    return [
+        _tr("Gain %1").replace("%1", _pair(doc, "GAINSETPOS", "GAINSETNEG", "")),
+        _tr("Offset %1").replace("%1", _pair(doc, "OFFSETPOS", "OFFSETNEG", " %")),
+    ]
+
+
+def _linearization(switch: str, on_value: int) -> Callable[[ParameterDocument], list[str]]:
+    def lines(doc: ParameterDocument) -> list[str]:
+        on = doc.value(switch) == on_value
+        return [_tr("9-point curve on") if on else _tr("off (1:1)")]
+
+    return lines
+
+
+def _ramps(doc: ParameterDocument) -> list[str]:
+    up, down = _bare(doc, "RAMPSETPOSUP"), _bare(doc, "RAMPSETPOSDOWN")
+    if not _has(doc, "RAMPSETNEGUP"):
+        return [f"↑ {up} ms  ↓ {down} ms"]
+    neg_up, neg_down = _bare(doc, "RAMPSETNEGUP"), _bare(doc, "RAMPSETNEGDOWN")
+    return [f"+ ↑ {up}  ↓ {down} ms", f"− ↑ {neg_up}  ↓ {neg_down} ms"]
+
+
+def _pidt1(prefix: str) -> Callable[[ParameterDocument], list[str]]:
+    def lines(doc: ParameterDocument) -> list[str]:
+        kp, ki = _bare(doc, f"{prefix}KP"), _bare(doc, f"{prefix}KI")
+        kd, t1 = _bare(doc, f"{prefix}KD"), _bare(doc, f"{prefix}T1")
+        return [f"Kp {kp}   Ki {ki}", f"Kd {kd}   T1 {t1}"]
+
+    return lines
+
+
+def _current_limit(doc: ParameterDocument) -> list[str]:
+    return [
+        _tr("Coil %1: %2").replace("%1", coil).replace("%2", value_text(doc, f"LIMT{coil}"))
+        for coil in "AB"
+        if _has(doc, f"LIMT{coil}")
+    ]
+
+
+def _dither(doc: ParameterDocument) -> list[str]:
+    return [
+        _tr("Amplitude %1").replace("%1", value_text(doc, "DTAMP")),
+        _tr("Frequency %1").replace("%1", value_text(doc, "DYNFREQ")),
+    ]
+
+
+def _valve(doc: ParameterDocument) -> list[str]:
+    key = str(doc.type_key)
+    head, _, tail = key.partition("-24")
+    coils = {"AB": _tr("coils A and B"), "A": _tr("coil A only"), "B": _tr("coil B only")}
+    lines = [head, f"24{tail}"] if tail else [key]
+    return [*lines, coils[doc.variant.coils.value]]
+
+
+def _sensor_input(doc: ParameterDocument) -> list[str]:
+    return [
+        value_text(doc, "SENSTYPE"),
+        _tr("Polarity: %1").replace("%1", value_text(doc, "SENSINV")),
+    ]
+
+
+def _sensor_scaling(doc: ParameterDocument) -> list[str]:
+    return [
+        _tr("Offset %1").replace("%1", value_text(doc, "SENSOFFS")),
+        _tr("Gain %1").replace("%1", value_text(doc, "SENSGAIN")),
+    ]
+
+
+def _supply(doc: ParameterDocument) -> list[str]:
+    return [_tr("Voltage, temperature"), _tr("(live values)")]
+
+
+def _canopen(doc: ParameterDocument) -> list[str]:
+    return [
+        _tr("Node ID %1 (switch 0)").replace("%1", value_text(doc, "NODEID")),
+        _tr("Terminator %1").replace("%1", value_text(doc, "CANTERM")),
+    ]
+
+
+_SUMMARIES: dict[str, Callable[[ParameterDocument], list[str]]] = {
+    "setpoint_input": _setpoint_input,
+    "threshold": _threshold,
+    "gain_offset": _gain_offset,
+    "setpoint_linearization": _linearization("SETPLINON", -1),
+    "ramps": _ramps,
+    "process_controller": _pidt1("PRC"),
+    "position_controller": _pidt1("POS"),
+    "current_limit": _current_limit,
+    "dither": _dither,
+    "valve": _valve,
+    "ext_sensor": _sensor_input,
+    "ext_sensor_scaling": _sensor_scaling,
+    "ext_sensor_linearization": _linearization("SENSLINON", 1),
+    "supply": _supply,
+    "canopen": _canopen,
+}
+
+
+def block_lines(doc: ParameterDocument, block_id: str) -> list[str]:
+    """The value lines block ``block_id`` shows for ``doc`` (at most three)."""
+    return _SUMMARIES[block_id](doc)[:3]

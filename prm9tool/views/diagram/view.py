@@ -1,0 +1,285 @@
+"""The signal-flow diagram (manual §8.7.2, figures 8-6 and 8-7): the main view of the program.
+
+Drawn from the document's variant; every block opens its configuration dialog; blocks the
+access level may not change are grey; the red measuring points show live values online and
+ask for the oscilloscope when clicked. The view only observes the document, the access model
+and the valve connection through their signals.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from typing import Any
+
+from PySide6.QtCore import QCoreApplication, QEvent, QObject, QRectF, Qt, Signal
+from PySide6.QtGui import QKeySequence, QPainter, QResizeEvent, QShortcut, QWheelEvent
+from PySide6.QtWidgets import QDialog, QGraphicsView, QWidget
+
+from prm9tool.access import AccessModel
+from prm9tool.catalogue import CATALOGUE
+from prm9tool.document import ParameterDocument
+from prm9tool.i18n import text
+from prm9tool.signals import BY_KEY
+from prm9tool.views.diagram.dialogs import BlockContext, create_block_dialog
+from prm9tool.views.diagram.layout import layout_for
+from prm9tool.views.diagram.scene import DiagramScene
+from prm9tool.views.diagram.summary import block_lines
+
+_CTX = "DiagramBlock"
+_DECIMALS = {"%": 1, "mA": 0, "V": 2, "°C": 1}
+
+
+# Short tags for measuring points that share a block with others of the same unit.
+_TAGS = {
+    "current_setpoint_a": "A",
+    "current_setpoint_b": "B",
+    "current_a": "A",
+    "current_b": "B",
+    "pwm_a": "PWM A",
+    "pwm_b": "PWM B",
+}
+
+
+def format_signal(key: str, raw: float) -> str:
+    """A measuring point's raw value in display units, e.g. ``12.5 %`` or ``A 1834 mA``."""
+    signal = BY_KEY[key]
+    value = signal.to_display(raw)
+    tag = f"{_TAGS[key]} " if key in _TAGS else ""
+    return f"{tag}{value:.{_DECIMALS.get(signal.unit, 1)}f} {signal.unit}"
+
+
+class DiagramView(QGraphicsView):
+    """The diagram of ``document``'s variant; works offline and, with a connection, online."""
+
+    measuring_point_clicked = Signal(str)  # measuring-point key
+    dialog_opened = Signal(str, object)  # block id, the dialog widget
+
+    def __init__(
+        self,
+        document: ParameterDocument,
+        access: AccessModel,
+        connection: QObject | None = None,
+        parent: QWidget | None = None,
+        simulator_factory: Callable[[ParameterDocument, str], Any] | None = None,
+    ) -> None:
+        super().__init__(parent)
+        self._doc, self._access, self._connection = document, access, connection
+        self._simulator_factory = (
+            simulator_factory if simulator_factory is not None else _default_simulator()
+        )
+        self._dialogs: dict[str, QWidget] = {}
+        self._fit = True
+        self._scene: DiagramScene | None = None
+        self.setRenderHints(QPainter.RenderHint.Antialiasing | QPainter.RenderHint.TextAntialiasing)
+        self.setMinimumSize(480, 300)
+        self._build()
+        document.value_changed.connect(self._on_document_value_changed)
+        document.values_reset.connect(self._refresh_blocks)
+        document.type_key_changed.connect(self._on_type_key_changed)
+        access.level_changed.connect(self._on_access_level_changed)
+        if connection is not None:
+            connection.online_changed.connect(self._on_online_changed)
+            connection.signal_values_changed.connect(self._on_signal_values_changed)
+        QShortcut(QKeySequence("Ctrl+0"), self, self.zoom_to_fit)
+        self._on_online_changed(self.is_online)
+
+    # --- public ----------------------------------------------------------------------------
+    @property
+    def diagram(self) -> DiagramScene:
+        """The scene currently shown."""
+        assert self._scene is not None
+        return self._scene
+
+    @property
+    def is_online(self) -> bool:
+        """True while the connection reports a valve online."""
+        return bool(getattr(self._connection, "is_online", False))
+
+    def block_ids(self) -> list[str]:
+        """Ids of the drawn blocks, in signal order."""
+        return self.diagram.layout.block_ids()
+
+    def open_block(self, block_id: str) -> QWidget | None:
+        """Open (or raise) the dialog of ``block_id``; returns it (None for the supply block)."""
+        dialog = self._dialogs.get(block_id)
+        if dialog is None:
+            dialog = self._create_dialog(block_id)
+            if dialog is None:
+                return None
+            self._dialogs[block_id] = dialog
+            dialog.finished.connect(lambda _result, b=block_id: self._forget_dialog(b))
+        dialog.show()
+        dialog.raise_()
+        dialog.activateWindow()
+        self.dialog_opened.emit(block_id, dialog)
+        return dialog
+
+    def zoom_to_fit(self) -> None:
+        """Scale the whole diagram into the window (and keep it fitted on resize)."""
+        self._fit = True
+        self.fitInView(self.diagram.sceneRect(), Qt.AspectRatioMode.KeepAspectRatio)
+
+    def render_picture(self, painter: QPainter, target: QRectF) -> None:
+        """Paint the diagram into ``target`` (print / PDF parameter record), aspect kept."""
+        self.diagram.render(
+            painter, target, self.diagram.sceneRect(), Qt.AspectRatioMode.KeepAspectRatio
+        )
+
+    # --- building ---------------------------------------------------------------------------
+    def _build(self) -> None:
+        scene = DiagramScene(layout_for(self._doc.variant))
+        for item in scene.blocks.values():
+            item.activated.connect(self.open_block)
+        for dot in scene.dots.values():
+            dot.clicked.connect(self.measuring_point_clicked)
+        old, self._scene = self._scene, scene
+        self.setScene(scene)
+        if old is not None:
+            old.deleteLater()
+        self._refresh_blocks()
+        self._refresh_dots()
+        if self._fit:
+            self.zoom_to_fit()
+
+    def _create_dialog(self, block_id: str) -> QWidget | None:
+        spec = self.diagram.layout.block(block_id)
+        if block_id == "valve":
+            return self._valve_dialog()
+        if block_id == "canopen":
+            from prm9tool.views.canopen_window import CanopenWindow
+
+            return CanopenWindow(self._doc, self._connection, self)
+        ctx = BlockContext(self._doc, self._access, self._connection, self._simulator_factory)
+        return create_block_dialog(block_id, ctx, spec.title, self)
+
+    def _valve_dialog(self) -> QDialog | None:
+        if self._valve_locked_reason():
+            return None
+        from prm9tool.views.valve_selection import ValveSelectionDialog
+
+        dialog = ValveSelectionDialog(self._doc.type_key, self)
+        dialog.accepted.connect(lambda: self._doc.set_type_key(dialog.selected_type_key()))
+        return dialog
+
+    def _forget_dialog(self, block_id: str) -> None:
+        dialog = self._dialogs.pop(block_id, None)
+        if dialog is not None:
+            dialog.deleteLater()
+
+    def close_dialogs(self) -> None:
+        """Close every open block dialog (e.g. when the valve type changes)."""
+        for block_id in list(self._dialogs):
+            dialog = self._dialogs.pop(block_id)
+            dialog.close()
+            dialog.deleteLater()
+
+    # --- refreshing -------------------------------------------------------------------------------
+    def _refresh_blocks(self) -> None:
+        for spec in self.diagram.layout.blocks:
+            self._refresh_block(spec.id)
+
+    def _refresh_block(self, block_id: str) -> None:
+        spec = self.diagram.layout.block(block_id)
+        item = self.diagram.blocks[block_id]
+        item.set_content(
+            QCoreApplication.translate(_CTX, spec.title), block_lines(self._doc, block_id)
+        )
+        reason = self._lock_reason(block_id)
+        if spec.info:
+            tip = self.tr("Values measured by the valve; see the red measuring points.")
+        elif reason:
+            tip = reason
+        else:
+            tip = self.tr("Click to edit: %1").replace(
+                "%1", QCoreApplication.translate(_CTX, spec.title)
+            )
+        item.set_locked(bool(reason), tip)
+
+    def _lock_reason(self, block_id: str) -> str:
+        if block_id == "valve":
+            return self._valve_locked_reason()
+        spec = self.diagram.layout.block(block_id)
+        params = [CATALOGUE[mn] for mn in spec.mnemonics]
+        if not params or any(self._access.may_edit(p) for p in params):
+            return ""
+        return self._access.why_locked(params[0]) + " " + self.tr("(View → Access level)")
+
+    def _valve_locked_reason(self) -> str:
+        if self.is_online:
+            return self.tr("Online, the valve type is that of the connected valve.")
+        return ""
+
+    def _refresh_dots(self) -> None:
+        online = self.is_online
+        for key, dot in self.diagram.dots.items():
+            name = text(BY_KEY[key].text)
+            if online:
+                tip = self.tr("%1 — click to show it in the oscilloscope").replace("%1", name)
+            else:
+                tip = self.tr(
+                    "%1 — offline: measuring points show live values only with a valve online."
+                ).replace("%1", name)
+            dot.set_active(online, tip)
+
+    # --- slots ----------------------------------------------------------------------------------------
+    def _on_document_value_changed(self, mnemonic: str) -> None:
+        for spec in self.diagram.layout.blocks:
+            if mnemonic in spec.mnemonics or (spec.id == "valve" and mnemonic == "PCODE"):
+                self._refresh_block(spec.id)
+
+    def _on_type_key_changed(self, _key: str) -> None:
+        if self.diagram.layout.variant != self._doc.variant:
+            self.close_dialogs()
+            self._build()
+            self._watch_signals()
+        else:
+            self._refresh_blocks()
+
+    def _on_access_level_changed(self, _level: object) -> None:
+        self._refresh_blocks()
+
+    def _on_online_changed(self, online: bool) -> None:
+        self._refresh_dots()
+        self._refresh_block("valve")
+        if online:
+            self._watch_signals()
+
+    def _watch_signals(self) -> None:
+        if self._connection is not None and self.is_online:
+            self._connection.watch_signals(list(self.diagram.dots))
+
+    def _on_signal_values_changed(self, values: dict[str, float]) -> None:
+        if not self.is_online:
+            return
+        for key, raw in values.items():
+            dot = self.diagram.dots.get(key)
+            if dot is not None:
+                dot.set_value_text(format_signal(key, raw))
+
+    # --- Qt events -------------------------------------------------------------------------------------
+    def resizeEvent(self, event: QResizeEvent) -> None:
+        super().resizeEvent(event)
+        if self._fit:
+            self.fitInView(self.diagram.sceneRect(), Qt.AspectRatioMode.KeepAspectRatio)
+
+    def wheelEvent(self, event: QWheelEvent) -> None:
+        if event.modifiers() & Qt.KeyboardModifier.ControlModifier:
+            factor = 1.15 if event.angleDelta().y() > 0 else 1 / 1.15
+            self._fit = False
+            self.scale(factor, factor)
+            event.accept()
+        else:
+            super().wheelEvent(event)
+
+    def changeEvent(self, event: QEvent) -> None:
+        if event.type() == QEvent.Type.LanguageChange:
+            self._refresh_blocks()
+            self._refresh_dots()
+        super().changeEvent(event)
+
+
+def _default_simulator() -> Callable[[ParameterDocument, str], Any] | None:
+    """The emulator-backed step-response simulator (model layer), if it can be imported."""
+    from prm9tool.tuning import StepSimulator
+
+    return StepSimulator.for_document

@@ -1,0 +1,168 @@
+"""Offscreen screenshots of the signal-flow diagram (every variant) and of every block dialog.
+
+Usage (from the repository root)::
+
+    QT_QPA_PLATFORM=offscreen python tools/diagram_screenshots.py [OUTPUT_DIR]
+
+Writes PNG files to ``docs/screenshots/`` (or OUTPUT_DIR). The online pictures come from an
+emulated valve whose live measuring points feed the diagram's red dots.
+"""
+
+from __future__ import annotations
+
+import os
+import sys
+from collections.abc import Sequence
+from pathlib import Path
+
+os.environ.setdefault("QT_QPA_PLATFORM", "offscreen")
+
+from PySide6.QtCore import QObject, Signal
+from PySide6.QtWidgets import QApplication, QWidget
+
+from prm9tool.access import AccessModel
+from prm9tool.catalogue import CATALOGUE, Access
+from prm9tool.device.emulator import EmulatedValve
+from prm9tool.document import ParameterDocument
+from prm9tool.tuning import StepSimulator
+from prm9tool.undo import DocumentUndo
+from prm9tool.views.canopen_window import CanopenWindow
+from prm9tool.views.diagram import DiagramView
+
+VARIANTS = {
+    "diagram_e02.png": "PRM9-06.3Z11/30-24E02S02",
+    "diagram_e02_coil_a.png": "PRM9-06.2Z51/30-24E02S02",
+    "diagram_e02_coil_b.png": "PRM9-06.2Z61/30-24E02S02",
+    "diagram_e04.png": "PRM9-06.3Z11/30-24E04S02",
+    "diagram_e04_ca.png": "PRM9-06.3Z11/30-24E04S02-CA",
+}
+DIALOG_KEY = "PRM9-06.3Z11/30-24E04S02-CA"
+E02_KEY = "PRM9-06.3Z11/30-24E02S02"
+
+
+class _EmulatorLink(QObject):
+    """Just enough of ValveConnection to show an emulated valve's live values."""
+
+    online_changed = Signal(bool)
+    signal_values_changed = Signal(dict)
+    operation_finished = Signal(str, object)
+
+    def __init__(self, valve: EmulatedValve) -> None:
+        super().__init__()
+        self.valve, self.is_online, self.watched = valve, True, []
+
+    def watch_signals(self, keys: Sequence[str]) -> None:
+        self.watched = list(keys)
+
+    def read_many(self, mnemonics: Sequence[str], tag: str = "read") -> None:
+        values = {mn: self.valve.read(*CATALOGUE[mn].key) for mn in mnemonics}
+        self.operation_finished.emit(tag, values)
+
+    def write(self, mnemonic: str, raw: int | str) -> None:
+        self.valve.write(*CATALOGUE[mnemonic].key, raw)
+
+    def store(self) -> None:
+        self.valve.store()
+
+    def poll(self) -> None:
+        self.signal_values_changed.emit({k: self.valve.signal(k) for k in self.watched})
+
+
+def _save(widget: QWidget, path: Path, app: QApplication) -> None:
+    widget.show()
+    for _ in range(3):
+        app.processEvents()
+    widget.grab().save(str(path))
+    sys.stdout.write(f"wrote {path}\n")
+
+
+def _diagram(key: str, level: Access, link: QObject | None = None) -> DiagramView:
+    doc = ParameterDocument(key)
+    DocumentUndo(doc, doc)
+    view = DiagramView(doc, AccessModel(level), link, simulator_factory=StepSimulator.for_document)
+    view.resize(1024, 640)
+    return view
+
+
+def diagrams(out: Path, app: QApplication) -> None:
+    """One picture per variant (Basic level, offline) and one online with live values."""
+    for name, key in VARIANTS.items():
+        _save(_diagram(key, Access.BASIC), out / name, app)
+    valve = EmulatedValve(DIALOG_KEY, switches=(0, 0))  # analog setpoint: runs without a master
+    valve.advance(2.5)
+    valve.set_input("setpoint", 3.0)
+    valve.advance(0.7)
+    link = _EmulatorLink(valve)
+    view = _diagram(DIALOG_KEY, Access.EXPERT, link)
+    link.poll()
+    _save(view, out / "diagram_e04_ca_online.png", app)
+
+
+def dialogs(out: Path, app: QApplication) -> None:
+    """Every block dialog of an E04-CA valve at Expert level, and the E02 threshold window."""
+    view = _diagram(DIALOG_KEY, Access.EXPERT)
+    for block_id in view.block_ids():
+        if block_id in ("supply", "canopen"):
+            continue
+        dialog = view.open_block(block_id)
+        assert dialog is not None
+        dialog.resize(max(dialog.sizeHint().width(), 760), max(dialog.sizeHint().height(), 440))
+        _settle(dialog, app)
+        _save(dialog, out / f"dialog_{block_id}.png", app)
+        dialog.close()
+    e02 = _diagram(E02_KEY, Access.BASIC)
+    for block_id in ("threshold", "ramps"):
+        dialog = e02.open_block(block_id)
+        assert dialog is not None
+        dialog.resize(760, 440)
+        _save(dialog, out / f"dialog_{block_id}_e02_basic.png", app)
+    locked = e02.open_block("position_controller")
+    assert locked is not None
+    locked.resize(760, 560)
+    _settle(locked, app)
+    _save(locked, out / "dialog_position_controller_basic_locked.png", app)
+
+
+def _settle(dialog: QWidget, app: QApplication) -> None:
+    """Wait for a controller dialog's first simulated step response."""
+    simulator = getattr(dialog, "simulator", None)
+    if simulator is None:
+        return
+    for _ in range(400):
+        app.processEvents()
+        if getattr(dialog, "_current", None) is not None and not simulator.busy:
+            break
+        simulator_thread_wait(0.01)
+    app.processEvents()
+
+
+def simulator_thread_wait(seconds: float) -> None:
+    """Sleep briefly while the simulator's worker thread runs."""
+    import time
+
+    time.sleep(seconds)
+
+
+def canopen(out: Path, app: QApplication) -> None:
+    """The CANopen window of an emulated valve with its switches at 6 (500 kbit/s) and 0."""
+    valve = EmulatedValve(DIALOG_KEY, switches=(6, 0))
+    doc = ParameterDocument(DIALOG_KEY)
+    window = CanopenWindow(doc, _EmulatorLink(valve))
+    window.resize(900, 760)
+    _save(window, out / "canopen_window.png", app)
+
+
+def main(argv: list[str]) -> int:
+    """Write every screenshot; returns the exit code."""
+    out = Path(argv[1]) if len(argv) > 1 else Path("docs/screenshots")
+    out.mkdir(parents=True, exist_ok=True)
+    app = QApplication.instance() or QApplication(argv)
+    assert isinstance(app, QApplication)
+    diagrams(out, app)
+    dialogs(out, app)
+    canopen(out, app)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv))
