@@ -10,7 +10,7 @@ from __future__ import annotations
 
 import itertools
 import time
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 import can
 
@@ -48,6 +48,7 @@ class Rig:
     slave: CanopenSlave
     master: can.BusABC
     slave_bus: can.BusABC
+    skipped: list[str] = field(default_factory=list)  # frames barrier() passed over
 
     def send(self, text: str) -> None:
         """Send one frame written as ``"60A 2B 17 10 00 E8 03 00 00"``."""
@@ -56,6 +57,8 @@ class Rig:
 
     def receive(self, timeout: float = TIMEOUT_S) -> str | None:
         """The next frame on the bus as text, or None after ``timeout``."""
+        if self.skipped:
+            return self.skipped.pop(0)
         msg = self.master.recv(timeout)
         return None if msg is None else show(msg.arbitration_id, bytes(msg.data))
 
@@ -90,19 +93,31 @@ class Rig:
 
     def barrier(self) -> None:
         """Wait until the slave has processed every frame sent so far (frames are handled in
-        order, so the answer to one more SDO request proves it); the answer is consumed."""
+        order, so the answer to one more SDO request proves it). The answer is consumed; other
+        frames received meanwhile are kept for :meth:`receive`."""
         node = self.slave.node_id
         self.send(f"{0x600 + node:03X} 40 00 10 00 00 00 00 00")
-        for _ in range(100):
-            answer = self.receive()
-            assert answer is not None, "no SDO answer"
-            if answer.startswith(f"{0x580 + node:03X} 43 00 10 00"):
+        others = []
+        for _ in range(1000):
+            msg = self.master.recv(TIMEOUT_S)
+            assert msg is not None, "no SDO answer"
+            text = show(msg.arbitration_id, bytes(msg.data))
+            if text.startswith(f"{0x580 + node:03X} 43 00 10 00"):
+                self.skipped += others
                 return
+            others.append(text)
         raise AssertionError("SDO answer not found")
+
+    def wait_for_nmt_state(self, state: str) -> None:
+        """Wait (real time) until the Notifier has applied an NMT command without an answer."""
+        deadline = time.monotonic() + TIMEOUT_S
+        while self.valve.status().nmt_state != state:
+            assert time.monotonic() < deadline, f"NMT state {self.valve.status().nmt_state}"
+            time.sleep(0.001)
 
     def close(self) -> None:
         """Stop the slave and close both bus ends."""
-        self.slave.close()
+        self.slave.stop()
         self.slave_bus.shutdown()
         self.master.shutdown()
 

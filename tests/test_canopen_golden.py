@@ -104,6 +104,7 @@ def test_section_7_6_commissioning_sequence_node_0x0a(rig_e04: Rig):
 
 def test_figure_7_13_state_machine_to_device_mode_active(rig: Rig):
     rig.send("000 01 0A")
+    rig.barrier()
     rig.drain()
     expected = [
         (0x08, DeviceState.INIT),

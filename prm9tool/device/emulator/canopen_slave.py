@@ -73,8 +73,8 @@ class CanopenSlave:
         """The bit rate the switches (or 0x2030/2) selected at power-up, bit/s (0 = CAN off)."""
         return self._valve.bitrate
 
-    def close(self) -> None:
-        """Stop receiving and transmitting (the bus itself belongs to the caller)."""
+    def stop(self) -> None:
+        """Stop receiving and transmitting for good (the bus itself belongs to the caller)."""
         self._notifier.stop()
         with self._valve.lock:
             self._closed = True
