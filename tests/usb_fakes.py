@@ -24,6 +24,7 @@ class FakeCable:
     duplicate_in: set[int] = field(default_factory=set)
     late_in: dict[int, float] = field(default_factory=dict)  # answer number -> delay in s
     unplug_after_out: int | None = None
+    corrupt_reads_after_out: int | None = None  # then flip a bit in every READ answer
 
 
 class FakeValve:
@@ -69,6 +70,9 @@ class FakeValve:
             return
         assert data[0] == 0 and len(data) == 65, "report ID 0 + 64 bytes"
         answer = self.firmware.handle(bytes(data[1:]))
+        after = cable.corrupt_reads_after_out
+        if after is not None and self.out_count > after and answer[0] == 0x82 and answer[3]:
+            answer = answer[:5] + bytes([answer[5] ^ 0x01]) + answer[6:]
         self.in_count += 1
         number = self.in_count
         if number in cable.drop_in:

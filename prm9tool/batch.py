@@ -1,0 +1,288 @@
+"""Headless production mode: ``--list-devices`` and ``--batch`` (no Qt GUI is ever started).
+
+``--batch FILE.prm`` uploads, verifies and stores the file into every selected valve, several
+in parallel, with progress on stderr and an optional JSON report; ``--batch --download OUT.prm``
+saves one valve's parameters. Usage, exit codes and report schema: docs/batch.md.
+"""
+
+from __future__ import annotations
+
+import argparse
+import sys
+from concurrent.futures import ThreadPoolExecutor
+
+from prm9tool.backup import ensure_backup, existing_backups
+from prm9tool.batch_report import ProgressPrinter, Stopwatch, ValveRecord, overall, write_report
+from prm9tool.cli import ExitCode
+from prm9tool.device.factory import (
+    DeviceEntry,
+    emulator_entries,
+    open_session,
+    usb_entries,
+    usb_unavailable_reason,
+)
+from prm9tool.device.session import ValveSession
+from prm9tool.errors import CommunicationError, FileFormatError, Prm9Error, TypeKeyError
+from prm9tool.prmfile import PrmContents, read_file, write_file
+from prm9tool.typekey import TypeKey
+
+
+class BatchError(Exception):
+    """Ends the run before any valve was touched, with ``code`` and a message for stderr."""
+
+    def __init__(self, code: ExitCode, message: str) -> None:
+        super().__init__(message)
+        self.code = code
+
+
+def run(args: argparse.Namespace) -> int:
+    """Entry point of ``--list-devices`` and ``--batch``; returns the exit code."""
+    records: list[ValveRecord] = []
+    mode = "list" if args.list_devices else _mode(args)
+    try:
+        if args.list_devices:
+            return _list_devices(args)
+        _check_usage(args)
+        code = _download(args, records) if args.download else _upload(args, records)
+    except BatchError as exc:
+        print(f"prm9tool: {exc}", file=sys.stderr)
+        code = exc.code
+    if args.report and not args.list_devices:
+        try:
+            write_report(args.report, mode, args.batch or args.download, code, records)
+        except OSError as exc:
+            print(f"prm9tool: cannot write the report {args.report}: {exc}", file=sys.stderr)
+            return max(code, ExitCode.USAGE)
+    return int(code)
+
+
+def _mode(args: argparse.Namespace) -> str:
+    if args.download:
+        return "download"
+    return "dry-run" if args.dry_run else "upload"
+
+
+def _check_usage(args: argparse.Namespace) -> None:
+    if args.download and args.batch:
+        raise BatchError(
+            ExitCode.USAGE, "use either --batch FILE.prm or --batch --download OUT.prm"
+        )
+    if not args.download and not args.batch:
+        raise BatchError(ExitCode.USAGE, "--batch needs FILE.prm (or --download OUT.prm)")
+    if args.download and (args.all or len(args.device) + len(args.emulator) > 1):
+        raise BatchError(ExitCode.USAGE, "--download saves one valve: select exactly one")
+
+
+# --- devices ------------------------------------------------------------------------------------
+def _list_devices(args: argparse.Namespace) -> int:
+    entries = _usb(required=False) + _emulators(args)
+    for entry in entries:
+        print(
+            f"{entry.device_id}\t{entry.type_key}\tserial {entry.serial}\tfirmware {entry.firmware}"
+        )
+    if not entries:
+        reason = usb_unavailable_reason()
+        print("prm9tool: no valves found" + (f" ({reason})" if reason else ""), file=sys.stderr)
+        return ExitCode.NO_DEVICE
+    return ExitCode.OK
+
+
+def _emulators(args: argparse.Namespace) -> list[DeviceEntry]:
+    try:
+        return emulator_entries(args.emulator)
+    except (TypeKeyError, FileFormatError) as exc:
+        raise BatchError(ExitCode.USAGE, f"--emulator: {exc}") from exc
+    except Prm9Error as exc:
+        raise BatchError(ExitCode.NO_DEVICE, str(exc)) from exc
+
+
+def _usb(required: bool) -> list[DeviceEntry]:
+    try:
+        return usb_entries()
+    except CommunicationError as exc:
+        if required:
+            raise BatchError(ExitCode.NO_DEVICE, str(exc)) from exc
+        return []
+
+
+def select(args: argparse.Namespace) -> list[DeviceEntry]:
+    """The valves the options name; BatchError (4 or 2) if that is none or ambiguous."""
+    chosen = _emulators(args)
+    if args.device or args.all:
+        usb = _usb(required=True)
+        for wanted in args.device:
+            chosen += _match(wanted, usb)
+        if args.all:
+            chosen += [e for e in usb if e not in chosen]
+    elif not chosen:
+        usb = _usb(required=False)
+        if len(usb) > 1:
+            raise BatchError(
+                ExitCode.USAGE, f"{len(usb)} valves are connected: choose with --device or --all"
+            )
+        chosen = usb
+    if not chosen:
+        reason = usb_unavailable_reason()
+        raise BatchError(ExitCode.NO_DEVICE, "no valve found" + (f" ({reason})" if reason else ""))
+    return chosen
+
+
+def _match(wanted: str, usb: list[DeviceEntry]) -> list[DeviceEntry]:
+    found = [e for e in usb if wanted in (str(e.serial), e.device_id, e.device_id[4:])]
+    if not found:
+        known = ", ".join(f"{e.serial} ({e.device_id})" for e in usb) or "none"
+        raise BatchError(ExitCode.NO_DEVICE, f"no valve {wanted!r} is connected (found: {known})")
+    return found
+
+
+def _open(entry: DeviceEntry) -> ValveSession:
+    # an emulated valve is stepped on the link clock; the link itself runs at USB speed
+    return open_session(entry, paced=False, link_paced=True)
+
+
+# --- upload -------------------------------------------------------------------------------------
+def _read_source(path: str) -> PrmContents:
+    try:
+        contents = read_file(path)
+    except FileFormatError as exc:
+        raise BatchError(
+            ExitCode.INVALID_FILE, f"{path} is not a valid parameter file:\n{exc}"
+        ) from exc
+    for warning in contents.warnings:
+        print(warning.format(path), file=sys.stderr)
+    for name, _ in contents.unknown:
+        print(f"{path}: warning: unknown entry {name!r} is not uploaded", file=sys.stderr)
+    return contents
+
+
+def _upload(args: argparse.Namespace, records: list[ValveRecord]) -> ExitCode:
+    contents = _read_source(args.batch)
+    entries = select(args)
+    printer = ProgressPrinter()
+    job = _UploadJob(contents, args.force_type, args.dry_run, printer)
+    with ThreadPoolExecutor(max_workers=len(entries)) as pool:
+        records.extend(pool.map(job, entries))
+    for record in records:
+        printer.say(str(record.serial), _summary(record))
+    return overall(records)
+
+
+def _summary(record: ValveRecord) -> str:
+    text = f"{record.result} ({record.duration_s:.2f} s)"
+    return f"{text}: {record.error}" if record.error else text
+
+
+class _UploadJob:
+    """Uploads the file into one valve (runs in a worker thread)."""
+
+    def __init__(
+        self, contents: PrmContents, force: bool, dry_run: bool, printer: ProgressPrinter
+    ) -> None:
+        self.contents, self.force, self.dry_run, self.printer = contents, force, dry_run, printer
+
+    def __call__(self, entry: DeviceEntry) -> ValveRecord:
+        clock = Stopwatch()
+        record = ValveRecord(
+            entry.device_id, entry.kind, entry.serial, entry.type_key, entry.firmware
+        )
+        try:
+            with _open(entry) as session:
+                info = session.info
+                record.type_key, record.serial, record.firmware = (
+                    info.type_key,
+                    info.serial,
+                    info.firmware,
+                )
+                self._run(session, record)
+        except CommunicationError as exc:
+            record.result, record.error = "communication-error", str(exc)
+            record.failed_step = getattr(exc, "step", record.failed_step)
+        except Prm9Error as exc:  # a refused read during the backup, an unwritable backup …
+            record.result, record.error = "communication-error", str(exc)
+        record.duration_s = clock()
+        return record
+
+    def _run(self, session: ValveSession, record: ValveRecord) -> None:
+        who = str(record.serial)
+        mismatch = _type_problem(self.contents.type_key, session, self.force)
+        if mismatch:
+            record.result, record.error = "type-mismatch", mismatch
+            return
+        values = self.contents.values
+        if self.dry_run:
+            current = session.download()
+            record.changes = sum(current.get(m) != v for m, v in values.items())
+            record.result = "dry-run"
+            return
+        self.printer.say(who, f"{record.type_key}, firmware {record.firmware}: backing up")
+        record.failed_step = "backup"
+        new_backup = ensure_backup(session, self.printer.callback(who))
+        backups = existing_backups(record.serial)
+        latest = new_backup or (backups[-1] if backups else None)
+        record.backup = str(latest) if latest else None
+        record.failed_step = None
+        result = session.upload(values, self.printer.callback(who))
+        record.parameters_written, record.failed_step = result.written, result.failed_step
+        record.verification = "passed" if result.verified else "failed"
+        if result.failed_step == "write":
+            record.verification = "not-run"
+        record.mismatches = {
+            m: {"expected": want, "actual": got} for m, (want, got) in result.mismatches.items()
+        }
+        record.result = "ok" if result.stored else "verification-failed"
+        if result.mismatches:
+            record.error = _mismatch_text(result.failed_step, result.mismatches)
+
+
+def _mismatch_text(step: str | None, mismatches: dict[str, tuple[object, object]]) -> str:
+    shown = "; ".join(f"{m}: wrote {w}, got {g}" for m, (w, g) in list(mismatches.items())[:5])
+    more = f" (and {len(mismatches) - 5} more)" if len(mismatches) > 5 else ""
+    if step == "write":
+        return f"the valve refused a value, nothing was stored: {shown}"
+    return (
+        f"{len(mismatches)} parameter(s) read back differently, nothing was stored: {shown}{more}"
+    )
+
+
+def _type_problem(file_key: TypeKey, session: ValveSession, force: bool) -> str | None:
+    valve_key = TypeKey.parse(session.info.type_key)
+    if file_key == valve_key:
+        return None
+    if file_key.variant != valve_key.variant:
+        return (
+            f"the file is for {file_key} ({file_key.variant.label}) but the valve is "
+            f"{valve_key} ({valve_key.variant.label}): the parameter sets differ, even "
+            "--force-type cannot upload it"
+        )
+    if force:
+        return None
+    return f"the file is for {file_key} but the valve is {valve_key} (use --force-type to upload anyway)"
+
+
+# --- download -----------------------------------------------------------------------------------
+def _download(args: argparse.Namespace, records: list[ValveRecord]) -> ExitCode:
+    entry = select(args)
+    if len(entry) != 1:
+        raise BatchError(ExitCode.USAGE, "--download saves one valve: select exactly one")
+    clock, printer = Stopwatch(), ProgressPrinter()
+    record = ValveRecord(
+        entry[0].device_id, entry[0].kind, entry[0].serial, entry[0].type_key, entry[0].firmware
+    )
+    records.append(record)
+    try:
+        with _open(entry[0]) as session:
+            values = session.download(printer.callback(str(record.serial)))
+            info = session.info
+    except (CommunicationError, Prm9Error) as exc:
+        record.error, record.duration_s = str(exc), clock()
+        raise BatchError(ExitCode.COMMUNICATION, f"download failed: {exc}") from exc
+    contents = PrmContents(TypeKey.parse(info.type_key), values, info.serial, info.firmware or None)
+    try:
+        write_file(contents, args.download)
+    except FileFormatError as exc:
+        record.error = str(exc)
+        raise BatchError(ExitCode.INVALID_FILE, f"cannot save {args.download}:\n{exc}") from exc
+    record.result, record.output, record.duration_s = "downloaded", args.download, clock()
+    record.parameters_written = 0
+    printer.say(str(record.serial), f"saved {len(values)} parameters to {args.download}")
+    return ExitCode.OK

@@ -1,0 +1,116 @@
+"""What the batch mode reports: one record per valve, progress lines, the JSON report file.
+
+The report schema is documented in docs/batch.md; keep both in step.
+"""
+
+from __future__ import annotations
+
+import json
+import sys
+import threading
+import time
+from dataclasses import asdict, dataclass, field
+from datetime import UTC, datetime
+from pathlib import Path
+from typing import Any
+
+from prm9tool import __version__
+from prm9tool.atomicfile import atomic_write
+from prm9tool.cli import ExitCode
+
+SCHEMA = 1
+# Outcome of one valve -> exit code; the run exits with the most serious one.
+RESULTS = {
+    "ok": ExitCode.OK,
+    "dry-run": ExitCode.OK,
+    "downloaded": ExitCode.OK,
+    "verification-failed": ExitCode.VERIFY_FAILED,
+    "type-mismatch": ExitCode.TYPE_MISMATCH,
+    "communication-error": ExitCode.COMMUNICATION,
+}
+SEVERITY = (ExitCode.COMMUNICATION, ExitCode.TYPE_MISMATCH, ExitCode.VERIFY_FAILED, ExitCode.OK)
+
+
+@dataclass
+class ValveRecord:
+    """The outcome for one valve (one entry of the report's ``valves`` list)."""
+
+    device_id: str
+    kind: str
+    serial: int
+    type_key: str
+    firmware: str
+    result: str = "communication-error"
+    parameters_written: int = 0
+    verification: str = "not-run"  # "passed" | "failed" | "not-run"
+    mismatches: dict[str, dict[str, Any]] = field(default_factory=dict)
+    failed_step: str | None = None
+    duration_s: float = 0.0
+    backup: str | None = None
+    output: str | None = None  # --download: the file written
+    changes: int | None = None  # --dry-run: parameters that an upload would change
+    error: str | None = None
+
+    @property
+    def exit_code(self) -> ExitCode:
+        """The exit code this outcome stands for."""
+        return RESULTS[self.result]
+
+
+def overall(records: list[ValveRecord]) -> ExitCode:
+    """The exit code of the run: the most serious outcome of any valve."""
+    codes = {r.exit_code for r in records}
+    return next((code for code in SEVERITY if code in codes), ExitCode.OK)
+
+
+def write_report(
+    path: str, mode: str, source: str | None, exit_code: int, records: list[ValveRecord]
+) -> None:
+    """Write the JSON report atomically."""
+    report = {
+        "prm9tool": __version__,
+        "schema": SCHEMA,
+        "created": datetime.now(UTC).isoformat(timespec="seconds"),
+        "mode": mode,
+        "file": source,
+        "exit_code": int(exit_code),
+        "valves": [asdict(r) for r in records],
+    }
+    text = json.dumps(report, indent=2, ensure_ascii=False) + "\n"
+    atomic_write(Path(path), text.encode("utf-8"), backup=False)
+
+
+class ProgressPrinter:
+    """Progress lines on stderr, one valve per line prefix, at most every 10 % per valve."""
+
+    def __init__(self) -> None:
+        self._lock = threading.Lock()
+        self._last: dict[str, tuple[str, int]] = {}
+
+    def say(self, who: str, text: str) -> None:
+        """Print one line about valve ``who``."""
+        with self._lock:
+            sys.stderr.write(f"[{who}] {text}\n")
+            sys.stderr.flush()
+
+    def callback(self, who: str) -> Any:
+        """A ``progress(done, total, step)`` callback for valve ``who``."""
+
+        def progress(done: int, total: int, step: str) -> None:
+            percent = 100 * done // max(total, 1)
+            last_step, last_percent = self._last.get(who, ("", -100))
+            if step != last_step or percent >= last_percent + 10 or done == total:
+                self._last[who] = (step, percent)
+                self.say(who, f"{step} {percent:3d} % ({done}/{total})")
+
+        return progress
+
+
+class Stopwatch:
+    """Seconds since creation."""
+
+    def __init__(self) -> None:
+        self._start = time.monotonic()
+
+    def __call__(self) -> float:
+        return round(time.monotonic() - self._start, 3)
