@@ -18,6 +18,7 @@ from prm9tool.device.factory import (
     DeviceEntry,
     emulator_entries,
     open_session,
+    parse_emulator_spec,
     usb_entries,
     usb_unavailable_reason,
 )
@@ -71,6 +72,11 @@ def _check_usage(args: argparse.Namespace) -> None:
         raise BatchError(ExitCode.USAGE, "--batch needs FILE.prm (or --download OUT.prm)")
     if args.download and (args.all or len(args.device) + len(args.emulator) > 1):
         raise BatchError(ExitCode.USAGE, "--download saves one valve: select exactly one")
+    for spec in args.emulator:
+        try:
+            parse_emulator_spec(spec)
+        except TypeKeyError as exc:
+            raise BatchError(ExitCode.USAGE, f"--emulator: {exc}") from exc
 
 
 # --- devices ------------------------------------------------------------------------------------

@@ -1,0 +1,246 @@
+"""End-to-end tests of the headless batch mode: real subprocesses, every exit code.
+
+USB valves come from a stand-in ``hid`` module (tests/fake_hid) on PYTHONPATH, so the whole
+path from the command line through discovery, hidapi backend, protocol and firmware runs.
+"""
+
+from __future__ import annotations
+
+import json
+import os
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+from prm9tool.prmfile import PrmContents, read_file, write_file
+from prm9tool.typekey import TypeKey
+
+E04 = "PRM9-06.3Z11/30-24E04S02-CA"
+E02 = "PRM9-06.3Z11/30-24E02S02"
+FAKE_HID = Path(__file__).parent / "fake_hid"
+
+
+def run(tmp_path: Path, *args: str, fake_hid: str | None = None) -> subprocess.CompletedProcess:
+    env = dict(os.environ, PRM9TOOL_DATA_DIR=str(tmp_path / "data"))
+    env.pop("PRM9TOOL_USB_VID", None)
+    env.pop("PRM9TOOL_USB_PID", None)
+    if fake_hid is not None:
+        env["PYTHONPATH"] = os.pathsep.join([str(FAKE_HID), env.get("PYTHONPATH", "")])
+        env["PRM9TOOL_FAKE_HID"] = fake_hid
+    return subprocess.run(
+        [sys.executable, "-m", "prm9tool", *args],
+        cwd=tmp_path,
+        env=env,
+        capture_output=True,
+        text=True,
+        timeout=120,
+        check=False,
+    )
+
+
+def tuned_file(tmp_path: Path, type_key: str = E04, name: str = "tuned.prm") -> Path:
+    """A valid file whose values all differ from the factory defaults."""
+    key = TypeKey.parse(type_key)
+    contents = PrmContents.factory(key)
+    contents.values.update(LIMTA=1500, LIMTB=1600, DYNFREQ=120, DTAMP=1000, AINSETP=5)
+    path = tmp_path / name
+    write_file(contents, path)
+    return path
+
+
+def report(tmp_path: Path, name: str = "report.json") -> dict:
+    return json.loads((tmp_path / name).read_text(encoding="utf-8"))
+
+
+def test_parallel_upload_with_report_and_backups(tmp_path):
+    source = tuned_file(tmp_path)
+    valves = [f"{E04}:{serial}" for serial in (21, 22, 23)]
+    args = ["--batch", str(source), "--report", "report.json"]
+    result = run(tmp_path, *args, *(a for v in valves for a in ("--emulator", v)))
+    assert result.returncode == 0, result.stderr
+    data = report(tmp_path)
+    assert (data["schema"], data["mode"], data["exit_code"]) == (1, "upload", 0)
+    records = data["valves"]
+    assert [r["serial"] for r in records] == [21, 22, 23]
+    for record in records:
+        assert record["result"] == "ok" and record["verification"] == "passed"
+        assert record["parameters_written"] == len(read_file(source).values)
+        assert record["type_key"] == E04 and record["firmware"] == "1.0.0"
+        backup = Path(record["backup"])
+        assert backup.parent == tmp_path / "data" / "backups" / str(record["serial"])
+        factory = PrmContents.factory(TypeKey.parse(E04)).values
+        assert read_file(backup).values == factory  # taken before the upload
+    for serial in (21, 22, 23):
+        assert f"[{serial}] write" in result.stderr and f"[{serial}] ok" in result.stderr
+
+
+def test_upload_in_one_process_download_in_the_next(tmp_path):
+    source = tuned_file(tmp_path)
+    assert run(tmp_path, "--batch", str(source), "--emulator", f"{E04}:5").returncode == 0
+    result = run(tmp_path, "--batch", "--download", "out.prm", "--emulator", f"{E04}:5")
+    assert result.returncode == 0, result.stderr
+    downloaded = read_file(tmp_path / "out.prm")
+    assert downloaded.values == read_file(source).values
+    assert (downloaded.serial, downloaded.firmware) == (5, "1.0.0")
+
+
+def test_second_upload_keeps_the_first_backup(tmp_path):
+    e02 = tuned_file(tmp_path, E02, "e02.prm")
+    for _ in range(2):
+        args = ("--batch", str(e02), "--emulator", f"{E02}:8", "--report", "r.json")
+        assert run(tmp_path, *args).returncode == 0
+    backups = list((tmp_path / "data" / "backups" / "8").glob("*.prm"))
+    assert len(backups) == 1
+    assert report(tmp_path, "r.json")["valves"][0]["backup"] == str(backups[0])
+
+
+def test_verification_failure_exits_1(tmp_path):
+    source = tuned_file(tmp_path)
+    fake = f"{E04},31,corrupt_reads_after_out=8"  # the reads of the backup are still clean
+    result = run(tmp_path, "--batch", str(source), "--all", "--report", "r.json", fake_hid=fake)
+    assert result.returncode == 1, result.stderr
+    record = report(tmp_path, "r.json")["valves"][0]
+    assert (record["result"], record["verification"], record["failed_step"]) == (
+        "verification-failed",
+        "failed",
+        "verify",
+    )
+    assert "read back differently, nothing was stored" in record["error"]
+    assert record["mismatches"]
+
+
+@pytest.mark.parametrize(
+    ("args", "message"),
+    [
+        (["--batch"], "--batch needs FILE.prm"),
+        (["--batch", "x.prm", "--download", "y.prm"], "use either --batch FILE.prm or"),
+        (
+            ["--batch", "--download", "y.prm", "--emulator", E02, "--emulator", E04],
+            "select exactly one",
+        ),
+        (["--batch", "x.prm", "--emulator", "PRM9-06.3Z11/31-24E02S02"], "flow '31'"),
+        (["--bogus"], "unrecognized arguments"),
+    ],
+)
+def test_usage_errors_exit_2(tmp_path, args, message):
+    result = run(tmp_path, *args)
+    assert result.returncode == 2
+    assert message in result.stderr
+
+
+def test_invalid_file_exits_3_and_uploads_nothing(tmp_path):
+    source = tuned_file(tmp_path)
+    text = source.read_text(encoding="utf-8").replace("LIMTA = 1500", "LIMTA = 99999")
+    source.write_text(text, encoding="utf-8")
+    result = run(tmp_path, "--batch", str(source), "--emulator", f"{E04}:3")
+    assert result.returncode == 3
+    assert "is not a valid parameter file" in result.stderr
+    assert "LIMTA" in result.stderr and f"{source.name}:" in result.stderr
+    assert not (tmp_path / "data" / "emulator").exists()
+
+
+def test_no_device_exits_4(tmp_path):
+    source = tuned_file(tmp_path)
+    result = run(tmp_path, "--batch", str(source), fake_hid="")
+    assert result.returncode == 4
+    assert "no valve found" in result.stderr
+    result = run(tmp_path, "--batch", str(source), "--device", "999", fake_hid=f"{E04},41")
+    assert result.returncode == 4
+    assert "no valve '999' is connected (found: 41 (usb:/dev/hidraw0))" in result.stderr
+
+
+def test_type_mismatch_exits_5_unless_forced(tmp_path):
+    source = tuned_file(tmp_path)  # for .../30 l/min
+    other_flow = "PRM9-06.3Z11/15-24E04S02-CA:6"
+    result = run(tmp_path, "--batch", str(source), "--emulator", other_flow)
+    assert result.returncode == 5
+    assert "use --force-type" in result.stderr
+    forced = run(tmp_path, "--batch", str(source), "--emulator", other_flow, "--force-type")
+    assert forced.returncode == 0, forced.stderr
+    result = run(tmp_path, "--batch", str(source), "--emulator", f"{E02}:7", "--force-type")
+    assert result.returncode == 5
+    assert "the parameter sets differ" in result.stderr
+
+
+def test_communication_error_exits_6_and_names_the_step(tmp_path):
+    source = tuned_file(tmp_path)
+    fake = f"{E04},51;{E04},52,unplug_after_out=10"
+    result = run(tmp_path, "--batch", str(source), "--all", "--report", "r.json", fake_hid=fake)
+    assert result.returncode == 6, result.stderr
+    first, second = report(tmp_path, "r.json")["valves"]
+    assert first["result"] == "ok"
+    assert (second["result"], second["failed_step"]) == ("communication-error", "write")
+    assert "upload failed while writing the parameters (step 1 of 3)" in second["error"]
+    assert "nothing was stored" in second["error"]
+
+
+def test_list_devices(tmp_path):
+    result = run(tmp_path, "--list-devices", "--emulator", f"{E02}:9", fake_hid=f"{E04},61")
+    assert result.returncode == 0, result.stderr
+    assert result.stdout.splitlines() == [
+        f"usb:/dev/hidraw0\t{E04}\tserial 61\tfirmware 1.0.0",
+        f"emulator:{E02}:9\t{E02}\tserial 9\tfirmware 1.0.0",
+    ]
+    assert run(tmp_path, "--list-devices", fake_hid="").returncode == 4
+
+
+def test_dry_run_writes_nothing(tmp_path):
+    source = tuned_file(tmp_path)
+    args = ("--batch", str(source), "--emulator", f"{E04}:4", "--dry-run", "--report", "r.json")
+    result = run(tmp_path, *args)
+    assert result.returncode == 0, result.stderr
+    record = report(tmp_path, "r.json")["valves"][0]
+    assert record["result"] == "dry-run"
+    assert record["changes"] == 5
+    assert not (tmp_path / "data" / "backups").exists()
+    assert not (tmp_path / "data" / "emulator" / "4.json").exists()
+
+
+def test_without_hidapi_the_emulator_still_works(tmp_path):
+    broken = tmp_path / "broken"
+    broken.mkdir()
+    (broken / "hid.py").write_text('raise ImportError("libhidapi-hidraw.so.0: not found")\n')
+    env = dict(os.environ, PRM9TOOL_DATA_DIR=str(tmp_path / "data"), PYTHONPATH=str(broken))
+    result = subprocess.run(
+        [sys.executable, "-m", "prm9tool", "--list-devices", "--emulator", E02],
+        env=env,
+        capture_output=True,
+        text=True,
+        timeout=60,
+        check=False,
+    )
+    assert result.returncode == 0, result.stderr
+    assert f"emulator:{E02}:1" in result.stdout
+
+
+def test_batch_mode_never_loads_the_qt_gui(tmp_path):
+    source = tuned_file(tmp_path)
+    code = (
+        "import sys\n"
+        "from prm9tool.cli import main\n"
+        f"code = main(['--batch', {str(source)!r}, '--emulator', '{E04}:2', '--report', 'r.json'])\n"
+        "gui = [m for m in ('PySide6.QtWidgets', 'PySide6.QtGui') if m in sys.modules]\n"
+        "print(code, gui)\n"
+    )
+    env = dict(os.environ, PRM9TOOL_DATA_DIR=str(tmp_path / "data"))
+    result = subprocess.run(
+        [sys.executable, "-c", code],
+        cwd=tmp_path,
+        env=env,
+        capture_output=True,
+        text=True,
+        timeout=60,
+        check=False,
+    )
+    assert result.stdout.strip() == "0 []", result.stderr
+
+
+def test_every_parameter_of_the_report_schema_is_present(tmp_path):
+    source = tuned_file(tmp_path)
+    run(tmp_path, "--batch", str(source), "--emulator", f"{E04}:2", "--report", "r.json")
+    record = report(tmp_path, "r.json")["valves"][0]
+    documented = (Path(__file__).parents[1] / "docs" / "batch.md").read_text(encoding="utf-8")
+    for name in record:
+        assert f"`{name}`" in documented, f"report field {name} is not documented"
