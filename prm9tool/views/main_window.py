@@ -10,7 +10,7 @@ from pathlib import Path
 
 from PySide6.QtCore import QByteArray, QEvent, QSettings
 from PySide6.QtGui import QCloseEvent, QDragEnterEvent, QDropEvent
-from PySide6.QtWidgets import QMainWindow, QStackedWidget, QWidget
+from PySide6.QtWidgets import QMainWindow, QScrollArea, QStackedWidget, QWidget
 
 from prm9tool import i18n
 from prm9tool.access import AccessModel
@@ -36,6 +36,7 @@ from prm9tool.views.valve_workflow import ValveWorkflow
 
 VIEWS = ("diagram", "parameters", "scope")
 VIEW_KEY = "window/view"
+MAX_PAGE_WIDTH = 960  # the manual's minimum display is 1024 × 768
 
 
 class MainWindow(QMainWindow):
@@ -53,6 +54,9 @@ class MainWindow(QMainWindow):
         super().__init__(parent)
         self.doc, self.undo, self.access = doc, undo, access
         self.connection, self.settings = connection, settings
+        for model in (doc, undo, access, connection):
+            if model.parent() is None:
+                model.setParent(self)  # the models live exactly as long as the window
         self.passwords = PasswordStore(settings)
         self.sync = ValveSync(doc, connection, self)
         self.files = FileWorkflow(self, doc, undo, settings)
@@ -70,8 +74,9 @@ class MainWindow(QMainWindow):
             "parameters": self.parameter_view,
             "scope": self._make_scope_view(),
         }
+        self._pages = {name: _page(self.views[name]) for name in VIEWS}
         for name in VIEWS:
-            self.stack.addWidget(self.views[name])
+            self.stack.addWidget(self._pages[name])
         self.setCentralWidget(self.stack)
         self.status_window: ValveStatusWindow | None = None
         self.help_window: HelpWindow | None = None
@@ -111,7 +116,7 @@ class MainWindow(QMainWindow):
         """Show ``diagram``, ``parameters`` or ``scope`` in the main area."""
         if name == "scope" and not self.connection.is_online:
             name = "parameters" if self.current_view() == "scope" else self.current_view()
-        self.stack.setCurrentWidget(self.views[name])
+        self.stack.setCurrentWidget(self._pages[name])
         self.actions[f"view_{name}"].setChecked(True)
         self.settings.setValue(VIEW_KEY, name)
 
@@ -328,6 +333,20 @@ class MainWindow(QMainWindow):
         if path is not None:
             event.acceptProposedAction()
             self.files.open_path(path)
+
+
+def _page(view: QWidget) -> QWidget:
+    """A view as a page of the main area; a view wider than a 1024-pixel screen scrolls.
+
+    The stack is as wide as its widest page, so one wide view would widen the whole window.
+    """
+    if view.minimumSizeHint().width() <= MAX_PAGE_WIDTH:
+        return view
+    area = QScrollArea()
+    area.setWidgetResizable(True)
+    area.setFrameShape(QScrollArea.Shape.NoFrame)
+    area.setWidget(view)
+    return area
 
 
 def _dropped_prm(event: QDragEnterEvent | QDropEvent) -> Path | None:

@@ -223,13 +223,15 @@ class ParameterFilterProxy(QSortFilterProxyModel):
 
     def set_search(self, search: str) -> None:
         """Show rows whose mnemonic or description contains ``search`` (case-insensitive)."""
+        self.beginFilterChange()
         self._search = search.strip().casefold()
-        self.invalidateFilter()
+        self.endFilterChange(QSortFilterProxyModel.Direction.Rows)
 
     def set_non_default_only(self, enabled: bool) -> None:
         """Show only values that differ from the factory defaults."""
+        self.beginFilterChange()
         self._non_default_only = enabled
-        self.invalidateFilter()
+        self.endFilterChange(QSortFilterProxyModel.Direction.Rows)
 
     def filterAcceptsRow(self, source_row: int, source_parent: AnyIndex) -> bool:
         """Apply the search text and the "modified only" switch."""

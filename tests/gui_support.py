@@ -1,0 +1,106 @@
+"""Helpers of the GUI tests: a main window on isolated settings and an unpaced emulator."""
+
+from __future__ import annotations
+
+from collections.abc import Iterator
+from contextlib import contextmanager
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any
+
+import pytest
+from PySide6.QtCore import QSettings
+
+from prm9tool import i18n
+from prm9tool.access import AccessModel
+from prm9tool.connection import ValveConnection
+from prm9tool.device import factory
+from prm9tool.document import ParameterDocument
+from prm9tool.undo import DocumentUndo
+from prm9tool.views import prompts
+
+E02 = "PRM9-06.3Z11/30-24E02S02"
+E02_CA = "PRM9-06.3Z11/30-24E02S02-CA"
+E04_CA = "PRM9-10.3Z11/60-24E04S02-CA"
+
+
+@dataclass
+class Prompts:
+    """Records message boxes and answers the modal ones with ``answers`` (in order)."""
+
+    answers: list[prompts.Button] = field(default_factory=list)
+    asked: list[str] = field(default_factory=list)
+    informed: list[str] = field(default_factory=list)
+
+    def ask(self, _parent: object, _icon: object, title: str, text: str, buttons: Any,
+            default: Any = prompts.Button.NoButton, details: str = "") -> prompts.Button:  # fmt: skip
+        self.asked.append(f"{title}: {text}\n{details}".strip())
+        if self.answers:
+            return self.answers.pop(0)
+        for fallback in (prompts.Button.Discard, prompts.Button.No, prompts.Button.Ok):
+            if buttons & fallback:
+                return fallback
+        return prompts.Button.Cancel
+
+    def inform(self, _parent: object, _icon: object, title: str, text: str,
+               details: str = "") -> None:  # fmt: skip
+        self.informed.append(f"{title}: {text}\n{details}".strip())
+
+
+def record_prompts(monkeypatch: pytest.MonkeyPatch) -> Prompts:
+    """Every message box of the program is recorded and answered without blocking."""
+    recorder = Prompts()
+    monkeypatch.setattr(prompts, "ask", recorder.ask)
+    monkeypatch.setattr(prompts, "inform", recorder.inform)
+    return recorder
+
+
+def settings_in(folder: Path) -> QSettings:
+    """QSettings in an ini file of its own (the real user settings stay untouched)."""
+    return QSettings(str(folder / "prm9tool.ini"), QSettings.Format.IniFormat)
+
+
+def emulator_connection(paced: bool = False) -> ValveConnection:
+    """A connection to emulated valves, unpaced (as fast as the link asks) unless ``paced``."""
+    return ValveConnection(
+        opener=lambda entry: factory.open_session(entry, paced=paced),  # type: ignore[arg-type]
+        lister=lambda emulators: factory.list_devices(emulators),
+    )
+
+
+@contextmanager
+def main_window(qtbot: Any, folder: Path, type_key: str = E02) -> Iterator[Any]:
+    """A shown main window; offline, English, Basic level, emulator connection."""
+    from prm9tool.views.main_window import MainWindow
+
+    i18n.set_language("en")
+    doc = ParameterDocument(type_key)
+    window = MainWindow(
+        doc, DocumentUndo(doc), AccessModel(), emulator_connection(), settings_in(folder)
+    )
+    qtbot.addWidget(window)
+    window.show()
+    try:
+        yield window
+    finally:
+        window.connection.shutdown()
+        factory.forget_emulated_valves()
+        i18n.set_language("en")
+
+
+def go_online(qtbot: Any, window: Any, spec: str = f"{E02}:4001") -> Any:
+    """Put the window online with the emulated valve ``spec``; returns its entry."""
+    entry = factory.list_devices([spec])[-1]
+    with qtbot.waitSignal(window.connection.online_changed, timeout=10_000):
+        window.valve.go_online(entry)
+    return entry
+
+
+def session_of(window: Any) -> Any:
+    """The open valve session (tests only: it belongs to the worker thread)."""
+    return window.connection._session
+
+
+def emulated(serial: int) -> Any:
+    """The emulated valve with ``serial``."""
+    return factory._VALVES[serial]

@@ -1,0 +1,160 @@
+"""ValveConnection against the emulator: online/offline, writes, upload/download, a lost valve."""
+
+from __future__ import annotations
+
+import pytest
+from gui_support import E02, E04_CA, emulator_connection
+
+from prm9tool import backup
+from prm9tool.device import factory
+from prm9tool.device.transport.emulator import LinkFaults
+
+TIMEOUT = 10_000
+
+
+@pytest.fixture
+def connection(qtbot):
+    conn = emulator_connection()
+    yield conn
+    conn.shutdown()
+    factory.forget_emulated_valves()
+
+
+@pytest.fixture
+def paced_connection(qtbot):
+    """Streams need real time to fill their reports: the emulated valve runs paced."""
+    conn = emulator_connection(paced=True)
+    yield conn
+    conn.shutdown()
+    factory.forget_emulated_valves()
+
+
+def _online(qtbot, connection, spec=f"{E02}:5001"):
+    entry = factory.list_devices([spec])[-1]
+    with qtbot.waitSignals([connection.online_changed, connection.device_changed], timeout=TIMEOUT):
+        connection.go_online(entry)
+    return entry
+
+
+def _record(signal):
+    seen = []
+    signal.connect(lambda *args: seen.append(args))
+    return seen
+
+
+def _unplug(connection):
+    transport = connection._session.transport
+    transport.faults = LinkFaults(die_after=transport.reports_on_link)
+
+
+def test_going_online_reports_the_device_then_offline_clears_it(qtbot, connection):
+    _online(qtbot, connection)
+    assert connection.is_online
+    assert connection.device.serial == 5001 and connection.device.type_key == E02
+    with qtbot.waitSignal(connection.online_changed, timeout=TIMEOUT) as blocker:
+        connection.go_offline()
+    assert blocker.args == [False]
+    assert not connection.is_online and connection.device is None
+
+
+def test_status_and_live_values_arrive_while_online(qtbot, connection):
+    _online(qtbot, connection)
+    with qtbot.waitSignal(connection.status_changed, timeout=TIMEOUT) as status:
+        pass
+    assert str(status.args[0].device_state)
+    with qtbot.waitSignal(connection.live_values_changed, timeout=TIMEOUT) as live:
+        pass
+    assert {"PWR", "TEMP", "ERROR"} <= set(live.args[0])
+
+
+def test_write_reaches_the_valve_and_download_reads_it_back(qtbot, connection):
+    _online(qtbot, connection)
+    connection.write("LIMTA", 1800)
+    with qtbot.waitSignal(connection.operation_finished, timeout=TIMEOUT) as done:
+        connection.download()
+    assert done.args[0] == "download"
+    assert done.args[1]["LIMTA"] == 1800
+
+
+def test_a_refused_write_reports_the_reason_and_the_mnemonic(qtbot, connection):
+    _online(qtbot, connection)
+    failed, write_failed = _record(connection.failed), _record(connection.write_failed)
+    connection.write("DYNFREQ", 70_000)
+    qtbot.waitUntil(lambda: bool(failed and write_failed), timeout=TIMEOUT)
+    assert "DYNFREQ" in failed[0][0] and "outside the allowed range" in failed[0][0]
+    assert write_failed[0][0] == ["DYNFREQ"]
+    assert connection.is_online  # a refused value is no lost link
+
+
+def test_upload_backs_up_the_valve_first_then_verifies_and_stores(qtbot, connection):
+    _online(qtbot, connection)
+    with qtbot.waitSignal(connection.operation_finished, timeout=TIMEOUT) as read:
+        connection.download()
+    values = dict(read.args[1], DTAMP=1000)
+    written = _record(connection.backup_written)
+    with qtbot.waitSignal(connection.operation_finished, timeout=TIMEOUT) as done:
+        connection.upload(values)
+    result = done.args[1]
+    assert len(written) == 1
+    assert result.verified and result.stored and result.failed_step is None
+    backups = backup.existing_backups(5001)
+    assert len(backups) == 1 and "DTAMP = 15" in backups[0].read_text(encoding="utf-8")
+    with qtbot.waitSignal(connection.operation_finished, timeout=TIMEOUT):
+        connection.upload(values)  # the second upload keeps the first backup
+    assert backup.existing_backups(5001) == backups
+
+
+def test_cancelled_upload_stores_nothing_and_says_so(qtbot, connection):
+    _online(qtbot, connection)
+    busy = _record(connection.busy_changed)
+    with qtbot.waitSignal(connection.failed, timeout=TIMEOUT) as failed:
+        connection.run_job("upload", lambda s: (connection.cancel(), s.upload({"DTAMP": 1000},
+                                                None, connection._cancel))[1])  # fmt: skip
+    assert "cancelled" in failed.args[0] and "nothing was stored" in failed.args[0]
+    qtbot.waitUntil(lambda: busy and busy[-1] == (False,), timeout=TIMEOUT)
+    assert not connection.is_busy and connection.is_online
+
+
+def test_valve_that_disappears_mid_session_goes_offline_with_a_message(qtbot, connection):
+    _online(qtbot, connection)
+    with qtbot.waitSignal(connection.status_changed, timeout=TIMEOUT):
+        pass
+    lost = _record(connection.lost)
+    with qtbot.waitSignal(connection.online_changed, timeout=TIMEOUT):
+        _unplug(connection)
+    assert "link is down" in lost[0][0]
+    assert not connection.is_online and connection.device is None
+    with qtbot.waitSignal(connection.failed, timeout=TIMEOUT) as failed:
+        connection.write("LIMTA", 1000)
+    assert "Not connected" in failed.args[0]
+
+
+def test_watched_measuring_points_are_reported(qtbot, paced_connection):
+    connection = paced_connection
+    _online(qtbot, connection, f"{E04_CA}:5002")
+    connection.watch_signals(["supply_voltage", "temperature", "position_actual", "demand"])
+    seen: dict[str, float] = {}
+    connection.signal_values_changed.connect(seen.update)
+    qtbot.waitUntil(lambda: {"supply_voltage", "demand"} <= set(seen), timeout=TIMEOUT)
+    assert 19.0 < seen["supply_voltage"] / 1000 < 29.0
+
+
+def test_stream_delivers_samples_in_key_order(qtbot, paced_connection):
+    connection = paced_connection
+    _online(qtbot, connection)
+    with qtbot.waitSignal(connection.stream_started, timeout=TIMEOUT) as started:
+        connection.start_stream(["supply_voltage", "demand"], 1000)
+    assert started.args[0] == ["supply_voltage", "demand"]
+    with qtbot.waitSignal(connection.samples_received, timeout=TIMEOUT) as block:
+        pass
+    assert block.args[0].shape[1] == 2
+    with qtbot.waitSignal(connection.stream_stopped, timeout=TIMEOUT):
+        connection.stop_stream()
+    assert connection.streaming_keys == []
+
+
+def test_opening_a_missing_device_fails_with_a_message(qtbot, connection):
+    with qtbot.waitSignal(connection.failed, timeout=TIMEOUT) as failed:
+        connection.go_online("usb:/dev/does-not-exist")
+    assert failed.args[0]
+    assert not connection.is_online

@@ -1,0 +1,338 @@
+"""The main window offline: menus and toolbar, enabled actions, access levels, files, undo."""
+
+from __future__ import annotations
+
+import pytest
+from gui_support import E02, E04_CA, main_window, record_prompts
+from PySide6.QtCore import QMimeData, QPointF, Qt, QUrl
+from PySide6.QtGui import QDropEvent
+from PySide6.QtWidgets import QFileDialog
+
+from prm9tool import prmfile
+from prm9tool.catalogue import Access
+from prm9tool.password import DEFAULT_PASSWORD, PasswordStore
+from prm9tool.typekey import TypeKey
+from prm9tool.views import main_window as main_window_module
+from prm9tool.views import prompts
+from prm9tool.views.access_dialog import ChangePasswordDialog, PasswordDialog
+from prm9tool.views.valve_selection import ValveSelectionDialog
+
+Accepted = ValveSelectionDialog.DialogCode.Accepted
+Rejected = ValveSelectionDialog.DialogCode.Rejected
+
+
+@pytest.fixture
+def answers(monkeypatch):
+    return record_prompts(monkeypatch)
+
+
+@pytest.fixture
+def window(qtbot, tmp_path, answers):
+    with main_window(qtbot, tmp_path) as win:
+        yield win
+
+
+def _menu_texts(window, name):
+    return [a.text() for a in window.actions.menus[name].actions() if not a.isSeparator()]
+
+
+def test_menus_and_toolbar_are_those_of_the_manual(window):
+    titles = [a.text() for a in window.menuBar().actions()]
+    assert titles == ["&File", "&View", "&Valve", "&Communication", "&Help"]
+    assert {"&Open…", "&Save", "Save &As…", "&Print…", "E&xit"} <= set(_menu_texts(window, "file"))
+    assert _menu_texts(window, "valve") == [
+        "Valve &selection…",
+        "Valve s&tatus…",
+        "&Upload to valve",
+        "&Download from valve",
+        "Restore &factory values…",
+        "&Restart valve…",
+    ]
+    assert _menu_texts(window, "communication") == [
+        "&HID configuration…",
+        "O&nline mode",
+        "O&ffline mode",
+    ]
+    assert _menu_texts(window, "help") == ["&Help", "Home&page", "&About prm9tool"]
+    assert _menu_texts(window, "language") == ["Deutsch", "English", "Čeština"]
+    toolbar = [a.objectName() for a in window.actions.toolbar.actions() if not a.isSeparator()]
+    assert toolbar == [
+        f"action_{name}"
+        for name in ("open", "save", "print", "online", "offline", "download", "upload",
+                     "restart", "valve_selection", "view_diagram", "view_parameters",
+                     "view_scope", "canopen")
+    ]  # fmt: skip
+    assert all(
+        not a.icon().isNull() for a in window.actions.toolbar.actions() if not a.isSeparator()
+    )
+
+
+def test_shortcuts_include_the_standard_ones(window):
+    shortcuts = {n: window.actions[n].shortcut().toString() for n in ("open", "save", "undo")}
+    assert shortcuts == {"open": "Ctrl+O", "save": "Ctrl+S", "undo": "Ctrl+Z"}
+    assert "Ctrl+Y" in [k.toString() for k in window.actions["redo"].shortcuts()]
+
+
+def test_offline_only_what_makes_sense_is_enabled(window):
+    a = window.actions
+    for name in ("upload", "download", "restart", "offline", "view_scope"):
+        assert not a[name].isEnabled(), name
+    for name in ("online", "open", "valve_selection", "valve_status", "restore_factory"):
+        assert a[name].isEnabled(), name
+    assert not a["canopen"].isEnabled()  # E02 without -CA
+    assert not a["undo"].isEnabled() and not a["redo"].isEnabled()
+
+
+def test_status_bar_shows_mode_type_key_and_file(window):
+    bar = window.status
+    assert bar.mode_label.text() == "Mode: OFFLINE"
+    assert bar.type_key_label.text() == E02
+    assert bar.file_label.text() == "untitled"
+    window.doc.set_value("LIMTA", 2000)
+    assert bar.file_label.text() == "untitled *"
+
+
+def test_views_switch_and_scope_needs_a_valve(window):
+    window.actions["view_parameters"].trigger()
+    assert window.current_view() == "parameters"
+    window.actions["view_diagram"].trigger()
+    assert window.current_view() == "diagram"
+    window.open_scope("demand")
+    assert window.current_view() == "diagram"
+    assert "online mode only" in window.status.currentMessage()
+
+
+def test_expert_needs_the_password(window, monkeypatch):
+    monkeypatch.setattr(window, "_ask_password", lambda: Rejected)
+    window.actions["level_expert"].trigger()
+    assert window.access.level is Access.BASIC
+    assert window.actions["level_basic"].isChecked()
+    monkeypatch.setattr(window, "_ask_password", lambda: Accepted)
+    window.actions["level_expert"].trigger()
+    assert window.access.level is Access.EXPERT
+    assert window.actions["change_password"].isEnabled()
+    window.actions["level_basic"].trigger()
+    assert window.access.level is Access.BASIC
+    assert not window.actions["change_password"].isEnabled()
+
+
+def test_password_dialog_accepts_only_the_right_password(window):
+    dialog = PasswordDialog(window.passwords, window)
+    dialog.password.setText("guess")
+    dialog._on_accepted()
+    assert dialog.error_label.text() == "Wrong password." and dialog.result() != Accepted
+    dialog.password.setText(DEFAULT_PASSWORD)
+    dialog._on_accepted()
+    assert dialog.result() == Accepted
+
+
+def test_password_is_changed_and_stored_only_as_a_salted_hash(window):
+    dialog = ChangePasswordDialog(window.passwords, window)
+    dialog.old.setText(DEFAULT_PASSWORD)
+    dialog.new.setText("valve-42")
+    dialog.repeat.setText("valve-41")
+    dialog._on_accepted()
+    assert dialog.error_label.text() == "The two new passwords differ."
+    dialog.repeat.setText("valve-42")
+    dialog._on_accepted()
+    assert dialog.result() == Accepted
+    stored = str(window.settings.value("access/expert_password"))
+    assert "valve-42" not in stored and stored.startswith("pbkdf2_sha256$")
+    fresh = PasswordStore(window.settings)
+    assert fresh.check("valve-42") and not fresh.check(DEFAULT_PASSWORD)
+
+
+def test_basic_level_hides_and_locks_the_controllers(window, monkeypatch):
+    window.show_view("parameters")
+    model = window.parameter_view.model
+    assert model.row_of("POSKP") < 0
+    monkeypatch.setattr(window, "_ask_password", lambda: Accepted)
+    window.actions["level_expert"].trigger()
+    assert model.row_of("POSKP") >= 0
+
+
+def test_valve_selection_makes_a_new_document_with_factory_defaults(window, monkeypatch):
+    window.doc.set_value("LIMTA", 2000)
+    window.doc.mark_saved(None)
+    monkeypatch.setattr(ValveSelectionDialog, "exec", _select(E04_CA))
+    window.actions["valve_selection"].trigger()
+    assert str(window.doc.type_key) == E04_CA
+    assert window.doc.value("LIMTA") == 2400 and "PRCKP" in window.doc.values
+    assert not window.doc.modified and window.doc.path is None
+    assert window.actions["canopen"].isEnabled()
+    assert window.status.type_key_label.text() == E04_CA
+
+
+def _select(key):
+    def run(dialog):
+        dialog._show_key(TypeKey.parse(key))
+        return Accepted
+
+    return run
+
+
+def test_valve_selection_validates_a_typed_key(window):
+    dialog = ValveSelectionDialog(None, window)
+    dialog._on_key_edited("PRM9-07.3Z11/30-24E02S02")
+    assert "nominal size '07'" in dialog.error_label.text()
+    assert not dialog.buttons.button(dialog.buttons.StandardButton.Ok).isEnabled()
+    dialog._on_key_edited("prm9-10.3z11/60-24e04s02-ca")
+    assert str(dialog.selected_type_key()) == E04_CA
+    assert dialog.flow.currentData() == "60" and dialog.canopen.isChecked()
+
+
+def test_unsaved_changes_prompt_on_new_can_cancel(window, answers, monkeypatch):
+    window.doc.set_value("LIMTA", 2000)
+    monkeypatch.setattr(ValveSelectionDialog, "exec", _select(E04_CA))
+    answers.answers = [prompts.Button.Cancel]
+    window.actions["new"].trigger()
+    assert "Unsaved changes" in answers.asked[-1]
+    assert str(window.doc.type_key) == E02 and window.doc.value("LIMTA") == 2000
+
+
+def test_save_as_then_open_round_trip_and_recent_files(window, tmp_path, monkeypatch):
+    path = tmp_path / "valve.prm"
+    window.doc.set_value("DTAMP", 1000)
+    monkeypatch.setattr(QFileDialog, "getSaveFileName", lambda *a, **k: (str(path)[:-4], ""))
+    window.actions["save_as"].trigger()
+    assert path.exists() and not window.doc.modified
+    assert window.status.file_label.text() == "valve.prm"
+    assert window.files.recent_files() == [str(path)]
+    window.doc.set_value("DTAMP", 2000)
+    window.actions["save"].trigger()
+    assert prmfile.read_file(path).values["DTAMP"] == 2000
+    window.files.new_document(TypeKey.parse(E02))
+    monkeypatch.setattr(QFileDialog, "getOpenFileName", lambda *a, **k: (str(path), ""))
+    window.actions["open"].trigger()
+    assert window.doc.value("DTAMP") == 2000 and window.doc.path == path
+    window.files.fill_recent_menu(window.actions.menus["recent"])
+    assert [a.text() for a in window.actions.menus["recent"].actions()] == ["&1 valve.prm"]
+
+
+def test_opening_a_broken_file_reports_the_line_and_changes_nothing(window, tmp_path, answers):
+    path = tmp_path / "broken.prm"
+    path.write_text("format = prm9tool 1\ntype_key = PRM9-06.3Z11/30-24E02S02\nLIMTA = lots\n")
+    window.doc.set_value("LIMTA", 2000)
+    window.doc.mark_saved(None)
+    assert not window.files.open_path(path)
+    assert "broken.prm:3" in answers.asked[-1]
+    assert window.doc.value("LIMTA") == 2000 and window.doc.path is None
+
+
+def test_unsaved_prompt_on_close_save_keeps_window_on_cancel(window, answers):
+    window.doc.set_value("LIMTA", 2000)
+    answers.answers = [prompts.Button.Cancel]
+    window.close()
+    assert window.isVisible()
+    answers.answers = [prompts.Button.Discard]
+    window.close()
+    assert not window.isVisible()
+
+
+def test_drop_a_prm_file_opens_it(window, tmp_path):
+    path = tmp_path / "dropped.prm"
+    prmfile.write_file(prmfile.PrmContents.factory(TypeKey.parse(E04_CA)), path)
+    mime = QMimeData()
+    mime.setUrls([QUrl.fromLocalFile(str(path))])
+    event = QDropEvent(
+        QPointF(10, 10), Qt.DropAction.CopyAction, mime, Qt.MouseButton.LeftButton,
+        Qt.KeyboardModifier.NoModifier,
+    )  # fmt: skip
+    window.dropEvent(event)
+    assert window.doc.path == path and str(window.doc.type_key) == E04_CA
+
+
+def test_undo_redo_every_edit(window):
+    window.doc.set_value("LIMTA", 2000)
+    window.doc.set_value("DTAMP", 1000)
+    assert window.actions["undo"].isEnabled()
+    window.actions["undo"].trigger()
+    assert window.doc.value("DTAMP") != 1000 and window.doc.value("LIMTA") == 2000
+    window.actions["undo"].trigger()
+    assert window.doc.value("LIMTA") == 2400 and not window.doc.modified
+    assert window.actions["redo"].isEnabled()
+    window.actions["redo"].trigger()
+    assert window.doc.value("LIMTA") == 2000
+
+
+def test_restore_factory_values_offline_resets_the_document(window, answers):
+    window.doc.set_value("LIMTA", 2000)
+    answers.answers = [prompts.Button.Yes]
+    window.actions["restore_factory"].trigger()
+    assert window.doc.value("LIMTA") == 2400
+    window.actions["undo"].trigger()
+    assert window.doc.value("LIMTA") == 2000
+
+
+def test_export_pdf_holds_the_parameters(window, tmp_path, monkeypatch):
+    target = tmp_path / "record"
+    window.doc.set_value("LIMTA", 1234)
+    monkeypatch.setattr(QFileDialog, "getSaveFileName", lambda *a, **k: (str(target), ""))
+    window.actions["export_pdf"].trigger()
+    pdf = target.with_suffix(".pdf")
+    assert pdf.read_bytes().startswith(b"%PDF")
+    text = window.records.record().toPlainText()
+    for needle in (E02, "LIMTA", "1234", "mA", "DYNFREQ", "Basic", "untitled"):
+        assert needle in text
+    assert pdf.stat().st_size > 20_000  # text, table and the diagram picture
+
+
+def test_print_goes_through_the_print_dialog(window, tmp_path, monkeypatch):
+    from PySide6.QtPrintSupport import QPrintDialog, QPrinter
+
+    out = tmp_path / "printed.pdf"
+
+    def accept(dialog):
+        printer = dialog.printer()
+        printer.setOutputFormat(QPrinter.OutputFormat.PdfFormat)
+        printer.setOutputFileName(str(out))
+        return Accepted
+
+    monkeypatch.setattr(QPrintDialog, "exec", accept)
+    window.actions["print"].trigger()
+    assert out.exists() and out.stat().st_size > 10_000
+
+
+def test_help_about_and_homepage(window, answers, monkeypatch):
+    window.actions["help"].trigger()
+    assert window.help_window.isVisible()
+    assert "Expert" in window.help_window.browser.toPlainText()
+    window.actions["about"].trigger()
+    assert "prm9tool" in answers.asked[-1] and "PySide6" in answers.asked[-1]
+    opened = []
+    monkeypatch.setattr(main_window_module, "open_homepage", lambda: opened.append(1))
+    window._connect_actions()
+    window.actions["homepage"].trigger()
+    assert opened
+
+
+def test_window_geometry_and_view_are_remembered(qtbot, tmp_path, answers):
+    with main_window(qtbot, tmp_path) as first:
+        first.resize(700, 500)
+        first.show_view("parameters")
+        first.close()
+    with main_window(qtbot, tmp_path) as second:
+        assert second.current_view() == "parameters"
+        assert (second.width(), second.height()) == (700, 500)
+
+
+def test_status_window_offline_says_so(window):
+    status = window.show_status_window()
+    assert status.fields["mode"].text() == "OFFLINE"
+    assert status.errors.item(0).text() == "No status: the valve is offline."
+
+
+def test_pdf_export_error_is_reported(window, answers, tmp_path):
+    assert not window.records.export_pdf(tmp_path / "missing" / "dir" / "x.pdf")
+    assert "Cannot write" in answers.asked[-1]
+
+
+def test_hid_dialog_lists_emulated_valves_and_remembers_the_choice(window, monkeypatch):
+    from prm9tool.views.hid_dialog import SELECTED_KEY, HidConfigurationDialog
+
+    dialog = HidConfigurationDialog(window.connection.list_devices, window.settings, window)
+    dialog.add_emulator(f"{E04_CA}:77")
+    cells = [dialog.table.item(r, 1).text() for r in range(dialog.table.rowCount())]
+    assert E04_CA in cells
+    dialog.accept()
+    assert str(window.settings.value(SELECTED_KEY)).endswith(":77")

@@ -1,0 +1,160 @@
+"""The parameter list: rows by variant and access level, highlighting, search, edit dialog."""
+
+from __future__ import annotations
+
+import pytest
+from gui_support import E02, E04_CA
+from PySide6.QtCore import Qt
+
+from prm9tool.access import AccessModel
+from prm9tool.catalogue import Access
+from prm9tool.document import ParameterDocument
+from prm9tool.undo import DocumentUndo
+from prm9tool.views.parameter_model import MNEMONIC_ROLE, Column
+from prm9tool.views.parameter_view import ParameterListView
+
+
+@pytest.fixture
+def doc(qapp):
+    return ParameterDocument(E02)
+
+
+@pytest.fixture
+def access(qapp):
+    return AccessModel()
+
+
+@pytest.fixture
+def view(qtbot, doc, access):
+    widget = ParameterListView(doc, access)
+    qtbot.addWidget(widget)
+    return widget
+
+
+def _shown(view):
+    proxy = view.proxy
+    return [proxy.data(proxy.index(row, 0), MNEMONIC_ROLE) for row in range(proxy.rowCount())]
+
+
+def _cell(view, mnemonic, column):
+    model = view.model
+    return model.data(model.index(model.row_of(mnemonic), column))
+
+
+def test_basic_level_shows_the_manuals_basic_list_without_controllers(view):
+    shown = _shown(view)
+    for mnemonic in ("PCODE", "SNV", "ERROR", "PWR", "AINSETP", "THRESETP", "LIMTA", "DTAMP"):
+        assert mnemonic in shown
+    assert "POSKP" not in shown and "SETPLINXA" not in shown
+
+
+def test_expert_level_adds_controllers_and_linearization(view, access):
+    access.set_level(Access.EXPERT)
+    shown = _shown(view)
+    assert {"POSKP", "POSKI", "SETPLINXA", "SETPLINON"} <= set(shown)
+    assert "PRCKP" not in shown  # E02 has no process controller
+
+
+def test_rows_follow_the_variant(view, doc, access):
+    access.set_level(Access.EXPERT)
+    doc.set_type_key(E04_CA)
+    shown = _shown(view)
+    assert {"PRCKP", "SENSTYPE", "NODEID"} <= set(shown)
+
+
+def test_cells_show_value_unit_and_translated_choice(view):
+    assert _cell(view, "LIMTA", Column.VALUE) == "2400"
+    assert _cell(view, "LIMTA", Column.UNIT) == "mA"
+    assert _cell(view, "AINSETP", Column.VALUE) == "9: ±10 V bipolar"
+    assert _cell(view, "PCODE", Column.VALUE) == E02
+    assert _cell(view, "PWR", Column.VALUE) == "—"  # never read from a valve
+
+
+def test_non_default_values_are_highlighted_and_filtered(view, doc):
+    model = view.model
+    index = model.index(model.row_of("LIMTA"), Column.VALUE)
+    assert model.data(index, Qt.ItemDataRole.BackgroundRole) is None
+    doc.set_value("LIMTA", 2000)
+    assert model.data(index, Qt.ItemDataRole.BackgroundRole) is not None
+    assert model.data(index, Qt.ItemDataRole.FontRole).bold()
+    view.modified_only.setChecked(True)
+    assert _shown(view) == ["LIMTA"]
+    doc.set_value("DTAMP", 1000)
+    assert _shown(view) == ["LIMTA", "DTAMP"]
+
+
+def test_search_matches_mnemonic_and_description(view):
+    view.search.setText("dither")
+    assert set(_shown(view)) == {"DTAMP", "DYNFREQ"}
+    view.search.setText("limta")
+    assert _shown(view) == ["LIMTA"]
+
+
+def test_live_values_refresh_the_table(view, doc):
+    doc.set_live({"PWR": 23950, "TEMP": 41})
+    assert _cell(view, "PWR", Column.VALUE) == "23.95"
+    assert _cell(view, "TEMP", Column.VALUE) == "41"
+
+
+def test_edit_dialog_shows_limits_and_default_and_sets_the_value(view, doc):
+    dialog = view.make_edit_dialog("DTAMP")
+    assert dialog._labels["range"].text() == "0 … 100 %"
+    assert dialog._labels["default"].text() == "15 %"
+    dialog.set_text("20")
+    dialog._buttons.accepted.emit()
+    assert dialog.result() == dialog.DialogCode.Accepted
+    assert doc.display("DTAMP") == "20"
+
+
+@pytest.mark.parametrize(
+    ("mnemonic", "text", "reason"),
+    [
+        ("DYNFREQ", "70000", "DYNFREQ: 70000 Hz is outside the allowed range"),
+        ("LIMTA", "3500", "CURNORM"),
+        ("DTAMP", "a lot", "DTAMP: “a lot” is not a number"),
+    ],
+)
+def test_edit_dialog_refuses_invalid_values_with_the_reason(view, doc, mnemonic, text, reason):
+    before = doc.value(mnemonic)
+    dialog = view.make_edit_dialog(mnemonic)
+    dialog.set_text(text)
+    dialog._buttons.accepted.emit()
+    assert reason in dialog.error_label.text()
+    assert not dialog.error_label.isHidden()
+    assert dialog.result() != dialog.DialogCode.Accepted
+    assert doc.value(mnemonic) == before and not doc.modified
+
+
+def test_read_only_parameters_open_without_an_input(view):
+    dialog = view.make_edit_dialog("PWR")
+    assert not dialog._editor.isEnabled()
+    assert "Read-only" in dialog._labels["hint"].text()
+
+
+def test_at_basic_level_one_ramp_edit_sets_all_four_as_one_undo_step(view, doc, access):
+    undo = DocumentUndo(doc)
+    dialog = view.make_edit_dialog("RAMPSETNEGUP")
+    assert "all ramps are set together" in dialog._labels["hint"].text()
+    dialog.set_text("250")
+    dialog._buttons.accepted.emit()
+    ramps = ("RAMPSETPOSUP", "RAMPSETPOSDOWN", "RAMPSETNEGUP", "RAMPSETNEGDOWN")
+    assert [doc.value(mn) for mn in ramps] == [250] * 4
+    assert undo.stack.count() == 1
+    undo.stack.undo()
+    assert [doc.value(mn) for mn in ramps] == [0] * 4
+    access.set_level(Access.EXPERT)
+    dialog = view.make_edit_dialog("RAMPSETNEGUP")
+    dialog.set_text("300")
+    dialog._buttons.accepted.emit()
+    assert [doc.value(mn) for mn in ramps] == [0, 0, 300, 0]
+
+
+def test_double_click_opens_the_edit_dialog(view, qtbot):
+    opened = []
+    view.edit_requested.connect(opened.append)
+    row = view.proxy.mapFromSource(view.model.index(view.model.row_of("LIMTB"), 0))
+    view.table.doubleClicked.emit(row)
+    assert opened == ["LIMTB"]
+    dialogs = [w for w in view.findChildren(type(view.make_edit_dialog("LIMTB"))) if w.isVisible()]
+    assert dialogs and dialogs[0].param.mnemonic == "LIMTB"
+    dialogs[0].reject()
