@@ -53,11 +53,21 @@ def frame(text: str) -> bytes:
 
 REQUESTS = [
     (1, Identify(), "01 01"),
-    (7, ReadEntries(((0x1018, 4), (0x6301, 1))), "02 07 02 18 10 04 01 63 01"),
+    (7, ReadEntries(((0x1018, 4), (0x6301, 1))), "02 07 02 18 10 04 01 01 63 01 01"),
+    (
+        8,
+        ReadEntries(((0x2000, 1), (0x2000, 2), (0x2000, 3), (0x6345, 1))),
+        "02 08 02 00 20 01 03 45 63 01 01",
+    ),
     (
         8,
         WriteEntries(((0x6345, 1, b"\x60\x09"), (0x2012, 0, b"\x05"))),
-        "03 08 02 45 63 01 02 60 09 12 20 00 01 05",
+        "03 08 02 45 63 01 01 02 60 09 12 20 00 01 01 05",
+    ),
+    (
+        9,
+        WriteEntries(((0x6345, 1, b"\x60\x09"), (0x6345, 2, b"\x61\x09"))),
+        "03 09 01 45 63 01 02 02 60 09 02 61 09",
     ),
     (9, SegmentRead(0x2041, 0, 56), "04 09 41 20 00 38 00"),
     (10, SegmentWrite(0x1008, 0, 4, 0, b"PRM9"), "05 0a 08 10 00 04 00 00 00 04 50 52 4d 39"),
@@ -170,7 +180,7 @@ def test_unknown_opcode_is_answered_with_the_error_opcode():
         ("06 01 73 61 76 66", "wrong signature"),
         ("01 01 00 01", "non-zero bytes"),
         ("02 01 15", "count 21"),
-        ("03 01 01 00 20 00 3c 01", "past the end"),
+        ("03 01 01 00 20 00 01 3c 01", "past the end"),
     ],
 )
 def test_request_checks(wire, reason):
@@ -191,19 +201,27 @@ def test_invalid_answer_raises_protocol_error_with_the_bytes():
 
 
 def test_pack_reads_fills_reports_up_to_the_answer_room():
-    items = [(0x2000 + i, 1, 2) for i in range(45)]  # 45 × 16-bit values
-    batches = pack_reads(items)
-    assert [len(b.addresses) for b in batches] == [20, 20, 5]
-    big = [(0x2000 + i, 1, 4) for i in range(15)]  # 4-byte values: 5 bytes per answer entry
+    run = [(0x2000, n, 2) for n in range(1, 46)]  # 45 16-bit values of one index
+    assert [len(b.addresses) for b in pack_reads(run)] == [20, 20, 5]  # 60 answer bytes
+    scattered = [(0x2000 + i, 1, 2) for i in range(45)]  # one run header each
+    assert [len(b.addresses) for b in pack_reads(scattered)] == [15, 15, 15]
+    big = [(0x2000, n, 4) for n in range(1, 16)]  # 4-byte values: 5 bytes per answer entry
     assert [len(b.addresses) for b in pack_reads(big)] == [12, 3]
 
 
 def test_pack_writes_fills_reports():
-    entries = [(0x2000 + i, 1, b"\x01\x02") for i in range(25)]  # 6 bytes per entry
-    batches = pack_writes(entries)
-    assert [len(b.entries) for b in batches] == [10, 10, 5]
+    run = [(0x2000, n, b"\x01\x02") for n in range(1, 26)]  # 4 + 3 per entry
+    assert [len(b.entries) for b in pack_writes(run)] == [19, 6]
+    scattered = [(0x2000 + i, 1, b"\x01\x02") for i in range(25)]  # 7 bytes per entry
+    batches = pack_writes(scattered)
+    assert [len(b.entries) for b in batches] == [8, 8, 8, 1]
     for batch in batches:
-        assert len(encode_request(1, batch)) == 64
+        assert decode_request(encode_request(1, batch)) == (1, batch)
+
+
+def test_run_past_subindex_255_is_malformed():
+    with pytest.raises(MalformedReportError, match="passes subindex 255"):
+        decode_request(frame("02 01 01 00 20 ff 02"))
 
 
 def test_segments_split_long_values():

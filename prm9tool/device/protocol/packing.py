@@ -10,40 +10,51 @@ from collections.abc import Sequence
 
 from prm9tool.device.protocol.requests import (
     MAX_READ_ENTRIES,
+    MAX_RUNS,
     MAX_SEGMENTED_LENGTH,
     SEGMENT_WRITE_CHUNK,
     ReadEntries,
     SegmentWrite,
     WriteEntries,
+    runs,
 )
 from prm9tool.device.protocol.wire import BODY_SIZE
 
 READ_ANSWER_ROOM = BODY_SIZE - 2  # answer body after the result and count bytes
-WRITE_ROOM = BODY_SIZE - 1  # request body after the count byte
-WRITE_ENTRY_OVERHEAD = 4  # index, subindex, length
+REQUEST_ROOM = BODY_SIZE - 1  # request body after the run count
+RUN_HEADER = 4  # index, first subindex, count
 READ_ENTRY_OVERHEAD = 1  # length byte in the answer
+WRITE_ENTRY_OVERHEAD = 1  # length byte in the request
+
+
+def _runs_bytes(keys: list[tuple[int, int]], per_entry: list[int]) -> int:
+    return RUN_HEADER * len(runs(keys)) + sum(per_entry)
 
 
 def pack_reads(items: Sequence[tuple[int, int, int]]) -> list[ReadEntries]:
     """READ requests for ``(index, subindex, expected size)`` items, in order.
 
-    Each request holds at most 20 addresses and only as many entries as their answers fit in
-    one report, so the valve answers every entry in one go.
+    Each request holds only as many entries as their answers fit in one report, so the valve
+    answers every entry in one go; consecutive subindices share one run header.
     """
     batches: list[ReadEntries] = []
-    current: list[tuple[int, int]] = []
-    room = READ_ANSWER_ROOM
+    keys: list[tuple[int, int]] = []
+    answer = 0
     for index, subindex, size in items:
         need = READ_ENTRY_OVERHEAD + size
         if need > READ_ANSWER_ROOM:
             raise ValueError(f"0x{index:04X}/{subindex}: {size} bytes need a segmented read")
-        if current and (len(current) == MAX_READ_ENTRIES or need > room):
-            batches.append(ReadEntries(tuple(current)))
-            current, room = [], READ_ANSWER_ROOM
-        current.append((index, subindex))
-        room -= need
-    if current:
-        batches.append(ReadEntries(tuple(current)))
+        trial = [*keys, (index, subindex)]
+        if keys and (
+            answer + need > READ_ANSWER_ROOM
+            or len(runs(trial)) > MAX_RUNS
+            or len(trial) > MAX_READ_ENTRIES
+        ):
+            batches.append(ReadEntries(tuple(keys)))
+            keys, answer, trial = [], 0, [(index, subindex)]
+        keys, answer = trial, answer + need
+    if keys:
+        batches.append(ReadEntries(tuple(keys)))
     return batches
 
 
@@ -51,19 +62,22 @@ def pack_writes(entries: Sequence[tuple[int, int, bytes]]) -> list[WriteEntries]
     """WRITE requests for ``(index, subindex, encoded value)`` entries, in order."""
     batches: list[WriteEntries] = []
     current: list[tuple[int, int, bytes]] = []
-    room = WRITE_ROOM
     for index, subindex, data in entries:
-        need = WRITE_ENTRY_OVERHEAD + len(data)
-        if need > WRITE_ROOM:
+        if RUN_HEADER + WRITE_ENTRY_OVERHEAD + len(data) > REQUEST_ROOM:
             raise ValueError(f"0x{index:04X}/{subindex}: {len(data)} bytes need a segmented write")
-        if current and need > room:
+        trial = [*current, (index, subindex, data)]
+        if current and _write_size(trial) > REQUEST_ROOM:
             batches.append(WriteEntries(tuple(current)))
-            current, room = [], WRITE_ROOM
-        current.append((index, subindex, data))
-        room -= need
+            trial = [(index, subindex, data)]
+        current = trial
     if current:
         batches.append(WriteEntries(tuple(current)))
     return batches
+
+
+def _write_size(entries: list[tuple[int, int, bytes]]) -> int:
+    keys = [(index, subindex) for index, subindex, _ in entries]
+    return _runs_bytes(keys, [WRITE_ENTRY_OVERHEAD + len(d) for _, _, d in entries])
 
 
 def segments(index: int, subindex: int, data: bytes) -> list[SegmentWrite]:

@@ -6,7 +6,7 @@ Each request knows its opcode, whether the transport may repeat it after a lost 
 
 from __future__ import annotations
 
-from collections.abc import Callable
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 from enum import IntEnum
 
@@ -20,7 +20,8 @@ STREAM_DATA_OP = 0xC0
 ABORT_ENTRY = 0xFF  # length byte of a READ answer entry that carries an abort code instead
 RESULT_OK, RESULT_ABORT = 0, 1
 NO_POSITION = 0xFF
-MAX_READ_ENTRIES = (BODY_SIZE - 1) // 3  # 20 addresses per READ request
+MAX_RUNS = (BODY_SIZE - 1) // 4  # runs of consecutive subindices in one READ/WRITE (15)
+MAX_READ_ENTRIES = BODY_SIZE - 2  # entries one READ answer can carry (1 length byte each)
 SEGMENT_READ_CHUNK = BODY_SIZE - 6  # data bytes in one SEGMENT_READ answer (56)
 SEGMENT_WRITE_CHUNK = BODY_SIZE - 8  # data bytes in one SEGMENT_WRITE request (54)
 MAX_SEGMENTED_LENGTH = 1024  # longest value a segmented transfer carries (decision)
@@ -63,46 +64,87 @@ class Identify:
         return cls()
 
 
+def runs(keys: Sequence[tuple[int, int]]) -> list[tuple[int, int, int]]:
+    """Group addresses into runs ``(index, first subindex, count)`` of consecutive subindices."""
+    groups: list[tuple[int, int, int]] = []
+    for index, subindex in keys:
+        if groups:
+            last_index, first, count = groups[-1]
+            if last_index == index and first + count == subindex and count < 255:
+                groups[-1] = (index, first, count + 1)
+                continue
+        groups.append((index, subindex, 1))
+    return groups
+
+
+def _read_run(r: Reader) -> tuple[int, int, int]:
+    index, first, count = r.u16(), r.u8(), r.count(1, 255)
+    if first + count > 256:
+        raise MalformedReportError(f"run 0x{index:04X}/{first} × {count} passes subindex 255")
+    return index, first, count
+
+
 @dataclass(frozen=True)
 class ReadEntries:
-    """Read several object-dictionary entries: ``addresses`` = ((index, subindex), …)."""
+    """Read several object-dictionary entries: ``addresses`` = ((index, subindex), …).
+
+    On the wire, consecutive subindices of one index travel as one run (index, first, count).
+    """
 
     addresses: tuple[tuple[int, int], ...]
     op = Op.READ
     idempotent = True
 
     def encode(self, w: Writer) -> None:
-        """Write the body: count, then index (u16) and subindex (u8) per entry."""
-        w.u8(len(self.addresses))
-        for index, subindex in self.addresses:
-            w.u16(index).u8(subindex)
+        """Write the body: run count, then index (u16), first subindex, count per run."""
+        groups = runs(self.addresses)
+        w.u8(len(groups))
+        for index, first, count in groups:
+            w.u16(index).u8(first).u8(count)
 
     @classmethod
     def decode(cls, r: Reader) -> ReadEntries:
         """Parse the body."""
-        count = r.count(1, MAX_READ_ENTRIES)
-        return cls(tuple((r.u16(), r.u8()) for _ in range(count)))
+        addresses = []
+        for _ in range(r.count(1, MAX_RUNS)):
+            index, first, count = _read_run(r)
+            addresses += [(index, first + n) for n in range(count)]
+        if len(addresses) > MAX_READ_ENTRIES:
+            raise MalformedReportError(f"{len(addresses)} entries; at most {MAX_READ_ENTRIES}")
+        return cls(tuple(addresses))
 
 
 @dataclass(frozen=True)
 class WriteEntries:
-    """Write several entries: ``entries`` = ((index, subindex, encoded value), …)."""
+    """Write several entries: ``entries`` = ((index, subindex, encoded value), …).
+
+    On the wire, consecutive subindices of one index travel as one run: index, first
+    subindex, count, then length + data per entry.
+    """
 
     entries: tuple[tuple[int, int, bytes], ...]
     op = Op.WRITE
     idempotent = True  # absolute values: writing the same report twice leaves the same state
 
     def encode(self, w: Writer) -> None:
-        """Write the body: count, then index, subindex, length and data per entry."""
-        w.u8(len(self.entries))
-        for index, subindex, data in self.entries:
-            w.u16(index).u8(subindex).u8(len(data)).raw(data)
+        """Write the body: run count, then per run index, first, count, (length, data)…"""
+        groups = runs([(index, subindex) for index, subindex, _ in self.entries])
+        w.u8(len(groups))
+        values = iter(self.entries)
+        for index, first, count in groups:
+            w.u16(index).u8(first).u8(count)
+            for _ in range(count):
+                data = next(values)[2]
+                w.u8(len(data)).raw(data)
 
     @classmethod
     def decode(cls, r: Reader) -> WriteEntries:
         """Parse the body."""
-        count = r.count(1, BODY_SIZE // 5)
-        return cls(tuple((r.u16(), r.u8(), r.raw(r.u8())) for _ in range(count)))
+        entries = []
+        for _ in range(r.count(1, MAX_RUNS)):
+            index, first, count = _read_run(r)
+            entries += [(index, first + n, r.raw(r.u8())) for n in range(count)]
+        return cls(tuple(entries))
 
 
 @dataclass(frozen=True)
