@@ -127,6 +127,7 @@ def control_loop(s: LoopState) -> Generator[None, int, None]:
     q_int = q_d = q_prev = 0.0  # process PIDT1
     ph = 0.0  # dither phase, rad
     cap_count = 0
+    last_mode = MODE_OFF
     w = u = ca = cb = ka = kb = da = db = xm = pe = 0.0
     s0 = s1 = s2 = s3 = pv = dev = dg = 0.0
     n = yield
@@ -175,6 +176,9 @@ def control_loop(s: LoopState) -> Generator[None, int, None]:
                 s_static = s_broken
             active = mode == MODE_ACTIVE
             process = e04 and active
+            if active and last_mode != MODE_ACTIVE:
+                r = pv if process else xm  # the ramp starts where the valve is (bumpless)
+            last_mode = mode
             if mode == MODE_OFF:
                 ia_i = ib_i = p_int = p_d = p_prev = 0.0
             if not process:

@@ -10,6 +10,7 @@ from prm9tool.device.emulator.kernel import SIGNAL_ORDER
 from prm9tool.device.emulator.objdict import Value, abort
 from prm9tool.device.emulator.states import DeviceState
 from prm9tool.errors import AbortCode
+from prm9tool.variant import Config
 
 if TYPE_CHECKING:
     from prm9tool.device.emulator.firmware import Firmware
@@ -134,8 +135,15 @@ def _rules(fw: Firmware) -> None:
 
         od.checks[od.param(mnemonic).key] = check
 
+    def control_mode(value: Value) -> None:
+        if value == 4 and fw.variant.config is not Config.E04:
+            raise abort(od.param("CTRLMODE").key, AbortCode.INVALID_VALUE)
+        state_check(value)
+
     for mnemonic in ("DEVMODE", "CTRLMODE"):
         not_in_active_mode(mnemonic)
+    state_check = od.checks[od.param("CTRLMODE").key]
+    od.checks[od.param("CTRLMODE").key] = control_mode
     for mnemonic in ("LIMTA", "LIMTB"):
         if od.has(mnemonic):
             at_most_curnorm(mnemonic)

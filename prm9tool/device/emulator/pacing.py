@@ -41,7 +41,7 @@ class Pacer:
 
     def due(self) -> int:
         """Cycles to run now (0 if fewer than ``min_batch`` are due), at most ``max_batch``."""
-        target = int((self.clock() - self.start) / self.cycle_s)
+        target = int((self.clock() - self.start) / self.cycle_s + 1e-6)
         lag = target - self.cycles_done
         if lag > self.max_lag_cycles:
             skipped = lag - self.max_lag_cycles

@@ -148,6 +148,9 @@ class EmulatedValve:
         if thread is None:
             return
         self._stop.set()
+        if thread is threading.current_thread():
+            self._thread = None  # called from a listener inside the loop: ends after this batch
+            return
         thread.join()
         self._thread = None
 

@@ -1,0 +1,177 @@
+"""Emulator signal-chain blocks, each tested through the running firmware's measuring points."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+from prm9tool.device.emulator import EmulatedValve
+from prm9tool.device.emulator.config import pidt1
+
+E02 = "PRM9-06.3Z11/30-24E02S02"
+E02_A = "PRM9-06.2Z51/30-24E02S02"
+CYCLE = EmulatedValve.CYCLE_S
+FULL = 16384
+
+
+def booted(type_key: str = E02, **writes: tuple[int, int, int]) -> EmulatedValve:
+    valve = EmulatedValve(type_key)
+    for index, sub, value in writes.values():
+        valve.write(index, sub, value)
+    valve.advance(2.0)
+    return valve
+
+
+def chain(valve: EmulatedValve, volts: float) -> dict[str, float]:
+    valve.set_input("setpoint", volts)
+    valve.advance(0.002)
+    keys = ("setpoint_raw", "setpoint_threshold", "setpoint_gain", "setpoint_linearized")
+    return {k: valve.signal(k) for k in keys}
+
+
+def test_input_type_and_polarity():
+    valve = booted()
+    assert chain(valve, 5.0)["setpoint_raw"] == pytest.approx(FULL / 2, abs=2)
+    assert chain(valve, -10.0)["setpoint_raw"] == pytest.approx(-FULL, abs=2)
+    valve.write(0x2010, 2, 1)  # inverted
+    assert chain(valve, 5.0)["setpoint_threshold"] == pytest.approx(-FULL / 2, abs=2)
+    valve.write(0x2010, 1, 2)  # 4…20 mA unipolar
+    assert chain(valve, 12.0)["setpoint_raw"] == pytest.approx(FULL / 2, abs=8)
+    valve.write(0x2010, 1, 7)  # 0…10 V bipolar: 5 V is 0 %
+    valve.write(0x2010, 2, 0)
+    step = 22.0 / 4096 * 2 * FULL / 10  # one A/D step (±11 V over 12 bit) on a 10 V span
+    assert chain(valve, 7.5)["setpoint_raw"] == pytest.approx(FULL / 2, abs=step)
+
+
+def test_threshold_suppresses_small_signals_and_passes_larger_ones_1_to_1():
+    valve = booted()  # factory threshold 5 %
+    below = chain(valve, 0.45)
+    assert below["setpoint_raw"] > 0
+    assert below["setpoint_threshold"] == 0
+    above = chain(valve, -0.55)
+    assert above["setpoint_threshold"] == above["setpoint_raw"] < 0
+
+
+def test_gain_and_offset_per_sign():
+    valve = booted(
+        g=(0x6341, 0, 2 * FULL), o=(0x6343, 1, 1638), gn=(0x2011, 0, FULL // 2), on=(0x6344, 1, 819)
+    )
+    pos = chain(valve, 2.0)
+    x = pos["setpoint_threshold"]
+    assert pos["setpoint_gain"] == pytest.approx(1638 + x * 2 * (FULL - 1638) / FULL)
+    neg = chain(valve, -4.0)
+    x = neg["setpoint_threshold"]
+    assert neg["setpoint_gain"] == pytest.approx(-819 + x * 0.5 * (FULL - 819) / FULL)
+    assert chain(valve, 9.0)["setpoint_gain"] == FULL  # clamped at 100 %
+    assert chain(valve, 0.0)["setpoint_gain"] == 0  # no jump at zero
+
+
+def test_linearization_interpolates_the_nine_points():
+    valve = booted()
+    xs = [-FULL, -12288, -8192, -4096, 0, 4096, 8192, 12288, FULL]
+    ys = [-FULL, -14000, -10000, -5000, 0, 2000, 4096, 10000, FULL]
+    for n, y in enumerate(ys, start=1):
+        valve.write(0x2001, n, y)
+    off = chain(valve, 5.0)
+    assert off["setpoint_linearized"] == off["setpoint_gain"]
+    valve.write(0x6346, 0, -1)
+    on = chain(valve, 5.0)
+    assert on["setpoint_linearized"] == pytest.approx(np.interp(on["setpoint_gain"], xs, ys))
+    low = chain(valve, 1.0)
+    assert low["setpoint_linearized"] == pytest.approx(np.interp(low["setpoint_gain"], xs, ys))
+
+
+def ramp_time(valve: EmulatedValve, volts: float) -> tuple[float, float]:
+    """(seconds until the demand value reaches its new target, size of the step in %)."""
+    before = valve.signal("demand")
+    valve.capture_start(["demand", "setpoint_linearized"])
+    valve.set_input("setpoint", volts)
+    valve.advance(2.5)
+    data = valve.capture_read()
+    demand, target = data[:, 0], data[-1, 1]
+    reached = int(np.argmax(demand == target))
+    return (reached + 1) * CYCLE, abs(target - before) / FULL
+
+
+@pytest.mark.parametrize("ms", [1000, 300])
+def test_ramp_time_for_100_and_50_percent_steps(ms):
+    valve = booted(up=(0x6332, 1, ms), down=(0x6335, 1, ms // 2), nu=(0x6333, 1, 2 * ms))
+    # (setpoint, ramp time for a 100 % step that applies)
+    for volts, full_ms in ((10.0, ms), (5.0, ms / 2), (0.0, ms / 2), (-5.0, 2 * ms), (0.0, 0)):
+        seconds, fraction = ramp_time(valve, volts)
+        assert fraction == pytest.approx(1.0 if volts == 10.0 else 0.5, abs=0.001)
+        assert seconds == pytest.approx(max(full_ms / 1000 * fraction, CYCLE), abs=2 * CYCLE)
+
+
+def test_zero_ramp_time_means_no_ramp():
+    valve = booted()
+    valve.set_input("setpoint", 10.0)
+    valve.advance(CYCLE)
+    assert valve.signal("demand") == FULL
+
+
+def captured_controller(kp: int, ki: int, kd: int, t1: int) -> np.ndarray:
+    valve = booted(kp=(0x2020, 1, kp), ki=(0x2020, 2, ki), kd=(0x2020, 3, kd), t1=(0x2020, 4, t1))
+    valve.capture_start(["position_deviation", "controller_output", "position_setpoint"])
+    valve.set_input("setpoint", 1.0)
+    valve.advance(0.02)
+    return valve.capture_read()
+
+
+def test_pidt1_proportional_part():
+    data = captured_controller(250, 0, 0, 0)
+    e, u = data[:, 0], data[:, 1]
+    assert np.abs(e).max() > 100
+    assert u == pytest.approx(2.5 * e)
+
+
+def test_pidt1_integral_part():
+    data = captured_controller(0, 500, 0, 0)
+    e, u = data[:, 0], data[:, 1]
+    assert np.diff(u) == pytest.approx(50.0 * CYCLE * e[1:])
+
+
+def test_pidt1_derivative_part_with_lag():
+    data = captured_controller(0, 0, 30, 50)  # Kd 0.3 ms, T1 0.5 ms
+    e, u = data[:, 0], data[:, 1]
+    _, _, b, a = pidt1(0, 0, 30, 50)
+    assert a == pytest.approx(0.5e-3 / (0.5e-3 + CYCLE))
+    assert u[1:] == pytest.approx(a * u[:-1] + b * np.diff(e))
+
+
+def test_current_limit_per_coil():
+    valve = booted(lim=(0x2004, 2, 600), dt=(0x6361, 1, 0))
+    valve.set_input("setpoint", 10.0)
+    valve.advance(0.3)
+    assert valve.signal("current_setpoint_a") == 600
+    assert valve.signal("current_a") == pytest.approx(600, abs=5)
+    valve.write(0x2004, 3, 300)
+    valve.set_input("setpoint", -10.0)
+    valve.advance(0.3)
+    assert valve.signal("current_setpoint_b") == 300
+    assert valve.signal("current_setpoint_a") == 0
+
+
+@pytest.mark.parametrize(("amp", "hz"), [(2458, 80), (8192, 200)])
+def test_dither_amplitude_and_frequency_at_the_coil(amp, hz):
+    valve = booted(dt=(0x6361, 1, amp), f=(0x6362, 1, hz))
+    valve.set_input("setpoint", 5.0)
+    valve.advance(0.3)
+    valve.capture_start(["current_a", "current_setpoint_a"])
+    valve.advance(1.0)
+    data = valve.capture_read()
+    current = data[:, 0] - data[:, 1]  # what the coil carries on top of the current setpoint
+    spectrum = np.abs(np.fft.rfft(current - current.mean())) * 2 / len(current)
+    freqs = np.fft.rfftfreq(len(current), CYCLE)
+    peak = int(np.argmax(spectrum))
+    expected_ma = amp / FULL * 0.10 * 2600  # DTAMP 100 % = 10 % of CURNORM (decision)
+    assert freqs[peak] == pytest.approx(hz, abs=1.0)
+    assert spectrum[peak] == pytest.approx(expected_ma, rel=0.1)
+
+
+def test_single_coil_valve_ignores_the_negative_side():
+    valve = booted(E02_A)
+    valve.set_input("setpoint", -5.0)
+    valve.advance(0.1)
+    assert valve.signal("setpoint_threshold") == 0
+    assert valve.signal("current_setpoint_a") == 0

@@ -1,0 +1,219 @@
+"""CiA 408 device state machine (tables 7-19/7-20), NMT coupling (7-21), power-up, LEDs."""
+
+from __future__ import annotations
+
+import pytest
+
+from prm9tool.device.emulator import DeviceState, EmulatedValve, Fault
+from prm9tool.device.emulator.statemachine import DeviceStateMachine
+from prm9tool.errors import AbortCode, SdoAbortError, ValueRangeError
+
+S = DeviceState
+E02_CA = "PRM9-06.3Z11/30-24E02S02-CA"
+FULL = 16384
+
+
+def booted_ca() -> EmulatedValve:
+    valve = EmulatedValve(E02_CA)
+    valve.advance(2.0)
+    return valve
+
+
+def state_after(valve: EmulatedValve, word: int) -> DeviceState:
+    valve.write(0x6040, 0, word)
+    return valve.status().device_state
+
+
+def test_power_up_ends_in_init_on_a_canopen_valve():
+    valve = EmulatedValve(E02_CA)
+    assert valve.status().device_state is S.NOT_READY
+    valve.advance(2.0)
+    assert valve.status().device_state is S.INIT
+
+
+def test_manual_commissioning_sequence_08_09_0b_0f():
+    valve = booted_ca()
+    assert [state_after(valve, w) for w in (0x08, 0x09, 0x0B, 0x0F)] == [
+        S.INIT,
+        S.DISABLED,
+        S.HOLD,
+        S.DEVICE_MODE_ACTIVE,
+    ]
+    assert valve.read(0x6040, 0) == 0x0F
+    assert valve.read(0x6041, 0) & 0x07 == 0x07
+
+
+@pytest.mark.parametrize(
+    ("words", "expected"),
+    [
+        ((0x0F,), S.DEVICE_MODE_ACTIVE),  # transitions 2, 3, 4 in one write
+        ((0x0F, 0x0B), S.HOLD),  # 5: M = 0
+        ((0x0F, 0x09), S.DISABLED),  # 5, 6: M = H = 0
+        ((0x0F, 0x00), S.INIT),  # 5, 6, 7: all off
+        ((0x03,), S.HOLD),  # 2, 3
+        ((0x03, 0x01), S.DISABLED),  # 6
+        ((0x05,), S.DISABLED),  # M without H: no hold, no active mode
+    ],
+)
+def test_transitions_of_table_7_20(words, expected):
+    valve = booted_ca()
+    for word in words:
+        valve.write(0x6040, 0, word)
+    assert valve.status().device_state is expected
+
+
+@pytest.mark.parametrize(("word", "expected"), [(0x0F, S.FAULT_HOLD), (0x01, S.FAULT)])
+def test_fault_reaction_ends_in_fault_hold_or_fault_by_the_hold_bit(word, expected):
+    valve = booted_ca()
+    valve.write(0x6040, 0, word)
+    valve.inject(Fault.SUPPLY_LOW)
+    valve.advance(0.053)  # 50 ms detection delay + 1 ms task
+    assert valve.status().device_state is S.FAULT_REACTION
+    valve.advance(0.01)
+    assert valve.status().device_state is expected
+    valve.clear(Fault.SUPPLY_LOW)
+    valve.advance(0.1)
+    reset_target = {S.FAULT_HOLD: S.DEVICE_MODE_ACTIVE, S.FAULT: S.DISABLED}[expected]
+    valve.write(0x6040, 0, word & ~0x08)
+    assert state_after(valve, word | 0x08) is reset_target  # transitions 11 / 10
+
+
+def test_status_word_carries_the_state_number():
+    machine = DeviceStateMachine()
+    assert machine.status_word() == 1 << 8
+    machine.init_done()
+    machine.write_control_word(0x0F, fault_present=False)
+    assert machine.status_word() == (5 << 8) | 0x07
+
+
+def test_analog_only_valve_runs_by_itself_and_refuses_a_control_word():
+    valve = EmulatedValve(E02_CA, switches=(0, 2))
+    valve.set_input("setpoint", 5.0)
+    valve.advance(2.0)
+    assert valve.status().device_state is S.DEVICE_MODE_ACTIVE
+    assert valve.signal("position_actual") == pytest.approx(FULL / 2, abs=0.02 * FULL)
+    with pytest.raises(SdoAbortError) as info:
+        valve.write(0x6040, 0, 0)
+    assert info.value.code == AbortCode.CANNOT_STORE_LOCAL_CONTROL
+
+
+def test_canopen_valve_takes_its_setpoint_from_0x6300_not_the_analog_input():
+    valve = booted_ca()
+    valve.set_input("setpoint", 10.0)
+    valve.write(0x6040, 0, 0x0F)
+    valve.write(0x6300, 1, -8000)  # figure 7-14: about -50 %
+    valve.advance(0.1)
+    assert valve.signal("position_actual") == pytest.approx(-8000, abs=0.02 * FULL)
+    assert valve.read(0x6310, 1) == -8000
+
+
+def test_hold_state_holds_the_spool_at_zero():
+    valve = booted_ca()
+    valve.write(0x6300, 1, 8000)
+    valve.write(0x6040, 0, 0x0F)
+    valve.advance(0.1)
+    valve.write(0x6040, 0, 0x0B)
+    valve.advance(0.1)
+    assert abs(valve.signal("position_actual")) < 0.02 * FULL
+
+
+def test_power_up_timeline_and_leds():
+    valve = EmulatedValve(E02_CA, switches=(0, 2))
+    valve.set_input("setpoint", 5.0)
+    valve.advance(0.02)
+    lit = []
+    for _ in range(17):
+        status = valve.status()
+        assert status.booting
+        assert status.leds[0].color == "white"
+        assert (status.leds[1].color, status.leds[2].color) == ("red", "orange")
+        lit.append(status.leds[0].lit)
+        valve.advance(0.1)
+    assert lit.count(True) == 10  # white twice: on 0…0.45 s and 0.9…1.35 s
+    assert lit.index(False) == 5
+    assert abs(valve.signal("position_actual")) < 0.02 * FULL  # not yet effective
+    valve.advance(0.1)
+    status = valve.status()
+    assert not status.booting
+    assert (status.leds[0].color, status.leds[0].pattern) == ("green", "on")
+    valve.advance(0.1)
+    assert valve.signal("position_actual") > 0.4 * FULL  # effective after 1.8 s
+
+
+def test_valve_without_canopen_has_only_the_power_led():
+    valve = EmulatedValve("PRM9-06.3Z11/30-24E02S02")
+    valve.advance(2.0)
+    status = valve.status()
+    assert status.nmt_state == "off"
+    assert [led.pattern for led in status.leds] == ["on", "off", "off"]
+
+
+def test_can_led_follows_the_nmt_state():
+    valve = booted_ca()
+    assert valve.status().nmt_state == "pre-operational"
+    assert valve.status().leds[2].pattern == "2.5Hz"
+    valve.nmt_event("operational")
+    assert valve.status().leds[2].pattern == "on"
+    valve.nmt_event("stopped")
+    assert valve.status().leds[2].pattern == "single_flash"
+
+
+@pytest.mark.parametrize("event", ["stopped", "reset_comm", "comm_error"])
+def test_nmt_events_take_an_active_valve_to_fault_reaction(event):
+    valve = booted_ca()
+    valve.nmt_event("operational")
+    valve.write(0x6040, 0, 0x0F)
+    valve.nmt_event(event)
+    assert valve.status().device_state is S.FAULT_REACTION
+    valve.advance(0.01)
+    assert valve.status().device_state is S.FAULT_HOLD
+
+
+def test_comm_error_is_an_error_until_operational_again():
+    valve = booted_ca()
+    valve.nmt_event("comm_error")
+    status = valve.status()
+    assert status.error_code == 0x8100
+    assert status.error_register == 0x11
+    assert status.leds[1].pattern == "double_flash"
+    valve.nmt_event("operational")
+    valve.advance(10.1)
+    assert valve.status().error_code == 0
+
+
+def test_reset_node_power_cycles():
+    valve = booted_ca()
+    valve.write(0x6332, 1, 500)  # not stored
+    valve.nmt_event("reset_node")
+    assert valve.status().booting
+    assert valve.read(0x6332, 1) == 0
+
+
+def test_reset_communication_restores_communication_objects():
+    valve = booted_ca()
+    valve.write(0x1017, 0, 50)
+    valve.write(0x6332, 1, 500)
+    valve.nmt_event("reset_comm")
+    assert valve.read(0x1017, 0) == 1000
+    assert valve.read(0x6332, 1) == 500
+    assert valve.status().nmt_state == "pre-operational"
+
+
+def test_unknown_nmt_event_is_refused():
+    with pytest.raises(ValueRangeError, match="unknown NMT event 'start'"):
+        booted_ca().nmt_event("start")
+
+
+def test_setpoint_override_times_out_without_usb_activity():
+    valve = booted_ca()
+    valve.write(0x6040, 0, 0x0F)
+    valve.write(0x2050, 2, 8192)
+    valve.write(0x2050, 1, 1)
+    for _ in range(5):
+        valve.advance(0.2)
+        valve.usb_activity()
+    assert valve.signal("position_actual") == pytest.approx(8192, abs=0.02 * FULL)
+    valve.advance(0.6)
+    assert valve.read(0x2050, 1) == 0
+    valve.advance(0.1)
+    assert abs(valve.signal("position_actual")) < 0.02 * FULL
