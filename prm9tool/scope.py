@@ -32,8 +32,9 @@ class RingBuffer:
     """Preallocated ``(capacity, channels)`` sample store addressed by absolute sample index.
 
     Every sample is stored twice (at ``i % capacity`` and ``i % capacity + capacity``) so any
-    run of at most ``capacity`` consecutive samples is one contiguous numpy view — drawing the
-    last window never copies.
+    run of at most ``capacity`` consecutive samples is one numpy view — drawing the last window
+    never copies. Storage is channel-major, so each channel of a window is contiguous (fast
+    per-channel reductions for decimation, triggers and figures).
     """
 
     def __init__(self, capacity: int, channels: int) -> None:
@@ -41,7 +42,7 @@ class RingBuffer:
             raise ValueError("a ring buffer needs at least one sample and one channel")
         self.capacity = capacity
         self.channels = channels
-        self._data = np.zeros((2 * capacity, channels), dtype=np.float64)
+        self._data = np.zeros((channels, 2 * capacity), dtype=np.float64)
         self.total = 0  # absolute index of the next sample
 
     @property
@@ -63,8 +64,8 @@ class RingBuffer:
         pos = self.total % self.capacity
         head = min(len(block), self.capacity - pos)
         for dest, part in ((pos, block[:head]), (0, block[head:])):
-            self._data[dest : dest + len(part)] = part
-            self._data[dest + self.capacity : dest + self.capacity + len(part)] = part
+            self._data[:, dest : dest + len(part)] = part.T
+            self._data[:, dest + self.capacity : dest + self.capacity + len(part)] = part.T
         self.total += len(block)
 
     def window(self, start: int, stop: int) -> tuple[int, np.ndarray]:
@@ -72,9 +73,9 @@ class RingBuffer:
         start = max(start, self.first)
         stop = min(stop, self.total)
         if stop <= start:
-            return start, self._data[:0]
+            return start, self._data[:, :0].T
         offset = start % self.capacity
-        return start, self._data[offset : offset + stop - start]
+        return start, self._data[:, offset : offset + stop - start].T
 
     def latest(self, count: int) -> tuple[int, np.ndarray]:
         """The last ``count`` samples (fewer if fewer are held)."""
@@ -112,6 +113,27 @@ class Capture:
         stop = origin + math.floor(t1 * self.rate_hz + 1e-9) + 1
         start, values = self.buffer.window(first, stop)
         return self.times(start, len(values), origin), values.copy()
+
+
+def peak_decimate(t: np.ndarray, values: np.ndarray, points: int) -> tuple[np.ndarray, np.ndarray]:
+    """At most about ``points`` points per channel keeping every block's minimum and maximum.
+
+    Blocks of ``ds`` samples become two points (min, max) at the block's first time stamp, so
+    spikes and the envelope of fast signals survive (the peak method of pyqtgraph). The
+    samples of a last, incomplete block are kept as they are.
+    """
+    ds = -(-len(t) // max(1, points // 2))
+    if ds <= 1:
+        return t, values
+    full = (len(t) // ds) * ds
+    blocks = full // ds
+    peaks = np.empty((2 * blocks + len(t) - full, values.shape[1]))
+    for c in range(values.shape[1]):
+        column = np.ascontiguousarray(values[:full, c]).reshape(blocks, ds)
+        peaks[0 : 2 * blocks : 2, c] = column.min(axis=1)
+        peaks[1 : 2 * blocks : 2, c] = column.max(axis=1)
+    peaks[2 * blocks :] = values[full:]
+    return np.concatenate([np.repeat(t[:full:ds], 2), t[full:]]), peaks
 
 
 # --- trigger ---------------------------------------------------------------------------------

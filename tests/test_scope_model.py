@@ -21,6 +21,7 @@ from prm9tool.scope import (
     Waveform,
     cursor_readout,
     find_edge,
+    peak_decimate,
     step_figures,
     write_csv,
 )
@@ -286,3 +287,23 @@ def test_generator_raw_value_uses_the_catalogue_scale():
 def test_generator_refuses_waveforms_outside_the_setpoint_range(settings, message):
     with pytest.raises(ValueRangeError, match=message):
         settings.check()
+
+
+# --- decimation --------------------------------------------------------------------------------
+def test_peak_decimation_keeps_every_blocks_extremes_and_the_tail():
+    t = np.arange(1003) / 1000.0
+    values = np.column_stack([np.zeros(1003), np.arange(1003.0)])
+    values[517, 0] = 9.0  # a one-sample spike
+    td, vd = peak_decimate(t, values, points=100)
+    assert len(td) == len(vd) <= 110
+    assert vd[:, 0].max() == 9.0
+    assert vd[0, 1] == 0.0 and vd[1, 1] == 20.0  # blocks of ceil(1003 / 50) = 21: min, max
+    np.testing.assert_array_equal(vd[-3:, 1], [1000.0, 1001.0, 1002.0])  # the tail as is
+    assert np.all(np.diff(td) >= 0)
+
+
+def test_peak_decimation_leaves_short_data_alone():
+    t = np.arange(10.0)
+    values = np.ones((10, 2))
+    td, vd = peak_decimate(t, values, points=100)
+    assert td is t and vd is values

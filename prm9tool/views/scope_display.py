@@ -124,7 +124,7 @@ class ScopeDisplay(QObject):
         if capture is None or self._frozen is not None:
             return
         self._frozen = self.whole_data()
-        self.plot.show_data(*self._frozen)
+        self.plot.show_all(*self._frozen)
         self.plot.set_time_interactive(True)
         self.update_readouts()
 

@@ -3,8 +3,11 @@
 Channel 1 uses the plot's own ViewBox and left axis; channels 2 and 3 get their own ViewBoxes
 (x-linked, stacked below the main one so the mouse and the cursors stay on it) with axes on the
 right. Each channel therefore has its own colour, unit and scale; dragging or wheeling on an
-axis zooms that channel alone. Curves clip to the view and peak-downsample, so a 10 s window at
-5 kHz draws as a few thousand points.
+axis zooms that channel alone (and stops its autoscale until "Auto" is pressed).
+
+Live frames are peak-decimated to twice the plot's pixel width before they reach pyqtgraph
+(the window is the clip), so a 10 s window at 5 kHz draws as ~2000 points per channel; a held
+recording is handed over whole, with pyqtgraph's clip-to-view and peak downsampling on.
 """
 
 from __future__ import annotations
@@ -19,6 +22,7 @@ from PySide6.QtGui import QImage
 from PySide6.QtWidgets import QHBoxLayout, QLabel, QPushButton, QVBoxLayout, QWidget
 
 from prm9tool.i18n import text
+from prm9tool.scope import peak_decimate
 from prm9tool.signals import MAX_CHANNELS
 from prm9tool.signals import Signal as MeasuringPoint
 
@@ -81,13 +85,19 @@ class ScopePlot(QWidget):
         self.axes = [self.item.getAxis("left"), self.item.getAxis("right"), pg.AxisItem("right")]
         self.item.showAxis("right")
         self.item.layout.addItem(self.axes[2], 2, 3)
+        for axis in (*self.axes, self.item.getAxis("bottom")):
+            axis.enableAutoSIPrefix(False)  # no label re-render on every range change
         for view, axis in zip(self.views[1:], self.axes[1:], strict=True):
             self.item.scene().addItem(view)
             axis.linkToView(view)
             view.setXLink(self.item)
             view.setZValue(-10)  # below the main plot: mouse and cursors act on channel 1's view
         self.views[0].sigResized.connect(self._sync_geometry)
-        self.views[0].sigRangeChangedManually.connect(lambda *_: self.x_range_changed.emit())
+        self._auto = [True] * MAX_CHANNELS
+        self._clipping = True
+        for slot, view in enumerate(self.views):
+            view.disableAutoRange()  # our own autoscale with hysteresis (see _follow)
+            view.sigRangeChangedManually.connect(lambda *_, s=slot: self._on_manual_range(s))
         self.curves = [self._make_curve(slot) for slot in range(MAX_CHANNELS)]
         self.cursors = [self._make_cursor(name) for name in ("A", "B")]
         self.legend = [_LegendEntry(slot) for slot in range(MAX_CHANNELS)]
@@ -160,9 +170,40 @@ class ScopePlot(QWidget):
         self.item.setLabel("bottom", label)
 
     def show_data(self, t: np.ndarray, values: np.ndarray) -> None:
-        """Draw ``values[:, c]`` over ``t`` for every channel."""
+        """Draw a live frame: peak-decimated here to the plot's width (no re-clipping)."""
+        self._set_clipping(False)
+        width = max(100, int(self.views[0].width()))
+        t, values = peak_decimate(t, values, 2 * width)
         for slot in range(self._channels):
             self.curves[slot].setData(t, values[:, slot])
+            self._follow(slot, values[:, slot])
+
+    def show_all(self, t: np.ndarray, values: np.ndarray) -> None:
+        """Draw a held recording: pyqtgraph clips and decimates to whatever the user zooms to."""
+        self._set_clipping(True)
+        for slot in range(self._channels):
+            self.curves[slot].setData(t, values[:, slot])
+            self._follow(slot, values[:, slot], force=True)
+
+    def _set_clipping(self, on: bool) -> None:
+        if self._clipping != on:
+            self._clipping = on
+            for curve in self.curves:
+                curve.setClipToView(on)
+                curve.setDownsampling(ds=1, auto=on, method="peak")
+
+    def _follow(self, slot: int, y: np.ndarray, force: bool = False) -> None:
+        """Autoscale with hysteresis: rescale only when the data leaves the axis range or
+        fills less than half of it, so a live axis does not jitter (and is not redrawn)."""
+        if not self._auto[slot] or not len(y):
+            return
+        lo, hi = float(np.nanmin(y)), float(np.nanmax(y))
+        if not (np.isfinite(lo) and np.isfinite(hi)):
+            return
+        y0, y1 = self.y_range(slot)
+        if force or lo < y0 or hi > y1 or hi - lo < 0.5 * (y1 - y0):
+            margin = 0.1 * (hi - lo) if hi > lo else max(abs(hi) * 0.05, 0.5)
+            self.views[slot].setYRange(lo - margin, hi + margin, padding=0)
 
     def show_latest(self, values: np.ndarray) -> None:
         """Live values in the legend (one per channel, NaN when unknown)."""
@@ -184,7 +225,19 @@ class ScopePlot(QWidget):
 
     def autoscale(self, slot: int) -> None:
         """Scale channel ``slot``'s axis to its data, and keep doing so as data arrives."""
-        self.views[slot].enableAutoRange(axis=pg.ViewBox.YAxis, enable=True)
+        self._auto[slot] = True
+        y = self.curves[slot].yData
+        if y is not None:
+            self._follow(slot, np.asarray(y), force=True)
+
+    def is_autoscaled(self, slot: int) -> bool:
+        """True while channel ``slot``'s axis follows its data."""
+        return self._auto[slot]
+
+    def _on_manual_range(self, slot: int) -> None:
+        self._auto[slot] = False
+        if slot == 0:
+            self.x_range_changed.emit()
 
     def y_range(self, slot: int) -> tuple[float, float]:
         """The value range shown on channel ``slot``'s axis."""
