@@ -83,12 +83,11 @@ def effective(
     baud, node = baud_position(switch_baud), node_position(switch_node)
     if not baud.can_enabled:
         return CanSettings(False, None, None, False)
-    terminator = baud.terminator or bool(canterm)
     if node.lss:
-        return CanSettings(True, None, None, terminator)
+        return CanSettings(True, node_id, None, bool(canterm))
     if node.software:
-        return CanSettings(True, node_id, BITRATE_CODES_KBIT[bitrate_code], terminator)
-    return CanSettings(True, node.node_id, baud.bitrate_kbit, terminator)
+        return CanSettings(True, node_id, BITRATE_CODES_KBIT[bitrate_code], bool(canterm))
+    return CanSettings(True, node.node_id, baud.bitrate_kbit, baud.terminator or bool(canterm))
 
 
 def format_bitrate(kbit: int | None) -> str:

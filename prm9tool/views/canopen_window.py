@@ -179,7 +179,13 @@ class CanopenWindow(QDialog):
         if position == 1:
             return self.tr("reserved (as position 0)"), "—"
         rate = format_bitrate(decoded.bitrate_kbit)
-        terminator = self.tr("on") if decoded.terminator else self.tr("off (on by software)")
+        node = self.switches[1] if self.switches is not None else None
+        if node in (0, 1):  # node switch 0/1: the software setting decides (CANTERM)
+            terminator = self.tr("by software (below)")
+        elif decoded.terminator:
+            terminator = self.tr("on")
+        else:
+            terminator = self.tr("off (on by software)")
         return self.tr("CANopen, %1").replace("%1", rate), terminator
 
     def _node_text(self, position: int) -> str:

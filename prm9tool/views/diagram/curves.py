@@ -60,11 +60,15 @@ def threshold(x: float, limit: float) -> float:
 def gain_offset(
     x: float, gain_pos: float, gain_neg: float, off_pos: float, off_neg: float
 ) -> float:
-    """Gain and dead-band compensation jump, separately for each sign; clipped to ±100 %."""
+    """Dead-band compensation jump and gain per sign: ``y = off + x·g·(1 − off/100 %)``.
+
+    With gain 1 a 100 % input still gives 100 % (the emulator's firmware does the same);
+    the result is clipped to ±100 %.
+    """
     if x > 0:
-        return min(100.0, off_pos + gain_pos * x)
+        return min(100.0, off_pos + gain_pos * x * (1.0 - off_pos / 100.0))
     if x < 0:
-        return max(-100.0, -off_neg + gain_neg * x)
+        return max(-100.0, -off_neg + gain_neg * x * (1.0 - off_neg / 100.0))
     return 0.0
 
 

@@ -24,6 +24,7 @@ from prm9tool.views.diagram.dialogs import BlockContext, create_block_dialog
 from prm9tool.views.diagram.layout import layout_for
 from prm9tool.views.diagram.scene import DiagramScene
 from prm9tool.views.diagram.summary import block_lines
+from prm9tool.views.valve_selection import ValveSelectionDialog
 
 _CTX = "DiagramBlock"
 _DECIMALS = {"%": 1, "mA": 0, "V": 2, "°C": 1}
@@ -107,7 +108,10 @@ class DiagramView(QGraphicsView):
             if dialog is None:
                 return None
             self._dialogs[block_id] = dialog
-            dialog.finished.connect(lambda _result, b=block_id: self._forget_dialog(b))
+            dialog.setObjectName(block_id)
+            # bound methods only: a lambda holding ``self`` in a child's connection makes a
+            # reference cycle that the garbage collector may break in the middle of a deletion
+            dialog.finished.connect(self._on_dialog_finished)
         dialog.show()
         dialog.raise_()
         dialog.activateWindow()
@@ -155,14 +159,17 @@ class DiagramView(QGraphicsView):
     def _valve_dialog(self) -> QDialog | None:
         if self._valve_locked_reason():
             return None
-        from prm9tool.views.valve_selection import ValveSelectionDialog
-
         dialog = ValveSelectionDialog(self._doc.type_key, self)
-        dialog.accepted.connect(lambda: self._doc.set_type_key(dialog.selected_type_key()))
+        dialog.accepted.connect(self._on_valve_selected)
         return dialog
 
-    def _forget_dialog(self, block_id: str) -> None:
-        dialog = self._dialogs.pop(block_id, None)
+    def _on_valve_selected(self) -> None:
+        dialog = self.sender()
+        assert isinstance(dialog, ValveSelectionDialog)
+        self._doc.set_type_key(dialog.selected_type_key())
+
+    def _on_dialog_finished(self, _result: int) -> None:
+        dialog = self._dialogs.pop(self.sender().objectName(), None)
         if dialog is not None:
             dialog.deleteLater()
 

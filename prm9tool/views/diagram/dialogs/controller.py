@@ -67,8 +67,9 @@ class ControllerDialog(BlockDialog):
         slider = QSlider(Qt.Orientation.Horizontal)
         slider.setRange(0, SLIDER_STEPS)
         slider.setMinimumWidth(240)
-        slider.valueChanged.connect(lambda pos, n=name: self._on_slider_moved(n, pos))
-        slider.sliderReleased.connect(lambda n=name: self._on_slider_released(n))
+        slider.setObjectName(name)  # the slots find their parameter through sender()
+        slider.valueChanged.connect(self._on_slider_value_changed)
+        slider.sliderReleased.connect(self._on_slider_released)
         return slider
 
     def _slider_grid(self) -> QGridLayout:
@@ -167,7 +168,11 @@ class ControllerDialog(BlockDialog):
         self.figures.setText(response.summary())
 
     # --- sliders ------------------------------------------------------------------------------------
-    def _on_slider_moved(self, name: str, position: int) -> None:
+    def _on_slider_value_changed(self, position: int) -> None:
+        self.slider_moved(self.sender().objectName(), position)
+
+    def slider_moved(self, name: str, position: int) -> None:
+        """A slider of ``name`` moved to ``position``: trial while dragged, else an edit."""
         raw = slider_to_raw(position, CATALOGUE[name].raw_max)
         if self.sliders[name].isSliderDown():
             self._trial[name] = raw
@@ -176,7 +181,11 @@ class ControllerDialog(BlockDialog):
         else:
             self.apply_value(name, raw)
 
-    def _on_slider_released(self, name: str) -> None:
+    def _on_slider_released(self) -> None:
+        self.slider_released(self.sender().objectName())
+
+    def slider_released(self, name: str) -> None:
+        """The drag of slider ``name`` ended: apply its trial value as one undo step."""
         raw = self._trial.pop(name, None)
         if raw is not None:
             self.apply_value(name, raw)

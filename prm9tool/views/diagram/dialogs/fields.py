@@ -43,7 +43,7 @@ class ValueField(QLineEdit):
         self.setMaximumWidth(110)
         self.setPlaceholderText(range_text(self.param))
         self.editingFinished.connect(self._on_editing_finished)
-        self.textEdited.connect(lambda _text: self.setStyleSheet(""))
+        self.textEdited.connect(self._on_text_edited)
 
     @property
     def mnemonic(self) -> str:
@@ -63,6 +63,9 @@ class ValueField(QLineEdit):
         self.setEnabled(allowed)
         reason = access.why_locked(self.param)
         self.setToolTip(reason or f"{self.mnemonic}: {range_text(self.param)}")
+
+    def _on_text_edited(self, _text: str) -> None:
+        self.setStyleSheet("")
 
     def _on_editing_finished(self) -> None:
         text = self.text().strip()

@@ -1,0 +1,152 @@
+"""The CANopen window against an emulated valve: switch tables, node ID, terminator, restart."""
+
+from __future__ import annotations
+
+import pytest
+from diagram_fakes import EmulatorConnection
+
+from prm9tool.canopen_switches import baud_position, effective, node_position
+from prm9tool.catalogue import CATALOGUE
+from prm9tool.device.emulator import EmulatedValve
+from prm9tool.document import ParameterDocument
+from prm9tool.undo import DocumentUndo
+from prm9tool.views.canopen_window import CanopenWindow
+
+E02_CA = "PRM9-06.3Z11/30-24E02S02-CA"
+
+
+def open_window(qtbot, switches=(6, 0), online=True):
+    valve = EmulatedValve(E02_CA, switches=switches)
+    link = EmulatorConnection(valve)
+    if online:
+        link.go_online()
+    doc = ParameterDocument(E02_CA)
+    undo = DocumentUndo(doc, doc)
+    window = CanopenWindow(doc, link)
+    qtbot.addWidget(window)
+    window.show()
+    window.keep = (doc, undo, link)  # keep the models alive as long as the window
+    return window, valve, link, doc, undo
+
+
+def marked_rows(table) -> list[int]:
+    return [row for row in range(table.rowCount()) if table.item(row, 0).text().startswith("▶")]
+
+
+def valve_value(valve: EmulatedValve, mnemonic: str) -> int | str:
+    return valve.read(*CATALOGUE[mnemonic].key)
+
+
+def test_the_tables_mark_the_switch_positions_read_at_power_up(qtbot):
+    window, *_ = open_window(qtbot, switches=(0xB, 5))
+    assert window.switches == (0xB, 5)
+    assert marked_rows(window.baud_table) == [0xB]
+    assert marked_rows(window.node_table) == [5]
+    assert window.baud_table.item(0xB, 1).text() == "CANopen, 125 kbit/s"
+    assert window.baud_table.item(0xB, 2).text() == "on"
+    assert window.node_table.item(5, 1).text() == "25"
+    assert not window.node_id.isEnabled()  # the switch sets the node ID
+    assert "node ID 25, 125 kbit/s, terminator on" in window.effective_label.text()
+
+
+def test_node_id_and_terminator_go_to_the_valve_and_show_after_restart(qtbot):
+    window, valve, link, doc, _undo = open_window(qtbot, switches=(6, 0))
+    assert marked_rows(window.node_table) == [0]
+    assert window.node_id.isEnabled()
+    window.node_id.setValue(42)
+    window.node_id.editingFinished.emit()
+    window.terminator.setChecked(True)
+    assert doc.value("NODEID") == 42 and doc.value("CANTERM") == 1
+    assert valve_value(valve, "NODEID") == 42 and valve_value(valve, "CANTERM") == 1
+    assert link.stores == 2  # stored, so the restart keeps them
+    assert not window.restart_label.isHidden()
+    assert "after the valve restarts" in window.restart_label.text()
+    assert "After the next restart" in window.effective_label.text()
+
+    link.restart()
+    assert valve.node_id == 42  # the emulated firmware latched the new node ID
+    assert valve.bitrate == 500_000
+    assert window.restart_label.isHidden()
+    assert window.switches == (6, 0)
+    assert window.valve_values == {"NODEID": 42, "BITRATE": 2, "CANTERM": 1}
+    assert window.effective_label.text() == (
+        "The valve uses: node ID 42, 500 kbit/s, terminator on."
+    )
+
+
+def test_changes_are_undoable_in_the_document(qtbot):
+    window, _valve, _link, doc, undo = open_window(qtbot, online=False)
+    window.node_id.setValue(77)
+    window.node_id.editingFinished.emit()
+    assert doc.value("NODEID") == 77
+    undo.stack.undo()
+    assert window.node_id.value() == CATALOGUE["NODEID"].default
+
+
+def test_offline_changes_stay_in_the_document_and_the_window_says_so(qtbot):
+    window, valve, link, doc, _undo = open_window(qtbot, online=False)
+    assert window.switches is None
+    assert "Offline" in window.state_label.text()
+    assert marked_rows(window.baud_table) == []
+    window.terminator.setChecked(True)
+    assert doc.value("CANTERM") == 1
+    assert link.writes == []
+    assert valve_value(valve, "CANTERM") == 0
+    assert "Upload" in window.restart_label.text()
+
+
+def test_going_online_reads_the_switches(qtbot):
+    window, _valve, link, *_ = open_window(qtbot, switches=(3, 9), online=False)
+    link.go_online()
+    assert window.switches == (3, 9)
+    assert marked_rows(window.node_table) == [9]
+
+
+def test_a_valve_without_canopen_says_so(qtbot):
+    doc = ParameterDocument("PRM9-06.3Z11/30-24E02S02")
+    window = CanopenWindow(doc, None)
+    qtbot.addWidget(window)
+    window.keep = doc
+    assert "no CANopen interface" in window.state_label.text()
+    assert not window.terminator.isEnabled()
+    assert not window.node_id.isEnabled()
+
+
+# --- switch decoding (table 7-17) ------------------------------------------------------------------
+@pytest.mark.parametrize(
+    ("position", "enabled", "kbit", "terminator"),
+    [
+        (0, False, None, False),
+        (1, False, None, False),
+        (2, True, 20, False),
+        (6, True, 500, False),
+        (8, True, 1000, False),
+        (9, True, 20, True),
+        (0xD, True, 500, True),
+        (0xF, True, 1000, True),
+    ],
+)
+def test_interface_switch_positions(position, enabled, kbit, terminator):
+    decoded = baud_position(position)
+    assert (decoded.can_enabled, decoded.bitrate_kbit, decoded.terminator) == (
+        enabled,
+        kbit,
+        terminator,
+    )
+
+
+def test_node_switch_positions():
+    assert node_position(0).software
+    assert node_position(1).lss
+    assert [node_position(p).node_id for p in range(2, 16)] == list(range(10, 80, 5))
+    with pytest.raises(ValueError, match="0…15"):
+        node_position(16)
+
+
+def test_effective_settings_follow_the_emulated_firmware():
+    # node switch 0: node ID, bit rate and terminator from the parameters
+    settings = effective(0xC, 0, 33, 4, 0)
+    assert (settings.node_id, settings.bitrate_kbit, settings.terminator) == (33, 125, False)
+    settings = effective(4, 3, 33, 0, 1)  # node 15 from the switch, 125 k, software terminator
+    assert (settings.node_id, settings.bitrate_kbit, settings.terminator) == (15, 125, True)
+    assert not effective(1, 3, 33, 0, 1).can_enabled

@@ -1,0 +1,91 @@
+"""Simulated step responses of the controller dialogs, run on the emulator's firmware."""
+
+from __future__ import annotations
+
+import pytest
+
+from prm9tool.catalogue import CATALOGUE
+from prm9tool.tuning import StepResponse, StepSimulator, simulate_step, simulation_values
+from prm9tool.typekey import TypeKey
+
+E02 = "PRM9-06.3Z11/30-24E02S02"
+E04_CA = "PRM9-06.3Z11/30-24E04S02-CA"
+
+
+def defaults(key: str) -> dict[str, int | str]:
+    variant = TypeKey.parse(key).variant
+    return {p.mnemonic: p.default_for(variant) for p in CATALOGUE.file_parameters(variant)}
+
+
+def test_the_position_loop_follows_a_50_percent_step():
+    response = simulate_step(E02, defaults(E02), "position")
+    assert response.t[0] < 0.0 < response.t[-1]
+    before = [a for t, a in zip(response.t, response.actual, strict=True) if t < 0]
+    assert max(abs(a) for a in before) < 1.0
+    assert response.setpoint[-1] == pytest.approx(50.0, abs=0.5)
+    assert response.actual[-1] == pytest.approx(50.0, abs=2.5)
+    assert response.values["POSKP"] == defaults(E02)["POSKP"]
+
+
+def test_lower_gain_answers_more_slowly():
+    base = defaults(E02)
+    fast = simulate_step(E02, base, "position").figures()
+    slow = simulate_step(E02, {**base, "POSKP": int(base["POSKP"]) // 4}, "position").figures()
+    assert fast.rise_time_s is not None
+    assert slow.rise_time_s is None or slow.rise_time_s > fast.rise_time_s
+
+
+def test_the_process_loop_of_an_e04_valve():
+    response = simulate_step(E04_CA, defaults(E04_CA), "process")  # simulated without CANopen
+    assert response.setpoint[-1] == pytest.approx(20.0, abs=0.5)
+    assert response.actual[-1] == pytest.approx(20.0, abs=2.0)
+
+
+def test_the_chain_in_front_of_the_loop_is_made_transparent():
+    values = simulation_values({**defaults(E02), "THRESETP": 3000, "RAMPSETPOSUP": 900}, "position")
+    assert values["THRESETP"] == 0 and values["RAMPSETPOSUP"] == 0
+    assert values["AINSETP"] == 9 and values["CTRLMODE"] == 2
+    process = simulation_values({**defaults(E04_CA), "GAINSETPOS": 20000}, "process")
+    assert process["GAINSETPOS"] == 20000  # part of the process loop
+
+
+def test_step_figures():
+    t = tuple(i * 0.001 for i in range(-5, 100))
+    ideal = tuple(0.0 if x < 0 else min(50.0, x * 5000.0) for x in t)
+    figures = StepResponse("position", {}, t, (50.0,) * len(t), ideal, 50.0).figures()
+    assert figures.overshoot_pct == 0.0
+    assert figures.rise_time_s == pytest.approx(0.008, abs=0.0015)
+    assert figures.steady_error_pct == pytest.approx(0.0)
+    ringing = tuple(
+        0.0 if x < 0 else 50.0 + (30.0 if int(x * 1000) % 20 < 10 else -30.0) for x in t
+    )
+    figures = StepResponse("position", {}, t, (50.0,) * len(t), ringing, 50.0).figures()
+    assert figures.overshoot_pct == pytest.approx(60.0)
+    assert figures.settling_time_s is None
+
+
+def test_the_simulator_runs_off_the_gui_thread_and_the_newest_request_wins(qtbot):
+    simulator = StepSimulator(E02, defaults(E02), "position")
+    received: list[StepResponse] = []
+    simulator.response_ready.connect(received.append)
+    for kp in (100, 200, 300, 400):
+        simulator.request({"POSKP": kp})
+    qtbot.waitUntil(lambda: bool(received) and received[-1].values["POSKP"] == 400, timeout=10000)
+    qtbot.waitUntil(lambda: not simulator.busy, timeout=10000)
+    assert len(received) <= 2  # a running simulation plus only the newest pending one
+    simulator.stop()
+    simulator.request({"POSKP": 500})
+    assert not simulator.busy
+
+
+def test_a_refused_parameter_is_reported(qtbot):
+    simulator = StepSimulator(E02, {**defaults(E02), "LIMTA": 9999}, "position")
+    with qtbot.waitSignal(simulator.failed, timeout=10000) as failed:
+        simulator.request({})
+    assert failed.args[0]
+    simulator.stop()
+
+
+def test_an_unknown_loop_is_refused():
+    with pytest.raises(ValueError, match="unknown loop"):
+        StepSimulator(E02, {}, "pressure")
