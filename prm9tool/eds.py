@@ -299,14 +299,15 @@ def markdown_table(parameters: Iterable[Parameter] | None = None) -> str:
     params = list(parameters) if parameters is not None else _canopen_parameters()
     mappable = pdo_mappable(Variant(Config.E04, canopen=True))
     rows = [
-        "| index | sub | mnemonic | name | type | access | default | range | unit | variants | PDO |",
+        "| index | sub | mnemonic | name | type | access | default (raw) | range (raw) "
+        "| unit (raw × scale) | variants | PDO |",
         "|---|---|---|---|---|---|---|---|---|---|---|",
     ]
     for p in sorted(params, key=lambda q: q.key):
         rows.append(
             f"| 0x{p.index:04X} | {p.subindex} | {p.mnemonic} | {_md(p.text.en)} "
             f"| {p.dtype.name} | {p.obj_access.value} | {_md_default(p)} | {_md_range(p)} "
-            f"| {p.unit} | {p.applies.describe()} | {'yes' if p.key in mappable else ''} |"
+            f"| {_md_unit(p)} | {p.applies.describe()} | {'yes' if p.key in mappable else ''} |"
         )
     return "\n".join(rows) + "\n"
 
@@ -332,6 +333,12 @@ def _md_default(p: Parameter) -> str:
         e04 = f"0x{p.default_e04:X}" if p.dtype is DataType.UNSIGNED32 else str(p.default_e04)
         text += f" (E04: {e04})"
     return text
+
+
+def _md_unit(p: Parameter) -> str:
+    if p.scale == 1.0 or not p.unit:
+        return p.unit
+    return f"{p.unit} (× {p.scale:.6g})"
 
 
 def _md_range(p: Parameter) -> str:
@@ -366,6 +373,10 @@ def run(args: argparse.Namespace) -> int:
 
 def _write_atomically(path: Path, text: str) -> None:
     temporary = path.with_name(path.name + ".tmp")
-    with open(temporary, "w", encoding="ascii", newline="\r\n") as stream:
-        stream.write(text)
-    os.replace(temporary, path)
+    try:
+        with open(temporary, "w", encoding="ascii", newline="\r\n") as stream:
+            stream.write(text)
+        os.replace(temporary, path)
+    except BaseException:
+        temporary.unlink(missing_ok=True)
+        raise

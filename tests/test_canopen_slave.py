@@ -234,6 +234,20 @@ def test_sync_timeout_is_a_communication_error(rig: Rig):
     assert rig.drain() == []
     rig.valve.advance(0.002)
     assert rig.drain() == ["08A 00 81 11 00 00 00 00 00"]  # 8100h, register: communication
+    rig.send("000 01 0A")  # the master starts the node again: the error goes (after ~10 s)
+    rig.barrier()
+    rig.valve.advance(11.0)
+    assert [f for f in rig.drain() if f.startswith("08A")] == ["08A 00 00 00 00 00 00 00 00"]
+
+
+def test_error_present_at_power_up_is_announced_after_boot_up(request: pytest.FixtureRequest):
+    rig = make_rig(request.node.name, E02, boot=False)
+    try:
+        rig.valve.inject(Fault.POSITION_SENSOR_BREAK)
+        rig.valve.advance(2.0)
+        assert rig.drain() == ["70A 00", "08A 00 73 81 00 00 00 00 00"]
+    finally:
+        rig.close()
 
 
 # --- control mode, external sensor (E04) and the TPDO2 decision --------------------------------

@@ -122,7 +122,9 @@ class CanopenSlave:
         if self.state is NmtState.INITIALISING:
             return  # manual table 7-4: no NMT service while initialising
         command = data[0]
-        if command == NMT_START:
+        if command == NMT_START and self.state is NmtState.OPERATIONAL:
+            self._valve.nmt_event("operational")  # confirms; clears a communication error
+        elif command == NMT_START:
             self._enter(NmtState.OPERATIONAL)
         elif command == NMT_STOP:
             self._enter(NmtState.STOPPED)

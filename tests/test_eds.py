@@ -1,0 +1,103 @@
+"""EDS export (CiA 306) and the generated object-dictionary table of docs/canopen.md."""
+
+from __future__ import annotations
+
+import configparser
+import os
+from pathlib import Path
+
+import pytest
+
+from prm9tool.catalogue import CATALOGUE
+from prm9tool.cli import main
+from prm9tool.eds import export_eds, markdown_table, od_objects
+from prm9tool.typekey import TypeKey
+
+E02 = "PRM9-06.3Z11/30-24E02S02-CA"
+E04 = "PRM9-06.3Z11/30-24E04S02-CA"
+DOC = Path(__file__).resolve().parent.parent / "docs" / "canopen.md"
+BEGIN, END = (
+    "<!-- BEGIN generated object dictionary -->",
+    "<!-- END generated object dictionary -->",
+)
+
+
+def _parse(text: str) -> configparser.RawConfigParser:
+    parser = configparser.RawConfigParser()
+    parser.optionxform = str  # type: ignore[assignment,method-assign]
+    parser.read_string(text)
+    return parser
+
+
+def test_export_writes_a_cia_306_file(tmp_path: Path):
+    out = tmp_path / "valve.eds"
+    assert main(["--export-eds", E04, "-o", str(out)]) == 0
+    raw = out.read_bytes()
+    assert raw.isascii() and b"\r\n" in raw
+    eds = _parse(raw.decode("ascii"))
+    assert eds["DeviceInfo"]["ProductName"] == E04
+    assert eds["DeviceInfo"]["BaudRate_10"] == "0"  # table 7-1: 10 kbit/s not supported
+    assert eds["MandatoryObjects"]["SupportedObjects"] == "3"
+    assert eds["1800sub1"]["DefaultValue"] == "$NODEID+0x180"
+    assert eds["1014"]["DefaultValue"] == "$NODEID+0x80"
+    assert eds["1A01sub2"]["DefaultValue"] == "0x21000610"  # decision: after linearization
+    assert (eds["6345sub1"]["LowLimit"], eds["6345sub1"]["HighLimit"]) == ("0", "16384")
+    assert eds["6300sub0"]["DefaultValue"] == "1"  # sub-index 0 of a catalogue-only sub 1
+    assert eds["6041"]["PDOMapping"] == "1" and eds["6345sub1"]["PDOMapping"] == "0"
+    assert eds["2041"]["DefaultValue"] == E04
+
+
+def test_every_catalogue_entry_of_the_variant_is_in_the_eds():
+    variant = TypeKey.parse(E02).variant
+    eds = _parse(export_eds(E02))
+    for param in CATALOGUE.for_variant(variant):
+        objects = {o.index: o for o in od_objects(variant)}
+        section = (
+            f"{param.index:04X}"
+            if objects[param.index].kind.name == "VAR"
+            else f"{param.index:04X}sub{param.subindex:X}"
+        )
+        assert eds[section]["DataType"] == f"0x{param.dtype.value:04X}", param.mnemonic
+    assert "2100" not in eds  # E02: no external sensor objects
+
+
+def test_export_to_stdout(capsys: pytest.CaptureFixture[str]):
+    assert main(["--export-eds", E02]) == 0
+    assert capsys.readouterr().out.startswith("[FileInfo]\n")
+
+
+def test_bad_type_key_is_refused_with_a_clear_message(tmp_path, capsys):
+    out = tmp_path / "x.eds"
+    assert main(["--export-eds", "PRM9-06.9Q99/30-24E02S02-CA", "-o", str(out)]) == 2
+    assert "unknown spool '9Q99'" in capsys.readouterr().err
+    assert not out.exists()
+
+
+def test_valve_without_canopen_has_no_eds(tmp_path, capsys):
+    assert main(["--export-eds", "PRM9-06.3Z11/30-24E02S02", "-o", str(tmp_path / "x")]) == 2
+    assert capsys.readouterr().err == (
+        "prm9tool: PRM9-06.3Z11/30-24E02S02 has no CANopen interface: an EDS exists only "
+        "for -CA valves (e.g. PRM9-06.3Z11/30-24E02S02-CA)\n"
+    )
+
+
+def test_unwritable_output_is_reported(tmp_path, capsys):
+    target = tmp_path / "missing" / "x.eds"
+    assert main(["--export-eds", E02, "-o", str(target)]) == 2
+    assert f"cannot write {target}" in capsys.readouterr().err
+    assert list(tmp_path.iterdir()) == []
+
+
+def test_docs_object_dictionary_table_is_current():
+    """docs/canopen.md carries the table generated from the catalogue.
+
+    Regenerate it with ``PRM9_UPDATE_DOCS=1 pytest tests/test_eds.py``.
+    """
+    text = DOC.read_text(encoding="utf-8")
+    head, rest = text.split(BEGIN + "\n")
+    _, tail = rest.split(END)
+    current = head + BEGIN + "\n" + markdown_table() + END + tail
+    if os.environ.get("PRM9_UPDATE_DOCS"):
+        DOC.write_text(current, encoding="utf-8")
+        return
+    assert text == current, "docs/canopen.md is stale: run PRM9_UPDATE_DOCS=1 pytest " + __file__
