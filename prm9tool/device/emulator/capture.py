@@ -12,7 +12,7 @@ from operator import itemgetter
 
 import numpy as np
 
-from prm9tool.device.emulator.kernel import SIGNAL_ORDER, LoopState
+from prm9tool.device.emulator.loopstate import SIGNAL_ORDER, LoopState
 from prm9tool.errors import ValueRangeError
 from prm9tool.signals import MAX_CHANNELS
 

@@ -8,21 +8,20 @@ from __future__ import annotations
 
 import os
 from collections.abc import Callable, Generator
-from typing import Any
 
+from prm9tool import canopen_switches
 from prm9tool.catalogue import CATALOGUE
 from prm9tool.device.emulator import config, detect
 from prm9tool.device.emulator.constants import (
     CYCLE_S,
-    FULL,
     TICK_CYCLES,
     FirmwareConstants,
     PlantConstants,
 )
 from prm9tool.device.emulator.faults import FaultMonitor
 from prm9tool.device.emulator.inputs import CANOPEN_TYPE, INPUT_TYPES
-from prm9tool.device.emulator.kernel import MODE_ACTIVE, MODE_HOLD, MODE_OFF, LoopState
 from prm9tool.device.emulator.kernel import control_loop as make_loop
+from prm9tool.device.emulator.loopstate import MODE_ACTIVE, MODE_HOLD, MODE_OFF, LoopState
 from prm9tool.device.emulator.nvimage import NvImage, is_nonvolatile
 from prm9tool.device.emulator.objdict import ObjectDictionary
 from prm9tool.device.emulator.statemachine import DeviceStateMachine
@@ -30,8 +29,6 @@ from prm9tool.device.emulator.states import DeviceState, Fault
 from prm9tool.typekey import TypeKey
 from prm9tool.variant import Coils
 
-BITRATES = (20_000, 50_000, 125_000, 250_000, 500_000, 800_000, 1_000_000)  # switch 2..8 / 9..15
-PARAM_BITRATES = (1_000_000, 800_000, 500_000, 250_000, 125_000, 50_000, 20_000)  # BITRATE 0..6
 AUTO_CONTROL_WORD = 0x0F  # analog-only mode: the firmware enables itself (decision)
 THERMAL_TICKS = 10  # the thermal model runs every 10 ms (time constant: minutes)
 _ACTIVE_STATES = (DeviceState.HOLD, DeviceState.DEVICE_MODE_ACTIVE, DeviceState.FAULT_HOLD)
@@ -71,8 +68,8 @@ class Firmware:
             "sensor_from_plant": 1.0,
         }
         defaults = (CATALOGUE["SWBAUD"].default, CATALOGUE["SWNODE"].default)
-        self.switches = list(switches if switches is not None else defaults)
-        self.latched_switches = tuple(self.switches)
+        self.switches = [int(s) for s in (switches if switches is not None else defaults)]
+        self.latched_switches = (self.switches[0], self.switches[1])
         self.injected: set[Fault] = set()
         self.cycles = 0
         self.ticks = 0
@@ -85,7 +82,8 @@ class Firmware:
         self.override_last = 0.0
         self.nmt_state = "off"
         self.booting = True
-        self.node_id = 0
+        self.node_id = self.bitrate = 0
+        self.can_enabled = self.terminator = False
         self.cycle_listeners: list[Callable[[float], None]] = []
         self.setpoint_dirty = True
         self.config_dirty = True
@@ -145,7 +143,7 @@ class Firmware:
         for mnemonic, value in self.nv.values.items():
             if od.has(mnemonic) and is_nonvolatile(od.param(mnemonic)):
                 od.values[od.param(mnemonic).key] = value
-        self.node_id = self._node_id()
+        self._latch_interface()
         for param in od.entries.values():
             if param.node_relative and param.mnemonic not in self.nv.values:
                 od.values[param.key] = param.default_for(self.variant, self.node_id)
@@ -175,36 +173,29 @@ class Firmware:
         return image
 
     # --- CANopen interface settings (latched at power-up) ----------------------------------
-    @property
-    def can_enabled(self) -> bool:
-        """True on a -CA valve whose interface switch is not 0/1 (analog only)."""
-        return self.variant.canopen and self.latched_switches[0] >= 2
+    def _latch_interface(self) -> None:
+        """Decode the switches (prm9tool.canopen_switches, table 7-17) at power-up.
 
-    @property
-    def bitrate(self) -> int:
-        """CAN bit rate in bit/s (0 when CANopen is off)."""
-        if not self.can_enabled:
-            return 0
-        if self.latched_switches[1] == 0:
-            return PARAM_BITRATES[int(self.od.get("BITRATE"))]
-        return BITRATES[(self.latched_switches[0] - 2) % 7]
-
-    @property
-    def terminator(self) -> bool:
-        """True if the 120 Ω terminator is on (switch 9..F, or CANTERM with node switch 0)."""
-        if not self.can_enabled:
-            return False
-        if self.latched_switches[1] == 0:
-            return self.od.get("CANTERM") == 1
-        return self.latched_switches[0] >= 9
-
-    def _node_id(self) -> int:
-        if not self.variant.canopen:
-            return 0
-        switch = self.latched_switches[1]
-        if switch <= 1:  # 0: set by software; 1: LSS (not emulated: software node ID)
-            return int(self.od.get("NODEID"))
-        return 10 + 5 * (switch - 2)
+        LSS (node switch 1) is not emulated: the valve then uses the NODEID parameter (what an
+        LSS master would have stored) and the bit rate of the interface switch.
+        """
+        baud, node = self.latched_switches
+        settings = (
+            canopen_switches.effective(
+                baud, node, self.value("NODEID"), self.value("BITRATE"), self.value("CANTERM")
+            )
+            if self.variant.canopen
+            else canopen_switches.CanSettings(False, None, None, False)
+        )
+        self.can_enabled = settings.can_enabled
+        self.terminator = settings.terminator
+        self.node_id = 0
+        self.bitrate = 0
+        if self.variant.canopen:
+            self.node_id = settings.node_id or self.value("NODEID")
+        if settings.can_enabled:
+            kbit = settings.bitrate_kbit or canopen_switches.baud_position(baud).bitrate_kbit
+            self.bitrate = (kbit or 0) * 1000
 
     @property
     def analog_only(self) -> bool:
@@ -396,19 +387,6 @@ class Firmware:
 
     def signal_values(self) -> dict[str, float]:
         """Latest value of every measuring point."""
-        from prm9tool.device.emulator.kernel import SIGNAL_ORDER
+        from prm9tool.device.emulator.loopstate import SIGNAL_ORDER
 
         return dict(zip(SIGNAL_ORDER, self.loop.signals, strict=True))
-
-    def clamp_pv(self, value: float) -> int:
-        """A process value as the S16 object-dictionary integer."""
-        return int(max(-FULL, min(FULL, round(value))))
-
-    def info(self) -> dict[str, Any]:
-        """Diagnostics for tools: node ID, bit rate, terminator, analog-only flag."""
-        return {
-            "node_id": self.node_id,
-            "bitrate": self.bitrate,
-            "terminator": self.terminator,
-            "analog_only": self.analog_only,
-        }

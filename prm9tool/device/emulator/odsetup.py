@@ -5,8 +5,9 @@ from __future__ import annotations
 from typing import TYPE_CHECKING
 
 from prm9tool.catalogue import LOAD_SIGNATURE, SAVE_SIGNATURE
+from prm9tool.device.emulator.constants import FULL
 from prm9tool.device.emulator.inputs import CANOPEN_TYPE
-from prm9tool.device.emulator.kernel import SIGNAL_ORDER
+from prm9tool.device.emulator.loopstate import SIGNAL_ORDER
 from prm9tool.device.emulator.objdict import Value, abort
 from prm9tool.device.emulator.states import DeviceState
 from prm9tool.errors import AbortCode
@@ -23,6 +24,11 @@ def revision(version: str) -> int:
     parts = [int(p) if p.isdigit() else 0 for p in version.split(".")[:3]]
     parts += [0] * (3 - len(parts))
     return (parts[0] & 0xFFFF) << 16 | (parts[1] & 0xFF) << 8 | (parts[2] & 0xFF)
+
+
+def clamp_pv(value: float) -> int:
+    """A process value as the S16 object-dictionary integer (±16384 = ±100 %)."""
+    return int(max(-FULL, min(FULL, round(value))))
 
 
 def install(fw: Firmware) -> None:
@@ -49,7 +55,7 @@ def _identity(fw: Firmware) -> None:
 
 
 def _pv(fw: Firmware, signal: str) -> int:
-    return fw.clamp_pv(fw.loop.signals[_SIG[signal]])
+    return clamp_pv(fw.loop.signals[_SIG[signal]])
 
 
 def _live(fw: Firmware) -> None:
@@ -59,11 +65,11 @@ def _live(fw: Firmware) -> None:
     _getter(fw, "CONTROLWORD", lambda: fw.sm.control_word)
     _getter(fw, "POSACT", lambda: _pv(fw, "position_actual"))
     _getter(fw, "DEMAND", lambda: _pv(fw, "demand"))
-    _getter(fw, "CTRLDEV", lambda: fw.clamp_pv(fw.loop.ctrl_dev))
+    _getter(fw, "CTRLDEV", lambda: clamp_pv(fw.loop.ctrl_dev))
     _getter(fw, "PRCACT", lambda: _pv(fw, "process_actual"))
     for i, mnemonic in enumerate(("SENSVAL", "SENSAFTINV", "SENSAFTOFFS", "SENSAFTGAIN")):
-        _getter(fw, mnemonic, lambda i=i: fw.clamp_pv(fw.loop.sensor_chain[i]))
-    _getter(fw, "SENSAFTLIN", lambda: fw.clamp_pv(fw.loop.sensor_chain[4]))
+        _getter(fw, mnemonic, lambda i=i: clamp_pv(fw.loop.sensor_chain[i]))
+    _getter(fw, "SENSAFTLIN", lambda: clamp_pv(fw.loop.sensor_chain[4]))
 
 
 def _errors(fw: Firmware) -> None:
