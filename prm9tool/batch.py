@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import argparse
 import sys
+from collections.abc import Mapping
 from concurrent.futures import ThreadPoolExecutor
 
 from prm9tool.backup import ensure_backup, existing_backups
@@ -240,7 +241,7 @@ class _UploadJob:
             record.error = _mismatch_text(result.failed_step, result.mismatches)
 
 
-def _mismatch_text(step: str | None, mismatches: dict[str, tuple[object, object]]) -> str:
+def _mismatch_text(step: str | None, mismatches: Mapping[str, tuple[object, object]]) -> str:
     shown = "; ".join(f"{m}: wrote {w}, got {g}" for m, (w, g) in list(mismatches.items())[:5])
     more = f" (and {len(mismatches) - 5} more)" if len(mismatches) > 5 else ""
     if step == "write":

@@ -168,7 +168,8 @@ class ValveSession:
             check_cancel(cancel, step)
             self.store()
         except RefusedError as refused:
-            mismatch = {refused.mnemonic: (values[refused.mnemonic], str(refused.error))}
+            refusal: tuple[Value, Value] = (values[refused.mnemonic], str(refused.error))
+            mismatch = {refused.mnemonic: refusal}
             return UploadResult(refused.done, False, False, mismatch, _since(start), "write")
         except CommunicationError as exc:
             raise _step_error(exc, step) from exc
