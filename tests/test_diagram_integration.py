@@ -1,0 +1,104 @@
+"""The diagram and the CANopen window inside the main window, online on an emulated valve.
+
+These run the real ValveConnection (worker thread, USB protocol, emulator session).
+"""
+
+from __future__ import annotations
+
+import pytest
+from gui_support import (
+    E02,
+    E02_CA,
+    emulated,
+    emulator_connection,
+    go_online,
+    main_window,
+    record_prompts,
+    settings_in,
+)
+from PySide6.QtCore import Qt
+
+from prm9tool import i18n
+from prm9tool.access import AccessModel
+from prm9tool.device import factory
+from prm9tool.document import ParameterDocument
+from prm9tool.undo import DocumentUndo
+from prm9tool.views.diagram import DiagramView
+
+TIMEOUT = 10_000
+
+
+@pytest.fixture
+def window(qtbot, tmp_path, monkeypatch):
+    record_prompts(monkeypatch)
+    with main_window(qtbot, tmp_path) as win:
+        yield win
+
+
+def _online(qtbot, window, spec: str) -> DiagramView:
+    go_online(qtbot, window, spec)
+    qtbot.waitUntil(lambda: window.sync.active, timeout=TIMEOUT)
+    view = window.views["diagram"]
+    assert isinstance(view, DiagramView)
+    return view
+
+
+def test_the_diagram_is_the_default_central_view(window):
+    assert window.current_view() == "diagram"
+    assert isinstance(window.views["diagram"], DiagramView)
+
+
+@pytest.fixture
+def paced_window(qtbot, tmp_path, monkeypatch):
+    """A main window whose emulated valve runs in real time (its measuring points move)."""
+    from prm9tool.views.main_window import MainWindow
+
+    record_prompts(monkeypatch)
+    i18n.set_language("en")
+    doc = ParameterDocument(E02)
+    connection = emulator_connection(paced=True)
+    win = MainWindow(doc, DocumentUndo(doc), AccessModel(), connection, settings_in(tmp_path))
+    qtbot.addWidget(win)
+    win.show()
+    yield win
+    connection.shutdown()
+    factory.forget_emulated_valves()
+
+
+def test_a_red_dot_opens_the_scope_with_its_measuring_point(qtbot, paced_window):
+    window = paced_window
+    view = _online(qtbot, window, f"{E02}:4701")
+    dot = view.diagram.dots["current_a"]
+    qtbot.waitUntil(lambda: dot.value_text.endswith("mA"), timeout=TIMEOUT)
+    centre = view.mapFromScene(dot.sceneBoundingRect().center())
+    qtbot.mouseClick(view.viewport(), Qt.MouseButton.LeftButton, pos=centre)
+    assert window.current_view() == "scope"
+    assert "current_a" in window.views["scope"].channels.selected()
+
+
+def test_canopen_window_node_id_and_terminator_survive_a_restart(qtbot, window):
+    _online(qtbot, window, f"{E02_CA}:4702")
+    valve = emulated(4702)
+    valve.set_input("switch_node", 0)  # node ID set by software; read at the next power-up
+    with qtbot.waitSignal(window.connection.operation_finished, timeout=TIMEOUT):
+        window.connection.restart()
+    canopen = window.show_canopen_window()
+    qtbot.waitUntil(lambda: canopen.switches is not None, timeout=TIMEOUT)
+    assert canopen.switches[1] == 0 and canopen.node_id.isEnabled()
+
+    canopen.node_id.setValue(42)
+    canopen.node_id.editingFinished.emit()
+    canopen.terminator.setChecked(True)
+    assert "after the valve restarts" in canopen.restart_label.text()
+    with qtbot.waitSignal(
+        window.connection.operation_finished,
+        check_params_cb=lambda name, _result: name == "restart",
+        timeout=TIMEOUT,
+    ):
+        window.connection.restart()
+    qtbot.waitUntil(lambda: canopen.valve_values.get("NODEID") == 42, timeout=TIMEOUT)
+    assert valve.node_id == 42
+    assert canopen.valve_values["CANTERM"] == 1
+    assert "node ID 42" in canopen.effective_label.text()
+    assert "terminator on" in canopen.effective_label.text()
+    assert canopen.restart_label.isHidden()
