@@ -97,6 +97,7 @@ class ProgressPrinter:
         """A ``progress(done, total, step)`` callback for valve ``who``."""
 
         def progress(done: int, total: int, step: str) -> None:
+            """Print a line when the step changes, every 10 % and at the end."""
             percent = 100 * done // max(total, 1)
             last_step, last_percent = self._last.get(who, ("", -100))
             if step != last_step or percent >= last_percent + 10 or done == total:

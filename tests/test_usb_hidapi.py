@@ -64,6 +64,16 @@ def test_every_write_carries_report_id_0_and_64_bytes(device):
     assert session.download() == changed(session.variant)
 
 
+def test_stream_reads_without_blocking(device):
+    session = open_session()
+    session.stream_start(["supply_voltage", "temperature"])
+    device.valve.advance(0.1)
+    block = session.stream_read()
+    assert block.shape == (495, 2)  # 33 full reports of 15; the rest waits up to 10 ms
+    assert session.samples_lost == 0
+    assert session.stream_read().shape == (0, 2)
+
+
 def test_dropped_request_and_dropped_answer_are_recovered(device):
     session = open_session()
     device.cable.drop_out = {device.out_count + 1}

@@ -84,6 +84,8 @@ class FakeValve:
     def send(self, timeout_ms: int) -> list[int]:
         deadline = time.monotonic() + timeout_ms / 1000
         while True:
+            while self.firmware.outbox:  # stream reports the firmware produced meanwhile
+                self.inbox.append((0.0, self.firmware.outbox.popleft()[1]))
             if not self.plugged:
                 raise OSError("read error")
             ready = [item for item in self.inbox if item[0] <= time.monotonic()]
@@ -107,6 +109,11 @@ class FakeHid:
         class Device:
             def __init__(self) -> None:
                 self._valve: FakeValve | None = None
+                self._nonblocking = False
+
+            def set_nonblocking(self, value: int) -> int:
+                self._nonblocking = bool(value)
+                return 0
 
             def open_path(self, path: bytes) -> None:
                 valve = outer.valves.get(path)
@@ -124,6 +131,7 @@ class FakeHid:
             def read(self, max_length: int, timeout_ms: int = 0) -> list[int]:
                 if self._valve is None:
                     raise ValueError("not open")
+                assert timeout_ms > 0 or self._nonblocking, "hidapi's read(n, 0) blocks forever"
                 return self._valve.send(timeout_ms)[:max_length]
 
             def close(self) -> None:

@@ -247,6 +247,7 @@ def _connect_can(valve: EmulatedValve, options: CanOptions) -> Callable[[], None
     slave = valve.connect_can(bus)
 
     def close() -> None:
+        """Take the valve off the bus and release the bus."""
         stop = getattr(slave, "stop", None)
         if callable(stop):
             stop()

@@ -112,6 +112,7 @@ class HidTransport(Transport):
         device = hid.device()
         try:
             device.open_path(path)
+            device.set_nonblocking(1)  # read(…, 0) must not block; timeouts > 0 still wait
         except (OSError, ValueError) as exc:
             raise DeviceDisconnectedError(f"cannot open USB device {path.decode()}: {exc}") from exc
         return device
