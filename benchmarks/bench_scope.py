@@ -106,7 +106,8 @@ def reference(
             curve.setDownsampling(auto=True, method="peak")
         curves.append(curve)
     step = RATE_HZ // 30
-    frames = min(frames, (len(recorded) - points) // step)
+    repeats = -(-(points + frames * step) // max(1, len(recorded)))
+    recorded = np.concatenate([recorded] * repeats)  # a short run is replayed in a loop
     times = []
     for frame in range(frames):
         first = frame * step

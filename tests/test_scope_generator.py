@@ -3,14 +3,14 @@
 from __future__ import annotations
 
 import pytest
-from PySide6.QtWidgets import QMessageBox
 from scope_fakes import FakeConnection
 
 from prm9tool.document import ParameterDocument
 from prm9tool.scope import Waveform
+from prm9tool.views import prompts
 from prm9tool.views.scope import ScopeWidget
 
-YES, NO = QMessageBox.StandardButton.Yes, QMessageBox.StandardButton.No
+YES, NO = prompts.Button.Yes, prompts.Button.No
 
 
 @pytest.fixture
@@ -31,11 +31,11 @@ def answer(monkeypatch):
     asked: list[str] = []
     reply = {"button": YES}
 
-    def question(_parent, _title, text, *_args):
+    def ask(_parent, _icon, _title, text, *_args):
         asked.append(text)
         return reply["button"]
 
-    monkeypatch.setattr(QMessageBox, "question", question)
+    monkeypatch.setattr(prompts, "ask", ask)
     reply["asked"] = asked
     return reply
 
@@ -104,7 +104,7 @@ def test_a_waveform_outside_the_setpoint_range_is_refused_with_its_reason(
     scope, conn, answer, monkeypatch
 ):
     shown: list[str] = []
-    monkeypatch.setattr(QMessageBox, "warning", lambda _p, _t, text, *_a: shown.append(text))
+    monkeypatch.setattr(prompts, "inform", lambda _p, _i, _t, text, *_a: shown.append(text))
     _start(scope, Waveform.SINE, amplitude=60.0, offset=50.0)
     assert shown == [
         "The waveform reaches -10 … 110 %; the setpoint must stay within -100 … 100 %."

@@ -315,6 +315,7 @@ class MainWindow(QMainWindow):
 
     def closeEvent(self, event: QCloseEvent) -> None:
         """Ask about unsaved changes, go offline, remember the window."""
+        self.views["scope"].stop()  # switches the setpoint generator off while still online
         if not self.files.maybe_save() or not self.valve.go_offline():
             event.ignore()
             return

@@ -16,18 +16,12 @@ from typing import Any
 import numpy as np
 from PySide6.QtCore import QEvent, Qt, QTimer
 from PySide6.QtGui import QCloseEvent, QHideEvent, QShowEvent
-from PySide6.QtWidgets import (
-    QFileDialog,
-    QGridLayout,
-    QLabel,
-    QMessageBox,
-    QVBoxLayout,
-    QWidget,
-)
+from PySide6.QtWidgets import QFileDialog, QGridLayout, QLabel, QVBoxLayout, QWidget
 
 from prm9tool.errors import ValueRangeError
 from prm9tool.scope import Capture, GeneratorSettings, write_csv
 from prm9tool.signals import BY_KEY, signals_for
+from prm9tool.views import prompts
 from prm9tool.views.scope_display import ScopeDisplay
 from prm9tool.views.scope_generator import GeneratorPanel, SetpointGenerator
 from prm9tool.views.scope_panels import ChannelPanel, ControlPanel
@@ -273,22 +267,24 @@ class ScopeWidget(QWidget):
 
     # --- generator ---------------------------------------------------------------------------
     def _on_generator_start_requested(self, settings: GeneratorSettings) -> None:
+        title = self.tr("Setpoint generator")
         try:
             settings.check()
         except ValueRangeError as exc:
-            QMessageBox.warning(self, self.tr("Setpoint generator"), str(exc))
+            prompts.inform(self, prompts.Icon.Warning, title, str(exc))
             return
-        answer = QMessageBox.question(
+        answer = prompts.ask(
             self,
-            self.tr("Setpoint generator"),
+            prompts.Icon.Warning,
+            title,
             self.tr(
                 "The generator will drive the valve's setpoint and the valve will move.\n"
                 "Make sure the machine is safe to move. Start the generator?"
             ),
-            QMessageBox.StandardButton.Yes | QMessageBox.StandardButton.No,
-            QMessageBox.StandardButton.No,
+            prompts.Button.Yes | prompts.Button.No,
+            prompts.Button.No,
         )
-        if answer != QMessageBox.StandardButton.Yes:
+        if answer != prompts.Button.Yes:
             return
         try:
             self.generator.start(settings)
@@ -332,7 +328,7 @@ class ScopeWidget(QWidget):
         try:
             action()
         except (OSError, ValueError) as exc:
-            QMessageBox.warning(self, self.tr("Export"), str(exc))
+            prompts.inform(self, prompts.Icon.Warning, self.tr("Export"), str(exc))
         else:
             self._say(self.tr("Saved {0}.").format(path))
 

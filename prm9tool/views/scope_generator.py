@@ -25,7 +25,7 @@ from PySide6.QtWidgets import (
 
 from prm9tool.scope import GeneratorSettings, Waveform, setpoint_limits
 
-TICK_MS = 20  # setpoint update period (50 Hz)
+TICK_MS = 40  # setpoint update period (25 Hz)
 KEEPALIVE_S = 0.1  # rewrite an unchanged setpoint this often
 
 
