@@ -5,8 +5,9 @@ from __future__ import annotations
 import pytest
 from diagram_fakes import EmulatorConnection
 
+from prm9tool.access import AccessModel
 from prm9tool.canopen_switches import baud_position, effective, node_position
-from prm9tool.catalogue import CATALOGUE
+from prm9tool.catalogue import CATALOGUE, Access
 from prm9tool.device.emulator import EmulatedValve
 from prm9tool.document import ParameterDocument
 from prm9tool.undo import DocumentUndo
@@ -100,6 +101,21 @@ def test_going_online_reads_the_switches(qtbot):
     link.go_online()
     assert window.switches == (3, 9)
     assert marked_rows(window.node_table) == [9]
+
+
+def test_with_an_access_model_basic_level_may_only_look(qtbot):
+    doc = ParameterDocument(E02_CA)
+    access = AccessModel(Access.BASIC)
+    window = CanopenWindow(doc, None, access=access)
+    qtbot.addWidget(window)
+    window.keep = (doc, access)
+    assert not window.node_id.isEnabled() and not window.terminator.isEnabled()
+    assert "Expert" in window.terminator.toolTip()
+    assert not window.apply("CANTERM", 1)
+    assert "Expert" in window.error_label.text()
+    assert doc.value("CANTERM") == 0
+    access.set_level(Access.EXPERT)
+    assert window.terminator.isEnabled()
 
 
 def test_a_valve_without_canopen_says_so(qtbot):

@@ -282,6 +282,19 @@ def test_online_the_valve_type_is_locked(qtbot):
     assert view.open_block("valve") is None
 
 
+def test_zoom_keeps_the_diagram_vector_and_fits_again(qtbot):
+    view = make_view(qtbot, E02)
+    fitted = view.transform().m11()
+    view.zoom_in()
+    assert view.transform().m11() == pytest.approx(fitted * 1.15)
+    view.resize(800, 500)  # a zoomed view keeps its zoom when resized
+    assert view.transform().m11() == pytest.approx(fitted * 1.15)
+    view.zoom_to_fit()
+    assert view.transform().m11() < fitted
+    visible = view.mapToScene(view.viewport().rect()).boundingRect()
+    assert visible.contains(view.diagram.sceneRect().adjusted(1, 1, -1, -1))
+
+
 # --- picture ------------------------------------------------------------------------------------------
 def test_render_picture_paints_the_diagram(qtbot):
     view = make_view(qtbot, E04_CA)

@@ -8,6 +8,7 @@ current position (mark "d"). Below: the terminator on/off choice (mark "b") and 
 The valve reads its switches at power-up only, so the positions shown are those of the last
 start. A change is an undoable document edit and, online, is written to the valve and stored
 in its non-volatile memory; it takes effect after the next restart, which the window says.
+Given an access model, the window honours the catalogue's access level of the settings.
 """
 
 from __future__ import annotations
@@ -34,6 +35,7 @@ from PySide6.QtWidgets import (
     QWidget,
 )
 
+from prm9tool.access import AccessModel
 from prm9tool.canopen_switches import (
     POSITIONS,
     baud_position,
@@ -43,7 +45,8 @@ from prm9tool.canopen_switches import (
 )
 from prm9tool.catalogue import CATALOGUE
 from prm9tool.document import ParameterDocument, Raw
-from prm9tool.errors import ValueRangeError
+from prm9tool.editing import apply_edit
+from prm9tool.errors import AccessDeniedError, ValueRangeError
 from prm9tool.i18n import current_language
 
 SETTINGS = ("NODEID", "BITRATE", "CANTERM")
@@ -60,15 +63,18 @@ class CanopenWindow(QDialog):
         document: ParameterDocument,
         connection: QObject | None = None,
         parent: QWidget | None = None,
+        access: AccessModel | None = None,
     ) -> None:
         super().__init__(parent)
-        self._doc, self._connection = document, connection
+        self._doc, self._connection, self._access = document, connection, access
         self.switches: tuple[int, int] | None = None  # (interface, node) at the last power-up
         self.valve_values: dict[str, Raw] = {}  # NODEID, BITRATE, CANTERM as read from the valve
         self.restart_pending = False
         self._build()
         document.value_changed.connect(self._on_document_value_changed)
         document.values_reset.connect(self.refresh)
+        if access is not None:
+            access.level_changed.connect(self.refresh)
         if connection is not None:
             connection.online_changed.connect(self._on_online_changed)
             connection.operation_finished.connect(self._on_operation_finished)
@@ -236,13 +242,22 @@ class CanopenWindow(QDialog):
         with QSignalBlocker(self.bitrate):
             self.bitrate.setCurrentIndex(max(0, self.bitrate.findData(self._value("BITRATE"))))
         available = self._doc.variant.canopen
-        self.terminator.setEnabled(available)
-        self.node_id.setEnabled(available and software)
-        self.bitrate.setEnabled(available and software)
-        if available and not software:
-            tip = self.tr("The node-ID switch is not at 0: the switch sets the node ID.")
-            self.node_id.setToolTip(tip)
-            self.bitrate.setToolTip(tip)
+        switch_tip = self.tr("The node-ID switch is not at 0: the switch sets the node ID.")
+        for widget, mnemonic, needs_switch in (
+            (self.terminator, "CANTERM", False),
+            (self.node_id, "NODEID", True),
+            (self.bitrate, "BITRATE", True),
+        ):
+            locked = self._locked_reason(mnemonic)
+            by_switch = needs_switch and not software
+            widget.setEnabled(available and not locked and not by_switch)
+            widget.setToolTip(locked or (switch_tip if by_switch else ""))
+
+    def _locked_reason(self, mnemonic: str) -> str:
+        """Why the access level may not change ``mnemonic`` ('' if it may, or no model given)."""
+        if self._access is None:
+            return ""
+        return self._access.why_locked(CATALOGUE[mnemonic])
 
     def _show_state(self) -> None:
         online = bool(getattr(self._connection, "is_online", False))
@@ -288,8 +303,11 @@ class CanopenWindow(QDialog):
         if self._doc.value(mnemonic) == raw and not self._online():
             return True
         try:
-            self._doc.set_value(mnemonic, raw)
-        except ValueRangeError as exc:
+            if self._access is not None:
+                apply_edit(self._doc, self._access, mnemonic, raw)
+            else:
+                self._doc.set_value(mnemonic, raw)
+        except (ValueRangeError, AccessDeniedError) as exc:
             self.error_label.setText(str(exc))
             self.refresh()
             return False

@@ -12,8 +12,15 @@ from collections.abc import Callable
 from typing import Any
 
 from PySide6.QtCore import QCoreApplication, QEvent, QObject, QRectF, Qt, Signal
-from PySide6.QtGui import QKeySequence, QPainter, QResizeEvent, QShortcut, QWheelEvent
-from PySide6.QtWidgets import QDialog, QGraphicsView, QWidget
+from PySide6.QtGui import (
+    QContextMenuEvent,
+    QKeySequence,
+    QPainter,
+    QResizeEvent,
+    QShortcut,
+    QWheelEvent,
+)
+from PySide6.QtWidgets import QDialog, QGraphicsView, QMenu, QWidget
 
 from prm9tool.access import AccessModel
 from prm9tool.catalogue import CATALOGUE
@@ -27,6 +34,7 @@ from prm9tool.views.diagram.summary import block_lines
 from prm9tool.views.valve_selection import ValveSelectionDialog
 
 _CTX = "DiagramBlock"
+ZOOM_STEP = 1.15
 _DECIMALS = {"%": 1, "mA": 0, "V": 2, "°C": 1}
 
 
@@ -82,6 +90,8 @@ class DiagramView(QGraphicsView):
             connection.online_changed.connect(self._on_online_changed)
             connection.signal_values_changed.connect(self._on_signal_values_changed)
         QShortcut(QKeySequence("Ctrl+0"), self, self.zoom_to_fit)
+        QShortcut(QKeySequence.StandardKey.ZoomIn, self, self.zoom_in)
+        QShortcut(QKeySequence.StandardKey.ZoomOut, self, self.zoom_out)
         self._on_online_changed(self.is_online)
 
     # --- public ----------------------------------------------------------------------------
@@ -123,6 +133,18 @@ class DiagramView(QGraphicsView):
         self._fit = True
         self.fitInView(self.diagram.sceneRect(), Qt.AspectRatioMode.KeepAspectRatio)
 
+    def zoom_in(self) -> None:
+        """Enlarge the diagram by one step (Ctrl++, Ctrl+wheel)."""
+        self._zoom(ZOOM_STEP)
+
+    def zoom_out(self) -> None:
+        """Shrink the diagram by one step (Ctrl+-, Ctrl+wheel)."""
+        self._zoom(1 / ZOOM_STEP)
+
+    def _zoom(self, factor: float) -> None:
+        self._fit = False
+        self.scale(factor, factor)
+
     def render_picture(self, painter: QPainter, target: QRectF) -> None:
         """Paint the diagram into ``target`` (print / PDF parameter record), aspect kept."""
         self.diagram.render(
@@ -152,7 +174,7 @@ class DiagramView(QGraphicsView):
         if block_id == "canopen":
             from prm9tool.views.canopen_window import CanopenWindow
 
-            return CanopenWindow(self._doc, self._connection, self)
+            return CanopenWindow(self._doc, self._connection, self, access=self._access)
         ctx = BlockContext(self._doc, self._access, self._connection, self._simulator_factory)
         return create_block_dialog(block_id, ctx, spec.title, self)
 
@@ -271,12 +293,17 @@ class DiagramView(QGraphicsView):
 
     def wheelEvent(self, event: QWheelEvent) -> None:
         if event.modifiers() & Qt.KeyboardModifier.ControlModifier:
-            factor = 1.15 if event.angleDelta().y() > 0 else 1 / 1.15
-            self._fit = False
-            self.scale(factor, factor)
+            self._zoom(ZOOM_STEP if event.angleDelta().y() > 0 else 1 / ZOOM_STEP)
             event.accept()
         else:
             super().wheelEvent(event)
+
+    def contextMenuEvent(self, event: QContextMenuEvent) -> None:
+        menu = QMenu(self)
+        menu.addAction(self.tr("Zoom to fit") + "\tCtrl+0", self.zoom_to_fit)
+        menu.addAction(self.tr("Zoom in"), self.zoom_in)
+        menu.addAction(self.tr("Zoom out"), self.zoom_out)
+        menu.exec(event.globalPos())
 
     def changeEvent(self, event: QEvent) -> None:
         if event.type() == QEvent.Type.LanguageChange:
