@@ -145,8 +145,11 @@ class CanopenSlave:
         with self._valve.lock:
             if self.state in (NmtState.OFF, NmtState.INITIALISING) and msg.arbitration_id:
                 return
-            if self.state is not NmtState.OFF:
-                self._dispatch(msg.arbitration_id, bytes(msg.data))
+            try:
+                if self.state is not NmtState.OFF:
+                    self._dispatch(msg.arbitration_id, bytes(msg.data))
+            except Exception:  # a firmware bug must not stop the receive thread
+                log.exception("CANopen frame 0x%03X not processed", msg.arbitration_id)
 
     def _dispatch(self, can_id: int, data: bytes) -> None:
         if can_id == 0:
