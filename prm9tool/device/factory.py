@@ -248,9 +248,7 @@ def _connect_can(valve: EmulatedValve, options: CanOptions) -> Callable[[], None
 
     def close() -> None:
         """Take the valve off the bus and release the bus."""
-        stop = getattr(slave, "stop", None)
-        if callable(stop):
-            stop()
+        slave.stop()
         bus.shutdown()
 
     return close
