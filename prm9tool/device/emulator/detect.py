@@ -16,41 +16,54 @@ if TYPE_CHECKING:
     from prm9tool.device.emulator.firmware import Firmware
 
 
-def conditions(fw: Firmware) -> dict[str, tuple[bool, float]]:
-    """Every raw condition with its detection delay."""
+def static_conditions(fw: Firmware) -> dict[str, tuple[bool, float]]:
+    """Conditions that only inputs, parameters or injected faults change (with their delays).
+
+    Evaluated when those change; :func:`conditions` adds the dynamic ones every 1 ms.
+    """
     c = fw.fw
     injected = fw.injected
     coils = fw.variant.coils
-    has_a = coils in (Coils.AB, Coils.A)
-    has_b = coils in (Coils.AB, Coils.B)
-    ia, ib = fw.loop.current_ma
     return {
-        "coil_a_open": (has_a and Fault.COIL_A_OPEN in injected, c.coil_open_delay_s),
-        "coil_b_open": (has_b and Fault.COIL_B_OPEN in injected, c.coil_open_delay_s),
-        "coil_a_overcurrent": (
-            has_a and _overcurrent(fw, ia, "coil_a_overcurrent", Fault.COIL_A_OVERCURRENT),
-            c.overcurrent_delay_s,
+        "coil_a_open": (
+            coils is not Coils.B and Fault.COIL_A_OPEN in injected,
+            c.coil_open_delay_s,
         ),
-        "coil_b_overcurrent": (
-            has_b and _overcurrent(fw, ib, "coil_b_overcurrent", Fault.COIL_B_OVERCURRENT),
-            c.overcurrent_delay_s,
+        "coil_b_open": (
+            coils is not Coils.A and Fault.COIL_B_OPEN in injected,
+            c.coil_open_delay_s,
         ),
         "setpoint": (_setpoint_error(fw), c.setpoint_error_delay_s),
         "sensor": (_sensor_error(fw), c.sensor_error_delay_s),
         "position_sensor": (Fault.POSITION_SENSOR_BREAK in injected, c.position_sensor_delay_s),
-        "supply": (_supply_error(fw), c.supply_delay_s),
-        "temperature": (_temperature_error(fw), c.temp_delay_s),
-        "monitoring": (_monitoring(fw), fw.value("MONDELAY") / 1000.0),
     }
 
 
 def static_alarm(fw: Firmware) -> bool:
-    """True if a condition that only inputs, parameters or injections change is raised.
+    """True if a static condition (or the supply) is raised: the 1 ms task must look."""
+    return any(flag for flag, _ in fw.static_conditions.values()) or _supply_error(fw)
 
-    Evaluated when those change; the 1 ms task then runs the full table only while this, a
-    dynamic threshold (current, temperature, control deviation) or a pending error needs it.
-    """
-    return bool(fw.injected) or _setpoint_error(fw) or _sensor_error(fw) or _supply_error(fw)
+
+def conditions(fw: Firmware) -> dict[str, tuple[bool, float]]:
+    """Every raw condition with its detection delay (static ones as last evaluated)."""
+    c = fw.fw
+    ia, ib = fw.loop.current_ma
+    coils = fw.variant.coils
+    result = dict(fw.static_conditions)
+    result["coil_a_overcurrent"] = (
+        coils is not Coils.B
+        and _overcurrent(fw, ia, "coil_a_overcurrent", Fault.COIL_A_OVERCURRENT),
+        c.overcurrent_delay_s,
+    )
+    result["coil_b_overcurrent"] = (
+        coils is not Coils.A
+        and _overcurrent(fw, ib, "coil_b_overcurrent", Fault.COIL_B_OVERCURRENT),
+        c.overcurrent_delay_s,
+    )
+    result["supply"] = (_supply_error(fw), c.supply_delay_s)
+    result["temperature"] = (_temperature_error(fw), c.temp_delay_s)
+    result["monitoring"] = (_monitoring(fw), fw.monitoring_delay_s)
+    return result
 
 
 def _overcurrent(fw: Firmware, current_ma: float, key: str, fault: Fault) -> bool:
@@ -104,7 +117,7 @@ def _monitoring(fw: Firmware) -> bool:
     setpoint, so the error goes away when the setpoint is brought back to where the valve is
     (decision: re-arm at the actual value).
     """
-    beyond = abs(fw.loop.ctrl_dev) > fw.value("MONTHRES")
+    beyond = abs(fw.loop.ctrl_dev) > fw.monitoring_threshold
     if not beyond:
         return False
     return fw.sm.state is DeviceState.DEVICE_MODE_ACTIVE or fw.faults.is_present("monitoring")

@@ -21,7 +21,13 @@ from prm9tool.device.emulator.constants import (
 from prm9tool.device.emulator.faults import FaultMonitor
 from prm9tool.device.emulator.inputs import CANOPEN_TYPE, INPUT_TYPES
 from prm9tool.device.emulator.kernel import control_loop as make_loop
-from prm9tool.device.emulator.loopstate import MODE_ACTIVE, MODE_HOLD, MODE_OFF, LoopState
+from prm9tool.device.emulator.loopstate import (
+    MODE_ACTIVE,
+    MODE_HOLD,
+    MODE_OFF,
+    SIGNAL_ORDER,
+    LoopState,
+)
 from prm9tool.device.emulator.nvimage import NvImage, is_nonvolatile
 from prm9tool.device.emulator.objdict import ObjectDictionary
 from prm9tool.device.emulator.statemachine import DeviceStateMachine
@@ -76,8 +82,11 @@ class Firmware:
         self.tick_countdown = TICK_CYCLES
         self.override_on = False
         self.monitoring_threshold = 16384
+        self.monitoring_delay_s = 1.0
+        self.static_conditions: dict[str, tuple[bool, float]] = {}
         self.static_alarm = False
         self.temperature_rise = 0.0
+        self.temperature = 25.0  # electronics temperature reading, °C
         self.warning = False
         self.override_last = 0.0
         self.nmt_state = "off"
@@ -129,6 +138,8 @@ class Firmware:
         self.faults.reset()
         self.warning = False
         self.od.values[CATALOGUE["SETPOVRON"].key] = 0
+        if self.loop.coefficients:
+            self.gen.send(0)  # the plant (spool, load) keeps its physical state over a power cycle
         self.gen = make_loop(self.loop)
         next(self.gen)
         self.loop.mode = MODE_OFF
@@ -266,19 +277,21 @@ class Firmware:
             sm.write_control_word(AUTO_CONTROL_WORD, False)
 
     def _update_outputs(self) -> None:
-        loop = self.loop
         state = self.sm.state
         if self.booting or self.faults.any_present or state not in _ACTIVE_STATES:
-            loop.mode = MODE_OFF
+            mode = MODE_OFF
         elif state is DeviceState.DEVICE_MODE_ACTIVE:
-            loop.mode = MODE_ACTIVE
+            mode = MODE_ACTIVE
         else:
-            loop.mode = MODE_HOLD
-        loop.stage_on = (
+            mode = MODE_HOLD
+        stage = (
             not self.faults.is_present("coil_a_overcurrent"),
             not self.faults.is_present("coil_b_overcurrent"),
         )
-        loop.temperature_c = self.temperature
+        loop = self.loop
+        if mode != loop.mode or stage != loop.stage_on or self.temperature != loop.temperature_c:
+            loop.mode, loop.stage_on, loop.temperature_c = mode, stage, self.temperature
+            loop.inputs_version += 1
 
     def _thermal(self, dt: float) -> None:
         ia, ib = self.loop.current_ma
@@ -287,17 +300,18 @@ class Firmware:
         rise = self.temperature_rise
         rise += (self.plant.thermal_k_per_w * power - rise) * dt / self.plant.thermal_tau_s
         self.temperature_rise = rise
+        self._update_temperature()
         model = self.inputs["ambient_temperature"] + rise
         if abs(model - self.coil_temperature) > 0.5:
             self.coil_temperature = model
             self.config_dirty = True
 
-    @property
-    def temperature(self) -> float:
-        """Electronics temperature reading, °C."""
+    def _update_temperature(self) -> None:
+        """The electronics temperature reading, °C (an injected over-temperature forces it)."""
         if Fault.OVER_TEMPERATURE in self.injected:
-            return self.fw.injected_temperature_c
-        return self.inputs["ambient_temperature"] + self.temperature_rise
+            self.temperature = self.fw.injected_temperature_c
+        else:
+            self.temperature = self.inputs["ambient_temperature"] + self.temperature_rise
 
     @property
     def supply(self) -> float:
@@ -331,6 +345,8 @@ class Firmware:
             loop.version += 1
             self.setp_curve = config.curve_of(self.value, "SETPLIN")
         loop.supply_v = supply
+        loop.inputs_version += 1
+        self._update_temperature()
         loop.coil_open = (Fault.COIL_A_OPEN in self.injected, Fault.COIL_B_OPEN in self.injected)
         loop.coil_short = (
             Fault.COIL_A_OVERCURRENT in self.injected,
@@ -345,6 +361,8 @@ class Firmware:
         loop.target = signals[3]
         self.override_on = bool(self.value("SETPOVRON"))
         self.monitoring_threshold = self.value("MONTHRES")
+        self.monitoring_delay_s = self.value("MONDELAY") / 1000.0
+        self.static_conditions = detect.static_conditions(self)
         self.static_alarm = detect.static_alarm(self)
         self.setpoint_dirty = self.config_dirty = False
 
@@ -385,8 +403,13 @@ class Firmware:
             return 0.0
         return kind.to_normalized(self.setpoint_electrical(), supply, self.fw)
 
+    def flush(self) -> LoopState:
+        """Make the loop write every measuring point back; returns the mailbox."""
+        if self.setpoint_dirty or self.config_dirty:
+            self._refresh_inputs()
+        self.gen.send(0)
+        return self.loop
+
     def signal_values(self) -> dict[str, float]:
         """Latest value of every measuring point."""
-        from prm9tool.device.emulator.loopstate import SIGNAL_ORDER
-
-        return dict(zip(SIGNAL_ORDER, self.loop.signals, strict=True))
+        return dict(zip(SIGNAL_ORDER, self.flush().signals, strict=True))

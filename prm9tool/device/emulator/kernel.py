@@ -20,7 +20,12 @@ from prm9tool.device.emulator.loopstate import MODE_ACTIVE, MODE_OFF, LoopState
 
 
 def control_loop(s: LoopState) -> Generator[None, int, None]:
-    """Run ``n`` cycles per ``send(n)``; see the module docstring for the contract."""
+    """Run ``n`` cycles per ``send(n)``; ``send(0)`` writes every measuring point back.
+
+    After a batch only what the firmware's 1 ms task needs is written back (coil currents,
+    control deviation); inputs are re-read only when ``inputs_version`` changed, coefficients
+    only when ``version`` changed.
+    """
     sin = math.sin
     bis = bisect_right
     two_pi = 2.0 * math.pi
@@ -64,39 +69,71 @@ def control_loop(s: LoopState) -> Generator[None, int, None]:
         act_k, overlap, act_ret = c["actuator"]
         aa_c, ba_c, ab_c, bb_c = c["coil_discrete"]
         subs = range(nsub)
+        inputs_version = -1
         while s.version == version:
-            mode = s.mode
-            tgt = s.target
-            vs = s.supply_v
-            inv_vs = 1.0 / vs if vs > 0.5 else 2.0
-            open_a, open_b = s.coil_open
-            short_a, short_b = s.coil_short
-            on_a, on_b = s.stage_on
-            aa = 0.0 if open_a else aa_c
-            ba = 0.0 if open_a else ba_c
-            ab = 0.0 if open_b else ab_c
-            bb = 0.0 if open_b else bb_c
-            lvdt_break = s.lvdt_break
-            plant_sensor = s.sensor_from_plant
-            s_static = s.sensor_static
-            s_broken = s.sensor_break_value
-            if s_broken is not None:
-                plant_sensor = False
-                s_static = s_broken
-            active = mode == MODE_ACTIVE
-            process = e04 and active
-            if active and last_mode != MODE_ACTIVE:
-                r = pv if process else xm  # the ramp starts where the valve is (bumpless)
-            last_mode = mode
-            if mode == MODE_OFF:
-                ia_i = ib_i = p_int = p_d = p_prev = 0.0
-            if not process:
-                q_int = q_d = q_prev = 0.0
-            stat = s.static_signals
-            cap = s.capture
-            if cap is not None:
-                cap_ext, cap_get, cap_dec = cap
-            temp10 = s.temperature_c * 10.0
+            if s.inputs_version != inputs_version:
+                inputs_version = s.inputs_version
+                mode = s.mode
+                tgt = s.target
+                vs = s.supply_v
+                inv_vs = 1.0 / vs if vs > 0.5 else 2.0
+                open_a, open_b = s.coil_open
+                short_a, short_b = s.coil_short
+                on_a, on_b = s.stage_on
+                aa = 0.0 if open_a else aa_c
+                ba = 0.0 if open_a else ba_c
+                ab = 0.0 if open_b else ab_c
+                bb = 0.0 if open_b else bb_c
+                lvdt_break = s.lvdt_break
+                plant_sensor = s.sensor_from_plant
+                s_static = s.sensor_static
+                s_broken = s.sensor_break_value
+                if s_broken is not None:
+                    plant_sensor = False
+                    s_static = s_broken
+                active = mode == MODE_ACTIVE
+                process = e04 and active
+                if active and last_mode != MODE_ACTIVE:
+                    r = pv if process else xm  # the ramp starts where the valve is (bumpless)
+                last_mode = mode
+                if mode == MODE_OFF:
+                    ia_i = ib_i = p_int = p_d = p_prev = 0.0
+                if not process:
+                    q_int = q_d = q_prev = 0.0
+                stat = s.static_signals
+                cap = s.capture
+                if cap is not None:
+                    cap_ext, cap_get, cap_dec = cap
+                temp10 = s.temperature_c * 10.0
+            if n == 0:
+                # --- flush: every measuring point and the plant state -------------------
+                s.signals = (
+                    stat[0],
+                    stat[1],
+                    stat[2],
+                    stat[3],
+                    r,
+                    r,
+                    pv,
+                    dg,
+                    w,
+                    xm,
+                    pe,
+                    u,
+                    ca,
+                    cb,
+                    ia,
+                    ib,
+                    da * 10000.0,
+                    db * 10000.0,
+                    vs * 1000.0,
+                    temp10,
+                    s0,
+                )
+                s.spool_m = x
+                s.spool_v = v
+                s.actuator = act
+                s.sensor_chain = (s0, s1, s2, s3, pv)
             for _ in range(n):
                 # --- demand value generator: four ramps ---------------------------------
                 if r != tgt:
@@ -213,7 +250,9 @@ def control_loop(s: LoopState) -> Generator[None, int, None]:
                 if kb < 0.0:
                     kb = 0.0
                 # --- current controllers, PWM duty, solenoid R-L circuits -----------------
-                if on_a:
+                # A shorted stage puts the supply on the coil whatever the duty, until the
+                # firmware opens the stage's safety switch (on_a / on_b False).
+                if on_a and mode:
                     err = ka - ia
                     ia_i += cki * err
                     if ia_i > vmax_i:
@@ -227,9 +266,9 @@ def control_loop(s: LoopState) -> Generator[None, int, None]:
                         da = 0.0
                     ia = ia * aa + ba * (vs if short_a else da * vs)
                 else:
-                    da = ia_i = 0.0
-                    ia = ia * aa
-                if on_b:
+                    da = 0.0
+                    ia = ia * aa + ba * vs if short_a and on_a else ia * aa
+                if on_b and mode:
                     err = kb - ib
                     ib_i += cki * err
                     if ib_i > vmax_i:
@@ -243,8 +282,8 @@ def control_loop(s: LoopState) -> Generator[None, int, None]:
                         db = 0.0
                     ib = ib * ab + bb * (vs if short_b else db * vs)
                 else:
-                    db = ib_i = 0.0
-                    ib = ib * ab
+                    db = 0.0
+                    ib = ib * ab + bb * vs if short_b and on_b else ib * ab
                 # --- spool: force, spring, damping, friction, stroke limits ---------------
                 if two:
                     f += (kf * (ia - ib) - f) * flag
@@ -325,34 +364,7 @@ def control_loop(s: LoopState) -> Generator[None, int, None]:
                                 )
                             )
                         )
-            # --- write back once per batch --------------------------------------------------
-            s.signals = (
-                stat[0],
-                stat[1],
-                stat[2],
-                stat[3],
-                r,
-                r,
-                pv,
-                dg,
-                w,
-                xm,
-                pe,
-                u,
-                ca,
-                cb,
-                ia,
-                ib,
-                da * 10000.0,
-                db * 10000.0,
-                vs * 1000.0,
-                temp10,
-                s0,
-            )
+            # --- what the 1 ms task needs; the rest on a flush (send(0)) --------------------
             s.ctrl_dev = dev if process else r - xm
-            s.spool_m = x
-            s.spool_v = v
-            s.actuator = act
             s.current_ma = (ia, ib)
-            s.sensor_chain = (s0, s1, s2, s3, pv)
             n = yield

@@ -44,7 +44,8 @@ class LoopState:
     """Mailbox between the control loop and the firmware (see module docstring)."""
 
     def __init__(self) -> None:
-        self.version = 0
+        self.version = 0  # coefficients changed
+        self.inputs_version = 0  # per-batch inputs changed
         self.coefficients: dict[str, Any] = {}
         # per-batch inputs
         self.mode = MODE_OFF

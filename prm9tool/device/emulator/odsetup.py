@@ -55,7 +55,7 @@ def _identity(fw: Firmware) -> None:
 
 
 def _pv(fw: Firmware, signal: str) -> int:
-    return clamp_pv(fw.loop.signals[_SIG[signal]])
+    return clamp_pv(fw.flush().signals[_SIG[signal]])
 
 
 def _live(fw: Firmware) -> None:
@@ -68,8 +68,8 @@ def _live(fw: Firmware) -> None:
     _getter(fw, "CTRLDEV", lambda: clamp_pv(fw.loop.ctrl_dev))
     _getter(fw, "PRCACT", lambda: _pv(fw, "process_actual"))
     for i, mnemonic in enumerate(("SENSVAL", "SENSAFTINV", "SENSAFTOFFS", "SENSAFTGAIN")):
-        _getter(fw, mnemonic, lambda i=i: clamp_pv(fw.loop.sensor_chain[i]))
-    _getter(fw, "SENSAFTLIN", lambda: clamp_pv(fw.loop.sensor_chain[4]))
+        _getter(fw, mnemonic, lambda i=i: clamp_pv(fw.flush().sensor_chain[i]))
+    _getter(fw, "SENSAFTLIN", lambda: clamp_pv(fw.flush().sensor_chain[4]))
 
 
 def _errors(fw: Firmware) -> None:
