@@ -373,3 +373,11 @@ def test_paced_valve_sends_heartbeats_in_real_time(rig: Rig):
         assert [rig.receive(), rig.receive()] == ["70A 7F", "70A 7F"]
     finally:
         rig.valve.stop()
+
+
+def test_pdo_parameters_written_over_usb_take_effect(rig: Rig):
+    rig.exchange("60A 2B 17 10 00 00 00 00 00", "58A 60 17 10 00 00 00 00 00")
+    _start(rig)
+    rig.valve.write(0x1800, 5, 20)  # event timer 20 ms, as the USB firmware would write it
+    rig.valve.advance(0.2)
+    assert 9 <= len([f for f in rig.drain() if f.startswith("18A")]) <= 10

@@ -41,6 +41,7 @@ EMCY_RPDO_LENGTH = 0x8210  # CiA 301: PDO not processed due to length error
 SYNC_COB_ID, CYCLE_PERIOD, EMCY_COB_ID = 0x1005, 0x1006, 0x1014
 HEARTBEAT_TIME, NMT_STARTUP = 0x1017, 0x1F80
 SYNC_TIMEOUT_FACTOR = 1.5  # decision: SYNC missing for 1.5 x 0x1006 = communication error
+CONFIG_POLL_MS = 10  # PDO communication parameters are re-read every 10 ms
 
 
 class CanopenSlave:
@@ -197,6 +198,8 @@ class CanopenSlave:
             self._send(0x700 + self.node_id, bytes([HEARTBEAT_CODES[self.state]]))
             self._heartbeat_due_ms = self._now_ms + period
         if self.state is NmtState.OPERATIONAL:
+            if self._now_ms % CONFIG_POLL_MS == 0:
+                self._load_config()  # PDO parameters written over USB take effect too
             self._check_sync_timeout()
             for tpdo in self._tpdo_logic:
                 self._transmit(tpdo, tpdo.on_tick(self._now_ms))
