@@ -84,11 +84,14 @@ class PdoChannel:
         """The 11-bit CAN identifier."""
         return self.cob_id & CAN_ID_MASK
 
-    def load(self, valve: Dictionary) -> None:
-        """Refresh the configuration from the object dictionary."""
+    def load(self, valve: Dictionary, now_ms: int) -> None:
+        """Refresh the configuration from the object dictionary (a new event timer restarts)."""
         self.cob_id = int(valve.read(self.comm_index, 1))
         self.trans_type = int(valve.read(self.comm_index, 2))
-        self.event_timer = int(valve.read(self.comm_index, 5)) if self.transmit else 0
+        timer = int(valve.read(self.comm_index, 5)) if self.transmit else 0
+        if timer != self.event_timer:
+            self.event_timer = timer
+            self.next_due_ms = now_ms + timer
 
     def restart(self, now_ms: int) -> None:
         """Reset the counters (entering OPERATIONAL, configuration changed)."""

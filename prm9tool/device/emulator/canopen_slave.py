@@ -254,4 +254,4 @@ class CanopenSlave:
 
     def _load_config(self) -> None:
         for channel in (*self._rpdos, *self._tpdos):
-            channel.load(self._valve)
+            channel.load(self._valve, self._now_ms)
