@@ -136,8 +136,7 @@ def simulate_step(type_key: str | TypeKey, values: Mapping[str, Raw], loop: str)
     """
     from prm9tool.device.emulator import EmulatedValve  # lazy: the emulator is heavy to import
 
-    key = TypeKey.parse(str(type_key))
-    analog = TypeKey(key.size, key.spool, key.flow, key.supply, key.config, False)
+    analog = analog_type_key(type_key)
     sp_key, act_key, step, duration = LOOPS[loop]
     valve = EmulatedValve(analog)
     for mnemonic, raw in simulation_values(values, loop).items():
@@ -147,7 +146,7 @@ def simulate_step(type_key: str | TypeKey, values: Mapping[str, Raw], loop: str)
     valve.set_input("setpoint", 0.0)
     if loop == "process":
         valve.set_input("sensor_from_plant", 1)
-    _power_up(valve)
+    power_up(valve)
     total = PRE_STEP_S + duration
     decimation = max(1, round(total / valve.CYCLE_S / SAMPLES))
     valve.capture_start([sp_key, act_key], decimation)
@@ -170,7 +169,13 @@ def simulate_step(type_key: str | TypeKey, values: Mapping[str, Raw], loop: str)
     )
 
 
-def _power_up(valve: object, limit_s: float = 5.0, step_s: float = 0.05) -> None:
+def analog_type_key(type_key: str | TypeKey) -> TypeKey:
+    """The same valve without CANopen: it runs from its analog input, no master needed."""
+    key = TypeKey.parse(str(type_key))
+    return TypeKey(key.size, key.spool, key.flow, key.supply, key.config, False)
+
+
+def power_up(valve: object, limit_s: float = 5.0, step_s: float = 0.05) -> None:
     """Advance through the boot timeline until the setpoint is effective, then settle."""
     elapsed = 0.0
     while valve.status().booting and elapsed < limit_s:  # type: ignore[attr-defined]

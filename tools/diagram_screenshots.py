@@ -98,29 +98,48 @@ def diagrams(out: Path, app: QApplication) -> None:
     _save(view, out / "diagram_e04_ca_online.png", app)
 
 
+# Values that make the dialogs' curves worth looking at (a user's edits, not defaults).
+_CURVE = (-16384, -9011, -4096, -1311, 0, 1311, 4096, 9011, 16384)
+DEMO = {
+    "SETPLINON": -1,
+    **{f"SETPLINY{p}": y for p, y in zip("ABCDEFGHI", _CURVE, strict=True)},
+    "RAMPSETPOSUP": 400,
+    "RAMPSETPOSDOWN": 200,
+    "RAMPSETNEGUP": 300,
+    "RAMPSETNEGDOWN": 150,
+    "GAINSETPOS": 19661,
+    "OFFSETPOS": 1311,
+    "OFFSETNEG": 1311,
+}
+
+
 def dialogs(out: Path, app: QApplication) -> None:
     """Every block dialog of an E04-CA valve at Expert level, and the E02 threshold window."""
     view = _diagram(DIALOG_KEY, Access.EXPERT)
+    view.document.set_values(DEMO, "screenshot values")
     for block_id in view.block_ids():
         if block_id in ("supply", "canopen"):
             continue
         dialog = view.open_block(block_id)
         assert dialog is not None
-        dialog.resize(max(dialog.sizeHint().width(), 760), max(dialog.sizeHint().height(), 440))
+        if block_id != "valve":  # the valve selection keeps its own size
+            dialog.resize(max(dialog.sizeHint().width(), 760), max(dialog.sizeHint().height(), 440))
         _settle(dialog, app)
-        _save(dialog, out / f"dialog_{block_id}.png", app)
+        _save(dialog, out / f"diagram_dialog_{block_id}.png", app)
         dialog.close()
     e02 = _diagram(E02_KEY, Access.BASIC)
+    ramps = ("RAMPSETPOSUP", "RAMPSETPOSDOWN", "RAMPSETNEGUP", "RAMPSETNEGDOWN")
+    e02.document.set_values({**DEMO, **dict.fromkeys(ramps, 300)}, "screenshot values")
     for block_id in ("threshold", "ramps"):
         dialog = e02.open_block(block_id)
         assert dialog is not None
         dialog.resize(760, 440)
-        _save(dialog, out / f"dialog_{block_id}_e02_basic.png", app)
+        _save(dialog, out / f"diagram_dialog_{block_id}_e02_basic.png", app)
     locked = e02.open_block("position_controller")
     assert locked is not None
     locked.resize(760, 560)
     _settle(locked, app)
-    _save(locked, out / "dialog_position_controller_basic_locked.png", app)
+    _save(locked, out / "diagram_dialog_position_controller_basic_locked.png", app)
 
 
 def _settle(dialog: QWidget, app: QApplication) -> None:
@@ -149,7 +168,7 @@ def canopen(out: Path, app: QApplication) -> None:
     doc = ParameterDocument(DIALOG_KEY)
     window = CanopenWindow(doc, _EmulatorLink(valve))
     window.resize(900, 760)
-    _save(window, out / "canopen_window.png", app)
+    _save(window, out / "diagram_canopen_window.png", app)
 
 
 def main(argv: list[str]) -> int:

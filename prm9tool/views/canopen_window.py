@@ -185,10 +185,7 @@ class CanopenWindow(QDialog):
         if position == 1:
             return self.tr("reserved (as position 0)"), "—"
         rate = format_bitrate(decoded.bitrate_kbit)
-        node = self.switches[1] if self.switches is not None else None
-        if node in (0, 1):  # node switch 0/1: the software setting decides (CANTERM)
-            terminator = self.tr("by software (below)")
-        elif decoded.terminator:
+        if decoded.terminator:
             terminator = self.tr("on")
         else:
             terminator = self.tr("off (on by software)")
@@ -272,6 +269,11 @@ class CanopenWindow(QDialog):
             state = self.tr("Reading the switch positions from the valve …")
         else:
             state = self.tr("Switch positions read from the valve at its last power-up.")
+            if self.switches[1] in (0, 1):
+                state += " " + self.tr(
+                    "With the node-ID switch at 0 or 1 the terminator follows the software "
+                    "setting below, whatever the interface switch says."
+                )
         self.state_label.setText(state)
         self.effective_label.setText(self._effective_text())
         self.restart_label.setVisible(self.restart_pending)

@@ -69,6 +69,7 @@ class BlockItem(QGraphicsObject):
         self.setPos(rect.topLeft())
         self.info = info
         self.title = ""
+        self._title_font = _font(14, bold=True)
         self.lines: list[str] = []
         self.locked = False
         self._hovered = False
@@ -79,6 +80,8 @@ class BlockItem(QGraphicsObject):
     def set_content(self, title: str, lines: list[str]) -> None:
         """Show ``title`` and the value ``lines``."""
         if (title, lines) != (self.title, self.lines):
+            if title != self.title:
+                self._title_font = _fitting_font(title, self._rect.width() - 8)
             self.title, self.lines = title, list(lines)
             self.update()
 
@@ -108,7 +111,7 @@ class BlockItem(QGraphicsObject):
         painter.drawRoundedRect(self._rect, 7, 7)
         painter.setPen(ink)
         title_rect = QRectF(4, 4, self._rect.width() - 8, 20)
-        painter.setFont(_fitting_font(self.title, title_rect.width()))
+        painter.setFont(self._title_font)
         painter.drawText(
             title_rect, Qt.AlignmentFlag.AlignHCenter | Qt.AlignmentFlag.AlignVCenter, self.title
         )
@@ -266,6 +269,8 @@ class DotItem(QGraphicsObject):
 
     def set_value_text(self, text: str) -> None:
         """Show ``text`` beside the dot."""
+        if text == self._label.text():
+            return
         self._label.setText(text)
         height = self._label.boundingRect().height()
         offsets = {

@@ -30,6 +30,8 @@ class DiagramScene(QGraphicsScene):
         super().__init__()
         self.layout = layout
         self.setBackgroundBrush(QColor("white"))
+        # ~80 items that never move except the live value labels: no BSP index to maintain
+        self.setItemIndexMethod(QGraphicsScene.ItemIndexMethod.NoIndex)
         self.blocks: dict[str, BlockItem] = {}
         self.sums: dict[str, SumItem] = {}
         self.dots: dict[str, DotItem] = {}

@@ -102,6 +102,11 @@ class DiagramView(QGraphicsView):
         return self._scene
 
     @property
+    def document(self) -> ParameterDocument:
+        """The document the diagram shows."""
+        return self._doc
+
+    @property
     def is_online(self) -> bool:
         """True while the connection reports a valve online."""
         return bool(getattr(self._connection, "is_online", False))
