@@ -114,6 +114,11 @@ class UsbFirmware:
         """True while a stream runs."""
         return self._stream is not None
 
+    @property
+    def stream_sequence(self) -> int:
+        """Sequence number of the next stream report (= reports sent since STREAM_START)."""
+        return self._stream.sequence if self._stream is not None else 0
+
     def handle(self, report: bytes) -> bytes:
         """Answer one request report (always exactly one 64-byte answer, never an exception)."""
         report = bytes(report)
@@ -270,7 +275,7 @@ class UsbFirmware:
             stream.pending.extend(tuple(int(v) for v in row) for row in clipped)
         while len(stream.pending) >= stream.capacity:
             self._emit(stream, sim_time, stream.capacity)
-        if stream.pending and sim_time - stream.oldest >= FLUSH_S:
+        if stream.pending and sim_time - stream.oldest >= FLUSH_S - 1e-9:
             self._emit(stream, sim_time, len(stream.pending))
 
     def _emit(self, stream: _Stream, sim_time: float, count: int) -> None:
