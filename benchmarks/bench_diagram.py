@@ -104,9 +104,15 @@ def bench_diagram() -> None:
     live_ms = median_ms(live, 50)
     edit_ms = median_ms(edit, 30)
     print(f"diagram E04-CA: {blocks} blocks, {dots} measuring points, {items} items")
-    print(f"  build            {build_ms:7.2f} ms   plain scene {ref_build_ms:6.2f} ms   ratio {build_ms / ref_build_ms:5.1f}x")
-    print(f"  redraw 1024x640  {render_ms:7.2f} ms   plain scene {ref_render_ms:6.2f} ms   ratio {render_ms / ref_render_ms:5.1f}x")
-    print(f"  live values (all {dots} dots) {live_ms:6.3f} ms per update (the connection sends ~4 per second)")
+    print(
+        f"  build            {build_ms:7.2f} ms   plain scene {ref_build_ms:6.2f} ms   ratio {build_ms / ref_build_ms:5.1f}x"
+    )
+    print(
+        f"  redraw 1024x640  {render_ms:7.2f} ms   plain scene {ref_render_ms:6.2f} ms   ratio {render_ms / ref_render_ms:5.1f}x"
+    )
+    print(
+        f"  live values (all {dots} dots) {live_ms:6.3f} ms per update (the connection sends ~4 per second)"
+    )
     print(f"  one document edit -> block label {edit_ms:6.3f} ms")
 
 
@@ -122,7 +128,7 @@ def bench_tuning() -> None:
         total = probe.time + simulated  # power-up and settling, then the step
         step_ms = median_ms(lambda k=key, v=values, lp=loop: simulate_step(k, v, lp), 11)
 
-        def bare(seconds: float = total) -> None:
+        def bare(seconds: float = total, analog: TypeKey = analog) -> None:
             EmulatedValve(analog).advance(seconds)
 
         bare_ms = median_ms(bare, 11)
