@@ -10,6 +10,7 @@ from prm9tool.device.emulator import EmulatedValve
 from prm9tool.device.session import ValveSession
 from prm9tool.device.transport.emulator import EmulatorTransport, LinkFaults
 from prm9tool.errors import DeviceDisconnectedError, DeviceTimeoutError
+from prm9tool.typekey import TypeKey
 
 E04 = "PRM9-06.3Z11/30-24E04S02-CA"
 
@@ -36,35 +37,43 @@ def reports_of_a_full_upload(tmp_path) -> int:
     return transport.reports_on_link - before
 
 
+def stored_values(variant) -> dict[str, int | str]:
+    """A previously stored set: the factory defaults with every other entry changed."""
+    values = {p.mnemonic: p.default_for(variant) for p in CATALOGUE.file_parameters(variant)}
+    changed = new_values(variant)
+    for mnemonic in list(values)[::2]:
+        values[mnemonic] = changed[mnemonic]
+    return values
+
+
 def test_unplugged_at_every_point_of_an_upload(tmp_path):
     total = reports_of_a_full_upload(tmp_path)
     nv_file = tmp_path / "nv.json"
+    variant = TypeKey.parse(E04).variant
+    previous, upload = stored_values(variant), new_values(variant)
     for survived in range(total):
+        setup = open_session(EmulatedValve(E04, 1, nv_path=nv_file))[0]
+        assert setup.upload(previous).stored  # the valve's stored parameters before the test
+
         valve = EmulatedValve(E04, 1, nv_path=nv_file)
         session, transport = open_session(valve)
-        stored_before = session.download()
         transport.faults = LinkFaults(die_after=transport.reports_on_link + survived)
         with pytest.raises(DeviceDisconnectedError) as caught:
-            session.upload(new_values(session.variant))
-        message = str(caught.value)
-        step = caught.value.step
+            session.upload(upload)
+        message, step = str(caught.value), caught.value.step
         assert f"upload failed while {STEP_TEXT[step]}" in message
         assert "USB link is down" in message
         store_request_arrived = survived >= total - 1
-        if store_request_arrived:
-            assert step == "store"
 
         valve.restart()
         after = open_session(valve)[0].download()
-        if store_request_arrived:  # only the store's answer was lost
-            assert after == new_values(session.variant)
-            assert "may not have completed" in message
+        if store_request_arrived:  # only the store's answer was lost: the complete new set
+            assert step == "store" and "may not have completed" in message
+            assert after == upload
         else:
-            assert after == stored_before, f"half-written valve after report {survived}"
-            assert "nothing was stored" in message or step == "store"
+            assert after == previous, f"half-written valve after report {survived}"
         reloaded = EmulatedValve(E04, 1, nv_path=nv_file)  # the EEPROM file agrees
         assert open_session(reloaded)[0].download() == after
-        nv_file.unlink(missing_ok=True)
 
 
 STEP_TEXT = {"write": "writing the parameters", "verify": "reading them back", "store": "storing"}
