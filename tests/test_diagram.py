@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import pytest
 from diagram_fakes import EmulatorConnection
-from PySide6.QtCore import QObject, QPoint, QRectF, Qt, Signal
+from PySide6.QtCore import QCoreApplication, QObject, QPoint, QRectF, Qt, QTranslator, Signal
 from PySide6.QtGui import QColor, QImage, QPainter
 from PySide6.QtWidgets import QWidget
 
@@ -293,6 +293,31 @@ def test_zoom_keeps_the_diagram_vector_and_fits_again(qtbot):
     assert view.transform().m11() < fitted
     visible = view.mapToScene(view.viewport().rect()).boundingRect()
     assert visible.contains(view.diagram.sceneRect().adjusted(1, 1, -1, -1))
+
+
+class ShoutingTranslator(QTranslator):
+    """Translates every diagram text to upper case (a stand-in for a real language)."""
+
+    def translate(self, context, source, disambiguation=None, n=-1):
+        return source.upper() if context.startswith("Diagram") else ""
+
+    def isEmpty(self):
+        return False  # an empty translator is skipped
+
+
+def test_a_language_change_retranslates_the_diagram(qtbot):
+    view = make_view(qtbot, E02)
+    dialog = view.open_block("threshold")
+    translator = ShoutingTranslator()
+    QCoreApplication.installTranslator(translator)
+    try:
+        qtbot.waitUntil(lambda: view.diagram.blocks["ramps"].title == "RAMPS")
+        assert view.diagram.blocks["threshold"].lines == ["THRESHOLD 5 %"]
+        assert view.diagram.feedback_label.text() == "SPOOL POSITION (LVDT)"
+        assert dialog.windowTitle() == "THRESHOLD"
+    finally:
+        QCoreApplication.removeTranslator(translator)
+    qtbot.waitUntil(lambda: view.diagram.blocks["ramps"].title == "Ramps")
 
 
 # --- picture ------------------------------------------------------------------------------------------

@@ -90,9 +90,7 @@ class DiagramScene(QGraphicsScene):
 
     def _add_feedback_label(self) -> None:
         valve = self._rects["valve"]
-        label = QGraphicsSimpleTextItem(
-            QCoreApplication.translate("DiagramBlock", "spool position (LVDT)")
-        )
+        label = QGraphicsSimpleTextItem()
         font = QFont()
         font.setPixelSize(12)
         font.setItalic(True)
@@ -101,6 +99,13 @@ class DiagramScene(QGraphicsScene):
         label.setPos(self._rects["sum_position"].right() + 14, valve.bottom() + FEEDBACK_DROP + 2)
         self.addItem(label)
         self.feedback_label = label
+        self.retranslate()
+
+    def retranslate(self) -> None:
+        """Texts drawn by the scene itself, in the current language."""
+        self.feedback_label.setText(
+            QCoreApplication.translate("DiagramBlock", "spool position (LVDT)")
+        )
 
     # --- arrow routes ------------------------------------------------------------------------
     def _out(self, item_id: str) -> QPointF:

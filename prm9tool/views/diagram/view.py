@@ -312,6 +312,7 @@ class DiagramView(QGraphicsView):
 
     def changeEvent(self, event: QEvent) -> None:
         if event.type() == QEvent.Type.LanguageChange:
+            self.diagram.retranslate()
             self._refresh_blocks()
             self._refresh_dots()
         super().changeEvent(event)
