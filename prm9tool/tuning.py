@@ -16,6 +16,7 @@ from __future__ import annotations
 import threading
 from collections.abc import Mapping
 from dataclasses import dataclass, field
+from typing import TYPE_CHECKING
 
 from PySide6.QtCore import QCoreApplication, QObject, Signal
 
@@ -24,6 +25,9 @@ from prm9tool.document import ParameterDocument
 from prm9tool.errors import Prm9Error
 from prm9tool.signals import BY_KEY
 from prm9tool.typekey import TypeKey
+
+if TYPE_CHECKING:
+    from prm9tool.device.emulator import EmulatedValve
 
 Raw = int | str
 
@@ -131,13 +135,35 @@ def simulation_values(base: Mapping[str, Raw], loop: str) -> dict[str, Raw]:
 def simulate_step(type_key: str | TypeKey, values: Mapping[str, Raw], loop: str) -> StepResponse:
     """Run the emulated valve through a setpoint step and return the loop's response.
 
-    Blocking (tens to hundreds of milliseconds): call it off the GUI thread. Raises
-    Prm9Error subclasses if the parameters are refused by the emulated valve.
+    Blocking (tens of milliseconds): call it off the GUI thread. Raises Prm9Error subclasses
+    if the emulated valve refuses a parameter.
     """
+    valve = _prepared_valve(type_key, values, loop)
+    power_up(valve)
+    sp_key, act_key, step, duration = LOOPS[loop]
+    decimation = max(1, round((PRE_STEP_S + duration) / valve.CYCLE_S / SAMPLES))
+    valve.capture_start([sp_key, act_key], decimation)
+    valve.advance(PRE_STEP_S)
+    valve.set_input("setpoint", step * VOLTS_PER_PERCENT)
+    valve.advance(duration)
+    data = valve.capture_read()
+    valve.capture_stop()
+    dt = valve.CYCLE_S * decimation
+    return StepResponse(
+        loop,
+        {mn: int(v) for mn, v in values.items() if mn.startswith(("POS", "PRC"))},
+        tuple(n * dt - PRE_STEP_S for n in range(len(data))),
+        tuple(float(v) * BY_KEY[sp_key].scale for v in data[:, 0]),
+        tuple(float(v) * BY_KEY[act_key].scale for v in data[:, 1]),
+        step,
+    )
+
+
+def _prepared_valve(type_key: str | TypeKey, values: Mapping[str, Raw], loop: str) -> EmulatedValve:
+    """A fresh analog-only emulated valve holding the simulation's parameter set."""
     from prm9tool.device.emulator import EmulatedValve  # lazy: the emulator is heavy to import
 
     analog = analog_type_key(type_key)
-    sp_key, act_key, step, duration = LOOPS[loop]
     valve = EmulatedValve(analog)
     for mnemonic, raw in simulation_values(values, loop).items():
         param = CATALOGUE.get(mnemonic)
@@ -146,27 +172,7 @@ def simulate_step(type_key: str | TypeKey, values: Mapping[str, Raw], loop: str)
     valve.set_input("setpoint", 0.0)
     if loop == "process":
         valve.set_input("sensor_from_plant", 1)
-    power_up(valve)
-    total = PRE_STEP_S + duration
-    decimation = max(1, round(total / valve.CYCLE_S / SAMPLES))
-    valve.capture_start([sp_key, act_key], decimation)
-    valve.advance(PRE_STEP_S)
-    valve.set_input("setpoint", step * VOLTS_PER_PERCENT)
-    valve.advance(duration)
-    data = valve.capture_read()
-    valve.capture_stop()
-    dt = valve.CYCLE_S * decimation
-    scale = BY_KEY[sp_key].scale
-    times = tuple(n * dt - PRE_STEP_S for n in range(len(data)))
-    controller = {mn: int(v) for mn, v in values.items() if mn.startswith(("POS", "PRC"))}
-    return StepResponse(
-        loop,
-        controller,
-        times,
-        tuple(float(v) * scale for v in data[:, 0]),
-        tuple(float(v) * BY_KEY[act_key].scale for v in data[:, 1]),
-        step,
-    )
+    return valve
 
 
 def analog_type_key(type_key: str | TypeKey) -> TypeKey:
@@ -175,13 +181,13 @@ def analog_type_key(type_key: str | TypeKey) -> TypeKey:
     return TypeKey(key.size, key.spool, key.flow, key.supply, key.config, False)
 
 
-def power_up(valve: object, limit_s: float = 5.0, step_s: float = 0.05) -> None:
+def power_up(valve: EmulatedValve, limit_s: float = 5.0, step_s: float = 0.05) -> None:
     """Advance through the boot timeline until the setpoint is effective, then settle."""
     elapsed = 0.0
-    while valve.status().booting and elapsed < limit_s:  # type: ignore[attr-defined]
-        valve.advance(step_s)  # type: ignore[attr-defined]
+    while valve.status().booting and elapsed < limit_s:
+        valve.advance(step_s)
         elapsed += step_s
-    valve.advance(step_s)  # type: ignore[attr-defined]
+    valve.advance(step_s)
 
 
 class _Relay(QObject):
