@@ -12,10 +12,15 @@ from __future__ import annotations
 
 import argparse
 import cProfile
+import inspect
 import pstats
+import sys
 import time
+from collections import Counter
+from types import FrameType
+from typing import Any
 
-from prm9tool.device.emulator import EmulatedValve
+from prm9tool.device.emulator import EmulatedValve, kernel
 
 CYCLE_S = EmulatedValve.CYCLE_S
 TYPE_KEYS = {
@@ -116,6 +121,36 @@ def profile(type_key: str) -> None:
     pstats.Stats(profiler).sort_stats("tottime").print_stats(8)
 
 
+def line_counts(type_key: str, cycles: int = 2000) -> dict[str, float]:
+    """Python lines executed per cycle in each block of the loop (blocks: ``# ---`` comments)."""
+    valve = all_features(type_key)
+    valve.set_input("setpoint", 5.0)
+    valve.advance(0.05)
+    code = kernel.control_loop.__code__
+    lines, start = inspect.getsourcelines(kernel.control_loop)
+    blocks = {}
+    name = "setup"
+    for number, text in enumerate(lines, start=start):
+        if "# ---" in text:
+            name = text.strip("# -\n").split(":")[0].strip()
+        blocks[number] = name
+    hits: Counter[str] = Counter()
+
+    def tracer(frame: FrameType, event: str, arg: Any) -> Any:
+        if frame.f_code is not code:
+            return None
+        if event == "line":
+            hits[blocks.get(frame.f_lineno, "?")] += 1
+        return tracer
+
+    sys.settrace(tracer)
+    try:
+        valve._fw.gen.send(cycles)  # the loop's frame is resumed with tracing on
+    finally:
+        sys.settrace(None)
+    return {block: count / cycles for block, count in hits.most_common()}
+
+
 def main() -> None:
     """Print the figures recorded in docs/PERFORMANCE.md."""
     parser = argparse.ArgumentParser(description=__doc__)
@@ -123,6 +158,7 @@ def main() -> None:
     parser.add_argument("--repeat", type=int, default=5)
     parser.add_argument("--paced", type=float, default=0.0, help="also run paced for N s")
     parser.add_argument("--profile", action="store_true", help="print a cProfile summary")
+    parser.add_argument("--lines", action="store_true", help="print lines per cycle per block")
     args = parser.parse_args()
     cycles = int(args.seconds / CYCLE_S)
     reference = reference_cycle_s(cycles, args.repeat)
@@ -135,6 +171,11 @@ def main() -> None:
         )
         if args.profile:
             profile(type_key)
+        if args.lines:
+            counts = line_counts(type_key)
+            print(f"  Python lines per cycle: {sum(counts.values()):.1f}")
+            for block, count in counts.items():
+                print(f"    {count:5.1f}  {block}")
     if args.paced > 0:
         sim, wall, dropped = paced_run(args.paced)
         error = (sim - wall) / wall * 100

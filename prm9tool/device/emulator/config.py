@@ -109,7 +109,7 @@ def coefficients(
         ),
         "max_current_v": 40.0,
         "mechanics": _mechanics(plant),
-        "lvdt": _lvdt(plant),
+        "lvdt": _lvdt(plant, fw),
         "sensor": _sensor(variant, values, supply_v, fw),
         "sensor_curve": curve_of(values, "SENSLIN") if e04 else prepare_curve([0, 1], [0, 1]),
         "deviation_gain": (
@@ -141,8 +141,8 @@ def _mechanics(plant: PlantConstants) -> tuple[float, ...]:
     )
 
 
-def _lvdt(plant: PlantConstants) -> tuple[float, float, float]:
-    step = 2.0 * plant.lvdt_span * FULL / 2**plant.lvdt_adc_bits
+def _lvdt(plant: PlantConstants, fw: FirmwareConstants) -> tuple[float, float, float]:
+    step = 2.0 * plant.lvdt_span * FULL / 2**fw.adc_bits
     return FULL / plant.stroke_m / step, step, -plant.lvdt_span * FULL
 
 
@@ -156,7 +156,7 @@ def _sensor(
     kind = INPUT_TYPES.get(code, INPUT_TYPES[9])
     lo, hi = kind.span(supply_v)
     clamp = fw.current_input_range_ma if kind.unit == "mA" else fw.voltage_input_range_v
-    step = 2.0 * clamp / 4096.0
+    step = 2.0 * clamp / 2**fw.adc_bits
     scale = (2.0 * FULL if kind.bipolar else FULL) / (hi - lo)
     offset = -FULL if kind.bipolar else 0.0
     return (

@@ -29,26 +29,22 @@ class PlantConstants:
     stroke_m: float = 0.0025  # spool travel for 100 % opening (assumption, Dn06)
     end_stop: float = 1.15  # mechanical end stops at ±115 % of that travel (assumption)
     force_lag_s: float = 0.003  # eddy-current lag of the magnetic force (assumption)
-    substeps: int = 2  # mechanical integration sub-steps per 200 µs cycle
-    lvdt_adc_bits: int = 12  # manual §2.2: 12-bit A/D converters
+    substeps: int = 1  # mechanical integration steps per 200 µs cycle (docs/emulator.md)
     lvdt_span: float = 1.25  # the LVDT ADC range covers ±125 % of the stroke (assumption)
-    lvdt_loop_ma: tuple[float, float] = (4.0, 20.0)  # LVDT interface 4…20 mA (manual table 6-1)
-    actuator_full_speed_s: float = (
-        0.5  # E04 load: full stroke in 0.5 s at 100 % opening (assumption)
-    )
+    actuator_full_speed_s: float = 0.5  # E04 load: full stroke in 0.5 s at 100 % (assumption)
     actuator_return_s: float = 1.0  # single-coil valves drive a spring-return load (assumption)
     actuator_start: float = 0.5  # E04 load starts at mid-stroke (assumption)
     spool_overlap: float = 0.0  # hydraulic overlap as a fraction of stroke (assumption: none)
     thermal_k_per_w: float = 1.2  # electronics temperature rise per W of coil loss (assumption)
     thermal_tau_s: float = 600.0  # thermal time constant of the housing (assumption)
     electronics_loss_w: float = 2.0  # electronics self-heating (assumption)
-    sensor_adc_bits: int = 12  # manual §2.2
 
 
 @dataclass(frozen=True)
 class FirmwareConstants:
     """Firmware constants that are not parameters: current loop, fault thresholds, timing."""
 
+    adc_bits: int = 12  # A/D converters: setpoint, sensor, LVDT (manual §2.2)
     boot_s: float = 1.8  # LED1 white twice (~2 s), setpoint effective after 1-2 s (§1.5, §5.6)
     current_kp_v_per_a: float = 100.0  # current PI, proportional (assumption: ~0.3 ms loop)
     current_ki_v_per_as: float = 20000.0  # current PI, integral (assumption)

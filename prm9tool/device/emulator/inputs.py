@@ -41,7 +41,7 @@ class InputType:
         """A/D-convert an electrical value (12 bit over the input's clamp range) to ±16384."""
         clamp = fw.current_input_range_ma if self.unit == "mA" else fw.voltage_input_range_v
         value = min(max(value, -clamp), clamp)
-        step = 2.0 * clamp / 4096.0
+        step = 2.0 * clamp / 2**fw.adc_bits
         value = round(value / step) * step
         lo, hi = self.span(supply_v)
         fraction = (value - lo) / (hi - lo)
