@@ -15,7 +15,7 @@ from __future__ import annotations
 
 import threading
 from collections.abc import Mapping
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 from typing import TYPE_CHECKING
 
 from PySide6.QtCore import QCoreApplication, QObject, Signal
@@ -79,7 +79,6 @@ class StepResponse:
     setpoint: tuple[float, ...]
     actual: tuple[float, ...]
     step_pct: float
-    actual_label: str = field(default="actual value")
 
     def figures(self) -> StepFigures:
         """Overshoot, rise time, settling time and steady-state error relative to the step."""

@@ -84,8 +84,25 @@ class CanopenWindow(QDialog):
 
     # --- building ------------------------------------------------------------------------------
     def _build(self) -> None:
-        self.intro = QLabel()
-        self.intro.setWordWrap(True)
+        self.intro, self.state_label = _label(), _label()
+        self.effective_label = _label("font-weight: bold;")
+        self.restart_label = _label(
+            "background: #fff4d6; color: #6b4a00; padding: 6px; border-radius: 4px;"
+        )
+        self.error_label = _label("color: #d03030; font-weight: bold;")
+        buttons = QDialogButtonBox(QDialogButtonBox.StandardButton.Close)
+        buttons.rejected.connect(self.close)
+        root = QVBoxLayout(self)
+        for widget in (self.intro, self.state_label):
+            root.addWidget(widget)
+        root.addLayout(self._build_tables(), 1)
+        for widget in (self._build_settings(), self.effective_label, self.restart_label):
+            root.addWidget(widget)
+        root.addWidget(self.error_label)
+        root.addWidget(buttons)
+        self.resize(900, 720)
+
+    def _build_tables(self) -> QHBoxLayout:
         self.baud_table = self._table(3)
         self.node_table = self._table(2)
         self.baud_box, self.node_box = QGroupBox(), QGroupBox()
@@ -94,6 +111,9 @@ class CanopenWindow(QDialog):
         tables = QHBoxLayout()
         tables.addWidget(self.baud_box, 3)
         tables.addWidget(self.node_box, 2)
+        return tables
+
+    def _build_settings(self) -> QGroupBox:
         self.terminator = QCheckBox()
         self.terminator.toggled.connect(self._on_terminator_toggled)
         self.node_id = QSpinBox()
@@ -107,33 +127,11 @@ class CanopenWindow(QDialog):
         self.settings_box = QGroupBox()
         form = QFormLayout(self.settings_box)
         self.captions = [QLabel(), QLabel(), QLabel()]
-        form.addRow(self.captions[0], self.terminator)
-        form.addRow(self.captions[1], self.node_id)
-        form.addRow(self.captions[2], self.bitrate)
-        self.state_label = QLabel()
-        self.state_label.setWordWrap(True)
-        self.effective_label = QLabel()
-        self.effective_label.setWordWrap(True)
-        self.effective_label.setStyleSheet("font-weight: bold;")
-        self.restart_label = QLabel()
-        self.restart_label.setWordWrap(True)
-        self.restart_label.setStyleSheet(
-            "background: #fff4d6; color: #6b4a00; padding: 6px; border-radius: 4px;"
-        )
-        self.error_label = QLabel()
-        self.error_label.setWordWrap(True)
-        self.error_label.setStyleSheet("color: #d03030; font-weight: bold;")
-        buttons = QDialogButtonBox(QDialogButtonBox.StandardButton.Close)
-        buttons.rejected.connect(self.close)
-        root = QVBoxLayout(self)
-        for widget in (self.intro, self.state_label):
-            root.addWidget(widget)
-        root.addLayout(tables, 1)
-        for widget in (self.settings_box, self.effective_label, self.restart_label):
-            root.addWidget(widget)
-        root.addWidget(self.error_label)
-        root.addWidget(buttons)
-        self.resize(900, 720)
+        for caption, widget in zip(
+            self.captions, (self.terminator, self.node_id, self.bitrate), strict=True
+        ):
+            form.addRow(caption, widget)
+        return self.settings_box
 
     @staticmethod
     def _table(columns: int) -> QTableWidget:
@@ -314,20 +312,10 @@ class CanopenWindow(QDialog):
             self.refresh()
             return False
         self.error_label.clear()
+        self.restart_pending = True
         if self._online():
-            assert self._connection is not None
-            self._connection.write(mnemonic, raw)
-            self._connection.store()
-            self.valve_values[mnemonic] = raw
-            self.restart_pending = True
-            self.restart_label.setText(
-                self.tr(
-                    "Written to the valve and stored. The change takes effect after the valve "
-                    "restarts (Valve → Restart valve)."
-                )
-            )
+            self._write_to_valve(mnemonic, raw)
         else:
-            self.restart_pending = True
             self.restart_label.setText(
                 self.tr(
                     "Changed in the document. Upload it to the valve; the change takes effect "
@@ -336,6 +324,19 @@ class CanopenWindow(QDialog):
             )
         self._show_state()
         return True
+
+    def _write_to_valve(self, mnemonic: str, raw: Raw) -> None:
+        """Write and store (a restart reloads the stored values), and say when it applies."""
+        assert self._connection is not None
+        self._connection.write(mnemonic, raw)
+        self._connection.store()
+        self.valve_values[mnemonic] = raw
+        self.restart_label.setText(
+            self.tr(
+                "Written to the valve and stored. The change takes effect after the valve "
+                "restarts (Valve → Restart valve)."
+            )
+        )
 
     def _online(self) -> bool:
         return bool(getattr(self._connection, "is_online", False))
@@ -388,3 +389,12 @@ class CanopenWindow(QDialog):
         if event.type() == QEvent.Type.LanguageChange:
             self.retranslate()
         super().changeEvent(event)
+
+
+def _label(style: str = "") -> QLabel:
+    """A word-wrapping label with an optional style sheet."""
+    label = QLabel()
+    label.setWordWrap(True)
+    if style:
+        label.setStyleSheet(style)
+    return label

@@ -135,35 +135,18 @@ class ControllerDialog(BlockDialog):
         response = self._current
         if response is None:
             return
-        t_ms = [t * 1000.0 for t in response.t]
-        curves = [
-            Curve(list(zip(t_ms, response.setpoint, strict=True)), ORANGE, self.tr("setpoint"))
-        ]
+        curves = [Curve(_ms(response.t, response.setpoint), ORANGE, self.tr("setpoint"))]
         previous = self._last_applied
         if previous is not None and previous is not response:
-            prev_t = [t * 1000.0 for t in previous.t]
-            curves.append(
-                Curve(
-                    list(zip(prev_t, previous.actual, strict=True)),
-                    GREY,
-                    self.tr("applied values"),
-                    dashed=True,
-                )
-            )
-        curves.append(
-            Curve(list(zip(t_ms, response.actual, strict=True)), BLUE, response.actual_label)
-        )
+            points = _ms(previous.t, previous.actual)
+            curves.append(Curve(points, GREY, self.tr("applied values"), dashed=True))
+        curves.append(Curve(_ms(response.t, response.actual), BLUE, self.tr("actual value")))
         peak = max([*response.actual, *response.setpoint, 1.0])
         low = min([*response.actual, *response.setpoint, 0.0])
         span = peak - low
-        self.plot.set_axes(
-            Axes(
-                (t_ms[0], t_ms[-1]),
-                (low - 0.08 * span, peak + 0.12 * span),
-                self.tr("Time (ms)"),
-                self.tr("Value (%)"),
-            )
-        )
+        x_range = (response.t[0] * 1000.0, response.t[-1] * 1000.0)
+        y_range = (low - 0.08 * span, peak + 0.12 * span)
+        self.plot.set_axes(Axes(x_range, y_range, self.tr("Time (ms)"), self.tr("Value (%)")))
         self.plot.set_curves(curves)
         self.figures.setText(response.summary())
 
@@ -194,3 +177,8 @@ class ControllerDialog(BlockDialog):
         if self.simulator is not None:
             self.simulator.stop()
         super().closeEvent(event)
+
+
+def _ms(times: tuple[float, ...], values: tuple[float, ...]) -> list[tuple[float, float]]:
+    """Points (ms, value) of a response."""
+    return [(t * 1000.0, v) for t, v in zip(times, values, strict=True)]

@@ -142,39 +142,37 @@ class PlotWidget(QWidget):
         painter.setFont(font)
         for x in nice_ticks(*self.axes.x_range):
             p = self.to_pixel(x, self.axes.y_range[0])
-            painter.setPen(QPen(AXIS if x == 0 else GRID, 1))
-            painter.drawLine(QPointF(p.x(), rect.top()), QPointF(p.x(), rect.bottom()))
-            painter.setPen(AXIS)
-            painter.drawText(
-                QRectF(p.x() - 30, rect.bottom() + 3, 60, 14),
-                Qt.AlignmentFlag.AlignHCenter,
-                tick_text(x),
-            )
+            self._grid_line(painter, x, QPointF(p.x(), rect.top()), QPointF(p.x(), rect.bottom()))
+            label = QRectF(p.x() - 30, rect.bottom() + 3, 60, 14)
+            painter.drawText(label, Qt.AlignmentFlag.AlignHCenter, tick_text(x))
         for y in nice_ticks(*self.axes.y_range):
             p = self.to_pixel(self.axes.x_range[0], y)
-            painter.setPen(QPen(AXIS if y == 0 else GRID, 1))
-            painter.drawLine(QPointF(rect.left(), p.y()), QPointF(rect.right(), p.y()))
-            painter.setPen(AXIS)
-            painter.drawText(
-                QRectF(0, p.y() - 7, rect.left() - 5, 14),
-                Qt.AlignmentFlag.AlignRight | Qt.AlignmentFlag.AlignVCenter,
-                tick_text(y),
-            )
+            self._grid_line(painter, y, QPointF(rect.left(), p.y()), QPointF(rect.right(), p.y()))
+            label = QRectF(0, p.y() - 7, rect.left() - 5, 14)
+            align = Qt.AlignmentFlag.AlignRight | Qt.AlignmentFlag.AlignVCenter
+            painter.drawText(label, align, tick_text(y))
         painter.setPen(QPen(AXIS, 1.2))
         painter.setBrush(Qt.BrushStyle.NoBrush)
         painter.drawRect(rect)
+        self._paint_titles(painter, rect)
+
+    @staticmethod
+    def _grid_line(painter: QPainter, value: float, start: QPointF, end: QPointF) -> None:
+        """A grid line (the zero line darker); leaves the pen ready for the tick label."""
+        painter.setPen(QPen(AXIS if value == 0 else GRID, 1))
+        painter.drawLine(start, end)
+        painter.setPen(AXIS)
+
+    def _paint_titles(self, painter: QPainter, rect: QRectF) -> None:
+        centre = Qt.AlignmentFlag.AlignHCenter
         painter.drawText(
-            QRectF(rect.left(), rect.bottom() + 20, rect.width(), 16),
-            Qt.AlignmentFlag.AlignHCenter,
-            self.axes.x_title,
+            QRectF(rect.left(), rect.bottom() + 20, rect.width(), 16), centre, self.axes.x_title
         )
         painter.save()
         painter.translate(12, rect.center().y())
         painter.rotate(-90)
         painter.drawText(
-            QRectF(-rect.height() / 2, -8, rect.height(), 16),
-            Qt.AlignmentFlag.AlignHCenter,
-            self.axes.y_title,
+            QRectF(-rect.height() / 2, -8, rect.height(), 16), centre, self.axes.y_title
         )
         painter.restore()
 
