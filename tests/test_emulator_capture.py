@@ -112,3 +112,13 @@ def test_sensor_value_over_canopen():
     valve.write(0x2100, 2, -4000)
     valve.advance(0.01)
     assert valve.read(0x2100, 1) == -4000
+
+
+def test_non_finite_inputs_and_unknown_faults_are_refused():
+    valve = EmulatedValve(E04)
+    with pytest.raises(ValueRangeError, match="setpoint: nan is not a finite number"):
+        valve.set_input("setpoint", float("nan"))
+    with pytest.raises(ValueRangeError, match="unknown fault 'COIL_C_OPEN'; faults are: COIL_A"):
+        valve.inject("COIL_C_OPEN")  # type: ignore[arg-type]
+    valve.advance(0.01)
+    assert np.isfinite(valve.signal("setpoint_raw"))

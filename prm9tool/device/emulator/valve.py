@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import math
 import os
 import threading
 from collections.abc import Callable, Sequence
@@ -177,6 +178,8 @@ class EmulatedValve:
         if name not in INPUT_NAMES:
             raise ValueRangeError(f"unknown input {name!r}; inputs are: {', '.join(INPUT_NAMES)}")
         value = float(value)
+        if not math.isfinite(value):
+            raise ValueRangeError(f"{name}: {value} is not a finite number")
         with self.lock:
             if name.startswith("switch_"):
                 if not (0 <= value <= 15 and value.is_integer()):
@@ -190,14 +193,16 @@ class EmulatedValve:
 
     def inject(self, fault: Fault) -> None:
         """Make the physical fault happen (see docs/emulator.md for what each one does)."""
+        fault = _fault(fault)
         with self.lock:
-            self._fw.injected.add(Fault(fault))
+            self._fw.injected.add(fault)
             self._fw.setpoint_dirty = self._fw.config_dirty = True
 
     def clear(self, fault: Fault) -> None:
         """Remove an injected physical fault; the firmware recovers by itself."""
+        fault = _fault(fault)
         with self.lock:
-            self._fw.injected.discard(Fault(fault))
+            self._fw.injected.discard(fault)
             self._fw.setpoint_dirty = self._fw.config_dirty = True
 
     def usb_activity(self) -> None:
@@ -305,3 +310,11 @@ class EmulatedValve:
         from prm9tool.device.emulator.canopen_slave import CanopenSlave
 
         return CanopenSlave(self, bus)
+
+
+def _fault(fault: Fault | str) -> Fault:
+    try:
+        return Fault(fault)
+    except ValueError:
+        names = ", ".join(f.value for f in Fault)
+        raise ValueRangeError(f"unknown fault {fault!r}; faults are: {names}") from None
