@@ -136,6 +136,43 @@ def peak_decimate(t: np.ndarray, values: np.ndarray, points: int) -> tuple[np.nd
     return np.concatenate([np.repeat(t[:full:ds], 2), t[full:]]), peaks
 
 
+def axis_ranges(
+    bounds: Sequence[tuple[float, float] | None],
+    current: Sequence[tuple[float, float]],
+    units: Sequence[str],
+    share_units: bool,
+    force: bool = False,
+) -> list[tuple[float, float] | None]:
+    """New value range per autoscaled channel (None: keep the axis as it is).
+
+    ``bounds`` holds each autoscaled channel's data minimum and maximum (None: not autoscaled
+    or no data). With ``share_units``, autoscaled channels of the same unit get one common
+    range, so a setpoint and its actual value compare directly. Hysteresis: an axis changes
+    only when its data leaves the range or fills less than half of it (or when ``force``), so
+    a live axis neither jitters nor needs redrawing every frame.
+    """
+    wanted = list(bounds)
+    if share_units:
+        for unit in set(units):
+            group = [(k, b) for k, b in enumerate(bounds) if b is not None and units[k] == unit]
+            if group:
+                common = (min(b[0] for _, b in group), max(b[1] for _, b in group))
+                for k, _ in group:
+                    wanted[k] = common
+    result: list[tuple[float, float] | None] = []
+    for want, (y0, y1) in zip(wanted, current, strict=True):
+        if want is None:
+            result.append(None)
+            continue
+        lo, hi = want
+        if force or lo < y0 or hi > y1 or hi - lo < 0.5 * (y1 - y0):
+            margin = 0.1 * (hi - lo) if hi > lo else max(abs(hi) * 0.05, 0.5)
+            result.append((lo - margin, hi + margin))
+        else:
+            result.append(None)
+    return result
+
+
 # --- trigger ---------------------------------------------------------------------------------
 class TriggerMode(StrEnum):
     """How the display follows the stream."""

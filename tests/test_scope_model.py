@@ -19,6 +19,7 @@ from prm9tool.scope import (
     TriggerMode,
     TriggerSettings,
     Waveform,
+    axis_ranges,
     cursor_readout,
     find_edge,
     peak_decimate,
@@ -307,3 +308,25 @@ def test_peak_decimation_leaves_short_data_alone():
     values = np.ones((10, 2))
     td, vd = peak_decimate(t, values, points=100)
     assert td is t and vd is values
+
+
+# --- autoscale ---------------------------------------------------------------------------------
+def test_axis_ranges_share_a_scale_per_unit_and_leave_manual_axes_alone():
+    bounds = [(-30.0, 30.0), (-10.0, 50.0), None]  # channel 3 zoomed by hand
+    current = [(0.0, 1.0), (0.0, 1.0), (0.0, 1.0)]
+    shared = axis_ranges(bounds, current, ["%", "%", "%"], share_units=True)
+    assert shared[0] == shared[1] == pytest.approx((-38.0, 58.0))
+    assert shared[2] is None
+    separate = axis_ranges(bounds, current, ["%", "%", "%"], share_units=False)
+    assert separate[0] == pytest.approx((-36.0, 36.0))
+    mixed = axis_ranges(bounds[:2], current[:2], ["%", "mA"], share_units=True)
+    assert mixed[1] == pytest.approx((-16.0, 56.0))
+
+
+def test_axis_ranges_keep_a_range_that_still_fits_the_data():
+    current = [(-12.0, 12.0)]
+    assert axis_ranges([(-9.0, 9.0)], current, ["%"], share_units=True) == [None]
+    assert axis_ranges([(-9.0, 13.0)], current, ["%"], True)[0] is not None  # left the range
+    assert axis_ranges([(-2.0, 2.0)], current, ["%"], True)[0] is not None  # fills < half
+    assert axis_ranges([(-9.0, 9.0)], current, ["%"], True, force=True)[0] is not None
+    assert axis_ranges([(5.0, 5.0)], [(0.0, 1.0)], ["V"], True)[0] == pytest.approx((4.5, 5.5))

@@ -112,7 +112,7 @@ def test_start_streams_the_selected_points_into_the_buffer_and_draws(scope, conn
     assert scope.capture.buffer.total == 500
     x, y = scope.plot.curves[1].getData()
     assert len(x) > 0 and y.max() == pytest.approx(50.0)
-    assert "50 %" in scope.plot.legend[0].label.text()
+    assert scope.plot.legend[0].value.text() == "50 %"
 
 
 def test_changing_channels_or_rate_while_running_restarts_cleanly(scope, conn):
@@ -238,3 +238,60 @@ def test_link_loss_stops_the_recording_and_keeps_the_data(scope, conn):
     assert not scope.running
     assert len(scope.display.data()[0]) == 100
     assert "needs a connected valve" in scope.status.text()
+
+
+def test_each_channel_has_its_own_scale_and_same_units_can_share_one(scope, conn):
+    scope.preselect("demand")
+    scope.preselect("position_actual")
+    scope.preselect("current_a")
+    scope.start()
+    block = np.column_stack([np.full(100, 8192), np.full(100, -4096), np.full(100, 900)])
+    block[50:, 0] = 0
+    conn.samples_received.emit(block)
+    scope._redraw()
+    plot = scope.plot
+    assert plot.y_range(0) == plot.y_range(1)  # both in %: one scale
+    assert plot.y_range(0)[0] < -25 and plot.y_range(0)[1] > 50
+    assert plot.y_range(2)[0] > 800  # mA on its own axis
+    scope.controls.same_scale.setChecked(False)
+    assert plot.y_range(1)[1] < 0  # position alone: around -25 %
+
+
+def test_zooming_an_axis_by_hand_stops_its_autoscale_until_auto(scope, conn):
+    scope.preselect("demand")
+    scope.start()
+    conn.samples_received.emit(np.full((100, 1), 8192))
+    scope._redraw()
+    plot = scope.plot
+    plot.views[0].setYRange(-200, 200, padding=0)
+    plot.views[0].sigRangeChangedManually.emit([True, True])
+    conn.samples_received.emit(np.full((100, 1), 16384))
+    scope._redraw()
+    assert not plot.is_autoscaled(0) and plot.y_range(0) == pytest.approx((-200, 200))
+    plot.legend[0].autoscale.click()
+    assert plot.is_autoscaled(0) and plot.y_range(0)[1] < 150
+
+
+def test_step_figures_can_be_limited_to_the_cursor_span(scope, conn):
+    scope.preselect("demand")
+    scope.preselect("position_actual")
+    scope.controls.window.setCurrentIndex(scope.controls.window.findData(0.5))
+    scope.start()
+    t = np.arange(2500) / 5000.0
+    ref = np.where(t >= 0.1, 8192, 0) - np.where(t >= 0.3, 4096, 0)  # up 50 %, down 25 %
+    resp = np.where(t >= 0.1, 8192 * (1 - np.exp(-(t - 0.1) / 0.01)), 0)
+    resp = np.where(t >= 0.3, 4096 + 4096 * np.exp(-(t - 0.3) / 0.01), resp)
+    conn.samples_received.emit(np.column_stack([ref, resp]))
+    scope._redraw()
+    scope.stop()
+    panel = scope.step_panel
+    assert not panel.between_cursors.isEnabled()
+    scope.controls.cursors.setChecked(True)
+    scope.plot.set_cursor_times(0.05, 0.28)
+    panel.between_cursors.setChecked(True)
+    assert panel.figures["rise"].text() == "21.97 ms"
+    assert panel.figures["error"].text() == "0.0 %"
+    assert "between cursors" in panel.region.text()
+    panel.between_cursors.setChecked(False)
+    assert "visible window" in panel.region.text()
+    assert panel.figures["error"].text() != "0.0 %"  # the whole window ends after the second step

@@ -26,7 +26,7 @@ from PySide6.QtWidgets import QApplication
 
 from prm9tool.connection import ValveConnection
 from prm9tool.document import ParameterDocument
-from prm9tool.scope import Edge, GeneratorSettings, TriggerMode, Waveform
+from prm9tool.scope import Edge, TriggerMode, Waveform
 from prm9tool.views.scope import ScopeWidget
 
 TYPE_KEY = "PRM9-06.3Z11/30-24E02S02"
@@ -47,27 +47,32 @@ def capture(app: QApplication, scope: ScopeWidget) -> None:
     for key in ("setpoint_raw", "position_actual", "current_a"):
         scope.preselect(key)
     c = scope.controls
-    c.window.setCurrentIndex(c.window.findData(0.05))
+    c.window.setCurrentIndex(c.window.findData(0.1))
     c.channel.setCurrentIndex(0)
     c.edge.setCurrentIndex(c.edge.findData(Edge.RISING))
     c.level.setValue(0.0)
-    c.pre.setValue(20)
-    c.mode.setCurrentIndex(c.mode.findData(TriggerMode.SINGLE))
+    c.pre.setValue(10)
     scope.start()
     wait_until(app, lambda: scope._accepting, 5.0)
-    scope.generator.start(GeneratorSettings(Waveform.SQUARE, 60.0, -30.0, 0.4))
+    panel = scope.generator_panel
+    panel.waveform.setCurrentIndex(panel.waveform.findData(Waveform.SQUARE))
+    panel.amplitude.setValue(60.0)
+    panel.offset.setValue(-30.0)
+    panel.period.setValue(0.4)
+    scope.generator.start(panel.settings())  # the confirmation box is the user's part
+    wait_until(app, lambda: False, 1.0)  # a few periods: the valve swings steadily
+    c.mode.setCurrentIndex(c.mode.findData(TriggerMode.SINGLE))
     if not wait_until(app, lambda: scope.display.engine.done, 10.0):
         sys.exit("no step was captured")
-    scope.generator.stop()
 
 
 def mark(scope: ScopeWidget) -> None:
     """Cursors on the step and the settling point; figures between them."""
     c = scope.controls
     c.cursors.setChecked(True)
-    figures = scope.display._figures(*scope.display.data(), -0.01, 0.04)
-    settle = figures.settling_time if figures is not None else 0.02
-    scope.plot.set_cursor_times(0.0, settle)
+    figures = scope.display._figures(*scope.display.data(), *scope.plot.x_range())
+    settle = figures.settling_time if figures is not None else 0.05
+    scope.plot.set_cursor_times(0.0, settle)  # Δt reads the settling time
     scope.display.update_readouts()
 
 
@@ -91,7 +96,7 @@ def main() -> None:
     output.parent.mkdir(parents=True, exist_ok=True)
     scope.grab().save(str(output), "PNG")
     print(f"wrote {output}")  # noqa: T201
-    scope.close()
+    scope.close()  # stops the generator: SETPOVRON = 0
     conn.go_offline()
     wait_until(app, lambda: not conn.is_online, 5.0)
     conn.shutdown()

@@ -91,6 +91,7 @@ class ScopeWidget(QWidget):
         c.window_changed.connect(self._on_trigger_changed)
         c.trigger_changed.connect(self._on_trigger_changed)
         c.cursors_toggled.connect(self.plot.set_cursors_visible)
+        c.same_scale_toggled.connect(self.plot.set_same_scale)
         c.csv_requested.connect(self._on_csv_requested)
         c.png_requested.connect(self._on_png_requested)
         self.display.held.connect(self._on_display_held)

@@ -48,6 +48,7 @@ class ScopeDisplay(QObject):
         self._frozen: tuple[np.ndarray, np.ndarray] | None = None
         self._drawn_total = -1
         self._redraws = 0
+        self._legend_ticks = 0
         self.redraw_durations: deque[float] = deque(maxlen=100_000)  # seconds, for benchmarks
         plot.cursors_moved.connect(self.update_readouts)
         plot.x_range_changed.connect(self.update_readouts)
@@ -79,14 +80,16 @@ class ScopeDisplay(QObject):
             self.engine.rearm(self.capture.buffer.total)
         self._frame = None
         self._drawn_total = -1
-        roll = settings.mode is TriggerMode.ROLL
-        self.plot.set_time_label(self.tr("Time [s]") if roll else self.tr("Time from trigger [s]"))
+        self.plot.set_time_axis(settings.mode is not TriggerMode.ROLL, window_s)
 
     # --- live ------------------------------------------------------------------------------------
     def redraw(self) -> bool:
         """Draw what the trigger engine selects; False when nothing new arrived."""
         capture = self.capture
-        if capture is None or self._frozen is not None or capture.buffer.total == self._drawn_total:
+        if capture is None or capture.buffer.total == self._drawn_total:
+            return False
+        if self._frozen is not None:
+            self._show_latest(capture)  # the legend stays live while the display holds
             return False
         started = time.perf_counter()
         self._drawn_total = capture.buffer.total
@@ -112,7 +115,11 @@ class ScopeDisplay(QObject):
         self.plot.set_x_range(
             (frame.start - frame.origin) / rate, (frame.stop - frame.origin) / rate
         )
-        if self._redraws % 4 == 0:  # live values at ~8 Hz: readable, and no relayout per frame
+        self._show_latest(capture)
+
+    def _show_latest(self, capture: Capture) -> None:
+        self._legend_ticks += 1
+        if self._legend_ticks % 4 == 1:  # ~8 Hz: readable, and no relayout every frame
             _, latest = capture.buffer.latest(1)
             if len(latest):
                 self.plot.show_latest(latest[0])
@@ -167,12 +174,14 @@ class ScopeDisplay(QObject):
             self.cursors.show_readout(None)
             self.steps.show_figures(None, "")
             return
-        if self.plot.cursors_visible:
-            self.cursors.show_readout(cursor_readout(t, values, *self.plot.cursor_times()))
+        cursors = self.plot.cursors_visible
+        readout = cursor_readout(t, values, *self.plot.cursor_times()) if cursors else None
+        self.cursors.show_readout(readout)
+        self.steps.between_cursors.setEnabled(cursors)
+        if cursors and self.steps.between_cursors.isChecked():
             x0, x1 = sorted(self.plot.cursor_times())
             region = self.tr("the samples between cursors A and B")
         else:
-            self.cursors.show_readout(None)
             x0, x1 = self.plot.x_range()
             region = self.tr("the visible window")
         self.steps.show_figures(self._figures(t, values, x0, x1), region)

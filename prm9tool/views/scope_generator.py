@@ -16,9 +16,9 @@ from PySide6.QtCore import QObject, QTimer, Signal
 from PySide6.QtWidgets import (
     QComboBox,
     QDoubleSpinBox,
-    QFormLayout,
+    QGridLayout,
     QGroupBox,
-    QHBoxLayout,
+    QLabel,
     QPushButton,
     QWidget,
 )
@@ -126,16 +126,13 @@ class GeneratorPanel(QGroupBox):
         self.button = QPushButton()
         self.button.setCheckable(True)
         self.button.clicked.connect(self._on_button_clicked)
-        form = QFormLayout()
-        self.form = form
-        form.addRow("", self.waveform)
-        form.addRow("", self.amplitude)
-        row = QHBoxLayout()
-        row.addWidget(self.offset)
-        row.addWidget(self.period)
-        form.addRow("", row)
-        form.addRow(self.button)
-        self.setLayout(form)
+        grid = QGridLayout(self)
+        self.labels = [QLabel() for _ in range(4)]
+        fields = (self.waveform, self.period, self.amplitude, self.offset)
+        for n, (label, field) in enumerate(zip(self.labels, fields, strict=True)):
+            grid.addWidget(label, n // 2, 2 * (n % 2))
+            grid.addWidget(field, n // 2, 2 * (n % 2) + 1)
+        grid.addWidget(self.button, 2, 0, 1, 4)
         self.retranslate()
 
     def retranslate(self) -> None:
@@ -148,11 +145,9 @@ class GeneratorPanel(QGroupBox):
         }
         for row in range(self.waveform.count()):
             self.waveform.setItemText(row, names[Waveform(self.waveform.itemData(row))])
-        labels = (self.tr("Waveform"), self.tr("Amplitude"), self.tr("Offset / period"))
-        for row, label in enumerate(labels):
-            item = self.form.itemAt(row, QFormLayout.ItemRole.LabelRole)
-            if item is not None and item.widget() is not None:
-                item.widget().setText(label)
+        labels = (self.tr("Waveform"), self.tr("Period"), self.tr("Amplitude"), self.tr("Offset"))
+        for label, label_text in zip(self.labels, labels, strict=True):
+            label.setText(label_text)
         self.amplitude.setToolTip(
             self.tr(
                 "Step and square: height of the step above the offset. Sine: peak value. "

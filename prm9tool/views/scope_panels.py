@@ -67,6 +67,7 @@ class ChannelPanel(QGroupBox):
             item.setFlags(item.flags() | Qt.ItemFlag.ItemIsUserCheckable)
             self.list.addItem(item)
         self.list.blockSignals(False)
+        self.list.setMinimumWidth(self.list.sizeHintForColumn(0) + 24)
         self._show_selection()
 
     def selected(self) -> list[str]:
@@ -137,6 +138,7 @@ class ControlPanel(QWidget):
     window_changed = Signal(float)
     trigger_changed = Signal(object)  # TriggerSettings
     cursors_toggled = Signal(bool)
+    same_scale_toggled = Signal(bool)
     csv_requested = Signal(bool)  # True: the whole recording, False: the visible window
     png_requested = Signal()
 
@@ -152,6 +154,7 @@ class ControlPanel(QWidget):
         self.start, self.stop, self.pause = QPushButton(), QPushButton(), QPushButton()
         self.pause.setCheckable(True)
         self.mode, self.channel, self.edge = QComboBox(), QComboBox(), QComboBox()
+        self.channel.setSizeAdjustPolicy(QComboBox.SizeAdjustPolicy.AdjustToContents)
         for mode in TriggerMode:
             self.mode.addItem("", mode)
         for edge in Edge:
@@ -164,9 +167,11 @@ class ControlPanel(QWidget):
         self.pre.setDecimals(0)
         self.pre.setSuffix(" %")
         self.pre.setValue(20)
-        self.cursors = QCheckBox()
+        self.cursors, self.same_scale = QCheckBox(), QCheckBox()
+        self.same_scale.setChecked(True)
         self.csv, self.png = QToolButton(), QPushButton()
         self.csv.setPopupMode(QToolButton.ToolButtonPopupMode.InstantPopup)
+        self.csv.setToolButtonStyle(Qt.ToolButtonStyle.ToolButtonTextOnly)
         self.csv.setMenu(QMenu(self.csv))
         self._units: list[str] = []
         self._build_layout()
@@ -196,7 +201,8 @@ class ControlPanel(QWidget):
         grid.addWidget(self.pre, 1, 2)
         self.tools = QGroupBox()
         grid = QGridLayout(self.tools)
-        grid.addWidget(self.cursors, 0, 0, 1, 2)
+        grid.addWidget(self.cursors, 0, 0)
+        grid.addWidget(self.same_scale, 0, 1)
         grid.addWidget(self.csv, 1, 0)
         grid.addWidget(self.png, 1, 1)
         layout = QHBoxLayout(self)
@@ -215,6 +221,7 @@ class ControlPanel(QWidget):
         self.level.valueChanged.connect(self._on_trigger_edited)
         self.pre.valueChanged.connect(self._on_trigger_edited)
         self.cursors.toggled.connect(self.cursors_toggled)
+        self.same_scale.toggled.connect(self.same_scale_toggled)
         self.png.clicked.connect(self.png_requested)
 
     def retranslate(self) -> None:
@@ -239,8 +246,12 @@ class ControlPanel(QWidget):
                 combo.setItemText(row, names[combo.itemData(row)])  # StrEnum == its str
         self.pre_label.setText(self.tr("Pre-trigger"))
         self.level.setToolTip(self.tr("Trigger level in the trigger channel's unit"))
-        self.tools.setTitle(self.tr("Cursors and export"))
+        self.tools.setTitle(self.tr("Display and export"))
         self.cursors.setText(self.tr("Cursors A/B"))
+        self.same_scale.setText(self.tr("Same scale per unit"))
+        self.same_scale.setToolTip(
+            self.tr("Autoscaled channels with the same unit share one scale")
+        )
         self.csv.setText(self.tr("Export CSV"))
         menu = self.csv.menu()
         menu.clear()

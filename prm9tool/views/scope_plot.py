@@ -18,11 +18,11 @@ from collections.abc import Sequence
 import numpy as np
 import pyqtgraph as pg
 from PySide6.QtCore import Qt, Signal
-from PySide6.QtGui import QImage
-from PySide6.QtWidgets import QHBoxLayout, QLabel, QPushButton, QVBoxLayout, QWidget
+from PySide6.QtGui import QFontMetrics, QImage
+from PySide6.QtWidgets import QHBoxLayout, QLabel, QToolButton, QVBoxLayout, QWidget
 
 from prm9tool.i18n import text
-from prm9tool.scope import peak_decimate
+from prm9tool.scope import axis_ranges, peak_decimate
 from prm9tool.signals import MAX_CHANNELS
 from prm9tool.signals import Signal as MeasuringPoint
 
@@ -36,33 +36,41 @@ def _format(value: float, unit: str) -> str:
 
 
 class _LegendEntry(QWidget):
-    """Colour, name, live value and an autoscale button of one channel."""
+    """Colour, name, live value and an autoscale button of one channel.
+
+    The value has a label of its own with a fixed width, so a new value never re-lays out
+    the window (that would cost a full repaint at every legend update).
+    """
 
     def __init__(self, slot: int, parent: QWidget | None = None) -> None:
         super().__init__(parent)
-        self.label = QLabel()
-        self.label.setTextFormat(Qt.TextFormat.RichText)
-        self.autoscale = QPushButton()
-        self.autoscale.setFlat(True)
+        self.name = QLabel()
+        self.name.setTextFormat(Qt.TextFormat.RichText)
+        self.name.setMinimumWidth(60)  # a narrow window clips long names (full name: tooltip)
+        self.value = QLabel()
+        bold = self.value.font()
+        bold.setBold(True)
+        self.value.setFont(bold)
+        self.value.setFixedWidth(QFontMetrics(bold).horizontalAdvance("−00000.0 mA") + 4)
+        self.autoscale = QToolButton()
+        self.autoscale.setAutoRaise(True)
         layout = QHBoxLayout(self)
-        layout.setContentsMargins(0, 0, 0, 0)
-        layout.addWidget(self.label)
-        layout.addWidget(self.autoscale)
+        layout.setContentsMargins(0, 0, 8, 0)
+        for widget in (self.name, self.value, self.autoscale):
+            layout.addWidget(widget)
         self._colour = COLOURS[slot]
-        self._name = ""
         self._unit = ""
 
     def set_signal(self, signal: MeasuringPoint) -> None:
         """Show ``signal``'s name and unit."""
-        self._name, self._unit = text(signal.text), signal.unit
+        self._unit = signal.unit
+        self.name.setText(f'<span style="color:{self._colour}">■</span> {text(signal.text)}:')
+        self.name.setToolTip(f"{text(signal.text)} [{signal.unit}]")
         self.set_value(math.nan)
 
     def set_value(self, value: float) -> None:
         """Show the live value."""
-        self.label.setText(
-            f'<span style="color:{self._colour}">■</span> {self._name}: '
-            f"<b>{_format(value, self._unit)}</b>"
-        )
+        self.value.setText(_format(value, self._unit))
 
 
 class ScopePlot(QWidget):
@@ -96,11 +104,15 @@ class ScopePlot(QWidget):
         self._auto = [True] * MAX_CHANNELS
         self._clipping = True
         for slot, view in enumerate(self.views):
-            view.disableAutoRange()  # our own autoscale with hysteresis (see _follow)
+            view.disableAutoRange()  # our own autoscale with hysteresis (see _rescale)
             view.sigRangeChangedManually.connect(lambda *_, s=slot: self._on_manual_range(s))
         self.curves = [self._make_curve(slot) for slot in range(MAX_CHANNELS)]
         self.cursors = [self._make_cursor(name) for name in ("A", "B")]
         self.legend = [_LegendEntry(slot) for slot in range(MAX_CHANNELS)]
+        self._same_scale = True
+        self._units: list[str] = []
+        self._channels = 0
+        self._time_axis = (False, 1.0)
         for slot, entry in enumerate(self.legend):
             entry.autoscale.clicked.connect(lambda _=False, s=slot: self.autoscale(s))
         self._build_layout()
@@ -142,6 +154,7 @@ class ScopePlot(QWidget):
 
     def retranslate(self) -> None:
         """Re-read user-visible texts (after a language change)."""
+        self.set_time_axis(*self._time_axis)
         for entry in self.legend:
             entry.autoscale.setText(self.tr("Auto"))
             entry.autoscale.setToolTip(self.tr("Scale this channel to its data again"))
@@ -154,20 +167,29 @@ class ScopePlot(QWidget):
             self.axes[slot].setVisible(used or slot == 0)
             self.legend[slot].setVisible(used)
             self.curves[slot].setData([], [])
+            self._auto[slot] = True
             if used:
                 signal = signals[slot]
                 axis = self.axes[slot]
                 axis.setLabel(f"{text(signal.text)} [{signal.unit}]", color=COLOURS[slot])
                 axis.setTextPen(COLOURS[slot])
                 self.legend[slot].set_signal(signal)
-                self.autoscale(slot)
         if not signals:
             self.axes[0].setLabel("")
         self._channels = len(signals)
+        self._units = [s.unit for s in signals]
 
-    def set_time_label(self, label: str) -> None:
-        """Label of the time axis."""
-        self.item.setLabel("bottom", label)
+    def set_time_axis(self, from_trigger: bool, window_s: float) -> None:
+        """Label the time axis; windows under a second are labelled in milliseconds."""
+        self._time_axis = (from_trigger, window_s)
+        ms = window_s < 1.0
+        axis = self.item.getAxis("bottom")
+        axis.setScale(1000.0 if ms else 1.0)
+        if from_trigger:
+            label = self.tr("Time from trigger [ms]") if ms else self.tr("Time from trigger [s]")
+        else:
+            label = self.tr("Time [ms]") if ms else self.tr("Time [s]")
+        axis.setLabel(label)
 
     def show_data(self, t: np.ndarray, values: np.ndarray) -> None:
         """Draw a live frame: peak-decimated here to the plot's width (no re-clipping)."""
@@ -176,14 +198,14 @@ class ScopePlot(QWidget):
         t, values = peak_decimate(t, values, 2 * width)
         for slot in range(self._channels):
             self.curves[slot].setData(t, values[:, slot])
-            self._follow(slot, values[:, slot])
+        self._rescale()
 
     def show_all(self, t: np.ndarray, values: np.ndarray) -> None:
         """Draw a held recording: pyqtgraph clips and decimates to whatever the user zooms to."""
         self._set_clipping(True)
         for slot in range(self._channels):
             self.curves[slot].setData(t, values[:, slot])
-            self._follow(slot, values[:, slot], force=True)
+        self._rescale(force=True)
 
     def _set_clipping(self, on: bool) -> None:
         if self._clipping != on:
@@ -192,18 +214,22 @@ class ScopePlot(QWidget):
                 curve.setClipToView(on)
                 curve.setDownsampling(ds=1, auto=on, method="peak")
 
-    def _follow(self, slot: int, y: np.ndarray, force: bool = False) -> None:
-        """Autoscale with hysteresis: rescale only when the data leaves the axis range or
-        fills less than half of it, so a live axis does not jitter (and is not redrawn)."""
-        if not self._auto[slot] or not len(y):
-            return
+    def _rescale(self, force: bool = False) -> None:
+        """Autoscale the channels that follow their data (see :func:`axis_ranges`)."""
+        slots = range(self._channels)
+        bounds = [self._bounds(slot) if self._auto[slot] else None for slot in slots]
+        current = [self.y_range(slot) for slot in slots]
+        ranges = axis_ranges(bounds, current, self._units, self._same_scale, force)
+        for slot, new in enumerate(ranges):
+            if new is not None:
+                self.views[slot].setYRange(*new, padding=0)
+
+    def _bounds(self, slot: int) -> tuple[float, float] | None:
+        y = self.curves[slot].yData
+        if y is None or not len(y):
+            return None
         lo, hi = float(np.nanmin(y)), float(np.nanmax(y))
-        if not (np.isfinite(lo) and np.isfinite(hi)):
-            return
-        y0, y1 = self.y_range(slot)
-        if force or lo < y0 or hi > y1 or hi - lo < 0.5 * (y1 - y0):
-            margin = 0.1 * (hi - lo) if hi > lo else max(abs(hi) * 0.05, 0.5)
-            self.views[slot].setYRange(lo - margin, hi + margin, padding=0)
+        return (lo, hi) if np.isfinite(lo) and np.isfinite(hi) else None
 
     def show_latest(self, values: np.ndarray) -> None:
         """Live values in the legend (one per channel, NaN when unknown)."""
@@ -226,9 +252,12 @@ class ScopePlot(QWidget):
     def autoscale(self, slot: int) -> None:
         """Scale channel ``slot``'s axis to its data, and keep doing so as data arrives."""
         self._auto[slot] = True
-        y = self.curves[slot].yData
-        if y is not None:
-            self._follow(slot, np.asarray(y), force=True)
+        self._rescale(force=True)
+
+    def set_same_scale(self, on: bool) -> None:
+        """Autoscaled channels with the same unit share one scale (on by default)."""
+        self._same_scale = on
+        self._rescale(force=True)
 
     def is_autoscaled(self, slot: int) -> bool:
         """True while channel ``slot``'s axis follows its data."""

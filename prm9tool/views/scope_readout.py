@@ -7,6 +7,7 @@ from collections.abc import Sequence
 
 from PySide6.QtCore import Signal
 from PySide6.QtWidgets import (
+    QCheckBox,
     QComboBox,
     QFormLayout,
     QGridLayout,
@@ -25,6 +26,14 @@ from prm9tool.views.scope_plot import COLOURS
 
 def _value(value: float, unit: str, digits: int = 4) -> str:
     return "—" if math.isnan(value) else f"{value:.{digits}g} {unit}".rstrip()
+
+
+def _fixed(value: float, unit: str, size: float) -> str:
+    """``value`` with three significant digits of ``size`` (the step), so noise reads as 0."""
+    if math.isnan(value):
+        return "—"
+    decimals = max(0, 2 - math.floor(math.log10(abs(size)))) if size else 2
+    return f"{round(value, decimals) + 0.0:.{decimals}f} {unit}".rstrip()  # + 0.0: no "-0"
 
 
 def _time(seconds: float) -> str:
@@ -94,23 +103,26 @@ class CursorPanel(QGroupBox):
 class StepPanel(QGroupBox):
     """Rise time, overshoot, settling time and steady-state error of the response channel."""
 
-    channels_changed = Signal()
+    channels_changed = Signal()  # reference, response or region changed
 
     def __init__(self, parent: QWidget | None = None) -> None:
         super().__init__(parent)
         self.reference, self.response = QComboBox(), QComboBox()
         self.region = QLabel()
         self.region.setWordWrap(True)
+        self.between_cursors = QCheckBox()
+        self.between_cursors.toggled.connect(lambda _: self.channels_changed.emit())
         self.figures = {
             name: QLabel() for name in ("step", "rise", "overshoot", "settling", "error")
         }
         self.form = QFormLayout()
-        self.form.addRow("", self.reference)
-        self.form.addRow("", self.response)
-        for label in self.figures.values():
-            self.form.addRow("", label)
+        fields = [self.reference, self.response, *self.figures.values()]
+        self.labels = [QLabel() for _ in fields]
+        for label, field in zip(self.labels, fields, strict=True):
+            self.form.addRow(label, field)
         layout = QVBoxLayout(self)
         layout.addLayout(self.form)
+        layout.addWidget(self.between_cursors)
         layout.addWidget(self.region)
         self.reference.currentIndexChanged.connect(lambda _: self.channels_changed.emit())
         self.response.currentIndexChanged.connect(lambda _: self.channels_changed.emit())
@@ -121,6 +133,7 @@ class StepPanel(QGroupBox):
     def retranslate(self) -> None:
         """Re-read user-visible texts (after a language change)."""
         self.setTitle(self.tr("Step response"))
+        self.between_cursors.setText(self.tr("Only between cursors A and B"))
         labels = (
             self.tr("Reference"),
             self.tr("Response"),
@@ -130,10 +143,8 @@ class StepPanel(QGroupBox):
             self.tr("Settling time ±2 %"),
             self.tr("Steady-state error"),
         )
-        for row, label in enumerate(labels):
-            item = self.form.itemAt(row, QFormLayout.ItemRole.LabelRole)
-            if item is not None and isinstance(item.widget(), QLabel):
-                item.widget().setText(label)
+        for label, label_text in zip(self.labels, labels, strict=True):
+            label.setText(label_text)
         if self.reference.count():
             self.reference.setItemText(0, self.tr("(none: step on the response)"))
 
@@ -174,8 +185,9 @@ class StepPanel(QGroupBox):
                 label.setText("—")
             self.region.setText(self.tr("No step found in {0}.").format(region) if region else "")
             return
+        size = figures.final - figures.initial
         self.figures["step"].setText(
-            f"{_value(figures.initial, unit)} → {_value(figures.final, unit)}"
+            f"{_fixed(figures.initial, unit, size)} → {_fixed(figures.final, unit, size)}"
             f"  @ {_time(figures.t_step)}"
         )
         self.figures["rise"].setText(_time(figures.rise_time))
@@ -185,5 +197,5 @@ class StepPanel(QGroupBox):
             if not math.isnan(figures.settling_time)
             else self.tr("not settled in the window")
         )
-        self.figures["error"].setText(_value(figures.steady_state_error, unit, 3))
+        self.figures["error"].setText(_fixed(figures.steady_state_error, unit, size))
         self.region.setText(self.tr("Measured on {0}.").format(region))
