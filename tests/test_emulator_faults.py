@@ -2,9 +2,12 @@
 
 from __future__ import annotations
 
+import dataclasses
+
 import pytest
 
 from prm9tool.device.emulator import DeviceState, EmulatedValve, Fault
+from prm9tool.device.emulator.constants import PLANT
 
 E04_CA_ANALOG = "PRM9-06.3Z11/30-24E04S02-CA"
 FULL = 16384
@@ -209,3 +212,18 @@ def test_fault_reset_is_refused_while_the_fault_is_present():
     valve.write(0x6040, 0, 0x01)
     valve.write(0x6040, 0, 0x00)
     assert valve.status().device_state is DeviceState.FAULT_HOLD
+
+
+def test_coil_losses_heat_the_electronics():
+    fast_housing = dataclasses.replace(PLANT, thermal_tau_s=0.5, thermal_k_per_w=4.0)
+    valve = EmulatedValve("PRM9-06.3Z11/30-24E02S02", plant=fast_housing)
+    valve.set_input("ambient_temperature", 60.0)
+    valve.advance(2.0)
+    idle = valve.status().temperature_c
+    assert idle == pytest.approx(60.0 + 4.0 * 2.0, abs=1.0)  # electronics self-heating only
+    valve.set_input("setpoint", 10.0)
+    valve.advance(3.0)
+    status = valve.status()
+    assert status.temperature_c > idle + 10.0  # about 1.8 A in 4.3 Ω: 14 W
+    assert status.warning
+    assert valve.read(0x2002, 0) == round(status.temperature_c)

@@ -217,3 +217,18 @@ def test_setpoint_override_times_out_without_usb_activity():
     assert valve.read(0x2050, 1) == 0
     valve.advance(0.1)
     assert abs(valve.signal("position_actual")) < 0.02 * FULL
+
+
+def test_08h_first_clears_a_fault_left_from_power_up():
+    valve = EmulatedValve(E02_CA)
+    valve.set_input("supply_voltage", 18.0)
+    valve.advance(2.0)
+    assert valve.status().device_state is S.FAULT
+    valve.set_input("supply_voltage", 24.0)
+    valve.advance(0.1)
+    assert [state_after(valve, w) for w in (0x08, 0x09, 0x0B, 0x0F)] == [
+        S.INIT,
+        S.DISABLED,
+        S.HOLD,
+        S.DEVICE_MODE_ACTIVE,
+    ]

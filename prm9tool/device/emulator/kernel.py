@@ -365,6 +365,6 @@ def control_loop(s: LoopState) -> Generator[None, int, None]:
                             )
                         )
             # --- what the 1 ms task needs; the rest on a flush (send(0)) --------------------
-            s.ctrl_dev = dev if process else r - xm
+            s.ctrl_dev = dev if e04 else r - xm
             s.current_ma = (ia, ib)
             n = yield
