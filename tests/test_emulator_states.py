@@ -29,6 +29,10 @@ def test_power_up_ends_in_init_on_a_canopen_valve():
     assert valve.status().device_state is S.NOT_READY
     valve.advance(2.0)
     assert valve.status().device_state is S.INIT
+    valve.write(0x6040, 0, 0x0F)
+    valve.write(0x6300, 1, 8000)
+    valve.advance(0.1)
+    assert valve.signal("position_actual") == pytest.approx(8000, abs=0.02 * FULL)
 
 
 def test_manual_commissioning_sequence_08_09_0b_0f():
@@ -232,3 +236,25 @@ def test_08h_first_clears_a_fault_left_from_power_up():
         S.HOLD,
         S.DEVICE_MODE_ACTIVE,
     ]
+
+
+def test_reset_node_from_inside_the_loop_restarts_cleanly():
+    valve = booted_ca()
+    fired: list[float] = []
+
+    def listener(now: float) -> None:
+        if not fired and now >= 2.5:
+            fired.append(now)
+            valve.nmt_event("reset_node")
+
+    valve.add_cycle_listener(listener)
+    valve.advance(1.0)  # 2.0 -> 2.5 s, power cycle, then 0 -> 0.5 s
+    assert fired == [pytest.approx(2.5)]
+    assert valve.status().booting
+    assert valve.time == pytest.approx(0.5, abs=0.002)
+    valve.advance(2.0)
+    assert valve.status().device_state is S.INIT
+    valve.write(0x6040, 0, 0x0F)
+    valve.write(0x6300, 1, 8000)
+    valve.advance(0.1)
+    assert valve.signal("position_actual") == pytest.approx(8000, abs=0.02 * FULL)

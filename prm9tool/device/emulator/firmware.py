@@ -110,13 +110,16 @@ class Firmware:
         return self.cycles * CYCLE_S
 
     def run(self, cycles: int) -> None:
-        """Run ``cycles`` control cycles, with the 1 ms task every 5 cycles."""
-        send = self.gen.send
+        """Run ``cycles`` control cycles, with the 1 ms task every 5 cycles.
+
+        ``self.gen`` is looked up per batch: a listener may power-cycle the valve (NMT reset
+        node), which replaces the loop generator.
+        """
         while cycles > 0:
             if self.setpoint_dirty or self.config_dirty:
                 self._refresh_inputs()
             n = min(cycles, self.tick_countdown)
-            send(n)
+            self.gen.send(n)
             self.cycles += n
             cycles -= n
             self.tick_countdown -= n
