@@ -35,6 +35,7 @@ from prm9tool.document import ParameterDocument
 from prm9tool.scope import GeneratorSettings, TriggerMode, Waveform
 from prm9tool.views.scope import ScopeWidget
 from prm9tool.views.scope_display import ScopeDisplay
+from prm9tool.views.scope_generator import SetpointGenerator
 
 TYPE_KEY = "PRM9-06.3Z11/30-24E02S02"
 KEYS = ("setpoint_raw", "position_actual", "current_a")
@@ -132,13 +133,44 @@ def wait_until(app: QApplication, condition: Callable[[], bool], timeout_s: floa
     return condition()
 
 
-def run_scope(app: QApplication, seconds: float, window_s: float, waveform: str) -> dict:
-    """Stream into the scope for ``seconds``; return the measured figures."""
+def online(app: QApplication) -> ValveConnection:
+    """A connection to a paced emulated valve."""
     conn = ValveConnection()
-    entry = conn.list_devices([TYPE_KEY])[-1]
-    conn.go_online(entry)
+    conn.go_online(conn.list_devices([TYPE_KEY])[-1])
     if not wait_until(app, lambda: conn.is_online, 20.0):
         sys.exit("the emulated valve did not come online")
+    return conn
+
+
+def offline(app: QApplication, conn: ValveConnection) -> None:
+    """Close the connection and its worker."""
+    conn.go_offline()
+    wait_until(app, lambda: not conn.is_online, 5.0)
+    conn.shutdown()
+
+
+def run_stream_only(app: QApplication, seconds: float, waveform: str) -> float:
+    """CPU share of the same stream and generator with no scope attached (the baseline)."""
+    conn = online(app)
+    received = [0]
+    conn.samples_received.connect(lambda block: received.__setitem__(0, received[0] + len(block)))
+    generator = SetpointGenerator(conn)
+    conn.start_stream(list(KEYS), RATE_HZ)
+    wait_until(app, lambda: received[0] > 0, 5.0)
+    if waveform != "off":
+        generator.start(GeneratorSettings(Waveform(waveform), 40.0, -20.0, 1.0))
+    cpu0, wall0 = time.process_time(), time.monotonic()
+    QTimer.singleShot(int(seconds * 1000), app.quit)
+    app.exec()
+    share = (time.process_time() - cpu0) / (time.monotonic() - wall0)
+    generator.stop()
+    offline(app, conn)
+    return share
+
+
+def run_scope(app: QApplication, seconds: float, window_s: float, waveform: str) -> dict:
+    """Stream into the scope for ``seconds``; return the measured figures."""
+    conn = online(app)
     scope = ScopeWidget(conn, ParameterDocument(TYPE_KEY))
     scope.resize(*SIZE)
     scope.show()
@@ -164,9 +196,7 @@ def run_scope(app: QApplication, seconds: float, window_s: float, waveform: str)
     _, recorded = scope.capture.buffer.latest(scope.capture.buffer.capacity)
     recorded = recorded.copy()
     scope.stop()
-    conn.go_offline()
-    wait_until(app, lambda: not conn.is_online, 5.0)
-    conn.shutdown()
+    offline(app, conn)
     return {
         "wall": wall,
         "cpu": cpu / wall,
@@ -182,6 +212,7 @@ def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--seconds", type=float, default=20.0)
     parser.add_argument("--window", type=float, default=10.0)
+    parser.add_argument("--baseline-seconds", type=float, default=10.0)
     parser.add_argument(
         "--waveform",
         choices=[w.value for w in Waveform] + ["off"],
@@ -194,8 +225,9 @@ def main() -> None:
     result = run_scope(app, args.seconds, args.window, args.waveform)
     ref_ds = reference(app, result["recorded"], points, downsample=True)
     ref_raw = reference(app, result["recorded"], points, downsample=False, frames=30)
+    baseline = run_stream_only(app, args.baseline_seconds, args.waveform)
     frames, redraw, paint = result["frames"]
-    expected = args.seconds * RATE_HZ
+    expected = result["wall"] * RATE_HZ
     print(
         f"stream: {len(KEYS)} channels x {RATE_HZ} Hz, {args.window:g} s window, "
         f"{result['wall']:.1f} s, generator: {args.waveform}"
@@ -211,8 +243,9 @@ def main() -> None:
         + ", ".join(f"{k} {v:.3g}" for k, v in zip(KEYS, span, strict=True))
     )
     print(
-        f"process CPU share {100 * result['cpu']:.0f} % of one core "
-        "(emulator, USB link, worker, GUI)"
+        f"process CPU share {100 * result['cpu']:.0f} % of one core with the scope, "
+        f"{100 * baseline:.0f} % with the same stream and generator but no scope "
+        "(both: paced emulator, USB link, connection worker, GUI thread)"
     )
     print("                                   median ms   p95 ms")
     rows = [
