@@ -182,7 +182,7 @@ def run_scope(app: QApplication, seconds: float, window_s: float, waveform: str)
     c.mode.setCurrentIndex(c.mode.findData(TriggerMode.ROLL))
     timer = FrameTimer()
     scope.start()
-    wait_until(app, lambda: scope._accepting, 5.0)
+    wait_until(app, lambda: scope.receiving, 5.0)
     if waveform != "off":
         scope.generator.start(GeneratorSettings(Waveform(waveform), 40.0, -20.0, 1.0))
     cpu0, wall0 = time.process_time(), time.monotonic()

@@ -295,3 +295,17 @@ def test_step_figures_can_be_limited_to_the_cursor_span(scope, conn):
     panel.between_cursors.setChecked(False)
     assert "visible window" in panel.region.text()
     assert panel.figures["error"].text() != "0.0 %"  # the whole window ends after the second step
+
+
+def test_a_refused_stream_start_stops_and_says_why(qtbot, doc):
+    conn = FakeConnection()
+    conn.start_stream = lambda keys, rate: conn.failed.emit("stream rate 3000 Hz: use 5000 Hz …")
+    widget = ScopeWidget(conn, doc)
+    qtbot.addWidget(widget)
+    widget.preselect("demand")
+    widget.start()
+    assert not widget.running
+    assert widget.controls.start.isEnabled()
+    assert widget.status.text() == (
+        "The recording could not start: stream rate 3000 Hz: use 5000 Hz …"
+    )

@@ -53,7 +53,7 @@ def capture(app: QApplication, scope: ScopeWidget) -> None:
     c.level.setValue(0.0)
     c.pre.setValue(10)
     scope.start()
-    wait_until(app, lambda: scope._accepting, 5.0)
+    wait_until(app, lambda: scope.receiving, 5.0)
     panel = scope.generator_panel
     panel.waveform.setCurrentIndex(panel.waveform.findData(Waveform.SQUARE))
     panel.amplitude.setValue(60.0)
@@ -70,7 +70,7 @@ def mark(scope: ScopeWidget) -> None:
     """Cursors on the step and the settling point; figures between them."""
     c = scope.controls
     c.cursors.setChecked(True)
-    figures = scope.display._figures(*scope.display.data(), *scope.plot.x_range())
+    figures = scope.display.figures(*scope.plot.x_range())
     settle = figures.settling_time if figures is not None else 0.05
     scope.plot.set_cursor_times(0.0, settle)  # Δt reads the settling time
     scope.display.update_readouts()

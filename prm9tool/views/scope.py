@@ -81,6 +81,7 @@ class ScopeWidget(QWidget):
         conn.lost.connect(self._on_link_lost)
         conn.samples_received.connect(self._on_samples_received)
         conn.stream_started.connect(self._on_stream_started)
+        conn.failed.connect(self._on_failed)
         self._document.type_key_changed.connect(self._on_type_key_changed)
         self.channels.selection_changed.connect(self._on_selection_changed)
         c = self.controls
@@ -105,6 +106,11 @@ class ScopeWidget(QWidget):
     def running(self) -> bool:
         """True while a capture streams."""
         return self._running
+
+    @property
+    def receiving(self) -> bool:
+        """True once the valve confirmed the stream and samples are taken in."""
+        return self._accepting
 
     @property
     def capture(self) -> Capture | None:
@@ -147,9 +153,9 @@ class ScopeWidget(QWidget):
         self.display.set_capture(Capture([BY_KEY[k] for k in keys], self.controls.rate_hz()))
         self.controls.set_paused(False)
         self._new_engine()
-        self._connection.start_stream(keys, self.controls.rate_hz())
         self._timer.start()
         self._update_controls()
+        self._connection.start_stream(keys, self.controls.rate_hz())  # may fail: _on_failed
 
     def _on_stream_started(self, keys: list[str]) -> None:
         capture = self.display.capture
@@ -157,6 +163,14 @@ class ScopeWidget(QWidget):
             capture.buffer.clear()
             self.display.engine.rearm()
             self._accepting = True
+
+    def _on_failed(self, message: str) -> None:
+        """An operation failed; if it was the stream start we wait for, stop and say why."""
+        if self._running and not self._accepting:
+            self._running = False
+            self._timer.stop()
+            self._update_controls()
+            self._say(self.tr("The recording could not start: {0}").format(message))
 
     def _on_samples_received(self, block: np.ndarray) -> None:
         capture = self.display.capture

@@ -184,11 +184,11 @@ class ScopeDisplay(QObject):
         else:
             x0, x1 = self.plot.x_range()
             region = self.tr("the visible window")
-        self.steps.show_figures(self._figures(t, values, x0, x1), region)
+        self.steps.show_figures(self.figures(x0, x1), region)
 
-    def _figures(
-        self, t: np.ndarray, values: np.ndarray, x0: float, x1: float
-    ) -> StepFigures | None:
+    def figures(self, x0: float, x1: float) -> StepFigures | None:
+        """Step-response figures of the samples between times ``x0`` and ``x1``."""
+        t, values = self.data()
         response, reference = self.steps.response_slot(), self.steps.reference_slot()
         if response is None or response >= values.shape[1]:
             return None
