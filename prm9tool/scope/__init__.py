@@ -1,0 +1,65 @@
+"""Oscilloscope model: ring buffer, trigger engine, cursors, step-response figures, CSV, generator.
+
+Pure numpy, no Qt (the widget lives in ``prm9tool/views/scope.py``). Samples arrive from the
+valve's stream as raw ``(n, channels)`` blocks; :class:`Capture` converts them to display units
+once and appends them to a preallocated :class:`RingBuffer`, so everything downstream (trigger
+level, cursors, figures, CSV) works in the units the user sees. Sample ``i`` of a capture lies at
+``i / rate`` seconds after the capture started; the stream has no gaps (lost samples are counted
+by the session, not hidden here).
+"""
+
+from __future__ import annotations
+
+from prm9tool.scope.buffer import (
+    BUFFER_S,
+    MAX_RATE_HZ,
+    RATES_HZ,
+    WINDOWS_S,
+    Capture,
+    RingBuffer,
+    axis_ranges,
+    peak_decimate,
+)
+from prm9tool.scope.generator import GeneratorSettings, Waveform, setpoint_limits
+from prm9tool.scope.measure import (
+    CursorReadout,
+    StepFigures,
+    cursor_readout,
+    find_step,
+    step_figures,
+    write_csv,
+)
+from prm9tool.scope.trigger import (
+    Edge,
+    Frame,
+    TriggerEngine,
+    TriggerMode,
+    TriggerSettings,
+    find_edge,
+)
+
+__all__ = [
+    "BUFFER_S",
+    "MAX_RATE_HZ",
+    "RATES_HZ",
+    "WINDOWS_S",
+    "Capture",
+    "CursorReadout",
+    "Edge",
+    "Frame",
+    "GeneratorSettings",
+    "RingBuffer",
+    "StepFigures",
+    "TriggerEngine",
+    "TriggerMode",
+    "TriggerSettings",
+    "Waveform",
+    "axis_ranges",
+    "cursor_readout",
+    "find_edge",
+    "find_step",
+    "peak_decimate",
+    "setpoint_limits",
+    "step_figures",
+    "write_csv",
+]

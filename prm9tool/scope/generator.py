@@ -1,0 +1,72 @@
+"""The setpoint generator's waveform maths (the Qt part drives SETPOVR with it)."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from enum import StrEnum
+
+import numpy as np
+
+from prm9tool.catalogue import CATALOGUE
+from prm9tool.errors import ValueRangeError
+
+
+class Waveform(StrEnum):
+    """Generator waveforms."""
+
+    STEP = "step"  # offset for half a period, then offset + amplitude, held
+    SQUARE = "square"  # offset and offset + amplitude, alternating every half period
+    SINE = "sine"  # offset + amplitude · sin(2π t / period)
+
+
+def setpoint_limits() -> tuple[float, float]:
+    """Lowest and highest setpoint the override accepts, in % (from the catalogue)."""
+    param = CATALOGUE["SETPOVR"]
+    return param.raw_min * param.scale, param.raw_max * param.scale
+
+
+@dataclass(frozen=True)
+class GeneratorSettings:
+    """A setpoint waveform in % of the setpoint range; ``period`` in seconds."""
+
+    waveform: Waveform = Waveform.STEP
+    amplitude: float = 10.0
+    offset: float = 0.0
+    period: float = 1.0
+
+    def extremes(self) -> tuple[float, float]:
+        """Lowest and highest value the waveform reaches."""
+        if self.waveform is Waveform.SINE:
+            return self.offset - abs(self.amplitude), self.offset + abs(self.amplitude)
+        ends = (self.offset, self.offset + self.amplitude)
+        return min(ends), max(ends)
+
+    def check(self) -> None:
+        """Raise ValueRangeError with a user-facing message if the waveform is not allowed."""
+        if not self.period > 0:
+            raise ValueRangeError("The generator period must be longer than 0 s.")
+        low, high = self.extremes()
+        lo, hi = setpoint_limits()
+        if low < lo or high > hi:
+            raise ValueRangeError(
+                f"The waveform reaches {low:g} … {high:g} %; "
+                f"the setpoint must stay within {lo:g} … {hi:g} %."
+            )
+
+    def value_at(self, t: np.ndarray | float) -> np.ndarray:
+        """Setpoint in % at time(s) ``t`` seconds after the generator started."""
+        phase = np.asarray(t, dtype=np.float64) / self.period
+        if self.waveform is Waveform.SINE:
+            return self.offset + self.amplitude * np.sin(2 * np.pi * phase)
+        if self.waveform is Waveform.SQUARE:
+            high = np.mod(phase, 1.0) >= 0.5
+        else:
+            high = phase >= 0.5
+        return self.offset + self.amplitude * high
+
+    def raw_at(self, t: float) -> int:
+        """The SETPOVR raw value at time ``t`` (clamped to the object's range)."""
+        param = CATALOGUE["SETPOVR"]
+        raw = param.to_raw(float(self.value_at(t)))
+        assert isinstance(raw, int)
+        return min(param.raw_max, max(param.raw_min, raw))
