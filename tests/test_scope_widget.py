@@ -4,9 +4,10 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
-from PySide6.QtCore import Qt
+from PySide6.QtCore import QCoreApplication, QEvent, Qt
 from scope_fakes import FakeConnection
 
+from prm9tool import i18n
 from prm9tool.document import ParameterDocument
 from prm9tool.scope import TriggerMode
 from prm9tool.signals import signals_for
@@ -309,3 +310,20 @@ def test_a_refused_stream_start_stops_and_says_why(qtbot, doc):
     assert widget.status.text() == (
         "The recording could not start: stream rate 3000 Hz: use 5000 Hz …"
     )
+
+
+def test_a_language_change_relabels_the_channels_and_keeps_the_data(scope, conn):
+    scope.preselect("position_actual")
+    scope.start()
+    conn.samples_received.emit(np.full((100, 1), 8192))
+    scope._redraw()
+    i18n.set_language("de")  # the catalogue texts follow current_language()
+    try:
+        QCoreApplication.sendEvent(scope, QEvent(QEvent.Type.LanguageChange))
+        assert "Schieberlage Ist" in scope.plot.axes[0].labelText
+        items = [scope.channels.list.item(r) for r in range(scope.channels.list.count())]
+        assert any(item.text() == "Schieberlage Ist (0x6301) [%]" for item in items)
+        assert scope.channels.selected() == ["position_actual"]
+        assert scope.capture.buffer.total == 100
+    finally:
+        i18n.set_language("en")

@@ -371,5 +371,11 @@ class ScopeWidget(QWidget):
                 panel.retranslate()
             self.step_panel.retranslate()
             self.generator_panel.retranslate()
+            signals = [BY_KEY[k] for k in self.channels.selected()]  # catalogue texts
+            self.plot.relabel(signals)
+            self.controls.set_channels(signals)
+            self.cursor_panel.set_channels(signals)
+            self.step_panel.set_channels(signals)
+            self.display.update_readouts()
             self._update_status()
         super().changeEvent(event)

@@ -168,16 +168,19 @@ class ScopePlot(QWidget):
             self.legend[slot].setVisible(used)
             self.curves[slot].setData([], [])
             self._auto[slot] = True
-            if used:
-                signal = signals[slot]
-                axis = self.axes[slot]
-                axis.setLabel(f"{text(signal.text)} [{signal.unit}]", color=COLOURS[slot])
-                axis.setTextPen(COLOURS[slot])
-                self.legend[slot].set_signal(signal)
-        if not signals:
-            self.axes[0].setLabel("")
         self._channels = len(signals)
         self._units = [s.unit for s in signals]
+        self.relabel(signals)
+
+    def relabel(self, signals: Sequence[MeasuringPoint]) -> None:
+        """Axis and legend names of the channels (also after a language change)."""
+        for slot, signal in enumerate(signals):
+            axis = self.axes[slot]
+            axis.setLabel(f"{text(signal.text)} [{signal.unit}]", color=COLOURS[slot])
+            axis.setTextPen(COLOURS[slot])
+            self.legend[slot].set_signal(signal)
+        if not signals:
+            self.axes[0].setLabel("")
 
     def set_time_axis(self, from_trigger: bool, window_s: float) -> None:
         """Label the time axis; windows under a second are labelled in milliseconds."""
