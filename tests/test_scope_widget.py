@@ -312,18 +312,15 @@ def test_a_refused_stream_start_stops_and_says_why(qtbot, doc):
     )
 
 
-def test_a_language_change_relabels_the_channels_and_keeps_the_data(scope, conn):
+def test_a_language_change_relabels_the_channels_and_keeps_the_data(scope, conn, monkeypatch):
     scope.preselect("position_actual")
     scope.start()
     conn.samples_received.emit(np.full((100, 1), 8192))
     scope._redraw()
-    i18n.set_language("de")  # the catalogue texts follow current_language()
-    try:
-        QCoreApplication.sendEvent(scope, QEvent(QEvent.Type.LanguageChange))
-        assert "Schieberlage Ist" in scope.plot.axes[0].labelText
-        items = [scope.channels.list.item(r) for r in range(scope.channels.list.count())]
-        assert any(item.text() == "Schieberlage Ist (0x6301) [%]" for item in items)
-        assert scope.channels.selected() == ["position_actual"]
-        assert scope.capture.buffer.total == 100
-    finally:
-        i18n.set_language("en")
+    monkeypatch.setattr(i18n, "current_language", lambda: "de")  # catalogue texts follow it
+    QCoreApplication.sendEvent(scope, QEvent(QEvent.Type.LanguageChange))
+    assert "Schieberlage Ist" in scope.plot.axes[0].labelText
+    items = [scope.channels.list.item(r) for r in range(scope.channels.list.count())]
+    assert any(item.text() == "Schieberlage Ist (0x6301) [%]" for item in items)
+    assert scope.channels.selected() == ["position_actual"]
+    assert scope.capture.buffer.total == 100
