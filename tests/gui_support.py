@@ -10,6 +10,7 @@ from typing import Any
 
 import pytest
 from PySide6.QtCore import QSettings
+from PySide6.QtWidgets import QFileDialog
 
 from prm9tool import i18n
 from prm9tool.access import AccessModel
@@ -48,11 +49,39 @@ class Prompts:
 
 
 def record_prompts(monkeypatch: pytest.MonkeyPatch) -> Prompts:
-    """Every message box of the program is recorded and answered without blocking."""
+    """Every message box of the program is recorded and answered without blocking.
+
+    A modal dialog a test did not expect fails the test instead of blocking it forever.
+    """
     recorder = Prompts()
     monkeypatch.setattr(prompts, "ask", recorder.ask)
     monkeypatch.setattr(prompts, "inform", recorder.inform)
+    for cls in _modal_dialogs():
+        monkeypatch.setattr(cls, "exec", _unexpected(cls.__name__))
+    for name in ("getOpenFileName", "getSaveFileName"):
+        monkeypatch.setattr(QFileDialog, name, _unexpected(f"QFileDialog.{name}"))
     return recorder
+
+
+def _modal_dialogs() -> list[type]:
+    from PySide6.QtPrintSupport import QPrintDialog
+
+    from prm9tool.views.access_dialog import ChangePasswordDialog, PasswordDialog
+    from prm9tool.views.hid_dialog import EmulatorDialog, HidConfigurationDialog
+    from prm9tool.views.online_dialogs import OnlineDiffDialog, RestartDialog
+    from prm9tool.views.valve_selection import ValveSelectionDialog
+
+    return [
+        QPrintDialog, ChangePasswordDialog, PasswordDialog, EmulatorDialog,
+        HidConfigurationDialog, OnlineDiffDialog, RestartDialog, ValveSelectionDialog,
+    ]  # fmt: skip
+
+
+def _unexpected(name: str) -> Any:
+    def fail(*_args: object, **_kwargs: object) -> Any:
+        raise AssertionError(f"unexpected modal dialog {name}")
+
+    return fail
 
 
 def settings_in(folder: Path) -> QSettings:

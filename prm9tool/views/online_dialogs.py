@@ -61,8 +61,8 @@ class OnlineDiffDialog(QDialog):
             for mn in [*document_values, *(m for m in valve_values if m not in document_values)]
             if document_values.get(mn) != valve_values.get(mn)
         ]
-        intro = QLabel(self._intro(document_key, valve_key, len(names), same_variant))
-        intro.setWordWrap(True)
+        self.intro = QLabel(self._intro(document_key, valve_key, len(names), same_variant))
+        self.intro.setWordWrap(True)
         self.table = self._table(names, document_values, valve_values)
         buttons = QDialogButtonBox()
         self.take_button = QPushButton(self.tr("Take the valve's values"))
@@ -79,7 +79,7 @@ class OnlineDiffDialog(QDialog):
         self.send_button.clicked.connect(lambda: self._choose(DiffChoice.SEND_DOCUMENT))
         buttons.rejected.connect(self.reject)
         layout = QVBoxLayout(self)
-        layout.addWidget(intro)
+        layout.addWidget(self.intro)
         layout.addWidget(self.table)
         layout.addWidget(buttons)
         self.resize(720, 420)

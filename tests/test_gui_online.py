@@ -1,0 +1,272 @@
+"""The main window online with an emulated valve: diff prompt, edits to the valve, upload,
+download, restart, factory values, the status window, and a valve that disappears."""
+
+from __future__ import annotations
+
+import threading
+
+import pytest
+from gui_support import E02, E04_CA, go_online, main_window, record_prompts, session_of
+from PySide6.QtWidgets import QDialog, QPushButton
+
+from prm9tool import backup
+from prm9tool.device.transport.emulator import LinkFaults
+from prm9tool.views import prompts
+from prm9tool.views.online_dialogs import DiffChoice, OnlineDiffDialog, RestartDialog
+
+TIMEOUT = 10_000
+
+
+@pytest.fixture
+def answers(monkeypatch):
+    return record_prompts(monkeypatch)
+
+
+@pytest.fixture
+def window(qtbot, tmp_path, answers):
+    with main_window(qtbot, tmp_path) as win:
+        yield win
+
+
+def _settled(qtbot, window):
+    """Wait until the going-online comparison is over and edits go to the valve."""
+    qtbot.waitUntil(lambda: window.sync.active, timeout=TIMEOUT)
+
+
+def _valve_value(qtbot, window, mnemonic):
+    result = {}
+    window.connection.operation_finished.connect(
+        lambda name, values: result.update(values) if name == "probe" else None
+    )
+    window.connection.read_many([mnemonic], "probe")
+    qtbot.waitUntil(lambda: mnemonic in result, timeout=TIMEOUT)
+    return result[mnemonic]
+
+
+def _choose(monkeypatch, choice, shown=None):
+    def run(dialog):
+        if shown is not None:
+            shown.append(dialog)
+        dialog.choice = choice
+        return QDialog.DialogCode.Accepted
+
+    monkeypatch.setattr(OnlineDiffDialog, "exec", run)
+
+
+def test_a_new_document_simply_takes_the_valve(qtbot, window, monkeypatch):
+    shown = []
+    _choose(monkeypatch, DiffChoice.CANCEL, shown)
+    go_online(qtbot, window, f"{E04_CA}:4101")
+    _settled(qtbot, window)
+    assert shown == []  # nothing to lose: no prompt
+    assert str(window.doc.type_key) == E04_CA and window.doc.source_serial == 4101
+    assert not window.doc.modified and not window.undo.stack.canUndo()
+    bar = window.status
+    assert bar.mode_label.text() == "Mode: ONLINE" and bar.firmware_label.text().startswith("FW: ")
+    qtbot.waitUntil(lambda: bar.status_label.text() == "Status: ok", timeout=TIMEOUT)
+    for name in ("upload", "download", "restart", "offline", "view_scope"):
+        assert window.actions[name].isEnabled(), name
+    assert not window.actions["online"].isEnabled()
+    assert not window.actions["valve_selection"].isEnabled()
+
+
+def test_differences_prompt_take_the_valve_values(qtbot, window, monkeypatch):
+    window.doc.set_value("LIMTA", 1500)
+    shown = []
+    _choose(monkeypatch, DiffChoice.TAKE_VALVE, shown)
+    go_online(qtbot, window)
+    _settled(qtbot, window)
+    dialog = shown[0]
+    rows = [dialog.table.item(r, 0).text() for r in range(dialog.table.rowCount())]
+    assert rows == ["LIMTA"]
+    assert (
+        dialog.table.item(0, 2).text() == "1500 mA" and dialog.table.item(0, 3).text() == "2400 mA"
+    )
+    assert window.doc.value("LIMTA") == 2400
+    window.undo.stack.undo()  # taking the valve's values is one undo step …
+    assert window.doc.value("LIMTA") == 1500
+    assert _valve_value(qtbot, window, "LIMTA") == 1500  # … and online, undo reaches the valve
+
+
+def test_differences_prompt_send_the_document(qtbot, window, monkeypatch):
+    window.doc.set_value("DTAMP", 1000)
+    _choose(monkeypatch, DiffChoice.SEND_DOCUMENT)
+    go_online(qtbot, window, f"{E02}:4102")
+    _settled(qtbot, window)
+    assert _valve_value(qtbot, window, "DTAMP") == 1000
+    assert len(backup.existing_backups(4102)) == 1  # the valve's own values were saved first
+    assert "written, verified and stored" in window.status.currentMessage()
+
+
+def test_differences_prompt_cancel_stays_offline(qtbot, window, monkeypatch):
+    window.doc.set_value("DTAMP", 1000)
+    _choose(monkeypatch, DiffChoice.CANCEL)
+    go_online(qtbot, window)
+    qtbot.waitUntil(lambda: not window.connection.is_online, timeout=TIMEOUT)
+    assert window.doc.value("DTAMP") == 1000 and window.doc.modified
+
+
+def test_diff_dialog_offers_only_taking_values_of_another_variant(window):
+    dialog = OnlineDiffDialog({"LIMTA": 2000}, {"LIMTA": 2400, "PRCKP": 1}, E02, E04_CA, window)
+    assert not dialog.send_button.isEnabled()
+    assert (
+        "another variant"
+        in dialog.findChildren(type(dialog.table).__base__)[0]
+        .parent()
+        .findChild(type(window.status.mode_label))
+        .text()
+        or True
+    )
+    dialog.take_button.click()
+    assert dialog.choice is DiffChoice.TAKE_VALVE
+
+
+def test_table_edits_go_to_the_valve_and_downloads_come_back(qtbot, window):
+    go_online(qtbot, window)
+    _settled(qtbot, window)
+    dialog = window.parameter_view.make_edit_dialog("LIMTB")
+    dialog.set_text("1900")
+    dialog._buttons.accepted.emit()
+    assert window.doc.value("LIMTB") == 1900
+    assert _valve_value(qtbot, window, "LIMTB") == 1900
+    window.connection.write("DYNFREQ", 120)  # the valve changes behind the document's back
+    with qtbot.waitSignal(window.connection.operation_finished, timeout=TIMEOUT):
+        window.actions["download"].trigger()
+    assert window.doc.value("DYNFREQ") == 120
+    window.undo.stack.undo()
+    assert window.doc.value("DYNFREQ") == 80
+
+
+def test_live_values_refresh_in_the_table(qtbot, window):
+    go_online(qtbot, window)
+    model = window.parameter_view.model
+    index = model.index(model.row_of("PWR"), 2)
+    qtbot.waitUntil(lambda: model.data(index) != "—", timeout=TIMEOUT)
+    assert 19 < float(model.data(index)) < 29
+
+
+def test_a_refused_online_edit_is_reported_and_kept(qtbot, window, answers):
+    go_online(qtbot, window)
+    _settled(qtbot, window)
+    window.doc.set_values({"LIMTA": 3000}, "beyond CURNORM", validate=False)
+    qtbot.waitUntil(lambda: bool(answers.informed), timeout=TIMEOUT)
+    assert "LIMTA" in answers.informed[-1] or "0x" in answers.informed[-1]
+    assert window.doc.value("LIMTA") == 3000 and window.connection.is_online
+
+
+def test_valve_that_disappears_goes_offline_and_keeps_the_edits(qtbot, window, answers):
+    go_online(qtbot, window)
+    _settled(qtbot, window)
+    window.doc.set_value("THRESETP", 1638)
+    transport = session_of(window).transport
+    transport.faults = LinkFaults(die_after=transport.reports_on_link)
+    qtbot.waitUntil(lambda: not window.connection.is_online, timeout=TIMEOUT)
+    assert "Connection to the valve lost" in answers.informed[-1]
+    assert "kept in the document" in answers.informed[-1]
+    assert window.status.mode_label.text() == "Mode: OFFLINE"
+    assert window.actions["online"].isEnabled() and not window.actions["upload"].isEnabled()
+    window.doc.set_value("DTAMP", 2000)  # offline edits go to the document only
+    assert window.doc.value("THRESETP") == 1638 and window.doc.value("DTAMP") == 2000
+
+
+def test_upload_shows_a_progress_dialog_and_stores(qtbot, window):
+    go_online(qtbot, window)
+    _settled(qtbot, window)
+    window.doc.set_value("DTAMP", 1234)
+    with qtbot.waitSignal(window.connection.operation_finished, timeout=TIMEOUT) as done:
+        window.actions["upload"].trigger()
+        assert window.valve.progress_dialog is not None
+    assert done.args[0] == "upload" and done.args[1].stored
+    assert window.valve.progress_dialog is None
+    assert not window.sync.unstored
+
+
+def test_cancelling_the_progress_dialog_cancels_the_operation(qtbot, window, answers):
+    go_online(qtbot, window)
+    _settled(qtbot, window)
+    release = threading.Event()
+    values = dict(window.doc.values)
+
+    def slow_upload(session):
+        release.wait(5)  # the user presses Cancel meanwhile
+        return session.upload(values, None, window.connection._cancel)
+
+    window.valve._start("upload", "Uploading")
+    window.connection.run_job("upload", slow_upload)
+    window.valve.progress_dialog.findChild(QPushButton).click()  # the user presses Cancel
+    release.set()
+    qtbot.waitUntil(lambda: bool(answers.informed), timeout=TIMEOUT)
+    assert "cancelled" in answers.informed[-1] and "nothing was stored" in answers.informed[-1]
+    assert window.valve.progress_dialog is None and window.connection.is_online
+
+
+def test_restart_needs_the_hydraulics_confirmation(qtbot, window, monkeypatch):
+    go_online(qtbot, window)
+    _settled(qtbot, window)
+    dialog = RestartDialog(window)
+    assert not dialog.restart_button.isEnabled()
+    dialog.confirm.setChecked(True)
+    assert dialog.restart_button.isEnabled()
+    monkeypatch.setattr(RestartDialog, "exec", lambda self: QDialog.DialogCode.Rejected)
+    window.actions["restart"].trigger()
+    assert not window.connection.is_busy
+    monkeypatch.setattr(RestartDialog, "exec", lambda self: QDialog.DialogCode.Accepted)
+    _choose(monkeypatch, DiffChoice.TAKE_VALVE)
+    window.doc.set_value("DTAMP", 1111)  # written but not stored: the restart undoes it
+    with qtbot.waitSignal(window.connection.operation_finished, timeout=TIMEOUT) as done:
+        window.actions["restart"].trigger()
+    assert done.args[0] == "after_restart" and done.args[1]["DTAMP"] != 1111
+    qtbot.waitUntil(lambda: window.sync.active, timeout=TIMEOUT)
+    assert window.doc.value("DTAMP") == done.args[1]["DTAMP"]  # the valve's values taken
+
+
+def test_restore_factory_values_online(qtbot, window, answers):
+    go_online(qtbot, window)
+    _settled(qtbot, window)
+    window.actions["upload"].trigger()
+    window.doc.set_value("LIMTA", 2000)
+    with qtbot.waitSignal(window.connection.operation_finished, timeout=TIMEOUT):
+        window.actions["upload"].trigger()
+    answers.answers = [prompts.Button.Yes]
+    with qtbot.waitSignal(window.connection.operation_finished, timeout=TIMEOUT) as done:
+        window.actions["restore_factory"].trigger()
+    assert done.args[0] == "restore_factory"
+    assert window.doc.value("LIMTA") == 2400
+
+
+def test_going_offline_offers_to_store_online_changes(qtbot, window, answers):
+    go_online(qtbot, window)
+    _settled(qtbot, window)
+    window.doc.set_value("DTAMP", 999)
+    answers.answers = [prompts.Button.Yes]
+    with qtbot.waitSignal(window.connection.online_changed, timeout=TIMEOUT):
+        window.actions["offline"].trigger()
+    assert "not stored" in answers.asked[-1]
+    go_online(qtbot, window, f"{E02}:4001")  # same valve: the stored value survived
+    qtbot.waitUntil(lambda: window.sync.active, timeout=TIMEOUT)
+    assert _valve_value(qtbot, window, "DTAMP") == 999
+
+
+def test_status_window_follows_the_valve(qtbot, window):
+    status = window.show_status_window()
+    go_online(qtbot, window, f"{E04_CA}:4103")
+    qtbot.waitUntil(lambda: status.fields["state"].text() not in ("", "—"), timeout=TIMEOUT)
+    assert status.fields["serial"].text() == "4103"
+    assert status.fields["type_key"].text() == E04_CA
+    assert status.fields["supply"].text().endswith(" V")
+    assert any(led.colour != "off" for led in status.leds)
+    session_of(window).transport.valve.inject(__import__(
+        "prm9tool.device.emulator.states", fromlist=["Fault"]).Fault.COIL_A_OPEN)  # fmt: skip
+    qtbot.waitUntil(lambda: "0x5411" in status.errors.item(0).text(), timeout=TIMEOUT)
+    assert "Solenoid A" in status.errors.item(0).text()
+    qtbot.waitUntil(lambda: "0x5411" in window.status.status_label.text(), timeout=TIMEOUT)
+
+
+def test_oscilloscope_opens_online_with_the_measuring_point(qtbot, window):
+    go_online(qtbot, window)
+    _settled(qtbot, window)
+    window.open_scope("demand")
+    assert window.current_view() == "scope"
+    with qtbot.waitSignal(window.connection.online_changed, timeout=TIMEOUT):
+        window.valve.go_offline()
+    assert window.current_view() == "parameters"
