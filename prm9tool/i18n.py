@@ -10,7 +10,7 @@ from __future__ import annotations
 
 from pathlib import Path
 
-from PySide6.QtCore import QCoreApplication, QLibraryInfo, QLocale, QTranslator
+from PySide6.QtCore import QCoreApplication, QEvent, QLibraryInfo, QLocale, QTranslator
 
 from prm9tool.catalogue.schema import Texts
 
@@ -60,6 +60,9 @@ def set_language(language: str) -> None:
     for translator in translators:
         QCoreApplication.installTranslator(translator)
     QLocale.setDefault(QLocale(language))
+    # Deliver the LanguageChange events now, so every open window shows the new language
+    # when this call returns (not at the next turn of the event loop).
+    QCoreApplication.sendPostedEvents(None, QEvent.Type.LanguageChange)
 
 
 def _installed() -> list[QTranslator]:

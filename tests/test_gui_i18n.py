@@ -1,0 +1,125 @@
+"""Languages: complete German and Czech translations, switched at run time and remembered."""
+
+from __future__ import annotations
+
+import shutil
+import subprocess
+import xml.etree.ElementTree as ET
+from pathlib import Path
+
+import pytest
+from gui_support import main_window, record_prompts
+from PySide6.QtCore import Qt
+from PySide6.QtWidgets import QDialogButtonBox
+
+from prm9tool import i18n
+from prm9tool.views.parameter_model import Column
+
+ROOT = Path(__file__).resolve().parent.parent
+TS = {lang: ROOT / "translations" / f"prm9tool_{lang}.ts" for lang in ("de", "cs")}
+
+
+def _tool(name: str) -> str:
+    path = shutil.which(name) or str(Path(__import__("sys").executable).parent / name)
+    if not Path(path).exists():
+        pytest.skip(f"{name} is not installed")
+    return path
+
+
+def _messages(path: Path) -> dict[tuple[str, str], ET.Element]:
+    root = ET.parse(path).getroot()
+    return {
+        (context.findtext("name") or "", message.findtext("source") or ""): message
+        for context in root.iter("context")
+        for message in context.iter("message")
+        if message.find("translation").get("type") not in ("vanished", "obsolete")
+    }
+
+
+@pytest.fixture
+def window(qtbot, tmp_path, monkeypatch):
+    record_prompts(monkeypatch)
+    with main_window(qtbot, tmp_path) as win:
+        yield win
+
+
+@pytest.mark.parametrize("language", ["de", "cs"])
+def test_every_text_is_translated(language):
+    unfinished = [
+        source
+        for (_context, source), message in _messages(TS[language]).items()
+        if message.find("translation").get("type") == "unfinished"
+        or not "".join(message.find("translation").itertext()).strip()
+    ]
+    assert unfinished == []
+
+
+def test_the_translations_cover_every_text_of_the_program(tmp_path):
+    sources = sorted(str(p) for p in (ROOT / "prm9tool").rglob("*.py"))
+    fresh = tmp_path / "fresh.ts"
+    subprocess.run(
+        [_tool("pyside6-lupdate"), *sources, "-ts", str(fresh)],
+        check=True,
+        capture_output=True,
+        timeout=120,
+    )
+    wanted = set(_messages(fresh))
+    for language, path in TS.items():
+        assert wanted - set(_messages(path)) == set(), language
+
+
+@pytest.mark.parametrize("language", ["de", "cs"])
+def test_shipped_qm_files_are_compiled_from_the_ts_files(tmp_path, language):
+    compiled = tmp_path / f"prm9tool_{language}.qm"
+    subprocess.run(
+        [_tool("pyside6-lrelease"), str(TS[language]), "-qm", str(compiled)],
+        check=True,
+        capture_output=True,
+        timeout=60,
+    )
+    shipped = i18n.translations_dir() / f"prm9tool_{language}.qm"
+    assert shipped.read_bytes() == compiled.read_bytes()
+
+
+def test_switching_to_german_changes_visible_texts_at_once(window):
+    window.show_view("parameters")
+    model = window.parameter_view.model
+    window.actions.language_actions["de"].trigger()
+    assert i18n.current_language() == "de"
+    assert window.actions.menus["file"].title() == "&Datei"
+    assert window.actions["online"].text() == "O&nline-Modus"
+    assert window.status.mode_label.text() == "Modus: OFFLINE"
+    assert model.headerData(Column.VALUE, Qt.Orientation.Horizontal) == "Wert"
+    row = model.row_of("PWR")
+    assert model.data(model.index(row, Column.DESCRIPTION)) == "Versorgungsspannung"
+    assert window.parameter_view.modified_only.text() == "Nur geänderte"
+    assert window.settings.value("language") == "de"
+
+
+def test_czech_uses_the_manuals_terms(window):
+    window.set_language("cs")
+    titles = [a.text() for a in window.menuBar().actions()]
+    assert titles == ["&Soubor", "Ná&hled", "&Ventil", "&Komunikace", "&Nápověda"]
+    assert window.actions["view_diagram"].text() == "&Postupový diagram"
+    assert window.status.file_label.text() == "nepojmenovaná"
+    window.set_language("en")
+    assert window.actions.menus["file"].title() == "&File"
+
+
+def test_qt_own_dialog_texts_are_translated_too(window):
+    window.set_language("de")
+    box = QDialogButtonBox(QDialogButtonBox.StandardButton.Cancel)
+    assert box.button(QDialogButtonBox.StandardButton.Cancel).text() == "Abbrechen"
+
+
+def test_open_dialogs_follow_the_language(window):
+    help_window = window.show_help()
+    status = window.show_status_window()
+    window.set_language("de")
+    assert status.windowTitle() == "Ventilstatus"
+    assert "Berechtigungsstufen" in help_window.browser.toPlainText()
+
+
+def test_unknown_language_is_refused():
+    with pytest.raises(ValueError, match="unknown language 'fr'"):
+        i18n.set_language("fr")
