@@ -27,6 +27,7 @@ from prm9tool.catalogue import CATALOGUE
 from prm9tool.document import ParameterDocument
 from prm9tool.i18n import text
 from prm9tool.signals import BY_KEY
+from prm9tool.tuning import StepSimulator
 from prm9tool.views.diagram.dialogs import BlockContext, create_block_dialog
 from prm9tool.views.diagram.layout import layout_for
 from prm9tool.views.diagram.scene import DiagramScene
@@ -73,9 +74,8 @@ class DiagramView(QGraphicsView):
     ) -> None:
         super().__init__(parent)
         self._doc, self._access, self._connection = document, access, connection
-        self._simulator_factory = (
-            simulator_factory if simulator_factory is not None else _default_simulator()
-        )
+        # the controller dialogs' step responses (tests inject a stand-in)
+        self._simulator_factory = simulator_factory or StepSimulator.for_document
         self._dialogs: dict[str, QWidget] = {}
         self._fit = True
         self._scene: DiagramScene | None = None
@@ -316,10 +316,3 @@ class DiagramView(QGraphicsView):
             self._refresh_blocks()
             self._refresh_dots()
         super().changeEvent(event)
-
-
-def _default_simulator() -> Callable[[ParameterDocument, str], Any] | None:
-    """The emulator-backed step-response simulator (model layer), if it can be imported."""
-    from prm9tool.tuning import StepSimulator
-
-    return StepSimulator.for_document
