@@ -102,15 +102,17 @@ class StepResponse:
     def summary(self) -> str:
         """One line for the dialog: overshoot, rise time, settling time, remaining error."""
         f = self.figures()
-        tr = QCoreApplication.translate
+        translate = QCoreApplication.translate  # the name pyside6-lupdate looks for
 
         def ms(value: float | None) -> str:
             return (
-                tr("StepResponse", "not reached") if value is None else f"{value * 1000.0:.1f} ms"
+                translate("StepResponse", "not reached")
+                if value is None
+                else f"{value * 1000.0:.1f} ms"
             )
 
         return (
-            tr(
+            translate(
                 "StepResponse",
                 "Step %1 %: overshoot %2 %, rise time %3, settling (±2 %) %4, remaining error %5 %",
             )

@@ -33,8 +33,6 @@ MARGIN = 46.0
 SUM_R = 9.0  # radius of a summing junction
 DOT_STEP = 19.0  # vertical distance of stacked measuring points
 
-_CTX = "DiagramBlock"
-
 
 @dataclass(frozen=True)
 class BlockSpec:
@@ -106,43 +104,105 @@ CANOPEN = ("NODEID", "BITRATE", "CANTERM")
 
 def _chain(variant: Variant) -> list[BlockSpec]:
     e04 = variant.config is Config.E04
-    t = QT_TRANSLATE_NOOP
     blocks = [
-        BlockSpec("setpoint_input", t(_CTX, "Setpoint input"), SETPOINT_INPUT, 0, 1),
-        BlockSpec("threshold", t(_CTX, "Threshold"), THRESHOLD, 1, 1),
+        BlockSpec(
+            "setpoint_input",
+            QT_TRANSLATE_NOOP("DiagramBlock", "Setpoint input"),
+            SETPOINT_INPUT,
+            0,
+            1,
+        ),
+        BlockSpec("threshold", QT_TRANSLATE_NOOP("DiagramBlock", "Threshold"), THRESHOLD, 1, 1),
     ]
     if not e04:
-        blocks.append(BlockSpec("gain_offset", t(_CTX, "Gain & offset"), GAIN_OFFSET, 2, 1))
+        blocks.append(
+            BlockSpec(
+                "gain_offset", QT_TRANSLATE_NOOP("DiagramBlock", "Gain & offset"), GAIN_OFFSET, 2, 1
+            )
+        )
     lin_col = 2 if e04 else 3
     blocks += [
-        BlockSpec("setpoint_linearization", t(_CTX, "Linearization"), SETPOINT_LIN, lin_col, 1),
-        BlockSpec("ramps", t(_CTX, "Ramps"), RAMPS, lin_col + 1, 1),
+        BlockSpec(
+            "setpoint_linearization",
+            QT_TRANSLATE_NOOP("DiagramBlock", "Linearization"),
+            SETPOINT_LIN,
+            lin_col,
+            1,
+        ),
+        BlockSpec("ramps", QT_TRANSLATE_NOOP("DiagramBlock", "Ramps"), RAMPS, lin_col + 1, 1),
     ]
     if e04:
         blocks += [
-            BlockSpec("gain_offset", t(_CTX, "Deviation gain & offset"), GAIN_OFFSET, 4, 1),
-            BlockSpec("process_controller", t(_CTX, "Process PIDT1"), PROCESS_PIDT1, 0, 2),
-            BlockSpec("ext_sensor", t(_CTX, "External sensor"), SENSOR_INPUT, 1, 0),
-            BlockSpec("ext_sensor_scaling", t(_CTX, "Sensor offset & gain"), SENSOR_SCALING, 2, 0),
             BlockSpec(
-                "ext_sensor_linearization", t(_CTX, "Sensor linearization"), SENSOR_LIN, 3, 0
+                "gain_offset",
+                QT_TRANSLATE_NOOP("DiagramBlock", "Deviation gain & offset"),
+                GAIN_OFFSET,
+                4,
+                1,
+            ),
+            BlockSpec(
+                "process_controller",
+                QT_TRANSLATE_NOOP("DiagramBlock", "Process PIDT1"),
+                PROCESS_PIDT1,
+                0,
+                2,
+            ),
+            BlockSpec(
+                "ext_sensor",
+                QT_TRANSLATE_NOOP("DiagramBlock", "External sensor"),
+                SENSOR_INPUT,
+                1,
+                0,
+            ),
+            BlockSpec(
+                "ext_sensor_scaling",
+                QT_TRANSLATE_NOOP("DiagramBlock", "Sensor offset & gain"),
+                SENSOR_SCALING,
+                2,
+                0,
+            ),
+            BlockSpec(
+                "ext_sensor_linearization",
+                QT_TRANSLATE_NOOP("DiagramBlock", "Sensor linearization"),
+                SENSOR_LIN,
+                3,
+                0,
             ),
         ]
     blocks += [
-        BlockSpec("position_controller", t(_CTX, "Position PIDT1"), POSITION_PIDT1, 1, 2),
-        BlockSpec("current_limit", t(_CTX, "Current limiter"), CURRENT_LIMIT, 2, 2),
-        BlockSpec("dither", t(_CTX, "Dither"), DITHER, 3, 2),
-        BlockSpec("valve", t(_CTX, "Valve"), (), 4, 2),
+        BlockSpec(
+            "position_controller",
+            QT_TRANSLATE_NOOP("DiagramBlock", "Position PIDT1"),
+            POSITION_PIDT1,
+            1,
+            2,
+        ),
+        BlockSpec(
+            "current_limit",
+            QT_TRANSLATE_NOOP("DiagramBlock", "Current limiter"),
+            CURRENT_LIMIT,
+            2,
+            2,
+        ),
+        BlockSpec("dither", QT_TRANSLATE_NOOP("DiagramBlock", "Dither"), DITHER, 3, 2),
+        BlockSpec("valve", QT_TRANSLATE_NOOP("DiagramBlock", "Valve"), (), 4, 2),
     ]
     return blocks
 
 
 def _header(variant: Variant) -> list[BlockSpec]:
-    t = QT_TRANSLATE_NOOP
     blocks = []
     if variant.canopen:
-        blocks.append(BlockSpec("canopen", t(_CTX, "CANopen"), CANOPEN, 0, 0, compact=True))
-    blocks.append(BlockSpec("supply", t(_CTX, "Supply"), (), 4, 0, info=True, compact=True))
+        blocks.append(
+            BlockSpec(
+                "canopen", QT_TRANSLATE_NOOP("DiagramBlock", "CANopen"), CANOPEN, 0, 0, compact=True
+            )
+        )
+    blocks.append(
+        BlockSpec(
+            "supply", QT_TRANSLATE_NOOP("DiagramBlock", "Supply"), (), 4, 0, info=True, compact=True
+        )
+    )
     return blocks
 
 

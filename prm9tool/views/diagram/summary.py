@@ -10,12 +10,10 @@ from prm9tool.catalogue import CATALOGUE
 from prm9tool.document import ParameterDocument
 from prm9tool.i18n import current_language
 
-_CTX = "DiagramSummary"
 NO_VALUE = "—"
 
 
-def _tr(text: str) -> str:
-    return QCoreApplication.translate(_CTX, text)
+translate = QCoreApplication.translate  # the name pyside6-lupdate looks for
 
 
 def value_text(doc: ParameterDocument, mnemonic: str) -> str:
@@ -39,12 +37,12 @@ def _has(doc: ParameterDocument, mnemonic: str) -> bool:
 def _setpoint_input(doc: ParameterDocument) -> list[str]:
     return [
         value_text(doc, "AINSETP"),
-        _tr("Polarity: %1").replace("%1", value_text(doc, "INVERSEP")),
+        translate("DiagramSummary", "Polarity: %1").replace("%1", value_text(doc, "INVERSEP")),
     ]
 
 
 def _threshold(doc: ParameterDocument) -> list[str]:
-    return [_tr("Threshold %1").replace("%1", value_text(doc, "THRESETP"))]
+    return [translate("DiagramSummary", "Threshold %1").replace("%1", value_text(doc, "THRESETP"))]
 
 
 def _pair(doc: ParameterDocument, pos: str, neg: str, unit: str) -> str:
@@ -55,15 +53,23 @@ def _pair(doc: ParameterDocument, pos: str, neg: str, unit: str) -> str:
 
 def _gain_offset(doc: ParameterDocument) -> list[str]:
     return [
-        _tr("Gain %1").replace("%1", _pair(doc, "GAINSETPOS", "GAINSETNEG", "")),
-        _tr("Offset %1").replace("%1", _pair(doc, "OFFSETPOS", "OFFSETNEG", " %")),
+        translate("DiagramSummary", "Gain %1").replace(
+            "%1", _pair(doc, "GAINSETPOS", "GAINSETNEG", "")
+        ),
+        translate("DiagramSummary", "Offset %1").replace(
+            "%1", _pair(doc, "OFFSETPOS", "OFFSETNEG", " %")
+        ),
     ]
 
 
 def _linearization(switch: str, on_value: int) -> Callable[[ParameterDocument], list[str]]:
     def lines(doc: ParameterDocument) -> list[str]:
         on = doc.value(switch) == on_value
-        return [_tr("9-point curve on") if on else _tr("off (1:1)")]
+        return [
+            translate("DiagramSummary", "9-point curve on")
+            if on
+            else translate("DiagramSummary", "off (1:1)")
+        ]
 
     return lines
 
@@ -87,7 +93,9 @@ def _pidt1(prefix: str) -> Callable[[ParameterDocument], list[str]]:
 
 def _current_limit(doc: ParameterDocument) -> list[str]:
     return [
-        _tr("Coil %1: %2").replace("%1", coil).replace("%2", value_text(doc, f"LIMT{coil}"))
+        translate("DiagramSummary", "Coil %1: %2")
+        .replace("%1", coil)
+        .replace("%2", value_text(doc, f"LIMT{coil}"))
         for coil in "AB"
         if _has(doc, f"LIMT{coil}")
     ]
@@ -95,15 +103,19 @@ def _current_limit(doc: ParameterDocument) -> list[str]:
 
 def _dither(doc: ParameterDocument) -> list[str]:
     return [
-        _tr("Amplitude %1").replace("%1", value_text(doc, "DTAMP")),
-        _tr("Frequency %1").replace("%1", value_text(doc, "DYNFREQ")),
+        translate("DiagramSummary", "Amplitude %1").replace("%1", value_text(doc, "DTAMP")),
+        translate("DiagramSummary", "Frequency %1").replace("%1", value_text(doc, "DYNFREQ")),
     ]
 
 
 def _valve(doc: ParameterDocument) -> list[str]:
     key = str(doc.type_key)
     head, _, tail = key.partition("-24")
-    coils = {"AB": _tr("coils A and B"), "A": _tr("coil A only"), "B": _tr("coil B only")}
+    coils = {
+        "AB": translate("DiagramSummary", "coils A and B"),
+        "A": translate("DiagramSummary", "coil A only"),
+        "B": translate("DiagramSummary", "coil B only"),
+    }
     lines = [head, f"24{tail}"] if tail else [key]
     return [*lines, coils[doc.variant.coils.value]]
 
@@ -111,25 +123,30 @@ def _valve(doc: ParameterDocument) -> list[str]:
 def _sensor_input(doc: ParameterDocument) -> list[str]:
     return [
         value_text(doc, "SENSTYPE"),
-        _tr("Polarity: %1").replace("%1", value_text(doc, "SENSINV")),
+        translate("DiagramSummary", "Polarity: %1").replace("%1", value_text(doc, "SENSINV")),
     ]
 
 
 def _sensor_scaling(doc: ParameterDocument) -> list[str]:
     return [
-        _tr("Offset %1").replace("%1", value_text(doc, "SENSOFFS")),
-        _tr("Gain %1").replace("%1", value_text(doc, "SENSGAIN")),
+        translate("DiagramSummary", "Offset %1").replace("%1", value_text(doc, "SENSOFFS")),
+        translate("DiagramSummary", "Gain %1").replace("%1", value_text(doc, "SENSGAIN")),
     ]
 
 
 def _supply(doc: ParameterDocument) -> list[str]:
-    return [_tr("Voltage, temperature"), _tr("(live values)")]
+    return [
+        translate("DiagramSummary", "Voltage, temperature"),
+        translate("DiagramSummary", "(live values)"),
+    ]
 
 
 def _canopen(doc: ParameterDocument) -> list[str]:
     return [
-        _tr("Node ID %1 (switch 0)").replace("%1", value_text(doc, "NODEID")),
-        _tr("Terminator %1").replace("%1", value_text(doc, "CANTERM")),
+        translate("DiagramSummary", "Node ID %1 (switch 0)").replace(
+            "%1", value_text(doc, "NODEID")
+        ),
+        translate("DiagramSummary", "Terminator %1").replace("%1", value_text(doc, "CANTERM")),
     ]
 
 
