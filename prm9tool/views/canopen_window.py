@@ -287,7 +287,8 @@ class CanopenWindow(QDialog):
         else:
             prefix = self.tr("The valve uses:")
         if not settings.can_enabled:
-            return f"{prefix} {self.tr('CANopen off (analog setpoint only).')}"
+            off = self.tr("CANopen off (analog setpoint only).")
+            return f"{prefix} {off}"
         terminator = self.tr("on") if settings.terminator else self.tr("off")
         details = (
             self.tr("node ID %1, %2, terminator %3.")
