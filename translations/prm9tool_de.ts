@@ -2,24 +2,6 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="de_DE">
     <context>
-        <name />
-        <message>
-            <location filename="../prm9tool/tuning.py" line="109" />
-            <source>StepResponse</source>
-            <comment>not reached</comment>
-            <translation>Sprungantwort</translation>
-        </message>
-        <message numerus="yes">
-            <location filename="../prm9tool/tuning.py" line="114" />
-            <source>StepResponse</source>
-            <comment>Step %1 %: overshoot %2 %, rise time %3, settling (±2 %) %4, remaining error %5 %</comment>
-            <translation type="unfinished">
-                <numerusform />
-                <numerusform />
-            </translation>
-        </message>
-    </context>
-    <context>
         <name>BlockDialog</name>
         <message>
             <location filename="../prm9tool/views/diagram/dialogs/base.py" line="211" />
@@ -480,6 +462,172 @@
             <location filename="../prm9tool/views/diagram/scene.py" line="107" />
             <source>spool position (LVDT)</source>
             <translation>Schieberposition (LVDT)</translation>
+        </message>
+        <message>
+            <location filename="../prm9tool/views/diagram/layout.py" line="110" />
+            <source>Setpoint input</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <location filename="../prm9tool/views/diagram/layout.py" line="111" />
+            <source>Threshold</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <location filename="../prm9tool/views/diagram/layout.py" line="114" />
+            <source>Gain &amp; offset</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <location filename="../prm9tool/views/diagram/layout.py" line="117" />
+            <source>Linearization</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <location filename="../prm9tool/views/diagram/layout.py" line="118" />
+            <source>Ramps</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <location filename="../prm9tool/views/diagram/layout.py" line="122" />
+            <source>Deviation gain &amp; offset</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <location filename="../prm9tool/views/diagram/layout.py" line="123" />
+            <source>Process PIDT1</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <location filename="../prm9tool/views/diagram/layout.py" line="124" />
+            <source>External sensor</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <location filename="../prm9tool/views/diagram/layout.py" line="125" />
+            <source>Sensor offset &amp; gain</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <location filename="../prm9tool/views/diagram/layout.py" line="127" />
+            <source>Sensor linearization</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <location filename="../prm9tool/views/diagram/layout.py" line="131" />
+            <source>Position PIDT1</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <location filename="../prm9tool/views/diagram/layout.py" line="132" />
+            <source>Current limiter</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <location filename="../prm9tool/views/diagram/layout.py" line="133" />
+            <source>Dither</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <location filename="../prm9tool/views/diagram/layout.py" line="134" />
+            <source>Valve</source>
+            <translation>Ventil</translation>
+        </message>
+        <message>
+            <location filename="../prm9tool/views/diagram/layout.py" line="142" />
+            <source>CANopen</source>
+            <translation>CANopen</translation>
+        </message>
+        <message>
+            <location filename="../prm9tool/views/diagram/layout.py" line="143" />
+            <source>Supply</source>
+            <translation type="unfinished" />
+        </message>
+    </context>
+    <context>
+        <name>DiagramSummary</name>
+        <message>
+            <location filename="../prm9tool/views/diagram/summary.py" line="40" />
+            <location filename="../prm9tool/views/diagram/summary.py" line="112" />
+            <source>Polarity: %1</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <location filename="../prm9tool/views/diagram/summary.py" line="45" />
+            <source>Threshold %1</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <location filename="../prm9tool/views/diagram/summary.py" line="56" />
+            <location filename="../prm9tool/views/diagram/summary.py" line="119" />
+            <source>Gain %1</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <location filename="../prm9tool/views/diagram/summary.py" line="57" />
+            <location filename="../prm9tool/views/diagram/summary.py" line="118" />
+            <source>Offset %1</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <location filename="../prm9tool/views/diagram/summary.py" line="64" />
+            <source>9-point curve on</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <location filename="../prm9tool/views/diagram/summary.py" line="64" />
+            <source>off (1:1)</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <location filename="../prm9tool/views/diagram/summary.py" line="88" />
+            <source>Coil %1: %2</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <location filename="../prm9tool/views/diagram/summary.py" line="96" />
+            <source>Amplitude %1</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <location filename="../prm9tool/views/diagram/summary.py" line="97" />
+            <source>Frequency %1</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <location filename="../prm9tool/views/diagram/summary.py" line="104" />
+            <source>coils A and B</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <location filename="../prm9tool/views/diagram/summary.py" line="104" />
+            <source>coil A only</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <location filename="../prm9tool/views/diagram/summary.py" line="104" />
+            <source>coil B only</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <location filename="../prm9tool/views/diagram/summary.py" line="124" />
+            <source>Voltage, temperature</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <location filename="../prm9tool/views/diagram/summary.py" line="124" />
+            <source>(live values)</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <location filename="../prm9tool/views/diagram/summary.py" line="129" />
+            <source>Node ID %1 (switch 0)</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <location filename="../prm9tool/views/diagram/summary.py" line="130" />
+            <source>Terminator %1</source>
+            <translation type="unfinished" />
         </message>
     </context>
     <context>
@@ -1501,57 +1649,57 @@
     <context>
         <name>Record</name>
         <message>
-            <location filename="../prm9tool/views/record.py" line="75" />
+            <location filename="../prm9tool/views/record.py" line="76" />
             <source>untitled</source>
             <translation>unbenannt</translation>
         </message>
         <message>
-            <location filename="../prm9tool/views/record.py" line="79" />
+            <location filename="../prm9tool/views/record.py" line="80" />
             <source>Type key</source>
             <translation>Typschlüssel</translation>
         </message>
         <message>
-            <location filename="../prm9tool/views/record.py" line="80" />
+            <location filename="../prm9tool/views/record.py" line="81" />
             <source>Serial number</source>
             <translation>Seriennummer</translation>
         </message>
         <message>
-            <location filename="../prm9tool/views/record.py" line="81" />
+            <location filename="../prm9tool/views/record.py" line="82" />
             <source>Firmware</source>
             <translation>Firmware</translation>
         </message>
         <message>
-            <location filename="../prm9tool/views/record.py" line="82" />
+            <location filename="../prm9tool/views/record.py" line="83" />
             <source>File</source>
             <translation>Datei</translation>
         </message>
         <message>
-            <location filename="../prm9tool/views/record.py" line="83" />
+            <location filename="../prm9tool/views/record.py" line="84" />
             <source>Date</source>
             <translation>Datum</translation>
         </message>
         <message>
-            <location filename="../prm9tool/views/record.py" line="84" />
+            <location filename="../prm9tool/views/record.py" line="85" />
             <source>Access level</source>
             <translation>Berechtigungsstufe</translation>
         </message>
         <message>
-            <location filename="../prm9tool/views/record.py" line="94" />
+            <location filename="../prm9tool/views/record.py" line="95" />
             <source>Mnemonic</source>
             <translation>Kürzel</translation>
         </message>
         <message>
-            <location filename="../prm9tool/views/record.py" line="95" />
+            <location filename="../prm9tool/views/record.py" line="96" />
             <source>Description</source>
             <translation>Beschreibung</translation>
         </message>
         <message>
-            <location filename="../prm9tool/views/record.py" line="96" />
+            <location filename="../prm9tool/views/record.py" line="97" />
             <source>Value</source>
             <translation>Wert</translation>
         </message>
         <message>
-            <location filename="../prm9tool/views/record.py" line="97" />
+            <location filename="../prm9tool/views/record.py" line="98" />
             <source>Unit</source>
             <translation>Einheit</translation>
         </message>
@@ -1905,6 +2053,19 @@ Stellen Sie sicher, dass die Maschine sich gefahrlos bewegen kann. Generator sta
         </message>
     </context>
     <context>
+        <name>StepResponse</name>
+        <message>
+            <location filename="../prm9tool/tuning.py" line="109" />
+            <source>not reached</source>
+            <translation type="unfinished" />
+        </message>
+        <message>
+            <location filename="../prm9tool/tuning.py" line="113" />
+            <source>Step %1 %: overshoot %2 %, rise time %3, settling (±2 %) %4, remaining error %5 %</source>
+            <translation type="unfinished" />
+        </message>
+    </context>
+    <context>
         <name>ThresholdGainDialog</name>
         <message>
             <location filename="../prm9tool/views/diagram/dialogs/threshold_gain.py" line="65" />
@@ -2117,7 +2278,87 @@ Stellen Sie sicher, dass die Maschine sich gefahrlos bewegen kann. Generator sta
             <translation>Kein Status: das Ventil ist offline.</translation>
         </message>
         <message>
-            <location filename="../prm9tool/views/valve_status.py" line="222" />
+            <location filename="../prm9tool/views/valve_status.py" line="216" />
+            <source>white</source>
+            <translation>weiß</translation>
+        </message>
+        <message>
+            <location filename="../prm9tool/views/valve_status.py" line="217" />
+            <source>green</source>
+            <translation>grün</translation>
+        </message>
+        <message>
+            <location filename="../prm9tool/views/valve_status.py" line="218" />
+            <source>orange</source>
+            <translation>orange</translation>
+        </message>
+        <message>
+            <location filename="../prm9tool/views/valve_status.py" line="219" />
+            <source>red</source>
+            <translation>rot</translation>
+        </message>
+        <message>
+            <location filename="../prm9tool/views/valve_status.py" line="220" />
+            <source>blue</source>
+            <translation>blau</translation>
+        </message>
+        <message>
+            <location filename="../prm9tool/views/valve_status.py" line="221" />
+            <source>magenta</source>
+            <translation>magenta</translation>
+        </message>
+        <message>
+            <location filename="../prm9tool/views/valve_status.py" line="224" />
+            <source>on</source>
+            <translation>leuchtet</translation>
+        </message>
+        <message>
+            <location filename="../prm9tool/views/valve_status.py" line="225" />
+            <source>blinking 1 Hz</source>
+            <translation>blinkt 1 Hz</translation>
+        </message>
+        <message>
+            <location filename="../prm9tool/views/valve_status.py" line="226" />
+            <source>blinking 2 Hz</source>
+            <translation>blinkt 2 Hz</translation>
+        </message>
+        <message>
+            <location filename="../prm9tool/views/valve_status.py" line="227" />
+            <source>blinking 2.5 Hz</source>
+            <translation>blinkt 2,5 Hz</translation>
+        </message>
+        <message>
+            <location filename="../prm9tool/views/valve_status.py" line="228" />
+            <source>single flash</source>
+            <translation>Einfachblitz</translation>
+        </message>
+        <message>
+            <location filename="../prm9tool/views/valve_status.py" line="229" />
+            <source>double flash</source>
+            <translation>Doppelblitz</translation>
+        </message>
+        <message>
+            <location filename="../prm9tool/views/valve_status.py" line="230" />
+            <source>triple flash</source>
+            <translation>Dreifachblitz</translation>
+        </message>
+        <message>
+            <location filename="../prm9tool/views/valve_status.py" line="231" />
+            <source>quadruple flash</source>
+            <translation>Vierfachblitz</translation>
+        </message>
+        <message>
+            <location filename="../prm9tool/views/valve_status.py" line="232" />
+            <source>power-up</source>
+            <translation>Einschalten</translation>
+        </message>
+        <message>
+            <location filename="../prm9tool/views/valve_status.py" line="235" />
+            <source>off</source>
+            <translation>aus</translation>
+        </message>
+        <message>
+            <location filename="../prm9tool/views/valve_status.py" line="247" />
             <source>No error.</source>
             <translation>Kein Fehler.</translation>
         </message>
