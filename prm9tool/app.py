@@ -90,17 +90,7 @@ def start(window: MainWindow, plan: StartPlan) -> None:
     if plan.file is not None:
         window.files.open_path(plan.file, ask=False)
     if plan.emulators:
-        from prm9tool.views.hid_dialog import SELECTED_KEY, saved_emulators
-
-        known = saved_emulators(window.settings)
-        window.settings.setValue(
-            "hid/emulators", known + [e for e in plan.emulators if e not in known]
-        )
-        entries = window.connection.list_devices(plan.emulators)
-        wanted = [e for e in entries if getattr(e, "kind", "") == "emulator"]
-        if wanted:
-            window.settings.setValue(SELECTED_KEY, str(getattr(wanted[0], "device_id", "")))
-            window.valve.go_online(wanted[0])
+        _start_emulated(window, plan.emulators)
     elif plan.devices:
         entries = window.connection.list_devices(())
         wanted = [e for e in entries if _matches(e, plan.devices[0])]
@@ -108,6 +98,39 @@ def start(window: MainWindow, plan: StartPlan) -> None:
             window.valve.go_online(wanted[0])
         else:
             window.status.showMessage(f"--device {plan.devices[0]}: no such valve", 10000)
+
+
+def _start_emulated(window: MainWindow, specs: list[str]) -> None:
+    """Remember the emulated valves in the HID configuration and go online with the first.
+
+    The device id goes to the connection as it is, so the device layer is imported in the
+    connection's worker thread while the window is already shown.
+    """
+    from prm9tool.errors import TypeKeyError
+    from prm9tool.views import prompts
+    from prm9tool.views.hid_dialog import EMULATORS_KEY, SELECTED_KEY, saved_emulators
+
+    try:
+        normal = [_normal_spec(spec) for spec in specs]
+    except TypeKeyError as exc:
+        prompts.inform(window, prompts.Icon.Warning, "--emulator", str(exc))
+        return
+    known = saved_emulators(window.settings)
+    window.settings.setValue(EMULATORS_KEY, known + [s for s in normal if s not in known])
+    device_id = f"emulator:{normal[0]}"
+    window.settings.setValue(SELECTED_KEY, device_id)
+    window.valve.go_online(device_id)
+
+
+def _normal_spec(spec: str) -> str:
+    """``TYPEKEY:SERIAL`` with the type key checked and written the canonical way."""
+    from prm9tool.errors import TypeKeyError
+    from prm9tool.typekey import TypeKey
+
+    key, _, serial = spec.rpartition(":")
+    if not serial.isdigit() or not 0 < int(serial) < 2**32:
+        raise TypeKeyError(f"--emulator {spec!r}: the serial number must be 1 … 4294967295")
+    return f"{TypeKey.parse(key)}:{int(serial)}"
 
 
 def _matches(entry: object, wanted: str) -> bool:

@@ -19,7 +19,6 @@ from typing import Any
 
 from PySide6.QtCore import QObject, Qt, Signal
 
-from prm9tool.backup import ensure_backup
 from prm9tool.errors import CommunicationError, Prm9Error
 from prm9tool.polling import Poller
 
@@ -28,7 +27,7 @@ log = logging.getLogger(__name__)
 Opener = Callable[[object], Any]  # entry -> ValveSession
 Lister = Callable[[Sequence[str]], list[Any]]  # emulator specs -> [DeviceEntry]
 STATUS_PERIOD_S = 0.5
-SIGNAL_PERIOD_S = 0.25
+SIGNAL_PERIOD_S = 0.15
 IDLE_TICK_S = 0.05
 STREAM_TICK_S = 0.02
 PROGRESS_PERIOD_S = 0.05
@@ -41,6 +40,7 @@ class _Job:
     on_done: Callable[[object], None] | None = None  # result -> None (runs in the GUI thread)
     report: bool = True  # emit operation_finished(name, result)
     on_error: Callable[[], None] | None = None  # runs in the GUI thread after a failure
+    needs_session: bool = True
 
 
 class ValveConnection(QObject):
@@ -116,7 +116,9 @@ class ValveConnection(QObject):
             self.failed.emit(self.tr("Already online; go offline first."))
             return
         self._ensure_worker()
-        self._submit(_Job("online", lambda _s: self._open(entry), self._on_opened, False))
+        job = _Job("online", lambda _s: self._open(entry), self._on_opened, False)
+        job.needs_session = False
+        self._submit(job)
 
     def go_offline(self) -> None:
         """Close the session (the stream stops); online_changed(False) follows."""
@@ -162,6 +164,8 @@ class ValveConnection(QObject):
 
         def run(session: Any) -> object:
             if backup:
+                from prm9tool.backup import ensure_backup  # *.prm writing, only when needed
+
                 path = ensure_backup(session, self._progress, self._cancel)
                 if path is not None:
                     self._post(lambda: self.backup_written.emit(str(path)))
@@ -225,7 +229,7 @@ class ValveConnection(QObject):
 
     # --- GUI-thread helpers --------------------------------------------------------------------
     def _submit(self, job: _Job) -> None:
-        if job.name not in ("online",) and not self._online:
+        if job.needs_session and not self._online:
             self.failed.emit(self.tr("Not connected to a valve."))
             return
         self._jobs.put(job)
@@ -311,7 +315,7 @@ class ValveConnection(QObject):
 
     def _execute(self, job: _Job) -> None:
         def run() -> None:
-            if job.name != "online" and self._session is None:
+            if job.needs_session and self._session is None:
                 raise CommunicationError("The valve is not connected.")
             result = job.run(self._session)
             self._post(lambda: self._finish(job, result))

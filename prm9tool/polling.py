@@ -6,15 +6,16 @@ from __future__ import annotations
 
 import logging
 from dataclasses import dataclass, field
-from typing import Any
-
-import numpy as np
+from typing import TYPE_CHECKING, Any
 
 from prm9tool.catalogue import CATALOGUE
 from prm9tool.errors import Prm9Error, SdoAbortError
 from prm9tool.signals import MAX_CHANNELS, signals_for
 from prm9tool.typekey import TypeKey
 from prm9tool.variant import Variant
+
+if TYPE_CHECKING:
+    import numpy as np
 
 log = logging.getLogger(__name__)
 WATCH_RATE_HZ = 250  # the slow stream that refreshes the diagram's measuring points
@@ -28,7 +29,7 @@ class PollResult:
     status: object | None = None
     live: dict[str, int | str] = field(default_factory=dict)
     signals: dict[str, float] = field(default_factory=dict)
-    samples: np.ndarray | None = None
+    samples: np.ndarray | None = None  # (n, channels) raw block of the running stream
 
 
 def variant_of(info: object) -> Variant | None:

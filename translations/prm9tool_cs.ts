@@ -75,7 +75,7 @@
         <message>
             <location filename="../prm9tool/views/canopen_window.py" line="172" />
             <location filename="../prm9tool/views/canopen_window.py" line="187" />
-            <location filename="../prm9tool/views/canopen_window.py" line="291" />
+            <location filename="../prm9tool/views/canopen_window.py" line="292" />
             <source>on</source>
             <translation>zapnutý</translation>
         </message>
@@ -155,22 +155,27 @@
             <translation>Ventil používá:</translation>
         </message>
         <message>
-            <location filename="../prm9tool/views/canopen_window.py" line="291" />
+            <location filename="../prm9tool/views/canopen_window.py" line="290" />
+            <source>CANopen off (analog setpoint only).</source>
+            <translation>CANopen vypnuto (pouze analogová žádaná hodnota).</translation>
+        </message>
+        <message>
+            <location filename="../prm9tool/views/canopen_window.py" line="292" />
             <source>off</source>
             <translation>vypnutý</translation>
         </message>
         <message>
-            <location filename="../prm9tool/views/canopen_window.py" line="293" />
+            <location filename="../prm9tool/views/canopen_window.py" line="294" />
             <source>node ID %1, %2, terminator %3.</source>
             <translation>Node ID %1, %2, terminátor %3.</translation>
         </message>
         <message>
-            <location filename="../prm9tool/views/canopen_window.py" line="321" />
+            <location filename="../prm9tool/views/canopen_window.py" line="322" />
             <source>Changed in the document. Upload it to the valve; the change takes effect after the valve restarts.</source>
             <translation>Změněno v dokumentu. Načtěte jej do ventilu; změna se projeví po restartu ventilu.</translation>
         </message>
         <message>
-            <location filename="../prm9tool/views/canopen_window.py" line="336" />
+            <location filename="../prm9tool/views/canopen_window.py" line="337" />
             <source>Written to the valve and stored. The change takes effect after the valve restarts (Valve → Restart valve).</source>
             <translation>Zapsáno do ventilu a uloženo. Změna se projeví po restartu ventilu (Ventil → Restart ventilu).</translation>
         </message>
@@ -466,168 +471,168 @@
         <message>
             <location filename="../prm9tool/views/diagram/layout.py" line="110" />
             <source>Setpoint input</source>
-            <translation type="unfinished" />
+            <translation>Vstup žádané hodnoty</translation>
         </message>
         <message>
-            <location filename="../prm9tool/views/diagram/layout.py" line="111" />
+            <location filename="../prm9tool/views/diagram/layout.py" line="115" />
             <source>Threshold</source>
-            <translation type="unfinished" />
+            <translation>Práh</translation>
         </message>
         <message>
-            <location filename="../prm9tool/views/diagram/layout.py" line="114" />
+            <location filename="../prm9tool/views/diagram/layout.py" line="120" />
             <source>Gain &amp; offset</source>
-            <translation type="unfinished" />
-        </message>
-        <message>
-            <location filename="../prm9tool/views/diagram/layout.py" line="117" />
-            <source>Linearization</source>
-            <translation type="unfinished" />
-        </message>
-        <message>
-            <location filename="../prm9tool/views/diagram/layout.py" line="118" />
-            <source>Ramps</source>
-            <translation type="unfinished" />
-        </message>
-        <message>
-            <location filename="../prm9tool/views/diagram/layout.py" line="122" />
-            <source>Deviation gain &amp; offset</source>
-            <translation type="unfinished" />
-        </message>
-        <message>
-            <location filename="../prm9tool/views/diagram/layout.py" line="123" />
-            <source>Process PIDT1</source>
-            <translation type="unfinished" />
-        </message>
-        <message>
-            <location filename="../prm9tool/views/diagram/layout.py" line="124" />
-            <source>External sensor</source>
-            <translation type="unfinished" />
-        </message>
-        <message>
-            <location filename="../prm9tool/views/diagram/layout.py" line="125" />
-            <source>Sensor offset &amp; gain</source>
-            <translation type="unfinished" />
+            <translation>Zesílení a posunutí</translation>
         </message>
         <message>
             <location filename="../prm9tool/views/diagram/layout.py" line="127" />
-            <source>Sensor linearization</source>
-            <translation type="unfinished" />
-        </message>
-        <message>
-            <location filename="../prm9tool/views/diagram/layout.py" line="131" />
-            <source>Position PIDT1</source>
-            <translation type="unfinished" />
+            <source>Linearization</source>
+            <translation>Linearizace</translation>
         </message>
         <message>
             <location filename="../prm9tool/views/diagram/layout.py" line="132" />
+            <source>Ramps</source>
+            <translation>Rampy</translation>
+        </message>
+        <message>
+            <location filename="../prm9tool/views/diagram/layout.py" line="138" />
+            <source>Deviation gain &amp; offset</source>
+            <translation>Odchylka: zesílení a posunutí</translation>
+        </message>
+        <message>
+            <location filename="../prm9tool/views/diagram/layout.py" line="145" />
+            <source>Process PIDT1</source>
+            <translation>Procesní regulátor PIDT1</translation>
+        </message>
+        <message>
+            <location filename="../prm9tool/views/diagram/layout.py" line="152" />
+            <source>External sensor</source>
+            <translation>Externí snímač</translation>
+        </message>
+        <message>
+            <location filename="../prm9tool/views/diagram/layout.py" line="159" />
+            <source>Sensor offset &amp; gain</source>
+            <translation>Snímač: posunutí a zesílení</translation>
+        </message>
+        <message>
+            <location filename="../prm9tool/views/diagram/layout.py" line="166" />
+            <source>Sensor linearization</source>
+            <translation>Linearizace snímače</translation>
+        </message>
+        <message>
+            <location filename="../prm9tool/views/diagram/layout.py" line="175" />
+            <source>Position PIDT1</source>
+            <translation>Regulátor polohy PIDT1</translation>
+        </message>
+        <message>
+            <location filename="../prm9tool/views/diagram/layout.py" line="182" />
             <source>Current limiter</source>
-            <translation type="unfinished" />
+            <translation>Omezovač proudu</translation>
         </message>
         <message>
-            <location filename="../prm9tool/views/diagram/layout.py" line="133" />
+            <location filename="../prm9tool/views/diagram/layout.py" line="187" />
             <source>Dither</source>
-            <translation type="unfinished" />
+            <translation>Dynamické mazání</translation>
         </message>
         <message>
-            <location filename="../prm9tool/views/diagram/layout.py" line="134" />
+            <location filename="../prm9tool/views/diagram/layout.py" line="188" />
             <source>Valve</source>
             <translation>Ventil</translation>
         </message>
         <message>
-            <location filename="../prm9tool/views/diagram/layout.py" line="142" />
+            <location filename="../prm9tool/views/diagram/layout.py" line="198" />
             <source>CANopen</source>
             <translation>CANopen</translation>
         </message>
         <message>
-            <location filename="../prm9tool/views/diagram/layout.py" line="143" />
+            <location filename="../prm9tool/views/diagram/layout.py" line="203" />
             <source>Supply</source>
-            <translation type="unfinished" />
+            <translation>Napájení</translation>
         </message>
     </context>
     <context>
         <name>DiagramSummary</name>
         <message>
             <location filename="../prm9tool/views/diagram/summary.py" line="40" />
-            <location filename="../prm9tool/views/diagram/summary.py" line="112" />
+            <location filename="../prm9tool/views/diagram/summary.py" line="126" />
             <source>Polarity: %1</source>
-            <translation type="unfinished" />
+            <translation>Polarita: %1</translation>
         </message>
         <message>
             <location filename="../prm9tool/views/diagram/summary.py" line="45" />
             <source>Threshold %1</source>
-            <translation type="unfinished" />
+            <translation>Práh %1</translation>
         </message>
         <message>
             <location filename="../prm9tool/views/diagram/summary.py" line="56" />
-            <location filename="../prm9tool/views/diagram/summary.py" line="119" />
+            <location filename="../prm9tool/views/diagram/summary.py" line="133" />
             <source>Gain %1</source>
-            <translation type="unfinished" />
+            <translation>Zesílení %1</translation>
         </message>
         <message>
-            <location filename="../prm9tool/views/diagram/summary.py" line="57" />
-            <location filename="../prm9tool/views/diagram/summary.py" line="118" />
+            <location filename="../prm9tool/views/diagram/summary.py" line="59" />
+            <location filename="../prm9tool/views/diagram/summary.py" line="132" />
             <source>Offset %1</source>
-            <translation type="unfinished" />
+            <translation>Posunutí %1</translation>
         </message>
         <message>
-            <location filename="../prm9tool/views/diagram/summary.py" line="64" />
+            <location filename="../prm9tool/views/diagram/summary.py" line="69" />
             <source>9-point curve on</source>
-            <translation type="unfinished" />
+            <translation>9bodová křivka zapnuta</translation>
         </message>
         <message>
-            <location filename="../prm9tool/views/diagram/summary.py" line="64" />
+            <location filename="../prm9tool/views/diagram/summary.py" line="71" />
             <source>off (1:1)</source>
-            <translation type="unfinished" />
-        </message>
-        <message>
-            <location filename="../prm9tool/views/diagram/summary.py" line="88" />
-            <source>Coil %1: %2</source>
-            <translation type="unfinished" />
+            <translation>vypnuto (1:1)</translation>
         </message>
         <message>
             <location filename="../prm9tool/views/diagram/summary.py" line="96" />
+            <source>Coil %1: %2</source>
+            <translation>Cívka %1: %2</translation>
+        </message>
+        <message>
+            <location filename="../prm9tool/views/diagram/summary.py" line="106" />
             <source>Amplitude %1</source>
-            <translation type="unfinished" />
+            <translation>Amplituda %1</translation>
         </message>
         <message>
-            <location filename="../prm9tool/views/diagram/summary.py" line="97" />
+            <location filename="../prm9tool/views/diagram/summary.py" line="107" />
             <source>Frequency %1</source>
-            <translation type="unfinished" />
+            <translation>Frekvence %1</translation>
         </message>
         <message>
-            <location filename="../prm9tool/views/diagram/summary.py" line="104" />
+            <location filename="../prm9tool/views/diagram/summary.py" line="115" />
             <source>coils A and B</source>
-            <translation type="unfinished" />
+            <translation>cívky A a B</translation>
         </message>
         <message>
-            <location filename="../prm9tool/views/diagram/summary.py" line="104" />
+            <location filename="../prm9tool/views/diagram/summary.py" line="116" />
             <source>coil A only</source>
-            <translation type="unfinished" />
+            <translation>pouze cívka A</translation>
         </message>
         <message>
-            <location filename="../prm9tool/views/diagram/summary.py" line="104" />
+            <location filename="../prm9tool/views/diagram/summary.py" line="117" />
             <source>coil B only</source>
-            <translation type="unfinished" />
+            <translation>pouze cívka B</translation>
         </message>
         <message>
-            <location filename="../prm9tool/views/diagram/summary.py" line="124" />
+            <location filename="../prm9tool/views/diagram/summary.py" line="139" />
             <source>Voltage, temperature</source>
-            <translation type="unfinished" />
+            <translation>Napětí, teplota</translation>
         </message>
         <message>
-            <location filename="../prm9tool/views/diagram/summary.py" line="124" />
+            <location filename="../prm9tool/views/diagram/summary.py" line="140" />
             <source>(live values)</source>
-            <translation type="unfinished" />
+            <translation>(aktuální hodnoty)</translation>
         </message>
         <message>
-            <location filename="../prm9tool/views/diagram/summary.py" line="129" />
+            <location filename="../prm9tool/views/diagram/summary.py" line="146" />
             <source>Node ID %1 (switch 0)</source>
-            <translation type="unfinished" />
+            <translation>Node ID %1 (přepínač 0)</translation>
         </message>
         <message>
-            <location filename="../prm9tool/views/diagram/summary.py" line="130" />
+            <location filename="../prm9tool/views/diagram/summary.py" line="149" />
             <source>Terminator %1</source>
-            <translation type="unfinished" />
+            <translation>Terminátor %1</translation>
         </message>
     </context>
     <context>
@@ -752,62 +757,62 @@
     <context>
         <name>FileWorkflow</name>
         <message>
-            <location filename="../prm9tool/views/file_workflow.py" line="78" />
+            <location filename="../prm9tool/views/file_workflow.py" line="77" />
             <source>untitled</source>
             <translation>nepojmenovaná</translation>
         </message>
         <message>
-            <location filename="../prm9tool/views/file_workflow.py" line="82" />
+            <location filename="../prm9tool/views/file_workflow.py" line="81" />
             <source>Unsaved changes</source>
             <translation>Neuložené změny</translation>
         </message>
         <message>
-            <location filename="../prm9tool/views/file_workflow.py" line="83" />
+            <location filename="../prm9tool/views/file_workflow.py" line="82" />
             <source>The parameters in “{0}” have been changed. Save the changes?</source>
             <translation>Parametry v „{0}“ byly změněny. Uložit změny?</translation>
         </message>
         <message>
-            <location filename="../prm9tool/views/file_workflow.py" line="97" />
+            <location filename="../prm9tool/views/file_workflow.py" line="96" />
             <source>New parameter set for {0}</source>
             <translation>Nový záznam parametrů pro {0}</translation>
         </message>
         <message>
-            <location filename="../prm9tool/views/file_workflow.py" line="106" />
+            <location filename="../prm9tool/views/file_workflow.py" line="105" />
             <source>Open parameter file</source>
             <translation>Otevřít záznam parametrů</translation>
         </message>
         <message>
-            <location filename="../prm9tool/views/file_workflow.py" line="108" />
+            <location filename="../prm9tool/views/file_workflow.py" line="107" />
             <source>Parameter files (*.prm);;All files (*)</source>
             <translation>Záznamy parametrů (*.prm);;Všechny soubory (*)</translation>
         </message>
         <message>
-            <location filename="../prm9tool/views/file_workflow.py" line="119" />
+            <location filename="../prm9tool/views/file_workflow.py" line="118" />
             <source>File not found</source>
             <translation>Soubor nenalezen</translation>
         </message>
         <message>
-            <location filename="../prm9tool/views/file_workflow.py" line="120" />
+            <location filename="../prm9tool/views/file_workflow.py" line="119" />
             <source>“{0}” no longer exists; it was removed from the list.</source>
             <translation>„{0}“ již neexistuje; byl odstraněn ze seznamu.</translation>
         </message>
         <message>
-            <location filename="../prm9tool/views/file_workflow.py" line="132" />
+            <location filename="../prm9tool/views/file_workflow.py" line="133" />
             <source>Cannot open “{0}”</source>
             <translation>„{0}“ nelze otevřít</translation>
         </message>
         <message>
-            <location filename="../prm9tool/views/file_workflow.py" line="136" />
+            <location filename="../prm9tool/views/file_workflow.py" line="137" />
             <source>Opened {0}</source>
             <translation>Otevřeno: {0}</translation>
         </message>
         <message>
-            <location filename="../prm9tool/views/file_workflow.py" line="141" />
+            <location filename="../prm9tool/views/file_workflow.py" line="142" />
             <source>Opened with warnings</source>
             <translation>Otevřeno s varováními</translation>
         </message>
         <message numerus="yes">
-            <location filename="../prm9tool/views/file_workflow.py" line="143" />
+            <location filename="../prm9tool/views/file_workflow.py" line="144" />
             <source>“{0}” was opened; %n warning(s) were found.</source>
             <translation>
                 <numerusform>„{0}“ byl otevřen; nalezeno %n varování.</numerusform>
@@ -816,27 +821,27 @@
             </translation>
         </message>
         <message>
-            <location filename="../prm9tool/views/file_workflow.py" line="160" />
+            <location filename="../prm9tool/views/file_workflow.py" line="161" />
             <source>Save parameter file</source>
             <translation>Uložit záznam parametrů</translation>
         </message>
         <message>
-            <location filename="../prm9tool/views/file_workflow.py" line="162" />
+            <location filename="../prm9tool/views/file_workflow.py" line="163" />
             <source>Parameter files (*.prm)</source>
             <translation>Záznamy parametrů (*.prm)</translation>
         </message>
         <message>
-            <location filename="../prm9tool/views/file_workflow.py" line="176" />
+            <location filename="../prm9tool/views/file_workflow.py" line="179" />
             <source>Cannot save “{0}”</source>
             <translation>„{0}“ nelze uložit</translation>
         </message>
         <message>
-            <location filename="../prm9tool/views/file_workflow.py" line="179" />
+            <location filename="../prm9tool/views/file_workflow.py" line="182" />
             <source>Saved {0}</source>
             <translation>Uloženo: {0}</translation>
         </message>
         <message numerus="yes">
-            <location filename="../prm9tool/views/file_workflow.py" line="195" />
+            <location filename="../prm9tool/views/file_workflow.py" line="198" />
             <source>%n more problem(s) in the details.</source>
             <translation>
                 <numerusform>Další %n problém v podrobnostech.</numerusform>
@@ -906,7 +911,7 @@
     <context>
         <name>HelpWindow</name>
         <message>
-            <location filename="../prm9tool/views/help_dialog.py" line="44" />
+            <location filename="../prm9tool/views/help_dialog.py" line="43" />
             <source>prm9tool help</source>
             <translation>prm9tool – nápověda</translation>
         </message>
@@ -1372,32 +1377,32 @@
     <context>
         <name>MainWindow</name>
         <message>
-            <location filename="../prm9tool/views/main_window.py" line="108" />
+            <location filename="../prm9tool/views/main_window.py" line="119" />
             <source>The oscilloscope works in online mode only.</source>
             <translation>Osciloskop je dostupný pouze v režimu online.</translation>
         </message>
         <message>
-            <location filename="../prm9tool/views/main_window.py" line="217" />
+            <location filename="../prm9tool/views/main_window.py" line="230" />
             <source>untitled</source>
             <translation>nepojmenovaná</translation>
         </message>
         <message>
-            <location filename="../prm9tool/views/main_window.py" line="280" />
+            <location filename="../prm9tool/views/main_window.py" line="293" />
             <source>prm9tool</source>
             <translation>prm9tool</translation>
         </message>
         <message>
-            <location filename="../prm9tool/views/main_window.py" line="281" />
+            <location filename="../prm9tool/views/main_window.py" line="294" />
             <source>Parameterization of PRM9 proportional directional valves.</source>
             <translation>Nastavení parametrů proporcionálních rozváděčů PRM9.</translation>
         </message>
         <message>
-            <location filename="../prm9tool/views/main_window.py" line="282" />
+            <location filename="../prm9tool/views/main_window.py" line="295" />
             <source>Free software under the GNU General Public License v3 or later.</source>
             <translation>Svobodný software pod licencí GNU General Public License v3 nebo novější.</translation>
         </message>
         <message>
-            <location filename="../prm9tool/views/main_window.py" line="285" />
+            <location filename="../prm9tool/views/main_window.py" line="298" />
             <source>About prm9tool</source>
             <translation>O programu prm9tool</translation>
         </message>
@@ -1710,43 +1715,43 @@
     <context>
         <name>RecordActions</name>
         <message>
-            <location filename="../prm9tool/views/record_actions.py" line="35" />
+            <location filename="../prm9tool/views/record_actions.py" line="38" />
             <source>Expert</source>
             <translation>Expertní</translation>
         </message>
         <message>
-            <location filename="../prm9tool/views/record_actions.py" line="35" />
+            <location filename="../prm9tool/views/record_actions.py" line="38" />
             <source>Basic</source>
             <translation>Základní</translation>
         </message>
         <message>
-            <location filename="../prm9tool/views/record_actions.py" line="54" />
+            <location filename="../prm9tool/views/record_actions.py" line="59" />
             <source>Parameter record printed</source>
             <translation>Protokol parametrů vytištěn</translation>
         </message>
         <message>
-            <location filename="../prm9tool/views/record_actions.py" line="64" />
-            <location filename="../prm9tool/views/record_actions.py" line="81" />
+            <location filename="../prm9tool/views/record_actions.py" line="69" />
+            <location filename="../prm9tool/views/record_actions.py" line="88" />
             <source>Export PDF</source>
             <translation>Export do PDF</translation>
         </message>
         <message>
-            <location filename="../prm9tool/views/record_actions.py" line="64" />
+            <location filename="../prm9tool/views/record_actions.py" line="69" />
             <source>PDF files (*.pdf)</source>
             <translation>Soubory PDF (*.pdf)</translation>
         </message>
         <message>
-            <location filename="../prm9tool/views/record_actions.py" line="82" />
+            <location filename="../prm9tool/views/record_actions.py" line="89" />
             <source>Cannot write “{0}”: {1}</source>
             <translation>„{0}“ nelze zapsat: {1}</translation>
         </message>
         <message>
-            <location filename="../prm9tool/views/record_actions.py" line="86" />
+            <location filename="../prm9tool/views/record_actions.py" line="93" />
             <source>Parameter record saved as {0}</source>
             <translation>Protokol parametrů uložen jako {0}</translation>
         </message>
         <message>
-            <location filename="../prm9tool/views/record_actions.py" line="90" />
+            <location filename="../prm9tool/views/record_actions.py" line="97" />
             <source>PRM9 parameter record {0}</source>
             <translation>Protokol parametrů PRM9 {0}</translation>
         </message>
@@ -2060,12 +2065,12 @@ Ujistěte se, že pohyb stroje je bezpečný. Spustit generátor?</translation>
         <message>
             <location filename="../prm9tool/tuning.py" line="109" />
             <source>not reached</source>
-            <translation type="unfinished" />
+            <translation>nedosaženo</translation>
         </message>
         <message>
-            <location filename="../prm9tool/tuning.py" line="113" />
+            <location filename="../prm9tool/tuning.py" line="115" />
             <source>Step %1 %: overshoot %2 %, rise time %3, settling (±2 %) %4, remaining error %5 %</source>
-            <translation type="unfinished" />
+            <translation>Skok %1 %: překmit %2 %, doba náběhu %3, ustálení (±2 %) %4, zbývající odchylka %5 %</translation>
         </message>
     </context>
     <context>
@@ -2109,8 +2114,8 @@ Ujistěte se, že pohyb stroje je bezpečný. Spustit generátor?</translation>
             <translation>Již v režimu online; nejprve přejděte do režimu offline.</translation>
         </message>
         <message>
-            <location filename="../prm9tool/connection.py" line="229" />
-            <location filename="../prm9tool/connection.py" line="235" />
+            <location filename="../prm9tool/connection.py" line="233" />
+            <location filename="../prm9tool/connection.py" line="239" />
             <source>Not connected to a valve.</source>
             <translation>Není připojen žádný ventil.</translation>
         </message>

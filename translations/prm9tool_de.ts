@@ -75,7 +75,7 @@
         <message>
             <location filename="../prm9tool/views/canopen_window.py" line="172" />
             <location filename="../prm9tool/views/canopen_window.py" line="187" />
-            <location filename="../prm9tool/views/canopen_window.py" line="291" />
+            <location filename="../prm9tool/views/canopen_window.py" line="292" />
             <source>on</source>
             <translation>ein</translation>
         </message>
@@ -155,22 +155,27 @@
             <translation>Das Ventil verwendet:</translation>
         </message>
         <message>
-            <location filename="../prm9tool/views/canopen_window.py" line="291" />
+            <location filename="../prm9tool/views/canopen_window.py" line="290" />
+            <source>CANopen off (analog setpoint only).</source>
+            <translation>CANopen aus (nur analoger Sollwert).</translation>
+        </message>
+        <message>
+            <location filename="../prm9tool/views/canopen_window.py" line="292" />
             <source>off</source>
             <translation>aus</translation>
         </message>
         <message>
-            <location filename="../prm9tool/views/canopen_window.py" line="293" />
+            <location filename="../prm9tool/views/canopen_window.py" line="294" />
             <source>node ID %1, %2, terminator %3.</source>
             <translation>Node-ID %1, %2, Abschlusswiderstand %3.</translation>
         </message>
         <message>
-            <location filename="../prm9tool/views/canopen_window.py" line="321" />
+            <location filename="../prm9tool/views/canopen_window.py" line="322" />
             <source>Changed in the document. Upload it to the valve; the change takes effect after the valve restarts.</source>
             <translation>Im Dokument geändert. Laden Sie es in das Ventil; die Änderung wird nach einem Neustart des Ventils wirksam.</translation>
         </message>
         <message>
-            <location filename="../prm9tool/views/canopen_window.py" line="336" />
+            <location filename="../prm9tool/views/canopen_window.py" line="337" />
             <source>Written to the valve and stored. The change takes effect after the valve restarts (Valve → Restart valve).</source>
             <translation>In das Ventil geschrieben und gespeichert. Die Änderung wird nach einem Neustart des Ventils wirksam (Ventil → Ventil neu starten).</translation>
         </message>
@@ -466,168 +471,168 @@
         <message>
             <location filename="../prm9tool/views/diagram/layout.py" line="110" />
             <source>Setpoint input</source>
-            <translation type="unfinished" />
+            <translation>Sollwerteingang</translation>
         </message>
         <message>
-            <location filename="../prm9tool/views/diagram/layout.py" line="111" />
+            <location filename="../prm9tool/views/diagram/layout.py" line="115" />
             <source>Threshold</source>
-            <translation type="unfinished" />
+            <translation>Schwelle</translation>
         </message>
         <message>
-            <location filename="../prm9tool/views/diagram/layout.py" line="114" />
+            <location filename="../prm9tool/views/diagram/layout.py" line="120" />
             <source>Gain &amp; offset</source>
-            <translation type="unfinished" />
-        </message>
-        <message>
-            <location filename="../prm9tool/views/diagram/layout.py" line="117" />
-            <source>Linearization</source>
-            <translation type="unfinished" />
-        </message>
-        <message>
-            <location filename="../prm9tool/views/diagram/layout.py" line="118" />
-            <source>Ramps</source>
-            <translation type="unfinished" />
-        </message>
-        <message>
-            <location filename="../prm9tool/views/diagram/layout.py" line="122" />
-            <source>Deviation gain &amp; offset</source>
-            <translation type="unfinished" />
-        </message>
-        <message>
-            <location filename="../prm9tool/views/diagram/layout.py" line="123" />
-            <source>Process PIDT1</source>
-            <translation type="unfinished" />
-        </message>
-        <message>
-            <location filename="../prm9tool/views/diagram/layout.py" line="124" />
-            <source>External sensor</source>
-            <translation type="unfinished" />
-        </message>
-        <message>
-            <location filename="../prm9tool/views/diagram/layout.py" line="125" />
-            <source>Sensor offset &amp; gain</source>
-            <translation type="unfinished" />
+            <translation>Verstärkung &amp; Offset</translation>
         </message>
         <message>
             <location filename="../prm9tool/views/diagram/layout.py" line="127" />
-            <source>Sensor linearization</source>
-            <translation type="unfinished" />
-        </message>
-        <message>
-            <location filename="../prm9tool/views/diagram/layout.py" line="131" />
-            <source>Position PIDT1</source>
-            <translation type="unfinished" />
+            <source>Linearization</source>
+            <translation>Linearisierung</translation>
         </message>
         <message>
             <location filename="../prm9tool/views/diagram/layout.py" line="132" />
+            <source>Ramps</source>
+            <translation>Rampen</translation>
+        </message>
+        <message>
+            <location filename="../prm9tool/views/diagram/layout.py" line="138" />
+            <source>Deviation gain &amp; offset</source>
+            <translation>Abweichung: Verstärkung &amp; Offset</translation>
+        </message>
+        <message>
+            <location filename="../prm9tool/views/diagram/layout.py" line="145" />
+            <source>Process PIDT1</source>
+            <translation>Prozessregler PIDT1</translation>
+        </message>
+        <message>
+            <location filename="../prm9tool/views/diagram/layout.py" line="152" />
+            <source>External sensor</source>
+            <translation>Externer Sensor</translation>
+        </message>
+        <message>
+            <location filename="../prm9tool/views/diagram/layout.py" line="159" />
+            <source>Sensor offset &amp; gain</source>
+            <translation>Sensor: Offset &amp; Verstärkung</translation>
+        </message>
+        <message>
+            <location filename="../prm9tool/views/diagram/layout.py" line="166" />
+            <source>Sensor linearization</source>
+            <translation>Sensor-Linearisierung</translation>
+        </message>
+        <message>
+            <location filename="../prm9tool/views/diagram/layout.py" line="175" />
+            <source>Position PIDT1</source>
+            <translation>Lageregler PIDT1</translation>
+        </message>
+        <message>
+            <location filename="../prm9tool/views/diagram/layout.py" line="182" />
             <source>Current limiter</source>
-            <translation type="unfinished" />
+            <translation>Strombegrenzung</translation>
         </message>
         <message>
-            <location filename="../prm9tool/views/diagram/layout.py" line="133" />
+            <location filename="../prm9tool/views/diagram/layout.py" line="187" />
             <source>Dither</source>
-            <translation type="unfinished" />
+            <translation>Dither</translation>
         </message>
         <message>
-            <location filename="../prm9tool/views/diagram/layout.py" line="134" />
+            <location filename="../prm9tool/views/diagram/layout.py" line="188" />
             <source>Valve</source>
             <translation>Ventil</translation>
         </message>
         <message>
-            <location filename="../prm9tool/views/diagram/layout.py" line="142" />
+            <location filename="../prm9tool/views/diagram/layout.py" line="198" />
             <source>CANopen</source>
             <translation>CANopen</translation>
         </message>
         <message>
-            <location filename="../prm9tool/views/diagram/layout.py" line="143" />
+            <location filename="../prm9tool/views/diagram/layout.py" line="203" />
             <source>Supply</source>
-            <translation type="unfinished" />
+            <translation>Versorgung</translation>
         </message>
     </context>
     <context>
         <name>DiagramSummary</name>
         <message>
             <location filename="../prm9tool/views/diagram/summary.py" line="40" />
-            <location filename="../prm9tool/views/diagram/summary.py" line="112" />
+            <location filename="../prm9tool/views/diagram/summary.py" line="126" />
             <source>Polarity: %1</source>
-            <translation type="unfinished" />
+            <translation>Polarität: %1</translation>
         </message>
         <message>
             <location filename="../prm9tool/views/diagram/summary.py" line="45" />
             <source>Threshold %1</source>
-            <translation type="unfinished" />
+            <translation>Schwelle %1</translation>
         </message>
         <message>
             <location filename="../prm9tool/views/diagram/summary.py" line="56" />
-            <location filename="../prm9tool/views/diagram/summary.py" line="119" />
+            <location filename="../prm9tool/views/diagram/summary.py" line="133" />
             <source>Gain %1</source>
-            <translation type="unfinished" />
+            <translation>Verstärkung %1</translation>
         </message>
         <message>
-            <location filename="../prm9tool/views/diagram/summary.py" line="57" />
-            <location filename="../prm9tool/views/diagram/summary.py" line="118" />
+            <location filename="../prm9tool/views/diagram/summary.py" line="59" />
+            <location filename="../prm9tool/views/diagram/summary.py" line="132" />
             <source>Offset %1</source>
-            <translation type="unfinished" />
+            <translation>Offset %1</translation>
         </message>
         <message>
-            <location filename="../prm9tool/views/diagram/summary.py" line="64" />
+            <location filename="../prm9tool/views/diagram/summary.py" line="69" />
             <source>9-point curve on</source>
-            <translation type="unfinished" />
+            <translation>9-Punkt-Kennlinie ein</translation>
         </message>
         <message>
-            <location filename="../prm9tool/views/diagram/summary.py" line="64" />
+            <location filename="../prm9tool/views/diagram/summary.py" line="71" />
             <source>off (1:1)</source>
-            <translation type="unfinished" />
-        </message>
-        <message>
-            <location filename="../prm9tool/views/diagram/summary.py" line="88" />
-            <source>Coil %1: %2</source>
-            <translation type="unfinished" />
+            <translation>aus (1:1)</translation>
         </message>
         <message>
             <location filename="../prm9tool/views/diagram/summary.py" line="96" />
+            <source>Coil %1: %2</source>
+            <translation>Spule %1: %2</translation>
+        </message>
+        <message>
+            <location filename="../prm9tool/views/diagram/summary.py" line="106" />
             <source>Amplitude %1</source>
-            <translation type="unfinished" />
+            <translation>Amplitude %1</translation>
         </message>
         <message>
-            <location filename="../prm9tool/views/diagram/summary.py" line="97" />
+            <location filename="../prm9tool/views/diagram/summary.py" line="107" />
             <source>Frequency %1</source>
-            <translation type="unfinished" />
+            <translation>Frequenz %1</translation>
         </message>
         <message>
-            <location filename="../prm9tool/views/diagram/summary.py" line="104" />
+            <location filename="../prm9tool/views/diagram/summary.py" line="115" />
             <source>coils A and B</source>
-            <translation type="unfinished" />
+            <translation>Spulen A und B</translation>
         </message>
         <message>
-            <location filename="../prm9tool/views/diagram/summary.py" line="104" />
+            <location filename="../prm9tool/views/diagram/summary.py" line="116" />
             <source>coil A only</source>
-            <translation type="unfinished" />
+            <translation>nur Spule A</translation>
         </message>
         <message>
-            <location filename="../prm9tool/views/diagram/summary.py" line="104" />
+            <location filename="../prm9tool/views/diagram/summary.py" line="117" />
             <source>coil B only</source>
-            <translation type="unfinished" />
+            <translation>nur Spule B</translation>
         </message>
         <message>
-            <location filename="../prm9tool/views/diagram/summary.py" line="124" />
+            <location filename="../prm9tool/views/diagram/summary.py" line="139" />
             <source>Voltage, temperature</source>
-            <translation type="unfinished" />
+            <translation>Spannung, Temperatur</translation>
         </message>
         <message>
-            <location filename="../prm9tool/views/diagram/summary.py" line="124" />
+            <location filename="../prm9tool/views/diagram/summary.py" line="140" />
             <source>(live values)</source>
-            <translation type="unfinished" />
+            <translation>(Live-Werte)</translation>
         </message>
         <message>
-            <location filename="../prm9tool/views/diagram/summary.py" line="129" />
+            <location filename="../prm9tool/views/diagram/summary.py" line="146" />
             <source>Node ID %1 (switch 0)</source>
-            <translation type="unfinished" />
+            <translation>Node-ID %1 (Schalter 0)</translation>
         </message>
         <message>
-            <location filename="../prm9tool/views/diagram/summary.py" line="130" />
+            <location filename="../prm9tool/views/diagram/summary.py" line="149" />
             <source>Terminator %1</source>
-            <translation type="unfinished" />
+            <translation>Abschlusswiderstand %1</translation>
         </message>
     </context>
     <context>
@@ -752,62 +757,62 @@
     <context>
         <name>FileWorkflow</name>
         <message>
-            <location filename="../prm9tool/views/file_workflow.py" line="78" />
+            <location filename="../prm9tool/views/file_workflow.py" line="77" />
             <source>untitled</source>
             <translation>unbenannt</translation>
         </message>
         <message>
-            <location filename="../prm9tool/views/file_workflow.py" line="82" />
+            <location filename="../prm9tool/views/file_workflow.py" line="81" />
             <source>Unsaved changes</source>
             <translation>Ungespeicherte Änderungen</translation>
         </message>
         <message>
-            <location filename="../prm9tool/views/file_workflow.py" line="83" />
+            <location filename="../prm9tool/views/file_workflow.py" line="82" />
             <source>The parameters in “{0}” have been changed. Save the changes?</source>
             <translation>Die Parameter in „{0}“ wurden geändert. Änderungen speichern?</translation>
         </message>
         <message>
-            <location filename="../prm9tool/views/file_workflow.py" line="97" />
+            <location filename="../prm9tool/views/file_workflow.py" line="96" />
             <source>New parameter set for {0}</source>
             <translation>Neuer Parametersatz für {0}</translation>
         </message>
         <message>
-            <location filename="../prm9tool/views/file_workflow.py" line="106" />
+            <location filename="../prm9tool/views/file_workflow.py" line="105" />
             <source>Open parameter file</source>
             <translation>Parameterdatei öffnen</translation>
         </message>
         <message>
-            <location filename="../prm9tool/views/file_workflow.py" line="108" />
+            <location filename="../prm9tool/views/file_workflow.py" line="107" />
             <source>Parameter files (*.prm);;All files (*)</source>
             <translation>Parameterdateien (*.prm);;Alle Dateien (*)</translation>
         </message>
         <message>
-            <location filename="../prm9tool/views/file_workflow.py" line="119" />
+            <location filename="../prm9tool/views/file_workflow.py" line="118" />
             <source>File not found</source>
             <translation>Datei nicht gefunden</translation>
         </message>
         <message>
-            <location filename="../prm9tool/views/file_workflow.py" line="120" />
+            <location filename="../prm9tool/views/file_workflow.py" line="119" />
             <source>“{0}” no longer exists; it was removed from the list.</source>
             <translation>„{0}“ existiert nicht mehr; die Datei wurde aus der Liste entfernt.</translation>
         </message>
         <message>
-            <location filename="../prm9tool/views/file_workflow.py" line="132" />
+            <location filename="../prm9tool/views/file_workflow.py" line="133" />
             <source>Cannot open “{0}”</source>
             <translation>„{0}“ kann nicht geöffnet werden</translation>
         </message>
         <message>
-            <location filename="../prm9tool/views/file_workflow.py" line="136" />
+            <location filename="../prm9tool/views/file_workflow.py" line="137" />
             <source>Opened {0}</source>
             <translation>{0} geöffnet</translation>
         </message>
         <message>
-            <location filename="../prm9tool/views/file_workflow.py" line="141" />
+            <location filename="../prm9tool/views/file_workflow.py" line="142" />
             <source>Opened with warnings</source>
             <translation>Mit Warnungen geöffnet</translation>
         </message>
         <message numerus="yes">
-            <location filename="../prm9tool/views/file_workflow.py" line="143" />
+            <location filename="../prm9tool/views/file_workflow.py" line="144" />
             <source>“{0}” was opened; %n warning(s) were found.</source>
             <translation>
                 <numerusform>„{0}“ wurde geöffnet; %n Warnung gefunden.</numerusform>
@@ -815,27 +820,27 @@
             </translation>
         </message>
         <message>
-            <location filename="../prm9tool/views/file_workflow.py" line="160" />
+            <location filename="../prm9tool/views/file_workflow.py" line="161" />
             <source>Save parameter file</source>
             <translation>Parameterdatei speichern</translation>
         </message>
         <message>
-            <location filename="../prm9tool/views/file_workflow.py" line="162" />
+            <location filename="../prm9tool/views/file_workflow.py" line="163" />
             <source>Parameter files (*.prm)</source>
             <translation>Parameterdateien (*.prm)</translation>
         </message>
         <message>
-            <location filename="../prm9tool/views/file_workflow.py" line="176" />
+            <location filename="../prm9tool/views/file_workflow.py" line="179" />
             <source>Cannot save “{0}”</source>
             <translation>„{0}“ kann nicht gespeichert werden</translation>
         </message>
         <message>
-            <location filename="../prm9tool/views/file_workflow.py" line="179" />
+            <location filename="../prm9tool/views/file_workflow.py" line="182" />
             <source>Saved {0}</source>
             <translation>{0} gespeichert</translation>
         </message>
         <message numerus="yes">
-            <location filename="../prm9tool/views/file_workflow.py" line="195" />
+            <location filename="../prm9tool/views/file_workflow.py" line="198" />
             <source>%n more problem(s) in the details.</source>
             <translation>
                 <numerusform>%n weiteres Problem in den Details.</numerusform>
@@ -904,7 +909,7 @@
     <context>
         <name>HelpWindow</name>
         <message>
-            <location filename="../prm9tool/views/help_dialog.py" line="44" />
+            <location filename="../prm9tool/views/help_dialog.py" line="43" />
             <source>prm9tool help</source>
             <translation>prm9tool – Hilfe</translation>
         </message>
@@ -1370,32 +1375,32 @@
     <context>
         <name>MainWindow</name>
         <message>
-            <location filename="../prm9tool/views/main_window.py" line="108" />
+            <location filename="../prm9tool/views/main_window.py" line="119" />
             <source>The oscilloscope works in online mode only.</source>
             <translation>Das Oszilloskop arbeitet nur im Online-Modus.</translation>
         </message>
         <message>
-            <location filename="../prm9tool/views/main_window.py" line="217" />
+            <location filename="../prm9tool/views/main_window.py" line="230" />
             <source>untitled</source>
             <translation>unbenannt</translation>
         </message>
         <message>
-            <location filename="../prm9tool/views/main_window.py" line="280" />
+            <location filename="../prm9tool/views/main_window.py" line="293" />
             <source>prm9tool</source>
             <translation>prm9tool</translation>
         </message>
         <message>
-            <location filename="../prm9tool/views/main_window.py" line="281" />
+            <location filename="../prm9tool/views/main_window.py" line="294" />
             <source>Parameterization of PRM9 proportional directional valves.</source>
             <translation>Parametrierung von PRM9-Proportional-Wegeventilen.</translation>
         </message>
         <message>
-            <location filename="../prm9tool/views/main_window.py" line="282" />
+            <location filename="../prm9tool/views/main_window.py" line="295" />
             <source>Free software under the GNU General Public License v3 or later.</source>
             <translation>Freie Software unter der GNU General Public License v3 oder später.</translation>
         </message>
         <message>
-            <location filename="../prm9tool/views/main_window.py" line="285" />
+            <location filename="../prm9tool/views/main_window.py" line="298" />
             <source>About prm9tool</source>
             <translation>Über prm9tool</translation>
         </message>
@@ -1707,43 +1712,43 @@
     <context>
         <name>RecordActions</name>
         <message>
-            <location filename="../prm9tool/views/record_actions.py" line="35" />
+            <location filename="../prm9tool/views/record_actions.py" line="38" />
             <source>Expert</source>
             <translation>Experte</translation>
         </message>
         <message>
-            <location filename="../prm9tool/views/record_actions.py" line="35" />
+            <location filename="../prm9tool/views/record_actions.py" line="38" />
             <source>Basic</source>
             <translation>Basis</translation>
         </message>
         <message>
-            <location filename="../prm9tool/views/record_actions.py" line="54" />
+            <location filename="../prm9tool/views/record_actions.py" line="59" />
             <source>Parameter record printed</source>
             <translation>Parameterprotokoll gedruckt</translation>
         </message>
         <message>
-            <location filename="../prm9tool/views/record_actions.py" line="64" />
-            <location filename="../prm9tool/views/record_actions.py" line="81" />
+            <location filename="../prm9tool/views/record_actions.py" line="69" />
+            <location filename="../prm9tool/views/record_actions.py" line="88" />
             <source>Export PDF</source>
             <translation>PDF exportieren</translation>
         </message>
         <message>
-            <location filename="../prm9tool/views/record_actions.py" line="64" />
+            <location filename="../prm9tool/views/record_actions.py" line="69" />
             <source>PDF files (*.pdf)</source>
             <translation>PDF-Dateien (*.pdf)</translation>
         </message>
         <message>
-            <location filename="../prm9tool/views/record_actions.py" line="82" />
+            <location filename="../prm9tool/views/record_actions.py" line="89" />
             <source>Cannot write “{0}”: {1}</source>
             <translation>„{0}“ kann nicht geschrieben werden: {1}</translation>
         </message>
         <message>
-            <location filename="../prm9tool/views/record_actions.py" line="86" />
+            <location filename="../prm9tool/views/record_actions.py" line="93" />
             <source>Parameter record saved as {0}</source>
             <translation>Parameterprotokoll gespeichert als {0}</translation>
         </message>
         <message>
-            <location filename="../prm9tool/views/record_actions.py" line="90" />
+            <location filename="../prm9tool/views/record_actions.py" line="97" />
             <source>PRM9 parameter record {0}</source>
             <translation>PRM9-Parameterprotokoll {0}</translation>
         </message>
@@ -2057,12 +2062,12 @@ Stellen Sie sicher, dass die Maschine sich gefahrlos bewegen kann. Generator sta
         <message>
             <location filename="../prm9tool/tuning.py" line="109" />
             <source>not reached</source>
-            <translation type="unfinished" />
+            <translation>nicht erreicht</translation>
         </message>
         <message>
-            <location filename="../prm9tool/tuning.py" line="113" />
+            <location filename="../prm9tool/tuning.py" line="115" />
             <source>Step %1 %: overshoot %2 %, rise time %3, settling (±2 %) %4, remaining error %5 %</source>
-            <translation type="unfinished" />
+            <translation>Sprung %1 %: Überschwingen %2 %, Anstiegszeit %3, Einschwingen (±2 %) %4, bleibende Abweichung %5 %</translation>
         </message>
     </context>
     <context>
@@ -2106,8 +2111,8 @@ Stellen Sie sicher, dass die Maschine sich gefahrlos bewegen kann. Generator sta
             <translation>Bereits online; zuerst offline gehen.</translation>
         </message>
         <message>
-            <location filename="../prm9tool/connection.py" line="229" />
-            <location filename="../prm9tool/connection.py" line="235" />
+            <location filename="../prm9tool/connection.py" line="233" />
+            <location filename="../prm9tool/connection.py" line="239" />
             <source>Not connected to a valve.</source>
             <translation>Nicht mit einem Ventil verbunden.</translation>
         </message>

@@ -7,7 +7,6 @@ from pathlib import Path
 from PySide6.QtCore import QObject, QSettings, Signal
 from PySide6.QtWidgets import QFileDialog, QMenu, QWidget
 
-from prm9tool import prmfile
 from prm9tool.document import ParameterDocument
 from prm9tool.errors import FileFormatError
 from prm9tool.typekey import TypeKey
@@ -126,6 +125,8 @@ class FileWorkflow(QObject):
         """Open ``path``; a broken file is reported with every problem and changes nothing."""
         if ask and not self.maybe_save():
             return False
+        from prm9tool import prmfile  # imported when first needed: faster start-up
+
         try:
             contents = prmfile.read_file(path)
         except FileFormatError as exc:
@@ -170,6 +171,8 @@ class FileWorkflow(QObject):
 
     def save_to(self, path: Path) -> bool:
         """Save atomically to ``path``; errors are reported and nothing is lost."""
+        from prm9tool import prmfile
+
         try:
             prmfile.save_document(self._doc, path)
         except FileFormatError as exc:

@@ -3,7 +3,6 @@
 from __future__ import annotations
 
 import platform
-from importlib import metadata
 from pathlib import Path
 
 from PySide6 import __version__ as pyside_version
@@ -59,6 +58,8 @@ def open_homepage() -> bool:
 
 
 def _version(package: str) -> str:
+    from importlib import metadata  # slow to import; About is rare
+
     try:
         return metadata.version(package)
     except metadata.PackageNotFoundError:

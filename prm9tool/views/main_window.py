@@ -6,6 +6,7 @@ own. It keeps one document object for its whole life, so every view stays connec
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from pathlib import Path
 
 from PySide6.QtCore import QByteArray, QEvent, QSettings
@@ -69,14 +70,10 @@ class MainWindow(QMainWindow):
         self.setStatusBar(self.status)
         self.parameter_view = ParameterListView(doc, access, self)
         self.stack = QStackedWidget(self)
-        self.views: dict[str, QWidget] = {
-            "diagram": self._make_diagram_view(),
-            "parameters": self.parameter_view,
-            "scope": self._make_scope_view(),
-        }
-        self._pages = {name: _page(self.views[name]) for name in VIEWS}
-        for name in VIEWS:
-            self.stack.addWidget(self._pages[name])
+        self.views: dict[str, QWidget] = _LazyViews(self._build_view)
+        self._pages: dict[str, QWidget] = {}
+        self._add_page("diagram", self._make_diagram_view())
+        self._add_page("parameters", self.parameter_view)
         self.setCentralWidget(self.stack)
         self.status_window: ValveStatusWindow | None = None
         self.help_window: HelpWindow | None = None
@@ -102,6 +99,20 @@ class MainWindow(QMainWindow):
 
         return ScopeWidget(self.connection, self.doc, self)
 
+    def _add_page(self, name: str, view: QWidget) -> None:
+        self.views[name] = view
+        self._pages[name] = _page(view)
+        self.stack.insertWidget(VIEWS.index(name), self._pages[name])
+
+    def _build_view(self, name: str) -> QWidget:
+        """The oscilloscope is built when first needed: it loads pyqtgraph, which would
+        otherwise cost a quarter of the start-up time."""
+        if name != "scope":
+            raise KeyError(name)
+        view = self._make_scope_view()
+        self._add_page(name, view)
+        return view
+
     def open_scope(self, key: str | None = None) -> None:
         """Switch to the oscilloscope (online only) and preselect measuring point ``key``."""
         if not self.connection.is_online:
@@ -116,13 +127,15 @@ class MainWindow(QMainWindow):
         """Show ``diagram``, ``parameters`` or ``scope`` in the main area."""
         if name == "scope" and not self.connection.is_online:
             name = "parameters" if self.current_view() == "scope" else self.current_view()
+        self.views[name]  # builds the view on first use
         self.stack.setCurrentWidget(self._pages[name])
         self.actions[f"view_{name}"].setChecked(True)
         self.settings.setValue(VIEW_KEY, name)
 
     def current_view(self) -> str:
         """Name of the view shown."""
-        return VIEWS[self.stack.currentIndex()]
+        current = self.stack.currentWidget()
+        return next(name for name, page in self._pages.items() if page is current)
 
     # --- wiring --------------------------------------------------------------------------------------
     def _connect_actions(self) -> None:
@@ -315,7 +328,9 @@ class MainWindow(QMainWindow):
 
     def closeEvent(self, event: QCloseEvent) -> None:
         """Ask about unsaved changes, go offline, remember the window."""
-        self.views["scope"].stop()  # switches the setpoint generator off while still online
+        scope = self.views.get("scope")
+        if scope is not None:
+            scope.stop()  # switches the setpoint generator off while still online
         if not self.files.maybe_save() or not self.valve.go_offline():
             event.ignore()
             return
@@ -334,6 +349,17 @@ class MainWindow(QMainWindow):
         if path is not None:
             event.acceptProposedAction()
             self.files.open_path(path)
+
+
+class _LazyViews(dict[str, QWidget]):
+    """The views by name; a view missing at first is built by ``build`` when asked for."""
+
+    def __init__(self, build: Callable[[str], QWidget]) -> None:
+        super().__init__()
+        self._build = build
+
+    def __missing__(self, name: str) -> QWidget:
+        return self._build(name)
 
 
 def _page(view: QWidget) -> QWidget:

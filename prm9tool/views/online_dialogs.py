@@ -149,3 +149,4 @@ class RestartDialog(QDialog):
         layout.addWidget(warning)
         layout.addWidget(self.confirm)
         layout.addWidget(self.buttons)
+        self.setMinimumWidth(440)

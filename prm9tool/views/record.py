@@ -21,6 +21,7 @@ from prm9tool.i18n import current_language, text
 translate = QCoreApplication.translate
 DiagramPainter = Callable[[QPainter, QRectF], None]
 DIAGRAM_URL = "prm9tool://diagram.png"
+PICTURE_WIDTH = 680  # points of text width on an A4 page with 15 mm margins
 
 
 @dataclass
@@ -60,7 +61,7 @@ def build_record(
 
 
 def _picture(diagram: DiagramPainter) -> QImage:
-    image = QImage(1600, 900, QImage.Format.Format_ARGB32)
+    image = QImage(2000, 1000, QImage.Format.Format_ARGB32)
     image.fill(0xFFFFFFFF)
     painter = QPainter(image)
     painter.setRenderHint(QPainter.RenderHint.Antialiasing)
@@ -89,7 +90,7 @@ def _html(doc: ParameterDocument, header: RecordHeader, with_diagram: bool) -> s
         f"<td>{t(unit)}</td></tr>"
         for mn, desc, value, unit in record_rows(doc)
     )
-    picture = f"<p><img src='{DIAGRAM_URL}' width='640'></p>" if with_diagram else ""
+    picture = f"<p><img src='{DIAGRAM_URL}' width='{PICTURE_WIDTH}'></p>" if with_diagram else ""
     titles = (
         translate("Record", "Mnemonic"),
         translate("Record", "Description"),

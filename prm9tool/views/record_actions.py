@@ -1,4 +1,7 @@
-"""Print and Export PDF of the parameter record (File menu)."""
+"""Print and Export PDF of the parameter record (File menu).
+
+Printing support is imported when first used: it is not needed to start the program.
+"""
 
 from __future__ import annotations
 
@@ -7,12 +10,10 @@ from pathlib import Path
 from typing import TYPE_CHECKING
 
 from PySide6.QtCore import QObject, Signal
-from PySide6.QtPrintSupport import QPrintDialog, QPrinter
 from PySide6.QtWidgets import QDialog, QFileDialog
 
 from prm9tool.catalogue import Access
 from prm9tool.views import prompts
-from prm9tool.views.record import RecordHeader, build_record, write_pdf
 
 if TYPE_CHECKING:
     from PySide6.QtGui import QTextDocument
@@ -31,6 +32,8 @@ class RecordActions(QObject):
 
     def record(self) -> QTextDocument:
         """The record of the current document (with the diagram picture when available)."""
+        from prm9tool.views.record import RecordHeader, build_record
+
         w = self._window
         level = self.tr("Expert") if w.access.level is Access.EXPERT else self.tr("Basic")
         info = w.connection.device
@@ -45,6 +48,8 @@ class RecordActions(QObject):
 
     def print_record(self) -> bool:
         """Print through the print dialog."""
+        from PySide6.QtPrintSupport import QPrintDialog, QPrinter
+
         printer = QPrinter(QPrinter.PrinterMode.HighResolution)
         printer.setDocName(self._title())
         dialog = QPrintDialog(printer, self._window)
@@ -72,6 +77,8 @@ class RecordActions(QObject):
 
     def export_pdf(self, path: Path) -> bool:
         """Write the record to ``path``; a failure is reported and returns False."""
+        from prm9tool.views.record import write_pdf
+
         try:
             write_pdf(self.record(), path, self._title())
         except OSError as exc:

@@ -208,7 +208,32 @@ class ValveStatusWindow(QDialog):
             self.leds, self._led_states, getattr(status, "leds", ()), strict=False
         ):
             led.set_state(led_state.color, led_state.pattern, led_state.lit)
-            state.setText(f"{led_state.color}, {led_state.pattern}")
+            state.setText(self._led_text(led_state.color, led_state.pattern))
+
+    def _led_text(self, colour: str, pattern: str) -> str:
+        """An LED's state in words, e.g. "green, blinking 2.5 Hz"."""
+        colours = {
+            "white": self.tr("white"),
+            "green": self.tr("green"),
+            "orange": self.tr("orange"),
+            "red": self.tr("red"),
+            "blue": self.tr("blue"),
+            "magenta": self.tr("magenta"),
+        }
+        patterns = {
+            "on": self.tr("on"),
+            "1Hz": self.tr("blinking 1 Hz"),
+            "2Hz": self.tr("blinking 2 Hz"),
+            "2.5Hz": self.tr("blinking 2.5 Hz"),
+            "single_flash": self.tr("single flash"),
+            "double_flash": self.tr("double flash"),
+            "triple_flash": self.tr("triple flash"),
+            "quadruple_flash": self.tr("quadruple flash"),
+            "boot": self.tr("power-up"),
+        }
+        if colour not in colours or pattern not in patterns:
+            return self.tr("off")
+        return f"{colours[colour]}, {patterns[pattern]}"
 
     def _show_errors(self, status: object) -> None:
         self.errors.clear()

@@ -372,4 +372,6 @@ def _restart_and_read(session: Any) -> dict[str, Raw]:
 
 
 def _name(entry: object) -> str:
+    if isinstance(entry, str):
+        return entry.removeprefix("emulator:")
     return f"{getattr(entry, 'type_key', '')} #{getattr(entry, 'serial', '')}".strip()
