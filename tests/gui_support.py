@@ -63,6 +63,14 @@ def record_prompts(monkeypatch: pytest.MonkeyPatch) -> Prompts:
     return recorder
 
 
+def reject_all_dialogs(monkeypatch: pytest.MonkeyPatch) -> None:
+    """Every modal dialog is cancelled at once and every file dialog returns no file."""
+    for cls in _modal_dialogs():
+        monkeypatch.setattr(cls, "exec", lambda *_a, **_k: 0)
+    for name in ("getOpenFileName", "getSaveFileName"):
+        monkeypatch.setattr(QFileDialog, name, lambda *_a, **_k: ("", ""))
+
+
 def _modal_dialogs() -> list[type]:
     from PySide6.QtPrintSupport import QPrintDialog
 

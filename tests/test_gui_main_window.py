@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 import pytest
-from gui_support import E02, E04_CA, main_window, record_prompts
+from gui_support import E02, E04_CA, main_window, record_prompts, reject_all_dialogs
 from PySide6.QtCore import QMimeData, QPointF, Qt, QUrl
 from PySide6.QtGui import QDropEvent
 from PySide6.QtWidgets import QFileDialog
@@ -336,3 +336,65 @@ def test_hid_dialog_lists_emulated_valves_and_remembers_the_choice(window, monke
     assert E04_CA in cells
     dialog.accept()
     assert str(window.settings.value(SELECTED_KEY)).endswith(":77")
+
+
+def test_every_action_can_be_triggered_offline(window, monkeypatch, answers):
+    reject_all_dialogs(monkeypatch)
+    monkeypatch.setattr(main_window_module, "open_homepage", lambda: True)
+    window._connect_actions()
+    skipped = {"exit", "online"}  # closing is tested above, going online in test_gui_online
+    for name, action in window.actions.actions.items():
+        if action.isEnabled() and name not in skipped:
+            action.trigger()
+    for action in window.actions.language_actions.values():
+        action.trigger()
+    window.set_language("en")
+    assert window.isVisible() and not window.connection.is_online
+
+
+def test_change_password_action_opens_the_dialog_at_expert_level(window, monkeypatch):
+    opened = []
+    monkeypatch.setattr(ChangePasswordDialog, "exec", lambda self: opened.append(self) or 0)
+    window.actions["change_password"].trigger()
+    assert opened == []  # Basic level: nothing to change
+    window.access.set_level(Access.EXPERT)
+    window.actions["change_password"].trigger()
+    assert len(opened) == 1
+
+
+def test_last_folder_is_remembered(window, tmp_path, monkeypatch):
+    folder = tmp_path / "records"
+    folder.mkdir()
+    seen = []
+
+    def save_name(_parent, _title, suggestion, _filter):
+        seen.append(suggestion)
+        return (str(folder / "a.prm"), "")
+
+    monkeypatch.setattr(QFileDialog, "getSaveFileName", save_name)
+    window.actions["save_as"].trigger()
+    window.files.new_document(TypeKey.parse(E04_CA))
+    window.actions["save_as"].trigger()
+    assert window.files.last_folder() == str(folder)
+    assert seen[-1].startswith(str(folder))
+
+
+def test_highlight_follows_a_dark_palette(window, qapp):
+    from PySide6.QtGui import QColor, QPalette
+
+    from prm9tool.views.parameter_model import Column as Col
+
+    old = qapp.palette()
+    dark = QPalette(old)
+    dark.setColor(QPalette.ColorRole.Base, QColor("#202124"))
+    dark.setColor(QPalette.ColorRole.Highlight, QColor("#3d7eff"))
+    qapp.setPalette(dark)
+    try:
+        window.doc.set_value("LIMTA", 2000)
+        model = window.parameter_view.model
+        colour = model.data(
+            model.index(model.row_of("LIMTA"), Col.VALUE), Qt.ItemDataRole.BackgroundRole
+        )
+        assert colour.rgb() == QColor("#3d7eff").rgb() and colour.alpha() < 255
+    finally:
+        qapp.setPalette(old)

@@ -270,3 +270,24 @@ def test_oscilloscope_opens_online_with_the_measuring_point(qtbot, window):
     with qtbot.waitSignal(window.connection.online_changed, timeout=TIMEOUT):
         window.valve.go_offline()
     assert window.current_view() == "parameters"
+
+
+def test_online_action_uses_the_valve_chosen_in_the_hid_configuration(qtbot, window, monkeypatch):
+    from prm9tool.views.hid_dialog import HidConfigurationDialog
+
+    def choose(dialog):
+        dialog.add_emulator(f"{E04_CA}:4104")
+        dialog.accept()
+        return QDialog.DialogCode.Accepted
+
+    monkeypatch.setattr(HidConfigurationDialog, "exec", choose)
+    assert window.valve.configure_hid() is not None
+    with qtbot.waitSignal(window.connection.online_changed, timeout=TIMEOUT):
+        window.actions["online"].trigger()
+    assert window.connection.device.serial == 4104
+
+
+def test_online_action_with_a_single_valve_needs_no_question(qtbot, window):
+    with qtbot.waitSignal(window.connection.online_changed, timeout=TIMEOUT):
+        window.actions["online"].trigger()  # the default emulated valve is the only one
+    assert window.connection.device.serial == 1001
