@@ -9,6 +9,7 @@ reports ``lost`` and is offline afterwards. QtCore only; the device layer is imp
 
 from __future__ import annotations
 
+import functools
 import logging
 import queue
 import threading
@@ -116,9 +117,8 @@ class ValveConnection(QObject):
             self.failed.emit(self.tr("Already online; go offline first."))
             return
         self._ensure_worker()
-        job = _Job("online", lambda _s: self._open(entry), self._on_opened, False)
-        job.needs_session = False
-        self._submit(job)
+        self._submit(_Job("online", lambda _s: self._open(entry), self._on_opened, False,
+                          needs_session=False))  # fmt: skip
 
     def go_offline(self) -> None:
         """Close the session (the stream stops); online_changed(False) follows."""
@@ -132,18 +132,9 @@ class ValveConnection(QObject):
 
     def write_many(self, values: Mapping[str, int | str]) -> None:
         """Write values to the valve; failures arrive as ``failed`` and ``write_failed``."""
-        values = dict(values)
-        names = list(values)
-
-        def run(session: Any) -> None:
-            if len(values) == 1:
-                session.write(names[0], values[names[0]])
-            else:
-                session.write_many(values)
-
-        self._submit(
-            _Job("write", run, None, False, on_error=lambda: self.write_failed.emit(names))
-        )
+        values, names = dict(values), list(values)
+        failed = lambda: self.write_failed.emit(names)  # noqa: E731
+        self._submit(_Job("write", lambda s: s.write_many(values), None, False, failed))
 
     def store(self) -> None:
         """Copy the valve's working values to its non-volatile memory."""
@@ -196,14 +187,8 @@ class ValveConnection(QObject):
     def start_stream(self, keys: Sequence[str], rate_hz: int) -> None:
         """Stream up to three measuring points; samples arrive as ``samples_received``."""
         names = list(keys)
-        self._submit(
-            _Job(
-                "stream_start",
-                lambda s: self._poller.start_stream(s, names, rate_hz),
-                self._on_stream_started,
-                False,
-            )
-        )
+        run = lambda s: self._poller.start_stream(s, names, rate_hz)  # noqa: E731
+        self._submit(_Job("stream_start", run, self._on_stream_started, False))
 
     def stop_stream(self) -> None:
         """Stop the stream (``stream_stopped`` follows)."""
@@ -311,7 +296,7 @@ class ValveConnection(QObject):
                 next_status = now + STATUS_PERIOD_S
             if poll_signals:
                 next_signals = now + SIGNAL_PERIOD_S
-            self._guarded(lambda s=poll_status, g=poll_signals: self._poll(s, g))
+            self._guarded(functools.partial(self._poll, poll_status, poll_signals))
 
     def _execute(self, job: _Job) -> None:
         def run() -> None:

@@ -84,10 +84,10 @@ def test_shipped_qm_files_are_compiled_from_the_ts_files(tmp_path, language):
 def test_switching_to_german_changes_visible_texts_at_once(window):
     window.show_view("parameters")
     model = window.parameter_view.model
-    window.actions.language_actions["de"].trigger()
+    window.commands.language_actions["de"].trigger()
     assert i18n.current_language() == "de"
-    assert window.actions.menus["file"].title() == "&Datei"
-    assert window.actions["online"].text() == "O&nline-Modus"
+    assert window.commands.menus["file"].title() == "&Datei"
+    assert window.commands["online"].text() == "O&nline-Modus"
     assert window.status.mode_label.text() == "Modus: OFFLINE"
     assert model.headerData(Column.VALUE, Qt.Orientation.Horizontal) == "Wert"
     row = model.row_of("PWR")
@@ -100,10 +100,10 @@ def test_czech_uses_the_manuals_terms(window):
     window.set_language("cs")
     titles = [a.text() for a in window.menuBar().actions()]
     assert titles == ["&Soubor", "Ná&hled", "&Ventil", "&Komunikace", "&Nápověda"]
-    assert window.actions["view_diagram"].text() == "&Postupový diagram"
+    assert window.commands["view_diagram"].text() == "&Postupový diagram"
     assert window.status.file_label.text() == "nepojmenovaná"
     window.set_language("en")
-    assert window.actions.menus["file"].title() == "&File"
+    assert window.commands.menus["file"].title() == "&File"
 
 
 def test_qt_own_dialog_texts_are_translated_too(window):

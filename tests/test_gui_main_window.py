@@ -33,7 +33,7 @@ def window(qtbot, tmp_path, answers):
 
 
 def _menu_texts(window, name):
-    return [a.text() for a in window.actions.menus[name].actions() if not a.isSeparator()]
+    return [a.text() for a in window.commands.menus[name].actions() if not a.isSeparator()]
 
 
 def test_menus_and_toolbar_are_those_of_the_manual(window):
@@ -55,7 +55,7 @@ def test_menus_and_toolbar_are_those_of_the_manual(window):
     ]
     assert _menu_texts(window, "help") == ["&Help", "Home&page", "&About prm9tool"]
     assert _menu_texts(window, "language") == ["Deutsch", "English", "Čeština"]
-    toolbar = [a.objectName() for a in window.actions.toolbar.actions() if not a.isSeparator()]
+    toolbar = [a.objectName() for a in window.commands.toolbar.actions() if not a.isSeparator()]
     assert toolbar == [
         f"action_{name}"
         for name in ("open", "save", "print", "online", "offline", "download", "upload",
@@ -63,18 +63,18 @@ def test_menus_and_toolbar_are_those_of_the_manual(window):
                      "view_scope", "canopen")
     ]  # fmt: skip
     assert all(
-        not a.icon().isNull() for a in window.actions.toolbar.actions() if not a.isSeparator()
+        not a.icon().isNull() for a in window.commands.toolbar.actions() if not a.isSeparator()
     )
 
 
 def test_shortcuts_include_the_standard_ones(window):
-    shortcuts = {n: window.actions[n].shortcut().toString() for n in ("open", "save", "undo")}
+    shortcuts = {n: window.commands[n].shortcut().toString() for n in ("open", "save", "undo")}
     assert shortcuts == {"open": "Ctrl+O", "save": "Ctrl+S", "undo": "Ctrl+Z"}
-    assert "Ctrl+Y" in [k.toString() for k in window.actions["redo"].shortcuts()]
+    assert "Ctrl+Y" in [k.toString() for k in window.commands["redo"].shortcuts()]
 
 
 def test_offline_only_what_makes_sense_is_enabled(window):
-    a = window.actions
+    a = window.commands
     for name in ("upload", "download", "restart", "offline", "view_scope"):
         assert not a[name].isEnabled(), name
     for name in ("online", "open", "valve_selection", "valve_status", "restore_factory"):
@@ -93,9 +93,9 @@ def test_status_bar_shows_mode_type_key_and_file(window):
 
 
 def test_views_switch_and_scope_needs_a_valve(window):
-    window.actions["view_parameters"].trigger()
+    window.commands["view_parameters"].trigger()
     assert window.current_view() == "parameters"
-    window.actions["view_diagram"].trigger()
+    window.commands["view_diagram"].trigger()
     assert window.current_view() == "diagram"
     window.open_scope("demand")
     assert window.current_view() == "diagram"
@@ -104,16 +104,16 @@ def test_views_switch_and_scope_needs_a_valve(window):
 
 def test_expert_needs_the_password(window, monkeypatch):
     monkeypatch.setattr(window, "_ask_password", lambda: Rejected)
-    window.actions["level_expert"].trigger()
+    window.commands["level_expert"].trigger()
     assert window.access.level is Access.BASIC
-    assert window.actions["level_basic"].isChecked()
+    assert window.commands["level_basic"].isChecked()
     monkeypatch.setattr(window, "_ask_password", lambda: Accepted)
-    window.actions["level_expert"].trigger()
+    window.commands["level_expert"].trigger()
     assert window.access.level is Access.EXPERT
-    assert window.actions["change_password"].isEnabled()
-    window.actions["level_basic"].trigger()
+    assert window.commands["change_password"].isEnabled()
+    window.commands["level_basic"].trigger()
     assert window.access.level is Access.BASIC
-    assert not window.actions["change_password"].isEnabled()
+    assert not window.commands["change_password"].isEnabled()
 
 
 def test_password_dialog_accepts_only_the_right_password(window):
@@ -147,7 +147,7 @@ def test_basic_level_hides_and_locks_the_controllers(window, monkeypatch):
     model = window.parameter_view.model
     assert model.row_of("POSKP") < 0
     monkeypatch.setattr(window, "_ask_password", lambda: Accepted)
-    window.actions["level_expert"].trigger()
+    window.commands["level_expert"].trigger()
     assert model.row_of("POSKP") >= 0
 
 
@@ -155,11 +155,11 @@ def test_valve_selection_makes_a_new_document_with_factory_defaults(window, monk
     window.doc.set_value("LIMTA", 2000)
     window.doc.mark_saved(None)
     monkeypatch.setattr(ValveSelectionDialog, "exec", _select(E04_CA))
-    window.actions["valve_selection"].trigger()
+    window.commands["valve_selection"].trigger()
     assert str(window.doc.type_key) == E04_CA
     assert window.doc.value("LIMTA") == 2400 and "PRCKP" in window.doc.values
     assert not window.doc.modified and window.doc.path is None
-    assert window.actions["canopen"].isEnabled()
+    assert window.commands["canopen"].isEnabled()
     assert window.status.type_key_label.text() == E04_CA
 
 
@@ -185,7 +185,7 @@ def test_unsaved_changes_prompt_on_new_can_cancel(window, answers, monkeypatch):
     window.doc.set_value("LIMTA", 2000)
     monkeypatch.setattr(ValveSelectionDialog, "exec", _select(E04_CA))
     answers.answers = [prompts.Button.Cancel]
-    window.actions["new"].trigger()
+    window.commands["new"].trigger()
     assert "Unsaved changes" in answers.asked[-1]
     assert str(window.doc.type_key) == E02 and window.doc.value("LIMTA") == 2000
 
@@ -194,19 +194,19 @@ def test_save_as_then_open_round_trip_and_recent_files(window, tmp_path, monkeyp
     path = tmp_path / "valve.prm"
     window.doc.set_value("DTAMP", 1000)
     monkeypatch.setattr(QFileDialog, "getSaveFileName", lambda *a, **k: (str(path)[:-4], ""))
-    window.actions["save_as"].trigger()
+    window.commands["save_as"].trigger()
     assert path.exists() and not window.doc.modified
     assert window.status.file_label.text() == "valve.prm"
     assert window.files.recent_files() == [str(path)]
     window.doc.set_value("DTAMP", 2000)
-    window.actions["save"].trigger()
+    window.commands["save"].trigger()
     assert prmfile.read_file(path).values["DTAMP"] == 2000
     window.files.new_document(TypeKey.parse(E02))
     monkeypatch.setattr(QFileDialog, "getOpenFileName", lambda *a, **k: (str(path), ""))
-    window.actions["open"].trigger()
+    window.commands["open"].trigger()
     assert window.doc.value("DTAMP") == 2000 and window.doc.path == path
-    window.files.fill_recent_menu(window.actions.menus["recent"])
-    assert [a.text() for a in window.actions.menus["recent"].actions()] == ["&1 valve.prm"]
+    window.files.fill_recent_menu(window.commands.menus["recent"])
+    assert [a.text() for a in window.commands.menus["recent"].actions()] == ["&1 valve.prm"]
 
 
 def test_opening_a_broken_file_reports_the_line_and_changes_nothing(window, tmp_path, answers):
@@ -245,22 +245,22 @@ def test_drop_a_prm_file_opens_it(window, tmp_path):
 def test_undo_redo_every_edit(window):
     window.doc.set_value("LIMTA", 2000)
     window.doc.set_value("DTAMP", 1000)
-    assert window.actions["undo"].isEnabled()
-    window.actions["undo"].trigger()
+    assert window.commands["undo"].isEnabled()
+    window.commands["undo"].trigger()
     assert window.doc.value("DTAMP") != 1000 and window.doc.value("LIMTA") == 2000
-    window.actions["undo"].trigger()
+    window.commands["undo"].trigger()
     assert window.doc.value("LIMTA") == 2400 and not window.doc.modified
-    assert window.actions["redo"].isEnabled()
-    window.actions["redo"].trigger()
+    assert window.commands["redo"].isEnabled()
+    window.commands["redo"].trigger()
     assert window.doc.value("LIMTA") == 2000
 
 
 def test_restore_factory_values_offline_resets_the_document(window, answers):
     window.doc.set_value("LIMTA", 2000)
     answers.answers = [prompts.Button.Yes]
-    window.actions["restore_factory"].trigger()
+    window.commands["restore_factory"].trigger()
     assert window.doc.value("LIMTA") == 2400
-    window.actions["undo"].trigger()
+    window.commands["undo"].trigger()
     assert window.doc.value("LIMTA") == 2000
 
 
@@ -268,7 +268,7 @@ def test_export_pdf_holds_the_parameters(window, tmp_path, monkeypatch):
     target = tmp_path / "record"
     window.doc.set_value("LIMTA", 1234)
     monkeypatch.setattr(QFileDialog, "getSaveFileName", lambda *a, **k: (str(target), ""))
-    window.actions["export_pdf"].trigger()
+    window.commands["export_pdf"].trigger()
     pdf = target.with_suffix(".pdf")
     assert pdf.read_bytes().startswith(b"%PDF")
     text = window.records.record().toPlainText()
@@ -289,20 +289,20 @@ def test_print_goes_through_the_print_dialog(window, tmp_path, monkeypatch):
         return Accepted
 
     monkeypatch.setattr(QPrintDialog, "exec", accept)
-    window.actions["print"].trigger()
+    window.commands["print"].trigger()
     assert out.exists() and out.stat().st_size > 10_000
 
 
 def test_help_about_and_homepage(window, answers, monkeypatch):
-    window.actions["help"].trigger()
+    window.commands["help"].trigger()
     assert window.help_window.isVisible()
     assert "Expert" in window.help_window.browser.toPlainText()
-    window.actions["about"].trigger()
+    window.commands["about"].trigger()
     assert "prm9tool" in answers.asked[-1] and "PySide6" in answers.asked[-1]
     opened = []
     monkeypatch.setattr(main_window_module, "open_homepage", lambda: opened.append(1))
     window._connect_actions()
-    window.actions["homepage"].trigger()
+    window.commands["homepage"].trigger()
     assert opened
 
 
@@ -343,10 +343,10 @@ def test_every_action_can_be_triggered_offline(window, monkeypatch, answers):
     monkeypatch.setattr(main_window_module, "open_homepage", lambda: True)
     window._connect_actions()
     skipped = {"exit", "online"}  # closing is tested above, going online in test_gui_online
-    for name, action in window.actions.actions.items():
+    for name, action in window.commands.actions.items():
         if action.isEnabled() and name not in skipped:
             action.trigger()
-    for action in window.actions.language_actions.values():
+    for action in window.commands.language_actions.values():
         action.trigger()
     window.set_language("en")
     assert window.isVisible() and not window.connection.is_online
@@ -355,10 +355,10 @@ def test_every_action_can_be_triggered_offline(window, monkeypatch, answers):
 def test_change_password_action_opens_the_dialog_at_expert_level(window, monkeypatch):
     opened = []
     monkeypatch.setattr(ChangePasswordDialog, "exec", lambda self: opened.append(self) or 0)
-    window.actions["change_password"].trigger()
+    window.commands["change_password"].trigger()
     assert opened == []  # Basic level: nothing to change
     window.access.set_level(Access.EXPERT)
-    window.actions["change_password"].trigger()
+    window.commands["change_password"].trigger()
     assert len(opened) == 1
 
 
@@ -372,9 +372,9 @@ def test_last_folder_is_remembered(window, tmp_path, monkeypatch):
         return (str(folder / "a.prm"), "")
 
     monkeypatch.setattr(QFileDialog, "getSaveFileName", save_name)
-    window.actions["save_as"].trigger()
+    window.commands["save_as"].trigger()
     window.files.new_document(TypeKey.parse(E04_CA))
-    window.actions["save_as"].trigger()
+    window.commands["save_as"].trigger()
     assert window.files.last_folder() == str(folder)
     assert seen[-1].startswith(str(folder))
 

@@ -65,9 +65,9 @@ def test_a_new_document_simply_takes_the_valve(qtbot, window, monkeypatch):
     assert bar.mode_label.text() == "Mode: ONLINE" and bar.firmware_label.text().startswith("FW: ")
     qtbot.waitUntil(lambda: bar.status_label.text() == "Status: ok", timeout=TIMEOUT)
     for name in ("upload", "download", "restart", "offline", "view_scope"):
-        assert window.actions[name].isEnabled(), name
-    assert not window.actions["online"].isEnabled()
-    assert not window.actions["valve_selection"].isEnabled()
+        assert window.commands[name].isEnabled(), name
+    assert not window.commands["online"].isEnabled()
+    assert not window.commands["valve_selection"].isEnabled()
 
 
 def test_differences_prompt_take_the_valve_values(qtbot, window, monkeypatch):
@@ -131,7 +131,7 @@ def test_table_edits_go_to_the_valve_and_downloads_come_back(qtbot, window):
     assert _valve_value(qtbot, window, "LIMTB") == 1900
     window.connection.write("DYNFREQ", 120)  # the valve changes behind the document's back
     with qtbot.waitSignal(window.connection.operation_finished, timeout=TIMEOUT):
-        window.actions["download"].trigger()
+        window.commands["download"].trigger()
     assert window.doc.value("DYNFREQ") == 120
     window.undo.stack.undo()
     assert window.doc.value("DYNFREQ") == 80
@@ -164,7 +164,7 @@ def test_valve_that_disappears_goes_offline_and_keeps_the_edits(qtbot, window, a
     assert "Connection to the valve lost" in answers.informed[-1]
     assert "kept in the document" in answers.informed[-1]
     assert window.status.mode_label.text() == "Mode: OFFLINE"
-    assert window.actions["online"].isEnabled() and not window.actions["upload"].isEnabled()
+    assert window.commands["online"].isEnabled() and not window.commands["upload"].isEnabled()
     window.doc.set_value("DTAMP", 2000)  # offline edits go to the document only
     assert window.doc.value("THRESETP") == 1638 and window.doc.value("DTAMP") == 2000
 
@@ -174,7 +174,7 @@ def test_upload_shows_a_progress_dialog_and_stores(qtbot, window):
     _settled(qtbot, window)
     window.doc.set_value("DTAMP", 1234)
     with qtbot.waitSignal(window.connection.operation_finished, timeout=TIMEOUT) as done:
-        window.actions["upload"].trigger()
+        window.commands["upload"].trigger()
         assert window.valve.progress_dialog is not None
     assert done.args[0] == "upload" and done.args[1].stored
     assert window.valve.progress_dialog is None
@@ -208,13 +208,13 @@ def test_restart_needs_the_hydraulics_confirmation(qtbot, window, monkeypatch):
     dialog.confirm.setChecked(True)
     assert dialog.restart_button.isEnabled()
     monkeypatch.setattr(RestartDialog, "exec", lambda self: QDialog.DialogCode.Rejected)
-    window.actions["restart"].trigger()
+    window.commands["restart"].trigger()
     assert not window.connection.is_busy
     monkeypatch.setattr(RestartDialog, "exec", lambda self: QDialog.DialogCode.Accepted)
     _choose(monkeypatch, DiffChoice.TAKE_VALVE)
     window.doc.set_value("DTAMP", 1111)  # written but not stored: the restart undoes it
     with qtbot.waitSignal(window.connection.operation_finished, timeout=TIMEOUT) as done:
-        window.actions["restart"].trigger()
+        window.commands["restart"].trigger()
     assert done.args[0] == "after_restart" and done.args[1]["DTAMP"] != 1111
     qtbot.waitUntil(lambda: window.sync.active, timeout=TIMEOUT)
     assert window.doc.value("DTAMP") == done.args[1]["DTAMP"]  # the valve's values taken
@@ -223,13 +223,13 @@ def test_restart_needs_the_hydraulics_confirmation(qtbot, window, monkeypatch):
 def test_restore_factory_values_online(qtbot, window, answers):
     go_online(qtbot, window)
     _settled(qtbot, window)
-    window.actions["upload"].trigger()
+    window.commands["upload"].trigger()
     window.doc.set_value("LIMTA", 2000)
     with qtbot.waitSignal(window.connection.operation_finished, timeout=TIMEOUT):
-        window.actions["upload"].trigger()
+        window.commands["upload"].trigger()
     answers.answers = [prompts.Button.Yes]
     with qtbot.waitSignal(window.connection.operation_finished, timeout=TIMEOUT) as done:
-        window.actions["restore_factory"].trigger()
+        window.commands["restore_factory"].trigger()
     assert done.args[0] == "restore_factory"
     assert window.doc.value("LIMTA") == 2400
 
@@ -240,7 +240,7 @@ def test_going_offline_offers_to_store_online_changes(qtbot, window, answers):
     window.doc.set_value("DTAMP", 999)
     answers.answers = [prompts.Button.Yes]
     with qtbot.waitSignal(window.connection.online_changed, timeout=TIMEOUT):
-        window.actions["offline"].trigger()
+        window.commands["offline"].trigger()
     assert "not stored" in answers.asked[-1]
     go_online(qtbot, window, f"{E02}:4001")  # same valve: the stored value survived
     qtbot.waitUntil(lambda: window.sync.active, timeout=TIMEOUT)
@@ -283,11 +283,11 @@ def test_online_action_uses_the_valve_chosen_in_the_hid_configuration(qtbot, win
     monkeypatch.setattr(HidConfigurationDialog, "exec", choose)
     assert window.valve.configure_hid() is not None
     with qtbot.waitSignal(window.connection.online_changed, timeout=TIMEOUT):
-        window.actions["online"].trigger()
+        window.commands["online"].trigger()
     assert window.connection.device.serial == 4104
 
 
 def test_online_action_with_a_single_valve_needs_no_question(qtbot, window):
     with qtbot.waitSignal(window.connection.online_changed, timeout=TIMEOUT):
-        window.actions["online"].trigger()  # the default emulated valve is the only one
+        window.commands["online"].trigger()  # the default emulated valve is the only one
     assert window.connection.device.serial == 1001

@@ -63,9 +63,9 @@ class MainWindow(QMainWindow):
         self.files = FileWorkflow(self, doc, undo, settings)
         self.valve = ValveWorkflow(self, doc, undo, connection, self.sync, settings)
         self.records = RecordActions(self)
-        self.actions = MainActions(self)
-        self.actions.build_menus(self.menuBar())
-        self.actions.build_toolbar(self.addToolBar("toolbar"))
+        self.commands = MainActions(self)
+        self.commands.build_menus(self.menuBar())
+        self.commands.build_toolbar(self.addToolBar("toolbar"))
         self.status = MainStatusBar(self)
         self.setStatusBar(self.status)
         self.parameter_view = ParameterListView(doc, access, self)
@@ -129,7 +129,7 @@ class MainWindow(QMainWindow):
             name = "parameters" if self.current_view() == "scope" else self.current_view()
         self.views[name]  # builds the view on first use
         self.stack.setCurrentWidget(self._pages[name])
-        self.actions[f"view_{name}"].setChecked(True)
+        self.commands[f"view_{name}"].setChecked(True)
         self.settings.setValue(VIEW_KEY, name)
 
     def current_view(self) -> str:
@@ -139,7 +139,7 @@ class MainWindow(QMainWindow):
 
     # --- wiring --------------------------------------------------------------------------------------
     def _connect_actions(self) -> None:
-        a = self.actions
+        a = self.commands
         handlers = {
             "new": self.new_document,
             "open": self.files.open_dialog,
@@ -200,7 +200,7 @@ class MainWindow(QMainWindow):
             self.show_view("parameters")
 
     def _update_actions(self, *_args: object) -> None:
-        a, online, busy = self.actions, self.connection.is_online, self.connection.is_busy
+        a, online, busy = self.commands, self.connection.is_online, self.connection.is_busy
         ready = online and not busy
         enabled = {
             "save": self.doc.modified or self.doc.path is None,
@@ -301,7 +301,7 @@ class MainWindow(QMainWindow):
     # --- language, settings, events ------------------------------------------------------------------
     def retranslate(self) -> None:
         """Set every text in the current language."""
-        self.actions.retranslate()
+        self.commands.retranslate()
         self._show_file()
 
     def changeEvent(self, event: QEvent) -> None:
