@@ -291,3 +291,26 @@ def test_online_action_with_a_single_valve_needs_no_question(qtbot, window):
     with qtbot.waitSignal(window.connection.online_changed, timeout=TIMEOUT):
         window.commands["online"].trigger()  # the default emulated valve is the only one
     assert window.connection.device.serial == 1001
+
+
+def test_opening_a_file_online_asks_before_anything_is_written(qtbot, window, tmp_path,
+                                                                monkeypatch):  # fmt: skip
+    from prm9tool import prmfile
+    from prm9tool.typekey import TypeKey
+
+    go_online(qtbot, window)
+    _settled(qtbot, window)
+    path = tmp_path / "other.prm"
+    contents = prmfile.PrmContents.factory(TypeKey.parse(E02))
+    contents.values["LIMTA"] = 1700
+    prmfile.write_file(contents, path)
+    shown = []
+    _choose(monkeypatch, DiffChoice.CANCEL, shown)
+    assert window.files.open_path(path)
+    qtbot.waitUntil(lambda: bool(shown), timeout=TIMEOUT)
+    assert [shown[0].table.item(r, 0).text() for r in range(shown[0].table.rowCount())] == ["LIMTA"]
+    qtbot.waitUntil(lambda: not window.connection.is_online, timeout=TIMEOUT)
+    assert window.doc.value("LIMTA") == 1700  # the file stays open, offline
+    go_online(qtbot, window)  # the valve was not written meanwhile
+    qtbot.waitUntil(lambda: len(shown) == 2, timeout=TIMEOUT)
+    assert shown[1].table.item(0, 3).text() == "2400 mA"

@@ -23,6 +23,8 @@ class FileWorkflow(QObject):
 
     recent_changed = Signal()
     message_posted = Signal(str)  # a short status-bar message
+    about_to_replace = Signal()  # the document's contents are about to be replaced
+    document_replaced = Signal()  # … and have been (a file opened, a new valve type)
 
     def __init__(
         self,
@@ -188,8 +190,10 @@ class FileWorkflow(QObject):
         return f"{key}{serial}.prm"
 
     def _replace(self, new: ParameterDocument) -> None:
+        self.about_to_replace.emit()
         self._doc.replace_with(new)
         self._undo.stack.clear()
+        self.document_replaced.emit()
 
     def _report_file_error(self, title: str, exc: FileFormatError) -> None:
         problems = exc.problems

@@ -192,6 +192,8 @@ class MainWindow(QMainWindow):
         d.type_key_changed.connect(s.set_type_key)
         for signal in (d.modified_changed, d.path_changed):
             signal.connect(self._show_file)
+        self.files.about_to_replace.connect(self.sync.stop)
+        self.files.document_replaced.connect(self.valve.compare_again)
         for source in (self.files, self.valve, self.records):
             source.message_posted.connect(lambda text: s.showMessage(text, 8000))
 

@@ -128,6 +128,14 @@ class ValveWorkflow(QObject):
         self._start(COMPARE, self.tr("Reading the valve's parameters…"), cancellable=False)
         self._connection.download(COMPARE)
 
+    def compare_again(self) -> None:
+        """The document was replaced while online: compare it with the valve again (the
+        differences prompt decides what is written), instead of writing it unasked."""
+        if self._connection.is_online:
+            self._sync.stop()
+            self._start(COMPARE, self.tr("Reading the valve's parameters…"), cancellable=False)
+            self._connection.download(COMPARE)
+
     # --- the diff prompt --------------------------------------------------------------------------
     def _on_compare_finished(self, values: Mapping[str, Raw]) -> None:
         valve_key = self._valve_key()
