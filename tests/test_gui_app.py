@@ -1,0 +1,75 @@
+"""The composition root: command line → window, file, emulator; run() until the window closes."""
+
+from __future__ import annotations
+
+import pytest
+from gui_support import record_prompts
+from PySide6.QtCore import QSettings, QTimer
+from PySide6.QtWidgets import QApplication
+
+from prm9tool import app, prmfile
+from prm9tool.cli import build_parser
+from prm9tool.device import factory
+from prm9tool.typekey import TypeKey
+
+E04_CA = "PRM9-10.3Z11/60-24E04S02-CA"
+TIMEOUT = 15_000
+
+
+@pytest.fixture
+def answers(monkeypatch, tmp_path):
+    QSettings.setPath(QSettings.Format.NativeFormat, QSettings.Scope.UserScope, str(tmp_path))
+    yield record_prompts(monkeypatch)
+    factory.forget_emulated_valves()
+
+
+def _args(*argv):
+    return build_parser().parse_args(list(argv))
+
+
+def test_plan_fills_in_the_emulator_defaults():
+    assert app.plan_from(_args("--emulator")).emulators == [
+        f"{app.DEFAULT_EMULATOR_TYPE_KEY}:{app.DEFAULT_EMULATOR_SERIAL}"
+    ]
+    plan = app.plan_from(_args("valve.prm", "--emulator", f"{E04_CA}:7"))
+    assert plan.emulators == [f"{E04_CA}:7"] and str(plan.file) == "valve.prm"
+    assert app.plan_from(_args()).emulators == [] and app.plan_from(_args()).file is None
+
+
+def test_a_file_on_the_command_line_is_opened(qtbot, tmp_path, answers):
+    path = tmp_path / "valve.prm"
+    prmfile.write_file(prmfile.PrmContents.factory(TypeKey.parse(E04_CA)), path)
+    app.create_application()
+    window = app.create_window(_args(str(path)))
+    qtbot.addWidget(window)
+    app.start(window, app.plan_from(_args(str(path))))
+    assert window.doc.path == path and str(window.doc.type_key) == E04_CA
+    window.connection.shutdown()
+
+
+def test_emulator_on_the_command_line_goes_online_and_is_remembered(qtbot, answers):
+    app.create_application()
+    args = _args("--emulator", "prm9-10.3z11/60-24e04s02-ca:4201")
+    window = app.create_window(args)
+    qtbot.addWidget(window)
+    with qtbot.waitSignal(window.connection.online_changed, timeout=TIMEOUT):
+        app.start(window, app.plan_from(args))
+    assert window.connection.device.serial == 4201
+    assert f"{E04_CA}:4201" in window.settings.value("hid/emulators")
+    assert window.settings.value("hid/selected") == f"emulator:{E04_CA}:4201"
+    window.connection.shutdown()
+
+
+def test_a_bad_emulator_type_key_is_reported(qtbot, answers):
+    app.create_application()
+    args = _args("--emulator", "PRM9-07.3Z11/30-24E02S02")
+    window = app.create_window(args)
+    qtbot.addWidget(window)
+    app.start(window, app.plan_from(args))
+    assert "nominal size '07'" in answers.informed[-1]
+    assert not window.connection.is_online
+
+
+def test_run_shows_the_window_and_returns_when_it_closes(answers):
+    QTimer.singleShot(300, QApplication.closeAllWindows)
+    assert app.run(_args()) == 0
