@@ -191,6 +191,7 @@ def test_unsaved_changes_prompt_on_new_can_cancel(window, answers, monkeypatch):
 
 
 def test_save_as_then_open_round_trip_and_recent_files(window, tmp_path, monkeypatch):
+    assert not window.commands.menus["recent"].isEnabled()  # nothing opened yet
     path = tmp_path / "valve.prm"
     window.doc.set_value("DTAMP", 1000)
     monkeypatch.setattr(QFileDialog, "getSaveFileName", lambda *a, **k: (str(path)[:-4], ""))
@@ -205,8 +206,8 @@ def test_save_as_then_open_round_trip_and_recent_files(window, tmp_path, monkeyp
     monkeypatch.setattr(QFileDialog, "getOpenFileName", lambda *a, **k: (str(path), ""))
     window.commands["open"].trigger()
     assert window.doc.value("DTAMP") == 2000 and window.doc.path == path
-    window.files.fill_recent_menu(window.commands.menus["recent"])
-    assert [a.text() for a in window.commands.menus["recent"].actions()] == ["&1 valve.prm"]
+    recent = window.commands.menus["recent"]
+    assert [a.text() for a in recent.actions()] == ["&1 valve.prm"] and recent.isEnabled()
 
 
 def test_opening_a_broken_file_reports_the_line_and_changes_nothing(window, tmp_path, answers):
@@ -398,3 +399,13 @@ def test_highlight_follows_a_dark_palette(window, qapp):
         assert colour.rgb() == QColor("#3d7eff").rgb() and colour.alpha() < 255
     finally:
         qapp.setPalette(old)
+
+
+def test_a_vanished_recent_file_is_removed_with_a_message(window, tmp_path, answers):
+    path = tmp_path / "gone.prm"
+    window.files.save_to(path)
+    path.unlink()
+    recent = window.commands.menus["recent"]
+    recent.actions()[0].trigger()
+    assert "no longer exists" in answers.informed[-1]
+    assert window.files.recent_files() == [] and not recent.isEnabled()

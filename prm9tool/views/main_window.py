@@ -174,9 +174,9 @@ class MainWindow(QMainWindow):
             a[name].triggered.connect(lambda _checked=False, h=handler: h())
         for language, action in a.language_actions.items():
             action.triggered.connect(lambda _checked=False, lang=language: self.set_language(lang))
-        a.menus["recent"].aboutToShow.connect(
-            lambda: self.files.fill_recent_menu(a.menus["recent"])
-        )
+        recent = a.menus["recent"]
+        self.files.recent_changed.connect(lambda: self.files.fill_recent_menu(recent))
+        self.files.fill_recent_menu(recent)
 
     def _connect_models(self) -> None:
         c, d, s = self.connection, self.doc, self.status
