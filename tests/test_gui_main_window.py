@@ -4,11 +4,8 @@ from __future__ import annotations
 
 import pytest
 from gui_support import E02, E04_CA, main_window, record_prompts, reject_all_dialogs
-from PySide6.QtCore import QMimeData, QPointF, Qt, QUrl
-from PySide6.QtGui import QDropEvent
-from PySide6.QtWidgets import QFileDialog
+from PySide6.QtCore import Qt
 
-from prm9tool import prmfile
 from prm9tool.catalogue import Access
 from prm9tool.password import DEFAULT_PASSWORD, PasswordStore
 from prm9tool.typekey import TypeKey
@@ -181,81 +178,6 @@ def test_valve_selection_validates_a_typed_key(window):
     assert dialog.flow.currentData() == "60" and dialog.canopen.isChecked()
 
 
-def test_unsaved_changes_prompt_on_new_can_cancel(window, answers, monkeypatch):
-    window.doc.set_value("LIMTA", 2000)
-    monkeypatch.setattr(ValveSelectionDialog, "exec", _select(E04_CA))
-    answers.answers = [prompts.Button.Cancel]
-    window.commands["new"].trigger()
-    assert "Unsaved changes" in answers.asked[-1]
-    assert str(window.doc.type_key) == E02 and window.doc.value("LIMTA") == 2000
-
-
-def test_save_as_then_open_round_trip_and_recent_files(window, tmp_path, monkeypatch):
-    assert not window.commands.menus["recent"].isEnabled()  # nothing opened yet
-    path = tmp_path / "valve.prm"
-    window.doc.set_value("DTAMP", 1000)
-    monkeypatch.setattr(QFileDialog, "getSaveFileName", lambda *a, **k: (str(path)[:-4], ""))
-    window.commands["save_as"].trigger()
-    assert path.exists() and not window.doc.modified
-    assert window.status.file_label.text() == "valve.prm"
-    assert window.files.recent_files() == [str(path)]
-    window.doc.set_value("DTAMP", 2000)
-    window.commands["save"].trigger()
-    assert prmfile.read_file(path).values["DTAMP"] == 2000
-    window.files.new_document(TypeKey.parse(E02))
-    monkeypatch.setattr(QFileDialog, "getOpenFileName", lambda *a, **k: (str(path), ""))
-    window.commands["open"].trigger()
-    assert window.doc.value("DTAMP") == 2000 and window.doc.path == path
-    recent = window.commands.menus["recent"]
-    assert [a.text() for a in recent.actions()] == ["&1 valve.prm"] and recent.isEnabled()
-
-
-def test_opening_a_broken_file_reports_the_line_and_changes_nothing(window, tmp_path, answers):
-    path = tmp_path / "broken.prm"
-    path.write_text("format = prm9tool 1\ntype_key = PRM9-06.3Z11/30-24E02S02\nLIMTA = lots\n")
-    window.doc.set_value("LIMTA", 2000)
-    window.doc.mark_saved(None)
-    assert not window.files.open_path(path)
-    assert "broken.prm:3" in answers.asked[-1]
-    assert window.doc.value("LIMTA") == 2000 and window.doc.path is None
-
-
-def test_unsaved_prompt_on_close_save_keeps_window_on_cancel(window, answers):
-    window.doc.set_value("LIMTA", 2000)
-    answers.answers = [prompts.Button.Cancel]
-    window.close()
-    assert window.isVisible()
-    answers.answers = [prompts.Button.Discard]
-    window.close()
-    assert not window.isVisible()
-
-
-def test_drop_a_prm_file_opens_it(window, tmp_path):
-    path = tmp_path / "dropped.prm"
-    prmfile.write_file(prmfile.PrmContents.factory(TypeKey.parse(E04_CA)), path)
-    mime = QMimeData()
-    mime.setUrls([QUrl.fromLocalFile(str(path))])
-    event = QDropEvent(
-        QPointF(10, 10), Qt.DropAction.CopyAction, mime, Qt.MouseButton.LeftButton,
-        Qt.KeyboardModifier.NoModifier,
-    )  # fmt: skip
-    window.dropEvent(event)
-    assert window.doc.path == path and str(window.doc.type_key) == E04_CA
-
-
-def test_undo_redo_every_edit(window):
-    window.doc.set_value("LIMTA", 2000)
-    window.doc.set_value("DTAMP", 1000)
-    assert window.commands["undo"].isEnabled()
-    window.commands["undo"].trigger()
-    assert window.doc.value("DTAMP") != 1000 and window.doc.value("LIMTA") == 2000
-    window.commands["undo"].trigger()
-    assert window.doc.value("LIMTA") == 2400 and not window.doc.modified
-    assert window.commands["redo"].isEnabled()
-    window.commands["redo"].trigger()
-    assert window.doc.value("LIMTA") == 2000
-
-
 def test_restore_factory_values_offline_resets_the_document(window, answers):
     window.doc.set_value("LIMTA", 2000)
     answers.answers = [prompts.Button.Yes]
@@ -263,35 +185,6 @@ def test_restore_factory_values_offline_resets_the_document(window, answers):
     assert window.doc.value("LIMTA") == 2400
     window.commands["undo"].trigger()
     assert window.doc.value("LIMTA") == 2000
-
-
-def test_export_pdf_holds_the_parameters(window, tmp_path, monkeypatch):
-    target = tmp_path / "record"
-    window.doc.set_value("LIMTA", 1234)
-    monkeypatch.setattr(QFileDialog, "getSaveFileName", lambda *a, **k: (str(target), ""))
-    window.commands["export_pdf"].trigger()
-    pdf = target.with_suffix(".pdf")
-    assert pdf.read_bytes().startswith(b"%PDF")
-    text = window.records.record().toPlainText()
-    for needle in (E02, "LIMTA", "1234", "mA", "DYNFREQ", "Basic", "untitled"):
-        assert needle in text
-    assert pdf.stat().st_size > 20_000  # text, table and the diagram picture
-
-
-def test_print_goes_through_the_print_dialog(window, tmp_path, monkeypatch):
-    from PySide6.QtPrintSupport import QPrintDialog, QPrinter
-
-    out = tmp_path / "printed.pdf"
-
-    def accept(dialog):
-        printer = dialog.printer()
-        printer.setOutputFormat(QPrinter.OutputFormat.PdfFormat)
-        printer.setOutputFileName(str(out))
-        return Accepted
-
-    monkeypatch.setattr(QPrintDialog, "exec", accept)
-    window.commands["print"].trigger()
-    assert out.exists() and out.stat().st_size > 10_000
 
 
 def test_help_about_and_homepage(window, answers, monkeypatch):
@@ -321,11 +214,6 @@ def test_status_window_offline_says_so(window):
     status = window.show_status_window()
     assert status.fields["mode"].text() == "OFFLINE"
     assert status.errors.item(0).text() == "No status: the valve is offline."
-
-
-def test_pdf_export_error_is_reported(window, answers, tmp_path):
-    assert not window.records.export_pdf(tmp_path / "missing" / "dir" / "x.pdf")
-    assert "Cannot write" in answers.asked[-1]
 
 
 def test_hid_dialog_lists_emulated_valves_and_remembers_the_choice(window, monkeypatch):
@@ -363,23 +251,6 @@ def test_change_password_action_opens_the_dialog_at_expert_level(window, monkeyp
     assert len(opened) == 1
 
 
-def test_last_folder_is_remembered(window, tmp_path, monkeypatch):
-    folder = tmp_path / "records"
-    folder.mkdir()
-    seen = []
-
-    def save_name(_parent, _title, suggestion, _filter):
-        seen.append(suggestion)
-        return (str(folder / "a.prm"), "")
-
-    monkeypatch.setattr(QFileDialog, "getSaveFileName", save_name)
-    window.commands["save_as"].trigger()
-    window.files.new_document(TypeKey.parse(E04_CA))
-    window.commands["save_as"].trigger()
-    assert window.files.last_folder() == str(folder)
-    assert seen[-1].startswith(str(folder))
-
-
 def test_highlight_follows_a_dark_palette(window, qapp):
     from PySide6.QtGui import QColor, QPalette
 
@@ -399,13 +270,3 @@ def test_highlight_follows_a_dark_palette(window, qapp):
         assert colour.rgb() == QColor("#3d7eff").rgb() and colour.alpha() < 255
     finally:
         qapp.setPalette(old)
-
-
-def test_a_vanished_recent_file_is_removed_with_a_message(window, tmp_path, answers):
-    path = tmp_path / "gone.prm"
-    window.files.save_to(path)
-    path.unlink()
-    recent = window.commands.menus["recent"]
-    recent.actions()[0].trigger()
-    assert "no longer exists" in answers.informed[-1]
-    assert window.files.recent_files() == [] and not recent.isEnabled()
