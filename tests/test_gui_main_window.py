@@ -270,3 +270,12 @@ def test_highlight_follows_a_dark_palette(window, qapp):
         assert colour.rgb() == QColor("#3d7eff").rgb() and colour.alpha() < 255
     finally:
         qapp.setPalette(old)
+
+
+def test_emulated_valve_dialog_builds_type_key_and_serial(window):
+    from prm9tool.views.hid_dialog import EmulatorDialog
+
+    dialog = EmulatorDialog(window)
+    dialog.selection._on_key_edited(E04_CA)
+    dialog.serial.setValue(4711)
+    assert dialog.spec() == f"{E04_CA}:4711"

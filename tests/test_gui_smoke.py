@@ -21,8 +21,8 @@ from prm9tool.catalogue import Access
 from prm9tool.cli import build_parser
 from prm9tool.device import factory
 from prm9tool.views import prompts
-from prm9tool.views.access_dialog import PasswordDialog
-from prm9tool.views.hid_dialog import HidConfigurationDialog
+from prm9tool.views.access_dialog import ChangePasswordDialog, PasswordDialog
+from prm9tool.views.hid_dialog import EmulatorDialog, HidConfigurationDialog
 from prm9tool.views.online_dialogs import OnlineDiffDialog, RestartDialog
 from prm9tool.views.valve_selection import ValveSelectionDialog
 
@@ -110,6 +110,8 @@ def test_e02_valve_window_table_and_dialogs(qtbot, program, shots):
         ("dialog_hid_configuration",
          HidConfigurationDialog(window.connection.list_devices, window.settings, window)),
         ("dialog_password", PasswordDialog(window.passwords, window)),
+        ("dialog_change_password", ChangePasswordDialog(window.passwords, window)),
+        ("dialog_add_emulated_valve", EmulatorDialog(window)),
         ("dialog_restart", RestartDialog(window)),
         ("dialog_online_differences", OnlineDiffDialog(
             {**window.doc.values, "LIMTA": 2000, "DTAMP": 3277, "RAMPSETPOSUP": 150},
