@@ -122,3 +122,17 @@ def test_non_finite_inputs_and_unknown_faults_are_refused():
         valve.inject("COIL_C_OPEN")  # type: ignore[arg-type]
     valve.advance(0.01)
     assert np.isfinite(valve.signal("setpoint_raw"))
+
+
+def test_capture_records_from_the_very_next_cycle():
+    # A capture started between cycles must see every following cycle, not only those after
+    # the loop's next input change (the USB stream depends on it: 5 samples per ms).
+    from prm9tool.device.emulator import EmulatedValve
+
+    valve = EmulatedValve("PRM9-06.3Z11/30-24E02S02")
+    valve.advance(2.5)  # booted and settled: inputs no longer change every millisecond
+    for _ in range(20):
+        valve.capture_start(["position_actual"])
+        valve.advance(0.001)
+        assert valve.capture_read().shape == (5, 1)
+        valve.capture_stop()

@@ -46,6 +46,7 @@ class Capture:
         self.buffer = array("d")
         self.dropped_rows = 0
         self.loop.capture = (self.buffer.extend, itemgetter(*index), int(decimation))
+        self.loop.inputs_version += 1  # the loop picks the capture up in its next cycle
 
     def read(self) -> np.ndarray:
         """Drain: an array of shape (n, len(keys)) with the samples since the last read."""
@@ -65,5 +66,6 @@ class Capture:
     def stop(self) -> None:
         """Stop recording and discard the buffer."""
         self.loop.capture = None
+        self.loop.inputs_version += 1
         self.keys = ()
         self.buffer = array("d")
