@@ -10,8 +10,8 @@ the reading of SPEC §3 applies **(inference)**:
 * node-ID switch: 0 = node ID, bit rate and terminator set by software over USB (NODEID,
   BITRATE, CANTERM); 1 = LSS and automatic bit-rate detection (node ID from NODEID, which an
   LSS master stores; terminator CANTERM); 2…F = node ID 10, 15, …, 75 with the bit rate of the
-  interface switch. These are the rules of the emulated valve's CANopen interface
-  (prm9tool/device/emulator/canopen_settings.py).
+  interface switch. The emulated valve's firmware decodes its switches with :func:`effective`,
+  so the CANopen window and the valve cannot disagree.
 
 Switch positions are read by the valve at power-up only.
 """

@@ -145,3 +145,14 @@ def test_live_values(valve):
     assert valve.read(0x2031, 2) == 2
     assert valve.read(0x2040, 0) == 0
     assert valve.read(0x1001, 0) == 0
+
+
+def test_pdo_mapping_entry_2_follows_the_control_mode_over_every_interface():
+    # Table 7-13: RPDO1/TPDO1 entry 2 is 0x6300/0x6301 in control mode 2, 0x6380/0x6381 in 4.
+    from prm9tool.device.emulator import EmulatedValve
+
+    valve = EmulatedValve("PRM9-06.3Z11/30-24E04S02-CA")
+    assert valve.read(0x6043, 0) == 4
+    assert (valve.read(0x1600, 2), valve.read(0x1A00, 2)) == (0x63800110, 0x63810110)
+    valve.write(0x6043, 0, 2)
+    assert (valve.read(0x1600, 2), valve.read(0x1A00, 2)) == (0x63000110, 0x63010110)

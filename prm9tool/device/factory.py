@@ -238,8 +238,9 @@ def _connect_can(valve: EmulatedValve, options: CanOptions) -> Callable[[], None
     import can
 
     kwargs: dict[str, Any] = {"interface": options.interface, "channel": options.channel}
-    if options.bitrate is not None:
-        kwargs["bitrate"] = options.bitrate
+    bitrate = options.bitrate if options.bitrate is not None else valve.bitrate
+    if bitrate:  # default: the bit rate the valve's switches (or BITRATE) select
+        kwargs["bitrate"] = bitrate
     try:
         bus = can.Bus(**kwargs)
     except (can.CanError, OSError, ValueError, ImportError) as exc:

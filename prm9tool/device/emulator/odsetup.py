@@ -10,6 +10,7 @@ from prm9tool.device.emulator.inputs import CANOPEN_TYPE
 from prm9tool.device.emulator.loopstate import SIGNAL_ORDER
 from prm9tool.device.emulator.objdict import Value, abort
 from prm9tool.device.emulator.states import DeviceState
+from prm9tool.eds import mapping_for_control_mode
 from prm9tool.errors import AbortCode
 from prm9tool.variant import Config
 
@@ -52,6 +53,11 @@ def _identity(fw: Firmware) -> None:
     _getter(fw, "REVISION", lambda: revision(fw.firmware_version))
     _getter(fw, "SWBAUD", lambda: fw.latched_switches[0])
     _getter(fw, "SWNODE", lambda: fw.latched_switches[1])
+    # Table 7-13: entry 2 of RPDO1/TPDO1 follows the control mode 0x6043, on SDO and USB alike.
+    for mnemonic in ("RPDO1MAP2", "TPDO1MAP2"):
+        if fw.od.has(mnemonic):
+            param = fw.od.param(mnemonic)
+            _getter(fw, mnemonic, lambda p=param: mapping_for_control_mode(p, fw.value("CTRLMODE")))
 
 
 def _pv(fw: Firmware, signal: str) -> int:
