@@ -113,11 +113,14 @@ class ValveConnection(QObject):
     # --- commands (GUI thread) ------------------------------------------------------------------
     def go_online(self, entry: object) -> None:
         """Open a session to ``entry`` (a DeviceEntry or device-id string)."""
-        if self._online:
-            self.failed.emit(self.tr("Already online; go offline first."))
+        if self._online or self.is_busy:
+            busy = self.tr("The valve connection is busy; wait until it is done.")
+            self.failed.emit(busy if self.is_busy else self.tr("Already online; go offline first."))
             return
         self._ensure_worker()
-        self._submit(_Job("online", lambda _s: self._open(entry), self._on_opened, False,
+        self._set_busy(+1)  # connecting: no second session may be opened meanwhile
+        done = lambda: self._set_busy(-1)  # noqa: E731
+        self._submit(_Job("online", lambda _s: self._open(entry), self._on_opened, False, done,
                           needs_session=False))  # fmt: skip
 
     def go_offline(self) -> None:
@@ -247,6 +250,7 @@ class ValveConnection(QObject):
             self._thread.start()
 
     def _on_opened(self, info: object) -> None:
+        self._set_busy(-1)
         self._online = True
         self._device = info
         self.device_changed.emit(info)

@@ -158,3 +158,14 @@ def test_opening_a_missing_device_fails_with_a_message(qtbot, connection):
         connection.go_online("usb:/dev/does-not-exist")
     assert failed.args[0]
     assert not connection.is_online
+
+
+def test_a_second_go_online_while_connecting_is_refused(qtbot, connection):
+    entry = factory.list_devices([f"{E02}:5003"])[-1]
+    failed = _record(connection.failed)
+    with qtbot.waitSignal(connection.online_changed, timeout=TIMEOUT):
+        connection.go_online(entry)
+        assert connection.is_busy
+        connection.go_online(entry)
+    assert failed and "busy" in failed[0][0]
+    assert not connection.is_busy

@@ -757,62 +757,62 @@
     <context>
         <name>FileWorkflow</name>
         <message>
-            <location filename="../prm9tool/views/file_workflow.py" line="77" />
+            <location filename="../prm9tool/views/file_workflow.py" line="79" />
             <source>untitled</source>
             <translation>nepojmenovaná</translation>
         </message>
         <message>
-            <location filename="../prm9tool/views/file_workflow.py" line="81" />
+            <location filename="../prm9tool/views/file_workflow.py" line="83" />
             <source>Unsaved changes</source>
             <translation>Neuložené změny</translation>
         </message>
         <message>
-            <location filename="../prm9tool/views/file_workflow.py" line="82" />
+            <location filename="../prm9tool/views/file_workflow.py" line="84" />
             <source>The parameters in “{0}” have been changed. Save the changes?</source>
             <translation>Parametry v „{0}“ byly změněny. Uložit změny?</translation>
         </message>
         <message>
-            <location filename="../prm9tool/views/file_workflow.py" line="96" />
+            <location filename="../prm9tool/views/file_workflow.py" line="98" />
             <source>New parameter set for {0}</source>
             <translation>Nový záznam parametrů pro {0}</translation>
         </message>
         <message>
-            <location filename="../prm9tool/views/file_workflow.py" line="105" />
+            <location filename="../prm9tool/views/file_workflow.py" line="107" />
             <source>Open parameter file</source>
             <translation>Otevřít záznam parametrů</translation>
         </message>
         <message>
-            <location filename="../prm9tool/views/file_workflow.py" line="107" />
+            <location filename="../prm9tool/views/file_workflow.py" line="109" />
             <source>Parameter files (*.prm);;All files (*)</source>
             <translation>Záznamy parametrů (*.prm);;Všechny soubory (*)</translation>
         </message>
         <message>
-            <location filename="../prm9tool/views/file_workflow.py" line="118" />
+            <location filename="../prm9tool/views/file_workflow.py" line="120" />
             <source>File not found</source>
             <translation>Soubor nenalezen</translation>
         </message>
         <message>
-            <location filename="../prm9tool/views/file_workflow.py" line="119" />
+            <location filename="../prm9tool/views/file_workflow.py" line="121" />
             <source>“{0}” no longer exists; it was removed from the list.</source>
             <translation>„{0}“ již neexistuje; byl odstraněn ze seznamu.</translation>
         </message>
         <message>
-            <location filename="../prm9tool/views/file_workflow.py" line="133" />
+            <location filename="../prm9tool/views/file_workflow.py" line="135" />
             <source>Cannot open “{0}”</source>
             <translation>„{0}“ nelze otevřít</translation>
         </message>
         <message>
-            <location filename="../prm9tool/views/file_workflow.py" line="137" />
+            <location filename="../prm9tool/views/file_workflow.py" line="139" />
             <source>Opened {0}</source>
             <translation>Otevřeno: {0}</translation>
         </message>
         <message>
-            <location filename="../prm9tool/views/file_workflow.py" line="142" />
+            <location filename="../prm9tool/views/file_workflow.py" line="144" />
             <source>Opened with warnings</source>
             <translation>Otevřeno s varováními</translation>
         </message>
         <message numerus="yes">
-            <location filename="../prm9tool/views/file_workflow.py" line="144" />
+            <location filename="../prm9tool/views/file_workflow.py" line="146" />
             <source>“{0}” was opened; %n warning(s) were found.</source>
             <translation>
                 <numerusform>„{0}“ byl otevřen; nalezeno %n varování.</numerusform>
@@ -821,27 +821,27 @@
             </translation>
         </message>
         <message>
-            <location filename="../prm9tool/views/file_workflow.py" line="161" />
+            <location filename="../prm9tool/views/file_workflow.py" line="163" />
             <source>Save parameter file</source>
             <translation>Uložit záznam parametrů</translation>
         </message>
         <message>
-            <location filename="../prm9tool/views/file_workflow.py" line="163" />
+            <location filename="../prm9tool/views/file_workflow.py" line="165" />
             <source>Parameter files (*.prm)</source>
             <translation>Záznamy parametrů (*.prm)</translation>
         </message>
         <message>
-            <location filename="../prm9tool/views/file_workflow.py" line="179" />
+            <location filename="../prm9tool/views/file_workflow.py" line="181" />
             <source>Cannot save “{0}”</source>
             <translation>„{0}“ nelze uložit</translation>
         </message>
         <message>
-            <location filename="../prm9tool/views/file_workflow.py" line="182" />
+            <location filename="../prm9tool/views/file_workflow.py" line="184" />
             <source>Saved {0}</source>
             <translation>Uloženo: {0}</translation>
         </message>
         <message numerus="yes">
-            <location filename="../prm9tool/views/file_workflow.py" line="198" />
+            <location filename="../prm9tool/views/file_workflow.py" line="202" />
             <source>%n more problem(s) in the details.</source>
             <translation>
                 <numerusform>Další %n problém v podrobnostech.</numerusform>
@@ -1382,27 +1382,27 @@
             <translation>Osciloskop je dostupný pouze v režimu online.</translation>
         </message>
         <message>
-            <location filename="../prm9tool/views/main_window.py" line="230" />
+            <location filename="../prm9tool/views/main_window.py" line="232" />
             <source>untitled</source>
             <translation>nepojmenovaná</translation>
         </message>
         <message>
-            <location filename="../prm9tool/views/main_window.py" line="293" />
+            <location filename="../prm9tool/views/main_window.py" line="295" />
             <source>prm9tool</source>
             <translation>prm9tool</translation>
         </message>
         <message>
-            <location filename="../prm9tool/views/main_window.py" line="294" />
+            <location filename="../prm9tool/views/main_window.py" line="296" />
             <source>Parameterization of PRM9 proportional directional valves.</source>
             <translation>Nastavení parametrů proporcionálních rozváděčů PRM9.</translation>
         </message>
         <message>
-            <location filename="../prm9tool/views/main_window.py" line="295" />
+            <location filename="../prm9tool/views/main_window.py" line="297" />
             <source>Free software under the GNU General Public License v3 or later.</source>
             <translation>Svobodný software pod licencí GNU General Public License v3 nebo novější.</translation>
         </message>
         <message>
-            <location filename="../prm9tool/views/main_window.py" line="298" />
+            <location filename="../prm9tool/views/main_window.py" line="300" />
             <source>About prm9tool</source>
             <translation>O programu prm9tool</translation>
         </message>
@@ -2109,13 +2109,18 @@ Ujistěte se, že pohyb stroje je bezpečný. Spustit generátor?</translation>
     <context>
         <name>ValveConnection</name>
         <message>
-            <location filename="../prm9tool/connection.py" line="116" />
+            <location filename="../prm9tool/connection.py" line="117" />
+            <source>The valve connection is busy; wait until it is done.</source>
+            <translation>Spojení s ventilem je zaneprázdněno; počkejte na dokončení.</translation>
+        </message>
+        <message>
+            <location filename="../prm9tool/connection.py" line="118" />
             <source>Already online; go offline first.</source>
             <translation>Již v režimu online; nejprve přejděte do režimu offline.</translation>
         </message>
         <message>
-            <location filename="../prm9tool/connection.py" line="233" />
-            <location filename="../prm9tool/connection.py" line="239" />
+            <location filename="../prm9tool/connection.py" line="221" />
+            <location filename="../prm9tool/connection.py" line="227" />
             <source>Not connected to a valve.</source>
             <translation>Není připojen žádný ventil.</translation>
         </message>
@@ -2395,97 +2400,98 @@ Ujistěte se, že pohyb stroje je bezpečný. Spustit generátor?</translation>
         </message>
         <message>
             <location filename="../prm9tool/views/valve_workflow.py" line="128" />
+            <location filename="../prm9tool/views/valve_workflow.py" line="136" />
             <source>Reading the valve's parameters…</source>
             <translation>Čtení parametrů ventilu…</translation>
         </message>
         <message>
-            <location filename="../prm9tool/views/valve_workflow.py" line="144" />
+            <location filename="../prm9tool/views/valve_workflow.py" line="152" />
             <source>Online: document and valve agree</source>
             <translation>Online: dokument a ventil se shodují</translation>
         </message>
         <message>
-            <location filename="../prm9tool/views/valve_workflow.py" line="155" />
+            <location filename="../prm9tool/views/valve_workflow.py" line="163" />
             <source>Values read from the valve</source>
             <translation>Hodnoty načtené z ventilu</translation>
         </message>
         <message>
-            <location filename="../prm9tool/views/valve_workflow.py" line="171" />
+            <location filename="../prm9tool/views/valve_workflow.py" line="179" />
             <source>Online: parameters read from the valve</source>
             <translation>Online: parametry načteny z ventilu</translation>
         </message>
         <message>
-            <location filename="../prm9tool/views/valve_workflow.py" line="198" />
+            <location filename="../prm9tool/views/valve_workflow.py" line="206" />
             <source>The valve reports an unknown type key: {0}</source>
             <translation>Ventil hlásí neznámý typový klíč: {0}</translation>
         </message>
         <message>
-            <location filename="../prm9tool/views/valve_workflow.py" line="213" />
+            <location filename="../prm9tool/views/valve_workflow.py" line="221" />
             <source>Upload to valve</source>
             <translation>Načtení do ventilu</translation>
         </message>
         <message>
-            <location filename="../prm9tool/views/valve_workflow.py" line="215" />
+            <location filename="../prm9tool/views/valve_workflow.py" line="223" />
             <source>The document is for a {0} valve, the connected valve is a {1} valve. Choose the matching valve type or download the valve's parameters first.</source>
             <translation>Dokument je pro ventil {0}, připojený ventil je {1}. Zvolte odpovídající typ ventilu nebo nejprve stáhněte parametry z ventilu.</translation>
         </message>
         <message>
-            <location filename="../prm9tool/views/valve_workflow.py" line="221" />
+            <location filename="../prm9tool/views/valve_workflow.py" line="229" />
             <source>Uploading the parameters to the valve…</source>
             <translation>Načítání parametrů do ventilu…</translation>
         </message>
         <message>
-            <location filename="../prm9tool/views/valve_workflow.py" line="226" />
+            <location filename="../prm9tool/views/valve_workflow.py" line="234" />
             <source>Downloading the parameters from the valve…</source>
             <translation>Stahování parametrů z ventilu…</translation>
         </message>
         <message>
-            <location filename="../prm9tool/views/valve_workflow.py" line="234" />
+            <location filename="../prm9tool/views/valve_workflow.py" line="242" />
             <source>Reset the valve's stored parameters to the factory values and restart it? Only allowed with the hydraulics disconnected.</source>
             <translation>Obnovit uložené parametry ventilu na tovární hodnoty a ventil restartovat? Dovoleno pouze při odpojeném hydraulickém obvodu.</translation>
         </message>
         <message>
-            <location filename="../prm9tool/views/valve_workflow.py" line="238" />
+            <location filename="../prm9tool/views/valve_workflow.py" line="246" />
             <source>Set every parameter of the document to the factory default?</source>
             <translation>Nastavit všechny parametry dokumentu na tovární hodnoty?</translation>
         </message>
         <message>
-            <location filename="../prm9tool/views/valve_workflow.py" line="243" />
-            <location filename="../prm9tool/views/valve_workflow.py" line="252" />
+            <location filename="../prm9tool/views/valve_workflow.py" line="251" />
+            <location filename="../prm9tool/views/valve_workflow.py" line="260" />
             <source>Restore factory values</source>
             <translation>Obnovit tovární nastavení</translation>
         </message>
         <message>
-            <location filename="../prm9tool/views/valve_workflow.py" line="254" />
+            <location filename="../prm9tool/views/valve_workflow.py" line="262" />
             <source>Restoring the factory values…</source>
             <translation>Obnovování továrního nastavení…</translation>
         </message>
         <message>
-            <location filename="../prm9tool/views/valve_workflow.py" line="262" />
+            <location filename="../prm9tool/views/valve_workflow.py" line="270" />
             <source>Restarting the valve…</source>
             <translation>Restartování ventilu…</translation>
         </message>
         <message>
-            <location filename="../prm9tool/views/valve_workflow.py" line="271" />
+            <location filename="../prm9tool/views/valve_workflow.py" line="279" />
             <source>Download from valve</source>
             <translation>Stažení z ventilu</translation>
         </message>
         <message>
-            <location filename="../prm9tool/views/valve_workflow.py" line="273" />
+            <location filename="../prm9tool/views/valve_workflow.py" line="281" />
             <source>Factory values of the valve</source>
             <translation>Tovární nastavení ventilu</translation>
         </message>
         <message>
-            <location filename="../prm9tool/views/valve_workflow.py" line="275" />
+            <location filename="../prm9tool/views/valve_workflow.py" line="283" />
             <source>The valve restarted</source>
             <translation>Ventil byl restartován</translation>
         </message>
         <message>
-            <location filename="../prm9tool/views/valve_workflow.py" line="282" />
+            <location filename="../prm9tool/views/valve_workflow.py" line="290" />
             <source>The valve stored its parameters</source>
             <translation>Ventil uložil své parametry</translation>
         </message>
         <message numerus="yes">
-            <location filename="../prm9tool/views/valve_workflow.py" line="289" />
+            <location filename="../prm9tool/views/valve_workflow.py" line="297" />
             <source>%n parameter(s) written, verified and stored</source>
             <translation>
                 <numerusform>%n parametr zapsán, ověřen a uložen</numerusform>
@@ -2494,39 +2500,39 @@ Ujistěte se, že pohyb stroje je bezpečný. Spustit generátor?</translation>
             </translation>
         </message>
         <message>
-            <location filename="../prm9tool/views/valve_workflow.py" line="297" />
+            <location filename="../prm9tool/views/valve_workflow.py" line="305" />
             <source>Upload failed</source>
             <translation>Načtení do ventilu selhalo</translation>
         </message>
         <message>
-            <location filename="../prm9tool/views/valve_workflow.py" line="299" />
+            <location filename="../prm9tool/views/valve_workflow.py" line="307" />
             <source>The upload failed at step “{0}”. Nothing was stored: after a restart the valve holds its previous parameters.</source>
             <translation>Načtení do ventilu selhalo v kroku „{0}“. Nic nebylo uloženo: po restartu má ventil své předchozí parametry.</translation>
         </message>
         <message>
-            <location filename="../prm9tool/views/valve_workflow.py" line="316" />
+            <location filename="../prm9tool/views/valve_workflow.py" line="324" />
             <source>Valve communication</source>
             <translation>Komunikace s ventilem</translation>
         </message>
         <message>
-            <location filename="../prm9tool/views/valve_workflow.py" line="323" />
+            <location filename="../prm9tool/views/valve_workflow.py" line="331" />
             <source>Connection to the valve lost</source>
             <translation>Spojení s ventilem ztraceno</translation>
         </message>
         <message>
-            <location filename="../prm9tool/views/valve_workflow.py" line="325" />
+            <location filename="../prm9tool/views/valve_workflow.py" line="333" />
             <source>The connection to the valve was lost; prm9tool is offline now.
 Every value is kept in the document: save it, or go online again and send it.</source>
             <translation>Spojení s ventilem bylo ztraceno; prm9tool je nyní v režimu offline.
 Všechny hodnoty zůstávají v dokumentu: uložte jej, nebo přejděte znovu do režimu online a odešlete jej.</translation>
         </message>
         <message>
-            <location filename="../prm9tool/views/valve_workflow.py" line="333" />
+            <location filename="../prm9tool/views/valve_workflow.py" line="341" />
             <source>Backup of the valve's parameters saved: {0}</source>
             <translation>Záloha parametrů ventilu uložena: {0}</translation>
         </message>
         <message>
-            <location filename="../prm9tool/views/valve_workflow.py" line="340" />
+            <location filename="../prm9tool/views/valve_workflow.py" line="348" />
             <source>Cancel</source>
             <translation>Zrušit</translation>
         </message>

@@ -757,62 +757,62 @@
     <context>
         <name>FileWorkflow</name>
         <message>
-            <location filename="../prm9tool/views/file_workflow.py" line="77" />
+            <location filename="../prm9tool/views/file_workflow.py" line="79" />
             <source>untitled</source>
             <translation>unbenannt</translation>
         </message>
         <message>
-            <location filename="../prm9tool/views/file_workflow.py" line="81" />
+            <location filename="../prm9tool/views/file_workflow.py" line="83" />
             <source>Unsaved changes</source>
             <translation>Ungespeicherte Änderungen</translation>
         </message>
         <message>
-            <location filename="../prm9tool/views/file_workflow.py" line="82" />
+            <location filename="../prm9tool/views/file_workflow.py" line="84" />
             <source>The parameters in “{0}” have been changed. Save the changes?</source>
             <translation>Die Parameter in „{0}“ wurden geändert. Änderungen speichern?</translation>
         </message>
         <message>
-            <location filename="../prm9tool/views/file_workflow.py" line="96" />
+            <location filename="../prm9tool/views/file_workflow.py" line="98" />
             <source>New parameter set for {0}</source>
             <translation>Neuer Parametersatz für {0}</translation>
         </message>
         <message>
-            <location filename="../prm9tool/views/file_workflow.py" line="105" />
+            <location filename="../prm9tool/views/file_workflow.py" line="107" />
             <source>Open parameter file</source>
             <translation>Parameterdatei öffnen</translation>
         </message>
         <message>
-            <location filename="../prm9tool/views/file_workflow.py" line="107" />
+            <location filename="../prm9tool/views/file_workflow.py" line="109" />
             <source>Parameter files (*.prm);;All files (*)</source>
             <translation>Parameterdateien (*.prm);;Alle Dateien (*)</translation>
         </message>
         <message>
-            <location filename="../prm9tool/views/file_workflow.py" line="118" />
+            <location filename="../prm9tool/views/file_workflow.py" line="120" />
             <source>File not found</source>
             <translation>Datei nicht gefunden</translation>
         </message>
         <message>
-            <location filename="../prm9tool/views/file_workflow.py" line="119" />
+            <location filename="../prm9tool/views/file_workflow.py" line="121" />
             <source>“{0}” no longer exists; it was removed from the list.</source>
             <translation>„{0}“ existiert nicht mehr; die Datei wurde aus der Liste entfernt.</translation>
         </message>
         <message>
-            <location filename="../prm9tool/views/file_workflow.py" line="133" />
+            <location filename="../prm9tool/views/file_workflow.py" line="135" />
             <source>Cannot open “{0}”</source>
             <translation>„{0}“ kann nicht geöffnet werden</translation>
         </message>
         <message>
-            <location filename="../prm9tool/views/file_workflow.py" line="137" />
+            <location filename="../prm9tool/views/file_workflow.py" line="139" />
             <source>Opened {0}</source>
             <translation>{0} geöffnet</translation>
         </message>
         <message>
-            <location filename="../prm9tool/views/file_workflow.py" line="142" />
+            <location filename="../prm9tool/views/file_workflow.py" line="144" />
             <source>Opened with warnings</source>
             <translation>Mit Warnungen geöffnet</translation>
         </message>
         <message numerus="yes">
-            <location filename="../prm9tool/views/file_workflow.py" line="144" />
+            <location filename="../prm9tool/views/file_workflow.py" line="146" />
             <source>“{0}” was opened; %n warning(s) were found.</source>
             <translation>
                 <numerusform>„{0}“ wurde geöffnet; %n Warnung gefunden.</numerusform>
@@ -820,27 +820,27 @@
             </translation>
         </message>
         <message>
-            <location filename="../prm9tool/views/file_workflow.py" line="161" />
+            <location filename="../prm9tool/views/file_workflow.py" line="163" />
             <source>Save parameter file</source>
             <translation>Parameterdatei speichern</translation>
         </message>
         <message>
-            <location filename="../prm9tool/views/file_workflow.py" line="163" />
+            <location filename="../prm9tool/views/file_workflow.py" line="165" />
             <source>Parameter files (*.prm)</source>
             <translation>Parameterdateien (*.prm)</translation>
         </message>
         <message>
-            <location filename="../prm9tool/views/file_workflow.py" line="179" />
+            <location filename="../prm9tool/views/file_workflow.py" line="181" />
             <source>Cannot save “{0}”</source>
             <translation>„{0}“ kann nicht gespeichert werden</translation>
         </message>
         <message>
-            <location filename="../prm9tool/views/file_workflow.py" line="182" />
+            <location filename="../prm9tool/views/file_workflow.py" line="184" />
             <source>Saved {0}</source>
             <translation>{0} gespeichert</translation>
         </message>
         <message numerus="yes">
-            <location filename="../prm9tool/views/file_workflow.py" line="198" />
+            <location filename="../prm9tool/views/file_workflow.py" line="202" />
             <source>%n more problem(s) in the details.</source>
             <translation>
                 <numerusform>%n weiteres Problem in den Details.</numerusform>
@@ -1380,27 +1380,27 @@
             <translation>Das Oszilloskop arbeitet nur im Online-Modus.</translation>
         </message>
         <message>
-            <location filename="../prm9tool/views/main_window.py" line="230" />
+            <location filename="../prm9tool/views/main_window.py" line="232" />
             <source>untitled</source>
             <translation>unbenannt</translation>
         </message>
         <message>
-            <location filename="../prm9tool/views/main_window.py" line="293" />
+            <location filename="../prm9tool/views/main_window.py" line="295" />
             <source>prm9tool</source>
             <translation>prm9tool</translation>
         </message>
         <message>
-            <location filename="../prm9tool/views/main_window.py" line="294" />
+            <location filename="../prm9tool/views/main_window.py" line="296" />
             <source>Parameterization of PRM9 proportional directional valves.</source>
             <translation>Parametrierung von PRM9-Proportional-Wegeventilen.</translation>
         </message>
         <message>
-            <location filename="../prm9tool/views/main_window.py" line="295" />
+            <location filename="../prm9tool/views/main_window.py" line="297" />
             <source>Free software under the GNU General Public License v3 or later.</source>
             <translation>Freie Software unter der GNU General Public License v3 oder später.</translation>
         </message>
         <message>
-            <location filename="../prm9tool/views/main_window.py" line="298" />
+            <location filename="../prm9tool/views/main_window.py" line="300" />
             <source>About prm9tool</source>
             <translation>Über prm9tool</translation>
         </message>
@@ -2106,13 +2106,18 @@ Stellen Sie sicher, dass die Maschine sich gefahrlos bewegen kann. Generator sta
     <context>
         <name>ValveConnection</name>
         <message>
-            <location filename="../prm9tool/connection.py" line="116" />
+            <location filename="../prm9tool/connection.py" line="117" />
+            <source>The valve connection is busy; wait until it is done.</source>
+            <translation>Die Verbindung zum Ventil ist beschäftigt; warten Sie, bis sie fertig ist.</translation>
+        </message>
+        <message>
+            <location filename="../prm9tool/connection.py" line="118" />
             <source>Already online; go offline first.</source>
             <translation>Bereits online; zuerst offline gehen.</translation>
         </message>
         <message>
-            <location filename="../prm9tool/connection.py" line="233" />
-            <location filename="../prm9tool/connection.py" line="239" />
+            <location filename="../prm9tool/connection.py" line="221" />
+            <location filename="../prm9tool/connection.py" line="227" />
             <source>Not connected to a valve.</source>
             <translation>Nicht mit einem Ventil verbunden.</translation>
         </message>
@@ -2392,97 +2397,98 @@ Stellen Sie sicher, dass die Maschine sich gefahrlos bewegen kann. Generator sta
         </message>
         <message>
             <location filename="../prm9tool/views/valve_workflow.py" line="128" />
+            <location filename="../prm9tool/views/valve_workflow.py" line="136" />
             <source>Reading the valve's parameters…</source>
             <translation>Parameter des Ventils werden gelesen…</translation>
         </message>
         <message>
-            <location filename="../prm9tool/views/valve_workflow.py" line="144" />
+            <location filename="../prm9tool/views/valve_workflow.py" line="152" />
             <source>Online: document and valve agree</source>
             <translation>Online: Dokument und Ventil stimmen überein</translation>
         </message>
         <message>
-            <location filename="../prm9tool/views/valve_workflow.py" line="155" />
+            <location filename="../prm9tool/views/valve_workflow.py" line="163" />
             <source>Values read from the valve</source>
             <translation>Aus dem Ventil gelesene Werte</translation>
         </message>
         <message>
-            <location filename="../prm9tool/views/valve_workflow.py" line="171" />
+            <location filename="../prm9tool/views/valve_workflow.py" line="179" />
             <source>Online: parameters read from the valve</source>
             <translation>Online: Parameter aus dem Ventil gelesen</translation>
         </message>
         <message>
-            <location filename="../prm9tool/views/valve_workflow.py" line="198" />
+            <location filename="../prm9tool/views/valve_workflow.py" line="206" />
             <source>The valve reports an unknown type key: {0}</source>
             <translation>Das Ventil meldet einen unbekannten Typschlüssel: {0}</translation>
         </message>
         <message>
-            <location filename="../prm9tool/views/valve_workflow.py" line="213" />
+            <location filename="../prm9tool/views/valve_workflow.py" line="221" />
             <source>Upload to valve</source>
             <translation>In das Ventil hochladen</translation>
         </message>
         <message>
-            <location filename="../prm9tool/views/valve_workflow.py" line="215" />
+            <location filename="../prm9tool/views/valve_workflow.py" line="223" />
             <source>The document is for a {0} valve, the connected valve is a {1} valve. Choose the matching valve type or download the valve's parameters first.</source>
             <translation>Das Dokument ist für ein Ventil {0}, das angeschlossene Ventil ist ein Ventil {1}. Wählen Sie den passenden Ventiltyp oder laden Sie zuerst die Parameter des Ventils herunter.</translation>
         </message>
         <message>
-            <location filename="../prm9tool/views/valve_workflow.py" line="221" />
+            <location filename="../prm9tool/views/valve_workflow.py" line="229" />
             <source>Uploading the parameters to the valve…</source>
             <translation>Parameter werden in das Ventil hochgeladen…</translation>
         </message>
         <message>
-            <location filename="../prm9tool/views/valve_workflow.py" line="226" />
+            <location filename="../prm9tool/views/valve_workflow.py" line="234" />
             <source>Downloading the parameters from the valve…</source>
             <translation>Parameter werden aus dem Ventil heruntergeladen…</translation>
         </message>
         <message>
-            <location filename="../prm9tool/views/valve_workflow.py" line="234" />
+            <location filename="../prm9tool/views/valve_workflow.py" line="242" />
             <source>Reset the valve's stored parameters to the factory values and restart it? Only allowed with the hydraulics disconnected.</source>
             <translation>Die gespeicherten Parameter des Ventils auf die Werkseinstellungen zurücksetzen und das Ventil neu starten? Nur bei getrennter Hydraulik erlaubt.</translation>
         </message>
         <message>
-            <location filename="../prm9tool/views/valve_workflow.py" line="238" />
+            <location filename="../prm9tool/views/valve_workflow.py" line="246" />
             <source>Set every parameter of the document to the factory default?</source>
             <translation>Alle Parameter des Dokuments auf die Werkseinstellung setzen?</translation>
         </message>
         <message>
-            <location filename="../prm9tool/views/valve_workflow.py" line="243" />
-            <location filename="../prm9tool/views/valve_workflow.py" line="252" />
+            <location filename="../prm9tool/views/valve_workflow.py" line="251" />
+            <location filename="../prm9tool/views/valve_workflow.py" line="260" />
             <source>Restore factory values</source>
             <translation>Werkseinstellungen wiederherstellen</translation>
         </message>
         <message>
-            <location filename="../prm9tool/views/valve_workflow.py" line="254" />
+            <location filename="../prm9tool/views/valve_workflow.py" line="262" />
             <source>Restoring the factory values…</source>
             <translation>Werkseinstellungen werden wiederhergestellt…</translation>
         </message>
         <message>
-            <location filename="../prm9tool/views/valve_workflow.py" line="262" />
+            <location filename="../prm9tool/views/valve_workflow.py" line="270" />
             <source>Restarting the valve…</source>
             <translation>Ventil wird neu gestartet…</translation>
         </message>
         <message>
-            <location filename="../prm9tool/views/valve_workflow.py" line="271" />
+            <location filename="../prm9tool/views/valve_workflow.py" line="279" />
             <source>Download from valve</source>
             <translation>Aus dem Ventil herunterladen</translation>
         </message>
         <message>
-            <location filename="../prm9tool/views/valve_workflow.py" line="273" />
+            <location filename="../prm9tool/views/valve_workflow.py" line="281" />
             <source>Factory values of the valve</source>
             <translation>Werkseinstellungen des Ventils</translation>
         </message>
         <message>
-            <location filename="../prm9tool/views/valve_workflow.py" line="275" />
+            <location filename="../prm9tool/views/valve_workflow.py" line="283" />
             <source>The valve restarted</source>
             <translation>Das Ventil wurde neu gestartet</translation>
         </message>
         <message>
-            <location filename="../prm9tool/views/valve_workflow.py" line="282" />
+            <location filename="../prm9tool/views/valve_workflow.py" line="290" />
             <source>The valve stored its parameters</source>
             <translation>Das Ventil hat seine Parameter gespeichert</translation>
         </message>
         <message numerus="yes">
-            <location filename="../prm9tool/views/valve_workflow.py" line="289" />
+            <location filename="../prm9tool/views/valve_workflow.py" line="297" />
             <source>%n parameter(s) written, verified and stored</source>
             <translation>
                 <numerusform>%n Parameter geschrieben, geprüft und gespeichert</numerusform>
@@ -2490,39 +2496,39 @@ Stellen Sie sicher, dass die Maschine sich gefahrlos bewegen kann. Generator sta
             </translation>
         </message>
         <message>
-            <location filename="../prm9tool/views/valve_workflow.py" line="297" />
+            <location filename="../prm9tool/views/valve_workflow.py" line="305" />
             <source>Upload failed</source>
             <translation>Hochladen fehlgeschlagen</translation>
         </message>
         <message>
-            <location filename="../prm9tool/views/valve_workflow.py" line="299" />
+            <location filename="../prm9tool/views/valve_workflow.py" line="307" />
             <source>The upload failed at step “{0}”. Nothing was stored: after a restart the valve holds its previous parameters.</source>
             <translation>Das Hochladen ist im Schritt „{0}“ fehlgeschlagen. Nichts wurde gespeichert: nach einem Neustart hat das Ventil seine vorherigen Parameter.</translation>
         </message>
         <message>
-            <location filename="../prm9tool/views/valve_workflow.py" line="316" />
+            <location filename="../prm9tool/views/valve_workflow.py" line="324" />
             <source>Valve communication</source>
             <translation>Kommunikation mit dem Ventil</translation>
         </message>
         <message>
-            <location filename="../prm9tool/views/valve_workflow.py" line="323" />
+            <location filename="../prm9tool/views/valve_workflow.py" line="331" />
             <source>Connection to the valve lost</source>
             <translation>Verbindung zum Ventil verloren</translation>
         </message>
         <message>
-            <location filename="../prm9tool/views/valve_workflow.py" line="325" />
+            <location filename="../prm9tool/views/valve_workflow.py" line="333" />
             <source>The connection to the valve was lost; prm9tool is offline now.
 Every value is kept in the document: save it, or go online again and send it.</source>
             <translation>Die Verbindung zum Ventil ist verloren; prm9tool ist jetzt offline.
 Alle Werte bleiben im Dokument erhalten: speichern Sie es oder gehen Sie wieder online und senden Sie es.</translation>
         </message>
         <message>
-            <location filename="../prm9tool/views/valve_workflow.py" line="333" />
+            <location filename="../prm9tool/views/valve_workflow.py" line="341" />
             <source>Backup of the valve's parameters saved: {0}</source>
             <translation>Sicherung der Ventilparameter gespeichert: {0}</translation>
         </message>
         <message>
-            <location filename="../prm9tool/views/valve_workflow.py" line="340" />
+            <location filename="../prm9tool/views/valve_workflow.py" line="348" />
             <source>Cancel</source>
             <translation>Abbrechen</translation>
         </message>
