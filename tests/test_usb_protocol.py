@@ -5,6 +5,7 @@ The same frames appear in docs/usb-protocol.md; a change here is a protocol chan
 
 from __future__ import annotations
 
+import numpy as np
 import pytest
 
 from prm9tool.device.protocol import (
@@ -142,7 +143,7 @@ def test_answer_golden_frames(op, seq, answer, wire):
 
 
 def test_stream_golden_frame():
-    data = StreamData(0x0102, 3, ((1, -1, 16384), (2, -2, -16384)))
+    data = StreamData(0x0102, 3, np.array([(1, -1, 16384), (2, -2, -16384)], dtype=np.int16))
     wire = frame("c0 02 01 c2 01 00 ff ff 00 40 02 00 fe ff 00 c0")
     assert encode_stream(data) == wire
     assert decode_response(wire) == data

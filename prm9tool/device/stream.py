@@ -52,15 +52,17 @@ class StreamReceiver:
         width = max(len(self.keys), 1)
         if not self.running:
             return np.empty((0, width))
-        rows: list[tuple[int, ...]] = []
+        blocks: list[np.ndarray] = []
         for report in self._transport.poll_stream():
             gap = (report.sequence - self._expected) & 0xFFFF
             if gap >= _STALE or report.channels != len(self.keys):
                 continue  # a duplicate or a report of an earlier stream
             self.lost += gap * self._capacity
             self._expected = (report.sequence + 1) & 0xFFFF
-            rows.extend(report.samples)
-        return np.array(rows, dtype=np.float64).reshape(-1, width)
+            blocks.append(report.samples)
+        if not blocks:
+            return np.empty((0, width))
+        return np.concatenate(blocks).astype(np.float64)
 
     def stop(self) -> None:
         """Stop the stream."""

@@ -82,7 +82,7 @@ class _Stream:
 
     codes: tuple[int, ...]
     capacity: int
-    pending: list[tuple[int, ...]]
+    pending: np.ndarray  # int16 (instants, channels) not yet sent
     sequence: int = 0
     oldest: float = 0.0
 
@@ -255,7 +255,8 @@ class UsbFirmware:
         self._stream_stop()
         self._valve.capture_start([BY_CODE[c].key for c in request.codes], request.decimation)
         capacity = StreamData.capacity(len(request.codes))
-        self._stream = _Stream(request.codes, capacity, [], oldest=self._valve.time)
+        empty = np.empty((0, len(request.codes)), dtype=np.int16)
+        self._stream = _Stream(request.codes, capacity, empty, oldest=self._valve.time)
         return StreamStarted(capacity)
 
     def _stream_stop(self) -> None:
@@ -269,18 +270,18 @@ class UsbFirmware:
             return
         block = self._valve.capture_read()
         if len(block):
-            if not stream.pending:
+            if not len(stream.pending):
                 stream.oldest = sim_time
-            clipped = np.clip(np.rint(block), -32768, 32767).astype(np.int64)
-            stream.pending.extend(tuple(int(v) for v in row) for row in clipped)
+            clipped = np.clip(np.rint(block), -32768, 32767).astype(np.int16)
+            stream.pending = np.concatenate((stream.pending, clipped))
         while len(stream.pending) >= stream.capacity:
             self._emit(stream, sim_time, stream.capacity)
-        if stream.pending and sim_time - stream.oldest >= FLUSH_S - 1e-9:
+        if len(stream.pending) and sim_time - stream.oldest >= FLUSH_S - 1e-9:
             self._emit(stream, sim_time, len(stream.pending))
 
     def _emit(self, stream: _Stream, sim_time: float, count: int) -> None:
         samples, stream.pending = stream.pending[:count], stream.pending[count:]
-        data = StreamData(stream.sequence, len(stream.codes), tuple(samples))
+        data = StreamData(stream.sequence, len(stream.codes), samples)
         self.outbox.append((sim_time, encode_stream(data)))  # a full outbox drops the oldest
         stream.sequence = (stream.sequence + 1) & 0xFFFF
         stream.oldest = sim_time

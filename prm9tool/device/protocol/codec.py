@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-import struct
+import numpy as np
 
 from prm9tool.device.protocol.requests import (
     ERROR_OP,
@@ -64,8 +64,10 @@ def encode_stream(data: StreamData) -> bytes:
         raise ValueError(f"{count} samples × {data.channels} channels do not fit one report")
     w = Writer().u8(STREAM_DATA_OP).u16(data.sequence & 0xFFFF)
     w.u8(data.channels << 6 | count)
-    values = [v for sample in data.samples for v in sample]
-    w.raw(struct.pack(f"<{len(values)}h", *values))
+    samples = np.asarray(data.samples)
+    if samples.shape != (count, data.channels):
+        raise ValueError(f"samples of shape {samples.shape}, expected ({count}, {data.channels})")
+    w.raw(samples.astype("<i2").tobytes())
     return w.report()
 
 
@@ -109,9 +111,9 @@ def _decode_stream(r: Reader) -> StreamData:
     channels, count = shape >> 6, shape & 0x3F
     if channels == 0 or count > StreamData.capacity(channels):
         raise MalformedReportError(f"stream shape {channels} channels × {count} samples")
-    values = struct.unpack(f"<{channels * count}h", r.raw(2 * channels * count))
+    raw = r.raw(2 * channels * count)
     r.end()
-    samples = tuple(values[i : i + channels] for i in range(0, len(values), channels))
+    samples = np.frombuffer(raw, dtype="<i2").reshape(count, channels)
     return StreamData(sequence, channels, samples)
 
 

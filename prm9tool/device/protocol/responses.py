@@ -5,6 +5,8 @@ from __future__ import annotations
 from collections.abc import Callable
 from dataclasses import dataclass
 
+import numpy as np
+
 from prm9tool.device.protocol.requests import (
     ABORT_ENTRY,
     MAX_READ_ENTRIES,
@@ -183,13 +185,27 @@ class AbortReply:
             return "unknown abort code"
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, eq=False)
 class StreamData:
-    """One stream report: ``samples`` = one tuple of ``channels`` raw values per instant."""
+    """One stream report: ``samples`` = int16 array of shape (instants, channels), raw values.
+
+    An array, not tuples: at 3 × 5 kHz the host must not build a Python object per sample.
+    """
 
     sequence: int
     channels: int
-    samples: tuple[tuple[int, ...], ...]
+    samples: np.ndarray
+
+    def __eq__(self, other: object) -> bool:
+        if not isinstance(other, StreamData):
+            return NotImplemented
+        return (
+            (self.sequence, self.channels) == (other.sequence, other.channels)
+            and self.samples.shape == other.samples.shape
+            and bool(np.array_equal(self.samples, other.samples))
+        )
+
+    __hash__ = None  # type: ignore[assignment]
 
     @staticmethod
     def capacity(channels: int) -> int:
