@@ -21,9 +21,6 @@ if TYPE_CHECKING:
 
     from prm9tool.views.main_window import MainWindow
 
-DEFAULT_EMULATOR_TYPE_KEY = "PRM9-06.3Z11/30-24E02S02-CA"
-DEFAULT_EMULATOR_SERIAL = 1001
-
 
 @dataclass
 class StartPlan:
@@ -45,6 +42,8 @@ def plan_from(args: argparse.Namespace) -> StartPlan:
 
 def _emulator_spec(spec: str) -> str:
     """``TYPEKEY[:SERIAL]`` with the defaults filled in."""
+    from prm9tool.views.hid_dialog import DEFAULT_EMULATOR_SERIAL, DEFAULT_EMULATOR_TYPE_KEY
+
     key, _, serial = (spec or DEFAULT_EMULATOR_TYPE_KEY).partition(":")
     return f"{key or DEFAULT_EMULATOR_TYPE_KEY}:{serial or DEFAULT_EMULATOR_SERIAL}"
 

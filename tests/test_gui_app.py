@@ -28,9 +28,7 @@ def _args(*argv):
 
 
 def test_plan_fills_in_the_emulator_defaults():
-    assert app.plan_from(_args("--emulator")).emulators == [
-        f"{app.DEFAULT_EMULATOR_TYPE_KEY}:{app.DEFAULT_EMULATOR_SERIAL}"
-    ]
+    assert app.plan_from(_args("--emulator")).emulators == ["PRM9-06.3Z11/30-24E02S02-CA:1001"]
     plan = app.plan_from(_args("valve.prm", "--emulator", f"{E04_CA}:7"))
     assert plan.emulators == [f"{E04_CA}:7"] and str(plan.file) == "valve.prm"
     assert app.plan_from(_args()).emulators == [] and app.plan_from(_args()).file is None

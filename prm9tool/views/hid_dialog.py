@@ -30,7 +30,9 @@ from prm9tool.views.valve_selection import ValveSelectionDialog
 
 EMULATORS_KEY = "hid/emulators"
 SELECTED_KEY = "hid/selected"
-DEFAULT_EMULATOR = "PRM9-06.3Z11/30-24E02S02-CA:1001"
+DEFAULT_EMULATOR_TYPE_KEY = "PRM9-06.3Z11/30-24E02S02-CA"  # also the default of --emulator
+DEFAULT_EMULATOR_SERIAL = 1001
+DEFAULT_EMULATOR = f"{DEFAULT_EMULATOR_TYPE_KEY}:{DEFAULT_EMULATOR_SERIAL}"
 Lister = Callable[[Sequence[str]], list[object]]
 
 
@@ -62,7 +64,7 @@ class EmulatorDialog(QDialog):
     def __init__(self, parent: QWidget | None = None) -> None:
         super().__init__(parent)
         self.setWindowTitle(self.tr("Add emulated valve"))
-        self.selection = ValveSelectionDialog(TypeKey.parse(DEFAULT_EMULATOR.split(":")[0]), self)
+        self.selection = ValveSelectionDialog(TypeKey.parse(DEFAULT_EMULATOR_TYPE_KEY), self)
         self.selection.setWindowFlags(Qt.WindowType.Widget)
         self.selection.buttons.hide()
         self.serial = QSpinBox()
