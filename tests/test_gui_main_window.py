@@ -279,3 +279,14 @@ def test_emulated_valve_dialog_builds_type_key_and_serial(window):
     dialog.selection._on_key_edited(E04_CA)
     dialog.serial.setValue(4711)
     assert dialog.spec() == f"{E04_CA}:4711"
+
+
+def test_hid_dialog_removes_an_emulated_valve(window):
+    from prm9tool.views.hid_dialog import HidConfigurationDialog, saved_emulators
+
+    dialog = HidConfigurationDialog(window.connection.list_devices, window.settings, window)
+    dialog.add_emulator(f"{E04_CA}:78")
+    assert dialog.remove_button.isEnabled()
+    dialog.remove_button.click()
+    assert f"{E04_CA}:78" not in saved_emulators(window.settings)
+    assert E04_CA not in [dialog.table.item(r, 1).text() for r in range(dialog.table.rowCount())]
