@@ -76,5 +76,5 @@ def test_e04_in_position_control_mode_bypasses_the_process_loop():
 def test_step_response_measures_the_capture():
     valve = valve_for("E02", "AB")
     result = step_response(valve, 0.0, 10.0, "position_actual", seconds=0.1)
-    assert len(result.samples) == round(0.1 / CYCLE)
+    assert len(result.samples) == round(0.1 / CYCLE) + 1  # one sample before the step
     assert np.argmax(result.samples >= 0.9 * FULL) * CYCLE <= result.rise_s + 0.01

@@ -14,6 +14,7 @@ import numpy as np
 
 from prm9tool.device.emulator.constants import CYCLE_S, FULL
 from prm9tool.device.emulator.valve import EmulatedValve
+from prm9tool.scope.measure import step_figures
 
 FACTORY_E02 = "PRM9-06.3Z11/30-24E02S02"
 
@@ -22,10 +23,11 @@ FACTORY_E02 = "PRM9-06.3Z11/30-24E02S02"
 class StepResult:
     """A step response. Times in seconds from the step; percentages of the step or of 100 %.
 
-    ``rise_s``: 10 % → 90 % of the step; ``settling_s``: from the step until the signal stays
-    within ±2 % of 100 % around its final value; ``overshoot_percent``: beyond the final
-    value, in % of the step; ``steady_ripple_percent``: peak-to-peak over the last 20 % of the
-    record, in % of 100 %.
+    The figures are those the oscilloscope shows (:func:`prm9tool.scope.step_figures`, one
+    definition for both): ``rise_s`` 10 % → 90 % of the step; ``settling_s`` from the step
+    until the signal stays within ±2 % of the step around its final value; ``overshoot_percent``
+    beyond the final value, in % of the step. ``steady_ripple_percent``: peak-to-peak over the
+    last 20 % of the record, in % of 100 %.
     """
 
     samples: np.ndarray
@@ -51,6 +53,7 @@ def step_response(
         valve.advance(0.1)
     valve.advance(0.5)
     valve.capture_start([key])
+    valve.advance(CYCLE_S)  # one sample before the step marks where it happens
     valve.set_input(input_name, after)
     valve.advance(seconds)
     samples = valve.capture_read()[:, 0]
@@ -59,25 +62,21 @@ def step_response(
 
 
 def measure(samples: np.ndarray) -> StepResult:
-    """Figures of a recorded step (the first sample is the first cycle after the step)."""
+    """Figures of a recorded step; the input stepped between samples 0 and 1."""
+    t = np.arange(len(samples)) * CYCLE_S
+    reference = np.ones(len(samples))
+    reference[0] = 0.0
+    figures = step_figures(t, samples, reference)
+    if figures is None:
+        raise ValueError("the record holds no step response")
     tail = samples[int(len(samples) * 0.8) :]
-    initial, final = float(samples[0]), float(tail.mean())
-    step = final - initial
-    direction = 1.0 if step >= 0 else -1.0
-    progress = (samples - initial) * direction
-    size = abs(step) or 1.0
-    t10 = int(np.argmax(progress >= 0.1 * size))
-    t90 = int(np.argmax(progress >= 0.9 * size))
-    outside = np.nonzero(np.abs(samples - final) > 0.02 * FULL)[0]
-    settling = (int(outside[-1]) + 1) * CYCLE_S if len(outside) else 0.0
-    overshoot = max(0.0, float(progress.max()) - size) / size * 100.0
     return StepResult(
         samples=samples,
-        initial=initial,
-        final=final,
-        rise_s=(t90 - t10) * CYCLE_S,
-        overshoot_percent=overshoot,
-        settling_s=settling,
+        initial=figures.initial,
+        final=figures.final,
+        rise_s=figures.rise_time,
+        overshoot_percent=figures.overshoot,
+        settling_s=figures.settling_time,
         steady_ripple_percent=float(np.ptp(tail)) / FULL * 100.0,
     )
 
