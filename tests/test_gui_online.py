@@ -143,6 +143,9 @@ def test_live_values_refresh_in_the_table(qtbot, window):
     index = model.index(model.row_of("PWR"), 2)
     qtbot.waitUntil(lambda: model.data(index) != "—", timeout=TIMEOUT)
     assert 19 < float(model.data(index)) < 29
+    with qtbot.waitSignal(window.connection.online_changed, timeout=TIMEOUT):
+        window.valve.go_offline()
+    assert model.data(index) == "—"  # offline, a live value would be stale
 
 
 def test_a_refused_online_edit_is_reported_and_kept(qtbot, window, answers):

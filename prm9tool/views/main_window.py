@@ -198,7 +198,10 @@ class MainWindow(QMainWindow):
             source.message_posted.connect(lambda text: s.showMessage(text, 8000))
 
     def _on_connection_online_changed(self, online: bool) -> None:
-        if not online and self.current_view() == "scope":
+        if online:
+            return
+        self.parameter_view.model.forget_live_values()  # offline, live values would be stale
+        if self.current_view() == "scope":
             self.show_view("parameters")
 
     def _update_actions(self, *_args: object) -> None:

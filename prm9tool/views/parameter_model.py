@@ -89,7 +89,7 @@ class ParameterTableModel(QAbstractTableModel):
         self.endResetModel()
 
     def forget_live_values(self) -> None:
-        """Show live values as unknown again (after going offline with a new document)."""
+        """Show live values as unknown again (offline they would be stale)."""
         self._live_seen.clear()
         self._emit_all_values()
 
