@@ -121,12 +121,12 @@ def main(argv: Sequence[str] | None = None) -> int:
 
         return eds.run(args)
     if args.list_devices or args.batch is not None:
-        from prm9tool import batch
+        from prm9tool.batch import run as run_batch
 
-        return batch.run(args)
-    from prm9tool import app
+        return run_batch(args)
+    from prm9tool.app import run as run_app
 
-    return app.run(args)
+    return run_app(args)
 
 
 if __name__ == "__main__":  # pragma: no cover
