@@ -67,7 +67,22 @@ def _picture(diagram: DiagramPainter) -> QImage:
     painter.setRenderHint(QPainter.RenderHint.Antialiasing)
     diagram(painter, QRectF(0, 0, image.width(), image.height()))
     painter.end()
-    return image
+    return _trimmed(image)
+
+
+def _trimmed(image: QImage, margin: int = 12) -> QImage:
+    """The image without its white border (the diagram keeps its aspect inside the target)."""
+    import numpy as np  # printing only; not needed to start the program
+
+    pixels = np.frombuffer(image.constBits(), np.uint32, image.width() * image.height())
+    ink = np.argwhere(pixels.reshape(image.height(), image.width()) != 0xFFFFFFFF)
+    if not len(ink):
+        return image
+    (top, left), (bottom, right) = ink.min(axis=0), ink.max(axis=0)
+    top, left = max(0, top - margin), max(0, left - margin)
+    bottom = min(image.height() - 1, bottom + margin)
+    right = min(image.width() - 1, right + margin)
+    return image.copy(int(left), int(top), int(right - left + 1), int(bottom - top + 1))
 
 
 def _html(doc: ParameterDocument, header: RecordHeader, with_diagram: bool) -> str:
