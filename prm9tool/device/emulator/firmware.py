@@ -174,6 +174,22 @@ class Firmware:
                     od.values[param.key] = value
         self.nmt_state = "pre-operational"
 
+    def reload(self) -> None:
+        """Working values of the stored parameters ← the NV image, without a power cycle.
+
+        Only the parameters the store command keeps change; the state machine, the boot
+        timeline and the latched interface settings stay as they are, and the loop picks the
+        values up in its next cycle.
+        """
+        od = self.od
+        for param in od.entries.values():
+            if is_nonvolatile(param) and param.key not in od.getters:
+                value = self.nv.values.get(param.mnemonic)
+                if value is None:
+                    value = param.default_for(self.variant, self.node_id)
+                od.values[param.key] = value
+        self.setpoint_dirty = self.config_dirty = True
+
     def nonvolatile_values(self) -> dict[str, int | str]:
         """The RAM values the store command writes (node-relative defaults left out)."""
         image = {}

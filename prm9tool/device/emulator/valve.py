@@ -107,6 +107,11 @@ class EmulatedValve:
         """Non-volatile image ← factory defaults; effective after the next restart."""
         self.write(0x1011, 1, LOAD_SIGNATURE)
 
+    def reload(self) -> None:
+        """Working parameters ← non-volatile image, without a restart (the valve keeps running)."""
+        with self.lock:
+            self._fw.reload()
+
     def restart(self) -> None:
         """Power cycle: RAM ← NV image, switches re-read, boot timeline replayed."""
         with self.lock:
