@@ -312,6 +312,35 @@ def test_segmented_download_and_toggle_error(rig: Rig):
     rig.exchange("60A 1B E8 03 00 00 00 00 00", "58A 80 17 10 00 00 00 03 05")
 
 
+def test_stalled_segmented_upload_is_aborted_after_one_second(rig: Rig):
+    rig.exchange("60A 40 41 20 00 00 00 00 00", "58A 41 41 20 00 1B 00 00 00")
+    rig.exchange("60A 60 00 00 00 00 00 00 00", "58A 00 50 52 4D 39 2D 30 36")
+    rig.valve.advance(0.9)  # simulated time: the client is quiet
+    assert [f for f in rig.drain() if f.startswith("58A")] == []
+    rig.valve.advance(0.2)
+    assert [f for f in rig.drain() if f.startswith("58A")] == ["58A 80 41 20 00 00 00 04 05"]
+    rig.exchange("60A 70 00 00 00 00 00 00 00", "58A 80 00 00 00 01 00 04 05")  # gone
+
+
+def test_stalled_segmented_download_is_aborted_and_writes_nothing(rig: Rig):
+    before = rig.valve.read(0x1017, 0)
+    rig.exchange("60A 21 17 10 00 02 00 00 00", "58A 60 17 10 00 00 00 00 00")
+    rig.valve.advance(1.1)
+    assert [f for f in rig.drain() if f.startswith("58A")] == ["58A 80 17 10 00 00 00 04 05"]
+    rig.exchange("60A 0B F4 01 00 00 00 00 00", "58A 80 00 00 00 01 00 04 05")
+    assert rig.valve.read(0x1017, 0) == before != 500
+
+
+def test_a_segmented_transfer_that_keeps_talking_does_not_time_out(rig: Rig):
+    rig.exchange("60A 40 41 20 00 00 00 00 00", "58A 41 41 20 00 1B 00 00 00")
+    rig.valve.advance(0.8)
+    assert [f for f in rig.drain() if f.startswith("58A")] == []
+    rig.exchange("60A 60 00 00 00 00 00 00 00", "58A 00 50 52 4D 39 2D 30 36")
+    rig.valve.advance(0.8)  # 1.6 s since the start, 0.8 s since the last segment
+    assert [f for f in rig.drain() if f.startswith("58A")] == []
+    rig.exchange("60A 70 00 00 00 00 00 00 00", "58A 10 2E 33 5A 31 31 2F 33")
+
+
 @pytest.mark.parametrize(
     ("request_frame", "abort"),
     [

@@ -2,7 +2,9 @@
 
 Pure protocol, no bus and no valve: :class:`SdoServer` turns one request (8 data bytes) into
 the response bytes, calling ``read``/``write`` for the object-dictionary access. Block
-transfer is not supported (answered with "command specifier not valid").
+transfer is not supported (answered with "command specifier not valid"). A segmented transfer
+whose client goes quiet is aborted with "SDO protocol timed out" after :data:`SEGMENT_TIMEOUT_MS`
+of the caller's clock (the slave passes simulated time, see :meth:`SdoServer.expire`).
 """
 
 from __future__ import annotations
@@ -28,6 +30,7 @@ CCS_ABORT = 4
 RESPONSE_DOWNLOAD = 0x60
 RESPONSE_UPLOAD_SEGMENTED = 0x41
 RESPONSE_ABORT = 0x80
+SEGMENT_TIMEOUT_MS = 1000  # decision: CiA 301 leaves the value to the device; manual silent
 
 
 @dataclass
@@ -40,6 +43,7 @@ class _Transfer:
     data: bytearray
     size: int | None
     toggle: int = 0
+    last_ms: int = 0  # when the client last spoke in this transfer
 
 
 def abort_frame(index: int, subindex: int, code: int) -> bytes:
@@ -50,22 +54,45 @@ def abort_frame(index: int, subindex: int, code: int) -> bytes:
 class SdoServer:
     """One SDO server channel (the PRM9 has exactly one: 0x600/0x580 + node ID)."""
 
-    def __init__(self, read: Reader, write: Writer) -> None:
+    def __init__(self, read: Reader, write: Writer, timeout_ms: int = SEGMENT_TIMEOUT_MS) -> None:
         self._read = read
         self._write = write
+        self._timeout_ms = timeout_ms
         self._transfer: _Transfer | None = None
+
+    @property
+    def busy(self) -> bool:
+        """True while a segmented transfer is in progress."""
+        return self._transfer is not None
 
     def reset(self) -> None:
         """Forget a transfer in progress (NMT reset, state change)."""
         self._transfer = None
 
-    def handle(self, request: bytes) -> bytes | None:
-        """The response to ``request``, or None when the protocol requires no answer."""
+    def expire(self, now_ms: int) -> bytes | None:
+        """Abort a segmented transfer idle for longer than the timeout: the abort frame, or None.
+
+        ``now_ms`` is the same clock as the one given to :meth:`handle`.
+        """
+        transfer = self._transfer
+        if transfer is None or now_ms - transfer.last_ms <= self._timeout_ms:
+            return None
+        self._transfer = None
+        return abort_frame(transfer.index, transfer.subindex, AbortCode.SDO_TIMEOUT)
+
+    def handle(self, request: bytes, now_ms: int = 0) -> bytes | None:
+        """The response to ``request``, or None when the protocol requires no answer.
+
+        ``now_ms`` (any monotonic millisecond clock) starts the segment timeout.
+        """
         data = bytes(request).ljust(8, b"\x00")
         ccs = data[0] >> 5
         index, subindex = struct.unpack_from("<HB", data, 1)
         try:
-            return self._dispatch(ccs, data, index, subindex)
+            response = self._dispatch(ccs, data, index, subindex)
+            if self._transfer is not None:
+                self._transfer.last_ms = now_ms
+            return response
         except SdoAbortError as exc:
             self._transfer = None
             return abort_frame(exc.index, exc.subindex, exc.code)

@@ -159,7 +159,7 @@ class CanopenSlave:
         if self.state is NmtState.STOPPED:
             return  # manual table 7-4: only NMT while stopped
         if can_id == 0x600 + self.node_id:
-            response = self._sdo.handle(data)
+            response = self._sdo.handle(data, self._now_ms)
             if response is not None:
                 self._send(0x580 + self.node_id, response)
         elif can_id == int(self._valve.read(SYNC_COB_ID, 0)) & 0x7FF:
@@ -193,6 +193,8 @@ class CanopenSlave:
             if not self._valve.status().booting:
                 self._boot_up()
             return
+        if self._sdo.busy and (abort := self._sdo.expire(self._now_ms)) is not None:
+            self._send(0x580 + self.node_id, abort)
         period = self._heartbeat_ms()
         if period and self._now_ms >= self._heartbeat_due_ms:
             self._send(0x700 + self.node_id, bytes([HEARTBEAT_CODES[self.state]]))
