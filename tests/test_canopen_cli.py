@@ -1,0 +1,73 @@
+"""``prm9tool --emulator TYPEKEY --can-interface virtual --can-channel X`` puts the valve on X.
+
+The command line is parsed by the real parser and the session opened by the composition
+root's opener (the one the GUI uses) through prm9tool/device/factory.py; the GUI itself is not
+started. A ``canopen`` master on the same ``virtual`` channel then commissions the valve.
+"""
+
+from __future__ import annotations
+
+import struct
+import time
+
+import can
+import canopen
+import pytest
+from canopen_rig import TIMEOUT_S, unique_channel
+
+from prm9tool import app, cli
+from prm9tool.device import factory
+from prm9tool.errors import CommunicationError
+
+E04_CA = "PRM9-06.3Z11/30-24E04S02-CA"
+SERIAL = 4711
+
+
+def _wait_for(bus: can.BusABC, can_id: int, data: bytes) -> None:
+    deadline = time.monotonic() + TIMEOUT_S
+    while time.monotonic() < deadline:
+        msg = bus.recv(0.1)
+        if msg is not None and (msg.arbitration_id, bytes(msg.data)) == (can_id, data):
+            return
+    raise AssertionError(f"no frame {can_id:03X} {data.hex(' ')}")
+
+
+def _open(argv: list[str]) -> object:
+    args = cli.build_parser().parse_args(argv)
+    entry = factory.list_devices(app.plan_from(args).emulators)[0]
+    return app._opener(args)(entry)
+
+
+@pytest.fixture(autouse=True)
+def _forget_valves():
+    yield
+    factory.forget_emulated_valves()
+
+
+def test_command_line_puts_the_emulated_ca_valve_on_the_chosen_virtual_channel():
+    channel = unique_channel("cli")
+    listener = can.Bus(interface="virtual", channel=channel)
+    network = canopen.Network()
+    network.connect(interface="virtual", channel=channel)
+    argv = ["--emulator", f"{E04_CA}:{SERIAL}", "--can-interface", "virtual"]
+    session = _open([*argv, "--can-channel", channel])
+    try:
+        node_id = factory.emulated_valve(E04_CA, SERIAL).node_id
+        _wait_for(listener, 0x700 + node_id, b"\x00")  # boot-up, paced in real time
+        node = network.add_node(node_id)
+        node.sdo.RESPONSE_TIMEOUT = TIMEOUT_S
+        assert struct.unpack("<I", node.sdo.upload(0x1018, 4))[0] == SERIAL
+        assert struct.unpack("<I", node.sdo.upload(0x1000, 0))[0] & 0xFFFF == 408
+        network.nmt.send_command(0x01)
+        _wait_for(listener, 0x700 + node_id, b"\x05")  # heartbeat: operational
+    finally:
+        session.close()  # type: ignore[attr-defined]
+        network.disconnect()
+        listener.shutdown()
+
+
+def test_an_unknown_can_interface_is_reported():
+    argv = ["--emulator", f"{E04_CA}:{SERIAL}", "--can-interface", "no-such-interface"]
+    with pytest.raises(CommunicationError, match="cannot open CAN bus"):
+        _open(argv)
+    assert not factory.emulated_valve(E04_CA, SERIAL).running  # nothing left running
