@@ -290,3 +290,14 @@ def test_hid_dialog_removes_an_emulated_valve(window):
     dialog.remove_button.click()
     assert f"{E04_CA}:78" not in saved_emulators(window.settings)
     assert E04_CA not in [dialog.table.item(r, 1).text() for r in range(dialog.table.rowCount())]
+
+
+def test_canopen_window_of_the_toolbar_is_gated_by_the_access_level(qtbot, tmp_path, answers):
+    with main_window(qtbot, tmp_path, E04_CA) as window:
+        canopen = window.show_canopen_window()
+        assert not canopen.terminator.isEnabled()
+        assert "Expert" in canopen.terminator.toolTip()
+        assert not canopen.apply("CANTERM", 1)
+        assert window.doc.value("CANTERM") == 0
+        window.access.set_level(Access.EXPERT)
+        assert canopen.terminator.isEnabled()

@@ -279,7 +279,7 @@ class MainWindow(QMainWindow):
         if self.canopen_window is None:
             from prm9tool.views.canopen_window import CanopenWindow
 
-            self.canopen_window = CanopenWindow(self.doc, self.connection, self)
+            self.canopen_window = CanopenWindow(self.doc, self.connection, self, access=self.access)
         self.canopen_window.show()
         self.canopen_window.raise_()
         return self.canopen_window
