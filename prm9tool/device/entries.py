@@ -34,9 +34,10 @@ STEPS = {"write": "writing the parameters", "verify": "reading them back", "stor
 class OperationCancelledError(Prm9Error):
     """The user cancelled a long operation; ``step`` says where it stopped."""
 
-    def __init__(self, step: str) -> None:
+    def __init__(self, step: str, outcome: str = "") -> None:
         self.step = step
-        super().__init__(f"cancelled while {STEPS.get(step, step)}; nothing was stored")
+        text = f"cancelled while {STEPS.get(step, step)}; nothing was stored"
+        super().__init__(f"{text}; {outcome}" if outcome else text)
 
 
 class RefusedError(Prm9Error):

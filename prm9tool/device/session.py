@@ -7,6 +7,7 @@ step)`` and stop at the next report when ``cancel`` is set. Failures raise the t
 
 from __future__ import annotations
 
+import logging
 import threading
 import time
 from collections.abc import Callable, Mapping, Sequence
@@ -33,6 +34,7 @@ from prm9tool.device.protocol import (
     Done,
     Identify,
     IdentifyReply,
+    Reload,
     Request,
     Response,
     Restart,
@@ -47,6 +49,7 @@ from prm9tool.errors import CommunicationError, Prm9Error, ProtocolError, SdoAbo
 from prm9tool.typekey import TypeKey
 
 R = TypeVar("R", bound=Response)
+log = logging.getLogger("prm9tool.device.session")
 __all__ = ["DeviceInfo", "OperationCancelledError", "UploadResult", "ValveSession"]
 
 
@@ -63,7 +66,12 @@ class DeviceInfo:
 
 @dataclass
 class UploadResult:
-    """Outcome of an upload; ``failed_step`` is ``write``, ``verify``, ``store`` or None."""
+    """Outcome of an upload; ``failed_step`` is ``write``, ``verify``, ``store`` or None.
+
+    After a failed upload the session puts the valve's stored parameters back into its working
+    values (:meth:`ValveSession.reload`, no restart): ``reloaded`` says whether that worked,
+    ``reload_error`` why not.
+    """
 
     written: int
     verified: bool
@@ -71,6 +79,8 @@ class UploadResult:
     mismatches: dict[str, tuple[Value, Value]]
     duration_s: float
     failed_step: str | None
+    reloaded: bool = False
+    reload_error: str | None = None
 
 
 class ValveSession:
@@ -145,8 +155,10 @@ class ValveSession:
         """Write all → read back and compare → store. Only a verified set is stored.
 
         A refusal or mismatch returns a result with ``failed_step``; a broken link raises the
-        communication error with the failed step named. Either way nothing was stored unless
-        ``stored`` is True, so a restart returns the valve to its previous parameters.
+        communication error with the failed step named (``step`` attribute). Either way nothing
+        was stored unless ``stored`` is True. After any failure (also a cancel) the session
+        asks the valve to reload its stored parameters into its working values, so it does not
+        run on with a half-written set; the result or the error says whether that worked.
         """
         start = time.monotonic()
         params = self._checked(values)
@@ -163,16 +175,17 @@ class ValveSession:
                 if actual[p.mnemonic] != values[p.mnemonic]
             }
             if mismatches:
-                return UploadResult(written, False, False, mismatches, _since(start), "verify")
+                return self._failed(written, mismatches, start, "verify")
             step = "store"
             check_cancel(cancel, step)
             self.store()
         except RefusedError as refused:
             refusal: tuple[Value, Value] = (values[refused.mnemonic], str(refused.error))
-            mismatch = {refused.mnemonic: refusal}
-            return UploadResult(refused.done, False, False, mismatch, _since(start), "write")
+            return self._failed(refused.done, {refused.mnemonic: refusal}, start, "write")
+        except OperationCancelledError as exc:
+            raise OperationCancelledError(exc.step, reload_outcome(self._revert())) from exc
         except CommunicationError as exc:
-            raise _step_error(exc, step) from exc
+            raise _step_error(exc, step, self._revert()) from exc
         if progress:
             progress(total, total, "store")
         return UploadResult(written, True, True, {}, _since(start), None)
@@ -192,6 +205,10 @@ class ValveSession:
     def store(self) -> None:
         """Make the working parameters permanent (non-volatile memory)."""
         self._call(Store(), Done)
+
+    def reload(self) -> None:
+        """Working parameters ← the stored ones (non-volatile memory), without a restart."""
+        self._call(Reload(), Done)
 
     def restore_factory(self) -> None:
         """Reset the stored parameters to factory values; effective after :meth:`restart`."""
@@ -255,6 +272,23 @@ class ValveSession:
         self.close()
 
     # --- internals ------------------------------------------------------------------------
+    def _failed(
+        self, written: int, mismatches: dict[str, tuple[Value, Value]], start: float, step: str
+    ) -> UploadResult:
+        problem = self._revert()
+        return UploadResult(
+            written, False, False, mismatches, _since(start), step, problem is None, problem
+        )
+
+    def _revert(self) -> str | None:
+        """After a failed upload: working values ← stored ones (best effort); why it failed."""
+        try:
+            self.reload()
+        except Prm9Error as exc:
+            log.warning("%s: reloading the stored parameters failed: %s", self._device_id, exc)
+            return str(exc)
+        return None
+
     def _call(self, request: Request, expected: type[R]) -> R:
         reply = self._transport.request(request)
         if isinstance(reply, AbortReply):
@@ -287,17 +321,35 @@ def _since(start: float) -> float:
     return time.monotonic() - start
 
 
-def _step_error(exc: CommunicationError, step: str) -> CommunicationError:
+def reload_outcome(problem: str | None) -> str:
+    """What a failed upload left in the valve, given why the reload failed (None: it worked)."""
+    if problem is None:
+        return "the valve's working parameters were reset to its stored ones (no restart)"
+    return (
+        "resetting its working parameters to the stored ones failed too "
+        f"({problem}): restart the valve, hydraulics off, to return to them"
+    )
+
+
+def _step_error(exc: CommunicationError, step: str, problem: str | None) -> CommunicationError:
+    """``exc`` with the failed step and the valve's state named; ``problem``: reload failure."""
     number = list(STEPS).index(step) + 1
-    if step == "store":
+    if step != "store":
+        outcome = f"nothing was stored; {reload_outcome(problem)}"
+    elif problem is None:
         outcome = (
-            "the store may not have completed: after a restart the valve holds either its "
-            "previous parameters or the complete new set — download to check"
+            "the store may not have completed: the valve now holds either its previous "
+            "parameters or the complete new set, working and stored alike — download to check"
         )
     else:
-        outcome = "nothing was stored: after a restart the valve holds its previous parameters"
+        outcome = (
+            "the store may not have completed: after a restart the valve holds either its "
+            "previous parameters or the complete new set — download to check "
+            f"(resetting its working parameters failed too: {problem})"
+        )
     error = type(exc)(f"upload failed while {STEPS[step]} (step {number} of 3): {exc}; {outcome}")
     error.step = step  # type: ignore[attr-defined]
+    error.reloaded = problem is None  # type: ignore[attr-defined]
     return error
 
 

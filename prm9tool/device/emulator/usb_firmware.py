@@ -2,7 +2,7 @@
 
 Every request report gets exactly one answer report, built with the same codec the host uses,
 so host and firmware agree byte for byte. Junk gets a well-formed error answer, never an
-exception; the guarded commands (store, restore, restart) need their 4-byte signature, so
+exception; the guarded commands (store, restore, restart, reload) need their 4-byte signature, so
 random reports cannot change the stored parameters. Stream samples are collected every
 millisecond of simulated time into an outbox of reports, as the USB interrupt endpoint would
 send them whether or not the host reads.
@@ -30,6 +30,7 @@ from prm9tool.device.protocol import (
     MalformedReportError,
     ReadEntries,
     ReadReply,
+    Reload,
     Request,
     Response,
     Restart,
@@ -175,6 +176,8 @@ class UsbFirmware:
             valve.store()
         elif isinstance(request, RestoreFactory):
             valve.restore_factory()
+        elif isinstance(request, Reload):
+            valve.reload()
         return Done()  # Restart: executed in handle() after the answer is built
 
     def _read(self, request: ReadEntries) -> ReadReply:

@@ -28,7 +28,12 @@ MAX_SEGMENTED_LENGTH = 1024  # longest value a segmented transfer carries (decis
 STREAM_BASE_RATE_HZ = 5000  # one sample per 200 µs controller cycle
 STREAM_MAX_CHANNELS = 3
 STREAM_SAMPLE_BYTES = BODY_SIZE - 2  # 60 bytes of int16 samples after the stream header
-SIGNATURES = {"store": b"save", "restore": b"load", "restart": b"boot"}  # CiA 301 style
+SIGNATURES = {  # CiA 301 style (0x1010 "save", 0x1011 "load")
+    "store": b"save",
+    "restore": b"load",
+    "restart": b"boot",
+    "reload": b"rvrt",
+}
 
 
 class Op(IntEnum):
@@ -45,6 +50,7 @@ class Op(IntEnum):
     STATUS = 0x09
     STREAM_START = 0x0A
     STREAM_STOP = 0x0B
+    RELOAD = 0x0C
 
 
 # --- request messages --------------------------------------------------------------------------------
@@ -237,6 +243,19 @@ class Restart(_Signed):
 
 
 @dataclass(frozen=True)
+class Reload(_Signed):
+    """Working parameters ← the stored non-volatile image, without a restart (``rvrt``).
+
+    The valve keeps running (a restart would move the spool); used after a failed upload so
+    that the valve does not go on with a half-written parameter set.
+    """
+
+    name = "reload"
+    op = Op.RELOAD
+    idempotent = True  # reloading the same image twice gives the same working values
+
+
+@dataclass(frozen=True)
 class StreamStart:
     """Stream measuring points ``codes`` (signals.py codes) at 5000 Hz / ``decimation``."""
 
@@ -284,6 +303,7 @@ Request = (
     | Store
     | RestoreFactory
     | Restart
+    | Reload
     | StatusRequest
     | StreamStart
     | StreamStop
@@ -300,4 +320,5 @@ REQUEST_PARSERS: dict[int, Callable[[Reader], Request]] = {
     Op.STATUS: StatusRequest.decode,
     Op.STREAM_START: StreamStart.decode,
     Op.STREAM_STOP: StreamStop.decode,
+    Op.RELOAD: Reload.decode,  # type: ignore[dict-item]
 }

@@ -131,7 +131,7 @@ class SegmentWriteReply:
 
 @dataclass(frozen=True)
 class Done:
-    """Plain acknowledgement (store, restore factory, restart, stream stop)."""
+    """Plain acknowledgement (store, restore factory, restart, reload, stream stop)."""
 
     def encode(self, w: Writer) -> None:
         """Write the body (empty)."""
@@ -236,4 +236,5 @@ RESPONSE_PARSERS: dict[int, Callable[[Reader], Response]] = {
     Op.STATUS: StatusReply.decode,
     Op.STREAM_START: StreamStarted.decode,
     Op.STREAM_STOP: Done.decode,
+    Op.RELOAD: Done.decode,
 }
