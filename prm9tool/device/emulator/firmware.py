@@ -11,7 +11,7 @@ from collections.abc import Callable, Generator
 
 from prm9tool import canopen_switches
 from prm9tool.catalogue import CATALOGUE
-from prm9tool.device.emulator import config, detect
+from prm9tool.device.emulator import config, detect, thermal
 from prm9tool.device.emulator.constants import (
     CYCLE_S,
     TICK_CYCLES,
@@ -36,7 +36,6 @@ from prm9tool.typekey import TypeKey
 from prm9tool.variant import Coils
 
 AUTO_CONTROL_WORD = 0x0F  # analog-only mode: the firmware enables itself (decision)
-THERMAL_TICKS = 10  # the thermal model runs every 10 ms (time constant: minutes)
 _ACTIVE_STATES = (DeviceState.HOLD, DeviceState.DEVICE_MODE_ACTIVE, DeviceState.FAULT_HOLD)
 
 
@@ -243,12 +242,12 @@ class Firmware:
         if self.booting and now >= self.fw.boot_s - 1e-9:
             self._boot_finished()
         self.ticks += 1
-        if self.ticks % THERMAL_TICKS == 0:
-            self._thermal(THERMAL_TICKS * TICK_CYCLES * CYCLE_S)
+        if self.ticks % thermal.THERMAL_TICKS == 0:
+            thermal.step(self, thermal.THERMAL_TICKS * TICK_CYCLES * CYCLE_S)
         faults = self.faults
         if self.static_alarm or faults.busy or self._dynamic_alarm():
             faults.update(now, detect.conditions(self))
-        self._update_warning()
+        thermal.update_warning(self)
         sm = self.sm
         if faults.any_present:
             sm.fault(self.fw.fault_reaction_s)
@@ -271,13 +270,6 @@ class Firmware:
         return (
             abs(self.loop.ctrl_dev) > self.monitoring_threshold
             and self.sm.state is DeviceState.DEVICE_MODE_ACTIVE
-        )
-
-    def _update_warning(self) -> None:
-        c = self.fw
-        temp = self.temperature
-        self.warning = temp > c.temp_warning_c or (
-            self.warning and temp > c.temp_warning_c - c.temp_hysteresis_c
         )
 
     def _boot_finished(self) -> None:
@@ -312,26 +304,6 @@ class Firmware:
             loop.mode, loop.stage_on, loop.temperature_c = mode, stage, self.temperature
             loop.inputs_version += 1
 
-    def _thermal(self, dt: float) -> None:
-        ia, ib = self.loop.current_ma
-        r = config.coil_resistance(self.coil_temperature, self.plant)
-        power = r * (ia * ia + ib * ib) * 1e-6 + self.plant.electronics_loss_w
-        rise = self.temperature_rise
-        rise += (self.plant.thermal_k_per_w * power - rise) * dt / self.plant.thermal_tau_s
-        self.temperature_rise = rise
-        self._update_temperature()
-        model = self.inputs["ambient_temperature"] + rise
-        if abs(model - self.coil_temperature) > 0.5:
-            self.coil_temperature = model
-            self.config_dirty = True
-
-    def _update_temperature(self) -> None:
-        """The electronics temperature reading, °C (an injected over-temperature forces it)."""
-        if Fault.OVER_TEMPERATURE in self.injected:
-            self.temperature = self.fw.injected_temperature_c
-        else:
-            self.temperature = self.inputs["ambient_temperature"] + self.temperature_rise
-
     @property
     def supply(self) -> float:
         """Supply voltage at the valve, V."""
@@ -365,7 +337,7 @@ class Firmware:
             self.setp_curve = config.curve_of(self.value, "SETPLIN")
         loop.supply_v = supply
         loop.inputs_version += 1
-        self._update_temperature()
+        thermal.update_reading(self)
         loop.coil_open = (Fault.COIL_A_OPEN in self.injected, Fault.COIL_B_OPEN in self.injected)
         loop.coil_short = (
             Fault.COIL_A_OVERCURRENT in self.injected,
