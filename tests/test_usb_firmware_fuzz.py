@@ -5,7 +5,8 @@ carrying the request's sequence number (an error answer for anything it cannot p
 junk must never reach the non-volatile memory. "Junk" is every report except the valid store
 commands themselves (STORE "save", RESTORE_FACTORY "load", or a CiA 301 write of 0x1010 /
 0x1011): Hypothesis mines the signatures from the source and does build those. Deterministic:
-no paced thread, no waiting. 2000 examples under the CI hypothesis profile (tests/conftest.py).
+no paced thread, no waiting. 2000 examples in every run (pinned here, not left to the profile:
+the issue asks for at least 2000 in CI, and CI need not set ``CI``); about 3 s.
 """
 
 from __future__ import annotations
@@ -13,7 +14,7 @@ from __future__ import annotations
 import tempfile
 from pathlib import Path
 
-from hypothesis import assume, given
+from hypothesis import assume, given, settings
 from hypothesis import strategies as st
 
 from prm9tool.catalogue import CATALOGUE
@@ -85,6 +86,7 @@ def check_answer(report: bytes, answer: bytes) -> None:
     assert (op, seq) == (request.op, request_seq)
 
 
+@settings(max_examples=2000)
 @given(reports)
 def test_random_reports_get_well_formed_answers_and_never_touch_stored_parameters(batch):
     assume(not any(is_store_command(report) for report in batch))
