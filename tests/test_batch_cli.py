@@ -201,7 +201,8 @@ def test_dry_run_writes_nothing(tmp_path):
 def test_without_hidapi_the_emulator_still_works(tmp_path):
     broken = tmp_path / "broken"
     broken.mkdir()
-    (broken / "hid.py").write_text('raise ImportError("libhidapi-hidraw.so.0: not found")\n')
+    for name in ("hid", "hidraw"):
+        (broken / f"{name}.py").write_text('raise ImportError("libhidapi.so.0: not found")\n')
     env = dict(os.environ, PRM9TOOL_DATA_DIR=str(tmp_path / "data"), PYTHONPATH=str(broken))
     result = subprocess.run(
         [sys.executable, "-m", "prm9tool", "--list-devices", "--emulator", E02],

@@ -17,7 +17,8 @@ E04CA = "PRM9-06.3Z11/30-24E04S02-CA"
 
 @pytest.fixture(autouse=True)
 def _fresh_emulators(monkeypatch):
-    monkeypatch.setitem(__import__("sys").modules, "hid", None)  # no USB on the test machine
+    for name in ("hid", "hidraw"):  # no USB on the test machine
+        monkeypatch.setitem(__import__("sys").modules, name, None)
     yield
     factory.forget_emulated_valves()
 

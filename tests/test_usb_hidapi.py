@@ -12,7 +12,7 @@ from prm9tool.catalogue import CATALOGUE
 from prm9tool.device import factory
 from prm9tool.device.emulator import EmulatedValve
 from prm9tool.device.session import ValveSession
-from prm9tool.device.transport.hidapi import HidTransport, UsbFilter
+from prm9tool.device.transport.hidapi import HidTransport, UsbFilter, load_hid
 from prm9tool.errors import CommunicationError, DeviceDisconnectedError
 
 E02 = "PRM9-06.3Z11/30-24E02S02"
@@ -30,6 +30,7 @@ def _fresh_emulators():
 def fake_hid(monkeypatch):
     fake = FakeHid()
     monkeypatch.setitem(sys.modules, "hid", fake.as_module())
+    monkeypatch.setitem(sys.modules, "hidraw", fake.as_module())  # hidapi's Linux hidraw build
     monkeypatch.setattr(HidTransport, "settle_s", 0.0)
     return fake
 
@@ -151,6 +152,7 @@ def test_restart_finds_the_valve_under_its_new_path(fake_hid, device):
 
 def test_without_hidapi_the_emulator_still_works(monkeypatch):
     monkeypatch.setitem(sys.modules, "hid", None)  # import hid -> ImportError
+    monkeypatch.setitem(sys.modules, "hidraw", None)
     assert "hidapi library could not be loaded" in factory.usb_unavailable_reason()
     entries = factory.list_devices([E02])
     assert [e.kind for e in entries] == ["emulator"]
@@ -158,3 +160,16 @@ def test_without_hidapi_the_emulator_still_works(monkeypatch):
         assert session.read("PCODE") == E02
     with pytest.raises(CommunicationError, match="USB is not available"):
         factory.open_session("usb:/dev/hidraw0")
+
+
+@pytest.mark.skipif(not sys.platform.startswith("linux"), reason="hidraw exists on Linux only")
+def test_linux_uses_the_hidraw_backend_and_falls_back_to_libusb(monkeypatch):
+    hidraw, libusb = FakeHid().as_module(), FakeHid().as_module()
+    monkeypatch.setitem(sys.modules, "hidraw", hidraw)
+    monkeypatch.setitem(sys.modules, "hid", libusb)
+    assert load_hid() is hidraw  # /dev/hidrawN paths, the kernel keeps its HID driver
+    monkeypatch.setitem(sys.modules, "hidraw", None)
+    assert load_hid() is libusb
+    monkeypatch.setitem(sys.modules, "hid", None)
+    with pytest.raises(CommunicationError, match=r"could not be loaded \(hidraw: .*; hid: "):
+        load_hid()

@@ -1,14 +1,20 @@
-"""The USB backend: 64-byte HID reports through the ``hidapi`` library (module ``hid``).
+"""The USB backend: 64-byte HID reports through the ``hidapi`` library.
 
-On Linux hidapi's hidraw backend talks to ``/dev/hidrawN``; on Windows and macOS the native
-HID stack. The valve uses unnumbered reports, so every write starts with report ID 0, which
-the OS strips; reads return the 64 bytes without it. The module ``hid`` is imported only when
-a USB device is actually used, so a machine without a working hidapi runs the emulator fine.
+The ``hidapi`` package installs two modules on Linux: ``hidraw`` (hidapi's hidraw backend:
+the kernel's HID driver, device paths ``/dev/hidrawN``, udev permissions on those nodes) and
+``hid`` (the libusb backend, which detaches the kernel driver and has paths like ``1-2:1.0``).
+prm9tool uses ``hidraw`` on Linux and falls back to ``hid`` if it is missing; on Windows and
+macOS ``hid`` is the native HID stack. The valve uses unnumbered reports, so every write starts
+with report ID 0, which the OS strips; reads return the 64 bytes without it. The module is
+imported only when a USB device is actually used, so a machine without a working hidapi runs
+the emulator fine.
 """
 
 from __future__ import annotations
 
+import importlib
 import os
+import sys
 import time
 from collections.abc import Callable
 from dataclasses import dataclass
@@ -20,19 +26,22 @@ from prm9tool.device.transport.base import Transport
 from prm9tool.errors import CommunicationError, DeviceDisconnectedError
 
 REPORT_ID = 0
+HID_MODULES = ("hidraw", "hid") if sys.platform.startswith("linux") else ("hid",)
 DEFAULT_PRODUCT = "PRM9"  # product-string filter used when no VID/PID is configured
 
 
 def load_hid() -> ModuleType:
-    """Import hidapi's ``hid`` module; raise CommunicationError saying why it is unusable."""
-    try:
-        import hid  # lazy: USB is optional
-    except ImportError as exc:  # also covers a missing libhidapi shared library
-        raise CommunicationError(
-            f"USB is not available: the hidapi library could not be loaded ({exc}). "
-            "Install the 'hidapi' Python package; the emulator works without it."
-        ) from exc
-    return hid
+    """Import hidapi (``hidraw`` on Linux, else ``hid``); CommunicationError says why not."""
+    problems = []
+    for name in HID_MODULES:  # lazy: USB is optional
+        try:
+            return importlib.import_module(name)
+        except ImportError as exc:  # also covers a missing libhidapi shared library
+            problems.append(f"{name}: {exc}")
+    raise CommunicationError(
+        f"USB is not available: the hidapi library could not be loaded ({'; '.join(problems)}). "
+        "Install the 'hidapi' Python package; the emulator works without it."
+    )
 
 
 @dataclass(frozen=True)
