@@ -178,7 +178,7 @@ def run_scope(app: QApplication, seconds: float, window_s: float, waveform: str)
         scope.preselect(key)
     c = scope.controls
     c.rate.setCurrentIndex(c.rate.findData(RATE_HZ))
-    c.window.setCurrentIndex(c.window.findData(window_s))
+    c.time_window.setCurrentIndex(c.time_window.findData(window_s))
     c.mode.setCurrentIndex(c.mode.findData(TriggerMode.ROLL))
     timer = FrameTimer()
     scope.start()

@@ -136,7 +136,7 @@ def test_single_trigger_holds_the_captured_step(scope, conn):
     c = scope.controls
     c.mode.setCurrentIndex(c.mode.findData(TriggerMode.SINGLE))
     c.level.setValue(25.0)
-    c.window.setCurrentIndex(c.window.findData(0.1))  # 500 samples at 5 kHz
+    c.time_window.setCurrentIndex(c.time_window.findData(0.1))  # 500 samples at 5 kHz
     scope.start()
     conn.samples_received.emit(np.zeros((300, 2)))
     scope._redraw()
@@ -190,7 +190,7 @@ def test_cursors_read_values_and_differences(scope, conn):
 def test_step_figures_are_shown_for_the_captured_step(scope, conn):
     scope.preselect("demand")
     scope.preselect("position_actual")
-    scope.controls.window.setCurrentIndex(scope.controls.window.findData(0.5))
+    scope.controls.time_window.setCurrentIndex(scope.controls.time_window.findData(0.5))
     scope.start()
     t = np.arange(2500) / 5000.0
     resp = np.where(t >= 0.1, 8192 * (1 - np.exp(-(t - 0.1) / 0.01)), 0)
@@ -229,6 +229,10 @@ def test_png_export_writes_an_image(scope, conn, tmp_path):
     scope._redraw()
     scope.export_png(tmp_path / "scope.png")
     assert (tmp_path / "scope.png").read_bytes()[:4] == b"\x89PNG"
+    scope.export_png(tmp_path / "no_suffix")  # the dialog may return a name without .png
+    assert (tmp_path / "no_suffix").read_bytes()[:4] == b"\x89PNG"
+    with pytest.raises(OSError, match=r"Could not write .*missing"):
+        scope.export_png(tmp_path / "missing" / "scope.png")
 
 
 def test_link_loss_stops_the_recording_and_keeps_the_data(scope, conn):
@@ -276,7 +280,7 @@ def test_zooming_an_axis_by_hand_stops_its_autoscale_until_auto(scope, conn):
 def test_step_figures_can_be_limited_to_the_cursor_span(scope, conn):
     scope.preselect("demand")
     scope.preselect("position_actual")
-    scope.controls.window.setCurrentIndex(scope.controls.window.findData(0.5))
+    scope.controls.time_window.setCurrentIndex(scope.controls.time_window.findData(0.5))
     scope.start()
     t = np.arange(2500) / 5000.0
     ref = np.where(t >= 0.1, 8192, 0) - np.where(t >= 0.3, 4096, 0)  # up 50 %, down 25 %

@@ -47,7 +47,7 @@ def capture(app: QApplication, scope: ScopeWidget) -> None:
     for key in ("setpoint_raw", "position_actual", "current_a"):
         scope.preselect(key)
     c = scope.controls
-    c.window.setCurrentIndex(c.window.findData(0.1))
+    c.time_window.setCurrentIndex(c.time_window.findData(0.1))
     c.channel.setCurrentIndex(0)
     c.edge.setCurrentIndex(c.edge.findData(Edge.RISING))
     c.level.setValue(0.0)

@@ -15,7 +15,7 @@ from __future__ import annotations
 
 from typing import Any
 
-from PySide6.QtCore import QEvent, QObject, QSignalBlocker, Qt
+from PySide6.QtCore import QEvent, QSignalBlocker, Qt
 from PySide6.QtGui import QBrush, QColor, QFont
 from PySide6.QtWidgets import (
     QAbstractItemView,
@@ -44,6 +44,7 @@ from prm9tool.canopen_switches import (
     node_position,
 )
 from prm9tool.catalogue import CATALOGUE
+from prm9tool.connection_protocol import ParameterConnection
 from prm9tool.document import ParameterDocument, Raw
 from prm9tool.editing import apply_edit
 from prm9tool.errors import AccessDeniedError, ValueRangeError
@@ -61,7 +62,7 @@ class CanopenWindow(QDialog):
     def __init__(
         self,
         document: ParameterDocument,
-        connection: QObject | None = None,
+        connection: ParameterConnection | None = None,
         parent: QWidget | None = None,
         access: AccessModel | None = None,
     ) -> None:
@@ -96,8 +97,8 @@ class CanopenWindow(QDialog):
         for widget in (self.intro, self.state_label):
             root.addWidget(widget)
         root.addLayout(self._build_tables(), 1)
-        for widget in (self._build_settings(), self.effective_label, self.restart_label):
-            root.addWidget(widget)
+        for part in (self._build_settings(), self.effective_label, self.restart_label):
+            root.addWidget(part)
         root.addWidget(self.error_label)
         root.addWidget(buttons)
         self.resize(900, 720)
@@ -204,7 +205,7 @@ class CanopenWindow(QDialog):
             return
         baud, node = self.switches if self.switches is not None else (None, None)
         for position in POSITIONS:
-            cells = (f"{position:X}", *self._baud_texts(position))
+            cells: tuple[str, ...] = (f"{position:X}", *self._baud_texts(position))
             self._fill_row(self.baud_table, position, cells, position == baud)
             cells = (f"{position:X}", self._node_text(position))
             self._fill_row(self.node_table, position, cells, position == node)

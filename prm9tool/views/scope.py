@@ -10,14 +10,16 @@ on. Online only, like PRM9.exe.
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from pathlib import Path
-from typing import Any
 
 import numpy as np
 from PySide6.QtCore import QEvent, Qt, QTimer
-from PySide6.QtGui import QCloseEvent, QHideEvent, QShowEvent
+from PySide6.QtGui import QCloseEvent, QHideEvent, QImageWriter, QShowEvent
 from PySide6.QtWidgets import QFileDialog, QGridLayout, QLabel, QVBoxLayout, QWidget
 
+from prm9tool.connection_protocol import ScopeConnection
+from prm9tool.document import ParameterDocument
 from prm9tool.errors import ValueRangeError
 from prm9tool.scope import Capture, GeneratorSettings, write_csv
 from prm9tool.signals import BY_KEY, signals_for
@@ -34,7 +36,12 @@ REDRAW_MS = 33  # ~30 Hz
 class ScopeWidget(QWidget):
     """Three-channel oscilloscope on the valve's measuring points."""
 
-    def __init__(self, connection: Any, document: Any, parent: QWidget | None = None) -> None:
+    def __init__(
+        self,
+        connection: ScopeConnection,
+        document: ParameterDocument,
+        parent: QWidget | None = None,
+    ) -> None:
         super().__init__(parent)
         self._connection = connection
         self._document = document
@@ -322,7 +329,8 @@ class ScopeWidget(QWidget):
 
     def export_png(self, path: str | Path) -> None:
         """Save the plot with its legend as a PNG image."""
-        if not self.plot.render_image().save(str(path), "PNG"):
+        writer = QImageWriter(str(path), b"PNG")  # PNG whatever the file name ends with
+        if not writer.write(self.plot.render_image()):
             raise OSError(self.tr("Could not write {0}.").format(path))
 
     def _on_csv_requested(self, whole: bool) -> None:
@@ -339,7 +347,7 @@ class ScopeWidget(QWidget):
         if path:
             self._report_export(lambda: self.export_png(path), path)
 
-    def _report_export(self, action: Any, path: str) -> None:
+    def _report_export(self, action: Callable[[], object], path: str) -> None:
         try:
             action()
         except (OSError, ValueError) as exc:

@@ -10,7 +10,6 @@ and the firmware switches the override off by itself.
 from __future__ import annotations
 
 import time
-from typing import Any
 
 from PySide6.QtCore import QObject, QTimer, Signal
 from PySide6.QtWidgets import (
@@ -23,6 +22,7 @@ from PySide6.QtWidgets import (
     QWidget,
 )
 
+from prm9tool.connection_protocol import ScopeConnection
 from prm9tool.scope import GeneratorSettings, Waveform, setpoint_limits
 
 TICK_MS = 40  # setpoint update period (25 Hz)
@@ -35,7 +35,7 @@ class SetpointGenerator(QObject):
     running_changed = Signal(bool)
     stopped_by_link = Signal()  # the link dropped while running
 
-    def __init__(self, connection: Any, parent: QObject | None = None) -> None:
+    def __init__(self, connection: ScopeConnection, parent: QObject | None = None) -> None:
         super().__init__(parent)
         self._connection = connection
         self._settings = GeneratorSettings()

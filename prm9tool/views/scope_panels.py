@@ -147,10 +147,10 @@ class ControlPanel(QWidget):
         self.rate = QComboBox()
         for rate in RATES_HZ:
             self.rate.addItem(f"{1000.0 / rate:g} ms ({rate / 1000:g} kHz)", rate)
-        self.window = QComboBox()
+        self.time_window = QComboBox()
         for seconds in WINDOWS_S:
-            self.window.addItem(f"{seconds:g} s", seconds)
-        self.window.setCurrentIndex(WINDOWS_S.index(1.0))
+            self.time_window.addItem(f"{seconds:g} s", seconds)
+        self.time_window.setCurrentIndex(WINDOWS_S.index(1.0))
         self.start, self.stop, self.pause = QPushButton(), QPushButton(), QPushButton()
         self.pause.setCheckable(True)
         self.mode, self.channel, self.edge = QComboBox(), QComboBox(), QComboBox()
@@ -182,11 +182,11 @@ class ControlPanel(QWidget):
     def _build_layout(self) -> None:
         self.recording = QGroupBox()
         grid = QGridLayout(self.recording)
-        self.rate_label, self.window_label = QLabel(), QLabel()
+        self.rate_label, self.time_window_label = QLabel(), QLabel()
         grid.addWidget(self.rate_label, 0, 0)
         grid.addWidget(self.rate, 0, 1)
-        grid.addWidget(self.window_label, 1, 0)
-        grid.addWidget(self.window, 1, 1)
+        grid.addWidget(self.time_window_label, 1, 0)
+        grid.addWidget(self.time_window, 1, 1)
         grid.addWidget(self.start, 0, 2)
         grid.addWidget(self.stop, 1, 2)
         grid.addWidget(self.pause, 0, 3)
@@ -215,7 +215,9 @@ class ControlPanel(QWidget):
         self.stop.clicked.connect(self.stop_requested)
         self.pause.toggled.connect(self._on_pause_toggled)
         self.rate.currentIndexChanged.connect(lambda _: self.rate_changed.emit(self.rate_hz()))
-        self.window.currentIndexChanged.connect(lambda _: self.window_changed.emit(self.window_s()))
+        self.time_window.currentIndexChanged.connect(
+            lambda _: self.window_changed.emit(self.window_s())
+        )
         for combo in (self.mode, self.channel, self.edge):
             combo.currentIndexChanged.connect(self._on_trigger_edited)
         self.level.valueChanged.connect(self._on_trigger_edited)
@@ -228,7 +230,7 @@ class ControlPanel(QWidget):
         """Re-read user-visible texts (after a language change)."""
         self.recording.setTitle(self.tr("Recording"))
         self.rate_label.setText(self.tr("Interval"))
-        self.window_label.setText(self.tr("Time window"))
+        self.time_window_label.setText(self.tr("Time window"))
         self.start.setText(self.tr("Start"))
         self.stop.setText(self.tr("Stop"))
         self._on_pause_label()
@@ -278,7 +280,7 @@ class ControlPanel(QWidget):
 
     def window_s(self) -> float:
         """Selected time window."""
-        return float(self.window.currentData())
+        return float(self.time_window.currentData())
 
     def trigger_settings(self) -> TriggerSettings:
         """The trigger as set up."""

@@ -231,7 +231,8 @@ class _ValueLabel(QGraphicsSimpleTextItem):
             painter.setPen(Qt.PenStyle.NoPen)
             painter.setBrush(QColor(255, 255, 255, 230))
             painter.drawRoundedRect(self.boundingRect().adjusted(-2, 0, 2, 0), 3, 3)
-        super().paint(painter, option, widget)
+        # Qt passes no widget when the scene is rendered into an image; the stub wants one
+        super().paint(painter, option, widget)  # type: ignore[arg-type]
 
 
 class DotItem(QGraphicsObject):

@@ -11,7 +11,7 @@ from __future__ import annotations
 from collections.abc import Callable
 from typing import Any
 
-from PySide6.QtCore import QCoreApplication, QEvent, QObject, QRectF, Qt, Signal
+from PySide6.QtCore import QCoreApplication, QEvent, QRectF, Qt, Signal
 from PySide6.QtGui import (
     QContextMenuEvent,
     QKeySequence,
@@ -24,6 +24,7 @@ from PySide6.QtWidgets import QDialog, QGraphicsView, QMenu, QWidget
 
 from prm9tool.access import AccessModel
 from prm9tool.catalogue import CATALOGUE
+from prm9tool.connection_protocol import DiagramConnection
 from prm9tool.document import ParameterDocument
 from prm9tool.i18n import text
 from prm9tool.signals import BY_KEY
@@ -68,7 +69,7 @@ class DiagramView(QGraphicsView):
         self,
         document: ParameterDocument,
         access: AccessModel,
-        connection: QObject | None = None,
+        connection: DiagramConnection | None = None,
         parent: QWidget | None = None,
         simulator_factory: Callable[[ParameterDocument, str], Any] | None = None,
     ) -> None:
@@ -76,7 +77,7 @@ class DiagramView(QGraphicsView):
         self._doc, self._access, self._connection = document, access, connection
         # the controller dialogs' step responses (tests inject a stand-in)
         self._simulator_factory = simulator_factory or StepSimulator.for_document
-        self._dialogs: dict[str, QWidget] = {}
+        self._dialogs: dict[str, QDialog] = {}
         self._fit = True
         self._scene: DiagramScene | None = None
         self.setRenderHints(QPainter.RenderHint.Antialiasing | QPainter.RenderHint.TextAntialiasing)
@@ -115,7 +116,7 @@ class DiagramView(QGraphicsView):
         """Ids of the drawn blocks, in signal order."""
         return self.diagram.layout.block_ids()
 
-    def open_block(self, block_id: str) -> QWidget | None:
+    def open_block(self, block_id: str) -> QDialog | None:
         """Open (or raise) the dialog of ``block_id``; returns it (None for the supply block)."""
         dialog = self._dialogs.get(block_id)
         if dialog is None:
@@ -172,7 +173,7 @@ class DiagramView(QGraphicsView):
         if self._fit:
             self.zoom_to_fit()
 
-    def _create_dialog(self, block_id: str) -> QWidget | None:
+    def _create_dialog(self, block_id: str) -> QDialog | None:
         spec = self.diagram.layout.block(block_id)
         if block_id == "valve":
             return self._valve_dialog()

@@ -11,7 +11,7 @@ from collections.abc import Callable, Iterable, Mapping
 from dataclasses import dataclass
 from typing import Any
 
-from PySide6.QtCore import QCoreApplication, QEvent, QObject
+from PySide6.QtCore import QCoreApplication, QEvent
 from PySide6.QtWidgets import (
     QDialog,
     QDialogButtonBox,
@@ -24,6 +24,7 @@ from PySide6.QtWidgets import (
 
 from prm9tool.access import AccessModel
 from prm9tool.catalogue import CATALOGUE
+from prm9tool.connection_protocol import DiagramConnection
 from prm9tool.document import ParameterDocument, Raw
 from prm9tool.editing import apply_edit
 from prm9tool.errors import AccessDeniedError, ValueRangeError
@@ -43,7 +44,7 @@ class BlockContext:
 
     document: ParameterDocument
     access: AccessModel
-    connection: QObject | None = None
+    connection: DiagramConnection | None = None
     simulator_factory: Callable[[ParameterDocument, str], Any] | None = None
 
 

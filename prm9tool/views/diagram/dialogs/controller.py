@@ -47,8 +47,7 @@ class ControllerDialog(BlockDialog):
         super().__init__(ctx, block_id, title, parent)
         self.prefix, self.loop = prefix, loop
         self.names = [f"{prefix}{g}" for g in GAINS]
-        for name in self.names:
-            self.value_field(name)
+        self.gain_fields = {name: self.value_field(name) for name in self.names}
         self.sliders = {name: self._make_slider(name) for name in self.names}
         self._trial: dict[str, int] = {}
         self._last_applied: Any = None
@@ -159,7 +158,7 @@ class ControllerDialog(BlockDialog):
         raw = slider_to_raw(position, CATALOGUE[name].raw_max)
         if self.sliders[name].isSliderDown():
             self._trial[name] = raw
-            self.fields[name].setText(CATALOGUE[name].format_display(raw))
+            self.gain_fields[name].setText(CATALOGUE[name].format_display(raw))
             self._simulate()
         else:
             self.apply_value(name, raw)
