@@ -175,3 +175,75 @@ def test_single_coil_valve_ignores_the_negative_side():
     valve.advance(0.1)
     assert valve.signal("setpoint_threshold") == 0
     assert valve.signal("current_setpoint_a") == 0
+
+
+# --- E04: external sensor conditioning, gain/offset on the process deviation, process PIDT1 --
+E04 = "PRM9-06.3Z11/30-24E04S02"
+
+
+def e04_with_sensor(volts: float, **writes: tuple[int, int, int]) -> EmulatedValve:
+    """A booted E04 (process control, ±10 V sensor) whose sensor input reads ``volts``."""
+    valve = booted(E04, **writes)
+    valve.set_input("sensor_from_plant", 0)
+    valve.set_input("sensor", volts)
+    valve.advance(0.002)
+    return valve
+
+
+def test_e04_gain_and_offset_act_on_the_process_deviation_not_the_setpoint():
+    valve = e04_with_sensor(
+        1.0,
+        g=(0x6341, 0, 2 * FULL),
+        o=(0x6343, 1, 1638),
+        gn=(0x2011, 0, FULL // 2),
+        on=(0x6344, 1, 819),
+    )
+    pos = chain(valve, 3.0)
+    assert pos["setpoint_gain"] == pos["setpoint_threshold"]  # the setpoint passes 1:1
+    dev = valve.signal("process_setpoint") - valve.signal("process_actual")
+    assert dev == pytest.approx(2 * FULL / 10, abs=8)
+    assert valve.signal("process_deviation") == pytest.approx(1638 + dev * 2 * (FULL - 1638) / FULL)
+    chain(valve, -1.0)
+    dev = valve.signal("process_setpoint") - valve.signal("process_actual")
+    assert dev < 0
+    assert valve.signal("process_deviation") == pytest.approx(
+        -819 + dev * 0.5 * (FULL - 819) / FULL
+    )
+
+
+def test_e04_sensor_linearization_on_and_off():
+    xs = [-FULL, -12288, -8192, -4096, 0, 4096, 8192, 12288, FULL]
+    ys = [-FULL, -15000, -12000, -7000, 0, 1000, 3000, 9000, FULL]
+    writes = {f"x{n}": (0x2006, n, x) for n, x in enumerate(xs, start=1)}
+    writes |= {f"y{n}": (0x2007, n, y) for n, y in enumerate(ys, start=1)}
+    valve = e04_with_sensor(3.0, **writes)
+    after_gain = valve.read(0x2100, 5)
+    assert after_gain == pytest.approx(0.3 * FULL, abs=8)
+    assert valve.signal("process_actual") == pytest.approx(after_gain, abs=0.5)  # lin. off
+    valve.write(0x2008, 0, 1)
+    valve.advance(0.002)
+    expected = np.interp(after_gain, xs, ys)
+    assert valve.signal("process_actual") == pytest.approx(expected, abs=1)
+    assert valve.read(0x2100, 6) == pytest.approx(expected, abs=1)
+
+
+def captured_process_controller(kp: int, ki: int) -> np.ndarray:
+    valve = e04_with_sensor(0.0, kp=(0x2021, 1, kp), ki=(0x2021, 2, ki), t1=(0x2021, 4, 0))
+    valve.capture_start(["process_deviation", "position_setpoint"])
+    valve.set_input("setpoint", 1.0)
+    valve.advance(0.02)
+    return valve.capture_read()
+
+
+def test_process_pidt1_proportional_part():
+    data = captured_process_controller(250, 0)
+    e, w = data[:, 0], data[:, 1]
+    assert e[-1] == pytest.approx(FULL / 10, abs=8)
+    assert w == pytest.approx(2.5 * e)  # the process controller's output is the spool setpoint
+
+
+def test_process_pidt1_integral_part():
+    data = captured_process_controller(0, 500)
+    e, w = data[:, 0], data[:, 1]
+    assert e[-1] > 1000
+    assert np.diff(w) == pytest.approx(50.0 * CYCLE * e[1:])
