@@ -130,6 +130,30 @@ def test_changing_channels_or_rate_while_running_restarts_cleanly(scope, conn):
     assert scope.capture.rate_hz == 500
 
 
+def test_changing_the_time_window_while_running_restarts_cleanly(scope, conn):
+    scope.preselect("demand")
+    scope.start()
+    conn.samples_received.emit(np.zeros((100, 1)))
+    scope.controls.pause.click()  # a held display is released by the restart
+    old = scope.capture
+    stops = conn.stream_stops
+    scope.controls.time_window.setCurrentIndex(scope.controls.time_window.findData(0.5))
+    assert conn.streams == [(["demand"], 5000)] * 2
+    assert conn.stream_stops == stops + 1
+    assert scope.capture is not old and scope.capture.buffer.total == 0
+    assert scope.display.engine.window == 2500
+    assert not scope.display.frozen and not scope.controls.pause.isChecked()
+    conn.samples_received.emit(np.ones((10, 1)))
+    assert scope.capture.buffer.total == 10
+
+
+def test_changing_the_time_window_while_stopped_starts_nothing(scope, conn):
+    scope.preselect("demand")
+    scope.controls.time_window.setCurrentIndex(scope.controls.time_window.findData(2.0))
+    assert conn.streams == []
+    assert scope.controls.window_s() == 2.0
+
+
 def test_single_trigger_holds_the_captured_step(scope, conn):
     scope.preselect("demand")
     scope.preselect("position_actual")

@@ -96,7 +96,7 @@ class ScopeWidget(QWidget):
         c.stop_requested.connect(self.stop)
         c.pause_toggled.connect(self._on_pause_toggled)
         c.rate_changed.connect(self._on_rate_changed)
-        c.window_changed.connect(self._on_trigger_changed)
+        c.window_changed.connect(self._on_window_changed)
         c.trigger_changed.connect(self._on_trigger_changed)
         c.cursors_toggled.connect(self.plot.set_cursors_visible)
         c.same_scale_toggled.connect(self.plot.set_same_scale)
@@ -215,6 +215,13 @@ class ScopeWidget(QWidget):
     def _on_rate_changed(self, _rate: int) -> None:
         if self._running and self.display.capture is not None:
             self._start_capture(self.display.capture.keys)
+
+    def _on_window_changed(self, _window_s: float) -> None:
+        """A new time window: a running capture restarts cleanly, like a new rate."""
+        if self._running and self.display.capture is not None:
+            self._start_capture(self.display.capture.keys)
+        else:
+            self._on_trigger_changed()
 
     def _on_trigger_changed(self, *_: object) -> None:
         self._new_engine()
