@@ -2,9 +2,10 @@
 
 One worker thread owns the session; the GUI thread only queues jobs (go online, write, upload,
 …) and receives results as signals, so the GUI never blocks on the valve. Between jobs the
-worker polls the valve: status (≈ 2 Hz), read-only live values, watched measuring points
-(≈ 4 Hz) and the oscilloscope stream. A communication error ends the session: the connection
-reports ``lost`` and is offline afterwards. QtCore only; the device layer is imported lazily.
+worker polls the valve on its own schedule, whether or not jobs keep arriving: the
+oscilloscope stream (every 20 ms), status and read-only live values (≈ 2 Hz) and watched
+measuring points (≈ 7 Hz). A communication error ends the session: the connection reports
+``lost`` and is offline afterwards. QtCore only; the device layer is imported lazily.
 """
 
 from __future__ import annotations
@@ -21,16 +22,12 @@ from typing import Any
 from PySide6.QtCore import QObject, Qt, Signal
 
 from prm9tool.errors import CommunicationError, Prm9Error
-from prm9tool.polling import Poller
+from prm9tool.polling import Poller, Schedule
 
 log = logging.getLogger(__name__)
 
 Opener = Callable[[object], Any]  # entry -> ValveSession
 Lister = Callable[[Sequence[str]], list[Any]]  # emulator specs -> [DeviceEntry]
-STATUS_PERIOD_S = 0.5
-SIGNAL_PERIOD_S = 0.15
-IDLE_TICK_S = 0.05
-STREAM_TICK_S = 0.02
 PROGRESS_PERIOD_S = 0.05
 
 
@@ -62,6 +59,7 @@ class ValveConnection(QObject):
     busy_changed = Signal(bool)
     write_failed = Signal(list)  # mnemonics whose write failed (the valve state is unknown)
     backup_written = Signal(str)  # path of the backup taken before the first upload
+    samples_lost_changed = Signal(int)  # samples the oscilloscope stream lost since it started
     _posted = Signal(object)  # a callable the GUI thread runs (results of the worker)
 
     def __init__(
@@ -83,6 +81,7 @@ class ValveConnection(QObject):
         self._last_progress = 0.0
         self._poller = Poller()  # worker-side state of the periodic reads
         self._stream_keys: list[str] = []  # GUI-side: keys of the running stream
+        self._samples_lost = 0  # GUI-side: lost samples of the running stream
         self._posted.connect(self._on_posted, Qt.ConnectionType.QueuedConnection)
 
     # --- state --------------------------------------------------------------------------------
@@ -105,6 +104,12 @@ class ValveConnection(QObject):
     def streaming_keys(self) -> list[str]:
         """The measuring points of the running stream ([] when none runs)."""
         return list(self._stream_keys)
+
+    @property
+    def samples_lost(self) -> int:
+        """Samples the running oscilloscope stream lost since it started (gaps in its sequence
+        numbers: the link or the host could not keep up); 0 when no stream runs."""
+        return self._samples_lost
 
     def list_devices(self, emulators: Sequence[str] = ()) -> list[Any]:
         """Connected valves plus the emulated valves ``emulators`` ("TYPEKEY[:SERIAL]")."""
@@ -265,25 +270,37 @@ class ValveConnection(QObject):
         self.busy_changed.emit(False)
         if self._stream_keys:
             self._stream_keys = []
+            self._set_samples_lost(0)
             self.stream_stopped.emit()
         self.device_changed.emit(None)
         self.online_changed.emit(False)
 
     def _on_stream_started(self, keys: object) -> None:
         self._stream_keys = list(keys)  # type: ignore[call-overload]
+        self._set_samples_lost(0)
         self.stream_started.emit(self._stream_keys)
 
     def _on_stream_stopped(self, _result: object) -> None:
         self._stream_keys = []
+        self._set_samples_lost(0)
         self.stream_stopped.emit()
+
+    def _set_samples_lost(self, count: int) -> None:
+        if count != self._samples_lost:
+            self._samples_lost = count
+            self.samples_lost_changed.emit(count)
 
     # --- worker thread -------------------------------------------------------------------------
     def _worker_main(self) -> None:
-        next_status = next_signals = 0.0
+        schedule = Schedule()
         while True:
-            tick = STREAM_TICK_S if self._poller.stream_keys else IDLE_TICK_S
+            streaming = bool(self._poller.stream_keys)
+            # offline there is nothing to read: wait for the next job
+            wait = (
+                schedule.wait_s(time.monotonic(), streaming) if self._session is not None else None
+            )
             try:
-                job = self._jobs.get(timeout=tick)
+                job = self._jobs.get(timeout=wait)
             except queue.Empty:
                 job = _IDLE
             if job is None:
@@ -291,16 +308,10 @@ class ValveConnection(QObject):
                 return
             if job is not _IDLE:
                 self._execute(job)
-                continue
-            if self._session is None:
-                continue
-            now = time.monotonic()
-            poll_status, poll_signals = now >= next_status, now >= next_signals
-            if poll_status:
-                next_status = now + STATUS_PERIOD_S
-            if poll_signals:
-                next_signals = now + SIGNAL_PERIOD_S
-            self._guarded(functools.partial(self._poll, poll_status, poll_signals))
+            if self._session is not None:
+                due = schedule.take_due(time.monotonic(), bool(self._poller.stream_keys))
+                if any(due):
+                    self._guarded(functools.partial(self._poll, *due))
 
     def _execute(self, job: _Job) -> None:
         def run() -> None:
@@ -368,11 +379,14 @@ class ValveConnection(QObject):
         self._last_progress = now
         self._post(lambda: self.progress.emit(done, total, step))
 
-    def _poll(self, status: bool, signals: bool) -> None:
-        result = self._poller.poll(self._session, status, signals)
+    def _poll(self, stream: bool, status: bool, signals: bool) -> None:
+        result = self._poller.poll(self._session, status, signals, stream)
         if result.samples is not None:
             samples = result.samples
             self._post(lambda: self.samples_received.emit(samples))
+        if result.samples_lost is not None:
+            lost = result.samples_lost
+            self._post(lambda: self._set_samples_lost(lost) if self._stream_keys else None)
         if result.status is not None:
             valve_status = result.status
             self._post(lambda: self.status_changed.emit(valve_status))

@@ -1,5 +1,5 @@
-"""What the connection's worker thread reads between jobs: status, live values, measuring
-points and the oscilloscope stream. Runs in the worker thread only; no Qt.
+"""What the connection's worker thread reads between jobs, and when: status, live values,
+measuring points and the oscilloscope stream. Runs in the worker thread only; no Qt.
 """
 
 from __future__ import annotations
@@ -20,6 +20,9 @@ if TYPE_CHECKING:
 log = logging.getLogger(__name__)
 WATCH_RATE_HZ = 250  # the slow stream that refreshes the diagram's measuring points
 HIDDEN_GROUPS = ("canopen_comm", "profile_types", "service")
+STREAM_PERIOD_S = 0.02  # the oscilloscope stream is drained this often
+STATUS_PERIOD_S = 0.5  # status and read-only live values
+SIGNAL_PERIOD_S = 0.15  # the diagram's measuring points
 
 
 @dataclass
@@ -30,6 +33,7 @@ class PollResult:
     live: dict[str, int | str] = field(default_factory=dict)
     signals: dict[str, float] = field(default_factory=dict)
     samples: np.ndarray | None = None  # (n, channels) raw block of the running stream
+    samples_lost: int | None = None  # lost samples of the running stream, when the count changed
 
 
 def variant_of(info: object) -> Variant | None:
@@ -63,6 +67,7 @@ class Poller:
         self._watch_chunk: list[str] = []
         self._watch_index = 0
         self._signal_keys: set[str] = set()
+        self._lost_reported = 0
 
     def reset(self, info: object) -> None:
         """A session to the valve ``info`` was opened."""
@@ -84,6 +89,7 @@ class Poller:
             session.stream_stop()
         session.stream_start(keys, rate_hz)
         self.stream_keys = list(keys)
+        self._lost_reported = 0
         return self.stream_keys
 
     def stop_stream(self, session: Any) -> None:
@@ -93,14 +99,17 @@ class Poller:
             session.stream_stop()
 
     # --- polling ----------------------------------------------------------------------------------
-    def poll(self, session: Any, status: bool, signals: bool) -> PollResult:
+    def poll(self, session: Any, status: bool, signals: bool, stream: bool = True) -> PollResult:
         """Read what is due; communication errors propagate (the link is lost)."""
         result = PollResult()
-        if self.stream_keys:
+        if stream and self.stream_keys:
             block = session.stream_read()
             if len(block):
                 self._last_row = dict(zip(self.stream_keys, map(float, block[-1]), strict=False))
                 result.samples = block
+            lost = int(getattr(session, "samples_lost", 0))
+            if lost != self._lost_reported:
+                self._lost_reported = result.samples_lost = lost
         if status:
             result.status = session.status()
             result.live = self._read_live(session)
@@ -155,3 +164,33 @@ class Poller:
         if self._watch_chunk:
             self._watch_chunk = []
             session.stream_stop()
+
+
+class Schedule:
+    """When the worker's periodic reads are due next (worker thread only).
+
+    The reads run on their own clock, between jobs: a steady flow of jobs (a setpoint
+    generator writing every few milliseconds) delays a due read by one job at most.
+    """
+
+    def __init__(self) -> None:
+        self.next_stream = self.next_status = self.next_signals = 0.0
+
+    def wait_s(self, now: float, streaming: bool) -> float:
+        """How long the worker may wait for a job before a read is due."""
+        due = min(self.next_status, self.next_signals)
+        if streaming:
+            due = min(due, self.next_stream)
+        return max(0.0, due - now)
+
+    def take_due(self, now: float, streaming: bool) -> tuple[bool, bool, bool]:
+        """(stream, status, signals): which reads are due now; they are scheduled again."""
+        stream = streaming and now >= self.next_stream
+        status, signals = now >= self.next_status, now >= self.next_signals
+        if stream:
+            self.next_stream = now + STREAM_PERIOD_S
+        if status:
+            self.next_status = now + STATUS_PERIOD_S
+        if signals:
+            self.next_signals = now + SIGNAL_PERIOD_S
+        return stream, status, signals

@@ -2,10 +2,15 @@
 
 from __future__ import annotations
 
+from types import SimpleNamespace
+
+import numpy as np
 import pytest
 from gui_support import E02, E04_CA, emulator_connection
+from PySide6.QtCore import QTimer
 
 from prm9tool import backup
+from prm9tool.connection import ValveConnection
 from prm9tool.device import factory
 from prm9tool.device.transport.emulator import LinkFaults
 
@@ -169,3 +174,90 @@ def test_a_second_go_online_while_connecting_is_refused(qtbot, connection):
         connection.go_online(entry)
     assert failed and "busy" in failed[0][0]
     assert not connection.is_busy
+
+
+class _FakeSession:
+    """A session whose stream yields one row per read; it logs what the worker did, in order."""
+
+    def __init__(self) -> None:
+        self.info = SimpleNamespace(type_key=E02, serial=7, firmware="1.0", device_id="fake:7")
+        self.log: list[str] = []
+        self.samples_lost = 0
+        self.keys: list[str] = []
+
+    def identify(self) -> object:
+        return self.info
+
+    def write_many(self, values: dict) -> None:
+        self.log.append("write")
+
+    def stream_start(self, keys: list[str], rate_hz: int) -> None:
+        self.keys = list(keys)
+
+    def stream_read(self) -> np.ndarray:
+        self.log.append("read")
+        return np.ones((1, len(self.keys)))
+
+    def stream_stop(self) -> None:
+        self.keys = []
+
+    def status(self) -> object:
+        return SimpleNamespace(device_state="ok")
+
+    def read_many(self, names: list[str]) -> dict:
+        return {}
+
+    def close(self) -> None:
+        pass
+
+
+@pytest.fixture
+def fake():
+    session = _FakeSession()
+    conn = ValveConnection(opener=lambda _entry: session, lister=lambda _specs: [])
+    yield conn, session
+    conn.shutdown()
+
+
+def _online_with_stream(qtbot, connection):
+    with qtbot.waitSignal(connection.online_changed, timeout=TIMEOUT):
+        connection.go_online("fake:7")
+    with qtbot.waitSignal(connection.stream_started, timeout=TIMEOUT):
+        connection.start_stream(["demand"], 1000)
+
+
+def test_samples_keep_flowing_while_writes_arrive_every_10_ms(qtbot, fake):
+    """A setpoint generator writes faster than the stream period: the stream must not starve."""
+    connection, session = fake
+    _online_with_stream(qtbot, connection)
+    blocks = _record(connection.samples_received)
+    writes = 0
+
+    def write() -> None:
+        nonlocal writes
+        writes += 1
+        connection.write("LIMTA", 1000 + writes)
+
+    timer = QTimer()
+    timer.timeout.connect(write)
+    timer.start(10)
+    qtbot.waitUntil(lambda: writes >= 60, timeout=TIMEOUT)
+    received_while_writing = len(blocks)
+    timer.stop()
+    qtbot.waitUntil(lambda: session.log.count("write") == writes, timeout=TIMEOUT)
+    last_write = len(session.log) - 1 - session.log[::-1].index("write")
+    reads_between_writes = session.log[:last_write].count("read")
+    assert reads_between_writes >= 10, session.log
+    assert received_while_writing >= 10
+
+
+def test_lost_samples_of_the_stream_are_reported_and_cleared_on_stop(qtbot, fake):
+    connection, session = fake
+    _online_with_stream(qtbot, connection)
+    assert connection.samples_lost == 0
+    with qtbot.waitSignal(connection.samples_lost_changed, timeout=TIMEOUT) as lost:
+        session.samples_lost = 30
+    assert lost.args == [30] and connection.samples_lost == 30
+    with qtbot.waitSignal(connection.samples_lost_changed, timeout=TIMEOUT) as cleared:
+        connection.stop_stream()
+    assert cleared.args == [0] and connection.samples_lost == 0
