@@ -301,3 +301,12 @@ def test_canopen_window_of_the_toolbar_is_gated_by_the_access_level(qtbot, tmp_p
         assert window.doc.value("CANTERM") == 0
         window.access.set_level(Access.EXPERT)
         assert canopen.terminator.isEnabled()
+
+
+def test_status_bar_shows_lost_stream_samples_only_while_there_are_some(window):
+    label = window.status.lost_label
+    assert label.isHidden()
+    window.connection.samples_lost_changed.emit(120)
+    assert not label.isHidden() and label.text() == "120 sample(s) lost"
+    window.connection.samples_lost_changed.emit(0)
+    assert label.isHidden()

@@ -1107,6 +1107,18 @@
             <source>untitled</source>
             <translation>nepojmenovaná</translation>
         </message>
+        <message numerus="yes">
+            <source>%n sample(s) lost</source>
+            <translation>
+                <numerusform>%n vzorek ztracen</numerusform>
+                <numerusform>%n vzorky ztraceny</numerusform>
+                <numerusform>%n vzorků ztraceno</numerusform>
+            </translation>
+        </message>
+        <message>
+            <source>The oscilloscope stream lost samples: the USB link or the computer could not keep up. The curves have gaps there.</source>
+            <translation>Osciloskopu se ztratily vzorky: spojení USB nebo počítač nestíhaly. Křivky mají v těchto místech mezery.</translation>
+        </message>
     </context>
     <context>
         <name>MainWindow</name>

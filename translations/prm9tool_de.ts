@@ -1105,6 +1105,17 @@
             <source>untitled</source>
             <translation>unbenannt</translation>
         </message>
+        <message numerus="yes">
+            <source>%n sample(s) lost</source>
+            <translation>
+                <numerusform>%n Messwert verloren</numerusform>
+                <numerusform>%n Messwerte verloren</numerusform>
+            </translation>
+        </message>
+        <message>
+            <source>The oscilloscope stream lost samples: the USB link or the computer could not keep up. The curves have gaps there.</source>
+            <translation>Dem Oszilloskop sind Messwerte verloren gegangen: Die USB-Verbindung oder der Computer kam nicht nach. Die Kurven haben dort Lücken.</translation>
+        </message>
     </context>
     <context>
         <name>MainWindow</name>

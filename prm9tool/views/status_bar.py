@@ -18,6 +18,9 @@ class MainStatusBar(QStatusBar):
         self.firmware_label = QLabel()
         self.type_key_label = QLabel()
         self.file_label = QLabel()
+        self.lost_label = QLabel()  # shown only while the oscilloscope stream loses samples
+        self.lost_label.hide()
+        self.addPermanentWidget(self.lost_label)
         for label in self.labels():
             label.setFrameShape(QFrame.Shape.StyledPanel)
             label.setContentsMargins(6, 0, 6, 0)
@@ -27,6 +30,7 @@ class MainStatusBar(QStatusBar):
         self._firmware = ""
         self._path: Path | None = None
         self._modified = False
+        self._lost = 0
         self.retranslate()
 
     def labels(self) -> list[QLabel]:
@@ -57,6 +61,11 @@ class MainStatusBar(QStatusBar):
         self._firmware = firmware
         self.retranslate()
 
+    def set_samples_lost(self, count: int) -> None:
+        """Show how many samples the running oscilloscope stream lost (hidden while none)."""
+        self._lost = count
+        self.retranslate()
+
     def set_type_key(self, type_key: str) -> None:
         """Show the valve type of the document."""
         self.type_key_label.setText(type_key)
@@ -76,6 +85,14 @@ class MainStatusBar(QStatusBar):
         name = self._path.name if self._path is not None else self.tr("untitled")
         self.file_label.setText(f"{name} *" if self._modified else name)
         self.file_label.setToolTip(str(self._path) if self._path is not None else "")
+        self.lost_label.setText(self.tr("%n sample(s) lost", "", self._lost))
+        self.lost_label.setToolTip(
+            self.tr(
+                "The oscilloscope stream lost samples: the USB link or the computer could not "
+                "keep up. The curves have gaps there."
+            )
+        )
+        self.lost_label.setVisible(self._lost > 0)
 
     def changeEvent(self, event: QEvent) -> None:
         """Retranslate when the program language changes."""
