@@ -13,16 +13,19 @@ the loop alone; for the process loop (E04) the deviation gain/offset stay, they 
 
 from __future__ import annotations
 
+import math
 import threading
 from collections.abc import Mapping
 from dataclasses import dataclass
 from typing import TYPE_CHECKING
 
+import numpy as np
 from PySide6.QtCore import QCoreApplication, QObject, Signal
 
 from prm9tool.catalogue import CATALOGUE
 from prm9tool.document import ParameterDocument
 from prm9tool.errors import Prm9Error
+from prm9tool.scope.measure import step_figures
 from prm9tool.signals import BY_KEY
 from prm9tool.typekey import TypeKey
 
@@ -65,7 +68,7 @@ class StepFigures:
 
     overshoot_pct: float
     rise_time_s: float | None  # 10 → 90 % of the step; None if never reached
-    settling_time_s: float | None  # into ±2 % of the step for good; None if not settled
+    settling_time_s: float | None  # into ±2 % of the final value for good; None if not settled
     steady_error_pct: float
 
 
@@ -81,23 +84,23 @@ class StepResponse:
     step_pct: float
 
     def figures(self) -> StepFigures:
-        """Overshoot, rise time, settling time and steady-state error relative to the step."""
-        after = [(t, a) for t, a in zip(self.t, self.actual, strict=True) if t >= 0.0]
-        step = self.step_pct
-        start = self.actual[0] if self.actual else 0.0
-        rel = [(t, (a - start) / step) for t, a in after]
-        peak = max((r for _t, r in rel), default=0.0)
-        t10 = next((t for t, r in rel if r >= 0.1), None)
-        t90 = next((t for t, r in rel if r >= 0.9), None)
-        rise = t90 - t10 if t10 is not None and t90 is not None else None
-        outside = [t for t, r in rel if abs(r - 1.0) > 0.02]
-        settled = (
-            None
-            if not rel or (outside and outside[-1] == rel[-1][0])
-            else (outside[-1] if outside else 0.0)
+        """Overshoot, rise time, settling time and steady-state error relative to the step.
+
+        The oscilloscope's definitions (:func:`prm9tool.scope.step_figures`, reference = the
+        simulated setpoint), so the controller dialog and the scope give the same figures.
+        """
+        t = np.asarray(self.t)
+        measured = step_figures(t, np.asarray(self.actual), np.asarray(self.setpoint))
+        if measured is None:  # the actual value did not move at all
+            return StepFigures(0.0, None, None, 100.0)
+        step = measured.target - measured.initial
+        error = measured.steady_state_error / step * 100.0 if step else math.nan
+        return StepFigures(
+            measured.overshoot,
+            None if math.isnan(measured.rise_time) else measured.rise_time,
+            None if math.isnan(measured.settling_time) else measured.settling_time,
+            error,
         )
-        final = rel[-1][1] if rel else 0.0
-        return StepFigures(max(0.0, (peak - 1.0) * 100.0), rise, settled, (1.0 - final) * 100.0)
 
     def summary(self) -> str:
         """One line for the dialog: overshoot, rise time, settling time, remaining error."""

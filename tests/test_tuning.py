@@ -2,9 +2,13 @@
 
 from __future__ import annotations
 
+import math
+
+import numpy as np
 import pytest
 
 from prm9tool.catalogue import CATALOGUE
+from prm9tool.scope import step_figures
 from prm9tool.tuning import StepResponse, StepSimulator, simulate_step, simulation_values
 from prm9tool.typekey import TypeKey
 
@@ -51,17 +55,31 @@ def test_the_chain_in_front_of_the_loop_is_made_transparent():
 
 def test_step_figures():
     t = tuple(i * 0.001 for i in range(-5, 100))
+    stepped = tuple(0.0 if x < 0 else 50.0 for x in t)
     ideal = tuple(0.0 if x < 0 else min(50.0, x * 5000.0) for x in t)
-    figures = StepResponse("position", {}, t, (50.0,) * len(t), ideal, 50.0).figures()
+    figures = StepResponse("position", {}, t, stepped, ideal, 50.0).figures()
     assert figures.overshoot_pct == 0.0
     assert figures.rise_time_s == pytest.approx(0.008, abs=0.0015)
     assert figures.steady_error_pct == pytest.approx(0.0)
-    ringing = tuple(
-        0.0 if x < 0 else 50.0 + (30.0 if int(x * 1000) % 20 < 10 else -30.0) for x in t
-    )
-    figures = StepResponse("position", {}, t, (50.0,) * len(t), ringing, 50.0).figures()
-    assert figures.overshoot_pct == pytest.approx(60.0)
+    ringing = tuple(0.0 if x < 0 else 50.0 + 30.0 * math.sin(2 * math.pi * x / 0.02) for x in t)
+    figures = StepResponse("position", {}, t, stepped, ringing, 50.0).figures()
+    assert figures.overshoot_pct > 50.0
     assert figures.settling_time_s is None
+    flat = StepResponse("position", {}, t, stepped, (0.0,) * len(t), 50.0).figures()
+    assert (flat.rise_time_s, flat.steady_error_pct) == (None, 100.0)
+
+
+def test_the_dialog_and_the_scope_measure_a_step_alike():
+    t = tuple(i * 0.0002 for i in range(-25, 500))
+    setpoint = tuple(0.0 if x < 0 else 50.0 for x in t)
+    actual = tuple(0.0 if x < 0 else 48.0 * (1 - math.exp(-x / 0.005)) for x in t)
+    figures = StepResponse("position", {}, t, setpoint, actual, 50.0).figures()
+    scope = step_figures(np.array(t), np.array(actual), np.array(setpoint))
+    assert scope is not None
+    assert figures.rise_time_s == pytest.approx(scope.rise_time)
+    assert figures.rise_time_s == pytest.approx(0.005 * math.log(9), abs=0.0002)
+    assert figures.settling_time_s == pytest.approx(scope.settling_time)
+    assert figures.steady_error_pct == pytest.approx(4.0, abs=0.01)  # 2 of 50 % left
 
 
 def test_the_simulator_runs_off_the_gui_thread_and_the_newest_request_wins(qtbot):
