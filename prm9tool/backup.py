@@ -16,6 +16,7 @@ from datetime import datetime
 from pathlib import Path
 from typing import Any
 
+from prm9tool.errors import FileFormatError, FileProblem
 from prm9tool.prmfile import PrmContents, write_file
 from prm9tool.typekey import TypeKey
 
@@ -52,7 +53,11 @@ def write_backup(
     key = TypeKey.parse(type_key)
     stamp = datetime.now().strftime("%Y%m%d-%H%M%S")
     path = backup_dir(serial) / f"{str(key).replace('/', '_')}_{serial}_{stamp}.prm"
-    path.parent.mkdir(parents=True, exist_ok=True)
+    try:
+        path.parent.mkdir(parents=True, exist_ok=True)
+    except OSError as exc:
+        problem = FileProblem(0, f"cannot create the backup folder: {exc.strerror or exc}")
+        raise FileFormatError(str(path.parent), [problem]) from exc
     contents = PrmContents(key, dict(values), serial, firmware or None)
     write_file(contents, path, backup=False)
     return path

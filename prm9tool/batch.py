@@ -11,6 +11,7 @@ import argparse
 import sys
 from collections.abc import Mapping
 from concurrent.futures import ThreadPoolExecutor
+from pathlib import Path
 
 from prm9tool.backup import ensure_backup, existing_backups
 from prm9tool.batch_report import ProgressPrinter, Stopwatch, ValveRecord, overall, write_report
@@ -23,7 +24,7 @@ from prm9tool.device.factory import (
     usb_entries,
     usb_unavailable_reason,
 )
-from prm9tool.device.session import ValveSession
+from prm9tool.device.session import ValveSession, reload_outcome
 from prm9tool.errors import CommunicationError, FileFormatError, Prm9Error, TypeKeyError
 from prm9tool.prmfile import PrmContents, read_file, write_file
 from prm9tool.typekey import TypeKey
@@ -49,12 +50,12 @@ def run(args: argparse.Namespace) -> int:
     except BatchError as exc:
         print(f"prm9tool: {exc}", file=sys.stderr)
         code = exc.code
-    if args.report and not args.list_devices:
+    if args.report and not args.list_devices and Path(args.report).parent.is_dir():
         try:
             write_report(args.report, mode, args.batch or args.download, code, records)
         except OSError as exc:
             print(f"prm9tool: cannot write the report {args.report}: {exc}", file=sys.stderr)
-            return max(code, ExitCode.USAGE)
+            return int(code) if code != ExitCode.OK else ExitCode.USAGE  # keep a valve's outcome
     return int(code)
 
 
@@ -73,6 +74,9 @@ def _check_usage(args: argparse.Namespace) -> None:
         raise BatchError(ExitCode.USAGE, "--batch needs FILE.prm (or --download OUT.prm)")
     if args.download and (args.all or len(args.device) + len(args.emulator) > 1):
         raise BatchError(ExitCode.USAGE, "--download saves one valve: select exactly one")
+    if args.report and not Path(args.report).parent.is_dir():
+        folder = Path(args.report).parent
+        raise BatchError(ExitCode.USAGE, f"--report {args.report}: there is no folder {folder}")
     for spec in args.emulator:
         try:
             parse_emulator_spec(spec)
@@ -223,7 +227,12 @@ class _UploadJob:
             return
         self.printer.say(who, f"{record.type_key}, firmware {record.firmware}: backing up")
         record.failed_step = "backup"
-        new_backup = ensure_backup(session, self.printer.callback(who))
+        try:
+            new_backup = ensure_backup(session, self.printer.callback(who))
+        except FileFormatError as exc:
+            raise Prm9Error(
+                f"the backup could not be written, nothing was uploaded: {exc}"
+            ) from exc
         backups = existing_backups(record.serial)
         latest = new_backup or (backups[-1] if backups else None)
         record.backup = str(latest) if latest else None
@@ -237,8 +246,9 @@ class _UploadJob:
             m: {"expected": want, "actual": got} for m, (want, got) in result.mismatches.items()
         }
         record.result = "ok" if result.stored else "verification-failed"
-        if result.mismatches:
-            record.error = _mismatch_text(result.failed_step, result.mismatches)
+        if not result.stored:
+            problem = _mismatch_text(result.failed_step, result.mismatches)
+            record.error = f"{problem}; {reload_outcome(result.reload_error)}"
 
 
 def _mismatch_text(step: str | None, mismatches: Mapping[str, tuple[object, object]]) -> str:

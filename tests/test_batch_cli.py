@@ -8,6 +8,7 @@ from __future__ import annotations
 
 import json
 import os
+import re
 import subprocess
 import sys
 from pathlib import Path
@@ -72,8 +73,19 @@ def test_parallel_upload_with_report_and_backups(tmp_path):
         assert backup.parent == tmp_path / "data" / "backups" / str(record["serial"])
         factory = PrmContents.factory(TypeKey.parse(E04)).values
         assert read_file(backup).values == factory  # taken before the upload
+    total = 2 * len(read_file(source).values) + 1  # write + verify each, then store
     for serial in (21, 22, 23):
-        assert f"[{serial}] write" in result.stderr and f"[{serial}] ok" in result.stderr
+        lines = [line for line in result.stderr.splitlines() if line.startswith(f"[{serial}] ")]
+        steps = [
+            re.fullmatch(rf"\[{serial}\] (\w+) +(\d+) % \((\d+)/(\d+)\)", line) for line in lines
+        ]
+        shown = [(m[1], int(m[2]), int(m[3]), int(m[4])) for m in steps if m]
+        assert [s for s, *_ in shown if s != "download"] == sorted(
+            (s for s, *_ in shown if s != "download"), key=["write", "verify", "store"].index
+        )
+        assert {"write", "verify"} <= {s for s, *_ in shown}
+        assert shown[-1] == ("store", 100, total, total)
+        assert re.fullmatch(rf"\[{serial}\] ok \(\d+\.\d\d s\)", lines[-1])
 
 
 def test_upload_in_one_process_download_in_the_next(tmp_path):
@@ -108,6 +120,7 @@ def test_verification_failure_exits_1(tmp_path):
         "verify",
     )
     assert "read back differently, nothing was stored" in record["error"]
+    assert "working parameters were reset to its stored ones" in record["error"]
     assert record["mismatches"]
 
 
@@ -174,6 +187,7 @@ def test_communication_error_exits_6_and_names_the_step(tmp_path):
     assert (second["result"], second["failed_step"]) == ("communication-error", "write")
     assert "upload failed while writing the parameters (step 1 of 3)" in second["error"]
     assert "nothing was stored" in second["error"]
+    assert "restart the valve, hydraulics off" in second["error"]  # the link is gone: no reload
 
 
 def test_list_devices(tmp_path):
@@ -245,3 +259,68 @@ def test_every_parameter_of_the_report_schema_is_present(tmp_path):
     documented = (Path(__file__).parents[1] / "docs" / "batch.md").read_text(encoding="utf-8")
     for name in record:
         assert f"`{name}`" in documented, f"report field {name} is not documented"
+
+
+def test_several_valves_without_a_selection_exit_2(tmp_path):
+    source = tuned_file(tmp_path)
+    result = run(tmp_path, "--batch", str(source), fake_hid=f"{E04},71;{E04},72")
+    assert result.returncode == 2
+    assert "2 valves are connected: choose with --device or --all" in result.stderr
+    result = run(tmp_path, "--batch", str(source), "--device", "72", fake_hid=f"{E04},71;{E04},72")
+    assert result.returncode == 0, result.stderr
+
+
+def test_unwritable_backup_exits_6_and_uploads_nothing(tmp_path):
+    source = tuned_file(tmp_path)
+    (tmp_path / "data").mkdir()
+    (tmp_path / "data" / "backups").write_text("not a folder")
+    args = ("--batch", str(source), "--emulator", f"{E04}:12", "--report", "r.json")
+    result = run(tmp_path, *args)
+    assert result.returncode == 6, result.stderr
+    assert "Traceback" not in result.stderr
+    record = report(tmp_path, "r.json")["valves"][0]
+    assert (record["result"], record["failed_step"], record["backup"]) == (
+        "communication-error",
+        "backup",
+        None,
+    )
+    assert "the backup could not be written, nothing was uploaded" in record["error"]
+    assert not (tmp_path / "data" / "emulator" / "12.json").exists()  # nothing stored
+
+
+def test_report_folder_is_checked_before_any_valve(tmp_path):
+    source = tuned_file(tmp_path)
+    args = ("--batch", str(source), "--emulator", f"{E04}:13", "--report", "no/such/r.json")
+    result = run(tmp_path, *args)
+    assert result.returncode == 2
+    assert "--report no/such/r.json: there is no folder no/such" in result.stderr
+    assert not (tmp_path / "data" / "emulator").exists()
+
+
+def test_unwritable_report_after_a_good_run_exits_2(tmp_path):
+    source = tuned_file(tmp_path)
+    (tmp_path / "r.json").mkdir()  # a folder where the report should go
+    result = run(tmp_path, "--batch", str(source), "--emulator", f"{E04}:14", "--report", "r.json")
+    assert result.returncode == 2
+    assert "cannot write the report r.json" in result.stderr
+
+
+def test_download_failures_exit_6_and_3(tmp_path):
+    args = ("--batch", "--download", "out.prm", "--report", "r.json")
+    result = run(tmp_path, *args, fake_hid=f"{E04},81,unplug_after_out=3")
+    assert result.returncode == 6
+    assert "download failed" in result.stderr and "is gone" in result.stderr
+    assert report(tmp_path, "r.json")["valves"][0]["error"]
+    assert not (tmp_path / "out.prm").exists()
+    (tmp_path / "out.prm").mkdir()  # the output cannot be written
+    result = run(tmp_path, *args, "--emulator", f"{E04}:15")
+    assert result.returncode == 3
+    assert "cannot save out.prm" in result.stderr
+
+
+def test_emulated_serial_of_another_type_exits_2(tmp_path):
+    source = tuned_file(tmp_path)
+    assert run(tmp_path, "--batch", str(source), "--emulator", f"{E04}:16").returncode == 0
+    result = run(tmp_path, "--batch", str(source), "--emulator", f"{E02}:16")
+    assert result.returncode == 2
+    assert f"belongs to a {E04} valve, not to {E02}" in result.stderr
