@@ -335,3 +335,20 @@ def test_render_picture_paints_the_diagram(qtbot):
         if image.pixelColor(QPoint(x, y)) != QColor("white")
     )
     assert inked > 500
+
+
+def test_the_printed_picture_shows_the_parameters_not_the_live_state(qtbot):
+    valve = EmulatedValve(E02)
+    valve.advance(2.0)
+    link = EmulatorConnection(valve)
+    view = make_view(qtbot, E02, Access.BASIC, connection=link)
+    link.go_online()
+    link.poll_signals()
+    assert view.diagram.dots["demand"].value_text  # live on screen
+    assert view.diagram.blocks["valve"].locked and view.diagram.blocks["position_controller"].locked
+    picture = view.picture_scene()
+    assert not any(block.locked for block in picture.blocks.values())
+    assert all(dot.active and dot.value_text == "" for dot in picture.dots.values())
+    for block_id, block in view.diagram.blocks.items():
+        assert picture.blocks[block_id].lines == block.lines
+        assert picture.blocks[block_id].title == block.title

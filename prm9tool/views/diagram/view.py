@@ -152,10 +152,23 @@ class DiagramView(QGraphicsView):
         self.scale(factor, factor)
 
     def render_picture(self, painter: QPainter, target: QRectF) -> None:
-        """Paint the diagram into ``target`` (print / PDF parameter record), aspect kept."""
-        self.diagram.render(
-            painter, target, self.diagram.sceneRect(), Qt.AspectRatioMode.KeepAspectRatio
-        )
+        """Paint the diagram into ``target`` (print / PDF parameter record), aspect kept.
+
+        The picture documents the parameter set: every block in normal ink whatever the
+        access level, the red measuring points without live values (see :meth:`picture_scene`).
+        """
+        scene = self.picture_scene()
+        scene.render(painter, target, scene.sceneRect(), Qt.AspectRatioMode.KeepAspectRatio)
+
+    def picture_scene(self) -> DiagramScene:
+        """A scene of the document's diagram for printing: no grey blocks, no live values."""
+        scene = DiagramScene(layout_for(self._doc.variant))
+        for spec in scene.layout.blocks:
+            title = QCoreApplication.translate(_CTX, spec.title)
+            scene.blocks[spec.id].set_content(title, block_lines(self._doc, spec.id))
+        for dot in scene.dots.values():
+            dot.set_active(True, "")
+        return scene
 
     # --- building ---------------------------------------------------------------------------
     def _build(self) -> None:
