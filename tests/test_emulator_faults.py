@@ -98,6 +98,32 @@ def test_wire_break_below_4_ma_without_injection():
     assert valve.status().error_code == 0x3420
 
 
+def test_sensor_current_below_range_without_injection():
+    valve = EmulatedValve("PRM9-06.3Z11/30-24E04S02")
+    valve.write(0x2005, 1, 2)  # sensor 4…20 mA
+    valve.set_input("sensor_from_plant", 0)
+    valve.set_input("sensor", 12.0)
+    valve.advance(2.2)
+    assert valve.status().active_errors == ()
+    valve.set_input("sensor", 3.7)  # still inside the NE 43 tolerance
+    valve.advance(0.1)
+    assert valve.status().active_errors == ()
+    valve.set_input("sensor", 2.0)
+    valve.advance(0.1)
+    assert valve.status().active_errors == (0x5230,)
+
+
+def test_over_temperature_from_the_ambient_input():
+    valve = EmulatedValve("PRM9-06.3Z11/30-24E02S02")
+    valve.set_input("ambient_temperature", 95.0)
+    valve.advance(2.3)
+    status = valve.status()
+    assert status.warning and status.active_errors == ()
+    valve.set_input("ambient_temperature", 101.0)
+    valve.advance(0.2)
+    assert valve.status().active_errors == (0x4211,)
+
+
 def test_voltage_wire_break_is_not_detectable_and_reads_zero():
     valve = EmulatedValve("PRM9-06.3Z11/30-24E02S02")
     valve.set_input("setpoint", 5.0)
