@@ -3,13 +3,15 @@ duplicated and late reports."""
 
 from __future__ import annotations
 
+import threading
+
 import pytest
 
 from prm9tool.catalogue import CATALOGUE
-from prm9tool.device.emulator import EmulatedValve
-from prm9tool.device.session import ValveSession
+from prm9tool.device.emulator import EmulatedValve, usb_firmware
+from prm9tool.device.session import OperationCancelledError, ValveSession
 from prm9tool.device.transport.emulator import EmulatorTransport, LinkFaults
-from prm9tool.errors import DeviceDisconnectedError, DeviceTimeoutError
+from prm9tool.errors import DeviceDisconnectedError, DeviceTimeoutError, ProtocolError
 from prm9tool.typekey import TypeKey
 
 E04 = "PRM9-06.3Z11/30-24E04S02-CA"
@@ -173,3 +175,56 @@ def test_silent_valve_times_out_after_the_retries(link):
         DeviceTimeoutError, match=r"did not answer READ within 0.25 s \(4 attempts\)"
     ):
         session.read("SNV")
+
+
+class NonsenseTransport(EmulatorTransport):
+    """Replaces the valve's next answer with ``junk`` (a valve that answers nonsense)."""
+
+    junk: bytes | None = None
+
+    def _read(self, timeout_s):
+        report = super()._read(timeout_s)
+        if report is not None and self.junk is not None:
+            report, self.junk = self.junk.ljust(64, b"\x00"), None
+        return report
+
+
+@pytest.mark.parametrize(
+    ("junk", "message"),
+    [
+        (b"\x82\x00\x07", r"the valve sent an invalid report \(result code 7\): 82 \w\w 07 00"),
+        (b"\x42\x01", r"byte 0 = 0x42 is not an answer"),
+        (b"\x82\x00\x00\x05", r"the valve answered 5 values to 1 reads"),
+    ],
+)
+def test_a_valve_answering_nonsense_raises_protocol_error(junk, message):
+    transport = NonsenseTransport(EmulatedValve(E04, 1))
+    session = ValveSession(transport, "emulator:nonsense")
+    seq = transport._seq % 255 + 1  # the answer must carry the request's sequence number
+    transport.junk = junk[:1] + bytes([seq]) + junk[2:] if junk[0] == 0x82 else junk
+    with pytest.raises(ProtocolError, match=message):
+        session.read("SNV")
+    assert session.read("SNV") == 1  # the link itself still works
+
+
+def test_a_valve_that_does_not_know_a_request_is_named(link):
+    _valve, session, transport = link
+    seq = transport._seq % 255 + 1
+    transport.__class__ = NonsenseTransport
+    transport.junk = bytes([0xFF, seq, 0x01, 0x01, 0x00, 0x04, 0x05, 0, 0, 0, 0xFF])
+    with pytest.raises(ProtocolError, match="did not understand request RELOAD"):
+        session.reload()
+
+
+def test_a_valve_of_another_protocol_version_is_refused(monkeypatch):
+    monkeypatch.setattr(usb_firmware, "PROTOCOL_VERSION", 2)
+    with pytest.raises(ProtocolError, match="speaks USB protocol version 2; this prm9tool"):
+        open_session(EmulatedValve(E04, 1))
+
+
+def test_cancelled_download(link):
+    _valve, session, _transport = link
+    cancel = threading.Event()
+    cancel.set()
+    with pytest.raises(OperationCancelledError, match=r"^download cancelled$"):
+        session.download(cancel=cancel)

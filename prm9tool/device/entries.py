@@ -36,7 +36,8 @@ class OperationCancelledError(Prm9Error):
 
     def __init__(self, step: str, outcome: str = "") -> None:
         self.step = step
-        text = f"cancelled while {STEPS.get(step, step)}; nothing was stored"
+        text = f"cancelled while {STEPS[step]}; nothing was stored" if step in STEPS else ""
+        text = text or f"{step} cancelled"
         super().__init__(f"{text}; {outcome}" if outcome else text)
 
 
