@@ -44,6 +44,7 @@ class StreamReceiver:
         decimation = _decimation(rate_hz)
         self._transport.poll_stream()  # forget reports of an earlier stream
         reply = self._call(StreamStart(codes, decimation), StreamStarted)
+        self._transport.drop_stream()  # reports that came before the answer are of the old stream
         self.keys, self.running, self.lost = tuple(keys), True, 0
         self._expected, self._capacity = 0, reply.samples_per_report
 

@@ -90,6 +90,11 @@ class Transport(ABC):
             self._stream.clear()
             return reports
 
+    def drop_stream(self) -> None:
+        """Forget the stream reports received so far, without reading the link."""
+        with self._lock:
+            self._stream.clear()
+
     def close(self) -> None:
         """Close the link (idempotent)."""
         with self._lock:

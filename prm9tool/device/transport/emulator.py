@@ -96,8 +96,10 @@ class EmulatorTransport(Transport):
         self._wait_until(sent)
         if number in self.faults.drop:
             return
-        for _ in range(2 if number in self.faults.duplicate else 1):
-            self._queue(sent + SLOT_S, self.firmware.handle(report))
+        with self.valve.lock:  # what the firmware sent before this request precedes its answer
+            self._collect_stream()
+            for _ in range(2 if number in self.faults.duplicate else 1):
+                self._queue(sent + SLOT_S, self.firmware.handle(report))
 
     def _read(self, timeout_s: float) -> bytes | None:
         deadline = self._now() + timeout_s
