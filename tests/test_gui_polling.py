@@ -1,0 +1,53 @@
+"""The connection's poller against the emulator: measuring points keep their labels."""
+
+from __future__ import annotations
+
+import pytest
+
+from prm9tool.device.emulator import EmulatedValve
+from prm9tool.device.protocol import Op
+from prm9tool.device.session import ValveSession
+from prm9tool.device.transport.emulator import EmulatorTransport
+from prm9tool.polling import Poller
+
+E04_CA = "PRM9-10.3Z11/60-24E04S02-CA"
+WATCHED = ["supply_voltage", "temperature", "current_a", "setpoint_threshold", "setpoint_raw",
+           "demand"]  # fmt: skip
+
+
+@pytest.fixture
+def valve(tmp_path):
+    valve = EmulatedValve(E04_CA, 4712, "2.3.4", nv_path=tmp_path / "nv.json")
+    valve.advance(3.0)  # past the power-up timeline
+    return valve
+
+
+def _valve_runs_before_stream_starts(transport: EmulatorTransport, valve: EmulatedValve) -> None:
+    """The valve's own real-time thread runs on between the host's last stream read and its
+    STREAM_START request: the old stream sends one more report meanwhile."""
+    write = transport._write
+
+    def delayed(report: bytes) -> None:
+        if report[0] == Op.STREAM_START:
+            valve.advance(0.02)
+        write(report)
+
+    transport._write = delayed  # type: ignore[method-assign]
+
+
+def test_watch_stream_values_keep_their_labels_when_the_chunk_changes(valve):
+    transport = EmulatorTransport(valve)
+    _valve_runs_before_stream_starts(transport, valve)
+    supply = valve.signal("supply_voltage")
+    with ValveSession(transport, "emulator:test") as session:
+        poller = Poller()
+        poller.reset(session.info)
+        poller.watched = list(WATCHED)
+        seen: list[dict[str, float]] = []
+        for _ in range(8):
+            seen.append(poller.poll(session, status=False, signals=True).signals)
+            valve.advance(0.15)
+    assert {key for values in seen for key in values} == set(WATCHED)
+    for values in seen:
+        for key, value in values.items():
+            assert (value == pytest.approx(supply, abs=1)) == (key == "supply_voltage"), values
