@@ -5,6 +5,9 @@ The same frames appear in docs/usb-protocol.md; a change here is a protocol chan
 
 from __future__ import annotations
 
+import re
+from pathlib import Path
+
 import numpy as np
 import pytest
 
@@ -236,3 +239,42 @@ def test_segments_split_long_values():
 def test_requests_know_whether_a_retry_is_safe():
     assert ReadEntries(((1, 1),)).idempotent and Store().idempotent
     assert not Restart().idempotent and not SegmentWrite(1, 1, 1, 0, b"x").idempotent
+
+
+DOC = Path(__file__).parents[1] / "docs" / "usb-protocol.md"
+FRAME_LINE = re.compile(r"([→←]) ((?:[0-9a-f]{2}(?: |$))+)(.*)")
+CONTINUATION = re.compile(r"  ((?:[0-9a-f]{2}(?: |$))+)$")
+
+
+def documented_frames() -> list[tuple[str, bytes]]:
+    """The complete example frames of docs/usb-protocol.md (those shortened with … left out)."""
+    frames: list[tuple[str, str, bool]] = []
+    for block in re.findall(r"```\n(.*?)```", DOC.read_text(encoding="utf-8"), re.S):
+        for line in block.splitlines():
+            if match := FRAME_LINE.match(line):
+                frames.append((match[1], match[2], match[3].lstrip().startswith("…")))
+            elif frames and (match := CONTINUATION.match(line)):
+                direction, text, shortened = frames[-1]
+                frames[-1] = (direction, f"{text} {match[1]}", shortened)
+    return [(d, bytes.fromhex(t).ljust(64, b"\x00")) for d, t, short in frames if not short]
+
+
+def test_the_documented_frames_are_valid_and_canonical():
+    frames = documented_frames()
+    assert len(frames) >= 20
+    for direction, report in frames:
+        if direction == "→":
+            seq, request = decode_request(report)
+            assert encode_request(seq, request) == report
+            continue
+        decoded = decode_response(report)
+        if isinstance(decoded, StreamData):
+            assert encode_stream(decoded) == report
+        else:
+            assert encode_response(*decoded) == report, report.hex(" ")
+
+
+def test_every_opcode_is_documented():
+    text = DOC.read_text(encoding="utf-8")
+    for op in Op:
+        assert f"| `0x{op:02X}` | {op.name} |" in text
