@@ -312,6 +312,16 @@ def test_segmented_download_and_toggle_error(rig: Rig):
     rig.exchange("60A 1B E8 03 00 00 00 00 00", "58A 80 17 10 00 00 00 03 05")
 
 
+def test_expedited_download_without_size_takes_the_objects_own_length(rig: Rig):
+    # CiA 301 e = 1, s = 0 ("22"): the data length is not given; the rest is padding
+    rig.exchange("60A 22 17 10 00 F4 01 AA 55", "58A 60 17 10 00 00 00 00 00")
+    assert rig.valve.read(0x1017, 0) == 500
+    rig.exchange("60A 22 00 14 02 FE 12 34 56", "58A 60 00 14 02 00 00 00 00")
+    assert rig.valve.read(0x1400, 2) == 254
+    rig.exchange("60A 22 00 18 01 8B 01 00 00", "58A 60 00 18 01 00 00 00 00")  # U32: all 4
+    assert rig.valve.read(0x1800, 1) == 0x18B
+
+
 def test_stalled_segmented_upload_is_aborted_after_one_second(rig: Rig):
     rig.exchange("60A 40 41 20 00 00 00 00 00", "58A 41 41 20 00 1B 00 00 00")
     rig.exchange("60A 60 00 00 00 00 00 00 00", "58A 00 50 52 4D 39 2D 30 36")

@@ -147,12 +147,24 @@ class SdoServer:
         self._transfer = None
         expedited, size_indicated = bool(data[0] & 0x02), bool(data[0] & 0x01)
         if expedited:
-            length = 4 - ((data[0] >> 2) & 0x03) if size_indicated else 4
+            if size_indicated:
+                length = 4 - ((data[0] >> 2) & 0x03)
+            else:
+                length = self._natural_length(index, subindex)
             self._write(index, subindex, data[4 : 4 + length])
         else:
             size = struct.unpack_from("<I", data, 4)[0] if size_indicated else None
             self._transfer = _Transfer(index, subindex, False, bytearray(), size)
         return struct.pack("<BHBI", RESPONSE_DOWNLOAD, index, subindex, 0)
+
+    def _natural_length(self, index: int, subindex: int) -> int:
+        """Bytes an expedited download without size (CiA 301: e = 1, s = 0) carries: the
+        object's own size when it is shorter than 4 (the rest of the frame is padding)."""
+        try:
+            size = len(self._read(index, subindex))
+        except SdoAbortError:
+            return 4  # unreadable (write-only or missing): the write itself decides
+        return size if 0 < size < 4 else 4
 
     def _download_segment(self, data: bytes) -> bytes:
         transfer = self._current(upload=False)
