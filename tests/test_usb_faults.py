@@ -3,6 +3,7 @@ duplicated and late reports."""
 
 from __future__ import annotations
 
+import logging
 import threading
 
 import pytest
@@ -228,3 +229,26 @@ def test_cancelled_download(link):
     cancel.set()
     with pytest.raises(OperationCancelledError, match=r"^download cancelled$"):
         session.download(cancel=cancel)
+
+
+def test_the_transport_logs_reports_and_retries(link, caplog):
+    _valve, session, transport = link
+    transport.faults = LinkFaults(drop=frozenset({transport.reports_on_link + 1}))
+    with caplog.at_level(logging.DEBUG, logger="prm9tool.device.transport"):
+        session.read("SNV")
+    lines = [record.getMessage() for record in caplog.records]
+    seq = transport._seq
+    request = f"TX 02 {seq:02x} 01 18 10 04 01 00"
+    sent = [line for line in lines if " TX " in line]
+    assert len(sent) == 2 and all(line.startswith(f"emulator:1 {request}") for line in sent)
+    assert "emulator:1: no answer to READ, retry 1" in lines
+    assert any(f" RX 82 {seq:02x} 00 01 04 01 00 00 00" in line for line in lines)
+
+
+def test_the_emulated_link_carries_one_report_per_millisecond_each_way(link):
+    _valve, session, transport = link
+    start = transport.link_time  # simulated: the unpaced link keeps its own clock
+    for _ in range(10):
+        session.read("SNV")
+    # request k+1 leaves in the frame in which answer k arrives: one frame per request
+    assert transport.link_time - start == pytest.approx(0.010, abs=0.0002)
