@@ -53,6 +53,7 @@ class ControllerDialog(BlockDialog):
         self._last_applied: Any = None
         self._current: Any = None
         self.plot = PlotWidget()
+        self.plot.legend_bottom_right = True  # the step rises through the top-left corner
         self.figures = QLabel()
         self.figures.setWordWrap(True)
         self.side.addWidget(self.plot, 1)

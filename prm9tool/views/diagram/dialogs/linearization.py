@@ -79,7 +79,9 @@ class CurveEditor(PlotWidget):
             )
             painter.drawEllipse(centre, 6.0, 6.0)
             painter.setPen(QColor("#0d3d66"))
-            painter.drawText(centre + QPointF(7, -7), LETTERS[n])
+            # the label goes up-right of its point, below-left where that would leave the plot
+            inside = self.plot_rect().contains(centre + QPointF(16, -18))
+            painter.drawText(centre + (QPointF(7, -7) if inside else QPointF(-16, 19)), LETTERS[n])
 
     def _nearest(self, pos: QPointF) -> int | None:
         best, best_dist = None, self.GRAB_PX

@@ -74,6 +74,7 @@ class PlotWidget(QWidget):
         super().__init__(parent)
         self.axes = Axes()
         self.curves: list[Curve] = []
+        self.legend_bottom_right = False  # True: where a step response leaves room
         self.setMinimumSize(380, 260)
         self.setSizePolicy(QSizePolicy.Policy.Expanding, QSizePolicy.Policy.Expanding)
 
@@ -210,7 +211,11 @@ class PlotWidget(QWidget):
         rect = self.plot_rect()
         metrics = painter.fontMetrics()
         width = max(metrics.horizontalAdvance(c.label) for c in labelled) + 34
-        box = QRectF(rect.left() + 6, rect.top() + 6, width, 6 + 16 * len(labelled))
+        height = 6 + 16 * len(labelled)
+        if self.legend_bottom_right:
+            box = QRectF(rect.right() - 6 - width, rect.bottom() - 6 - height, width, height)
+        else:
+            box = QRectF(rect.left() + 6, rect.top() + 6, width, height)
         painter.setPen(QPen(GRID, 1))
         painter.setBrush(QColor(255, 255, 255, 225))
         painter.drawRect(box)
