@@ -170,3 +170,11 @@ def test_a_vanished_recent_file_is_removed_with_a_message(window, tmp_path, answ
     recent.actions()[0].trigger()
     assert "no longer exists" in answers.informed[-1]
     assert window.files.recent_files() == [] and not recent.isEnabled()
+
+
+def test_unsaved_changes_prompt_on_open_can_cancel(window, answers):
+    window.doc.set_value("LIMTA", 2000)
+    answers.answers = [prompts.Button.Cancel]
+    window.commands["open"].trigger()  # a file dialog would fail the test: it must not open
+    assert "Unsaved changes" in answers.asked[-1]
+    assert window.doc.value("LIMTA") == 2000 and window.doc.modified
