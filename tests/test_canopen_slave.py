@@ -234,6 +234,7 @@ def test_sync_timeout_is_a_communication_error(rig: Rig):
     assert rig.drain() == []
     rig.valve.advance(0.002)
     assert rig.drain() == ["08A 00 81 11 00 00 00 00 00"]  # 8100h, register: communication
+    assert rig.valve.status().leds[1].pattern == "triple_flash"  # table 7-18: SYNC error
     rig.send("000 01 0A")  # the master starts the node again: the error goes (after ~10 s)
     rig.barrier()
     rig.valve.advance(11.0)

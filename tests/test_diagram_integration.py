@@ -20,6 +20,7 @@ from PySide6.QtCore import Qt
 
 from prm9tool import i18n
 from prm9tool.access import AccessModel
+from prm9tool.catalogue import Access
 from prm9tool.device import factory
 from prm9tool.document import ParameterDocument
 from prm9tool.undo import DocumentUndo
@@ -77,6 +78,7 @@ def test_a_red_dot_opens_the_scope_with_its_measuring_point(qtbot, paced_window)
 
 
 def test_canopen_window_node_id_and_terminator_survive_a_restart(qtbot, window):
+    window.access.set_level(Access.EXPERT)  # Basic may only look at the CANopen settings
     _online(qtbot, window, f"{E02_CA}:4702")
     valve = emulated(4702)
     valve.set_input("switch_node", 0)  # node ID set by software; read at the next power-up

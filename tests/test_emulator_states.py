@@ -162,7 +162,7 @@ def test_can_led_follows_the_nmt_state():
     assert valve.status().leds[2].pattern == "single_flash"
 
 
-@pytest.mark.parametrize("event", ["stopped", "reset_comm", "comm_error"])
+@pytest.mark.parametrize("event", ["stopped", "reset_comm", "comm_error", "sync_error"])
 def test_nmt_events_take_an_active_valve_to_fault_reaction(event):
     valve = booted_ca()
     valve.nmt_event("operational")
@@ -183,6 +183,22 @@ def test_comm_error_is_an_error_until_operational_again():
     valve.nmt_event("operational")
     valve.advance(10.1)
     assert valve.status().error_code == 0
+
+
+def test_sync_error_flashes_led2_three_times_and_goes_when_operational_again():
+    valve = booted_ca()
+    valve.nmt_event("operational")
+    valve.nmt_event("sync_error")  # table 7-18: LED1 green, LED2 triple flash, LED3 single flash
+    status = valve.status()
+    assert status.error_code == 0x8100
+    assert "SYNC" in status.error_text
+    assert status.leds[0].color == "green" and status.leds[0].pattern == "on"
+    assert status.leds[1].pattern == "triple_flash"
+    assert status.leds[2].pattern == "single_flash"
+    valve.nmt_event("operational")
+    valve.advance(10.1)
+    assert valve.status().error_code == 0
+    assert valve.status().leds[1].pattern == "off"
 
 
 def test_reset_node_power_cycles():

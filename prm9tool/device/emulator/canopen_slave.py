@@ -40,7 +40,7 @@ NMT_EVENTS = {
 EMCY_RPDO_LENGTH = 0x8210  # CiA 301: PDO not processed due to length error
 SYNC_COB_ID, CYCLE_PERIOD, EMCY_COB_ID = 0x1005, 0x1006, 0x1014
 HEARTBEAT_TIME, NMT_STARTUP = 0x1017, 0x1F80
-SYNC_TIMEOUT_FACTOR = 1.5  # decision: SYNC missing for 1.5 x 0x1006 = communication error
+SYNC_TIMEOUT_FACTOR = 1.5  # decision: SYNC missing for 1.5 x 0x1006 = SYNC error (8100h)
 CONFIG_POLL_MS = 10  # PDO communication parameters are re-read every 10 ms
 
 
@@ -213,7 +213,7 @@ class CanopenSlave:
             return
         if self._now_ms - self._last_sync_ms > SYNC_TIMEOUT_FACTOR * period_us / 1000:
             self._last_sync_ms = None  # one event per loss of SYNC
-            self._valve.nmt_event("comm_error")
+            self._valve.nmt_event("sync_error")
 
     def _heartbeat_ms(self) -> int:
         return int(self._valve.read(HEARTBEAT_TIME, 0))

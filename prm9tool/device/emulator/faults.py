@@ -60,7 +60,16 @@ ERROR_KINDS: tuple[ErrorKind, ...] = (
         "double_flash",
         4,
     ),
+    ErrorKind(
+        "sync",
+        0x8100,
+        "CANopen SYNC not received within the communication cycle period (0x1006)",
+        ("green", "on"),
+        "triple_flash",
+        4,
+    ),
 )
+CAN_ERROR_KEYS = frozenset({"communication", "sync"})  # table 7-18 rows: LED1 stays green
 KINDS = {k.key: k for k in ERROR_KINDS}
 WARNING_TEXT = "Warning: electronics temperature above 70 °C"
 

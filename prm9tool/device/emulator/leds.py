@@ -6,7 +6,7 @@ state. LEDs 2 and 3 exist only on -CA valves (§5.5); on other valves they read 
 
 from __future__ import annotations
 
-from prm9tool.device.emulator.faults import ErrorKind
+from prm9tool.device.emulator.faults import CAN_ERROR_KEYS, ErrorKind
 from prm9tool.device.emulator.states import LED_OFF, LedState
 
 # (on, off) sequences in seconds; a pattern repeats with its period (CiA 303-3 timing).
@@ -71,7 +71,8 @@ def leds(
         extra3 = led("orange", "on", t) if canopen else LED_OFF
         return led("white", "boot", t), extra, extra3
     led3 = led("orange", can_pattern(nmt_state), t) if canopen else LED_OFF
-    errors = [k for k in active if k.key != "communication"]
+    errors = [k for k in active if k.key not in CAN_ERROR_KEYS]
+    can_errors = [k for k in active if k.key in CAN_ERROR_KEYS]
     if len(errors) > 1:
         led1, led2 = led("red", "2Hz", t), led("red", "2Hz", t)  # table 5-2
     elif errors:
@@ -81,8 +82,8 @@ def leds(
         led1, led2 = led("orange", "on", t), LED_OFF
     else:
         led1, led2 = led("green", "on", t), LED_OFF
-    if any(k.key == "communication" for k in active) and not errors:
-        led2 = led("red", "double_flash", t)
+    if can_errors and not errors:  # table 7-18
+        led2 = led("red", can_errors[0].led2, t)
         led3 = led("orange", "single_flash", t)
     if not canopen:
         led2 = led3 = LED_OFF

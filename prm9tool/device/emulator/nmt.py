@@ -10,7 +10,16 @@ from prm9tool.errors import ValueRangeError
 if TYPE_CHECKING:
     from prm9tool.device.emulator.firmware import Firmware
 
-NMT_EVENTS = ("operational", "stopped", "preoperational", "reset_node", "reset_comm", "comm_error")
+NMT_EVENTS = (
+    "operational",
+    "stopped",
+    "preoperational",
+    "reset_node",
+    "reset_comm",
+    "comm_error",
+    "sync_error",
+)
+_ERROR_EVENTS = {"comm_error": "communication", "sync_error": "sync"}
 
 
 def apply_nmt_event(fw: Firmware, event: str) -> None:
@@ -18,9 +27,10 @@ def apply_nmt_event(fw: Firmware, event: str) -> None:
 
     * ``stopped`` (CiA 301 transitions 5, 8) and ``reset_comm`` (12, 13, 14): a valve in
       DEVICE_MODE_ACTIVE goes to FAULT_REACTION (table 7-21, D8).
-    * ``comm_error`` (heartbeat/guarding event): the communication error 8100h becomes
-      present (EMCY, LED2 double flash) and a valve in DEVICE_MODE_ACTIVE reacts as above; it
-      goes away with the next ``operational`` event.
+    * ``comm_error`` (heartbeat/guarding event) and ``sync_error`` (SYNC missing, 0x1006): the
+      communication error 8100h becomes present (EMCY; LED2 double resp. triple flash, table
+      7-18) and a valve in DEVICE_MODE_ACTIVE reacts as above; it goes away with the next
+      ``operational`` event.
     """
     if event not in NMT_EVENTS:
         raise ValueRangeError(f"unknown NMT event {event!r}; events are: {', '.join(NMT_EVENTS)}")
@@ -30,10 +40,11 @@ def apply_nmt_event(fw: Firmware, event: str) -> None:
     now = fw.time
     if event == "operational":
         fw.nmt_state = "operational"
-        fw.faults.force("communication", False, now)
+        for key in _ERROR_EVENTS.values():
+            fw.faults.force(key, False, now)
     elif event == "preoperational":
         fw.nmt_state = "pre-operational"
-    elif event in ("stopped", "reset_comm", "comm_error"):
+    elif event in ("stopped", "reset_comm", *_ERROR_EVENTS):
         if sm.state is DeviceState.DEVICE_MODE_ACTIVE:
             sm.fault(fw.fw.fault_reaction_s)
         if event == "stopped":
@@ -41,4 +52,4 @@ def apply_nmt_event(fw: Firmware, event: str) -> None:
         elif event == "reset_comm":
             fw.reset_communication()
         else:
-            fw.faults.force("communication", True, now)
+            fw.faults.force(_ERROR_EVENTS[event], True, now)
