@@ -6,7 +6,7 @@ references: a raw python-can echo (one frame out, one frame back through a Notif
 and the canopen package's own SDO server (``LocalNode``). The manual (table 7-2) gives a
 typical SDO answer < 10 ms and at most 150 ms for the real valve.
 
-    /work/venv/bin/python benchmarks/bench_canopen.py [--reads 1000]
+    .venv/bin/python benchmarks/bench_canopen.py [--reads 1000]
 """
 
 from __future__ import annotations

@@ -4,8 +4,8 @@ The reference, measured in the same run, is a minimal inline Python cascade (thr
 PID, first-order coil, spring-mass spool) written below: the least any pure-Python 200 µs loop
 has to do. The ratio emulator/reference is the price of the full firmware and plant.
 
-    /work/venv/bin/python benchmarks/bench_emulator.py              # speed, ~30 s
-    /work/venv/bin/python benchmarks/bench_emulator.py --paced 10   # plus a 10 s paced run
+    .venv/bin/python benchmarks/bench_emulator.py              # speed, ~30 s
+    .venv/bin/python benchmarks/bench_emulator.py --paced 10   # plus a 10 s paced run
 """
 
 from __future__ import annotations

@@ -3,7 +3,7 @@
 The baseline, measured in the same run, is the standard library's configparser reading and
 writing the same text (keys and values only: no types, ranges, rules, checksum or fsync).
 
-    /work/venv/bin/python benchmarks/bench_prm.py [--repeat 7] [--number 200]
+    .venv/bin/python benchmarks/bench_prm.py [--repeat 7] [--number 200]
 """
 
 from __future__ import annotations

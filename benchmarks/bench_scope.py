@@ -9,7 +9,7 @@ the paint of the plot that follows it. References measured in the same run, same
 a bare pyqtgraph PlotWidget drawing the same 3 x N points per frame with clip-to-view and peak
 downsampling, and the same without downsampling (what a naive live plot does).
 
-    QT_QPA_PLATFORM=offscreen /work/venv/bin/python benchmarks/bench_scope.py [--seconds 20]
+    QT_QPA_PLATFORM=offscreen .venv/bin/python benchmarks/bench_scope.py [--seconds 20]
 """
 
 from __future__ import annotations

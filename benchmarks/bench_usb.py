@@ -1,6 +1,6 @@
 """USB link benchmark: upload efficiency and time, streaming capacity, parallel valves.
 
-Run:  /work/venv/bin/python benchmarks/bench_usb.py [--realtime-stream]
+Run:  .venv/bin/python benchmarks/bench_usb.py [--realtime-stream]
 
 1. Full E04 upload + verify + store over the emulated link held to one report per
    millisecond: reports sent against the minimum the payload needs (target ≤ 1.5×) and the

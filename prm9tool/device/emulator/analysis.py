@@ -1,6 +1,6 @@
 """Step-response measurement on an emulated valve (used by tests, docs and benchmarks).
 
-    /work/venv/bin/python -m prm9tool.device.emulator.analysis [TYPE_KEY] [--to VOLTS]
+    .venv/bin/python -m prm9tool.device.emulator.analysis [TYPE_KEY] [--to VOLTS]
 
 prints the rise time, overshoot and settling time of a factory-default valve.
 """
