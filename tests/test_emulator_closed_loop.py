@@ -78,3 +78,21 @@ def test_step_response_measures_the_capture():
     result = step_response(valve, 0.0, 10.0, "position_actual", seconds=0.1)
     assert len(result.samples) == round(0.1 / CYCLE) + 1  # one sample before the step
     assert np.argmax(result.samples >= 0.9 * FULL) * CYCLE <= result.rise_s + 0.01
+
+
+def test_e04_in_position_control_mode_still_moves_its_load_and_reads_its_sensor():
+    valve = valve_for("E04", "AB")
+    valve.write(0x6043, 0, 2)  # position control: the process loop is off, the load is not
+    valve.advance(2.0)
+    sensor_before = valve.signal("sensor_raw")
+    actual_before = valve.read(0x6381, 1)
+    assert sensor_before == pytest.approx(0, abs=0.01 * FULL)  # load at mid-stroke: 0 V
+    valve.set_input("setpoint", 2.0)  # spool held 20 % open: the load keeps moving
+    valve.advance(0.5)
+    sensor = valve.signal("sensor_raw")
+    assert sensor > sensor_before + 0.1 * FULL
+    assert valve.signal("process_actual") == pytest.approx(sensor, abs=0.01 * FULL)
+    assert valve.read(0x6381, 1) > actual_before + 0.1 * FULL
+    assert valve.read(0x6350, 1) == pytest.approx(
+        valve.signal("demand") - valve.signal("position_actual"), abs=0.01 * FULL
+    )  # 0x6350 stays the position loop's deviation in mode 2

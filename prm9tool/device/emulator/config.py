@@ -82,6 +82,7 @@ def coefficients(
     r_coil = coil_resistance(temperature_c, plant)
     e04 = variant.config is Config.E04
     return {
+        "e04_plant": e04,
         "process_loop": process_loop_on(variant, values),
         "coils": variant.coils.value,
         "ramp_steps": tuple(

@@ -48,7 +48,10 @@ def control_loop(s: LoopState) -> Generator[None, int, None]:
     while True:
         c = s.coefficients
         version = s.version
-        e04 = c["process_loop"]
+        e04 = c["e04_plant"]  # external sensor and hydraulic load exist (E04 variant)
+        process_on = c["process_loop"]  # the process PIDT1 closes the loop (E04, mode 4)
+        if not process_on:
+            dev = dg = 0.0
         coils = c["coils"]  # "AB", "A" or "B"
         two = coils == "AB"
         only_b = coils == "B"
@@ -92,7 +95,7 @@ def control_loop(s: LoopState) -> Generator[None, int, None]:
                     plant_sensor = False
                     s_static = s_broken
                 active = mode == MODE_ACTIVE
-                process = e04 and active
+                process = process_on and active
                 if active and last_mode != MODE_ACTIVE:
                     r = pv if process else xm  # the ramp starts where the valve is (bumpless)
                 last_mode = mode
@@ -161,7 +164,7 @@ def control_loop(s: LoopState) -> Generator[None, int, None]:
                     xm = lvdt_lo
                 else:
                     xm = round(x * kx) * lvdt_q
-                # --- external sensor and process controller (E04) -----------------------
+                # --- external sensor (E04) and process controller (E04 in mode 4) ---------
                 if e04:
                     if plant_sensor:
                         s0 = round(act * s_a + s_b) * s_q + s_o
@@ -179,13 +182,14 @@ def control_loop(s: LoopState) -> Generator[None, int, None]:
                         pv = sl_b[i] + sl_k[i] * s3
                     else:
                         pv = s3
-                    dev = r - pv
-                    if dev > 0.0:
-                        dg = dev * gp + op
-                    elif dev < 0.0:
-                        dg = dev * gn - on_
-                    else:
-                        dg = 0.0
+                    if process_on:
+                        dev = r - pv
+                        if dev > 0.0:
+                            dg = dev * gp + op
+                        elif dev < 0.0:
+                            dg = dev * gn - on_
+                        else:
+                            dg = 0.0
                 if process:
                     q_int += qki * dg
                     if q_int > 16384.0:
@@ -365,6 +369,6 @@ def control_loop(s: LoopState) -> Generator[None, int, None]:
                             )
                         )
             # --- what the 1 ms task needs; the rest on a flush (send(0)) --------------------
-            s.ctrl_dev = dev if e04 else r - xm
+            s.ctrl_dev = dev if process_on else r - xm
             s.current_ma = (ia, ib)
             n = yield
