@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import threading
+import time
 
 import pytest
 
@@ -149,3 +150,23 @@ def test_listener_may_stop_the_paced_loop():
     valve.start()
     assert done.wait(timeout=30)
     assert not valve.running
+
+
+@pytest.mark.slow
+def test_paced_mode_keeps_real_time_within_1_percent_over_10_s():
+    # E04 -CA in analog mode with everything that costs time on: process loop (mode 4) with a
+    # moving load, sensor linearization, dither, a three-channel capture at full rate.
+    valve = EmulatedValve("PRM9-06.3Z11/30-24E04S02-CA", switches=(0, 2))
+    valve.write(0x2008, 0, 1)  # sensor linearization on
+    valve.set_input("setpoint", 5.0)
+    valve.capture_start(["process_actual", "position_actual", "current_a"])
+    wall_start = time.monotonic()
+    valve.start()
+    time.sleep(10.0)
+    valve.stop()
+    wall = time.monotonic() - wall_start
+    simulated = valve.time
+    assert valve.pacer.dropped_cycles == 0
+    assert abs(simulated - wall) / wall < 0.01, (simulated, wall)
+    assert valve.capture_read().shape == (round(simulated / CYCLE), 3)  # every cycle recorded
+    assert valve.signal("process_actual") == pytest.approx(16384 / 2, abs=0.02 * 16384)
