@@ -36,8 +36,8 @@ def test_mnemonics_and_addresses_are_unique():
 @pytest.mark.parametrize("variant", ALL_VARIANTS, ids=lambda v: v.label)
 def test_defaults_lie_within_ranges(variant):
     for p in CATALOGUE.for_variant(variant):
-        if not p.is_string and p.obj_access is not ObjAccess.WO and p.group != "canopen_comm":
-            p.check_raw(p.default_for(variant))
+        if not p.is_string and p.obj_access is not ObjAccess.WO:
+            p.check_raw(p.default_for(variant, node_id=10))  # node 10: delivery state
 
 
 def test_every_parameter_has_three_languages():
@@ -81,24 +81,55 @@ def test_variant_filtering():
     assert "LIMTA" not in names
 
 
-def test_manual_objects_are_present():
-    for index, sub in [
-        (0x1000, 0),
-        (0x1017, 0),
-        (0x1018, 4),
-        (0x1400, 1),
-        (0x1A01, 2),
-        (0x2004, 1),
-        (0x2005, 4),
-        (0x2008, 0),
-        (0x2100, 6),
-        (0x6040, 0),
-        (0x6301, 1),
-        (0x6353, 1),
-        (0x6362, 1),
-        (0x6381, 1),
-    ]:
-        assert CATALOGUE.by_address(index, sub) is not None, hex(index)
+def _subs(index: int, *subs: int) -> list[tuple[int, int]]:
+    return [(index, sub) for sub in subs]
+
+
+# Every entry of manual tables 7-13, 7-14 and 7-16 (the "number of entries" subindex 0 of the
+# arrays 0x2000…0x2007 and of the CiA 408 records is the object dictionary's, not a parameter).
+TABLE_7_13 = [
+    *[(i, 0) for i in (0x1000, 0x1001, 0x1003, 0x1005, 0x1006, 0x1008, 0x1009, 0x100A)],
+    *[(i, 0) for i in (0x1014, 0x1017, 0x1F80)],
+    *_subs(0x1018, 0, 1, 2, 3, 4),
+    *_subs(0x1400, 0, 1, 2),
+    *_subs(0x1401, 0, 1, 2),
+    *_subs(0x1600, 0, 1, 2),
+    *_subs(0x1601, 0, 1),
+    *_subs(0x1800, 0, 1, 2, 5),
+    *_subs(0x1801, 0, 1, 2, 5),
+    *_subs(0x1A00, 0, 1, 2),
+    *_subs(0x1A01, 0, 1, 2),
+]
+TABLE_7_14 = [
+    *[(i, sub) for i in (0x2000, 0x2001, 0x2006, 0x2007) for sub in range(1, 10)],
+    (0x2002, 0),
+    (0x2003, 0),
+    *_subs(0x2004, 1, 2, 3),
+    *_subs(0x2005, 1, 2, 3, 4),
+    (0x2008, 0),
+    *_subs(0x2100, 1, 2, 3, 4, 5, 6),
+]
+TABLE_7_16 = [
+    *[(i, 0) for i in (0x6040, 0x6041, 0x6042, 0x6043, 0x605F, 0x6330, 0x6340, 0x6341)],
+    *[(i, 0) for i in (0x6342, 0x6346, 0x6351, 0x6360)],
+    *[(i, 1) for i in (0x6300, 0x6301, 0x6310, 0x6332, 0x6333, 0x6335, 0x6336, 0x6343)],
+    *[(i, 1) for i in (0x6344, 0x6345, 0x6350, 0x6352, 0x6353, 0x6361, 0x6362, 0x6380)],
+    (0x6381, 1),
+]
+
+
+@pytest.mark.parametrize(
+    ("index", "sub"),
+    TABLE_7_13 + TABLE_7_14 + TABLE_7_16,
+    ids=lambda v: f"{v:X}" if v > 9 else str(v),
+)
+def test_every_object_of_tables_7_13_7_14_7_16_is_in_the_catalogue(index, sub):
+    assert CATALOGUE.by_address(index, sub) is not None
+
+
+@pytest.mark.parametrize("variant", ALL_VARIANTS, ids=lambda v: v.label)
+def test_factory_defaults_break_no_rule_and_raise_no_warning(variant):
+    assert CATALOGUE.check_rules(variant, CATALOGUE.defaults(variant, node_id=10)) == []
 
 
 def test_display_text_round_trips_every_raw_value_of_scaled_parameters():

@@ -72,3 +72,30 @@ def test_mark_saved_clears_modified(doc, tmp_path):
     doc.set_value("DTAMP", 1000)
     doc.mark_saved(tmp_path / "x.prm")
     assert not doc.modified and doc.path == tmp_path / "x.prm"
+
+
+def test_undo_and_redo_emit_the_signals_views_listen_to(doc, qtbot):
+    undo = DocumentUndo(doc)
+    doc.set_value("AINSETP", 6)  # 0…10 V on two coils: table 8-4 warning
+    assert [p.mnemonics for p in doc.problems()] == [("AINSETP",)]
+    changed: list[str] = []
+    doc.value_changed.connect(changed.append)
+    with qtbot.waitSignals([doc.validity_changed, doc.modified_changed]):
+        undo.stack.undo()
+    assert changed == ["AINSETP"] and doc.problems() == [] and not doc.modified
+    with qtbot.waitSignals([doc.value_changed, doc.validity_changed, doc.modified_changed]):
+        undo.stack.redo()
+    assert doc.value("AINSETP") == 6 and doc.modified and doc.problems()
+
+
+def test_a_bulk_edit_resets_views_once_instead_of_one_signal_per_value(doc, qtbot):
+    undo = DocumentUndo(doc)
+    changed: list[str] = []
+    doc.value_changed.connect(changed.append)
+    lin = {f"SETPLINY{c}": -16100 + 4000 * i for i, c in enumerate("ABCDEFGHI")}
+    with qtbot.waitSignals([doc.values_reset, doc.validity_changed]):
+        doc.set_values(lin, "Linearization")
+    assert changed == []
+    with qtbot.waitSignal(doc.values_reset):
+        undo.stack.undo()
+    assert changed == []
