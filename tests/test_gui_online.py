@@ -7,7 +7,7 @@ import threading
 
 import pytest
 from gui_support import E02, E04_CA, go_online, main_window, record_prompts, session_of
-from PySide6.QtWidgets import QDialog, QPushButton
+from PySide6.QtWidgets import QDialog, QLabel, QPushButton
 
 from prm9tool import backup
 from prm9tool.device.transport.emulator import LinkFaults
@@ -223,18 +223,53 @@ def test_restart_needs_the_hydraulics_confirmation(qtbot, window, monkeypatch):
     assert window.doc.value("DTAMP") == done.args[1]["DTAMP"]  # the valve's values taken
 
 
-def test_restore_factory_values_online(qtbot, window, answers):
-    go_online(qtbot, window)
+def test_restore_factory_values_online_needs_the_hydraulics_confirmation(
+    qtbot, window, answers, monkeypatch
+):
+    go_online(qtbot, window, f"{E02}:4105")
     _settled(qtbot, window)
-    window.commands["upload"].trigger()
     window.doc.set_value("LIMTA", 2000)
-    with qtbot.waitSignal(window.connection.operation_finished, timeout=TIMEOUT):
-        window.commands["upload"].trigger()
-    answers.answers = [prompts.Button.Yes]
+    assert _valve_value(qtbot, window, "LIMTA") == 2000
+    shown = []
+
+    def cancel(dialog):
+        shown.append(dialog)
+        return QDialog.DialogCode.Rejected
+
+    monkeypatch.setattr(RestartDialog, "exec", cancel)
+    window.commands["restore_factory"].trigger()
+    assert shown[0].factory and "hydraulic circuit" in shown[0].findChild(QLabel).text()
+    assert not shown[0].restart_button.isEnabled()  # not before the hydraulics are confirmed
+    assert answers.asked == []  # no plain Yes/No box instead of the confirmation
+    assert not window.connection.is_busy and backup.existing_backups(4105) == []
+    assert _valve_value(qtbot, window, "LIMTA") == 2000
+
+
+def test_restore_factory_values_online_backs_the_valve_up_first(
+    qtbot, window, answers, monkeypatch
+):
+    from prm9tool import prmfile
+
+    go_online(qtbot, window, f"{E02}:4106")
+    _settled(qtbot, window)
+    window.doc.set_value("LIMTA", 2000)
+    assert _valve_value(qtbot, window, "LIMTA") == 2000
+
+    def confirm(dialog):
+        dialog.confirm.setChecked(True)
+        assert dialog.restart_button.isEnabled()
+        return QDialog.DialogCode.Accepted
+
+    monkeypatch.setattr(RestartDialog, "exec", confirm)
     with qtbot.waitSignal(window.connection.operation_finished, timeout=TIMEOUT) as done:
         window.commands["restore_factory"].trigger()
     assert done.args[0] == "restore_factory"
-    assert window.doc.value("LIMTA") == 2400
+    assert window.doc.value("LIMTA") == 2400 and _valve_value(qtbot, window, "LIMTA") == 2400
+    [saved] = backup.existing_backups(4106)
+    assert prmfile.read_file(saved).values["LIMTA"] == 2000  # the values before the reset
+    assert str(saved) in window.status.currentMessage()
+    window.undo.stack.undo()  # the reset is one undo step in the document
+    assert window.doc.value("LIMTA") == 2000
 
 
 def test_going_offline_offers_to_store_online_changes(qtbot, window, answers):

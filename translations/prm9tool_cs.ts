@@ -1438,8 +1438,20 @@
             <translation>Restart ventilu</translation>
         </message>
         <message>
+            <source>Restore factory values</source>
+            <translation>Obnovit tovární nastavení</translation>
+        </message>
+        <message>
+            <source>Restore and restart</source>
+            <translation>Obnovit a restartovat</translation>
+        </message>
+        <message>
             <source>&lt;b&gt;Restarting the valve electronics is only allowed with the hydraulic circuit disconnected.&lt;/b&gt;&lt;br&gt;During the restart the spool returns to its spring-centred position and the setpoint is ignored for a few seconds.</source>
             <translation>&lt;b&gt;Restart elektroniky ventilu je dovolen pouze při odpojeném hydraulickém obvodu.&lt;/b&gt;&lt;br&gt;Během restartu se šoupátko vrátí působením středicích pružin do střední polohy a žádaná hodnota je několik sekund ignorována.</translation>
+        </message>
+        <message>
+            <source>The valve's stored parameters are reset to the factory values, which take effect after a restart of the valve. Before that, the valve's parameters are saved to a backup file (if this valve has no backup yet).</source>
+            <translation>Uložené parametry ventilu se vrátí na tovární hodnoty, které začnou platit po restartu ventilu. Předtím se parametry ventilu uloží do záložního souboru (pokud pro tento ventil ještě žádná záloha není).</translation>
         </message>
         <message>
             <source>The hydraulics are disconnected</source>
@@ -1988,10 +2000,6 @@ Ujistěte se, že pohyb stroje je bezpečný. Spustit generátor?</translation>
             <translation>Stahování parametrů z ventilu…</translation>
         </message>
         <message>
-            <source>Reset the valve's stored parameters to the factory values and restart it? Only allowed with the hydraulics disconnected.</source>
-            <translation>Obnovit uložené parametry ventilu na tovární hodnoty a ventil restartovat? Dovoleno pouze při odpojeném hydraulickém obvodu.</translation>
-        </message>
-        <message>
             <source>Set every parameter of the document to the factory default?</source>
             <translation>Nastavit všechny parametry dokumentu na tovární hodnoty?</translation>
         </message>
@@ -2022,6 +2030,10 @@ Ujistěte se, že pohyb stroje je bezpečný. Spustit generátor?</translation>
         <message>
             <source>The valve stored its parameters</source>
             <translation>Ventil uložil své parametry</translation>
+        </message>
+        <message>
+            <source>Factory values restored; the valve's previous parameters are in {0}</source>
+            <translation>Tovární nastavení obnoveno; dosavadní parametry ventilu jsou v {0}</translation>
         </message>
         <message numerus="yes">
             <source>%n parameter(s) written, verified and stored</source>

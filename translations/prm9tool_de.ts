@@ -1434,8 +1434,20 @@
             <translation>Ventil neu starten</translation>
         </message>
         <message>
+            <source>Restore factory values</source>
+            <translation>Werkseinstellungen wiederherstellen</translation>
+        </message>
+        <message>
+            <source>Restore and restart</source>
+            <translation>Wiederherstellen und neu starten</translation>
+        </message>
+        <message>
             <source>&lt;b&gt;Restarting the valve electronics is only allowed with the hydraulic circuit disconnected.&lt;/b&gt;&lt;br&gt;During the restart the spool returns to its spring-centred position and the setpoint is ignored for a few seconds.</source>
             <translation>&lt;b&gt;Ein Neustart der Ventilelektronik ist nur bei getrenntem Hydraulikkreis erlaubt.&lt;/b&gt;&lt;br&gt;Während des Neustarts kehrt der Schieber in die federzentrierte Mittelstellung zurück und der Sollwert wird einige Sekunden ignoriert.</translation>
+        </message>
+        <message>
+            <source>The valve's stored parameters are reset to the factory values, which take effect after a restart of the valve. Before that, the valve's parameters are saved to a backup file (if this valve has no backup yet).</source>
+            <translation>Die gespeicherten Parameter des Ventils werden auf die Werkseinstellungen zurückgesetzt; sie werden nach einem Neustart des Ventils wirksam. Vorher werden die Parameter des Ventils in einer Sicherungsdatei gespeichert (falls es für dieses Ventil noch keine Sicherung gibt).</translation>
         </message>
         <message>
             <source>The hydraulics are disconnected</source>
@@ -1984,10 +1996,6 @@ Stellen Sie sicher, dass die Maschine sich gefahrlos bewegen kann. Generator sta
             <translation>Parameter werden aus dem Ventil heruntergeladen…</translation>
         </message>
         <message>
-            <source>Reset the valve's stored parameters to the factory values and restart it? Only allowed with the hydraulics disconnected.</source>
-            <translation>Die gespeicherten Parameter des Ventils auf die Werkseinstellungen zurücksetzen und das Ventil neu starten? Nur bei getrennter Hydraulik erlaubt.</translation>
-        </message>
-        <message>
             <source>Set every parameter of the document to the factory default?</source>
             <translation>Alle Parameter des Dokuments auf die Werkseinstellung setzen?</translation>
         </message>
@@ -2018,6 +2026,10 @@ Stellen Sie sicher, dass die Maschine sich gefahrlos bewegen kann. Generator sta
         <message>
             <source>The valve stored its parameters</source>
             <translation>Das Ventil hat seine Parameter gespeichert</translation>
+        </message>
+        <message>
+            <source>Factory values restored; the valve's previous parameters are in {0}</source>
+            <translation>Werkseinstellungen wiederhergestellt; die bisherigen Parameter des Ventils sind in {0}</translation>
         </message>
         <message numerus="yes">
             <source>%n parameter(s) written, verified and stored</source>

@@ -123,23 +123,24 @@ class OnlineDiffDialog(QDialog):
 
 
 class RestartDialog(QDialog):
-    """Restart only after the user confirms that the hydraulics are disconnected."""
+    """Restart only after the user confirms that the hydraulics are disconnected.
 
-    def __init__(self, parent: QWidget | None = None) -> None:
+    With ``factory`` the restart is the one that makes the factory values effective: the
+    dialog says so, and that a backup of the valve's parameters is saved first.
+    """
+
+    def __init__(self, parent: QWidget | None = None, factory: bool = False) -> None:
         super().__init__(parent)
-        self.setWindowTitle(self.tr("Restart valve"))
-        warning = QLabel(
-            self.tr(
-                "<b>Restarting the valve electronics is only allowed with the hydraulic circuit "
-                "disconnected.</b><br>During the restart the spool returns to its spring-centred "
-                "position and the setpoint is ignored for a few seconds."
-            )
-        )
+        self.factory = factory
+        title = self.tr("Restore factory values") if factory else self.tr("Restart valve")
+        self.setWindowTitle(title)
+        warning = QLabel(self._warning(factory))
         warning.setWordWrap(True)
         self.confirm = QCheckBox(self.tr("The hydraulics are disconnected"))
         self.buttons = QDialogButtonBox(QDialogButtonBox.StandardButton.Cancel)
         self.restart_button = self.buttons.addButton(
-            self.tr("Restart"), QDialogButtonBox.ButtonRole.AcceptRole
+            self.tr("Restore and restart") if factory else self.tr("Restart"),
+            QDialogButtonBox.ButtonRole.AcceptRole,
         )
         self.restart_button.setEnabled(False)
         self.confirm.toggled.connect(self.restart_button.setEnabled)
@@ -150,3 +151,18 @@ class RestartDialog(QDialog):
         layout.addWidget(self.confirm)
         layout.addWidget(self.buttons)
         self.setMinimumWidth(440)
+
+    def _warning(self, factory: bool) -> str:
+        restart = self.tr(
+            "<b>Restarting the valve electronics is only allowed with the hydraulic circuit "
+            "disconnected.</b><br>During the restart the spool returns to its spring-centred "
+            "position and the setpoint is ignored for a few seconds."
+        )
+        if not factory:
+            return restart
+        reset = self.tr(
+            "The valve's stored parameters are reset to the factory values, which take effect "
+            "after a restart of the valve. Before that, the valve's parameters are saved to a "
+            "backup file (if this valve has no backup yet)."
+        )
+        return f"{reset}<br><br>{restart}"

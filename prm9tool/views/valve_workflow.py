@@ -8,6 +8,7 @@ worker thread) and the document, and reacts to their signals.
 from __future__ import annotations
 
 from collections.abc import Mapping
+from dataclasses import dataclass
 from typing import Any
 
 from PySide6.QtCore import QObject, QSettings, Qt, Signal
@@ -235,32 +236,25 @@ class ValveWorkflow(QObject):
         self._connection.download()
 
     def restore_factory(self) -> None:
-        """Factory values: online into the valve (after a restart), offline into the document."""
-        online = self._connection.is_online
-        question = (
-            self.tr(
-                "Reset the valve's stored parameters to the factory values and restart it? "
-                "Only allowed with the hydraulics disconnected."
-            )
-            if online
-            else self.tr("Set every parameter of the document to the factory default?")
-        )
+        """Factory values: online into the valve (backup, reset, restart, after the user
+        confirmed that the hydraulics are disconnected), offline into the document."""
+        if self._connection.is_online:
+            if RestartDialog(self._window, factory=True).exec() != QDialog.DialogCode.Accepted:
+                return
+            self._start("restore_factory", self.tr("Restoring the factory values…"), False)
+            self._connection.run_job("restore_factory", _back_up_restore_factory_and_read)
+            return
         answer = prompts.ask(
             self._window,
             prompts.Icon.Question,
             self.tr("Restore factory values"),
-            question,
+            self.tr("Set every parameter of the document to the factory default?"),
             prompts.Button.Yes | prompts.Button.No,
             prompts.Button.No,
         )
-        if answer != prompts.Button.Yes:
-            return
-        if not online:
+        if answer == prompts.Button.Yes:
             defaults = ParameterDocument(self._doc.type_key).values
             self._doc.set_values(defaults, self.tr("Restore factory values"))
-            return
-        self._start("restore_factory", self.tr("Restoring the factory values…"), False)
-        self._connection.run_job("restore_factory", _restore_factory_and_read)
 
     def restart(self) -> None:
         """Restart the valve after the user confirmed that the hydraulics are disconnected."""
@@ -277,8 +271,8 @@ class ValveWorkflow(QObject):
             self._on_compare_finished(result)
         elif name == "download" and isinstance(result, Mapping):
             self.take_valve_values(result, self.tr("Download from valve"))
-        elif name == "restore_factory" and isinstance(result, Mapping):
-            self.take_valve_values(result, self.tr("Factory values of the valve"))
+        elif name == "restore_factory" and isinstance(result, _FactoryReset):
+            self._on_factory_reset(result)
         elif name == AFTER_RESTART and isinstance(result, Mapping):
             self.message_posted.emit(self.tr("The valve restarted"))
             self._sync.stop()
@@ -288,6 +282,15 @@ class ValveWorkflow(QObject):
         elif name == "store":
             self._sync.unstored = False
             self.message_posted.emit(self.tr("The valve stored its parameters"))
+
+    def _on_factory_reset(self, result: _FactoryReset) -> None:
+        self.take_valve_values(result.values, self.tr("Factory values of the valve"))
+        if result.backup is not None:
+            self.message_posted.emit(
+                self.tr(
+                    "Factory values restored; the valve's previous parameters are in {0}"
+                ).format(result.backup)
+            )
 
     def _on_upload_finished(self, result: object) -> None:
         if getattr(result, "stored", False):
@@ -366,11 +369,23 @@ class ValveWorkflow(QObject):
             dialog.deleteLater()
 
 
-def _restore_factory_and_read(session: Any) -> dict[str, Raw]:
-    """Worker job: factory values become effective after a restart; read them back."""
+@dataclass(frozen=True)
+class _FactoryReset:
+    """Result of the factory reset: the valve's values now, and the backup taken before."""
+
+    values: dict[str, Raw]
+    backup: str | None
+
+
+def _back_up_restore_factory_and_read(session: Any) -> _FactoryReset:
+    """Worker job: back the valve's parameters up (as before the first upload), reset them to
+    the factory values, which become effective after a restart, and read them back."""
+    from prm9tool.backup import ensure_backup  # *.prm writing, only when needed
+
+    path = ensure_backup(session)
     session.restore_factory()
     session.restart()
-    return dict(session.download())
+    return _FactoryReset(dict(session.download()), None if path is None else str(path))
 
 
 def _restart_and_read(session: Any) -> dict[str, Raw]:
