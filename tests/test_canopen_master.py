@@ -47,6 +47,7 @@ CONTROL_WORD = (0x6040, 0)
 # cannot express (limits 2..4 are those of the object); the valid write keeps the mode.
 CONTROL_MODE = (0x6043, 0)
 MAPPING_ENTRIES = {(0x1600, 2), (0x1A00, 2)}  # follow the control mode 0x6043
+ERROR_COUNT = (0x1003, 0)  # CiA 301: only 0 (clear the history); 1 is an invalid value
 
 
 def _export(tmp_path: Path, type_key: str) -> Path:
@@ -167,6 +168,8 @@ def _invalid_write(var: ODVariable) -> tuple[bytes, AbortCode]:
         return var.encode_raw(0x20000181), AbortCode.INVALID_VALUE  # 29-bit identifier
     if key in TRANSMISSION_TYPES:
         return var.encode_raw(241), AbortCode.INVALID_VALUE  # reserved (table 7-12)
+    if key == ERROR_COUNT:
+        return var.encode_raw(1), AbortCode.INVALID_VALUE
     if high < natural_high:
         return struct.pack(_format(var), high + 1), AbortCode.VALUE_TOO_HIGH
     if low > natural_low:

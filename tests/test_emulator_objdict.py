@@ -79,7 +79,7 @@ def test_write_only_object_cannot_be_read():
         (0x6345, 1, -1, AbortCode.VALUE_TOO_LOW),
         (0x2010, 1, 12, AbortCode.INVALID_VALUE),  # not a signal-type code
         (0x6332, 1, "100", AbortCode.WRONG_LENGTH),
-        (0x1003, 0, 1, AbortCode.VALUE_TOO_HIGH),  # only 0 clears the history
+        (0x1003, 0, 1, AbortCode.INVALID_VALUE),  # only 0 clears the history (CiA 301)
         (0x1010, 1, 0x12345678, AbortCode.CANNOT_STORE),  # not "save"
         (0x2004, 2, 2601, AbortCode.VALUE_TOO_HIGH),  # LIMIT A above CURNORM (table 7-14)
     ],

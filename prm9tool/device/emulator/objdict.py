@@ -20,6 +20,8 @@ Getter = Callable[[], Value]
 Hook = Callable[[Value], None]
 
 _READABLE = (ObjAccess.RO, ObjAccess.RW, ObjAccess.CONST)
+# CiA 301: 0x1003/0 takes only 0 (clear the history); another value is invalid, not out of range
+ZERO_CLEARS: frozenset[Key] = frozenset({(0x1003, 0)})
 
 
 def _sub0(index: int, highest: int) -> Parameter:
@@ -152,6 +154,8 @@ def validate(param: Parameter, value: Value) -> None:
         return
     if isinstance(value, bool) or not isinstance(value, int):
         raise abort(key, AbortCode.WRONG_LENGTH)
+    if key in ZERO_CLEARS and value != 0:
+        raise abort(key, AbortCode.INVALID_VALUE)
     if value < param.raw_min:
         raise abort(key, AbortCode.VALUE_TOO_LOW)
     if value > param.raw_max:
