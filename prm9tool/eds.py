@@ -30,6 +30,10 @@ BIT_RATES_KBIT = (10, 20, 50, 125, 250, 500, 800, 1000)
 UNSUPPORTED_BIT_RATES_KBIT = frozenset({10})  # manual table 7-1
 MANDATORY = (0x1000, 0x1001, 0x1018)  # CiA 301
 VENDOR_NAME = "ARGO-HYTOS"
+# Upper limits the valve applies beyond an entry's own range: the current limits LIMTA/LIMTB
+# at most the nominal coil current CURNORM (table 7-14); CURNORM is read-only, so its default
+# is the limit a master can rely on.
+CAPPED_BY = {"LIMTA": "CURNORM", "LIMTB": "CURNORM"}
 
 
 class ObjectKind(IntEnum):
@@ -79,6 +83,15 @@ def mapping_for_control_mode(param: Parameter, control_mode: int) -> int:
         return param.default_e04
     assert isinstance(param.default, int)
     return param.default
+
+
+def raw_limits(param: Parameter, variant: Variant) -> tuple[int, int]:
+    """The raw values ``variant`` accepts for ``param`` (its range, capped by :data:`CAPPED_BY`)."""
+    high = param.raw_max
+    cap = CAPPED_BY.get(param.mnemonic)
+    if cap is not None:
+        high = min(high, int(CATALOGUE[cap].default_for(variant)))
+    return param.raw_min, high
 
 
 def pdo_mappable(variant: Variant) -> set[tuple[int, int]]:
@@ -260,8 +273,9 @@ def _variable(
         f"DefaultValue={_default_text(param, variant, key)}",
         f"PDOMapping={1 if param.key in mappable else 0}",
     ]
-    if not param.is_string and (param.raw_min, param.raw_max) != param.dtype.natural_range:
-        lines += [f"LowLimit={param.raw_min}", f"HighLimit={param.raw_max}"]
+    limits = raw_limits(param, variant)
+    if not param.is_string and limits != param.dtype.natural_range:
+        lines += [f"LowLimit={limits[0]}", f"HighLimit={limits[1]}"]
     lines.append("")
     return lines
 
@@ -346,6 +360,9 @@ def _md_range(p: Parameter) -> str:
         return ""
     if p.obj_access is ObjAccess.CONST:
         return ""
+    if p.mnemonic in CAPPED_BY:
+        high = raw_limits(p, Variant(Config.E04, canopen=True))[1]
+        return f"{p.raw_min} … {high} ({CAPPED_BY[p.mnemonic]})"
     return f"{p.raw_min} … {p.raw_max}"
 
 

@@ -42,6 +42,8 @@ def test_export_writes_a_cia_306_file(tmp_path: Path):
     assert eds["1014"]["DefaultValue"] == "$NODEID+0x80"
     assert eds["1A01sub2"]["DefaultValue"] == "0x21000610"  # decision: after linearization
     assert (eds["6345sub1"]["LowLimit"], eds["6345sub1"]["HighLimit"]) == ("0", "16384")
+    for sub in (2, 3):  # LIMTA/LIMTB: the valve refuses more than CURNORM (table 7-14)
+        assert eds[f"2004sub{sub}"]["HighLimit"] == eds["2004sub1"]["DefaultValue"] == "2600"
     assert eds["6300sub0"]["DefaultValue"] == "1"  # sub-index 0 of a catalogue-only sub 1
     assert eds["6041"]["PDOMapping"] == "1" and eds["6345sub1"]["PDOMapping"] == "0"
     assert eds["2041"]["DefaultValue"] == E04
