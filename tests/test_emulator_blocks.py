@@ -6,7 +6,6 @@ import numpy as np
 import pytest
 
 from prm9tool.device.emulator import EmulatedValve
-from prm9tool.device.emulator.config import pidt1
 
 E02 = "PRM9-06.3Z11/30-24E02S02"
 E02_A = "PRM9-06.2Z51/30-24E02S02"
@@ -95,12 +94,30 @@ def ramp_time(valve: EmulatedValve, volts: float) -> tuple[float, float]:
 
 @pytest.mark.parametrize("ms", [1000, 300])
 def test_ramp_time_for_100_and_50_percent_steps(ms):
-    valve = booted(up=(0x6332, 1, ms), down=(0x6335, 1, ms // 2), nu=(0x6333, 1, 2 * ms))
-    # (setpoint, ramp time for a 100 % step that applies)
-    for volts, full_ms in ((10.0, ms), (5.0, ms / 2), (0.0, ms / 2), (-5.0, 2 * ms), (0.0, 0)):
-        seconds, fraction = ramp_time(valve, volts)
-        assert fraction == pytest.approx(1.0 if volts == 10.0 else 0.5, abs=0.001)
-        assert seconds == pytest.approx(max(full_ms / 1000 * fraction, CYCLE), abs=2 * CYCLE)
+    # the four ramps with four different times: positive up / down, negative up / down
+    pu, pd, nu, nd = ms, ms // 2, 2 * ms, 3 * ms // 2
+    valve = booted(pu=(0x6332, 1, pu), pd=(0x6335, 1, pd), nu=(0x6333, 1, nu), nd=(0x6336, 1, nd))
+    steps = (  # (setpoint V, step in % of 100 %, expected seconds)
+        (10.0, 1.0, pu / 1000),  # 0 → +100 %: positive up
+        (5.0, 0.5, pd / 1000 / 2),  # +100 → +50 %: positive down
+        (0.0, 0.5, pd / 1000 / 2),  # +50 → 0 %: positive down
+        (-5.0, 0.5, nu / 1000 / 2),  # 0 → −50 %: negative up
+        (0.0, 0.5, nd / 1000 / 2),  # −50 → 0 %: negative down
+        (-5.0, 0.5, nu / 1000 / 2),
+        (5.0, 1.0, nd / 1000 / 2 + pu / 1000 / 2),  # −50 → +50 %: negative down, positive up
+        (-5.0, 1.0, pd / 1000 / 2 + nu / 1000 / 2),  # +50 → −50 %: positive down, negative up
+    )
+    for volts, fraction, expected in steps:
+        seconds, step = ramp_time(valve, volts)
+        assert step == pytest.approx(fraction, abs=0.001)
+        # each ramp ends with a partial step; crossing 0 costs the cycle that stops there
+        assert seconds == pytest.approx(expected, abs=3 * CYCLE)
+
+
+def test_zero_negative_down_ramp_means_no_ramp_on_that_side_only():
+    valve = booted(nu=(0x6333, 1, 400))  # negative up 400 ms, negative down 0 = no ramp
+    assert ramp_time(valve, -5.0)[0] == pytest.approx(0.2, abs=2 * CYCLE)
+    assert ramp_time(valve, 0.0)[0] == pytest.approx(CYCLE, abs=CYCLE)
 
 
 def test_zero_ramp_time_means_no_ramp():
@@ -132,11 +149,15 @@ def test_pidt1_integral_part():
 
 
 def test_pidt1_derivative_part_with_lag():
-    data = captured_controller(0, 0, 30, 50)  # Kd 0.3 ms, T1 0.5 ms
+    data = captured_controller(0, 0, 30, 50)  # Kd 30 × 0.01 ms = 0.3 ms, T1 50 × 0.01 ms = 0.5 ms
     e, u = data[:, 0], data[:, 1]
-    _, _, b, a = pidt1(0, 0, 30, 50)
-    assert a == pytest.approx(0.5e-3 / (0.5e-3 + CYCLE))
-    assert u[1:] == pytest.approx(a * u[:-1] + b * np.diff(e))
+    # Backward Euler of Kd·s / (1 + T1·s) at dt = 200 µs:
+    #   D[k] = T1/(T1+dt) · D[k−1] + Kd/(T1+dt) · (e[k] − e[k−1])
+    kd, t1, dt = 0.3e-3, 0.5e-3, 200e-6
+    lag, gain = t1 / (t1 + dt), kd / (t1 + dt)  # 5/7 and 3/7
+    assert e[0] > 1000  # the setpoint step, from e = 0 at rest, falls on the first sample
+    assert u[0] == pytest.approx(gain * e[0])
+    assert u[1:] == pytest.approx(lag * u[:-1] + gain * np.diff(e))
 
 
 def test_current_limit_per_coil():
