@@ -282,6 +282,18 @@ def test_tpdo2_carries_the_sensor_after_linearization(rig_e04: Rig):
     assert linearized == valve.read(0x2100, 6) != valve.read(0x2100, 5)
 
 
+def test_rpdo2_carries_the_external_sensor_value_over_can(rig_e04: Rig):
+    rig = rig_e04
+    rig.exchange("60A 2B 05 20 01 0E 00 00 00", "58A 60 05 20 01 00 00 00 00")  # SENSTYPE 14
+    rig.exchange("60A 2B 01 18 05 0A 00 00 00", "58A 60 01 18 05 00 00 00 00")  # TPDO2 10 ms
+    assert _start(rig) == ["18A 00 02 00 00", "28A 00 00 00 00"]
+    rig.send("30A 60 F0")  # RPDO2 (default COB-ID 0x300 + node): 0x2100/2 = 0xF060 = -4000
+    rig.barrier()
+    rig.valve.advance(0.01)  # the sensor chain takes it in the next 1 ms cycle
+    assert (rig.valve.read(0x2100, 1), rig.valve.read(0x2100, 6)) == (-4000, -4000)
+    assert "28A 60 F0 60 F0" in rig.drain()  # TPDO2: raw and linearized value
+
+
 def test_e02_valve_never_sends_tpdo2(rig: Rig):
     rig.exchange("60A 2B 01 18 05 0A 00 00 00", "58A 60 01 18 05 00 00 00 00")
     frames = _start(rig)
