@@ -154,11 +154,17 @@ def test_emcy_on_fault_history_and_zero_emcy_when_cleared(rig: Rig):
     rig.exchange("60A 40 03 10 00 00 00 00 00", "58A 4F 03 10 00 00 00 00 00")
 
 
-def test_no_emcy_while_stopped_and_none_when_invalid(rig: Rig):
-    rig.exchange("60A 23 14 10 00 8A 00 00 80", "58A 60 14 10 00 00 00 00 00")  # EMCY invalid
-    rig.exchange("60A 2B 17 10 00 00 00 00 00", "58A 60 17 10 00 00 00 00 00")
+@pytest.mark.parametrize("case", ["stopped", "invalid"])
+def test_no_emcy_while_stopped_and_none_when_invalid(rig: Rig, case: str):
+    rig.exchange("60A 2B 17 10 00 00 00 00 00", "58A 60 17 10 00 00 00 00 00")  # no heartbeat
+    if case == "stopped":
+        rig.send("000 02 0A")  # table 7-4: no EMCY while STOPPED
+        rig.wait_for_nmt_state("stopped")
+    else:
+        rig.exchange("60A 23 14 10 00 8A 00 00 80", "58A 60 14 10 00 00 00 00 00")  # bit 31
     rig.valve.inject(Fault.COIL_A_OPEN)
     rig.valve.advance(0.1)
+    assert rig.valve.status().error_code == 0x5411  # the error is there, only not sent
     assert rig.drain() == []
 
 
