@@ -387,3 +387,10 @@ COMMUNICATION = [
     else p
     for p in COMMUNICATION
 ]
+
+# Table 7-13 gives TPDO2 entry 2 as 0x21000510 but calls it "after linearization" (0x2100/6).
+_DECISIONS = {"TPDO2MAP2": "table 7-13 (entry 2 after linearization: decision, docs/canopen.md)"}
+COMMUNICATION = [
+    dataclasses.replace(p, source=_DECISIONS[p.mnemonic]) if p.mnemonic in _DECISIONS else p
+    for p in COMMUNICATION
+]
