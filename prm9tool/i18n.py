@@ -45,7 +45,8 @@ def system_language() -> str:
 def set_language(language: str) -> None:
     """Switch the program language; raises ValueError for a language we do not ship.
 
-    Must be called with a QCoreApplication running. English removes every translator.
+    Must be called with a QCoreApplication running. English, the source language, installs
+    only its plural forms ("1 value", "2 values" for the source text "%n value(s)").
     """
     if language not in LANGUAGES:
         raise ValueError(f"unknown language {language!r}; choose one of {', '.join(LANGUAGES)}")
@@ -72,14 +73,14 @@ def _installed() -> list[QTranslator]:
 
 
 def _load_translators(language: str) -> list[QTranslator]:
-    if language == DEFAULT_LANGUAGE:
-        return []
     ours = QTranslator()
     if not ours.load(f"prm9tool_{language}", str(translations_dir())):
         raise FileNotFoundError(
             f"translation prm9tool_{language}.qm is missing in {translations_dir()}"
         )
     result = [ours]
+    if language == DEFAULT_LANGUAGE:
+        return result  # plural forms only: Qt's own texts are English already
     qt_dir = QLibraryInfo.path(QLibraryInfo.LibraryPath.TranslationsPath)
     qtbase = QTranslator()
     if qtbase.load(f"qtbase_{language}", qt_dir):

@@ -17,6 +17,7 @@ from prm9tool.views.parameter_model import Column
 
 ROOT = Path(__file__).resolve().parent.parent
 TS = {lang: ROOT / "translations" / f"prm9tool_{lang}.ts" for lang in ("de", "cs")}
+EN_TS = ROOT / "translations" / "prm9tool_en.ts"  # English plural forms only
 
 
 def _tool(name: str) -> str:
@@ -66,13 +67,25 @@ def test_the_translations_cover_every_text_of_the_program(tmp_path):
     wanted = set(_messages(fresh))
     for language, path in TS.items():
         assert wanted - set(_messages(path)) == set(), language
+    plurals = {key for key, message in _messages(fresh).items() if message.get("numerus")}
+    assert plurals and set(_messages(EN_TS)) == plurals
 
 
-@pytest.mark.parametrize("language", ["de", "cs"])
+@pytest.mark.parametrize(("language", "forms"), [("en", 2), ("de", 2), ("cs", 3)])
+def test_plural_messages_have_every_form_of_the_language(language, forms):
+    plurals = [m for m in _messages(TS.get(language, EN_TS)).values() if m.get("numerus")]
+    assert plurals
+    for message in plurals:
+        texts = [form.text or "" for form in message.iter("numerusform")]
+        assert len(texts) == forms and all("%n" in text for text in texts), texts
+        assert message.find("translation").get("type") != "unfinished"
+
+
+@pytest.mark.parametrize("language", ["de", "cs", "en"])
 def test_shipped_qm_files_are_compiled_from_the_ts_files(tmp_path, language):
     compiled = tmp_path / f"prm9tool_{language}.qm"
     subprocess.run(
-        [_tool("pyside6-lrelease"), str(TS[language]), "-qm", str(compiled)],
+        [_tool("pyside6-lrelease"), str(TS.get(language, EN_TS)), "-qm", str(compiled)],
         check=True,
         capture_output=True,
         timeout=60,

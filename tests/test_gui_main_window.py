@@ -306,7 +306,29 @@ def test_canopen_window_of_the_toolbar_is_gated_by_the_access_level(qtbot, tmp_p
 def test_status_bar_shows_lost_stream_samples_only_while_there_are_some(window):
     label = window.status.lost_label
     assert label.isHidden()
+    window.connection.samples_lost_changed.emit(1)
+    assert not label.isHidden() and label.text() == "1 sample lost"
     window.connection.samples_lost_changed.emit(120)
-    assert not label.isHidden() and label.text() == "120 sample(s) lost"
+    assert label.text() == "120 samples lost"
     window.connection.samples_lost_changed.emit(0)
     assert label.isHidden()
+
+
+@pytest.mark.parametrize(
+    ("language", "one", "two"),
+    [
+        ("en", "1 value in the document differs", "2 values in the document differ"),
+        ("de", "1 Wert im Dokument weicht", "2 Werte im Dokument weichen"),
+        ("cs", "1 hodnota v dokumentu se liší", "2 hodnoty v dokumentu se liší"),
+    ],
+)
+def test_counts_use_the_plural_forms_of_the_language(window, language, one, two):
+    from prm9tool.views.online_dialogs import OnlineDiffDialog
+
+    window.set_language(language)
+    valve = {"LIMTA": 2400, "DTAMP": 2458}
+    single = OnlineDiffDialog({"LIMTA": 2000, "DTAMP": 2458}, valve, E02, E02, window)
+    double = OnlineDiffDialog({"LIMTA": 2000, "DTAMP": 1000}, valve, E02, E02, window)
+    assert single.intro.text().startswith(one)
+    assert double.intro.text().startswith(two)
+    assert "(s)" not in single.intro.text() + double.intro.text()

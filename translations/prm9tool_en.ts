@@ -1,0 +1,51 @@
+<?xml version="1.0" encoding="utf-8"?>
+<!DOCTYPE TS>
+<TS version="2.1" language="en_US">
+    <context>
+        <name>FileWorkflow</name>
+        <message numerus="yes">
+            <source>“{0}” was opened; %n warning(s) were found.</source>
+            <translation>
+                <numerusform>“{0}” was opened; %n warning was found.</numerusform>
+                <numerusform>“{0}” was opened; %n warnings were found.</numerusform>
+            </translation>
+        </message>
+        <message numerus="yes">
+            <source>%n more problem(s) in the details.</source>
+            <translation>
+                <numerusform>%n more problem in the details.</numerusform>
+                <numerusform>%n more problems in the details.</numerusform>
+            </translation>
+        </message>
+    </context>
+    <context>
+        <name>MainStatusBar</name>
+        <message numerus="yes">
+            <source>%n sample(s) lost</source>
+            <translation>
+                <numerusform>%n sample lost</numerusform>
+                <numerusform>%n samples lost</numerusform>
+            </translation>
+        </message>
+    </context>
+    <context>
+        <name>OnlineDiffDialog</name>
+        <message numerus="yes">
+            <source>%n value(s) in the document differ from the valve.</source>
+            <translation>
+                <numerusform>%n value in the document differs from the valve.</numerusform>
+                <numerusform>%n values in the document differ from the valve.</numerusform>
+            </translation>
+        </message>
+    </context>
+    <context>
+        <name>ValveWorkflow</name>
+        <message numerus="yes">
+            <source>%n parameter(s) written, verified and stored</source>
+            <translation>
+                <numerusform>%n parameter written, verified and stored</numerusform>
+                <numerusform>%n parameters written, verified and stored</numerusform>
+            </translation>
+        </message>
+    </context>
+</TS>
