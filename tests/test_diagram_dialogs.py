@@ -371,3 +371,17 @@ def test_sensor_offset_and_gain_shape_the_sensor_line(qtbot, setup):
     type_into(dialog.fields["SENSGAIN"], "0.5")  # below the catalogue's minimum 16383 raw
     assert "outside the allowed range" in dialog.error_label.text()
     assert s.doc.display("SENSGAIN") == "2"
+
+
+def test_basic_all_ramps_takes_the_value_it_showed_before_the_ramps_differed(qtbot, setup):
+    s = setup(E02, Access.BASIC)
+    ramps = ("RAMPSETPOSUP", "RAMPSETPOSDOWN", "RAMPSETNEGUP", "RAMPSETNEGDOWN")
+    s.doc.set_values(dict.fromkeys(ramps, 300), "equal ramps")
+    dialog = open_dialog(qtbot, s, "ramps")
+    assert dialog.all_field.text() == "300"
+    s.doc.set_value("RAMPSETNEGDOWN", 250)  # e.g. at Expert level or in the parameter list
+    assert dialog.all_field.text() == "" and "differ" in dialog.all_field.placeholderText()
+    type_into(dialog.all_field, "300")  # the value the field showed before it was emptied
+    assert {s.doc.value(mn) for mn in dialog.present} == {300}
+    assert dialog.all_field.text() == "300"
+    assert "differ" not in dialog.all_field.placeholderText()

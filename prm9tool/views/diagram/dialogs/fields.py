@@ -53,8 +53,17 @@ class ValueField(QLineEdit):
     def show_value(self, doc: ParameterDocument) -> None:
         """Display the document's value (does not emit edit signals)."""
         self._shown = self.param.format_display(doc.value(self.mnemonic))
+        self.setPlaceholderText(range_text(self.param))
         with QSignalBlocker(self):
             self.setText(self._shown)
+        self.setStyleSheet("")
+
+    def show_blank(self, placeholder: str) -> None:
+        """Show no value (e.g. the ramps it sets together differ): any entry is then new."""
+        self._shown = ""
+        with QSignalBlocker(self):
+            self.clear()
+        self.setPlaceholderText(placeholder)
         self.setStyleSheet("")
 
     def update_access(self, access: AccessModel, read_only: bool) -> None:

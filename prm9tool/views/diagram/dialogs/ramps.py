@@ -58,8 +58,7 @@ class RampsDialog(BlockDialog):
         if len(times) == 1:
             self.all_field.show_value(self.doc)
         else:
-            self.all_field.clear()
-            self.all_field.setPlaceholderText(self.tr("the ramps differ"))
+            self.all_field.show_blank(self.tr("the ramps differ"))
         self.all_field.update_access(self.access, False)
         self.note.setText(
             self.tr(
