@@ -82,17 +82,24 @@ def test_unplugged_at_every_point_of_an_upload(tmp_path):
 STEP_TEXT = {"write": "writing the parameters", "verify": "reading them back", "store": "storing"}
 
 
-def test_every_step_can_fail_and_is_named(tmp_path):
+def test_every_step_can_fail_and_is_named_with_how_far_the_upload_got(tmp_path):
     total = reports_of_a_full_upload(tmp_path)
-    steps = set()
+    upload = new_values(TypeKey.parse(E04).variant)
+    reached: dict[str, list[tuple[int, bool]]] = {}
     for survived in range(0, total, 1):
         valve = EmulatedValve(E04, 1)
         session, transport = open_session(valve)
         transport.faults = LinkFaults(die_after=transport.reports_on_link + survived)
         with pytest.raises(DeviceDisconnectedError) as caught:
-            session.upload(new_values(session.variant))
-        steps.add(caught.value.step)
-    assert steps == {"write", "verify", "store"}
+            session.upload(upload)
+        error = caught.value
+        reached.setdefault(error.step, []).append((error.written, error.verified))
+    assert set(reached) == {"write", "verify", "store"}
+    written = [count for count, _ in reached["write"]]
+    assert written == sorted(written) and 0 == written[0] < written[-1] < len(upload)
+    assert not any(verified for _, verified in reached["write"])
+    assert set(reached["verify"]) == {(len(upload), False)}
+    assert set(reached["store"]) == {(len(upload), True)}  # all written and read back equal
 
 
 def test_after_the_link_died_every_request_fails_at_once(tmp_path):

@@ -155,17 +155,19 @@ class ValveSession:
         """Write all → read back and compare → store. Only a verified set is stored.
 
         A refusal or mismatch returns a result with ``failed_step``; a broken link raises the
-        communication error with the failed step named (``step`` attribute). Either way nothing
-        was stored unless ``stored`` is True. After any failure (also a cancel) the session
-        asks the valve to reload its stored parameters into its working values, so it does not
-        run on with a half-written set; the result or the error says whether that worked.
+        communication error with the failed step named and how far the upload got: attributes
+        ``step``, ``written`` (values the valve confirmed), ``verified`` (all read back equal)
+        and ``reloaded``. Either way nothing was stored unless ``stored`` is True. After any
+        failure (also a cancel) the session asks the valve to reload its stored parameters into
+        its working values, so it does not run on with a half-written set; the result or the
+        error says whether that worked.
         """
         start = time.monotonic()
         params = self._checked(values)
         total = 2 * len(params) + 1
-        step, written = "write", 0
+        step, writing, verified = "write", Steps(progress, total, 0, "write"), False
         try:
-            written = self._entries.write(params, values, Steps(progress, total, 0, step), cancel)
+            written = self._entries.write(params, values, writing, cancel)
             step = "verify"
             verify = Steps(progress, total, len(params), step)
             actual = self._entries.read(params, verify, cancel)
@@ -176,7 +178,7 @@ class ValveSession:
             }
             if mismatches:
                 return self._failed(written, mismatches, start, "verify")
-            step = "store"
+            step, verified = "store", True
             check_cancel(cancel, step)
             self.store()
         except RefusedError as refused:
@@ -185,7 +187,7 @@ class ValveSession:
         except OperationCancelledError as exc:
             raise OperationCancelledError(exc.step, reload_outcome(self._revert())) from exc
         except CommunicationError as exc:
-            raise _step_error(exc, step, self._revert()) from exc
+            raise _step_error(exc, step, self._revert(), writing.done, verified) from exc
         if progress:
             progress(total, total, "store")
         return UploadResult(written, True, True, {}, _since(start), None)
@@ -331,8 +333,13 @@ def reload_outcome(problem: str | None) -> str:
     )
 
 
-def _step_error(exc: CommunicationError, step: str, problem: str | None) -> CommunicationError:
-    """``exc`` with the failed step and the valve's state named; ``problem``: reload failure."""
+def _step_error(
+    exc: CommunicationError, step: str, problem: str | None, written: int, verified: bool
+) -> CommunicationError:
+    """``exc`` with the failed step and the valve's state named; ``problem``: reload failure.
+
+    ``written`` and ``verified`` say how far the upload got; they travel as attributes.
+    """
     number = list(STEPS).index(step) + 1
     if step != "store":
         outcome = f"nothing was stored; {reload_outcome(problem)}"
@@ -350,6 +357,8 @@ def _step_error(exc: CommunicationError, step: str, problem: str | None) -> Comm
     error = type(exc)(f"upload failed while {STEPS[step]} (step {number} of 3): {exc}; {outcome}")
     error.step = step  # type: ignore[attr-defined]
     error.reloaded = problem is None  # type: ignore[attr-defined]
+    error.written = written  # type: ignore[attr-defined]
+    error.verified = verified  # type: ignore[attr-defined]
     return error
 
 
