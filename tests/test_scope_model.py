@@ -242,6 +242,48 @@ def test_unsettled_response_has_no_settling_time_and_flat_data_no_figures():
     assert step_figures(t, np.ones_like(t), np.ones_like(t)) is None
 
 
+def test_a_flat_noisy_response_gives_no_figures():
+    t, ref, _ = _first_order(0.01)
+    noisy = 20.0 + np.random.default_rng(1).normal(0.0, 0.24, len(t))
+    assert step_figures(t, noisy, ref) is None  # the setpoint stepped, the response did not
+    assert step_figures(t, noisy) is None
+
+
+def test_a_response_that_hardly_follows_the_reference_gives_no_figures():
+    t, ref, _ = _first_order(0.01)
+    creeping = 20.0 + 0.5 * t  # 0.25 of a 40 step: under the 2 % band
+    assert step_figures(t, creeping, ref) is None
+    assert step_figures(t, creeping, ref, comparable=False) is not None  # other unit: no check
+
+
+def test_step_figures_stand_0_6_percent_noise():
+    tau = 0.01
+    t, ref, y = _first_order(tau)
+    noisy = y + np.random.default_rng(7).normal(0.0, 0.006 * 40.0, len(t))
+    for fig in (step_figures(t, noisy, ref), step_figures(t, noisy)):
+        assert fig is not None
+        assert fig.initial == pytest.approx(20.0, abs=0.1)
+        assert fig.final == pytest.approx(60.0, abs=0.1)
+        assert fig.overshoot == 0.0  # the noise peaks are no overshoot
+        assert fig.rise_time == pytest.approx(tau * math.log(9), rel=0.05)
+        assert fig.settling_time == pytest.approx(tau * math.log(50), rel=0.2)
+    zeta, wn = 0.5, 60.0
+    t, ref, y = _second_order(zeta, wn)
+    noisy = y + np.random.default_rng(3).normal(0.0, 0.006 * 10.0, len(t))
+    fig = step_figures(t, noisy, ref)
+    assert fig is not None
+    assert fig.overshoot == pytest.approx(100 * math.exp(-math.pi * zeta / math.sqrt(0.75)), abs=1)
+
+
+def test_without_a_reference_the_initial_level_comes_from_before_the_step():
+    t, _, y = _first_order(0.01, t_step=0.01)  # a short pre-trigger: the step at 2 %
+    fig = step_figures(t, y)
+    assert fig is not None
+    assert fig.initial == pytest.approx(20.0)
+    assert fig.t_step == pytest.approx(0.01, abs=0.001)
+    assert fig.rise_time == pytest.approx(0.01 * math.log(9), abs=2 / RATE)
+
+
 # --- CSV ---------------------------------------------------------------------------------------
 def test_csv_has_units_in_the_header_and_one_row_per_sample():
     signals = [BY_KEY["position_actual"], BY_KEY["current_a"], BY_KEY["temperature"]]

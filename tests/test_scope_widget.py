@@ -227,6 +227,21 @@ def test_step_figures_are_shown_for_the_captured_step(scope, conn):
     assert figures["overshoot"].text() == "0.0 %"
 
 
+def test_a_response_that_does_not_follow_the_step_gets_no_figures(scope, conn):
+    scope.preselect("demand")
+    scope.preselect("position_actual")
+    scope.controls.time_window.setCurrentIndex(scope.controls.time_window.findData(0.5))
+    scope.start()
+    t = np.arange(2500) / 5000.0
+    stuck = np.random.default_rng(5).normal(0.0, 40.0, len(t)).round()  # noise only
+    conn.samples_received.emit(np.column_stack([np.where(t >= 0.1, 8192, 0), stuck]))
+    scope._redraw()
+    scope.stop()
+    figures = scope.step_panel.figures
+    assert figures["rise"].text() == figures["overshoot"].text() == "—"
+    assert "No response to the step" in scope.step_panel.region.text()
+
+
 def test_csv_export_of_the_whole_recording_and_of_the_visible_window(scope, conn, tmp_path):
     scope.preselect("demand")
     scope.preselect("current_a")

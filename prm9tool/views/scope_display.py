@@ -22,6 +22,7 @@ from prm9tool.scope import (
     TriggerMode,
     TriggerSettings,
     cursor_readout,
+    find_step,
     step_figures,
 )
 from prm9tool.views.scope_plot import ScopePlot
@@ -184,7 +185,8 @@ class ScopeDisplay(QObject):
         else:
             x0, x1 = self.plot.x_range()
             region = self.tr("the visible window")
-        self.steps.show_figures(self.figures(x0, x1), region)
+        figures = self.figures(x0, x1)
+        self.steps.show_figures(figures, region, figures is None and self._stepped(x0, x1))
 
     def figures(self, x0: float, x1: float) -> StepFigures | None:
         """Step-response figures of the samples between times ``x0`` and ``x1``."""
@@ -194,4 +196,14 @@ class ScopeDisplay(QObject):
             return None
         inside = (t >= x0) & (t <= x1)
         ref = values[inside, reference] if reference is not None else None
-        return step_figures(t[inside], values[inside, response], ref)
+        same_unit = self.steps.units_match()
+        return step_figures(t[inside], values[inside, response], ref, comparable=same_unit)
+
+    def _stepped(self, x0: float, x1: float) -> bool:
+        """True when the reference channel steps between ``x0`` and ``x1``."""
+        t, values = self.data()
+        reference = self.steps.reference_slot()
+        if reference is None or reference >= values.shape[1]:
+            return False
+        inside = (t >= x0) & (t <= x1)
+        return find_step(t[inside], values[inside, reference]) is not None

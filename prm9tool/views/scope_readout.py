@@ -176,14 +176,34 @@ class StepPanel(QGroupBox):
         slot = self.response.currentData()
         return None if slot is None else int(slot)
 
-    def show_figures(self, figures: StepFigures | None, region: str) -> None:
-        """Show ``figures`` computed on ``region`` (a description like 'between the cursors')."""
+    def units_match(self) -> bool:
+        """True when the reference and the response have the same unit (or no reference)."""
+        ref, resp = self.reference_slot(), self.response_slot()
+        if ref is None or resp is None or max(ref, resp) >= len(self._units):
+            return True
+        return self._units[ref] == self._units[resp]
+
+    def show_figures(
+        self, figures: StepFigures | None, region: str, unanswered: bool = False
+    ) -> None:
+        """Show ``figures`` computed on ``region`` (a description like 'between the cursors');
+        ``unanswered``: the reference stepped but the response did not follow."""
         slot = self.response_slot()
         unit = self._units[slot] if slot is not None and slot < len(self._units) else ""
         if figures is None:
             for label in self.figures.values():
                 label.setText("—")
-            self.region.setText(self.tr("No step found in {0}.").format(region) if region else "")
+            if not region:
+                self.region.setText("")
+            elif unanswered:
+                self.region.setText(
+                    self.tr(
+                        "No response to the step in {0}: the response stays flat or within "
+                        "its noise."
+                    ).format(region)
+                )
+            else:
+                self.region.setText(self.tr("No step found in {0}.").format(region))
             return
         size = figures.final - figures.initial
         self.figures["step"].setText(
