@@ -72,7 +72,7 @@ def _check_usage(args: argparse.Namespace) -> None:
         )
     if not args.download and not args.batch:
         raise BatchError(ExitCode.USAGE, "--batch needs FILE.prm (or --download OUT.prm)")
-    if args.download and (args.all or len(args.device) + len(args.emulator) > 1):
+    if args.download and (args.all or len(args.emulator) > 1):  # --device: checked in select
         raise BatchError(ExitCode.USAGE, "--download saves one valve: select exactly one")
     if args.report and not Path(args.report).parent.is_dir():
         folder = Path(args.report).parent
@@ -124,7 +124,7 @@ def select(args: argparse.Namespace) -> list[DeviceEntry]:
         for wanted in args.device:
             chosen += _match(wanted, usb)
         if args.all:
-            chosen += [e for e in usb if e not in chosen]
+            chosen += usb
     elif not chosen:
         usb = _usb(required=False)
         if len(usb) > 1:
@@ -135,7 +135,15 @@ def select(args: argparse.Namespace) -> list[DeviceEntry]:
     if not chosen:
         reason = usb_unavailable_reason()
         raise BatchError(ExitCode.NO_DEVICE, "no valve found" + (f" ({reason})" if reason else ""))
-    return chosen
+    return _unique(chosen)
+
+
+def _unique(entries: list[DeviceEntry]) -> list[DeviceEntry]:
+    """Each valve once, in the order first named (``--device 41 --device /dev/hidraw0``)."""
+    by_id: dict[str, DeviceEntry] = {}
+    for entry in entries:
+        by_id.setdefault(entry.device_id, entry)
+    return list(by_id.values())
 
 
 def _match(wanted: str, usb: list[DeviceEntry]) -> list[DeviceEntry]:
@@ -207,10 +215,10 @@ class _UploadJob:
                 self._run(session, record)
         except CommunicationError as exc:
             record.result, record.error = "communication-error", str(exc)
-            record.failed_step = getattr(exc, "step", record.failed_step)
+            _copy_progress(exc, record)
         except Prm9Error as exc:  # a refused read during the backup, an unwritable backup …
             record.result, record.error = "communication-error", str(exc)
-        record.duration_s = clock()
+        clock.finish(record)
         return record
 
     def _run(self, session: ValveSession, record: ValveRecord) -> None:
@@ -249,6 +257,14 @@ class _UploadJob:
         if not result.stored:
             problem = _mismatch_text(result.failed_step, result.mismatches)
             record.error = f"{problem}; {reload_outcome(result.reload_error)}"
+
+
+def _copy_progress(exc: CommunicationError, record: ValveRecord) -> None:
+    """How far a broken upload got (the attributes ValveSession.upload puts on its error)."""
+    record.failed_step = getattr(exc, "step", record.failed_step)
+    record.parameters_written = getattr(exc, "written", record.parameters_written)
+    if getattr(exc, "verified", False):
+        record.verification = "passed"
 
 
 def _mismatch_text(step: str | None, mismatches: Mapping[str, tuple[object, object]]) -> str:
@@ -291,15 +307,18 @@ def _download(args: argparse.Namespace, records: list[ValveRecord]) -> ExitCode:
             values = session.download(printer.callback(str(record.serial)))
             info = session.info
     except (CommunicationError, Prm9Error) as exc:
-        record.error, record.duration_s = str(exc), clock()
+        record.error = str(exc)
+        clock.finish(record)
         raise BatchError(ExitCode.COMMUNICATION, f"download failed: {exc}") from exc
     contents = PrmContents(TypeKey.parse(info.type_key), values, info.serial, info.firmware or None)
     try:
         write_file(contents, args.download)
     except FileFormatError as exc:
         record.error = str(exc)
+        clock.finish(record)
         raise BatchError(ExitCode.INVALID_FILE, f"cannot save {args.download}:\n{exc}") from exc
-    record.result, record.output, record.duration_s = "downloaded", args.download, clock()
+    record.result, record.output = "downloaded", args.download
+    clock.finish(record)
     record.parameters_written = 0
     printer.say(str(record.serial), f"saved {len(values)} parameters to {args.download}")
     return ExitCode.OK

@@ -46,6 +46,8 @@ class ValveRecord:
     mismatches: dict[str, dict[str, Any]] = field(default_factory=dict)
     failed_step: str | None = None
     duration_s: float = 0.0
+    started: str | None = None  # UTC, ISO 8601 with milliseconds
+    finished: str | None = None
     backup: str | None = None
     output: str | None = None  # --download: the file written
     changes: int | None = None  # --dry-run: parameters that an upload would change
@@ -108,10 +110,20 @@ class ProgressPrinter:
 
 
 class Stopwatch:
-    """Seconds since creation."""
+    """Seconds since creation, and when that was."""
 
     def __init__(self) -> None:
         self._start = time.monotonic()
+        self.started = utc_now()
 
     def __call__(self) -> float:
         return round(time.monotonic() - self._start, 3)
+
+    def finish(self, record: ValveRecord) -> None:
+        """Put this valve's start, end and duration into ``record``."""
+        record.started, record.finished, record.duration_s = self.started, utc_now(), self()
+
+
+def utc_now() -> str:
+    """The current time, UTC, ISO 8601 with milliseconds."""
+    return datetime.now(UTC).isoformat(timespec="milliseconds")

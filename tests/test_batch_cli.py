@@ -11,10 +11,16 @@ import os
 import re
 import subprocess
 import sys
+from datetime import datetime
 from pathlib import Path
 
 import pytest
 
+from prm9tool import batch
+from prm9tool.cli import ExitCode, main
+from prm9tool.device import factory
+from prm9tool.device.session import ValveSession
+from prm9tool.device.transport.emulator import EmulatorTransport, LinkFaults
 from prm9tool.prmfile import PrmContents, read_file, write_file
 from prm9tool.typekey import TypeKey
 
@@ -147,11 +153,18 @@ def test_invalid_file_exits_3_and_uploads_nothing(tmp_path):
     source = tuned_file(tmp_path)
     text = source.read_text(encoding="utf-8").replace("LIMTA = 1500", "LIMTA = 99999")
     source.write_text(text, encoding="utf-8")
-    result = run(tmp_path, "--batch", str(source), "--emulator", f"{E04}:3")
+    result = run(tmp_path, "--batch", str(source), "--emulator", f"{E04}:3", "--report", "r.json")
     assert result.returncode == 3
     assert "is not a valid parameter file" in result.stderr
     assert "LIMTA" in result.stderr and f"{source.name}:" in result.stderr
     assert not (tmp_path / "data" / "emulator").exists()
+    data = report(tmp_path, "r.json")  # written although the run stopped before any valve
+    assert (data["mode"], data["file"], data["exit_code"], data["valves"]) == (
+        "upload",
+        str(source),
+        3,
+        [],
+    )
 
 
 def test_no_device_exits_4(tmp_path):
@@ -324,3 +337,77 @@ def test_emulated_serial_of_another_type_exits_2(tmp_path):
     result = run(tmp_path, "--batch", str(source), "--emulator", f"{E02}:16")
     assert result.returncode == 2
     assert f"belongs to a {E04} valve, not to {E02}" in result.stderr
+
+
+def test_a_valve_named_twice_is_uploaded_to_once(tmp_path):
+    source = tuned_file(tmp_path)
+    names = ("41", "/dev/hidraw0", "usb:/dev/hidraw0")
+    args = ["--batch", str(source), "--all", "--report", "r.json"]
+    result = run(
+        tmp_path, *args, *(a for n in names for a in ("--device", n)), fake_hid=f"{E04},41"
+    )
+    assert result.returncode == 0, result.stderr
+    records = report(tmp_path, "r.json")["valves"]
+    assert [(r["device_id"], r["serial"], r["result"]) for r in records] == [
+        ("usb:/dev/hidraw0", 41, "ok")
+    ]
+    lines = result.stderr.splitlines()
+    assert sum(line.endswith(": backing up") for line in lines) == 1  # one upload, not two
+    assert sum(line.startswith("[41] ok ") for line in lines) == 1
+
+
+@pytest.mark.parametrize("wanted", ["/dev/hidraw1", "usb:/dev/hidraw1"])
+def test_device_selects_a_valve_by_hid_path_or_device_id(tmp_path, wanted):
+    source, fake = tuned_file(tmp_path), f"{E04},71;{E04},72"
+    args = ("--batch", str(source), "--device", wanted, "--report", "r.json")
+    result = run(tmp_path, *args, fake_hid=fake)
+    assert result.returncode == 0, result.stderr
+    records = report(tmp_path, "r.json")["valves"]
+    assert [(r["device_id"], r["serial"], r["result"]) for r in records] == [
+        ("usb:/dev/hidraw1", 72, "ok")
+    ]
+    download = ("--batch", "--download", "out.prm", "--device", wanted)
+    result = run(tmp_path, *download, fake_hid=fake)
+    assert result.returncode == 0, result.stderr
+    assert read_file(tmp_path / "out.prm").serial == 72
+
+
+def test_unplugged_at_the_store_step_the_report_keeps_what_was_written_and_verified(
+    tmp_path, monkeypatch
+):
+    source = tuned_file(tmp_path)
+    links: list[EmulatorTransport] = []
+    die_after: list[int] = []
+
+    def open_on_a_faulty_link(entry):
+        transport = EmulatorTransport(factory.emulated_valve(entry.type_key, entry.serial))
+        transport.faults = LinkFaults(die_after=die_after[0] if die_after else None)
+        links.append(transport)
+        return ValveSession(transport, entry.device_id)
+
+    monkeypatch.setattr(batch, "_open", open_on_a_faulty_link)
+    try:
+        assert main(["--batch", str(source), "--emulator", f"{E04}:91"]) == ExitCode.OK
+        die_after.append(links[0].reports_on_link - 2)  # the store request is the first lost
+        args = ["--batch", str(source), "--emulator", f"{E04}:92"]
+        assert main([*args, "--report", str(tmp_path / "r.json")]) == ExitCode.COMMUNICATION
+    finally:
+        factory.forget_emulated_valves()
+    record = report(tmp_path, "r.json")["valves"][0]
+    assert (record["result"], record["failed_step"]) == ("communication-error", "store")
+    assert record["parameters_written"] == len(read_file(source).values)
+    assert record["verification"] == "passed"
+    assert "upload failed while storing (step 3 of 3)" in record["error"]
+
+
+def test_valves_are_uploaded_in_parallel(tmp_path):
+    source = tuned_file(tmp_path)
+    valves = [a for serial in (101, 102, 103, 104) for a in ("--emulator", f"{E04}:{serial}")]
+    result = run(tmp_path, "--batch", str(source), *valves, "--report", "r.json")
+    assert result.returncode == 0, result.stderr
+    records = report(tmp_path, "r.json")["valves"]
+    started = [datetime.fromisoformat(r["started"]) for r in records]
+    finished = [datetime.fromisoformat(r["finished"]) for r in records]
+    assert max(started) < min(finished)  # every valve was busy while every other one was
+    wall = (max(finished) - min(started)).total_seconds()
+    assert wall < 0.5 * sum(r["duration_s"] for r in records)
