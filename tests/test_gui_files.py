@@ -111,17 +111,48 @@ def test_undo_redo_every_edit(window):
     assert window.doc.value("LIMTA") == 2000
 
 
-def test_export_pdf_holds_the_parameters(window, tmp_path, monkeypatch):
+def _pdf_text_and_images(path) -> tuple[list[str], list[tuple[int, int]]]:
+    """The words of a PDF and the (width, height) of its images."""
+    from pypdf import PdfReader
+
+    reader = PdfReader(path)
+    words = " ".join(page.extract_text() for page in reader.pages).split()
+    images = []
+    for page in reader.pages:
+        for ref in page["/Resources"].get("/XObject", {}).values():
+            xobject = ref.get_object()
+            if xobject.get("/Subtype") == "/Image":
+                images.append((int(xobject["/Width"]), int(xobject["/Height"])))
+    return words, images
+
+
+def test_export_pdf_holds_the_parameters_and_the_diagram(window, tmp_path, monkeypatch):
     target = tmp_path / "record"
     window.doc.set_value("LIMTA", 1234)
     monkeypatch.setattr(QFileDialog, "getSaveFileName", lambda *a, **k: (str(target), ""))
     window.commands["export_pdf"].trigger()
     pdf = target.with_suffix(".pdf")
     assert pdf.read_bytes().startswith(b"%PDF")
-    text = window.records.record().toPlainText()
+    words, images = _pdf_text_and_images(pdf)
     for needle in (E02, "LIMTA", "1234", "mA", "DYNFREQ", "Basic", "untitled"):
-        assert needle in text
-    assert pdf.stat().st_size > 20_000  # text, table and the diagram picture
+        assert needle in words
+    row = words[words.index("LIMTA") : words.index("LIMTB")]  # mnemonic, description, value, unit
+    assert row[-2:] == ["1234", "mA"]
+    assert any(width > 1000 and height > 300 for width, height in images)  # the diagram
+
+
+def test_the_record_holds_the_diagram_picture(window):
+    from PySide6.QtGui import QImage, QTextDocument
+
+    from prm9tool.views.record import DIAGRAM_URL
+
+    record = window.records.record()
+    picture = record.resource(QTextDocument.ResourceType.ImageResource, QUrl(DIAGRAM_URL))
+    assert isinstance(picture, QImage) and not picture.isNull()
+    assert picture.width() > 1000 and picture.height() > 300
+    assert DIAGRAM_URL in record.toHtml()
+    colours = {picture.pixel(x, y) for x in range(0, picture.width(), 9) for y in range(0, 300, 9)}
+    assert len(colours) > 8  # ink, not a blank page
 
 
 def test_print_goes_through_the_print_dialog(window, tmp_path, monkeypatch):
