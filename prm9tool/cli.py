@@ -13,7 +13,7 @@ from enum import IntEnum
 
 
 class ExitCode(IntEnum):
-    """Documented exit codes (README, docs/batch.md)."""
+    """Documented exit codes (``--help``, README "Headless production mode", docs/batch.md)."""
 
     OK = 0
     VERIFY_FAILED = 1
@@ -24,6 +24,26 @@ class ExitCode(IntEnum):
     COMMUNICATION = 6
 
 
+EXIT_CODE_TEXT = {
+    ExitCode.OK: "done: every valve uploaded and verified (or listed, downloaded, file valid)",
+    ExitCode.VERIFY_FAILED: "a valve read back differently or refused a value; nothing stored",
+    ExitCode.USAGE: "usage error (options, several valves and no selection, ...)",
+    ExitCode.INVALID_FILE: "invalid *.prm file (or --download cannot write its file)",
+    ExitCode.NO_DEVICE: "no valve found, or none with the --device ID",
+    ExitCode.TYPE_MISMATCH: "the file's type key does not fit the valve",
+    ExitCode.COMMUNICATION: "communication error (valve gone, timeout, backup not written)",
+}
+# Options of the headless production mode that mean nothing anywhere else.
+BATCH_ONLY = {
+    "--download": "download",
+    "--report": "report",
+    "--dry-run": "dry_run",
+    "--force-type": "force_type",
+    "--all": "all",
+}
+FILE_TOOLS = {"--new": "new", "--check": "check", "--export-eds": "export_eds"}
+
+
 def add_device_options(parser: argparse.ArgumentParser) -> None:
     """Device selection shared by the GUI and the batch mode (one device factory)."""
     group = parser.add_argument_group("device selection")
@@ -32,9 +52,11 @@ def add_device_options(parser: argparse.ArgumentParser) -> None:
         action="append",
         default=[],
         metavar="ID",
-        help="USB valve to use (serial number or HID path); repeatable",
+        help="USB valve to use (serial number, HID path or usb:PATH); with --batch repeatable",
     )
-    group.add_argument("--all", action="store_true", help="use every connected valve")
+    group.add_argument(
+        "--all", action="store_true", help="with --batch: use every valve connected over USB"
+    )
     group.add_argument(
         "--emulator",
         action="append",
@@ -42,7 +64,7 @@ def add_device_options(parser: argparse.ArgumentParser) -> None:
         nargs="?",
         const="",
         metavar="TYPEKEY[:SERIAL]",
-        help="use an emulated valve of that type; repeatable",
+        help="use an emulated valve of that type (the GUI goes online with it); repeatable",
     )
     group.add_argument(
         "--can-interface",
@@ -65,6 +87,8 @@ def build_parser() -> argparse.ArgumentParser:
     parser = argparse.ArgumentParser(
         prog="prm9tool",
         description="Parameterize PRM9 proportional valves (GUI, file tools, batch upload).",
+        epilog=_epilog(),
+        formatter_class=argparse.RawDescriptionHelpFormatter,
     )
     parser.add_argument("file", nargs="?", help="*.prm file to open in the GUI")
     parser.add_argument("--version", action="store_true", help="print the version and exit")
@@ -100,11 +124,62 @@ def build_parser() -> argparse.ArgumentParser:
     return parser
 
 
+def _epilog() -> str:
+    codes = "\n".join(f"  {int(code)}  {text}" for code, text in EXIT_CODE_TEXT.items())
+    return (
+        f"exit codes:\n{codes}\n\n"
+        "headless production mode: README.md, docs/batch.md; USB protocol: docs/usb-protocol.md"
+    )
+
+
+def usage_problem(args: argparse.Namespace) -> str | None:
+    """What makes no sense in this combination of options (None: nothing), before anything runs.
+
+    The GUI takes a file, ``--emulator`` (with the CAN options) and one ``--device``; the
+    batch-only options need ``--batch``; ``--list-devices`` takes only ``--emulator``.
+    """
+    batch_only = [flag for flag, dest in BATCH_ONLY.items() if getattr(args, dest)]
+    tools = [flag for flag, dest in FILE_TOOLS.items() if getattr(args, dest) is not None]
+    command = "--list-devices" if args.list_devices else "--batch" if args.batch is not None else ""
+    if command and tools:
+        return f"{command} and {tools[0]} are separate commands: use one at a time"
+    if command == "--list-devices":
+        return _list_devices_problem(args, batch_only)
+    if command == "--batch":
+        return _batch_problem(args)
+    if batch_only:
+        return f"{batch_only[0]} belongs to the headless production mode: use it with --batch"
+    if not tools and len(args.device) > 1:
+        return "the GUI goes online with one valve: give --device once (several: --batch)"
+    return None
+
+
+def _list_devices_problem(args: argparse.Namespace, batch_only: list[str]) -> str | None:
+    given = {"--batch": args.batch is not None, "--device": args.device, "-o": args.output}
+    extra = batch_only + [flag for flag, value in given.items() if value]
+    if args.file:
+        extra.append(f"the file {args.file}")
+    if not extra:
+        return None
+    return f"--list-devices lists every valve and takes only --emulator, not {extra[0]}"
+
+
+def _batch_problem(args: argparse.Namespace) -> str | None:
+    if args.file:
+        return f"unexpected file {args.file}: name the file to upload right after --batch"
+    if args.output:
+        return "-o/--output belongs to --new and --export-eds (--batch --download OUT.prm)"
+    return None
+
+
 def main(argv: Sequence[str] | None = None) -> int:
     """Entry point of ``prm9tool`` and ``python -m prm9tool``; returns the exit code."""
     parser = build_parser()
     try:
         args = parser.parse_args(argv)
+        problem = usage_problem(args)
+        if problem:
+            parser.error(problem)
     except SystemExit as exc:
         return int(exc.code or 0)
     if args.version:

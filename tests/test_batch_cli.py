@@ -16,7 +16,7 @@ from pathlib import Path
 
 import pytest
 
-from prm9tool import batch
+from prm9tool import app, batch
 from prm9tool.cli import ExitCode, main
 from prm9tool.device import factory
 from prm9tool.device.session import ValveSession
@@ -411,3 +411,78 @@ def test_valves_are_uploaded_in_parallel(tmp_path):
     assert max(started) < min(finished)  # every valve was busy while every other one was
     wall = (max(finished) - min(started)).total_seconds()
     assert wall < 0.5 * sum(r["duration_s"] for r in records)
+
+
+class _GuiStartedError(Exception):
+    pass
+
+
+@pytest.fixture
+def gui(monkeypatch):
+    """Stands in for the GUI: ``main`` raises _GuiStartedError instead of opening a window."""
+
+    def start(args):
+        raise _GuiStartedError(args)
+
+    monkeypatch.setattr(app, "run", start)
+
+
+@pytest.mark.parametrize(
+    ("argv", "named"),
+    [
+        (["--download", "x.prm", "--emulator"], "--download"),
+        (["--report", "r.json"], "--report"),
+        (["--dry-run", "x.prm"], "--dry-run"),
+        (["--force-type", "--emulator", E04], "--force-type"),
+        (["--all"], "--all"),
+        (["--device", "41", "--device", "/dev/hidraw1"], "--device"),
+        (["--check", "x.prm", "--report", "r.json"], "--report"),
+        (["--list-devices", "--batch", "x.prm"], "--batch"),
+        (["--list-devices", "--report", "r.json"], "--report"),
+        (["--list-devices", "--download", "out.prm"], "--download"),
+        (["--list-devices", "--device", "41"], "--device"),
+        (["--batch", "x.prm", "y.prm"], "y.prm"),
+        (["--batch", "--download", "out.prm", "-o", "o.prm"], "-o/--output"),
+        (["--batch", "x.prm", "--check", "x.prm"], "--check"),
+    ],
+)
+def test_options_that_do_not_fit_the_command_exit_2(gui, capsys, argv, named):
+    assert main(argv) == ExitCode.USAGE
+    message = capsys.readouterr().err.splitlines()[-1]
+    assert message.startswith("prm9tool: error: ") and named in message
+
+
+@pytest.mark.parametrize(
+    "argv",
+    [
+        [],
+        ["valve.prm"],
+        ["--emulator"],
+        ["--emulator", f"{E04}:7", "--emulator", E02],
+        [
+            "--emulator",
+            E04,
+            "--can-interface",
+            "virtual",
+            "--can-channel",
+            "x",
+            "--can-bitrate",
+            "250000",
+        ],
+        ["--device", "41"],
+    ],
+)
+def test_gui_options_still_start_the_gui(gui, argv):
+    with pytest.raises(_GuiStartedError):
+        main(argv)
+
+
+def test_help_lists_every_exit_code_and_the_readme_documents_them(capsys):
+    assert main(["--help"]) == 0
+    shown = capsys.readouterr().out
+    readme = (Path(__file__).parents[1] / "README.md").read_text(encoding="utf-8")
+    section = readme.split("## Headless production mode", 1)[1].split("\n## ", 1)[0]
+    for code in ExitCode:
+        assert re.search(rf"^  {int(code)}  \S", shown, re.MULTILINE), code
+        assert re.search(rf"^\| {int(code)} \|", section, re.MULTILINE), code
+    assert "docs/batch.md" in section and "docs/usb-protocol.md" in section
