@@ -49,18 +49,25 @@ class Rig:
     master: can.BusABC
     slave_bus: can.BusABC
     skipped: list[str] = field(default_factory=list)  # frames barrier() passed over
+    log: list[str] = field(default_factory=list)  # every frame sent and received, in order
 
     def send(self, text: str) -> None:
         """Send one frame written as ``"60A 2B 17 10 00 E8 03 00 00"``."""
         can_id, data = frame(text)
+        self.log.append(show(can_id, data))
         self.master.send(can.Message(arbitration_id=can_id, data=data, is_extended_id=False))
 
     def receive(self, timeout: float = TIMEOUT_S) -> str | None:
         """The next frame on the bus as text, or None after ``timeout``."""
         if self.skipped:
-            return self.skipped.pop(0)
-        msg = self.master.recv(timeout)
-        return None if msg is None else show(msg.arbitration_id, bytes(msg.data))
+            text = self.skipped.pop(0)
+        else:
+            msg = self.master.recv(timeout)
+            if msg is None:
+                return None
+            text = show(msg.arbitration_id, bytes(msg.data))
+        self.log.append(text)
+        return text
 
     def expect(self, text: str) -> None:
         """The next frame must be exactly ``text``."""
