@@ -6,8 +6,10 @@ import dataclasses
 
 import pytest
 
-from prm9tool.device.emulator import DeviceState, EmulatedValve, Fault
-from prm9tool.device.emulator.constants import PLANT
+from prm9tool.device.emulator import DeviceState, EmulatedValve, Fault, detect
+from prm9tool.device.emulator.constants import FIRMWARE, PLANT
+from prm9tool.device.emulator.firmware import Firmware
+from prm9tool.typekey import TypeKey
 
 E04_CA_ANALOG = "PRM9-06.3Z11/30-24E04S02-CA"
 FULL = 16384
@@ -134,6 +136,45 @@ def test_blinking_led_is_lit_and_dark_at_the_right_instants():
         valve.advance(t - valve.time)
         led2 = valve.status().leds[1]
         assert (led2.color, led2.pattern, led2.lit) == ("red", "1Hz", lit), t
+
+
+def booted_firmware(type_key: str, setpoint_v: float) -> Firmware:
+    """The firmware layer of an analog E02 at ``setpoint_v``, 2.2 s after power-up."""
+    fw = Firmware(TypeKey.parse(type_key), 1, "1.0.0", None, None, PLANT, FIRMWARE)
+    fw.inputs["setpoint"] = setpoint_v
+    fw.setpoint_dirty = True
+    fw.run(round(2.2 / EmulatedValve.CYCLE_S))
+    return fw
+
+
+def test_position_sensor_error_is_the_lvdt_loop_current_below_3_6_ma():
+    fw = booted_firmware("PRM9-06.3Z11/30-24E02S02", 5.0)
+    spool = fw.signal_values()["position_actual"]
+    assert spool == pytest.approx(FULL / 2, abs=0.02 * FULL)
+    # 4…20 mA over ±125 % of the stroke (PlantConstants.lvdt_span): 15.2 mA at +50 %
+    assert fw.loop.lvdt_ma == pytest.approx(12.0 + 8.0 * spool / (1.25 * FULL), abs=0.02)
+    fw.loop.lvdt_ma = 3.7
+    assert detect.conditions(fw)["position_sensor"] == (False, 0.005)
+    fw.loop.lvdt_ma = 3.5
+    assert detect.conditions(fw)["position_sensor"] == (True, 0.005)
+    fw.injected.add(Fault.POSITION_SENSOR_BREAK)
+    fw.setpoint_dirty = True
+    fw.run(5)
+    assert fw.loop.lvdt_ma == 0.0  # the cut wire carries no loop current
+    assert detect.conditions(fw)["position_sensor"][0]
+
+
+def test_coil_open_is_the_stage_diagnostic_not_the_injection():
+    fw = booted_firmware("PRM9-06.3Z11/30-24E02S02", 5.0)  # coil A driven, coil B idle
+    assert fw.loop.duty[0] * fw.supply > 1.0 and fw.loop.duty[1] == 0.0
+    assert not detect.conditions(fw)["coil_a_open"][0]
+    fw.loop.current_ma = (0.0, 0.0)  # on-state: voltage at the coil but no current
+    assert detect.conditions(fw)["coil_a_open"] == (True, 0.020)
+    fw.loop.duty = (0.01, 0.0)  # 0.24 V: too little to expect current; the test current finds
+    assert not detect.conditions(fw)["coil_a_open"][0]  # the coil connected
+    assert not detect.conditions(fw)["coil_b_open"][0]
+    fw.loop.coil_open = (False, True)  # off-state: the test current finds no coil B
+    assert detect.conditions(fw)["coil_b_open"][0]
 
 
 def test_wire_break_below_4_ma_without_injection():

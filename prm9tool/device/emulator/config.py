@@ -19,6 +19,7 @@ from prm9tool.variant import Coils, Config, Variant
 
 Values = Callable[[str], int]
 LETTERS = "ABCDEFGHI"
+LVDT_SATURATION_MA = 3.8  # an intact 4…20 mA loop never reads lower (NAMUR NE 43; assumption)
 
 
 def curve_of(values: Values, prefix: str) -> Curve:
@@ -142,9 +143,14 @@ def _mechanics(plant: PlantConstants) -> tuple[float, ...]:
     )
 
 
-def _lvdt(plant: PlantConstants, fw: FirmwareConstants) -> tuple[float, float, float]:
+def _lvdt(plant: PlantConstants, fw: FirmwareConstants) -> tuple[float, ...]:
+    """A/D (counts per m, step, reading of a cut wire); 4…20 mA loop (mA per m, lowest mA).
+
+    The loop current is 12 mA at the centre and 4 / 20 mA at −/+ ``lvdt_span`` of the stroke.
+    """
     step = 2.0 * plant.lvdt_span * FULL / 2**fw.adc_bits
-    return FULL / plant.stroke_m / step, step, -plant.lvdt_span * FULL
+    ma_per_m = 8.0 / (plant.lvdt_span * plant.stroke_m)
+    return FULL / plant.stroke_m / step, step, -plant.lvdt_span * FULL, ma_per_m, LVDT_SATURATION_MA
 
 
 def _sensor(

@@ -1,7 +1,9 @@
 """Raw fault conditions the firmware evaluates every 1 ms (manual table 5-1).
 
 Each function of the table returns ``(condition, detection_delay_s)``; :class:`FaultMonitor`
-debounces them. What the injected faults do physically is described in docs/emulator.md.
+debounces them. What the injected faults do physically is described in docs/emulator.md; the
+conditions look at what the loop and the plant produce (LVDT loop current, coil current and PWM
+duty, input signals), not at the injected faults themselves.
 """
 
 from __future__ import annotations
@@ -11,6 +13,9 @@ from typing import TYPE_CHECKING
 from prm9tool.device.emulator.inputs import INPUT_TYPES
 from prm9tool.device.emulator.states import DeviceState, Fault
 from prm9tool.variant import Coils, Config
+
+OPEN_LOAD_MIN_V = 1.0  # on-state open-load check only above 1 V average at the coil (assumption)
+OPEN_LOAD_MA = 10.0  # ... where a connected coil carries far more than 10 mA (assumption)
 
 if TYPE_CHECKING:
     from prm9tool.device.emulator.firmware import Firmware
@@ -22,26 +27,28 @@ def static_conditions(fw: Firmware) -> dict[str, tuple[bool, float]]:
     Evaluated when those change; :func:`conditions` adds the dynamic ones every 1 ms.
     """
     c = fw.fw
-    injected = fw.injected
-    coils = fw.variant.coils
     return {
-        "coil_a_open": (
-            coils is not Coils.B and Fault.COIL_A_OPEN in injected,
-            c.coil_open_delay_s,
-        ),
-        "coil_b_open": (
-            coils is not Coils.A and Fault.COIL_B_OPEN in injected,
-            c.coil_open_delay_s,
-        ),
         "setpoint": (_setpoint_error(fw), c.setpoint_error_delay_s),
         "sensor": (_sensor_error(fw), c.sensor_error_delay_s),
-        "position_sensor": (Fault.POSITION_SENSOR_BREAK in injected, c.position_sensor_delay_s),
     }
 
 
 def static_alarm(fw: Firmware) -> bool:
-    """True if a static condition (or the supply) is raised: the 1 ms task must look."""
-    return any(flag for flag, _ in fw.static_conditions.values()) or _supply_error(fw)
+    """True if the 1 ms task must evaluate the condition table.
+
+    That is when a static condition or the supply is raised, or when the plant has a cut
+    LVDT wire or a disconnected coil: only then can the LVDT loop current fall below 3.6 mA or
+    a coil stay without current (with the wire intact the loop current stays at or above
+    3.8 mA; a connected coil carries current whenever voltage is applied), so skipping the
+    evaluation otherwise changes nothing.
+    """
+    loop = fw.loop
+    return (
+        any(flag for flag, _ in fw.static_conditions.values())
+        or _supply_error(fw)
+        or loop.lvdt_break
+        or any(loop.coil_open)
+    )
 
 
 def conditions(fw: Firmware) -> dict[str, tuple[bool, float]]:
@@ -50,6 +57,9 @@ def conditions(fw: Firmware) -> dict[str, tuple[bool, float]]:
     ia, ib = fw.loop.current_ma
     coils = fw.variant.coils
     result = dict(fw.static_conditions)
+    result["coil_a_open"] = (coils is not Coils.B and _open_load(fw, 0), c.coil_open_delay_s)
+    result["coil_b_open"] = (coils is not Coils.A and _open_load(fw, 1), c.coil_open_delay_s)
+    result["position_sensor"] = (fw.loop.lvdt_ma < c.loop_break_ma, c.position_sensor_delay_s)
     result["coil_a_overcurrent"] = (
         coils is not Coils.B
         and _overcurrent(fw, ia, "coil_a_overcurrent", Fault.COIL_A_OVERCURRENT),
@@ -64,6 +74,19 @@ def conditions(fw: Firmware) -> dict[str, tuple[bool, float]]:
     result["temperature"] = (_temperature_error(fw), c.temp_delay_s)
     result["monitoring"] = (_monitoring(fw), fw.monitoring_delay_s)
     return result
+
+
+def _open_load(fw: Firmware, coil: int) -> bool:
+    """Open-load diagnostic of output stage ``coil`` (0 = A, 1 = B).
+
+    On-state (the stage applies at least OPEN_LOAD_MIN_V on average): no current flows. Off-state
+    (the stage idles or the duty is tiny): the stage's test current finds no load; the averaged
+    plant has no terminal voltage, so this half reads the coil's connection in the plant.
+    """
+    loop = fw.loop
+    if loop.duty[coil] * fw.supply >= OPEN_LOAD_MIN_V:
+        return loop.current_ma[coil] < OPEN_LOAD_MA
+    return loop.coil_open[coil]
 
 
 def _overcurrent(fw: Firmware, current_ma: float, key: str, fault: Fault) -> bool:

@@ -22,8 +22,8 @@ from prm9tool.device.emulator.loopstate import MODE_ACTIVE, MODE_OFF, LoopState
 def control_loop(s: LoopState) -> Generator[None, int, None]:
     """Run ``n`` cycles per ``send(n)``; ``send(0)`` writes every measuring point back.
 
-    After a batch only what the firmware's 1 ms task needs is written back (coil currents,
-    control deviation); inputs are re-read only when ``inputs_version`` changed, coefficients
+    After a batch only what the firmware's 1 ms task needs is written back (coil currents and
+    PWM duties, LVDT loop current, control deviation); inputs are re-read only when ``inputs_version`` changed, coefficients
     only when ``version`` changed.
     """
     sin = math.sin
@@ -65,7 +65,7 @@ def control_loop(s: LoopState) -> Generator[None, int, None]:
         ckp, cki, rff_a, rff_b = c["current_pi"]
         vmax_i = c["max_current_v"]
         kf, ks, cd, fc, fs, im, h, nsub, xmax, flag = c["mechanics"]
-        kx, lvdt_q, lvdt_lo = c["lvdt"]
+        kx, lvdt_q, lvdt_lo, lvdt_ma_k, lvdt_sat = c["lvdt"]
         s_a, s_b, s_q, s_o, sinv, soffs, sgain, slin = c["sensor"]
         sl_x, sl_k, sl_b = c["sensor_curve"]
         gp, op, gn, on_ = c["deviation_gain"]
@@ -371,4 +371,10 @@ def control_loop(s: LoopState) -> Generator[None, int, None]:
             # --- what the 1 ms task needs; the rest on a flush (send(0)) --------------------
             s.ctrl_dev = dev if process_on else r - xm
             s.current_ma = (ia, ib)
+            s.duty = (da, db)
+            if lvdt_break:
+                s.lvdt_ma = 0.0  # a cut wire carries no loop current
+            else:
+                lvdt_ma = 12.0 + x * lvdt_ma_k
+                s.lvdt_ma = lvdt_ma if lvdt_ma > lvdt_sat else lvdt_sat
             n = yield

@@ -69,6 +69,8 @@ class LoopState:
         self.spool_v = 0.0
         self.actuator = 0.5
         self.current_ma = (0.0, 0.0)
+        self.duty = (0.0, 0.0)  # PWM duty A, B (0…1) at the end of the last batch
+        self.lvdt_ma = 12.0  # LVDT 4…20 mA loop current (0 with a cut wire)
         self.sensor_chain = (0.0, 0.0, 0.0, 0.0, 0.0)  # 0x2100/1, /3, /4, /5, /6
 
 
