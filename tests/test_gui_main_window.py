@@ -35,7 +35,7 @@ def _menu_texts(window, name):
 
 def test_menus_and_toolbar_are_those_of_the_manual(window):
     titles = [a.text() for a in window.menuBar().actions()]
-    assert titles == ["&File", "&View", "&Valve", "&Communication", "&Help"]
+    assert titles == ["&File", "&View", "V&alve", "&Communication", "&Help"]
     assert {"&Open…", "&Save", "Save &As…", "&Print…", "E&xit"} <= set(_menu_texts(window, "file"))
     assert _menu_texts(window, "valve") == [
         "Valve &selection…",
@@ -332,3 +332,35 @@ def test_counts_use_the_plural_forms_of_the_language(window, language, one, two)
     assert single.intro.text().startswith(one)
     assert double.intro.text().startswith(two)
     assert "(s)" not in single.intro.text() + double.intro.text()
+
+
+def _accelerator(text):
+    """The letter after a single '&' ('&&' is a literal ampersand), lower case, or None."""
+    plain = text.replace("&&", "")
+    index = plain.find("&")
+    return plain[index + 1].lower() if 0 <= index < len(plain) - 1 else None
+
+
+def _menus_of(window):
+    bar = window.menuBar()
+    yield "menu bar", [a.text() for a in bar.actions()]
+    for name, menu in window.commands.menus.items():
+        yield name, [a.text() for a in menu.actions() if not a.isSeparator()]
+
+
+@pytest.mark.parametrize("language", ["en", "de", "cs"])
+def test_no_two_entries_of_a_menu_share_an_accelerator(window, language):
+    window.set_language(language)
+    for name, texts in _menus_of(window):
+        letters = [_accelerator(text) for text in texts]
+        taken = [letter for letter in letters if letter is not None]
+        clashes = sorted({letter for letter in taken if taken.count(letter) > 1})
+        assert clashes == [], f"{language} {name}: {texts}"
+        if name != "language":  # language names stay as they are written
+            assert None not in letters, f"{language} {name}: {texts}"
+
+
+def test_save_as_and_exit_have_windows_shortcuts_too(window):
+    keys = {n: [k.toString() for k in window.commands[n].shortcuts()] for n in ("save_as", "exit")}
+    assert "Ctrl+Shift+S" in keys["save_as"] and "Ctrl+Q" in keys["exit"]
+    assert all(len(set(v)) == len(v) for v in keys.values())  # no key bound twice

@@ -870,7 +870,7 @@
         </message>
         <message>
             <source>&amp;Redo</source>
-            <translation>Z&amp;novu</translation>
+            <translation>Zno&amp;vu</translation>
         </message>
         <message>
             <source>Redo the change undone last</source>
@@ -950,7 +950,7 @@
         </message>
         <message>
             <source>&amp;Change Expert password…</source>
-            <translation>&amp;Změnit heslo pro expertní úroveň…</translation>
+            <translation>Změnit &amp;heslo pro expertní úroveň…</translation>
         </message>
         <message>
             <source>Valve &amp;selection…</source>
@@ -986,7 +986,7 @@
         </message>
         <message>
             <source>Restore &amp;factory values…</source>
-            <translation>Obnovit &amp;tovární nastavení…</translation>
+            <translation>&amp;Obnovit tovární nastavení…</translation>
         </message>
         <message>
             <source>Return the parameters to the factory values</source>
@@ -1057,7 +1057,7 @@
             <translation>Ná&amp;hled</translation>
         </message>
         <message>
-            <source>&amp;Valve</source>
+            <source>V&amp;alve</source>
             <translation>&amp;Ventil</translation>
         </message>
         <message>
@@ -1065,12 +1065,12 @@
             <translation>&amp;Komunikace</translation>
         </message>
         <message>
-            <source>Open &amp;recent</source>
-            <translation>Naposledy &amp;otevřené</translation>
+            <source>Open re&amp;cent</source>
+            <translation>Na&amp;posledy otevřené</translation>
         </message>
         <message>
             <source>&amp;Access level</source>
-            <translation>Úroveň &amp;oprávnění</translation>
+            <translation>Ú&amp;roveň oprávnění</translation>
         </message>
         <message>
             <source>&amp;Language</source>

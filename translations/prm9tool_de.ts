@@ -976,7 +976,7 @@
         </message>
         <message>
             <source>&amp;Download from valve</source>
-            <translation>Aus dem Ventil &amp;herunterladen</translation>
+            <translation>Aus dem Ventil he&amp;runterladen</translation>
         </message>
         <message>
             <source>Read the parameters of the valve into the program</source>
@@ -1055,7 +1055,7 @@
             <translation>&amp;Ansicht</translation>
         </message>
         <message>
-            <source>&amp;Valve</source>
+            <source>V&amp;alve</source>
             <translation>&amp;Ventil</translation>
         </message>
         <message>
@@ -1063,7 +1063,7 @@
             <translation>&amp;Kommunikation</translation>
         </message>
         <message>
-            <source>Open &amp;recent</source>
+            <source>Open re&amp;cent</source>
             <translation>&amp;Zuletzt geöffnet</translation>
         </message>
         <message>

@@ -13,16 +13,16 @@ from prm9tool.views.icons import icon
 
 SK = QKeySequence.StandardKey
 _ACTIONS: tuple[tuple[str, str, object], ...] = (
-    # name, icon, shortcut (StandardKey, text or None)
+    # name, icon, shortcut (StandardKey, text, a tuple of them, or None)
     ("new", "valve", SK.New),
     ("open", "open", SK.Open),
     ("save", "save", SK.Save),
-    ("save_as", "save_as", SK.SaveAs),
+    ("save_as", "save_as", (SK.SaveAs, "Ctrl+Shift+S")),  # Windows binds no SaveAs key
     ("undo", "undo", SK.Undo),
-    ("redo", "redo", "Ctrl+Y"),
+    ("redo", "redo", ("Ctrl+Y", "Ctrl+Shift+Z")),
     ("print", "print", SK.Print),
     ("export_pdf", "pdf", "Ctrl+E"),
-    ("exit", "exit", SK.Quit),
+    ("exit", "exit", (SK.Quit, "Ctrl+Q")),  # nor a Quit key
     ("view_diagram", "diagram", "Ctrl+1"),
     ("view_parameters", "parameters", "Ctrl+2"),
     ("view_scope", "scope", "Ctrl+3"),
@@ -194,12 +194,8 @@ class MainActions(QObject):
         for name, icon_name, shortcut in _ACTIONS:
             action = QAction(icon(icon_name) if icon_name else icon(""), name, parent)
             action.setObjectName(f"action_{name}")
-            if isinstance(shortcut, SK):
-                action.setShortcuts(shortcut)
-            elif isinstance(shortcut, str):
-                action.setShortcut(QKeySequence(shortcut))
+            action.setShortcuts(_key_sequences(shortcut))
             self.actions[name] = action
-        self.actions["redo"].setShortcuts([QKeySequence("Ctrl+Y"), QKeySequence("Ctrl+Shift+Z")])
         self.view_group = self._group(("view_diagram", "view_parameters", "view_scope"))
         self.level_group = self._group(("level_basic", "level_expert"))
         self.language_actions: dict[str, QAction] = {}
@@ -282,10 +278,10 @@ class MainActions(QObject):
         titles = {
             "file": translate("MainActions", "&File"),
             "view": translate("MainActions", "&View"),
-            "valve": translate("MainActions", "&Valve"),
+            "valve": translate("MainActions", "V&alve"),
             "communication": translate("MainActions", "&Communication"),
             "help": translate("MainActions", "&Help"),
-            "recent": translate("MainActions", "Open &recent"),
+            "recent": translate("MainActions", "Open re&cent"),
             "access": translate("MainActions", "&Access level"),
             "language": translate("MainActions", "&Language"),
         }
@@ -294,6 +290,18 @@ class MainActions(QObject):
                 self.menus[name].setTitle(title)
         if self.toolbar is not None:
             self.toolbar.setWindowTitle(translate("MainActions", "Toolbar"))
+
+
+def _key_sequences(shortcut: object) -> list[QKeySequence]:
+    """The platform's keys of a StandardKey and explicit key texts, each key once."""
+    specs = shortcut if isinstance(shortcut, tuple) else (shortcut,)
+    keys: list[QKeySequence] = []
+    for spec in specs:
+        if isinstance(spec, SK):
+            keys.extend(QKeySequence.keyBindings(spec))
+        elif isinstance(spec, str):
+            keys.append(QKeySequence(spec))
+    return [key for i, key in enumerate(keys) if not key.isEmpty() and key not in keys[:i]]
 
 
 def _tool_tip(texts: _Texts, action: QAction) -> str:
