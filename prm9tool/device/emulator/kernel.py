@@ -337,6 +337,10 @@ def control_loop(s: LoopState) -> Generator[None, int, None]:
                     elif act < 0.0:
                         act = 0.0
                 # --- capture -------------------------------------------------------------
+                # The selection is only known at run time, so the values go through a tuple
+                # and an itemgetter: ~0.4 µs per captured cycle against ~0.2 µs for a
+                # hard-coded triple (measured); only a loop generated per selection could
+                # save the difference (~5 % of a cycle), which is not worth the complexity.
                 if cap is not None:
                     cap_count -= 1
                     if cap_count <= 0:
