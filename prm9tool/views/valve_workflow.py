@@ -116,6 +116,9 @@ class ValveWorkflow(QObject):
                 return False
             if answer == prompts.Button.Yes:
                 self._connection.store()
+        scope = getattr(self._window, "views", {}).get("scope")
+        if scope is not None:  # the setpoint generator switches its override off while online
+            scope.stop()
         self._sync.stop()
         self._connection.go_offline()
         return True
