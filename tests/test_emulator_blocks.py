@@ -224,6 +224,7 @@ def test_e04_gain_and_offset_act_on_the_process_deviation_not_the_setpoint():
     dev = valve.signal("process_setpoint") - valve.signal("process_actual")
     assert dev == pytest.approx(2 * FULL / 10, abs=8)
     assert valve.signal("process_deviation") == pytest.approx(1638 + dev * 2 * (FULL - 1638) / FULL)
+    assert valve.read(0x6350, 1) == round(dev)  # 0x6350: the raw deviation, before gain/offset
     chain(valve, -1.0)
     dev = valve.signal("process_setpoint") - valve.signal("process_actual")
     assert dev < 0
