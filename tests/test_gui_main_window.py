@@ -74,7 +74,8 @@ def test_offline_only_what_makes_sense_is_enabled(window):
     a = window.commands
     for name in ("upload", "download", "restart", "offline", "view_scope"):
         assert not a[name].isEnabled(), name
-    for name in ("online", "open", "valve_selection", "valve_status", "restore_factory"):
+    for name in ("online", "hid_configuration", "open", "valve_selection", "valve_status",
+                 "restore_factory"):  # fmt: skip
         assert a[name].isEnabled(), name
     assert not a["canopen"].isEnabled()  # E02 without -CA
     assert not a["undo"].isEnabled() and not a["redo"].isEnabled()

@@ -324,6 +324,24 @@ def test_online_action_uses_the_valve_chosen_in_the_hid_configuration(qtbot, win
     assert window.connection.device.serial == 4104
 
 
+def test_hid_configuration_is_off_while_online_and_says_why(qtbot, window, monkeypatch):
+    from prm9tool.views.hid_dialog import HidConfigurationDialog
+
+    opened = []
+    monkeypatch.setattr(HidConfigurationDialog, "exec", lambda self: opened.append(self) or 0)
+    hid = window.commands["hid_configuration"]
+    go_online(qtbot, window)
+    assert not hid.isEnabled()
+    assert "go offline first" in hid.statusTip() and "go offline first" in hid.toolTip()
+    hid.trigger()
+    assert opened == []
+    with qtbot.waitSignal(window.connection.online_changed, timeout=TIMEOUT):
+        window.valve.go_offline()
+    assert hid.isEnabled() and hid.statusTip() == "Choose the valve to communicate with"
+    hid.trigger()
+    assert len(opened) == 1
+
+
 def test_online_action_with_a_single_valve_needs_no_question(qtbot, window):
     with qtbot.waitSignal(window.connection.online_changed, timeout=TIMEOUT):
         window.commands["online"].trigger()  # the default emulated valve is the only one

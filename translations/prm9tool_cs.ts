@@ -1049,6 +1049,10 @@
             <translation>Verze a kontakt</translation>
         </message>
         <message>
+            <source>Not while online: go offline first, then choose the valve to communicate with</source>
+            <translation>Ne v režimu online: nejprve přejděte do režimu offline, pak zvolte ventil pro komunikaci</translation>
+        </message>
+        <message>
             <source>&amp;File</source>
             <translation>&amp;Soubor</translation>
         </message>

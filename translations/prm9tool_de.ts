@@ -1047,6 +1047,10 @@
             <translation>Versionen und Kontakt</translation>
         </message>
         <message>
+            <source>Not while online: go offline first, then choose the valve to communicate with</source>
+            <translation>Nicht im Online-Modus: erst offline gehen, dann das Ventil für die Kommunikation wählen</translation>
+        </message>
+        <message>
             <source>&amp;File</source>
             <translation>&amp;Datei</translation>
         </message>

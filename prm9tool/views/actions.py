@@ -209,6 +209,7 @@ class MainActions(QObject):
             self.language_actions[language] = action
         self.menus: dict[str, QMenu] = {}
         self.toolbar: QToolBar | None = None
+        self._online = False
 
     def _group(self, names: tuple[str, ...]) -> QActionGroup:
         group = QActionGroup(self)
@@ -268,9 +269,20 @@ class MainActions(QObject):
             else:
                 toolbar.addAction(self[item])
 
+    def set_online(self, online: bool) -> None:
+        """Tips of the actions that are off while online say why (the window disables them)."""
+        self._online = online
+        self.retranslate()
+
     def retranslate(self) -> None:
         """Set every text in the current language."""
-        for name, texts in _texts().items():
+        texts_of = _texts()
+        if self._online:
+            texts_of["hid_configuration"].tip = translate(
+                "MainActions",
+                "Not while online: go offline first, then choose the valve to communicate with",
+            )
+        for name, texts in texts_of.items():
             action = self.actions[name]
             action.setText(texts.text)
             action.setStatusTip(texts.tip)

@@ -186,6 +186,7 @@ class MainWindow(QMainWindow):
         self.undo.stack.canRedoChanged.connect(self._update_actions)
         self.access.level_changed.connect(self._update_actions)
         c.online_changed.connect(s.set_online)
+        c.online_changed.connect(self.commands.set_online)
         c.online_changed.connect(self._on_connection_online_changed)
         c.device_changed.connect(lambda info: s.set_firmware(str(getattr(info, "firmware", ""))))
         c.status_changed.connect(lambda status: s.set_device_status(status_summary(status)))
@@ -213,6 +214,7 @@ class MainWindow(QMainWindow):
             "undo": self.undo.stack.canUndo(),
             "redo": self.undo.stack.canRedo(),
             "online": not online and not busy,
+            "hid_configuration": not online and not busy,  # the valve is chosen before
             "offline": online,
             "upload": ready,
             "download": ready,
