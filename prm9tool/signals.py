@@ -153,9 +153,9 @@ SIGNALS: tuple[Signal, ...] = (
         11,
         "position_deviation",
         T(
-            "Position control deviation (0x6350)",
-            "Lageregelabweichung (0x6350)",
-            "Odchylka řízení polohy (0x6350)",
+            "Position control deviation",  # = 0x6350 in position mode only (docs/emulator.md)
+            "Lageregelabweichung",
+            "Odchylka řízení polohy",
         ),
         "%",
         PERCENT,
