@@ -75,6 +75,10 @@ class ScopeConnection(LinkState, Protocol):
     def stream_started(self) -> SignalInstance:
         """Emitted with the keys actually streaming once the valve started the stream."""
 
+    @property
+    def write_failed(self) -> SignalInstance:
+        """Emitted with the mnemonics of a write the valve refused (after ``failed``)."""
+
     def start_stream(self, keys: Sequence[str], rate_hz: int) -> None:
         """Start streaming ``keys`` at ``rate_hz`` (asynchronous)."""
 

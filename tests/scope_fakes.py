@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from PySide6.QtCore import QObject, Signal
+from PySide6.QtCore import QObject, QTimer, Signal
 
 
 class FakeConnection(QObject):
@@ -14,6 +14,7 @@ class FakeConnection(QObject):
     stream_started = Signal(list)
     stream_stopped = Signal()
     failed = Signal(str)
+    write_failed = Signal(list)
 
     def __init__(self, online: bool = True) -> None:
         super().__init__()
@@ -21,6 +22,7 @@ class FakeConnection(QObject):
         self.streams: list[tuple[list[str], int]] = []
         self.stream_stops = 0
         self.writes: list[tuple[str, int | str]] = []
+        self.refuse: set[str] = set()  # mnemonics whose writes the valve refuses
         self.samples_lost = 0
 
     def start_stream(self, keys, rate_hz: int) -> None:
@@ -34,7 +36,14 @@ class FakeConnection(QObject):
     def write(self, mnemonic: str, raw: int | str) -> None:
         if not self.is_online:
             raise AssertionError(f"write of {mnemonic} while offline")
+        if mnemonic in self.refuse:  # reported later from the worker, as the real one does
+            QTimer.singleShot(0, lambda: self._refused(mnemonic))
+            return
         self.writes.append((mnemonic, raw))
+
+    def _refused(self, mnemonic: str) -> None:
+        self.failed.emit(f"{mnemonic}: access denied (0601 0000h)")
+        self.write_failed.emit([mnemonic])
 
     def go_online(self) -> None:
         self.is_online = True

@@ -6,7 +6,7 @@ import pytest
 from scope_fakes import FakeConnection
 
 from prm9tool.document import ParameterDocument
-from prm9tool.scope import Waveform
+from prm9tool.scope import GeneratorSettings, Waveform
 from prm9tool.views import prompts
 from prm9tool.views.scope import ScopeWidget
 
@@ -115,3 +115,54 @@ def test_a_waveform_outside_the_setpoint_range_is_refused_with_its_reason(
 def test_unchanged_setpoint_is_rewritten_as_keepalive(scope, conn, answer, qtbot):
     _start(scope, Waveform.STEP, amplitude=0.0, offset=20.0)
     qtbot.waitUntil(lambda: conn.writes.count(("SETPOVR", 3277)) >= 3, timeout=2000)
+
+
+def test_a_refused_setpoint_write_stops_the_generator_with_the_reason(scope, conn, answer, qtbot):
+    conn.refuse.add("SETPOVR")
+    _start(scope)
+    qtbot.waitUntil(lambda: not scope.generator.running, timeout=2000)
+    assert conn.writes[-1] == ("SETPOVRON", 0)
+    assert not scope.generator_panel.button.isChecked()
+    assert "refused a value of the setpoint generator" in scope.status.text()
+    assert "access denied" in scope.status.text()
+
+
+def test_a_refused_switch_off_is_repeated_at_the_next_connection(scope, conn, answer, qtbot):
+    _start(scope)
+    conn.refuse.add("SETPOVRON")
+    scope.generator_panel.button.click()
+    qtbot.wait(20)  # the refusal arrives from the worker
+    conn.refuse.clear()
+    conn.drop_link()
+    conn.go_online()
+    assert conn.writes[-1] == ("SETPOVRON", 0)
+
+
+def test_after_a_lost_link_the_next_connection_switches_the_override_off(scope, conn, answer):
+    _start(scope)
+    conn.drop_link()
+    conn.go_online()
+    assert conn.writes[-1] == ("SETPOVRON", 0)
+    assert not scope.generator.running
+    count = len(conn.writes)
+    conn.drop_link()
+    conn.go_online()
+    assert len(conn.writes) == count  # switched off already: nothing more to write
+
+
+def test_generator_messages_follow_the_language(scope, conn, answer, monkeypatch):
+    from prm9tool import i18n
+
+    shown: list[str] = []
+    monkeypatch.setattr(prompts, "inform", lambda _p, _i, _t, text, *_a: shown.append(text))
+    i18n.set_language("de")
+    try:
+        _start(scope, Waveform.SINE, amplitude=60.0, offset=50.0)
+        conn.is_online = False
+        with pytest.raises(RuntimeError, match="verbundenes Ventil"):
+            scope.generator.start(GeneratorSettings())
+    finally:
+        i18n.set_language("en")
+    assert shown == [
+        "Die Kurvenform erreicht -10 … 110 %; der Sollwert muss zwischen -100 … 100 % bleiben."
+    ]

@@ -3,9 +3,10 @@
 from __future__ import annotations
 
 import pytest
-from gui_support import E02, emulated, go_online, main_window, record_prompts
+from gui_support import E02, emulated, go_online, main_window, record_prompts, session_of
 
 from prm9tool.catalogue import CATALOGUE
+from prm9tool.errors import AccessDeniedError
 from prm9tool.scope import GeneratorSettings, Waveform
 from prm9tool.views import prompts
 
@@ -58,10 +59,48 @@ def test_generator_drives_the_override_and_closing_the_window_switches_it_off(
     assert _override_on(valve) == 0
 
 
-def test_going_offline_stops_the_generator(qtbot, window):
+def test_going_offline_switches_the_override_off_before_disconnecting(qtbot, window):
     scope = window.views["scope"]
+    valve = emulated(SERIAL)
     scope.generator.start(GeneratorSettings(Waveform.SQUARE, 20.0, 0.0, 0.5))
+    qtbot.waitUntil(lambda: _override_on(valve) == 1, timeout=TIMEOUT)
     with qtbot.waitSignal(window.connection.online_changed, timeout=TIMEOUT):
-        window.connection.go_offline()
+        assert window.valve.go_offline()  # Communication → Offline
     assert not scope.generator.running
     assert not scope.generator_panel.isEnabled()
+    assert _override_on(valve) == 0
+
+
+def test_an_override_left_on_by_a_lost_link_is_switched_off_at_the_next_connection(qtbot, window):
+    scope = window.views["scope"]
+    valve = emulated(SERIAL)
+    scope.generator.start(GeneratorSettings(Waveform.SQUARE, 20.0, 0.0, 0.5))
+    qtbot.waitUntil(lambda: _override_on(valve) == 1, timeout=TIMEOUT)
+    with qtbot.waitSignal(window.connection.online_changed, timeout=TIMEOUT):
+        window.connection.go_offline()  # the link goes without the generator writing
+    assert not scope.generator.running
+    assert _override_on(valve) == 1  # the emulated valve stands still while offline
+    go_online(qtbot, window, f"{E02}:{SERIAL}")
+    qtbot.waitUntil(lambda: _override_on(valve) == 0, timeout=TIMEOUT)
+    assert not scope.generator.running
+
+
+def test_a_refused_generator_write_stops_the_generator_and_says_why(
+    qtbot, window, answers, monkeypatch
+):
+    scope = window.views["scope"]
+    session = session_of(window)
+    write_many = session.write_many
+
+    def refuse_the_setpoint(values):
+        if "SETPOVR" in values:
+            raise AccessDeniedError("SETPOVR: write access denied")
+        write_many(values)
+
+    monkeypatch.setattr(session, "write_many", refuse_the_setpoint)
+    scope.generator.start(GeneratorSettings(Waveform.SQUARE, 20.0, 0.0, 0.5))
+    qtbot.waitUntil(lambda: not scope.generator.running, timeout=TIMEOUT)
+    assert "generator has stopped" in scope.status.text()
+    assert "write access denied" in scope.status.text()
+    assert not scope.generator_panel.button.isChecked()
+    qtbot.waitUntil(lambda: _override_on(emulated(SERIAL)) == 0, timeout=TIMEOUT)

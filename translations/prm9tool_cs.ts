@@ -734,6 +734,17 @@
         </message>
     </context>
     <context>
+        <name>GeneratorSettings</name>
+        <message>
+            <source>The generator period must be longer than 0 s.</source>
+            <translation>Perioda generátoru musí být delší než 0 s.</translation>
+        </message>
+        <message>
+            <source>The waveform reaches {0} … {1} %; the setpoint must stay within {2} … {3} %.</source>
+            <translation>Průběh dosahuje {0} … {1} %; žádaná hodnota musí zůstat v rozsahu {2} … {3} %.</translation>
+        </message>
+    </context>
+    <context>
         <name>HelpWindow</name>
         <message>
             <source>prm9tool help</source>
@@ -1588,6 +1599,14 @@ Ujistěte se, že pohyb stroje je bezpečný. Spustit generátor?</translation>
             <source>Saved {0}.</source>
             <translation>Uloženo: {0}.</translation>
         </message>
+        <message>
+            <source>The valve refused a value of the setpoint generator ({0}): the generator has stopped.</source>
+            <translation>Ventil odmítl hodnotu generátoru žádané hodnoty ({0}): generátor se zastavil.</translation>
+        </message>
+        <message>
+            <source>no reason given</source>
+            <translation>bez udání důvodu</translation>
+        </message>
     </context>
     <context>
         <name>SensorScalingDialog</name>
@@ -1606,6 +1625,13 @@ Ujistěte se, že pohyb stroje je bezpečný. Spustit generátor?</translation>
         <message>
             <source>after offset and gain</source>
             <translation>za posunutím a zesílením</translation>
+        </message>
+    </context>
+    <context>
+        <name>SetpointGenerator</name>
+        <message>
+            <source>The setpoint generator needs a connected valve.</source>
+            <translation>Generátor žádané hodnoty potřebuje připojený ventil.</translation>
         </message>
     </context>
     <context>
@@ -1692,6 +1718,10 @@ Ujistěte se, že pohyb stroje je bezpečný. Spustit generátor?</translation>
         <message>
             <source>Measured on {0}.</source>
             <translation>Měřeno na {0}.</translation>
+        </message>
+        <message>
+            <source>No response to the step in {0}: the response stays flat or within its noise.</source>
+            <translation>Žádná odezva na skok v {0}: odezva zůstává plochá nebo v rámci šumu.</translation>
         </message>
     </context>
     <context>

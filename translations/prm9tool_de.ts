@@ -732,6 +732,17 @@
         </message>
     </context>
     <context>
+        <name>GeneratorSettings</name>
+        <message>
+            <source>The generator period must be longer than 0 s.</source>
+            <translation>Die Periode des Generators muss länger als 0 s sein.</translation>
+        </message>
+        <message>
+            <source>The waveform reaches {0} … {1} %; the setpoint must stay within {2} … {3} %.</source>
+            <translation>Die Kurvenform erreicht {0} … {1} %; der Sollwert muss zwischen {2} … {3} % bleiben.</translation>
+        </message>
+    </context>
+    <context>
         <name>HelpWindow</name>
         <message>
             <source>prm9tool help</source>
@@ -1584,6 +1595,14 @@ Stellen Sie sicher, dass die Maschine sich gefahrlos bewegen kann. Generator sta
             <source>Saved {0}.</source>
             <translation>{0} gespeichert.</translation>
         </message>
+        <message>
+            <source>The valve refused a value of the setpoint generator ({0}): the generator has stopped.</source>
+            <translation>Das Ventil hat einen Wert des Sollwertgenerators abgelehnt ({0}): Der Generator wurde gestoppt.</translation>
+        </message>
+        <message>
+            <source>no reason given</source>
+            <translation>ohne Angabe eines Grundes</translation>
+        </message>
     </context>
     <context>
         <name>SensorScalingDialog</name>
@@ -1602,6 +1621,13 @@ Stellen Sie sicher, dass die Maschine sich gefahrlos bewegen kann. Generator sta
         <message>
             <source>after offset and gain</source>
             <translation>nach Offset und Verstärkung</translation>
+        </message>
+    </context>
+    <context>
+        <name>SetpointGenerator</name>
+        <message>
+            <source>The setpoint generator needs a connected valve.</source>
+            <translation>Der Sollwertgenerator braucht ein verbundenes Ventil.</translation>
         </message>
     </context>
     <context>
@@ -1688,6 +1714,10 @@ Stellen Sie sicher, dass die Maschine sich gefahrlos bewegen kann. Generator sta
         <message>
             <source>Measured on {0}.</source>
             <translation>Gemessen auf {0}.</translation>
+        </message>
+        <message>
+            <source>No response to the step in {0}: the response stays flat or within its noise.</source>
+            <translation>Keine Antwort auf den Sprung in {0}: Die Antwort bleibt flach oder im Rauschen.</translation>
         </message>
     </context>
     <context>

@@ -1,9 +1,10 @@
 """Oscilloscope model: ring buffer, trigger engine, cursors, step-response figures, CSV, generator.
 
-Pure numpy, no Qt (the widget lives in ``prm9tool/views/scope.py``). Samples arrive from the
-valve's stream as raw ``(n, channels)`` blocks; :class:`Capture` converts them to display units
-once and appends them to a preallocated :class:`RingBuffer`, so everything downstream (trigger
-level, cursors, figures, CSV) works in the units the user sees. Sample ``i`` of a capture lies at
+Numpy, no Qt widgets (the widget lives in ``prm9tool/views/scope.py``; the generator's
+messages go through QtCore's translate). Samples arrive from the valve's stream as raw
+``(n, channels)`` blocks; :class:`Capture` converts them to display units once and appends them
+to a preallocated :class:`RingBuffer`, so everything downstream (trigger level, cursors,
+figures, CSV) works in the units the user sees. Sample ``i`` of a capture lies at
 ``i / rate`` seconds after the capture started; the stream has no gaps (lost samples are counted
 by the session, not hidden here).
 """

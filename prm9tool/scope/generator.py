@@ -1,4 +1,9 @@
-"""The setpoint generator's waveform maths (the Qt part drives SETPOVR with it)."""
+"""The setpoint generator's waveform maths (the Qt part drives SETPOVR with it).
+
+Its messages are translated with QtCore's ``QCoreApplication.translate`` (context
+``GeneratorSettings``), imported when a message is needed: the emulator imports the scope
+model for its step figures and stays free of Qt.
+"""
 
 from __future__ import annotations
 
@@ -43,14 +48,21 @@ class GeneratorSettings:
 
     def check(self) -> None:
         """Raise ValueRangeError with a user-facing message if the waveform is not allowed."""
+        from PySide6.QtCore import QCoreApplication  # see the module docstring
+
+        translate = QCoreApplication.translate  # the name pyside6-lupdate looks for
         if not self.period > 0:
-            raise ValueRangeError("The generator period must be longer than 0 s.")
+            raise ValueRangeError(
+                translate("GeneratorSettings", "The generator period must be longer than 0 s.")
+            )
         low, high = self.extremes()
         lo, hi = setpoint_limits()
         if low < lo or high > hi:
             raise ValueRangeError(
-                f"The waveform reaches {low:g} … {high:g} %; "
-                f"the setpoint must stay within {lo:g} … {hi:g} %."
+                translate(
+                    "GeneratorSettings",
+                    "The waveform reaches {0} … {1} %; the setpoint must stay within {2} … {3} %.",
+                ).format(f"{low:g}", f"{high:g}", f"{lo:g}", f"{hi:g}")
             )
 
     def value_at(self, t: np.ndarray | float) -> np.ndarray:

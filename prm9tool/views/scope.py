@@ -107,6 +107,7 @@ class ScopeWidget(QWidget):
         self.generator_panel.stop_requested.connect(self.generator.stop)
         self.generator.running_changed.connect(self.generator_panel.set_running)
         self.generator.stopped_by_link.connect(self._on_generator_stopped_by_link)
+        self.generator.refused.connect(self._on_generator_refused)
 
     # --- public API --------------------------------------------------------------------------
     @property
@@ -135,7 +136,7 @@ class ScopeWidget(QWidget):
             self._say(self.tr("Select at least one measuring point on the right."))
             return
         if not self._connection.is_online:
-            self._say(" ".join(filter(None, (self._generator_note, self._offline_text()))))
+            self._update_status()
             return
         self._running = True
         self._start_capture(keys)
@@ -265,18 +266,20 @@ class ScopeWidget(QWidget):
         self._update_status()
 
     def _update_status(self) -> None:
+        self._say(" ".join(filter(None, (self._generator_note, self._state_text()))))
+
+    def _state_text(self) -> str:
         if not self._connection.is_online:
-            self._say(" ".join(filter(None, (self._generator_note, self._offline_text()))))
-        elif not self._running:
-            self._say(self.tr("Stopped. Choose up to three measuring points and press Start."))
-        elif self.display.engine.done:
-            self._say(self.tr("Single capture complete. Resume arms the trigger again."))
-        elif self.display.frozen:
-            self._say(self.tr("Paused: zoom and pan with the mouse; recording continues."))
-        elif self.display.waiting:
-            self._say(self.tr("Waiting for the trigger…"))
-        else:
-            self._say(self._recording_text())
+            return self._offline_text()
+        if not self._running:
+            return self.tr("Stopped. Choose up to three measuring points and press Start.")
+        if self.display.engine.done:
+            return self.tr("Single capture complete. Resume arms the trigger again.")
+        if self.display.frozen:
+            return self.tr("Paused: zoom and pan with the mouse; recording continues.")
+        if self.display.waiting:
+            return self.tr("Waiting for the trigger…")
+        return self._recording_text()
 
     def _recording_text(self) -> str:
         rate = self.display.capture.rate_hz if self.display.capture else 0
@@ -315,6 +318,7 @@ class ScopeWidget(QWidget):
         )
         if answer != prompts.Button.Yes:
             return
+        self._generator_note = ""
         try:
             self.generator.start(settings)
         except RuntimeError as exc:
@@ -322,6 +326,12 @@ class ScopeWidget(QWidget):
 
     def _on_generator_stopped_by_link(self) -> None:
         self._generator_note = self.tr("The link dropped: the setpoint generator has stopped.")
+        self._update_status()
+
+    def _on_generator_refused(self, reason: str) -> None:
+        self._generator_note = self.tr(
+            "The valve refused a value of the setpoint generator ({0}): the generator has stopped."
+        ).format(reason or self.tr("no reason given"))
         self._update_status()
 
     # --- export ------------------------------------------------------------------------------

@@ -3,8 +3,11 @@
 While SETPOVRON = 1 the firmware takes its setpoint from SETPOVR instead of the analog input.
 The generator writes SETPOVR every tick in which the value changed and at least every 100 ms
 (the firmware drops the override after 500 ms without USB traffic), and writes SETPOVRON = 0
-when it stops. When the link drops it only stops its timer: nothing can be written any more,
-and the firmware switches the override off by itself.
+when it stops: on Stop, when the scope closes and before the program goes offline. When the
+valve refuses one of these writes the generator stops and says why. When the link drops it
+only stops its timer: nothing can be written any more, and the firmware switches the override
+off by itself; the generator still switches it off at the next connection, in case the valve
+did not notice (an emulated valve stands still while offline).
 """
 
 from __future__ import annotations
@@ -27,6 +30,7 @@ from prm9tool.scope import GeneratorSettings, Waveform, setpoint_limits
 
 TICK_MS = 40  # setpoint update period (25 Hz)
 KEEPALIVE_S = 0.1  # rewrite an unchanged setpoint this often
+OVERRIDE_OBJECTS = frozenset({"SETPOVR", "SETPOVRON"})
 
 
 class SetpointGenerator(QObject):
@@ -34,6 +38,7 @@ class SetpointGenerator(QObject):
 
     running_changed = Signal(bool)
     stopped_by_link = Signal()  # the link dropped while running
+    refused = Signal(str)  # the valve refused a write while running (the reason): stopped
 
     def __init__(self, connection: ScopeConnection, parent: QObject | None = None) -> None:
         super().__init__(parent)
@@ -45,8 +50,12 @@ class SetpointGenerator(QObject):
         self._started = 0.0
         self._last_raw: int | None = None
         self._last_write = 0.0
+        self._override_left_on = False  # SETPOVRON may be 1 in the valve without us running
+        self._last_failure = ""
         connection.lost.connect(self._on_link_lost)
         connection.online_changed.connect(self._on_online_changed)
+        connection.failed.connect(self._on_connection_failed)
+        connection.write_failed.connect(self._on_connection_write_failed)
 
     @property
     def running(self) -> bool:
@@ -61,13 +70,14 @@ class SetpointGenerator(QObject):
         """
         settings.check()
         if not self._connection.is_online:
-            raise RuntimeError("The setpoint generator needs a connected valve.")
+            raise RuntimeError(self.tr("The setpoint generator needs a connected valve."))
         self._settings = settings
         self._started = time.monotonic()
         self._last_raw = None
+        self._timer.start()  # running from here: a refusal of the first writes stops it
         self._write_setpoint(0.0)
+        self._override_left_on = True
         self._connection.write("SETPOVRON", 1)
-        self._timer.start()
         self.running_changed.emit(True)
 
     def stop(self) -> None:
@@ -75,9 +85,13 @@ class SetpointGenerator(QObject):
         if not self.running:
             return
         self._timer.stop()
+        self._switch_off()
+        self.running_changed.emit(False)
+
+    def _switch_off(self) -> None:
         if self._connection.is_online:
             self._connection.write("SETPOVRON", 0)
-        self.running_changed.emit(False)
+            self._override_left_on = False
 
     def _on_tick(self) -> None:
         self._write_setpoint(time.monotonic() - self._started)
@@ -89,6 +103,19 @@ class SetpointGenerator(QObject):
             self._connection.write("SETPOVR", raw)
             self._last_raw, self._last_write = raw, now
 
+    def _on_connection_failed(self, message: str) -> None:
+        self._last_failure = message  # write_failed follows for a refused write
+
+    def _on_connection_write_failed(self, mnemonics: list[str]) -> None:
+        mine = OVERRIDE_OBJECTS.intersection(mnemonics)
+        if not mine:
+            return
+        if self.running:
+            self.stop()
+            self.refused.emit(self._last_failure)
+        elif "SETPOVRON" in mine:
+            self._override_left_on = True  # switching off failed: again at the next connection
+
     def _on_link_lost(self, *_: object) -> None:
         if self.running:
             self._timer.stop()
@@ -98,6 +125,8 @@ class SetpointGenerator(QObject):
     def _on_online_changed(self, online: bool) -> None:
         if not online:
             self._on_link_lost()
+        elif self._override_left_on and not self.running:
+            self._switch_off()
 
 
 class GeneratorPanel(QGroupBox):
