@@ -247,6 +247,29 @@ def test_sync_timeout_is_a_communication_error(rig: Rig):
     assert [f for f in rig.drain() if f.startswith("08A")] == ["08A 00 00 00 00 00 00 00 00"]
 
 
+def test_rpdo_event_timer_is_a_reception_deadline(rig: Rig):
+    rig.exchange("60A 2B 00 14 05 64 00 00 00", "58A 60 00 14 05 00 00 00 00")  # 100 ms
+    rig.exchange("60A 2B 17 10 00 00 00 00 00", "58A 60 17 10 00 00 00 00 00")
+    rig.exchange("60A 23 00 18 01 8A 01 00 80", "58A 60 00 18 01 00 00 00 00")  # no TPDO1
+    _start(rig)
+    rig.valve.advance(1.0)
+    assert rig.drain() == []  # CiA 301: the deadline is armed by the first reception
+    for _ in range(3):
+        rig.send("20A 08 00 00 00 00 00 00 00")
+        rig.barrier()
+        rig.valve.advance(0.1)
+    assert rig.drain() == []
+    rig.valve.advance(0.002)
+    assert rig.drain() == ["08A 00 81 11 00 00 00 00 00"]  # 8100h, register: communication
+    assert rig.valve.status().leds[1].pattern == "quadruple_flash"  # table 7-18: event timer
+    rig.valve.advance(1.0)
+    assert rig.drain() == []  # one event per loss
+    rig.send("000 01 0A")  # the master starts the node again: the error goes (after ~10 s)
+    rig.barrier()
+    rig.valve.advance(11.0)
+    assert rig.drain() == ["08A 00 00 00 00 00 00 00 00"]
+
+
 def test_error_present_at_power_up_is_announced_after_boot_up(request: pytest.FixtureRequest):
     rig = make_rig(request.node.name, E02, boot=False)
     try:

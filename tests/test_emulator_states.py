@@ -162,7 +162,9 @@ def test_can_led_follows_the_nmt_state():
     assert valve.status().leds[2].pattern == "single_flash"
 
 
-@pytest.mark.parametrize("event", ["stopped", "reset_comm", "comm_error", "sync_error"])
+@pytest.mark.parametrize(
+    "event", ["stopped", "reset_comm", "comm_error", "sync_error", "rpdo_timeout"]
+)
 def test_nmt_events_take_an_active_valve_to_fault_reaction(event):
     valve = booted_ca()
     valve.nmt_event("operational")
@@ -199,6 +201,21 @@ def test_sync_error_flashes_led2_three_times_and_goes_when_operational_again():
     valve.advance(10.1)
     assert valve.status().error_code == 0
     assert valve.status().leds[1].pattern == "off"
+
+
+def test_rpdo_timeout_flashes_led2_four_times_and_goes_when_operational_again():
+    valve = booted_ca()
+    valve.nmt_event("operational")
+    valve.nmt_event("rpdo_timeout")  # table 7-18: event-timer error, LED2 quadruple flash
+    status = valve.status()
+    assert (status.error_code, status.error_register) == (0x8100, 0x11)
+    assert "event timer" in status.error_text
+    assert status.leds[0].color == "green" and status.leds[0].pattern == "on"
+    assert status.leds[1].pattern == "quadruple_flash"
+    assert status.leds[2].pattern == "single_flash"
+    valve.nmt_event("operational")
+    valve.advance(10.1)
+    assert valve.status().error_code == 0
 
 
 def test_reset_node_power_cycles():

@@ -58,9 +58,7 @@ def _c(
     )
 
 
-def _pdo(
-    kind: str, n: int, comm: int, mapping: tuple[int, ...], cob: int, with_timer: bool
-) -> list[Parameter]:
+def _pdo(kind: str, n: int, comm: int, mapping: tuple[int, ...], cob: int) -> list[Parameter]:
     rx = kind == "RPDO"
     result = [
         _c(
@@ -68,7 +66,7 @@ def _pdo(
             comm,
             0,
             U8,
-            5 if not rx else 2,
+            5,
             T(
                 f"{kind}{n} communication: highest subindex",
                 f"{kind}{n} Kommunikation: höchster Subindex",
@@ -100,23 +98,7 @@ def _pdo(
             source="table 7-13, 7-12 (RPDO type writable as §7.6 writes it: decision)",
         ),
     ]
-    if with_timer:
-        result.append(
-            _c(
-                f"{kind}{n}TIMER",
-                comm,
-                5,
-                U16,
-                0x1388,
-                T(
-                    f"{kind}{n} event timer",
-                    f"{kind}{n} Ereignis-Timer",
-                    f"{kind}{n} časovač událostí",
-                ),
-                ObjAccess.RW,
-                unit="ms",
-            )
-        )
+    result.append(_rpdo_timer(n, comm) if rx else _tpdo_timer(n, comm))
     map_index = (0x1600 if rx else 0x1A00) + n - 1
     result.append(
         _c(
@@ -148,6 +130,37 @@ def _pdo(
             )
         )
     return result
+
+
+def _tpdo_timer(n: int, comm: int) -> Parameter:
+    return _c(
+        f"TPDO{n}TIMER",
+        comm,
+        5,
+        U16,
+        0x1388,
+        T(f"TPDO{n} event timer", f"TPDO{n} Ereignis-Timer", f"TPDO{n} časovač událostí"),
+        ObjAccess.RW,
+        unit="ms",
+    )
+
+
+def _rpdo_timer(n: int, comm: int) -> Parameter:
+    return _c(
+        f"RPDO{n}TIMER",
+        comm,
+        5,
+        U16,
+        0,
+        T(
+            f"RPDO{n} event timer (reception deadline, 0 = off)",
+            f"RPDO{n} Ereignis-Timer (Empfangsfrist, 0 = aus)",
+            f"RPDO{n} časovač událostí (lhůta příjmu, 0 = vypnuto)",
+        ),
+        ObjAccess.RW,
+        unit="ms",
+        source="CiA 301 deadline monitoring for table 7-18 'Event-Timer Error' (not in 7-13: decision)",
+    )
 
 
 COMMUNICATION: list[Parameter] = [
@@ -351,10 +364,10 @@ COMMUNICATION: list[Parameter] = [
         0,
         2,
     ),
-    *_pdo("RPDO", 1, 0x1400, (0x60400010, 0x63000110), 0x40000200, with_timer=False),
-    *_pdo("RPDO", 2, 0x1401, (0x21000210,), 0x40000300, with_timer=False),
-    *_pdo("TPDO", 1, 0x1800, (0x60410010, 0x63010110), 0x180, with_timer=True),
-    *_pdo("TPDO", 2, 0x1801, (0x21000110, 0x21000610), 0x280, with_timer=True),
+    *_pdo("RPDO", 1, 0x1400, (0x60400010, 0x63000110), 0x40000200),
+    *_pdo("RPDO", 2, 0x1401, (0x21000210,), 0x40000300),
+    *_pdo("TPDO", 1, 0x1800, (0x60410010, 0x63010110), 0x180),
+    *_pdo("TPDO", 2, 0x1801, (0x21000110, 0x21000610), 0x280),
 ]
 
 

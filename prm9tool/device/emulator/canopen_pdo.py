@@ -2,7 +2,8 @@
 
 A channel reads its communication parameters (COB-ID, transmission type, event timer) from the
 valve's object dictionary and its mapping from the catalogue; RPDO1/TPDO1 entry 2 follow the
-control mode 0x6043. Time is counted in whole milliseconds of simulated time.
+control mode 0x6043. The event timer (sub 5) paces a TPDO and is the reception deadline of an
+RPDO (CiA 301). Time is counted in whole milliseconds of simulated time.
 """
 
 from __future__ import annotations
@@ -63,6 +64,7 @@ class PdoChannel:
     last_sent_ms: int = -(10**9)
     last_data: bytes | None = None
     pending: bytes | None = field(default=None, repr=False)  # RPDO data waiting for SYNC
+    deadline_ms: int | None = None  # RPDO: the next frame is due by then (None = not armed)
 
     @property
     def comm_index(self) -> int:
@@ -88,10 +90,11 @@ class PdoChannel:
         """Refresh the configuration from the object dictionary (a new event timer restarts)."""
         self.cob_id = int(valve.read(self.comm_index, 1))
         self.trans_type = int(valve.read(self.comm_index, 2))
-        timer = int(valve.read(self.comm_index, 5)) if self.transmit else 0
+        timer = int(valve.read(self.comm_index, 5))
         if timer != self.event_timer:
             self.event_timer = timer
             self.next_due_ms = now_ms + timer
+            self.deadline_ms = None  # CiA 301: an RPDO deadline is armed by the next reception
 
     def restart(self, now_ms: int) -> None:
         """Reset the counters (entering OPERATIONAL, configuration changed)."""
@@ -99,6 +102,7 @@ class PdoChannel:
         self.next_due_ms = now_ms + self.event_timer
         self.last_data = None
         self.pending = None
+        self.deadline_ms = None
 
 
 class TpdoLogic:
@@ -165,12 +169,22 @@ class RpdoLogic:
         self._valve = valve
         self._length_error = length_error
 
-    def received(self, data: bytes) -> None:
+    def received(self, data: bytes, now_ms: int) -> None:
         """A frame on the RPDO's COB-ID arrived (NMT OPERATIONAL)."""
+        if self.channel.event_timer:
+            self.channel.deadline_ms = now_ms + self.channel.event_timer
         if self.channel.trans_type in SYNC_TYPES:
             self.channel.pending = bytes(data)
         else:
             self.apply(bytes(data))
+
+    def deadline_missed(self, now_ms: int) -> bool:
+        """True once when the event timer (0x1400/5) ran out since the last reception."""
+        channel = self.channel
+        if channel.deadline_ms is None or not channel.valid or now_ms <= channel.deadline_ms:
+            return False
+        channel.deadline_ms = None  # one event per loss; the next reception arms it again
+        return True
 
     def on_sync(self) -> None:
         """Synchronous RPDOs take effect at the SYNC after reception."""

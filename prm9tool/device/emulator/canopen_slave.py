@@ -167,7 +167,7 @@ class CanopenSlave:
         elif self.state is NmtState.OPERATIONAL:
             for logic in self._rpdo_logic:
                 if logic.channel.valid and logic.channel.can_id == can_id:
-                    logic.received(data)
+                    logic.received(data, self._now_ms)
 
     def _on_sync(self) -> None:
         if self.state is not NmtState.OPERATIONAL:
@@ -203,6 +203,7 @@ class CanopenSlave:
             if self._now_ms % CONFIG_POLL_MS == 0:
                 self._load_config()  # PDO parameters written over USB take effect too
             self._check_sync_timeout()
+            self._check_rpdo_deadlines()
             for tpdo in self._tpdo_logic:
                 self._transmit(tpdo, tpdo.on_tick(self._now_ms))
 
@@ -214,6 +215,12 @@ class CanopenSlave:
         if self._now_ms - self._last_sync_ms > SYNC_TIMEOUT_FACTOR * period_us / 1000:
             self._last_sync_ms = None  # one event per loss of SYNC
             self._valve.nmt_event("sync_error")
+
+    def _check_rpdo_deadlines(self) -> None:
+        """0x1400/5 != 0: an RPDO not received within it is the event-timer error (8100h)."""
+        for rpdo in self._rpdo_logic:
+            if rpdo.deadline_missed(self._now_ms):
+                self._valve.nmt_event("rpdo_timeout")
 
     def _heartbeat_ms(self) -> int:
         return int(self._valve.read(HEARTBEAT_TIME, 0))

@@ -68,8 +68,17 @@ ERROR_KINDS: tuple[ErrorKind, ...] = (
         "triple_flash",
         4,
     ),
+    ErrorKind(
+        "rpdo_timeout",
+        0x8100,
+        "CANopen RPDO not received within its event timer (0x1400/5, 0x1401/5)",
+        ("green", "on"),
+        "quadruple_flash",
+        4,
+    ),
 )
-CAN_ERROR_KEYS = frozenset({"communication", "sync"})  # table 7-18 rows: LED1 stays green
+# Table 7-18 rows: LED1 stays green
+CAN_ERROR_KEYS = frozenset({"communication", "sync", "rpdo_timeout"})
 KINDS = {k.key: k for k in ERROR_KINDS}
 WARNING_TEXT = "Warning: electronics temperature above 70 °C"
 

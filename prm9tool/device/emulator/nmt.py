@@ -18,8 +18,13 @@ NMT_EVENTS = (
     "reset_comm",
     "comm_error",
     "sync_error",
+    "rpdo_timeout",
 )
-_ERROR_EVENTS = {"comm_error": "communication", "sync_error": "sync"}
+_ERROR_EVENTS = {
+    "comm_error": "communication",
+    "sync_error": "sync",
+    "rpdo_timeout": "rpdo_timeout",
+}
 
 
 def apply_nmt_event(fw: Firmware, event: str) -> None:
@@ -27,9 +32,10 @@ def apply_nmt_event(fw: Firmware, event: str) -> None:
 
     * ``stopped`` (CiA 301 transitions 5, 8) and ``reset_comm`` (12, 13, 14): a valve in
       DEVICE_MODE_ACTIVE goes to FAULT_REACTION (table 7-21, D8).
-    * ``comm_error`` (heartbeat/guarding event) and ``sync_error`` (SYNC missing, 0x1006): the
-      communication error 8100h becomes present (EMCY; LED2 double resp. triple flash, table
-      7-18) and a valve in DEVICE_MODE_ACTIVE reacts as above; it goes away with the next
+    * ``comm_error`` (heartbeat/guarding event), ``sync_error`` (SYNC missing, 0x1006) and
+      ``rpdo_timeout`` (an RPDO missed its event timer 0x1400/5): the communication error
+      8100h becomes present (EMCY; LED2 double, triple resp. quadruple flash, table 7-18) and
+      a valve in DEVICE_MODE_ACTIVE reacts as above; it goes away with the next
       ``operational`` event.
     """
     if event not in NMT_EVENTS:
