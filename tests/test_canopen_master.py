@@ -204,6 +204,18 @@ def test_every_writable_object_takes_a_valid_value_and_aborts_an_invalid_one(mas
             assert code == AbortCode.READ_ONLY, f"0x{var.index:04X}/{var.subindex}"
 
 
+def test_eds_identity_is_what_the_valve_answers(master: Master):
+    """Vendor, product code, revision (0x1018/1..3) and firmware version 0x100A: the EDS
+    defaults and [DeviceInfo] come from the firmware version the emulator runs."""
+    od = master.node.object_dictionary
+    info = od.device_information
+    identity = (info.vendor_number, info.product_number, info.revision_number)
+    answers = [_upload(master.node, od[0x1018][sub]) for sub in (1, 2, 3)]
+    assert answers == [od[0x1018][sub].default for sub in (1, 2, 3)] == list(identity)
+    assert info.revision_number == 0x00010000  # firmware 1.0.0: major << 16 | minor << 8 | patch
+    assert _upload(master.node, od[0x100A]) == od[0x100A].default == master.valve.firmware_version
+
+
 def test_nmt_state_changes_are_seen_in_heartbeats(master: Master):
     for command, state in (("OPERATIONAL", 0x05), ("STOPPED", 0x04), ("PRE-OPERATIONAL", 0x7F)):
         master.node.nmt.state = command

@@ -9,7 +9,7 @@ from __future__ import annotations
 
 import dataclasses
 
-from prm9tool.catalogue._setpoint import CA_ONLY, RO, STR, U8, U16, U32, T
+from prm9tool.catalogue._setpoint import CA_ONLY, FIRMWARE_VERSION, RO, STR, U8, U16, U32, T
 from prm9tool.catalogue.schema import (
     EVERY_VARIANT as ALL,
 )
@@ -20,6 +20,13 @@ CONST = ObjAccess.CONST
 ERROR_HISTORY_DEPTH = 8  # 0x1003 keeps the 8 newest errors (decision)
 SAVE_SIGNATURE = 0x65766173  # "save" little-endian (CiA 301)
 LOAD_SIGNATURE = 0x64616F6C  # "load" little-endian (CiA 301)
+
+
+def revision_number(version: str) -> int:
+    """0x1018/3 from a ``major.minor.patch`` version text (decision: major<<16|minor<<8|patch)."""
+    parts = [int(p) if p.isdigit() else 0 for p in version.split(".")[:3]]
+    parts += [0] * (3 - len(parts))
+    return (parts[0] & 0xFFFF) << 16 | (parts[1] & 0xFF) << 8 | (parts[2] & 0xFF)
 
 
 def _c(
@@ -341,7 +348,7 @@ COMMUNICATION: list[Parameter] = [
         0x1018,
         3,
         U32,
-        0,
+        revision_number(FIRMWARE_VERSION),
         T(
             "Revision number (firmware major<<16 | minor<<8 | patch)",
             "Revisionsnummer",

@@ -10,6 +10,8 @@ U8, U16, U32 = DataType.UNSIGNED8, DataType.UNSIGNED16, DataType.UNSIGNED32
 S8, S16 = DataType.INTEGER8, DataType.INTEGER16
 STR = DataType.VISIBLE_STRING
 RO = ObjAccess.RO
+# The firmware version the catalogue (and so the EDS) describes; the emulated valve runs it.
+FIRMWARE_VERSION = "1.0.0"
 PERCENT = 100.0 / 16384.0  # normalized internal scale: 16384 = 100 %
 GAIN = 1.0 / 16384.0  # gain factors: 16384 = 1.0 (the manual's sensor-gain convention)
 
@@ -81,7 +83,7 @@ IDENTITY: list[Parameter] = [
         STR,
         0,
         0,
-        "",
+        FIRMWARE_VERSION,
         group="identity",
         access=Access.READ_ONLY,
         obj_access=RO,

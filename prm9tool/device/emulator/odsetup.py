@@ -5,6 +5,7 @@ from __future__ import annotations
 from typing import TYPE_CHECKING
 
 from prm9tool.catalogue import LOAD_SIGNATURE, SAVE_SIGNATURE
+from prm9tool.catalogue._comm import revision_number
 from prm9tool.device.emulator.constants import FULL
 from prm9tool.device.emulator.inputs import CANOPEN_TYPE
 from prm9tool.device.emulator.loopstate import SIGNAL_ORDER
@@ -18,13 +19,6 @@ if TYPE_CHECKING:
     from prm9tool.device.emulator.firmware import Firmware
 
 _SIG = {key: i for i, key in enumerate(SIGNAL_ORDER)}
-
-
-def revision(version: str) -> int:
-    """0x1018/3 from a ``major.minor.patch`` version text (decision: major<<16|minor<<8|patch)."""
-    parts = [int(p) if p.isdigit() else 0 for p in version.split(".")[:3]]
-    parts += [0] * (3 - len(parts))
-    return (parts[0] & 0xFFFF) << 16 | (parts[1] & 0xFF) << 8 | (parts[2] & 0xFF)
 
 
 def clamp_pv(value: float) -> int:
@@ -50,7 +44,7 @@ def _identity(fw: Firmware) -> None:
     _getter(fw, "PCODE", lambda: str(fw.type_key))
     _getter(fw, "SNV", lambda: fw.serial)
     _getter(fw, "FWVER", lambda: fw.firmware_version)
-    _getter(fw, "REVISION", lambda: revision(fw.firmware_version))
+    _getter(fw, "REVISION", lambda: revision_number(fw.firmware_version))
     _getter(fw, "SWBAUD", lambda: fw.latched_switches[0])
     _getter(fw, "SWNODE", lambda: fw.latched_switches[1])
     # Table 7-13: entry 2 of RPDO1/TPDO1 follows the control mode 0x6043, on SDO and USB alike.

@@ -10,7 +10,7 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
-from prm9tool.catalogue import LOAD_SIGNATURE, SAVE_SIGNATURE
+from prm9tool.catalogue import CATALOGUE, LOAD_SIGNATURE, SAVE_SIGNATURE
 from prm9tool.device.emulator.capture import Capture
 from prm9tool.device.emulator.constants import (
     CYCLE_S,
@@ -58,7 +58,7 @@ class EmulatedValve:
         self,
         type_key: str | TypeKey,
         serial: int = 1,
-        firmware_version: str = "1.0.0",
+        firmware_version: str = str(CATALOGUE["FWVER"].default),  # what the EDS describes
         nv_path: str | os.PathLike[str] | None = None,
         switches: tuple[int, int] | None = None,
         plant: PlantConstants = PLANT,
