@@ -5,6 +5,8 @@ from __future__ import annotations
 from PySide6.QtCore import QObject, Signal
 
 from prm9tool.catalogue import Access, Parameter
+from prm9tool.messages import QT_TRANSLATE_NOOP, Message
+from prm9tool.translate import translated
 
 
 class AccessModel(QObject):
@@ -35,10 +37,19 @@ class AccessModel(QObject):
             return False
         return param.access is Access.BASIC or self._level is Access.EXPERT
 
-    def why_locked(self, param: Parameter) -> str:
-        """A tooltip explaining why ``param`` cannot be changed ('' if it can)."""
+    def lock_reason(self, param: Parameter) -> Message | None:
+        """Why ``param`` cannot be changed at the current level (None if it can)."""
         if param.access is Access.READ_ONLY or not param.writable:
-            return f"{param.mnemonic} is a read-only value of the valve."
+            return QT_TRANSLATE_NOOP("Access", "{0} is a read-only value of the valve.")(
+                param.mnemonic
+            )
         if param.access is Access.EXPERT and self._level is Access.BASIC:
-            return f"{param.mnemonic} can only be changed at Expert access level."
-        return ""
+            return QT_TRANSLATE_NOOP("Access", "{0} can only be changed at Expert access level.")(
+                param.mnemonic
+            )
+        return None
+
+    def why_locked(self, param: Parameter) -> str:
+        """A tooltip in the program language explaining why ``param`` is locked ('' if not)."""
+        reason = self.lock_reason(param)
+        return "" if reason is None else translated(reason)

@@ -86,6 +86,8 @@ def create_window(args: argparse.Namespace) -> MainWindow:
 
 def start(window: MainWindow, plan: StartPlan) -> None:
     """Open the file and/or go online, as the command line asked."""
+    from PySide6.QtCore import QCoreApplication
+
     if plan.file is not None:
         window.files.open_path(plan.file, ask=False)
     if plan.emulators:
@@ -96,7 +98,8 @@ def start(window: MainWindow, plan: StartPlan) -> None:
         if wanted:
             window.valve.go_online(wanted[0])
         else:
-            window.status.showMessage(f"--device {plan.devices[0]}: no such valve", 10000)
+            message = QCoreApplication.translate("App", "--device {0}: no such valve")
+            window.status.showMessage(message.format(plan.devices[0]), 10000)
 
 
 def _start_emulated(window: MainWindow, specs: list[str]) -> None:
@@ -106,13 +109,14 @@ def _start_emulated(window: MainWindow, specs: list[str]) -> None:
     connection's worker thread while the window is already shown.
     """
     from prm9tool.errors import TypeKeyError
+    from prm9tool.translate import error_text
     from prm9tool.views import prompts
     from prm9tool.views.hid_dialog import EMULATORS_KEY, SELECTED_KEY, saved_emulators
 
     try:
         normal = [_normal_spec(spec) for spec in specs]
     except TypeKeyError as exc:
-        prompts.inform(window, prompts.Icon.Warning, "--emulator", str(exc))
+        prompts.inform(window, prompts.Icon.Warning, "--emulator", error_text(exc))
         return
     known = saved_emulators(window.settings)
     window.settings.setValue(EMULATORS_KEY, known + [s for s in normal if s not in known])
@@ -124,11 +128,16 @@ def _start_emulated(window: MainWindow, specs: list[str]) -> None:
 def _normal_spec(spec: str) -> str:
     """``TYPEKEY:SERIAL`` with the type key checked and written the canonical way."""
     from prm9tool.errors import TypeKeyError
+    from prm9tool.messages import QT_TRANSLATE_NOOP
     from prm9tool.typekey import TypeKey
 
     key, _, serial = spec.rpartition(":")
     if not serial.isdigit() or not 0 < int(serial) < 2**32:
-        raise TypeKeyError(f"--emulator {spec!r}: the serial number must be 1 … 4294967295")
+        raise TypeKeyError(
+            QT_TRANSLATE_NOOP("App", "--emulator {0}: the serial number must be 1 … 4294967295")(
+                repr(spec)
+            )
+        )
     return f"{TypeKey.parse(key)}:{int(serial)}"
 
 

@@ -13,8 +13,9 @@ from pathlib import Path
 
 from PySide6.QtCore import QObject, Signal
 
-from prm9tool.catalogue import CATALOGUE, Parameter, Problem
+from prm9tool.catalogue import CATALOGUE, Parameter, Problem, variant_label
 from prm9tool.errors import ValueRangeError
+from prm9tool.messages import QT_TRANSLATE_NOOP, Message
 from prm9tool.typekey import TypeKey
 from prm9tool.variant import Variant
 
@@ -23,9 +24,13 @@ Raw = int | str
 
 @dataclass
 class Edit:
-    """One user edit as data: what changes, and how to go back (the undo layer stores these)."""
+    """One user edit as data: what changes, and how to go back (the undo layer stores these).
 
-    text: str
+    ``text`` names the edit (the undo command's text): a translated string from a view, or a
+    :class:`~prm9tool.messages.Message` from the model layer.
+    """
+
+    text: str | Message
     new: dict[str, Raw]
     old: dict[str, Raw]
     new_key: TypeKey | None = None
@@ -135,7 +140,11 @@ class ParameterDocument(QObject):
         """Raise ValueRangeError if ``raw`` may not be set (range, existence, cross rules)."""
         param = CATALOGUE.get(mnemonic)
         if param is None or mnemonic not in self._values:
-            raise ValueRangeError(f"{mnemonic}: no such parameter on a {self.variant.label} valve")
+            raise ValueRangeError(
+                QT_TRANSLATE_NOOP("Problems", "{0}: no such parameter on a {1} valve")(
+                    mnemonic, variant_label(self.variant)
+                )
+            )
         param.check_raw(raw)
         trial = dict(self._values)
         trial[mnemonic] = raw
@@ -146,7 +155,7 @@ class ParameterDocument(QObject):
             if p.severity == "error" and mnemonic in p.mnemonics
         ]
         if errors:
-            raise ValueRangeError(errors[0].message)
+            raise ValueRangeError(errors[0].text)
 
     def set_value(self, mnemonic: str, raw: Raw, text: str | None = None) -> None:
         """Set one value as one undoable user edit; raises ValueRangeError with the reason."""
@@ -156,7 +165,9 @@ class ParameterDocument(QObject):
         label = text or f"{mnemonic} = {CATALOGUE[mnemonic].format_display(raw)}"
         self._commit(Edit(label, {mnemonic: raw}, {mnemonic: self._values[mnemonic]}))
 
-    def set_values(self, values: Mapping[str, Raw], text: str, validate: bool = True) -> None:
+    def set_values(
+        self, values: Mapping[str, Raw], text: str | Message, validate: bool = True
+    ) -> None:
         """Set many values as ONE undoable step (e.g. "Download from valve", "all ramps")."""
         changed = {
             mn: v for mn, v in values.items() if mn in self._values and self._values[mn] != v
@@ -174,7 +185,7 @@ class ParameterDocument(QObject):
             return
         self._commit(
             Edit(
-                f"Valve selection {key}",
+                QT_TRANSLATE_NOOP("Edits", "Valve selection {0}")(str(key)),
                 self._factory_values(key),
                 dict(self._values),
                 new_key=key,

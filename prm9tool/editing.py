@@ -10,6 +10,7 @@ from prm9tool.access import AccessModel
 from prm9tool.catalogue import CATALOGUE, Access
 from prm9tool.document import ParameterDocument, Raw
 from prm9tool.errors import AccessDeniedError
+from prm9tool.messages import QT_TRANSLATE_NOOP
 
 RAMPS: tuple[str, ...] = ("RAMPSETPOSUP", "RAMPSETPOSDOWN", "RAMPSETNEGUP", "RAMPSETNEGDOWN")
 
@@ -28,13 +29,15 @@ def apply_edit(doc: ParameterDocument, access: AccessModel, mnemonic: str, raw: 
     if the value is not allowed. Nothing changes when an error is raised.
     """
     param = CATALOGUE[mnemonic]
-    if not access.may_edit(param):
-        raise AccessDeniedError(access.why_locked(param))
+    reason = access.lock_reason(param)
+    if reason is not None:
+        raise AccessDeniedError(reason)
     targets = linked_mnemonics(doc, access, mnemonic)
     for target in targets:
         doc.validate(target, raw)
     if len(targets) == 1:
         doc.set_value(mnemonic, raw)
     else:
-        label = f"All ramps = {param.format_display(raw)} {param.unit}".rstrip()
+        unit = f" {param.unit}" if param.unit else ""
+        label = QT_TRANSLATE_NOOP("Edits", "All ramps = {0}{1}")(param.format_display(raw), unit)
         doc.set_values(dict.fromkeys(targets, raw), label)

@@ -6,11 +6,12 @@ from PySide6.QtCore import QObject
 from PySide6.QtGui import QUndoCommand, QUndoStack
 
 from prm9tool.document import Edit, ParameterDocument
+from prm9tool.translate import translated
 
 
 class _EditCommand(QUndoCommand):
     def __init__(self, doc: ParameterDocument, edit: Edit) -> None:
-        super().__init__(edit.text)
+        super().__init__(translated(edit.text))
         self._doc = doc
         self._edit = edit
 

@@ -154,8 +154,19 @@ def test_cross_rules():
     problems = CATALOGUE.check_rules(variant, values)
     messages = " | ".join(p.message for p in problems)
     assert "LIMTA = 3000 mA is above the nominal coil current CURNORM = 2600 mA" in messages
-    assert "SETPLIN linearization points must be monotonic" in messages
+    assert "SETPLIN linearization outputs must not decrease: SETPLINYC < SETPLINYB" in messages
     assert any(p.severity == "warning" and "table 8-4" in p.message for p in problems)
+
+
+def test_linearization_outputs_may_stay_level_but_not_fall():
+    variant = Variant(Config.E02, Coils.AB)
+    values = CATALOGUE.defaults(variant)
+    values["SETPLINYC"] = values["SETPLINYB"]  # level: allowed (a dead band)
+    assert CATALOGUE.check_rules(variant, values) == []
+    values["SETPLINXC"] = values["SETPLINXB"]  # X points must differ
+    assert [p.message for p in CATALOGUE.check_rules(variant, values)] == [
+        "SETPLIN: SETPLINXC equals SETPLINXB; X points must differ"
+    ]
 
 
 def test_factory_setpoint_type_follows_the_coil_layout():

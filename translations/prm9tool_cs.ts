@@ -2,6 +2,28 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="cs_CZ">
     <context>
+        <name>Access</name>
+        <message>
+            <source>{0} is a read-only value of the valve.</source>
+            <translation>{0} je hodnota ventilu pouze pro čtení.</translation>
+        </message>
+        <message>
+            <source>{0} can only be changed at Expert access level.</source>
+            <translation>{0} lze změnit pouze na expertní úrovni oprávnění.</translation>
+        </message>
+    </context>
+    <context>
+        <name>App</name>
+        <message>
+            <source>--device {0}: no such valve</source>
+            <translation>--device {0}: ventil nenalezen</translation>
+        </message>
+        <message>
+            <source>--emulator {0}: the serial number must be 1 … 4294967295</source>
+            <translation>--emulator {0}: výrobní číslo musí být 1 … 4294967295</translation>
+        </message>
+    </context>
+    <context>
         <name>BlockDialog</name>
         <message>
             <source>Read only: %1 (View → Access level)</source>
@@ -550,6 +572,17 @@
         </message>
     </context>
     <context>
+        <name>Edits</name>
+        <message>
+            <source>Valve selection {0}</source>
+            <translation>Výběr ventilu {0}</translation>
+        </message>
+        <message>
+            <source>All ramps = {0}{1}</source>
+            <translation>Všechny rampy = {0}{1}</translation>
+        </message>
+    </context>
+    <context>
         <name>Emcy</name>
         <message>
             <source>Warning: electronics temperature above 70 °C</source>
@@ -796,6 +829,10 @@
         <message>
             <source>Listing the valves failed: {0}</source>
             <translation>Výpis ventilů selhal: {0}</translation>
+        </message>
+        <message>
+            <source>emulated {0}, serial {1}</source>
+            <translation>emulovaný ventil {0}, výrobní číslo {1}</translation>
         </message>
         <message>
             <source>Emulated valve</source>
@@ -1327,6 +1364,73 @@
         <message>
             <source>Wrong password.</source>
             <translation>Chybné heslo.</translation>
+        </message>
+    </context>
+    <context>
+        <name>Problems</name>
+        <message>
+            <source>{0} two coils{1}</source>
+            <translation>{0} dvě cívky{1}</translation>
+        </message>
+        <message>
+            <source>{0} coil A{1}</source>
+            <translation>{0} cívka A{1}</translation>
+        </message>
+        <message>
+            <source>{0} coil B{1}</source>
+            <translation>{0} cívka B{1}</translation>
+        </message>
+        <message>
+            <source>{0}: 'value over CANopen' needs a -CA valve</source>
+            <translation>{0}: „hodnota přes CANopen“ vyžaduje ventil -CA</translation>
+        </message>
+        <message>
+            <source>AINSETP: {0} is not a recommended setpoint type for {1} valves (manual table 8-4)</source>
+            <translation>AINSETP: {0} není doporučený typ signálu žádané hodnoty pro ventily {1} (návod, tabulka 8-4)</translation>
+        </message>
+        <message>
+            <source>{0} = {1} mA is above the nominal coil current CURNORM = {2} mA</source>
+            <translation>{0} = {1} mA je vyšší než jmenovitý proud cívky CURNORM = {2} mA</translation>
+        </message>
+        <message>
+            <source>{0}: {1} equals {2}; X points must differ</source>
+            <translation>{0}: {1} se rovná {2}; body X se musí lišit</translation>
+        </message>
+        <message>
+            <source>{0} linearization points must increase strictly: {1} &lt; {2}</source>
+            <translation>{0}: body linearizace musí ostře stoupat: {1} &lt; {2}</translation>
+        </message>
+        <message>
+            <source>{0} linearization outputs must not decrease: {1} &lt; {2}</source>
+            <translation>{0}: výstupní hodnoty linearizace nesmí klesat: {1} &lt; {2}</translation>
+        </message>
+        <message>
+            <source>{0}: {1} is not a number</source>
+            <translation>{0}: {1} není číslo</translation>
+        </message>
+        <message>
+            <source>{0}: {1} is far outside the range</source>
+            <translation>{0}: {1} je daleko mimo rozsah</translation>
+        </message>
+        <message>
+            <source>{0}: expected text, got {1}</source>
+            <translation>{0}: očekáván text, zadáno: {1}</translation>
+        </message>
+        <message>
+            <source>{0}: expected a number, got {1}</source>
+            <translation>{0}: očekáváno číslo, zadáno: {1}</translation>
+        </message>
+        <message>
+            <source>{0}: {1} is not one of the allowed codes {2}</source>
+            <translation>{0}: {1} není žádný z přípustných kódů {2}</translation>
+        </message>
+        <message>
+            <source>{0}: {1}{2} is outside the allowed range {3} … {4}{2}</source>
+            <translation>{0}: {1}{2} je mimo přípustný rozsah {3} … {4}{2}</translation>
+        </message>
+        <message>
+            <source>{0}: no such parameter on a {1} valve</source>
+            <translation>{0}: ventil {1} tento parametr nemá</translation>
         </message>
     </context>
     <context>

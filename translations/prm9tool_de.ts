@@ -2,6 +2,28 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="de_DE">
     <context>
+        <name>Access</name>
+        <message>
+            <source>{0} is a read-only value of the valve.</source>
+            <translation>{0} ist ein nur lesbarer Wert des Ventils.</translation>
+        </message>
+        <message>
+            <source>{0} can only be changed at Expert access level.</source>
+            <translation>{0} kann nur in der Expertenstufe geändert werden.</translation>
+        </message>
+    </context>
+    <context>
+        <name>App</name>
+        <message>
+            <source>--device {0}: no such valve</source>
+            <translation>--device {0}: Ventil nicht gefunden</translation>
+        </message>
+        <message>
+            <source>--emulator {0}: the serial number must be 1 … 4294967295</source>
+            <translation>--emulator {0}: Die Seriennummer muss 1 … 4294967295 sein</translation>
+        </message>
+    </context>
+    <context>
         <name>BlockDialog</name>
         <message>
             <source>Read only: %1 (View → Access level)</source>
@@ -550,6 +572,17 @@
         </message>
     </context>
     <context>
+        <name>Edits</name>
+        <message>
+            <source>Valve selection {0}</source>
+            <translation>Ventilauswahl {0}</translation>
+        </message>
+        <message>
+            <source>All ramps = {0}{1}</source>
+            <translation>Alle Rampen = {0}{1}</translation>
+        </message>
+    </context>
+    <context>
         <name>Emcy</name>
         <message>
             <source>Warning: electronics temperature above 70 °C</source>
@@ -794,6 +827,10 @@
         <message>
             <source>Listing the valves failed: {0}</source>
             <translation>Auflisten der Ventile fehlgeschlagen: {0}</translation>
+        </message>
+        <message>
+            <source>emulated {0}, serial {1}</source>
+            <translation>emuliertes Ventil {0}, Seriennummer {1}</translation>
         </message>
         <message>
             <source>Emulated valve</source>
@@ -1323,6 +1360,73 @@
         <message>
             <source>Wrong password.</source>
             <translation>Falsches Passwort.</translation>
+        </message>
+    </context>
+    <context>
+        <name>Problems</name>
+        <message>
+            <source>{0} two coils{1}</source>
+            <translation>{0} zwei Spulen{1}</translation>
+        </message>
+        <message>
+            <source>{0} coil A{1}</source>
+            <translation>{0} Spule A{1}</translation>
+        </message>
+        <message>
+            <source>{0} coil B{1}</source>
+            <translation>{0} Spule B{1}</translation>
+        </message>
+        <message>
+            <source>{0}: 'value over CANopen' needs a -CA valve</source>
+            <translation>{0}: „Wert über CANopen“ erfordert ein Ventil mit -CA</translation>
+        </message>
+        <message>
+            <source>AINSETP: {0} is not a recommended setpoint type for {1} valves (manual table 8-4)</source>
+            <translation>AINSETP: {0} ist kein empfohlener Sollwertsignaltyp für Ventile {1} (Handbuch, Tabelle 8-4)</translation>
+        </message>
+        <message>
+            <source>{0} = {1} mA is above the nominal coil current CURNORM = {2} mA</source>
+            <translation>{0} = {1} mA liegt über dem Nennstrom der Spule CURNORM = {2} mA</translation>
+        </message>
+        <message>
+            <source>{0}: {1} equals {2}; X points must differ</source>
+            <translation>{0}: {1} ist gleich {2}; die X-Stützpunkte müssen verschieden sein</translation>
+        </message>
+        <message>
+            <source>{0} linearization points must increase strictly: {1} &lt; {2}</source>
+            <translation>{0}: Die Stützpunkte der Linearisierung müssen streng steigend sein: {1} &lt; {2}</translation>
+        </message>
+        <message>
+            <source>{0} linearization outputs must not decrease: {1} &lt; {2}</source>
+            <translation>{0}: Die Ausgangswerte der Linearisierung dürfen nicht fallen: {1} &lt; {2}</translation>
+        </message>
+        <message>
+            <source>{0}: {1} is not a number</source>
+            <translation>{0}: {1} ist keine Zahl</translation>
+        </message>
+        <message>
+            <source>{0}: {1} is far outside the range</source>
+            <translation>{0}: {1} liegt weit außerhalb des Bereichs</translation>
+        </message>
+        <message>
+            <source>{0}: expected text, got {1}</source>
+            <translation>{0}: Text erwartet, erhalten: {1}</translation>
+        </message>
+        <message>
+            <source>{0}: expected a number, got {1}</source>
+            <translation>{0}: Zahl erwartet, erhalten: {1}</translation>
+        </message>
+        <message>
+            <source>{0}: {1} is not one of the allowed codes {2}</source>
+            <translation>{0}: {1} ist keiner der zulässigen Codes {2}</translation>
+        </message>
+        <message>
+            <source>{0}: {1}{2} is outside the allowed range {3} … {4}{2}</source>
+            <translation>{0}: {1}{2} liegt außerhalb des zulässigen Bereichs {3} … {4}{2}</translation>
+        </message>
+        <message>
+            <source>{0}: no such parameter on a {1} valve</source>
+            <translation>{0}: Diesen Parameter gibt es beim Ventil {1} nicht</translation>
         </message>
     </context>
     <context>

@@ -40,6 +40,7 @@ from prm9tool.catalogue.schema import (
     Parameter,
     Texts,
 )
+from prm9tool.messages import QT_TRANSLATE_NOOP, Message
 from prm9tool.variant import Coils, Variant
 
 __all__ = [
@@ -56,6 +57,7 @@ __all__ = [
     "Parameter",
     "Problem",
     "Texts",
+    "variant_label",
 ]
 
 # Recommended setpoint signal types per coil layout (manual table 8-4).
@@ -68,11 +70,29 @@ RECOMMENDED_SETPOINT_TYPES: Mapping[Coils, frozenset[int]] = {
 
 @dataclass(frozen=True)
 class Problem:
-    """A rule violation in a parameter set; ``severity`` is ``error`` or ``warning``."""
+    """A rule violation in a parameter set; ``severity`` is ``error`` or ``warning``.
+
+    ``text`` is translatable (``prm9tool.translate.translated``); ``message`` is English.
+    """
 
     mnemonics: tuple[str, ...]
-    message: str
+    text: Message
     severity: str = "error"
+
+    @property
+    def message(self) -> str:
+        """The problem in English (files, the command line)."""
+        return str(self.text)
+
+
+def variant_label(variant: Variant) -> Message:
+    """``variant.label`` (e.g. ``E04 coil A -CA``) as a translatable message."""
+    coils = {
+        Coils.AB: QT_TRANSLATE_NOOP("Problems", "{0} two coils{1}"),
+        Coils.A: QT_TRANSLATE_NOOP("Problems", "{0} coil A{1}"),
+        Coils.B: QT_TRANSLATE_NOOP("Problems", "{0} coil B{1}"),
+    }[variant.coils]
+    return coils(variant.config.value, " -CA" if variant.canopen else "")
 
 
 class Catalogue:
@@ -133,41 +153,49 @@ class Catalogue:
         return {p.mnemonic: p.default_for(variant, node_id) for p in self.for_variant(variant)}
 
     def check_rules(self, variant: Variant, values: Mapping[str, int | str]) -> list[Problem]:
-        """Cross-parameter rules (current limits, monotonic curves, recommended types)."""
-        problems: list[Problem] = []
-        curnorm = values.get("CURNORM", self["CURNORM"].default)
-        for mn in ("LIMTA", "LIMTB"):
-            value = values.get(mn)
-            if isinstance(value, int) and isinstance(curnorm, int) and value > curnorm:
-                problems.append(
-                    Problem(
-                        (mn, "CURNORM"),
-                        f"{mn} = {value} mA is above the nominal coil current CURNORM = {curnorm} mA",
-                    )
-                )
+        """Cross-parameter rules (current limits, curves that go one way, recommended types)."""
+        problems = _check_current_limits(values, self["CURNORM"].default)
         for prefix in ("SETPLIN", "SENSLIN"):
             problems.extend(_check_curve(prefix, values))
-        setp_type = values.get("AINSETP")
-        if isinstance(setp_type, int) and setp_type != 14:
-            recommended = RECOMMENDED_SETPOINT_TYPES[variant.coils]
-            if setp_type not in recommended:
-                label = self["AINSETP"].choice_text(setp_type)
-                problems.append(
-                    Problem(
-                        ("AINSETP",),
-                        f"AINSETP: {label} is not a recommended setpoint type for "
-                        f"{variant.label} valves (manual table 8-4)",
-                        "warning",
-                    )
-                )
+        problems.extend(self._check_setpoint_type(variant, values.get("AINSETP")))
         if not variant.canopen:
             for mn in ("AINSETP", "SENSTYPE"):
                 if values.get(mn) == 14:
-                    problems.append(Problem((mn,), f"{mn}: 'value over CANopen' needs a -CA valve"))
+                    text = QT_TRANSLATE_NOOP(
+                        "Problems", "{0}: 'value over CANopen' needs a -CA valve"
+                    )(mn)
+                    problems.append(Problem((mn,), text))
         return problems
+
+    def _check_setpoint_type(self, variant: Variant, setp_type: int | str | None) -> list[Problem]:
+        """Warn about a setpoint type manual table 8-4 does not recommend for the coil layout."""
+        if not isinstance(setp_type, int) or setp_type == 14:
+            return []
+        if setp_type in RECOMMENDED_SETPOINT_TYPES[variant.coils]:
+            return []
+        label = dict(self["AINSETP"].choices).get(setp_type, str(setp_type))
+        text = QT_TRANSLATE_NOOP(
+            "Problems",
+            "AINSETP: {0} is not a recommended setpoint type for {1} valves (manual table 8-4)",
+        )(label, variant_label(variant))
+        return [Problem(("AINSETP",), text, "warning")]
+
+
+def _check_current_limits(values: Mapping[str, int | str], default: int | str) -> list[Problem]:
+    curnorm = values.get("CURNORM", default)
+    problems = []
+    for mn in ("LIMTA", "LIMTB"):
+        value = values.get(mn)
+        if isinstance(value, int) and isinstance(curnorm, int) and value > curnorm:
+            text = QT_TRANSLATE_NOOP(
+                "Problems", "{0} = {1} mA is above the nominal coil current CURNORM = {2} mA"
+            )(mn, value, curnorm)
+            problems.append(Problem((mn, "CURNORM"), text))
+    return problems
 
 
 def _check_curve(prefix: str, values: Mapping[str, int | str]) -> list[Problem]:
+    """X points must increase strictly, Y points must not decrease (equal neighbours allowed)."""
     problems = []
     for axis in ("X", "Y"):
         names = [f"{prefix}{axis}{letter}" for letter in "ABCDEFGHI"]
@@ -177,17 +205,27 @@ def _check_curve(prefix: str, values: Mapping[str, int | str]) -> list[Problem]:
         for left, right, a, b in zip(names, names[1:], points, points[1:], strict=False):
             assert isinstance(a, int) and isinstance(b, int)
             if b < a or (axis == "X" and b == a):
-                rule = "increase strictly" if axis == "X" else "be monotonic"
                 problems.append(
-                    Problem(
-                        (left, right),
-                        f"{prefix} linearization points must {rule}: {right} < {left}"
-                        if b < a
-                        else f"{prefix}: {right} equals {left}; X points must differ",
-                    )
+                    Problem((left, right), _curve_text(prefix, axis, left, right, a, b))
                 )
                 break
     return problems
+
+
+def _curve_text(prefix: str, axis: str, left: str, right: str, a: int, b: int) -> Message:
+    if b == a:
+        return QT_TRANSLATE_NOOP("Problems", "{0}: {1} equals {2}; X points must differ")(
+            prefix, right, left
+        )
+    if axis == "X":
+        template = QT_TRANSLATE_NOOP(
+            "Problems", "{0} linearization points must increase strictly: {1} < {2}"
+        )
+    else:
+        template = QT_TRANSLATE_NOOP(
+            "Problems", "{0} linearization outputs must not decrease: {1} < {2}"
+        )
+    return template(prefix, right, left)
 
 
 CATALOGUE = Catalogue(

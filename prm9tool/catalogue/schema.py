@@ -8,6 +8,7 @@ from dataclasses import dataclass, field
 from enum import IntEnum, StrEnum
 
 from prm9tool.errors import ValueRangeError
+from prm9tool.messages import QT_TRANSLATE_NOOP
 from prm9tool.variant import Coils, Config, Variant
 
 
@@ -222,9 +223,17 @@ class Parameter:
             return str(display)
         value = float(display)
         if not math.isfinite(value):
-            raise ValueRangeError(f"{self.mnemonic}: {display!r} is not a number")
+            raise ValueRangeError(
+                QT_TRANSLATE_NOOP("Problems", "{0}: {1} is not a number")(
+                    self.mnemonic, repr(display)
+                )
+            )
         if not math.isfinite(value / self.scale):  # e.g. 1e308 % overflows the raw value
-            raise ValueRangeError(f"{self.mnemonic}: {display!r} is far outside the range")
+            raise ValueRangeError(
+                QT_TRANSLATE_NOOP("Problems", "{0}: {1} is far outside the range")(
+                    self.mnemonic, repr(display)
+                )
+            )
         return round(value / self.scale)
 
     def format_display(self, raw: int | str) -> str:
@@ -250,7 +259,11 @@ class Parameter:
                 if cleaned.lower() in (label.en.lower(), label.de.lower(), label.cs.lower()):
                     return code
         if not _is_number(cleaned):
-            raise ValueRangeError(f"{self.mnemonic}: {text.strip()!r} is not a number")
+            raise ValueRangeError(
+                QT_TRANSLATE_NOOP("Problems", "{0}: {1} is not a number")(
+                    self.mnemonic, repr(text.strip())
+                )
+            )
         raw = self.to_raw(cleaned)
         assert isinstance(raw, int)
         return raw
@@ -260,21 +273,32 @@ class Parameter:
         """Raise ValueRangeError with a user-facing message if ``raw`` is not allowed."""
         if self.is_string:
             if not isinstance(raw, str):
-                raise ValueRangeError(f"{self.mnemonic}: expected text, got {raw!r}")
+                raise ValueRangeError(
+                    QT_TRANSLATE_NOOP("Problems", "{0}: expected text, got {1}")(
+                        self.mnemonic, repr(raw)
+                    )
+                )
             return
         if isinstance(raw, (str, bool)):
-            raise ValueRangeError(f"{self.mnemonic}: expected a number, got {raw!r}")
+            raise ValueRangeError(
+                QT_TRANSLATE_NOOP("Problems", "{0}: expected a number, got {1}")(
+                    self.mnemonic, repr(raw)
+                )
+            )
         if self.choices and raw not in {code for code, _ in self.choices}:
             allowed = ", ".join(str(code) for code, _ in self.choices)
             raise ValueRangeError(
-                f"{self.mnemonic}: {raw} is not one of the allowed codes {allowed}"
+                QT_TRANSLATE_NOOP("Problems", "{0}: {1} is not one of the allowed codes {2}")(
+                    self.mnemonic, raw, allowed
+                )
             )
         if not self.raw_min <= raw <= self.raw_max:
             lo, hi = self.format_display(self.raw_min), self.format_display(self.raw_max)
             unit = f" {self.unit}" if self.unit else ""
-            got = self.format_display(raw)
             raise ValueRangeError(
-                f"{self.mnemonic}: {got}{unit} is outside the allowed range {lo} … {hi}{unit}"
+                QT_TRANSLATE_NOOP(
+                    "Problems", "{0}: {1}{2} is outside the allowed range {3} … {4}{2}"
+                )(self.mnemonic, self.format_display(raw), unit, lo, hi)
             )
 
     def choice_text(self, raw: int, language: str = "en") -> str:

@@ -171,6 +171,8 @@ class HidConfigurationDialog(QDialog):
         selected = str(self._settings.value(SELECTED_KEY, ""))
         for row, entry in enumerate(self._entries):
             cells = describe(entry)
+            if cells[0] == "emulator":  # the device layer describes it in English
+                cells[4] = self.tr("emulated {0}, serial {1}").format(cells[1], cells[2])
             cells[0] = self._kind_text(cells[0])
             for column, cell in enumerate(cells):
                 self.table.setItem(row, column, QTableWidgetItem(cell))

@@ -24,6 +24,7 @@ from prm9tool.document import ParameterDocument, Raw
 from prm9tool.editing import apply_edit, linked_mnemonics
 from prm9tool.errors import AccessDeniedError, ValueRangeError
 from prm9tool.i18n import current_language, text
+from prm9tool.translate import error_text
 
 
 class ParameterEditDialog(QDialog):
@@ -45,6 +46,7 @@ class ParameterEditDialog(QDialog):
         self.error_label.setWordWrap(True)
         self.error_label.setStyleSheet("color: #d03030;")
         self.error_label.hide()
+        self._error: Exception | None = None  # the refusal shown, retranslated with the dialog
         self._labels = {name: QLabel() for name in ("current", "range", "default", "hint")}
         self._form_titles = {name: QLabel() for name in ("current", "range", "default", "new")}
         self._buttons = QDialogButtonBox(
@@ -69,7 +71,7 @@ class ParameterEditDialog(QDialog):
             return combo
         line = QLineEdit(self.param.format_display(value))
         line.selectAll()
-        line.textEdited.connect(lambda _text: self.error_label.hide())
+        line.textEdited.connect(lambda _text: self._clear_error())
         return line
 
     def _build_layout(self) -> None:
@@ -113,6 +115,8 @@ class ParameterEditDialog(QDialog):
             )
         self._labels["hint"].setText(hint)
         self._labels["hint"].setVisible(bool(hint))
+        if self._error is not None:
+            self.error_label.setText(error_text(self._error))
 
     def _lock_reason(self) -> str:
         if not self.param.writable or self.param.access is Access.READ_ONLY:
@@ -162,11 +166,16 @@ class ParameterEditDialog(QDialog):
         try:
             apply_edit(self._doc, self._access, self.param.mnemonic, self._entered_raw())
         except (ValueRangeError, AccessDeniedError) as exc:
-            self.show_error(str(exc))
+            self.show_error(exc)
             return
         self.accept()
 
-    def show_error(self, message: str) -> None:
-        """Show why the value was refused; the dialog stays open."""
-        self.error_label.setText(message)
+    def show_error(self, error: Exception) -> None:
+        """Show why the value was refused (in the program language); the dialog stays open."""
+        self._error = error
+        self.error_label.setText(error_text(self._error))
         self.error_label.show()
+
+    def _clear_error(self) -> None:
+        self._error = None
+        self.error_label.hide()

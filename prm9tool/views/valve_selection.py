@@ -21,6 +21,7 @@ from PySide6.QtWidgets import (
 )
 
 from prm9tool.errors import TypeKeyError
+from prm9tool.translate import error_text
 from prm9tool.typekey import FLOWS, SPOOLS, SUPPLIES, TypeKey
 from prm9tool.variant import Config
 
@@ -43,6 +44,7 @@ class ValveSelectionDialog(QDialog):
         self.error_label = QLabel()
         self.error_label.setStyleSheet("color: #d03030;")
         self.error_label.setWordWrap(True)
+        self._error: TypeKeyError | None = None  # why the typed key is refused
         self._titles = [QLabel() for _ in range(7)]
         self._intro = QLabel()
         self._intro.setWordWrap(True)
@@ -112,6 +114,8 @@ class ValveSelectionDialog(QDialog):
         for row, spool in enumerate(SPOOLS.values()):
             note = "" if spool.from_manual else self.tr(" (assumption)")
             self.spool.setItemText(row, f"{spool.code} – {self._coil_text(spool.code)}{note}")
+        if self._error is not None:
+            self.error_label.setText(error_text(self._error))
 
     def _coil_text(self, code: str) -> str:
         coils = SPOOLS[code].coils.value
@@ -157,6 +161,7 @@ class ValveSelectionDialog(QDialog):
         self._key = key
         if self.key_edit.text() != str(key):
             self.key_edit.setText(str(key))
+        self._error = None
         self.error_label.hide()
         self.buttons.button(QDialogButtonBox.StandardButton.Ok).setEnabled(True)
 
@@ -179,7 +184,8 @@ class ValveSelectionDialog(QDialog):
         try:
             key = TypeKey.parse(typed)
         except TypeKeyError as exc:
-            self.error_label.setText(str(exc))
+            self._error = exc
+            self.error_label.setText(error_text(exc))
             self.error_label.show()
             self.buttons.button(QDialogButtonBox.StandardButton.Ok).setEnabled(False)
             return

@@ -1,0 +1,31 @@
+"""Messages of the model layer in the program language, for the views (QtCore only).
+
+The model builds :class:`~prm9tool.messages.Message` objects whose ``str()`` is English; this
+module is where a view (or a QtCore model that produces view texts, such as the access level's
+tooltips) turns one into the current language through Qt's translators.
+"""
+
+from __future__ import annotations
+
+from PySide6.QtCore import QCoreApplication
+
+from prm9tool.i18n import current_language
+from prm9tool.messages import Message
+
+
+def translated(message: Message | str) -> str:
+    """``message`` in the current language (a plain string is returned as it is)."""
+    if isinstance(message, Message):
+        return message.render(QCoreApplication.translate, current_language())
+    return message
+
+
+def error_text(error: BaseException) -> str:
+    """What to show a user for ``error``, in the current language.
+
+    An error raised with a :class:`~prm9tool.messages.Message` (catalogue, document, type key,
+    access level) is translated; any other gives ``str(error)``.
+    """
+    if len(error.args) == 1 and isinstance(error.args[0], Message):
+        return translated(error.args[0])
+    return str(error)

@@ -1,0 +1,110 @@
+"""Messages of the model layer (refusals, lock reasons, undo texts) in German
+and Czech when the program runs in that language; English again after switching back."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import pytest
+from gui_support import E02, settings_in
+
+from prm9tool import i18n
+from prm9tool.access import AccessModel
+from prm9tool.catalogue import CATALOGUE
+from prm9tool.document import ParameterDocument
+from prm9tool.editing import apply_edit
+from prm9tool.undo import DocumentUndo
+from prm9tool.views.hid_dialog import HidConfigurationDialog
+from prm9tool.views.parameter_view import ParameterListView
+
+
+@pytest.fixture
+def language(qapp):
+    """Switch the program language for one test; English again afterwards."""
+    yield i18n.set_language
+    i18n.set_language("en")
+
+
+@pytest.fixture
+def doc(qapp):
+    return ParameterDocument(E02)
+
+
+def _refusal(qtbot, doc, mnemonic: str, entered: str):
+    view = ParameterListView(doc, AccessModel())
+    qtbot.addWidget(view)
+    dialog = view.make_edit_dialog(mnemonic)
+    qtbot.addWidget(dialog)
+    dialog.set_text(entered)
+    dialog._buttons.accepted.emit()
+    assert not dialog.error_label.isHidden()
+    return dialog
+
+
+def test_parameter_dialog_refuses_limta_above_curnorm_in_german(qtbot, doc, language):
+    language("de")
+    dialog = _refusal(qtbot, doc, "LIMTA", "2650")
+    assert dialog.error_label.text() == (
+        "LIMTA = 2650 mA liegt über dem Nennstrom der Spule CURNORM = 2600 mA"
+    )
+    assert doc.value("LIMTA") == 2400 and not doc.modified
+
+
+def test_an_open_refusal_follows_the_language(qtbot, doc, language):
+    language("cs")
+    dialog = _refusal(qtbot, doc, "LIMTA", "2650")
+    assert dialog.error_label.text() == (
+        "LIMTA = 2650 mA je vyšší než jmenovitý proud cívky CURNORM = 2600 mA"
+    )
+    language("en")
+    assert dialog.error_label.text() == (
+        "LIMTA = 2650 mA is above the nominal coil current CURNORM = 2600 mA"
+    )
+
+
+def test_a_curve_that_falls_is_refused_in_german(doc, language):
+    language("de")
+    from prm9tool.errors import ValueRangeError
+    from prm9tool.translate import error_text
+
+    access = AccessModel()
+    access.set_level(access.level.EXPERT)
+    with pytest.raises(ValueRangeError) as caught:
+        apply_edit(doc, access, "SETPLINYC", doc.value("SETPLINYB") - 1)
+    assert error_text(caught.value) == (
+        "SETPLIN: Die Ausgangswerte der Linearisierung dürfen nicht fallen: SETPLINYC < SETPLINYB"
+    )
+    assert str(caught.value).startswith("SETPLIN linearization outputs must not decrease")
+
+
+def test_lock_reason_and_undo_text_in_german(doc, language):
+    language("de")
+    access = AccessModel()
+    assert access.why_locked(CATALOGUE["POSKP"]) == (
+        "POSKP kann nur in der Expertenstufe geändert werden."
+    )
+    assert access.why_locked(CATALOGUE["PWR"]) == "PWR ist ein nur lesbarer Wert des Ventils."
+    undo = DocumentUndo(doc)
+    apply_edit(doc, access, "RAMPSETPOSUP", 100)  # Basic level: all four ramps
+    assert undo.stack.undoText() == "Alle Rampen = 100 ms"
+    doc.set_type_key("PRM9-06.2Z51/30-24E02S02")
+    assert undo.stack.undoText() == "Ventilauswahl PRM9-06.2Z51/30-24E02S02"
+
+
+@dataclass(frozen=True)
+class _Entry:
+    device_id: str = "emulator:PRM9-06.3Z11/30-24E02S02-CA:1001"
+    kind: str = "emulator"
+    type_key: str = "PRM9-06.3Z11/30-24E02S02-CA"
+    serial: int = 1001
+    firmware: str = "V0.35.16"
+    description: str = "emulated PRM9-06.3Z11/30-24E02S02-CA, serial 1001"
+
+
+def test_hid_dialog_describes_emulated_valves_in_german(qtbot, tmp_path, language):
+    language("de")
+    dialog = HidConfigurationDialog(lambda _emulators: [_Entry()], settings_in(tmp_path))
+    qtbot.addWidget(dialog)
+    assert dialog.table.item(0, 4).text() == (
+        "emuliertes Ventil PRM9-06.3Z11/30-24E02S02-CA, Seriennummer 1001"
+    )
