@@ -16,11 +16,12 @@ Layout (SPEC §2.2, inference from the manual's examples)::
 from __future__ import annotations
 
 import json
-import re
 from dataclasses import dataclass
 from pathlib import Path
+from typing import NoReturn
 
 from prm9tool.errors import TypeKeyError
+from prm9tool.messages import QT_TRANSLATE_NOOP, Arg, Message, Template
 from prm9tool.variant import Coils, Config, Variant
 
 FLOWS: dict[str, tuple[str, ...]] = {"06": ("05", "08", "15", "30"), "10": ("30", "60")}
@@ -69,12 +70,6 @@ def load_extra_spools(path: Path) -> None:
     SPOOLS.update(new)
 
 
-_PATTERN = re.compile(
-    r"^(?P<series>[^-]*)-(?P<size>[^.]*)\.(?P<spool>[^/]*)/(?P<flow>[^-]*)-"
-    r"(?P<supply>\d*)(?P<config>E\d\d)?(?P<series2>S\d\d)?(?P<tail>.*)$"
-)
-
-
 @dataclass(frozen=True)
 class TypeKey:
     """A validated type key."""
@@ -105,45 +100,7 @@ class TypeKey:
     @classmethod
     def parse(cls, text: str) -> TypeKey:
         """Parse and validate ``text``; raises TypeKeyError naming the wrong part."""
-        key = text.strip().upper()
-        m = _PATTERN.match(key)
-        if not key.startswith("PRM9-"):
-            raise TypeKeyError(f"type key {text!r}: must start with 'PRM9-'")
-        if m is None:
-            raise TypeKeyError(
-                f"type key {text!r}: expected the form PRM9-<size>.<spool>/<flow>-<supply>"
-                "<E02|E04>S02[-CA], e.g. PRM9-06.3Z11/30-24E02S02"
-            )
-        return cls._from_match(text, m)
-
-    @classmethod
-    def _from_match(cls, text: str, m: re.Match[str]) -> TypeKey:
-        size, spool, flow = m["size"], m["spool"], m["flow"]
-        if size not in FLOWS:
-            raise TypeKeyError(f"type key {text!r}: nominal size {size!r} must be 06 or 10")
-        if spool not in SPOOLS:
-            known = ", ".join(sorted(SPOOLS))
-            raise TypeKeyError(f"type key {text!r}: unknown spool {spool!r} (known: {known})")
-        if flow not in FLOWS[size]:
-            allowed = ", ".join(FLOWS[size])
-            raise TypeKeyError(
-                f"type key {text!r}: flow {flow!r} l/min does not exist for Dn{size} "
-                f"(allowed: {allowed})"
-            )
-        if m["supply"] not in SUPPLIES:
-            raise TypeKeyError(f"type key {text!r}: supply voltage {m['supply']!r} must be 24")
-        if m["config"] not in ("E02", "E04"):
-            raise TypeKeyError(
-                f"type key {text!r}: configuration {m['config'] or '(missing)'!r} "
-                "must be E02 or E04"
-            )
-        if m["series2"] != "S02":
-            raise TypeKeyError(
-                f"type key {text!r}: electronics series {m['series2'] or '(missing)'!r} must be S02"
-            )
-        if m["tail"] not in ("", "-CA"):
-            raise TypeKeyError(f"type key {text!r}: suffix {m['tail']!r} must be empty or -CA")
-        return cls(size, spool, flow, m["supply"], Config(m["config"]), m["tail"] == "-CA")
+        return _Parser(text).type_key()
 
 
 def all_type_keys() -> list[TypeKey]:
@@ -156,3 +113,158 @@ def all_type_keys() -> list[TypeKey]:
         for config in Config
         for ca in (False, True)
     ]
+
+
+# --- parsing ---------------------------------------------------------------------------------
+_DIGITS = "0123456789"
+_CODE = _DIGITS + "ABCDEFGHIJKLMNOPQRSTUVWXYZ"
+_SEPARATORS = ".-/"
+
+
+def _span(text: str, start: int, allowed: str) -> int:
+    """End of the run of ``allowed`` characters of ``text`` from ``start``."""
+    end = start
+    while end < len(text) and text[end] in allowed:
+        end += 1
+    return end
+
+
+def _span_until(text: str, start: int, stops: str) -> int:
+    """End of the run of characters of ``text`` from ``start`` that are not in ``stops``."""
+    end = start
+    while end < len(text) and text[end] not in stops:
+        end += 1
+    return end
+
+
+class _Parser:
+    """Reads a type key part by part, so that an error names the part or separator that is wrong.
+
+    Structure first (every separator where it belongs), then the values in reading order.
+    """
+
+    def __init__(self, text: str) -> None:
+        self._text = text
+        self._key = text.strip().upper()
+        self._pos = 0
+
+    def type_key(self) -> TypeKey:
+        if not self._key.startswith("PRM9-"):
+            self._fail(QT_TRANSLATE_NOOP("TypeKey", "type key {0}: must start with 'PRM9-'"))
+        self._pos = len("PRM9-")
+        size = self._part(_DIGITS, ".", _PART_SIZE, _EXPECTED_DOT)
+        spool = self._part(_CODE, "/", _PART_SPOOL, _EXPECTED_SLASH)
+        flow = self._part(_DIGITS, "-", _PART_FLOW, _EXPECTED_DASH)
+        supply, config, series, suffix = self._electronics()
+        self._check_values(size, spool, flow)
+        self._check_electronics(supply, config, series, suffix)
+        return TypeKey(size, spool, flow, supply, Config(config), suffix == "-CA")
+
+    def _fail(self, template: Template, *args: Arg) -> NoReturn:
+        raise TypeKeyError(template(repr(self._text), *args))
+
+    def _part(self, allowed: str, separator: str, name: Message, wrong: Template) -> str:
+        """The part at the cursor (a run of ``allowed``) and the ``separator`` after it."""
+        end = _span(self._key, self._pos, allowed)
+        if end == self._pos:  # e.g. 'DN06': take it whole, so that the value check names it
+            end = _span_until(self._key, self._pos, _SEPARATORS)
+        part, found = self._key[self._pos : end], self._key[end : end + 1]
+        if not part:
+            self._fail(_MISSING, name)
+        if found != separator:
+            self._fail(wrong, repr(part), repr(found) if found else _END_OF_KEY)
+        self._pos = end + 1
+        return part
+
+    def _electronics(self) -> tuple[str, str, str, str]:
+        """``24E02S02[-CA]`` split into supply, configuration, series and suffix."""
+        end = _span_until(self._key, self._pos, "-")
+        block, suffix = self._key[self._pos : end], self._key[end:]
+        supply_end = _span(block, 0, _DIGITS)
+        config_end = supply_end
+        if block[supply_end : supply_end + 1] not in ("", "S"):  # E02, E04 or a wrong letter
+            config_end = _span(block, supply_end + 1, _DIGITS)
+        supply, config = block[:supply_end], block[supply_end:config_end]
+        return supply, config, block[config_end:], suffix
+
+    def _check_values(self, size: str, spool: str, flow: str) -> None:
+        if size not in FLOWS:
+            self._fail(
+                QT_TRANSLATE_NOOP("TypeKey", "type key {0}: nominal size {1} must be 06 or 10"),
+                repr(size),
+            )
+        if spool not in SPOOLS:
+            self._fail(
+                QT_TRANSLATE_NOOP("TypeKey", "type key {0}: unknown spool {1} (known: {2})"),
+                repr(spool),
+                ", ".join(sorted(SPOOLS)),
+            )
+        if flow not in FLOWS[size]:
+            self._fail(
+                QT_TRANSLATE_NOOP(
+                    "TypeKey",
+                    "type key {0}: flow {1} l/min does not exist for Dn{2} (allowed: {3})",
+                ),
+                repr(flow),
+                size,
+                ", ".join(FLOWS[size]),
+            )
+
+    def _check_electronics(self, supply: str, config: str, series: str, suffix: str) -> None:
+        if not supply:
+            self._fail(_MISSING, _PART_SUPPLY)
+        if supply not in SUPPLIES:
+            self._fail(
+                QT_TRANSLATE_NOOP("TypeKey", "type key {0}: supply voltage {1} must be 24"),
+                repr(supply),
+            )
+        if not config:
+            self._fail(_MISSING, _PART_CONFIG)
+        if config not in ("E02", "E04"):
+            self._fail(
+                QT_TRANSLATE_NOOP("TypeKey", "type key {0}: configuration {1} must be E02 or E04"),
+                repr(config),
+            )
+        self._check_series(series)
+        if suffix not in ("", "-CA"):
+            self._fail(
+                QT_TRANSLATE_NOOP("TypeKey", "type key {0}: suffix {1} must be empty or -CA"),
+                repr(suffix),
+            )
+
+    def _check_series(self, series: str) -> None:
+        if not series:
+            self._fail(_MISSING, _PART_SERIES)
+        if series != "S02" and series.startswith("S02"):  # PRM9-…-24E02S02CA
+            self._fail(
+                QT_TRANSLATE_NOOP(
+                    "TypeKey",
+                    "type key {0}: expected '-' between the electronics series S02 and {1}",
+                ),
+                repr(series[3:]),
+            )
+        if series != "S02":
+            self._fail(
+                QT_TRANSLATE_NOOP("TypeKey", "type key {0}: electronics series {1} must be S02"),
+                repr(series),
+            )
+
+
+_EXPECTED_DOT = QT_TRANSLATE_NOOP(
+    "TypeKey", "type key {0}: expected '.' between the nominal size {1} and the spool, found {2}"
+)
+_EXPECTED_SLASH = QT_TRANSLATE_NOOP(
+    "TypeKey", "type key {0}: expected '/' between the spool {1} and the nominal flow, found {2}"
+)
+_EXPECTED_DASH = QT_TRANSLATE_NOOP(
+    "TypeKey",
+    "type key {0}: expected '-' between the nominal flow {1} and the supply voltage, found {2}",
+)
+_END_OF_KEY = QT_TRANSLATE_NOOP("TypeKey", "the end of the key")()
+_MISSING = QT_TRANSLATE_NOOP("TypeKey", "type key {0}: the {1} is missing")
+_PART_SIZE = QT_TRANSLATE_NOOP("TypeKey", "nominal size (06 or 10)")()
+_PART_SPOOL = QT_TRANSLATE_NOOP("TypeKey", "spool")()
+_PART_FLOW = QT_TRANSLATE_NOOP("TypeKey", "nominal flow")()
+_PART_SUPPLY = QT_TRANSLATE_NOOP("TypeKey", "supply voltage (24)")()
+_PART_CONFIG = QT_TRANSLATE_NOOP("TypeKey", "configuration (E02 or E04)")()
+_PART_SERIES = QT_TRANSLATE_NOOP("TypeKey", "electronics series (S02)")()

@@ -1,4 +1,4 @@
-"""Messages of the model layer (refusals, lock reasons, undo texts) in German
+"""Messages of the model layer (refusals, type-key errors, lock reasons, undo texts) in German
 and Czech when the program runs in that language; English again after switching back."""
 
 from __future__ import annotations
@@ -16,6 +16,7 @@ from prm9tool.editing import apply_edit
 from prm9tool.undo import DocumentUndo
 from prm9tool.views.hid_dialog import HidConfigurationDialog
 from prm9tool.views.parameter_view import ParameterListView
+from prm9tool.views.valve_selection import ValveSelectionDialog
 
 
 @pytest.fixture
@@ -75,6 +76,51 @@ def test_a_curve_that_falls_is_refused_in_german(doc, language):
         "SETPLIN: Die Ausgangswerte der Linearisierung dürfen nicht fallen: SETPLINYC < SETPLINYB"
     )
     assert str(caught.value).startswith("SETPLIN linearization outputs must not decrease")
+
+
+@pytest.mark.parametrize(
+    ("typed", "german"),
+    [
+        (
+            "PRM9-07.3Z11/30-24E02S02",
+            "Typschlüssel 'PRM9-07.3Z11/30-24E02S02': Nenngröße '07' muss 06 oder 10 sein",
+        ),
+        (
+            "PRM9-06-3Z11/30-24E02S02",
+            "Typschlüssel 'PRM9-06-3Z11/30-24E02S02': Zwischen Nenngröße '06' und Schieber "
+            "wird '.' erwartet, gefunden: '-'",
+        ),
+        (
+            "PRM9-06.3Z11/30",
+            "Typschlüssel 'PRM9-06.3Z11/30': Zwischen Nennvolumenstrom '30' und "
+            "Versorgungsspannung wird '-' erwartet, gefunden: das Ende des Schlüssels",
+        ),
+        (
+            "PRM9-06.3Z11/30-24",
+            "Typschlüssel 'PRM9-06.3Z11/30-24': die Konfiguration (E02 oder E04) fehlt",
+        ),
+    ],
+)
+def test_valve_selection_explains_a_bad_type_key_in_german(qtbot, language, typed, german):
+    language("de")
+    dialog = ValveSelectionDialog()
+    qtbot.addWidget(dialog)
+    dialog._on_key_edited(typed)
+    assert dialog.error_label.text() == german
+    assert not dialog.buttons.button(dialog.buttons.StandardButton.Ok).isEnabled()
+
+
+def test_valve_selection_error_follows_the_language(qtbot, language):
+    dialog = ValveSelectionDialog()
+    qtbot.addWidget(dialog)
+    dialog._on_key_edited("PRM9-06.3Z11/30-24E02X02")
+    assert dialog.error_label.text() == (
+        "type key 'PRM9-06.3Z11/30-24E02X02': electronics series 'X02' must be S02"
+    )
+    language("cs")
+    assert dialog.error_label.text() == (
+        "typový klíč 'PRM9-06.3Z11/30-24E02X02': řada elektroniky 'X02' musí být S02"
+    )
 
 
 def test_lock_reason_and_undo_text_in_german(doc, language):

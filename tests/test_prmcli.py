@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import json
+import os
 import subprocess
 import sys
 
@@ -15,12 +16,13 @@ KEY = "PRM9-06.3Z11/30-24E04S02-CA"
 COIL_A = "PRM9-06.2Z51/30-24E02S02"
 
 
-def prm9tool(*args: str, cwd=None) -> subprocess.CompletedProcess[str]:
+def prm9tool(*args: str, cwd=None, env=None) -> subprocess.CompletedProcess[str]:
     return subprocess.run(
         [sys.executable, "-m", "prm9tool", *args],
         capture_output=True,
         text=True,
         cwd=cwd,
+        env=env,
         timeout=60,
         check=False,
     )
@@ -148,6 +150,28 @@ def test_check_of_a_file_that_is_no_parameter_file_exits_3(tmp_path, content, ex
     result = prm9tool("--check", str(path))
     assert result.returncode == ExitCode.INVALID_FILE
     assert result.stdout.splitlines()[0] == expected.format(path=path)
+
+
+def test_check_speaks_english_whatever_the_system_language(tmp_path):
+    """Messages are translated only in the GUI: --check prints them as the docs quote them."""
+    path = tmp_path / "valve.prm"
+    assert prm9tool("--new", KEY, "-o", str(path)).returncode == 0
+    text = path.read_text(encoding="utf-8").replace("LIMTA = 2400", "LIMTA = 2650")
+    path.write_text(text, encoding="utf-8")
+    line = next(n for n, entry in enumerate(text.split("\n"), 1) if entry.startswith("LIMTA"))
+    bad_key = tmp_path / "bad_key.prm"
+    bad_key.write_text(text.replace(KEY, "PRM9-06-3Z11/30-24E04S02-CA"), encoding="utf-8")
+    german = {**os.environ, "LANG": "de_DE.UTF-8", "LANGUAGE": "de", "LC_ALL": "de_DE.UTF-8"}
+    limta = prm9tool("--check", str(path), env=german)
+    assert limta.stdout.splitlines()[0] == (
+        f"{path}:{line}: LIMTA = 2650 mA is above the nominal coil current CURNORM = 2600 mA"
+    )
+    key = prm9tool("--check", str(bad_key), env=german)
+    assert (
+        "type key 'PRM9-06-3Z11/30-24E04S02-CA': expected '.' between the nominal size '06' "
+        "and the spool, found '-'"
+    ) in key.stdout
+    assert limta.returncode == key.returncode == ExitCode.INVALID_FILE
 
 
 def test_the_file_commands_never_load_the_qt_gui(tmp_path):

@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+import re
+
 import pytest
 
 from prm9tool.errors import TypeKeyError
@@ -42,9 +44,63 @@ def test_lower_case_and_spaces_are_accepted():
         ("PRM9-06.3Z11/30-24E05S02", "configuration 'E05'"),
         ("PRM9-06.3Z11/30-24E02S01", "electronics series 'S01'"),
         ("PRM9-06.3Z11/30-24E02S02-XX", "suffix '-XX'"),
-        ("PRM9-063Z11-30", "expected the form"),
+        ("PRM9-06.3Z11/30-24E02X02", "electronics series 'X02' must be S02"),
+        ("PRM9-06.3Z11/30-24X02S02", "configuration 'X02' must be E02 or E04"),
+        ("PRM9-DN06.3Z11/30-24E02S02", "nominal size 'DN06' must be 06 or 10"),
     ],
 )
 def test_malformed_keys_name_the_wrong_part(text, part):
-    with pytest.raises(TypeKeyError, match=part.replace("(", r"\(").replace(")", r"\)")):
+    with pytest.raises(TypeKeyError, match=re.escape(part)):
         TypeKey.parse(text)
+
+
+@pytest.mark.parametrize(
+    ("text", "message"),
+    [
+        (
+            "PRM9-06-3Z11/30-24E02S02",
+            "expected '.' between the nominal size '06' and the spool, found '-'",
+        ),
+        (
+            "PRM9-06.3Z11-30-24E02S02",
+            "expected '/' between the spool '3Z11' and the nominal flow, found '-'",
+        ),
+        (
+            "PRM9-06.3Z11/30/24E02S02",
+            "expected '-' between the nominal flow '30' and the supply voltage, found '/'",
+        ),
+        (
+            "PRM9-063Z11-30",
+            "expected '.' between the nominal size '063' and the spool, found 'Z'",
+        ),
+        (
+            "PRM9-06.3Z11/30",
+            "expected '-' between the nominal flow '30' and the supply voltage, "
+            "found the end of the key",
+        ),
+        ("PRM9-06.3Z11/30-24E02S02CA", "expected '-' between the electronics series S02 and 'CA'"),
+    ],
+)
+def test_a_missing_or_wrong_separator_is_named(text, message):
+    with pytest.raises(TypeKeyError) as caught:
+        TypeKey.parse(text)
+    assert str(caught.value) == f"type key {text!r}: {message}"
+
+
+@pytest.mark.parametrize(
+    ("text", "part"),
+    [
+        ("PRM9-", "nominal size (06 or 10)"),
+        ("PRM9-.3Z11/30-24E02S02", "nominal size (06 or 10)"),
+        ("PRM9-06./30-24E02S02", "spool"),
+        ("PRM9-06.3Z11/-24E02S02", "nominal flow"),
+        ("PRM9-06.3Z11/30-E02S02", "supply voltage (24)"),
+        ("PRM9-06.3Z11/30-24S02", "configuration (E02 or E04)"),
+        ("PRM9-06.3Z11/30-24E02", "electronics series (S02)"),
+        ("PRM9-06.3Z11/30-24E02-CA", "electronics series (S02)"),
+    ],
+)
+def test_a_missing_part_is_named(text, part):
+    with pytest.raises(TypeKeyError) as caught:
+        TypeKey.parse(text)
+    assert str(caught.value) == f"type key {text!r}: the {part} is missing"

@@ -1867,6 +1867,89 @@ Ujistěte se, že pohyb stroje je bezpečný. Spustit generátor?</translation>
         </message>
     </context>
     <context>
+        <name>TypeKey</name>
+        <message>
+            <source>type key {0}: must start with 'PRM9-'</source>
+            <translation>typový klíč {0}: musí začínat 'PRM9-'</translation>
+        </message>
+        <message>
+            <source>type key {0}: nominal size {1} must be 06 or 10</source>
+            <translation>typový klíč {0}: jmenovitá světlost {1} musí být 06 nebo 10</translation>
+        </message>
+        <message>
+            <source>type key {0}: unknown spool {1} (known: {2})</source>
+            <translation>typový klíč {0}: neznámé šoupátko {1} (známá: {2})</translation>
+        </message>
+        <message>
+            <source>type key {0}: flow {1} l/min does not exist for Dn{2} (allowed: {3})</source>
+            <translation>typový klíč {0}: jmenovitý průtok {1} l/min pro Dn{2} neexistuje (přípustné: {3})</translation>
+        </message>
+        <message>
+            <source>type key {0}: supply voltage {1} must be 24</source>
+            <translation>typový klíč {0}: napájecí napětí {1} musí být 24</translation>
+        </message>
+        <message>
+            <source>type key {0}: configuration {1} must be E02 or E04</source>
+            <translation>typový klíč {0}: konfigurace {1} musí být E02 nebo E04</translation>
+        </message>
+        <message>
+            <source>type key {0}: suffix {1} must be empty or -CA</source>
+            <translation>typový klíč {0}: přípona {1} musí být prázdná nebo -CA</translation>
+        </message>
+        <message>
+            <source>type key {0}: expected '-' between the electronics series S02 and {1}</source>
+            <translation>typový klíč {0}: mezi řadou elektroniky S02 a {1} chybí '-'</translation>
+        </message>
+        <message>
+            <source>type key {0}: electronics series {1} must be S02</source>
+            <translation>typový klíč {0}: řada elektroniky {1} musí být S02</translation>
+        </message>
+        <message>
+            <source>type key {0}: expected '.' between the nominal size {1} and the spool, found {2}</source>
+            <translation>typový klíč {0}: mezi jmenovitou světlostí {1} a šoupátkem se očekává '.', nalezeno: {2}</translation>
+        </message>
+        <message>
+            <source>type key {0}: expected '/' between the spool {1} and the nominal flow, found {2}</source>
+            <translation>typový klíč {0}: mezi šoupátkem {1} a jmenovitým průtokem se očekává '/', nalezeno: {2}</translation>
+        </message>
+        <message>
+            <source>type key {0}: expected '-' between the nominal flow {1} and the supply voltage, found {2}</source>
+            <translation>typový klíč {0}: mezi jmenovitým průtokem {1} a napájecím napětím se očekává '-', nalezeno: {2}</translation>
+        </message>
+        <message>
+            <source>the end of the key</source>
+            <translation>konec klíče</translation>
+        </message>
+        <message>
+            <source>type key {0}: the {1} is missing</source>
+            <translation>typový klíč {0}: chybí {1}</translation>
+        </message>
+        <message>
+            <source>nominal size (06 or 10)</source>
+            <translation>jmenovitá světlost (06 nebo 10)</translation>
+        </message>
+        <message>
+            <source>spool</source>
+            <translation>šoupátko</translation>
+        </message>
+        <message>
+            <source>nominal flow</source>
+            <translation>jmenovitý průtok</translation>
+        </message>
+        <message>
+            <source>supply voltage (24)</source>
+            <translation>napájecí napětí (24)</translation>
+        </message>
+        <message>
+            <source>configuration (E02 or E04)</source>
+            <translation>konfigurace (E02 nebo E04)</translation>
+        </message>
+        <message>
+            <source>electronics series (S02)</source>
+            <translation>řada elektroniky (S02)</translation>
+        </message>
+    </context>
+    <context>
         <name>ValveConnection</name>
         <message>
             <source>The valve connection is busy; wait until it is done.</source>

@@ -1863,6 +1863,89 @@ Stellen Sie sicher, dass die Maschine sich gefahrlos bewegen kann. Generator sta
         </message>
     </context>
     <context>
+        <name>TypeKey</name>
+        <message>
+            <source>type key {0}: must start with 'PRM9-'</source>
+            <translation>Typschlüssel {0}: muss mit 'PRM9-' beginnen</translation>
+        </message>
+        <message>
+            <source>type key {0}: nominal size {1} must be 06 or 10</source>
+            <translation>Typschlüssel {0}: Nenngröße {1} muss 06 oder 10 sein</translation>
+        </message>
+        <message>
+            <source>type key {0}: unknown spool {1} (known: {2})</source>
+            <translation>Typschlüssel {0}: unbekannter Schieber {1} (bekannt: {2})</translation>
+        </message>
+        <message>
+            <source>type key {0}: flow {1} l/min does not exist for Dn{2} (allowed: {3})</source>
+            <translation>Typschlüssel {0}: Nennvolumenstrom {1} l/min gibt es bei Dn{2} nicht (zulässig: {3})</translation>
+        </message>
+        <message>
+            <source>type key {0}: supply voltage {1} must be 24</source>
+            <translation>Typschlüssel {0}: Versorgungsspannung {1} muss 24 sein</translation>
+        </message>
+        <message>
+            <source>type key {0}: configuration {1} must be E02 or E04</source>
+            <translation>Typschlüssel {0}: Konfiguration {1} muss E02 oder E04 sein</translation>
+        </message>
+        <message>
+            <source>type key {0}: suffix {1} must be empty or -CA</source>
+            <translation>Typschlüssel {0}: Zusatz {1} muss leer oder -CA sein</translation>
+        </message>
+        <message>
+            <source>type key {0}: expected '-' between the electronics series S02 and {1}</source>
+            <translation>Typschlüssel {0}: Zwischen der Elektronik-Baureihe S02 und {1} fehlt '-'</translation>
+        </message>
+        <message>
+            <source>type key {0}: electronics series {1} must be S02</source>
+            <translation>Typschlüssel {0}: Elektronik-Baureihe {1} muss S02 sein</translation>
+        </message>
+        <message>
+            <source>type key {0}: expected '.' between the nominal size {1} and the spool, found {2}</source>
+            <translation>Typschlüssel {0}: Zwischen Nenngröße {1} und Schieber wird '.' erwartet, gefunden: {2}</translation>
+        </message>
+        <message>
+            <source>type key {0}: expected '/' between the spool {1} and the nominal flow, found {2}</source>
+            <translation>Typschlüssel {0}: Zwischen Schieber {1} und Nennvolumenstrom wird '/' erwartet, gefunden: {2}</translation>
+        </message>
+        <message>
+            <source>type key {0}: expected '-' between the nominal flow {1} and the supply voltage, found {2}</source>
+            <translation>Typschlüssel {0}: Zwischen Nennvolumenstrom {1} und Versorgungsspannung wird '-' erwartet, gefunden: {2}</translation>
+        </message>
+        <message>
+            <source>the end of the key</source>
+            <translation>das Ende des Schlüssels</translation>
+        </message>
+        <message>
+            <source>type key {0}: the {1} is missing</source>
+            <translation>Typschlüssel {0}: {1} fehlt</translation>
+        </message>
+        <message>
+            <source>nominal size (06 or 10)</source>
+            <translation>die Nenngröße (06 oder 10)</translation>
+        </message>
+        <message>
+            <source>spool</source>
+            <translation>der Schieber</translation>
+        </message>
+        <message>
+            <source>nominal flow</source>
+            <translation>der Nennvolumenstrom</translation>
+        </message>
+        <message>
+            <source>supply voltage (24)</source>
+            <translation>die Versorgungsspannung (24)</translation>
+        </message>
+        <message>
+            <source>configuration (E02 or E04)</source>
+            <translation>die Konfiguration (E02 oder E04)</translation>
+        </message>
+        <message>
+            <source>electronics series (S02)</source>
+            <translation>die Elektronik-Baureihe (S02)</translation>
+        </message>
+    </context>
+    <context>
         <name>ValveConnection</name>
         <message>
             <source>The valve connection is busy; wait until it is done.</source>
