@@ -187,6 +187,7 @@ def main(argv: Sequence[str] | None = None) -> int:
 
         print(f"prm9tool {__version__}")
         return ExitCode.OK
+    _load_user_spools()
     if args.new is not None or args.check is not None:
         from prm9tool import prmcli
 
@@ -202,6 +203,22 @@ def main(argv: Sequence[str] | None = None) -> int:
     from prm9tool.app import run as run_app
 
     return run_app(args)
+
+
+def _load_user_spools() -> None:
+    """Extend the spool catalogue with ``<user data dir>/spools.json`` (SPEC §2.2).
+
+    A broken file is reported on standard error and left out: type keys with the spools the
+    program ships keep working, and one with a missing spool says which spools are known.
+    """
+    from prm9tool.backup import user_data_dir
+    from prm9tool.errors import TypeKeyError
+    from prm9tool.typekey import load_user_spools
+
+    try:
+        load_user_spools(user_data_dir())
+    except TypeKeyError as exc:
+        print(f"prm9tool: warning: {exc}; using the spools shipped with prm9tool", file=sys.stderr)
 
 
 if __name__ == "__main__":  # pragma: no cover

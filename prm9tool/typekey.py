@@ -52,22 +52,55 @@ SPOOLS: dict[str, Spool] = {
 }
 
 
-def load_extra_spools(path: Path) -> None:
+USER_SPOOLS_FILE = "spools.json"  # in the user data dir: the user's own spool codes
+
+
+def load_user_spools(data_dir: Path) -> list[str]:
+    """Add the spool codes of ``<data_dir>/spools.json`` if that file exists; the codes added.
+
+    The program calls it at start (``prm9tool.cli``), with the user data dir
+    (``PRM9TOOL_DATA_DIR`` overrides it). Raises TypeKeyError like :func:`load_extra_spools`.
+    """
+    path = data_dir / USER_SPOOLS_FILE
+    return load_extra_spools(path) if path.is_file() else []
+
+
+def load_extra_spools(path: Path) -> list[str]:
     """Add spool codes from a JSON file ``[{"code":..., "coils": "AB|A|B", "description":...}]``.
 
-    Raises TypeKeyError naming the entry that is wrong; nothing is added in that case.
+    A code may replace one of our assumptions, never a spool the manual names. Returns the
+    codes added; raises TypeKeyError naming the entry that is wrong (nothing is added then).
     """
     try:
         entries = json.loads(path.read_text(encoding="utf-8"))
-        new = {
-            e["code"]: Spool(
-                str(e["code"]), Coils(e["coils"]), str(e.get("description", "")), False
-            )
-            for e in entries
-        }
-    except (OSError, ValueError, KeyError, TypeError) as exc:
+    except (OSError, ValueError) as exc:
         raise TypeKeyError(f"spool catalogue {path}: {exc}") from exc
+    if not isinstance(entries, list):
+        raise TypeKeyError(f"spool catalogue {path}: expected a list of spools")
+    new: dict[str, Spool] = {}
+    for number, entry in enumerate(entries, 1):
+        try:
+            spool = _user_spool(entry)
+        except (TypeError, ValueError, KeyError) as exc:
+            raise TypeKeyError(f"spool catalogue {path}: entry {number}: {exc}") from None
+        new[spool.code] = spool
     SPOOLS.update(new)
+    return list(new)
+
+
+def _user_spool(entry: object) -> Spool:
+    if not isinstance(entry, dict):
+        raise TypeError("expected an object with code, coils and description")
+    code = str(entry["code"]).strip().upper()
+    if not code or any(c not in _CODE for c in code):
+        raise ValueError(f"code {code!r} must be letters and digits only")
+    known = SPOOLS.get(code)
+    if known is not None and known.from_manual:
+        raise ValueError(f"spool {code} is named in the manual and cannot be redefined")
+    coils = entry["coils"]
+    if coils not in {c.value for c in Coils}:
+        raise ValueError(f"coils {coils!r} must be AB, A or B")
+    return Spool(code, Coils(coils), str(entry.get("description", "")), False)
 
 
 @dataclass(frozen=True)

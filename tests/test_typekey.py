@@ -2,12 +2,17 @@
 
 from __future__ import annotations
 
+import json
+import os
 import re
+import subprocess
+import sys
+from pathlib import Path
 
 import pytest
 
 from prm9tool.errors import TypeKeyError
-from prm9tool.typekey import SPOOLS, TypeKey, all_type_keys
+from prm9tool.typekey import SPOOLS, USER_SPOOLS_FILE, TypeKey, all_type_keys, load_user_spools
 from prm9tool.variant import Coils, Config
 
 
@@ -104,3 +109,69 @@ def test_a_missing_part_is_named(text, part):
     with pytest.raises(TypeKeyError) as caught:
         TypeKey.parse(text)
     assert str(caught.value) == f"type key {text!r}: the {part} is missing"
+
+
+@pytest.fixture
+def spools():
+    """The spool catalogue as shipped again after the test."""
+    shipped = dict(SPOOLS)
+    yield SPOOLS
+    SPOOLS.clear()
+    SPOOLS.update(shipped)
+
+
+def _spool_file(folder, entries) -> None:
+    folder.mkdir(parents=True, exist_ok=True)
+    (folder / USER_SPOOLS_FILE).write_text(json.dumps(entries), encoding="utf-8")
+
+
+def test_a_user_extends_the_spool_catalogue(tmp_path, spools):
+    _spool_file(tmp_path, [{"code": "4z21", "coils": "B", "description": "our own"}])
+    assert load_user_spools(tmp_path) == ["4Z21"]
+    key = TypeKey.parse("PRM9-06.4Z21/30-24E02S02")
+    assert key.coils is Coils.B and not spools["4Z21"].from_manual
+    assert TypeKey(key.size, "4Z21", "30", "24", Config.E04, True) in all_type_keys()
+
+
+def test_without_a_spool_file_nothing_changes(tmp_path, spools):
+    assert load_user_spools(tmp_path) == [] and len(spools) == 7
+
+
+@pytest.mark.parametrize(
+    ("entries", "reason"),
+    [
+        ({"code": "4Z21"}, "expected a list of spools"),
+        ([{"code": "4Z21", "coils": "AB"}, {"code": "4Z22", "coils": "C"}], "entry 2: coils 'C'"),
+        ([{"code": "4Z-21", "coils": "A"}], "entry 1: code '4Z-21' must be letters and digits"),
+        ([{"coils": "A"}], "entry 1: 'code'"),
+        ([{"code": "3Z11", "coils": "A"}], "spool 3Z11 is named in the manual"),
+    ],
+)
+def test_a_wrong_spool_file_names_the_entry_and_adds_nothing(tmp_path, spools, entries, reason):
+    _spool_file(tmp_path, entries)
+    with pytest.raises(TypeKeyError, match=re.escape(reason)):
+        load_user_spools(tmp_path)
+    assert "4Z21" not in spools and spools["3Z11"].coils is Coils.AB
+
+
+def test_the_program_reads_the_spool_file_of_the_user_data_dir(tmp_path):
+    data = Path(os.environ["PRM9TOOL_DATA_DIR"])  # conftest: a folder of this test
+    _spool_file(data, [{"code": "4Z21", "coils": "A", "description": "our own"}])
+    out = tmp_path / "valve.prm"
+    result = _prm9tool("--new", "PRM9-06.4Z21/30-24E02S02", "-o", str(out))
+    assert (result.returncode, result.stdout) == (0, "")
+    assert "AINSETP = 6" in out.read_text(encoding="utf-8")  # one coil: 0…10 V default
+    (data / USER_SPOOLS_FILE).write_text("[{", encoding="utf-8")
+    result = _prm9tool("--new", "PRM9-06.3Z11/30-24E02S02", "-o", str(tmp_path / "b.prm"))
+    assert result.returncode == 0
+    assert result.stderr.startswith(f"prm9tool: warning: spool catalogue {data / USER_SPOOLS_FILE}")
+
+
+def _prm9tool(*args: str) -> subprocess.CompletedProcess[str]:
+    return subprocess.run(
+        [sys.executable, "-m", "prm9tool", *args],
+        capture_output=True,
+        text=True,
+        timeout=60,
+        check=False,
+    )
