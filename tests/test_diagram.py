@@ -102,7 +102,10 @@ def test_each_variant_draws_its_blocks_in_signal_order(qtbot, key, blocks, coils
     assert view.block_ids() == blocks
     limiter = view.diagram.blocks["current_limit"].lines
     assert [line.split(":")[0] for line in limiter] == coils
-    assert set(view.diagram.dots) == {s.key for s in signals_for(view.diagram.layout.variant)}
+    layout = view.diagram.layout
+    every = {s.key for s in signals_for(layout.variant)}
+    assert set(view.diagram.dots) == every - set(layout.same_as)
+    assert set(layout.same_as.values()) <= set(view.diagram.dots)
 
 
 def test_single_coil_valves_show_one_ramp_pair_and_one_gain(qtbot):
@@ -259,7 +262,7 @@ def test_online_measuring_points_show_live_values_and_ask_for_the_scope(qtbot):
     link = EmulatorConnection(valve)
     view = make_view(qtbot, E02, connection=link)
     link.go_online()
-    assert set(link.watched) == {s.key for s in signals_for(view.diagram.layout.variant)}
+    assert set(link.watched) == set(view.diagram.dots)
     link.poll_signals()
     demand = view.diagram.dots["demand"]
     assert demand.active

@@ -49,6 +49,21 @@ def test_the_diagram_is_the_default_central_view(window):
     assert isinstance(window.views["diagram"], DiagramView)
 
 
+@pytest.mark.parametrize("language", ["en", "de", "cs"])
+def test_on_a_1024_x_768_screen_the_block_texts_stay_readable(qtbot, window, language):
+    window.set_language(language)
+    window.resize(1024, 738)  # 768 less a title bar
+    qtbot.waitUntil(lambda: window.width() == 1024)
+    view = window.views["diagram"]
+    qtbot.wait(50)  # the view fits the diagram on its resize event
+    scale = view.transform().m11()
+    for block in view.diagram.blocks.values():
+        assert block.fits
+        assert block.title_font.pixelSize() * scale >= 9.0, block.block_id
+        assert block.line_font.pixelSize() * scale >= 9.0, block.block_id
+    window.set_language("en")
+
+
 @pytest.fixture
 def paced_window(qtbot, tmp_path, monkeypatch):
     """A main window whose emulated valve runs in real time (its measuring points move)."""

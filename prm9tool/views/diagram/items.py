@@ -46,50 +46,123 @@ def _font(pixels: int, bold: bool = False) -> QFont:
     return font
 
 
-def _fitting_font(text: str, width: float) -> QFont:
-    """The bold title font, shrunk (down to 10 px) until ``text`` fits ``width``."""
-    for pixels in range(14, 9, -1):
+TITLE_PIXELS = (13, 12)  # bold title sizes, largest first (12 px stays ≥ 9 px at 1024 × 768)
+LINE_PIXELS = (13, 12)  # value-line sizes
+PAD = 5.0  # left/right padding of a block's texts
+TITLE_TOP = 3.0
+TITLE_LINE_H = 16.0
+LINE_H = 17.0
+
+
+def _two_lines(text: str, metrics: QFontMetricsF, width: float) -> list[str] | None:
+    """``text`` split once (at a space, else after a hyphen) into the best-balanced two lines
+    that both fit ``width``; None if no split fits."""
+    splits = [(text[:i], text[i + 1 :]) for i, c in enumerate(text) if c == " "]
+    if not splits:
+        splits = [(text[: i + 1], text[i + 1 :]) for i, c in enumerate(text[:-1]) if c == "-"]
+    best: tuple[float, list[str]] | None = None
+    for head, tail in splits:
+        widest = max(metrics.horizontalAdvance(head), metrics.horizontalAdvance(tail))
+        if widest <= width and (best is None or widest < best[0]):
+            best = (widest, [head, tail])
+    return best[1] if best else None
+
+
+def fit_title(text: str, width: float, max_lines: int) -> tuple[QFont, list[str], bool]:
+    """Font and lines of a block title in ``width``: one line, else two, at 13 then 12 px.
+
+    Returns ``(font, lines, fits)``; a title that fits nowhere is elided (``fits`` False).
+    """
+    for pixels in TITLE_PIXELS:
         font = _font(pixels, bold=True)
-        if QFontMetricsF(font).horizontalAdvance(text) <= width:
-            return font
-    return _font(10, bold=True)
+        metrics = QFontMetricsF(font)
+        if metrics.horizontalAdvance(text) <= width:
+            return font, [text], True
+        lines = _two_lines(text, metrics, width) if max_lines > 1 else None
+        if lines:
+            return font, lines, True
+    font = _font(TITLE_PIXELS[-1], bold=True)
+    elided = QFontMetricsF(font).elidedText(text, Qt.TextElideMode.ElideRight, width)
+    return font, [elided], False
+
+
+def fit_lines(lines: list[str], width: float) -> tuple[QFont, list[str], bool]:
+    """Font and shown text of value ``lines`` in ``width``: 13 px, else 12 px, else elided."""
+    for pixels in LINE_PIXELS:
+        font = _font(pixels)
+        metrics = QFontMetricsF(font)
+        if all(metrics.horizontalAdvance(line) <= width for line in lines):
+            return font, list(lines), True
+    font = _font(LINE_PIXELS[-1])
+    metrics = QFontMetricsF(font)
+    shown = [metrics.elidedText(line, Qt.TextElideMode.ElideRight, width) for line in lines]
+    return font, shown, False
 
 
 class BlockItem(QGraphicsObject):
-    """One block: a title and up to three value lines; grey and inert when locked."""
+    """One block: a title (one or two lines) and up to three value lines; grey when locked.
+
+    Texts too long for the block are elided; the tooltip then carries them in full.
+    """
 
     activated = Signal(str)  # block id; emitted on a click when the block has a dialog
 
-    LINE_FONT = _font(13)
-
-    def __init__(self, block_id: str, rect: QRectF, info: bool = False) -> None:
+    def __init__(
+        self, block_id: str, rect: QRectF, info: bool = False, title_lines: int = 2
+    ) -> None:
         super().__init__()
         self.block_id = block_id
         self._rect = QRectF(0, 0, rect.width(), rect.height())
         self.setPos(rect.topLeft())
         self.info = info
+        self.title_lines = title_lines  # the title area's height in lines
         self.title = ""
-        self._title_font = _font(14, bold=True)
         self.lines: list[str] = []
+        self.title_font = _font(TITLE_PIXELS[0], bold=True)
+        self.shown_title: list[str] = []
+        self.line_font = _font(LINE_PIXELS[0])
+        self.shown_lines: list[str] = []
+        self.fits = True  # False when a text had to be elided
+        self._tip = ""
         self.locked = False
         self._hovered = False
         self.setAcceptHoverEvents(True)
         if not info:
             self.setCursor(Qt.CursorShape.PointingHandCursor)
 
+    @property
+    def text_width(self) -> float:
+        """Width available to the block's texts."""
+        return self._rect.width() - 2 * PAD
+
+    @property
+    def separator_y(self) -> float:
+        """Height of the rule under the title."""
+        return TITLE_TOP + self.title_lines * TITLE_LINE_H + 3
+
     def set_content(self, title: str, lines: list[str]) -> None:
         """Show ``title`` and the value ``lines``."""
-        if (title, lines) != (self.title, self.lines):
-            if title != self.title:
-                self._title_font = _fitting_font(title, self._rect.width() - 8)
-            self.title, self.lines = title, list(lines)
-            self.update()
+        if (title, lines) == (self.title, self.lines):
+            return
+        self.title, self.lines = title, list(lines)
+        self.title_font, self.shown_title, title_fits = fit_title(
+            title, self.text_width, self.title_lines
+        )
+        self.line_font, self.shown_lines, lines_fit = fit_lines(self.lines, self.text_width)
+        self.fits = title_fits and lines_fit
+        self._show_tooltip()
+        self.update()
 
     def set_locked(self, locked: bool, tooltip: str) -> None:
         """Grey the block out (``locked``) and explain on hover."""
         self.locked = locked
-        self.setToolTip(tooltip)
+        self._tip = tooltip
+        self._show_tooltip()
         self.update()
+
+    def _show_tooltip(self) -> None:
+        full = "" if self.fits else "\n".join([self.title, *self.lines])
+        self.setToolTip("\n\n".join(part for part in (full, self._tip) if part))
 
     def scene_rect(self) -> QRectF:
         """The block's rectangle in scene coordinates."""
@@ -110,20 +183,22 @@ class BlockItem(QGraphicsObject):
         painter.setBrush(fill)
         painter.drawRoundedRect(self._rect, 7, 7)
         painter.setPen(ink)
-        title_rect = QRectF(4, 4, self._rect.width() - 8, 20)
-        painter.setFont(self._title_font)
-        painter.drawText(
-            title_rect, Qt.AlignmentFlag.AlignHCenter | Qt.AlignmentFlag.AlignVCenter, self.title
-        )
+        painter.setFont(self.title_font)
+        centre = Qt.AlignmentFlag.AlignHCenter | Qt.AlignmentFlag.AlignVCenter
+        width = self.text_width
+        title_h = self.title_lines * TITLE_LINE_H
+        top = TITLE_TOP + (title_h - len(self.shown_title) * TITLE_LINE_H) / 2
+        for n, line in enumerate(self.shown_title):
+            painter.drawText(QRectF(PAD, top + n * TITLE_LINE_H, width, TITLE_LINE_H), centre, line)
+        rule = self.separator_y
         painter.setPen(QPen(edge.lighter(130), 1))
-        painter.drawLine(QPointF(8, 25), QPointF(self._rect.width() - 8, 25))
+        painter.drawLine(QPointF(8, rule), QPointF(self._rect.width() - 8, rule))
         painter.setPen(ink)
-        painter.setFont(self.LINE_FONT)
-        for n, line in enumerate(self.lines):
-            rect = QRectF(5, 28 + n * 18, self._rect.width() - 10, 18)
-            painter.drawText(
-                rect, Qt.AlignmentFlag.AlignHCenter | Qt.AlignmentFlag.AlignVCenter, line
-            )
+        painter.setFont(self.line_font)
+        free = self._rect.height() - rule - 6 - len(self.shown_lines) * LINE_H
+        top = rule + 2 + max(0.0, free / 2)  # the value lines centred under the rule
+        for n, line in enumerate(self.shown_lines):
+            painter.drawText(QRectF(PAD, top + n * LINE_H, width, LINE_H), centre, line)
 
     def _colours(self) -> tuple[QColor, QColor, QColor]:
         if self.info:
@@ -190,6 +265,7 @@ class ArrowItem(QGraphicsPathItem):
         for point in points[1:]:
             path.lineTo(point)
         super().__init__(path)
+        self.points = list(points)
         pen = QPen(INK, 1.5)
         if dashed:
             pen.setStyle(Qt.PenStyle.DashLine)
@@ -276,6 +352,7 @@ class DotItem(QGraphicsObject):
         height = self._label.boundingRect().height()
         offsets = {
             "right": QPointF(self.RADIUS + 4, -height / 2),
+            "above_right": QPointF(self.RADIUS - 1, -height - self.RADIUS + 1),
             "below": QPointF(-self.RADIUS, self.RADIUS + 1),
             "below_centre": QPointF(-self._label.boundingRect().width() / 2, self.RADIUS + 1),
         }

@@ -15,21 +15,21 @@ Grid (columns left to right, rows top to bottom)::
 from __future__ import annotations
 
 import itertools
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 from prm9tool.catalogue import CATALOGUE
-from prm9tool.signals import Signal, signals_for
+from prm9tool.signals import signals_for
 from prm9tool.variant import Config, Variant
 
-BLOCK_W = 158.0
-BLOCK_H = 86.0
-COL_PITCH = 228.0
-ROW_PITCH = 150.0
+BLOCK_W = 168.0
+BLOCK_H = 100.0  # a two-line title and three value lines
+COL_PITCH = 238.0
+ROW_PITCH = 160.0
 LAST_COL_EXTRA = 36.0  # room for the dither's four live values in front of the valve
-HEADER_H = 62.0  # height of the small header blocks (CANopen, supply)
+HEADER_H = 66.0  # height of the small header blocks (CANopen, supply): one-line title
 MARGIN = 46.0
 SUM_R = 9.0  # radius of a summing junction
-DOT_STEP = 19.0  # vertical distance of stacked measuring points
+DOT_STEP = 15.0  # vertical distance of measuring points stacked on a block's edge
 
 
 def QT_TRANSLATE_NOOP(context: str, source: str) -> str:
@@ -73,6 +73,7 @@ class Layout:
     links: tuple[Link, ...]
     dots: dict[str, tuple[str, str, int]]  # signal key -> (block id, side, stack index)
     compact_header: bool = True  # row 0 holds only the small header blocks
+    same_as: dict[str, str] = field(default_factory=dict)  # undrawn signal -> dot with its value
 
     def block(self, block_id: str) -> BlockSpec:
         """The block with ``block_id``; KeyError if the variant has none."""
@@ -240,8 +241,15 @@ def _links(variant: Variant) -> tuple[Link, ...]:
     return tuple(links)
 
 
-# Where a signal's dot goes when its block is not drawn on the variant (E02 has no process loop).
-_FALLBACK_BLOCK = {"process_controller": "ramps"}
+# Measuring points drawn nowhere because another dot on the same line shows the same value
+# (the firmware computes them as copies, see prm9tool/device/emulator/kernel.py); the
+# oscilloscope still offers them. E02: the ramp output goes straight into the position loop.
+# E04 (process control, figure 8-7): the process setpoint is the ramp output, and the
+# setpoint passes the gain block unchanged (gain and offset act on the process deviation).
+SAME_AS: dict[Config, dict[str, str]] = {
+    Config.E02: {"position_setpoint": "demand"},
+    Config.E04: {"process_setpoint": "demand", "setpoint_gain": "setpoint_threshold"},
+}
 # Dots that sit on the input side of their block (after the junction) or on the feedback line.
 _SIDE = {"position_deviation": "in", "position_actual": "feedback"}
 
@@ -249,23 +257,17 @@ _SIDE = {"position_deviation": "in", "position_actual": "feedback"}
 def _dots(variant: Variant, block_ids: set[str]) -> dict[str, tuple[str, str, int]]:
     dots: dict[str, tuple[str, str, int]] = {}
     stacks: dict[tuple[str, str], int] = {}
-    for sig in _ordered(signals_for(variant), variant):
-        block = sig.block if sig.block in block_ids else _FALLBACK_BLOCK.get(sig.block, sig.block)
+    hidden = SAME_AS[variant.config]
+    for sig in signals_for(variant):
+        if sig.key in hidden:
+            continue
         side = _SIDE.get(sig.key, "out")
-        if block not in block_ids and side != "feedback":
+        if sig.block not in block_ids and side != "feedback":
             raise ValueError(f"measuring point {sig.key}: block {sig.block} is not drawn")
-        index = stacks.get((block, side), 0)
-        stacks[(block, side)] = index + 1
-        dots[sig.key] = (block, side, index)
+        index = stacks.get((sig.block, side), 0)
+        stacks[(sig.block, side)] = index + 1
+        dots[sig.key] = (sig.block, side, index)
     return dots
-
-
-def _ordered(signals: list[Signal], variant: Variant) -> list[Signal]:
-    """On E04 the process deviation is the main output of the gain block; put it first."""
-    if variant.config is not Config.E04:
-        return signals
-    first = [s for s in signals if s.key == "process_deviation"]
-    return first + [s for s in signals if s.key != "process_deviation"]
 
 
 def layout_for(variant: Variant) -> Layout:
@@ -281,7 +283,9 @@ def layout_for(variant: Variant) -> Layout:
         sums["sum_process"] = "gain_offset"
     ids = {b.id for b in blocks}
     compact = all(b.compact for b in blocks if b.row == 0)
-    return Layout(variant, tuple(blocks), sums, _links(variant), _dots(variant, ids), compact)
+    dots = _dots(variant, ids)
+    same_as = dict(SAME_AS[variant.config])
+    return Layout(variant, tuple(blocks), sums, _links(variant), dots, compact, same_as)
 
 
 def row_top(row: int, compact_header: bool = False) -> float:

@@ -40,8 +40,11 @@ class DiagramScene(QGraphicsScene):
             self._add_block(spec)
         for sum_id, block_id in layout.sums.items():
             self._add_sum(sum_id, block_id)
+        self.arrows: list[ArrowItem] = []
         for link in layout.links:
-            self.addItem(ArrowItem(self._route(link), dashed=link.route == "down"))
+            arrow = ArrowItem(self._route(link), dashed=link.route == "down")
+            self.addItem(arrow)
+            self.arrows.append(arrow)
         self._add_feedback_label()
         for key, (block_id, side, index) in layout.dots.items():
             self._add_dot(key, block_id, side, index)
@@ -51,7 +54,7 @@ class DiagramScene(QGraphicsScene):
     # --- items -------------------------------------------------------------------------
     def _add_block(self, spec: BlockSpec) -> None:
         rect = QRectF(*block_rect(spec, self.layout.compact_header))
-        item = BlockItem(spec.id, rect, info=spec.info)
+        item = BlockItem(spec.id, rect, info=spec.info, title_lines=1 if spec.compact else 2)
         self.addItem(item)
         self.blocks[spec.id] = item
         self._rects[spec.id] = rect
@@ -66,24 +69,36 @@ class DiagramScene(QGraphicsScene):
         self._rects[sum_id] = QRectF(centre.x() - SUM_R, centre.y() - SUM_R, 2 * SUM_R, 2 * SUM_R)
 
     def _add_dot(self, key: str, block_id: str, side: str, index: int) -> None:
+        """A dot on the line it measures: the arrow leaving its block, the arrow into it after
+        the junction, or the feedback line. Several outputs of one block (the two coils, PWM,
+        supply and temperature) stand in a column on the block's right edge, the first where
+        the arrow leaves."""
         if side == "feedback":
             valve = self._rects["valve"]
             centre = QPointF(valve.center().x() - COL_PITCH / 2, valve.bottom() + FEEDBACK_DROP)
             label_side = "below_centre"
         elif side == "in":
             rect = self._rects[block_id]
-            centre = QPointF(rect.left() - 13, rect.center().y() + index * DOT_STEP)
+            centre = QPointF(rect.left() - 13, rect.center().y())
             label_side = "below"
         else:
             rect = self._rects[block_id]
-            # before the process junction the sensor arrives from above: label below instead
-            crowded = any(
-                link.source == block_id and link.target == "sum_process"
-                for link in self.layout.links
-            )
-            step = index + 1 if crowded and index else index
-            centre = QPointF(rect.right() + 13, rect.center().y() + step * DOT_STEP)
-            label_side = ("below" if crowded else "above") if index == 0 else "right"
+            count = sum(1 for b, s, _i in self.layout.dots.values() if (b, s) == (block_id, side))
+            if self.blocks[block_id].info:  # no arrow leaves: the column is centred
+                step = index - (count - 1) / 2
+                centre = QPointF(rect.right(), rect.center().y() + step * DOT_STEP)
+                label_side = "right"
+            elif count > 1:
+                centre = QPointF(rect.right(), rect.center().y() + index * DOT_STEP)
+                label_side = "right" if index else "above_right"
+            else:
+                centre = QPointF(rect.right() + 13, rect.center().y())
+                # before the process junction the sensor arrives from above: label below
+                into_sum = any(
+                    link.source == block_id and link.target == "sum_process"
+                    for link in self.layout.links
+                )
+                label_side = "below" if into_sum else "above"
         item = DotItem(key, centre, label_side)
         self.addItem(item)
         self.dots[key] = item
