@@ -385,3 +385,31 @@ def test_basic_all_ramps_takes_the_value_it_showed_before_the_ramps_differed(qtb
     assert {s.doc.value(mn) for mn in dialog.present} == {300}
     assert dialog.all_field.text() == "300"
     assert "differ" not in dialog.all_field.placeholderText()
+
+
+# --- size ---------------------------------------------------------------------------------------------
+@pytest.mark.parametrize("language", ["en", "de", "cs"])
+@pytest.mark.parametrize("key", [E02, E04_CA])
+def test_dialogs_open_at_a_default_size_that_fits_a_1024_x_768_screen(qtbot, setup, key, language):
+    from prm9tool import i18n
+    from prm9tool.views.diagram.layout import layout_for
+
+    i18n.set_language(language)
+    try:
+        s = setup(key)
+        for spec in layout_for(s.doc.variant).blocks:
+            dialog = create_block_dialog(spec.id, s.ctx, spec.title)
+            if dialog is None:
+                continue
+            qtbot.addWidget(dialog)
+            dialog.show()
+            assert 760 <= dialog.width() <= 1000 and 440 <= dialog.height() <= 690, spec.id
+            if isinstance(dialog, LinearizationDialog):  # the column titles are not cut
+                header = dialog.table.horizontalHeader()
+                for column in range(2):
+                    title = dialog.table.horizontalHeaderItem(column).text()
+                    needed = header.fontMetrics().horizontalAdvance(title)
+                    assert header.sectionSize(column) >= needed + 8, title
+            dialog.close()
+    finally:
+        i18n.set_language("en")

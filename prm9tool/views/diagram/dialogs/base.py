@@ -32,6 +32,7 @@ from prm9tool.i18n import text
 from prm9tool.views.diagram.dialogs.fields import ChoiceField, ValueField
 
 Field = ValueField | ChoiceField
+MAX_SIZE = (1000, 690)  # a 1024 × 768 screen less the title bar and a task bar
 
 
 @dataclass
@@ -50,6 +51,8 @@ class BlockContext:
 
 class BlockDialog(QDialog):
     """A non-modal dialog editing the parameters of one diagram block."""
+
+    DEFAULT_SIZE = (760, 440)
 
     def __init__(
         self, ctx: BlockContext, block_id: str, title: str, parent: QWidget | None = None
@@ -139,6 +142,15 @@ class BlockDialog(QDialog):
         self.retranslate()
         self._update_access()
         self.refresh()
+        self._resize_to_default()
+
+    def _resize_to_default(self) -> None:
+        """Open at DEFAULT_SIZE (room for the plot), larger if the content needs it, but
+        never beyond a 1024 × 768 screen."""
+        hint = self.sizeHint()
+        width = min(max(self.DEFAULT_SIZE[0], hint.width()), MAX_SIZE[0])
+        height = min(max(self.DEFAULT_SIZE[1], hint.height()), MAX_SIZE[1])
+        self.resize(width, height)
 
     # --- editing -----------------------------------------------------------------------------
     def apply_value(self, mnemonic: str, raw: Raw) -> bool:

@@ -35,6 +35,8 @@ def raw_to_slider(raw: int, raw_max: int) -> int:
 class ControllerDialog(BlockDialog):
     """The four PIDT1 values of one loop, sliders and the simulated step response."""
 
+    DEFAULT_SIZE = (780, 540)  # the step response is the point of the dialog
+
     def __init__(
         self,
         ctx: BlockContext,

@@ -161,11 +161,21 @@ class LinearizationDialog(BlockDialog):
 
     def retranslate(self) -> None:
         super().retranslate()
-        self.table.setHorizontalHeaderLabels([self.tr("Input X (%)"), self.tr("Output Y (%)")])
+        headers = [self.tr("Input X (%)"), self.tr("Output Y (%)")]
+        self.table.setHorizontalHeaderLabels(headers)
+        self._fit_table_width(headers)
         self.reset_button.setText(self.tr("Reset to a straight line"))
         self.editor.set_axes(
             Axes((-105.0, 105.0), (-105.0, 105.0), self.tr("Input (%)"), self.tr("Output (%)"))
         )
+
+    def _fit_table_width(self, headers: list[str]) -> None:
+        """Wide enough for both column titles in the current language."""
+        metrics = self.table.horizontalHeader().fontMetrics()
+        columns = sum(metrics.horizontalAdvance(h) + 28 for h in headers)
+        width = columns + self.table.verticalHeader().sizeHint().width() + 4
+        self.table.setMinimumWidth(width)
+        self.table.setMaximumWidth(max(width, 260))
 
     def points(self) -> tuple[list[int], list[int]]:
         """The raw X and Y values of the document."""
