@@ -292,6 +292,17 @@ def test_status_window_follows_the_valve(qtbot, window):
     assert status.fields["type_key"].text() == E04_CA
     assert status.fields["supply"].text().endswith(" V")
     assert any(led.colour != "off" for led in status.leds)
+    qtbot.waitUntil(lambda: "\n" in status._led_states[0].text(), timeout=TIMEOUT)
+    colour, pattern = status._led_states[0].text().split("\n")  # colour above pattern
+    assert colour in ("white", "green") and pattern in ("power-up", "on")
+
+    def shown_whole(label):
+        widest = max(label.fontMetrics().horizontalAdvance(t) for t in label.text().split("\n"))
+        return widest <= label.contentsRect().width()
+
+    qtbot.waitUntil(
+        lambda: all(shown_whole(label) for label in status._led_states), timeout=TIMEOUT
+    )
     session_of(window).transport.valve.inject(__import__(
         "prm9tool.device.emulator.states", fromlist=["Fault"]).Fault.COIL_A_OPEN)  # fmt: skip
     qtbot.waitUntil(lambda: "0x5411" in status.errors.item(0).text(), timeout=TIMEOUT)

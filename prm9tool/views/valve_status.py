@@ -131,13 +131,18 @@ class ValveStatusWindow(QDialog):
             zip(self.leds, self._led_titles, self._led_states, strict=True)
         ):
             grid.addWidget(led, 0, column, Qt.AlignmentFlag.AlignCenter)
-            grid.addWidget(title, 1, column, Qt.AlignmentFlag.AlignCenter)
-            grid.addWidget(state, 2, column, Qt.AlignmentFlag.AlignCenter)
+            # the labels fill their column (a centred label keeps the width of its first
+            # text, "—", and cut "green, on" short); a long pattern wraps
+            for row, label in ((1, title), (2, state)):
+                label.setAlignment(Qt.AlignmentFlag.AlignHCenter | Qt.AlignmentFlag.AlignTop)
+                label.setWordWrap(True)
+                grid.addWidget(label, row, column)
+            grid.setColumnStretch(column, 1)
         layout = QVBoxLayout(self)
         for group in self._groups.values():
-            layout.addWidget(group)
-        self.errors.setMaximumHeight(110)
-        self.resize(460, 560)
+            layout.addWidget(group, 1 if group is self._groups["errors"] else 0)
+        self.errors.setMinimumHeight(60)
+        self.resize(460, 520)
 
     def retranslate(self) -> None:
         """Set every text in the current language and refresh the values."""
@@ -211,7 +216,7 @@ class ValveStatusWindow(QDialog):
             state.setText(self._led_text(led_state.color, led_state.pattern))
 
     def _led_text(self, colour: str, pattern: str) -> str:
-        """An LED's state in words, e.g. "green, blinking 2.5 Hz"."""
+        """An LED's state in words, colour above pattern, e.g. "green\nblinking 2.5 Hz"."""
         colours = {
             "white": self.tr("white"),
             "green": self.tr("green"),
@@ -233,7 +238,7 @@ class ValveStatusWindow(QDialog):
         }
         if colour not in colours or pattern not in patterns:
             return self.tr("off")
-        return f"{colours[colour]}, {patterns[pattern]}"
+        return f"{colours[colour]}\n{patterns[pattern]}"
 
     def _show_errors(self, status: object) -> None:
         self.errors.clear()
