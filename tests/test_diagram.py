@@ -14,7 +14,6 @@ from prm9tool.device.emulator import EmulatedValve
 from prm9tool.document import ParameterDocument
 from prm9tool.signals import signals_for
 from prm9tool.undo import DocumentUndo
-from prm9tool.views.canopen_window import CanopenWindow
 from prm9tool.views.diagram import DiagramView, format_signal
 from prm9tool.views.diagram.dialogs import BlockDialog
 from prm9tool.views.valve_selection import ValveSelectionDialog
@@ -139,21 +138,28 @@ def test_changing_the_valve_type_redraws_the_diagram(qtbot):
 
 
 # --- block clicks ---------------------------------------------------------------------------------
-@pytest.mark.parametrize("key", [E02, E04_CA])
+VARIANTS = [E02, E02_A, E02_B, E04, E04_CA]
+MAIN_WINDOW_BLOCKS = {"valve": "valve_selection_requested", "canopen": "canopen_requested"}
+
+
+@pytest.mark.parametrize("key", VARIANTS)
 def test_a_click_on_each_block_opens_its_dialog(qtbot, key):
     view = make_view(qtbot, key, Access.EXPERT)
     for block_id in view.block_ids():
         if block_id == "supply":
             continue
+        if block_id in MAIN_WINDOW_BLOCKS:  # the main window's windows: the view asks for them
+            with (
+                qtbot.waitSignal(getattr(view, MAIN_WINDOW_BLOCKS[block_id])),
+                qtbot.assertNotEmitted(view.dialog_opened),
+            ):
+                click_item(qtbot, view, view.diagram.blocks[block_id])
+            continue
         with qtbot.waitSignal(view.dialog_opened) as opened:
             click_item(qtbot, view, view.diagram.blocks[block_id])
         opened_id, dialog = opened.args
         assert opened_id == block_id
-        assert isinstance(dialog, QWidget) and dialog.isVisible()
-        expected = {"valve": ValveSelectionDialog, "canopen": CanopenWindow}.get(
-            block_id, BlockDialog
-        )
-        assert isinstance(dialog, expected)
+        assert isinstance(dialog, BlockDialog) and dialog.isVisible()
         dialog.close()
 
 
@@ -164,17 +170,12 @@ def test_the_supply_block_shows_values_only(qtbot):
     assert view.open_block("supply") is None
 
 
-def test_valve_selection_changes_the_type_key_as_one_undo_step(qtbot):
+def test_the_valve_block_asks_the_main_window_and_changes_nothing_itself(qtbot):
     view = make_view(qtbot, E02)
-    dialog = view.open_block("valve")
-    assert isinstance(dialog, ValveSelectionDialog)
-    dialog.key_edit.clear()
-    qtbot.keyClicks(dialog.key_edit, E04)
-    dialog.accept()
-    assert str(view._doc.type_key) == E04
-    assert "process_controller" in view.block_ids()
-    view.undo.stack.undo()
-    assert str(view._doc.type_key) == E02
+    with qtbot.waitSignal(view.valve_selection_requested):
+        assert view.open_block("valve") is None
+    assert str(view._doc.type_key) == E02 and view.undo.stack.count() == 0
+    assert not any(isinstance(w, ValveSelectionDialog) for w in view.findChildren(QWidget))
 
 
 # --- edits and labels -----------------------------------------------------------------------------
@@ -282,7 +283,9 @@ def test_online_the_valve_type_is_locked(qtbot):
     view = make_view(qtbot, E02, connection=link)
     link.go_online()
     assert view.diagram.blocks["valve"].locked
-    assert view.open_block("valve") is None
+    with qtbot.assertNotEmitted(view.valve_selection_requested):
+        assert view.open_block("valve") is None
+        click_item(qtbot, view, view.diagram.blocks["valve"])
 
 
 def test_zoom_keeps_the_diagram_vector_and_fits_again(qtbot):

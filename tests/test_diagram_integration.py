@@ -119,3 +119,22 @@ def test_canopen_window_node_id_and_terminator_survive_a_restart(qtbot, window):
     assert "node ID 42" in canopen.effective_label.text()
     assert "terminator on" in canopen.effective_label.text()
     assert canopen.restart_label.isHidden()
+
+
+def test_the_canopen_block_and_the_toolbar_show_one_canopen_window(qtbot, tmp_path, monkeypatch):
+    from prm9tool.views.canopen_window import CanopenWindow
+
+    record_prompts(monkeypatch)
+    with main_window(qtbot, tmp_path, E02_CA) as window:
+        view = window.views["diagram"]
+        assert window.canopen_window is None
+        with qtbot.assertNotEmitted(view.dialog_opened):
+            view.open_block("canopen")
+        first = window.canopen_window
+        assert isinstance(first, CanopenWindow) and first.isVisible()
+        first.close()
+        view.open_block("canopen")
+        assert window.canopen_window is first and first.isVisible()
+        window.commands["canopen"].trigger()
+        assert window.canopen_window is first
+        assert window.findChildren(CanopenWindow) == [first]

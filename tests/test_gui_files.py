@@ -45,6 +45,27 @@ def test_unsaved_changes_prompt_on_new_can_cancel(window, answers, monkeypatch):
     assert str(window.doc.type_key) == E02 and window.doc.value("LIMTA") == 2000
 
 
+def test_the_diagrams_valve_block_is_valve_selection_and_asks_first(
+    window, answers, tmp_path, monkeypatch
+):
+    path = tmp_path / "open.prm"
+    window.files.save_to(path)
+    window.doc.set_value("LIMTA", 2000)
+    monkeypatch.setattr(ValveSelectionDialog, "exec", _select(E04_CA))
+    view = window.views["diagram"]
+    answers.answers = [prompts.Button.Cancel]
+    view.open_block("valve")
+    assert "Unsaved changes" in answers.asked[-1]
+    assert str(window.doc.type_key) == E02 and window.doc.value("LIMTA") == 2000
+    assert window.doc.path == path and window.doc.modified
+    answers.answers = [prompts.Button.Discard]
+    view.open_block("valve")
+    assert str(window.doc.type_key) == E04_CA and window.doc.value("LIMTA") == 2400
+    assert window.doc.path is None  # Save cannot overwrite open.prm with another valve type
+    assert "ext_sensor" in view.block_ids()
+    assert prmfile.read_file(path).type_key == TypeKey.parse(E02)
+
+
 def test_save_as_then_open_round_trip_and_recent_files(window, tmp_path, monkeypatch):
     assert not window.commands.menus["recent"].isEnabled()  # nothing opened yet
     path = tmp_path / "valve.prm"

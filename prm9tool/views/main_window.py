@@ -92,6 +92,8 @@ class MainWindow(QMainWindow):
 
         view = DiagramView(self.doc, self.access, self.connection, self)
         view.measuring_point_clicked.connect(self.open_scope)
+        view.valve_selection_requested.connect(self.new_document)  # asks about unsaved changes
+        view.canopen_requested.connect(self.show_canopen_window)
         return view
 
     def _make_scope_view(self) -> QWidget:
@@ -267,7 +269,6 @@ class MainWindow(QMainWindow):
         """Switch the program language now and remember it."""
         i18n.set_language(language)
         self.settings.setValue("language", language)
-        self.status.clearMessage()  # a message of the language before would stay
         self._update_actions()
 
     def show_status_window(self) -> ValveStatusWindow:

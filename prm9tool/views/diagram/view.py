@@ -3,7 +3,10 @@
 Drawn from the document's variant; every block opens its configuration dialog; blocks the
 access level may not change are grey; the red measuring points show live values online and
 ask for the oscilloscope when clicked. The view only observes the document, the access model
-and the valve connection through their signals.
+and the valve connection through their signals. The valve block and the CANopen block ask the
+main window (``valve_selection_requested``, ``canopen_requested``): valve selection replaces
+the document through the file workflow (which asks about unsaved changes first), and the
+CANopen window is the main window's single one.
 """
 
 from __future__ import annotations
@@ -33,7 +36,6 @@ from prm9tool.views.diagram.dialogs import BlockContext, create_block_dialog
 from prm9tool.views.diagram.layout import layout_for
 from prm9tool.views.diagram.scene import DiagramScene
 from prm9tool.views.diagram.summary import block_lines
-from prm9tool.views.valve_selection import ValveSelectionDialog
 
 _CTX = "DiagramBlock"
 ZOOM_STEP = 1.15
@@ -64,6 +66,8 @@ class DiagramView(QGraphicsView):
 
     measuring_point_clicked = Signal(str)  # measuring-point key
     dialog_opened = Signal(str, object)  # block id, the dialog widget
+    valve_selection_requested = Signal()  # the valve block was clicked (offline)
+    canopen_requested = Signal()  # the CANopen block was clicked
 
     def __init__(
         self,
@@ -117,7 +121,18 @@ class DiagramView(QGraphicsView):
         return self.diagram.layout.block_ids()
 
     def open_block(self, block_id: str) -> QDialog | None:
-        """Open (or raise) the dialog of ``block_id``; returns it (None for the supply block)."""
+        """Open (or raise) the dialog of ``block_id``; returns it.
+
+        None for the supply block (values only) and for the valve and CANopen blocks, whose
+        windows belong to the main window: for those the view emits its request signal.
+        """
+        if block_id == "valve":
+            if not self._valve_locked_reason():
+                self.valve_selection_requested.emit()
+            return None
+        if block_id == "canopen":
+            self.canopen_requested.emit()
+            return None
         dialog = self._dialogs.get(block_id)
         if dialog is None:
             dialog = self._create_dialog(block_id)
@@ -188,26 +203,8 @@ class DiagramView(QGraphicsView):
 
     def _create_dialog(self, block_id: str) -> QDialog | None:
         spec = self.diagram.layout.block(block_id)
-        if block_id == "valve":
-            return self._valve_dialog()
-        if block_id == "canopen":
-            from prm9tool.views.canopen_window import CanopenWindow
-
-            return CanopenWindow(self._doc, self._connection, self, access=self._access)
         ctx = BlockContext(self._doc, self._access, self._connection, self._simulator_factory)
         return create_block_dialog(block_id, ctx, spec.title, self)
-
-    def _valve_dialog(self) -> QDialog | None:
-        if self._valve_locked_reason():
-            return None
-        dialog = ValveSelectionDialog(self._doc.type_key, self)
-        dialog.accepted.connect(self._on_valve_selected)
-        return dialog
-
-    def _on_valve_selected(self) -> None:
-        dialog = self.sender()
-        assert isinstance(dialog, ValveSelectionDialog)
-        self._doc.set_type_key(dialog.selected_type_key())
 
     def _on_dialog_finished(self, _result: int) -> None:
         dialog = self._dialogs.pop(self.sender().objectName(), None)
