@@ -6,12 +6,17 @@ the reading of SPEC §3 applies **(inference)**:
 
 * interface/bit-rate switch: 0 = analog only, CAN off; 1 = reserved (same as 0); 2…8 = 20 k,
   50 k, 125 k, 250 k, 500 k, 800 k, 1 M without terminator; 9…F = the same seven rates with the
-  120 Ω terminator switched on. At 2…8 the terminator can be switched on over USB (CANTERM).
-* node-ID switch: 0 = node ID, bit rate and terminator set by software over USB (NODEID,
-  BITRATE, CANTERM); 1 = LSS and automatic bit-rate detection (node ID from NODEID, which an
-  LSS master stores; terminator CANTERM); 2…F = node ID 10, 15, …, 75 with the bit rate of the
-  interface switch. The emulated valve's firmware decodes its switches with :func:`effective`,
-  so the CANopen window and the valve cannot disagree.
+  120 Ω terminator switched on (fig. 8-17 mark "c"). At 2…8 the terminator can be switched on
+  over USB (CANTERM, table 7-17 "not active by default, can be activated by USB command").
+* node-ID switch: 0 = node ID set by software (NODEID, table 7-17) and, **(decision)**, the bit
+  rate too (BITRATE: §7.3 "node ID and bit rate can be set by software and hardware", §8.5 the
+  CANopen window gives access to the bit rate); the interface switch keeps its terminator
+  function, so 9…F switch the terminator on here as well. 1 = LSS and automatic bit-rate
+  detection: table 7-17 says the interface switch then "has no function", so neither its bit
+  rate nor its terminator apply; the terminator follows CANTERM (node ID from NODEID, which an
+  LSS master stores). 2…F = node ID 10, 15, …, 75 with the bit rate of the interface switch.
+  The emulated valve's firmware decodes its switches with :func:`effective`, so the CANopen
+  window and the valve cannot disagree.
 
 Switch positions are read by the valve at power-up only.
 """
@@ -83,11 +88,28 @@ def effective(
     baud, node = baud_position(switch_baud), node_position(switch_node)
     if not baud.can_enabled:
         return CanSettings(False, None, None, False)
-    if node.lss:
+    if node.lss:  # the interface switch has no function (table 7-17)
         return CanSettings(True, node_id, None, bool(canterm))
+    terminator = baud.terminator or bool(canterm)
     if node.software:
-        return CanSettings(True, node_id, BITRATE_CODES_KBIT[bitrate_code], bool(canterm))
-    return CanSettings(True, node.node_id, baud.bitrate_kbit, baud.terminator or bool(canterm))
+        return CanSettings(True, node_id, BITRATE_CODES_KBIT[bitrate_code], terminator)
+    return CanSettings(True, node.node_id, baud.bitrate_kbit, terminator)
+
+
+@dataclass(frozen=True)
+class Overridden:
+    """Which parts of the interface switch's position the node-ID switch overrides."""
+
+    bitrate: bool  # node switch 0: BITRATE applies; 1: automatic bit-rate detection
+    terminator: bool  # node switch 1 at 9…F: the terminator follows CANTERM, not the switch
+
+
+def overridden(switch_baud: int, switch_node: int) -> Overridden:
+    """What of interface switch position ``switch_baud`` does not apply at ``switch_node``."""
+    baud, node = baud_position(switch_baud), node_position(switch_node)
+    if not baud.can_enabled:
+        return Overridden(False, False)
+    return Overridden(node.software or node.lss, node.lss and baud.terminator)
 
 
 def format_bitrate(kbit: int | None) -> str:

@@ -5,11 +5,19 @@ from __future__ import annotations
 import pytest
 from diagram_fakes import EmulatorConnection
 
+from prm9tool import i18n
 from prm9tool.access import AccessModel
-from prm9tool.canopen_switches import baud_position, effective, node_position
+from prm9tool.canopen_switches import (
+    Overridden,
+    baud_position,
+    effective,
+    node_position,
+    overridden,
+)
 from prm9tool.catalogue import CATALOGUE, Access
 from prm9tool.device.emulator import EmulatedValve
 from prm9tool.document import ParameterDocument
+from prm9tool.sync import ValveSync
 from prm9tool.undo import DocumentUndo
 from prm9tool.views.canopen_window import CanopenWindow
 
@@ -17,16 +25,19 @@ E02_CA = "PRM9-06.3Z11/30-24E02S02-CA"
 
 
 def open_window(qtbot, switches=(6, 0), online=True):
+    """The window as the main window makes it: online, a ValveSync writes document edits."""
     valve = EmulatedValve(E02_CA, switches=switches)
     link = EmulatorConnection(valve)
+    doc = ParameterDocument(E02_CA)
+    sync = ValveSync(doc, link)
     if online:
         link.go_online()
-    doc = ParameterDocument(E02_CA)
+        sync.start({mn: valve_value(valve, mn) for mn in doc.values})
     undo = DocumentUndo(doc, doc)
-    window = CanopenWindow(doc, link)
+    window = CanopenWindow(doc, link, sync=sync)
     qtbot.addWidget(window)
     window.show()
-    window.keep = (doc, undo, link)  # keep the models alive as long as the window
+    window.keep = (doc, undo, link, sync)  # keep the models alive as long as the window
     return window, valve, link, doc, undo
 
 
@@ -59,6 +70,7 @@ def test_node_id_and_terminator_go_to_the_valve_and_show_after_restart(qtbot):
     window.terminator.setChecked(True)
     assert doc.value("NODEID") == 42 and doc.value("CANTERM") == 1
     assert valve_value(valve, "NODEID") == 42 and valve_value(valve, "CANTERM") == 1
+    assert link.writes == [("NODEID", 42), ("CANTERM", 1)]  # once each: by the sync
     assert link.stores == 2  # stored, so the restart keeps them
     assert not window.restart_label.isHidden()
     assert "after the valve restarts" in window.restart_label.text()
@@ -160,9 +172,87 @@ def test_node_switch_positions():
 
 
 def test_effective_settings_follow_the_emulated_firmware():
-    # node switch 0: node ID, bit rate and terminator from the parameters
-    settings = effective(0xC, 0, 33, 4, 0)
+    # node switch 0: node ID and bit rate from the parameters, terminator from either
+    settings = effective(0x5, 0, 33, 4, 0)
     assert (settings.node_id, settings.bitrate_kbit, settings.terminator) == (33, 125, False)
     settings = effective(4, 3, 33, 0, 1)  # node 15 from the switch, 125 k, software terminator
     assert (settings.node_id, settings.bitrate_kbit, settings.terminator) == (15, 125, True)
     assert not effective(1, 3, 33, 0, 1).can_enabled
+
+
+@pytest.mark.parametrize(
+    ("switches", "canterm", "terminator", "kbit", "struck"),
+    [
+        ((0xC, 0), 0, True, 125, Overridden(bitrate=True, terminator=False)),  # 9…F: on
+        ((0x5, 0), 1, True, 125, Overridden(bitrate=True, terminator=False)),  # by software
+        ((0xC, 1), 0, False, None, Overridden(bitrate=True, terminator=True)),  # LSS: no function
+        ((0xC, 1), 1, True, None, Overridden(bitrate=True, terminator=True)),
+        ((0xC, 4), 0, True, 250, Overridden(bitrate=False, terminator=False)),
+        ((0x0, 0), 1, False, None, Overridden(bitrate=False, terminator=False)),  # CAN off
+    ],
+)
+def test_which_switch_settings_apply_table_7_17(switches, canterm, terminator, kbit, struck):
+    # BITRATE code 4 = 125 kbit/s; interface 0xC = 250 kbit/s with terminator, 5 = 250 k without
+    settings = effective(*switches, 33, 4, canterm)
+    assert settings.bitrate_kbit == kbit  # None: automatic, or CAN off
+    assert settings.terminator is terminator
+    assert overridden(*switches) == struck
+
+
+def _struck(table, row: int) -> list[int]:
+    return [c for c in range(table.columnCount()) if table.item(row, c).font().strikeOut()]
+
+
+@pytest.mark.parametrize(
+    ("switches", "struck", "why"),
+    [
+        ((0xB, 0), [1], "bit rate set by software"),
+        ((0xB, 1), [1, 2], "node-ID switch at 1"),
+        ((0xB, 5), [], ""),
+        ((0x4, 1), [1], "detects the bit rate"),
+    ],
+)
+def test_the_table_strikes_out_what_the_node_switch_overrides(qtbot, switches, struck, why):
+    window, *_ = open_window(qtbot, switches=switches)
+    row = switches[0]
+    assert marked_rows(window.baud_table) == [row]
+    assert _struck(window.baud_table, row) == struck
+    assert all(_struck(window.baud_table, r) == [] for r in range(16) if r != row)
+    for column in struck:
+        assert why in window.baud_table.item(row, column).toolTip()
+
+
+def test_online_changes_are_not_stored_while_the_valve_does_not_follow_the_document(qtbot):
+    window, valve, link, doc, _undo = open_window(qtbot, switches=(6, 0))
+    window._sync.stop()  # e.g. the differences prompt after going online is still open
+    window.terminator.setChecked(True)
+    assert doc.value("CANTERM") == 1
+    assert link.writes == [] and link.stores == 0
+    assert valve_value(valve, "CANTERM") == 0
+    assert "does not follow the document" in window.restart_label.text()
+
+
+def test_a_restart_from_the_valve_menu_reads_the_switches_again(qtbot):
+    window, valve, link, *_ = open_window(qtbot, switches=(6, 0))
+    window.terminator.setChecked(True)
+    assert window.restart_pending
+    valve.set_input("switch_node", 3)
+    valve.restart()
+    link.operation_finished.emit("after_restart", {})  # ValveWorkflow's restart job
+    assert not window.restart_pending and window.restart_label.isHidden()
+    assert window.switches == (6, 3)
+
+
+@pytest.mark.parametrize("language", ["en", "de", "cs"])
+def test_the_window_fits_a_1024_x_768_screen(qtbot, language):
+    i18n.set_language(language)
+    try:
+        window, *_ = open_window(qtbot, switches=(0xC, 1))
+        qtbot.wait(10)
+        assert window.height() <= 700 and window.width() <= 1000
+        hint = window.minimumSizeHint()
+        assert hint.height() <= 700 and hint.width() <= 1000
+        # every switch position is visible without scrolling
+        assert window.baud_table.viewport().height() >= 16 * window.baud_table.rowHeight(0)
+    finally:
+        i18n.set_language("en")

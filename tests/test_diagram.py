@@ -206,6 +206,24 @@ def test_a_bad_value_is_refused_with_the_reason_and_changes_nothing(qtbot):
     assert field.text() == "150"  # the user's entry stays for correction
 
 
+def test_the_canopen_block_shows_the_settings_that_apply(qtbot):
+    view = make_view(qtbot, E04_CA, Access.EXPERT)
+    block = view.diagram.blocks["canopen"]
+    # delivery state (table 7-22): interface switch 6 = 500 kbit/s, node switch 2 = node 10
+    assert block.lines == ["Node ID 10 · 500 kbit/s", "Terminator off"]
+    assert "interface 6, node ID 2" in block.toolTip()
+    doc = view._doc
+    doc.set_values({"NODEID": 42, "BITRATE": 3}, "software node ID and bit rate")
+    assert block.lines[0] == "Node ID 10 · 500 kbit/s"  # the switch sets them
+    doc.set_live({"SWBAUD": 0xC, "SWNODE": 0})  # read from a valve
+    assert block.lines == ["Node ID 42 · 250 kbit/s", "Terminator on"]
+    assert "interface C, node ID 0" in block.toolTip()
+    doc.set_live({"SWNODE": 1})
+    assert block.lines == ["Node ID 42 · auto bit rate", "Terminator off"]
+    doc.set_live({"SWBAUD": 0})
+    assert block.lines == ["CANopen off", "analog setpoint"]
+
+
 def test_document_changes_from_elsewhere_update_the_block(qtbot):
     view = make_view(qtbot, E04, Access.EXPERT)
     view._doc.set_value("PRCKP", 1234)

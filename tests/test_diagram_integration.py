@@ -92,20 +92,27 @@ def test_a_red_dot_opens_the_scope_with_its_measuring_point(qtbot, paced_window)
     assert "current_a" in window.views["scope"].channels.selected()
 
 
-def test_canopen_window_node_id_and_terminator_survive_a_restart(qtbot, window):
+def test_canopen_window_node_id_and_terminator_survive_a_restart(qtbot, window, monkeypatch):
     window.access.set_level(Access.EXPERT)  # Basic may only look at the CANopen settings
-    _online(qtbot, window, f"{E02_CA}:4702")
+    view = _online(qtbot, window, f"{E02_CA}:4702")
     valve = emulated(4702)
     valve.set_input("switch_node", 0)  # node ID set by software; read at the next power-up
     with qtbot.waitSignal(window.connection.operation_finished, timeout=TIMEOUT):
         window.connection.restart()
-    canopen = window.show_canopen_window()
+    view.open_block("canopen")  # the diagram's block opens the main window's CANopen window
+    canopen = window.canopen_window
     qtbot.waitUntil(lambda: canopen.switches is not None, timeout=TIMEOUT)
     assert canopen.switches[1] == 0 and canopen.node_id.isEnabled()
 
+    writes = []
+    write = window.connection.write
+    monkeypatch.setattr(
+        window.connection, "write", lambda mn, raw: (writes.append(mn), write(mn, raw))
+    )
     canopen.node_id.setValue(42)
     canopen.node_id.editingFinished.emit()
     canopen.terminator.setChecked(True)
+    assert writes == ["NODEID", "CANTERM"]  # once each, by the sync
     assert "after the valve restarts" in canopen.restart_label.text()
     with qtbot.waitSignal(
         window.connection.operation_finished,

@@ -85,6 +85,18 @@
             <translation>zapnutý</translation>
         </message>
         <message>
+            <source>Overridden: with the node-ID switch at 1 the interface switch has no function; the terminator follows the software setting below.</source>
+            <translation>Neplatí: s přepínačem Node ID v poloze 1 nemá přepínač rozhraní žádnou funkci; terminátor se řídí nastavením softwaru níže.</translation>
+        </message>
+        <message>
+            <source>Overridden: with the node-ID switch at 1 (LSS) the valve detects the bit rate of the bus.</source>
+            <translation>Neplatí: s přepínačem Node ID v poloze 1 (LSS) ventil rozpozná přenosovou rychlost sběrnice.</translation>
+        </message>
+        <message>
+            <source>Overridden: with the node-ID switch at 0 the bit rate set by software below applies.</source>
+            <translation>Neplatí: s přepínačem Node ID v poloze 0 platí přenosová rychlost nastavená softwarem níže.</translation>
+        </message>
+        <message>
             <source>CANopen off, analog setpoint only</source>
             <translation>CANopen vypnuto, pouze analogová žádaná hodnota</translation>
         </message>
@@ -133,8 +145,16 @@
             <translation>Polohy přepínačů načtené ventilem při posledním zapnutí.</translation>
         </message>
         <message>
-            <source>With the node-ID switch at 0 or 1 the terminator follows the software setting below, whatever the interface switch says.</source>
-            <translation>Je-li přepínač Node ID v poloze 0 nebo 1, řídí se terminátor nastavením softwaru níže bez ohledu na přepínač rozhraní.</translation>
+            <source>automatic bit rate</source>
+            <translation>automatická přenosová rychlost</translation>
+        </message>
+        <message>
+            <source>The node-ID switch is at 0: node ID and bit rate are the ones set below (the interface switch's bit rate is struck through); its positions 9…F still switch the terminator on.</source>
+            <translation>Přepínač Node ID je v poloze 0: Node ID a přenosová rychlost jsou ty nastavené níže (přenosová rychlost přepínače rozhraní je přeškrtnutá); jeho polohy 9…F přesto zapínají terminátor.</translation>
+        </message>
+        <message>
+            <source>The node-ID switch is at 1 (LSS, automatic bit rate): the interface switch has no function, the terminator follows the setting below.</source>
+            <translation>Přepínač Node ID je v poloze 1 (LSS, automatická přenosová rychlost): přepínač rozhraní nemá žádnou funkci, terminátor se řídí nastavením níže.</translation>
         </message>
         <message>
             <source>After the next restart the valve uses:</source>
@@ -155,6 +175,10 @@
         <message>
             <source>node ID %1, %2, terminator %3.</source>
             <translation>Node ID %1, %2, terminátor %3.</translation>
+        </message>
+        <message>
+            <source>Changed in the document; the valve does not follow the document now. Upload it to the valve; the change takes effect after the valve restarts.</source>
+            <translation>Změněno v dokumentu; ventil teď dokument nenásleduje. Načtěte jej do ventilu; změna se projeví po restartu ventilu.</translation>
         </message>
         <message>
             <source>Changed in the document. Upload it to the valve; the change takes effect after the valve restarts.</source>
@@ -524,8 +548,24 @@
             <translation>(aktuální hodnoty)</translation>
         </message>
         <message>
-            <source>Node ID %1 (switch 0)</source>
-            <translation>Node ID %1 (přepínač 0)</translation>
+            <source>CANopen off</source>
+            <translation>CANopen vypnuto</translation>
+        </message>
+        <message>
+            <source>analog setpoint</source>
+            <translation>analogová žádaná hodnota</translation>
+        </message>
+        <message>
+            <source>auto bit rate</source>
+            <translation>rychlost auto</translation>
+        </message>
+        <message>
+            <source>Node ID %1 · %2</source>
+            <translation>Node ID %1 · %2</translation>
+        </message>
+        <message>
+            <source>Rotary switches: interface %1, node ID %2 (read by the valve at power-up; before a valve was read, the delivery state).</source>
+            <translation>Otočné přepínače: rozhraní %1, Node ID %2 (ventil je čte při zapnutí; dokud nebyl načten žádný ventil, stav při dodání).</translation>
         </message>
         <message>
             <source>Terminator %1</source>

@@ -85,6 +85,18 @@
             <translation>ein</translation>
         </message>
         <message>
+            <source>Overridden: with the node-ID switch at 1 the interface switch has no function; the terminator follows the software setting below.</source>
+            <translation>Außer Kraft: Steht der Node-ID-Schalter auf 1, hat der Schnittstellenschalter keine Funktion; der Abschlusswiderstand folgt der Software-Einstellung unten.</translation>
+        </message>
+        <message>
+            <source>Overridden: with the node-ID switch at 1 (LSS) the valve detects the bit rate of the bus.</source>
+            <translation>Außer Kraft: Steht der Node-ID-Schalter auf 1 (LSS), erkennt das Ventil die Baudrate des Busses.</translation>
+        </message>
+        <message>
+            <source>Overridden: with the node-ID switch at 0 the bit rate set by software below applies.</source>
+            <translation>Außer Kraft: Steht der Node-ID-Schalter auf 0, gilt die unten per Software eingestellte Baudrate.</translation>
+        </message>
+        <message>
             <source>CANopen off, analog setpoint only</source>
             <translation>CANopen aus, nur analoger Sollwert</translation>
         </message>
@@ -133,8 +145,16 @@
             <translation>Beim letzten Einschalten aus dem Ventil gelesene Schalterstellungen.</translation>
         </message>
         <message>
-            <source>With the node-ID switch at 0 or 1 the terminator follows the software setting below, whatever the interface switch says.</source>
-            <translation>Steht der Node-ID-Schalter auf 0 oder 1, folgt der Abschlusswiderstand der Software-Einstellung unten, unabhängig vom Schnittstellenschalter.</translation>
+            <source>automatic bit rate</source>
+            <translation>automatische Baudrate</translation>
+        </message>
+        <message>
+            <source>The node-ID switch is at 0: node ID and bit rate are the ones set below (the interface switch's bit rate is struck through); its positions 9…F still switch the terminator on.</source>
+            <translation>Der Node-ID-Schalter steht auf 0: Node-ID und Baudrate sind die unten eingestellten (die Baudrate des Schnittstellenschalters ist durchgestrichen); seine Stellungen 9…F schalten den Abschlusswiderstand trotzdem ein.</translation>
+        </message>
+        <message>
+            <source>The node-ID switch is at 1 (LSS, automatic bit rate): the interface switch has no function, the terminator follows the setting below.</source>
+            <translation>Der Node-ID-Schalter steht auf 1 (LSS, automatische Baudrate): Der Schnittstellenschalter hat keine Funktion, der Abschlusswiderstand folgt der Einstellung unten.</translation>
         </message>
         <message>
             <source>After the next restart the valve uses:</source>
@@ -155,6 +175,10 @@
         <message>
             <source>node ID %1, %2, terminator %3.</source>
             <translation>Node-ID %1, %2, Abschlusswiderstand %3.</translation>
+        </message>
+        <message>
+            <source>Changed in the document; the valve does not follow the document now. Upload it to the valve; the change takes effect after the valve restarts.</source>
+            <translation>Im Dokument geändert; das Ventil folgt dem Dokument gerade nicht. Laden Sie es in das Ventil; die Änderung wird nach einem Neustart des Ventils wirksam.</translation>
         </message>
         <message>
             <source>Changed in the document. Upload it to the valve; the change takes effect after the valve restarts.</source>
@@ -524,12 +548,28 @@
             <translation>(Live-Werte)</translation>
         </message>
         <message>
-            <source>Node ID %1 (switch 0)</source>
-            <translation>Node-ID %1 (Schalter 0)</translation>
+            <source>CANopen off</source>
+            <translation>CANopen aus</translation>
+        </message>
+        <message>
+            <source>analog setpoint</source>
+            <translation>analoger Sollwert</translation>
+        </message>
+        <message>
+            <source>auto bit rate</source>
+            <translation>Baudrate auto</translation>
+        </message>
+        <message>
+            <source>Node ID %1 · %2</source>
+            <translation>Node-ID %1 · %2</translation>
+        </message>
+        <message>
+            <source>Rotary switches: interface %1, node ID %2 (read by the valve at power-up; before a valve was read, the delivery state).</source>
+            <translation>Drehschalter: Schnittstelle %1, Node-ID %2 (vom Ventil beim Einschalten gelesen; solange kein Ventil gelesen wurde, der Auslieferungszustand).</translation>
         </message>
         <message>
             <source>Terminator %1</source>
-            <translation>Abschlusswiderstand %1</translation>
+            <translation>Busabschluss %1</translation>
         </message>
     </context>
     <context>

@@ -1,59 +1,51 @@
 """The CANopen window (manual §8.7, figure 8-17): rotary switches, terminator, node ID.
 
-Left: the interface/bit-rate switch table with the current position marked (mark "a") and
-the terminator state of positions 9…F (mark "c"). Right: the node-ID switch table with the
-current position (mark "d"). Below: the terminator on/off choice (mark "b") and the node ID
+On top the two switch tables (:mod:`prm9tool.views.canopen_tables`, marks "a", "c", "d").
+Below: the terminator on/off choice (mark "b") and the node ID
 1…127 used when the node-ID switch is at 0 (mark "e"), plus the software bit rate.
 
 The valve reads its switches at power-up only, so the positions shown are those of the last
-start. A change is an undoable document edit and, online, is written to the valve and stored
-in its non-volatile memory; it takes effect after the next restart, which the window says.
-Given an access model, the window honours the catalogue's access level of the settings.
+start; a part of the interface switch's position that the node-ID switch overrides (its bit
+rate at node switch 0 or 1, its terminator at 1) is struck through. A change is an undoable
+document edit only: online, the main window's :class:`~prm9tool.sync.ValveSync` writes it to
+the valve like every other edit, and the window then has the valve store it in non-volatile
+memory, because the setting takes effect only after a restart, which reloads the stored
+values. Given an access model, the window honours the catalogue's access level.
 """
 
 from __future__ import annotations
 
 from typing import Any
 
-from PySide6.QtCore import QEvent, QSignalBlocker, Qt
-from PySide6.QtGui import QBrush, QColor, QFont
+from PySide6.QtCore import QEvent, QSignalBlocker
 from PySide6.QtWidgets import (
-    QAbstractItemView,
     QCheckBox,
     QComboBox,
     QDialog,
     QDialogButtonBox,
     QFormLayout,
     QGroupBox,
-    QHBoxLayout,
-    QHeaderView,
     QLabel,
     QSpinBox,
-    QTableWidget,
-    QTableWidgetItem,
     QVBoxLayout,
     QWidget,
 )
 
 from prm9tool.access import AccessModel
-from prm9tool.canopen_switches import (
-    POSITIONS,
-    baud_position,
-    effective,
-    format_bitrate,
-    node_position,
-)
+from prm9tool.canopen_switches import baud_position, effective, format_bitrate
 from prm9tool.catalogue import CATALOGUE
 from prm9tool.connection_protocol import ParameterConnection
 from prm9tool.document import ParameterDocument, Raw
 from prm9tool.editing import apply_edit
 from prm9tool.errors import AccessDeniedError, ValueRangeError
 from prm9tool.i18n import current_language
+from prm9tool.sync import ValveSync
+from prm9tool.views.canopen_tables import SwitchTables
 
 SETTINGS = ("NODEID", "BITRATE", "CANTERM")
 SWITCHES = ("SWBAUD", "SWNODE")
 READ_TAG = "canopen_window"
-CURRENT_BRUSH = QBrush(QColor("#ffe9a8"))
+RESTARTED = ("restart", "after_restart")  # the connection's restart; Valve → Restart valve
 
 
 class CanopenWindow(QDialog):
@@ -65,9 +57,11 @@ class CanopenWindow(QDialog):
         connection: ParameterConnection | None = None,
         parent: QWidget | None = None,
         access: AccessModel | None = None,
+        sync: ValveSync | None = None,
     ) -> None:
         super().__init__(parent)
         self._doc, self._connection, self._access = document, connection, access
+        self._sync = sync  # writes document edits to the valve while online
         self.switches: tuple[int, int] | None = None  # (interface, node) at the last power-up
         self.valve_values: dict[str, Raw] = {}  # NODEID, BITRATE, CANTERM as read from the valve
         self.restart_pending = False
@@ -96,23 +90,17 @@ class CanopenWindow(QDialog):
         root = QVBoxLayout(self)
         for widget in (self.intro, self.state_label):
             root.addWidget(widget)
-        root.addLayout(self._build_tables(), 1)
+        root.addWidget(self._build_tables(), 1)
         for part in (self._build_settings(), self.effective_label, self.restart_label):
             root.addWidget(part)
         root.addWidget(self.error_label)
         root.addWidget(buttons)
-        self.resize(900, 720)
+        self.resize(880, 660)  # fits a 1024 × 768 screen with its title bar
 
-    def _build_tables(self) -> QHBoxLayout:
-        self.baud_table = self._table(3)
-        self.node_table = self._table(2)
-        self.baud_box, self.node_box = QGroupBox(), QGroupBox()
-        QVBoxLayout(self.baud_box).addWidget(self.baud_table)
-        QVBoxLayout(self.node_box).addWidget(self.node_table)
-        tables = QHBoxLayout()
-        tables.addWidget(self.baud_box, 3)
-        tables.addWidget(self.node_box, 2)
-        return tables
+    def _build_tables(self) -> SwitchTables:
+        self.tables = SwitchTables()
+        self.baud_table, self.node_table = self.tables.baud_table, self.tables.node_table
+        return self.tables
 
     def _build_settings(self) -> QGroupBox:
         self.terminator = QCheckBox()
@@ -134,21 +122,6 @@ class CanopenWindow(QDialog):
             form.addRow(caption, widget)
         return self.settings_box
 
-    @staticmethod
-    def _table(columns: int) -> QTableWidget:
-        table = QTableWidget(len(POSITIONS), columns)
-        table.verticalHeader().hide()
-        table.setEditTriggers(QAbstractItemView.EditTrigger.NoEditTriggers)
-        table.setSelectionMode(QAbstractItemView.SelectionMode.NoSelection)
-        table.setFocusPolicy(Qt.FocusPolicy.NoFocus)
-        table.verticalHeader().setDefaultSectionSize(22)
-        table.setMinimumHeight(22 * len(POSITIONS) + 30)
-        table.setVerticalScrollBarPolicy(Qt.ScrollBarPolicy.ScrollBarAlwaysOff)
-        header = table.horizontalHeader()
-        header.setSectionResizeMode(QHeaderView.ResizeMode.ResizeToContents)
-        header.setStretchLastSection(True)
-        return table
-
     # --- texts ------------------------------------------------------------------------------------
     def retranslate(self) -> None:
         """Every visible text in the current language."""
@@ -160,13 +133,8 @@ class CanopenWindow(QDialog):
                 "here are stored in the valve and take effect after the next restart."
             )
         )
-        self.baud_box.setTitle(self.tr("Interface / bit-rate switch"))
-        self.node_box.setTitle(self.tr("Node-ID switch"))
+        self.tables.retranslate()
         self.settings_box.setTitle(self.tr("Settings made by software (USB)"))
-        self.baud_table.setHorizontalHeaderLabels(
-            [self.tr("Position"), self.tr("Interface / bit rate"), self.tr("Terminator")]
-        )
-        self.node_table.setHorizontalHeaderLabels([self.tr("Position"), self.tr("Node ID")])
         self.captions[0].setText(self.tr("CAN terminator 120 Ω"))
         self.captions[1].setText(self.tr("Node ID (node switch at 0)"))
         self.captions[2].setText(self.tr("Bit rate (node switch at 0)"))
@@ -177,54 +145,15 @@ class CanopenWindow(QDialog):
                 self.bitrate.addItem(label.get(current_language()), code)
         self.refresh()
 
-    def _baud_texts(self, position: int) -> tuple[str, str]:
-        decoded = baud_position(position)
-        if position == 0:
-            return self.tr("CANopen off, analog setpoint only"), "—"
-        if position == 1:
-            return self.tr("reserved (as position 0)"), "—"
-        rate = format_bitrate(decoded.bitrate_kbit)
-        if decoded.terminator:
-            terminator = self.tr("on")
-        else:
-            terminator = self.tr("off (on by software)")
-        return self.tr("CANopen, %1").replace("%1", rate), terminator
-
-    def _node_text(self, position: int) -> str:
-        decoded = node_position(position)
-        if decoded.software:
-            return self.tr("set by software: 1 … 127 (below)")
-        if decoded.lss:
-            return self.tr("LSS, automatic bit rate")
-        return str(decoded.node_id)
-
     # --- showing ----------------------------------------------------------------------------------
     def refresh(self) -> None:
         """Redraw the tables, settings and the effective result from the current state."""
         if not hasattr(self, "bitrate"):
             return
-        baud, node = self.switches if self.switches is not None else (None, None)
-        for position in POSITIONS:
-            cells: tuple[str, ...] = (f"{position:X}", *self._baud_texts(position))
-            self._fill_row(self.baud_table, position, cells, position == baud)
-            cells = (f"{position:X}", self._node_text(position))
-            self._fill_row(self.node_table, position, cells, position == node)
+        self.tables.show_switches(self.switches)
+        node = self.switches[1] if self.switches is not None else None
         self._show_settings(node)
         self._show_state()
-
-    def _fill_row(
-        self, table: QTableWidget, row: int, cells: tuple[str, ...], current: bool
-    ) -> None:
-        for column, text in enumerate(cells):
-            shown = f"▶ {text}" if current and column == 0 else text
-            item = QTableWidgetItem(shown)
-            if current:
-                font = QFont(item.font())
-                font.setBold(True)
-                item.setFont(font)
-                item.setBackground(CURRENT_BRUSH)
-                item.setToolTip(self.tr("Position read by the valve at its last power-up"))
-            table.setItem(row, column, item)
 
     def _value(self, mnemonic: str) -> int:
         return int(self._doc.value(mnemonic))
@@ -268,14 +197,28 @@ class CanopenWindow(QDialog):
             state = self.tr("Reading the switch positions from the valve …")
         else:
             state = self.tr("Switch positions read from the valve at its last power-up.")
-            if self.switches[1] in (0, 1):
-                state += " " + self.tr(
-                    "With the node-ID switch at 0 or 1 the terminator follows the software "
-                    "setting below, whatever the interface switch says."
-                )
+            if baud_position(self.switches[0]).can_enabled:
+                state += self._override_note(self.switches[1])
         self.state_label.setText(state)
         self.effective_label.setText(self._effective_text())
         self.restart_label.setVisible(self.restart_pending)
+
+    def _rate_text(self, kbit: int | None) -> str:
+        return format_bitrate(kbit) if kbit else self.tr("automatic bit rate")
+
+    def _override_note(self, node_switch: int) -> str:
+        if node_switch == 0:
+            return " " + self.tr(
+                "The node-ID switch is at 0: node ID and bit rate are the ones set below (the "
+                "interface switch's bit rate is struck through); its positions 9…F still "
+                "switch the terminator on."
+            )
+        if node_switch == 1:
+            return " " + self.tr(
+                "The node-ID switch is at 1 (LSS, automatic bit rate): the interface switch "
+                "has no function, the terminator follows the setting below."
+            )
+        return ""
 
     def _effective_text(self) -> str:
         """What the valve uses with its switches and the settings it holds (read back)."""
@@ -294,15 +237,19 @@ class CanopenWindow(QDialog):
         details = (
             self.tr("node ID %1, %2, terminator %3.")
             .replace("%1", str(settings.node_id))
-            .replace("%2", format_bitrate(settings.bitrate_kbit))
+            .replace("%2", self._rate_text(settings.bitrate_kbit))
             .replace("%3", terminator)
         )
         return f"{prefix} {details}"
 
     # --- editing ------------------------------------------------------------------------------------
     def apply(self, mnemonic: str, raw: Raw) -> bool:
-        """Set a CANopen setting: document (undoable) and, online, valve + non-volatile store."""
-        if self._doc.value(mnemonic) == raw and not self._online():
+        """Set a CANopen setting in the document (undoable); online, have the valve store it.
+
+        The write itself is the sync's (it mirrors every document edit to the valve); the
+        window adds the store, since the setting only takes effect after a restart.
+        """
+        if self._doc.value(mnemonic) == raw:
             return True
         try:
             if self._access is not None:
@@ -315,8 +262,15 @@ class CanopenWindow(QDialog):
             return False
         self.error_label.clear()
         self.restart_pending = True
-        if self._online():
-            self._write_to_valve(mnemonic, raw)
+        if self._written(mnemonic, raw):
+            self._store_in_valve(mnemonic, raw)
+        elif self._online():
+            self.restart_label.setText(
+                self.tr(
+                    "Changed in the document; the valve does not follow the document now. "
+                    "Upload it to the valve; the change takes effect after the valve restarts."
+                )
+            )
         else:
             self.restart_label.setText(
                 self.tr(
@@ -327,10 +281,19 @@ class CanopenWindow(QDialog):
         self._show_state()
         return True
 
-    def _write_to_valve(self, mnemonic: str, raw: Raw) -> None:
-        """Write and store (a restart reloads the stored values), and say when it applies."""
+    def _written(self, mnemonic: str, raw: Raw) -> bool:
+        """True if the sync wrote ``raw`` to the online valve."""
+        sync = self._sync
+        return (
+            self._online()
+            and sync is not None
+            and sync.active
+            and sync.valve_values.get(mnemonic) == raw
+        )
+
+    def _store_in_valve(self, mnemonic: str, raw: Raw) -> None:
+        """Store (a restart reloads the stored values), and say when it applies."""
         assert self._connection is not None
-        self._connection.write(mnemonic, raw)
         self._connection.store()
         self.valve_values[mnemonic] = raw
         self.restart_label.setText(
@@ -363,7 +326,7 @@ class CanopenWindow(QDialog):
     def _on_operation_finished(self, name: str, result: Any) -> None:
         if name == READ_TAG and isinstance(result, dict):
             self._take_valve_values(result)
-        elif name == "restart":
+        elif name in RESTARTED:
             self.restart_pending = False
             self.switches = None
             self.valve_values = {}

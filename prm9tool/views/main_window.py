@@ -284,7 +284,9 @@ class MainWindow(QMainWindow):
         if self.canopen_window is None:
             from prm9tool.views.canopen_window import CanopenWindow
 
-            self.canopen_window = CanopenWindow(self.doc, self.connection, self, access=self.access)
+            self.canopen_window = CanopenWindow(
+                self.doc, self.connection, self, access=self.access, sync=self.sync
+            )
         self.canopen_window.show()
         self.canopen_window.raise_()
         return self.canopen_window

@@ -6,6 +6,7 @@ from collections.abc import Callable
 
 from PySide6.QtCore import QCoreApplication
 
+from prm9tool.canopen_switches import CanSettings, effective, format_bitrate
 from prm9tool.catalogue import CATALOGUE
 from prm9tool.document import ParameterDocument
 from prm9tool.i18n import current_language
@@ -141,13 +142,44 @@ def _supply(doc: ParameterDocument) -> list[str]:
     ]
 
 
+def _can_settings(doc: ParameterDocument) -> CanSettings:
+    """What the valve runs with: its switches (as read from it, else the delivery state of
+    table 7-22) and the document's settings."""
+    values = [int(doc.value(mn)) for mn in ("SWBAUD", "SWNODE", "NODEID", "BITRATE", "CANTERM")]
+    return effective(*values)
+
+
 def _canopen(doc: ParameterDocument) -> list[str]:
+    settings = _can_settings(doc)
+    if not settings.can_enabled:
+        return [
+            translate("DiagramSummary", "CANopen off"),
+            translate("DiagramSummary", "analog setpoint"),
+        ]
+    rate = (
+        format_bitrate(settings.bitrate_kbit)
+        if settings.bitrate_kbit
+        else translate("DiagramSummary", "auto bit rate")
+    )
+    terminator = CATALOGUE["CANTERM"].choice_text(int(settings.terminator), current_language())
     return [
-        translate("DiagramSummary", "Node ID %1 (switch 0)").replace(
-            "%1", value_text(doc, "NODEID")
-        ),
-        translate("DiagramSummary", "Terminator %1").replace("%1", value_text(doc, "CANTERM")),
+        translate("DiagramSummary", "Node ID %1 · %2")
+        .replace("%1", str(settings.node_id))
+        .replace("%2", rate),
+        translate("DiagramSummary", "Terminator %1").replace("%1", terminator),
     ]
+
+
+def _canopen_detail(doc: ParameterDocument) -> str:
+    return (
+        translate(
+            "DiagramSummary",
+            "Rotary switches: interface %1, node ID %2 (read by the valve at power-up; "
+            "before a valve was read, the delivery state).",
+        )
+        .replace("%1", f"{int(doc.value('SWBAUD')):X}")
+        .replace("%2", f"{int(doc.value('SWNODE')):X}")
+    )
 
 
 _SUMMARIES: dict[str, Callable[[ParameterDocument], list[str]]] = {
@@ -172,3 +204,8 @@ _SUMMARIES: dict[str, Callable[[ParameterDocument], list[str]]] = {
 def block_lines(doc: ParameterDocument, block_id: str) -> list[str]:
     """The value lines block ``block_id`` shows for ``doc`` (at most three)."""
     return _SUMMARIES[block_id](doc)[:3]
+
+
+def block_detail(doc: ParameterDocument, block_id: str) -> str:
+    """More about what block ``block_id`` shows, for its tooltip ('' if nothing)."""
+    return _canopen_detail(doc) if block_id == "canopen" else ""

@@ -35,9 +35,11 @@ from prm9tool.tuning import StepSimulator
 from prm9tool.views.diagram.dialogs import BlockContext, create_block_dialog
 from prm9tool.views.diagram.layout import layout_for
 from prm9tool.views.diagram.scene import DiagramScene
-from prm9tool.views.diagram.summary import block_lines
+from prm9tool.views.diagram.summary import block_detail, block_lines
 
 _CTX = "DiagramBlock"
+# Values a block shows besides the parameters it edits.
+_ALSO_SHOWN = {"valve": ("PCODE",), "canopen": ("SWBAUD", "SWNODE")}
 ZOOM_STEP = 1.15
 _DECIMALS = {"%": 1, "mA": 0, "V": 2, "°C": 1}
 
@@ -238,7 +240,8 @@ class DiagramView(QGraphicsView):
             tip = self.tr("Click to edit: %1").replace(
                 "%1", QCoreApplication.translate(_CTX, spec.title)
             )
-        item.set_locked(bool(reason), tip)
+        detail = block_detail(self._doc, block_id)
+        item.set_locked(bool(reason), f"{detail}\n{tip}" if detail else tip)
 
     def _lock_reason(self, block_id: str) -> str:
         if block_id == "valve":
@@ -269,7 +272,7 @@ class DiagramView(QGraphicsView):
     # --- slots ----------------------------------------------------------------------------------------
     def _on_document_value_changed(self, mnemonic: str) -> None:
         for spec in self.diagram.layout.blocks:
-            if mnemonic in spec.mnemonics or (spec.id == "valve" and mnemonic == "PCODE"):
+            if mnemonic in spec.mnemonics or mnemonic in _ALSO_SHOWN.get(spec.id, ()):
                 self._refresh_block(spec.id)
 
     def _on_type_key_changed(self, _key: str) -> None:
