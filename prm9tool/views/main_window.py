@@ -269,6 +269,7 @@ class MainWindow(QMainWindow):
         """Switch the program language now and remember it."""
         i18n.set_language(language)
         self.settings.setValue("language", language)
+        self.status.clearMessage()  # a message of the language before would stay
         self._update_actions()
 
     def show_status_window(self) -> ValveStatusWindow:
