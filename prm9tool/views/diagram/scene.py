@@ -21,6 +21,9 @@ from prm9tool.views.diagram.layout import (
 GAP = COL_PITCH - block_rect(BlockSpec("", "", (), 0, 1))[2]
 JOG = 24.0  # horizontal run of an arrow before it turns
 FEEDBACK_DROP = 34.0
+# Distance of a dot from its block: clear of the arrow heads into a summing junction.
+OUT_DOT = 10.0
+IN_DOT = 17.0
 
 
 class DiagramScene(QGraphicsScene):
@@ -79,7 +82,7 @@ class DiagramScene(QGraphicsScene):
             label_side = "below_centre"
         elif side == "in":
             rect = self._rects[block_id]
-            centre = QPointF(rect.left() - 13, rect.center().y())
+            centre = QPointF(rect.left() - IN_DOT, rect.center().y())
             label_side = "below"
         else:
             rect = self._rects[block_id]
@@ -92,7 +95,7 @@ class DiagramScene(QGraphicsScene):
                 centre = QPointF(rect.right(), rect.center().y() + index * DOT_STEP)
                 label_side = "right" if index else "above_right"
             else:
-                centre = QPointF(rect.right() + 13, rect.center().y())
+                centre = QPointF(rect.right() + OUT_DOT, rect.center().y())
                 # before the process junction the sensor arrives from above: label below
                 into_sum = any(
                     link.source == block_id and link.target == "sum_process"
