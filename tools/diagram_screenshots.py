@@ -5,7 +5,8 @@ Usage (from the repository root)::
     QT_QPA_PLATFORM=offscreen python tools/diagram_screenshots.py [OUTPUT_DIR]
 
 Writes PNG files to ``docs/screenshots/`` (or OUTPUT_DIR). The online pictures come from an
-emulated valve whose live measuring points feed the diagram's red dots.
+emulated valve whose live measuring points feed the diagram's red dots. Dialogs are pictured
+at the size they open with.
 """
 
 from __future__ import annotations
@@ -20,6 +21,7 @@ os.environ.setdefault("QT_QPA_PLATFORM", "offscreen")
 from PySide6.QtCore import QObject, Signal
 from PySide6.QtWidgets import QApplication, QWidget
 
+from prm9tool import i18n
 from prm9tool.access import AccessModel
 from prm9tool.catalogue import CATALOGUE, Access
 from prm9tool.device.emulator import EmulatedValve
@@ -28,6 +30,7 @@ from prm9tool.tuning import StepSimulator
 from prm9tool.undo import DocumentUndo
 from prm9tool.views.canopen_window import CanopenWindow
 from prm9tool.views.diagram import DiagramView
+from prm9tool.views.valve_selection import ValveSelectionDialog
 
 VARIANTS = {
     "diagram_e02.png": "PRM9-06.3Z11/30-24E02S02",
@@ -58,11 +61,12 @@ class _EmulatorLink(QObject):
         values = {mn: self.valve.read(*CATALOGUE[mn].key) for mn in mnemonics}
         self.operation_finished.emit(tag, values)
 
-    def write(self, mnemonic: str, raw: int | str) -> None:
-        self.valve.write(*CATALOGUE[mnemonic].key, raw)
-
     def store(self) -> None:
         self.valve.store()
+
+    def show_switches(self, doc: ParameterDocument) -> None:
+        """What the connection's live-value polling reads: the switch positions."""
+        doc.set_live({mn: self.valve.read(*CATALOGUE[mn].key) for mn in ("SWBAUD", "SWNODE")})
 
     def poll(self) -> None:
         self.signal_values_changed.emit({k: self.valve.signal(k) for k in self.watched})
@@ -94,8 +98,15 @@ def diagrams(out: Path, app: QApplication) -> None:
     valve.advance(0.7)
     link = _EmulatorLink(valve)
     view = _diagram(DIALOG_KEY, Access.EXPERT, link)
+    link.show_switches(view.document)
     link.poll()
     _save(view, out / "diagram_e04_ca_online.png", app)
+    i18n.set_language("de")
+    german = _diagram(DIALOG_KEY, Access.EXPERT, link)
+    link.show_switches(german.document)
+    link.poll()
+    _save(german, out / "diagram_e04_ca_online_german.png", app)
+    i18n.set_language("en")
 
 
 # Values that make the dialogs' curves worth looking at (a user's edits, not defaults).
@@ -118,26 +129,24 @@ def dialogs(out: Path, app: QApplication) -> None:
     view = _diagram(DIALOG_KEY, Access.EXPERT)
     view.document.set_values(DEMO, "screenshot values")
     for block_id in view.block_ids():
-        if block_id in ("supply", "canopen"):
+        if block_id in ("supply", "canopen", "valve"):  # the main window's windows
             continue
         dialog = view.open_block(block_id)
         assert dialog is not None
-        if block_id != "valve":  # the valve selection keeps its own size
-            dialog.resize(max(dialog.sizeHint().width(), 760), max(dialog.sizeHint().height(), 440))
         _settle(dialog, app)
         _save(dialog, out / f"diagram_dialog_{block_id}.png", app)
         dialog.close()
+    # the valve block opens the main window's Valve → Valve selection
+    _save(ValveSelectionDialog(view.document.type_key), out / "diagram_dialog_valve.png", app)
     e02 = _diagram(E02_KEY, Access.BASIC)
     ramps = ("RAMPSETPOSUP", "RAMPSETPOSDOWN", "RAMPSETNEGUP", "RAMPSETNEGDOWN")
     e02.document.set_values({**DEMO, **dict.fromkeys(ramps, 300)}, "screenshot values")
     for block_id in ("threshold", "ramps"):
         dialog = e02.open_block(block_id)
         assert dialog is not None
-        dialog.resize(760, 440)
         _save(dialog, out / f"diagram_dialog_{block_id}_e02_basic.png", app)
     locked = e02.open_block("position_controller")
     assert locked is not None
-    locked.resize(760, 560)
     _settle(locked, app)
     _save(locked, out / "diagram_dialog_position_controller_basic_locked.png", app)
 
@@ -163,11 +172,11 @@ def simulator_thread_wait(seconds: float) -> None:
 
 
 def canopen(out: Path, app: QApplication) -> None:
-    """The CANopen window of an emulated valve with its switches at 6 (500 kbit/s) and 0."""
+    """The CANopen window of an emulated valve with its switches at 6 (500 kbit/s) and 0
+    (node ID and bit rate by software: the switch's bit rate is struck through)."""
     valve = EmulatedValve(DIALOG_KEY, switches=(6, 0))
     doc = ParameterDocument(DIALOG_KEY)
     window = CanopenWindow(doc, _EmulatorLink(valve))
-    window.resize(900, 760)
     _save(window, out / "diagram_canopen_window.png", app)
 
 
