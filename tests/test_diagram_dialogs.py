@@ -348,6 +348,22 @@ def test_a_current_limit_above_curnorm_is_refused(qtbot, setup):
     assert "limit B" in [label for _v, _c, label in dialog.plot.axes.hlines]
 
 
+def test_a_refusal_in_a_block_dialog_speaks_the_program_language(qtbot, setup):
+    from prm9tool import i18n
+
+    s = setup(E02)
+    dialog = open_dialog(qtbot, s, "current_limit")
+    i18n.set_language("de")
+    try:
+        type_into(dialog.fields["LIMTB"], "3000")
+        assert dialog.error_label.text() == (
+            "LIMTB = 3000 mA liegt über dem Nennstrom der Spule CURNORM = 2600 mA"
+        )
+    finally:
+        i18n.set_language("en")
+    assert s.doc.value("LIMTB") == 2400
+
+
 def test_the_dither_sketch_follows_amplitude_and_frequency(qtbot, setup):
     s = setup(E02_A)
     dialog = open_dialog(qtbot, s, "dither")

@@ -40,6 +40,7 @@ from prm9tool.editing import apply_edit
 from prm9tool.errors import AccessDeniedError, ValueRangeError
 from prm9tool.i18n import current_language
 from prm9tool.sync import ValveSync
+from prm9tool.translate import error_text
 from prm9tool.views.canopen_tables import SwitchTables
 
 SETTINGS = ("NODEID", "BITRATE", "CANTERM")
@@ -257,7 +258,7 @@ class CanopenWindow(QDialog):
             else:
                 self._doc.set_value(mnemonic, raw)
         except (ValueRangeError, AccessDeniedError) as exc:
-            self.error_label.setText(str(exc))
+            self.error_label.setText(error_text(exc))
             self.refresh()
             return False
         self.error_label.clear()

@@ -18,6 +18,7 @@ from prm9tool.connection import ValveConnection
 from prm9tool.document import ParameterDocument, Raw
 from prm9tool.errors import TypeKeyError
 from prm9tool.sync import ValveSync
+from prm9tool.translate import error_text
 from prm9tool.typekey import TypeKey
 from prm9tool.undo import DocumentUndo
 from prm9tool.views import prompts
@@ -207,7 +208,7 @@ class ValveWorkflow(QObject):
             return TypeKey.parse(text)
         except TypeKeyError as exc:
             self._on_connection_failed(
-                self.tr("The valve reports an unknown type key: {0}").format(str(exc))
+                self.tr("The valve reports an unknown type key: {0}").format(error_text(exc))
             )
             self.go_offline()
             return None

@@ -29,6 +29,7 @@ from prm9tool.document import ParameterDocument, Raw
 from prm9tool.editing import apply_edit
 from prm9tool.errors import AccessDeniedError, ValueRangeError
 from prm9tool.i18n import text
+from prm9tool.translate import error_text
 from prm9tool.views.diagram.dialogs.fields import ChoiceField, ValueField
 
 Field = ValueField | ChoiceField
@@ -158,7 +159,7 @@ class BlockDialog(QDialog):
         try:
             apply_edit(self.doc, self.access, mnemonic, raw)
         except (ValueRangeError, AccessDeniedError) as exc:
-            self.show_error(str(exc))
+            self.show_error(error_text(exc))
             return False
         self.clear_error()
         return True
@@ -168,7 +169,7 @@ class BlockDialog(QDialog):
         try:
             self.check_values(values)
         except (ValueRangeError, AccessDeniedError) as exc:
-            self.show_error(str(exc))
+            self.show_error(error_text(exc))
             return False
         self.doc.set_values(values, label)
         self.clear_error()

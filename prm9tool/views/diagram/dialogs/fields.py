@@ -17,6 +17,7 @@ from prm9tool.catalogue import CATALOGUE, Parameter
 from prm9tool.document import ParameterDocument, Raw
 from prm9tool.errors import ValueRangeError
 from prm9tool.i18n import current_language
+from prm9tool.translate import error_text
 
 Apply = Callable[[str, Raw], bool]  # returns False (and shows the reason) when refused
 Report = Callable[[str], None]  # shows a refusal reason
@@ -84,7 +85,7 @@ class ValueField(QLineEdit):
             raw = self.param.parse_display(text)
         except ValueRangeError as exc:
             self.setStyleSheet(ERROR_STYLE)
-            self._report(str(exc))
+            self._report(error_text(exc))
             return
         if not self._apply(self.mnemonic, raw):
             self.setStyleSheet(ERROR_STYLE)

@@ -20,6 +20,7 @@ from PySide6.QtWidgets import (
 
 from prm9tool.catalogue import CATALOGUE
 from prm9tool.errors import ValueRangeError
+from prm9tool.translate import error_text
 from prm9tool.views.diagram.curves import FULL, clamp_point
 from prm9tool.views.diagram.dialogs.base import BlockContext, BlockDialog
 from prm9tool.views.diagram.dialogs.plot import BLUE, GREY, Axes, Curve, PlotWidget
@@ -227,7 +228,7 @@ class LinearizationDialog(BlockDialog):
         try:
             raw = CATALOGUE[name].parse_display(item.text())
         except ValueRangeError as exc:
-            self.show_error(str(exc))
+            self.show_error(error_text(exc))
             self.refresh_extra()
             return
         if not self.apply_value(name, raw):
