@@ -272,9 +272,9 @@ def _mismatch_text(step: str | None, mismatches: Mapping[str, tuple[object, obje
     more = f" (and {len(mismatches) - 5} more)" if len(mismatches) > 5 else ""
     if step == "write":
         return f"the valve refused a value, nothing was stored: {shown}"
-    return (
-        f"{len(mismatches)} parameter(s) read back differently, nothing was stored: {shown}{more}"
-    )
+    count = len(mismatches)
+    noun = "parameter" if count == 1 else "parameters"
+    return f"{count} {noun} read back differently, nothing was stored: {shown}{more}"
 
 
 def _type_problem(file_key: TypeKey, session: ValveSession, force: bool) -> str | None:

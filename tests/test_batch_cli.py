@@ -125,7 +125,9 @@ def test_verification_failure_exits_1(tmp_path):
         "failed",
         "verify",
     )
-    assert "read back differently, nothing was stored" in record["error"]
+    count = len(record["mismatches"])
+    noun = "parameter" if count == 1 else "parameters"
+    assert f"{count} {noun} read back differently, nothing was stored" in record["error"]
     assert "working parameters were reset to its stored ones" in record["error"]
     assert record["mismatches"]
 
