@@ -201,7 +201,7 @@ def test_cursors_read_values_and_differences(scope, conn):
     conn.samples_received.emit(ramp)
     scope._redraw()
     scope.stop()
-    scope.controls.cursors.setChecked(True)
+    scope.cursor_panel.show_cursors.setChecked(True)
     scope.plot.set_cursor_times(0.1, 0.5)
     cells = scope.cursor_panel.cells
     expected_a = 500 * 2 * 100 / 16384  # sample 500 at 0.1 s, in %
@@ -297,8 +297,13 @@ def test_each_channel_has_its_own_scale_and_same_units_can_share_one(scope, conn
     assert plot.y_range(0) == plot.y_range(1)  # both in %: one scale
     assert plot.y_range(0)[0] < -25 and plot.y_range(0)[1] > 50
     assert plot.y_range(2)[0] > 800  # mA on its own axis
-    scope.controls.same_scale.setChecked(False)
+    assert plot.shared_axes() == {1: 0}  # one axis for both, named for both
+    assert not plot.axes[1].isVisible() and plot.axes[2].isVisible()
+    assert "Spool position actual" in plot.axes[0].labelText
+    scope.channels.same_scale.setChecked(False)
     assert plot.y_range(1)[1] < 0  # position alone: around -25 %
+    assert plot.shared_axes() == {} and plot.axes[1].isVisible()
+    assert "Spool position actual" not in plot.axes[0].labelText
 
 
 def test_zooming_an_axis_by_hand_stops_its_autoscale_until_auto(scope, conn):
@@ -312,8 +317,52 @@ def test_zooming_an_axis_by_hand_stops_its_autoscale_until_auto(scope, conn):
     conn.samples_received.emit(np.full((100, 1), 16384))
     scope._redraw()
     assert not plot.is_autoscaled(0) and plot.y_range(0) == pytest.approx((-200, 200))
+    assert not plot.legend[0].autoscale.autoRaise()  # framed: it looks like a button
     plot.legend[0].autoscale.click()
     assert plot.is_autoscaled(0) and plot.y_range(0)[1] < 150
+
+
+def test_while_the_plot_holds_the_legend_marks_its_values_as_live(scope, conn):
+    scope.preselect("demand")
+    scope.start()
+    conn.samples_received.emit(np.full((100, 1), 8192))
+    scope._redraw()
+    value = scope.plot.legend[0].value
+    assert value.text() == "50 %"
+    scope.controls.pause.click()
+    conn.samples_received.emit(np.full((100, 1), 4096))
+    scope._redraw()
+    assert value.text() == "live: 25 %"  # newer than the held trace, and says so
+    scope.controls.pause.click()
+    conn.samples_received.emit(np.full((100, 1), 4096))
+    scope._redraw()
+    assert value.text() == "25 %"
+    scope.controls.pause.click()
+    conn.samples_received.emit(np.full((100, 1), 0))
+    scope._redraw()
+    assert value.text() == "live: 0 %"
+    scope.stop()  # the recording ended: the plot holds all of it, the legend its last values
+    assert value.text() == "0 %"
+    assert len(scope.display.data()[0]) == 400
+
+
+@pytest.mark.parametrize("language", ["en", "de", "cs"])
+@pytest.mark.parametrize("type_key", [E02, E04])
+def test_the_scope_fits_a_1024_by_768_screen(qtbot, conn, language, type_key):
+    """No scroll bars in the main window (pages up to 960 px wide are not put in a scroll
+    area) with three channels, in every language: up to 600 px high below the menu bar,
+    tool bar and status bar."""
+    i18n.set_language(language)
+    try:
+        widget = ScopeWidget(conn, ParameterDocument(type_key))
+        qtbot.addWidget(widget)
+        for key in ("setpoint_raw", "position_actual", "current_a"):
+            widget.preselect(key)
+        widget.show()
+        hint = widget.minimumSizeHint()
+    finally:
+        i18n.set_language("en")
+    assert hint.width() <= 960 and hint.height() <= 600
 
 
 def test_step_figures_can_be_limited_to_the_cursor_span(scope, conn):
@@ -330,7 +379,7 @@ def test_step_figures_can_be_limited_to_the_cursor_span(scope, conn):
     scope.stop()
     panel = scope.step_panel
     assert not panel.between_cursors.isEnabled()
-    scope.controls.cursors.setChecked(True)
+    scope.cursor_panel.show_cursors.setChecked(True)
     scope.plot.set_cursor_times(0.05, 0.28)
     panel.between_cursors.setChecked(True)
     assert panel.figures["rise"].text() == "21.97 ms"

@@ -68,12 +68,12 @@ def capture(app: QApplication, scope: ScopeWidget) -> None:
 
 def mark(scope: ScopeWidget) -> None:
     """Cursors on the step and the settling point; figures between them."""
-    c = scope.controls
-    c.cursors.setChecked(True)
+    scope.cursor_panel.show_cursors.setChecked(True)
     figures = scope.display.figures(*scope.plot.x_range())
     settle = figures.settling_time if figures is not None else 0.05
     scope.plot.set_cursor_times(0.0, settle)  # Δt reads the settling time
     scope.display.update_readouts()
+    scope.readouts.setCurrentWidget(scope.step_panel)
 
 
 def main() -> None:
@@ -86,7 +86,7 @@ def main() -> None:
         sys.exit("the emulated valve did not come online")
     time.sleep(1.5)  # let the valve finish booting before the generator drives it
     scope = ScopeWidget(conn, ParameterDocument(TYPE_KEY))
-    scope.resize(1500, 900)
+    scope.resize(1280, 760)
     scope.show()
     capture(app, scope)
     mark(scope)

@@ -234,6 +234,14 @@
             <source>At most three measuring points can be recorded at once. Switch one off before adding {0}.</source>
             <translation>Současně lze zaznamenávat nejvýše tři měřicí body. Před přidáním {0} jeden vypněte.</translation>
         </message>
+        <message>
+            <source>Autoscaled channels with the same unit share one scale and one axis</source>
+            <translation>Automaticky škálované kanály se stejnou jednotkou sdílejí jedno měřítko a jednu osu</translation>
+        </message>
+        <message>
+            <source>Same scale per unit</source>
+            <translation>Stejné měřítko pro jednotku</translation>
+        </message>
     </context>
     <context>
         <name>ControlPanel</name>
@@ -294,44 +302,36 @@
             <translation>Úroveň spouštění v jednotce spouštěcího kanálu</translation>
         </message>
         <message>
-            <source>Display and export</source>
-            <translation>Zobrazení a export</translation>
-        </message>
-        <message>
-            <source>Cursors A/B</source>
-            <translation>Kurzory A/B</translation>
-        </message>
-        <message>
-            <source>Same scale per unit</source>
-            <translation>Stejné měřítko pro jednotku</translation>
-        </message>
-        <message>
-            <source>Autoscaled channels with the same unit share one scale</source>
-            <translation>Automaticky škálované kanály se stejnou jednotkou sdílejí jedno měřítko</translation>
-        </message>
-        <message>
-            <source>Export CSV</source>
-            <translation>Export CSV</translation>
-        </message>
-        <message>
-            <source>Visible window…</source>
-            <translation>Viditelné okno…</translation>
-        </message>
-        <message>
-            <source>Whole recording…</source>
-            <translation>Celý záznam…</translation>
-        </message>
-        <message>
-            <source>Export PNG…</source>
-            <translation>Export PNG…</translation>
-        </message>
-        <message>
             <source>Resume</source>
             <translation>Pokračovat</translation>
         </message>
         <message>
             <source>Pause</source>
             <translation>Pozastavit</translation>
+        </message>
+        <message>
+            <source>CSV of the visible window…</source>
+            <translation>CSV viditelného okna…</translation>
+        </message>
+        <message>
+            <source>CSV of the whole recording…</source>
+            <translation>CSV celého záznamu…</translation>
+        </message>
+        <message>
+            <source>Export</source>
+            <translation>Export</translation>
+        </message>
+        <message>
+            <source>Level</source>
+            <translation>Úroveň</translation>
+        </message>
+        <message>
+            <source>PNG image of the plot…</source>
+            <translation>Obrázek PNG grafu…</translation>
+        </message>
+        <message>
+            <source>Trigger channel</source>
+            <translation>Spouštěcí kanál</translation>
         </message>
     </context>
     <context>
@@ -405,6 +405,10 @@
         <message>
             <source>Δt = {0}    1/Δt = {1}</source>
             <translation>Δt = {0}    1/Δt = {1}</translation>
+        </message>
+        <message>
+            <source>Cursors A/B</source>
+            <translation>Kurzory A/B</translation>
         </message>
     </context>
     <context>
@@ -762,10 +766,6 @@
     <context>
         <name>GeneratorPanel</name>
         <message>
-            <source>Setpoint generator</source>
-            <translation>Generátor žádané hodnoty</translation>
-        </message>
-        <message>
             <source>Step</source>
             <translation>Skok</translation>
         </message>
@@ -804,6 +804,14 @@
         <message>
             <source>Start generator</source>
             <translation>Spustit generátor</translation>
+        </message>
+        <message>
+            <source>Generator</source>
+            <translation>Generátor</translation>
+        </message>
+        <message>
+            <source>Setpoint generator: drives the valve's setpoint for tuning (manual §8.7.2)</source>
+            <translation>Generátor žádané hodnoty: zadává žádanou hodnotu ventilu pro ladění regulátorů (návod §8.7.2)</translation>
         </message>
     </context>
     <context>
@@ -1657,6 +1665,14 @@
         <message>
             <source>Time [s]</source>
             <translation>Čas [s]</translation>
+        </message>
+        <message>
+            <source>The valve's newest value. The plot holds an earlier recording; read it with the cursors.</source>
+            <translation>Nejnovější hodnota ventilu. Graf drží dřívější záznam; odečtěte jej kurzory.</translation>
+        </message>
+        <message>
+            <source>live:</source>
+            <translation>živě:</translation>
         </message>
     </context>
     <context>

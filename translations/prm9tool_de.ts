@@ -234,6 +234,14 @@
             <source>At most three measuring points can be recorded at once. Switch one off before adding {0}.</source>
             <translation>Höchstens drei Messpunkte können gleichzeitig aufgezeichnet werden. Schalten Sie einen ab, bevor Sie {0} hinzufügen.</translation>
         </message>
+        <message>
+            <source>Autoscaled channels with the same unit share one scale and one axis</source>
+            <translation>Automatisch skalierte Kanäle mit gleicher Einheit teilen eine Skala und eine Achse</translation>
+        </message>
+        <message>
+            <source>Same scale per unit</source>
+            <translation>Gleiche Skala je Einheit</translation>
+        </message>
     </context>
     <context>
         <name>ControlPanel</name>
@@ -294,44 +302,36 @@
             <translation>Triggerpegel in der Einheit des Triggerkanals</translation>
         </message>
         <message>
-            <source>Display and export</source>
-            <translation>Anzeige und Export</translation>
-        </message>
-        <message>
-            <source>Cursors A/B</source>
-            <translation>Cursor A/B</translation>
-        </message>
-        <message>
-            <source>Same scale per unit</source>
-            <translation>Gleiche Skala je Einheit</translation>
-        </message>
-        <message>
-            <source>Autoscaled channels with the same unit share one scale</source>
-            <translation>Automatisch skalierte Kanäle mit gleicher Einheit teilen eine Skala</translation>
-        </message>
-        <message>
-            <source>Export CSV</source>
-            <translation>CSV exportieren</translation>
-        </message>
-        <message>
-            <source>Visible window…</source>
-            <translation>Sichtbares Fenster…</translation>
-        </message>
-        <message>
-            <source>Whole recording…</source>
-            <translation>Gesamte Aufzeichnung…</translation>
-        </message>
-        <message>
-            <source>Export PNG…</source>
-            <translation>PNG exportieren…</translation>
-        </message>
-        <message>
             <source>Resume</source>
             <translation>Fortsetzen</translation>
         </message>
         <message>
             <source>Pause</source>
             <translation>Pause</translation>
+        </message>
+        <message>
+            <source>CSV of the visible window…</source>
+            <translation>CSV des sichtbaren Fensters…</translation>
+        </message>
+        <message>
+            <source>CSV of the whole recording…</source>
+            <translation>CSV der gesamten Aufzeichnung…</translation>
+        </message>
+        <message>
+            <source>Export</source>
+            <translation>Export</translation>
+        </message>
+        <message>
+            <source>Level</source>
+            <translation>Pegel</translation>
+        </message>
+        <message>
+            <source>PNG image of the plot…</source>
+            <translation>PNG-Bild des Diagramms…</translation>
+        </message>
+        <message>
+            <source>Trigger channel</source>
+            <translation>Triggerkanal</translation>
         </message>
     </context>
     <context>
@@ -405,6 +405,10 @@
         <message>
             <source>Δt = {0}    1/Δt = {1}</source>
             <translation>Δt = {0}    1/Δt = {1}</translation>
+        </message>
+        <message>
+            <source>Cursors A/B</source>
+            <translation>Cursor A/B</translation>
         </message>
     </context>
     <context>
@@ -760,10 +764,6 @@
     <context>
         <name>GeneratorPanel</name>
         <message>
-            <source>Setpoint generator</source>
-            <translation>Sollwertgenerator</translation>
-        </message>
-        <message>
             <source>Step</source>
             <translation>Sprung</translation>
         </message>
@@ -802,6 +802,14 @@
         <message>
             <source>Start generator</source>
             <translation>Generator starten</translation>
+        </message>
+        <message>
+            <source>Generator</source>
+            <translation>Generator</translation>
+        </message>
+        <message>
+            <source>Setpoint generator: drives the valve's setpoint for tuning (manual §8.7.2)</source>
+            <translation>Sollwertgenerator: gibt den Sollwert des Ventils zum Einstellen der Regler vor (Handbuch §8.7.2)</translation>
         </message>
     </context>
     <context>
@@ -1653,6 +1661,14 @@
         <message>
             <source>Time [s]</source>
             <translation>Zeit [s]</translation>
+        </message>
+        <message>
+            <source>The valve's newest value. The plot holds an earlier recording; read it with the cursors.</source>
+            <translation>Der neueste Wert des Ventils. Das Diagramm hält eine frühere Aufzeichnung; lesen Sie sie mit den Cursorn ab.</translation>
+        </message>
+        <message>
+            <source>live:</source>
+            <translation>live:</translation>
         </message>
     </context>
     <context>

@@ -1,5 +1,9 @@
 """The oscilloscope (manual §8.7.2, figure 8-20): plot, measuring points on the right, controls below.
 
+Layout for a 1024 × 768 screen: the plot with its legend; on the right the measuring points
+and a tab each for the cursor read-out and the step-response figures; below, one row each for
+recording, trigger and the setpoint generator (always visible, so is its Stop), and the status.
+
 Data path: ``connection.start_stream(keys, rate)`` → ``connection.samples_received`` (raw numpy
 blocks, queued from the connection's worker thread) → :class:`prm9tool.scope.Capture` ring
 buffer. A QTimer redraws at ~30 Hz: the trigger engine picks the frame, the plot draws a view of
@@ -16,7 +20,14 @@ from pathlib import Path
 import numpy as np
 from PySide6.QtCore import QEvent, Qt, QTimer
 from PySide6.QtGui import QCloseEvent, QHideEvent, QImageWriter, QShowEvent
-from PySide6.QtWidgets import QFileDialog, QGridLayout, QLabel, QVBoxLayout, QWidget
+from PySide6.QtWidgets import (
+    QFileDialog,
+    QGridLayout,
+    QLabel,
+    QTabWidget,
+    QVBoxLayout,
+    QWidget,
+)
 
 from prm9tool.connection_protocol import ScopeConnection
 from prm9tool.document import ParameterDocument
@@ -59,28 +70,41 @@ class ScopeWidget(QWidget):
         self.channels = ChannelPanel()
         self.cursor_panel = CursorPanel()
         self.step_panel = StepPanel()
+        self.readouts = QTabWidget()
+        for panel in (self.cursor_panel, self.step_panel):
+            self.readouts.addTab(panel, panel.windowTitle())
         self.controls = ControlPanel()
         self.generator_panel = GeneratorPanel()
         self.display = ScopeDisplay(self.plot, self.cursor_panel, self.step_panel, self)
         self.status = QLabel()
         self.status.setTextInteractionFlags(Qt.TextInteractionFlag.TextSelectableByMouse)
+        self.status.setWordWrap(True)
+        self.status.setMinimumWidth(1)  # a long message wraps instead of widening the window
         self._timer = QTimer(self)
         self._timer.setInterval(REDRAW_MS)
         self._timer.timeout.connect(self._redraw)
         right = QVBoxLayout()
         right.addWidget(self.channels, 1)
-        right.addWidget(self.cursor_panel)
-        right.addWidget(self.step_panel)
+        right.addWidget(self.readouts)
         grid = QGridLayout(self)
         grid.addWidget(self.plot, 0, 0)
         grid.addLayout(right, 0, 1)
-        bottom = QVBoxLayout()
-        bottom.addWidget(self.controls)
-        bottom.addWidget(self.status)
-        grid.addLayout(bottom, 1, 0)
-        grid.addWidget(self.generator_panel, 1, 1)
+        for row, widget in enumerate((self.controls, self.generator_panel, self.status), 1):
+            grid.addWidget(widget, row, 0, 1, 2)
         grid.setColumnStretch(0, 1)
         grid.setRowStretch(0, 1)
+        self._align_sections()
+
+    def _align_sections(self) -> None:
+        """The row names under the plot (Recording, Trigger, Setpoint generator) in one column."""
+        labels = (
+            self.controls.recording_label,
+            self.controls.trigger_label,
+            self.generator_panel.title,
+        )
+        width = max(label.sizeHint().width() for label in labels)
+        for label in labels:
+            label.setMinimumWidth(width)
 
     def _connect(self) -> None:
         conn = self._connection
@@ -91,6 +115,7 @@ class ScopeWidget(QWidget):
         conn.failed.connect(self._on_failed)
         self._document.type_key_changed.connect(self._on_type_key_changed)
         self.channels.selection_changed.connect(self._on_selection_changed)
+        self.channels.same_scale_toggled.connect(self.plot.set_same_scale)
         c = self.controls
         c.start_requested.connect(self.start)
         c.stop_requested.connect(self.stop)
@@ -98,11 +123,10 @@ class ScopeWidget(QWidget):
         c.rate_changed.connect(self._on_rate_changed)
         c.window_changed.connect(self._on_window_changed)
         c.trigger_changed.connect(self._on_trigger_changed)
-        c.cursors_toggled.connect(self.plot.set_cursors_visible)
-        c.same_scale_toggled.connect(self.plot.set_same_scale)
         c.csv_requested.connect(self._on_csv_requested)
         c.png_requested.connect(self._on_png_requested)
         self.display.held.connect(self._on_display_held)
+        self.cursor_panel.cursors_toggled.connect(self.plot.set_cursors_visible)
         self.generator_panel.start_requested.connect(self._on_generator_start_requested)
         self.generator_panel.stop_requested.connect(self.generator.stop)
         self.generator.running_changed.connect(self.generator_panel.set_running)
@@ -149,7 +173,7 @@ class ScopeWidget(QWidget):
             self._accepting = False
             if self._connection.is_online:
                 self._connection.stop_stream()
-            self.display.freeze()
+            self.display.hold_all()
         self._timer.stop()
         self._update_controls()
 
@@ -253,7 +277,7 @@ class ScopeWidget(QWidget):
         if self._running:
             self._running = False
             self._accepting = False
-            self.display.freeze()
+            self.display.hold_all()
             self._timer.stop()
         self._update_controls()
 
@@ -396,6 +420,9 @@ class ScopeWidget(QWidget):
                 panel.retranslate()
             self.step_panel.retranslate()
             self.generator_panel.retranslate()
+            for tab, panel in enumerate((self.cursor_panel, self.step_panel)):
+                self.readouts.setTabText(tab, panel.windowTitle())
+            self._align_sections()
             signals = [BY_KEY[k] for k in self.channels.selected()]  # catalogue texts
             self.plot.relabel(signals)
             self.controls.set_channels(signals)

@@ -50,6 +50,7 @@ class ScopeDisplay(QObject):
         self._drawn_total = -1
         self._redraws = 0
         self._legend_ticks = 0
+        self._legend_held = False  # the legend marks its values as newer than the plot
         self.redraw_durations: deque[float] = deque(maxlen=100_000)  # seconds, for benchmarks
         plot.cursors_moved.connect(self.update_readouts)
         plot.x_range_changed.connect(self.update_readouts)
@@ -90,7 +91,7 @@ class ScopeDisplay(QObject):
         if capture is None or capture.buffer.total == self._drawn_total:
             return False
         if self._frozen is not None:
-            self._show_latest(capture)  # the legend stays live while the display holds
+            self._show_latest(capture)  # the legend stays live (marked so) while the plot holds
             return False
         started = time.perf_counter()
         self._drawn_total = capture.buffer.total
@@ -118,12 +119,16 @@ class ScopeDisplay(QObject):
         )
         self._show_latest(capture)
 
-    def _show_latest(self, capture: Capture) -> None:
+    def _show_latest(self, capture: Capture, force: bool = False) -> None:
+        """The newest values in the legend, ~8 Hz (readable, no relayout every frame); at
+        once when they become, or stop being, newer than a held trace."""
+        held = self._frozen is not None and not force
         self._legend_ticks += 1
-        if self._legend_ticks % 4 == 1:  # ~8 Hz: readable, and no relayout every frame
+        if force or held != self._legend_held or self._legend_ticks % 4 == 1:
             _, latest = capture.buffer.latest(1)
             if len(latest):
-                self.plot.show_latest(latest[0])
+                self.plot.show_latest(latest[0], held)
+                self._legend_held = held
 
     # --- hold ------------------------------------------------------------------------------------
     def freeze(self) -> None:
@@ -135,6 +140,15 @@ class ScopeDisplay(QObject):
         self.plot.show_all(*self._frozen)
         self.plot.set_time_interactive(True)
         self.update_readouts()
+
+    def hold_all(self) -> None:
+        """Hold everything recorded (the recording ended): also what arrived after a pause;
+        the legend then shows the last recorded values."""
+        if self.capture is None:
+            return
+        self._frozen = None
+        self.freeze()
+        self._show_latest(self.capture, force=True)
 
     def thaw(self) -> None:
         """Follow the stream again (a completed single capture re-arms)."""

@@ -15,18 +15,11 @@ from __future__ import annotations
 import time
 
 from PySide6.QtCore import QObject, QTimer, Signal
-from PySide6.QtWidgets import (
-    QComboBox,
-    QDoubleSpinBox,
-    QGridLayout,
-    QGroupBox,
-    QLabel,
-    QPushButton,
-    QWidget,
-)
+from PySide6.QtWidgets import QComboBox, QDoubleSpinBox, QLabel, QPushButton, QWidget
 
 from prm9tool.connection_protocol import ScopeConnection
 from prm9tool.scope import GeneratorSettings, Waveform, setpoint_limits
+from prm9tool.views.scope_panels import SPACE, control_row, section_label
 
 TICK_MS = 40  # setpoint update period (25 Hz)
 KEEPALIVE_S = 0.1  # rewrite an unchanged setpoint this often
@@ -129,8 +122,8 @@ class SetpointGenerator(QObject):
             self._switch_off()
 
 
-class GeneratorPanel(QGroupBox):
-    """Waveform, amplitude, offset and period, and a Start/Stop button."""
+class GeneratorPanel(QWidget):
+    """Waveform, amplitude, offset and period, and a Start/Stop button, in one row."""
 
     start_requested = Signal(object)  # GeneratorSettings
     stop_requested = Signal()
@@ -155,18 +148,23 @@ class GeneratorPanel(QGroupBox):
         self.button = QPushButton()
         self.button.setCheckable(True)
         self.button.clicked.connect(self._on_button_clicked)
-        grid = QGridLayout(self)
+        self.title = section_label()
         self.labels = [QLabel() for _ in range(4)]
-        fields = (self.waveform, self.period, self.amplitude, self.offset)
-        for n, (label, field) in enumerate(zip(self.labels, fields, strict=True)):
-            grid.addWidget(label, n // 2, 2 * (n % 2))
-            grid.addWidget(field, n // 2, 2 * (n % 2) + 1)
-        grid.addWidget(self.button, 2, 0, 1, 4)
+        fields = (self.waveform, self.amplitude, self.offset, self.period)
+        widgets: list[QWidget | None] = []
+        for label, field in zip(self.labels, fields, strict=True):
+            widgets += [label, field, SPACE]
+        layout = control_row(self.title, [*widgets, self.button])
+        layout.setContentsMargins(0, 0, 0, 0)
+        self.setLayout(layout)
         self.retranslate()
 
     def retranslate(self) -> None:
         """Re-read user-visible texts (after a language change)."""
-        self.setTitle(self.tr("Setpoint generator"))
+        self.title.setText(self.tr("Generator"))
+        self.title.setToolTip(
+            self.tr("Setpoint generator: drives the valve's setpoint for tuning (manual §8.7.2)")
+        )
         names = {
             Waveform.STEP: self.tr("Step"),
             Waveform.SQUARE: self.tr("Square"),
@@ -174,7 +172,7 @@ class GeneratorPanel(QGroupBox):
         }
         for row in range(self.waveform.count()):
             self.waveform.setItemText(row, names[Waveform(self.waveform.itemData(row))])
-        labels = (self.tr("Waveform"), self.tr("Period"), self.tr("Amplitude"), self.tr("Offset"))
+        labels = (self.tr("Waveform"), self.tr("Amplitude"), self.tr("Offset"), self.tr("Period"))
         for label, label_text in zip(self.labels, labels, strict=True):
             label.setText(label_text)
         self.amplitude.setToolTip(

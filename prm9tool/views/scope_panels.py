@@ -1,15 +1,14 @@
-"""The oscilloscope's measuring-point panel (right) and control panel (bottom), figure 8-20."""
+"""The oscilloscope's measuring-point panel (right) and control rows (bottom), figure 8-20."""
 
 from __future__ import annotations
 
 from collections.abc import Sequence
 
-from PySide6.QtCore import Qt, Signal
+from PySide6.QtCore import QSize, Qt, Signal
 from PySide6.QtWidgets import (
     QCheckBox,
     QComboBox,
     QDoubleSpinBox,
-    QGridLayout,
     QGroupBox,
     QHBoxLayout,
     QLabel,
@@ -28,22 +27,98 @@ from prm9tool.signals import MAX_CHANNELS
 from prm9tool.signals import Signal as MeasuringPoint
 
 KEY_ROLE = Qt.ItemDataRole.UserRole
+MIN_LIST_WIDTH = 230  # px: the measuring-point list in a 1024-pixel window
+MAX_LIST_WIDTH = 340  # px: wider names are elided rather than the legend's in a 1024-px window
+SPACE = None  # a gap between groups of controls in a row
+
+
+class ShrinkingCombo(QComboBox):
+    """A combo box as wide as its longest item when there is room, down to ``minimum``
+    characters in a small window (a long item is elided there; its tooltip says it all)."""
+
+    def __init__(self, minimum: int) -> None:
+        super().__init__()
+        self.setSizeAdjustPolicy(QComboBox.SizeAdjustPolicy.AdjustToMinimumContentsLengthWithIcon)
+        self.setMinimumContentsLength(minimum)
+
+    def sizeHint(self) -> QSize:
+        """Wide enough for the longest item."""
+        hint = super().sizeHint()
+        metrics = self.fontMetrics()
+        widest = max(
+            (metrics.horizontalAdvance(self.itemText(i)) for i in range(self.count())), default=0
+        )
+        short = metrics.horizontalAdvance("x") * self.minimumContentsLength()
+        return QSize(hint.width() + max(0, widest - short), hint.height())
+
+
+def section_label() -> QLabel:
+    """A bold label naming a row of controls (Recording, Trigger, Setpoint generator)."""
+    label = QLabel()
+    font = label.font()
+    font.setBold(True)
+    label.setFont(font)
+    return label
+
+
+def control_row(
+    label: QLabel, widgets: Sequence[QWidget | None], end: QWidget | None = None
+) -> QHBoxLayout:
+    """``label`` and ``widgets`` in a row (None: a gap), ``end`` at the right edge."""
+    row = QHBoxLayout()
+    row.addWidget(label)
+    for widget in widgets:
+        if widget is None:
+            row.addSpacing(12)
+        else:
+            row.addWidget(widget)
+    row.addStretch(1)
+    if end is not None:
+        row.addWidget(end)
+    return row
+
+
+class _PointList(QListWidget):
+    """The measuring points: as wide as the longest name (within limits), narrower (the names
+    elided, full in the tooltip) in a small window."""
+
+    def __init__(self) -> None:
+        super().__init__()
+        self.setHorizontalScrollBarPolicy(Qt.ScrollBarPolicy.ScrollBarAlwaysOff)
+        self.setTextElideMode(Qt.TextElideMode.ElideRight)
+
+    def sizeHint(self) -> QSize:
+        """The width of the longest name and a scroll bar, up to MAX_LIST_WIDTH."""
+        scroll_bar = self.verticalScrollBar().sizeHint().width()
+        wanted = self.sizeHintForColumn(0) + 2 * self.frameWidth() + scroll_bar + 4
+        width = min(max(wanted, MIN_LIST_WIDTH), MAX_LIST_WIDTH)
+        return QSize(width, super().sizeHint().height())
+
+    def minimumSizeHint(self) -> QSize:
+        """Narrow enough for a 1024-pixel window."""
+        return QSize(MIN_LIST_WIDTH, super().minimumSizeHint().height())
 
 
 class ChannelPanel(QGroupBox):
     """Every measuring point of the variant as a check box; at most three are active."""
 
     selection_changed = Signal(list)  # keys, in channel order
+    same_scale_toggled = Signal(bool)
 
     def __init__(self, parent: QWidget | None = None) -> None:
         super().__init__(parent)
-        self.list = QListWidget()
+        self.list = _PointList()
         self.message = QLabel()
         self.message.setWordWrap(True)
         self.message.setStyleSheet("color: #c01c28")
+        self.message.hide()
+        self.same_scale = QCheckBox()
+        self.same_scale.setChecked(True)
+        self.same_scale.toggled.connect(self.same_scale_toggled)
         layout = QVBoxLayout(self)
         layout.addWidget(self.list, 1)
         layout.addWidget(self.message)
+        layout.addWidget(self.same_scale)
         self._selected: list[str] = []
         self._signals: list[MeasuringPoint] = []
         self.list.itemChanged.connect(self._on_item_changed)
@@ -52,6 +127,10 @@ class ChannelPanel(QGroupBox):
     def retranslate(self) -> None:
         """Re-read user-visible texts (after a language change)."""
         self.setTitle(self.tr("Measuring points"))
+        self.same_scale.setText(self.tr("Same scale per unit"))
+        self.same_scale.setToolTip(
+            self.tr("Autoscaled channels with the same unit share one scale and one axis")
+        )
         self.set_signals(self._signals)
 
     def set_signals(self, signals: Sequence[MeasuringPoint]) -> None:
@@ -63,11 +142,12 @@ class ChannelPanel(QGroupBox):
         self.list.clear()
         for signal in signals:
             item = QListWidgetItem(f"{text(signal.text)} [{signal.unit}]")
+            item.setToolTip(item.text())
             item.setData(KEY_ROLE, signal.key)
             item.setFlags(item.flags() | Qt.ItemFlag.ItemIsUserCheckable)
             self.list.addItem(item)
         self.list.blockSignals(False)
-        self.list.setMinimumWidth(self.list.sizeHintForColumn(0) + 24)
+        self.list.updateGeometry()  # its size hint follows the longest name
         self._show_selection()
 
     def selected(self) -> list[str]:
@@ -85,9 +165,9 @@ class ChannelPanel(QGroupBox):
         """Activate ``key`` (from the diagram); with three active it replaces the third."""
         if key in self._selected or key not in [s.key for s in self._signals]:
             return
-        self.message.clear()
+        self._say("")
         if len(self._selected) >= MAX_CHANNELS:
-            self.message.setText(
+            self._say(
                 self.tr("At most three measuring points: {0} replaces {1}.").format(
                     self._name(key), self._name(self._selected[-1])
                 )
@@ -95,16 +175,20 @@ class ChannelPanel(QGroupBox):
             self._selected = self._selected[:-1]
         self.set_selected([*self._selected, key])
 
+    def _say(self, message: str) -> None:
+        self.message.setText(message)
+        self.message.setVisible(bool(message))  # no gap above the check box when empty
+
     def _name(self, key: str) -> str:
         return next(text(s.text) for s in self._signals if s.key == key)
 
     def _on_item_changed(self, item: QListWidgetItem) -> None:
         key = item.data(KEY_ROLE)
         checked = item.checkState() == Qt.CheckState.Checked
-        self.message.clear()
+        self._say("")
         if checked and key not in self._selected:
             if len(self._selected) >= MAX_CHANNELS:
-                self.message.setText(
+                self._say(
                     self.tr(
                         "At most three measuring points can be recorded at once. "
                         "Switch one off before adding {0}."
@@ -129,7 +213,7 @@ class ChannelPanel(QGroupBox):
 
 
 class ControlPanel(QWidget):
-    """Recording, trigger, cursor and export controls."""
+    """Recording, trigger and export controls, in two rows under the plot."""
 
     start_requested = Signal()
     stop_requested = Signal()
@@ -137,8 +221,6 @@ class ControlPanel(QWidget):
     rate_changed = Signal(int)
     window_changed = Signal(float)
     trigger_changed = Signal(object)  # TriggerSettings
-    cursors_toggled = Signal(bool)
-    same_scale_toggled = Signal(bool)
     csv_requested = Signal(bool)  # True: the whole recording, False: the visible window
     png_requested = Signal()
 
@@ -153,26 +235,23 @@ class ControlPanel(QWidget):
         self.time_window.setCurrentIndex(WINDOWS_S.index(1.0))
         self.start, self.stop, self.pause = QPushButton(), QPushButton(), QPushButton()
         self.pause.setCheckable(True)
-        self.mode, self.channel, self.edge = QComboBox(), QComboBox(), QComboBox()
-        self.channel.setSizeAdjustPolicy(QComboBox.SizeAdjustPolicy.AdjustToContents)
+        self.mode, self.channel, self.edge = QComboBox(), ShrinkingCombo(12), QComboBox()
         for mode in TriggerMode:
             self.mode.addItem("", mode)
         for edge in Edge:
             self.edge.addItem("", edge)
         self.level, self.pre = QDoubleSpinBox(), QDoubleSpinBox()
-        self.level.setRange(-1e6, 1e6)
+        self.level.setRange(-99999.99, 99999.99)  # wider than any measuring point
         self.level.setDecimals(2)
         self.level.setKeyboardTracking(False)
         self.pre.setRange(0, 100)
         self.pre.setDecimals(0)
         self.pre.setSuffix(" %")
         self.pre.setValue(20)
-        self.cursors, self.same_scale = QCheckBox(), QCheckBox()
-        self.same_scale.setChecked(True)
-        self.csv, self.png = QToolButton(), QPushButton()
-        self.csv.setPopupMode(QToolButton.ToolButtonPopupMode.InstantPopup)
-        self.csv.setToolButtonStyle(Qt.ToolButtonStyle.ToolButtonTextOnly)
-        self.csv.setMenu(QMenu(self.csv))
+        self.export = QToolButton()
+        self.export.setPopupMode(QToolButton.ToolButtonPopupMode.InstantPopup)
+        self.export.setToolButtonStyle(Qt.ToolButtonStyle.ToolButtonTextOnly)
+        self.export.setMenu(QMenu(self.export))
         self._units: list[str] = []
         self._build_layout()
         self._connect()
@@ -180,35 +259,17 @@ class ControlPanel(QWidget):
         self.set_running(False)
 
     def _build_layout(self) -> None:
-        self.recording = QGroupBox()
-        grid = QGridLayout(self.recording)
+        self.recording_label, self.trigger_label = section_label(), section_label()
         self.rate_label, self.time_window_label = QLabel(), QLabel()
-        grid.addWidget(self.rate_label, 0, 0)
-        grid.addWidget(self.rate, 0, 1)
-        grid.addWidget(self.time_window_label, 1, 0)
-        grid.addWidget(self.time_window, 1, 1)
-        grid.addWidget(self.start, 0, 2)
-        grid.addWidget(self.stop, 1, 2)
-        grid.addWidget(self.pause, 0, 3)
-        self.trigger = QGroupBox()
-        grid = QGridLayout(self.trigger)
-        grid.addWidget(self.mode, 0, 0)
-        grid.addWidget(self.edge, 1, 0)
-        grid.addWidget(self.channel, 0, 1)
-        grid.addWidget(self.level, 1, 1)
-        self.pre_label = QLabel()
-        grid.addWidget(self.pre_label, 0, 2)
-        grid.addWidget(self.pre, 1, 2)
-        self.tools = QGroupBox()
-        grid = QGridLayout(self.tools)
-        grid.addWidget(self.cursors, 0, 0)
-        grid.addWidget(self.same_scale, 0, 1)
-        grid.addWidget(self.csv, 1, 0)
-        grid.addWidget(self.png, 1, 1)
-        layout = QHBoxLayout(self)
+        self.level_label, self.pre_label = QLabel(), QLabel()
+        recording = (self.start, self.stop, self.pause, SPACE, self.rate_label, self.rate)
+        recording += (SPACE, self.time_window_label, self.time_window)
+        trigger = (self.mode, self.channel, self.edge, SPACE, self.level_label, self.level)
+        trigger += (SPACE, self.pre_label, self.pre)
+        layout = QVBoxLayout(self)
         layout.setContentsMargins(0, 0, 0, 0)
-        for box in (self.recording, self.trigger, self.tools):
-            layout.addWidget(box)
+        layout.addLayout(control_row(self.recording_label, recording, self.export))
+        layout.addLayout(control_row(self.trigger_label, trigger))
 
     def _connect(self) -> None:
         self.start.clicked.connect(self.start_requested)
@@ -222,19 +283,16 @@ class ControlPanel(QWidget):
             combo.currentIndexChanged.connect(self._on_trigger_edited)
         self.level.valueChanged.connect(self._on_trigger_edited)
         self.pre.valueChanged.connect(self._on_trigger_edited)
-        self.cursors.toggled.connect(self.cursors_toggled)
-        self.same_scale.toggled.connect(self.same_scale_toggled)
-        self.png.clicked.connect(self.png_requested)
 
     def retranslate(self) -> None:
         """Re-read user-visible texts (after a language change)."""
-        self.recording.setTitle(self.tr("Recording"))
+        self.recording_label.setText(self.tr("Recording"))
         self.rate_label.setText(self.tr("Interval"))
         self.time_window_label.setText(self.tr("Time window"))
         self.start.setText(self.tr("Start"))
         self.stop.setText(self.tr("Stop"))
         self._on_pause_label()
-        self.trigger.setTitle(self.tr("Trigger"))
+        self.trigger_label.setText(self.tr("Trigger"))
         names = {
             TriggerMode.ROLL: self.tr("Roll (no trigger)"),
             TriggerMode.AUTO: self.tr("Auto"),
@@ -246,20 +304,20 @@ class ControlPanel(QWidget):
         for combo in (self.mode, self.edge):
             for row in range(combo.count()):
                 combo.setItemText(row, names[combo.itemData(row)])  # StrEnum == its str
+        self.channel.setToolTip(self.tr("Trigger channel"))
+        self.level_label.setText(self.tr("Level"))
         self.pre_label.setText(self.tr("Pre-trigger"))
         self.level.setToolTip(self.tr("Trigger level in the trigger channel's unit"))
-        self.tools.setTitle(self.tr("Display and export"))
-        self.cursors.setText(self.tr("Cursors A/B"))
-        self.same_scale.setText(self.tr("Same scale per unit"))
-        self.same_scale.setToolTip(
-            self.tr("Autoscaled channels with the same unit share one scale")
-        )
-        self.csv.setText(self.tr("Export CSV"))
-        menu = self.csv.menu()
+        self.export.setText(self.tr("Export"))
+        menu = self.export.menu()
         menu.clear()
-        menu.addAction(self.tr("Visible window…"), lambda: self.csv_requested.emit(False))
-        menu.addAction(self.tr("Whole recording…"), lambda: self.csv_requested.emit(True))
-        self.png.setText(self.tr("Export PNG…"))
+        menu.addAction(
+            self.tr("CSV of the visible window…"), lambda: self.csv_requested.emit(False)
+        )
+        menu.addAction(
+            self.tr("CSV of the whole recording…"), lambda: self.csv_requested.emit(True)
+        )
+        menu.addAction(self.tr("PNG image of the plot…"), self.png_requested.emit)
 
     def _on_pause_toggled(self, paused: bool) -> None:
         self._on_pause_label()
@@ -300,7 +358,9 @@ class ControlPanel(QWidget):
         self.channel.clear()
         for slot, signal in enumerate(signals):
             self.channel.addItem(f"{slot + 1}: {text(signal.text)}")
+            self.channel.setItemData(slot, text(signal.text), Qt.ItemDataRole.ToolTipRole)
         self.channel.setCurrentIndex(min(max(row, 0), len(signals) - 1))
+        self.channel.updateGeometry()  # its size hint follows the longest name
         self.channel.blockSignals(False)
         self._on_trigger_edited()
 

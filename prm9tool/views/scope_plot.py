@@ -17,9 +17,16 @@ from collections.abc import Sequence
 
 import numpy as np
 import pyqtgraph as pg
-from PySide6.QtCore import Qt, Signal
-from PySide6.QtGui import QFontMetrics, QImage
-from PySide6.QtWidgets import QHBoxLayout, QLabel, QToolButton, QVBoxLayout, QWidget
+from PySide6.QtCore import QSize, Qt, Signal
+from PySide6.QtGui import QFontMetrics, QImage, QResizeEvent
+from PySide6.QtWidgets import (
+    QGridLayout,
+    QHBoxLayout,
+    QLabel,
+    QToolButton,
+    QVBoxLayout,
+    QWidget,
+)
 
 from prm9tool.i18n import text
 from prm9tool.scope import axis_ranges, peak_decimate
@@ -28,6 +35,8 @@ from prm9tool.signals import Signal as MeasuringPoint
 
 COLOURS = ("#ffd43b", "#4dd0e1", "#ff7eb6")  # channel 1, 2, 3
 CURSOR_COLOUR = "#e0e0e0"
+SHARED_AXIS_COLOUR = "#c8c8c8"  # tick labels of an axis two channels share
+LIVE_COLOUR = "#7a7a7a"  # legend values newer than the held trace
 
 
 def _format(value: float, unit: str) -> str:
@@ -35,42 +44,92 @@ def _format(value: float, unit: str) -> str:
     return "—" if math.isnan(value) else f"{value:.4g} {unit}"
 
 
+class _ElidedLabel(QLabel):
+    """A label that shortens its text with "…" when narrower than the text (full: tooltip)."""
+
+    def __init__(self) -> None:
+        super().__init__()
+        self._full = ""
+
+    def set_full_text(self, full: str) -> None:
+        """Show ``full``, elided to the label's width."""
+        self._full = full
+        self.setToolTip(full)
+        self._elide()
+        self.updateGeometry()
+
+    def sizeHint(self) -> QSize:
+        """Wide enough for the whole text."""
+        width = self.fontMetrics().horizontalAdvance(self._full) + 4
+        return QSize(width, super().sizeHint().height())
+
+    def minimumSizeHint(self) -> QSize:
+        """Narrow: the text is elided instead."""
+        return QSize(40, super().minimumSizeHint().height())
+
+    def resizeEvent(self, event: QResizeEvent) -> None:
+        """Elide the text to the new width."""
+        super().resizeEvent(event)
+        self._elide()
+
+    def _elide(self) -> None:
+        metrics = self.fontMetrics()
+        self.setText(metrics.elidedText(self._full, Qt.TextElideMode.ElideRight, self.width()))
+
+
 class _LegendEntry(QWidget):
-    """Colour, name, live value and an autoscale button of one channel.
+    """Colour, name and autoscale button of one channel above its value.
 
     The value has a label of its own with a fixed width, so a new value never re-lays out
-    the window (that would cost a full repaint at every legend update).
+    the window (that would cost a full repaint at every legend update). While the plot holds
+    a recording and the valve's values go on arriving, the value is marked as live.
     """
 
     def __init__(self, slot: int, parent: QWidget | None = None) -> None:
         super().__init__(parent)
-        self.name = QLabel()
-        self.name.setTextFormat(Qt.TextFormat.RichText)
-        self.name.setMinimumWidth(60)  # a narrow window clips long names (full name: tooltip)
+        self.swatch = QLabel("■")
+        self.swatch.setStyleSheet(f"color: {COLOURS[slot]}")
+        self.name = _ElidedLabel()
         self.value = QLabel()
         bold = self.value.font()
         bold.setBold(True)
         self.value.setFont(bold)
-        self.value.setFixedWidth(QFontMetrics(bold).horizontalAdvance("−00000.0 mA") + 4)
-        self.autoscale = QToolButton()
-        self.autoscale.setAutoRaise(True)
-        layout = QHBoxLayout(self)
-        layout.setContentsMargins(0, 0, 8, 0)
-        for widget in (self.name, self.value, self.autoscale):
-            layout.addWidget(widget)
-        self._colour = COLOURS[slot]
+        self.autoscale = QToolButton()  # a framed button, not a bare word
+        grid = QGridLayout(self)
+        grid.setContentsMargins(0, 0, 12, 0)
+        grid.setHorizontalSpacing(4)
+        grid.setVerticalSpacing(0)
+        grid.addWidget(self.swatch, 0, 0)
+        grid.addWidget(self.name, 0, 1)
+        grid.addWidget(self.autoscale, 0, 2)
+        grid.addWidget(self.value, 1, 0, 1, 3)
+        grid.setColumnStretch(3, 1)  # the button next to the name, the space after it
         self._unit = ""
+        self._live_prefix = ""
+        self._value = math.nan
+        self._live = False
 
     def set_signal(self, signal: MeasuringPoint) -> None:
         """Show ``signal``'s name and unit."""
         self._unit = signal.unit
-        self.name.setText(f'<span style="color:{self._colour}">■</span> {text(signal.text)}:')
+        self.name.set_full_text(text(signal.text))  # the unit is in the value below
         self.name.setToolTip(f"{text(signal.text)} [{signal.unit}]")
         self.set_value(math.nan)
 
-    def set_value(self, value: float) -> None:
-        """Show the live value."""
-        self.value.setText(_format(value, self._unit))
+    def set_live_texts(self, prefix: str, tooltip: str) -> None:
+        """The word marking a live value while the plot holds, and its explanation."""
+        self._live_prefix = prefix
+        self.value.setToolTip(tooltip)
+        widest = f"{prefix} −00000.0 mA"
+        self.value.setFixedWidth(QFontMetrics(self.value.font()).horizontalAdvance(widest) + 4)
+        self.set_value(self._value, self._live)
+
+    def set_value(self, value: float, live: bool = False) -> None:
+        """Show ``value``; ``live``: newer than the held trace."""
+        self._value, self._live = value, live
+        shown = _format(value, self._unit)
+        self.value.setText(f"{self._live_prefix} {shown}" if live else shown)
+        self.value.setStyleSheet(f"color: {LIVE_COLOUR}; font-style: italic" if live else "")
 
 
 class ScopePlot(QWidget):
@@ -111,6 +170,8 @@ class ScopePlot(QWidget):
         self.legend = [_LegendEntry(slot) for slot in range(MAX_CHANNELS)]
         self._same_scale = True
         self._units: list[str] = []
+        self._signals: list[MeasuringPoint] = []
+        self._shared: dict[int, int] = {}  # channel → the earlier channel whose axis it uses
         self._channels = 0
         self._time_axis = (False, 1.0)
         for slot, entry in enumerate(self.legend):
@@ -158,29 +219,82 @@ class ScopePlot(QWidget):
         for entry in self.legend:
             entry.autoscale.setText(self.tr("Auto"))
             entry.autoscale.setToolTip(self.tr("Scale this channel to its data again"))
+            entry.set_live_texts(
+                self.tr("live:"),
+                self.tr(
+                    "The valve's newest value. The plot holds an earlier recording; read it "
+                    "with the cursors."
+                ),
+            )
 
     # --- channels and data ---------------------------------------------------------------------
     def set_channels(self, signals: Sequence[MeasuringPoint]) -> None:
         """Show one axis, curve and legend entry per signal (at most three)."""
         for slot in range(MAX_CHANNELS):
-            used = slot < len(signals)
-            self.axes[slot].setVisible(used or slot == 0)
-            self.legend[slot].setVisible(used)
+            self.legend[slot].setVisible(slot < len(signals))
             self.curves[slot].setData([], [])
             self._auto[slot] = True
         self._channels = len(signals)
         self._units = [s.unit for s in signals]
+        self._shared = self._sharing()
         self.relabel(signals)
 
     def relabel(self, signals: Sequence[MeasuringPoint]) -> None:
         """Axis and legend names of the channels (also after a language change)."""
+        self._signals = list(signals)
         for slot, signal in enumerate(signals):
-            axis = self.axes[slot]
-            axis.setLabel(f"{text(signal.text)} [{signal.unit}]", color=COLOURS[slot])
-            axis.setTextPen(COLOURS[slot])
             self.legend[slot].set_signal(signal)
+        self._label_axes()
+
+    def _label_axes(self) -> None:
+        """One axis per channel, named in the channel's colour; channels that share an axis
+        (same unit, same scale) are named on it together, and the later one's is hidden."""
+        signals = self._signals
+        for slot, axis in enumerate(self.axes):
+            if slot == 0 or (slot < len(signals) and slot not in self._shared):
+                axis.show()  # show/hide, not setVisible: they also give or free its width
+            else:
+                axis.hide()
+        for slot, signal in enumerate(signals):
+            members = [slot] + [k for k, owner in self._shared.items() if owner == slot]
+            axis = self.axes[slot]
+            if slot in self._shared:
+                continue
+            if len(members) == 1:
+                axis.setLabel(f"{text(signal.text)} [{signal.unit}]", color=COLOURS[slot])
+                axis.setTextPen(COLOURS[slot])
+                continue
+            names = (
+                f'<span style="color:{COLOURS[k]}">{text(signals[k].text)}</span>' for k in members
+            )
+            axis.setLabel(f"{', '.join(names)} [{signal.unit}]", color=SHARED_AXIS_COLOUR)
+            axis.setTextPen(SHARED_AXIS_COLOUR)
         if not signals:
             self.axes[0].setLabel("")
+
+    def _sharing(self) -> dict[int, int]:
+        """Channels whose axis would repeat an earlier channel's: same unit, both autoscaled
+        on one scale (see :func:`axis_ranges`)."""
+        shared: dict[int, int] = {}
+        if not self._same_scale:
+            return shared
+        for slot in range(1, self._channels):
+            for owner in range(slot):
+                same = self._units[owner] == self._units[slot]
+                if same and self._auto[owner] and self._auto[slot] and owner not in shared:
+                    shared[slot] = owner
+                    break
+        return shared
+
+    def _update_sharing(self) -> None:
+        shared = self._sharing()
+        if shared != self._shared:
+            self._shared = shared
+            self._label_axes()
+
+    def shared_axes(self) -> dict[int, int]:
+        """Channels drawn on an earlier channel's axis: ``{channel: owner}`` (0-based)."""
+        return dict(self._shared)
 
     def set_time_axis(self, from_trigger: bool, window_s: float) -> None:
         """Label the time axis; windows under a second are labelled in milliseconds."""
@@ -234,10 +348,11 @@ class ScopePlot(QWidget):
         lo, hi = float(np.nanmin(y)), float(np.nanmax(y))
         return (lo, hi) if np.isfinite(lo) and np.isfinite(hi) else None
 
-    def show_latest(self, values: np.ndarray) -> None:
-        """Live values in the legend (one per channel, NaN when unknown)."""
+    def show_latest(self, values: np.ndarray, held: bool = False) -> None:
+        """The newest values in the legend (one per channel, NaN when unknown); ``held``:
+        the plot holds an earlier recording, so they are marked as live."""
         for slot in range(self._channels):
-            self.legend[slot].set_value(float(values[slot]))
+            self.legend[slot].set_value(float(values[slot]), held)
 
     def set_x_range(self, x0: float, x1: float) -> None:
         """Show times ``x0`` … ``x1``."""
@@ -256,11 +371,13 @@ class ScopePlot(QWidget):
         """Scale channel ``slot``'s axis to its data, and keep doing so as data arrives."""
         self._auto[slot] = True
         self._rescale(force=True)
+        self._update_sharing()
 
     def set_same_scale(self, on: bool) -> None:
         """Autoscaled channels with the same unit share one scale (on by default)."""
         self._same_scale = on
         self._rescale(force=True)
+        self._update_sharing()
 
     def is_autoscaled(self, slot: int) -> bool:
         """True while channel ``slot``'s axis follows its data."""
@@ -268,6 +385,7 @@ class ScopePlot(QWidget):
 
     def _on_manual_range(self, slot: int) -> None:
         self._auto[slot] = False
+        self._update_sharing()
         if slot == 0:
             self.x_range_changed.emit()
 

@@ -5,13 +5,12 @@ from __future__ import annotations
 import math
 from collections.abc import Sequence
 
-from PySide6.QtCore import Signal
+from PySide6.QtCore import Qt, Signal
 from PySide6.QtWidgets import (
     QCheckBox,
     QComboBox,
     QFormLayout,
     QGridLayout,
-    QGroupBox,
     QLabel,
     QVBoxLayout,
     QWidget,
@@ -44,28 +43,36 @@ def _time(seconds: float) -> str:
     return f"{seconds:.4g} s"
 
 
-class CursorPanel(QGroupBox):
-    """Δt, 1/Δt and per channel the values at A and B and their difference."""
+class CursorPanel(QWidget):
+    """Δt, 1/Δt and per channel the values at A and B and their difference (a tab; its
+    window title is the tab's name)."""
+
+    cursors_toggled = Signal(bool)
 
     def __init__(self, parent: QWidget | None = None) -> None:
         super().__init__(parent)
         grid = QGridLayout(self)
+        self.show_cursors = QCheckBox()
+        self.show_cursors.toggled.connect(self.cursors_toggled)
+        grid.addWidget(self.show_cursors, 0, 0, 1, 4)
         self.headers = [QLabel() for _ in range(4)]
         for col, header in enumerate(self.headers):
-            grid.addWidget(header, 0, col)
+            grid.addWidget(header, 1, col)
         self.cells = [[QLabel() for _ in range(4)] for _ in range(MAX_CHANNELS)]
-        for row, cells in enumerate(self.cells, start=1):
+        for row, cells in enumerate(self.cells, start=2):
             for col, cell in enumerate(cells):
                 grid.addWidget(cell, row, col)
         self.dt = QLabel()
-        grid.addWidget(self.dt, MAX_CHANNELS + 1, 0, 1, 4)
+        grid.addWidget(self.dt, MAX_CHANNELS + 2, 0, 1, 4)
+        grid.setRowStretch(MAX_CHANNELS + 3, 1)
         self._units: list[str] = []
         self.retranslate()
         self.show_readout(None)
 
     def retranslate(self) -> None:
         """Re-read user-visible texts (after a language change)."""
-        self.setTitle(self.tr("Cursors"))
+        self.setWindowTitle(self.tr("Cursors"))
+        self.show_cursors.setText(self.tr("Cursors A/B"))
         for header, label in zip(self.headers, ("", "A", "B", "B − A"), strict=True):
             header.setText(f"<b>{label}</b>")
 
@@ -100,14 +107,20 @@ class CursorPanel(QGroupBox):
             )
 
 
-class StepPanel(QGroupBox):
-    """Rise time, overshoot, settling time and steady-state error of the response channel."""
+class StepPanel(QWidget):
+    """Rise time, overshoot, settling time and steady-state error of the response channel
+    (a tab; its window title is the tab's name)."""
 
     channels_changed = Signal()  # reference, response or region changed
 
     def __init__(self, parent: QWidget | None = None) -> None:
         super().__init__(parent)
         self.reference, self.response = QComboBox(), QComboBox()
+        for combo in (self.reference, self.response):
+            combo.setSizeAdjustPolicy(
+                QComboBox.SizeAdjustPolicy.AdjustToMinimumContentsLengthWithIcon
+            )
+            combo.setMinimumContentsLength(10)  # as wide as the panel; full name: tooltip
         self.region = QLabel()
         self.region.setWordWrap(True)
         self.between_cursors = QCheckBox()
@@ -115,12 +128,14 @@ class StepPanel(QGroupBox):
         self.figures = {
             name: QLabel() for name in ("step", "rise", "overshoot", "settling", "error")
         }
-        self.form = QFormLayout()
+        channels, self.form = QFormLayout(), QFormLayout()  # short labels: wide combos
+        channels.setFieldGrowthPolicy(QFormLayout.FieldGrowthPolicy.AllNonFixedFieldsGrow)
         fields = [self.reference, self.response, *self.figures.values()]
         self.labels = [QLabel() for _ in fields]
-        for label, field in zip(self.labels, fields, strict=True):
-            self.form.addRow(label, field)
+        for n, (label, field) in enumerate(zip(self.labels, fields, strict=True)):
+            (channels if n < 2 else self.form).addRow(label, field)
         layout = QVBoxLayout(self)
+        layout.addLayout(channels)
         layout.addLayout(self.form)
         layout.addWidget(self.between_cursors)
         layout.addWidget(self.region)
@@ -132,7 +147,7 @@ class StepPanel(QGroupBox):
 
     def retranslate(self) -> None:
         """Re-read user-visible texts (after a language change)."""
-        self.setTitle(self.tr("Step response"))
+        self.setWindowTitle(self.tr("Step response"))
         self.between_cursors.setText(self.tr("Only between cursors A and B"))
         labels = (
             self.tr("Reference"),
@@ -157,13 +172,15 @@ class StepPanel(QGroupBox):
         self.reference.addItem(self.tr("(none: step on the response)"), -1)
         for slot, signal in enumerate(signals):
             label = f"{slot + 1}: {text(signal.text)}"
-            self.reference.addItem(label, slot)
-            self.response.addItem(label, slot)
+            for combo in (self.reference, self.response):
+                combo.addItem(label, slot)
+                combo.setItemData(combo.count() - 1, label, Qt.ItemDataRole.ToolTipRole)
         two = len(signals) >= 2
         self.reference.setCurrentIndex(1 if two else 0)
         self.response.setCurrentIndex(1 if two else 0)
         for combo in (self.reference, self.response):
             combo.blockSignals(False)
+            combo.updateGeometry()  # its size hint follows the longest name
         self.channels_changed.emit()
 
     def reference_slot(self) -> int | None:
