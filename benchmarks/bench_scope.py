@@ -41,6 +41,7 @@ TYPE_KEY = "PRM9-06.3Z11/30-24E02S02"
 KEYS = ("setpoint_raw", "position_actual", "current_a")
 RATE_HZ = 5000
 SIZE = (1400, 850)
+MIN_RECEIVED = 0.99  # of rate x wall time: less means the stream stalled or dropped blocks
 
 
 class FrameTimer:
@@ -259,8 +260,16 @@ def main() -> None:
         print(f"{name:<52} {percentile(values, 0.5):8.1f} {percentile(values, 0.95):8.1f}")
     ratio = statistics.median(frames) / statistics.median(ref_ds)
     print(f"scope frame / bare clip+peak reference (median): {ratio:.2f}x")
+    failures = []
     if result["lost"] != 0:
-        sys.exit("FAIL: samples were lost")
+        failures.append(f"{result['lost']} samples lost (gaps in the session's sequence)")
+    if result["received"] < MIN_RECEIVED * expected:  # gaps are not the only way to lose data
+        failures.append(
+            f"received {result['received']} samples, under {MIN_RECEIVED:.0%} of the "
+            f"{expected:.0f} the stream should have carried"
+        )
+    if failures:
+        sys.exit("FAIL: " + "; ".join(failures))
 
 
 if __name__ == "__main__":
