@@ -126,10 +126,11 @@ class _LegendEntry(QWidget):
 
     def set_value(self, value: float, live: bool = False) -> None:
         """Show ``value``; ``live``: newer than the held trace."""
+        if live != self._live:  # a style change re-polishes the label: only when it changes
+            self.value.setStyleSheet(f"color: {LIVE_COLOUR}; font-style: italic" if live else "")
         self._value, self._live = value, live
         shown = _format(value, self._unit)
         self.value.setText(f"{self._live_prefix} {shown}" if live else shown)
-        self.value.setStyleSheet(f"color: {LIVE_COLOUR}; font-style: italic" if live else "")
 
 
 class ScopePlot(QWidget):
