@@ -21,7 +21,7 @@ from enum import IntEnum
 from pathlib import Path
 
 from prm9tool import __version__
-from prm9tool.catalogue import CATALOGUE, DataType, ObjAccess, Parameter
+from prm9tool.catalogue import CAPPED_BY, CATALOGUE, DataType, ObjAccess, Parameter
 from prm9tool.errors import Prm9Error, TypeKeyError
 from prm9tool.typekey import TypeKey
 from prm9tool.variant import ALL_VARIANTS, Config, Variant
@@ -30,10 +30,6 @@ BIT_RATES_KBIT = (10, 20, 50, 125, 250, 500, 800, 1000)
 UNSUPPORTED_BIT_RATES_KBIT = frozenset({10})  # manual table 7-1
 MANDATORY = (0x1000, 0x1001, 0x1018)  # CiA 301
 VENDOR_NAME = "ARGO-HYTOS"
-# Upper limits the valve applies beyond an entry's own range: the current limits LIMTA/LIMTB
-# at most the nominal coil current CURNORM (table 7-14); CURNORM is read-only, so its default
-# is the limit a master can rely on.
-CAPPED_BY = {"LIMTA": "CURNORM", "LIMTB": "CURNORM"}
 
 
 class ObjectKind(IntEnum):
@@ -86,7 +82,10 @@ def mapping_for_control_mode(param: Parameter, control_mode: int) -> int:
 
 
 def raw_limits(param: Parameter, variant: Variant) -> tuple[int, int]:
-    """The raw values ``variant`` accepts for ``param`` (its range, capped by :data:`CAPPED_BY`)."""
+    """The raw values ``variant`` accepts for ``param`` (its range, capped by ``CAPPED_BY``).
+
+    The capping parameter (CURNORM) is read-only, so its default is the limit a master can rely on.
+    """
     high = param.raw_max
     cap = CAPPED_BY.get(param.mnemonic)
     if cap is not None:

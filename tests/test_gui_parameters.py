@@ -96,6 +96,14 @@ def test_live_values_refresh_the_table(view, doc):
     assert _cell(view, "TEMP", Column.VALUE) == "41"
 
 
+def test_a_current_limit_shows_the_range_the_valve_accepts(view, doc):
+    dialog = view.make_edit_dialog("LIMTA")
+    assert dialog._labels["range"].text() == "0 … 2600 mA (CURNORM)"  # not the 4000 of its type
+    doc.set_live({"CURNORM": 2000})  # a valve with a smaller coil
+    dialog.retranslate()
+    assert dialog._labels["range"].text() == "0 … 2000 mA (CURNORM)"
+
+
 def test_edit_dialog_shows_limits_and_default_and_sets_the_value(view, doc):
     dialog = view.make_edit_dialog("DTAMP")
     assert dialog._labels["range"].text() == "0 … 100 %"
@@ -119,7 +127,7 @@ def test_edit_dialog_refuses_invalid_values_with_the_reason(view, doc, mnemonic,
     dialog = view.make_edit_dialog(mnemonic)
     dialog.set_text(text)
     dialog._buttons.accepted.emit()
-    assert reason in dialog.error_label.text()
+    assert reason in dialog.error_label.text().replace("\xa0", " ")
     assert not dialog.error_label.isHidden()
     assert dialog.result() != dialog.DialogCode.Accepted
     assert doc.value(mnemonic) == before and not doc.modified

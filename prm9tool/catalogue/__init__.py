@@ -44,6 +44,7 @@ from prm9tool.messages import QT_TRANSLATE_NOOP, Message
 from prm9tool.variant import Coils, Variant
 
 __all__ = [
+    "CAPPED_BY",
     "CATALOGUE",
     "ERROR_HISTORY_DEPTH",
     "LOAD_SIGNATURE",
@@ -59,6 +60,11 @@ __all__ = [
     "Texts",
     "variant_label",
 ]
+
+# Upper limits a parameter has beyond its own range: the current limits LIMTA/LIMTB are at most
+# the nominal coil current CURNORM (manual table 7-14: "0..CURNORM"). The rule, the edit dialog's
+# "allowed range" and the EDS limits all read this table.
+CAPPED_BY: Mapping[str, str] = {"LIMTA": "CURNORM", "LIMTB": "CURNORM"}
 
 # Recommended setpoint signal types per coil layout (manual table 8-4).
 RECOMMENDED_SETPOINT_TYPES: Mapping[Coils, frozenset[int]] = {
@@ -184,7 +190,7 @@ class Catalogue:
 def _check_current_limits(values: Mapping[str, int | str], default: int | str) -> list[Problem]:
     curnorm = values.get("CURNORM", default)
     problems = []
-    for mn in ("LIMTA", "LIMTB"):
+    for mn in (mn for mn, cap in CAPPED_BY.items() if cap == "CURNORM"):
         value = values.get(mn)
         if isinstance(value, int) and isinstance(curnorm, int) and value > curnorm:
             text = QT_TRANSLATE_NOOP(

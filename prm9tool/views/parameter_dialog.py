@@ -6,6 +6,8 @@ the edit went through (as one undo step, or all four ramps at once at Basic leve
 
 from __future__ import annotations
 
+import re
+
 from PySide6.QtCore import QEvent
 from PySide6.QtWidgets import (
     QComboBox,
@@ -19,12 +21,19 @@ from PySide6.QtWidgets import (
 )
 
 from prm9tool.access import AccessModel
-from prm9tool.catalogue import CATALOGUE, Access, Parameter
+from prm9tool.catalogue import CAPPED_BY, CATALOGUE, Access, Parameter
 from prm9tool.document import ParameterDocument, Raw
 from prm9tool.editing import apply_edit, linked_mnemonics
 from prm9tool.errors import AccessDeniedError, ValueRangeError
 from prm9tool.i18n import current_language, text
 from prm9tool.translate import error_text
+
+# A value and its unit stay on one line when the reason wraps ("2600 mA", not "2600 / mA").
+_VALUE_UNIT = re.compile(r"(\d) (?=(?:mA|mV|ms|Hz|V|s|%|°C)\b|%)")
+
+
+def _unbroken_units(text: str) -> str:
+    return _VALUE_UNIT.sub("\\1\u00a0", text)
 
 
 class ParameterEditDialog(QDialog):
@@ -103,7 +112,7 @@ class ParameterEditDialog(QDialog):
         self._form_titles["new"].setText(self.tr("New value:"))
         unit = f" {p.unit}" if p.unit else ""
         self._labels["current"].setText(self._doc.display(p.mnemonic) + unit)
-        self._labels["range"].setText(self._range_text() + unit)
+        self._labels["range"].setText(self._range_text(unit))
         self._labels["default"].setText(p.format_display(p.default_for(self._doc.variant)) + unit)
         linked = linked_mnemonics(self._doc, self._access, p.mnemonic)
         hint = ""
@@ -116,18 +125,23 @@ class ParameterEditDialog(QDialog):
         self._labels["hint"].setText(hint)
         self._labels["hint"].setVisible(bool(hint))
         if self._error is not None:
-            self.error_label.setText(error_text(self._error))
+            self.error_label.setText(_unbroken_units(error_text(self._error)))
 
     def _lock_reason(self) -> str:
         if not self.param.writable or self.param.access is Access.READ_ONLY:
             return self.tr("Read-only value of the valve.")
         return self.tr("Can only be changed at Expert access level.")
 
-    def _range_text(self) -> str:
+    def _range_text(self, unit: str = "", capped: bool = True) -> str:
         p = self.param
         if p.choices:
             return ", ".join(str(code) for code, _label in p.choices)
-        return f"{p.format_display(p.raw_min)} … {p.format_display(p.raw_max)}"
+        high = p.format_display(p.raw_max) + unit
+        cap = CAPPED_BY.get(p.mnemonic) if capped else None
+        if cap is not None:  # e.g. LIMTA: "0 … 2600 mA (CURNORM)", what the valve accepts
+            capped = min(p.raw_max, int(self._doc.value(cap)))
+            high = f"{p.format_display(capped)}{unit} ({cap})"
+        return f"{p.format_display(p.raw_min)} … {high}"
 
     def changeEvent(self, event: QEvent) -> None:
         """Retranslate when the program language changes."""
@@ -157,7 +171,7 @@ class ParameterEditDialog(QDialog):
             unit = f" {self.param.unit}" if self.param.unit else ""
             raise ValueRangeError(
                 self.tr("{0}: {1}{2} is outside the allowed range {3}{2}.").format(
-                    self.param.mnemonic, entered.strip(), unit, self._range_text()
+                    self.param.mnemonic, entered.strip(), unit, self._range_text(capped=False)
                 )
             )
         return raw
@@ -173,8 +187,9 @@ class ParameterEditDialog(QDialog):
     def show_error(self, error: Exception) -> None:
         """Show why the value was refused (in the program language); the dialog stays open."""
         self._error = error
-        self.error_label.setText(error_text(self._error))
+        self.error_label.setText(_unbroken_units(error_text(self._error)))
         self.error_label.show()
+        self.adjustSize()  # room for the wrapped reason without squeezing the form rows
 
     def _clear_error(self) -> None:
         self._error = None
