@@ -14,6 +14,7 @@ import threading
 import time
 from pathlib import Path
 
+import gui_support
 import pytest
 from gui_support import record_prompts, session_of
 from PySide6.QtCore import QRect, QSettings, Qt
@@ -25,6 +26,7 @@ from prm9tool.catalogue import Access
 from prm9tool.cli import build_parser
 from prm9tool.connection import PROGRESS_PERIOD_S
 from prm9tool.device import factory
+from prm9tool.scope.generator import GeneratorSettings, Waveform
 from prm9tool.views import prompts
 from prm9tool.views.access_dialog import ChangePasswordDialog, PasswordDialog
 from prm9tool.views.hid_dialog import EmulatorDialog, HidConfigurationDialog
@@ -268,13 +270,27 @@ def test_e04_ca_valve_expert_status_canopen_scope_and_languages(qtbot, program, 
     qtbot.waitUntil(lambda: _shows(canopen, "read from the valve"), timeout=TIMEOUT)
     _save(qtbot, canopen, shots, "dialog_canopen")
     canopen.close()
+    # What the PLC would do: NMT start and control word 0Fh (DEVICE_MODE_ACTIVE), so that the
+    # setpoint generator's square wave moves the process loop for the picture.
+    valve = gui_support.emulated(3002)
+    valve.nmt_event("operational")
+    valve.write(0x6040, 0, 0x0F)
     window.open_scope("position_actual")
     assert window.current_view() == "scope"
     scope = window.views["scope"]
     scope.preselect("demand")
+    scope.preselect("process_actual")
     scope.start()
-    qtbot.waitUntil(lambda: _recorded_s(scope) >= 1.2, timeout=TIMEOUT)  # a full time window
+    panel = scope.generator_panel  # as the user would set it up (the confirmation is skipped)
+    panel.waveform.setCurrentIndex(panel.waveform.findData(Waveform.SQUARE))
+    panel.amplitude.setValue(40.0)
+    panel.offset.setValue(-20.0)
+    panel.period.setValue(0.8)
+    assert panel.settings() == GeneratorSettings(Waveform.SQUARE, 40.0, -20.0, 0.8)
+    scope.generator.start(panel.settings())
+    qtbot.waitUntil(lambda: _recorded_s(scope) >= 2.4, timeout=TIMEOUT)  # a full time window
     _save(qtbot, window, shots, "oscilloscope_e04_ca")
+    scope.generator.stop()
     scope.stop()
     window.show_view("diagram")
     window.set_language("de")

@@ -306,6 +306,18 @@ def test_each_channel_has_its_own_scale_and_same_units_can_share_one(scope, conn
     assert "Spool position actual" not in plot.axes[0].labelText
 
 
+def test_an_axis_shared_by_three_long_names_is_labelled_with_channel_numbers(scope, conn):
+    for key in ("demand", "position_actual", "position_setpoint"):
+        scope.preselect(key)
+    scope.start()
+    conn.samples_received.emit(np.zeros((100, 3)))
+    scope._redraw()
+    assert scope.plot.shared_axes() == {1: 0, 2: 0}
+    label = scope.plot.axes[0].labelText
+    assert "Spool position actual" not in label
+    assert all(f">{n}</span>" in label for n in (1, 2, 3)) and label.endswith("[%]")
+
+
 def test_zooming_an_axis_by_hand_stops_its_autoscale_until_auto(scope, conn):
     scope.preselect("demand")
     scope.start()

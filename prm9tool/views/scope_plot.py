@@ -36,6 +36,7 @@ from prm9tool.signals import Signal as MeasuringPoint
 COLOURS = ("#ffd43b", "#4dd0e1", "#ff7eb6")  # channel 1, 2, 3
 CURSOR_COLOUR = "#e0e0e0"
 SHARED_AXIS_COLOUR = "#c8c8c8"  # tick labels of an axis two channels share
+SHARED_LABEL_CHARS = 72  # longer joined names do not fit a 520-pixel plot: channel numbers instead
 LIVE_COLOUR = "#7a7a7a"  # legend values newer than the held trace
 
 
@@ -265,10 +266,14 @@ class ScopePlot(QWidget):
                 axis.setLabel(f"{text(signal.text)} [{signal.unit}]", color=COLOURS[slot])
                 axis.setTextPen(COLOURS[slot])
                 continue
-            names = (
-                f'<span style="color:{COLOURS[k]}">{text(signals[k].text)}</span>' for k in members
+            names = [text(signals[k].text) for k in members]
+            if sum(len(name) + 2 for name in names) > SHARED_LABEL_CHARS:
+                names = [str(k + 1) for k in members]  # channel numbers, as in the cursor table
+            spans = (
+                f'<span style="color:{COLOURS[k]}">{name}</span>'
+                for k, name in zip(members, names, strict=True)
             )
-            axis.setLabel(f"{', '.join(names)} [{signal.unit}]", color=SHARED_AXIS_COLOUR)
+            axis.setLabel(f"{', '.join(spans)} [{signal.unit}]", color=SHARED_AXIS_COLOUR)
             axis.setTextPen(SHARED_AXIS_COLOUR)
         if not signals:
             self.axes[0].setLabel("")
