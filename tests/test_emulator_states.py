@@ -187,35 +187,28 @@ def test_comm_error_is_an_error_until_operational_again():
     assert valve.status().error_code == 0
 
 
-def test_sync_error_flashes_led2_three_times_and_goes_when_operational_again():
+@pytest.mark.parametrize(
+    ("event", "text", "led2"),
+    [
+        ("comm_error", "", "double_flash"),  # heartbeat / guarding event
+        ("sync_error", "SYNC", "triple_flash"),
+        ("rpdo_timeout", "event timer", "quadruple_flash"),
+    ],
+)
+def test_can_errors_of_table_7_18_flash_led2_and_go_when_operational_again(event, text, led2):
     valve = booted_ca()
     valve.nmt_event("operational")
-    valve.nmt_event("sync_error")  # table 7-18: LED1 green, LED2 triple flash, LED3 single flash
+    valve.nmt_event(event)
     status = valve.status()
-    assert status.error_code == 0x8100
-    assert "SYNC" in status.error_text
+    assert (status.error_code, status.error_register) == (0x8100, 0x11)
+    assert text in status.error_text
     assert status.leds[0].color == "green" and status.leds[0].pattern == "on"
-    assert status.leds[1].pattern == "triple_flash"
+    assert status.leds[1].pattern == led2
     assert status.leds[2].pattern == "single_flash"
     valve.nmt_event("operational")
     valve.advance(10.1)
     assert valve.status().error_code == 0
     assert valve.status().leds[1].pattern == "off"
-
-
-def test_rpdo_timeout_flashes_led2_four_times_and_goes_when_operational_again():
-    valve = booted_ca()
-    valve.nmt_event("operational")
-    valve.nmt_event("rpdo_timeout")  # table 7-18: event-timer error, LED2 quadruple flash
-    status = valve.status()
-    assert (status.error_code, status.error_register) == (0x8100, 0x11)
-    assert "event timer" in status.error_text
-    assert status.leds[0].color == "green" and status.leds[0].pattern == "on"
-    assert status.leds[1].pattern == "quadruple_flash"
-    assert status.leds[2].pattern == "single_flash"
-    valve.nmt_event("operational")
-    valve.advance(10.1)
-    assert valve.status().error_code == 0
 
 
 def test_reset_node_power_cycles():
