@@ -9,6 +9,8 @@ from __future__ import annotations
 from dataclasses import dataclass
 from enum import IntEnum
 
+from prm9tool.messages import QT_TRANSLATE_NOOP, Message, Template
+
 
 class AbortCode(IntEnum):
     """CiA 301 SDO abort codes (the subset a PRM9 answers with)."""
@@ -100,18 +102,47 @@ class TypeKeyError(Prm9Error):
     """A type key is malformed; the message names the wrong part."""
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, eq=False)
 class FileProblem:
-    """One problem found in a *.prm file, with its 1-based line number (0 = whole file)."""
+    """One problem found in a *.prm file, with its 1-based line number (0 = whole file).
+
+    ``text`` is translatable (``prm9tool.translate.translated``), ``message`` is English.
+    Problems compare by line, English message and severity, so a plain string matches the
+    message built from a template.
+    """
 
     line: int
-    message: str
+    text: Message | str
     severity: str = "error"  # "error" or "warning"
 
+    @property
+    def message(self) -> str:
+        """The problem in English (``--check``, logs)."""
+        return str(self.text)
+
+    def located(self, path: str) -> Message:
+        """The problem as ``FILE:LINE: message``, a warning marked so (translatable)."""
+        template = _LOCATED_WARNING if self.severity == "warning" else _LOCATED
+        return template(path, self.line, self.text)
+
     def format(self, path: str) -> str:
-        """Return the problem as ``FILE:LINE: message`` (the compiler convention)."""
-        prefix = "warning: " if self.severity == "warning" else ""
-        return f"{path}:{self.line}: {prefix}{self.message}"
+        """Return the problem as ``FILE:LINE: message`` (the compiler convention), in English."""
+        return str(self.located(path))
+
+    def __eq__(self, other: object) -> bool:
+        if not isinstance(other, FileProblem):
+            return NotImplemented
+        return self._key() == other._key()
+
+    def __hash__(self) -> int:
+        return hash(self._key())
+
+    def _key(self) -> tuple[int, str, str]:
+        return (self.line, self.message, self.severity)
+
+
+_LOCATED = Template("Problems", "{0}:{1}: {2}")  # nothing to translate: not marked for lupdate
+_LOCATED_WARNING = QT_TRANSLATE_NOOP("Problems", "{0}:{1}: warning: {2}")
 
 
 class FileFormatError(Prm9Error):

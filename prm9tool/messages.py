@@ -80,6 +80,13 @@ def _english(_context: str, source: str) -> str:
 Arg = str | int | float | Message | Localized  # what a message's placeholders take
 
 
+def message_of(error: BaseException) -> Message | str:
+    """The message ``error`` was raised with, or ``str(error)`` if it was not one."""
+    if len(error.args) == 1 and isinstance(error.args[0], Message):
+        return error.args[0]
+    return str(error)
+
+
 def _render(arg: Arg, translate: Translate, language: str) -> str:
     if isinstance(arg, Message):
         return arg.render(translate, language)

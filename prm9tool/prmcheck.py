@@ -13,13 +13,48 @@ import math
 import re
 from dataclasses import dataclass, field
 
-from prm9tool.catalogue import CATALOGUE, Access, Parameter
+from prm9tool.catalogue import CATALOGUE, Access, Parameter, variant_label
 from prm9tool.errors import FileProblem, TypeKeyError, ValueRangeError
+from prm9tool.messages import QT_TRANSLATE_NOOP, Message, message_of
 from prm9tool.typekey import TypeKey
 
 FORMAT_NAME = "prm9tool"
 FORMAT_VERSION = 1
 HEADER_KEYS = frozenset({"format", "type_key", "serial", "firmware"})
+
+_NO_FORMAT = QT_TRANSLATE_NOOP(
+    "Problems",
+    "expected {0} as the first entry: not a prm9tool parameter file, or its header is damaged",
+)
+_UNKNOWN_FORMAT = QT_TRANSLATE_NOOP("Problems", "format {0} is unknown; expected {1}")
+_NEWER_FORMAT = QT_TRANSLATE_NOOP(
+    "Problems", "format version {0} is newer than this prm9tool reads ({1}): update prm9tool"
+)
+_NO_SUCH_FORMAT = QT_TRANSLATE_NOOP("Problems", "format version {0} does not exist")
+_NO_TYPE_KEY = QT_TRANSLATE_NOOP("Problems", "no 'type_key = ...' entry: the header is incomplete")
+_BAD_SERIAL = QT_TRANSLATE_NOOP("Problems", "serial {0} must be a whole number {1} … {2}")
+_EMPTY_FIRMWARE = QT_TRANSLATE_NOOP(
+    "Problems", "firmware is empty; the line is left out when saving"
+)
+_UNKNOWN = QT_TRANSLATE_NOOP("Problems", "unknown parameter {0}: kept and written back unchanged")
+_UNKNOWN_CLOSE = QT_TRANSLATE_NOOP(
+    "Problems", "unknown parameter {0}: kept and written back unchanged (did you mean {1}?)"
+)
+_READ_ONLY = QT_TRANSLATE_NOOP(
+    "Problems", "{0} ({1}) is a read-only value, not a setting a parameter file can hold"
+)
+_ONLINE_ONLY = QT_TRANSLATE_NOOP(
+    "Problems", "{0} ({1}) is set online only and does not belong in a parameter file"
+)
+_NOT_ON_VARIANT = QT_TRANSLATE_NOOP(
+    "Problems",
+    "{0} ({1}) does not exist on {2} valves (type key {3}); remove the line or change the type key",
+)
+_NO_VALUE = QT_TRANSLATE_NOOP("Problems", "{0}: no value after '='")
+_ROUNDED = QT_TRANSLATE_NOOP(
+    "Problems", "{0}: {1}{2} is stored as {3}{2}, the nearest value the valve can hold"
+)
+_MISSING = QT_TRANSLATE_NOOP("Problems", "{0} ({1}) is missing (required for {2} valves)")
 
 
 @dataclass
@@ -60,7 +95,7 @@ class Header:
             return
         entries = {entry.name: entry for entry in order}
         if "type_key" not in entries:
-            self._error(order[0].line, "no 'type_key = ...' entry: the header is incomplete")
+            self._error(order[0].line, _NO_TYPE_KEY())
         else:
             self._type_key(entries["type_key"])
         if "serial" in entries:
@@ -68,31 +103,23 @@ class Header:
         if "firmware" in entries:
             self._firmware(entries["firmware"])
 
-    def _error(self, line: int, message: str, severity: str = "error") -> None:
+    def _error(self, line: int, message: Message | str, severity: str = "error") -> None:
         self.problems.append(FileProblem(line, message, severity))
 
     def _format(self, order: list[Entry], last_line: int) -> bool:
         expected = f"'format = {FORMAT_NAME} {FORMAT_VERSION}'"
         if not order or order[0].name != "format":
             line = order[0].line if order else max(last_line, 1)
-            self._error(
-                line,
-                f"expected {expected} as the first entry: not a prm9tool parameter file, "
-                "or its header is damaged",
-            )
+            self._error(line, _NO_FORMAT(expected))
             return False
         line, value = order[0].line, order[0].value
         match = re.fullmatch(rf"{FORMAT_NAME} ([0-9]{{1,6}})", value)
         if match is None:
-            self._error(line, f"format {value!r} is unknown; expected {expected}")
+            self._error(line, _UNKNOWN_FORMAT(repr(value), expected))
         elif int(match[1]) > FORMAT_VERSION:
-            self._error(
-                line,
-                f"format version {int(match[1])} is newer than this prm9tool reads "
-                f"({FORMAT_VERSION}): update prm9tool",
-            )
+            self._error(line, _NEWER_FORMAT(int(match[1]), FORMAT_VERSION))
         elif int(match[1]) != FORMAT_VERSION:
-            self._error(line, f"format version {int(match[1])} does not exist")
+            self._error(line, _NO_SUCH_FORMAT(int(match[1])))
         return not self.problems
 
     def _type_key(self, entry: Entry) -> None:
@@ -100,7 +127,7 @@ class Header:
         try:
             self.type_key = TypeKey.parse(entry.value)
         except TypeKeyError as exc:
-            self._error(entry.line, str(exc))
+            self._error(entry.line, message_of(exc))
 
     def _serial(self, entry: Entry) -> None:
         snv = CATALOGUE["SNV"]
@@ -110,10 +137,7 @@ class Header:
             not re.fullmatch(f"[0-9]{{1,{digits}}}", text)
             or not snv.raw_min <= int(text) <= snv.raw_max
         ):
-            self._error(
-                entry.line,
-                f"serial {text!r} must be a whole number {snv.raw_min} … {snv.raw_max}",
-            )
+            self._error(entry.line, _BAD_SERIAL(repr(text), snv.raw_min, snv.raw_max))
         else:
             self.serial = int(text)
 
@@ -121,9 +145,7 @@ class Header:
         if entry.value:
             self.firmware = entry.value
         else:
-            self._error(
-                entry.line, "firmware is empty; the line is left out when saving", "warning"
-            )
+            self._error(entry.line, _EMPTY_FIRMWARE(), "warning")
 
 
 def check_entries(
@@ -146,7 +168,7 @@ def check_entries(
             continue
         lines[entry.name] = entry.line
         problem = _misplaced(param, type_key)
-        if problem:
+        if problem is not None:
             result.problems.append(FileProblem(entry.line, problem))
             continue
         _check_value(param, entry, result)
@@ -154,62 +176,57 @@ def check_entries(
         _check_complete(type_key, lines, type_key_line, result)
         for rule in CATALOGUE.check_rules(type_key.variant, result.values):
             line = next((lines[mn] for mn in rule.mnemonics if mn in lines), type_key_line)
-            result.problems.append(FileProblem(line, rule.message, rule.severity))
+            result.problems.append(FileProblem(line, rule.text, rule.severity))
     return result
 
 
-def _unknown(name: str) -> str:
-    message = f"unknown parameter {name!r}: kept and written back unchanged"
+def _unknown(name: str) -> Message:
     close = difflib.get_close_matches(name.upper(), [p.mnemonic for p in CATALOGUE], 1, 0.8)
-    return f"{message} (did you mean {close[0]}?)" if close else message
+    if close:
+        return _UNKNOWN_CLOSE(repr(name), close[0])
+    return _UNKNOWN(repr(name))
 
 
-def _misplaced(param: Parameter, type_key: TypeKey | None) -> str:
-    """Why ``param`` may not appear in this file, or an empty string."""
-    name = f"{param.mnemonic} ({param.text.en})"
+def _misplaced(param: Parameter, type_key: TypeKey | None) -> Message | None:
+    """Why ``param`` may not appear in this file, or None."""
     if not param.in_file:
         if param.access is Access.READ_ONLY:
-            return f"{name} is a read-only value, not a setting a parameter file can hold"
-        return f"{name} is set online only and does not belong in a parameter file"
+            return _READ_ONLY(param.mnemonic, param.text)
+        return _ONLINE_ONLY(param.mnemonic, param.text)
     if type_key is not None and not param.applies(type_key.variant):
-        return (
-            f"{name} does not exist on {type_key.variant.label} valves (type key {type_key}); "
-            "remove the line or change the type key"
-        )
-    return ""
+        variant = variant_label(type_key.variant)
+        return _NOT_ON_VARIANT(param.mnemonic, param.text, variant, str(type_key))
+    return None
 
 
 def _check_value(param: Parameter, entry: Entry, result: CheckedEntries) -> None:
     if not entry.value:
-        result.problems.append(FileProblem(entry.line, f"{param.mnemonic}: no value after '='"))
+        result.problems.append(FileProblem(entry.line, _NO_VALUE(param.mnemonic)))
         return
     try:
         raw = param.parse_display(entry.value)
         param.check_raw(raw)
     except ValueRangeError as exc:
-        result.problems.append(FileProblem(entry.line, str(exc)))
+        result.problems.append(FileProblem(entry.line, message_of(exc)))
         return
     result.values[param.mnemonic] = raw
     note = _rounding(param, entry.value, raw)
-    if note:
+    if note is not None:
         result.problems.append(FileProblem(entry.line, note, "warning"))
 
 
-def _rounding(param: Parameter, text: str, raw: int | str) -> str:
-    """A warning when ``text`` is not exactly a value the valve can hold, else ''."""
+def _rounding(param: Parameter, text: str, raw: int | str) -> Message | None:
+    """A warning when ``text`` is not exactly a value the valve can hold, else None."""
     cleaned = text.replace(",", ".") if text.count(",") == 1 else text
     try:
         written = float(cleaned)
     except ValueError:
-        return ""  # a choice label such as "±10 V bipolar"
+        return None  # a choice label such as "±10 V bipolar"
     stored = param.format_display(raw)
     if not math.isfinite(written) or written == float(stored):
-        return ""
+        return None
     unit = f" {param.unit}" if param.unit else ""
-    return (
-        f"{param.mnemonic}: {text}{unit} is stored as {stored}{unit}, "
-        "the nearest value the valve can hold"
-    )
+    return _ROUNDED(param.mnemonic, text, unit, stored)
 
 
 def _check_complete(
@@ -220,7 +237,6 @@ def _check_complete(
             result.problems.append(
                 FileProblem(
                     type_key_line,
-                    f"{param.mnemonic} ({param.text.en}) is missing "
-                    f"(required for {type_key.variant.label} valves)",
+                    _MISSING(param.mnemonic, param.text, variant_label(type_key.variant)),
                 )
             )

@@ -27,6 +27,7 @@ from typing import TYPE_CHECKING
 from prm9tool.atomicfile import atomic_write
 from prm9tool.catalogue import CATALOGUE, Parameter
 from prm9tool.errors import FileFormatError, FileProblem
+from prm9tool.messages import QT_TRANSLATE_NOOP, Message
 from prm9tool.prmcheck import FORMAT_NAME, FORMAT_VERSION, Entry, Header, check_entries
 from prm9tool.typekey import TypeKey
 
@@ -127,6 +128,38 @@ class CheckResult:
 
 
 # --- reading ----------------------------------------------------------------------------------
+_NOT_UTF8 = QT_TRANSLATE_NOOP("Problems", "byte 0x{0} is not UTF-8 text: the file is corrupt")
+_CONTROL_CHARACTER = QT_TRANSLATE_NOOP(
+    "Problems", "control character U+{0}: binary data, the file is corrupt"
+)
+_AFTER_CHECKSUM = QT_TRANSLATE_NOOP(
+    "Problems", "text after the checksum line, which must be the last line"
+)
+_GARBLED = QT_TRANSLATE_NOOP(
+    "Problems", "garbled line: expected 'NAME = value', a '#' comment or a blank line"
+)
+_TWICE = QT_TRANSLATE_NOOP("Problems", "{0} is set twice (first on line {1})")
+_TOO_LARGE = QT_TRANSLATE_NOOP(
+    "Problems", "too large to be a parameter file ({0} bytes, more than {1})"
+)
+_EMPTY = QT_TRANSLATE_NOOP("Problems", "the file is empty")
+_NO_CHECKSUM = QT_TRANSLATE_NOOP(
+    "Problems",
+    "no 'checksum = ...' line at the end: the file is truncated (a file written by "
+    "hand must end with one, e.g. 'checksum = crc32:00000000')",
+)
+_CHECKSUM_DAMAGED = QT_TRANSLATE_NOOP(
+    "Problems", "checksum {0} is damaged (expected crc32: and 8 hex digits)"
+)
+_CHECKSUM_CHANGED = QT_TRANSLATE_NOOP(
+    "Problems",
+    "checksum does not match: the file was changed outside prm9tool (edited by hand?); "
+    "saving it from prm9tool writes a new checksum",
+)
+_CANNOT_READ = QT_TRANSLATE_NOOP("Problems", "cannot read the file: {0}")
+_CANNOT_SAVE = QT_TRANSLATE_NOOP("Problems", "cannot save the file: {0}")
+
+
 class _Lexer:
     """Splits the bytes into entries and comment lines; finds what makes a file corrupt."""
 
@@ -139,7 +172,7 @@ class _Lexer:
         self.checksum: Entry | None = None
         self.last_line = 0
 
-    def error(self, line: int, message: str) -> None:
+    def error(self, line: int, message: Message) -> None:
         self.problems.append(FileProblem(line, message))
 
     def run(self, data: bytes) -> None:
@@ -158,14 +191,12 @@ class _Lexer:
         try:
             text = raw.decode("utf-8")
         except UnicodeDecodeError as exc:
-            self.error(
-                number, f"byte 0x{raw[exc.start]:02X} is not UTF-8 text: the file is corrupt"
-            )
+            self.error(number, _NOT_UTF8(f"{raw[exc.start]:02X}"))
             return None
         bad = _CONTROL.search(text)
         if bad is not None:
             code = ord(bad.group())
-            self.error(number, f"control character U+{code:04X}: binary data, the file is corrupt")
+            self.error(number, _CONTROL_CHARACTER(f"{code:04X}"))
             return None
         return text
 
@@ -173,14 +204,12 @@ class _Lexer:
         stripped = text.strip()
         if self.checksum is not None:
             if stripped:
-                self.error(number, "text after the checksum line, which must be the last line")
+                self.error(number, _AFTER_CHECKSUM())
             return
         entry = _split_entry(number, text) if stripped and stripped[0] != "#" else None
         if entry is None:
             if stripped and stripped[0] != "#":
-                self.error(
-                    number, "garbled line: expected 'NAME = value', a '#' comment or a blank line"
-                )
+                self.error(number, _GARBLED())
             self.pending.append(text)
             self.seen.append(text)
             return
@@ -195,7 +224,7 @@ class _Lexer:
             return
         first = self.entries.get(entry.name)
         if first is not None:
-            self.error(entry.line, f"{entry.name} is set twice (first on line {first.line})")
+            self.error(entry.line, _TWICE(entry.name, first.line))
             return
         self.entries[entry.name] = entry
         self.order.append(entry)
@@ -219,12 +248,11 @@ def _split_entry(number: int, text: str) -> Entry | None:
 def check_bytes(data: bytes) -> CheckResult:
     """Read a file's bytes and report every problem; never raises."""
     if len(data) > MAX_FILE_SIZE:
-        size = f"{len(data)} bytes, more than {MAX_FILE_SIZE}"
-        return CheckResult([FileProblem(0, f"too large to be a parameter file ({size})")], None)
+        return CheckResult([FileProblem(0, _TOO_LARGE(len(data), MAX_FILE_SIZE))], None)
     lexer = _Lexer()
     lexer.run(data)
     if lexer.last_line == 0:
-        return CheckResult([FileProblem(0, "the file is empty")], None)
+        return CheckResult([FileProblem(0, _EMPTY())], None)
     problems = list(lexer.problems)
     header = Header(lexer.order, lexer.last_line)
     problems.extend(header.problems)
@@ -252,22 +280,11 @@ def check_bytes(data: bytes) -> CheckResult:
 def _check_integrity(lexer: _Lexer) -> list[FileProblem]:
     entry = lexer.checksum
     if entry is None:
-        return [
-            FileProblem(
-                lexer.last_line,
-                "no 'checksum = ...' line at the end: the file is truncated (a file written by "
-                "hand must end with one, e.g. 'checksum = crc32:00000000')",
-            )
-        ]
+        return [FileProblem(lexer.last_line, _NO_CHECKSUM())]
     if not _CHECKSUM.match(entry.value):
-        message = f"checksum {entry.value!r} is damaged (expected crc32: and 8 hex digits)"
-        return [FileProblem(entry.line, message)]
+        return [FileProblem(entry.line, _CHECKSUM_DAMAGED(repr(entry.value)))]
     if entry.value != checksum(lexer.seen):
-        message = (
-            "checksum does not match: the file was changed outside prm9tool (edited by hand?); "
-            "saving it from prm9tool writes a new checksum"
-        )
-        return [FileProblem(entry.line, message, "warning")]
+        return [FileProblem(entry.line, _CHECKSUM_CHANGED(), "warning")]
     return []
 
 
@@ -277,7 +294,8 @@ def check_file(path: str | os.PathLike[str]) -> CheckResult:
         with open(path, "rb") as stream:
             data = stream.read(MAX_FILE_SIZE + 1)
     except OSError as exc:
-        return CheckResult([FileProblem(0, f"cannot read the file: {exc.strerror or exc}")], None)
+        problem = FileProblem(0, _CANNOT_READ(exc.strerror or str(exc)))
+        return CheckResult([problem], None)
     return check_bytes(data)
 
 
@@ -316,7 +334,7 @@ def write_file(
     try:
         atomic_write(Path(path), text.encode("utf-8"), backup=backup)
     except OSError as exc:
-        problem = FileProblem(0, f"cannot save the file: {exc.strerror or exc}")
+        problem = FileProblem(0, _CANNOT_SAVE(exc.strerror or str(exc)))
         raise FileFormatError(os.fspath(path), [problem]) from exc
     return result.contents
 

@@ -10,7 +10,7 @@ from __future__ import annotations
 from PySide6.QtCore import QCoreApplication
 
 from prm9tool.i18n import current_language
-from prm9tool.messages import Message
+from prm9tool.messages import Message, message_of
 
 
 def translated(message: Message | str) -> str:
@@ -26,6 +26,4 @@ def error_text(error: BaseException) -> str:
     An error raised with a :class:`~prm9tool.messages.Message` (catalogue, document, type key,
     access level) is translated; any other gives ``str(error)``.
     """
-    if len(error.args) == 1 and isinstance(error.args[0], Message):
-        return translated(error.args[0])
-    return str(error)
+    return translated(message_of(error))

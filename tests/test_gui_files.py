@@ -96,6 +96,44 @@ def test_opening_a_broken_file_reports_the_line_and_changes_nothing(window, tmp_
     assert window.doc.value("LIMTA") == 2000 and window.doc.path is None
 
 
+def _factory_text(replaces: str, line: str) -> str:
+    lines = prmfile.PrmContents.factory(TypeKey.parse(E02)).to_text().splitlines()
+    return "\n".join(line if text.startswith(replaces) else text for text in lines) + "\n"
+
+
+def test_a_broken_file_is_reported_in_the_program_language(window, tmp_path, answers):
+    path = tmp_path / "broken.prm"
+    text = _factory_text("LIMTA =", "LIMTA = lots")
+    path.write_text(text, encoding="utf-8")
+    lines = [line.split(" =")[0] for line in text.splitlines()]
+    limta, checksum = lines.index("LIMTA") + 1, lines.index("checksum") + 1
+    window.set_language("de")
+    assert not window.files.open_path(path)
+    assert answers.asked[-1] == (
+        f"„broken.prm“ kann nicht geöffnet werden: broken.prm:{limta}: LIMTA: 'lots' ist keine "
+        "Zahl\n1 weiteres Problem in den Details.\n"
+        f"{path}:{limta}: LIMTA: 'lots' ist keine Zahl\n"
+        f"{path}:{checksum}: Warnung: Prüfsumme stimmt nicht: die Datei wurde außerhalb von "
+        "prm9tool geändert (von Hand bearbeitet?); Speichern aus prm9tool schreibt eine neue "
+        "Prüfsumme"
+    )
+    assert window.doc.path is None
+
+
+def test_the_warnings_of_an_opened_file_are_shown_in_the_program_language(
+    window, tmp_path, answers
+):
+    path = tmp_path / "edited.prm"
+    path.write_text(_factory_text("LIMTA =", "LIMTA = 2000"), encoding="utf-8")
+    window.set_language("cs")
+    assert window.files.open_path(path)
+    assert "edited.prm:" in answers.informed[-1]
+    assert (
+        ": varování: kontrolní součet nesouhlasí: soubor byl změněn mimo prm9tool"
+        in (answers.informed[-1])
+    )
+
+
 def test_unsaved_prompt_on_close_save_keeps_window_on_cancel(window, answers):
     window.doc.set_value("LIMTA", 2000)
     answers.answers = [prompts.Button.Cancel]

@@ -14,6 +14,7 @@ from hypothesis import strategies as st
 from prm9tool import atomicfile
 from prm9tool.catalogue import CATALOGUE
 from prm9tool.errors import FileFormatError, FileProblem
+from prm9tool.messages import Message
 from prm9tool.prmfile import (
     MAX_FILE_SIZE,
     PrmContents,
@@ -233,6 +234,38 @@ def test_a_setpoint_type_table_8_4_does_not_recommend_is_a_warning():
         in problems
     )
     assert all(p.severity == "warning" for p in problems)
+
+
+def test_problems_are_messages_a_view_translates_and_a_rule_keeps_its_own():
+    text = replace_line(factory_text(COIL_A), "AINSETP =", "AINSETP = 9")
+    text = replace_line(text, "LIMTA =", "LIMTA =")
+    values = read_bytes(factory_text(COIL_A).encode()).values | {"AINSETP": 9}
+    (rule,) = CATALOGUE.check_rules(COIL_A.variant, values)
+    recommended, empty, edited = problems_of(text)
+    assert recommended.text == rule.text  # the catalogue's message, not a copy of its English
+    assert isinstance(empty.text, Message) and empty.message == "LIMTA: no value after '='"
+    german = {
+        "{0}: no value after '='": "{0}: kein Wert nach '='",
+        "{0}:{1}: warning: {2}": "{0}:{1}: Warnung: {2}",
+        "{0} coil A{1}": "{0} Spule A{1}",
+    }
+
+    def translate(_context: str, source: str) -> str:
+        return german.get(source, source)
+
+    line = line_of(text, "LIMTA")
+    assert (
+        empty.located("f.prm").render(translate, "de") == f"f.prm:{line}: LIMTA: kein Wert nach '='"
+    )
+    assert (
+        recommended.located("f.prm")
+        .render(translate, "de")
+        .endswith(
+            ": Warnung: AINSETP: ±10 V bipolar is not a recommended setpoint type for E02 Spule A "
+            "valves (manual table 8-4)"
+        )
+    )
+    assert edited.format("f.prm").startswith(f"f.prm:{edited.line}: warning: checksum does not")
 
 
 def test_every_problem_of_a_file_is_reported_at_once_in_line_order():

@@ -1480,6 +1480,118 @@
             <source>{0}: no such parameter on a {1} valve</source>
             <translation>{0}: ventil {1} tento parametr nemá</translation>
         </message>
+        <message>
+            <source>{0}:{1}: warning: {2}</source>
+            <translation>{0}:{1}: varování: {2}</translation>
+        </message>
+        <message>
+            <source>expected {0} as the first entry: not a prm9tool parameter file, or its header is damaged</source>
+            <translation>jako první položka očekáváno {0}: nejde o záznam parametrů prm9tool, nebo je poškozena jeho hlavička</translation>
+        </message>
+        <message>
+            <source>format {0} is unknown; expected {1}</source>
+            <translation>formát {0} je neznámý; očekáváno: {1}</translation>
+        </message>
+        <message>
+            <source>format version {0} is newer than this prm9tool reads ({1}): update prm9tool</source>
+            <translation>verze formátu {0} je novější, než jakou tento prm9tool čte ({1}): aktualizujte prm9tool</translation>
+        </message>
+        <message>
+            <source>format version {0} does not exist</source>
+            <translation>verze formátu {0} neexistuje</translation>
+        </message>
+        <message>
+            <source>no 'type_key = ...' entry: the header is incomplete</source>
+            <translation>chybí položka 'type_key = ...': hlavička je neúplná</translation>
+        </message>
+        <message>
+            <source>serial {0} must be a whole number {1} … {2}</source>
+            <translation>výrobní číslo {0} musí být celé číslo {1} … {2}</translation>
+        </message>
+        <message>
+            <source>firmware is empty; the line is left out when saving</source>
+            <translation>firmware je prázdný; při uložení se řádek vynechá</translation>
+        </message>
+        <message>
+            <source>unknown parameter {0}: kept and written back unchanged</source>
+            <translation>neznámý parametr {0}: ponechá se a zapíše zpět beze změny</translation>
+        </message>
+        <message>
+            <source>unknown parameter {0}: kept and written back unchanged (did you mean {1}?)</source>
+            <translation>neznámý parametr {0}: ponechá se a zapíše zpět beze změny (měli jste na mysli {1}?)</translation>
+        </message>
+        <message>
+            <source>{0} ({1}) is a read-only value, not a setting a parameter file can hold</source>
+            <translation>{0} ({1}) je hodnota pouze pro čtení, ne nastavení, které může záznam parametrů obsahovat</translation>
+        </message>
+        <message>
+            <source>{0} ({1}) is set online only and does not belong in a parameter file</source>
+            <translation>{0} ({1}) se nastavuje pouze v režimu online a do záznamu parametrů nepatří</translation>
+        </message>
+        <message>
+            <source>{0} ({1}) does not exist on {2} valves (type key {3}); remove the line or change the type key</source>
+            <translation>{0} ({1}) u ventilů {2} neexistuje (typový klíč {3}); odstraňte řádek nebo změňte typový klíč</translation>
+        </message>
+        <message>
+            <source>{0}: no value after '='</source>
+            <translation>{0}: za '=' chybí hodnota</translation>
+        </message>
+        <message>
+            <source>{0}: {1}{2} is stored as {3}{2}, the nearest value the valve can hold</source>
+            <translation>{0}: {1}{2} se uloží jako {3}{2}, nejbližší hodnota, kterou ventil dokáže uložit</translation>
+        </message>
+        <message>
+            <source>{0} ({1}) is missing (required for {2} valves)</source>
+            <translation>{0} ({1}) chybí (povinný pro ventily {2})</translation>
+        </message>
+        <message>
+            <source>byte 0x{0} is not UTF-8 text: the file is corrupt</source>
+            <translation>bajt 0x{0} není text UTF-8: soubor je poškozený</translation>
+        </message>
+        <message>
+            <source>control character U+{0}: binary data, the file is corrupt</source>
+            <translation>řídicí znak U+{0}: binární data, soubor je poškozený</translation>
+        </message>
+        <message>
+            <source>text after the checksum line, which must be the last line</source>
+            <translation>text za řádkem kontrolního součtu, který musí být poslední</translation>
+        </message>
+        <message>
+            <source>garbled line: expected 'NAME = value', a '#' comment or a blank line</source>
+            <translation>nečitelný řádek: očekáváno 'NÁZEV = hodnota', komentář '#' nebo prázdný řádek</translation>
+        </message>
+        <message>
+            <source>{0} is set twice (first on line {1})</source>
+            <translation>{0} je nastaven dvakrát (poprvé na řádku {1})</translation>
+        </message>
+        <message>
+            <source>too large to be a parameter file ({0} bytes, more than {1})</source>
+            <translation>příliš velký na záznam parametrů ({0} bajtů, více než {1})</translation>
+        </message>
+        <message>
+            <source>the file is empty</source>
+            <translation>soubor je prázdný</translation>
+        </message>
+        <message>
+            <source>no 'checksum = ...' line at the end: the file is truncated (a file written by hand must end with one, e.g. 'checksum = crc32:00000000')</source>
+            <translation>na konci chybí řádek 'checksum = ...': soubor je zkrácený (ručně psaný soubor musí takovým řádkem končit, např. 'checksum = crc32:00000000')</translation>
+        </message>
+        <message>
+            <source>checksum {0} is damaged (expected crc32: and 8 hex digits)</source>
+            <translation>kontrolní součet {0} je poškozený (očekáváno: crc32: a 8 šestnáctkových číslic)</translation>
+        </message>
+        <message>
+            <source>checksum does not match: the file was changed outside prm9tool (edited by hand?); saving it from prm9tool writes a new checksum</source>
+            <translation>kontrolní součet nesouhlasí: soubor byl změněn mimo prm9tool (ručně upraven?); uložením z prm9tool se zapíše nový kontrolní součet</translation>
+        </message>
+        <message>
+            <source>cannot read the file: {0}</source>
+            <translation>soubor nelze přečíst: {0}</translation>
+        </message>
+        <message>
+            <source>cannot save the file: {0}</source>
+            <translation>soubor nelze uložit: {0}</translation>
+        </message>
     </context>
     <context>
         <name>RampsDialog</name>

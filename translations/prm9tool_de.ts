@@ -1476,6 +1476,118 @@
             <source>{0}: no such parameter on a {1} valve</source>
             <translation>{0}: Diesen Parameter gibt es beim Ventil {1} nicht</translation>
         </message>
+        <message>
+            <source>{0}:{1}: warning: {2}</source>
+            <translation>{0}:{1}: Warnung: {2}</translation>
+        </message>
+        <message>
+            <source>expected {0} as the first entry: not a prm9tool parameter file, or its header is damaged</source>
+            <translation>{0} als erster Eintrag erwartet: keine Parameterdatei von prm9tool, oder ihr Kopf ist beschädigt</translation>
+        </message>
+        <message>
+            <source>format {0} is unknown; expected {1}</source>
+            <translation>Format {0} ist unbekannt; erwartet: {1}</translation>
+        </message>
+        <message>
+            <source>format version {0} is newer than this prm9tool reads ({1}): update prm9tool</source>
+            <translation>Formatversion {0} ist neuer als die, die dieses prm9tool liest ({1}): prm9tool aktualisieren</translation>
+        </message>
+        <message>
+            <source>format version {0} does not exist</source>
+            <translation>Formatversion {0} gibt es nicht</translation>
+        </message>
+        <message>
+            <source>no 'type_key = ...' entry: the header is incomplete</source>
+            <translation>kein Eintrag 'type_key = ...': der Kopf ist unvollständig</translation>
+        </message>
+        <message>
+            <source>serial {0} must be a whole number {1} … {2}</source>
+            <translation>Seriennummer {0} muss eine ganze Zahl {1} … {2} sein</translation>
+        </message>
+        <message>
+            <source>firmware is empty; the line is left out when saving</source>
+            <translation>firmware ist leer; die Zeile entfällt beim Speichern</translation>
+        </message>
+        <message>
+            <source>unknown parameter {0}: kept and written back unchanged</source>
+            <translation>unbekannter Parameter {0}: bleibt erhalten und wird unverändert zurückgeschrieben</translation>
+        </message>
+        <message>
+            <source>unknown parameter {0}: kept and written back unchanged (did you mean {1}?)</source>
+            <translation>unbekannter Parameter {0}: bleibt erhalten und wird unverändert zurückgeschrieben (meinten Sie {1}?)</translation>
+        </message>
+        <message>
+            <source>{0} ({1}) is a read-only value, not a setting a parameter file can hold</source>
+            <translation>{0} ({1}) ist ein nur lesbarer Wert, keine Einstellung, die eine Parameterdatei enthalten kann</translation>
+        </message>
+        <message>
+            <source>{0} ({1}) is set online only and does not belong in a parameter file</source>
+            <translation>{0} ({1}) wird nur online eingestellt und gehört nicht in eine Parameterdatei</translation>
+        </message>
+        <message>
+            <source>{0} ({1}) does not exist on {2} valves (type key {3}); remove the line or change the type key</source>
+            <translation>{0} ({1}) gibt es bei Ventilen {2} nicht (Typschlüssel {3}); die Zeile entfernen oder den Typschlüssel ändern</translation>
+        </message>
+        <message>
+            <source>{0}: no value after '='</source>
+            <translation>{0}: kein Wert nach '='</translation>
+        </message>
+        <message>
+            <source>{0}: {1}{2} is stored as {3}{2}, the nearest value the valve can hold</source>
+            <translation>{0}: {1}{2} wird als {3}{2} gespeichert, der nächste Wert, den das Ventil speichern kann</translation>
+        </message>
+        <message>
+            <source>{0} ({1}) is missing (required for {2} valves)</source>
+            <translation>{0} ({1}) fehlt (erforderlich für Ventile {2})</translation>
+        </message>
+        <message>
+            <source>byte 0x{0} is not UTF-8 text: the file is corrupt</source>
+            <translation>Byte 0x{0} ist kein UTF-8-Text: die Datei ist beschädigt</translation>
+        </message>
+        <message>
+            <source>control character U+{0}: binary data, the file is corrupt</source>
+            <translation>Steuerzeichen U+{0}: Binärdaten, die Datei ist beschädigt</translation>
+        </message>
+        <message>
+            <source>text after the checksum line, which must be the last line</source>
+            <translation>Text nach der Prüfsummenzeile, die die letzte Zeile sein muss</translation>
+        </message>
+        <message>
+            <source>garbled line: expected 'NAME = value', a '#' comment or a blank line</source>
+            <translation>unlesbare Zeile: erwartet 'NAME = Wert', einen '#'-Kommentar oder eine Leerzeile</translation>
+        </message>
+        <message>
+            <source>{0} is set twice (first on line {1})</source>
+            <translation>{0} ist zweimal gesetzt (zuerst in Zeile {1})</translation>
+        </message>
+        <message>
+            <source>too large to be a parameter file ({0} bytes, more than {1})</source>
+            <translation>zu groß für eine Parameterdatei ({0} Bytes, mehr als {1})</translation>
+        </message>
+        <message>
+            <source>the file is empty</source>
+            <translation>die Datei ist leer</translation>
+        </message>
+        <message>
+            <source>no 'checksum = ...' line at the end: the file is truncated (a file written by hand must end with one, e.g. 'checksum = crc32:00000000')</source>
+            <translation>keine Zeile 'checksum = ...' am Ende: die Datei ist abgeschnitten (eine von Hand geschriebene Datei muss mit einer solchen Zeile enden, z. B. 'checksum = crc32:00000000')</translation>
+        </message>
+        <message>
+            <source>checksum {0} is damaged (expected crc32: and 8 hex digits)</source>
+            <translation>Prüfsumme {0} ist beschädigt (erwartet: crc32: und 8 Hexadezimalziffern)</translation>
+        </message>
+        <message>
+            <source>checksum does not match: the file was changed outside prm9tool (edited by hand?); saving it from prm9tool writes a new checksum</source>
+            <translation>Prüfsumme stimmt nicht: die Datei wurde außerhalb von prm9tool geändert (von Hand bearbeitet?); Speichern aus prm9tool schreibt eine neue Prüfsumme</translation>
+        </message>
+        <message>
+            <source>cannot read the file: {0}</source>
+            <translation>die Datei kann nicht gelesen werden: {0}</translation>
+        </message>
+        <message>
+            <source>cannot save the file: {0}</source>
+            <translation>die Datei kann nicht gespeichert werden: {0}</translation>
+        </message>
     </context>
     <context>
         <name>RampsDialog</name>

@@ -8,7 +8,8 @@ from PySide6.QtCore import QObject, QSettings, Signal
 from PySide6.QtWidgets import QFileDialog, QMenu, QWidget
 
 from prm9tool.document import ParameterDocument
-from prm9tool.errors import FileFormatError
+from prm9tool.errors import FileFormatError, FileProblem
+from prm9tool.translate import translated
 from prm9tool.typekey import TypeKey
 from prm9tool.undo import DocumentUndo
 from prm9tool.views import prompts
@@ -145,7 +146,7 @@ class FileWorkflow(QObject):
                 self.tr(
                     "“{0}” was opened; %n warning(s) were found.", "", len(contents.warnings)
                 ).format(path.name),
-                "\n".join(p.format(path.name) for p in contents.warnings),
+                _problem_lines(path.name, contents.warnings),
             )
         return True
 
@@ -197,7 +198,7 @@ class FileWorkflow(QObject):
 
     def _report_file_error(self, title: str, exc: FileFormatError) -> None:
         problems = exc.problems
-        first = problems[0].format(Path(exc.path).name) if problems else str(exc)
+        first = translated(problems[0].located(Path(exc.path).name)) if problems else str(exc)
         more = (
             self.tr("%n more problem(s) in the details.", "", len(problems) - 1)
             if len(problems) > 1
@@ -209,5 +210,10 @@ class FileWorkflow(QObject):
             title,
             f"{first}\n{more}".strip(),
             prompts.Button.Ok,
-            details=str(exc) if len(problems) > 1 else "",
+            details=_problem_lines(exc.path, problems) if len(problems) > 1 else "",
         )
+
+
+def _problem_lines(path: str, problems: list[FileProblem]) -> str:
+    """``FILE:LINE: problem`` for each problem, in the program language."""
+    return "\n".join(translated(problem.located(path)) for problem in problems)
