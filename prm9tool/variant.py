@@ -5,6 +5,8 @@ from __future__ import annotations
 from dataclasses import dataclass
 from enum import StrEnum
 
+from prm9tool.messages import QT_TRANSLATE_NOOP, Message
+
 
 class Config(StrEnum):
     """Electronics configuration (manual §1.2)."""
@@ -31,9 +33,18 @@ class Variant:
 
     @property
     def label(self) -> str:
-        """Short label such as ``E04 coil A -CA``."""
-        coils = {Coils.AB: "two coils", Coils.A: "coil A", Coils.B: "coil B"}[self.coils]
-        return f"{self.config.value} {coils}{' -CA' if self.canopen else ''}"
+        """Short English label such as ``E04 coil A -CA`` (a view shows :func:`variant_label`)."""
+        return str(variant_label(self))
+
+
+def variant_label(variant: Variant) -> Message:
+    """``variant.label`` (e.g. ``E04 coil A -CA``) as a translatable message."""
+    coils = {
+        Coils.AB: QT_TRANSLATE_NOOP("Problems", "{0} two coils{1}"),
+        Coils.A: QT_TRANSLATE_NOOP("Problems", "{0} coil A{1}"),
+        Coils.B: QT_TRANSLATE_NOOP("Problems", "{0} coil B{1}"),
+    }[variant.coils]
+    return coils(variant.config.value, " -CA" if variant.canopen else "")
 
 
 ALL_VARIANTS: tuple[Variant, ...] = tuple(

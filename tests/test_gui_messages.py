@@ -155,3 +155,15 @@ def test_hid_dialog_describes_emulated_valves_in_german(qtbot, tmp_path, languag
     assert dialog.table.item(0, 4).text() == (
         "emuliertes Ventil PRM9-06.3Z11/30-24E02S02-CA, Seriennummer 1001"
     )
+
+
+@pytest.mark.parametrize(
+    ("lang", "label"),
+    [("en", "E04 coil A -CA"), ("de", "E04 Spule A -CA"), ("cs", "E04 cívka A -CA")],
+)
+def test_the_variant_label_is_shown_in_the_program_language(language, lang, label):
+    from prm9tool.translate import translated
+    from prm9tool.variant import Coils, Config, Variant, variant_label
+
+    language(lang)
+    assert translated(variant_label(Variant(Config.E04, Coils.A, canopen=True))) == label

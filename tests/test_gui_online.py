@@ -183,6 +183,22 @@ def test_upload_shows_a_progress_dialog_and_stores(qtbot, window):
     assert not window.sync.unstored
 
 
+def test_upload_to_a_valve_of_another_variant_names_both_in_the_program_language(
+    qtbot, window, answers
+):
+    go_online(qtbot, window)
+    _settled(qtbot, window)
+    with window.sync.suspended():
+        window.doc.set_type_key("PRM9-06.2Z51/30-24E04S02-CA")
+    window.set_language("cs")
+    window.valve.upload()
+    assert answers.asked[-1] == (
+        "Načtení do ventilu: Dokument je pro ventil E04 cívka A -CA, připojený ventil je "
+        "E02 dvě cívky. Zvolte odpovídající typ ventilu nebo nejprve stáhněte parametry z ventilu."
+    )
+    assert window.valve.progress_dialog is None  # nothing was written
+
+
 def test_cancelling_the_progress_dialog_cancels_the_operation(qtbot, window, answers):
     go_online(qtbot, window)
     _settled(qtbot, window)

@@ -41,7 +41,7 @@ from prm9tool.catalogue.schema import (
     Texts,
 )
 from prm9tool.messages import QT_TRANSLATE_NOOP, Message
-from prm9tool.variant import Coils, Variant
+from prm9tool.variant import Coils, Variant, variant_label
 
 __all__ = [
     "CAPPED_BY",
@@ -89,16 +89,6 @@ class Problem:
     def message(self) -> str:
         """The problem in English (files, the command line)."""
         return str(self.text)
-
-
-def variant_label(variant: Variant) -> Message:
-    """``variant.label`` (e.g. ``E04 coil A -CA``) as a translatable message."""
-    coils = {
-        Coils.AB: QT_TRANSLATE_NOOP("Problems", "{0} two coils{1}"),
-        Coils.A: QT_TRANSLATE_NOOP("Problems", "{0} coil A{1}"),
-        Coils.B: QT_TRANSLATE_NOOP("Problems", "{0} coil B{1}"),
-    }[variant.coils]
-    return coils(variant.config.value, " -CA" if variant.canopen else "")
 
 
 class Catalogue:

@@ -14,11 +14,12 @@ from typing import Any
 from PySide6.QtCore import QObject, QSettings, Qt, Signal
 from PySide6.QtWidgets import QDialog, QProgressDialog, QWidget
 
+from prm9tool.catalogue import variant_label
 from prm9tool.connection import ValveConnection
 from prm9tool.document import ParameterDocument, Raw
 from prm9tool.errors import TypeKeyError
 from prm9tool.sync import ValveSync
-from prm9tool.translate import error_text
+from prm9tool.translate import error_text, translated
 from prm9tool.typekey import TypeKey
 from prm9tool.undo import DocumentUndo
 from prm9tool.views import prompts
@@ -227,7 +228,10 @@ class ValveWorkflow(QObject):
                 self.tr(
                     "The document is for a {0} valve, the connected valve is a {1} valve. "
                     "Choose the matching valve type or download the valve's parameters first."
-                ).format(self._doc.variant.label, key.variant.label),
+                ).format(
+                    translated(variant_label(self._doc.variant)),
+                    translated(variant_label(key.variant)),
+                ),
                 prompts.Button.Ok,
             )
             return
