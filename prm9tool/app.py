@@ -19,6 +19,7 @@ from prm9tool.cli import ExitCode
 if TYPE_CHECKING:
     from PySide6.QtWidgets import QApplication
 
+    from prm9tool.errors import Prm9Error
     from prm9tool.views.main_window import MainWindow
 
 
@@ -29,15 +30,17 @@ class StartPlan:
     file: Path | None
     emulators: list[str]
     devices: list[str]
+    spools_problem: Prm9Error | None = None  # why the user's spools.json was left out
 
 
-def plan_from(args: argparse.Namespace) -> StartPlan:
-    """Read the GUI-relevant options of the command line."""
+def plan_from(args: argparse.Namespace, spools_problem: Prm9Error | None = None) -> StartPlan:
+    """Read the GUI-relevant options of the command line (and what went wrong before)."""
     emulators = [
         _emulator_spec(spec) for spec in (getattr(args, "emulator", None) or []) if spec is not None
     ]
     file = Path(args.file) if getattr(args, "file", None) else None
-    return StartPlan(file, emulators, list(getattr(args, "device", None) or []))
+    devices = list(getattr(args, "device", None) or [])
+    return StartPlan(file, emulators, devices, spools_problem)
 
 
 def _emulator_spec(spec: str) -> str:
@@ -85,9 +88,11 @@ def create_window(args: argparse.Namespace) -> MainWindow:
 
 
 def start(window: MainWindow, plan: StartPlan) -> None:
-    """Open the file and/or go online, as the command line asked."""
+    """Say why spools.json was left out, open the file and/or go online, as asked."""
     from PySide6.QtCore import QCoreApplication
 
+    if plan.spools_problem is not None:
+        _report_spools_problem(window, plan.spools_problem)
     if plan.file is not None:
         window.files.open_path(plan.file, ask=False)
     if plan.emulators:
@@ -100,6 +105,20 @@ def start(window: MainWindow, plan: StartPlan) -> None:
         else:
             message = QCoreApplication.translate("App", "--device {0}: no such valve")
             window.status.showMessage(message.format(plan.devices[0]), 10000)
+
+
+def _report_spools_problem(window: MainWindow, problem: Prm9Error) -> None:
+    """A message (not blocking the window) that the user's spools.json is broken."""
+    from PySide6.QtCore import QCoreApplication
+
+    from prm9tool.translate import error_text
+    from prm9tool.views import prompts
+
+    text = QCoreApplication.translate(
+        "App", "{0}\n\nUntil the file is corrected, prm9tool knows only the spools it ships."
+    )
+    title = QCoreApplication.translate("App", "Spool catalogue")
+    prompts.inform(window, prompts.Icon.Warning, title, text.format(error_text(problem)))
 
 
 def _start_emulated(window: MainWindow, specs: list[str]) -> None:
@@ -163,11 +182,11 @@ def _lister(emulators: object) -> list[object]:
     return list(factory.list_devices(emulators))  # type: ignore[arg-type]
 
 
-def run(args: argparse.Namespace) -> int:
-    """Start the GUI; returns the exit code."""
+def run(args: argparse.Namespace, spools_problem: Prm9Error | None = None) -> int:
+    """Start the GUI (``spools_problem``: why spools.json was left out); returns the exit code."""
     app = create_application()
     window = create_window(args)
     window.show()
-    start(window, plan_from(args))
+    start(window, plan_from(args, spools_problem))
     code = app.exec()
     return ExitCode.OK if code == 0 else int(code)

@@ -10,6 +10,10 @@ import argparse
 import sys
 from collections.abc import Sequence
 from enum import IntEnum
+from typing import TYPE_CHECKING
+
+if TYPE_CHECKING:
+    from prm9tool.errors import TypeKeyError
 
 
 class ExitCode(IntEnum):
@@ -187,7 +191,7 @@ def main(argv: Sequence[str] | None = None) -> int:
 
         print(f"prm9tool {__version__}")
         return ExitCode.OK
-    _load_user_spools()
+    spools_problem = _load_user_spools()
     if args.new is not None or args.check is not None:
         from prm9tool import prmcli
 
@@ -202,14 +206,15 @@ def main(argv: Sequence[str] | None = None) -> int:
         return run_batch(args)
     from prm9tool.app import run as run_app
 
-    return run_app(args)
+    return run_app(args, spools_problem)
 
 
-def _load_user_spools() -> None:
+def _load_user_spools() -> TypeKeyError | None:
     """Extend the spool catalogue with ``<user data dir>/spools.json`` (SPEC §2.2).
 
-    A broken file is reported on standard error and left out: type keys with the spools the
-    program ships keep working, and one with a missing spool says which spools are known.
+    A broken file is reported on standard error (the GUI shows the returned error as well) and
+    left out: type keys with the spools the program ships keep working, and one with a
+    missing spool says which spools are known.
     """
     from prm9tool.backup import user_data_dir
     from prm9tool.errors import TypeKeyError
@@ -219,6 +224,8 @@ def _load_user_spools() -> None:
         load_user_spools(user_data_dir())
     except TypeKeyError as exc:
         print(f"prm9tool: warning: {exc}; using the spools shipped with prm9tool", file=sys.stderr)
+        return exc
+    return None
 
 
 if __name__ == "__main__":  # pragma: no cover

@@ -17,6 +17,7 @@ from __future__ import annotations
 
 import json
 from dataclasses import dataclass
+from enum import StrEnum
 from pathlib import Path
 from typing import NoReturn
 
@@ -28,6 +29,14 @@ FLOWS: dict[str, tuple[str, ...]] = {"06": ("05", "08", "15", "30"), "10": ("30"
 SUPPLIES = ("24",)
 
 
+class SpoolSource(StrEnum):
+    """Where the program knows a spool code from."""
+
+    MANUAL = "manual"  # named in the valve manual
+    ASSUMED = "assumed"  # shipped with prm9tool, an assumption of ours
+    USER = "user"  # the user's spools.json
+
+
 @dataclass(frozen=True)
 class Spool:
     """A spool code and what it means for the electronics."""
@@ -35,19 +44,25 @@ class Spool:
     code: str
     coils: Coils
     description: str
-    from_manual: bool  # True: named in the manual; False: an assumption of ours
+    source: SpoolSource
+
+    @property
+    def from_manual(self) -> bool:
+        """True for a spool the manual names (it cannot be redefined)."""
+        return self.source is SpoolSource.MANUAL
 
 
+_ASSUMED = SpoolSource.ASSUMED
 SPOOLS: dict[str, Spool] = {
     s.code: s
     for s in (
-        Spool("3Z11", Coils.AB, "3 positions, two solenoids A and B", True),
-        Spool("3Z12", Coils.AB, "3 positions, two solenoids A and B", False),
-        Spool("3Y11", Coils.AB, "3 positions, two solenoids A and B", False),
-        Spool("2Z51", Coils.A, "2 positions, one solenoid on side A", False),
-        Spool("2Y51", Coils.A, "2 positions, one solenoid on side A", False),
-        Spool("2Z61", Coils.B, "2 positions, one solenoid on side B", False),
-        Spool("2Y61", Coils.B, "2 positions, one solenoid on side B", False),
+        Spool("3Z11", Coils.AB, "3 positions, two solenoids A and B", SpoolSource.MANUAL),
+        Spool("3Z12", Coils.AB, "3 positions, two solenoids A and B", _ASSUMED),
+        Spool("3Y11", Coils.AB, "3 positions, two solenoids A and B", _ASSUMED),
+        Spool("2Z51", Coils.A, "2 positions, one solenoid on side A", _ASSUMED),
+        Spool("2Y51", Coils.A, "2 positions, one solenoid on side A", _ASSUMED),
+        Spool("2Z61", Coils.B, "2 positions, one solenoid on side B", _ASSUMED),
+        Spool("2Y61", Coils.B, "2 positions, one solenoid on side B", _ASSUMED),
     )
 }
 
@@ -74,33 +89,52 @@ def load_extra_spools(path: Path) -> list[str]:
     try:
         entries = json.loads(path.read_text(encoding="utf-8"))
     except (OSError, ValueError) as exc:
-        raise TypeKeyError(f"spool catalogue {path}: {exc}") from exc
+        raise TypeKeyError(_SPOOL_FILE(str(path), str(exc))) from exc
     if not isinstance(entries, list):
-        raise TypeKeyError(f"spool catalogue {path}: expected a list of spools")
+        raise TypeKeyError(_SPOOL_FILE(str(path), _NOT_A_LIST()))
     new: dict[str, Spool] = {}
     for number, entry in enumerate(entries, 1):
         try:
             spool = _user_spool(entry)
-        except (TypeError, ValueError, KeyError) as exc:
-            raise TypeKeyError(f"spool catalogue {path}: entry {number}: {exc}") from None
+        except _SpoolError as exc:
+            raise TypeKeyError(_SPOOL_ENTRY(str(path), number, exc.args[0])) from None
         new[spool.code] = spool
     SPOOLS.update(new)
     return list(new)
 
 
+class _SpoolError(Exception):
+    """What is wrong with one entry of a spools.json (a Message)."""
+
+
 def _user_spool(entry: object) -> Spool:
     if not isinstance(entry, dict):
-        raise TypeError("expected an object with code, coils and description")
+        raise _SpoolError(_NOT_AN_OBJECT())
+    for key in ("code", "coils"):
+        if key not in entry:
+            raise _SpoolError(_NO_KEY(repr(key)))
     code = str(entry["code"]).strip().upper()
     if not code or any(c not in _CODE for c in code):
-        raise ValueError(f"code {code!r} must be letters and digits only")
+        raise _SpoolError(_BAD_CODE(repr(code)))
     known = SPOOLS.get(code)
     if known is not None and known.from_manual:
-        raise ValueError(f"spool {code} is named in the manual and cannot be redefined")
+        raise _SpoolError(_MANUAL_SPOOL(code))
     coils = entry["coils"]
-    if coils not in {c.value for c in Coils}:
-        raise ValueError(f"coils {coils!r} must be AB, A or B")
-    return Spool(code, Coils(coils), str(entry.get("description", "")), False)
+    if not isinstance(coils, str) or coils not in {c.value for c in Coils}:
+        raise _SpoolError(_BAD_COILS(repr(coils)))
+    return Spool(code, Coils(coils), str(entry.get("description", "")), SpoolSource.USER)
+
+
+_SPOOL_FILE = QT_TRANSLATE_NOOP("TypeKey", "spool catalogue {0}: {1}")
+_SPOOL_ENTRY = QT_TRANSLATE_NOOP("TypeKey", "spool catalogue {0}: entry {1}: {2}")
+_NOT_A_LIST = QT_TRANSLATE_NOOP("TypeKey", "expected a list of spools")
+_NOT_AN_OBJECT = QT_TRANSLATE_NOOP("TypeKey", "expected an object with code, coils and description")
+_NO_KEY = QT_TRANSLATE_NOOP("TypeKey", "{0} is missing")
+_BAD_CODE = QT_TRANSLATE_NOOP("TypeKey", "code {0} must be letters and digits only")
+_MANUAL_SPOOL = QT_TRANSLATE_NOOP(
+    "TypeKey", "spool {0} is named in the manual and cannot be redefined"
+)
+_BAD_COILS = QT_TRANSLATE_NOOP("TypeKey", "coils {0} must be AB, A or B")
 
 
 @dataclass(frozen=True)

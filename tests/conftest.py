@@ -24,3 +24,14 @@ def _isolated_user_dirs(tmp_path_factory: pytest.TempPathFactory, monkeypatch: p
     monkeypatch.setenv("XDG_CONFIG_HOME", str(base / "config"))
     monkeypatch.setenv("XDG_DATA_HOME", str(base / "share"))
     return base
+
+
+@pytest.fixture
+def spools():
+    """The spool catalogue, as shipped again after the test (which may load a spools.json)."""
+    from prm9tool.typekey import SPOOLS
+
+    shipped = dict(SPOOLS)
+    yield SPOOLS
+    SPOOLS.clear()
+    SPOOLS.update(shipped)

@@ -423,8 +423,8 @@ class _GuiStartedError(Exception):
 def gui(monkeypatch):
     """Stands in for the GUI: ``main`` raises _GuiStartedError instead of opening a window."""
 
-    def start(args):
-        raise _GuiStartedError(args)
+    def start(args, spools_problem=None):
+        raise _GuiStartedError(args, spools_problem)
 
     monkeypatch.setattr(app, "run", start)
 

@@ -2,15 +2,19 @@
 
 from __future__ import annotations
 
+import os
+from pathlib import Path
+
 import pytest
 from gui_support import record_prompts
 from PySide6.QtCore import QSettings, QTimer
 from PySide6.QtWidgets import QApplication
 
-from prm9tool import app, prmfile
-from prm9tool.cli import build_parser
+from prm9tool import app, i18n, prmfile
+from prm9tool.cli import build_parser, main
 from prm9tool.device import factory
-from prm9tool.typekey import TypeKey
+from prm9tool.errors import TypeKeyError
+from prm9tool.typekey import USER_SPOOLS_FILE, TypeKey, load_user_spools
 
 E04_CA = "PRM9-10.3Z11/60-24E04S02-CA"
 TIMEOUT = 15_000
@@ -21,6 +25,7 @@ def answers(monkeypatch, tmp_path):
     QSettings.setPath(QSettings.Format.NativeFormat, QSettings.Scope.UserScope, str(tmp_path))
     yield record_prompts(monkeypatch)
     factory.forget_emulated_valves()
+    i18n.set_language("en")
 
 
 def _args(*argv):
@@ -71,3 +76,39 @@ def test_a_bad_emulator_type_key_is_reported(qtbot, answers):
 def test_run_shows_the_window_and_returns_when_it_closes(answers):
     QTimer.singleShot(300, QApplication.closeAllWindows)
     assert app.run(_args()) == 0
+
+
+def _broken_spools_json() -> Path:
+    path = Path(os.environ["PRM9TOOL_DATA_DIR"]) / USER_SPOOLS_FILE  # conftest: of this test
+    path.parent.mkdir(parents=True, exist_ok=True)
+    path.write_text('[{"code": "4Z21", "coils": "C"}]', encoding="utf-8")
+    return path
+
+
+def test_the_gui_is_told_why_spools_json_was_left_out(monkeypatch, capsys, spools):
+    path = _broken_spools_json()
+    started = []
+    monkeypatch.setattr(app, "run", lambda args, problem=None: started.append(problem) or 0)
+    assert main([]) == 0
+    (problem,) = started
+    assert str(problem) == f"spool catalogue {path}: entry 1: coils 'C' must be AB, A or B"
+    assert "prm9tool: warning: spool catalogue" in capsys.readouterr().err
+    assert "4Z21" not in spools
+
+
+def test_a_broken_spools_json_is_shown_once_at_start_in_the_program_language(
+    qtbot, answers, spools
+):
+    path = _broken_spools_json()
+    with pytest.raises(TypeKeyError) as caught:
+        load_user_spools(path.parent)
+    app.create_application()
+    window = app.create_window(_args())
+    qtbot.addWidget(window)
+    window.set_language("de")
+    app.start(window, app.plan_from(_args(), caught.value))
+    assert answers.informed == [
+        f"Schieberkatalog: Schieberkatalog {path}: Eintrag 1: coils 'C' muss AB, A oder B sein"
+        "\n\nBis die Datei korrigiert ist, kennt prm9tool nur die mitgelieferten Schieber."
+    ]
+    window.connection.shutdown()

@@ -3,6 +3,7 @@ and Czech when the program runs in that language; English again after switching 
 
 from __future__ import annotations
 
+import json
 from dataclasses import dataclass
 
 import pytest
@@ -167,3 +168,25 @@ def test_the_variant_label_is_shown_in_the_program_language(language, lang, labe
 
     language(lang)
     assert translated(variant_label(Variant(Config.E04, Coils.A, canopen=True))) == label
+
+
+def test_valve_selection_marks_the_spools_of_the_users_spools_json(
+    qtbot, tmp_path, spools, language
+):
+    from prm9tool.typekey import USER_SPOOLS_FILE, load_user_spools
+
+    user = [{"code": "4Z21", "coils": "B"}, {"code": "3Z12", "coils": "AB"}]
+    (tmp_path / USER_SPOOLS_FILE).write_text(json.dumps(user), encoding="utf-8")
+    load_user_spools(tmp_path)
+    language("de")
+    dialog = ValveSelectionDialog()
+    qtbot.addWidget(dialog)
+    items = {dialog.spool.itemData(row): dialog.spool.itemText(row) for row in range(len(spools))}
+    assert items["3Z11"] == "3Z11 – zwei Magnete A und B"
+    assert items["3Y11"] == "3Y11 – zwei Magnete A und B (Annahme)"
+    assert items["3Z12"] == "3Z12 – zwei Magnete A und B (Ihre spools.json)"  # replaced ours
+    assert items["4Z21"] == "4Z21 – ein Magnet auf Seite B (Ihre spools.json)"
+    language("en")
+    assert dialog.spool.itemText(dialog.spool.findData("4Z21")) == (
+        "4Z21 – one solenoid on side B (your spools.json)"
+    )

@@ -12,7 +12,14 @@ from pathlib import Path
 import pytest
 
 from prm9tool.errors import TypeKeyError
-from prm9tool.typekey import SPOOLS, USER_SPOOLS_FILE, TypeKey, all_type_keys, load_user_spools
+from prm9tool.typekey import (
+    SPOOLS,
+    USER_SPOOLS_FILE,
+    SpoolSource,
+    TypeKey,
+    all_type_keys,
+    load_user_spools,
+)
 from prm9tool.variant import Coils, Config
 
 
@@ -26,7 +33,8 @@ def test_manual_example_parses():
         False,
     )
     assert key.coils is Coils.AB
-    assert SPOOLS["3Z11"].from_manual
+    assert SPOOLS["3Z11"].from_manual and SPOOLS["3Z11"].source is SpoolSource.MANUAL
+    assert SPOOLS["2Z51"].source is SpoolSource.ASSUMED
 
 
 def test_every_key_round_trips():
@@ -111,15 +119,6 @@ def test_a_missing_part_is_named(text, part):
     assert str(caught.value) == f"type key {text!r}: the {part} is missing"
 
 
-@pytest.fixture
-def spools():
-    """The spool catalogue as shipped again after the test."""
-    shipped = dict(SPOOLS)
-    yield SPOOLS
-    SPOOLS.clear()
-    SPOOLS.update(shipped)
-
-
 def _spool_file(folder, entries) -> None:
     folder.mkdir(parents=True, exist_ok=True)
     (folder / USER_SPOOLS_FILE).write_text(json.dumps(entries), encoding="utf-8")
@@ -129,7 +128,7 @@ def test_a_user_extends_the_spool_catalogue(tmp_path, spools):
     _spool_file(tmp_path, [{"code": "4z21", "coils": "B", "description": "our own"}])
     assert load_user_spools(tmp_path) == ["4Z21"]
     key = TypeKey.parse("PRM9-06.4Z21/30-24E02S02")
-    assert key.coils is Coils.B and not spools["4Z21"].from_manual
+    assert key.coils is Coils.B and spools["4Z21"].source is SpoolSource.USER
     assert TypeKey(key.size, "4Z21", "30", "24", Config.E04, True) in all_type_keys()
 
 
@@ -143,7 +142,9 @@ def test_without_a_spool_file_nothing_changes(tmp_path, spools):
         ({"code": "4Z21"}, "expected a list of spools"),
         ([{"code": "4Z21", "coils": "AB"}, {"code": "4Z22", "coils": "C"}], "entry 2: coils 'C'"),
         ([{"code": "4Z-21", "coils": "A"}], "entry 1: code '4Z-21' must be letters and digits"),
-        ([{"coils": "A"}], "entry 1: 'code'"),
+        ([{"coils": "A"}], "entry 1: 'code' is missing"),
+        ([{"code": "4Z21", "coils": ["A"]}], "entry 1: coils ['A'] must be AB, A or B"),
+        ([7], "entry 1: expected an object with code, coils and description"),
         ([{"code": "3Z11", "coils": "A"}], "spool 3Z11 is named in the manual"),
     ],
 )

@@ -19,6 +19,18 @@
             <translation>--device {0}: ventil nenalezen</translation>
         </message>
         <message>
+            <source>{0}
+
+Until the file is corrected, prm9tool knows only the spools it ships.</source>
+            <translation>{0}
+
+Dokud soubor neopravíte, zná prm9tool pouze dodaná šoupátka.</translation>
+        </message>
+        <message>
+            <source>Spool catalogue</source>
+            <translation>Katalog šoupátek</translation>
+        </message>
+        <message>
             <source>--emulator {0}: the serial number must be 1 … 4294967295</source>
             <translation>--emulator {0}: výrobní číslo musí být 1 … 4294967295</translation>
         </message>
@@ -2037,6 +2049,38 @@ Ujistěte se, že pohyb stroje je bezpečný. Spustit generátor?</translation>
     <context>
         <name>TypeKey</name>
         <message>
+            <source>spool catalogue {0}: {1}</source>
+            <translation>katalog šoupátek {0}: {1}</translation>
+        </message>
+        <message>
+            <source>spool catalogue {0}: entry {1}: {2}</source>
+            <translation>katalog šoupátek {0}: položka {1}: {2}</translation>
+        </message>
+        <message>
+            <source>expected a list of spools</source>
+            <translation>očekáván seznam šoupátek</translation>
+        </message>
+        <message>
+            <source>expected an object with code, coils and description</source>
+            <translation>očekáván objekt s code, coils a description</translation>
+        </message>
+        <message>
+            <source>{0} is missing</source>
+            <translation>{0} chybí</translation>
+        </message>
+        <message>
+            <source>code {0} must be letters and digits only</source>
+            <translation>code {0} smí obsahovat pouze písmena a číslice</translation>
+        </message>
+        <message>
+            <source>spool {0} is named in the manual and cannot be redefined</source>
+            <translation>šoupátko {0} je uvedeno v návodu a nelze ho předefinovat</translation>
+        </message>
+        <message>
+            <source>coils {0} must be AB, A or B</source>
+            <translation>coils {0} musí být AB, A nebo B</translation>
+        </message>
+        <message>
             <source>type key {0}: must start with 'PRM9-'</source>
             <translation>typový klíč {0}: musí začínat 'PRM9-'</translation>
         </message>
@@ -2181,6 +2225,10 @@ Ujistěte se, že pohyb stroje je bezpečný. Spustit generátor?</translation>
         <message>
             <source> (assumption)</source>
             <translation> (předpoklad)</translation>
+        </message>
+        <message>
+            <source> (your spools.json)</source>
+            <translation> (váš spools.json)</translation>
         </message>
         <message>
             <source>two solenoids A and B</source>

@@ -19,6 +19,18 @@
             <translation>--device {0}: Ventil nicht gefunden</translation>
         </message>
         <message>
+            <source>{0}
+
+Until the file is corrected, prm9tool knows only the spools it ships.</source>
+            <translation>{0}
+
+Bis die Datei korrigiert ist, kennt prm9tool nur die mitgelieferten Schieber.</translation>
+        </message>
+        <message>
+            <source>Spool catalogue</source>
+            <translation>Schieberkatalog</translation>
+        </message>
+        <message>
             <source>--emulator {0}: the serial number must be 1 … 4294967295</source>
             <translation>--emulator {0}: Die Seriennummer muss 1 … 4294967295 sein</translation>
         </message>
@@ -2033,6 +2045,38 @@ Stellen Sie sicher, dass die Maschine sich gefahrlos bewegen kann. Generator sta
     <context>
         <name>TypeKey</name>
         <message>
+            <source>spool catalogue {0}: {1}</source>
+            <translation>Schieberkatalog {0}: {1}</translation>
+        </message>
+        <message>
+            <source>spool catalogue {0}: entry {1}: {2}</source>
+            <translation>Schieberkatalog {0}: Eintrag {1}: {2}</translation>
+        </message>
+        <message>
+            <source>expected a list of spools</source>
+            <translation>erwartet wird eine Liste von Schiebern</translation>
+        </message>
+        <message>
+            <source>expected an object with code, coils and description</source>
+            <translation>erwartet wird ein Objekt mit code, coils und description</translation>
+        </message>
+        <message>
+            <source>{0} is missing</source>
+            <translation>{0} fehlt</translation>
+        </message>
+        <message>
+            <source>code {0} must be letters and digits only</source>
+            <translation>code {0} darf nur Buchstaben und Ziffern enthalten</translation>
+        </message>
+        <message>
+            <source>spool {0} is named in the manual and cannot be redefined</source>
+            <translation>Schieber {0} ist im Handbuch genannt und kann nicht neu definiert werden</translation>
+        </message>
+        <message>
+            <source>coils {0} must be AB, A or B</source>
+            <translation>coils {0} muss AB, A oder B sein</translation>
+        </message>
+        <message>
             <source>type key {0}: must start with 'PRM9-'</source>
             <translation>Typschlüssel {0}: muss mit 'PRM9-' beginnen</translation>
         </message>
@@ -2177,6 +2221,10 @@ Stellen Sie sicher, dass die Maschine sich gefahrlos bewegen kann. Generator sta
         <message>
             <source> (assumption)</source>
             <translation> (Annahme)</translation>
+        </message>
+        <message>
+            <source> (your spools.json)</source>
+            <translation> (Ihre spools.json)</translation>
         </message>
         <message>
             <source>two solenoids A and B</source>

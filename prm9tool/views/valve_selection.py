@@ -22,7 +22,7 @@ from PySide6.QtWidgets import (
 
 from prm9tool.errors import TypeKeyError
 from prm9tool.translate import error_text
-from prm9tool.typekey import FLOWS, SPOOLS, SUPPLIES, TypeKey
+from prm9tool.typekey import FLOWS, SPOOLS, SUPPLIES, SpoolSource, TypeKey
 from prm9tool.variant import Config
 
 DEFAULT_TYPE_KEY = "PRM9-06.3Z11/30-24E02S02"
@@ -112,10 +112,17 @@ class ValveSelectionDialog(QDialog):
         self.config.setItemText(0, self.tr("E02 – internal position feedback"))
         self.config.setItemText(1, self.tr("E04 – internal position and external feedback"))
         for row, spool in enumerate(SPOOLS.values()):
-            note = "" if spool.from_manual else self.tr(" (assumption)")
+            note = self._source_note(spool.source)
             self.spool.setItemText(row, f"{spool.code} – {self._coil_text(spool.code)}{note}")
         if self._error is not None:
             self.error_label.setText(error_text(self._error))
+
+    def _source_note(self, source: SpoolSource) -> str:
+        if source is SpoolSource.ASSUMED:
+            return self.tr(" (assumption)")
+        if source is SpoolSource.USER:
+            return self.tr(" (your spools.json)")
+        return ""
 
     def _coil_text(self, code: str) -> str:
         coils = SPOOLS[code].coils.value
