@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import math
+from typing import NamedTuple
 
 from PySide6.QtCore import QPointF, QRectF, Qt, Signal
 from PySide6.QtGui import (
@@ -26,17 +27,16 @@ from PySide6.QtWidgets import (
     QWidget,
 )
 
-INK = QColor("#1f2d3a")
-EDIT_FILL = QColor("#eaf2fb")
-EDIT_EDGE = QColor("#2f6592")
-HOVER_FILL = QColor("#d3e5f7")
-LOCKED_FILL = QColor("#e4e4e4")
-LOCKED_EDGE = QColor("#a0a0a0")
-LOCKED_INK = QColor("#808080")
-INFO_FILL = QColor("#f7f7f2")
-DOT_ON = QColor("#d91e18")
-DOT_OFF = QColor("#eaa3a0")
-VALUE_INK = QColor("#a3140f")
+from prm9tool.views.diagram.colours import PAPER, DiagramColours
+
+
+class BlockLook(NamedTuple):
+    """The colours a block is painted in now."""
+
+    fill: QColor
+    edge: QColor
+    rule: QColor  # the line under the title
+    ink: QColor
 
 
 def _font(pixels: int, bold: bool = False) -> QFont:
@@ -126,6 +126,7 @@ class BlockItem(QGraphicsObject):
         self._tip = ""
         self.locked = False
         self._hovered = False
+        self._colours = PAPER
         self.setAcceptHoverEvents(True)
         if not info:
             self.setCursor(Qt.CursorShape.PointingHandCursor)
@@ -160,6 +161,11 @@ class BlockItem(QGraphicsObject):
         self._show_tooltip()
         self.update()
 
+    def set_colours(self, colours: DiagramColours) -> None:
+        """Paint in ``colours`` from now on."""
+        self._colours = colours
+        self.update()
+
     def _show_tooltip(self) -> None:
         full = "" if self.fits else "\n".join([self.title, *self.lines])
         self.setToolTip("\n\n".join(part for part in (full, self._tip) if part))
@@ -174,7 +180,7 @@ class BlockItem(QGraphicsObject):
     def paint(
         self, painter: QPainter, option: QStyleOptionGraphicsItem, widget: QWidget | None = None
     ) -> None:
-        fill, edge, ink = self._colours()
+        fill, edge, rule_colour, ink = self.look()
         painter.setRenderHint(QPainter.RenderHint.Antialiasing)
         pen = QPen(edge, 1.6)
         if self.info:
@@ -191,7 +197,7 @@ class BlockItem(QGraphicsObject):
         for n, line in enumerate(self.shown_title):
             painter.drawText(QRectF(PAD, top + n * TITLE_LINE_H, width, TITLE_LINE_H), centre, line)
         rule = self.separator_y
-        painter.setPen(QPen(edge.lighter(130), 1))
+        painter.setPen(QPen(rule_colour, 1))
         painter.drawLine(QPointF(8, rule), QPointF(self._rect.width() - 8, rule))
         painter.setPen(ink)
         painter.setFont(self.line_font)
@@ -200,12 +206,15 @@ class BlockItem(QGraphicsObject):
         for n, line in enumerate(self.shown_lines):
             painter.drawText(QRectF(PAD, top + n * LINE_H, width, LINE_H), centre, line)
 
-    def _colours(self) -> tuple[QColor, QColor, QColor]:
+    def look(self) -> BlockLook:
+        """Fill, border, rule and text colour for the block's state (info, locked, hovered)."""
+        c = self._colours
         if self.info:
-            return INFO_FILL, LOCKED_EDGE, INK
+            return BlockLook(c.info_fill, c.locked_edge, c.locked_rule, c.ink)
         if self.locked:
-            return LOCKED_FILL, LOCKED_EDGE, LOCKED_INK
-        return (HOVER_FILL if self._hovered else EDIT_FILL), EDIT_EDGE, INK
+            return BlockLook(c.locked_fill, c.locked_edge, c.locked_rule, c.locked_ink)
+        fill = c.hover_fill if self._hovered else c.edit_fill
+        return BlockLook(fill, c.edit_edge, c.edit_rule, c.ink)
 
     def hoverEnterEvent(self, event: QGraphicsSceneHoverEvent) -> None:
         self._hovered = True
@@ -234,6 +243,12 @@ class SumItem(QGraphicsItem):
         super().__init__()
         self.setPos(centre)
         self._minus_at = minus_at
+        self._colours = PAPER
+
+    def set_colours(self, colours: DiagramColours) -> None:
+        """Paint in ``colours`` from now on."""
+        self._colours = colours
+        self.update()
 
     def boundingRect(self) -> QRectF:
         r = self.RADIUS + 12
@@ -244,8 +259,8 @@ class SumItem(QGraphicsItem):
     ) -> None:
         r = self.RADIUS
         painter.setRenderHint(QPainter.RenderHint.Antialiasing)
-        painter.setPen(QPen(INK, 1.4))
-        painter.setBrush(QColor("white"))
+        painter.setPen(QPen(self._colours.ink, 1.4))
+        painter.setBrush(self._colours.sheet)
         painter.drawEllipse(QPointF(0, 0), r, r)
         d = r * math.sqrt(0.5)
         painter.drawLine(QPointF(-d, -d), QPointF(d, d))
@@ -266,11 +281,18 @@ class ArrowItem(QGraphicsPathItem):
             path.lineTo(point)
         super().__init__(path)
         self.points = list(points)
-        pen = QPen(INK, 1.5)
-        if dashed:
+        self._dashed = dashed
+        self._ink = PAPER.ink
+        self.set_colours(PAPER)
+        self._head = self._arrow_head(points[-2], points[-1])
+
+    def set_colours(self, colours: DiagramColours) -> None:
+        """Draw in ``colours``' ink from now on."""
+        self._ink = colours.ink
+        pen = QPen(self._ink, 1.5)
+        if self._dashed:
             pen.setStyle(Qt.PenStyle.DashLine)
         self.setPen(pen)
-        self._head = self._arrow_head(points[-2], points[-1])
 
     @staticmethod
     def _arrow_head(start: QPointF, end: QPointF) -> QPolygonF:
@@ -292,20 +314,23 @@ class ArrowItem(QGraphicsPathItem):
     ) -> None:
         painter.setRenderHint(QPainter.RenderHint.Antialiasing)
         super().paint(painter, option, widget)
-        painter.setPen(QPen(INK, 1))
-        painter.setBrush(QBrush(INK))
+        painter.setPen(QPen(self._ink, 1))
+        painter.setBrush(QBrush(self._ink))
         painter.drawPolygon(self._head)
 
 
 class _ValueLabel(QGraphicsSimpleTextItem):
-    """A live value in small bold red on a white plate (readable where it crosses a line)."""
+    """A live value in small bold red on a plate of the sheet's colour (readable where it
+    crosses a line)."""
+
+    plate = PAPER.value_plate
 
     def paint(
         self, painter: QPainter, option: QStyleOptionGraphicsItem, widget: QWidget | None = None
     ) -> None:
         if self.text():
             painter.setPen(Qt.PenStyle.NoPen)
-            painter.setBrush(QColor(255, 255, 255, 230))
+            painter.setBrush(self.plate)
             painter.drawRoundedRect(self.boundingRect().adjusted(-2, 0, 2, 0), 3, 3)
         # Qt passes no widget when the scene is rendered into an image; the stub wants one
         super().paint(painter, option, widget)  # type: ignore[arg-type]
@@ -325,10 +350,19 @@ class DotItem(QGraphicsObject):
         self.active = False
         self._label = _ValueLabel(self)
         self._label.setFont(_font(11, bold=True))
-        self._label.setBrush(VALUE_INK)
         self._label_side = label_side
+        self._colours = PAPER
+        self.set_colours(PAPER)
         self.setAcceptHoverEvents(True)
         self.setZValue(2)
+
+    def set_colours(self, colours: DiagramColours) -> None:
+        """Paint the dot and its value in ``colours`` from now on."""
+        self._colours = colours
+        self._label.setBrush(colours.value_ink)
+        self._label.plate = colours.value_plate
+        self._label.update()
+        self.update()
 
     @property
     def value_text(self) -> str:
@@ -374,9 +408,9 @@ class DotItem(QGraphicsObject):
         self, painter: QPainter, option: QStyleOptionGraphicsItem, widget: QWidget | None = None
     ) -> None:
         painter.setRenderHint(QPainter.RenderHint.Antialiasing)
-        colour = DOT_ON if self.active else DOT_OFF
-        painter.setPen(QPen(colour.darker(140), 1))
-        painter.setBrush(colour)
+        c = self._colours
+        painter.setPen(QPen(c.dot_edge_on if self.active else c.dot_edge_off, 1))
+        painter.setBrush(c.dot_on if self.active else c.dot_off)
         painter.drawEllipse(QPointF(0, 0), self.RADIUS, self.RADIUS)
 
     def mousePressEvent(self, event: QGraphicsSceneMouseEvent) -> None:

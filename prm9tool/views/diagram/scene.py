@@ -3,10 +3,11 @@
 from __future__ import annotations
 
 from PySide6.QtCore import QCoreApplication, QPointF, QRectF
-from PySide6.QtGui import QColor, QFont
+from PySide6.QtGui import QFont
 from PySide6.QtWidgets import QGraphicsScene, QGraphicsSimpleTextItem
 
-from prm9tool.views.diagram.items import INK, ArrowItem, BlockItem, DotItem, SumItem
+from prm9tool.views.diagram.colours import PAPER, DiagramColours
+from prm9tool.views.diagram.items import ArrowItem, BlockItem, DotItem, SumItem
 from prm9tool.views.diagram.layout import (
     COL_PITCH,
     DOT_STEP,
@@ -27,12 +28,15 @@ IN_DOT = 17.0
 
 
 class DiagramScene(QGraphicsScene):
-    """The items of one layout, with lookups by block id and measuring-point key."""
+    """The items of one layout, with lookups by block id and measuring-point key.
 
-    def __init__(self, layout: Layout) -> None:
+    Drawn on paper (dark ink on white) until :meth:`set_colours` says otherwise.
+    """
+
+    def __init__(self, layout: Layout, colours: DiagramColours = PAPER) -> None:
         super().__init__()
         self.layout = layout
-        self.setBackgroundBrush(QColor("white"))
+        self.colours = colours
         # ~80 items that never move except the live value labels: no BSP index to maintain
         self.setItemIndexMethod(QGraphicsScene.ItemIndexMethod.NoIndex)
         self.blocks: dict[str, BlockItem] = {}
@@ -53,6 +57,16 @@ class DiagramScene(QGraphicsScene):
             self._add_dot(key, block_id, side, index)
         # room on the right and below for the live values that appear online
         self.setSceneRect(self.itemsBoundingRect().adjusted(-18, -18, 70, 24))
+        self.set_colours(colours)
+
+    def set_colours(self, colours: DiagramColours) -> None:
+        """Repaint the background and every item in ``colours``."""
+        self.colours = colours
+        self.setBackgroundBrush(colours.sheet)
+        items = [*self.blocks.values(), *self.sums.values(), *self.arrows, *self.dots.values()]
+        for item in items:
+            item.set_colours(colours)
+        self.feedback_label.setBrush(colours.ink)
 
     # --- items -------------------------------------------------------------------------
     def _add_block(self, spec: BlockSpec) -> None:
@@ -113,7 +127,6 @@ class DiagramScene(QGraphicsScene):
         font.setPixelSize(12)
         font.setItalic(True)
         label.setFont(font)
-        label.setBrush(INK)
         label.setPos(self._rects["sum_position"].right() + 14, valve.bottom() + FEEDBACK_DROP + 2)
         self.addItem(label)
         self.feedback_label = label

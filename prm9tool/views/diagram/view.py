@@ -32,6 +32,7 @@ from prm9tool.document import ParameterDocument
 from prm9tool.i18n import text
 from prm9tool.signals import BY_KEY
 from prm9tool.tuning import StepSimulator
+from prm9tool.views.diagram.colours import DiagramColours
 from prm9tool.views.diagram.dialogs import BlockContext, create_block_dialog
 from prm9tool.views.diagram.layout import layout_for
 from prm9tool.views.diagram.scene import DiagramScene
@@ -178,7 +179,8 @@ class DiagramView(QGraphicsView):
         scene.render(painter, target, scene.sceneRect(), Qt.AspectRatioMode.KeepAspectRatio)
 
     def picture_scene(self) -> DiagramScene:
-        """A scene of the document's diagram for printing: no grey blocks, no live values."""
+        """A scene of the document's diagram for printing: dark ink on white whatever the
+        screen's palette, no grey blocks, no live values."""
         scene = DiagramScene(layout_for(self._doc.variant))
         for spec in scene.layout.blocks:
             title = QCoreApplication.translate(_CTX, spec.title)
@@ -189,7 +191,7 @@ class DiagramView(QGraphicsView):
 
     # --- building ---------------------------------------------------------------------------
     def _build(self) -> None:
-        scene = DiagramScene(layout_for(self._doc.variant))
+        scene = DiagramScene(layout_for(self._doc.variant), self._screen_colours())
         for item in scene.blocks.values():
             item.activated.connect(self.open_block)
         for dot in scene.dots.values():
@@ -202,6 +204,10 @@ class DiagramView(QGraphicsView):
         self._refresh_dots()
         if self._fit:
             self.zoom_to_fit()
+
+    def _screen_colours(self) -> DiagramColours:
+        """The diagram's colours on the view's (normally the application's) palette."""
+        return DiagramColours.for_palette(self.palette())
 
     def _create_dialog(self, block_id: str) -> QDialog | None:
         spec = self.diagram.layout.block(block_id)
@@ -325,7 +331,10 @@ class DiagramView(QGraphicsView):
         menu.exec(event.globalPos())
 
     def changeEvent(self, event: QEvent) -> None:
-        if event.type() == QEvent.Type.LanguageChange:
+        if event.type() in (QEvent.Type.PaletteChange, QEvent.Type.ApplicationPaletteChange):
+            if self._scene is not None:
+                self._scene.set_colours(self._screen_colours())
+        elif event.type() == QEvent.Type.LanguageChange:
             self.diagram.retranslate()
             self._refresh_blocks()
             self._refresh_dots()
