@@ -1,5 +1,5 @@
-"""The diagram follows the application palette (light or dark); the printed picture stays
-dark ink on white paper."""
+"""The diagram and the block dialogs' plots follow the application palette (light or dark);
+the printed picture stays dark ink on white paper."""
 
 from __future__ import annotations
 
@@ -21,6 +21,7 @@ from prm9tool.views.diagram.colours import (
     luminance,
     on_palette,
     readable,
+    toned_style,
 )
 
 Role = QPalette.ColorRole
@@ -75,6 +76,14 @@ def test_readable_moves_a_colour_away_from_its_background_until_the_contrast_is_
     assert contrast_ratio(red, background) >= 4.5
     assert red.lightness() > QColor("#d03030").lightness()
     assert readable(QColor("black"), QColor("white")) == QColor("black")  # already enough
+
+
+def test_a_style_sheet_written_for_paper_is_moved_onto_the_palette():
+    style = toned_style("background: #f1f1f1; color: #d03030; padding: 6px;", dark_palette())
+    background, text = (QColor(part.split(": ")[1]) for part in style.split("; ")[:2])
+    assert is_dark(background)
+    assert contrast_ratio(text, QColor("#2b2b2b")) >= 4.5
+    assert style.endswith("padding: 6px;")
 
 
 # --- the diagram --------------------------------------------------------------------------------------
@@ -145,3 +154,33 @@ def test_on_a_dark_palette_the_printed_picture_stays_dark_ink_on_white(qtbot, da
     light = sum(1 for p in pixels if luminance(p) > 0.8)
     assert light > 0.8 * len(pixels)  # white paper, pale block fills
     assert any(luminance(p) < 0.05 for p in pixels)  # dark ink
+
+
+# --- the dialogs' plots and labels ----------------------------------------------------------
+def test_on_a_dark_palette_a_dialog_plot_is_dark_and_its_curves_keep_their_hue(qtbot, dark):
+    view = make_view(qtbot, E04_CA, Access.EXPERT)
+    dialog = view.open_block("threshold")
+    assert dialog is not None
+    plot = dialog.plot
+    image = plot.grab().toImage()
+    assert is_dark(image.pixelColor(QPoint(3, 3)))
+    blue = plot.tone(plot.curves[-1].colour)
+    assert contrast_ratio(blue, plot.tone(QColor("white"))) >= 3.0
+    assert abs(blue.hslHue() - plot.curves[-1].colour.hslHue()) <= 2
+    dialog.close()
+
+
+def test_a_dialog_plot_and_labels_follow_a_palette_change(qtbot, qapp):
+    view = make_view(qtbot, E04_CA, Access.BASIC)
+    dialog = view.open_block("position_controller")
+    assert dialog is not None
+    assert "#f1f1f1" in dialog.lock_label.styleSheet()
+    before = QPalette(qapp.palette())
+    try:
+        qapp.setPalette(dark_palette())
+        qtbot.waitUntil(lambda: "#f1f1f1" not in dialog.lock_label.styleSheet())
+        qtbot.waitUntil(lambda: is_dark(dialog.plot.grab().toImage().pixelColor(QPoint(3, 3))))
+    finally:
+        qapp.setPalette(before)
+    qtbot.waitUntil(lambda: "#f1f1f1" in dialog.lock_label.styleSheet())
+    dialog.close()

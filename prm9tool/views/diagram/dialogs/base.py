@@ -30,6 +30,7 @@ from prm9tool.editing import apply_edit
 from prm9tool.errors import AccessDeniedError, ValueRangeError
 from prm9tool.i18n import text
 from prm9tool.translate import error_text
+from prm9tool.views.diagram.colours import toned_style
 from prm9tool.views.diagram.dialogs.fields import ChoiceField, ValueField
 
 Field = ValueField | ChoiceField
@@ -67,14 +68,15 @@ class BlockDialog(QDialog):
         self.fields: dict[str, Field] = {}
         self._captions: dict[str, QLabel] = {}  # captions taken from the catalogue texts
         self._watched: set[str] = set()
+        self._styles: dict[QWidget, str] = {}  # style sheets written for paper
         self.lock_label = QLabel()
         self.lock_label.setWordWrap(True)
-        self.lock_label.setStyleSheet(
-            "background: #f1f1f1; color: #555; padding: 6px; border-radius: 4px;"
+        self.set_paper_style(
+            self.lock_label, "background: #f1f1f1; color: #555; padding: 6px; border-radius: 4px;"
         )
         self.error_label = QLabel()
         self.error_label.setWordWrap(True)
-        self.error_label.setStyleSheet("color: #d03030; font-weight: bold;")
+        self.set_paper_style(self.error_label, "color: #d03030; font-weight: bold;")
         self.error_label.hide()
         self.form = QFormLayout()
         self.form.setRowWrapPolicy(QFormLayout.RowWrapPolicy.WrapAllRows)  # caption above field
@@ -133,6 +135,12 @@ class BlockDialog(QDialog):
         if label is None:
             self._captions[field.mnemonic] = caption
         self.form.addRow(caption, row)
+
+    def set_paper_style(self, widget: QWidget, style: str) -> None:
+        """Give ``widget`` the style sheet ``style``, its colours written as on white paper and
+        shown moved onto the palette (again whenever the palette changes)."""
+        self._styles[widget] = style
+        widget.setStyleSheet(toned_style(style, self.palette()))
 
     def watch(self, *mnemonics: str) -> None:
         """Refresh the dialog when any of ``mnemonics`` changes in the document."""
@@ -235,7 +243,10 @@ class BlockDialog(QDialog):
         self.setWindowTitle(QCoreApplication.translate("DiagramBlock", self._title_source))
 
     def changeEvent(self, event: QEvent) -> None:
-        if event.type() == QEvent.Type.LanguageChange:
+        if event.type() in (QEvent.Type.PaletteChange, QEvent.Type.ApplicationPaletteChange):
+            for widget, style in self._styles.items():
+                widget.setStyleSheet(toned_style(style, self.palette()))
+        elif event.type() == QEvent.Type.LanguageChange:
             self.retranslate()
             for mnemonic, caption in self._captions.items():
                 caption.setText(text(CATALOGUE[mnemonic].text))

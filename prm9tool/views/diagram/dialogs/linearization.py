@@ -23,10 +23,13 @@ from prm9tool.errors import ValueRangeError
 from prm9tool.translate import error_text
 from prm9tool.views.diagram.curves import FULL, clamp_point
 from prm9tool.views.diagram.dialogs.base import BlockContext, BlockDialog
-from prm9tool.views.diagram.dialogs.plot import BLUE, GREY, Axes, Curve, PlotWidget
+from prm9tool.views.diagram.dialogs.plot import BLUE, GREY, PAPER, Axes, Curve, PlotWidget
 
 LETTERS = "ABCDEFGHI"
 PCT = 100.0 / FULL
+HANDLE_INK = QColor("#0d3d66")
+HANDLE_ACTIVE = QColor("#f6a21a")  # the point being dragged
+HANDLE_LOCKED = QColor("#dddddd")
 
 
 class CurveEditor(PlotWidget):
@@ -72,14 +75,11 @@ class CurveEditor(PlotWidget):
         for n in range(len(self.xs)):
             centre = self.handle_position(n)
             active = n == self.dragging
-            painter.setPen(QPen(QColor("#0d3d66"), 1.5))
-            painter.setBrush(
-                QColor("#f6a21a")
-                if active
-                else (QColor("white") if self.editable else QColor("#ddd"))
-            )
+            painter.setPen(QPen(self.tone(HANDLE_INK), 1.5))
+            fill = HANDLE_ACTIVE if active else (PAPER if self.editable else HANDLE_LOCKED)
+            painter.setBrush(self.tone(fill))
             painter.drawEllipse(centre, 6.0, 6.0)
-            painter.setPen(QColor("#0d3d66"))
+            painter.setPen(self.tone(HANDLE_INK))
             # the label goes up-right of its point, below-left where that would leave the plot
             inside = self.plot_rect().contains(centre + QPointF(16, -18))
             painter.drawText(centre + (QPointF(7, -7) if inside else QPointF(-16, 19)), LETTERS[n])

@@ -1,13 +1,20 @@
-"""A small QPainter plot for the block dialogs: axes, grid, labelled curves, reference lines."""
+"""A small QPainter plot for the block dialogs: axes, grid, labelled curves, reference lines.
+
+Colours are given as on paper (white background, dark ink) and drawn moved onto the widget's
+palette (:func:`~prm9tool.views.diagram.colours.on_palette`): on a dark palette the plot is
+dark with light axes and the curves keep their hues.
+"""
 
 from __future__ import annotations
 
 import math
 from dataclasses import dataclass, field
 
-from PySide6.QtCore import QPointF, QRectF, Qt
+from PySide6.QtCore import QEvent, QPointF, QRectF, Qt
 from PySide6.QtGui import QColor, QFont, QPainter, QPainterPath, QPaintEvent, QPen
 from PySide6.QtWidgets import QSizePolicy, QWidget
+
+from prm9tool.views.diagram.colours import on_palette, readable
 
 AXIS = QColor("#44505c")
 GRID = QColor("#e3e7eb")
@@ -17,6 +24,8 @@ GREEN = QColor("#2c9a4b")
 PURPLE = QColor("#7b4bb2")
 RED = QColor("#c8201a")
 GREY = QColor("#8a939c")
+PAPER = QColor("white")
+LEGEND_PLATE = QColor(255, 255, 255, 225)
 
 
 @dataclass
@@ -111,15 +120,19 @@ class PlotWidget(QWidget):
         return x, y
 
     # --- painting ----------------------------------------------------------------------------
+    def tone(self, colour: QColor) -> QColor:
+        """``colour`` (as on paper) as drawn on the widget's palette."""
+        return on_palette(colour, self.palette())
+
     def paintEvent(self, event: QPaintEvent) -> None:
         painter = QPainter(self)
         painter.setRenderHint(QPainter.RenderHint.Antialiasing)
-        painter.fillRect(self.rect(), QColor("white"))
+        painter.fillRect(self.rect(), self.tone(PAPER))
         self._paint_grid(painter)
         painter.save()
         painter.setClipRect(self.plot_rect().adjusted(-1, -1, 1, 1))
         for value, colour, _label in self.axes.hlines:
-            pen = QPen(colour, 1.2, Qt.PenStyle.DashLine)
+            pen = QPen(self.tone(colour), 1.2, Qt.PenStyle.DashLine)
             painter.setPen(pen)
             painter.drawLine(
                 self.to_pixel(self.axes.x_range[0], value),
@@ -135,6 +148,11 @@ class PlotWidget(QWidget):
 
     def paint_overlay(self, painter: QPainter) -> None:
         """Hook for subclasses: draw handles on top of the curves."""
+
+    def changeEvent(self, event: QEvent) -> None:
+        if event.type() in (QEvent.Type.PaletteChange, QEvent.Type.ApplicationPaletteChange):
+            self.update()
+        super().changeEvent(event)
 
     def _paint_grid(self, painter: QPainter) -> None:
         rect = self.plot_rect()
@@ -152,17 +170,16 @@ class PlotWidget(QWidget):
             label = QRectF(0, p.y() - 7, rect.left() - 5, 14)
             align = Qt.AlignmentFlag.AlignRight | Qt.AlignmentFlag.AlignVCenter
             painter.drawText(label, align, tick_text(y))
-        painter.setPen(QPen(AXIS, 1.2))
+        painter.setPen(QPen(self.tone(AXIS), 1.2))
         painter.setBrush(Qt.BrushStyle.NoBrush)
         painter.drawRect(rect)
         self._paint_titles(painter, rect)
 
-    @staticmethod
-    def _grid_line(painter: QPainter, value: float, start: QPointF, end: QPointF) -> None:
+    def _grid_line(self, painter: QPainter, value: float, start: QPointF, end: QPointF) -> None:
         """A grid line (the zero line darker); leaves the pen ready for the tick label."""
-        painter.setPen(QPen(AXIS if value == 0 else GRID, 1))
+        painter.setPen(QPen(self.tone(AXIS if value == 0 else GRID), 1))
         painter.drawLine(start, end)
-        painter.setPen(AXIS)
+        painter.setPen(self.tone(AXIS))
 
     def _paint_titles(self, painter: QPainter, rect: QRectF) -> None:
         centre = Qt.AlignmentFlag.AlignHCenter
@@ -180,7 +197,7 @@ class PlotWidget(QWidget):
     def _paint_curve(self, painter: QPainter, curve: Curve) -> None:
         if len(curve.points) < 2:
             return
-        pen = QPen(curve.colour, curve.width)
+        pen = QPen(self.tone(curve.colour), curve.width)
         if curve.dashed:
             pen.setStyle(Qt.PenStyle.DashLine)
         painter.setPen(pen)
@@ -197,7 +214,7 @@ class PlotWidget(QWidget):
             if label:
                 p = self.to_pixel(self.axes.x_range[0], value)
                 top = p.y() - 16 if value >= middle else p.y() + 2
-                painter.setPen(colour)
+                painter.setPen(readable(self.tone(colour), self.tone(PAPER)))
                 painter.drawText(
                     QRectF(rect.left() + 4, top, rect.width() - 8, 14),
                     Qt.AlignmentFlag.AlignRight,
@@ -216,15 +233,15 @@ class PlotWidget(QWidget):
             box = QRectF(rect.right() - 6 - width, rect.bottom() - 6 - height, width, height)
         else:
             box = QRectF(rect.left() + 6, rect.top() + 6, width, height)
-        painter.setPen(QPen(GRID, 1))
-        painter.setBrush(QColor(255, 255, 255, 225))
+        painter.setPen(QPen(self.tone(GRID), 1))
+        painter.setBrush(self.tone(LEGEND_PLATE))
         painter.drawRect(box)
         for n, curve in enumerate(labelled):
             y = box.top() + 11 + 16 * n
-            pen = QPen(curve.colour, curve.width)
+            pen = QPen(self.tone(curve.colour), curve.width)
             if curve.dashed:
                 pen.setStyle(Qt.PenStyle.DashLine)
             painter.setPen(pen)
             painter.drawLine(QPointF(box.left() + 5, y), QPointF(box.left() + 25, y))
-            painter.setPen(AXIS)
+            painter.setPen(self.tone(AXIS))
             painter.drawText(QPointF(box.left() + 30, y + 4), curve.label)

@@ -43,7 +43,7 @@ class SignalInputDialog(BlockDialog):
         self.form.addRow(self.note)
         self.warning = QLabel()
         self.warning.setWordWrap(True)
-        self.warning.setStyleSheet("color: #a15c00;")
+        self.set_paper_style(self.warning, "color: #a15c00;")
         self.form.addRow(self.warning)
         self.plot = PlotWidget()
         self.side.addWidget(self.plot)
