@@ -364,6 +364,23 @@ def test_a_refusal_in_a_block_dialog_speaks_the_program_language(qtbot, setup):
     assert s.doc.value("LIMTB") == 2400
 
 
+def test_the_not_recommended_warning_names_the_valve_in_the_program_language(qtbot, setup):
+    from prm9tool import i18n
+
+    s = setup(E02_A)
+    i18n.set_language("de")
+    try:
+        dialog = open_dialog(qtbot, s, "setpoint_input")
+        box = dialog.type_field
+        box.setCurrentIndex(box.findData(9))
+        box.activated.emit(box.currentIndex())
+        assert dialog.warning.text() == (
+            "Dieser Typ wird für ein Ventil mit E02 Spule A nicht empfohlen (Anleitung Tabelle 8-4)."
+        )
+    finally:
+        i18n.set_language("en")
+
+
 def test_the_dither_sketch_follows_amplitude_and_frequency(qtbot, setup):
     s = setup(E02_A)
     dialog = open_dialog(qtbot, s, "dither")

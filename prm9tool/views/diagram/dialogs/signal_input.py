@@ -8,7 +8,8 @@ from __future__ import annotations
 
 from PySide6.QtWidgets import QLabel, QWidget
 
-from prm9tool.catalogue import CATALOGUE, RECOMMENDED_SETPOINT_TYPES
+from prm9tool.catalogue import CATALOGUE, RECOMMENDED_SETPOINT_TYPES, variant_label
+from prm9tool.translate import translated
 from prm9tool.views.diagram.curves import INPUT_RANGES, input_curve
 from prm9tool.views.diagram.dialogs.base import BlockContext, BlockDialog
 from prm9tool.views.diagram.dialogs.plot import BLUE, Axes, Curve, PlotWidget
@@ -94,7 +95,7 @@ class SignalInputDialog(BlockDialog):
         warn = self._setpoint and code != CANOPEN_CODE and code not in self._recommended()
         self.warning.setText(
             self.tr("This type is not recommended for a valve with %1 (manual table 8-4).").replace(
-                "%1", self.doc.variant.label
+                "%1", translated(variant_label(self.doc.variant))
             )
             if warn
             else ""
