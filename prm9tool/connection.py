@@ -23,6 +23,7 @@ from PySide6.QtCore import QObject, Qt, Signal
 
 from prm9tool.errors import CommunicationError, Prm9Error
 from prm9tool.polling import Poller, Schedule
+from prm9tool.translate import error_text
 
 log = logging.getLogger(__name__)
 
@@ -335,12 +336,12 @@ class ValveConnection(QObject):
             work()
         except CommunicationError as exc:
             self._close()
-            message = str(exc)
-            self._post(lambda: self._report_lost(message))
+            lost = exc  # texts are translated on the GUI thread, where the translators live
+            self._post(lambda: self._report_lost(error_text(lost)))
             return False
         except Prm9Error as exc:
-            message = str(exc)
-            self._post(lambda: self.failed.emit(message))
+            failure = exc
+            self._post(lambda: self.failed.emit(error_text(failure)))
             return False
         except Exception as exc:  # a bug must not kill the worker thread
             log.exception("valve worker")

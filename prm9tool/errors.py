@@ -8,6 +8,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 from enum import IntEnum
+from typing import ClassVar
 
 from prm9tool.messages import QT_TRANSLATE_NOOP, Message, Template
 
@@ -71,23 +72,39 @@ _ABORT_TEXTS: dict[AbortCode, str] = {
 
 
 class Prm9Error(Exception):
-    """Base of every error prm9tool raises on purpose."""
+    """Base of every error prm9tool raises on purpose.
+
+    ``summary`` is a translatable lead sentence for errors whose own text is technical English
+    (the device layer's); a view shows it in the program language with the text as the detail.
+    """
+
+    summary: ClassVar[Template | None] = None
 
 
 class CommunicationError(Prm9Error):
     """The valve could not be reached, or the link broke."""
 
+    summary = QT_TRANSLATE_NOOP("Errors", "The valve could not be reached.")
+
 
 class DeviceTimeoutError(CommunicationError):
     """The valve did not answer in time."""
+
+    summary = QT_TRANSLATE_NOOP("Errors", "The valve did not answer in time.")
 
 
 class ProtocolError(CommunicationError):
     """The valve answered something that is not a valid answer."""
 
+    summary = QT_TRANSLATE_NOOP(
+        "Errors", "The valve answered something prm9tool does not understand."
+    )
+
 
 class DeviceDisconnectedError(CommunicationError):
     """The valve (or its USB cable) went away."""
+
+    summary = QT_TRANSLATE_NOOP("Errors", "The connection to the valve is broken.")
 
 
 class AccessDeniedError(Prm9Error):
@@ -157,6 +174,8 @@ class FileFormatError(Prm9Error):
 
 class SdoAbortError(Prm9Error):
     """The valve refused an object-dictionary access with a CiA 301 abort code."""
+
+    summary = QT_TRANSLATE_NOOP("Errors", "The valve refused the access.")
 
     def __init__(self, index: int, subindex: int, code: int) -> None:
         self.index = index

@@ -24,6 +24,11 @@ def error_text(error: BaseException) -> str:
     """What to show a user for ``error``, in the current language.
 
     An error raised with a :class:`~prm9tool.messages.Message` (catalogue, document, type key,
-    access level) is translated; any other gives ``str(error)``.
+    access level) is translated; a device error with a ``summary`` gives that lead sentence
+    translated, with its technical English text in brackets; any other gives ``str(error)``.
     """
-    return translated(message_of(error))
+    message = message_of(error)
+    summary = getattr(error, "summary", None)
+    if isinstance(message, Message) or summary is None:
+        return translated(message)
+    return f"{translated(summary())} ({message})"

@@ -134,6 +134,22 @@ def test_valve_that_disappears_mid_session_goes_offline_with_a_message(qtbot, co
     assert "Not connected" in failed.args[0]
 
 
+def test_a_lost_valve_is_explained_in_the_program_language(qtbot, connection):
+    from prm9tool import i18n
+
+    _online(qtbot, connection)
+    lost = _record(connection.lost)
+    i18n.set_language("de")
+    try:
+        with qtbot.waitSignal(connection.online_changed, timeout=TIMEOUT):
+            _unplug(connection)
+    finally:
+        i18n.set_language("en")
+    # the lead sentence in German, the technical detail as the transport said it
+    assert lost[0][0].startswith("Die Verbindung zum Ventil ist unterbrochen. (")
+    assert "link is down" in lost[0][0]
+
+
 def test_watched_measuring_points_are_reported(qtbot, paced_connection):
     connection = paced_connection
     _online(qtbot, connection, f"{E04_CA}:5002")

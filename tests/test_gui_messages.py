@@ -190,3 +190,47 @@ def test_valve_selection_marks_the_spools_of_the_users_spools_json(
     assert dialog.spool.itemText(dialog.spool.findData("4Z21")) == (
         "4Z21 – one solenoid on side B (your spools.json)"
     )
+
+
+@pytest.mark.parametrize(
+    ("error", "czech"),
+    [
+        ("DeviceTimeoutError", "Ventil neodpověděl včas. (no answer)"),
+        ("DeviceDisconnectedError", "Spojení s ventilem je přerušeno. (no answer)"),
+        ("ProtocolError", "Ventil odpověděl něco, čemu prm9tool nerozumí. (no answer)"),
+        ("CommunicationError", "Ventil není dostupný. (no answer)"),
+    ],
+)
+def test_device_errors_lead_with_a_sentence_in_the_program_language(language, error, czech):
+    from prm9tool import errors
+    from prm9tool.translate import error_text
+
+    exc = getattr(errors, error)("no answer")
+    assert error_text(exc).endswith(". (no answer)") and error_text(exc) != "no answer"
+    language("cs")
+    assert error_text(exc) == czech
+
+
+def test_a_refused_value_leads_with_the_refusal_and_keeps_the_abort_code(language):
+    from prm9tool.device.entries import RefusedError
+    from prm9tool.errors import AbortCode, SdoAbortError
+    from prm9tool.translate import error_text
+
+    exc = RefusedError("LIMTA", SdoAbortError(0x2200, 1, AbortCode.VALUE_TOO_HIGH), 0)
+    assert error_text(exc) == (
+        "The valve refused the access. "
+        "(LIMTA: 0x2200/1: abort 0x06090031 (value of parameter written too high))"
+    )
+    language("de")
+    assert error_text(exc) == (
+        "Das Ventil hat den Zugriff abgelehnt. "
+        "(LIMTA: 0x2200/1: abort 0x06090031 (value of parameter written too high))"
+    )
+
+
+def test_a_model_error_with_its_own_message_gets_no_lead(language):
+    from prm9tool.errors import ValueRangeError
+    from prm9tool.translate import error_text
+
+    language("de")
+    assert error_text(ValueRangeError("plain")) == "plain"

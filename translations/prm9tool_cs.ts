@@ -697,6 +697,29 @@ Dokud soubor neopravíte, zná prm9tool pouze dodaná šoupátka.</translation>
         </message>
     </context>
     <context>
+        <name>Errors</name>
+        <message>
+            <source>The valve could not be reached.</source>
+            <translation>Ventil není dostupný.</translation>
+        </message>
+        <message>
+            <source>The valve did not answer in time.</source>
+            <translation>Ventil neodpověděl včas.</translation>
+        </message>
+        <message>
+            <source>The valve answered something prm9tool does not understand.</source>
+            <translation>Ventil odpověděl něco, čemu prm9tool nerozumí.</translation>
+        </message>
+        <message>
+            <source>The connection to the valve is broken.</source>
+            <translation>Spojení s ventilem je přerušeno.</translation>
+        </message>
+        <message>
+            <source>The valve refused the access.</source>
+            <translation>Ventil přístup odmítl.</translation>
+        </message>
+    </context>
+    <context>
         <name>FileWorkflow</name>
         <message>
             <source>untitled</source>
@@ -2463,6 +2486,10 @@ Ujistěte se, že pohyb stroje je bezpečný. Spustit generátor?</translation>
         <message>
             <source>The valve restarted</source>
             <translation>Ventil byl restartován</translation>
+        </message>
+        <message>
+            <source>Listing the valves failed: {0}</source>
+            <translation>Výpis ventilů selhal: {0}</translation>
         </message>
         <message>
             <source>The valve stored its parameters</source>

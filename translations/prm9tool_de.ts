@@ -697,6 +697,29 @@ Bis die Datei korrigiert ist, kennt prm9tool nur die mitgelieferten Schieber.</t
         </message>
     </context>
     <context>
+        <name>Errors</name>
+        <message>
+            <source>The valve could not be reached.</source>
+            <translation>Das Ventil ist nicht erreichbar.</translation>
+        </message>
+        <message>
+            <source>The valve did not answer in time.</source>
+            <translation>Das Ventil hat nicht rechtzeitig geantwortet.</translation>
+        </message>
+        <message>
+            <source>The valve answered something prm9tool does not understand.</source>
+            <translation>Das Ventil hat etwas geantwortet, das prm9tool nicht versteht.</translation>
+        </message>
+        <message>
+            <source>The connection to the valve is broken.</source>
+            <translation>Die Verbindung zum Ventil ist unterbrochen.</translation>
+        </message>
+        <message>
+            <source>The valve refused the access.</source>
+            <translation>Das Ventil hat den Zugriff abgelehnt.</translation>
+        </message>
+    </context>
+    <context>
         <name>FileWorkflow</name>
         <message>
             <source>untitled</source>
@@ -2459,6 +2482,10 @@ Stellen Sie sicher, dass die Maschine sich gefahrlos bewegen kann. Generator sta
         <message>
             <source>The valve restarted</source>
             <translation>Das Ventil wurde neu gestartet</translation>
+        </message>
+        <message>
+            <source>Listing the valves failed: {0}</source>
+            <translation>Auflisten der Ventile fehlgeschlagen: {0}</translation>
         </message>
         <message>
             <source>The valve stored its parameters</source>

@@ -44,6 +44,8 @@ class OperationCancelledError(Prm9Error):
 class RefusedError(Prm9Error):
     """The valve refused one entry of a multi-entry write; ``done`` entries were written."""
 
+    summary = SdoAbortError.summary
+
     def __init__(self, mnemonic: str, error: SdoAbortError, done: int) -> None:
         super().__init__(f"{mnemonic}: {error}")
         self.mnemonic, self.error, self.done = mnemonic, error, done

@@ -25,6 +25,7 @@ from PySide6.QtWidgets import (
     QWidget,
 )
 
+from prm9tool.translate import error_text
 from prm9tool.typekey import TypeKey
 from prm9tool.views.valve_selection import ValveSelectionDialog
 
@@ -166,7 +167,7 @@ class HidConfigurationDialog(QDialog):
             self._entries = list(self._lister(saved_emulators(self._settings)))
         except Exception as exc:  # a broken USB stack must not prevent choosing an emulator
             self._entries = []
-            self.info.setText(self.tr("Listing the valves failed: {0}").format(str(exc)))
+            self.info.setText(self.tr("Listing the valves failed: {0}").format(error_text(exc)))
         self.table.setRowCount(len(self._entries))
         selected = str(self._settings.value(SELECTED_KEY, ""))
         for row, entry in enumerate(self._entries):

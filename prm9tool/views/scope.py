@@ -34,6 +34,7 @@ from prm9tool.document import ParameterDocument
 from prm9tool.errors import ValueRangeError
 from prm9tool.scope import Capture, GeneratorSettings, write_csv
 from prm9tool.signals import BY_KEY, signals_for
+from prm9tool.translate import error_text
 from prm9tool.views import prompts
 from prm9tool.views.scope_display import ScopeDisplay
 from prm9tool.views.scope_generator import GeneratorPanel, SetpointGenerator
@@ -327,7 +328,7 @@ class ScopeWidget(QWidget):
         try:
             settings.check()
         except ValueRangeError as exc:
-            prompts.inform(self, prompts.Icon.Warning, title, str(exc))
+            prompts.inform(self, prompts.Icon.Warning, title, error_text(exc))
             return
         answer = prompts.ask(
             self,

@@ -80,7 +80,9 @@ class ValveWorkflow(QObject):
         try:
             entries = self._connection.list_devices(saved_emulators(self._settings))
         except Exception as exc:  # a broken USB stack must not prevent the HID dialog
-            self.message_posted.emit(str(exc))
+            self.message_posted.emit(
+                self.tr("Listing the valves failed: {0}").format(error_text(exc))
+            )
             entries = []
         selected = str(self._settings.value(SELECTED_KEY, ""))
         for entry in entries:
