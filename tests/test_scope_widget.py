@@ -334,6 +334,28 @@ def test_zooming_an_axis_by_hand_stops_its_autoscale_until_auto(scope, conn):
     assert plot.is_autoscaled(0) and plot.y_range(0)[1] < 150
 
 
+def test_the_cached_axes_are_redrawn_when_their_range_changes(scope, conn, qtbot):
+    """The axes are cached pixmaps (a benchmark finding): a new range must still show."""
+    scope.preselect("demand")
+    scope.start()
+    conn.samples_received.emit(np.full((100, 1), 8192))
+    scope._redraw()
+    plot = scope.plot
+    left = plot.axes[0]
+
+    def picture():
+        qtbot.wait(20)
+        return plot.graphics.grab(
+            plot.graphics.mapFromScene(left.sceneBoundingRect()).boundingRect()
+        )
+
+    plot.views[0].setYRange(-200, 200, padding=0)
+    before = picture().toImage()
+    assert picture().toImage() == before  # nothing changed: the same picture
+    plot.views[0].setYRange(-20, 20, padding=0)
+    assert picture().toImage() != before
+
+
 def test_while_the_plot_holds_the_legend_marks_its_values_as_live(scope, conn):
     scope.preselect("demand")
     scope.start()

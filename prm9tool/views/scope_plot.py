@@ -20,6 +20,7 @@ import pyqtgraph as pg
 from PySide6.QtCore import QSize, Qt, Signal
 from PySide6.QtGui import QFontMetrics, QImage, QResizeEvent
 from PySide6.QtWidgets import (
+    QGraphicsItem,
     QGridLayout,
     QHBoxLayout,
     QLabel,
@@ -156,6 +157,9 @@ class ScopePlot(QWidget):
         self.item.layout.addItem(self.axes[2], 2, 3)
         for axis in (*self.axes, self.item.getAxis("bottom")):
             axis.enableAutoSIPrefix(False)  # no label re-render on every range change
+            # an axis (with its grid, which spans the plot) is repainted with every curve update;
+            # cached as a pixmap it is re-rendered only when its range or size changes
+            axis.setCacheMode(QGraphicsItem.CacheMode.DeviceCoordinateCache)
         for view, axis in zip(self.views[1:], self.axes[1:], strict=True):
             self.item.scene().addItem(view)
             axis.linkToView(view)

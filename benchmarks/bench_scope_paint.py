@@ -1,0 +1,128 @@
+"""What one repaint of the oscilloscope's plot costs, and what caching its axes saves.
+
+    QT_QPA_PLATFORM=offscreen .venv/bin/python benchmarks/bench_scope_paint.py
+
+The scope (1400 x 850, three channels, 10 s window at 5 kHz: 50 000 samples per channel, a noisy
+square wave and a noisy current) is repainted with nothing changed ("static": a paused plot, a
+cursor moved) and with the time axis moving by one 30 Hz frame per repaint ("roll": a running
+recording). Each case is measured with the axes cached as pixmaps (what the scope does) and,
+as the reference in the same run, with the cache switched off; the ratio is the figure to
+compare between machines. Medians of 60 repaints after 10 warm-up repaints.
+"""
+
+from __future__ import annotations
+
+import argparse
+import statistics
+import time
+
+import numpy as np
+from PySide6.QtCore import QObject, Signal
+from PySide6.QtWidgets import QApplication, QGraphicsItem
+
+from prm9tool.document import ParameterDocument
+from prm9tool.scope import TriggerMode
+from prm9tool.views.scope import ScopeWidget
+
+TYPE_KEY = "PRM9-06.3Z11/30-24E02S02"
+KEYS = ("setpoint_raw", "position_actual", "current_a")
+RATE_HZ = 5000
+SIZE = (1400, 850)
+
+
+class _Link(QObject):
+    """The signals the scope listens to; the benchmark pushes samples in itself."""
+
+    online_changed = Signal(bool)
+    lost = Signal(str)
+    samples_received = Signal(object)
+    stream_started = Signal(list)
+    stream_stopped = Signal()
+    failed = Signal(str)
+    write_failed = Signal(list)
+    is_online = True
+    samples_lost = 0
+
+    def start_stream(self, keys: list[str], rate_hz: int) -> None:
+        self.stream_started.emit(list(keys))
+
+    def stop_stream(self) -> None:
+        self.stream_stopped.emit()
+
+    def write(self, mnemonic: str, raw: int | str) -> None:
+        """The generator is not used here."""
+
+
+def filled_scope(window_s: float) -> ScopeWidget:
+    """A running scope showing ``window_s`` seconds of three channels."""
+    link = _Link()
+    scope = ScopeWidget(link, ParameterDocument(TYPE_KEY))  # type: ignore[arg-type]
+    scope.resize(*SIZE)
+    scope.show()
+    for key in KEYS:
+        scope.preselect(key)
+    c = scope.controls
+    c.time_window.setCurrentIndex(c.time_window.findData(window_s))
+    c.mode.setCurrentIndex(c.mode.findData(TriggerMode.ROLL))
+    scope.start()
+    count = int(window_s * RATE_HZ)
+    rng = np.random.default_rng(1)
+    square = np.where((np.arange(count) // RATE_HZ) % 2, 8000, -8000)
+    noisy = square + rng.normal(0, 300, count)
+    current = 600 + rng.normal(0, 20, count)
+    block = np.column_stack([square, noisy, current]).astype(np.int64)
+    for start in range(0, count, 500):
+        link.samples_received.emit(block[start : start + 500])
+    scope._redraw()
+    return scope
+
+
+def repaint_ms(scope: ScopeWidget, roll: bool, repaints: int = 60) -> float:
+    """Median milliseconds of one repaint of the plot."""
+    view = scope.plot.views[0]
+    low, high = view.viewRange()[0]
+    step = 1.0 / 30.0
+    viewport = scope.plot.graphics.viewport()
+    times = []
+    for k in range(10 + repaints):
+        if roll:
+            view.setXRange(low + k * step, high + k * step, padding=0)
+        started = time.perf_counter()
+        viewport.repaint()
+        if k >= 10:
+            times.append(time.perf_counter() - started)
+    return statistics.median(times) * 1000.0
+
+
+def set_axis_cache(scope: ScopeWidget, on: bool) -> None:
+    """Cache the plot's axes as pixmaps (the scope's setting) or paint them every time."""
+    mode = QGraphicsItem.CacheMode.DeviceCoordinateCache if on else QGraphicsItem.CacheMode.NoCache
+    for axis in (*scope.plot.axes, scope.plot.item.getAxis("bottom")):
+        axis.setCacheMode(mode)
+
+
+def main() -> int:
+    """Measure and print the table."""
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--window", type=float, default=10.0)
+    args = parser.parse_args()
+    app = QApplication.instance() or QApplication([])
+    scope = filled_scope(args.window)
+    app.processEvents()
+    print(f"scope {SIZE[0]}x{SIZE[1]}, plot {scope.plot.graphics.width()}x"
+          f"{scope.plot.graphics.height()}, 3 channels x {int(args.window * RATE_HZ)} samples")  # fmt: skip
+    print(f"{'repaint':10s} {'axes cached':>12s} {'not cached':>12s} {'ratio':>7s}")
+    for label, roll in (("static", False), ("roll", True)):
+        cached, uncached = [], []
+        for _ in range(3):  # interleaved, so a slow spell of the machine hits both
+            set_axis_cache(scope, True)
+            cached.append(repaint_ms(scope, roll))
+            set_axis_cache(scope, False)
+            uncached.append(repaint_ms(scope, roll))
+        a, b = statistics.median(cached), statistics.median(uncached)
+        print(f"{label:10s} {a:9.2f} ms {b:9.2f} ms {a / b:6.2f}x")
+    return 0
+
+
+if __name__ == "__main__":
+    raise SystemExit(main())
