@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import numpy as np
+import pyqtgraph as pg
 import pytest
 from PySide6.QtCore import QCoreApplication, QEvent, Qt
 from scope_fakes import FakeConnection
@@ -332,6 +333,30 @@ def test_zooming_an_axis_by_hand_stops_its_autoscale_until_auto(scope, conn):
     assert not plot.legend[0].autoscale.autoRaise()  # framed: it looks like a button
     plot.legend[0].autoscale.click()
     assert plot.is_autoscaled(0) and plot.y_range(0)[1] < 150
+
+
+def test_the_grid_lies_under_every_curve_at_the_labelled_ticks(scope, conn, qtbot):
+    scope.preselect("demand")
+    scope.start()
+    conn.samples_received.emit(np.full((100, 1), 8192))
+    scope._redraw()
+    plot = scope.plot
+    plot.views[0].setRange(xRange=(0, 10), yRange=(-60, 60), padding=0)
+    xs, ys = plot.grid.lines()
+    assert xs == pytest.approx([0, 2, 4, 6, 8, 10]) and ys == pytest.approx(
+        [-60, -40, -20, 0, 20, 40, 60]
+    )
+    below = plot.grid.zValue()
+    assert all(below < view.zValue() for view in plot.views[1:]) and below < plot.item.zValue()
+    assert plot.grid.boundingRect() == plot.views[0].sceneBoundingRect()
+    # a grid line is drawn in the plot where no curve is: the background there is lighter
+    qtbot.wait(20)
+    image = plot.graphics.grab().toImage()
+    top_left = plot.graphics.mapFromScene(plot.views[0].sceneBoundingRect().topLeft())
+    y20 = plot.graphics.mapFromScene(plot.views[0].mapViewToScene(pg.Point(5, 20))).y()
+    x = top_left.x() + 40
+    line = max(image.pixelColor(x, y20 + d).lightness() for d in (-1, 0, 1))
+    assert line > image.pixelColor(x, y20 + 6).lightness()
 
 
 def test_the_cached_axes_are_redrawn_when_their_range_changes(scope, conn, qtbot):

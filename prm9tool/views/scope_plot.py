@@ -7,7 +7,9 @@ axis zooms that channel alone (and stops its autoscale until "Auto" is pressed).
 
 Live frames are peak-decimated to twice the plot's pixel width before they reach pyqtgraph
 (the window is the clip), so a 10 s window at 5 kHz draws as ~2000 points per channel; a held
-recording is handed over whole, with pyqtgraph's clip-to-view and peak downsampling on.
+recording is handed over whole, with pyqtgraph's clip-to-view and peak downsampling on. The
+grid is an opaque item of its own under all three views, the y axes are cached pixmaps
+(benchmarks/bench_scope_paint.py: a repaint costs half of what pyqtgraph's own grid costs).
 """
 
 from __future__ import annotations
@@ -17,8 +19,8 @@ from collections.abc import Sequence
 
 import numpy as np
 import pyqtgraph as pg
-from PySide6.QtCore import QSize, Qt, Signal
-from PySide6.QtGui import QFontMetrics, QImage, QResizeEvent
+from PySide6.QtCore import QLineF, QRectF, QSize, Qt, Signal
+from PySide6.QtGui import QColor, QFontMetrics, QImage, QPainter, QPen, QResizeEvent
 from PySide6.QtWidgets import (
     QGraphicsItem,
     QGridLayout,
@@ -39,11 +41,76 @@ CURSOR_COLOUR = "#e0e0e0"
 SHARED_AXIS_COLOUR = "#c8c8c8"  # tick labels of an axis two channels share
 SHARED_LABEL_CHARS = 72  # longer joined names do not fit a 520-pixel plot: channel numbers instead
 LIVE_COLOUR = "#7a7a7a"  # legend values newer than the held trace
+GRID_COLOUR = "#3a3d42"  # opaque: a translucent grid line costs 2-4 ms per rolling frame
 
 
 def _format(value: float, unit: str) -> str:
     """A value with 4 significant digits and its unit ('—' for NaN)."""
     return "—" if math.isnan(value) else f"{value:.4g} {unit}"
+
+
+class _Grid(QGraphicsItem):
+    """The grid at channel 1's major ticks, under every channel's curves.
+
+    pyqtgraph's own grid is drawn by the axes, above the main view, so it has to be translucent
+    not to cut the curves; blending it across the plot on every frame of a running recording
+    costs more than the curves. This one lies under all views and is drawn opaque.
+    """
+
+    def __init__(self, view: pg.ViewBox, x_axis: pg.AxisItem, y_axis: pg.AxisItem) -> None:
+        super().__init__()
+        self._view, self._x_axis, self._y_axis = view, x_axis, y_axis
+        self._rect = QRectF()
+        self._pen = QPen(QColor(GRID_COLOUR), 0)  # cosmetic, 1 pixel
+        self.setZValue(-20)  # under the views of channels 2 and 3 (-10) and the plot item (0)
+        self.setAcceptedMouseButtons(Qt.MouseButton.NoButton)
+        view.sigResized.connect(self.follow_view)
+        view.sigRangeChanged.connect(lambda *_: self.update())
+
+    def follow_view(self) -> None:
+        """Take the main view's place in the scene."""
+        self.prepareGeometryChange()
+        self._rect = self._view.sceneBoundingRect()
+        self.update()
+
+    def boundingRect(self) -> QRectF:
+        """The main view's rectangle in scene coordinates."""
+        return self._rect
+
+    def lines(self) -> tuple[list[float], list[float]]:
+        """The x and y values (channel 1's view units) a grid line is drawn at."""
+        (x0, x1), (y0, y1) = self._view.viewRange()
+        r = self._rect
+        return (
+            self._major(self._x_axis, x0, x1, r.width()),
+            self._major(self._y_axis, y0, y1, r.height()),
+        )
+
+    @staticmethod
+    def _major(axis: pg.AxisItem, low: float, high: float, pixels: float) -> list[float]:
+        if not high > low or pixels <= 0:
+            return []
+        levels = axis.tickValues(low, high, pixels)
+        return [v for v in levels[0][1] if low <= v <= high] if levels else []
+
+    def paint(self, painter: QPainter, _option: object, _widget: object = None) -> None:
+        """Vertical lines at the time ticks, horizontal ones at channel 1's ticks."""
+        r = self._rect
+        (x0, x1), (y0, y1) = self._view.viewRange()
+        if r.isEmpty() or not (x1 > x0 and y1 > y0):
+            return
+        xs, ys = self.lines()
+        sx, sy = r.width() / (x1 - x0), r.height() / (y1 - y0)
+        painter.setPen(self._pen)
+        segments = [
+            QLineF(r.left() + (x - x0) * sx, r.top(), r.left() + (x - x0) * sx, r.bottom())
+            for x in xs
+        ]
+        segments += [
+            QLineF(r.left(), r.bottom() - (y - y0) * sy, r.right(), r.bottom() - (y - y0) * sy)
+            for y in ys
+        ]
+        painter.drawLines(segments)
 
 
 class _ElidedLabel(QLabel):
@@ -146,9 +213,7 @@ class ScopePlot(QWidget):
         self.graphics = pg.GraphicsLayoutWidget()
         self.graphics.setBackground("#111418")
         self.item = self.graphics.addPlot(row=0, col=0)
-        self.item.showGrid(x=True, y=True, alpha=0.3)
-        self.item.getAxis("right").setGrid(False)  # the grid follows channel 1 only
-        for name in ("left", "bottom"):  # grid at major ticks only: minor grid lines cost ~15 ms
+        for name in ("left", "bottom"):  # major ticks only, as the grid (minor lines cost ~15 ms)
             self.item.getAxis(name).setStyle(maxTickLevel=0)
         self.item.hideButtons()
         self.views = [self.item.getViewBox(), pg.ViewBox(), pg.ViewBox()]
@@ -157,8 +222,7 @@ class ScopePlot(QWidget):
         self.item.layout.addItem(self.axes[2], 2, 3)
         for axis in (*self.axes, self.item.getAxis("bottom")):
             axis.enableAutoSIPrefix(False)  # no label re-render on every range change
-            # an axis (with its grid, which spans the plot) is repainted with every curve update;
-            # cached as a pixmap it is re-rendered only when its range or size changes
+        for axis in self.axes:  # y axes change rarely (autoscale hysteresis): keep them as pixmaps
             axis.setCacheMode(QGraphicsItem.CacheMode.DeviceCoordinateCache)
         for view, axis in zip(self.views[1:], self.axes[1:], strict=True):
             self.item.scene().addItem(view)
@@ -166,6 +230,9 @@ class ScopePlot(QWidget):
             view.setXLink(self.item)
             view.setZValue(-10)  # below the main plot: mouse and cursors act on channel 1's view
         self.views[0].sigResized.connect(self._sync_geometry)
+        self.grid = _Grid(self.views[0], self.item.getAxis("bottom"), self.axes[0])
+        self.item.scene().addItem(self.grid)
+        self.grid.follow_view()
         self._auto = [True] * MAX_CHANNELS
         self._clipping = True
         for slot, view in enumerate(self.views):
