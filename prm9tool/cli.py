@@ -46,6 +46,8 @@ BATCH_ONLY = {
     "--all": "all",
 }
 FILE_TOOLS = {"--new": "new", "--check": "check", "--export-eds": "export_eds"}
+CAN_OPTIONS = {"--can-interface": "can_interface", "--can-channel": "can_channel",
+               "--can-bitrate": "can_bitrate"}  # fmt: skip
 
 
 def add_device_options(parser: argparse.ArgumentParser) -> None:
@@ -140,13 +142,23 @@ def usage_problem(args: argparse.Namespace) -> str | None:
     """What makes no sense in this combination of options (None: nothing), before anything runs.
 
     The GUI takes a file, ``--emulator`` (with the CAN options) and one ``--device``; the
-    batch-only options need ``--batch``; ``--list-devices`` takes only ``--emulator``.
+    batch-only options need ``--batch``; ``--list-devices`` takes only ``--emulator``; the CAN
+    options only put the GUI's emulated -CA valve on a bus, so they need ``--emulator`` and no
+    other command (an option that would be ignored is an error, not a surprise).
     """
     batch_only = [flag for flag, dest in BATCH_ONLY.items() if getattr(args, dest)]
     tools = [flag for flag, dest in FILE_TOOLS.items() if getattr(args, dest) is not None]
     command = "--list-devices" if args.list_devices else "--batch" if args.batch is not None else ""
     if command and tools:
         return f"{command} and {tools[0]} are separate commands: use one at a time"
+    can = [flag for flag, dest in CAN_OPTIONS.items() if _given(args, dest)]
+    if can and (command or tools):
+        return (
+            f"{can[0]} puts the GUI's emulated -CA valve on a CAN bus; "
+            f"{command or tools[0]} does not use CAN"
+        )
+    if can and not args.emulator:
+        return f"{can[0]} puts an emulated -CA valve on a CAN bus: use it with --emulator TYPEKEY"
     if command == "--list-devices":
         return _list_devices_problem(args, batch_only)
     if command == "--batch":
@@ -156,6 +168,11 @@ def usage_problem(args: argparse.Namespace) -> str | None:
     if not tools and len(args.device) > 1:
         return "the GUI goes online with one valve: give --device once (several: --batch)"
     return None
+
+
+def _given(args: argparse.Namespace, dest: str) -> bool:
+    """Whether an option differs from its default (argparse keeps no record of what was typed)."""
+    return getattr(args, dest) != build_parser().get_default(dest)
 
 
 def _list_devices_problem(args: argparse.Namespace, batch_only: list[str]) -> str | None:

@@ -143,6 +143,16 @@ def test_verification_failure_exits_1(tmp_path):
         ),
         (["--batch", "x.prm", "--emulator", "PRM9-06.3Z11/31-24E02S02"], "flow '31'"),
         (["--bogus"], "unrecognized arguments"),
+        (
+            ["--batch", "x.prm", "--emulator", E02, "--can-interface", "socketcan"],
+            "--can-interface puts the GUI's emulated -CA valve on a CAN bus; --batch does not",
+        ),
+        (
+            ["--list-devices", "--can-bitrate", "250000"],
+            "--can-bitrate puts the GUI's emulated -CA valve on a CAN bus; --list-devices",
+        ),
+        (["--check", "x.prm", "--can-channel", "can1"], "; --check does not use CAN"),
+        (["--can-channel", "can1"], "use it with --emulator TYPEKEY"),
     ],
 )
 def test_usage_errors_exit_2(tmp_path, args, message):
