@@ -169,10 +169,9 @@ def run_stream_only(app: QApplication, seconds: float, waveform: str) -> float:
     return share
 
 
-def run_scope(app: QApplication, seconds: float, window_s: float, waveform: str) -> dict:
-    """Stream into the scope for ``seconds``; return the measured figures."""
-    conn = online(app)
-    scope = ScopeWidget(conn, ParameterDocument(TYPE_KEY))
+def scope_on(conn: object, window_s: float) -> ScopeWidget:
+    """The scope at SIZE on ``conn``: KEYS at RATE_HZ, roll mode, a ``window_s`` window."""
+    scope = ScopeWidget(conn, ParameterDocument(TYPE_KEY))  # type: ignore[arg-type]
     scope.resize(*SIZE)
     scope.show()
     for key in KEYS:
@@ -181,6 +180,13 @@ def run_scope(app: QApplication, seconds: float, window_s: float, waveform: str)
     c.rate.setCurrentIndex(c.rate.findData(RATE_HZ))
     c.time_window.setCurrentIndex(c.time_window.findData(window_s))
     c.mode.setCurrentIndex(c.mode.findData(TriggerMode.ROLL))
+    return scope
+
+
+def run_scope(app: QApplication, seconds: float, window_s: float, waveform: str) -> dict:
+    """Stream into the scope for ``seconds``; return the measured figures."""
+    conn = online(app)
+    scope = scope_on(conn, window_s)
     timer = FrameTimer()
     scope.start()
     wait_until(app, lambda: scope.receiving, 5.0)

@@ -16,56 +16,24 @@ from __future__ import annotations
 
 import argparse
 import statistics
+import sys
 import time
+from pathlib import Path
 
 import numpy as np
-from PySide6.QtCore import QObject, Signal
+from bench_scope import RATE_HZ, SIZE, scope_on
 from PySide6.QtWidgets import QApplication, QGraphicsItem
 
-from prm9tool.document import ParameterDocument
-from prm9tool.scope import TriggerMode
 from prm9tool.views.scope import ScopeWidget
 
-TYPE_KEY = "PRM9-06.3Z11/30-24E02S02"
-KEYS = ("setpoint_raw", "position_actual", "current_a")
-RATE_HZ = 5000
-SIZE = (1400, 850)
-
-
-class _Link(QObject):
-    """The signals the scope listens to; the benchmark pushes samples in itself."""
-
-    online_changed = Signal(bool)
-    lost = Signal(str)
-    samples_received = Signal(object)
-    stream_started = Signal(list)
-    stream_stopped = Signal()
-    failed = Signal(str)
-    write_failed = Signal(list)
-    is_online = True
-    samples_lost = 0
-
-    def start_stream(self, keys: list[str], rate_hz: int) -> None:
-        self.stream_started.emit(list(keys))
-
-    def stop_stream(self) -> None:
-        self.stream_stopped.emit()
-
-    def write(self, mnemonic: str, raw: int | str) -> None:
-        """The generator is not used here."""
+sys.path.insert(0, str(Path(__file__).resolve().parent.parent / "tests"))
+from scope_fakes import FakeConnection  # the scope tests' stand-in connection
 
 
 def filled_scope(window_s: float) -> ScopeWidget:
     """A running scope showing ``window_s`` seconds of three channels."""
-    link = _Link()
-    scope = ScopeWidget(link, ParameterDocument(TYPE_KEY))  # type: ignore[arg-type]
-    scope.resize(*SIZE)
-    scope.show()
-    for key in KEYS:
-        scope.preselect(key)
-    c = scope.controls
-    c.time_window.setCurrentIndex(c.time_window.findData(window_s))
-    c.mode.setCurrentIndex(c.mode.findData(TriggerMode.ROLL))
+    link = FakeConnection()
+    scope = scope_on(link, window_s)
     scope.start()
     count = int(window_s * RATE_HZ)
     rng = np.random.default_rng(1)

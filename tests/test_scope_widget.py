@@ -48,6 +48,15 @@ def _step_block(count: int, at: int, channels: int = 2) -> np.ndarray:
     return np.column_stack([ref, lagged, np.full(count, 700)][:channels])
 
 
+def _showing_demand(scope, conn):
+    """The scope recording the demand value, one block received and drawn."""
+    scope.preselect("demand")
+    scope.start()
+    conn.samples_received.emit(np.full((100, 1), 8192))
+    scope._redraw()
+    return scope.plot
+
+
 def test_lists_every_measuring_point_of_the_variant(scope, doc):
     names = [scope.channels.list.item(r).text() for r in range(scope.channels.list.count())]
     assert len(names) == len(signals_for(doc.variant))
@@ -320,11 +329,7 @@ def test_an_axis_shared_by_three_long_names_is_labelled_with_channel_numbers(sco
 
 
 def test_zooming_an_axis_by_hand_stops_its_autoscale_until_auto(scope, conn):
-    scope.preselect("demand")
-    scope.start()
-    conn.samples_received.emit(np.full((100, 1), 8192))
-    scope._redraw()
-    plot = scope.plot
+    plot = _showing_demand(scope, conn)
     plot.views[0].setYRange(-200, 200, padding=0)
     plot.views[0].sigRangeChangedManually.emit([True, True])
     conn.samples_received.emit(np.full((100, 1), 16384))
@@ -336,11 +341,7 @@ def test_zooming_an_axis_by_hand_stops_its_autoscale_until_auto(scope, conn):
 
 
 def test_the_grid_lies_under_every_curve_at_the_labelled_ticks(scope, conn, qtbot):
-    scope.preselect("demand")
-    scope.start()
-    conn.samples_received.emit(np.full((100, 1), 8192))
-    scope._redraw()
-    plot = scope.plot
+    plot = _showing_demand(scope, conn)
     plot.views[0].setRange(xRange=(0, 10), yRange=(-60, 60), padding=0)
     xs, ys = plot.grid.lines()
     assert xs == pytest.approx([0, 2, 4, 6, 8, 10]) and ys == pytest.approx(
@@ -361,11 +362,7 @@ def test_the_grid_lies_under_every_curve_at_the_labelled_ticks(scope, conn, qtbo
 
 def test_the_cached_axes_are_redrawn_when_their_range_changes(scope, conn, qtbot):
     """The axes are cached pixmaps (a benchmark finding): a new range must still show."""
-    scope.preselect("demand")
-    scope.start()
-    conn.samples_received.emit(np.full((100, 1), 8192))
-    scope._redraw()
-    plot = scope.plot
+    plot = _showing_demand(scope, conn)
     left = plot.axes[0]
 
     def picture():
