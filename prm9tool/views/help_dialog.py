@@ -3,24 +3,24 @@
 from __future__ import annotations
 
 import platform
-from pathlib import Path
 
 from PySide6 import __version__ as pyside_version
-from PySide6.QtCore import QEvent, QUrl, qVersion
+from PySide6.QtCore import QEvent, QFile, QUrl, qVersion
 from PySide6.QtGui import QDesktopServices
 from PySide6.QtWidgets import QDialog, QDialogButtonBox, QTextBrowser, QVBoxLayout, QWidget
 
 from prm9tool import __version__
 from prm9tool.i18n import current_language
+from prm9tool.views import resources_rc  # noqa: F401  (registers the :/help/ resources)
 
-HELP_DIR = Path(__file__).resolve().parent.parent / "resources" / "help"
+HELP_PREFIX = ":/help/"  # resources/help/, compiled into resources_rc
 HOMEPAGE = "https://www.argo-hytos.com"
 
 
-def help_file(language: str) -> Path:
-    """The help page in ``language`` (English if there is none in that language)."""
-    path = HELP_DIR / f"help_{language}.html"
-    return path if path.exists() else HELP_DIR / "help_en.html"
+def help_file(language: str) -> str:
+    """The resource path of the help page in ``language`` (English if there is none)."""
+    path = f"{HELP_PREFIX}help_{language}.html"
+    return path if QFile.exists(path) else f"{HELP_PREFIX}help_en.html"
 
 
 class HelpWindow(QDialog):
@@ -41,9 +41,7 @@ class HelpWindow(QDialog):
     def retranslate(self) -> None:
         """Load the page in the current language."""
         self.setWindowTitle(self.tr("prm9tool help"))
-        path = help_file(current_language())
-        self.browser.setSearchPaths([str(path.parent)])
-        self.browser.setSource(QUrl.fromLocalFile(str(path)))
+        self.browser.setSource(QUrl("qrc" + help_file(current_language())))
 
     def changeEvent(self, event: QEvent) -> None:
         """Reload when the program language changes."""

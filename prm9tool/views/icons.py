@@ -1,14 +1,19 @@
-"""Icons: the desktop theme's icon where there is one, else Qt's standard icon or ours (SVG)."""
+"""Icons: the desktop theme's icon where there is one, else Qt's standard icon or ours (SVG).
+
+Ours are in resources/icons/, compiled into the Qt resource module ``resources_rc`` (see
+resources/README.md) and loaded from ``:/icons/``.
+"""
 
 from __future__ import annotations
 
 from functools import cache
-from pathlib import Path
 
 from PySide6.QtGui import QIcon
 from PySide6.QtWidgets import QApplication, QStyle
 
-ICON_DIR = Path(__file__).resolve().parent.parent / "resources" / "icons"
+from prm9tool.views import resources_rc  # noqa: F401  (registers the :/icons/ resources)
+
+ICON_PREFIX = ":/icons/"
 
 SP = QStyle.StandardPixmap
 # name -> (freedesktop theme name, fallback: a standard pixmap or an SVG of ours)
@@ -46,7 +51,7 @@ def icon(name: str) -> QIcon:
     """The icon called ``name`` (see ``_ICONS``); an empty icon for unknown names."""
     theme, fallback = _ICONS.get(name, ("", ""))
     if isinstance(fallback, str):
-        backup = QIcon(str(ICON_DIR / fallback)) if fallback else QIcon()
+        backup = QIcon(ICON_PREFIX + fallback) if fallback else QIcon()
     else:
         backup = QApplication.style().standardIcon(fallback)
     if theme and QIcon.hasThemeIcon(theme):
