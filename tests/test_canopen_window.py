@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+import os
+
 import pytest
 from diagram_fakes import EmulatorConnection
 
@@ -256,3 +258,29 @@ def test_the_window_fits_a_1024_x_768_screen(qtbot, language):
         assert window.baud_table.viewport().height() >= 16 * window.baud_table.rowHeight(0)
     finally:
         i18n.set_language("en")
+
+
+def test_the_window_follows_a_dark_palette(qtbot, qapp, tmp_path):
+    from test_diagram_palette import dark_palette
+
+    from prm9tool.views.diagram.colours import contrast_ratio
+
+    window, *_ = open_window(qtbot, switches=(0xB, 1))
+    light_mark = window.baud_table.item(0xB, 0).background().color()
+    before = qapp.palette()
+    qapp.setPalette(dark_palette())
+    try:
+        qtbot.waitUntil(lambda: window.baud_table.item(0xB, 0).background().color() != light_mark)
+        mark = window.baud_table.item(0xB, 0).background().color()
+        assert mark.lightness() < 128 and mark.hue() == light_mark.hue()  # the yellow, dark
+        text = window.palette().color(window.palette().ColorRole.Text)
+        assert contrast_ratio(text, mark) >= 4.5
+        struck = window.baud_table.item(0xB, 1).foreground().color()
+        assert contrast_ratio(struck, mark) >= 3.0
+        assert "background: #fff4d6" not in window.restart_label.styleSheet()
+        window.grab().save(
+            str(os.environ.get("PRM9TOOL_SCREENSHOTS", tmp_path)) + "/canopen_dark.png"
+        )
+    finally:
+        qapp.setPalette(before)
+    qtbot.waitUntil(lambda: window.baud_table.item(0xB, 0).background().color() == light_mark)

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 from PySide6.QtWidgets import (
+    QApplication,
     QDialog,
     QDialogButtonBox,
     QFormLayout,
@@ -13,6 +14,7 @@ from PySide6.QtWidgets import (
 )
 
 from prm9tool.password import MIN_LENGTH, PasswordStore
+from prm9tool.views.diagram.colours import toned_style
 
 
 def _password_field() -> QLineEdit:
@@ -23,7 +25,7 @@ def _password_field() -> QLineEdit:
 
 def _error_label() -> QLabel:
     label = QLabel()
-    label.setStyleSheet("color: #d03030;")
+    label.setStyleSheet(toned_style("color: #d03030;", QApplication.palette()))
     label.setWordWrap(True)
     label.hide()
     return label

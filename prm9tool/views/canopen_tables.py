@@ -8,7 +8,7 @@ Texts use the translation context of the window ("CanopenWindow").
 
 from __future__ import annotations
 
-from PySide6.QtCore import QCoreApplication, Qt
+from PySide6.QtCore import QCoreApplication, QEvent, Qt
 from PySide6.QtGui import QBrush, QColor, QFont
 from PySide6.QtWidgets import (
     QAbstractItemView,
@@ -29,10 +29,11 @@ from prm9tool.canopen_switches import (
     node_position,
     overridden,
 )
+from prm9tool.views.diagram.colours import on_palette, readable
 
 translate = QCoreApplication.translate  # the name pyside6-lupdate looks for
-CURRENT_BRUSH = QBrush(QColor("#ffe9a8"))
-OVERRIDDEN_INK = QBrush(QColor("#8a8a8a"))
+CURRENT_PAPER = QColor("#ffe9a8")  # colours as on paper, moved onto the palette when shown
+OVERRIDDEN_PAPER = QColor("#8a8a8a")
 ROW_H = 20
 
 
@@ -67,6 +68,12 @@ class SwitchTables(QWidget):
             [translate("CanopenWindow", "Position"), translate("CanopenWindow", "Node ID")]
         )
 
+    def changeEvent(self, event: QEvent) -> None:
+        """Re-colour the marked row when the palette changes (light / dark)."""
+        if event.type() == QEvent.Type.PaletteChange:
+            self.show_switches(self.switches)
+        super().changeEvent(event)
+
     def show_switches(self, switches: tuple[int, int] | None) -> None:
         """Fill both tables; mark ``(interface, node)`` if known."""
         self.switches = switches
@@ -95,7 +102,7 @@ class SwitchTables(QWidget):
                 font = QFont(item.font())
                 font.setBold(True)
                 item.setFont(font)
-                item.setBackground(CURRENT_BRUSH)
+                item.setBackground(QBrush(on_palette(CURRENT_PAPER, self.palette())))
                 item.setToolTip(
                     translate("CanopenWindow", "Position read by the valve at its last power-up")
                 )
@@ -108,7 +115,9 @@ class SwitchTables(QWidget):
         font = QFont(item.font())
         font.setStrikeOut(True)
         item.setFont(font)
-        item.setForeground(OVERRIDDEN_INK)
+        palette = self.palette()
+        base = on_palette(CURRENT_PAPER, palette)  # a struck cell is in the marked row
+        item.setForeground(QBrush(readable(on_palette(OVERRIDDEN_PAPER, palette), base, 3.0)))
         node = self.switches[1] if self.switches is not None else 0
         if column == 2:
             why = translate(

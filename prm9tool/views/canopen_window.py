@@ -42,11 +42,15 @@ from prm9tool.i18n import current_language
 from prm9tool.sync import ValveSync
 from prm9tool.translate import error_text
 from prm9tool.views.canopen_tables import SwitchTables
+from prm9tool.views.diagram.colours import toned_style
 
 SETTINGS = ("NODEID", "BITRATE", "CANTERM")
 SWITCHES = ("SWBAUD", "SWNODE")
 READ_TAG = "canopen_window"
 RESTARTED = ("restart", "after_restart")  # the connection's restart; Valve → Restart valve
+# written for paper, moved onto the palette by toned_style (light or dark)
+RESTART_STYLE = "background: #fff4d6; color: #6b4a00; padding: 6px; border-radius: 4px;"
+ERROR_STYLE = "color: #d03030; font-weight: bold;"
 
 
 class CanopenWindow(QDialog):
@@ -82,10 +86,8 @@ class CanopenWindow(QDialog):
     def _build(self) -> None:
         self.intro, self.state_label = _label(), _label()
         self.effective_label = _label("font-weight: bold;")
-        self.restart_label = _label(
-            "background: #fff4d6; color: #6b4a00; padding: 6px; border-radius: 4px;"
-        )
-        self.error_label = _label("color: #d03030; font-weight: bold;")
+        self.restart_label, self.error_label = _label(), _label()
+        self._tone()
         buttons = QDialogButtonBox(QDialogButtonBox.StandardButton.Close)
         buttons.rejected.connect(self.close)
         root = QVBoxLayout(self)
@@ -351,9 +353,17 @@ class CanopenWindow(QDialog):
         if mnemonic in SETTINGS or mnemonic in SWITCHES:
             self.refresh()
 
+    def _tone(self) -> None:
+        """The notice and error colours (written for paper) on the current palette."""
+        palette = self.palette()
+        self.restart_label.setStyleSheet(toned_style(RESTART_STYLE, palette))
+        self.error_label.setStyleSheet(toned_style(ERROR_STYLE, palette))
+
     def changeEvent(self, event: QEvent) -> None:
         if event.type() == QEvent.Type.LanguageChange:
             self.retranslate()
+        if event.type() == QEvent.Type.PaletteChange:
+            self._tone()
         super().changeEvent(event)
 
 

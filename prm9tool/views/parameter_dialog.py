@@ -27,6 +27,7 @@ from prm9tool.editing import apply_edit, linked_mnemonics
 from prm9tool.errors import AccessDeniedError, ValueRangeError
 from prm9tool.i18n import current_language, text
 from prm9tool.translate import error_text
+from prm9tool.views.diagram.colours import toned_style
 
 # A value and its unit stay on one line when the reason wraps ("2600 mA", not "2600 / mA").
 _VALUE_UNIT = re.compile(r"(\d) (?=(?:mA|mV|ms|Hz|V|s|%|°C)\b|%)")
@@ -53,7 +54,7 @@ class ParameterEditDialog(QDialog):
         self._editor: QLineEdit | QComboBox = self._make_editor()
         self.error_label = QLabel()
         self.error_label.setWordWrap(True)
-        self.error_label.setStyleSheet("color: #d03030;")
+        self.error_label.setStyleSheet(toned_style("color: #d03030;", self.palette()))
         self.error_label.hide()
         self._error: Exception | None = None  # the refusal shown, retranslated with the dialog
         self._labels = {name: QLabel() for name in ("current", "range", "default", "hint")}
