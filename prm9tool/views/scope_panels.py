@@ -25,6 +25,7 @@ from prm9tool.i18n import text
 from prm9tool.scope import RATES_HZ, WINDOWS_S, Edge, TriggerMode, TriggerSettings
 from prm9tool.signals import MAX_CHANNELS
 from prm9tool.signals import Signal as MeasuringPoint
+from prm9tool.views.diagram.colours import toned_style
 
 KEY_ROLE = Qt.ItemDataRole.UserRole
 MIN_LIST_WIDTH = 230  # px: the measuring-point list in a 1024-pixel window
@@ -110,7 +111,7 @@ class ChannelPanel(QGroupBox):
         self.list = _PointList()
         self.message = QLabel()
         self.message.setWordWrap(True)
-        self.message.setStyleSheet("color: #c01c28")
+        self.message.setStyleSheet(toned_style("color: #c01c28", self.palette()))
         self.message.hide()
         self.same_scale = QCheckBox()
         self.same_scale.setChecked(True)

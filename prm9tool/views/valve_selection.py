@@ -24,6 +24,7 @@ from prm9tool.errors import TypeKeyError
 from prm9tool.translate import error_text
 from prm9tool.typekey import FLOWS, SPOOLS, SUPPLIES, SpoolSource, TypeKey
 from prm9tool.variant import Config
+from prm9tool.views.diagram.colours import toned_style
 
 DEFAULT_TYPE_KEY = "PRM9-06.3Z11/30-24E02S02"
 
@@ -42,7 +43,7 @@ class ValveSelectionDialog(QDialog):
         self.canopen = QCheckBox("CANopen (-CA)")
         self.key_edit = QLineEdit()
         self.error_label = QLabel()
-        self.error_label.setStyleSheet("color: #d03030;")
+        self.error_label.setStyleSheet(toned_style("color: #d03030;", self.palette()))
         self.error_label.setWordWrap(True)
         self._error: TypeKeyError | None = None  # why the typed key is refused
         self._titles = [QLabel() for _ in range(7)]
