@@ -112,3 +112,33 @@ def test_a_broken_spools_json_is_shown_once_at_start_in_the_program_language(
         "\n\nBis die Datei korrigiert ist, kennt prm9tool nur die mitgelieferten Schieber."
     ]
     window.connection.shutdown()
+
+
+def test_the_window_comes_up_without_the_heavy_modules(tmp_path):
+    """numpy, pyqtgraph and the device layer load when first needed (the connection's worker,
+    the oscilloscope, a controller dialog), not on the way to the window (docs/PERFORMANCE.md)."""
+    import subprocess
+    import sys
+
+    code = (
+        "import sys\n"
+        "from prm9tool import app\n"
+        "from prm9tool.cli import build_parser\n"
+        "qapp = app.create_application()\n"
+        "window = app.create_window(build_parser().parse_args([]))\n"
+        "window.show()\n"
+        "qapp.processEvents()\n"
+        "heavy = ('numpy', 'pyqtgraph', 'can', 'prm9tool.device', 'prm9tool.tuning')\n"
+        "print(sorted(m for m in heavy if m in sys.modules))\n"
+    )
+    env = dict(os.environ, PRM9TOOL_DATA_DIR=str(tmp_path / "data"), QT_QPA_PLATFORM="offscreen")
+    env["XDG_CONFIG_HOME"] = str(tmp_path / "config")
+    result = subprocess.run(
+        [sys.executable, "-c", code],
+        env=env,
+        capture_output=True,
+        text=True,
+        timeout=60,
+        check=False,
+    )
+    assert result.stdout.strip() == "[]", result.stderr

@@ -31,7 +31,6 @@ from prm9tool.connection_protocol import DiagramConnection
 from prm9tool.document import ParameterDocument
 from prm9tool.i18n import text
 from prm9tool.signals import BY_KEY
-from prm9tool.tuning import StepSimulator
 from prm9tool.views.diagram.colours import DiagramColours
 from prm9tool.views.diagram.dialogs import BlockContext, create_block_dialog
 from prm9tool.views.diagram.layout import layout_for
@@ -83,7 +82,7 @@ class DiagramView(QGraphicsView):
         super().__init__(parent)
         self._doc, self._access, self._connection = document, access, connection
         # the controller dialogs' step responses (tests inject a stand-in)
-        self._simulator_factory = simulator_factory or StepSimulator.for_document
+        self._simulator_factory = simulator_factory or _step_simulator
         self._dialogs: dict[str, QDialog] = {}
         self._fit = True
         self._scene: DiagramScene | None = None
@@ -339,3 +338,11 @@ class DiagramView(QGraphicsView):
             self._refresh_blocks()
             self._refresh_dots()
         super().changeEvent(event)
+
+
+def _step_simulator(document: ParameterDocument, loop: str) -> Any:
+    """The controller dialogs' step-response simulator (imported when first needed: the
+    tuning module brings numpy and the emulator, ~150 ms the program's start need not wait)."""
+    from prm9tool.tuning import StepSimulator
+
+    return StepSimulator.for_document(document, loop)
