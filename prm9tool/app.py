@@ -83,7 +83,7 @@ def create_window(args: argparse.Namespace) -> MainWindow:
     i18n.set_language(language if language in i18n.LANGUAGES else i18n.DEFAULT_LANGUAGE)
     doc = ParameterDocument(DEFAULT_TYPE_KEY)
     undo = DocumentUndo(doc)
-    connection = ValveConnection(opener=_opener(args), lister=_lister)
+    connection = ValveConnection(opener=_opener(args), lister=_lister, after_open=_joiner(args))
     return MainWindow(doc, undo, AccessModel(), connection, settings)
 
 
@@ -165,15 +165,32 @@ def _matches(entry: object, wanted: str) -> bool:
 
 
 def _opener(args: argparse.Namespace) -> Callable[[object], object]:
-    """Open sessions through the one device factory, with the command line's CAN options."""
+    """Open sessions through the one device factory (the CAN bus joins later: _joiner)."""
 
     def open_session(entry: object) -> object:
         from prm9tool.device import factory
 
-        can = factory.CanOptions.from_args(args) if hasattr(args, "can_interface") else None
-        return factory.open_session(entry, paced=True, can=can)  # type: ignore[arg-type]
+        return factory.open_session(entry, paced=True)  # type: ignore[arg-type]
 
     return open_session
+
+
+def _joiner(args: argparse.Namespace) -> Callable[[object], object] | None:
+    """Put an emulated -CA valve on the command line's CAN bus once its session is open.
+
+    Not part of opening: python-can's import would delay "online" by ~0.2 s, and a bus that
+    cannot be opened is reported (the connection's ``failed``) while the valve stays online
+    over USB.
+    """
+    if not hasattr(args, "can_interface"):
+        return None
+
+    def join(session: object) -> object:
+        from prm9tool.device import factory
+
+        return factory.join_can(session, factory.CanOptions.from_args(args))  # type: ignore[arg-type]
+
+    return join
 
 
 def _lister(emulators: object) -> list[object]:

@@ -68,10 +68,15 @@ class ValveConnection(QObject):
         opener: Opener | None = None,
         lister: Lister | None = None,
         parent: QObject | None = None,
+        after_open: Callable[[Any], object] | None = None,
     ) -> None:
+        """``after_open(session)`` runs in a thread of its own once a session is open, while
+        the connection already reports online (the GUI puts an emulated -CA valve on its CAN
+        bus there); a Prm9Error it raises arrives as ``failed``, the session stays open."""
         super().__init__(parent)
         self._opener = opener or _default_opener
         self._lister = lister or _default_lister
+        self._after_open = after_open
         self._jobs: queue.Queue[_Job | None] = queue.Queue()
         self._thread: threading.Thread | None = None
         self._cancel = threading.Event()
@@ -362,7 +367,22 @@ class ValveConnection(QObject):
         self._session = self._opener(entry)
         info = self._session.identify()
         self._poller.reset(info)
+        if self._after_open is not None:
+            session = self._session
+            threading.Thread(
+                target=self._run_after_open, args=(session,), name="valve-after-open", daemon=True
+            ).start()
         return info
+
+    def _run_after_open(self, session: object) -> None:
+        assert self._after_open is not None
+        try:
+            self._after_open(session)
+        except Prm9Error as exc:
+            failure = exc
+            self._post(lambda: self.failed.emit(error_text(failure)))
+        except Exception:  # a bug must not pass silently
+            log.exception("after opening the session")
 
     def _close(self) -> None:
         session, self._session = self._session, None

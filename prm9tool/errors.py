@@ -107,6 +107,14 @@ class DeviceDisconnectedError(CommunicationError):
     summary = QT_TRANSLATE_NOOP("Errors", "The connection to the valve is broken.")
 
 
+class CanBusError(Prm9Error):
+    """An emulated -CA valve could not join its CAN bus (its USB link is not affected)."""
+
+    summary = QT_TRANSLATE_NOOP(
+        "Errors", "The emulated valve could not join the CAN bus; it works over USB without CAN."
+    )
+
+
 class AccessDeniedError(Prm9Error):
     """The operation is not allowed at the current access level or device state."""
 

@@ -1,8 +1,8 @@
 """``prm9tool --emulator TYPEKEY --can-interface virtual --can-channel X`` puts the valve on X.
 
-The command line is parsed by the real parser and the session opened by the composition
-root's opener (the one the GUI uses) through prm9tool/device/factory.py; the GUI itself is not
-started. A ``canopen`` master on the same ``virtual`` channel then commissions the valve.
+The command line is parsed by the real parser and the session opened, then put on the bus, by
+the composition root's opener and joiner (the ones the GUI's connection uses) through
+prm9tool/device/factory.py; the GUI itself is not started. A ``canopen`` master on the same ``virtual`` channel then commissions the valve.
 """
 
 from __future__ import annotations
@@ -17,7 +17,7 @@ from canopen_rig import TIMEOUT_S, unique_channel
 
 from prm9tool import app, cli
 from prm9tool.device import factory
-from prm9tool.errors import CommunicationError
+from prm9tool.errors import CanBusError
 
 E04_CA = "PRM9-06.3Z11/30-24E04S02-CA"
 SERIAL = 4711
@@ -33,9 +33,16 @@ def _wait_for(bus: can.BusABC, can_id: int, data: bytes) -> None:
 
 
 def _open(argv: list[str]) -> object:
+    """Open the session as the GUI does, then join the CAN bus (the session stays open)."""
     args = cli.build_parser().parse_args(argv)
     entry = factory.list_devices(app.plan_from(args).emulators)[0]
-    return app._opener(args)(entry)
+    session = app._opener(args)(entry)
+    try:
+        app._joiner(args)(session)
+    except BaseException:
+        session.close()
+        raise
+    return session
 
 
 @pytest.fixture(autouse=True)
@@ -66,8 +73,31 @@ def test_command_line_puts_the_emulated_ca_valve_on_the_chosen_virtual_channel()
         listener.shutdown()
 
 
-def test_an_unknown_can_interface_is_reported():
-    argv = ["--emulator", f"{E04_CA}:{SERIAL}", "--can-interface", "no-such-interface"]
-    with pytest.raises(CommunicationError, match="cannot open CAN bus"):
-        _open(argv)
+def test_an_unknown_can_interface_is_reported_and_the_usb_session_keeps_working():
+    args = cli.build_parser().parse_args(
+        ["--emulator", f"{E04_CA}:{SERIAL}", "--can-interface", "no-such-interface"]
+    )
+    session = app._opener(args)(factory.list_devices(app.plan_from(args).emulators)[0])
+    try:
+        with pytest.raises(CanBusError, match="cannot open CAN bus"):
+            app._joiner(args)(session)
+        assert session.read("LIMTA") == 2400  # type: ignore[attr-defined]  # USB unaffected
+    finally:
+        session.close()  # type: ignore[attr-defined]
     assert not factory.emulated_valve(E04_CA, SERIAL).running  # nothing left running
+
+
+def test_the_bus_is_released_when_the_session_closes(monkeypatch):
+    opened = []
+    real_bus = can.Bus
+
+    def recording_bus(**kwargs):
+        opened.append(real_bus(**kwargs))
+        return opened[-1]
+
+    monkeypatch.setattr(can, "Bus", recording_bus)
+    argv = ["--emulator", f"{E04_CA}:{SERIAL}", "--can-interface", "virtual"]
+    session = _open([*argv, "--can-channel", unique_channel("release")])
+    assert len(opened) == 1 and not opened[0]._is_shutdown
+    session.close()  # type: ignore[attr-defined]
+    assert opened[0]._is_shutdown and not factory.emulated_valve(E04_CA, SERIAL).running

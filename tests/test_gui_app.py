@@ -63,6 +63,33 @@ def test_emulator_on_the_command_line_goes_online_and_is_remembered(qtbot, answe
     window.connection.shutdown()
 
 
+def test_the_emulated_ca_valve_joins_the_command_lines_can_bus_once_online(qtbot, answers):
+    import can
+
+    channel = "gui-app-join"
+    listener = can.Bus(interface="virtual", channel=channel)
+    try:
+        app.create_application()
+        args = _args("--emulator", f"{E04_CA}:4202", "--can-channel", channel)
+        window = app.create_window(args)
+        qtbot.addWidget(window)
+        with qtbot.waitSignal(window.connection.online_changed, timeout=TIMEOUT):
+            app.start(window, app.plan_from(args))
+        node = factory.emulated_valve(E04_CA, 4202).node_id
+        seen: list[int] = []
+
+        def boot_up() -> bool:
+            frame = listener.recv(0.05)
+            if frame is not None:
+                seen.append(frame.arbitration_id)
+            return 0x700 + node in seen
+
+        qtbot.waitUntil(boot_up, timeout=TIMEOUT)  # the valve's boot-up on the user's channel
+        window.connection.shutdown()
+    finally:
+        listener.shutdown()
+
+
 def test_a_bad_emulator_type_key_is_reported(qtbot, answers):
     app.create_application()
     args = _args("--emulator", "PRM9-07.3Z11/30-24E02S02")

@@ -150,6 +150,33 @@ def test_a_lost_valve_is_explained_in_the_program_language(qtbot, connection):
     assert "link is down" in lost[0][0]
 
 
+def test_a_can_bus_that_cannot_be_opened_is_reported_and_the_valve_stays_online(qtbot):
+    """The GUI joins the CAN bus after going online (app._joiner): a failure there is a
+    message, not a lost valve."""
+    from prm9tool import app
+    from prm9tool.cli import build_parser
+
+    args = build_parser().parse_args(["--can-interface", "no-such-interface"])
+    conn = ValveConnection(
+        opener=lambda entry: factory.open_session(entry, paced=False),
+        lister=factory.list_devices,
+        after_open=app._joiner(args),
+    )
+    try:
+        failed = _record(conn.failed)
+        _online(qtbot, conn, spec="PRM9-06.3Z11/30-24E04S02-CA:5003")
+        qtbot.waitUntil(lambda: bool(failed), timeout=TIMEOUT)
+        assert failed[0][0].startswith("The emulated valve could not join the CAN bus; it works")
+        assert "cannot open CAN bus" in failed[0][0]
+        assert conn.is_online
+        with qtbot.waitSignal(conn.operation_finished, timeout=TIMEOUT) as read:
+            conn.read_many(["LIMTA"])
+        assert read.args[1] == {"LIMTA": 2400}
+    finally:
+        conn.shutdown()
+        factory.forget_emulated_valves()
+
+
 def test_watched_measuring_points_are_reported(qtbot, paced_connection):
     connection = paced_connection
     _online(qtbot, connection, f"{E04_CA}:5002")

@@ -715,6 +715,10 @@ Dokud soubor neopravíte, zná prm9tool pouze dodaná šoupátka.</translation>
             <translation>Spojení s ventilem je přerušeno.</translation>
         </message>
         <message>
+            <source>The emulated valve could not join the CAN bus; it works over USB without CAN.</source>
+            <translation>Emulovaný ventil se nemohl připojit ke sběrnici CAN; pracuje přes USB bez CAN.</translation>
+        </message>
+        <message>
             <source>The valve refused the access.</source>
             <translation>Ventil přístup odmítl.</translation>
         </message>

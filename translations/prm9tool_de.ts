@@ -715,6 +715,10 @@ Bis die Datei korrigiert ist, kennt prm9tool nur die mitgelieferten Schieber.</t
             <translation>Die Verbindung zum Ventil ist unterbrochen.</translation>
         </message>
         <message>
+            <source>The emulated valve could not join the CAN bus; it works over USB without CAN.</source>
+            <translation>Das emulierte Ventil konnte dem CAN-Bus nicht beitreten; es arbeitet über USB ohne CAN.</translation>
+        </message>
+        <message>
             <source>The valve refused the access.</source>
             <translation>Das Ventil hat den Zugriff abgelehnt.</translation>
         </message>

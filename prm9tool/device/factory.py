@@ -16,7 +16,7 @@ from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
 from prm9tool.device.session import ValveSession
-from prm9tool.errors import CommunicationError, Prm9Error, TypeKeyError
+from prm9tool.errors import CanBusError, CommunicationError, Prm9Error, TypeKeyError
 from prm9tool.typekey import TypeKey
 
 if TYPE_CHECKING:
@@ -182,7 +182,9 @@ def open_session(
     Emulated valves: ``paced`` runs the valve in real time in its own thread (GUI); False
     steps its simulation on the link's clock instead (tests, tools, batch mode).
     ``link_paced`` (default: ``paced``) holds the emulated USB link to one report per
-    millisecond of wall-clock time. ``can``: put an emulated -CA valve on that python-can bus.
+    millisecond of wall-clock time. ``can``: put an emulated -CA valve on that python-can bus
+    before returning (CanBusError if the bus cannot be opened); :func:`join_can` does the same
+    for a session that is already open.
     """
     device_id = entry.device_id if isinstance(entry, DeviceEntry) else entry
     kind, _, rest = device_id.partition(":")
@@ -234,6 +236,23 @@ def _open_emulator(
         raise
 
 
+def join_can(session: ValveSession, options: CanOptions) -> bool:
+    """Put the emulated -CA valve behind the open ``session`` on a python-can bus.
+
+    Returns False for a session without one (a real valve, a valve without -CA). The bus is
+    released when the session closes. Raises CanBusError if the bus cannot be opened; the USB
+    session is not affected. The GUI calls this after going online: python-can's import
+    (~0.2 s) is then off the way to "online" (docs/PERFORMANCE.md, Startup).
+    """
+    from prm9tool.device.transport.emulator import EmulatorTransport
+
+    transport = session.transport
+    if not isinstance(transport, EmulatorTransport) or not transport.valve.variant.canopen:
+        return False
+    session.add_close_hook(_connect_can(transport.valve, options))
+    return True
+
+
 def _connect_can(valve: EmulatedValve, options: CanOptions) -> Callable[[], None]:
     import can
 
@@ -244,7 +263,7 @@ def _connect_can(valve: EmulatedValve, options: CanOptions) -> Callable[[], None
     try:
         bus = can.Bus(**kwargs)
     except (can.CanError, OSError, ValueError, ImportError) as exc:
-        raise CommunicationError(f"cannot open CAN bus {options}: {exc}") from exc
+        raise CanBusError(f"cannot open CAN bus {options}: {exc}") from exc
     slave = valve.connect_can(bus)
 
     def close() -> None:

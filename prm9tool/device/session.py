@@ -94,7 +94,7 @@ class ValveSession:
     ) -> None:
         self._transport = transport
         self._device_id = device_id
-        self._on_close = on_close
+        self._on_close: list[Callable[[], None]] = [on_close] if on_close is not None else []
         self.info = self.identify()
         self.variant = TypeKey.parse(self.info.type_key).variant
         self._params = {p.mnemonic: p for p in CATALOGUE.for_variant(self.variant)}
@@ -264,8 +264,16 @@ class ValveSession:
         except CommunicationError:
             pass
         self._transport.close()
-        if self._on_close is not None:
-            self._on_close()
+        for hook in reversed(self._on_close):  # the last one added is undone first
+            hook()
+
+    def add_close_hook(self, hook: Callable[[], None]) -> None:
+        """Call ``hook`` when the session closes (before the hooks added earlier); at once if
+        it is closed already (a hook added from another thread while the session closed)."""
+        self._on_close.append(hook)
+        if self._transport.closed and hook in self._on_close:
+            self._on_close.remove(hook)
+            hook()
 
     def __enter__(self) -> ValveSession:
         return self
