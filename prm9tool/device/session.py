@@ -264,7 +264,8 @@ class ValveSession:
         except CommunicationError:
             pass
         self._transport.close()
-        for hook in reversed(self._on_close):  # the last one added is undone first
+        hooks, self._on_close = self._on_close, []  # each hook runs once
+        for hook in reversed(hooks):  # the last one added is undone first
             hook()
 
     def add_close_hook(self, hook: Callable[[], None]) -> None:
