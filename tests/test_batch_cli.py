@@ -10,11 +10,11 @@ import json
 import os
 import re
 import subprocess
-import sys
 from datetime import datetime
 from pathlib import Path
 
 import pytest
+from python_process import run_python
 
 from prm9tool import app, batch
 from prm9tool.cli import ExitCode, main
@@ -36,15 +36,7 @@ def run(tmp_path: Path, *args: str, fake_hid: str | None = None) -> subprocess.C
     if fake_hid is not None:
         env["PYTHONPATH"] = os.pathsep.join([str(FAKE_HID), env.get("PYTHONPATH", "")])
         env["PRM9TOOL_FAKE_HID"] = fake_hid
-    return subprocess.run(
-        [sys.executable, "-m", "prm9tool", *args],
-        cwd=tmp_path,
-        env=env,
-        capture_output=True,
-        text=True,
-        timeout=120,
-        check=False,
-    )
+    return run_python("-m", "prm9tool", *args, env=env, cwd=tmp_path)
 
 
 def tuned_file(tmp_path: Path, type_key: str = E04, name: str = "tuned.prm") -> Path:
@@ -243,14 +235,7 @@ def test_without_hidapi_the_emulator_still_works(tmp_path):
     for name in ("hid", "hidraw"):
         (broken / f"{name}.py").write_text('raise ImportError("libhidapi.so.0: not found")\n')
     env = dict(os.environ, PRM9TOOL_DATA_DIR=str(tmp_path / "data"), PYTHONPATH=str(broken))
-    result = subprocess.run(
-        [sys.executable, "-m", "prm9tool", "--list-devices", "--emulator", E02],
-        env=env,
-        capture_output=True,
-        text=True,
-        timeout=60,
-        check=False,
-    )
+    result = run_python("-m", "prm9tool", "--list-devices", "--emulator", E02, env=env)
     assert result.returncode == 0, result.stderr
     assert f"emulator:{E02}:1" in result.stdout
 
@@ -265,15 +250,7 @@ def test_batch_mode_never_loads_the_qt_gui(tmp_path):
         "print(code, gui)\n"
     )
     env = dict(os.environ, PRM9TOOL_DATA_DIR=str(tmp_path / "data"))
-    result = subprocess.run(
-        [sys.executable, "-c", code],
-        cwd=tmp_path,
-        env=env,
-        capture_output=True,
-        text=True,
-        timeout=60,
-        check=False,
-    )
+    result = run_python("-c", code, env=env, cwd=tmp_path)
     assert result.stdout.strip() == "0 []", result.stderr
 
 

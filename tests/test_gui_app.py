@@ -144,8 +144,7 @@ def test_a_broken_spools_json_is_shown_once_at_start_in_the_program_language(
 def test_the_window_comes_up_without_the_heavy_modules(tmp_path):
     """numpy, pyqtgraph and the device layer load when first needed (the connection's worker,
     the oscilloscope, a controller dialog), not on the way to the window (docs/PERFORMANCE.md)."""
-    import subprocess
-    import sys
+    from python_process import run_python
 
     code = (
         "import sys\n"
@@ -160,12 +159,5 @@ def test_the_window_comes_up_without_the_heavy_modules(tmp_path):
     )
     env = dict(os.environ, PRM9TOOL_DATA_DIR=str(tmp_path / "data"), QT_QPA_PLATFORM="offscreen")
     env["XDG_CONFIG_HOME"] = str(tmp_path / "config")
-    result = subprocess.run(
-        [sys.executable, "-c", code],
-        env=env,
-        capture_output=True,
-        text=True,
-        timeout=60,
-        check=False,
-    )
+    result = run_python("-c", code, env=env)
     assert result.stdout.strip() == "[]", result.stderr

@@ -5,11 +5,10 @@ because the scale factor must be set before the QApplication exists."""
 from __future__ import annotations
 
 import os
-import subprocess
-import sys
 import textwrap
 
 from PySide6.QtGui import QImage
+from python_process import run_python
 
 SCRIPT = textwrap.dedent(
     """
@@ -45,14 +44,7 @@ SCRIPT = textwrap.dedent(
 def test_the_window_is_drawn_at_twice_the_pixels_on_a_scale_factor_of_2(tmp_path):
     env = dict(os.environ, QT_SCALE_FACTOR="2", PRM9TOOL_DATA_DIR=str(tmp_path / "data"))
     image = tmp_path / "hidpi.png"
-    result = subprocess.run(
-        [sys.executable, "-c", SCRIPT, str(image)],
-        env=env,
-        capture_output=True,
-        text=True,
-        timeout=120,
-        check=False,
-    )
+    result = run_python("-c", SCRIPT, str(image), env=env)
     assert result.returncode == 0, result.stderr
     ratio, device_width, logical_width, icon_width, online = result.stdout.split()
     assert float(ratio) == 2.0 and int(device_width) == 2 * int(logical_width) == 2048
