@@ -238,13 +238,18 @@ def test_restart_needs_the_hydraulics_confirmation(qtbot, window, monkeypatch):
     assert window.doc.value("DTAMP") == done.args[1]["DTAMP"]  # the valve's values taken
 
 
-def test_restore_factory_values_online_needs_the_hydraulics_confirmation(
-    qtbot, window, answers, monkeypatch
-):
-    go_online(qtbot, window, f"{E02}:4105")
+def _online_with_limta_2000(qtbot, window, serial: int) -> None:
+    """Online with an emulated E02 valve whose LIMTA the document changed to 2000 mA."""
+    go_online(qtbot, window, f"{E02}:{serial}")
     _settled(qtbot, window)
     window.doc.set_value("LIMTA", 2000)
     assert _valve_value(qtbot, window, "LIMTA") == 2000
+
+
+def test_restore_factory_values_online_needs_the_hydraulics_confirmation(
+    qtbot, window, answers, monkeypatch
+):
+    _online_with_limta_2000(qtbot, window, 4105)
     shown = []
 
     def cancel(dialog):
@@ -265,10 +270,7 @@ def test_restore_factory_values_online_backs_the_valve_up_first(
 ):
     from prm9tool import prmfile
 
-    go_online(qtbot, window, f"{E02}:4106")
-    _settled(qtbot, window)
-    window.doc.set_value("LIMTA", 2000)
-    assert _valve_value(qtbot, window, "LIMTA") == 2000
+    _online_with_limta_2000(qtbot, window, 4106)
 
     def confirm(dialog):
         dialog.confirm.setChecked(True)

@@ -59,11 +59,17 @@ def test_generator_drives_the_override_and_closing_the_window_switches_it_off(
     assert _override_on(valve) == 0
 
 
-def test_going_offline_switches_the_override_off_before_disconnecting(qtbot, window):
+def _generator_driving(qtbot, window):
+    """The scope's generator running a square wave; the emulated valve's override is on."""
     scope = window.views["scope"]
     valve = emulated(SERIAL)
     scope.generator.start(GeneratorSettings(Waveform.SQUARE, 20.0, 0.0, 0.5))
     qtbot.waitUntil(lambda: _override_on(valve) == 1, timeout=TIMEOUT)
+    return scope, valve
+
+
+def test_going_offline_switches_the_override_off_before_disconnecting(qtbot, window):
+    scope, valve = _generator_driving(qtbot, window)
     with qtbot.waitSignal(window.connection.online_changed, timeout=TIMEOUT):
         assert window.valve.go_offline()  # Communication → Offline
     assert not scope.generator.running
@@ -72,10 +78,7 @@ def test_going_offline_switches_the_override_off_before_disconnecting(qtbot, win
 
 
 def test_an_override_left_on_by_a_lost_link_is_switched_off_at_the_next_connection(qtbot, window):
-    scope = window.views["scope"]
-    valve = emulated(SERIAL)
-    scope.generator.start(GeneratorSettings(Waveform.SQUARE, 20.0, 0.0, 0.5))
-    qtbot.waitUntil(lambda: _override_on(valve) == 1, timeout=TIMEOUT)
+    scope, valve = _generator_driving(qtbot, window)
     with qtbot.waitSignal(window.connection.online_changed, timeout=TIMEOUT):
         window.connection.go_offline()  # the link goes without the generator writing
     assert not scope.generator.running

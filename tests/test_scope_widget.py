@@ -221,16 +221,27 @@ def test_cursors_read_values_and_differences(scope, conn):
     assert "2.5 Hz" in scope.cursor_panel.dt.text()
 
 
-def test_step_figures_are_shown_for_the_captured_step(scope, conn):
+STEP_UP = 0.1  # s: where the demand steps from 0 to 50 % in the captures below
+
+
+def _step_captured(scope, conn, response, demand=None) -> None:
+    """0.5 s of demand (default: 0 → 50 % at STEP_UP) and ``response(t)`` as the position,
+    received, drawn and held."""
     scope.preselect("demand")
     scope.preselect("position_actual")
     scope.controls.time_window.setCurrentIndex(scope.controls.time_window.findData(0.5))
     scope.start()
     t = np.arange(2500) / 5000.0
-    resp = np.where(t >= 0.1, 8192 * (1 - np.exp(-(t - 0.1) / 0.01)), 0)
-    conn.samples_received.emit(np.column_stack([np.where(t >= 0.1, 8192, 0), resp]))
+    ref = np.where(t >= STEP_UP, 8192, 0) if demand is None else demand(t)
+    conn.samples_received.emit(np.column_stack([ref, response(t)]))
     scope._redraw()
     scope.stop()
+
+
+def test_step_figures_are_shown_for_the_captured_step(scope, conn):
+    _step_captured(
+        scope, conn, lambda t: np.where(t >= 0.1, 8192 * (1 - np.exp(-(t - 0.1) / 0.01)), 0)
+    )
     scope.display.update_readouts()
     figures = scope.step_panel.figures
     assert figures["rise"].text() == "21.97 ms"  # τ·ln 9
@@ -238,15 +249,8 @@ def test_step_figures_are_shown_for_the_captured_step(scope, conn):
 
 
 def test_a_response_that_does_not_follow_the_step_gets_no_figures(scope, conn):
-    scope.preselect("demand")
-    scope.preselect("position_actual")
-    scope.controls.time_window.setCurrentIndex(scope.controls.time_window.findData(0.5))
-    scope.start()
-    t = np.arange(2500) / 5000.0
-    stuck = np.random.default_rng(5).normal(0.0, 40.0, len(t)).round()  # noise only
-    conn.samples_received.emit(np.column_stack([np.where(t >= 0.1, 8192, 0), stuck]))
-    scope._redraw()
-    scope.stop()
+    noise = np.random.default_rng(5).normal(0.0, 40.0, 2500).round()
+    _step_captured(scope, conn, lambda t: noise)  # noise only
     figures = scope.step_panel.figures
     assert figures["rise"].text() == figures["overshoot"].text() == "—"
     assert "No response to the step" in scope.step_panel.region.text()
@@ -422,17 +426,14 @@ def test_the_scope_fits_a_1024_by_768_screen(qtbot, conn, language, type_key):
 
 
 def test_step_figures_can_be_limited_to_the_cursor_span(scope, conn):
-    scope.preselect("demand")
-    scope.preselect("position_actual")
-    scope.controls.time_window.setCurrentIndex(scope.controls.time_window.findData(0.5))
-    scope.start()
-    t = np.arange(2500) / 5000.0
-    ref = np.where(t >= 0.1, 8192, 0) - np.where(t >= 0.3, 4096, 0)  # up 50 %, down 25 %
-    resp = np.where(t >= 0.1, 8192 * (1 - np.exp(-(t - 0.1) / 0.01)), 0)
-    resp = np.where(t >= 0.3, 4096 + 4096 * np.exp(-(t - 0.3) / 0.01), resp)
-    conn.samples_received.emit(np.column_stack([ref, resp]))
-    scope._redraw()
-    scope.stop()
+    def demand(t):
+        return np.where(t >= 0.1, 8192, 0) - np.where(t >= 0.3, 4096, 0)  # up 50 %, down 25 %
+
+    def response(t):
+        resp = np.where(t >= 0.1, 8192 * (1 - np.exp(-(t - 0.1) / 0.01)), 0)
+        return np.where(t >= 0.3, 4096 + 4096 * np.exp(-(t - 0.3) / 0.01), resp)
+
+    _step_captured(scope, conn, response, demand)
     panel = scope.step_panel
     assert not panel.between_cursors.isEnabled()
     scope.cursor_panel.show_cursors.setChecked(True)
