@@ -72,19 +72,13 @@ def add_device_options(parser: argparse.ArgumentParser) -> None:
         metavar="TYPEKEY[:SERIAL]",
         help="use an emulated valve of that type (the GUI goes online with it); repeatable",
     )
+    # no defaults here: None means "not given" (usage_problem) and CanOptions fills it in
     group.add_argument(
-        "--can-interface",
-        default="virtual",
-        help="python-can interface for an emulated -CA valve (default: virtual)",
+        "--can-interface", help="python-can interface for an emulated -CA valve (default: virtual)"
     )
+    group.add_argument("--can-channel", help="python-can channel (default: prm9tool)")
     group.add_argument(
-        "--can-channel", default="prm9tool", help="python-can channel (default: prm9tool)"
-    )
-    group.add_argument(
-        "--can-bitrate",
-        type=int,
-        default=None,
-        help="CAN bit rate in bit/s (default: from the valve's switches)",
+        "--can-bitrate", type=int, help="CAN bit rate in bit/s (default: from the valve's switches)"
     )
 
 
@@ -151,7 +145,7 @@ def usage_problem(args: argparse.Namespace) -> str | None:
     command = "--list-devices" if args.list_devices else "--batch" if args.batch is not None else ""
     if command and tools:
         return f"{command} and {tools[0]} are separate commands: use one at a time"
-    can = [flag for flag, dest in CAN_OPTIONS.items() if _given(args, dest)]
+    can = [flag for flag, dest in CAN_OPTIONS.items() if getattr(args, dest) is not None]
     if can and (command or tools):
         return (
             f"{can[0]} puts the GUI's emulated -CA valve on a CAN bus; "
@@ -168,11 +162,6 @@ def usage_problem(args: argparse.Namespace) -> str | None:
     if not tools and len(args.device) > 1:
         return "the GUI goes online with one valve: give --device once (several: --batch)"
     return None
-
-
-def _given(args: argparse.Namespace, dest: str) -> bool:
-    """Whether an option differs from its default (argparse keeps no record of what was typed)."""
-    return getattr(args, dest) != build_parser().get_default(dest)
 
 
 def _list_devices_problem(args: argparse.Namespace, batch_only: list[str]) -> str | None:

@@ -110,3 +110,14 @@ def test_can_options_put_an_emulated_ca_valve_on_the_bus():
         assert 0x700 + node in frames  # boot-up / heartbeat of that node
     finally:
         listener.shutdown()
+
+
+def test_can_options_from_the_command_line_fill_in_what_was_not_given():
+    from prm9tool.cli import build_parser
+
+    parse = build_parser().parse_args
+    assert factory.CanOptions.from_args(parse([])) == factory.CanOptions("virtual", "prm9tool")
+    given = parse(
+        ["--can-interface", "socketcan", "--can-channel", "can0", "--can-bitrate", "250000"]
+    )
+    assert factory.CanOptions.from_args(given) == factory.CanOptions("socketcan", "can0", 250000)

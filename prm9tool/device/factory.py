@@ -49,8 +49,14 @@ class CanOptions:
 
     @classmethod
     def from_args(cls, args: Any) -> CanOptions:
-        """The options of the CLI's ``--can-interface/--can-channel/--can-bitrate``."""
-        return cls(args.can_interface, args.can_channel, args.can_bitrate)
+        """The options of the CLI's ``--can-interface/--can-channel/--can-bitrate`` (None: the
+        default here)."""
+        given = {
+            "interface": args.can_interface,
+            "channel": args.can_channel,
+            "bitrate": args.can_bitrate,
+        }
+        return cls(**{name: value for name, value in given.items() if value is not None})
 
 
 def emulator_nv_path(serial: int) -> Path:
