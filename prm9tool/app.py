@@ -98,13 +98,18 @@ def start(window: MainWindow, plan: StartPlan) -> None:
     if plan.emulators:
         _start_emulated(window, plan.emulators)
     elif plan.devices:
-        entries = window.connection.list_devices(())
-        wanted = [e for e in entries if _matches(e, plan.devices[0])]
-        if wanted:
-            window.valve.go_online(wanted[0])
-        else:
-            message = QCoreApplication.translate("App", "--device {0}: no such valve")
-            window.status.showMessage(message.format(plan.devices[0]), 10000)
+        wanted_id = plan.devices[0]
+
+        def listed(found: object) -> None:  # the valves are listed off the GUI thread
+            entries = [] if isinstance(found, Exception) else list(found)  # type: ignore[call-overload]
+            wanted = [e for e in entries if _matches(e, wanted_id)]
+            if wanted:
+                window.valve.go_online(wanted[0])
+            else:
+                message = QCoreApplication.translate("App", "--device {0}: no such valve")
+                window.status.showMessage(message.format(wanted_id), 10000)
+
+        window.connection.list_devices_async((), listed)
 
 
 def _report_spools_problem(window: MainWindow, problem: Prm9Error) -> None:

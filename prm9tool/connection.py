@@ -10,6 +10,7 @@ measuring points (≈ 7 Hz). A communication error ends the session: the connect
 
 from __future__ import annotations
 
+import contextlib
 import functools
 import logging
 import queue
@@ -118,8 +119,30 @@ class ValveConnection(QObject):
         return self._samples_lost
 
     def list_devices(self, emulators: Sequence[str] = ()) -> list[Any]:
-        """Connected valves plus the emulated valves ``emulators`` ("TYPEKEY[:SERIAL]")."""
+        """Connected valves plus the emulated valves ``emulators`` ("TYPEKEY[:SERIAL]").
+
+        Blocks while each USB valve identifies itself (up to 0.6 s for one that does not
+        answer): the GUI uses :meth:`list_devices_async`.
+        """
         return self._lister(emulators)
+
+    def list_devices_async(
+        self, emulators: Sequence[str], deliver: Callable[[object], None]
+    ) -> None:
+        """:meth:`list_devices` in a thread of its own; ``deliver(entries)`` — or
+        ``deliver(exception)`` if listing failed — runs on the GUI thread."""
+        specs = list(emulators)
+
+        def run() -> None:
+            try:
+                found: object = self._lister(specs)
+            except Exception as exc:  # e.g. a broken USB stack: the caller says so
+                found = exc
+            # RuntimeError: the connection was deleted meanwhile, nobody is waiting
+            with contextlib.suppress(RuntimeError):
+                self._post(lambda: deliver(found))
+
+        threading.Thread(target=run, name="valve-list", daemon=True).start()
 
     # --- commands (GUI thread) ------------------------------------------------------------------
     def go_online(self, entry: object) -> None:

@@ -13,6 +13,7 @@ from prm9tool import backup
 from prm9tool.connection import ValveConnection
 from prm9tool.device import factory
 from prm9tool.device.transport.emulator import LinkFaults
+from prm9tool.errors import CommunicationError
 
 TIMEOUT = 10_000
 
@@ -304,3 +305,42 @@ def test_lost_samples_of_the_stream_are_reported_and_cleared_on_stop(qtbot, fake
     with qtbot.waitSignal(connection.samples_lost_changed, timeout=TIMEOUT) as cleared:
         connection.stop_stream()
     assert cleared.args == [0] and connection.samples_lost == 0
+
+
+def test_listing_the_valves_does_not_hold_up_the_gui_thread(qtbot):
+    """A USB valve that does not answer takes up to 0.6 s to identify: the listing runs in a
+    thread of its own and the answer arrives on the GUI thread."""
+    import threading
+
+    from PySide6.QtCore import QThread
+
+    release = threading.Event()
+    threads = []
+
+    def slow_lister(emulators):
+        threads.append(QThread.currentThread())
+        release.wait(10)  # a valve that takes its time
+        return factory.emulator_entries(emulators)
+
+    conn = ValveConnection(lister=slow_lister)
+    delivered = []
+    conn.list_devices_async([f"{E02}:5005"], delivered.append)  # returns while the lister waits
+    assert delivered == []
+    release.set()
+    qtbot.waitUntil(lambda: bool(delivered), timeout=TIMEOUT)
+    assert [e.serial for e in delivered[0]] == [5005]
+    assert threads[0] is not QThread.currentThread()
+    conn.shutdown()
+    factory.forget_emulated_valves()
+
+
+def test_a_listing_that_fails_delivers_the_error(qtbot):
+    def broken(_emulators):
+        raise CommunicationError("hidapi: libhidapi-hidraw.so.0 not found")
+
+    conn = ValveConnection(lister=broken)
+    delivered = []
+    conn.list_devices_async([], delivered.append)
+    qtbot.waitUntil(lambda: bool(delivered), timeout=TIMEOUT)
+    assert isinstance(delivered[0], CommunicationError)
+    conn.shutdown()

@@ -217,11 +217,15 @@ def test_status_window_offline_says_so(window):
     assert status.errors.item(0).text() == "No status: the valve is offline."
 
 
-def test_hid_dialog_lists_emulated_valves_and_remembers_the_choice(window, monkeypatch):
+def test_hid_dialog_lists_emulated_valves_and_remembers_the_choice(qtbot, window):
     from prm9tool.views.hid_dialog import SELECTED_KEY, HidConfigurationDialog
 
-    dialog = HidConfigurationDialog(window.connection.list_devices, window.settings, window)
+    dialog = HidConfigurationDialog(window.connection.list_devices_async, window.settings, window)
+    assert dialog.listing and "Looking for valves" in dialog.info.text()  # not on this thread
+    assert not dialog.buttons.button(dialog.buttons.StandardButton.Ok).isEnabled()
     dialog.add_emulator(f"{E04_CA}:77")
+    qtbot.waitUntil(lambda: not dialog.listing)
+    assert str(dialog.selected_entry().device_id).endswith(":77")  # the one just added
     cells = [dialog.table.item(r, 1).text() for r in range(dialog.table.rowCount())]
     assert E04_CA in cells
     dialog.accept()
@@ -282,13 +286,15 @@ def test_emulated_valve_dialog_builds_type_key_and_serial(window):
     assert dialog.spec() == f"{E04_CA}:4711"
 
 
-def test_hid_dialog_removes_an_emulated_valve(window):
+def test_hid_dialog_removes_an_emulated_valve(qtbot, window):
     from prm9tool.views.hid_dialog import HidConfigurationDialog, saved_emulators
 
-    dialog = HidConfigurationDialog(window.connection.list_devices, window.settings, window)
+    dialog = HidConfigurationDialog(window.connection.list_devices_async, window.settings, window)
     dialog.add_emulator(f"{E04_CA}:78")
+    qtbot.waitUntil(lambda: not dialog.listing)
     assert dialog.remove_button.isEnabled()
     dialog.remove_button.click()
+    qtbot.waitUntil(lambda: not dialog.listing)
     assert f"{E04_CA}:78" not in saved_emulators(window.settings)
     assert E04_CA not in [dialog.table.item(r, 1).text() for r in range(dialog.table.rowCount())]
 

@@ -151,7 +151,9 @@ class _Entry:
 
 def test_hid_dialog_describes_emulated_valves_in_german(qtbot, tmp_path, language):
     language("de")
-    dialog = HidConfigurationDialog(lambda _emulators: [_Entry()], settings_in(tmp_path))
+    dialog = HidConfigurationDialog(
+        lambda _emulators, deliver: deliver([_Entry()]), settings_in(tmp_path)
+    )
     qtbot.addWidget(dialog)
     assert dialog.table.item(0, 4).text() == (
         "emuliertes Ventil PRM9-06.3Z11/30-24E02S02-CA, Seriennummer 1001"

@@ -343,6 +343,7 @@ def test_online_action_uses_the_valve_chosen_in_the_hid_configuration(qtbot, win
 
     def choose(dialog):
         dialog.add_emulator(f"{E04_CA}:4104")
+        qtbot.waitUntil(lambda: not dialog.listing, timeout=TIMEOUT)  # listed off this thread
         dialog.accept()
         return QDialog.DialogCode.Accepted
 
@@ -398,3 +399,26 @@ def test_opening_a_file_online_asks_before_anything_is_written(qtbot, window, tm
     go_online(qtbot, window)  # the valve was not written meanwhile
     qtbot.waitUntil(lambda: len(shown) == 2, timeout=TIMEOUT)
     assert shown[1].table.item(0, 3).text() == "2400 mA"
+
+
+def test_a_broken_usb_stack_still_offers_the_hid_configuration(qtbot, window, monkeypatch):
+    from prm9tool.errors import CommunicationError
+    from prm9tool.views.hid_dialog import HidConfigurationDialog
+
+    def broken(_emulators):
+        raise CommunicationError("hidapi: libhidapi-hidraw.so.0 not found")
+
+    monkeypatch.setattr(window.connection, "_lister", broken)
+    shown = []
+
+    def look(dialog):
+        qtbot.waitUntil(lambda: not dialog.listing, timeout=TIMEOUT)
+        shown.append(dialog.info.text())
+        return QDialog.DialogCode.Rejected
+
+    monkeypatch.setattr(HidConfigurationDialog, "exec", look)
+    window.commands["online"].trigger()  # lists off the GUI thread, then asks
+    qtbot.waitUntil(lambda: bool(shown), timeout=TIMEOUT)
+    assert "Listing the valves failed: The valve could not be reached. (hidapi:" in shown[0]
+    assert "Listing the valves failed" in window.statusBar().currentMessage()
+    assert not window.connection.is_online

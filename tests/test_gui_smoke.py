@@ -174,7 +174,7 @@ def test_e02_valve_window_table_and_dialogs(qtbot, program, shots, monkeypatch):
     for name, dialog in (
         ("dialog_valve_selection", ValveSelectionDialog(window.doc.type_key, window)),
         ("dialog_hid_configuration",
-         HidConfigurationDialog(window.connection.list_devices, window.settings, window)),
+         HidConfigurationDialog(window.connection.list_devices_async, window.settings, window)),
         ("dialog_password", PasswordDialog(window.passwords, window)),
         ("dialog_change_password", ChangePasswordDialog(window.passwords, window)),
         ("dialog_add_emulated_valve", EmulatorDialog(window)),
@@ -185,6 +185,7 @@ def test_e02_valve_window_table_and_dialogs(qtbot, program, shots, monkeypatch):
             dict(window.doc.values), E02, E02, window)),
     ):  # fmt: skip
         dialog.show()
+        qtbot.waitUntil(lambda d=dialog: not getattr(d, "listing", False), timeout=TIMEOUT)
         _save(qtbot, dialog, shots, name)
         dialog.close()
     about = _grab_modal(qtbot, monkeypatch, shots, "dialog_about", QMessageBox.StandardButton.Ok)

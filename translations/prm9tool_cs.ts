@@ -914,6 +914,10 @@ Dokud soubor neopravíte, zná prm9tool pouze dodaná šoupátka.</translation>
             <translation>Obnovit</translation>
         </message>
         <message>
+            <source>Looking for valves…</source>
+            <translation>Hledání ventilů…</translation>
+        </message>
+        <message>
             <source>Listing the valves failed: {0}</source>
             <translation>Výpis ventilů selhal: {0}</translation>
         </message>
@@ -2494,6 +2498,10 @@ Ujistěte se, že pohyb stroje je bezpečný. Spustit generátor?</translation>
         <message>
             <source>Listing the valves failed: {0}</source>
             <translation>Výpis ventilů selhal: {0}</translation>
+        </message>
+        <message>
+            <source>Looking for valves…</source>
+            <translation>Hledání ventilů…</translation>
         </message>
         <message>
             <source>The valve stored its parameters</source>

@@ -912,6 +912,10 @@ Bis die Datei korrigiert ist, kennt prm9tool nur die mitgelieferten Schieber.</t
             <translation>Aktualisieren</translation>
         </message>
         <message>
+            <source>Looking for valves…</source>
+            <translation>Ventile werden gesucht…</translation>
+        </message>
+        <message>
             <source>Listing the valves failed: {0}</source>
             <translation>Auflisten der Ventile fehlgeschlagen: {0}</translation>
         </message>
@@ -2490,6 +2494,10 @@ Stellen Sie sicher, dass die Maschine sich gefahrlos bewegen kann. Generator sta
         <message>
             <source>Listing the valves failed: {0}</source>
             <translation>Auflisten der Ventile fehlgeschlagen: {0}</translation>
+        </message>
+        <message>
+            <source>Looking for valves…</source>
+            <translation>Ventile werden gesucht…</translation>
         </message>
         <message>
             <source>The valve stored its parameters</source>

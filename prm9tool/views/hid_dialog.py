@@ -24,6 +24,7 @@ from PySide6.QtWidgets import (
     QVBoxLayout,
     QWidget,
 )
+from shiboken6 import isValid
 
 from prm9tool.translate import error_text
 from prm9tool.typekey import TypeKey
@@ -34,7 +35,10 @@ SELECTED_KEY = "hid/selected"
 DEFAULT_EMULATOR_TYPE_KEY = "PRM9-06.3Z11/30-24E02S02-CA"  # also the default of --emulator
 DEFAULT_EMULATOR_SERIAL = 1001
 DEFAULT_EMULATOR = f"{DEFAULT_EMULATOR_TYPE_KEY}:{DEFAULT_EMULATOR_SERIAL}"
-Lister = Callable[[Sequence[str]], list[object]]
+# (emulator specs, deliver): lists the valves off the GUI thread — identifying a USB valve that
+# does not answer takes up to 0.6 s — and calls deliver(entries or the exception) on the GUI
+# thread (ValveConnection.list_devices_async)
+Lister = Callable[[Sequence[str], Callable[[object], None]], None]
 
 
 def saved_emulators(settings: QSettings) -> list[str]:
@@ -96,6 +100,8 @@ class HidConfigurationDialog(QDialog):
         self._lister = lister
         self._settings = settings
         self._entries: list[object] = []
+        self._listing = 0  # number of the newest listing asked for (older answers are stale)
+        self._select_last = False  # an emulated valve was just added: select it when listed
         self.table = QTableWidget(0, 5)
         self.table.setSelectionBehavior(QAbstractItemView.SelectionBehavior.SelectRows)
         self.table.setSelectionMode(QAbstractItemView.SelectionMode.SingleSelection)
@@ -136,12 +142,8 @@ class HidConfigurationDialog(QDialog):
     def retranslate(self) -> None:
         """Set every text in the current language."""
         self.setWindowTitle(self.tr("HID configuration"))
-        self.info.setText(
-            self.tr(
-                "Valves connected to this computer and emulated valves. Choose the one to "
-                "communicate with."
-            )
-        )
+        if not self.listing:
+            self._set_info()
         self.table.setHorizontalHeaderLabels(
             [
                 self.tr("Connection"),
@@ -155,19 +157,45 @@ class HidConfigurationDialog(QDialog):
         self.remove_button.setText(self.tr("Remove emulated valve"))
         self.refresh_button.setText(self.tr("Refresh"))
 
+    def _set_info(self) -> None:
+        self.info.setText(
+            self.tr(
+                "Valves connected to this computer and emulated valves. Choose the one to "
+                "communicate with."
+            )
+        )
+
     def changeEvent(self, event: QEvent) -> None:
         """Retranslate when the program language changes."""
         if event.type() == QEvent.Type.LanguageChange:
             self.retranslate()
         super().changeEvent(event)
 
+    @property
+    def listing(self) -> bool:
+        """True while the valves are being listed (the table shows the previous list)."""
+        return self._listing > 0
+
     def refresh(self) -> None:
-        """List the valves again."""
-        try:
-            self._entries = list(self._lister(saved_emulators(self._settings)))
-        except Exception as exc:  # a broken USB stack must not prevent choosing an emulator
+        """List the valves again (off the GUI thread; the table fills when they answered)."""
+        self._listing += 1
+        number = self._listing
+        self.refresh_button.setEnabled(False)
+        self._on_selection_changed()  # OK and Remove only for a listed, selected valve
+        self.info.setText(self.tr("Looking for valves…"))
+        self._lister(saved_emulators(self._settings), lambda found: self._listed(number, found))
+
+    def _listed(self, number: int, found: object) -> None:
+        if not isValid(self) or number != self._listing:
+            return  # the dialog is gone, or a newer listing was asked for
+        self._listing = 0
+        self.refresh_button.setEnabled(True)
+        if isinstance(found, Exception):  # a broken USB stack must not prevent an emulator
             self._entries = []
-            self.info.setText(self.tr("Listing the valves failed: {0}").format(error_text(exc)))
+            self.info.setText(self.tr("Listing the valves failed: {0}").format(error_text(found)))
+        else:
+            self._entries = list(found)  # type: ignore[call-overload]
+            self._set_info()
         self.table.setRowCount(len(self._entries))
         selected = str(self._settings.value(SELECTED_KEY, ""))
         for row, entry in enumerate(self._entries):
@@ -179,6 +207,9 @@ class HidConfigurationDialog(QDialog):
                 self.table.setItem(row, column, QTableWidgetItem(cell))
             if str(getattr(entry, "device_id", "")) == selected:
                 self.table.selectRow(row)
+        if self._select_last and self._entries:
+            self.table.selectRow(len(self._entries) - 1)
+        self._select_last = False
         if self._entries and not self.table.selectedItems():
             self.table.selectRow(0)
         self._on_selection_changed()
@@ -213,8 +244,8 @@ class HidConfigurationDialog(QDialog):
         """Add an emulated valve ``TYPEKEY:SERIAL`` to the list and select it."""
         emulators = [e for e in saved_emulators(self._settings) if e != spec] + [spec]
         self._settings.setValue(EMULATORS_KEY, emulators)
+        self._select_last = True
         self.refresh()
-        self.table.selectRow(self.table.rowCount() - 1)
 
     def _on_remove_clicked(self) -> None:
         entry = self.selected_entry()

@@ -70,35 +70,49 @@ class ValveWorkflow(QObject):
     # --- communication -----------------------------------------------------------------------
     def configure_hid(self) -> object | None:
         """Show the HID configuration; returns the chosen device entry (or None)."""
-        dialog = HidConfigurationDialog(self._connection.list_devices, self._settings, self._window)
+        dialog = HidConfigurationDialog(
+            self._connection.list_devices_async, self._settings, self._window
+        )
         if dialog.exec() != QDialog.DialogCode.Accepted:
             return None
         return dialog.selected_entry()
 
-    def chosen_entry(self) -> object | None:
-        """The valve to go online with: the one chosen before, the only one, or ask."""
-        try:
-            entries = self._connection.list_devices(saved_emulators(self._settings))
-        except Exception as exc:  # a broken USB stack must not prevent the HID dialog
+    def chosen_entry(self, entries: object) -> object | None:
+        """The valve to go online with among the listed ``entries`` (or the exception listing
+        raised): the one chosen before, the only one, or ask."""
+        if isinstance(entries, Exception):  # a broken USB stack must not prevent the dialog
             self.message_posted.emit(
-                self.tr("Listing the valves failed: {0}").format(error_text(exc))
+                self.tr("Listing the valves failed: {0}").format(error_text(entries))
             )
             entries = []
+        found = list(entries)  # type: ignore[call-overload]
         selected = str(self._settings.value(SELECTED_KEY, ""))
-        for entry in entries:
+        for entry in found:
             if str(getattr(entry, "device_id", "")) == selected:
                 return entry
-        if len(entries) == 1:
-            return entries[0]
+        if len(found) == 1:
+            return found[0]
         return self.configure_hid()
 
     def go_online(self, entry: object | None = None) -> None:
-        """Connect to ``entry`` (default: :meth:`chosen_entry`)."""
+        """Connect to ``entry``; without one, list the valves (off the GUI thread) and take
+        :meth:`chosen_entry`."""
         if self._connection.is_online:
             return
-        entry = entry if entry is not None else self.chosen_entry()
-        if entry is None:
+        if entry is not None:
+            self._connect(entry)
             return
+        self.message_posted.emit(self.tr("Looking for valves…"))
+        self._connection.list_devices_async(saved_emulators(self._settings), self._on_listed)
+
+    def _on_listed(self, entries: object) -> None:
+        if self._connection.is_online or self._connection.is_busy:
+            return  # connected meanwhile (the HID dialog, the command line)
+        entry = self.chosen_entry(entries)
+        if entry is not None:
+            self._connect(entry)
+
+    def _connect(self, entry: object) -> None:
         self.message_posted.emit(self.tr("Connecting to {0}…").format(_name(entry)))
         self._connection.go_online(entry)
 

@@ -23,8 +23,8 @@ def control_loop(s: LoopState) -> Generator[None, int, None]:
     """Run ``n`` cycles per ``send(n)``; ``send(0)`` writes every measuring point back.
 
     After a batch only what the firmware's 1 ms task needs is written back (coil currents and
-    PWM duties, LVDT loop current, control deviation); inputs are re-read only when ``inputs_version`` changed, coefficients
-    only when ``version`` changed.
+    PWM duties, LVDT loop current, control deviation); inputs are re-read only when
+    ``inputs_version`` changed, coefficients only when ``version`` changed.
     """
     sin = math.sin
     bis = bisect_right
