@@ -22,7 +22,7 @@ import can
 import canopen
 
 from prm9tool.device.emulator import EmulatedValve
-from prm9tool.eds import export_eds
+from prm9tool.files.eds import export_eds
 
 TYPE_KEY = "PRM9-06.3Z11/30-24E02S02-CA"
 NODE = 10

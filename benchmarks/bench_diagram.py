@@ -23,13 +23,13 @@ from PySide6.QtCore import QObject, QRectF, Signal
 from PySide6.QtGui import QColor, QImage, QPainter
 from PySide6.QtWidgets import QApplication, QGraphicsScene
 
-from prm9tool.access import AccessModel
 from prm9tool.catalogue import CATALOGUE, Access
+from prm9tool.catalogue.signals import signals_for
+from prm9tool.catalogue.typekey import TypeKey
 from prm9tool.device.emulator import EmulatedValve
-from prm9tool.document import ParameterDocument
-from prm9tool.signals import signals_for
-from prm9tool.tuning import LOOPS, PRE_STEP_S, analog_type_key, power_up, simulate_step
-from prm9tool.typekey import TypeKey
+from prm9tool.model.access import AccessModel
+from prm9tool.model.document import ParameterDocument
+from prm9tool.online.tuning import LOOPS, PRE_STEP_S, analog_type_key, power_up, simulate_step
 from prm9tool.views.diagram import DiagramView
 
 E04_CA = "PRM9-06.3Z11/30-24E04S02-CA"

@@ -18,7 +18,8 @@ import timeit
 from collections.abc import Callable
 from pathlib import Path
 
-from prm9tool.prmfile import (
+from prm9tool.catalogue.typekey import TypeKey
+from prm9tool.files.prmfile import (
     PrmContents,
     check_bytes,
     load_document,
@@ -26,7 +27,6 @@ from prm9tool.prmfile import (
     save_document,
     write_file,
 )
-from prm9tool.typekey import TypeKey
 
 TYPE_KEY = "PRM9-06.3Z11/30-24E04S02-CA"
 

@@ -30,8 +30,8 @@ import pyqtgraph as pg
 from PySide6.QtCore import QTimer
 from PySide6.QtWidgets import QApplication
 
-from prm9tool.connection import ValveConnection
-from prm9tool.document import ParameterDocument
+from prm9tool.model.document import ParameterDocument
+from prm9tool.online.connection import ValveConnection
 from prm9tool.scope import GeneratorSettings, TriggerMode, Waveform
 from prm9tool.views.scope import ScopeWidget
 from prm9tool.views.scope_display import ScopeDisplay

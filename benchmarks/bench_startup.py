@@ -25,7 +25,7 @@ TYPE_KEY = "PRM9-06.3Z11/30-24E02S02-CA"
 CHILD = r"""
 import os, sys, time
 from prm9tool import app
-from prm9tool.cli import build_parser
+from prm9tool.cli.main import build_parser
 from PySide6.QtCore import QTimer
 
 args = build_parser().parse_args(sys.argv[1:])

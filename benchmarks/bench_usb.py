@@ -19,10 +19,10 @@ import threading
 import time
 
 from prm9tool.catalogue import CATALOGUE
+from prm9tool.catalogue.typekey import TypeKey
 from prm9tool.device.emulator import EmulatedValve
 from prm9tool.device.session import ValveSession
 from prm9tool.device.transport.emulator import SLOT_S, EmulatorTransport
-from prm9tool.typekey import TypeKey
 
 E04 = "PRM9-06.3Z11/30-24E04S02-CA"
 REPORT = 64

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import sys
 
-from prm9tool.cli import main
+from prm9tool.cli.main import main
 
 if __name__ == "__main__":
     sys.exit(main())

@@ -14,7 +14,7 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import TYPE_CHECKING
 
-from prm9tool.cli import ExitCode
+from prm9tool.errors import ExitCode
 
 if TYPE_CHECKING:
     from PySide6.QtWidgets import QApplication
@@ -71,10 +71,10 @@ def create_window(args: argparse.Namespace) -> MainWindow:
     from PySide6.QtCore import QSettings
 
     from prm9tool import i18n
-    from prm9tool.access import AccessModel
-    from prm9tool.connection import ValveConnection
-    from prm9tool.document import ParameterDocument
-    from prm9tool.undo import DocumentUndo
+    from prm9tool.model.access import AccessModel
+    from prm9tool.model.document import ParameterDocument
+    from prm9tool.model.undo import DocumentUndo
+    from prm9tool.online.connection import ValveConnection
     from prm9tool.views.main_window import MainWindow
     from prm9tool.views.valve_selection import DEFAULT_TYPE_KEY
 
@@ -151,9 +151,9 @@ def _start_emulated(window: MainWindow, specs: list[str]) -> None:
 
 def _normal_spec(spec: str) -> str:
     """``TYPEKEY:SERIAL`` with the type key checked and written the canonical way."""
+    from prm9tool.catalogue.typekey import TypeKey
     from prm9tool.errors import TypeKeyError
     from prm9tool.messages import QT_TRANSLATE_NOOP
-    from prm9tool.typekey import TypeKey
 
     key, _, serial = spec.rpartition(":")
     if not serial.isdigit() or not 0 < int(serial) < 2**32:

@@ -194,3 +194,15 @@ class SdoAbortError(Prm9Error):
         except ValueError:
             text = "unknown abort code"
         super().__init__(f"0x{index:04X}/{subindex}: abort 0x{code:08X} ({text})")
+
+
+class ExitCode(IntEnum):
+    """Documented exit codes (``--help``, README "Headless production mode", docs/batch.md)."""
+
+    OK = 0
+    VERIFY_FAILED = 1
+    USAGE = 2
+    INVALID_FILE = 3
+    NO_DEVICE = 4
+    TYPE_MISMATCH = 5
+    COMMUNICATION = 6

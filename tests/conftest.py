@@ -29,7 +29,7 @@ def _isolated_user_dirs(tmp_path_factory: pytest.TempPathFactory, monkeypatch: p
 @pytest.fixture
 def spools():
     """The spool catalogue, as shipped again after the test (which may load a spools.json)."""
-    from prm9tool.typekey import SPOOLS
+    from prm9tool.catalogue.typekey import SPOOLS
 
     shipped = dict(SPOOLS)
     yield SPOOLS

@@ -1,4 +1,4 @@
-"""A synchronous stand-in for prm9tool.connection.ValveConnection backed by an EmulatedValve.
+"""A synchronous stand-in for prm9tool.online.connection.ValveConnection backed by an EmulatedValve.
 
 The diagram and CANopen-window tests drive the real emulated firmware through the same
 signals the GUI gets from the real connection, without its worker thread.

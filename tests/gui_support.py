@@ -13,11 +13,11 @@ from PySide6.QtCore import QSettings
 from PySide6.QtWidgets import QFileDialog
 
 from prm9tool import i18n
-from prm9tool.access import AccessModel
-from prm9tool.connection import ValveConnection
 from prm9tool.device import factory
-from prm9tool.document import ParameterDocument
-from prm9tool.undo import DocumentUndo
+from prm9tool.model.access import AccessModel
+from prm9tool.model.document import ParameterDocument
+from prm9tool.model.undo import DocumentUndo
+from prm9tool.online.connection import ValveConnection
 from prm9tool.views import prompts
 
 E02 = "PRM9-06.3Z11/30-24E02S02"

@@ -1,4 +1,4 @@
-"""A stand-in for prm9tool.connection.ValveConnection with the same signals (scope tests)."""
+"""A stand-in for prm9tool.online.connection.ValveConnection with the same signals (scope tests)."""
 
 from __future__ import annotations
 

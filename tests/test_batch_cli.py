@@ -16,13 +16,15 @@ from pathlib import Path
 import pytest
 from python_process import run_python
 
-from prm9tool import app, batch
-from prm9tool.cli import ExitCode, main
+from prm9tool import app
+from prm9tool.catalogue.typekey import TypeKey
+from prm9tool.cli import batch
+from prm9tool.cli.main import main
 from prm9tool.device import factory
 from prm9tool.device.session import ValveSession
 from prm9tool.device.transport.emulator import EmulatorTransport, LinkFaults
-from prm9tool.prmfile import PrmContents, read_file, write_file
-from prm9tool.typekey import TypeKey
+from prm9tool.errors import ExitCode
+from prm9tool.files.prmfile import PrmContents, read_file, write_file
 
 E04 = "PRM9-06.3Z11/30-24E04S02-CA"
 E02 = "PRM9-06.3Z11/30-24E02S02"
@@ -244,7 +246,7 @@ def test_batch_mode_never_loads_the_qt_gui(tmp_path):
     source = tuned_file(tmp_path)
     code = (
         "import sys\n"
-        "from prm9tool.cli import main\n"
+        "from prm9tool.cli.main import main\n"
         f"code = main(['--batch', {str(source)!r}, '--emulator', '{E04}:2', '--report', 'r.json'])\n"
         "gui = [m for m in ('PySide6.QtWidgets', 'PySide6.QtGui') if m in sys.modules]\n"
         "print(code, gui)\n"

@@ -15,7 +15,8 @@ import canopen
 import pytest
 from canopen_rig import TIMEOUT_S, unique_channel
 
-from prm9tool import app, cli
+from prm9tool import app
+from prm9tool.cli import main as cli
 from prm9tool.device import factory
 from prm9tool.errors import CanBusError
 

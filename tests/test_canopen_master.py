@@ -19,9 +19,9 @@ from canopen.objectdictionary import ODArray, ODRecord, ODVariable, datatypes
 from canopen_rig import BOOT_S, TIMEOUT_S, unique_channel
 
 from prm9tool.catalogue import CATALOGUE, LOAD_SIGNATURE, SAVE_SIGNATURE
-from prm9tool.cli import main
+from prm9tool.catalogue.pdo import mapping_for_control_mode
+from prm9tool.cli.main import main
 from prm9tool.device.emulator import EmulatedValve, Fault
-from prm9tool.eds import mapping_for_control_mode
 from prm9tool.errors import AbortCode, SdoAbortError
 
 TYPE_KEYS = (

@@ -8,19 +8,19 @@ import pytest
 from diagram_fakes import EmulatorConnection
 
 from prm9tool import i18n
-from prm9tool.access import AccessModel
-from prm9tool.canopen_switches import (
+from prm9tool.catalogue import CATALOGUE, Access
+from prm9tool.catalogue.canopen_switches import (
     Overridden,
     baud_position,
     effective,
     node_position,
     overridden,
 )
-from prm9tool.catalogue import CATALOGUE, Access
 from prm9tool.device.emulator import EmulatedValve
-from prm9tool.document import ParameterDocument
-from prm9tool.sync import ValveSync
-from prm9tool.undo import DocumentUndo
+from prm9tool.model.access import AccessModel
+from prm9tool.model.document import ParameterDocument
+from prm9tool.model.undo import DocumentUndo
+from prm9tool.online.sync import ValveSync
 from prm9tool.views.canopen_window import CanopenWindow
 
 E02_CA = "PRM9-06.3Z11/30-24E02S02-CA"

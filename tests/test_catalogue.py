@@ -5,7 +5,7 @@ from __future__ import annotations
 import pytest
 
 from prm9tool.catalogue import CATALOGUE, Access, ObjAccess
-from prm9tool.variant import ALL_VARIANTS, Coils, Config, Variant
+from prm9tool.catalogue.variant import ALL_VARIANTS, Coils, Config, Variant
 
 BASIC_LIST = [
     "AINSETP",

@@ -8,12 +8,12 @@ from PySide6.QtCore import QCoreApplication, QObject, QPoint, QRectF, Qt, QTrans
 from PySide6.QtGui import QColor, QImage, QPainter
 from PySide6.QtWidgets import QWidget
 
-from prm9tool.access import AccessModel
 from prm9tool.catalogue import Access
+from prm9tool.catalogue.signals import signals_for
 from prm9tool.device.emulator import EmulatedValve
-from prm9tool.document import ParameterDocument
-from prm9tool.signals import signals_for
-from prm9tool.undo import DocumentUndo
+from prm9tool.model.access import AccessModel
+from prm9tool.model.document import ParameterDocument
+from prm9tool.model.undo import DocumentUndo
 from prm9tool.views.diagram import DiagramView, format_signal
 from prm9tool.views.diagram.dialogs import BlockDialog
 from prm9tool.views.valve_selection import ValveSelectionDialog
@@ -116,7 +116,7 @@ def test_single_coil_valves_show_one_ramp_pair_and_one_gain(qtbot):
 
 
 def test_arrows_follow_the_signal_chain_and_close_the_loops():
-    from prm9tool.typekey import TypeKey
+    from prm9tool.catalogue.typekey import TypeKey
     from prm9tool.views.diagram.layout import layout_for
 
     layout = layout_for(TypeKey.parse(E04_CA).variant)

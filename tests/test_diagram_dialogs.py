@@ -9,10 +9,10 @@ import pytest
 from PySide6.QtCore import QObject, QPoint, Qt, Signal
 from PySide6.QtWidgets import QWidget
 
-from prm9tool.access import AccessModel
 from prm9tool.catalogue import CATALOGUE, Access
-from prm9tool.document import ParameterDocument
-from prm9tool.undo import DocumentUndo
+from prm9tool.model.access import AccessModel
+from prm9tool.model.document import ParameterDocument
+from prm9tool.model.undo import DocumentUndo
 from prm9tool.views.diagram.curves import transfer_curve
 from prm9tool.views.diagram.dialogs import BlockContext, create_block_dialog
 from prm9tool.views.diagram.dialogs.controller import raw_to_slider, slider_to_raw
@@ -313,7 +313,7 @@ def test_typed_gains_are_applied_and_resimulated(qtbot, setup):
 
 
 def test_the_step_response_is_drawn_with_its_figures(qtbot, setup):
-    from prm9tool.tuning import StepResponse
+    from prm9tool.online.tuning import StepResponse
 
     s = setup(E02)
     dialog = open_dialog(qtbot, s, "position_controller")

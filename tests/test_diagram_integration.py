@@ -19,11 +19,11 @@ from gui_support import (
 from PySide6.QtCore import Qt
 
 from prm9tool import i18n
-from prm9tool.access import AccessModel
 from prm9tool.catalogue import Access
 from prm9tool.device import factory
-from prm9tool.document import ParameterDocument
-from prm9tool.undo import DocumentUndo
+from prm9tool.model.access import AccessModel
+from prm9tool.model.document import ParameterDocument
+from prm9tool.model.undo import DocumentUndo
 from prm9tool.views.diagram import DiagramView
 
 TIMEOUT = 10_000

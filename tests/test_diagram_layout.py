@@ -10,11 +10,11 @@ import pytest
 from PySide6.QtCore import QPointF, QRectF
 
 from prm9tool import i18n
-from prm9tool.access import AccessModel
+from prm9tool.catalogue.signals import BY_KEY
 from prm9tool.device.emulator import EmulatedValve
-from prm9tool.document import ParameterDocument
-from prm9tool.signals import BY_KEY
-from prm9tool.undo import DocumentUndo
+from prm9tool.model.access import AccessModel
+from prm9tool.model.document import ParameterDocument
+from prm9tool.model.undo import DocumentUndo
 from prm9tool.views.diagram import DiagramView, format_signal
 from prm9tool.views.diagram.items import BlockItem
 

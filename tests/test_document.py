@@ -4,9 +4,9 @@ from __future__ import annotations
 
 import pytest
 
-from prm9tool.document import ParameterDocument
 from prm9tool.errors import ValueRangeError
-from prm9tool.undo import DocumentUndo
+from prm9tool.model.document import ParameterDocument
+from prm9tool.model.undo import DocumentUndo
 
 KEY = "PRM9-06.3Z11/30-24E02S02"
 

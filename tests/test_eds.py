@@ -9,9 +9,9 @@ from pathlib import Path
 import pytest
 
 from prm9tool.catalogue import CATALOGUE
-from prm9tool.cli import main
-from prm9tool.eds import export_eds, markdown_table, od_objects
-from prm9tool.typekey import TypeKey
+from prm9tool.catalogue.typekey import TypeKey
+from prm9tool.cli.main import main
+from prm9tool.files.eds import export_eds, markdown_table, od_objects
 
 E02 = "PRM9-06.3Z11/30-24E02S02-CA"
 E04 = "PRM9-06.3Z11/30-24E04S02-CA"

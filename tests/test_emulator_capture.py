@@ -5,9 +5,9 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
+from prm9tool.catalogue.signals import SIGNALS, signals_for
 from prm9tool.device.emulator import EmulatedValve
 from prm9tool.errors import ValueRangeError
-from prm9tool.signals import SIGNALS, signals_for
 
 E04 = "PRM9-06.3Z11/30-24E04S02"
 

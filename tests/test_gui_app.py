@@ -10,11 +10,12 @@ from gui_support import record_prompts
 from PySide6.QtCore import QSettings, QTimer
 from PySide6.QtWidgets import QApplication
 
-from prm9tool import app, i18n, prmfile
-from prm9tool.cli import build_parser, main
+from prm9tool import app, i18n
+from prm9tool.catalogue.typekey import USER_SPOOLS_FILE, TypeKey, load_user_spools
+from prm9tool.cli.main import build_parser, main
 from prm9tool.device import factory
 from prm9tool.errors import TypeKeyError
-from prm9tool.typekey import USER_SPOOLS_FILE, TypeKey, load_user_spools
+from prm9tool.files import prmfile
 
 E04_CA = "PRM9-10.3Z11/60-24E04S02-CA"
 TIMEOUT = 15_000
@@ -149,12 +150,12 @@ def test_the_window_comes_up_without_the_heavy_modules(tmp_path):
     code = (
         "import sys\n"
         "from prm9tool import app\n"
-        "from prm9tool.cli import build_parser\n"
+        "from prm9tool.cli.main import build_parser\n"
         "qapp = app.create_application()\n"
         "window = app.create_window(build_parser().parse_args([]))\n"
         "window.show()\n"
         "qapp.processEvents()\n"
-        "heavy = ('numpy', 'pyqtgraph', 'can', 'prm9tool.device', 'prm9tool.tuning')\n"
+        "heavy = ('numpy', 'pyqtgraph', 'can', 'prm9tool.device', 'prm9tool.online.tuning')\n"
         "print(sorted(m for m in heavy if m in sys.modules))\n"
     )
     env = dict(os.environ, PRM9TOOL_DATA_DIR=str(tmp_path / "data"), QT_QPA_PLATFORM="offscreen")

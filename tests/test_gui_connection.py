@@ -9,11 +9,11 @@ import pytest
 from gui_support import E02, E04_CA, emulator_connection
 from PySide6.QtCore import QTimer
 
-from prm9tool import backup
-from prm9tool.connection import ValveConnection
 from prm9tool.device import factory
 from prm9tool.device.transport.emulator import LinkFaults
 from prm9tool.errors import CommunicationError
+from prm9tool.files import backup
+from prm9tool.online.connection import ValveConnection
 
 TIMEOUT = 10_000
 
@@ -155,7 +155,7 @@ def test_a_can_bus_that_cannot_be_opened_is_reported_and_the_valve_stays_online(
     """The GUI joins the CAN bus after going online (app._joiner): a failure there is a
     message, not a lost valve."""
     from prm9tool import app
-    from prm9tool.cli import build_parser
+    from prm9tool.cli.main import build_parser
 
     args = build_parser().parse_args(["--can-interface", "no-such-interface"])
     conn = ValveConnection(

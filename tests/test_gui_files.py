@@ -9,8 +9,8 @@ from PySide6.QtCore import QMimeData, QPointF, Qt, QUrl
 from PySide6.QtGui import QDropEvent
 from PySide6.QtWidgets import QFileDialog
 
-from prm9tool import prmfile
-from prm9tool.typekey import TypeKey
+from prm9tool.catalogue.typekey import TypeKey
+from prm9tool.files import prmfile
 from prm9tool.views import prompts
 from prm9tool.views.valve_selection import ValveSelectionDialog
 

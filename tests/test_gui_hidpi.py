@@ -15,7 +15,7 @@ SCRIPT = textwrap.dedent(
     import sys, tempfile
     from PySide6.QtCore import QSettings, QSize, QTimer
     from prm9tool import app
-    from prm9tool.cli import build_parser
+    from prm9tool.cli.main import build_parser
     from prm9tool.views.icons import icon
 
     QSettings.setPath(QSettings.Format.NativeFormat, QSettings.Scope.UserScope, tempfile.mkdtemp())

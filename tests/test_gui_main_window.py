@@ -7,8 +7,8 @@ from gui_support import E02, E04_CA, main_window, record_prompts, reject_all_dia
 from PySide6.QtCore import Qt
 
 from prm9tool.catalogue import Access
-from prm9tool.password import DEFAULT_PASSWORD, PasswordStore
-from prm9tool.typekey import TypeKey
+from prm9tool.catalogue.typekey import TypeKey
+from prm9tool.model.password import DEFAULT_PASSWORD, PasswordStore
 from prm9tool.views import main_window as main_window_module
 from prm9tool.views import prompts
 from prm9tool.views.access_dialog import ChangePasswordDialog, PasswordDialog

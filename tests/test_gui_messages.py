@@ -10,11 +10,11 @@ import pytest
 from gui_support import E02, settings_in
 
 from prm9tool import i18n
-from prm9tool.access import AccessModel
 from prm9tool.catalogue import CATALOGUE
-from prm9tool.document import ParameterDocument
-from prm9tool.editing import apply_edit
-from prm9tool.undo import DocumentUndo
+from prm9tool.model.access import AccessModel
+from prm9tool.model.document import ParameterDocument
+from prm9tool.model.editing import apply_edit
+from prm9tool.model.undo import DocumentUndo
 from prm9tool.views.hid_dialog import HidConfigurationDialog
 from prm9tool.views.parameter_view import ParameterListView
 from prm9tool.views.valve_selection import ValveSelectionDialog
@@ -165,8 +165,8 @@ def test_hid_dialog_describes_emulated_valves_in_german(qtbot, tmp_path, languag
     [("en", "E04 coil A -CA"), ("de", "E04 Spule A -CA"), ("cs", "E04 cívka A -CA")],
 )
 def test_the_variant_label_is_shown_in_the_program_language(language, lang, label):
+    from prm9tool.catalogue.variant import Coils, Config, Variant, variant_label
     from prm9tool.translate import translated
-    from prm9tool.variant import Coils, Config, Variant, variant_label
 
     language(lang)
     assert translated(variant_label(Variant(Config.E04, Coils.A, canopen=True))) == label
@@ -175,7 +175,7 @@ def test_the_variant_label_is_shown_in_the_program_language(language, lang, labe
 def test_valve_selection_marks_the_spools_of_the_users_spools_json(
     qtbot, tmp_path, spools, language
 ):
-    from prm9tool.typekey import USER_SPOOLS_FILE, load_user_spools
+    from prm9tool.catalogue.typekey import USER_SPOOLS_FILE, load_user_spools
 
     user = [{"code": "4Z21", "coils": "B"}, {"code": "3Z12", "coils": "AB"}]
     (tmp_path / USER_SPOOLS_FILE).write_text(json.dumps(user), encoding="utf-8")

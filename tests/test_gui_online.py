@@ -9,8 +9,8 @@ import pytest
 from gui_support import E02, E04_CA, go_online, main_window, record_prompts, session_of
 from PySide6.QtWidgets import QDialog, QLabel, QPushButton
 
-from prm9tool import backup
 from prm9tool.device.transport.emulator import LinkFaults
+from prm9tool.files import backup
 from prm9tool.views import prompts
 from prm9tool.views.online_dialogs import DiffChoice, OnlineDiffDialog, RestartDialog
 
@@ -268,7 +268,7 @@ def test_restore_factory_values_online_needs_the_hydraulics_confirmation(
 def test_restore_factory_values_online_backs_the_valve_up_first(
     qtbot, window, answers, monkeypatch
 ):
-    from prm9tool import prmfile
+    from prm9tool.files import prmfile
 
     _online_with_limta_2000(qtbot, window, 4106)
 
@@ -380,8 +380,8 @@ def test_online_action_with_a_single_valve_needs_no_question(qtbot, window):
 
 def test_opening_a_file_online_asks_before_anything_is_written(qtbot, window, tmp_path,
                                                                 monkeypatch):  # fmt: skip
-    from prm9tool import prmfile
-    from prm9tool.typekey import TypeKey
+    from prm9tool.catalogue.typekey import TypeKey
+    from prm9tool.files import prmfile
 
     go_online(qtbot, window)
     _settled(qtbot, window)

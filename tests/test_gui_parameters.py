@@ -6,10 +6,10 @@ import pytest
 from gui_support import E02, E04_CA
 from PySide6.QtCore import Qt
 
-from prm9tool.access import AccessModel
 from prm9tool.catalogue import Access
-from prm9tool.document import ParameterDocument
-from prm9tool.undo import DocumentUndo
+from prm9tool.model.access import AccessModel
+from prm9tool.model.document import ParameterDocument
+from prm9tool.model.undo import DocumentUndo
 from prm9tool.views.parameter_model import MNEMONIC_ROLE, Column
 from prm9tool.views.parameter_view import ParameterListView
 

@@ -8,7 +8,7 @@ from prm9tool.device.emulator import EmulatedValve
 from prm9tool.device.protocol import Op
 from prm9tool.device.session import ValveSession
 from prm9tool.device.transport.emulator import EmulatorTransport
-from prm9tool.polling import Poller
+from prm9tool.online.polling import Poller
 
 E04_CA = "PRM9-10.3Z11/60-24E04S02-CA"
 WATCHED = ["supply_voltage", "temperature", "current_a", "setpoint_threshold", "setpoint_raw",

@@ -9,8 +9,8 @@ import sys
 
 import pytest
 
-from prm9tool.cli import ExitCode
-from prm9tool.prmfile import read_file
+from prm9tool.errors import ExitCode
+from prm9tool.files.prmfile import read_file
 
 KEY = "PRM9-06.3Z11/30-24E04S02-CA"
 COIL_A = "PRM9-06.2Z51/30-24E02S02"
@@ -179,7 +179,7 @@ def test_the_file_commands_never_load_the_qt_gui(tmp_path):
     path = tmp_path / "valve.prm"
     script = (
         "import json, sys\n"
-        "from prm9tool.cli import main\n"
+        "from prm9tool.cli.main import main\n"
         f"codes = [main(['--new', {KEY!r}, '-o', {str(path)!r}]), main(['--check', {str(path)!r}])]\n"
         "qt = sorted(m for m in sys.modules if m.startswith('PySide6'))\n"
         "print(json.dumps({'codes': codes, 'qt': qt}))\n"

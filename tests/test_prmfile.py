@@ -11,11 +11,12 @@ import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
-from prm9tool import atomicfile
 from prm9tool.catalogue import CATALOGUE
+from prm9tool.catalogue.typekey import TypeKey, all_type_keys
+from prm9tool.catalogue.variant import ALL_VARIANTS, Variant
 from prm9tool.errors import FileFormatError, FileProblem
-from prm9tool.messages import Message
-from prm9tool.prmfile import (
+from prm9tool.files import atomicfile
+from prm9tool.files.prmfile import (
     MAX_FILE_SIZE,
     PrmContents,
     check_bytes,
@@ -25,8 +26,7 @@ from prm9tool.prmfile import (
     save_document,
     write_file,
 )
-from prm9tool.typekey import TypeKey, all_type_keys
-from prm9tool.variant import ALL_VARIANTS, Variant
+from prm9tool.messages import Message
 
 E02 = TypeKey.parse("PRM9-06.3Z11/30-24E02S02")
 E04_CA = TypeKey.parse("PRM9-06.3Z11/30-24E04S02-CA")

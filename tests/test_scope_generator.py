@@ -5,7 +5,7 @@ from __future__ import annotations
 import pytest
 from scope_fakes import FakeConnection
 
-from prm9tool.document import ParameterDocument
+from prm9tool.model.document import ParameterDocument
 from prm9tool.scope import GeneratorSettings, Waveform
 from prm9tool.views import prompts
 from prm9tool.views.scope import ScopeWidget

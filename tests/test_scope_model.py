@@ -8,6 +8,7 @@ import math
 import numpy as np
 import pytest
 
+from prm9tool.catalogue.signals import BY_KEY
 from prm9tool.errors import ValueRangeError
 from prm9tool.scope import (
     Capture,
@@ -26,7 +27,6 @@ from prm9tool.scope import (
     step_figures,
     write_csv,
 )
-from prm9tool.signals import BY_KEY
 
 
 def _ramp(start: int, count: int, channels: int = 2) -> np.ndarray:

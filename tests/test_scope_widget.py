@@ -9,9 +9,9 @@ from PySide6.QtCore import QCoreApplication, QEvent, Qt
 from scope_fakes import FakeConnection
 
 from prm9tool import i18n
-from prm9tool.document import ParameterDocument
+from prm9tool.catalogue.signals import signals_for
+from prm9tool.model.document import ParameterDocument
 from prm9tool.scope import TriggerMode
-from prm9tool.signals import signals_for
 from prm9tool.views.scope import ScopeWidget
 
 E02 = "PRM9-06.3Z11/30-24E02S02"

@@ -8,9 +8,9 @@ import numpy as np
 import pytest
 
 from prm9tool.catalogue import CATALOGUE
+from prm9tool.catalogue.typekey import TypeKey
+from prm9tool.online.tuning import StepResponse, StepSimulator, simulate_step, simulation_values
 from prm9tool.scope import step_figures
-from prm9tool.tuning import StepResponse, StepSimulator, simulate_step, simulation_values
-from prm9tool.typekey import TypeKey
 
 E02 = "PRM9-06.3Z11/30-24E02S02"
 E04_CA = "PRM9-06.3Z11/30-24E04S02-CA"

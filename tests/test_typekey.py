@@ -11,8 +11,7 @@ from pathlib import Path
 
 import pytest
 
-from prm9tool.errors import TypeKeyError
-from prm9tool.typekey import (
+from prm9tool.catalogue.typekey import (
     SPOOLS,
     USER_SPOOLS_FILE,
     SpoolSource,
@@ -20,7 +19,8 @@ from prm9tool.typekey import (
     all_type_keys,
     load_user_spools,
 )
-from prm9tool.variant import Coils, Config
+from prm9tool.catalogue.variant import Coils, Config
+from prm9tool.errors import TypeKeyError
 
 
 def test_manual_example_parses():

@@ -113,7 +113,7 @@ def test_can_options_put_an_emulated_ca_valve_on_the_bus():
 
 
 def test_can_options_from_the_command_line_fill_in_what_was_not_given():
-    from prm9tool.cli import build_parser
+    from prm9tool.cli.main import build_parser
 
     parse = build_parser().parse_args
     assert factory.CanOptions.from_args(parse([])) == factory.CanOptions("virtual", "prm9tool")

@@ -9,11 +9,11 @@ import threading
 import pytest
 
 from prm9tool.catalogue import CATALOGUE
+from prm9tool.catalogue.typekey import TypeKey
 from prm9tool.device.emulator import EmulatedValve, usb_firmware
 from prm9tool.device.session import OperationCancelledError, ValveSession
 from prm9tool.device.transport.emulator import EmulatorTransport, LinkFaults
 from prm9tool.errors import DeviceDisconnectedError, DeviceTimeoutError, ProtocolError
-from prm9tool.typekey import TypeKey
 
 E04 = "PRM9-06.3Z11/30-24E04S02-CA"
 

@@ -22,12 +22,12 @@ from PySide6.QtCore import QObject, Signal
 from PySide6.QtWidgets import QApplication, QWidget
 
 from prm9tool import i18n
-from prm9tool.access import AccessModel
 from prm9tool.catalogue import CATALOGUE, Access
 from prm9tool.device.emulator import EmulatedValve
-from prm9tool.document import ParameterDocument
-from prm9tool.tuning import StepSimulator
-from prm9tool.undo import DocumentUndo
+from prm9tool.model.access import AccessModel
+from prm9tool.model.document import ParameterDocument
+from prm9tool.model.undo import DocumentUndo
+from prm9tool.online.tuning import StepSimulator
 from prm9tool.views.canopen_window import CanopenWindow
 from prm9tool.views.diagram import DiagramView
 from prm9tool.views.valve_selection import ValveSelectionDialog

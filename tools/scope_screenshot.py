@@ -24,8 +24,8 @@ os.environ.setdefault("PRM9TOOL_DATA_DIR", tempfile.mkdtemp(prefix="scope_shot_"
 
 from PySide6.QtWidgets import QApplication
 
-from prm9tool.connection import ValveConnection
-from prm9tool.document import ParameterDocument
+from prm9tool.model.document import ParameterDocument
+from prm9tool.online.connection import ValveConnection
 from prm9tool.scope import Edge, TriggerMode, Waveform
 from prm9tool.views.scope import ScopeWidget
 

@@ -40,8 +40,8 @@ from prm9tool.catalogue.schema import (
     Parameter,
     Texts,
 )
+from prm9tool.catalogue.variant import Coils, Variant, variant_label
 from prm9tool.messages import QT_TRANSLATE_NOOP, Message
-from prm9tool.variant import Coils, Variant, variant_label
 
 __all__ = [
     "CAPPED_BY",

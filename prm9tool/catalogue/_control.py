@@ -22,7 +22,7 @@ from prm9tool.catalogue._setpoint import (
     _linearization,
 )
 from prm9tool.catalogue.schema import EVERY_VARIANT, Access, Applies, ObjAccess, Parameter, Texts
-from prm9tool.variant import Config
+from prm9tool.catalogue.variant import Config
 
 E02_ONLY = Applies(configs=frozenset({Config.E02}))
 

@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 from prm9tool.catalogue.schema import Access, Applies, DataType, ObjAccess, Parameter, Texts
-from prm9tool.variant import Coils, Config
+from prm9tool.catalogue.variant import Coils, Config
 
 T = Texts
 U8, U16, U32 = DataType.UNSIGNED8, DataType.UNSIGNED16, DataType.UNSIGNED32

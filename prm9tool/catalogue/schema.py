@@ -7,9 +7,9 @@ import struct
 from dataclasses import dataclass, field
 from enum import IntEnum, StrEnum
 
+from prm9tool.catalogue.variant import Coils, Config, Variant
 from prm9tool.errors import ValueRangeError
 from prm9tool.messages import QT_TRANSLATE_NOOP
-from prm9tool.variant import Coils, Config, Variant
 
 
 class DataType(IntEnum):

@@ -15,9 +15,9 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
+from prm9tool.catalogue.typekey import TypeKey
 from prm9tool.device.session import ValveSession
 from prm9tool.errors import CanBusError, CommunicationError, Prm9Error, TypeKeyError
-from prm9tool.typekey import TypeKey
 
 if TYPE_CHECKING:
     from prm9tool.device.emulator import EmulatedValve
@@ -61,7 +61,7 @@ class CanOptions:
 
 def emulator_nv_path(serial: int) -> Path:
     """The EEPROM image file of the emulated valve with ``serial``."""
-    from prm9tool.backup import user_data_dir  # the one definition of the user data dir
+    from prm9tool.paths import user_data_dir
 
     return user_data_dir() / "emulator" / f"{serial}.json"
 

@@ -17,6 +17,7 @@ from typing import TypeVar
 import numpy as np
 
 from prm9tool.catalogue import CATALOGUE, Parameter
+from prm9tool.catalogue.typekey import TypeKey
 from prm9tool.device.emulator.states import DeviceState, LedState, ValveStatus
 from prm9tool.device.entries import (
     STEPS,
@@ -46,7 +47,6 @@ from prm9tool.device.protocol import (
 from prm9tool.device.stream import StreamReceiver
 from prm9tool.device.transport import Transport
 from prm9tool.errors import CommunicationError, Prm9Error, ProtocolError, SdoAbortError
-from prm9tool.typekey import TypeKey
 
 R = TypeVar("R", bound=Response)
 log = logging.getLogger("prm9tool.device.session")

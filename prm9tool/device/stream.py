@@ -7,6 +7,7 @@ from typing import Any
 
 import numpy as np
 
+from prm9tool.catalogue.signals import BY_KEY
 from prm9tool.device.protocol import (
     STREAM_BASE_RATE_HZ,
     STREAM_MAX_CHANNELS,
@@ -17,7 +18,6 @@ from prm9tool.device.protocol import (
 )
 from prm9tool.device.transport import Transport
 from prm9tool.errors import ValueRangeError
-from prm9tool.signals import BY_KEY
 
 _STALE = 0x8000  # a sequence number this far "behind" is a duplicate, not a gap
 

@@ -7,7 +7,7 @@ from collections.abc import Sequence
 
 import numpy as np
 
-from prm9tool.signals import Signal
+from prm9tool.catalogue.signals import Signal
 
 MAX_RATE_HZ = 5000  # one sample per 200 µs control cycle
 RATES_HZ = (5000, 2500, 1000, 500, 250, 100, 50)  # 5 kHz / decimation

@@ -9,7 +9,7 @@ from typing import TextIO
 
 import numpy as np
 
-from prm9tool.signals import Signal
+from prm9tool.catalogue.signals import Signal
 
 
 @dataclass(frozen=True)

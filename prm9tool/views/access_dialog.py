@@ -13,7 +13,7 @@ from PySide6.QtWidgets import (
     QWidget,
 )
 
-from prm9tool.password import MIN_LENGTH, PasswordStore
+from prm9tool.model.password import MIN_LENGTH, PasswordStore
 from prm9tool.views.diagram.colours import toned_style
 
 

@@ -2,7 +2,7 @@
 
 Left the interface/bit-rate switch, right the node-ID switch, each with the position the valve
 read at its last power-up marked; a part of the interface switch's position that the node-ID
-switch overrides (:func:`prm9tool.canopen_switches.overridden`) is struck through and says why.
+switch overrides (:func:`prm9tool.catalogue.canopen_switches.overridden`) is struck through and says why.
 Texts use the translation context of the window ("CanopenWindow").
 """
 
@@ -21,7 +21,7 @@ from PySide6.QtWidgets import (
     QWidget,
 )
 
-from prm9tool.canopen_switches import (
+from prm9tool.catalogue.canopen_switches import (
     POSITIONS,
     Overridden,
     baud_position,

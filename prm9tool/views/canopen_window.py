@@ -7,7 +7,7 @@ Below: the terminator on/off choice (mark "b") and the node ID
 The valve reads its switches at power-up only, so the positions shown are those of the last
 start; a part of the interface switch's position that the node-ID switch overrides (its bit
 rate at node switch 0 or 1, its terminator at 1) is struck through. A change is an undoable
-document edit only: online, the main window's :class:`~prm9tool.sync.ValveSync` writes it to
+document edit only: online, the main window's :class:`~prm9tool.online.sync.ValveSync` writes it to
 the valve like every other edit, and the window then has the valve store it in non-volatile
 memory, because the setting takes effect only after a restart, which reloads the stored
 values. Given an access model, the window honours the catalogue's access level.
@@ -31,15 +31,15 @@ from PySide6.QtWidgets import (
     QWidget,
 )
 
-from prm9tool.access import AccessModel
-from prm9tool.canopen_switches import baud_position, effective, format_bitrate
 from prm9tool.catalogue import CATALOGUE
-from prm9tool.connection_protocol import ParameterConnection
-from prm9tool.document import ParameterDocument, Raw
-from prm9tool.editing import apply_edit
+from prm9tool.catalogue.canopen_switches import baud_position, effective, format_bitrate
 from prm9tool.errors import AccessDeniedError, ValueRangeError
 from prm9tool.i18n import current_language
-from prm9tool.sync import ValveSync
+from prm9tool.model.access import AccessModel
+from prm9tool.model.document import ParameterDocument, Raw
+from prm9tool.model.editing import apply_edit
+from prm9tool.online.connection_protocol import ParameterConnection
+from prm9tool.online.sync import ValveSync
 from prm9tool.translate import error_text
 from prm9tool.views.canopen_tables import SwitchTables
 from prm9tool.views.diagram.colours import toned_style

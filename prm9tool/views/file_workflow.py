@@ -7,11 +7,11 @@ from pathlib import Path
 from PySide6.QtCore import QObject, QSettings, Signal
 from PySide6.QtWidgets import QFileDialog, QMenu, QWidget
 
-from prm9tool.document import ParameterDocument
+from prm9tool.catalogue.typekey import TypeKey
 from prm9tool.errors import FileFormatError, FileProblem
+from prm9tool.model.document import ParameterDocument
+from prm9tool.model.undo import DocumentUndo
 from prm9tool.translate import translated
-from prm9tool.typekey import TypeKey
-from prm9tool.undo import DocumentUndo
 from prm9tool.views import prompts
 
 MAX_RECENT = 8
@@ -128,7 +128,7 @@ class FileWorkflow(QObject):
         """Open ``path``; a broken file is reported with every problem and changes nothing."""
         if ask and not self.maybe_save():
             return False
-        from prm9tool import prmfile  # imported when first needed: faster start-up
+        from prm9tool.files import prmfile  # imported when first needed: faster start-up
 
         try:
             contents = prmfile.read_file(path)
@@ -174,7 +174,7 @@ class FileWorkflow(QObject):
 
     def save_to(self, path: Path) -> bool:
         """Save atomically to ``path``; errors are reported and nothing is lost."""
-        from prm9tool import prmfile
+        from prm9tool.files import prmfile
 
         try:
             prmfile.save_document(self._doc, path)

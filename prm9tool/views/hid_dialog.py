@@ -26,8 +26,8 @@ from PySide6.QtWidgets import (
 )
 from shiboken6 import isValid
 
+from prm9tool.catalogue.typekey import TypeKey
 from prm9tool.translate import error_text
-from prm9tool.typekey import TypeKey
 from prm9tool.views.valve_selection import ValveSelectionDialog
 
 EMULATORS_KEY = "hid/emulators"

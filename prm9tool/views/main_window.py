@@ -14,13 +14,13 @@ from PySide6.QtGui import QCloseEvent, QDragEnterEvent, QDropEvent
 from PySide6.QtWidgets import QMainWindow, QScrollArea, QStackedWidget, QWidget
 
 from prm9tool import i18n
-from prm9tool.access import AccessModel
 from prm9tool.catalogue import Access
-from prm9tool.connection import ValveConnection
-from prm9tool.document import ParameterDocument
-from prm9tool.password import PasswordStore
-from prm9tool.sync import ValveSync
-from prm9tool.undo import DocumentUndo
+from prm9tool.model.access import AccessModel
+from prm9tool.model.document import ParameterDocument
+from prm9tool.model.password import PasswordStore
+from prm9tool.model.undo import DocumentUndo
+from prm9tool.online.connection import ValveConnection
+from prm9tool.online.sync import ValveSync
 from prm9tool.views import prompts
 from prm9tool.views.access_dialog import ChangePasswordDialog, PasswordDialog
 from prm9tool.views.actions import MainActions

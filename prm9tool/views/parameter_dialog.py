@@ -20,12 +20,12 @@ from PySide6.QtWidgets import (
     QWidget,
 )
 
-from prm9tool.access import AccessModel
 from prm9tool.catalogue import CAPPED_BY, CATALOGUE, Access, Parameter
-from prm9tool.document import ParameterDocument, Raw
-from prm9tool.editing import apply_edit, linked_mnemonics
 from prm9tool.errors import AccessDeniedError, ValueRangeError
 from prm9tool.i18n import current_language, text
+from prm9tool.model.access import AccessModel
+from prm9tool.model.document import ParameterDocument, Raw
+from prm9tool.model.editing import apply_edit, linked_mnemonics
 from prm9tool.translate import error_text
 from prm9tool.views.diagram.colours import toned_style
 

@@ -19,10 +19,10 @@ from PySide6.QtCore import (
 )
 from PySide6.QtGui import QColor, QFont, QGuiApplication, QPalette
 
-from prm9tool.access import AccessModel
 from prm9tool.catalogue import CATALOGUE, Access, Parameter
-from prm9tool.document import ParameterDocument
 from prm9tool.i18n import current_language, text
+from prm9tool.model.access import AccessModel
+from prm9tool.model.document import ParameterDocument
 
 MNEMONIC_ROLE = Qt.ItemDataRole.UserRole + 1
 NON_DEFAULT_ROLE = Qt.ItemDataRole.UserRole + 2

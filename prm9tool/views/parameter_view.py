@@ -14,8 +14,8 @@ from PySide6.QtWidgets import (
     QWidget,
 )
 
-from prm9tool.access import AccessModel
-from prm9tool.document import ParameterDocument
+from prm9tool.model.access import AccessModel
+from prm9tool.model.document import ParameterDocument
 from prm9tool.views.parameter_dialog import ParameterEditDialog
 from prm9tool.views.parameter_model import (
     MNEMONIC_ROLE,

@@ -15,8 +15,8 @@ from PySide6.QtCore import QCoreApplication, QMarginsF, QRectF, QUrl
 from PySide6.QtGui import QImage, QPageLayout, QPageSize, QPainter, QTextDocument
 from PySide6.QtPrintSupport import QPrinter
 
-from prm9tool.document import ParameterDocument
 from prm9tool.i18n import current_language, text
+from prm9tool.model.document import ParameterDocument
 
 translate = QCoreApplication.translate
 DiagramPainter = Callable[[QPainter, QRectF], None]

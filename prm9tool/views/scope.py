@@ -29,11 +29,11 @@ from PySide6.QtWidgets import (
     QWidget,
 )
 
-from prm9tool.connection_protocol import ScopeConnection
-from prm9tool.document import ParameterDocument
+from prm9tool.catalogue.signals import BY_KEY, signals_for
 from prm9tool.errors import ValueRangeError
+from prm9tool.model.document import ParameterDocument
+from prm9tool.online.connection_protocol import ScopeConnection
 from prm9tool.scope import Capture, GeneratorSettings, write_csv
-from prm9tool.signals import BY_KEY, signals_for
 from prm9tool.translate import error_text
 from prm9tool.views import prompts
 from prm9tool.views.scope_display import ScopeDisplay

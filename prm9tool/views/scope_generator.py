@@ -17,7 +17,7 @@ import time
 from PySide6.QtCore import QObject, QTimer, Signal
 from PySide6.QtWidgets import QComboBox, QDoubleSpinBox, QLabel, QPushButton, QWidget
 
-from prm9tool.connection_protocol import ScopeConnection
+from prm9tool.online.connection_protocol import ScopeConnection
 from prm9tool.scope import GeneratorSettings, Waveform, setpoint_limits
 from prm9tool.views.scope_panels import SPACE, control_row, section_label
 

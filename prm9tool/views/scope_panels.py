@@ -21,10 +21,10 @@ from PySide6.QtWidgets import (
     QWidget,
 )
 
+from prm9tool.catalogue.signals import MAX_CHANNELS
+from prm9tool.catalogue.signals import Signal as MeasuringPoint
 from prm9tool.i18n import text
 from prm9tool.scope import RATES_HZ, WINDOWS_S, Edge, TriggerMode, TriggerSettings
-from prm9tool.signals import MAX_CHANNELS
-from prm9tool.signals import Signal as MeasuringPoint
 from prm9tool.views.diagram.colours import toned_style
 
 KEY_ROLE = Qt.ItemDataRole.UserRole

@@ -31,10 +31,10 @@ from PySide6.QtWidgets import (
     QWidget,
 )
 
+from prm9tool.catalogue.signals import MAX_CHANNELS
+from prm9tool.catalogue.signals import Signal as MeasuringPoint
 from prm9tool.i18n import text
 from prm9tool.scope import axis_ranges, peak_decimate
-from prm9tool.signals import MAX_CHANNELS
-from prm9tool.signals import Signal as MeasuringPoint
 
 COLOURS = ("#ffd43b", "#4dd0e1", "#ff7eb6")  # channel 1, 2, 3
 CURSOR_COLOUR = "#e0e0e0"

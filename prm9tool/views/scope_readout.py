@@ -16,10 +16,10 @@ from PySide6.QtWidgets import (
     QWidget,
 )
 
+from prm9tool.catalogue.signals import MAX_CHANNELS
+from prm9tool.catalogue.signals import Signal as MeasuringPoint
 from prm9tool.i18n import text
 from prm9tool.scope import CursorReadout, StepFigures
-from prm9tool.signals import MAX_CHANNELS
-from prm9tool.signals import Signal as MeasuringPoint
 from prm9tool.views.scope_plot import COLOURS
 
 

@@ -20,10 +20,10 @@ from PySide6.QtWidgets import (
     QWidget,
 )
 
+from prm9tool.catalogue.typekey import FLOWS, SPOOLS, SUPPLIES, SpoolSource, TypeKey
+from prm9tool.catalogue.variant import Config
 from prm9tool.errors import TypeKeyError
 from prm9tool.translate import error_text
-from prm9tool.typekey import FLOWS, SPOOLS, SUPPLIES, SpoolSource, TypeKey
-from prm9tool.variant import Config
 from prm9tool.views.diagram.colours import toned_style
 
 DEFAULT_TYPE_KEY = "PRM9-06.3Z11/30-24E02S02"

@@ -19,7 +19,7 @@ from PySide6.QtWidgets import (
     QWidget,
 )
 
-from prm9tool.connection import ValveConnection
+from prm9tool.online.connection import ValveConnection
 from prm9tool.views.emcy import emcy_text
 
 COLOURS = {

@@ -15,13 +15,13 @@ from PySide6.QtCore import QObject, QSettings, Qt, Signal
 from PySide6.QtWidgets import QDialog, QProgressDialog, QWidget
 
 from prm9tool.catalogue import variant_label
-from prm9tool.connection import ValveConnection
-from prm9tool.document import ParameterDocument, Raw
+from prm9tool.catalogue.typekey import TypeKey
 from prm9tool.errors import TypeKeyError
-from prm9tool.sync import ValveSync
+from prm9tool.model.document import ParameterDocument, Raw
+from prm9tool.model.undo import DocumentUndo
+from prm9tool.online.connection import ValveConnection
+from prm9tool.online.sync import ValveSync
 from prm9tool.translate import error_text, translated
-from prm9tool.typekey import TypeKey
-from prm9tool.undo import DocumentUndo
 from prm9tool.views import prompts
 from prm9tool.views.hid_dialog import (
     SELECTED_KEY,
@@ -404,7 +404,7 @@ class _FactoryReset:
 def _back_up_restore_factory_and_read(session: Any) -> _FactoryReset:
     """Worker job: back the valve's parameters up (as before the first upload), reset them to
     the factory values, which become effective after a restart, and read them back."""
-    from prm9tool.backup import ensure_backup  # *.prm writing, only when needed
+    from prm9tool.files.backup import ensure_backup  # *.prm writing, only when needed
 
     path = ensure_backup(session)
     session.restore_factory()

@@ -14,7 +14,7 @@ from dataclasses import dataclass, field
 from typing import Protocol
 
 from prm9tool.catalogue import CATALOGUE, Parameter
-from prm9tool.eds import mapping_for_control_mode
+from prm9tool.catalogue.pdo import mapping_for_control_mode
 from prm9tool.errors import SdoAbortError
 
 log = logging.getLogger(__name__)

@@ -12,9 +12,9 @@ from operator import itemgetter
 
 import numpy as np
 
+from prm9tool.catalogue.signals import MAX_CHANNELS
 from prm9tool.device.emulator.loopstate import SIGNAL_ORDER, LoopState
 from prm9tool.errors import ValueRangeError
-from prm9tool.signals import MAX_CHANNELS
 
 MAX_ROWS = 200_000  # 40 s at full rate; older samples are dropped when nobody reads
 

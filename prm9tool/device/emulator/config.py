@@ -12,10 +12,10 @@ import math
 from collections.abc import Callable
 from typing import Any
 
+from prm9tool.catalogue.variant import Coils, Config, Variant
 from prm9tool.device.emulator.constants import CYCLE_S, FULL, FirmwareConstants, PlantConstants
 from prm9tool.device.emulator.inputs import INPUT_TYPES
 from prm9tool.device.emulator.loopstate import Curve, evaluate_curve, prepare_curve
-from prm9tool.variant import Coils, Config, Variant
 
 Values = Callable[[str], int]
 LETTERS = "ABCDEFGHI"

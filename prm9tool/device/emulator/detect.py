@@ -10,9 +10,9 @@ from __future__ import annotations
 
 from typing import TYPE_CHECKING
 
+from prm9tool.catalogue.variant import Coils, Config
 from prm9tool.device.emulator.inputs import INPUT_TYPES
 from prm9tool.device.emulator.states import DeviceState, Fault
-from prm9tool.variant import Coils, Config
 
 OPEN_LOAD_MIN_V = 1.0  # on-state open-load check only above 1 V average at the coil (assumption)
 OPEN_LOAD_MA = 10.0  # ... where a connected coil carries far more than 10 mA (assumption)

@@ -9,8 +9,9 @@ from __future__ import annotations
 import os
 from collections.abc import Callable, Generator
 
-from prm9tool import canopen_switches
-from prm9tool.catalogue import CATALOGUE
+from prm9tool.catalogue import CATALOGUE, canopen_switches
+from prm9tool.catalogue.typekey import TypeKey
+from prm9tool.catalogue.variant import Coils
 from prm9tool.device.emulator import config, detect, thermal
 from prm9tool.device.emulator.constants import (
     CYCLE_S,
@@ -32,8 +33,6 @@ from prm9tool.device.emulator.nvimage import NvImage, is_nonvolatile
 from prm9tool.device.emulator.objdict import ObjectDictionary
 from prm9tool.device.emulator.statemachine import DeviceStateMachine
 from prm9tool.device.emulator.states import DeviceState, Fault
-from prm9tool.typekey import TypeKey
-from prm9tool.variant import Coils
 
 AUTO_CONTROL_WORD = 0x0F  # analog-only mode: the firmware enables itself (decision)
 _ACTIVE_STATES = (DeviceState.HOLD, DeviceState.DEVICE_MODE_ACTIVE, DeviceState.FAULT_HOLD)
@@ -203,7 +202,7 @@ class Firmware:
 
     # --- CANopen interface settings (latched at power-up) ----------------------------------
     def _latch_interface(self) -> None:
-        """Decode the switches (prm9tool.canopen_switches, table 7-17) at power-up.
+        """Decode the switches (prm9tool.catalogue.canopen_switches, table 7-17) at power-up.
 
         LSS (node switch 1) is not emulated: the valve then uses the NODEID parameter (what an
         LSS master would have stored) and the bit rate of the interface switch.

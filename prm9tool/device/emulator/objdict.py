@@ -11,8 +11,8 @@ import struct
 from collections.abc import Callable
 
 from prm9tool.catalogue import CATALOGUE, Catalogue, DataType, ObjAccess, Parameter, Texts
+from prm9tool.catalogue.variant import Variant
 from prm9tool.errors import AbortCode, SdoAbortError
-from prm9tool.variant import Variant
 
 Value = int | str
 Key = tuple[int, int]

@@ -6,14 +6,14 @@ from typing import TYPE_CHECKING
 
 from prm9tool.catalogue import LOAD_SIGNATURE, SAVE_SIGNATURE
 from prm9tool.catalogue._comm import revision_number
+from prm9tool.catalogue.pdo import mapping_for_control_mode
+from prm9tool.catalogue.variant import Config
 from prm9tool.device.emulator.constants import FULL
 from prm9tool.device.emulator.inputs import CANOPEN_TYPE
 from prm9tool.device.emulator.loopstate import SIGNAL_ORDER
 from prm9tool.device.emulator.objdict import Value, abort
 from prm9tool.device.emulator.states import DeviceState
-from prm9tool.eds import mapping_for_control_mode
 from prm9tool.errors import AbortCode
-from prm9tool.variant import Config
 
 if TYPE_CHECKING:
     from prm9tool.device.emulator.firmware import Firmware

@@ -18,6 +18,7 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
+from prm9tool.catalogue.signals import BY_CODE, signals_for
 from prm9tool.device.protocol import (
     MAX_SEGMENTED_LENGTH,
     PROTOCOL_VERSION,
@@ -56,7 +57,6 @@ from prm9tool.device.protocol import (
 from prm9tool.device.protocol.packing import READ_ANSWER_ROOM
 from prm9tool.device.protocol.status import MAX_ACTIVE_ERRORS, MAX_TEXT_BYTES
 from prm9tool.errors import AbortCode, Prm9Error, SdoAbortError
-from prm9tool.signals import BY_CODE, signals_for
 
 if TYPE_CHECKING:
     from prm9tool.device.emulator import EmulatedValve

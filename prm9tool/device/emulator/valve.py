@@ -11,6 +11,9 @@ from typing import TYPE_CHECKING
 import numpy as np
 
 from prm9tool.catalogue import CATALOGUE, LOAD_SIGNATURE, SAVE_SIGNATURE
+from prm9tool.catalogue.signals import BY_KEY
+from prm9tool.catalogue.typekey import TypeKey
+from prm9tool.catalogue.variant import Variant
 from prm9tool.device.emulator.capture import Capture
 from prm9tool.device.emulator.constants import (
     CYCLE_S,
@@ -25,9 +28,6 @@ from prm9tool.device.emulator.leds import leds
 from prm9tool.device.emulator.pacing import Pacer
 from prm9tool.device.emulator.states import DeviceState, Fault, ValveStatus
 from prm9tool.errors import AccessDeniedError, ValueRangeError
-from prm9tool.signals import BY_KEY
-from prm9tool.typekey import TypeKey
-from prm9tool.variant import Variant
 
 if TYPE_CHECKING:
     import can
@@ -217,7 +217,7 @@ class EmulatedValve:
 
     # --- measuring points -------------------------------------------------------------
     def signal(self, key: str) -> float:
-        """Latest raw value of a measuring point (prm9tool.signals key)."""
+        """Latest raw value of a measuring point (prm9tool.catalogue.signals key)."""
         if key not in BY_KEY:
             raise ValueRangeError(f"unknown measuring point {key!r}")
         with self.lock:

@@ -2,7 +2,7 @@
 
 Pure data (no Qt widgets): the diagram of manual §8.7.2 (figures 8-6, 8-7) for a variant as a
 list of blocks on a grid, the arrows between them and the position of every measuring point of
-:mod:`prm9tool.signals`. Block ids are the ``Signal.block`` names, so a red dot follows its block.
+:mod:`prm9tool.catalogue.signals`. Block ids are the ``Signal.block`` names, so a red dot follows its block.
 
 Grid (columns left to right, rows top to bottom)::
 
@@ -18,8 +18,8 @@ import itertools
 from dataclasses import dataclass, field
 
 from prm9tool.catalogue import CATALOGUE
-from prm9tool.signals import signals_for
-from prm9tool.variant import Config, Variant
+from prm9tool.catalogue.signals import signals_for
+from prm9tool.catalogue.variant import Config, Variant
 
 BLOCK_W = 168.0
 BLOCK_H = 100.0  # a two-line title and three value lines

@@ -6,10 +6,10 @@ from collections.abc import Callable
 
 from PySide6.QtCore import QCoreApplication
 
-from prm9tool.canopen_switches import CanSettings, effective, format_bitrate
 from prm9tool.catalogue import CATALOGUE
-from prm9tool.document import ParameterDocument
+from prm9tool.catalogue.canopen_switches import CanSettings, effective, format_bitrate
 from prm9tool.i18n import current_language
+from prm9tool.model.document import ParameterDocument
 
 NO_VALUE = "—"
 

@@ -25,12 +25,12 @@ from PySide6.QtGui import (
 )
 from PySide6.QtWidgets import QDialog, QGraphicsView, QMenu, QWidget
 
-from prm9tool.access import AccessModel
 from prm9tool.catalogue import CATALOGUE
-from prm9tool.connection_protocol import DiagramConnection
-from prm9tool.document import ParameterDocument
+from prm9tool.catalogue.signals import BY_KEY
 from prm9tool.i18n import text
-from prm9tool.signals import BY_KEY
+from prm9tool.model.access import AccessModel
+from prm9tool.model.document import ParameterDocument
+from prm9tool.online.connection_protocol import DiagramConnection
 from prm9tool.views.diagram.colours import DiagramColours
 from prm9tool.views.diagram.dialogs import BlockContext, create_block_dialog
 from prm9tool.views.diagram.layout import layout_for
@@ -343,6 +343,6 @@ class DiagramView(QGraphicsView):
 def _step_simulator(document: ParameterDocument, loop: str) -> Any:
     """The controller dialogs' step-response simulator (imported when first needed: the
     tuning module brings numpy and the emulator, ~150 ms the program's start need not wait)."""
-    from prm9tool.tuning import StepSimulator
+    from prm9tool.online.tuning import StepSimulator
 
     return StepSimulator.for_document(document, loop)

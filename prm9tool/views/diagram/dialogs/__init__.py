@@ -6,7 +6,7 @@ from collections.abc import Callable
 
 from PySide6.QtWidgets import QWidget
 
-from prm9tool.variant import Config
+from prm9tool.catalogue.variant import Config
 from prm9tool.views.diagram.dialogs.base import BlockContext, BlockDialog
 from prm9tool.views.diagram.dialogs.controller import ControllerDialog
 from prm9tool.views.diagram.dialogs.current_dither import CurrentDitherDialog

@@ -1,7 +1,7 @@
 """Common frame of the block dialogs: fields bound to the document, refusals, access lock.
 
 Every change a dialog makes is an undoable document edit (``ParameterDocument.set_value`` /
-``set_values`` through :mod:`prm9tool.editing`); the diagram and the parameter list observe
+``set_values`` through :mod:`prm9tool.model.editing`); the diagram and the parameter list observe
 the document, and online the main window forwards edits to the valve.
 """
 
@@ -22,13 +22,13 @@ from PySide6.QtWidgets import (
     QWidget,
 )
 
-from prm9tool.access import AccessModel
 from prm9tool.catalogue import CATALOGUE
-from prm9tool.connection_protocol import DiagramConnection
-from prm9tool.document import ParameterDocument, Raw
-from prm9tool.editing import apply_edit
 from prm9tool.errors import AccessDeniedError, ValueRangeError
 from prm9tool.i18n import text
+from prm9tool.model.access import AccessModel
+from prm9tool.model.document import ParameterDocument, Raw
+from prm9tool.model.editing import apply_edit
+from prm9tool.online.connection_protocol import DiagramConnection
 from prm9tool.translate import error_text
 from prm9tool.views.diagram.colours import toned_style
 from prm9tool.views.diagram.dialogs.fields import ChoiceField, ValueField
@@ -42,7 +42,7 @@ class BlockContext:
     """What a block dialog works on: the document, the access level and (optionally) the valve.
 
     ``simulator_factory(document, loop)`` returns an object with ``request(values)`` and a
-    ``response_ready`` signal (see :mod:`prm9tool.tuning`); the controller dialogs use it.
+    ``response_ready`` signal (see :mod:`prm9tool.online.tuning`); the controller dialogs use it.
     """
 
     document: ParameterDocument

@@ -2,7 +2,7 @@
 
 Kp, Ki, Kd and T1 are typed or set with logarithmic sliders; the simulated closed-loop step
 response (the emulator's control loop run faster than real time off the GUI thread, see
-:mod:`prm9tool.tuning`) follows the trial values while a slider moves. Releasing a slider or
+:mod:`prm9tool.online.tuning`) follows the trial values while a slider moves. Releasing a slider or
 finishing a typed entry is one undo step.
 """
 

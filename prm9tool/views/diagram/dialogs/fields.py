@@ -12,11 +12,11 @@ from collections.abc import Callable, Iterable
 from PySide6.QtCore import QSignalBlocker
 from PySide6.QtWidgets import QComboBox, QLineEdit, QWidget
 
-from prm9tool.access import AccessModel
 from prm9tool.catalogue import CATALOGUE, Parameter
-from prm9tool.document import ParameterDocument, Raw
 from prm9tool.errors import ValueRangeError
 from prm9tool.i18n import current_language
+from prm9tool.model.access import AccessModel
+from prm9tool.model.document import ParameterDocument, Raw
 from prm9tool.translate import error_text
 
 Apply = Callable[[str, Raw], bool]  # returns False (and shows the reason) when refused

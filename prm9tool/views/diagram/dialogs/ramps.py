@@ -1,7 +1,7 @@
 """The four setpoint ramps with a preview of a 100 % and a 50 % step (manual figure 8-11).
 
 Each time is for a 100 % step; smaller steps take proportionally less. At Basic access level
-all four ramps are set together with one value (one undo step, :mod:`prm9tool.editing`).
+all four ramps are set together with one value (one undo step, :mod:`prm9tool.model.editing`).
 """
 
 from __future__ import annotations
@@ -28,7 +28,7 @@ class RampsDialog(BlockDialog):
         for mnemonic in self.present:
             self.value_field(mnemonic)
         # At Basic level one field sets all ramps; it writes RAMPSETPOSUP, which
-        # prm9tool.editing links to every ramp of the valve.
+        # prm9tool.model.editing links to every ramp of the valve.
         self.all_field = ValueField("RAMPSETPOSUP", self.apply_value, self.show_error)
         self.all_caption = QLabel()
         self.form.addRow(self.all_caption, self.all_field)

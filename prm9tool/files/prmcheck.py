@@ -14,9 +14,9 @@ import re
 from dataclasses import dataclass, field
 
 from prm9tool.catalogue import CATALOGUE, Access, Parameter, variant_label
+from prm9tool.catalogue.typekey import TypeKey
 from prm9tool.errors import FileProblem, TypeKeyError, ValueRangeError
 from prm9tool.messages import QT_TRANSLATE_NOOP, Message, message_of
-from prm9tool.typekey import TypeKey
 
 FORMAT_NAME = "prm9tool"
 FORMAT_VERSION = 1

@@ -6,11 +6,11 @@ funkce"): changing one ramp sets every ramp of the valve to that value as one un
 
 from __future__ import annotations
 
-from prm9tool.access import AccessModel
 from prm9tool.catalogue import CATALOGUE, Access
-from prm9tool.document import ParameterDocument, Raw
 from prm9tool.errors import AccessDeniedError
 from prm9tool.messages import QT_TRANSLATE_NOOP
+from prm9tool.model.access import AccessModel
+from prm9tool.model.document import ParameterDocument, Raw
 
 RAMPS: tuple[str, ...] = ("RAMPSETPOSUP", "RAMPSETPOSDOWN", "RAMPSETNEGUP", "RAMPSETNEGDOWN")
 

@@ -23,7 +23,7 @@ from typing import Any
 from PySide6.QtCore import QObject, Qt, Signal
 
 from prm9tool.errors import CommunicationError, Prm9Error
-from prm9tool.polling import Poller, Schedule
+from prm9tool.online.polling import Poller, Schedule
 from prm9tool.translate import error_text
 
 log = logging.getLogger(__name__)
@@ -192,7 +192,7 @@ class ValveConnection(QObject):
 
         def run(session: Any) -> object:
             if backup:
-                from prm9tool.backup import ensure_backup  # *.prm writing, only when needed
+                from prm9tool.files.backup import ensure_backup  # *.prm writing, only when needed
 
                 path = ensure_backup(session, self._progress, self._cancel)
                 if path is not None:

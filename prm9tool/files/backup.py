@@ -8,31 +8,18 @@ has no backup yet, it downloads the valve's parameters into
 
 from __future__ import annotations
 
-import os
-import sys
 import threading
 from collections.abc import Callable, Mapping
 from datetime import datetime
 from pathlib import Path
 from typing import Any
 
+from prm9tool.catalogue.typekey import TypeKey
 from prm9tool.errors import FileFormatError, FileProblem
-from prm9tool.prmfile import PrmContents, write_file
-from prm9tool.typekey import TypeKey
+from prm9tool.files.prmfile import PrmContents, write_file
+from prm9tool.paths import user_data_dir
 
 Progress = Callable[[int, int, str], None]
-
-
-def user_data_dir() -> Path:
-    """prm9tool's data folder (``PRM9TOOL_DATA_DIR`` overrides the platform default)."""
-    override = os.environ.get("PRM9TOOL_DATA_DIR")
-    if override:
-        return Path(override)
-    if sys.platform.startswith("win"):
-        base = os.environ.get("LOCALAPPDATA") or str(Path.home() / "AppData" / "Local")
-        return Path(base) / "prm9tool"
-    base = os.environ.get("XDG_DATA_HOME") or str(Path.home() / ".local" / "share")
-    return Path(base) / "prm9tool"
 
 
 def backup_dir(serial: int) -> Path:

@@ -1,6 +1,6 @@
 """What the views need of the valve connection, as typing protocols (model layer, QtCore only).
 
-The views get the connection injected (``prm9tool.connection.ValveConnection`` in the program,
+The views get the connection injected (``prm9tool.online.connection.ValveConnection`` in the program,
 small fakes in the tests) and must not import the device layer. These protocols name exactly
 the signals and methods each view uses, so mypy checks the views against them and checks that
 ``ValveConnection`` provides them (see the ``TYPE_CHECKING`` block at the end). Signals are
@@ -90,7 +90,7 @@ class ScopeConnection(LinkState, Protocol):
 
 
 if TYPE_CHECKING:  # mypy proves that the real connection fits every protocol above
-    from prm9tool.connection import ValveConnection
+    from prm9tool.online.connection import ValveConnection
 
     def _conforms(connection: ValveConnection) -> None:
         diagram: DiagramConnection = connection

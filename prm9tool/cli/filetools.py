@@ -8,13 +8,14 @@ summary and usage errors on standard error.
 from __future__ import annotations
 
 import argparse
+import os
 import sys
 from pathlib import Path
 
-from prm9tool.cli import ExitCode
-from prm9tool.errors import FileFormatError, FileProblem, TypeKeyError
-from prm9tool.prmfile import PrmContents, check_file, write_file
-from prm9tool.typekey import TypeKey
+from prm9tool.catalogue.typekey import TypeKey
+from prm9tool.errors import ExitCode, FileFormatError, FileProblem, Prm9Error, TypeKeyError
+from prm9tool.files import eds
+from prm9tool.files.prmfile import PrmContents, check_file, write_file
 
 
 def run(args: argparse.Namespace) -> int:
@@ -78,3 +79,33 @@ def _count(number: int, noun: str) -> str:
 def _usage(message: str) -> int:
     print(f"prm9tool: error: {message}", file=sys.stderr)
     return ExitCode.USAGE
+
+
+def export_eds_command(args: argparse.Namespace) -> int:
+    """``prm9tool --export-eds TYPEKEY [-o FILE.eds]``; returns the exit code."""
+    try:
+        text = eds.export_eds(args.export_eds)
+    except Prm9Error as exc:
+        sys.stderr.write(f"prm9tool: {exc}\n")
+        return ExitCode.USAGE
+    if not args.output:
+        sys.stdout.write(text)
+        return ExitCode.OK
+    path = Path(args.output)
+    try:
+        _write_atomically(path, text)
+    except OSError as exc:
+        sys.stderr.write(f"prm9tool: cannot write {path}: {exc.strerror or exc}\n")
+        return ExitCode.USAGE
+    return ExitCode.OK
+
+
+def _write_atomically(path: Path, text: str) -> None:
+    temporary = path.with_name(path.name + ".tmp")
+    try:
+        with open(temporary, "w", encoding="ascii", newline="\r\n") as stream:
+            stream.write(text)
+        os.replace(temporary, path)
+    except BaseException:
+        temporary.unlink(missing_ok=True)
+        raise

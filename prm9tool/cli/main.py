@@ -9,23 +9,12 @@ from __future__ import annotations
 import argparse
 import sys
 from collections.abc import Sequence
-from enum import IntEnum
 from typing import TYPE_CHECKING
+
+from prm9tool.errors import ExitCode
 
 if TYPE_CHECKING:
     from prm9tool.errors import TypeKeyError
-
-
-class ExitCode(IntEnum):
-    """Documented exit codes (``--help``, README "Headless production mode", docs/batch.md)."""
-
-    OK = 0
-    VERIFY_FAILED = 1
-    USAGE = 2
-    INVALID_FILE = 3
-    NO_DEVICE = 4
-    TYPE_MISMATCH = 5
-    COMMUNICATION = 6
 
 
 EXIT_CODE_TEXT = {
@@ -199,15 +188,15 @@ def main(argv: Sequence[str] | None = None) -> int:
         return ExitCode.OK
     spools_problem = _load_user_spools()
     if args.new is not None or args.check is not None:
-        from prm9tool import prmcli
+        from prm9tool.cli import filetools as prmcli
 
         return prmcli.run(args)
     if args.export_eds is not None:
-        from prm9tool import eds
+        from prm9tool.cli import filetools as prmcli
 
-        return eds.run(args)
+        return prmcli.export_eds_command(args)
     if args.list_devices or args.batch is not None:
-        from prm9tool.batch import run as run_batch
+        from prm9tool.cli.batch import run as run_batch
 
         return run_batch(args)
     from prm9tool.app import run as run_app
@@ -222,9 +211,9 @@ def _load_user_spools() -> TypeKeyError | None:
     left out: type keys with the spools the program ships keep working, and one with a
     missing spool says which spools are known.
     """
-    from prm9tool.backup import user_data_dir
+    from prm9tool.catalogue.typekey import load_user_spools
     from prm9tool.errors import TypeKeyError
-    from prm9tool.typekey import load_user_spools
+    from prm9tool.paths import user_data_dir
 
     try:
         load_user_spools(user_data_dir())

@@ -24,15 +24,15 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import TYPE_CHECKING
 
-from prm9tool.atomicfile import atomic_write
 from prm9tool.catalogue import CATALOGUE, Parameter
+from prm9tool.catalogue.typekey import TypeKey
 from prm9tool.errors import FileFormatError, FileProblem
+from prm9tool.files.atomicfile import atomic_write
+from prm9tool.files.prmcheck import FORMAT_NAME, FORMAT_VERSION, Entry, Header, check_entries
 from prm9tool.messages import QT_TRANSLATE_NOOP, Message
-from prm9tool.prmcheck import FORMAT_NAME, FORMAT_VERSION, Entry, Header, check_entries
-from prm9tool.typekey import TypeKey
 
 if TYPE_CHECKING:
-    from prm9tool.document import ParameterDocument
+    from prm9tool.model.document import ParameterDocument
 
 MAX_FILE_SIZE = 1 << 20  # a full file is about 4 kB; anything near 1 MiB is not a *.prm file
 BANNER = (
@@ -342,7 +342,7 @@ def write_file(
 # --- documents --------------------------------------------------------------------------------
 def document_from(contents: PrmContents, path: Path | None = None) -> ParameterDocument:
     """A new, unmodified document holding ``contents`` (``path``: where it was read from)."""
-    from prm9tool.document import ParameterDocument
+    from prm9tool.model.document import ParameterDocument
 
     doc = ParameterDocument(contents.type_key)
     doc.set_values(contents.values, "Open file", validate=False)

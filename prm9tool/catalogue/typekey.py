@@ -21,9 +21,9 @@ from enum import StrEnum
 from pathlib import Path
 from typing import NoReturn
 
+from prm9tool.catalogue.variant import Coils, Config, Variant
 from prm9tool.errors import TypeKeyError
 from prm9tool.messages import QT_TRANSLATE_NOOP, Arg, Message, Template
-from prm9tool.variant import Coils, Config, Variant
 
 FLOWS: dict[str, tuple[str, ...]] = {"06": ("05", "08", "15", "30"), "10": ("30", "60")}
 SUPPLIES = ("24",)
@@ -73,7 +73,7 @@ USER_SPOOLS_FILE = "spools.json"  # in the user data dir: the user's own spool c
 def load_user_spools(data_dir: Path) -> list[str]:
     """Add the spool codes of ``<data_dir>/spools.json`` if that file exists; the codes added.
 
-    The program calls it at start (``prm9tool.cli``), with the user data dir
+    The program calls it at start (``prm9tool.cli.main``), with the user data dir
     (``PRM9TOOL_DATA_DIR`` overrides it). Raises TypeKeyError like :func:`load_extra_spools`.
     """
     path = data_dir / USER_SPOOLS_FILE

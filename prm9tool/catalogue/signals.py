@@ -11,7 +11,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 from prm9tool.catalogue.schema import EVERY_VARIANT, Applies, Texts
-from prm9tool.variant import Coils, Config, Variant
+from prm9tool.catalogue.variant import Coils, Config, Variant
 
 PERCENT = 100.0 / 16384.0
 T = Texts

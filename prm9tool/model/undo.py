@@ -5,7 +5,7 @@ from __future__ import annotations
 from PySide6.QtCore import QObject
 from PySide6.QtGui import QUndoCommand, QUndoStack
 
-from prm9tool.document import Edit, ParameterDocument
+from prm9tool.model.document import Edit, ParameterDocument
 from prm9tool.translate import translated
 
 

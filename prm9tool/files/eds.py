@@ -9,22 +9,19 @@ describe the same objects.
 
 from __future__ import annotations
 
-import argparse
-import os
-import sys
 import unicodedata
 from collections import defaultdict
 from collections.abc import Iterable
 from dataclasses import dataclass
 from datetime import datetime
 from enum import IntEnum
-from pathlib import Path
 
 from prm9tool import __version__
 from prm9tool.catalogue import CAPPED_BY, CATALOGUE, DataType, ObjAccess, Parameter
-from prm9tool.errors import Prm9Error, TypeKeyError
-from prm9tool.typekey import TypeKey
-from prm9tool.variant import ALL_VARIANTS, Config, Variant
+from prm9tool.catalogue.pdo import mapping_for_control_mode
+from prm9tool.catalogue.typekey import TypeKey
+from prm9tool.catalogue.variant import ALL_VARIANTS, Config, Variant
+from prm9tool.errors import TypeKeyError
 
 BIT_RATES_KBIT = (10, 20, 50, 125, 250, 500, 800, 1000)
 UNSUPPORTED_BIT_RATES_KBIT = frozenset({10})  # manual table 7-1
@@ -71,14 +68,6 @@ def od_objects(variant: Variant) -> list[OdObject]:
         kind = _kind(index, entries)
         objects.append(OdObject(index, _object_name(entries, kind), kind, entries))
     return objects
-
-
-def mapping_for_control_mode(param: Parameter, control_mode: int) -> int:
-    """A PDO mapping entry's value in ``control_mode`` (table 7-13: entry 2 follows 0x6043)."""
-    if control_mode == 4 and param.default_e04 is not None:
-        return param.default_e04
-    assert isinstance(param.default, int)
-    return param.default
 
 
 def raw_limits(param: Parameter, variant: Variant) -> tuple[int, int]:
@@ -363,36 +352,3 @@ def _md_range(p: Parameter) -> str:
         high = raw_limits(p, Variant(Config.E04, canopen=True))[1]
         return f"{p.raw_min} … {high} ({CAPPED_BY[p.mnemonic]})"
     return f"{p.raw_min} … {p.raw_max}"
-
-
-# --- command line ------------------------------------------------------------------------------
-def run(args: argparse.Namespace) -> int:
-    """``prm9tool --export-eds TYPEKEY [-o FILE.eds]``; returns the exit code."""
-    from prm9tool.cli import ExitCode
-
-    try:
-        text = export_eds(args.export_eds)
-    except Prm9Error as exc:
-        sys.stderr.write(f"prm9tool: {exc}\n")
-        return ExitCode.USAGE
-    if not args.output:
-        sys.stdout.write(text)
-        return ExitCode.OK
-    path = Path(args.output)
-    try:
-        _write_atomically(path, text)
-    except OSError as exc:
-        sys.stderr.write(f"prm9tool: cannot write {path}: {exc.strerror or exc}\n")
-        return ExitCode.USAGE
-    return ExitCode.OK
-
-
-def _write_atomically(path: Path, text: str) -> None:
-    temporary = path.with_name(path.name + ".tmp")
-    try:
-        with open(temporary, "w", encoding="ascii", newline="\r\n") as stream:
-            stream.write(text)
-        os.replace(temporary, path)
-    except BaseException:
-        temporary.unlink(missing_ok=True)
-        raise

@@ -14,10 +14,10 @@ from pathlib import Path
 from PySide6.QtCore import QObject, Signal
 
 from prm9tool.catalogue import CATALOGUE, Parameter, Problem, variant_label
+from prm9tool.catalogue.typekey import TypeKey
+from prm9tool.catalogue.variant import Variant
 from prm9tool.errors import ValueRangeError
 from prm9tool.messages import QT_TRANSLATE_NOOP, Message
-from prm9tool.typekey import TypeKey
-from prm9tool.variant import Variant
 
 Raw = int | str
 

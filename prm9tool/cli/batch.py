@@ -13,9 +13,14 @@ from collections.abc import Mapping
 from concurrent.futures import ThreadPoolExecutor
 from pathlib import Path
 
-from prm9tool.backup import ensure_backup, existing_backups
-from prm9tool.batch_report import ProgressPrinter, Stopwatch, ValveRecord, overall, write_report
-from prm9tool.cli import ExitCode
+from prm9tool.catalogue.typekey import TypeKey
+from prm9tool.cli.batch_report import (
+    ProgressPrinter,
+    Stopwatch,
+    ValveRecord,
+    overall,
+    write_report,
+)
 from prm9tool.device.factory import (
     DeviceEntry,
     emulator_entries,
@@ -25,9 +30,9 @@ from prm9tool.device.factory import (
     usb_unavailable_reason,
 )
 from prm9tool.device.session import ValveSession, reload_outcome
-from prm9tool.errors import CommunicationError, FileFormatError, Prm9Error, TypeKeyError
-from prm9tool.prmfile import PrmContents, read_file, write_file
-from prm9tool.typekey import TypeKey
+from prm9tool.errors import CommunicationError, ExitCode, FileFormatError, Prm9Error, TypeKeyError
+from prm9tool.files.backup import ensure_backup, existing_backups
+from prm9tool.files.prmfile import PrmContents, read_file, write_file
 
 
 class BatchError(Exception):

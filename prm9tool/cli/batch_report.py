@@ -15,8 +15,8 @@ from pathlib import Path
 from typing import Any
 
 from prm9tool import __version__
-from prm9tool.atomicfile import atomic_write
-from prm9tool.cli import ExitCode
+from prm9tool.errors import ExitCode
+from prm9tool.files.atomicfile import atomic_write
 
 SCHEMA = 1
 # Outcome of one valve -> exit code; the run exits with the most serious one.

@@ -13,8 +13,8 @@ from contextlib import contextmanager
 
 from PySide6.QtCore import QObject
 
-from prm9tool.connection import ValveConnection
-from prm9tool.document import ParameterDocument, Raw
+from prm9tool.model.document import ParameterDocument, Raw
+from prm9tool.online.connection import ValveConnection
 
 
 class ValveSync(QObject):

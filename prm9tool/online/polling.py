@@ -9,10 +9,10 @@ from dataclasses import dataclass, field
 from typing import TYPE_CHECKING, Any
 
 from prm9tool.catalogue import CATALOGUE
+from prm9tool.catalogue.signals import MAX_CHANNELS, signals_for
+from prm9tool.catalogue.typekey import TypeKey
+from prm9tool.catalogue.variant import Variant
 from prm9tool.errors import Prm9Error, SdoAbortError
-from prm9tool.signals import MAX_CHANNELS, signals_for
-from prm9tool.typekey import TypeKey
-from prm9tool.variant import Variant
 
 if TYPE_CHECKING:
     import numpy as np

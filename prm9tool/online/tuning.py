@@ -23,11 +23,11 @@ import numpy as np
 from PySide6.QtCore import QCoreApplication, QObject, Signal
 
 from prm9tool.catalogue import CATALOGUE
-from prm9tool.document import ParameterDocument
+from prm9tool.catalogue.signals import BY_KEY
+from prm9tool.catalogue.typekey import TypeKey
 from prm9tool.errors import Prm9Error
+from prm9tool.model.document import ParameterDocument
 from prm9tool.scope.measure import step_figures
-from prm9tool.signals import BY_KEY
-from prm9tool.typekey import TypeKey
 
 if TYPE_CHECKING:
     from prm9tool.device.emulator import EmulatedValve

@@ -1,0 +1,1 @@
+"""The command line: argument parsing, offline file tools, headless ``--batch`` and its report."""
