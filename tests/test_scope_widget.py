@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+import math
+
 import numpy as np
 import pyqtgraph as pg
 import pytest
@@ -443,8 +445,32 @@ def test_step_figures_can_be_limited_to_the_cursor_span(scope, conn):
     assert panel.figures["error"].text() == "0.0 %"
     assert "between cursors" in panel.region.text()
     panel.between_cursors.setChecked(False)
-    assert "visible window" in panel.region.text()
-    assert panel.figures["error"].text() != "0.0 %"  # the whole window ends after the second step
+    assert panel.region.text() == "Measured on step 1 of 2 in the visible window."
+    assert panel.figures["rise"].text() == "21.97 ms"  # the first step, up to the second
+    scope.plot.set_cursor_times(0.05, 0.11)  # B 10 ms after the step: the response is cut
+    panel.between_cursors.setChecked(True)
+    assert panel.figures["overshoot"].text() == "—"
+    assert panel.region.text().startswith(
+        "Window too short: in the samples between cursors A and B the response has not come"
+    )
+
+
+def test_a_square_wave_in_view_is_measured_not_called_no_response(scope, conn):
+    def demand(t):  # a 0.2 s square wave: five edges in the window
+        return np.where(np.mod(np.round(t * 5000) - 250, 1000) < 500, 8192, 0) * (t >= 0.05)
+
+    def response(t):
+        y, a = np.zeros_like(t), math.exp(-1 / 50)  # τ = 10 ms at 5 kHz
+        ref = demand(t)
+        for k in range(1, len(t)):
+            y[k] = a * y[k - 1] + (1 - a) * ref[k - 1]
+        return y
+
+    _step_captured(scope, conn, response, demand)
+    panel = scope.step_panel
+    assert panel.region.text() == "Measured on step 1 of 5 in the visible window."
+    assert panel.figures["rise"].text() == "21.97 ms"
+    assert panel.figures["overshoot"].text() == "0.0 %"
 
 
 def test_a_refused_stream_start_stops_and_says_why(qtbot, doc):
