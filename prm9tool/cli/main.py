@@ -87,7 +87,12 @@ def build_parser() -> argparse.ArgumentParser:
     )
     files.add_argument("--check", metavar="FILE.prm", help="validate a *.prm file")
     files.add_argument("--export-eds", metavar="TYPEKEY", help="write a CiA 306 EDS for TYPEKEY")
-    files.add_argument("-o", "--output", metavar="FILE", help="output file")
+    files.add_argument(
+        "-o",
+        "--output",
+        metavar="FILE",
+        help="output file of --new or --export-eds; - is standard output",
+    )
     batch = parser.add_argument_group("headless production mode (no GUI)")
     batch.add_argument("--list-devices", action="store_true", help="list valves and exit")
     batch.add_argument(

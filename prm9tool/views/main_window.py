@@ -193,6 +193,11 @@ class MainWindow(QMainWindow):
         self.undo.stack.canRedoChanged.connect(self._update_actions)
         self.access.level_changed.connect(self._update_actions)
         c.online_changed.connect(s.set_online)
+        self.sync.active_changed.connect(s.set_synchronised)
+        self.access.level_changed.connect(
+            lambda _l: s.set_expert(self.access.level is Access.EXPERT)
+        )
+        s.set_expert(self.access.level is Access.EXPERT)
         c.online_changed.connect(self.commands.set_online)
         c.online_changed.connect(self._on_connection_online_changed)
         c.device_changed.connect(lambda info: s.set_firmware(str(getattr(info, "firmware", ""))))
