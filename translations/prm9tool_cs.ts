@@ -758,6 +758,10 @@ Dokud soubor neopravíte, zná prm9tool pouze dodaná šoupátka.</translation>
             <translation>„{0}“ již neexistuje; byl odstraněn ze seznamu.</translation>
         </message>
         <message>
+            <source>Opening {0} cancelled</source>
+            <translation>Otevírání {0} zrušeno</translation>
+        </message>
+        <message>
             <source>Cannot open “{0}”</source>
             <translation>„{0}“ nelze otevřít</translation>
         </message>
@@ -776,6 +780,14 @@ Dokud soubor neopravíte, zná prm9tool pouze dodaná šoupátka.</translation>
                 <numerusform>„{0}“ byl otevřen; nalezena %n varování.</numerusform>
                 <numerusform>„{0}“ byl otevřen; nalezeno %n varování.</numerusform>
             </translation>
+        </message>
+        <message>
+            <source>Reading “{0}”…</source>
+            <translation>Načítá se „{0}“…</translation>
+        </message>
+        <message>
+            <source>Cancel</source>
+            <translation>Zrušit</translation>
         </message>
         <message>
             <source>Save parameter file</source>
@@ -799,6 +811,14 @@ Dokud soubor neopravíte, zná prm9tool pouze dodaná šoupátka.</translation>
                 <numerusform>Další %n problém v podrobnostech.</numerusform>
                 <numerusform>Další %n problémy v podrobnostech.</numerusform>
                 <numerusform>Dalších %n problémů v podrobnostech.</numerusform>
+            </translation>
+        </message>
+        <message numerus="yes">
+            <source>… and %n more problem(s).</source>
+            <translation>
+                <numerusform>… a %n další problém.</numerusform>
+                <numerusform>… a %n další problémy.</numerusform>
+                <numerusform>… a dalších %n problémů.</numerusform>
             </translation>
         </message>
     </context>

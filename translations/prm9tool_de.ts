@@ -758,6 +758,10 @@ Bis die Datei korrigiert ist, kennt prm9tool nur die mitgelieferten Schieber.</t
             <translation>„{0}“ existiert nicht mehr; die Datei wurde aus der Liste entfernt.</translation>
         </message>
         <message>
+            <source>Opening {0} cancelled</source>
+            <translation>Öffnen von {0} abgebrochen</translation>
+        </message>
+        <message>
             <source>Cannot open “{0}”</source>
             <translation>„{0}“ kann nicht geöffnet werden</translation>
         </message>
@@ -775,6 +779,14 @@ Bis die Datei korrigiert ist, kennt prm9tool nur die mitgelieferten Schieber.</t
                 <numerusform>„{0}“ wurde geöffnet; %n Warnung gefunden.</numerusform>
                 <numerusform>„{0}“ wurde geöffnet; %n Warnungen gefunden.</numerusform>
             </translation>
+        </message>
+        <message>
+            <source>Reading “{0}”…</source>
+            <translation>„{0}“ wird gelesen…</translation>
+        </message>
+        <message>
+            <source>Cancel</source>
+            <translation>Abbrechen</translation>
         </message>
         <message>
             <source>Save parameter file</source>
@@ -797,6 +809,13 @@ Bis die Datei korrigiert ist, kennt prm9tool nur die mitgelieferten Schieber.</t
             <translation>
                 <numerusform>%n weiteres Problem in den Details.</numerusform>
                 <numerusform>%n weitere Probleme in den Details.</numerusform>
+            </translation>
+        </message>
+        <message numerus="yes">
+            <source>… and %n more problem(s).</source>
+            <translation>
+                <numerusform>… und %n weiteres Problem.</numerusform>
+                <numerusform>… und %n weitere Probleme.</numerusform>
             </translation>
         </message>
     </context>

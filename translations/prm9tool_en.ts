@@ -11,6 +11,13 @@
             </translation>
         </message>
         <message numerus="yes">
+            <source>… and %n more problem(s).</source>
+            <translation>
+                <numerusform>… and %n more problem.</numerusform>
+                <numerusform>… and %n more problems.</numerusform>
+            </translation>
+        </message>
+        <message numerus="yes">
             <source>%n more problem(s) in the details.</source>
             <translation>
                 <numerusform>%n more problem in the details.</numerusform>
