@@ -2480,8 +2480,24 @@ Ujistěte se, že pohyb stroje je bezpečný. Spustit generátor?</translation>
             <translation>Dokument je pro ventil {0}, připojený ventil je {1}. Zvolte odpovídající typ ventilu nebo nejprve stáhněte parametry z ventilu.</translation>
         </message>
         <message>
+            <source>Nothing was sent to the valve</source>
+            <translation>Do ventilu nebylo nic odesláno</translation>
+        </message>
+        <message>
             <source>Uploading the parameters to the valve…</source>
             <translation>Načítání parametrů do ventilu…</translation>
+        </message>
+        <message>
+            <source>Expert values at Basic level</source>
+            <translation>Expertní hodnoty na základní úrovni</translation>
+        </message>
+        <message numerus="yes">
+            <source>The document changes %n Expert-level value(s) of the valve ({0}), which the Basic access level cannot edit (controllers, linearizations, monitoring). Send them anyway?</source>
+            <translation>
+                <numerusform>Dokument mění %n hodnotu úrovně Expert ve ventilu ({0}), kterou základní úroveň oprávnění nemůže upravovat (regulátory, linearizace, monitorování). Přesto odeslat?</numerusform>
+                <numerusform>Dokument mění %n hodnoty úrovně Expert ve ventilu ({0}), které základní úroveň oprávnění nemůže upravovat (regulátory, linearizace, monitorování). Přesto odeslat?</numerusform>
+                <numerusform>Dokument mění %n hodnot úrovně Expert ve ventilu ({0}), které základní úroveň oprávnění nemůže upravovat (regulátory, linearizace, monitorování). Přesto odeslat?</numerusform>
+            </translation>
         </message>
         <message>
             <source>Downloading the parameters from the valve…</source>

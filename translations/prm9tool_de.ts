@@ -2475,8 +2475,23 @@ Stellen Sie sicher, dass die Maschine sich gefahrlos bewegen kann. Generator sta
             <translation>Das Dokument ist für ein Ventil {0}, das angeschlossene Ventil ist ein Ventil {1}. Wählen Sie den passenden Ventiltyp oder laden Sie zuerst die Parameter des Ventils herunter.</translation>
         </message>
         <message>
+            <source>Nothing was sent to the valve</source>
+            <translation>Es wurde nichts an das Ventil gesendet</translation>
+        </message>
+        <message>
             <source>Uploading the parameters to the valve…</source>
             <translation>Parameter werden in das Ventil hochgeladen…</translation>
+        </message>
+        <message>
+            <source>Expert values at Basic level</source>
+            <translation>Expertenwerte in der Stufe Basis</translation>
+        </message>
+        <message numerus="yes">
+            <source>The document changes %n Expert-level value(s) of the valve ({0}), which the Basic access level cannot edit (controllers, linearizations, monitoring). Send them anyway?</source>
+            <translation>
+                <numerusform>Das Dokument ändert %n Wert der Stufe Experte im Ventil ({0}), den die Zugriffsstufe Basis nicht bearbeiten kann (Regler, Linearisierungen, Überwachung). Trotzdem senden?</numerusform>
+                <numerusform>Das Dokument ändert %n Werte der Stufe Experte im Ventil ({0}), die die Zugriffsstufe Basis nicht bearbeiten kann (Regler, Linearisierungen, Überwachung). Trotzdem senden?</numerusform>
+            </translation>
         </message>
         <message>
             <source>Downloading the parameters from the valve…</source>

@@ -48,6 +48,13 @@
     <context>
         <name>ValveWorkflow</name>
         <message numerus="yes">
+            <source>The document changes %n Expert-level value(s) of the valve ({0}), which the Basic access level cannot edit (controllers, linearizations, monitoring). Send them anyway?</source>
+            <translation>
+                <numerusform>The document changes %n Expert-level value of the valve ({0}), which the Basic access level cannot edit (controllers, linearizations, monitoring). Send it anyway?</numerusform>
+                <numerusform>The document changes %n Expert-level values of the valve ({0}), which the Basic access level cannot edit (controllers, linearizations, monitoring). Send them anyway?</numerusform>
+            </translation>
+        </message>
+        <message numerus="yes">
             <source>%n parameter(s) written, verified and stored</source>
             <translation>
                 <numerusform>%n parameter written, verified and stored</numerusform>
