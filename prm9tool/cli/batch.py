@@ -55,7 +55,7 @@ def run(args: argparse.Namespace) -> int:
     except BatchError as exc:
         print(f"prm9tool: {exc}", file=sys.stderr)
         code = exc.code
-    if args.report and not args.list_devices and Path(args.report).parent.is_dir():
+    if args.report and not args.list_devices and _report_refusal(args.report) is None:
         try:
             write_report(args.report, mode, args.batch or args.download, code, records)
         except OSError as exc:
@@ -79,14 +79,28 @@ def _check_usage(args: argparse.Namespace) -> None:
         raise BatchError(ExitCode.USAGE, "--batch needs FILE.prm (or --download OUT.prm)")
     if args.download and (args.all or len(args.emulator) > 1):  # --device: checked in select
         raise BatchError(ExitCode.USAGE, "--download saves one valve: select exactly one")
-    if args.report and not Path(args.report).parent.is_dir():
-        folder = Path(args.report).parent
-        raise BatchError(ExitCode.USAGE, f"--report {args.report}: there is no folder {folder}")
+    refusal = _report_refusal(args.report) if args.report else None
+    if refusal is not None:
+        raise BatchError(ExitCode.USAGE, f"--report {args.report}: {refusal}")
     for spec in args.emulator:
         try:
             parse_emulator_spec(spec)
         except TypeKeyError as exc:
             raise BatchError(ExitCode.USAGE, f"--emulator: {exc}") from exc
+
+
+def _report_refusal(path: str) -> str | None:
+    """Why the report cannot go to ``path`` (checked before any valve is touched), or None.
+
+    A symbolic link is refused: writing through it would replace a file the run was never
+    told about (docs/batch.md).
+    """
+    report = Path(path)
+    if not report.parent.is_dir():
+        return f"there is no folder {report.parent}"
+    if report.is_symlink():
+        return "is a symbolic link; give the path of the report itself"
+    return None
 
 
 # --- devices ------------------------------------------------------------------------------------

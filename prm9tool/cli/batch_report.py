@@ -68,7 +68,9 @@ def overall(records: list[ValveRecord]) -> ExitCode:
 def write_report(
     path: str, mode: str, source: str | None, exit_code: int, records: list[ValveRecord]
 ) -> None:
-    """Write the JSON report atomically."""
+    """Write the JSON report atomically; a symbolic link at ``path`` is replaced, never
+    followed (``run`` refuses a link before the run; one that appears meanwhile cannot make
+    the report overwrite another file)."""
     report = {
         "prm9tool": __version__,
         "schema": SCHEMA,
@@ -79,7 +81,7 @@ def write_report(
         "valves": [asdict(r) for r in records],
     }
     text = json.dumps(report, indent=2, ensure_ascii=False) + "\n"
-    atomic_write(Path(path), text.encode("utf-8"), backup=False)
+    atomic_write(Path(path), text.encode("utf-8"), backup=False, follow_symlinks=False)
 
 
 class ProgressPrinter:

@@ -65,7 +65,7 @@ class MainWindow(QMainWindow):
         self.passwords = PasswordStore(settings)
         self.sync = ValveSync(doc, connection, self)
         self.files = FileWorkflow(self, doc, undo, settings)
-        self.valve = ValveWorkflow(self, doc, undo, connection, self.sync, settings)
+        self.valve = ValveWorkflow(self, doc, undo, connection, self.sync, settings, access)
         self.records = RecordActions(self)
         self.commands = MainActions(self)
         self.commands.build_menus(self.menuBar())
