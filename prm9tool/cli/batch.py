@@ -259,8 +259,10 @@ class _UploadJob:
             m: {"expected": want, "actual": got} for m, (want, got) in result.mismatches.items()
         }
         record.result = "ok" if result.stored else "verification-failed"
+        if result.failed_step == "store":
+            record.result = "store-failed"
         if not result.stored:
-            problem = _mismatch_text(result.failed_step, result.mismatches)
+            problem = result.failure or _mismatch_text(result.failed_step, result.mismatches)
             record.error = f"{problem}; {reload_outcome(result.reload_error)}"
 
 
