@@ -22,6 +22,7 @@ from prm9tool.catalogue.typekey import TypeKey
 from prm9tool.cli import batch
 from prm9tool.cli.main import main
 from prm9tool.device import factory
+from prm9tool.device.emulator import EmulatedValve
 from prm9tool.device.session import ValveSession
 from prm9tool.device.transport.emulator import EmulatorTransport, LinkFaults
 from prm9tool.errors import AbortCode, ExitCode, SdoAbortError
@@ -507,3 +508,35 @@ def test_a_refused_store_is_reported_truthfully_and_the_valve_reloaded(tmp_path,
     assert "refused to store the parameters" in record["error"] and "0x08000020" in record["error"]
     assert "reset to its stored ones" in record["error"]
     assert working == {"LIMTA": 2400, "DTAMP": 2458}  # reloaded: the factory set it had stored
+
+
+def test_a_long_firmware_text_is_cut_and_the_upload_goes_on(tmp_path, monkeypatch):
+    source = tuned_file(tmp_path)
+    long_text = "1.0.0-" + "x" * 40
+
+    def open_a_valve_with_a_long_firmware_text(entry):
+        valve = EmulatedValve(entry.type_key, entry.serial, long_text)
+        return ValveSession(EmulatorTransport(valve), entry.device_id)
+
+    monkeypatch.setattr(batch, "_open", open_a_valve_with_a_long_firmware_text)
+    args = ["--batch", str(source), "--emulator", f"{E04}:94"]
+    assert main([*args, "--report", str(tmp_path / "r.json")]) == ExitCode.OK
+    assert report(tmp_path, "r.json")["valves"][0]["firmware"] == long_text[:25]
+
+
+@pytest.mark.parametrize("mode", ["upload", "download"])
+def test_whatever_goes_wrong_the_run_ends_with_its_report_and_exit_6(tmp_path, monkeypatch, mode):
+    source = tuned_file(tmp_path)
+
+    def open_a_valve_that_breaks_the_program(entry):
+        raise ValueError("report of 75 bytes exceeds 64")
+
+    monkeypatch.setattr(batch, "_open", open_a_valve_that_breaks_the_program)
+    command = ["--batch", str(source)] if mode == "upload" else ["--batch", "--download", "o.prm"]
+    args = [*command, "--emulator", f"{E04}:95", "--report", str(tmp_path / "r.json")]
+    assert main(args) == ExitCode.COMMUNICATION
+    written = report(tmp_path, "r.json")
+    assert written["exit_code"] == ExitCode.COMMUNICATION
+    error = written["valves"][0]["error"]
+    assert "unexpected error (ValueError: report of 75 bytes exceeds 64)" in error
+    assert not (tmp_path / "o.prm").exists()
