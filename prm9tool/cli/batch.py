@@ -8,6 +8,7 @@ saves one valve's parameters. Usage, exit codes and report schema: docs/batch.md
 from __future__ import annotations
 
 import argparse
+import logging
 import sys
 from collections.abc import Mapping
 from concurrent.futures import ThreadPoolExecutor
@@ -33,6 +34,8 @@ from prm9tool.device.session import ValveSession, reload_outcome
 from prm9tool.errors import CommunicationError, ExitCode, FileFormatError, Prm9Error, TypeKeyError
 from prm9tool.files.backup import ensure_backup, existing_backups
 from prm9tool.files.prmfile import PrmContents, read_file, write_file
+
+log = logging.getLogger("prm9tool.cli.batch")
 
 
 class BatchError(Exception):
@@ -237,6 +240,9 @@ class _UploadJob:
             _copy_progress(exc, record)
         except Prm9Error as exc:  # a refused read during the backup, an unwritable backup …
             record.result, record.error = "communication-error", str(exc)
+        except Exception as exc:  # whatever the valve answered: the run still ends with a report
+            log.exception("%s: unexpected error", entry.device_id)
+            record.result, record.error = "communication-error", _unexpected(exc)
         clock.finish(record)
         return record
 
@@ -273,9 +279,18 @@ class _UploadJob:
             m: {"expected": want, "actual": got} for m, (want, got) in result.mismatches.items()
         }
         record.result = "ok" if result.stored else "verification-failed"
+        if result.failed_step == "store":
+            record.result = "store-failed"
         if not result.stored:
-            problem = _mismatch_text(result.failed_step, result.mismatches)
+            problem = result.failure or _mismatch_text(result.failed_step, result.mismatches)
             record.error = f"{problem}; {reload_outcome(result.reload_error)}"
+
+
+def _unexpected(exc: Exception) -> str:
+    return (
+        f"unexpected error ({type(exc).__name__}: {exc}); the valve may have answered something "
+        "this prm9tool cannot handle; details on standard error"
+    )
 
 
 def _copy_progress(exc: CommunicationError, record: ValveRecord) -> None:
@@ -325,10 +340,12 @@ def _download(args: argparse.Namespace, records: list[ValveRecord]) -> ExitCode:
         with _open(entry[0]) as session:
             values = session.download(printer.callback(str(record.serial)))
             info = session.info
-    except (CommunicationError, Prm9Error) as exc:
-        record.error = str(exc)
+    except Exception as exc:  # a Prm9Error, or whatever else the valve's answers caused
+        if not isinstance(exc, Prm9Error):
+            log.exception("%s: unexpected error", entry[0].device_id)
+        record.error = str(exc) if isinstance(exc, Prm9Error) else _unexpected(exc)
         clock.finish(record)
-        raise BatchError(ExitCode.COMMUNICATION, f"download failed: {exc}") from exc
+        raise BatchError(ExitCode.COMMUNICATION, f"download failed: {record.error}") from exc
     contents = PrmContents(TypeKey.parse(info.type_key), values, info.serial, info.firmware or None)
     try:
         write_file(contents, args.download)

@@ -25,6 +25,7 @@ RESULTS = {
     "dry-run": ExitCode.OK,
     "downloaded": ExitCode.OK,
     "verification-failed": ExitCode.VERIFY_FAILED,
+    "store-failed": ExitCode.VERIFY_FAILED,  # refused or unconfirmed store: nothing stored
     "type-mismatch": ExitCode.TYPE_MISMATCH,
     "communication-error": ExitCode.COMMUNICATION,
 }

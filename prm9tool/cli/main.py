@@ -19,7 +19,8 @@ if TYPE_CHECKING:
 
 EXIT_CODE_TEXT = {
     ExitCode.OK: "done: every valve uploaded and verified (or listed, downloaded, file valid)",
-    ExitCode.VERIFY_FAILED: "a valve read back differently or refused a value; nothing stored",
+    ExitCode.VERIFY_FAILED: "a valve read back differently, refused a value or the store; "
+    "nothing stored",
     ExitCode.USAGE: "usage error (options, several valves and no selection, ...)",
     ExitCode.INVALID_FILE: "invalid *.prm file (or --download cannot write its file)",
     ExitCode.NO_DEVICE: "no valve found, or none with the --device ID",
