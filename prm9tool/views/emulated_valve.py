@@ -81,7 +81,7 @@ class EmulatedValveMenu(QMenu):
         available = tuple(getattr(state, "faults_available", ()))
         if available != tuple(self.fault_actions):
             self._rebuild(available)
-        present = getattr(state, "faults", frozenset())
+        present: frozenset[str] = frozenset(getattr(state, "faults", ()))
         for name, action in self.fault_actions.items():
             action.setChecked(name in present)
         self.setEnabled(state is not None)
@@ -225,14 +225,14 @@ class EmulatedValveDialog(QDialog):
             box.setValue(float(inputs.get(name, 0.0)))
             box.blockSignals(False)
         has_sensor = bool(getattr(state, "sensor", False))
-        for widget in (self.fields["sensor"], self.labels["sensor"]):
-            widget.setVisible(has_sensor)
+        self.fields["sensor"].setVisible(has_sensor)
+        self.labels["sensor"].setVisible(has_sensor)
         canopen = bool(getattr(state, "canopen", False))
         for position, name in enumerate(self.switches):
             combo = self.switches[name]
             combo.setCurrentIndex(int(getattr(state, "switches", (0, 0))[position]))
-            for widget in (combo, self.labels[name]):
-                widget.setVisible(canopen)
+            combo.setVisible(canopen)
+            self.labels[name].setVisible(canopen)
 
     def _on_field_changed(self, name: str, value: float) -> None:
         self._control.set_input(name, float(value))
