@@ -1074,6 +1074,27 @@ The last action may not have been completed. Save your work under a new name and
         </message>
     </context>
     <context>
+        <name>GeneratorStart</name>
+        <message>
+            <source>Setpoint generator</source>
+            <translation>Generátor žádané hodnoty</translation>
+        </message>
+        <message>
+            <source>The generator will drive the valve's setpoint and the valve will move.
+Make sure the machine is safe to move. Start the generator?</source>
+            <translation>Generátor bude řídit žádanou hodnotu ventilu a ventil se bude pohybovat.
+Ujistěte se, že pohyb stroje je bezpečný. Spustit generátor?</translation>
+        </message>
+        <message>
+            <source>The valve does not follow its setpoint: {0}
+
+Enable it now (NMT start, control word 08h → 09h → 0Bh → 0Fh)?</source>
+            <translation>Ventil nesleduje svou žádanou hodnotu: {0}
+
+Uvolnit ho nyní (NMT start, řídicí slovo 08h → 09h → 0Bh → 0Fh)?</translation>
+        </message>
+    </context>
+    <context>
         <name>HelpWindow</name>
         <message>
             <source>prm9tool help</source>
@@ -1457,11 +1478,11 @@ The last action may not have been completed. Save your work under a new name and
         </message>
         <message>
             <source>Expert</source>
-            <translation type="unfinished">Expertní</translation>
+            <translation>Expertní</translation>
         </message>
         <message>
             <source>Basic</source>
-            <translation type="unfinished">Základní</translation>
+            <translation>Základní</translation>
         </message>
         <message>
             <source>Level: {0}</source>
@@ -2100,24 +2121,6 @@ The last action may not have been completed. Save your work under a new name and
         <message>
             <source>The oscilloscope needs a connected valve: go online (Communication → Online).</source>
             <translation>Osciloskop potřebuje připojený ventil: přejděte do režimu online (Komunikace → Režim online).</translation>
-        </message>
-        <message>
-            <source>Setpoint generator</source>
-            <translation>Generátor žádané hodnoty</translation>
-        </message>
-        <message>
-            <source>The generator will drive the valve's setpoint and the valve will move.
-Make sure the machine is safe to move. Start the generator?</source>
-            <translation>Generátor bude řídit žádanou hodnotu ventilu a ventil se bude pohybovat.
-Ujistěte se, že pohyb stroje je bezpečný. Spustit generátor?</translation>
-        </message>
-        <message>
-            <source>The valve does not follow its setpoint: {0}
-
-Enable it now (NMT start, control word 08h → 09h → 0Bh → 0Fh)?</source>
-            <translation>Ventil nesleduje svou žádanou hodnotu: {0}
-
-Uvolnit ho nyní (NMT start, řídicí slovo 08h → 09h → 0Bh → 0Fh)?</translation>
         </message>
         <message>
             <source>The link dropped: the setpoint generator has stopped.</source>

@@ -1071,6 +1071,27 @@ The last action may not have been completed. Save your work under a new name and
         </message>
     </context>
     <context>
+        <name>GeneratorStart</name>
+        <message>
+            <source>Setpoint generator</source>
+            <translation>Sollwertgenerator</translation>
+        </message>
+        <message>
+            <source>The generator will drive the valve's setpoint and the valve will move.
+Make sure the machine is safe to move. Start the generator?</source>
+            <translation>Der Generator steuert den Sollwert des Ventils und das Ventil wird sich bewegen.
+Stellen Sie sicher, dass die Maschine sich gefahrlos bewegen kann. Generator starten?</translation>
+        </message>
+        <message>
+            <source>The valve does not follow its setpoint: {0}
+
+Enable it now (NMT start, control word 08h → 09h → 0Bh → 0Fh)?</source>
+            <translation>Das Ventil folgt seinem Sollwert nicht: {0}
+
+Jetzt freigeben (NMT Start, Steuerwort 08h → 09h → 0Bh → 0Fh)?</translation>
+        </message>
+    </context>
+    <context>
         <name>HelpWindow</name>
         <message>
             <source>prm9tool help</source>
@@ -1454,11 +1475,11 @@ The last action may not have been completed. Save your work under a new name and
         </message>
         <message>
             <source>Expert</source>
-            <translation type="unfinished">Experte</translation>
+            <translation>Experte</translation>
         </message>
         <message>
             <source>Basic</source>
-            <translation type="unfinished">Basis</translation>
+            <translation>Basis</translation>
         </message>
         <message>
             <source>Level: {0}</source>
@@ -2095,24 +2116,6 @@ The last action may not have been completed. Save your work under a new name and
         <message>
             <source>The oscilloscope needs a connected valve: go online (Communication → Online).</source>
             <translation>Das Oszilloskop braucht ein verbundenes Ventil: wechseln Sie online (Kommunikation → Online).</translation>
-        </message>
-        <message>
-            <source>Setpoint generator</source>
-            <translation>Sollwertgenerator</translation>
-        </message>
-        <message>
-            <source>The generator will drive the valve's setpoint and the valve will move.
-Make sure the machine is safe to move. Start the generator?</source>
-            <translation>Der Generator steuert den Sollwert des Ventils und das Ventil wird sich bewegen.
-Stellen Sie sicher, dass die Maschine sich gefahrlos bewegen kann. Generator starten?</translation>
-        </message>
-        <message>
-            <source>The valve does not follow its setpoint: {0}
-
-Enable it now (NMT start, control word 08h → 09h → 0Bh → 0Fh)?</source>
-            <translation>Das Ventil folgt seinem Sollwert nicht: {0}
-
-Jetzt freigeben (NMT Start, Steuerwort 08h → 09h → 0Bh → 0Fh)?</translation>
         </message>
         <message>
             <source>The link dropped: the setpoint generator has stopped.</source>

@@ -15,6 +15,9 @@ from typing import TYPE_CHECKING, Protocol
 
 from PySide6.QtCore import SignalInstance
 
+if TYPE_CHECKING:
+    from prm9tool.scope import GeneratorSettings
+
 
 class LinkState(Protocol):
     """Whether a valve is online, and the signal announcing a change."""
@@ -95,6 +98,12 @@ class ScopeConnection(LinkState, Protocol):
 
     def write(self, mnemonic: str, raw: int | str) -> None:
         """Write one value to the valve (asynchronous)."""
+
+    def start_generator(self, settings: GeneratorSettings) -> None:
+        """Run a setpoint waveform on the valve's override, on the valve's time base."""
+
+    def stop_generator(self) -> None:
+        """End the waveform and switch the override off."""
 
 
 if TYPE_CHECKING:  # mypy proves that the real connection fits every protocol above
