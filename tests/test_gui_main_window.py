@@ -133,6 +133,39 @@ def test_password_dialog_accepts_only_the_right_password(window):
     assert dialog.result() == Accepted
 
 
+def _clipped_texts(dialog):
+    from PySide6.QtWidgets import QLabel
+
+    return [
+        label.text()
+        for label in dialog.findChildren(QLabel)
+        if label.isVisible() and label.wordWrap()
+        if label.height() < label.heightForWidth(label.width())
+    ]
+
+
+@pytest.mark.parametrize("language", ["en", "de", "cs"])
+def test_a_wrong_password_is_explained_in_full(qtbot, window, language):
+    from prm9tool import i18n
+
+    i18n.set_language(language)
+    try:
+        dialog = PasswordDialog(window.passwords, window)
+        dialog.show()
+        qtbot.waitExposed(dialog)
+        assert _clipped_texts(dialog) == []
+        dialog.password.setText("guess")
+        dialog._on_accepted()
+        assert dialog.error_label.isVisible() and _clipped_texts(dialog) == []
+        change = ChangePasswordDialog(window.passwords, window)
+        change.show()
+        change.old.setText("guess")
+        change._on_accepted()
+        assert change.error_label.isVisible() and _clipped_texts(change) == []
+    finally:
+        i18n.set_language("en")
+
+
 def test_password_is_changed_and_stored_only_as_a_salted_hash(window):
     dialog = ChangePasswordDialog(window.passwords, window)
     dialog.old.setText(DEFAULT_PASSWORD)
