@@ -34,7 +34,7 @@ def test_the_missing_libraries_are_named_by_their_package():
             {"DISPLAY": ":0", "WAYLAND_DISPLAY": "wayland-0", "XDG_SESSION_TYPE": "wayland"},
             "linux",
             False,
-        ),  # fmt: skip
+        ),
         ({}, "linux", False),  # no screen at all: Qt says so itself
         ({"DISPLAY": ":0"}, "win32", False),
     ],
