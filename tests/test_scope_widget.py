@@ -98,6 +98,22 @@ def test_preselect_with_three_active_replaces_the_third(scope):
     assert "replaces" in scope.channels.message.text()
 
 
+def test_the_three_points_notice_goes_when_it_no_longer_applies(qtbot, scope):
+    for row in range(4):
+        _check(scope, row)
+    message = scope.channels.message
+    assert message.isVisibleTo(scope)
+    scope.channels.set_selected(["demand"])  # one point now: the refusal is void
+    assert not message.isVisibleTo(scope) and message.text() == ""
+    for key in ("setpoint_raw", "position_setpoint", "position_actual"):
+        scope.preselect(key)
+    assert "replaces" in message.text()
+    scope.channels._message_timer.setInterval(20)  # shortened here: the notice is shown a while
+    scope.channels._message_timer.start()
+    qtbot.waitUntil(lambda: not message.isVisibleTo(scope), timeout=5000)
+    assert scope.channels.selected() == ["demand", "setpoint_raw", "position_actual"]
+
+
 def test_offline_the_scope_cannot_start_and_says_why(qtbot, doc):
     conn = FakeConnection(online=False)
     widget = ScopeWidget(conn, doc)
