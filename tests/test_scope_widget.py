@@ -291,6 +291,20 @@ def test_csv_export_of_the_whole_recording_and_of_the_visible_window(scope, conn
     assert part.read_text(encoding="utf-8").splitlines()[1].startswith("0.05")
 
 
+def test_csv_of_the_whole_recording_goes_on_past_a_pause(scope, conn, tmp_path):
+    scope.preselect("demand")
+    scope.start()
+    conn.samples_received.emit(np.arange(1000).reshape(-1, 1))
+    scope._redraw()
+    scope.controls.pause.click()  # the picture holds; the recording goes on
+    assert scope.display.frozen
+    conn.samples_received.emit(np.arange(1000, 1500).reshape(-1, 1))
+    scope._redraw()
+    whole = tmp_path / "whole.csv"
+    assert scope.export_csv(whole, whole=True) == 1500
+    assert len(scope.display.data()[0]) == 1000  # the held picture is unchanged
+
+
 def test_png_export_writes_an_image(scope, conn, tmp_path):
     scope.preselect("demand")
     scope.start()
