@@ -237,10 +237,19 @@ def test_help_about_and_homepage(window, answers, monkeypatch):
     window.commands["about"].trigger()
     assert "prm9tool" in answers.asked[-1] and "PySide6" in answers.asked[-1]
     opened = []
-    monkeypatch.setattr(main_window_module, "open_homepage", lambda: opened.append(1))
-    window._connect_actions()
+    monkeypatch.setattr(main_window_module, "open_homepage", lambda parent: opened.append(parent))
     window.commands["homepage"].trigger()
-    assert opened
+    assert opened == [window]
+
+
+def test_home_page_without_a_browser_says_so(window, answers, monkeypatch):
+    from PySide6.QtGui import QDesktopServices
+
+    from prm9tool.views.help_dialog import HOMEPAGE
+
+    monkeypatch.setattr(QDesktopServices, "openUrl", lambda _url: False)
+    window.commands["homepage"].trigger()
+    assert "No web browser" in answers.informed[-1] and HOMEPAGE in answers.informed[-1]
 
 
 def test_window_geometry_and_view_are_remembered(qtbot, tmp_path, answers):
@@ -276,7 +285,7 @@ def test_hid_dialog_lists_emulated_valves_and_remembers_the_choice(qtbot, window
 
 def test_every_action_can_be_triggered_offline(window, monkeypatch, answers):
     reject_all_dialogs(monkeypatch)
-    monkeypatch.setattr(main_window_module, "open_homepage", lambda: True)
+    monkeypatch.setattr(main_window_module, "open_homepage", lambda _parent: True)
     window._connect_actions()
     skipped = {"exit", "online"}  # closing is tested above, going online in test_gui_online
     for name, action in window.commands.actions.items():

@@ -169,7 +169,7 @@ class MainWindow(QMainWindow):
             "online": lambda: self.valve.go_online(),
             "offline": self.valve.go_offline,
             "help": self.show_help,
-            "homepage": open_homepage,
+            "homepage": lambda: open_homepage(self),
             "about": self.show_about,
         }
         for name, handler in handlers.items():
