@@ -34,6 +34,18 @@ Dokud soubor neopravíte, zná prm9tool pouze dodaná šoupátka.</translation>
             <source>--emulator {0}: the serial number must be 1 … 4294967295</source>
             <translation>--emulator {0}: výrobní číslo musí být 1 … 4294967295</translation>
         </message>
+        <message>
+            <source>Internal error</source>
+            <translation>Vnitřní chyba</translation>
+        </message>
+        <message>
+            <source>prm9tool failed: {0}
+
+The last action may not have been completed. Save your work under a new name and please report this error with the details below.</source>
+            <translation>V prm9tool došlo k chybě: {0}
+
+Poslední akce možná nebyla dokončena. Uložte svou práci pod novým názvem a nahlaste prosím tuto chybu s podrobnostmi níže.</translation>
+        </message>
     </context>
     <context>
         <name>BlockDialog</name>
@@ -382,6 +394,10 @@ Dokud soubor neopravíte, zná prm9tool pouze dodaná šoupátka.</translation>
         <message>
             <source>Nominal coil current CURNORM: %1 mA — no limit may exceed it.</source>
             <translation>Jmenovitý proud cívky CURNORM: %1 mA – žádná mez jej nesmí překročit.</translation>
+        </message>
+        <message>
+            <source>Dither: ±%1 mA peak (DTAMP 100 % = %2 % of CURNORM).</source>
+            <translation>Dynamické mazání: ±%1 mA špičkově (DTAMP 100 % = %2 % z CURNORM).</translation>
         </message>
         <message>
             <source>coil %1</source>
@@ -865,6 +881,17 @@ Dokud soubor neopravíte, zná prm9tool pouze dodaná šoupátka.</translation>
         </message>
     </context>
     <context>
+        <name>Help</name>
+        <message>
+            <source>Home page</source>
+            <translation>Domovská stránka</translation>
+        </message>
+        <message>
+            <source>No web browser could be started. The home page is {0}</source>
+            <translation>Nepodařilo se spustit webový prohlížeč. Domovská stránka je {0}</translation>
+        </message>
+    </context>
+    <context>
         <name>HelpWindow</name>
         <message>
             <source>prm9tool help</source>
@@ -1235,8 +1262,28 @@ Dokud soubor neopravíte, zná prm9tool pouze dodaná šoupátka.</translation>
             <translation>OFFLINE</translation>
         </message>
         <message>
+            <source>CONNECTING</source>
+            <translation>PŘIPOJOVÁNÍ</translation>
+        </message>
+        <message>
             <source>Mode: {0}</source>
             <translation>Režim: {0}</translation>
+        </message>
+        <message>
+            <source>Connected; the document and the valve are being compared</source>
+            <translation>Připojeno; dokument a ventil se porovnávají</translation>
+        </message>
+        <message>
+            <source>Expert</source>
+            <translation>Expertní</translation>
+        </message>
+        <message>
+            <source>Basic</source>
+            <translation>Základní</translation>
+        </message>
+        <message>
+            <source>Level: {0}</source>
+            <translation>Úroveň: {0}</translation>
         </message>
         <message>
             <source>Status: {0}</source>
@@ -2471,6 +2518,22 @@ Ujistěte se, že pohyb stroje je bezpečný. Spustit generátor?</translation>
             <source>Set every parameter of the document to the factory default?</source>
             <translation>Nastavit všechny parametry dokumentu na tovární hodnoty?</translation>
         </message>
+        <message numerus="yes">
+            <source>%n parameter(s) written, verified and stored at {0}</source>
+            <translation>
+                <numerusform>%n parametr zapsán, ověřen a uložen v {0}</numerusform>
+                <numerusform>%n parametry zapsány, ověřeny a uloženy v {0}</numerusform>
+                <numerusform>%n parametrů zapsáno, ověřeno a uloženo v {0}</numerusform>
+            </translation>
+        </message>
+        <message numerus="yes">
+            <source>%n parameter(s) written, verified and stored again at {0}: the valve already held them</source>
+            <translation>
+                <numerusform>%n parametr znovu zapsán, ověřen a uložen v {0}: ventil jej již obsahoval</numerusform>
+                <numerusform>%n parametry znovu zapsány, ověřeny a uloženy v {0}: ventil je již obsahoval</numerusform>
+                <numerusform>%n parametrů znovu zapsáno, ověřeno a uloženo v {0}: ventil je již obsahoval</numerusform>
+            </translation>
+        </message>
         <message>
             <source>Restore factory values</source>
             <translation>Obnovit tovární nastavení</translation>
@@ -2510,14 +2573,6 @@ Ujistěte se, že pohyb stroje je bezpečný. Spustit generátor?</translation>
         <message>
             <source>Factory values restored; the valve's previous parameters are in {0}</source>
             <translation>Tovární nastavení obnoveno; dosavadní parametry ventilu jsou v {0}</translation>
-        </message>
-        <message numerus="yes">
-            <source>%n parameter(s) written, verified and stored</source>
-            <translation>
-                <numerusform>%n parametr zapsán, ověřen a uložen</numerusform>
-                <numerusform>%n parametry zapsány, ověřeny a uloženy</numerusform>
-                <numerusform>%n parametrů zapsáno, ověřeno a uloženo</numerusform>
-            </translation>
         </message>
         <message>
             <source>Upload failed</source>

@@ -34,6 +34,18 @@ Bis die Datei korrigiert ist, kennt prm9tool nur die mitgelieferten Schieber.</t
             <source>--emulator {0}: the serial number must be 1 … 4294967295</source>
             <translation>--emulator {0}: Die Seriennummer muss 1 … 4294967295 sein</translation>
         </message>
+        <message>
+            <source>Internal error</source>
+            <translation>Interner Fehler</translation>
+        </message>
+        <message>
+            <source>prm9tool failed: {0}
+
+The last action may not have been completed. Save your work under a new name and please report this error with the details below.</source>
+            <translation>prm9tool ist auf einen Fehler gestoßen: {0}
+
+Die letzte Aktion wurde womöglich nicht vollständig ausgeführt. Speichern Sie Ihre Arbeit unter einem neuen Namen und melden Sie diesen Fehler bitte mit den Details unten.</translation>
+        </message>
     </context>
     <context>
         <name>BlockDialog</name>
@@ -382,6 +394,10 @@ Bis die Datei korrigiert ist, kennt prm9tool nur die mitgelieferten Schieber.</t
         <message>
             <source>Nominal coil current CURNORM: %1 mA — no limit may exceed it.</source>
             <translation>Nennstrom der Spule CURNORM: %1 mA – keine Grenze darf ihn überschreiten.</translation>
+        </message>
+        <message>
+            <source>Dither: ±%1 mA peak (DTAMP 100 % = %2 % of CURNORM).</source>
+            <translation>Dither: ±%1 mA Spitze (DTAMP 100 % = %2 % von CURNORM).</translation>
         </message>
         <message>
             <source>coil %1</source>
@@ -863,6 +879,17 @@ Bis die Datei korrigiert ist, kennt prm9tool nur die mitgelieferten Schieber.</t
         </message>
     </context>
     <context>
+        <name>Help</name>
+        <message>
+            <source>Home page</source>
+            <translation>Homepage</translation>
+        </message>
+        <message>
+            <source>No web browser could be started. The home page is {0}</source>
+            <translation>Es konnte kein Webbrowser gestartet werden. Die Homepage ist {0}</translation>
+        </message>
+    </context>
+    <context>
         <name>HelpWindow</name>
         <message>
             <source>prm9tool help</source>
@@ -1233,8 +1260,28 @@ Bis die Datei korrigiert ist, kennt prm9tool nur die mitgelieferten Schieber.</t
             <translation>OFFLINE</translation>
         </message>
         <message>
+            <source>CONNECTING</source>
+            <translation>VERBINDEN</translation>
+        </message>
+        <message>
             <source>Mode: {0}</source>
             <translation>Modus: {0}</translation>
+        </message>
+        <message>
+            <source>Connected; the document and the valve are being compared</source>
+            <translation>Verbunden; Dokument und Ventil werden verglichen</translation>
+        </message>
+        <message>
+            <source>Expert</source>
+            <translation>Experte</translation>
+        </message>
+        <message>
+            <source>Basic</source>
+            <translation>Basis</translation>
+        </message>
+        <message>
+            <source>Level: {0}</source>
+            <translation>Stufe: {0}</translation>
         </message>
         <message>
             <source>Status: {0}</source>
@@ -2467,6 +2514,20 @@ Stellen Sie sicher, dass die Maschine sich gefahrlos bewegen kann. Generator sta
             <source>Set every parameter of the document to the factory default?</source>
             <translation>Alle Parameter des Dokuments auf die Werkseinstellung setzen?</translation>
         </message>
+        <message numerus="yes">
+            <source>%n parameter(s) written, verified and stored at {0}</source>
+            <translation>
+                <numerusform>%n Parameter um {0} geschrieben, geprüft und gespeichert</numerusform>
+                <numerusform>%n Parameter um {0} geschrieben, geprüft und gespeichert</numerusform>
+            </translation>
+        </message>
+        <message numerus="yes">
+            <source>%n parameter(s) written, verified and stored again at {0}: the valve already held them</source>
+            <translation>
+                <numerusform>%n Parameter um {0} erneut geschrieben, geprüft und gespeichert: das Ventil hatte ihn schon</numerusform>
+                <numerusform>%n Parameter um {0} erneut geschrieben, geprüft und gespeichert: das Ventil hatte sie schon</numerusform>
+            </translation>
+        </message>
         <message>
             <source>Restore factory values</source>
             <translation>Werkseinstellungen wiederherstellen</translation>
@@ -2506,13 +2567,6 @@ Stellen Sie sicher, dass die Maschine sich gefahrlos bewegen kann. Generator sta
         <message>
             <source>Factory values restored; the valve's previous parameters are in {0}</source>
             <translation>Werkseinstellungen wiederhergestellt; die bisherigen Parameter des Ventils sind in {0}</translation>
-        </message>
-        <message numerus="yes">
-            <source>%n parameter(s) written, verified and stored</source>
-            <translation>
-                <numerusform>%n Parameter geschrieben, geprüft und gespeichert</numerusform>
-                <numerusform>%n Parameter geschrieben, geprüft und gespeichert</numerusform>
-            </translation>
         </message>
         <message>
             <source>Upload failed</source>
