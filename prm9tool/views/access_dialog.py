@@ -32,6 +32,8 @@ def grow_to_contents(dialog: QDialog) -> None:
     clipped (issue 14, item 9).
     """
     layout = dialog.layout()
+    if layout is None:
+        return
     layout.activate()
     needed = layout.totalHeightForWidth(dialog.width())
     if layout.hasHeightForWidth() and needed > dialog.height():

@@ -1,4 +1,4 @@
-"""The emulated valve as a CiA 301 slave on a python-can bus (manual chapter 7, SPEC §3).
+"""The emulated valve as a CiA 301 slave on a python-can bus (manual chapter 7).
 
 :class:`CanopenSlave` receives frames in a python-can Notifier thread and runs its timers
 (heartbeat, PDO event timers) from the valve's 1 ms cycle listener, so the same code runs in
