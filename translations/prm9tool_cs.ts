@@ -1655,6 +1655,10 @@ Dokud soubor neopravíte, zná prm9tool pouze dodaná šoupátka.</translation>
             <source>cannot save the file: {0}</source>
             <translation>soubor nelze uložit: {0}</translation>
         </message>
+        <message>
+            <source>{0}: {1} is ambiguous (a thousands separator?); write the number without one, with '{2}' before the decimals</source>
+            <translation>{0}: {1} je nejednoznačné (oddělovač tisíců?); napište číslo bez něj, s „{2}“ před desetinnými místy</translation>
+        </message>
     </context>
     <context>
         <name>RampsDialog</name>

@@ -1650,6 +1650,10 @@ Bis die Datei korrigiert ist, kennt prm9tool nur die mitgelieferten Schieber.</t
             <source>cannot save the file: {0}</source>
             <translation>die Datei kann nicht gespeichert werden: {0}</translation>
         </message>
+        <message>
+            <source>{0}: {1} is ambiguous (a thousands separator?); write the number without one, with '{2}' before the decimals</source>
+            <translation>{0}: {1} ist mehrdeutig (ein Tausendertrennzeichen?); schreiben Sie die Zahl ohne Trennzeichen, mit „{2}“ vor den Nachkommastellen</translation>
+        </message>
     </context>
     <context>
         <name>RampsDialog</name>

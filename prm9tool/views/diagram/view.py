@@ -27,7 +27,7 @@ from PySide6.QtWidgets import QDialog, QGraphicsView, QMenu, QWidget
 
 from prm9tool.catalogue import CATALOGUE
 from prm9tool.catalogue.signals import BY_KEY
-from prm9tool.i18n import text
+from prm9tool.i18n import format_number, text
 from prm9tool.model.access import AccessModel
 from prm9tool.model.document import ParameterDocument
 from prm9tool.online.connection_protocol import DiagramConnection
@@ -60,7 +60,7 @@ def format_signal(key: str, raw: float) -> str:
     signal = BY_KEY[key]
     value = signal.to_display(raw)
     tag = f"{_TAGS[key]} " if key in _TAGS else ""
-    return f"{tag}{value:.{_DECIMALS.get(signal.unit, 1)}f} {signal.unit}"
+    return f"{tag}{format_number(value, _DECIMALS.get(signal.unit, 1))} {signal.unit}"
 
 
 class DiagramView(QGraphicsView):
