@@ -148,3 +148,39 @@ def test_an_undo_label_shows_the_value_in_the_language(qapp, language):
     undo = DocumentUndo(doc, doc)
     doc.set_value("POSKP", 55)
     assert undo.stack.undoText() == "POSKP = 0,55"
+
+
+def test_spin_boxes_of_open_windows_follow_a_change_of_language(qtbot, tmp_path, monkeypatch):
+    from gui_support import main_window, record_prompts
+    from PySide6.QtWidgets import QDoubleSpinBox
+
+    record_prompts(monkeypatch)
+    with main_window(qtbot, tmp_path) as window:
+        box = QDoubleSpinBox(window)
+        box.setDecimals(2)
+        box.setValue(1.5)
+        window.set_language("de")
+        assert box.text() == "1,50"
+        window.set_language("en")
+        assert box.text() == "1.50"
+
+
+def test_live_values_in_the_diagram_are_shown_again_in_a_new_language(qtbot, language):
+    from diagram_fakes import EmulatorConnection
+
+    from prm9tool.device.emulator import EmulatedValve
+    from prm9tool.views.diagram.view import DiagramView
+
+    valve = EmulatedValve(E02)
+    valve.advance(2.0)
+    valve.set_input("setpoint", 5.0)
+    valve.advance(0.3)
+    link = EmulatorConnection(valve)
+    view = DiagramView(ParameterDocument(E02), AccessModel(), link)
+    qtbot.addWidget(view)
+    link.go_online()
+    link.poll_signals()
+    demand = view.diagram.dots["demand"]
+    assert demand.value_text == "50.0 %"
+    language("de")  # no new values from the valve meanwhile
+    assert demand.value_text == "50,0 %"

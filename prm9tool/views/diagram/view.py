@@ -85,6 +85,7 @@ class DiagramView(QGraphicsView):
         self._simulator_factory = simulator_factory or _step_simulator
         self._dialogs: dict[str, QDialog] = {}
         self._fit = True
+        self._signals: dict[str, float] = {}  # the last values, shown again in a new language
         self._scene: DiagramScene | None = None
         self.setRenderHints(QPainter.RenderHint.Antialiasing | QPainter.RenderHint.TextAntialiasing)
         self.setMinimumSize(480, 300)
@@ -292,6 +293,7 @@ class DiagramView(QGraphicsView):
         self._refresh_blocks()
 
     def _on_online_changed(self, online: bool) -> None:
+        self._signals.clear()
         self._refresh_dots()
         self._refresh_block("valve")
         if online:
@@ -304,6 +306,7 @@ class DiagramView(QGraphicsView):
     def _on_signal_values_changed(self, values: dict[str, float]) -> None:
         if not self.is_online:
             return
+        self._signals.update(values)
         for key, raw in values.items():
             dot = self.diagram.dots.get(key)
             if dot is not None:
@@ -337,6 +340,7 @@ class DiagramView(QGraphicsView):
             self.diagram.retranslate()
             self._refresh_blocks()
             self._refresh_dots()
+            self._on_signal_values_changed(dict(self._signals))  # 0,0 % for 0.0 %
         super().changeEvent(event)
 
 
