@@ -57,7 +57,9 @@ class FileWorkflow(QObject):
         value = self._settings.value(RECENT_KEY, [])
         if isinstance(value, str):
             value = [value]
-        return [str(v) for v in value or []]
+        if not isinstance(value, list | tuple):  # e.g. a number in a hand-edited settings file
+            return []
+        return [str(v) for v in value]
 
     def _remember(self, path: Path) -> None:
         self._settings.setValue(FOLDER_KEY, str(path.parent))

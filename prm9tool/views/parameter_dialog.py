@@ -140,8 +140,8 @@ class ParameterEditDialog(QDialog):
         high = format_value(p, p.raw_max) + unit
         cap = CAPPED_BY.get(p.mnemonic) if capped else None
         if cap is not None:  # e.g. LIMTA: "0 … 2600 mA (CURNORM)", what the valve accepts
-            capped = min(p.raw_max, int(self._doc.value(cap)))
-            high = f"{format_value(p, capped)}{unit} ({cap})"
+            limit = min(p.raw_max, int(self._doc.value(cap)))
+            high = f"{format_value(p, limit)}{unit} ({cap})"
         return f"{format_value(p, p.raw_min)} … {high}"
 
     def changeEvent(self, event: QEvent) -> None:

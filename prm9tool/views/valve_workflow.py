@@ -372,7 +372,9 @@ class ValveWorkflow(QObject):
             )
             return
         mismatches = getattr(result, "mismatches", {}) or {}
-        details = "\n".join(f"{mn}: {want} → {got}" for mn, (want, got) in mismatches.items())
+        lines = [f"{mn}: {want} → {got}" for mn, (want, got) in mismatches.items()]
+        failure = getattr(result, "failure", None)  # e.g. a refused store: the valve's reason
+        details = "\n".join([failure, *lines] if failure else lines)
         prompts.inform(
             self._window,
             prompts.Icon.Warning,
