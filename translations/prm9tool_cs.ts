@@ -762,6 +762,10 @@ Dokud soubor neopravíte, zná prm9tool pouze dodaná šoupátka.</translation>
             <translation>Otevírání {0} zrušeno</translation>
         </message>
         <message>
+            <source>Still reading {0}</source>
+            <translation>{0} se ještě načítá</translation>
+        </message>
+        <message>
             <source>Cannot open “{0}”</source>
             <translation>„{0}“ nelze otevřít</translation>
         </message>

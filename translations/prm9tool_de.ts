@@ -762,6 +762,10 @@ Bis die Datei korrigiert ist, kennt prm9tool nur die mitgelieferten Schieber.</t
             <translation>Öffnen von {0} abgebrochen</translation>
         </message>
         <message>
+            <source>Still reading {0}</source>
+            <translation>{0} wird noch gelesen</translation>
+        </message>
+        <message>
             <source>Cannot open “{0}”</source>
             <translation>„{0}“ kann nicht geöffnet werden</translation>
         </message>
