@@ -953,6 +953,10 @@ Poslední akce možná nebyla dokončena. Uložte svou práci pod novým názvem
             <translation>Otevírání {0} zrušeno</translation>
         </message>
         <message>
+            <source>Still reading {0}</source>
+            <translation>{0} se ještě načítá</translation>
+        </message>
+        <message>
             <source>Cannot open “{0}”</source>
             <translation>„{0}“ nelze otevřít</translation>
         </message>
@@ -1876,6 +1880,10 @@ Poslední akce možná nebyla dokončena. Uložte svou práci pod novým názvem
         <message>
             <source>cannot save the file: {0}</source>
             <translation>soubor nelze uložit: {0}</translation>
+        </message>
+        <message>
+            <source>{0}: {1} is ambiguous (a thousands separator?); write the number without one, with '{2}' before the decimals</source>
+            <translation>{0}: {1} je nejednoznačné (oddělovač tisíců?); napište číslo bez něj, s „{2}“ před desetinnými místy</translation>
         </message>
     </context>
     <context>

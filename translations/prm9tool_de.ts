@@ -953,6 +953,10 @@ Die letzte Aktion wurde womöglich nicht vollständig ausgeführt. Speichern Sie
             <translation>Öffnen von {0} abgebrochen</translation>
         </message>
         <message>
+            <source>Still reading {0}</source>
+            <translation>{0} wird noch gelesen</translation>
+        </message>
+        <message>
             <source>Cannot open “{0}”</source>
             <translation>„{0}“ kann nicht geöffnet werden</translation>
         </message>
@@ -1871,6 +1875,10 @@ Die letzte Aktion wurde womöglich nicht vollständig ausgeführt. Speichern Sie
         <message>
             <source>cannot save the file: {0}</source>
             <translation>die Datei kann nicht gespeichert werden: {0}</translation>
+        </message>
+        <message>
+            <source>{0}: {1} is ambiguous (a thousands separator?); write the number without one, with '{2}' before the decimals</source>
+            <translation>{0}: {1} ist mehrdeutig (ein Tausendertrennzeichen?); schreiben Sie die Zahl ohne Trennzeichen, mit „{2}“ vor den Nachkommastellen</translation>
         </message>
     </context>
     <context>

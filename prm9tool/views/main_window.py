@@ -10,9 +10,9 @@ from collections.abc import Callable
 from pathlib import Path
 from typing import TYPE_CHECKING
 
-from PySide6.QtCore import QByteArray, QEvent, QSettings
+from PySide6.QtCore import QByteArray, QEvent, QLocale, QSettings
 from PySide6.QtGui import QCloseEvent, QDragEnterEvent, QDropEvent
-from PySide6.QtWidgets import QMainWindow, QScrollArea, QStackedWidget, QWidget
+from PySide6.QtWidgets import QApplication, QMainWindow, QScrollArea, QStackedWidget, QWidget
 
 from prm9tool import i18n
 from prm9tool.catalogue import Access
@@ -282,6 +282,8 @@ class MainWindow(QMainWindow):
     def set_language(self, language: str) -> None:
         """Switch the program language now and remember it."""
         i18n.set_language(language)
+        for window in QApplication.topLevelWidgets():  # children without a locale of their own
+            window.setLocale(QLocale(language))  # follow: spin boxes take the new decimal comma
         self.settings.setValue("language", language)
         self.status.clearMessage()  # a message of the language before would stay
         self._update_actions()

@@ -15,6 +15,7 @@ from PySide6.QtCore import Qt
 from PySide6.QtWidgets import QGridLayout, QLabel, QSlider, QWidget
 
 from prm9tool.catalogue import CATALOGUE
+from prm9tool.i18n import format_value
 from prm9tool.views.diagram.dialogs.base import BlockContext, BlockDialog
 from prm9tool.views.diagram.dialogs.plot import BLUE, GREY, ORANGE, Axes, Curve, PlotWidget
 
@@ -161,7 +162,7 @@ class ControllerDialog(BlockDialog):
         raw = slider_to_raw(position, CATALOGUE[name].raw_max)
         if self.sliders[name].isSliderDown():
             self._trial[name] = raw
-            self.gain_fields[name].setText(CATALOGUE[name].format_display(raw))
+            self.gain_fields[name].setText(format_value(CATALOGUE[name], raw))
             self._simulate()
         else:
             self.apply_value(name, raw)
