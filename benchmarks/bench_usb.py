@@ -35,8 +35,13 @@ def tuned_values() -> dict[str, int | str]:
     variant = TypeKey.parse(E04).variant
     values = {}
     for param in CATALOGUE.file_parameters(variant):
+        default = param.default_for(variant)
+        if "LINX" in param.mnemonic or "LINY" in param.mnemonic:  # curves must keep increasing
+            assert isinstance(default, int)
+            values[param.mnemonic] = default + 100 if default < param.raw_max else default - 100
+            continue
         allowed = [code for code, _ in param.choices] or [param.raw_min, param.raw_max]
-        values[param.mnemonic] = next(v for v in allowed if v != param.default_for(variant))
+        values[param.mnemonic] = next(v for v in allowed if v != default)
     return values
 
 

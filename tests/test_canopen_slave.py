@@ -463,3 +463,8 @@ def test_pdo_parameters_written_over_usb_take_effect(rig: Rig):
     rig.valve.write(0x1800, 5, 20)  # event timer 20 ms, as the USB firmware would write it
     rig.valve.advance(0.2)
     assert 9 <= len([f for f in rig.drain() if f.startswith("18A")]) <= 10
+
+
+def test_save_of_a_set_the_catalogue_rejects_is_refused(rig: Rig):
+    rig.exchange("60A 2B 00 20 01 10 27 00 00", "58A 60 00 20 01 00 00 00 00")  # SETPLINXA
+    rig.exchange("60A 23 10 10 01 73 61 76 65", "58A 80 10 10 01 20 00 00 08")  # 0x08000020
