@@ -141,8 +141,8 @@ class CanopenSlave:
 
     # --- frames ------------------------------------------------------------------------------
     def _on_message(self, msg: can.Message) -> None:
-        if msg.is_error_frame or msg.is_remote_frame or msg.is_extended_id:
-            return
+        if msg.is_error_frame or msg.is_remote_frame or msg.is_extended_id or msg.is_fd:
+            return  # a classical CAN node ignores CAN FD frames
         with self._valve.lock:
             if self.state in (NmtState.OFF, NmtState.INITIALISING) and msg.arbitration_id:
                 return

@@ -1,0 +1,65 @@
+"""Golden frames for the CiA 301 conformance defects of issue 15 (items 1-5), byte for byte.
+
+Frames are written as in the manual: ``COB-ID data bytes`` in hex.
+"""
+
+from __future__ import annotations
+
+import pytest
+from canopen_rig import Rig, make_rig
+
+
+@pytest.fixture
+def rig(request: pytest.FixtureRequest):
+    rig = make_rig(request.node.name)
+    yield rig
+    rig.close()
+
+
+def sdo_answers(rig: Rig) -> list[str]:
+    """SDO answers sent since the last call (the barrier's own answer excluded)."""
+    rig.barrier()
+    return [f for f in rig.drain() if f.startswith("58A")]
+
+
+# --- item 4: an SDO request that is not 8 bytes changes nothing (ignored, no answer) ----------
+@pytest.mark.parametrize(
+    ("request_frame", "index", "before"),
+    [
+        ("60A 2B 17 10 00", (0x1017, 0), 1000),  # padded with zeros: heartbeat would stop
+        ("60A 2B 17 10 00 F4", (0x1017, 0), 1000),  # would set 244
+        ("60A 2B 17 10 00 F4 01 00", (0x1017, 0), 1000),  # 7 bytes
+        ("60A 23 06 10 00 10", (0x1006, 0), 0),  # would set 0x1006 = 16
+        ("60A 40 18 10", (0x1018, 4), 0),  # a short upload request is not answered either
+    ],
+)
+def test_a_short_sdo_request_is_ignored(rig: Rig, request_frame, index, before):
+    value = rig.valve.read(*index)
+    assert index[0] == 0x1018 or value == before
+    rig.send(request_frame)
+    assert sdo_answers(rig) == []
+    assert rig.valve.read(*index) == value
+
+
+def test_a_one_byte_download_segment_does_not_complete_the_transfer(rig: Rig):
+    rig.exchange("60A 21 17 10 00 02 00 00 00", "58A 60 17 10 00 00 00 00 00")
+    rig.send("60A 0B")  # last segment, 2 bytes said, none given: ignored
+    assert rig.drain(settle_s=0.2) == []  # (no barrier: its request would end the transfer)
+    assert rig.valve.read(0x1017, 0) == 1000
+    rig.exchange("60A 0B F4 01 00 00 00 00 00", "58A 20 00 00 00 00 00 00 00")  # goes on
+    assert rig.valve.read(0x1017, 0) == 500
+
+
+# --- item 5: a classical CAN node ignores CAN FD frames --------------------------------------
+def test_a_can_fd_frame_is_not_an_sdo_request(rig: Rig):
+    rig.send("60A 2B 17 10 00 F4 01 00 00", fd=True)
+    assert sdo_answers(rig) == []
+    assert rig.valve.read(0x1017, 0) == 1000
+    rig.exchange("60A 2B 17 10 00 F4 01 00 00", "58A 60 17 10 00 00 00 00 00")  # classical: yes
+    assert rig.valve.read(0x1017, 0) == 500
+
+
+def test_a_can_fd_nmt_frame_is_ignored(rig: Rig):
+    rig.send("000 01 0A", fd=True)
+    rig.barrier()
+    assert rig.valve.status().nmt_state == "pre-operational"
