@@ -63,3 +63,39 @@ def test_a_can_fd_nmt_frame_is_ignored(rig: Rig):
     rig.send("000 01 0A", fd=True)
     rig.barrier()
     assert rig.valve.status().nmt_state == "pre-operational"
+
+
+# --- item 1: EMCY 8210 agrees with 0x1001 and 0x1003, and is reset ---------------------------
+def test_emcy_8210_is_in_0x1001_and_0x1003_and_reset_after_a_good_rpdo(rig: Rig):
+    rig.exchange("60A 2B 17 10 00 00 00 00 00", "58A 60 17 10 00 00 00 00 00")  # no heartbeat
+    rig.send("000 01 0A")
+    rig.barrier()
+    state = rig.valve.status().device_state
+    rig.drain()
+    rig.send("20A 0F")  # RPDO1 maps 4 bytes: too short, not processed
+    rig.barrier()
+    assert [f for f in rig.drain() if f.startswith("08A")] == ["08A 10 82 11 00 00 00 00 00"]
+    rig.exchange("60A 40 01 10 00 00 00 00 00", "58A 4F 01 10 00 11 00 00 00")  # = EMCY byte 2
+    rig.exchange("60A 40 03 10 00 00 00 00 00", "58A 4F 03 10 00 01 00 00 00")
+    rig.exchange("60A 40 03 10 01 00 00 00 00", "58A 43 03 10 01 10 82 00 00")
+    assert rig.valve.status().device_state is state  # reported only: no fault reaction
+    rig.send("20A 0F 00 00 00")  # the right length: the error goes
+    rig.barrier()
+    rig.valve.advance(11.0)  # shown ~10 s after it went, as every error (manual §5.5)
+    assert [f for f in rig.drain() if f.startswith("08A")] == ["08A 00 00 00 00 00 00 00 00"]
+    rig.exchange("60A 40 01 10 00 00 00 00 00", "58A 4F 01 10 00 00 00 00 00")
+    rig.exchange("60A 40 03 10 01 00 00 00 00", "58A 43 03 10 01 10 82 00 00")  # history kept
+
+
+def test_emcy_8210_ends_with_the_next_nmt_start(rig: Rig):
+    rig.exchange("60A 2B 17 10 00 00 00 00 00", "58A 60 17 10 00 00 00 00 00")
+    rig.send("000 01 0A")
+    rig.send("20A 0F")
+    rig.barrier()
+    assert "08A 10 82 11 00 00 00 00 00" in rig.drain()
+    rig.send("000 80 0A")
+    rig.send("000 01 0A")
+    rig.barrier()
+    rig.valve.advance(11.0)
+    assert "08A 00 00 00 00 00 00 00 00" in rig.drain()
+    assert rig.valve.status().error_register == 0

@@ -226,7 +226,7 @@ def test_short_rpdo_is_refused_with_emcy_8210(rig: Rig):
     _start(rig)
     rig.send("20A 0F 00 40")
     rig.barrier()
-    assert rig.drain() == ["08A 10 82 10 00 00 00 00 00"]
+    assert rig.drain() == ["08A 10 82 11 00 00 00 00 00"]  # 0x1001: generic + communication
     assert rig.valve.read(0x6300, 1) == 0
 
 

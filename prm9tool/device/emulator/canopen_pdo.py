@@ -163,11 +163,16 @@ class RpdoLogic:
     """Applying received RPDO data to the object dictionary."""
 
     def __init__(
-        self, channel: PdoChannel, valve: Dictionary, length_error: Callable[[], None]
+        self,
+        channel: PdoChannel,
+        valve: Dictionary,
+        length_error: Callable[[], None],
+        length_ok: Callable[[], None] = lambda: None,
     ) -> None:
         self.channel = channel
         self._valve = valve
         self._length_error = length_error
+        self._length_ok = length_ok
 
     def received(self, data: bytes, now_ms: int) -> None:
         """A frame on the RPDO's COB-ID arrived (NMT OPERATIONAL)."""
@@ -198,6 +203,7 @@ class RpdoLogic:
         if len(data) < sum(bits // 8 for _, _, bits in entries):
             self._length_error()
             return
+        self._length_ok()
         offset = 0
         for index, subindex, bits in entries:
             size = bits // 8
