@@ -49,7 +49,8 @@ def minimum_reports(values: dict[str, int | str]) -> tuple[int, int]:
     """(host→valve, both directions): each phase's payload bytes packed into 64-byte reports.
 
     Payload: write = address (3 bytes) + value per entry, plus a 1-byte acknowledgement;
-    verify = the addresses, then the values; store = a 1-byte command and acknowledgement.
+    verify = the addresses, then the values; store = a 1-byte command and acknowledgement, then
+    the values read back once more (the session's contract: stored = verified stored).
     """
     params = [CATALOGUE[m] for m in values]
     address_bytes = 3 * len(params)
@@ -58,8 +59,9 @@ def minimum_reports(values: dict[str, int | str]) -> tuple[int, int]:
     def reports(n: int) -> int:
         return math.ceil(n / REPORT)
 
-    out = reports(address_bytes + value_bytes) + reports(address_bytes) + reports(1)
-    back = reports(1) + reports(value_bytes) + reports(1)
+    read_back_out, read_back_in = reports(address_bytes), reports(value_bytes)
+    out = reports(address_bytes + value_bytes) + 2 * read_back_out + reports(1)
+    back = reports(1) + 2 * read_back_in + reports(1)
     return out, out + back
 
 
