@@ -677,6 +677,14 @@ Dokud soubor neopravíte, zná prm9tool pouze dodaná šoupátka.</translation>
             <translation>Chyba interního snímače polohy</translation>
         </message>
         <message>
+            <source>CANopen communication error (heartbeat, SYNC or RPDO missing)</source>
+            <translation>Chyba komunikace CANopen (chybí heartbeat, SYNC nebo RPDO)</translation>
+        </message>
+        <message>
+            <source>CANopen RPDO too short: not processed</source>
+            <translation>CANopen RPDO je příliš krátké: nezpracováno</translation>
+        </message>
+        <message>
             <source>Unknown error</source>
             <translation>Neznámá chyba</translation>
         </message>

@@ -677,6 +677,14 @@ Bis die Datei korrigiert ist, kennt prm9tool nur die mitgelieferten Schieber.</t
             <translation>Fehler interner Wegsensor</translation>
         </message>
         <message>
+            <source>CANopen communication error (heartbeat, SYNC or RPDO missing)</source>
+            <translation>CANopen-Kommunikationsfehler (Heartbeat, SYNC oder RPDO fehlt)</translation>
+        </message>
+        <message>
+            <source>CANopen RPDO too short: not processed</source>
+            <translation>CANopen-RPDO zu kurz: nicht verarbeitet</translation>
+        </message>
+        <message>
             <source>Unknown error</source>
             <translation>Unbekannter Fehler</translation>
         </message>
