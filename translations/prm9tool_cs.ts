@@ -34,6 +34,16 @@ Dokud soubor neopravíte, zná prm9tool pouze dodaná šoupátka.</translation>
             <source>--emulator {0}: the serial number must be 1 … 4294967295</source>
             <translation>--emulator {0}: výrobní číslo musí být 1 … 4294967295</translation>
         </message>
+        <message>
+            <source>Internal error</source>
+            <translation type="unfinished"></translation>
+        </message>
+        <message>
+            <source>prm9tool failed: {0}
+
+The last action may not have been completed. Save your work under a new name and please report this error with the details below.</source>
+            <translation type="unfinished"></translation>
+        </message>
     </context>
     <context>
         <name>BlockDialog</name>
@@ -256,6 +266,17 @@ Dokud soubor neopravíte, zná prm9tool pouze dodaná šoupátka.</translation>
         </message>
     </context>
     <context>
+        <name>Compare</name>
+        <message>
+            <source>The type keys differ: {0} is {1}, {2} is {3}.</source>
+            <translation type="unfinished"></translation>
+        </message>
+        <message>
+            <source>The valve variants differ: only the parameters both have are compared; {0} parameters that one side lacks are left out.</source>
+            <translation type="unfinished"></translation>
+        </message>
+    </context>
+    <context>
         <name>ControlPanel</name>
         <message>
             <source>Recording</source>
@@ -382,6 +403,10 @@ Dokud soubor neopravíte, zná prm9tool pouze dodaná šoupátka.</translation>
         <message>
             <source>Nominal coil current CURNORM: %1 mA — no limit may exceed it.</source>
             <translation>Jmenovitý proud cívky CURNORM: %1 mA – žádná mez jej nesmí překročit.</translation>
+        </message>
+        <message>
+            <source>Dither: ±%1 mA peak (DTAMP 100 % = %2 % of CURNORM).</source>
+            <translation type="unfinished"></translation>
         </message>
         <message>
             <source>coil %1</source>
@@ -730,6 +755,10 @@ Dokud soubor neopravíte, zná prm9tool pouze dodaná šoupátka.</translation>
             <source>The valve refused the access.</source>
             <translation>Ventil přístup odmítl.</translation>
         </message>
+        <message>
+            <source>The history database cannot be used.</source>
+            <translation type="unfinished"></translation>
+        </message>
     </context>
     <context>
         <name>FileWorkflow</name>
@@ -766,6 +795,10 @@ Dokud soubor neopravíte, zná prm9tool pouze dodaná šoupátka.</translation>
             <translation>„{0}“ již neexistuje; byl odstraněn ze seznamu.</translation>
         </message>
         <message>
+            <source>Opening {0} cancelled</source>
+            <translation>Otevírání {0} zrušeno</translation>
+        </message>
+        <message>
             <source>Cannot open “{0}”</source>
             <translation>„{0}“ nelze otevřít</translation>
         </message>
@@ -784,6 +817,14 @@ Dokud soubor neopravíte, zná prm9tool pouze dodaná šoupátka.</translation>
                 <numerusform>„{0}“ byl otevřen; nalezena %n varování.</numerusform>
                 <numerusform>„{0}“ byl otevřen; nalezeno %n varování.</numerusform>
             </translation>
+        </message>
+        <message>
+            <source>Reading “{0}”…</source>
+            <translation>Načítá se „{0}“…</translation>
+        </message>
+        <message>
+            <source>Cancel</source>
+            <translation>Zrušit</translation>
         </message>
         <message>
             <source>Save parameter file</source>
@@ -807,6 +848,14 @@ Dokud soubor neopravíte, zná prm9tool pouze dodaná šoupátka.</translation>
                 <numerusform>Další %n problém v podrobnostech.</numerusform>
                 <numerusform>Další %n problémy v podrobnostech.</numerusform>
                 <numerusform>Dalších %n problémů v podrobnostech.</numerusform>
+            </translation>
+        </message>
+        <message numerus="yes">
+            <source>… and %n more problem(s).</source>
+            <translation>
+                <numerusform>… a %n další problém.</numerusform>
+                <numerusform>… a %n další problémy.</numerusform>
+                <numerusform>… a dalších %n problémů.</numerusform>
             </translation>
         </message>
     </context>
@@ -1243,8 +1292,28 @@ Dokud soubor neopravíte, zná prm9tool pouze dodaná šoupátka.</translation>
             <translation>OFFLINE</translation>
         </message>
         <message>
+            <source>CONNECTING</source>
+            <translation type="unfinished"></translation>
+        </message>
+        <message>
             <source>Mode: {0}</source>
             <translation>Režim: {0}</translation>
+        </message>
+        <message>
+            <source>Connected; the document and the valve are being compared</source>
+            <translation type="unfinished"></translation>
+        </message>
+        <message>
+            <source>Expert</source>
+            <translation type="unfinished">Expertní</translation>
+        </message>
+        <message>
+            <source>Basic</source>
+            <translation type="unfinished">Základní</translation>
+        </message>
+        <message>
+            <source>Level: {0}</source>
+            <translation type="unfinished"></translation>
         </message>
         <message>
             <source>Status: {0}</source>
@@ -2031,6 +2100,14 @@ Ujistěte se, že pohyb stroje je bezpečný. Spustit generátor?</translation>
             <translation>(žádná: skok na odezvě)</translation>
         </message>
         <message>
+            <source>Measured on step {0} of {1} in {2}.</source>
+            <translation type="unfinished"></translation>
+        </message>
+        <message>
+            <source>Window too short: in {0} the response has not come to rest yet. Widen the time window or move the cursors apart.</source>
+            <translation type="unfinished"></translation>
+        </message>
+        <message>
             <source>No step found in {0}.</source>
             <translation>V {0} nebyl nalezen žádný skok.</translation>
         </message>
@@ -2468,8 +2545,24 @@ Ujistěte se, že pohyb stroje je bezpečný. Spustit generátor?</translation>
             <translation>Dokument je pro ventil {0}, připojený ventil je {1}. Zvolte odpovídající typ ventilu nebo nejprve stáhněte parametry z ventilu.</translation>
         </message>
         <message>
+            <source>Nothing was sent to the valve</source>
+            <translation>Do ventilu nebylo nic odesláno</translation>
+        </message>
+        <message>
             <source>Uploading the parameters to the valve…</source>
             <translation>Načítání parametrů do ventilu…</translation>
+        </message>
+        <message>
+            <source>Expert values at Basic level</source>
+            <translation>Expertní hodnoty na základní úrovni</translation>
+        </message>
+        <message numerus="yes">
+            <source>The document changes %n Expert-level value(s) of the valve ({0}), which the Basic access level cannot edit (controllers, linearizations, monitoring). Send them anyway?</source>
+            <translation>
+                <numerusform>Dokument mění %n hodnotu úrovně Expert ve ventilu ({0}), kterou základní úroveň oprávnění nemůže upravovat (regulátory, linearizace, monitorování). Přesto odeslat?</numerusform>
+                <numerusform>Dokument mění %n hodnoty úrovně Expert ve ventilu ({0}), které základní úroveň oprávnění nemůže upravovat (regulátory, linearizace, monitorování). Přesto odeslat?</numerusform>
+                <numerusform>Dokument mění %n hodnot úrovně Expert ve ventilu ({0}), které základní úroveň oprávnění nemůže upravovat (regulátory, linearizace, monitorování). Přesto odeslat?</numerusform>
+            </translation>
         </message>
         <message>
             <source>Downloading the parameters from the valve…</source>

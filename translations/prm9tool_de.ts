@@ -34,6 +34,16 @@ Bis die Datei korrigiert ist, kennt prm9tool nur die mitgelieferten Schieber.</t
             <source>--emulator {0}: the serial number must be 1 … 4294967295</source>
             <translation>--emulator {0}: Die Seriennummer muss 1 … 4294967295 sein</translation>
         </message>
+        <message>
+            <source>Internal error</source>
+            <translation type="unfinished"></translation>
+        </message>
+        <message>
+            <source>prm9tool failed: {0}
+
+The last action may not have been completed. Save your work under a new name and please report this error with the details below.</source>
+            <translation type="unfinished"></translation>
+        </message>
     </context>
     <context>
         <name>BlockDialog</name>
@@ -256,6 +266,17 @@ Bis die Datei korrigiert ist, kennt prm9tool nur die mitgelieferten Schieber.</t
         </message>
     </context>
     <context>
+        <name>Compare</name>
+        <message>
+            <source>The type keys differ: {0} is {1}, {2} is {3}.</source>
+            <translation type="unfinished"></translation>
+        </message>
+        <message>
+            <source>The valve variants differ: only the parameters both have are compared; {0} parameters that one side lacks are left out.</source>
+            <translation type="unfinished"></translation>
+        </message>
+    </context>
+    <context>
         <name>ControlPanel</name>
         <message>
             <source>Recording</source>
@@ -382,6 +403,10 @@ Bis die Datei korrigiert ist, kennt prm9tool nur die mitgelieferten Schieber.</t
         <message>
             <source>Nominal coil current CURNORM: %1 mA — no limit may exceed it.</source>
             <translation>Nennstrom der Spule CURNORM: %1 mA – keine Grenze darf ihn überschreiten.</translation>
+        </message>
+        <message>
+            <source>Dither: ±%1 mA peak (DTAMP 100 % = %2 % of CURNORM).</source>
+            <translation type="unfinished"></translation>
         </message>
         <message>
             <source>coil %1</source>
@@ -730,6 +755,10 @@ Bis die Datei korrigiert ist, kennt prm9tool nur die mitgelieferten Schieber.</t
             <source>The valve refused the access.</source>
             <translation>Das Ventil hat den Zugriff abgelehnt.</translation>
         </message>
+        <message>
+            <source>The history database cannot be used.</source>
+            <translation type="unfinished"></translation>
+        </message>
     </context>
     <context>
         <name>FileWorkflow</name>
@@ -766,6 +795,10 @@ Bis die Datei korrigiert ist, kennt prm9tool nur die mitgelieferten Schieber.</t
             <translation>„{0}“ existiert nicht mehr; die Datei wurde aus der Liste entfernt.</translation>
         </message>
         <message>
+            <source>Opening {0} cancelled</source>
+            <translation>Öffnen von {0} abgebrochen</translation>
+        </message>
+        <message>
             <source>Cannot open “{0}”</source>
             <translation>„{0}“ kann nicht geöffnet werden</translation>
         </message>
@@ -783,6 +816,14 @@ Bis die Datei korrigiert ist, kennt prm9tool nur die mitgelieferten Schieber.</t
                 <numerusform>„{0}“ wurde geöffnet; %n Warnung gefunden.</numerusform>
                 <numerusform>„{0}“ wurde geöffnet; %n Warnungen gefunden.</numerusform>
             </translation>
+        </message>
+        <message>
+            <source>Reading “{0}”…</source>
+            <translation>„{0}“ wird gelesen…</translation>
+        </message>
+        <message>
+            <source>Cancel</source>
+            <translation>Abbrechen</translation>
         </message>
         <message>
             <source>Save parameter file</source>
@@ -805,6 +846,13 @@ Bis die Datei korrigiert ist, kennt prm9tool nur die mitgelieferten Schieber.</t
             <translation>
                 <numerusform>%n weiteres Problem in den Details.</numerusform>
                 <numerusform>%n weitere Probleme in den Details.</numerusform>
+            </translation>
+        </message>
+        <message numerus="yes">
+            <source>… and %n more problem(s).</source>
+            <translation>
+                <numerusform>… und %n weiteres Problem.</numerusform>
+                <numerusform>… und %n weitere Probleme.</numerusform>
             </translation>
         </message>
     </context>
@@ -1241,8 +1289,28 @@ Bis die Datei korrigiert ist, kennt prm9tool nur die mitgelieferten Schieber.</t
             <translation>OFFLINE</translation>
         </message>
         <message>
+            <source>CONNECTING</source>
+            <translation type="unfinished"></translation>
+        </message>
+        <message>
             <source>Mode: {0}</source>
             <translation>Modus: {0}</translation>
+        </message>
+        <message>
+            <source>Connected; the document and the valve are being compared</source>
+            <translation type="unfinished"></translation>
+        </message>
+        <message>
+            <source>Expert</source>
+            <translation type="unfinished">Experte</translation>
+        </message>
+        <message>
+            <source>Basic</source>
+            <translation type="unfinished">Basis</translation>
+        </message>
+        <message>
+            <source>Level: {0}</source>
+            <translation type="unfinished"></translation>
         </message>
         <message>
             <source>Status: {0}</source>
@@ -2027,6 +2095,14 @@ Stellen Sie sicher, dass die Maschine sich gefahrlos bewegen kann. Generator sta
             <translation>(keine: Sprung auf der Antwort)</translation>
         </message>
         <message>
+            <source>Measured on step {0} of {1} in {2}.</source>
+            <translation type="unfinished"></translation>
+        </message>
+        <message>
+            <source>Window too short: in {0} the response has not come to rest yet. Widen the time window or move the cursors apart.</source>
+            <translation type="unfinished"></translation>
+        </message>
+        <message>
             <source>No step found in {0}.</source>
             <translation>Kein Sprung in {0} gefunden.</translation>
         </message>
@@ -2464,8 +2540,23 @@ Stellen Sie sicher, dass die Maschine sich gefahrlos bewegen kann. Generator sta
             <translation>Das Dokument ist für ein Ventil {0}, das angeschlossene Ventil ist ein Ventil {1}. Wählen Sie den passenden Ventiltyp oder laden Sie zuerst die Parameter des Ventils herunter.</translation>
         </message>
         <message>
+            <source>Nothing was sent to the valve</source>
+            <translation>Es wurde nichts an das Ventil gesendet</translation>
+        </message>
+        <message>
             <source>Uploading the parameters to the valve…</source>
             <translation>Parameter werden in das Ventil hochgeladen…</translation>
+        </message>
+        <message>
+            <source>Expert values at Basic level</source>
+            <translation>Expertenwerte in der Stufe Basis</translation>
+        </message>
+        <message numerus="yes">
+            <source>The document changes %n Expert-level value(s) of the valve ({0}), which the Basic access level cannot edit (controllers, linearizations, monitoring). Send them anyway?</source>
+            <translation>
+                <numerusform>Das Dokument ändert %n Wert der Stufe Experte im Ventil ({0}), den die Zugriffsstufe Basis nicht bearbeiten kann (Regler, Linearisierungen, Überwachung). Trotzdem senden?</numerusform>
+                <numerusform>Das Dokument ändert %n Werte der Stufe Experte im Ventil ({0}), die die Zugriffsstufe Basis nicht bearbeiten kann (Regler, Linearisierungen, Überwachung). Trotzdem senden?</numerusform>
+            </translation>
         </message>
         <message>
             <source>Downloading the parameters from the valve…</source>
