@@ -6,7 +6,7 @@ Frames are written as in the manual: ``COB-ID data bytes`` in hex.
 from __future__ import annotations
 
 import pytest
-from canopen_rig import Rig, make_rig
+from canopen_rig import E04, Rig, make_rig
 
 
 @pytest.fixture
@@ -99,3 +99,23 @@ def test_emcy_8210_ends_with_the_next_nmt_start(rig: Rig):
     rig.valve.advance(11.0)
     assert "08A 00 00 00 00 00 00 00 00" in rig.drain()
     assert rig.valve.status().error_register == 0
+
+
+# --- item 2: a mapping never points to an object the valve lacks -------------------------------
+def test_on_a_valve_without_the_external_sensor_pdo2_maps_nothing(rig: Rig):
+    rig.exchange("60A 40 01 1A 00 00 00 00 00", "58A 4F 01 1A 00 00 00 00 00")  # 0 entries
+    rig.exchange("60A 40 01 1A 01 00 00 00 00", "58A 80 01 1A 01 11 00 09 06")  # no sub 1
+    rig.exchange("60A 40 01 16 00 00 00 00 00", "58A 4F 01 16 00 00 00 00 00")
+    rig.exchange("60A 40 00 21 01 00 00 00 00", "58A 80 00 21 01 00 00 02 06")  # no 0x2100
+    rig.exchange("60A 40 01 18 01 00 00 00 00", "58A 43 01 18 01 8A 02 00 00")  # PDO2 exists
+
+
+def test_with_the_external_sensor_pdo2_maps_it(request: pytest.FixtureRequest):
+    rig = make_rig(request.node.name, E04)
+    try:
+        rig.exchange("60A 40 01 1A 00 00 00 00 00", "58A 4F 01 1A 00 02 00 00 00")
+        rig.exchange("60A 40 01 1A 01 00 00 00 00", "58A 43 01 1A 01 10 01 00 21")
+        rig.exchange("60A 40 01 1A 02 00 00 00 00", "58A 43 01 1A 02 10 06 00 21")
+        rig.exchange("60A 40 01 16 01 00 00 00 00", "58A 43 01 16 01 10 02 00 21")
+    finally:
+        rig.close()
