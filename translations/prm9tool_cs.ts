@@ -766,6 +766,14 @@ Poslední akce možná nebyla dokončena. Uložte svou práci pod novým názvem
             <source>ok</source>
             <translation>ok</translation>
         </message>
+        <message>
+            <source>CANopen communication error (heartbeat, SYNC or RPDO missing)</source>
+            <translation>Chyba komunikace CANopen (chybí heartbeat, SYNC nebo RPDO)</translation>
+        </message>
+        <message>
+            <source>CANopen RPDO too short: not processed</source>
+            <translation>CANopen RPDO je příliš krátké: nezpracováno</translation>
+        </message>
     </context>
     <context>
         <name>EmulatedValve</name>

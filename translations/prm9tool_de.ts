@@ -766,6 +766,14 @@ Die letzte Aktion wurde womöglich nicht vollständig ausgeführt. Speichern Sie
             <source>ok</source>
             <translation>ok</translation>
         </message>
+        <message>
+            <source>CANopen communication error (heartbeat, SYNC or RPDO missing)</source>
+            <translation>CANopen-Kommunikationsfehler (Heartbeat, SYNC oder RPDO fehlt)</translation>
+        </message>
+        <message>
+            <source>CANopen RPDO too short: not processed</source>
+            <translation>CANopen-RPDO zu kurz: nicht verarbeitet</translation>
+        </message>
     </context>
     <context>
         <name>EmulatedValve</name>
