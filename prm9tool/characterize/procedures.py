@@ -269,6 +269,9 @@ def critical_gain_tune(
         trials: list[tuple[float, float, float]] = []
 
         def trial(kp_raw: int) -> tuple[bool, float]:
+            # from rest, as the manual asks: the safe gains calm the loop first
+            rig.write({k: saved[k] for k in names})
+            rig.play(np.zeros(int(0.05 * rig.info.sample_rate_hz)), [lp.setpoint])
             rig.write({param: kp_raw, lp.prefix + "KI": 0, lp.prefix + "KD": 0})
             ringing, period = _ring(rig, lp, amplitude_pct, limit_pct, window_s)
             trials.append((kp_raw * 0.01, ringing[0], ringing[1]))
