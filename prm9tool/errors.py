@@ -206,3 +206,4 @@ class ExitCode(IntEnum):
     NO_DEVICE = 4
     TYPE_MISMATCH = 5
     COMMUNICATION = 6
+    OUT_OF_LIMITS = 7  # --characterize: a figure outside the acceptance profile's limits

@@ -25,6 +25,7 @@ EXIT_CODE_TEXT = {
     ExitCode.NO_DEVICE: "no valve found, or none with the --device ID",
     ExitCode.TYPE_MISMATCH: "the file's type key does not fit the valve",
     ExitCode.COMMUNICATION: "communication error (valve gone, timeout, backup not written)",
+    ExitCode.OUT_OF_LIMITS: "--characterize: a figure is outside the acceptance profile's limits",
 }
 # Options of the headless production mode that mean nothing anywhere else.
 BATCH_ONLY = {
@@ -109,6 +110,16 @@ def build_parser() -> argparse.ArgumentParser:
     batch.add_argument(
         "--dry-run", action="store_true", help="with --batch: check everything, write nothing"
     )
+    eol = parser.add_argument_group("end-of-line test (no GUI; docs/tuning.md)")
+    eol.add_argument(
+        "--characterize",
+        action="store_true",
+        help="step responses, Bode and static characteristic of one valve (--report OUT.pdf)",
+    )
+    eol.add_argument("--json", metavar="OUT.json", help="with --characterize: JSON report")
+    eol.add_argument(
+        "--profile", metavar="LIMITS.toml", help="with --characterize: acceptance profile"
+    )
     add_device_options(parser)
     return parser
 
@@ -129,6 +140,10 @@ def usage_problem(args: argparse.Namespace) -> str | None:
     options only put the GUI's emulated -CA valve on a bus, so they need ``--emulator`` and no
     other command (an option that would be ignored is an error, not a surprise).
     """
+    if args.characterize:
+        return _characterize_problem(args)
+    if args.json or args.profile:
+        return f"{'--json' if args.json else '--profile'} belongs to --characterize"
     batch_only = [flag for flag, dest in BATCH_ONLY.items() if getattr(args, dest)]
     tools = [flag for flag, dest in FILE_TOOLS.items() if getattr(args, dest) is not None]
     command = "--list-devices" if args.list_devices else "--batch" if args.batch is not None else ""
@@ -150,6 +165,18 @@ def usage_problem(args: argparse.Namespace) -> str | None:
         return f"{batch_only[0]} belongs to the headless production mode: use it with --batch"
     if not tools and len(args.device) > 1:
         return "the GUI goes online with one valve: give --device once (several: --batch)"
+    return None
+
+
+def _characterize_problem(args: argparse.Namespace) -> str | None:
+    others = [flag for flag, dest in {**BATCH_ONLY, **FILE_TOOLS}.items()
+              if dest != "report" and getattr(args, dest) not in (None, False)]  # fmt: skip
+    if args.batch is not None or args.list_devices:
+        others.insert(0, "--batch" if args.batch is not None else "--list-devices")
+    if others:
+        return f"--characterize and {others[0]} are separate commands: use one at a time"
+    if args.file:
+        return f"unexpected file {args.file}: --characterize tests a valve"
     return None
 
 
@@ -195,6 +222,10 @@ def main(argv: Sequence[str] | None = None) -> int:
         from prm9tool.cli import filetools as prmcli
 
         return prmcli.export_eds_command(args)
+    if args.characterize:
+        from prm9tool.cli.characterize import run as run_characterize
+
+        return run_characterize(args)
     if args.list_devices or args.batch is not None:
         from prm9tool.cli.batch import run as run_batch
 
