@@ -53,7 +53,7 @@ def direct_sine_gain(f: float, amplitude: float = 10.0) -> float:
     """|actual/setpoint| from a pure sine written straight into the override."""
     valve = booted(TRANSPARENT)
     put(valve, "SETPOVRON", 1)
-    n = int(round(8.0 / f / CYCLE))
+    n = round(8.0 / f / CYCLE)
     valve.capture_start(["position_setpoint", "position_actual"], 1)
     for k in range(n):
         put(valve, "SETPOVR", round(amplitude * 163.84 * math.sin(2 * math.pi * f * k * CYCLE)))

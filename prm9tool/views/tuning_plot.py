@@ -137,16 +137,15 @@ def paint_plot(painter: QPainter, rect: QRectF, plot: Plot, ink: QColor | None =
     for s in plot.series:
         _line(painter, s, px, py)
     painter.restore()
+    width = max((metrics.horizontalAdvance(s.label) for s in plot.series), default=0) + line
+    left = area.right() - width - 2 * line
     for k, s in enumerate(plot.series):
         y = area.top() + line * (k + 0.3)
         painter.setPen(QPen(QColor(s.colour), 2))
-        painter.drawLine(
-            QPointF(area.right() - 150, y + line / 2), QPointF(area.right() - 125, y + line / 2)
-        )
+        painter.drawLine(QPointF(left, y + line / 2), QPointF(left + line * 1.5, y + line / 2))
         painter.setPen(QPen(ink, 0))
-        painter.drawText(
-            QRectF(area.right() - 120, y, 118, line), Qt.AlignmentFlag.AlignLeft, s.label
-        )
+        label = QRectF(left + line * 1.8, y, width, line)
+        painter.drawText(label, Qt.AlignmentFlag.AlignLeft, s.label)
 
 
 def _marker(painter: QPainter, a: QPointF, b: QPointF, text: str, ink: QColor) -> None:
