@@ -62,10 +62,10 @@ def test_a_good_valve_passes_with_pdf_json_and_csv(tmp_path, capsys):
     assert "PASSED" in capsys.readouterr().out
 
 
-def test_out_of_limits_exits_7_and_names_the_figure(tmp_path, capsys):
+def test_out_of_limits_exits_8_and_names_the_figure(tmp_path, capsys):
     strict = FAST.replace("{ min = 15 }", "{ min = 500 }")
     js = tmp_path / "out.json"
-    assert run(tmp_path, strict, 32, "--json", str(js)) == ExitCode.OUT_OF_LIMITS == 7
+    assert run(tmp_path, strict, 32, "--json", str(js)) == ExitCode.OUT_OF_LIMITS == 8
     report = json.loads(js.read_text(encoding="utf-8"))
     assert report["passed"] is False
     failed = [f["name"] for f in report["figures"] if f["passed"] is False]
@@ -91,7 +91,9 @@ def test_a_bad_profile_is_refused_and_nothing_is_written(tmp_path, capsys, profi
 @pytest.mark.parametrize(
     ("args", "message"),
     [
-        (["--json", "x.json"], "--json belongs to --characterize"),
+        (["--json", "x.json"], "--json OUT.json belongs to --characterize"),
+        (["--profile", "x.toml"], "--profile belongs to --characterize"),
+        (["--characterize", "--emulator", E02, "--json"], "--json OUT.json"),
         (["--characterize", "--emulator", E02, "--batch", "a.prm"], "separate commands"),
     ],
 )

@@ -2,7 +2,7 @@
 
 Runs the acceptance profile's tests (steps at three amplitudes, Bode, static characteristic),
 writes the PDF report (``--report``), the JSON report (``--json``) and the raw data as CSV
-next to them, and exits 0 when every figure is within its limits, 7 when one is not (docs/
+next to them, and exits 0 when every figure is within its limits, 8 when one is not (docs/
 tuning.md). An emulated valve is stepped as fast as the CPU allows; a USB valve runs at its
 stream rate.
 """

@@ -144,8 +144,8 @@ def paint_plot(painter: QPainter, rect: QRectF, plot: Plot, ink: QColor | None =
         painter.setPen(QPen(QColor(s.colour), 2))
         painter.drawLine(QPointF(left, y + line / 2), QPointF(left + line * 1.5, y + line / 2))
         painter.setPen(QPen(ink, 0))
-        label = QRectF(left + line * 1.8, y, width, line)
-        painter.drawText(label, Qt.AlignmentFlag.AlignLeft, s.label)
+        box = QRectF(left + line * 1.8, y, width, line)
+        painter.drawText(box, Qt.AlignmentFlag.AlignLeft, s.label)
 
 
 def _marker(painter: QPainter, a: QPointF, b: QPointF, text: str, ink: QColor) -> None:
