@@ -6,14 +6,14 @@ import os
 from pathlib import Path
 
 import pytest
-from PySide6.QtWidgets import QMessageBox
 from pypdf import PdfReader
+from PySide6.QtWidgets import QMessageBox
 
 from prm9tool.model.access import Access, AccessModel
 from prm9tool.model.document import ParameterDocument
 from prm9tool.model.undo import DocumentUndo
-from prm9tool.views.diagram.dialogs.base import BlockContext
 from prm9tool.views.diagram.dialogs import create_block_dialog
+from prm9tool.views.diagram.dialogs.base import BlockContext
 from prm9tool.views.tuning_window import TuningWindow
 
 E02 = "PRM9-06.3Z11/30-24E02S02"
@@ -127,10 +127,10 @@ def test_stop_ends_the_test_and_says_so(qtbot, window):
 def test_online_a_test_asks_first_and_does_nothing_when_declined(qtbot, monkeypatch):
     class Online:
         is_online = True
-        streaming_keys: list[str] = []
         device = None
 
         def __init__(self):
+            self.streaming_keys: list[str] = []
             from PySide6.QtCore import QObject, Signal
 
             class Signals(QObject):

@@ -14,7 +14,7 @@ from dataclasses import dataclass
 import numpy as np
 from scipy import signal
 
-MIN_COHERENCE = 0.8  # points below are shown but not used for the −3 dB / −90° figures
+MIN_COHERENCE = 0.5  # points below are shown but not used for the −3 dB / −90° figures
 
 
 @dataclass(frozen=True)

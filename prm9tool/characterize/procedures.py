@@ -159,7 +159,7 @@ def _step(
 ) -> StepResult:
     fs = rig.info.sample_rate_hz
     pre, n = int(0.02 * fs), int(duration * fs)
-    rig.play(np.full(int(0.05 * fs), start), [lp.setpoint])  # settle at the start
+    rig.play(np.full(int(0.1 * fs), start), [lp.setpoint])  # settle at the start
     stimulus = np.concatenate([np.full(pre, start), np.full(n, start + amplitude)])
     band = limit if limit is not None else abs(amplitude) * 2.0 + 5.0
     rec = record(rig, stimulus, [lp.setpoint, lp.actual, lp.output], start, band)

@@ -37,7 +37,15 @@ from prm9tool.characterize.procedures import (
 )
 from prm9tool.characterize.run import Characterization, characterize, write_csv_files
 from prm9tool.views.tuning_plot import COLOURS, Plot, Series, paint_plot
-from prm9tool.views.tuning_report import bode_plots, figure_label, static_plot, verdict, write_pdf
+from prm9tool.views.tuning_report import (
+    bode_plots,
+    figure_label,
+    limit_text,
+    static_plot,
+    value_text,
+    verdict,
+    write_pdf,
+)
 
 if TYPE_CHECKING:
     from prm9tool.views.tuning_window import TuningWindow
@@ -379,8 +387,7 @@ class ReportPage(Page):
         self.last = result
         self.table.setRowCount(len(result.figures))
         for row, f in enumerate(result.figures):
-            value = "—" if math.isnan(f.value) else f"{f.value:.4g} {f.unit}"
-            cells = (figure_label(f), value, f.limit.text() if f.limit else "—", verdict(f.passed))
+            cells = (figure_label(f), value_text(f), limit_text(f), verdict(f.passed))
             for col, text in enumerate(cells):
                 self.table.setItem(row, col, QTableWidgetItem(text))
         self.table.resizeColumnsToContents()

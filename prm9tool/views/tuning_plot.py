@@ -67,7 +67,7 @@ def paint_plot(painter: QPainter, rect: QRectF, plot: Plot, ink: QColor | None =
     """Draw ``plot`` into ``rect`` (axes, grid, lines, legend, markers)."""
     ink = ink or QColor("black")
     font = QFont(painter.font())
-    font.setPixelSize(max(9, int(rect.height() / 22)))
+    font.setPixelSize(min(max(9, int(rect.height() / 22)), max(9, int(rect.width() / 60))))
     painter.setFont(font)
     metrics = painter.fontMetrics()
     line = metrics.height()

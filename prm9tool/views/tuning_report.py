@@ -18,6 +18,7 @@ from PySide6.QtCore import QCoreApplication, QUrl
 from PySide6.QtGui import QGuiApplication, QTextDocument
 from PySide6.QtPrintSupport import QPrinter
 
+from prm9tool.analysis.profile import Limit
 from prm9tool.characterize.run import Characterization, Figure
 from prm9tool.views.record import configure_pdf
 from prm9tool.views.tuning_plot import COLOURS, Plot, Series, plot_image
@@ -55,7 +56,8 @@ def verdict(passed: bool | None) -> str:
     return translate("TuningReport", "PASS") if passed else translate("TuningReport", "FAIL")
 
 
-def _value(f: Figure) -> str:
+def value_text(f: Figure) -> str:
+    """The figure's value with its unit (times in ms)."""
     if math.isnan(f.value):
         return translate("TuningReport", "not reached")
     if f.unit == "s":
@@ -63,9 +65,14 @@ def _value(f: Figure) -> str:
     return f"{f.value:.3g} {f.unit}".strip()
 
 
-def _limit(f: Figure) -> str:
+def limit_text(f: Figure) -> str:
+    """The figure's limit with its unit."""
     if f.limit is None:
         return "—"
+    if f.unit == "s":
+        lo, hi = f.limit.minimum, f.limit.maximum
+        in_ms = Limit(None if lo is None else lo * 1000, None if hi is None else hi * 1000)
+        return f"{in_ms.text()} ms"
     return f"{f.limit.text()} {f.unit}".strip()
 
 
@@ -184,7 +191,7 @@ def _figures(c: Characterization) -> str:
     for f in c.figures:
         colour = {True: "#1a7f37", False: "#c0392b", None: "#555555"}[f.passed]
         rows.append(
-            f"<tr><td>{e(figure_label(f))}</td><td>{e(_value(f))}</td><td>{e(_limit(f))}</td>"
+            f"<tr><td>{e(figure_label(f))}</td><td>{e(value_text(f))}</td><td>{e(limit_text(f))}</td>"
             f"<td style='color:{colour}'><b>{e(verdict(f.passed))}</b></td></tr>"
         )
     heading = "".join(f"<th align='left'>{e(h)}</th>" for h in head)
