@@ -46,7 +46,9 @@ def free_run_s(valve_seconds: float) -> float:
 
 def main() -> None:
     """Run every procedure once and print the table."""
-    print(f"{'procedure':32} {'physics':>8} {'valve':>8} {'wall':>8} {'valve/wall':>10} {'wall/ref':>9}")  # noqa: T201
+    print(
+        f"{'procedure':32} {'physics':>8} {'valve':>8} {'wall':>8} {'valve/wall':>10} {'wall/ref':>9}"
+    )  # noqa: T201
     for name, procedure, physics in TESTS:
         rig = EmulatorRig(EmulatedValve(E02))
         start = time.perf_counter()

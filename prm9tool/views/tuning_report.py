@@ -186,7 +186,12 @@ def _header(c: Characterization) -> str:
 
 def _figures(c: Characterization) -> str:
     e = html.escape
-    head = [translate("TuningReport", t) for t in ("Figure", "Value", "Limit", "Result")]
+    head = [
+        translate("TuningReport", "Figure"),
+        translate("TuningReport", "Value"),
+        translate("TuningReport", "Limit"),
+        translate("TuningReport", "Result"),
+    ]
     rows = []
     for f in c.figures:
         colour = {True: "#1a7f37", False: "#c0392b", None: "#555555"}[f.passed]
