@@ -48,7 +48,7 @@ def main() -> None:
     """Run every procedure once and print the table."""
     print(
         f"{'procedure':32} {'physics':>8} {'valve':>8} {'wall':>8} {'valve/wall':>10} {'wall/ref':>9}"
-    )  # noqa: T201
+    )
     for name, procedure, physics in TESTS:
         rig = EmulatorRig(EmulatedValve(E02))
         start = time.perf_counter()
@@ -57,7 +57,7 @@ def main() -> None:
         valve_s = rig.valve_seconds
         reference = free_run_s(valve_s)
         physics_text = f"{physics:7.2f}s" if physics else "      —"
-        print(  # noqa: T201
+        print(
             f"{name:32} {physics_text} {valve_s:7.2f}s {wall:7.2f}s {valve_s / wall:9.1f}x "
             f"{wall / reference:8.1f}x"
         )
