@@ -34,6 +34,18 @@ Dokud soubor neopravíte, zná prm9tool pouze dodaná šoupátka.</translation>
             <source>--emulator {0}: the serial number must be 1 … 4294967295</source>
             <translation>--emulator {0}: výrobní číslo musí být 1 … 4294967295</translation>
         </message>
+        <message>
+            <source>Internal error</source>
+            <translation>Vnitřní chyba</translation>
+        </message>
+        <message>
+            <source>prm9tool failed: {0}
+
+The last action may not have been completed. Save your work under a new name and please report this error with the details below.</source>
+            <translation>V prm9tool došlo k chybě: {0}
+
+Poslední akce možná nebyla dokončena. Uložte svou práci pod novým názvem a nahlaste prosím tuto chybu s podrobnostmi níže.</translation>
+        </message>
     </context>
     <context>
         <name>AutotunePage</name>
@@ -378,6 +390,72 @@ Dokud soubor neopravíte, zná prm9tool pouze dodaná šoupátka.</translation>
         </message>
     </context>
     <context>
+        <name>CommissioningPanel</name>
+        <message>
+            <source>Commissioning</source>
+            <translation>Uvedení do provozu</translation>
+        </message>
+        <message>
+            <source>Enable</source>
+            <translation>Uvolnit</translation>
+        </message>
+        <message>
+            <source>Control word 0x6040: 08h → 09h → 0Bh → 0Fh (manual §7.6): resets a fault, then DISABLED, HOLD, DEVICE_MODE_ACTIVE. The valve follows its setpoint.</source>
+            <translation>Řídicí slovo 0x6040: 08h → 09h → 0Bh → 0Fh (návod §7.6): resetuje chybu, pak DISABLED, HOLD, DEVICE_MODE_ACTIVE. Ventil sleduje svou žádanou hodnotu.</translation>
+        </message>
+        <message>
+            <source>Disable</source>
+            <translation>Zablokovat</translation>
+        </message>
+        <message>
+            <source>Control word 0x6040: 0Fh → 0Bh → 09h → 08h, back to INIT.</source>
+            <translation>Řídicí slovo 0x6040: 0Fh → 0Bh → 09h → 08h, zpět do INIT.</translation>
+        </message>
+        <message>
+            <source>NMT start</source>
+            <translation>NMT start</translation>
+        </message>
+        <message>
+            <source>NMT start: operational (PDOs run)</source>
+            <translation>NMT start: operational (PDO běží)</translation>
+        </message>
+        <message>
+            <source>NMT pre-operational</source>
+            <translation>NMT pre-operational</translation>
+        </message>
+        <message>
+            <source>NMT enter pre-operational</source>
+            <translation>NMT: přejít do pre-operational</translation>
+        </message>
+        <message>
+            <source>NMT stop</source>
+            <translation>NMT stop</translation>
+        </message>
+        <message>
+            <source>NMT stop: only NMT is answered</source>
+            <translation>NMT stop: odpovídá jen na NMT</translation>
+        </message>
+        <message>
+            <source>The valve follows its setpoint (DEVICE_MODE_ACTIVE).</source>
+            <translation>Ventil sleduje svou žádanou hodnotu (DEVICE_MODE_ACTIVE).</translation>
+        </message>
+        <message>
+            <source>The valve does not follow its setpoint: {0}</source>
+            <translation>Ventil nesleduje svou žádanou hodnotu: {0}</translation>
+        </message>
+    </context>
+    <context>
+        <name>Compare</name>
+        <message>
+            <source>The type keys differ: {0} is {1}, {2} is {3}.</source>
+            <translation type="unfinished"></translation>
+        </message>
+        <message>
+            <source>The valve variants differ: only the parameters both have are compared; {0} parameters that one side lacks are left out.</source>
+            <translation type="unfinished"></translation>
+        </message>
+    </context>
+    <context>
         <name>ControlPanel</name>
         <message>
             <source>Recording</source>
@@ -508,6 +586,10 @@ Dokud soubor neopravíte, zná prm9tool pouze dodaná šoupátka.</translation>
         <message>
             <source>Nominal coil current CURNORM: %1 mA — no limit may exceed it.</source>
             <translation>Jmenovitý proud cívky CURNORM: %1 mA – žádná mez jej nesmí překročit.</translation>
+        </message>
+        <message>
+            <source>Dither: ±%1 mA peak (DTAMP 100 % = %2 % of CURNORM).</source>
+            <translation>Dynamické mazání: ±%1 mA špičkově (DTAMP 100 % = %2 % z CURNORM).</translation>
         </message>
         <message>
             <source>coil %1</source>
@@ -812,6 +894,111 @@ Dokud soubor neopravíte, zná prm9tool pouze dodaná šoupátka.</translation>
         </message>
     </context>
     <context>
+        <name>EmulatedValve</name>
+        <message>
+            <source>Coil A disconnected</source>
+            <translation>Cívka A odpojena</translation>
+        </message>
+        <message>
+            <source>Coil A short circuit (over-current)</source>
+            <translation>Cívka A zkrat (nadproud)</translation>
+        </message>
+        <message>
+            <source>Coil B disconnected</source>
+            <translation>Cívka B odpojena</translation>
+        </message>
+        <message>
+            <source>Coil B short circuit (over-current)</source>
+            <translation>Cívka B zkrat (nadproud)</translation>
+        </message>
+        <message>
+            <source>Setpoint wire break</source>
+            <translation>Přerušený vodič žádané hodnoty</translation>
+        </message>
+        <message>
+            <source>External sensor wire break</source>
+            <translation>Přerušený vodič externího snímače</translation>
+        </message>
+        <message>
+            <source>Spool position sensor (LVDT) wire break</source>
+            <translation>Přerušený vodič snímače polohy šoupátka (LVDT)</translation>
+        </message>
+        <message>
+            <source>Supply too low (17 V)</source>
+            <translation>Napájení příliš nízké (17 V)</translation>
+        </message>
+        <message>
+            <source>Supply too high (31 V)</source>
+            <translation>Napájení příliš vysoké (31 V)</translation>
+        </message>
+        <message>
+            <source>Over-temperature (105 °C)</source>
+            <translation>Přehřátí (105 °C)</translation>
+        </message>
+    </context>
+    <context>
+        <name>EmulatedValveDialog</name>
+        <message>
+            <source>Emulated valve</source>
+            <translation>Emulovaný ventil</translation>
+        </message>
+        <message>
+            <source>Setpoint input [{0}]:</source>
+            <translation>Vstup žádané hodnoty [{0}]:</translation>
+        </message>
+        <message>
+            <source>External sensor input [{0}]:</source>
+            <translation>Vstup externího snímače [{0}]:</translation>
+        </message>
+        <message>
+            <source>Supply voltage [V]:</source>
+            <translation>Napájecí napětí [V]:</translation>
+        </message>
+        <message>
+            <source>Ambient temperature [°C]:</source>
+            <translation>Okolní teplota [°C]:</translation>
+        </message>
+        <message>
+            <source>Interface / bit-rate switch:</source>
+            <translation>Přepínač rozhraní / přenosové rychlosti:</translation>
+        </message>
+        <message>
+            <source>Node-ID switch:</source>
+            <translation>Přepínač ID uzlu:</translation>
+        </message>
+        <message>
+            <source>The valve reads its rotary switches at power-up only: restart it (Valve → Restart valve) for a new position to apply. The setpoint input counts only while the valve takes its setpoint from the analog input (no CANopen, no setpoint generator).</source>
+            <translation>Ventil čte své otočné přepínače jen po zapnutí: restartujte ho (Ventil → Restart ventilu), aby platila nová poloha. Vstup žádané hodnoty platí jen tehdy, když ventil bere žádanou hodnotu z analogového vstupu (bez CANopen, bez generátoru žádané hodnoty).</translation>
+        </message>
+    </context>
+    <context>
+        <name>EmulatedValveMenu</name>
+        <message>
+            <source>E&amp;mulated valve</source>
+            <translation>E&amp;mulovaný ventil</translation>
+        </message>
+        <message>
+            <source>&amp;Inputs and switches…</source>
+            <translation>&amp;Vstupy a přepínače…</translation>
+        </message>
+        <message>
+            <source>Setpoint and sensor signals, supply, temperature and rotary switches</source>
+            <translation>Signály žádané hodnoty a snímače, napájení, teplota a otočné přepínače</translation>
+        </message>
+        <message>
+            <source>&amp;Pull the USB cable</source>
+            <translation>&amp;Vytáhnout kabel USB</translation>
+        </message>
+        <message>
+            <source>The link drops as when a real cable is pulled</source>
+            <translation>Spojení se přeruší jako při vytažení skutečného kabelu</translation>
+        </message>
+        <message>
+            <source>Inject this fault into the emulated valve, or repair it</source>
+            <translation>Vyvolat tuto poruchu v emulovaném ventilu, nebo ji odstranit</translation>
+        </message>
+    </context>
+    <context>
         <name>EmulatorDialog</name>
         <message>
             <source>Add emulated valve</source>
@@ -847,6 +1034,10 @@ Dokud soubor neopravíte, zná prm9tool pouze dodaná šoupátka.</translation>
         <message>
             <source>The valve refused the access.</source>
             <translation>Ventil přístup odmítl.</translation>
+        </message>
+        <message>
+            <source>The history database cannot be used.</source>
+            <translation type="unfinished"></translation>
         </message>
     </context>
     <context>
@@ -1008,6 +1199,17 @@ Dokud soubor neopravíte, zná prm9tool pouze dodaná šoupátka.</translation>
         <message>
             <source>The waveform reaches {0} … {1} %; the setpoint must stay within {2} … {3} %.</source>
             <translation>Průběh dosahuje {0} … {1} %; žádaná hodnota musí zůstat v rozsahu {2} … {3} %.</translation>
+        </message>
+    </context>
+    <context>
+        <name>Help</name>
+        <message>
+            <source>Home page</source>
+            <translation>Domovská stránka</translation>
+        </message>
+        <message>
+            <source>No web browser could be started. The home page is {0}</source>
+            <translation>Nepodařilo se spustit webový prohlížeč. Domovská stránka je {0}</translation>
         </message>
     </context>
     <context>
@@ -1381,16 +1583,28 @@ Dokud soubor neopravíte, zná prm9tool pouze dodaná šoupátka.</translation>
             <translation>OFFLINE</translation>
         </message>
         <message>
+            <source>CONNECTING</source>
+            <translation>PŘIPOJOVÁNÍ</translation>
+        </message>
+        <message>
             <source>Mode: {0}</source>
             <translation>Režim: {0}</translation>
         </message>
         <message>
+            <source>Connected; the document and the valve are being compared</source>
+            <translation>Připojeno; dokument a ventil se porovnávají</translation>
+        </message>
+        <message>
             <source>Expert</source>
-            <translation type="unfinished">Expertní</translation>
+            <translation>Expertní</translation>
         </message>
         <message>
             <source>Basic</source>
-            <translation type="unfinished">Základní</translation>
+            <translation>Základní</translation>
+        </message>
+        <message>
+            <source>Level: {0}</source>
+            <translation>Úroveň: {0}</translation>
         </message>
         <message>
             <source>Status: {0}</source>
@@ -2127,6 +2341,18 @@ Ujistěte se, že pohyb stroje je bezpečný. Spustit generátor?</translation>
             <source>no reason given</source>
             <translation>bez udání důvodu</translation>
         </message>
+        <message>
+            <source>The valve does not follow its setpoint: {0}</source>
+            <translation>Ventil nesleduje svou žádanou hodnotu: {0}</translation>
+        </message>
+        <message>
+            <source>The valve does not follow its setpoint: {0}
+
+Enable it now (NMT start, control word 08h → 09h → 0Bh → 0Fh)?</source>
+            <translation>Ventil nesleduje svou žádanou hodnotu: {0}
+
+Uvolnit ho nyní (NMT start, řídicí slovo 08h → 09h → 0Bh → 0Fh)?</translation>
+        </message>
     </context>
     <context>
         <name>SensorScalingDialog</name>
@@ -2273,6 +2499,14 @@ Ujistěte se, že pohyb stroje je bezpečný. Spustit generátor?</translation>
         <message>
             <source>No response to the step in {0}: the response stays flat or within its noise.</source>
             <translation>Žádná odezva na skok v {0}: odezva zůstává plochá nebo v rámci šumu.</translation>
+        </message>
+        <message>
+            <source>Measured on step {0} of {1} in {2}.</source>
+            <translation>Změřeno na skoku {0} z {1} v {2}.</translation>
+        </message>
+        <message>
+            <source>Window too short: in {0} the response has not come to rest yet. Widen the time window or move the cursors apart.</source>
+            <translation>Okno je příliš krátké: v {0} se odezva ještě neustálila. Zvětšete časové okno nebo oddalte kurzory.</translation>
         </message>
     </context>
     <context>
@@ -2694,6 +2928,65 @@ Zajistěte, aby to hydraulika bezpečně snesla. Tlačítko Stop test kdykoli uk
         </message>
     </context>
     <context>
+        <name>ValveControl</name>
+        <message>
+            <source>no valve is connected.</source>
+            <translation>není připojen žádný ventil.</translation>
+        </message>
+        <message>
+            <source>the valve is starting up (about 2 s).</source>
+            <translation>ventil se spouští (asi 2 s).</translation>
+        </message>
+        <message>
+            <source>an error stops it (device state {0}); Valve → Valve status lists the error and resets it with Enable once the cause is gone.</source>
+            <translation>zastavuje ho chyba (stav zařízení {0}); Ventil → Stav ventilu chybu uvádí a tlačítkem Uvolnit ji po odstranění příčiny resetuje.</translation>
+        </message>
+        <message>
+            <source>it waits for a CANopen master (NMT {0}, device state {1}). Enable it under Valve → Valve status (control word 08h → 09h → 0Bh → 0Fh).</source>
+            <translation>čeká na CANopen master (NMT {0}, stav zařízení {1}). Uvolněte ho v nabídce Ventil → Stav ventilu (řídicí slovo 08h → 09h → 0Bh → 0Fh).</translation>
+        </message>
+        <message>
+            <source>its CANopen master stopped it (NMT stopped). Start it under Valve → Valve status.</source>
+            <translation>jeho CANopen master ho zastavil (NMT zastaveno). Spusťte ho v nabídce Ventil → Stav ventilu.</translation>
+        </message>
+        <message>
+            <source>it is not enabled (device state {0}). Enable it under Valve → Valve status.</source>
+            <translation>není uvolněn (stav zařízení {0}). Uvolněte ho v nabídce Ventil → Stav ventilu.</translation>
+        </message>
+        <message>
+            <source>it holds its position (device state HOLD). Enable it under Valve → Valve status.</source>
+            <translation>drží svou polohu (stav zařízení HOLD). Uvolněte ho v nabídce Ventil → Stav ventilu.</translation>
+        </message>
+        <message>
+            <source>offline</source>
+            <translation>offline</translation>
+        </message>
+        <message>
+            <source>starting up</source>
+            <translation>spouští se</translation>
+        </message>
+        <message>
+            <source>fault</source>
+            <translation>chyba</translation>
+        </message>
+        <message>
+            <source>waiting for a CANopen master</source>
+            <translation>čeká na CANopen master</translation>
+        </message>
+        <message>
+            <source>NMT stopped</source>
+            <translation>NMT zastaveno</translation>
+        </message>
+        <message>
+            <source>not enabled</source>
+            <translation>neuvolněn</translation>
+        </message>
+        <message>
+            <source>hold</source>
+            <translation>držení</translation>
+        </message>
+    </context>
+    <context>
         <name>ValveSelectionDialog</name>
         <message>
             <source>Valve selection</source>
@@ -2973,6 +3266,22 @@ Zajistěte, aby to hydraulika bezpečně snesla. Tlačítko Stop test kdykoli uk
             <source>Set every parameter of the document to the factory default?</source>
             <translation>Nastavit všechny parametry dokumentu na tovární hodnoty?</translation>
         </message>
+        <message numerus="yes">
+            <source>%n parameter(s) written, verified and stored at {0}</source>
+            <translation>
+                <numerusform>%n parametr zapsán, ověřen a uložen v {0}</numerusform>
+                <numerusform>%n parametry zapsány, ověřeny a uloženy v {0}</numerusform>
+                <numerusform>%n parametrů zapsáno, ověřeno a uloženo v {0}</numerusform>
+            </translation>
+        </message>
+        <message numerus="yes">
+            <source>%n parameter(s) written, verified and stored again at {0}: the valve already held them</source>
+            <translation>
+                <numerusform>%n parametr znovu zapsán, ověřen a uložen v {0}: ventil jej již obsahoval</numerusform>
+                <numerusform>%n parametry znovu zapsány, ověřeny a uloženy v {0}: ventil je již obsahoval</numerusform>
+                <numerusform>%n parametrů znovu zapsáno, ověřeno a uloženo v {0}: ventil je již obsahoval</numerusform>
+            </translation>
+        </message>
         <message>
             <source>Restore factory values</source>
             <translation>Obnovit tovární nastavení</translation>
@@ -3012,14 +3321,6 @@ Zajistěte, aby to hydraulika bezpečně snesla. Tlačítko Stop test kdykoli uk
         <message>
             <source>Factory values restored; the valve's previous parameters are in {0}</source>
             <translation>Tovární nastavení obnoveno; dosavadní parametry ventilu jsou v {0}</translation>
-        </message>
-        <message numerus="yes">
-            <source>%n parameter(s) written, verified and stored</source>
-            <translation>
-                <numerusform>%n parametr zapsán, ověřen a uložen</numerusform>
-                <numerusform>%n parametry zapsány, ověřeny a uloženy</numerusform>
-                <numerusform>%n parametrů zapsáno, ověřeno a uloženo</numerusform>
-            </translation>
         </message>
         <message>
             <source>Upload failed</source>

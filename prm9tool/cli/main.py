@@ -49,6 +49,8 @@ CAN_OPTIONS = {"--can-interface": "can_interface", "--can-channel": "can_channel
 
 def add_device_options(parser: argparse.ArgumentParser) -> None:
     """Device selection shared by the GUI and the batch mode (one device factory)."""
+    from prm9tool.catalogue.typekey import DEFAULT_EMULATOR_TYPE_KEY  # loaded at start anyway
+
     group = parser.add_argument_group("device selection")
     group.add_argument(
         "--device",
@@ -67,7 +69,8 @@ def add_device_options(parser: argparse.ArgumentParser) -> None:
         nargs="?",
         const="",
         metavar="TYPEKEY[:SERIAL]",
-        help="use an emulated valve of that type (the GUI goes online with it); repeatable",
+        help="use an emulated valve of that type (the GUI goes online with it); repeatable; "
+        f"without TYPEKEY {DEFAULT_EMULATOR_TYPE_KEY}",
     )
     # no defaults here: None means "not given" (usage_problem) and CanOptions fills it in
     group.add_argument(
@@ -329,7 +332,7 @@ def main(argv: Sequence[str] | None = None) -> int:
 
 
 def _load_user_spools() -> TypeKeyError | None:
-    """Extend the spool catalogue with ``<user data dir>/spools.json`` (SPEC §2.2).
+    """Extend the spool catalogue with ``<user data dir>/spools.json`` (type key: manual §8.7.1).
 
     A broken file is reported on standard error (the GUI shows the returned error as well) and
     left out: type keys with the spools the program ships keep working, and one with a

@@ -20,6 +20,7 @@ from PySide6.QtCore import (
 from PySide6.QtGui import QColor, QFont, QGuiApplication, QPalette
 
 from prm9tool.catalogue import CATALOGUE, Access, Parameter
+from prm9tool.catalogue.signals import MEASURED_DECIMALS, format_measured
 from prm9tool.i18n import current_language, text
 from prm9tool.model.access import AccessModel
 from prm9tool.model.document import ParameterDocument
@@ -54,6 +55,8 @@ def format_value(doc: ParameterDocument, param: Parameter, live: bool) -> str:
         return f"0x{raw:04X}"
     if param.choices and isinstance(raw, int):
         return f"{raw}: {param.choice_text(raw, current_language())}"
+    if live and not param.in_file and param.unit in MEASURED_DECIMALS and isinstance(raw, int):
+        return format_measured(raw * param.scale, param.unit)  # as the diagram shows it
     return param.format_display(raw)
 
 

@@ -26,7 +26,7 @@ from PySide6.QtGui import (
 from PySide6.QtWidgets import QDialog, QGraphicsView, QMenu, QWidget
 
 from prm9tool.catalogue import CATALOGUE
-from prm9tool.catalogue.signals import BY_KEY
+from prm9tool.catalogue.signals import BY_KEY, format_measured
 from prm9tool.i18n import text
 from prm9tool.model.access import AccessModel
 from prm9tool.model.document import ParameterDocument
@@ -41,7 +41,6 @@ _CTX = "DiagramBlock"
 # Values a block shows besides the parameters it edits.
 _ALSO_SHOWN = {"valve": ("PCODE",), "canopen": ("SWBAUD", "SWNODE")}
 ZOOM_STEP = 1.15
-_DECIMALS = {"%": 1, "mA": 0, "V": 2, "°C": 1}
 
 
 # Short tags for measuring points that share a block with others of the same unit.
@@ -60,7 +59,7 @@ def format_signal(key: str, raw: float) -> str:
     signal = BY_KEY[key]
     value = signal.to_display(raw)
     tag = f"{_TAGS[key]} " if key in _TAGS else ""
-    return f"{tag}{value:.{_DECIMALS.get(signal.unit, 1)}f} {signal.unit}"
+    return f"{tag}{format_measured(value, signal.unit)} {signal.unit}"
 
 
 class DiagramView(QGraphicsView):

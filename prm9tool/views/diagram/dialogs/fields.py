@@ -9,7 +9,8 @@ from __future__ import annotations
 
 from collections.abc import Callable, Iterable
 
-from PySide6.QtCore import QSignalBlocker
+from PySide6.QtCore import QSignalBlocker, Qt
+from PySide6.QtGui import QKeyEvent
 from PySide6.QtWidgets import QComboBox, QLineEdit, QWidget
 
 from prm9tool.catalogue import CATALOGUE, Parameter
@@ -73,6 +74,17 @@ class ValueField(QLineEdit):
         self.setEnabled(allowed)
         reason = access.why_locked(self.param)
         self.setToolTip(reason or f"{self.mnemonic}: {range_text(self.param)}")
+
+    def keyPressEvent(self, event: QKeyEvent) -> None:
+        """Enter commits the field (``editingFinished``) and stays in the dialog.
+
+        The line edit passes Enter on to its dialog, whose default button (Close) would
+        otherwise close the dialog instead of showing the value's effect or its refusal.
+        """
+        super().keyPressEvent(event)
+        if event.key() in (Qt.Key.Key_Return, Qt.Key.Key_Enter):
+            self.selectAll()
+            event.accept()
 
     def _on_text_edited(self, _text: str) -> None:
         self.setStyleSheet("")
