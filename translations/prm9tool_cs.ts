@@ -48,10 +48,132 @@ Poslední akce možná nebyla dokončena. Uložte svou práci pod novým názvem
         </message>
     </context>
     <context>
+        <name>AutotunePage</name>
+        <message>
+            <source>steps of %1 % from 0 %, a few times, about %2 s in all</source>
+            <translation>několik skoků o %1 % od 0 %, celkem asi %2 s</translation>
+        </message>
+        <message>
+            <source>P only with rising gain until the loop oscillates (steps of 5 %, oscillation stopped at ±40 %), about 5 s</source>
+            <translation>pouze P se stoupajícím zesílením, dokud se smyčka nerozkmitá (skoky 5 %, kmitání přerušeno při ±40 %), asi 5 s</translation>
+        </message>
+        <message>
+            <source>Model: gain %1, lags %2 ms, dead time %3 ms (fit error %4 %).</source>
+            <translation>Model: zesílení %1, zpoždění %2 ms, dopravní zpoždění %3 ms (chyba proložení %4 %).</translation>
+        </message>
+        <message>
+            <source>Critical gain Kkr = %1, period Tkr = %2 ms: K = 0.5·Kkr, Ti = 0.8·Tkr, Td = 0.12·Tkr.</source>
+            <translation>Kritické zesílení Kkr = %1, perioda Tkr = %2 ms: K = 0.5·Kkr, Ti = 0.8·Tkr, Td = 0.12·Tkr.</translation>
+        </message>
+        <message>
+            <source>before (measured)</source>
+            <translation>před (změřeno)</translation>
+        </message>
+        <message>
+            <source>proposed (measured)</source>
+            <translation>návrh (změřeno)</translation>
+        </message>
+        <message>
+            <source>proposed (simulated)</source>
+            <translation>návrh (simulováno)</translation>
+        </message>
+        <message>
+            <source>Step response</source>
+            <translation>Přechodová charakteristika</translation>
+        </message>
+        <message>
+            <source>time [ms]</source>
+            <translation>čas [ms]</translation>
+        </message>
+        <message>
+            <source>no response</source>
+            <translation>bez odezvy</translation>
+        </message>
+        <message>
+            <source>overshoot %1 %, settling %2</source>
+            <translation>překmit %1 %, ustálení %2</translation>
+        </message>
+        <message>
+            <source>Before: %1. Proposed: %2.</source>
+            <translation>Před: %1. Návrh: %2.</translation>
+        </message>
+        <message>
+            <source>Autotune</source>
+            <translation>Autotune</translation>
+        </message>
+        <message>
+            <source>Model-based (never oscillates)</source>
+            <translation>Podle modelu (nikdy nekmitá)</translation>
+        </message>
+        <message>
+            <source>Critical gain (APOSYS 10 rule)</source>
+            <translation>Kritické zesílení (pravidlo APOSYS 10)</translation>
+        </message>
+        <message>
+            <source>Method:</source>
+            <translation>Metoda:</translation>
+        </message>
+        <message>
+            <source>Step amplitude:</source>
+            <translation>Velikost skoku:</translation>
+        </message>
+        <message>
+            <source>Target overshoot at most:</source>
+            <translation>Překmit nejvýše:</translation>
+        </message>
+        <message>
+            <source>Target settling time (±2 %) at most:</source>
+            <translation>Doba ustálení (±2 %) nejvýše:</translation>
+        </message>
+        <message>
+            <source>Run autotune</source>
+            <translation>Spustit autotune</translation>
+        </message>
+        <message>
+            <source>Accept the proposed gains</source>
+            <translation>Převzít navržené konstanty</translation>
+        </message>
+    </context>
+    <context>
         <name>BlockDialog</name>
         <message>
             <source>Read only: %1 (View → Access level)</source>
             <translation>Jen pro čtení: %1 (Náhled → Úroveň oprávnění)</translation>
+        </message>
+    </context>
+    <context>
+        <name>BodePage</name>
+        <message>
+            <source>a sine sweep %1 … %2 Hz of ±%3 % around %4 %, %5 s</source>
+            <translation>rozmítaný sinus %1 … %2 Hz o ±%3 % kolem %4 %, %5 s</translation>
+        </message>
+        <message>
+            <source>−3 dB at %1 Hz, −90° at %2 Hz.</source>
+            <translation>−3 dB při %1 Hz, −90° při %2 Hz.</translation>
+        </message>
+        <message>
+            <source>Amplitude:</source>
+            <translation>Amplituda:</translation>
+        </message>
+        <message>
+            <source>Operating point:</source>
+            <translation>Pracovní bod:</translation>
+        </message>
+        <message>
+            <source>From:</source>
+            <translation>Od:</translation>
+        </message>
+        <message>
+            <source>To:</source>
+            <translation>Do:</translation>
+        </message>
+        <message>
+            <source>Duration:</source>
+            <translation>Doba trvání:</translation>
+        </message>
+        <message>
+            <source>Measure the frequency response</source>
+            <translation>Změřit frekvenční charakteristiku</translation>
         </message>
     </context>
     <context>
@@ -426,6 +548,10 @@ Poslední akce možná nebyla dokončena. Uložte svou práci pod novým názvem
     </context>
     <context>
         <name>ControllerDialog</name>
+        <message>
+            <source>Tuning and autotune…</source>
+            <translation>Ladění a autotune…</translation>
+        </message>
         <message>
             <source>No simulation available.</source>
             <translation>Simulace není k dispozici.</translation>
@@ -2012,6 +2138,53 @@ Poslední akce možná nebyla dokončena. Uložte svou práci pod novým názvem
         </message>
     </context>
     <context>
+        <name>ReportPage</name>
+        <message>
+            <source>steps of %1 %, a sine sweep of ±%2 % and a triangle over the whole range, about %3 s</source>
+            <translation>skoky %1 %, rozmítaný sinus ±%2 % a trojúhelník přes celý rozsah, asi %3 s</translation>
+        </message>
+        <message>
+            <source>Result: %1</source>
+            <translation>Výsledek: %1</translation>
+        </message>
+        <message>
+            <source>Save the test report</source>
+            <translation>Uložit protokol o zkoušce</translation>
+        </message>
+        <message>
+            <source>Cannot write the report: %1</source>
+            <translation>Protokol nelze zapsat: %1</translation>
+        </message>
+        <message>
+            <source>Acceptance profile (TOML, empty: default):</source>
+            <translation>Přejímací profil (TOML, prázdné: výchozí):</translation>
+        </message>
+        <message>
+            <source>Run the end-of-line test</source>
+            <translation>Spustit výstupní zkoušku</translation>
+        </message>
+        <message>
+            <source>Save PDF and CSV…</source>
+            <translation>Uložit PDF a CSV…</translation>
+        </message>
+        <message>
+            <source>Figure</source>
+            <translation>Ukazatel</translation>
+        </message>
+        <message>
+            <source>Value</source>
+            <translation>Hodnota</translation>
+        </message>
+        <message>
+            <source>Limit</source>
+            <translation>Mez</translation>
+        </message>
+        <message>
+            <source>Result</source>
+            <translation>Výsledek</translation>
+        </message>
+    </context>
+    <context>
         <name>RestartDialog</name>
         <message>
             <source>Restart valve</source>
@@ -2177,6 +2350,10 @@ Ujistěte se, že pohyb stroje je bezpečný. Spustit generátor?</translation>
             <translation>Ventil odmítl hodnotu generátoru žádané hodnoty ({0}): generátor se zastavil.</translation>
         </message>
         <message>
+            <source>Tuning and characterization…</source>
+            <translation>Ladění a charakterizace…</translation>
+        </message>
+        <message>
             <source>no reason given</source>
             <translation>bez udání důvodu</translation>
         </message>
@@ -2248,6 +2425,37 @@ Uvolnit ho nyní (NMT start, řídicí slovo 08h → 09h → 0Bh → 0Fh)?</tran
         <message>
             <source>This type is not recommended for a valve with %1 (manual table 8-4).</source>
             <translation>Tento typ se pro ventil s %1 nedoporučuje (příručka, tabulka 8-4).</translation>
+        </message>
+    </context>
+    <context>
+        <name>StaticPage</name>
+        <message>
+            <source>a triangle over the whole range −100 … 100 %, %1 s</source>
+            <translation>trojúhelník přes celý rozsah −100 … 100 %, %1 s</translation>
+        </message>
+        <message>
+            <source>linearized (preview)</source>
+            <translation>linearizováno (náhled)</translation>
+        </message>
+        <message>
+            <source>Gain %1, hysteresis %2 %, linearity error %3 %, dead band %4 %.</source>
+            <translation>Zesílení %1, hystereze %2 %, chyba linearity %3 %, pásmo necitlivosti %4 %.</translation>
+        </message>
+        <message>
+            <source>Linearization from the static characteristic</source>
+            <translation>Linearizace ze statické charakteristiky</translation>
+        </message>
+        <message>
+            <source>Triangle period:</source>
+            <translation>Perioda trojúhelníku:</translation>
+        </message>
+        <message>
+            <source>Measure the static characteristic</source>
+            <translation>Změřit statickou charakteristiku</translation>
+        </message>
+        <message>
+            <source>Apply the proposed linearization</source>
+            <translation>Použít navrženou linearizaci</translation>
         </message>
     </context>
     <context>
@@ -2353,6 +2561,256 @@ Uvolnit ho nyní (NMT start, řídicí slovo 08h → 09h → 0Bh → 0Fh)?</tran
         <message>
             <source>output</source>
             <translation>výstup</translation>
+        </message>
+    </context>
+    <context>
+        <name>TuningReport</name>
+        <message>
+            <source>overshoot</source>
+            <translation>překmit</translation>
+        </message>
+        <message>
+            <source>rise time (10–90 %)</source>
+            <translation>doba náběhu (10–90 %)</translation>
+        </message>
+        <message>
+            <source>settling time (±2 %)</source>
+            <translation>doba ustálení (±2 %)</translation>
+        </message>
+        <message>
+            <source>−3 dB frequency</source>
+            <translation>frekvence −3 dB</translation>
+        </message>
+        <message>
+            <source>−90° frequency</source>
+            <translation>frekvence −90°</translation>
+        </message>
+        <message>
+            <source>gain</source>
+            <translation>zesílení</translation>
+        </message>
+        <message>
+            <source>hysteresis</source>
+            <translation>hystereze</translation>
+        </message>
+        <message>
+            <source>linearity error</source>
+            <translation>chyba linearity</translation>
+        </message>
+        <message>
+            <source>dead band</source>
+            <translation>pásmo necitlivosti</translation>
+        </message>
+        <message>
+            <source>step %1 %: %2</source>
+            <translation>skok %1 %: %2</translation>
+        </message>
+        <message>
+            <source>PASS</source>
+            <translation>VYHOVUJE</translation>
+        </message>
+        <message>
+            <source>FAIL</source>
+            <translation>NEVYHOVUJE</translation>
+        </message>
+        <message>
+            <source>not reached</source>
+            <translation>nedosaženo</translation>
+        </message>
+        <message>
+            <source>Step response %1 %</source>
+            <translation>Přechodová charakteristika %1 %</translation>
+        </message>
+        <message>
+            <source>time [ms]</source>
+            <translation>čas [ms]</translation>
+        </message>
+        <message>
+            <source>setpoint</source>
+            <translation>žádaná hodnota</translation>
+        </message>
+        <message>
+            <source>actual</source>
+            <translation>skutečná hodnota</translation>
+        </message>
+        <message>
+            <source>frequency [Hz]</source>
+            <translation>frekvence [Hz]</translation>
+        </message>
+        <message>
+            <source>Frequency response ±%1 %: magnitude</source>
+            <translation>Frekvenční charakteristika ±%1 %: amplituda</translation>
+        </message>
+        <message>
+            <source>magnitude</source>
+            <translation>amplituda</translation>
+        </message>
+        <message>
+            <source>Phase and coherence</source>
+            <translation>Fáze a koherence</translation>
+        </message>
+        <message>
+            <source>phase</source>
+            <translation>fáze</translation>
+        </message>
+        <message>
+            <source>coherence ×100</source>
+            <translation>koherence ×100</translation>
+        </message>
+        <message>
+            <source>Static characteristic</source>
+            <translation>Statická charakteristika</translation>
+        </message>
+        <message>
+            <source>demand [%]</source>
+            <translation>žádaná hodnota [%]</translation>
+        </message>
+        <message>
+            <source>actual [%]</source>
+            <translation>skutečná hodnota [%]</translation>
+        </message>
+        <message>
+            <source>rising</source>
+            <translation>stoupající</translation>
+        </message>
+        <message>
+            <source>falling</source>
+            <translation>klesající</translation>
+        </message>
+        <message>
+            <source>best line</source>
+            <translation>proložená přímka</translation>
+        </message>
+        <message>
+            <source>Type key</source>
+            <translation>Objednací kód</translation>
+        </message>
+        <message>
+            <source>Serial number</source>
+            <translation>Sériové číslo</translation>
+        </message>
+        <message>
+            <source>Firmware</source>
+            <translation>Firmware</translation>
+        </message>
+        <message>
+            <source>Date</source>
+            <translation>Datum</translation>
+        </message>
+        <message>
+            <source>Link</source>
+            <translation>Spojení</translation>
+        </message>
+        <message>
+            <source>Acceptance profile</source>
+            <translation>Přejímací profil</translation>
+        </message>
+        <message>
+            <source>Result</source>
+            <translation>Výsledek</translation>
+        </message>
+        <message>
+            <source>PRM9 test report</source>
+            <translation>Protokol o zkoušce PRM9</translation>
+        </message>
+        <message>
+            <source>Figure</source>
+            <translation>Ukazatel</translation>
+        </message>
+        <message>
+            <source>Value</source>
+            <translation>Hodnota</translation>
+        </message>
+        <message>
+            <source>Limit</source>
+            <translation>Mez</translation>
+        </message>
+        <message>
+            <source>Parameter set (raw values)</source>
+            <translation>Sada parametrů (surové hodnoty)</translation>
+        </message>
+    </context>
+    <context>
+        <name>TuningWindow</name>
+        <message>
+            <source>Running: %1</source>
+            <translation>Probíhá: %1</translation>
+        </message>
+        <message>
+            <source>This test moves the spool (and on E04 the actuator): %1.
+
+Make sure the hydraulics are safe for it. Stop ends it at any time and puts the valve back as it was. Start the test?</source>
+            <translation>Tento test pohybuje šoupátkem (a u E04 pohonem): %1.
+
+Zajistěte, aby to hydraulika bezpečně snesla. Tlačítko Stop test kdykoli ukončí a vrátí ventil do původního stavu. Spustit test?</translation>
+        </message>
+        <message>
+            <source>Tuning</source>
+            <translation>Ladění</translation>
+        </message>
+        <message>
+            <source>Stopping…</source>
+            <translation>Přerušuje se…</translation>
+        </message>
+        <message>
+            <source>Done.</source>
+            <translation>Hotovo.</translation>
+        </message>
+        <message>
+            <source>Stopped: %1</source>
+            <translation>Přerušeno: %1</translation>
+        </message>
+        <message>
+            <source>Accepted: %1</source>
+            <translation>Převzato: %1</translation>
+        </message>
+        <message>
+            <source>Tuning and characterization</source>
+            <translation>Ladění a charakterizace</translation>
+        </message>
+        <message>
+            <source>Position controller (spool)</source>
+            <translation>Regulátor polohy (šoupátko)</translation>
+        </message>
+        <message>
+            <source>Process controller (E04)</source>
+            <translation>Regulátor procesní veličiny (E04)</translation>
+        </message>
+        <message>
+            <source>Loop:</source>
+            <translation>Regulační smyčka:</translation>
+        </message>
+        <message>
+            <source>Stop</source>
+            <translation>Stop</translation>
+        </message>
+        <message>
+            <source>Offline: the tests run on an emulated valve with the document's values.</source>
+            <translation>Offline: testy běží na emulovaném ventilu s hodnotami dokumentu.</translation>
+        </message>
+        <message>
+            <source>Online: the tests move the connected valve.</source>
+            <translation>Online: testy pohybují připojeným ventilem.</translation>
+        </message>
+        <message>
+            <source>Autotune</source>
+            <translation>Autotune</translation>
+        </message>
+        <message>
+            <source>Frequency response</source>
+            <translation>Frekvenční charakteristika</translation>
+        </message>
+        <message>
+            <source>Static characteristic</source>
+            <translation>Statická charakteristika</translation>
+        </message>
+        <message>
+            <source>Test report</source>
+            <translation>Protokol o zkoušce</translation>
+        </message>
+        <message>
+            <source>Ready.</source>
+            <translation>Připraveno.</translation>
         </message>
     </context>
     <context>

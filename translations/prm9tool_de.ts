@@ -48,10 +48,132 @@ Die letzte Aktion wurde womöglich nicht vollständig ausgeführt. Speichern Sie
         </message>
     </context>
     <context>
+        <name>AutotunePage</name>
+        <message>
+            <source>steps of %1 % from 0 %, a few times, about %2 s in all</source>
+            <translation>einige Sprünge von %1 % ab 0 %, insgesamt etwa %2 s</translation>
+        </message>
+        <message>
+            <source>P only with rising gain until the loop oscillates (steps of 5 %, oscillation stopped at ±40 %), about 5 s</source>
+            <translation>nur P mit steigender Verstärkung, bis der Kreis schwingt (Sprünge von 5 %, Schwingung bei ±40 % abgebrochen), etwa 5 s</translation>
+        </message>
+        <message>
+            <source>Model: gain %1, lags %2 ms, dead time %3 ms (fit error %4 %).</source>
+            <translation>Modell: Verstärkung %1, Verzögerungen %2 ms, Totzeit %3 ms (Anpassungsfehler %4 %).</translation>
+        </message>
+        <message>
+            <source>Critical gain Kkr = %1, period Tkr = %2 ms: K = 0.5·Kkr, Ti = 0.8·Tkr, Td = 0.12·Tkr.</source>
+            <translation>Kritische Verstärkung Kkr = %1, Periode Tkr = %2 ms: K = 0.5·Kkr, Ti = 0.8·Tkr, Td = 0.12·Tkr.</translation>
+        </message>
+        <message>
+            <source>before (measured)</source>
+            <translation>vorher (gemessen)</translation>
+        </message>
+        <message>
+            <source>proposed (measured)</source>
+            <translation>Vorschlag (gemessen)</translation>
+        </message>
+        <message>
+            <source>proposed (simulated)</source>
+            <translation>Vorschlag (simuliert)</translation>
+        </message>
+        <message>
+            <source>Step response</source>
+            <translation>Sprungantwort</translation>
+        </message>
+        <message>
+            <source>time [ms]</source>
+            <translation>Zeit [ms]</translation>
+        </message>
+        <message>
+            <source>no response</source>
+            <translation>keine Antwort</translation>
+        </message>
+        <message>
+            <source>overshoot %1 %, settling %2</source>
+            <translation>Überschwingen %1 %, Ausregelzeit %2</translation>
+        </message>
+        <message>
+            <source>Before: %1. Proposed: %2.</source>
+            <translation>Vorher: %1. Vorschlag: %2.</translation>
+        </message>
+        <message>
+            <source>Autotune</source>
+            <translation>Autotune</translation>
+        </message>
+        <message>
+            <source>Model-based (never oscillates)</source>
+            <translation>Modellbasiert (schwingt nie)</translation>
+        </message>
+        <message>
+            <source>Critical gain (APOSYS 10 rule)</source>
+            <translation>Kritische Verstärkung (Regel des APOSYS 10)</translation>
+        </message>
+        <message>
+            <source>Method:</source>
+            <translation>Verfahren:</translation>
+        </message>
+        <message>
+            <source>Step amplitude:</source>
+            <translation>Sprunghöhe:</translation>
+        </message>
+        <message>
+            <source>Target overshoot at most:</source>
+            <translation>Überschwingen höchstens:</translation>
+        </message>
+        <message>
+            <source>Target settling time (±2 %) at most:</source>
+            <translation>Ausregelzeit (±2 %) höchstens:</translation>
+        </message>
+        <message>
+            <source>Run autotune</source>
+            <translation>Autotune starten</translation>
+        </message>
+        <message>
+            <source>Accept the proposed gains</source>
+            <translation>Vorgeschlagene Verstärkungen übernehmen</translation>
+        </message>
+    </context>
+    <context>
         <name>BlockDialog</name>
         <message>
             <source>Read only: %1 (View → Access level)</source>
             <translation>Nur lesbar: %1 (Ansicht → Berechtigungsstufe)</translation>
+        </message>
+    </context>
+    <context>
+        <name>BodePage</name>
+        <message>
+            <source>a sine sweep %1 … %2 Hz of ±%3 % around %4 %, %5 s</source>
+            <translation>ein Sinus-Sweep %1 … %2 Hz von ±%3 % um %4 %, %5 s</translation>
+        </message>
+        <message>
+            <source>−3 dB at %1 Hz, −90° at %2 Hz.</source>
+            <translation>−3 dB bei %1 Hz, −90° bei %2 Hz.</translation>
+        </message>
+        <message>
+            <source>Amplitude:</source>
+            <translation>Amplitude:</translation>
+        </message>
+        <message>
+            <source>Operating point:</source>
+            <translation>Arbeitspunkt:</translation>
+        </message>
+        <message>
+            <source>From:</source>
+            <translation>Von:</translation>
+        </message>
+        <message>
+            <source>To:</source>
+            <translation>Bis:</translation>
+        </message>
+        <message>
+            <source>Duration:</source>
+            <translation>Dauer:</translation>
+        </message>
+        <message>
+            <source>Measure the frequency response</source>
+            <translation>Frequenzgang messen</translation>
         </message>
     </context>
     <context>
@@ -426,6 +548,10 @@ Die letzte Aktion wurde womöglich nicht vollständig ausgeführt. Speichern Sie
     </context>
     <context>
         <name>ControllerDialog</name>
+        <message>
+            <source>Tuning and autotune…</source>
+            <translation>Einstellung und Autotune…</translation>
+        </message>
         <message>
             <source>No simulation available.</source>
             <translation>Keine Simulation verfügbar.</translation>
@@ -2007,6 +2133,53 @@ Die letzte Aktion wurde womöglich nicht vollständig ausgeführt. Speichern Sie
         </message>
     </context>
     <context>
+        <name>ReportPage</name>
+        <message>
+            <source>steps of %1 %, a sine sweep of ±%2 % and a triangle over the whole range, about %3 s</source>
+            <translation>Sprünge von %1 %, ein Sinus-Sweep von ±%2 % und ein Dreieck über den ganzen Bereich, etwa %3 s</translation>
+        </message>
+        <message>
+            <source>Result: %1</source>
+            <translation>Ergebnis: %1</translation>
+        </message>
+        <message>
+            <source>Save the test report</source>
+            <translation>Prüfbericht speichern</translation>
+        </message>
+        <message>
+            <source>Cannot write the report: %1</source>
+            <translation>Der Bericht kann nicht geschrieben werden: %1</translation>
+        </message>
+        <message>
+            <source>Acceptance profile (TOML, empty: default):</source>
+            <translation>Abnahmeprofil (TOML, leer: Standard):</translation>
+        </message>
+        <message>
+            <source>Run the end-of-line test</source>
+            <translation>Endprüfung starten</translation>
+        </message>
+        <message>
+            <source>Save PDF and CSV…</source>
+            <translation>PDF und CSV speichern…</translation>
+        </message>
+        <message>
+            <source>Figure</source>
+            <translation>Kennwert</translation>
+        </message>
+        <message>
+            <source>Value</source>
+            <translation>Wert</translation>
+        </message>
+        <message>
+            <source>Limit</source>
+            <translation>Grenze</translation>
+        </message>
+        <message>
+            <source>Result</source>
+            <translation>Ergebnis</translation>
+        </message>
+    </context>
+    <context>
         <name>RestartDialog</name>
         <message>
             <source>Restart valve</source>
@@ -2172,6 +2345,10 @@ Stellen Sie sicher, dass die Maschine sich gefahrlos bewegen kann. Generator sta
             <translation>Das Ventil hat einen Wert des Sollwertgenerators abgelehnt ({0}): Der Generator wurde gestoppt.</translation>
         </message>
         <message>
+            <source>Tuning and characterization…</source>
+            <translation>Einstellung und Charakterisierung…</translation>
+        </message>
+        <message>
             <source>no reason given</source>
             <translation>ohne Angabe eines Grundes</translation>
         </message>
@@ -2243,6 +2420,37 @@ Jetzt freigeben (NMT Start, Steuerwort 08h → 09h → 0Bh → 0Fh)?</translatio
         <message>
             <source>This type is not recommended for a valve with %1 (manual table 8-4).</source>
             <translation>Dieser Typ wird für ein Ventil mit %1 nicht empfohlen (Anleitung Tabelle 8-4).</translation>
+        </message>
+    </context>
+    <context>
+        <name>StaticPage</name>
+        <message>
+            <source>a triangle over the whole range −100 … 100 %, %1 s</source>
+            <translation>ein Dreieck über den ganzen Bereich −100 … 100 %, %1 s</translation>
+        </message>
+        <message>
+            <source>linearized (preview)</source>
+            <translation>linearisiert (Vorschau)</translation>
+        </message>
+        <message>
+            <source>Gain %1, hysteresis %2 %, linearity error %3 %, dead band %4 %.</source>
+            <translation>Verstärkung %1, Hysterese %2 %, Linearitätsfehler %3 %, Totzone %4 %.</translation>
+        </message>
+        <message>
+            <source>Linearization from the static characteristic</source>
+            <translation>Linearisierung aus der statischen Kennlinie</translation>
+        </message>
+        <message>
+            <source>Triangle period:</source>
+            <translation>Periode des Dreiecks:</translation>
+        </message>
+        <message>
+            <source>Measure the static characteristic</source>
+            <translation>Statische Kennlinie messen</translation>
+        </message>
+        <message>
+            <source>Apply the proposed linearization</source>
+            <translation>Vorgeschlagene Linearisierung übernehmen</translation>
         </message>
     </context>
     <context>
@@ -2348,6 +2556,256 @@ Jetzt freigeben (NMT Start, Steuerwort 08h → 09h → 0Bh → 0Fh)?</translatio
         <message>
             <source>output</source>
             <translation>Ausgang</translation>
+        </message>
+    </context>
+    <context>
+        <name>TuningReport</name>
+        <message>
+            <source>overshoot</source>
+            <translation>Überschwingen</translation>
+        </message>
+        <message>
+            <source>rise time (10–90 %)</source>
+            <translation>Anstiegszeit (10–90 %)</translation>
+        </message>
+        <message>
+            <source>settling time (±2 %)</source>
+            <translation>Ausregelzeit (±2 %)</translation>
+        </message>
+        <message>
+            <source>−3 dB frequency</source>
+            <translation>−3-dB-Frequenz</translation>
+        </message>
+        <message>
+            <source>−90° frequency</source>
+            <translation>−90°-Frequenz</translation>
+        </message>
+        <message>
+            <source>gain</source>
+            <translation>Verstärkung</translation>
+        </message>
+        <message>
+            <source>hysteresis</source>
+            <translation>Hysterese</translation>
+        </message>
+        <message>
+            <source>linearity error</source>
+            <translation>Linearitätsfehler</translation>
+        </message>
+        <message>
+            <source>dead band</source>
+            <translation>Totzone</translation>
+        </message>
+        <message>
+            <source>step %1 %: %2</source>
+            <translation>Sprung %1 %: %2</translation>
+        </message>
+        <message>
+            <source>PASS</source>
+            <translation>BESTANDEN</translation>
+        </message>
+        <message>
+            <source>FAIL</source>
+            <translation>NICHT BESTANDEN</translation>
+        </message>
+        <message>
+            <source>not reached</source>
+            <translation>nicht erreicht</translation>
+        </message>
+        <message>
+            <source>Step response %1 %</source>
+            <translation>Sprungantwort %1 %</translation>
+        </message>
+        <message>
+            <source>time [ms]</source>
+            <translation>Zeit [ms]</translation>
+        </message>
+        <message>
+            <source>setpoint</source>
+            <translation>Sollwert</translation>
+        </message>
+        <message>
+            <source>actual</source>
+            <translation>Istwert</translation>
+        </message>
+        <message>
+            <source>frequency [Hz]</source>
+            <translation>Frequenz [Hz]</translation>
+        </message>
+        <message>
+            <source>Frequency response ±%1 %: magnitude</source>
+            <translation>Frequenzgang ±%1 %: Betrag</translation>
+        </message>
+        <message>
+            <source>magnitude</source>
+            <translation>Betrag</translation>
+        </message>
+        <message>
+            <source>Phase and coherence</source>
+            <translation>Phase und Kohärenz</translation>
+        </message>
+        <message>
+            <source>phase</source>
+            <translation>Phase</translation>
+        </message>
+        <message>
+            <source>coherence ×100</source>
+            <translation>Kohärenz ×100</translation>
+        </message>
+        <message>
+            <source>Static characteristic</source>
+            <translation>Statische Kennlinie</translation>
+        </message>
+        <message>
+            <source>demand [%]</source>
+            <translation>Sollwert [%]</translation>
+        </message>
+        <message>
+            <source>actual [%]</source>
+            <translation>Istwert [%]</translation>
+        </message>
+        <message>
+            <source>rising</source>
+            <translation>steigend</translation>
+        </message>
+        <message>
+            <source>falling</source>
+            <translation>fallend</translation>
+        </message>
+        <message>
+            <source>best line</source>
+            <translation>Ausgleichsgerade</translation>
+        </message>
+        <message>
+            <source>Type key</source>
+            <translation>Typschlüssel</translation>
+        </message>
+        <message>
+            <source>Serial number</source>
+            <translation>Seriennummer</translation>
+        </message>
+        <message>
+            <source>Firmware</source>
+            <translation>Firmware</translation>
+        </message>
+        <message>
+            <source>Date</source>
+            <translation>Datum</translation>
+        </message>
+        <message>
+            <source>Link</source>
+            <translation>Verbindung</translation>
+        </message>
+        <message>
+            <source>Acceptance profile</source>
+            <translation>Abnahmeprofil</translation>
+        </message>
+        <message>
+            <source>Result</source>
+            <translation>Ergebnis</translation>
+        </message>
+        <message>
+            <source>PRM9 test report</source>
+            <translation>PRM9-Prüfbericht</translation>
+        </message>
+        <message>
+            <source>Figure</source>
+            <translation>Kennwert</translation>
+        </message>
+        <message>
+            <source>Value</source>
+            <translation>Wert</translation>
+        </message>
+        <message>
+            <source>Limit</source>
+            <translation>Grenze</translation>
+        </message>
+        <message>
+            <source>Parameter set (raw values)</source>
+            <translation>Parametersatz (Rohwerte)</translation>
+        </message>
+    </context>
+    <context>
+        <name>TuningWindow</name>
+        <message>
+            <source>Running: %1</source>
+            <translation>Läuft: %1</translation>
+        </message>
+        <message>
+            <source>This test moves the spool (and on E04 the actuator): %1.
+
+Make sure the hydraulics are safe for it. Stop ends it at any time and puts the valve back as it was. Start the test?</source>
+            <translation>Dieser Test bewegt den Schieber (und bei E04 den Antrieb): %1.
+
+Stellen Sie sicher, dass die Hydraulik dafür sicher ist. Stopp beendet ihn jederzeit und stellt das Ventil wieder her, wie es war. Test starten?</translation>
+        </message>
+        <message>
+            <source>Tuning</source>
+            <translation>Einstellung</translation>
+        </message>
+        <message>
+            <source>Stopping…</source>
+            <translation>Wird abgebrochen…</translation>
+        </message>
+        <message>
+            <source>Done.</source>
+            <translation>Fertig.</translation>
+        </message>
+        <message>
+            <source>Stopped: %1</source>
+            <translation>Abgebrochen: %1</translation>
+        </message>
+        <message>
+            <source>Accepted: %1</source>
+            <translation>Übernommen: %1</translation>
+        </message>
+        <message>
+            <source>Tuning and characterization</source>
+            <translation>Einstellung und Charakterisierung</translation>
+        </message>
+        <message>
+            <source>Position controller (spool)</source>
+            <translation>Lageregler (Schieber)</translation>
+        </message>
+        <message>
+            <source>Process controller (E04)</source>
+            <translation>Prozessregler (E04)</translation>
+        </message>
+        <message>
+            <source>Loop:</source>
+            <translation>Regelkreis:</translation>
+        </message>
+        <message>
+            <source>Stop</source>
+            <translation>Stopp</translation>
+        </message>
+        <message>
+            <source>Offline: the tests run on an emulated valve with the document's values.</source>
+            <translation>Offline: Die Tests laufen auf einem emulierten Ventil mit den Werten des Dokuments.</translation>
+        </message>
+        <message>
+            <source>Online: the tests move the connected valve.</source>
+            <translation>Online: Die Tests bewegen das angeschlossene Ventil.</translation>
+        </message>
+        <message>
+            <source>Autotune</source>
+            <translation>Autotune</translation>
+        </message>
+        <message>
+            <source>Frequency response</source>
+            <translation>Frequenzgang</translation>
+        </message>
+        <message>
+            <source>Static characteristic</source>
+            <translation>Statische Kennlinie</translation>
+        </message>
+        <message>
+            <source>Test report</source>
+            <translation>Prüfbericht</translation>
+        </message>
+        <message>
+            <source>Ready.</source>
+            <translation>Bereit.</translation>
         </message>
     </context>
     <context>

@@ -103,12 +103,14 @@ class MainWindow(QMainWindow):
         view.measuring_point_clicked.connect(self.open_scope)
         view.valve_selection_requested.connect(self.new_document)  # asks about unsaved changes
         view.canopen_requested.connect(self.show_canopen_window)
+        view.tuning_requested.connect(self.show_tuning_window)
         return view
 
     def _make_scope_view(self) -> QWidget:
         from prm9tool.views.scope import ScopeWidget
 
         self._scope = ScopeWidget(self.connection, self.doc, self, control=self.control)
+        self._scope.tuning_requested.connect(lambda: self.show_tuning_window("position"))
         return self._scope
 
     def _add_page(self, name: str, view: QWidget) -> None:
@@ -124,6 +126,19 @@ class MainWindow(QMainWindow):
         view = self._make_scope_view()
         self._add_page(name, view)
         return view
+
+    def show_tuning_window(self, loop: str = "position") -> None:
+        """Open (or raise) the Tuning window on ``loop`` (``position`` or ``process``)."""
+        from prm9tool.views.tuning_window import TuningWindow
+
+        window = getattr(self, "tuning_window", None)
+        if window is None or window.doc is not self.doc:
+            window = self.tuning_window = TuningWindow(self.doc, self.connection, self)
+        index = window.loop.findData(loop)
+        if index >= 0 and not window.runner.busy:
+            window.loop.setCurrentIndex(index)
+        window.show()
+        window.raise_()
 
     def open_scope(self, key: str | None = None) -> None:
         """Switch to the oscilloscope (online only) and preselect measuring point ``key``."""

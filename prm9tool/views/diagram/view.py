@@ -69,6 +69,7 @@ class DiagramView(QGraphicsView):
     dialog_opened = Signal(str, object)  # block id, the dialog widget
     valve_selection_requested = Signal()  # the valve block was clicked (offline)
     canopen_requested = Signal()  # the CANopen block was clicked
+    tuning_requested = Signal(str)  # a controller dialog's "Tuning…": the loop
 
     def __init__(
         self,
@@ -210,7 +211,13 @@ class DiagramView(QGraphicsView):
 
     def _create_dialog(self, block_id: str) -> QDialog | None:
         spec = self.diagram.layout.block(block_id)
-        ctx = BlockContext(self._doc, self._access, self._connection, self._simulator_factory)
+        ctx = BlockContext(
+            self._doc,
+            self._access,
+            self._connection,
+            self._simulator_factory,
+            self.tuning_requested.emit,
+        )
         return create_block_dialog(block_id, ctx, spec.title, self)
 
     def _on_dialog_finished(self, _result: int) -> None:

@@ -12,7 +12,7 @@ import math
 from typing import Any
 
 from PySide6.QtCore import Qt
-from PySide6.QtWidgets import QGridLayout, QLabel, QSlider, QWidget
+from PySide6.QtWidgets import QGridLayout, QLabel, QPushButton, QSlider, QWidget
 
 from prm9tool.catalogue import CATALOGUE
 from prm9tool.i18n import format_value
@@ -62,6 +62,10 @@ class ControllerDialog(BlockDialog):
         self.side.addWidget(self.plot, 1)
         self.side.addWidget(self.figures)
         self.side.addLayout(self._slider_grid())
+        self.tuning_button = QPushButton()
+        self.tuning_button.setVisible(ctx.open_tuning is not None)
+        self.tuning_button.clicked.connect(self._on_tuning_clicked)
+        self.side.addWidget(self.tuning_button, 0, Qt.AlignmentFlag.AlignRight)
         self.simulator = self._make_simulator()
         self.finish()
         self._simulate()
@@ -115,8 +119,13 @@ class ControllerDialog(BlockDialog):
         for name, slider in self.sliders.items():
             slider.setEnabled(not read_only and self.access.may_edit(CATALOGUE[name]))
 
+    def _on_tuning_clicked(self) -> None:
+        if self.ctx.open_tuning is not None:
+            self.ctx.open_tuning(self.loop)
+
     def retranslate(self) -> None:
         super().retranslate()
+        self.tuning_button.setText(self.tr("Tuning and autotune…"))
         if self.ctx.simulator_factory is None:
             self.figures.setText(self.tr("No simulation available."))
 
