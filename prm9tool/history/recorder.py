@@ -21,13 +21,15 @@ import threading
 from collections.abc import Mapping
 from datetime import UTC, datetime
 from pathlib import Path
-from typing import Any, Protocol
+from typing import TYPE_CHECKING, Any, Protocol
 
 from prm9tool import __version__
 from prm9tool.errors import HistoryError
 from prm9tool.history.chain import Entry
 from prm9tool.history.config import database_url, queue_path
-from prm9tool.history.store import HistoryStore
+
+if TYPE_CHECKING:
+    from prm9tool.history.store import HistoryStore
 
 log = logging.getLogger("prm9tool.history")
 Raw = int | str
@@ -98,6 +100,8 @@ class Recorder:
 
     def store(self) -> HistoryStore:
         """The open database (opened and migrated on first use); HistoryError if it cannot."""
+        from prm9tool.history.store import HistoryStore  # SQLAlchemy: only when recording
+
         with self._lock:
             if self._store is None:
                 self._store = HistoryStore(self.url)

@@ -24,6 +24,7 @@ from prm9tool.online.sync import ValveSync
 from prm9tool.views import prompts
 from prm9tool.views.access_dialog import ChangePasswordDialog, PasswordDialog
 from prm9tool.views.actions import MainActions
+from prm9tool.views.compare_workflow import CompareWorkflow
 from prm9tool.views.emcy import status_summary
 from prm9tool.views.file_workflow import FileWorkflow
 from prm9tool.views.help_dialog import HelpWindow, about_html, open_homepage
@@ -63,6 +64,7 @@ class MainWindow(QMainWindow):
         self.files = FileWorkflow(self, doc, undo, settings)
         self.valve = ValveWorkflow(self, doc, undo, connection, self.sync, settings)
         self.records = RecordActions(self)
+        self.compare = CompareWorkflow(self, doc, undo, access, connection, self.sync, self.valve)
         self.commands = MainActions(self)
         self.commands.build_menus(self.menuBar())
         self.commands.build_toolbar(self.addToolBar("toolbar"))
@@ -171,6 +173,9 @@ class MainWindow(QMainWindow):
             "help": self.show_help,
             "homepage": open_homepage,
             "about": self.show_about,
+            "compare_file": self.compare.compare_with_file,
+            "compare_valve": self.compare.compare_with_valve,
+            "history": self.compare.show_history,
         }
         for name, handler in handlers.items():
             a[name].triggered.connect(lambda _checked=False, h=handler: h())
@@ -198,7 +203,7 @@ class MainWindow(QMainWindow):
             signal.connect(self._show_file)
         self.files.about_to_replace.connect(self.sync.stop)
         self.files.document_replaced.connect(self.valve.compare_again)
-        for source in (self.files, self.valve, self.records):
+        for source in (self.files, self.valve, self.records, self.compare):
             source.message_posted.connect(lambda text: s.showMessage(text, 8000))
 
     def _on_connection_online_changed(self, online: bool) -> None:
@@ -220,6 +225,7 @@ class MainWindow(QMainWindow):
             "offline": online,
             "upload": ready,
             "download": ready,
+            "compare_valve": ready,
             "restart": ready,
             "restore_factory": not busy,
             "view_scope": online,
