@@ -22,14 +22,13 @@ def may_upload(parent: QWidget | None, problem: object) -> bool:
     policy = unreachable_policy()
     if policy == "queue":
         return True
-    tr = QCoreApplication.translate
     reason = error_text(problem) if isinstance(problem, Exception) else str(problem)
     if policy == "refuse":
         prompts.inform(
             parent,
             prompts.Icon.Warning,
-            tr("HistoryPolicy", "Upload refused"),
-            tr("HistoryPolicy", "The history database cannot record this upload, and the "
+            QCoreApplication.translate("HistoryPolicy", "Upload refused"),
+            QCoreApplication.translate("HistoryPolicy", "The history database cannot record this upload, and the "
                "setting says to refuse uploads then. Nothing was written to the valve."),
             reason,
         )  # fmt: skip
@@ -37,8 +36,8 @@ def may_upload(parent: QWidget | None, problem: object) -> bool:
     answer = prompts.ask(
         parent,
         prompts.Icon.Warning,
-        tr("HistoryPolicy", "History database unavailable"),
-        tr("HistoryPolicy", "The history database cannot record this upload. Upload anyway "
+        QCoreApplication.translate("HistoryPolicy", "History database unavailable"),
+        QCoreApplication.translate("HistoryPolicy", "The history database cannot record this upload. Upload anyway "
            "and keep the record on this computer until the database is back?\n\n"
            "Yes uploads and queues the record; No uploads nothing."),
         prompts.Button.Yes | prompts.Button.No,
