@@ -135,7 +135,7 @@ class Recorder:
     def add(self, entry: Entry) -> str:
         """Append a prepared entry (database, else the local queue)."""
         try:
-            self.store().append(entry)
+            self.store().append(entry, _marks_backup(entry))
         except HistoryError as exc:
             log.warning("history: %s; the record is kept in %s", exc, self.queue)
             self._enqueue(entry, exc)
@@ -196,7 +196,8 @@ class Recorder:
         lines = [line for line in taken.read_text("utf-8").splitlines() if line.strip()]
         for number, line in enumerate(lines):
             try:
-                store.append(Entry.from_json(json.loads(line)))
+                entry = Entry.from_json(json.loads(line))
+                store.append(entry, _marks_backup(entry))
             except HistoryError:
                 self._requeue(lines[number:])
                 break
@@ -208,3 +209,14 @@ class Recorder:
             queue.write("".join(line + "\n" for line in lines))
             queue.flush()
             os.fsync(queue.fileno())
+
+
+def _marks_backup(entry: Entry) -> Any:
+    """A backup file recorded as it is written is never imported again (importer.py)."""
+    path = entry.details.get("file") if entry.operation == "backup" else None
+    if not path:
+        return None
+    from prm9tool.history.importer import mark_imported, source_name
+
+    source = source_name(Path(path))
+    return lambda conn, record_id: mark_imported(conn, source, record_id)
