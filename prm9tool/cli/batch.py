@@ -8,6 +8,7 @@ saves one valve's parameters. Usage, exit codes and report schema: docs/batch.md
 from __future__ import annotations
 
 import argparse
+import logging
 import sys
 from collections.abc import Mapping
 from concurrent.futures import ThreadPoolExecutor
@@ -35,6 +36,8 @@ from prm9tool.errors import CommunicationError, ExitCode, FileFormatError, Prm9E
 from prm9tool.files.backup import ensure_backup, existing_backups
 from prm9tool.files.prmfile import PrmContents, read_file, write_file
 
+log = logging.getLogger("prm9tool.cli.batch")
+
 
 class BatchError(Exception):
     """Ends the run before any valve was touched, with ``code`` and a message for stderr."""
@@ -56,7 +59,7 @@ def run(args: argparse.Namespace) -> int:
     except BatchError as exc:
         print(f"prm9tool: {exc}", file=sys.stderr)
         code = exc.code
-    if args.report and not args.list_devices and Path(args.report).parent.is_dir():
+    if args.report and not args.list_devices and _report_refusal(args.report) is None:
         try:
             write_report(args.report, mode, args.batch or args.download, code, records)
         except OSError as exc:
@@ -80,14 +83,28 @@ def _check_usage(args: argparse.Namespace) -> None:
         raise BatchError(ExitCode.USAGE, "--batch needs FILE.prm (or --download OUT.prm)")
     if args.download and (args.all or len(args.emulator) > 1):  # --device: checked in select
         raise BatchError(ExitCode.USAGE, "--download saves one valve: select exactly one")
-    if args.report and not Path(args.report).parent.is_dir():
-        folder = Path(args.report).parent
-        raise BatchError(ExitCode.USAGE, f"--report {args.report}: there is no folder {folder}")
+    refusal = _report_refusal(args.report) if args.report else None
+    if refusal is not None:
+        raise BatchError(ExitCode.USAGE, f"--report {args.report}: {refusal}")
     for spec in args.emulator:
         try:
             parse_emulator_spec(spec)
         except TypeKeyError as exc:
             raise BatchError(ExitCode.USAGE, f"--emulator: {exc}") from exc
+
+
+def _report_refusal(path: str) -> str | None:
+    """Why the report cannot go to ``path`` (checked before any valve is touched), or None.
+
+    A symbolic link is refused: writing through it would replace a file the run was never
+    told about (docs/batch.md).
+    """
+    report = Path(path)
+    if not report.parent.is_dir():
+        return f"there is no folder {report.parent}"
+    if report.is_symlink():
+        return "is a symbolic link; give the path of the report itself"
+    return None
 
 
 # --- devices ------------------------------------------------------------------------------------
@@ -239,6 +256,9 @@ class _UploadJob:
             _copy_progress(exc, record)
         except Prm9Error as exc:  # a refused read during the backup, an unwritable backup …
             record.result, record.error = "communication-error", str(exc)
+        except Exception as exc:  # whatever the valve answered: the run still ends with a report
+            log.exception("%s: unexpected error", entry.device_id)
+            record.result, record.error = "communication-error", _unexpected(exc)
         clock.finish(record)
         self.history.upload(record, self.contents.values)
         return record
@@ -278,9 +298,18 @@ class _UploadJob:
             m: {"expected": want, "actual": got} for m, (want, got) in result.mismatches.items()
         }
         record.result = "ok" if result.stored else "verification-failed"
+        if result.failed_step == "store":
+            record.result = "store-failed"
         if not result.stored:
-            problem = _mismatch_text(result.failed_step, result.mismatches)
+            problem = result.failure or _mismatch_text(result.failed_step, result.mismatches)
             record.error = f"{problem}; {reload_outcome(result.reload_error)}"
+
+
+def _unexpected(exc: Exception) -> str:
+    return (
+        f"unexpected error ({type(exc).__name__}: {exc}); the valve may have answered something "
+        "this prm9tool cannot handle; details on standard error"
+    )
 
 
 def _copy_progress(exc: CommunicationError, record: ValveRecord) -> None:
@@ -330,10 +359,12 @@ def _download(args: argparse.Namespace, records: list[ValveRecord]) -> ExitCode:
         with _open(entry[0]) as session:
             values = session.download(printer.callback(str(record.serial)))
             info = session.info
-    except (CommunicationError, Prm9Error) as exc:
-        record.error = str(exc)
+    except Exception as exc:  # a Prm9Error, or whatever else the valve's answers caused
+        if not isinstance(exc, Prm9Error):
+            log.exception("%s: unexpected error", entry[0].device_id)
+        record.error = str(exc) if isinstance(exc, Prm9Error) else _unexpected(exc)
         clock.finish(record)
-        raise BatchError(ExitCode.COMMUNICATION, f"download failed: {exc}") from exc
+        raise BatchError(ExitCode.COMMUNICATION, f"download failed: {record.error}") from exc
     contents = PrmContents(TypeKey.parse(info.type_key), values, info.serial, info.firmware or None)
     try:
         write_file(contents, args.download)

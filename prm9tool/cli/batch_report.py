@@ -25,6 +25,7 @@ RESULTS = {
     "dry-run": ExitCode.OK,
     "downloaded": ExitCode.OK,
     "verification-failed": ExitCode.VERIFY_FAILED,
+    "store-failed": ExitCode.VERIFY_FAILED,  # refused or unconfirmed store: nothing stored
     "type-mismatch": ExitCode.TYPE_MISMATCH,
     "communication-error": ExitCode.COMMUNICATION,
 }
@@ -70,7 +71,9 @@ def overall(records: list[ValveRecord]) -> ExitCode:
 def write_report(
     path: str, mode: str, source: str | None, exit_code: int, records: list[ValveRecord]
 ) -> None:
-    """Write the JSON report atomically."""
+    """Write the JSON report atomically; a symbolic link at ``path`` is replaced, never
+    followed (``run`` refuses a link before the run; one that appears meanwhile cannot make
+    the report overwrite another file)."""
     report = {
         "prm9tool": __version__,
         "schema": SCHEMA,
@@ -81,7 +84,7 @@ def write_report(
         "valves": [_entry(r) for r in records],
     }
     text = json.dumps(report, indent=2, ensure_ascii=False) + "\n"
-    atomic_write(Path(path), text.encode("utf-8"), backup=False)
+    atomic_write(Path(path), text.encode("utf-8"), backup=False, follow_symlinks=False)
 
 
 def _entry(record: ValveRecord) -> dict[str, Any]:

@@ -19,7 +19,8 @@ if TYPE_CHECKING:
 
 EXIT_CODE_TEXT = {
     ExitCode.OK: "done: every valve uploaded and verified (or listed, downloaded, file valid)",
-    ExitCode.VERIFY_FAILED: "a valve read back differently or refused a value; nothing stored",
+    ExitCode.VERIFY_FAILED: "a valve read back differently, refused a value or the store; "
+    "nothing stored",
     ExitCode.USAGE: "usage error (options, several valves and no selection, ...)",
     ExitCode.INVALID_FILE: "invalid *.prm file (or --download cannot write its file)",
     ExitCode.NO_DEVICE: "no valve found, or none with the --device ID",
@@ -93,7 +94,12 @@ def build_parser() -> argparse.ArgumentParser:
     )
     files.add_argument("--check", metavar="FILE.prm", help="validate a *.prm file")
     files.add_argument("--export-eds", metavar="TYPEKEY", help="write a CiA 306 EDS for TYPEKEY")
-    files.add_argument("-o", "--output", metavar="FILE", help="output file")
+    files.add_argument(
+        "-o",
+        "--output",
+        metavar="FILE",
+        help="output file of --new or --export-eds; - is standard output",
+    )
     batch = parser.add_argument_group("headless production mode (no GUI)")
     batch.add_argument("--list-devices", action="store_true", help="list valves and exit")
     batch.add_argument(
