@@ -448,11 +448,148 @@ Poslední akce možná nebyla dokončena. Uložte svou práci pod novým názvem
         <name>Compare</name>
         <message>
             <source>The type keys differ: {0} is {1}, {2} is {3}.</source>
-            <translation type="unfinished"></translation>
+            <translation>Typové klíče se liší: {0} je {1}, {2} je {3}.</translation>
         </message>
         <message>
             <source>The valve variants differ: only the parameters both have are compared; {0} parameters that one side lacks are left out.</source>
-            <translation type="unfinished"></translation>
+            <translation>Varianty ventilů se liší: porovnávají se jen parametry, které mají obě strany; {0} parametrů, které jedné straně chybí, je vynecháno.</translation>
+        </message>
+    </context>
+    <context>
+        <name>CompareDialog</name>
+        <message>
+            <source>Compare parameters</source>
+            <translation>Porovnání parametrů</translation>
+        </message>
+        <message>
+            <source>Differences only</source>
+            <translation>Jen rozdíly</translation>
+        </message>
+        <message>
+            <source>All blocks</source>
+            <translation>Všechny bloky</translation>
+        </message>
+        <message>
+            <source>Basic level</source>
+            <translation>Základní úroveň</translation>
+        </message>
+        <message>
+            <source>Expert level</source>
+            <translation>Expertní úroveň</translation>
+        </message>
+        <message>
+            <source>Block:</source>
+            <translation>Blok:</translation>
+        </message>
+        <message>
+            <source>Access level:</source>
+            <translation>Úroveň oprávnění:</translation>
+        </message>
+        <message>
+            <source>Take every shown value from {0}</source>
+            <translation>Převzít všechny zobrazené hodnoty z {0}</translation>
+        </message>
+        <message>
+            <source>Apply: each side takes the chosen values</source>
+            <translation>Použít: každá strana převezme zvolené hodnoty</translation>
+        </message>
+        <message>
+            <source>Apply the chosen values to {0}</source>
+            <translation>Použít zvolené hodnoty na: {0}</translation>
+        </message>
+        <message numerus="yes">
+            <source>%n parameter(s) differ</source>
+            <translation>
+                <numerusform>%n parametr se liší</numerusform>
+                <numerusform>%n parametry se liší</numerusform>
+                <numerusform>%n parametrů se liší</numerusform>
+            </translation>
+        </message>
+        <message numerus="yes">
+            <source>%n parameter(s) only on one side</source>
+            <translation>
+                <numerusform>%n parametr jen na jedné straně</numerusform>
+                <numerusform>%n parametry jen na jedné straně</numerusform>
+                <numerusform>%n parametrů jen na jedné straně</numerusform>
+            </translation>
+        </message>
+        <message numerus="yes">
+            <source>%n shown</source>
+            <translation>
+                <numerusform>%n zobrazen</numerusform>
+                <numerusform>%n zobrazeny</numerusform>
+                <numerusform>%n zobrazeno</numerusform>
+            </translation>
+        </message>
+    </context>
+    <context>
+        <name>CompareTableModel</name>
+        <message>
+            <source>Mnemonic</source>
+            <translation>Zkratka</translation>
+        </message>
+        <message>
+            <source>Description</source>
+            <translation>Popis</translation>
+        </message>
+        <message>
+            <source>One side's valve type has no such parameter; it cannot be chosen.</source>
+            <translation>Typ ventilu jedné strany tento parametr nemá; nelze jej zvolit.</translation>
+        </message>
+    </context>
+    <context>
+        <name>CompareWorkflow</name>
+        <message>
+            <source>Document</source>
+            <translation>Dokument</translation>
+        </message>
+        <message>
+            <source>Valve {0}</source>
+            <translation>Ventil {0}</translation>
+        </message>
+        <message>
+            <source>Factory defaults</source>
+            <translation>Tovární nastavení</translation>
+        </message>
+        <message>
+            <source>Compare with file</source>
+            <translation>Porovnat se souborem</translation>
+        </message>
+        <message>
+            <source>Parameter files (*.prm);;All files (*)</source>
+            <translation>Soubory parametrů (*.prm);;Všechny soubory (*)</translation>
+        </message>
+        <message>
+            <source>{0} cannot be compared.</source>
+            <translation>{0} nelze porovnat.</translation>
+        </message>
+        <message>
+            <source>Values taken from {0}</source>
+            <translation>Hodnoty převzaté z {0}</translation>
+        </message>
+        <message>
+            <source>Compare with valve</source>
+            <translation>Porovnat s ventilem</translation>
+        </message>
+        <message>
+            <source>Go online with the valve first (Communication → Online mode).</source>
+            <translation>Nejprve se připojte k ventilu (Komunikace → Režim online).</translation>
+        </message>
+        <message>
+            <source>Values taken from the valve</source>
+            <translation>Hodnoty převzaté z ventilu</translation>
+        </message>
+        <message>
+            <source>Values chosen from the valve</source>
+            <translation>Hodnoty zvolené z ventilu</translation>
+        </message>
+        <message>
+            <source>Online: document and valve agree</source>
+            <translation>Online: dokument a ventil se shodují</translation>
+        </message>
+        <message>
+            <source>Parameters restored from the history</source>
+            <translation>Parametry obnovené z historie</translation>
         </message>
     </context>
     <context>
@@ -1045,7 +1182,7 @@ Poslední akce možná nebyla dokončena. Uložte svou práci pod novým názvem
         </message>
         <message>
             <source>The history database cannot be used.</source>
-            <translation type="unfinished"></translation>
+            <translation>Databázi historie nelze použít.</translation>
         </message>
     </context>
     <context>
@@ -1292,6 +1429,135 @@ Poslední akce možná nebyla dokončena. Uložte svou práci pod novým názvem
         <message>
             <source>USB</source>
             <translation>USB</translation>
+        </message>
+    </context>
+    <context>
+        <name>HistoryPolicy</name>
+        <message>
+            <source>Upload refused</source>
+            <translation>Načtení do ventilu odmítnuto</translation>
+        </message>
+        <message>
+            <source>The history database cannot record this upload, and the setting says to refuse uploads then. Nothing was written to the valve.</source>
+            <translation>Databáze historie nemůže toto načtení zaznamenat a nastavení v takovém případě načtení odmítá. Do ventilu nebylo nic zapsáno.</translation>
+        </message>
+        <message>
+            <source>History database unavailable</source>
+            <translation>Databáze historie není dostupná</translation>
+        </message>
+        <message>
+            <source>The history database cannot record this upload. Upload anyway and keep the record on this computer until the database is back?
+
+Yes uploads and queues the record; No uploads nothing.</source>
+            <translation>Databáze historie nemůže toto načtení zaznamenat. Přesto načíst do ventilu a záznam uchovat v tomto počítači, dokud nebude databáze opět dostupná?
+
+Ano načte a záznam zařadí do fronty; Ne nenačte nic.</translation>
+        </message>
+    </context>
+    <context>
+        <name>HistoryTableModel</name>
+        <message>
+            <source>No.</source>
+            <translation>Č.</translation>
+        </message>
+        <message>
+            <source>Time (UTC)</source>
+            <translation>Čas (UTC)</translation>
+        </message>
+        <message>
+            <source>Operation</source>
+            <translation>Operace</translation>
+        </message>
+        <message>
+            <source>Outcome</source>
+            <translation>Výsledek</translation>
+        </message>
+        <message>
+            <source>Type key</source>
+            <translation>Typový klíč</translation>
+        </message>
+        <message>
+            <source>Firmware</source>
+            <translation>Firmware</translation>
+        </message>
+        <message>
+            <source>User, station, link</source>
+            <translation>Uživatel, stanice, připojení</translation>
+        </message>
+    </context>
+    <context>
+        <name>HistoryWindow</name>
+        <message>
+            <source>History</source>
+            <translation>Historie</translation>
+        </message>
+        <message>
+            <source>serial number</source>
+            <translation>výrobní číslo</translation>
+        </message>
+        <message>
+            <source>Show</source>
+            <translation>Zobrazit</translation>
+        </message>
+        <message>
+            <source>Valve serial number:</source>
+            <translation>Výrobní číslo ventilu:</translation>
+        </message>
+        <message>
+            <source>Compare the two selected records</source>
+            <translation>Porovnat dva vybrané záznamy</translation>
+        </message>
+        <message>
+            <source>Restore into the document</source>
+            <translation>Obnovit do dokumentu</translation>
+        </message>
+        <message>
+            <source>Restore to the valve</source>
+            <translation>Obnovit do ventilu</translation>
+        </message>
+        <message>
+            <source>Export…</source>
+            <translation>Exportovat…</translation>
+        </message>
+        <message>
+            <source>Type a valve's serial number.</source>
+            <translation>Zadejte výrobní číslo ventilu.</translation>
+        </message>
+        <message>
+            <source>Reading the history…</source>
+            <translation>Čtení historie…</translation>
+        </message>
+        <message numerus="yes">
+            <source>%n record(s) in {0}</source>
+            <translation>
+                <numerusform>%n záznam v {0}</numerusform>
+                <numerusform>%n záznamy v {0}</numerusform>
+                <numerusform>%n záznamů v {0}</numerusform>
+            </translation>
+        </message>
+        <message>
+            <source>This record holds no parameter set (the operation did not change the valve's stored parameters).</source>
+            <translation>Tento záznam neobsahuje sadu parametrů (operace nezměnila uložené parametry ventilu).</translation>
+        </message>
+        <message>
+            <source>No. {0}, {1}</source>
+            <translation>Č. {0}, {1}</translation>
+        </message>
+        <message>
+            <source>Go online with valve {0} first: a record is restored only into the valve it was recorded from.</source>
+            <translation>Nejprve se připojte k ventilu {0}: záznam se obnovuje jen do ventilu, ze kterého pochází.</translation>
+        </message>
+        <message>
+            <source>Export record</source>
+            <translation>Exportovat záznam</translation>
+        </message>
+        <message>
+            <source>Parameter files (*.prm);;CSV tables (*.csv)</source>
+            <translation>Soubory parametrů (*.prm);;Tabulky CSV (*.csv)</translation>
+        </message>
+        <message>
+            <source>The record was not exported.</source>
+            <translation>Záznam nebyl exportován.</translation>
         </message>
     </context>
     <context>
@@ -1583,6 +1849,30 @@ Poslední akce možná nebyla dokončena. Uložte svou práci pod novým názvem
             <source>Toolbar</source>
             <translation>Panel nástrojů</translation>
         </message>
+        <message>
+            <source>Co&amp;mpare with file…</source>
+            <translation>Po&amp;rovnat se souborem…</translation>
+        </message>
+        <message>
+            <source>Compare the parameters with a *.prm file, take chosen values</source>
+            <translation>Porovnat parametry se souborem *.prm, převzít zvolené hodnoty</translation>
+        </message>
+        <message>
+            <source>&amp;Compare with valve</source>
+            <translation>&amp;Porovnat s ventilem</translation>
+        </message>
+        <message>
+            <source>Compare the document with the valve, apply chosen values</source>
+            <translation>Porovnat dokument s ventilem, použít zvolené hodnoty</translation>
+        </message>
+        <message>
+            <source>&amp;History…</source>
+            <translation>&amp;Historie…</translation>
+        </message>
+        <message>
+            <source>Every operation recorded on a valve's parameters</source>
+            <translation>Každá zaznamenaná operace s parametry ventilu</translation>
+        </message>
     </context>
     <context>
         <name>MainStatusBar</name>
@@ -1723,6 +2013,10 @@ Poslední akce možná nebyla dokončena. Uložte svou práci pod novým názvem
         <message>
             <source>Valve</source>
             <translation>Ventil</translation>
+        </message>
+        <message>
+            <source>Choose per parameter…</source>
+            <translation>Zvolit po parametrech…</translation>
         </message>
     </context>
     <context>

@@ -448,11 +448,145 @@ Die letzte Aktion wurde womöglich nicht vollständig ausgeführt. Speichern Sie
         <name>Compare</name>
         <message>
             <source>The type keys differ: {0} is {1}, {2} is {3}.</source>
-            <translation type="unfinished"></translation>
+            <translation>Die Typenschlüssel unterscheiden sich: {0} ist {1}, {2} ist {3}.</translation>
         </message>
         <message>
             <source>The valve variants differ: only the parameters both have are compared; {0} parameters that one side lacks are left out.</source>
-            <translation type="unfinished"></translation>
+            <translation>Die Ventilvarianten unterscheiden sich: verglichen werden nur die Parameter, die beide haben; {0} Parameter, die einer Seite fehlen, bleiben außen vor.</translation>
+        </message>
+    </context>
+    <context>
+        <name>CompareDialog</name>
+        <message>
+            <source>Compare parameters</source>
+            <translation>Parameter vergleichen</translation>
+        </message>
+        <message>
+            <source>Differences only</source>
+            <translation>Nur Unterschiede</translation>
+        </message>
+        <message>
+            <source>All blocks</source>
+            <translation>Alle Blöcke</translation>
+        </message>
+        <message>
+            <source>Basic level</source>
+            <translation>Basis-Ebene</translation>
+        </message>
+        <message>
+            <source>Expert level</source>
+            <translation>Experten-Ebene</translation>
+        </message>
+        <message>
+            <source>Block:</source>
+            <translation>Block:</translation>
+        </message>
+        <message>
+            <source>Access level:</source>
+            <translation>Zugriffsebene:</translation>
+        </message>
+        <message>
+            <source>Take every shown value from {0}</source>
+            <translation>Alle angezeigten Werte von {0} nehmen</translation>
+        </message>
+        <message>
+            <source>Apply: each side takes the chosen values</source>
+            <translation>Übernehmen: jede Seite erhält die gewählten Werte</translation>
+        </message>
+        <message>
+            <source>Apply the chosen values to {0}</source>
+            <translation>Gewählte Werte übernehmen in: {0}</translation>
+        </message>
+        <message numerus="yes">
+            <source>%n parameter(s) differ</source>
+            <translation>
+                <numerusform>%n Parameter unterscheidet sich</numerusform>
+                <numerusform>%n Parameter unterscheiden sich</numerusform>
+            </translation>
+        </message>
+        <message numerus="yes">
+            <source>%n parameter(s) only on one side</source>
+            <translation>
+                <numerusform>%n Parameter nur auf einer Seite</numerusform>
+                <numerusform>%n Parameter nur auf einer Seite</numerusform>
+            </translation>
+        </message>
+        <message numerus="yes">
+            <source>%n shown</source>
+            <translation>
+                <numerusform>%n angezeigt</numerusform>
+                <numerusform>%n angezeigt</numerusform>
+            </translation>
+        </message>
+    </context>
+    <context>
+        <name>CompareTableModel</name>
+        <message>
+            <source>Mnemonic</source>
+            <translation>Kürzel</translation>
+        </message>
+        <message>
+            <source>Description</source>
+            <translation>Beschreibung</translation>
+        </message>
+        <message>
+            <source>One side's valve type has no such parameter; it cannot be chosen.</source>
+            <translation>Der Ventiltyp einer Seite hat diesen Parameter nicht; er kann nicht gewählt werden.</translation>
+        </message>
+    </context>
+    <context>
+        <name>CompareWorkflow</name>
+        <message>
+            <source>Document</source>
+            <translation>Dokument</translation>
+        </message>
+        <message>
+            <source>Valve {0}</source>
+            <translation>Ventil {0}</translation>
+        </message>
+        <message>
+            <source>Factory defaults</source>
+            <translation>Werkseinstellungen</translation>
+        </message>
+        <message>
+            <source>Compare with file</source>
+            <translation>Mit Datei vergleichen</translation>
+        </message>
+        <message>
+            <source>Parameter files (*.prm);;All files (*)</source>
+            <translation>Parameterdateien (*.prm);;Alle Dateien (*)</translation>
+        </message>
+        <message>
+            <source>{0} cannot be compared.</source>
+            <translation>{0} kann nicht verglichen werden.</translation>
+        </message>
+        <message>
+            <source>Values taken from {0}</source>
+            <translation>Werte aus {0} übernommen</translation>
+        </message>
+        <message>
+            <source>Compare with valve</source>
+            <translation>Mit Ventil vergleichen</translation>
+        </message>
+        <message>
+            <source>Go online with the valve first (Communication → Online mode).</source>
+            <translation>Zuerst mit dem Ventil online gehen (Kommunikation → Online-Modus).</translation>
+        </message>
+        <message>
+            <source>Values taken from the valve</source>
+            <translation>Werte aus dem Ventil übernommen</translation>
+        </message>
+        <message>
+            <source>Values chosen from the valve</source>
+            <translation>Aus dem Ventil gewählte Werte</translation>
+        </message>
+        <message>
+            <source>Online: document and valve agree</source>
+            <translation>Online: Dokument und Ventil stimmen überein</translation>
+        </message>
+        <message>
+            <source>Parameters restored from the history</source>
+            <translation>Parameter aus dem Verlauf wiederhergestellt</translation>
         </message>
     </context>
     <context>
@@ -1045,7 +1179,7 @@ Die letzte Aktion wurde womöglich nicht vollständig ausgeführt. Speichern Sie
         </message>
         <message>
             <source>The history database cannot be used.</source>
-            <translation type="unfinished"></translation>
+            <translation>Die Verlaufsdatenbank kann nicht benutzt werden.</translation>
         </message>
     </context>
     <context>
@@ -1289,6 +1423,134 @@ Die letzte Aktion wurde womöglich nicht vollständig ausgeführt. Speichern Sie
         <message>
             <source>USB</source>
             <translation>USB</translation>
+        </message>
+    </context>
+    <context>
+        <name>HistoryPolicy</name>
+        <message>
+            <source>Upload refused</source>
+            <translation>Hochladen abgelehnt</translation>
+        </message>
+        <message>
+            <source>The history database cannot record this upload, and the setting says to refuse uploads then. Nothing was written to the valve.</source>
+            <translation>Die Verlaufsdatenbank kann dieses Hochladen nicht aufzeichnen, und die Einstellung verlangt, dann nicht hochzuladen. In das Ventil wurde nichts geschrieben.</translation>
+        </message>
+        <message>
+            <source>History database unavailable</source>
+            <translation>Verlaufsdatenbank nicht erreichbar</translation>
+        </message>
+        <message>
+            <source>The history database cannot record this upload. Upload anyway and keep the record on this computer until the database is back?
+
+Yes uploads and queues the record; No uploads nothing.</source>
+            <translation>Die Verlaufsdatenbank kann dieses Hochladen nicht aufzeichnen. Trotzdem hochladen und den Eintrag auf diesem Rechner aufbewahren, bis die Datenbank wieder erreichbar ist?
+
+Ja lädt hoch und stellt den Eintrag in die Warteschlange; Nein lädt nichts hoch.</translation>
+        </message>
+    </context>
+    <context>
+        <name>HistoryTableModel</name>
+        <message>
+            <source>No.</source>
+            <translation>Nr.</translation>
+        </message>
+        <message>
+            <source>Time (UTC)</source>
+            <translation>Zeit (UTC)</translation>
+        </message>
+        <message>
+            <source>Operation</source>
+            <translation>Vorgang</translation>
+        </message>
+        <message>
+            <source>Outcome</source>
+            <translation>Ergebnis</translation>
+        </message>
+        <message>
+            <source>Type key</source>
+            <translation>Typenschlüssel</translation>
+        </message>
+        <message>
+            <source>Firmware</source>
+            <translation>Firmware</translation>
+        </message>
+        <message>
+            <source>User, station, link</source>
+            <translation>Benutzer, Station, Verbindung</translation>
+        </message>
+    </context>
+    <context>
+        <name>HistoryWindow</name>
+        <message>
+            <source>History</source>
+            <translation>Verlauf</translation>
+        </message>
+        <message>
+            <source>serial number</source>
+            <translation>Seriennummer</translation>
+        </message>
+        <message>
+            <source>Show</source>
+            <translation>Anzeigen</translation>
+        </message>
+        <message>
+            <source>Valve serial number:</source>
+            <translation>Seriennummer des Ventils:</translation>
+        </message>
+        <message>
+            <source>Compare the two selected records</source>
+            <translation>Die zwei gewählten Einträge vergleichen</translation>
+        </message>
+        <message>
+            <source>Restore into the document</source>
+            <translation>In das Dokument übernehmen</translation>
+        </message>
+        <message>
+            <source>Restore to the valve</source>
+            <translation>In das Ventil zurückschreiben</translation>
+        </message>
+        <message>
+            <source>Export…</source>
+            <translation>Exportieren…</translation>
+        </message>
+        <message>
+            <source>Type a valve's serial number.</source>
+            <translation>Seriennummer eines Ventils eingeben.</translation>
+        </message>
+        <message>
+            <source>Reading the history…</source>
+            <translation>Verlauf wird gelesen…</translation>
+        </message>
+        <message numerus="yes">
+            <source>%n record(s) in {0}</source>
+            <translation>
+                <numerusform>%n Eintrag in {0}</numerusform>
+                <numerusform>%n Einträge in {0}</numerusform>
+            </translation>
+        </message>
+        <message>
+            <source>This record holds no parameter set (the operation did not change the valve's stored parameters).</source>
+            <translation>Dieser Eintrag enthält keinen Parametersatz (der Vorgang hat die gespeicherten Parameter des Ventils nicht geändert).</translation>
+        </message>
+        <message>
+            <source>No. {0}, {1}</source>
+            <translation>Nr. {0}, {1}</translation>
+        </message>
+        <message>
+            <source>Go online with valve {0} first: a record is restored only into the valve it was recorded from.</source>
+            <translation>Zuerst mit Ventil {0} online gehen: ein Eintrag wird nur in das Ventil zurückgeschrieben, von dem er stammt.</translation>
+        </message>
+        <message>
+            <source>Export record</source>
+            <translation>Eintrag exportieren</translation>
+        </message>
+        <message>
+            <source>Parameter files (*.prm);;CSV tables (*.csv)</source>
+            <translation>Parameterdateien (*.prm);;CSV-Tabellen (*.csv)</translation>
+        </message>
+        <message>
+            <source>The record was not exported.</source>
+            <translation>Der Eintrag wurde nicht exportiert.</translation>
         </message>
     </context>
     <context>
@@ -1580,6 +1842,30 @@ Die letzte Aktion wurde womöglich nicht vollständig ausgeführt. Speichern Sie
             <source>Toolbar</source>
             <translation>Werkzeugleiste</translation>
         </message>
+        <message>
+            <source>Co&amp;mpare with file…</source>
+            <translation>Mit Datei &amp;vergleichen…</translation>
+        </message>
+        <message>
+            <source>Compare the parameters with a *.prm file, take chosen values</source>
+            <translation>Die Parameter mit einer *.prm-Datei vergleichen, gewählte Werte übernehmen</translation>
+        </message>
+        <message>
+            <source>&amp;Compare with valve</source>
+            <translation>Mit Ventil &amp;vergleichen</translation>
+        </message>
+        <message>
+            <source>Compare the document with the valve, apply chosen values</source>
+            <translation>Das Dokument mit dem Ventil vergleichen, gewählte Werte übernehmen</translation>
+        </message>
+        <message>
+            <source>&amp;History…</source>
+            <translation>Verlau&amp;f…</translation>
+        </message>
+        <message>
+            <source>Every operation recorded on a valve's parameters</source>
+            <translation>Jeder aufgezeichnete Vorgang an den Parametern eines Ventils</translation>
+        </message>
     </context>
     <context>
         <name>MainStatusBar</name>
@@ -1718,6 +2004,10 @@ Die letzte Aktion wurde womöglich nicht vollständig ausgeführt. Speichern Sie
         <message>
             <source>Valve</source>
             <translation>Ventil</translation>
+        </message>
+        <message>
+            <source>Choose per parameter…</source>
+            <translation>Je Parameter wählen…</translation>
         </message>
     </context>
     <context>

@@ -26,6 +26,7 @@ from prm9tool.online.valve_control import ValveControl
 from prm9tool.views import prompts
 from prm9tool.views.access_dialog import ChangePasswordDialog, PasswordDialog
 from prm9tool.views.actions import MainActions
+from prm9tool.views.compare_workflow import CompareWorkflow
 from prm9tool.views.emcy import status_summary
 from prm9tool.views.emulated_valve import EmulatedValveMenu
 from prm9tool.views.file_workflow import FileWorkflow
@@ -70,6 +71,7 @@ class MainWindow(QMainWindow):
         self.valve = ValveWorkflow(self, doc, undo, connection, self.sync, settings, access)
         self.control = ValveControl(connection, self)
         self.records = RecordActions(self)
+        self.compare = CompareWorkflow(self, doc, undo, access, connection, self.sync, self.valve)
         self.commands = MainActions(self)
         self.commands.build_menus(self.menuBar())
         self.emulated_menu = EmulatedValveMenu(self.control, doc, self).attach(self.commands)
@@ -195,6 +197,9 @@ class MainWindow(QMainWindow):
             "help": self.show_help,
             "homepage": lambda: open_homepage(self),
             "about": self.show_about,
+            "compare_file": self.compare.compare_with_file,
+            "compare_valve": self.compare.compare_with_valve,
+            "history": self.compare.show_history,
         }
         for name, handler in handlers.items():
             a[name].triggered.connect(lambda _checked=False, h=handler: h())
@@ -227,7 +232,7 @@ class MainWindow(QMainWindow):
             signal.connect(self._show_file)
         self.files.about_to_replace.connect(self.sync.stop)
         self.files.document_replaced.connect(self.valve.compare_again)
-        for source in (self.files, self.valve, self.records):
+        for source in (self.files, self.valve, self.records, self.compare):
             source.message_posted.connect(lambda text: s.showMessage(text, 8000))
 
     def _on_connection_online_changed(self, online: bool) -> None:
@@ -249,6 +254,7 @@ class MainWindow(QMainWindow):
             "offline": online,
             "upload": ready,
             "download": ready,
+            "compare_valve": ready,
             "restart": ready,
             "restore_factory": not busy,
             "view_scope": online,

@@ -30,6 +30,7 @@ class DiffChoice(Enum):
 
     TAKE_VALVE = "take_valve"
     SEND_DOCUMENT = "send_document"
+    CHOOSE = "choose"  # per parameter, in the compare view
     CANCEL = "cancel"
 
 
@@ -72,8 +73,12 @@ class OnlineDiffDialog(QDialog):
             self.send_button.setToolTip(
                 self.tr("The document is for another valve variant; it cannot be sent.")
             )
+        self.choose_button = QPushButton(self.tr("Choose per parameter…"))
+        self.choose_button.setEnabled(same_variant)
         buttons.addButton(self.take_button, QDialogButtonBox.ButtonRole.AcceptRole)
         buttons.addButton(self.send_button, QDialogButtonBox.ButtonRole.AcceptRole)
+        buttons.addButton(self.choose_button, QDialogButtonBox.ButtonRole.AcceptRole)
+        self.choose_button.clicked.connect(lambda: self._choose(DiffChoice.CHOOSE))
         buttons.addButton(QDialogButtonBox.StandardButton.Cancel)
         self.take_button.clicked.connect(lambda: self._choose(DiffChoice.TAKE_VALVE))
         self.send_button.clicked.connect(lambda: self._choose(DiffChoice.SEND_DOCUMENT))
