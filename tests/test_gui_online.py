@@ -220,6 +220,20 @@ def test_upload_shows_a_progress_dialog_and_stores(qtbot, window):
     assert not window.sync.unstored
 
 
+def test_a_second_identical_upload_says_so(qtbot, window):
+    go_online(qtbot, window)
+    _settled(qtbot, window)
+    window.doc.set_value("DTAMP", 1234)
+    messages = []
+    window.valve.message_posted.connect(messages.append)
+    for _ in range(2):
+        with qtbot.waitSignal(window.connection.operation_finished, timeout=TIMEOUT):
+            window.commands["upload"].trigger()
+    first, second = [m for m in messages if "verified and stored" in m]
+    assert "again" not in first and "already held them" in second
+    assert window.status.currentMessage() == second
+
+
 def test_upload_to_a_valve_of_another_variant_names_both_in_the_program_language(
     qtbot, window, answers
 ):

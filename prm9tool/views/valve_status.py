@@ -19,6 +19,7 @@ from PySide6.QtWidgets import (
     QWidget,
 )
 
+from prm9tool.i18n import format_measured
 from prm9tool.online.connection import ValveConnection
 from prm9tool.online.valve_control import ValveControl
 from prm9tool.views.commissioning_panel import CommissioningPanel
@@ -220,8 +221,9 @@ class ValveStatusWindow(QDialog):
             return
         self.fields["state"].setText(str(getattr(status, "device_state", "")))
         self.fields["nmt"].setText(str(getattr(status, "nmt_state", "")))
-        self.fields["temperature"].setText(f"{getattr(status, 'temperature_c', 0.0):.1f} °C")
-        self.fields["supply"].setText(f"{getattr(status, 'supply_v', 0.0):.2f} V")
+        temperature = format_measured(getattr(status, "temperature_c", 0.0), "°C")
+        self.fields["temperature"].setText(f"{temperature} °C")
+        self.fields["supply"].setText(f"{format_measured(getattr(status, 'supply_v', 0.0), 'V')} V")
         self._show_errors(status)
         for led, state, led_state in zip(
             self.leds, self._led_states, getattr(status, "leds", ()), strict=False
