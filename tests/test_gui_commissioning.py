@@ -83,8 +83,7 @@ def test_the_inputs_dialog_sets_the_supply_and_the_switches(qtbot, window):
     qtbot.waitUntil(dialog.isEnabled, timeout=TIMEOUT)
     assert dialog.fields["supply_voltage"].value() == 24.0
     assert dialog.switches["switch_baud"].isVisible()  # a -CA valve has its switches
-    dialog.fields["supply_voltage"].setValue(18.0)
-    dialog.fields["supply_voltage"].editingFinished.emit()
+    dialog.fields["supply_voltage"].setValue(18.0)  # as the arrows or Enter do
     qtbot.waitUntil(lambda: emulated(SERIAL).inputs()["supply_voltage"] == 18.0, timeout=TIMEOUT)
     dialog.switches["switch_node"].setCurrentIndex(0)
     dialog.switches["switch_node"].activated.emit(0)

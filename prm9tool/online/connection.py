@@ -25,11 +25,11 @@ from PySide6.QtCore import QObject, Qt, Signal
 from prm9tool.errors import CommunicationError, Prm9Error
 from prm9tool.online.polling import Poller, Schedule
 from prm9tool.online.setpoint_driver import SetpointDriver, StreamClock
-from prm9tool.scope import GeneratorSettings
 from prm9tool.translate import error_text
 
 if TYPE_CHECKING:
     from prm9tool.online.recording import HistoryHook
+    from prm9tool.scope import GeneratorSettings  # not at run time: numpy, at start-up
 
 log = logging.getLogger(__name__)
 

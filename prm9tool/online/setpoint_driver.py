@@ -22,10 +22,12 @@ from __future__ import annotations
 import threading
 import time
 from collections.abc import Callable
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from prm9tool.errors import CommunicationError, Prm9Error
-from prm9tool.scope import GeneratorSettings
+
+if TYPE_CHECKING:  # numpy stays out of the window's start-up (tests/test_gui_app.py)
+    from prm9tool.scope import GeneratorSettings
 
 KEEPALIVE_S = 0.1  # the override's watchdog is 500 ms; rewrite (or read) at least this often
 LINK_STEP_S = 0.001  # over a link: look for a changed value every millisecond (one USB frame)
