@@ -168,7 +168,7 @@ def test_e02_valve_window_table_and_dialogs(qtbot, program, shots, monkeypatch):
     window.show_view("parameters")
     window.doc.set_value("DTAMP", 2458 + 819)  # one changed value shows the highlighting
     qtbot.waitUntil(lambda: window.status.file_label.text() == "untitled *", timeout=TIMEOUT)
-    qtbot.waitUntil(lambda: _table_value(window, "PWR") == "24", timeout=TIMEOUT)
+    qtbot.waitUntil(lambda: _table_value(window, "PWR") == "24.00", timeout=TIMEOUT)
     assert _table_value(window, "DTAMP") == "20"
     _save(qtbot, window, shots, "parameter_list_e02")
     _parameter_dialogs(qtbot, window, shots)
@@ -262,7 +262,7 @@ def test_e04_ca_valve_expert_status_canopen_scope_and_languages(qtbot, program, 
     _diagram_live(qtbot, window)
     _save(qtbot, window, shots, "main_window_e04_ca_expert")
     window.show_view("parameters")
-    qtbot.waitUntil(lambda: _table_value(window, "PWR") == "24", timeout=TIMEOUT)
+    qtbot.waitUntil(lambda: _table_value(window, "PWR") == "24.00", timeout=TIMEOUT)
     _save(qtbot, window, shots, "parameter_list_e04_ca_expert")
     status = window.show_status_window()
     leds = status._led_states
