@@ -44,6 +44,7 @@ def test_menus_and_toolbar_are_those_of_the_manual(window):
         "&Download from valve",
         "Restore &factory values…",
         "&Restart valve…",
+        "E&mulated valve",  # this program's addition: the emulated valve's inputs and faults
     ]
     assert _menu_texts(window, "communication") == [
         "&HID configuration…",

@@ -268,6 +268,72 @@ Poslední akce možná nebyla dokončena. Uložte svou práci pod novým názvem
         </message>
     </context>
     <context>
+        <name>CommissioningPanel</name>
+        <message>
+            <source>Commissioning</source>
+            <translation>Uvedení do provozu</translation>
+        </message>
+        <message>
+            <source>Enable</source>
+            <translation>Uvolnit</translation>
+        </message>
+        <message>
+            <source>Control word 0x6040: 08h → 09h → 0Bh → 0Fh (manual §7.6): resets a fault, then DISABLED, HOLD, DEVICE_MODE_ACTIVE. The valve follows its setpoint.</source>
+            <translation>Řídicí slovo 0x6040: 08h → 09h → 0Bh → 0Fh (návod §7.6): resetuje chybu, pak DISABLED, HOLD, DEVICE_MODE_ACTIVE. Ventil sleduje svou žádanou hodnotu.</translation>
+        </message>
+        <message>
+            <source>Disable</source>
+            <translation>Zablokovat</translation>
+        </message>
+        <message>
+            <source>Control word 0x6040: 0Fh → 0Bh → 09h → 08h, back to INIT.</source>
+            <translation>Řídicí slovo 0x6040: 0Fh → 0Bh → 09h → 08h, zpět do INIT.</translation>
+        </message>
+        <message>
+            <source>NMT start</source>
+            <translation>NMT start</translation>
+        </message>
+        <message>
+            <source>NMT start: operational (PDOs run)</source>
+            <translation>NMT start: operational (PDO běží)</translation>
+        </message>
+        <message>
+            <source>NMT pre-operational</source>
+            <translation>NMT pre-operational</translation>
+        </message>
+        <message>
+            <source>NMT enter pre-operational</source>
+            <translation>NMT: přejít do pre-operational</translation>
+        </message>
+        <message>
+            <source>NMT stop</source>
+            <translation>NMT stop</translation>
+        </message>
+        <message>
+            <source>NMT stop: only NMT is answered</source>
+            <translation>NMT stop: odpovídá jen na NMT</translation>
+        </message>
+        <message>
+            <source>The valve follows its setpoint (DEVICE_MODE_ACTIVE).</source>
+            <translation>Ventil sleduje svou žádanou hodnotu (DEVICE_MODE_ACTIVE).</translation>
+        </message>
+        <message>
+            <source>The valve does not follow its setpoint: {0}</source>
+            <translation>Ventil nesleduje svou žádanou hodnotu: {0}</translation>
+        </message>
+    </context>
+    <context>
+        <name>Compare</name>
+        <message>
+            <source>The type keys differ: {0} is {1}, {2} is {3}.</source>
+            <translation type="unfinished"></translation>
+        </message>
+        <message>
+            <source>The valve variants differ: only the parameters both have are compared; {0} parameters that one side lacks are left out.</source>
+            <translation type="unfinished"></translation>
+        </message>
+    </context>
+    <context>
         <name>ControlPanel</name>
         <message>
             <source>Recording</source>
@@ -702,6 +768,111 @@ Poslední akce možná nebyla dokončena. Uložte svou práci pod novým názvem
         </message>
     </context>
     <context>
+        <name>EmulatedValve</name>
+        <message>
+            <source>Coil A disconnected</source>
+            <translation>Cívka A odpojena</translation>
+        </message>
+        <message>
+            <source>Coil A short circuit (over-current)</source>
+            <translation>Cívka A zkrat (nadproud)</translation>
+        </message>
+        <message>
+            <source>Coil B disconnected</source>
+            <translation>Cívka B odpojena</translation>
+        </message>
+        <message>
+            <source>Coil B short circuit (over-current)</source>
+            <translation>Cívka B zkrat (nadproud)</translation>
+        </message>
+        <message>
+            <source>Setpoint wire break</source>
+            <translation>Přerušený vodič žádané hodnoty</translation>
+        </message>
+        <message>
+            <source>External sensor wire break</source>
+            <translation>Přerušený vodič externího snímače</translation>
+        </message>
+        <message>
+            <source>Spool position sensor (LVDT) wire break</source>
+            <translation>Přerušený vodič snímače polohy šoupátka (LVDT)</translation>
+        </message>
+        <message>
+            <source>Supply too low (17 V)</source>
+            <translation>Napájení příliš nízké (17 V)</translation>
+        </message>
+        <message>
+            <source>Supply too high (31 V)</source>
+            <translation>Napájení příliš vysoké (31 V)</translation>
+        </message>
+        <message>
+            <source>Over-temperature (105 °C)</source>
+            <translation>Přehřátí (105 °C)</translation>
+        </message>
+    </context>
+    <context>
+        <name>EmulatedValveDialog</name>
+        <message>
+            <source>Emulated valve</source>
+            <translation>Emulovaný ventil</translation>
+        </message>
+        <message>
+            <source>Setpoint input [{0}]:</source>
+            <translation>Vstup žádané hodnoty [{0}]:</translation>
+        </message>
+        <message>
+            <source>External sensor input [{0}]:</source>
+            <translation>Vstup externího snímače [{0}]:</translation>
+        </message>
+        <message>
+            <source>Supply voltage [V]:</source>
+            <translation>Napájecí napětí [V]:</translation>
+        </message>
+        <message>
+            <source>Ambient temperature [°C]:</source>
+            <translation>Okolní teplota [°C]:</translation>
+        </message>
+        <message>
+            <source>Interface / bit-rate switch:</source>
+            <translation>Přepínač rozhraní / přenosové rychlosti:</translation>
+        </message>
+        <message>
+            <source>Node-ID switch:</source>
+            <translation>Přepínač ID uzlu:</translation>
+        </message>
+        <message>
+            <source>The valve reads its rotary switches at power-up only: restart it (Valve → Restart valve) for a new position to apply. The setpoint input counts only while the valve takes its setpoint from the analog input (no CANopen, no setpoint generator).</source>
+            <translation>Ventil čte své otočné přepínače jen po zapnutí: restartujte ho (Ventil → Restart ventilu), aby platila nová poloha. Vstup žádané hodnoty platí jen tehdy, když ventil bere žádanou hodnotu z analogového vstupu (bez CANopen, bez generátoru žádané hodnoty).</translation>
+        </message>
+    </context>
+    <context>
+        <name>EmulatedValveMenu</name>
+        <message>
+            <source>E&amp;mulated valve</source>
+            <translation>E&amp;mulovaný ventil</translation>
+        </message>
+        <message>
+            <source>&amp;Inputs and switches…</source>
+            <translation>&amp;Vstupy a přepínače…</translation>
+        </message>
+        <message>
+            <source>Setpoint and sensor signals, supply, temperature and rotary switches</source>
+            <translation>Signály žádané hodnoty a snímače, napájení, teplota a otočné přepínače</translation>
+        </message>
+        <message>
+            <source>&amp;Pull the USB cable</source>
+            <translation>&amp;Vytáhnout kabel USB</translation>
+        </message>
+        <message>
+            <source>The link drops as when a real cable is pulled</source>
+            <translation>Spojení se přeruší jako při vytažení skutečného kabelu</translation>
+        </message>
+        <message>
+            <source>Inject this fault into the emulated valve, or repair it</source>
+            <translation>Vyvolat tuto poruchu v emulovaném ventilu, nebo ji odstranit</translation>
+        </message>
+    </context>
+    <context>
         <name>EmulatorDialog</name>
         <message>
             <source>Add emulated valve</source>
@@ -737,6 +908,10 @@ Poslední akce možná nebyla dokončena. Uložte svou práci pod novým názvem
         <message>
             <source>The valve refused the access.</source>
             <translation>Ventil přístup odmítl.</translation>
+        </message>
+        <message>
+            <source>The history database cannot be used.</source>
+            <translation type="unfinished"></translation>
         </message>
     </context>
     <context>
@@ -1989,6 +2164,18 @@ Ujistěte se, že pohyb stroje je bezpečný. Spustit generátor?</translation>
             <source>no reason given</source>
             <translation>bez udání důvodu</translation>
         </message>
+        <message>
+            <source>The valve does not follow its setpoint: {0}</source>
+            <translation>Ventil nesleduje svou žádanou hodnotu: {0}</translation>
+        </message>
+        <message>
+            <source>The valve does not follow its setpoint: {0}
+
+Enable it now (NMT start, control word 08h → 09h → 0Bh → 0Fh)?</source>
+            <translation>Ventil nesleduje svou žádanou hodnotu: {0}
+
+Uvolnit ho nyní (NMT start, řídicí slovo 08h → 09h → 0Bh → 0Fh)?</translation>
+        </message>
     </context>
     <context>
         <name>SensorScalingDialog</name>
@@ -2104,6 +2291,14 @@ Ujistěte se, že pohyb stroje je bezpečný. Spustit generátor?</translation>
         <message>
             <source>No response to the step in {0}: the response stays flat or within its noise.</source>
             <translation>Žádná odezva na skok v {0}: odezva zůstává plochá nebo v rámci šumu.</translation>
+        </message>
+        <message>
+            <source>Measured on step {0} of {1} in {2}.</source>
+            <translation>Změřeno na skoku {0} z {1} v {2}.</translation>
+        </message>
+        <message>
+            <source>Window too short: in {0} the response has not come to rest yet. Widen the time window or move the cursors apart.</source>
+            <translation>Okno je příliš krátké: v {0} se odezva ještě neustálila. Zvětšete časové okno nebo oddalte kurzory.</translation>
         </message>
     </context>
     <context>
@@ -2272,6 +2467,65 @@ Ujistěte se, že pohyb stroje je bezpečný. Spustit generátor?</translation>
         <message>
             <source>Not connected to a valve.</source>
             <translation>Není připojen žádný ventil.</translation>
+        </message>
+    </context>
+    <context>
+        <name>ValveControl</name>
+        <message>
+            <source>no valve is connected.</source>
+            <translation>není připojen žádný ventil.</translation>
+        </message>
+        <message>
+            <source>the valve is starting up (about 2 s).</source>
+            <translation>ventil se spouští (asi 2 s).</translation>
+        </message>
+        <message>
+            <source>an error stops it (device state {0}); Valve → Valve status lists the error and resets it with Enable once the cause is gone.</source>
+            <translation>zastavuje ho chyba (stav zařízení {0}); Ventil → Stav ventilu chybu uvádí a tlačítkem Uvolnit ji po odstranění příčiny resetuje.</translation>
+        </message>
+        <message>
+            <source>it waits for a CANopen master (NMT {0}, device state {1}). Enable it under Valve → Valve status (control word 08h → 09h → 0Bh → 0Fh).</source>
+            <translation>čeká na CANopen master (NMT {0}, stav zařízení {1}). Uvolněte ho v nabídce Ventil → Stav ventilu (řídicí slovo 08h → 09h → 0Bh → 0Fh).</translation>
+        </message>
+        <message>
+            <source>its CANopen master stopped it (NMT stopped). Start it under Valve → Valve status.</source>
+            <translation>jeho CANopen master ho zastavil (NMT zastaveno). Spusťte ho v nabídce Ventil → Stav ventilu.</translation>
+        </message>
+        <message>
+            <source>it is not enabled (device state {0}). Enable it under Valve → Valve status.</source>
+            <translation>není uvolněn (stav zařízení {0}). Uvolněte ho v nabídce Ventil → Stav ventilu.</translation>
+        </message>
+        <message>
+            <source>it holds its position (device state HOLD). Enable it under Valve → Valve status.</source>
+            <translation>drží svou polohu (stav zařízení HOLD). Uvolněte ho v nabídce Ventil → Stav ventilu.</translation>
+        </message>
+        <message>
+            <source>offline</source>
+            <translation>offline</translation>
+        </message>
+        <message>
+            <source>starting up</source>
+            <translation>spouští se</translation>
+        </message>
+        <message>
+            <source>fault</source>
+            <translation>chyba</translation>
+        </message>
+        <message>
+            <source>waiting for a CANopen master</source>
+            <translation>čeká na CANopen master</translation>
+        </message>
+        <message>
+            <source>NMT stopped</source>
+            <translation>NMT zastaveno</translation>
+        </message>
+        <message>
+            <source>not enabled</source>
+            <translation>neuvolněn</translation>
+        </message>
+        <message>
+            <source>hold</source>
+            <translation>držení</translation>
         </message>
     </context>
     <context>

@@ -268,6 +268,72 @@ Die letzte Aktion wurde womöglich nicht vollständig ausgeführt. Speichern Sie
         </message>
     </context>
     <context>
+        <name>CommissioningPanel</name>
+        <message>
+            <source>Commissioning</source>
+            <translation>Inbetriebnahme</translation>
+        </message>
+        <message>
+            <source>Enable</source>
+            <translation>Freigeben</translation>
+        </message>
+        <message>
+            <source>Control word 0x6040: 08h → 09h → 0Bh → 0Fh (manual §7.6): resets a fault, then DISABLED, HOLD, DEVICE_MODE_ACTIVE. The valve follows its setpoint.</source>
+            <translation>Steuerwort 0x6040: 08h → 09h → 0Bh → 0Fh (Handbuch §7.6): setzt einen Fehler zurück, dann DISABLED, HOLD, DEVICE_MODE_ACTIVE. Das Ventil folgt seinem Sollwert.</translation>
+        </message>
+        <message>
+            <source>Disable</source>
+            <translation>Sperren</translation>
+        </message>
+        <message>
+            <source>Control word 0x6040: 0Fh → 0Bh → 09h → 08h, back to INIT.</source>
+            <translation>Steuerwort 0x6040: 0Fh → 0Bh → 09h → 08h, zurück nach INIT.</translation>
+        </message>
+        <message>
+            <source>NMT start</source>
+            <translation>NMT Start</translation>
+        </message>
+        <message>
+            <source>NMT start: operational (PDOs run)</source>
+            <translation>NMT Start: operational (PDOs laufen)</translation>
+        </message>
+        <message>
+            <source>NMT pre-operational</source>
+            <translation>NMT Pre-operational</translation>
+        </message>
+        <message>
+            <source>NMT enter pre-operational</source>
+            <translation>NMT: nach Pre-operational</translation>
+        </message>
+        <message>
+            <source>NMT stop</source>
+            <translation>NMT Stopp</translation>
+        </message>
+        <message>
+            <source>NMT stop: only NMT is answered</source>
+            <translation>NMT Stopp: nur NMT wird beantwortet</translation>
+        </message>
+        <message>
+            <source>The valve follows its setpoint (DEVICE_MODE_ACTIVE).</source>
+            <translation>Das Ventil folgt seinem Sollwert (DEVICE_MODE_ACTIVE).</translation>
+        </message>
+        <message>
+            <source>The valve does not follow its setpoint: {0}</source>
+            <translation>Das Ventil folgt seinem Sollwert nicht: {0}</translation>
+        </message>
+    </context>
+    <context>
+        <name>Compare</name>
+        <message>
+            <source>The type keys differ: {0} is {1}, {2} is {3}.</source>
+            <translation type="unfinished"></translation>
+        </message>
+        <message>
+            <source>The valve variants differ: only the parameters both have are compared; {0} parameters that one side lacks are left out.</source>
+            <translation type="unfinished"></translation>
+        </message>
+    </context>
+    <context>
         <name>ControlPanel</name>
         <message>
             <source>Recording</source>
@@ -702,6 +768,111 @@ Die letzte Aktion wurde womöglich nicht vollständig ausgeführt. Speichern Sie
         </message>
     </context>
     <context>
+        <name>EmulatedValve</name>
+        <message>
+            <source>Coil A disconnected</source>
+            <translation>Spule A abgeklemmt</translation>
+        </message>
+        <message>
+            <source>Coil A short circuit (over-current)</source>
+            <translation>Spule A Kurzschluss (Überstrom)</translation>
+        </message>
+        <message>
+            <source>Coil B disconnected</source>
+            <translation>Spule B abgeklemmt</translation>
+        </message>
+        <message>
+            <source>Coil B short circuit (over-current)</source>
+            <translation>Spule B Kurzschluss (Überstrom)</translation>
+        </message>
+        <message>
+            <source>Setpoint wire break</source>
+            <translation>Drahtbruch Sollwert</translation>
+        </message>
+        <message>
+            <source>External sensor wire break</source>
+            <translation>Drahtbruch externer Sensor</translation>
+        </message>
+        <message>
+            <source>Spool position sensor (LVDT) wire break</source>
+            <translation>Drahtbruch Schieberwegsensor (LVDT)</translation>
+        </message>
+        <message>
+            <source>Supply too low (17 V)</source>
+            <translation>Versorgung zu niedrig (17 V)</translation>
+        </message>
+        <message>
+            <source>Supply too high (31 V)</source>
+            <translation>Versorgung zu hoch (31 V)</translation>
+        </message>
+        <message>
+            <source>Over-temperature (105 °C)</source>
+            <translation>Übertemperatur (105 °C)</translation>
+        </message>
+    </context>
+    <context>
+        <name>EmulatedValveDialog</name>
+        <message>
+            <source>Emulated valve</source>
+            <translation>Emuliertes Ventil</translation>
+        </message>
+        <message>
+            <source>Setpoint input [{0}]:</source>
+            <translation>Sollwerteingang [{0}]:</translation>
+        </message>
+        <message>
+            <source>External sensor input [{0}]:</source>
+            <translation>Eingang externer Sensor [{0}]:</translation>
+        </message>
+        <message>
+            <source>Supply voltage [V]:</source>
+            <translation>Versorgungsspannung [V]:</translation>
+        </message>
+        <message>
+            <source>Ambient temperature [°C]:</source>
+            <translation>Umgebungstemperatur [°C]:</translation>
+        </message>
+        <message>
+            <source>Interface / bit-rate switch:</source>
+            <translation>Schalter Schnittstelle / Bitrate:</translation>
+        </message>
+        <message>
+            <source>Node-ID switch:</source>
+            <translation>Schalter Knoten-ID:</translation>
+        </message>
+        <message>
+            <source>The valve reads its rotary switches at power-up only: restart it (Valve → Restart valve) for a new position to apply. The setpoint input counts only while the valve takes its setpoint from the analog input (no CANopen, no setpoint generator).</source>
+            <translation>Das Ventil liest seine Drehschalter nur beim Einschalten: starten Sie es neu (Ventil → Ventil neu starten), damit eine neue Stellung gilt. Der Sollwerteingang zählt nur, solange das Ventil seinen Sollwert vom Analogeingang nimmt (kein CANopen, kein Sollwertgenerator).</translation>
+        </message>
+    </context>
+    <context>
+        <name>EmulatedValveMenu</name>
+        <message>
+            <source>E&amp;mulated valve</source>
+            <translation>E&amp;muliertes Ventil</translation>
+        </message>
+        <message>
+            <source>&amp;Inputs and switches…</source>
+            <translation>&amp;Eingänge und Schalter…</translation>
+        </message>
+        <message>
+            <source>Setpoint and sensor signals, supply, temperature and rotary switches</source>
+            <translation>Sollwert- und Sensorsignal, Versorgung, Temperatur und Drehschalter</translation>
+        </message>
+        <message>
+            <source>&amp;Pull the USB cable</source>
+            <translation>USB-Kabel &amp;ziehen</translation>
+        </message>
+        <message>
+            <source>The link drops as when a real cable is pulled</source>
+            <translation>Die Verbindung bricht ab wie bei einem gezogenen Kabel</translation>
+        </message>
+        <message>
+            <source>Inject this fault into the emulated valve, or repair it</source>
+            <translation>Diesen Fehler im emulierten Ventil auslösen oder beheben</translation>
+        </message>
+    </context>
+    <context>
         <name>EmulatorDialog</name>
         <message>
             <source>Add emulated valve</source>
@@ -737,6 +908,10 @@ Die letzte Aktion wurde womöglich nicht vollständig ausgeführt. Speichern Sie
         <message>
             <source>The valve refused the access.</source>
             <translation>Das Ventil hat den Zugriff abgelehnt.</translation>
+        </message>
+        <message>
+            <source>The history database cannot be used.</source>
+            <translation type="unfinished"></translation>
         </message>
     </context>
     <context>
@@ -1984,6 +2159,18 @@ Stellen Sie sicher, dass die Maschine sich gefahrlos bewegen kann. Generator sta
             <source>no reason given</source>
             <translation>ohne Angabe eines Grundes</translation>
         </message>
+        <message>
+            <source>The valve does not follow its setpoint: {0}</source>
+            <translation>Das Ventil folgt seinem Sollwert nicht: {0}</translation>
+        </message>
+        <message>
+            <source>The valve does not follow its setpoint: {0}
+
+Enable it now (NMT start, control word 08h → 09h → 0Bh → 0Fh)?</source>
+            <translation>Das Ventil folgt seinem Sollwert nicht: {0}
+
+Jetzt freigeben (NMT Start, Steuerwort 08h → 09h → 0Bh → 0Fh)?</translation>
+        </message>
     </context>
     <context>
         <name>SensorScalingDialog</name>
@@ -2099,6 +2286,14 @@ Stellen Sie sicher, dass die Maschine sich gefahrlos bewegen kann. Generator sta
         <message>
             <source>No response to the step in {0}: the response stays flat or within its noise.</source>
             <translation>Keine Antwort auf den Sprung in {0}: Die Antwort bleibt flach oder im Rauschen.</translation>
+        </message>
+        <message>
+            <source>Measured on step {0} of {1} in {2}.</source>
+            <translation>Gemessen am Sprung {0} von {1} in {2}.</translation>
+        </message>
+        <message>
+            <source>Window too short: in {0} the response has not come to rest yet. Widen the time window or move the cursors apart.</source>
+            <translation>Fenster zu kurz: in {0} ist die Antwort noch nicht zur Ruhe gekommen. Vergrößern Sie das Zeitfenster oder ziehen Sie die Cursor auseinander.</translation>
         </message>
     </context>
     <context>
@@ -2267,6 +2462,65 @@ Stellen Sie sicher, dass die Maschine sich gefahrlos bewegen kann. Generator sta
         <message>
             <source>Not connected to a valve.</source>
             <translation>Nicht mit einem Ventil verbunden.</translation>
+        </message>
+    </context>
+    <context>
+        <name>ValveControl</name>
+        <message>
+            <source>no valve is connected.</source>
+            <translation>kein Ventil ist verbunden.</translation>
+        </message>
+        <message>
+            <source>the valve is starting up (about 2 s).</source>
+            <translation>das Ventil startet (etwa 2 s).</translation>
+        </message>
+        <message>
+            <source>an error stops it (device state {0}); Valve → Valve status lists the error and resets it with Enable once the cause is gone.</source>
+            <translation>ein Fehler hält es an (Gerätezustand {0}); Ventil → Ventilstatus zeigt den Fehler und setzt ihn mit „Freigeben“ zurück, sobald die Ursache behoben ist.</translation>
+        </message>
+        <message>
+            <source>it waits for a CANopen master (NMT {0}, device state {1}). Enable it under Valve → Valve status (control word 08h → 09h → 0Bh → 0Fh).</source>
+            <translation>es wartet auf einen CANopen-Master (NMT {0}, Gerätezustand {1}). Geben Sie es unter Ventil → Ventilstatus frei (Steuerwort 08h → 09h → 0Bh → 0Fh).</translation>
+        </message>
+        <message>
+            <source>its CANopen master stopped it (NMT stopped). Start it under Valve → Valve status.</source>
+            <translation>sein CANopen-Master hat es angehalten (NMT gestoppt). Starten Sie es unter Ventil → Ventilstatus.</translation>
+        </message>
+        <message>
+            <source>it is not enabled (device state {0}). Enable it under Valve → Valve status.</source>
+            <translation>es ist nicht freigegeben (Gerätezustand {0}). Geben Sie es unter Ventil → Ventilstatus frei.</translation>
+        </message>
+        <message>
+            <source>it holds its position (device state HOLD). Enable it under Valve → Valve status.</source>
+            <translation>es hält seine Position (Gerätezustand HOLD). Geben Sie es unter Ventil → Ventilstatus frei.</translation>
+        </message>
+        <message>
+            <source>offline</source>
+            <translation>offline</translation>
+        </message>
+        <message>
+            <source>starting up</source>
+            <translation>startet</translation>
+        </message>
+        <message>
+            <source>fault</source>
+            <translation>Fehler</translation>
+        </message>
+        <message>
+            <source>waiting for a CANopen master</source>
+            <translation>wartet auf CANopen-Master</translation>
+        </message>
+        <message>
+            <source>NMT stopped</source>
+            <translation>NMT gestoppt</translation>
+        </message>
+        <message>
+            <source>not enabled</source>
+            <translation>nicht freigegeben</translation>
+        </message>
+        <message>
+            <source>hold</source>
+            <translation>Halten</translation>
         </message>
     </context>
     <context>

@@ -22,10 +22,12 @@ from prm9tool.model.password import PasswordStore
 from prm9tool.model.undo import DocumentUndo
 from prm9tool.online.connection import ValveConnection
 from prm9tool.online.sync import ValveSync
+from prm9tool.online.valve_control import ValveControl
 from prm9tool.views import prompts
 from prm9tool.views.access_dialog import ChangePasswordDialog, PasswordDialog
 from prm9tool.views.actions import MainActions
 from prm9tool.views.emcy import status_summary
+from prm9tool.views.emulated_valve import EmulatedValveMenu
 from prm9tool.views.file_workflow import FileWorkflow
 from prm9tool.views.help_dialog import HelpWindow, about_html, open_homepage
 from prm9tool.views.icons import icon
@@ -66,9 +68,11 @@ class MainWindow(QMainWindow):
         self.sync = ValveSync(doc, connection, self)
         self.files = FileWorkflow(self, doc, undo, settings)
         self.valve = ValveWorkflow(self, doc, undo, connection, self.sync, settings, access)
+        self.control = ValveControl(connection, self)
         self.records = RecordActions(self)
         self.commands = MainActions(self)
         self.commands.build_menus(self.menuBar())
+        self.emulated_menu = EmulatedValveMenu(self.control, doc, self).attach(self.commands)
         self.commands.build_toolbar(self.addToolBar("toolbar"))
         self.status = MainStatusBar(self)
         self.setStatusBar(self.status)
@@ -104,7 +108,7 @@ class MainWindow(QMainWindow):
     def _make_scope_view(self) -> QWidget:
         from prm9tool.views.scope import ScopeWidget
 
-        self._scope = ScopeWidget(self.connection, self.doc, self)
+        self._scope = ScopeWidget(self.connection, self.doc, self, control=self.control)
         return self._scope
 
     def _add_page(self, name: str, view: QWidget) -> None:
@@ -285,7 +289,7 @@ class MainWindow(QMainWindow):
     def show_status_window(self) -> ValveStatusWindow:
         """Show the (non-modal) valve status window."""
         if self.status_window is None:
-            self.status_window = ValveStatusWindow(self.connection, self)
+            self.status_window = ValveStatusWindow(self.connection, self, self.control)
         self.status_window.show()
         self.status_window.raise_()
         return self.status_window

@@ -66,6 +66,7 @@ class CanopenSlave:
             valve.add_cycle_listener(self._on_cycle)
             valve.add_error_listener(self._on_error)
             valve.add_restart_listener(self._on_restart)
+            valve.set_nmt_handler(self._on_local_nmt)
         self._notifier = can.Notifier(bus, [self._on_message], timeout=0.1)
 
     # --- public --------------------------------------------------------------------------
@@ -80,6 +81,11 @@ class CanopenSlave:
         with self._valve.lock:
             self._closed = True
             self.state = NmtState.OFF
+            self._valve.set_nmt_handler(None)
+
+    def _on_local_nmt(self, command: int) -> None:
+        """An NMT command from the valve's USB side: as if the master sent it to this node."""
+        self._on_nmt(bytes((command, self.node_id)))
 
     # --- power-up, NMT ---------------------------------------------------------------------
     def _power_up(self) -> None:
