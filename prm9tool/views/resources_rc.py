@@ -6,7 +6,7 @@
 from PySide6 import QtCore
 
 qt_resource_data = b"\
-\x00\x00\x11x\
+\x00\x00\x12\x1a\
 <\
 !DOCTYPE html>\x0a<\
 html lang=\x22cs\x22>\x0a\
@@ -73,222 +73,232 @@ ov\xc3\xbd\x0akl\xc3\xad\xc4\x8d a n\xc3\
 \xa1zev souboru; <b\
 >*</b> ozna\xc4\x8duje\
  neulo\xc5\xbeen\xc3\xa9 zm\xc4\
-\x9bny.</p>\x0a<p>Hlav\
-n\xc3\xad plocha zobra\
-zuje jeden ze t\xc5\
-\x99\xc3\xad n\xc3\xa1hled\xc5\xaf: <\
-b>postupov\xc3\xbd dia\
-gram</b> (kliknu\
-t\xc3\xadm na blok\x0anas\
-tav\xc3\xadte jeho par\
-ametry, kliknut\xc3\
-\xadm na \xc4\x8derven\xc3\xbd \
-m\xc4\x9b\xc5\x99ic\xc3\xad bod je\
-j zobraz\xc3\xadte v o\
-sciloskopu),\x0a<b>\
-seznam parametr\xc5\
-\xaf</b> (dvojklike\
-m na \xc5\x99\xc3\xa1dek zm\xc4\
-\x9bn\xc3\xadte hodnotu; \
-hodnoty odli\xc5\xa1n\xc3\
-\xa9 od tov\xc3\xa1rn\xc3\xadho\
-\x0anastaven\xc3\xad jsou\
- zv\xc3\xbdrazn\xc4\x9bny; h\
-led\xc3\xa1n\xc3\xad a \xe2\x80\x9eJe\
-n zm\xc4\x9bn\xc4\x9bn\xc3\xa9\xe2\x80\x9c \
-seznam filtruj\xc3\xad\
-) a <b>oscilosko\
-p</b>\x0a(pouze v r\
-e\xc5\xbeimu online, n\
-ejv\xc3\xbd\xc5\xa1e t\xc5\x99i m\xc4\
-\x9b\xc5\x99ic\xc3\xad body).</\
-p>\x0a\x0a<h2>\xc3\x9arovn\xc4\x9b\
- opr\xc3\xa1vn\xc4\x9bn\xc3\xad</h\
-2>\x0a<p><b>Z\xc3\xa1klad\
-n\xc3\xad</b> \xc3\xbarove\xc5\x88\
- zobrazuje z\xc3\xa1kl\
-adn\xc3\xad nastaven\xc3\xad\
-; na z\xc3\xa1kladn\xc3\xad \
-\xc3\xbarovni se \xc4\x8dty\xc5\
-\x99i rampy\x0anastavu\
-j\xc3\xad spole\xc4\x8dn\xc4\x9b. \
-<b>Expertn\xc3\xad</b>\
- \xc3\xbarove\xc5\x88 p\xc5\x99id\xc3\
-\xa1v\xc3\xa1 regul\xc3\xa1tory\
-, linearizace a \
-nastaven\xc3\xad\x0aexter\
-n\xc3\xadho sn\xc3\xadma\xc4\x8de \
-a je chr\xc3\xa1n\xc4\x9bna \
-heslem. Heslo p\xc5\
-\x99i dod\xc3\xa1n\xc3\xad je <\
-code>expert</cod\
-e>; na expertn\xc3\xad\
-\x0a\xc3\xbarovni jej zm\xc4\
-\x9bn\xc3\xadte v menu N\xc3\
-\xa1hled \xe2\x86\x92 \xc3\x9arove\
-\xc5\x88 opr\xc3\xa1vn\xc4\x9bn\xc3\xad \
-\xe2\x86\x92 Zm\xc4\x9bnit hesl\
-o pro expertn\xc3\xad \
-\xc3\xbarove\xc5\x88.\x0aProgra\
-m ukl\xc3\xa1d\xc3\xa1 pouze\
- jeho osolen\xc3\xbd h\
-ash.</p>\x0a\x0a<h2>On\
-line a offline</\
-h2>\x0a<p>Komunikac\
-e \xe2\x86\x92 HID konfig\
-urace zobraz\xc3\xad v\
-entily p\xc5\x99ipojen\
-\xc3\xa9 p\xc5\x99es USB a e\
-mulovan\xc3\xa9 ventil\
-y;\x0aemulovan\xc3\xbd ve\
-ntil p\xc5\x99id\xc3\xa1te z\
-ad\xc3\xa1n\xc3\xadm typov\xc3\xa9\
-ho kl\xc3\xad\xc4\x8de a v\xc3\xbd\
-robn\xc3\xadho \xc4\x8d\xc3\xadsla\
-. Komunikace \xe2\x86\x92\
- Re\xc5\xbeim online\x0an\
-av\xc3\xa1\xc5\xbee spojen\xc3\xad\
-. Li\xc5\xa1\xc3\xad-li se o\
-tev\xc5\x99en\xc3\xbd z\xc3\xa1zna\
-m parametr\xc5\xaf od \
-ventilu, program\
- zobraz\xc3\xad rozd\xc3\xad\
-ly a\x0azept\xc3\xa1 se, \
-zda p\xc5\x99evz\xc3\xadt ho\
-dnoty ventilu, o\
-deslat hodnoty d\
-okumentu (na\xc4\x8dte\
-n\xc3\xad do ventilu) \
-nebo\x0azru\xc5\xa1it. V \
-re\xc5\xbeimu online j\
-de ka\xc5\xbed\xc3\xa1 zm\xc4\x9bn\
-a ihned do venti\
-lu i do dokument\
-u, v re\xc5\xbeimu off\
-line\x0apouze do do\
-kumentu. Ztrat\xc3\xad\
--li se spojen\xc3\xad \
-s ventilem, prog\
-ram p\xc5\x99ejde do r\
-e\xc5\xbeimu offline a\
-\x0av\xc5\xa1echny hodnot\
-y zachov\xc3\xa1.</p>\x0a\
-<p>Hodnoty zm\xc4\x9bn\
-\xc4\x9bn\xc3\xa9 online jso\
-u ve ventilu akt\
-ivn\xc3\xad, ale je\xc5\xa1t\
-\xc4\x9b neulo\xc5\xbeen\xc3\xa9: \
-p\xc5\x99i p\xc5\x99echodu d\
-o\x0are\xc5\xbeimu offlin\
-e program nab\xc3\xadd\
-ne jejich ulo\xc5\xbee\
-n\xc3\xad. <b>Na\xc4\x8dten\xc3\
-\xad do ventilu</b>\
- zap\xc3\xad\xc5\xa1e v\xc5\xa1ech\
-ny\x0ahodnoty, p\xc5\x99e\
-\xc4\x8dte je zp\xc4\x9bt, p\
-orovn\xc3\xa1 a ulo\xc5\xbe\xc3\
-\xad; ulo\xc5\xbe\xc3\xad se je\
-n tehdy, je-li k\
-a\xc5\xbed\xc3\xa1 hodnota o\
-v\xc4\x9b\xc5\x99ena.\x0aP\xc5\x99ed \
-prvn\xc3\xadm na\xc4\x8dten\xc3\
-\xadm do ventilu pr\
-ogram ulo\xc5\xbe\xc3\xad z\xc3\
-\xa1lohu vlastn\xc3\xadch\
- parametr\xc5\xaf vent\
-ilu do slo\xc5\xbeky\x0au\
-\xc5\xbeivatelsk\xc3\xbdch d\
-at (<code>backup\
-s/&lt;v\xc3\xbdrobn\xc3\xad \
-\xc4\x8d\xc3\xadslo&gt;/</co\
-de>).</p>\x0a<p><b>\
-Restart ventilu<\
-/b> a <b>Obnoven\
-\xc3\xad tov\xc3\xa1rn\xc3\xadho n\
-astaven\xc3\xad</b> js\
-ou dovoleny pouz\
-e p\xc5\x99i\x0aodpojen\xc3\xa9\
-m hydraulick\xc3\xa9m \
-obvodu; program \
-v\xc3\xa1s po\xc5\xbe\xc3\xa1d\xc3\xa1 o\
- potvrzen\xc3\xad.</p>\
-\x0a\x0a<h2>Soubory</h\
-2>\x0a<p>Z\xc3\xa1znamy p\
-arametr\xc5\xaf (<code\
->*.prm</code>) j\
-sou textov\xc3\xa9 sou\
-bory. Otev\xc5\x99\xc3\xadt,\
- Ulo\xc5\xbeit, Ulo\xc5\xbei\
-t jako,\x0anaposled\
-y otev\xc5\x99en\xc3\xa9 sou\
-bory a p\xc5\x99eta\xc5\xbee\
-n\xc3\xad my\xc5\xa1\xc3\xad fungu\
-j\xc3\xad obvykl\xc3\xbdm zp\
-\xc5\xafsobem; p\xc5\x99ed z\
-tr\xc3\xa1tou\x0aneulo\xc5\xbee\
-n\xc3\xbdch zm\xc4\x9bn se p\
-rogram zept\xc3\xa1. K\
-a\xc5\xbedou zm\xc4\x9bnu lz\
-e vr\xc3\xa1tit (Ctrl+\
-Z) a znovu prov\xc3\
-\xa9st\x0a(Ctrl+Y). So\
-ubor \xe2\x86\x92 Tisk a \
-Soubor \xe2\x86\x92 Expor\
-t do PDF vytvo\xc5\x99\
-\xc3\xad protokol para\
-metr\xc5\xaf s typov\xc3\xbd\
-m kl\xc3\xad\xc4\x8dem,\x0av\xc3\xbdr\
-obn\xc3\xadm \xc4\x8d\xc3\xadslem,\
- firmware, soubo\
-rem, datem, \xc3\xbaro\
-vn\xc3\xad opr\xc3\xa1vn\xc4\x9bn\xc3\
-\xad, postupov\xc3\xbdm d\
-iagramem a v\xc5\xa1em\
-i\x0aparametry s je\
-dnotkami.</p>\x0a\x0a<\
-h2>Kl\xc3\xa1vesnice</\
-h2>\x0a<table>\x0a<tr>\
-<td>Ctrl+O / Ctr\
-l+S / Ctrl+Shift\
-+S</td><td>Otev\xc5\
-\x99\xc3\xadt / Ulo\xc5\xbeit /\
- Ulo\xc5\xbeit jako</t\
-d></tr>\x0a<tr><td>\
-Ctrl+Z / Ctrl+Y<\
-/td><td>Zp\xc4\x9bt / \
-Znovu</td></tr>\x0a\
-<tr><td>Ctrl+P /\
- Ctrl+E</td><td>\
-Tisk / Export do\
- PDF</td></tr>\x0a<\
-tr><td>Ctrl+1 / \
-Ctrl+2 / Ctrl+3 \
-/ Ctrl+4</td><td\
->Postupov\xc3\xbd diag\
-ram / Seznam par\
-ametr\xc5\xaf / Oscilo\
-skop / Okno CANo\
-pen</td></tr>\x0a<t\
-r><td>F5 / Shift\
-+F5</td><td>Re\xc5\xbe\
-im online / Re\xc5\xbe\
-im offline</td><\
-/tr>\x0a<tr><td>Ctr\
-l+U / Ctrl+D</td\
-><td>Na\xc4\x8dten\xc3\xad d\
-o ventilu / Sta\xc5\
-\xbeen\xc3\xad z ventilu<\
+\x9bny; nakonec \xc3\xbar\
+ove\xc5\x88 opr\xc3\xa1vn\xc4\x9bn\
+\xc3\xad. Re\xc5\xbeim\x0aukazu\
+je P\xc5\x98IPOJOV\xc3\x81N\xc3\
+\x8d, dokud se pr\xc3\xa1\
+v\xc4\x9b p\xc5\x99ipojen\xc3\xbd \
+ventil porovn\xc3\xa1v\
+\xc3\xa1 se sadou para\
+metr\xc5\xaf, a ONLINE\
+,\x0ajakmile se sho\
+duj\xc3\xad.</p>\x0a<p>Hl\
+avn\xc3\xad plocha zob\
+razuje jeden ze \
+t\xc5\x99\xc3\xad n\xc3\xa1hled\xc5\xaf:\
+ <b>postupov\xc3\xbd d\
+iagram</b> (klik\
+nut\xc3\xadm na blok\x0an\
+astav\xc3\xadte jeho p\
+arametry, kliknu\
+t\xc3\xadm na \xc4\x8derven\xc3\
+\xbd m\xc4\x9b\xc5\x99ic\xc3\xad bod \
+jej zobraz\xc3\xadte v\
+ osciloskopu),\x0a<\
+b>seznam paramet\
+r\xc5\xaf</b> (dvojkli\
+kem na \xc5\x99\xc3\xa1dek z\
+m\xc4\x9bn\xc3\xadte hodnotu\
+; hodnoty odli\xc5\xa1\
+n\xc3\xa9 od tov\xc3\xa1rn\xc3\xad\
+ho\x0anastaven\xc3\xad js\
+ou zv\xc3\xbdrazn\xc4\x9bny;\
+ hled\xc3\xa1n\xc3\xad a \xe2\x80\x9e\
+Jen zm\xc4\x9bn\xc4\x9bn\xc3\xa9\xe2\x80\
+\x9c seznam filtruj\
+\xc3\xad) a <b>oscilos\
+kop</b>\x0a(pouze v\
+ re\xc5\xbeimu online,\
+ nejv\xc3\xbd\xc5\xa1e t\xc5\x99i \
+m\xc4\x9b\xc5\x99ic\xc3\xad body).\
+</p>\x0a\x0a<h2>\xc3\x9arovn\
+\xc4\x9b opr\xc3\xa1vn\xc4\x9bn\xc3\xad<\
+/h2>\x0a<p><b>Z\xc3\xa1kl\
+adn\xc3\xad</b> \xc3\xbarove\
+\xc5\x88 zobrazuje z\xc3\xa1\
+kladn\xc3\xad nastaven\
+\xc3\xad; na z\xc3\xa1kladn\xc3\
+\xad \xc3\xbarovni se \xc4\x8dt\
+y\xc5\x99i rampy\x0anasta\
+vuj\xc3\xad spole\xc4\x8dn\xc4\x9b\
+. <b>Expertn\xc3\xad</\
+b> \xc3\xbarove\xc5\x88 p\xc5\x99i\
+d\xc3\xa1v\xc3\xa1 regul\xc3\xa1to\
+ry, linearizace \
+a nastaven\xc3\xad\x0aext\
+ern\xc3\xadho sn\xc3\xadma\xc4\x8d\
+e a je chr\xc3\xa1n\xc4\x9bn\
+a heslem. Heslo \
+p\xc5\x99i dod\xc3\xa1n\xc3\xad je\
+ <code>expert</c\
+ode>; na expertn\
+\xc3\xad\x0a\xc3\xbarovni jej z\
+m\xc4\x9bn\xc3\xadte v menu \
+N\xc3\xa1hled \xe2\x86\x92 \xc3\x9aro\
+ve\xc5\x88 opr\xc3\xa1vn\xc4\x9bn\xc3\
+\xad \xe2\x86\x92 Zm\xc4\x9bnit he\
+slo pro expertn\xc3\
+\xad \xc3\xbarove\xc5\x88.\x0aProg\
+ram ukl\xc3\xa1d\xc3\xa1 pou\
+ze jeho osolen\xc3\xbd\
+ hash.</p>\x0a\x0a<h2>\
+Online a offline\
+</h2>\x0a<p>Komunik\
+ace \xe2\x86\x92 HID konf\
+igurace zobraz\xc3\xad\
+ ventily p\xc5\x99ipoj\
+en\xc3\xa9 p\xc5\x99es USB a\
+ emulovan\xc3\xa9 vent\
+ily;\x0aemulovan\xc3\xbd \
+ventil p\xc5\x99id\xc3\xa1te\
+ zad\xc3\xa1n\xc3\xadm typov\
+\xc3\xa9ho kl\xc3\xad\xc4\x8de a v\
+\xc3\xbdrobn\xc3\xadho \xc4\x8d\xc3\xads\
+la. Komunikace \xe2\
+\x86\x92 Re\xc5\xbeim online\
+\x0anav\xc3\xa1\xc5\xbee spojen\
+\xc3\xad. Li\xc5\xa1\xc3\xad-li se\
+ otev\xc5\x99en\xc3\xbd z\xc3\xa1z\
+nam parametr\xc5\xaf o\
+d ventilu, progr\
+am zobraz\xc3\xad rozd\
+\xc3\xadly a\x0azept\xc3\xa1 se\
+, zda p\xc5\x99evz\xc3\xadt \
+hodnoty ventilu,\
+ odeslat hodnoty\
+ dokumentu (na\xc4\x8d\
+ten\xc3\xad do ventilu\
+) nebo\x0azru\xc5\xa1it. \
+V re\xc5\xbeimu online\
+ jde ka\xc5\xbed\xc3\xa1 zm\xc4\
+\x9bna ihned do ven\
+tilu i do dokume\
+ntu, v re\xc5\xbeimu o\
+ffline\x0apouze do \
+dokumentu. Ztrat\
+\xc3\xad-li se spojen\xc3\
+\xad s ventilem, pr\
+ogram p\xc5\x99ejde do\
+ re\xc5\xbeimu offline\
+ a\x0av\xc5\xa1echny hodn\
+oty zachov\xc3\xa1.</p\
+>\x0a<p>Hodnoty zm\xc4\
+\x9bn\xc4\x9bn\xc3\xa9 online j\
+sou ve ventilu a\
+ktivn\xc3\xad, ale je\xc5\
+\xa1t\xc4\x9b neulo\xc5\xbeen\xc3\xa9\
+: p\xc5\x99i p\xc5\x99echodu\
+ do\x0are\xc5\xbeimu offl\
+ine program nab\xc3\
+\xaddne jejich ulo\xc5\
+\xbeen\xc3\xad. <b>Na\xc4\x8dte\
+n\xc3\xad do ventilu</\
+b> zap\xc3\xad\xc5\xa1e v\xc5\xa1e\
+chny\x0ahodnoty, p\xc5\
+\x99e\xc4\x8dte je zp\xc4\x9bt,\
+ porovn\xc3\xa1 a ulo\xc5\
+\xbe\xc3\xad; ulo\xc5\xbe\xc3\xad se \
+jen tehdy, je-li\
+ ka\xc5\xbed\xc3\xa1 hodnota\
+ ov\xc4\x9b\xc5\x99ena.\x0aP\xc5\x99e\
+d prvn\xc3\xadm na\xc4\x8dte\
+n\xc3\xadm do ventilu \
+program ulo\xc5\xbe\xc3\xad \
+z\xc3\xa1lohu vlastn\xc3\xad\
+ch parametr\xc5\xaf ve\
+ntilu do slo\xc5\xbeky\
+\x0au\xc5\xbeivatelsk\xc3\xbdch\
+ dat (<code>back\
+ups/&lt;v\xc3\xbdrobn\xc3\
+\xad \xc4\x8d\xc3\xadslo&gt;/</\
+code>).</p>\x0a<p><\
+b>Restart ventil\
+u</b> a <b>Obnov\
+en\xc3\xad tov\xc3\xa1rn\xc3\xadho\
+ nastaven\xc3\xad</b> \
+jsou dovoleny po\
+uze p\xc5\x99i\x0aodpojen\
+\xc3\xa9m hydraulick\xc3\xa9\
+m obvodu; progra\
+m v\xc3\xa1s po\xc5\xbe\xc3\xa1d\xc3\xa1\
+ o potvrzen\xc3\xad.</\
+p>\x0a\x0a<h2>Soubory<\
+/h2>\x0a<p>Z\xc3\xa1znamy\
+ parametr\xc5\xaf (<co\
+de>*.prm</code>)\
+ jsou textov\xc3\xa9 s\
+oubory. Otev\xc5\x99\xc3\xad\
+t, Ulo\xc5\xbeit, Ulo\xc5\
+\xbeit jako,\x0anaposl\
+edy otev\xc5\x99en\xc3\xa9 s\
+oubory a p\xc5\x99eta\xc5\
+\xbeen\xc3\xad my\xc5\xa1\xc3\xad fun\
+guj\xc3\xad obvykl\xc3\xbdm \
+zp\xc5\xafsobem; p\xc5\x99ed\
+ ztr\xc3\xa1tou\x0aneulo\xc5\
+\xbeen\xc3\xbdch zm\xc4\x9bn se\
+ program zept\xc3\xa1.\
+ Ka\xc5\xbedou zm\xc4\x9bnu \
+lze vr\xc3\xa1tit (Ctr\
+l+Z) a znovu pro\
+v\xc3\xa9st\x0a(Ctrl+Y). \
+Soubor \xe2\x86\x92 Tisk \
+a Soubor \xe2\x86\x92 Exp\
+ort do PDF vytvo\
+\xc5\x99\xc3\xad protokol pa\
+rametr\xc5\xaf s typov\
+\xc3\xbdm kl\xc3\xad\xc4\x8dem,\x0av\xc3\
+\xbdrobn\xc3\xadm \xc4\x8d\xc3\xadsle\
+m, firmware, sou\
+borem, datem, \xc3\xba\
+rovn\xc3\xad opr\xc3\xa1vn\xc4\x9b\
+n\xc3\xad, postupov\xc3\xbdm\
+ diagramem a v\xc5\xa1\
+emi\x0aparametry s \
+jednotkami.</p>\x0a\
+\x0a<h2>Kl\xc3\xa1vesnice\
+</h2>\x0a<table>\x0a<t\
+r><td>Ctrl+O / C\
+trl+S / Ctrl+Shi\
+ft+S</td><td>Ote\
+v\xc5\x99\xc3\xadt / Ulo\xc5\xbeit\
+ / Ulo\xc5\xbeit jako<\
 /td></tr>\x0a<tr><t\
-d>Ctrl+T / Ctrl+\
-I / Ctrl+H</td><\
-td>V\xc3\xbdb\xc4\x9br venti\
-lu / Stav ventil\
-u / HID konfigur\
-ace</td></tr>\x0a</\
-table>\x0a</body>\x0a<\
-/html>\x0a\
-\x00\x00\x11\xc9\
+d>Ctrl+Z / Ctrl+\
+Y</td><td>Zp\xc4\x9bt \
+/ Znovu</td></tr\
+>\x0a<tr><td>Ctrl+P\
+ / Ctrl+E</td><t\
+d>Tisk / Export \
+do PDF</td></tr>\
+\x0a<tr><td>Ctrl+1 \
+/ Ctrl+2 / Ctrl+\
+3 / Ctrl+4</td><\
+td>Postupov\xc3\xbd di\
+agram / Seznam p\
+arametr\xc5\xaf / Osci\
+loskop / Okno CA\
+Nopen</td></tr>\x0a\
+<tr><td>F5 / Shi\
+ft+F5</td><td>Re\
+\xc5\xbeim online / Re\
+\xc5\xbeim offline</td\
+></tr>\x0a<tr><td>C\
+trl+U / Ctrl+D</\
+td><td>Na\xc4\x8dten\xc3\xad\
+ do ventilu / St\
+a\xc5\xbeen\xc3\xad z ventil\
+u</td></tr>\x0a<tr>\
+<td>Ctrl+T / Ctr\
+l+I / Ctrl+H</td\
+><td>V\xc3\xbdb\xc4\x9br ven\
+tilu / Stav vent\
+ilu / HID konfig\
+urace</td></tr>\x0a\
+</table>\x0a</body>\
+\x0a</html>\x0a\
+\x00\x00\x12r\
 <\
 !DOCTYPE html>\x0a<\
 html lang=\x22de\x22>\x0a\
@@ -353,229 +363,240 @@ n Fehler), die\x0aF\
 irmware-Version,\
  den Typschl\xc3\xbcss\
 el und den Datei\
-namen; <b>*</b> \
-kennzeichnet ung\
-espeicherte\x0a\xc3\x84nd\
-erungen.</p>\x0a<p>\
-Die Hauptfl\xc3\xa4che\
- zeigt eine von \
-drei Ansichten: \
-das <b>Ablaufdia\
-gramm</b> (ein K\
-lick auf\x0aeinen B\
-lock stellt sein\
-e Parameter ein,\
- ein Klick auf e\
-inen roten Messp\
-unkt zeigt ihn i\
-m\x0aOszilloskop), \
-die <b>Parameter\
-liste</b> (Doppe\
-lklick auf eine \
-Zeile \xc3\xa4ndert de\
-n Wert; Werte,\x0ad\
-ie von der Werks\
-einstellung abwe\
-ichen, sind herv\
-orgehoben; Suche\
- und \xe2\x80\x9eNur ge\xc3\xa4\
-nderte\xe2\x80\x9c\x0afilter\
-n die Liste) und\
- das <b>Oszillos\
-kop</b> (nur onl\
-ine, h\xc3\xb6chstens \
-drei Messpunkte)\
-.</p>\x0a\x0a<h2>Berec\
-htigungsstufen</\
-h2>\x0a<p><b>Basis<\
-/b> zeigt die gr\
-undlegenden Eins\
-tellungen; in de\
-r Basisstufe wer\
-den die vier\x0aRam\
-pen gemeinsam ei\
-ngestellt. <b>Ex\
-perte</b> erg\xc3\xa4n\
-zt die Regler, d\
-ie Linearisierun\
-gen und\x0adie Eins\
-tellungen des ex\
-ternen Sensors u\
-nd ist durch ein\
- Passwort gesch\xc3\
-\xbctzt. Das Passwo\
-rt\x0aim Auslieferu\
-ngszustand laute\
-t <code>expert</\
-code>; in der Ex\
-pertenstufe \xc3\xa4nd\
-ern Sie es unter\
-\x0aAnsicht \xe2\x86\x92 Ber\
-echtigungsstufe \
-\xe2\x86\x92 Expertenpass\
-wort \xc3\xa4ndern. Da\
-s Programm speic\
-hert nur einen\x0ag\
-esalzenen Hash d\
-avon.</p>\x0a\x0a<h2>O\
-nline und offlin\
-e</h2>\x0a<p>Kommun\
-ikation \xe2\x86\x92 HID-\
-Konfiguration li\
-stet die \xc3\xbcber U\
-SB angeschlossen\
-en und die emuli\
-erten\x0aVentile; e\
-in emuliertes Ve\
-ntil f\xc3\xbcgen Sie \
-mit Typschl\xc3\xbcsse\
-l und Seriennumm\
-er hinzu.\x0aKommun\
-ikation \xe2\x86\x92 Onli\
-ne-Modus verbind\
-et. Weicht der g\
-e\xc3\xb6ffnete Parame\
-tersatz vom Vent\
-il ab,\x0azeigt das\
- Programm die Un\
-terschiede und f\
-ragt, ob die Wer\
-te des Ventils \xc3\
-\xbcbernommen, die\x0a\
-Werte des Dokume\
-nts gesendet (Ho\
-chladen) oder ab\
-gebrochen werden\
- soll. Online ge\
-ht jede\x0a\xc3\x84nderun\
-g sofort an das \
-Ventil und in da\
-s Dokument, offl\
-ine nur in das D\
-okument. Geht di\
-e\x0aVerbindung ver\
-loren, schaltet \
-das Programm auf\
- offline und beh\
-\xc3\xa4lt alle Werte.\
-</p>\x0a<p>Online g\
-e\xc3\xa4nderte Werte \
-sind im Ventil a\
-ktiv, aber noch \
-nicht gespeicher\
-t: beim Wechsel\x0a\
-auf offline biet\
-et das Programm \
-an, sie zu speic\
-hern. <b>In das \
-Ventil hochladen\
-</b>\x0aschreibt al\
-le Werte, liest \
-sie zur\xc3\xbcck, ver\
-gleicht und spei\
-chert sie; gespe\
-ichert wird nur,\
-\x0awenn jeder Wert\
- best\xc3\xa4tigt wurd\
-e. Vor dem erste\
-n Hochladen in e\
-in Ventil sicher\
-t das\x0aProgramm d\
-essen eigene Par\
-ameter im Benutz\
-erdatenordner (<\
-code>backups/&lt\
-;Seriennummer&gt\
-;/</code>).</p>\x0a\
-<p><b>Ventil neu\
- starten</b> und\
- <b>Werkseinstel\
-lungen wiederher\
-stellen</b> sind\
- nur bei\x0agetrenn\
-ter Hydraulik er\
-laubt; das Progr\
-amm l\xc3\xa4sst Sie d\
-as best\xc3\xa4tigen.<\
-/p>\x0a\x0a<h2>Dateien\
-</h2>\x0a<p>Paramet\
-erdateien (<code\
->*.prm</code>) s\
-ind Textdateien.\
- \xc3\x96ffnen, Speich\
-ern, Speichern\x0au\
-nter, die zuletz\
-t ge\xc3\xb6ffneten Da\
-teien und Drag &\
-amp; Drop funkti\
-onieren wie gewo\
-hnt; vor dem\x0aVer\
-lust ungespeiche\
-rter \xc3\x84nderungen\
- fragt das Progr\
-amm nach. Jede \xc3\
-\x84nderung l\xc3\xa4sst \
-sich\x0ar\xc3\xbcckg\xc3\xa4ngi\
-g machen (Strg+Z\
-) und wiederhers\
-tellen (Strg+Y).\
- Datei \xe2\x86\x92 Druck\
-en und Datei \xe2\x86\x92\
- PDF\x0aexportieren\
- erzeugen ein Pa\
-rameterprotokoll\
- mit Typschl\xc3\xbcss\
-el, Seriennummer\
-, Firmware, Date\
-i,\x0aDatum, Berech\
-tigungsstufe, de\
-m Ablaufdiagramm\
- und allen Param\
-etern mit Einhei\
-t.</p>\x0a\x0a<h2>Tast\
-atur</h2>\x0a<table\
->\x0a<tr><td>Strg+O\
- / Strg+S / Strg\
-+Umschalt+S</td>\
-<td>\xc3\x96ffnen / Sp\
-eichern / Speich\
-ern unter</td></\
-tr>\x0a<tr><td>Strg\
-+Z / Strg+Y</td>\
-<td>R\xc3\xbcckg\xc3\xa4ngig\
- / Wiederherstel\
-len</td></tr>\x0a<t\
-r><td>Strg+P / S\
-trg+E</td><td>Dr\
-ucken / PDF expo\
-rtieren</td></tr\
->\x0a<tr><td>Strg+1\
- / Strg+2 / Strg\
-+3 / Strg+4</td>\
-<td>Ablaufdiagra\
-mm / Parameterli\
-ste / Oszillosko\
-p / CANopen-Fens\
-ter</td></tr>\x0a<t\
-r><td>F5 / Umsch\
-alt+F5</td><td>O\
-nline / Offline<\
-/td></tr>\x0a<tr><t\
-d>Strg+U / Strg+\
-D</td><td>In das\
- Ventil hochlade\
-n / Aus dem Vent\
-il herunterladen\
+namen (<b>*</b>:\
+ ungespeicherte \
+\xc3\x84nderungen)\x0aund\
+ zuletzt die Ber\
+echtigungsstufe.\
+ Der Modus laute\
+t VERBINDEN, sol\
+ange ein eben ve\
+rbundenes\x0aVentil\
+ mit dem Paramet\
+ersatz vergliche\
+n wird, und ONLI\
+NE, sobald beide\
+ \xc3\xbcbereinstimmen\
+.</p>\x0a<p>Die Hau\
+ptfl\xc3\xa4che zeigt \
+eine von drei An\
+sichten: das <b>\
+Ablaufdiagramm</\
+b> (ein Klick au\
+f\x0aeinen Block st\
+ellt seine Param\
+eter ein, ein Kl\
+ick auf einen ro\
+ten Messpunkt ze\
+igt ihn im\x0aOszil\
+loskop), die <b>\
+Parameterliste</\
+b> (Doppelklick \
+auf eine Zeile \xc3\
+\xa4ndert den Wert;\
+ Werte,\x0adie von \
+der Werkseinstel\
+lung abweichen, \
+sind hervorgehob\
+en; Suche und \xe2\x80\
+\x9eNur ge\xc3\xa4nderte\xe2\
+\x80\x9c\x0afiltern die L\
+iste) und das <b\
+>Oszilloskop</b>\
+ (nur online, h\xc3\
+\xb6chstens drei Me\
+sspunkte).</p>\x0a\x0a\
+<h2>Berechtigung\
+sstufen</h2>\x0a<p>\
+<b>Basis</b> zei\
+gt die grundlege\
+nden Einstellung\
+en; in der Basis\
+stufe werden die\
+ vier\x0aRampen gem\
+einsam eingestel\
+lt. <b>Experte</\
+b> erg\xc3\xa4nzt die \
+Regler, die Line\
+arisierungen und\
+\x0adie Einstellung\
+en des externen \
+Sensors und ist \
+durch ein Passwo\
+rt gesch\xc3\xbctzt. D\
+as Passwort\x0aim A\
+uslieferungszust\
+and lautet <code\
+>expert</code>; \
+in der Expertens\
+tufe \xc3\xa4ndern Sie\
+ es unter\x0aAnsich\
+t \xe2\x86\x92 Berechtigu\
+ngsstufe \xe2\x86\x92 Exp\
+ertenpasswort \xc3\xa4\
+ndern. Das Progr\
+amm speichert nu\
+r einen\x0agesalzen\
+en Hash davon.</\
+p>\x0a\x0a<h2>Online u\
+nd offline</h2>\x0a\
+<p>Kommunikation\
+ \xe2\x86\x92 HID-Konfigu\
+ration listet di\
+e \xc3\xbcber USB ange\
+schlossenen und \
+die emulierten\x0aV\
+entile; ein emul\
+iertes Ventil f\xc3\
+\xbcgen Sie mit Typ\
+schl\xc3\xbcssel und S\
+eriennummer hinz\
+u.\x0aKommunikation\
+ \xe2\x86\x92 Online-Modu\
+s verbindet. Wei\
+cht der ge\xc3\xb6ffne\
+te Parametersatz\
+ vom Ventil ab,\x0a\
+zeigt das Progra\
+mm die Unterschi\
+ede und fragt, o\
+b die Werte des \
+Ventils \xc3\xbcbernom\
+men, die\x0aWerte d\
+es Dokuments ges\
+endet (Hochladen\
+) oder abgebroch\
+en werden soll. \
+Online geht jede\
+\x0a\xc3\x84nderung sofor\
+t an das Ventil \
+und in das Dokum\
+ent, offline nur\
+ in das Dokument\
+. Geht die\x0aVerbi\
+ndung verloren, \
+schaltet das Pro\
+gramm auf offlin\
+e und beh\xc3\xa4lt al\
+le Werte.</p>\x0a<p\
+>Online ge\xc3\xa4nder\
+te Werte sind im\
+ Ventil aktiv, a\
+ber noch nicht g\
+espeichert: beim\
+ Wechsel\x0aauf off\
+line bietet das \
+Programm an, sie\
+ zu speichern. <\
+b>In das Ventil \
+hochladen</b>\x0asc\
+hreibt alle Wert\
+e, liest sie zur\
+\xc3\xbcck, vergleicht\
+ und speichert s\
+ie; gespeichert \
+wird nur,\x0awenn j\
+eder Wert best\xc3\xa4\
+tigt wurde. Vor \
+dem ersten Hochl\
+aden in ein Vent\
+il sichert das\x0aP\
+rogramm dessen e\
+igene Parameter \
+im Benutzerdaten\
+ordner (<code>ba\
+ckups/&lt;Serien\
+nummer&gt;/</cod\
+e>).</p>\x0a<p><b>V\
+entil neu starte\
+n</b> und <b>Wer\
+kseinstellungen \
+wiederherstellen\
+</b> sind nur be\
+i\x0agetrennter Hyd\
+raulik erlaubt; \
+das Programm l\xc3\xa4\
+sst Sie das best\
+\xc3\xa4tigen.</p>\x0a\x0a<h\
+2>Dateien</h2>\x0a<\
+p>Parameterdatei\
+en (<code>*.prm<\
+/code>) sind Tex\
+tdateien. \xc3\x96ffne\
+n, Speichern, Sp\
+eichern\x0aunter, d\
+ie zuletzt ge\xc3\xb6f\
+fneten Dateien u\
+nd Drag &amp; Dr\
+op funktionieren\
+ wie gewohnt; vo\
+r dem\x0aVerlust un\
+gespeicherter \xc3\x84\
+nderungen fragt \
+das Programm nac\
+h. Jede \xc3\x84nderun\
+g l\xc3\xa4sst sich\x0ar\xc3\
+\xbcckg\xc3\xa4ngig mache\
+n (Strg+Z) und w\
+iederherstellen \
+(Strg+Y). Datei \
+\xe2\x86\x92 Drucken und \
+Datei \xe2\x86\x92 PDF\x0aex\
+portieren erzeug\
+en ein Parameter\
+protokoll mit Ty\
+pschl\xc3\xbcssel, Ser\
+iennummer, Firmw\
+are, Datei,\x0aDatu\
+m, Berechtigungs\
+stufe, dem Ablau\
+fdiagramm und al\
+len Parametern m\
+it Einheit.</p>\x0a\
+\x0a<h2>Tastatur</h\
+2>\x0a<table>\x0a<tr><\
+td>Strg+O / Strg\
++S / Strg+Umscha\
+lt+S</td><td>\xc3\x96f\
+fnen / Speichern\
+ / Speichern unt\
+er</td></tr>\x0a<tr\
+><td>Strg+Z / St\
+rg+Y</td><td>R\xc3\xbc\
+ckg\xc3\xa4ngig / Wied\
+erherstellen</td\
+></tr>\x0a<tr><td>S\
+trg+P / Strg+E</\
+td><td>Drucken /\
+ PDF exportieren\
 </td></tr>\x0a<tr><\
-td>Strg+T / Strg\
-+I / Strg+H</td>\
-<td>Ventilauswah\
-l / Ventilstatus\
- / HID-Konfigura\
-tion</td></tr>\x0a<\
-/table>\x0a</body>\x0a\
-</html>\x0a\
-\x00\x00\x0f\x82\
+td>Strg+1 / Strg\
++2 / Strg+3 / St\
+rg+4</td><td>Abl\
+aufdiagramm / Pa\
+rameterliste / O\
+szilloskop / CAN\
+open-Fenster</td\
+></tr>\x0a<tr><td>F\
+5 / Umschalt+F5<\
+/td><td>Online /\
+ Offline</td></t\
+r>\x0a<tr><td>Strg+\
+U / Strg+D</td><\
+td>In das Ventil\
+ hochladen / Aus\
+ dem Ventil heru\
+nterladen</td></\
+tr>\x0a<tr><td>Strg\
++T / Strg+I / St\
+rg+H</td><td>Ven\
+tilauswahl / Ven\
+tilstatus / HID-\
+Konfiguration</t\
+d></tr>\x0a</table>\
+\x0a</body>\x0a</html>\
+\x0a\
+\x00\x00\x10\x10\
 <\
 !DOCTYPE html>\x0a<\
 html lang=\x22en\x22>\x0a\
@@ -636,196 +657,204 @@ ion, the type ke\
 y and the\x0afile n\
 ame; <b>*</b> ma\
 rks unsaved chan\
-ges.</p>\x0a<p>The \
-main area shows \
-one of three vie\
-ws: the <b>flow \
-diagram</b> (cli\
-ck a block to se\
-t its\x0aparameters\
-, click a red me\
-asuring point to\
- watch it in the\
- oscilloscope), \
-the\x0a<b>parameter\
- list</b> (doubl\
-e-click a row to\
- change the valu\
-e; values that d\
-iffer from the\x0af\
-actory defaults \
-are highlighted;\
- search and \xe2\x80\x9cM\
-odified only\xe2\x80\x9d \
-filter the list)\
- and the\x0a<b>osci\
-lloscope</b> (on\
-line only, at mo\
-st three measuri\
-ng points).</p>\x0a\
-\x0a<h2>Access leve\
-ls</h2>\x0a<p><b>Ba\
-sic</b> shows th\
-e basic settings\
-; at Basic level\
- the four ramps \
-are set together\
-.\x0a<b>Expert</b> \
-adds the control\
-lers, the linear\
-izations and the\
- external-sensor\
- settings and\x0ais\
- protected by a \
-password. The pa\
-ssword as delive\
-red is <code>exp\
-ert</code>; chan\
-ge it at\x0aExpert \
-level with View \
-\xe2\x86\x92 Access level\
- \xe2\x86\x92 Change Expe\
-rt password. The\
- program keeps o\
-nly a\x0asalted has\
-h of it.</p>\x0a\x0a<h\
-2>Online and off\
-line</h2>\x0a<p>Com\
-munication \xe2\x86\x92 H\
-ID configuration\
- lists the valve\
-s connected over\
- USB and the emu\
-lated\x0avalves; ad\
-d an emulated va\
-lve with its typ\
-e key and serial\
- number. Communi\
-cation \xe2\x86\x92 Onlin\
-e\x0amode connects.\
- If the open par\
-ameter set diffe\
-rs from the valv\
-e's, the program\
- lists the\x0adiffe\
-rences and asks \
-whether to take \
-the valve's valu\
-es, send the doc\
-ument's values\x0a(\
-upload) or cance\
-l. Online, every\
- change goes to \
-the valve at onc\
-e and into the d\
-ocument;\x0aoffline\
-, into the docum\
-ent only. If the\
- valve is lost, \
-the program goes\
- offline and kee\
-ps\x0aevery value.<\
-/p>\x0a<p>Values ch\
-anged online are\
- active in the v\
-alve but not yet\
- stored: going o\
-ffline offers to\
-\x0astore them. <b>\
-Upload to valve<\
-/b> writes all v\
-alues, reads the\
-m back, compares\
- and stores\x0athem\
-; nothing is sto\
-red unless every\
- value was verif\
-ied. Before the \
-first upload to \
-a valve\x0athe prog\
-ram saves a back\
-up of the valve'\
-s own parameters\
- in the user dat\
-a folder\x0a(<code>\
-backups/&lt;seri\
-al&gt;/</code>).\
-</p>\x0a<p><b>Resta\
-rt valve</b> and\
- <b>Restore fact\
-ory values</b> a\
-re allowed only \
-with the\x0ahydraul\
-ics disconnected\
-; the program as\
-ks you to confir\
-m this.</p>\x0a\x0a<h2\
->Files</h2>\x0a<p>P\
-arameter files (\
-<code>*.prm</cod\
-e>) are text fil\
-es. Open, Save, \
-Save As, the rec\
-ent\x0afiles and dr\
-ag and drop work\
- as usual; the p\
-rogram asks befo\
-re unsaved chang\
-es are lost.\x0aEve\
-ry change can be\
- undone (Ctrl+Z)\
- and redone (Ctr\
-l+Y). File \xe2\x86\x92 P\
-rint and File \xe2\x86\
-\x92 Export PDF\x0apro\
-duce a parameter\
- record with typ\
-e key, serial nu\
-mber, firmware, \
-file, date, acce\
-ss level,\x0athe fl\
-ow diagram and e\
-very parameter w\
-ith its unit.</p\
->\x0a\x0a<h2>Keyboard<\
-/h2>\x0a<table>\x0a<tr\
-><td>Ctrl+O / Ct\
-rl+S / Ctrl+Shif\
-t+S</td><td>Open\
- / Save / Save A\
-s</td></tr>\x0a<tr>\
-<td>Ctrl+Z / Ctr\
-l+Y</td><td>Undo\
- / Redo</td></tr\
->\x0a<tr><td>Ctrl+P\
- / Ctrl+E</td><t\
-d>Print / Export\
- PDF</td></tr>\x0a<\
-tr><td>Ctrl+1 / \
-Ctrl+2 / Ctrl+3 \
-/ Ctrl+4</td><td\
->Flow diagram / \
-Parameter list /\
- Oscilloscope / \
-CANopen window</\
-td></tr>\x0a<tr><td\
->F5 / Shift+F5</\
-td><td>Online / \
-Offline</td></tr\
->\x0a<tr><td>Ctrl+U\
- / Ctrl+D</td><t\
-d>Upload to valv\
-e / Download fro\
-m valve</td></tr\
->\x0a<tr><td>Ctrl+T\
- / Ctrl+I / Ctrl\
-+H</td><td>Valve\
- selection / Val\
-ve status / HID \
-configuration</t\
-d></tr>\x0a</table>\
-\x0a</body>\x0a</html>\
-\x0a\
+ges; last the ac\
+cess level. The \
+mode reads CONNE\
+CTING\x0awhile a va\
+lve just connect\
+ed is compared w\
+ith the paramete\
+r set, and ONLIN\
+E once they agre\
+e.</p>\x0a<p>The ma\
+in area shows on\
+e of three views\
+: the <b>flow di\
+agram</b> (click\
+ a block to set \
+its\x0aparameters, \
+click a red meas\
+uring point to w\
+atch it in the o\
+scilloscope), th\
+e\x0a<b>parameter l\
+ist</b> (double-\
+click a row to c\
+hange the value;\
+ values that dif\
+fer from the\x0afac\
+tory defaults ar\
+e highlighted; s\
+earch and \xe2\x80\x9cMod\
+ified only\xe2\x80\x9d fi\
+lter the list) a\
+nd the\x0a<b>oscill\
+oscope</b> (onli\
+ne only, at most\
+ three measuring\
+ points).</p>\x0a\x0a<\
+h2>Access levels\
+</h2>\x0a<p><b>Basi\
+c</b> shows the \
+basic settings; \
+at Basic level t\
+he four ramps ar\
+e set together.\x0a\
+<b>Expert</b> ad\
+ds the controlle\
+rs, the lineariz\
+ations and the e\
+xternal-sensor s\
+ettings and\x0ais p\
+rotected by a pa\
+ssword. The pass\
+word as delivere\
+d is <code>exper\
+t</code>; change\
+ it at\x0aExpert le\
+vel with View \xe2\x86\
+\x92 Access level \xe2\
+\x86\x92 Change Expert\
+ password. The p\
+rogram keeps onl\
+y a\x0asalted hash \
+of it.</p>\x0a\x0a<h2>\
+Online and offli\
+ne</h2>\x0a<p>Commu\
+nication \xe2\x86\x92 HID\
+ configuration l\
+ists the valves \
+connected over U\
+SB and the emula\
+ted\x0avalves; add \
+an emulated valv\
+e with its type \
+key and serial n\
+umber. Communica\
+tion \xe2\x86\x92 Online\x0a\
+mode connects. I\
+f the open param\
+eter set differs\
+ from the valve'\
+s, the program l\
+ists the\x0adiffere\
+nces and asks wh\
+ether to take th\
+e valve's values\
+, send the docum\
+ent's values\x0a(up\
+load) or cancel.\
+ Online, every c\
+hange goes to th\
+e valve at once \
+and into the doc\
+ument;\x0aoffline, \
+into the documen\
+t only. If the v\
+alve is lost, th\
+e program goes o\
+ffline and keeps\
+\x0aevery value.</p\
+>\x0a<p>Values chan\
+ged online are a\
+ctive in the val\
+ve but not yet s\
+tored: going off\
+line offers to\x0as\
+tore them. <b>Up\
+load to valve</b\
+> writes all val\
+ues, reads them \
+back, compares a\
+nd stores\x0athem; \
+nothing is store\
+d unless every v\
+alue was verifie\
+d. Before the fi\
+rst upload to a \
+valve\x0athe progra\
+m saves a backup\
+ of the valve's \
+own parameters i\
+n the user data \
+folder\x0a(<code>ba\
+ckups/&lt;serial\
+&gt;/</code>).</\
+p>\x0a<p><b>Restart\
+ valve</b> and <\
+b>Restore factor\
+y values</b> are\
+ allowed only wi\
+th the\x0ahydraulic\
+s disconnected; \
+the program asks\
+ you to confirm \
+this.</p>\x0a\x0a<h2>F\
+iles</h2>\x0a<p>Par\
+ameter files (<c\
+ode>*.prm</code>\
+) are text files\
+. Open, Save, Sa\
+ve As, the recen\
+t\x0afiles and drag\
+ and drop work a\
+s usual; the pro\
+gram asks before\
+ unsaved changes\
+ are lost.\x0aEvery\
+ change can be u\
+ndone (Ctrl+Z) a\
+nd redone (Ctrl+\
+Y). File \xe2\x86\x92 Pri\
+nt and File \xe2\x86\x92 \
+Export PDF\x0aprodu\
+ce a parameter r\
+ecord with type \
+key, serial numb\
+er, firmware, fi\
+le, date, access\
+ level,\x0athe flow\
+ diagram and eve\
+ry parameter wit\
+h its unit.</p>\x0a\
+\x0a<h2>Keyboard</h\
+2>\x0a<table>\x0a<tr><\
+td>Ctrl+O / Ctrl\
++S / Ctrl+Shift+\
+S</td><td>Open /\
+ Save / Save As<\
+/td></tr>\x0a<tr><t\
+d>Ctrl+Z / Ctrl+\
+Y</td><td>Undo /\
+ Redo</td></tr>\x0a\
+<tr><td>Ctrl+P /\
+ Ctrl+E</td><td>\
+Print / Export P\
+DF</td></tr>\x0a<tr\
+><td>Ctrl+1 / Ct\
+rl+2 / Ctrl+3 / \
+Ctrl+4</td><td>F\
+low diagram / Pa\
+rameter list / O\
+scilloscope / CA\
+Nopen window</td\
+></tr>\x0a<tr><td>F\
+5 / Shift+F5</td\
+><td>Online / Of\
+fline</td></tr>\x0a\
+<tr><td>Ctrl+U /\
+ Ctrl+D</td><td>\
+Upload to valve \
+/ Download from \
+valve</td></tr>\x0a\
+<tr><td>Ctrl+T /\
+ Ctrl+I / Ctrl+H\
+</td><td>Valve s\
+election / Valve\
+ status / HID co\
+nfiguration</td>\
+</tr>\x0a</table>\x0a<\
+/body>\x0a</html>\x0a\
 \x00\x00\x01\xc2\
 <\
 svg xmlns=\x22http:\
@@ -1264,28 +1293,31 @@ qt_resource_struct = b"\
 \x00\x00\x00\x00\x00\x02\x00\x00\x00\x02\x00\x00\x00\x01\
 \x00\x00\x00\x10\x00\x02\x00\x00\x00\x03\x00\x00\x00\x10\
 \x00\x00\x00\x00\x00\x02\x00\x00\x00\x0d\x00\x00\x00\x03\
-\x00\x00\x00\xfc\x00\x00\x00\x00\x00\x01\x00\x00:3\
-\x00\x00\x00\x92\x00\x00\x00\x00\x00\x01\x00\x004\x95\
-\x00\x00\x01\x9e\x00\x00\x00\x00\x00\x01\x00\x00Di\
-\x00\x00\x01\x16\x00\x00\x00\x00\x00\x01\x00\x00;`\
-\x00\x00\x00x\x00\x00\x00\x00\x00\x01\x00\x002\xcf\
-\x00\x00\x01\xba\x00\x00\x00\x00\x00\x01\x00\x00F\x01\
-\x00\x00\x01.\x00\x00\x00\x00\x00\x01\x00\x00=/\
-\x00\x00\x01\x80\x00\x00\x00\x00\x00\x01\x00\x00B\xbd\
-\x00\x00\x00\xaa\x00\x00\x00\x00\x00\x01\x00\x006;\
-\x00\x00\x01J\x00\x00\x00\x00\x00\x01\x00\x00>\xf8\
-\x00\x00\x00\xc6\x00\x00\x00\x00\x00\x01\x00\x0078\
-\x00\x00\x00\xe2\x00\x00\x00\x00\x00\x01\x00\x008\xf1\
-\x00\x00\x01^\x00\x00\x00\x00\x00\x01\x00\x00A|\
+\x00\x00\x00\xfc\x00\x00\x00\x00\x00\x01\x00\x00<\x0c\
+\x00\x00\x00\x92\x00\x00\x00\x00\x00\x01\x00\x006n\
+\x00\x00\x01\x9e\x00\x00\x00\x00\x00\x01\x00\x00FB\
+\x00\x00\x01\x16\x00\x00\x00\x00\x00\x01\x00\x00=9\
+\x00\x00\x00x\x00\x00\x00\x00\x00\x01\x00\x004\xa8\
+\x00\x00\x01\xba\x00\x00\x00\x00\x00\x01\x00\x00G\xda\
+\x00\x00\x01.\x00\x00\x00\x00\x00\x01\x00\x00?\x08\
+\x00\x00\x01\x80\x00\x00\x00\x00\x00\x01\x00\x00D\x96\
+\x00\x00\x00\xaa\x00\x00\x00\x00\x00\x01\x00\x008\x14\
+\x00\x00\x01J\x00\x00\x00\x00\x00\x01\x00\x00@\xd1\
+\x00\x00\x00\xc6\x00\x00\x00\x00\x00\x01\x00\x009\x11\
+\x00\x00\x00\xe2\x00\x00\x00\x00\x00\x01\x00\x00:\xca\
+\x00\x00\x01^\x00\x00\x00\x00\x00\x01\x00\x00CU\
 \x00\x00\x00\x1e\x00\x00\x00\x00\x00\x01\x00\x00\x00\x00\
-\x00\x00\x00<\x00\x00\x00\x00\x00\x01\x00\x00\x11|\
-\x00\x00\x00Z\x00\x00\x00\x00\x00\x01\x00\x00#I\
+\x00\x00\x00<\x00\x00\x00\x00\x00\x01\x00\x00\x12\x1e\
+\x00\x00\x00Z\x00\x00\x00\x00\x00\x01\x00\x00$\x94\
 "
+
 
 def qInitResources():
     QtCore.qRegisterResourceData(0x01, qt_resource_struct, qt_resource_name, qt_resource_data)
 
+
 def qCleanupResources():
     QtCore.qUnregisterResourceData(0x01, qt_resource_struct, qt_resource_name, qt_resource_data)
+
 
 qInitResources()
