@@ -44,6 +44,7 @@ from prm9tool.online.sync import ValveSync
 from prm9tool.translate import error_text
 from prm9tool.views.canopen_tables import SwitchTables
 from prm9tool.views.diagram.colours import toned_style
+from prm9tool.views.diagram.dialogs.fields import not_on_enter
 
 SETTINGS = ("NODEID", "BITRATE", "CANTERM")
 SWITCHES = ("SWBAUD", "SWNODE")
@@ -91,6 +92,7 @@ class CanopenWindow(QDialog):
         self._tone()
         buttons = QDialogButtonBox(QDialogButtonBox.StandardButton.Close)
         buttons.rejected.connect(self.close)
+        not_on_enter(buttons)
         root = QVBoxLayout(self)
         for widget in (self.intro, self.state_label):
             root.addWidget(widget)

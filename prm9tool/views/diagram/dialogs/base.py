@@ -31,7 +31,7 @@ from prm9tool.model.editing import apply_edit
 from prm9tool.online.connection_protocol import DiagramConnection
 from prm9tool.translate import error_text
 from prm9tool.views.diagram.colours import toned_style
-from prm9tool.views.diagram.dialogs.fields import ChoiceField, ValueField
+from prm9tool.views.diagram.dialogs.fields import ChoiceField, ValueField, not_on_enter
 
 Field = ValueField | ChoiceField
 MAX_SIZE = (1000, 690)  # a 1024 × 768 screen less the title bar and a task bar
@@ -83,6 +83,7 @@ class BlockDialog(QDialog):
         self.side = QVBoxLayout()
         self.buttons = QDialogButtonBox(QDialogButtonBox.StandardButton.Close)
         self.buttons.rejected.connect(self.close)
+        not_on_enter(self.buttons)
         self._assemble()
         self.doc.value_changed.connect(self._on_document_value_changed)
         self.doc.values_reset.connect(self.refresh)
