@@ -1465,8 +1465,8 @@ Poslední akce možná nebyla dokončena. Uložte svou práci pod novým názvem
             <translation>Režim: {0}</translation>
         </message>
         <message>
-            <source>Connected; the document and the valve are being compared</source>
-            <translation>Připojeno; dokument a ventil se porovnávají</translation>
+            <source>Connected, but the document and the valve do not agree yet: edits are not sent to the valve</source>
+            <translation>Připojeno, ale dokument a ventil se zatím neshodují: změny se do ventilu neposílají</translation>
         </message>
         <message>
             <source>Expert</source>

@@ -1462,8 +1462,8 @@ Die letzte Aktion wurde womöglich nicht vollständig ausgeführt. Speichern Sie
             <translation>Modus: {0}</translation>
         </message>
         <message>
-            <source>Connected; the document and the valve are being compared</source>
-            <translation>Verbunden; Dokument und Ventil werden verglichen</translation>
+            <source>Connected, but the document and the valve do not agree yet: edits are not sent to the valve</source>
+            <translation>Verbunden, aber Dokument und Ventil stimmen noch nicht überein: Änderungen werden nicht an das Ventil gesendet</translation>
         </message>
         <message>
             <source>Expert</source>

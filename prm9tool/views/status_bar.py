@@ -104,7 +104,9 @@ class MainStatusBar(QStatusBar):
             mode = self.tr("ONLINE") if self._synchronised else self.tr("CONNECTING")
         self.mode_label.setText(self.tr("Mode: {0}").format(mode))
         self.mode_label.setToolTip(
-            self.tr("Connected; the document and the valve are being compared")
+            self.tr(
+                "Connected, but the document and the valve do not agree yet: edits are not sent to the valve"
+            )
             if self._online and not self._synchronised
             else ""
         )
