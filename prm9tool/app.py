@@ -85,6 +85,9 @@ def create_window(args: argparse.Namespace) -> MainWindow:
     doc = ParameterDocument(DEFAULT_TYPE_KEY)
     undo = DocumentUndo(doc)
     connection = ValveConnection(opener=_opener(args), lister=_lister, after_open=_joiner(args))
+    from prm9tool.history.recorder import Recorder  # opens its database on first use
+
+    connection.set_recorder(Recorder(getattr(args, "history_db", None)))
     return MainWindow(doc, undo, AccessModel(), connection, settings)
 
 

@@ -36,12 +36,16 @@ def _menu_texts(window, name):
 def test_menus_and_toolbar_are_those_of_the_manual(window):
     titles = [a.text() for a in window.menuBar().actions()]
     assert titles == ["&File", "&View", "V&alve", "&Communication", "&Help"]
-    assert {"&Open…", "&Save", "Save &As…", "&Print…", "E&xit"} <= set(_menu_texts(window, "file"))
+    assert {"&Open…", "&Save", "Save &As…", "&Print…", "Co&mpare with file…", "E&xit"} <= set(
+        _menu_texts(window, "file")
+    )
     assert _menu_texts(window, "valve") == [
         "Valve &selection…",
         "Valve s&tatus…",
         "&Upload to valve",
         "&Download from valve",
+        "&Compare with valve",  # issue 17
+        "&History…",
         "Restore &factory values…",
         "&Restart valve…",
         "E&mulated valve",  # this program's addition: the emulated valve's inputs and faults

@@ -48,10 +48,132 @@ Poslední akce možná nebyla dokončena. Uložte svou práci pod novým názvem
         </message>
     </context>
     <context>
+        <name>AutotunePage</name>
+        <message>
+            <source>steps of %1 % from 0 %, a few times, about %2 s in all</source>
+            <translation>několik skoků o %1 % od 0 %, celkem asi %2 s</translation>
+        </message>
+        <message>
+            <source>P only with rising gain until the loop oscillates (steps of 5 %, oscillation stopped at ±40 %), about 5 s</source>
+            <translation>pouze P se stoupajícím zesílením, dokud se smyčka nerozkmitá (skoky 5 %, kmitání přerušeno při ±40 %), asi 5 s</translation>
+        </message>
+        <message>
+            <source>Model: gain %1, lags %2 ms, dead time %3 ms (fit error %4 %).</source>
+            <translation>Model: zesílení %1, zpoždění %2 ms, dopravní zpoždění %3 ms (chyba proložení %4 %).</translation>
+        </message>
+        <message>
+            <source>Critical gain Kkr = %1, period Tkr = %2 ms: K = 0.5·Kkr, Ti = 0.8·Tkr, Td = 0.12·Tkr.</source>
+            <translation>Kritické zesílení Kkr = %1, perioda Tkr = %2 ms: K = 0.5·Kkr, Ti = 0.8·Tkr, Td = 0.12·Tkr.</translation>
+        </message>
+        <message>
+            <source>before (measured)</source>
+            <translation>před (změřeno)</translation>
+        </message>
+        <message>
+            <source>proposed (measured)</source>
+            <translation>návrh (změřeno)</translation>
+        </message>
+        <message>
+            <source>proposed (simulated)</source>
+            <translation>návrh (simulováno)</translation>
+        </message>
+        <message>
+            <source>Step response</source>
+            <translation>Přechodová charakteristika</translation>
+        </message>
+        <message>
+            <source>time [ms]</source>
+            <translation>čas [ms]</translation>
+        </message>
+        <message>
+            <source>no response</source>
+            <translation>bez odezvy</translation>
+        </message>
+        <message>
+            <source>overshoot %1 %, settling %2</source>
+            <translation>překmit %1 %, ustálení %2</translation>
+        </message>
+        <message>
+            <source>Before: %1. Proposed: %2.</source>
+            <translation>Před: %1. Návrh: %2.</translation>
+        </message>
+        <message>
+            <source>Autotune</source>
+            <translation>Autotune</translation>
+        </message>
+        <message>
+            <source>Model-based (never oscillates)</source>
+            <translation>Podle modelu (nikdy nekmitá)</translation>
+        </message>
+        <message>
+            <source>Critical gain (APOSYS 10 rule)</source>
+            <translation>Kritické zesílení (pravidlo APOSYS 10)</translation>
+        </message>
+        <message>
+            <source>Method:</source>
+            <translation>Metoda:</translation>
+        </message>
+        <message>
+            <source>Step amplitude:</source>
+            <translation>Velikost skoku:</translation>
+        </message>
+        <message>
+            <source>Target overshoot at most:</source>
+            <translation>Překmit nejvýše:</translation>
+        </message>
+        <message>
+            <source>Target settling time (±2 %) at most:</source>
+            <translation>Doba ustálení (±2 %) nejvýše:</translation>
+        </message>
+        <message>
+            <source>Run autotune</source>
+            <translation>Spustit autotune</translation>
+        </message>
+        <message>
+            <source>Accept the proposed gains</source>
+            <translation>Převzít navržené konstanty</translation>
+        </message>
+    </context>
+    <context>
         <name>BlockDialog</name>
         <message>
             <source>Read only: %1 (View → Access level)</source>
             <translation>Jen pro čtení: %1 (Náhled → Úroveň oprávnění)</translation>
+        </message>
+    </context>
+    <context>
+        <name>BodePage</name>
+        <message>
+            <source>a sine sweep %1 … %2 Hz of ±%3 % around %4 %, %5 s</source>
+            <translation>rozmítaný sinus %1 … %2 Hz o ±%3 % kolem %4 %, %5 s</translation>
+        </message>
+        <message>
+            <source>−3 dB at %1 Hz, −90° at %2 Hz.</source>
+            <translation>−3 dB při %1 Hz, −90° při %2 Hz.</translation>
+        </message>
+        <message>
+            <source>Amplitude:</source>
+            <translation>Amplituda:</translation>
+        </message>
+        <message>
+            <source>Operating point:</source>
+            <translation>Pracovní bod:</translation>
+        </message>
+        <message>
+            <source>From:</source>
+            <translation>Od:</translation>
+        </message>
+        <message>
+            <source>To:</source>
+            <translation>Do:</translation>
+        </message>
+        <message>
+            <source>Duration:</source>
+            <translation>Doba trvání:</translation>
+        </message>
+        <message>
+            <source>Measure the frequency response</source>
+            <translation>Změřit frekvenční charakteristiku</translation>
         </message>
     </context>
     <context>
@@ -326,11 +448,148 @@ Poslední akce možná nebyla dokončena. Uložte svou práci pod novým názvem
         <name>Compare</name>
         <message>
             <source>The type keys differ: {0} is {1}, {2} is {3}.</source>
-            <translation type="unfinished"></translation>
+            <translation>Typové klíče se liší: {0} je {1}, {2} je {3}.</translation>
         </message>
         <message>
             <source>The valve variants differ: only the parameters both have are compared; {0} parameters that one side lacks are left out.</source>
-            <translation type="unfinished"></translation>
+            <translation>Varianty ventilů se liší: porovnávají se jen parametry, které mají obě strany; {0} parametrů, které jedné straně chybí, je vynecháno.</translation>
+        </message>
+    </context>
+    <context>
+        <name>CompareDialog</name>
+        <message>
+            <source>Compare parameters</source>
+            <translation>Porovnání parametrů</translation>
+        </message>
+        <message>
+            <source>Differences only</source>
+            <translation>Jen rozdíly</translation>
+        </message>
+        <message>
+            <source>All blocks</source>
+            <translation>Všechny bloky</translation>
+        </message>
+        <message>
+            <source>Basic level</source>
+            <translation>Základní úroveň</translation>
+        </message>
+        <message>
+            <source>Expert level</source>
+            <translation>Expertní úroveň</translation>
+        </message>
+        <message>
+            <source>Block:</source>
+            <translation>Blok:</translation>
+        </message>
+        <message>
+            <source>Access level:</source>
+            <translation>Úroveň oprávnění:</translation>
+        </message>
+        <message>
+            <source>Take every shown value from {0}</source>
+            <translation>Převzít všechny zobrazené hodnoty z {0}</translation>
+        </message>
+        <message>
+            <source>Apply: each side takes the chosen values</source>
+            <translation>Použít: každá strana převezme zvolené hodnoty</translation>
+        </message>
+        <message>
+            <source>Apply the chosen values to {0}</source>
+            <translation>Použít zvolené hodnoty na: {0}</translation>
+        </message>
+        <message numerus="yes">
+            <source>%n parameter(s) differ</source>
+            <translation>
+                <numerusform>%n parametr se liší</numerusform>
+                <numerusform>%n parametry se liší</numerusform>
+                <numerusform>%n parametrů se liší</numerusform>
+            </translation>
+        </message>
+        <message numerus="yes">
+            <source>%n parameter(s) only on one side</source>
+            <translation>
+                <numerusform>%n parametr jen na jedné straně</numerusform>
+                <numerusform>%n parametry jen na jedné straně</numerusform>
+                <numerusform>%n parametrů jen na jedné straně</numerusform>
+            </translation>
+        </message>
+        <message numerus="yes">
+            <source>%n shown</source>
+            <translation>
+                <numerusform>%n zobrazen</numerusform>
+                <numerusform>%n zobrazeny</numerusform>
+                <numerusform>%n zobrazeno</numerusform>
+            </translation>
+        </message>
+    </context>
+    <context>
+        <name>CompareTableModel</name>
+        <message>
+            <source>Mnemonic</source>
+            <translation>Zkratka</translation>
+        </message>
+        <message>
+            <source>Description</source>
+            <translation>Popis</translation>
+        </message>
+        <message>
+            <source>One side's valve type has no such parameter; it cannot be chosen.</source>
+            <translation>Typ ventilu jedné strany tento parametr nemá; nelze jej zvolit.</translation>
+        </message>
+    </context>
+    <context>
+        <name>CompareWorkflow</name>
+        <message>
+            <source>Document</source>
+            <translation>Dokument</translation>
+        </message>
+        <message>
+            <source>Valve {0}</source>
+            <translation>Ventil {0}</translation>
+        </message>
+        <message>
+            <source>Factory defaults</source>
+            <translation>Tovární nastavení</translation>
+        </message>
+        <message>
+            <source>Compare with file</source>
+            <translation>Porovnat se souborem</translation>
+        </message>
+        <message>
+            <source>Parameter files (*.prm);;All files (*)</source>
+            <translation>Soubory parametrů (*.prm);;Všechny soubory (*)</translation>
+        </message>
+        <message>
+            <source>{0} cannot be compared.</source>
+            <translation>{0} nelze porovnat.</translation>
+        </message>
+        <message>
+            <source>Values taken from {0}</source>
+            <translation>Hodnoty převzaté z {0}</translation>
+        </message>
+        <message>
+            <source>Compare with valve</source>
+            <translation>Porovnat s ventilem</translation>
+        </message>
+        <message>
+            <source>Go online with the valve first (Communication → Online mode).</source>
+            <translation>Nejprve se připojte k ventilu (Komunikace → Režim online).</translation>
+        </message>
+        <message>
+            <source>Values taken from the valve</source>
+            <translation>Hodnoty převzaté z ventilu</translation>
+        </message>
+        <message>
+            <source>Values chosen from the valve</source>
+            <translation>Hodnoty zvolené z ventilu</translation>
+        </message>
+        <message>
+            <source>Online: document and valve agree</source>
+            <translation>Online: dokument a ventil se shodují</translation>
+        </message>
+        <message>
+            <source>Parameters restored from the history</source>
+            <translation>Parametry obnovené z historie</translation>
         </message>
     </context>
     <context>
@@ -426,6 +685,10 @@ Poslední akce možná nebyla dokončena. Uložte svou práci pod novým názvem
     </context>
     <context>
         <name>ControllerDialog</name>
+        <message>
+            <source>Tuning and autotune…</source>
+            <translation>Ladění a autotune…</translation>
+        </message>
         <message>
             <source>No simulation available.</source>
             <translation>Simulace není k dispozici.</translation>
@@ -766,6 +1029,14 @@ Poslední akce možná nebyla dokončena. Uložte svou práci pod novým názvem
             <source>ok</source>
             <translation>ok</translation>
         </message>
+        <message>
+            <source>CANopen communication error (heartbeat, SYNC or RPDO missing)</source>
+            <translation>Chyba komunikace CANopen (chybí heartbeat, SYNC nebo RPDO)</translation>
+        </message>
+        <message>
+            <source>CANopen RPDO too short: not processed</source>
+            <translation>CANopen RPDO je příliš krátké: nezpracováno</translation>
+        </message>
     </context>
     <context>
         <name>EmulatedValve</name>
@@ -911,7 +1182,7 @@ Poslední akce možná nebyla dokončena. Uložte svou práci pod novým názvem
         </message>
         <message>
             <source>The history database cannot be used.</source>
-            <translation type="unfinished"></translation>
+            <translation>Databázi historie nelze použít.</translation>
         </message>
     </context>
     <context>
@@ -951,6 +1222,10 @@ Poslední akce možná nebyla dokončena. Uložte svou práci pod novým názvem
         <message>
             <source>Opening {0} cancelled</source>
             <translation>Otevírání {0} zrušeno</translation>
+        </message>
+        <message>
+            <source>Still reading {0}</source>
+            <translation>{0} se ještě načítá</translation>
         </message>
         <message>
             <source>Cannot open “{0}”</source>
@@ -1154,6 +1429,135 @@ Poslední akce možná nebyla dokončena. Uložte svou práci pod novým názvem
         <message>
             <source>USB</source>
             <translation>USB</translation>
+        </message>
+    </context>
+    <context>
+        <name>HistoryPolicy</name>
+        <message>
+            <source>Upload refused</source>
+            <translation>Načtení do ventilu odmítnuto</translation>
+        </message>
+        <message>
+            <source>The history database cannot record this upload, and the setting says to refuse uploads then. Nothing was written to the valve.</source>
+            <translation>Databáze historie nemůže toto načtení zaznamenat a nastavení v takovém případě načtení odmítá. Do ventilu nebylo nic zapsáno.</translation>
+        </message>
+        <message>
+            <source>History database unavailable</source>
+            <translation>Databáze historie není dostupná</translation>
+        </message>
+        <message>
+            <source>The history database cannot record this upload. Upload anyway and keep the record on this computer until the database is back?
+
+Yes uploads and queues the record; No uploads nothing.</source>
+            <translation>Databáze historie nemůže toto načtení zaznamenat. Přesto načíst do ventilu a záznam uchovat v tomto počítači, dokud nebude databáze opět dostupná?
+
+Ano načte a záznam zařadí do fronty; Ne nenačte nic.</translation>
+        </message>
+    </context>
+    <context>
+        <name>HistoryTableModel</name>
+        <message>
+            <source>No.</source>
+            <translation>Č.</translation>
+        </message>
+        <message>
+            <source>Time (UTC)</source>
+            <translation>Čas (UTC)</translation>
+        </message>
+        <message>
+            <source>Operation</source>
+            <translation>Operace</translation>
+        </message>
+        <message>
+            <source>Outcome</source>
+            <translation>Výsledek</translation>
+        </message>
+        <message>
+            <source>Type key</source>
+            <translation>Typový klíč</translation>
+        </message>
+        <message>
+            <source>Firmware</source>
+            <translation>Firmware</translation>
+        </message>
+        <message>
+            <source>User, station, link</source>
+            <translation>Uživatel, stanice, připojení</translation>
+        </message>
+    </context>
+    <context>
+        <name>HistoryWindow</name>
+        <message>
+            <source>History</source>
+            <translation>Historie</translation>
+        </message>
+        <message>
+            <source>serial number</source>
+            <translation>výrobní číslo</translation>
+        </message>
+        <message>
+            <source>Show</source>
+            <translation>Zobrazit</translation>
+        </message>
+        <message>
+            <source>Valve serial number:</source>
+            <translation>Výrobní číslo ventilu:</translation>
+        </message>
+        <message>
+            <source>Compare the two selected records</source>
+            <translation>Porovnat dva vybrané záznamy</translation>
+        </message>
+        <message>
+            <source>Restore into the document</source>
+            <translation>Obnovit do dokumentu</translation>
+        </message>
+        <message>
+            <source>Restore to the valve</source>
+            <translation>Obnovit do ventilu</translation>
+        </message>
+        <message>
+            <source>Export…</source>
+            <translation>Exportovat…</translation>
+        </message>
+        <message>
+            <source>Type a valve's serial number.</source>
+            <translation>Zadejte výrobní číslo ventilu.</translation>
+        </message>
+        <message>
+            <source>Reading the history…</source>
+            <translation>Čtení historie…</translation>
+        </message>
+        <message numerus="yes">
+            <source>%n record(s) in {0}</source>
+            <translation>
+                <numerusform>%n záznam v {0}</numerusform>
+                <numerusform>%n záznamy v {0}</numerusform>
+                <numerusform>%n záznamů v {0}</numerusform>
+            </translation>
+        </message>
+        <message>
+            <source>This record holds no parameter set (the operation did not change the valve's stored parameters).</source>
+            <translation>Tento záznam neobsahuje sadu parametrů (operace nezměnila uložené parametry ventilu).</translation>
+        </message>
+        <message>
+            <source>No. {0}, {1}</source>
+            <translation>Č. {0}, {1}</translation>
+        </message>
+        <message>
+            <source>Go online with valve {0} first: a record is restored only into the valve it was recorded from.</source>
+            <translation>Nejprve se připojte k ventilu {0}: záznam se obnovuje jen do ventilu, ze kterého pochází.</translation>
+        </message>
+        <message>
+            <source>Export record</source>
+            <translation>Exportovat záznam</translation>
+        </message>
+        <message>
+            <source>Parameter files (*.prm);;CSV tables (*.csv)</source>
+            <translation>Soubory parametrů (*.prm);;Tabulky CSV (*.csv)</translation>
+        </message>
+        <message>
+            <source>The record was not exported.</source>
+            <translation>Záznam nebyl exportován.</translation>
         </message>
     </context>
     <context>
@@ -1445,6 +1849,30 @@ Poslední akce možná nebyla dokončena. Uložte svou práci pod novým názvem
             <source>Toolbar</source>
             <translation>Panel nástrojů</translation>
         </message>
+        <message>
+            <source>Co&amp;mpare with file…</source>
+            <translation>Po&amp;rovnat se souborem…</translation>
+        </message>
+        <message>
+            <source>Compare the parameters with a *.prm file, take chosen values</source>
+            <translation>Porovnat parametry se souborem *.prm, převzít zvolené hodnoty</translation>
+        </message>
+        <message>
+            <source>&amp;Compare with valve</source>
+            <translation>&amp;Porovnat s ventilem</translation>
+        </message>
+        <message>
+            <source>Compare the document with the valve, apply chosen values</source>
+            <translation>Porovnat dokument s ventilem, použít zvolené hodnoty</translation>
+        </message>
+        <message>
+            <source>&amp;History…</source>
+            <translation>&amp;Historie…</translation>
+        </message>
+        <message>
+            <source>Every operation recorded on a valve's parameters</source>
+            <translation>Každá zaznamenaná operace s parametry ventilu</translation>
+        </message>
     </context>
     <context>
         <name>MainStatusBar</name>
@@ -1585,6 +2013,10 @@ Poslední akce možná nebyla dokončena. Uložte svou práci pod novým názvem
         <message>
             <source>Valve</source>
             <translation>Ventil</translation>
+        </message>
+        <message>
+            <source>Choose per parameter…</source>
+            <translation>Zvolit po parametrech…</translation>
         </message>
     </context>
     <context>
@@ -1877,6 +2309,10 @@ Poslední akce možná nebyla dokončena. Uložte svou práci pod novým názvem
             <source>cannot save the file: {0}</source>
             <translation>soubor nelze uložit: {0}</translation>
         </message>
+        <message>
+            <source>{0}: {1} is ambiguous (a thousands separator?); write the number without one, with '{2}' before the decimals</source>
+            <translation>{0}: {1} je nejednoznačné (oddělovač tisíců?); napište číslo bez něj, s „{2}“ před desetinnými místy</translation>
+        </message>
     </context>
     <context>
         <name>RampsDialog</name>
@@ -1993,6 +2429,53 @@ Poslední akce možná nebyla dokončena. Uložte svou práci pod novým názvem
         <message>
             <source>PRM9 parameter record {0}</source>
             <translation>Protokol parametrů PRM9 {0}</translation>
+        </message>
+    </context>
+    <context>
+        <name>ReportPage</name>
+        <message>
+            <source>steps of %1 %, a sine sweep of ±%2 % and a triangle over the whole range, about %3 s</source>
+            <translation>skoky %1 %, rozmítaný sinus ±%2 % a trojúhelník přes celý rozsah, asi %3 s</translation>
+        </message>
+        <message>
+            <source>Result: %1</source>
+            <translation>Výsledek: %1</translation>
+        </message>
+        <message>
+            <source>Save the test report</source>
+            <translation>Uložit protokol o zkoušce</translation>
+        </message>
+        <message>
+            <source>Cannot write the report: %1</source>
+            <translation>Protokol nelze zapsat: %1</translation>
+        </message>
+        <message>
+            <source>Acceptance profile (TOML, empty: default):</source>
+            <translation>Přejímací profil (TOML, prázdné: výchozí):</translation>
+        </message>
+        <message>
+            <source>Run the end-of-line test</source>
+            <translation>Spustit výstupní zkoušku</translation>
+        </message>
+        <message>
+            <source>Save PDF and CSV…</source>
+            <translation>Uložit PDF a CSV…</translation>
+        </message>
+        <message>
+            <source>Figure</source>
+            <translation>Ukazatel</translation>
+        </message>
+        <message>
+            <source>Value</source>
+            <translation>Hodnota</translation>
+        </message>
+        <message>
+            <source>Limit</source>
+            <translation>Mez</translation>
+        </message>
+        <message>
+            <source>Result</source>
+            <translation>Výsledek</translation>
         </message>
     </context>
     <context>
@@ -2161,6 +2644,10 @@ Ujistěte se, že pohyb stroje je bezpečný. Spustit generátor?</translation>
             <translation>Ventil odmítl hodnotu generátoru žádané hodnoty ({0}): generátor se zastavil.</translation>
         </message>
         <message>
+            <source>Tuning and characterization…</source>
+            <translation>Ladění a charakterizace…</translation>
+        </message>
+        <message>
             <source>no reason given</source>
             <translation>bez udání důvodu</translation>
         </message>
@@ -2232,6 +2719,37 @@ Uvolnit ho nyní (NMT start, řídicí slovo 08h → 09h → 0Bh → 0Fh)?</tran
         <message>
             <source>This type is not recommended for a valve with %1 (manual table 8-4).</source>
             <translation>Tento typ se pro ventil s %1 nedoporučuje (příručka, tabulka 8-4).</translation>
+        </message>
+    </context>
+    <context>
+        <name>StaticPage</name>
+        <message>
+            <source>a triangle over the whole range −100 … 100 %, %1 s</source>
+            <translation>trojúhelník přes celý rozsah −100 … 100 %, %1 s</translation>
+        </message>
+        <message>
+            <source>linearized (preview)</source>
+            <translation>linearizováno (náhled)</translation>
+        </message>
+        <message>
+            <source>Gain %1, hysteresis %2 %, linearity error %3 %, dead band %4 %.</source>
+            <translation>Zesílení %1, hystereze %2 %, chyba linearity %3 %, pásmo necitlivosti %4 %.</translation>
+        </message>
+        <message>
+            <source>Linearization from the static characteristic</source>
+            <translation>Linearizace ze statické charakteristiky</translation>
+        </message>
+        <message>
+            <source>Triangle period:</source>
+            <translation>Perioda trojúhelníku:</translation>
+        </message>
+        <message>
+            <source>Measure the static characteristic</source>
+            <translation>Změřit statickou charakteristiku</translation>
+        </message>
+        <message>
+            <source>Apply the proposed linearization</source>
+            <translation>Použít navrženou linearizaci</translation>
         </message>
     </context>
     <context>
@@ -2337,6 +2855,256 @@ Uvolnit ho nyní (NMT start, řídicí slovo 08h → 09h → 0Bh → 0Fh)?</tran
         <message>
             <source>output</source>
             <translation>výstup</translation>
+        </message>
+    </context>
+    <context>
+        <name>TuningReport</name>
+        <message>
+            <source>overshoot</source>
+            <translation>překmit</translation>
+        </message>
+        <message>
+            <source>rise time (10–90 %)</source>
+            <translation>doba náběhu (10–90 %)</translation>
+        </message>
+        <message>
+            <source>settling time (±2 %)</source>
+            <translation>doba ustálení (±2 %)</translation>
+        </message>
+        <message>
+            <source>−3 dB frequency</source>
+            <translation>frekvence −3 dB</translation>
+        </message>
+        <message>
+            <source>−90° frequency</source>
+            <translation>frekvence −90°</translation>
+        </message>
+        <message>
+            <source>gain</source>
+            <translation>zesílení</translation>
+        </message>
+        <message>
+            <source>hysteresis</source>
+            <translation>hystereze</translation>
+        </message>
+        <message>
+            <source>linearity error</source>
+            <translation>chyba linearity</translation>
+        </message>
+        <message>
+            <source>dead band</source>
+            <translation>pásmo necitlivosti</translation>
+        </message>
+        <message>
+            <source>step %1 %: %2</source>
+            <translation>skok %1 %: %2</translation>
+        </message>
+        <message>
+            <source>PASS</source>
+            <translation>VYHOVUJE</translation>
+        </message>
+        <message>
+            <source>FAIL</source>
+            <translation>NEVYHOVUJE</translation>
+        </message>
+        <message>
+            <source>not reached</source>
+            <translation>nedosaženo</translation>
+        </message>
+        <message>
+            <source>Step response %1 %</source>
+            <translation>Přechodová charakteristika %1 %</translation>
+        </message>
+        <message>
+            <source>time [ms]</source>
+            <translation>čas [ms]</translation>
+        </message>
+        <message>
+            <source>setpoint</source>
+            <translation>žádaná hodnota</translation>
+        </message>
+        <message>
+            <source>actual</source>
+            <translation>skutečná hodnota</translation>
+        </message>
+        <message>
+            <source>frequency [Hz]</source>
+            <translation>frekvence [Hz]</translation>
+        </message>
+        <message>
+            <source>Frequency response ±%1 %: magnitude</source>
+            <translation>Frekvenční charakteristika ±%1 %: amplituda</translation>
+        </message>
+        <message>
+            <source>magnitude</source>
+            <translation>amplituda</translation>
+        </message>
+        <message>
+            <source>Phase and coherence</source>
+            <translation>Fáze a koherence</translation>
+        </message>
+        <message>
+            <source>phase</source>
+            <translation>fáze</translation>
+        </message>
+        <message>
+            <source>coherence ×100</source>
+            <translation>koherence ×100</translation>
+        </message>
+        <message>
+            <source>Static characteristic</source>
+            <translation>Statická charakteristika</translation>
+        </message>
+        <message>
+            <source>demand [%]</source>
+            <translation>žádaná hodnota [%]</translation>
+        </message>
+        <message>
+            <source>actual [%]</source>
+            <translation>skutečná hodnota [%]</translation>
+        </message>
+        <message>
+            <source>rising</source>
+            <translation>stoupající</translation>
+        </message>
+        <message>
+            <source>falling</source>
+            <translation>klesající</translation>
+        </message>
+        <message>
+            <source>best line</source>
+            <translation>proložená přímka</translation>
+        </message>
+        <message>
+            <source>Type key</source>
+            <translation>Objednací kód</translation>
+        </message>
+        <message>
+            <source>Serial number</source>
+            <translation>Sériové číslo</translation>
+        </message>
+        <message>
+            <source>Firmware</source>
+            <translation>Firmware</translation>
+        </message>
+        <message>
+            <source>Date</source>
+            <translation>Datum</translation>
+        </message>
+        <message>
+            <source>Link</source>
+            <translation>Spojení</translation>
+        </message>
+        <message>
+            <source>Acceptance profile</source>
+            <translation>Přejímací profil</translation>
+        </message>
+        <message>
+            <source>Result</source>
+            <translation>Výsledek</translation>
+        </message>
+        <message>
+            <source>PRM9 test report</source>
+            <translation>Protokol o zkoušce PRM9</translation>
+        </message>
+        <message>
+            <source>Figure</source>
+            <translation>Ukazatel</translation>
+        </message>
+        <message>
+            <source>Value</source>
+            <translation>Hodnota</translation>
+        </message>
+        <message>
+            <source>Limit</source>
+            <translation>Mez</translation>
+        </message>
+        <message>
+            <source>Parameter set (raw values)</source>
+            <translation>Sada parametrů (surové hodnoty)</translation>
+        </message>
+    </context>
+    <context>
+        <name>TuningWindow</name>
+        <message>
+            <source>Running: %1</source>
+            <translation>Probíhá: %1</translation>
+        </message>
+        <message>
+            <source>This test moves the spool (and on E04 the actuator): %1.
+
+Make sure the hydraulics are safe for it. Stop ends it at any time and puts the valve back as it was. Start the test?</source>
+            <translation>Tento test pohybuje šoupátkem (a u E04 pohonem): %1.
+
+Zajistěte, aby to hydraulika bezpečně snesla. Tlačítko Stop test kdykoli ukončí a vrátí ventil do původního stavu. Spustit test?</translation>
+        </message>
+        <message>
+            <source>Tuning</source>
+            <translation>Ladění</translation>
+        </message>
+        <message>
+            <source>Stopping…</source>
+            <translation>Přerušuje se…</translation>
+        </message>
+        <message>
+            <source>Done.</source>
+            <translation>Hotovo.</translation>
+        </message>
+        <message>
+            <source>Stopped: %1</source>
+            <translation>Přerušeno: %1</translation>
+        </message>
+        <message>
+            <source>Accepted: %1</source>
+            <translation>Převzato: %1</translation>
+        </message>
+        <message>
+            <source>Tuning and characterization</source>
+            <translation>Ladění a charakterizace</translation>
+        </message>
+        <message>
+            <source>Position controller (spool)</source>
+            <translation>Regulátor polohy (šoupátko)</translation>
+        </message>
+        <message>
+            <source>Process controller (E04)</source>
+            <translation>Regulátor procesní veličiny (E04)</translation>
+        </message>
+        <message>
+            <source>Loop:</source>
+            <translation>Regulační smyčka:</translation>
+        </message>
+        <message>
+            <source>Stop</source>
+            <translation>Stop</translation>
+        </message>
+        <message>
+            <source>Offline: the tests run on an emulated valve with the document's values.</source>
+            <translation>Offline: testy běží na emulovaném ventilu s hodnotami dokumentu.</translation>
+        </message>
+        <message>
+            <source>Online: the tests move the connected valve.</source>
+            <translation>Online: testy pohybují připojeným ventilem.</translation>
+        </message>
+        <message>
+            <source>Autotune</source>
+            <translation>Autotune</translation>
+        </message>
+        <message>
+            <source>Frequency response</source>
+            <translation>Frekvenční charakteristika</translation>
+        </message>
+        <message>
+            <source>Static characteristic</source>
+            <translation>Statická charakteristika</translation>
+        </message>
+        <message>
+            <source>Test report</source>
+            <translation>Protokol o zkoušce</translation>
+        </message>
+        <message>
+            <source>Ready.</source>
+            <translation>Připraveno.</translation>
         </message>
     </context>
     <context>

@@ -48,10 +48,132 @@ Die letzte Aktion wurde womöglich nicht vollständig ausgeführt. Speichern Sie
         </message>
     </context>
     <context>
+        <name>AutotunePage</name>
+        <message>
+            <source>steps of %1 % from 0 %, a few times, about %2 s in all</source>
+            <translation>einige Sprünge von %1 % ab 0 %, insgesamt etwa %2 s</translation>
+        </message>
+        <message>
+            <source>P only with rising gain until the loop oscillates (steps of 5 %, oscillation stopped at ±40 %), about 5 s</source>
+            <translation>nur P mit steigender Verstärkung, bis der Kreis schwingt (Sprünge von 5 %, Schwingung bei ±40 % abgebrochen), etwa 5 s</translation>
+        </message>
+        <message>
+            <source>Model: gain %1, lags %2 ms, dead time %3 ms (fit error %4 %).</source>
+            <translation>Modell: Verstärkung %1, Verzögerungen %2 ms, Totzeit %3 ms (Anpassungsfehler %4 %).</translation>
+        </message>
+        <message>
+            <source>Critical gain Kkr = %1, period Tkr = %2 ms: K = 0.5·Kkr, Ti = 0.8·Tkr, Td = 0.12·Tkr.</source>
+            <translation>Kritische Verstärkung Kkr = %1, Periode Tkr = %2 ms: K = 0.5·Kkr, Ti = 0.8·Tkr, Td = 0.12·Tkr.</translation>
+        </message>
+        <message>
+            <source>before (measured)</source>
+            <translation>vorher (gemessen)</translation>
+        </message>
+        <message>
+            <source>proposed (measured)</source>
+            <translation>Vorschlag (gemessen)</translation>
+        </message>
+        <message>
+            <source>proposed (simulated)</source>
+            <translation>Vorschlag (simuliert)</translation>
+        </message>
+        <message>
+            <source>Step response</source>
+            <translation>Sprungantwort</translation>
+        </message>
+        <message>
+            <source>time [ms]</source>
+            <translation>Zeit [ms]</translation>
+        </message>
+        <message>
+            <source>no response</source>
+            <translation>keine Antwort</translation>
+        </message>
+        <message>
+            <source>overshoot %1 %, settling %2</source>
+            <translation>Überschwingen %1 %, Ausregelzeit %2</translation>
+        </message>
+        <message>
+            <source>Before: %1. Proposed: %2.</source>
+            <translation>Vorher: %1. Vorschlag: %2.</translation>
+        </message>
+        <message>
+            <source>Autotune</source>
+            <translation>Autotune</translation>
+        </message>
+        <message>
+            <source>Model-based (never oscillates)</source>
+            <translation>Modellbasiert (schwingt nie)</translation>
+        </message>
+        <message>
+            <source>Critical gain (APOSYS 10 rule)</source>
+            <translation>Kritische Verstärkung (Regel des APOSYS 10)</translation>
+        </message>
+        <message>
+            <source>Method:</source>
+            <translation>Verfahren:</translation>
+        </message>
+        <message>
+            <source>Step amplitude:</source>
+            <translation>Sprunghöhe:</translation>
+        </message>
+        <message>
+            <source>Target overshoot at most:</source>
+            <translation>Überschwingen höchstens:</translation>
+        </message>
+        <message>
+            <source>Target settling time (±2 %) at most:</source>
+            <translation>Ausregelzeit (±2 %) höchstens:</translation>
+        </message>
+        <message>
+            <source>Run autotune</source>
+            <translation>Autotune starten</translation>
+        </message>
+        <message>
+            <source>Accept the proposed gains</source>
+            <translation>Vorgeschlagene Verstärkungen übernehmen</translation>
+        </message>
+    </context>
+    <context>
         <name>BlockDialog</name>
         <message>
             <source>Read only: %1 (View → Access level)</source>
             <translation>Nur lesbar: %1 (Ansicht → Berechtigungsstufe)</translation>
+        </message>
+    </context>
+    <context>
+        <name>BodePage</name>
+        <message>
+            <source>a sine sweep %1 … %2 Hz of ±%3 % around %4 %, %5 s</source>
+            <translation>ein Sinus-Sweep %1 … %2 Hz von ±%3 % um %4 %, %5 s</translation>
+        </message>
+        <message>
+            <source>−3 dB at %1 Hz, −90° at %2 Hz.</source>
+            <translation>−3 dB bei %1 Hz, −90° bei %2 Hz.</translation>
+        </message>
+        <message>
+            <source>Amplitude:</source>
+            <translation>Amplitude:</translation>
+        </message>
+        <message>
+            <source>Operating point:</source>
+            <translation>Arbeitspunkt:</translation>
+        </message>
+        <message>
+            <source>From:</source>
+            <translation>Von:</translation>
+        </message>
+        <message>
+            <source>To:</source>
+            <translation>Bis:</translation>
+        </message>
+        <message>
+            <source>Duration:</source>
+            <translation>Dauer:</translation>
+        </message>
+        <message>
+            <source>Measure the frequency response</source>
+            <translation>Frequenzgang messen</translation>
         </message>
     </context>
     <context>
@@ -326,11 +448,145 @@ Die letzte Aktion wurde womöglich nicht vollständig ausgeführt. Speichern Sie
         <name>Compare</name>
         <message>
             <source>The type keys differ: {0} is {1}, {2} is {3}.</source>
-            <translation type="unfinished"></translation>
+            <translation>Die Typenschlüssel unterscheiden sich: {0} ist {1}, {2} ist {3}.</translation>
         </message>
         <message>
             <source>The valve variants differ: only the parameters both have are compared; {0} parameters that one side lacks are left out.</source>
-            <translation type="unfinished"></translation>
+            <translation>Die Ventilvarianten unterscheiden sich: verglichen werden nur die Parameter, die beide haben; {0} Parameter, die einer Seite fehlen, bleiben außen vor.</translation>
+        </message>
+    </context>
+    <context>
+        <name>CompareDialog</name>
+        <message>
+            <source>Compare parameters</source>
+            <translation>Parameter vergleichen</translation>
+        </message>
+        <message>
+            <source>Differences only</source>
+            <translation>Nur Unterschiede</translation>
+        </message>
+        <message>
+            <source>All blocks</source>
+            <translation>Alle Blöcke</translation>
+        </message>
+        <message>
+            <source>Basic level</source>
+            <translation>Basis-Ebene</translation>
+        </message>
+        <message>
+            <source>Expert level</source>
+            <translation>Experten-Ebene</translation>
+        </message>
+        <message>
+            <source>Block:</source>
+            <translation>Block:</translation>
+        </message>
+        <message>
+            <source>Access level:</source>
+            <translation>Zugriffsebene:</translation>
+        </message>
+        <message>
+            <source>Take every shown value from {0}</source>
+            <translation>Alle angezeigten Werte von {0} nehmen</translation>
+        </message>
+        <message>
+            <source>Apply: each side takes the chosen values</source>
+            <translation>Übernehmen: jede Seite erhält die gewählten Werte</translation>
+        </message>
+        <message>
+            <source>Apply the chosen values to {0}</source>
+            <translation>Gewählte Werte übernehmen in: {0}</translation>
+        </message>
+        <message numerus="yes">
+            <source>%n parameter(s) differ</source>
+            <translation>
+                <numerusform>%n Parameter unterscheidet sich</numerusform>
+                <numerusform>%n Parameter unterscheiden sich</numerusform>
+            </translation>
+        </message>
+        <message numerus="yes">
+            <source>%n parameter(s) only on one side</source>
+            <translation>
+                <numerusform>%n Parameter nur auf einer Seite</numerusform>
+                <numerusform>%n Parameter nur auf einer Seite</numerusform>
+            </translation>
+        </message>
+        <message numerus="yes">
+            <source>%n shown</source>
+            <translation>
+                <numerusform>%n angezeigt</numerusform>
+                <numerusform>%n angezeigt</numerusform>
+            </translation>
+        </message>
+    </context>
+    <context>
+        <name>CompareTableModel</name>
+        <message>
+            <source>Mnemonic</source>
+            <translation>Kürzel</translation>
+        </message>
+        <message>
+            <source>Description</source>
+            <translation>Beschreibung</translation>
+        </message>
+        <message>
+            <source>One side's valve type has no such parameter; it cannot be chosen.</source>
+            <translation>Der Ventiltyp einer Seite hat diesen Parameter nicht; er kann nicht gewählt werden.</translation>
+        </message>
+    </context>
+    <context>
+        <name>CompareWorkflow</name>
+        <message>
+            <source>Document</source>
+            <translation>Dokument</translation>
+        </message>
+        <message>
+            <source>Valve {0}</source>
+            <translation>Ventil {0}</translation>
+        </message>
+        <message>
+            <source>Factory defaults</source>
+            <translation>Werkseinstellungen</translation>
+        </message>
+        <message>
+            <source>Compare with file</source>
+            <translation>Mit Datei vergleichen</translation>
+        </message>
+        <message>
+            <source>Parameter files (*.prm);;All files (*)</source>
+            <translation>Parameterdateien (*.prm);;Alle Dateien (*)</translation>
+        </message>
+        <message>
+            <source>{0} cannot be compared.</source>
+            <translation>{0} kann nicht verglichen werden.</translation>
+        </message>
+        <message>
+            <source>Values taken from {0}</source>
+            <translation>Werte aus {0} übernommen</translation>
+        </message>
+        <message>
+            <source>Compare with valve</source>
+            <translation>Mit Ventil vergleichen</translation>
+        </message>
+        <message>
+            <source>Go online with the valve first (Communication → Online mode).</source>
+            <translation>Zuerst mit dem Ventil online gehen (Kommunikation → Online-Modus).</translation>
+        </message>
+        <message>
+            <source>Values taken from the valve</source>
+            <translation>Werte aus dem Ventil übernommen</translation>
+        </message>
+        <message>
+            <source>Values chosen from the valve</source>
+            <translation>Aus dem Ventil gewählte Werte</translation>
+        </message>
+        <message>
+            <source>Online: document and valve agree</source>
+            <translation>Online: Dokument und Ventil stimmen überein</translation>
+        </message>
+        <message>
+            <source>Parameters restored from the history</source>
+            <translation>Parameter aus dem Verlauf wiederhergestellt</translation>
         </message>
     </context>
     <context>
@@ -426,6 +682,10 @@ Die letzte Aktion wurde womöglich nicht vollständig ausgeführt. Speichern Sie
     </context>
     <context>
         <name>ControllerDialog</name>
+        <message>
+            <source>Tuning and autotune…</source>
+            <translation>Einstellung und Autotune…</translation>
+        </message>
         <message>
             <source>No simulation available.</source>
             <translation>Keine Simulation verfügbar.</translation>
@@ -766,6 +1026,14 @@ Die letzte Aktion wurde womöglich nicht vollständig ausgeführt. Speichern Sie
             <source>ok</source>
             <translation>ok</translation>
         </message>
+        <message>
+            <source>CANopen communication error (heartbeat, SYNC or RPDO missing)</source>
+            <translation>CANopen-Kommunikationsfehler (Heartbeat, SYNC oder RPDO fehlt)</translation>
+        </message>
+        <message>
+            <source>CANopen RPDO too short: not processed</source>
+            <translation>CANopen-RPDO zu kurz: nicht verarbeitet</translation>
+        </message>
     </context>
     <context>
         <name>EmulatedValve</name>
@@ -911,7 +1179,7 @@ Die letzte Aktion wurde womöglich nicht vollständig ausgeführt. Speichern Sie
         </message>
         <message>
             <source>The history database cannot be used.</source>
-            <translation type="unfinished"></translation>
+            <translation>Die Verlaufsdatenbank kann nicht benutzt werden.</translation>
         </message>
     </context>
     <context>
@@ -951,6 +1219,10 @@ Die letzte Aktion wurde womöglich nicht vollständig ausgeführt. Speichern Sie
         <message>
             <source>Opening {0} cancelled</source>
             <translation>Öffnen von {0} abgebrochen</translation>
+        </message>
+        <message>
+            <source>Still reading {0}</source>
+            <translation>{0} wird noch gelesen</translation>
         </message>
         <message>
             <source>Cannot open “{0}”</source>
@@ -1151,6 +1423,134 @@ Die letzte Aktion wurde womöglich nicht vollständig ausgeführt. Speichern Sie
         <message>
             <source>USB</source>
             <translation>USB</translation>
+        </message>
+    </context>
+    <context>
+        <name>HistoryPolicy</name>
+        <message>
+            <source>Upload refused</source>
+            <translation>Hochladen abgelehnt</translation>
+        </message>
+        <message>
+            <source>The history database cannot record this upload, and the setting says to refuse uploads then. Nothing was written to the valve.</source>
+            <translation>Die Verlaufsdatenbank kann dieses Hochladen nicht aufzeichnen, und die Einstellung verlangt, dann nicht hochzuladen. In das Ventil wurde nichts geschrieben.</translation>
+        </message>
+        <message>
+            <source>History database unavailable</source>
+            <translation>Verlaufsdatenbank nicht erreichbar</translation>
+        </message>
+        <message>
+            <source>The history database cannot record this upload. Upload anyway and keep the record on this computer until the database is back?
+
+Yes uploads and queues the record; No uploads nothing.</source>
+            <translation>Die Verlaufsdatenbank kann dieses Hochladen nicht aufzeichnen. Trotzdem hochladen und den Eintrag auf diesem Rechner aufbewahren, bis die Datenbank wieder erreichbar ist?
+
+Ja lädt hoch und stellt den Eintrag in die Warteschlange; Nein lädt nichts hoch.</translation>
+        </message>
+    </context>
+    <context>
+        <name>HistoryTableModel</name>
+        <message>
+            <source>No.</source>
+            <translation>Nr.</translation>
+        </message>
+        <message>
+            <source>Time (UTC)</source>
+            <translation>Zeit (UTC)</translation>
+        </message>
+        <message>
+            <source>Operation</source>
+            <translation>Vorgang</translation>
+        </message>
+        <message>
+            <source>Outcome</source>
+            <translation>Ergebnis</translation>
+        </message>
+        <message>
+            <source>Type key</source>
+            <translation>Typenschlüssel</translation>
+        </message>
+        <message>
+            <source>Firmware</source>
+            <translation>Firmware</translation>
+        </message>
+        <message>
+            <source>User, station, link</source>
+            <translation>Benutzer, Station, Verbindung</translation>
+        </message>
+    </context>
+    <context>
+        <name>HistoryWindow</name>
+        <message>
+            <source>History</source>
+            <translation>Verlauf</translation>
+        </message>
+        <message>
+            <source>serial number</source>
+            <translation>Seriennummer</translation>
+        </message>
+        <message>
+            <source>Show</source>
+            <translation>Anzeigen</translation>
+        </message>
+        <message>
+            <source>Valve serial number:</source>
+            <translation>Seriennummer des Ventils:</translation>
+        </message>
+        <message>
+            <source>Compare the two selected records</source>
+            <translation>Die zwei gewählten Einträge vergleichen</translation>
+        </message>
+        <message>
+            <source>Restore into the document</source>
+            <translation>In das Dokument übernehmen</translation>
+        </message>
+        <message>
+            <source>Restore to the valve</source>
+            <translation>In das Ventil zurückschreiben</translation>
+        </message>
+        <message>
+            <source>Export…</source>
+            <translation>Exportieren…</translation>
+        </message>
+        <message>
+            <source>Type a valve's serial number.</source>
+            <translation>Seriennummer eines Ventils eingeben.</translation>
+        </message>
+        <message>
+            <source>Reading the history…</source>
+            <translation>Verlauf wird gelesen…</translation>
+        </message>
+        <message numerus="yes">
+            <source>%n record(s) in {0}</source>
+            <translation>
+                <numerusform>%n Eintrag in {0}</numerusform>
+                <numerusform>%n Einträge in {0}</numerusform>
+            </translation>
+        </message>
+        <message>
+            <source>This record holds no parameter set (the operation did not change the valve's stored parameters).</source>
+            <translation>Dieser Eintrag enthält keinen Parametersatz (der Vorgang hat die gespeicherten Parameter des Ventils nicht geändert).</translation>
+        </message>
+        <message>
+            <source>No. {0}, {1}</source>
+            <translation>Nr. {0}, {1}</translation>
+        </message>
+        <message>
+            <source>Go online with valve {0} first: a record is restored only into the valve it was recorded from.</source>
+            <translation>Zuerst mit Ventil {0} online gehen: ein Eintrag wird nur in das Ventil zurückgeschrieben, von dem er stammt.</translation>
+        </message>
+        <message>
+            <source>Export record</source>
+            <translation>Eintrag exportieren</translation>
+        </message>
+        <message>
+            <source>Parameter files (*.prm);;CSV tables (*.csv)</source>
+            <translation>Parameterdateien (*.prm);;CSV-Tabellen (*.csv)</translation>
+        </message>
+        <message>
+            <source>The record was not exported.</source>
+            <translation>Der Eintrag wurde nicht exportiert.</translation>
         </message>
     </context>
     <context>
@@ -1442,6 +1842,30 @@ Die letzte Aktion wurde womöglich nicht vollständig ausgeführt. Speichern Sie
             <source>Toolbar</source>
             <translation>Werkzeugleiste</translation>
         </message>
+        <message>
+            <source>Co&amp;mpare with file…</source>
+            <translation>Mit Datei &amp;vergleichen…</translation>
+        </message>
+        <message>
+            <source>Compare the parameters with a *.prm file, take chosen values</source>
+            <translation>Die Parameter mit einer *.prm-Datei vergleichen, gewählte Werte übernehmen</translation>
+        </message>
+        <message>
+            <source>&amp;Compare with valve</source>
+            <translation>Mit Ventil &amp;vergleichen</translation>
+        </message>
+        <message>
+            <source>Compare the document with the valve, apply chosen values</source>
+            <translation>Das Dokument mit dem Ventil vergleichen, gewählte Werte übernehmen</translation>
+        </message>
+        <message>
+            <source>&amp;History…</source>
+            <translation>Verlau&amp;f…</translation>
+        </message>
+        <message>
+            <source>Every operation recorded on a valve's parameters</source>
+            <translation>Jeder aufgezeichnete Vorgang an den Parametern eines Ventils</translation>
+        </message>
     </context>
     <context>
         <name>MainStatusBar</name>
@@ -1580,6 +2004,10 @@ Die letzte Aktion wurde womöglich nicht vollständig ausgeführt. Speichern Sie
         <message>
             <source>Valve</source>
             <translation>Ventil</translation>
+        </message>
+        <message>
+            <source>Choose per parameter…</source>
+            <translation>Je Parameter wählen…</translation>
         </message>
     </context>
     <context>
@@ -1872,6 +2300,10 @@ Die letzte Aktion wurde womöglich nicht vollständig ausgeführt. Speichern Sie
             <source>cannot save the file: {0}</source>
             <translation>die Datei kann nicht gespeichert werden: {0}</translation>
         </message>
+        <message>
+            <source>{0}: {1} is ambiguous (a thousands separator?); write the number without one, with '{2}' before the decimals</source>
+            <translation>{0}: {1} ist mehrdeutig (ein Tausendertrennzeichen?); schreiben Sie die Zahl ohne Trennzeichen, mit „{2}“ vor den Nachkommastellen</translation>
+        </message>
     </context>
     <context>
         <name>RampsDialog</name>
@@ -1988,6 +2420,53 @@ Die letzte Aktion wurde womöglich nicht vollständig ausgeführt. Speichern Sie
         <message>
             <source>PRM9 parameter record {0}</source>
             <translation>PRM9-Parameterprotokoll {0}</translation>
+        </message>
+    </context>
+    <context>
+        <name>ReportPage</name>
+        <message>
+            <source>steps of %1 %, a sine sweep of ±%2 % and a triangle over the whole range, about %3 s</source>
+            <translation>Sprünge von %1 %, ein Sinus-Sweep von ±%2 % und ein Dreieck über den ganzen Bereich, etwa %3 s</translation>
+        </message>
+        <message>
+            <source>Result: %1</source>
+            <translation>Ergebnis: %1</translation>
+        </message>
+        <message>
+            <source>Save the test report</source>
+            <translation>Prüfbericht speichern</translation>
+        </message>
+        <message>
+            <source>Cannot write the report: %1</source>
+            <translation>Der Bericht kann nicht geschrieben werden: %1</translation>
+        </message>
+        <message>
+            <source>Acceptance profile (TOML, empty: default):</source>
+            <translation>Abnahmeprofil (TOML, leer: Standard):</translation>
+        </message>
+        <message>
+            <source>Run the end-of-line test</source>
+            <translation>Endprüfung starten</translation>
+        </message>
+        <message>
+            <source>Save PDF and CSV…</source>
+            <translation>PDF und CSV speichern…</translation>
+        </message>
+        <message>
+            <source>Figure</source>
+            <translation>Kennwert</translation>
+        </message>
+        <message>
+            <source>Value</source>
+            <translation>Wert</translation>
+        </message>
+        <message>
+            <source>Limit</source>
+            <translation>Grenze</translation>
+        </message>
+        <message>
+            <source>Result</source>
+            <translation>Ergebnis</translation>
         </message>
     </context>
     <context>
@@ -2156,6 +2635,10 @@ Stellen Sie sicher, dass die Maschine sich gefahrlos bewegen kann. Generator sta
             <translation>Das Ventil hat einen Wert des Sollwertgenerators abgelehnt ({0}): Der Generator wurde gestoppt.</translation>
         </message>
         <message>
+            <source>Tuning and characterization…</source>
+            <translation>Einstellung und Charakterisierung…</translation>
+        </message>
+        <message>
             <source>no reason given</source>
             <translation>ohne Angabe eines Grundes</translation>
         </message>
@@ -2227,6 +2710,37 @@ Jetzt freigeben (NMT Start, Steuerwort 08h → 09h → 0Bh → 0Fh)?</translatio
         <message>
             <source>This type is not recommended for a valve with %1 (manual table 8-4).</source>
             <translation>Dieser Typ wird für ein Ventil mit %1 nicht empfohlen (Anleitung Tabelle 8-4).</translation>
+        </message>
+    </context>
+    <context>
+        <name>StaticPage</name>
+        <message>
+            <source>a triangle over the whole range −100 … 100 %, %1 s</source>
+            <translation>ein Dreieck über den ganzen Bereich −100 … 100 %, %1 s</translation>
+        </message>
+        <message>
+            <source>linearized (preview)</source>
+            <translation>linearisiert (Vorschau)</translation>
+        </message>
+        <message>
+            <source>Gain %1, hysteresis %2 %, linearity error %3 %, dead band %4 %.</source>
+            <translation>Verstärkung %1, Hysterese %2 %, Linearitätsfehler %3 %, Totzone %4 %.</translation>
+        </message>
+        <message>
+            <source>Linearization from the static characteristic</source>
+            <translation>Linearisierung aus der statischen Kennlinie</translation>
+        </message>
+        <message>
+            <source>Triangle period:</source>
+            <translation>Periode des Dreiecks:</translation>
+        </message>
+        <message>
+            <source>Measure the static characteristic</source>
+            <translation>Statische Kennlinie messen</translation>
+        </message>
+        <message>
+            <source>Apply the proposed linearization</source>
+            <translation>Vorgeschlagene Linearisierung übernehmen</translation>
         </message>
     </context>
     <context>
@@ -2332,6 +2846,256 @@ Jetzt freigeben (NMT Start, Steuerwort 08h → 09h → 0Bh → 0Fh)?</translatio
         <message>
             <source>output</source>
             <translation>Ausgang</translation>
+        </message>
+    </context>
+    <context>
+        <name>TuningReport</name>
+        <message>
+            <source>overshoot</source>
+            <translation>Überschwingen</translation>
+        </message>
+        <message>
+            <source>rise time (10–90 %)</source>
+            <translation>Anstiegszeit (10–90 %)</translation>
+        </message>
+        <message>
+            <source>settling time (±2 %)</source>
+            <translation>Ausregelzeit (±2 %)</translation>
+        </message>
+        <message>
+            <source>−3 dB frequency</source>
+            <translation>−3-dB-Frequenz</translation>
+        </message>
+        <message>
+            <source>−90° frequency</source>
+            <translation>−90°-Frequenz</translation>
+        </message>
+        <message>
+            <source>gain</source>
+            <translation>Verstärkung</translation>
+        </message>
+        <message>
+            <source>hysteresis</source>
+            <translation>Hysterese</translation>
+        </message>
+        <message>
+            <source>linearity error</source>
+            <translation>Linearitätsfehler</translation>
+        </message>
+        <message>
+            <source>dead band</source>
+            <translation>Totzone</translation>
+        </message>
+        <message>
+            <source>step %1 %: %2</source>
+            <translation>Sprung %1 %: %2</translation>
+        </message>
+        <message>
+            <source>PASS</source>
+            <translation>BESTANDEN</translation>
+        </message>
+        <message>
+            <source>FAIL</source>
+            <translation>NICHT BESTANDEN</translation>
+        </message>
+        <message>
+            <source>not reached</source>
+            <translation>nicht erreicht</translation>
+        </message>
+        <message>
+            <source>Step response %1 %</source>
+            <translation>Sprungantwort %1 %</translation>
+        </message>
+        <message>
+            <source>time [ms]</source>
+            <translation>Zeit [ms]</translation>
+        </message>
+        <message>
+            <source>setpoint</source>
+            <translation>Sollwert</translation>
+        </message>
+        <message>
+            <source>actual</source>
+            <translation>Istwert</translation>
+        </message>
+        <message>
+            <source>frequency [Hz]</source>
+            <translation>Frequenz [Hz]</translation>
+        </message>
+        <message>
+            <source>Frequency response ±%1 %: magnitude</source>
+            <translation>Frequenzgang ±%1 %: Betrag</translation>
+        </message>
+        <message>
+            <source>magnitude</source>
+            <translation>Betrag</translation>
+        </message>
+        <message>
+            <source>Phase and coherence</source>
+            <translation>Phase und Kohärenz</translation>
+        </message>
+        <message>
+            <source>phase</source>
+            <translation>Phase</translation>
+        </message>
+        <message>
+            <source>coherence ×100</source>
+            <translation>Kohärenz ×100</translation>
+        </message>
+        <message>
+            <source>Static characteristic</source>
+            <translation>Statische Kennlinie</translation>
+        </message>
+        <message>
+            <source>demand [%]</source>
+            <translation>Sollwert [%]</translation>
+        </message>
+        <message>
+            <source>actual [%]</source>
+            <translation>Istwert [%]</translation>
+        </message>
+        <message>
+            <source>rising</source>
+            <translation>steigend</translation>
+        </message>
+        <message>
+            <source>falling</source>
+            <translation>fallend</translation>
+        </message>
+        <message>
+            <source>best line</source>
+            <translation>Ausgleichsgerade</translation>
+        </message>
+        <message>
+            <source>Type key</source>
+            <translation>Typschlüssel</translation>
+        </message>
+        <message>
+            <source>Serial number</source>
+            <translation>Seriennummer</translation>
+        </message>
+        <message>
+            <source>Firmware</source>
+            <translation>Firmware</translation>
+        </message>
+        <message>
+            <source>Date</source>
+            <translation>Datum</translation>
+        </message>
+        <message>
+            <source>Link</source>
+            <translation>Verbindung</translation>
+        </message>
+        <message>
+            <source>Acceptance profile</source>
+            <translation>Abnahmeprofil</translation>
+        </message>
+        <message>
+            <source>Result</source>
+            <translation>Ergebnis</translation>
+        </message>
+        <message>
+            <source>PRM9 test report</source>
+            <translation>PRM9-Prüfbericht</translation>
+        </message>
+        <message>
+            <source>Figure</source>
+            <translation>Kennwert</translation>
+        </message>
+        <message>
+            <source>Value</source>
+            <translation>Wert</translation>
+        </message>
+        <message>
+            <source>Limit</source>
+            <translation>Grenze</translation>
+        </message>
+        <message>
+            <source>Parameter set (raw values)</source>
+            <translation>Parametersatz (Rohwerte)</translation>
+        </message>
+    </context>
+    <context>
+        <name>TuningWindow</name>
+        <message>
+            <source>Running: %1</source>
+            <translation>Läuft: %1</translation>
+        </message>
+        <message>
+            <source>This test moves the spool (and on E04 the actuator): %1.
+
+Make sure the hydraulics are safe for it. Stop ends it at any time and puts the valve back as it was. Start the test?</source>
+            <translation>Dieser Test bewegt den Schieber (und bei E04 den Antrieb): %1.
+
+Stellen Sie sicher, dass die Hydraulik dafür sicher ist. Stopp beendet ihn jederzeit und stellt das Ventil wieder her, wie es war. Test starten?</translation>
+        </message>
+        <message>
+            <source>Tuning</source>
+            <translation>Einstellung</translation>
+        </message>
+        <message>
+            <source>Stopping…</source>
+            <translation>Wird abgebrochen…</translation>
+        </message>
+        <message>
+            <source>Done.</source>
+            <translation>Fertig.</translation>
+        </message>
+        <message>
+            <source>Stopped: %1</source>
+            <translation>Abgebrochen: %1</translation>
+        </message>
+        <message>
+            <source>Accepted: %1</source>
+            <translation>Übernommen: %1</translation>
+        </message>
+        <message>
+            <source>Tuning and characterization</source>
+            <translation>Einstellung und Charakterisierung</translation>
+        </message>
+        <message>
+            <source>Position controller (spool)</source>
+            <translation>Lageregler (Schieber)</translation>
+        </message>
+        <message>
+            <source>Process controller (E04)</source>
+            <translation>Prozessregler (E04)</translation>
+        </message>
+        <message>
+            <source>Loop:</source>
+            <translation>Regelkreis:</translation>
+        </message>
+        <message>
+            <source>Stop</source>
+            <translation>Stopp</translation>
+        </message>
+        <message>
+            <source>Offline: the tests run on an emulated valve with the document's values.</source>
+            <translation>Offline: Die Tests laufen auf einem emulierten Ventil mit den Werten des Dokuments.</translation>
+        </message>
+        <message>
+            <source>Online: the tests move the connected valve.</source>
+            <translation>Online: Die Tests bewegen das angeschlossene Ventil.</translation>
+        </message>
+        <message>
+            <source>Autotune</source>
+            <translation>Autotune</translation>
+        </message>
+        <message>
+            <source>Frequency response</source>
+            <translation>Frequenzgang</translation>
+        </message>
+        <message>
+            <source>Static characteristic</source>
+            <translation>Statische Kennlinie</translation>
+        </message>
+        <message>
+            <source>Test report</source>
+            <translation>Prüfbericht</translation>
+        </message>
+        <message>
+            <source>Ready.</source>
+            <translation>Bereit.</translation>
         </message>
     </context>
     <context>

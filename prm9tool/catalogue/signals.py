@@ -263,8 +263,3 @@ def signals_for(variant: Variant) -> list[Signal]:
 # One rule for every measured value shown (diagram, parameter list, valve status): decimals by
 # unit. Stored parameters keep their own rule: the shortest text that reads back exactly.
 MEASURED_DECIMALS = {"%": 1, "mA": 0, "V": 2, "°C": 1}
-
-
-def format_measured(value: float, unit: str) -> str:
-    """A measured ``value`` in ``unit`` as every view shows it, without the unit: ``24.00``."""
-    return f"{value:.{MEASURED_DECIMALS.get(unit, 1)}f}"

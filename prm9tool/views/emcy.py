@@ -21,6 +21,8 @@ def emcy_text(code: int, fallback: str = "") -> str:
         0x5411: translate("Emcy", "Solenoid A over-current or disconnected"),
         0x5412: translate("Emcy", "Solenoid B over-current or disconnected"),
         0x7300: translate("Emcy", "Internal position sensor error"),
+        0x8100: translate("Emcy", "CANopen communication error (heartbeat, SYNC or RPDO missing)"),
+        0x8210: translate("Emcy", "CANopen RPDO too short: not processed"),
     }
     return texts.get(code) or fallback or translate("Emcy", "Unknown error")
 

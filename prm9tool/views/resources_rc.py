@@ -6,7 +6,7 @@
 from PySide6 import QtCore
 
 qt_resource_data = b"\
-\x00\x00\x12\x1a\
+\x00\x00\x13\xd9\
 <\
 !DOCTYPE html>\x0a<\
 html lang=\x22cs\x22>\x0a\
@@ -142,163 +142,191 @@ slo pro expertn\xc3\
 \xad \xc3\xbarove\xc5\x88.\x0aProg\
 ram ukl\xc3\xa1d\xc3\xa1 pou\
 ze jeho osolen\xc3\xbd\
- hash.</p>\x0a\x0a<h2>\
-Online a offline\
-</h2>\x0a<p>Komunik\
-ace \xe2\x86\x92 HID konf\
-igurace zobraz\xc3\xad\
- ventily p\xc5\x99ipoj\
-en\xc3\xa9 p\xc5\x99es USB a\
- emulovan\xc3\xa9 vent\
-ily;\x0aemulovan\xc3\xbd \
-ventil p\xc5\x99id\xc3\xa1te\
- zad\xc3\xa1n\xc3\xadm typov\
-\xc3\xa9ho kl\xc3\xad\xc4\x8de a v\
-\xc3\xbdrobn\xc3\xadho \xc4\x8d\xc3\xads\
-la. Komunikace \xe2\
-\x86\x92 Re\xc5\xbeim online\
-\x0anav\xc3\xa1\xc5\xbee spojen\
-\xc3\xad. Li\xc5\xa1\xc3\xad-li se\
- otev\xc5\x99en\xc3\xbd z\xc3\xa1z\
-nam parametr\xc5\xaf o\
-d ventilu, progr\
-am zobraz\xc3\xad rozd\
-\xc3\xadly a\x0azept\xc3\xa1 se\
-, zda p\xc5\x99evz\xc3\xadt \
-hodnoty ventilu,\
- odeslat hodnoty\
- dokumentu (na\xc4\x8d\
-ten\xc3\xad do ventilu\
-) nebo\x0azru\xc5\xa1it. \
-V re\xc5\xbeimu online\
- jde ka\xc5\xbed\xc3\xa1 zm\xc4\
-\x9bna ihned do ven\
-tilu i do dokume\
-ntu, v re\xc5\xbeimu o\
-ffline\x0apouze do \
-dokumentu. Ztrat\
-\xc3\xad-li se spojen\xc3\
-\xad s ventilem, pr\
-ogram p\xc5\x99ejde do\
- re\xc5\xbeimu offline\
- a\x0av\xc5\xa1echny hodn\
-oty zachov\xc3\xa1.</p\
->\x0a<p>Hodnoty zm\xc4\
-\x9bn\xc4\x9bn\xc3\xa9 online j\
-sou ve ventilu a\
-ktivn\xc3\xad, ale je\xc5\
-\xa1t\xc4\x9b neulo\xc5\xbeen\xc3\xa9\
-: p\xc5\x99i p\xc5\x99echodu\
- do\x0are\xc5\xbeimu offl\
-ine program nab\xc3\
-\xaddne jejich ulo\xc5\
-\xbeen\xc3\xad. <b>Na\xc4\x8dte\
-n\xc3\xad do ventilu</\
-b> zap\xc3\xad\xc5\xa1e v\xc5\xa1e\
-chny\x0ahodnoty, p\xc5\
-\x99e\xc4\x8dte je zp\xc4\x9bt,\
- porovn\xc3\xa1 a ulo\xc5\
-\xbe\xc3\xad; ulo\xc5\xbe\xc3\xad se \
-jen tehdy, je-li\
- ka\xc5\xbed\xc3\xa1 hodnota\
- ov\xc4\x9b\xc5\x99ena.\x0aP\xc5\x99e\
-d prvn\xc3\xadm na\xc4\x8dte\
-n\xc3\xadm do ventilu \
-program ulo\xc5\xbe\xc3\xad \
-z\xc3\xa1lohu vlastn\xc3\xad\
-ch parametr\xc5\xaf ve\
-ntilu do slo\xc5\xbeky\
-\x0au\xc5\xbeivatelsk\xc3\xbdch\
- dat (<code>back\
-ups/&lt;v\xc3\xbdrobn\xc3\
-\xad \xc4\x8d\xc3\xadslo&gt;/</\
-code>).</p>\x0a<p><\
-b>Restart ventil\
-u</b> a <b>Obnov\
-en\xc3\xad tov\xc3\xa1rn\xc3\xadho\
- nastaven\xc3\xad</b> \
-jsou dovoleny po\
-uze p\xc5\x99i\x0aodpojen\
-\xc3\xa9m hydraulick\xc3\xa9\
-m obvodu; progra\
-m v\xc3\xa1s po\xc5\xbe\xc3\xa1d\xc3\xa1\
- o potvrzen\xc3\xad.</\
-p>\x0a\x0a<h2>Soubory<\
-/h2>\x0a<p>Z\xc3\xa1znamy\
- parametr\xc5\xaf (<co\
-de>*.prm</code>)\
- jsou textov\xc3\xa9 s\
-oubory. Otev\xc5\x99\xc3\xad\
-t, Ulo\xc5\xbeit, Ulo\xc5\
-\xbeit jako,\x0anaposl\
-edy otev\xc5\x99en\xc3\xa9 s\
-oubory a p\xc5\x99eta\xc5\
-\xbeen\xc3\xad my\xc5\xa1\xc3\xad fun\
-guj\xc3\xad obvykl\xc3\xbdm \
-zp\xc5\xafsobem; p\xc5\x99ed\
- ztr\xc3\xa1tou\x0aneulo\xc5\
-\xbeen\xc3\xbdch zm\xc4\x9bn se\
- program zept\xc3\xa1.\
- Ka\xc5\xbedou zm\xc4\x9bnu \
-lze vr\xc3\xa1tit (Ctr\
-l+Z) a znovu pro\
-v\xc3\xa9st\x0a(Ctrl+Y). \
-Soubor \xe2\x86\x92 Tisk \
-a Soubor \xe2\x86\x92 Exp\
-ort do PDF vytvo\
-\xc5\x99\xc3\xad protokol pa\
-rametr\xc5\xaf s typov\
-\xc3\xbdm kl\xc3\xad\xc4\x8dem,\x0av\xc3\
-\xbdrobn\xc3\xadm \xc4\x8d\xc3\xadsle\
-m, firmware, sou\
-borem, datem, \xc3\xba\
-rovn\xc3\xad opr\xc3\xa1vn\xc4\x9b\
-n\xc3\xad, postupov\xc3\xbdm\
- diagramem a v\xc5\xa1\
-emi\x0aparametry s \
-jednotkami.</p>\x0a\
-\x0a<h2>Kl\xc3\xa1vesnice\
-</h2>\x0a<table>\x0a<t\
-r><td>Ctrl+O / C\
-trl+S / Ctrl+Shi\
-ft+S</td><td>Ote\
-v\xc5\x99\xc3\xadt / Ulo\xc5\xbeit\
- / Ulo\xc5\xbeit jako<\
-/td></tr>\x0a<tr><t\
-d>Ctrl+Z / Ctrl+\
-Y</td><td>Zp\xc4\x9bt \
-/ Znovu</td></tr\
->\x0a<tr><td>Ctrl+P\
- / Ctrl+E</td><t\
-d>Tisk / Export \
-do PDF</td></tr>\
-\x0a<tr><td>Ctrl+1 \
-/ Ctrl+2 / Ctrl+\
-3 / Ctrl+4</td><\
-td>Postupov\xc3\xbd di\
-agram / Seznam p\
-arametr\xc5\xaf / Osci\
-loskop / Okno CA\
-Nopen</td></tr>\x0a\
-<tr><td>F5 / Shi\
-ft+F5</td><td>Re\
-\xc5\xbeim online / Re\
-\xc5\xbeim offline</td\
-></tr>\x0a<tr><td>C\
-trl+U / Ctrl+D</\
-td><td>Na\xc4\x8dten\xc3\xad\
- do ventilu / St\
-a\xc5\xbeen\xc3\xad z ventil\
-u</td></tr>\x0a<tr>\
-<td>Ctrl+T / Ctr\
-l+I / Ctrl+H</td\
-><td>V\xc3\xbdb\xc4\x9br ven\
-tilu / Stav vent\
-ilu / HID konfig\
-urace</td></tr>\x0a\
-</table>\x0a</body>\
-\x0a</html>\x0a\
-\x00\x00\x12r\
+ hash.</p>\x0a<p>\xc3\x9a\
+rovn\xc4\x9b opr\xc3\xa1vn\xc4\x9b\
+n\xc3\xad chr\xc3\xa1n\xc3\xad p\xc5\x99\
+ed ne\xc3\xbamysln\xc3\xbdmi\
+ zm\xc4\x9bnami, ne p\xc5\
+\x99ed t\xc3\xadm, kdo m\xc5\
+\xaf\xc5\xbee upravovat n\
+astaven\xc3\xad\x0aprogra\
+mu: odstran\xc4\x9bn\xc3\xad\
+m polo\xc5\xbeky <code\
+>access/expert_p\
+assword</code> z\
+ nastaven\xc3\xad plat\
+\xc3\xad op\xc4\x9bt heslo\x0ap\
+\xc5\x99i dod\xc3\xa1n\xc3\xad. So\
+ubor parametr\xc5\xaf \
+obsahuje v\xc5\xa1echn\
+y hodnoty bez oh\
+ledu na \xc3\xbarove\xc5\x88\
+: pokud u\xc5\xbeivate\
+l na\x0az\xc3\xa1kladn\xc3\xad \
+\xc3\xbarovni odes\xc3\xadl\xc3\
+\xa1 dokument, jeho\
+\xc5\xbe hodnoty exper\
+tn\xc3\xad \xc3\xbarovn\xc4\x9b se\
+ li\xc5\xa1\xc3\xad od hodno\
+t ventilu,\x0aprogr\
+am se nejprve ze\
+pt\xc3\xa1.</p>\x0a\x0a<h2>O\
+nline a offline<\
+/h2>\x0a<p>Komunika\
+ce \xe2\x86\x92 HID konfi\
+gurace zobraz\xc3\xad \
+ventily p\xc5\x99ipoje\
+n\xc3\xa9 p\xc5\x99es USB a \
+emulovan\xc3\xa9 venti\
+ly;\x0aemulovan\xc3\xbd v\
+entil p\xc5\x99id\xc3\xa1te \
+zad\xc3\xa1n\xc3\xadm typov\xc3\
+\xa9ho kl\xc3\xad\xc4\x8de a v\xc3\
+\xbdrobn\xc3\xadho \xc4\x8d\xc3\xadsl\
+a. Komunikace \xe2\x86\
+\x92 Re\xc5\xbeim online\x0a\
+nav\xc3\xa1\xc5\xbee spojen\xc3\
+\xad. Li\xc5\xa1\xc3\xad-li se \
+otev\xc5\x99en\xc3\xbd z\xc3\xa1zn\
+am parametr\xc5\xaf od\
+ ventilu, progra\
+m zobraz\xc3\xad rozd\xc3\
+\xadly a\x0azept\xc3\xa1 se,\
+ zda p\xc5\x99evz\xc3\xadt h\
+odnoty ventilu, \
+odeslat hodnoty \
+dokumentu (na\xc4\x8dt\
+en\xc3\xad do ventilu)\
+ nebo\x0azru\xc5\xa1it. V\
+ re\xc5\xbeimu online \
+jde ka\xc5\xbed\xc3\xa1 zm\xc4\x9b\
+na ihned do vent\
+ilu i do dokumen\
+tu, v re\xc5\xbeimu of\
+fline\x0apouze do d\
+okumentu. Ztrat\xc3\
+\xad-li se spojen\xc3\xad\
+ s ventilem, pro\
+gram p\xc5\x99ejde do \
+re\xc5\xbeimu offline \
+a\x0av\xc5\xa1echny hodno\
+ty zachov\xc3\xa1.</p>\
+\x0a<p>Hodnoty zm\xc4\x9b\
+n\xc4\x9bn\xc3\xa9 online js\
+ou ve ventilu ak\
+tivn\xc3\xad, ale je\xc5\xa1\
+t\xc4\x9b neulo\xc5\xbeen\xc3\xa9:\
+ p\xc5\x99i p\xc5\x99echodu \
+do\x0are\xc5\xbeimu offli\
+ne program nab\xc3\xad\
+dne jejich ulo\xc5\xbe\
+en\xc3\xad. <b>Na\xc4\x8dten\
+\xc3\xad do ventilu</b\
+> zap\xc3\xad\xc5\xa1e v\xc5\xa1ec\
+hny\x0ahodnoty, p\xc5\x99\
+e\xc4\x8dte je zp\xc4\x9bt, \
+porovn\xc3\xa1 a ulo\xc5\xbe\
+\xc3\xad; ulo\xc5\xbe\xc3\xad se j\
+en tehdy, je-li \
+ka\xc5\xbed\xc3\xa1 hodnota \
+ov\xc4\x9b\xc5\x99ena.\x0aP\xc5\x99ed\
+ prvn\xc3\xadm na\xc4\x8dten\
+\xc3\xadm do ventilu p\
+rogram ulo\xc5\xbe\xc3\xad z\
+\xc3\xa1lohu vlastn\xc3\xadc\
+h parametr\xc5\xaf ven\
+tilu do slo\xc5\xbeky\x0a\
+u\xc5\xbeivatelsk\xc3\xbdch \
+dat (<code>backu\
+ps/&lt;v\xc3\xbdrobn\xc3\xad\
+ \xc4\x8d\xc3\xadslo&gt;/</c\
+ode>).</p>\x0a<p><b\
+>Restart ventilu\
+</b> a <b>Obnove\
+n\xc3\xad tov\xc3\xa1rn\xc3\xadho \
+nastaven\xc3\xad</b> j\
+sou dovoleny pou\
+ze p\xc5\x99i\x0aodpojen\xc3\
+\xa9m hydraulick\xc3\xa9m\
+ obvodu; program\
+ v\xc3\xa1s po\xc5\xbe\xc3\xa1d\xc3\xa1 \
+o potvrzen\xc3\xad.</p\
+>\x0a\x0a<h2>Soubory</\
+h2>\x0a<p>Z\xc3\xa1znamy \
+parametr\xc5\xaf (<cod\
+e>*.prm</code>) \
+jsou textov\xc3\xa9 so\
+ubory. Otev\xc5\x99\xc3\xadt\
+, Ulo\xc5\xbeit, Ulo\xc5\xbe\
+it jako,\x0anaposle\
+dy otev\xc5\x99en\xc3\xa9 so\
+ubory a p\xc5\x99eta\xc5\xbe\
+en\xc3\xad my\xc5\xa1\xc3\xad fung\
+uj\xc3\xad obvykl\xc3\xbdm z\
+p\xc5\xafsobem; p\xc5\x99ed \
+ztr\xc3\xa1tou\x0aneulo\xc5\xbe\
+en\xc3\xbdch zm\xc4\x9bn se \
+program zept\xc3\xa1. \
+Ka\xc5\xbedou zm\xc4\x9bnu l\
+ze vr\xc3\xa1tit (Ctrl\
++Z) a znovu prov\
+\xc3\xa9st\x0a(Ctrl+Y). S\
+oubor \xe2\x86\x92 Tisk a\
+ Soubor \xe2\x86\x92 Expo\
+rt do PDF vytvo\xc5\
+\x99\xc3\xad protokol par\
+ametr\xc5\xaf s typov\xc3\
+\xbdm kl\xc3\xad\xc4\x8dem,\x0av\xc3\xbd\
+robn\xc3\xadm \xc4\x8d\xc3\xadslem\
+, firmware, soub\
+orem, datem, \xc3\xbar\
+ovn\xc3\xad opr\xc3\xa1vn\xc4\x9bn\
+\xc3\xad, postupov\xc3\xbdm \
+diagramem a v\xc5\xa1e\
+mi\x0aparametry s j\
+ednotkami.</p>\x0a\x0a\
+<h2>Kl\xc3\xa1vesnice<\
+/h2>\x0a<table>\x0a<tr\
+><td>Ctrl+O / Ct\
+rl+S / Ctrl+Shif\
+t+S</td><td>Otev\
+\xc5\x99\xc3\xadt / Ulo\xc5\xbeit \
+/ Ulo\xc5\xbeit jako</\
+td></tr>\x0a<tr><td\
+>Ctrl+Z / Ctrl+Y\
+</td><td>Zp\xc4\x9bt /\
+ Znovu</td></tr>\
+\x0a<tr><td>Ctrl+P \
+/ Ctrl+E</td><td\
+>Tisk / Export d\
+o PDF</td></tr>\x0a\
+<tr><td>Ctrl+1 /\
+ Ctrl+2 / Ctrl+3\
+ / Ctrl+4</td><t\
+d>Postupov\xc3\xbd dia\
+gram / Seznam pa\
+rametr\xc5\xaf / Oscil\
+oskop / Okno CAN\
+open</td></tr>\x0a<\
+tr><td>F5 / Shif\
+t+F5</td><td>Re\xc5\
+\xbeim online / Re\xc5\
+\xbeim offline</td>\
+</tr>\x0a<tr><td>Ct\
+rl+U / Ctrl+D</t\
+d><td>Na\xc4\x8dten\xc3\xad \
+do ventilu / Sta\
+\xc5\xbeen\xc3\xad z ventilu\
+</td></tr>\x0a<tr><\
+td>Ctrl+T / Ctrl\
++I / Ctrl+H</td>\
+<td>V\xc3\xbdb\xc4\x9br vent\
+ilu / Stav venti\
+lu / HID konfigu\
+race</td></tr>\x0a<\
+/table>\x0a</body>\x0a\
+</html>\x0a\
+\x00\x00\x14Z\
 <\
 !DOCTYPE html>\x0a<\
 html lang=\x22de\x22>\x0a\
@@ -438,165 +466,195 @@ ndern. Das Progr\
 amm speichert nu\
 r einen\x0agesalzen\
 en Hash davon.</\
-p>\x0a\x0a<h2>Online u\
-nd offline</h2>\x0a\
-<p>Kommunikation\
- \xe2\x86\x92 HID-Konfigu\
-ration listet di\
-e \xc3\xbcber USB ange\
-schlossenen und \
-die emulierten\x0aV\
-entile; ein emul\
-iertes Ventil f\xc3\
-\xbcgen Sie mit Typ\
-schl\xc3\xbcssel und S\
-eriennummer hinz\
-u.\x0aKommunikation\
- \xe2\x86\x92 Online-Modu\
-s verbindet. Wei\
-cht der ge\xc3\xb6ffne\
-te Parametersatz\
- vom Ventil ab,\x0a\
-zeigt das Progra\
-mm die Unterschi\
-ede und fragt, o\
-b die Werte des \
-Ventils \xc3\xbcbernom\
-men, die\x0aWerte d\
-es Dokuments ges\
-endet (Hochladen\
-) oder abgebroch\
-en werden soll. \
-Online geht jede\
-\x0a\xc3\x84nderung sofor\
-t an das Ventil \
-und in das Dokum\
-ent, offline nur\
- in das Dokument\
-. Geht die\x0aVerbi\
-ndung verloren, \
-schaltet das Pro\
-gramm auf offlin\
-e und beh\xc3\xa4lt al\
-le Werte.</p>\x0a<p\
->Online ge\xc3\xa4nder\
-te Werte sind im\
- Ventil aktiv, a\
-ber noch nicht g\
-espeichert: beim\
- Wechsel\x0aauf off\
-line bietet das \
-Programm an, sie\
- zu speichern. <\
-b>In das Ventil \
-hochladen</b>\x0asc\
-hreibt alle Wert\
-e, liest sie zur\
-\xc3\xbcck, vergleicht\
- und speichert s\
-ie; gespeichert \
-wird nur,\x0awenn j\
-eder Wert best\xc3\xa4\
-tigt wurde. Vor \
-dem ersten Hochl\
-aden in ein Vent\
-il sichert das\x0aP\
-rogramm dessen e\
-igene Parameter \
-im Benutzerdaten\
-ordner (<code>ba\
-ckups/&lt;Serien\
-nummer&gt;/</cod\
-e>).</p>\x0a<p><b>V\
-entil neu starte\
-n</b> und <b>Wer\
-kseinstellungen \
-wiederherstellen\
-</b> sind nur be\
-i\x0agetrennter Hyd\
-raulik erlaubt; \
-das Programm l\xc3\xa4\
-sst Sie das best\
-\xc3\xa4tigen.</p>\x0a\x0a<h\
-2>Dateien</h2>\x0a<\
-p>Parameterdatei\
-en (<code>*.prm<\
-/code>) sind Tex\
-tdateien. \xc3\x96ffne\
-n, Speichern, Sp\
-eichern\x0aunter, d\
-ie zuletzt ge\xc3\xb6f\
-fneten Dateien u\
-nd Drag &amp; Dr\
-op funktionieren\
- wie gewohnt; vo\
-r dem\x0aVerlust un\
-gespeicherter \xc3\x84\
-nderungen fragt \
-das Programm nac\
-h. Jede \xc3\x84nderun\
-g l\xc3\xa4sst sich\x0ar\xc3\
-\xbcckg\xc3\xa4ngig mache\
-n (Strg+Z) und w\
-iederherstellen \
-(Strg+Y). Datei \
-\xe2\x86\x92 Drucken und \
-Datei \xe2\x86\x92 PDF\x0aex\
-portieren erzeug\
-en ein Parameter\
-protokoll mit Ty\
-pschl\xc3\xbcssel, Ser\
-iennummer, Firmw\
-are, Datei,\x0aDatu\
-m, Berechtigungs\
-stufe, dem Ablau\
-fdiagramm und al\
-len Parametern m\
-it Einheit.</p>\x0a\
-\x0a<h2>Tastatur</h\
-2>\x0a<table>\x0a<tr><\
-td>Strg+O / Strg\
-+S / Strg+Umscha\
-lt+S</td><td>\xc3\x96f\
-fnen / Speichern\
- / Speichern unt\
-er</td></tr>\x0a<tr\
-><td>Strg+Z / St\
-rg+Y</td><td>R\xc3\xbc\
-ckg\xc3\xa4ngig / Wied\
-erherstellen</td\
-></tr>\x0a<tr><td>S\
-trg+P / Strg+E</\
-td><td>Drucken /\
- PDF exportieren\
-</td></tr>\x0a<tr><\
-td>Strg+1 / Strg\
-+2 / Strg+3 / St\
-rg+4</td><td>Abl\
-aufdiagramm / Pa\
-rameterliste / O\
-szilloskop / CAN\
-open-Fenster</td\
-></tr>\x0a<tr><td>F\
-5 / Umschalt+F5<\
-/td><td>Online /\
- Offline</td></t\
+p>\x0a<p>Die Berech\
+tigungsstufen sc\
+h\xc3\xbctzen vor vers\
+ehentlichen \xc3\x84nd\
+erungen, nicht v\
+or jemandem, der\
+ die\x0aEinstellung\
+en des Programms\
+ bearbeiten kann\
+: Wird der Eintr\
+ag\x0a<code>access/\
+expert_password<\
+/code> aus den E\
+instellungen ent\
+fernt, gilt wied\
+er das Passwort\x0a\
+des Auslieferung\
+szustands. Eine \
+Parameterdatei e\
+nth\xc3\xa4lt alle Wer\
+te, unabh\xc3\xa4ngig \
+von der Stufe:\x0aS\
+endet ein Benutz\
+er der Stufe Bas\
+is ein Dokument,\
+ dessen Experten\
+werte von denen \
+des Ventils\x0aabwe\
+ichen, fragt das\
+ Programm zuerst\
+ nach.</p>\x0a\x0a<h2>\
+Online und offli\
+ne</h2>\x0a<p>Kommu\
+nikation \xe2\x86\x92 HID\
+-Konfiguration l\
+istet die \xc3\xbcber \
+USB angeschlosse\
+nen und die emul\
+ierten\x0aVentile; \
+ein emuliertes V\
+entil f\xc3\xbcgen Sie\
+ mit Typschl\xc3\xbcss\
+el und Seriennum\
+mer hinzu.\x0aKommu\
+nikation \xe2\x86\x92 Onl\
+ine-Modus verbin\
+det. Weicht der \
+ge\xc3\xb6ffnete Param\
+etersatz vom Ven\
+til ab,\x0azeigt da\
+s Programm die U\
+nterschiede und \
+fragt, ob die We\
+rte des Ventils \
+\xc3\xbcbernommen, die\
+\x0aWerte des Dokum\
+ents gesendet (H\
+ochladen) oder a\
+bgebrochen werde\
+n soll. Online g\
+eht jede\x0a\xc3\x84nderu\
+ng sofort an das\
+ Ventil und in d\
+as Dokument, off\
+line nur in das \
+Dokument. Geht d\
+ie\x0aVerbindung ve\
+rloren, schaltet\
+ das Programm au\
+f offline und be\
+h\xc3\xa4lt alle Werte\
+.</p>\x0a<p>Online \
+ge\xc3\xa4nderte Werte\
+ sind im Ventil \
+aktiv, aber noch\
+ nicht gespeiche\
+rt: beim Wechsel\
+\x0aauf offline bie\
+tet das Programm\
+ an, sie zu spei\
+chern. <b>In das\
+ Ventil hochlade\
+n</b>\x0aschreibt a\
+lle Werte, liest\
+ sie zur\xc3\xbcck, ve\
+rgleicht und spe\
+ichert sie; gesp\
+eichert wird nur\
+,\x0awenn jeder Wer\
+t best\xc3\xa4tigt wur\
+de. Vor dem erst\
+en Hochladen in \
+ein Ventil siche\
+rt das\x0aProgramm \
+dessen eigene Pa\
+rameter im Benut\
+zerdatenordner (\
+<code>backups/&l\
+t;Seriennummer&g\
+t;/</code>).</p>\
+\x0a<p><b>Ventil ne\
+u starten</b> un\
+d <b>Werkseinste\
+llungen wiederhe\
+rstellen</b> sin\
+d nur bei\x0agetren\
+nter Hydraulik e\
+rlaubt; das Prog\
+ramm l\xc3\xa4sst Sie \
+das best\xc3\xa4tigen.\
+</p>\x0a\x0a<h2>Dateie\
+n</h2>\x0a<p>Parame\
+terdateien (<cod\
+e>*.prm</code>) \
+sind Textdateien\
+. \xc3\x96ffnen, Speic\
+hern, Speichern\x0a\
+unter, die zulet\
+zt ge\xc3\xb6ffneten D\
+ateien und Drag \
+&amp; Drop funkt\
+ionieren wie gew\
+ohnt; vor dem\x0aVe\
+rlust ungespeich\
+erter \xc3\x84nderunge\
+n fragt das Prog\
+ramm nach. Jede \
+\xc3\x84nderung l\xc3\xa4sst\
+ sich\x0ar\xc3\xbcckg\xc3\xa4ng\
+ig machen (Strg+\
+Z) und wiederher\
+stellen (Strg+Y)\
+. Datei \xe2\x86\x92 Druc\
+ken und Datei \xe2\x86\
+\x92 PDF\x0aexportiere\
+n erzeugen ein P\
+arameterprotokol\
+l mit Typschl\xc3\xbcs\
+sel, Seriennumme\
+r, Firmware, Dat\
+ei,\x0aDatum, Berec\
+htigungsstufe, d\
+em Ablaufdiagram\
+m und allen Para\
+metern mit Einhe\
+it.</p>\x0a\x0a<h2>Tas\
+tatur</h2>\x0a<tabl\
+e>\x0a<tr><td>Strg+\
+O / Strg+S / Str\
+g+Umschalt+S</td\
+><td>\xc3\x96ffnen / S\
+peichern / Speic\
+hern unter</td><\
+/tr>\x0a<tr><td>Str\
+g+Z / Strg+Y</td\
+><td>R\xc3\xbcckg\xc3\xa4ngi\
+g / Wiederherste\
+llen</td></tr>\x0a<\
+tr><td>Strg+P / \
+Strg+E</td><td>D\
+rucken / PDF exp\
+ortieren</td></t\
 r>\x0a<tr><td>Strg+\
-U / Strg+D</td><\
-td>In das Ventil\
- hochladen / Aus\
- dem Ventil heru\
-nterladen</td></\
-tr>\x0a<tr><td>Strg\
-+T / Strg+I / St\
-rg+H</td><td>Ven\
-tilauswahl / Ven\
-tilstatus / HID-\
-Konfiguration</t\
-d></tr>\x0a</table>\
-\x0a</body>\x0a</html>\
-\x0a\
-\x00\x00\x10\x10\
+1 / Strg+2 / Str\
+g+3 / Strg+4</td\
+><td>Ablaufdiagr\
+amm / Parameterl\
+iste / Oszillosk\
+op / CANopen-Fen\
+ster</td></tr>\x0a<\
+tr><td>F5 / Umsc\
+halt+F5</td><td>\
+Online / Offline\
+</td></tr>\x0a<tr><\
+td>Strg+U / Strg\
++D</td><td>In da\
+s Ventil hochlad\
+en / Aus dem Ven\
+til herunterlade\
+n</td></tr>\x0a<tr>\
+<td>Strg+T / Str\
+g+I / Strg+H</td\
+><td>Ventilauswa\
+hl / Ventilstatu\
+s / HID-Konfigur\
+ation</td></tr>\x0a\
+</table>\x0a</body>\
+\x0a</html>\x0a\
+\x00\x00\x11\x8b\
 <\
 !DOCTYPE html>\x0a<\
 html lang=\x22en\x22>\x0a\
@@ -718,143 +776,167 @@ vel with View \xe2\x86\
  password. The p\
 rogram keeps onl\
 y a\x0asalted hash \
-of it.</p>\x0a\x0a<h2>\
-Online and offli\
-ne</h2>\x0a<p>Commu\
-nication \xe2\x86\x92 HID\
- configuration l\
-ists the valves \
-connected over U\
-SB and the emula\
-ted\x0avalves; add \
-an emulated valv\
-e with its type \
-key and serial n\
-umber. Communica\
-tion \xe2\x86\x92 Online\x0a\
-mode connects. I\
-f the open param\
-eter set differs\
- from the valve'\
-s, the program l\
-ists the\x0adiffere\
-nces and asks wh\
-ether to take th\
-e valve's values\
-, send the docum\
-ent's values\x0a(up\
-load) or cancel.\
- Online, every c\
-hange goes to th\
-e valve at once \
-and into the doc\
-ument;\x0aoffline, \
-into the documen\
-t only. If the v\
-alve is lost, th\
-e program goes o\
-ffline and keeps\
-\x0aevery value.</p\
->\x0a<p>Values chan\
-ged online are a\
-ctive in the val\
-ve but not yet s\
-tored: going off\
-line offers to\x0as\
-tore them. <b>Up\
-load to valve</b\
-> writes all val\
-ues, reads them \
-back, compares a\
-nd stores\x0athem; \
-nothing is store\
-d unless every v\
-alue was verifie\
-d. Before the fi\
-rst upload to a \
-valve\x0athe progra\
-m saves a backup\
- of the valve's \
-own parameters i\
-n the user data \
-folder\x0a(<code>ba\
-ckups/&lt;serial\
-&gt;/</code>).</\
-p>\x0a<p><b>Restart\
- valve</b> and <\
-b>Restore factor\
-y values</b> are\
- allowed only wi\
-th the\x0ahydraulic\
-s disconnected; \
-the program asks\
- you to confirm \
-this.</p>\x0a\x0a<h2>F\
-iles</h2>\x0a<p>Par\
-ameter files (<c\
-ode>*.prm</code>\
-) are text files\
-. Open, Save, Sa\
-ve As, the recen\
-t\x0afiles and drag\
- and drop work a\
-s usual; the pro\
-gram asks before\
- unsaved changes\
- are lost.\x0aEvery\
- change can be u\
-ndone (Ctrl+Z) a\
-nd redone (Ctrl+\
-Y). File \xe2\x86\x92 Pri\
-nt and File \xe2\x86\x92 \
-Export PDF\x0aprodu\
-ce a parameter r\
-ecord with type \
-key, serial numb\
-er, firmware, fi\
-le, date, access\
- level,\x0athe flow\
- diagram and eve\
-ry parameter wit\
-h its unit.</p>\x0a\
-\x0a<h2>Keyboard</h\
-2>\x0a<table>\x0a<tr><\
-td>Ctrl+O / Ctrl\
-+S / Ctrl+Shift+\
-S</td><td>Open /\
- Save / Save As<\
-/td></tr>\x0a<tr><t\
-d>Ctrl+Z / Ctrl+\
-Y</td><td>Undo /\
- Redo</td></tr>\x0a\
-<tr><td>Ctrl+P /\
- Ctrl+E</td><td>\
-Print / Export P\
-DF</td></tr>\x0a<tr\
-><td>Ctrl+1 / Ct\
-rl+2 / Ctrl+3 / \
-Ctrl+4</td><td>F\
-low diagram / Pa\
-rameter list / O\
-scilloscope / CA\
-Nopen window</td\
-></tr>\x0a<tr><td>F\
-5 / Shift+F5</td\
-><td>Online / Of\
-fline</td></tr>\x0a\
-<tr><td>Ctrl+U /\
- Ctrl+D</td><td>\
-Upload to valve \
-/ Download from \
-valve</td></tr>\x0a\
-<tr><td>Ctrl+T /\
- Ctrl+I / Ctrl+H\
-</td><td>Valve s\
-election / Valve\
- status / HID co\
-nfiguration</td>\
-</tr>\x0a</table>\x0a<\
-/body>\x0a</html>\x0a\
+of it.</p>\x0a<p>Th\
+e access levels \
+guard against ac\
+cidental changes\
+, not against so\
+meone who can ed\
+it the\x0aprogram's\
+ settings: remov\
+ing the entry <c\
+ode>access/exper\
+t_password</code\
+> from the setti\
+ngs\x0abrings back \
+the delivered pa\
+ssword. A parame\
+ter file carries\
+ every value wha\
+tever the level:\
+\x0aat Basic level,\
+ sending a docum\
+ent whose Expert\
+-level values di\
+ffer from the va\
+lve's asks\x0afirst\
+.</p>\x0a\x0a<h2>Onlin\
+e and offline</h\
+2>\x0a<p>Communicat\
+ion \xe2\x86\x92 HID conf\
+iguration lists \
+the valves conne\
+cted over USB an\
+d the emulated\x0av\
+alves; add an em\
+ulated valve wit\
+h its type key a\
+nd serial number\
+. Communication \
+\xe2\x86\x92 Online\x0amode \
+connects. If the\
+ open parameter \
+set differs from\
+ the valve's, th\
+e program lists \
+the\x0adifferences \
+and asks whether\
+ to take the val\
+ve's values, sen\
+d the document's\
+ values\x0a(upload)\
+ or cancel. Onli\
+ne, every change\
+ goes to the val\
+ve at once and i\
+nto the document\
+;\x0aoffline, into \
+the document onl\
+y. If the valve \
+is lost, the pro\
+gram goes offlin\
+e and keeps\x0aever\
+y value.</p>\x0a<p>\
+Values changed o\
+nline are active\
+ in the valve bu\
+t not yet stored\
+: going offline \
+offers to\x0astore \
+them. <b>Upload \
+to valve</b> wri\
+tes all values, \
+reads them back,\
+ compares and st\
+ores\x0athem; nothi\
+ng is stored unl\
+ess every value \
+was verified. Be\
+fore the first u\
+pload to a valve\
+\x0athe program sav\
+es a backup of t\
+he valve's own p\
+arameters in the\
+ user data folde\
+r\x0a(<code>backups\
+/&lt;serial&gt;/\
+</code>).</p>\x0a<p\
+><b>Restart valv\
+e</b> and <b>Res\
+tore factory val\
+ues</b> are allo\
+wed only with th\
+e\x0ahydraulics dis\
+connected; the p\
+rogram asks you \
+to confirm this.\
+</p>\x0a\x0a<h2>Files<\
+/h2>\x0a<p>Paramete\
+r files (<code>*\
+.prm</code>) are\
+ text files. Ope\
+n, Save, Save As\
+, the recent\x0afil\
+es and drag and \
+drop work as usu\
+al; the program \
+asks before unsa\
+ved changes are \
+lost.\x0aEvery chan\
+ge can be undone\
+ (Ctrl+Z) and re\
+done (Ctrl+Y). F\
+ile \xe2\x86\x92 Print an\
+d File \xe2\x86\x92 Expor\
+t PDF\x0aproduce a \
+parameter record\
+ with type key, \
+serial number, f\
+irmware, file, d\
+ate, access leve\
+l,\x0athe flow diag\
+ram and every pa\
+rameter with its\
+ unit.</p>\x0a\x0a<h2>\
+Keyboard</h2>\x0a<t\
+able>\x0a<tr><td>Ct\
+rl+O / Ctrl+S / \
+Ctrl+Shift+S</td\
+><td>Open / Save\
+ / Save As</td><\
+/tr>\x0a<tr><td>Ctr\
+l+Z / Ctrl+Y</td\
+><td>Undo / Redo\
+</td></tr>\x0a<tr><\
+td>Ctrl+P / Ctrl\
++E</td><td>Print\
+ / Export PDF</t\
+d></tr>\x0a<tr><td>\
+Ctrl+1 / Ctrl+2 \
+/ Ctrl+3 / Ctrl+\
+4</td><td>Flow d\
+iagram / Paramet\
+er list / Oscill\
+oscope / CANopen\
+ window</td></tr\
+>\x0a<tr><td>F5 / S\
+hift+F5</td><td>\
+Online / Offline\
+</td></tr>\x0a<tr><\
+td>Ctrl+U / Ctrl\
++D</td><td>Uploa\
+d to valve / Dow\
+nload from valve\
+</td></tr>\x0a<tr><\
+td>Ctrl+T / Ctrl\
++I / Ctrl+H</td>\
+<td>Valve select\
+ion / Valve stat\
+us / HID configu\
+ration</td></tr>\
+\x0a</table>\x0a</body\
+>\x0a</html>\x0a\
 \x00\x00\x01\xc2\
 <\
 svg xmlns=\x22http:\
@@ -1293,31 +1375,28 @@ qt_resource_struct = b"\
 \x00\x00\x00\x00\x00\x02\x00\x00\x00\x02\x00\x00\x00\x01\
 \x00\x00\x00\x10\x00\x02\x00\x00\x00\x03\x00\x00\x00\x10\
 \x00\x00\x00\x00\x00\x02\x00\x00\x00\x0d\x00\x00\x00\x03\
-\x00\x00\x00\xfc\x00\x00\x00\x00\x00\x01\x00\x00<\x0c\
-\x00\x00\x00\x92\x00\x00\x00\x00\x00\x01\x00\x006n\
-\x00\x00\x01\x9e\x00\x00\x00\x00\x00\x01\x00\x00FB\
-\x00\x00\x01\x16\x00\x00\x00\x00\x00\x01\x00\x00=9\
-\x00\x00\x00x\x00\x00\x00\x00\x00\x01\x00\x004\xa8\
-\x00\x00\x01\xba\x00\x00\x00\x00\x00\x01\x00\x00G\xda\
-\x00\x00\x01.\x00\x00\x00\x00\x00\x01\x00\x00?\x08\
-\x00\x00\x01\x80\x00\x00\x00\x00\x00\x01\x00\x00D\x96\
-\x00\x00\x00\xaa\x00\x00\x00\x00\x00\x01\x00\x008\x14\
-\x00\x00\x01J\x00\x00\x00\x00\x00\x01\x00\x00@\xd1\
-\x00\x00\x00\xc6\x00\x00\x00\x00\x00\x01\x00\x009\x11\
-\x00\x00\x00\xe2\x00\x00\x00\x00\x00\x01\x00\x00:\xca\
-\x00\x00\x01^\x00\x00\x00\x00\x00\x01\x00\x00CU\
+\x00\x00\x00\xfc\x00\x00\x00\x00\x00\x01\x00\x00A.\
+\x00\x00\x00\x92\x00\x00\x00\x00\x00\x01\x00\x00;\x90\
+\x00\x00\x01\x9e\x00\x00\x00\x00\x00\x01\x00\x00Kd\
+\x00\x00\x01\x16\x00\x00\x00\x00\x00\x01\x00\x00B[\
+\x00\x00\x00x\x00\x00\x00\x00\x00\x01\x00\x009\xca\
+\x00\x00\x01\xba\x00\x00\x00\x00\x00\x01\x00\x00L\xfc\
+\x00\x00\x01.\x00\x00\x00\x00\x00\x01\x00\x00D*\
+\x00\x00\x01\x80\x00\x00\x00\x00\x00\x01\x00\x00I\xb8\
+\x00\x00\x00\xaa\x00\x00\x00\x00\x00\x01\x00\x00=6\
+\x00\x00\x01J\x00\x00\x00\x00\x00\x01\x00\x00E\xf3\
+\x00\x00\x00\xc6\x00\x00\x00\x00\x00\x01\x00\x00>3\
+\x00\x00\x00\xe2\x00\x00\x00\x00\x00\x01\x00\x00?\xec\
+\x00\x00\x01^\x00\x00\x00\x00\x00\x01\x00\x00Hw\
 \x00\x00\x00\x1e\x00\x00\x00\x00\x00\x01\x00\x00\x00\x00\
-\x00\x00\x00<\x00\x00\x00\x00\x00\x01\x00\x00\x12\x1e\
-\x00\x00\x00Z\x00\x00\x00\x00\x00\x01\x00\x00$\x94\
+\x00\x00\x00<\x00\x00\x00\x00\x00\x01\x00\x00\x13\xdd\
+\x00\x00\x00Z\x00\x00\x00\x00\x00\x01\x00\x00(;\
 "
-
 
 def qInitResources():
     QtCore.qRegisterResourceData(0x01, qt_resource_struct, qt_resource_name, qt_resource_data)
 
-
 def qCleanupResources():
     QtCore.qUnregisterResourceData(0x01, qt_resource_struct, qt_resource_name, qt_resource_data)
-
 
 qInitResources()

@@ -18,12 +18,13 @@ from collections.abc import Callable
 from pathlib import Path
 
 import numpy as np
-from PySide6.QtCore import QEvent, Qt, QTimer
+from PySide6.QtCore import QEvent, Qt, QTimer, Signal
 from PySide6.QtGui import QCloseEvent, QHideEvent, QImageWriter, QShowEvent
 from PySide6.QtWidgets import (
     QFileDialog,
     QGridLayout,
     QLabel,
+    QPushButton,
     QTabWidget,
     QVBoxLayout,
     QWidget,
@@ -50,6 +51,8 @@ ENABLEABLE = (Blocker.WAITING_FOR_MASTER, Blocker.DISABLED, Blocker.HOLD, Blocke
 
 class ScopeWidget(QWidget):
     """Three-channel oscilloscope on the valve's measuring points."""
+
+    tuning_requested = Signal()  # "Tuning and characterization…" (the main window opens it)
 
     def __init__(
         self,
@@ -93,6 +96,9 @@ class ScopeWidget(QWidget):
         right = QVBoxLayout()
         right.addWidget(self.channels, 1)
         right.addWidget(self.readouts)
+        self.tuning_button = QPushButton(self.tr("Tuning and characterization…"))
+        self.tuning_button.clicked.connect(self.tuning_requested)
+        right.addWidget(self.tuning_button)
         grid = QGridLayout(self)
         grid.addWidget(self.plot, 0, 0)
         grid.addLayout(right, 0, 1)
@@ -467,6 +473,7 @@ class ScopeWidget(QWidget):
                 panel.retranslate()
             self.step_panel.retranslate()
             self.generator_panel.retranslate()
+            self.tuning_button.setText(self.tr("Tuning and characterization…"))
             for tab, readout in enumerate((self.cursor_panel, self.step_panel)):
                 self.readouts.setTabText(tab, readout.windowTitle())
             self._align_sections()

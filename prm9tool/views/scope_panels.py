@@ -23,7 +23,7 @@ from PySide6.QtWidgets import (
 
 from prm9tool.catalogue.signals import MAX_CHANNELS
 from prm9tool.catalogue.signals import Signal as MeasuringPoint
-from prm9tool.i18n import text
+from prm9tool.i18n import format_significant, text
 from prm9tool.scope import RATES_HZ, WINDOWS_S, Edge, TriggerMode, TriggerSettings
 from prm9tool.views.diagram.colours import toned_style
 
@@ -244,10 +244,11 @@ class ControlPanel(QWidget):
         super().__init__(parent)
         self.rate = QComboBox()
         for rate in RATES_HZ:
-            self.rate.addItem(f"{1000.0 / rate:g} ms ({rate / 1000:g} kHz)", rate)
+            period, khz = format_significant(1000.0 / rate, 6), format_significant(rate / 1000, 6)
+            self.rate.addItem(f"{period} ms ({khz} kHz)", rate)
         self.time_window = QComboBox()
         for seconds in WINDOWS_S:
-            self.time_window.addItem(f"{seconds:g} s", seconds)
+            self.time_window.addItem(f"{format_significant(seconds, 6)} s", seconds)
         self.time_window.setCurrentIndex(WINDOWS_S.index(1.0))
         self.start, self.stop, self.pause = QPushButton(), QPushButton(), QPushButton()
         self.pause.setCheckable(True)

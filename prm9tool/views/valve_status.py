@@ -19,7 +19,7 @@ from PySide6.QtWidgets import (
     QWidget,
 )
 
-from prm9tool.catalogue.signals import format_measured
+from prm9tool.i18n import format_measured
 from prm9tool.online.connection import ValveConnection
 from prm9tool.online.valve_control import ValveControl
 from prm9tool.views.commissioning_panel import CommissioningPanel

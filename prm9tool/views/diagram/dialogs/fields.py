@@ -15,7 +15,7 @@ from PySide6.QtWidgets import QComboBox, QDialogButtonBox, QLineEdit, QPushButto
 
 from prm9tool.catalogue import CATALOGUE, Parameter
 from prm9tool.errors import ValueRangeError
-from prm9tool.i18n import current_language
+from prm9tool.i18n import current_language, format_value, parse_value
 from prm9tool.model.access import AccessModel
 from prm9tool.model.document import ParameterDocument, Raw
 from prm9tool.translate import error_text
@@ -36,7 +36,7 @@ def not_on_enter(buttons: QDialogButtonBox) -> None:
 def range_text(param: Parameter) -> str:
     """``0 … 100 %`` — the allowed range of a numeric parameter in display units."""
     unit = f" {param.unit}" if param.unit else ""
-    return f"{param.format_display(param.raw_min)} … {param.format_display(param.raw_max)}{unit}"
+    return f"{format_value(param, param.raw_min)} … {format_value(param, param.raw_max)}{unit}"
 
 
 class ValueField(QLineEdit):
@@ -62,7 +62,7 @@ class ValueField(QLineEdit):
 
     def show_value(self, doc: ParameterDocument) -> None:
         """Display the document's value (does not emit edit signals)."""
-        self._shown = self.param.format_display(doc.value(self.mnemonic))
+        self._shown = format_value(self.param, doc.value(self.mnemonic))
         self.setPlaceholderText(range_text(self.param))
         with QSignalBlocker(self):
             self.setText(self._shown)
@@ -102,7 +102,7 @@ class ValueField(QLineEdit):
         if text == self._shown:
             return
         try:
-            raw = self.param.parse_display(text)
+            raw = parse_value(self.param, text)
         except ValueRangeError as exc:
             self.setStyleSheet(ERROR_STYLE)
             self._report(error_text(exc))
