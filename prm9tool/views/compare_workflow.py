@@ -19,7 +19,6 @@ from PySide6.QtWidgets import QDialog, QFileDialog, QWidget
 from prm9tool.catalogue.typekey import TypeKey
 from prm9tool.compare.model import Comparison, Side
 from prm9tool.errors import FileFormatError
-from prm9tool.files.prmfile import read_file
 from prm9tool.model.access import AccessModel
 from prm9tool.model.document import ParameterDocument, Raw
 from prm9tool.model.undo import DocumentUndo
@@ -28,6 +27,7 @@ from prm9tool.online.sync import ValveSync
 from prm9tool.translate import error_text
 from prm9tool.views import prompts
 from prm9tool.views.compare_view import BOTH, CompareDialog
+from prm9tool.views.file_reader import read_in_background
 from prm9tool.views.valve_workflow import ValveWorkflow
 
 COMPARE_VIEW = "compare_view"  # the download behind Valve → Compare with valve
@@ -85,11 +85,13 @@ class CompareWorkflow(QObject):
             if not name:
                 return
             path = Path(name)
-        try:
-            contents = read_file(path)
-        except FileFormatError as exc:
+        contents = read_in_background(self._window, path)  # the window keeps working
+        if contents is None:
+            return  # the user cancelled the reading
+        if isinstance(contents, FileFormatError):
             prompts.inform(self._window, prompts.Icon.Warning, self.tr("Compare with file"),
-                           self.tr("{0} cannot be compared.").format(path.name), error_text(exc))  # fmt: skip
+                           self.tr("{0} cannot be compared.").format(path.name),
+                           error_text(contents))  # fmt: skip
             return
         file_side = Side(path.name, contents.type_key, contents.values)
         comparison = Comparison((self._document(), file_side), self._factory(self._doc.type_key))
