@@ -47,7 +47,7 @@ class _Job:
 
 
 class ValveConnection(QObject):
-    """Online/offline state and asynchronous operations on one valve (see gui_contracts.md)."""
+    """Online/offline state and asynchronous operations on one valve (docs/ARCHITECTURE.md)."""
 
     online_changed = Signal(bool)
     device_changed = Signal(object)  # DeviceInfo or None
