@@ -17,13 +17,15 @@ import pytest
 from python_process import run_python
 
 from prm9tool import app
+from prm9tool.catalogue import CATALOGUE
 from prm9tool.catalogue.typekey import TypeKey
 from prm9tool.cli import batch
 from prm9tool.cli.main import main
 from prm9tool.device import factory
+from prm9tool.device.emulator import EmulatedValve
 from prm9tool.device.session import ValveSession
 from prm9tool.device.transport.emulator import EmulatorTransport, LinkFaults
-from prm9tool.errors import ExitCode
+from prm9tool.errors import AbortCode, ExitCode, SdoAbortError
 from prm9tool.files.prmfile import PrmContents, read_file, write_file
 
 E04 = "PRM9-06.3Z11/30-24E04S02-CA"
@@ -379,7 +381,7 @@ def test_unplugged_at_the_store_step_the_report_keeps_what_was_written_and_verif
     monkeypatch.setattr(batch, "_open", open_on_a_faulty_link)
     try:
         assert main(["--batch", str(source), "--emulator", f"{E04}:91"]) == ExitCode.OK
-        die_after.append(links[0].reports_on_link - 2)  # the store request is the first lost
+        die_after.append(links[0].reports_on_link - 2)  # lost: the last read-back after the store
         args = ["--batch", str(source), "--emulator", f"{E04}:92"]
         assert main([*args, "--report", str(tmp_path / "r.json")]) == ExitCode.COMMUNICATION
     finally:
@@ -477,3 +479,100 @@ def test_help_lists_every_exit_code_and_the_readme_documents_them(capsys):
         assert re.search(rf"^  {int(code)}  \S", shown, re.MULTILINE), code
         assert re.search(rf"^\| {int(code)} \|", section, re.MULTILINE), code
     assert "docs/batch.md" in section and "docs/usb-protocol.md" in section
+
+
+def test_a_refused_store_is_reported_truthfully_and_the_valve_reloaded(tmp_path, monkeypatch):
+    source = tuned_file(tmp_path)
+    valves = []
+
+    def open_a_valve_that_refuses_to_store(entry):
+        valve = factory.emulated_valve(entry.type_key, entry.serial)
+        valve.store = refuse  # type: ignore[method-assign]
+        valves.append(valve)
+        return ValveSession(EmulatorTransport(valve), entry.device_id)
+
+    def refuse():
+        raise SdoAbortError(0x1010, 1, AbortCode.CANNOT_STORE)
+
+    monkeypatch.setattr(batch, "_open", open_a_valve_that_refuses_to_store)
+    try:
+        args = ["--batch", str(source), "--emulator", f"{E04}:93"]
+        assert main([*args, "--report", str(tmp_path / "r.json")]) == ExitCode.VERIFY_FAILED
+        working = {m: valves[0].read(*CATALOGUE[m].key) for m in ("LIMTA", "DTAMP")}
+    finally:
+        factory.forget_emulated_valves()
+    record = report(tmp_path, "r.json")["valves"][0]
+    assert (record["result"], record["failed_step"]) == ("store-failed", "store")
+    assert record["parameters_written"] == len(read_file(source).values)
+    assert record["verification"] == "passed"
+    assert "refused to store the parameters" in record["error"] and "0x08000020" in record["error"]
+    assert "reset to its stored ones" in record["error"]
+    assert working == {"LIMTA": 2400, "DTAMP": 2458}  # reloaded: the factory set it had stored
+
+
+def test_a_long_firmware_text_is_cut_and_the_upload_goes_on(tmp_path, monkeypatch):
+    source = tuned_file(tmp_path)
+    long_text = "1.0.0-" + "x" * 40
+
+    def open_a_valve_with_a_long_firmware_text(entry):
+        valve = EmulatedValve(entry.type_key, entry.serial, long_text)
+        return ValveSession(EmulatorTransport(valve), entry.device_id)
+
+    monkeypatch.setattr(batch, "_open", open_a_valve_with_a_long_firmware_text)
+    args = ["--batch", str(source), "--emulator", f"{E04}:94"]
+    assert main([*args, "--report", str(tmp_path / "r.json")]) == ExitCode.OK
+    assert report(tmp_path, "r.json")["valves"][0]["firmware"] == long_text[:25]
+
+
+@pytest.mark.parametrize("mode", ["upload", "download"])
+def test_whatever_goes_wrong_the_run_ends_with_its_report_and_exit_6(tmp_path, monkeypatch, mode):
+    source = tuned_file(tmp_path)
+
+    def open_a_valve_that_breaks_the_program(entry):
+        raise ValueError("report of 75 bytes exceeds 64")
+
+    monkeypatch.setattr(batch, "_open", open_a_valve_that_breaks_the_program)
+    command = ["--batch", str(source)] if mode == "upload" else ["--batch", "--download", "o.prm"]
+    args = [*command, "--emulator", f"{E04}:95", "--report", str(tmp_path / "r.json")]
+    assert main(args) == ExitCode.COMMUNICATION
+    written = report(tmp_path, "r.json")
+    assert written["exit_code"] == ExitCode.COMMUNICATION
+    error = written["valves"][0]["error"]
+    assert "unexpected error (ValueError: report of 75 bytes exceeds 64)" in error
+    assert not (tmp_path / "o.prm").exists()
+
+
+def invalid_stored_set(tmp_path: Path, serial: int) -> Path:
+    """The EEPROM image of an emulated valve that holds SETPLINXA = 10000 (XA above XB), as a
+    real valve with older firmware may (--emulator TYPEKEY:SERIAL reads it from the data dir)."""
+    folder = tmp_path / "data" / "emulator"
+    folder.mkdir(parents=True, exist_ok=True)
+    path = folder / f"{serial}.json"
+    image = {"format": "prm9tool-emulator-eeprom", "version": 1, "type_key": E04}
+    path.write_text(json.dumps({**image, "serial": serial, "values": {"SETPLINXA": 10000}}))
+    return path
+
+
+def test_an_invalid_valve_is_backed_up_as_it_is_and_repaired_by_a_valid_upload(tmp_path):
+    source = tuned_file(tmp_path)
+    image = invalid_stored_set(tmp_path, 77)
+    result = run(tmp_path, "--batch", str(source), "--emulator", f"{E04}:77", "--report", "r.json")
+    assert result.returncode == 0, result.stderr
+    record = report(tmp_path, "r.json")["valves"][0]
+    assert (record["result"], record["backup_valid"]) == ("ok", False)
+    backup = Path(record["backup"]).read_text(encoding="utf-8")
+    assert "# NOT A VALID PARAMETER SET" in backup and "SETPLINXA = 61.035" in backup
+    checked = run(tmp_path, "--check", record["backup"])
+    assert checked.returncode == ExitCode.INVALID_FILE
+    assert "SETPLIN linearization points must increase strictly" in checked.stdout + checked.stderr
+    stored = json.loads(image.read_text(encoding="utf-8"))["values"]
+    assert stored["SETPLINXA"] == read_file(source).values["SETPLINXA"]  # repaired
+
+
+def test_download_of_an_invalid_valve_saves_what_it_holds_marked_invalid(tmp_path):
+    invalid_stored_set(tmp_path, 78)
+    result = run(tmp_path, "--batch", "--download", "out.prm", "--emulator", f"{E04}:78")
+    assert result.returncode == 0, result.stderr
+    assert "warning: the valve's set is not valid" in result.stderr
+    text = (tmp_path / "out.prm").read_text(encoding="utf-8")
+    assert "# NOT A VALID PARAMETER SET" in text and "SETPLINXA = 61.035" in text

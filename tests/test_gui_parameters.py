@@ -10,6 +10,7 @@ from prm9tool.catalogue import Access
 from prm9tool.model.access import AccessModel
 from prm9tool.model.document import ParameterDocument
 from prm9tool.model.undo import DocumentUndo
+from prm9tool.views.parameter_dialog import ParameterEditDialog
 from prm9tool.views.parameter_model import MNEMONIC_ROLE, Column
 from prm9tool.views.parameter_view import ParameterListView
 
@@ -93,7 +94,7 @@ def test_search_matches_mnemonic_and_description(view):
 def test_live_values_refresh_the_table(view, doc):
     doc.set_live({"PWR": 23950, "TEMP": 41})
     assert _cell(view, "PWR", Column.VALUE) == "23.95"
-    assert _cell(view, "TEMP", Column.VALUE) == "41"
+    assert _cell(view, "TEMP", Column.VALUE) == "41.0"  # the measured-value rule (format_measured)
 
 
 def test_a_current_limit_shows_the_range_the_valve_accepts(view, doc):
@@ -157,12 +158,32 @@ def test_at_basic_level_one_ramp_edit_sets_all_four_as_one_undo_step(view, doc, 
     assert [doc.value(mn) for mn in ramps] == [0, 0, 300, 0]
 
 
-def test_double_click_opens_the_edit_dialog(view, qtbot):
+def test_double_click_opens_one_edit_dialog(view, qtbot):
+    # A real double-click: emitting doubleClicked alone (as this test once did) never showed
+    # that activated, emitted by the same double-click, opened a second, stale dialog.
     opened = []
     view.edit_requested.connect(opened.append)
-    row = view.proxy.mapFromSource(view.model.index(view.model.row_of("LIMTB"), 0))
-    view.table.doubleClicked.emit(row)
+    view.show()
+    qtbot.waitExposed(view)
+    index = view.proxy.mapFromSource(view.model.index(view.model.row_of("LIMTB"), 1))
+    view.table.scrollTo(index)
+    centre = view.table.visualRect(index).center()
+    qtbot.mouseClick(view.table.viewport(), Qt.MouseButton.LeftButton, pos=centre)
+    qtbot.mouseDClick(view.table.viewport(), Qt.MouseButton.LeftButton, pos=centre)  # press 2
     assert opened == ["LIMTB"]
-    dialogs = [w for w in view.findChildren(type(view.make_edit_dialog("LIMTB"))) if w.isVisible()]
-    assert dialogs and dialogs[0].param.mnemonic == "LIMTB"
+    dialogs = [w for w in view.findChildren(ParameterEditDialog) if w.isVisible()]
+    assert len(dialogs) == 1 and dialogs[0].param.mnemonic == "LIMTB"
+    view.table.activated.emit(index)  # Enter on the row while the dialog is open
+    assert opened == ["LIMTB"]
     dialogs[0].reject()
+
+
+def test_measured_values_follow_one_rule_in_the_list_and_the_diagram(view, doc):
+    from prm9tool.views.diagram import format_signal
+
+    doc.set_live({"PWR": 24000, "TEMP": 25})
+    model = view.model
+    shown = {mn: model.data(model.index(model.row_of(mn), Column.VALUE)) for mn in ("PWR", "TEMP")}
+    assert shown == {"PWR": "24.00", "TEMP": "25.0"}  # was "24" and "25"
+    assert format_signal("supply_voltage", 24000) == "24.00 V"
+    assert format_signal("temperature", 250) == "25.0 °C"

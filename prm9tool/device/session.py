@@ -3,6 +3,23 @@
 Long operations are synchronous (run them off the GUI thread), report ``progress(done, total,
 step)`` and stop at the next report when ``cancel`` is set. Failures raise the typed errors of
 :mod:`prm9tool.errors`; an upload never stores anything it has not read back and compared.
+
+**The upload contract, the same on every link** (USB here; CANopen writes "save" into
+0x1010/1 for the store and follows it too):
+
+1. *write* every value; a refusal ends the upload (``failed_step`` ``write``);
+2. *verify*: read every value back and compare (``verify``);
+3. *store*: send the store command, then read every value back once more and compare
+   (``store``). ``stored`` is True only if the valve acknowledged the store **and** that
+   read-back equals the upload. The store copies the working values into non-volatile memory
+   and a restart replaces the working values with the stored ones, so a read-back after the
+   acknowledgement that still shows the upload proves the stored set is the upload: a valve
+   that restarted (brown-out) before the store stored its old set and reads back the old values.
+   A refused store (abort, e.g. 0x08000020) is ``failed_step`` ``store`` with the reason in
+   ``failure``.
+
+After any failure (also a cancel) the session asks the valve to reload its stored parameters
+(RELOAD; CANopen: the master writes the stored values back), so it runs on its stored set.
 """
 
 from __future__ import annotations
@@ -18,6 +35,7 @@ import numpy as np
 
 from prm9tool.catalogue import CATALOGUE, Parameter
 from prm9tool.catalogue.typekey import TypeKey
+from prm9tool.device.emulated import EmulatorControls
 from prm9tool.device.emulator.states import DeviceState, LedState, ValveStatus
 from prm9tool.device.entries import (
     STEPS,
@@ -35,6 +53,7 @@ from prm9tool.device.protocol import (
     Done,
     Identify,
     IdentifyReply,
+    Nmt,
     Reload,
     Request,
     Response,
@@ -68,9 +87,10 @@ class DeviceInfo:
 class UploadResult:
     """Outcome of an upload; ``failed_step`` is ``write``, ``verify``, ``store`` or None.
 
-    After a failed upload the session puts the valve's stored parameters back into its working
-    values (:meth:`ValveSession.reload`, no restart): ``reloaded`` says whether that worked,
-    ``reload_error`` why not.
+    ``stored`` means verified stored (see the module docstring). ``failure`` says why the step
+    failed when ``mismatches`` do not (a refused store). After a failed upload the session puts
+    the valve's stored parameters back into its working values (:meth:`ValveSession.reload`,
+    no restart): ``reloaded`` says whether that worked, ``reload_error`` why not.
     """
 
     written: int
@@ -81,6 +101,7 @@ class UploadResult:
     failed_step: str | None
     reloaded: bool = False
     reload_error: str | None = None
+    failure: str | None = None
 
 
 class ValveSession:
@@ -105,6 +126,15 @@ class ValveSession:
     def transport(self) -> Transport:
         """The link this session talks over (statistics, fault injection in tests)."""
         return self._transport
+
+    @property
+    def emulator(self) -> EmulatorControls | None:
+        """Inputs, switches and faults of an emulated valve (None for a real one)."""
+        from prm9tool.device.transport.emulator import EmulatorTransport
+
+        if not isinstance(self._transport, EmulatorTransport):
+            return None
+        return EmulatorControls(self._transport)
 
     # --- identity and single values -------------------------------------------------------
     def identify(self) -> DeviceInfo:
@@ -152,7 +182,7 @@ class ValveSession:
         progress: Progress | None = None,
         cancel: threading.Event | None = None,
     ) -> UploadResult:
-        """Write all → read back and compare → store. Only a verified set is stored.
+        """Write all → read back and compare → store and confirm (the module's contract).
 
         A refusal or mismatch returns a result with ``failed_step``; a broken link raises the
         communication error with the failed step named and how far the upload got: attributes
@@ -171,19 +201,28 @@ class ValveSession:
             step = "verify"
             verify = Steps(progress, total, len(params), step)
             actual = self._entries.read(params, verify, cancel)
-            mismatches = {
-                p.mnemonic: (values[p.mnemonic], _shown(actual[p.mnemonic]))
-                for p in params
-                if actual[p.mnemonic] != values[p.mnemonic]
-            }
+            mismatches = _differences(params, values, actual)
             if mismatches:
                 return self._failed(written, mismatches, start, "verify")
             step, verified = "store", True
             check_cancel(cancel, step)
             self.store()
+            after = self._entries.read(params)
+            changed = _differences(params, values, after)
+            if changed:
+                why = (
+                    "the valve's values changed after the store was acknowledged (it restarted "
+                    "before the store?): its stored set is not the upload"
+                )
+                return self._failed(written, changed, start, "store", True, why)
         except RefusedError as refused:
             refusal: tuple[Value, Value] = (values[refused.mnemonic], str(refused.error))
             return self._failed(refused.done, {refused.mnemonic: refusal}, start, "write")
+        except SdoAbortError as exc:
+            if step != "store":  # a whole request refused while writing or reading back
+                raise
+            why = f"the valve refused to store the parameters: {exc}"
+            return self._failed(written, {}, start, "store", True, why)
         except OperationCancelledError as exc:
             raise OperationCancelledError(exc.step, reload_outcome(self._revert())) from exc
         except CommunicationError as exc:
@@ -221,6 +260,12 @@ class ValveSession:
         self._call(Restart(), Done)
         self._stream.forget()
         self._transport.reconnect()
+
+    def nmt(self, command: int) -> None:
+        """Send an NMT command (:class:`~prm9tool.catalogue.commissioning.NmtCommand`) to the
+        valve, as its CANopen master would (manual §7.2): start, stop, pre-operational, reset.
+        A valve with CANopen switched off ignores it."""
+        self._call(Nmt(int(command)), Done)
 
     def status(self) -> ValveStatus:
         """Device state, errors, LEDs, temperature and supply voltage."""
@@ -284,11 +329,25 @@ class ValveSession:
 
     # --- internals ------------------------------------------------------------------------
     def _failed(
-        self, written: int, mismatches: dict[str, tuple[Value, Value]], start: float, step: str
+        self,
+        written: int,
+        mismatches: dict[str, tuple[Value, Value]],
+        start: float,
+        step: str,
+        verified: bool = False,
+        failure: str | None = None,
     ) -> UploadResult:
         problem = self._revert()
         return UploadResult(
-            written, False, False, mismatches, _since(start), step, problem is None, problem
+            written,
+            verified,
+            False,
+            mismatches,
+            _since(start),
+            step,
+            problem is None,
+            problem,
+            failure,
         )
 
     def _revert(self) -> str | None:
@@ -322,6 +381,19 @@ class ValveSession:
         for param in params:
             param.check_raw(values[param.mnemonic])
         return params
+
+
+def _differences(
+    params: Sequence[Parameter],
+    values: Mapping[str, Value],
+    actual: Mapping[str, Value | SdoAbortError],
+) -> dict[str, tuple[Value, Value]]:
+    """``{mnemonic: (uploaded, read back)}`` of every value that reads back differently."""
+    return {
+        p.mnemonic: (values[p.mnemonic], _shown(actual[p.mnemonic]))
+        for p in params
+        if actual[p.mnemonic] != values[p.mnemonic]
+    }
 
 
 def _shown(value: Value | SdoAbortError) -> Value:

@@ -92,8 +92,29 @@ class PrmContents:
         hint: str = "",
     ) -> None:
         lines.extend(self.comments.get(name, leading or []))
-        entry = f"{name} = {value}" if value else f"{name} ="
+        value = _escape_controls(value)  # values from a device are data, never file structure
+        entry = _entry_text(name, value)
         lines.append(entry + self.inline_comments.get(name, hint))
+
+
+def _escape_controls(value: str) -> str:
+    """``value`` with every control character written as ``\\xNN`` (a CR/LF in a firmware text
+    would otherwise start a new line, i.e. inject an entry)."""
+    return _CONTROL.sub(lambda m: f"\\x{ord(m.group()):02x}", value)
+
+
+def _entry_text(name: str, value: str) -> str:
+    """``NAME = value``; a value starting with ``#`` follows the ``=`` directly (``FOO =#x``).
+
+    The reader takes ``#`` after whitespace as the start of an inline comment, except right
+    after the ``=``: so ``FOO=#x`` holds the value ``#x`` and must not be written ``FOO = #x``
+    (an empty value and a comment).
+    """
+    if not value:
+        return f"{name} ="
+    if value.startswith("#"):
+        return f"{name} ={value}"
+    return f"{name} = {value}"
 
 
 def _hint(param: Parameter) -> str:

@@ -17,6 +17,7 @@ from prm9tool.catalogue import CATALOGUE, Parameter, Problem, variant_label
 from prm9tool.catalogue.typekey import TypeKey
 from prm9tool.catalogue.variant import Variant
 from prm9tool.errors import ValueRangeError
+from prm9tool.i18n import format_value
 from prm9tool.messages import QT_TRANSLATE_NOOP, Message
 
 Raw = int | str
@@ -129,8 +130,9 @@ class ParameterDocument(QObject):
         return CATALOGUE[mnemonic].default_for(self.variant)
 
     def display(self, mnemonic: str) -> str:
-        """The value as shown to a user (shortest exact decimal, in display units)."""
-        return CATALOGUE[mnemonic].format_display(self.value(mnemonic))
+        """The value as shown to a user (shortest exact decimal, in display units, with the
+        decimal separator of the program language)."""
+        return format_value(CATALOGUE[mnemonic], self.value(mnemonic))
 
     def is_default(self, mnemonic: str) -> bool:
         """True if the value equals the factory default of this variant."""
@@ -162,7 +164,7 @@ class ParameterDocument(QObject):
         self.validate(mnemonic, raw)
         if self._values[mnemonic] == raw:
             return
-        label = text or f"{mnemonic} = {CATALOGUE[mnemonic].format_display(raw)}"
+        label = text or f"{mnemonic} = {format_value(CATALOGUE[mnemonic], raw)}"
         self._commit(Edit(label, {mnemonic: raw}, {mnemonic: self._values[mnemonic]}))
 
     def set_values(
@@ -231,12 +233,14 @@ class ParameterDocument(QObject):
         self.comments = {name: list(lines) for name, lines in other.comments.items()}
         self.inline_comments = dict(other.inline_comments)
         self._saved = (other._saved[0], dict(other._saved[1]))
+        # Every field is taken over before any view hears of it: a failing view must not
+        # leave the document half replaced or the modified state unannounced.
+        self._emit_modified()
         self.type_key_changed.emit(str(self._type_key))
         self.values_reset.emit()
         self.validity_changed.emit()
         if path_differs:
             self.path_changed.emit(str(self._path) if self._path is not None else "")
-        self._emit_modified()
 
     def _emit_modified(self) -> None:
         if self.modified != self._was_modified:

@@ -131,6 +131,10 @@ class UploadOutcome(Protocol):
     def failed_step(self) -> str | None:
         """``write``, ``verify``, ``store`` or None."""
 
+    @property
+    def failure(self) -> str | None:
+        """Why the step failed when ``mismatches`` do not say it (e.g. a refused store)."""
+
 
 class LinkState(Protocol):
     """Whether a valve is online, and the signal announcing a change."""
@@ -146,6 +150,10 @@ class LinkState(Protocol):
 
 class ParameterConnection(LinkState, Protocol):
     """Reading, writing and storing parameters (the CANopen window)."""
+
+    @property
+    def device(self) -> object | None:
+        """The connected valve's DeviceInfo (``type_key``, ``serial``, …), None offline."""
 
     @property
     def operation_finished(self) -> SignalInstance:
@@ -210,6 +218,10 @@ class ScopeConnection(LinkState, Protocol):
     @property
     def write_failed(self) -> SignalInstance:
         """Emitted with the mnemonics of a write the valve refused (after ``failed``)."""
+
+    @property
+    def status_changed(self) -> SignalInstance:
+        """Emitted (≈ 2 Hz) with the valve's status (device state, NMT state, errors)."""
 
     def start_stream(self, keys: Sequence[str], rate_hz: int) -> None:
         """Start streaming ``keys`` at ``rate_hz`` (asynchronous)."""

@@ -42,6 +42,9 @@ _ACTIONS: tuple[tuple[str, str, object], ...] = (
     ("help", "help", SK.HelpContents),
     ("homepage", "homepage", None),
     ("about", "about", None),
+    ("compare_file", "", None),
+    ("compare_valve", "", None),
+    ("history", "", None),
 )
 TOOLBAR = (
     "open",
@@ -178,6 +181,20 @@ def _texts() -> dict[str, _Texts]:
             translate("MainActions", "Home&page"),
             translate("MainActions", "Open the manufacturer's homepage"),
         ),
+        "compare_file": _Texts(
+            translate("MainActions", "Co&mpare with file…"),
+            translate(
+                "MainActions", "Compare the parameters with a *.prm file, take chosen values"
+            ),
+        ),
+        "compare_valve": _Texts(
+            translate("MainActions", "&Compare with valve"),
+            translate("MainActions", "Compare the document with the valve, apply chosen values"),
+        ),
+        "history": _Texts(
+            translate("MainActions", "&History…"),
+            translate("MainActions", "Every operation recorded on a valve's parameters"),
+        ),
         "about": _Texts(
             translate("MainActions", "&About prm9tool"),
             translate("MainActions", "Versions and contact"),
@@ -225,11 +242,11 @@ class MainActions(QObject):
         """File, View, Valve, Communication, Help (manual §8.5)."""
         layout: dict[str, tuple[str | None, ...]] = {
             "file": ("new", "open", "recent", "save", "save_as", None, "undo", "redo", None,
-                     "print", "export_pdf", None, "exit"),
+                     "print", "export_pdf", None, "compare_file", None, "exit"),
             "view": ("view_diagram", "view_parameters", "view_scope", None, "access", "language",
                      None, "canopen"),
-            "valve": ("valve_selection", "valve_status", None, "upload", "download", None,
-                      "restore_factory", "restart"),
+            "valve": ("valve_selection", "valve_status", None, "upload", "download",
+                      "compare_valve", "history", None, "restore_factory", "restart"),
             "communication": ("hid_configuration", None, "online", "offline"),
             "help": ("help", "homepage", None, "about"),
         }  # fmt: skip

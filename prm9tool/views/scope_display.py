@@ -17,13 +17,13 @@ from PySide6.QtCore import QObject, Signal
 from prm9tool.scope import (
     Capture,
     Frame,
-    StepFigures,
+    StepMeasurement,
     TriggerEngine,
     TriggerMode,
     TriggerSettings,
+    Verdict,
     cursor_readout,
-    find_step,
-    step_figures,
+    measure_step,
 )
 from prm9tool.views.scope_plot import ScopePlot
 from prm9tool.views.scope_readout import CursorPanel, StepPanel
@@ -136,7 +136,7 @@ class ScopeDisplay(QObject):
         capture = self.capture
         if capture is None or self._frozen is not None:
             return
-        self._frozen = self.whole_data()
+        self._frozen = self.whole_data()  # what was recorded up to now
         self.plot.show_all(*self._frozen)
         self.plot.set_time_interactive(True)
         self.update_readouts()
@@ -165,9 +165,11 @@ class ScopeDisplay(QObject):
         return self._frozen if self._frozen is not None else self._shown
 
     def whole_data(self) -> tuple[np.ndarray, np.ndarray]:
-        """Everything recorded (a copy), on the time axis of the current frame."""
-        if self._frozen is not None:
-            return self._frozen
+        """Everything recorded (a copy), on the time axis of the current frame.
+
+        Also while the display holds a paused picture: the recording goes on behind it, and
+        "whole recording" means all of it, not what the held picture shows.
+        """
         if self.capture is None:
             return EMPTY
         buffer = self.capture.buffer
@@ -199,25 +201,18 @@ class ScopeDisplay(QObject):
         else:
             x0, x1 = self.plot.x_range()
             region = self.tr("the visible window")
-        figures = self.figures(x0, x1)
-        self.steps.show_figures(figures, region, figures is None and self._stepped(x0, x1))
+        self.steps.show_figures(self.measure(x0, x1), region)
 
-    def figures(self, x0: float, x1: float) -> StepFigures | None:
-        """Step-response figures of the samples between times ``x0`` and ``x1``."""
+    def measure(self, x0: float, x1: float) -> StepMeasurement:
+        """Step-response measurement of the samples between times ``x0`` and ``x1``: the
+        reference's first complete step (see :func:`prm9tool.scope.measure_step`)."""
         t, values = self.data()
         response, reference = self.steps.response_slot(), self.steps.reference_slot()
         if response is None or response >= values.shape[1]:
-            return None
+            return StepMeasurement(Verdict.NO_STEP)
+        if reference is not None and reference >= values.shape[1]:
+            reference = None
         inside = (t >= x0) & (t <= x1)
         ref = values[inside, reference] if reference is not None else None
         same_unit = self.steps.units_match()
-        return step_figures(t[inside], values[inside, response], ref, comparable=same_unit)
-
-    def _stepped(self, x0: float, x1: float) -> bool:
-        """True when the reference channel steps between ``x0`` and ``x1``."""
-        t, values = self.data()
-        reference = self.steps.reference_slot()
-        if reference is None or reference >= values.shape[1]:
-            return False
-        inside = (t >= x0) & (t <= x1)
-        return find_step(t[inside], values[inside, reference]) is not None
+        return measure_step(t[inside], values[inside, response], ref, comparable=same_unit)

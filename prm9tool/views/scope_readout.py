@@ -18,13 +18,13 @@ from PySide6.QtWidgets import (
 
 from prm9tool.catalogue.signals import MAX_CHANNELS
 from prm9tool.catalogue.signals import Signal as MeasuringPoint
-from prm9tool.i18n import text
-from prm9tool.scope import CursorReadout, StepFigures
+from prm9tool.i18n import format_number, format_significant, text
+from prm9tool.scope import CursorReadout, StepMeasurement, Verdict
 from prm9tool.views.scope_plot import COLOURS
 
 
 def _value(value: float, unit: str, digits: int = 4) -> str:
-    return "—" if math.isnan(value) else f"{value:.{digits}g} {unit}".rstrip()
+    return "—" if math.isnan(value) else f"{format_significant(value, digits)} {unit}".rstrip()
 
 
 def _fixed(value: float, unit: str, size: float) -> str:
@@ -32,15 +32,15 @@ def _fixed(value: float, unit: str, size: float) -> str:
     if math.isnan(value):
         return "—"
     decimals = max(0, 2 - math.floor(math.log10(abs(size)))) if size else 2
-    return f"{round(value, decimals) + 0.0:.{decimals}f} {unit}".rstrip()  # + 0.0: no "-0"
+    return f"{format_number(value, decimals)} {unit}".rstrip()
 
 
 def _time(seconds: float) -> str:
     if math.isnan(seconds):
         return "—"
     if abs(seconds) < 1.0:
-        return f"{seconds * 1000:.4g} ms"
-    return f"{seconds:.4g} s"
+        return f"{format_significant(seconds * 1000, 4)} ms"
+    return f"{format_significant(seconds, 4)} s"
 
 
 class CursorPanel(QWidget):
@@ -200,39 +200,51 @@ class StepPanel(QWidget):
             return True
         return self._units[ref] == self._units[resp]
 
-    def show_figures(
-        self, figures: StepFigures | None, region: str, unanswered: bool = False
-    ) -> None:
-        """Show ``figures`` computed on ``region`` (a description like 'between the cursors');
-        ``unanswered``: the reference stepped but the response did not follow."""
+    def show_figures(self, measurement: StepMeasurement | None, region: str) -> None:
+        """Show the figures of ``measurement`` made on ``region`` (a description like 'the
+        visible window'), or why there are none; None: nothing recorded."""
         slot = self.response_slot()
         unit = self._units[slot] if slot is not None and slot < len(self._units) else ""
+        figures = measurement.figures if measurement is not None else None
         if figures is None:
             for label in self.figures.values():
                 label.setText("—")
-            if not region:
-                self.region.setText("")
-            elif unanswered:
-                self.region.setText(
-                    self.tr(
-                        "No response to the step in {0}: the response stays flat or within "
-                        "its noise."
-                    ).format(region)
-                )
-            else:
-                self.region.setText(self.tr("No step found in {0}.").format(region))
+            self.region.setText(self._why_not(measurement, region))
             return
+        assert measurement is not None
         size = figures.final - figures.initial
         self.figures["step"].setText(
             f"{_fixed(figures.initial, unit, size)} → {_fixed(figures.final, unit, size)}"
             f"  @ {_time(figures.t_step)}"
         )
         self.figures["rise"].setText(_time(figures.rise_time))
-        self.figures["overshoot"].setText(f"{figures.overshoot:.1f} %")
+        self.figures["overshoot"].setText(f"{format_number(figures.overshoot, 1)} %")
         self.figures["settling"].setText(
             _time(figures.settling_time)
             if not math.isnan(figures.settling_time)
             else self.tr("not settled in the window")
         )
         self.figures["error"].setText(_fixed(figures.steady_state_error, unit, size))
-        self.region.setText(self.tr("Measured on {0}.").format(region))
+        if measurement.steps > 1:
+            self.region.setText(
+                self.tr("Measured on step {0} of {1} in {2}.").format(
+                    measurement.measured + 1, measurement.steps, region
+                )
+            )
+        else:
+            self.region.setText(self.tr("Measured on {0}.").format(region))
+
+    def _why_not(self, measurement: StepMeasurement | None, region: str) -> str:
+        """Why ``measurement`` has no figures, in words."""
+        if measurement is None or not region:
+            return ""
+        if measurement.verdict is Verdict.TOO_SHORT:
+            return self.tr(
+                "Window too short: in {0} the response has not come to rest yet. "
+                "Widen the time window or move the cursors apart."
+            ).format(region)
+        if measurement.verdict is Verdict.NO_RESPONSE:
+            return self.tr(
+                "No response to the step in {0}: the response stays flat or within its noise."
+            ).format(region)
+        return self.tr("No step found in {0}.").format(region)

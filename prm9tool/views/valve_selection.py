@@ -67,8 +67,8 @@ class ValveSelectionDialog(QDialog):
             self.spool.addItem(spool.code, spool.code)
         for supply in SUPPLIES:
             self.supply.addItem(f"{supply} V DC", supply)
-        for config in Config:
-            self.config.addItem(config.value, config)
+        for config in Config:  # item data is the plain value: Qt hands enums back as str
+            self.config.addItem(config.value, config.value)
 
     def _build_layout(self) -> None:
         form = QFormLayout()
@@ -159,7 +159,7 @@ class ValveSelectionDialog(QDialog):
         self.spool.setCurrentIndex(self.spool.findData(key.spool))
         self.flow.setCurrentIndex(self.flow.findData(key.flow))
         self.supply.setCurrentIndex(self.supply.findData(key.supply))
-        self.config.setCurrentIndex(self.config.findData(key.config))
+        self.config.setCurrentIndex(self.config.findData(key.config.value))
         self.canopen.setChecked(key.canopen)
         del blockers
         self._set_valid(key)
@@ -190,7 +190,7 @@ class ValveSelectionDialog(QDialog):
             spool=str(self.spool.currentData()),
             flow=str(self.flow.currentData()),
             supply=str(self.supply.currentData()),
-            config=self.config.currentData(),
+            config=Config(self.config.currentData()),
             canopen=self.canopen.isChecked(),
         )
         self._set_valid(key)

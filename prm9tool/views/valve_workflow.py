@@ -7,16 +7,17 @@ worker thread) and the document, and reacts to their signals.
 
 from __future__ import annotations
 
-from collections.abc import Mapping
+from collections.abc import Callable, Mapping
 from dataclasses import dataclass
 from typing import Any
 
-from PySide6.QtCore import QObject, QSettings, Qt, Signal
+from PySide6.QtCore import QObject, QSettings, Qt, QTime, Signal
 from PySide6.QtWidgets import QDialog, QProgressDialog, QWidget
 
-from prm9tool.catalogue import variant_label
+from prm9tool.catalogue import CATALOGUE, Access, variant_label
 from prm9tool.catalogue.typekey import TypeKey
 from prm9tool.errors import TypeKeyError
+from prm9tool.model.access import AccessModel
 from prm9tool.model.document import ParameterDocument, Raw
 from prm9tool.model.undo import DocumentUndo
 from prm9tool.online.connection import ValveConnection
@@ -29,6 +30,7 @@ from prm9tool.views.hid_dialog import (
     HidConfigurationDialog,
     saved_emulators,
 )
+from prm9tool.views.history_policy import may_upload
 from prm9tool.views.online_dialogs import DiffChoice, OnlineDiffDialog, RestartDialog
 
 COMPARE = "compare"  # download made on going online, to compare with the document
@@ -49,9 +51,11 @@ class ValveWorkflow(QObject):
         connection: ValveConnection,
         sync: ValveSync,
         settings: QSettings,
+        access: AccessModel | None = None,
     ) -> None:
         super().__init__(window)
         self._window = window
+        self._access = access
         self._doc = doc
         self._undo = undo
         self._connection = connection
@@ -59,6 +63,10 @@ class ValveWorkflow(QObject):
         self._settings = settings
         self.progress_dialog: QProgressDialog | None = None
         self._operation = ""
+        self._upload_repeats = False  # the running upload sends what the valve holds already
+        self._pending_upload: dict[str, Raw] = {}
+        # "choose per parameter" in the going-online dialog (the compare workflow sets it)
+        self.choose_per_parameter: Callable[[Mapping[str, Raw]], None] | None = None
         connection.online_changed.connect(self._on_connection_online_changed)
         connection.operation_finished.connect(self._on_connection_operation_finished)
         connection.progress.connect(self._on_connection_progress)
@@ -134,7 +142,7 @@ class ValveWorkflow(QObject):
             if answer == prompts.Button.Cancel:
                 return False
             if answer == prompts.Button.Yes:
-                self._connection.store()
+                self._connection.store(self._doc.values)
         scope = getattr(self._window, "views", {}).get("scope")
         if scope is not None:  # the setpoint generator switches its override off while online
             scope.stop()
@@ -185,7 +193,10 @@ class ValveWorkflow(QObject):
         if dialog.choice is DiffChoice.TAKE_VALVE:
             self.take_valve_values(values, self.tr("Values read from the valve"))
         elif dialog.choice is DiffChoice.SEND_DOCUMENT:
-            self.upload()
+            if not self.upload(values):
+                self.go_offline()  # as Cancel: nothing was written
+        elif dialog.choice is DiffChoice.CHOOSE and self.choose_per_parameter is not None:
+            self.choose_per_parameter(values)
         else:
             self.go_offline()
 
@@ -233,11 +244,15 @@ class ValveWorkflow(QObject):
             return None
 
     # --- valve commands ---------------------------------------------------------------------------
-    def upload(self) -> None:
-        """Write the document into the valve (backup first, then write → verify → store)."""
+    def upload(self, valve_values: Mapping[str, Raw] | None = None) -> bool:
+        """Write the document into the valve (backup first, then write → verify → store).
+
+        ``valve_values``: what the valve holds, if just read (else what the online sync
+        knows). False when nothing is sent (another variant, or the user declined).
+        """
         key = self._valve_key()
         if key is None:
-            return
+            return False
         if key.variant != self._doc.variant:
             prompts.ask(
                 self._window,
@@ -252,9 +267,65 @@ class ValveWorkflow(QObject):
                 ),
                 prompts.Button.Ok,
             )
+            return False
+        known = self._sync.valve_values if valve_values is None else valve_values
+        if not self._basic_user_confirms_expert_values(known):
+            self.message_posted.emit(self.tr("Nothing was sent to the valve"))
+            return False
+        # the valve holds the document already (edits went to it, nothing left unstored)
+        self._upload_repeats = self._sync.active and not self._sync.unstored
+        self._upload_repeats &= not self._sync.differences()
+        self.upload_values(self._doc.values)
+        return True
+
+    def upload_values(self, values: Mapping[str, Raw]) -> None:
+        """Upload exactly ``values`` (write, read back, store), once the history can record
+        it or the user said to go ahead without it (views/history_policy.py)."""
+        self._pending_upload = dict(values)
+        if self._connection.history is None:
+            self._start_upload()
             return
         self._start("upload", self.tr("Uploading the parameters to the valve…"))
-        self._connection.upload(self._doc.values)
+        self._connection.check_history()
+
+    def _start_upload(self) -> None:
+        values, self._pending_upload = self._pending_upload, {}
+        self._start("upload", self.tr("Uploading the parameters to the valve…"))
+        self._connection.upload(values)
+
+    def expert_differences(self, valve_values: Mapping[str, Raw]) -> list[str]:
+        """The Expert-level parameters whose document value differs from the valve's."""
+        return [
+            mnemonic
+            for mnemonic, value in self._doc.values.items()
+            if CATALOGUE[mnemonic].access is Access.EXPERT
+            and mnemonic in valve_values
+            and valve_values[mnemonic] != value
+        ]
+
+    def _basic_user_confirms_expert_values(self, valve_values: Mapping[str, Raw]) -> bool:
+        """At Basic level, sending changes the Basic level cannot make needs a Yes."""
+        if self._access is None or self._access.level is not Access.BASIC:
+            return True
+        changed = self.expert_differences(valve_values)
+        if not changed:
+            return True
+        shown = ", ".join(changed[:8]) + (", …" if len(changed) > 8 else "")
+        answer = prompts.ask(
+            self._window,
+            prompts.Icon.Warning,
+            self.tr("Expert values at Basic level"),
+            self.tr(
+                "The document changes %n Expert-level value(s) of the valve ({0}), which the "
+                "Basic access level cannot edit (controllers, linearizations, monitoring). "
+                "Send them anyway?",
+                "",
+                len(changed),
+            ).format(shown),
+            prompts.Button.Yes | prompts.Button.No,
+            prompts.Button.No,
+        )
+        return answer == prompts.Button.Yes
 
     def download(self) -> None:
         """Read the valve's parameters into the document (one undo step)."""
@@ -305,12 +376,16 @@ class ValveWorkflow(QObject):
             self._on_compare_finished(result)
         elif name == "upload":
             self._on_upload_finished(result)
+        elif name == "history_check":
+            if may_upload(self._window, result):
+                self._start_upload()
         elif name == "store":
             self._sync.unstored = False
             self.message_posted.emit(self.tr("The valve stored its parameters"))
 
     def _on_factory_reset(self, result: _FactoryReset) -> None:
         self.take_valve_values(result.values, self.tr("Factory values of the valve"))
+        self._connection.record("restore-factory", "ok", result.values, {"backup": result.backup})
         if result.backup is not None:
             self.message_posted.emit(
                 self.tr(
@@ -322,12 +397,23 @@ class ValveWorkflow(QObject):
         outcome = result if isinstance(result, UploadOutcome) else None
         if outcome is not None and outcome.stored:
             self._sync.start(self._doc.values)
-            self.message_posted.emit(
-                self.tr("%n parameter(s) written, verified and stored", "", outcome.written)
-            )
+            at = QTime.currentTime().toString("HH:mm:ss")  # each upload's message differs
+            count = outcome.written
+            message = self.tr("%n parameter(s) written, verified and stored at {0}", "", count)
+            repeats, self._upload_repeats = self._upload_repeats, False
+            if repeats:
+                message = self.tr(
+                    "%n parameter(s) written, verified and stored again at {0}: the valve "
+                    "already held them",
+                    "",
+                    count,
+                )
+            self.message_posted.emit(message.format(at))
             return
         mismatches = outcome.mismatches if outcome is not None else {}
-        details = "\n".join(f"{mn}: {want} → {got}" for mn, (want, got) in mismatches.items())
+        lines = [f"{mn}: {want} → {got}" for mn, (want, got) in mismatches.items()]
+        failure = outcome.failure if outcome is not None else None  # e.g. a refused store
+        details = "\n".join([failure, *lines] if failure else lines)
         prompts.inform(
             self._window,
             prompts.Icon.Warning,

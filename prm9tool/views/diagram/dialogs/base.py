@@ -51,6 +51,7 @@ class BlockContext:
     access: AccessModel
     connection: DiagramConnection | None = None
     simulator_factory: SimulatorFactory | None = None
+    open_tuning: Callable[[str], None] | None = None  # opens the Tuning window for a loop
 
 
 class BlockDialog(QDialog):
