@@ -191,7 +191,7 @@ class CanopenWindow(QDialog):
         return self._access.why_locked(CATALOGUE[mnemonic])
 
     def _show_state(self) -> None:
-        online = bool(getattr(self._connection, "is_online", False))
+        online = self._online()
         if not self._doc.variant.canopen:
             state = self.tr("This valve type has no CANopen interface (no -CA in the type key).")
         elif self.switches is None and not online:
@@ -310,7 +310,7 @@ class CanopenWindow(QDialog):
         )
 
     def _online(self) -> bool:
-        return bool(getattr(self._connection, "is_online", False))
+        return self._connection is not None and self._connection.is_online
 
     def _on_terminator_toggled(self, checked: bool) -> None:
         self.apply("CANTERM", 1 if checked else 0)

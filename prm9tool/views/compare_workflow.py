@@ -61,8 +61,8 @@ class CompareWorkflow(QObject):
 
     def _valve_side(self, values: Mapping[str, Raw]) -> Side:
         info = self._connection.device
-        key = TypeKey.parse(str(getattr(info, "type_key", self._doc.type_key)))
-        label = self.tr("Valve {0}").format(getattr(info, "serial", ""))
+        key = self._doc.type_key if info is None else TypeKey.parse(info.type_key)
+        label = self.tr("Valve {0}").format("" if info is None else info.serial)
         return Side(label, key, dict(values))
 
     def _factory(self, key: TypeKey) -> Side:
@@ -159,7 +159,8 @@ class CompareWorkflow(QObject):
         hook = self._connection.history
         if hook is None:
             return None
-        serial = getattr(self._connection.device, "serial", None)
+        info = self._connection.device
+        serial = None if info is None else info.serial
         window = HistoryWindow(hook.recorder, serial, self.restore_into_document,
                                self.restore_to_valve, self._window)  # fmt: skip
         self.dialog_created.emit(window)
@@ -178,10 +179,8 @@ class CompareWorkflow(QObject):
 
     def restore_to_valve(self, serial: int, values: Mapping[str, Raw]) -> bool:
         """Upload a record's set into the valve it came from (False: that valve is not online)."""
-        if (
-            getattr(self._connection.device, "serial", None) != serial
-            or not self._connection.is_online
-        ):
+        info = self._connection.device
+        if info is None or info.serial != serial or not self._connection.is_online:
             return False
         self._valve.upload_values(values)
         return True
