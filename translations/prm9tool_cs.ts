@@ -1351,6 +1351,27 @@ Poslední akce možná nebyla dokončena. Uložte svou práci pod novým názvem
         </message>
     </context>
     <context>
+        <name>GeneratorStart</name>
+        <message>
+            <source>Setpoint generator</source>
+            <translation>Generátor žádané hodnoty</translation>
+        </message>
+        <message>
+            <source>The generator will drive the valve's setpoint and the valve will move.
+Make sure the machine is safe to move. Start the generator?</source>
+            <translation>Generátor bude řídit žádanou hodnotu ventilu a ventil se bude pohybovat.
+Ujistěte se, že pohyb stroje je bezpečný. Spustit generátor?</translation>
+        </message>
+        <message>
+            <source>The valve does not follow its setpoint: {0}
+
+Enable it now (NMT start, control word 08h → 09h → 0Bh → 0Fh)?</source>
+            <translation>Ventil nesleduje svou žádanou hodnotu: {0}
+
+Uvolnit ho nyní (NMT start, řídicí slovo 08h → 09h → 0Bh → 0Fh)?</translation>
+        </message>
+    </context>
+    <context>
         <name>Help</name>
         <message>
             <source>Home page</source>
@@ -2594,16 +2615,6 @@ Ano načte a záznam zařadí do fronty; Ne nenačte nic.</translation>
             <translation>Osciloskop potřebuje připojený ventil: přejděte do režimu online (Komunikace → Režim online).</translation>
         </message>
         <message>
-            <source>Setpoint generator</source>
-            <translation>Generátor žádané hodnoty</translation>
-        </message>
-        <message>
-            <source>The generator will drive the valve's setpoint and the valve will move.
-Make sure the machine is safe to move. Start the generator?</source>
-            <translation>Generátor bude řídit žádanou hodnotu ventilu a ventil se bude pohybovat.
-Ujistěte se, že pohyb stroje je bezpečný. Spustit generátor?</translation>
-        </message>
-        <message>
             <source>The link dropped: the setpoint generator has stopped.</source>
             <translation>Spojení se přerušilo: generátor žádané hodnoty se zastavil.</translation>
         </message>
@@ -2654,14 +2665,6 @@ Ujistěte se, že pohyb stroje je bezpečný. Spustit generátor?</translation>
         <message>
             <source>The valve does not follow its setpoint: {0}</source>
             <translation>Ventil nesleduje svou žádanou hodnotu: {0}</translation>
-        </message>
-        <message>
-            <source>The valve does not follow its setpoint: {0}
-
-Enable it now (NMT start, control word 08h → 09h → 0Bh → 0Fh)?</source>
-            <translation>Ventil nesleduje svou žádanou hodnotu: {0}
-
-Uvolnit ho nyní (NMT start, řídicí slovo 08h → 09h → 0Bh → 0Fh)?</translation>
         </message>
     </context>
     <context>

@@ -1345,6 +1345,27 @@ Die letzte Aktion wurde womöglich nicht vollständig ausgeführt. Speichern Sie
         </message>
     </context>
     <context>
+        <name>GeneratorStart</name>
+        <message>
+            <source>Setpoint generator</source>
+            <translation>Sollwertgenerator</translation>
+        </message>
+        <message>
+            <source>The generator will drive the valve's setpoint and the valve will move.
+Make sure the machine is safe to move. Start the generator?</source>
+            <translation>Der Generator steuert den Sollwert des Ventils und das Ventil wird sich bewegen.
+Stellen Sie sicher, dass die Maschine sich gefahrlos bewegen kann. Generator starten?</translation>
+        </message>
+        <message>
+            <source>The valve does not follow its setpoint: {0}
+
+Enable it now (NMT start, control word 08h → 09h → 0Bh → 0Fh)?</source>
+            <translation>Das Ventil folgt seinem Sollwert nicht: {0}
+
+Jetzt freigeben (NMT Start, Steuerwort 08h → 09h → 0Bh → 0Fh)?</translation>
+        </message>
+    </context>
+    <context>
         <name>Help</name>
         <message>
             <source>Home page</source>
@@ -2585,16 +2606,6 @@ Ja lädt hoch und stellt den Eintrag in die Warteschlange; Nein lädt nichts hoc
             <translation>Das Oszilloskop braucht ein verbundenes Ventil: wechseln Sie online (Kommunikation → Online).</translation>
         </message>
         <message>
-            <source>Setpoint generator</source>
-            <translation>Sollwertgenerator</translation>
-        </message>
-        <message>
-            <source>The generator will drive the valve's setpoint and the valve will move.
-Make sure the machine is safe to move. Start the generator?</source>
-            <translation>Der Generator steuert den Sollwert des Ventils und das Ventil wird sich bewegen.
-Stellen Sie sicher, dass die Maschine sich gefahrlos bewegen kann. Generator starten?</translation>
-        </message>
-        <message>
             <source>The link dropped: the setpoint generator has stopped.</source>
             <translation>Die Verbindung ist abgebrochen: der Sollwertgenerator wurde gestoppt.</translation>
         </message>
@@ -2645,14 +2656,6 @@ Stellen Sie sicher, dass die Maschine sich gefahrlos bewegen kann. Generator sta
         <message>
             <source>The valve does not follow its setpoint: {0}</source>
             <translation>Das Ventil folgt seinem Sollwert nicht: {0}</translation>
-        </message>
-        <message>
-            <source>The valve does not follow its setpoint: {0}
-
-Enable it now (NMT start, control word 08h → 09h → 0Bh → 0Fh)?</source>
-            <translation>Das Ventil folgt seinem Sollwert nicht: {0}
-
-Jetzt freigeben (NMT Start, Steuerwort 08h → 09h → 0Bh → 0Fh)?</translation>
         </message>
     </context>
     <context>

@@ -19,6 +19,9 @@ from typing import TYPE_CHECKING, Protocol, runtime_checkable
 
 from PySide6.QtCore import SignalInstance
 
+if TYPE_CHECKING:
+    from prm9tool.scope import GeneratorSettings
+
 
 class ValveIdentity(Protocol):
     """Who the connected valve is (``DeviceInfo`` of the device layer)."""
@@ -235,6 +238,12 @@ class ScopeConnection(LinkState, Protocol):
 
     def write(self, mnemonic: str, raw: int | str) -> None:
         """Write one value to the valve (asynchronous)."""
+
+    def start_generator(self, settings: GeneratorSettings) -> None:
+        """Run a setpoint waveform on the valve's override, on the valve's time base."""
+
+    def stop_generator(self) -> None:
+        """End the waveform and switch the override off."""
 
 
 class StepSimulation(Protocol):
