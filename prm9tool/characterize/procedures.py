@@ -230,7 +230,7 @@ def static_test(
     finally:
         rig.release()
     channels = {k: raw[:, i] * BY_KEY[k].scale for i, k in enumerate(STATIC_KEYS)}
-    demand = sweep[: len(raw)]
+    demand = rig.last_demand[: len(raw)]
     rec = Record(np.arange(len(raw)) / fs, channels)
     figures = static_characteristic(demand, channels[STATIC_KEYS[2]])
     return StaticResult(rec, figures, demand, STATIC_KEYS[2])
