@@ -195,3 +195,15 @@ def test_over_a_link_the_figures_agree_with_the_stepped_emulator():
     stepped = bode_test(EmulatorRig(booted()), 10.0, 0.0, 2.0, 100.0, 2.0).response.bandwidth_hz()
     assert linked == pytest.approx(stepped, rel=0.05)
     assert static.gain == pytest.approx(1.0, abs=0.03)
+
+
+def test_model_autotune_of_the_e04_process_loop():
+    """An integrating plant (the actuator); the deviation's gain and offset stay in the loop."""
+    valve = EmulatedValve("PRM9-06.3Z11/30-24E04S02")
+    rig = EmulatorRig(valve)
+    targets = Targets(overshoot_pct=10.0, settling_s=0.5)
+    result = model_tune(rig, targets, loop="process", amplitude_pct=20.0)
+    assert result.model.integrating
+    assert result.model.gain == pytest.approx(4.0, rel=0.05)  # full stroke in 0.5 s at 100 %
+    assert result.meets_targets
+    assert rig.read(["PRCKP", "GAINSETPOS"]) == {"PRCKP": 200, "GAINSETPOS": 16384}

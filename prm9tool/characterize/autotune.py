@@ -71,7 +71,7 @@ def model_tune(
     duration = max(3.0 * targets.settling_s, 0.06)
     two_coils = TypeKey.parse(rig.info.type_key).variant.coils is Coils.AB
     out_lo = -16384.0 if two_coils else 0.0
-    with preserved(rig, names, chain_changes(rig)) as saved:
+    with preserved(rig, names, chain_changes(rig, loop)) as saved:
         before = _step(rig, lp, amplitude_pct, 0.0, duration, None, loop)
         data = [_io(before, lp.output, lp.actual)]
         t1 = from_parameters(lp.prefix, saved).t1
@@ -121,7 +121,7 @@ def compare_steps(
 ) -> tuple[StepResult, StepResult]:
     """Measured steps with the present and with the ``proposed`` gains (then put back)."""
     lp = LOOPS[loop]
-    with preserved(rig, gain_names(lp), chain_changes(rig)):
+    with preserved(rig, gain_names(lp), chain_changes(rig, loop)):
         before = _step(rig, lp, amplitude_pct, 0.0, duration_s, None, loop)
         rig.write(proposed)
         after = _step(rig, lp, amplitude_pct, 0.0, duration_s, None, loop)
