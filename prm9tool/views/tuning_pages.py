@@ -57,7 +57,7 @@ class PlotView(QWidget):
     def __init__(self, parent: QWidget | None = None) -> None:
         super().__init__(parent)
         self.plots: list[Plot] = []
-        self.setMinimumHeight(260)
+        self.setMinimumHeight(200)
 
     def show_plots(self, plots: list[Plot]) -> None:
         """Replace what is shown."""
@@ -87,6 +87,7 @@ class Page(QWidget):
         self.run_button.clicked.connect(self.run)
         self.result = QLabel()
         self.result.setWordWrap(True)
+        self.result.setMinimumHeight(self.result.fontMetrics().height() * 3)
         self.plot = PlotView()
         self.buttons = QHBoxLayout()
         self.buttons.addWidget(self.run_button)
@@ -193,7 +194,7 @@ class AutotunePage(Page):
             for k, v in self.proposal.items()
         ]
         self.result.setText(
-            head + "<br>" + "<br>".join(rows) + "<br>" + self._figures(before, after)
+            head + "<br>" + " · ".join(rows) + "<br>" + self._figures(before, after)
         )
         series = [
             Series(before.record.t * 1000, before.record.channels[LOOPS[loop].actual], self.tr("before (measured)"), COLOURS[0]),
