@@ -54,8 +54,8 @@ Poslední akce možná nebyla dokončena. Uložte svou práci pod novým názvem
             <translation>několik skoků o %1 % od 0 %, celkem asi %2 s</translation>
         </message>
         <message>
-            <source>P only with rising gain until the loop oscillates (steps of 5 %, oscillation stopped at ±40 %), about 5 s</source>
-            <translation>pouze P se stoupajícím zesílením, dokud se smyčka nerozkmitá (skoky 5 %, kmitání přerušeno při ±40 %), asi 5 s</translation>
+            <source>P only with rising gain until the loop oscillates (steps of 5 %, oscillation stopped at ±%1 %), about 5 s</source>
+            <translation>pouze P se stoupajícím zesílením, dokud se smyčka nerozkmitá (skoky 5 %, kmitání přerušeno při ±%1 %), asi 5 s</translation>
         </message>
         <message>
             <source>Model: gain %1, lags %2 ms, dead time %3 ms (fit error %4 %).</source>
@@ -124,6 +124,10 @@ Poslední akce možná nebyla dokončena. Uložte svou práci pod novým názvem
         <message>
             <source>Target settling time (±2 %) at most:</source>
             <translation>Doba ustálení (±2 %) nejvýše:</translation>
+        </message>
+        <message>
+            <source>Stop when the response leaves 0 ± (band):</source>
+            <translation>Přerušit, když odezva opustí 0 ± (pásmo):</translation>
         </message>
         <message>
             <source>Run autotune</source>

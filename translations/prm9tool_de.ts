@@ -54,8 +54,8 @@ Die letzte Aktion wurde womöglich nicht vollständig ausgeführt. Speichern Sie
             <translation>einige Sprünge von %1 % ab 0 %, insgesamt etwa %2 s</translation>
         </message>
         <message>
-            <source>P only with rising gain until the loop oscillates (steps of 5 %, oscillation stopped at ±40 %), about 5 s</source>
-            <translation>nur P mit steigender Verstärkung, bis der Kreis schwingt (Sprünge von 5 %, Schwingung bei ±40 % abgebrochen), etwa 5 s</translation>
+            <source>P only with rising gain until the loop oscillates (steps of 5 %, oscillation stopped at ±%1 %), about 5 s</source>
+            <translation>nur P mit steigender Verstärkung, bis der Kreis schwingt (Sprünge von 5 %, Schwingung bei ±%1 % abgebrochen), etwa 5 s</translation>
         </message>
         <message>
             <source>Model: gain %1, lags %2 ms, dead time %3 ms (fit error %4 %).</source>
@@ -124,6 +124,10 @@ Die letzte Aktion wurde womöglich nicht vollständig ausgeführt. Speichern Sie
         <message>
             <source>Target settling time (±2 %) at most:</source>
             <translation>Ausregelzeit (±2 %) höchstens:</translation>
+        </message>
+        <message>
+            <source>Stop when the response leaves 0 ± (band):</source>
+            <translation>Abbrechen, wenn die Antwort 0 ± (Band) verlässt:</translation>
         </message>
         <message>
             <source>Run autotune</source>
