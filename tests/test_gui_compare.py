@@ -51,12 +51,13 @@ def check(dialog, mnemonic, side):
     assert model.setData(index, Qt.CheckState.Checked.value, Qt.ItemDataRole.CheckStateRole)
 
 
-def answer_compare(monkeypatch, choices, target, shown):
+def answer_compare(monkeypatch, choices, target, shown, picture=None):
     def run(dialog):
         shown.append(dialog)
         for mnemonic, side in choices.items():
             check(dialog, mnemonic, side)
-        snapshot(dialog, "window_dialog_compare.png")
+        if picture:
+            snapshot(dialog, picture)
         assert dialog.apply_buttons[target].isEnabled()
         dialog.apply_buttons[target].click()
         return dialog.result()
@@ -118,7 +119,8 @@ def test_going_online_choose_per_parameter_makes_both_sides_agree(qtbot, window,
         OnlineDiffDialog, "exec", lambda d: (setattr(d, "choice", DiffChoice.CHOOSE), 1)[1]
     )
     shown = []
-    answer_compare(monkeypatch, {"LIMTA": 0}, BOTH, shown)  # DTAMP keeps the valve's (preset)
+    answer_compare(monkeypatch, {"LIMTA": 0}, BOTH, shown, "window_dialog_compare.png")
+    # DTAMP keeps the valve's value: every difference starts as "take the valve's"
     with qtbot.waitSignal(window.connection.operation_finished, timeout=TIMEOUT,
                           check_params_cb=lambda name, _r: name == "upload") as done:  # fmt: skip
         go_online(qtbot, window, f"{E02}:4301")
@@ -185,3 +187,20 @@ def test_an_unreachable_history_asks_and_no_uploads_nothing(qtbot, window, answe
     assert done.args[1].stored
     lines = (tmp_path / "q.jsonl").read_text(encoding="utf-8").splitlines()
     assert any('"operation": "upload"' in line for line in lines)
+
+
+def test_the_refuse_setting_uploads_nothing_without_the_history(qtbot, window, answers, tmp_path):
+    from prm9tool.history.config import save_settings
+
+    save_settings(None, "refuse")
+    damaged = tmp_path / "damaged.sqlite3"
+    damaged.write_bytes(b"not a database " * 100)
+    window.connection.set_recorder(Recorder(f"sqlite:///{damaged}", tmp_path / "q.jsonl"))
+    go_online(qtbot, window, f"{E02}:4304")
+    qtbot.waitUntil(lambda: window.sync.active, timeout=TIMEOUT)
+    with qtbot.waitSignal(window.connection.operation_finished, timeout=TIMEOUT,
+                          check_params_cb=lambda name, _r: name == "history_check"):  # fmt: skip
+        window.commands["upload"].trigger()
+    assert answers.asked == [] and "Upload refused" in answers.informed[-1]
+    queued = (tmp_path / "q.jsonl").read_text(encoding="utf-8")  # the download going online
+    assert '"operation": "download"' in queued and '"operation": "upload"' not in queued
