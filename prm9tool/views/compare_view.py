@@ -70,9 +70,8 @@ class CompareTableModel(QAbstractTableModel):
             return None
         if section < FIRST_VALUE:
             return [self.tr("Mnemonic"), self.tr("Description")][section]
-        side = section - FIRST_VALUE
-        sides = [*self.comparison.sides, self.comparison.reference]
-        return sides[side].label if sides[side] is not None else ""
+        shown = [*self.comparison.sides, self.comparison.reference][section - FIRST_VALUE]
+        return shown.label if shown is not None else ""
 
     def _side(self, column: int) -> int:
         side = column - FIRST_VALUE
