@@ -204,3 +204,28 @@ def test_the_refuse_setting_uploads_nothing_without_the_history(qtbot, window, a
     assert answers.asked == [] and "Upload refused" in answers.informed[-1]
     queued = (tmp_path / "q.jsonl").read_text(encoding="utf-8")  # the download going online
     assert '"operation": "download"' in queued and '"operation": "upload"' not in queued
+
+
+def test_a_record_is_restored_into_its_valve_and_exported(qtbot, window, answers, tmp_path):
+    window.connection.set_recorder(Recorder())
+    go_online(qtbot, window, f"{E02}:4305")
+    qtbot.waitUntil(lambda: window.sync.active, timeout=TIMEOUT)
+    original = dict(window.doc.values)
+    window.doc.set_value("DTAMP", 777)  # online: written to the valve at once
+    history = window.compare.show_history()
+    qtbot.addWidget(history)
+    qtbot.waitUntil(lambda: history.model.rowCount() == 1, timeout=TIMEOUT)
+    history.table.selectRow(0)  # the download when going online: the valve's values then
+    with qtbot.waitSignal(window.connection.operation_finished, timeout=TIMEOUT,
+                          check_params_cb=lambda name, _r: name == "upload") as done:  # fmt: skip
+        history.buttons["valve"].click()
+    assert done.args[1].stored and done.args[1].written == len(original)
+    assert window.doc.value("DTAMP") == original["DTAMP"]  # the document follows the valve
+    assert window.sync.differences() == {}
+    history.export_selected(str(tmp_path / "record.csv"))
+    text = (tmp_path / "record.csv").read_text(encoding="utf-8")
+    assert text.splitlines()[1] == "mnemonic,value,unit,description" and "\nDTAMP," in text
+    history.table.selectRow(0)
+    other = Recorder()
+    assert [r["operation"] for r in other.store().records(4305)][-1] == "upload"
+    other.close()

@@ -2856,6 +2856,10 @@ Ujistěte se, že pohyb stroje je bezpečný. Spustit generátor?</translation>
             <source>Factory values restored; the valve's previous parameters are in {0}</source>
             <translation>Tovární nastavení obnoveno; dosavadní parametry ventilu jsou v {0}</translation>
         </message>
+        <message>
+            <source>Values written to the valve</source>
+            <translation>Hodnoty zapsané do ventilu</translation>
+        </message>
         <message numerus="yes">
             <source>%n parameter(s) written, verified and stored</source>
             <translation>

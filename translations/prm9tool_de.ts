@@ -2846,6 +2846,10 @@ Stellen Sie sicher, dass die Maschine sich gefahrlos bewegen kann. Generator sta
             <source>Factory values restored; the valve's previous parameters are in {0}</source>
             <translation>Werkseinstellungen wiederhergestellt; die bisherigen Parameter des Ventils sind in {0}</translation>
         </message>
+        <message>
+            <source>Values written to the valve</source>
+            <translation>In das Ventil geschriebene Werte</translation>
+        </message>
         <message numerus="yes">
             <source>%n parameter(s) written, verified and stored</source>
             <translation>
