@@ -235,6 +235,12 @@ def show_internal_error(
 
 def run(args: argparse.Namespace, spools_problem: Prm9Error | None = None) -> int:
     """Start the GUI (``spools_problem``: why spools.json was left out); returns the exit code."""
+    from prm9tool.display import missing_x11_message, missing_x11_packages
+
+    missing = missing_x11_packages()
+    if missing:  # Qt would abort, naming another library than the missing one
+        sys.stderr.write(missing_x11_message(missing))
+        return ExitCode.USAGE
     app = create_application()
     window = create_window(args)
     sys.excepthook = lambda *exc: show_internal_error(window, *exc)

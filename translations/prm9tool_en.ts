@@ -89,10 +89,17 @@
             </translation>
         </message>
         <message numerus="yes">
-            <source>%n parameter(s) written, verified and stored</source>
+            <source>%n parameter(s) written, verified and stored at {0}</source>
             <translation>
-                <numerusform>%n parameter written, verified and stored</numerusform>
-                <numerusform>%n parameters written, verified and stored</numerusform>
+                <numerusform>%n parameter written, verified and stored at {0}</numerusform>
+                <numerusform>%n parameters written, verified and stored at {0}</numerusform>
+            </translation>
+        </message>
+        <message numerus="yes">
+            <source>%n parameter(s) written, verified and stored again at {0}: the valve already held them</source>
+            <translation>
+                <numerusform>%n parameter written, verified and stored again at {0}: the valve already held it</numerusform>
+                <numerusform>%n parameters written, verified and stored again at {0}: the valve already held them</numerusform>
             </translation>
         </message>
     </context>

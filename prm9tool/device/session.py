@@ -35,6 +35,7 @@ import numpy as np
 
 from prm9tool.catalogue import CATALOGUE, Parameter
 from prm9tool.catalogue.typekey import TypeKey
+from prm9tool.device.emulated import EmulatorControls
 from prm9tool.device.emulator.states import DeviceState, LedState, ValveStatus
 from prm9tool.device.entries import (
     STEPS,
@@ -52,6 +53,7 @@ from prm9tool.device.protocol import (
     Done,
     Identify,
     IdentifyReply,
+    Nmt,
     Reload,
     Request,
     Response,
@@ -124,6 +126,15 @@ class ValveSession:
     def transport(self) -> Transport:
         """The link this session talks over (statistics, fault injection in tests)."""
         return self._transport
+
+    @property
+    def emulator(self) -> EmulatorControls | None:
+        """Inputs, switches and faults of an emulated valve (None for a real one)."""
+        from prm9tool.device.transport.emulator import EmulatorTransport
+
+        if not isinstance(self._transport, EmulatorTransport):
+            return None
+        return EmulatorControls(self._transport)
 
     # --- identity and single values -------------------------------------------------------
     def identify(self) -> DeviceInfo:
@@ -249,6 +260,12 @@ class ValveSession:
         self._call(Restart(), Done)
         self._stream.forget()
         self._transport.reconnect()
+
+    def nmt(self, command: int) -> None:
+        """Send an NMT command (:class:`~prm9tool.catalogue.commissioning.NmtCommand`) to the
+        valve, as its CANopen master would (manual §7.2): start, stop, pre-operational, reset.
+        A valve with CANopen switched off ignores it."""
+        self._call(Nmt(int(command)), Done)
 
     def status(self) -> ValveStatus:
         """Device state, errors, LEDs, temperature and supply voltage."""

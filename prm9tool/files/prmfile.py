@@ -92,8 +92,15 @@ class PrmContents:
         hint: str = "",
     ) -> None:
         lines.extend(self.comments.get(name, leading or []))
+        value = _escape_controls(value)  # values from a device are data, never file structure
         entry = _entry_text(name, value)
         lines.append(entry + self.inline_comments.get(name, hint))
+
+
+def _escape_controls(value: str) -> str:
+    """``value`` with every control character written as ``\\xNN`` (a CR/LF in a firmware text
+    would otherwise start a new line, i.e. inject an entry)."""
+    return _CONTROL.sub(lambda m: f"\\x{ord(m.group()):02x}", value)
 
 
 def _entry_text(name: str, value: str) -> str:

@@ -254,6 +254,17 @@ class ValveConnection(QObject):
         """Run ``work(session)`` as a long operation; result: operation_finished(name, …)."""
         self._long_job(name, work)
 
+    def run(
+        self,
+        name: str,
+        work: Callable[[Any], object],
+        on_done: Callable[[object], None] | None = None,
+    ) -> None:
+        """Run ``work(session)`` in the worker between its polls (a short job: the connection
+        does not become busy); ``on_done(result)`` runs on the GUI thread, a failure arrives
+        as ``failed`` (or ``lost``)."""
+        self._submit(_Job(name, work, on_done, report=False))
+
     def cancel(self) -> None:
         """Ask the running long operation to stop at the next safe point."""
         self._cancel.set()

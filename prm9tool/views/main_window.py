@@ -10,9 +10,9 @@ from collections.abc import Callable
 from pathlib import Path
 from typing import TYPE_CHECKING
 
-from PySide6.QtCore import QByteArray, QEvent, QSettings
+from PySide6.QtCore import QByteArray, QEvent, QLocale, QSettings
 from PySide6.QtGui import QCloseEvent, QDragEnterEvent, QDropEvent
-from PySide6.QtWidgets import QMainWindow, QScrollArea, QStackedWidget, QWidget
+from PySide6.QtWidgets import QApplication, QMainWindow, QScrollArea, QStackedWidget, QWidget
 
 from prm9tool import i18n
 from prm9tool.catalogue import Access
@@ -22,11 +22,13 @@ from prm9tool.model.password import PasswordStore
 from prm9tool.model.undo import DocumentUndo
 from prm9tool.online.connection import ValveConnection
 from prm9tool.online.sync import ValveSync
+from prm9tool.online.valve_control import ValveControl
 from prm9tool.views import prompts
 from prm9tool.views.access_dialog import ChangePasswordDialog, PasswordDialog
 from prm9tool.views.actions import MainActions
 from prm9tool.views.compare_workflow import CompareWorkflow
 from prm9tool.views.emcy import status_summary
+from prm9tool.views.emulated_valve import EmulatedValveMenu
 from prm9tool.views.file_workflow import FileWorkflow
 from prm9tool.views.help_dialog import HelpWindow, about_html, open_homepage
 from prm9tool.views.icons import icon
@@ -67,10 +69,12 @@ class MainWindow(QMainWindow):
         self.sync = ValveSync(doc, connection, self)
         self.files = FileWorkflow(self, doc, undo, settings)
         self.valve = ValveWorkflow(self, doc, undo, connection, self.sync, settings, access)
+        self.control = ValveControl(connection, self)
         self.records = RecordActions(self)
         self.compare = CompareWorkflow(self, doc, undo, access, connection, self.sync, self.valve)
         self.commands = MainActions(self)
         self.commands.build_menus(self.menuBar())
+        self.emulated_menu = EmulatedValveMenu(self.control, doc, self).attach(self.commands)
         self.commands.build_toolbar(self.addToolBar("toolbar"))
         self.status = MainStatusBar(self)
         self.setStatusBar(self.status)
@@ -101,12 +105,14 @@ class MainWindow(QMainWindow):
         view.measuring_point_clicked.connect(self.open_scope)
         view.valve_selection_requested.connect(self.new_document)  # asks about unsaved changes
         view.canopen_requested.connect(self.show_canopen_window)
+        view.tuning_requested.connect(self.show_tuning_window)
         return view
 
     def _make_scope_view(self) -> QWidget:
         from prm9tool.views.scope import ScopeWidget
 
-        self._scope = ScopeWidget(self.connection, self.doc, self)
+        self._scope = ScopeWidget(self.connection, self.doc, self, control=self.control)
+        self._scope.tuning_requested.connect(lambda: self.show_tuning_window("position"))
         return self._scope
 
     def _add_page(self, name: str, view: QWidget) -> None:
@@ -122,6 +128,19 @@ class MainWindow(QMainWindow):
         view = self._make_scope_view()
         self._add_page(name, view)
         return view
+
+    def show_tuning_window(self, loop: str = "position") -> None:
+        """Open (or raise) the Tuning window on ``loop`` (``position`` or ``process``)."""
+        from prm9tool.views.tuning_window import TuningWindow
+
+        window = getattr(self, "tuning_window", None)
+        if window is None or window.doc is not self.doc:
+            window = self.tuning_window = TuningWindow(self.doc, self.connection, self)
+        index = window.loop.findData(loop)
+        if index >= 0 and not window.runner.busy:
+            window.loop.setCurrentIndex(index)
+        window.show()
+        window.raise_()
 
     def open_scope(self, key: str | None = None) -> None:
         """Switch to the oscilloscope (online only) and preselect measuring point ``key``."""
@@ -176,7 +195,7 @@ class MainWindow(QMainWindow):
             "online": lambda: self.valve.go_online(),
             "offline": self.valve.go_offline,
             "help": self.show_help,
-            "homepage": open_homepage,
+            "homepage": lambda: open_homepage(self),
             "about": self.show_about,
             "compare_file": self.compare.compare_with_file,
             "compare_valve": self.compare.compare_with_valve,
@@ -284,6 +303,8 @@ class MainWindow(QMainWindow):
     def set_language(self, language: str) -> None:
         """Switch the program language now and remember it."""
         i18n.set_language(language)
+        for window in QApplication.topLevelWidgets():  # children without a locale of their own
+            window.setLocale(QLocale(language))  # follow: spin boxes take the new decimal comma
         self.settings.setValue("language", language)
         self.status.clearMessage()  # a message of the language before would stay
         self._update_actions()
@@ -291,7 +312,7 @@ class MainWindow(QMainWindow):
     def show_status_window(self) -> ValveStatusWindow:
         """Show the (non-modal) valve status window."""
         if self.status_window is None:
-            self.status_window = ValveStatusWindow(self.connection, self)
+            self.status_window = ValveStatusWindow(self.connection, self, self.control)
         self.status_window.show()
         self.status_window.raise_()
         return self.status_window

@@ -20,7 +20,7 @@ from PySide6.QtWidgets import (
 )
 
 from prm9tool.catalogue import CATALOGUE
-from prm9tool.i18n import text
+from prm9tool.i18n import format_value, text
 
 Raw = int | str
 
@@ -39,7 +39,7 @@ def _cell(mnemonic: str, raw: Raw | None) -> str:
         return "—"
     param = CATALOGUE[mnemonic]
     unit = f" {param.unit}" if param.unit else ""
-    return param.format_display(raw) + unit
+    return format_value(param, raw) + unit
 
 
 class OnlineDiffDialog(QDialog):

@@ -11,7 +11,7 @@ from collections.abc import Callable, Mapping
 from dataclasses import dataclass
 from typing import Any
 
-from PySide6.QtCore import QObject, QSettings, Qt, Signal
+from PySide6.QtCore import QObject, QSettings, Qt, QTime, Signal
 from PySide6.QtWidgets import QDialog, QProgressDialog, QWidget
 
 from prm9tool.catalogue import CATALOGUE, Access, variant_label
@@ -62,6 +62,7 @@ class ValveWorkflow(QObject):
         self._settings = settings
         self.progress_dialog: QProgressDialog | None = None
         self._operation = ""
+        self._upload_repeats = False  # the running upload sends what the valve holds already
         self._pending_upload: dict[str, Raw] = {}
         self._uploading: dict[str, Raw] = {}  # the values of the running upload
         # "choose per parameter" in the going-online dialog (the compare workflow sets it)
@@ -270,6 +271,9 @@ class ValveWorkflow(QObject):
         if not self._basic_user_confirms_expert_values(known):
             self.message_posted.emit(self.tr("Nothing was sent to the valve"))
             return False
+        # the valve holds the document already (edits went to it, nothing left unstored)
+        self._upload_repeats = self._sync.active and not self._sync.unstored
+        self._upload_repeats &= not self._sync.differences()
         self.upload_values(self._doc.values)
         return True
 
@@ -398,9 +402,17 @@ class ValveWorkflow(QObject):
                     self._doc.set_values(written, self.tr("Values written to the valve"), False)
             self._sync.start(self._doc.values)
             count = int(getattr(result, "written", 0))
-            self.message_posted.emit(
-                self.tr("%n parameter(s) written, verified and stored", "", count)
-            )
+            at = QTime.currentTime().toString("HH:mm:ss")  # each upload's message differs
+            message = self.tr("%n parameter(s) written, verified and stored at {0}", "", count)
+            repeats, self._upload_repeats = self._upload_repeats, False
+            if repeats:
+                message = self.tr(
+                    "%n parameter(s) written, verified and stored again at {0}: the valve "
+                    "already held them",
+                    "",
+                    count,
+                )
+            self.message_posted.emit(message.format(at))
             return
         mismatches = getattr(result, "mismatches", {}) or {}
         lines = [f"{mn}: {want} → {got}" for mn, (want, got) in mismatches.items()]
