@@ -540,6 +540,10 @@ Poslední akce možná nebyla dokončena. Uložte svou práci pod novým názvem
     <context>
         <name>CompareWorkflow</name>
         <message>
+            <source>History: {0}</source>
+            <translation>Historie: {0}</translation>
+        </message>
+        <message>
             <source>Document</source>
             <translation>Dokument</translation>
         </message>

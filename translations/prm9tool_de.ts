@@ -537,6 +537,10 @@ Die letzte Aktion wurde womöglich nicht vollständig ausgeführt. Speichern Sie
     <context>
         <name>CompareWorkflow</name>
         <message>
+            <source>History: {0}</source>
+            <translation>Verlauf: {0}</translation>
+        </message>
+        <message>
             <source>Document</source>
             <translation>Dokument</translation>
         </message>
