@@ -544,6 +544,10 @@ Poslední akce možná nebyla dokončena. Uložte svou práci pod novým názvem
     <context>
         <name>CompareWorkflow</name>
         <message>
+            <source>History: {0}</source>
+            <translation>Historie: {0}</translation>
+        </message>
+        <message>
             <source>Document</source>
             <translation>Dokument</translation>
         </message>
@@ -3582,6 +3586,10 @@ Zajistěte, aby to hydraulika bezpečně snesla. Tlačítko Stop test kdykoli uk
         <message>
             <source>Set every parameter of the document to the factory default?</source>
             <translation>Nastavit všechny parametry dokumentu na tovární hodnoty?</translation>
+        </message>
+        <message>
+            <source>Values written to the valve</source>
+            <translation>Hodnoty zapsané do ventilu</translation>
         </message>
         <message numerus="yes">
             <source>%n parameter(s) written, verified and stored at {0}</source>

@@ -541,6 +541,10 @@ Die letzte Aktion wurde womöglich nicht vollständig ausgeführt. Speichern Sie
     <context>
         <name>CompareWorkflow</name>
         <message>
+            <source>History: {0}</source>
+            <translation>Verlauf: {0}</translation>
+        </message>
+        <message>
             <source>Document</source>
             <translation>Dokument</translation>
         </message>
@@ -3572,6 +3576,10 @@ Stellen Sie sicher, dass die Hydraulik dafür sicher ist. Stopp beendet ihn jede
         <message>
             <source>Set every parameter of the document to the factory default?</source>
             <translation>Alle Parameter des Dokuments auf die Werkseinstellung setzen?</translation>
+        </message>
+        <message>
+            <source>Values written to the valve</source>
+            <translation>In das Ventil geschriebene Werte</translation>
         </message>
         <message numerus="yes">
             <source>%n parameter(s) written, verified and stored at {0}</source>

@@ -54,6 +54,10 @@ class CompareWorkflow(QObject):
         self._connection, self._sync, self._valve = connection, sync, valve
         valve.choose_per_parameter = self.choose_going_online
         connection.operation_finished.connect(self._on_connection_operation_finished)
+        connection.history_problem.connect(self._on_connection_history_problem)
+
+    def _on_connection_history_problem(self, text: str) -> None:
+        self.message_posted.emit(self.tr("History: {0}").format(text))
 
     # --- sides ----------------------------------------------------------------------------
     def _document(self) -> Side:

@@ -65,6 +65,7 @@ class ValveWorkflow(QObject):
         self._operation = ""
         self._upload_repeats = False  # the running upload sends what the valve holds already
         self._pending_upload: dict[str, Raw] = {}
+        self._uploading: dict[str, Raw] = {}  # the values of the running upload
         # "choose per parameter" in the going-online dialog (the compare workflow sets it)
         self.choose_per_parameter: Callable[[Mapping[str, Raw]], None] | None = None
         connection.online_changed.connect(self._on_connection_online_changed)
@@ -290,6 +291,7 @@ class ValveWorkflow(QObject):
 
     def _start_upload(self) -> None:
         values, self._pending_upload = self._pending_upload, {}
+        self._uploading = values
         self._start("upload", self.tr("Uploading the parameters to the valve…"))
         self._connection.upload(values)
 
@@ -396,6 +398,11 @@ class ValveWorkflow(QObject):
     def _on_upload_finished(self, result: object) -> None:
         outcome = result if isinstance(result, UploadOutcome) else None
         if outcome is not None and outcome.stored:
+            # values not from the document (a history record) become the document's too
+            written = {m: v for m, v in self._uploading.items() if self._doc.values.get(m) != v}
+            if written:
+                with self._sync.suspended():
+                    self._doc.set_values(written, self.tr("Values written to the valve"), False)
             self._sync.start(self._doc.values)
             at = QTime.currentTime().toString("HH:mm:ss")  # each upload's message differs
             count = outcome.written
