@@ -54,8 +54,8 @@ Poslední akce možná nebyla dokončena. Uložte svou práci pod novým názvem
             <translation>několik skoků o %1 % od 0 %, celkem asi %2 s</translation>
         </message>
         <message>
-            <source>P only with rising gain until the loop oscillates (steps of 5 %, oscillation stopped at ±40 %), about 5 s</source>
-            <translation>pouze P se stoupajícím zesílením, dokud se smyčka nerozkmitá (skoky 5 %, kmitání přerušeno při ±40 %), asi 5 s</translation>
+            <source>P only with rising gain until the loop oscillates (steps of 5 %, oscillation stopped at ±%1 %), about 5 s</source>
+            <translation>pouze P se stoupajícím zesílením, dokud se smyčka nerozkmitá (skoky 5 %, kmitání přerušeno při ±%1 %), asi 5 s</translation>
         </message>
         <message>
             <source>Model: gain %1, lags %2 ms, dead time %3 ms (fit error %4 %).</source>
@@ -124,6 +124,10 @@ Poslední akce možná nebyla dokončena. Uložte svou práci pod novým názvem
         <message>
             <source>Target settling time (±2 %) at most:</source>
             <translation>Doba ustálení (±2 %) nejvýše:</translation>
+        </message>
+        <message>
+            <source>Stop when the response leaves 0 ± (band):</source>
+            <translation>Přerušit, když odezva opustí 0 ± (pásmo):</translation>
         </message>
         <message>
             <source>Run autotune</source>
@@ -539,6 +543,10 @@ Poslední akce možná nebyla dokončena. Uložte svou práci pod novým názvem
     </context>
     <context>
         <name>CompareWorkflow</name>
+        <message>
+            <source>History: {0}</source>
+            <translation>Historie: {0}</translation>
+        </message>
         <message>
             <source>Document</source>
             <translation>Dokument</translation>
@@ -1914,8 +1922,8 @@ Ano načte a záznam zařadí do fronty; Ne nenačte nic.</translation>
             <translation>Režim: {0}</translation>
         </message>
         <message>
-            <source>Connected; the document and the valve are being compared</source>
-            <translation>Připojeno; dokument a ventil se porovnávají</translation>
+            <source>Connected, but the document and the valve do not agree yet: edits are not sent to the valve</source>
+            <translation>Připojeno, ale dokument a ventil se zatím neshodují: změny se do ventilu neposílají</translation>
         </message>
         <message>
             <source>Expert</source>
@@ -3578,6 +3586,10 @@ Zajistěte, aby to hydraulika bezpečně snesla. Tlačítko Stop test kdykoli uk
         <message>
             <source>Set every parameter of the document to the factory default?</source>
             <translation>Nastavit všechny parametry dokumentu na tovární hodnoty?</translation>
+        </message>
+        <message>
+            <source>Values written to the valve</source>
+            <translation>Hodnoty zapsané do ventilu</translation>
         </message>
         <message numerus="yes">
             <source>%n parameter(s) written, verified and stored at {0}</source>

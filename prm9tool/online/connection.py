@@ -18,7 +18,7 @@ import threading
 import time
 from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING, Any, cast
 
 from PySide6.QtCore import QObject, Qt, Signal
 
@@ -28,6 +28,7 @@ from prm9tool.online.setpoint_driver import SetpointDriver, StreamClock
 from prm9tool.translate import error_text
 
 if TYPE_CHECKING:
+    from prm9tool.online.connection_protocol import ListedValves, ValveIdentity
     from prm9tool.online.recording import HistoryHook
     from prm9tool.scope import GeneratorSettings  # not at run time: numpy, at start-up
 
@@ -50,7 +51,7 @@ class _Job:
 
 
 class ValveConnection(QObject):
-    """Online/offline state and asynchronous operations on one valve (see gui_contracts.md)."""
+    """Online/offline state and asynchronous operations on one valve (docs/ARCHITECTURE.md)."""
 
     online_changed = Signal(bool)
     device_changed = Signal(object)  # DeviceInfo or None
@@ -90,7 +91,7 @@ class ValveConnection(QObject):
         self._cancel = threading.Event()
         self._session: Any = None  # touched by the worker thread only
         self._online = False
-        self._device: object | None = None
+        self._device: ValveIdentity | None = None
         self._busy = 0
         self._last_progress = 0.0
         self._poller = Poller()  # worker-side state of the periodic reads
@@ -129,7 +130,7 @@ class ValveConnection(QObject):
         return self._online
 
     @property
-    def device(self) -> object | None:
+    def device(self) -> ValveIdentity | None:
         """The DeviceInfo of the connected valve, or None."""
         return self._device
 
@@ -158,7 +159,7 @@ class ValveConnection(QObject):
         return self._lister(emulators)
 
     def list_devices_async(
-        self, emulators: Sequence[str], deliver: Callable[[object], None]
+        self, emulators: Sequence[str], deliver: Callable[[ListedValves], None]
     ) -> None:
         """:meth:`list_devices` in a thread of its own; ``deliver(entries)`` — or
         ``deliver(exception)`` if listing failed — runs on the GUI thread."""
@@ -166,7 +167,7 @@ class ValveConnection(QObject):
 
         def run() -> None:
             try:
-                found: object = self._lister(specs)
+                found: ListedValves = self._lister(specs)
             except Exception as exc:  # e.g. a broken USB stack: the caller says so
                 found = exc
             # RuntimeError: the connection was deleted meanwhile, nobody is waiting
@@ -366,7 +367,7 @@ class ValveConnection(QObject):
     def _on_opened(self, info: object) -> None:
         self._set_busy(-1)
         self._online = True
-        self._device = info
+        self._device = cast("ValveIdentity", info)  # what the session's identify() returned
         self.device_changed.emit(info)
         self.online_changed.emit(True)
 

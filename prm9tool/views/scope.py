@@ -333,7 +333,7 @@ class ScopeWidget(QWidget):
 
     def _recording_text(self) -> str:
         rate = self.display.capture.rate_hz if self.display.capture else 0
-        lost = getattr(self._connection, "samples_lost", 0) or 0
+        lost = self._connection.samples_lost
         text = self.tr("Recording at {0} Hz.").format(rate)
         if lost:
             text += " " + self.tr("{0} samples lost on the link.").format(lost)
