@@ -142,7 +142,10 @@ def test_a_refused_write_ends_the_driver_and_is_reported():
     session.refuse.add("SETPOVR")
     clock.now = 0.1
     _wait_for(lambda: refused)
-    assert refused[0][0] == "SETPOVR" and "0x2050" in refused[0][1].lower().replace("h", "")
+    assert refused[0] == (
+        "SETPOVR",
+        "0x2050/2: abort 0x06090031 (value of parameter written too high)",
+    )
     driver.stop()
     assert session.writes[-1] == ("SETPOVRON", 0)
 
