@@ -62,7 +62,7 @@ def test_square_edges_fall_on_the_valves_cycles(session, period, half_cycles):
 
 def test_the_override_goes_on_with_the_first_value_and_off_at_stop(session):
     valve = session.transport.valve
-    driver = SetpointDriver(session, GeneratorSettings(Waveform.STEP, 20.0, 10.0, 1.0), print)
+    driver = SetpointDriver(session, GeneratorSettings(Waveform.STEP, 20.0, 10.0, 1.0), _never)
     driver.start()
     assert driver.exact  # an emulated valve runs the waveform itself
     assert valve.read(*CATALOGUE["SETPOVRON"].key) == 1
@@ -70,6 +70,10 @@ def test_the_override_goes_on_with_the_first_value_and_off_at_stop(session):
     driver.stop()
     assert valve.read(*CATALOGUE["SETPOVRON"].key) == 0
     assert valve._fw.program is None
+
+
+def _never(mnemonic: str, exc: Exception) -> None:
+    raise AssertionError(f"refused {mnemonic}: {exc}")
 
 
 class _LinkSession:
@@ -115,7 +119,7 @@ def _wait_for(condition, timeout_s: float = 5.0) -> None:
 
 def test_over_a_link_the_writes_follow_the_stream_time_and_keep_the_override_alive():
     session, clock = _LinkSession(), _Clock()
-    driver = SetpointDriver(session, GeneratorSettings(Waveform.SQUARE, 40.0, 10.0, 0.2), print,
+    driver = SetpointDriver(session, GeneratorSettings(Waveform.SQUARE, 40.0, 10.0, 0.2), _never,
                             clock)  # fmt: skip
     driver.start()
     assert not driver.exact
