@@ -4,7 +4,15 @@ from __future__ import annotations
 
 from typing import TYPE_CHECKING
 
-from PySide6.QtWidgets import QLineEdit, QPushButton, QTableWidget, QTableWidgetItem
+from PySide6.QtWidgets import (
+    QFileDialog,
+    QHBoxLayout,
+    QLabel,
+    QLineEdit,
+    QPushButton,
+    QTableWidget,
+    QTableWidgetItem,
+)
 
 from prm9tool.analysis.profile import DEFAULT, ProfileError, load_profile
 from prm9tool.characterize.run import Characterization, characterize, write_csv_files
@@ -20,7 +28,14 @@ class ReportPage(Page):
 
     def __init__(self, window: TuningWindow) -> None:
         super().__init__(window)
-        self.profile_path = self.field("profile", QLineEdit())
+        self.profile_path = QLineEdit()
+        self.browse_button = QPushButton()
+        self.browse_button.clicked.connect(self.browse)
+        row = QHBoxLayout()
+        row.addWidget(self.profile_path, 1)
+        row.addWidget(self.browse_button)
+        self.labels["profile"] = QLabel()
+        self.form.addRow(self.labels["profile"], row)
         self.table = QTableWidget(0, 4)
         self.layout().insertWidget(3, self.table, 1)  # type: ignore[union-attr]
         self.plot.hide()
@@ -29,6 +44,14 @@ class ReportPage(Page):
         self.save_button.clicked.connect(self.save)
         self.buttons.insertWidget(1, self.save_button)
         self.last: Characterization | None = None
+
+    def browse(self) -> None:
+        """Choose the acceptance profile file."""
+        path, _ = QFileDialog.getOpenFileName(
+            self, self.tr("Acceptance profile"), self.profile_path.text(), "TOML (*.toml)"
+        )
+        if path:
+            self.profile_path.setText(path)
 
     def run(self) -> None:
         """All tests of the profile."""
@@ -76,6 +99,7 @@ class ReportPage(Page):
         self.tr_label("profile", self.tr("Acceptance profile (TOML, empty: default):"))
         self.run_button.setText(self.tr("Run the end-of-line test"))
         self.save_button.setText(self.tr("Save PDF and CSV…"))
+        self.browse_button.setText(self.tr("Browse…"))
         self.table.setHorizontalHeaderLabels(
             [self.tr("Figure"), self.tr("Value"), self.tr("Limit"), self.tr("Result")]
         )
