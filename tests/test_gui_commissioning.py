@@ -97,3 +97,13 @@ def test_pulling_the_cable_takes_the_program_offline_with_a_message(qtbot, windo
         window.emulated_menu.cable_action.trigger()
     assert not window.connection.is_online
     assert not window.emulated_menu.isEnabled()
+
+
+def test_a_valve_without_canopen_enables_itself_and_offers_no_commissioning(qtbot, tmp_path):
+    with main_window(qtbot, tmp_path) as window:  # an E02 without -CA: analog only
+        go_online(qtbot, window, "PRM9-06.3Z11/30-24E02S02:4302")
+        emulated(4302).advance(2.0)
+        panel = window.show_status_window().commissioning
+        qtbot.waitUntil(lambda: "follows its setpoint" in panel.reason.text(), timeout=TIMEOUT)
+        assert not any(button.isEnabled() for button in panel.buttons.values())
+        assert window.status.status_label.text() == "Status: ok"

@@ -544,6 +544,10 @@ Poslední akce možná nebyla dokončena. Uložte svou práci pod novým názvem
     <context>
         <name>CompareWorkflow</name>
         <message>
+            <source>History: {0}</source>
+            <translation>Historie: {0}</translation>
+        </message>
+        <message>
             <source>Document</source>
             <translation>Dokument</translation>
         </message>
@@ -1355,6 +1359,27 @@ Poslední akce možná nebyla dokončena. Uložte svou práci pod novým názvem
         </message>
     </context>
     <context>
+        <name>GeneratorStart</name>
+        <message>
+            <source>Setpoint generator</source>
+            <translation>Generátor žádané hodnoty</translation>
+        </message>
+        <message>
+            <source>The generator will drive the valve's setpoint and the valve will move.
+Make sure the machine is safe to move. Start the generator?</source>
+            <translation>Generátor bude řídit žádanou hodnotu ventilu a ventil se bude pohybovat.
+Ujistěte se, že pohyb stroje je bezpečný. Spustit generátor?</translation>
+        </message>
+        <message>
+            <source>The valve does not follow its setpoint: {0}
+
+Enable it now (NMT start, control word 08h → 09h → 0Bh → 0Fh)?</source>
+            <translation>Ventil nesleduje svou žádanou hodnotu: {0}
+
+Uvolnit ho nyní (NMT start, řídicí slovo 08h → 09h → 0Bh → 0Fh)?</translation>
+        </message>
+    </context>
+    <context>
         <name>Help</name>
         <message>
             <source>Home page</source>
@@ -1897,8 +1922,8 @@ Ano načte a záznam zařadí do fronty; Ne nenačte nic.</translation>
             <translation>Režim: {0}</translation>
         </message>
         <message>
-            <source>Connected; the document and the valve are being compared</source>
-            <translation>Připojeno; dokument a ventil se porovnávají</translation>
+            <source>Connected, but the document and the valve do not agree yet: edits are not sent to the valve</source>
+            <translation>Připojeno, ale dokument a ventil se zatím neshodují: změny se do ventilu neposílají</translation>
         </message>
         <message>
             <source>Expert</source>
@@ -2606,16 +2631,6 @@ Ano načte a záznam zařadí do fronty; Ne nenačte nic.</translation>
             <translation>Osciloskop potřebuje připojený ventil: přejděte do režimu online (Komunikace → Režim online).</translation>
         </message>
         <message>
-            <source>Setpoint generator</source>
-            <translation>Generátor žádané hodnoty</translation>
-        </message>
-        <message>
-            <source>The generator will drive the valve's setpoint and the valve will move.
-Make sure the machine is safe to move. Start the generator?</source>
-            <translation>Generátor bude řídit žádanou hodnotu ventilu a ventil se bude pohybovat.
-Ujistěte se, že pohyb stroje je bezpečný. Spustit generátor?</translation>
-        </message>
-        <message>
             <source>The link dropped: the setpoint generator has stopped.</source>
             <translation>Spojení se přerušilo: generátor žádané hodnoty se zastavil.</translation>
         </message>
@@ -2666,14 +2681,6 @@ Ujistěte se, že pohyb stroje je bezpečný. Spustit generátor?</translation>
         <message>
             <source>The valve does not follow its setpoint: {0}</source>
             <translation>Ventil nesleduje svou žádanou hodnotu: {0}</translation>
-        </message>
-        <message>
-            <source>The valve does not follow its setpoint: {0}
-
-Enable it now (NMT start, control word 08h → 09h → 0Bh → 0Fh)?</source>
-            <translation>Ventil nesleduje svou žádanou hodnotu: {0}
-
-Uvolnit ho nyní (NMT start, řídicí slovo 08h → 09h → 0Bh → 0Fh)?</translation>
         </message>
     </context>
     <context>
@@ -3587,6 +3594,10 @@ Zajistěte, aby to hydraulika bezpečně snesla. Tlačítko Stop test kdykoli uk
         <message>
             <source>Set every parameter of the document to the factory default?</source>
             <translation>Nastavit všechny parametry dokumentu na tovární hodnoty?</translation>
+        </message>
+        <message>
+            <source>Values written to the valve</source>
+            <translation>Hodnoty zapsané do ventilu</translation>
         </message>
         <message numerus="yes">
             <source>%n parameter(s) written, verified and stored at {0}</source>

@@ -541,6 +541,10 @@ Die letzte Aktion wurde womöglich nicht vollständig ausgeführt. Speichern Sie
     <context>
         <name>CompareWorkflow</name>
         <message>
+            <source>History: {0}</source>
+            <translation>Verlauf: {0}</translation>
+        </message>
+        <message>
             <source>Document</source>
             <translation>Dokument</translation>
         </message>
@@ -1349,6 +1353,27 @@ Die letzte Aktion wurde womöglich nicht vollständig ausgeführt. Speichern Sie
         </message>
     </context>
     <context>
+        <name>GeneratorStart</name>
+        <message>
+            <source>Setpoint generator</source>
+            <translation>Sollwertgenerator</translation>
+        </message>
+        <message>
+            <source>The generator will drive the valve's setpoint and the valve will move.
+Make sure the machine is safe to move. Start the generator?</source>
+            <translation>Der Generator steuert den Sollwert des Ventils und das Ventil wird sich bewegen.
+Stellen Sie sicher, dass die Maschine sich gefahrlos bewegen kann. Generator starten?</translation>
+        </message>
+        <message>
+            <source>The valve does not follow its setpoint: {0}
+
+Enable it now (NMT start, control word 08h → 09h → 0Bh → 0Fh)?</source>
+            <translation>Das Ventil folgt seinem Sollwert nicht: {0}
+
+Jetzt freigeben (NMT Start, Steuerwort 08h → 09h → 0Bh → 0Fh)?</translation>
+        </message>
+    </context>
+    <context>
         <name>Help</name>
         <message>
             <source>Home page</source>
@@ -1890,8 +1915,8 @@ Ja lädt hoch und stellt den Eintrag in die Warteschlange; Nein lädt nichts hoc
             <translation>Modus: {0}</translation>
         </message>
         <message>
-            <source>Connected; the document and the valve are being compared</source>
-            <translation>Verbunden; Dokument und Ventil werden verglichen</translation>
+            <source>Connected, but the document and the valve do not agree yet: edits are not sent to the valve</source>
+            <translation>Verbunden, aber Dokument und Ventil stimmen noch nicht überein: Änderungen werden nicht an das Ventil gesendet</translation>
         </message>
         <message>
             <source>Expert</source>
@@ -2597,16 +2622,6 @@ Ja lädt hoch und stellt den Eintrag in die Warteschlange; Nein lädt nichts hoc
             <translation>Das Oszilloskop braucht ein verbundenes Ventil: wechseln Sie online (Kommunikation → Online).</translation>
         </message>
         <message>
-            <source>Setpoint generator</source>
-            <translation>Sollwertgenerator</translation>
-        </message>
-        <message>
-            <source>The generator will drive the valve's setpoint and the valve will move.
-Make sure the machine is safe to move. Start the generator?</source>
-            <translation>Der Generator steuert den Sollwert des Ventils und das Ventil wird sich bewegen.
-Stellen Sie sicher, dass die Maschine sich gefahrlos bewegen kann. Generator starten?</translation>
-        </message>
-        <message>
             <source>The link dropped: the setpoint generator has stopped.</source>
             <translation>Die Verbindung ist abgebrochen: der Sollwertgenerator wurde gestoppt.</translation>
         </message>
@@ -2657,14 +2672,6 @@ Stellen Sie sicher, dass die Maschine sich gefahrlos bewegen kann. Generator sta
         <message>
             <source>The valve does not follow its setpoint: {0}</source>
             <translation>Das Ventil folgt seinem Sollwert nicht: {0}</translation>
-        </message>
-        <message>
-            <source>The valve does not follow its setpoint: {0}
-
-Enable it now (NMT start, control word 08h → 09h → 0Bh → 0Fh)?</source>
-            <translation>Das Ventil folgt seinem Sollwert nicht: {0}
-
-Jetzt freigeben (NMT Start, Steuerwort 08h → 09h → 0Bh → 0Fh)?</translation>
         </message>
     </context>
     <context>
@@ -3577,6 +3584,10 @@ Stellen Sie sicher, dass die Hydraulik dafür sicher ist. Stopp beendet ihn jede
         <message>
             <source>Set every parameter of the document to the factory default?</source>
             <translation>Alle Parameter des Dokuments auf die Werkseinstellung setzen?</translation>
+        </message>
+        <message>
+            <source>Values written to the valve</source>
+            <translation>In das Ventil geschriebene Werte</translation>
         </message>
         <message numerus="yes">
             <source>%n parameter(s) written, verified and stored at {0}</source>

@@ -71,8 +71,8 @@ class CompareTableModel(QAbstractTableModel):
         if section < FIRST_VALUE:
             return [self.tr("Mnemonic"), self.tr("Description")][section]
         side = section - FIRST_VALUE
-        sides = [*self.comparison.sides, self.comparison.reference]
-        return sides[side].label if sides[side] is not None else ""
+        entry = [*self.comparison.sides, self.comparison.reference][side]
+        return entry.label if entry is not None else ""
 
     def _side(self, column: int) -> int:
         side = column - FIRST_VALUE
