@@ -2463,6 +2463,10 @@ Ano načte a záznam zařadí do fronty; Ne nenačte nic.</translation>
     <context>
         <name>ReportPage</name>
         <message>
+            <source>Acceptance profile</source>
+            <translation>Přejímací profil</translation>
+        </message>
+        <message>
             <source>steps of %1 %, a sine sweep of ±%2 % and a triangle over the whole range, about %3 s</source>
             <translation>skoky %1 %, rozmítaný sinus ±%2 % a trojúhelník přes celý rozsah, asi %3 s</translation>
         </message>
@@ -2489,6 +2493,10 @@ Ano načte a záznam zařadí do fronty; Ne nenačte nic.</translation>
         <message>
             <source>Save PDF and CSV…</source>
             <translation>Uložit PDF a CSV…</translation>
+        </message>
+        <message>
+            <source>Browse…</source>
+            <translation>Procházet…</translation>
         </message>
         <message>
             <source>Figure</source>

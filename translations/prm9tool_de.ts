@@ -2454,6 +2454,10 @@ Ja lädt hoch und stellt den Eintrag in die Warteschlange; Nein lädt nichts hoc
     <context>
         <name>ReportPage</name>
         <message>
+            <source>Acceptance profile</source>
+            <translation>Abnahmeprofil</translation>
+        </message>
+        <message>
             <source>steps of %1 %, a sine sweep of ±%2 % and a triangle over the whole range, about %3 s</source>
             <translation>Sprünge von %1 %, ein Sinus-Sweep von ±%2 % und ein Dreieck über den ganzen Bereich, etwa %3 s</translation>
         </message>
@@ -2480,6 +2484,10 @@ Ja lädt hoch und stellt den Eintrag in die Warteschlange; Nein lädt nichts hoc
         <message>
             <source>Save PDF and CSV…</source>
             <translation>PDF und CSV speichern…</translation>
+        </message>
+        <message>
+            <source>Browse…</source>
+            <translation>Durchsuchen…</translation>
         </message>
         <message>
             <source>Figure</source>

@@ -70,6 +70,7 @@ def preserved(
     rig: Rig, mnemonics: Sequence[str], changes: dict[str, int]
 ) -> Iterator[dict[str, int]]:
     """Save ``mnemonics`` and ``changes``' keys, apply ``changes``; always restore and release."""
+    rig.ensure_active()
     names = list(dict.fromkeys([*mnemonics, *changes]))
     saved = rig.read(names)
     try:
@@ -230,6 +231,7 @@ def static_test(
     half = int(period_s * fs / 2)
     # one override value per millisecond: fine enough for a static test, 5× fewer writes
     rise = np.repeat(np.linspace(lo_pct, hi_pct, half // 5 + 1), 5)[:half]
+    rig.ensure_active()
     sweep = np.concatenate([rise, rise[::-1]])
     rig.play(np.full(int(0.2 * fs), lo_pct), [STATIC_KEYS[2]])
     try:

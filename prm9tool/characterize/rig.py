@@ -19,6 +19,7 @@ from typing import TYPE_CHECKING
 import numpy as np
 
 from prm9tool.catalogue import CATALOGUE
+from prm9tool.device.emulator.states import DeviceState, ValveStatus
 from prm9tool.errors import Prm9Error
 
 if TYPE_CHECKING:
@@ -77,6 +78,27 @@ class Rig(ABC):
     @abstractmethod
     def release(self) -> None:
         """Switch the override off (the valve follows its own setpoint input again)."""
+
+    @abstractmethod
+    def status(self) -> ValveStatus:
+        """The valve's state and errors."""
+
+    def ensure_active(self) -> None:
+        """ValveFaultError unless the valve follows its setpoint (DEVICE_MODE_ACTIVE, no error)."""
+        status = self.status()
+        if status.error_code:
+            raise ValveFaultError(
+                f"the valve reports error {status.error_code:#06x} ({status.error_text}); "
+                "nothing was tested"
+            )
+        if status.device_state is not DeviceState.DEVICE_MODE_ACTIVE:
+            waiting = status.device_state is DeviceState.INIT and status.nmt_state != "off"
+            hint = " (a -CA valve with CANopen on waits for its master to enable it)"
+            hint = hint if waiting else ""
+            raise ValveFaultError(
+                f"the valve does not follow its setpoint: device state "
+                f"{status.device_state.value}{hint}; nothing was tested"
+            )
 
     def check(self) -> None:
         """Raise :class:`Stopped` if a stop was requested."""
@@ -145,6 +167,10 @@ class EmulatorRig(Rig):
         self.valve_seconds += len(values) * valve.CYCLE_S
         self.last_demand = np.asarray(setpoint_pct, dtype=float)
         return np.concatenate(blocks)[: len(values)]
+
+    def status(self) -> ValveStatus:
+        """The emulated valve's status."""
+        return self.valve.status()
 
     def _check_fault(self) -> None:
         status = self.valve.status()
@@ -234,6 +260,10 @@ class SessionRig(Rig):
             )
         self.last_demand = demand
         return np.concatenate(blocks)[:n]
+
+    def status(self) -> ValveStatus:
+        """Status over the link."""
+        return self.session.status()
 
     def release(self) -> None:
         """Override off."""

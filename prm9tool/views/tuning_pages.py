@@ -13,17 +13,14 @@ from PySide6.QtWidgets import (
     QFormLayout,
     QHBoxLayout,
     QLabel,
-    QLineEdit,
     QPushButton,
-    QTableWidget,
-    QTableWidgetItem,
     QVBoxLayout,
     QWidget,
 )
 
 from prm9tool.analysis.model import Targets
 from prm9tool.analysis.pid import to_parameters
-from prm9tool.analysis.profile import DEFAULT, ProfileError, load_profile
+from prm9tool.analysis.profile import DEFAULT
 from prm9tool.analysis.static import linearization_values, propose_linearization
 from prm9tool.characterize.autotune import AutotuneResult, compare_steps, model_tune
 from prm9tool.characterize.procedures import (
@@ -35,16 +32,11 @@ from prm9tool.characterize.procedures import (
     critical_gain_tune,
     static_test,
 )
-from prm9tool.characterize.run import Characterization, characterize, write_csv_files
+from prm9tool.characterize.run import Characterization
 from prm9tool.views.tuning_plot import COLOURS, Plot, Series, paint_plot
 from prm9tool.views.tuning_report import (
     bode_plots,
-    figure_label,
-    limit_text,
     static_plot,
-    value_text,
-    verdict,
-    write_pdf,
 )
 
 if TYPE_CHECKING:
@@ -354,69 +346,3 @@ class StaticPage(Page):
         self.tr_label("period", self.tr("Triangle period:"))
         self.run_button.setText(self.tr("Measure the static characteristic"))
         self.apply_button.setText(self.tr("Apply the proposed linearization"))
-
-
-class ReportPage(Page):
-    """The end-of-line test with an acceptance profile; PDF and CSV."""
-
-    def __init__(self, window: TuningWindow) -> None:
-        super().__init__(window)
-        self.profile_path = self.field("profile", QLineEdit())
-        self.table = QTableWidget(0, 4)
-        self.layout().insertWidget(3, self.table, 1)  # type: ignore[union-attr]
-        self.plot.hide()
-        self.save_button = QPushButton()
-        self.save_button.setEnabled(False)
-        self.save_button.clicked.connect(self.save)
-        self.buttons.insertWidget(1, self.save_button)
-        self.last: Characterization | None = None
-
-    def run(self) -> None:
-        """All tests of the profile."""
-        path = self.profile_path.text().strip()
-        try:
-            profile = load_profile(path) if path else DEFAULT
-        except ProfileError as exc:
-            self.result.setText(str(exc))
-            return
-        what = self.tr("steps of %1 %, a sine sweep of ±%2 % and a triangle over the whole range, about %3 s").replace(
-            "%1", ", ".join(f"{a:g}" for a in profile.step_amplitudes_pct)).replace(
-            "%2", f"{profile.bode_amplitude_pct:g}").replace(
-            "%3", f"{profile.bode_duration_s + profile.static_period_s + 1:.0f}")  # fmt: skip
-        self.window_.start("report", what, lambda rig: characterize(rig, profile))
-
-    def show_result(self, result: object) -> None:
-        """Every figure with its verdict."""
-        assert isinstance(result, Characterization)
-        self.last = result
-        self.table.setRowCount(len(result.figures))
-        for row, f in enumerate(result.figures):
-            cells = (figure_label(f), value_text(f), limit_text(f), verdict(f.passed))
-            for col, text in enumerate(cells):
-                self.table.setItem(row, col, QTableWidgetItem(text))
-        self.table.resizeColumnsToContents()
-        self.result.setText(self.tr("Result: %1").replace("%1", verdict(result.passed)))
-        self.save_button.setEnabled(True)
-
-    def save(self) -> None:
-        """The PDF report and the raw data as CSV beside it."""
-        if self.last is None:
-            return
-        name = f"{self.last.info.serial}-report.pdf"
-        path = self.window_.save_file(self.tr("Save the test report"), "PDF (*.pdf)", name)
-        if path is None:
-            return
-        try:
-            write_pdf(self.last, path)
-            write_csv_files(self.last, path.with_suffix(""))
-        except OSError as exc:
-            self.result.setText(self.tr("Cannot write the report: %1").replace("%1", str(exc)))
-
-    def retranslate(self) -> None:
-        """Texts."""
-        self.tr_label("profile", self.tr("Acceptance profile (TOML, empty: default):"))
-        self.run_button.setText(self.tr("Run the end-of-line test"))
-        self.save_button.setText(self.tr("Save PDF and CSV…"))
-        self.table.setHorizontalHeaderLabels(
-            [self.tr("Figure"), self.tr("Value"), self.tr("Limit"), self.tr("Result")]
-        )
