@@ -164,6 +164,7 @@ class CompareWorkflow(QObject):
         serial = getattr(self._connection.device, "serial", None)
         window = HistoryWindow(hook.recorder, serial, self.restore_into_document,
                                self.restore_to_valve, self._window)  # fmt: skip
+        window.database_changed.connect(self._connection.set_recorder)
         self.dialog_created.emit(window)
         window.show()
         return window
