@@ -175,9 +175,8 @@ def test_an_unreachable_history_asks_and_no_uploads_nothing(qtbot, window, answe
     window.sync.stop()
     window.doc.set_value("DTAMP", 1111)
     answers.answers = [prompts.Button.No]
-    with qtbot.waitSignal(window.connection.operation_finished, timeout=TIMEOUT,
-                          check_params_cb=lambda name, _r: name == "history_check"):  # fmt: skip
-        window.commands["upload"].trigger()
+    window.commands["upload"].trigger()
+    qtbot.waitUntil(lambda: bool(answers.asked), timeout=TIMEOUT)
     assert "History database unavailable" in answers.asked[-1] and "is damaged" in answers.asked[-1]
     assert window.valve.progress_dialog is None
     answers.answers = [prompts.Button.Yes]
@@ -198,10 +197,10 @@ def test_the_refuse_setting_uploads_nothing_without_the_history(qtbot, window, a
     window.connection.set_recorder(Recorder(f"sqlite:///{damaged}", tmp_path / "q.jsonl"))
     go_online(qtbot, window, f"{E02}:4304")
     qtbot.waitUntil(lambda: window.sync.active, timeout=TIMEOUT)
-    with qtbot.waitSignal(window.connection.operation_finished, timeout=TIMEOUT,
-                          check_params_cb=lambda name, _r: name == "history_check"):  # fmt: skip
-        window.commands["upload"].trigger()
+    window.commands["upload"].trigger()
+    qtbot.waitUntil(lambda: bool(answers.informed), timeout=TIMEOUT)
     assert answers.asked == [] and "Upload refused" in answers.informed[-1]
+    assert window.valve.progress_dialog is None
     queued = (tmp_path / "q.jsonl").read_text(encoding="utf-8")  # the download going online
     assert '"operation": "download"' in queued and '"operation": "upload"' not in queued
 
@@ -229,3 +228,27 @@ def test_a_record_is_restored_into_its_valve_and_exported(qtbot, window, answers
     other = Recorder()
     assert [r["operation"] for r in other.store().records(4305)][-1] == "upload"
     other.close()
+
+
+def test_the_history_setting_chooses_the_database_for_the_gui_and_the_command_line(
+    qtbot, window, tmp_path, monkeypatch
+):
+    from prm9tool.history.config import database_url, unreachable_policy
+    from prm9tool.views.history_settings import HistorySettingsDialog
+
+    def answer(dialog):
+        assert dialog.url.text() == ""  # the default: SQLite on this computer
+        snapshot(dialog, "window_dialog_history_settings.png")
+        dialog.url.setText(str(tmp_path / "line.sqlite3"))
+        dialog.policy.setCurrentIndex(dialog.policy.findData("refuse"))
+        dialog._save()
+        return dialog.result()
+
+    monkeypatch.setattr(HistorySettingsDialog, "exec", answer)
+    window.connection.set_recorder(Recorder())
+    history = window.compare.show_history()
+    qtbot.addWidget(history)
+    history.buttons["settings"].click()
+    expected = f"sqlite:///{tmp_path / 'line.sqlite3'}"
+    assert database_url() == expected and unreachable_policy() == "refuse"
+    assert window.connection.history.recorder.url == expected

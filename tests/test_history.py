@@ -281,3 +281,23 @@ def test_old_backups_become_records_the_first_time_a_history_is_opened(tmp_path)
     assert again.store().count() == 2  # not imported twice
     assert main(["--history-import", "--history-db", sqlite_url(tmp_path)]) == ExitCode.OK
     assert again.store().count() == 2
+
+
+def test_a_characterization_is_recorded_with_its_verdict_and_figures(tmp_path, capsys):
+    from test_characterize_cli import FAST
+    from test_characterize_cli import run as characterize
+
+    from prm9tool.device import factory
+
+    try:
+        code = characterize(tmp_path, FAST, 7201, "--json", str(tmp_path / "r.json"))
+    finally:
+        factory.forget_emulated_valves()
+    assert code == ExitCode.OK
+    capsys.readouterr()
+    assert main(["--history", "7201", "--json"]) == ExitCode.OK
+    (record,) = json.loads(capsys.readouterr().out)["records"]
+    assert (record["operation"], record["outcome"]) == ("characterization", "passed")
+    figures = {f["name"]: f for f in record["details"]["figures"]}
+    assert figures["bode_bandwidth_hz"]["passed"] is True
+    assert record["details"]["profile"] == "fast test"

@@ -1484,6 +1484,37 @@ Ano načte a záznam zařadí do fronty; Ne nenačte nic.</translation>
         </message>
     </context>
     <context>
+        <name>HistorySettingsDialog</name>
+        <message>
+            <source>History database</source>
+            <translation>Databáze historie</translation>
+        </message>
+        <message>
+            <source>ask before uploading</source>
+            <translation>zeptat se před načtením do ventilu</translation>
+        </message>
+        <message>
+            <source>refuse the upload (production line)</source>
+            <translation>odmítnout načtení do ventilu (výrobní linka)</translation>
+        </message>
+        <message>
+            <source>upload and keep the record here until the database is back</source>
+            <translation>načíst do ventilu a záznam uchovat zde, dokud nebude databáze opět dostupná</translation>
+        </message>
+        <message>
+            <source>Empty: SQLite on this computer. A line of stations: postgresql+psycopg://user:password@server/database</source>
+            <translation>Prázdné: SQLite v tomto počítači. Linka s více stanicemi: postgresql+psycopg://uživatel:heslo@server/databáze</translation>
+        </message>
+        <message>
+            <source>Database:</source>
+            <translation>Databáze:</translation>
+        </message>
+        <message>
+            <source>When it cannot be reached:</source>
+            <translation>Když není dostupná:</translation>
+        </message>
+    </context>
+    <context>
         <name>HistoryTableModel</name>
         <message>
             <source>No.</source>
@@ -1547,6 +1578,10 @@ Ano načte a záznam zařadí do fronty; Ne nenačte nic.</translation>
         <message>
             <source>Export…</source>
             <translation>Exportovat…</translation>
+        </message>
+        <message>
+            <source>Database…</source>
+            <translation>Databáze…</translation>
         </message>
         <message>
             <source>Type a valve's serial number.</source>

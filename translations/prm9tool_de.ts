@@ -1478,6 +1478,37 @@ Ja lädt hoch und stellt den Eintrag in die Warteschlange; Nein lädt nichts hoc
         </message>
     </context>
     <context>
+        <name>HistorySettingsDialog</name>
+        <message>
+            <source>History database</source>
+            <translation>Verlaufsdatenbank</translation>
+        </message>
+        <message>
+            <source>ask before uploading</source>
+            <translation>vor dem Hochladen fragen</translation>
+        </message>
+        <message>
+            <source>refuse the upload (production line)</source>
+            <translation>Hochladen ablehnen (Fertigungslinie)</translation>
+        </message>
+        <message>
+            <source>upload and keep the record here until the database is back</source>
+            <translation>hochladen und den Eintrag hier aufbewahren, bis die Datenbank wieder erreichbar ist</translation>
+        </message>
+        <message>
+            <source>Empty: SQLite on this computer. A line of stations: postgresql+psycopg://user:password@server/database</source>
+            <translation>Leer: SQLite auf diesem Rechner. Eine Linie von Stationen: postgresql+psycopg://benutzer:passwort@server/datenbank</translation>
+        </message>
+        <message>
+            <source>Database:</source>
+            <translation>Datenbank:</translation>
+        </message>
+        <message>
+            <source>When it cannot be reached:</source>
+            <translation>Wenn sie nicht erreichbar ist:</translation>
+        </message>
+    </context>
+    <context>
         <name>HistoryTableModel</name>
         <message>
             <source>No.</source>
@@ -1541,6 +1572,10 @@ Ja lädt hoch und stellt den Eintrag in die Warteschlange; Nein lädt nichts hoc
         <message>
             <source>Export…</source>
             <translation>Exportieren…</translation>
+        </message>
+        <message>
+            <source>Database…</source>
+            <translation>Datenbank…</translation>
         </message>
         <message>
             <source>Type a valve's serial number.</source>

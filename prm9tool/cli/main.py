@@ -312,8 +312,16 @@ def main(argv: Sequence[str] | None = None) -> int:
         return prmcli.export_eds_command(args)
     if args.characterize:
         from prm9tool.cli.characterize import run as run_characterize
+        from prm9tool.cli.history import recorder_for
+        from prm9tool.online.characterization_history import record_characterizations
 
-        return run_characterize(args)
+        recorder = recorder_for(args)  # the end-of-line result goes into the history
+        forget = record_characterizations(recorder)
+        try:
+            return run_characterize(args)
+        finally:
+            forget()
+            recorder.close()
     if args.diff:
         from prm9tool.cli.diff import run as run_diff
 

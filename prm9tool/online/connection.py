@@ -109,11 +109,12 @@ class ValveConnection(QObject):
         report = lambda text: self._post(lambda: self.history_problem.emit(text))  # noqa: E731
         self.history = HistoryHook(recorder, report)
 
-    def check_history(self) -> None:
-        """Ask whether the history can take records; result: operation_finished("history_check",
-        None or the HistoryError). Runs in the worker (a remote database may be slow)."""
+    def check_history(self, on_done: Callable[[object], None]) -> None:
+        """Ask whether the history can take records; ``on_done(None or the HistoryError)`` runs
+        on the GUI thread. Runs in the worker (a remote database may be slow)."""
         hook = self.history
-        self._submit(_Job("history_check", lambda _s: hook.problem() if hook else None))
+        run = lambda _s: hook.problem() if hook else None  # noqa: E731
+        self._submit(_Job("history_check", run, on_done, report=False))
 
     def record(self, operation: str, outcome: str, values: Mapping[str, int | str] | None,
                details: Mapping[str, Any] | None = None) -> None:  # fmt: skip

@@ -167,6 +167,7 @@ class CompareWorkflow(QObject):
         serial = None if info is None else info.serial
         window = HistoryWindow(hook.recorder, serial, self.restore_into_document,
                                self.restore_to_valve, self._window)  # fmt: skip
+        window.database_changed.connect(self._connection.set_recorder)
         self.dialog_created.emit(window)
         window.show()
         return window

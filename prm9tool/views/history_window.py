@@ -81,6 +81,7 @@ class HistoryWindow(QDialog):
     """The records of the connected valve or of a typed serial number."""
 
     loaded = Signal(object, object)  # (records or None, error or None), from the reader thread
+    database_changed = Signal(object)  # the new Recorder after the setting changed
 
     def __init__(
         self,
@@ -116,6 +117,7 @@ class HistoryWindow(QDialog):
             "document": QPushButton(self.tr("Restore into the document")),
             "valve": QPushButton(self.tr("Restore to the valve")),
             "export": QPushButton(self.tr("Export…")),
+            "settings": QPushButton(self.tr("Database…")),
         }
         actions = QHBoxLayout()
         for button in self.buttons.values():
@@ -134,6 +136,7 @@ class HistoryWindow(QDialog):
         )
         self.buttons["valve"].clicked.connect(lambda: self._restore(self._restore_valve_record))
         self.buttons["export"].clicked.connect(self.export_selected)
+        self.buttons["settings"].clicked.connect(self.edit_settings)
         self._update_buttons()
         self.resize(980, 520)
         if serial:
@@ -223,6 +226,16 @@ class HistoryWindow(QDialog):
             prompts.inform(self, prompts.Icon.Warning, self.tr("Restore to the valve"),
                            self.tr("Go online with valve {0} first: a record is restored only "
                                    "into the valve it was recorded from.").format(record["serial"]))  # fmt: skip
+
+    def edit_settings(self) -> None:
+        """Choose the database and the policy; the new database is used from now on."""
+        from prm9tool.views.history_settings import HistorySettingsDialog
+
+        dialog = HistorySettingsDialog(self)
+        if dialog.exec() == QDialog.DialogCode.Accepted:
+            self._recorder = Recorder()
+            self.database_changed.emit(self._recorder)
+            self.reload()
 
     def export_selected(self, path: str | None = None) -> None:
         """Write the selected record to a *.prm or CSV file."""

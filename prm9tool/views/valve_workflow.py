@@ -287,7 +287,12 @@ class ValveWorkflow(QObject):
             self._start_upload()
             return
         self._start("upload", self.tr("Uploading the parameters to the valve…"))
-        self._connection.check_history()
+        self._connection.check_history(self._on_history_checked)
+
+    def _on_history_checked(self, problem: object) -> None:
+        self._close_progress()
+        if may_upload(self._window, problem):
+            self._start_upload()
 
     def _start_upload(self) -> None:
         values, self._pending_upload = self._pending_upload, {}
@@ -378,9 +383,6 @@ class ValveWorkflow(QObject):
             self._on_compare_finished(result)
         elif name == "upload":
             self._on_upload_finished(result)
-        elif name == "history_check":
-            if may_upload(self._window, result):
-                self._start_upload()
         elif name == "store":
             self._sync.unstored = False
             self.message_posted.emit(self.tr("The valve stored its parameters"))

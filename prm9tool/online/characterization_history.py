@@ -1,0 +1,43 @@
+"""Characterization and end-of-line results into the history (``characterize.run.RESULT_HOOKS``).
+
+A run records one ``characterization`` record of the valve: outcome ``passed``/``failed``, the
+parameter set the valve ran with (read at the start of the run) and every figure with its
+limit verdict in the details. Used by ``--characterize`` and the GUI alike. No Qt.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from types import SimpleNamespace
+from typing import Any
+
+from prm9tool.characterize.run import RESULT_HOOKS, Characterization
+from prm9tool.history.recorder import Recorder
+
+
+def recording_hook(recorder: Recorder) -> Callable[[Characterization], None]:
+    """A result hook that records each run into ``recorder``'s history (never raises)."""
+
+    def record(result: Characterization) -> None:
+        info = result.info
+        valve = SimpleNamespace(type_key=info.type_key, serial=info.serial,
+                                firmware=info.firmware, device_id=str(info.link))  # fmt: skip
+        details: dict[str, Any] = {
+            "profile": result.profile.name,
+            "started": result.date,
+            "figures": [
+                {"name": f.name, "value": f.value, "unit": f.unit, "passed": f.passed}
+                for f in result.figures
+            ],
+        }
+        outcome = "passed" if result.passed else "failed"
+        recorder.record_safely(valve, "characterization", outcome, result.parameters, details)
+
+    return record
+
+
+def record_characterizations(recorder: Recorder) -> Callable[[], None]:
+    """Register the hook; returns the function that removes it again."""
+    hook = recording_hook(recorder)
+    RESULT_HOOKS.append(hook)
+    return lambda: RESULT_HOOKS.remove(hook) if hook in RESULT_HOOKS else None
