@@ -21,8 +21,8 @@ from prm9tool.catalogue.typekey import TypeKey
 from prm9tool.cli import batch
 from prm9tool.cli.main import main
 from prm9tool.device import factory
-from prm9tool.device.session import ValveSession
 from prm9tool.device.transport.emulator import EmulatorTransport, LinkFaults
+from prm9tool.device.usb_session import UsbSession
 from prm9tool.errors import ExitCode
 from prm9tool.files.prmfile import PrmContents, read_file, write_file
 
@@ -374,7 +374,7 @@ def test_unplugged_at_the_store_step_the_report_keeps_what_was_written_and_verif
         transport = EmulatorTransport(factory.emulated_valve(entry.type_key, entry.serial))
         transport.faults = LinkFaults(die_after=die_after[0] if die_after else None)
         links.append(transport)
-        return ValveSession(transport, entry.device_id)
+        return UsbSession(transport, entry.device_id)
 
     monkeypatch.setattr(batch, "_open", open_on_a_faulty_link)
     try:

@@ -10,8 +10,9 @@ import pytest
 from prm9tool.catalogue import CATALOGUE
 from prm9tool.device.emulator import EmulatedValve, Fault
 from prm9tool.device.emulator.usb_firmware import UsbFirmware
-from prm9tool.device.session import OperationCancelledError, ValveSession
+from prm9tool.device.session import OperationCancelledError
 from prm9tool.device.transport.emulator import EmulatorTransport
+from prm9tool.device.usb_session import UsbSession
 from prm9tool.errors import AbortCode, Prm9Error, SdoAbortError, ValueRangeError
 
 E04 = "PRM9-06.3Z11/30-24E04S02-CA"
@@ -27,11 +28,11 @@ def valve(tmp_path):
 
 @pytest.fixture
 def session(valve):
-    with ValveSession(EmulatorTransport(valve), "emulator:test") as session:
+    with UsbSession(EmulatorTransport(valve), "emulator:test") as session:
         yield session
 
 
-def changed_values(session: ValveSession) -> dict[str, int | str]:
+def changed_values(session: UsbSession) -> dict[str, int | str]:
     """Every file parameter moved one step away from its current value, within its range."""
     values = session.download()
     for param in CATALOGUE.file_parameters(session.variant):
@@ -122,7 +123,7 @@ class CorruptingTransport(EmulatorTransport):
 
 def test_verification_mismatch_stores_nothing(valve):
     transport = CorruptingTransport(valve)
-    session = ValveSession(transport, "emulator:test")
+    session = UsbSession(transport, "emulator:test")
     before = session.download()
     new = changed_values(session)
     transport.armed = True
@@ -240,7 +241,7 @@ def test_stream_checks_its_arguments(session):
 
 def test_stream_of_a_signal_the_variant_lacks_is_refused(tmp_path):
     valve = EmulatedValve(E02, 5)
-    session = ValveSession(EmulatorTransport(valve), "emulator:e02")
+    session = UsbSession(EmulatorTransport(valve), "emulator:e02")
     with pytest.raises(SdoAbortError) as caught:
         session.stream_start(["process_actual"])
     assert caught.value.code == AbortCode.INVALID_VALUE

@@ -206,11 +206,12 @@ def open_session(
 def _open_usb(path: str, device_id: str) -> ValveSession:
     from prm9tool.device.discovery import find_serial
     from prm9tool.device.transport.hidapi import HidTransport
+    from prm9tool.device.usb_session import UsbSession
 
     serial_box: list[int] = []
     transport = HidTransport(path.encode(), finder=lambda: find_serial(serial_box[0]))
     try:
-        session = ValveSession(transport, device_id)
+        session = UsbSession(transport, device_id)
     except BaseException:
         transport.close()
         raise
@@ -226,6 +227,7 @@ def _open_emulator(
     can: CanOptions | None,
 ) -> ValveSession:
     from prm9tool.device.transport.emulator import EmulatorTransport
+    from prm9tool.device.usb_session import UsbSession
 
     valve = emulated_valve(type_key, serial)
     closers: list[Callable[[], None]] = []
@@ -236,7 +238,7 @@ def _open_emulator(
         if can is not None and valve.variant.canopen:
             closers.append(_connect_can(valve, can))
         transport = EmulatorTransport(valve, paced=pacing[1])
-        return ValveSession(transport, device_id, on_close=lambda: _all(closers))
+        return UsbSession(transport, device_id, on_close=lambda: _all(closers))
     except BaseException:
         _all(closers)
         raise
@@ -251,7 +253,10 @@ def join_can(session: ValveSession, options: CanOptions) -> bool:
     (~0.2 s) is then off the way to "online" (docs/PERFORMANCE.md, Startup).
     """
     from prm9tool.device.transport.emulator import EmulatorTransport
+    from prm9tool.device.usb_session import UsbSession
 
+    if not isinstance(session, UsbSession):
+        return False
     transport = session.transport
     if not isinstance(transport, EmulatorTransport) or not transport.valve.variant.canopen:
         return False
