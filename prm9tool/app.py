@@ -97,6 +97,8 @@ def start(window: MainWindow, plan: StartPlan) -> None:
         window.files.open_path(plan.file, ask=False)
     if plan.emulators:
         _start_emulated(window, plan.emulators)
+    elif plan.devices and plan.devices[0].startswith("can:"):
+        window.valve.go_online(plan.devices[0])  # a node on the command line's CAN bus
     elif plan.devices:
         wanted_id = plan.devices[0]
 
@@ -175,7 +177,8 @@ def _opener(args: argparse.Namespace) -> Callable[[object], object]:
     def open_session(entry: object) -> object:
         from prm9tool.device import factory
 
-        return factory.open_session(entry, paced=True)  # type: ignore[arg-type]
+        can_link = factory.CanOptions.from_args(args) if hasattr(args, "can_interface") else None
+        return factory.open_session(entry, paced=True, can_link=can_link)  # type: ignore[arg-type]
 
     return open_session
 

@@ -52,6 +52,7 @@ class ValveRecord:
     output: str | None = None  # --download: the file written
     changes: int | None = None  # --dry-run: parameters that an upload would change
     error: str | None = None
+    skipped: list[str] = field(default_factory=list)  # not available over CANopen: not uploaded
 
     @property
     def exit_code(self) -> ExitCode:

@@ -204,6 +204,7 @@ def open_session(
     can: CanOptions | None = None,
     link_paced: bool | None = None,
     type_key: str | None = None,
+    can_link: CanOptions | None = None,
 ) -> ValveSession:
     """Open a session to ``entry`` (a DeviceEntry or its ``device_id``).
 
@@ -213,8 +214,9 @@ def open_session(
     millisecond of wall-clock time. ``can``: put an emulated -CA valve on that python-can bus
     before returning (CanBusError if the bus cannot be opened); :func:`join_can` does the same
     for a session that is already open.
-    ``can:NODE`` opens a CANopen session to that node on the bus ``can`` (default: the
-    virtual bus); ``type_key`` is the key to use when the valve does not tell its own.
+    ``can:NODE`` opens a CANopen session to that node on the bus ``can_link`` (default:
+    ``can``, else the virtual bus); ``type_key`` is the key to use when the valve does not tell
+    its own.
     """
     device_id = entry.device_id if isinstance(entry, DeviceEntry) else entry
     kind, _, rest = device_id.partition(":")
@@ -227,7 +229,7 @@ def open_session(
     if kind == CAN and rest.isdigit():
         from prm9tool.device.canlink.session import CanopenSession
 
-        return CanopenSession(can or CanOptions(), int(rest), type_key=type_key)
+        return CanopenSession(can_link or can or CanOptions(), int(rest), type_key=type_key)
     raise Prm9Error(f"unknown device {device_id!r}: expected 'usb:…', 'emulator:…' or 'can:NODE'")
 
 
