@@ -73,7 +73,8 @@ class CanopenSession(ValveSession):
         self._type_key_hint = type_key
         self._shared = canbus.acquire(options)
         self._closed = False
-        self._snapshot: dict[str, Value] = {}
+        self._snapshot: dict[str, Value] | None = None  # None: no upload is running
+        self._touched: list[str] = []  # parameters the running upload wrote
         self._sampler: SdoSampler | None = None
         self._lost_before = 0
         try:
@@ -163,6 +164,7 @@ class CanopenSession(ValveSession):
                 data = param.dtype.encode(values[param.mnemonic])
                 try:
                     self._sdo.download(param.index, param.subindex, data)
+                    self._touched.append(param.mnemonic)
                     done += 1
                 except SdoAbortError as exc:
                     if exc.code not in MISSING:
@@ -174,6 +176,7 @@ class CanopenSession(ValveSession):
 
     def _before_upload(self, params: Sequence[Parameter], cancel: threading.Event | None) -> None:
         """The snapshot that :meth:`reload` writes back after a failed upload."""
+        self._snapshot, self._touched = {}, []
         read = self._read_entries(params, None, cancel)
         self._snapshot = {m: v for m, v in read.items() if not isinstance(v, SdoAbortError)}
 
@@ -181,15 +184,18 @@ class CanopenSession(ValveSession):
     def store(self) -> None:
         """0x1010/1 = "save": the working parameters become the stored ones."""
         self._sdo.download(0x1010, 1, SAVE_SIGNATURE.to_bytes(4, "little"), STORE_TIMEOUT_S)
+        self._snapshot = None  # stored: nothing to put back any more
 
     def reload(self) -> None:
-        """Working values ← those read before the upload (see the module's decision); the
-        stored set was never touched."""
-        if not self._snapshot:
+        """Working values ← those read before the upload, for the parameters it wrote (see
+        the module's decision); the stored set was never touched."""
+        if self._snapshot is None:
             raise Prm9Error(
                 "over CANopen the stored parameters come back only with a restart (NMT reset node)"
             )
-        snapshot, self._snapshot = self._snapshot, {}
+        touched = set(self._touched)
+        snapshot = {m: v for m, v in self._snapshot.items() if m in touched}
+        self._snapshot, self._touched = None, []
         params = [self._param(m) for m in snapshot]
         try:
             self._write_entries(params, snapshot, None, None)

@@ -1,0 +1,245 @@
+"""The valve session over CANopen (device/canlink) against the emulated -CA valve on a virtual
+bus: identity, upload/verify/store, download, objects a real valve lacks, refusals, a node that
+stops answering, two masters, other nodes, type keys, a missing adapter."""
+
+from __future__ import annotations
+
+import threading
+
+import can
+import canopen
+import pytest
+from can_link_rig import E02, E04, LinkRig, make_link_rig
+
+from prm9tool.catalogue import CATALOGUE
+from prm9tool.device.canlink.bus import CanOptions, open_bus
+from prm9tool.device.canlink.session import CanopenSession, NotAPrm9Error
+from prm9tool.device.canlink.typekeys import TypeKeyNeededError, remember
+from prm9tool.device.session import NotAvailableError
+from prm9tool.errors import AbortCode, CanAdapterError, DeviceTimeoutError, TypeKeyError
+
+NODE = 10
+
+
+@pytest.fixture
+def rig(tmp_path, request):
+    rig = make_link_rig(request.node.name, tmp_path)
+    yield rig
+    rig.close()
+
+
+@pytest.fixture
+def data_dir(tmp_path, monkeypatch):
+    folder = tmp_path / "data"
+    monkeypatch.setenv("PRM9TOOL_DATA_DIR", str(folder))
+    return folder
+
+
+def open_can(rig: LinkRig, **kwargs: object) -> CanopenSession:
+    return CanopenSession(rig.options, NODE, **kwargs)  # type: ignore[arg-type]
+
+
+def changed(session: CanopenSession) -> dict[str, int | str]:
+    """The file set with every parameter the valve has moved within its range (no CANopen
+    communication object: those would change the link under the test)."""
+    values = session.download()
+    for param in CATALOGUE.file_parameters(session.variant):
+        if param.mnemonic not in values or param.index < 0x2000 or param.index in (0x2030, 0x2031):
+            continue
+        current = values[param.mnemonic]
+        allowed = [code for code, _ in param.choices] or [param.raw_min, param.raw_max]
+        values[param.mnemonic] = next(v for v in allowed if v != current)
+    return values
+
+
+def test_identify_reads_the_manual_objects(rig, data_dir):
+    with open_can(rig) as session:
+        assert session.info.type_key == E04  # from 0x2041 (the emulated valve has it)
+        assert session.info.serial == rig.valve.serial
+        assert session.info.device_id == "can:10"
+        assert session.read("SNV") == rig.valve.serial
+
+
+def test_upload_writes_verifies_and_stores(rig, data_dir):
+    with open_can(rig) as session:
+        values = changed(session)
+        result = session.upload(values)
+    assert (result.stored, result.verified, result.failed_step, result.skipped) == (
+        True,
+        True,
+        None,
+        (),
+    )
+    stored = rig.stored_set()
+    assert all(stored[m] == v for m, v in values.items() if m in stored)
+    assert stored["LIMTA"] == values["LIMTA"] != CATALOGUE["LIMTA"].default
+
+
+def test_download_gives_the_valves_file_set(rig, data_dir):
+    with open_can(rig) as session:
+        values = session.download()
+    params = CATALOGUE.file_parameters(rig.valve.variant)
+    assert set(values) == {p.mnemonic for p in params}
+    assert all(values[p.mnemonic] == rig.valve.read(*p.key) for p in params)
+
+
+def test_objects_a_real_valve_lacks_are_skipped_with_their_names(tmp_path, data_dir):
+    rig = make_link_rig("real", tmp_path, real_valve=True)
+    try:
+        with open_can(rig, type_key=E04) as session:
+            values = changed(session)
+            assert "POSKP" not in values  # 0x2020/1: the object is this project's decision
+            values["POSKP"] = CATALOGUE["POSKP"].default
+            result = session.upload(values)
+            with pytest.raises(NotAvailableError, match="not available over CANopen.*POSKP"):
+                session.write("POSKP", 5)
+        assert result.stored and "POSKP" in result.skipped
+        assert set(result.skipped) <= {p.mnemonic for p in CATALOGUE if not p.address_from_manual}
+        assert rig.stored_set()["LIMTA"] == values["LIMTA"]
+    finally:
+        rig.close()
+
+
+def test_an_sdo_abort_stores_nothing_and_puts_the_working_values_back(rig, data_dir):
+    rig.refuse(*CATALOGUE["LIMTB"].key)
+    with open_can(rig) as session:
+        before = session.download()
+        stored_before = rig.stored_set()
+        values = changed(session)
+        result = session.upload(values)
+    assert (result.stored, result.failed_step, result.reloaded) == (False, "write", True)
+    assert "LIMTB" in result.mismatches and "0x06090030" in str(result.mismatches["LIMTB"][1])
+    assert rig.stored_set() == stored_before
+    assert rig.working("LIMTA") == before["LIMTA"]  # written, then put back
+
+
+def test_a_node_that_stops_answering_mid_upload_keeps_its_stored_set(rig, data_dir):
+    with open_can(rig, timeout_s=0.05) as session:
+        stored_before = rig.stored_set()
+        values = changed(session)
+        rig.go_silent_after(len(values) + 20)  # the snapshot, then 20 writes
+        with pytest.raises(DeviceTimeoutError) as caught:
+            session.upload(values)
+    message = str(caught.value)
+    assert "upload failed while writing the parameters (step 1 of 3)" in message
+    assert "no SDO answer" in message and "nothing was stored" in message
+    assert rig.stored_set() == stored_before
+
+
+def test_two_masters_on_one_bus_never_leave_a_mixed_stored_set(rig, data_dir):
+    other = canopen.Network()
+    other.connect(interface="virtual", channel=rig.options.channel)
+    node = other.add_node(NODE, canopen.ObjectDictionary())
+    node.sdo.RESPONSE_TIMEOUT = 0.05
+    stop = threading.Event()
+
+    def meddle() -> None:
+        while not stop.is_set():
+            try:
+                node.sdo.upload(0x1018, 4)
+            except canopen.sdo.SdoError:
+                pass
+
+    thread = threading.Thread(target=meddle, daemon=True)
+    try:
+        with open_can(rig, timeout_s=0.1) as session:
+            stored_before = rig.stored_set()
+            values = changed(session)
+            thread.start()
+            try:
+                result = session.upload(values)
+                stored = result.stored
+            except Exception:
+                stored = False
+    finally:
+        stop.set()
+        thread.join(2)
+        other.disconnect()
+    after = rig.stored_set()
+    if stored:
+        assert all(after[m] == v for m, v in values.items() if m in after)
+    else:
+        assert after == stored_before
+
+
+def test_a_node_that_is_not_a_prm9_is_refused(tmp_path, data_dir):
+    from can_link_rig import unique_channel
+
+    channel = unique_channel("other")
+    network = canopen.Network()
+    network.connect(interface="virtual", channel=channel)
+    od = canopen.ObjectDictionary()
+    for index, value in ((0x1000, 0x191), (0x1001, 0)):
+        var = canopen.objectdictionary.ODVariable("v", index, 0)
+        var.data_type = canopen.objectdictionary.UNSIGNED32
+        var.default = value
+        od.add_object(var)
+    identity = canopen.objectdictionary.ODRecord("identity", 0x1018)
+    vendor = canopen.objectdictionary.ODVariable("vendor", 0x1018, 1)
+    vendor.data_type, vendor.default = canopen.objectdictionary.UNSIGNED32, 0x123
+    identity.add_member(vendor)
+    od.add_object(identity)
+    network.add_node(canopen.LocalNode(NODE, od))
+    try:
+        with pytest.raises(NotAPrm9Error, match="not a PRM9 .device type 0x191, vendor 0x123."):
+            CanopenSession(CanOptions("virtual", channel), NODE)
+    finally:
+        network.disconnect()
+
+
+def test_without_0x2041_the_key_is_derived_given_and_remembered(tmp_path, data_dir):
+    rig = make_link_rig("nokey", tmp_path, type_key=E04, real_valve=True)
+    try:
+        with pytest.raises(TypeKeyNeededError, match="tell E04 -CA: give the type key"):
+            open_can(rig)
+        with pytest.raises(TypeKeyError, match="is an E02 valve, the valve's objects say E04"):
+            open_can(rig, type_key=E02)
+        remember(data_dir, rig.valve.serial, E04)
+        with open_can(rig) as session:
+            assert session.info.type_key == E04
+    finally:
+        rig.close()
+
+
+def test_status_reads_state_errors_and_heartbeat(rig, data_dir):
+    with open_can(rig) as session:
+        session.write("HEARTBEAT", 20)
+        rig.valve.advance(0.1)
+        status = session.status()
+    assert status.device_state == "INIT"
+    assert status.nmt_state == "pre-operational"
+    assert status.leds[2].pattern == "2.5Hz"  # LED3 as table 7-18 shows pre-operational
+    assert status.supply_v == pytest.approx(24.0, abs=0.5)
+
+
+def test_a_missing_adapter_names_the_interface_and_what_to_check():
+    options = CanOptions("socketcan", "prm9nosuch0", 500000)
+    with pytest.raises(CanAdapterError) as caught:
+        open_bus(options)
+    text = str(caught.value)
+    assert "cannot open the CAN interface 'socketcan', channel 'prm9nosuch0'" in text
+    assert "ip link show prm9nosuch0" in text
+
+
+def test_an_unknown_interface_is_a_clear_error():
+    with pytest.raises(CanAdapterError, match="'nosuchbackend'.*adapter is plugged in"):
+        open_bus(CanOptions("nosuchbackend", "0"))
+
+
+def test_no_answer_on_an_empty_bus_is_a_timeout_naming_the_bit_rate(tmp_path, data_dir):
+    from can_link_rig import unique_channel
+
+    bus = can.Bus(interface="virtual", channel=unique_channel("empty"))
+    try:
+        with pytest.raises(DeviceTimeoutError, match="node 10: does not answer"):
+            CanopenSession(
+                CanOptions("virtual", bus.channel_info.split()[-1]), NODE, timeout_s=0.05
+            )
+    finally:
+        bus.shutdown()
+
+
+def test_missing_object_abort_codes_are_the_cia_301_ones():
+    from prm9tool.device.canlink.sdo import MISSING
+
+    assert {AbortCode.NO_SUCH_OBJECT, AbortCode.NO_SUCH_SUBINDEX} == MISSING
