@@ -139,14 +139,21 @@ def test_verification_failure_exits_1(tmp_path):
         (["--bogus"], "unrecognized arguments"),
         (
             ["--batch", "x.prm", "--emulator", E02, "--can-interface", "socketcan"],
-            "--can-interface puts the GUI's emulated -CA valve on a CAN bus; --batch does not",
+            "--batch with --emulator uses the emulated valve over USB; to put one on the CAN bus, "
+            "run prm9tool --serve-emulator in another process",
         ),
+        (["--check", "x.prm", "--can-channel", "can1"], "names a CAN bus; --check does not use"),
+        (["--can-channel", "can1"], "use it with --device can:NODE, --list-devices, --batch"),
+        (["--serve-emulator", E02], "--serve-emulator needs --can-interface"),
         (
-            ["--list-devices", "--can-bitrate", "250000"],
-            "--can-bitrate puts the GUI's emulated -CA valve on a CAN bus; --list-devices",
+            ["--serve-emulator", E02, "--can-interface", "virtual", "--list-devices"],
+            "--serve-emulator and --list-devices are separate commands",
         ),
-        (["--check", "x.prm", "--can-channel", "can1"], "; --check does not use CAN"),
-        (["--can-channel", "can1"], "use it with --emulator TYPEKEY"),
+        (["--list-devices", "--node-id", "3"], "--node-id belongs to --serve-emulator"),
+        (
+            ["--serve-emulator", E02, "--can-interface", "virtual", "--node-id", "200"],
+            "--node-id 200: CANopen node IDs are 1…127",
+        ),
     ],
 )
 def test_usage_errors_exit_2(tmp_path, args, message):
@@ -370,7 +377,7 @@ def test_unplugged_at_the_store_step_the_report_keeps_what_was_written_and_verif
     links: list[EmulatorTransport] = []
     die_after: list[int] = []
 
-    def open_on_a_faulty_link(entry):
+    def open_on_a_faulty_link(entry, *_):
         transport = EmulatorTransport(factory.emulated_valve(entry.type_key, entry.serial))
         transport.faults = LinkFaults(die_after=die_after[0] if die_after else None)
         links.append(transport)

@@ -11,6 +11,7 @@ import can
 import canopen
 import pytest
 from can_link_rig import E02, E04, LinkRig, make_link_rig
+from canopen.sdo.exceptions import SdoError
 
 from prm9tool.catalogue import CATALOGUE
 from prm9tool.device.canlink.bus import CanOptions, open_bus
@@ -136,7 +137,7 @@ def test_two_masters_on_one_bus_never_leave_a_mixed_stored_set(rig, data_dir):
 
     def meddle() -> None:
         while not stop.is_set():
-            with contextlib.suppress(canopen.sdo.SdoError):
+            with contextlib.suppress(SdoError):
                 node.sdo.upload(0x1018, 4)
 
     thread = threading.Thread(target=meddle, daemon=True)

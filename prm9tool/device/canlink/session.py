@@ -29,10 +29,10 @@ from prm9tool.device.canlink import discovery
 from prm9tool.device.canlink.sampler import SdoSampler
 from prm9tool.device.canlink.sdo import MISSING, SdoChannel
 from prm9tool.device.canlink.status import read_status
-from prm9tool.device.canlink.typekeys import resolve
+from prm9tool.device.canlink.typekeys import remember, resolve
 from prm9tool.device.emulator.states import ValveStatus
-from prm9tool.device.entries import RefusedError, Steps, Value, check_cancel
-from prm9tool.device.session import DeviceInfo, ValveSession
+from prm9tool.device.entries import Progress, RefusedError, Steps, Value, check_cancel
+from prm9tool.device.session import DeviceInfo, UploadResult, ValveSession
 from prm9tool.errors import (
     AccessDeniedError,
     DeviceTimeoutError,
@@ -71,6 +71,7 @@ class CanopenSession(ValveSession):
         super().__init__(f"can:{node_id}", on_close)
         self.node_id = node_id
         self._type_key_hint = type_key
+        self.key_given = False  # True: the type key was given, the valve has no 0x2041
         self._shared = canbus.acquire(options)
         self._closed = False
         self._snapshot: dict[str, Value] | None = None  # None: no upload is running
@@ -112,12 +113,28 @@ class CanopenSession(ValveSession):
         if found.problem:
             raise ProtocolError(f"node {self.node_id}: {found.problem}")
         key = found.type_key
+        self.key_given = key is None
         if key is None:
             assert found.derived is not None
             from prm9tool.paths import user_data_dir
 
             key = resolve(found.serial, found.derived, self._type_key_hint, user_data_dir())
         return DeviceInfo(key, found.serial, found.firmware, 0, self._device_id)
+
+    def upload(
+        self,
+        values: Mapping[str, Value],
+        progress: Progress | None = None,
+        cancel: threading.Event | None = None,
+    ) -> UploadResult:
+        """:meth:`ValveSession.upload`; a valve without 0x2041 that stored a set for the type
+        key given (the batch file's) keeps that key remembered for its serial number."""
+        result = super().upload(values, progress, cancel)
+        if result.stored and self.key_given:
+            from prm9tool.paths import user_data_dir
+
+            remember(user_data_dir(), self.info.serial, self.info.type_key)
+        return result
 
     # --- entries ----------------------------------------------------------------------------
     def _read_entries(
