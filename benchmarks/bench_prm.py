@@ -4,6 +4,10 @@ The baseline, measured in the same run, is the standard library's configparser r
 writing the same text (keys and values only: no types, ranges, rules, checksum or fsync).
 
     .venv/bin/python benchmarks/bench_prm.py [--repeat 7] [--number 200]
+
+Then a file at the 1 MiB limit full of unknown names (issue 15 item 16): ``check_bytes`` with
+the bounded spelling suggestions, with a suggestion for every unknown name (as before), and
+configparser on the same text.
 """
 
 from __future__ import annotations
@@ -19,7 +23,9 @@ from collections.abc import Callable
 from pathlib import Path
 
 from prm9tool.catalogue.typekey import TypeKey
+from prm9tool.files import prmcheck
 from prm9tool.files.prmfile import (
+    MAX_FILE_SIZE,
     PrmContents,
     check_bytes,
     load_document,
@@ -81,6 +87,39 @@ def cases(directory: Path) -> list[Case]:
     ]  # fmt: skip
 
 
+def unknown_names_file() -> tuple[str, int]:
+    """A valid file filled up to the size limit with unknown names, and how many."""
+    text = PrmContents.factory(TypeKey.parse(TYPE_KEY)).to_text()
+    lines = [line for line in text.split("\n") if line and not line.startswith("checksum")]
+    size, count = len(text), 0
+    while size < MAX_FILE_SIZE - 100:
+        lines.append(f"LIMTAX{count:05d} = 1")
+        size, count = size + len(lines[-1]) + 1, count + 1
+    return "\n".join([*lines, "checksum = crc32:00000000", ""]), count
+
+
+def bench_unknown_names() -> None:
+    """``--check`` of a 1 MiB file of unknown names: bounded suggestions against unbounded."""
+    text, count = unknown_names_file()
+    data = text.encode("utf-8")
+    bounded = per_call(lambda: check_bytes(data), 3, 1)
+    limit = prmcheck.MAX_SUGGESTIONS
+    prmcheck.MAX_SUGGESTIONS = count  # a suggestion for every unknown name
+    try:
+        unbounded = per_call(lambda: check_bytes(data), 1, 1)
+    finally:
+        prmcheck.MAX_SUGGESTIONS = limit
+    baseline = per_call(lambda: config_parse(text), 3, 1)
+    print(f"\n{len(data)} bytes, {count} unknown names (check_bytes)")
+    print(
+        f"  suggestions for the first {limit}: {bounded:7.2f} s = {bounded / baseline:5.1f}x configparser"
+    )
+    print(
+        f"  a suggestion for every name: {unbounded:7.2f} s = {unbounded / baseline:5.1f}x configparser"
+    )
+    print(f"  configparser (keys and values only): {baseline:7.2f} s")
+
+
 def main(argv: list[str] | None = None) -> int:
     """Run the benchmark and print the figures and ratios."""
     options = argparse.ArgumentParser(description="*.prm load/save against configparser")
@@ -96,6 +135,7 @@ def main(argv: list[str] | None = None) -> int:
             mine = per_call(ours, args.repeat, args.number)
             theirs = per_call(baseline, args.repeat, args.number)
             print(f"{name:<46}{mine * 1e6:>9.1f} µs{theirs * 1e6:>9.1f} µs{mine / theirs:>7.1f}x")
+    bench_unknown_names()
     return 0
 
 

@@ -12,12 +12,13 @@ import sys
 from collections.abc import Callable
 from dataclasses import dataclass
 from pathlib import Path
+from types import TracebackType
 from typing import TYPE_CHECKING
 
 from prm9tool.errors import ExitCode
 
 if TYPE_CHECKING:
-    from PySide6.QtWidgets import QApplication
+    from PySide6.QtWidgets import QApplication, QWidget
 
     from prm9tool.errors import Prm9Error
     from prm9tool.views.main_window import MainWindow
@@ -207,10 +208,36 @@ def _lister(emulators: object) -> list[object]:
     return list(factory.list_devices(emulators))  # type: ignore[arg-type]
 
 
+def show_internal_error(
+    window: QWidget, kind: type[BaseException], error: BaseException, trace: TracebackType | None
+) -> None:
+    """Say that the program failed (a bug) instead of leaving it on standard error only.
+
+    Installed as ``sys.excepthook`` while the GUI runs: an exception in a Qt slot otherwise goes
+    unnoticed and the user goes on with a window that did not do what it showed.
+    """
+    import traceback
+
+    from PySide6.QtCore import QCoreApplication
+
+    from prm9tool.views import prompts
+
+    details = "".join(traceback.format_exception(kind, error, trace))
+    sys.stderr.write(details)
+    title = QCoreApplication.translate("App", "Internal error")
+    text = QCoreApplication.translate(
+        "App",
+        "prm9tool failed: {0}\n\nThe last action may not have been completed. Save your work "
+        "under a new name and please report this error with the details below.",
+    )
+    prompts.inform(window, prompts.Icon.Critical, title, text.format(error), details)
+
+
 def run(args: argparse.Namespace, spools_problem: Prm9Error | None = None) -> int:
     """Start the GUI (``spools_problem``: why spools.json was left out); returns the exit code."""
     app = create_application()
     window = create_window(args)
+    sys.excepthook = lambda *exc: show_internal_error(window, *exc)
     window.show()
     start(window, plan_from(args, spools_problem))
     code = app.exec()

@@ -212,3 +212,15 @@ class ExitCode(IntEnum):
     NO_DEVICE = 4
     TYPE_MISMATCH = 5
     COMMUNICATION = 6
+    HISTORY = 7
+
+
+class HistoryError(Prm9Error):
+    """The history database cannot be used (unreachable, damaged, newer, full); ``kind``
+    says which: ``unreachable``, ``corrupt``, ``newer``, ``full``."""
+
+    summary = QT_TRANSLATE_NOOP("Errors", "The history database cannot be used.")
+
+    def __init__(self, message: str, kind: str = "unreachable") -> None:
+        super().__init__(message)
+        self.kind = kind

@@ -79,6 +79,36 @@ def _english(_context: str, source: str) -> str:
 
 Arg = str | int | float | Message | Localized  # what a message's placeholders take
 
+# The decimal separator of each program language: what QLocale(language).decimalPoint() gives
+# (tests/test_locale_numbers.py checks that they agree). Files are locale-independent and always
+# use the point; the program shows numbers with the separator of its language.
+DECIMAL_POINT: dict[str, str] = {"en": ".", "de": ",", "cs": ","}
+
+
+def localized_number(text: str, language: str) -> str:
+    """A number as the program writes it in files (``9.766``) as ``language`` writes it.
+
+    The one rule for every number the program shows: the decimal point becomes the language's
+    separator (``9,766`` in German and Czech); no group separators, so ``2400`` stays ``2400``
+    (in German ``2.400`` would read as 2.4 in a file and as 2400 to a person).
+    """
+    return text.replace(".", DECIMAL_POINT.get(language, "."))
+
+
+@dataclass(frozen=True)
+class Number:
+    """A message argument that is a number: ``str()`` (files, command line) keeps the point,
+    a message shown in German or Czech gets the decimal comma."""
+
+    text: str
+
+    def get(self, language: str) -> str:
+        """The number as ``language`` writes it."""
+        return localized_number(self.text, language)
+
+    def __str__(self) -> str:
+        return self.text
+
 
 def message_of(error: BaseException) -> Message | str:
     """The message ``error`` was raised with, or ``str(error)`` if it was not one."""

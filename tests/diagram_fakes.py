@@ -7,6 +7,7 @@ signals the GUI gets from the real connection, without its worker thread.
 from __future__ import annotations
 
 from collections.abc import Mapping, Sequence
+from types import SimpleNamespace
 
 from PySide6.QtCore import QObject, Signal
 
@@ -30,6 +31,11 @@ class EmulatorConnection(QObject):
         self.watched: list[str] = []
         self.writes: list[tuple[str, int | str]] = []
         self.stores = 0
+
+    @property
+    def device(self) -> object | None:
+        """What the valve reports of itself, as ValveConnection.device (None offline)."""
+        return SimpleNamespace(type_key=str(self.valve.type_key)) if self.is_online else None
 
     def go_online(self) -> None:
         self.is_online = True

@@ -17,13 +17,15 @@ import pytest
 from python_process import run_python
 
 from prm9tool import app
+from prm9tool.catalogue import CATALOGUE
 from prm9tool.catalogue.typekey import TypeKey
 from prm9tool.cli import batch
 from prm9tool.cli.main import main
 from prm9tool.device import factory
+from prm9tool.device.emulator import EmulatedValve
 from prm9tool.device.transport.emulator import EmulatorTransport, LinkFaults
 from prm9tool.device.usb_session import UsbSession
-from prm9tool.errors import ExitCode
+from prm9tool.errors import AbortCode, ExitCode, SdoAbortError
 from prm9tool.files.prmfile import PrmContents, read_file, write_file
 
 E04 = "PRM9-06.3Z11/30-24E04S02-CA"
@@ -377,7 +379,7 @@ def test_unplugged_at_the_store_step_the_report_keeps_what_was_written_and_verif
     links: list[EmulatorTransport] = []
     die_after: list[int] = []
 
-    def open_on_a_faulty_link(entry, *_):
+    def open_on_a_faulty_link(entry):
         transport = EmulatorTransport(factory.emulated_valve(entry.type_key, entry.serial))
         transport.faults = LinkFaults(die_after=die_after[0] if die_after else None)
         links.append(transport)
@@ -386,7 +388,7 @@ def test_unplugged_at_the_store_step_the_report_keeps_what_was_written_and_verif
     monkeypatch.setattr(batch, "_open", open_on_a_faulty_link)
     try:
         assert main(["--batch", str(source), "--emulator", f"{E04}:91"]) == ExitCode.OK
-        die_after.append(links[0].reports_on_link - 2)  # the store request is the first lost
+        die_after.append(links[0].reports_on_link - 2)  # lost: the last read-back after the store
         args = ["--batch", str(source), "--emulator", f"{E04}:92"]
         assert main([*args, "--report", str(tmp_path / "r.json")]) == ExitCode.COMMUNICATION
     finally:
@@ -484,3 +486,64 @@ def test_help_lists_every_exit_code_and_the_readme_documents_them(capsys):
         assert re.search(rf"^  {int(code)}  \S", shown, re.MULTILINE), code
         assert re.search(rf"^\| {int(code)} \|", section, re.MULTILINE), code
     assert "docs/batch.md" in section and "docs/usb-protocol.md" in section
+
+
+def test_a_refused_store_is_reported_truthfully_and_the_valve_reloaded(tmp_path, monkeypatch):
+    source = tuned_file(tmp_path)
+    valves = []
+
+    def open_a_valve_that_refuses_to_store(entry):
+        valve = factory.emulated_valve(entry.type_key, entry.serial)
+        valve.store = refuse  # type: ignore[method-assign]
+        valves.append(valve)
+        return UsbSession(EmulatorTransport(valve), entry.device_id)
+
+    def refuse():
+        raise SdoAbortError(0x1010, 1, AbortCode.CANNOT_STORE)
+
+    monkeypatch.setattr(batch, "_open", open_a_valve_that_refuses_to_store)
+    try:
+        args = ["--batch", str(source), "--emulator", f"{E04}:93"]
+        assert main([*args, "--report", str(tmp_path / "r.json")]) == ExitCode.VERIFY_FAILED
+        working = {m: valves[0].read(*CATALOGUE[m].key) for m in ("LIMTA", "DTAMP")}
+    finally:
+        factory.forget_emulated_valves()
+    record = report(tmp_path, "r.json")["valves"][0]
+    assert (record["result"], record["failed_step"]) == ("store-failed", "store")
+    assert record["parameters_written"] == len(read_file(source).values)
+    assert record["verification"] == "passed"
+    assert "refused to store the parameters" in record["error"] and "0x08000020" in record["error"]
+    assert "reset to its stored ones" in record["error"]
+    assert working == {"LIMTA": 2400, "DTAMP": 2458}  # reloaded: the factory set it had stored
+
+
+def test_a_long_firmware_text_is_cut_and_the_upload_goes_on(tmp_path, monkeypatch):
+    source = tuned_file(tmp_path)
+    long_text = "1.0.0-" + "x" * 40
+
+    def open_a_valve_with_a_long_firmware_text(entry):
+        valve = EmulatedValve(entry.type_key, entry.serial, long_text)
+        return UsbSession(EmulatorTransport(valve), entry.device_id)
+
+    monkeypatch.setattr(batch, "_open", open_a_valve_with_a_long_firmware_text)
+    args = ["--batch", str(source), "--emulator", f"{E04}:94"]
+    assert main([*args, "--report", str(tmp_path / "r.json")]) == ExitCode.OK
+    assert report(tmp_path, "r.json")["valves"][0]["firmware"] == long_text[:25]
+
+
+@pytest.mark.parametrize("mode", ["upload", "download"])
+def test_whatever_goes_wrong_the_run_ends_with_its_report_and_exit_6(tmp_path, monkeypatch, mode):
+    source = tuned_file(tmp_path)
+
+    def open_a_valve_that_breaks_the_program(entry):
+        raise ValueError("report of 75 bytes exceeds 64")
+
+    monkeypatch.setattr(batch, "_open", open_a_valve_that_breaks_the_program)
+    command = ["--batch", str(source)] if mode == "upload" else ["--batch", "--download", "o.prm"]
+    args = [*command, "--emulator", f"{E04}:95", "--report", str(tmp_path / "r.json")]
+    assert main(args) == ExitCode.COMMUNICATION
+    written = report(tmp_path, "r.json")
+    assert written["exit_code"] == ExitCode.COMMUNICATION
+    error = written["valves"][0]["error"]
+    assert "unexpected error (ValueError: report of 75 bytes exceeds 64)" in error
+    assert not (tmp_path / "o.prm").exists()

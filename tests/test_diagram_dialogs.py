@@ -348,6 +348,23 @@ def test_a_current_limit_above_curnorm_is_refused(qtbot, setup):
     assert "limit B" in [label for _v, _c, label in dialog.plot.axes.hlines]
 
 
+def test_the_dialog_draws_the_dither_the_valve_applies(qtbot, setup):
+    from prm9tool.device.emulator.config import coefficients
+    from prm9tool.device.emulator.constants import FirmwareConstants, PlantConstants
+
+    s = setup(E02)
+    s.doc.set_value("LIMTA", 2600)  # the dither is not clipped at the limit
+    dialog = open_dialog(qtbot, s, "current_limit")
+    currents = [i for _t, i in dialog.plot.curves[0].points]
+    drawn = (max(currents) - min(currents)) / 2
+    applied, _phase_step = coefficients(
+        s.doc.variant, s.doc.value, PlantConstants(), FirmwareConstants(), 25.0, 24.0
+    )["dither"]
+    assert drawn == pytest.approx(applied, rel=0.01)
+    assert drawn == pytest.approx(0.15 * 0.10 * 2600, rel=0.01)  # factory 15 % (docs/emulator.md)
+    assert "±39 mA peak" in dialog.curnorm_label.text()
+
+
 def test_a_refusal_in_a_block_dialog_speaks_the_program_language(qtbot, setup):
     from prm9tool import i18n
 
@@ -388,7 +405,9 @@ def test_the_dither_sketch_follows_amplitude_and_frequency(qtbot, setup):
     type_into(dialog.fields["DYNFREQ"], "100")
     wave = dialog.plot.curves[0].points
     currents = [i for _t, i in wave]
-    assert max(currents) - min(currents) == pytest.approx(2 * 0.1 * 2600, rel=0.02)
+    # DTAMP 10 % = 10 % of the full-scale peak of 10 % CURNORM (catalogue.dither); this test
+    # once asserted 10 % of CURNORM, the dialog's own second rule, not what the valve does
+    assert max(currents) - min(currents) == pytest.approx(2 * 0.1 * 0.1 * 2600, rel=0.02)
     assert wave[-1][0] == pytest.approx(30.0)  # three periods of 100 Hz
 
 

@@ -68,6 +68,15 @@ def test_export_to_stdout(capsys: pytest.CaptureFixture[str]):
     assert capsys.readouterr().out.startswith("[FileInfo]\n")
 
 
+def test_dash_output_means_standard_output_as_for_new(tmp_path, monkeypatch, capsys):
+    monkeypatch.chdir(tmp_path)
+    assert main(["--export-eds", E02, "-o", "-"]) == 0
+    assert capsys.readouterr().out.startswith("[FileInfo]\n")
+    assert main(["--new", E02, "-o", "-"]) == 0
+    assert "checksum = crc32:" in capsys.readouterr().out
+    assert list(tmp_path.iterdir()) == []  # no file named '-'
+
+
 def test_bad_type_key_is_refused_with_a_clear_message(tmp_path, capsys):
     out = tmp_path / "x.eds"
     assert main(["--export-eds", "PRM9-06.9Q99/30-24E02S02-CA", "-o", str(out)]) == 2

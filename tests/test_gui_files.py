@@ -262,6 +262,19 @@ def test_a_vanished_recent_file_is_removed_with_a_message(window, tmp_path, answ
     assert window.files.recent_files() == [] and not recent.isEnabled()
 
 
+def test_a_number_for_the_recent_files_in_the_settings_counts_as_none(window, tmp_path):
+    from prm9tool.views.file_workflow import RECENT_KEY
+    from prm9tool.views.hid_dialog import EMULATORS_KEY, saved_emulators
+
+    window.settings.setValue(RECENT_KEY, 5)  # e.g. a hand-edited settings file
+    window.settings.setValue(EMULATORS_KEY, 7)
+    assert window.files.recent_files() == []
+    assert saved_emulators(window.settings) == []
+    path = tmp_path / "after.prm"
+    window.files.save_to(path)
+    assert window.files.recent_files() == [str(path)]
+
+
 def test_unsaved_changes_prompt_on_open_can_cancel(window, answers):
     window.doc.set_value("LIMTA", 2000)
     answers.answers = [prompts.Button.Cancel]

@@ -90,6 +90,15 @@ def test_status_bar_shows_mode_type_key_and_file(window):
     assert bar.file_label.text() == "untitled *"
 
 
+def test_status_bar_shows_the_access_level(window, monkeypatch):
+    assert window.status.level_label.text() == "Level: Basic"
+    monkeypatch.setattr(window, "_ask_password", lambda: Accepted)
+    window.commands["level_expert"].trigger()
+    assert window.status.level_label.text() == "Level: Expert"
+    window.commands["level_basic"].trigger()
+    assert window.status.level_label.text() == "Level: Basic"
+
+
 def test_views_switch_and_scope_needs_a_valve(window):
     window.commands["view_parameters"].trigger()
     assert window.current_view() == "parameters"

@@ -6,7 +6,7 @@ from __future__ import annotations
 import threading
 
 import pytest
-from gui_support import E02, E04_CA, go_online, main_window, record_prompts, session_of
+from gui_support import E02, E02_CA, E04_CA, go_online, main_window, record_prompts, session_of
 from PySide6.QtWidgets import QDialog, QLabel, QPushButton
 
 from prm9tool.device.transport.emulator import LinkFaults
@@ -104,6 +104,31 @@ def test_differences_prompt_cancel_stays_offline(qtbot, window, monkeypatch):
     go_online(qtbot, window)
     qtbot.waitUntil(lambda: not window.connection.is_online, timeout=TIMEOUT)
     assert window.doc.value("DTAMP") == 1000 and window.doc.modified
+
+
+@pytest.mark.parametrize(
+    ("choice", "mode"), [(DiffChoice.CANCEL, "OFFLINE"), (DiffChoice.TAKE_VALVE, "ONLINE")]
+)
+def test_a_ca_document_and_a_valve_without_canopen_ask_one_question(
+    qtbot, tmp_path, answers, monkeypatch, choice, mode
+):
+    seen = []
+
+    def decide(dialog):  # what the user sees while the question is open
+        seen.append((window.status.mode_label.text(), list(answers.informed)))
+        dialog.choice = choice
+        return QDialog.DialogCode.Accepted
+
+    monkeypatch.setattr(OnlineDiffDialog, "exec", decide)
+    with main_window(qtbot, tmp_path, E02_CA) as window:
+        window.doc.set_value("LIMTA", 1500)
+        window.show_canopen_window()  # it used to read SWBAUD from the valve: "no such parameter"
+        go_online(qtbot, window, f"{E02}:4077")
+        qtbot.waitUntil(lambda: bool(seen), timeout=TIMEOUT)
+        qtbot.waitUntil(lambda: window.status.mode_label.text() == f"Mode: {mode}", timeout=TIMEOUT)
+        qtbot.wait(300)  # a late refusal from the valve would arrive by now
+    assert seen == [("Mode: CONNECTING", [])]  # not ONLINE while "Cancel stays offline"
+    assert answers.informed == [] and len(answers.asked) == 0
 
 
 def test_diff_dialog_offers_only_taking_values_of_another_variant(window):

@@ -10,6 +10,7 @@ from prm9tool.catalogue import Access
 from prm9tool.model.access import AccessModel
 from prm9tool.model.document import ParameterDocument
 from prm9tool.model.undo import DocumentUndo
+from prm9tool.views.parameter_dialog import ParameterEditDialog
 from prm9tool.views.parameter_model import MNEMONIC_ROLE, Column
 from prm9tool.views.parameter_view import ParameterListView
 
@@ -157,12 +158,21 @@ def test_at_basic_level_one_ramp_edit_sets_all_four_as_one_undo_step(view, doc, 
     assert [doc.value(mn) for mn in ramps] == [0, 0, 300, 0]
 
 
-def test_double_click_opens_the_edit_dialog(view, qtbot):
+def test_double_click_opens_one_edit_dialog(view, qtbot):
+    # A real double-click: emitting doubleClicked alone (as this test once did) never showed
+    # that activated, emitted by the same double-click, opened a second, stale dialog.
     opened = []
     view.edit_requested.connect(opened.append)
-    row = view.proxy.mapFromSource(view.model.index(view.model.row_of("LIMTB"), 0))
-    view.table.doubleClicked.emit(row)
+    view.show()
+    qtbot.waitExposed(view)
+    index = view.proxy.mapFromSource(view.model.index(view.model.row_of("LIMTB"), 1))
+    view.table.scrollTo(index)
+    centre = view.table.visualRect(index).center()
+    qtbot.mouseClick(view.table.viewport(), Qt.MouseButton.LeftButton, pos=centre)
+    qtbot.mouseDClick(view.table.viewport(), Qt.MouseButton.LeftButton, pos=centre)  # press 2
     assert opened == ["LIMTB"]
-    dialogs = [w for w in view.findChildren(type(view.make_edit_dialog("LIMTB"))) if w.isVisible()]
-    assert dialogs and dialogs[0].param.mnemonic == "LIMTB"
+    dialogs = [w for w in view.findChildren(ParameterEditDialog) if w.isVisible()]
+    assert len(dialogs) == 1 and dialogs[0].param.mnemonic == "LIMTB"
+    view.table.activated.emit(index)  # Enter on the row while the dialog is open
+    assert opened == ["LIMTB"]
     dialogs[0].reject()

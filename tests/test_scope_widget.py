@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+import math
+
 import numpy as np
 import pyqtgraph as pg
 import pytest
@@ -443,8 +445,32 @@ def test_step_figures_can_be_limited_to_the_cursor_span(scope, conn):
     assert panel.figures["error"].text() == "0.0 %"
     assert "between cursors" in panel.region.text()
     panel.between_cursors.setChecked(False)
-    assert "visible window" in panel.region.text()
-    assert panel.figures["error"].text() != "0.0 %"  # the whole window ends after the second step
+    assert panel.region.text() == "Measured on step 1 of 2 in the visible window."
+    assert panel.figures["rise"].text() == "21.97 ms"  # the first step, up to the second
+    scope.plot.set_cursor_times(0.05, 0.11)  # B 10 ms after the step: the response is cut
+    panel.between_cursors.setChecked(True)
+    assert panel.figures["overshoot"].text() == "—"
+    assert panel.region.text().startswith(
+        "Window too short: in the samples between cursors A and B the response has not come"
+    )
+
+
+def test_a_square_wave_in_view_is_measured_not_called_no_response(scope, conn):
+    def demand(t):  # a 0.2 s square wave: five edges in the window
+        return np.where(np.mod(np.round(t * 5000) - 250, 1000) < 500, 8192, 0) * (t >= 0.05)
+
+    def response(t):
+        y, a = np.zeros_like(t), math.exp(-1 / 50)  # τ = 10 ms at 5 kHz
+        ref = demand(t)
+        for k in range(1, len(t)):
+            y[k] = a * y[k - 1] + (1 - a) * ref[k - 1]
+        return y
+
+    _step_captured(scope, conn, response, demand)
+    panel = scope.step_panel
+    assert panel.region.text() == "Measured on step 1 of 5 in the visible window."
+    assert panel.figures["rise"].text() == "21.97 ms"
+    assert panel.figures["overshoot"].text() == "0.0 %"
 
 
 def test_a_refused_stream_start_stops_and_says_why(qtbot, doc):
@@ -473,3 +499,58 @@ def test_a_language_change_relabels_the_channels_and_keeps_the_data(scope, conn,
     assert any(item.text() == "Schieberlage Ist (0x6301) [%]" for item in items)
     assert scope.channels.selected() == ["position_actual"]
     assert scope.capture.buffer.total == 100
+
+
+def test_cursors_keep_their_place_on_the_screen_when_new_data_arrives(scope, conn):
+    plot = _showing_demand(scope, conn)
+    scope.cursor_panel.show_cursors.setChecked(True)
+    x0, x1 = plot.x_range()
+    assert plot.cursor_times() == pytest.approx((x0 + 0.25 * (x1 - x0), x0 + 0.75 * (x1 - x0)))
+    scope.stop()
+    scope.start()  # a new capture: 20 s later the window shows other times
+    conn.samples_received.emit(np.full((100_000, 1), 4096))
+    scope._redraw()
+    n0, n1 = plot.x_range()
+    assert n0 > x1  # the old times are off the plot
+    assert plot.cursor_times() == pytest.approx((n0 + 0.25 * (n1 - n0), n0 + 0.75 * (n1 - n0)))
+    assert scope.cursor_panel.cells[0][1].text() == "25 %"  # not "—"
+
+
+def _drag(plot, x_from: float, x_to: float) -> None:
+    """A left-button drag across the middle of the plot from pixel ``x_from`` to ``x_to``."""
+    from PySide6.QtCore import QPointF
+    from PySide6.QtGui import QMouseEvent
+    from PySide6.QtTest import QTest
+    from PySide6.QtWidgets import QApplication
+
+    viewport = plot.graphics.viewport()
+    y = viewport.height() / 2
+    left, none = Qt.MouseButton.LeftButton, Qt.MouseButton.NoButton
+    events = [(QEvent.Type.MouseMove, x_from, none, none)]  # hover first, as a real mouse does
+    events += [(QEvent.Type.MouseButtonPress, x_from, left, left)]
+    events += [
+        (QEvent.Type.MouseMove, x_from + (x_to - x_from) * k / 5, none, left) for k in range(1, 6)
+    ]
+    events += [(QEvent.Type.MouseButtonRelease, x_to, left, none)]
+    for kind, x, button, buttons in events:
+        point = QPointF(x, y)
+        global_point = QPointF(viewport.mapToGlobal(point.toPoint()))
+        event = QMouseEvent(
+            kind, point, global_point, button, buttons, Qt.KeyboardModifier.NoModifier
+        )
+        QApplication.sendEvent(viewport, event)
+        QTest.qWait(25)  # pyqtgraph drops mouse moves closer together than its rate limit
+
+
+def test_a_press_next_to_a_cursor_line_drags_the_cursor_not_the_plot(scope, conn):
+    plot = _showing_demand(scope, conn)
+    scope.stop()  # held: the mouse pans the time axis
+    scope.cursor_panel.show_cursors.setChecked(True)
+    before = plot.x_range()
+    t_a, _ = plot.cursor_times()
+    view = plot.views[0]
+    x = plot.graphics.mapFromScene(view.mapViewToScene(pg.Point(t_a, 0))).x()
+    _drag(plot, x + 4, x + 64)  # 4 pixels right of cursor A
+    assert plot.x_range() == pytest.approx(before)  # no pan
+    pixel = (before[1] - before[0]) / view.width()
+    assert plot.cursor_times()[0] == pytest.approx(t_a + 60 * pixel, abs=3 * pixel)

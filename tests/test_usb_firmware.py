@@ -9,6 +9,7 @@ from prm9tool.device.emulator.usb_firmware import UsbFirmware
 from prm9tool.device.protocol import (
     AbortReply,
     Identify,
+    IdentifyReply,
     Op,
     ReadEntries,
     SegmentWrite,
@@ -129,3 +130,42 @@ def test_restart_answers_first_then_forgets_the_session_state(firmware, valve):
     assert firmware.handle(frame("08 02 62 6f 6f 74")) == frame("88 02 00")
     assert not firmware.streaming
     assert valve.status().booting
+
+
+def test_a_duplicated_restart_executes_once(firmware, valve):
+    restarts = []
+    valve.add_restart_listener(lambda: restarts.append(valve.time))
+    valve.advance(3.0)
+    report = frame("08 07 62 6f 6f 74")
+    assert firmware.handle(report) == frame("88 07 00")
+    valve.advance(0.5)
+    assert firmware.handle(report) == frame("88 07 00")  # the same report again: answered only
+    assert len(restarts) == 1 and valve.time > 0.4
+    firmware.handle(frame("08 08 62 6f 6f 74"))  # a new seq is a new request
+    assert len(restarts) == 2
+
+
+@pytest.mark.parametrize(
+    ("firmware_text", "sent"),
+    [
+        ("1.0.0-" + "x" * 40, "1.0.0-" + "x" * 19),  # cut to 25 bytes
+        ("1.0.0-" + "é" * 20, "1.0.0-" + "é" * 9),  # never in the middle of a character
+        ("1.0.0", "1.0.0"),
+    ],
+)
+def test_a_long_firmware_text_is_cut_to_the_room_identify_has(firmware_text, sent):
+    key = "PRM9-06.3Z11/30-24E04S02-CA"
+    firmware = UsbFirmware.of(EmulatedValve(key, 7, firmware_text))
+    _op, _seq, reply = decode_response(firmware.handle(encode_request(3, Identify())))
+    assert (reply.type_key, reply.firmware) == (key, sent)
+    assert firmware.internal_errors == 0
+
+
+def test_an_answer_that_does_not_fit_a_report_is_a_general_error_not_an_exception(
+    firmware, monkeypatch
+):
+    too_long = IdentifyReply(1, 1, "K" * 70, "1.0")
+    monkeypatch.setattr(firmware, "_dispatch", lambda request: too_long)
+    answer = firmware.handle(encode_request(4, Identify()))
+    assert decode_response(answer) == (Op.IDENTIFY, 4, AbortReply(AbortCode.GENERAL_ERROR))
+    assert firmware.internal_errors == 1

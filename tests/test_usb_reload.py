@@ -13,6 +13,7 @@ from prm9tool.device.protocol import (
     Done,
     Op,
     Reload,
+    Store,
     decode_request,
     decode_response,
     encode_request,
@@ -206,3 +207,41 @@ def test_reload_that_is_refused_is_reported_in_the_result(tmp_path, monkeypatch)
     result = rig.session.upload(rig.upload)
     assert (result.failed_step, result.reloaded) == ("verify", False)
     assert "abort 0x08000000" in result.reload_error
+
+
+def test_refused_store_reloads_the_stored_set_and_says_so(tmp_path, monkeypatch):
+    rig = Rig(tmp_path)
+
+    def refuse_store():
+        raise SdoAbortError(0x1010, 1, AbortCode.CANNOT_STORE)
+
+    monkeypatch.setattr(rig.valve, "store", refuse_store)
+    before = rig.snapshot()
+    result = rig.session.upload(rig.upload)
+    assert (result.failed_step, result.verified, result.stored) == ("store", True, False)
+    assert result.written == len(rig.upload)  # every value was written and read back
+    assert result.reloaded and "refused to store" in result.failure
+    assert "0x08000020" in result.failure
+    rig.check_back_on_the_stored_set(before)
+
+
+class BrownOutBeforeStore(EmulatorTransport):
+    """The valve power-cycles just before it receives the STORE request, once armed."""
+
+    armed = False
+
+    def request(self, message):
+        if self.armed and isinstance(message, Store):
+            self.valve.restart()
+        return super().request(message)
+
+
+def test_a_restart_just_before_the_store_is_not_reported_as_stored(tmp_path):
+    rig = Rig(tmp_path, BrownOutBeforeStore)
+    rig.transport.armed = True
+    result = rig.session.upload(rig.upload)
+    assert (result.failed_step, result.verified, result.stored) == ("store", True, False)
+    assert result.mismatches and "restarted" in result.failure
+    assert file_values(rig.valve) == rig.stored  # the old set, working and stored
+    rig.valve.restart()
+    assert file_values(rig.valve) == rig.stored

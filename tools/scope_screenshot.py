@@ -69,7 +69,7 @@ def capture(app: QApplication, scope: ScopeWidget) -> None:
 def mark(scope: ScopeWidget) -> None:
     """Cursors on the step and the settling point; figures between them."""
     scope.cursor_panel.show_cursors.setChecked(True)
-    figures = scope.display.figures(*scope.plot.x_range())
+    figures = scope.display.measure(*scope.plot.x_range()).figures
     settle = figures.settling_time if figures is not None else 0.05
     scope.plot.set_cursor_times(0.0, settle)  # Δt reads the settling time
     scope.display.update_readouts()

@@ -758,6 +758,10 @@ Dokud soubor neopravíte, zná prm9tool pouze dodaná šoupátka.</translation>
             <translation>„{0}“ již neexistuje; byl odstraněn ze seznamu.</translation>
         </message>
         <message>
+            <source>Opening {0} cancelled</source>
+            <translation>Otevírání {0} zrušeno</translation>
+        </message>
+        <message>
             <source>Cannot open “{0}”</source>
             <translation>„{0}“ nelze otevřít</translation>
         </message>
@@ -776,6 +780,14 @@ Dokud soubor neopravíte, zná prm9tool pouze dodaná šoupátka.</translation>
                 <numerusform>„{0}“ byl otevřen; nalezena %n varování.</numerusform>
                 <numerusform>„{0}“ byl otevřen; nalezeno %n varování.</numerusform>
             </translation>
+        </message>
+        <message>
+            <source>Reading “{0}”…</source>
+            <translation>Načítá se „{0}“…</translation>
+        </message>
+        <message>
+            <source>Cancel</source>
+            <translation>Zrušit</translation>
         </message>
         <message>
             <source>Save parameter file</source>
@@ -799,6 +811,14 @@ Dokud soubor neopravíte, zná prm9tool pouze dodaná šoupátka.</translation>
                 <numerusform>Další %n problém v podrobnostech.</numerusform>
                 <numerusform>Další %n problémy v podrobnostech.</numerusform>
                 <numerusform>Dalších %n problémů v podrobnostech.</numerusform>
+            </translation>
+        </message>
+        <message numerus="yes">
+            <source>… and %n more problem(s).</source>
+            <translation>
+                <numerusform>… a %n další problém.</numerusform>
+                <numerusform>… a %n další problémy.</numerusform>
+                <numerusform>… a dalších %n problémů.</numerusform>
             </translation>
         </message>
     </context>
@@ -2460,8 +2480,24 @@ Ujistěte se, že pohyb stroje je bezpečný. Spustit generátor?</translation>
             <translation>Dokument je pro ventil {0}, připojený ventil je {1}. Zvolte odpovídající typ ventilu nebo nejprve stáhněte parametry z ventilu.</translation>
         </message>
         <message>
+            <source>Nothing was sent to the valve</source>
+            <translation>Do ventilu nebylo nic odesláno</translation>
+        </message>
+        <message>
             <source>Uploading the parameters to the valve…</source>
             <translation>Načítání parametrů do ventilu…</translation>
+        </message>
+        <message>
+            <source>Expert values at Basic level</source>
+            <translation>Expertní hodnoty na základní úrovni</translation>
+        </message>
+        <message numerus="yes">
+            <source>The document changes %n Expert-level value(s) of the valve ({0}), which the Basic access level cannot edit (controllers, linearizations, monitoring). Send them anyway?</source>
+            <translation>
+                <numerusform>Dokument mění %n hodnotu úrovně Expert ve ventilu ({0}), kterou základní úroveň oprávnění nemůže upravovat (regulátory, linearizace, monitorování). Přesto odeslat?</numerusform>
+                <numerusform>Dokument mění %n hodnoty úrovně Expert ve ventilu ({0}), které základní úroveň oprávnění nemůže upravovat (regulátory, linearizace, monitorování). Přesto odeslat?</numerusform>
+                <numerusform>Dokument mění %n hodnot úrovně Expert ve ventilu ({0}), které základní úroveň oprávnění nemůže upravovat (regulátory, linearizace, monitorování). Přesto odeslat?</numerusform>
+            </translation>
         </message>
         <message>
             <source>Downloading the parameters from the valve…</source>

@@ -758,6 +758,10 @@ Bis die Datei korrigiert ist, kennt prm9tool nur die mitgelieferten Schieber.</t
             <translation>„{0}“ existiert nicht mehr; die Datei wurde aus der Liste entfernt.</translation>
         </message>
         <message>
+            <source>Opening {0} cancelled</source>
+            <translation>Öffnen von {0} abgebrochen</translation>
+        </message>
+        <message>
             <source>Cannot open “{0}”</source>
             <translation>„{0}“ kann nicht geöffnet werden</translation>
         </message>
@@ -775,6 +779,14 @@ Bis die Datei korrigiert ist, kennt prm9tool nur die mitgelieferten Schieber.</t
                 <numerusform>„{0}“ wurde geöffnet; %n Warnung gefunden.</numerusform>
                 <numerusform>„{0}“ wurde geöffnet; %n Warnungen gefunden.</numerusform>
             </translation>
+        </message>
+        <message>
+            <source>Reading “{0}”…</source>
+            <translation>„{0}“ wird gelesen…</translation>
+        </message>
+        <message>
+            <source>Cancel</source>
+            <translation>Abbrechen</translation>
         </message>
         <message>
             <source>Save parameter file</source>
@@ -797,6 +809,13 @@ Bis die Datei korrigiert ist, kennt prm9tool nur die mitgelieferten Schieber.</t
             <translation>
                 <numerusform>%n weiteres Problem in den Details.</numerusform>
                 <numerusform>%n weitere Probleme in den Details.</numerusform>
+            </translation>
+        </message>
+        <message numerus="yes">
+            <source>… and %n more problem(s).</source>
+            <translation>
+                <numerusform>… und %n weiteres Problem.</numerusform>
+                <numerusform>… und %n weitere Probleme.</numerusform>
             </translation>
         </message>
     </context>
@@ -2456,8 +2475,23 @@ Stellen Sie sicher, dass die Maschine sich gefahrlos bewegen kann. Generator sta
             <translation>Das Dokument ist für ein Ventil {0}, das angeschlossene Ventil ist ein Ventil {1}. Wählen Sie den passenden Ventiltyp oder laden Sie zuerst die Parameter des Ventils herunter.</translation>
         </message>
         <message>
+            <source>Nothing was sent to the valve</source>
+            <translation>Es wurde nichts an das Ventil gesendet</translation>
+        </message>
+        <message>
             <source>Uploading the parameters to the valve…</source>
             <translation>Parameter werden in das Ventil hochgeladen…</translation>
+        </message>
+        <message>
+            <source>Expert values at Basic level</source>
+            <translation>Expertenwerte in der Stufe Basis</translation>
+        </message>
+        <message numerus="yes">
+            <source>The document changes %n Expert-level value(s) of the valve ({0}), which the Basic access level cannot edit (controllers, linearizations, monitoring). Send them anyway?</source>
+            <translation>
+                <numerusform>Das Dokument ändert %n Wert der Stufe Experte im Ventil ({0}), den die Zugriffsstufe Basis nicht bearbeiten kann (Regler, Linearisierungen, Überwachung). Trotzdem senden?</numerusform>
+                <numerusform>Das Dokument ändert %n Werte der Stufe Experte im Ventil ({0}), die die Zugriffsstufe Basis nicht bearbeiten kann (Regler, Linearisierungen, Überwachung). Trotzdem senden?</numerusform>
+            </translation>
         </message>
         <message>
             <source>Downloading the parameters from the valve…</source>

@@ -11,6 +11,13 @@
             </translation>
         </message>
         <message numerus="yes">
+            <source>… and %n more problem(s).</source>
+            <translation>
+                <numerusform>… and %n more problem.</numerusform>
+                <numerusform>… and %n more problems.</numerusform>
+            </translation>
+        </message>
+        <message numerus="yes">
             <source>%n more problem(s) in the details.</source>
             <translation>
                 <numerusform>%n more problem in the details.</numerusform>
@@ -40,6 +47,13 @@
     </context>
     <context>
         <name>ValveWorkflow</name>
+        <message numerus="yes">
+            <source>The document changes %n Expert-level value(s) of the valve ({0}), which the Basic access level cannot edit (controllers, linearizations, monitoring). Send them anyway?</source>
+            <translation>
+                <numerusform>The document changes %n Expert-level value of the valve ({0}), which the Basic access level cannot edit (controllers, linearizations, monitoring). Send it anyway?</numerusform>
+                <numerusform>The document changes %n Expert-level values of the valve ({0}), which the Basic access level cannot edit (controllers, linearizations, monitoring). Send them anyway?</numerusform>
+            </translation>
+        </message>
         <message numerus="yes">
             <source>%n parameter(s) written, verified and stored</source>
             <translation>

@@ -10,7 +10,7 @@ from enum import IntEnum, StrEnum
 
 from prm9tool.catalogue.variant import Coils, Config, Variant
 from prm9tool.errors import ValueRangeError
-from prm9tool.messages import QT_TRANSLATE_NOOP
+from prm9tool.messages import QT_TRANSLATE_NOOP, Number
 
 
 class DataType(IntEnum):
@@ -257,7 +257,12 @@ class Parameter:
         return repr(value)
 
     def parse_display(self, text: str) -> int | str:
-        """Parse a display text to a raw value; raises ValueRangeError with the reason."""
+        """Parse a display text to a raw value; raises ValueRangeError with the reason.
+
+        A number is ASCII digits with an optional sign, one decimal point or comma and an
+        exponent (``-2.5``, ``0,4``, ``1e3``); other digits (``２４００``, ``٢٤٠٠``), ``2_400``,
+        ``inf`` and ``nan`` are not numbers, whatever Python's ``float()`` would accept.
+        """
         if self.is_string:
             return text
         cleaned = text.strip().replace(",", ".") if text.count(",") == 1 else text.strip()
@@ -305,7 +310,7 @@ class Parameter:
             raise ValueRangeError(
                 QT_TRANSLATE_NOOP(
                     "Problems", "{0}: {1}{2} is outside the allowed range {3} … {4}{2}"
-                )(self.mnemonic, self.format_display(raw), unit, lo, hi)
+                )(self.mnemonic, Number(self.format_display(raw)), unit, Number(lo), Number(hi))
             )
 
     def choice_text(self, raw: int, language: str = "en") -> str:
@@ -319,14 +324,12 @@ class Parameter:
 # "object 0x2041: decision", "object and scaling: decision", "decision (tuning generator)",
 # "not in 7-13: decision" (a CiA 301 object the manual's table does not list)
 _DECIDED_ADDRESS = re.compile(r"object[^:;)]*: decision|^decision \(|not in 7-13: decision")
+_NUMBER = re.compile(r"[+-]?([0-9]+\.?[0-9]*|\.[0-9]+)([eE][+-]?[0-9]+)?")
 
 
 def _is_number(text: str) -> bool:
-    try:
-        float(text)
-    except ValueError:
-        return False
-    return True
+    """True for an ASCII decimal number (``re`` with ``[0-9]``, not ``\\d``, which is Unicode)."""
+    return _NUMBER.fullmatch(text) is not None
 
 
 def _tidy(text: str) -> str:

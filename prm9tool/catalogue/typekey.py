@@ -148,6 +148,15 @@ class TypeKey:
     config: Config
     canopen: bool
 
+    def __post_init__(self) -> None:
+        """Refuse a configuration that is not a :class:`Config` (a plain ``"E02"`` included).
+
+        A Qt combo box hands an enum stored as item data back as ``str``; such a key would
+        only fail later, when it is formatted, far from the slot that made it.
+        """
+        if not isinstance(self.config, Config):
+            raise TypeError(f"TypeKey.config must be a Config, not {type(self.config).__name__}")
+
     @property
     def coils(self) -> Coils:
         """Coil layout derived from the spool code."""

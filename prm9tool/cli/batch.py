@@ -8,12 +8,14 @@ saves one valve's parameters. Usage, exit codes and report schema: docs/batch.md
 from __future__ import annotations
 
 import argparse
+import logging
 import sys
 from collections.abc import Mapping
 from concurrent.futures import ThreadPoolExecutor
 from pathlib import Path
 
 from prm9tool.catalogue.typekey import TypeKey
+from prm9tool.cli.batch_history import BatchHistory
 from prm9tool.cli.batch_report import (
     ProgressPrinter,
     Stopwatch,
@@ -45,6 +47,8 @@ from prm9tool.errors import (
 from prm9tool.files.backup import ensure_backup, existing_backups
 from prm9tool.files.prmfile import PrmContents, read_file, write_file
 
+log = logging.getLogger("prm9tool.cli.batch")
+
 
 class BatchError(Exception):
     """Ends the run before any valve was touched, with ``code`` and a message for stderr."""
@@ -66,7 +70,7 @@ def run(args: argparse.Namespace) -> int:
     except BatchError as exc:
         print(f"prm9tool: {exc}", file=sys.stderr)
         code = exc.code
-    if args.report and not args.list_devices and Path(args.report).parent.is_dir():
+    if args.report and not args.list_devices and _report_refusal(args.report) is None:
         try:
             write_report(args.report, mode, args.batch or args.download, code, records)
         except OSError as exc:
@@ -90,14 +94,28 @@ def _check_usage(args: argparse.Namespace) -> None:
         raise BatchError(ExitCode.USAGE, "--batch needs FILE.prm (or --download OUT.prm)")
     if args.download and (args.all or len(args.emulator) > 1):  # --device: checked in select
         raise BatchError(ExitCode.USAGE, "--download saves one valve: select exactly one")
-    if args.report and not Path(args.report).parent.is_dir():
-        folder = Path(args.report).parent
-        raise BatchError(ExitCode.USAGE, f"--report {args.report}: there is no folder {folder}")
+    refusal = _report_refusal(args.report) if args.report else None
+    if refusal is not None:
+        raise BatchError(ExitCode.USAGE, f"--report {args.report}: {refusal}")
     for spec in args.emulator:
         try:
             parse_emulator_spec(spec)
         except TypeKeyError as exc:
             raise BatchError(ExitCode.USAGE, f"--emulator: {exc}") from exc
+
+
+def _report_refusal(path: str) -> str | None:
+    """Why the report cannot go to ``path`` (checked before any valve is touched), or None.
+
+    A symbolic link is refused: writing through it would replace a file the run was never
+    told about (docs/batch.md).
+    """
+    report = Path(path)
+    if not report.parent.is_dir():
+        return f"there is no folder {report.parent}"
+    if report.is_symlink():
+        return "is a symbolic link; give the path of the report itself"
+    return None
 
 
 # --- devices ------------------------------------------------------------------------------------
@@ -224,6 +242,11 @@ def _match(wanted: str, usb: list[DeviceEntry]) -> list[DeviceEntry]:
     return found
 
 
+def open_entry(entry: DeviceEntry, can: CanOptions | None = None) -> ValveSession:
+    """Open a session as the headless commands do (``--batch``, ``--diff``)."""
+    return _open(entry) if can is None else _open(entry, can)
+
+
 def _open(
     entry: DeviceEntry, can: CanOptions | None = None, type_key: str | None = None
 ) -> ValveSession:
@@ -251,9 +274,13 @@ def _upload(args: argparse.Namespace, records: list[ValveRecord]) -> ExitCode:
     contents = _read_source(args.batch)
     entries = select(args)
     printer = ProgressPrinter()
-    job = _UploadJob(contents, args.force_type, args.dry_run, printer, can_options(args))
-    with ThreadPoolExecutor(max_workers=len(entries)) as pool:
-        records.extend(pool.map(job, entries))
+    history = BatchHistory.open(args, BatchError)
+    job = _UploadJob(contents, args.force_type, args.dry_run, printer, history, can_options(args))
+    try:
+        with ThreadPoolExecutor(max_workers=len(entries)) as pool:
+            records.extend(pool.map(job, entries))
+    finally:
+        history.close()
     for record in records:
         printer.say(str(record.serial), _summary(record))
     return overall(records)
@@ -273,9 +300,11 @@ class _UploadJob:
         force: bool,
         dry_run: bool,
         printer: ProgressPrinter,
+        history: BatchHistory,
         can: CanOptions | None = None,
     ) -> None:
         self.contents, self.force, self.dry_run, self.printer = contents, force, dry_run, printer
+        self.history = history
         self.can = can
 
     def __call__(self, entry: DeviceEntry) -> ValveRecord:
@@ -284,7 +313,10 @@ class _UploadJob:
             entry.device_id, entry.kind, entry.serial, entry.type_key, entry.firmware
         )
         try:
-            with _open(entry, self.can, str(self.contents.type_key)) as session:
+            # the file's type key serves a CANopen valve that does not tell its own (0x2041)
+            key = str(self.contents.type_key)
+            opened = _open(entry) if self.can is None else _open(entry, self.can, key)
+            with opened as session:
                 info = session.info
                 record.type_key, record.serial, record.firmware = (
                     info.type_key,
@@ -299,7 +331,11 @@ class _UploadJob:
             record.result, record.error = "type-mismatch", str(exc)
         except Prm9Error as exc:  # a refused read during the backup, an unwritable backup …
             record.result, record.error = "communication-error", str(exc)
+        except Exception as exc:  # whatever the valve answered: the run still ends with a report
+            log.exception("%s: unexpected error", entry.device_id)
+            record.result, record.error = "communication-error", _unexpected(exc)
         clock.finish(record)
+        self.history.upload(record, self.contents.values)
         return record
 
     def _run(self, session: ValveSession, record: ValveRecord) -> None:
@@ -310,7 +346,7 @@ class _UploadJob:
             return
         values = self.contents.values
         if self.dry_run:
-            current = session.download()
+            current = record.current = session.download()
             record.changes = sum(current.get(m) != v for m, v in values.items())
             record.result = "dry-run"
             return
@@ -322,6 +358,8 @@ class _UploadJob:
             raise Prm9Error(
                 f"the backup could not be written, nothing was uploaded: {exc}"
             ) from exc
+        if new_backup is not None:
+            self.history.backup(record, new_backup)
         backups = existing_backups(record.serial)
         latest = new_backup or (backups[-1] if backups else None)
         record.backup = str(latest) if latest else None
@@ -335,6 +373,8 @@ class _UploadJob:
             m: {"expected": want, "actual": got} for m, (want, got) in result.mismatches.items()
         }
         record.result = "ok" if result.stored else "verification-failed"
+        if result.failed_step == "store":
+            record.result = "store-failed"
         if result.skipped:
             record.skipped = list(result.skipped)
             self.printer.say(
@@ -343,8 +383,15 @@ class _UploadJob:
                 + ", ".join(result.skipped),
             )
         if not result.stored:
-            problem = _mismatch_text(result.failed_step, result.mismatches)
+            problem = result.failure or _mismatch_text(result.failed_step, result.mismatches)
             record.error = f"{problem}; {reload_outcome(result.reload_error)}"
+
+
+def _unexpected(exc: Exception) -> str:
+    return (
+        f"unexpected error ({type(exc).__name__}: {exc}); the valve may have answered something "
+        "this prm9tool cannot handle; details on standard error"
+    )
 
 
 def _copy_progress(exc: CommunicationError, record: ValveRecord) -> None:
@@ -391,13 +438,16 @@ def _download(args: argparse.Namespace, records: list[ValveRecord]) -> ExitCode:
     )
     records.append(record)
     try:
-        with _open(entry[0], can_options(args)) as session:
+        can = can_options(args)
+        with _open(entry[0]) if can is None else _open(entry[0], can) as session:
             values = session.download(printer.callback(str(record.serial)))
             info = session.info
-    except (CommunicationError, Prm9Error) as exc:
-        record.error = str(exc)
+    except Exception as exc:  # a Prm9Error, or whatever else the valve's answers caused
+        if not isinstance(exc, Prm9Error):
+            log.exception("%s: unexpected error", entry[0].device_id)
+        record.error = str(exc) if isinstance(exc, Prm9Error) else _unexpected(exc)
         clock.finish(record)
-        raise BatchError(ExitCode.COMMUNICATION, f"download failed: {exc}") from exc
+        raise BatchError(ExitCode.COMMUNICATION, f"download failed: {record.error}") from exc
     contents = PrmContents(TypeKey.parse(info.type_key), values, info.serial, info.firmware or None)
     try:
         write_file(contents, args.download)
@@ -407,6 +457,9 @@ def _download(args: argparse.Namespace, records: list[ValveRecord]) -> ExitCode:
         raise BatchError(ExitCode.INVALID_FILE, f"cannot save {args.download}:\n{exc}") from exc
     record.result, record.output = "downloaded", args.download
     clock.finish(record)
+    history = BatchHistory.for_download(args)  # reading changes nothing: never refused
+    history.download(record, values)
+    history.close()
     record.parameters_written = 0
     printer.say(str(record.serial), f"saved {len(values)} parameters to {args.download}")
     return ExitCode.OK

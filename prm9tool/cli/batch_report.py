@@ -25,6 +25,7 @@ RESULTS = {
     "dry-run": ExitCode.OK,
     "downloaded": ExitCode.OK,
     "verification-failed": ExitCode.VERIFY_FAILED,
+    "store-failed": ExitCode.VERIFY_FAILED,  # refused or unconfirmed store: nothing stored
     "type-mismatch": ExitCode.TYPE_MISMATCH,
     "communication-error": ExitCode.COMMUNICATION,
 }
@@ -53,6 +54,8 @@ class ValveRecord:
     changes: int | None = None  # --dry-run: parameters that an upload would change
     error: str | None = None
     skipped: list[str] = field(default_factory=list)  # not available over CANopen: not uploaded
+    history: str | None = None  # "recorded", "queued" or why it was not recorded
+    current: dict[str, Any] | None = field(default=None, repr=False)  # --dry-run: as read
 
     @property
     def exit_code(self) -> ExitCode:
@@ -69,7 +72,9 @@ def overall(records: list[ValveRecord]) -> ExitCode:
 def write_report(
     path: str, mode: str, source: str | None, exit_code: int, records: list[ValveRecord]
 ) -> None:
-    """Write the JSON report atomically."""
+    """Write the JSON report atomically; a symbolic link at ``path`` is replaced, never
+    followed (``run`` refuses a link before the run; one that appears meanwhile cannot make
+    the report overwrite another file)."""
     report = {
         "prm9tool": __version__,
         "schema": SCHEMA,
@@ -77,10 +82,16 @@ def write_report(
         "mode": mode,
         "file": source,
         "exit_code": int(exit_code),
-        "valves": [asdict(r) for r in records],
+        "valves": [_entry(r) for r in records],
     }
     text = json.dumps(report, indent=2, ensure_ascii=False) + "\n"
-    atomic_write(Path(path), text.encode("utf-8"), backup=False)
+    atomic_write(Path(path), text.encode("utf-8"), backup=False, follow_symlinks=False)
+
+
+def _entry(record: ValveRecord) -> dict[str, Any]:
+    entry = asdict(record)
+    del entry["current"]  # the values read in a dry run go into the history, not the report
+    return entry
 
 
 class ProgressPrinter:

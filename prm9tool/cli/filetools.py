@@ -17,6 +17,13 @@ from prm9tool.errors import ExitCode, FileFormatError, FileProblem, Prm9Error, T
 from prm9tool.files import eds
 from prm9tool.files.prmfile import PrmContents, check_file, write_file
 
+STDOUT = "-"  # ``-o -``: standard output, for every command that takes -o
+
+
+def to_stdout(output: str | None) -> bool:
+    """True when ``-o`` names standard output (``-``)."""
+    return output == STDOUT
+
 
 def run(args: argparse.Namespace) -> int:
     """Run ``--new`` or ``--check`` as given in ``args``; returns the exit code."""
@@ -38,7 +45,7 @@ def new_file(type_key_text: str, output: str | None) -> int:
         contents = PrmContents.factory(TypeKey.parse(type_key_text))
     except TypeKeyError as exc:
         return _usage(str(exc))
-    if output == "-":
+    if to_stdout(output):
         sys.stdout.write(contents.to_text())
         return ExitCode.OK
     if Path(output).exists():
@@ -82,13 +89,14 @@ def _usage(message: str) -> int:
 
 
 def export_eds_command(args: argparse.Namespace) -> int:
-    """``prm9tool --export-eds TYPEKEY [-o FILE.eds]``; returns the exit code."""
+    """``prm9tool --export-eds TYPEKEY [-o FILE.eds]`` (standard output without -o or with
+    ``-o -``); returns the exit code."""
     try:
         text = eds.export_eds(args.export_eds)
     except Prm9Error as exc:
         sys.stderr.write(f"prm9tool: {exc}\n")
         return ExitCode.USAGE
-    if not args.output:
+    if not args.output or to_stdout(args.output):
         sys.stdout.write(text)
         return ExitCode.OK
     path = Path(args.output)

@@ -19,13 +19,20 @@ if TYPE_CHECKING:
 
 EXIT_CODE_TEXT = {
     ExitCode.OK: "done: every valve uploaded and verified (or listed, downloaded, file valid)",
-    ExitCode.VERIFY_FAILED: "a valve read back differently or refused a value; nothing stored",
+    ExitCode.VERIFY_FAILED: "a valve read back differently, refused a value or the store; "
+    "nothing stored",
     ExitCode.USAGE: "usage error (options, several valves and no selection, ...)",
     ExitCode.INVALID_FILE: "invalid *.prm file (or --download cannot write its file)",
     ExitCode.NO_DEVICE: "no valve found, or none with the --device ID",
     ExitCode.TYPE_MISMATCH: "the file's type key does not fit the valve",
     ExitCode.COMMUNICATION: "communication error (valve gone, timeout, backup not written)",
+    ExitCode.HISTORY: "the history database cannot be used (nothing uploaded with 'refuse')",
 }
+DIFF_EXIT_TEXT = "--diff: 0 equal, 1 they differ, 3 invalid file, 4 no such valve"
+HISTORY_COMMANDS = {
+    "--history": "history", "--history-export": "history_export",
+    "--history-check": "history_check", "--history-import": "history_import",
+}  # fmt: skip
 # Options of the headless production mode that mean nothing anywhere else.
 BATCH_ONLY = {
     "--download": "download",
@@ -110,7 +117,12 @@ def build_parser() -> argparse.ArgumentParser:
     )
     files.add_argument("--check", metavar="FILE.prm", help="validate a *.prm file")
     files.add_argument("--export-eds", metavar="TYPEKEY", help="write a CiA 306 EDS for TYPEKEY")
-    files.add_argument("-o", "--output", metavar="FILE", help="output file")
+    files.add_argument(
+        "-o",
+        "--output",
+        metavar="FILE",
+        help="output file of --new or --export-eds; - is standard output",
+    )
     batch = parser.add_argument_group("headless production mode (no GUI)")
     batch.add_argument("--list-devices", action="store_true", help="list valves and exit")
     batch.add_argument(
@@ -133,13 +145,43 @@ def build_parser() -> argparse.ArgumentParser:
         "--dry-run", action="store_true", help="with --batch: check everything, write nothing"
     )
     add_device_options(parser)
+    add_history_options(parser)
     return parser
+
+
+def add_history_options(parser: argparse.ArgumentParser) -> None:
+    """``--diff`` and the history commands (docs/history.md)."""
+    group = parser.add_argument_group("compare and history (no GUI)")
+    group.add_argument(
+        "--diff", nargs="+", metavar="FILE.prm",
+        help="compare two *.prm files, or one with the valve of --device/--emulator",
+    )  # fmt: skip
+    group.add_argument("--json", action="store_true", help="with --diff, --history: print JSON")
+    group.add_argument("--history", metavar="SERIAL", help="list the history of a valve")
+    group.add_argument(
+        "--history-check", action="store_true", help="verify every valve's hash chain"
+    )
+    group.add_argument(
+        "--history-export", type=int, metavar="ID", help="write record ID to -o FILE.prm/.csv"
+    )
+    group.add_argument(
+        "--history-import", action="store_true", help="import the old backup files once"
+    )
+    group.add_argument(
+        "--history-db", metavar="URL",
+        help="history database (default: SQLite in the user data dir; postgresql+psycopg://…)",
+    )  # fmt: skip
+    group.add_argument(
+        "--history-unreachable", choices=("refuse", "queue"),
+        help="with --batch, if the history database cannot be reached: refuse to upload "
+        "(default) or upload and keep the records in a local queue",
+    )  # fmt: skip
 
 
 def _epilog() -> str:
     codes = "\n".join(f"  {int(code)}  {text}" for code, text in EXIT_CODE_TEXT.items())
     return (
-        f"exit codes:\n{codes}\n\n"
+        f"exit codes:\n{codes}\n  {DIFF_EXIT_TEXT}\n\n"
         "headless production mode: README.md, docs/batch.md; USB protocol: docs/usb-protocol.md"
     )
 
@@ -147,11 +189,15 @@ def _epilog() -> str:
 def usage_problem(args: argparse.Namespace) -> str | None:
     """What makes no sense in this combination of options (None: nothing), before anything runs.
 
-    The GUI takes a file, ``--emulator`` (with the CAN options) and one ``--device``; the
-    batch-only options need ``--batch``; ``--list-devices`` takes only ``--emulator``; the CAN
-    options only put the GUI's emulated -CA valve on a bus, so they need ``--emulator`` and no
-    other command (an option that would be ignored is an error, not a surprise).
+    The GUI takes a file, ``--emulator`` and one ``--device``; the batch-only options need
+    ``--batch``; ``--list-devices`` takes ``--emulator`` and the CAN options. The CAN options
+    name a bus: the one of ``can:NODE`` devices, ``--list-devices``, ``--batch`` and
+    ``--serve-emulator``, or the one the GUI's emulated -CA valve joins; a file tool takes
+    none (an option that would be ignored is an error, not a surprise).
     """
+    problem = _compare_history_problem(args)
+    if problem is not None:
+        return problem
     batch_only = [flag for flag, dest in BATCH_ONLY.items() if getattr(args, dest)]
     tools = [flag for flag, dest in FILE_TOOLS.items() if getattr(args, dest) is not None]
     command = _command(args)
@@ -220,6 +266,39 @@ def _serve_problem(args: argparse.Namespace, batch_only: list[str]) -> str | Non
     return None
 
 
+def _compare_history_problem(args: argparse.Namespace) -> str | None:
+    history = [
+        flag for flag, dest in HISTORY_COMMANDS.items() if getattr(args, dest) not in (None, False)
+    ]
+    commands = history + (["--diff"] if args.diff else [])
+    others = [flag for flag, dest in FILE_TOOLS.items() if getattr(args, dest) is not None]
+    others += ["--batch"] * (args.batch is not None) + ["--list-devices"] * args.list_devices
+    if len(commands) > 1 or (commands and others):
+        return f"{commands[0]} and {(commands[1:] + others)[0]} are separate commands: use one at a time"
+    if args.json and commands not in (["--diff"], ["--history"]):
+        return "--json belongs to --diff and --history"
+    if args.history_unreachable and args.batch is None:
+        return "--history-unreachable belongs to the headless production mode (--batch)"
+    if args.diff:
+        return _diff_problem(args)
+    if history and (args.device or args.emulator or args.file):
+        return f"{history[0]} works on the history database, not on a valve or file"
+    return None
+
+
+def _diff_problem(args: argparse.Namespace) -> str | None:
+    valve = bool(args.device or args.emulator)
+    if len(args.diff) > 2:
+        return "--diff compares two files (or one file and a valve)"
+    if len(args.diff) == 2 and valve:
+        return "--diff with two files compares them: leave out --device/--emulator"
+    if len(args.diff) == 1 and not valve:
+        return "--diff with one file compares it with a valve: add --device ID or --emulator"
+    if args.all or args.file:
+        return "--diff compares with one valve: --all and a file to open do not fit"
+    return None
+
+
 def _list_devices_problem(args: argparse.Namespace, batch_only: list[str]) -> str | None:
     given = {"--batch": args.batch is not None, "--device": args.device, "-o": args.output}
     extra = batch_only + [flag for flag, value in given.items() if value]
@@ -269,6 +348,14 @@ def main(argv: Sequence[str] | None = None) -> int:
         from prm9tool.cli.serve import run as run_serve
 
         return run_serve(args)
+    if args.diff:
+        from prm9tool.cli.diff import run as run_diff
+
+        return run_diff(args)
+    if any(getattr(args, dest) not in (None, False) for dest in HISTORY_COMMANDS.values()):
+        from prm9tool.cli.history import run as run_history
+
+        return run_history(args)
     if args.list_devices or args.batch is not None:
         from prm9tool.cli.batch import run as run_batch
 

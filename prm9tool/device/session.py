@@ -3,6 +3,25 @@
 Long operations are synchronous (run them off the GUI thread), report ``progress(done, total,
 step)`` and stop at the next report when ``cancel`` is set. Failures raise the typed errors of
 :mod:`prm9tool.errors`; an upload never stores anything it has not read back and compared.
+
+**The upload contract, the same on every link** (it lives here once, in
+:class:`ValveSession`; the USB link stores with its STORE command, the CANopen link writes
+"save" into 0x1010/1):
+
+1. *write* every value; a refusal ends the upload (``failed_step`` ``write``);
+2. *verify*: read every value back and compare (``verify``);
+3. *store*: send the store command, then read every value back once more and compare
+   (``store``). ``stored`` is True only if the valve acknowledged the store **and** that
+   read-back equals the upload. The store copies the working values into non-volatile memory
+   and a restart replaces the working values with the stored ones, so a read-back after the
+   acknowledgement that still shows the upload proves the stored set is the upload: a valve
+   that restarted (brown-out) before the store stored its old set and reads back the old values.
+   A refused store (abort, e.g. 0x08000020) is ``failed_step`` ``store`` with the reason in
+   ``failure``.
+
+After any failure (also a cancel) the session asks the valve to reload its stored parameters
+(USB: RELOAD; CANopen: the master writes back the working values it read before the upload,
+prm9tool.device.canlink.session), so it runs on its stored set.
 """
 
 from __future__ import annotations
@@ -64,10 +83,12 @@ class DeviceInfo:
 class UploadResult:
     """Outcome of an upload; ``failed_step`` is ``write``, ``verify``, ``store`` or None.
 
-    After a failed upload the session puts the valve's stored parameters back into its working
-    values (:meth:`ValveSession.reload`, no restart): ``reloaded`` says whether that worked,
-    ``reload_error`` why not. ``skipped``: parameters of the set the valve does not have on
-    this link, left out with a warning (never a failed upload).
+    ``stored`` means verified stored (see the module docstring). ``failure`` says why the step
+    failed when ``mismatches`` do not (a refused store). After a failed upload the session puts
+    the valve's stored parameters back into its working values (:meth:`ValveSession.reload`,
+    no restart): ``reloaded`` says whether that worked, ``reload_error`` why not. ``skipped``:
+    parameters of the set the valve does not have on this link, left out with a warning (never
+    a failed upload).
     """
 
     written: int
@@ -78,6 +99,7 @@ class UploadResult:
     failed_step: str | None
     reloaded: bool = False
     reload_error: str | None = None
+    failure: str | None = None
     skipped: tuple[str, ...] = ()  # parameters the valve lacks on this link (not uploaded)
 
 
@@ -216,7 +238,7 @@ class ValveSession(ABC):
         progress: Progress | None = None,
         cancel: threading.Event | None = None,
     ) -> UploadResult:
-        """Write all → read back and compare → store. Only a verified set is stored.
+        """Write all → read back and compare → store and confirm (the module's contract).
 
         A refusal or mismatch returns a result with ``failed_step``; a broken link raises the
         communication error with the failed step named and how far the upload got: attributes
@@ -237,19 +259,28 @@ class ValveSession(ABC):
             verify = Steps(progress, total, len(params), step)
             params = [p for p in params if p.mnemonic not in self.unavailable]
             actual = self._read_entries(params, verify, cancel)
-            mismatches = {
-                p.mnemonic: (values[p.mnemonic], _shown(actual[p.mnemonic]))
-                for p in params
-                if actual[p.mnemonic] != values[p.mnemonic]
-            }
+            mismatches = _differences(params, values, actual)
             if mismatches:
                 return self._failed(written, mismatches, start, "verify")
             step, verified = "store", True
             check_cancel(cancel, step)
             self.store()
+            after = self._read_entries(params, None, None)
+            changed = _differences(params, values, after)
+            if changed:
+                why = (
+                    "the valve's values changed after the store was acknowledged (it restarted "
+                    "before the store?): its stored set is not the upload"
+                )
+                return self._failed(written, changed, start, "store", True, why)
         except RefusedError as refused:
             refusal: tuple[Value, Value] = (values[refused.mnemonic], str(refused.error))
             return self._failed(refused.done, {refused.mnemonic: refusal}, start, "write")
+        except SdoAbortError as exc:
+            if step != "store":  # a whole request refused while writing or reading back
+                raise
+            why = f"the valve refused to store the parameters: {exc}"
+            return self._failed(written, {}, start, "store", True, why)
         except OperationCancelledError as exc:
             raise OperationCancelledError(exc.step, reload_outcome(self._revert())) from exc
         except CommunicationError as exc:
@@ -295,11 +326,25 @@ class ValveSession(ABC):
 
     # --- internals ------------------------------------------------------------------------
     def _failed(
-        self, written: int, mismatches: dict[str, tuple[Value, Value]], start: float, step: str
+        self,
+        written: int,
+        mismatches: dict[str, tuple[Value, Value]],
+        start: float,
+        step: str,
+        verified: bool = False,
+        failure: str | None = None,
     ) -> UploadResult:
         problem = self._revert()
         return UploadResult(
-            written, False, False, mismatches, _since(start), step, problem is None, problem
+            written,
+            verified,
+            False,
+            mismatches,
+            _since(start),
+            step,
+            problem is None,
+            problem,
+            failure,
         )
 
     def _revert(self) -> str | None:
@@ -323,6 +368,19 @@ class ValveSession(ABC):
         for param in params:
             param.check_raw(values[param.mnemonic])
         return params
+
+
+def _differences(
+    params: Sequence[Parameter],
+    values: Mapping[str, Value],
+    actual: Mapping[str, Value | SdoAbortError],
+) -> dict[str, tuple[Value, Value]]:
+    """``{mnemonic: (uploaded, read back)}`` of every value that reads back differently."""
+    return {
+        p.mnemonic: (values[p.mnemonic], _shown(actual[p.mnemonic]))
+        for p in params
+        if actual[p.mnemonic] != values[p.mnemonic]
+    }
 
 
 def _shown(value: Value | SdoAbortError) -> Value:

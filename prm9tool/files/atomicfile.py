@@ -16,18 +16,26 @@ from typing import IO
 BACKUP_SUFFIX = ".bak"
 
 
-def atomic_write(path: Path, data: bytes, backup: bool = True) -> None:
+def atomic_write(
+    path: Path, data: bytes, backup: bool = True, follow_symlinks: bool = True
+) -> None:
     """Replace ``path`` with ``data`` so that it holds the old or the new bytes, never a mix.
 
     The data goes to a temporary file in the same directory, is flushed to disk, then renamed
     over ``path``. With ``backup``, the previous content is first saved as ``<name>.bak``
-    (the same way). A symbolic link is followed: its target is replaced.
+    (the same way). A symbolic link is followed, its target replaced (a *.prm file saved
+    through a link); with ``follow_symlinks=False`` the link itself is replaced by the new
+    file and whatever it pointed to is left alone (the ``--batch`` report).
     """
-    target = path.resolve()
+    target = path.resolve() if follow_symlinks else path.absolute()
     try:
-        old_mode: int | None = stat.S_IMODE(target.stat().st_mode)
+        info = target.stat() if follow_symlinks else target.lstat()
+        old_mode: int | None = None if stat.S_ISLNK(info.st_mode) else stat.S_IMODE(info.st_mode)
     except FileNotFoundError:
         old_mode = None
+        info = None
+    if info is not None and stat.S_ISLNK(info.st_mode):
+        backup = False  # the link is replaced; what it pointed to is nobody's old content here
     if backup and old_mode is not None:
         _replace(target.with_name(target.name + BACKUP_SUFFIX), target.read_bytes(), old_mode)
     _replace(target, data, old_mode)

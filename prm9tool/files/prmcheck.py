@@ -18,6 +18,9 @@ from prm9tool.catalogue.typekey import TypeKey
 from prm9tool.errors import FileProblem, TypeKeyError, ValueRangeError
 from prm9tool.messages import QT_TRANSLATE_NOOP, Message, message_of
 
+# A spelling suggestion for an unknown name compares it with every catalogue mnemonic; a file
+# full of unknown names (1 MiB holds 60 000) took 10-19 s. Typos in a real file are a handful.
+MAX_SUGGESTIONS = 20
 FORMAT_NAME = "prm9tool"
 FORMAT_VERSION = 1
 HEADER_KEYS = frozenset({"format", "type_key", "serial", "firmware"})
@@ -59,6 +62,9 @@ _NOT_AVAILABLE = QT_TRANSLATE_NOOP(
     "{0} has no value: the valve it was read from does not have it over CANopen; not uploaded",
 )
 _MISSING = QT_TRANSLATE_NOOP("Problems", "{0} ({1}) is missing (required for {2} valves)")
+
+
+_MNEMONICS = [p.mnemonic for p in CATALOGUE]
 
 
 @dataclass
@@ -167,8 +173,11 @@ def check_entries(
             continue
         param = CATALOGUE.get(entry.name)
         if param is None:
+            suggest = len(result.unknown) < MAX_SUGGESTIONS
             result.unknown.append((entry.name, entry.value))
-            result.problems.append(FileProblem(entry.line, _unknown(entry.name), "warning"))
+            result.problems.append(
+                FileProblem(entry.line, _unknown(entry.name, suggest), "warning")
+            )
             continue
         lines[entry.name] = entry.line
         problem = _misplaced(param, type_key)
@@ -184,11 +193,21 @@ def check_entries(
     return result
 
 
-def _unknown(name: str) -> Message:
-    close = difflib.get_close_matches(name.upper(), [p.mnemonic for p in CATALOGUE], 1, 0.8)
-    if close:
-        return _UNKNOWN_CLOSE(repr(name), close[0])
+def _unknown(name: str, suggest: bool) -> Message:
+    close = _close_mnemonic(name.upper()) if suggest else None
+    if close is not None:
+        return _UNKNOWN_CLOSE(repr(name), close)
     return _UNKNOWN(repr(name))
+
+
+def _close_mnemonic(name: str) -> str | None:
+    """The catalogue mnemonic ``name`` is probably a misspelling of, or None.
+
+    Costs a comparison with every mnemonic (about 1 ms), hence only for the first
+    ``MAX_SUGGESTIONS`` unknown names of a file.
+    """
+    close = difflib.get_close_matches(name, _MNEMONICS, 1, 0.8)
+    return close[0] if close else None
 
 
 def _misplaced(param: Parameter, type_key: TypeKey | None) -> Message | None:

@@ -96,12 +96,26 @@ class PrmContents:
         hint: str = "",
     ) -> None:
         lines.extend(self.comments.get(name, leading or []))
-        entry = f"{name} = {value}" if value else f"{name} ="
+        entry = _entry_text(name, value)
         lines.append(entry + self.inline_comments.get(name, hint))
 
 
 # A parameter a valve does not have over CANopen (downloaded from a real valve, docs/can-link.md)
 NOT_AVAILABLE_HINT = "  # not available over CANopen on the valve this was read from"
+
+
+def _entry_text(name: str, value: str) -> str:
+    """``NAME = value``; a value starting with ``#`` follows the ``=`` directly (``FOO =#x``).
+
+    The reader takes ``#`` after whitespace as the start of an inline comment, except right
+    after the ``=``: so ``FOO=#x`` holds the value ``#x`` and must not be written ``FOO = #x``
+    (an empty value and a comment).
+    """
+    if not value:
+        return f"{name} ="
+    if value.startswith("#"):
+        return f"{name} ={value}"
+    return f"{name} = {value}"
 
 
 def _hint(param: Parameter) -> str:

@@ -231,12 +231,14 @@ class ParameterDocument(QObject):
         self.comments = {name: list(lines) for name, lines in other.comments.items()}
         self.inline_comments = dict(other.inline_comments)
         self._saved = (other._saved[0], dict(other._saved[1]))
+        # Every field is taken over before any view hears of it: a failing view must not
+        # leave the document half replaced or the modified state unannounced.
+        self._emit_modified()
         self.type_key_changed.emit(str(self._type_key))
         self.values_reset.emit()
         self.validity_changed.emit()
         if path_differs:
             self.path_changed.emit(str(self._path) if self._path is not None else "")
-        self._emit_modified()
 
     def _emit_modified(self) -> None:
         if self.modified != self._was_modified:

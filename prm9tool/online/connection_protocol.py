@@ -32,6 +32,10 @@ class ParameterConnection(LinkState, Protocol):
     """Reading, writing and storing parameters (the CANopen window)."""
 
     @property
+    def device(self) -> object | None:
+        """The connected valve's DeviceInfo (``type_key``, ``serial``, …), None offline."""
+
+    @property
     def operation_finished(self) -> SignalInstance:
         """Emitted with (operation name or tag, result) when an operation is done."""
 

@@ -11,7 +11,7 @@ from __future__ import annotations
 from collections.abc import Iterator, Mapping
 from contextlib import contextmanager
 
-from PySide6.QtCore import QObject
+from PySide6.QtCore import QObject, Signal
 
 from prm9tool.model.document import ParameterDocument, Raw
 from prm9tool.online.connection import ValveConnection
@@ -19,6 +19,8 @@ from prm9tool.online.connection import ValveConnection
 
 class ValveSync(QObject):
     """Mirrors document edits to the valve while online (offline: document only)."""
+
+    active_changed = Signal(bool)  # edits go to the valve now (True) or no longer (False)
 
     def __init__(
         self, doc: ParameterDocument, connection: ValveConnection, parent: QObject | None = None
@@ -47,13 +49,18 @@ class ValveSync(QObject):
     def start(self, valve_values: Mapping[str, Raw]) -> None:
         """Begin mirroring; ``valve_values`` is what the valve holds now."""
         self._valve = dict(valve_values)
-        self._active = True
+        self._set_active(True)
         self.unstored = False
         self._write_differences()
 
     def stop(self) -> None:
         """Stop mirroring (offline, or the document was replaced by another valve type)."""
-        self._active = False
+        self._set_active(False)
+
+    def _set_active(self, active: bool) -> None:
+        if active != self._active:
+            self._active = active
+            self.active_changed.emit(active)
 
     def differences(self) -> dict[str, tuple[Raw, Raw]]:
         """``{mnemonic: (document value, valve value)}`` for every value that differs."""
@@ -79,7 +86,7 @@ class ValveSync(QObject):
 
     def _on_connection_online_changed(self, online: bool) -> None:
         if not online:
-            self._active = False
+            self._set_active(False)
 
     def _on_document_value_changed(self, mnemonic: str) -> None:
         if mnemonic in self._doc.values and self._ready():

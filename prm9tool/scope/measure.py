@@ -5,6 +5,7 @@ from __future__ import annotations
 import math
 from collections.abc import Sequence
 from dataclasses import dataclass
+from enum import StrEnum
 from typing import TextIO
 
 import numpy as np
@@ -53,6 +54,21 @@ NOISE_RATIO = 10.0  # a response smaller than 10 σ of its noise is no response
 OVERSHOOT_NOISE = 3.0  # an overshoot within 3 σ of the noise reads as 0
 SMOOTH_SAMPLES = 5  # median filter on a noisy response before peaks and crossings
 SMOOTH_ABOVE = 1e-3  # noise σ (share of the step) from which the response is filtered
+JUMP_SHARE = 0.2  # a reference step moves at least 20 % of the reference's span ...
+JUMP_SAMPLES = 3  # ... within at most 3 samples (one edge)
+MIN_BEFORE = 3  # samples before a step needed to know where the response started
+MIN_AFTER = 10  # samples after a step needed for any figure
+TAIL_SHARE = 0.2  # the response must be at rest over the last 20 % of its segment ...
+REST_SHARE = 0.5  # ... moving less than half the settling band between the tail's halves
+
+
+class Verdict(StrEnum):
+    """What a step-response measurement found."""
+
+    MEASURED = "measured"  # figures of a complete step
+    NO_STEP = "no step"  # nothing stepped in the window
+    NO_RESPONSE = "no response"  # the reference stepped, the response stayed within its noise
+    TOO_SHORT = "too short"  # the window cuts the response before it came to rest
 
 
 @dataclass(frozen=True)
@@ -67,6 +83,7 @@ class StepFigures:
     overshoot: float  # % of the step beyond the final value
     settling_time: float  # until the response stays within ±band of the final value
     band: float = 0.02
+    t_end: float = math.nan  # end of the measured segment: the next step or the window's end
 
     @property
     def steady_state_error(self) -> float:
@@ -74,15 +91,66 @@ class StepFigures:
         return self.target - self.final
 
 
-def find_step(t: np.ndarray, reference: np.ndarray) -> tuple[float, float, float] | None:
-    """The largest jump of a reference signal: ``(time, level before, level after)``."""
+@dataclass(frozen=True)
+class Step:
+    """One step of a reference: from sample ``start`` (the first one moved) to ``stop``
+    (the first one at the new level), and the levels on either side."""
+
+    start: int
+    stop: int
+    time: float
+    before: float
+    after: float
+
+
+@dataclass(frozen=True)
+class StepMeasurement:
+    """The outcome of :func:`measure_step`: a verdict, and figures when it is MEASURED.
+
+    ``steps`` counts the reference's steps in the window (1 when the step was found on the
+    response), ``measured`` is the index of the measured one (−1: none).
+    """
+
+    verdict: Verdict
+    figures: StepFigures | None = None
+    steps: int = 0
+    measured: int = -1
+
+
+def find_steps(t: np.ndarray, reference: np.ndarray) -> list[Step]:
+    """Every step of ``reference`` (a square wave has one per half period), in time order.
+
+    A step is a jump of at least 20 % of the reference's span within at most three samples;
+    the levels are the medians of the reference between its neighbouring steps. A ramp or a
+    sine has no steps.
+    """
     if len(reference) < 3:
-        return None
-    k = int(np.argmax(np.abs(np.diff(reference)))) + 1
-    before, after = float(np.median(reference[:k])), float(np.median(reference[k:]))
-    if before == after:
-        return None
-    return float(t[k]), before, after
+        return []
+    span = float(np.ptp(reference))
+    d = np.diff(reference)
+    moved = np.flatnonzero(np.abs(d) >= JUMP_SHARE * span) if span > 0 else np.empty(0, int)
+    edges: list[tuple[int, int]] = []  # (first moved sample, first sample at the new level)
+    for k in moved:
+        last = edges[-1] if edges else None
+        if last is not None and k + 1 - last[1] < JUMP_SAMPLES and d[k] * d[last[0]] > 0:
+            edges[-1] = (last[0], int(k) + 1)
+        else:
+            edges.append((int(k), int(k) + 1))
+    bounds = [0, *(stop for _, stop in edges)]
+    ends = [start + 1 for start, _ in edges[1:]] + [len(reference)]
+    steps = []
+    for n, (start, stop) in enumerate(edges):
+        before = float(np.median(reference[bounds[n] : start + 1]))
+        after = float(np.median(reference[stop : ends[n]]))
+        if abs(after - before) >= JUMP_SHARE * span:
+            steps.append(Step(start, stop, float(t[start + 1]), before, after))
+    return steps
+
+
+def find_step(t: np.ndarray, reference: np.ndarray) -> tuple[float, float, float] | None:
+    """The first step of a reference signal: ``(time, level before, level after)``."""
+    steps = find_steps(t, reference)
+    return (steps[0].time, steps[0].before, steps[0].after) if steps else None
 
 
 def noise_level(y: np.ndarray) -> float:
@@ -97,6 +165,27 @@ def noise_level(y: np.ndarray) -> float:
     return float(1.4826 * np.median(np.abs(d2 - np.median(d2))) / math.sqrt(6.0))
 
 
+def measure_step(
+    t: np.ndarray,
+    y: np.ndarray,
+    reference: np.ndarray | None = None,
+    band: float = 0.02,
+    comparable: bool = True,
+) -> StepMeasurement:
+    """Find the step(s) in the window and measure the first complete one.
+
+    With a ``reference`` each of its steps owns the samples up to the next one; a step is
+    complete when at least three samples show where the response started and the response is
+    at rest by the end of its samples (over their last 20 % it moves less than half the
+    settling band; an oscillation around its final value counts as at rest, and then has no
+    settling time). Without a reference the step is found on the response itself (see
+    :func:`step_figures`). The verdict is MEASURED for the first complete step that the
+    response follows, otherwise TOO_SHORT when a step was cut by the window (or by the next
+    step), NO_RESPONSE when the response did not follow, NO_STEP when nothing stepped.
+    """
+    return _measure(t, y, reference, band, comparable, strict=True)
+
+
 def step_figures(
     t: np.ndarray,
     y: np.ndarray,
@@ -104,41 +193,119 @@ def step_figures(
     band: float = 0.02,
     comparable: bool = True,
 ) -> StepFigures | None:
-    """Figures of the step response ``y`` (with the ``reference`` that stepped, if recorded).
+    """Figures of the first step response in the window, complete or not (None: no step, or
+    the response does not follow it); :func:`measure_step` also says whether it is complete.
 
     Without a reference the step is taken where ``y`` leaves its initial level (the samples
-    before that point) by more than ``band`` of the step. The final value is the mean of the
-    last 10 % of the window. A noisy response is median-filtered before its peak, crossings
-    and settling are taken. Returns None when the window holds no step, and when the response
-    does not follow it: a change under 10 σ of the noise or, for a ``comparable`` reference
-    (the same unit), under ``band`` of the reference's step.
+    before that point) by more than ``band`` of the step, and it ends where ``y`` heads back
+    across the middle of the step. The final value is the mean of the last 10 % of the step's
+    samples. A noisy response is median-filtered before its peak, crossings and settling are
+    taken. The response does not follow a change under 10 σ of its noise or, for a
+    ``comparable`` reference (the same unit), under ``band`` of the reference's step.
     """
-    if len(y) < 10:
-        return None
+    return _measure(t, y, reference, band, comparable, strict=False).figures
+
+
+def _measure(
+    t: np.ndarray,
+    y: np.ndarray,
+    reference: np.ndarray | None,
+    band: float,
+    comparable: bool,
+    strict: bool,
+) -> StepMeasurement:
+    if len(y) < MIN_AFTER:
+        return StepMeasurement(Verdict.NO_STEP)
+    if reference is None:
+        return _measure_on_response(t, y, band, strict)
+    steps = find_steps(t, reference)
+    verdicts: list[Verdict] = []
+    for n, step in enumerate(steps):
+        begin = steps[n - 1].stop if n else 0
+        end = steps[n + 1].start + 1 if n + 1 < len(steps) else len(y)
+        min_size = band * abs(step.after - step.before) if comparable else 0.0
+        seg = slice(begin, end)
+        verdict, figures = _segment(
+            t[seg], y[seg], step.time, step.after, min_size, band, strict, noise_level(y)
+        )
+        if figures is not None:
+            return StepMeasurement(verdict, figures, len(steps), n)
+        verdicts.append(verdict)
+    if not steps:
+        return StepMeasurement(Verdict.NO_STEP)
+    worst = Verdict.TOO_SHORT if Verdict.TOO_SHORT in verdicts else Verdict.NO_RESPONSE
+    return StepMeasurement(worst, None, len(steps))
+
+
+def _measure_on_response(
+    t: np.ndarray, y: np.ndarray, band: float, strict: bool
+) -> StepMeasurement:
+    """The step found on the response: where it leaves its initial level, up to where it
+    heads back across the middle of the step (the next edge of a square wave)."""
     noise = noise_level(y)
     final = float(np.mean(y[-max(1, len(y) // 10) :]))
-    target, min_size = math.nan, 0.0
-    if reference is not None:
-        step = find_step(t, reference)
-        if step is None:
-            return None
-        t_step, before, target = step
-        initial = _level_before(t, y, t_step)
-        min_size = band * abs(target - before) if comparable else 0.0
-    else:
-        t_step, initial = _detect_step(t, y, final, band, noise)
-    noise = max(noise, _spread(y[t < t_step]))
+    t_step, initial = _detect_step(t, y, final, band, noise)
+    if math.isnan(t_step):
+        return StepMeasurement(Verdict.NO_STEP)
+    smooth = np.abs(_smoothed(y, noise, final - initial) - initial)
+    moved = smooth * (t >= t_step)
+    half = 0.5 * float(np.max(moved))
+    reach = int(np.argmax(moved >= half))
+    back = np.flatnonzero(moved[reach:] < half)
+    end = len(y)
+    if len(back):
+        level = float(np.median(smooth[reach : reach + back[0]]))
+        near = np.flatnonzero(np.abs(smooth[reach : reach + back[0]] - level) <= band * level)
+        end = reach + int(near[-1]) + 1 if len(near) else reach + int(back[0])
+    verdict, figures = _segment(t[:end], y[:end], t_step, math.nan, 0.0, band, strict, noise)
+    return StepMeasurement(verdict, figures, 1, 0 if figures is not None else -1)
+
+
+def _segment(
+    t: np.ndarray,
+    y: np.ndarray,
+    t_step: float,
+    target: float,
+    min_size: float,
+    band: float,
+    strict: bool,
+    noise: float,
+) -> tuple[Verdict, StepFigures | None]:
+    """Measure the step at ``t_step`` on the samples of its own segment."""
+    before, after = y[t < t_step], t >= t_step
+    if (strict and len(before) < MIN_BEFORE) or np.count_nonzero(after) < MIN_AFTER:
+        return Verdict.TOO_SHORT, None
+    rest = before[len(before) // 2 :]  # the response's level just before the step
+    initial = float(np.median(rest)) if len(rest) else float(y[0])
+    ya_raw = y[after]
+    final = float(np.mean(ya_raw[-max(1, len(ya_raw) // 10) :]))
+    noise = max(noise, _spread(rest))
     size = final - initial
-    if math.isnan(t_step) or abs(size) <= max(NOISE_RATIO * noise, min_size):
-        return None
-    after = t >= t_step
+    if strict and not (_at_rest(ya_raw, size, band, noise) and _at_rest(before, size, band, noise)):
+        return Verdict.TOO_SHORT, None
+    if abs(size) <= max(NOISE_RATIO * noise, min_size):
+        return Verdict.NO_RESPONSE, None
     ta, ya = t[after], _smoothed(y, noise, size)[after]
     t10 = _first_crossing(ta, ya, initial, final, 0.1, t_step)
     t90 = _first_crossing(ta, ya, initial, final, 0.9, t_step)
     excess = max(0.0, float(np.max((ya - final) / size)))
     overshoot = excess * 100.0 if excess * abs(size) > OVERSHOOT_NOISE * noise else 0.0
     settling = _settling_time(ta, ya, final, band * abs(size), t_step)
-    return StepFigures(t_step, initial, final, target, t90 - t10, overshoot, settling, band)
+    figures = StepFigures(
+        t_step, initial, final, target, t90 - t10, overshoot, settling, band, float(t[-1])
+    )
+    return Verdict.MEASURED, figures
+
+
+def _at_rest(y: np.ndarray, size: float, band: float, noise: float) -> bool:
+    """True when ``y`` has stopped moving by its end: the medians of the two halves of its
+    last 20 % differ by less than half the settling band (or than their noise)."""
+    tail = y[-max(2 * MIN_BEFORE, int(len(y) * TAIL_SHARE)) :]
+    half = len(tail) // 2
+    if half == 0:
+        return True
+    drift = abs(float(np.median(tail[half:]) - np.median(tail[:half])))
+    return drift <= max(REST_SHARE * band * abs(size), 4.0 * noise / math.sqrt(half))
 
 
 def _settling_time(
@@ -171,12 +338,6 @@ def _detect_step(
         again = _first_crossing(t, smooth, initial, final, band, float(t[0]))
         t_step = t_step if math.isnan(again) else again
     return t_step, initial
-
-
-def _level_before(t: np.ndarray, y: np.ndarray, t_step: float) -> float:
-    """Median of the samples before ``t_step`` (the first sample if there are none)."""
-    before = y[t < t_step]
-    return float(np.median(before)) if len(before) else float(y[0])
 
 
 def _spread(y: np.ndarray) -> float:

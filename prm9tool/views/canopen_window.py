@@ -39,6 +39,7 @@ from prm9tool.model.access import AccessModel
 from prm9tool.model.document import ParameterDocument, Raw
 from prm9tool.model.editing import apply_edit
 from prm9tool.online.connection_protocol import ParameterConnection
+from prm9tool.online.polling import variant_of
 from prm9tool.online.sync import ValveSync
 from prm9tool.translate import error_text
 from prm9tool.views.canopen_tables import SwitchTables
@@ -322,9 +323,15 @@ class CanopenWindow(QDialog):
     # --- valve ----------------------------------------------------------------------------------------
     def read_from_valve(self) -> None:
         """Ask the connected valve for its switch positions and CANopen settings."""
-        if self._online() and self._doc.variant.canopen:
+        if self._online() and self._valve_has_canopen():
             assert self._connection is not None
             self._connection.read_many([*SWITCHES, *SETTINGS], READ_TAG)
+
+    def _valve_has_canopen(self) -> bool:
+        """Whether the *valve* has the CANopen objects: a -CA document may go online with a
+        valve without them, and its differences dialog is then the only question asked."""
+        variant = variant_of(self._connection.device if self._connection else None)
+        return variant is not None and variant.canopen
 
     def _on_operation_finished(self, name: str, result: Any) -> None:
         if name == READ_TAG and isinstance(result, dict):

@@ -2,10 +2,12 @@
 
 from __future__ import annotations
 
+import threading
 from pathlib import Path
+from typing import TYPE_CHECKING
 
-from PySide6.QtCore import QObject, QSettings, Signal
-from PySide6.QtWidgets import QFileDialog, QMenu, QWidget
+from PySide6.QtCore import QEventLoop, QObject, QSettings, Qt, Signal
+from PySide6.QtWidgets import QFileDialog, QMenu, QProgressDialog, QWidget
 
 from prm9tool.catalogue.typekey import TypeKey
 from prm9tool.errors import FileFormatError, FileProblem
@@ -14,7 +16,12 @@ from prm9tool.model.undo import DocumentUndo
 from prm9tool.translate import translated
 from prm9tool.views import prompts
 
+if TYPE_CHECKING:
+    from prm9tool.files.prmfile import PrmContents
+
 MAX_RECENT = 8
+MAX_LISTED_PROBLEMS = 200  # a message box lists at most this many, then says how many more
+BUSY_DIALOG_AFTER_MS = 500  # reading a file that takes longer shows a dialog with Cancel
 RECENT_KEY = "files/recent"
 FOLDER_KEY = "files/last_folder"
 
@@ -50,7 +57,9 @@ class FileWorkflow(QObject):
         value = self._settings.value(RECENT_KEY, [])
         if isinstance(value, str):
             value = [value]
-        return [str(v) for v in value or []]
+        if not isinstance(value, list | tuple):  # e.g. a number in a hand-edited settings file
+            return []
+        return [str(v) for v in value]
 
     def _remember(self, path: Path) -> None:
         self._settings.setValue(FOLDER_KEY, str(path.parent))
@@ -130,10 +139,12 @@ class FileWorkflow(QObject):
             return False
         from prm9tool.files import prmfile  # imported when first needed: faster start-up
 
-        try:
-            contents = prmfile.read_file(path)
-        except FileFormatError as exc:
-            self._report_file_error(self.tr("Cannot open “{0}”").format(path.name), exc)
+        contents = self._read_off_the_gui_thread(path)
+        if contents is None:
+            self.message_posted.emit(self.tr("Opening {0} cancelled").format(path.name))
+            return False
+        if isinstance(contents, FileFormatError):
+            self._report_file_error(self.tr("Cannot open “{0}”").format(path.name), contents)
             return False
         self._replace(prmfile.document_from(contents, path))
         self._remember(path)
@@ -146,9 +157,49 @@ class FileWorkflow(QObject):
                 self.tr(
                     "“{0}” was opened; %n warning(s) were found.", "", len(contents.warnings)
                 ).format(path.name),
-                _problem_lines(path.name, contents.warnings),
+                self._problem_lines(path.name, contents.warnings),
             )
         return True
+
+    def _read_off_the_gui_thread(self, path: Path) -> PrmContents | FileFormatError | None:
+        """Read and check ``path`` on a worker thread while the window keeps working.
+
+        A file may be up to 1 MiB of lines to check; meanwhile the event loop runs (the window
+        repaints) and, after half a second, a window-modal dialog offers Cancel (None: the
+        result is then dropped). The document is built from the result on the GUI thread.
+        """
+        from prm9tool.files import prmfile
+
+        outcome: list[PrmContents | BaseException] = []
+        finished = _Finished()
+        loop = QEventLoop()
+        finished.done.connect(loop.quit)  # queued: emitted on the worker thread
+
+        def read() -> None:
+            try:
+                outcome.append(prmfile.read_file(path))
+            except BaseException as exc:  # handed to the GUI thread, never lost in a thread
+                outcome.append(exc)
+            finally:
+                finished.done.emit()
+
+        busy = QProgressDialog(
+            self.tr("Reading “{0}”…").format(path.name), self.tr("Cancel"), 0, 0, self._window
+        )
+        busy.setWindowModality(Qt.WindowModality.WindowModal)
+        busy.setMinimumDuration(BUSY_DIALOG_AFTER_MS)
+        busy.canceled.connect(loop.quit)
+        threading.Thread(target=read, name=f"read {path.name}", daemon=True).start()
+        loop.exec()
+        busy.canceled.disconnect(loop.quit)
+        busy.reset()
+        busy.deleteLater()
+        if not outcome:
+            return None
+        result = outcome[0]
+        if isinstance(result, BaseException) and not isinstance(result, FileFormatError):
+            raise result  # read_file raises nothing else: a bug, not to be hidden
+        return result
 
     def save(self) -> bool:
         """Save to the current file, or ask for a name if there is none."""
@@ -196,6 +247,15 @@ class FileWorkflow(QObject):
         self._undo.stack.clear()
         self.document_replaced.emit()
 
+    def _problem_lines(self, path: str, problems: list[FileProblem]) -> str:
+        """``FILE:LINE: problem`` for each problem, in the program language (the first
+        ``MAX_LISTED_PROBLEMS``, then how many more: a file can hold 60 000)."""
+        lines = [translated(problem.located(path)) for problem in problems[:MAX_LISTED_PROBLEMS]]
+        more = len(problems) - MAX_LISTED_PROBLEMS
+        if more > 0:
+            lines.append(self.tr("… and %n more problem(s).", "", more))
+        return "\n".join(lines)
+
     def _report_file_error(self, title: str, exc: FileFormatError) -> None:
         problems = exc.problems
         first = translated(problems[0].located(Path(exc.path).name)) if problems else str(exc)
@@ -210,10 +270,11 @@ class FileWorkflow(QObject):
             title,
             f"{first}\n{more}".strip(),
             prompts.Button.Ok,
-            details=_problem_lines(exc.path, problems) if len(problems) > 1 else "",
+            details=self._problem_lines(exc.path, problems) if len(problems) > 1 else "",
         )
 
 
-def _problem_lines(path: str, problems: list[FileProblem]) -> str:
-    """``FILE:LINE: problem`` for each problem, in the program language."""
-    return "\n".join(translated(problem.located(path)) for problem in problems)
+class _Finished(QObject):
+    """Tells the GUI thread that a worker thread is done."""
+
+    done = Signal()

@@ -48,6 +48,8 @@ def saved_emulators(settings: QSettings) -> list[str]:
         return [DEFAULT_EMULATOR]
     if isinstance(value, str):
         return [value] if value else []
+    if not isinstance(value, list | tuple):  # e.g. a number in a hand-edited settings file
+        return []
     return [str(v) for v in value]
 
 

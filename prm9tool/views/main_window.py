@@ -8,6 +8,7 @@ from __future__ import annotations
 
 from collections.abc import Callable
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 from PySide6.QtCore import QByteArray, QEvent, QSettings
 from PySide6.QtGui import QCloseEvent, QDragEnterEvent, QDropEvent
@@ -35,6 +36,9 @@ from prm9tool.views.valve_selection import ValveSelectionDialog
 from prm9tool.views.valve_status import ValveStatusWindow
 from prm9tool.views.valve_workflow import ValveWorkflow
 
+if TYPE_CHECKING:  # imported when first shown: it loads pyqtgraph
+    from prm9tool.views.scope import ScopeWidget
+
 VIEWS = ("diagram", "parameters", "scope")
 VIEW_KEY = "window/view"
 MAX_PAGE_WIDTH = 960  # the manual's minimum display is 1024 × 768
@@ -61,7 +65,7 @@ class MainWindow(QMainWindow):
         self.passwords = PasswordStore(settings)
         self.sync = ValveSync(doc, connection, self)
         self.files = FileWorkflow(self, doc, undo, settings)
-        self.valve = ValveWorkflow(self, doc, undo, connection, self.sync, settings)
+        self.valve = ValveWorkflow(self, doc, undo, connection, self.sync, settings, access)
         self.records = RecordActions(self)
         self.commands = MainActions(self)
         self.commands.build_menus(self.menuBar())
@@ -72,6 +76,7 @@ class MainWindow(QMainWindow):
         self.stack = QStackedWidget(self)
         self.views: dict[str, QWidget] = _LazyViews(self._build_view)
         self._pages: dict[str, QWidget] = {}
+        self._scope: ScopeWidget | None = None  # built when first shown
         self._add_page("diagram", self._make_diagram_view())
         self._add_page("parameters", self.parameter_view)
         self.setCentralWidget(self.stack)
@@ -99,7 +104,8 @@ class MainWindow(QMainWindow):
     def _make_scope_view(self) -> QWidget:
         from prm9tool.views.scope import ScopeWidget
 
-        return ScopeWidget(self.connection, self.doc, self)
+        self._scope = ScopeWidget(self.connection, self.doc, self)
+        return self._scope
 
     def _add_page(self, name: str, view: QWidget) -> None:
         self.views[name] = view
@@ -121,9 +127,8 @@ class MainWindow(QMainWindow):
             self.status.showMessage(self.tr("The oscilloscope works in online mode only."), 5000)
             return
         self.show_view("scope")
-        scope = self.views["scope"]
-        if key and hasattr(scope, "preselect"):
-            scope.preselect(key)
+        if key and self._scope is not None:
+            self._scope.preselect(key)
 
     def show_view(self, name: str) -> None:
         """Show ``diagram``, ``parameters`` or ``scope`` in the main area."""
@@ -188,6 +193,11 @@ class MainWindow(QMainWindow):
         self.undo.stack.canRedoChanged.connect(self._update_actions)
         self.access.level_changed.connect(self._update_actions)
         c.online_changed.connect(s.set_online)
+        self.sync.active_changed.connect(s.set_synchronised)
+        self.access.level_changed.connect(
+            lambda _l: s.set_expert(self.access.level is Access.EXPERT)
+        )
+        s.set_expert(self.access.level is Access.EXPERT)
         c.online_changed.connect(self.commands.set_online)
         c.online_changed.connect(self._on_connection_online_changed)
         c.device_changed.connect(lambda info: s.set_firmware(str(getattr(info, "firmware", ""))))
@@ -341,9 +351,8 @@ class MainWindow(QMainWindow):
 
     def closeEvent(self, event: QCloseEvent) -> None:
         """Ask about unsaved changes, go offline, remember the window."""
-        scope = self.views.get("scope")
-        if scope is not None:
-            scope.stop()  # switches the setpoint generator off while still online
+        if self._scope is not None:
+            self._scope.stop()  # switches the setpoint generator off while still online
         if not self.files.maybe_save() or not self.valve.go_offline():
             event.ignore()
             return

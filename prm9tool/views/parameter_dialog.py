@@ -140,8 +140,8 @@ class ParameterEditDialog(QDialog):
         high = p.format_display(p.raw_max) + unit
         cap = CAPPED_BY.get(p.mnemonic) if capped else None
         if cap is not None:  # e.g. LIMTA: "0 … 2600 mA (CURNORM)", what the valve accepts
-            capped = min(p.raw_max, int(self._doc.value(cap)))
-            high = f"{p.format_display(capped)}{unit} ({cap})"
+            limit = min(p.raw_max, int(self._doc.value(cap)))
+            high = f"{p.format_display(limit)}{unit} ({cap})"
         return f"{p.format_display(p.raw_min)} … {high}"
 
     def changeEvent(self, event: QEvent) -> None:

@@ -36,6 +36,7 @@ class ParameterListView(QWidget):
         super().__init__(parent)
         self._doc = doc
         self._access = access
+        self._dialog: ParameterEditDialog | None = None  # the edit dialog open, if any
         self.model = ParameterTableModel(doc, access, self)
         self.proxy = ParameterFilterProxy(self)
         self.proxy.setSourceModel(self.model)
@@ -62,8 +63,9 @@ class ParameterListView(QWidget):
         header.setSectionResizeMode(Column.VALUE, QHeaderView.ResizeMode.ResizeToContents)
         header.setSectionResizeMode(Column.UNIT, QHeaderView.ResizeMode.ResizeToContents)
         table.verticalHeader().setDefaultSectionSize(table.fontMetrics().height() + 8)
-        table.doubleClicked.connect(self._on_table_double_clicked)
-        table.activated.connect(self._on_table_double_clicked)
+        # activated alone: Qt emits it after doubleClicked on a double-click (or on one click
+        # where the platform activates items so) and on Enter; both meant two dialogs.
+        table.activated.connect(self._on_table_activated)
         return table
 
     def _build_layout(self) -> None:
@@ -90,7 +92,7 @@ class ParameterListView(QWidget):
             self.retranslate()
         super().changeEvent(event)
 
-    def _on_table_double_clicked(self, index: QModelIndex) -> None:
+    def _on_table_activated(self, index: QModelIndex) -> None:
         mnemonic = self.proxy.data(index, MNEMONIC_ROLE)
         if mnemonic:
             self.edit_parameter(str(mnemonic))
@@ -100,11 +102,19 @@ class ParameterListView(QWidget):
         return ParameterEditDialog(self._doc, self._access, mnemonic, self)
 
     def edit_parameter(self, mnemonic: str) -> None:
-        """Open the edit dialog for ``mnemonic`` (modal)."""
+        """Open the edit dialog for ``mnemonic`` (window-modal; one at a time)."""
+        if self._dialog is not None and self._dialog.isVisible():
+            self._dialog.raise_()  # a second dialog would show a value that may be stale
+            return
         self.edit_requested.emit(mnemonic)
         dialog = self.make_edit_dialog(mnemonic)
         dialog.setAttribute(Qt.WidgetAttribute.WA_DeleteOnClose)
+        dialog.destroyed.connect(self._on_dialog_destroyed)
+        self._dialog = dialog
         dialog.open()
+
+    def _on_dialog_destroyed(self) -> None:
+        self._dialog = None
 
     def select(self, mnemonic: str) -> None:
         """Scroll to and select the row of ``mnemonic`` if it is shown."""

@@ -11,8 +11,15 @@ from dataclasses import dataclass
 from datetime import datetime
 from pathlib import Path
 
-from PySide6.QtCore import QCoreApplication, QMarginsF, QRectF, QUrl
-from PySide6.QtGui import QImage, QPageLayout, QPageSize, QPainter, QTextDocument
+from PySide6.QtCore import QCoreApplication, QMarginsF, QRectF, QSizeF, QUrl
+from PySide6.QtGui import (
+    QGuiApplication,
+    QImage,
+    QPageLayout,
+    QPageSize,
+    QPainter,
+    QTextDocument,
+)
 from PySide6.QtPrintSupport import QPrinter
 
 from prm9tool.i18n import current_language, text
@@ -21,7 +28,12 @@ from prm9tool.model.document import ParameterDocument
 translate = QCoreApplication.translate
 DiagramPainter = Callable[[QPainter, QRectF], None]
 DIAGRAM_URL = "prm9tool://diagram.png"
-PICTURE_WIDTH = 680  # points of text width on an A4 page with 15 mm margins
+A4_LAYOUT = QPageLayout(
+    QPageSize(QPageSize.PageSizeId.A4),
+    QPageLayout.Orientation.Portrait,
+    QMarginsF(15, 15, 15, 15),
+    QPageLayout.Unit.Millimeter,
+)
 
 
 @dataclass
@@ -46,17 +58,35 @@ def record_rows(doc: ParameterDocument) -> list[tuple[str, str, str, str]]:
     return rows
 
 
+def page_size(layout: QPageLayout) -> QSizeF:
+    """The printable part of a page in the units a text document lays out in (screen pixels).
+
+    A record laid out on this page size is printed page by page as it is, scaled to the
+    printer's page. Without a page size ``QTextDocument.print_`` adds margins of its own and
+    a picture as wide as the text overflowed the page (issue 14, item 3).
+    """
+    screen = QGuiApplication.primaryScreen()
+    dpi = screen.logicalDotsPerInchX() if screen is not None else 96.0
+    points = layout.paintRect(QPageLayout.Unit.Point).size()
+    return QSizeF(points.width() * dpi / 72, points.height() * dpi / 72)
+
+
 def build_record(
-    doc: ParameterDocument, header: RecordHeader, diagram: DiagramPainter | None = None
+    doc: ParameterDocument,
+    header: RecordHeader,
+    diagram: DiagramPainter | None = None,
+    layout: QPageLayout = A4_LAYOUT,
 ) -> QTextDocument:
-    """The record as a text document ready to print."""
+    """The record as a text document laid out on the pages of ``layout``, ready to print."""
     record = QTextDocument()
     record.setDocumentMargin(0)
+    size = page_size(layout)
+    record.setPageSize(size)
     if diagram is not None:
         record.addResource(
             QTextDocument.ResourceType.ImageResource, QUrl(DIAGRAM_URL), _picture(diagram)
         )
-    record.setHtml(_html(doc, header, diagram is not None))
+    record.setHtml(_html(doc, header, size.width() if diagram is not None else None))
     return record
 
 
@@ -85,7 +115,7 @@ def _trimmed(image: QImage, margin: int = 12) -> QImage:
     return image.copy(int(left), int(top), int(right - left + 1), int(bottom - top + 1))
 
 
-def _html(doc: ParameterDocument, header: RecordHeader, with_diagram: bool) -> str:
+def _html(doc: ParameterDocument, header: RecordHeader, picture_width: float | None) -> str:
     t = html.escape
     date = (header.date or datetime.now()).strftime("%Y-%m-%d %H:%M")
     file_name = str(doc.path) if doc.path else translate("Record", "untitled")
@@ -105,7 +135,9 @@ def _html(doc: ParameterDocument, header: RecordHeader, with_diagram: bool) -> s
         f"<td>{t(unit)}</td></tr>"
         for mn, desc, value, unit in record_rows(doc)
     )
-    picture = f"<p><img src='{DIAGRAM_URL}' width='{PICTURE_WIDTH}'></p>" if with_diagram else ""
+    picture = ""
+    if picture_width is not None:  # the whole text width, never wider (a pixel spare)
+        picture = f"<p><img src='{DIAGRAM_URL}' width='{int(picture_width) - 1}'></p>"
     titles = (
         translate("Record", "Mnemonic"),
         translate("Record", "Description"),
@@ -122,17 +154,19 @@ def _html(doc: ParameterDocument, header: RecordHeader, with_diagram: bool) -> s
 
 
 def configure_pdf(printer: QPrinter, path: Path, title: str) -> None:
-    """Make ``printer`` write an A4 PDF to ``path``."""
+    """Make ``printer`` write a PDF of :data:`A4_LAYOUT` pages to ``path``."""
     printer.setOutputFormat(QPrinter.OutputFormat.PdfFormat)
     printer.setOutputFileName(str(path))
     printer.setDocName(title)
     printer.setCreator("prm9tool")
-    printer.setPageSize(QPageSize(QPageSize.PageSizeId.A4))
-    printer.setPageMargins(QMarginsF(15, 15, 15, 15), QPageLayout.Unit.Millimeter)
+    printer.setPageLayout(A4_LAYOUT)
 
 
 def write_pdf(record: QTextDocument, path: Path, title: str) -> None:
-    """Write ``record`` as an A4 PDF to ``path``; raises OSError if it cannot be written."""
+    """Write ``record`` (built for :data:`A4_LAYOUT`) as a PDF to ``path``.
+
+    Raises OSError if it cannot be written.
+    """
     printer = QPrinter(QPrinter.PrinterMode.HighResolution)
     configure_pdf(printer, path, title)
     record.print_(printer)

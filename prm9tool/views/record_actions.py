@@ -16,7 +16,7 @@ from prm9tool.catalogue import Access
 from prm9tool.views import prompts
 
 if TYPE_CHECKING:
-    from PySide6.QtGui import QTextDocument
+    from PySide6.QtGui import QPageLayout, QTextDocument
 
     from prm9tool.views.main_window import MainWindow
 
@@ -30,9 +30,12 @@ class RecordActions(QObject):
         super().__init__(window)
         self._window = window
 
-    def record(self) -> QTextDocument:
-        """The record of the current document (with the diagram picture when available)."""
-        from prm9tool.views.record import RecordHeader, build_record
+    def record(self, layout: QPageLayout | None = None) -> QTextDocument:
+        """The record of the current document (with the diagram picture when available).
+
+        Laid out on the pages of ``layout`` (A4 with 15 mm margins unless given).
+        """
+        from prm9tool.views.record import A4_LAYOUT, RecordHeader, build_record
 
         w = self._window
         level = self.tr("Expert") if w.access.level is Access.EXPERT else self.tr("Basic")
@@ -44,7 +47,7 @@ class RecordActions(QObject):
             date=datetime.now(),
         )
         diagram = getattr(w.views.get("diagram"), "render_picture", None)
-        return build_record(w.doc, header, diagram)
+        return build_record(w.doc, header, diagram, layout or A4_LAYOUT)
 
     def print_record(self) -> bool:
         """Print through the print dialog."""
@@ -55,7 +58,7 @@ class RecordActions(QObject):
         dialog = QPrintDialog(printer, self._window)
         if dialog.exec() != QDialog.DialogCode.Accepted:
             return False
-        self.record().print_(printer)
+        self.record(printer.pageLayout()).print_(printer)
         self.message_posted.emit(self.tr("Parameter record printed"))
         return True
 

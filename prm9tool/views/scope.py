@@ -421,8 +421,8 @@ class ScopeWidget(QWidget):
                 panel.retranslate()
             self.step_panel.retranslate()
             self.generator_panel.retranslate()
-            for tab, panel in enumerate((self.cursor_panel, self.step_panel)):
-                self.readouts.setTabText(tab, panel.windowTitle())
+            for tab, readout in enumerate((self.cursor_panel, self.step_panel)):
+                self.readouts.setTabText(tab, readout.windowTitle())
             self._align_sections()
             signals = [BY_KEY[k] for k in self.channels.selected()]  # catalogue texts
             self.plot.relabel(signals)

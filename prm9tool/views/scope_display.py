@@ -17,13 +17,13 @@ from PySide6.QtCore import QObject, Signal
 from prm9tool.scope import (
     Capture,
     Frame,
-    StepFigures,
+    StepMeasurement,
     TriggerEngine,
     TriggerMode,
     TriggerSettings,
+    Verdict,
     cursor_readout,
-    find_step,
-    step_figures,
+    measure_step,
 )
 from prm9tool.views.scope_plot import ScopePlot
 from prm9tool.views.scope_readout import CursorPanel, StepPanel
@@ -199,25 +199,18 @@ class ScopeDisplay(QObject):
         else:
             x0, x1 = self.plot.x_range()
             region = self.tr("the visible window")
-        figures = self.figures(x0, x1)
-        self.steps.show_figures(figures, region, figures is None and self._stepped(x0, x1))
+        self.steps.show_figures(self.measure(x0, x1), region)
 
-    def figures(self, x0: float, x1: float) -> StepFigures | None:
-        """Step-response figures of the samples between times ``x0`` and ``x1``."""
+    def measure(self, x0: float, x1: float) -> StepMeasurement:
+        """Step-response measurement of the samples between times ``x0`` and ``x1``: the
+        reference's first complete step (see :func:`prm9tool.scope.measure_step`)."""
         t, values = self.data()
         response, reference = self.steps.response_slot(), self.steps.reference_slot()
         if response is None or response >= values.shape[1]:
-            return None
+            return StepMeasurement(Verdict.NO_STEP)
+        if reference is not None and reference >= values.shape[1]:
+            reference = None
         inside = (t >= x0) & (t <= x1)
         ref = values[inside, reference] if reference is not None else None
         same_unit = self.steps.units_match()
-        return step_figures(t[inside], values[inside, response], ref, comparable=same_unit)
-
-    def _stepped(self, x0: float, x1: float) -> bool:
-        """True when the reference channel steps between ``x0`` and ``x1``."""
-        t, values = self.data()
-        reference = self.steps.reference_slot()
-        if reference is None or reference >= values.shape[1]:
-            return False
-        inside = (t >= x0) & (t <= x1)
-        return find_step(t[inside], values[inside, reference]) is not None
+        return measure_step(t[inside], values[inside, response], ref, comparable=same_unit)

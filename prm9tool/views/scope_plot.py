@@ -41,6 +41,7 @@ CURSOR_COLOUR = "#e0e0e0"
 SHARED_AXIS_COLOUR = "#c8c8c8"  # tick labels of an axis two channels share
 SHARED_LABEL_CHARS = 72  # longer joined names do not fit a 520-pixel plot: channel numbers instead
 LIVE_COLOUR = "#7a7a7a"  # legend values newer than the held trace
+GRAB_PX = 6  # the mouse grabs a cursor line this many pixels either side of it
 GRID_COLOUR = "#3a3d42"  # opaque: a translucent grid line costs 2-4 ms per rolling frame
 
 
@@ -144,6 +145,23 @@ class _ElidedLabel(QLabel):
     def _elide(self) -> None:
         metrics = self.fontMetrics()
         self.setText(metrics.elidedText(self._full, Qt.TextElideMode.ElideRight, self.width()))
+
+
+class _CursorLine(pg.InfiniteLine):
+    """A cursor line the mouse grabs up to GRAB_PX pixels either side of it.
+
+    pyqtgraph's line reacts only within its pen width plus a pixel (±1.5 pixels for a
+    cosmetic 1-pixel pen), so a press next to it panned the plot instead of moving it.
+    """
+
+    def _computeBoundingRect(self) -> QRectF:
+        rect = QRectF(super()._computeBoundingRect())  # the drawing area, along the line
+        _, ortho = self.pixelVectors(direction=pg.Point(1, 0))
+        if ortho is not None:
+            grab = GRAB_PX * abs(ortho.y())
+            rect.setTop(min(rect.top(), -grab))
+            rect.setBottom(max(rect.bottom(), grab))
+        return rect
 
 
 class _LegendEntry(QWidget):
@@ -264,7 +282,7 @@ class ScopePlot(QWidget):
 
     def _make_cursor(self, name: str) -> pg.InfiniteLine:
         pen = pg.mkPen(CURSOR_COLOUR, width=1, style=Qt.PenStyle.DashLine)
-        line = pg.InfiniteLine(angle=90, movable=True, pen=pen, label=name)
+        line = _CursorLine(angle=90, movable=True, pen=pen, label=name)
         line.label.setColor(CURSOR_COLOUR)
         line.label.setPosition(0.96)
         line.sigPositionChanged.connect(lambda *_: self.cursors_moved.emit())
@@ -432,8 +450,21 @@ class ScopePlot(QWidget):
             self.legend[slot].set_value(float(values[slot]), held)
 
     def set_x_range(self, x0: float, x1: float) -> None:
-        """Show times ``x0`` … ``x1``."""
+        """Show times ``x0`` … ``x1`` (new data: a new frame or capture).
+
+        The cursors keep their place on the screen, like a bench oscilloscope's: a new capture
+        or a rolling frame does not leave them behind at old times, off the plot. Panning and
+        zooming a held picture with the mouse moves the view, not this, so there the cursors
+        stay on the samples they mark.
+        """
+        old0, old1 = self.x_range()
+        shares = (
+            [(line.value() - old0) / (old1 - old0) for line in self.cursors] if old1 > old0 else []
+        )
         self.views[0].setXRange(x0, x1, padding=0)
+        if (old0, old1) != (x0, x1) and shares and self.cursors_visible:
+            for line, share in zip(self.cursors, shares, strict=True):
+                line.setValue(x0 + min(1.0, max(0.0, share)) * (x1 - x0))
 
     def x_range(self) -> tuple[float, float]:
         """The time range on screen."""
@@ -476,8 +507,9 @@ class ScopePlot(QWidget):
         """Show the A/B cursors; they appear at ¼ and ¾ of the visible time range."""
         if visible:
             x0, x1 = self.x_range()
+            apart = self.cursors[0].value() != self.cursors[1].value()
             for line, share in zip(self.cursors, (0.25, 0.75), strict=True):
-                if not x0 <= line.value() <= x1:
+                if not (x0 <= line.value() <= x1 and apart):
                     line.setValue(x0 + share * (x1 - x0))
         for line in self.cursors:
             line.setVisible(visible)

@@ -19,7 +19,7 @@ from PySide6.QtWidgets import (
 from prm9tool.catalogue.signals import MAX_CHANNELS
 from prm9tool.catalogue.signals import Signal as MeasuringPoint
 from prm9tool.i18n import text
-from prm9tool.scope import CursorReadout, StepFigures
+from prm9tool.scope import CursorReadout, StepMeasurement, Verdict
 from prm9tool.views.scope_plot import COLOURS
 
 
@@ -200,28 +200,18 @@ class StepPanel(QWidget):
             return True
         return self._units[ref] == self._units[resp]
 
-    def show_figures(
-        self, figures: StepFigures | None, region: str, unanswered: bool = False
-    ) -> None:
-        """Show ``figures`` computed on ``region`` (a description like 'between the cursors');
-        ``unanswered``: the reference stepped but the response did not follow."""
+    def show_figures(self, measurement: StepMeasurement | None, region: str) -> None:
+        """Show the figures of ``measurement`` made on ``region`` (a description like 'the
+        visible window'), or why there are none; None: nothing recorded."""
         slot = self.response_slot()
         unit = self._units[slot] if slot is not None and slot < len(self._units) else ""
+        figures = measurement.figures if measurement is not None else None
         if figures is None:
             for label in self.figures.values():
                 label.setText("—")
-            if not region:
-                self.region.setText("")
-            elif unanswered:
-                self.region.setText(
-                    self.tr(
-                        "No response to the step in {0}: the response stays flat or within "
-                        "its noise."
-                    ).format(region)
-                )
-            else:
-                self.region.setText(self.tr("No step found in {0}.").format(region))
+            self.region.setText(self._why_not(measurement, region))
             return
+        assert measurement is not None
         size = figures.final - figures.initial
         self.figures["step"].setText(
             f"{_fixed(figures.initial, unit, size)} → {_fixed(figures.final, unit, size)}"
@@ -235,4 +225,26 @@ class StepPanel(QWidget):
             else self.tr("not settled in the window")
         )
         self.figures["error"].setText(_fixed(figures.steady_state_error, unit, size))
-        self.region.setText(self.tr("Measured on {0}.").format(region))
+        if measurement.steps > 1:
+            self.region.setText(
+                self.tr("Measured on step {0} of {1} in {2}.").format(
+                    measurement.measured + 1, measurement.steps, region
+                )
+            )
+        else:
+            self.region.setText(self.tr("Measured on {0}.").format(region))
+
+    def _why_not(self, measurement: StepMeasurement | None, region: str) -> str:
+        """Why ``measurement`` has no figures, in words."""
+        if measurement is None or not region:
+            return ""
+        if measurement.verdict is Verdict.TOO_SHORT:
+            return self.tr(
+                "Window too short: in {0} the response has not come to rest yet. "
+                "Widen the time window or move the cursors apart."
+            ).format(region)
+        if measurement.verdict is Verdict.NO_RESPONSE:
+            return self.tr(
+                "No response to the step in {0}: the response stays flat or within its noise."
+            ).format(region)
+        return self.tr("No step found in {0}.").format(region)

@@ -1,4 +1,10 @@
-"""Status bar (manual §8.8): ``Mode | Status | FW | type key | file name *``."""
+"""Status bar (manual §8.8): ``Mode | Status | FW | type key | file name *``, plus the access
+level.
+
+Mode is ONLINE only while the document and the valve agree and edits go to the valve; between
+connecting and the user's answer to the differences question it says CONNECTING, and
+Cancel there makes it OFFLINE again.
+"""
 
 from __future__ import annotations
 
@@ -9,7 +15,7 @@ from PySide6.QtWidgets import QFrame, QLabel, QStatusBar, QWidget
 
 
 class MainStatusBar(QStatusBar):
-    """Five permanent fields, updated from the window's slots."""
+    """Six permanent fields, updated from the window's slots."""
 
     def __init__(self, parent: QWidget | None = None) -> None:
         super().__init__(parent)
@@ -18,6 +24,7 @@ class MainStatusBar(QStatusBar):
         self.firmware_label = QLabel()
         self.type_key_label = QLabel()
         self.file_label = QLabel()
+        self.level_label = QLabel()
         self.lost_label = QLabel()  # shown only while the oscilloscope stream loses samples
         self.lost_label.hide()
         self.addPermanentWidget(self.lost_label)
@@ -26,6 +33,8 @@ class MainStatusBar(QStatusBar):
             label.setContentsMargins(6, 0, 6, 0)
             self.addPermanentWidget(label)
         self._online = False
+        self._synchronised = False
+        self._expert = False
         self._status = ""
         self._firmware = ""
         self._path: Path | None = None
@@ -34,13 +43,14 @@ class MainStatusBar(QStatusBar):
         self.retranslate()
 
     def labels(self) -> list[QLabel]:
-        """The five fields from left to right."""
+        """The six fields from left to right."""
         return [
             self.mode_label,
             self.status_label,
             self.firmware_label,
             self.type_key_label,
             self.file_label,
+            self.level_label,
         ]
 
     def set_online(self, online: bool) -> None:
@@ -49,6 +59,17 @@ class MainStatusBar(QStatusBar):
         if not online:
             self._status = ""
             self._firmware = ""
+            self._synchronised = False
+        self.retranslate()
+
+    def set_synchronised(self, synchronised: bool) -> None:
+        """Show whether document and valve agree and edits go to the valve."""
+        self._synchronised = synchronised
+        self.retranslate()
+
+    def set_expert(self, expert: bool) -> None:
+        """Show the access level (Basic or Expert)."""
+        self._expert = expert
         self.retranslate()
 
     def set_device_status(self, status: str) -> None:
@@ -78,8 +99,17 @@ class MainStatusBar(QStatusBar):
 
     def retranslate(self) -> None:
         """Set every text in the current language."""
-        mode = self.tr("ONLINE") if self._online else self.tr("OFFLINE")
+        mode = self.tr("OFFLINE")
+        if self._online:
+            mode = self.tr("ONLINE") if self._synchronised else self.tr("CONNECTING")
         self.mode_label.setText(self.tr("Mode: {0}").format(mode))
+        self.mode_label.setToolTip(
+            self.tr("Connected; the document and the valve are being compared")
+            if self._online and not self._synchronised
+            else ""
+        )
+        level = self.tr("Expert") if self._expert else self.tr("Basic")
+        self.level_label.setText(self.tr("Level: {0}").format(level))
         self.status_label.setText(self.tr("Status: {0}").format(self._status or "—"))
         self.firmware_label.setText(self.tr("FW: {0}").format(self._firmware or "—"))
         name = self._path.name if self._path is not None else self.tr("untitled")

@@ -35,7 +35,7 @@ class ValveSelectionDialog(QDialog):
     def __init__(self, current: TypeKey | None = None, parent: QWidget | None = None) -> None:
         super().__init__(parent)
         self._key: TypeKey = current or TypeKey.parse(DEFAULT_TYPE_KEY)
-        self.size = QComboBox()
+        self.nominal_size = QComboBox()
         self.spool = QComboBox()
         self.flow = QComboBox()
         self.supply = QComboBox()
@@ -62,17 +62,17 @@ class ValveSelectionDialog(QDialog):
 
     def _fill_static_choices(self) -> None:
         for size in FLOWS:
-            self.size.addItem(f"Dn{size}", size)
+            self.nominal_size.addItem(f"Dn{size}", size)
         for spool in SPOOLS.values():
             self.spool.addItem(spool.code, spool.code)
         for supply in SUPPLIES:
             self.supply.addItem(f"{supply} V DC", supply)
-        for config in Config:
-            self.config.addItem(config.value, config)
+        for config in Config:  # item data is the plain value: Qt hands enums back as str
+            self.config.addItem(config.value, config.value)
 
     def _build_layout(self) -> None:
         form = QFormLayout()
-        fields = (self.size, self.spool, self.flow, self.supply, self.config, self.canopen)
+        fields = (self.nominal_size, self.spool, self.flow, self.supply, self.config, self.canopen)
         for title, field in zip(self._titles, fields, strict=False):
             form.addRow(title, field)
         form.addRow(self._titles[6], self.key_edit)
@@ -84,7 +84,7 @@ class ValveSelectionDialog(QDialog):
         self.key_edit.setMinimumWidth(self.key_edit.fontMetrics().horizontalAdvance("M" * 26))
 
     def _connect(self) -> None:
-        self.size.currentIndexChanged.connect(self._on_size_changed)
+        self.nominal_size.currentIndexChanged.connect(self._on_size_changed)
         for combo in (self.spool, self.flow, self.supply, self.config):
             combo.currentIndexChanged.connect(self._on_parts_changed)
         self.canopen.toggled.connect(self._on_parts_changed)
@@ -145,14 +145,21 @@ class ValveSelectionDialog(QDialog):
     def _show_key(self, key: TypeKey) -> None:
         blockers = [
             QSignalBlocker(w)
-            for w in (self.size, self.spool, self.flow, self.supply, self.config, self.canopen)
+            for w in (
+                self.nominal_size,
+                self.spool,
+                self.flow,
+                self.supply,
+                self.config,
+                self.canopen,
+            )
         ]
-        self.size.setCurrentIndex(self.size.findData(key.size))
+        self.nominal_size.setCurrentIndex(self.nominal_size.findData(key.size))
         self._fill_flows(key.size)
         self.spool.setCurrentIndex(self.spool.findData(key.spool))
         self.flow.setCurrentIndex(self.flow.findData(key.flow))
         self.supply.setCurrentIndex(self.supply.findData(key.supply))
-        self.config.setCurrentIndex(self.config.findData(key.config))
+        self.config.setCurrentIndex(self.config.findData(key.config.value))
         self.canopen.setChecked(key.canopen)
         del blockers
         self._set_valid(key)
@@ -174,16 +181,16 @@ class ValveSelectionDialog(QDialog):
         self.buttons.button(QDialogButtonBox.StandardButton.Ok).setEnabled(True)
 
     def _on_size_changed(self) -> None:
-        self._fill_flows(str(self.size.currentData()))
+        self._fill_flows(str(self.nominal_size.currentData()))
         self._on_parts_changed()
 
     def _on_parts_changed(self) -> None:
         key = TypeKey(
-            size=str(self.size.currentData()),
+            size=str(self.nominal_size.currentData()),
             spool=str(self.spool.currentData()),
             flow=str(self.flow.currentData()),
             supply=str(self.supply.currentData()),
-            config=self.config.currentData(),
+            config=Config(self.config.currentData()),
             canopen=self.canopen.isChecked(),
         )
         self._set_valid(key)

@@ -14,9 +14,10 @@ from typing import Any
 from PySide6.QtCore import QObject, QSettings, Qt, Signal
 from PySide6.QtWidgets import QDialog, QProgressDialog, QWidget
 
-from prm9tool.catalogue import variant_label
+from prm9tool.catalogue import CATALOGUE, Access, variant_label
 from prm9tool.catalogue.typekey import TypeKey
 from prm9tool.errors import TypeKeyError
+from prm9tool.model.access import AccessModel
 from prm9tool.model.document import ParameterDocument, Raw
 from prm9tool.model.undo import DocumentUndo
 from prm9tool.online.connection import ValveConnection
@@ -48,9 +49,11 @@ class ValveWorkflow(QObject):
         connection: ValveConnection,
         sync: ValveSync,
         settings: QSettings,
+        access: AccessModel | None = None,
     ) -> None:
         super().__init__(window)
         self._window = window
+        self._access = access
         self._doc = doc
         self._undo = undo
         self._connection = connection
@@ -184,7 +187,8 @@ class ValveWorkflow(QObject):
         if dialog.choice is DiffChoice.TAKE_VALVE:
             self.take_valve_values(values, self.tr("Values read from the valve"))
         elif dialog.choice is DiffChoice.SEND_DOCUMENT:
-            self.upload()
+            if not self.upload(values):
+                self.go_offline()  # as Cancel: nothing was written
         else:
             self.go_offline()
 
@@ -231,11 +235,15 @@ class ValveWorkflow(QObject):
             return None
 
     # --- valve commands ---------------------------------------------------------------------------
-    def upload(self) -> None:
-        """Write the document into the valve (backup first, then write → verify → store)."""
+    def upload(self, valve_values: Mapping[str, Raw] | None = None) -> bool:
+        """Write the document into the valve (backup first, then write → verify → store).
+
+        ``valve_values``: what the valve holds, if just read (else what the online sync
+        knows). False when nothing is sent (another variant, or the user declined).
+        """
         key = self._valve_key()
         if key is None:
-            return
+            return False
         if key.variant != self._doc.variant:
             prompts.ask(
                 self._window,
@@ -250,9 +258,48 @@ class ValveWorkflow(QObject):
                 ),
                 prompts.Button.Ok,
             )
-            return
+            return False
+        known = self._sync.valve_values if valve_values is None else valve_values
+        if not self._basic_user_confirms_expert_values(known):
+            self.message_posted.emit(self.tr("Nothing was sent to the valve"))
+            return False
         self._start("upload", self.tr("Uploading the parameters to the valve…"))
         self._connection.upload(self._doc.values)
+        return True
+
+    def expert_differences(self, valve_values: Mapping[str, Raw]) -> list[str]:
+        """The Expert-level parameters whose document value differs from the valve's."""
+        return [
+            mnemonic
+            for mnemonic, value in self._doc.values.items()
+            if CATALOGUE[mnemonic].access is Access.EXPERT
+            and mnemonic in valve_values
+            and valve_values[mnemonic] != value
+        ]
+
+    def _basic_user_confirms_expert_values(self, valve_values: Mapping[str, Raw]) -> bool:
+        """At Basic level, sending changes the Basic level cannot make needs a Yes."""
+        if self._access is None or self._access.level is not Access.BASIC:
+            return True
+        changed = self.expert_differences(valve_values)
+        if not changed:
+            return True
+        shown = ", ".join(changed[:8]) + (", …" if len(changed) > 8 else "")
+        answer = prompts.ask(
+            self._window,
+            prompts.Icon.Warning,
+            self.tr("Expert values at Basic level"),
+            self.tr(
+                "The document changes %n Expert-level value(s) of the valve ({0}), which the "
+                "Basic access level cannot edit (controllers, linearizations, monitoring). "
+                "Send them anyway?",
+                "",
+                len(changed),
+            ).format(shown),
+            prompts.Button.Yes | prompts.Button.No,
+            prompts.Button.No,
+        )
+        return answer == prompts.Button.Yes
 
     def download(self) -> None:
         """Read the valve's parameters into the document (one undo step)."""
@@ -325,7 +372,9 @@ class ValveWorkflow(QObject):
             )
             return
         mismatches = getattr(result, "mismatches", {}) or {}
-        details = "\n".join(f"{mn}: {want} → {got}" for mn, (want, got) in mismatches.items())
+        lines = [f"{mn}: {want} → {got}" for mn, (want, got) in mismatches.items()]
+        failure = getattr(result, "failure", None)  # e.g. a refused store: the valve's reason
+        details = "\n".join([failure, *lines] if failure else lines)
         prompts.inform(
             self._window,
             prompts.Icon.Warning,

@@ -12,6 +12,7 @@ import math
 from collections.abc import Callable
 from typing import Any
 
+from prm9tool.catalogue import dither
 from prm9tool.catalogue.variant import Coils, Config, Variant
 from prm9tool.device.emulator.constants import CYCLE_S, FULL, FirmwareConstants, PlantConstants
 from prm9tool.device.emulator.inputs import INPUT_TYPES
@@ -99,9 +100,9 @@ def coefficients(
             min(values("LIMTA"), fw.max_current_ma),
             min(values("LIMTB"), fw.max_current_ma),
         ),
-        "dither": (
-            values("DTAMP") / FULL * curnorm * fw.dither_full_scale,
-            2.0 * math.pi * min(values("DYNFREQ"), fw.dither_max_hz) * CYCLE_S,
+        "dither": (  # the rule the current-limiter dialog draws too (catalogue.dither)
+            dither.amplitude_ma(values("DTAMP"), curnorm),
+            2.0 * math.pi * dither.frequency_hz(values("DYNFREQ")) * CYCLE_S,
         ),
         "current_pi": (
             fw.current_kp_v_per_a / 1000.0,

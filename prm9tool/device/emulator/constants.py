@@ -49,8 +49,6 @@ class FirmwareConstants:
     current_kp_v_per_a: float = 100.0  # current PI, proportional (assumption: ~0.3 ms loop)
     current_ki_v_per_as: float = 20000.0  # current PI, integral (assumption)
     max_current_ma: float = 4000.0  # output stage limit (manual §2.2: max 4 A)
-    dither_full_scale: float = 0.10  # DTAMP 100 % = a peak dither of 10 % CURNORM (decision)
-    dither_max_hz: float = 2500.0  # Nyquist of the 200 µs loop; higher settings are clamped
     fault_display_hold_s: float = 10.0  # error message returns to normal ~10 s (§5.5)
     fault_reaction_s: float = 0.005  # FAULT_REACTION -> FAULT/FAULT_HOLD after outputs off
     coil_open_delay_s: float = 0.020  # open-load diagnostic debounce (assumption)

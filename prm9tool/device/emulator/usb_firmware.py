@@ -22,6 +22,7 @@ from prm9tool.catalogue.signals import BY_CODE, signals_for
 from prm9tool.device.protocol import (
     MAX_SEGMENTED_LENGTH,
     PROTOCOL_VERSION,
+    REPORT_SIZE,
     SEGMENT_READ_CHUNK,
     STREAM_BASE_RATE_HZ,
     AbortReply,
@@ -131,11 +132,20 @@ class UsbFirmware:
                 seq, request = decode_request(report)
             except MalformedReportError as exc:
                 return malformed_answer(report, exc)
-            answer = encode_response(request.op, seq, self._execute(request))
+            answer = self._encode(request, seq, self._execute(request))
             self._last = (report, answer)
             if isinstance(request, Restart):
                 self._valve.restart()
+                self._last = (report, answer)  # a repeated RESTART is answered, not executed
             return answer
+
+    def _encode(self, request: Request, seq: int, response: Response) -> bytes:
+        try:
+            return encode_response(request.op, seq, response)
+        except ValueError:  # an answer that does not fit a report is a firmware bug
+            self.internal_errors += 1
+            log.exception("USB firmware cannot encode its answer %r", response)
+            return encode_response(request.op, seq, AbortReply(AbortCode.GENERAL_ERROR))
 
     # --- requests --------------------------------------------------------------------------
     def _execute(self, request: Request) -> Response:
@@ -155,9 +165,9 @@ class UsbFirmware:
     def _dispatch(self, request: Request) -> Response:
         valve = self._valve
         if isinstance(request, Identify):
-            return IdentifyReply(
-                PROTOCOL_VERSION, valve.serial, str(valve.type_key), valve.firmware_version
-            )
+            key = str(valve.type_key)
+            firmware = _truncate_utf8(valve.firmware_version, identify_firmware_room(key))
+            return IdentifyReply(PROTOCOL_VERSION, valve.serial, key, firmware.decode("utf-8"))
         if isinstance(request, ReadEntries):
             return self._read(request)
         if isinstance(request, WriteEntries):
@@ -294,6 +304,13 @@ class UsbFirmware:
         self._assembly = None
         self._stream = None
         self.outbox.clear()
+
+
+def identify_firmware_room(type_key: str) -> int:
+    """Bytes of firmware text an IDENTIFY answer has room for next to ``type_key`` (the
+    firmware cuts a longer text there: 25 bytes beside a 27-byte -CA type key)."""
+    fixed = 3 + 1 + 4 + 2 + 1 + len(type_key.encode("utf-8")) + 1  # header … firmware length
+    return max(0, REPORT_SIZE - fixed)
 
 
 def _truncate_utf8(text: str, limit: int) -> bytes:

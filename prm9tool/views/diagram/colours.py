@@ -24,12 +24,18 @@ def on_palette(colour: QColor, palette: QPalette) -> QColor:
     """``colour`` (as on white paper with black ink) moved onto ``palette``'s Base and Text."""
     sheet = palette.color(QPalette.ColorRole.Base).lightnessF()
     ink = palette.color(QPalette.ColorRole.Text).lightnessF()
-    hue, saturation, lightness, alpha = colour.getHslF()
+    hue, saturation, lightness, alpha = _hsla(colour)
     moved = sheet + (1.0 - lightness) * (ink - sheet)
     chroma = saturation * (1.0 - abs(2.0 * lightness - 1.0))
     room = 1.0 - abs(2.0 * moved - 1.0)
     result = QColor.fromHslF(hue, min(1.0, chroma / room) if room > 0 else 0.0, moved, alpha)
     return QColor.fromRgba(result.rgba())  # plain 8-bit RGB, comparable with paper colours
+
+
+def _hsla(colour: QColor) -> tuple[float, float, float, float]:
+    """Hue (-1 when achromatic), saturation, lightness and alpha, each 0 … 1, as
+    ``QColor.getHslF`` gives them (whose binding is typed as returning ``object``)."""
+    return colour.hslHueF(), colour.hslSaturationF(), colour.lightnessF(), colour.alphaF()
 
 
 def luminance(colour: QColor) -> float:
@@ -54,7 +60,7 @@ def contrast_ratio(first: QColor, second: QColor) -> float:
 def readable(colour: QColor, background: QColor, ratio: float = TEXT_CONTRAST) -> QColor:
     """``colour``, made lighter on a dark ``background`` (darker on a light one) until the
     two reach ``ratio``; hue and saturation are kept."""
-    hue, saturation, lightness, alpha = colour.getHslF()
+    hue, saturation, lightness, alpha = _hsla(colour)
     step = 0.02 if luminance(background) < 0.18 else -0.02
     result = QColor(colour)
     while contrast_ratio(result, background) < ratio and 0.0 < lightness < 1.0:

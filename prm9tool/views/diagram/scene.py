@@ -63,7 +63,12 @@ class DiagramScene(QGraphicsScene):
         """Repaint the background and every item in ``colours``."""
         self.colours = colours
         self.setBackgroundBrush(colours.sheet)
-        items = [*self.blocks.values(), *self.sums.values(), *self.arrows, *self.dots.values()]
+        items: list[BlockItem | SumItem | ArrowItem | DotItem] = [
+            *self.blocks.values(),
+            *self.sums.values(),
+            *self.arrows,
+            *self.dots.values(),
+        ]
         for item in items:
             item.set_colours(colours)
         self.feedback_label.setBrush(colours.ink)

@@ -1,15 +1,16 @@
 """Current limiter per coil and dither amplitude/frequency (manual figure 8-13).
 
 The sketch shows each coil's current at 60 % of its limit with the dither superimposed,
-clipped at the limit (coil B drawn downwards on two-coil valves). The dither amplitude is taken as a percentage of the nominal coil current
-CURNORM **(decision; the manual gives only "%")**.
+clipped at the limit (coil B drawn downwards on two-coil valves). The dither is drawn by the
+rule the valve applies (:mod:`prm9tool.catalogue.dither`: DTAMP 100 % = a peak of 10 % of the
+nominal coil current CURNORM, a decision; the manual gives only "%").
 """
 
 from __future__ import annotations
 
 from PySide6.QtWidgets import QLabel, QWidget
 
-from prm9tool.catalogue import CATALOGUE
+from prm9tool.catalogue import CATALOGUE, dither
 from prm9tool.views.diagram.curves import dither_wave
 from prm9tool.views.diagram.dialogs.base import BlockContext, BlockDialog
 from prm9tool.views.diagram.dialogs.plot import BLUE, GREEN, RED, Axes, Curve, PlotWidget
@@ -43,13 +44,17 @@ class CurrentDitherDialog(BlockDialog):
 
     def refresh_extra(self) -> None:
         curnorm = self.curnorm()
+        amplitude = dither.amplitude_ma(float(self.doc.value("DTAMP")), curnorm)
         self.curnorm_label.setText(
             self.tr("Nominal coil current CURNORM: %1 mA — no limit may exceed it.").replace(
                 "%1", str(curnorm)
             )
+            + "\n"
+            + self.tr("Dither: ±%1 mA peak (DTAMP 100 % = %2 % of CURNORM).")
+            .replace("%1", f"{amplitude:.0f}")
+            .replace("%2", f"{dither.FULL_SCALE * 100:g}")
         )
-        amplitude = float(CATALOGUE["DTAMP"].to_display(self.doc.value("DTAMP"))) / 100.0 * curnorm
-        freq = float(self.doc.value("DYNFREQ"))
+        freq = dither.frequency_hz(float(self.doc.value("DYNFREQ")))
         curves, lines = [], []
         for coil, colour, sign in (("A", BLUE, 1.0), ("B", GREEN, -1.0)):
             if coil not in self.coils:

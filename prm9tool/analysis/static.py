@@ -1,0 +1,159 @@
+"""Static characteristic from a slow triangle: hysteresis, linearity, dead band, gain.
+
+Inputs are the demand ``x`` and the response ``y`` in % (100 % = full opening); the up and the
+down branch are told apart by the direction the demand moves. Figures are in % of the
+response's span (ISO 10770-1 style), the gain is the slope of the best straight line.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+DEAD_BAND_LEVEL = 1.0  # % of span: the response counts as "not moving" below this
+LIN_POINTS = 9  # the firmware's characteristics have nine points (A…I)
+
+
+@dataclass(frozen=True)
+class StaticCharacteristic:
+    """Branch means on a grid of demand values and the figures derived from them."""
+
+    x: np.ndarray  # demand grid, %
+    up: np.ndarray  # mean response on the rising branch (NaN where none)
+    down: np.ndarray  # mean response on the falling branch (NaN where none)
+    gain: float  # slope of the best straight line (response % per demand %)
+    intercept: float
+    hysteresis_pct: float  # largest up/down difference, % of span
+    linearity_pct: float  # largest deviation of the mean curve from the line, % of span
+    dead_band_pct: float  # width of the demand range with no response, % of demand span
+
+    @property
+    def mean(self) -> np.ndarray:
+        """The mean of both branches (one branch where only one was measured)."""
+        return np.nanmean(np.vstack([self.up, self.down]), axis=0)
+
+
+def static_characteristic(
+    x: np.ndarray, y: np.ndarray, bins: int = 101, exclude_dead_band: bool = True
+) -> StaticCharacteristic:
+    """Analyse a slow sweep ``y(x)`` (see the module docstring)."""
+    x = np.asarray(x, dtype=float)
+    y = np.asarray(y, dtype=float)
+    if x.shape != y.shape or len(x) < 3 * bins:
+        raise ValueError(f"x and y must be equally long records of at least {3 * bins} samples")
+    edges = np.linspace(float(x.min()), float(x.max()), bins + 1)
+    centres = (edges[:-1] + edges[1:]) / 2.0
+    rising = np.gradient(x) >= 0.0
+    up = _branch(x[rising], y[rising], edges)
+    down = _branch(x[~rising], y[~rising], edges)
+    mean = np.nanmean(np.vstack([up, down]), axis=0)
+    span = float(np.nanmax(mean) - np.nanmin(mean)) or 1.0
+    dead = _dead_band(centres, mean, span)
+    fit = np.isfinite(mean)
+    if exclude_dead_band and dead[1] > dead[0]:
+        fit &= (centres < dead[0]) | (centres > dead[1])
+    gain, intercept = np.polyfit(centres[fit], mean[fit], 1)
+    deviation = np.abs(mean[fit] - (gain * centres[fit] + intercept))
+    both = np.isfinite(up) & np.isfinite(down)
+    hysteresis = float(np.max(np.abs(up[both] - down[both]))) if both.any() else math.nan
+    x_span = float(edges[-1] - edges[0]) or 1.0
+    return StaticCharacteristic(
+        centres,
+        up,
+        down,
+        float(gain),
+        float(intercept),
+        hysteresis / span * 100.0,
+        float(np.max(deviation)) / span * 100.0,
+        (dead[1] - dead[0]) / x_span * 100.0,
+    )
+
+
+def _branch(x: np.ndarray, y: np.ndarray, edges: np.ndarray) -> np.ndarray:
+    index = np.clip(np.digitize(x, edges) - 1, 0, len(edges) - 2)
+    sums = np.bincount(index, weights=y, minlength=len(edges) - 1)
+    counts = np.bincount(index, minlength=len(edges) - 1)
+    with np.errstate(invalid="ignore", divide="ignore"):
+        return np.where(counts > 0, sums / np.maximum(counts, 1), np.nan)
+
+
+def _dead_band(x: np.ndarray, mean: np.ndarray, span: float) -> tuple[float, float]:
+    """The demand interval around 0 in which the response stays within DEAD_BAND_LEVEL."""
+    still = np.abs(mean - np.interp(0.0, x, mean)) <= DEAD_BAND_LEVEL / 100.0 * span
+    centre = int(np.argmin(np.abs(x)))
+    if not still[centre]:
+        return 0.0, 0.0
+    lo = hi = centre
+    while lo > 0 and still[lo - 1]:
+        lo -= 1
+    while hi < len(x) - 1 and still[hi + 1]:
+        hi += 1
+    if lo == hi:
+        return 0.0, 0.0
+    return float(x[lo]), float(x[hi])
+
+
+@dataclass(frozen=True)
+class Linearization:
+    """A proposed 9-point characteristic (raw counts, ±16384 = ±100 %) and its target line."""
+
+    xs: tuple[int, ...]
+    ys: tuple[int, ...]
+    gain: float
+
+
+def propose_linearization(
+    lin_in: np.ndarray,
+    lin_out: np.ndarray,
+    response: np.ndarray,
+    demand: np.ndarray,
+    bipolar: bool = True,
+) -> Linearization:
+    """The 9 points that make ``response`` a straight line through 0 over ``demand``.
+
+    Recorded together on a slow sweep: ``demand`` (what the valve is told, %), ``lin_in`` and
+    ``lin_out`` (the linearization's input and output, counts) and ``response`` (%). The
+    present linearization is part of what was measured, so the new points are found by
+    inverting the measured path from the linearization's output to the response: for each
+    new input point X the output Y is the one that produced the response the straight line
+    asks for. The line has the measured gain between the sweep's ends.
+    """
+    order = np.argsort(lin_in)
+    d_at = _monotonic(lin_in[order], demand[order])
+    out_sorted = np.argsort(lin_out)
+    y_of_out = _monotonic(lin_out[out_sorted], response[out_sorted])
+    ends = np.array([d_at[0].min(), d_at[0].max()])
+    lo_d, hi_d = float(np.interp(ends[0], *d_at)), float(np.interp(ends[1], *d_at))
+    y_lo = float(np.interp(lo_d, demand[order], response[order]))
+    y_hi = float(np.interp(hi_d, demand[order], response[order]))
+    gain = (y_hi - y_lo) / (hi_d - lo_d) if hi_d != lo_d else 1.0
+    first = -16384 if bipolar else 0
+    xs = np.linspace(first, 16384, LIN_POINTS)
+    wanted = gain * np.interp(xs, *d_at)
+    inverse = _monotonic(y_of_out[1], y_of_out[0])
+    ys = np.interp(wanted, *inverse)
+    return Linearization(
+        tuple(round(v) for v in xs),
+        tuple(round(float(np.clip(v, -16384, 16384))) for v in ys),
+        float(gain),
+    )
+
+
+def _monotonic(x: np.ndarray, y: np.ndarray, bins: int = 200) -> tuple[np.ndarray, np.ndarray]:
+    """``y(x)`` averaged on a grid and made non-decreasing (for interpolation and inversion)."""
+    edges = np.linspace(float(x.min()), float(x.max()), bins + 1)
+    means = _branch(x, y, edges)
+    centres = (edges[:-1] + edges[1:]) / 2.0
+    ok = np.isfinite(means)
+    return centres[ok], np.maximum.accumulate(means[ok])
+
+
+def linearization_values(lin: Linearization, prefix: str = "SETPLIN") -> dict[str, int]:
+    """The parameters that install ``lin``: ``<prefix>X?``/``Y?`` for A…I and the switch on."""
+    values = {"SETPLINON": -1} if prefix == "SETPLIN" else {"SENSLINON": 1}
+    for letter, x, y in zip("ABCDEFGHI", lin.xs, lin.ys, strict=True):
+        values[f"{prefix}X{letter}"] = x
+        values[f"{prefix}Y{letter}"] = y
+    return values

@@ -1,0 +1,7 @@
+"""Procedures that move a valve for tuning and characterization (no Qt).
+
+A :class:`~.rig.Rig` is the valve under test (an emulated valve stepped as fast as the CPU
+allows, or any session at its link's stream rate); :mod:`.procedures` runs steps, sweeps and
+autotune on it with the analysis functions of :mod:`prm9tool.analysis`, always leaving the
+valve as it was; :mod:`.run` is the end-of-line characterization and its report data.
+"""

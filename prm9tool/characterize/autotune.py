@@ -1,0 +1,116 @@
+"""Model-based autotune: never raises the gains beyond what a model says is safe.
+
+1. a step at the present gains (the user's safe ones) records demand, response and the
+   controller's output; 2. a low-order plant is fitted from output to response
+   (:func:`prm9tool.analysis.model.identify`); 3. gains are chosen on that model for the target
+   overshoot and settling time, with margin (:func:`~prm9tool.analysis.model.design`); 4. the
+   proposal is simulated and then measured with one step on the valve. If the measured step
+   misses the targets, that step is added to the identification data and steps 2–4 repeat
+   (at most ``rounds`` times). The valve's own gains are back afterwards in every case:
+   accepting the proposal is the caller's decision (one undo step in the document).
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from prm9tool.analysis.model import Design, PlantModel, Targets, design, identify, simulate_loop
+from prm9tool.analysis.pid import CYCLE_S, from_parameters, to_parameters
+from prm9tool.catalogue.typekey import TypeKey
+from prm9tool.catalogue.variant import Coils
+from prm9tool.characterize.procedures import (
+    LOOPS,
+    StepResult,
+    _step,
+    chain_changes,
+    gain_names,
+    preserved,
+)
+from prm9tool.characterize.rig import Rig
+from prm9tool.errors import Prm9Error
+
+
+@dataclass(frozen=True)
+class AutotuneResult:
+    """The proposal, the model behind it and the steps before and after (measured)."""
+
+    loop: str
+    before_values: dict[str, int]
+    proposed_values: dict[str, int]
+    model: PlantModel
+    design: Design
+    before: StepResult
+    after: StepResult
+    simulated: np.ndarray  # the model's step response with the proposed gains, % (t from 0)
+    meets_targets: bool
+    rounds: int
+    history: list[dict[str, int]] = field(default_factory=list)
+
+
+def meets(step: StepResult, targets: Targets) -> bool:
+    """True when a measured step is within the overshoot and settling targets."""
+    f = step.figures
+    if f is None or not math.isfinite(f.settling_time):
+        return False
+    return f.overshoot <= targets.overshoot_pct and f.settling_time <= targets.settling_s
+
+
+def model_tune(
+    rig: Rig,
+    targets: Targets,
+    loop: str = "position",
+    amplitude_pct: float = 50.0,
+    rounds: int = 3,
+) -> AutotuneResult:
+    """Propose gains for ``loop`` (see the module docstring); the valve keeps its own gains."""
+    lp = LOOPS[loop]
+    names = gain_names(lp)
+    duration = max(3.0 * targets.settling_s, 0.06)
+    two_coils = TypeKey.parse(rig.info.type_key).variant.coils is Coils.AB
+    out_lo = -16384.0 if two_coils else 0.0
+    with preserved(rig, names, chain_changes(rig)) as saved:
+        before = _step(rig, lp, amplitude_pct, 0.0, duration, None, loop)
+        data = [_io(before, lp.output, lp.actual)]
+        t1 = from_parameters(lp.prefix, saved).t1
+        step = amplitude_pct / 100.0 * 16384.0
+        after, history = before, []
+        round_no = 0
+        while round_no < rounds:
+            round_no += 1
+            rig.check()
+            model = identify(data, 1.0 / rig.info.sample_rate_hz, lp.integrating)
+            try:
+                chosen = design(model, targets, step, t1, out_lo=out_lo)
+            except ValueError as exc:
+                raise Prm9Error(f"no gains found for the target: {exc}") from None
+            values = to_parameters(lp.prefix, chosen.gains)
+            history.append(values)
+            rig.write(values)
+            after = _step(rig, lp, amplitude_pct, 0.0, duration, None, loop)
+            if meets(after, targets):
+                break
+            data.append(_io(after, lp.output, lp.actual))
+    simulated = simulate_loop(model, chosen.gains, step, duration, out_lo) / 16384.0 * 100.0
+    return AutotuneResult(
+        loop,
+        {k: saved[k] for k in names},
+        values,
+        model,
+        chosen,
+        before,
+        after,
+        simulated,
+        meets(after, targets),
+        round_no,
+        history,
+    )
+
+
+def _io(step: StepResult, output: str, actual: str) -> tuple[np.ndarray, np.ndarray]:
+    """Controller output and response in counts from the step onwards."""
+    keep = step.record.t >= -CYCLE_S
+    scale = 16384.0 / 100.0
+    return step.record.channels[output][keep] * scale, step.record.channels[actual][keep] * scale

@@ -1,0 +1,317 @@
+"""Tests that move a valve: step, frequency sweep, static sweep, and the two autotune methods.
+
+Each procedure saves the parameters it touches, makes the setpoint chain transparent where the
+test needs it (no threshold, ramps or linearization between the override and the loop), and in
+every case (done, stopped, fault, limit exceeded) puts the saved values back and switches the
+override off. Amplitudes and operating points are in % of full opening.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Iterator, Sequence
+from contextlib import contextmanager
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from prm9tool.analysis.frequency import FrequencyResponse, frequency_response, log_chirp
+from prm9tool.analysis.pid import PidGains, critical_gain_rule, from_parameters, oscillation
+from prm9tool.analysis.static import StaticCharacteristic, static_characteristic
+from prm9tool.catalogue.signals import BY_KEY
+from prm9tool.characterize.rig import Rig
+from prm9tool.errors import Prm9Error
+from prm9tool.scope.measure import StepFigures, step_figures
+
+PERCENT = 100.0 / 16384.0
+TRANSPARENT = {
+    "THRESETP": 0,
+    "SETPLINON": 0,
+    "RAMPSETPOSUP": 0,
+    "RAMPSETPOSDOWN": 0,
+    "RAMPSETNEGUP": 0,
+    "RAMPSETNEGDOWN": 0,
+    "GAINSETPOS": 16384,
+    "GAINSETNEG": 16384,
+    "OFFSETPOS": 0,
+    "OFFSETNEG": 0,
+}
+
+
+@dataclass(frozen=True)
+class Loop:
+    """A control loop under test: its parameters and measuring points."""
+
+    prefix: str  # POS or PRC
+    setpoint: str
+    actual: str
+    output: str
+    integrating: bool
+
+
+LOOPS = {
+    "position": Loop("POS", "position_setpoint", "position_actual", "controller_output", False),
+    "process": Loop("PRC", "process_setpoint", "process_actual", "position_setpoint", True),
+}
+GAIN_SUFFIXES = ("KP", "KI", "KD", "T1")
+
+
+class LimitExceededError(Prm9Error):
+    """The valve left the allowed band around the operating point; the test was stopped."""
+
+
+def gain_names(loop: Loop) -> list[str]:
+    """The loop's four controller parameters."""
+    return [loop.prefix + s for s in GAIN_SUFFIXES]
+
+
+@contextmanager
+def preserved(
+    rig: Rig, mnemonics: Sequence[str], changes: dict[str, int]
+) -> Iterator[dict[str, int]]:
+    """Save ``mnemonics`` and ``changes``' keys, apply ``changes``; always restore and release."""
+    names = list(dict.fromkeys([*mnemonics, *changes]))
+    saved = rig.read(names)
+    try:
+        rig.write(changes)
+        yield saved
+    finally:
+        rig.release()
+        rig.write(saved)
+
+
+def chain_changes(rig: Rig) -> dict[str, int]:
+    """The transparent-chain values that differ from the valve's present ones."""
+    present = rig.read(list(TRANSPARENT))
+    return {k: v for k, v in TRANSPARENT.items() if present[k] != v}
+
+
+@dataclass(frozen=True)
+class Record:
+    """Samples of one test in % (time in s from the test's start)."""
+
+    t: np.ndarray
+    channels: dict[str, np.ndarray]
+
+
+def record(
+    rig: Rig,
+    stimulus: np.ndarray,
+    keys: Sequence[str],
+    centre: float,
+    limit: float,
+    strict: bool = True,
+) -> Record:
+    """Play ``stimulus`` and convert the samples to %.
+
+    ``strict``: LimitExceededError when the response leaves ``centre ± limit``; otherwise the
+    record ends at the first sample outside.
+    """
+    raw = rig.play(stimulus, keys)
+    channels = {k: raw[:, i] * BY_KEY[k].scale for i, k in enumerate(keys)}
+    outside = np.flatnonzero(np.abs(channels[keys[1]] - centre) > limit)
+    if len(outside) and not strict:
+        end = int(outside[0]) + 1
+        t = np.arange(end) / rig.info.sample_rate_hz
+        return Record(t, {k: v[:end] for k, v in channels.items()})
+    if len(outside):
+        raise LimitExceededError(
+            f"{BY_KEY[keys[1]].key} left the allowed band {centre:g} ± {limit:g} %; "
+            "the test was stopped and the valve put back as it was"
+        )
+    t = np.arange(len(raw)) / rig.info.sample_rate_hz
+    return Record(t, channels)
+
+
+# --- step ------------------------------------------------------------------------------------
+@dataclass(frozen=True)
+class StepResult:
+    """A step from ``start`` to ``start + amplitude`` % and its figures (None: no response)."""
+
+    amplitude_pct: float
+    record: Record
+    figures: StepFigures | None
+    loop: str = "position"
+
+
+def step_test(
+    rig: Rig,
+    amplitude_pct: float,
+    start_pct: float = 0.0,
+    duration_s: float = 0.1,
+    loop: str = "position",
+    limit_pct: float | None = None,
+) -> StepResult:
+    """Settle at ``start_pct``, step by ``amplitude_pct``, record ``duration_s``."""
+    lp = LOOPS[loop]
+    with preserved(rig, [], chain_changes(rig)):
+        return _step(rig, lp, amplitude_pct, start_pct, duration_s, limit_pct, loop)
+
+
+def _step(
+    rig: Rig,
+    lp: Loop,
+    amplitude: float,
+    start: float,
+    duration: float,
+    limit: float | None,
+    loop: str,
+) -> StepResult:
+    fs = rig.info.sample_rate_hz
+    pre, n = int(0.02 * fs), int(duration * fs)
+    rig.play(np.full(int(0.05 * fs), start), [lp.setpoint])  # settle at the start
+    stimulus = np.concatenate([np.full(pre, start), np.full(n, start + amplitude)])
+    band = limit if limit is not None else abs(amplitude) * 2.0 + 5.0
+    rec = record(rig, stimulus, [lp.setpoint, lp.actual, lp.output], start, band)
+    t = rec.t - pre / fs
+    figures = step_figures(t, rec.channels[lp.actual], rec.channels[lp.setpoint])
+    return StepResult(amplitude, Record(t, rec.channels), figures, loop)
+
+
+# --- frequency response -----------------------------------------------------------------------
+@dataclass(frozen=True)
+class BodeResult:
+    """A sine sweep and the frequency response estimated from it."""
+
+    amplitude_pct: float
+    centre_pct: float
+    record: Record
+    response: FrequencyResponse
+
+
+def bode_test(
+    rig: Rig,
+    amplitude_pct: float = 10.0,
+    centre_pct: float = 0.0,
+    f_min: float = 1.0,
+    f_max: float = 200.0,
+    duration_s: float = 10.0,
+    loop: str = "position",
+) -> BodeResult:
+    """Logarithmic sweep ``f_min`` → ``f_max`` around ``centre_pct``; demand → actual."""
+    lp = LOOPS[loop]
+    fs = rig.info.sample_rate_hz
+    sweep = centre_pct + amplitude_pct * log_chirp(duration_s, fs, f_min, f_max)
+    with preserved(rig, [], chain_changes(rig)):
+        rig.play(np.full(int(0.05 * fs), centre_pct), [lp.setpoint])
+        rec = record(rig, sweep, [lp.setpoint, lp.actual], centre_pct, 2.5 * amplitude_pct + 5.0)
+    response = frequency_response(
+        rec.channels[lp.setpoint], rec.channels[lp.actual], fs, f_min, f_max
+    )
+    return BodeResult(amplitude_pct, centre_pct, rec, response)
+
+
+# --- static characteristic --------------------------------------------------------------------
+@dataclass(frozen=True)
+class StaticResult:
+    """A slow triangle over the range: setpoint, linearization in/out, response."""
+
+    record: Record
+    characteristic: StaticCharacteristic
+    demand: np.ndarray
+    response_key: str
+
+
+STATIC_KEYS = ("setpoint_gain", "setpoint_linearized", "position_actual")
+
+
+def static_test(
+    rig: Rig, period_s: float = 4.0, lo_pct: float = -100.0, hi_pct: float = 100.0
+) -> StaticResult:
+    """One triangle period ``lo → hi → lo`` (through the valve's own setpoint chain)."""
+    fs = rig.info.sample_rate_hz
+    half = int(period_s * fs / 2)
+    rise = np.linspace(lo_pct, hi_pct, half)
+    sweep = np.concatenate([rise, rise[::-1]])
+    rig.play(np.full(int(0.2 * fs), lo_pct), [STATIC_KEYS[2]])
+    try:
+        raw = rig.play(sweep, list(STATIC_KEYS))
+    finally:
+        rig.release()
+    channels = {k: raw[:, i] * BY_KEY[k].scale for i, k in enumerate(STATIC_KEYS)}
+    demand = sweep[: len(raw)]
+    rec = Record(np.arange(len(raw)) / fs, channels)
+    figures = static_characteristic(demand, channels[STATIC_KEYS[2]])
+    return StaticResult(rec, figures, demand, STATIC_KEYS[2])
+
+
+# --- critical-gain autotune -------------------------------------------------------------------
+@dataclass(frozen=True)
+class CriticalGainResult:
+    """Critical gain and period, the rule's gains, and every P-only trial (Kp, oscillation)."""
+
+    kkr: float
+    tkr: float
+    gains: PidGains
+    trials: list[tuple[float, float, float]] = field(default_factory=list)  # Kp, first, last
+
+
+def critical_gain_tune(
+    rig: Rig,
+    loop: str = "position",
+    amplitude_pct: float = 5.0,
+    limit_pct: float = 40.0,
+    ratio: float = 1.25,
+    refine: int = 5,
+    window_s: float = 0.2,
+) -> CriticalGainResult:
+    """APOSYS 10 critical-gain method: P only, raise Kp by ``ratio`` until the loop keeps
+    oscillating after a setpoint step, then narrow Kkr by ``refine`` bisections.
+
+    A growing oscillation that leaves ``limit_pct`` ends that trial at once (it counts as
+    oscillating); the previous gains are back when this returns or raises.
+    """
+    lp = LOOPS[loop]
+    names = gain_names(lp)
+    with preserved(rig, names, chain_changes(rig)) as saved:
+        present = from_parameters(lp.prefix, saved)
+        param = lp.prefix + "KP"
+        trials: list[tuple[float, float, float]] = []
+
+        def trial(kp_raw: int) -> tuple[bool, float]:
+            rig.write({param: kp_raw, lp.prefix + "KI": 0, lp.prefix + "KD": 0})
+            ringing, period = _ring(rig, lp, amplitude_pct, limit_pct, window_s)
+            trials.append((kp_raw * 0.01, ringing[0], ringing[1]))
+            return ringing[1] >= 0.3 * amplitude_pct and ringing[1] >= 0.9 * ringing[0], period
+
+        low = max(1, int(saved[param] / 2))
+        high, period = 0, math.nan
+        kp = low
+        while kp <= 65535:
+            rig.check()
+            sustained, p = trial(kp)
+            if sustained:
+                high, period = kp, p
+                break
+            low, kp = kp, int(kp * ratio) + 1
+        if not high:
+            raise Prm9Error("the loop did not oscillate up to the largest Kp; no critical gain")
+        for _ in range(refine):
+            middle = (low + high) // 2
+            if middle in (low, high):
+                break
+            sustained, p = trial(middle)
+            if sustained:
+                high, period = middle, p
+            else:
+                low = middle
+    kkr = high * 0.01
+    del present
+    return CriticalGainResult(kkr, period, critical_gain_rule(kkr, period), trials)
+
+
+def _ring(
+    rig: Rig, lp: Loop, amplitude: float, limit: float, window_s: float
+) -> tuple[tuple[float, float], float]:
+    """Step ±amplitude and measure the ringing (first and last swing in %, period)."""
+    fs = rig.info.sample_rate_hz
+    rig.play(np.zeros(int(0.03 * fs)), [lp.setpoint])
+    stimulus = np.full(int(window_s * fs), amplitude)
+    rec = record(rig, stimulus, [lp.setpoint, lp.actual], 0.0, limit, strict=False)
+    if len(rec.t) < len(stimulus):  # grew beyond the limit: oscillating
+        rig.play(np.zeros(1), [lp.setpoint])
+        osc = oscillation(rec.t, rec.channels[lp.actual])
+        return (0.0, 2.0 * limit), osc.period_s
+    settled = rec.t >= 0.02
+    osc = oscillation(rec.t[settled], rec.channels[lp.actual][settled])
+    return (osc.first, osc.last), osc.period_s

@@ -1,0 +1,213 @@
+"""The valve under test: parameters, the setpoint override and synchronous measuring points.
+
+Every procedure drives the valve's setpoint through the service override (SETPOVRON/SETPOVR,
+the oscilloscope generator's objects) and records up to three measuring points sampled in the
+same firmware cycle. :class:`EmulatorRig` steps an emulated valve itself, as fast as the CPU
+allows; :class:`SessionRig` works over any valve session (USB, or an emulated valve behind its
+link) at the rate its stream gives.
+"""
+
+from __future__ import annotations
+
+import threading
+from abc import ABC, abstractmethod
+from collections.abc import Mapping, Sequence
+from dataclasses import dataclass
+from typing import TYPE_CHECKING
+
+import numpy as np
+
+from prm9tool.catalogue import CATALOGUE
+from prm9tool.errors import Prm9Error
+
+if TYPE_CHECKING:
+    from prm9tool.device.emulator import EmulatedValve
+    from prm9tool.device.session import ValveSession
+
+FULL = 16384.0  # 100 % in counts
+CHUNK = 500  # samples between checks for a stop request or a fault
+
+
+class Stopped(Prm9Error):  # noqa: N818 (a user's request, not a failure)
+    """The user stopped the procedure; the valve was put back as it was."""
+
+
+class ValveFaultError(Prm9Error):
+    """The valve reported an error during a procedure; the test was stopped."""
+
+
+@dataclass(frozen=True)
+class RigInfo:
+    """What the report says about the valve and the link."""
+
+    type_key: str
+    serial: int
+    firmware: str
+    link: str
+    sample_rate_hz: float
+
+
+class Rig(ABC):
+    """A valve under test (see the module docstring). ``stop`` may be set from any thread."""
+
+    info: RigInfo
+
+    def __init__(self) -> None:
+        self.stop = threading.Event()
+
+    @abstractmethod
+    def read(self, mnemonics: Sequence[str]) -> dict[str, int]:
+        """Raw values of parameters."""
+
+    @abstractmethod
+    def write(self, values: Mapping[str, int]) -> None:
+        """Write raw values (in the given order)."""
+
+    @abstractmethod
+    def play(self, setpoint_pct: np.ndarray, keys: Sequence[str]) -> np.ndarray:
+        """Drive the override with ``setpoint_pct`` (one value per sample) and record ``keys``.
+
+        Returns raw samples, shape (n, len(keys)), one row per sample period. Raises
+        :class:`Stopped` when :attr:`stop` is set and :class:`ValveFaultError` on a valve error;
+        the override stays on until :meth:`release`.
+        """
+
+    @abstractmethod
+    def release(self) -> None:
+        """Switch the override off (the valve follows its own setpoint input again)."""
+
+    def check(self) -> None:
+        """Raise :class:`Stopped` if a stop was requested."""
+        if self.stop.is_set():
+            raise Stopped("stopped by the user; the valve was put back as it was")
+
+
+def counts(pct: float) -> int:
+    """Override value in counts for ``pct`` % (clipped to ±100 %)."""
+    return round(min(max(pct, -100.0), 100.0) / 100.0 * FULL)
+
+
+class EmulatorRig(Rig):
+    """An emulated valve stepped by the procedure itself: no pacing, no link."""
+
+    def __init__(self, valve: EmulatedValve) -> None:
+        super().__init__()
+        self.valve = valve
+        self.info = RigInfo(
+            str(valve.type_key),
+            valve.serial,
+            valve.firmware_version,
+            "emulator (stepped faster than real time)",
+            1.0 / valve.CYCLE_S,
+        )
+        self.valve_seconds = 0.0  # valve time the procedures took (benchmarks)
+        while valve.status().booting:
+            valve.advance(0.05)
+
+    def read(self, mnemonics: Sequence[str]) -> dict[str, int]:
+        """Raw values from the object dictionary."""
+        out = {}
+        for mnemonic in mnemonics:
+            param = CATALOGUE[mnemonic]
+            out[mnemonic] = int(self.valve.read(param.index, param.subindex))
+        return out
+
+    def write(self, values: Mapping[str, int]) -> None:
+        """Write into the object dictionary."""
+        for mnemonic, raw in values.items():
+            param = CATALOGUE[mnemonic]
+            self.valve.write(param.index, param.subindex, int(raw))
+
+    def play(self, setpoint_pct: np.ndarray, keys: Sequence[str]) -> np.ndarray:
+        """One override value per 200 µs cycle; the capture records every cycle."""
+        valve = self.valve
+        over = CATALOGUE["SETPOVR"]
+        self.write({"SETPOVR": counts(float(setpoint_pct[0])), "SETPOVRON": 1})
+        valve.capture_start(list(keys), 1)
+        values = [counts(float(v)) for v in setpoint_pct]
+        blocks = []
+        last = None
+        try:
+            for start in range(0, len(values), CHUNK):
+                self.check()
+                for value in values[start : start + CHUNK]:
+                    if value != last:
+                        valve.write(over.index, over.subindex, value)
+                        last = value
+                    valve.advance(valve.CYCLE_S)
+                valve.usb_activity()
+                blocks.append(valve.capture_read())
+                self._check_fault()
+        finally:
+            valve.capture_stop()
+        self.valve_seconds += len(values) * valve.CYCLE_S
+        return np.concatenate(blocks)[: len(values)]
+
+    def _check_fault(self) -> None:
+        status = self.valve.status()
+        if status.error_code:
+            raise ValveFaultError(
+                f"the valve reported error {status.error_code:#06x}: {status.error_text}"
+            )
+
+    def release(self) -> None:
+        """Override off."""
+        self.write({"SETPOVRON": 0})
+
+
+class SessionRig(Rig):
+    """Any open valve session: the override is written at the link's pace, samples stream in.
+
+    The stimulus is written once per ``update`` samples (a USB report takes about 1 ms); the
+    analysis uses the demand value the valve recorded, not the stimulus, so neither the
+    link's latency nor its jitter enters the figures.
+    """
+
+    def __init__(self, session: ValveSession, link: str, rate_hz: int = 5000) -> None:
+        super().__init__()
+        self.session = session
+        info = session.info
+        self.info = RigInfo(info.type_key, info.serial, info.firmware, link, float(rate_hz))
+        self.rate_hz = rate_hz
+        self.update = max(1, rate_hz // 1000)
+
+    def read(self, mnemonics: Sequence[str]) -> dict[str, int]:
+        """Raw values over the link."""
+        return {k: int(v) for k, v in self.session.read_many(list(mnemonics)).items()}
+
+    def write(self, values: Mapping[str, int]) -> None:
+        """Write over the link."""
+        self.session.write_many(dict(values))
+
+    def play(self, setpoint_pct: np.ndarray, keys: Sequence[str]) -> np.ndarray:
+        """Write the stimulus at the link's pace while collecting the stream."""
+        session = self.session
+        session.stream_start(list(keys), self.rate_hz)
+        session.write_many({"SETPOVR": counts(float(setpoint_pct[0])), "SETPOVRON": 1})
+        blocks: list[np.ndarray] = []
+        received = 0
+        try:
+            for k in range(0, len(setpoint_pct), self.update):
+                self.check()
+                session.write("SETPOVR", counts(float(setpoint_pct[k])))
+                block = session.stream_read()
+                blocks.append(block)
+                received += len(block)
+            while received < len(setpoint_pct):
+                self.check()
+                session.write("SETPOVR", counts(float(setpoint_pct[-1])))
+                block = session.stream_read()
+                blocks.append(block)
+                received += len(block)
+        finally:
+            session.stream_stop()
+        if session.status().error_code:
+            status = session.status()
+            raise ValveFaultError(
+                f"the valve reported error {status.error_code:#06x}: {status.error_text}"
+            )
+        return np.concatenate(blocks)[: len(setpoint_pct)]
+
+    def release(self) -> None:
+        """Override off."""
+        self.session.write("SETPOVRON", 0)

@@ -1,0 +1,128 @@
+"""``--diff A.prm B.prm`` and ``--diff A.prm --device ID``: what differs, one line each.
+
+Prints ``MNEMONIC<TAB>A<TAB>B<TAB>unit`` per differing parameter in display units (a side
+that lacks the parameter shows ``-``), or the same as JSON with ``--json``. Exit 0 when equal,
+1 when they differ, 3 for an invalid file, 4 when there is no such valve, 6 when it does not
+answer. No Qt.
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import sys
+from typing import Any
+
+from prm9tool.compare.model import Comparison, Row, Side
+from prm9tool.errors import CommunicationError, ExitCode, FileFormatError, Prm9Error
+from prm9tool.files.prmfile import read_file
+
+
+class DiffError(Exception):
+    """Ends ``--diff`` with ``code`` and a message for stderr."""
+
+    def __init__(self, code: ExitCode, message: str) -> None:
+        super().__init__(message)
+        self.code = code
+
+
+def run(args: argparse.Namespace) -> int:
+    """Entry point of ``--diff``; returns the exit code."""
+    try:
+        comparison = build(args)
+    except DiffError as exc:
+        print(f"prm9tool: {exc}", file=sys.stderr)
+        return int(exc.code)
+    if args.json:
+        print(json.dumps(as_json(comparison), indent=2, ensure_ascii=False))
+    else:
+        for warning in comparison.warnings():
+            print(f"prm9tool: warning: {warning}", file=sys.stderr)
+        for row in comparison.rows:
+            if row.differs:
+                print(line(row))
+    return ExitCode.OK if comparison.equal else ExitCode.VERIFY_FAILED
+
+
+def build(args: argparse.Namespace) -> Comparison:
+    """The comparison the options name (two files, or a file and a valve)."""
+    first = file_side(args.diff[0])
+    if len(args.diff) == 2:
+        return Comparison((first, file_side(args.diff[1])))
+    return Comparison((first, valve_side(args)))
+
+
+def file_side(path: str) -> Side:
+    """A *.prm file as one side; DiffError(3) with every problem when it is invalid."""
+    try:
+        contents = read_file(path)
+    except FileFormatError as exc:
+        message = f"{path} is not a valid parameter file:\n{exc}"
+        raise DiffError(ExitCode.INVALID_FILE, message) from None
+    return Side(path, contents.type_key, contents.values)
+
+
+def valve_side(args: argparse.Namespace) -> Side:
+    """The selected valve's parameters, downloaded (DiffError 4: no such valve, 6: no answer)."""
+    from prm9tool.catalogue.typekey import TypeKey
+    from prm9tool.cli.batch import BatchError, can_options, open_entry, select
+
+    try:
+        entries = select(args)
+    except BatchError as exc:
+        raise DiffError(exc.code, str(exc)) from exc
+    if len(entries) != 1:
+        raise DiffError(ExitCode.USAGE, "--diff compares with one valve: select exactly one")
+    try:
+        with open_entry(entries[0], can_options(args)) as session:
+            values = session.download()
+            info = session.info
+    except (CommunicationError, Prm9Error) as exc:
+        raise DiffError(ExitCode.COMMUNICATION, f"reading the valve failed: {exc}") from exc
+    key = TypeKey.parse(info.type_key)
+    _record_download(args, info, values)
+    return Side(f"valve {info.serial}", key, values)
+
+
+def _record_download(args: argparse.Namespace, info: Any, values: dict[str, Any]) -> None:
+    """A download is an operation on the valve's parameter set: it goes into the history."""
+    from prm9tool.cli.history import recorder_for
+
+    recorder = recorder_for(args)
+    problem = recorder.record_safely(info, "download", "ok", values, {"command": "--diff"})
+    recorder.close()
+    if problem:
+        print(f"prm9tool: warning: the download was not recorded: {problem}", file=sys.stderr)
+
+
+def _value(row: Row, column: int) -> str | None:
+    return None if row.values[column] is None else row.display(column)
+
+
+def line(row: Row) -> str:
+    """``MNEMONIC<TAB>A<TAB>B<TAB>unit`` (``-`` for a side that lacks the parameter)."""
+    a, b = (_value(row, column) or "-" for column in (0, 1))
+    return f"{row.mnemonic}\t{a}\t{b}\t{row.parameter.unit}".rstrip("\t")
+
+
+def as_json(comparison: Comparison) -> dict[str, Any]:
+    """The comparison as the JSON ``--diff --json`` prints (docs/compare.md)."""
+    first, second = comparison.sides
+    return {
+        "a": {"source": first.label, "type_key": str(first.type_key)},
+        "b": {"source": second.label, "type_key": str(second.type_key)},
+        "equal": comparison.equal,
+        "changed": len(comparison.changed),
+        "missing": len(comparison.missing),
+        "warnings": [str(w) for w in comparison.warnings()],
+        "differences": [
+            {
+                "mnemonic": row.mnemonic,
+                "a": _value(row, 0),
+                "b": _value(row, 1),
+                "unit": row.parameter.unit,
+            }
+            for row in comparison.rows
+            if row.differs
+        ],
+    }

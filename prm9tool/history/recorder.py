@@ -1,0 +1,206 @@
+"""Recording operations on valves: one :class:`Recorder` used by ``--batch`` and the GUI.
+
+The recorder fills in who, where and when (program version, OS user, host name, UTC time) and
+appends the record to the database. When the database cannot take it, the record goes to a
+local queue file (``history-queue.jsonl`` in the user data dir, one JSON object a line,
+appended and flushed to disk) and is moved into the database, in order, the next time it can
+be reached. Whether an upload may go ahead while the database is unreachable is decided
+*before* the upload (:meth:`Recorder.problem`): the caller refuses or asks the user.
+Thread-safe: the batch mode's worker threads share one recorder. No Qt.
+"""
+
+from __future__ import annotations
+
+import contextlib
+import getpass
+import json
+import logging
+import os
+import socket
+import threading
+from collections.abc import Mapping
+from datetime import UTC, datetime
+from pathlib import Path
+from typing import Any, Protocol
+
+from prm9tool import __version__
+from prm9tool.errors import HistoryError
+from prm9tool.history.chain import Entry
+from prm9tool.history.config import database_url, queue_path
+from prm9tool.history.store import HistoryStore
+
+log = logging.getLogger("prm9tool.history")
+Raw = int | str
+
+# operations (docs/history.md); "characterization" is reserved for test results (issue 17)
+OPERATIONS = (
+    "download", "upload", "store", "restore-factory", "online-edits", "batch-upload",
+    "backup", "characterization",
+)  # fmt: skip
+
+
+class ValveIdentity(Protocol):
+    """What a record needs to know about the valve (the session's DeviceInfo has it)."""
+
+    type_key: str
+    serial: int
+    firmware: str
+    device_id: str
+
+
+def now_utc() -> str:
+    """The time of a record: ISO 8601 in UTC with microseconds."""
+    return datetime.now(UTC).isoformat(timespec="microseconds")
+
+
+def _user() -> str:
+    try:
+        return getpass.getuser()
+    except (OSError, KeyError, ImportError):
+        return "unknown"
+
+
+def make_entry(
+    info: ValveIdentity,
+    operation: str,
+    outcome: str,
+    parameters: Mapping[str, Raw] | None,
+    details: Mapping[str, Any] | None = None,
+    failed_step: str | None = None,
+) -> Entry:
+    """A record of ``operation`` on the valve ``info`` describes, made here and now."""
+    return Entry(
+        serial=int(info.serial),
+        type_key=str(info.type_key),
+        firmware=str(info.firmware or ""),
+        link=str(info.device_id).partition(":")[0] or "file",
+        device_id=str(info.device_id),
+        operation=operation,
+        outcome=outcome,
+        recorded_at=now_utc(),
+        program_version=__version__,
+        os_user=_user(),
+        host=socket.gethostname(),
+        failed_step=failed_step,
+        details=dict(details or {}),
+        parameters=None if parameters is None else dict(parameters),
+    )
+
+
+class Recorder:
+    """Appends records to the history database, or queues them locally when it is away."""
+
+    def __init__(self, url: str | None = None, queue: Path | None = None) -> None:
+        self.url = database_url(url)
+        self.queue = queue or queue_path()
+        self._store: HistoryStore | None = None
+        self._lock = threading.RLock()
+
+    def store(self) -> HistoryStore:
+        """The open database (opened and migrated on first use); HistoryError if it cannot."""
+        with self._lock:
+            if self._store is None:
+                self._store = HistoryStore(self.url)
+                self._flush(self._store)
+            return self._store
+
+    def problem(self) -> HistoryError | None:
+        """Why the database cannot take records now (None: it can); flushes the queue."""
+        try:
+            self.store()
+        except HistoryError as exc:
+            return exc
+        return None
+
+    def record(
+        self,
+        info: ValveIdentity,
+        operation: str,
+        outcome: str,
+        parameters: Mapping[str, Raw] | None,
+        details: Mapping[str, Any] | None = None,
+        failed_step: str | None = None,
+    ) -> str:
+        """Record one operation; returns ``"recorded"`` or ``"queued"``.
+
+        Raises HistoryError only when neither the database nor the local queue took it.
+        """
+        entry = make_entry(info, operation, outcome, parameters, details, failed_step)
+        return self.add(entry)
+
+    def add(self, entry: Entry) -> str:
+        """Append a prepared entry (database, else the local queue)."""
+        try:
+            self.store().append(entry)
+        except HistoryError as exc:
+            log.warning("history: %s; the record is kept in %s", exc, self.queue)
+            self._enqueue(entry, exc)
+            return "queued"
+        return "recorded"
+
+    def record_safely(self, info: ValveIdentity, *args: Any, **kwargs: Any) -> str | None:
+        """:meth:`record`, but a failure is logged and returned as text instead of raised."""
+        try:
+            self.record(info, *args, **kwargs)
+        except HistoryError as exc:
+            log.error("history: %s", exc)
+            return str(exc)
+        return None
+
+    def close(self) -> None:
+        """Close the database connections."""
+        with self._lock:
+            if self._store is not None:
+                self._store.close()
+                self._store = None
+
+    # --- the local queue ------------------------------------------------------------------
+    def queued(self) -> int:
+        """How many records wait in the local queue."""
+        try:
+            return sum(1 for line in self.queue.read_text("utf-8").splitlines() if line.strip())
+        except OSError:
+            return 0
+
+    def _enqueue(self, entry: Entry, why: HistoryError) -> None:
+        line = json.dumps(entry.to_json(), ensure_ascii=False) + "\n"
+        with self._lock:
+            try:
+                self.queue.parent.mkdir(parents=True, exist_ok=True)
+                fd = os.open(self.queue, os.O_WRONLY | os.O_CREAT | os.O_APPEND, 0o644)
+                try:
+                    os.write(fd, line.encode("utf-8"))
+                    os.fsync(fd)
+                finally:
+                    os.close(fd)
+            except OSError as exc:
+                raise HistoryError(
+                    f"{why}; the record could not be kept in {self.queue} either: "
+                    f"{exc.strerror or exc}",
+                    why.kind,
+                ) from exc
+
+    def _flush(self, store: HistoryStore) -> None:
+        """Move queued records into the database, oldest first; what fails stays queued."""
+        if not self.queue.exists():
+            return
+        taken = self.queue.with_name(f"{self.queue.name}.{os.getpid()}.flushing")
+        try:
+            os.replace(self.queue, taken)  # another process appending starts a new queue
+        except OSError:
+            return
+        lines = [line for line in taken.read_text("utf-8").splitlines() if line.strip()]
+        for number, line in enumerate(lines):
+            try:
+                store.append(Entry.from_json(json.loads(line)))
+            except HistoryError:
+                self._requeue(lines[number:])
+                break
+        with contextlib.suppress(OSError):
+            taken.unlink()
+
+    def _requeue(self, lines: list[str]) -> None:
+        with open(self.queue, "a", encoding="utf-8") as queue:
+            queue.write("".join(line + "\n" for line in lines))
+            queue.flush()
+            os.fsync(queue.fileno())
