@@ -11,8 +11,9 @@ restart NMT reset node.
 short of resetting the node, which power-cycles the electronics and drops the spool. So
 before an upload writes anything the session reads the working values of the parameters it is
 going to write (a snapshot) and, after a failed upload, writes them back: the valve then runs
-on with the values it had, its stored set untouched, and nothing moves. The cost is one SDO read
-per parameter per upload (docs/can-link.md, docs/PERFORMANCE.md).
+on with the values it had, its stored set untouched, and nothing moves. The snapshot costs one
+SDO read per parameter, except for the values this session read or wrote last (the batch's
+backup and the GUI's going online read them all): docs/can-link.md, docs/PERFORMANCE.md.
 """
 
 from __future__ import annotations
@@ -76,6 +77,7 @@ class CanopenSession(ValveSession):
         self._closed = False
         self._snapshot: dict[str, Value] | None = None  # None: no upload is running
         self._touched: list[str] = []  # parameters the running upload wrote
+        self._known: dict[str, Value] = {}  # the valve's working values as last read/written
         self._sampler: SdoSampler | None = None
         self._lost_before = 0
         try:
@@ -161,11 +163,14 @@ class CanopenSession(ValveSession):
                 return None
             return exc
         if param.is_string:
-            return data.split(b"\0", 1)[0].decode("latin-1")
-        size = param.dtype.size
-        if len(data) < size:
-            raise ProtocolError(f"{param.mnemonic}: {len(data)} bytes for a {param.dtype.name}")
-        return param.dtype.decode(data[:size])
+            value: Value = data.split(b"\0", 1)[0].decode("latin-1")
+        else:
+            size = param.dtype.size
+            if len(data) < size:
+                raise ProtocolError(f"{param.mnemonic}: {len(data)} bytes for a {param.dtype.name}")
+            value = param.dtype.decode(data[:size])
+        self._known[param.mnemonic] = value
+        return value
 
     def _write_entries(
         self,
@@ -180,7 +185,9 @@ class CanopenSession(ValveSession):
             if param.mnemonic not in self.unavailable:
                 data = param.dtype.encode(values[param.mnemonic])
                 try:
+                    self._known.pop(param.mnemonic, None)  # unknown if the answer is lost
                     self._sdo.download(param.index, param.subindex, data)
+                    self._known[param.mnemonic] = values[param.mnemonic]
                     self._touched.append(param.mnemonic)
                     done += 1
                 except SdoAbortError as exc:
@@ -192,10 +199,15 @@ class CanopenSession(ValveSession):
         return done
 
     def _before_upload(self, params: Sequence[Parameter], cancel: threading.Event | None) -> None:
-        """The snapshot that :meth:`reload` writes back after a failed upload."""
+        """The snapshot that :meth:`reload` writes back after a failed upload: the working
+        values this session read or wrote last (a download before the upload, the backup, going
+        online), the others read now."""
         self._snapshot, self._touched = {}, []
-        read = self._read_entries(params, None, cancel)
-        self._snapshot = {m: v for m, v in read.items() if not isinstance(v, SdoAbortError)}
+        unknown = [p for p in params if p.mnemonic not in self._known]
+        read = self._read_entries(unknown, None, cancel)
+        known = {p.mnemonic: self._known[p.mnemonic] for p in params if p.mnemonic in self._known}
+        fresh = {m: v for m, v in read.items() if not isinstance(v, SdoAbortError)}
+        self._snapshot = known | fresh
 
     # --- commands ---------------------------------------------------------------------------
     def store(self) -> None:
@@ -226,6 +238,7 @@ class CanopenSession(ValveSession):
     def restart(self) -> None:
         """NMT reset node, then wait for the boot-up and identify again (hydraulics off)."""
         self._stop_sampler()
+        self._known.clear()  # the valve comes back with its stored set
         seen = self._shared.node_seen(self.node_id)
         boot_ups = seen.boot_ups
         self._sdo.node.nmt.send_command(NMT_RESET_NODE)
