@@ -7,7 +7,6 @@ response over the demand, both in %), phases in degrees.
 
 from __future__ import annotations
 
-import itertools
 import math
 from dataclasses import dataclass
 

@@ -40,6 +40,9 @@ class DeviceEntry:
     serial: int
     firmware: str
     description: str
+    nmt_state: str = ""  # CAN nodes: as the heartbeat said during the scan
+    heartbeat_age_s: float | None = None  # CAN nodes: seconds since the last heartbeat
+    last_emcy: str = ""  # CAN nodes: the last EMCY heard ("" none)
 
 
 def emulator_nv_path(serial: int) -> Path:
@@ -138,15 +141,15 @@ def can_entries(options: CanOptions) -> list[DeviceEntry]:
     shared = bus.acquire(options)
     try:
         nodes = discovery.scan(shared)
+        heard = {node.node_id: _heard(shared.node_seen(node.node_id)) for node in nodes}
     finally:
         bus.release(shared)
     entries = []
     for node in nodes:
         if not node.is_prm9:
+            text = f"node {node.node_id}: {node.problem}"
             entries.append(
-                DeviceEntry(
-                    node.device_id, NOT_PRM9, "", 0, "", f"node {node.node_id}: {node.problem}"
-                )
+                DeviceEntry(node.device_id, NOT_PRM9, "", 0, "", text, *heard[node.node_id])
             )
             continue
         key = node.type_key or remembered(user_data_dir(), node.serial)
@@ -159,9 +162,24 @@ def can_entries(options: CanOptions) -> list[DeviceEntry]:
                 node.serial,
                 node.firmware,
                 f"CANopen node {node.node_id} on {options}: {node.name}",
+                *heard[node.node_id],
             )
         )
     return entries
+
+
+def _heard(seen: Any) -> tuple[str, float | None, str]:
+    """NMT state, heartbeat age and last EMCY of a node as the bus told them."""
+    import time
+
+    from prm9tool.device.canlink.status import emcy_text
+
+    age = None if seen.heartbeat_at is None else time.monotonic() - seen.heartbeat_at
+    emcy = ""
+    if seen.emcy_code is not None:
+        meaning = emcy_text(seen.emcy_code) if seen.emcy_code else "errors cleared"
+        emcy = f"{seen.emcy_code:04X} {meaning}"
+    return seen.nmt_state, age, emcy
 
 
 # --- emulated valves of this process ---------------------------------------------------------

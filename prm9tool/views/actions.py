@@ -37,6 +37,7 @@ _ACTIONS: tuple[tuple[str, str, object], ...] = (
     ("restore_factory", "factory", None),
     ("restart", "restart", None),
     ("hid_configuration", "hid", "Ctrl+H"),
+    ("can_bus", "canopen", None),
     ("online", "online", "F5"),
     ("offline", "offline", "Shift+F5"),
     ("help", "help", SK.HelpContents),
@@ -163,6 +164,12 @@ def _texts() -> dict[str, _Texts]:
             translate("MainActions", "&HID configuration…"),
             translate("MainActions", "Choose the valve to communicate with"),
         ),
+        "can_bus": _Texts(
+            translate("MainActions", "&CAN bus…"),
+            translate(
+                "MainActions", "Find the valves on a CAN bus and go online with one (CANopen)"
+            ),
+        ),
         "online": _Texts(
             translate("MainActions", "O&nline mode"),
             translate("MainActions", "Connect to the valve"),
@@ -230,7 +237,7 @@ class MainActions(QObject):
                      None, "canopen"),
             "valve": ("valve_selection", "valve_status", None, "upload", "download", None,
                       "restore_factory", "restart"),
-            "communication": ("hid_configuration", None, "online", "offline"),
+            "communication": ("hid_configuration", "can_bus", None, "online", "offline"),
             "help": ("help", "homepage", None, "about"),
         }  # fmt: skip
         for menu_name, items in layout.items():

@@ -171,6 +171,7 @@ class MainWindow(QMainWindow):
             "restore_factory": self.valve.restore_factory,
             "restart": self.valve.restart,
             "hid_configuration": self.valve.configure_hid,
+            "can_bus": self.valve.configure_can_bus,
             "online": lambda: self.valve.go_online(),
             "offline": self.valve.go_offline,
             "help": self.show_help,
@@ -227,6 +228,7 @@ class MainWindow(QMainWindow):
             "redo": self.undo.stack.canRedo(),
             "online": not online and not busy,
             "hid_configuration": not online and not busy,  # the valve is chosen before
+            "can_bus": not online and not busy,
             "offline": online,
             "upload": ready,
             "download": ready,

@@ -71,16 +71,21 @@ def identify_node(shared: CanNetwork, node_id: int) -> NodeInfo:
     """Who node ``node_id`` is (problem set when it is not a PRM9 or does not answer)."""
     with sdo_channel(shared, node_id, IDENTIFY_TIMEOUT_S) as sdo:
         try:
-            device_type, vendor = sdo.read_u32(0x1000, 0), sdo.read_u32(0x1018, 1)
+            device_type = sdo.read_u32(0x1000, 0)
         except (CommunicationError, SdoAbortError) as exc:
             return NodeInfo(node_id, None, None, problem=f"does not answer as CANopen node: {exc}")
+        try:
+            vendor: int | None = sdo.read_u32(0x1018, 1)
+        except SdoAbortError:
+            vendor = None  # no identity object: certainly not a PRM9
         info = NodeInfo(node_id, device_type, vendor)
         if not info.is_prm9:
+            shown = "none" if vendor is None else f"0x{vendor:X}"
             return NodeInfo(
                 node_id,
                 device_type,
                 vendor,
-                problem=f"not a PRM9 (device type 0x{device_type:X}, vendor 0x{vendor:X})",
+                problem=f"not a PRM9 (device type 0x{device_type:X}, vendor {shown})",
             )
         try:
             return NodeInfo(
