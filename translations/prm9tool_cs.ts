@@ -34,12 +34,105 @@ Dokud soubor neopravíte, zná prm9tool pouze dodaná šoupátka.</translation>
             <source>--emulator {0}: the serial number must be 1 … 4294967295</source>
             <translation>--emulator {0}: výrobní číslo musí být 1 … 4294967295</translation>
         </message>
+        <message>
+            <source>Internal error</source>
+            <translation type="unfinished"></translation>
+        </message>
+        <message>
+            <source>prm9tool failed: {0}
+
+The last action may not have been completed. Save your work under a new name and please report this error with the details below.</source>
+            <translation type="unfinished"></translation>
+        </message>
     </context>
     <context>
         <name>BlockDialog</name>
         <message>
             <source>Read only: %1 (View → Access level)</source>
             <translation>Jen pro čtení: %1 (Náhled → Úroveň oprávnění)</translation>
+        </message>
+    </context>
+    <context>
+        <name>CanBusDialog</name>
+        <message>
+            <source>CAN bus</source>
+            <translation>Sběrnice CAN</translation>
+        </message>
+        <message>
+            <source>Search the bus</source>
+            <translation>Prohledat sběrnici</translation>
+        </message>
+        <message>
+            <source>Search the bus to list its nodes.</source>
+            <translation>Prohledejte sběrnici, aby se vypsaly její uzly.</translation>
+        </message>
+        <message>
+            <source>Node</source>
+            <translation>Uzel</translation>
+        </message>
+        <message>
+            <source>Type key</source>
+            <translation>Objednací kód</translation>
+        </message>
+        <message>
+            <source>Serial</source>
+            <translation>Výrobní číslo</translation>
+        </message>
+        <message>
+            <source>Firmware</source>
+            <translation>Firmware</translation>
+        </message>
+        <message>
+            <source>NMT state</source>
+            <translation>Stav NMT</translation>
+        </message>
+        <message>
+            <source>Heartbeat</source>
+            <translation>Heartbeat</translation>
+        </message>
+        <message>
+            <source>Last EMCY</source>
+            <translation>Poslední EMCY</translation>
+        </message>
+        <message>
+            <source>Description</source>
+            <translation>Popis</translation>
+        </message>
+        <message>
+            <source>Interface (python-can)</source>
+            <translation>Rozhraní (python-can)</translation>
+        </message>
+        <message>
+            <source>Channel</source>
+            <translation>Kanál</translation>
+        </message>
+        <message>
+            <source>Bit rate</source>
+            <translation>Přenosová rychlost</translation>
+        </message>
+        <message>
+            <source>Searching the bus (node IDs 1…127)…</source>
+            <translation>Prohledává se sběrnice (ID uzlů 1…127)…</translation>
+        </message>
+        <message>
+            <source>The bus could not be searched: {0}</source>
+            <translation>Sběrnici nelze prohledat: {0}</translation>
+        </message>
+        <message>
+            <source>{0} nodes answered, {1} of them PRM9 valves.</source>
+            <translation>Odpovědělo uzlů: {0}, z toho ventilů PRM9: {1}.</translation>
+        </message>
+        <message>
+            <source>not a PRM9</source>
+            <translation>není PRM9</translation>
+        </message>
+        <message>
+            <source>{0:.1f} s ago</source>
+            <translation>před {0:.1f} s</translation>
+        </message>
+        <message>
+            <source>none</source>
+            <translation>žádný</translation>
         </message>
     </context>
     <context>
@@ -256,6 +349,17 @@ Dokud soubor neopravíte, zná prm9tool pouze dodaná šoupátka.</translation>
         </message>
     </context>
     <context>
+        <name>Compare</name>
+        <message>
+            <source>The type keys differ: {0} is {1}, {2} is {3}.</source>
+            <translation type="unfinished"></translation>
+        </message>
+        <message>
+            <source>The valve variants differ: only the parameters both have are compared; {0} parameters that one side lacks are left out.</source>
+            <translation type="unfinished"></translation>
+        </message>
+    </context>
+    <context>
         <name>ControlPanel</name>
         <message>
             <source>Recording</source>
@@ -382,6 +486,10 @@ Dokud soubor neopravíte, zná prm9tool pouze dodaná šoupátka.</translation>
         <message>
             <source>Nominal coil current CURNORM: %1 mA — no limit may exceed it.</source>
             <translation>Jmenovitý proud cívky CURNORM: %1 mA – žádná mez jej nesmí překročit.</translation>
+        </message>
+        <message>
+            <source>Dither: ±%1 mA peak (DTAMP 100 % = %2 % of CURNORM).</source>
+            <translation type="unfinished"></translation>
         </message>
         <message>
             <source>coil %1</source>
@@ -719,8 +827,16 @@ Dokud soubor neopravíte, zná prm9tool pouze dodaná šoupátka.</translation>
             <translation>Emulovaný ventil se nemohl připojit ke sběrnici CAN; pracuje přes USB bez CAN.</translation>
         </message>
         <message>
+            <source>The CAN interface could not be opened.</source>
+            <translation>Rozhraní CAN nelze otevřít.</translation>
+        </message>
+        <message>
             <source>The valve refused the access.</source>
             <translation>Ventil přístup odmítl.</translation>
+        </message>
+        <message>
+            <source>The history database cannot be used.</source>
+            <translation type="unfinished"></translation>
         </message>
     </context>
     <context>
@@ -1168,6 +1284,14 @@ Dokud soubor neopravíte, zná prm9tool pouze dodaná šoupátka.</translation>
             <translation>Výběr ventilu pro komunikaci</translation>
         </message>
         <message>
+            <source>&amp;CAN bus…</source>
+            <translation>Sběrnice &amp;CAN…</translation>
+        </message>
+        <message>
+            <source>Find the valves on a CAN bus and go online with one (CANopen)</source>
+            <translation>Najít ventily na sběrnici CAN a přejít s jedním do režimu online (CANopen)</translation>
+        </message>
+        <message>
             <source>O&amp;nline mode</source>
             <translation>Režim o&amp;nline</translation>
         </message>
@@ -1255,8 +1379,28 @@ Dokud soubor neopravíte, zná prm9tool pouze dodaná šoupátka.</translation>
             <translation>OFFLINE</translation>
         </message>
         <message>
+            <source>CONNECTING</source>
+            <translation type="unfinished"></translation>
+        </message>
+        <message>
             <source>Mode: {0}</source>
             <translation>Režim: {0}</translation>
+        </message>
+        <message>
+            <source>Connected; the document and the valve are being compared</source>
+            <translation type="unfinished"></translation>
+        </message>
+        <message>
+            <source>Expert</source>
+            <translation type="unfinished">Expertní</translation>
+        </message>
+        <message>
+            <source>Basic</source>
+            <translation type="unfinished">Základní</translation>
+        </message>
+        <message>
+            <source>Level: {0}</source>
+            <translation type="unfinished"></translation>
         </message>
         <message>
             <source>Status: {0}</source>
@@ -1602,6 +1746,10 @@ Dokud soubor neopravíte, zná prm9tool pouze dodaná šoupátka.</translation>
         <message>
             <source>{0}: {1}{2} is stored as {3}{2}, the nearest value the valve can hold</source>
             <translation>{0}: {1}{2} se uloží jako {3}{2}, nejbližší hodnota, kterou ventil dokáže uložit</translation>
+        </message>
+        <message>
+            <source>{0} has no value: the valve it was read from does not have it over CANopen; not uploaded</source>
+            <translation>{0} nemá hodnotu: ventil, ze kterého byl načten, ji přes CANopen nemá; nenačte se do ventilu</translation>
         </message>
         <message>
             <source>{0} ({1}) is missing (required for {2} valves)</source>
@@ -2041,6 +2189,14 @@ Ujistěte se, že pohyb stroje je bezpečný. Spustit generátor?</translation>
         <message>
             <source>(none: step on the response)</source>
             <translation>(žádná: skok na odezvě)</translation>
+        </message>
+        <message>
+            <source>Measured on step {0} of {1} in {2}.</source>
+            <translation type="unfinished"></translation>
+        </message>
+        <message>
+            <source>Window too short: in {0} the response has not come to rest yet. Widen the time window or move the cursors apart.</source>
+            <translation type="unfinished"></translation>
         </message>
         <message>
             <source>No step found in {0}.</source>

@@ -34,12 +34,105 @@ Bis die Datei korrigiert ist, kennt prm9tool nur die mitgelieferten Schieber.</t
             <source>--emulator {0}: the serial number must be 1 … 4294967295</source>
             <translation>--emulator {0}: Die Seriennummer muss 1 … 4294967295 sein</translation>
         </message>
+        <message>
+            <source>Internal error</source>
+            <translation type="unfinished"></translation>
+        </message>
+        <message>
+            <source>prm9tool failed: {0}
+
+The last action may not have been completed. Save your work under a new name and please report this error with the details below.</source>
+            <translation type="unfinished"></translation>
+        </message>
     </context>
     <context>
         <name>BlockDialog</name>
         <message>
             <source>Read only: %1 (View → Access level)</source>
             <translation>Nur lesbar: %1 (Ansicht → Berechtigungsstufe)</translation>
+        </message>
+    </context>
+    <context>
+        <name>CanBusDialog</name>
+        <message>
+            <source>CAN bus</source>
+            <translation>CAN-Bus</translation>
+        </message>
+        <message>
+            <source>Search the bus</source>
+            <translation>Bus durchsuchen</translation>
+        </message>
+        <message>
+            <source>Search the bus to list its nodes.</source>
+            <translation>Den Bus durchsuchen, um seine Knoten aufzulisten.</translation>
+        </message>
+        <message>
+            <source>Node</source>
+            <translation>Knoten</translation>
+        </message>
+        <message>
+            <source>Type key</source>
+            <translation>Typschlüssel</translation>
+        </message>
+        <message>
+            <source>Serial</source>
+            <translation>Seriennummer</translation>
+        </message>
+        <message>
+            <source>Firmware</source>
+            <translation>Firmware</translation>
+        </message>
+        <message>
+            <source>NMT state</source>
+            <translation>NMT-Zustand</translation>
+        </message>
+        <message>
+            <source>Heartbeat</source>
+            <translation>Heartbeat</translation>
+        </message>
+        <message>
+            <source>Last EMCY</source>
+            <translation>Letzte EMCY</translation>
+        </message>
+        <message>
+            <source>Description</source>
+            <translation>Beschreibung</translation>
+        </message>
+        <message>
+            <source>Interface (python-can)</source>
+            <translation>Schnittstelle (python-can)</translation>
+        </message>
+        <message>
+            <source>Channel</source>
+            <translation>Kanal</translation>
+        </message>
+        <message>
+            <source>Bit rate</source>
+            <translation>Bitrate</translation>
+        </message>
+        <message>
+            <source>Searching the bus (node IDs 1…127)…</source>
+            <translation>Bus wird durchsucht (Knoten-IDs 1…127)…</translation>
+        </message>
+        <message>
+            <source>The bus could not be searched: {0}</source>
+            <translation>Der Bus konnte nicht durchsucht werden: {0}</translation>
+        </message>
+        <message>
+            <source>{0} nodes answered, {1} of them PRM9 valves.</source>
+            <translation>{0} Knoten haben geantwortet, davon {1} PRM9-Ventile.</translation>
+        </message>
+        <message>
+            <source>not a PRM9</source>
+            <translation>kein PRM9</translation>
+        </message>
+        <message>
+            <source>{0:.1f} s ago</source>
+            <translation>vor {0:.1f} s</translation>
+        </message>
+        <message>
+            <source>none</source>
+            <translation>keiner</translation>
         </message>
     </context>
     <context>
@@ -256,6 +349,17 @@ Bis die Datei korrigiert ist, kennt prm9tool nur die mitgelieferten Schieber.</t
         </message>
     </context>
     <context>
+        <name>Compare</name>
+        <message>
+            <source>The type keys differ: {0} is {1}, {2} is {3}.</source>
+            <translation type="unfinished"></translation>
+        </message>
+        <message>
+            <source>The valve variants differ: only the parameters both have are compared; {0} parameters that one side lacks are left out.</source>
+            <translation type="unfinished"></translation>
+        </message>
+    </context>
+    <context>
         <name>ControlPanel</name>
         <message>
             <source>Recording</source>
@@ -382,6 +486,10 @@ Bis die Datei korrigiert ist, kennt prm9tool nur die mitgelieferten Schieber.</t
         <message>
             <source>Nominal coil current CURNORM: %1 mA — no limit may exceed it.</source>
             <translation>Nennstrom der Spule CURNORM: %1 mA – keine Grenze darf ihn überschreiten.</translation>
+        </message>
+        <message>
+            <source>Dither: ±%1 mA peak (DTAMP 100 % = %2 % of CURNORM).</source>
+            <translation type="unfinished"></translation>
         </message>
         <message>
             <source>coil %1</source>
@@ -719,8 +827,16 @@ Bis die Datei korrigiert ist, kennt prm9tool nur die mitgelieferten Schieber.</t
             <translation>Das emulierte Ventil konnte dem CAN-Bus nicht beitreten; es arbeitet über USB ohne CAN.</translation>
         </message>
         <message>
+            <source>The CAN interface could not be opened.</source>
+            <translation>Die CAN-Schnittstelle konnte nicht geöffnet werden.</translation>
+        </message>
+        <message>
             <source>The valve refused the access.</source>
             <translation>Das Ventil hat den Zugriff abgelehnt.</translation>
+        </message>
+        <message>
+            <source>The history database cannot be used.</source>
+            <translation type="unfinished"></translation>
         </message>
     </context>
     <context>
@@ -1165,6 +1281,14 @@ Bis die Datei korrigiert ist, kennt prm9tool nur die mitgelieferten Schieber.</t
             <translation>Ventil für die Kommunikation wählen</translation>
         </message>
         <message>
+            <source>&amp;CAN bus…</source>
+            <translation>&amp;CAN-Bus…</translation>
+        </message>
+        <message>
+            <source>Find the valves on a CAN bus and go online with one (CANopen)</source>
+            <translation>Ventile an einem CAN-Bus suchen und mit einem online gehen (CANopen)</translation>
+        </message>
+        <message>
             <source>O&amp;nline mode</source>
             <translation>O&amp;nline-Modus</translation>
         </message>
@@ -1252,8 +1376,28 @@ Bis die Datei korrigiert ist, kennt prm9tool nur die mitgelieferten Schieber.</t
             <translation>OFFLINE</translation>
         </message>
         <message>
+            <source>CONNECTING</source>
+            <translation type="unfinished"></translation>
+        </message>
+        <message>
             <source>Mode: {0}</source>
             <translation>Modus: {0}</translation>
+        </message>
+        <message>
+            <source>Connected; the document and the valve are being compared</source>
+            <translation type="unfinished"></translation>
+        </message>
+        <message>
+            <source>Expert</source>
+            <translation type="unfinished">Experte</translation>
+        </message>
+        <message>
+            <source>Basic</source>
+            <translation type="unfinished">Basis</translation>
+        </message>
+        <message>
+            <source>Level: {0}</source>
+            <translation type="unfinished"></translation>
         </message>
         <message>
             <source>Status: {0}</source>
@@ -1597,6 +1741,10 @@ Bis die Datei korrigiert ist, kennt prm9tool nur die mitgelieferten Schieber.</t
         <message>
             <source>{0}: {1}{2} is stored as {3}{2}, the nearest value the valve can hold</source>
             <translation>{0}: {1}{2} wird als {3}{2} gespeichert, der nächste Wert, den das Ventil speichern kann</translation>
+        </message>
+        <message>
+            <source>{0} has no value: the valve it was read from does not have it over CANopen; not uploaded</source>
+            <translation>{0} hat keinen Wert: Das Ventil, aus dem er gelesen wurde, hat ihn über CANopen nicht; wird nicht hochgeladen</translation>
         </message>
         <message>
             <source>{0} ({1}) is missing (required for {2} valves)</source>
@@ -2036,6 +2184,14 @@ Stellen Sie sicher, dass die Maschine sich gefahrlos bewegen kann. Generator sta
         <message>
             <source>(none: step on the response)</source>
             <translation>(keine: Sprung auf der Antwort)</translation>
+        </message>
+        <message>
+            <source>Measured on step {0} of {1} in {2}.</source>
+            <translation type="unfinished"></translation>
+        </message>
+        <message>
+            <source>Window too short: in {0} the response has not come to rest yet. Widen the time window or move the cursors apart.</source>
+            <translation type="unfinished"></translation>
         </message>
         <message>
             <source>No step found in {0}.</source>
