@@ -7,7 +7,7 @@ import canopen
 import pytest
 from can_link_rig import E04, make_link_rig, unique_channel
 from PySide6.QtCore import QSettings
-from PySide6.QtWidgets import QDialogButtonBox
+from PySide6.QtWidgets import QDialogButtonBox, QInputDialog
 
 from prm9tool.device import factory
 from prm9tool.online.connection import ValveConnection
@@ -90,3 +90,42 @@ def test_a_bus_that_cannot_be_opened_is_said_in_the_dialog(qtbot, settings):
     assert "cannot open the CAN interface 'socketcan'" in dialog.state.text()
     assert dialog.table.rowCount() == 0
     connection.shutdown()
+
+
+def test_a_valve_without_its_type_key_is_asked_for_it_once(qtbot, tmp_path, settings, monkeypatch):
+    monkeypatch.setenv("PRM9TOOL_DATA_DIR", str(tmp_path / "data"))
+    rig = make_link_rig("gui-real", tmp_path, real_valve=True)
+    connection = ValveConnection(opener=lambda e: factory.open_session(e, can_link=rig.options))
+    dialog = CanBusDialog(
+        lambda bus, deliver: connection.list_devices_async((), deliver, bus), settings
+    )
+    qtbot.addWidget(dialog)
+    dialog.interface.setCurrentText("virtual")
+    dialog.channel.setText(rig.options.channel)
+    answers = [("PRM9-06.3Z11/30-24E02S02-CA", True), ("PRM9-06.3Z11/30-24E04S02-CA", True)]
+    asked: list[str] = []
+
+    def answer(_parent, _title, label, text=""):
+        asked.append(label)
+        return answers.pop(0)
+
+    monkeypatch.setattr(QInputDialog, "getText", staticmethod(answer))
+    try:
+        dialog.search.click()
+        qtbot.waitUntil(lambda: dialog.table.rowCount() == 1, timeout=10000)
+        assert dialog.table.item(0, 1).text() == "? (E04 -CA; type key unknown)"
+        dialog.table.selectRow(0)
+        ok = dialog.buttons.button(QDialogButtonBox.StandardButton.Ok)
+        ok.click()  # an E02 key for an E04 valve: refused, the dialog stays
+        assert "does not fit the valve: its objects say E04 -CA" in dialog.state.text()
+        assert dialog.result() == 0
+        ok.click()
+        assert dialog.result() == 1
+        assert "does not tell its type key; its objects say E04 -CA" in asked[0]
+        with qtbot.waitSignal(connection.online_changed, timeout=10000):
+            connection.go_online(dialog.selected_device_id())
+        assert connection.device.type_key == E04  # remembered for its serial number
+        connection.go_offline()
+    finally:
+        connection.shutdown()
+        rig.close()

@@ -134,6 +134,18 @@ The last action may not have been completed. Save your work under a new name and
             <source>none</source>
             <translation>žádný</translation>
         </message>
+        <message>
+            <source>Type key of the valve</source>
+            <translation>Objednací kód ventilu</translation>
+        </message>
+        <message>
+            <source>The valve (serial number {0}) does not tell its type key; its objects say {1} -CA. Type key on the valve's label:</source>
+            <translation>Ventil (výrobní číslo {0}) neudává svůj objednací kód; jeho objekty říkají {1} -CA. Objednací kód ze štítku ventilu:</translation>
+        </message>
+        <message>
+            <source>{0} does not fit the valve: its objects say {1} -CA.</source>
+            <translation>{0} neodpovídá ventilu: jeho objekty říkají {1} -CA.</translation>
+        </message>
     </context>
     <context>
         <name>CanopenWindow</name>

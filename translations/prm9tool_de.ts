@@ -134,6 +134,18 @@ The last action may not have been completed. Save your work under a new name and
             <source>none</source>
             <translation>keiner</translation>
         </message>
+        <message>
+            <source>Type key of the valve</source>
+            <translation>Typschlüssel des Ventils</translation>
+        </message>
+        <message>
+            <source>The valve (serial number {0}) does not tell its type key; its objects say {1} -CA. Type key on the valve's label:</source>
+            <translation>Das Ventil (Seriennummer {0}) nennt seinen Typschlüssel nicht; seine Objekte sagen {1} -CA. Typschlüssel vom Typenschild des Ventils:</translation>
+        </message>
+        <message>
+            <source>{0} does not fit the valve: its objects say {1} -CA.</source>
+            <translation>{0} passt nicht zum Ventil: Seine Objekte sagen {1} -CA.</translation>
+        </message>
     </context>
     <context>
         <name>CanopenWindow</name>

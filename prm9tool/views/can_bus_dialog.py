@@ -19,6 +19,7 @@ from PySide6.QtWidgets import (
     QDialogButtonBox,
     QFormLayout,
     QHeaderView,
+    QInputDialog,
     QLabel,
     QLineEdit,
     QPushButton,
@@ -29,6 +30,10 @@ from PySide6.QtWidgets import (
 )
 from shiboken6 import isValid
 
+from prm9tool.catalogue.typekey import TypeKey
+from prm9tool.errors import TypeKeyError
+from prm9tool.files.can_type_keys import remember
+from prm9tool.paths import user_data_dir
 from prm9tool.translate import error_text
 
 INTERFACE_KEY, CHANNEL_KEY, BITRATE_KEY = "can/interface", "can/channel", "can/bitrate"
@@ -199,6 +204,39 @@ class CanBusDialog(QDialog):
         ok.setEnabled(self.selected_device_id() is not None)
 
     def _accept_if_valve(self) -> None:
-        if self.selected_device_id() is not None:
-            self._remember()
-            self.accept()
+        if self.selected_device_id() is None:
+            return
+        entry = self._entries[self.table.currentRow()]
+        if str(getattr(entry, "type_key", "")).startswith("?") and not self._ask_type_key(entry):
+            return
+        self._remember()
+        self.accept()
+
+    def _ask_type_key(self, entry: object) -> bool:
+        """A real valve does not tell its type key (docs/can-link.md): ask for the one on its
+        label, check it against what its objects tell, remember it for its serial number."""
+        serial = int(getattr(entry, "serial", 0))
+        told = "E04" if "E04" in str(getattr(entry, "type_key", "")) else "E02"
+        text, ok = QInputDialog.getText(
+            self,
+            self.tr("Type key of the valve"),
+            self.tr(
+                "The valve (serial number {0}) does not tell its type key; its objects say "
+                "{1} -CA. Type key on the valve's label:"
+            ).format(serial, told),
+            text=f"PRM9-06.3Z11/30-24{told}S02-CA",
+        )
+        if not ok:
+            return False
+        try:
+            key = TypeKey.parse(text)
+        except TypeKeyError as exc:
+            self.state.setText(error_text(exc))
+            return False
+        if key.config.value != told or not key.canopen:
+            self.state.setText(
+                self.tr("{0} does not fit the valve: its objects say {1} -CA.").format(key, told)
+            )
+            return False
+        remember(user_data_dir(), serial, str(key))
+        return True

@@ -10,7 +10,6 @@ valve's label; prm9tool remembers it per serial number in
 
 from __future__ import annotations
 
-import json
 import logging
 from dataclasses import dataclass
 from pathlib import Path
@@ -18,9 +17,11 @@ from pathlib import Path
 from prm9tool.catalogue.typekey import TypeKey
 from prm9tool.catalogue.variant import Config
 from prm9tool.errors import TypeKeyError
+from prm9tool.files.can_type_keys import remember, remembered
+
+__all__ = ["Derived", "TypeKeyNeededError", "remember", "remembered", "resolve"]
 
 log = logging.getLogger(__name__)
-FILE_NAME = "can-type-keys.json"
 
 
 @dataclass(frozen=True)
@@ -55,37 +56,6 @@ class TypeKeyNeededError(TypeKeyError):
             f"{derived.describe()}: give the type key on its label "
             "(command line: the file's key is used; GUI: asked once, then remembered)"
         )
-
-
-def _path(data_dir: Path) -> Path:
-    return data_dir / FILE_NAME
-
-
-def remembered(data_dir: Path, serial: int) -> str | None:
-    """The type key the user gave for ``serial`` before (None: none, or the file is broken)."""
-    try:
-        keys = json.loads(_path(data_dir).read_text(encoding="utf-8"))
-    except (OSError, ValueError):
-        return None
-    value = keys.get(str(serial)) if isinstance(keys, dict) else None
-    return value if isinstance(value, str) else None
-
-
-def remember(data_dir: Path, serial: int, type_key: str) -> None:
-    """Remember ``type_key`` for ``serial`` (validated first; TypeKeyError if invalid)."""
-    key = str(TypeKey.parse(type_key))
-    path = _path(data_dir)
-    try:
-        keys = json.loads(path.read_text(encoding="utf-8"))
-    except (OSError, ValueError):
-        keys = {}
-    if not isinstance(keys, dict):
-        keys = {}
-    keys[str(serial)] = key
-    path.parent.mkdir(parents=True, exist_ok=True)
-    tmp = path.with_suffix(".tmp")
-    tmp.write_text(json.dumps(keys, indent=1, sort_keys=True), encoding="utf-8")
-    tmp.replace(path)
 
 
 def resolve(serial: int, derived: Derived, hint: str | None, data_dir: Path) -> str:
