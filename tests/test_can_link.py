@@ -6,6 +6,7 @@ from __future__ import annotations
 
 import contextlib
 import threading
+import time
 
 import can
 import canopen
@@ -243,3 +244,23 @@ def test_missing_object_abort_codes_are_the_cia_301_ones():
     from prm9tool.device.canlink.sdo import MISSING
 
     assert {AbortCode.NO_SUCH_OBJECT, AbortCode.NO_SUCH_SUBINDEX} == MISSING
+
+
+def test_commissioning_starts_the_node_and_enables_the_device_and_back(tmp_path, data_dir):
+    rig = make_link_rig("commission", tmp_path)
+    rig.valve.start()  # the state machine steps in real time
+    try:
+        with open_can(rig) as session:
+            session.write("HEARTBEAT", 50)
+            status = session.commission()
+            assert status.device_state == "DEVICE_MODE_ACTIVE"
+            assert rig.valve.status().nmt_state == "operational"
+            status = session.decommission()
+            assert status.device_state == "INIT"
+            deadline = time.monotonic() + 2  # NMT commands have no answer: wait for it
+            while rig.valve.status().nmt_state != "pre-operational":
+                assert time.monotonic() < deadline, rig.valve.status().nmt_state
+                time.sleep(0.01)
+    finally:
+        rig.valve.stop()
+        rig.close()

@@ -44,9 +44,12 @@ def test_menus_and_toolbar_are_those_of_the_manual(window):
         "&Download from valve",
         "Restore &factory values…",
         "&Restart valve…",
+        "&Enable valve…",
+        "D&isable valve",
     ]
     assert _menu_texts(window, "communication") == [
         "&HID configuration…",
+        "&CAN bus…",
         "O&nline mode",
         "O&ffline mode",
     ]

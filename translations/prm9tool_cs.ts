@@ -361,6 +361,21 @@ The last action may not have been completed. Save your work under a new name and
         </message>
     </context>
     <context>
+        <name>Commissioning</name>
+        <message>
+            <source>Enable valve</source>
+            <translation>Uvolnit ventil</translation>
+        </message>
+        <message>
+            <source>The valve is started (NMT start) and enabled (control word 08h → 09h → 0Bh → 0Fh): the spool then follows its setpoint and moves the hydraulics. Enable it?</source>
+            <translation>Ventil se spustí (NMT start) a uvolní (řídicí slovo 08h → 09h → 0Bh → 0Fh): šoupátko pak sleduje žádanou hodnotu a pohybuje hydraulikou. Uvolnit?</translation>
+        </message>
+        <message>
+            <source>The valve is in state {0}</source>
+            <translation>Ventil je ve stavu {0}</translation>
+        </message>
+    </context>
+    <context>
         <name>Compare</name>
         <message>
             <source>The type keys differ: {0} is {1}, {2} is {3}.</source>
@@ -1286,6 +1301,22 @@ The last action may not have been completed. Save your work under a new name and
         <message>
             <source>Restart the valve electronics (only with the hydraulics disconnected)</source>
             <translation>Restartování elektroniky ventilu (dovoleno pouze při odpojeném hydraulickém obvodu)</translation>
+        </message>
+        <message>
+            <source>&amp;Enable valve…</source>
+            <translation>&amp;Uvolnit ventil…</translation>
+        </message>
+        <message>
+            <source>Start the node and enable the device: the spool follows its setpoint (§7.6)</source>
+            <translation>Spustit uzel a uvolnit zařízení: šoupátko sleduje žádanou hodnotu (§7.6)</translation>
+        </message>
+        <message>
+            <source>D&amp;isable valve</source>
+            <translation>&amp;Zablokovat ventil</translation>
+        </message>
+        <message>
+            <source>Back to INIT and NMT pre-operational</source>
+            <translation>Zpět do INIT a NMT pre-operational</translation>
         </message>
         <message>
             <source>&amp;HID configuration…</source>

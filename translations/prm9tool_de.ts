@@ -361,6 +361,21 @@ The last action may not have been completed. Save your work under a new name and
         </message>
     </context>
     <context>
+        <name>Commissioning</name>
+        <message>
+            <source>Enable valve</source>
+            <translation>Ventil freigeben</translation>
+        </message>
+        <message>
+            <source>The valve is started (NMT start) and enabled (control word 08h → 09h → 0Bh → 0Fh): the spool then follows its setpoint and moves the hydraulics. Enable it?</source>
+            <translation>Das Ventil wird gestartet (NMT-Start) und freigegeben (Steuerwort 08h → 09h → 0Bh → 0Fh): Der Schieber folgt dann seinem Sollwert und bewegt die Hydraulik. Freigeben?</translation>
+        </message>
+        <message>
+            <source>The valve is in state {0}</source>
+            <translation>Das Ventil ist im Zustand {0}</translation>
+        </message>
+    </context>
+    <context>
         <name>Compare</name>
         <message>
             <source>The type keys differ: {0} is {1}, {2} is {3}.</source>
@@ -1283,6 +1298,22 @@ The last action may not have been completed. Save your work under a new name and
         <message>
             <source>Restart the valve electronics (only with the hydraulics disconnected)</source>
             <translation>Ventilelektronik neu starten (nur bei getrennter Hydraulik)</translation>
+        </message>
+        <message>
+            <source>&amp;Enable valve…</source>
+            <translation>Ventil &amp;freigeben…</translation>
+        </message>
+        <message>
+            <source>Start the node and enable the device: the spool follows its setpoint (§7.6)</source>
+            <translation>Knoten starten und Gerät freigeben: Der Schieber folgt seinem Sollwert (§7.6)</translation>
+        </message>
+        <message>
+            <source>D&amp;isable valve</source>
+            <translation>Ventil s&amp;perren</translation>
+        </message>
+        <message>
+            <source>Back to INIT and NMT pre-operational</source>
+            <translation>Zurück nach INIT und NMT Pre-Operational</translation>
         </message>
         <message>
             <source>&amp;HID configuration…</source>

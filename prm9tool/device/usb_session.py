@@ -120,6 +120,12 @@ class UsbSession(ValveSession):
             text += more.text_chunk
         return _status(reply, text.decode("utf-8", errors="replace"))
 
+    def _network_start(self) -> None:
+        """The USB link is point to point: no NMT (the valve's CAN side is not touched)."""
+
+    def _network_stop(self) -> None:
+        """The USB link is point to point: no NMT."""
+
     # --- streaming ------------------------------------------------------------------------
     def stream_start(self, keys: Sequence[str], rate_hz: int = 5000) -> None:
         """Stream up to three measuring points (signals.py keys) at ``rate_hz``."""

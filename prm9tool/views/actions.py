@@ -36,6 +36,8 @@ _ACTIONS: tuple[tuple[str, str, object], ...] = (
     ("download", "download", "Ctrl+D"),
     ("restore_factory", "factory", None),
     ("restart", "restart", None),
+    ("enable_valve", "", None),
+    ("disable_valve", "", None),
     ("hid_configuration", "hid", "Ctrl+H"),
     ("can_bus", "canopen", None),
     ("online", "online", "F5"),
@@ -160,6 +162,17 @@ def _texts() -> dict[str, _Texts]:
                 "Restart the valve electronics (only with the hydraulics disconnected)",
             ),
         ),
+        "enable_valve": _Texts(
+            translate("MainActions", "&Enable valve…"),
+            translate(
+                "MainActions",
+                "Start the node and enable the device: the spool follows its setpoint (§7.6)",
+            ),
+        ),
+        "disable_valve": _Texts(
+            translate("MainActions", "D&isable valve"),
+            translate("MainActions", "Back to INIT and NMT pre-operational"),
+        ),
         "hid_configuration": _Texts(
             translate("MainActions", "&HID configuration…"),
             translate("MainActions", "Choose the valve to communicate with"),
@@ -236,7 +249,7 @@ class MainActions(QObject):
             "view": ("view_diagram", "view_parameters", "view_scope", None, "access", "language",
                      None, "canopen"),
             "valve": ("valve_selection", "valve_status", None, "upload", "download", None,
-                      "restore_factory", "restart"),
+                      "restore_factory", "restart", None, "enable_valve", "disable_valve"),
             "communication": ("hid_configuration", "can_bus", None, "online", "offline"),
             "help": ("help", "homepage", None, "about"),
         }  # fmt: skip

@@ -25,6 +25,7 @@ from prm9tool.online.sync import ValveSync
 from prm9tool.views import prompts
 from prm9tool.views.access_dialog import ChangePasswordDialog, PasswordDialog
 from prm9tool.views.actions import MainActions
+from prm9tool.views.commissioning import Commissioning
 from prm9tool.views.emcy import status_summary
 from prm9tool.views.file_workflow import FileWorkflow
 from prm9tool.views.help_dialog import HelpWindow, about_html, open_homepage
@@ -67,6 +68,7 @@ class MainWindow(QMainWindow):
         self.files = FileWorkflow(self, doc, undo, settings)
         self.valve = ValveWorkflow(self, doc, undo, connection, self.sync, settings, access)
         self.records = RecordActions(self)
+        self.commissioning = Commissioning(connection, self)
         self.commands = MainActions(self)
         self.commands.build_menus(self.menuBar())
         self.commands.build_toolbar(self.addToolBar("toolbar"))
@@ -172,6 +174,8 @@ class MainWindow(QMainWindow):
             "restart": self.valve.restart,
             "hid_configuration": self.valve.configure_hid,
             "can_bus": self.valve.configure_can_bus,
+            "enable_valve": self.commissioning.enable,
+            "disable_valve": self.commissioning.disable,
             "online": lambda: self.valve.go_online(),
             "offline": self.valve.go_offline,
             "help": self.show_help,
@@ -209,7 +213,7 @@ class MainWindow(QMainWindow):
             signal.connect(self._show_file)
         self.files.about_to_replace.connect(self.sync.stop)
         self.files.document_replaced.connect(self.valve.compare_again)
-        for source in (self.files, self.valve, self.records):
+        for source in (self.files, self.valve, self.records, self.commissioning):
             source.message_posted.connect(lambda text: s.showMessage(text, 8000))
 
     def _on_connection_online_changed(self, online: bool) -> None:
@@ -229,6 +233,8 @@ class MainWindow(QMainWindow):
             "online": not online and not busy,
             "hid_configuration": not online and not busy,  # the valve is chosen before
             "can_bus": not online and not busy,
+            "enable_valve": ready,
+            "disable_valve": ready,
             "offline": online,
             "upload": ready,
             "download": ready,
