@@ -570,6 +570,25 @@ The last action may not have been completed. Save your work under a new name and
         </message>
     </context>
     <context>
+        <name>DcfExport</name>
+        <message>
+            <source>Export DCF</source>
+            <translation>Export DCF</translation>
+        </message>
+        <message>
+            <source>CANopen device configuration (*.dcf)</source>
+            <translation>Konfigurace zařízení CANopen (*.dcf)</translation>
+        </message>
+        <message>
+            <source>Cannot write “{0}”: {1}</source>
+            <translation>„{0}“ nelze zapsat: {1}</translation>
+        </message>
+        <message>
+            <source>DCF saved as {0} (node {1})</source>
+            <translation>DCF uloženo jako {0} (uzel {1})</translation>
+        </message>
+    </context>
+    <context>
         <name>DiagramBlock</name>
         <message>
             <source>spool position (LVDT)</source>
@@ -1185,6 +1204,14 @@ The last action may not have been completed. Save your work under a new name and
         <message>
             <source>Print the current parameter record</source>
             <translation>Vytisknout aktuální záznam parametrů</translation>
+        </message>
+        <message>
+            <source>Export &amp;DCF…</source>
+            <translation>Export &amp;DCF…</translation>
+        </message>
+        <message>
+            <source>Save the valve's CANopen configuration as a CiA 306 DCF (for a PLC configurator)</source>
+            <translation>Uložit konfiguraci CANopen ventilu jako DCF podle CiA 306 (pro konfigurátor PLC)</translation>
         </message>
         <message>
             <source>&amp;Export PDF…</source>

@@ -570,6 +570,25 @@ The last action may not have been completed. Save your work under a new name and
         </message>
     </context>
     <context>
+        <name>DcfExport</name>
+        <message>
+            <source>Export DCF</source>
+            <translation>DCF exportieren</translation>
+        </message>
+        <message>
+            <source>CANopen device configuration (*.dcf)</source>
+            <translation>CANopen-Gerätekonfiguration (*.dcf)</translation>
+        </message>
+        <message>
+            <source>Cannot write “{0}”: {1}</source>
+            <translation>„{0}“ kann nicht geschrieben werden: {1}</translation>
+        </message>
+        <message>
+            <source>DCF saved as {0} (node {1})</source>
+            <translation>DCF gespeichert als {0} (Knoten {1})</translation>
+        </message>
+    </context>
+    <context>
         <name>DiagramBlock</name>
         <message>
             <source>spool position (LVDT)</source>
@@ -1182,6 +1201,14 @@ The last action may not have been completed. Save your work under a new name and
         <message>
             <source>Print the current parameter record</source>
             <translation>Aktuellen Parametersatz drucken</translation>
+        </message>
+        <message>
+            <source>Export &amp;DCF…</source>
+            <translation>D&amp;CF exportieren…</translation>
+        </message>
+        <message>
+            <source>Save the valve's CANopen configuration as a CiA 306 DCF (for a PLC configurator)</source>
+            <translation>CANopen-Konfiguration des Ventils als CiA-306-DCF speichern (für einen SPS-Konfigurator)</translation>
         </message>
         <message>
             <source>&amp;Export PDF…</source>

@@ -22,6 +22,7 @@ _ACTIONS: tuple[tuple[str, str, object], ...] = (
     ("redo", "redo", ("Ctrl+Y", "Ctrl+Shift+Z")),
     ("print", "print", SK.Print),
     ("export_pdf", "pdf", "Ctrl+E"),
+    ("export_dcf", "", None),
     ("exit", "exit", (SK.Quit, "Ctrl+Q")),  # nor a Quit key
     ("view_diagram", "diagram", "Ctrl+1"),
     ("view_parameters", "parameters", "Ctrl+2"),
@@ -103,6 +104,13 @@ def _texts() -> dict[str, _Texts]:
         "print": _Texts(
             translate("MainActions", "&Print…"),
             translate("MainActions", "Print the current parameter record"),
+        ),
+        "export_dcf": _Texts(
+            translate("MainActions", "Export &DCF…"),
+            translate(
+                "MainActions",
+                "Save the valve's CANopen configuration as a CiA 306 DCF (for a PLC configurator)",
+            ),
         ),
         "export_pdf": _Texts(
             translate("MainActions", "&Export PDF…"),
@@ -245,7 +253,7 @@ class MainActions(QObject):
         """File, View, Valve, Communication, Help (manual §8.5)."""
         layout: dict[str, tuple[str | None, ...]] = {
             "file": ("new", "open", "recent", "save", "save_as", None, "undo", "redo", None,
-                     "print", "export_pdf", None, "exit"),
+                     "print", "export_pdf", "export_dcf", None, "exit"),
             "view": ("view_diagram", "view_parameters", "view_scope", None, "access", "language",
                      None, "canopen"),
             "valve": ("valve_selection", "valve_status", None, "upload", "download", None,

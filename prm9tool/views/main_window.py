@@ -26,6 +26,7 @@ from prm9tool.views import prompts
 from prm9tool.views.access_dialog import ChangePasswordDialog, PasswordDialog
 from prm9tool.views.actions import MainActions
 from prm9tool.views.commissioning import Commissioning
+from prm9tool.views.dcf_export import DcfExport
 from prm9tool.views.emcy import status_summary
 from prm9tool.views.file_workflow import FileWorkflow
 from prm9tool.views.help_dialog import HelpWindow, about_html, open_homepage
@@ -69,6 +70,7 @@ class MainWindow(QMainWindow):
         self.valve = ValveWorkflow(self, doc, undo, connection, self.sync, settings, access)
         self.records = RecordActions(self)
         self.commissioning = Commissioning(connection, self)
+        self.dcf = DcfExport(doc, self)
         self.commands = MainActions(self)
         self.commands.build_menus(self.menuBar())
         self.commands.build_toolbar(self.addToolBar("toolbar"))
@@ -158,6 +160,7 @@ class MainWindow(QMainWindow):
             "redo": self.undo.stack.redo,
             "print": self.records.print_record,
             "export_pdf": self.records.export_pdf_dialog,
+            "export_dcf": lambda: self.dcf.export_dialog(self.files.last_folder()),
             "exit": self.close,
             "view_diagram": lambda: self.show_view("diagram"),
             "view_parameters": lambda: self.show_view("parameters"),
@@ -213,7 +216,7 @@ class MainWindow(QMainWindow):
             signal.connect(self._show_file)
         self.files.about_to_replace.connect(self.sync.stop)
         self.files.document_replaced.connect(self.valve.compare_again)
-        for source in (self.files, self.valve, self.records, self.commissioning):
+        for source in (self.files, self.valve, self.records, self.commissioning, self.dcf):
             source.message_posted.connect(lambda text: s.showMessage(text, 8000))
 
     def _on_connection_online_changed(self, online: bool) -> None:
@@ -233,6 +236,7 @@ class MainWindow(QMainWindow):
             "online": not online and not busy,
             "hid_configuration": not online and not busy,  # the valve is chosen before
             "can_bus": not online and not busy,
+            "export_dcf": self.doc.variant.canopen,
             "enable_valve": ready,
             "disable_valve": ready,
             "offline": online,
