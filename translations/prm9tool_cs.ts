@@ -36,13 +36,15 @@ Dokud soubor neopravíte, zná prm9tool pouze dodaná šoupátka.</translation>
         </message>
         <message>
             <source>Internal error</source>
-            <translation type="unfinished"></translation>
+            <translation>Interní chyba</translation>
         </message>
         <message>
             <source>prm9tool failed: {0}
 
 The last action may not have been completed. Save your work under a new name and please report this error with the details below.</source>
-            <translation type="unfinished"></translation>
+            <translation>prm9tool selhal: {0}
+
+Poslední akce možná nebyla dokončena. Uložte svou práci pod novým názvem a nahlaste prosím tuto chybu s podrobnostmi níže.</translation>
         </message>
     </context>
     <context>
@@ -379,11 +381,11 @@ The last action may not have been completed. Save your work under a new name and
         <name>Compare</name>
         <message>
             <source>The type keys differ: {0} is {1}, {2} is {3}.</source>
-            <translation type="unfinished"></translation>
+            <translation>Objednací kódy se liší: {0} je {1}, {2} je {3}.</translation>
         </message>
         <message>
             <source>The valve variants differ: only the parameters both have are compared; {0} parameters that one side lacks are left out.</source>
-            <translation type="unfinished"></translation>
+            <translation>Varianty ventilů se liší: porovnávají se jen parametry, které mají obě strany; vynecháno parametrů, které jedné straně chybí: {0}.</translation>
         </message>
     </context>
     <context>
@@ -516,7 +518,7 @@ The last action may not have been completed. Save your work under a new name and
         </message>
         <message>
             <source>Dither: ±%1 mA peak (DTAMP 100 % = %2 % of CURNORM).</source>
-            <translation type="unfinished"></translation>
+            <translation>Dither: ±%1 mA špička (DTAMP 100 % = %2 % z CURNORM).</translation>
         </message>
         <message>
             <source>coil %1</source>
@@ -882,7 +884,7 @@ The last action may not have been completed. Save your work under a new name and
         </message>
         <message>
             <source>The history database cannot be used.</source>
-            <translation type="unfinished"></translation>
+            <translation>Databázi historie nelze použít.</translation>
         </message>
     </context>
     <context>
@@ -1450,7 +1452,7 @@ The last action may not have been completed. Save your work under a new name and
         </message>
         <message>
             <source>CONNECTING</source>
-            <translation type="unfinished"></translation>
+            <translation>PŘIPOJOVÁNÍ</translation>
         </message>
         <message>
             <source>Mode: {0}</source>
@@ -1458,19 +1460,19 @@ The last action may not have been completed. Save your work under a new name and
         </message>
         <message>
             <source>Connected; the document and the valve are being compared</source>
-            <translation type="unfinished"></translation>
+            <translation>Připojeno; dokument a ventil se porovnávají</translation>
         </message>
         <message>
             <source>Expert</source>
-            <translation type="unfinished">Expertní</translation>
+            <translation>Expertní</translation>
         </message>
         <message>
             <source>Basic</source>
-            <translation type="unfinished">Základní</translation>
+            <translation>Základní</translation>
         </message>
         <message>
             <source>Level: {0}</source>
-            <translation type="unfinished"></translation>
+            <translation>Úroveň: {0}</translation>
         </message>
         <message>
             <source>Status: {0}</source>
@@ -2262,11 +2264,11 @@ Ujistěte se, že pohyb stroje je bezpečný. Spustit generátor?</translation>
         </message>
         <message>
             <source>Measured on step {0} of {1} in {2}.</source>
-            <translation type="unfinished"></translation>
+            <translation>Změřeno na skoku {0} z {1} v {2}.</translation>
         </message>
         <message>
             <source>Window too short: in {0} the response has not come to rest yet. Widen the time window or move the cursors apart.</source>
-            <translation type="unfinished"></translation>
+            <translation>Okno je příliš krátké: v {0} se odezva ještě neustálila. Rozšiřte časové okno nebo posuňte kurzory od sebe.</translation>
         </message>
         <message>
             <source>No step found in {0}.</source>

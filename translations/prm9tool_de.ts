@@ -36,13 +36,15 @@ Bis die Datei korrigiert ist, kennt prm9tool nur die mitgelieferten Schieber.</t
         </message>
         <message>
             <source>Internal error</source>
-            <translation type="unfinished"></translation>
+            <translation>Interner Fehler</translation>
         </message>
         <message>
             <source>prm9tool failed: {0}
 
 The last action may not have been completed. Save your work under a new name and please report this error with the details below.</source>
-            <translation type="unfinished"></translation>
+            <translation>prm9tool ist fehlgeschlagen: {0}
+
+Die letzte Aktion wurde möglicherweise nicht abgeschlossen. Speichern Sie Ihre Arbeit unter einem neuen Namen und melden Sie diesen Fehler bitte mit den Details unten.</translation>
         </message>
     </context>
     <context>
@@ -379,11 +381,11 @@ The last action may not have been completed. Save your work under a new name and
         <name>Compare</name>
         <message>
             <source>The type keys differ: {0} is {1}, {2} is {3}.</source>
-            <translation type="unfinished"></translation>
+            <translation>Die Typschlüssel unterscheiden sich: {0} ist {1}, {2} ist {3}.</translation>
         </message>
         <message>
             <source>The valve variants differ: only the parameters both have are compared; {0} parameters that one side lacks are left out.</source>
-            <translation type="unfinished"></translation>
+            <translation>Die Ventilvarianten unterscheiden sich: Verglichen werden nur die Parameter, die beide haben; {0} Parameter, die einer Seite fehlen, bleiben außen vor.</translation>
         </message>
     </context>
     <context>
@@ -516,7 +518,7 @@ The last action may not have been completed. Save your work under a new name and
         </message>
         <message>
             <source>Dither: ±%1 mA peak (DTAMP 100 % = %2 % of CURNORM).</source>
-            <translation type="unfinished"></translation>
+            <translation>Dither: ±%1 mA Spitze (DTAMP 100 % = %2 % von CURNORM).</translation>
         </message>
         <message>
             <source>coil %1</source>
@@ -882,7 +884,7 @@ The last action may not have been completed. Save your work under a new name and
         </message>
         <message>
             <source>The history database cannot be used.</source>
-            <translation type="unfinished"></translation>
+            <translation>Die Historien-Datenbank kann nicht benutzt werden.</translation>
         </message>
     </context>
     <context>
@@ -1447,7 +1449,7 @@ The last action may not have been completed. Save your work under a new name and
         </message>
         <message>
             <source>CONNECTING</source>
-            <translation type="unfinished"></translation>
+            <translation>VERBINDEN</translation>
         </message>
         <message>
             <source>Mode: {0}</source>
@@ -1455,19 +1457,19 @@ The last action may not have been completed. Save your work under a new name and
         </message>
         <message>
             <source>Connected; the document and the valve are being compared</source>
-            <translation type="unfinished"></translation>
+            <translation>Verbunden; Dokument und Ventil werden verglichen</translation>
         </message>
         <message>
             <source>Expert</source>
-            <translation type="unfinished">Experte</translation>
+            <translation>Experte</translation>
         </message>
         <message>
             <source>Basic</source>
-            <translation type="unfinished">Basis</translation>
+            <translation>Basis</translation>
         </message>
         <message>
             <source>Level: {0}</source>
-            <translation type="unfinished"></translation>
+            <translation>Ebene: {0}</translation>
         </message>
         <message>
             <source>Status: {0}</source>
@@ -2257,11 +2259,11 @@ Stellen Sie sicher, dass die Maschine sich gefahrlos bewegen kann. Generator sta
         </message>
         <message>
             <source>Measured on step {0} of {1} in {2}.</source>
-            <translation type="unfinished"></translation>
+            <translation>Gemessen an Sprung {0} von {1} in {2}.</translation>
         </message>
         <message>
             <source>Window too short: in {0} the response has not come to rest yet. Widen the time window or move the cursors apart.</source>
-            <translation type="unfinished"></translation>
+            <translation>Fenster zu kurz: In {0} ist die Antwort noch nicht zur Ruhe gekommen. Zeitfenster vergrößern oder die Cursor auseinanderschieben.</translation>
         </message>
         <message>
             <source>No step found in {0}.</source>
