@@ -1208,6 +1208,14 @@ Poslední akce možná nebyla dokončena. Uložte svou práci pod novým názvem
             <translation>Vytisknout aktuální záznam parametrů</translation>
         </message>
         <message>
+            <source>Object &amp;dictionary…</source>
+            <translation>Slov&amp;ník objektů…</translation>
+        </message>
+        <message>
+            <source>Read, and at Expert level write, any object of the valve</source>
+            <translation>Číst a na expertní úrovni zapisovat libovolný objekt ventilu</translation>
+        </message>
+        <message>
             <source>Export &amp;DCF…</source>
             <translation>Export &amp;DCF…</translation>
         </message>
@@ -1524,6 +1532,57 @@ Poslední akce možná nebyla dokončena. Uložte svou práci pod novým názvem
         <message>
             <source>About prm9tool</source>
             <translation>O programu prm9tool</translation>
+        </message>
+    </context>
+    <context>
+        <name>ObjectDictionaryDialog</name>
+        <message>
+            <source>Object dictionary</source>
+            <translation>Slovník objektů</translation>
+        </message>
+        <message>
+            <source>Index</source>
+            <translation>Index</translation>
+        </message>
+        <message>
+            <source>Sub</source>
+            <translation>Subindex</translation>
+        </message>
+        <message>
+            <source>Name</source>
+            <translation>Název</translation>
+        </message>
+        <message>
+            <source>Type</source>
+            <translation>Typ</translation>
+        </message>
+        <message>
+            <source>Access</source>
+            <translation>Přístup</translation>
+        </message>
+        <message>
+            <source>Value</source>
+            <translation>Hodnota</translation>
+        </message>
+        <message>
+            <source>Read all</source>
+            <translation>Číst vše</translation>
+        </message>
+        <message>
+            <source>Double-click a writable object to write it.</source>
+            <translation>Zapisovatelný objekt zapíšete dvojklikem.</translation>
+        </message>
+        <message>
+            <source>Reading only: writing needs the Expert level.</source>
+            <translation>Jen čtení: zápis vyžaduje expertní úroveň.</translation>
+        </message>
+        <message>
+            <source>Write {0}</source>
+            <translation>Zapsat {0}</translation>
+        </message>
+        <message>
+            <source>{0} ({1}), raw value:</source>
+            <translation>{0} ({1}), surová hodnota:</translation>
         </message>
     </context>
     <context>

@@ -1205,6 +1205,14 @@ Die letzte Aktion wurde möglicherweise nicht abgeschlossen. Speichern Sie Ihre 
             <translation>Aktuellen Parametersatz drucken</translation>
         </message>
         <message>
+            <source>Object &amp;dictionary…</source>
+            <translation>Objekt&amp;verzeichnis…</translation>
+        </message>
+        <message>
+            <source>Read, and at Expert level write, any object of the valve</source>
+            <translation>Jedes Objekt des Ventils lesen und auf Expertenebene schreiben</translation>
+        </message>
+        <message>
             <source>Export &amp;DCF…</source>
             <translation>D&amp;CF exportieren…</translation>
         </message>
@@ -1520,6 +1528,57 @@ Die letzte Aktion wurde möglicherweise nicht abgeschlossen. Speichern Sie Ihre 
         <message>
             <source>About prm9tool</source>
             <translation>Über prm9tool</translation>
+        </message>
+    </context>
+    <context>
+        <name>ObjectDictionaryDialog</name>
+        <message>
+            <source>Object dictionary</source>
+            <translation>Objektverzeichnis</translation>
+        </message>
+        <message>
+            <source>Index</source>
+            <translation>Index</translation>
+        </message>
+        <message>
+            <source>Sub</source>
+            <translation>Sub</translation>
+        </message>
+        <message>
+            <source>Name</source>
+            <translation>Name</translation>
+        </message>
+        <message>
+            <source>Type</source>
+            <translation>Typ</translation>
+        </message>
+        <message>
+            <source>Access</source>
+            <translation>Zugriff</translation>
+        </message>
+        <message>
+            <source>Value</source>
+            <translation>Wert</translation>
+        </message>
+        <message>
+            <source>Read all</source>
+            <translation>Alle lesen</translation>
+        </message>
+        <message>
+            <source>Double-click a writable object to write it.</source>
+            <translation>Ein beschreibbares Objekt doppelklicken, um es zu schreiben.</translation>
+        </message>
+        <message>
+            <source>Reading only: writing needs the Expert level.</source>
+            <translation>Nur lesen: Schreiben erfordert die Expertenebene.</translation>
+        </message>
+        <message>
+            <source>Write {0}</source>
+            <translation>{0} schreiben</translation>
+        </message>
+        <message>
+            <source>{0} ({1}), raw value:</source>
+            <translation>{0} ({1}), Rohwert:</translation>
         </message>
     </context>
     <context>

@@ -249,8 +249,11 @@ class ValveSession(ABC):
 
     # --- single values --------------------------------------------------------------------
     def read(self, mnemonic: str) -> Value:
-        """Raw value of one parameter."""
-        return self.read_many([mnemonic])[mnemonic]
+        """Raw value of one parameter (NotAvailableError: the valve lacks it on this link)."""
+        values = self.read_many([mnemonic])
+        if mnemonic not in values:
+            raise NotAvailableError([mnemonic])
+        return values[mnemonic]
 
     def write(self, mnemonic: str, raw: Value) -> None:
         """Write one raw value (ValueRangeError before sending, SdoAbortError if refused)."""

@@ -28,6 +28,7 @@ _ACTIONS: tuple[tuple[str, str, object], ...] = (
     ("view_parameters", "parameters", "Ctrl+2"),
     ("view_scope", "scope", "Ctrl+3"),
     ("canopen", "canopen", "Ctrl+4"),
+    ("od_browser", "", None),
     ("level_basic", "", None),
     ("level_expert", "", None),
     ("change_password", "", None),
@@ -104,6 +105,10 @@ def _texts() -> dict[str, _Texts]:
         "print": _Texts(
             translate("MainActions", "&Print…"),
             translate("MainActions", "Print the current parameter record"),
+        ),
+        "od_browser": _Texts(
+            translate("MainActions", "Object &dictionary…"),
+            translate("MainActions", "Read, and at Expert level write, any object of the valve"),
         ),
         "export_dcf": _Texts(
             translate("MainActions", "Export &DCF…"),
@@ -255,7 +260,7 @@ class MainActions(QObject):
             "file": ("new", "open", "recent", "save", "save_as", None, "undo", "redo", None,
                      "print", "export_pdf", "export_dcf", None, "exit"),
             "view": ("view_diagram", "view_parameters", "view_scope", None, "access", "language",
-                     None, "canopen"),
+                     None, "canopen", "od_browser"),
             "valve": ("valve_selection", "valve_status", None, "upload", "download", None,
                       "restore_factory", "restart", None, "enable_valve", "disable_valve"),
             "communication": ("hid_configuration", "can_bus", None, "online", "offline"),

@@ -10,7 +10,7 @@ from collections.abc import Callable
 from pathlib import Path
 from typing import TYPE_CHECKING
 
-from PySide6.QtCore import QByteArray, QEvent, QSettings
+from PySide6.QtCore import QByteArray, QEvent, QSettings, Qt
 from PySide6.QtGui import QCloseEvent, QDragEnterEvent, QDropEvent
 from PySide6.QtWidgets import QMainWindow, QScrollArea, QStackedWidget, QWidget
 
@@ -161,6 +161,7 @@ class MainWindow(QMainWindow):
             "print": self.records.print_record,
             "export_pdf": self.records.export_pdf_dialog,
             "export_dcf": lambda: self.dcf.export_dialog(self.files.last_folder()),
+            "od_browser": self.show_object_dictionary,
             "exit": self.close,
             "view_diagram": lambda: self.show_view("diagram"),
             "view_parameters": lambda: self.show_view("parameters"),
@@ -219,6 +220,16 @@ class MainWindow(QMainWindow):
         for source in (self.files, self.valve, self.records, self.commissioning, self.dcf):
             source.message_posted.connect(lambda text: s.showMessage(text, 8000))
 
+    def show_object_dictionary(self) -> None:
+        """View → Object dictionary (online): every object, read and at Expert level write."""
+        from prm9tool.views.od_browser import ObjectDictionaryDialog
+
+        dialog = ObjectDictionaryDialog(self.connection, self.access, self.doc.variant, self)
+        dialog.setAttribute(Qt.WidgetAttribute.WA_DeleteOnClose)
+        self.connection.online_changed.connect(dialog.close)
+        dialog.show()
+        dialog.read_all()
+
     def _on_connection_online_changed(self, online: bool) -> None:
         if online:
             return
@@ -237,6 +248,7 @@ class MainWindow(QMainWindow):
             "hid_configuration": not online and not busy,  # the valve is chosen before
             "can_bus": not online and not busy,
             "export_dcf": self.doc.variant.canopen,
+            "od_browser": ready,
             "enable_valve": ready,
             "disable_valve": ready,
             "offline": online,
