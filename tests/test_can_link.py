@@ -264,3 +264,35 @@ def test_commissioning_starts_the_node_and_enables_the_device_and_back(tmp_path,
     finally:
         rig.valve.stop()
         rig.close()
+
+
+def test_the_scope_takes_tpdo1_at_its_own_sync_when_the_node_is_operational(tmp_path, data_dir):
+    rig = make_link_rig("pdo-scope", tmp_path)
+    rig.valve.start()
+    try:
+        with open_can(rig) as session:
+            session.write("HEARTBEAT", 20)
+            session.write("CTRLMODE", 2)  # TPDO1 entry 2 = actual position 0x6301
+            session.stream_start(["position_actual"], 200)
+            assert session.stream_source == "sdo"  # pre-operational: no PDOs
+            session.stream_stop()
+            type_before = session.sdo.upload(0x1800, 2)
+            session.nmt(0x01)
+            deadline = time.monotonic() + 2
+            while rig.valve.status().nmt_state != "operational" or (
+                session._shared.node_seen(10).nmt_state != "operational"  # noqa: SLF001
+            ):
+                assert time.monotonic() < deadline
+                time.sleep(0.01)
+            session.stream_start(["position_actual"], 200)
+            assert session.stream_source == "pdo"
+            time.sleep(0.5)
+            block = session.stream_read()
+            rate = session.sample_rate_hz
+            session.stream_stop()
+            assert session.sdo.upload(0x1800, 2) == type_before  # put back
+        assert 60 <= len(block) <= 110  # 200 Hz for 0.5 s, as the SYNCs went out
+        assert 120 <= rate <= 210
+    finally:
+        rig.valve.stop()
+        rig.close()

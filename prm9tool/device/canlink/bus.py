@@ -117,6 +117,7 @@ class CanNetwork:
     seen: dict[int, NodeSeen] = field(default_factory=dict)
     lock: threading.RLock = field(default_factory=threading.RLock)
     error_frames: int = 0
+    sync_owner: object | None = None  # the scope producing SYNC on this bus (one at a time)
 
     def on_frame(self, msg: can.Message) -> None:
         """Every frame on the bus (a python-can listener): heartbeats, boot-ups, EMCY."""

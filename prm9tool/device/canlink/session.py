@@ -27,6 +27,7 @@ import numpy as np
 from prm9tool.catalogue import LOAD_SIGNATURE, SAVE_SIGNATURE, Parameter
 from prm9tool.device.canlink import bus as canbus
 from prm9tool.device.canlink import discovery
+from prm9tool.device.canlink.pdo_scope import NotPdoMappedError, PdoSampler
 from prm9tool.device.canlink.sampler import SdoSampler
 from prm9tool.device.canlink.sdo import MISSING, SdoChannel
 from prm9tool.device.canlink.status import read_status
@@ -78,7 +79,8 @@ class CanopenSession(ValveSession):
         self._snapshot: dict[str, Value] | None = None  # None: no upload is running
         self._touched: list[str] = []  # parameters the running upload wrote
         self._known: dict[str, Value] = {}  # the valve's working values as last read/written
-        self._sampler: SdoSampler | None = None
+        self._sampler: SdoSampler | PdoSampler | None = None
+        self.stream_source = ""  # "pdo" or "sdo" while a stream runs
         self._lost_before = 0
         try:
             self._sdo = self._open_node(timeout_s)
@@ -272,9 +274,16 @@ class CanopenSession(ValveSession):
 
     # --- measuring points -------------------------------------------------------------------
     def stream_start(self, keys: Sequence[str], rate_hz: int = 5000) -> None:
-        """Sample ``keys`` by SDO at ``rate_hz`` (what the bus does not deliver counts as lost)."""
+        """Sample ``keys`` at ``rate_hz``: TPDO1 at a SYNC the tool produces when they are its
+        mapped value and the node is OPERATIONAL, else by SDO (what the bus does not deliver
+        counts as lost; :attr:`stream_source` says which)."""
         self._stop_sampler()
-        self._sampler = SdoSampler(self._sdo.upload, keys, rate_hz)
+        try:
+            self._sampler = PdoSampler(self._shared, self._sdo, keys, rate_hz)
+            self.stream_source = "pdo"
+        except NotPdoMappedError:
+            self._sampler = SdoSampler(self._sdo.upload, keys, rate_hz)
+            self.stream_source = "sdo"
 
     def stream_read(self) -> np.ndarray:
         """Samples taken since the last call: shape (n, len(keys)), raw values."""
@@ -310,6 +319,7 @@ class CanopenSession(ValveSession):
 
     def _stop_sampler(self) -> None:
         sampler, self._sampler = self._sampler, None
+        self.stream_source = ""
         if sampler is not None:
             sampler.stop()
 
