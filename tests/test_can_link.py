@@ -296,3 +296,10 @@ def test_the_scope_takes_tpdo1_at_its_own_sync_when_the_node_is_operational(tmp_
     finally:
         rig.valve.stop()
         rig.close()
+
+
+def test_the_sync_period_keeps_the_scope_under_half_of_a_slow_bus():
+    from prm9tool.device.canlink.pdo_scope import min_period_s
+
+    assert min_period_s(None) == min_period_s(500_000) == 0.001
+    assert min_period_s(125_000) == pytest.approx(0.002112)  # 132 bits / 125 kbit/s / 0.5

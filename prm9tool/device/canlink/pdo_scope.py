@@ -3,7 +3,7 @@
 TPDO1 carries the status word and, as entry 2, the actual position 0x6301 (control mode 2) or
 the process actual value 0x6381 (mode 4). While the node is OPERATIONAL, the scope sets TPDO1 to
 transmission type 1 (sent after every SYNC, table 7-12), produces SYNC at the chosen period
-(down to 1 ms) and takes each TPDO1 as one sample; stopping stops the SYNC and puts the
+(down to 1 ms, or what keeps the scope under half of a slower bus) and takes each TPDO1 as one sample; stopping stops the SYNC and puts the
 transmission type back. A SYNC without its TPDO1 counts as a lost sample, so the rate shown is
 the real one. Other measuring points, or a node that is not OPERATIONAL, are sampled by SDO
 (prm9tool.device.canlink.sampler).
@@ -23,12 +23,22 @@ from prm9tool.device.canlink.sdo import SdoChannel
 from prm9tool.errors import Prm9Error
 
 MIN_PERIOD_S = 0.001
+SYNC_AND_TPDO1_BITS = (47 + 3) + (47 + 32 + 3)  # SYNC (no data) + TPDO1 (4 bytes) on the wire
+MAX_BUS_LOAD = 0.5  # decision: the scope takes at most half the bus, SDO and others need room
 SYNCHRONOUS_EVERY_SYNC = 1  # TPDO transmission type 1 (manual table 7-12)
 ENTRY2_KEYS = {0x6301: "position_actual", 0x6381: "process_actual"}
 
 
 class NotPdoMappedError(Prm9Error):
     """These measuring points are not all in TPDO1, or TPDO1 cannot be used now."""
+
+
+def min_period_s(bitrate: int | None) -> float:
+    """The shortest SYNC period the bus allows: 1 ms, or longer where SYNC + TPDO1 would take
+    more than half of a slow bus (125 kbit/s: 2.1 ms)."""
+    if not bitrate:
+        return MIN_PERIOD_S
+    return max(MIN_PERIOD_S, SYNC_AND_TPDO1_BITS / bitrate / MAX_BUS_LOAD)
 
 
 class PdoSampler:
@@ -49,7 +59,7 @@ class PdoSampler:
         if shared.sync_owner is not None:
             raise NotPdoMappedError("another scope produces the SYNC on this bus")
         self.keys = tuple(keys)
-        self.period_s = max(1.0 / rate_hz, MIN_PERIOD_S)
+        self.period_s = max(1.0 / rate_hz, min_period_s(shared.options.bitrate))
         self.samples = 0
         self._shared, self._sdo, self._cob_id = shared, sdo, cob_id & 0x7FF
         self._rows: list[float] = []
