@@ -28,7 +28,6 @@ from pathlib import Path
 import can
 import canopen
 
-from prm9tool.catalogue import CATALOGUE
 from prm9tool.device.canlink.bus import CanOptions
 from prm9tool.device.canlink.session import CanopenSession
 from prm9tool.device.emulator import EmulatedValve
@@ -50,12 +49,9 @@ class Counter(can.Listener):
 
 
 def _changed(session: CanopenSession) -> dict[str, int | str]:
+    """The whole file set, a few values changed within the catalogue's rules."""
     values = session.download()
-    for param in CATALOGUE.file_parameters(session.variant):
-        if param.index < 0x2000 or param.index in (0x2030, 0x2031):
-            continue
-        allowed = [code for code, _ in param.choices] or [param.raw_min, param.raw_max]
-        values[param.mnemonic] = next(v for v in allowed if v != values[param.mnemonic])
+    values.update(LIMTA=1500, LIMTB=1600, DYNFREQ=120, DTAMP=1000)
     return values
 
 

@@ -35,8 +35,13 @@ def tuned_values() -> dict[str, int | str]:
     variant = TypeKey.parse(E04).variant
     values = {}
     for param in CATALOGUE.file_parameters(variant):
+        default = param.default_for(variant)
+        if "LINX" in param.mnemonic or "LINY" in param.mnemonic:  # curves must keep increasing
+            assert isinstance(default, int)
+            values[param.mnemonic] = default + 100 if default < param.raw_max else default - 100
+            continue
         allowed = [code for code, _ in param.choices] or [param.raw_min, param.raw_max]
-        values[param.mnemonic] = next(v for v in allowed if v != param.default_for(variant))
+        values[param.mnemonic] = next(v for v in allowed if v != default)
     return values
 
 
@@ -44,7 +49,8 @@ def minimum_reports(values: dict[str, int | str]) -> tuple[int, int]:
     """(host→valve, both directions): each phase's payload bytes packed into 64-byte reports.
 
     Payload: write = address (3 bytes) + value per entry, plus a 1-byte acknowledgement;
-    verify = the addresses, then the values; store = a 1-byte command and acknowledgement.
+    verify = the addresses, then the values; store = a 1-byte command and acknowledgement, then
+    the values read back once more (the session's contract: stored = verified stored).
     """
     params = [CATALOGUE[m] for m in values]
     address_bytes = 3 * len(params)
@@ -53,8 +59,9 @@ def minimum_reports(values: dict[str, int | str]) -> tuple[int, int]:
     def reports(n: int) -> int:
         return math.ceil(n / REPORT)
 
-    out = reports(address_bytes + value_bytes) + reports(address_bytes) + reports(1)
-    back = reports(1) + reports(value_bytes) + reports(1)
+    read_back_out, read_back_in = reports(address_bytes), reports(value_bytes)
+    out = reports(address_bytes + value_bytes) + 2 * read_back_out + reports(1)
+    back = reports(1) + 2 * read_back_in + reports(1)
     return out, out + back
 
 

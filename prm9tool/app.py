@@ -85,6 +85,9 @@ def create_window(args: argparse.Namespace) -> MainWindow:
     doc = ParameterDocument(DEFAULT_TYPE_KEY)
     undo = DocumentUndo(doc)
     connection = ValveConnection(opener=_opener(args), lister=_lister, after_open=_joiner(args))
+    from prm9tool.history.recorder import Recorder  # opens its database on first use
+
+    connection.set_recorder(Recorder(getattr(args, "history_db", None)))
     return MainWindow(doc, undo, AccessModel(), connection, settings)
 
 
@@ -259,6 +262,12 @@ def show_internal_error(
 
 def run(args: argparse.Namespace, spools_problem: Prm9Error | None = None) -> int:
     """Start the GUI (``spools_problem``: why spools.json was left out); returns the exit code."""
+    from prm9tool.display import missing_x11_message, missing_x11_packages
+
+    missing = missing_x11_packages()
+    if missing:  # Qt would abort, naming another library than the missing one
+        sys.stderr.write(missing_x11_message(missing))
+        return ExitCode.USAGE
     app = create_application()
     window = create_window(args)
     sys.excepthook = lambda *exc: show_internal_error(window, *exc)

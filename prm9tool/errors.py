@@ -213,6 +213,7 @@ class ExitCode(IntEnum):
     TYPE_MISMATCH = 5
     COMMUNICATION = 6
     HISTORY = 7
+    OUT_OF_LIMITS = 8  # --characterize: a figure outside the acceptance profile's limits
 
 
 class HistoryError(Prm9Error):

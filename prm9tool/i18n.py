@@ -3,16 +3,26 @@
 Installing or removing a QTranslator makes Qt send a ``LanguageChange`` event to every widget,
 so views retranslate themselves in ``changeEvent``. Parameter and signal texts do not go through
 Qt: they come from the catalogue's :class:`~prm9tool.catalogue.Texts` by
-:func:`current_language`. QtCore only.
+:func:`current_language`.
+
+Numbers are shown and typed the way the program language writes them (``9,766 %`` in German
+and Czech): :func:`format_value` and :func:`format_number` are the one formatting rule of every
+view (table, dialogs, diagram, scope, printed record), :func:`parse_value` the one input rule.
+Files (*.prm, CSV, JSON) stay locale-independent: they use ``Parameter.format_display``, which
+always writes a point. QtCore only.
 """
 
 from __future__ import annotations
 
+import re
 from pathlib import Path
 
 from PySide6.QtCore import QCoreApplication, QEvent, QLibraryInfo, QLocale, QTranslator
 
-from prm9tool.catalogue.schema import Texts
+from prm9tool.catalogue.schema import Parameter, Texts
+from prm9tool.catalogue.signals import MEASURED_DECIMALS
+from prm9tool.errors import ValueRangeError
+from prm9tool.messages import DECIMAL_POINT, QT_TRANSLATE_NOOP, Message, localized_number
 
 LANGUAGES: tuple[str, ...] = ("en", "de", "cs")
 LANGUAGE_NAMES: dict[str, str] = {"en": "English", "de": "Deutsch", "cs": "Čeština"}
@@ -34,6 +44,69 @@ def current_language() -> str:
 def text(texts: Texts) -> str:
     """A catalogue text in the current language."""
     return texts.get(current_language())
+
+
+def decimal_point() -> str:
+    """The decimal separator of the program language (``,`` in German and Czech)."""
+    return DECIMAL_POINT.get(current_language(), ".")
+
+
+def format_number(value: float, decimals: int) -> str:
+    """``value`` with ``decimals`` decimals as the program language writes it (no grouping;
+    no ``-0``)."""
+    return localized_number(f"{round(value, decimals) + 0.0:.{decimals}f}", current_language())
+
+
+def format_measured(value: float, unit: str) -> str:
+    """A measured ``value`` in ``unit`` as every view shows it, without the unit: ``24.00`` in
+    English, ``24,00`` in German (decimals per unit: ``catalogue.signals.MEASURED_DECIMALS``)."""
+    return format_number(value, MEASURED_DECIMALS.get(unit, 1))
+
+
+def format_significant(value: float, digits: int) -> str:
+    """``value`` to ``digits`` significant digits (``%g``) as the program language writes it."""
+    return localized_number(f"{value:.{digits}g}", current_language())
+
+
+def format_value(param: Parameter, raw: int | str) -> str:
+    """A parameter value as the views show it: the shortest exact decimal (as in a file), with
+    the decimal separator of the program language; texts are shown as they are."""
+    if param.is_string or isinstance(raw, str):
+        return str(raw)
+    return localized_number(param.format_display(raw), current_language())
+
+
+_AMBIGUOUS = QT_TRANSLATE_NOOP(
+    "Problems",
+    "{0}: {1} is ambiguous (a thousands separator?); write the number without one, "
+    "with '{2}' before the decimals",
+)
+
+
+def ambiguous_number(param: Parameter, text: str) -> Message | None:
+    """Why ``text`` cannot be taken as a number of ``param`` without guessing, or None.
+
+    What reads as a thousands group in the program language (``2.400`` in German, ``2,400``
+    in English: 2400 or 2.4?) is refused rather than guessed.
+    """
+    if param.is_string or param.choices:
+        return None
+    group = "." if decimal_point() == "," else ","
+    if re.fullmatch(rf"\s*[+-]?[1-9][0-9]{{0,2}}(\{group}[0-9]{{3}})+\s*", text):
+        return _AMBIGUOUS(param.mnemonic, repr(text.strip()), decimal_point())
+    return None
+
+
+def parse_value(param: Parameter, text: str) -> int | str:
+    """A value typed in a view, to raw; raises ValueRangeError with the reason.
+
+    Takes the decimal separator of the program language and the point (``0,4`` and ``0.4``),
+    but not a number that could be meant with a thousands separator (:func:`ambiguous_number`).
+    """
+    ambiguous = ambiguous_number(param, text)
+    if ambiguous is not None:
+        raise ValueRangeError(ambiguous)
+    return param.parse_display(text)
 
 
 def system_language() -> str:

@@ -51,11 +51,12 @@ class Rig:
     skipped: list[str] = field(default_factory=list)  # frames barrier() passed over
     log: list[str] = field(default_factory=list)  # every frame sent and received, in order
 
-    def send(self, text: str) -> None:
-        """Send one frame written as ``"60A 2B 17 10 00 E8 03 00 00"``."""
+    def send(self, text: str, fd: bool = False) -> None:
+        """Send one frame written as ``"60A 2B 17 10 00 E8 03 00 00"`` (``fd``: as CAN FD)."""
         can_id, data = frame(text)
         self.log.append(show(can_id, data))
-        self.master.send(can.Message(arbitration_id=can_id, data=data, is_extended_id=False))
+        message = can.Message(arbitration_id=can_id, data=data, is_extended_id=False, is_fd=fd)
+        self.master.send(message)
 
     def receive(self, timeout: float = TIMEOUT_S) -> str | None:
         """The next frame on the bus as text, or None after ``timeout``."""

@@ -15,6 +15,7 @@ class FakeConnection(QObject):
     stream_stopped = Signal()
     failed = Signal(str)
     write_failed = Signal(list)
+    status_changed = Signal(object)
 
     def __init__(self, online: bool = True) -> None:
         super().__init__()

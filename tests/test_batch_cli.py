@@ -547,3 +547,39 @@ def test_whatever_goes_wrong_the_run_ends_with_its_report_and_exit_6(tmp_path, m
     error = written["valves"][0]["error"]
     assert "unexpected error (ValueError: report of 75 bytes exceeds 64)" in error
     assert not (tmp_path / "o.prm").exists()
+
+
+def invalid_stored_set(tmp_path: Path, serial: int) -> Path:
+    """The EEPROM image of an emulated valve that holds SETPLINXA = 10000 (XA above XB), as a
+    real valve with older firmware may (--emulator TYPEKEY:SERIAL reads it from the data dir)."""
+    folder = tmp_path / "data" / "emulator"
+    folder.mkdir(parents=True, exist_ok=True)
+    path = folder / f"{serial}.json"
+    image = {"format": "prm9tool-emulator-eeprom", "version": 1, "type_key": E04}
+    path.write_text(json.dumps({**image, "serial": serial, "values": {"SETPLINXA": 10000}}))
+    return path
+
+
+def test_an_invalid_valve_is_backed_up_as_it_is_and_repaired_by_a_valid_upload(tmp_path):
+    source = tuned_file(tmp_path)
+    image = invalid_stored_set(tmp_path, 77)
+    result = run(tmp_path, "--batch", str(source), "--emulator", f"{E04}:77", "--report", "r.json")
+    assert result.returncode == 0, result.stderr
+    record = report(tmp_path, "r.json")["valves"][0]
+    assert (record["result"], record["backup_valid"]) == ("ok", False)
+    backup = Path(record["backup"]).read_text(encoding="utf-8")
+    assert "# NOT A VALID PARAMETER SET" in backup and "SETPLINXA = 61.035" in backup
+    checked = run(tmp_path, "--check", record["backup"])
+    assert checked.returncode == ExitCode.INVALID_FILE
+    assert "SETPLIN linearization points must increase strictly" in checked.stdout + checked.stderr
+    stored = json.loads(image.read_text(encoding="utf-8"))["values"]
+    assert stored["SETPLINXA"] == read_file(source).values["SETPLINXA"]  # repaired
+
+
+def test_download_of_an_invalid_valve_saves_what_it_holds_marked_invalid(tmp_path):
+    invalid_stored_set(tmp_path, 78)
+    result = run(tmp_path, "--batch", "--download", "out.prm", "--emulator", f"{E04}:78")
+    assert result.returncode == 0, result.stderr
+    assert "warning: the valve's set is not valid" in result.stderr
+    text = (tmp_path / "out.prm").read_text(encoding="utf-8")
+    assert "# NOT A VALID PARAMETER SET" in text and "SETPLINXA = 61.035" in text

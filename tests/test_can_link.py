@@ -43,15 +43,10 @@ def open_can(rig: LinkRig, **kwargs: object) -> CanopenSession:
 
 
 def changed(session: CanopenSession) -> dict[str, int | str]:
-    """The file set with every parameter the valve has moved within its range (no CANopen
-    communication object: those would change the link under the test)."""
+    """The valve's file set with a few values changed within the catalogue's rules (the valve
+    refuses to store a set that breaks them)."""
     values = session.download()
-    for param in CATALOGUE.file_parameters(session.variant):
-        if param.mnemonic not in values or param.index < 0x2000 or param.index in (0x2030, 0x2031):
-            continue
-        current = values[param.mnemonic]
-        allowed = [code for code, _ in param.choices] or [param.raw_min, param.raw_max]
-        values[param.mnemonic] = next(v for v in allowed if v != current)
+    values.update(LIMTA=1500, LIMTB=1600, DYNFREQ=120, DTAMP=1000)
     return values
 
 
@@ -246,24 +241,42 @@ def test_missing_object_abort_codes_are_the_cia_301_ones():
     assert {AbortCode.NO_SUCH_OBJECT, AbortCode.NO_SUCH_SUBINDEX} == MISSING
 
 
-def test_commissioning_starts_the_node_and_enables_the_device_and_back(tmp_path, data_dir):
+def test_commissioning_over_can_as_the_gui_does_it(tmp_path, data_dir):
+    """NMT start and the control word in turn (online/valve_control.py), on the CAN link."""
+    from prm9tool.catalogue.commissioning import (
+        CONTROL_WORD,
+        DISABLE_SEQUENCE,
+        ENABLE_SEQUENCE,
+        NmtCommand,
+    )
+
     rig = make_link_rig("commission", tmp_path)
     rig.valve.start()  # the state machine steps in real time
     try:
         with open_can(rig) as session:
-            session.write("HEARTBEAT", 50)
-            status = session.commission()
-            assert status.device_state == "DEVICE_MODE_ACTIVE"
-            assert rig.valve.status().nmt_state == "operational"
-            status = session.decommission()
-            assert status.device_state == "INIT"
-            deadline = time.monotonic() + 2  # NMT commands have no answer: wait for it
-            while rig.valve.status().nmt_state != "pre-operational":
-                assert time.monotonic() < deadline, rig.valve.status().nmt_state
+            session.write("HEARTBEAT", 20)
+            session.nmt(NmtCommand.START)
+            wait_for(lambda: session.status().nmt_state == "operational")
+            for word in ENABLE_SEQUENCE:
+                session.write(CONTROL_WORD, word)
                 time.sleep(0.01)
+            wait_for(lambda: session.status().device_state == "DEVICE_MODE_ACTIVE")
+            for word in DISABLE_SEQUENCE:
+                session.write(CONTROL_WORD, word)
+                time.sleep(0.01)
+            session.nmt(NmtCommand.PRE_OPERATIONAL)
+            wait_for(lambda: session.status().device_state == "INIT")
+            wait_for(lambda: session.status().nmt_state == "pre-operational")
     finally:
         rig.valve.stop()
         rig.close()
+
+
+def wait_for(condition, timeout_s: float = 2.0) -> None:
+    deadline = time.monotonic() + timeout_s
+    while not condition():
+        assert time.monotonic() < deadline, "condition not met in time"
+        time.sleep(0.01)
 
 
 def test_the_scope_takes_tpdo1_at_its_own_sync_when_the_node_is_operational(tmp_path, data_dir):
@@ -280,7 +293,7 @@ def test_the_scope_takes_tpdo1_at_its_own_sync_when_the_node_is_operational(tmp_
             session.nmt(0x01)
             deadline = time.monotonic() + 2
             while rig.valve.status().nmt_state != "operational" or (
-                session._shared.node_seen(10).nmt_state != "operational"  # noqa: SLF001
+                session._shared.node_seen(10).nmt_state != "operational"
             ):
                 assert time.monotonic() < deadline
                 time.sleep(0.01)

@@ -295,3 +295,23 @@ def test_eds_node_relative_defaults_resolve_to_the_node_id(tmp_path: Path):
         800_000,
         1_000_000,
     }
+
+
+def test_the_master_reads_the_pdo_configuration_without_complaint(
+    master: Master, caplog: pytest.LogCaptureFixture
+):
+    """canopen's ``pdo.read()`` reads every mapping through SDO and looks each entry up in the
+    EDS; an entry pointing to an object the valve lacks is logged as a warning and dropped."""
+    with caplog.at_level("WARNING", logger="canopen"):
+        master.node.tpdo.read()
+        master.node.rpdo.read()
+    assert [r.getMessage() for r in caplog.records if r.name.startswith("canopen")] == []
+    has_sensor = 0x2100 in master.node.object_dictionary
+    for map_index, entries in ((0x1601, 1), (0x1A01, 2)):
+        count = master.node.sdo.upload(map_index, 0)[0]
+        assert count == (entries if has_sensor else 0)  # E02: PDO2 maps nothing
+        for sub in range(1, count + 1):
+            value = struct.unpack("<I", master.node.sdo.upload(map_index, sub))[0]
+            assert value >> 16 in master.node.object_dictionary
+    assert len(master.node.tpdo[2].map) == (2 if has_sensor else 0)
+    assert len(master.node.rpdo[2].map) == (1 if has_sensor else 0)

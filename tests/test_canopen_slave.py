@@ -226,7 +226,7 @@ def test_short_rpdo_is_refused_with_emcy_8210(rig: Rig):
     _start(rig)
     rig.send("20A 0F 00 40")
     rig.barrier()
-    assert rig.drain() == ["08A 10 82 10 00 00 00 00 00"]
+    assert rig.drain() == ["08A 10 82 11 00 00 00 00 00"]  # 0x1001: generic + communication
     assert rig.valve.read(0x6300, 1) == 0
 
 
@@ -463,3 +463,8 @@ def test_pdo_parameters_written_over_usb_take_effect(rig: Rig):
     rig.valve.write(0x1800, 5, 20)  # event timer 20 ms, as the USB firmware would write it
     rig.valve.advance(0.2)
     assert 9 <= len([f for f in rig.drain() if f.startswith("18A")]) <= 10
+
+
+def test_save_of_a_set_the_catalogue_rejects_is_refused(rig: Rig):
+    rig.exchange("60A 2B 00 20 01 10 27 00 00", "58A 60 00 20 01 00 00 00 00")  # SETPLINXA
+    rig.exchange("60A 23 10 10 01 73 61 76 65", "58A 80 10 10 01 20 00 00 08")  # 0x08000020

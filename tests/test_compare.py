@@ -75,7 +75,7 @@ def test_filters_differences_block_and_access_level():
     comparison = Comparison((side(E04, LIMTA=1500, DTAMP=1000), side(E04)), Side.factory(
         TypeKey.parse(E04)))  # fmt: skip
     assert {r.mnemonic for r in comparison.filtered(differences_only=True)} == {"LIMTA", "DTAMP"}
-    only = comparison.filtered(differences_only=True, groups=["current_limit"])
+    only = comparison.filtered(differences_only=True, mnemonics=["LIMTA", "LIMTB"])
     assert [r.mnemonic for r in only] == ["LIMTA"]
     basic = comparison.filtered(access=Access.BASIC)
     assert basic and all(r.parameter.access is Access.BASIC for r in basic)

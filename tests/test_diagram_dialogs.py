@@ -365,6 +365,22 @@ def test_the_dialog_draws_the_dither_the_valve_applies(qtbot, setup):
     assert "±39 mA peak" in dialog.curnorm_label.text()
 
 
+def test_enter_in_a_field_commits_it_and_keeps_the_dialog_open(qtbot, setup):
+    s = setup(E02)
+    dialog = open_dialog(qtbot, s, "current_limit")
+    field = dialog.fields["LIMTA"]
+    field.setFocus()
+    field.selectAll()
+    qtbot.keyClicks(field, "2000")
+    qtbot.keyClick(field, Qt.Key.Key_Return)
+    assert s.doc.value("LIMTA") == 2000 and dialog.isVisible()
+    field.selectAll()
+    qtbot.keyClicks(field, "3000")
+    qtbot.keyClick(field, Qt.Key.Key_Enter)  # the keypad's Enter; a refusal stays shown
+    assert "CURNORM" in dialog.error_label.text() and dialog.isVisible()
+    assert s.doc.value("LIMTA") == 2000
+
+
 def test_a_refusal_in_a_block_dialog_speaks_the_program_language(qtbot, setup):
     from prm9tool import i18n
 

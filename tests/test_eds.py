@@ -7,9 +7,10 @@ import os
 from pathlib import Path
 
 import pytest
+from eds_utils.core.file_io.read_eds import read_eds
 
 from prm9tool.catalogue import CATALOGUE
-from prm9tool.catalogue.typekey import TypeKey
+from prm9tool.catalogue.typekey import TypeKey, all_type_keys
 from prm9tool.cli.main import main
 from prm9tool.files.eds import export_eds, markdown_table, od_objects
 
@@ -112,3 +113,31 @@ def test_docs_object_dictionary_table_is_current():
         DOC.write_text(current, encoding="utf-8")
         return
     assert text == current, "docs/canopen.md is stale: run PRM9_UPDATE_DOCS=1 pytest " + __file__
+
+
+def _one_type_key_per_variant() -> list[str]:
+    keys: dict[object, str] = {}
+    for key in all_type_keys():
+        if key.canopen:
+            keys.setdefault(key.variant, str(key))
+    return sorted(keys.values())
+
+
+@pytest.mark.parametrize("type_key", _one_type_key_per_variant())
+def test_a_third_party_reader_takes_the_eds_and_every_mapping_points_into_it(type_key, tmp_path):
+    """eds-utils reads the file as a naive ``key=value`` reader and looks each PDO mapping up."""
+    path = tmp_path / "valve.eds"
+    path.write_text(export_eds(type_key), encoding="ascii")
+    eds, errors = read_eds(str(path))
+    assert errors == []
+    for line in path.read_text(encoding="ascii").splitlines():
+        assert line.count("=") <= 1, line  # "0 = off" in a name breaks naive readers
+    parsed = _parse(path.read_text(encoding="ascii"))
+    for map_index in (0x1600, 0x1601, 0x1A00, 0x1A01):
+        count = int(parsed[f"{map_index:04X}sub0"]["DefaultValue"], 0)
+        for sub in range(1, count + 1):
+            value = int(parsed[f"{map_index:04X}sub{sub:X}"]["DefaultValue"], 0)
+            index, subindex = value >> 16, (value >> 8) & 0xFF
+            assert index in eds.indexes, f"0x{map_index:04X}/{sub} maps 0x{index:04X}"
+            target = parsed[f"{index:04X}sub{subindex:X}" if subindex else f"{index:04X}"]
+            assert target["PDOMapping"] == "1"

@@ -7,10 +7,12 @@ import re
 
 import pytest
 
-from prm9tool.device.emulator import EmulatedValve
-from prm9tool.errors import FileFormatError
+from prm9tool.catalogue import CATALOGUE
+from prm9tool.device.emulator import EmulatedValve, nvimage
+from prm9tool.errors import FileFormatError, Prm9Error
 
 E02_CA = "PRM9-06.3Z11/30-24E02S02-CA"
+E04 = "PRM9-06.3Z11/30-24E04S02-CA"
 RAMP_UP = (0x6332, 1)
 RAMP_DOWN = (0x6335, 1)
 
@@ -148,3 +150,24 @@ def test_restart_listener_runs_after_every_power_cycle():
     valve.advance(0.5)
     valve.restart()
     assert calls == [0.0]
+
+
+def test_a_failed_image_write_leaves_memory_and_file_on_the_old_set(tmp_path, monkeypatch):
+    path = tmp_path / "nv.json"
+    valve = EmulatedValve(E04, 5, nv_path=path)
+    valve.write(*CATALOGUE["LIMTA"].key, 1500)
+    valve.store()
+    valve.write(*CATALOGUE["LIMTA"].key, 1700)
+
+    def disk_full(*args, **kwargs):
+        raise OSError(28, "No space left on device")
+
+    monkeypatch.setattr(nvimage.os, "fsync", disk_full)
+    with pytest.raises(Prm9Error):
+        valve.store()
+    monkeypatch.undo()
+    valve.restart()  # a restart in the process …
+    in_process = valve.read(*CATALOGUE["LIMTA"].key)
+    later = EmulatedValve(E04, 5, nv_path=path)  # … and a restart of the process agree
+    assert in_process == later.read(*CATALOGUE["LIMTA"].key) == 1500
+    assert not list(tmp_path.glob("*.tmp"))

@@ -1,31 +1,109 @@
-"""Valve → Enable valve / Disable valve: asked first, then the session's commissioning runs in
-the worker and the status bar says the state reached (here over the emulated USB link; the
-CANopen link adds NMT start, tests/test_can_link.py)."""
+"""The README's emulator, driven from the GUI (issue 14 items 10 and 12): a delivered E02S02-CA
+valve waits for a CANopen master, the program says so and enables it; the emulated valve's
+faults, inputs and cable are in the Valve menu, and the LEDs and error list react."""
 
 from __future__ import annotations
 
+import pytest
 from gui_support import E02_CA, emulated, go_online, main_window, record_prompts
 
+from prm9tool.scope import Waveform
 from prm9tool.views import prompts
 
+TIMEOUT = 10_000
+SERIAL = 4301
 
-def test_enable_asks_first_and_enables_then_disable_returns_to_init(qtbot, tmp_path, monkeypatch):
-    answers = record_prompts(monkeypatch)
-    with main_window(qtbot, tmp_path, E02_CA) as window:
-        go_online(qtbot, window, f"{E02_CA}:4301")
-        qtbot.waitUntil(lambda: not window.connection.is_busy, timeout=10_000)
-        emulated(4301).advance(3.0)  # past its power-up
-        answers.answers.append(prompts.Button.No)
-        window.commands["enable_valve"].trigger()
-        assert "the spool then follows its setpoint" in answers.asked[-1]
-        assert emulated(4301).device_state == "INIT"  # refused: nothing sent
-        answers.answers.append(prompts.Button.Yes)
-        with qtbot.waitSignal(window.connection.operation_finished, timeout=10_000):
-            window.commands["enable_valve"].trigger()
-        qtbot.waitUntil(
-            lambda: "DEVICE_MODE_ACTIVE" in window.status.currentMessage(), timeout=5_000
-        )
-        assert emulated(4301).device_state == "DEVICE_MODE_ACTIVE"
-        with qtbot.waitSignal(window.connection.operation_finished, timeout=10_000):
-            window.commands["disable_valve"].trigger()
-        assert emulated(4301).device_state == "INIT"
+
+@pytest.fixture
+def answers(monkeypatch):
+    return record_prompts(monkeypatch)
+
+
+@pytest.fixture
+def window(qtbot, tmp_path, answers):
+    with main_window(qtbot, tmp_path, E02_CA) as win:
+        go_online(qtbot, win, f"{E02_CA}:{SERIAL}")
+        emulated(SERIAL).advance(2.0)  # booted: pre-operational, INIT
+        yield win
+
+
+def test_the_status_bar_and_the_status_window_say_the_valve_waits_for_a_master(qtbot, window):
+    label = window.status.status_label
+    qtbot.waitUntil(lambda: "waiting for a CANopen master" in label.text(), timeout=TIMEOUT)
+    status_window = window.show_status_window()
+    panel = status_window.commissioning
+    assert panel is not None
+    qtbot.waitUntil(lambda: "waits for a CANopen master" in panel.reason.text(), timeout=TIMEOUT)
+    assert "NMT pre-operational, device state INIT" in panel.reason.text()
+    panel.buttons["nmt_start"].click()
+    panel.buttons["enable"].click()
+    qtbot.waitUntil(lambda: "follows its setpoint" in panel.reason.text(), timeout=TIMEOUT)
+    assert status_window.fields["nmt"].text() == "operational"
+    assert label.text() == "Status: ok"
+    panel.buttons["disable"].click()
+    qtbot.waitUntil(lambda: str(emulated(SERIAL).device_state) == "INIT", timeout=TIMEOUT)
+
+
+def test_starting_the_generator_offers_to_enable_and_the_spool_moves(qtbot, window, answers):
+    window.open_scope("position_actual")
+    scope = window.views["scope"]
+    qtbot.waitUntil(lambda: "waits for a CANopen master" in scope.status.text(), timeout=TIMEOUT)
+    answers.answers += [prompts.Button.Yes, prompts.Button.Yes]  # safe to move; enable it
+    scope.generator_panel.waveform.setCurrentIndex(
+        scope.generator_panel.waveform.findData(Waveform.STEP)
+    )
+    scope.generator_panel.period.setValue(0.1)
+    scope.generator_panel.button.click()
+    assert "Enable it now" in answers.asked[1]
+    valve = emulated(SERIAL)
+    qtbot.waitUntil(lambda: str(valve.device_state) == "DEVICE_MODE_ACTIVE", timeout=TIMEOUT)
+    qtbot.waitUntil(lambda: valve.signal("position_actual") > 2000, timeout=TIMEOUT)  # 20 %
+    qtbot.waitUntil(lambda: "does not follow" not in scope.status.text(), timeout=TIMEOUT)
+    scope.stop()
+
+
+def test_an_injected_fault_lights_the_leds_and_fills_the_error_list(qtbot, window):
+    menu = window.emulated_menu
+    qtbot.waitUntil(lambda: menu.isEnabled() and "COIL_A_OPEN" in menu.fault_actions,
+                    timeout=TIMEOUT)  # fmt: skip
+    assert menu.fault_actions["COIL_A_OPEN"].text() == "Coil A disconnected"
+    status_window = window.show_status_window()
+    menu.fault_actions["POSITION_SENSOR_BREAK"].trigger()
+    qtbot.waitUntil(lambda: status_window.errors.count() and "0x7300" in status_window.errors.item(0).text(),
+                    timeout=TIMEOUT)  # fmt: skip
+    assert status_window.leds[0].colour == "red" and status_window.leds[0].pattern == "1Hz"
+    assert "0x7300" in window.status.status_label.text()
+    assert menu.fault_actions["POSITION_SENSOR_BREAK"].isChecked()
+    menu.fault_actions["POSITION_SENSOR_BREAK"].trigger()  # repaired
+    qtbot.waitUntil(lambda: not emulated(SERIAL).injected(), timeout=TIMEOUT)
+
+
+def test_the_inputs_dialog_sets_the_supply_and_the_switches(qtbot, window):
+    dialog = window.emulated_menu.show_dialog()
+    qtbot.waitUntil(dialog.isEnabled, timeout=TIMEOUT)
+    assert dialog.fields["supply_voltage"].value() == 24.0
+    assert dialog.switches["switch_baud"].isVisible()  # a -CA valve has its switches
+    dialog.fields["supply_voltage"].setValue(18.0)
+    dialog.fields["supply_voltage"].editingFinished.emit()
+    qtbot.waitUntil(lambda: emulated(SERIAL).inputs()["supply_voltage"] == 18.0, timeout=TIMEOUT)
+    dialog.switches["switch_node"].setCurrentIndex(0)
+    dialog.switches["switch_node"].activated.emit(0)
+    qtbot.waitUntil(lambda: emulated(SERIAL).switches == (6, 0), timeout=TIMEOUT)
+    qtbot.waitUntil(lambda: "0x3410" in window.status.status_label.text(), timeout=TIMEOUT)
+
+
+def test_pulling_the_cable_takes_the_program_offline_with_a_message(qtbot, window, answers):
+    with qtbot.waitSignal(window.connection.lost, timeout=TIMEOUT):
+        window.emulated_menu.cable_action.trigger()
+    assert not window.connection.is_online
+    assert not window.emulated_menu.isEnabled()
+
+
+def test_a_valve_without_canopen_enables_itself_and_offers_no_commissioning(qtbot, tmp_path):
+    with main_window(qtbot, tmp_path) as window:  # an E02 without -CA: analog only
+        go_online(qtbot, window, "PRM9-06.3Z11/30-24E02S02:4302")
+        emulated(4302).advance(2.0)
+        panel = window.show_status_window().commissioning
+        qtbot.waitUntil(lambda: "follows its setpoint" in panel.reason.text(), timeout=TIMEOUT)
+        assert not any(button.isEnabled() for button in panel.buttons.values())
+        assert window.status.status_label.text() == "Status: ok"

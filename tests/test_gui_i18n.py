@@ -136,3 +136,18 @@ def test_open_dialogs_follow_the_language(window):
 def test_unknown_language_is_refused():
     with pytest.raises(ValueError, match="unknown language 'fr'"):
         i18n.set_language("fr")
+
+
+def test_the_canopen_error_codes_have_texts_in_every_language(qapp):
+    from prm9tool.views.emcy import emcy_text
+
+    device_text = "CANopen RPDO shorter than its mapping: not processed"
+    try:
+        i18n.set_language("de")
+        assert emcy_text(0x8210, device_text) == "CANopen-RPDO zu kurz: nicht verarbeitet"
+        assert emcy_text(0x8100).startswith("CANopen-Kommunikationsfehler")
+        i18n.set_language("cs")
+        assert emcy_text(0x8210, device_text) == "CANopen RPDO je příliš krátké: nezpracováno"
+    finally:
+        i18n.set_language("en")
+    assert emcy_text(0x8210, device_text) == "CANopen RPDO too short: not processed"

@@ -36,16 +36,19 @@ def _menu_texts(window, name):
 def test_menus_and_toolbar_are_those_of_the_manual(window):
     titles = [a.text() for a in window.menuBar().actions()]
     assert titles == ["&File", "&View", "V&alve", "&Communication", "&Help"]
-    assert {"&Open…", "&Save", "Save &As…", "&Print…", "E&xit"} <= set(_menu_texts(window, "file"))
+    assert {"&Open…", "&Save", "Save &As…", "&Print…", "Co&mpare with file…", "E&xit"} <= set(
+        _menu_texts(window, "file")
+    )
     assert _menu_texts(window, "valve") == [
         "Valve &selection…",
         "Valve s&tatus…",
         "&Upload to valve",
         "&Download from valve",
+        "&Compare with valve",  # issue 17
+        "&History…",
         "Restore &factory values…",
         "&Restart valve…",
-        "&Enable valve…",
-        "D&isable valve",
+        "E&mulated valve",  # this program's addition: the emulated valve's inputs and faults
     ]
     assert _menu_texts(window, "communication") == [
         "&HID configuration…",
@@ -136,6 +139,39 @@ def test_password_dialog_accepts_only_the_right_password(window):
     assert dialog.result() == Accepted
 
 
+def _clipped_texts(dialog):
+    from PySide6.QtWidgets import QLabel
+
+    return [
+        label.text()
+        for label in dialog.findChildren(QLabel)
+        if label.isVisible() and label.wordWrap()
+        if label.height() < label.heightForWidth(label.width())
+    ]
+
+
+@pytest.mark.parametrize("language", ["en", "de", "cs"])
+def test_a_wrong_password_is_explained_in_full(qtbot, window, language):
+    from prm9tool import i18n
+
+    i18n.set_language(language)
+    try:
+        dialog = PasswordDialog(window.passwords, window)
+        dialog.show()
+        qtbot.waitExposed(dialog)
+        assert _clipped_texts(dialog) == []
+        dialog.password.setText("guess")
+        dialog._on_accepted()
+        assert dialog.error_label.isVisible() and _clipped_texts(dialog) == []
+        change = ChangePasswordDialog(window.passwords, window)
+        change.show()
+        change.old.setText("guess")
+        change._on_accepted()
+        assert change.error_label.isVisible() and _clipped_texts(change) == []
+    finally:
+        i18n.set_language("en")
+
+
 def test_password_is_changed_and_stored_only_as_a_salted_hash(window):
     dialog = ChangePasswordDialog(window.passwords, window)
     dialog.old.setText(DEFAULT_PASSWORD)
@@ -207,10 +243,19 @@ def test_help_about_and_homepage(window, answers, monkeypatch):
     window.commands["about"].trigger()
     assert "prm9tool" in answers.asked[-1] and "PySide6" in answers.asked[-1]
     opened = []
-    monkeypatch.setattr(main_window_module, "open_homepage", lambda: opened.append(1))
-    window._connect_actions()
+    monkeypatch.setattr(main_window_module, "open_homepage", lambda parent: opened.append(parent))
     window.commands["homepage"].trigger()
-    assert opened
+    assert opened == [window]
+
+
+def test_home_page_without_a_browser_says_so(window, answers, monkeypatch):
+    from PySide6.QtGui import QDesktopServices
+
+    from prm9tool.views.help_dialog import HOMEPAGE
+
+    monkeypatch.setattr(QDesktopServices, "openUrl", lambda _url: False)
+    window.commands["homepage"].trigger()
+    assert "No web browser" in answers.informed[-1] and HOMEPAGE in answers.informed[-1]
 
 
 def test_window_geometry_and_view_are_remembered(qtbot, tmp_path, answers):
@@ -246,7 +291,7 @@ def test_hid_dialog_lists_emulated_valves_and_remembers_the_choice(qtbot, window
 
 def test_every_action_can_be_triggered_offline(window, monkeypatch, answers):
     reject_all_dialogs(monkeypatch)
-    monkeypatch.setattr(main_window_module, "open_homepage", lambda: True)
+    monkeypatch.setattr(main_window_module, "open_homepage", lambda _parent: True)
     window._connect_actions()
     skipped = {"exit", "online"}  # closing is tested above, going online in test_gui_online
     for name, action in window.commands.actions.items():

@@ -6,7 +6,16 @@ from __future__ import annotations
 import threading
 
 import pytest
-from gui_support import E02, E02_CA, E04_CA, go_online, main_window, record_prompts, session_of
+from gui_support import (
+    E02,
+    E02_CA,
+    E04_CA,
+    emulated,
+    go_online,
+    main_window,
+    record_prompts,
+    session_of,
+)
 from PySide6.QtWidgets import QDialog, QLabel, QPushButton
 
 from prm9tool.device.transport.emulator import LinkFaults
@@ -63,7 +72,10 @@ def test_a_new_document_simply_takes_the_valve(qtbot, window, monkeypatch):
     assert not window.doc.modified and not window.undo.stack.canUndo()
     bar = window.status
     assert bar.mode_label.text() == "Mode: ONLINE" and bar.firmware_label.text().startswith("FW: ")
-    qtbot.waitUntil(lambda: bar.status_label.text() == "Status: ok", timeout=TIMEOUT)
+    # a -CA valve as delivered: no error, but it waits for its CANopen master (issue 14)
+    waiting = "Status: waiting for a CANopen master"
+    emulated(4101).advance(2.0)  # booted (the unpaced valve's clock moves with the link)
+    qtbot.waitUntil(lambda: bar.status_label.text() == waiting, timeout=TIMEOUT)
     for name in ("upload", "download", "restart", "offline", "view_scope"):
         assert window.commands[name].isEnabled(), name
     assert not window.commands["online"].isEnabled()
@@ -206,6 +218,20 @@ def test_upload_shows_a_progress_dialog_and_stores(qtbot, window):
     assert done.args[0] == "upload" and done.args[1].stored
     assert window.valve.progress_dialog is None
     assert not window.sync.unstored
+
+
+def test_a_second_identical_upload_says_so(qtbot, window):
+    go_online(qtbot, window)
+    _settled(qtbot, window)
+    window.doc.set_value("DTAMP", 1234)
+    messages = []
+    window.valve.message_posted.connect(messages.append)
+    for _ in range(2):
+        with qtbot.waitSignal(window.connection.operation_finished, timeout=TIMEOUT):
+            window.commands["upload"].trigger()
+    first, second = [m for m in messages if "verified and stored" in m]
+    assert "again" not in first and "already held them" in second
+    assert window.status.currentMessage() == second
 
 
 def test_upload_to_a_valve_of_another_variant_names_both_in_the_program_language(

@@ -94,7 +94,7 @@ def test_search_matches_mnemonic_and_description(view):
 def test_live_values_refresh_the_table(view, doc):
     doc.set_live({"PWR": 23950, "TEMP": 41})
     assert _cell(view, "PWR", Column.VALUE) == "23.95"
-    assert _cell(view, "TEMP", Column.VALUE) == "41"
+    assert _cell(view, "TEMP", Column.VALUE) == "41.0"  # the measured-value rule (format_measured)
 
 
 def test_a_current_limit_shows_the_range_the_valve_accepts(view, doc):
@@ -176,3 +176,14 @@ def test_double_click_opens_one_edit_dialog(view, qtbot):
     view.table.activated.emit(index)  # Enter on the row while the dialog is open
     assert opened == ["LIMTB"]
     dialogs[0].reject()
+
+
+def test_measured_values_follow_one_rule_in_the_list_and_the_diagram(view, doc):
+    from prm9tool.views.diagram import format_signal
+
+    doc.set_live({"PWR": 24000, "TEMP": 25})
+    model = view.model
+    shown = {mn: model.data(model.index(model.row_of(mn), Column.VALUE)) for mn in ("PWR", "TEMP")}
+    assert shown == {"PWR": "24.00", "TEMP": "25.0"}  # was "24" and "25"
+    assert format_signal("supply_voltage", 24000) == "24.00 V"
+    assert format_signal("temperature", 250) == "25.0 °C"

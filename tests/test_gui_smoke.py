@@ -10,6 +10,8 @@ that has not caught up; it is checked to show something (not one flat colour).
 from __future__ import annotations
 
 import os
+import shutil
+import subprocess
 import threading
 import time
 from pathlib import Path
@@ -18,7 +20,7 @@ import gui_support
 import pytest
 from gui_support import record_prompts, session_of
 from PySide6.QtCore import QRect, QSettings, Qt
-from PySide6.QtGui import QImage, QPainter
+from PySide6.QtGui import QImage
 from PySide6.QtWidgets import QLabel, QMessageBox, QWidget
 
 from prm9tool import app, i18n
@@ -166,7 +168,7 @@ def test_e02_valve_window_table_and_dialogs(qtbot, program, shots, monkeypatch):
     window.show_view("parameters")
     window.doc.set_value("DTAMP", 2458 + 819)  # one changed value shows the highlighting
     qtbot.waitUntil(lambda: window.status.file_label.text() == "untitled *", timeout=TIMEOUT)
-    qtbot.waitUntil(lambda: _table_value(window, "PWR") == "24", timeout=TIMEOUT)
+    qtbot.waitUntil(lambda: _table_value(window, "PWR") == "24.00", timeout=TIMEOUT)
     assert _table_value(window, "DTAMP") == "20"
     _save(qtbot, window, shots, "parameter_list_e02")
     _parameter_dialogs(qtbot, window, shots)
@@ -260,7 +262,7 @@ def test_e04_ca_valve_expert_status_canopen_scope_and_languages(qtbot, program, 
     _diagram_live(qtbot, window)
     _save(qtbot, window, shots, "main_window_e04_ca_expert")
     window.show_view("parameters")
-    qtbot.waitUntil(lambda: _table_value(window, "PWR") == "24", timeout=TIMEOUT)
+    qtbot.waitUntil(lambda: _table_value(window, "PWR") == "24.00", timeout=TIMEOUT)
     _save(qtbot, window, shots, "parameter_list_e04_ca_expert")
     status = window.show_status_window()
     leds = status._led_states
@@ -301,15 +303,34 @@ def test_e04_ca_valve_expert_status_canopen_scope_and_languages(qtbot, program, 
     window.show_view("parameters")
     _save(qtbot, window, shots, "parameter_list_czech")
     window.set_language("en")
-    record = window.records.record()
-    record.setTextWidth(900)
-    image = QImage(940, int(record.size().height()) + 40, QImage.Format.Format_ARGB32)
-    image.fill(0xFFFFFFFF)
-    painter = QPainter(image)
-    record.drawContents(painter)
-    painter.end()
-    assert image.save(str(shots / "window_record.png"))
-    _assert_shows_something(shots / "window_record.png")
+    _save_record_page(window, shots)
+
+
+def _save_record_page(window, shots: Path) -> None:
+    """The record's first page as the PDF has it (rendered by poppler's pdftoppm, if there):
+    the picture once drew the record itself, wider than the PDF's page (issue 14, item 3)."""
+    pdf = shots / "record.pdf"
+    assert window.records.export_pdf(pdf)
+    if shutil.which("pdftoppm") is not None:
+        stem = shots / "window_record"
+        subprocess.run(
+            [
+                "pdftoppm",
+                "-r",
+                "110",
+                "-png",
+                "-singlefile",
+                "-f",
+                "1",
+                "-l",
+                "1",
+                str(pdf),
+                str(stem),
+            ],
+            check=True,
+        )
+        _assert_shows_something(shots / "window_record.png")
+    pdf.unlink()
 
 
 def _shows(widget: QWidget, fragment: str) -> bool:

@@ -36,7 +36,7 @@ def test_every_part_changed_in_the_builder_updates_the_type_key(window):
     assert dialog.key_edit.text() == E02
     dialog.config.setCurrentIndex(1)
     assert dialog.key_edit.text() == "PRM9-06.3Z11/30-24E04S02"
-    dialog.size.setCurrentIndex(dialog.size.findData("10"))
+    dialog.nominal_size.setCurrentIndex(dialog.nominal_size.findData("10"))
     assert dialog.key_edit.text() == "PRM9-10.3Z11/30-24E04S02"
     assert dialog.selected_type_key().config is Config.E04
     assert dialog.buttons.button(dialog.buttons.StandardButton.Ok).isEnabled()

@@ -95,3 +95,30 @@ def test_the_warnings_of_a_file_with_thousands_of_unknown_names_are_listed_in_pa
     assert shown[-1] == "… and 801 more problems."
     assert len(shown) == 1 + 200 + 1
     assert len(window.doc.unknown_entries) == 1000
+
+
+def test_opening_another_file_while_one_is_being_read_is_refused(window, tmp_path, monkeypatch):
+    first, second = tmp_path / "first.prm", tmp_path / "second.prm"
+    first.write_bytes(_with_unknown_names(1))
+    second.write_bytes(_with_unknown_names(2))
+    real_read = prmfile.read_file
+    inner: list[bool] = []
+    messages: list[str] = []
+    window.files.message_posted.connect(messages.append)
+
+    tried = threading.Event()
+
+    def read_and_meanwhile_open_another(where):
+        if where == first:  # the user drops the second file while the first is read
+            tried.wait(timeout=3)
+        return real_read(where)
+
+    def open_the_second():
+        inner.append(window.files.open_path(second, ask=False))
+        tried.set()
+
+    QTimer.singleShot(20, open_the_second)
+    monkeypatch.setattr(prmfile, "read_file", read_and_meanwhile_open_another)
+    assert window.files.open_path(first, ask=False)
+    assert inner == [False] and "Still reading first.prm" in messages
+    assert window.doc.path == first

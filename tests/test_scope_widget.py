@@ -100,6 +100,22 @@ def test_preselect_with_three_active_replaces_the_third(scope):
     assert "replaces" in scope.channels.message.text()
 
 
+def test_the_three_points_notice_goes_when_it_no_longer_applies(qtbot, scope):
+    for row in range(4):
+        _check(scope, row)
+    message = scope.channels.message
+    assert message.isVisibleTo(scope)
+    scope.channels.set_selected(["demand"])  # one point now: the refusal is void
+    assert not message.isVisibleTo(scope) and message.text() == ""
+    for key in ("setpoint_raw", "position_setpoint", "position_actual"):
+        scope.preselect(key)
+    assert "replaces" in message.text()
+    scope.channels._message_timer.setInterval(20)  # shortened here: the notice is shown a while
+    scope.channels._message_timer.start()
+    qtbot.waitUntil(lambda: not message.isVisibleTo(scope), timeout=5000)
+    assert scope.channels.selected() == ["demand", "setpoint_raw", "position_actual"]
+
+
 def test_offline_the_scope_cannot_start_and_says_why(qtbot, doc):
     conn = FakeConnection(online=False)
     widget = ScopeWidget(conn, doc)
@@ -275,6 +291,20 @@ def test_csv_export_of_the_whole_recording_and_of_the_visible_window(scope, conn
     rows = scope.export_csv(part, whole=False)
     assert 240 <= rows <= 252
     assert part.read_text(encoding="utf-8").splitlines()[1].startswith("0.05")
+
+
+def test_csv_of_the_whole_recording_goes_on_past_a_pause(scope, conn, tmp_path):
+    scope.preselect("demand")
+    scope.start()
+    conn.samples_received.emit(np.arange(1000).reshape(-1, 1))
+    scope._redraw()
+    scope.controls.pause.click()  # the picture holds; the recording goes on
+    assert scope.display.frozen
+    conn.samples_received.emit(np.arange(1000, 1500).reshape(-1, 1))
+    scope._redraw()
+    whole = tmp_path / "whole.csv"
+    assert scope.export_csv(whole, whole=True) == 1500
+    assert len(scope.display.data()[0]) == 1000  # the held picture is unchanged
 
 
 def test_png_export_writes_an_image(scope, conn, tmp_path):

@@ -8,6 +8,7 @@ import time
 import can
 import pytest
 
+from prm9tool.catalogue.typekey import DEFAULT_EMULATOR_TYPE_KEY
 from prm9tool.device import factory
 from prm9tool.errors import Prm9Error, TypeKeyError
 
@@ -31,7 +32,7 @@ def test_nv_path_follows_the_data_dir(tmp_path, monkeypatch):
 @pytest.mark.parametrize(
     ("spec", "expected"),
     [
-        ("", (E02, 7)),
+        ("", (DEFAULT_EMULATOR_TYPE_KEY, 7)),  # the one default of GUI, CLI and docs
         (E04CA, (E04CA, 7)),
         ("prm9-06.3z11/30-24e04s02-ca:12", (E04CA, 12)),
     ],
@@ -51,7 +52,11 @@ def test_bad_emulator_specs_name_the_problem(spec, message):
 
 def test_specs_without_serial_get_the_lowest_free_ones():
     entries = factory.list_devices([E02, f"{E04CA}:1", ""])
-    assert [(e.type_key, e.serial) for e in entries] == [(E02, 2), (E04CA, 1), (E02, 3)]
+    assert [(e.type_key, e.serial) for e in entries] == [
+        (E02, 2),
+        (E04CA, 1),
+        (DEFAULT_EMULATOR_TYPE_KEY, 3),
+    ]
     assert entries[0].device_id == f"emulator:{E02}:2"
     assert entries[0].description == f"emulated {E02}, serial 2"
     with pytest.raises(TypeKeyError, match="two emulated valves with serial 4"):

@@ -7,6 +7,7 @@ import logging
 import threading
 
 import pytest
+from valve_sets import changed_set
 
 from prm9tool.catalogue import CATALOGUE
 from prm9tool.catalogue.typekey import TypeKey
@@ -21,11 +22,7 @@ E04 = "PRM9-06.3Z11/30-24E04S02-CA"
 
 def new_values(variant) -> dict[str, int | str]:
     """A complete parameter set that differs from the factory defaults in every entry."""
-    values = {}
-    for param in CATALOGUE.file_parameters(variant):
-        allowed = [code for code, _ in param.choices] or [param.raw_min, param.raw_max]
-        values[param.mnemonic] = next(v for v in allowed if v != param.default_for(variant))
-    return values
+    return changed_set(variant)
 
 
 def open_session(valve: EmulatedValve) -> tuple[UsbSession, EmulatorTransport]:

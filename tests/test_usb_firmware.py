@@ -169,3 +169,16 @@ def test_an_answer_that_does_not_fit_a_report_is_a_general_error_not_an_exceptio
     answer = firmware.handle(encode_request(4, Identify()))
     assert decode_response(answer) == (Op.IDENTIFY, 4, AbortReply(AbortCode.GENERAL_ERROR))
     assert firmware.internal_errors == 1
+
+
+def test_a_set_the_catalogue_rejects_is_not_stored(tmp_path):
+    valve = EmulatedValve("PRM9-06.3Z11/30-24E04S02-CA", 77, nv_path=tmp_path / "nv.json")
+    firmware = UsbFirmware.of(valve)
+    # SETPLINXA = 10000: point A above point B (-12288), the curve no longer goes one way
+    assert firmware.handle(frame("03 01 01 00 20 01 01 02 10 27")) == frame("83 01 00 01")
+    # STORE: abort 0x08000020 at 0x1010/1 (cannot be stored)
+    assert firmware.handle(frame("06 02 73 61 76 65")) == frame("86 02 01 20 00 00 08 10 10 01 ff")
+    assert valve.read(0x2000, 1) == 10000  # the working value stays until reloaded
+    valve.restart()
+    assert valve.read(0x2000, 1) == -16384  # the stored set is the one before
+    assert not (tmp_path / "nv.json").exists()

@@ -7,8 +7,8 @@ import time
 
 import pytest
 from usb_fakes import FakeHid
+from valve_sets import changed_set
 
-from prm9tool.catalogue import CATALOGUE
 from prm9tool.device import factory
 from prm9tool.device.emulator import EmulatedValve
 from prm9tool.device.transport.hidapi import HidTransport, UsbFilter, load_hid
@@ -45,11 +45,7 @@ def open_session(timeout_s: float = 0.05) -> UsbSession:
 
 
 def changed(variant) -> dict[str, int | str]:
-    values = {}
-    for param in CATALOGUE.file_parameters(variant):
-        allowed = [code for code, _ in param.choices] or [param.raw_min, param.raw_max]
-        values[param.mnemonic] = next(v for v in allowed if v != param.default_for(variant))
-    return values
+    return changed_set(variant)
 
 
 def test_every_write_carries_report_id_0_and_64_bytes(device):

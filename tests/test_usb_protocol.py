@@ -11,6 +11,8 @@ from pathlib import Path
 import numpy as np
 import pytest
 
+from prm9tool.device.emulator import EmulatedValve, Fault
+from prm9tool.device.emulator.usb_firmware import UsbFirmware
 from prm9tool.device.protocol import (
     AbortReply,
     Done,
@@ -278,3 +280,49 @@ def test_every_opcode_is_documented():
     text = DOC.read_text(encoding="utf-8")
     for op in Op:
         assert f"| `0x{op:02X}` | {op.name} |" in text
+
+
+def documented_exchanges() -> list[list[tuple[str, bytes]]]:
+    """The example blocks of docs/usb-protocol.md that send requests: their frames in order."""
+    blocks = []
+    for block in re.findall(r"```\n(.*?)```", DOC.read_text(encoding="utf-8"), re.S):
+        frames: list[list[str]] = []
+        for line in block.splitlines():
+            if match := FRAME_LINE.match(line):
+                frames.append([match[1], match[2]])
+            elif frames and (match := CONTINUATION.match(line)):
+                frames[-1][1] += f" {match[1]}"
+        if any(direction == "→" for direction, _ in frames):
+            blocks.append([(d, bytes.fromhex(t).ljust(64, b"\x00")) for d, t in frames])
+    return blocks
+
+
+def _status_example_valve(valve: EmulatedValve) -> None:
+    """The situation the STATUS example shows (said in the document above it)."""
+    valve.advance(3.0)
+    valve.set_input("supply_voltage", 17.0)
+    valve.inject(Fault.COIL_A_OPEN)
+    valve.advance(0.5)
+
+
+SITUATIONS = {Op.STATUS: _status_example_valve}
+
+
+@pytest.mark.parametrize("block", documented_exchanges(), ids=lambda b: f"op{b[0][1][0]:02x}")
+def test_the_documented_exchanges_are_what_the_firmware_answers(block):
+    valve = EmulatedValve("PRM9-06.3Z11/30-24E04S02-CA", 4711, "1.0.0")
+    SITUATIONS.get(block[0][1][0], lambda _valve: None)(valve)
+    firmware = UsbFirmware.of(valve)
+    answer = None
+    for direction, report in block:
+        if direction == "→":
+            answer = firmware.handle(report)
+        else:
+            assert answer == report, f"the firmware answers {answer.rstrip(bytes(1)).hex(' ')}"
+            answer = None
+    assert answer is None, "a documented request without its answer"
+
+
+def test_every_request_type_has_a_documented_exchange():
+    sent = {report[0] for block in documented_exchanges() for d, report in block if d == "→"}
+    assert sent >= {int(op) for op in Op}

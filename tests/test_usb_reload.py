@@ -5,6 +5,7 @@ from __future__ import annotations
 import threading
 
 import pytest
+from valve_sets import changed_set
 
 from prm9tool.catalogue import CATALOGUE
 from prm9tool.device.emulator import EmulatedValve
@@ -55,11 +56,7 @@ def file_values(valve: EmulatedValve) -> dict[str, int | str]:
 def new_values() -> dict[str, int | str]:
     """A complete parameter set that differs from the factory defaults in every entry."""
     variant = EmulatedValve(E04, 99).variant
-    values = {}
-    for param in CATALOGUE.file_parameters(variant):
-        allowed = [code for code, _ in param.choices] or [param.raw_min, param.raw_max]
-        values[param.mnemonic] = next(v for v in allowed if v != param.default_for(variant))
-    return values
+    return changed_set(variant)
 
 
 def stored_values() -> dict[str, int | str]:

@@ -6,6 +6,7 @@ import dataclasses
 import threading
 
 import pytest
+from valve_sets import changed_set
 
 from prm9tool.catalogue import CATALOGUE
 from prm9tool.device.emulator import EmulatedValve, Fault
@@ -14,6 +15,8 @@ from prm9tool.device.session import OperationCancelledError
 from prm9tool.device.transport.emulator import EmulatorTransport
 from prm9tool.device.usb_session import UsbSession
 from prm9tool.errors import AbortCode, Prm9Error, SdoAbortError, ValueRangeError
+from prm9tool.files.backup import ensure_backup
+from prm9tool.files.prmfile import read_file
 
 E04 = "PRM9-06.3Z11/30-24E04S02-CA"
 E02 = "PRM9-06.2Z51/15-24E02S02"
@@ -34,13 +37,7 @@ def session(valve):
 
 def changed_values(session: UsbSession) -> dict[str, int | str]:
     """Every file parameter moved one step away from its current value, within its range."""
-    values = session.download()
-    for param in CATALOGUE.file_parameters(session.variant):
-        current = values[param.mnemonic]
-        assert isinstance(current, int)
-        allowed = [code for code, _ in param.choices] or [param.raw_min, param.raw_max]
-        values[param.mnemonic] = next(v for v in allowed if v != current)
-    return values
+    return changed_set(session.variant, session.download())
 
 
 def test_identify_reports_the_valve(session):
@@ -245,3 +242,18 @@ def test_stream_of_a_signal_the_variant_lacks_is_refused(tmp_path):
     with pytest.raises(SdoAbortError) as caught:
         session.stream_start(["process_actual"])
     assert caught.value.code == AbortCode.INVALID_VALUE
+
+
+def test_a_firmware_text_with_cr_lf_cannot_inject_an_entry_into_the_backup():
+    valve = EmulatedValve(E04, 4712, "1.0\r\nLIMTA = 5\nX=1")
+    with UsbSession(EmulatorTransport(valve), "emulator:crlf") as session:
+        path = ensure_backup(session)
+    assert path is not None
+    lines = path.read_text(encoding="utf-8").splitlines()
+    assert [line for line in lines if "LIMTA" in line] == [
+        "firmware = 1.0\\x0d\\x0aLIMTA = 5\\x0aX=1",
+        "LIMTA = 2400  # Solenoid A: maximum current [mA]",
+    ]
+    contents = read_file(path)
+    assert (contents.firmware, contents.unknown) == ("1.0\\x0d\\x0aLIMTA = 5\\x0aX=1", [])
+    assert contents.values["LIMTA"] == 2400

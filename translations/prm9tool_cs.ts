@@ -36,15 +36,102 @@ Dokud soubor neopravíte, zná prm9tool pouze dodaná šoupátka.</translation>
         </message>
         <message>
             <source>Internal error</source>
-            <translation>Interní chyba</translation>
+            <translation>Vnitřní chyba</translation>
         </message>
         <message>
             <source>prm9tool failed: {0}
 
 The last action may not have been completed. Save your work under a new name and please report this error with the details below.</source>
-            <translation>prm9tool selhal: {0}
+            <translation>V prm9tool došlo k chybě: {0}
 
 Poslední akce možná nebyla dokončena. Uložte svou práci pod novým názvem a nahlaste prosím tuto chybu s podrobnostmi níže.</translation>
+        </message>
+    </context>
+    <context>
+        <name>AutotunePage</name>
+        <message>
+            <source>steps of %1 % from 0 %, a few times, about %2 s in all</source>
+            <translation>několik skoků o %1 % od 0 %, celkem asi %2 s</translation>
+        </message>
+        <message>
+            <source>P only with rising gain until the loop oscillates (steps of 5 %, oscillation stopped at ±40 %), about 5 s</source>
+            <translation type="unfinished"></translation>
+        </message>
+        <message>
+            <source>Model: gain %1, lags %2 ms, dead time %3 ms (fit error %4 %).</source>
+            <translation>Model: zesílení %1, zpoždění %2 ms, dopravní zpoždění %3 ms (chyba proložení %4 %).</translation>
+        </message>
+        <message>
+            <source>Critical gain Kkr = %1, period Tkr = %2 ms: K = 0.5·Kkr, Ti = 0.8·Tkr, Td = 0.12·Tkr.</source>
+            <translation>Kritické zesílení Kkr = %1, perioda Tkr = %2 ms: K = 0.5·Kkr, Ti = 0.8·Tkr, Td = 0.12·Tkr.</translation>
+        </message>
+        <message>
+            <source>before (measured)</source>
+            <translation>před (změřeno)</translation>
+        </message>
+        <message>
+            <source>proposed (measured)</source>
+            <translation>návrh (změřeno)</translation>
+        </message>
+        <message>
+            <source>proposed (simulated)</source>
+            <translation>návrh (simulováno)</translation>
+        </message>
+        <message>
+            <source>Step response</source>
+            <translation>Přechodová charakteristika</translation>
+        </message>
+        <message>
+            <source>time [ms]</source>
+            <translation>čas [ms]</translation>
+        </message>
+        <message>
+            <source>no response</source>
+            <translation>bez odezvy</translation>
+        </message>
+        <message>
+            <source>overshoot %1 %, settling %2</source>
+            <translation>překmit %1 %, ustálení %2</translation>
+        </message>
+        <message>
+            <source>Before: %1. Proposed: %2.</source>
+            <translation>Před: %1. Návrh: %2.</translation>
+        </message>
+        <message>
+            <source>Autotune</source>
+            <translation>Autotune</translation>
+        </message>
+        <message>
+            <source>Model-based (never oscillates)</source>
+            <translation>Podle modelu (nikdy nekmitá)</translation>
+        </message>
+        <message>
+            <source>Critical gain (APOSYS 10 rule)</source>
+            <translation>Kritické zesílení (pravidlo APOSYS 10)</translation>
+        </message>
+        <message>
+            <source>Method:</source>
+            <translation>Metoda:</translation>
+        </message>
+        <message>
+            <source>Step amplitude:</source>
+            <translation>Velikost skoku:</translation>
+        </message>
+        <message>
+            <source>Target overshoot at most:</source>
+            <translation>Překmit nejvýše:</translation>
+        </message>
+        <message>
+            <source>Target settling time (±2 %) at most:</source>
+            <translation>Doba ustálení (±2 %) nejvýše:</translation>
+        </message>
+        <message>
+            <source>Run autotune</source>
+            <translation>Spustit autotune</translation>
+        </message>
+        <message>
+            <source>Accept the proposed gains</source>
+            <translation>Převzít navržené konstanty</translation>
         </message>
     </context>
     <context>
@@ -52,6 +139,41 @@ Poslední akce možná nebyla dokončena. Uložte svou práci pod novým názvem
         <message>
             <source>Read only: %1 (View → Access level)</source>
             <translation>Jen pro čtení: %1 (Náhled → Úroveň oprávnění)</translation>
+        </message>
+    </context>
+    <context>
+        <name>BodePage</name>
+        <message>
+            <source>a sine sweep %1 … %2 Hz of ±%3 % around %4 %, %5 s</source>
+            <translation>rozmítaný sinus %1 … %2 Hz o ±%3 % kolem %4 %, %5 s</translation>
+        </message>
+        <message>
+            <source>−3 dB at %1 Hz, −90° at %2 Hz.</source>
+            <translation>−3 dB při %1 Hz, −90° při %2 Hz.</translation>
+        </message>
+        <message>
+            <source>Amplitude:</source>
+            <translation>Amplituda:</translation>
+        </message>
+        <message>
+            <source>Operating point:</source>
+            <translation>Pracovní bod:</translation>
+        </message>
+        <message>
+            <source>From:</source>
+            <translation>Od:</translation>
+        </message>
+        <message>
+            <source>To:</source>
+            <translation>Do:</translation>
+        </message>
+        <message>
+            <source>Duration:</source>
+            <translation>Doba trvání:</translation>
+        </message>
+        <message>
+            <source>Measure the frequency response</source>
+            <translation>Změřit frekvenční charakteristiku</translation>
         </message>
     </context>
     <context>
@@ -363,29 +485,206 @@ Poslední akce možná nebyla dokončena. Uložte svou práci pod novým názvem
         </message>
     </context>
     <context>
-        <name>Commissioning</name>
+        <name>CommissioningPanel</name>
         <message>
-            <source>Enable valve</source>
-            <translation>Uvolnit ventil</translation>
+            <source>Commissioning</source>
+            <translation>Uvedení do provozu</translation>
         </message>
         <message>
-            <source>The valve is started (NMT start) and enabled (control word 08h → 09h → 0Bh → 0Fh): the spool then follows its setpoint and moves the hydraulics. Enable it?</source>
-            <translation>Ventil se spustí (NMT start) a uvolní (řídicí slovo 08h → 09h → 0Bh → 0Fh): šoupátko pak sleduje žádanou hodnotu a pohybuje hydraulikou. Uvolnit?</translation>
+            <source>Enable</source>
+            <translation>Uvolnit</translation>
         </message>
         <message>
-            <source>The valve is in state {0}</source>
-            <translation>Ventil je ve stavu {0}</translation>
+            <source>Control word 0x6040: 08h → 09h → 0Bh → 0Fh (manual §7.6): resets a fault, then DISABLED, HOLD, DEVICE_MODE_ACTIVE. The valve follows its setpoint.</source>
+            <translation>Řídicí slovo 0x6040: 08h → 09h → 0Bh → 0Fh (návod §7.6): resetuje chybu, pak DISABLED, HOLD, DEVICE_MODE_ACTIVE. Ventil sleduje svou žádanou hodnotu.</translation>
+        </message>
+        <message>
+            <source>Disable</source>
+            <translation>Zablokovat</translation>
+        </message>
+        <message>
+            <source>Control word 0x6040: 0Fh → 0Bh → 09h → 08h, back to INIT.</source>
+            <translation>Řídicí slovo 0x6040: 0Fh → 0Bh → 09h → 08h, zpět do INIT.</translation>
+        </message>
+        <message>
+            <source>NMT start</source>
+            <translation>NMT start</translation>
+        </message>
+        <message>
+            <source>NMT start: operational (PDOs run)</source>
+            <translation>NMT start: operational (PDO běží)</translation>
+        </message>
+        <message>
+            <source>NMT pre-operational</source>
+            <translation>NMT pre-operational</translation>
+        </message>
+        <message>
+            <source>NMT enter pre-operational</source>
+            <translation>NMT: přejít do pre-operational</translation>
+        </message>
+        <message>
+            <source>NMT stop</source>
+            <translation>NMT stop</translation>
+        </message>
+        <message>
+            <source>NMT stop: only NMT is answered</source>
+            <translation>NMT stop: odpovídá jen na NMT</translation>
+        </message>
+        <message>
+            <source>The valve follows its setpoint (DEVICE_MODE_ACTIVE).</source>
+            <translation>Ventil sleduje svou žádanou hodnotu (DEVICE_MODE_ACTIVE).</translation>
+        </message>
+        <message>
+            <source>The valve does not follow its setpoint: {0}</source>
+            <translation>Ventil nesleduje svou žádanou hodnotu: {0}</translation>
         </message>
     </context>
     <context>
         <name>Compare</name>
         <message>
             <source>The type keys differ: {0} is {1}, {2} is {3}.</source>
-            <translation>Objednací kódy se liší: {0} je {1}, {2} je {3}.</translation>
+            <translation>Typové klíče se liší: {0} je {1}, {2} je {3}.</translation>
         </message>
         <message>
             <source>The valve variants differ: only the parameters both have are compared; {0} parameters that one side lacks are left out.</source>
-            <translation>Varianty ventilů se liší: porovnávají se jen parametry, které mají obě strany; vynecháno parametrů, které jedné straně chybí: {0}.</translation>
+            <translation>Varianty ventilů se liší: porovnávají se jen parametry, které mají obě strany; {0} parametrů, které jedné straně chybí, je vynecháno.</translation>
+        </message>
+    </context>
+    <context>
+        <name>CompareDialog</name>
+        <message>
+            <source>Compare parameters</source>
+            <translation>Porovnání parametrů</translation>
+        </message>
+        <message>
+            <source>Differences only</source>
+            <translation>Jen rozdíly</translation>
+        </message>
+        <message>
+            <source>All blocks</source>
+            <translation>Všechny bloky</translation>
+        </message>
+        <message>
+            <source>Basic level</source>
+            <translation>Základní úroveň</translation>
+        </message>
+        <message>
+            <source>Expert level</source>
+            <translation>Expertní úroveň</translation>
+        </message>
+        <message>
+            <source>Block:</source>
+            <translation>Blok:</translation>
+        </message>
+        <message>
+            <source>Access level:</source>
+            <translation>Úroveň oprávnění:</translation>
+        </message>
+        <message>
+            <source>Take every shown value from {0}</source>
+            <translation>Převzít všechny zobrazené hodnoty z {0}</translation>
+        </message>
+        <message>
+            <source>Apply: each side takes the chosen values</source>
+            <translation>Použít: každá strana převezme zvolené hodnoty</translation>
+        </message>
+        <message>
+            <source>Apply the chosen values to {0}</source>
+            <translation>Použít zvolené hodnoty na: {0}</translation>
+        </message>
+        <message numerus="yes">
+            <source>%n parameter(s) differ</source>
+            <translation>
+                <numerusform>%n parametr se liší</numerusform>
+                <numerusform>%n parametry se liší</numerusform>
+                <numerusform>%n parametrů se liší</numerusform>
+            </translation>
+        </message>
+        <message numerus="yes">
+            <source>%n parameter(s) only on one side</source>
+            <translation>
+                <numerusform>%n parametr jen na jedné straně</numerusform>
+                <numerusform>%n parametry jen na jedné straně</numerusform>
+                <numerusform>%n parametrů jen na jedné straně</numerusform>
+            </translation>
+        </message>
+        <message numerus="yes">
+            <source>%n shown</source>
+            <translation>
+                <numerusform>%n zobrazen</numerusform>
+                <numerusform>%n zobrazeny</numerusform>
+                <numerusform>%n zobrazeno</numerusform>
+            </translation>
+        </message>
+    </context>
+    <context>
+        <name>CompareTableModel</name>
+        <message>
+            <source>Mnemonic</source>
+            <translation>Zkratka</translation>
+        </message>
+        <message>
+            <source>Description</source>
+            <translation>Popis</translation>
+        </message>
+        <message>
+            <source>One side's valve type has no such parameter; it cannot be chosen.</source>
+            <translation>Typ ventilu jedné strany tento parametr nemá; nelze jej zvolit.</translation>
+        </message>
+    </context>
+    <context>
+        <name>CompareWorkflow</name>
+        <message>
+            <source>Document</source>
+            <translation>Dokument</translation>
+        </message>
+        <message>
+            <source>Valve {0}</source>
+            <translation>Ventil {0}</translation>
+        </message>
+        <message>
+            <source>Factory defaults</source>
+            <translation>Tovární nastavení</translation>
+        </message>
+        <message>
+            <source>Compare with file</source>
+            <translation>Porovnat se souborem</translation>
+        </message>
+        <message>
+            <source>Parameter files (*.prm);;All files (*)</source>
+            <translation>Soubory parametrů (*.prm);;Všechny soubory (*)</translation>
+        </message>
+        <message>
+            <source>{0} cannot be compared.</source>
+            <translation>{0} nelze porovnat.</translation>
+        </message>
+        <message>
+            <source>Values taken from {0}</source>
+            <translation>Hodnoty převzaté z {0}</translation>
+        </message>
+        <message>
+            <source>Compare with valve</source>
+            <translation>Porovnat s ventilem</translation>
+        </message>
+        <message>
+            <source>Go online with the valve first (Communication → Online mode).</source>
+            <translation>Nejprve se připojte k ventilu (Komunikace → Režim online).</translation>
+        </message>
+        <message>
+            <source>Values taken from the valve</source>
+            <translation>Hodnoty převzaté z ventilu</translation>
+        </message>
+        <message>
+            <source>Values chosen from the valve</source>
+            <translation>Hodnoty zvolené z ventilu</translation>
+        </message>
+        <message>
+            <source>Online: document and valve agree</source>
+            <translation>Online: dokument a ventil se shodují</translation>
+        </message>
+        <message>
+            <source>Parameters restored from the history</source>
+            <translation>Parametry obnovené z historie</translation>
         </message>
     </context>
     <context>
@@ -482,6 +781,10 @@ Poslední akce možná nebyla dokončena. Uložte svou práci pod novým názvem
     <context>
         <name>ControllerDialog</name>
         <message>
+            <source>Tuning and autotune…</source>
+            <translation>Ladění a autotune…</translation>
+        </message>
+        <message>
             <source>No simulation available.</source>
             <translation>Simulace není k dispozici.</translation>
         </message>
@@ -518,7 +821,7 @@ Poslední akce možná nebyla dokončena. Uložte svou práci pod novým názvem
         </message>
         <message>
             <source>Dither: ±%1 mA peak (DTAMP 100 % = %2 % of CURNORM).</source>
-            <translation>Dither: ±%1 mA špička (DTAMP 100 % = %2 % z CURNORM).</translation>
+            <translation>Dynamické mazání: ±%1 mA špičkově (DTAMP 100 % = %2 % z CURNORM).</translation>
         </message>
         <message>
             <source>coil %1</source>
@@ -840,6 +1143,119 @@ Poslední akce možná nebyla dokončena. Uložte svou práci pod novým názvem
             <source>ok</source>
             <translation>ok</translation>
         </message>
+        <message>
+            <source>CANopen communication error (heartbeat, SYNC or RPDO missing)</source>
+            <translation>Chyba komunikace CANopen (chybí heartbeat, SYNC nebo RPDO)</translation>
+        </message>
+        <message>
+            <source>CANopen RPDO too short: not processed</source>
+            <translation>CANopen RPDO je příliš krátké: nezpracováno</translation>
+        </message>
+    </context>
+    <context>
+        <name>EmulatedValve</name>
+        <message>
+            <source>Coil A disconnected</source>
+            <translation>Cívka A odpojena</translation>
+        </message>
+        <message>
+            <source>Coil A short circuit (over-current)</source>
+            <translation>Cívka A zkrat (nadproud)</translation>
+        </message>
+        <message>
+            <source>Coil B disconnected</source>
+            <translation>Cívka B odpojena</translation>
+        </message>
+        <message>
+            <source>Coil B short circuit (over-current)</source>
+            <translation>Cívka B zkrat (nadproud)</translation>
+        </message>
+        <message>
+            <source>Setpoint wire break</source>
+            <translation>Přerušený vodič žádané hodnoty</translation>
+        </message>
+        <message>
+            <source>External sensor wire break</source>
+            <translation>Přerušený vodič externího snímače</translation>
+        </message>
+        <message>
+            <source>Spool position sensor (LVDT) wire break</source>
+            <translation>Přerušený vodič snímače polohy šoupátka (LVDT)</translation>
+        </message>
+        <message>
+            <source>Supply too low (17 V)</source>
+            <translation>Napájení příliš nízké (17 V)</translation>
+        </message>
+        <message>
+            <source>Supply too high (31 V)</source>
+            <translation>Napájení příliš vysoké (31 V)</translation>
+        </message>
+        <message>
+            <source>Over-temperature (105 °C)</source>
+            <translation>Přehřátí (105 °C)</translation>
+        </message>
+    </context>
+    <context>
+        <name>EmulatedValveDialog</name>
+        <message>
+            <source>Emulated valve</source>
+            <translation>Emulovaný ventil</translation>
+        </message>
+        <message>
+            <source>Setpoint input [{0}]:</source>
+            <translation>Vstup žádané hodnoty [{0}]:</translation>
+        </message>
+        <message>
+            <source>External sensor input [{0}]:</source>
+            <translation>Vstup externího snímače [{0}]:</translation>
+        </message>
+        <message>
+            <source>Supply voltage [V]:</source>
+            <translation>Napájecí napětí [V]:</translation>
+        </message>
+        <message>
+            <source>Ambient temperature [°C]:</source>
+            <translation>Okolní teplota [°C]:</translation>
+        </message>
+        <message>
+            <source>Interface / bit-rate switch:</source>
+            <translation>Přepínač rozhraní / přenosové rychlosti:</translation>
+        </message>
+        <message>
+            <source>Node-ID switch:</source>
+            <translation>Přepínač ID uzlu:</translation>
+        </message>
+        <message>
+            <source>The valve reads its rotary switches at power-up only: restart it (Valve → Restart valve) for a new position to apply. The setpoint input counts only while the valve takes its setpoint from the analog input (no CANopen, no setpoint generator).</source>
+            <translation>Ventil čte své otočné přepínače jen po zapnutí: restartujte ho (Ventil → Restart ventilu), aby platila nová poloha. Vstup žádané hodnoty platí jen tehdy, když ventil bere žádanou hodnotu z analogového vstupu (bez CANopen, bez generátoru žádané hodnoty).</translation>
+        </message>
+    </context>
+    <context>
+        <name>EmulatedValveMenu</name>
+        <message>
+            <source>E&amp;mulated valve</source>
+            <translation>E&amp;mulovaný ventil</translation>
+        </message>
+        <message>
+            <source>&amp;Inputs and switches…</source>
+            <translation>&amp;Vstupy a přepínače…</translation>
+        </message>
+        <message>
+            <source>Setpoint and sensor signals, supply, temperature and rotary switches</source>
+            <translation>Signály žádané hodnoty a snímače, napájení, teplota a otočné přepínače</translation>
+        </message>
+        <message>
+            <source>&amp;Pull the USB cable</source>
+            <translation>&amp;Vytáhnout kabel USB</translation>
+        </message>
+        <message>
+            <source>The link drops as when a real cable is pulled</source>
+            <translation>Spojení se přeruší jako při vytažení skutečného kabelu</translation>
+        </message>
+        <message>
+            <source>Inject this fault into the emulated valve, or repair it</source>
+            <translation>Vyvolat tuto poruchu v emulovaném ventilu, nebo ji odstranit</translation>
+        </message>
     </context>
     <context>
         <name>EmulatorDialog</name>
@@ -924,6 +1340,10 @@ Poslední akce možná nebyla dokončena. Uložte svou práci pod novým názvem
         <message>
             <source>Opening {0} cancelled</source>
             <translation>Otevírání {0} zrušeno</translation>
+        </message>
+        <message>
+            <source>Still reading {0}</source>
+            <translation>{0} se ještě načítá</translation>
         </message>
         <message>
             <source>Cannot open “{0}”</source>
@@ -1049,6 +1469,17 @@ Poslední akce možná nebyla dokončena. Uložte svou práci pod novým názvem
         </message>
     </context>
     <context>
+        <name>Help</name>
+        <message>
+            <source>Home page</source>
+            <translation>Domovská stránka</translation>
+        </message>
+        <message>
+            <source>No web browser could be started. The home page is {0}</source>
+            <translation>Nepodařilo se spustit webový prohlížeč. Domovská stránka je {0}</translation>
+        </message>
+    </context>
+    <context>
         <name>HelpWindow</name>
         <message>
             <source>prm9tool help</source>
@@ -1116,6 +1547,135 @@ Poslední akce možná nebyla dokončena. Uložte svou práci pod novým názvem
         <message>
             <source>USB</source>
             <translation>USB</translation>
+        </message>
+    </context>
+    <context>
+        <name>HistoryPolicy</name>
+        <message>
+            <source>Upload refused</source>
+            <translation>Načtení do ventilu odmítnuto</translation>
+        </message>
+        <message>
+            <source>The history database cannot record this upload, and the setting says to refuse uploads then. Nothing was written to the valve.</source>
+            <translation>Databáze historie nemůže toto načtení zaznamenat a nastavení v takovém případě načtení odmítá. Do ventilu nebylo nic zapsáno.</translation>
+        </message>
+        <message>
+            <source>History database unavailable</source>
+            <translation>Databáze historie není dostupná</translation>
+        </message>
+        <message>
+            <source>The history database cannot record this upload. Upload anyway and keep the record on this computer until the database is back?
+
+Yes uploads and queues the record; No uploads nothing.</source>
+            <translation>Databáze historie nemůže toto načtení zaznamenat. Přesto načíst do ventilu a záznam uchovat v tomto počítači, dokud nebude databáze opět dostupná?
+
+Ano načte a záznam zařadí do fronty; Ne nenačte nic.</translation>
+        </message>
+    </context>
+    <context>
+        <name>HistoryTableModel</name>
+        <message>
+            <source>No.</source>
+            <translation>Č.</translation>
+        </message>
+        <message>
+            <source>Time (UTC)</source>
+            <translation>Čas (UTC)</translation>
+        </message>
+        <message>
+            <source>Operation</source>
+            <translation>Operace</translation>
+        </message>
+        <message>
+            <source>Outcome</source>
+            <translation>Výsledek</translation>
+        </message>
+        <message>
+            <source>Type key</source>
+            <translation>Typový klíč</translation>
+        </message>
+        <message>
+            <source>Firmware</source>
+            <translation>Firmware</translation>
+        </message>
+        <message>
+            <source>User, station, link</source>
+            <translation>Uživatel, stanice, připojení</translation>
+        </message>
+    </context>
+    <context>
+        <name>HistoryWindow</name>
+        <message>
+            <source>History</source>
+            <translation>Historie</translation>
+        </message>
+        <message>
+            <source>serial number</source>
+            <translation>výrobní číslo</translation>
+        </message>
+        <message>
+            <source>Show</source>
+            <translation>Zobrazit</translation>
+        </message>
+        <message>
+            <source>Valve serial number:</source>
+            <translation>Výrobní číslo ventilu:</translation>
+        </message>
+        <message>
+            <source>Compare the two selected records</source>
+            <translation>Porovnat dva vybrané záznamy</translation>
+        </message>
+        <message>
+            <source>Restore into the document</source>
+            <translation>Obnovit do dokumentu</translation>
+        </message>
+        <message>
+            <source>Restore to the valve</source>
+            <translation>Obnovit do ventilu</translation>
+        </message>
+        <message>
+            <source>Export…</source>
+            <translation>Exportovat…</translation>
+        </message>
+        <message>
+            <source>Type a valve's serial number.</source>
+            <translation>Zadejte výrobní číslo ventilu.</translation>
+        </message>
+        <message>
+            <source>Reading the history…</source>
+            <translation>Čtení historie…</translation>
+        </message>
+        <message numerus="yes">
+            <source>%n record(s) in {0}</source>
+            <translation>
+                <numerusform>%n záznam v {0}</numerusform>
+                <numerusform>%n záznamy v {0}</numerusform>
+                <numerusform>%n záznamů v {0}</numerusform>
+            </translation>
+        </message>
+        <message>
+            <source>This record holds no parameter set (the operation did not change the valve's stored parameters).</source>
+            <translation>Tento záznam neobsahuje sadu parametrů (operace nezměnila uložené parametry ventilu).</translation>
+        </message>
+        <message>
+            <source>No. {0}, {1}</source>
+            <translation>Č. {0}, {1}</translation>
+        </message>
+        <message>
+            <source>Go online with valve {0} first: a record is restored only into the valve it was recorded from.</source>
+            <translation>Nejprve se připojte k ventilu {0}: záznam se obnovuje jen do ventilu, ze kterého pochází.</translation>
+        </message>
+        <message>
+            <source>Export record</source>
+            <translation>Exportovat záznam</translation>
+        </message>
+        <message>
+            <source>Parameter files (*.prm);;CSV tables (*.csv)</source>
+            <translation>Soubory parametrů (*.prm);;Tabulky CSV (*.csv)</translation>
+        </message>
+        <message>
+            <source>The record was not exported.</source>
+            <translation>Záznam nebyl exportován.</translation>
         </message>
     </context>
     <context>
@@ -1340,22 +1900,6 @@ Poslední akce možná nebyla dokončena. Uložte svou práci pod novým názvem
             <translation>Restartování elektroniky ventilu (dovoleno pouze při odpojeném hydraulickém obvodu)</translation>
         </message>
         <message>
-            <source>&amp;Enable valve…</source>
-            <translation>&amp;Uvolnit ventil…</translation>
-        </message>
-        <message>
-            <source>Start the node and enable the device: the spool follows its setpoint (§7.6)</source>
-            <translation>Spustit uzel a uvolnit zařízení: šoupátko sleduje žádanou hodnotu (§7.6)</translation>
-        </message>
-        <message>
-            <source>D&amp;isable valve</source>
-            <translation>&amp;Zablokovat ventil</translation>
-        </message>
-        <message>
-            <source>Back to INIT and NMT pre-operational</source>
-            <translation>Zpět do INIT a NMT pre-operational</translation>
-        </message>
-        <message>
             <source>&amp;HID configuration…</source>
             <translation>&amp;HID konfigurace…</translation>
         </message>
@@ -1446,6 +1990,30 @@ Poslední akce možná nebyla dokončena. Uložte svou práci pod novým názvem
         <message>
             <source>Toolbar</source>
             <translation>Panel nástrojů</translation>
+        </message>
+        <message>
+            <source>Co&amp;mpare with file…</source>
+            <translation>Po&amp;rovnat se souborem…</translation>
+        </message>
+        <message>
+            <source>Compare the parameters with a *.prm file, take chosen values</source>
+            <translation>Porovnat parametry se souborem *.prm, převzít zvolené hodnoty</translation>
+        </message>
+        <message>
+            <source>&amp;Compare with valve</source>
+            <translation>&amp;Porovnat s ventilem</translation>
+        </message>
+        <message>
+            <source>Compare the document with the valve, apply chosen values</source>
+            <translation>Porovnat dokument s ventilem, použít zvolené hodnoty</translation>
+        </message>
+        <message>
+            <source>&amp;History…</source>
+            <translation>&amp;Historie…</translation>
+        </message>
+        <message>
+            <source>Every operation recorded on a valve's parameters</source>
+            <translation>Každá zaznamenaná operace s parametry ventilu</translation>
         </message>
     </context>
     <context>
@@ -1638,6 +2206,10 @@ Poslední akce možná nebyla dokončena. Uložte svou práci pod novým názvem
         <message>
             <source>Valve</source>
             <translation>Ventil</translation>
+        </message>
+        <message>
+            <source>Choose per parameter…</source>
+            <translation>Zvolit po parametrech…</translation>
         </message>
     </context>
     <context>
@@ -1934,6 +2506,10 @@ Poslední akce možná nebyla dokončena. Uložte svou práci pod novým názvem
             <source>cannot save the file: {0}</source>
             <translation>soubor nelze uložit: {0}</translation>
         </message>
+        <message>
+            <source>{0}: {1} is ambiguous (a thousands separator?); write the number without one, with '{2}' before the decimals</source>
+            <translation>{0}: {1} je nejednoznačné (oddělovač tisíců?); napište číslo bez něj, s „{2}“ před desetinnými místy</translation>
+        </message>
     </context>
     <context>
         <name>RampsDialog</name>
@@ -2050,6 +2626,53 @@ Poslední akce možná nebyla dokončena. Uložte svou práci pod novým názvem
         <message>
             <source>PRM9 parameter record {0}</source>
             <translation>Protokol parametrů PRM9 {0}</translation>
+        </message>
+    </context>
+    <context>
+        <name>ReportPage</name>
+        <message>
+            <source>steps of %1 %, a sine sweep of ±%2 % and a triangle over the whole range, about %3 s</source>
+            <translation>skoky %1 %, rozmítaný sinus ±%2 % a trojúhelník přes celý rozsah, asi %3 s</translation>
+        </message>
+        <message>
+            <source>Result: %1</source>
+            <translation>Výsledek: %1</translation>
+        </message>
+        <message>
+            <source>Save the test report</source>
+            <translation>Uložit protokol o zkoušce</translation>
+        </message>
+        <message>
+            <source>Cannot write the report: %1</source>
+            <translation>Protokol nelze zapsat: %1</translation>
+        </message>
+        <message>
+            <source>Acceptance profile (TOML, empty: default):</source>
+            <translation>Přejímací profil (TOML, prázdné: výchozí):</translation>
+        </message>
+        <message>
+            <source>Run the end-of-line test</source>
+            <translation>Spustit výstupní zkoušku</translation>
+        </message>
+        <message>
+            <source>Save PDF and CSV…</source>
+            <translation>Uložit PDF a CSV…</translation>
+        </message>
+        <message>
+            <source>Figure</source>
+            <translation>Ukazatel</translation>
+        </message>
+        <message>
+            <source>Value</source>
+            <translation>Hodnota</translation>
+        </message>
+        <message>
+            <source>Limit</source>
+            <translation>Mez</translation>
+        </message>
+        <message>
+            <source>Result</source>
+            <translation>Výsledek</translation>
         </message>
     </context>
     <context>
@@ -2178,6 +2801,14 @@ Make sure the machine is safe to move. Start the generator?</source>
 Ujistěte se, že pohyb stroje je bezpečný. Spustit generátor?</translation>
         </message>
         <message>
+            <source>The valve does not follow its setpoint: {0}
+
+Enable it now (NMT start, control word 08h → 09h → 0Bh → 0Fh)?</source>
+            <translation type="unfinished">Ventil nesleduje svou žádanou hodnotu: {0}
+
+Uvolnit ho nyní (NMT start, řídicí slovo 08h → 09h → 0Bh → 0Fh)?</translation>
+        </message>
+        <message>
             <source>The link dropped: the setpoint generator has stopped.</source>
             <translation>Spojení se přerušilo: generátor žádané hodnoty se zastavil.</translation>
         </message>
@@ -2218,8 +2849,16 @@ Ujistěte se, že pohyb stroje je bezpečný. Spustit generátor?</translation>
             <translation>Ventil odmítl hodnotu generátoru žádané hodnoty ({0}): generátor se zastavil.</translation>
         </message>
         <message>
+            <source>Tuning and characterization…</source>
+            <translation>Ladění a charakterizace…</translation>
+        </message>
+        <message>
             <source>no reason given</source>
             <translation>bez udání důvodu</translation>
+        </message>
+        <message>
+            <source>The valve does not follow its setpoint: {0}</source>
+            <translation>Ventil nesleduje svou žádanou hodnotu: {0}</translation>
         </message>
     </context>
     <context>
@@ -2280,6 +2919,37 @@ Ujistěte se, že pohyb stroje je bezpečný. Spustit generátor?</translation>
         </message>
     </context>
     <context>
+        <name>StaticPage</name>
+        <message>
+            <source>a triangle over the whole range −100 … 100 %, %1 s</source>
+            <translation>trojúhelník přes celý rozsah −100 … 100 %, %1 s</translation>
+        </message>
+        <message>
+            <source>linearized (preview)</source>
+            <translation>linearizováno (náhled)</translation>
+        </message>
+        <message>
+            <source>Gain %1, hysteresis %2 %, linearity error %3 %, dead band %4 %.</source>
+            <translation>Zesílení %1, hystereze %2 %, chyba linearity %3 %, pásmo necitlivosti %4 %.</translation>
+        </message>
+        <message>
+            <source>Linearization from the static characteristic</source>
+            <translation>Linearizace ze statické charakteristiky</translation>
+        </message>
+        <message>
+            <source>Triangle period:</source>
+            <translation>Perioda trojúhelníku:</translation>
+        </message>
+        <message>
+            <source>Measure the static characteristic</source>
+            <translation>Změřit statickou charakteristiku</translation>
+        </message>
+        <message>
+            <source>Apply the proposed linearization</source>
+            <translation>Použít navrženou linearizaci</translation>
+        </message>
+    </context>
+    <context>
         <name>StepPanel</name>
         <message>
             <source>Step response</source>
@@ -2322,14 +2992,6 @@ Ujistěte se, že pohyb stroje je bezpečný. Spustit generátor?</translation>
             <translation>(žádná: skok na odezvě)</translation>
         </message>
         <message>
-            <source>Measured on step {0} of {1} in {2}.</source>
-            <translation>Změřeno na skoku {0} z {1} v {2}.</translation>
-        </message>
-        <message>
-            <source>Window too short: in {0} the response has not come to rest yet. Widen the time window or move the cursors apart.</source>
-            <translation>Okno je příliš krátké: v {0} se odezva ještě neustálila. Rozšiřte časové okno nebo posuňte kurzory od sebe.</translation>
-        </message>
-        <message>
             <source>No step found in {0}.</source>
             <translation>V {0} nebyl nalezen žádný skok.</translation>
         </message>
@@ -2344,6 +3006,14 @@ Ujistěte se, že pohyb stroje je bezpečný. Spustit generátor?</translation>
         <message>
             <source>No response to the step in {0}: the response stays flat or within its noise.</source>
             <translation>Žádná odezva na skok v {0}: odezva zůstává plochá nebo v rámci šumu.</translation>
+        </message>
+        <message>
+            <source>Measured on step {0} of {1} in {2}.</source>
+            <translation>Změřeno na skoku {0} z {1} v {2}.</translation>
+        </message>
+        <message>
+            <source>Window too short: in {0} the response has not come to rest yet. Widen the time window or move the cursors apart.</source>
+            <translation>Okno je příliš krátké: v {0} se odezva ještě neustálila. Zvětšete časové okno nebo oddalte kurzory.</translation>
         </message>
     </context>
     <context>
@@ -2382,6 +3052,256 @@ Ujistěte se, že pohyb stroje je bezpečný. Spustit generátor?</translation>
         <message>
             <source>output</source>
             <translation>výstup</translation>
+        </message>
+    </context>
+    <context>
+        <name>TuningReport</name>
+        <message>
+            <source>overshoot</source>
+            <translation>překmit</translation>
+        </message>
+        <message>
+            <source>rise time (10–90 %)</source>
+            <translation>doba náběhu (10–90 %)</translation>
+        </message>
+        <message>
+            <source>settling time (±2 %)</source>
+            <translation>doba ustálení (±2 %)</translation>
+        </message>
+        <message>
+            <source>−3 dB frequency</source>
+            <translation>frekvence −3 dB</translation>
+        </message>
+        <message>
+            <source>−90° frequency</source>
+            <translation>frekvence −90°</translation>
+        </message>
+        <message>
+            <source>gain</source>
+            <translation>zesílení</translation>
+        </message>
+        <message>
+            <source>hysteresis</source>
+            <translation>hystereze</translation>
+        </message>
+        <message>
+            <source>linearity error</source>
+            <translation>chyba linearity</translation>
+        </message>
+        <message>
+            <source>dead band</source>
+            <translation>pásmo necitlivosti</translation>
+        </message>
+        <message>
+            <source>step %1 %: %2</source>
+            <translation>skok %1 %: %2</translation>
+        </message>
+        <message>
+            <source>PASS</source>
+            <translation>VYHOVUJE</translation>
+        </message>
+        <message>
+            <source>FAIL</source>
+            <translation>NEVYHOVUJE</translation>
+        </message>
+        <message>
+            <source>not reached</source>
+            <translation>nedosaženo</translation>
+        </message>
+        <message>
+            <source>Step response %1 %</source>
+            <translation>Přechodová charakteristika %1 %</translation>
+        </message>
+        <message>
+            <source>time [ms]</source>
+            <translation>čas [ms]</translation>
+        </message>
+        <message>
+            <source>setpoint</source>
+            <translation>žádaná hodnota</translation>
+        </message>
+        <message>
+            <source>actual</source>
+            <translation>skutečná hodnota</translation>
+        </message>
+        <message>
+            <source>frequency [Hz]</source>
+            <translation>frekvence [Hz]</translation>
+        </message>
+        <message>
+            <source>Frequency response ±%1 %: magnitude</source>
+            <translation>Frekvenční charakteristika ±%1 %: amplituda</translation>
+        </message>
+        <message>
+            <source>magnitude</source>
+            <translation>amplituda</translation>
+        </message>
+        <message>
+            <source>Phase and coherence</source>
+            <translation>Fáze a koherence</translation>
+        </message>
+        <message>
+            <source>phase</source>
+            <translation>fáze</translation>
+        </message>
+        <message>
+            <source>coherence ×100</source>
+            <translation>koherence ×100</translation>
+        </message>
+        <message>
+            <source>Static characteristic</source>
+            <translation>Statická charakteristika</translation>
+        </message>
+        <message>
+            <source>demand [%]</source>
+            <translation>žádaná hodnota [%]</translation>
+        </message>
+        <message>
+            <source>actual [%]</source>
+            <translation>skutečná hodnota [%]</translation>
+        </message>
+        <message>
+            <source>rising</source>
+            <translation>stoupající</translation>
+        </message>
+        <message>
+            <source>falling</source>
+            <translation>klesající</translation>
+        </message>
+        <message>
+            <source>best line</source>
+            <translation>proložená přímka</translation>
+        </message>
+        <message>
+            <source>Type key</source>
+            <translation>Objednací kód</translation>
+        </message>
+        <message>
+            <source>Serial number</source>
+            <translation>Sériové číslo</translation>
+        </message>
+        <message>
+            <source>Firmware</source>
+            <translation>Firmware</translation>
+        </message>
+        <message>
+            <source>Date</source>
+            <translation>Datum</translation>
+        </message>
+        <message>
+            <source>Link</source>
+            <translation>Spojení</translation>
+        </message>
+        <message>
+            <source>Acceptance profile</source>
+            <translation>Přejímací profil</translation>
+        </message>
+        <message>
+            <source>Result</source>
+            <translation>Výsledek</translation>
+        </message>
+        <message>
+            <source>PRM9 test report</source>
+            <translation>Protokol o zkoušce PRM9</translation>
+        </message>
+        <message>
+            <source>Figure</source>
+            <translation>Ukazatel</translation>
+        </message>
+        <message>
+            <source>Value</source>
+            <translation>Hodnota</translation>
+        </message>
+        <message>
+            <source>Limit</source>
+            <translation>Mez</translation>
+        </message>
+        <message>
+            <source>Parameter set (raw values)</source>
+            <translation>Sada parametrů (surové hodnoty)</translation>
+        </message>
+    </context>
+    <context>
+        <name>TuningWindow</name>
+        <message>
+            <source>Running: %1</source>
+            <translation>Probíhá: %1</translation>
+        </message>
+        <message>
+            <source>This test moves the spool (and on E04 the actuator): %1.
+
+Make sure the hydraulics are safe for it. Stop ends it at any time and puts the valve back as it was. Start the test?</source>
+            <translation>Tento test pohybuje šoupátkem (a u E04 pohonem): %1.
+
+Zajistěte, aby to hydraulika bezpečně snesla. Tlačítko Stop test kdykoli ukončí a vrátí ventil do původního stavu. Spustit test?</translation>
+        </message>
+        <message>
+            <source>Tuning</source>
+            <translation>Ladění</translation>
+        </message>
+        <message>
+            <source>Stopping…</source>
+            <translation>Přerušuje se…</translation>
+        </message>
+        <message>
+            <source>Done.</source>
+            <translation>Hotovo.</translation>
+        </message>
+        <message>
+            <source>Stopped: %1</source>
+            <translation>Přerušeno: %1</translation>
+        </message>
+        <message>
+            <source>Accepted: %1</source>
+            <translation>Převzato: %1</translation>
+        </message>
+        <message>
+            <source>Tuning and characterization</source>
+            <translation>Ladění a charakterizace</translation>
+        </message>
+        <message>
+            <source>Position controller (spool)</source>
+            <translation>Regulátor polohy (šoupátko)</translation>
+        </message>
+        <message>
+            <source>Process controller (E04)</source>
+            <translation>Regulátor procesní veličiny (E04)</translation>
+        </message>
+        <message>
+            <source>Loop:</source>
+            <translation>Regulační smyčka:</translation>
+        </message>
+        <message>
+            <source>Stop</source>
+            <translation>Stop</translation>
+        </message>
+        <message>
+            <source>Offline: the tests run on an emulated valve with the document's values.</source>
+            <translation>Offline: testy běží na emulovaném ventilu s hodnotami dokumentu.</translation>
+        </message>
+        <message>
+            <source>Online: the tests move the connected valve.</source>
+            <translation>Online: testy pohybují připojeným ventilem.</translation>
+        </message>
+        <message>
+            <source>Autotune</source>
+            <translation>Autotune</translation>
+        </message>
+        <message>
+            <source>Frequency response</source>
+            <translation>Frekvenční charakteristika</translation>
+        </message>
+        <message>
+            <source>Static characteristic</source>
+            <translation>Statická charakteristika</translation>
+        </message>
+        <message>
+            <source>Test report</source>
+            <translation>Protokol o zkoušce</translation>
+        </message>
+        <message>
+            <source>Ready.</source>
+            <translation>Připraveno.</translation>
         </message>
     </context>
     <context>
@@ -2512,6 +3432,65 @@ Ujistěte se, že pohyb stroje je bezpečný. Spustit generátor?</translation>
         <message>
             <source>Not connected to a valve.</source>
             <translation>Není připojen žádný ventil.</translation>
+        </message>
+    </context>
+    <context>
+        <name>ValveControl</name>
+        <message>
+            <source>no valve is connected.</source>
+            <translation>není připojen žádný ventil.</translation>
+        </message>
+        <message>
+            <source>the valve is starting up (about 2 s).</source>
+            <translation>ventil se spouští (asi 2 s).</translation>
+        </message>
+        <message>
+            <source>an error stops it (device state {0}); Valve → Valve status lists the error and resets it with Enable once the cause is gone.</source>
+            <translation>zastavuje ho chyba (stav zařízení {0}); Ventil → Stav ventilu chybu uvádí a tlačítkem Uvolnit ji po odstranění příčiny resetuje.</translation>
+        </message>
+        <message>
+            <source>it waits for a CANopen master (NMT {0}, device state {1}). Enable it under Valve → Valve status (control word 08h → 09h → 0Bh → 0Fh).</source>
+            <translation>čeká na CANopen master (NMT {0}, stav zařízení {1}). Uvolněte ho v nabídce Ventil → Stav ventilu (řídicí slovo 08h → 09h → 0Bh → 0Fh).</translation>
+        </message>
+        <message>
+            <source>its CANopen master stopped it (NMT stopped). Start it under Valve → Valve status.</source>
+            <translation>jeho CANopen master ho zastavil (NMT zastaveno). Spusťte ho v nabídce Ventil → Stav ventilu.</translation>
+        </message>
+        <message>
+            <source>it is not enabled (device state {0}). Enable it under Valve → Valve status.</source>
+            <translation>není uvolněn (stav zařízení {0}). Uvolněte ho v nabídce Ventil → Stav ventilu.</translation>
+        </message>
+        <message>
+            <source>it holds its position (device state HOLD). Enable it under Valve → Valve status.</source>
+            <translation>drží svou polohu (stav zařízení HOLD). Uvolněte ho v nabídce Ventil → Stav ventilu.</translation>
+        </message>
+        <message>
+            <source>offline</source>
+            <translation>offline</translation>
+        </message>
+        <message>
+            <source>starting up</source>
+            <translation>spouští se</translation>
+        </message>
+        <message>
+            <source>fault</source>
+            <translation>chyba</translation>
+        </message>
+        <message>
+            <source>waiting for a CANopen master</source>
+            <translation>čeká na CANopen master</translation>
+        </message>
+        <message>
+            <source>NMT stopped</source>
+            <translation>NMT zastaveno</translation>
+        </message>
+        <message>
+            <source>not enabled</source>
+            <translation>neuvolněn</translation>
+        </message>
+        <message>
+            <source>hold</source>
+            <translation>držení</translation>
         </message>
     </context>
     <context>
@@ -2794,6 +3773,22 @@ Ujistěte se, že pohyb stroje je bezpečný. Spustit generátor?</translation>
             <source>Set every parameter of the document to the factory default?</source>
             <translation>Nastavit všechny parametry dokumentu na tovární hodnoty?</translation>
         </message>
+        <message numerus="yes">
+            <source>%n parameter(s) written, verified and stored at {0}</source>
+            <translation>
+                <numerusform>%n parametr zapsán, ověřen a uložen v {0}</numerusform>
+                <numerusform>%n parametry zapsány, ověřeny a uloženy v {0}</numerusform>
+                <numerusform>%n parametrů zapsáno, ověřeno a uloženo v {0}</numerusform>
+            </translation>
+        </message>
+        <message numerus="yes">
+            <source>%n parameter(s) written, verified and stored again at {0}: the valve already held them</source>
+            <translation>
+                <numerusform>%n parametr znovu zapsán, ověřen a uložen v {0}: ventil jej již obsahoval</numerusform>
+                <numerusform>%n parametry znovu zapsány, ověřeny a uloženy v {0}: ventil je již obsahoval</numerusform>
+                <numerusform>%n parametrů znovu zapsáno, ověřeno a uloženo v {0}: ventil je již obsahoval</numerusform>
+            </translation>
+        </message>
         <message>
             <source>Restore factory values</source>
             <translation>Obnovit tovární nastavení</translation>
@@ -2833,14 +3828,6 @@ Ujistěte se, že pohyb stroje je bezpečný. Spustit generátor?</translation>
         <message>
             <source>Factory values restored; the valve's previous parameters are in {0}</source>
             <translation>Tovární nastavení obnoveno; dosavadní parametry ventilu jsou v {0}</translation>
-        </message>
-        <message numerus="yes">
-            <source>%n parameter(s) written, verified and stored</source>
-            <translation>
-                <numerusform>%n parametr zapsán, ověřen a uložen</numerusform>
-                <numerusform>%n parametry zapsány, ověřeny a uloženy</numerusform>
-                <numerusform>%n parametrů zapsáno, ověřeno a uloženo</numerusform>
-            </translation>
         </message>
         <message>
             <source>Upload failed</source>

@@ -42,9 +42,96 @@ Bis die Datei korrigiert ist, kennt prm9tool nur die mitgelieferten Schieber.</t
             <source>prm9tool failed: {0}
 
 The last action may not have been completed. Save your work under a new name and please report this error with the details below.</source>
-            <translation>prm9tool ist fehlgeschlagen: {0}
+            <translation>prm9tool ist auf einen Fehler gestoßen: {0}
 
-Die letzte Aktion wurde möglicherweise nicht abgeschlossen. Speichern Sie Ihre Arbeit unter einem neuen Namen und melden Sie diesen Fehler bitte mit den Details unten.</translation>
+Die letzte Aktion wurde womöglich nicht vollständig ausgeführt. Speichern Sie Ihre Arbeit unter einem neuen Namen und melden Sie diesen Fehler bitte mit den Details unten.</translation>
+        </message>
+    </context>
+    <context>
+        <name>AutotunePage</name>
+        <message>
+            <source>steps of %1 % from 0 %, a few times, about %2 s in all</source>
+            <translation>einige Sprünge von %1 % ab 0 %, insgesamt etwa %2 s</translation>
+        </message>
+        <message>
+            <source>P only with rising gain until the loop oscillates (steps of 5 %, oscillation stopped at ±40 %), about 5 s</source>
+            <translation type="unfinished"></translation>
+        </message>
+        <message>
+            <source>Model: gain %1, lags %2 ms, dead time %3 ms (fit error %4 %).</source>
+            <translation>Modell: Verstärkung %1, Verzögerungen %2 ms, Totzeit %3 ms (Anpassungsfehler %4 %).</translation>
+        </message>
+        <message>
+            <source>Critical gain Kkr = %1, period Tkr = %2 ms: K = 0.5·Kkr, Ti = 0.8·Tkr, Td = 0.12·Tkr.</source>
+            <translation>Kritische Verstärkung Kkr = %1, Periode Tkr = %2 ms: K = 0.5·Kkr, Ti = 0.8·Tkr, Td = 0.12·Tkr.</translation>
+        </message>
+        <message>
+            <source>before (measured)</source>
+            <translation>vorher (gemessen)</translation>
+        </message>
+        <message>
+            <source>proposed (measured)</source>
+            <translation>Vorschlag (gemessen)</translation>
+        </message>
+        <message>
+            <source>proposed (simulated)</source>
+            <translation>Vorschlag (simuliert)</translation>
+        </message>
+        <message>
+            <source>Step response</source>
+            <translation>Sprungantwort</translation>
+        </message>
+        <message>
+            <source>time [ms]</source>
+            <translation>Zeit [ms]</translation>
+        </message>
+        <message>
+            <source>no response</source>
+            <translation>keine Antwort</translation>
+        </message>
+        <message>
+            <source>overshoot %1 %, settling %2</source>
+            <translation>Überschwingen %1 %, Ausregelzeit %2</translation>
+        </message>
+        <message>
+            <source>Before: %1. Proposed: %2.</source>
+            <translation>Vorher: %1. Vorschlag: %2.</translation>
+        </message>
+        <message>
+            <source>Autotune</source>
+            <translation>Autotune</translation>
+        </message>
+        <message>
+            <source>Model-based (never oscillates)</source>
+            <translation>Modellbasiert (schwingt nie)</translation>
+        </message>
+        <message>
+            <source>Critical gain (APOSYS 10 rule)</source>
+            <translation>Kritische Verstärkung (Regel des APOSYS 10)</translation>
+        </message>
+        <message>
+            <source>Method:</source>
+            <translation>Verfahren:</translation>
+        </message>
+        <message>
+            <source>Step amplitude:</source>
+            <translation>Sprunghöhe:</translation>
+        </message>
+        <message>
+            <source>Target overshoot at most:</source>
+            <translation>Überschwingen höchstens:</translation>
+        </message>
+        <message>
+            <source>Target settling time (±2 %) at most:</source>
+            <translation>Ausregelzeit (±2 %) höchstens:</translation>
+        </message>
+        <message>
+            <source>Run autotune</source>
+            <translation>Autotune starten</translation>
+        </message>
+        <message>
+            <source>Accept the proposed gains</source>
+            <translation>Vorgeschlagene Verstärkungen übernehmen</translation>
         </message>
     </context>
     <context>
@@ -52,6 +139,41 @@ Die letzte Aktion wurde möglicherweise nicht abgeschlossen. Speichern Sie Ihre 
         <message>
             <source>Read only: %1 (View → Access level)</source>
             <translation>Nur lesbar: %1 (Ansicht → Berechtigungsstufe)</translation>
+        </message>
+    </context>
+    <context>
+        <name>BodePage</name>
+        <message>
+            <source>a sine sweep %1 … %2 Hz of ±%3 % around %4 %, %5 s</source>
+            <translation>ein Sinus-Sweep %1 … %2 Hz von ±%3 % um %4 %, %5 s</translation>
+        </message>
+        <message>
+            <source>−3 dB at %1 Hz, −90° at %2 Hz.</source>
+            <translation>−3 dB bei %1 Hz, −90° bei %2 Hz.</translation>
+        </message>
+        <message>
+            <source>Amplitude:</source>
+            <translation>Amplitude:</translation>
+        </message>
+        <message>
+            <source>Operating point:</source>
+            <translation>Arbeitspunkt:</translation>
+        </message>
+        <message>
+            <source>From:</source>
+            <translation>Von:</translation>
+        </message>
+        <message>
+            <source>To:</source>
+            <translation>Bis:</translation>
+        </message>
+        <message>
+            <source>Duration:</source>
+            <translation>Dauer:</translation>
+        </message>
+        <message>
+            <source>Measure the frequency response</source>
+            <translation>Frequenzgang messen</translation>
         </message>
     </context>
     <context>
@@ -363,29 +485,203 @@ Die letzte Aktion wurde möglicherweise nicht abgeschlossen. Speichern Sie Ihre 
         </message>
     </context>
     <context>
-        <name>Commissioning</name>
+        <name>CommissioningPanel</name>
         <message>
-            <source>Enable valve</source>
-            <translation>Ventil freigeben</translation>
+            <source>Commissioning</source>
+            <translation>Inbetriebnahme</translation>
         </message>
         <message>
-            <source>The valve is started (NMT start) and enabled (control word 08h → 09h → 0Bh → 0Fh): the spool then follows its setpoint and moves the hydraulics. Enable it?</source>
-            <translation>Das Ventil wird gestartet (NMT-Start) und freigegeben (Steuerwort 08h → 09h → 0Bh → 0Fh): Der Schieber folgt dann seinem Sollwert und bewegt die Hydraulik. Freigeben?</translation>
+            <source>Enable</source>
+            <translation>Freigeben</translation>
         </message>
         <message>
-            <source>The valve is in state {0}</source>
-            <translation>Das Ventil ist im Zustand {0}</translation>
+            <source>Control word 0x6040: 08h → 09h → 0Bh → 0Fh (manual §7.6): resets a fault, then DISABLED, HOLD, DEVICE_MODE_ACTIVE. The valve follows its setpoint.</source>
+            <translation>Steuerwort 0x6040: 08h → 09h → 0Bh → 0Fh (Handbuch §7.6): setzt einen Fehler zurück, dann DISABLED, HOLD, DEVICE_MODE_ACTIVE. Das Ventil folgt seinem Sollwert.</translation>
+        </message>
+        <message>
+            <source>Disable</source>
+            <translation>Sperren</translation>
+        </message>
+        <message>
+            <source>Control word 0x6040: 0Fh → 0Bh → 09h → 08h, back to INIT.</source>
+            <translation>Steuerwort 0x6040: 0Fh → 0Bh → 09h → 08h, zurück nach INIT.</translation>
+        </message>
+        <message>
+            <source>NMT start</source>
+            <translation>NMT Start</translation>
+        </message>
+        <message>
+            <source>NMT start: operational (PDOs run)</source>
+            <translation>NMT Start: operational (PDOs laufen)</translation>
+        </message>
+        <message>
+            <source>NMT pre-operational</source>
+            <translation>NMT Pre-operational</translation>
+        </message>
+        <message>
+            <source>NMT enter pre-operational</source>
+            <translation>NMT: nach Pre-operational</translation>
+        </message>
+        <message>
+            <source>NMT stop</source>
+            <translation>NMT Stopp</translation>
+        </message>
+        <message>
+            <source>NMT stop: only NMT is answered</source>
+            <translation>NMT Stopp: nur NMT wird beantwortet</translation>
+        </message>
+        <message>
+            <source>The valve follows its setpoint (DEVICE_MODE_ACTIVE).</source>
+            <translation>Das Ventil folgt seinem Sollwert (DEVICE_MODE_ACTIVE).</translation>
+        </message>
+        <message>
+            <source>The valve does not follow its setpoint: {0}</source>
+            <translation>Das Ventil folgt seinem Sollwert nicht: {0}</translation>
         </message>
     </context>
     <context>
         <name>Compare</name>
         <message>
             <source>The type keys differ: {0} is {1}, {2} is {3}.</source>
-            <translation>Die Typschlüssel unterscheiden sich: {0} ist {1}, {2} ist {3}.</translation>
+            <translation>Die Typenschlüssel unterscheiden sich: {0} ist {1}, {2} ist {3}.</translation>
         </message>
         <message>
             <source>The valve variants differ: only the parameters both have are compared; {0} parameters that one side lacks are left out.</source>
-            <translation>Die Ventilvarianten unterscheiden sich: Verglichen werden nur die Parameter, die beide haben; {0} Parameter, die einer Seite fehlen, bleiben außen vor.</translation>
+            <translation>Die Ventilvarianten unterscheiden sich: verglichen werden nur die Parameter, die beide haben; {0} Parameter, die einer Seite fehlen, bleiben außen vor.</translation>
+        </message>
+    </context>
+    <context>
+        <name>CompareDialog</name>
+        <message>
+            <source>Compare parameters</source>
+            <translation>Parameter vergleichen</translation>
+        </message>
+        <message>
+            <source>Differences only</source>
+            <translation>Nur Unterschiede</translation>
+        </message>
+        <message>
+            <source>All blocks</source>
+            <translation>Alle Blöcke</translation>
+        </message>
+        <message>
+            <source>Basic level</source>
+            <translation>Basis-Ebene</translation>
+        </message>
+        <message>
+            <source>Expert level</source>
+            <translation>Experten-Ebene</translation>
+        </message>
+        <message>
+            <source>Block:</source>
+            <translation>Block:</translation>
+        </message>
+        <message>
+            <source>Access level:</source>
+            <translation>Zugriffsebene:</translation>
+        </message>
+        <message>
+            <source>Take every shown value from {0}</source>
+            <translation>Alle angezeigten Werte von {0} nehmen</translation>
+        </message>
+        <message>
+            <source>Apply: each side takes the chosen values</source>
+            <translation>Übernehmen: jede Seite erhält die gewählten Werte</translation>
+        </message>
+        <message>
+            <source>Apply the chosen values to {0}</source>
+            <translation>Gewählte Werte übernehmen in: {0}</translation>
+        </message>
+        <message numerus="yes">
+            <source>%n parameter(s) differ</source>
+            <translation>
+                <numerusform>%n Parameter unterscheidet sich</numerusform>
+                <numerusform>%n Parameter unterscheiden sich</numerusform>
+            </translation>
+        </message>
+        <message numerus="yes">
+            <source>%n parameter(s) only on one side</source>
+            <translation>
+                <numerusform>%n Parameter nur auf einer Seite</numerusform>
+                <numerusform>%n Parameter nur auf einer Seite</numerusform>
+            </translation>
+        </message>
+        <message numerus="yes">
+            <source>%n shown</source>
+            <translation>
+                <numerusform>%n angezeigt</numerusform>
+                <numerusform>%n angezeigt</numerusform>
+            </translation>
+        </message>
+    </context>
+    <context>
+        <name>CompareTableModel</name>
+        <message>
+            <source>Mnemonic</source>
+            <translation>Kürzel</translation>
+        </message>
+        <message>
+            <source>Description</source>
+            <translation>Beschreibung</translation>
+        </message>
+        <message>
+            <source>One side's valve type has no such parameter; it cannot be chosen.</source>
+            <translation>Der Ventiltyp einer Seite hat diesen Parameter nicht; er kann nicht gewählt werden.</translation>
+        </message>
+    </context>
+    <context>
+        <name>CompareWorkflow</name>
+        <message>
+            <source>Document</source>
+            <translation>Dokument</translation>
+        </message>
+        <message>
+            <source>Valve {0}</source>
+            <translation>Ventil {0}</translation>
+        </message>
+        <message>
+            <source>Factory defaults</source>
+            <translation>Werkseinstellungen</translation>
+        </message>
+        <message>
+            <source>Compare with file</source>
+            <translation>Mit Datei vergleichen</translation>
+        </message>
+        <message>
+            <source>Parameter files (*.prm);;All files (*)</source>
+            <translation>Parameterdateien (*.prm);;Alle Dateien (*)</translation>
+        </message>
+        <message>
+            <source>{0} cannot be compared.</source>
+            <translation>{0} kann nicht verglichen werden.</translation>
+        </message>
+        <message>
+            <source>Values taken from {0}</source>
+            <translation>Werte aus {0} übernommen</translation>
+        </message>
+        <message>
+            <source>Compare with valve</source>
+            <translation>Mit Ventil vergleichen</translation>
+        </message>
+        <message>
+            <source>Go online with the valve first (Communication → Online mode).</source>
+            <translation>Zuerst mit dem Ventil online gehen (Kommunikation → Online-Modus).</translation>
+        </message>
+        <message>
+            <source>Values taken from the valve</source>
+            <translation>Werte aus dem Ventil übernommen</translation>
+        </message>
+        <message>
+            <source>Values chosen from the valve</source>
+            <translation>Aus dem Ventil gewählte Werte</translation>
+        </message>
+        <message>
+            <source>Online: document and valve agree</source>
+            <translation>Online: Dokument und Ventil stimmen überein</translation>
+        </message>
+        <message>
+            <source>Parameters restored from the history</source>
+            <translation>Parameter aus dem Verlauf wiederhergestellt</translation>
         </message>
     </context>
     <context>
@@ -481,6 +777,10 @@ Die letzte Aktion wurde möglicherweise nicht abgeschlossen. Speichern Sie Ihre 
     </context>
     <context>
         <name>ControllerDialog</name>
+        <message>
+            <source>Tuning and autotune…</source>
+            <translation>Einstellung und Autotune…</translation>
+        </message>
         <message>
             <source>No simulation available.</source>
             <translation>Keine Simulation verfügbar.</translation>
@@ -840,6 +1140,119 @@ Die letzte Aktion wurde möglicherweise nicht abgeschlossen. Speichern Sie Ihre 
             <source>ok</source>
             <translation>ok</translation>
         </message>
+        <message>
+            <source>CANopen communication error (heartbeat, SYNC or RPDO missing)</source>
+            <translation>CANopen-Kommunikationsfehler (Heartbeat, SYNC oder RPDO fehlt)</translation>
+        </message>
+        <message>
+            <source>CANopen RPDO too short: not processed</source>
+            <translation>CANopen-RPDO zu kurz: nicht verarbeitet</translation>
+        </message>
+    </context>
+    <context>
+        <name>EmulatedValve</name>
+        <message>
+            <source>Coil A disconnected</source>
+            <translation>Spule A abgeklemmt</translation>
+        </message>
+        <message>
+            <source>Coil A short circuit (over-current)</source>
+            <translation>Spule A Kurzschluss (Überstrom)</translation>
+        </message>
+        <message>
+            <source>Coil B disconnected</source>
+            <translation>Spule B abgeklemmt</translation>
+        </message>
+        <message>
+            <source>Coil B short circuit (over-current)</source>
+            <translation>Spule B Kurzschluss (Überstrom)</translation>
+        </message>
+        <message>
+            <source>Setpoint wire break</source>
+            <translation>Drahtbruch Sollwert</translation>
+        </message>
+        <message>
+            <source>External sensor wire break</source>
+            <translation>Drahtbruch externer Sensor</translation>
+        </message>
+        <message>
+            <source>Spool position sensor (LVDT) wire break</source>
+            <translation>Drahtbruch Schieberwegsensor (LVDT)</translation>
+        </message>
+        <message>
+            <source>Supply too low (17 V)</source>
+            <translation>Versorgung zu niedrig (17 V)</translation>
+        </message>
+        <message>
+            <source>Supply too high (31 V)</source>
+            <translation>Versorgung zu hoch (31 V)</translation>
+        </message>
+        <message>
+            <source>Over-temperature (105 °C)</source>
+            <translation>Übertemperatur (105 °C)</translation>
+        </message>
+    </context>
+    <context>
+        <name>EmulatedValveDialog</name>
+        <message>
+            <source>Emulated valve</source>
+            <translation>Emuliertes Ventil</translation>
+        </message>
+        <message>
+            <source>Setpoint input [{0}]:</source>
+            <translation>Sollwerteingang [{0}]:</translation>
+        </message>
+        <message>
+            <source>External sensor input [{0}]:</source>
+            <translation>Eingang externer Sensor [{0}]:</translation>
+        </message>
+        <message>
+            <source>Supply voltage [V]:</source>
+            <translation>Versorgungsspannung [V]:</translation>
+        </message>
+        <message>
+            <source>Ambient temperature [°C]:</source>
+            <translation>Umgebungstemperatur [°C]:</translation>
+        </message>
+        <message>
+            <source>Interface / bit-rate switch:</source>
+            <translation>Schalter Schnittstelle / Bitrate:</translation>
+        </message>
+        <message>
+            <source>Node-ID switch:</source>
+            <translation>Schalter Knoten-ID:</translation>
+        </message>
+        <message>
+            <source>The valve reads its rotary switches at power-up only: restart it (Valve → Restart valve) for a new position to apply. The setpoint input counts only while the valve takes its setpoint from the analog input (no CANopen, no setpoint generator).</source>
+            <translation>Das Ventil liest seine Drehschalter nur beim Einschalten: starten Sie es neu (Ventil → Ventil neu starten), damit eine neue Stellung gilt. Der Sollwerteingang zählt nur, solange das Ventil seinen Sollwert vom Analogeingang nimmt (kein CANopen, kein Sollwertgenerator).</translation>
+        </message>
+    </context>
+    <context>
+        <name>EmulatedValveMenu</name>
+        <message>
+            <source>E&amp;mulated valve</source>
+            <translation>E&amp;muliertes Ventil</translation>
+        </message>
+        <message>
+            <source>&amp;Inputs and switches…</source>
+            <translation>&amp;Eingänge und Schalter…</translation>
+        </message>
+        <message>
+            <source>Setpoint and sensor signals, supply, temperature and rotary switches</source>
+            <translation>Sollwert- und Sensorsignal, Versorgung, Temperatur und Drehschalter</translation>
+        </message>
+        <message>
+            <source>&amp;Pull the USB cable</source>
+            <translation>USB-Kabel &amp;ziehen</translation>
+        </message>
+        <message>
+            <source>The link drops as when a real cable is pulled</source>
+            <translation>Die Verbindung bricht ab wie bei einem gezogenen Kabel</translation>
+        </message>
+        <message>
+            <source>Inject this fault into the emulated valve, or repair it</source>
+            <translation>Diesen Fehler im emulierten Ventil auslösen oder beheben</translation>
+        </message>
     </context>
     <context>
         <name>EmulatorDialog</name>
@@ -884,7 +1297,7 @@ Die letzte Aktion wurde möglicherweise nicht abgeschlossen. Speichern Sie Ihre 
         </message>
         <message>
             <source>The history database cannot be used.</source>
-            <translation>Die Historien-Datenbank kann nicht benutzt werden.</translation>
+            <translation>Die Verlaufsdatenbank kann nicht benutzt werden.</translation>
         </message>
     </context>
     <context>
@@ -924,6 +1337,10 @@ Die letzte Aktion wurde möglicherweise nicht abgeschlossen. Speichern Sie Ihre 
         <message>
             <source>Opening {0} cancelled</source>
             <translation>Öffnen von {0} abgebrochen</translation>
+        </message>
+        <message>
+            <source>Still reading {0}</source>
+            <translation>{0} wird noch gelesen</translation>
         </message>
         <message>
             <source>Cannot open “{0}”</source>
@@ -1046,6 +1463,17 @@ Die letzte Aktion wurde möglicherweise nicht abgeschlossen. Speichern Sie Ihre 
         </message>
     </context>
     <context>
+        <name>Help</name>
+        <message>
+            <source>Home page</source>
+            <translation>Homepage</translation>
+        </message>
+        <message>
+            <source>No web browser could be started. The home page is {0}</source>
+            <translation>Es konnte kein Webbrowser gestartet werden. Die Homepage ist {0}</translation>
+        </message>
+    </context>
+    <context>
         <name>HelpWindow</name>
         <message>
             <source>prm9tool help</source>
@@ -1113,6 +1541,134 @@ Die letzte Aktion wurde möglicherweise nicht abgeschlossen. Speichern Sie Ihre 
         <message>
             <source>USB</source>
             <translation>USB</translation>
+        </message>
+    </context>
+    <context>
+        <name>HistoryPolicy</name>
+        <message>
+            <source>Upload refused</source>
+            <translation>Hochladen abgelehnt</translation>
+        </message>
+        <message>
+            <source>The history database cannot record this upload, and the setting says to refuse uploads then. Nothing was written to the valve.</source>
+            <translation>Die Verlaufsdatenbank kann dieses Hochladen nicht aufzeichnen, und die Einstellung verlangt, dann nicht hochzuladen. In das Ventil wurde nichts geschrieben.</translation>
+        </message>
+        <message>
+            <source>History database unavailable</source>
+            <translation>Verlaufsdatenbank nicht erreichbar</translation>
+        </message>
+        <message>
+            <source>The history database cannot record this upload. Upload anyway and keep the record on this computer until the database is back?
+
+Yes uploads and queues the record; No uploads nothing.</source>
+            <translation>Die Verlaufsdatenbank kann dieses Hochladen nicht aufzeichnen. Trotzdem hochladen und den Eintrag auf diesem Rechner aufbewahren, bis die Datenbank wieder erreichbar ist?
+
+Ja lädt hoch und stellt den Eintrag in die Warteschlange; Nein lädt nichts hoch.</translation>
+        </message>
+    </context>
+    <context>
+        <name>HistoryTableModel</name>
+        <message>
+            <source>No.</source>
+            <translation>Nr.</translation>
+        </message>
+        <message>
+            <source>Time (UTC)</source>
+            <translation>Zeit (UTC)</translation>
+        </message>
+        <message>
+            <source>Operation</source>
+            <translation>Vorgang</translation>
+        </message>
+        <message>
+            <source>Outcome</source>
+            <translation>Ergebnis</translation>
+        </message>
+        <message>
+            <source>Type key</source>
+            <translation>Typenschlüssel</translation>
+        </message>
+        <message>
+            <source>Firmware</source>
+            <translation>Firmware</translation>
+        </message>
+        <message>
+            <source>User, station, link</source>
+            <translation>Benutzer, Station, Verbindung</translation>
+        </message>
+    </context>
+    <context>
+        <name>HistoryWindow</name>
+        <message>
+            <source>History</source>
+            <translation>Verlauf</translation>
+        </message>
+        <message>
+            <source>serial number</source>
+            <translation>Seriennummer</translation>
+        </message>
+        <message>
+            <source>Show</source>
+            <translation>Anzeigen</translation>
+        </message>
+        <message>
+            <source>Valve serial number:</source>
+            <translation>Seriennummer des Ventils:</translation>
+        </message>
+        <message>
+            <source>Compare the two selected records</source>
+            <translation>Die zwei gewählten Einträge vergleichen</translation>
+        </message>
+        <message>
+            <source>Restore into the document</source>
+            <translation>In das Dokument übernehmen</translation>
+        </message>
+        <message>
+            <source>Restore to the valve</source>
+            <translation>In das Ventil zurückschreiben</translation>
+        </message>
+        <message>
+            <source>Export…</source>
+            <translation>Exportieren…</translation>
+        </message>
+        <message>
+            <source>Type a valve's serial number.</source>
+            <translation>Seriennummer eines Ventils eingeben.</translation>
+        </message>
+        <message>
+            <source>Reading the history…</source>
+            <translation>Verlauf wird gelesen…</translation>
+        </message>
+        <message numerus="yes">
+            <source>%n record(s) in {0}</source>
+            <translation>
+                <numerusform>%n Eintrag in {0}</numerusform>
+                <numerusform>%n Einträge in {0}</numerusform>
+            </translation>
+        </message>
+        <message>
+            <source>This record holds no parameter set (the operation did not change the valve's stored parameters).</source>
+            <translation>Dieser Eintrag enthält keinen Parametersatz (der Vorgang hat die gespeicherten Parameter des Ventils nicht geändert).</translation>
+        </message>
+        <message>
+            <source>No. {0}, {1}</source>
+            <translation>Nr. {0}, {1}</translation>
+        </message>
+        <message>
+            <source>Go online with valve {0} first: a record is restored only into the valve it was recorded from.</source>
+            <translation>Zuerst mit Ventil {0} online gehen: ein Eintrag wird nur in das Ventil zurückgeschrieben, von dem er stammt.</translation>
+        </message>
+        <message>
+            <source>Export record</source>
+            <translation>Eintrag exportieren</translation>
+        </message>
+        <message>
+            <source>Parameter files (*.prm);;CSV tables (*.csv)</source>
+            <translation>Parameterdateien (*.prm);;CSV-Tabellen (*.csv)</translation>
+        </message>
+        <message>
+            <source>The record was not exported.</source>
+            <translation>Der Eintrag wurde nicht exportiert.</translation>
         </message>
     </context>
     <context>
@@ -1337,22 +1893,6 @@ Die letzte Aktion wurde möglicherweise nicht abgeschlossen. Speichern Sie Ihre 
             <translation>Ventilelektronik neu starten (nur bei getrennter Hydraulik)</translation>
         </message>
         <message>
-            <source>&amp;Enable valve…</source>
-            <translation>Ventil &amp;freigeben…</translation>
-        </message>
-        <message>
-            <source>Start the node and enable the device: the spool follows its setpoint (§7.6)</source>
-            <translation>Knoten starten und Gerät freigeben: Der Schieber folgt seinem Sollwert (§7.6)</translation>
-        </message>
-        <message>
-            <source>D&amp;isable valve</source>
-            <translation>Ventil s&amp;perren</translation>
-        </message>
-        <message>
-            <source>Back to INIT and NMT pre-operational</source>
-            <translation>Zurück nach INIT und NMT Pre-Operational</translation>
-        </message>
-        <message>
             <source>&amp;HID configuration…</source>
             <translation>&amp;HID-Konfiguration…</translation>
         </message>
@@ -1444,6 +1984,30 @@ Die letzte Aktion wurde möglicherweise nicht abgeschlossen. Speichern Sie Ihre 
             <source>Toolbar</source>
             <translation>Werkzeugleiste</translation>
         </message>
+        <message>
+            <source>Co&amp;mpare with file…</source>
+            <translation>Mit Datei &amp;vergleichen…</translation>
+        </message>
+        <message>
+            <source>Compare the parameters with a *.prm file, take chosen values</source>
+            <translation>Die Parameter mit einer *.prm-Datei vergleichen, gewählte Werte übernehmen</translation>
+        </message>
+        <message>
+            <source>&amp;Compare with valve</source>
+            <translation>Mit Ventil &amp;vergleichen</translation>
+        </message>
+        <message>
+            <source>Compare the document with the valve, apply chosen values</source>
+            <translation>Das Dokument mit dem Ventil vergleichen, gewählte Werte übernehmen</translation>
+        </message>
+        <message>
+            <source>&amp;History…</source>
+            <translation>Verlau&amp;f…</translation>
+        </message>
+        <message>
+            <source>Every operation recorded on a valve's parameters</source>
+            <translation>Jeder aufgezeichnete Vorgang an den Parametern eines Ventils</translation>
+        </message>
     </context>
     <context>
         <name>MainStatusBar</name>
@@ -1477,7 +2041,7 @@ Die letzte Aktion wurde möglicherweise nicht abgeschlossen. Speichern Sie Ihre 
         </message>
         <message>
             <source>Level: {0}</source>
-            <translation>Ebene: {0}</translation>
+            <translation>Stufe: {0}</translation>
         </message>
         <message>
             <source>Status: {0}</source>
@@ -1633,6 +2197,10 @@ Die letzte Aktion wurde möglicherweise nicht abgeschlossen. Speichern Sie Ihre 
         <message>
             <source>Valve</source>
             <translation>Ventil</translation>
+        </message>
+        <message>
+            <source>Choose per parameter…</source>
+            <translation>Je Parameter wählen…</translation>
         </message>
     </context>
     <context>
@@ -1929,6 +2497,10 @@ Die letzte Aktion wurde möglicherweise nicht abgeschlossen. Speichern Sie Ihre 
             <source>cannot save the file: {0}</source>
             <translation>die Datei kann nicht gespeichert werden: {0}</translation>
         </message>
+        <message>
+            <source>{0}: {1} is ambiguous (a thousands separator?); write the number without one, with '{2}' before the decimals</source>
+            <translation>{0}: {1} ist mehrdeutig (ein Tausendertrennzeichen?); schreiben Sie die Zahl ohne Trennzeichen, mit „{2}“ vor den Nachkommastellen</translation>
+        </message>
     </context>
     <context>
         <name>RampsDialog</name>
@@ -2045,6 +2617,53 @@ Die letzte Aktion wurde möglicherweise nicht abgeschlossen. Speichern Sie Ihre 
         <message>
             <source>PRM9 parameter record {0}</source>
             <translation>PRM9-Parameterprotokoll {0}</translation>
+        </message>
+    </context>
+    <context>
+        <name>ReportPage</name>
+        <message>
+            <source>steps of %1 %, a sine sweep of ±%2 % and a triangle over the whole range, about %3 s</source>
+            <translation>Sprünge von %1 %, ein Sinus-Sweep von ±%2 % und ein Dreieck über den ganzen Bereich, etwa %3 s</translation>
+        </message>
+        <message>
+            <source>Result: %1</source>
+            <translation>Ergebnis: %1</translation>
+        </message>
+        <message>
+            <source>Save the test report</source>
+            <translation>Prüfbericht speichern</translation>
+        </message>
+        <message>
+            <source>Cannot write the report: %1</source>
+            <translation>Der Bericht kann nicht geschrieben werden: %1</translation>
+        </message>
+        <message>
+            <source>Acceptance profile (TOML, empty: default):</source>
+            <translation>Abnahmeprofil (TOML, leer: Standard):</translation>
+        </message>
+        <message>
+            <source>Run the end-of-line test</source>
+            <translation>Endprüfung starten</translation>
+        </message>
+        <message>
+            <source>Save PDF and CSV…</source>
+            <translation>PDF und CSV speichern…</translation>
+        </message>
+        <message>
+            <source>Figure</source>
+            <translation>Kennwert</translation>
+        </message>
+        <message>
+            <source>Value</source>
+            <translation>Wert</translation>
+        </message>
+        <message>
+            <source>Limit</source>
+            <translation>Grenze</translation>
+        </message>
+        <message>
+            <source>Result</source>
+            <translation>Ergebnis</translation>
         </message>
     </context>
     <context>
@@ -2173,6 +2792,14 @@ Make sure the machine is safe to move. Start the generator?</source>
 Stellen Sie sicher, dass die Maschine sich gefahrlos bewegen kann. Generator starten?</translation>
         </message>
         <message>
+            <source>The valve does not follow its setpoint: {0}
+
+Enable it now (NMT start, control word 08h → 09h → 0Bh → 0Fh)?</source>
+            <translation type="unfinished">Das Ventil folgt seinem Sollwert nicht: {0}
+
+Jetzt freigeben (NMT Start, Steuerwort 08h → 09h → 0Bh → 0Fh)?</translation>
+        </message>
+        <message>
             <source>The link dropped: the setpoint generator has stopped.</source>
             <translation>Die Verbindung ist abgebrochen: der Sollwertgenerator wurde gestoppt.</translation>
         </message>
@@ -2213,8 +2840,16 @@ Stellen Sie sicher, dass die Maschine sich gefahrlos bewegen kann. Generator sta
             <translation>Das Ventil hat einen Wert des Sollwertgenerators abgelehnt ({0}): Der Generator wurde gestoppt.</translation>
         </message>
         <message>
+            <source>Tuning and characterization…</source>
+            <translation>Einstellung und Charakterisierung…</translation>
+        </message>
+        <message>
             <source>no reason given</source>
             <translation>ohne Angabe eines Grundes</translation>
+        </message>
+        <message>
+            <source>The valve does not follow its setpoint: {0}</source>
+            <translation>Das Ventil folgt seinem Sollwert nicht: {0}</translation>
         </message>
     </context>
     <context>
@@ -2275,6 +2910,37 @@ Stellen Sie sicher, dass die Maschine sich gefahrlos bewegen kann. Generator sta
         </message>
     </context>
     <context>
+        <name>StaticPage</name>
+        <message>
+            <source>a triangle over the whole range −100 … 100 %, %1 s</source>
+            <translation>ein Dreieck über den ganzen Bereich −100 … 100 %, %1 s</translation>
+        </message>
+        <message>
+            <source>linearized (preview)</source>
+            <translation>linearisiert (Vorschau)</translation>
+        </message>
+        <message>
+            <source>Gain %1, hysteresis %2 %, linearity error %3 %, dead band %4 %.</source>
+            <translation>Verstärkung %1, Hysterese %2 %, Linearitätsfehler %3 %, Totzone %4 %.</translation>
+        </message>
+        <message>
+            <source>Linearization from the static characteristic</source>
+            <translation>Linearisierung aus der statischen Kennlinie</translation>
+        </message>
+        <message>
+            <source>Triangle period:</source>
+            <translation>Periode des Dreiecks:</translation>
+        </message>
+        <message>
+            <source>Measure the static characteristic</source>
+            <translation>Statische Kennlinie messen</translation>
+        </message>
+        <message>
+            <source>Apply the proposed linearization</source>
+            <translation>Vorgeschlagene Linearisierung übernehmen</translation>
+        </message>
+    </context>
+    <context>
         <name>StepPanel</name>
         <message>
             <source>Step response</source>
@@ -2317,14 +2983,6 @@ Stellen Sie sicher, dass die Maschine sich gefahrlos bewegen kann. Generator sta
             <translation>(keine: Sprung auf der Antwort)</translation>
         </message>
         <message>
-            <source>Measured on step {0} of {1} in {2}.</source>
-            <translation>Gemessen an Sprung {0} von {1} in {2}.</translation>
-        </message>
-        <message>
-            <source>Window too short: in {0} the response has not come to rest yet. Widen the time window or move the cursors apart.</source>
-            <translation>Fenster zu kurz: In {0} ist die Antwort noch nicht zur Ruhe gekommen. Zeitfenster vergrößern oder die Cursor auseinanderschieben.</translation>
-        </message>
-        <message>
             <source>No step found in {0}.</source>
             <translation>Kein Sprung in {0} gefunden.</translation>
         </message>
@@ -2339,6 +2997,14 @@ Stellen Sie sicher, dass die Maschine sich gefahrlos bewegen kann. Generator sta
         <message>
             <source>No response to the step in {0}: the response stays flat or within its noise.</source>
             <translation>Keine Antwort auf den Sprung in {0}: Die Antwort bleibt flach oder im Rauschen.</translation>
+        </message>
+        <message>
+            <source>Measured on step {0} of {1} in {2}.</source>
+            <translation>Gemessen am Sprung {0} von {1} in {2}.</translation>
+        </message>
+        <message>
+            <source>Window too short: in {0} the response has not come to rest yet. Widen the time window or move the cursors apart.</source>
+            <translation>Fenster zu kurz: in {0} ist die Antwort noch nicht zur Ruhe gekommen. Vergrößern Sie das Zeitfenster oder ziehen Sie die Cursor auseinander.</translation>
         </message>
     </context>
     <context>
@@ -2377,6 +3043,256 @@ Stellen Sie sicher, dass die Maschine sich gefahrlos bewegen kann. Generator sta
         <message>
             <source>output</source>
             <translation>Ausgang</translation>
+        </message>
+    </context>
+    <context>
+        <name>TuningReport</name>
+        <message>
+            <source>overshoot</source>
+            <translation>Überschwingen</translation>
+        </message>
+        <message>
+            <source>rise time (10–90 %)</source>
+            <translation>Anstiegszeit (10–90 %)</translation>
+        </message>
+        <message>
+            <source>settling time (±2 %)</source>
+            <translation>Ausregelzeit (±2 %)</translation>
+        </message>
+        <message>
+            <source>−3 dB frequency</source>
+            <translation>−3-dB-Frequenz</translation>
+        </message>
+        <message>
+            <source>−90° frequency</source>
+            <translation>−90°-Frequenz</translation>
+        </message>
+        <message>
+            <source>gain</source>
+            <translation>Verstärkung</translation>
+        </message>
+        <message>
+            <source>hysteresis</source>
+            <translation>Hysterese</translation>
+        </message>
+        <message>
+            <source>linearity error</source>
+            <translation>Linearitätsfehler</translation>
+        </message>
+        <message>
+            <source>dead band</source>
+            <translation>Totzone</translation>
+        </message>
+        <message>
+            <source>step %1 %: %2</source>
+            <translation>Sprung %1 %: %2</translation>
+        </message>
+        <message>
+            <source>PASS</source>
+            <translation>BESTANDEN</translation>
+        </message>
+        <message>
+            <source>FAIL</source>
+            <translation>NICHT BESTANDEN</translation>
+        </message>
+        <message>
+            <source>not reached</source>
+            <translation>nicht erreicht</translation>
+        </message>
+        <message>
+            <source>Step response %1 %</source>
+            <translation>Sprungantwort %1 %</translation>
+        </message>
+        <message>
+            <source>time [ms]</source>
+            <translation>Zeit [ms]</translation>
+        </message>
+        <message>
+            <source>setpoint</source>
+            <translation>Sollwert</translation>
+        </message>
+        <message>
+            <source>actual</source>
+            <translation>Istwert</translation>
+        </message>
+        <message>
+            <source>frequency [Hz]</source>
+            <translation>Frequenz [Hz]</translation>
+        </message>
+        <message>
+            <source>Frequency response ±%1 %: magnitude</source>
+            <translation>Frequenzgang ±%1 %: Betrag</translation>
+        </message>
+        <message>
+            <source>magnitude</source>
+            <translation>Betrag</translation>
+        </message>
+        <message>
+            <source>Phase and coherence</source>
+            <translation>Phase und Kohärenz</translation>
+        </message>
+        <message>
+            <source>phase</source>
+            <translation>Phase</translation>
+        </message>
+        <message>
+            <source>coherence ×100</source>
+            <translation>Kohärenz ×100</translation>
+        </message>
+        <message>
+            <source>Static characteristic</source>
+            <translation>Statische Kennlinie</translation>
+        </message>
+        <message>
+            <source>demand [%]</source>
+            <translation>Sollwert [%]</translation>
+        </message>
+        <message>
+            <source>actual [%]</source>
+            <translation>Istwert [%]</translation>
+        </message>
+        <message>
+            <source>rising</source>
+            <translation>steigend</translation>
+        </message>
+        <message>
+            <source>falling</source>
+            <translation>fallend</translation>
+        </message>
+        <message>
+            <source>best line</source>
+            <translation>Ausgleichsgerade</translation>
+        </message>
+        <message>
+            <source>Type key</source>
+            <translation>Typschlüssel</translation>
+        </message>
+        <message>
+            <source>Serial number</source>
+            <translation>Seriennummer</translation>
+        </message>
+        <message>
+            <source>Firmware</source>
+            <translation>Firmware</translation>
+        </message>
+        <message>
+            <source>Date</source>
+            <translation>Datum</translation>
+        </message>
+        <message>
+            <source>Link</source>
+            <translation>Verbindung</translation>
+        </message>
+        <message>
+            <source>Acceptance profile</source>
+            <translation>Abnahmeprofil</translation>
+        </message>
+        <message>
+            <source>Result</source>
+            <translation>Ergebnis</translation>
+        </message>
+        <message>
+            <source>PRM9 test report</source>
+            <translation>PRM9-Prüfbericht</translation>
+        </message>
+        <message>
+            <source>Figure</source>
+            <translation>Kennwert</translation>
+        </message>
+        <message>
+            <source>Value</source>
+            <translation>Wert</translation>
+        </message>
+        <message>
+            <source>Limit</source>
+            <translation>Grenze</translation>
+        </message>
+        <message>
+            <source>Parameter set (raw values)</source>
+            <translation>Parametersatz (Rohwerte)</translation>
+        </message>
+    </context>
+    <context>
+        <name>TuningWindow</name>
+        <message>
+            <source>Running: %1</source>
+            <translation>Läuft: %1</translation>
+        </message>
+        <message>
+            <source>This test moves the spool (and on E04 the actuator): %1.
+
+Make sure the hydraulics are safe for it. Stop ends it at any time and puts the valve back as it was. Start the test?</source>
+            <translation>Dieser Test bewegt den Schieber (und bei E04 den Antrieb): %1.
+
+Stellen Sie sicher, dass die Hydraulik dafür sicher ist. Stopp beendet ihn jederzeit und stellt das Ventil wieder her, wie es war. Test starten?</translation>
+        </message>
+        <message>
+            <source>Tuning</source>
+            <translation>Einstellung</translation>
+        </message>
+        <message>
+            <source>Stopping…</source>
+            <translation>Wird abgebrochen…</translation>
+        </message>
+        <message>
+            <source>Done.</source>
+            <translation>Fertig.</translation>
+        </message>
+        <message>
+            <source>Stopped: %1</source>
+            <translation>Abgebrochen: %1</translation>
+        </message>
+        <message>
+            <source>Accepted: %1</source>
+            <translation>Übernommen: %1</translation>
+        </message>
+        <message>
+            <source>Tuning and characterization</source>
+            <translation>Einstellung und Charakterisierung</translation>
+        </message>
+        <message>
+            <source>Position controller (spool)</source>
+            <translation>Lageregler (Schieber)</translation>
+        </message>
+        <message>
+            <source>Process controller (E04)</source>
+            <translation>Prozessregler (E04)</translation>
+        </message>
+        <message>
+            <source>Loop:</source>
+            <translation>Regelkreis:</translation>
+        </message>
+        <message>
+            <source>Stop</source>
+            <translation>Stopp</translation>
+        </message>
+        <message>
+            <source>Offline: the tests run on an emulated valve with the document's values.</source>
+            <translation>Offline: Die Tests laufen auf einem emulierten Ventil mit den Werten des Dokuments.</translation>
+        </message>
+        <message>
+            <source>Online: the tests move the connected valve.</source>
+            <translation>Online: Die Tests bewegen das angeschlossene Ventil.</translation>
+        </message>
+        <message>
+            <source>Autotune</source>
+            <translation>Autotune</translation>
+        </message>
+        <message>
+            <source>Frequency response</source>
+            <translation>Frequenzgang</translation>
+        </message>
+        <message>
+            <source>Static characteristic</source>
+            <translation>Statische Kennlinie</translation>
+        </message>
+        <message>
+            <source>Test report</source>
+            <translation>Prüfbericht</translation>
+        </message>
+        <message>
+            <source>Ready.</source>
+            <translation>Bereit.</translation>
         </message>
     </context>
     <context>
@@ -2507,6 +3423,65 @@ Stellen Sie sicher, dass die Maschine sich gefahrlos bewegen kann. Generator sta
         <message>
             <source>Not connected to a valve.</source>
             <translation>Nicht mit einem Ventil verbunden.</translation>
+        </message>
+    </context>
+    <context>
+        <name>ValveControl</name>
+        <message>
+            <source>no valve is connected.</source>
+            <translation>kein Ventil ist verbunden.</translation>
+        </message>
+        <message>
+            <source>the valve is starting up (about 2 s).</source>
+            <translation>das Ventil startet (etwa 2 s).</translation>
+        </message>
+        <message>
+            <source>an error stops it (device state {0}); Valve → Valve status lists the error and resets it with Enable once the cause is gone.</source>
+            <translation>ein Fehler hält es an (Gerätezustand {0}); Ventil → Ventilstatus zeigt den Fehler und setzt ihn mit „Freigeben“ zurück, sobald die Ursache behoben ist.</translation>
+        </message>
+        <message>
+            <source>it waits for a CANopen master (NMT {0}, device state {1}). Enable it under Valve → Valve status (control word 08h → 09h → 0Bh → 0Fh).</source>
+            <translation>es wartet auf einen CANopen-Master (NMT {0}, Gerätezustand {1}). Geben Sie es unter Ventil → Ventilstatus frei (Steuerwort 08h → 09h → 0Bh → 0Fh).</translation>
+        </message>
+        <message>
+            <source>its CANopen master stopped it (NMT stopped). Start it under Valve → Valve status.</source>
+            <translation>sein CANopen-Master hat es angehalten (NMT gestoppt). Starten Sie es unter Ventil → Ventilstatus.</translation>
+        </message>
+        <message>
+            <source>it is not enabled (device state {0}). Enable it under Valve → Valve status.</source>
+            <translation>es ist nicht freigegeben (Gerätezustand {0}). Geben Sie es unter Ventil → Ventilstatus frei.</translation>
+        </message>
+        <message>
+            <source>it holds its position (device state HOLD). Enable it under Valve → Valve status.</source>
+            <translation>es hält seine Position (Gerätezustand HOLD). Geben Sie es unter Ventil → Ventilstatus frei.</translation>
+        </message>
+        <message>
+            <source>offline</source>
+            <translation>offline</translation>
+        </message>
+        <message>
+            <source>starting up</source>
+            <translation>startet</translation>
+        </message>
+        <message>
+            <source>fault</source>
+            <translation>Fehler</translation>
+        </message>
+        <message>
+            <source>waiting for a CANopen master</source>
+            <translation>wartet auf CANopen-Master</translation>
+        </message>
+        <message>
+            <source>NMT stopped</source>
+            <translation>NMT gestoppt</translation>
+        </message>
+        <message>
+            <source>not enabled</source>
+            <translation>nicht freigegeben</translation>
+        </message>
+        <message>
+            <source>hold</source>
+            <translation>Halten</translation>
         </message>
     </context>
     <context>
@@ -2788,6 +3763,20 @@ Stellen Sie sicher, dass die Maschine sich gefahrlos bewegen kann. Generator sta
             <source>Set every parameter of the document to the factory default?</source>
             <translation>Alle Parameter des Dokuments auf die Werkseinstellung setzen?</translation>
         </message>
+        <message numerus="yes">
+            <source>%n parameter(s) written, verified and stored at {0}</source>
+            <translation>
+                <numerusform>%n Parameter um {0} geschrieben, geprüft und gespeichert</numerusform>
+                <numerusform>%n Parameter um {0} geschrieben, geprüft und gespeichert</numerusform>
+            </translation>
+        </message>
+        <message numerus="yes">
+            <source>%n parameter(s) written, verified and stored again at {0}: the valve already held them</source>
+            <translation>
+                <numerusform>%n Parameter um {0} erneut geschrieben, geprüft und gespeichert: das Ventil hatte ihn schon</numerusform>
+                <numerusform>%n Parameter um {0} erneut geschrieben, geprüft und gespeichert: das Ventil hatte sie schon</numerusform>
+            </translation>
+        </message>
         <message>
             <source>Restore factory values</source>
             <translation>Werkseinstellungen wiederherstellen</translation>
@@ -2827,13 +3816,6 @@ Stellen Sie sicher, dass die Maschine sich gefahrlos bewegen kann. Generator sta
         <message>
             <source>Factory values restored; the valve's previous parameters are in {0}</source>
             <translation>Werkseinstellungen wiederhergestellt; die bisherigen Parameter des Ventils sind in {0}</translation>
-        </message>
-        <message numerus="yes">
-            <source>%n parameter(s) written, verified and stored</source>
-            <translation>
-                <numerusform>%n Parameter geschrieben, geprüft und gespeichert</numerusform>
-                <numerusform>%n Parameter geschrieben, geprüft und gespeichert</numerusform>
-            </translation>
         </message>
         <message>
             <source>Upload failed</source>

@@ -2,6 +2,30 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="en_US">
     <context>
+        <name>CompareDialog</name>
+        <message numerus="yes">
+            <source>%n parameter(s) differ</source>
+            <translation>
+                <numerusform>%n parameter differs</numerusform>
+                <numerusform>%n parameters differ</numerusform>
+            </translation>
+        </message>
+        <message numerus="yes">
+            <source>%n parameter(s) only on one side</source>
+            <translation>
+                <numerusform>%n parameter only on one side</numerusform>
+                <numerusform>%n parameters only on one side</numerusform>
+            </translation>
+        </message>
+        <message numerus="yes">
+            <source>%n shown</source>
+            <translation>
+                <numerusform>%n shown</numerusform>
+                <numerusform>%n shown</numerusform>
+            </translation>
+        </message>
+    </context>
+    <context>
         <name>FileWorkflow</name>
         <message numerus="yes">
             <source>“{0}” was opened; %n warning(s) were found.</source>
@@ -22,6 +46,16 @@
             <translation>
                 <numerusform>%n more problem in the details.</numerusform>
                 <numerusform>%n more problems in the details.</numerusform>
+            </translation>
+        </message>
+    </context>
+    <context>
+        <name>HistoryWindow</name>
+        <message numerus="yes">
+            <source>%n record(s) in {0}</source>
+            <translation>
+                <numerusform>%n record in {0}</numerusform>
+                <numerusform>%n records in {0}</numerusform>
             </translation>
         </message>
     </context>
@@ -55,10 +89,17 @@
             </translation>
         </message>
         <message numerus="yes">
-            <source>%n parameter(s) written, verified and stored</source>
+            <source>%n parameter(s) written, verified and stored at {0}</source>
             <translation>
-                <numerusform>%n parameter written, verified and stored</numerusform>
-                <numerusform>%n parameters written, verified and stored</numerusform>
+                <numerusform>%n parameter written, verified and stored at {0}</numerusform>
+                <numerusform>%n parameters written, verified and stored at {0}</numerusform>
+            </translation>
+        </message>
+        <message numerus="yes">
+            <source>%n parameter(s) written, verified and stored again at {0}: the valve already held them</source>
+            <translation>
+                <numerusform>%n parameter written, verified and stored again at {0}: the valve already held it</numerusform>
+                <numerusform>%n parameters written, verified and stored again at {0}: the valve already held them</numerusform>
             </translation>
         </message>
     </context>

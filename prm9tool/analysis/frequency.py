@@ -7,13 +7,14 @@ response over the demand, both in %), phases in degrees.
 
 from __future__ import annotations
 
+import itertools
 import math
 from dataclasses import dataclass
 
 import numpy as np
 from scipy import signal
 
-MIN_COHERENCE = 0.8  # points below are shown but not used for the −3 dB / −90° figures
+MIN_COHERENCE = 0.5  # points below are shown but not used for the −3 dB / −90° figures
 
 
 @dataclass(frozen=True)
@@ -86,7 +87,7 @@ def frequency_response(
     fc, coh = signal.coherence(u, y, fs=fs, nperseg=len(u) // 8)
     edges = np.geomspace(f_min, f_max, points + 1)
     centres, h = [], []
-    for lo, hi in zip(edges[:-1], edges[1:], strict=True):
+    for lo, hi in itertools.pairwise(edges):
         band = (f >= lo) & (f < hi)
         if not band.any() or puu[band].sum() <= 0:
             continue

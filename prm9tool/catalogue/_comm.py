@@ -13,7 +13,8 @@ from prm9tool.catalogue._setpoint import CA_ONLY, FIRMWARE_VERSION, RO, STR, U8,
 from prm9tool.catalogue.schema import (
     EVERY_VARIANT as ALL,
 )
-from prm9tool.catalogue.schema import Access, DataType, ObjAccess, Parameter, Texts
+from prm9tool.catalogue.schema import Access, Applies, DataType, ObjAccess, Parameter, Texts
+from prm9tool.catalogue.variant import Config
 
 WO = ObjAccess.WO
 CONST = ObjAccess.CONST
@@ -404,6 +405,23 @@ _CONTROL_MODE_4_MAPPING = {"RPDO1MAP2": 0x63800110, "TPDO1MAP2": 0x63810110}
 COMMUNICATION = [
     dataclasses.replace(p, default_e04=_CONTROL_MODE_4_MAPPING[p.mnemonic])
     if p.mnemonic in _CONTROL_MODE_4_MAPPING
+    else p
+    for p in COMMUNICATION
+]
+
+# Table 7-13 maps the external sensor 0x2100 into RPDO2 and TPDO2. A valve without it (E02) has
+# no 0x2100, and a mapping never points to an object the device lacks: there both PDOs map
+# nothing (number of entries 0 = mapping disabled, CiA 301), so TPDO2 is never sent and RPDO2
+# is ignored; their communication parameters stay, so the §7.6 sequence works on every -CA
+# valve (decision, docs/canopen.md).
+_SENSOR_PDO_COUNTS = {"RPDO2MAPN": 1, "TPDO2MAPN": 2}
+_SENSOR_PDO_ENTRIES = {"RPDO2MAP1", "TPDO2MAP1", "TPDO2MAP2"}
+_E04_CA = Applies(configs=frozenset({Config.E04}), canopen_only=True)
+COMMUNICATION = [
+    dataclasses.replace(p, default=0, default_e04=_SENSOR_PDO_COUNTS[p.mnemonic])
+    if p.mnemonic in _SENSOR_PDO_COUNTS
+    else dataclasses.replace(p, applies=_E04_CA)
+    if p.mnemonic in _SENSOR_PDO_ENTRIES
     else p
     for p in COMMUNICATION
 ]

@@ -2,7 +2,7 @@
 
 Pure data and arithmetic, no Qt: the CANopen window draws the two switch tables from it and
 the diagram's CANopen block summarises the effective settings. Where table 7-17 is garbled
-the reading of SPEC §3 applies **(inference)**:
+this reading of it applies **(inference)**:
 
 * interface/bit-rate switch: 0 = analog only, CAN off; 1 = reserved (same as 0); 2…8 = 20 k,
   50 k, 125 k, 250 k, 500 k, 800 k, 1 M without terminator; 9…F = the same seven rates with the

@@ -258,3 +258,8 @@ MAX_CHANNELS = 3  # the valve streams at most three measuring points at once (ma
 def signals_for(variant: Variant) -> list[Signal]:
     """The measuring points that exist on ``variant``."""
     return [s for s in SIGNALS if s.applies(variant)]
+
+
+# One rule for every measured value shown (diagram, parameter list, valve status): decimals by
+# unit. Stored parameters keep their own rule: the shortest text that reads back exactly.
+MEASURED_DECIMALS = {"%": 1, "mA": 0, "V": 2, "°C": 1}

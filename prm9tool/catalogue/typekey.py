@@ -1,6 +1,7 @@
 """PRM9 type keys: parse, validate, format, and derive the electronics variant.
 
-Layout (SPEC §2.2, inference from the manual's examples)::
+Layout (inference from the manual's examples: §8.7.1 valve selection, §7.7, the status bar
+of §8.8)::
 
     PRM9-06.3Z11/30-24E02S02-CA
     │    │  │    │  │ │  │   └─ optional CANopen interface
@@ -26,6 +27,9 @@ from prm9tool.errors import TypeKeyError
 from prm9tool.messages import QT_TRANSLATE_NOOP, Arg, Message, Template
 
 FLOWS: dict[str, tuple[str, ...]] = {"06": ("05", "08", "15", "30"), "10": ("30", "60")}
+# ``--emulator`` without a type key (GUI, --batch, --list-devices, --help, docs): the
+# manual's valve, an E02 with CANopen (manual §8.7.2, the CANopen window of figure 8-21).
+DEFAULT_EMULATOR_TYPE_KEY = "PRM9-06.3Z11/30-24E02S02-CA"
 SUPPLIES = ("24",)
 
 

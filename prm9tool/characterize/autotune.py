@@ -114,3 +114,15 @@ def _io(step: StepResult, output: str, actual: str) -> tuple[np.ndarray, np.ndar
     keep = step.record.t >= -CYCLE_S
     scale = 16384.0 / 100.0
     return step.record.channels[output][keep] * scale, step.record.channels[actual][keep] * scale
+
+
+def compare_steps(
+    rig: Rig, loop: str, proposed: dict[str, int], amplitude_pct: float, duration_s: float
+) -> tuple[StepResult, StepResult]:
+    """Measured steps with the present and with the ``proposed`` gains (then put back)."""
+    lp = LOOPS[loop]
+    with preserved(rig, gain_names(lp), chain_changes(rig)):
+        before = _step(rig, lp, amplitude_pct, 0.0, duration_s, None, loop)
+        rig.write(proposed)
+        after = _step(rig, lp, amplitude_pct, 0.0, duration_s, None, loop)
+    return before, after

@@ -159,7 +159,7 @@ def _step(
 ) -> StepResult:
     fs = rig.info.sample_rate_hz
     pre, n = int(0.02 * fs), int(duration * fs)
-    rig.play(np.full(int(0.05 * fs), start), [lp.setpoint])  # settle at the start
+    rig.play(np.full(int(0.1 * fs), start), [lp.setpoint])  # settle at the start
     stimulus = np.concatenate([np.full(pre, start), np.full(n, start + amplitude)])
     band = limit if limit is not None else abs(amplitude) * 2.0 + 5.0
     rec = record(rig, stimulus, [lp.setpoint, lp.actual, lp.output], start, band)
@@ -221,7 +221,8 @@ def static_test(
     """One triangle period ``lo → hi → lo`` (through the valve's own setpoint chain)."""
     fs = rig.info.sample_rate_hz
     half = int(period_s * fs / 2)
-    rise = np.linspace(lo_pct, hi_pct, half)
+    # one override value per millisecond: fine enough for a static test, 5× fewer writes
+    rise = np.repeat(np.linspace(lo_pct, hi_pct, half // 5 + 1), 5)[:half]
     sweep = np.concatenate([rise, rise[::-1]])
     rig.play(np.full(int(0.2 * fs), lo_pct), [STATIC_KEYS[2]])
     try:
@@ -269,6 +270,9 @@ def critical_gain_tune(
         trials: list[tuple[float, float, float]] = []
 
         def trial(kp_raw: int) -> tuple[bool, float]:
+            # from rest, as the manual asks: the safe gains calm the loop first
+            rig.write({k: saved[k] for k in names})
+            rig.play(np.zeros(int(0.05 * rig.info.sample_rate_hz)), [lp.setpoint])
             rig.write({param: kp_raw, lp.prefix + "KI": 0, lp.prefix + "KD": 0})
             ringing, period = _ring(rig, lp, amplitude_pct, limit_pct, window_s)
             trials.append((kp_raw * 0.01, ringing[0], ringing[1]))

@@ -130,11 +130,11 @@ class EmulatorRig(Rig):
         try:
             for start in range(0, len(values), CHUNK):
                 self.check()
-                for value in values[start : start + CHUNK]:
+                for value, run in _runs(values[start : start + CHUNK]):
                     if value != last:
                         valve.write(over.index, over.subindex, value)
                         last = value
-                    valve.advance(valve.CYCLE_S)
+                    valve.advance(run * valve.CYCLE_S)
                 valve.usb_activity()
                 blocks.append(valve.capture_read())
                 self._check_fault()
@@ -153,6 +153,17 @@ class EmulatorRig(Rig):
     def release(self) -> None:
         """Override off."""
         self.write({"SETPOVRON": 0})
+
+
+def _runs(values: list[int]) -> list[tuple[int, int]]:
+    """Run-length encoding: ``[(value, repeats), …]``."""
+    runs: list[tuple[int, int]] = []
+    for value in values:
+        if runs and runs[-1][0] == value:
+            runs[-1] = (value, runs[-1][1] + 1)
+        else:
+            runs.append((value, 1))
+    return runs
 
 
 class SessionRig(Rig):

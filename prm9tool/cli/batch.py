@@ -44,8 +44,8 @@ from prm9tool.errors import (
     Prm9Error,
     TypeKeyError,
 )
-from prm9tool.files.backup import ensure_backup, existing_backups
-from prm9tool.files.prmfile import PrmContents, read_file, write_file
+from prm9tool.files.backup import ensure_backup, existing_backups, write_device_file
+from prm9tool.files.prmfile import PrmContents, check_file, read_file
 
 log = logging.getLogger("prm9tool.cli.batch")
 
@@ -363,6 +363,9 @@ class _UploadJob:
         backups = existing_backups(record.serial)
         latest = new_backup or (backups[-1] if backups else None)
         record.backup = str(latest) if latest else None
+        record.backup_valid = check_file(latest).valid if latest else None
+        if new_backup and not record.backup_valid:
+            self.printer.say(who, f"the valve held an invalid parameter set, kept in {latest}")
         record.failed_step = None
         result = session.upload(values, self.printer.callback(who))
         record.parameters_written, record.failed_step = result.written, result.failed_step
@@ -450,7 +453,7 @@ def _download(args: argparse.Namespace, records: list[ValveRecord]) -> ExitCode:
         raise BatchError(ExitCode.COMMUNICATION, f"download failed: {record.error}") from exc
     contents = PrmContents(TypeKey.parse(info.type_key), values, info.serial, info.firmware or None)
     try:
-        write_file(contents, args.download)
+        problems = write_device_file(contents, args.download)
     except FileFormatError as exc:
         record.error = str(exc)
         clock.finish(record)
@@ -462,4 +465,9 @@ def _download(args: argparse.Namespace, records: list[ValveRecord]) -> ExitCode:
     history.close()
     record.parameters_written = 0
     printer.say(str(record.serial), f"saved {len(values)} parameters to {args.download}")
+    for problem in problems:  # saved as the valve holds them, marked invalid in the file
+        print(
+            f"{args.download}: warning: the valve's set is not valid: {problem.message}",
+            file=sys.stderr,
+        )
     return ExitCode.OK

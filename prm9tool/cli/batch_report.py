@@ -50,6 +50,7 @@ class ValveRecord:
     started: str | None = None  # UTC, ISO 8601 with milliseconds
     finished: str | None = None
     backup: str | None = None
+    backup_valid: bool | None = None  # False: the valve held an invalid set (marked in the file)
     output: str | None = None  # --download: the file written
     changes: int | None = None  # --dry-run: parameters that an upload would change
     error: str | None = None

@@ -27,6 +27,7 @@ EXIT_CODE_TEXT = {
     ExitCode.TYPE_MISMATCH: "the file's type key does not fit the valve",
     ExitCode.COMMUNICATION: "communication error (valve gone, timeout, backup not written)",
     ExitCode.HISTORY: "the history database cannot be used (nothing uploaded with 'refuse')",
+    ExitCode.OUT_OF_LIMITS: "--characterize: a figure is outside the acceptance profile's limits",
 }
 DIFF_EXIT_TEXT = "--diff: 0 equal, 1 they differ, 3 invalid file, 4 no such valve"
 HISTORY_COMMANDS = {
@@ -48,6 +49,8 @@ CAN_OPTIONS = {"--can-interface": "can_interface", "--can-channel": "can_channel
 
 def add_device_options(parser: argparse.ArgumentParser) -> None:
     """Device selection shared by the GUI and the batch mode (one device factory)."""
+    from prm9tool.catalogue.typekey import DEFAULT_EMULATOR_TYPE_KEY  # loaded at start anyway
+
     group = parser.add_argument_group("device selection")
     group.add_argument(
         "--device",
@@ -69,7 +72,8 @@ def add_device_options(parser: argparse.ArgumentParser) -> None:
         nargs="?",
         const="",
         metavar="TYPEKEY[:SERIAL]",
-        help="use an emulated valve of that type (the GUI goes online with it); repeatable",
+        help="use an emulated valve of that type (the GUI goes online with it); repeatable; "
+        f"without TYPEKEY {DEFAULT_EMULATOR_TYPE_KEY}",
     )
     # no defaults here: None means "not given" (usage_problem) and CanOptions fills it in
     group.add_argument(
@@ -144,6 +148,15 @@ def build_parser() -> argparse.ArgumentParser:
     batch.add_argument(
         "--dry-run", action="store_true", help="with --batch: check everything, write nothing"
     )
+    eol = parser.add_argument_group("end-of-line test (no GUI; docs/tuning.md)")
+    eol.add_argument(
+        "--characterize",
+        action="store_true",
+        help="step responses, Bode and static characteristic of one valve (--report OUT.pdf)",
+    )
+    eol.add_argument(
+        "--profile", metavar="LIMITS.toml", help="with --characterize: acceptance profile"
+    )
     add_device_options(parser)
     add_history_options(parser)
     return parser
@@ -156,7 +169,10 @@ def add_history_options(parser: argparse.ArgumentParser) -> None:
         "--diff", nargs="+", metavar="FILE.prm",
         help="compare two *.prm files, or one with the valve of --device/--emulator",
     )  # fmt: skip
-    group.add_argument("--json", action="store_true", help="with --diff, --history: print JSON")
+    group.add_argument(
+        "--json", nargs="?", const=True, metavar="OUT.json",
+        help="with --diff, --history: print JSON; with --characterize: the JSON report file",
+    )  # fmt: skip
     group.add_argument("--history", metavar="SERIAL", help="list the history of a valve")
     group.add_argument(
         "--history-check", action="store_true", help="verify every valve's hash chain"
@@ -195,6 +211,12 @@ def usage_problem(args: argparse.Namespace) -> str | None:
     ``--serve-emulator``, or the one the GUI's emulated -CA valve joins; a file tool takes
     none (an option that would be ignored is an error, not a surprise).
     """
+    if args.characterize:
+        return _characterize_problem(args)
+    if args.profile:
+        return "--profile belongs to --characterize"
+    if isinstance(args.json, str):
+        return "--json OUT.json belongs to --characterize (--diff and --history print JSON)"
     problem = _compare_history_problem(args)
     if problem is not None:
         return problem
@@ -263,6 +285,21 @@ def _serve_problem(args: argparse.Namespace, batch_only: list[str]) -> str | Non
     bad = [n for n in args.node_id if not 1 <= n <= 127]
     if bad:
         return f"--node-id {bad[0]}: CANopen node IDs are 1…127"
+    return None
+
+
+def _characterize_problem(args: argparse.Namespace) -> str | None:
+    options = {**BATCH_ONLY, **FILE_TOOLS, **HISTORY_COMMANDS, "--diff": "diff"}
+    others = [flag for flag, dest in options.items()
+              if dest != "report" and getattr(args, dest) not in (None, False)]  # fmt: skip
+    if args.batch is not None or args.list_devices:
+        others.insert(0, "--batch" if args.batch is not None else "--list-devices")
+    if others:
+        return f"--characterize and {others[0]} are separate commands: use one at a time"
+    if args.file:
+        return f"unexpected file {args.file}: --characterize tests a valve"
+    if args.json is True:
+        return "--characterize writes its JSON report to a file: --json OUT.json"
     return None
 
 
@@ -348,6 +385,10 @@ def main(argv: Sequence[str] | None = None) -> int:
         from prm9tool.cli.serve import run as run_serve
 
         return run_serve(args)
+    if args.characterize:
+        from prm9tool.cli.characterize import run as run_characterize
+
+        return run_characterize(args)
     if args.diff:
         from prm9tool.cli.diff import run as run_diff
 
@@ -366,7 +407,7 @@ def main(argv: Sequence[str] | None = None) -> int:
 
 
 def _load_user_spools() -> TypeKeyError | None:
-    """Extend the spool catalogue with ``<user data dir>/spools.json`` (SPEC §2.2).
+    """Extend the spool catalogue with ``<user data dir>/spools.json`` (type key: manual §8.7.1).
 
     A broken file is reported on standard error (the GUI shows the returned error as well) and
     left out: type keys with the spools the program ships keep working, and one with a

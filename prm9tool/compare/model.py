@@ -142,17 +142,17 @@ class Comparison:
     def filtered(
         self,
         differences_only: bool = False,
-        groups: Iterable[str] | None = None,
+        mnemonics: Iterable[str] | None = None,
         access: Access | None = None,
     ) -> list[Row]:
-        """Rows kept by the filters: only differences, only these catalogue groups (the
-        diagram's blocks), only what the access level shows (Basic hides expert ones)."""
-        wanted = set(groups) if groups is not None else None
+        """Rows kept by the filters: only differences, only these parameters (a block of the
+        diagram), only what the access level shows (Basic hides expert ones)."""
+        wanted = set(mnemonics) if mnemonics is not None else None
         return [
             row
             for row in self.rows
             if (row.differs or not differences_only)
-            and (wanted is None or row.parameter.group in wanted)
+            and (wanted is None or row.mnemonic in wanted)
             and (access is not Access.BASIC or row.parameter.access is Access.BASIC)
         ]
 

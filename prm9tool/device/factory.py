@@ -16,7 +16,7 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
-from prm9tool.catalogue.typekey import TypeKey
+from prm9tool.catalogue.typekey import DEFAULT_EMULATOR_TYPE_KEY, TypeKey
 from prm9tool.device.canlink.bus import CanOptions
 from prm9tool.device.session import ValveSession
 from prm9tool.errors import CanBusError, CommunicationError, Prm9Error, TypeKeyError
@@ -25,7 +25,7 @@ if TYPE_CHECKING:
     from prm9tool.device.emulator import EmulatedValve
 
 log = logging.getLogger("prm9tool.device.factory")
-DEFAULT_EMULATOR_TYPE = "PRM9-06.3Z11/30-24E02S02"
+DEFAULT_EMULATOR_TYPE = DEFAULT_EMULATOR_TYPE_KEY  # one default for the GUI and the CLI
 USB, EMULATOR, CAN, NOT_PRM9 = "usb", "emulator", "can", "not-prm9"
 __all__ = ["CanOptions", "DeviceEntry", "list_devices", "open_session"]
 

@@ -37,6 +37,7 @@ import numpy as np
 
 from prm9tool.catalogue import CATALOGUE, Parameter
 from prm9tool.catalogue.typekey import TypeKey
+from prm9tool.device.emulated import EmulatorControls
 from prm9tool.device.emulator.states import ValveStatus
 from prm9tool.device.entries import (
     STEPS,
@@ -57,11 +58,6 @@ __all__ = [
     "UploadResult",
     "ValveSession",
 ]
-
-
-# control word -> the state it leads to (manual §7.6 step 5, figure 7-13)
-ENABLE_SEQUENCE = ((0x08, "INIT"), (0x09, "DISABLED"), (0x0B, "HOLD"), (0x0F, "DEVICE_MODE_ACTIVE"))
-DISABLE_SEQUENCE = ((0x0B, "HOLD"), (0x09, "DISABLED"), (0x08, "INIT"))
 
 
 class NotAvailableError(Prm9Error):
@@ -191,6 +187,18 @@ class ValveSession(ABC):
     def stream_stop(self) -> None:
         """Stop streaming."""
 
+    @abstractmethod
+    def nmt(self, command: int) -> None:
+        """Send an NMT command (:class:`~prm9tool.catalogue.commissioning.NmtCommand`) to the
+        valve, as its CANopen master would (manual §7.2): start, stop, pre-operational, reset.
+        A valve with CANopen switched off ignores it."""
+
+    @property
+    def emulator(self) -> EmulatorControls | None:
+        """Inputs, switches and faults of an emulated valve behind this link (None for a real
+        one, and for any valve reached over a CAN bus)."""
+        return None
+
     @property
     @abstractmethod
     def closed(self) -> bool:
@@ -199,48 +207,6 @@ class ValveSession(ABC):
     @abstractmethod
     def _close_link(self) -> None:
         """Stop any stream and release the link (called once)."""
-
-    @abstractmethod
-    def _network_start(self) -> None:
-        """NMT start of this node where the link has a network (CANopen)."""
-
-    @abstractmethod
-    def _network_stop(self) -> None:
-        """NMT enter pre-operational where the link has a network (CANopen)."""
-
-    # --- commissioning (manual §7.6 steps 4-5, figure 7-13) --------------------------------
-    def commission(self, timeout_s: float = 2.0) -> ValveStatus:
-        """Start the node and enable the device: control word 08h → 09h → 0Bh → 0Fh, each
-        step waiting for the state (INIT, DISABLED, HOLD, DEVICE_MODE_ACTIVE). The spool then
-        follows its setpoint: only with the user's confirmation. Prm9Error naming the state
-        reached if the valve does not follow (a fault, a missing enable signal)."""
-        self._network_start()
-        for word, state in ENABLE_SEQUENCE:
-            self.write("CONTROLWORD", word)
-            reached = self._await_state(state, timeout_s)
-        return reached
-
-    def decommission(self, timeout_s: float = 2.0) -> ValveStatus:
-        """The reverse: control word 0Bh → 09h → 08h (HOLD, DISABLED, INIT), then NMT
-        pre-operational."""
-        for word, state in DISABLE_SEQUENCE:
-            self.write("CONTROLWORD", word)
-            reached = self._await_state(state, timeout_s)
-        self._network_stop()
-        return reached
-
-    def _await_state(self, state: str, timeout_s: float) -> ValveStatus:
-        deadline = time.monotonic() + timeout_s
-        while True:
-            status = self.status()
-            if status.device_state == state:
-                return status
-            if time.monotonic() > deadline:
-                error = f" ({status.error_text})" if status.error_text else ""
-                raise Prm9Error(
-                    f"the valve did not reach {state}: it is {status.device_state}{error}"
-                )
-            time.sleep(0.01)
 
     def _before_upload(self, params: Sequence[Parameter], cancel: threading.Event | None) -> None:
         """Runs before an upload writes anything (a link that cannot reload the stored set

@@ -10,6 +10,7 @@ from typing import TypeVar
 import numpy as np
 
 from prm9tool.catalogue import Parameter
+from prm9tool.device.emulated import EmulatorControls
 from prm9tool.device.emulator.states import DeviceState, LedState, ValveStatus
 from prm9tool.device.entries import EntryIO, Steps, Value
 from prm9tool.device.protocol import (
@@ -18,6 +19,7 @@ from prm9tool.device.protocol import (
     Done,
     Identify,
     IdentifyReply,
+    Nmt,
     Reload,
     Request,
     Response,
@@ -55,6 +57,15 @@ class UsbSession(ValveSession):
     def transport(self) -> Transport:
         """The link this session talks over (statistics, fault injection in tests)."""
         return self._transport
+
+    @property
+    def emulator(self) -> EmulatorControls | None:
+        """Inputs, switches and faults of an emulated valve (None for a real one)."""
+        from prm9tool.device.transport.emulator import EmulatorTransport
+
+        if not isinstance(self._transport, EmulatorTransport):
+            return None
+        return EmulatorControls(self._transport)
 
     @property
     def closed(self) -> bool:
@@ -120,11 +131,11 @@ class UsbSession(ValveSession):
             text += more.text_chunk
         return _status(reply, text.decode("utf-8", errors="replace"))
 
-    def _network_start(self) -> None:
-        """The USB link is point to point: no NMT (the valve's CAN side is not touched)."""
-
-    def _network_stop(self) -> None:
-        """The USB link is point to point: no NMT."""
+    def nmt(self, command: int) -> None:
+        """Send an NMT command (:class:`~prm9tool.catalogue.commissioning.NmtCommand`) to the
+        valve, as its CANopen master would (manual §7.2): start, stop, pre-operational, reset.
+        A valve with CANopen switched off ignores it."""
+        self._call(Nmt(int(command)), Done)
 
     # --- streaming ------------------------------------------------------------------------
     def stream_start(self, keys: Sequence[str], rate_hz: int = 5000) -> None:

@@ -8,15 +8,18 @@ has no backup yet, it downloads the valve's parameters into
 
 from __future__ import annotations
 
+import os
 import threading
 from collections.abc import Callable, Mapping
+from dataclasses import replace
 from datetime import datetime
 from pathlib import Path
 from typing import Any
 
 from prm9tool.catalogue.typekey import TypeKey
 from prm9tool.errors import FileFormatError, FileProblem
-from prm9tool.files.prmfile import PrmContents, write_file
+from prm9tool.files.atomicfile import atomic_write
+from prm9tool.files.prmfile import BANNER, PrmContents, check_bytes, write_file
 from prm9tool.paths import user_data_dir
 
 Progress = Callable[[int, int, str], None]
@@ -36,7 +39,8 @@ def existing_backups(serial: int) -> list[Path]:
 def write_backup(
     type_key: str, serial: int, firmware: str, values: Mapping[str, int | str]
 ) -> Path:
-    """Write a backup file; raises FileFormatError (nothing written) if that fails."""
+    """Write a backup file of what the valve holds, valid or not (:func:`write_device_file`);
+    raises FileFormatError (nothing written) if the file cannot be written."""
     key = TypeKey.parse(type_key)
     stamp = datetime.now().strftime("%Y%m%d-%H%M%S")
     path = backup_dir(serial) / f"{str(key).replace('/', '_')}_{serial}_{stamp}.prm"
@@ -46,8 +50,45 @@ def write_backup(
         problem = FileProblem(0, f"cannot create the backup folder: {exc.strerror or exc}")
         raise FileFormatError(str(path.parent), [problem]) from exc
     contents = PrmContents(key, dict(values), serial, firmware or None)
-    write_file(contents, path, backup=False)
+    write_device_file(contents, path, backup=False)
     return path
+
+
+def write_device_file(
+    contents: PrmContents, path: str | os.PathLike[str], backup: bool = True
+) -> list[FileProblem]:
+    """Write the values a valve holds, also when they are not a valid parameter set.
+
+    A valid set is written as by :func:`write_file`. A set that breaks the file's rules (a real
+    valve may hold a curve the catalogue rejects) is written all the same, its values exactly
+    as the valve holds them, with a comment block at the top that marks it invalid and names
+    every problem; reading such a file reports those problems, so it is never uploaded as it
+    is. Returns the problems (empty for a valid set). FileFormatError only if writing fails.
+    """
+    text = contents.to_text()
+    errors = check_bytes(text.encode("utf-8")).errors
+    if not errors:
+        write_file(contents, path, backup=backup)
+        return []
+    marked = replace(contents, comments=dict(contents.comments))
+    marked.comments["format"] = [*BANNER, *_invalid_marking(errors)]
+    data = marked.to_text().encode("utf-8")
+    try:
+        atomic_write(Path(path), data, backup=backup)
+    except OSError as exc:
+        problem = FileProblem(0, f"cannot save the file: {exc.strerror or exc}")
+        raise FileFormatError(os.fspath(path), [problem]) from exc
+    return errors
+
+
+def _invalid_marking(errors: list[FileProblem]) -> list[str]:
+    lines = [
+        "#",
+        "# NOT A VALID PARAMETER SET: these are the values the valve held, which break",
+        "# the rules of a parameter file (correct them before uploading this file):",
+    ]
+    lines += [f"#   {problem.message}" for problem in errors]
+    return [*lines, "#"]
 
 
 def ensure_backup(

@@ -94,6 +94,8 @@ def pdo_mappable(variant: Variant) -> set[tuple[int, int]]:
 
 
 def _kind(index: int, entries: tuple[Parameter, ...]) -> ObjectKind:
+    if 0x1400 <= index < 0x1C00:  # PDO parameters: records, also a mapping with no entries
+        return ObjectKind.RECORD
     if len(entries) == 1 and entries[0].subindex == 0:
         return ObjectKind.VAR
     data = [p for p in entries if p.subindex > 0]
@@ -222,7 +224,7 @@ def _object_section(
     subs = len(obj.entries) + (1 if obj.synthesized_sub0 else 0)
     lines = [
         f"[{obj.index:04X}]",
-        f"ParameterName={_ascii(obj.name)}",
+        f"ParameterName={_parameter_name(obj.name)}",
         f"ObjectType=0x{obj.kind.value:X}",
         f"SubNumber=0x{subs:X}",
         "",
@@ -254,7 +256,7 @@ def _variable(
 ) -> list[str]:
     lines = [
         f"[{section}]",
-        f"ParameterName={_ascii(name)}",
+        f"ParameterName={_parameter_name(name)}",
         "ObjectType=0x7",
         f"DataType=0x{param.dtype.value:04X}",
         f"AccessType={param.obj_access.value}",
@@ -287,6 +289,13 @@ def eds_file_name(key: TypeKey) -> str:
 
 
 _ASCII = {"Ω": "Ohm", "µ": "u", "°": "deg", "±": "+/-", "…": "...", "–": "-", "→": "->"}
+
+
+def _parameter_name(text: str) -> str:
+    """A ParameterName value every EDS reader can take: ASCII, and none of ``=`` (naive
+    ``key=value`` readers split at every one), ``;`` or ``#`` (comments in some INI readers)."""
+    text = _ascii(text).replace(" = ", ": ")
+    return text.replace("=", "-").replace(";", ",").replace("#", "No.")
 
 
 def _ascii(text: str) -> str:

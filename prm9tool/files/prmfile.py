@@ -96,12 +96,19 @@ class PrmContents:
         hint: str = "",
     ) -> None:
         lines.extend(self.comments.get(name, leading or []))
+        value = _escape_controls(value)  # values from a device are data, never file structure
         entry = _entry_text(name, value)
         lines.append(entry + self.inline_comments.get(name, hint))
 
 
 # A parameter a valve does not have over CANopen (downloaded from a real valve, docs/can-link.md)
 NOT_AVAILABLE_HINT = "  # not available over CANopen on the valve this was read from"
+
+
+def _escape_controls(value: str) -> str:
+    """``value`` with every control character written as ``\\xNN`` (a CR/LF in a firmware text
+    would otherwise start a new line, i.e. inject an entry)."""
+    return _CONTROL.sub(lambda m: f"\\x{ord(m.group()):02x}", value)
 
 
 def _entry_text(name: str, value: str) -> str:

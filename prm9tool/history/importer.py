@@ -40,7 +40,7 @@ def import_backups(store: HistoryStore, folder: Path | None = None) -> ImportRes
     result = ImportResult()
     files = sorted(root.glob("*/*.prm"), key=_age) if root.is_dir() else []
     for path in files:
-        source = f"{socket.gethostname()}:{path.resolve()}"  # stations share one database
+        source = source_name(path)
         if store.imported(source):
             result.skipped += 1
             continue
@@ -80,6 +80,20 @@ def _import_one(store: HistoryStore, path: Path, source: str) -> None:
         query = select(func.count()).where(ImportedSource.source == source)
         if conn.execute(query).scalar_one():
             raise _AlreadyImportedError  # rolls the record back with it
-        conn.execute(insert(ImportedSource).values(source=source, record_id=record_id))
+        mark_imported(conn, source, record_id)
 
     store.append(entry, mark)
+
+
+def source_name(path: Path) -> str:
+    """How an imported file is remembered: station and absolute path (stations share one
+    database, and their paths may be alike)."""
+    return f"{socket.gethostname()}:{path.resolve()}"
+
+
+def mark_imported(conn: Connection, source: str, record_id: int) -> None:
+    """Remember ``source`` as imported into record ``record_id`` (in the caller's transaction;
+    a source remembered already keeps its first record)."""
+    query = select(func.count()).where(ImportedSource.source == source)
+    if not conn.execute(query).scalar_one():
+        conn.execute(insert(ImportedSource).values(source=source, record_id=record_id))

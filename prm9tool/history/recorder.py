@@ -21,13 +21,15 @@ import threading
 from collections.abc import Mapping
 from datetime import UTC, datetime
 from pathlib import Path
-from typing import Any, Protocol
+from typing import TYPE_CHECKING, Any, Protocol
 
 from prm9tool import __version__
 from prm9tool.errors import HistoryError
 from prm9tool.history.chain import Entry
 from prm9tool.history.config import database_url, queue_path
-from prm9tool.history.store import HistoryStore
+
+if TYPE_CHECKING:
+    from prm9tool.history.store import HistoryStore
 
 log = logging.getLogger("prm9tool.history")
 Raw = int | str
@@ -98,6 +100,8 @@ class Recorder:
 
     def store(self) -> HistoryStore:
         """The open database (opened and migrated on first use); HistoryError if it cannot."""
+        from prm9tool.history.store import HistoryStore  # SQLAlchemy: only when recording
+
         with self._lock:
             if self._store is None:
                 self._store = HistoryStore(self.url)
@@ -131,7 +135,7 @@ class Recorder:
     def add(self, entry: Entry) -> str:
         """Append a prepared entry (database, else the local queue)."""
         try:
-            self.store().append(entry)
+            self.store().append(entry, _marks_backup(entry))
         except HistoryError as exc:
             log.warning("history: %s; the record is kept in %s", exc, self.queue)
             self._enqueue(entry, exc)
@@ -192,7 +196,8 @@ class Recorder:
         lines = [line for line in taken.read_text("utf-8").splitlines() if line.strip()]
         for number, line in enumerate(lines):
             try:
-                store.append(Entry.from_json(json.loads(line)))
+                entry = Entry.from_json(json.loads(line))
+                store.append(entry, _marks_backup(entry))
             except HistoryError:
                 self._requeue(lines[number:])
                 break
@@ -204,3 +209,14 @@ class Recorder:
             queue.write("".join(line + "\n" for line in lines))
             queue.flush()
             os.fsync(queue.fileno())
+
+
+def _marks_backup(entry: Entry) -> Any:
+    """A backup file recorded as it is written is never imported again (importer.py)."""
+    path = entry.details.get("file") if entry.operation == "backup" else None
+    if not path:
+        return None
+    from prm9tool.history.importer import mark_imported, source_name
+
+    source = source_name(Path(path))
+    return lambda conn, record_id: mark_imported(conn, source, record_id)

@@ -56,11 +56,21 @@ class HistoryStore:
         self.shown_url = make_url(url).render_as_string(hide_password=True)
         self.dialect = make_url(url).get_backend_name()
         self.engine = _engine(url, self.dialect)
-        self._guard(self._migrate)
+        try:
+            self._guard(self._migrate)
+        except HistoryError:
+            self.engine.dispose()
+            raise
 
     def close(self) -> None:
         """Release the database connections."""
         self.engine.dispose()
+
+    def __enter__(self) -> HistoryStore:
+        return self
+
+    def __exit__(self, *exc: object) -> None:
+        self.close()
 
     # --- writing --------------------------------------------------------------------------
     def append(

@@ -17,6 +17,7 @@ from prm9tool.catalogue import CATALOGUE, Parameter, Problem, variant_label
 from prm9tool.catalogue.typekey import TypeKey
 from prm9tool.catalogue.variant import Variant
 from prm9tool.errors import ValueRangeError
+from prm9tool.i18n import format_value
 from prm9tool.messages import QT_TRANSLATE_NOOP, Message
 
 Raw = int | str
@@ -129,8 +130,9 @@ class ParameterDocument(QObject):
         return CATALOGUE[mnemonic].default_for(self.variant)
 
     def display(self, mnemonic: str) -> str:
-        """The value as shown to a user (shortest exact decimal, in display units)."""
-        return CATALOGUE[mnemonic].format_display(self.value(mnemonic))
+        """The value as shown to a user (shortest exact decimal, in display units, with the
+        decimal separator of the program language)."""
+        return format_value(CATALOGUE[mnemonic], self.value(mnemonic))
 
     def is_default(self, mnemonic: str) -> bool:
         """True if the value equals the factory default of this variant."""
@@ -162,7 +164,7 @@ class ParameterDocument(QObject):
         self.validate(mnemonic, raw)
         if self._values[mnemonic] == raw:
             return
-        label = text or f"{mnemonic} = {CATALOGUE[mnemonic].format_display(raw)}"
+        label = text or f"{mnemonic} = {format_value(CATALOGUE[mnemonic], raw)}"
         self._commit(Edit(label, {mnemonic: raw}, {mnemonic: self._values[mnemonic]}))
 
     def set_values(

@@ -8,7 +8,7 @@ from __future__ import annotations
 
 from prm9tool.catalogue import CATALOGUE, Access
 from prm9tool.errors import AccessDeniedError
-from prm9tool.messages import QT_TRANSLATE_NOOP
+from prm9tool.messages import QT_TRANSLATE_NOOP, Number
 from prm9tool.model.access import AccessModel
 from prm9tool.model.document import ParameterDocument, Raw
 
@@ -39,5 +39,7 @@ def apply_edit(doc: ParameterDocument, access: AccessModel, mnemonic: str, raw: 
         doc.set_value(mnemonic, raw)
     else:
         unit = f" {param.unit}" if param.unit else ""
-        label = QT_TRANSLATE_NOOP("Edits", "All ramps = {0}{1}")(param.format_display(raw), unit)
+        label = QT_TRANSLATE_NOOP("Edits", "All ramps = {0}{1}")(
+            Number(param.format_display(raw)), unit
+        )
         doc.set_values(dict.fromkeys(targets, raw), label)

@@ -18,13 +18,16 @@ import threading
 import time
 from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from PySide6.QtCore import QObject, Qt, Signal
 
 from prm9tool.errors import CommunicationError, Prm9Error
 from prm9tool.online.polling import Poller, Schedule
 from prm9tool.translate import error_text
+
+if TYPE_CHECKING:
+    from prm9tool.online.recording import HistoryHook
 
 log = logging.getLogger(__name__)
 
@@ -62,6 +65,7 @@ class ValveConnection(QObject):
     write_failed = Signal(list)  # mnemonics whose write failed (the valve state is unknown)
     backup_written = Signal(str)  # path of the backup taken before the first upload
     samples_lost_changed = Signal(int)  # samples the oscilloscope stream lost since it started
+    history_problem = Signal(str)  # a record went to the local queue, or was lost (why)
     _posted = Signal(object)  # a callable the GUI thread runs (results of the worker)
 
     def __init__(
@@ -90,6 +94,28 @@ class ValveConnection(QObject):
         self._stream_keys: list[str] = []  # GUI-side: keys of the running stream
         self._samples_lost = 0  # GUI-side: lost samples of the running stream
         self._posted.connect(self._on_posted, Qt.ConnectionType.QueuedConnection)
+        self.history: HistoryHook | None = None  # set_recorder(); used by the worker only
+
+    def set_recorder(self, recorder: Any) -> None:
+        """Record every operation on the valve's parameter set into this history."""
+        from prm9tool.online.recording import HistoryHook
+
+        report = lambda text: self._post(lambda: self.history_problem.emit(text))  # noqa: E731
+        self.history = HistoryHook(recorder, report)
+
+    def check_history(self) -> None:
+        """Ask whether the history can take records; result: operation_finished("history_check",
+        None or the HistoryError). Runs in the worker (a remote database may be slow)."""
+        hook = self.history
+        self._submit(_Job("history_check", lambda _s: hook.problem() if hook else None))
+
+    def record(self, operation: str, outcome: str, values: Mapping[str, int | str] | None,
+               details: Mapping[str, Any] | None = None) -> None:  # fmt: skip
+        """Record an operation the GUI ran as its own job (e.g. restore factory values)."""
+        if self.history is not None:
+            hook = self.history
+            run = lambda s: hook.add(s, operation, outcome, values, details)  # noqa: E731
+            self._submit(_Job("record", run, None, False))
 
     # --- state --------------------------------------------------------------------------------
     @property
@@ -178,9 +204,17 @@ class ValveConnection(QObject):
         failed = lambda: self.write_failed.emit(names)  # noqa: E731
         self._submit(_Job("write", lambda s: s.write_many(values), None, False, failed))
 
-    def store(self) -> None:
-        """Copy the valve's working values to its non-volatile memory."""
-        self._long_job("store", lambda s: s.store())
+    def store(self, values: Mapping[str, int | str] | None = None) -> None:
+        """Copy the valve's working values to its non-volatile memory; ``values`` (the whole
+        set as the GUI knows it) goes into the history as the stored online edits."""
+        known = None if values is None else dict(values)
+
+        def run(session: Any) -> None:
+            session.store()
+            if self.history is not None:
+                self.history.add(session, "online-edits", "ok", known, {"stored": True})
+
+        self._long_job("store", run)
 
     def read_many(self, mnemonics: Sequence[str], tag: str = "read") -> None:
         """Read values; the result arrives as operation_finished(tag, {mnemonic: raw})."""
@@ -202,17 +236,39 @@ class ValveConnection(QObject):
                 path = ensure_backup(session, self._progress, self._cancel)
                 if path is not None:
                     self._post(lambda: self.backup_written.emit(str(path)))
+                    if self.history is not None:
+                        self.history.backup(session, path)
+            if self.history is not None:
+                return self.history.upload(session, values, self._progress, self._cancel)
             return session.upload(values, self._progress, self._cancel)
 
         self._long_job("upload", run)
 
     def download(self, tag: str = "download") -> None:
         """Read the valve's file parameters; result: operation_finished(tag, {mnemonic: raw})."""
-        self._long_job(tag, lambda s: s.download(self._progress, self._cancel))
+
+        def run(session: Any) -> object:
+            values = session.download(self._progress, self._cancel)
+            if self.history is not None:
+                self.history.download(session, values, tag)
+            return values
+
+        self._long_job(tag, run)
 
     def run_job(self, name: str, work: Callable[[Any], object]) -> None:
         """Run ``work(session)`` as a long operation; result: operation_finished(name, …)."""
         self._long_job(name, work)
+
+    def run(
+        self,
+        name: str,
+        work: Callable[[Any], object],
+        on_done: Callable[[object], None] | None = None,
+    ) -> None:
+        """Run ``work(session)`` in the worker between its polls (a short job: the connection
+        does not become busy); ``on_done(result)`` runs on the GUI thread, a failure arrives
+        as ``failed`` (or ``lost``)."""
+        self._submit(_Job(name, work, on_done, report=False))
 
     def cancel(self) -> None:
         """Ask the running long operation to stop at the next safe point."""

@@ -83,6 +83,10 @@ class ScopeConnection(LinkState, Protocol):
     def write_failed(self) -> SignalInstance:
         """Emitted with the mnemonics of a write the valve refused (after ``failed``)."""
 
+    @property
+    def status_changed(self) -> SignalInstance:
+        """Emitted (≈ 2 Hz) with the valve's status (device state, NMT state, errors)."""
+
     def start_stream(self, keys: Sequence[str], rate_hz: int) -> None:
         """Start streaming ``keys`` at ``rate_hz`` (asynchronous)."""
 

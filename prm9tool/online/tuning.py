@@ -26,6 +26,7 @@ from prm9tool.catalogue import CATALOGUE
 from prm9tool.catalogue.signals import BY_KEY
 from prm9tool.catalogue.typekey import TypeKey
 from prm9tool.errors import Prm9Error
+from prm9tool.i18n import format_number, format_significant
 from prm9tool.model.document import ParameterDocument
 from prm9tool.scope.measure import step_figures
 
@@ -111,7 +112,7 @@ class StepResponse:
             return (
                 translate("StepResponse", "not reached")
                 if value is None
-                else f"{value * 1000.0:.1f} ms"
+                else f"{format_number(value * 1000.0, 1)} ms"
             )
 
         return (
@@ -119,11 +120,11 @@ class StepResponse:
                 "StepResponse",
                 "Step %1 %: overshoot %2 %, rise time %3, settling (±2 %) %4, remaining error %5 %",
             )
-            .replace("%1", f"{self.step_pct:g}")
-            .replace("%2", f"{f.overshoot_pct:.1f}")
+            .replace("%1", format_significant(self.step_pct, 6))
+            .replace("%2", format_number(f.overshoot_pct, 1))
             .replace("%3", ms(f.rise_time_s))
             .replace("%4", ms(f.settling_time_s))
-            .replace("%5", f"{f.steady_error_pct:.1f}")
+            .replace("%5", format_number(f.steady_error_pct, 1))
         )
 
 

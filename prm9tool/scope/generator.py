@@ -14,6 +14,7 @@ import numpy as np
 
 from prm9tool.catalogue import CATALOGUE
 from prm9tool.errors import ValueRangeError
+from prm9tool.i18n import format_significant
 
 
 class Waveform(StrEnum):
@@ -62,7 +63,7 @@ class GeneratorSettings:
                 translate(
                     "GeneratorSettings",
                     "The waveform reaches {0} … {1} %; the setpoint must stay within {2} … {3} %.",
-                ).format(f"{low:g}", f"{high:g}", f"{lo:g}", f"{hi:g}")
+                ).format(*(format_significant(v, 6) for v in (low, high, lo, hi)))
             )
 
     def value_at(self, t: np.ndarray | float) -> np.ndarray:

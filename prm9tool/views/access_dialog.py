@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+from PySide6.QtGui import QShowEvent
 from PySide6.QtWidgets import (
     QApplication,
     QDialog,
@@ -23,6 +24,42 @@ def _password_field() -> QLineEdit:
     return field
 
 
+def grow_to_contents(dialog: QDialog) -> None:
+    """Make ``dialog`` tall enough for its word-wrapped texts at its current width.
+
+    A top-level window sizes itself by its layout's minimum size, which ignores the height a
+    wrapped label needs at a given width; an explanation shown later was then squeezed and
+    clipped (issue 14, item 9).
+    """
+    layout = dialog.layout()
+    if layout is None:
+        return
+    layout.activate()
+    needed = layout.totalHeightForWidth(dialog.width())
+    if layout.hasHeightForWidth() and needed > dialog.height():
+        dialog.setMinimumHeight(needed)
+        dialog.resize(dialog.width(), needed)
+
+
+class _GrowingDialog(QDialog):
+    """A dialog that is never shorter than its wrapped texts need."""
+
+    def _fit(self) -> None:
+        self.setMinimumWidth(self.fontMetrics().averageCharWidth() * 48)
+        grow_to_contents(self)
+
+    def showEvent(self, event: QShowEvent) -> None:
+        """Fit the height to the texts at the width shown."""
+        super().showEvent(event)
+        grow_to_contents(self)
+
+    def show_error(self, label: QLabel, text: str) -> None:
+        """Show ``text`` in ``label`` and grow so that nothing is clipped."""
+        label.setText(text)
+        label.show()
+        grow_to_contents(self)
+
+
 def _error_label() -> QLabel:
     label = QLabel()
     label.setStyleSheet(toned_style("color: #d03030;", QApplication.palette()))
@@ -31,7 +68,7 @@ def _error_label() -> QLabel:
     return label
 
 
-class PasswordDialog(QDialog):
+class PasswordDialog(_GrowingDialog):
     """Asks for the Expert password; accepts only the right one."""
 
     def __init__(self, store: PasswordStore, parent: QWidget | None = None) -> None:
@@ -59,17 +96,17 @@ class PasswordDialog(QDialog):
         layout.addLayout(form)
         layout.addWidget(self.error_label)
         layout.addWidget(buttons)
+        self._fit()
 
     def _on_accepted(self) -> None:
         if self._store.check(self.password.text()):
             self.accept()
             return
-        self.error_label.setText(self.tr("Wrong password."))
-        self.error_label.show()
+        self.show_error(self.error_label, self.tr("Wrong password."))
         self.password.selectAll()
 
 
-class ChangePasswordDialog(QDialog):
+class ChangePasswordDialog(_GrowingDialog):
     """Changes the Expert password (offered only at Expert level)."""
 
     def __init__(self, store: PasswordStore, parent: QWidget | None = None) -> None:
@@ -93,6 +130,7 @@ class ChangePasswordDialog(QDialog):
         layout.addLayout(form)
         layout.addWidget(self.error_label)
         layout.addWidget(buttons)
+        self._fit()
 
     def _problem(self) -> str:
         if not self._store.check(self.old.text()):
@@ -106,8 +144,7 @@ class ChangePasswordDialog(QDialog):
     def _on_accepted(self) -> None:
         problem = self._problem()
         if problem:
-            self.error_label.setText(problem)
-            self.error_label.show()
+            self.show_error(self.error_label, problem)
             return
         self._store.change(self.old.text(), self.new.text())
         self.accept()

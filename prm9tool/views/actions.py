@@ -38,8 +38,6 @@ _ACTIONS: tuple[tuple[str, str, object], ...] = (
     ("download", "download", "Ctrl+D"),
     ("restore_factory", "factory", None),
     ("restart", "restart", None),
-    ("enable_valve", "", None),
-    ("disable_valve", "", None),
     ("hid_configuration", "hid", "Ctrl+H"),
     ("can_bus", "canopen", None),
     ("online", "online", "F5"),
@@ -47,6 +45,9 @@ _ACTIONS: tuple[tuple[str, str, object], ...] = (
     ("help", "help", SK.HelpContents),
     ("homepage", "homepage", None),
     ("about", "about", None),
+    ("compare_file", "", None),
+    ("compare_valve", "", None),
+    ("history", "", None),
 )
 TOOLBAR = (
     "open",
@@ -175,17 +176,6 @@ def _texts() -> dict[str, _Texts]:
                 "Restart the valve electronics (only with the hydraulics disconnected)",
             ),
         ),
-        "enable_valve": _Texts(
-            translate("MainActions", "&Enable valve…"),
-            translate(
-                "MainActions",
-                "Start the node and enable the device: the spool follows its setpoint (§7.6)",
-            ),
-        ),
-        "disable_valve": _Texts(
-            translate("MainActions", "D&isable valve"),
-            translate("MainActions", "Back to INIT and NMT pre-operational"),
-        ),
         "hid_configuration": _Texts(
             translate("MainActions", "&HID configuration…"),
             translate("MainActions", "Choose the valve to communicate with"),
@@ -210,6 +200,20 @@ def _texts() -> dict[str, _Texts]:
         "homepage": _Texts(
             translate("MainActions", "Home&page"),
             translate("MainActions", "Open the manufacturer's homepage"),
+        ),
+        "compare_file": _Texts(
+            translate("MainActions", "Co&mpare with file…"),
+            translate(
+                "MainActions", "Compare the parameters with a *.prm file, take chosen values"
+            ),
+        ),
+        "compare_valve": _Texts(
+            translate("MainActions", "&Compare with valve"),
+            translate("MainActions", "Compare the document with the valve, apply chosen values"),
+        ),
+        "history": _Texts(
+            translate("MainActions", "&History…"),
+            translate("MainActions", "Every operation recorded on a valve's parameters"),
         ),
         "about": _Texts(
             translate("MainActions", "&About prm9tool"),
@@ -258,11 +262,11 @@ class MainActions(QObject):
         """File, View, Valve, Communication, Help (manual §8.5)."""
         layout: dict[str, tuple[str | None, ...]] = {
             "file": ("new", "open", "recent", "save", "save_as", None, "undo", "redo", None,
-                     "print", "export_pdf", "export_dcf", None, "exit"),
+                     "print", "export_pdf", "export_dcf", None, "compare_file", None, "exit"),
             "view": ("view_diagram", "view_parameters", "view_scope", None, "access", "language",
                      None, "canopen", "od_browser"),
-            "valve": ("valve_selection", "valve_status", None, "upload", "download", None,
-                      "restore_factory", "restart", None, "enable_valve", "disable_valve"),
+            "valve": ("valve_selection", "valve_status", None, "upload", "download",
+                      "compare_valve", "history", None, "restore_factory", "restart"),
             "communication": ("hid_configuration", "can_bus", None, "online", "offline"),
             "help": ("help", "homepage", None, "about"),
         }  # fmt: skip

@@ -4,6 +4,8 @@ from __future__ import annotations
 
 from PySide6.QtCore import QCoreApplication
 
+from prm9tool.online.valve_control import blocker_summary, status_blocker
+
 translate = QCoreApplication.translate
 
 
@@ -19,12 +21,15 @@ def emcy_text(code: int, fallback: str = "") -> str:
         0x5411: translate("Emcy", "Solenoid A over-current or disconnected"),
         0x5412: translate("Emcy", "Solenoid B over-current or disconnected"),
         0x7300: translate("Emcy", "Internal position sensor error"),
+        0x8100: translate("Emcy", "CANopen communication error (heartbeat, SYNC or RPDO missing)"),
+        0x8210: translate("Emcy", "CANopen RPDO too short: not processed"),
     }
     return texts.get(code) or fallback or translate("Emcy", "Unknown error")
 
 
 def status_summary(status: object | None) -> str:
-    """``ok`` or the most severe active error, for the status bar (manual §8.8)."""
+    """``ok``, the most severe active error, or why the valve does not follow its setpoint
+    (e.g. waiting for a CANopen master), for the status bar (manual §8.8)."""
     if status is None:
         return ""
     code = int(getattr(status, "error_code", 0) or 0)
@@ -32,4 +37,7 @@ def status_summary(status: object | None) -> str:
         return f"0x{code:04X} {emcy_text(code, str(getattr(status, 'error_text', '')))}"
     if getattr(status, "warning", False):
         return emcy_text(0, str(getattr(status, "error_text", "")))
+    reason = status_blocker(status)
+    if reason is not None:
+        return blocker_summary(reason)
     return translate("Emcy", "ok")

@@ -46,6 +46,7 @@ class FileWorkflow(QObject):
         self._doc = doc
         self._undo = undo
         self._settings = settings
+        self._reading: Path | None = None  # the file being read on a worker thread
 
     # --- settings ----------------------------------------------------------------------------
     def last_folder(self) -> str:
@@ -134,12 +135,22 @@ class FileWorkflow(QObject):
         return self.open_path(Path(path))
 
     def open_path(self, path: Path, ask: bool = True) -> bool:
-        """Open ``path``; a broken file is reported with every problem and changes nothing."""
+        """Open ``path``; a broken file is reported with every problem and changes nothing.
+
+        While a file is being read (the window keeps working), opening another one is refused.
+        """
+        if self._reading is not None:
+            self.message_posted.emit(self.tr("Still reading {0}").format(self._reading.name))
+            return False
         if ask and not self.maybe_save():
             return False
         from prm9tool.files import prmfile  # imported when first needed: faster start-up
 
-        contents = self._read_off_the_gui_thread(path)
+        self._reading = path
+        try:
+            contents = self._read_off_the_gui_thread(path)
+        finally:
+            self._reading = None
         if contents is None:
             self.message_posted.emit(self.tr("Opening {0} cancelled").format(path.name))
             return False

@@ -5,7 +5,7 @@ from __future__ import annotations
 import platform
 
 from PySide6 import __version__ as pyside_version
-from PySide6.QtCore import QEvent, QFile, QUrl, qVersion
+from PySide6.QtCore import QCoreApplication, QEvent, QFile, QUrl, qVersion
 from PySide6.QtGui import QDesktopServices
 from PySide6.QtWidgets import QDialog, QDialogButtonBox, QTextBrowser, QVBoxLayout, QWidget
 
@@ -50,9 +50,22 @@ class HelpWindow(QDialog):
         super().changeEvent(event)
 
 
-def open_homepage() -> bool:
-    """Open the manufacturer's homepage in the browser."""
-    return QDesktopServices.openUrl(QUrl(HOMEPAGE))
+def open_homepage(parent: QWidget | None = None) -> bool:
+    """Open the manufacturer's homepage in the browser; without one, say so and give the
+    address (False)."""
+    if QDesktopServices.openUrl(QUrl(HOMEPAGE)):
+        return True
+    from prm9tool.views import prompts
+
+    prompts.inform(
+        parent,
+        prompts.Icon.Information,
+        QCoreApplication.translate("Help", "Home page"),
+        QCoreApplication.translate(
+            "Help", "No web browser could be started. The home page is {0}"
+        ).format(HOMEPAGE),
+    )
+    return False
 
 
 def _version(package: str) -> str:

@@ -26,13 +26,12 @@ from PySide6.QtWidgets import (
 )
 from shiboken6 import isValid
 
-from prm9tool.catalogue.typekey import TypeKey
+from prm9tool.catalogue.typekey import DEFAULT_EMULATOR_TYPE_KEY, TypeKey
 from prm9tool.translate import error_text
 from prm9tool.views.valve_selection import ValveSelectionDialog
 
 EMULATORS_KEY = "hid/emulators"
 SELECTED_KEY = "hid/selected"
-DEFAULT_EMULATOR_TYPE_KEY = "PRM9-06.3Z11/30-24E02S02-CA"  # also the default of --emulator
 DEFAULT_EMULATOR_SERIAL = 1001
 DEFAULT_EMULATOR = f"{DEFAULT_EMULATOR_TYPE_KEY}:{DEFAULT_EMULATOR_SERIAL}"
 # (emulator specs, deliver): lists the valves off the GUI thread — identifying a USB valve that

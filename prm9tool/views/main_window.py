@@ -10,9 +10,9 @@ from collections.abc import Callable
 from pathlib import Path
 from typing import TYPE_CHECKING
 
-from PySide6.QtCore import QByteArray, QEvent, QSettings, Qt
+from PySide6.QtCore import QByteArray, QEvent, QLocale, QSettings, Qt
 from PySide6.QtGui import QCloseEvent, QDragEnterEvent, QDropEvent
-from PySide6.QtWidgets import QMainWindow, QScrollArea, QStackedWidget, QWidget
+from PySide6.QtWidgets import QApplication, QMainWindow, QScrollArea, QStackedWidget, QWidget
 
 from prm9tool import i18n
 from prm9tool.catalogue import Access
@@ -22,12 +22,14 @@ from prm9tool.model.password import PasswordStore
 from prm9tool.model.undo import DocumentUndo
 from prm9tool.online.connection import ValveConnection
 from prm9tool.online.sync import ValveSync
+from prm9tool.online.valve_control import ValveControl
 from prm9tool.views import prompts
 from prm9tool.views.access_dialog import ChangePasswordDialog, PasswordDialog
 from prm9tool.views.actions import MainActions
-from prm9tool.views.commissioning import Commissioning
+from prm9tool.views.compare_workflow import CompareWorkflow
 from prm9tool.views.dcf_export import DcfExport
 from prm9tool.views.emcy import status_summary
+from prm9tool.views.emulated_valve import EmulatedValveMenu
 from prm9tool.views.file_workflow import FileWorkflow
 from prm9tool.views.help_dialog import HelpWindow, about_html, open_homepage
 from prm9tool.views.icons import icon
@@ -68,11 +70,13 @@ class MainWindow(QMainWindow):
         self.sync = ValveSync(doc, connection, self)
         self.files = FileWorkflow(self, doc, undo, settings)
         self.valve = ValveWorkflow(self, doc, undo, connection, self.sync, settings, access)
+        self.control = ValveControl(connection, self)
         self.records = RecordActions(self)
-        self.commissioning = Commissioning(connection, self)
+        self.compare = CompareWorkflow(self, doc, undo, access, connection, self.sync, self.valve)
         self.dcf = DcfExport(doc, self)
         self.commands = MainActions(self)
         self.commands.build_menus(self.menuBar())
+        self.emulated_menu = EmulatedValveMenu(self.control, doc, self).attach(self.commands)
         self.commands.build_toolbar(self.addToolBar("toolbar"))
         self.status = MainStatusBar(self)
         self.setStatusBar(self.status)
@@ -103,12 +107,14 @@ class MainWindow(QMainWindow):
         view.measuring_point_clicked.connect(self.open_scope)
         view.valve_selection_requested.connect(self.new_document)  # asks about unsaved changes
         view.canopen_requested.connect(self.show_canopen_window)
+        view.tuning_requested.connect(self.show_tuning_window)
         return view
 
     def _make_scope_view(self) -> QWidget:
         from prm9tool.views.scope import ScopeWidget
 
-        self._scope = ScopeWidget(self.connection, self.doc, self)
+        self._scope = ScopeWidget(self.connection, self.doc, self, control=self.control)
+        self._scope.tuning_requested.connect(lambda: self.show_tuning_window("position"))
         return self._scope
 
     def _add_page(self, name: str, view: QWidget) -> None:
@@ -124,6 +130,19 @@ class MainWindow(QMainWindow):
         view = self._make_scope_view()
         self._add_page(name, view)
         return view
+
+    def show_tuning_window(self, loop: str = "position") -> None:
+        """Open (or raise) the Tuning window on ``loop`` (``position`` or ``process``)."""
+        from prm9tool.views.tuning_window import TuningWindow
+
+        window = getattr(self, "tuning_window", None)
+        if window is None or window.doc is not self.doc:
+            window = self.tuning_window = TuningWindow(self.doc, self.connection, self)
+        index = window.loop.findData(loop)
+        if index >= 0 and not window.runner.busy:
+            window.loop.setCurrentIndex(index)
+        window.show()
+        window.raise_()
 
     def open_scope(self, key: str | None = None) -> None:
         """Switch to the oscilloscope (online only) and preselect measuring point ``key``."""
@@ -178,13 +197,14 @@ class MainWindow(QMainWindow):
             "restart": self.valve.restart,
             "hid_configuration": self.valve.configure_hid,
             "can_bus": self.valve.configure_can_bus,
-            "enable_valve": self.commissioning.enable,
-            "disable_valve": self.commissioning.disable,
             "online": lambda: self.valve.go_online(),
             "offline": self.valve.go_offline,
             "help": self.show_help,
-            "homepage": open_homepage,
+            "homepage": lambda: open_homepage(self),
             "about": self.show_about,
+            "compare_file": self.compare.compare_with_file,
+            "compare_valve": self.compare.compare_with_valve,
+            "history": self.compare.show_history,
         }
         for name, handler in handlers.items():
             a[name].triggered.connect(lambda _checked=False, h=handler: h())
@@ -217,7 +237,7 @@ class MainWindow(QMainWindow):
             signal.connect(self._show_file)
         self.files.about_to_replace.connect(self.sync.stop)
         self.files.document_replaced.connect(self.valve.compare_again)
-        for source in (self.files, self.valve, self.records, self.commissioning, self.dcf):
+        for source in (self.files, self.valve, self.records, self.compare, self.dcf):
             source.message_posted.connect(lambda text: s.showMessage(text, 8000))
 
     def show_object_dictionary(self) -> None:
@@ -249,11 +269,10 @@ class MainWindow(QMainWindow):
             "can_bus": not online and not busy,
             "export_dcf": self.doc.variant.canopen,
             "od_browser": ready,
-            "enable_valve": ready,
-            "disable_valve": ready,
             "offline": online,
             "upload": ready,
             "download": ready,
+            "compare_valve": ready,
             "restart": ready,
             "restore_factory": not busy,
             "view_scope": online,
@@ -302,6 +321,8 @@ class MainWindow(QMainWindow):
     def set_language(self, language: str) -> None:
         """Switch the program language now and remember it."""
         i18n.set_language(language)
+        for window in QApplication.topLevelWidgets():  # children without a locale of their own
+            window.setLocale(QLocale(language))  # follow: spin boxes take the new decimal comma
         self.settings.setValue("language", language)
         self.status.clearMessage()  # a message of the language before would stay
         self._update_actions()
@@ -309,7 +330,7 @@ class MainWindow(QMainWindow):
     def show_status_window(self) -> ValveStatusWindow:
         """Show the (non-modal) valve status window."""
         if self.status_window is None:
-            self.status_window = ValveStatusWindow(self.connection, self)
+            self.status_window = ValveStatusWindow(self.connection, self, self.control)
         self.status_window.show()
         self.status_window.raise_()
         return self.status_window

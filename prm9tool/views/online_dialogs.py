@@ -20,7 +20,7 @@ from PySide6.QtWidgets import (
 )
 
 from prm9tool.catalogue import CATALOGUE
-from prm9tool.i18n import text
+from prm9tool.i18n import format_value, text
 
 Raw = int | str
 
@@ -30,6 +30,7 @@ class DiffChoice(Enum):
 
     TAKE_VALVE = "take_valve"
     SEND_DOCUMENT = "send_document"
+    CHOOSE = "choose"  # per parameter, in the compare view
     CANCEL = "cancel"
 
 
@@ -38,7 +39,7 @@ def _cell(mnemonic: str, raw: Raw | None) -> str:
         return "—"
     param = CATALOGUE[mnemonic]
     unit = f" {param.unit}" if param.unit else ""
-    return param.format_display(raw) + unit
+    return format_value(param, raw) + unit
 
 
 class OnlineDiffDialog(QDialog):
@@ -72,8 +73,12 @@ class OnlineDiffDialog(QDialog):
             self.send_button.setToolTip(
                 self.tr("The document is for another valve variant; it cannot be sent.")
             )
+        self.choose_button = QPushButton(self.tr("Choose per parameter…"))
+        self.choose_button.setEnabled(same_variant)
         buttons.addButton(self.take_button, QDialogButtonBox.ButtonRole.AcceptRole)
         buttons.addButton(self.send_button, QDialogButtonBox.ButtonRole.AcceptRole)
+        buttons.addButton(self.choose_button, QDialogButtonBox.ButtonRole.AcceptRole)
+        self.choose_button.clicked.connect(lambda: self._choose(DiffChoice.CHOOSE))
         buttons.addButton(QDialogButtonBox.StandardButton.Cancel)
         self.take_button.clicked.connect(lambda: self._choose(DiffChoice.TAKE_VALVE))
         self.send_button.clicked.connect(lambda: self._choose(DiffChoice.SEND_DOCUMENT))

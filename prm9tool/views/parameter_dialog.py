@@ -22,7 +22,7 @@ from PySide6.QtWidgets import (
 
 from prm9tool.catalogue import CAPPED_BY, CATALOGUE, Access, Parameter
 from prm9tool.errors import AccessDeniedError, ValueRangeError
-from prm9tool.i18n import current_language, text
+from prm9tool.i18n import ambiguous_number, current_language, format_value, text
 from prm9tool.model.access import AccessModel
 from prm9tool.model.document import ParameterDocument, Raw
 from prm9tool.model.editing import apply_edit, linked_mnemonics
@@ -79,7 +79,7 @@ class ParameterEditDialog(QDialog):
                 combo.addItem(f"{code}: {label.get(current_language())}", code)
             combo.setCurrentIndex(max(0, combo.findData(value)))
             return combo
-        line = QLineEdit(self.param.format_display(value))
+        line = QLineEdit(format_value(self.param, value))
         line.selectAll()
         line.textEdited.connect(lambda _text: self._clear_error())
         return line
@@ -112,9 +112,9 @@ class ParameterEditDialog(QDialog):
         self._form_titles["default"].setText(self.tr("Factory default:"))
         self._form_titles["new"].setText(self.tr("New value:"))
         unit = f" {p.unit}" if p.unit else ""
-        self._labels["current"].setText(self._doc.display(p.mnemonic) + unit)
+        self._labels["current"].setText(format_value(p, self._doc.value(p.mnemonic)) + unit)
         self._labels["range"].setText(self._range_text(unit))
-        self._labels["default"].setText(p.format_display(p.default_for(self._doc.variant)) + unit)
+        self._labels["default"].setText(format_value(p, p.default_for(self._doc.variant)) + unit)
         linked = linked_mnemonics(self._doc, self._access, p.mnemonic)
         hint = ""
         if not self.editable:
@@ -137,12 +137,12 @@ class ParameterEditDialog(QDialog):
         p = self.param
         if p.choices:
             return ", ".join(str(code) for code, _label in p.choices)
-        high = p.format_display(p.raw_max) + unit
+        high = format_value(p, p.raw_max) + unit
         cap = CAPPED_BY.get(p.mnemonic) if capped else None
         if cap is not None:  # e.g. LIMTA: "0 … 2600 mA (CURNORM)", what the valve accepts
             limit = min(p.raw_max, int(self._doc.value(cap)))
-            high = f"{p.format_display(limit)}{unit} ({cap})"
-        return f"{p.format_display(p.raw_min)} … {high}"
+            high = f"{format_value(p, limit)}{unit} ({cap})"
+        return f"{format_value(p, p.raw_min)} … {high}"
 
     def changeEvent(self, event: QEvent) -> None:
         """Retranslate when the program language changes."""
@@ -162,6 +162,9 @@ class ParameterEditDialog(QDialog):
         if isinstance(self._editor, QComboBox):
             return int(self._editor.currentData())
         entered = self._editor.text()
+        ambiguous = ambiguous_number(self.param, entered)
+        if ambiguous is not None:
+            raise ValueRangeError(ambiguous)
         try:
             raw = self.param.parse_display(entered)
         except ValueRangeError:

@@ -19,7 +19,9 @@ from PySide6.QtCore import (
 )
 from PySide6.QtGui import QColor, QFont, QGuiApplication, QPalette
 
+from prm9tool import i18n
 from prm9tool.catalogue import CATALOGUE, Access, Parameter
+from prm9tool.catalogue.signals import MEASURED_DECIMALS
 from prm9tool.i18n import current_language, text
 from prm9tool.model.access import AccessModel
 from prm9tool.model.document import ParameterDocument
@@ -54,7 +56,9 @@ def format_value(doc: ParameterDocument, param: Parameter, live: bool) -> str:
         return f"0x{raw:04X}"
     if param.choices and isinstance(raw, int):
         return f"{raw}: {param.choice_text(raw, current_language())}"
-    return param.format_display(raw)
+    if live and not param.in_file and param.unit in MEASURED_DECIMALS and isinstance(raw, int):
+        return i18n.format_measured(raw * param.scale, param.unit)  # as the diagram shows it
+    return i18n.format_value(param, raw)
 
 
 def is_non_default(doc: ParameterDocument, param: Parameter) -> bool:
@@ -168,8 +172,11 @@ class ParameterTableModel(QAbstractTableModel):
         if param.help is not None:
             lines.append(text(param.help))
         if param.in_file and not param.is_string:
-            lo, hi = param.format_display(param.raw_min), param.format_display(param.raw_max)
-            default = param.format_display(param.default_for(self._doc.variant))
+            lo, hi = (
+                i18n.format_value(param, param.raw_min),
+                i18n.format_value(param, param.raw_max),
+            )
+            default = i18n.format_value(param, param.default_for(self._doc.variant))
             lines.append(self.tr("Range: {0} … {1} {2}").format(lo, hi, param.unit).rstrip())
             lines.append(self.tr("Factory default: {0} {1}").format(default, param.unit).rstrip())
         locked = self._lock_reason(param)

@@ -22,7 +22,7 @@ from PySide6.QtGui import (
 )
 from PySide6.QtPrintSupport import QPrinter
 
-from prm9tool.i18n import current_language, text
+from prm9tool.i18n import current_language, format_value, text
 from prm9tool.model.document import ParameterDocument
 
 translate = QCoreApplication.translate
@@ -51,7 +51,7 @@ def record_rows(doc: ParameterDocument) -> list[tuple[str, str, str, str]]:
     rows = []
     for param in doc.parameters():
         raw = doc.value(param.mnemonic)
-        value = param.format_display(raw)
+        value = format_value(param, raw)
         if param.choices and isinstance(raw, int):
             value = f"{raw}: {param.choice_text(raw, current_language())}"
         rows.append((param.mnemonic, text(param.text), value, param.unit))

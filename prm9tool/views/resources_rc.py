@@ -6,7 +6,7 @@
 from PySide6 import QtCore
 
 qt_resource_data = b"\
-\x00\x00\x11x\
+\x00\x00\x137\
 <\
 !DOCTYPE html>\x0a<\
 html lang=\x22cs\x22>\x0a\
@@ -132,163 +132,191 @@ o pro expertn\xc3\xad \
 \xc3\xbarove\xc5\x88.\x0aProgra\
 m ukl\xc3\xa1d\xc3\xa1 pouze\
  jeho osolen\xc3\xbd h\
-ash.</p>\x0a\x0a<h2>On\
-line a offline</\
-h2>\x0a<p>Komunikac\
-e \xe2\x86\x92 HID konfig\
-urace zobraz\xc3\xad v\
-entily p\xc5\x99ipojen\
-\xc3\xa9 p\xc5\x99es USB a e\
-mulovan\xc3\xa9 ventil\
-y;\x0aemulovan\xc3\xbd ve\
-ntil p\xc5\x99id\xc3\xa1te z\
-ad\xc3\xa1n\xc3\xadm typov\xc3\xa9\
-ho kl\xc3\xad\xc4\x8de a v\xc3\xbd\
-robn\xc3\xadho \xc4\x8d\xc3\xadsla\
-. Komunikace \xe2\x86\x92\
- Re\xc5\xbeim online\x0an\
-av\xc3\xa1\xc5\xbee spojen\xc3\xad\
-. Li\xc5\xa1\xc3\xad-li se o\
-tev\xc5\x99en\xc3\xbd z\xc3\xa1zna\
-m parametr\xc5\xaf od \
-ventilu, program\
- zobraz\xc3\xad rozd\xc3\xad\
-ly a\x0azept\xc3\xa1 se, \
-zda p\xc5\x99evz\xc3\xadt ho\
-dnoty ventilu, o\
-deslat hodnoty d\
-okumentu (na\xc4\x8dte\
-n\xc3\xad do ventilu) \
-nebo\x0azru\xc5\xa1it. V \
-re\xc5\xbeimu online j\
-de ka\xc5\xbed\xc3\xa1 zm\xc4\x9bn\
-a ihned do venti\
-lu i do dokument\
-u, v re\xc5\xbeimu off\
-line\x0apouze do do\
-kumentu. Ztrat\xc3\xad\
--li se spojen\xc3\xad \
-s ventilem, prog\
-ram p\xc5\x99ejde do r\
-e\xc5\xbeimu offline a\
-\x0av\xc5\xa1echny hodnot\
-y zachov\xc3\xa1.</p>\x0a\
-<p>Hodnoty zm\xc4\x9bn\
-\xc4\x9bn\xc3\xa9 online jso\
-u ve ventilu akt\
-ivn\xc3\xad, ale je\xc5\xa1t\
-\xc4\x9b neulo\xc5\xbeen\xc3\xa9: \
-p\xc5\x99i p\xc5\x99echodu d\
-o\x0are\xc5\xbeimu offlin\
-e program nab\xc3\xadd\
-ne jejich ulo\xc5\xbee\
-n\xc3\xad. <b>Na\xc4\x8dten\xc3\
-\xad do ventilu</b>\
- zap\xc3\xad\xc5\xa1e v\xc5\xa1ech\
-ny\x0ahodnoty, p\xc5\x99e\
-\xc4\x8dte je zp\xc4\x9bt, p\
-orovn\xc3\xa1 a ulo\xc5\xbe\xc3\
-\xad; ulo\xc5\xbe\xc3\xad se je\
-n tehdy, je-li k\
-a\xc5\xbed\xc3\xa1 hodnota o\
-v\xc4\x9b\xc5\x99ena.\x0aP\xc5\x99ed \
-prvn\xc3\xadm na\xc4\x8dten\xc3\
-\xadm do ventilu pr\
-ogram ulo\xc5\xbe\xc3\xad z\xc3\
-\xa1lohu vlastn\xc3\xadch\
- parametr\xc5\xaf vent\
-ilu do slo\xc5\xbeky\x0au\
-\xc5\xbeivatelsk\xc3\xbdch d\
-at (<code>backup\
-s/&lt;v\xc3\xbdrobn\xc3\xad \
-\xc4\x8d\xc3\xadslo&gt;/</co\
-de>).</p>\x0a<p><b>\
-Restart ventilu<\
-/b> a <b>Obnoven\
-\xc3\xad tov\xc3\xa1rn\xc3\xadho n\
-astaven\xc3\xad</b> js\
-ou dovoleny pouz\
-e p\xc5\x99i\x0aodpojen\xc3\xa9\
-m hydraulick\xc3\xa9m \
-obvodu; program \
-v\xc3\xa1s po\xc5\xbe\xc3\xa1d\xc3\xa1 o\
- potvrzen\xc3\xad.</p>\
-\x0a\x0a<h2>Soubory</h\
-2>\x0a<p>Z\xc3\xa1znamy p\
-arametr\xc5\xaf (<code\
->*.prm</code>) j\
-sou textov\xc3\xa9 sou\
-bory. Otev\xc5\x99\xc3\xadt,\
- Ulo\xc5\xbeit, Ulo\xc5\xbei\
-t jako,\x0anaposled\
-y otev\xc5\x99en\xc3\xa9 sou\
-bory a p\xc5\x99eta\xc5\xbee\
-n\xc3\xad my\xc5\xa1\xc3\xad fungu\
-j\xc3\xad obvykl\xc3\xbdm zp\
-\xc5\xafsobem; p\xc5\x99ed z\
-tr\xc3\xa1tou\x0aneulo\xc5\xbee\
-n\xc3\xbdch zm\xc4\x9bn se p\
-rogram zept\xc3\xa1. K\
-a\xc5\xbedou zm\xc4\x9bnu lz\
-e vr\xc3\xa1tit (Ctrl+\
-Z) a znovu prov\xc3\
-\xa9st\x0a(Ctrl+Y). So\
-ubor \xe2\x86\x92 Tisk a \
-Soubor \xe2\x86\x92 Expor\
-t do PDF vytvo\xc5\x99\
-\xc3\xad protokol para\
-metr\xc5\xaf s typov\xc3\xbd\
-m kl\xc3\xad\xc4\x8dem,\x0av\xc3\xbdr\
-obn\xc3\xadm \xc4\x8d\xc3\xadslem,\
- firmware, soubo\
-rem, datem, \xc3\xbaro\
-vn\xc3\xad opr\xc3\xa1vn\xc4\x9bn\xc3\
-\xad, postupov\xc3\xbdm d\
-iagramem a v\xc5\xa1em\
-i\x0aparametry s je\
-dnotkami.</p>\x0a\x0a<\
-h2>Kl\xc3\xa1vesnice</\
-h2>\x0a<table>\x0a<tr>\
-<td>Ctrl+O / Ctr\
-l+S / Ctrl+Shift\
-+S</td><td>Otev\xc5\
-\x99\xc3\xadt / Ulo\xc5\xbeit /\
- Ulo\xc5\xbeit jako</t\
-d></tr>\x0a<tr><td>\
-Ctrl+Z / Ctrl+Y<\
-/td><td>Zp\xc4\x9bt / \
-Znovu</td></tr>\x0a\
-<tr><td>Ctrl+P /\
- Ctrl+E</td><td>\
-Tisk / Export do\
- PDF</td></tr>\x0a<\
-tr><td>Ctrl+1 / \
-Ctrl+2 / Ctrl+3 \
-/ Ctrl+4</td><td\
->Postupov\xc3\xbd diag\
-ram / Seznam par\
-ametr\xc5\xaf / Oscilo\
-skop / Okno CANo\
-pen</td></tr>\x0a<t\
-r><td>F5 / Shift\
-+F5</td><td>Re\xc5\xbe\
-im online / Re\xc5\xbe\
-im offline</td><\
-/tr>\x0a<tr><td>Ctr\
-l+U / Ctrl+D</td\
-><td>Na\xc4\x8dten\xc3\xad d\
-o ventilu / Sta\xc5\
-\xbeen\xc3\xad z ventilu<\
-/td></tr>\x0a<tr><t\
-d>Ctrl+T / Ctrl+\
-I / Ctrl+H</td><\
-td>V\xc3\xbdb\xc4\x9br venti\
-lu / Stav ventil\
-u / HID konfigur\
-ace</td></tr>\x0a</\
-table>\x0a</body>\x0a<\
-/html>\x0a\
-\x00\x00\x11\xc9\
+ash.</p>\x0a<p>\xc3\x9aro\
+vn\xc4\x9b opr\xc3\xa1vn\xc4\x9bn\xc3\
+\xad chr\xc3\xa1n\xc3\xad p\xc5\x99ed\
+ ne\xc3\xbamysln\xc3\xbdmi z\
+m\xc4\x9bnami, ne p\xc5\x99e\
+d t\xc3\xadm, kdo m\xc5\xaf\xc5\
+\xbee upravovat nas\
+taven\xc3\xad\x0aprogramu\
+: odstran\xc4\x9bn\xc3\xadm \
+polo\xc5\xbeky <code>a\
+ccess/expert_pas\
+sword</code> z n\
+astaven\xc3\xad plat\xc3\xad\
+ op\xc4\x9bt heslo\x0ap\xc5\x99\
+i dod\xc3\xa1n\xc3\xad. Soub\
+or parametr\xc5\xaf ob\
+sahuje v\xc5\xa1echny \
+hodnoty bez ohle\
+du na \xc3\xbarove\xc5\x88: \
+pokud u\xc5\xbeivatel \
+na\x0az\xc3\xa1kladn\xc3\xad \xc3\xba\
+rovni odes\xc3\xadl\xc3\xa1 \
+dokument, jeho\xc5\xbe\
+ hodnoty expertn\
+\xc3\xad \xc3\xbarovn\xc4\x9b se l\
+i\xc5\xa1\xc3\xad od hodnot \
+ventilu,\x0aprogram\
+ se nejprve zept\
+\xc3\xa1.</p>\x0a\x0a<h2>Onl\
+ine a offline</h\
+2>\x0a<p>Komunikace\
+ \xe2\x86\x92 HID konfigu\
+race zobraz\xc3\xad ve\
+ntily p\xc5\x99ipojen\xc3\
+\xa9 p\xc5\x99es USB a em\
+ulovan\xc3\xa9 ventily\
+;\x0aemulovan\xc3\xbd ven\
+til p\xc5\x99id\xc3\xa1te za\
+d\xc3\xa1n\xc3\xadm typov\xc3\xa9h\
+o kl\xc3\xad\xc4\x8de a v\xc3\xbdr\
+obn\xc3\xadho \xc4\x8d\xc3\xadsla.\
+ Komunikace \xe2\x86\x92 \
+Re\xc5\xbeim online\x0ana\
+v\xc3\xa1\xc5\xbee spojen\xc3\xad.\
+ Li\xc5\xa1\xc3\xad-li se ot\
+ev\xc5\x99en\xc3\xbd z\xc3\xa1znam\
+ parametr\xc5\xaf od v\
+entilu, program \
+zobraz\xc3\xad rozd\xc3\xadl\
+y a\x0azept\xc3\xa1 se, z\
+da p\xc5\x99evz\xc3\xadt hod\
+noty ventilu, od\
+eslat hodnoty do\
+kumentu (na\xc4\x8dten\
+\xc3\xad do ventilu) n\
+ebo\x0azru\xc5\xa1it. V r\
+e\xc5\xbeimu online jd\
+e ka\xc5\xbed\xc3\xa1 zm\xc4\x9bna\
+ ihned do ventil\
+u i do dokumentu\
+, v re\xc5\xbeimu offl\
+ine\x0apouze do dok\
+umentu. Ztrat\xc3\xad-\
+li se spojen\xc3\xad s\
+ ventilem, progr\
+am p\xc5\x99ejde do re\
+\xc5\xbeimu offline a\x0a\
+v\xc5\xa1echny hodnoty\
+ zachov\xc3\xa1.</p>\x0a<\
+p>Hodnoty zm\xc4\x9bn\xc4\
+\x9bn\xc3\xa9 online jsou\
+ ve ventilu akti\
+vn\xc3\xad, ale je\xc5\xa1t\xc4\
+\x9b neulo\xc5\xbeen\xc3\xa9: p\
+\xc5\x99i p\xc5\x99echodu do\
+\x0are\xc5\xbeimu offline\
+ program nab\xc3\xaddn\
+e jejich ulo\xc5\xbeen\
+\xc3\xad. <b>Na\xc4\x8dten\xc3\xad\
+ do ventilu</b> \
+zap\xc3\xad\xc5\xa1e v\xc5\xa1echn\
+y\x0ahodnoty, p\xc5\x99e\xc4\
+\x8dte je zp\xc4\x9bt, po\
+rovn\xc3\xa1 a ulo\xc5\xbe\xc3\xad\
+; ulo\xc5\xbe\xc3\xad se jen\
+ tehdy, je-li ka\
+\xc5\xbed\xc3\xa1 hodnota ov\
+\xc4\x9b\xc5\x99ena.\x0aP\xc5\x99ed p\
+rvn\xc3\xadm na\xc4\x8dten\xc3\xad\
+m do ventilu pro\
+gram ulo\xc5\xbe\xc3\xad z\xc3\xa1\
+lohu vlastn\xc3\xadch \
+parametr\xc5\xaf venti\
+lu do slo\xc5\xbeky\x0au\xc5\
+\xbeivatelsk\xc3\xbdch da\
+t (<code>backups\
+/&lt;v\xc3\xbdrobn\xc3\xad \xc4\
+\x8d\xc3\xadslo&gt;/</cod\
+e>).</p>\x0a<p><b>R\
+estart ventilu</\
+b> a <b>Obnoven\xc3\
+\xad tov\xc3\xa1rn\xc3\xadho na\
+staven\xc3\xad</b> jso\
+u dovoleny pouze\
+ p\xc5\x99i\x0aodpojen\xc3\xa9m\
+ hydraulick\xc3\xa9m o\
+bvodu; program v\
+\xc3\xa1s po\xc5\xbe\xc3\xa1d\xc3\xa1 o \
+potvrzen\xc3\xad.</p>\x0a\
+\x0a<h2>Soubory</h2\
+>\x0a<p>Z\xc3\xa1znamy pa\
+rametr\xc5\xaf (<code>\
+*.prm</code>) js\
+ou textov\xc3\xa9 soub\
+ory. Otev\xc5\x99\xc3\xadt, \
+Ulo\xc5\xbeit, Ulo\xc5\xbeit\
+ jako,\x0anaposledy\
+ otev\xc5\x99en\xc3\xa9 soub\
+ory a p\xc5\x99eta\xc5\xbeen\
+\xc3\xad my\xc5\xa1\xc3\xad funguj\
+\xc3\xad obvykl\xc3\xbdm zp\xc5\
+\xafsobem; p\xc5\x99ed zt\
+r\xc3\xa1tou\x0aneulo\xc5\xbeen\
+\xc3\xbdch zm\xc4\x9bn se pr\
+ogram zept\xc3\xa1. Ka\
+\xc5\xbedou zm\xc4\x9bnu lze\
+ vr\xc3\xa1tit (Ctrl+Z\
+) a znovu prov\xc3\xa9\
+st\x0a(Ctrl+Y). Sou\
+bor \xe2\x86\x92 Tisk a S\
+oubor \xe2\x86\x92 Export\
+ do PDF vytvo\xc5\x99\xc3\
+\xad protokol param\
+etr\xc5\xaf s typov\xc3\xbdm\
+ kl\xc3\xad\xc4\x8dem,\x0av\xc3\xbdro\
+bn\xc3\xadm \xc4\x8d\xc3\xadslem, \
+firmware, soubor\
+em, datem, \xc3\xbarov\
+n\xc3\xad opr\xc3\xa1vn\xc4\x9bn\xc3\xad\
+, postupov\xc3\xbdm di\
+agramem a v\xc5\xa1emi\
+\x0aparametry s jed\
+notkami.</p>\x0a\x0a<h\
+2>Kl\xc3\xa1vesnice</h\
+2>\x0a<table>\x0a<tr><\
+td>Ctrl+O / Ctrl\
++S / Ctrl+Shift+\
+S</td><td>Otev\xc5\x99\
+\xc3\xadt / Ulo\xc5\xbeit / \
+Ulo\xc5\xbeit jako</td\
+></tr>\x0a<tr><td>C\
+trl+Z / Ctrl+Y</\
+td><td>Zp\xc4\x9bt / Z\
+novu</td></tr>\x0a<\
+tr><td>Ctrl+P / \
+Ctrl+E</td><td>T\
+isk / Export do \
+PDF</td></tr>\x0a<t\
+r><td>Ctrl+1 / C\
+trl+2 / Ctrl+3 /\
+ Ctrl+4</td><td>\
+Postupov\xc3\xbd diagr\
+am / Seznam para\
+metr\xc5\xaf / Oscilos\
+kop / Okno CANop\
+en</td></tr>\x0a<tr\
+><td>F5 / Shift+\
+F5</td><td>Re\xc5\xbei\
+m online / Re\xc5\xbei\
+m offline</td></\
+tr>\x0a<tr><td>Ctrl\
++U / Ctrl+D</td>\
+<td>Na\xc4\x8dten\xc3\xad do\
+ ventilu / Sta\xc5\xbe\
+en\xc3\xad z ventilu</\
+td></tr>\x0a<tr><td\
+>Ctrl+T / Ctrl+I\
+ / Ctrl+H</td><t\
+d>V\xc3\xbdb\xc4\x9br ventil\
+u / Stav ventilu\
+ / HID konfigura\
+ce</td></tr>\x0a</t\
+able>\x0a</body>\x0a</\
+html>\x0a\
+\x00\x00\x13\xb1\
 <\
 !DOCTYPE html>\x0a<\
 html lang=\x22de\x22>\x0a\
@@ -417,165 +445,196 @@ wort \xc3\xa4ndern. Da\
 s Programm speic\
 hert nur einen\x0ag\
 esalzenen Hash d\
-avon.</p>\x0a\x0a<h2>O\
-nline und offlin\
-e</h2>\x0a<p>Kommun\
-ikation \xe2\x86\x92 HID-\
-Konfiguration li\
-stet die \xc3\xbcber U\
-SB angeschlossen\
-en und die emuli\
-erten\x0aVentile; e\
-in emuliertes Ve\
-ntil f\xc3\xbcgen Sie \
-mit Typschl\xc3\xbcsse\
-l und Seriennumm\
-er hinzu.\x0aKommun\
-ikation \xe2\x86\x92 Onli\
-ne-Modus verbind\
-et. Weicht der g\
-e\xc3\xb6ffnete Parame\
-tersatz vom Vent\
-il ab,\x0azeigt das\
- Programm die Un\
-terschiede und f\
-ragt, ob die Wer\
-te des Ventils \xc3\
-\xbcbernommen, die\x0a\
-Werte des Dokume\
-nts gesendet (Ho\
-chladen) oder ab\
-gebrochen werden\
- soll. Online ge\
-ht jede\x0a\xc3\x84nderun\
-g sofort an das \
-Ventil und in da\
-s Dokument, offl\
-ine nur in das D\
-okument. Geht di\
-e\x0aVerbindung ver\
-loren, schaltet \
-das Programm auf\
- offline und beh\
-\xc3\xa4lt alle Werte.\
-</p>\x0a<p>Online g\
-e\xc3\xa4nderte Werte \
-sind im Ventil a\
-ktiv, aber noch \
-nicht gespeicher\
-t: beim Wechsel\x0a\
-auf offline biet\
-et das Programm \
-an, sie zu speic\
-hern. <b>In das \
-Ventil hochladen\
-</b>\x0aschreibt al\
-le Werte, liest \
-sie zur\xc3\xbcck, ver\
-gleicht und spei\
-chert sie; gespe\
-ichert wird nur,\
-\x0awenn jeder Wert\
- best\xc3\xa4tigt wurd\
-e. Vor dem erste\
-n Hochladen in e\
-in Ventil sicher\
-t das\x0aProgramm d\
-essen eigene Par\
-ameter im Benutz\
-erdatenordner (<\
-code>backups/&lt\
-;Seriennummer&gt\
-;/</code>).</p>\x0a\
-<p><b>Ventil neu\
- starten</b> und\
- <b>Werkseinstel\
-lungen wiederher\
-stellen</b> sind\
- nur bei\x0agetrenn\
-ter Hydraulik er\
-laubt; das Progr\
-amm l\xc3\xa4sst Sie d\
-as best\xc3\xa4tigen.<\
-/p>\x0a\x0a<h2>Dateien\
-</h2>\x0a<p>Paramet\
-erdateien (<code\
->*.prm</code>) s\
-ind Textdateien.\
- \xc3\x96ffnen, Speich\
-ern, Speichern\x0au\
-nter, die zuletz\
-t ge\xc3\xb6ffneten Da\
-teien und Drag &\
-amp; Drop funkti\
-onieren wie gewo\
-hnt; vor dem\x0aVer\
-lust ungespeiche\
-rter \xc3\x84nderungen\
- fragt das Progr\
-amm nach. Jede \xc3\
-\x84nderung l\xc3\xa4sst \
-sich\x0ar\xc3\xbcckg\xc3\xa4ngi\
-g machen (Strg+Z\
-) und wiederhers\
-tellen (Strg+Y).\
- Datei \xe2\x86\x92 Druck\
-en und Datei \xe2\x86\x92\
- PDF\x0aexportieren\
- erzeugen ein Pa\
-rameterprotokoll\
- mit Typschl\xc3\xbcss\
-el, Seriennummer\
-, Firmware, Date\
-i,\x0aDatum, Berech\
-tigungsstufe, de\
-m Ablaufdiagramm\
- und allen Param\
-etern mit Einhei\
-t.</p>\x0a\x0a<h2>Tast\
-atur</h2>\x0a<table\
->\x0a<tr><td>Strg+O\
- / Strg+S / Strg\
-+Umschalt+S</td>\
-<td>\xc3\x96ffnen / Sp\
-eichern / Speich\
-ern unter</td></\
-tr>\x0a<tr><td>Strg\
-+Z / Strg+Y</td>\
-<td>R\xc3\xbcckg\xc3\xa4ngig\
- / Wiederherstel\
-len</td></tr>\x0a<t\
-r><td>Strg+P / S\
-trg+E</td><td>Dr\
-ucken / PDF expo\
-rtieren</td></tr\
->\x0a<tr><td>Strg+1\
- / Strg+2 / Strg\
-+3 / Strg+4</td>\
-<td>Ablaufdiagra\
-mm / Parameterli\
-ste / Oszillosko\
-p / CANopen-Fens\
-ter</td></tr>\x0a<t\
-r><td>F5 / Umsch\
-alt+F5</td><td>O\
-nline / Offline<\
+avon.</p>\x0a<p>Die\
+ Berechtigungsst\
+ufen sch\xc3\xbctzen v\
+or versehentlich\
+en \xc3\x84nderungen, \
+nicht vor jemand\
+em, der die\x0aEins\
+tellungen des Pr\
+ogramms bearbeit\
+en kann: Wird de\
+r Eintrag\x0a<code>\
+access/expert_pa\
+ssword</code> au\
+s den Einstellun\
+gen entfernt, gi\
+lt wieder das Pa\
+sswort\x0ades Ausli\
+eferungszustands\
+. Eine Parameter\
+datei enth\xc3\xa4lt a\
+lle Werte, unabh\
+\xc3\xa4ngig von der S\
+tufe:\x0aSendet ein\
+ Benutzer der St\
+ufe Basis ein Do\
+kument, dessen E\
+xpertenwerte von\
+ denen des Venti\
+ls\x0aabweichen, fr\
+agt das Programm\
+ zuerst nach.</p\
+>\x0a\x0a<h2>Online un\
+d offline</h2>\x0a<\
+p>Kommunikation \
+\xe2\x86\x92 HID-Konfigur\
+ation listet die\
+ \xc3\xbcber USB anges\
+chlossenen und d\
+ie emulierten\x0aVe\
+ntile; ein emuli\
+ertes Ventil f\xc3\xbc\
+gen Sie mit Typs\
+chl\xc3\xbcssel und Se\
+riennummer hinzu\
+.\x0aKommunikation \
+\xe2\x86\x92 Online-Modus\
+ verbindet. Weic\
+ht der ge\xc3\xb6ffnet\
+e Parametersatz \
+vom Ventil ab,\x0az\
+eigt das Program\
+m die Unterschie\
+de und fragt, ob\
+ die Werte des V\
+entils \xc3\xbcbernomm\
+en, die\x0aWerte de\
+s Dokuments gese\
+ndet (Hochladen)\
+ oder abgebroche\
+n werden soll. O\
+nline geht jede\x0a\
+\xc3\x84nderung sofort\
+ an das Ventil u\
+nd in das Dokume\
+nt, offline nur \
+in das Dokument.\
+ Geht die\x0aVerbin\
+dung verloren, s\
+chaltet das Prog\
+ramm auf offline\
+ und beh\xc3\xa4lt all\
+e Werte.</p>\x0a<p>\
+Online ge\xc3\xa4ndert\
+e Werte sind im \
+Ventil aktiv, ab\
+er noch nicht ge\
+speichert: beim \
+Wechsel\x0aauf offl\
+ine bietet das P\
+rogramm an, sie \
+zu speichern. <b\
+>In das Ventil h\
+ochladen</b>\x0asch\
+reibt alle Werte\
+, liest sie zur\xc3\
+\xbcck, vergleicht \
+und speichert si\
+e; gespeichert w\
+ird nur,\x0awenn je\
+der Wert best\xc3\xa4t\
+igt wurde. Vor d\
+em ersten Hochla\
+den in ein Venti\
+l sichert das\x0aPr\
+ogramm dessen ei\
+gene Parameter i\
+m Benutzerdateno\
+rdner (<code>bac\
+kups/&lt;Serienn\
+ummer&gt;/</code\
+>).</p>\x0a<p><b>Ve\
+ntil neu starten\
+</b> und <b>Werk\
+seinstellungen w\
+iederherstellen<\
+/b> sind nur bei\
+\x0agetrennter Hydr\
+aulik erlaubt; d\
+as Programm l\xc3\xa4s\
+st Sie das best\xc3\
+\xa4tigen.</p>\x0a\x0a<h2\
+>Dateien</h2>\x0a<p\
+>Parameterdateie\
+n (<code>*.prm</\
+code>) sind Text\
+dateien. \xc3\x96ffnen\
+, Speichern, Spe\
+ichern\x0aunter, di\
+e zuletzt ge\xc3\xb6ff\
+neten Dateien un\
+d Drag &amp; Dro\
+p funktionieren \
+wie gewohnt; vor\
+ dem\x0aVerlust ung\
+espeicherter \xc3\x84n\
+derungen fragt d\
+as Programm nach\
+. Jede \xc3\x84nderung\
+ l\xc3\xa4sst sich\x0ar\xc3\xbc\
+ckg\xc3\xa4ngig machen\
+ (Strg+Z) und wi\
+ederherstellen (\
+Strg+Y). Datei \xe2\
+\x86\x92 Drucken und D\
+atei \xe2\x86\x92 PDF\x0aexp\
+ortieren erzeuge\
+n ein Parameterp\
+rotokoll mit Typ\
+schl\xc3\xbcssel, Seri\
+ennummer, Firmwa\
+re, Datei,\x0aDatum\
+, Berechtigungss\
+tufe, dem Ablauf\
+diagramm und all\
+en Parametern mi\
+t Einheit.</p>\x0a\x0a\
+<h2>Tastatur</h2\
+>\x0a<table>\x0a<tr><t\
+d>Strg+O / Strg+\
+S / Strg+Umschal\
+t+S</td><td>\xc3\x96ff\
+nen / Speichern \
+/ Speichern unte\
+r</td></tr>\x0a<tr>\
+<td>Strg+Z / Str\
+g+Y</td><td>R\xc3\xbcc\
+kg\xc3\xa4ngig / Wiede\
+rherstellen</td>\
+</tr>\x0a<tr><td>St\
+rg+P / Strg+E</t\
+d><td>Drucken / \
+PDF exportieren<\
 /td></tr>\x0a<tr><t\
-d>Strg+U / Strg+\
-D</td><td>In das\
- Ventil hochlade\
-n / Aus dem Vent\
-il herunterladen\
-</td></tr>\x0a<tr><\
-td>Strg+T / Strg\
-+I / Strg+H</td>\
-<td>Ventilauswah\
-l / Ventilstatus\
- / HID-Konfigura\
-tion</td></tr>\x0a<\
-/table>\x0a</body>\x0a\
-</html>\x0a\
-\x00\x00\x0f\x82\
+d>Strg+1 / Strg+\
+2 / Strg+3 / Str\
+g+4</td><td>Abla\
+ufdiagramm / Par\
+ameterliste / Os\
+zilloskop / CANo\
+pen-Fenster</td>\
+</tr>\x0a<tr><td>F5\
+ / Umschalt+F5</\
+td><td>Online / \
+Offline</td></tr\
+>\x0a<tr><td>Strg+U\
+ / Strg+D</td><t\
+d>In das Ventil \
+hochladen / Aus \
+dem Ventil herun\
+terladen</td></t\
+r>\x0a<tr><td>Strg+\
+T / Strg+I / Str\
+g+H</td><td>Vent\
+ilauswahl / Vent\
+ilstatus / HID-K\
+onfiguration</td\
+></tr>\x0a</table>\x0a\
+</body>\x0a</html>\x0a\
+\
+\x00\x00\x10\xfd\
 <\
 !DOCTYPE html>\x0a<\
 html lang=\x22en\x22>\x0a\
@@ -688,144 +747,167 @@ level with View \
 rt password. The\
  program keeps o\
 nly a\x0asalted has\
-h of it.</p>\x0a\x0a<h\
-2>Online and off\
-line</h2>\x0a<p>Com\
-munication \xe2\x86\x92 H\
-ID configuration\
- lists the valve\
-s connected over\
- USB and the emu\
-lated\x0avalves; ad\
-d an emulated va\
-lve with its typ\
-e key and serial\
- number. Communi\
-cation \xe2\x86\x92 Onlin\
-e\x0amode connects.\
- If the open par\
-ameter set diffe\
-rs from the valv\
-e's, the program\
- lists the\x0adiffe\
-rences and asks \
-whether to take \
-the valve's valu\
-es, send the doc\
-ument's values\x0a(\
-upload) or cance\
-l. Online, every\
- change goes to \
-the valve at onc\
-e and into the d\
-ocument;\x0aoffline\
-, into the docum\
-ent only. If the\
- valve is lost, \
-the program goes\
- offline and kee\
-ps\x0aevery value.<\
-/p>\x0a<p>Values ch\
-anged online are\
- active in the v\
-alve but not yet\
- stored: going o\
-ffline offers to\
-\x0astore them. <b>\
-Upload to valve<\
-/b> writes all v\
-alues, reads the\
-m back, compares\
- and stores\x0athem\
-; nothing is sto\
-red unless every\
- value was verif\
-ied. Before the \
-first upload to \
-a valve\x0athe prog\
-ram saves a back\
-up of the valve'\
-s own parameters\
- in the user dat\
-a folder\x0a(<code>\
-backups/&lt;seri\
-al&gt;/</code>).\
-</p>\x0a<p><b>Resta\
-rt valve</b> and\
- <b>Restore fact\
-ory values</b> a\
-re allowed only \
-with the\x0ahydraul\
-ics disconnected\
-; the program as\
-ks you to confir\
-m this.</p>\x0a\x0a<h2\
->Files</h2>\x0a<p>P\
-arameter files (\
-<code>*.prm</cod\
-e>) are text fil\
-es. Open, Save, \
-Save As, the rec\
-ent\x0afiles and dr\
-ag and drop work\
- as usual; the p\
-rogram asks befo\
-re unsaved chang\
-es are lost.\x0aEve\
-ry change can be\
- undone (Ctrl+Z)\
- and redone (Ctr\
-l+Y). File \xe2\x86\x92 P\
-rint and File \xe2\x86\
-\x92 Export PDF\x0apro\
-duce a parameter\
- record with typ\
-e key, serial nu\
-mber, firmware, \
-file, date, acce\
-ss level,\x0athe fl\
-ow diagram and e\
-very parameter w\
-ith its unit.</p\
->\x0a\x0a<h2>Keyboard<\
-/h2>\x0a<table>\x0a<tr\
-><td>Ctrl+O / Ct\
-rl+S / Ctrl+Shif\
-t+S</td><td>Open\
- / Save / Save A\
-s</td></tr>\x0a<tr>\
-<td>Ctrl+Z / Ctr\
-l+Y</td><td>Undo\
- / Redo</td></tr\
->\x0a<tr><td>Ctrl+P\
- / Ctrl+E</td><t\
-d>Print / Export\
- PDF</td></tr>\x0a<\
-tr><td>Ctrl+1 / \
-Ctrl+2 / Ctrl+3 \
-/ Ctrl+4</td><td\
->Flow diagram / \
-Parameter list /\
- Oscilloscope / \
-CANopen window</\
-td></tr>\x0a<tr><td\
->F5 / Shift+F5</\
-td><td>Online / \
-Offline</td></tr\
->\x0a<tr><td>Ctrl+U\
- / Ctrl+D</td><t\
-d>Upload to valv\
-e / Download fro\
-m valve</td></tr\
->\x0a<tr><td>Ctrl+T\
- / Ctrl+I / Ctrl\
-+H</td><td>Valve\
- selection / Val\
-ve status / HID \
-configuration</t\
-d></tr>\x0a</table>\
-\x0a</body>\x0a</html>\
-\x0a\
+h of it.</p>\x0a<p>\
+The access level\
+s guard against \
+accidental chang\
+es, not against \
+someone who can \
+edit the\x0aprogram\
+'s settings: rem\
+oving the entry \
+<code>access/exp\
+ert_password</co\
+de> from the set\
+tings\x0abrings bac\
+k the delivered \
+password. A para\
+meter file carri\
+es every value w\
+hatever the leve\
+l:\x0aat Basic leve\
+l, sending a doc\
+ument whose Expe\
+rt-level values \
+differ from the \
+valve's asks\x0afir\
+st.</p>\x0a\x0a<h2>Onl\
+ine and offline<\
+/h2>\x0a<p>Communic\
+ation \xe2\x86\x92 HID co\
+nfiguration list\
+s the valves con\
+nected over USB \
+and the emulated\
+\x0avalves; add an \
+emulated valve w\
+ith its type key\
+ and serial numb\
+er. Communicatio\
+n \xe2\x86\x92 Online\x0amod\
+e connects. If t\
+he open paramete\
+r set differs fr\
+om the valve's, \
+the program list\
+s the\x0adifference\
+s and asks wheth\
+er to take the v\
+alve's values, s\
+end the document\
+'s values\x0a(uploa\
+d) or cancel. On\
+line, every chan\
+ge goes to the v\
+alve at once and\
+ into the docume\
+nt;\x0aoffline, int\
+o the document o\
+nly. If the valv\
+e is lost, the p\
+rogram goes offl\
+ine and keeps\x0aev\
+ery value.</p>\x0a<\
+p>Values changed\
+ online are acti\
+ve in the valve \
+but not yet stor\
+ed: going offlin\
+e offers to\x0astor\
+e them. <b>Uploa\
+d to valve</b> w\
+rites all values\
+, reads them bac\
+k, compares and \
+stores\x0athem; not\
+hing is stored u\
+nless every valu\
+e was verified. \
+Before the first\
+ upload to a val\
+ve\x0athe program s\
+aves a backup of\
+ the valve's own\
+ parameters in t\
+he user data fol\
+der\x0a(<code>backu\
+ps/&lt;serial&gt\
+;/</code>).</p>\x0a\
+<p><b>Restart va\
+lve</b> and <b>R\
+estore factory v\
+alues</b> are al\
+lowed only with \
+the\x0ahydraulics d\
+isconnected; the\
+ program asks yo\
+u to confirm thi\
+s.</p>\x0a\x0a<h2>File\
+s</h2>\x0a<p>Parame\
+ter files (<code\
+>*.prm</code>) a\
+re text files. O\
+pen, Save, Save \
+As, the recent\x0af\
+iles and drag an\
+d drop work as u\
+sual; the progra\
+m asks before un\
+saved changes ar\
+e lost.\x0aEvery ch\
+ange can be undo\
+ne (Ctrl+Z) and \
+redone (Ctrl+Y).\
+ File \xe2\x86\x92 Print \
+and File \xe2\x86\x92 Exp\
+ort PDF\x0aproduce \
+a parameter reco\
+rd with type key\
+, serial number,\
+ firmware, file,\
+ date, access le\
+vel,\x0athe flow di\
+agram and every \
+parameter with i\
+ts unit.</p>\x0a\x0a<h\
+2>Keyboard</h2>\x0a\
+<table>\x0a<tr><td>\
+Ctrl+O / Ctrl+S \
+/ Ctrl+Shift+S</\
+td><td>Open / Sa\
+ve / Save As</td\
+></tr>\x0a<tr><td>C\
+trl+Z / Ctrl+Y</\
+td><td>Undo / Re\
+do</td></tr>\x0a<tr\
+><td>Ctrl+P / Ct\
+rl+E</td><td>Pri\
+nt / Export PDF<\
+/td></tr>\x0a<tr><t\
+d>Ctrl+1 / Ctrl+\
+2 / Ctrl+3 / Ctr\
+l+4</td><td>Flow\
+ diagram / Param\
+eter list / Osci\
+lloscope / CANop\
+en window</td></\
+tr>\x0a<tr><td>F5 /\
+ Shift+F5</td><t\
+d>Online / Offli\
+ne</td></tr>\x0a<tr\
+><td>Ctrl+U / Ct\
+rl+D</td><td>Upl\
+oad to valve / D\
+ownload from val\
+ve</td></tr>\x0a<tr\
+><td>Ctrl+T / Ct\
+rl+I / Ctrl+H</t\
+d><td>Valve sele\
+ction / Valve st\
+atus / HID confi\
+guration</td></t\
+r>\x0a</table>\x0a</bo\
+dy>\x0a</html>\x0a\
 \x00\x00\x01\xc2\
 <\
 svg xmlns=\x22http:\
@@ -1264,22 +1346,22 @@ qt_resource_struct = b"\
 \x00\x00\x00\x00\x00\x02\x00\x00\x00\x02\x00\x00\x00\x01\
 \x00\x00\x00\x10\x00\x02\x00\x00\x00\x03\x00\x00\x00\x10\
 \x00\x00\x00\x00\x00\x02\x00\x00\x00\x0d\x00\x00\x00\x03\
-\x00\x00\x00\xfc\x00\x00\x00\x00\x00\x01\x00\x00:3\
-\x00\x00\x00\x92\x00\x00\x00\x00\x00\x01\x00\x004\x95\
-\x00\x00\x01\x9e\x00\x00\x00\x00\x00\x01\x00\x00Di\
-\x00\x00\x01\x16\x00\x00\x00\x00\x00\x01\x00\x00;`\
-\x00\x00\x00x\x00\x00\x00\x00\x00\x01\x00\x002\xcf\
-\x00\x00\x01\xba\x00\x00\x00\x00\x00\x01\x00\x00F\x01\
-\x00\x00\x01.\x00\x00\x00\x00\x00\x01\x00\x00=/\
-\x00\x00\x01\x80\x00\x00\x00\x00\x00\x01\x00\x00B\xbd\
-\x00\x00\x00\xaa\x00\x00\x00\x00\x00\x01\x00\x006;\
-\x00\x00\x01J\x00\x00\x00\x00\x00\x01\x00\x00>\xf8\
-\x00\x00\x00\xc6\x00\x00\x00\x00\x00\x01\x00\x0078\
-\x00\x00\x00\xe2\x00\x00\x00\x00\x00\x01\x00\x008\xf1\
-\x00\x00\x01^\x00\x00\x00\x00\x00\x01\x00\x00A|\
+\x00\x00\x00\xfc\x00\x00\x00\x00\x00\x01\x00\x00?U\
+\x00\x00\x00\x92\x00\x00\x00\x00\x00\x01\x00\x009\xb7\
+\x00\x00\x01\x9e\x00\x00\x00\x00\x00\x01\x00\x00I\x8b\
+\x00\x00\x01\x16\x00\x00\x00\x00\x00\x01\x00\x00@\x82\
+\x00\x00\x00x\x00\x00\x00\x00\x00\x01\x00\x007\xf1\
+\x00\x00\x01\xba\x00\x00\x00\x00\x00\x01\x00\x00K#\
+\x00\x00\x01.\x00\x00\x00\x00\x00\x01\x00\x00BQ\
+\x00\x00\x01\x80\x00\x00\x00\x00\x00\x01\x00\x00G\xdf\
+\x00\x00\x00\xaa\x00\x00\x00\x00\x00\x01\x00\x00;]\
+\x00\x00\x01J\x00\x00\x00\x00\x00\x01\x00\x00D\x1a\
+\x00\x00\x00\xc6\x00\x00\x00\x00\x00\x01\x00\x00<Z\
+\x00\x00\x00\xe2\x00\x00\x00\x00\x00\x01\x00\x00>\x13\
+\x00\x00\x01^\x00\x00\x00\x00\x00\x01\x00\x00F\x9e\
 \x00\x00\x00\x1e\x00\x00\x00\x00\x00\x01\x00\x00\x00\x00\
-\x00\x00\x00<\x00\x00\x00\x00\x00\x01\x00\x00\x11|\
-\x00\x00\x00Z\x00\x00\x00\x00\x00\x01\x00\x00#I\
+\x00\x00\x00<\x00\x00\x00\x00\x00\x01\x00\x00\x13;\
+\x00\x00\x00Z\x00\x00\x00\x00\x00\x01\x00\x00&\xf0\
 "
 
 def qInitResources():

@@ -18,21 +18,24 @@ from collections.abc import Callable
 from pathlib import Path
 
 import numpy as np
-from PySide6.QtCore import QEvent, Qt, QTimer
+from PySide6.QtCore import QEvent, Qt, QTimer, Signal
 from PySide6.QtGui import QCloseEvent, QHideEvent, QImageWriter, QShowEvent
 from PySide6.QtWidgets import (
     QFileDialog,
     QGridLayout,
     QLabel,
+    QPushButton,
     QTabWidget,
     QVBoxLayout,
     QWidget,
 )
 
+from prm9tool.catalogue.commissioning import Blocker, NmtCommand
 from prm9tool.catalogue.signals import BY_KEY, signals_for
 from prm9tool.errors import ValueRangeError
 from prm9tool.model.document import ParameterDocument
 from prm9tool.online.connection_protocol import ScopeConnection
+from prm9tool.online.valve_control import ValveControl, blocker_text, status_blocker
 from prm9tool.scope import Capture, GeneratorSettings, write_csv
 from prm9tool.translate import error_text
 from prm9tool.views import prompts
@@ -43,20 +46,26 @@ from prm9tool.views.scope_plot import ScopePlot
 from prm9tool.views.scope_readout import CursorPanel, StepPanel
 
 REDRAW_MS = 33  # ~30 Hz
+ENABLEABLE = (Blocker.WAITING_FOR_MASTER, Blocker.DISABLED, Blocker.HOLD, Blocker.NMT_STOPPED)
 
 
 class ScopeWidget(QWidget):
     """Three-channel oscilloscope on the valve's measuring points."""
+
+    tuning_requested = Signal()  # "Tuning and characterization…" (the main window opens it)
 
     def __init__(
         self,
         connection: ScopeConnection,
         document: ParameterDocument,
         parent: QWidget | None = None,
+        control: ValveControl | None = None,
     ) -> None:
         super().__init__(parent)
         self._connection = connection
         self._document = document
+        self._control = control  # NMT and the enable sequence, offered before the generator
+        self._status: object | None = None  # the valve's latest status
         self._running = False
         self._accepting = False  # False between a (re)start request and stream_started
         self._generator_note = ""
@@ -87,6 +96,9 @@ class ScopeWidget(QWidget):
         right = QVBoxLayout()
         right.addWidget(self.channels, 1)
         right.addWidget(self.readouts)
+        self.tuning_button = QPushButton(self.tr("Tuning and characterization…"))
+        self.tuning_button.clicked.connect(self.tuning_requested)
+        right.addWidget(self.tuning_button)
         grid = QGridLayout(self)
         grid.addWidget(self.plot, 0, 0)
         grid.addLayout(right, 0, 1)
@@ -114,6 +126,7 @@ class ScopeWidget(QWidget):
         conn.samples_received.connect(self._on_samples_received)
         conn.stream_started.connect(self._on_stream_started)
         conn.failed.connect(self._on_failed)
+        conn.status_changed.connect(self._on_status_changed)
         self._document.type_key_changed.connect(self._on_type_key_changed)
         self.channels.selection_changed.connect(self._on_selection_changed)
         self.channels.same_scale_toggled.connect(self.plot.set_same_scale)
@@ -291,7 +304,22 @@ class ScopeWidget(QWidget):
         self._update_status()
 
     def _update_status(self) -> None:
-        self._say(" ".join(filter(None, (self._generator_note, self._state_text()))))
+        parts = (self._generator_note, self._blocked_text(), self._state_text())
+        self._say(" ".join(filter(None, parts)))
+
+    def _on_status_changed(self, status: object) -> None:
+        before = status_blocker(self._status)
+        self._status = status
+        if status_blocker(status) != before:
+            self._update_status()
+
+    def _blocked_text(self) -> str:
+        """Why the valve does not follow its setpoint (empty when it does, or offline)."""
+        reason = status_blocker(self._status) if self._connection.is_online else None
+        if reason is None:
+            return ""
+        text = blocker_text(reason, self._status)
+        return self.tr("The valve does not follow its setpoint: {0}").format(text)
 
     def _state_text(self) -> str:
         if not self._connection.is_online:
@@ -343,11 +371,35 @@ class ScopeWidget(QWidget):
         )
         if answer != prompts.Button.Yes:
             return
+        self._offer_enable()
         self._generator_note = ""
         try:
             self.generator.start(settings)
         except RuntimeError as exc:
             self._say(str(exc))
+
+    def _offer_enable(self) -> None:
+        """A valve that waits for a CANopen master (or is not enabled) would not move: offer
+        NMT start and the enable sequence before the generator starts."""
+        reason = status_blocker(self._status)
+        if self._control is None or reason not in ENABLEABLE:
+            return
+        answer = prompts.ask(
+            self,
+            prompts.Icon.Question,
+            self.tr("Setpoint generator"),
+            self.tr(
+                "The valve does not follow its setpoint: {0}\n\nEnable it now (NMT start, "
+                "control word 08h → 09h → 0Bh → 0Fh)?"
+            ).format(blocker_text(reason, self._status)),
+            prompts.Button.Yes | prompts.Button.No,
+            prompts.Button.Yes,
+        )
+        if answer != prompts.Button.Yes:
+            return
+        if str(getattr(self._status, "nmt_state", "off")) in ("pre-operational", "stopped"):
+            self._control.nmt(NmtCommand.START)
+        self._control.enable()
 
     def _on_generator_stopped_by_link(self) -> None:
         self._generator_note = self.tr("The link dropped: the setpoint generator has stopped.")
@@ -421,6 +473,7 @@ class ScopeWidget(QWidget):
                 panel.retranslate()
             self.step_panel.retranslate()
             self.generator_panel.retranslate()
+            self.tuning_button.setText(self.tr("Tuning and characterization…"))
             for tab, readout in enumerate((self.cursor_panel, self.step_panel)):
                 self.readouts.setTabText(tab, readout.windowTitle())
             self._align_sections()

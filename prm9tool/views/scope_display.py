@@ -136,7 +136,7 @@ class ScopeDisplay(QObject):
         capture = self.capture
         if capture is None or self._frozen is not None:
             return
-        self._frozen = self.whole_data()
+        self._frozen = self.whole_data()  # what was recorded up to now
         self.plot.show_all(*self._frozen)
         self.plot.set_time_interactive(True)
         self.update_readouts()
@@ -165,9 +165,11 @@ class ScopeDisplay(QObject):
         return self._frozen if self._frozen is not None else self._shown
 
     def whole_data(self) -> tuple[np.ndarray, np.ndarray]:
-        """Everything recorded (a copy), on the time axis of the current frame."""
-        if self._frozen is not None:
-            return self._frozen
+        """Everything recorded (a copy), on the time axis of the current frame.
+
+        Also while the display holds a paused picture: the recording goes on behind it, and
+        "whole recording" means all of it, not what the held picture shows.
+        """
         if self.capture is None:
             return EMPTY
         buffer = self.capture.buffer

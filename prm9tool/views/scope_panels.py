@@ -4,7 +4,7 @@ from __future__ import annotations
 
 from collections.abc import Sequence
 
-from PySide6.QtCore import QSize, Qt, Signal
+from PySide6.QtCore import QSize, Qt, QTimer, Signal
 from PySide6.QtWidgets import (
     QCheckBox,
     QComboBox,
@@ -23,12 +23,13 @@ from PySide6.QtWidgets import (
 
 from prm9tool.catalogue.signals import MAX_CHANNELS
 from prm9tool.catalogue.signals import Signal as MeasuringPoint
-from prm9tool.i18n import text
+from prm9tool.i18n import format_significant, text
 from prm9tool.scope import RATES_HZ, WINDOWS_S, Edge, TriggerMode, TriggerSettings
 from prm9tool.views.diagram.colours import toned_style
 
 KEY_ROLE = Qt.ItemDataRole.UserRole
 MIN_LIST_WIDTH = 230  # px: the measuring-point list in a 1024-pixel window
+MESSAGE_MS = 8000  # how long a notice about the measuring points stays
 MAX_LIST_WIDTH = 340  # px: wider names are elided rather than the legend's in a 1024-px window
 SPACE = None  # a gap between groups of controls in a row
 
@@ -113,6 +114,10 @@ class ChannelPanel(QGroupBox):
         self.message.setWordWrap(True)
         self.message.setStyleSheet(toned_style("color: #c01c28", self.palette()))
         self.message.hide()
+        self._message_timer = QTimer(self)  # a refusal or replacement notice, then gone
+        self._message_timer.setSingleShot(True)
+        self._message_timer.setInterval(MESSAGE_MS)
+        self._message_timer.timeout.connect(lambda: self._say(""))
         self.same_scale = QCheckBox()
         self.same_scale.setChecked(True)
         self.same_scale.toggled.connect(self.same_scale_toggled)
@@ -137,6 +142,7 @@ class ChannelPanel(QGroupBox):
     def set_signals(self, signals: Sequence[MeasuringPoint]) -> None:
         """List ``signals`` (the variant's); the selection keeps those still listed."""
         self._signals = list(signals)
+        self._say("")  # another valve type: what was said about the points no longer applies
         keys = {s.key for s in signals}
         self._selected = [k for k in self._selected if k in keys]
         self.list.blockSignals(True)
@@ -157,6 +163,10 @@ class ChannelPanel(QGroupBox):
 
     def set_selected(self, keys: Sequence[str]) -> None:
         """Activate ``keys`` (the first three that are listed)."""
+        self._say("")
+        self._select(keys)
+
+    def _select(self, keys: Sequence[str]) -> None:
         listed = [s.key for s in self._signals]
         self._selected = [k for k in keys if k in listed][:MAX_CHANNELS]
         self._show_selection()
@@ -174,11 +184,16 @@ class ChannelPanel(QGroupBox):
                 )
             )
             self._selected = self._selected[:-1]
-        self.set_selected([*self._selected, key])
+        self._select([*self._selected, key])
 
     def _say(self, message: str) -> None:
+        """Show ``message`` for a while (it concerns the last action only); '' hides it."""
         self.message.setText(message)
         self.message.setVisible(bool(message))  # no gap above the check box when empty
+        if message:
+            self._message_timer.start()
+        else:
+            self._message_timer.stop()
 
     def _name(self, key: str) -> str:
         return next(text(s.text) for s in self._signals if s.key == key)
@@ -229,10 +244,11 @@ class ControlPanel(QWidget):
         super().__init__(parent)
         self.rate = QComboBox()
         for rate in RATES_HZ:
-            self.rate.addItem(f"{1000.0 / rate:g} ms ({rate / 1000:g} kHz)", rate)
+            period, khz = format_significant(1000.0 / rate, 6), format_significant(rate / 1000, 6)
+            self.rate.addItem(f"{period} ms ({khz} kHz)", rate)
         self.time_window = QComboBox()
         for seconds in WINDOWS_S:
-            self.time_window.addItem(f"{seconds:g} s", seconds)
+            self.time_window.addItem(f"{format_significant(seconds, 6)} s", seconds)
         self.time_window.setCurrentIndex(WINDOWS_S.index(1.0))
         self.start, self.stop, self.pause = QPushButton(), QPushButton(), QPushButton()
         self.pause.setCheckable(True)

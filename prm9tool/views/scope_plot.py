@@ -33,8 +33,9 @@ from PySide6.QtWidgets import (
 
 from prm9tool.catalogue.signals import MAX_CHANNELS
 from prm9tool.catalogue.signals import Signal as MeasuringPoint
-from prm9tool.i18n import text
+from prm9tool.i18n import format_significant, text
 from prm9tool.scope import axis_ranges, peak_decimate
+from prm9tool.views.localized_axis import LocalizedAxis
 
 COLOURS = ("#ffd43b", "#4dd0e1", "#ff7eb6")  # channel 1, 2, 3
 CURSOR_COLOUR = "#e0e0e0"
@@ -47,7 +48,7 @@ GRID_COLOUR = "#3a3d42"  # opaque: a translucent grid line costs 2-4 ms per roll
 
 def _format(value: float, unit: str) -> str:
     """A value with 4 significant digits and its unit ('—' for NaN)."""
-    return "—" if math.isnan(value) else f"{value:.4g} {unit}"
+    return "—" if math.isnan(value) else f"{format_significant(value, 4)} {unit}"
 
 
 class _Grid(QGraphicsItem):
@@ -230,12 +231,13 @@ class ScopePlot(QWidget):
         super().__init__(parent)
         self.graphics = pg.GraphicsLayoutWidget()
         self.graphics.setBackground("#111418")
-        self.item = self.graphics.addPlot(row=0, col=0)
+        axes = {name: LocalizedAxis(name) for name in ("left", "bottom", "right")}
+        self.item = self.graphics.addPlot(row=0, col=0, axisItems=axes)
         for name in ("left", "bottom"):  # major ticks only, as the grid (minor lines cost ~15 ms)
             self.item.getAxis(name).setStyle(maxTickLevel=0)
         self.item.hideButtons()
         self.views = [self.item.getViewBox(), pg.ViewBox(), pg.ViewBox()]
-        self.axes = [self.item.getAxis("left"), self.item.getAxis("right"), pg.AxisItem("right")]
+        self.axes = [self.item.getAxis("left"), self.item.getAxis("right"), LocalizedAxis("right")]
         self.item.showAxis("right")
         self.item.layout.addItem(self.axes[2], 2, 3)
         for axis in (*self.axes, self.item.getAxis("bottom")):

@@ -18,13 +18,13 @@ from PySide6.QtWidgets import (
 
 from prm9tool.catalogue.signals import MAX_CHANNELS
 from prm9tool.catalogue.signals import Signal as MeasuringPoint
-from prm9tool.i18n import text
+from prm9tool.i18n import format_number, format_significant, text
 from prm9tool.scope import CursorReadout, StepMeasurement, Verdict
 from prm9tool.views.scope_plot import COLOURS
 
 
 def _value(value: float, unit: str, digits: int = 4) -> str:
-    return "—" if math.isnan(value) else f"{value:.{digits}g} {unit}".rstrip()
+    return "—" if math.isnan(value) else f"{format_significant(value, digits)} {unit}".rstrip()
 
 
 def _fixed(value: float, unit: str, size: float) -> str:
@@ -32,15 +32,15 @@ def _fixed(value: float, unit: str, size: float) -> str:
     if math.isnan(value):
         return "—"
     decimals = max(0, 2 - math.floor(math.log10(abs(size)))) if size else 2
-    return f"{round(value, decimals) + 0.0:.{decimals}f} {unit}".rstrip()  # + 0.0: no "-0"
+    return f"{format_number(value, decimals)} {unit}".rstrip()
 
 
 def _time(seconds: float) -> str:
     if math.isnan(seconds):
         return "—"
     if abs(seconds) < 1.0:
-        return f"{seconds * 1000:.4g} ms"
-    return f"{seconds:.4g} s"
+        return f"{format_significant(seconds * 1000, 4)} ms"
+    return f"{format_significant(seconds, 4)} s"
 
 
 class CursorPanel(QWidget):
@@ -218,7 +218,7 @@ class StepPanel(QWidget):
             f"  @ {_time(figures.t_step)}"
         )
         self.figures["rise"].setText(_time(figures.rise_time))
-        self.figures["overshoot"].setText(f"{figures.overshoot:.1f} %")
+        self.figures["overshoot"].setText(f"{format_number(figures.overshoot, 1)} %")
         self.figures["settling"].setText(
             _time(figures.settling_time)
             if not math.isnan(figures.settling_time)

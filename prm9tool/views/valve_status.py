@@ -19,7 +19,10 @@ from PySide6.QtWidgets import (
     QWidget,
 )
 
+from prm9tool.i18n import format_measured
 from prm9tool.online.connection import ValveConnection
+from prm9tool.online.valve_control import ValveControl
+from prm9tool.views.commissioning_panel import CommissioningPanel
 from prm9tool.views.emcy import emcy_text
 
 COLOURS = {
@@ -102,9 +105,15 @@ class LedWidget(QWidget):
 class ValveStatusWindow(QDialog):
     """Non-modal window that follows the connection's status live."""
 
-    def __init__(self, connection: ValveConnection, parent: QWidget | None = None) -> None:
+    def __init__(
+        self,
+        connection: ValveConnection,
+        parent: QWidget | None = None,
+        control: ValveControl | None = None,
+    ) -> None:
         super().__init__(parent)
         self._connection = connection
+        self.commissioning = CommissioningPanel(control) if control is not None else None
         self._status: object | None = None
         self.fields = {name: QLabel() for name in _FIELDS}
         for label in self.fields.values():
@@ -141,8 +150,10 @@ class ValveStatusWindow(QDialog):
         layout = QVBoxLayout(self)
         for group in self._groups.values():
             layout.addWidget(group, 1 if group is self._groups["errors"] else 0)
+        if self.commissioning is not None:
+            layout.insertWidget(1, self.commissioning)
         self.errors.setMinimumHeight(60)
-        self.resize(460, 520)
+        self.resize(460, 640 if self.commissioning is not None else 520)
 
     def retranslate(self) -> None:
         """Set every text in the current language and refresh the values."""
@@ -165,6 +176,8 @@ class ValveStatusWindow(QDialog):
         led_names = (self.tr("LED 1 power"), self.tr("LED 2 error"), self.tr("LED 3 CAN"))
         for label, name in zip(self._led_titles, led_names, strict=True):
             label.setText(name)
+        if self.commissioning is not None:
+            self.commissioning.retranslate()
         self._show_device(self._connection.device)
         self._show_status(self._status)
 
@@ -195,6 +208,8 @@ class ValveStatusWindow(QDialog):
         self.fields["type_key"].setText(str(getattr(info, "type_key", "—")) if info else "—")
 
     def _show_status(self, status: object | None) -> None:
+        if self.commissioning is not None:
+            self.commissioning.show_status(status)
         if status is None:
             for name in ("state", "nmt", "temperature", "supply"):
                 self.fields[name].setText("—")
@@ -206,8 +221,9 @@ class ValveStatusWindow(QDialog):
             return
         self.fields["state"].setText(str(getattr(status, "device_state", "")))
         self.fields["nmt"].setText(str(getattr(status, "nmt_state", "")))
-        self.fields["temperature"].setText(f"{getattr(status, 'temperature_c', 0.0):.1f} °C")
-        self.fields["supply"].setText(f"{getattr(status, 'supply_v', 0.0):.2f} V")
+        temperature = format_measured(getattr(status, "temperature_c", 0.0), "°C")
+        self.fields["temperature"].setText(f"{temperature} °C")
+        self.fields["supply"].setText(f"{format_measured(getattr(status, 'supply_v', 0.0), 'V')} V")
         self._show_errors(status)
         for led, state, led_state in zip(
             self.leds, self._led_states, getattr(status, "leds", ()), strict=False

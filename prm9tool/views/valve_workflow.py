@@ -11,7 +11,7 @@ from collections.abc import Callable, Mapping
 from dataclasses import dataclass
 from typing import Any
 
-from PySide6.QtCore import QObject, QSettings, Qt, Signal
+from PySide6.QtCore import QObject, QSettings, Qt, QTime, Signal
 from PySide6.QtWidgets import QDialog, QProgressDialog, QWidget
 
 from prm9tool.catalogue import CATALOGUE, Access, variant_label
@@ -29,6 +29,7 @@ from prm9tool.views.hid_dialog import (
     HidConfigurationDialog,
     saved_emulators,
 )
+from prm9tool.views.history_policy import may_upload
 from prm9tool.views.online_dialogs import DiffChoice, OnlineDiffDialog, RestartDialog
 
 COMPARE = "compare"  # download made on going online, to compare with the document
@@ -61,6 +62,10 @@ class ValveWorkflow(QObject):
         self._settings = settings
         self.progress_dialog: QProgressDialog | None = None
         self._operation = ""
+        self._upload_repeats = False  # the running upload sends what the valve holds already
+        self._pending_upload: dict[str, Raw] = {}
+        # "choose per parameter" in the going-online dialog (the compare workflow sets it)
+        self.choose_per_parameter: Callable[[Mapping[str, Raw]], None] | None = None
         connection.online_changed.connect(self._on_connection_online_changed)
         connection.operation_finished.connect(self._on_connection_operation_finished)
         connection.progress.connect(self._on_connection_progress)
@@ -150,7 +155,7 @@ class ValveWorkflow(QObject):
             if answer == prompts.Button.Cancel:
                 return False
             if answer == prompts.Button.Yes:
-                self._connection.store()
+                self._connection.store(self._doc.values)
         scope = getattr(self._window, "views", {}).get("scope")
         if scope is not None:  # the setpoint generator switches its override off while online
             scope.stop()
@@ -203,6 +208,8 @@ class ValveWorkflow(QObject):
         elif dialog.choice is DiffChoice.SEND_DOCUMENT:
             if not self.upload(values):
                 self.go_offline()  # as Cancel: nothing was written
+        elif dialog.choice is DiffChoice.CHOOSE and self.choose_per_parameter is not None:
+            self.choose_per_parameter(values)
         else:
             self.go_offline()
 
@@ -277,9 +284,26 @@ class ValveWorkflow(QObject):
         if not self._basic_user_confirms_expert_values(known):
             self.message_posted.emit(self.tr("Nothing was sent to the valve"))
             return False
-        self._start("upload", self.tr("Uploading the parameters to the valve…"))
-        self._connection.upload(self._doc.values)
+        # the valve holds the document already (edits went to it, nothing left unstored)
+        self._upload_repeats = self._sync.active and not self._sync.unstored
+        self._upload_repeats &= not self._sync.differences()
+        self.upload_values(self._doc.values)
         return True
+
+    def upload_values(self, values: Mapping[str, Raw]) -> None:
+        """Upload exactly ``values`` (write, read back, store), once the history can record
+        it or the user said to go ahead without it (views/history_policy.py)."""
+        self._pending_upload = dict(values)
+        if self._connection.history is None:
+            self._start_upload()
+            return
+        self._start("upload", self.tr("Uploading the parameters to the valve…"))
+        self._connection.check_history()
+
+    def _start_upload(self) -> None:
+        values, self._pending_upload = self._pending_upload, {}
+        self._start("upload", self.tr("Uploading the parameters to the valve…"))
+        self._connection.upload(values)
 
     def expert_differences(self, valve_values: Mapping[str, Raw]) -> list[str]:
         """The Expert-level parameters whose document value differs from the valve's."""
@@ -364,12 +388,16 @@ class ValveWorkflow(QObject):
             self._on_compare_finished(result)
         elif name == "upload":
             self._on_upload_finished(result)
+        elif name == "history_check":
+            if may_upload(self._window, result):
+                self._start_upload()
         elif name == "store":
             self._sync.unstored = False
             self.message_posted.emit(self.tr("The valve stored its parameters"))
 
     def _on_factory_reset(self, result: _FactoryReset) -> None:
         self.take_valve_values(result.values, self.tr("Factory values of the valve"))
+        self._connection.record("restore-factory", "ok", result.values, {"backup": result.backup})
         if result.backup is not None:
             self.message_posted.emit(
                 self.tr(
@@ -381,9 +409,17 @@ class ValveWorkflow(QObject):
         if getattr(result, "stored", False):
             self._sync.start(self._doc.values)
             count = int(getattr(result, "written", 0))
-            self.message_posted.emit(
-                self.tr("%n parameter(s) written, verified and stored", "", count)
-            )
+            at = QTime.currentTime().toString("HH:mm:ss")  # each upload's message differs
+            message = self.tr("%n parameter(s) written, verified and stored at {0}", "", count)
+            repeats, self._upload_repeats = self._upload_repeats, False
+            if repeats:
+                message = self.tr(
+                    "%n parameter(s) written, verified and stored again at {0}: the valve "
+                    "already held them",
+                    "",
+                    count,
+                )
+            self.message_posted.emit(message.format(at))
             return
         mismatches = getattr(result, "mismatches", {}) or {}
         lines = [f"{mn}: {want} → {got}" for mn, (want, got) in mismatches.items()]

@@ -46,7 +46,7 @@ from prm9tool.errors import (
 SDO_TIMEOUT_S = 0.5
 STORE_TIMEOUT_S = 3.0  # writing the non-volatile memory takes longer than an SDO answer
 BOOT_TIMEOUT_S = 10.0  # NMT reset node -> boot-up (the valve takes about 2 s, manual §7.6)
-NMT_START, NMT_PRE_OPERATIONAL, NMT_RESET_NODE = 0x01, 0x80, 0x81
+NMT_RESET_NODE = 0x81
 __all__ = ["CanopenSession", "NotAPrm9Error"]
 
 
@@ -263,14 +263,9 @@ class CanopenSession(ValveSession):
         return read_status(self._sdo, self._shared.node_seen(self.node_id))
 
     def nmt(self, command: int) -> None:
-        """Send an NMT command to this node (0x01 start, 0x02 stop, 0x80 pre-operational)."""
+        """Send an NMT command (:class:`~prm9tool.catalogue.commissioning.NmtCommand`) to this
+        node on the bus (no answer comes; the heartbeat shows the new state)."""
         self._sdo.node.nmt.send_command(command)
-
-    def _network_start(self) -> None:
-        self.nmt(NMT_START)
-
-    def _network_stop(self) -> None:
-        self.nmt(NMT_PRE_OPERATIONAL)
 
     # --- measuring points -------------------------------------------------------------------
     def stream_start(self, keys: Sequence[str], rate_hz: int = 5000) -> None:

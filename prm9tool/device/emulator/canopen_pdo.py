@@ -41,10 +41,14 @@ def _mapping_parameters(map_index: int) -> list[Parameter]:
 
 
 def mapping(valve: Dictionary, map_index: int) -> list[tuple[int, int, int]]:
-    """The ``(index, subindex, bits)`` entries of a mapping object in the current control mode."""
+    """The ``(index, subindex, bits)`` entries of a mapping object in the current control mode.
+
+    As many as its sub-index 0 says: none on a valve whose PDO maps nothing (E02: PDO2).
+    """
     mode = int(valve.read(*CONTROL_MODE))
+    count = int(valve.read(map_index, 0))
     result = []
-    for param in _mapping_parameters(map_index):
+    for param in _mapping_parameters(map_index)[:count]:
         value = mapping_for_control_mode(param, mode)
         result.append((value >> 16, (value >> 8) & 0xFF, value & 0xFF))
     return result
@@ -113,14 +117,14 @@ class TpdoLogic:
         self._valve = valve
 
     def data(self) -> bytes | None:
-        """The mapped bytes, or None if a mapped object does not exist on this valve."""
-        payload = b""
-        try:
-            for index, subindex, bits in mapping(self._valve, self.channel.map_index):
-                payload += self._valve.read_bytes(index, subindex)[: bits // 8]
-        except SdoAbortError:
-            return None  # decision: e.g. TPDO2 on an E02 valve (no 0x2100) is never sent
-        return payload
+        """The mapped bytes, or None when the PDO maps nothing (CiA 301: mapping disabled)."""
+        entries = mapping(self._valve, self.channel.map_index)
+        if not entries:
+            return None  # e.g. TPDO2 on an E02 valve (no external sensor) is never sent
+        return b"".join(
+            self._valve.read_bytes(index, subindex)[: bits // 8]
+            for index, subindex, bits in entries
+        )
 
     def on_sync(self) -> bytes | None:
         """Data to send on a SYNC (transmission types 0-240), or None."""
@@ -163,14 +167,22 @@ class RpdoLogic:
     """Applying received RPDO data to the object dictionary."""
 
     def __init__(
-        self, channel: PdoChannel, valve: Dictionary, length_error: Callable[[], None]
+        self,
+        channel: PdoChannel,
+        valve: Dictionary,
+        length_error: Callable[[], None],
+        length_ok: Callable[[], None] = lambda: None,
     ) -> None:
         self.channel = channel
         self._valve = valve
         self._length_error = length_error
+        self._length_ok = length_ok
 
     def received(self, data: bytes, now_ms: int) -> None:
-        """A frame on the RPDO's COB-ID arrived (NMT OPERATIONAL)."""
+        """A frame on the RPDO's COB-ID arrived (NMT OPERATIONAL); ignored when the RPDO maps
+        nothing (CiA 301: mapping disabled, e.g. RPDO2 on an E02 valve)."""
+        if not mapping(self._valve, self.channel.map_index):
+            return
         if self.channel.event_timer:
             self.channel.deadline_ms = now_ms + self.channel.event_timer
         if self.channel.trans_type in SYNC_TYPES:
@@ -198,6 +210,7 @@ class RpdoLogic:
         if len(data) < sum(bits // 8 for _, _, bits in entries):
             self._length_error()
             return
+        self._length_ok()
         offset = 0
         for index, subindex, bits in entries:
             size = bits // 8

@@ -1,7 +1,7 @@
 """CiA 301 rules of the communication profile the PRM9 enforces on SDO writes, and NMT states.
 
 Node ID and bit rate come from the firmware (``EmulatedValve.node_id``/``bitrate``, latched
-from the rotary switches at power-up, SPEC §3); this module only knows CiA 301.
+from the rotary switches at power-up, manual §7.3.1 table 7-17); this module only knows CiA 301.
 """
 
 from __future__ import annotations

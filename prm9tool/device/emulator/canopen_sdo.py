@@ -31,6 +31,7 @@ RESPONSE_DOWNLOAD = 0x60
 RESPONSE_UPLOAD_SEGMENTED = 0x41
 RESPONSE_ABORT = 0x80
 SEGMENT_TIMEOUT_MS = 1000  # decision: CiA 301 leaves the value to the device; manual silent
+SDO_FRAME_LENGTH = 8  # CiA 301: SDO frames always carry 8 bytes; others are ignored
 
 
 @dataclass
@@ -83,9 +84,14 @@ class SdoServer:
     def handle(self, request: bytes, now_ms: int = 0) -> bytes | None:
         """The response to ``request``, or None when the protocol requires no answer.
 
-        ``now_ms`` (any monotonic millisecond clock) starts the segment timeout.
+        ``now_ms`` (any monotonic millisecond clock) starts the segment timeout. A request that
+        is not exactly 8 bytes (CiA 301: every SDO frame has DLC 8) is ignored: no answer, no
+        change, a segmented transfer in progress goes on (decision, as CANopenNode does).
         """
-        data = bytes(request).ljust(8, b"\x00")
+        if len(request) != SDO_FRAME_LENGTH:
+            log.info("SDO request of %d bytes ignored: %s", len(request), bytes(request).hex(" "))
+            return None
+        data = bytes(request)
         ccs = data[0] >> 5
         index, subindex = struct.unpack_from("<HB", data, 1)
         try:

@@ -1,4 +1,4 @@
-"""The emulated valve as a CiA 301 slave on a python-can bus (manual chapter 7, SPEC §3).
+"""The emulated valve as a CiA 301 slave on a python-can bus (manual chapter 7).
 
 :class:`CanopenSlave` receives frames in a python-can Notifier thread and runs its timers
 (heartbeat, PDO event timers) from the valve's 1 ms cycle listener, so the same code runs in
@@ -37,7 +37,6 @@ NMT_EVENTS = {
     NmtState.STOPPED: "stopped",
     NmtState.PRE_OPERATIONAL: "preoperational",
 }
-EMCY_RPDO_LENGTH = 0x8210  # CiA 301: PDO not processed due to length error
 SYNC_COB_ID, CYCLE_PERIOD, EMCY_COB_ID = 0x1005, 0x1006, 0x1014
 HEARTBEAT_TIME, NMT_STARTUP = 0x1017, 0x1F80
 SYNC_TIMEOUT_FACTOR = 1.5  # decision: SYNC missing for 1.5 x 0x1006 = SYNC error (8100h)
@@ -53,7 +52,10 @@ class CanopenSlave:
         self._sdo = SdoServer(self._sdo_read, self._sdo_write)
         self._rpdos = [PdoChannel(n, transmit=False) for n in (1, 2)]
         self._tpdos = [PdoChannel(n, transmit=True) for n in (1, 2)]
-        self._rpdo_logic = [RpdoLogic(c, valve, self._rpdo_length_error) for c in self._rpdos]
+        self._rpdo_logic = [
+            RpdoLogic(c, valve, self._rpdo_length_error, self._rpdo_length_ok) for c in self._rpdos
+        ]
+        self._length_error = False  # EMCY 8210 reported and not yet reset
         self._tpdo_logic = [TpdoLogic(c, valve) for c in self._tpdos]
         self._now_ms = 0
         self._heartbeat_due_ms = 0
@@ -66,6 +68,7 @@ class CanopenSlave:
             valve.add_cycle_listener(self._on_cycle)
             valve.add_error_listener(self._on_error)
             valve.add_restart_listener(self._on_restart)
+            valve.set_nmt_handler(self._on_local_nmt)
         self._notifier = can.Notifier(bus, [self._on_message], timeout=0.1)
 
     # --- public --------------------------------------------------------------------------
@@ -80,11 +83,17 @@ class CanopenSlave:
         with self._valve.lock:
             self._closed = True
             self.state = NmtState.OFF
+            self._valve.set_nmt_handler(None)
+
+    def _on_local_nmt(self, command: int) -> None:
+        """An NMT command from the valve's USB side: as if the master sent it to this node."""
+        self._on_nmt(bytes((command, self.node_id)))
 
     # --- power-up, NMT ---------------------------------------------------------------------
     def _power_up(self) -> None:
         self.node_id = self._valve.node_id
         self._sdo.reset()
+        self._length_error = False
         self.state = NmtState.INITIALISING if self._valve.can_enabled else NmtState.OFF
 
     def _on_restart(self) -> None:
@@ -141,8 +150,8 @@ class CanopenSlave:
 
     # --- frames ------------------------------------------------------------------------------
     def _on_message(self, msg: can.Message) -> None:
-        if msg.is_error_frame or msg.is_remote_frame or msg.is_extended_id:
-            return
+        if msg.is_error_frame or msg.is_remote_frame or msg.is_extended_id or msg.is_fd:
+            return  # a classical CAN node ignores CAN FD frames
         with self._valve.lock:
             if self.state in (NmtState.OFF, NmtState.INITIALISING) and msg.arbitration_id:
                 return
@@ -242,8 +251,16 @@ class CanopenSlave:
             self._send(cob_id & 0x7FF, struct.pack("<HB5x", code, error_register))
 
     def _rpdo_length_error(self) -> None:
-        status = self._valve.status()
-        self._send_emcy(EMCY_RPDO_LENGTH, status.error_register | 0x10)
+        """CiA 301: EMCY 8210, 0x1001 bit 4 and a 0x1003 entry, through the valve's error
+        bookkeeping like every other error (the EMCY comes from :meth:`_on_error`)."""
+        self._length_error = True
+        self._valve.nmt_event("rpdo_length_error")
+
+    def _rpdo_length_ok(self) -> None:
+        """An RPDO of the right length ends the 8210 error (reset EMCY after the display hold)."""
+        if self._length_error:
+            self._length_error = False
+            self._valve.nmt_event("rpdo_length_ok")
 
     # --- SDO access ------------------------------------------------------------------------
     def _sdo_read(self, index: int, subindex: int) -> bytes:

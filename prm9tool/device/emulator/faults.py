@@ -25,6 +25,7 @@ class ErrorKind:
     led1: tuple[str, str]  # colour, pattern
     led2: str  # pattern of the red error LED
     register_bit: int  # bit of 0x1001 besides bit 0 (generic), -1 = none
+    fault: bool = True  # present: the spool is centred (False: reported only, no LED change)
 
 
 # In order of severity (first = most severe); the order decides error_code and the LEDs.
@@ -76,9 +77,21 @@ ERROR_KINDS: tuple[ErrorKind, ...] = (
         "quadruple_flash",
         4,
     ),
+    ErrorKind(
+        "pdo_length",
+        0x8210,
+        "CANopen RPDO shorter than its mapping: not processed",
+        ("green", "on"),
+        "off",
+        4,
+        fault=False,
+    ),
 )
 # Table 7-18 rows: LED1 stays green
 CAN_ERROR_KEYS = frozenset({"communication", "sync", "rpdo_timeout"})
+# Errors only reported (EMCY, 0x1001, 0x1003, 0x2040): CiA 301 protocol errors with no row in
+# table 7-18 (decision: no LED pattern, no fault reaction; the valve keeps controlling)
+NOTICE_KEYS = frozenset(k.key for k in ERROR_KINDS if not k.fault)
 KINDS = {k.key: k for k in ERROR_KINDS}
 WARNING_TEXT = "Warning: electronics temperature above 70 °C"
 
@@ -167,7 +180,7 @@ class FaultMonitor:
         for t in timers:
             if 0.0 <= t.active_until <= now:
                 t.active_until = -1.0  # display hold over
-        self.any_present = any(t.present for t in timers)
+        self.any_present = any(self.timers[k.key].present for k in ERROR_KINDS if k.fault)
         self.busy = any(t.since >= 0.0 or t.active_until >= 0.0 for t in timers)
         before = self.active
         self.active = tuple(k for k in ERROR_KINDS if self.timers[k.key].active_until > now)

@@ -6,7 +6,7 @@ state. LEDs 2 and 3 exist only on -CA valves (§5.5); on other valves they read 
 
 from __future__ import annotations
 
-from prm9tool.device.emulator.faults import CAN_ERROR_KEYS, ErrorKind
+from prm9tool.device.emulator.faults import CAN_ERROR_KEYS, NOTICE_KEYS, ErrorKind
 from prm9tool.device.emulator.states import LED_OFF, LedState
 
 # (on, off) sequences in seconds; a pattern repeats with its period (CiA 303-3 timing).
@@ -71,6 +71,7 @@ def leds(
         extra3 = led("orange", "on", t) if canopen else LED_OFF
         return led("white", "boot", t), extra, extra3
     led3 = led("orange", can_pattern(nmt_state), t) if canopen else LED_OFF
+    active = tuple(k for k in active if k.key not in NOTICE_KEYS)  # no LED pattern of their own
     errors = [k for k in active if k.key not in CAN_ERROR_KEYS]
     can_errors = [k for k in active if k.key in CAN_ERROR_KEYS]
     if len(errors) > 1:

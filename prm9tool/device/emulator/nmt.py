@@ -19,6 +19,8 @@ NMT_EVENTS = (
     "comm_error",
     "sync_error",
     "rpdo_timeout",
+    "rpdo_length_error",
+    "rpdo_length_ok",
 )
 _ERROR_EVENTS = {
     "comm_error": "communication",
@@ -37,6 +39,9 @@ def apply_nmt_event(fw: Firmware, event: str) -> None:
       8100h becomes present (EMCY; LED2 double, triple resp. quadruple flash, table 7-18) and
       a valve in DEVICE_MODE_ACTIVE reacts as above; it goes away with the next
       ``operational`` event.
+    * ``rpdo_length_error`` (an RPDO shorter than its mapping, not processed) makes the CiA 301
+      error 8210h present — EMCY, 0x1001 bit 4, 0x1003 — without a fault reaction or LED
+      pattern; ``rpdo_length_ok`` (an RPDO of the right length) and ``operational`` end it.
     """
     if event not in NMT_EVENTS:
         raise ValueRangeError(f"unknown NMT event {event!r}; events are: {', '.join(NMT_EVENTS)}")
@@ -44,9 +49,11 @@ def apply_nmt_event(fw: Firmware, event: str) -> None:
         return
     sm = fw.sm
     now = fw.time
-    if event == "operational":
+    if event in ("rpdo_length_error", "rpdo_length_ok"):
+        fw.faults.force("pdo_length", event == "rpdo_length_error", now)
+    elif event == "operational":
         fw.nmt_state = "operational"
-        for key in _ERROR_EVENTS.values():
+        for key in (*_ERROR_EVENTS.values(), "pdo_length"):
             fw.faults.force(key, False, now)
     elif event == "preoperational":
         fw.nmt_state = "pre-operational"

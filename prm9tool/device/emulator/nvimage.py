@@ -44,10 +44,15 @@ class NvImage:
             self.values = self._load(self.path)
 
     def replace(self, values: dict[str, int | str]) -> None:
-        """Make ``values`` the new image and write it to the file (if any)."""
-        self.values = dict(values)
+        """Write ``values`` to the file (if any), then make them the image in memory.
+
+        A failed write raises and leaves memory and file on the old image, so a restart in the
+        process and a restart of the process find the same stored set.
+        """
+        new = dict(values)
         if self.path is not None:
-            self._save(self.path)
+            self._save(self.path, new)
+        self.values = new
 
     def _load(self, path: Path) -> dict[str, int | str]:
         try:
@@ -73,13 +78,13 @@ class NvImage:
             raise FileFormatError(str(path), problems)
         return {str(k): v for k, v in data["values"].items() if isinstance(v, (int, str))}
 
-    def _save(self, path: Path) -> None:
+    def _save(self, path: Path, values: dict[str, int | str]) -> None:
         payload = {
             "format": FORMAT,
             "version": VERSION,
             "type_key": self.type_key,
             "serial": self.serial,
-            "values": dict(sorted(self.values.items())),
+            "values": dict(sorted(values.items())),
         }
         path.parent.mkdir(parents=True, exist_ok=True)
         fd, tmp = tempfile.mkstemp(prefix=path.name, suffix=".tmp", dir=path.parent)

@@ -2,9 +2,10 @@
 
 from __future__ import annotations
 
+import logging
 from typing import TYPE_CHECKING
 
-from prm9tool.catalogue import LOAD_SIGNATURE, SAVE_SIGNATURE
+from prm9tool.catalogue import CATALOGUE, LOAD_SIGNATURE, SAVE_SIGNATURE
 from prm9tool.catalogue._comm import revision_number
 from prm9tool.catalogue.pdo import mapping_for_control_mode
 from prm9tool.catalogue.variant import Config
@@ -19,6 +20,7 @@ if TYPE_CHECKING:
     from prm9tool.device.emulator.firmware import Firmware
 
 _SIG = {key: i for i, key in enumerate(SIGNAL_ORDER)}
+log = logging.getLogger("prm9tool.device.emulator")
 
 
 def clamp_pv(value: float) -> int:
@@ -94,12 +96,17 @@ def _commands(fw: Firmware) -> None:
     def save(value: Value) -> None:
         if value != SAVE_SIGNATURE:
             raise abort((0x1010, 1), AbortCode.CANNOT_STORE)
-        fw.nv.replace(fw.nonvolatile_values())
+        image = fw.nonvolatile_values()
+        broken = store_problems(fw, image)
+        if broken:  # a set the catalogue rejects is never stored (the RAM keeps it)
+            log.info("store refused: %s", "; ".join(broken))
+            raise abort((0x1010, 1), AbortCode.CANNOT_STORE)
+        _write_image(fw, (0x1010, 1), image)
 
     def load(value: Value) -> None:
         if value != LOAD_SIGNATURE:
             raise abort((0x1011, 1), AbortCode.CANNOT_STORE)
-        fw.nv.replace({})
+        _write_image(fw, (0x1011, 1), {})
 
     def control_word(value: Value) -> None:
         if fw.analog_only:
@@ -115,6 +122,22 @@ def _commands(fw: Firmware) -> None:
     od.hooks[od.param("RESTOREALL").key] = load
     od.hooks[od.param("CONTROLWORD").key] = control_word
     od.hooks[od.param("SETPOVRON").key] = override_on
+
+
+def store_problems(fw: Firmware, image: dict[str, int | str]) -> list[str]:
+    """The cross-parameter rules (current limits, one-way curves, …) ``image`` breaks: the
+    firmware refuses to store such a set with abort 0x08000020, on USB and CANopen alike."""
+    values = {**image, "CURNORM": fw.value("CURNORM")}
+    rules = CATALOGUE.check_rules(fw.variant, values)
+    return [str(problem.text) for problem in rules if problem.severity == "error"]
+
+
+def _write_image(fw: Firmware, key: tuple[int, int], image: dict[str, int | str]) -> None:
+    try:
+        fw.nv.replace(image)
+    except OSError as exc:  # the image could not be written: memory and file keep the old one
+        log.warning("non-volatile memory not written: %s", exc)
+        raise abort(key, AbortCode.HARDWARE_ERROR) from exc
 
 
 def _rules(fw: Firmware) -> None:

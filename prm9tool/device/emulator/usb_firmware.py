@@ -30,6 +30,7 @@ from prm9tool.device.protocol import (
     Identify,
     IdentifyReply,
     MalformedReportError,
+    Nmt,
     ReadEntries,
     ReadReply,
     Reload,
@@ -188,6 +189,8 @@ class UsbFirmware:
             valve.restore_factory()
         elif isinstance(request, Reload):
             valve.reload()
+        elif isinstance(request, Nmt):
+            valve.nmt_command(request.command)
         return Done()  # Restart: executed in handle() after the answer is built
 
     def _read(self, request: ReadEntries) -> ReadReply:

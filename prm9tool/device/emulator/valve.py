@@ -34,6 +34,13 @@ if TYPE_CHECKING:
 
     from prm9tool.device.emulator.canopen_slave import CanopenSlave
 
+_NMT_EVENTS = {  # CiA 301 command specifier -> NMT event (nmt.NMT_EVENTS)
+    0x01: "operational",
+    0x02: "stopped",
+    0x80: "preoperational",
+    0x81: "reset_node",
+    0x82: "reset_comm",
+}
 INPUT_NAMES = (
     "setpoint",
     "sensor",
@@ -74,6 +81,7 @@ class EmulatedValve:
         )
         self._capture = Capture(self._fw.loop)
         self._restart_listeners: list[Callable[[], None]] = []
+        self._nmt_handler: Callable[[int], None] | None = None
         self._thread: threading.Thread | None = None
         self._stop = threading.Event()
         self.pacer = Pacer(CYCLE_S)
@@ -196,6 +204,26 @@ class EmulatedValve:
             if name == "supply_voltage":
                 self._fw.config_dirty = True
 
+    def inputs(self) -> dict[str, float]:
+        """The analog inputs as set (see :meth:`set_input`; switches: :attr:`switches`)."""
+        with self.lock:
+            return dict(self._fw.inputs)
+
+    @property
+    def switches(self) -> tuple[int, int]:
+        """The rotary switch positions (interface/bit rate, node ID) as set now."""
+        return self._fw.switches[0], self._fw.switches[1]
+
+    @property
+    def latched_switches(self) -> tuple[int, int]:
+        """The rotary switch positions the valve read at its last power-up."""
+        return self._fw.latched_switches
+
+    def injected(self) -> frozenset[Fault]:
+        """The physical faults injected now."""
+        with self.lock:
+            return frozenset(self._fw.injected)
+
     def inject(self, fault: Fault) -> None:
         """Make the physical fault happen (see docs/emulator.md for what each one does)."""
         fault = _fault(fault)
@@ -307,6 +335,27 @@ class EmulatedValve:
                 self.restart()
                 return
             apply_nmt_event(self._fw, event)
+
+    def nmt_command(self, command: int) -> None:
+        """An NMT command for this valve from its USB side (CiA 301 command specifier).
+
+        With the valve on a CAN bus its CANopen slave takes it as if the master had sent it
+        to the valve's node (the slave's NMT state, PDOs and heartbeat follow); otherwise the
+        firmware's NMT state changes directly. Ignored while CANopen is switched off.
+        """
+        event = _NMT_EVENTS.get(int(command))
+        if event is None:
+            raise ValueRangeError(f"unknown NMT command 0x{int(command):02X}")
+        with self.lock:
+            if self._nmt_handler is not None:
+                self._nmt_handler(int(command))
+            elif self.can_enabled and not self._fw.booting:
+                self.nmt_event(event)
+
+    def set_nmt_handler(self, handler: Callable[[int], None] | None) -> None:
+        """The CANopen slave takes the NMT commands of :meth:`nmt_command` (None: it left)."""
+        with self.lock:
+            self._nmt_handler = handler
 
     def connect_can(self, bus: can.BusABC) -> CanopenSlave:
         """Put the valve on a python-can bus; AccessDeniedError on a valve without -CA."""

@@ -10,6 +10,7 @@ from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 from enum import IntEnum
 
+from prm9tool.catalogue.commissioning import NmtCommand
 from prm9tool.device.protocol.status import StatusRequest
 from prm9tool.device.protocol.wire import BODY_SIZE, MalformedReportError, Reader, Writer
 
@@ -51,6 +52,7 @@ class Op(IntEnum):
     STREAM_START = 0x0A
     STREAM_STOP = 0x0B
     RELOAD = 0x0C
+    NMT = 0x0D
 
 
 # --- request messages --------------------------------------------------------------------------------
@@ -294,6 +296,36 @@ class StreamStop:
         return cls()
 
 
+NMT_COMMANDS = frozenset(int(c) for c in NmtCommand)
+
+
+@dataclass(frozen=True)
+class Nmt:
+    """An NMT command for the valve itself, as if its CANopen master had sent it on the bus
+    (CiA 301 command specifier: 01h start, 02h stop, 80h pre-operational, 81h reset node,
+    82h reset communication)."""
+
+    command: int
+    op = Op.NMT
+
+    @property
+    def idempotent(self) -> bool:
+        """Start, stop and pre-operational may be repeated; a reset may not."""
+        return self.command in (NmtCommand.START, NmtCommand.STOP, NmtCommand.PRE_OPERATIONAL)
+
+    def encode(self, w: Writer) -> None:
+        """Write the body: the command specifier (u8)."""
+        w.u8(self.command)
+
+    @classmethod
+    def decode(cls, r: Reader) -> Nmt:
+        """Parse the body; an unknown command specifier is malformed."""
+        command = r.u8()
+        if command not in NMT_COMMANDS:
+            raise MalformedReportError(f"unknown NMT command 0x{command:02X}")
+        return cls(command)
+
+
 Request = (
     Identify
     | ReadEntries
@@ -307,6 +339,7 @@ Request = (
     | StatusRequest
     | StreamStart
     | StreamStop
+    | Nmt
 )
 REQUEST_PARSERS: dict[int, Callable[[Reader], Request]] = {
     Op.IDENTIFY: Identify.decode,
@@ -321,4 +354,5 @@ REQUEST_PARSERS: dict[int, Callable[[Reader], Request]] = {
     Op.STREAM_START: StreamStart.decode,
     Op.STREAM_STOP: StreamStop.decode,
     Op.RELOAD: Reload.decode,  # type: ignore[dict-item]
+    Op.NMT: Nmt.decode,
 }

@@ -237,4 +237,5 @@ RESPONSE_PARSERS: dict[int, Callable[[Reader], Response]] = {
     Op.STREAM_START: StreamStarted.decode,
     Op.STREAM_STOP: Done.decode,
     Op.RELOAD: Done.decode,
+    Op.NMT: Done.decode,
 }

@@ -161,6 +161,11 @@ class EmulatorTransport(Transport):
             self._stepped_to = self._clock
             self._valve_seen = self.valve.time
 
+    def unplug(self) -> None:
+        """Pull the cable: every report from now on fails, as on a real unplugged valve."""
+        self._dead = True
+        self._inbox.clear()
+
     @property
     def reports_on_link(self) -> int:
         """Reports put on the link so far, both directions (the numbering of LinkFaults)."""

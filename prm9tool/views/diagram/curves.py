@@ -1,6 +1,6 @@
 """The small curves the block dialogs draw, as plain arithmetic on display units (%, ms, mA).
 
-These are previews of what the valve does with a parameter set (manual §8.7.2, SPEC §2.4);
+These are previews of what the valve does with a parameter set (manual §8.7.2, tables 8-1 and 8-2);
 the valve (and the emulator) does the real thing every 200 µs.
 """
 

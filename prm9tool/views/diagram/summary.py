@@ -8,7 +8,7 @@ from PySide6.QtCore import QCoreApplication
 
 from prm9tool.catalogue import CATALOGUE
 from prm9tool.catalogue.canopen_switches import CanSettings, effective, format_bitrate
-from prm9tool.i18n import current_language
+from prm9tool.i18n import current_language, format_value
 from prm9tool.model.document import ParameterDocument
 
 NO_VALUE = "—"
@@ -24,11 +24,11 @@ def value_text(doc: ParameterDocument, mnemonic: str) -> str:
     if param.choices and isinstance(raw, int):
         return param.choice_text(raw, current_language())
     unit = f" {param.unit}" if param.unit else ""
-    return f"{param.format_display(raw)}{unit}"
+    return f"{format_value(param, raw)}{unit}"
 
 
 def _bare(doc: ParameterDocument, mnemonic: str) -> str:
-    return CATALOGUE[mnemonic].format_display(doc.value(mnemonic))
+    return format_value(CATALOGUE[mnemonic], doc.value(mnemonic))
 
 
 def _has(doc: ParameterDocument, mnemonic: str) -> bool:

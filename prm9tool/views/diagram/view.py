@@ -27,7 +27,7 @@ from PySide6.QtWidgets import QDialog, QGraphicsView, QMenu, QWidget
 
 from prm9tool.catalogue import CATALOGUE
 from prm9tool.catalogue.signals import BY_KEY
-from prm9tool.i18n import text
+from prm9tool.i18n import format_measured, text
 from prm9tool.model.access import AccessModel
 from prm9tool.model.document import ParameterDocument
 from prm9tool.online.connection_protocol import DiagramConnection
@@ -41,7 +41,6 @@ _CTX = "DiagramBlock"
 # Values a block shows besides the parameters it edits.
 _ALSO_SHOWN = {"valve": ("PCODE",), "canopen": ("SWBAUD", "SWNODE")}
 ZOOM_STEP = 1.15
-_DECIMALS = {"%": 1, "mA": 0, "V": 2, "°C": 1}
 
 
 # Short tags for measuring points that share a block with others of the same unit.
@@ -60,7 +59,7 @@ def format_signal(key: str, raw: float) -> str:
     signal = BY_KEY[key]
     value = signal.to_display(raw)
     tag = f"{_TAGS[key]} " if key in _TAGS else ""
-    return f"{tag}{value:.{_DECIMALS.get(signal.unit, 1)}f} {signal.unit}"
+    return f"{tag}{format_measured(value, signal.unit)} {signal.unit}"
 
 
 class DiagramView(QGraphicsView):
@@ -70,6 +69,7 @@ class DiagramView(QGraphicsView):
     dialog_opened = Signal(str, object)  # block id, the dialog widget
     valve_selection_requested = Signal()  # the valve block was clicked (offline)
     canopen_requested = Signal()  # the CANopen block was clicked
+    tuning_requested = Signal(str)  # a controller dialog's "Tuning…": the loop
 
     def __init__(
         self,
@@ -85,6 +85,7 @@ class DiagramView(QGraphicsView):
         self._simulator_factory = simulator_factory or _step_simulator
         self._dialogs: dict[str, QDialog] = {}
         self._fit = True
+        self._signals: dict[str, float] = {}  # the last values, shown again in a new language
         self._scene: DiagramScene | None = None
         self.setRenderHints(QPainter.RenderHint.Antialiasing | QPainter.RenderHint.TextAntialiasing)
         self.setMinimumSize(480, 300)
@@ -210,7 +211,13 @@ class DiagramView(QGraphicsView):
 
     def _create_dialog(self, block_id: str) -> QDialog | None:
         spec = self.diagram.layout.block(block_id)
-        ctx = BlockContext(self._doc, self._access, self._connection, self._simulator_factory)
+        ctx = BlockContext(
+            self._doc,
+            self._access,
+            self._connection,
+            self._simulator_factory,
+            self.tuning_requested.emit,
+        )
         return create_block_dialog(block_id, ctx, spec.title, self)
 
     def _on_dialog_finished(self, _result: int) -> None:
@@ -292,6 +299,7 @@ class DiagramView(QGraphicsView):
         self._refresh_blocks()
 
     def _on_online_changed(self, online: bool) -> None:
+        self._signals.clear()
         self._refresh_dots()
         self._refresh_block("valve")
         if online:
@@ -304,6 +312,7 @@ class DiagramView(QGraphicsView):
     def _on_signal_values_changed(self, values: dict[str, float]) -> None:
         if not self.is_online:
             return
+        self._signals.update(values)
         for key, raw in values.items():
             dot = self.diagram.dots.get(key)
             if dot is not None:
@@ -337,6 +346,7 @@ class DiagramView(QGraphicsView):
             self.diagram.retranslate()
             self._refresh_blocks()
             self._refresh_dots()
+            self._on_signal_values_changed(dict(self._signals))  # 0,0 % for 0.0 %
         super().changeEvent(event)
 
 

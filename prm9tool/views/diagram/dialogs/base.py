@@ -49,6 +49,7 @@ class BlockContext:
     access: AccessModel
     connection: DiagramConnection | None = None
     simulator_factory: Callable[[ParameterDocument, str], Any] | None = None
+    open_tuning: Callable[[str], None] | None = None  # opens the Tuning window for a loop
 
 
 class BlockDialog(QDialog):

@@ -12,9 +12,10 @@ import math
 from typing import Any
 
 from PySide6.QtCore import Qt
-from PySide6.QtWidgets import QGridLayout, QLabel, QSlider, QWidget
+from PySide6.QtWidgets import QGridLayout, QLabel, QPushButton, QSlider, QWidget
 
 from prm9tool.catalogue import CATALOGUE
+from prm9tool.i18n import format_value
 from prm9tool.views.diagram.dialogs.base import BlockContext, BlockDialog
 from prm9tool.views.diagram.dialogs.plot import BLUE, GREY, ORANGE, Axes, Curve, PlotWidget
 
@@ -61,6 +62,10 @@ class ControllerDialog(BlockDialog):
         self.side.addWidget(self.plot, 1)
         self.side.addWidget(self.figures)
         self.side.addLayout(self._slider_grid())
+        self.tuning_button = QPushButton()
+        self.tuning_button.setVisible(ctx.open_tuning is not None)
+        self.tuning_button.clicked.connect(self._on_tuning_clicked)
+        self.side.addWidget(self.tuning_button, 0, Qt.AlignmentFlag.AlignRight)
         self.simulator = self._make_simulator()
         self.finish()
         self._simulate()
@@ -114,8 +119,13 @@ class ControllerDialog(BlockDialog):
         for name, slider in self.sliders.items():
             slider.setEnabled(not read_only and self.access.may_edit(CATALOGUE[name]))
 
+    def _on_tuning_clicked(self) -> None:
+        if self.ctx.open_tuning is not None:
+            self.ctx.open_tuning(self.loop)
+
     def retranslate(self) -> None:
         super().retranslate()
+        self.tuning_button.setText(self.tr("Tuning and autotune…"))
         if self.ctx.simulator_factory is None:
             self.figures.setText(self.tr("No simulation available."))
 
@@ -161,7 +171,7 @@ class ControllerDialog(BlockDialog):
         raw = slider_to_raw(position, CATALOGUE[name].raw_max)
         if self.sliders[name].isSliderDown():
             self._trial[name] = raw
-            self.gain_fields[name].setText(CATALOGUE[name].format_display(raw))
+            self.gain_fields[name].setText(format_value(CATALOGUE[name], raw))
             self._simulate()
         else:
             self.apply_value(name, raw)

@@ -11,6 +11,7 @@ from __future__ import annotations
 from PySide6.QtWidgets import QLabel, QWidget
 
 from prm9tool.catalogue import CATALOGUE, dither
+from prm9tool.i18n import format_significant
 from prm9tool.views.diagram.curves import dither_wave
 from prm9tool.views.diagram.dialogs.base import BlockContext, BlockDialog
 from prm9tool.views.diagram.dialogs.plot import BLUE, GREEN, RED, Axes, Curve, PlotWidget
@@ -52,7 +53,7 @@ class CurrentDitherDialog(BlockDialog):
             + "\n"
             + self.tr("Dither: ±%1 mA peak (DTAMP 100 % = %2 % of CURNORM).")
             .replace("%1", f"{amplitude:.0f}")
-            .replace("%2", f"{dither.FULL_SCALE * 100:g}")
+            .replace("%2", format_significant(dither.FULL_SCALE * 100, 6))
         )
         freq = dither.frequency_hz(float(self.doc.value("DYNFREQ")))
         curves, lines = [], []

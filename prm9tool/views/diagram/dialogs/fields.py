@@ -9,12 +9,13 @@ from __future__ import annotations
 
 from collections.abc import Callable, Iterable
 
-from PySide6.QtCore import QSignalBlocker
+from PySide6.QtCore import QSignalBlocker, Qt
+from PySide6.QtGui import QKeyEvent
 from PySide6.QtWidgets import QComboBox, QLineEdit, QWidget
 
 from prm9tool.catalogue import CATALOGUE, Parameter
 from prm9tool.errors import ValueRangeError
-from prm9tool.i18n import current_language
+from prm9tool.i18n import current_language, format_value, parse_value
 from prm9tool.model.access import AccessModel
 from prm9tool.model.document import ParameterDocument, Raw
 from prm9tool.translate import error_text
@@ -27,7 +28,7 @@ ERROR_STYLE = "border: 2px solid #d03030;"
 def range_text(param: Parameter) -> str:
     """``0 … 100 %`` — the allowed range of a numeric parameter in display units."""
     unit = f" {param.unit}" if param.unit else ""
-    return f"{param.format_display(param.raw_min)} … {param.format_display(param.raw_max)}{unit}"
+    return f"{format_value(param, param.raw_min)} … {format_value(param, param.raw_max)}{unit}"
 
 
 class ValueField(QLineEdit):
@@ -53,7 +54,7 @@ class ValueField(QLineEdit):
 
     def show_value(self, doc: ParameterDocument) -> None:
         """Display the document's value (does not emit edit signals)."""
-        self._shown = self.param.format_display(doc.value(self.mnemonic))
+        self._shown = format_value(self.param, doc.value(self.mnemonic))
         self.setPlaceholderText(range_text(self.param))
         with QSignalBlocker(self):
             self.setText(self._shown)
@@ -74,6 +75,17 @@ class ValueField(QLineEdit):
         reason = access.why_locked(self.param)
         self.setToolTip(reason or f"{self.mnemonic}: {range_text(self.param)}")
 
+    def keyPressEvent(self, event: QKeyEvent) -> None:
+        """Enter commits the field (``editingFinished``) and stays in the dialog.
+
+        The line edit passes Enter on to its dialog, whose default button (Close) would
+        otherwise close the dialog instead of showing the value's effect or its refusal.
+        """
+        super().keyPressEvent(event)
+        if event.key() in (Qt.Key.Key_Return, Qt.Key.Key_Enter):
+            self.selectAll()
+            event.accept()
+
     def _on_text_edited(self, _text: str) -> None:
         self.setStyleSheet("")
 
@@ -82,7 +94,7 @@ class ValueField(QLineEdit):
         if text == self._shown:
             return
         try:
-            raw = self.param.parse_display(text)
+            raw = parse_value(self.param, text)
         except ValueRangeError as exc:
             self.setStyleSheet(ERROR_STYLE)
             self._report(error_text(exc))

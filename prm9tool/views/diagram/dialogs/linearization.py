@@ -20,6 +20,7 @@ from PySide6.QtWidgets import (
 
 from prm9tool.catalogue import CATALOGUE
 from prm9tool.errors import ValueRangeError
+from prm9tool.i18n import format_value, parse_value
 from prm9tool.translate import error_text
 from prm9tool.views.diagram.curves import FULL, clamp_point
 from prm9tool.views.diagram.dialogs.base import BlockContext, BlockDialog
@@ -193,7 +194,7 @@ class LinearizationDialog(BlockDialog):
         with QSignalBlocker(self.table):
             for row, (x, y) in enumerate(zip(xs, ys, strict=True)):
                 for col, (name, raw) in enumerate(((self.x_names[row], x), (self.y_names[row], y))):
-                    item = QTableWidgetItem(CATALOGUE[name].format_display(raw))
+                    item = QTableWidgetItem(format_value(CATALOGUE[name], raw))
                     item.setData(Qt.ItemDataRole.UserRole, name)
                     item.setTextAlignment(
                         Qt.AlignmentFlag.AlignRight | Qt.AlignmentFlag.AlignVCenter
@@ -226,7 +227,7 @@ class LinearizationDialog(BlockDialog):
     def _on_table_item_changed(self, item: QTableWidgetItem) -> None:
         name = item.data(Qt.ItemDataRole.UserRole)
         try:
-            raw = CATALOGUE[name].parse_display(item.text())
+            raw = parse_value(CATALOGUE[name], item.text())
         except ValueRangeError as exc:
             self.show_error(error_text(exc))
             self.refresh_extra()

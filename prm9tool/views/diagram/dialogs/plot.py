@@ -14,6 +14,7 @@ from PySide6.QtCore import QEvent, QPointF, QRectF, Qt
 from PySide6.QtGui import QColor, QFont, QPainter, QPainterPath, QPaintEvent, QPen
 from PySide6.QtWidgets import QSizePolicy, QWidget
 
+from prm9tool.i18n import format_significant
 from prm9tool.views.diagram.colours import on_palette, readable
 
 AXIS = QColor("#44505c")
@@ -71,7 +72,7 @@ def tick_text(value: float) -> str:
     """Shortest readable text of a tick value."""
     if abs(value - round(value)) < 1e-9:
         return str(round(value))
-    return f"{value:.3g}"
+    return format_significant(value, 3)
 
 
 class PlotWidget(QWidget):

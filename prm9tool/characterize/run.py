@@ -1,0 +1,201 @@
+"""End-of-line characterization: steps at three amplitudes, Bode, static characteristic.
+
+:func:`characterize` runs the tests of an acceptance profile on a rig and checks every figure
+against its limits; :func:`report_data` is the JSON report and :func:`write_csv_files` the raw
+data. :data:`RESULT_HOOKS` is where a history of results (issue 13) registers a callable that
+receives every finished :class:`Characterization`.
+"""
+
+from __future__ import annotations
+
+import csv
+import math
+import time
+from collections.abc import Callable
+from dataclasses import dataclass, field
+from datetime import UTC, datetime
+from pathlib import Path
+from typing import Any
+
+from prm9tool import __version__
+from prm9tool.analysis.profile import FIGURES, Limit, Profile
+from prm9tool.catalogue import CATALOGUE
+from prm9tool.catalogue.typekey import TypeKey
+from prm9tool.characterize.procedures import (
+    BodeResult,
+    StaticResult,
+    StepResult,
+    bode_test,
+    static_test,
+    step_test,
+)
+from prm9tool.characterize.rig import Rig, RigInfo
+
+Progress = Callable[[str], None]
+
+
+@dataclass(frozen=True)
+class Figure:
+    """One measured figure, its limit (if the profile sets one) and the verdict."""
+
+    name: str
+    label: str
+    value: float
+    unit: str
+    limit: Limit | None
+
+    @property
+    def passed(self) -> bool | None:
+        """True/False against the limit; None when no limit is set."""
+        return None if self.limit is None else self.limit.passed(self.value)
+
+
+@dataclass
+class Characterization:
+    """Everything one run measured (the report's content)."""
+
+    info: RigInfo
+    profile: Profile
+    date: str
+    parameters: dict[str, int]
+    steps: list[StepResult] = field(default_factory=list)
+    bode: BodeResult | None = None
+    static: StaticResult | None = None
+    figures: list[Figure] = field(default_factory=list)
+    wall_s: float = 0.0
+
+    @property
+    def passed(self) -> bool:
+        """True when no figure failed its limit."""
+        return all(f.passed is not False for f in self.figures)
+
+
+RESULT_HOOKS: list[Callable[[Characterization], None]] = []
+
+
+def characterize(rig: Rig, profile: Profile, progress: Progress | None = None) -> Characterization:
+    """Run the profile's tests on ``rig`` (the valve is left as it was after each test)."""
+    say = progress or (lambda _text: None)
+    started = time.perf_counter()
+    variant = TypeKey.parse(rig.info.type_key).variant
+    names = [p.mnemonic for p in CATALOGUE.for_variant(variant) if p.in_file]
+    result = Characterization(
+        rig.info, profile, datetime.now(UTC).isoformat(timespec="seconds"), rig.read(names)
+    )
+    for amplitude in profile.step_amplitudes_pct:
+        say(f"step response {amplitude:g} %")
+        result.steps.append(step_test(rig, amplitude, duration_s=profile.step_duration_s))
+    say(f"frequency response ±{profile.bode_amplitude_pct:g} %")
+    result.bode = bode_test(
+        rig,
+        profile.bode_amplitude_pct,
+        0.0,
+        profile.bode_f_min_hz,
+        profile.bode_f_max_hz,
+        profile.bode_duration_s,
+    )
+    say("static characteristic")
+    result.static = static_test(rig, profile.static_period_s)
+    result.figures = figures(result)
+    result.wall_s = time.perf_counter() - started
+    for hook in RESULT_HOOKS:
+        hook(result)
+    return result
+
+
+def figures(c: Characterization) -> list[Figure]:
+    """Every figure of ``c`` with its limit from the profile."""
+    limits = c.profile.limits
+    out: list[Figure] = []
+
+    def add(name: str, label: str, value: float, base: str) -> None:
+        out.append(Figure(name, label, value, FIGURES[base], limits.get(base)))
+
+    for step in c.steps:
+        f = step.figures
+        a = f"{step.amplitude_pct:g}"
+        nan = math.nan
+        add(f"step_{a}_overshoot_pct", f"step {a} %: overshoot", f.overshoot if f else nan,
+            "step_overshoot_pct")  # fmt: skip
+        add(f"step_{a}_rise_s", f"step {a} %: rise time", f.rise_time if f else nan, "step_rise_s")
+        add(f"step_{a}_settling_s", f"step {a} %: settling time", f.settling_time if f else nan,
+            "step_settling_s")  # fmt: skip
+    if c.bode is not None:
+        r = c.bode.response
+        add("bode_bandwidth_hz", "−3 dB frequency", r.bandwidth_hz(), "bode_bandwidth_hz")
+        add("bode_phase90_hz", "−90° frequency", r.phase_90_hz(), "bode_phase90_hz")
+    if c.static is not None:
+        s = c.static.characteristic
+        add("static_gain", "gain", s.gain, "static_gain")
+        add("static_hysteresis_pct", "hysteresis", s.hysteresis_pct, "static_hysteresis_pct")
+        add("static_linearity_pct", "linearity error", s.linearity_pct, "static_linearity_pct")
+        add("static_dead_band_pct", "dead band", s.dead_band_pct, "static_dead_band_pct")
+    return out
+
+
+def _num(value: float) -> float | None:
+    return None if math.isnan(value) else round(value, 6)
+
+
+def report_data(c: Characterization, csv_files: list[Path] | None = None) -> dict[str, Any]:
+    """The JSON report (schema: docs/tuning.md)."""
+    return {
+        "prm9tool": __version__,
+        "date": c.date,
+        "valve": {
+            "type_key": c.info.type_key,
+            "serial": c.info.serial,
+            "firmware": c.info.firmware,
+        },
+        "link": c.info.link,
+        "sample_rate_hz": c.info.sample_rate_hz,
+        "profile": c.profile.name,
+        "passed": c.passed,
+        "figures": [
+            {
+                "name": f.name,
+                "value": _num(f.value),
+                "unit": f.unit,
+                "min": f.limit.minimum if f.limit else None,
+                "max": f.limit.maximum if f.limit else None,
+                "passed": f.passed,
+            }
+            for f in c.figures
+        ],
+        "parameters": c.parameters,
+        "csv": [str(p) for p in csv_files or []],
+        "wall_s": round(c.wall_s, 3),
+    }
+
+
+def write_csv_files(c: Characterization, stem: Path) -> list[Path]:
+    """Raw data: ``<stem>-step-<a>.csv``, ``<stem>-bode.csv``, ``<stem>-static.csv``."""
+    written = []
+    for step in c.steps:
+        path = stem.with_name(f"{stem.name}-step-{step.amplitude_pct:g}.csv")
+        _table(path, step.record.t, step.record.channels)
+        written.append(path)
+    if c.bode is not None:
+        path = stem.with_name(f"{stem.name}-bode.csv")
+        r = c.bode.response
+        columns = {
+            "magnitude_db": r.magnitude_db,
+            "phase_deg": r.phase_deg,
+            "coherence": r.coherence,
+        }
+        _table(path, r.frequency, columns, "frequency [Hz]")
+        written.append(path)
+    if c.static is not None:
+        path = stem.with_name(f"{stem.name}-static.csv")
+        channels = {"demand [%]": c.static.demand, **c.static.record.channels}
+        _table(path, c.static.record.t, channels)
+        written.append(path)
+    return written
+
+
+def _table(path: Path, first: Any, columns: dict[str, Any], head: str = "time [s]") -> None:
+    with path.open("w", newline="", encoding="utf-8") as out:
+        writer = csv.writer(out)
+        writer.writerow([head, *columns])
+        for i, x in enumerate(first):
+            writer.writerow([f"{x:.6g}", *(f"{float(v[i]):.6g}" for v in columns.values())])

@@ -1,0 +1,116 @@
+"""``prm9tool --characterize``: the end-of-line test of one valve, headless.
+
+Runs the acceptance profile's tests (steps at three amplitudes, Bode, static characteristic),
+writes the PDF report (``--report``), the JSON report (``--json``) and the raw data as CSV
+next to them, and exits 0 when every figure is within its limits, 8 when one is not (docs/
+tuning.md). An emulated valve is stepped as fast as the CPU allows; a USB valve runs at its
+stream rate.
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import sys
+from collections.abc import Callable
+from pathlib import Path
+
+from prm9tool.analysis.profile import DEFAULT, Profile, ProfileError, load_profile
+from prm9tool.characterize.procedures import LimitExceededError
+from prm9tool.characterize.rig import EmulatorRig, Rig, SessionRig, Stopped, ValveFaultError
+from prm9tool.characterize.run import Characterization, characterize, report_data, write_csv_files
+from prm9tool.cli.batch import BatchError, select
+from prm9tool.device.factory import emulated_valve, open_session, parse_emulator_spec
+from prm9tool.errors import CommunicationError, ExitCode, Prm9Error
+from prm9tool.files.atomicfile import atomic_write
+
+
+def run(args: argparse.Namespace) -> int:
+    """Entry point of ``--characterize``; returns the exit code."""
+    try:
+        profile = _profile(args)
+        outputs = _outputs(args)
+        rig, close = _rig(args)
+    except BatchError as exc:
+        print(f"prm9tool: {exc}", file=sys.stderr)
+        return int(exc.code)
+    try:
+        result = characterize(
+            rig, profile, lambda text: print(f"prm9tool: {text}", file=sys.stderr)
+        )
+    except (Stopped, LimitExceededError, ValveFaultError) as exc:
+        print(f"prm9tool: test stopped: {exc}", file=sys.stderr)
+        return ExitCode.OUT_OF_LIMITS
+    except CommunicationError as exc:
+        print(f"prm9tool: {exc}", file=sys.stderr)
+        return ExitCode.COMMUNICATION
+    finally:
+        close()
+    try:
+        _write(result, outputs)
+    except OSError as exc:
+        print(f"prm9tool: cannot write the report: {exc}", file=sys.stderr)
+        return ExitCode.USAGE
+    for figure in result.figures:
+        if figure.passed is False:
+            print(f"prm9tool: out of limits: {figure.name} = {figure.value:.4g} {figure.unit} "
+                  f"(limit {figure.limit.text() if figure.limit else ''})", file=sys.stderr)  # fmt: skip
+    verdict = "PASSED" if result.passed else "FAILED"
+    print(f"{result.info.type_key} serial {result.info.serial}: {verdict}")
+    return ExitCode.OK if result.passed else ExitCode.OUT_OF_LIMITS
+
+
+def _profile(args: argparse.Namespace) -> Profile:
+    if not args.profile:
+        return DEFAULT
+    try:
+        return load_profile(args.profile)
+    except ProfileError as exc:
+        raise BatchError(ExitCode.USAGE, str(exc)) from exc
+
+
+def _outputs(args: argparse.Namespace) -> tuple[Path | None, Path | None]:
+    pdf = Path(args.report) if args.report else None
+    js = Path(args.json) if args.json else None
+    if pdf is None and js is None:
+        raise BatchError(
+            ExitCode.USAGE, "--characterize needs --report OUT.pdf and/or --json OUT.json"
+        )
+    for option, path in (("--report", pdf), ("--json", js)):
+        if path is not None and not path.parent.is_dir():
+            raise BatchError(ExitCode.USAGE, f"{option} {path}: there is no folder {path.parent}")
+    return pdf, js
+
+
+def _rig(args: argparse.Namespace) -> tuple[Rig, Callable[[], None]]:
+    if len(args.emulator) + len(args.device) != 1:
+        raise BatchError(
+            ExitCode.USAGE, "--characterize tests one valve: give one --device or --emulator"
+        )
+    if args.emulator:
+        try:
+            type_key, serial = parse_emulator_spec(args.emulator[0] or "")
+            valve = emulated_valve(type_key, serial)
+        except Prm9Error as exc:
+            raise BatchError(ExitCode.USAGE, f"--emulator: {exc}") from exc
+        return EmulatorRig(valve), lambda: None
+    args.all = False
+    entry = select(args)[0]
+    try:
+        session = open_session(entry, paced=False)
+    except Prm9Error as exc:
+        raise BatchError(ExitCode.COMMUNICATION, str(exc)) from exc
+    return SessionRig(session, "USB"), session.close
+
+
+def _write(result: Characterization, outputs: tuple[Path | None, Path | None]) -> None:
+    pdf, js = outputs
+    stem = (pdf or js or Path("report")).with_suffix("")
+    csv_files = write_csv_files(result, stem)
+    if pdf is not None:
+        from prm9tool.views.tuning_report import write_pdf
+
+        write_pdf(result, pdf)
+    if js is not None:
+        text = json.dumps(report_data(result, csv_files), indent=2, ensure_ascii=False)
+        atomic_write(js, (text + "\n").encode("utf-8"), backup=False)

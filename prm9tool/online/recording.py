@@ -1,0 +1,99 @@
+"""The GUI's history hook: what the connection's worker thread records, and how.
+
+Runs in the worker thread beside the valve I/O, so a slow database never freezes the window.
+Recording never raises: a record the database cannot take waits in the local queue (see
+:mod:`prm9tool.history.recorder`), and a problem is handed to ``report`` (the connection shows
+it). Whether an upload may start while the database is away is decided before the upload,
+by the user (``ValveConnection.check_history``). QtCore-free.
+"""
+
+from __future__ import annotations
+
+import threading
+from collections.abc import Callable, Mapping
+from pathlib import Path
+from typing import Any
+
+from prm9tool.catalogue import CATALOGUE
+from prm9tool.errors import CommunicationError, FileFormatError, HistoryError
+from prm9tool.history.recorder import Recorder
+
+Raw = int | str
+Progress = Callable[[int, int, str], None]
+
+
+class HistoryHook:
+    """Records the operations of one connection (the GUI's) into the history."""
+
+    def __init__(self, recorder: Recorder, report: Callable[[str], None]) -> None:
+        self.recorder, self._report = recorder, report
+
+    def problem(self) -> HistoryError | None:
+        """Why the database cannot take records now (None: it can)."""
+        return self.recorder.problem()
+
+    def add(
+        self,
+        session: Any,
+        operation: str,
+        outcome: str,
+        parameters: Mapping[str, Raw] | None,
+        details: Mapping[str, Any] | None = None,
+        failed_step: str | None = None,
+    ) -> None:
+        """Record one operation on the session's valve."""
+        try:
+            status = self.recorder.record(
+                session.info, operation, outcome, parameters, details, failed_step
+            )
+        except HistoryError as exc:
+            self._report(str(exc))
+            return
+        if status == "queued":
+            self._report(
+                f"the history database cannot be reached; the record waits in {self.recorder.queue}"
+            )
+
+    def download(self, session: Any, values: Mapping[str, Raw], purpose: str) -> None:
+        """Record a download (also the one that compares document and valve)."""
+        self.add(session, "download", "ok", values, {"purpose": purpose})
+
+    def backup(self, session: Any, path: Path) -> None:
+        """Record the backup file taken before the first upload."""
+        from prm9tool.files.prmfile import read_file
+
+        try:
+            values: Mapping[str, Raw] | None = read_file(path).values
+        except FileFormatError:
+            values = None
+        self.add(session, "backup", "ok", values, {"file": str(path)})
+
+    def upload(
+        self,
+        session: Any,
+        values: Mapping[str, Raw],
+        progress: Progress | None,
+        cancel: threading.Event | None,
+    ) -> Any:
+        """``session.upload`` with its outcome recorded (a broken link too, then re-raised).
+
+        A partial upload (the compare view's chosen values) is followed by a download, so the
+        record holds the valve's whole parameter set after it.
+        """
+        try:
+            result = session.upload(values, progress, cancel)
+        except CommunicationError as exc:
+            details = {"written": getattr(exc, "written", 0), "error": str(exc)}
+            self.add(
+                session, "upload", "communication-error", None, details, getattr(exc, "step", None)
+            )
+            raise
+        after: Mapping[str, Raw] | None = None
+        if result.stored:
+            whole = {p.mnemonic for p in CATALOGUE.file_parameters(session.variant)}
+            after = values if whole <= set(values) else session.download()
+        details = {"written": result.written, "chosen": len(values), "mismatches": {
+            m: [str(want), str(got)] for m, (want, got) in result.mismatches.items()}}  # fmt: skip
+        outcome = "ok" if result.stored else "verification-failed"
+        self.add(session, "upload", outcome, after, details, result.failed_step)
+        return result

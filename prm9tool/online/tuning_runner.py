@@ -1,0 +1,185 @@
+"""Runs tuning and characterization procedures off the GUI thread (QtCore only).
+
+:class:`ValveRunner` runs them on the connected valve, as a long job of the valve connection's
+worker thread (the oscilloscope's stream is stopped first: the procedure streams itself).
+:class:`SimulationRunner` runs them on an emulated copy of the document's valve in a thread of
+its own, stepped as fast as the CPU allows (offline, and for trying before touching a valve).
+Both report ``finished(kind, result)`` or ``failed(kind, message)`` on the GUI thread; ``stop()``
+ends a running procedure at its next check, and the procedure puts the valve back as it was.
+"""
+
+from __future__ import annotations
+
+import threading
+from collections.abc import Callable, Mapping
+from typing import Any
+
+from PySide6.QtCore import QObject, Signal
+
+from prm9tool.characterize.rig import Rig, SessionRig
+from prm9tool.errors import CommunicationError, Prm9Error
+from prm9tool.translate import error_text
+
+Procedure = Callable[[Rig], object]
+
+
+class _Failure:
+    def __init__(self, message: str) -> None:
+        self.message = message
+
+
+class TuningRunner(QObject):
+    """The interface the Tuning window uses (one procedure at a time)."""
+
+    finished = Signal(str, object)  # kind, result
+    failed = Signal(str, str)  # kind, message
+    busy_changed = Signal(bool)
+
+    def __init__(self, parent: QObject | None = None) -> None:
+        super().__init__(parent)
+        self._rig: Rig | None = None
+        self._kind = ""
+        self._lock = threading.Lock()
+        self.stop_requested = threading.Event()
+
+    @property
+    def busy(self) -> bool:
+        """True while a procedure runs."""
+        return bool(self._kind)
+
+    @property
+    def simulated(self) -> bool:
+        """True when the procedures run on an emulated copy, not on a valve."""
+        return False
+
+    def run(self, kind: str, procedure: Procedure) -> None:
+        """Start ``procedure`` (ignored while another one runs)."""
+        if self._kind:
+            return
+        self._kind = kind
+        self.stop_requested.clear()
+        self.busy_changed.emit(True)
+        self._start(kind, procedure)
+
+    def stop(self) -> None:
+        """Ask the running procedure to stop (it restores the valve)."""
+        self.stop_requested.set()
+        with self._lock:
+            if self._rig is not None:
+                self._rig.stop.set()
+
+    def _start(self, kind: str, procedure: Procedure) -> None:
+        raise NotImplementedError
+
+    def _execute(self, rig: Rig, procedure: Procedure) -> object:
+        """Run ``procedure`` on ``rig`` (worker thread); a Prm9Error becomes a _Failure."""
+        with self._lock:
+            self._rig = rig
+            if self.stop_requested.is_set():
+                rig.stop.set()
+        try:
+            return procedure(rig)
+        except CommunicationError:
+            raise
+        except Prm9Error as exc:
+            return _Failure(error_text(exc))
+        except ValueError as exc:
+            return _Failure(str(exc))
+        finally:
+            with self._lock:
+                self._rig = None
+
+    def _deliver(self, result: object) -> None:
+        kind, self._kind = self._kind, ""
+        self.busy_changed.emit(False)
+        if isinstance(result, _Failure):
+            self.failed.emit(kind, result.message)
+        else:
+            self.finished.emit(kind, result)
+
+
+class ValveRunner(TuningRunner):
+    """Procedures on the connected valve (a long job of :class:`ValveConnection`)."""
+
+    def __init__(self, connection: Any, parent: QObject | None = None) -> None:
+        super().__init__(parent)
+        self.connection = connection
+        connection.operation_finished.connect(self._on_operation_finished)
+        connection.failed.connect(self._on_connection_failed)
+        connection.lost.connect(self._on_connection_failed)
+
+    def _start(self, kind: str, procedure: Procedure) -> None:
+        if self.connection.streaming_keys:
+            self.connection.stop_stream()
+        link = _link_name(self.connection.device)
+        self.connection.run_job(
+            f"tuning:{kind}", lambda session: self._execute(SessionRig(session, link), procedure)
+        )
+
+    def _on_operation_finished(self, name: str, result: object) -> None:
+        if self._kind and name == f"tuning:{self._kind}":
+            self._deliver(result)
+
+    def _on_connection_failed(self, message: str) -> None:
+        if self._kind:
+            self._deliver(_Failure(message))
+
+
+def _link_name(device: object) -> str:
+    device_id = str(getattr(device, "device_id", ""))
+    if device_id.startswith("emulator:"):
+        return "emulator over its USB link (real time)"
+    return "USB"
+
+
+class _Relay(QObject):
+    done = Signal(object)
+
+
+class SimulationRunner(TuningRunner):
+    """Procedures on an emulated valve holding the document's values (no valve touched)."""
+
+    def __init__(
+        self, type_key: str, values: Mapping[str, int | str], parent: QObject | None = None
+    ) -> None:
+        super().__init__(parent)
+        self.type_key, self.values = type_key, dict(values)
+        self._relay = _Relay()
+        self._relay.done.connect(self._deliver)
+        self._thread: threading.Thread | None = None
+
+    @property
+    def simulated(self) -> bool:
+        """Always True."""
+        return True
+
+    def _start(self, kind: str, procedure: Procedure) -> None:
+        relay = self._relay
+
+        def work() -> None:
+            try:
+                result = self._execute(self._rig_factory(), procedure)
+            except Prm9Error as exc:
+                result = _Failure(error_text(exc))
+            relay.done.emit(result)
+
+        self._thread = threading.Thread(target=work, name="tuning-simulation", daemon=True)
+        self._thread.start()
+
+    def _rig_factory(self) -> Rig:
+        from prm9tool.catalogue import CATALOGUE
+        from prm9tool.characterize.rig import EmulatorRig
+        from prm9tool.device.emulator import EmulatedValve
+        from prm9tool.online.tuning import analog_type_key
+
+        valve = EmulatedValve(analog_type_key(self.type_key))
+        for mnemonic, raw in self.values.items():
+            param = CATALOGUE.get(mnemonic)
+            if param is not None and param.writable and param.applies(valve.variant):
+                valve.write(param.index, param.subindex, raw)
+        return EmulatorRig(valve)
+
+    def wait(self, timeout: float = 10.0) -> None:
+        """Wait for the running procedure's thread (tests, closing the window)."""
+        if self._thread is not None:
+            self._thread.join(timeout)

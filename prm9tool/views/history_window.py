@@ -1,0 +1,247 @@
+"""Valve → History: the records of a valve, the difference of two, restore and export.
+
+The records are read in a thread of its own (a PostgreSQL server may be slow or away; the
+window never waits for it) and delivered by a signal. The table is a model over the record
+summaries; a record's parameter set is read when it is needed.
+"""
+
+from __future__ import annotations
+
+import json
+import threading
+from collections.abc import Callable
+from pathlib import Path
+from typing import Any
+
+from PySide6.QtCore import QAbstractTableModel, QModelIndex, QPersistentModelIndex, Qt, Signal
+from PySide6.QtWidgets import (
+    QAbstractItemView,
+    QDialog,
+    QFileDialog,
+    QHBoxLayout,
+    QHeaderView,
+    QLabel,
+    QLineEdit,
+    QPushButton,
+    QTableView,
+    QVBoxLayout,
+    QWidget,
+)
+
+from prm9tool.catalogue.typekey import TypeKey
+from prm9tool.compare.model import Comparison, Side
+from prm9tool.errors import Prm9Error
+from prm9tool.history.recorder import Recorder
+from prm9tool.translate import error_text
+from prm9tool.views import prompts
+
+Index = QModelIndex | QPersistentModelIndex
+Record = dict[str, Any]
+
+
+class HistoryTableModel(QAbstractTableModel):
+    """One row per record, oldest first."""
+
+    def __init__(self, parent: QWidget | None = None) -> None:
+        super().__init__(parent)
+        self.records: list[Record] = []
+
+    def set_records(self, records: list[Record]) -> None:
+        """Show these records."""
+        self.beginResetModel()
+        self.records = records
+        self.endResetModel()
+
+    def rowCount(self, parent: Index = QModelIndex()) -> int:  # noqa: B008
+        return 0 if parent.isValid() else len(self.records)
+
+    def columnCount(self, parent: Index = QModelIndex()) -> int:  # noqa: B008
+        return 0 if parent.isValid() else 7
+
+    def headerData(self, section: int, orientation: Qt.Orientation, role: int = 0) -> Any:
+        if orientation != Qt.Orientation.Horizontal or role != Qt.ItemDataRole.DisplayRole:
+            return None
+        return [self.tr("No."), self.tr("Time (UTC)"), self.tr("Operation"), self.tr("Outcome"),
+                self.tr("Type key"), self.tr("Firmware"), self.tr("User, station, link")][section]  # fmt: skip
+
+    def data(self, index: Index, role: int = 0) -> Any:
+        if role != Qt.ItemDataRole.DisplayRole:
+            return None
+        r = self.records[index.row()]
+        failed = f" ({r['failed_step']})" if r["failed_step"] else ""
+        cells = [
+            str(r["seq"]), r["recorded_at"][:19].replace("T", " "), r["operation"],
+            r["outcome"] + failed, r["type_key"], r["firmware"],
+            f"{r['os_user']}@{r['host']}, {r['device_id']}",
+        ]  # fmt: skip
+        return cells[index.column()]
+
+
+class HistoryWindow(QDialog):
+    """The records of the connected valve or of a typed serial number."""
+
+    loaded = Signal(object, object)  # (records or None, error or None), from the reader thread
+
+    def __init__(
+        self,
+        recorder: Recorder,
+        serial: int | None,
+        restore_document: Callable[[TypeKey, dict[str, int | str]], None],
+        restore_valve: Callable[[int, dict[str, int | str]], bool],
+        parent: QWidget | None = None,
+    ) -> None:
+        super().__init__(parent)
+        self._recorder = recorder
+        self._restore_document, self._restore_valve = restore_document, restore_valve
+        self.setWindowTitle(self.tr("History"))
+        self.serial = QLineEdit(str(serial) if serial else "")
+        self.serial.setPlaceholderText(self.tr("serial number"))
+        show = QPushButton(self.tr("Show"))
+        self.state = QLabel()
+        self.state.setWordWrap(True)
+        self.model = HistoryTableModel(self)
+        self.table = QTableView(self)
+        self.table.setModel(self.model)
+        self.table.setSelectionBehavior(QAbstractItemView.SelectionBehavior.SelectRows)
+        self.table.verticalHeader().hide()
+        self.table.horizontalHeader().setSectionResizeMode(QHeaderView.ResizeMode.ResizeToContents)
+        self.table.horizontalHeader().setStretchLastSection(True)
+        top = QHBoxLayout()
+        top.addWidget(QLabel(self.tr("Valve serial number:")))
+        top.addWidget(self.serial)
+        top.addWidget(show)
+        top.addStretch(1)
+        self.buttons = {
+            "compare": QPushButton(self.tr("Compare the two selected records")),
+            "document": QPushButton(self.tr("Restore into the document")),
+            "valve": QPushButton(self.tr("Restore to the valve")),
+            "export": QPushButton(self.tr("Export…")),
+        }
+        actions = QHBoxLayout()
+        for button in self.buttons.values():
+            actions.addWidget(button)
+        actions.addStretch(1)
+        layout = QVBoxLayout(self)
+        for part in (top, self.state, self.table, actions):
+            layout.addLayout(part) if isinstance(part, QHBoxLayout) else layout.addWidget(part)
+        show.clicked.connect(self.reload)
+        self.serial.returnPressed.connect(self.reload)
+        self.loaded.connect(self._on_loaded)
+        self.table.selectionModel().selectionChanged.connect(self._update_buttons)
+        self.buttons["compare"].clicked.connect(self.compare_selected)
+        self.buttons["document"].clicked.connect(
+            lambda: self._restore(self._restore_document_record)
+        )
+        self.buttons["valve"].clicked.connect(lambda: self._restore(self._restore_valve_record))
+        self.buttons["export"].clicked.connect(self.export_selected)
+        self._update_buttons()
+        self.resize(980, 520)
+        if serial:
+            self.reload()
+
+    # --- loading (off the GUI thread) -------------------------------------------------------
+    def reload(self) -> None:
+        """Read the records of the serial number typed in."""
+        text = self.serial.text().strip()
+        if not text.isdigit():
+            self.state.setText(self.tr("Type a valve's serial number."))
+            return
+        self.state.setText(self.tr("Reading the history…"))
+        threading.Thread(target=self._read, args=(int(text),), daemon=True, name="history").start()
+
+    def _read(self, serial: int) -> None:
+        try:
+            records = self._recorder.store().records(serial)
+        except Prm9Error as exc:
+            self.loaded.emit(None, exc)
+            return
+        self.loaded.emit(records, None)
+
+    def _on_loaded(self, records: object, error: object) -> None:
+        if isinstance(error, Exception):
+            self.model.set_records([])
+            self.state.setText(error_text(error))
+        else:
+            assert isinstance(records, list)
+            self.model.set_records(records)
+            self.state.setText(self.tr("%n record(s) in {0}", "", len(records)).format(
+                self._recorder.store().shown_url))  # fmt: skip
+            self.table.scrollToBottom()
+        self._update_buttons()
+
+    # --- selection and actions --------------------------------------------------------------
+    def selected(self) -> list[Record]:
+        """The selected records, oldest first."""
+        rows = sorted({index.row() for index in self.table.selectionModel().selectedRows()})
+        return [self.model.records[row] for row in rows]
+
+    def _update_buttons(self, *_args: object) -> None:
+        count = len(self.selected())
+        self.buttons["compare"].setEnabled(count == 2)
+        for name in ("document", "valve", "export"):
+            self.buttons[name].setEnabled(count == 1)
+
+    def _full(self, record: Record) -> tuple[TypeKey, dict[str, int | str]] | None:
+        whole = self._recorder.store().record(record["id"])
+        if whole is None or whole["parameters"] is None:
+            prompts.inform(self, prompts.Icon.Information, self.tr("History"),
+                           self.tr("This record holds no parameter set (the operation did not "
+                                   "change the valve's stored parameters)."))  # fmt: skip
+            return None
+        return TypeKey.parse(whole["type_key"]), dict(json.loads(whole["parameters"]))
+
+    def compare_selected(self) -> CompareDialogLike | None:
+        """Show the difference of the two selected records in the compare view."""
+        from prm9tool.views.compare_view import CompareDialog
+
+        sides = []
+        for record in self.selected():
+            full = self._full(record)
+            if full is None:
+                return None
+            label = self.tr("No. {0}, {1}").format(record["seq"], record["recorded_at"][:19])
+            sides.append(Side(label, full[0], full[1]))
+        dialog = CompareDialog(Comparison((sides[0], sides[1])), (), parent=self)
+        dialog.open()
+        return dialog
+
+    def _restore(self, how: Callable[[Record, TypeKey, dict[str, int | str]], None]) -> None:
+        (record,) = self.selected()
+        full = self._full(record)
+        if full is not None:
+            how(record, *full)
+
+    def _restore_document_record(
+        self, _record: Record, key: TypeKey, values: dict[str, int | str]
+    ) -> None:
+        self._restore_document(key, values)
+
+    def _restore_valve_record(
+        self, record: Record, _key: TypeKey, values: dict[str, int | str]
+    ) -> None:
+        if not self._restore_valve(int(record["serial"]), values):
+            prompts.inform(self, prompts.Icon.Warning, self.tr("Restore to the valve"),
+                           self.tr("Go online with valve {0} first: a record is restored only "
+                                   "into the valve it was recorded from.").format(record["serial"]))  # fmt: skip
+
+    def export_selected(self, path: str | None = None) -> None:
+        """Write the selected record to a *.prm or CSV file."""
+        from prm9tool.history.export import export_record
+
+        (record,) = self.selected()
+        if path is None:
+            path, _filter = QFileDialog.getSaveFileName(
+                self, self.tr("Export record"), f"{record['serial']}_{record['seq']}.prm",
+                self.tr("Parameter files (*.prm);;CSV tables (*.csv)"),
+            )  # fmt: skip
+            if not path:
+                return
+        try:
+            whole = self._recorder.store().record(record["id"])
+            export_record(whole or record, Path(path))
+        except (Prm9Error, ValueError) as exc:
+            prompts.inform(self, prompts.Icon.Warning, self.tr("Export record"),
+                           self.tr("The record was not exported."), str(exc))  # fmt: skip
+
+
+CompareDialogLike = QDialog

@@ -1,0 +1,418 @@
+"""The pages of the Tuning window: autotune, Bode, static characteristic, test report."""
+
+from __future__ import annotations
+
+import math
+from typing import TYPE_CHECKING, Any
+
+import numpy as np
+from PySide6.QtCore import QRectF
+from PySide6.QtGui import QPainter, QPaintEvent
+from PySide6.QtWidgets import (
+    QComboBox,
+    QFormLayout,
+    QHBoxLayout,
+    QLabel,
+    QLineEdit,
+    QPushButton,
+    QTableWidget,
+    QTableWidgetItem,
+    QVBoxLayout,
+    QWidget,
+)
+
+from prm9tool.analysis.model import Targets
+from prm9tool.analysis.pid import to_parameters
+from prm9tool.analysis.profile import DEFAULT, ProfileError, load_profile
+from prm9tool.analysis.static import linearization_values, propose_linearization
+from prm9tool.characterize.autotune import AutotuneResult, compare_steps, model_tune
+from prm9tool.characterize.procedures import (
+    LOOPS,
+    BodeResult,
+    CriticalGainResult,
+    StaticResult,
+    bode_test,
+    critical_gain_tune,
+    static_test,
+)
+from prm9tool.characterize.run import Characterization, characterize, write_csv_files
+from prm9tool.views.tuning_plot import COLOURS, Plot, Series, paint_plot
+from prm9tool.views.tuning_report import (
+    bode_plots,
+    figure_label,
+    limit_text,
+    static_plot,
+    value_text,
+    verdict,
+    write_pdf,
+)
+
+if TYPE_CHECKING:
+    from prm9tool.views.tuning_window import TuningWindow
+
+
+class PlotView(QWidget):
+    """Shows one or more :class:`Plot` stacked vertically, in the palette's colours."""
+
+    def __init__(self, parent: QWidget | None = None) -> None:
+        super().__init__(parent)
+        self.plots: list[Plot] = []
+        self.setMinimumHeight(260)
+
+    def show_plots(self, plots: list[Plot]) -> None:
+        """Replace what is shown."""
+        self.plots = plots
+        self.update()
+
+    def paintEvent(self, _event: QPaintEvent) -> None:
+        painter = QPainter(self)
+        painter.setRenderHint(QPainter.RenderHint.Antialiasing)
+        painter.fillRect(self.rect(), self.palette().base())
+        ink = self.palette().text().color()
+        height = self.height() / max(1, len(self.plots))
+        for k, plot in enumerate(self.plots):
+            paint_plot(painter, QRectF(0, k * height, self.width(), height), plot, ink)
+        painter.end()
+
+
+class Page(QWidget):
+    """Common parts: a form of settings, a Run button, a result text and a plot."""
+
+    def __init__(self, window: TuningWindow) -> None:
+        super().__init__(window)
+        self.window_ = window
+        self.form = QFormLayout()
+        self.labels: dict[str, QLabel] = {}
+        self.run_button = QPushButton()
+        self.run_button.clicked.connect(self.run)
+        self.result = QLabel()
+        self.result.setWordWrap(True)
+        self.plot = PlotView()
+        self.buttons = QHBoxLayout()
+        self.buttons.addWidget(self.run_button)
+        self.buttons.addStretch(1)
+        layout = QVBoxLayout(self)
+        layout.addLayout(self.form)
+        layout.addLayout(self.buttons)
+        layout.addWidget(self.result)
+        layout.addWidget(self.plot, 1)
+
+    def field(self, key: str, widget: QWidget) -> Any:
+        """Add a labelled settings field."""
+        self.labels[key] = QLabel()
+        self.form.addRow(self.labels[key], widget)
+        return widget
+
+    def set_busy(self, busy: bool) -> None:
+        """Disable the Run button while a test runs."""
+        self.run_button.setEnabled(not busy)
+
+    def run(self) -> None:
+        """Start this page's test."""
+
+    def show_result(self, result: object) -> None:
+        """Show a finished test's result."""
+
+    def retranslate(self) -> None:
+        """Texts in the program language."""
+
+    def tr_label(self, key: str, text: str) -> None:
+        """Set a field's label."""
+        self.labels[key].setText(text)
+
+
+class AutotunePage(Page):
+    """Model-based (no oscillation) or critical-gain autotune, before/after, accept."""
+
+    def __init__(self, window: TuningWindow) -> None:
+        super().__init__(window)
+        from prm9tool.views.tuning_window import spin
+
+        self.method = self.field("method", QComboBox())
+        self.method.addItems(["", ""])
+        self.amplitude = self.field("amplitude", spin(50.0, 1.0, 90.0, "%"))
+        self.overshoot = self.field("overshoot", spin(10.0, 0.0, 50.0, "%"))
+        self.settling = self.field("settling", spin(40.0, 2.0, 2000.0, "ms", 0))
+        self.accept_button = QPushButton()
+        self.accept_button.setEnabled(False)
+        self.accept_button.clicked.connect(self.accept)
+        self.buttons.insertWidget(1, self.accept_button)
+        self.proposal: dict[str, int] = {}
+
+    def run(self) -> None:
+        """Run the chosen method."""
+        loop = self.window_.current_loop()
+        amplitude = self.amplitude.value()
+        targets = Targets(self.overshoot.value(), self.settling.value() / 1000.0)
+        duration = max(3 * targets.settling_s, 0.06)
+        if self.method.currentIndex() == 0:
+            what = self.tr("steps of %1 % from 0 %, a few times, about %2 s in all")
+            what = what.replace("%1", f"{amplitude:g}").replace("%2", f"{4 * duration:.1f}")
+            self.window_.start(
+                "autotune", what, lambda rig: model_tune(rig, targets, loop, amplitude)
+            )
+            return
+        what = self.tr("P only with rising gain until the loop oscillates (steps of 5 %, "
+                       "oscillation stopped at ±40 %), about 5 s")  # fmt: skip
+
+        def critical(rig: Any) -> tuple[CriticalGainResult, Any]:
+            found = critical_gain_tune(rig, loop)
+            proposed = to_parameters(LOOPS[loop].prefix, found.gains)
+            return found, compare_steps(rig, loop, proposed, amplitude, duration)
+
+        self.window_.start("autotune", what, critical)
+
+    def show_result(self, result: object) -> None:
+        """Proposed gains, before/after (simulated, measured)."""
+        loop = self.window_.current_loop()
+        prefix = LOOPS[loop].prefix
+        present = {
+            k: int(self.window_.doc.value(k))
+            for k in (prefix + s for s in ("KP", "KI", "KD", "T1"))
+        }
+        if isinstance(result, AutotuneResult):
+            self.proposal = result.proposed_values
+            before, after, simulated = result.before, result.after, result.simulated
+            head = self.tr("Model: gain %1, lags %2 ms, dead time %3 ms (fit error %4 %).").replace(
+                "%1", f"{result.model.gain:.3g}").replace(
+                "%2", ", ".join(f"{t * 1000:.2f}" for t in (result.model.tau1, result.model.tau2, result.model.tau3))).replace(
+                "%3", f"{result.model.delay * 0.2:.1f}").replace("%4", f"{result.model.fit_error:.1f}")  # fmt: skip
+        else:
+            found: CriticalGainResult = result[0]  # type: ignore[index]
+            before, after = result[1]  # type: ignore[index]
+            self.proposal = to_parameters(prefix, found.gains)
+            simulated = None
+            head = self.tr("Critical gain Kkr = %1, period Tkr = %2 ms: K = 0.5·Kkr, Ti = 0.8·Tkr, Td = 0.12·Tkr.").replace(
+                "%1", f"{found.kkr:.2f}").replace("%2", f"{found.tkr * 1000:.1f}")  # fmt: skip
+        from prm9tool.views.tuning_window import gain_text
+
+        rows = [
+            f"{k}: {gain_text(k, present[k])} → <b>{gain_text(k, v)}</b>"
+            for k, v in self.proposal.items()
+        ]
+        self.result.setText(
+            head + "<br>" + "<br>".join(rows) + "<br>" + self._figures(before, after)
+        )
+        series = [
+            Series(before.record.t * 1000, before.record.channels[LOOPS[loop].actual], self.tr("before (measured)"), COLOURS[0]),
+            Series(after.record.t * 1000, after.record.channels[LOOPS[loop].actual], self.tr("proposed (measured)"), COLOURS[1]),
+        ]  # fmt: skip
+        if simulated is not None:
+            t = np.arange(len(simulated)) * 0.2
+            series.append(Series(t, simulated, self.tr("proposed (simulated)"), COLOURS[2], True))
+        self.plot.show_plots([Plot(self.tr("Step response"), self.tr("time [ms]"), "%", series)])
+        self.accept_button.setEnabled(True)
+
+    def _figures(self, before: Any, after: Any) -> str:
+        def text(step: Any) -> str:
+            f = step.figures
+            if f is None:
+                return self.tr("no response")
+            settle = "—" if math.isnan(f.settling_time) else f"{f.settling_time * 1000:.1f} ms"
+            return (
+                self.tr("overshoot %1 %, settling %2")
+                .replace("%1", f"{f.overshoot:.1f}")
+                .replace("%2", settle)
+            )
+
+        return (
+            self.tr("Before: %1. Proposed: %2.")
+            .replace("%1", text(before))
+            .replace("%2", text(after))
+        )
+
+    def accept(self) -> None:
+        """The proposal into the document, one undo step."""
+        if self.proposal:
+            self.window_.accept_values(self.proposal, self.tr("Autotune"))
+            self.accept_button.setEnabled(False)
+
+    def retranslate(self) -> None:
+        """Texts."""
+        self.method.setItemText(0, self.tr("Model-based (never oscillates)"))
+        self.method.setItemText(1, self.tr("Critical gain (APOSYS 10 rule)"))
+        self.tr_label("method", self.tr("Method:"))
+        self.tr_label("amplitude", self.tr("Step amplitude:"))
+        self.tr_label("overshoot", self.tr("Target overshoot at most:"))
+        self.tr_label("settling", self.tr("Target settling time (±2 %) at most:"))
+        self.run_button.setText(self.tr("Run autotune"))
+        self.accept_button.setText(self.tr("Accept the proposed gains"))
+
+
+class BodePage(Page):
+    """A logarithmic sine sweep around an operating point."""
+
+    def __init__(self, window: TuningWindow) -> None:
+        super().__init__(window)
+        from prm9tool.views.tuning_window import spin
+
+        self.amplitude = self.field("amplitude", spin(10.0, 1.0, 90.0, "%"))
+        self.centre = self.field("centre", spin(0.0, -50.0, 50.0, "%"))
+        self.f_min = self.field("f_min", spin(1.0, 0.1, 100.0, "Hz"))
+        self.f_max = self.field("f_max", spin(200.0, 10.0, 1000.0, "Hz"))
+        self.duration = self.field("duration", spin(10.0, 1.0, 60.0, "s"))
+
+    def run(self) -> None:
+        """Sweep."""
+        a, c, lo, hi, d = (
+            w.value() for w in (self.amplitude, self.centre, self.f_min, self.f_max, self.duration)
+        )
+        loop = self.window_.current_loop()
+        what = self.tr("a sine sweep %1 … %2 Hz of ±%3 % around %4 %, %5 s").replace("%1", f"{lo:g}").replace(
+            "%2", f"{hi:g}").replace("%3", f"{a:g}").replace("%4", f"{c:g}").replace("%5", f"{d:g}")  # fmt: skip
+        self.window_.start("bode", what, lambda rig: bode_test(rig, a, c, lo, hi, d, loop))
+
+    def show_result(self, result: object) -> None:
+        """Magnitude, phase, −3 dB and −90°."""
+        assert isinstance(result, BodeResult)
+        fake = Characterization(None, DEFAULT, "", {}, bode=result)  # type: ignore[arg-type]
+        self.plot.show_plots(list(bode_plots(fake)))
+        r = result.response
+        self.result.setText(self.tr("−3 dB at %1 Hz, −90° at %2 Hz.").replace("%1", f"{r.bandwidth_hz():.1f}").replace(
+            "%2", f"{r.phase_90_hz():.1f}"))  # fmt: skip
+
+    def retranslate(self) -> None:
+        """Texts."""
+        for key, text in (
+            ("amplitude", self.tr("Amplitude:")),
+            ("centre", self.tr("Operating point:")),
+            ("f_min", self.tr("From:")),
+            ("f_max", self.tr("To:")),
+            ("duration", self.tr("Duration:")),
+        ):
+            self.tr_label(key, text)  # fmt: skip
+        self.run_button.setText(self.tr("Measure the frequency response"))
+
+
+class StaticPage(Page):
+    """A slow triangle; hysteresis, linearity, dead band, gain; linearization proposal."""
+
+    def __init__(self, window: TuningWindow) -> None:
+        super().__init__(window)
+        from prm9tool.views.tuning_window import spin
+
+        self.period = self.field("period", spin(20.0, 2.0, 600.0, "s"))
+        self.apply_button = QPushButton()
+        self.apply_button.setEnabled(False)
+        self.apply_button.clicked.connect(self.apply)
+        self.buttons.insertWidget(1, self.apply_button)
+        self.proposal: dict[str, int] = {}
+
+    def run(self) -> None:
+        """Triangle over the whole range."""
+        period = self.period.value()
+        what = self.tr("a triangle over the whole range −100 … 100 %, %1 s").replace(
+            "%1", f"{period:g}"
+        )
+        self.window_.start("static", what, lambda rig: static_test(rig, period))
+
+    def show_result(self, result: object) -> None:
+        """Figures, the curve, and the linearization previewed on it."""
+        assert isinstance(result, StaticResult)
+        c = result.characteristic
+        ch = result.record.channels
+        lin = propose_linearization(ch["setpoint_gain"] * 163.84, ch["setpoint_linearized"] * 163.84,
+                                    ch["position_actual"], result.demand)  # fmt: skip
+        self.proposal = linearization_values(lin)
+        fake = Characterization(None, DEFAULT, "", {}, static=result)  # type: ignore[arg-type]
+        plot = static_plot(fake)
+        order = np.argsort(ch["setpoint_linearized"])
+        new_out = np.interp(ch["setpoint_gain"] * 163.84, lin.xs, lin.ys) / 163.84
+        predicted = np.interp(
+            new_out, ch["setpoint_linearized"][order], ch["position_actual"][order]
+        )
+        step = max(1, len(predicted) // 400)
+        plot.series.append(
+            Series(
+                result.demand[::step],
+                predicted[::step],
+                self.tr("linearized (preview)"),
+                COLOURS[3],
+                True,
+            )
+        )
+        self.plot.show_plots([plot])
+        self.result.setText(self.tr("Gain %1, hysteresis %2 %, linearity error %3 %, dead band %4 %.").replace(
+            "%1", f"{c.gain:.3f}").replace("%2", f"{c.hysteresis_pct:.2f}").replace(
+            "%3", f"{c.linearity_pct:.2f}").replace("%4", f"{c.dead_band_pct:.1f}"))  # fmt: skip
+        self.apply_button.setEnabled(True)
+
+    def apply(self) -> None:
+        """The proposed 9 points into the document, one undo step."""
+        if self.proposal:
+            self.window_.accept_values(
+                self.proposal, self.tr("Linearization from the static characteristic")
+            )
+            self.apply_button.setEnabled(False)
+
+    def retranslate(self) -> None:
+        """Texts."""
+        self.tr_label("period", self.tr("Triangle period:"))
+        self.run_button.setText(self.tr("Measure the static characteristic"))
+        self.apply_button.setText(self.tr("Apply the proposed linearization"))
+
+
+class ReportPage(Page):
+    """The end-of-line test with an acceptance profile; PDF and CSV."""
+
+    def __init__(self, window: TuningWindow) -> None:
+        super().__init__(window)
+        self.profile_path = self.field("profile", QLineEdit())
+        self.table = QTableWidget(0, 4)
+        self.layout().insertWidget(3, self.table, 1)  # type: ignore[union-attr]
+        self.plot.hide()
+        self.save_button = QPushButton()
+        self.save_button.setEnabled(False)
+        self.save_button.clicked.connect(self.save)
+        self.buttons.insertWidget(1, self.save_button)
+        self.last: Characterization | None = None
+
+    def run(self) -> None:
+        """All tests of the profile."""
+        path = self.profile_path.text().strip()
+        try:
+            profile = load_profile(path) if path else DEFAULT
+        except ProfileError as exc:
+            self.result.setText(str(exc))
+            return
+        what = self.tr("steps of %1 %, a sine sweep of ±%2 % and a triangle over the whole range, about %3 s").replace(
+            "%1", ", ".join(f"{a:g}" for a in profile.step_amplitudes_pct)).replace(
+            "%2", f"{profile.bode_amplitude_pct:g}").replace(
+            "%3", f"{profile.bode_duration_s + profile.static_period_s + 1:.0f}")  # fmt: skip
+        self.window_.start("report", what, lambda rig: characterize(rig, profile))
+
+    def show_result(self, result: object) -> None:
+        """Every figure with its verdict."""
+        assert isinstance(result, Characterization)
+        self.last = result
+        self.table.setRowCount(len(result.figures))
+        for row, f in enumerate(result.figures):
+            cells = (figure_label(f), value_text(f), limit_text(f), verdict(f.passed))
+            for col, text in enumerate(cells):
+                self.table.setItem(row, col, QTableWidgetItem(text))
+        self.table.resizeColumnsToContents()
+        self.result.setText(self.tr("Result: %1").replace("%1", verdict(result.passed)))
+        self.save_button.setEnabled(True)
+
+    def save(self) -> None:
+        """The PDF report and the raw data as CSV beside it."""
+        if self.last is None:
+            return
+        name = f"{self.last.info.serial}-report.pdf"
+        path = self.window_.save_file(self.tr("Save the test report"), "PDF (*.pdf)", name)
+        if path is None:
+            return
+        try:
+            write_pdf(self.last, path)
+            write_csv_files(self.last, path.with_suffix(""))
+        except OSError as exc:
+            self.result.setText(self.tr("Cannot write the report: %1").replace("%1", str(exc)))
+
+    def retranslate(self) -> None:
+        """Texts."""
+        self.tr_label("profile", self.tr("Acceptance profile (TOML, empty: default):"))
+        self.run_button.setText(self.tr("Run the end-of-line test"))
+        self.save_button.setText(self.tr("Save PDF and CSV…"))
+        self.table.setHorizontalHeaderLabels(
+            [self.tr("Figure"), self.tr("Value"), self.tr("Limit"), self.tr("Result")]
+        )

@@ -1,0 +1,181 @@
+"""Small line plots drawn with QPainter: the tuning report's and the Tuning window's figures.
+
+No pyqtgraph here: the same picture goes into a PDF page and onto the screen, at any size.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Sequence
+from dataclasses import dataclass, field
+
+import numpy as np
+from PySide6.QtCore import QPointF, QRectF, Qt
+from PySide6.QtGui import QColor, QFont, QImage, QPainter, QPainterPath, QPen
+
+COLOURS = ("#1f77b4", "#d62728", "#2ca02c", "#9467bd", "#ff7f0e")
+
+
+@dataclass
+class Series:
+    """One line: x, y, its legend text and colour (index into COLOURS or a name)."""
+
+    x: np.ndarray
+    y: np.ndarray
+    label: str
+    colour: str = COLOURS[0]
+    dashed: bool = False
+
+
+@dataclass
+class Plot:
+    """A plot: lines, axis titles, a log x axis, and marker lines (x or y, text)."""
+
+    title: str
+    xlabel: str
+    ylabel: str
+    series: list[Series] = field(default_factory=list)
+    logx: bool = False
+    vlines: list[tuple[float, str]] = field(default_factory=list)
+    hlines: list[tuple[float, str]] = field(default_factory=list)
+
+
+def _range(values: Sequence[np.ndarray], log: bool) -> tuple[float, float]:
+    data = np.concatenate([v[np.isfinite(v)] for v in values]) if values else np.zeros(1)
+    if log:
+        data = np.log10(data[data > 0]) if np.any(data > 0) else np.zeros(1)
+    lo, hi = (float(data.min()), float(data.max())) if len(data) else (0.0, 1.0)
+    if hi - lo < 1e-9:
+        lo, hi = lo - 1.0, hi + 1.0
+    pad = 0.05 * (hi - lo) if not log else 0.0
+    return lo - pad, hi + pad
+
+
+def _ticks(lo: float, hi: float, log: bool) -> list[float]:
+    if log:
+        return [float(d) for d in range(math.floor(lo), math.ceil(hi) + 1) if lo <= d <= hi]
+    step = 10 ** math.floor(math.log10((hi - lo) / 4))
+    for mult in (1, 2, 5, 10):
+        if (hi - lo) / (step * mult) <= 6:
+            step *= mult
+            break
+    first = math.ceil(lo / step) * step
+    return [first + k * step for k in range(int((hi - first) / step) + 1)]
+
+
+def paint_plot(painter: QPainter, rect: QRectF, plot: Plot, ink: QColor | None = None) -> None:
+    """Draw ``plot`` into ``rect`` (axes, grid, lines, legend, markers)."""
+    ink = ink or QColor("black")
+    font = QFont(painter.font())
+    font.setPixelSize(min(max(9, int(rect.height() / 22)), max(9, int(rect.width() / 60))))
+    painter.setFont(font)
+    metrics = painter.fontMetrics()
+    line = metrics.height()
+    area = rect.adjusted(
+        metrics.horizontalAdvance("-0000.0") + line, line * 1.6, -line, -line * 2.4
+    )
+    xs = [s.x for s in plot.series]
+    ys = [s.y for s in plot.series] + [np.array([v for v, _ in plot.hlines])]
+    x0, x1 = _range(xs, plot.logx)
+    y0, y1 = _range(ys, False)
+
+    def px(x: float) -> float:
+        v = math.log10(x) if plot.logx else x
+        return area.left() + (v - x0) / (x1 - x0) * area.width()
+
+    def py(y: float) -> float:
+        return area.bottom() - (y - y0) / (y1 - y0) * area.height()
+
+    painter.setPen(QPen(ink, 0))
+    painter.drawText(QRectF(rect.left(), rect.top(), rect.width(), line * 1.4),
+                     Qt.AlignmentFlag.AlignCenter, plot.title)  # fmt: skip
+    grid = QColor(ink)
+    grid.setAlpha(50)
+    for tick in _ticks(x0, x1, plot.logx):
+        x = area.left() + (tick - x0) / (x1 - x0) * area.width()
+        painter.setPen(QPen(grid, 0))
+        painter.drawLine(QPointF(x, area.top()), QPointF(x, area.bottom()))
+        painter.setPen(QPen(ink, 0))
+        label = f"{10**tick:g}" if plot.logx else f"{tick:g}"
+        painter.drawText(
+            QRectF(x - 40, area.bottom() + 2, 80, line), Qt.AlignmentFlag.AlignHCenter, label
+        )
+    for tick in _ticks(y0, y1, False):
+        y = py(tick)
+        painter.setPen(QPen(grid, 0))
+        painter.drawLine(QPointF(area.left(), y), QPointF(area.right(), y))
+        painter.setPen(QPen(ink, 0))
+        painter.drawText(QRectF(rect.left(), y - line / 2, area.left() - rect.left() - 4, line),
+                         Qt.AlignmentFlag.AlignRight | Qt.AlignmentFlag.AlignVCenter, f"{tick:g}")  # fmt: skip
+    painter.drawRect(area)
+    painter.drawText(QRectF(area.left(), area.bottom() + line, area.width(), line * 1.3),
+                     Qt.AlignmentFlag.AlignCenter, plot.xlabel)  # fmt: skip
+    painter.save()
+    painter.translate(rect.left() + line * 0.1, area.center().y())
+    painter.rotate(-90)
+    painter.drawText(
+        QRectF(-area.height() / 2, 0, area.height(), line),
+        Qt.AlignmentFlag.AlignCenter,
+        plot.ylabel,
+    )
+    painter.restore()
+    painter.save()
+    painter.setClipRect(area)
+    for value, text in plot.hlines:
+        _marker(
+            painter, QPointF(area.left(), py(value)), QPointF(area.right(), py(value)), text, ink
+        )
+    for value, text in plot.vlines:
+        if math.isfinite(value) and value > 0:
+            _marker(
+                painter,
+                QPointF(px(value), area.top()),
+                QPointF(px(value), area.bottom()),
+                text,
+                ink,
+            )
+    for s in plot.series:
+        _line(painter, s, px, py)
+    painter.restore()
+    width = max((metrics.horizontalAdvance(s.label) for s in plot.series), default=0) + line
+    left = area.right() - width - 2 * line
+    for k, s in enumerate(plot.series):
+        y = area.top() + line * (k + 0.3)
+        painter.setPen(QPen(QColor(s.colour), 2))
+        painter.drawLine(QPointF(left, y + line / 2), QPointF(left + line * 1.5, y + line / 2))
+        painter.setPen(QPen(ink, 0))
+        box = QRectF(left + line * 1.8, y, width, line)
+        painter.drawText(box, Qt.AlignmentFlag.AlignLeft, s.label)
+
+
+def _marker(painter: QPainter, a: QPointF, b: QPointF, text: str, ink: QColor) -> None:
+    pen = QPen(QColor("#888888"), 1, Qt.PenStyle.DashLine)
+    painter.setPen(pen)
+    painter.drawLine(a, b)
+    painter.setPen(QPen(ink, 0))
+    painter.drawText(a + QPointF(3, 12), text)
+
+
+def _line(painter: QPainter, s: Series, px: object, py: object) -> None:
+    ok = np.isfinite(s.x) & np.isfinite(s.y)
+    if ok.sum() < 2:
+        return
+    x, y = s.x[ok], s.y[ok]
+    step = max(1, len(x) // 2000)
+    path = QPainterPath(QPointF(px(float(x[0])), py(float(y[0]))))  # type: ignore[operator]
+    for xv, yv in zip(x[::step], y[::step], strict=True):
+        path.lineTo(px(float(xv)), py(float(yv)))  # type: ignore[operator]
+    pen = QPen(QColor(s.colour), 1.6, Qt.PenStyle.DashLine if s.dashed else Qt.PenStyle.SolidLine)
+    painter.setPen(pen)
+    painter.drawPath(path)
+
+
+def plot_image(plot: Plot, width: int = 1200, height: int = 560) -> QImage:
+    """``plot`` on a white image (for the PDF report)."""
+    image = QImage(width, height, QImage.Format.Format_RGB32)
+    image.fill(QColor("white"))
+    painter = QPainter(image)
+    painter.setRenderHint(QPainter.RenderHint.Antialiasing)
+    paint_plot(painter, QRectF(0, 0, width, height), plot)
+    painter.end()
+    return image

@@ -1,0 +1,178 @@
+"""Issue 16's done-means on the emulator: (a) Bode, (b) model autotune, (c) critical gain,
+(d) linearization; plus the valve being left as it was after a stop, a fault or a limit.
+
+The references are measured here by driving the emulated valve directly (pure sines, a fine
+P-only gain sweep), not through the procedures under test.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+
+from prm9tool.analysis.frequency import sine_response
+from prm9tool.analysis.model import Targets
+from prm9tool.analysis.static import linearization_values, propose_linearization
+from prm9tool.catalogue import CATALOGUE
+from prm9tool.characterize.autotune import model_tune
+from prm9tool.characterize.procedures import (
+    TRANSPARENT,
+    LimitExceededError,
+    bode_test,
+    critical_gain_tune,
+    static_test,
+    step_test,
+)
+from prm9tool.characterize.rig import EmulatorRig, Stopped
+from prm9tool.device.emulator import EmulatedValve
+from prm9tool.scope.measure import step_figures
+
+E02 = "PRM9-06.3Z11/30-24E02S02"
+CYCLE = 200e-6
+
+
+def booted(values: dict[str, int] | None = None) -> EmulatedValve:
+    valve = EmulatedValve(E02)
+    for mnemonic, raw in (values or {}).items():
+        param = CATALOGUE[mnemonic]
+        valve.write(param.index, param.subindex, raw)
+    while valve.status().booting:
+        valve.advance(0.05)
+    valve.advance(0.05)
+    return valve
+
+
+def put(valve: EmulatedValve, mnemonic: str, raw: int) -> None:
+    param = CATALOGUE[mnemonic]
+    valve.write(param.index, param.subindex, raw)
+
+
+def direct_sine_gain(f: float, amplitude: float = 10.0) -> float:
+    """|actual/setpoint| from a pure sine written straight into the override."""
+    valve = booted(TRANSPARENT)
+    put(valve, "SETPOVRON", 1)
+    n = round(8.0 / f / CYCLE)
+    valve.capture_start(["position_setpoint", "position_actual"], 1)
+    for k in range(n):
+        put(valve, "SETPOVR", round(amplitude * 163.84 * math.sin(2 * math.pi * f * k * CYCLE)))
+        valve.usb_activity()
+        valve.advance(CYCLE)
+    data = valve.capture_read()
+    t = np.arange(len(data)) * CYCLE
+    keep = t >= 3.0 / f  # after the transient
+    return abs(sine_response(t[keep], data[keep, 0], data[keep, 1], f))
+
+
+def test_a_bandwidth_agrees_with_pure_sines():
+    rig = EmulatorRig(booted())
+    tool = bode_test(rig, 10.0, 0.0, 2.0, 100.0, duration_s=4.0).response.bandwidth_hz()
+    low = direct_sine_gain(2.0)
+    freqs = [20.0, 25.0, 30.0, 35.0, 40.0, 50.0]
+    db = [20 * math.log10(direct_sine_gain(f) / low) for f in freqs]
+    k = next(i for i, v in enumerate(db) if v <= -3.0103)
+    share = (db[k - 1] + 3.0103) / (db[k - 1] - db[k])
+    reference = math.exp(math.log(freqs[k - 1]) + share * math.log(freqs[k] / freqs[k - 1]))
+    assert tool == pytest.approx(reference, rel=0.05)
+
+
+def measured_step(values: dict[str, int], amplitude: float = 50.0) -> tuple[float, float]:
+    """Overshoot and settling of a step straight on a valve holding ``values``."""
+    valve = booted({**TRANSPARENT, **values})
+    put(valve, "SETPOVRON", 1)
+    valve.capture_start(["position_setpoint", "position_actual"], 1)
+    valve.advance(0.01)
+    put(valve, "SETPOVR", round(amplitude * 163.84))
+    valve.advance(0.12)
+    data = valve.capture_read()
+    figures = step_figures(np.arange(len(data)) * CYCLE, data[:, 1], data[:, 0])
+    assert figures is not None
+    return figures.overshoot, figures.settling_time
+
+
+@pytest.mark.parametrize("factor", [0.1, 3.0])
+def test_b_autotune_of_a_detuned_valve_meets_the_targets(factor):
+    default = int(CATALOGUE["POSKP"].default)
+    rig = EmulatorRig(booted({"POSKP": round(default * factor)}))
+    targets = Targets(overshoot_pct=10.0, settling_s=0.04)
+    result = model_tune(rig, targets)
+    overshoot, settling = measured_step(result.proposed_values)
+    assert overshoot <= targets.overshoot_pct
+    assert settling <= targets.settling_s
+    assert rig.read(["POSKP"])["POSKP"] == round(default * factor)  # proposal not written
+
+
+def direct_sweep() -> tuple[float, float]:
+    """Smallest Kp (grid 0.05) at which a P-only loop keeps oscillating, and its period."""
+    for kp_raw in range(300, 700, 5):
+        valve = booted({**TRANSPARENT, "POSKP": kp_raw, "POSKI": 0, "POSKD": 0})
+        put(valve, "SETPOVRON", 1)
+        valve.advance(0.03)
+        put(valve, "SETPOVR", round(5.0 * 163.84))
+        valve.capture_start(["position_actual"], 1)
+        for _ in range(5):
+            valve.usb_activity()  # the override's watchdog wants a report within 0.5 s
+            valve.advance(0.1)
+        y = valve.capture_read()[:, 0] / 163.84
+        if np.ptp(y[-500:]) > 10.0:  # still swinging by more than 10 % after 0.4 s
+            tail = y[-2000:] - y[-2000:].mean()
+            spectrum = np.abs(np.fft.rfft(tail * np.hanning(len(tail)), 1 << 17))
+            f = np.fft.rfftfreq(1 << 17, CYCLE)
+            return kp_raw * 0.01, 1.0 / f[int(np.argmax(spectrum[1:])) + 1]
+    raise AssertionError("no oscillation up to Kp 7")
+
+
+def test_c_critical_gain_agrees_with_a_direct_sweep():
+    kkr, tkr = direct_sweep()
+    rig = EmulatorRig(booted())
+    result = critical_gain_tune(rig)
+    assert result.kkr == pytest.approx(kkr, rel=0.10)
+    assert result.tkr == pytest.approx(tkr, rel=0.10)
+    assert result.gains.kp == pytest.approx(0.5 * result.kkr)
+    assert rig.read(["POSKP", "POSKI", "THRESETP"]) == {"POSKP": 40, "POSKI": 1000, "THRESETP": 819}
+
+
+BENT = {  # a bent setpoint characteristic, its X points not the proposal's
+    "SETPLINON": -1,
+    **dict(zip([f"SETPLINX{c}" for c in "ABCDEFGHI"],
+               [-16384, -11000, -6000, -2500, 0, 3000, 7000, 12000, 16384], strict=True)),
+    **dict(zip([f"SETPLINY{c}" for c in "ABCDEFGHI"],
+               [-16384, -7000, -2500, -800, 0, 900, 3500, 8500, 16384], strict=True)),
+}  # fmt: skip
+
+
+def test_d_linearization_reduces_the_linearity_error_five_fold():
+    rig = EmulatorRig(booted({**BENT, "THRESETP": 0}))
+    before = static_test(rig, period_s=4.0)
+    channels = before.record.channels
+    lin = propose_linearization(
+        channels["setpoint_gain"] * 163.84,
+        channels["setpoint_linearized"] * 163.84,
+        channels["position_actual"],
+        before.demand,
+    )
+    rig.write(linearization_values(lin))
+    after = static_test(rig, period_s=4.0)
+    assert before.characteristic.linearity_pct > 10.0
+    assert after.characteristic.linearity_pct * 5.0 <= before.characteristic.linearity_pct
+
+
+def test_a_stop_request_leaves_the_valve_as_it_was():
+    rig = EmulatorRig(booted())
+    rig.stop.set()
+    with pytest.raises(Stopped):
+        critical_gain_tune(rig)
+    assert rig.read(["POSKP", "POSKI", "THRESETP", "SETPOVRON"]) == {
+        "POSKP": 40,
+        "POSKI": 1000,
+        "THRESETP": 819,
+        "SETPOVRON": 0,
+    }
+
+
+def test_a_limit_exceeded_stops_the_step_and_restores():
+    rig = EmulatorRig(booted())
+    with pytest.raises(LimitExceededError, match="left the allowed band"):
+        step_test(rig, 50.0, limit_pct=20.0)
+    assert rig.read(["THRESETP", "SETPOVRON"]) == {"THRESETP": 819, "SETPOVRON": 0}

@@ -1,0 +1,187 @@
+"""The compare view and the history window in the main window, online with an emulated valve."""
+
+from __future__ import annotations
+
+import os
+from pathlib import Path
+
+import pytest
+from gui_support import E02, go_online, main_window, record_prompts
+from PySide6.QtCore import Qt
+
+from prm9tool import i18n
+from prm9tool.catalogue.typekey import TypeKey
+from prm9tool.compare import Comparison, Side
+from prm9tool.files.prmfile import PrmContents, write_file
+from prm9tool.history.recorder import Recorder
+from prm9tool.views import prompts
+from prm9tool.views.compare_view import BOTH, FIRST_VALUE, CompareDialog
+from prm9tool.views.online_dialogs import DiffChoice, OnlineDiffDialog
+
+TIMEOUT = 10_000
+
+
+@pytest.fixture
+def answers(monkeypatch):
+    return record_prompts(monkeypatch)
+
+
+@pytest.fixture
+def window(qtbot, tmp_path, answers):
+    with main_window(qtbot, tmp_path) as win:
+        yield win
+
+
+def snapshot(widget, name):
+    folder = os.environ.get("PRM9TOOL_SCREENSHOTS")
+    if folder:
+        widget.grab().save(str(Path(folder) / name))
+
+
+def factory_side(label, **changes):
+    contents = PrmContents.factory(TypeKey.parse(E02))
+    contents.values.update(changes)
+    return Side(label, contents.type_key, contents.values)
+
+
+def check(dialog, mnemonic, side):
+    model = dialog.model
+    row = next(i for i, r in enumerate(model.rows) if r.mnemonic == mnemonic)
+    index = model.index(row, FIRST_VALUE + side)
+    assert model.setData(index, Qt.CheckState.Checked.value, Qt.ItemDataRole.CheckStateRole)
+
+
+def answer_compare(monkeypatch, choices, target, shown):
+    def run(dialog):
+        shown.append(dialog)
+        for mnemonic, side in choices.items():
+            check(dialog, mnemonic, side)
+        snapshot(dialog, "window_dialog_compare.png")
+        assert dialog.apply_buttons[target].isEnabled()
+        dialog.apply_buttons[target].click()
+        return dialog.result()
+
+    monkeypatch.setattr(CompareDialog, "exec", run)
+
+
+def test_the_view_filters_counts_and_enables_apply_only_with_a_choice(qtbot):
+    i18n.set_language("en")  # the English plural forms
+    document, valve = factory_side("Document", LIMTA=1500, DTAMP=1000), factory_side("Valve")
+    comparison = Comparison((document, valve), Side.factory(valve.type_key, "Factory"))
+    dialog = CompareDialog(comparison, (0, 1))
+    qtbot.addWidget(dialog)
+    assert [r.mnemonic for r in dialog.model.rows] == ["LIMTA", "DTAMP"]
+    assert dialog.summary.text().startswith("2 parameters differ, 0 parameters only on one side")
+    assert not dialog.apply_buttons[0].isEnabled() and not dialog.apply_buttons[1].isEnabled()
+    limta = dialog.model.index(0, FIRST_VALUE)
+    assert dialog.model.data(limta) == "1500 mA"
+    assert dialog.model.data(dialog.model.index(0, FIRST_VALUE + 2)) == "2400 mA"  # factory
+    check(dialog, "LIMTA", 0)
+    assert dialog.apply_buttons[1].isEnabled() and not dialog.apply_buttons[0].isEnabled()
+    block = next(
+        i for i in range(dialog.block.count()) if "LIMTA" in (dialog.block.itemData(i) or [])
+    )
+    dialog.block.setCurrentIndex(block)
+    assert [r.mnemonic for r in dialog.model.rows] == ["LIMTA"]
+    dialog.differences_only.setChecked(False)
+    assert len(dialog.model.rows) > 1 and "DTAMP" not in {r.mnemonic for r in dialog.model.rows}
+    dialog.apply_buttons[1].click()
+    assert dialog.applied == (1, {"LIMTA": 1500})
+
+
+def test_compare_with_file_takes_the_chosen_values_as_one_undo_step(
+    qtbot, window, tmp_path, monkeypatch
+):
+    contents = PrmContents.factory(TypeKey.parse(E02))
+    contents.values.update(LIMTA=1700, DTAMP=900)
+    write_file(contents, tmp_path / "other.prm")
+    shown = []
+    answer_compare(monkeypatch, {"LIMTA": 1}, 0, shown)
+    window.compare.compare_with_file(tmp_path / "other.prm")
+    assert [r.mnemonic for r in shown[0].model.rows] == ["LIMTA", "DTAMP"]
+    assert window.doc.value("LIMTA") == 1700 and window.doc.value("DTAMP") != 900
+    window.undo.stack.undo()
+    assert window.doc.value("LIMTA") == 2400
+
+
+def test_an_invalid_file_is_named_and_nothing_changes(window, tmp_path, answers):
+    (tmp_path / "bad.prm").write_text("garbage\n", encoding="utf-8")
+    window.compare.compare_with_file(tmp_path / "bad.prm")
+    assert answers.informed and "bad.prm cannot be compared" in answers.informed[0]
+    assert not window.doc.modified
+
+
+def test_going_online_choose_per_parameter_makes_both_sides_agree(qtbot, window, monkeypatch):
+    window.doc.set_value("LIMTA", 1500)
+    window.doc.set_value("DTAMP", 1000)
+    monkeypatch.setattr(
+        OnlineDiffDialog, "exec", lambda d: (setattr(d, "choice", DiffChoice.CHOOSE), 1)[1]
+    )
+    shown = []
+    answer_compare(monkeypatch, {"LIMTA": 0}, BOTH, shown)  # DTAMP keeps the valve's (preset)
+    with qtbot.waitSignal(window.connection.operation_finished, timeout=TIMEOUT,
+                          check_params_cb=lambda name, _r: name == "upload") as done:  # fmt: skip
+        go_online(qtbot, window, f"{E02}:4301")
+    assert done.args[1].stored and done.args[1].written == 1  # exactly the chosen value
+    qtbot.waitUntil(lambda: window.sync.active, timeout=TIMEOUT)
+    valve_dtamp = shown[0].comparison.row("DTAMP").values[1]
+    assert window.doc.value("DTAMP") == valve_dtamp and window.doc.value("LIMTA") == 1500
+    assert window.sync.differences() == {}
+
+
+def test_history_records_what_the_gui_did_and_the_window_shows_it(qtbot, window, monkeypatch):
+    window.connection.set_recorder(Recorder())
+    go_online(qtbot, window, f"{E02}:4302")
+    qtbot.waitUntil(lambda: window.sync.active, timeout=TIMEOUT)
+    window.doc.set_value("DTAMP", 1234)
+    with qtbot.waitSignal(window.connection.operation_finished, timeout=TIMEOUT,
+                          check_params_cb=lambda name, _r: name == "upload"):  # fmt: skip
+        window.commands["upload"].trigger()
+    history = window.compare.show_history()
+    qtbot.addWidget(history)
+    qtbot.waitUntil(lambda: history.model.rowCount() == 3, timeout=TIMEOUT)
+    operations = [r["operation"] for r in history.model.records]
+    assert operations == ["download", "backup", "upload"]
+    assert "3 records in sqlite:///" in history.state.text()
+    snapshot(history, "window_dialog_history.png")
+    selection = history.table.selectionModel()
+    for row in (0, 2):  # read when going online, and the upload (the backup has the edit)
+        selection.select(
+            history.model.index(row, 0),
+            selection.SelectionFlag.Select | selection.SelectionFlag.Rows,
+        )
+    dialog = history.compare_selected()
+    qtbot.addWidget(dialog)
+    assert [r.mnemonic for r in dialog.comparison.changed] == ["DTAMP"]
+    selection.clearSelection()
+    selection.select(
+        history.model.index(0, 0), selection.SelectionFlag.Select | selection.SelectionFlag.Rows
+    )
+    before = window.undo.stack.count()
+    window.connection.go_offline()
+    qtbot.waitUntil(lambda: not window.connection.is_online, timeout=TIMEOUT)
+    history.buttons["document"].click()  # the valve's values when the window went online
+    assert window.doc.value("DTAMP") != 1234 and window.undo.stack.count() == before + 1
+
+
+def test_an_unreachable_history_asks_and_no_uploads_nothing(qtbot, window, answers, tmp_path):
+    damaged = tmp_path / "damaged.sqlite3"
+    damaged.write_bytes(b"not a database " * 100)
+    window.connection.set_recorder(Recorder(f"sqlite:///{damaged}", tmp_path / "q.jsonl"))
+    go_online(qtbot, window, f"{E02}:4303")
+    qtbot.waitUntil(lambda: window.sync.active, timeout=TIMEOUT)
+    window.sync.stop()
+    window.doc.set_value("DTAMP", 1111)
+    answers.answers = [prompts.Button.No]
+    with qtbot.waitSignal(window.connection.operation_finished, timeout=TIMEOUT,
+                          check_params_cb=lambda name, _r: name == "history_check"):  # fmt: skip
+        window.commands["upload"].trigger()
+    assert "History database unavailable" in answers.asked[-1] and "is damaged" in answers.asked[-1]
+    assert window.valve.progress_dialog is None
+    answers.answers = [prompts.Button.Yes]
+    with qtbot.waitSignal(window.connection.operation_finished, timeout=TIMEOUT,
+                          check_params_cb=lambda name, _r: name == "upload") as done:  # fmt: skip
+        window.commands["upload"].trigger()
+    assert done.args[1].stored
+    lines = (tmp_path / "q.jsonl").read_text(encoding="utf-8").splitlines()
+    assert any('"operation": "upload"' in line for line in lines)

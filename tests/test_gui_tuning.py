@@ -1,0 +1,172 @@
+"""The Tuning window offline (on an emulated copy of the document's valve) and its entries."""
+
+from __future__ import annotations
+
+import os
+from pathlib import Path
+
+import pytest
+from pypdf import PdfReader
+from PySide6.QtWidgets import QMessageBox
+
+from prm9tool.model.access import Access, AccessModel
+from prm9tool.model.document import ParameterDocument
+from prm9tool.model.undo import DocumentUndo
+from prm9tool.views.diagram.dialogs import create_block_dialog
+from prm9tool.views.diagram.dialogs.base import BlockContext
+from prm9tool.views.tuning_window import TuningWindow
+
+E02 = "PRM9-06.3Z11/30-24E02S02"
+SHOTS = os.environ.get("PRM9TOOL_SCREENSHOTS")
+
+
+@pytest.fixture
+def window(qtbot):
+    doc = ParameterDocument(E02)
+    doc.set_values({"POSKP": 4}, "detuned")  # Kp/10
+    undo = DocumentUndo(doc, doc)
+    w = TuningWindow(doc)
+    qtbot.addWidget(w)
+    w.undo = undo
+    w.show()
+    yield w
+    w.close()
+
+
+def finish(qtbot, w: TuningWindow) -> None:
+    qtbot.waitUntil(lambda: not w.runner.busy, timeout=30000)
+
+
+def shot(w: TuningWindow, name: str) -> None:
+    if SHOTS:
+        w.grab().save(str(Path(SHOTS) / f"tuning_{name}.png"))
+
+
+def test_model_autotune_proposes_and_accepts_as_one_undo_step(qtbot, window):
+    assert "Offline" in window.mode.text()
+    window.autotune.run_button.click()
+    finish(qtbot, window)
+    page = window.autotune
+    assert "POSKP: 0.04 → " in page.result.text()
+    assert page.accept_button.isEnabled()
+    proposal = dict(page.proposal)
+    assert proposal["POSKP"] != 4
+    shot(window, "autotune")
+    steps = window.undo.stack.count()
+    page.accept_button.click()
+    assert {k: window.doc.value(k) for k in proposal} == proposal
+    assert window.undo.stack.count() == steps + 1
+    window.undo.stack.undo()
+    assert window.doc.value("POSKP") == 4
+
+
+def test_critical_gain_method_shows_kkr_and_tkr(qtbot, window):
+    window.autotune.method.setCurrentIndex(1)
+    window.autotune.run_button.click()
+    finish(qtbot, window)
+    text = window.autotune.result.text()
+    kkr = float(text.split("Kkr = ")[1].split(",")[0])
+    assert 4.4 <= kkr <= 5.4  # the direct sweep of test_characterize finds 4.9
+    assert window.autotune.proposal["POSKP"] == round(kkr * 50)  # K = 0.5·Kkr, raw ×0.01
+
+
+def test_bode_and_static_characteristic_with_linearization(qtbot, window):
+    window.tabs.setCurrentWidget(window.bode)
+    window.bode.duration.setValue(2.0)
+    window.bode.f_min.setValue(2.0)
+    window.bode.f_max.setValue(100.0)
+    window.bode.run_button.click()
+    finish(qtbot, window)
+    assert "−3 dB at" in window.bode.result.text()
+    shot(window, "bode")
+    window.tabs.setCurrentWidget(window.static)
+    window.static.period.setValue(4.0)
+    window.static.run_button.click()
+    finish(qtbot, window)
+    assert "linearity error" in window.static.result.text()
+    shot(window, "static")
+    window.static.apply_button.click()
+    assert window.doc.value("SETPLINON") == -1
+    assert window.doc.value("SETPLINXA") == -16384
+
+
+def test_report_page_runs_a_profile_and_saves_pdf(qtbot, window, tmp_path, monkeypatch):
+    profile = tmp_path / "p.toml"
+    profile.write_text("[test]\nbode_duration_s = 2\nbode_f_min_hz = 2\nstatic_period_s = 4\n")
+    window.tabs.setCurrentWidget(window.report)
+    window.report.profile_path.setText(str(profile))
+    window.report.run_button.click()
+    finish(qtbot, window)
+    assert window.report.table.rowCount() == 15
+    shot(window, "report")
+    monkeypatch.setattr(window, "save_file", lambda *_a: tmp_path / "r.pdf")
+    window.report.save_button.click()
+    text = " ".join(PdfReader(tmp_path / "r.pdf").pages[0].extract_text().split())
+    assert "PRM9 test report" in text and E02 in text
+    assert (tmp_path / "r-static.csv").exists()
+
+
+def test_a_bad_profile_is_reported_and_nothing_runs(qtbot, window, tmp_path):
+    (tmp_path / "bad.toml").write_text("[limits]\nnonsense = { max = 1 }\n")
+    window.report.profile_path.setText(str(tmp_path / "bad.toml"))
+    window.report.run_button.click()
+    assert "has no figure 'nonsense'" in window.report.result.text()
+    assert not window.runner.busy
+
+
+def test_stop_ends_the_test_and_says_so(qtbot, window):
+    window.tabs.setCurrentWidget(window.static)
+    window.static.period.setValue(60.0)
+    window.static.run_button.click()
+    window.stop_button.click()
+    finish(qtbot, window)
+    assert "Stopped" in window.status.text()
+    assert not window.static.apply_button.isEnabled()
+
+
+def test_online_a_test_asks_first_and_does_nothing_when_declined(qtbot, monkeypatch):
+    class Online:
+        is_online = True
+        device = None
+
+        def __init__(self):
+            self.streaming_keys: list[str] = []
+            from PySide6.QtCore import QObject, Signal
+
+            class Signals(QObject):
+                online_changed = Signal(bool)
+                operation_finished = Signal(str, object)
+                failed = Signal(str)
+                lost = Signal(str)
+
+            self.signals = Signals()
+            for name in ("online_changed", "operation_finished", "failed", "lost"):
+                setattr(self, name, getattr(self.signals, name))
+            self.jobs = []
+
+        def run_job(self, name, work):
+            self.jobs.append(name)
+
+    connection = Online()
+    w = TuningWindow(ParameterDocument(E02), connection)
+    qtbot.addWidget(w)
+    asked = []
+    monkeypatch.setattr(
+        QMessageBox, "question", lambda *a: asked.append(a[2]) or QMessageBox.StandardButton.No
+    )
+    w.autotune.run_button.click()
+    assert "moves the spool" in asked[0] and "50 %" in asked[0]
+    assert connection.jobs == []
+    monkeypatch.setattr(QMessageBox, "question", lambda *a: QMessageBox.StandardButton.Yes)
+    w.autotune.run_button.click()
+    assert connection.jobs == ["tuning:autotune"]
+
+
+def test_the_position_controller_dialog_opens_the_tuning_window(qtbot):
+    doc = ParameterDocument(E02)
+    opened = []
+    ctx = BlockContext(doc, AccessModel(Access.EXPERT), None, None, opened.append)
+    dialog = create_block_dialog("position_controller", ctx, "position")
+    qtbot.addWidget(dialog)
+    dialog.tuning_button.click()
+    assert opened == ["position"]
