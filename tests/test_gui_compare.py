@@ -51,12 +51,13 @@ def check(dialog, mnemonic, side):
     assert model.setData(index, Qt.CheckState.Checked.value, Qt.ItemDataRole.CheckStateRole)
 
 
-def answer_compare(monkeypatch, choices, target, shown):
+def answer_compare(monkeypatch, choices, target, shown, picture=None):
     def run(dialog):
         shown.append(dialog)
         for mnemonic, side in choices.items():
             check(dialog, mnemonic, side)
-        snapshot(dialog, "window_dialog_compare.png")
+        if picture:
+            snapshot(dialog, picture)
         assert dialog.apply_buttons[target].isEnabled()
         dialog.apply_buttons[target].click()
         return dialog.result()
@@ -118,7 +119,8 @@ def test_going_online_choose_per_parameter_makes_both_sides_agree(qtbot, window,
         OnlineDiffDialog, "exec", lambda d: (setattr(d, "choice", DiffChoice.CHOOSE), 1)[1]
     )
     shown = []
-    answer_compare(monkeypatch, {"LIMTA": 0}, BOTH, shown)  # DTAMP keeps the valve's (preset)
+    answer_compare(monkeypatch, {"LIMTA": 0}, BOTH, shown, "window_dialog_compare.png")
+    # DTAMP keeps the valve's value: every difference starts as "take the valve's"
     with qtbot.waitSignal(window.connection.operation_finished, timeout=TIMEOUT,
                           check_params_cb=lambda name, _r: name == "upload") as done:  # fmt: skip
         go_online(qtbot, window, f"{E02}:4301")
@@ -185,3 +187,45 @@ def test_an_unreachable_history_asks_and_no_uploads_nothing(qtbot, window, answe
     assert done.args[1].stored
     lines = (tmp_path / "q.jsonl").read_text(encoding="utf-8").splitlines()
     assert any('"operation": "upload"' in line for line in lines)
+
+
+def test_the_refuse_setting_uploads_nothing_without_the_history(qtbot, window, answers, tmp_path):
+    from prm9tool.history.config import save_settings
+
+    save_settings(None, "refuse")
+    damaged = tmp_path / "damaged.sqlite3"
+    damaged.write_bytes(b"not a database " * 100)
+    window.connection.set_recorder(Recorder(f"sqlite:///{damaged}", tmp_path / "q.jsonl"))
+    go_online(qtbot, window, f"{E02}:4304")
+    qtbot.waitUntil(lambda: window.sync.active, timeout=TIMEOUT)
+    with qtbot.waitSignal(window.connection.operation_finished, timeout=TIMEOUT,
+                          check_params_cb=lambda name, _r: name == "history_check"):  # fmt: skip
+        window.commands["upload"].trigger()
+    assert answers.asked == [] and "Upload refused" in answers.informed[-1]
+    queued = (tmp_path / "q.jsonl").read_text(encoding="utf-8")  # the download going online
+    assert '"operation": "download"' in queued and '"operation": "upload"' not in queued
+
+
+def test_a_record_is_restored_into_its_valve_and_exported(qtbot, window, answers, tmp_path):
+    window.connection.set_recorder(Recorder())
+    go_online(qtbot, window, f"{E02}:4305")
+    qtbot.waitUntil(lambda: window.sync.active, timeout=TIMEOUT)
+    original = dict(window.doc.values)
+    window.doc.set_value("DTAMP", 777)  # online: written to the valve at once
+    history = window.compare.show_history()
+    qtbot.addWidget(history)
+    qtbot.waitUntil(lambda: history.model.rowCount() == 1, timeout=TIMEOUT)
+    history.table.selectRow(0)  # the download when going online: the valve's values then
+    with qtbot.waitSignal(window.connection.operation_finished, timeout=TIMEOUT,
+                          check_params_cb=lambda name, _r: name == "upload") as done:  # fmt: skip
+        history.buttons["valve"].click()
+    assert done.args[1].stored and done.args[1].written == len(original)
+    assert window.doc.value("DTAMP") == original["DTAMP"]  # the document follows the valve
+    assert window.sync.differences() == {}
+    history.export_selected(str(tmp_path / "record.csv"))
+    text = (tmp_path / "record.csv").read_text(encoding="utf-8")
+    assert text.splitlines()[1] == "mnemonic,value,unit,description" and "\nDTAMP," in text
+    history.table.selectRow(0)
+    other = Recorder()
+    assert [r["operation"] for r in other.store().records(4305)][-1] == "upload"
+    other.close()

@@ -15,6 +15,7 @@ from prm9tool.errors import ExitCode, HistoryError
 from prm9tool.files.prmfile import read_file
 from prm9tool.history.config import database_url
 from prm9tool.history.export import export_record
+from prm9tool.history.importer import import_backups
 from prm9tool.history.recorder import Recorder
 from prm9tool.history.store import MIGRATIONS, SCHEMA_HEAD, HistoryStore
 from prm9tool.paths import user_data_dir
@@ -166,12 +167,18 @@ def test_backups_are_imported_once_and_exported_back_identical(tmp_path, capsys)
 
     values = factory_values() | {"LIMTA": 1234}
     backup = write_backup("PRM9-06.3Z11/30-24E04S02-CA", 77, "V1", values)
-    assert main(["--history-import"]) == ExitCode.OK
-    assert "1 backup files imported, 0 imported before" in capsys.readouterr().out
-    assert main(["--history-import"]) == ExitCode.OK
+    assert main(["--history-import"]) == ExitCode.OK  # opening the history imported it already
     assert "0 backup files imported, 1 imported before" in capsys.readouterr().out
     store = HistoryStore(database_url())
-    (record,) = store.records(77)
+    assert import_backups(store).skipped == 1
+    store.close()
+    (user_data_dir() / "backups" / "77" / "extra.prm").write_bytes(backup.read_bytes())
+    assert main(["--history-import"]) == ExitCode.OK
+    assert "1 backup files imported, 1 imported before" in capsys.readouterr().out
+    assert main(["--history-import"]) == ExitCode.OK
+    assert "0 backup files imported, 2 imported before" in capsys.readouterr().out
+    store = HistoryStore(database_url())
+    record = store.records(77)[0]
     assert record["operation"] == "backup" and str(backup.resolve()) in record["details"]
     assert main(["--history-export", str(record["id"]), "-o", str(tmp_path / "r.prm")]) == 0
     assert read_file(tmp_path / "r.prm").values == read_file(backup).values
@@ -260,3 +267,17 @@ def test_batch_refuses_to_upload_when_the_history_is_damaged_unless_told_to_queu
     lines = (tmp_path / "data" / "history-queue.jsonl").read_text().splitlines()
     assert [json.loads(line)["operation"] for line in lines] == ["backup", "batch-upload"]
     assert run(tmp_path, "--history", "32").returncode == 0  # the default database is fine
+
+
+def test_old_backups_become_records_the_first_time_a_history_is_opened(tmp_path):
+    from prm9tool.files.backup import write_backup
+
+    write_backup("PRM9-06.3Z11/30-24E04S02-CA", 78, "V1", factory_values())
+    recorder = Recorder(sqlite_url(tmp_path), tmp_path / "q.jsonl")
+    assert [r["operation"] for r in recorder.store().records(78)] == ["backup"]
+    recorder.record(Valve(78), "backup", "ok", factory_values(), {"file": "elsewhere.prm"})
+    recorder.close()
+    again = Recorder(sqlite_url(tmp_path), tmp_path / "q.jsonl")
+    assert again.store().count() == 2  # not imported twice
+    assert main(["--history-import", "--history-db", sqlite_url(tmp_path)]) == ExitCode.OK
+    assert again.store().count() == 2

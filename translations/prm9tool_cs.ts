@@ -54,8 +54,8 @@ Poslední akce možná nebyla dokončena. Uložte svou práci pod novým názvem
             <translation>několik skoků o %1 % od 0 %, celkem asi %2 s</translation>
         </message>
         <message>
-            <source>P only with rising gain until the loop oscillates (steps of 5 %, oscillation stopped at ±40 %), about 5 s</source>
-            <translation type="unfinished"></translation>
+            <source>P only with rising gain until the loop oscillates (steps of 5 %, oscillation stopped at ±%1 %), about 5 s</source>
+            <translation>pouze P se stoupajícím zesílením, dokud se smyčka nerozkmitá (skoky 5 %, kmitání přerušeno při ±%1 %), asi 5 s</translation>
         </message>
         <message>
             <source>Model: gain %1, lags %2 ms, dead time %3 ms (fit error %4 %).</source>
@@ -124,6 +124,10 @@ Poslední akce možná nebyla dokončena. Uložte svou práci pod novým názvem
         <message>
             <source>Target settling time (±2 %) at most:</source>
             <translation>Doba ustálení (±2 %) nejvýše:</translation>
+        </message>
+        <message>
+            <source>Stop when the response leaves 0 ± (band):</source>
+            <translation>Přerušit, když odezva opustí 0 ± (pásmo):</translation>
         </message>
         <message>
             <source>Run autotune</source>
@@ -634,6 +638,10 @@ Poslední akce možná nebyla dokončena. Uložte svou práci pod novým názvem
     </context>
     <context>
         <name>CompareWorkflow</name>
+        <message>
+            <source>History: {0}</source>
+            <translation>Historie: {0}</translation>
+        </message>
         <message>
             <source>Document</source>
             <translation>Dokument</translation>
@@ -1469,6 +1477,27 @@ Poslední akce možná nebyla dokončena. Uložte svou práci pod novým názvem
         </message>
     </context>
     <context>
+        <name>GeneratorStart</name>
+        <message>
+            <source>Setpoint generator</source>
+            <translation>Generátor žádané hodnoty</translation>
+        </message>
+        <message>
+            <source>The generator will drive the valve's setpoint and the valve will move.
+Make sure the machine is safe to move. Start the generator?</source>
+            <translation>Generátor bude řídit žádanou hodnotu ventilu a ventil se bude pohybovat.
+Ujistěte se, že pohyb stroje je bezpečný. Spustit generátor?</translation>
+        </message>
+        <message>
+            <source>The valve does not follow its setpoint: {0}
+
+Enable it now (NMT start, control word 08h → 09h → 0Bh → 0Fh)?</source>
+            <translation>Ventil nesleduje svou žádanou hodnotu: {0}
+
+Uvolnit ho nyní (NMT start, řídicí slovo 08h → 09h → 0Bh → 0Fh)?</translation>
+        </message>
+    </context>
+    <context>
         <name>Help</name>
         <message>
             <source>Home page</source>
@@ -2035,8 +2064,8 @@ Ano načte a záznam zařadí do fronty; Ne nenačte nic.</translation>
             <translation>Režim: {0}</translation>
         </message>
         <message>
-            <source>Connected; the document and the valve are being compared</source>
-            <translation>Připojeno; dokument a ventil se porovnávají</translation>
+            <source>Connected, but the document and the valve do not agree yet: edits are not sent to the valve</source>
+            <translation>Připojeno, ale dokument a ventil se zatím neshodují: změny se do ventilu neposílají</translation>
         </message>
         <message>
             <source>Expert</source>
@@ -2789,24 +2818,6 @@ Ano načte a záznam zařadí do fronty; Ne nenačte nic.</translation>
         <message>
             <source>The oscilloscope needs a connected valve: go online (Communication → Online).</source>
             <translation>Osciloskop potřebuje připojený ventil: přejděte do režimu online (Komunikace → Režim online).</translation>
-        </message>
-        <message>
-            <source>Setpoint generator</source>
-            <translation>Generátor žádané hodnoty</translation>
-        </message>
-        <message>
-            <source>The generator will drive the valve's setpoint and the valve will move.
-Make sure the machine is safe to move. Start the generator?</source>
-            <translation>Generátor bude řídit žádanou hodnotu ventilu a ventil se bude pohybovat.
-Ujistěte se, že pohyb stroje je bezpečný. Spustit generátor?</translation>
-        </message>
-        <message>
-            <source>The valve does not follow its setpoint: {0}
-
-Enable it now (NMT start, control word 08h → 09h → 0Bh → 0Fh)?</source>
-            <translation type="unfinished">Ventil nesleduje svou žádanou hodnotu: {0}
-
-Uvolnit ho nyní (NMT start, řídicí slovo 08h → 09h → 0Bh → 0Fh)?</translation>
         </message>
         <message>
             <source>The link dropped: the setpoint generator has stopped.</source>
@@ -3772,6 +3783,10 @@ Zajistěte, aby to hydraulika bezpečně snesla. Tlačítko Stop test kdykoli uk
         <message>
             <source>Set every parameter of the document to the factory default?</source>
             <translation>Nastavit všechny parametry dokumentu na tovární hodnoty?</translation>
+        </message>
+        <message>
+            <source>Values written to the valve</source>
+            <translation>Hodnoty zapsané do ventilu</translation>
         </message>
         <message numerus="yes">
             <source>%n parameter(s) written, verified and stored at {0}</source>

@@ -54,8 +54,8 @@ Die letzte Aktion wurde womöglich nicht vollständig ausgeführt. Speichern Sie
             <translation>einige Sprünge von %1 % ab 0 %, insgesamt etwa %2 s</translation>
         </message>
         <message>
-            <source>P only with rising gain until the loop oscillates (steps of 5 %, oscillation stopped at ±40 %), about 5 s</source>
-            <translation type="unfinished"></translation>
+            <source>P only with rising gain until the loop oscillates (steps of 5 %, oscillation stopped at ±%1 %), about 5 s</source>
+            <translation>nur P mit steigender Verstärkung, bis der Kreis schwingt (Sprünge von 5 %, Schwingung bei ±%1 % abgebrochen), etwa 5 s</translation>
         </message>
         <message>
             <source>Model: gain %1, lags %2 ms, dead time %3 ms (fit error %4 %).</source>
@@ -124,6 +124,10 @@ Die letzte Aktion wurde womöglich nicht vollständig ausgeführt. Speichern Sie
         <message>
             <source>Target settling time (±2 %) at most:</source>
             <translation>Ausregelzeit (±2 %) höchstens:</translation>
+        </message>
+        <message>
+            <source>Stop when the response leaves 0 ± (band):</source>
+            <translation>Abbrechen, wenn die Antwort 0 ± (Band) verlässt:</translation>
         </message>
         <message>
             <source>Run autotune</source>
@@ -631,6 +635,10 @@ Die letzte Aktion wurde womöglich nicht vollständig ausgeführt. Speichern Sie
     </context>
     <context>
         <name>CompareWorkflow</name>
+        <message>
+            <source>History: {0}</source>
+            <translation>Verlauf: {0}</translation>
+        </message>
         <message>
             <source>Document</source>
             <translation>Dokument</translation>
@@ -1463,6 +1471,27 @@ Die letzte Aktion wurde womöglich nicht vollständig ausgeführt. Speichern Sie
         </message>
     </context>
     <context>
+        <name>GeneratorStart</name>
+        <message>
+            <source>Setpoint generator</source>
+            <translation>Sollwertgenerator</translation>
+        </message>
+        <message>
+            <source>The generator will drive the valve's setpoint and the valve will move.
+Make sure the machine is safe to move. Start the generator?</source>
+            <translation>Der Generator steuert den Sollwert des Ventils und das Ventil wird sich bewegen.
+Stellen Sie sicher, dass die Maschine sich gefahrlos bewegen kann. Generator starten?</translation>
+        </message>
+        <message>
+            <source>The valve does not follow its setpoint: {0}
+
+Enable it now (NMT start, control word 08h → 09h → 0Bh → 0Fh)?</source>
+            <translation>Das Ventil folgt seinem Sollwert nicht: {0}
+
+Jetzt freigeben (NMT Start, Steuerwort 08h → 09h → 0Bh → 0Fh)?</translation>
+        </message>
+    </context>
+    <context>
         <name>Help</name>
         <message>
             <source>Home page</source>
@@ -2028,8 +2057,8 @@ Ja lädt hoch und stellt den Eintrag in die Warteschlange; Nein lädt nichts hoc
             <translation>Modus: {0}</translation>
         </message>
         <message>
-            <source>Connected; the document and the valve are being compared</source>
-            <translation>Verbunden; Dokument und Ventil werden verglichen</translation>
+            <source>Connected, but the document and the valve do not agree yet: edits are not sent to the valve</source>
+            <translation>Verbunden, aber Dokument und Ventil stimmen noch nicht überein: Änderungen werden nicht an das Ventil gesendet</translation>
         </message>
         <message>
             <source>Expert</source>
@@ -2780,24 +2809,6 @@ Ja lädt hoch und stellt den Eintrag in die Warteschlange; Nein lädt nichts hoc
         <message>
             <source>The oscilloscope needs a connected valve: go online (Communication → Online).</source>
             <translation>Das Oszilloskop braucht ein verbundenes Ventil: wechseln Sie online (Kommunikation → Online).</translation>
-        </message>
-        <message>
-            <source>Setpoint generator</source>
-            <translation>Sollwertgenerator</translation>
-        </message>
-        <message>
-            <source>The generator will drive the valve's setpoint and the valve will move.
-Make sure the machine is safe to move. Start the generator?</source>
-            <translation>Der Generator steuert den Sollwert des Ventils und das Ventil wird sich bewegen.
-Stellen Sie sicher, dass die Maschine sich gefahrlos bewegen kann. Generator starten?</translation>
-        </message>
-        <message>
-            <source>The valve does not follow its setpoint: {0}
-
-Enable it now (NMT start, control word 08h → 09h → 0Bh → 0Fh)?</source>
-            <translation type="unfinished">Das Ventil folgt seinem Sollwert nicht: {0}
-
-Jetzt freigeben (NMT Start, Steuerwort 08h → 09h → 0Bh → 0Fh)?</translation>
         </message>
         <message>
             <source>The link dropped: the setpoint generator has stopped.</source>
@@ -3762,6 +3773,10 @@ Stellen Sie sicher, dass die Hydraulik dafür sicher ist. Stopp beendet ihn jede
         <message>
             <source>Set every parameter of the document to the factory default?</source>
             <translation>Alle Parameter des Dokuments auf die Werkseinstellung setzen?</translation>
+        </message>
+        <message>
+            <source>Values written to the valve</source>
+            <translation>In das Ventil geschriebene Werte</translation>
         </message>
         <message numerus="yes">
             <source>%n parameter(s) written, verified and stored at {0}</source>

@@ -274,7 +274,10 @@ def _upload(args: argparse.Namespace, records: list[ValveRecord]) -> ExitCode:
     contents = _read_source(args.batch)
     entries = select(args)
     printer = ProgressPrinter()
-    history = BatchHistory.open(args, BatchError)
+    # a dry run changes nothing: it is recorded (or queued) but never refused
+    history = (
+        BatchHistory.for_download(args) if args.dry_run else BatchHistory.open(args, BatchError)
+    )
     job = _UploadJob(contents, args.force_type, args.dry_run, printer, history, can_options(args))
     try:
         with ThreadPoolExecutor(max_workers=len(entries)) as pool:

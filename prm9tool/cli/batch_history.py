@@ -54,7 +54,7 @@ class BatchHistory:
         """The history of a ``--batch --download`` (queued when the database is away)."""
         from prm9tool.cli.history import recorder_for
 
-        return cls(recorder_for(args), args.download)
+        return cls(recorder_for(args), args.batch or args.download)
 
     def upload(self, record: ValveRecord, values: Mapping[str, Raw]) -> None:
         """Record one valve's upload (or dry run) with its outcome and failed step."""

@@ -11,7 +11,7 @@ from __future__ import annotations
 import hashlib
 import json
 from collections.abc import Mapping
-from dataclasses import asdict, dataclass, field
+from dataclasses import dataclass, field, fields
 from typing import Any
 
 GENESIS = "0" * 64
@@ -51,7 +51,8 @@ class Entry:
 
     def to_json(self) -> dict[str, Any]:
         """Everything, as JSON-compatible data (the local queue's line)."""
-        data = asdict(self)
+        data = {f.name: getattr(self, f.name) for f in fields(self)}  # no deep copies
+        data["details"] = dict(self.details)
         data["parameters"] = None if self.parameters is None else dict(self.parameters)
         return data
 
@@ -62,7 +63,7 @@ class Entry:
 
     def columns(self, seq: int, prev_hash: str) -> dict[str, Any]:
         """The database row: content as canonical JSON text, ``seq``, both hashes."""
-        row = asdict(self)
+        row = {f.name: getattr(self, f.name) for f in fields(self)}
         row["details"] = canonical(self.details)
         row["parameters"] = None if self.parameters is None else canonical(dict(self.parameters))
         row.update(seq=seq, prev_hash=prev_hash)

@@ -106,7 +106,27 @@ class Recorder:
             if self._store is None:
                 self._store = HistoryStore(self.url)
                 self._flush(self._store)
+                self._import_backups_once(self._store)
             return self._store
+
+    def _import_backups_once(self, store: HistoryStore) -> None:
+        """The backup files of earlier versions become records, once per database and station
+        (a marker file remembers it; the import itself never adds a file twice either)."""
+        import hashlib
+
+        from prm9tool.history.importer import import_backups
+        from prm9tool.paths import user_data_dir
+
+        backups = user_data_dir() / "backups"
+        digest = hashlib.sha256(store.shown_url.encode("utf-8")).hexdigest()[:16]
+        marker = user_data_dir() / f"history-imported-{digest}"
+        if marker.exists() or not backups.is_dir():
+            return
+        result = import_backups(store, backups)
+        for path, problem in result.problems:
+            log.warning("history: backup %s not imported: %s", path, problem)
+        with contextlib.suppress(OSError):
+            marker.write_text(f"{store.shown_url}\n{len(result.imported)} imported\n", "utf-8")
 
     def problem(self) -> HistoryError | None:
         """Why the database cannot take records now (None: it can); flushes the queue."""

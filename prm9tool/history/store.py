@@ -17,7 +17,7 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
-from sqlalchemy import Connection, create_engine, event, func, insert, select, text
+from sqlalchemy import Connection, bindparam, create_engine, event, func, insert, select, text
 from sqlalchemy.engine import Engine, make_url
 from sqlalchemy.exc import DBAPIError, IntegrityError, SQLAlchemyError
 
@@ -33,6 +33,15 @@ _SUMMARY = (
     RecordRow.os_user, RecordRow.host, RecordRow.operation, RecordRow.outcome,
     RecordRow.failed_step, RecordRow.details, RecordRow.hash,
 )  # fmt: skip
+
+
+_INSERT = insert(RecordRow)  # one statement, compiled once (recording is on the upload's path)
+_HEAD = (
+    select(RecordRow.seq, RecordRow.hash)
+    .where(RecordRow.serial == bindparam("serial"))
+    .order_by(RecordRow.seq.desc())
+    .limit(1)
+)
 
 
 @dataclass(frozen=True)
@@ -95,14 +104,9 @@ class HistoryStore:
             with self.engine.begin() as conn:
                 if self.dialect == "postgresql":
                     conn.execute(text("SELECT pg_advisory_xact_lock(:k)"), {"k": entry.serial})
-                head = conn.execute(
-                    select(RecordRow.seq, RecordRow.hash)
-                    .where(RecordRow.serial == entry.serial)
-                    .order_by(RecordRow.seq.desc())
-                    .limit(1)
-                ).first()
+                head = conn.execute(_HEAD, {"serial": entry.serial}).first()
                 row = entry.columns(head.seq + 1, head.hash) if head else entry.columns(1, GENESIS)
-                result = conn.execute(insert(RecordRow).values(**row))
+                result = conn.execute(_INSERT, row)
                 key = result.inserted_primary_key
                 assert key is not None  # an INSERT of one row always has one
                 row["id"] = int(key[0])
@@ -158,7 +162,9 @@ class HistoryStore:
     # --- internals ------------------------------------------------------------------------
     def _rows(self, query: Any) -> list[dict[str, Any]]:
         with self.engine.connect() as conn:
-            return [dict(row._mapping) for row in conn.execute(query)]
+            result = conn.execute(query)
+            keys = list(result.keys())
+            return [dict(zip(keys, row, strict=True)) for row in result]  # 2x Row._mapping
 
     def _scalar(self, query: Any) -> Any:
         with self.engine.connect() as conn:
@@ -209,6 +215,10 @@ def _engine(url: str, dialect: str) -> Engine:
     @event.listens_for(engine, "connect")
     def _autocommit(dbapi_connection: Any, _record: Any) -> None:
         dbapi_connection.isolation_level = None  # SQLAlchemy emits BEGIN itself (below)
+        # write-ahead log: one fsync per record (synchronous=FULL keeps every committed record
+        # on power loss), readers never block the writer
+        dbapi_connection.execute("PRAGMA journal_mode=WAL")
+        dbapi_connection.execute("PRAGMA synchronous=FULL")
 
     @event.listens_for(engine, "begin")
     def _begin(conn: Connection) -> None:

@@ -57,7 +57,7 @@ class PlotView(QWidget):
     def __init__(self, parent: QWidget | None = None) -> None:
         super().__init__(parent)
         self.plots: list[Plot] = []
-        self.setMinimumHeight(260)
+        self.setMinimumHeight(200)
 
     def show_plots(self, plots: list[Plot]) -> None:
         """Replace what is shown."""
@@ -87,6 +87,7 @@ class Page(QWidget):
         self.run_button.clicked.connect(self.run)
         self.result = QLabel()
         self.result.setWordWrap(True)
+        self.result.setMinimumHeight(self.result.fontMetrics().height() * 3)
         self.plot = PlotView()
         self.buttons = QHBoxLayout()
         self.buttons.addWidget(self.run_button)
@@ -133,6 +134,7 @@ class AutotunePage(Page):
         self.amplitude = self.field("amplitude", spin(50.0, 1.0, 90.0, "%"))
         self.overshoot = self.field("overshoot", spin(10.0, 0.0, 50.0, "%"))
         self.settling = self.field("settling", spin(40.0, 2.0, 2000.0, "ms", 0))
+        self.limit = self.field("limit", spin(60.0, 5.0, 100.0, "%"))
         self.accept_button = QPushButton()
         self.accept_button.setEnabled(False)
         self.accept_button.clicked.connect(self.accept)
@@ -145,18 +147,19 @@ class AutotunePage(Page):
         amplitude = self.amplitude.value()
         targets = Targets(self.overshoot.value(), self.settling.value() / 1000.0)
         duration = max(3 * targets.settling_s, 0.06)
+        limit = self.limit.value()
         if self.method.currentIndex() == 0:
             what = self.tr("steps of %1 % from 0 %, a few times, about %2 s in all")
             what = what.replace("%1", f"{amplitude:g}").replace("%2", f"{4 * duration:.1f}")
             self.window_.start(
-                "autotune", what, lambda rig: model_tune(rig, targets, loop, amplitude)
+                "autotune", what, lambda rig: model_tune(rig, targets, loop, amplitude, 3, limit)
             )
             return
         what = self.tr("P only with rising gain until the loop oscillates (steps of 5 %, "
-                       "oscillation stopped at ±40 %), about 5 s")  # fmt: skip
+                       "oscillation stopped at ±%1 %), about 5 s").replace("%1", f"{limit:g}")  # fmt: skip
 
         def critical(rig: Any) -> tuple[CriticalGainResult, Any]:
-            found = critical_gain_tune(rig, loop)
+            found = critical_gain_tune(rig, loop, limit_pct=limit)
             proposed = to_parameters(LOOPS[loop].prefix, found.gains)
             return found, compare_steps(rig, loop, proposed, amplitude, duration)
 
@@ -191,7 +194,7 @@ class AutotunePage(Page):
             for k, v in self.proposal.items()
         ]
         self.result.setText(
-            head + "<br>" + "<br>".join(rows) + "<br>" + self._figures(before, after)
+            head + "<br>" + " · ".join(rows) + "<br>" + self._figures(before, after)
         )
         series = [
             Series(before.record.t * 1000, before.record.channels[LOOPS[loop].actual], self.tr("before (measured)"), COLOURS[0]),
@@ -235,6 +238,7 @@ class AutotunePage(Page):
         self.tr_label("amplitude", self.tr("Step amplitude:"))
         self.tr_label("overshoot", self.tr("Target overshoot at most:"))
         self.tr_label("settling", self.tr("Target settling time (±2 %) at most:"))
+        self.tr_label("limit", self.tr("Stop when the response leaves 0 ± (band):"))
         self.run_button.setText(self.tr("Run autotune"))
         self.accept_button.setText(self.tr("Accept the proposed gains"))
 
