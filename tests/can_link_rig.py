@@ -39,6 +39,7 @@ class LinkRig:
     refused: dict[tuple[int, int], int] = field(default_factory=dict)
     missing: set[tuple[int, int]] = field(default_factory=set)
     silent_after: int | None = None
+    reset_at: int | None = None
     requests: int = 0
 
     def refuse(self, index: int, subindex: int, code: int = AbortCode.INVALID_VALUE) -> None:
@@ -48,6 +49,12 @@ class LinkRig:
     def go_silent_after(self, requests: int) -> None:
         """The node answers ``requests`` more SDO requests, then none (power lost, cable cut)."""
         self.silent_after = self.requests + requests
+
+    def reset_after(self, requests: int) -> None:
+        """The valve is reset (NMT reset node by another master, a power dip) when the
+        ``requests``-th SDO request from now arrives: that one and those during the ~2 s
+        boot get no answer."""
+        self.reset_at = self.requests + requests
 
     def stored_set(self) -> dict[str, int | str]:
         """The valve's non-volatile memory (what it holds after a power cycle; entries not
@@ -109,6 +116,9 @@ def _wrap_sdo(rig: LinkRig) -> None:
         if msg.arbitration_id == 0x600 + rig.slave.node_id:
             rig.requests += 1
             if rig.silent_after is not None and rig.requests > rig.silent_after:
+                return
+            if rig.reset_at is not None and rig.requests == rig.reset_at:
+                rig.valve.nmt_event("reset_node")
                 return
         on_message(msg)
 

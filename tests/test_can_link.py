@@ -15,6 +15,7 @@ from can_link_rig import E02, E04, LinkRig, make_link_rig
 from canopen.sdo.exceptions import SdoError
 
 from prm9tool.catalogue import CATALOGUE
+from prm9tool.device.canlink import bus as bus_module
 from prm9tool.device.canlink.bus import CanOptions, open_bus
 from prm9tool.device.canlink.session import CanopenSession, NotAPrm9Error
 from prm9tool.device.canlink.typekeys import TypeKeyNeededError, remember
@@ -316,3 +317,46 @@ def test_the_sync_period_keeps_the_scope_under_half_of_a_slow_bus():
 
     assert min_period_s(None) == min_period_s(500_000) == 0.001
     assert min_period_s(125_000) == pytest.approx(0.002112)  # 132 bits / 125 kbit/s / 0.5
+
+
+def test_a_wrong_bit_rate_shows_as_error_frames_in_the_message(tmp_path, data_dir):
+    from can_link_rig import unique_channel
+
+    channel = unique_channel("errors")
+    noise = can.Bus(interface="virtual", channel=channel)
+    options = CanOptions("virtual", channel)
+    shared = bus_module.acquire(options)  # the tool's master, listening
+    try:
+        for _ in range(3):  # what a controller at another bit rate reports
+            noise.send(can.Message(is_error_frame=True, arbitration_id=0, is_extended_id=False))
+        deadline = time.monotonic() + 2
+        while shared.error_frames < 3:
+            assert time.monotonic() < deadline
+            time.sleep(0.01)
+        with pytest.raises(DeviceTimeoutError) as caught:
+            CanopenSession(options, NODE, timeout_s=0.05)
+    finally:
+        bus_module.release(shared)
+        noise.shutdown()
+    assert "the bus saw 3 error frames: check that the bit rate is the valve's" in str(caught.value)
+
+
+def test_a_valve_reset_mid_upload_keeps_its_stored_set(tmp_path, data_dir):
+    rig = make_link_rig("reset", tmp_path)
+    rig.valve.start()
+    try:
+        with open_can(rig, timeout_s=0.1) as session:
+            stored_before = rig.stored_set()
+            values = changed(session)
+            rig.reset_after(30)  # during the writes
+            with pytest.raises(DeviceTimeoutError) as caught:
+                session.upload(values)
+        message = str(caught.value)
+        assert "upload failed while writing the parameters (step 1 of 3)" in message
+        assert "nothing was stored" in message
+        assert rig.stored_set() == stored_before
+        wait_for(lambda: rig.valve.status().nmt_state == "pre-operational", 5.0)
+        assert rig.working("LIMTA") == stored_before.get("LIMTA", CATALOGUE["LIMTA"].default)
+    finally:
+        rig.valve.stop()
+        rig.close()

@@ -9,6 +9,7 @@ maps its outcomes: an abort is an :class:`SdoAbortError` with the CiA 301 code, 
 from __future__ import annotations
 
 import threading
+from collections.abc import Callable
 from typing import TYPE_CHECKING
 
 from prm9tool.errors import (
@@ -29,8 +30,16 @@ ARGO_HYTOS_VENDOR = 0xE6  # 0x1018/1 (manual §7.6 step 2)
 class SdoChannel:
     """Serialized SDO uploads and downloads to one node."""
 
-    def __init__(self, node: canopen.RemoteNode, timeout_s: float) -> None:
+    def __init__(
+        self,
+        node: canopen.RemoteNode,
+        timeout_s: float,
+        error_frames: Callable[[], int] | None = None,
+    ) -> None:
+        """``error_frames()``: error frames seen on the bus so far (named in a timeout: a
+        wrong bit rate shows as error frames and no answers)."""
         self.node = node
+        self._error_frames = error_frames
         self.timeout_s = timeout_s
         self.node.sdo.RESPONSE_TIMEOUT = timeout_s
         # one lock per node object: a scan and the session may share the node's SDO client
@@ -67,8 +76,7 @@ class SdoChannel:
             except canopen.SdoCommunicationError as exc:
                 raise DeviceTimeoutError(
                     f"node {self.node.id}: no SDO answer for 0x{index:04X}/{subindex} within "
-                    f"{sdo.RESPONSE_TIMEOUT:g} s ({exc}); is the valve powered, on this bus, "
-                    "at this bit rate?"
+                    f"{sdo.RESPONSE_TIMEOUT:g} s ({exc}); {self._what_to_check()}"
                 ) from None
             except (can.CanError, OSError) as exc:
                 raise DeviceDisconnectedError(
@@ -76,6 +84,15 @@ class SdoChannel:
                 ) from None
             finally:
                 sdo.RESPONSE_TIMEOUT = self.timeout_s
+
+    def _what_to_check(self) -> str:
+        errors = self._error_frames() if self._error_frames is not None else 0
+        if errors:
+            return (
+                f"the bus saw {errors} error frames: check that the bit rate is the valve's "
+                "(delivery state 500 kbit/s) and the bus is terminated"
+            )
+        return "is the valve powered, on this bus, at this bit rate?"
 
     def read_u32(self, index: int, subindex: int) -> int:
         """An UNSIGNED32 (or shorter) object as a number."""

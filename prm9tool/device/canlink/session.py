@@ -310,7 +310,7 @@ class CanopenSession(ValveSession):
                 raise Prm9Error(f"node {self.node_id} is already open in this program")
             node = canopen.RemoteNode(self.node_id, canopen.ObjectDictionary())
             network.add_node(node)
-        return SdoChannel(node, timeout_s)
+        return SdoChannel(node, timeout_s, lambda: self._shared.error_frames)
 
     def _stop_sampler(self) -> None:
         sampler, self._sampler = self._sampler, None
