@@ -1774,6 +1774,21 @@ Ano načte a záznam zařadí do fronty; Ne nenačte nic.</translation>
         </message>
     </context>
     <context>
+        <name>LinkGuard</name>
+        <message>
+            <source>The connection will move</source>
+            <translation>Spojení se změní</translation>
+        </message>
+        <message>
+            <source>The node-ID switch is at position {0}: the switches decide node ID and bit rate (manual table 7-17), so this change does not move the valve; it stays at node {1}.</source>
+            <translation>Přepínač ID uzlu je v poloze {0}: ID uzlu a přenosovou rychlost určují přepínače (návod, tabulka 7-17), tato změna tedy ventil nepřesune; zůstává uzlem {1}.</translation>
+        </message>
+        <message>
+            <source>After the valve's next power-up or restart it answers at node {0}, {1}: prm9tool's connection then breaks. Store the change, restart the valve, then find it again under Communication → CAN bus (node {0}, bit rate {1}).</source>
+            <translation>Po příštím zapnutí nebo restartu ventil odpovídá jako uzel {0}, {1}: spojení prm9tool se pak přeruší. Uložte změnu, restartujte ventil a najděte ho znovu v Komunikace → Sběrnice CAN (uzel {0}, rychlost {1}).</translation>
+        </message>
+    </context>
+    <context>
         <name>MainActions</name>
         <message>
             <source>&amp;New…</source>
