@@ -21,6 +21,7 @@ if TYPE_CHECKING:
     from PySide6.QtWidgets import QApplication, QWidget
 
     from prm9tool.errors import Prm9Error
+    from prm9tool.online.connection_protocol import ListedValves, ValveListing
     from prm9tool.views.main_window import MainWindow
 
 
@@ -104,8 +105,8 @@ def start(window: MainWindow, plan: StartPlan) -> None:
     elif plan.devices:
         wanted_id = plan.devices[0]
 
-        def listed(found: object) -> None:  # the valves are listed off the GUI thread
-            entries = [] if isinstance(found, Exception) else list(found)  # type: ignore[call-overload]
+        def listed(found: ListedValves) -> None:  # the valves are listed off the GUI thread
+            entries = [] if isinstance(found, Exception) else found
             wanted = [e for e in entries if _matches(e, wanted_id)]
             if wanted:
                 window.valve.go_online(wanted[0])
@@ -169,8 +170,8 @@ def _normal_spec(spec: str) -> str:
     return f"{TypeKey.parse(key)}:{int(serial)}"
 
 
-def _matches(entry: object, wanted: str) -> bool:
-    return wanted in (str(getattr(entry, "device_id", "")), str(getattr(entry, "serial", "")))
+def _matches(entry: ValveListing, wanted: str) -> bool:
+    return wanted in (entry.device_id, str(entry.serial))
 
 
 def _opener(args: argparse.Namespace) -> Callable[[object], object]:

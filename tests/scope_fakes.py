@@ -25,6 +25,7 @@ class FakeConnection(QObject):
         self.writes: list[tuple[str, int | str]] = []
         self.refuse: set[str] = set()  # mnemonics whose writes the valve refuses
         self.samples_lost = 0
+        self.generators: list[object] = []  # the waveforms started
 
     def start_stream(self, keys, rate_hz: int) -> None:
         self.streams.append((list(keys), rate_hz))
@@ -41,6 +42,16 @@ class FakeConnection(QObject):
             QTimer.singleShot(0, lambda: self._refused(mnemonic))
             return
         self.writes.append((mnemonic, raw))
+
+    def start_generator(self, settings) -> None:
+        """As the real connection: the first value, then the override on (the waveform's
+        timing is the driver's: tests/test_setpoint_driver.py)."""
+        self.generators.append(settings)
+        self.write("SETPOVR", settings.raw_at(0.0))
+        self.write("SETPOVRON", 1)
+
+    def stop_generator(self) -> None:
+        self.write("SETPOVRON", 0)
 
     def _refused(self, mnemonic: str) -> None:
         self.failed.emit(f"{mnemonic}: access denied (0601 0000h)")

@@ -63,6 +63,17 @@ def test_the_tables_mark_the_switch_positions_read_at_power_up(qtbot):
     assert "node ID 25, 125 kbit/s, terminator on" in window.effective_label.text()
 
 
+def test_enter_in_the_node_id_takes_it_and_keeps_the_window_open(qtbot):
+    from PySide6.QtCore import Qt
+
+    window, _valve, _link, doc, _undo = open_window(qtbot, switches=(6, 0))
+    window.node_id.setFocus()
+    window.node_id.lineEdit().selectAll()
+    qtbot.keyClicks(window.node_id, "42")
+    qtbot.keyClick(window.node_id, Qt.Key.Key_Return)
+    assert doc.value("NODEID") == 42 and window.isVisible()
+
+
 def test_node_id_and_terminator_go_to_the_valve_and_show_after_restart(qtbot):
     window, valve, link, doc, _undo = open_window(qtbot, switches=(6, 0))
     assert marked_rows(window.node_table) == [0]

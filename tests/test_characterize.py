@@ -176,3 +176,34 @@ def test_a_limit_exceeded_stops_the_step_and_restores():
     with pytest.raises(LimitExceededError, match="left the allowed band"):
         step_test(rig, 50.0, limit_pct=20.0)
     assert rig.read(["THRESETP", "SETPOVRON"]) == {"THRESETP": 819, "SETPOVRON": 0}
+
+
+def test_over_a_link_the_figures_agree_with_the_stepped_emulator():
+    """SessionRig: the override written at the link's pace, samples from the stream."""
+    from prm9tool.characterize.rig import SessionRig
+    from prm9tool.device import factory
+
+    session = factory.open_session(f"emulator:{E02}:61", paced=False)
+    try:
+        rig = SessionRig(session, "emulator over its USB link")
+        linked = bode_test(rig, 10.0, 0.0, 2.0, 100.0, 2.0).response.bandwidth_hz()
+        static = static_test(rig, period_s=2.0).characteristic
+        assert rig.read(["SETPOVRON", "THRESETP"]) == {"SETPOVRON": 0, "THRESETP": 819}
+    finally:
+        session.close()
+        factory.forget_emulated_valves()
+    stepped = bode_test(EmulatorRig(booted()), 10.0, 0.0, 2.0, 100.0, 2.0).response.bandwidth_hz()
+    assert linked == pytest.approx(stepped, rel=0.05)
+    assert static.gain == pytest.approx(1.0, abs=0.03)
+
+
+def test_model_autotune_of_the_e04_process_loop():
+    """An integrating plant (the actuator); the deviation's gain and offset stay in the loop."""
+    valve = EmulatedValve("PRM9-06.3Z11/30-24E04S02")
+    rig = EmulatorRig(valve)
+    targets = Targets(overshoot_pct=10.0, settling_s=0.5)
+    result = model_tune(rig, targets, loop="process", amplitude_pct=20.0)
+    assert result.model.integrating
+    assert result.model.gain == pytest.approx(4.0, rel=0.05)  # full stroke in 0.5 s at 100 %
+    assert result.meets_targets
+    assert rig.read(["PRCKP", "GAINSETPOS"]) == {"PRCKP": 200, "GAINSETPOS": 16384}

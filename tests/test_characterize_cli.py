@@ -112,3 +112,13 @@ def test_characterize_needs_an_output_and_one_valve(tmp_path, capsys):
         main(["--characterize", "--json", str(tmp_path / "no" / "o.json"), "--emulator", E02]) == 2
     )
     assert "there is no folder" in capsys.readouterr().err
+
+
+def test_a_valve_that_does_not_follow_its_setpoint_is_not_tested(tmp_path, capsys):
+    js = tmp_path / "out.json"
+    args = ["--characterize", "--emulator", "PRM9-06.3Z11/30-24E04S02-CA:34", "--json", str(js)]
+    assert main(args) == ExitCode.OUT_OF_LIMITS
+    err = capsys.readouterr().err
+    assert "does not follow its setpoint: device state INIT" in err
+    assert "waits for its master" in err
+    assert not js.exists()

@@ -31,10 +31,9 @@ CA = "PRM9-06.3Z11/30-24E02S02-CA"
 
 
 @pytest.fixture
-def session(request: pytest.FixtureRequest):
-    serial = 9000 + len(request.node.name)  # each test its own valve
-    factory.forget_emulated_valves()
-    opened = factory.open_session(f"emulator:{CA}:{serial}", paced=False)
+def session():
+    factory.forget_emulated_valves()  # a fresh valve for each test
+    opened = factory.open_session(f"emulator:{CA}:9001", paced=False)
     opened.transport.valve.advance(2.0)  # booted: pre-operational, INIT
     yield opened
     opened.close()

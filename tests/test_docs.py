@@ -17,10 +17,18 @@ ROOT = Path(__file__).resolve().parent.parent
 
 
 def _tracked_texts() -> list[Path]:
-    listed = subprocess.run(
-        ["git", "ls-files"], cwd=ROOT, capture_output=True, text=True, check=True
-    ).stdout.split()
+    """The repository's text files (git's list; outside a checkout every file but .venv)."""
     suffixes = {".py", ".md", ".html", ".toml", ".ts", ".txt", ".json", ".qrc", ""}
+    try:
+        listed = subprocess.run(
+            ["git", "ls-files"], cwd=ROOT, capture_output=True, text=True, check=True
+        ).stdout.split()
+    except (OSError, subprocess.CalledProcessError):
+        listed = [
+            str(p.relative_to(ROOT))
+            for p in ROOT.rglob("*")
+            if p.is_file() and not {".venv", ".git"} & set(p.relative_to(ROOT).parts)
+        ]
     return [ROOT / name for name in listed if Path(name).suffix in suffixes]
 
 

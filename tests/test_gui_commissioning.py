@@ -83,8 +83,7 @@ def test_the_inputs_dialog_sets_the_supply_and_the_switches(qtbot, window):
     qtbot.waitUntil(dialog.isEnabled, timeout=TIMEOUT)
     assert dialog.fields["supply_voltage"].value() == 24.0
     assert dialog.switches["switch_baud"].isVisible()  # a -CA valve has its switches
-    dialog.fields["supply_voltage"].setValue(18.0)
-    dialog.fields["supply_voltage"].editingFinished.emit()
+    dialog.fields["supply_voltage"].setValue(18.0)  # as the arrows or Enter do
     qtbot.waitUntil(lambda: emulated(SERIAL).inputs()["supply_voltage"] == 18.0, timeout=TIMEOUT)
     dialog.switches["switch_node"].setCurrentIndex(0)
     dialog.switches["switch_node"].activated.emit(0)
@@ -97,3 +96,13 @@ def test_pulling_the_cable_takes_the_program_offline_with_a_message(qtbot, windo
         window.emulated_menu.cable_action.trigger()
     assert not window.connection.is_online
     assert not window.emulated_menu.isEnabled()
+
+
+def test_a_valve_without_canopen_enables_itself_and_offers_no_commissioning(qtbot, tmp_path):
+    with main_window(qtbot, tmp_path) as window:  # an E02 without -CA: analog only
+        go_online(qtbot, window, "PRM9-06.3Z11/30-24E02S02:4302")
+        emulated(4302).advance(2.0)
+        panel = window.show_status_window().commissioning
+        qtbot.waitUntil(lambda: "follows its setpoint" in panel.reason.text(), timeout=TIMEOUT)
+        assert not any(button.isEnabled() for button in panel.buttons.values())
+        assert window.status.status_label.text() == "Status: ok"

@@ -16,7 +16,6 @@ import threading
 import time
 from pathlib import Path
 
-import gui_support
 import pytest
 from gui_support import record_prompts, session_of
 from PySide6.QtCore import QRect, QSettings, Qt
@@ -267,17 +266,25 @@ def test_e04_ca_valve_expert_status_canopen_scope_and_languages(qtbot, program, 
     status = window.show_status_window()
     leds = status._led_states
     qtbot.waitUntil(lambda: all(led.text() not in ("", "—") for led in leds), timeout=TIMEOUT)
+    commissioning = status.commissioning
+    assert commissioning is not None
+    qtbot.waitUntil(lambda: "CANopen master" in commissioning.reason.text(), timeout=TIMEOUT)
+    assert "waiting for a CANopen master" in window.status.status_label.text()
     _save(qtbot, status, shots, "dialog_valve_status")
+    # What a new user does (issue 14): NMT start and Enable (08h → 09h → 0Bh → 0Fh), so that
+    # the setpoint generator's square wave moves the process loop for the picture.
+    commissioning.buttons["nmt_start"].click()
+    commissioning.buttons["enable"].click()
+    qtbot.waitUntil(lambda: "follows its setpoint" in commissioning.reason.text(), timeout=TIMEOUT)
     status.close()
+    emulated_dialog = window.emulated_menu.show_dialog()
+    qtbot.waitUntil(emulated_dialog.isEnabled, timeout=TIMEOUT)
+    _save(qtbot, emulated_dialog, shots, "dialog_emulated_valve")
+    emulated_dialog.close()
     canopen = window.show_canopen_window()
     qtbot.waitUntil(lambda: _shows(canopen, "read from the valve"), timeout=TIMEOUT)
     _save(qtbot, canopen, shots, "dialog_canopen")
     canopen.close()
-    # What the PLC would do: NMT start and control word 0Fh (DEVICE_MODE_ACTIVE), so that the
-    # setpoint generator's square wave moves the process loop for the picture.
-    valve = gui_support.emulated(3002)
-    valve.nmt_event("operational")
-    valve.write(0x6040, 0, 0x0F)
     window.open_scope("position_actual")
     assert window.current_view() == "scope"
     scope = window.views["scope"]

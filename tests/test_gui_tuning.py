@@ -170,3 +170,32 @@ def test_the_position_controller_dialog_opens_the_tuning_window(qtbot):
     qtbot.addWidget(dialog)
     dialog.tuning_button.click()
     assert opened == ["position"]
+
+
+def test_online_the_autotune_runs_on_the_connected_valve_and_leaves_it_as_it_was(
+    qtbot, monkeypatch
+):
+    from gui_support import emulator_connection
+
+    from prm9tool.catalogue import CATALOGUE
+    from prm9tool.device import factory
+
+    connection = emulator_connection()  # unpaced: the link's reports step the valve
+    try:
+        entry = factory.list_devices([f"{E02}:5101"])[-1]
+        with qtbot.waitSignal(connection.online_changed, timeout=10000):
+            connection.go_online(entry)
+        w = TuningWindow(ParameterDocument(E02), connection)
+        qtbot.addWidget(w)
+        assert "Online" in w.mode.text()
+        monkeypatch.setattr(QMessageBox, "question", lambda *a: QMessageBox.StandardButton.Yes)
+        w.autotune.run_button.click()
+        finish(qtbot, w)
+        assert "POSKP: 0.4 → " in w.autotune.result.text(), w.status.text()
+        valve = factory.emulated_valve(E02, 5101)
+        for mnemonic, raw in {"POSKP": 40, "THRESETP": 819, "SETPOVRON": 0}.items():
+            param = CATALOGUE[mnemonic]
+            assert valve.read(param.index, param.subindex) == raw
+    finally:
+        connection.shutdown()
+        factory.forget_emulated_valves()

@@ -122,3 +122,22 @@ def test_opening_another_file_while_one_is_being_read_is_refused(window, tmp_pat
     assert window.files.open_path(first, ask=False)
     assert inner == [False] and "Still reading first.prm" in messages
     assert window.doc.path == first
+
+
+def test_compare_with_file_reads_off_the_gui_thread_too(window, tmp_path, monkeypatch, answers):
+    path = tmp_path / "other.prm"
+    path.write_text("format = prm9tool 1\ngarbage\n", encoding="utf-8")
+    real_read = prmfile.read_file
+    gui_ran = threading.Event()
+    seen: dict[str, object] = {}
+
+    def slow_read(where):
+        seen["thread"] = threading.current_thread()
+        seen["gui_ran_meanwhile"] = gui_ran.wait(timeout=3)
+        return real_read(where)
+
+    monkeypatch.setattr(prmfile, "read_file", slow_read)
+    QTimer.singleShot(20, gui_ran.set)
+    window.compare.compare_with_file(path)
+    assert seen["thread"] is not threading.main_thread() and seen["gui_ran_meanwhile"] is True
+    assert "other.prm cannot be compared" in answers.informed[-1]

@@ -9,6 +9,7 @@ from PySide6.QtCore import QLocale
 
 from prm9tool import i18n
 from prm9tool.catalogue import CATALOGUE, Access
+from prm9tool.catalogue.typekey import TypeKey
 from prm9tool.errors import ValueRangeError
 from prm9tool.files import prmfile
 from prm9tool.messages import DECIMAL_POINT
@@ -184,3 +185,19 @@ def test_live_values_in_the_diagram_are_shown_again_in_a_new_language(qtbot, lan
     assert demand.value_text == "50.0 %"
     language("de")  # no new values from the valve meanwhile
     assert demand.value_text == "50,0 %"
+
+
+def test_files_written_in_german_keep_the_point(qapp, language):
+    import io
+
+    import numpy as np
+
+    from prm9tool.catalogue.signals import BY_KEY
+    from prm9tool.scope.measure import write_csv
+
+    language("de")
+    out = io.StringIO()
+    write_csv(out, np.array([0.0, 0.0002]), np.array([[12.5], [-0.25]]), [BY_KEY["demand"]])
+    assert out.getvalue().splitlines()[1:] == ["0.000000,12.5", "0.000200,-0.25"]
+    text = prmfile.PrmContents.factory(TypeKey.parse(E04_CA)).to_text()
+    assert "\nMONTHRES = 9.766  #" in text and "\nPOSKP = 0.4  #" in text

@@ -7,6 +7,7 @@ import pytest
 from hypothesis import HealthCheck, example, given, settings
 from hypothesis import strategies as st
 
+from prm9tool.catalogue import CATALOGUE
 from prm9tool.catalogue.typekey import TypeKey
 from prm9tool.files.prmfile import PrmContents, check_bytes, read_bytes
 
@@ -47,36 +48,50 @@ VALUE_TEXT = st.text(
     ),
     max_size=12,
 )
-NAMES = st.from_regex(r"[A-Za-z_][A-Za-z0-9_.\-]{0,8}", fullmatch=True)
+# A value as a person may write it: any text, often starting with '#' (issue 15 item 15).
+VALUES = st.one_of(VALUE_TEXT, VALUE_TEXT.map(lambda text: "#" + text))
+RESERVED = {p.mnemonic for p in CATALOGUE} | {"format", "type_key", "serial", "firmware"}
+NAMES = st.from_regex(r"[A-Za-z_][A-Za-z0-9_.\-]{0,8}", fullmatch=True).filter(
+    lambda name: name not in RESERVED and name != "checksum"
+)
 SPACING = st.sampled_from(["", " ", "  ", "\t"])
+COMMENT = st.one_of(st.just(""), VALUE_TEXT.map(lambda text: "  #" + text))
 
 
 @st.composite
-def entry_lines(draw: st.DrawFn) -> str:
-    """One line a person might add: a comment, a blank line or ``NAME = value  # comment``."""
-    kind = draw(st.sampled_from(["comment", "blank", "entry", "entry"]))
-    if kind == "comment":
-        return draw(SPACING) + "#" + draw(VALUE_TEXT)
-    if kind == "blank":
-        return draw(SPACING)
-    name = draw(st.one_of(NAMES, st.sampled_from(["firmware", "serial", "POSKP", "THRESETP"])))
-    line = f"{name}{draw(SPACING)}={draw(SPACING)}{draw(VALUE_TEXT)}"
-    if draw(st.booleans()):
-        line += draw(st.sampled_from([" ", "  ", "\t"])) + "#" + draw(VALUE_TEXT)
-    return line
+def entry_line(draw: st.DrawFn, name: str, value: str) -> str:
+    """``name = value`` with any spacing around '=' and an optional inline comment."""
+    return f"{name}{draw(SPACING)}={draw(SPACING)}{value}{draw(COMMENT)}"
+
+
+@st.composite
+def spelled(draw: st.DrawFn, text: str) -> str:
+    """Another spelling of the number ``text`` that reads as the same value."""
+    if not text.lstrip("-").replace(".", "").isdigit():
+        return text
+    number = text.replace(".", ",") if "." in text and draw(st.booleans()) else text
+    return draw(st.sampled_from([number, f"+{number}" if number[0] != "-" else number,
+                                 f"{text}0" if "." in text else f"{text}.0", f"{text}e0"]))  # fmt: skip
 
 
 @st.composite
 def edited_files(draw: st.DrawFn) -> bytes:
-    """A factory file with lines removed, added and changed, and any checksum line."""
+    """A factory file edited by hand: values respelled, a firmware line, unknown entries,
+    comment and blank lines added anywhere, and any checksum."""
     lines = _body(FACTORY[draw(st.sampled_from([E04_CA, E02]))])
-    for _ in range(draw(st.integers(0, 6))):
-        at = draw(st.integers(3, len(lines)))  # after the format and type key lines
-        lines.insert(at, draw(entry_lines()))
-    for _ in range(draw(st.integers(0, 3))):
-        at = draw(st.integers(4, len(lines) - 1))
-        lines[at] = draw(entry_lines())
-    lines.append("checksum = crc32:00000000")
+    for index in draw(st.lists(st.integers(4, len(lines) - 1), max_size=6)):
+        name, _equals, rest = lines[index].partition(" = ")
+        value = rest.split("  #")[0]
+        lines[index] = draw(entry_line(name, draw(spelled(value))))
+    if draw(st.booleans()):
+        lines.insert(3, draw(entry_line("firmware", draw(VALUES))))
+    for name in draw(st.lists(NAMES, max_size=4, unique=True)):
+        lines.insert(draw(st.integers(3, len(lines))), draw(entry_line(name, draw(VALUES))))
+    for _ in range(draw(st.integers(0, 4))):
+        extra = draw(st.one_of(SPACING, SPACING.map(lambda s: s + "#") | VALUE_TEXT.map(
+            lambda text: "#" + text)))  # fmt: skip
+        lines.insert(draw(st.integers(2, len(lines))), extra)
+    lines.append(draw(st.sampled_from(["checksum = crc32:00000000", "checksum = crc32:1234abcd"])))
     return "\n".join(lines).encode("utf-8") + b"\n"
 
 

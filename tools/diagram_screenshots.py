@@ -15,6 +15,7 @@ import os
 import sys
 from collections.abc import Sequence
 from pathlib import Path
+from types import SimpleNamespace
 
 os.environ.setdefault("QT_QPA_PLATFORM", "offscreen")
 
@@ -53,6 +54,11 @@ class _EmulatorLink(QObject):
     def __init__(self, valve: EmulatedValve) -> None:
         super().__init__()
         self.valve, self.is_online, self.watched = valve, True, []
+
+    @property
+    def device(self) -> object:
+        """What the valve reports of itself (its type key), as ValveConnection.device."""
+        return SimpleNamespace(type_key=str(self.valve.type_key))
 
     def watch_signals(self, keys: Sequence[str]) -> None:
         self.watched = list(keys)

@@ -54,8 +54,8 @@ Poslední akce možná nebyla dokončena. Uložte svou práci pod novým názvem
             <translation>několik skoků o %1 % od 0 %, celkem asi %2 s</translation>
         </message>
         <message>
-            <source>P only with rising gain until the loop oscillates (steps of 5 %, oscillation stopped at ±40 %), about 5 s</source>
-            <translation>pouze P se stoupajícím zesílením, dokud se smyčka nerozkmitá (skoky 5 %, kmitání přerušeno při ±40 %), asi 5 s</translation>
+            <source>P only with rising gain until the loop oscillates (steps of 5 %, oscillation stopped at ±%1 %), about 5 s</source>
+            <translation>pouze P se stoupajícím zesílením, dokud se smyčka nerozkmitá (skoky 5 %, kmitání přerušeno při ±%1 %), asi 5 s</translation>
         </message>
         <message>
             <source>Model: gain %1, lags %2 ms, dead time %3 ms (fit error %4 %).</source>
@@ -124,6 +124,10 @@ Poslední akce možná nebyla dokončena. Uložte svou práci pod novým názvem
         <message>
             <source>Target settling time (±2 %) at most:</source>
             <translation>Doba ustálení (±2 %) nejvýše:</translation>
+        </message>
+        <message>
+            <source>Stop when the response leaves 0 ± (band):</source>
+            <translation>Přerušit, když odezva opustí 0 ± (pásmo):</translation>
         </message>
         <message>
             <source>Run autotune</source>
@@ -1355,6 +1359,27 @@ Poslední akce možná nebyla dokončena. Uložte svou práci pod novým názvem
         </message>
     </context>
     <context>
+        <name>GeneratorStart</name>
+        <message>
+            <source>Setpoint generator</source>
+            <translation>Generátor žádané hodnoty</translation>
+        </message>
+        <message>
+            <source>The generator will drive the valve's setpoint and the valve will move.
+Make sure the machine is safe to move. Start the generator?</source>
+            <translation>Generátor bude řídit žádanou hodnotu ventilu a ventil se bude pohybovat.
+Ujistěte se, že pohyb stroje je bezpečný. Spustit generátor?</translation>
+        </message>
+        <message>
+            <source>The valve does not follow its setpoint: {0}
+
+Enable it now (NMT start, control word 08h → 09h → 0Bh → 0Fh)?</source>
+            <translation>Ventil nesleduje svou žádanou hodnotu: {0}
+
+Uvolnit ho nyní (NMT start, řídicí slovo 08h → 09h → 0Bh → 0Fh)?</translation>
+        </message>
+    </context>
+    <context>
         <name>Help</name>
         <message>
             <source>Home page</source>
@@ -1932,8 +1957,8 @@ Ano načte a záznam zařadí do fronty; Ne nenačte nic.</translation>
             <translation>Režim: {0}</translation>
         </message>
         <message>
-            <source>Connected; the document and the valve are being compared</source>
-            <translation>Připojeno; dokument a ventil se porovnávají</translation>
+            <source>Connected, but the document and the valve do not agree yet: edits are not sent to the valve</source>
+            <translation>Připojeno, ale dokument a ventil se zatím neshodují: změny se do ventilu neposílají</translation>
         </message>
         <message>
             <source>Expert</source>
@@ -2473,6 +2498,10 @@ Ano načte a záznam zařadí do fronty; Ne nenačte nic.</translation>
     <context>
         <name>ReportPage</name>
         <message>
+            <source>Acceptance profile</source>
+            <translation>Přejímací profil</translation>
+        </message>
+        <message>
             <source>steps of %1 %, a sine sweep of ±%2 % and a triangle over the whole range, about %3 s</source>
             <translation>skoky %1 %, rozmítaný sinus ±%2 % a trojúhelník přes celý rozsah, asi %3 s</translation>
         </message>
@@ -2499,6 +2528,10 @@ Ano načte a záznam zařadí do fronty; Ne nenačte nic.</translation>
         <message>
             <source>Save PDF and CSV…</source>
             <translation>Uložit PDF a CSV…</translation>
+        </message>
+        <message>
+            <source>Browse…</source>
+            <translation>Procházet…</translation>
         </message>
         <message>
             <source>Figure</source>
@@ -2633,16 +2666,6 @@ Ano načte a záznam zařadí do fronty; Ne nenačte nic.</translation>
             <translation>Osciloskop potřebuje připojený ventil: přejděte do režimu online (Komunikace → Režim online).</translation>
         </message>
         <message>
-            <source>Setpoint generator</source>
-            <translation>Generátor žádané hodnoty</translation>
-        </message>
-        <message>
-            <source>The generator will drive the valve's setpoint and the valve will move.
-Make sure the machine is safe to move. Start the generator?</source>
-            <translation>Generátor bude řídit žádanou hodnotu ventilu a ventil se bude pohybovat.
-Ujistěte se, že pohyb stroje je bezpečný. Spustit generátor?</translation>
-        </message>
-        <message>
             <source>The link dropped: the setpoint generator has stopped.</source>
             <translation>Spojení se přerušilo: generátor žádané hodnoty se zastavil.</translation>
         </message>
@@ -2693,14 +2716,6 @@ Ujistěte se, že pohyb stroje je bezpečný. Spustit generátor?</translation>
         <message>
             <source>The valve does not follow its setpoint: {0}</source>
             <translation>Ventil nesleduje svou žádanou hodnotu: {0}</translation>
-        </message>
-        <message>
-            <source>The valve does not follow its setpoint: {0}
-
-Enable it now (NMT start, control word 08h → 09h → 0Bh → 0Fh)?</source>
-            <translation>Ventil nesleduje svou žádanou hodnotu: {0}
-
-Uvolnit ho nyní (NMT start, řídicí slovo 08h → 09h → 0Bh → 0Fh)?</translation>
         </message>
     </context>
     <context>

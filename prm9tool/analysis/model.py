@@ -113,23 +113,28 @@ def simulate_loop(
     step: float,
     duration_s: float,
     out_lo: float = -16384.0,
+    dt: float = CYCLE_S,
 ) -> np.ndarray:
-    """Closed-loop response to a setpoint step of ``step`` counts (the firmware's PIDT1)."""
-    a1, a2, a3 = model.poles()
+    """Closed-loop response to a setpoint step of ``step`` counts (the firmware's PIDT1).
+
+    ``dt`` is the firmware's cycle; a slow loop (seconds) may be simulated at a multiple of
+    it, with the same continuous gains.
+    """
+    a1, a2, a3 = model.poles(dt)
     g1, g2, g3 = model.gain * (1.0 - a1), 1.0 - a2, 1.0 - a3
     integrating = model.integrating
-    kp, ki = gains.kp, gains.ki * CYCLE_S
-    denom = gains.t1 + CYCLE_S
+    kp, ki = gains.kp, gains.ki * dt
+    denom = gains.t1 + dt
     kd, t1 = gains.kd / denom, gains.t1 / denom
-    n = round(duration_s / CYCLE_S)
-    delayed = [0.0] * (model.delay + 1)
+    n = round(duration_s / dt)
+    delayed = [0.0] * (round(model.delay * CYCLE_S / dt) + 1)
     out = np.empty(n)
     s1 = s2 = s3 = y = integ = deriv = prev = 0.0
     for k in range(n):
         s1 = a1 * s1 + g1 * delayed[k % len(delayed)]
         s2 = a2 * s2 + g2 * s1
         s3 = a3 * s3 + g3 * s2
-        y = y + CYCLE_S * s3 if integrating else s3
+        y = y + dt * s3 if integrating else s3
         e = step - y
         integ = min(max(integ + ki * e, out_lo), 16384.0)
         deriv = t1 * deriv + kd * (e - prev)
@@ -139,9 +144,9 @@ def simulate_loop(
     return out
 
 
-def loop_figures(response: np.ndarray, step: float) -> tuple[float, float]:
+def loop_figures(response: np.ndarray, step: float, dt: float = CYCLE_S) -> tuple[float, float]:
     """Overshoot (% of the step) and settling time (s, ±2 %; inf if not settled)."""
-    t = np.arange(len(response) + 1) * CYCLE_S
+    t = np.arange(len(response) + 1) * dt
     y = np.concatenate([[0.0], response])
     reference = np.concatenate([[0.0], np.full(len(response), step)])
     figures = step_figures(t, y, reference)
@@ -177,6 +182,7 @@ def design(
     quantization the model lacks). The derivative lag ``t1`` stays as given.
     """
     duration = max(3.0 * targets.settling_s, 0.03)
+    dt = CYCLE_S * max(1, round(duration / 0.15))  # at most ~750 steps per simulation
     allowed = targets.overshoot_pct * margin
     robust = model.worse()
     loop_gain = abs(model.gain) or 1.0
@@ -185,12 +191,12 @@ def design(
         for ki_ratio in (0.0, *np.geomspace(5.0, 1000.0, 12)):
             for td in (0.0, 2e-4, 5e-4, 1e-3):
                 gains = PidGains(float(kp), float(kp * ki_ratio), float(kp * td), t1)
-                over, settle = loop_figures(
-                    simulate_loop(model, gains, step, duration, out_lo), step
-                )
+                response = simulate_loop(model, gains, step, duration, out_lo, dt)
+                over, settle = loop_figures(response, step, dt)
                 if over > allowed or (best is not None and settle >= best.settling_s):
                     continue
-                r_over, _ = loop_figures(simulate_loop(robust, gains, step, duration, out_lo), step)
+                worse = simulate_loop(robust, gains, step, duration, out_lo, dt)
+                r_over, _ = loop_figures(worse, step, dt)
                 if r_over <= targets.overshoot_pct:
                     best = Design(gains, over, settle, settle <= targets.settling_s)
     if best is None:

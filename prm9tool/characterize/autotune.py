@@ -64,15 +64,20 @@ def model_tune(
     loop: str = "position",
     amplitude_pct: float = 50.0,
     rounds: int = 3,
+    limit_pct: float | None = None,
 ) -> AutotuneResult:
-    """Propose gains for ``loop`` (see the module docstring); the valve keeps its own gains."""
+    """Propose gains for ``loop`` (see the module docstring); the valve keeps its own gains.
+
+    ``limit_pct``: a step whose response leaves 0 ± that band stops the procedure
+    (LimitExceededError); default twice the amplitude plus 5 %.
+    """
     lp = LOOPS[loop]
     names = gain_names(lp)
     duration = max(3.0 * targets.settling_s, 0.06)
     two_coils = TypeKey.parse(rig.info.type_key).variant.coils is Coils.AB
     out_lo = -16384.0 if two_coils else 0.0
-    with preserved(rig, names, chain_changes(rig)) as saved:
-        before = _step(rig, lp, amplitude_pct, 0.0, duration, None, loop)
+    with preserved(rig, names, chain_changes(rig, loop)) as saved:
+        before = _step(rig, lp, amplitude_pct, 0.0, duration, limit_pct, loop)
         data = [_io(before, lp.output, lp.actual)]
         t1 = from_parameters(lp.prefix, saved).t1
         step = amplitude_pct / 100.0 * 16384.0
@@ -89,7 +94,7 @@ def model_tune(
             values = to_parameters(lp.prefix, chosen.gains)
             history.append(values)
             rig.write(values)
-            after = _step(rig, lp, amplitude_pct, 0.0, duration, None, loop)
+            after = _step(rig, lp, amplitude_pct, 0.0, duration, limit_pct, loop)
             if meets(after, targets):
                 break
             data.append(_io(after, lp.output, lp.actual))
@@ -121,7 +126,7 @@ def compare_steps(
 ) -> tuple[StepResult, StepResult]:
     """Measured steps with the present and with the ``proposed`` gains (then put back)."""
     lp = LOOPS[loop]
-    with preserved(rig, gain_names(lp), chain_changes(rig)):
+    with preserved(rig, gain_names(lp), chain_changes(rig, loop)):
         before = _step(rig, lp, amplitude_pct, 0.0, duration_s, None, loop)
         rig.write(proposed)
         after = _step(rig, lp, amplitude_pct, 0.0, duration_s, None, loop)

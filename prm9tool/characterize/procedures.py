@@ -70,6 +70,7 @@ def preserved(
     rig: Rig, mnemonics: Sequence[str], changes: dict[str, int]
 ) -> Iterator[dict[str, int]]:
     """Save ``mnemonics`` and ``changes``' keys, apply ``changes``; always restore and release."""
+    rig.ensure_active()
     names = list(dict.fromkeys([*mnemonics, *changes]))
     saved = rig.read(names)
     try:
@@ -80,10 +81,17 @@ def preserved(
         rig.write(saved)
 
 
-def chain_changes(rig: Rig) -> dict[str, int]:
-    """The transparent-chain values that differ from the valve's present ones."""
-    present = rig.read(list(TRANSPARENT))
-    return {k: v for k, v in TRANSPARENT.items() if present[k] != v}
+def chain_changes(rig: Rig, loop: str = "position") -> dict[str, int]:
+    """The transparent-chain values that differ from the valve's present ones.
+
+    For the process loop (E04) the deviation's gain and offset stay: they act inside it.
+    """
+    wanted = dict(TRANSPARENT)
+    if loop == "process":
+        for key in ("GAINSETPOS", "GAINSETNEG", "OFFSETPOS", "OFFSETNEG"):
+            del wanted[key]
+    present = rig.read(list(wanted))
+    return {k: v for k, v in wanted.items() if present[k] != v}
 
 
 @dataclass(frozen=True)
@@ -144,7 +152,7 @@ def step_test(
 ) -> StepResult:
     """Settle at ``start_pct``, step by ``amplitude_pct``, record ``duration_s``."""
     lp = LOOPS[loop]
-    with preserved(rig, [], chain_changes(rig)):
+    with preserved(rig, [], chain_changes(rig, loop)):
         return _step(rig, lp, amplitude_pct, start_pct, duration_s, limit_pct, loop)
 
 
@@ -159,7 +167,7 @@ def _step(
 ) -> StepResult:
     fs = rig.info.sample_rate_hz
     pre, n = int(0.02 * fs), int(duration * fs)
-    rig.play(np.full(int(0.1 * fs), start), [lp.setpoint])  # settle at the start
+    rig.play(np.full(int(max(0.1, duration) * fs), start), [lp.setpoint])  # settle first
     stimulus = np.concatenate([np.full(pre, start), np.full(n, start + amplitude)])
     band = limit if limit is not None else abs(amplitude) * 2.0 + 5.0
     rec = record(rig, stimulus, [lp.setpoint, lp.actual, lp.output], start, band)
@@ -192,7 +200,7 @@ def bode_test(
     lp = LOOPS[loop]
     fs = rig.info.sample_rate_hz
     sweep = centre_pct + amplitude_pct * log_chirp(duration_s, fs, f_min, f_max)
-    with preserved(rig, [], chain_changes(rig)):
+    with preserved(rig, [], chain_changes(rig, loop)):
         rig.play(np.full(int(0.05 * fs), centre_pct), [lp.setpoint])
         rec = record(rig, sweep, [lp.setpoint, lp.actual], centre_pct, 2.5 * amplitude_pct + 5.0)
     response = frequency_response(
@@ -223,6 +231,7 @@ def static_test(
     half = int(period_s * fs / 2)
     # one override value per millisecond: fine enough for a static test, 5× fewer writes
     rise = np.repeat(np.linspace(lo_pct, hi_pct, half // 5 + 1), 5)[:half]
+    rig.ensure_active()
     sweep = np.concatenate([rise, rise[::-1]])
     rig.play(np.full(int(0.2 * fs), lo_pct), [STATIC_KEYS[2]])
     try:
@@ -230,7 +239,7 @@ def static_test(
     finally:
         rig.release()
     channels = {k: raw[:, i] * BY_KEY[k].scale for i, k in enumerate(STATIC_KEYS)}
-    demand = sweep[: len(raw)]
+    demand = rig.last_demand[: len(raw)]
     rec = Record(np.arange(len(raw)) / fs, channels)
     figures = static_characteristic(demand, channels[STATIC_KEYS[2]])
     return StaticResult(rec, figures, demand, STATIC_KEYS[2])
@@ -264,7 +273,7 @@ def critical_gain_tune(
     """
     lp = LOOPS[loop]
     names = gain_names(lp)
-    with preserved(rig, names, chain_changes(rig)) as saved:
+    with preserved(rig, names, chain_changes(rig, loop)) as saved:
         present = from_parameters(lp.prefix, saved)
         param = lp.prefix + "KP"
         trials: list[tuple[float, float, float]] = []

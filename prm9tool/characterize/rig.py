@@ -10,6 +10,7 @@ link) at the rate its stream gives.
 from __future__ import annotations
 
 import threading
+import time
 from abc import ABC, abstractmethod
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
@@ -18,6 +19,7 @@ from typing import TYPE_CHECKING
 import numpy as np
 
 from prm9tool.catalogue import CATALOGUE
+from prm9tool.device.emulator.states import DeviceState, ValveStatus
 from prm9tool.errors import Prm9Error
 
 if TYPE_CHECKING:
@@ -54,6 +56,7 @@ class Rig(ABC):
 
     def __init__(self) -> None:
         self.stop = threading.Event()
+        self.last_demand = np.empty(0)  # the override in %, per sample of the last play()
 
     @abstractmethod
     def read(self, mnemonics: Sequence[str]) -> dict[str, int]:
@@ -75,6 +78,27 @@ class Rig(ABC):
     @abstractmethod
     def release(self) -> None:
         """Switch the override off (the valve follows its own setpoint input again)."""
+
+    @abstractmethod
+    def status(self) -> ValveStatus:
+        """The valve's state and errors."""
+
+    def ensure_active(self) -> None:
+        """ValveFaultError unless the valve follows its setpoint (DEVICE_MODE_ACTIVE, no error)."""
+        status = self.status()
+        if status.error_code:
+            raise ValveFaultError(
+                f"the valve reports error {status.error_code:#06x} ({status.error_text}); "
+                "nothing was tested"
+            )
+        if status.device_state is not DeviceState.DEVICE_MODE_ACTIVE:
+            waiting = status.device_state is DeviceState.INIT and status.nmt_state != "off"
+            hint = " (a -CA valve with CANopen on waits for its master to enable it)"
+            hint = hint if waiting else ""
+            raise ValveFaultError(
+                f"the valve does not follow its setpoint: device state "
+                f"{status.device_state.value}{hint}; nothing was tested"
+            )
 
     def check(self) -> None:
         """Raise :class:`Stopped` if a stop was requested."""
@@ -141,7 +165,12 @@ class EmulatorRig(Rig):
         finally:
             valve.capture_stop()
         self.valve_seconds += len(values) * valve.CYCLE_S
+        self.last_demand = np.asarray(setpoint_pct, dtype=float)
         return np.concatenate(blocks)[: len(values)]
+
+    def status(self) -> ValveStatus:
+        """The emulated valve's status."""
+        return self.valve.status()
 
     def _check_fault(self) -> None:
         status = self.valve.status()
@@ -181,6 +210,15 @@ class SessionRig(Rig):
         self.info = RigInfo(info.type_key, info.serial, info.firmware, link, float(rate_hz))
         self.rate_hz = rate_hz
         self.update = max(1, rate_hz // 1000)
+        self._wait_booted()
+
+    def _wait_booted(self, limit: int = 5000) -> None:
+        """A valve just powered up ignores its setpoint for ~2 s: ask until it has booted."""
+        for _ in range(limit):
+            if not self.session.status().booting:
+                return
+            time.sleep(0.001)
+        raise ValveFaultError("the valve did not finish booting")
 
     def read(self, mnemonics: Sequence[str]) -> dict[str, int]:
         """Raw values over the link."""
@@ -191,33 +229,41 @@ class SessionRig(Rig):
         self.session.write_many(dict(values))
 
     def play(self, setpoint_pct: np.ndarray, keys: Sequence[str]) -> np.ndarray:
-        """Write the stimulus at the link's pace while collecting the stream."""
+        """Write the stimulus at the link's pace while collecting the stream.
+
+        The stimulus is a function of the valve's time: each write sends the value for the
+        samples received so far, so a slow link writes less often but never stretches the
+        excitation. :attr:`last_demand` is the value in effect for each sample (±1 report).
+        """
         session = self.session
+        n = len(setpoint_pct)
         session.stream_start(list(keys), self.rate_hz)
         session.write_many({"SETPOVR": counts(float(setpoint_pct[0])), "SETPOVRON": 1})
         blocks: list[np.ndarray] = []
+        demand = np.empty(n)
         received = 0
         try:
-            for k in range(0, len(setpoint_pct), self.update):
+            while received < n:
                 self.check()
-                session.write("SETPOVR", counts(float(setpoint_pct[k])))
+                value = float(setpoint_pct[received])
+                session.write("SETPOVR", counts(value))
                 block = session.stream_read()
                 blocks.append(block)
-                received += len(block)
-            while received < len(setpoint_pct):
-                self.check()
-                session.write("SETPOVR", counts(float(setpoint_pct[-1])))
-                block = session.stream_read()
-                blocks.append(block)
+                demand[received : received + len(block)] = value
                 received += len(block)
         finally:
             session.stream_stop()
-        if session.status().error_code:
-            status = session.status()
+        status = session.status()
+        if status.error_code:
             raise ValveFaultError(
                 f"the valve reported error {status.error_code:#06x}: {status.error_text}"
             )
-        return np.concatenate(blocks)[: len(setpoint_pct)]
+        self.last_demand = demand
+        return np.concatenate(blocks)[:n]
+
+    def status(self) -> ValveStatus:
+        """Status over the link."""
+        return self.session.status()
 
     def release(self) -> None:
         """Override off."""

@@ -44,6 +44,9 @@ def run(args: argparse.Namespace) -> int:
     except CommunicationError as exc:
         print(f"prm9tool: {exc}", file=sys.stderr)
         return ExitCode.COMMUNICATION
+    except ValueError as exc:  # a record the analysis cannot use (no response at all)
+        print(f"prm9tool: the measurement cannot be analysed: {exc}", file=sys.stderr)
+        return ExitCode.OUT_OF_LIMITS
     finally:
         close()
     try:

@@ -9,8 +9,11 @@ No Qt.
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from dataclasses import dataclass
 from typing import TYPE_CHECKING
+
+import numpy as np
 
 from prm9tool.errors import ValueRangeError
 
@@ -106,6 +109,12 @@ class EmulatorControls:
             self.valve.inject(kind)
         else:
             self.valve.clear(kind)
+
+    def drive_setpoint(self, source: Callable[[np.ndarray], np.ndarray] | None) -> None:
+        """Run a setpoint waveform on the valve's own clock, exact to its 200 µs cycle:
+        ``source`` maps times (s since now) to SETPOVR raw values (None: stop). It acts while
+        the link has SETPOVRON = 1, as a value written over the link would."""
+        self.valve.drive_override(source)
 
     def pull_cable(self) -> None:
         """Pull the USB cable: the link dies, the valve runs on (its setpoint override drops

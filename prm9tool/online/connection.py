@@ -18,22 +18,26 @@ import threading
 import time
 from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING, Any, cast
 
 from PySide6.QtCore import QObject, Qt, Signal
 
 from prm9tool.errors import CommunicationError, Prm9Error
 from prm9tool.online.polling import Poller, Schedule
+from prm9tool.online.setpoint_driver import SetpointDriver, StreamClock
 from prm9tool.translate import error_text
 
 if TYPE_CHECKING:
+    from prm9tool.online.connection_protocol import ListedValves, ValveIdentity
     from prm9tool.online.recording import HistoryHook
+    from prm9tool.scope import GeneratorSettings  # not at run time: numpy, at start-up
 
 log = logging.getLogger(__name__)
 
 Opener = Callable[[object], Any]  # entry -> ValveSession
 Lister = Callable[[Sequence[str]], list[Any]]  # emulator specs -> [DeviceEntry]
 PROGRESS_PERIOD_S = 0.05
+OVERRIDE_OBJECTS = ("SETPOVR", "SETPOVRON")
 
 
 @dataclass
@@ -47,7 +51,7 @@ class _Job:
 
 
 class ValveConnection(QObject):
-    """Online/offline state and asynchronous operations on one valve (see gui_contracts.md)."""
+    """Online/offline state and asynchronous operations on one valve (docs/ARCHITECTURE.md)."""
 
     online_changed = Signal(bool)
     device_changed = Signal(object)  # DeviceInfo or None
@@ -87,10 +91,12 @@ class ValveConnection(QObject):
         self._cancel = threading.Event()
         self._session: Any = None  # touched by the worker thread only
         self._online = False
-        self._device: object | None = None
+        self._device: ValveIdentity | None = None
         self._busy = 0
         self._last_progress = 0.0
         self._poller = Poller()  # worker-side state of the periodic reads
+        self._clock = StreamClock()  # the valve's time from its stream (the generator's)
+        self._driver: SetpointDriver | None = None  # worker-side: the running generator
         self._stream_keys: list[str] = []  # GUI-side: keys of the running stream
         self._samples_lost = 0  # GUI-side: lost samples of the running stream
         self._posted.connect(self._on_posted, Qt.ConnectionType.QueuedConnection)
@@ -125,7 +131,7 @@ class ValveConnection(QObject):
         return self._online
 
     @property
-    def device(self) -> object | None:
+    def device(self) -> ValveIdentity | None:
         """The DeviceInfo of the connected valve, or None."""
         return self._device
 
@@ -154,7 +160,7 @@ class ValveConnection(QObject):
         return self._lister(emulators)
 
     def list_devices_async(
-        self, emulators: Sequence[str], deliver: Callable[[object], None]
+        self, emulators: Sequence[str], deliver: Callable[[ListedValves], None]
     ) -> None:
         """:meth:`list_devices` in a thread of its own; ``deliver(entries)`` — or
         ``deliver(exception)`` if listing failed — runs on the GUI thread."""
@@ -162,7 +168,7 @@ class ValveConnection(QObject):
 
         def run() -> None:
             try:
-                found: object = self._lister(specs)
+                found: ListedValves = self._lister(specs)
             except Exception as exc:  # e.g. a broken USB stack: the caller says so
                 found = exc
             # RuntimeError: the connection was deleted meanwhile, nobody is waiting
@@ -281,12 +287,31 @@ class ValveConnection(QObject):
     def start_stream(self, keys: Sequence[str], rate_hz: int) -> None:
         """Stream up to three measuring points; samples arrive as ``samples_received``."""
         names = list(keys)
-        run = lambda s: self._poller.start_stream(s, names, rate_hz)  # noqa: E731
+
+        def run(session: Any) -> list[str]:
+            started = self._poller.start_stream(session, names, rate_hz)
+            self._clock.restart(rate_hz)
+            return started
+
         self._submit(_Job("stream_start", run, self._on_stream_started, False))
 
     def stop_stream(self) -> None:
         """Stop the stream (``stream_stopped`` follows)."""
         self._submit(_Job("stream_stop", self._poller.stop_stream, self._on_stream_stopped, False))
+
+    def start_generator(self, settings: GeneratorSettings) -> None:
+        """Run the setpoint generator's waveform on the valve's SETPOVR, off the GUI thread
+        and on the valve's time base (:mod:`prm9tool.online.setpoint_driver`); it switches
+        the override on. A refused write arrives as ``failed`` and ``write_failed``."""
+        refused = lambda: self.write_failed.emit(list(OVERRIDE_OBJECTS))  # noqa: E731
+        run = lambda s: self._start_driver(s, settings)  # noqa: E731
+        self._submit(_Job("generator", run, None, False, refused))
+
+    def stop_generator(self) -> None:
+        """End the waveform and switch the override off (SETPOVRON = 0)."""
+        refused = lambda: self.write_failed.emit(["SETPOVRON"])  # noqa: E731
+        run = lambda s: self._stop_driver(s, switch_off=True)  # noqa: E731
+        self._submit(_Job("generator_stop", run, None, False, refused))
 
     def watch_signals(self, keys: Sequence[str]) -> None:
         """Measuring points whose values ``signal_values_changed`` carries (≈ 4 Hz)."""
@@ -343,7 +368,7 @@ class ValveConnection(QObject):
     def _on_opened(self, info: object) -> None:
         self._set_busy(-1)
         self._online = True
-        self._device = info
+        self._device = cast("ValveIdentity", info)  # what the session's identify() returned
         self.device_changed.emit(info)
         self.online_changed.emit(True)
 
@@ -464,7 +489,31 @@ class ValveConnection(QObject):
         except Exception:  # a bug must not pass silently
             log.exception("after opening the session")
 
+    def _start_driver(self, session: Any, settings: GeneratorSettings) -> None:
+        self._stop_driver(session, switch_off=False)
+        driver = SetpointDriver(session, settings, self._on_driver_refused, self._clock)
+        driver.start()
+        self._driver = driver
+
+    def _stop_driver(self, session: Any, switch_off: bool) -> None:
+        driver, self._driver = self._driver, None
+        if driver is not None:
+            driver.stop(switch_off)
+        elif switch_off and session is not None:
+            session.write("SETPOVRON", 0)
+
+    def _on_driver_refused(self, mnemonic: str, exc: Prm9Error) -> None:
+        """The driver's thread: the valve refused one of its writes; the driver has ended."""
+        text = error_text(exc)
+
+        def report() -> None:
+            self.failed.emit(text)
+            self.write_failed.emit([mnemonic])
+
+        self._post(report)
+
     def _close(self) -> None:
+        self._stop_driver(None, switch_off=False)  # the link may be gone: nothing to write
         session, self._session = self._session, None
         self._poller.forget_streams()
         if session is not None:
@@ -484,6 +533,7 @@ class ValveConnection(QObject):
         result = self._poller.poll(self._session, status, signals, stream)
         if result.samples is not None:
             samples = result.samples
+            self._clock.samples_arrived(len(samples))
             self._post(lambda: self.samples_received.emit(samples))
         if result.samples_lost is not None:
             lost = result.samples_lost

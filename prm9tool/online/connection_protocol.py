@@ -1,4 +1,4 @@
-"""What the views need of the valve connection, as typing protocols (model layer, QtCore only).
+"""What the views need of the valve connection, as typing protocols (online layer, QtCore only).
 
 The views get the connection injected (``prm9tool.online.connection.ValveConnection`` in the program,
 small fakes in the tests) and must not import the device layer. These protocols name exactly
@@ -6,14 +6,137 @@ the signals and methods each view uses, so mypy checks the views against them an
 ``ValveConnection`` provides them (see the ``TYPE_CHECKING`` block at the end). Signals are
 declared as read-only ``SignalInstance`` properties: a ``Signal`` class attribute of a QObject
 satisfies them.
+
+The records the connection's signals carry (who the valve is, its status, an upload's outcome,
+a listed valve) come from the device layer; the views read them through the record protocols
+below, which the same block checks against the device layer's dataclasses.
 """
 
 from __future__ import annotations
 
-from collections.abc import Sequence
-from typing import TYPE_CHECKING, Protocol
+from collections.abc import Mapping, Sequence
+from typing import TYPE_CHECKING, Protocol, runtime_checkable
 
 from PySide6.QtCore import SignalInstance
+
+if TYPE_CHECKING:
+    from prm9tool.scope import GeneratorSettings
+
+
+class ValveIdentity(Protocol):
+    """Who the connected valve is (``DeviceInfo`` of the device layer)."""
+
+    @property
+    def type_key(self) -> str:
+        """The valve's type key as it reports it."""
+
+    @property
+    def serial(self) -> int:
+        """The valve's serial number."""
+
+    @property
+    def firmware(self) -> str:
+        """The firmware version, e.g. ``V0.35.16``."""
+
+    @property
+    def device_id(self) -> str:
+        """What identifies the valve for going online again (e.g. ``usb:…``, ``emulator:…``)."""
+
+
+class ValveListing(ValveIdentity, Protocol):
+    """A valve that can be opened, as the HID configuration lists it (``DeviceEntry``)."""
+
+    @property
+    def kind(self) -> str:
+        """``usb`` or ``emulator``."""
+
+    @property
+    def description(self) -> str:
+        """A line about the valve in English (the device layer's words)."""
+
+
+ListedValves = list[ValveListing] | Exception  # what listing the valves delivers: them, or why not
+
+
+class LedView(Protocol):
+    """One of the valve's three LEDs as it looks (``LedState``)."""
+
+    @property
+    def color(self) -> str:
+        """``white``, ``green``, ``orange``, ``red``, ``blue``, ``magenta`` or ``off``."""
+
+    @property
+    def pattern(self) -> str:
+        """``on``, ``1Hz``, ``2Hz``, ``2.5Hz``, ``single_flash`` … or ``off``."""
+
+    @property
+    def lit(self) -> bool:
+        """Whether the LED is lit at this moment of its pattern."""
+
+
+class StatusView(Protocol):
+    """A snapshot of what the valve shows outside (``ValveStatus``)."""
+
+    @property
+    def device_state(self) -> str:
+        """The CiA 408 device state, e.g. ``ACTIVE``."""
+
+    @property
+    def nmt_state(self) -> str:
+        """The CANopen NMT state, or ``off`` without a CANopen interface."""
+
+    @property
+    def error_code(self) -> int:
+        """The EMCY code of the most severe active error (0: none)."""
+
+    @property
+    def error_text(self) -> str:
+        """That error's (or the warning's) description in English; "" without either."""
+
+    @property
+    def warning(self) -> bool:
+        """The temperature warning is on."""
+
+    @property
+    def active_errors(self) -> Sequence[int]:
+        """EMCY codes of every active error."""
+
+    @property
+    def temperature_c(self) -> float:
+        """The electronics' temperature in °C."""
+
+    @property
+    def supply_v(self) -> float:
+        """The supply voltage in V."""
+
+    @property
+    def leds(self) -> Sequence[LedView]:
+        """The three LEDs: power, error, CAN."""
+
+
+@runtime_checkable
+class UploadOutcome(Protocol):
+    """How an upload ended (``UploadResult``): ``operation_finished("upload", outcome)``."""
+
+    @property
+    def written(self) -> int:
+        """Values written."""
+
+    @property
+    def stored(self) -> bool:
+        """The valve stored them (the upload succeeded)."""
+
+    @property
+    def mismatches(self) -> Mapping[str, tuple[object, object]]:
+        """``{mnemonic: (written, read back)}`` of the values the verify step found wrong."""
+
+    @property
+    def failed_step(self) -> str | None:
+        """``write``, ``verify``, ``store`` or None."""
+
+    @property
+    def failure(self) -> str | None:
+        """Why the step failed when ``mismatches`` do not say it (e.g. a refused store)."""
 
 
 class LinkState(Protocol):
@@ -60,6 +183,22 @@ class DiagramConnection(ParameterConnection, Protocol):
         """Choose the measuring points ``signal_values_changed`` carries."""
 
 
+class StatusConnection(LinkState, Protocol):
+    """Who the valve is and its live status (the valve-status window)."""
+
+    @property
+    def device_changed(self) -> SignalInstance:
+        """Emitted with the :class:`ValveIdentity` of a valve come online, None when offline."""
+
+    @property
+    def status_changed(self) -> SignalInstance:
+        """Emitted (about once a second online) with a :class:`StatusView`."""
+
+    @property
+    def device(self) -> ValveIdentity | None:
+        """The connected valve, or None."""
+
+
 class ScopeConnection(LinkState, Protocol):
     """Streaming measuring points and writing the setpoint override (the oscilloscope)."""
 
@@ -93,15 +232,61 @@ class ScopeConnection(LinkState, Protocol):
     def stop_stream(self) -> None:
         """Stop the running stream."""
 
+    @property
+    def samples_lost(self) -> int:
+        """Samples the running stream lost on the link since it started."""
+
     def write(self, mnemonic: str, raw: int | str) -> None:
         """Write one value to the valve (asynchronous)."""
 
+    def start_generator(self, settings: GeneratorSettings) -> None:
+        """Run a setpoint waveform on the valve's override, on the valve's time base."""
 
-if TYPE_CHECKING:  # mypy proves that the real connection fits every protocol above
+    def stop_generator(self) -> None:
+        """End the waveform and switch the override off."""
+
+
+class StepSimulation(Protocol):
+    """The controller dialogs' step-response simulator (``prm9tool.online.tuning.StepSimulator``)."""
+
+    @property
+    def response_ready(self) -> SignalInstance:
+        """Emitted with the ``StepResponse`` of the newest request."""
+
+    @property
+    def failed(self) -> SignalInstance:
+        """Emitted with a message when a simulation failed."""
+
+    def request(self, controller_values: Mapping[str, int]) -> None:
+        """Simulate with ``controller_values`` (asynchronous; the newest request wins)."""
+
+    def stop(self) -> None:
+        """Drop pending requests and wait for a running simulation to end."""
+
+
+if TYPE_CHECKING:  # mypy proves that the real connection and records fit the protocols above
+    from prm9tool.device.emulator.states import ValveStatus
+    from prm9tool.device.factory import DeviceEntry
+    from prm9tool.device.session import DeviceInfo, UploadResult
     from prm9tool.online.connection import ValveConnection
+    from prm9tool.online.tuning import StepSimulator
 
     def _conforms(connection: ValveConnection) -> None:
         diagram: DiagramConnection = connection
         parameters: ParameterConnection = connection
         scope: ScopeConnection = connection
-        del diagram, parameters, scope
+        status: StatusConnection = connection
+        del diagram, parameters, scope, status
+
+    def _records(
+        info: DeviceInfo, entry: DeviceEntry, status: ValveStatus, upload: UploadResult
+    ) -> None:
+        identity: ValveIdentity = info
+        listing: ValveListing = entry
+        snapshot: StatusView = status
+        outcome: UploadOutcome = upload
+        del identity, listing, snapshot, outcome
+
+    def _simulates(simulator: StepSimulator) -> None:
+        simulation: StepSimulation = simulator
+        del simulation

@@ -1,4 +1,4 @@
-"""Simulated closed-loop step responses for tuning the PIDT1 controllers (model layer, QtCore).
+"""Simulated closed-loop step responses for tuning the PIDT1 controllers (online layer, QtCore).
 
 The controller dialogs show how the loop answers a setpoint step with the gains being tried.
 The answer comes from the emulator's firmware (the same 200 µs control loop and plant the

@@ -16,6 +16,8 @@ from prm9tool.catalogue import CATALOGUE
 from prm9tool.errors import ValueRangeError
 from prm9tool.i18n import format_significant
 
+EDGE_TOLERANCE_S = 1e-9  # an edge on the cycle grid falls on its cycle despite rounding
+
 
 class Waveform(StrEnum):
     """Generator waveforms."""
@@ -67,19 +69,25 @@ class GeneratorSettings:
             )
 
     def value_at(self, t: np.ndarray | float) -> np.ndarray:
-        """Setpoint in % at time(s) ``t`` seconds after the generator started."""
+        """Setpoint in % at time(s) ``t`` seconds after the generator started.
+
+        An edge of the step or square wave belongs to the half period it starts: at
+        ``t = k · period / 2`` exactly (to 1 ns, so that sampling on a cycle grid such as
+        2500 × 200 µs = 0.5 s is not thrown a cycle late by rounding).
+        """
         phase = np.asarray(t, dtype=np.float64) / self.period
         if self.waveform is Waveform.SINE:
             return self.offset + self.amplitude * np.sin(2 * np.pi * phase)
-        if self.waveform is Waveform.SQUARE:
-            high = np.mod(phase, 1.0) >= 0.5
-        else:
-            high = phase >= 0.5
+        nudged = phase + EDGE_TOLERANCE_S / self.period
+        high = np.mod(nudged, 1.0) >= 0.5 if self.waveform is Waveform.SQUARE else nudged >= 0.5
         return self.offset + self.amplitude * high
 
     def raw_at(self, t: float) -> int:
         """The SETPOVR raw value at time ``t`` (clamped to the object's range)."""
+        return int(self.raw_values(np.asarray([t], dtype=np.float64))[0])
+
+    def raw_values(self, t: np.ndarray) -> np.ndarray:
+        """SETPOVR raw values (int64, clamped to the object's range) at the times ``t``."""
         param = CATALOGUE["SETPOVR"]
-        raw = param.to_raw(float(self.value_at(t)))
-        assert isinstance(raw, int)
-        return min(param.raw_max, max(param.raw_min, raw))
+        raw = np.rint(self.value_at(t) / param.scale).astype(np.int64)
+        return np.clip(raw, param.raw_min, param.raw_max)

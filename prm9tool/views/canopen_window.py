@@ -44,6 +44,7 @@ from prm9tool.online.sync import ValveSync
 from prm9tool.translate import error_text
 from prm9tool.views.canopen_tables import SwitchTables
 from prm9tool.views.diagram.colours import toned_style
+from prm9tool.views.diagram.dialogs.fields import not_on_enter
 
 SETTINGS = ("NODEID", "BITRATE", "CANTERM")
 SWITCHES = ("SWBAUD", "SWNODE")
@@ -91,6 +92,7 @@ class CanopenWindow(QDialog):
         self._tone()
         buttons = QDialogButtonBox(QDialogButtonBox.StandardButton.Close)
         buttons.rejected.connect(self.close)
+        not_on_enter(buttons)
         root = QVBoxLayout(self)
         for widget in (self.intro, self.state_label):
             root.addWidget(widget)
@@ -189,7 +191,7 @@ class CanopenWindow(QDialog):
         return self._access.why_locked(CATALOGUE[mnemonic])
 
     def _show_state(self) -> None:
-        online = bool(getattr(self._connection, "is_online", False))
+        online = self._online()
         if not self._doc.variant.canopen:
             state = self.tr("This valve type has no CANopen interface (no -CA in the type key).")
         elif self.switches is None and not online:
@@ -308,7 +310,7 @@ class CanopenWindow(QDialog):
         )
 
     def _online(self) -> bool:
-        return bool(getattr(self._connection, "is_online", False))
+        return self._connection is not None and self._connection.is_online
 
     def _on_terminator_toggled(self, checked: bool) -> None:
         self.apply("CANTERM", 1 if checked else 0)

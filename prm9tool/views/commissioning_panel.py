@@ -74,10 +74,9 @@ class CommissioningPanel(QGroupBox):
         self._status = status
         online = status is not None and self._control.connection.is_online
         nmt = str(getattr(status, "nmt_state", "off")) if status is not None else "off"
-        for button in self.buttons.values():
-            button.setEnabled(online)
-        for name in ("nmt_start", "nmt_preop", "nmt_stop"):
-            self.buttons[name].setEnabled(online and nmt not in ("off", "initialising"))
+        canopen = online and nmt not in ("off", "")  # off: analog only, it enables itself
+        for name, button in self.buttons.items():
+            button.setEnabled(canopen and not (name.startswith("nmt") and nmt == "initialising"))
         reason = status_blocker(status) if online else Blocker.OFFLINE
         if reason is None:
             self.reason.setText(self.tr("The valve follows its setpoint (DEVICE_MODE_ACTIVE)."))

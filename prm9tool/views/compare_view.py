@@ -70,8 +70,9 @@ class CompareTableModel(QAbstractTableModel):
             return None
         if section < FIRST_VALUE:
             return [self.tr("Mnemonic"), self.tr("Description")][section]
-        shown = [*self.comparison.sides, self.comparison.reference][section - FIRST_VALUE]
-        return shown.label if shown is not None else ""
+        side = section - FIRST_VALUE
+        entry = [*self.comparison.sides, self.comparison.reference][side]
+        return entry.label if entry is not None else ""
 
     def _side(self, column: int) -> int:
         side = column - FIRST_VALUE

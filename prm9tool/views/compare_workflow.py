@@ -19,7 +19,6 @@ from PySide6.QtWidgets import QDialog, QFileDialog, QWidget
 from prm9tool.catalogue.typekey import TypeKey
 from prm9tool.compare.model import Comparison, Side
 from prm9tool.errors import FileFormatError
-from prm9tool.files.prmfile import read_file
 from prm9tool.model.access import AccessModel
 from prm9tool.model.document import ParameterDocument, Raw
 from prm9tool.model.undo import DocumentUndo
@@ -28,6 +27,7 @@ from prm9tool.online.sync import ValveSync
 from prm9tool.translate import error_text
 from prm9tool.views import prompts
 from prm9tool.views.compare_view import BOTH, CompareDialog
+from prm9tool.views.file_reader import read_in_background
 from prm9tool.views.valve_workflow import ValveWorkflow
 
 COMPARE_VIEW = "compare_view"  # the download behind Valve → Compare with valve
@@ -65,8 +65,8 @@ class CompareWorkflow(QObject):
 
     def _valve_side(self, values: Mapping[str, Raw]) -> Side:
         info = self._connection.device
-        key = TypeKey.parse(str(getattr(info, "type_key", self._doc.type_key)))
-        label = self.tr("Valve {0}").format(getattr(info, "serial", ""))
+        key = self._doc.type_key if info is None else TypeKey.parse(info.type_key)
+        label = self.tr("Valve {0}").format("" if info is None else info.serial)
         return Side(label, key, dict(values))
 
     def _factory(self, key: TypeKey) -> Side:
@@ -89,11 +89,13 @@ class CompareWorkflow(QObject):
             if not name:
                 return
             path = Path(name)
-        try:
-            contents = read_file(path)
-        except FileFormatError as exc:
+        contents = read_in_background(self._window, path)  # the window keeps working
+        if contents is None:
+            return  # the user cancelled the reading
+        if isinstance(contents, FileFormatError):
             prompts.inform(self._window, prompts.Icon.Warning, self.tr("Compare with file"),
-                           self.tr("{0} cannot be compared.").format(path.name), error_text(exc))  # fmt: skip
+                           self.tr("{0} cannot be compared.").format(path.name),
+                           error_text(contents))  # fmt: skip
             return
         file_side = Side(path.name, contents.type_key, contents.values)
         comparison = Comparison((self._document(), file_side), self._factory(self._doc.type_key))
@@ -161,7 +163,8 @@ class CompareWorkflow(QObject):
         hook = self._connection.history
         if hook is None:
             return None
-        serial = getattr(self._connection.device, "serial", None)
+        info = self._connection.device
+        serial = None if info is None else info.serial
         window = HistoryWindow(hook.recorder, serial, self.restore_into_document,
                                self.restore_to_valve, self._window)  # fmt: skip
         window.database_changed.connect(self._connection.set_recorder)
@@ -181,10 +184,8 @@ class CompareWorkflow(QObject):
 
     def restore_to_valve(self, serial: int, values: Mapping[str, Raw]) -> bool:
         """Upload a record's set into the valve it came from (False: that valve is not online)."""
-        if (
-            getattr(self._connection.device, "serial", None) != serial
-            or not self._connection.is_online
-        ):
+        info = self._connection.device
+        if info is None or info.serial != serial or not self._connection.is_online:
             return False
         self._valve.upload_values(values)
         return True

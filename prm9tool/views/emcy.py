@@ -4,6 +4,7 @@ from __future__ import annotations
 
 from PySide6.QtCore import QCoreApplication
 
+from prm9tool.online.connection_protocol import StatusView
 from prm9tool.online.valve_control import blocker_summary, status_blocker
 
 translate = QCoreApplication.translate
@@ -27,16 +28,16 @@ def emcy_text(code: int, fallback: str = "") -> str:
     return texts.get(code) or fallback or translate("Emcy", "Unknown error")
 
 
-def status_summary(status: object | None) -> str:
+def status_summary(status: StatusView | None) -> str:
     """``ok``, the most severe active error, or why the valve does not follow its setpoint
     (e.g. waiting for a CANopen master), for the status bar (manual §8.8)."""
     if status is None:
         return ""
-    code = int(getattr(status, "error_code", 0) or 0)
+    code = status.error_code
     if code:
-        return f"0x{code:04X} {emcy_text(code, str(getattr(status, 'error_text', '')))}"
-    if getattr(status, "warning", False):
-        return emcy_text(0, str(getattr(status, "error_text", "")))
+        return f"0x{code:04X} {emcy_text(code, status.error_text)}"
+    if status.warning:
+        return emcy_text(0, status.error_text)
     reason = status_blocker(status)
     if reason is not None:
         return blocker_summary(reason)

@@ -155,7 +155,7 @@ class EmulatedValveDialog(QDialog):
             box.setRange(low, high)
             box.setDecimals(decimals)
             box.setKeyboardTracking(False)  # one change per value, not per keystroke
-            box.editingFinished.connect(lambda n=name, b=box: self._on_field_changed(n, b.value()))
+            box.valueChanged.connect(lambda value, n=name: self._on_field_changed(n, value))
             self.fields[name] = box
         self.switches = {name: QComboBox() for name in ("switch_baud", "switch_node")}
         for name, combo in self.switches.items():

@@ -2,12 +2,10 @@
 
 from __future__ import annotations
 
-import threading
 from pathlib import Path
-from typing import TYPE_CHECKING
 
-from PySide6.QtCore import QEventLoop, QObject, QSettings, Qt, Signal
-from PySide6.QtWidgets import QFileDialog, QMenu, QProgressDialog, QWidget
+from PySide6.QtCore import QObject, QSettings, Signal
+from PySide6.QtWidgets import QFileDialog, QMenu, QWidget
 
 from prm9tool.catalogue.typekey import TypeKey
 from prm9tool.errors import FileFormatError, FileProblem
@@ -15,13 +13,10 @@ from prm9tool.model.document import ParameterDocument
 from prm9tool.model.undo import DocumentUndo
 from prm9tool.translate import translated
 from prm9tool.views import prompts
-
-if TYPE_CHECKING:
-    from prm9tool.files.prmfile import PrmContents
+from prm9tool.views.file_reader import read_in_background
 
 MAX_RECENT = 8
 MAX_LISTED_PROBLEMS = 200  # a message box lists at most this many, then says how many more
-BUSY_DIALOG_AFTER_MS = 500  # reading a file that takes longer shows a dialog with Cancel
 RECENT_KEY = "files/recent"
 FOLDER_KEY = "files/last_folder"
 
@@ -148,7 +143,7 @@ class FileWorkflow(QObject):
 
         self._reading = path
         try:
-            contents = self._read_off_the_gui_thread(path)
+            contents = read_in_background(self._window, path)
         finally:
             self._reading = None
         if contents is None:
@@ -171,46 +166,6 @@ class FileWorkflow(QObject):
                 self._problem_lines(path.name, contents.warnings),
             )
         return True
-
-    def _read_off_the_gui_thread(self, path: Path) -> PrmContents | FileFormatError | None:
-        """Read and check ``path`` on a worker thread while the window keeps working.
-
-        A file may be up to 1 MiB of lines to check; meanwhile the event loop runs (the window
-        repaints) and, after half a second, a window-modal dialog offers Cancel (None: the
-        result is then dropped). The document is built from the result on the GUI thread.
-        """
-        from prm9tool.files import prmfile
-
-        outcome: list[PrmContents | BaseException] = []
-        finished = _Finished()
-        loop = QEventLoop()
-        finished.done.connect(loop.quit)  # queued: emitted on the worker thread
-
-        def read() -> None:
-            try:
-                outcome.append(prmfile.read_file(path))
-            except BaseException as exc:  # handed to the GUI thread, never lost in a thread
-                outcome.append(exc)
-            finally:
-                finished.done.emit()
-
-        busy = QProgressDialog(
-            self.tr("Reading “{0}”…").format(path.name), self.tr("Cancel"), 0, 0, self._window
-        )
-        busy.setWindowModality(Qt.WindowModality.WindowModal)
-        busy.setMinimumDuration(BUSY_DIALOG_AFTER_MS)
-        busy.canceled.connect(loop.quit)
-        threading.Thread(target=read, name=f"read {path.name}", daemon=True).start()
-        loop.exec()
-        busy.canceled.disconnect(loop.quit)
-        busy.reset()
-        busy.deleteLater()
-        if not outcome:
-            return None
-        result = outcome[0]
-        if isinstance(result, BaseException) and not isinstance(result, FileFormatError):
-            raise result  # read_file raises nothing else: a bug, not to be hidden
-        return result
 
     def save(self) -> bool:
         """Save to the current file, or ask for a name if there is none."""
@@ -283,9 +238,3 @@ class FileWorkflow(QObject):
             prompts.Button.Ok,
             details=self._problem_lines(exc.path, problems) if len(problems) > 1 else "",
         )
-
-
-class _Finished(QObject):
-    """Tells the GUI thread that a worker thread is done."""
-
-    done = Signal()

@@ -27,6 +27,7 @@ from PySide6.QtWidgets import (
 from shiboken6 import isValid
 
 from prm9tool.catalogue.typekey import DEFAULT_EMULATOR_TYPE_KEY, TypeKey
+from prm9tool.online.connection_protocol import ListedValves, ValveListing
 from prm9tool.translate import error_text
 from prm9tool.views.valve_selection import ValveSelectionDialog
 
@@ -37,7 +38,7 @@ DEFAULT_EMULATOR = f"{DEFAULT_EMULATOR_TYPE_KEY}:{DEFAULT_EMULATOR_SERIAL}"
 # (emulator specs, deliver): lists the valves off the GUI thread — identifying a USB valve that
 # does not answer takes up to 0.6 s — and calls deliver(entries or the exception) on the GUI
 # thread (ValveConnection.list_devices_async)
-Lister = Callable[[Sequence[str], Callable[[object], None]], None]
+Lister = Callable[[Sequence[str], Callable[[ListedValves], None]], None]
 
 
 def saved_emulators(settings: QSettings) -> list[str]:
@@ -52,16 +53,9 @@ def saved_emulators(settings: QSettings) -> list[str]:
     return [str(v) for v in value]
 
 
-def describe(entry: object) -> list[str]:
+def describe(entry: ValveListing) -> list[str]:
     """Table cells for a device entry: kind, type key, serial, firmware, description."""
-    kind = str(getattr(entry, "kind", ""))
-    return [
-        kind,
-        str(getattr(entry, "type_key", "")),
-        str(getattr(entry, "serial", "")),
-        str(getattr(entry, "firmware", "")),
-        str(getattr(entry, "description", "")),
-    ]
+    return [entry.kind, entry.type_key, str(entry.serial), entry.firmware, entry.description]
 
 
 class EmulatorDialog(QDialog):
@@ -100,7 +94,7 @@ class HidConfigurationDialog(QDialog):
         super().__init__(parent)
         self._lister = lister
         self._settings = settings
-        self._entries: list[object] = []
+        self._entries: list[ValveListing] = []
         self._listing = 0  # number of the newest listing asked for (older answers are stale)
         self._select_last = False  # an emulated valve was just added: select it when listed
         self.table = QTableWidget(0, 5)
@@ -186,7 +180,7 @@ class HidConfigurationDialog(QDialog):
         self.info.setText(self.tr("Looking for valves…"))
         self._lister(saved_emulators(self._settings), lambda found: self._listed(number, found))
 
-    def _listed(self, number: int, found: object) -> None:
+    def _listed(self, number: int, found: ListedValves) -> None:
         if not isValid(self) or number != self._listing:
             return  # the dialog is gone, or a newer listing was asked for
         self._listing = 0
@@ -195,7 +189,7 @@ class HidConfigurationDialog(QDialog):
             self._entries = []
             self.info.setText(self.tr("Listing the valves failed: {0}").format(error_text(found)))
         else:
-            self._entries = list(found)  # type: ignore[call-overload]
+            self._entries = list(found)
             self._set_info()
         self.table.setRowCount(len(self._entries))
         selected = str(self._settings.value(SELECTED_KEY, ""))
@@ -206,7 +200,7 @@ class HidConfigurationDialog(QDialog):
             cells[0] = self._kind_text(cells[0])
             for column, cell in enumerate(cells):
                 self.table.setItem(row, column, QTableWidgetItem(cell))
-            if str(getattr(entry, "device_id", "")) == selected:
+            if entry.device_id == selected:
                 self.table.selectRow(row)
         if self._select_last and self._entries:
             self.table.selectRow(len(self._entries) - 1)
@@ -218,7 +212,7 @@ class HidConfigurationDialog(QDialog):
     def _kind_text(self, kind: str) -> str:
         return self.tr("Emulated valve") if kind == "emulator" else self.tr("USB")
 
-    def selected_entry(self) -> object | None:
+    def selected_entry(self) -> ValveListing | None:
         """The chosen device entry (None if the list is empty)."""
         rows = self.table.selectionModel().selectedRows()
         return self._entries[rows[0].row()] if rows else None
@@ -226,14 +220,14 @@ class HidConfigurationDialog(QDialog):
     def _on_selection_changed(self) -> None:
         entry = self.selected_entry()
         self.buttons.button(QDialogButtonBox.StandardButton.Ok).setEnabled(entry is not None)
-        self.remove_button.setEnabled(getattr(entry, "kind", "") == "emulator")
+        self.remove_button.setEnabled(entry is not None and entry.kind == "emulator")
 
     def accept(self) -> None:
         """Remember the choice."""
         entry = self.selected_entry()
         if entry is None:
             return
-        self._settings.setValue(SELECTED_KEY, str(getattr(entry, "device_id", "")))
+        self._settings.setValue(SELECTED_KEY, entry.device_id)
         super().accept()
 
     def _on_add_clicked(self) -> None:
@@ -250,7 +244,9 @@ class HidConfigurationDialog(QDialog):
 
     def _on_remove_clicked(self) -> None:
         entry = self.selected_entry()
-        spec = f"{getattr(entry, 'type_key', '')}:{getattr(entry, 'serial', '')}"
+        if entry is None:
+            return
+        spec = f"{entry.type_key}:{entry.serial}"
         emulators = [e for e in saved_emulators(self._settings) if e != spec]
         self._settings.setValue(EMULATORS_KEY, emulators)
         self.refresh()

@@ -42,8 +42,8 @@ class RecordActions(QObject):
         info = w.connection.device
         header = RecordHeader(
             access_level=level,
-            serial=str(getattr(info, "serial", "")) if info else "",
-            firmware=str(getattr(info, "firmware", "")) if info else "",
+            serial=str(info.serial) if info else "",
+            firmware=info.firmware if info else "",
             date=datetime.now(),
         )
         diagram = getattr(w.views.get("diagram"), "render_picture", None)

@@ -6,7 +6,7 @@
 from PySide6 import QtCore
 
 qt_resource_data = b"\
-\x00\x00\x137\
+\x00\x00\x13\xd9\
 <\
 !DOCTYPE html>\x0a<\
 html lang=\x22cs\x22>\x0a\
@@ -73,250 +73,260 @@ ov\xc3\xbd\x0akl\xc3\xad\xc4\x8d a n\xc3\
 \xa1zev souboru; <b\
 >*</b> ozna\xc4\x8duje\
  neulo\xc5\xbeen\xc3\xa9 zm\xc4\
-\x9bny.</p>\x0a<p>Hlav\
-n\xc3\xad plocha zobra\
-zuje jeden ze t\xc5\
-\x99\xc3\xad n\xc3\xa1hled\xc5\xaf: <\
-b>postupov\xc3\xbd dia\
-gram</b> (kliknu\
-t\xc3\xadm na blok\x0anas\
-tav\xc3\xadte jeho par\
-ametry, kliknut\xc3\
-\xadm na \xc4\x8derven\xc3\xbd \
-m\xc4\x9b\xc5\x99ic\xc3\xad bod je\
-j zobraz\xc3\xadte v o\
-sciloskopu),\x0a<b>\
-seznam parametr\xc5\
-\xaf</b> (dvojklike\
-m na \xc5\x99\xc3\xa1dek zm\xc4\
-\x9bn\xc3\xadte hodnotu; \
-hodnoty odli\xc5\xa1n\xc3\
-\xa9 od tov\xc3\xa1rn\xc3\xadho\
-\x0anastaven\xc3\xad jsou\
- zv\xc3\xbdrazn\xc4\x9bny; h\
-led\xc3\xa1n\xc3\xad a \xe2\x80\x9eJe\
-n zm\xc4\x9bn\xc4\x9bn\xc3\xa9\xe2\x80\x9c \
-seznam filtruj\xc3\xad\
-) a <b>oscilosko\
-p</b>\x0a(pouze v r\
-e\xc5\xbeimu online, n\
-ejv\xc3\xbd\xc5\xa1e t\xc5\x99i m\xc4\
-\x9b\xc5\x99ic\xc3\xad body).</\
-p>\x0a\x0a<h2>\xc3\x9arovn\xc4\x9b\
- opr\xc3\xa1vn\xc4\x9bn\xc3\xad</h\
-2>\x0a<p><b>Z\xc3\xa1klad\
-n\xc3\xad</b> \xc3\xbarove\xc5\x88\
- zobrazuje z\xc3\xa1kl\
-adn\xc3\xad nastaven\xc3\xad\
-; na z\xc3\xa1kladn\xc3\xad \
-\xc3\xbarovni se \xc4\x8dty\xc5\
-\x99i rampy\x0anastavu\
-j\xc3\xad spole\xc4\x8dn\xc4\x9b. \
-<b>Expertn\xc3\xad</b>\
- \xc3\xbarove\xc5\x88 p\xc5\x99id\xc3\
-\xa1v\xc3\xa1 regul\xc3\xa1tory\
-, linearizace a \
-nastaven\xc3\xad\x0aexter\
-n\xc3\xadho sn\xc3\xadma\xc4\x8de \
-a je chr\xc3\xa1n\xc4\x9bna \
-heslem. Heslo p\xc5\
-\x99i dod\xc3\xa1n\xc3\xad je <\
-code>expert</cod\
-e>; na expertn\xc3\xad\
-\x0a\xc3\xbarovni jej zm\xc4\
-\x9bn\xc3\xadte v menu N\xc3\
-\xa1hled \xe2\x86\x92 \xc3\x9arove\
-\xc5\x88 opr\xc3\xa1vn\xc4\x9bn\xc3\xad \
-\xe2\x86\x92 Zm\xc4\x9bnit hesl\
-o pro expertn\xc3\xad \
-\xc3\xbarove\xc5\x88.\x0aProgra\
-m ukl\xc3\xa1d\xc3\xa1 pouze\
- jeho osolen\xc3\xbd h\
-ash.</p>\x0a<p>\xc3\x9aro\
-vn\xc4\x9b opr\xc3\xa1vn\xc4\x9bn\xc3\
-\xad chr\xc3\xa1n\xc3\xad p\xc5\x99ed\
- ne\xc3\xbamysln\xc3\xbdmi z\
-m\xc4\x9bnami, ne p\xc5\x99e\
-d t\xc3\xadm, kdo m\xc5\xaf\xc5\
-\xbee upravovat nas\
-taven\xc3\xad\x0aprogramu\
-: odstran\xc4\x9bn\xc3\xadm \
-polo\xc5\xbeky <code>a\
-ccess/expert_pas\
-sword</code> z n\
-astaven\xc3\xad plat\xc3\xad\
- op\xc4\x9bt heslo\x0ap\xc5\x99\
-i dod\xc3\xa1n\xc3\xad. Soub\
-or parametr\xc5\xaf ob\
-sahuje v\xc5\xa1echny \
-hodnoty bez ohle\
-du na \xc3\xbarove\xc5\x88: \
-pokud u\xc5\xbeivatel \
-na\x0az\xc3\xa1kladn\xc3\xad \xc3\xba\
-rovni odes\xc3\xadl\xc3\xa1 \
-dokument, jeho\xc5\xbe\
- hodnoty expertn\
-\xc3\xad \xc3\xbarovn\xc4\x9b se l\
-i\xc5\xa1\xc3\xad od hodnot \
-ventilu,\x0aprogram\
- se nejprve zept\
-\xc3\xa1.</p>\x0a\x0a<h2>Onl\
-ine a offline</h\
-2>\x0a<p>Komunikace\
- \xe2\x86\x92 HID konfigu\
-race zobraz\xc3\xad ve\
-ntily p\xc5\x99ipojen\xc3\
-\xa9 p\xc5\x99es USB a em\
-ulovan\xc3\xa9 ventily\
-;\x0aemulovan\xc3\xbd ven\
-til p\xc5\x99id\xc3\xa1te za\
-d\xc3\xa1n\xc3\xadm typov\xc3\xa9h\
-o kl\xc3\xad\xc4\x8de a v\xc3\xbdr\
-obn\xc3\xadho \xc4\x8d\xc3\xadsla.\
- Komunikace \xe2\x86\x92 \
-Re\xc5\xbeim online\x0ana\
-v\xc3\xa1\xc5\xbee spojen\xc3\xad.\
- Li\xc5\xa1\xc3\xad-li se ot\
-ev\xc5\x99en\xc3\xbd z\xc3\xa1znam\
- parametr\xc5\xaf od v\
-entilu, program \
-zobraz\xc3\xad rozd\xc3\xadl\
-y a\x0azept\xc3\xa1 se, z\
-da p\xc5\x99evz\xc3\xadt hod\
-noty ventilu, od\
-eslat hodnoty do\
-kumentu (na\xc4\x8dten\
-\xc3\xad do ventilu) n\
-ebo\x0azru\xc5\xa1it. V r\
-e\xc5\xbeimu online jd\
-e ka\xc5\xbed\xc3\xa1 zm\xc4\x9bna\
- ihned do ventil\
-u i do dokumentu\
-, v re\xc5\xbeimu offl\
-ine\x0apouze do dok\
-umentu. Ztrat\xc3\xad-\
-li se spojen\xc3\xad s\
- ventilem, progr\
-am p\xc5\x99ejde do re\
-\xc5\xbeimu offline a\x0a\
-v\xc5\xa1echny hodnoty\
- zachov\xc3\xa1.</p>\x0a<\
-p>Hodnoty zm\xc4\x9bn\xc4\
-\x9bn\xc3\xa9 online jsou\
- ve ventilu akti\
-vn\xc3\xad, ale je\xc5\xa1t\xc4\
-\x9b neulo\xc5\xbeen\xc3\xa9: p\
-\xc5\x99i p\xc5\x99echodu do\
-\x0are\xc5\xbeimu offline\
- program nab\xc3\xaddn\
-e jejich ulo\xc5\xbeen\
-\xc3\xad. <b>Na\xc4\x8dten\xc3\xad\
- do ventilu</b> \
-zap\xc3\xad\xc5\xa1e v\xc5\xa1echn\
-y\x0ahodnoty, p\xc5\x99e\xc4\
-\x8dte je zp\xc4\x9bt, po\
-rovn\xc3\xa1 a ulo\xc5\xbe\xc3\xad\
-; ulo\xc5\xbe\xc3\xad se jen\
- tehdy, je-li ka\
-\xc5\xbed\xc3\xa1 hodnota ov\
-\xc4\x9b\xc5\x99ena.\x0aP\xc5\x99ed p\
-rvn\xc3\xadm na\xc4\x8dten\xc3\xad\
-m do ventilu pro\
-gram ulo\xc5\xbe\xc3\xad z\xc3\xa1\
-lohu vlastn\xc3\xadch \
-parametr\xc5\xaf venti\
-lu do slo\xc5\xbeky\x0au\xc5\
-\xbeivatelsk\xc3\xbdch da\
-t (<code>backups\
-/&lt;v\xc3\xbdrobn\xc3\xad \xc4\
-\x8d\xc3\xadslo&gt;/</cod\
-e>).</p>\x0a<p><b>R\
-estart ventilu</\
-b> a <b>Obnoven\xc3\
-\xad tov\xc3\xa1rn\xc3\xadho na\
-staven\xc3\xad</b> jso\
-u dovoleny pouze\
- p\xc5\x99i\x0aodpojen\xc3\xa9m\
- hydraulick\xc3\xa9m o\
-bvodu; program v\
-\xc3\xa1s po\xc5\xbe\xc3\xa1d\xc3\xa1 o \
-potvrzen\xc3\xad.</p>\x0a\
-\x0a<h2>Soubory</h2\
->\x0a<p>Z\xc3\xa1znamy pa\
-rametr\xc5\xaf (<code>\
-*.prm</code>) js\
-ou textov\xc3\xa9 soub\
-ory. Otev\xc5\x99\xc3\xadt, \
-Ulo\xc5\xbeit, Ulo\xc5\xbeit\
- jako,\x0anaposledy\
- otev\xc5\x99en\xc3\xa9 soub\
-ory a p\xc5\x99eta\xc5\xbeen\
-\xc3\xad my\xc5\xa1\xc3\xad funguj\
-\xc3\xad obvykl\xc3\xbdm zp\xc5\
-\xafsobem; p\xc5\x99ed zt\
-r\xc3\xa1tou\x0aneulo\xc5\xbeen\
-\xc3\xbdch zm\xc4\x9bn se pr\
-ogram zept\xc3\xa1. Ka\
-\xc5\xbedou zm\xc4\x9bnu lze\
- vr\xc3\xa1tit (Ctrl+Z\
-) a znovu prov\xc3\xa9\
-st\x0a(Ctrl+Y). Sou\
-bor \xe2\x86\x92 Tisk a S\
-oubor \xe2\x86\x92 Export\
- do PDF vytvo\xc5\x99\xc3\
-\xad protokol param\
-etr\xc5\xaf s typov\xc3\xbdm\
- kl\xc3\xad\xc4\x8dem,\x0av\xc3\xbdro\
-bn\xc3\xadm \xc4\x8d\xc3\xadslem, \
-firmware, soubor\
-em, datem, \xc3\xbarov\
-n\xc3\xad opr\xc3\xa1vn\xc4\x9bn\xc3\xad\
-, postupov\xc3\xbdm di\
-agramem a v\xc5\xa1emi\
-\x0aparametry s jed\
-notkami.</p>\x0a\x0a<h\
-2>Kl\xc3\xa1vesnice</h\
-2>\x0a<table>\x0a<tr><\
-td>Ctrl+O / Ctrl\
-+S / Ctrl+Shift+\
-S</td><td>Otev\xc5\x99\
-\xc3\xadt / Ulo\xc5\xbeit / \
-Ulo\xc5\xbeit jako</td\
-></tr>\x0a<tr><td>C\
-trl+Z / Ctrl+Y</\
-td><td>Zp\xc4\x9bt / Z\
-novu</td></tr>\x0a<\
-tr><td>Ctrl+P / \
-Ctrl+E</td><td>T\
-isk / Export do \
-PDF</td></tr>\x0a<t\
-r><td>Ctrl+1 / C\
-trl+2 / Ctrl+3 /\
- Ctrl+4</td><td>\
-Postupov\xc3\xbd diagr\
-am / Seznam para\
-metr\xc5\xaf / Oscilos\
-kop / Okno CANop\
-en</td></tr>\x0a<tr\
-><td>F5 / Shift+\
-F5</td><td>Re\xc5\xbei\
-m online / Re\xc5\xbei\
-m offline</td></\
-tr>\x0a<tr><td>Ctrl\
-+U / Ctrl+D</td>\
-<td>Na\xc4\x8dten\xc3\xad do\
- ventilu / Sta\xc5\xbe\
-en\xc3\xad z ventilu</\
+\x9bny; nakonec \xc3\xbar\
+ove\xc5\x88 opr\xc3\xa1vn\xc4\x9bn\
+\xc3\xad. Re\xc5\xbeim\x0aukazu\
+je P\xc5\x98IPOJOV\xc3\x81N\xc3\
+\x8d, dokud se pr\xc3\xa1\
+v\xc4\x9b p\xc5\x99ipojen\xc3\xbd \
+ventil porovn\xc3\xa1v\
+\xc3\xa1 se sadou para\
+metr\xc5\xaf, a ONLINE\
+,\x0ajakmile se sho\
+duj\xc3\xad.</p>\x0a<p>Hl\
+avn\xc3\xad plocha zob\
+razuje jeden ze \
+t\xc5\x99\xc3\xad n\xc3\xa1hled\xc5\xaf:\
+ <b>postupov\xc3\xbd d\
+iagram</b> (klik\
+nut\xc3\xadm na blok\x0an\
+astav\xc3\xadte jeho p\
+arametry, kliknu\
+t\xc3\xadm na \xc4\x8derven\xc3\
+\xbd m\xc4\x9b\xc5\x99ic\xc3\xad bod \
+jej zobraz\xc3\xadte v\
+ osciloskopu),\x0a<\
+b>seznam paramet\
+r\xc5\xaf</b> (dvojkli\
+kem na \xc5\x99\xc3\xa1dek z\
+m\xc4\x9bn\xc3\xadte hodnotu\
+; hodnoty odli\xc5\xa1\
+n\xc3\xa9 od tov\xc3\xa1rn\xc3\xad\
+ho\x0anastaven\xc3\xad js\
+ou zv\xc3\xbdrazn\xc4\x9bny;\
+ hled\xc3\xa1n\xc3\xad a \xe2\x80\x9e\
+Jen zm\xc4\x9bn\xc4\x9bn\xc3\xa9\xe2\x80\
+\x9c seznam filtruj\
+\xc3\xad) a <b>oscilos\
+kop</b>\x0a(pouze v\
+ re\xc5\xbeimu online,\
+ nejv\xc3\xbd\xc5\xa1e t\xc5\x99i \
+m\xc4\x9b\xc5\x99ic\xc3\xad body).\
+</p>\x0a\x0a<h2>\xc3\x9arovn\
+\xc4\x9b opr\xc3\xa1vn\xc4\x9bn\xc3\xad<\
+/h2>\x0a<p><b>Z\xc3\xa1kl\
+adn\xc3\xad</b> \xc3\xbarove\
+\xc5\x88 zobrazuje z\xc3\xa1\
+kladn\xc3\xad nastaven\
+\xc3\xad; na z\xc3\xa1kladn\xc3\
+\xad \xc3\xbarovni se \xc4\x8dt\
+y\xc5\x99i rampy\x0anasta\
+vuj\xc3\xad spole\xc4\x8dn\xc4\x9b\
+. <b>Expertn\xc3\xad</\
+b> \xc3\xbarove\xc5\x88 p\xc5\x99i\
+d\xc3\xa1v\xc3\xa1 regul\xc3\xa1to\
+ry, linearizace \
+a nastaven\xc3\xad\x0aext\
+ern\xc3\xadho sn\xc3\xadma\xc4\x8d\
+e a je chr\xc3\xa1n\xc4\x9bn\
+a heslem. Heslo \
+p\xc5\x99i dod\xc3\xa1n\xc3\xad je\
+ <code>expert</c\
+ode>; na expertn\
+\xc3\xad\x0a\xc3\xbarovni jej z\
+m\xc4\x9bn\xc3\xadte v menu \
+N\xc3\xa1hled \xe2\x86\x92 \xc3\x9aro\
+ve\xc5\x88 opr\xc3\xa1vn\xc4\x9bn\xc3\
+\xad \xe2\x86\x92 Zm\xc4\x9bnit he\
+slo pro expertn\xc3\
+\xad \xc3\xbarove\xc5\x88.\x0aProg\
+ram ukl\xc3\xa1d\xc3\xa1 pou\
+ze jeho osolen\xc3\xbd\
+ hash.</p>\x0a<p>\xc3\x9a\
+rovn\xc4\x9b opr\xc3\xa1vn\xc4\x9b\
+n\xc3\xad chr\xc3\xa1n\xc3\xad p\xc5\x99\
+ed ne\xc3\xbamysln\xc3\xbdmi\
+ zm\xc4\x9bnami, ne p\xc5\
+\x99ed t\xc3\xadm, kdo m\xc5\
+\xaf\xc5\xbee upravovat n\
+astaven\xc3\xad\x0aprogra\
+mu: odstran\xc4\x9bn\xc3\xad\
+m polo\xc5\xbeky <code\
+>access/expert_p\
+assword</code> z\
+ nastaven\xc3\xad plat\
+\xc3\xad op\xc4\x9bt heslo\x0ap\
+\xc5\x99i dod\xc3\xa1n\xc3\xad. So\
+ubor parametr\xc5\xaf \
+obsahuje v\xc5\xa1echn\
+y hodnoty bez oh\
+ledu na \xc3\xbarove\xc5\x88\
+: pokud u\xc5\xbeivate\
+l na\x0az\xc3\xa1kladn\xc3\xad \
+\xc3\xbarovni odes\xc3\xadl\xc3\
+\xa1 dokument, jeho\
+\xc5\xbe hodnoty exper\
+tn\xc3\xad \xc3\xbarovn\xc4\x9b se\
+ li\xc5\xa1\xc3\xad od hodno\
+t ventilu,\x0aprogr\
+am se nejprve ze\
+pt\xc3\xa1.</p>\x0a\x0a<h2>O\
+nline a offline<\
+/h2>\x0a<p>Komunika\
+ce \xe2\x86\x92 HID konfi\
+gurace zobraz\xc3\xad \
+ventily p\xc5\x99ipoje\
+n\xc3\xa9 p\xc5\x99es USB a \
+emulovan\xc3\xa9 venti\
+ly;\x0aemulovan\xc3\xbd v\
+entil p\xc5\x99id\xc3\xa1te \
+zad\xc3\xa1n\xc3\xadm typov\xc3\
+\xa9ho kl\xc3\xad\xc4\x8de a v\xc3\
+\xbdrobn\xc3\xadho \xc4\x8d\xc3\xadsl\
+a. Komunikace \xe2\x86\
+\x92 Re\xc5\xbeim online\x0a\
+nav\xc3\xa1\xc5\xbee spojen\xc3\
+\xad. Li\xc5\xa1\xc3\xad-li se \
+otev\xc5\x99en\xc3\xbd z\xc3\xa1zn\
+am parametr\xc5\xaf od\
+ ventilu, progra\
+m zobraz\xc3\xad rozd\xc3\
+\xadly a\x0azept\xc3\xa1 se,\
+ zda p\xc5\x99evz\xc3\xadt h\
+odnoty ventilu, \
+odeslat hodnoty \
+dokumentu (na\xc4\x8dt\
+en\xc3\xad do ventilu)\
+ nebo\x0azru\xc5\xa1it. V\
+ re\xc5\xbeimu online \
+jde ka\xc5\xbed\xc3\xa1 zm\xc4\x9b\
+na ihned do vent\
+ilu i do dokumen\
+tu, v re\xc5\xbeimu of\
+fline\x0apouze do d\
+okumentu. Ztrat\xc3\
+\xad-li se spojen\xc3\xad\
+ s ventilem, pro\
+gram p\xc5\x99ejde do \
+re\xc5\xbeimu offline \
+a\x0av\xc5\xa1echny hodno\
+ty zachov\xc3\xa1.</p>\
+\x0a<p>Hodnoty zm\xc4\x9b\
+n\xc4\x9bn\xc3\xa9 online js\
+ou ve ventilu ak\
+tivn\xc3\xad, ale je\xc5\xa1\
+t\xc4\x9b neulo\xc5\xbeen\xc3\xa9:\
+ p\xc5\x99i p\xc5\x99echodu \
+do\x0are\xc5\xbeimu offli\
+ne program nab\xc3\xad\
+dne jejich ulo\xc5\xbe\
+en\xc3\xad. <b>Na\xc4\x8dten\
+\xc3\xad do ventilu</b\
+> zap\xc3\xad\xc5\xa1e v\xc5\xa1ec\
+hny\x0ahodnoty, p\xc5\x99\
+e\xc4\x8dte je zp\xc4\x9bt, \
+porovn\xc3\xa1 a ulo\xc5\xbe\
+\xc3\xad; ulo\xc5\xbe\xc3\xad se j\
+en tehdy, je-li \
+ka\xc5\xbed\xc3\xa1 hodnota \
+ov\xc4\x9b\xc5\x99ena.\x0aP\xc5\x99ed\
+ prvn\xc3\xadm na\xc4\x8dten\
+\xc3\xadm do ventilu p\
+rogram ulo\xc5\xbe\xc3\xad z\
+\xc3\xa1lohu vlastn\xc3\xadc\
+h parametr\xc5\xaf ven\
+tilu do slo\xc5\xbeky\x0a\
+u\xc5\xbeivatelsk\xc3\xbdch \
+dat (<code>backu\
+ps/&lt;v\xc3\xbdrobn\xc3\xad\
+ \xc4\x8d\xc3\xadslo&gt;/</c\
+ode>).</p>\x0a<p><b\
+>Restart ventilu\
+</b> a <b>Obnove\
+n\xc3\xad tov\xc3\xa1rn\xc3\xadho \
+nastaven\xc3\xad</b> j\
+sou dovoleny pou\
+ze p\xc5\x99i\x0aodpojen\xc3\
+\xa9m hydraulick\xc3\xa9m\
+ obvodu; program\
+ v\xc3\xa1s po\xc5\xbe\xc3\xa1d\xc3\xa1 \
+o potvrzen\xc3\xad.</p\
+>\x0a\x0a<h2>Soubory</\
+h2>\x0a<p>Z\xc3\xa1znamy \
+parametr\xc5\xaf (<cod\
+e>*.prm</code>) \
+jsou textov\xc3\xa9 so\
+ubory. Otev\xc5\x99\xc3\xadt\
+, Ulo\xc5\xbeit, Ulo\xc5\xbe\
+it jako,\x0anaposle\
+dy otev\xc5\x99en\xc3\xa9 so\
+ubory a p\xc5\x99eta\xc5\xbe\
+en\xc3\xad my\xc5\xa1\xc3\xad fung\
+uj\xc3\xad obvykl\xc3\xbdm z\
+p\xc5\xafsobem; p\xc5\x99ed \
+ztr\xc3\xa1tou\x0aneulo\xc5\xbe\
+en\xc3\xbdch zm\xc4\x9bn se \
+program zept\xc3\xa1. \
+Ka\xc5\xbedou zm\xc4\x9bnu l\
+ze vr\xc3\xa1tit (Ctrl\
++Z) a znovu prov\
+\xc3\xa9st\x0a(Ctrl+Y). S\
+oubor \xe2\x86\x92 Tisk a\
+ Soubor \xe2\x86\x92 Expo\
+rt do PDF vytvo\xc5\
+\x99\xc3\xad protokol par\
+ametr\xc5\xaf s typov\xc3\
+\xbdm kl\xc3\xad\xc4\x8dem,\x0av\xc3\xbd\
+robn\xc3\xadm \xc4\x8d\xc3\xadslem\
+, firmware, soub\
+orem, datem, \xc3\xbar\
+ovn\xc3\xad opr\xc3\xa1vn\xc4\x9bn\
+\xc3\xad, postupov\xc3\xbdm \
+diagramem a v\xc5\xa1e\
+mi\x0aparametry s j\
+ednotkami.</p>\x0a\x0a\
+<h2>Kl\xc3\xa1vesnice<\
+/h2>\x0a<table>\x0a<tr\
+><td>Ctrl+O / Ct\
+rl+S / Ctrl+Shif\
+t+S</td><td>Otev\
+\xc5\x99\xc3\xadt / Ulo\xc5\xbeit \
+/ Ulo\xc5\xbeit jako</\
 td></tr>\x0a<tr><td\
->Ctrl+T / Ctrl+I\
- / Ctrl+H</td><t\
-d>V\xc3\xbdb\xc4\x9br ventil\
-u / Stav ventilu\
- / HID konfigura\
-ce</td></tr>\x0a</t\
-able>\x0a</body>\x0a</\
-html>\x0a\
-\x00\x00\x13\xb1\
+>Ctrl+Z / Ctrl+Y\
+</td><td>Zp\xc4\x9bt /\
+ Znovu</td></tr>\
+\x0a<tr><td>Ctrl+P \
+/ Ctrl+E</td><td\
+>Tisk / Export d\
+o PDF</td></tr>\x0a\
+<tr><td>Ctrl+1 /\
+ Ctrl+2 / Ctrl+3\
+ / Ctrl+4</td><t\
+d>Postupov\xc3\xbd dia\
+gram / Seznam pa\
+rametr\xc5\xaf / Oscil\
+oskop / Okno CAN\
+open</td></tr>\x0a<\
+tr><td>F5 / Shif\
+t+F5</td><td>Re\xc5\
+\xbeim online / Re\xc5\
+\xbeim offline</td>\
+</tr>\x0a<tr><td>Ct\
+rl+U / Ctrl+D</t\
+d><td>Na\xc4\x8dten\xc3\xad \
+do ventilu / Sta\
+\xc5\xbeen\xc3\xad z ventilu\
+</td></tr>\x0a<tr><\
+td>Ctrl+T / Ctrl\
++I / Ctrl+H</td>\
+<td>V\xc3\xbdb\xc4\x9br vent\
+ilu / Stav venti\
+lu / HID konfigu\
+race</td></tr>\x0a<\
+/table>\x0a</body>\x0a\
+</html>\x0a\
+\x00\x00\x14Z\
 <\
 !DOCTYPE html>\x0a<\
 html lang=\x22de\x22>\x0a\
@@ -381,260 +391,270 @@ n Fehler), die\x0aF\
 irmware-Version,\
  den Typschl\xc3\xbcss\
 el und den Datei\
-namen; <b>*</b> \
-kennzeichnet ung\
-espeicherte\x0a\xc3\x84nd\
-erungen.</p>\x0a<p>\
-Die Hauptfl\xc3\xa4che\
- zeigt eine von \
-drei Ansichten: \
-das <b>Ablaufdia\
-gramm</b> (ein K\
-lick auf\x0aeinen B\
-lock stellt sein\
-e Parameter ein,\
- ein Klick auf e\
-inen roten Messp\
-unkt zeigt ihn i\
-m\x0aOszilloskop), \
-die <b>Parameter\
-liste</b> (Doppe\
-lklick auf eine \
-Zeile \xc3\xa4ndert de\
-n Wert; Werte,\x0ad\
-ie von der Werks\
-einstellung abwe\
-ichen, sind herv\
-orgehoben; Suche\
- und \xe2\x80\x9eNur ge\xc3\xa4\
-nderte\xe2\x80\x9c\x0afilter\
-n die Liste) und\
- das <b>Oszillos\
-kop</b> (nur onl\
-ine, h\xc3\xb6chstens \
-drei Messpunkte)\
-.</p>\x0a\x0a<h2>Berec\
-htigungsstufen</\
-h2>\x0a<p><b>Basis<\
-/b> zeigt die gr\
-undlegenden Eins\
-tellungen; in de\
-r Basisstufe wer\
-den die vier\x0aRam\
-pen gemeinsam ei\
-ngestellt. <b>Ex\
-perte</b> erg\xc3\xa4n\
-zt die Regler, d\
-ie Linearisierun\
-gen und\x0adie Eins\
-tellungen des ex\
-ternen Sensors u\
-nd ist durch ein\
- Passwort gesch\xc3\
-\xbctzt. Das Passwo\
-rt\x0aim Auslieferu\
-ngszustand laute\
-t <code>expert</\
-code>; in der Ex\
-pertenstufe \xc3\xa4nd\
-ern Sie es unter\
-\x0aAnsicht \xe2\x86\x92 Ber\
-echtigungsstufe \
-\xe2\x86\x92 Expertenpass\
-wort \xc3\xa4ndern. Da\
-s Programm speic\
-hert nur einen\x0ag\
-esalzenen Hash d\
-avon.</p>\x0a<p>Die\
- Berechtigungsst\
-ufen sch\xc3\xbctzen v\
-or versehentlich\
-en \xc3\x84nderungen, \
-nicht vor jemand\
-em, der die\x0aEins\
-tellungen des Pr\
-ogramms bearbeit\
-en kann: Wird de\
-r Eintrag\x0a<code>\
-access/expert_pa\
-ssword</code> au\
-s den Einstellun\
-gen entfernt, gi\
-lt wieder das Pa\
-sswort\x0ades Ausli\
-eferungszustands\
-. Eine Parameter\
-datei enth\xc3\xa4lt a\
-lle Werte, unabh\
-\xc3\xa4ngig von der S\
-tufe:\x0aSendet ein\
- Benutzer der St\
-ufe Basis ein Do\
-kument, dessen E\
-xpertenwerte von\
- denen des Venti\
-ls\x0aabweichen, fr\
-agt das Programm\
- zuerst nach.</p\
->\x0a\x0a<h2>Online un\
-d offline</h2>\x0a<\
-p>Kommunikation \
-\xe2\x86\x92 HID-Konfigur\
-ation listet die\
- \xc3\xbcber USB anges\
-chlossenen und d\
-ie emulierten\x0aVe\
-ntile; ein emuli\
-ertes Ventil f\xc3\xbc\
-gen Sie mit Typs\
-chl\xc3\xbcssel und Se\
-riennummer hinzu\
-.\x0aKommunikation \
-\xe2\x86\x92 Online-Modus\
- verbindet. Weic\
-ht der ge\xc3\xb6ffnet\
-e Parametersatz \
-vom Ventil ab,\x0az\
-eigt das Program\
-m die Unterschie\
-de und fragt, ob\
- die Werte des V\
-entils \xc3\xbcbernomm\
-en, die\x0aWerte de\
-s Dokuments gese\
-ndet (Hochladen)\
- oder abgebroche\
-n werden soll. O\
-nline geht jede\x0a\
-\xc3\x84nderung sofort\
- an das Ventil u\
-nd in das Dokume\
-nt, offline nur \
-in das Dokument.\
- Geht die\x0aVerbin\
-dung verloren, s\
-chaltet das Prog\
-ramm auf offline\
- und beh\xc3\xa4lt all\
-e Werte.</p>\x0a<p>\
-Online ge\xc3\xa4ndert\
-e Werte sind im \
-Ventil aktiv, ab\
-er noch nicht ge\
-speichert: beim \
-Wechsel\x0aauf offl\
-ine bietet das P\
-rogramm an, sie \
-zu speichern. <b\
->In das Ventil h\
-ochladen</b>\x0asch\
-reibt alle Werte\
-, liest sie zur\xc3\
-\xbcck, vergleicht \
-und speichert si\
-e; gespeichert w\
-ird nur,\x0awenn je\
-der Wert best\xc3\xa4t\
-igt wurde. Vor d\
-em ersten Hochla\
-den in ein Venti\
-l sichert das\x0aPr\
-ogramm dessen ei\
-gene Parameter i\
-m Benutzerdateno\
-rdner (<code>bac\
-kups/&lt;Serienn\
-ummer&gt;/</code\
->).</p>\x0a<p><b>Ve\
-ntil neu starten\
-</b> und <b>Werk\
-seinstellungen w\
-iederherstellen<\
-/b> sind nur bei\
-\x0agetrennter Hydr\
-aulik erlaubt; d\
-as Programm l\xc3\xa4s\
-st Sie das best\xc3\
-\xa4tigen.</p>\x0a\x0a<h2\
->Dateien</h2>\x0a<p\
->Parameterdateie\
-n (<code>*.prm</\
-code>) sind Text\
-dateien. \xc3\x96ffnen\
-, Speichern, Spe\
-ichern\x0aunter, di\
-e zuletzt ge\xc3\xb6ff\
-neten Dateien un\
-d Drag &amp; Dro\
-p funktionieren \
-wie gewohnt; vor\
- dem\x0aVerlust ung\
-espeicherter \xc3\x84n\
-derungen fragt d\
-as Programm nach\
-. Jede \xc3\x84nderung\
- l\xc3\xa4sst sich\x0ar\xc3\xbc\
-ckg\xc3\xa4ngig machen\
- (Strg+Z) und wi\
-ederherstellen (\
-Strg+Y). Datei \xe2\
-\x86\x92 Drucken und D\
-atei \xe2\x86\x92 PDF\x0aexp\
-ortieren erzeuge\
-n ein Parameterp\
-rotokoll mit Typ\
-schl\xc3\xbcssel, Seri\
-ennummer, Firmwa\
-re, Datei,\x0aDatum\
-, Berechtigungss\
-tufe, dem Ablauf\
-diagramm und all\
-en Parametern mi\
-t Einheit.</p>\x0a\x0a\
-<h2>Tastatur</h2\
->\x0a<table>\x0a<tr><t\
-d>Strg+O / Strg+\
-S / Strg+Umschal\
-t+S</td><td>\xc3\x96ff\
-nen / Speichern \
-/ Speichern unte\
-r</td></tr>\x0a<tr>\
-<td>Strg+Z / Str\
-g+Y</td><td>R\xc3\xbcc\
-kg\xc3\xa4ngig / Wiede\
-rherstellen</td>\
-</tr>\x0a<tr><td>St\
-rg+P / Strg+E</t\
-d><td>Drucken / \
-PDF exportieren<\
-/td></tr>\x0a<tr><t\
-d>Strg+1 / Strg+\
-2 / Strg+3 / Str\
-g+4</td><td>Abla\
-ufdiagramm / Par\
-ameterliste / Os\
-zilloskop / CANo\
-pen-Fenster</td>\
-</tr>\x0a<tr><td>F5\
- / Umschalt+F5</\
-td><td>Online / \
-Offline</td></tr\
->\x0a<tr><td>Strg+U\
- / Strg+D</td><t\
-d>In das Ventil \
-hochladen / Aus \
-dem Ventil herun\
-terladen</td></t\
+namen (<b>*</b>:\
+ ungespeicherte \
+\xc3\x84nderungen)\x0aund\
+ zuletzt die Ber\
+echtigungsstufe.\
+ Der Modus laute\
+t VERBINDEN, sol\
+ange ein eben ve\
+rbundenes\x0aVentil\
+ mit dem Paramet\
+ersatz vergliche\
+n wird, und ONLI\
+NE, sobald beide\
+ \xc3\xbcbereinstimmen\
+.</p>\x0a<p>Die Hau\
+ptfl\xc3\xa4che zeigt \
+eine von drei An\
+sichten: das <b>\
+Ablaufdiagramm</\
+b> (ein Klick au\
+f\x0aeinen Block st\
+ellt seine Param\
+eter ein, ein Kl\
+ick auf einen ro\
+ten Messpunkt ze\
+igt ihn im\x0aOszil\
+loskop), die <b>\
+Parameterliste</\
+b> (Doppelklick \
+auf eine Zeile \xc3\
+\xa4ndert den Wert;\
+ Werte,\x0adie von \
+der Werkseinstel\
+lung abweichen, \
+sind hervorgehob\
+en; Suche und \xe2\x80\
+\x9eNur ge\xc3\xa4nderte\xe2\
+\x80\x9c\x0afiltern die L\
+iste) und das <b\
+>Oszilloskop</b>\
+ (nur online, h\xc3\
+\xb6chstens drei Me\
+sspunkte).</p>\x0a\x0a\
+<h2>Berechtigung\
+sstufen</h2>\x0a<p>\
+<b>Basis</b> zei\
+gt die grundlege\
+nden Einstellung\
+en; in der Basis\
+stufe werden die\
+ vier\x0aRampen gem\
+einsam eingestel\
+lt. <b>Experte</\
+b> erg\xc3\xa4nzt die \
+Regler, die Line\
+arisierungen und\
+\x0adie Einstellung\
+en des externen \
+Sensors und ist \
+durch ein Passwo\
+rt gesch\xc3\xbctzt. D\
+as Passwort\x0aim A\
+uslieferungszust\
+and lautet <code\
+>expert</code>; \
+in der Expertens\
+tufe \xc3\xa4ndern Sie\
+ es unter\x0aAnsich\
+t \xe2\x86\x92 Berechtigu\
+ngsstufe \xe2\x86\x92 Exp\
+ertenpasswort \xc3\xa4\
+ndern. Das Progr\
+amm speichert nu\
+r einen\x0agesalzen\
+en Hash davon.</\
+p>\x0a<p>Die Berech\
+tigungsstufen sc\
+h\xc3\xbctzen vor vers\
+ehentlichen \xc3\x84nd\
+erungen, nicht v\
+or jemandem, der\
+ die\x0aEinstellung\
+en des Programms\
+ bearbeiten kann\
+: Wird der Eintr\
+ag\x0a<code>access/\
+expert_password<\
+/code> aus den E\
+instellungen ent\
+fernt, gilt wied\
+er das Passwort\x0a\
+des Auslieferung\
+szustands. Eine \
+Parameterdatei e\
+nth\xc3\xa4lt alle Wer\
+te, unabh\xc3\xa4ngig \
+von der Stufe:\x0aS\
+endet ein Benutz\
+er der Stufe Bas\
+is ein Dokument,\
+ dessen Experten\
+werte von denen \
+des Ventils\x0aabwe\
+ichen, fragt das\
+ Programm zuerst\
+ nach.</p>\x0a\x0a<h2>\
+Online und offli\
+ne</h2>\x0a<p>Kommu\
+nikation \xe2\x86\x92 HID\
+-Konfiguration l\
+istet die \xc3\xbcber \
+USB angeschlosse\
+nen und die emul\
+ierten\x0aVentile; \
+ein emuliertes V\
+entil f\xc3\xbcgen Sie\
+ mit Typschl\xc3\xbcss\
+el und Seriennum\
+mer hinzu.\x0aKommu\
+nikation \xe2\x86\x92 Onl\
+ine-Modus verbin\
+det. Weicht der \
+ge\xc3\xb6ffnete Param\
+etersatz vom Ven\
+til ab,\x0azeigt da\
+s Programm die U\
+nterschiede und \
+fragt, ob die We\
+rte des Ventils \
+\xc3\xbcbernommen, die\
+\x0aWerte des Dokum\
+ents gesendet (H\
+ochladen) oder a\
+bgebrochen werde\
+n soll. Online g\
+eht jede\x0a\xc3\x84nderu\
+ng sofort an das\
+ Ventil und in d\
+as Dokument, off\
+line nur in das \
+Dokument. Geht d\
+ie\x0aVerbindung ve\
+rloren, schaltet\
+ das Programm au\
+f offline und be\
+h\xc3\xa4lt alle Werte\
+.</p>\x0a<p>Online \
+ge\xc3\xa4nderte Werte\
+ sind im Ventil \
+aktiv, aber noch\
+ nicht gespeiche\
+rt: beim Wechsel\
+\x0aauf offline bie\
+tet das Programm\
+ an, sie zu spei\
+chern. <b>In das\
+ Ventil hochlade\
+n</b>\x0aschreibt a\
+lle Werte, liest\
+ sie zur\xc3\xbcck, ve\
+rgleicht und spe\
+ichert sie; gesp\
+eichert wird nur\
+,\x0awenn jeder Wer\
+t best\xc3\xa4tigt wur\
+de. Vor dem erst\
+en Hochladen in \
+ein Ventil siche\
+rt das\x0aProgramm \
+dessen eigene Pa\
+rameter im Benut\
+zerdatenordner (\
+<code>backups/&l\
+t;Seriennummer&g\
+t;/</code>).</p>\
+\x0a<p><b>Ventil ne\
+u starten</b> un\
+d <b>Werkseinste\
+llungen wiederhe\
+rstellen</b> sin\
+d nur bei\x0agetren\
+nter Hydraulik e\
+rlaubt; das Prog\
+ramm l\xc3\xa4sst Sie \
+das best\xc3\xa4tigen.\
+</p>\x0a\x0a<h2>Dateie\
+n</h2>\x0a<p>Parame\
+terdateien (<cod\
+e>*.prm</code>) \
+sind Textdateien\
+. \xc3\x96ffnen, Speic\
+hern, Speichern\x0a\
+unter, die zulet\
+zt ge\xc3\xb6ffneten D\
+ateien und Drag \
+&amp; Drop funkt\
+ionieren wie gew\
+ohnt; vor dem\x0aVe\
+rlust ungespeich\
+erter \xc3\x84nderunge\
+n fragt das Prog\
+ramm nach. Jede \
+\xc3\x84nderung l\xc3\xa4sst\
+ sich\x0ar\xc3\xbcckg\xc3\xa4ng\
+ig machen (Strg+\
+Z) und wiederher\
+stellen (Strg+Y)\
+. Datei \xe2\x86\x92 Druc\
+ken und Datei \xe2\x86\
+\x92 PDF\x0aexportiere\
+n erzeugen ein P\
+arameterprotokol\
+l mit Typschl\xc3\xbcs\
+sel, Seriennumme\
+r, Firmware, Dat\
+ei,\x0aDatum, Berec\
+htigungsstufe, d\
+em Ablaufdiagram\
+m und allen Para\
+metern mit Einhe\
+it.</p>\x0a\x0a<h2>Tas\
+tatur</h2>\x0a<tabl\
+e>\x0a<tr><td>Strg+\
+O / Strg+S / Str\
+g+Umschalt+S</td\
+><td>\xc3\x96ffnen / S\
+peichern / Speic\
+hern unter</td><\
+/tr>\x0a<tr><td>Str\
+g+Z / Strg+Y</td\
+><td>R\xc3\xbcckg\xc3\xa4ngi\
+g / Wiederherste\
+llen</td></tr>\x0a<\
+tr><td>Strg+P / \
+Strg+E</td><td>D\
+rucken / PDF exp\
+ortieren</td></t\
 r>\x0a<tr><td>Strg+\
-T / Strg+I / Str\
-g+H</td><td>Vent\
-ilauswahl / Vent\
-ilstatus / HID-K\
-onfiguration</td\
-></tr>\x0a</table>\x0a\
-</body>\x0a</html>\x0a\
-\
-\x00\x00\x10\xfd\
+1 / Strg+2 / Str\
+g+3 / Strg+4</td\
+><td>Ablaufdiagr\
+amm / Parameterl\
+iste / Oszillosk\
+op / CANopen-Fen\
+ster</td></tr>\x0a<\
+tr><td>F5 / Umsc\
+halt+F5</td><td>\
+Online / Offline\
+</td></tr>\x0a<tr><\
+td>Strg+U / Strg\
++D</td><td>In da\
+s Ventil hochlad\
+en / Aus dem Ven\
+til herunterlade\
+n</td></tr>\x0a<tr>\
+<td>Strg+T / Str\
+g+I / Strg+H</td\
+><td>Ventilauswa\
+hl / Ventilstatu\
+s / HID-Konfigur\
+ation</td></tr>\x0a\
+</table>\x0a</body>\
+\x0a</html>\x0a\
+\x00\x00\x11\x8b\
 <\
 !DOCTYPE html>\x0a<\
 html lang=\x22en\x22>\x0a\
@@ -695,219 +715,228 @@ ion, the type ke\
 y and the\x0afile n\
 ame; <b>*</b> ma\
 rks unsaved chan\
-ges.</p>\x0a<p>The \
-main area shows \
-one of three vie\
-ws: the <b>flow \
-diagram</b> (cli\
-ck a block to se\
-t its\x0aparameters\
-, click a red me\
-asuring point to\
- watch it in the\
- oscilloscope), \
-the\x0a<b>parameter\
- list</b> (doubl\
-e-click a row to\
- change the valu\
-e; values that d\
-iffer from the\x0af\
-actory defaults \
-are highlighted;\
- search and \xe2\x80\x9cM\
-odified only\xe2\x80\x9d \
-filter the list)\
- and the\x0a<b>osci\
-lloscope</b> (on\
-line only, at mo\
-st three measuri\
-ng points).</p>\x0a\
-\x0a<h2>Access leve\
-ls</h2>\x0a<p><b>Ba\
-sic</b> shows th\
-e basic settings\
-; at Basic level\
- the four ramps \
-are set together\
-.\x0a<b>Expert</b> \
-adds the control\
-lers, the linear\
-izations and the\
- external-sensor\
- settings and\x0ais\
- protected by a \
-password. The pa\
-ssword as delive\
-red is <code>exp\
-ert</code>; chan\
-ge it at\x0aExpert \
-level with View \
-\xe2\x86\x92 Access level\
- \xe2\x86\x92 Change Expe\
-rt password. The\
- program keeps o\
-nly a\x0asalted has\
-h of it.</p>\x0a<p>\
-The access level\
-s guard against \
-accidental chang\
-es, not against \
-someone who can \
-edit the\x0aprogram\
-'s settings: rem\
-oving the entry \
-<code>access/exp\
-ert_password</co\
-de> from the set\
-tings\x0abrings bac\
-k the delivered \
-password. A para\
-meter file carri\
-es every value w\
-hatever the leve\
-l:\x0aat Basic leve\
-l, sending a doc\
-ument whose Expe\
-rt-level values \
-differ from the \
-valve's asks\x0afir\
-st.</p>\x0a\x0a<h2>Onl\
-ine and offline<\
-/h2>\x0a<p>Communic\
-ation \xe2\x86\x92 HID co\
-nfiguration list\
-s the valves con\
-nected over USB \
-and the emulated\
-\x0avalves; add an \
-emulated valve w\
-ith its type key\
- and serial numb\
-er. Communicatio\
-n \xe2\x86\x92 Online\x0amod\
-e connects. If t\
-he open paramete\
-r set differs fr\
-om the valve's, \
-the program list\
-s the\x0adifference\
-s and asks wheth\
-er to take the v\
-alve's values, s\
-end the document\
-'s values\x0a(uploa\
-d) or cancel. On\
-line, every chan\
-ge goes to the v\
-alve at once and\
- into the docume\
-nt;\x0aoffline, int\
-o the document o\
-nly. If the valv\
-e is lost, the p\
-rogram goes offl\
-ine and keeps\x0aev\
-ery value.</p>\x0a<\
-p>Values changed\
- online are acti\
-ve in the valve \
-but not yet stor\
-ed: going offlin\
-e offers to\x0astor\
-e them. <b>Uploa\
-d to valve</b> w\
-rites all values\
-, reads them bac\
-k, compares and \
-stores\x0athem; not\
-hing is stored u\
-nless every valu\
-e was verified. \
-Before the first\
- upload to a val\
-ve\x0athe program s\
-aves a backup of\
- the valve's own\
- parameters in t\
-he user data fol\
-der\x0a(<code>backu\
-ps/&lt;serial&gt\
-;/</code>).</p>\x0a\
-<p><b>Restart va\
-lve</b> and <b>R\
-estore factory v\
-alues</b> are al\
-lowed only with \
-the\x0ahydraulics d\
-isconnected; the\
- program asks yo\
-u to confirm thi\
-s.</p>\x0a\x0a<h2>File\
-s</h2>\x0a<p>Parame\
-ter files (<code\
->*.prm</code>) a\
-re text files. O\
-pen, Save, Save \
-As, the recent\x0af\
-iles and drag an\
-d drop work as u\
-sual; the progra\
-m asks before un\
-saved changes ar\
-e lost.\x0aEvery ch\
-ange can be undo\
-ne (Ctrl+Z) and \
-redone (Ctrl+Y).\
- File \xe2\x86\x92 Print \
-and File \xe2\x86\x92 Exp\
-ort PDF\x0aproduce \
-a parameter reco\
-rd with type key\
-, serial number,\
- firmware, file,\
- date, access le\
-vel,\x0athe flow di\
-agram and every \
-parameter with i\
-ts unit.</p>\x0a\x0a<h\
-2>Keyboard</h2>\x0a\
-<table>\x0a<tr><td>\
-Ctrl+O / Ctrl+S \
-/ Ctrl+Shift+S</\
-td><td>Open / Sa\
-ve / Save As</td\
-></tr>\x0a<tr><td>C\
-trl+Z / Ctrl+Y</\
-td><td>Undo / Re\
-do</td></tr>\x0a<tr\
-><td>Ctrl+P / Ct\
-rl+E</td><td>Pri\
-nt / Export PDF<\
-/td></tr>\x0a<tr><t\
-d>Ctrl+1 / Ctrl+\
-2 / Ctrl+3 / Ctr\
-l+4</td><td>Flow\
- diagram / Param\
-eter list / Osci\
-lloscope / CANop\
-en window</td></\
-tr>\x0a<tr><td>F5 /\
- Shift+F5</td><t\
-d>Online / Offli\
-ne</td></tr>\x0a<tr\
-><td>Ctrl+U / Ct\
-rl+D</td><td>Upl\
-oad to valve / D\
-ownload from val\
-ve</td></tr>\x0a<tr\
-><td>Ctrl+T / Ct\
-rl+I / Ctrl+H</t\
-d><td>Valve sele\
-ction / Valve st\
-atus / HID confi\
-guration</td></t\
-r>\x0a</table>\x0a</bo\
-dy>\x0a</html>\x0a\
+ges; last the ac\
+cess level. The \
+mode reads CONNE\
+CTING\x0awhile a va\
+lve just connect\
+ed is compared w\
+ith the paramete\
+r set, and ONLIN\
+E once they agre\
+e.</p>\x0a<p>The ma\
+in area shows on\
+e of three views\
+: the <b>flow di\
+agram</b> (click\
+ a block to set \
+its\x0aparameters, \
+click a red meas\
+uring point to w\
+atch it in the o\
+scilloscope), th\
+e\x0a<b>parameter l\
+ist</b> (double-\
+click a row to c\
+hange the value;\
+ values that dif\
+fer from the\x0afac\
+tory defaults ar\
+e highlighted; s\
+earch and \xe2\x80\x9cMod\
+ified only\xe2\x80\x9d fi\
+lter the list) a\
+nd the\x0a<b>oscill\
+oscope</b> (onli\
+ne only, at most\
+ three measuring\
+ points).</p>\x0a\x0a<\
+h2>Access levels\
+</h2>\x0a<p><b>Basi\
+c</b> shows the \
+basic settings; \
+at Basic level t\
+he four ramps ar\
+e set together.\x0a\
+<b>Expert</b> ad\
+ds the controlle\
+rs, the lineariz\
+ations and the e\
+xternal-sensor s\
+ettings and\x0ais p\
+rotected by a pa\
+ssword. The pass\
+word as delivere\
+d is <code>exper\
+t</code>; change\
+ it at\x0aExpert le\
+vel with View \xe2\x86\
+\x92 Access level \xe2\
+\x86\x92 Change Expert\
+ password. The p\
+rogram keeps onl\
+y a\x0asalted hash \
+of it.</p>\x0a<p>Th\
+e access levels \
+guard against ac\
+cidental changes\
+, not against so\
+meone who can ed\
+it the\x0aprogram's\
+ settings: remov\
+ing the entry <c\
+ode>access/exper\
+t_password</code\
+> from the setti\
+ngs\x0abrings back \
+the delivered pa\
+ssword. A parame\
+ter file carries\
+ every value wha\
+tever the level:\
+\x0aat Basic level,\
+ sending a docum\
+ent whose Expert\
+-level values di\
+ffer from the va\
+lve's asks\x0afirst\
+.</p>\x0a\x0a<h2>Onlin\
+e and offline</h\
+2>\x0a<p>Communicat\
+ion \xe2\x86\x92 HID conf\
+iguration lists \
+the valves conne\
+cted over USB an\
+d the emulated\x0av\
+alves; add an em\
+ulated valve wit\
+h its type key a\
+nd serial number\
+. Communication \
+\xe2\x86\x92 Online\x0amode \
+connects. If the\
+ open parameter \
+set differs from\
+ the valve's, th\
+e program lists \
+the\x0adifferences \
+and asks whether\
+ to take the val\
+ve's values, sen\
+d the document's\
+ values\x0a(upload)\
+ or cancel. Onli\
+ne, every change\
+ goes to the val\
+ve at once and i\
+nto the document\
+;\x0aoffline, into \
+the document onl\
+y. If the valve \
+is lost, the pro\
+gram goes offlin\
+e and keeps\x0aever\
+y value.</p>\x0a<p>\
+Values changed o\
+nline are active\
+ in the valve bu\
+t not yet stored\
+: going offline \
+offers to\x0astore \
+them. <b>Upload \
+to valve</b> wri\
+tes all values, \
+reads them back,\
+ compares and st\
+ores\x0athem; nothi\
+ng is stored unl\
+ess every value \
+was verified. Be\
+fore the first u\
+pload to a valve\
+\x0athe program sav\
+es a backup of t\
+he valve's own p\
+arameters in the\
+ user data folde\
+r\x0a(<code>backups\
+/&lt;serial&gt;/\
+</code>).</p>\x0a<p\
+><b>Restart valv\
+e</b> and <b>Res\
+tore factory val\
+ues</b> are allo\
+wed only with th\
+e\x0ahydraulics dis\
+connected; the p\
+rogram asks you \
+to confirm this.\
+</p>\x0a\x0a<h2>Files<\
+/h2>\x0a<p>Paramete\
+r files (<code>*\
+.prm</code>) are\
+ text files. Ope\
+n, Save, Save As\
+, the recent\x0afil\
+es and drag and \
+drop work as usu\
+al; the program \
+asks before unsa\
+ved changes are \
+lost.\x0aEvery chan\
+ge can be undone\
+ (Ctrl+Z) and re\
+done (Ctrl+Y). F\
+ile \xe2\x86\x92 Print an\
+d File \xe2\x86\x92 Expor\
+t PDF\x0aproduce a \
+parameter record\
+ with type key, \
+serial number, f\
+irmware, file, d\
+ate, access leve\
+l,\x0athe flow diag\
+ram and every pa\
+rameter with its\
+ unit.</p>\x0a\x0a<h2>\
+Keyboard</h2>\x0a<t\
+able>\x0a<tr><td>Ct\
+rl+O / Ctrl+S / \
+Ctrl+Shift+S</td\
+><td>Open / Save\
+ / Save As</td><\
+/tr>\x0a<tr><td>Ctr\
+l+Z / Ctrl+Y</td\
+><td>Undo / Redo\
+</td></tr>\x0a<tr><\
+td>Ctrl+P / Ctrl\
++E</td><td>Print\
+ / Export PDF</t\
+d></tr>\x0a<tr><td>\
+Ctrl+1 / Ctrl+2 \
+/ Ctrl+3 / Ctrl+\
+4</td><td>Flow d\
+iagram / Paramet\
+er list / Oscill\
+oscope / CANopen\
+ window</td></tr\
+>\x0a<tr><td>F5 / S\
+hift+F5</td><td>\
+Online / Offline\
+</td></tr>\x0a<tr><\
+td>Ctrl+U / Ctrl\
++D</td><td>Uploa\
+d to valve / Dow\
+nload from valve\
+</td></tr>\x0a<tr><\
+td>Ctrl+T / Ctrl\
++I / Ctrl+H</td>\
+<td>Valve select\
+ion / Valve stat\
+us / HID configu\
+ration</td></tr>\
+\x0a</table>\x0a</body\
+>\x0a</html>\x0a\
 \x00\x00\x01\xc2\
 <\
 svg xmlns=\x22http:\
@@ -1346,22 +1375,22 @@ qt_resource_struct = b"\
 \x00\x00\x00\x00\x00\x02\x00\x00\x00\x02\x00\x00\x00\x01\
 \x00\x00\x00\x10\x00\x02\x00\x00\x00\x03\x00\x00\x00\x10\
 \x00\x00\x00\x00\x00\x02\x00\x00\x00\x0d\x00\x00\x00\x03\
-\x00\x00\x00\xfc\x00\x00\x00\x00\x00\x01\x00\x00?U\
-\x00\x00\x00\x92\x00\x00\x00\x00\x00\x01\x00\x009\xb7\
-\x00\x00\x01\x9e\x00\x00\x00\x00\x00\x01\x00\x00I\x8b\
-\x00\x00\x01\x16\x00\x00\x00\x00\x00\x01\x00\x00@\x82\
-\x00\x00\x00x\x00\x00\x00\x00\x00\x01\x00\x007\xf1\
-\x00\x00\x01\xba\x00\x00\x00\x00\x00\x01\x00\x00K#\
-\x00\x00\x01.\x00\x00\x00\x00\x00\x01\x00\x00BQ\
-\x00\x00\x01\x80\x00\x00\x00\x00\x00\x01\x00\x00G\xdf\
-\x00\x00\x00\xaa\x00\x00\x00\x00\x00\x01\x00\x00;]\
-\x00\x00\x01J\x00\x00\x00\x00\x00\x01\x00\x00D\x1a\
-\x00\x00\x00\xc6\x00\x00\x00\x00\x00\x01\x00\x00<Z\
-\x00\x00\x00\xe2\x00\x00\x00\x00\x00\x01\x00\x00>\x13\
-\x00\x00\x01^\x00\x00\x00\x00\x00\x01\x00\x00F\x9e\
+\x00\x00\x00\xfc\x00\x00\x00\x00\x00\x01\x00\x00A.\
+\x00\x00\x00\x92\x00\x00\x00\x00\x00\x01\x00\x00;\x90\
+\x00\x00\x01\x9e\x00\x00\x00\x00\x00\x01\x00\x00Kd\
+\x00\x00\x01\x16\x00\x00\x00\x00\x00\x01\x00\x00B[\
+\x00\x00\x00x\x00\x00\x00\x00\x00\x01\x00\x009\xca\
+\x00\x00\x01\xba\x00\x00\x00\x00\x00\x01\x00\x00L\xfc\
+\x00\x00\x01.\x00\x00\x00\x00\x00\x01\x00\x00D*\
+\x00\x00\x01\x80\x00\x00\x00\x00\x00\x01\x00\x00I\xb8\
+\x00\x00\x00\xaa\x00\x00\x00\x00\x00\x01\x00\x00=6\
+\x00\x00\x01J\x00\x00\x00\x00\x00\x01\x00\x00E\xf3\
+\x00\x00\x00\xc6\x00\x00\x00\x00\x00\x01\x00\x00>3\
+\x00\x00\x00\xe2\x00\x00\x00\x00\x00\x01\x00\x00?\xec\
+\x00\x00\x01^\x00\x00\x00\x00\x00\x01\x00\x00Hw\
 \x00\x00\x00\x1e\x00\x00\x00\x00\x00\x01\x00\x00\x00\x00\
-\x00\x00\x00<\x00\x00\x00\x00\x00\x01\x00\x00\x13;\
-\x00\x00\x00Z\x00\x00\x00\x00\x00\x01\x00\x00&\xf0\
+\x00\x00\x00<\x00\x00\x00\x00\x00\x01\x00\x00\x13\xdd\
+\x00\x00\x00Z\x00\x00\x00\x00\x00\x01\x00\x00(;\
 "
 
 def qInitResources():

@@ -30,23 +30,20 @@ from PySide6.QtWidgets import (
     QWidget,
 )
 
-from prm9tool.catalogue.commissioning import Blocker, NmtCommand
 from prm9tool.catalogue.signals import BY_KEY, signals_for
-from prm9tool.errors import ValueRangeError
 from prm9tool.model.document import ParameterDocument
 from prm9tool.online.connection_protocol import ScopeConnection
 from prm9tool.online.valve_control import ValveControl, blocker_text, status_blocker
 from prm9tool.scope import Capture, GeneratorSettings, write_csv
-from prm9tool.translate import error_text
 from prm9tool.views import prompts
 from prm9tool.views.scope_display import ScopeDisplay
 from prm9tool.views.scope_generator import GeneratorPanel, SetpointGenerator
 from prm9tool.views.scope_panels import ChannelPanel, ControlPanel
 from prm9tool.views.scope_plot import ScopePlot
 from prm9tool.views.scope_readout import CursorPanel, StepPanel
+from prm9tool.views.scope_start import GeneratorStart, measure_against_demand
 
 REDRAW_MS = 33  # ~30 Hz
-ENABLEABLE = (Blocker.WAITING_FOR_MASTER, Blocker.DISABLED, Blocker.HOLD, Blocker.NMT_STOPPED)
 
 
 class ScopeWidget(QWidget):
@@ -64,12 +61,12 @@ class ScopeWidget(QWidget):
         super().__init__(parent)
         self._connection = connection
         self._document = document
-        self._control = control  # NMT and the enable sequence, offered before the generator
         self._status: object | None = None  # the valve's latest status
         self._running = False
         self._accepting = False  # False between a (re)start request and stream_started
         self._generator_note = ""
         self.generator = SetpointGenerator(connection, self)
+        self._starter = GeneratorStart(control, self)  # the questions before it starts
         self._build()
         self._connect()
         self._on_type_key_changed()
@@ -336,7 +333,7 @@ class ScopeWidget(QWidget):
 
     def _recording_text(self) -> str:
         rate = self.display.capture.rate_hz if self.display.capture else 0
-        lost = getattr(self._connection, "samples_lost", 0) or 0
+        lost = self._connection.samples_lost
         text = self.tr("Recording at {0} Hz.").format(rate)
         if lost:
             text += " " + self.tr("{0} samples lost on the link.").format(lost)
@@ -352,54 +349,15 @@ class ScopeWidget(QWidget):
 
     # --- generator ---------------------------------------------------------------------------
     def _on_generator_start_requested(self, settings: GeneratorSettings) -> None:
-        title = self.tr("Setpoint generator")
-        try:
-            settings.check()
-        except ValueRangeError as exc:
-            prompts.inform(self, prompts.Icon.Warning, title, error_text(exc))
+        if not self._starter.confirmed(settings, self._status):
             return
-        answer = prompts.ask(
-            self,
-            prompts.Icon.Warning,
-            title,
-            self.tr(
-                "The generator will drive the valve's setpoint and the valve will move.\n"
-                "Make sure the machine is safe to move. Start the generator?"
-            ),
-            prompts.Button.Yes | prompts.Button.No,
-            prompts.Button.No,
-        )
-        if answer != prompts.Button.Yes:
-            return
-        self._offer_enable()
         self._generator_note = ""
         try:
             self.generator.start(settings)
         except RuntimeError as exc:
             self._say(str(exc))
-
-    def _offer_enable(self) -> None:
-        """A valve that waits for a CANopen master (or is not enabled) would not move: offer
-        NMT start and the enable sequence before the generator starts."""
-        reason = status_blocker(self._status)
-        if self._control is None or reason not in ENABLEABLE:
             return
-        answer = prompts.ask(
-            self,
-            prompts.Icon.Question,
-            self.tr("Setpoint generator"),
-            self.tr(
-                "The valve does not follow its setpoint: {0}\n\nEnable it now (NMT start, "
-                "control word 08h → 09h → 0Bh → 0Fh)?"
-            ).format(blocker_text(reason, self._status)),
-            prompts.Button.Yes | prompts.Button.No,
-            prompts.Button.Yes,
-        )
-        if answer != prompts.Button.Yes:
-            return
-        if str(getattr(self._status, "nmt_state", "off")) in ("pre-operational", "stopped"):
-            self._control.nmt(NmtCommand.START)
-        self._control.enable()
+        measure_against_demand(self.channels, self.step_panel)
 
     def _on_generator_stopped_by_link(self) -> None:
         self._generator_note = self.tr("The link dropped: the setpoint generator has stopped.")

@@ -1,33 +1,31 @@
 """Setpoint generator for tuning: drives the valve's setpoint through the override objects.
 
 While SETPOVRON = 1 the firmware takes its setpoint from SETPOVR instead of the analog input.
-The generator writes SETPOVR every tick in which the value changed and at least every 100 ms
-(the firmware drops the override after 500 ms without USB traffic), and writes SETPOVRON = 0
-when it stops: on Stop, when the scope closes and before the program goes offline. When the
-valve refuses one of these writes the generator stops and says why. When the link drops it
-only stops its timer: nothing can be written any more, and the firmware switches the override
-off by itself; the generator still switches it off at the next connection, in case the valve
-did not notice (an emulated valve stands still while offline).
+The waveform itself runs off the GUI thread, on the valve's own time base
+(``connection.start_generator``, :mod:`prm9tool.online.setpoint_driver`): exact to the
+valve's 200 µs cycle on an emulated valve, timed against the sample stream over a link. This
+class is its switch: it starts it (the override goes on), stops it (SETPOVRON = 0) on Stop,
+when the scope closes and before the program goes offline, and stops and says why when the
+valve refuses one of its writes. When the link drops it only stops: nothing can be written
+any more, and the firmware switches the override off by itself 500 ms after the last USB
+report; the generator still switches it off at the next connection, in case the valve did not
+notice (an emulated valve stands still while offline).
 """
 
 from __future__ import annotations
 
-import time
-
-from PySide6.QtCore import QObject, QTimer, Signal
+from PySide6.QtCore import QObject, Signal
 from PySide6.QtWidgets import QComboBox, QDoubleSpinBox, QLabel, QPushButton, QWidget
 
 from prm9tool.online.connection_protocol import ScopeConnection
 from prm9tool.scope import GeneratorSettings, Waveform, setpoint_limits
 from prm9tool.views.scope_panels import SPACE, control_row, section_label
 
-TICK_MS = 40  # setpoint update period (25 Hz)
-KEEPALIVE_S = 0.1  # rewrite an unchanged setpoint this often
 OVERRIDE_OBJECTS = frozenset({"SETPOVR", "SETPOVRON"})
 
 
 class SetpointGenerator(QObject):
-    """Runs a :class:`GeneratorSettings` waveform on the valve's setpoint override."""
+    """Starts and stops a :class:`GeneratorSettings` waveform on the valve's setpoint."""
 
     running_changed = Signal(bool)
     stopped_by_link = Signal()  # the link dropped while running
@@ -37,12 +35,7 @@ class SetpointGenerator(QObject):
         super().__init__(parent)
         self._connection = connection
         self._settings = GeneratorSettings()
-        self._timer = QTimer(self)
-        self._timer.setInterval(TICK_MS)
-        self._timer.timeout.connect(self._on_tick)
-        self._started = 0.0
-        self._last_raw: int | None = None
-        self._last_write = 0.0
+        self._running = False
         self._override_left_on = False  # SETPOVRON may be 1 in the valve without us running
         self._last_failure = ""
         connection.lost.connect(self._on_link_lost)
@@ -53,7 +46,12 @@ class SetpointGenerator(QObject):
     @property
     def running(self) -> bool:
         """True while the generator drives the setpoint."""
-        return self._timer.isActive()
+        return self._running
+
+    @property
+    def settings(self) -> GeneratorSettings:
+        """The waveform last started."""
+        return self._settings
 
     def start(self, settings: GeneratorSettings) -> None:
         """Check ``settings``, switch the override on and start the waveform.
@@ -65,36 +63,23 @@ class SetpointGenerator(QObject):
         if not self._connection.is_online:
             raise RuntimeError(self.tr("The setpoint generator needs a connected valve."))
         self._settings = settings
-        self._started = time.monotonic()
-        self._last_raw = None
-        self._timer.start()  # running from here: a refusal of the first writes stops it
-        self._write_setpoint(0.0)
+        self._running = True  # running from here: a refusal of the first writes stops it
         self._override_left_on = True
-        self._connection.write("SETPOVRON", 1)
+        self._connection.start_generator(settings)
         self.running_changed.emit(True)
 
     def stop(self) -> None:
         """Switch the override off (when online) and stop."""
         if not self.running:
             return
-        self._timer.stop()
+        self._running = False
         self._switch_off()
         self.running_changed.emit(False)
 
     def _switch_off(self) -> None:
         if self._connection.is_online:
-            self._connection.write("SETPOVRON", 0)
+            self._connection.stop_generator()
             self._override_left_on = False
-
-    def _on_tick(self) -> None:
-        self._write_setpoint(time.monotonic() - self._started)
-
-    def _write_setpoint(self, elapsed: float) -> None:
-        raw = self._settings.raw_at(elapsed)
-        now = time.monotonic()
-        if raw != self._last_raw or now - self._last_write >= KEEPALIVE_S:
-            self._connection.write("SETPOVR", raw)
-            self._last_raw, self._last_write = raw, now
 
     def _on_connection_failed(self, message: str) -> None:
         self._last_failure = message  # write_failed follows for a refused write
@@ -111,7 +96,7 @@ class SetpointGenerator(QObject):
 
     def _on_link_lost(self, *_: object) -> None:
         if self.running:
-            self._timer.stop()
+            self._running = False
             self.running_changed.emit(False)
             self.stopped_by_link.emit()
 
@@ -119,7 +104,8 @@ class SetpointGenerator(QObject):
         if not online:
             self._on_link_lost()
         elif self._override_left_on and not self.running:
-            self._switch_off()
+            self._connection.write("SETPOVRON", 0)
+            self._override_left_on = False
 
 
 class GeneratorPanel(QWidget):

@@ -19,8 +19,8 @@ from collections.abc import Sequence
 
 import numpy as np
 import pyqtgraph as pg
-from PySide6.QtCore import QLineF, QRectF, QSize, Qt, Signal
-from PySide6.QtGui import QColor, QFontMetrics, QImage, QPainter, QPen, QResizeEvent
+from PySide6.QtCore import QSize, Qt, Signal
+from PySide6.QtGui import QFontMetrics, QImage, QResizeEvent
 from PySide6.QtWidgets import (
     QGraphicsItem,
     QGridLayout,
@@ -36,83 +36,18 @@ from prm9tool.catalogue.signals import Signal as MeasuringPoint
 from prm9tool.i18n import format_significant, text
 from prm9tool.scope import axis_ranges, peak_decimate
 from prm9tool.views.localized_axis import LocalizedAxis
+from prm9tool.views.scope_items import CursorLine, PlotGrid
 
 COLOURS = ("#ffd43b", "#4dd0e1", "#ff7eb6")  # channel 1, 2, 3
 CURSOR_COLOUR = "#e0e0e0"
 SHARED_AXIS_COLOUR = "#c8c8c8"  # tick labels of an axis two channels share
 SHARED_LABEL_CHARS = 72  # longer joined names do not fit a 520-pixel plot: channel numbers instead
 LIVE_COLOUR = "#7a7a7a"  # legend values newer than the held trace
-GRAB_PX = 6  # the mouse grabs a cursor line this many pixels either side of it
-GRID_COLOUR = "#3a3d42"  # opaque: a translucent grid line costs 2-4 ms per rolling frame
 
 
 def _format(value: float, unit: str) -> str:
     """A value with 4 significant digits and its unit ('—' for NaN)."""
     return "—" if math.isnan(value) else f"{format_significant(value, 4)} {unit}"
-
-
-class _Grid(QGraphicsItem):
-    """The grid at channel 1's major ticks, under every channel's curves.
-
-    pyqtgraph's own grid is drawn by the axes, above the main view, so it has to be translucent
-    not to cut the curves; blending it across the plot on every frame of a running recording
-    costs more than the curves. This one lies under all views and is drawn opaque.
-    """
-
-    def __init__(self, view: pg.ViewBox, x_axis: pg.AxisItem, y_axis: pg.AxisItem) -> None:
-        super().__init__()
-        self._view, self._x_axis, self._y_axis = view, x_axis, y_axis
-        self._rect = QRectF()
-        self._pen = QPen(QColor(GRID_COLOUR), 0)  # cosmetic, 1 pixel
-        self.setZValue(-20)  # under the views of channels 2 and 3 (-10) and the plot item (0)
-        self.setAcceptedMouseButtons(Qt.MouseButton.NoButton)
-        view.sigResized.connect(self.follow_view)
-        view.sigRangeChanged.connect(lambda *_: self.update())
-
-    def follow_view(self) -> None:
-        """Take the main view's place in the scene."""
-        self.prepareGeometryChange()
-        self._rect = self._view.sceneBoundingRect()
-        self.update()
-
-    def boundingRect(self) -> QRectF:
-        """The main view's rectangle in scene coordinates."""
-        return self._rect
-
-    def lines(self) -> tuple[list[float], list[float]]:
-        """The x and y values (channel 1's view units) a grid line is drawn at."""
-        (x0, x1), (y0, y1) = self._view.viewRange()
-        r = self._rect
-        return (
-            self._major(self._x_axis, x0, x1, r.width()),
-            self._major(self._y_axis, y0, y1, r.height()),
-        )
-
-    @staticmethod
-    def _major(axis: pg.AxisItem, low: float, high: float, pixels: float) -> list[float]:
-        if not high > low or pixels <= 0:
-            return []
-        levels = axis.tickValues(low, high, pixels)
-        return [v for v in levels[0][1] if low <= v <= high] if levels else []
-
-    def paint(self, painter: QPainter, _option: object, _widget: object = None) -> None:
-        """Vertical lines at the time ticks, horizontal ones at channel 1's ticks."""
-        r = self._rect
-        (x0, x1), (y0, y1) = self._view.viewRange()
-        if r.isEmpty() or not (x1 > x0 and y1 > y0):
-            return
-        xs, ys = self.lines()
-        sx, sy = r.width() / (x1 - x0), r.height() / (y1 - y0)
-        painter.setPen(self._pen)
-        segments = [
-            QLineF(r.left() + (x - x0) * sx, r.top(), r.left() + (x - x0) * sx, r.bottom())
-            for x in xs
-        ]
-        segments += [
-            QLineF(r.left(), r.bottom() - (y - y0) * sy, r.right(), r.bottom() - (y - y0) * sy)
-            for y in ys
-        ]
-        painter.drawLines(segments)
 
 
 class _ElidedLabel(QLabel):
@@ -146,23 +81,6 @@ class _ElidedLabel(QLabel):
     def _elide(self) -> None:
         metrics = self.fontMetrics()
         self.setText(metrics.elidedText(self._full, Qt.TextElideMode.ElideRight, self.width()))
-
-
-class _CursorLine(pg.InfiniteLine):
-    """A cursor line the mouse grabs up to GRAB_PX pixels either side of it.
-
-    pyqtgraph's line reacts only within its pen width plus a pixel (±1.5 pixels for a
-    cosmetic 1-pixel pen), so a press next to it panned the plot instead of moving it.
-    """
-
-    def _computeBoundingRect(self) -> QRectF:
-        rect = QRectF(super()._computeBoundingRect())  # the drawing area, along the line
-        _, ortho = self.pixelVectors(direction=pg.Point(1, 0))
-        if ortho is not None:
-            grab = GRAB_PX * abs(ortho.y())
-            rect.setTop(min(rect.top(), -grab))
-            rect.setBottom(max(rect.bottom(), grab))
-        return rect
 
 
 class _LegendEntry(QWidget):
@@ -250,7 +168,7 @@ class ScopePlot(QWidget):
             view.setXLink(self.item)
             view.setZValue(-10)  # below the main plot: mouse and cursors act on channel 1's view
         self.views[0].sigResized.connect(self._sync_geometry)
-        self.grid = _Grid(self.views[0], self.item.getAxis("bottom"), self.axes[0])
+        self.grid = PlotGrid(self.views[0], self.item.getAxis("bottom"), self.axes[0])
         self.item.scene().addItem(self.grid)
         self.grid.follow_view()
         self._auto = [True] * MAX_CHANNELS
@@ -284,7 +202,7 @@ class ScopePlot(QWidget):
 
     def _make_cursor(self, name: str) -> pg.InfiniteLine:
         pen = pg.mkPen(CURSOR_COLOUR, width=1, style=Qt.PenStyle.DashLine)
-        line = _CursorLine(angle=90, movable=True, pen=pen, label=name)
+        line = CursorLine(angle=90, movable=True, pen=pen, label=name)
         line.label.setColor(CURSOR_COLOUR)
         line.label.setPosition(0.96)
         line.sigPositionChanged.connect(lambda *_: self.cursors_moved.emit())

@@ -104,12 +104,17 @@ class MainStatusBar(QStatusBar):
             mode = self.tr("ONLINE") if self._synchronised else self.tr("CONNECTING")
         self.mode_label.setText(self.tr("Mode: {0}").format(mode))
         self.mode_label.setToolTip(
-            self.tr("Connected; the document and the valve are being compared")
+            self.tr(
+                "Connected, but the document and the valve do not agree yet: edits are not sent to the valve"
+            )
             if self._online and not self._synchronised
             else ""
         )
-        level = self.tr("Expert") if self._expert else self.tr("Basic")
-        self.level_label.setText(self.tr("Level: {0}").format(level))
+        levels = [self.tr("Level: {0}").format(t) for t in (self.tr("Basic"), self.tr("Expert"))]
+        self.level_label.setText(levels[self._expert])
+        margins = self.level_label.contentsMargins()  # as wide as the longer: no jump, no clip
+        widest = max(self.level_label.fontMetrics().horizontalAdvance(t) for t in levels)
+        self.level_label.setMinimumWidth(widest + margins.left() + margins.right() + 4)
         self.status_label.setText(self.tr("Status: {0}").format(self._status or "—"))
         self.firmware_label.setText(self.tr("FW: {0}").format(self._firmware or "—"))
         name = self._path.name if self._path is not None else self.tr("untitled")

@@ -13,17 +13,14 @@ from PySide6.QtWidgets import (
     QFormLayout,
     QHBoxLayout,
     QLabel,
-    QLineEdit,
     QPushButton,
-    QTableWidget,
-    QTableWidgetItem,
     QVBoxLayout,
     QWidget,
 )
 
 from prm9tool.analysis.model import Targets
 from prm9tool.analysis.pid import to_parameters
-from prm9tool.analysis.profile import DEFAULT, ProfileError, load_profile
+from prm9tool.analysis.profile import DEFAULT
 from prm9tool.analysis.static import linearization_values, propose_linearization
 from prm9tool.characterize.autotune import AutotuneResult, compare_steps, model_tune
 from prm9tool.characterize.procedures import (
@@ -35,16 +32,11 @@ from prm9tool.characterize.procedures import (
     critical_gain_tune,
     static_test,
 )
-from prm9tool.characterize.run import Characterization, characterize, write_csv_files
+from prm9tool.characterize.run import Characterization
 from prm9tool.views.tuning_plot import COLOURS, Plot, Series, paint_plot
 from prm9tool.views.tuning_report import (
     bode_plots,
-    figure_label,
-    limit_text,
     static_plot,
-    value_text,
-    verdict,
-    write_pdf,
 )
 
 if TYPE_CHECKING:
@@ -57,7 +49,7 @@ class PlotView(QWidget):
     def __init__(self, parent: QWidget | None = None) -> None:
         super().__init__(parent)
         self.plots: list[Plot] = []
-        self.setMinimumHeight(260)
+        self.setMinimumHeight(200)
 
     def show_plots(self, plots: list[Plot]) -> None:
         """Replace what is shown."""
@@ -87,6 +79,7 @@ class Page(QWidget):
         self.run_button.clicked.connect(self.run)
         self.result = QLabel()
         self.result.setWordWrap(True)
+        self.result.setMinimumHeight(self.result.fontMetrics().height() * 3)
         self.plot = PlotView()
         self.buttons = QHBoxLayout()
         self.buttons.addWidget(self.run_button)
@@ -133,6 +126,7 @@ class AutotunePage(Page):
         self.amplitude = self.field("amplitude", spin(50.0, 1.0, 90.0, "%"))
         self.overshoot = self.field("overshoot", spin(10.0, 0.0, 50.0, "%"))
         self.settling = self.field("settling", spin(40.0, 2.0, 2000.0, "ms", 0))
+        self.limit = self.field("limit", spin(60.0, 5.0, 100.0, "%"))
         self.accept_button = QPushButton()
         self.accept_button.setEnabled(False)
         self.accept_button.clicked.connect(self.accept)
@@ -145,18 +139,19 @@ class AutotunePage(Page):
         amplitude = self.amplitude.value()
         targets = Targets(self.overshoot.value(), self.settling.value() / 1000.0)
         duration = max(3 * targets.settling_s, 0.06)
+        limit = self.limit.value()
         if self.method.currentIndex() == 0:
             what = self.tr("steps of %1 % from 0 %, a few times, about %2 s in all")
             what = what.replace("%1", f"{amplitude:g}").replace("%2", f"{4 * duration:.1f}")
             self.window_.start(
-                "autotune", what, lambda rig: model_tune(rig, targets, loop, amplitude)
+                "autotune", what, lambda rig: model_tune(rig, targets, loop, amplitude, 3, limit)
             )
             return
         what = self.tr("P only with rising gain until the loop oscillates (steps of 5 %, "
-                       "oscillation stopped at ±40 %), about 5 s")  # fmt: skip
+                       "oscillation stopped at ±%1 %), about 5 s").replace("%1", f"{limit:g}")  # fmt: skip
 
         def critical(rig: Any) -> tuple[CriticalGainResult, Any]:
-            found = critical_gain_tune(rig, loop)
+            found = critical_gain_tune(rig, loop, limit_pct=limit)
             proposed = to_parameters(LOOPS[loop].prefix, found.gains)
             return found, compare_steps(rig, loop, proposed, amplitude, duration)
 
@@ -191,7 +186,7 @@ class AutotunePage(Page):
             for k, v in self.proposal.items()
         ]
         self.result.setText(
-            head + "<br>" + "<br>".join(rows) + "<br>" + self._figures(before, after)
+            head + "<br>" + " · ".join(rows) + "<br>" + self._figures(before, after)
         )
         series = [
             Series(before.record.t * 1000, before.record.channels[LOOPS[loop].actual], self.tr("before (measured)"), COLOURS[0]),
@@ -235,6 +230,7 @@ class AutotunePage(Page):
         self.tr_label("amplitude", self.tr("Step amplitude:"))
         self.tr_label("overshoot", self.tr("Target overshoot at most:"))
         self.tr_label("settling", self.tr("Target settling time (±2 %) at most:"))
+        self.tr_label("limit", self.tr("Stop when the response leaves 0 ± (band):"))
         self.run_button.setText(self.tr("Run autotune"))
         self.accept_button.setText(self.tr("Accept the proposed gains"))
 
@@ -350,69 +346,3 @@ class StaticPage(Page):
         self.tr_label("period", self.tr("Triangle period:"))
         self.run_button.setText(self.tr("Measure the static characteristic"))
         self.apply_button.setText(self.tr("Apply the proposed linearization"))
-
-
-class ReportPage(Page):
-    """The end-of-line test with an acceptance profile; PDF and CSV."""
-
-    def __init__(self, window: TuningWindow) -> None:
-        super().__init__(window)
-        self.profile_path = self.field("profile", QLineEdit())
-        self.table = QTableWidget(0, 4)
-        self.layout().insertWidget(3, self.table, 1)  # type: ignore[union-attr]
-        self.plot.hide()
-        self.save_button = QPushButton()
-        self.save_button.setEnabled(False)
-        self.save_button.clicked.connect(self.save)
-        self.buttons.insertWidget(1, self.save_button)
-        self.last: Characterization | None = None
-
-    def run(self) -> None:
-        """All tests of the profile."""
-        path = self.profile_path.text().strip()
-        try:
-            profile = load_profile(path) if path else DEFAULT
-        except ProfileError as exc:
-            self.result.setText(str(exc))
-            return
-        what = self.tr("steps of %1 %, a sine sweep of ±%2 % and a triangle over the whole range, about %3 s").replace(
-            "%1", ", ".join(f"{a:g}" for a in profile.step_amplitudes_pct)).replace(
-            "%2", f"{profile.bode_amplitude_pct:g}").replace(
-            "%3", f"{profile.bode_duration_s + profile.static_period_s + 1:.0f}")  # fmt: skip
-        self.window_.start("report", what, lambda rig: characterize(rig, profile))
-
-    def show_result(self, result: object) -> None:
-        """Every figure with its verdict."""
-        assert isinstance(result, Characterization)
-        self.last = result
-        self.table.setRowCount(len(result.figures))
-        for row, f in enumerate(result.figures):
-            cells = (figure_label(f), value_text(f), limit_text(f), verdict(f.passed))
-            for col, text in enumerate(cells):
-                self.table.setItem(row, col, QTableWidgetItem(text))
-        self.table.resizeColumnsToContents()
-        self.result.setText(self.tr("Result: %1").replace("%1", verdict(result.passed)))
-        self.save_button.setEnabled(True)
-
-    def save(self) -> None:
-        """The PDF report and the raw data as CSV beside it."""
-        if self.last is None:
-            return
-        name = f"{self.last.info.serial}-report.pdf"
-        path = self.window_.save_file(self.tr("Save the test report"), "PDF (*.pdf)", name)
-        if path is None:
-            return
-        try:
-            write_pdf(self.last, path)
-            write_csv_files(self.last, path.with_suffix(""))
-        except OSError as exc:
-            self.result.setText(self.tr("Cannot write the report: %1").replace("%1", str(exc)))
-
-    def retranslate(self) -> None:
-        """Texts."""
-        self.tr_label("profile", self.tr("Acceptance profile (TOML, empty: default):"))
-        self.run_button.setText(self.tr("Run the end-of-line test"))
-        self.save_button.setText(self.tr("Save PDF and CSV…"))
-        self.table.setHorizontalHeaderLabels(
-            [self.tr("Figure"), self.tr("Value"), self.tr("Limit"), self.tr("Result")]
-        )

@@ -17,6 +17,7 @@ from pathlib import Path
 from PySide6.QtCore import QCoreApplication, QUrl
 from PySide6.QtGui import QGuiApplication, QTextDocument
 from PySide6.QtPrintSupport import QPrinter
+from PySide6.QtWidgets import QApplication
 
 from prm9tool.analysis.profile import Limit
 from prm9tool.characterize.run import Characterization, Figure
@@ -24,7 +25,7 @@ from prm9tool.views.record import configure_pdf
 from prm9tool.views.tuning_plot import COLOURS, Plot, Series, plot_image
 
 translate = QCoreApplication.translate
-_APP: list[QGuiApplication] = []
+_APP: list[QApplication] = []
 
 
 def figure_label(figure: Figure) -> str:
@@ -219,10 +220,13 @@ def _parameters(c: Characterization) -> str:
 
 
 def ensure_app() -> None:
-    """A QGuiApplication for painting text (offscreen when none runs: headless lines)."""
+    """An application object for painting text (offscreen when none runs: headless lines).
+
+    A QApplication, not a QGuiApplication: a later GUI in the same process (tests) needs one.
+    """
     if QGuiApplication.instance() is None:
         os.environ.setdefault("QT_QPA_PLATFORM", "offscreen")
-        _APP.append(QGuiApplication(["prm9tool"]))
+        _APP.append(QApplication(["prm9tool"]))
 
 
 def write_pdf(c: Characterization, path: Path) -> None:

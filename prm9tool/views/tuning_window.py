@@ -31,7 +31,8 @@ from prm9tool.catalogue import CATALOGUE
 from prm9tool.catalogue.variant import Config
 from prm9tool.model.document import ParameterDocument
 from prm9tool.online.tuning_runner import SimulationRunner, TuningRunner, ValveRunner
-from prm9tool.views.tuning_pages import AutotunePage, BodePage, ReportPage, StaticPage
+from prm9tool.views.tuning_pages import AutotunePage, BodePage, StaticPage
+from prm9tool.views.tuning_report_page import ReportPage
 
 
 def spin(value: float, low: float, high: float, suffix: str, decimals: int = 1) -> QDoubleSpinBox:

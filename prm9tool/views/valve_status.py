@@ -20,7 +20,7 @@ from PySide6.QtWidgets import (
 )
 
 from prm9tool.i18n import format_measured
-from prm9tool.online.connection import ValveConnection
+from prm9tool.online.connection_protocol import StatusConnection, StatusView, ValveIdentity
 from prm9tool.online.valve_control import ValveControl
 from prm9tool.views.commissioning_panel import CommissioningPanel
 from prm9tool.views.emcy import emcy_text
@@ -107,14 +107,14 @@ class ValveStatusWindow(QDialog):
 
     def __init__(
         self,
-        connection: ValveConnection,
+        connection: StatusConnection,
         parent: QWidget | None = None,
         control: ValveControl | None = None,
     ) -> None:
         super().__init__(parent)
         self._connection = connection
         self.commissioning = CommissioningPanel(control) if control is not None else None
-        self._status: object | None = None
+        self._status: StatusView | None = None
         self.fields = {name: QLabel() for name in _FIELDS}
         for label in self.fields.values():
             label.setTextInteractionFlags(Qt.TextInteractionFlag.TextSelectableByMouse)
@@ -193,21 +193,21 @@ class ValveStatusWindow(QDialog):
         self._show_device(self._connection.device)
         self._show_status(self._status)
 
-    def _on_connection_device_changed(self, info: object) -> None:
+    def _on_connection_device_changed(self, info: ValveIdentity | None) -> None:
         self._show_device(info)
 
-    def _on_connection_status_changed(self, status: object) -> None:
+    def _on_connection_status_changed(self, status: StatusView) -> None:
         self._status = status
         self._show_status(status)
 
-    def _show_device(self, info: object | None) -> None:
+    def _show_device(self, info: ValveIdentity | None) -> None:
         online = self._connection.is_online
         self.fields["mode"].setText(self.tr("ONLINE") if online else self.tr("OFFLINE"))
-        for name, attribute in (("firmware", "firmware"), ("serial", "serial")):
-            self.fields[name].setText(str(getattr(info, attribute, "—")) if info else "—")
-        self.fields["type_key"].setText(str(getattr(info, "type_key", "—")) if info else "—")
+        self.fields["firmware"].setText(info.firmware if info else "—")
+        self.fields["serial"].setText(str(info.serial) if info else "—")
+        self.fields["type_key"].setText(info.type_key if info else "—")
 
-    def _show_status(self, status: object | None) -> None:
+    def _show_status(self, status: StatusView | None) -> None:
         if self.commissioning is not None:
             self.commissioning.show_status(status)
         if status is None:
@@ -219,15 +219,12 @@ class ValveStatusWindow(QDialog):
                 led.set_state("off", "off", False)
                 state.setText("—")
             return
-        self.fields["state"].setText(str(getattr(status, "device_state", "")))
-        self.fields["nmt"].setText(str(getattr(status, "nmt_state", "")))
-        temperature = format_measured(getattr(status, "temperature_c", 0.0), "°C")
-        self.fields["temperature"].setText(f"{temperature} °C")
-        self.fields["supply"].setText(f"{format_measured(getattr(status, 'supply_v', 0.0), 'V')} V")
+        self.fields["state"].setText(str(status.device_state))
+        self.fields["nmt"].setText(status.nmt_state)
+        self.fields["temperature"].setText(f"{format_measured(status.temperature_c, '°C')} °C")
+        self.fields["supply"].setText(f"{format_measured(status.supply_v, 'V')} V")
         self._show_errors(status)
-        for led, state, led_state in zip(
-            self.leds, self._led_states, getattr(status, "leds", ()), strict=False
-        ):
+        for led, state, led_state in zip(self.leds, self._led_states, status.leds, strict=False):
             led.set_state(led_state.color, led_state.pattern, led_state.lit)
             state.setText(self._led_text(led_state.color, led_state.pattern))
 
@@ -256,13 +253,13 @@ class ValveStatusWindow(QDialog):
             return self.tr("off")
         return f"{colours[colour]}\n{patterns[pattern]}"
 
-    def _show_errors(self, status: object) -> None:
+    def _show_errors(self, status: StatusView) -> None:
         self.errors.clear()
-        codes = list(getattr(status, "active_errors", ()))
-        fallback = str(getattr(status, "error_text", ""))
+        codes = list(status.active_errors)
+        fallback = status.error_text
         for code in codes:
             self.errors.addItem(f"0x{code:04X}  {emcy_text(code, fallback)}")
-        if not codes and getattr(status, "warning", False):
+        if not codes and status.warning:
             self.errors.addItem(f"0x0000  {emcy_text(0, fallback)}")
         if self.errors.count() == 0:
             self.errors.addItem(self.tr("No error."))

@@ -21,6 +21,7 @@ from prm9tool.model.access import AccessModel
 from prm9tool.model.document import ParameterDocument, Raw
 from prm9tool.model.undo import DocumentUndo
 from prm9tool.online.connection import ValveConnection
+from prm9tool.online.connection_protocol import ListedValves, UploadOutcome, ValveListing
 from prm9tool.online.sync import ValveSync
 from prm9tool.translate import error_text, translated
 from prm9tool.views import prompts
@@ -77,7 +78,7 @@ class ValveWorkflow(QObject):
         connection.backup_written.connect(self._on_connection_backup_written)
 
     # --- communication -----------------------------------------------------------------------
-    def configure_hid(self) -> object | None:
+    def configure_hid(self) -> ValveListing | None:
         """Show the HID configuration; returns the chosen device entry (or None)."""
         dialog = HidConfigurationDialog(
             self._connection.list_devices_async, self._settings, self._window
@@ -86,7 +87,7 @@ class ValveWorkflow(QObject):
             return None
         return dialog.selected_entry()
 
-    def chosen_entry(self, entries: object) -> object | None:
+    def chosen_entry(self, entries: ListedValves) -> ValveListing | None:
         """The valve to go online with among the listed ``entries`` (or the exception listing
         raised): the one chosen before, the only one, or ask."""
         if isinstance(entries, Exception):  # a broken USB stack must not prevent the dialog
@@ -94,17 +95,17 @@ class ValveWorkflow(QObject):
                 self.tr("Listing the valves failed: {0}").format(error_text(entries))
             )
             entries = []
-        found = list(entries)  # type: ignore[call-overload]
+        found = list(entries)
         selected = str(self._settings.value(SELECTED_KEY, ""))
         for entry in found:
-            if str(getattr(entry, "device_id", "")) == selected:
+            if entry.device_id == selected:
                 return entry
         if len(found) == 1:
             return found[0]
         return self.configure_hid()
 
-    def go_online(self, entry: object | None = None) -> None:
-        """Connect to ``entry``; without one, list the valves (off the GUI thread) and take
+    def go_online(self, entry: ValveListing | str | None = None) -> None:
+        """Connect to ``entry`` (a listed valve or a device id); without one, list the valves (off the GUI thread) and take
         :meth:`chosen_entry`."""
         if self._connection.is_online:
             return
@@ -114,14 +115,14 @@ class ValveWorkflow(QObject):
         self.message_posted.emit(self.tr("Looking for valves…"))
         self._connection.list_devices_async(saved_emulators(self._settings), self._on_listed)
 
-    def _on_listed(self, entries: object) -> None:
+    def _on_listed(self, entries: ListedValves) -> None:
         if self._connection.is_online or self._connection.is_busy:
             return  # connected meanwhile (the HID dialog, the command line)
         entry = self.chosen_entry(entries)
         if entry is not None:
             self._connect(entry)
 
-    def _connect(self, entry: object) -> None:
+    def _connect(self, entry: ValveListing | str) -> None:
         self.message_posted.emit(self.tr("Connecting to {0}…").format(_name(entry)))
         self._connection.go_online(entry)
 
@@ -228,11 +229,12 @@ class ValveWorkflow(QObject):
 
     def _stamp(self, doc: ParameterDocument) -> None:
         info = self._connection.device
-        doc.source_serial = getattr(info, "serial", None)
-        doc.source_firmware = getattr(info, "firmware", None)
+        doc.source_serial = None if info is None else info.serial
+        doc.source_firmware = None if info is None else info.firmware
 
     def _valve_key(self) -> TypeKey | None:
-        text = str(getattr(self._connection.device, "type_key", ""))
+        info = self._connection.device
+        text = "" if info is None else info.type_key
         try:
             return TypeKey.parse(text)
         except TypeKeyError as exc:
@@ -396,15 +398,16 @@ class ValveWorkflow(QObject):
             )
 
     def _on_upload_finished(self, result: object) -> None:
-        if getattr(result, "stored", False):
+        outcome = result if isinstance(result, UploadOutcome) else None
+        if outcome is not None and outcome.stored:
             # values not from the document (a history record) become the document's too
             written = {m: v for m, v in self._uploading.items() if self._doc.values.get(m) != v}
             if written:
                 with self._sync.suspended():
                     self._doc.set_values(written, self.tr("Values written to the valve"), False)
             self._sync.start(self._doc.values)
-            count = int(getattr(result, "written", 0))
             at = QTime.currentTime().toString("HH:mm:ss")  # each upload's message differs
+            count = outcome.written
             message = self.tr("%n parameter(s) written, verified and stored at {0}", "", count)
             repeats, self._upload_repeats = self._upload_repeats, False
             if repeats:
@@ -416,9 +419,9 @@ class ValveWorkflow(QObject):
                 )
             self.message_posted.emit(message.format(at))
             return
-        mismatches = getattr(result, "mismatches", {}) or {}
+        mismatches = outcome.mismatches if outcome is not None else {}
         lines = [f"{mn}: {want} → {got}" for mn, (want, got) in mismatches.items()]
-        failure = getattr(result, "failure", None)  # e.g. a refused store: the valve's reason
+        failure = outcome.failure if outcome is not None else None  # e.g. a refused store
         details = "\n".join([failure, *lines] if failure else lines)
         prompts.inform(
             self._window,
@@ -427,7 +430,7 @@ class ValveWorkflow(QObject):
             self.tr(
                 "The upload failed at step “{0}”. Nothing was stored: after a restart the valve "
                 "holds its previous parameters."
-            ).format(str(getattr(result, "failed_step", ""))),
+            ).format("" if outcome is None else str(outcome.failed_step)),
             details,
         )
 
@@ -512,7 +515,7 @@ def _restart_and_read(session: Any) -> dict[str, Raw]:
     return dict(session.download())
 
 
-def _name(entry: object) -> str:
+def _name(entry: ValveListing | str) -> str:
     if isinstance(entry, str):
         return entry.removeprefix("emulator:")
-    return f"{getattr(entry, 'type_key', '')} #{getattr(entry, 'serial', '')}".strip()
+    return f"{entry.type_key} #{entry.serial}"

@@ -31,6 +31,7 @@ from prm9tool.device.emulator.loopstate import (
 )
 from prm9tool.device.emulator.nvimage import NvImage, is_nonvolatile
 from prm9tool.device.emulator.objdict import ObjectDictionary
+from prm9tool.device.emulator.override import OverrideProgram
 from prm9tool.device.emulator.statemachine import DeviceStateMachine
 from prm9tool.device.emulator.states import DeviceState, Fault
 
@@ -92,6 +93,8 @@ class Firmware:
         self.node_id = self.bitrate = 0
         self.can_enabled = self.terminator = False
         self.cycle_listeners: list[Callable[[float], None]] = []
+        self.program: OverrideProgram | None = None  # a setpoint waveform on SETPOVR
+        self._setpovr_key = CATALOGUE["SETPOVR"].key
         self.setpoint_dirty = True
         self.config_dirty = True
         self.coil_temperature = 25.0
@@ -114,9 +117,10 @@ class Firmware:
         node), which replaces the loop generator.
         """
         while cycles > 0:
+            span = self._apply_program() if self.program is not None else cycles
             if self.setpoint_dirty or self.config_dirty:
                 self._refresh_inputs()
-            n = min(cycles, self.tick_countdown)
+            n = min(cycles, self.tick_countdown, span)
             self.gen.send(n)
             self.cycles += n
             cycles -= n
@@ -124,6 +128,28 @@ class Firmware:
             if self.tick_countdown == 0:
                 self.tick_countdown = TICK_CYCLES
                 self.tick()
+
+    def _apply_program(self) -> int:
+        """SETPOVR ← the override program's value for this cycle; cycles it stays so.
+
+        Only the setpoint chain is recomputed (not the whole input refresh): a sine changes
+        the value nearly every cycle.
+        """
+        assert self.program is not None
+        value, span = self.program.value_and_span(self.cycles)
+        key = self._setpovr_key
+        if self.od.values.get(key) != value:
+            self.od.values[key] = value
+            if self.override_on and not (self.setpoint_dirty or self.config_dirty):
+                signals = config.static_setpoint(
+                    self.variant, self.value, float(value), self.setp_curve
+                )
+                self.loop.static_signals = signals
+                self.loop.target = signals[3]
+                self.loop.inputs_version += 1
+            else:
+                self.setpoint_dirty = True
+        return span
 
     # --- power ------------------------------------------------------------------------
     def power_up(self) -> None:
@@ -139,6 +165,7 @@ class Firmware:
         self.faults.reset()
         self.warning = False
         self.od.values[CATALOGUE["SETPOVRON"].key] = 0
+        self.program = None
         if self.loop.coefficients:
             self.gen.send(0)  # the plant (spool, load) keeps its physical state over a power cycle
         self.gen = make_loop(self.loop)

@@ -25,6 +25,7 @@ from prm9tool.device.emulator.constants import (
 from prm9tool.device.emulator.faults import WARNING_TEXT
 from prm9tool.device.emulator.firmware import Firmware
 from prm9tool.device.emulator.leds import leds
+from prm9tool.device.emulator.override import OverrideProgram, Source
 from prm9tool.device.emulator.pacing import Pacer
 from prm9tool.device.emulator.states import DeviceState, Fault, ValveStatus
 from prm9tool.errors import AccessDeniedError, ValueRangeError
@@ -237,6 +238,15 @@ class EmulatedValve:
         with self.lock:
             self._fw.injected.discard(fault)
             self._fw.setpoint_dirty = self._fw.config_dirty = True
+
+    def drive_override(self, source: Source | None) -> None:
+        """Apply ``source`` (times in s since now → SETPOVR raw values) to the setpoint
+        override on the valve's own clock, exact to the cycle (None: stop). It counts while
+        SETPOVRON = 1; a power cycle ends it."""
+        with self.lock:
+            self._fw.program = (
+                OverrideProgram(source, self._fw.cycles) if source is not None else None
+            )
 
     def usb_activity(self) -> None:
         """Called by the USB firmware for every report it receives (override watchdog)."""

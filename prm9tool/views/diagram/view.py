@@ -11,9 +11,6 @@ CANopen window is the main window's single one.
 
 from __future__ import annotations
 
-from collections.abc import Callable
-from typing import Any
-
 from PySide6.QtCore import QCoreApplication, QEvent, QRectF, Qt, Signal
 from PySide6.QtGui import (
     QContextMenuEvent,
@@ -30,9 +27,9 @@ from prm9tool.catalogue.signals import BY_KEY
 from prm9tool.i18n import format_measured, text
 from prm9tool.model.access import AccessModel
 from prm9tool.model.document import ParameterDocument
-from prm9tool.online.connection_protocol import DiagramConnection
+from prm9tool.online.connection_protocol import DiagramConnection, StepSimulation
 from prm9tool.views.diagram.colours import DiagramColours
-from prm9tool.views.diagram.dialogs import BlockContext, create_block_dialog
+from prm9tool.views.diagram.dialogs import BlockContext, SimulatorFactory, create_block_dialog
 from prm9tool.views.diagram.layout import layout_for
 from prm9tool.views.diagram.scene import DiagramScene
 from prm9tool.views.diagram.summary import block_detail, block_lines
@@ -77,7 +74,7 @@ class DiagramView(QGraphicsView):
         access: AccessModel,
         connection: DiagramConnection | None = None,
         parent: QWidget | None = None,
-        simulator_factory: Callable[[ParameterDocument, str], Any] | None = None,
+        simulator_factory: SimulatorFactory | None = None,
     ) -> None:
         super().__init__(parent)
         self._doc, self._access, self._connection = document, access, connection
@@ -117,7 +114,7 @@ class DiagramView(QGraphicsView):
     @property
     def is_online(self) -> bool:
         """True while the connection reports a valve online."""
-        return bool(getattr(self._connection, "is_online", False))
+        return self._connection is not None and self._connection.is_online
 
     def block_ids(self) -> list[str]:
         """Ids of the drawn blocks, in signal order."""
@@ -350,7 +347,7 @@ class DiagramView(QGraphicsView):
         super().changeEvent(event)
 
 
-def _step_simulator(document: ParameterDocument, loop: str) -> Any:
+def _step_simulator(document: ParameterDocument, loop: str) -> StepSimulation:
     """The controller dialogs' step-response simulator (imported when first needed: the
     tuning module brings numpy and the emulator, ~150 ms the program's start need not wait)."""
     from prm9tool.online.tuning import StepSimulator

@@ -7,7 +7,7 @@ from collections.abc import Callable
 from PySide6.QtWidgets import QWidget
 
 from prm9tool.catalogue.variant import Config
-from prm9tool.views.diagram.dialogs.base import BlockContext, BlockDialog
+from prm9tool.views.diagram.dialogs.base import BlockContext, BlockDialog, SimulatorFactory
 from prm9tool.views.diagram.dialogs.controller import ControllerDialog
 from prm9tool.views.diagram.dialogs.current_dither import CurrentDitherDialog
 from prm9tool.views.diagram.dialogs.linearization import LinearizationDialog
@@ -16,7 +16,7 @@ from prm9tool.views.diagram.dialogs.sensor_scaling import SensorScalingDialog
 from prm9tool.views.diagram.dialogs.signal_input import SignalInputDialog
 from prm9tool.views.diagram.dialogs.threshold_gain import ThresholdGainDialog
 
-__all__ = ["BlockContext", "BlockDialog", "create_block_dialog"]
+__all__ = ["BlockContext", "BlockDialog", "SimulatorFactory", "create_block_dialog"]
 
 Factory = Callable[[BlockContext, str, str, QWidget | None], BlockDialog]
 

@@ -9,7 +9,6 @@ from __future__ import annotations
 
 from collections.abc import Callable, Iterable, Mapping
 from dataclasses import dataclass
-from typing import Any
 
 from PySide6.QtCore import QCoreApplication, QEvent
 from PySide6.QtWidgets import (
@@ -28,27 +27,30 @@ from prm9tool.i18n import text
 from prm9tool.model.access import AccessModel
 from prm9tool.model.document import ParameterDocument, Raw
 from prm9tool.model.editing import apply_edit
-from prm9tool.online.connection_protocol import DiagramConnection
+from prm9tool.online.connection_protocol import DiagramConnection, StepSimulation
 from prm9tool.translate import error_text
 from prm9tool.views.diagram.colours import toned_style
-from prm9tool.views.diagram.dialogs.fields import ChoiceField, ValueField
+from prm9tool.views.diagram.dialogs.fields import ChoiceField, ValueField, not_on_enter
 
 Field = ValueField | ChoiceField
 MAX_SIZE = (1000, 690)  # a 1024 × 768 screen less the title bar and a task bar
+
+
+SimulatorFactory = Callable[[ParameterDocument, str], StepSimulation]  # (document, loop)
 
 
 @dataclass
 class BlockContext:
     """What a block dialog works on: the document, the access level and (optionally) the valve.
 
-    ``simulator_factory(document, loop)`` returns an object with ``request(values)`` and a
-    ``response_ready`` signal (see :mod:`prm9tool.online.tuning`); the controller dialogs use it.
+    ``simulator_factory(document, loop)`` returns a step-response simulator (see
+    :mod:`prm9tool.online.tuning`); the controller dialogs use it.
     """
 
     document: ParameterDocument
     access: AccessModel
     connection: DiagramConnection | None = None
-    simulator_factory: Callable[[ParameterDocument, str], Any] | None = None
+    simulator_factory: SimulatorFactory | None = None
     open_tuning: Callable[[str], None] | None = None  # opens the Tuning window for a loop
 
 
@@ -84,6 +86,7 @@ class BlockDialog(QDialog):
         self.side = QVBoxLayout()
         self.buttons = QDialogButtonBox(QDialogButtonBox.StandardButton.Close)
         self.buttons.rejected.connect(self.close)
+        not_on_enter(self.buttons)
         self._assemble()
         self.doc.value_changed.connect(self._on_document_value_changed)
         self.doc.values_reset.connect(self.refresh)

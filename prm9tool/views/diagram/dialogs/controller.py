@@ -9,15 +9,20 @@ finishing a typed entry is one undo step.
 from __future__ import annotations
 
 import math
-from typing import Any
+from typing import TYPE_CHECKING
 
 from PySide6.QtCore import Qt
+from PySide6.QtGui import QCloseEvent
 from PySide6.QtWidgets import QGridLayout, QLabel, QPushButton, QSlider, QWidget
 
 from prm9tool.catalogue import CATALOGUE
 from prm9tool.i18n import format_value
+from prm9tool.online.connection_protocol import StepSimulation
 from prm9tool.views.diagram.dialogs.base import BlockContext, BlockDialog
 from prm9tool.views.diagram.dialogs.plot import BLUE, GREY, ORANGE, Axes, Curve, PlotWidget
+
+if TYPE_CHECKING:  # imported when a simulator is made: it brings numpy and the emulator
+    from prm9tool.online.tuning import StepResponse
 
 SLIDER_STEPS = 1000
 GAINS = ("KP", "KI", "KD", "T1")
@@ -53,8 +58,8 @@ class ControllerDialog(BlockDialog):
         self.gain_fields = {name: self.value_field(name) for name in self.names}
         self.sliders = {name: self._make_slider(name) for name in self.names}
         self._trial: dict[str, int] = {}
-        self._last_applied: Any = None
-        self._current: Any = None
+        self._last_applied: StepResponse | None = None
+        self._current: StepResponse | None = None
         self.plot = PlotWidget()
         self.plot.legend_bottom_right = True  # the step rises through the top-left corner
         self.figures = QLabel()
@@ -89,7 +94,7 @@ class ControllerDialog(BlockDialog):
             grid.addWidget(self.sliders[name], row, 1)
         return grid
 
-    def _make_simulator(self) -> Any:
+    def _make_simulator(self) -> StepSimulation | None:
         factory = self.ctx.simulator_factory
         if factory is None:
             return None
@@ -134,7 +139,7 @@ class ControllerDialog(BlockDialog):
         if self.simulator is not None:
             self.simulator.request(self.trial_values())
 
-    def _on_response_ready(self, response: Any) -> None:
+    def _on_response_ready(self, response: StepResponse) -> None:
         if response.values == {n: int(self.doc.value(n)) for n in self.names}:
             self._last_applied = response
         self._current = response
@@ -185,7 +190,7 @@ class ControllerDialog(BlockDialog):
         if raw is not None:
             self.apply_value(name, raw)
 
-    def closeEvent(self, event: Any) -> None:
+    def closeEvent(self, event: QCloseEvent) -> None:
         if self.simulator is not None:
             self.simulator.stop()
         super().closeEvent(event)

@@ -11,7 +11,7 @@ from collections.abc import Callable, Iterable
 
 from PySide6.QtCore import QSignalBlocker, Qt
 from PySide6.QtGui import QKeyEvent
-from PySide6.QtWidgets import QComboBox, QLineEdit, QWidget
+from PySide6.QtWidgets import QComboBox, QDialogButtonBox, QLineEdit, QPushButton, QWidget
 
 from prm9tool.catalogue import CATALOGUE, Parameter
 from prm9tool.errors import ValueRangeError
@@ -23,6 +23,14 @@ from prm9tool.translate import error_text
 Apply = Callable[[str, Raw], bool]  # returns False (and shows the reason) when refused
 Report = Callable[[str], None]  # shows a refusal reason
 ERROR_STYLE = "border: 2px solid #d03030;"
+
+
+def not_on_enter(buttons: QDialogButtonBox) -> None:
+    """No button of ``buttons`` answers Enter: in a window of fields, Enter takes a field's
+    value (the dialog's default button would close the window instead)."""
+    for button in buttons.findChildren(QPushButton):
+        button.setAutoDefault(False)
+        button.setDefault(False)
 
 
 def range_text(param: Parameter) -> str:
