@@ -21,8 +21,8 @@ import time
 from prm9tool.catalogue import CATALOGUE
 from prm9tool.catalogue.typekey import TypeKey
 from prm9tool.device.emulator import EmulatedValve
-from prm9tool.device.session import ValveSession
 from prm9tool.device.transport.emulator import SLOT_S, EmulatorTransport
+from prm9tool.device.usb_session import UsbSession
 
 E04 = "PRM9-06.3Z11/30-24E04S02-CA"
 REPORT = 64
@@ -69,7 +69,7 @@ def bench_upload() -> None:
     values = tuned_values()
     valve = EmulatedValve(E04, 1)
     transport = EmulatorTransport(valve, paced=True)
-    session = ValveSession(transport, "emulator:bench")
+    session = UsbSession(transport, "emulator:bench")
     out0, in0 = transport.stats.reports_out, transport.stats.reports_in
     start = time.perf_counter()
     result = session.upload(values)
@@ -98,7 +98,7 @@ def bench_stream(seconds: float, realtime: bool) -> None:
     if realtime:
         valve.start()
     transport = EmulatorTransport(valve, paced=realtime)
-    session = ValveSession(transport, "emulator:stream")
+    session = UsbSession(transport, "emulator:stream")
     session.stream_start(KEYS)
     reports0, link0 = transport.stats.stream_reports, transport.link_time
     received = 0
@@ -130,19 +130,19 @@ def bench_stream(seconds: float, realtime: bool) -> None:
         )
 
 
-def open_valves(first_serial: int, count: int) -> list[ValveSession]:
+def open_valves(first_serial: int, count: int) -> list[UsbSession]:
     """Sessions to ``count`` fresh emulated valves (link at one report per ms)."""
     sessions = []
     for serial in range(first_serial, first_serial + count):
         transport = EmulatorTransport(EmulatedValve(E04, serial), paced=True)
-        sessions.append(ValveSession(transport, f"emulator:{serial}"))
+        sessions.append(UsbSession(transport, f"emulator:{serial}"))
     return sessions
 
 
-def upload_all(sessions: list[ValveSession], values: dict[str, int | str]) -> float:
+def upload_all(sessions: list[UsbSession], values: dict[str, int | str]) -> float:
     """Seconds to upload ``values`` into every session, one thread per valve."""
 
-    def upload(session: ValveSession) -> None:
+    def upload(session: UsbSession) -> None:
         for _ in range(ROUNDS):
             assert session.upload(values).stored
 

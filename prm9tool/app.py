@@ -102,6 +102,8 @@ def start(window: MainWindow, plan: StartPlan) -> None:
         window.files.open_path(plan.file, ask=False)
     if plan.emulators:
         _start_emulated(window, plan.emulators)
+    elif plan.devices and plan.devices[0].startswith("can:"):
+        window.valve.go_online(plan.devices[0])  # a node on the command line's CAN bus
     elif plan.devices:
         wanted_id = plan.devices[0]
 
@@ -180,9 +182,33 @@ def _opener(args: argparse.Namespace) -> Callable[[object], object]:
     def open_session(entry: object) -> object:
         from prm9tool.device import factory
 
-        return factory.open_session(entry, paced=True)  # type: ignore[arg-type]
+        return factory.open_session(entry, paced=True, can_link=_can_link(args))  # type: ignore[arg-type]
 
     return open_session
+
+
+def _can_link(args: argparse.Namespace) -> object:
+    """The bus of ``can:NODE`` valves: the command line's CAN options, else the CAN bus dialog's
+    remembered choice (QSettings)."""
+    from prm9tool.device import factory
+
+    given = [getattr(args, n, None) for n in ("can_interface", "can_channel", "can_bitrate")]
+    if any(v is not None for v in given):
+        return factory.CanOptions.from_args(args)
+    from PySide6.QtCore import QSettings
+
+    from prm9tool.views.can_bus_dialog import saved_bus
+
+    return _bus_options(saved_bus(QSettings()))
+
+
+def _bus_options(bus: dict[str, object]) -> object:
+    from prm9tool.device import factory
+
+    rate = bus.get("bitrate")
+    return factory.CanOptions(
+        str(bus["interface"]), str(bus["channel"]), int(str(rate)) if rate else None
+    )
 
 
 def _joiner(args: argparse.Namespace) -> Callable[[object], object] | None:
@@ -203,10 +229,11 @@ def _joiner(args: argparse.Namespace) -> Callable[[object], object] | None:
     return join
 
 
-def _lister(emulators: object) -> list[object]:
+def _lister(emulators: object, can: dict[str, object] | None = None) -> list[object]:
     from prm9tool.device import factory
 
-    return list(factory.list_devices(emulators))  # type: ignore[arg-type]
+    options = _bus_options(can) if can is not None else None
+    return list(factory.list_devices(emulators, options))  # type: ignore[arg-type]
 
 
 def show_internal_error(

@@ -115,6 +115,12 @@ class CanBusError(Prm9Error):
     )
 
 
+class CanAdapterError(CommunicationError):
+    """The CAN interface (adapter, driver, permission) could not be opened for the tool."""
+
+    summary = QT_TRANSLATE_NOOP("Errors", "The CAN interface could not be opened.")
+
+
 class AccessDeniedError(Prm9Error):
     """The operation is not allowed at the current access level or device state."""
 

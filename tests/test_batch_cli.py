@@ -23,8 +23,8 @@ from prm9tool.cli import batch
 from prm9tool.cli.main import main
 from prm9tool.device import factory
 from prm9tool.device.emulator import EmulatedValve
-from prm9tool.device.session import ValveSession
 from prm9tool.device.transport.emulator import EmulatorTransport, LinkFaults
+from prm9tool.device.usb_session import UsbSession
 from prm9tool.errors import AbortCode, ExitCode, SdoAbortError
 from prm9tool.files.prmfile import PrmContents, read_file, write_file
 
@@ -141,14 +141,21 @@ def test_verification_failure_exits_1(tmp_path):
         (["--bogus"], "unrecognized arguments"),
         (
             ["--batch", "x.prm", "--emulator", E02, "--can-interface", "socketcan"],
-            "--can-interface puts the GUI's emulated -CA valve on a CAN bus; --batch does not",
+            "--batch with --emulator uses the emulated valve over USB; to put one on the CAN bus, "
+            "run prm9tool --serve-emulator in another process",
         ),
+        (["--check", "x.prm", "--can-channel", "can1"], "names a CAN bus; --check does not use"),
+        (["--can-channel", "can1"], "use it with --device can:NODE, --list-devices, --batch"),
+        (["--serve-emulator", E02], "--serve-emulator needs --can-interface"),
         (
-            ["--list-devices", "--can-bitrate", "250000"],
-            "--can-bitrate puts the GUI's emulated -CA valve on a CAN bus; --list-devices",
+            ["--serve-emulator", E02, "--can-interface", "virtual", "--list-devices"],
+            "--serve-emulator and --list-devices are separate commands",
         ),
-        (["--check", "x.prm", "--can-channel", "can1"], "; --check does not use CAN"),
-        (["--can-channel", "can1"], "use it with --emulator TYPEKEY"),
+        (["--list-devices", "--node-id", "3"], "--node-id belongs to --serve-emulator"),
+        (
+            ["--serve-emulator", E02, "--can-interface", "virtual", "--node-id", "200"],
+            "--node-id 200: CANopen node IDs are 1…127",
+        ),
     ],
 )
 def test_usage_errors_exit_2(tmp_path, args, message):
@@ -376,7 +383,7 @@ def test_unplugged_at_the_store_step_the_report_keeps_what_was_written_and_verif
         transport = EmulatorTransport(factory.emulated_valve(entry.type_key, entry.serial))
         transport.faults = LinkFaults(die_after=die_after[0] if die_after else None)
         links.append(transport)
-        return ValveSession(transport, entry.device_id)
+        return UsbSession(transport, entry.device_id)
 
     monkeypatch.setattr(batch, "_open", open_on_a_faulty_link)
     try:
@@ -489,7 +496,7 @@ def test_a_refused_store_is_reported_truthfully_and_the_valve_reloaded(tmp_path,
         valve = factory.emulated_valve(entry.type_key, entry.serial)
         valve.store = refuse  # type: ignore[method-assign]
         valves.append(valve)
-        return ValveSession(EmulatorTransport(valve), entry.device_id)
+        return UsbSession(EmulatorTransport(valve), entry.device_id)
 
     def refuse():
         raise SdoAbortError(0x1010, 1, AbortCode.CANNOT_STORE)
@@ -516,7 +523,7 @@ def test_a_long_firmware_text_is_cut_and_the_upload_goes_on(tmp_path, monkeypatc
 
     def open_a_valve_with_a_long_firmware_text(entry):
         valve = EmulatedValve(entry.type_key, entry.serial, long_text)
-        return ValveSession(EmulatorTransport(valve), entry.device_id)
+        return UsbSession(EmulatorTransport(valve), entry.device_id)
 
     monkeypatch.setattr(batch, "_open", open_a_valve_with_a_long_firmware_text)
     args = ["--batch", str(source), "--emulator", f"{E04}:94"]

@@ -22,9 +22,9 @@ from prm9tool.device import factory
 from prm9tool.device.emulator import EmulatedValve
 from prm9tool.device.protocol import Nmt, decode_request, encode_request
 from prm9tool.device.protocol.wire import MalformedReportError
-from prm9tool.device.session import ValveSession
 from prm9tool.device.transport.emulator import EmulatorTransport
 from prm9tool.device.transport.hidapi import HidTransport
+from prm9tool.device.usb_session import UsbSession
 from prm9tool.errors import DeviceDisconnectedError
 
 CA = "PRM9-06.3Z11/30-24E02S02-CA"
@@ -48,7 +48,7 @@ def test_the_nmt_request_is_one_byte_and_refuses_unknown_commands():
         decode_request(bytes.fromhex("0d 05 03") + bytes(61))
 
 
-def test_a_delivered_ca_valve_waits_and_the_enable_sequence_makes_it_follow(session: ValveSession):
+def test_a_delivered_ca_valve_waits_and_the_enable_sequence_makes_it_follow(session: UsbSession):
     status = session.status()
     assert (status.nmt_state, str(status.device_state)) == ("pre-operational", "INIT")
     assert blocker(str(status.device_state), status.nmt_state, (), False) is (
@@ -79,7 +79,7 @@ def test_nmt_over_usb_reaches_the_canopen_slave_of_a_valve_on_the_bus(request):
     rig = make_rig(request.node.name, E02)
     try:
         transport = EmulatorTransport(rig.valve)
-        with ValveSession(transport, "emulator:rig") as session:
+        with UsbSession(transport, "emulator:rig") as session:
             session.nmt(NmtCommand.START)
             assert rig.slave.state.name == "OPERATIONAL"
             rig.valve.advance(1.0)
@@ -90,7 +90,7 @@ def test_nmt_over_usb_reaches_the_canopen_slave_of_a_valve_on_the_bus(request):
         rig.close()
 
 
-def test_the_emulated_valve_has_inputs_switches_and_faults(session: ValveSession):
+def test_the_emulated_valve_has_inputs_switches_and_faults(session: UsbSession):
     controls = session.emulator
     assert controls is not None
     state = controls.state()
@@ -121,7 +121,7 @@ def test_a_usb_valve_has_no_emulator_controls_but_takes_nmt(monkeypatch):
     valve = EmulatedValve(CA, 321)
     fake.add(valve, b"/dev/hidraw3")
     valve.advance(2.0)
-    with ValveSession(HidTransport(b"/dev/hidraw3"), "usb:/dev/hidraw3") as session:
+    with UsbSession(HidTransport(b"/dev/hidraw3"), "usb:/dev/hidraw3") as session:
         assert session.emulator is None  # a valve on a USB cable: no emulator behind it
         session.nmt(NmtCommand.START)
         assert valve.status().nmt_state == "operational"

@@ -52,6 +52,7 @@ def test_menus_and_toolbar_are_those_of_the_manual(window):
     ]
     assert _menu_texts(window, "communication") == [
         "&HID configuration…",
+        "&CAN bus…",
         "O&nline mode",
         "O&ffline mode",
     ]

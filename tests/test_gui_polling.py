@@ -6,8 +6,8 @@ import pytest
 
 from prm9tool.device.emulator import EmulatedValve
 from prm9tool.device.protocol import Op
-from prm9tool.device.session import ValveSession
 from prm9tool.device.transport.emulator import EmulatorTransport
+from prm9tool.device.usb_session import UsbSession
 from prm9tool.online.polling import Poller
 
 E04_CA = "PRM9-10.3Z11/60-24E04S02-CA"
@@ -39,7 +39,7 @@ def test_watch_stream_values_keep_their_labels_when_the_chunk_changes(valve):
     transport = EmulatorTransport(valve)
     _valve_runs_before_stream_starts(transport, valve)
     supply = valve.signal("supply_voltage")
-    with ValveSession(transport, "emulator:test") as session:
+    with UsbSession(transport, "emulator:test") as session:
         poller = Poller()
         poller.reset(session.info)
         poller.watched = list(WATCHED)

@@ -12,8 +12,9 @@ from valve_sets import changed_set
 from prm9tool.catalogue import CATALOGUE
 from prm9tool.catalogue.typekey import TypeKey
 from prm9tool.device.emulator import EmulatedValve, usb_firmware
-from prm9tool.device.session import OperationCancelledError, ValveSession
+from prm9tool.device.session import OperationCancelledError
 from prm9tool.device.transport.emulator import EmulatorTransport, LinkFaults
+from prm9tool.device.usb_session import UsbSession
 from prm9tool.errors import DeviceDisconnectedError, DeviceTimeoutError, ProtocolError
 
 E04 = "PRM9-06.3Z11/30-24E04S02-CA"
@@ -24,9 +25,9 @@ def new_values(variant) -> dict[str, int | str]:
     return changed_set(variant)
 
 
-def open_session(valve: EmulatedValve) -> tuple[ValveSession, EmulatorTransport]:
+def open_session(valve: EmulatedValve) -> tuple[UsbSession, EmulatorTransport]:
     transport = EmulatorTransport(valve)
-    return ValveSession(transport, "emulator:faults"), transport
+    return UsbSession(transport, "emulator:faults"), transport
 
 
 def reports_of_a_full_upload(tmp_path) -> int:
@@ -217,7 +218,7 @@ class NonsenseTransport(EmulatorTransport):
 )
 def test_a_valve_answering_nonsense_raises_protocol_error(junk, message):
     transport = NonsenseTransport(EmulatedValve(E04, 1))
-    session = ValveSession(transport, "emulator:nonsense")
+    session = UsbSession(transport, "emulator:nonsense")
     seq = transport._seq % 255 + 1  # the answer must carry the request's sequence number
     transport.junk = junk[:1] + bytes([seq]) + junk[2:] if junk[0] == 0x82 else junk
     with pytest.raises(ProtocolError, match=message):

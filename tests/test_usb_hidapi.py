@@ -11,8 +11,8 @@ from valve_sets import changed_set
 
 from prm9tool.device import factory
 from prm9tool.device.emulator import EmulatedValve
-from prm9tool.device.session import ValveSession
 from prm9tool.device.transport.hidapi import HidTransport, UsbFilter, load_hid
+from prm9tool.device.usb_session import UsbSession
 from prm9tool.errors import CommunicationError, DeviceDisconnectedError
 
 E02 = "PRM9-06.3Z11/30-24E02S02"
@@ -40,8 +40,8 @@ def device(fake_hid):
     return fake_hid.add(EmulatedValve(E02, 321, "0.35.16"), PATH)
 
 
-def open_session(timeout_s: float = 0.05) -> ValveSession:
-    return ValveSession(HidTransport(PATH, timeout_s=timeout_s), f"usb:{PATH.decode()}")
+def open_session(timeout_s: float = 0.05) -> UsbSession:
+    return UsbSession(HidTransport(PATH, timeout_s=timeout_s), f"usb:{PATH.decode()}")
 
 
 def changed(variant) -> dict[str, int | str]:

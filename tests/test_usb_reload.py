@@ -20,8 +20,9 @@ from prm9tool.device.protocol import (
     encode_request,
     encode_response,
 )
-from prm9tool.device.session import OperationCancelledError, ValveSession
+from prm9tool.device.session import OperationCancelledError
 from prm9tool.device.transport.emulator import EmulatorTransport, LinkFaults
+from prm9tool.device.usb_session import UsbSession
 from prm9tool.errors import AbortCode, DeviceDisconnectedError, DeviceTimeoutError, SdoAbortError
 
 E04 = "PRM9-06.3Z11/30-24E04S02-CA"
@@ -75,7 +76,7 @@ class Rig:
         self.valve = EmulatedValve(E04, 4711, nv_path=tmp_path / "nv.json")
         self.valve.advance(3.0)
         self.transport = transport_class(self.valve)
-        self.session = ValveSession(self.transport, "emulator:reload")
+        self.session = UsbSession(self.transport, "emulator:reload")
         self.stored = stored_values()
         assert self.session.upload(self.stored).stored
         self.valve.set_input("setpoint", 4.0)

@@ -11,8 +11,9 @@ from valve_sets import changed_set
 from prm9tool.catalogue import CATALOGUE
 from prm9tool.device.emulator import EmulatedValve, Fault
 from prm9tool.device.emulator.usb_firmware import UsbFirmware
-from prm9tool.device.session import OperationCancelledError, ValveSession
+from prm9tool.device.session import OperationCancelledError
 from prm9tool.device.transport.emulator import EmulatorTransport
+from prm9tool.device.usb_session import UsbSession
 from prm9tool.errors import AbortCode, Prm9Error, SdoAbortError, ValueRangeError
 from prm9tool.files.backup import ensure_backup
 from prm9tool.files.prmfile import read_file
@@ -30,11 +31,11 @@ def valve(tmp_path):
 
 @pytest.fixture
 def session(valve):
-    with ValveSession(EmulatorTransport(valve), "emulator:test") as session:
+    with UsbSession(EmulatorTransport(valve), "emulator:test") as session:
         yield session
 
 
-def changed_values(session: ValveSession) -> dict[str, int | str]:
+def changed_values(session: UsbSession) -> dict[str, int | str]:
     """Every file parameter moved one step away from its current value, within its range."""
     return changed_set(session.variant, session.download())
 
@@ -119,7 +120,7 @@ class CorruptingTransport(EmulatorTransport):
 
 def test_verification_mismatch_stores_nothing(valve):
     transport = CorruptingTransport(valve)
-    session = ValveSession(transport, "emulator:test")
+    session = UsbSession(transport, "emulator:test")
     before = session.download()
     new = changed_values(session)
     transport.armed = True
@@ -237,7 +238,7 @@ def test_stream_checks_its_arguments(session):
 
 def test_stream_of_a_signal_the_variant_lacks_is_refused(tmp_path):
     valve = EmulatedValve(E02, 5)
-    session = ValveSession(EmulatorTransport(valve), "emulator:e02")
+    session = UsbSession(EmulatorTransport(valve), "emulator:e02")
     with pytest.raises(SdoAbortError) as caught:
         session.stream_start(["process_actual"])
     assert caught.value.code == AbortCode.INVALID_VALUE
@@ -245,7 +246,7 @@ def test_stream_of_a_signal_the_variant_lacks_is_refused(tmp_path):
 
 def test_a_firmware_text_with_cr_lf_cannot_inject_an_entry_into_the_backup():
     valve = EmulatedValve(E04, 4712, "1.0\r\nLIMTA = 5\nX=1")
-    with ValveSession(EmulatorTransport(valve), "emulator:crlf") as session:
+    with UsbSession(EmulatorTransport(valve), "emulator:crlf") as session:
         path = ensure_backup(session)
     assert path is not None
     lines = path.read_text(encoding="utf-8").splitlines()

@@ -181,6 +181,101 @@ Poslední akce možná nebyla dokončena. Uložte svou práci pod novým názvem
         </message>
     </context>
     <context>
+        <name>CanBusDialog</name>
+        <message>
+            <source>CAN bus</source>
+            <translation>Sběrnice CAN</translation>
+        </message>
+        <message>
+            <source>Search the bus</source>
+            <translation>Prohledat sběrnici</translation>
+        </message>
+        <message>
+            <source>Search the bus to list its nodes.</source>
+            <translation>Prohledejte sběrnici, aby se vypsaly její uzly.</translation>
+        </message>
+        <message>
+            <source>Node</source>
+            <translation>Uzel</translation>
+        </message>
+        <message>
+            <source>Type key</source>
+            <translation>Objednací kód</translation>
+        </message>
+        <message>
+            <source>Serial</source>
+            <translation>Výrobní číslo</translation>
+        </message>
+        <message>
+            <source>Firmware</source>
+            <translation>Firmware</translation>
+        </message>
+        <message>
+            <source>NMT state</source>
+            <translation>Stav NMT</translation>
+        </message>
+        <message>
+            <source>Heartbeat</source>
+            <translation>Heartbeat</translation>
+        </message>
+        <message>
+            <source>Last EMCY</source>
+            <translation>Poslední EMCY</translation>
+        </message>
+        <message>
+            <source>Description</source>
+            <translation>Popis</translation>
+        </message>
+        <message>
+            <source>Interface (python-can)</source>
+            <translation>Rozhraní (python-can)</translation>
+        </message>
+        <message>
+            <source>Channel</source>
+            <translation>Kanál</translation>
+        </message>
+        <message>
+            <source>Bit rate</source>
+            <translation>Přenosová rychlost</translation>
+        </message>
+        <message>
+            <source>Searching the bus (node IDs 1…127)…</source>
+            <translation>Prohledává se sběrnice (ID uzlů 1…127)…</translation>
+        </message>
+        <message>
+            <source>The bus could not be searched: {0}</source>
+            <translation>Sběrnici nelze prohledat: {0}</translation>
+        </message>
+        <message>
+            <source>{0} nodes answered, {1} of them PRM9 valves.</source>
+            <translation>Odpovědělo uzlů: {0}, z toho ventilů PRM9: {1}.</translation>
+        </message>
+        <message>
+            <source>not a PRM9</source>
+            <translation>není PRM9</translation>
+        </message>
+        <message>
+            <source>{0:.1f} s ago</source>
+            <translation>před {0:.1f} s</translation>
+        </message>
+        <message>
+            <source>none</source>
+            <translation>žádný</translation>
+        </message>
+        <message>
+            <source>Type key of the valve</source>
+            <translation>Objednací kód ventilu</translation>
+        </message>
+        <message>
+            <source>The valve (serial number {0}) does not tell its type key; its objects say {1} -CA. Type key on the valve's label:</source>
+            <translation>Ventil (výrobní číslo {0}) neudává svůj objednací kód; jeho objekty říkají {1} -CA. Objednací kód ze štítku ventilu:</translation>
+        </message>
+        <message>
+            <source>{0} does not fit the valve: its objects say {1} -CA.</source>
+            <translation>{0} neodpovídá ventilu: jeho objekty říkají {1} -CA.</translation>
+        </message>
+    </context>
+    <context>
         <name>CanopenWindow</name>
         <message>
             <source>CANopen</source>
@@ -788,6 +883,25 @@ Poslední akce možná nebyla dokončena. Uložte svou práci pod novým názvem
         </message>
     </context>
     <context>
+        <name>DcfExport</name>
+        <message>
+            <source>Export DCF</source>
+            <translation>Export DCF</translation>
+        </message>
+        <message>
+            <source>CANopen device configuration (*.dcf)</source>
+            <translation>Konfigurace zařízení CANopen (*.dcf)</translation>
+        </message>
+        <message>
+            <source>Cannot write “{0}”: {1}</source>
+            <translation>„{0}“ nelze zapsat: {1}</translation>
+        </message>
+        <message>
+            <source>DCF saved as {0} (node {1})</source>
+            <translation>DCF uloženo jako {0} (uzel {1})</translation>
+        </message>
+    </context>
+    <context>
         <name>DiagramBlock</name>
         <message>
             <source>spool position (LVDT)</source>
@@ -1183,6 +1297,10 @@ Poslední akce možná nebyla dokončena. Uložte svou práci pod novým názvem
         <message>
             <source>The emulated valve could not join the CAN bus; it works over USB without CAN.</source>
             <translation>Emulovaný ventil se nemohl připojit ke sběrnici CAN; pracuje přes USB bez CAN.</translation>
+        </message>
+        <message>
+            <source>The CAN interface could not be opened.</source>
+            <translation>Rozhraní CAN nelze otevřít.</translation>
         </message>
         <message>
             <source>The valve refused the access.</source>
@@ -1714,6 +1832,22 @@ Ano načte a záznam zařadí do fronty; Ne nenačte nic.</translation>
             <translation>Vytisknout aktuální záznam parametrů</translation>
         </message>
         <message>
+            <source>Object &amp;dictionary…</source>
+            <translation>Slov&amp;ník objektů…</translation>
+        </message>
+        <message>
+            <source>Read, and at Expert level write, any object of the valve</source>
+            <translation>Číst a na expertní úrovni zapisovat libovolný objekt ventilu</translation>
+        </message>
+        <message>
+            <source>Export &amp;DCF…</source>
+            <translation>Export &amp;DCF…</translation>
+        </message>
+        <message>
+            <source>Save the valve's CANopen configuration as a CiA 306 DCF (for a PLC configurator)</source>
+            <translation>Uložit konfiguraci CANopen ventilu jako DCF podle CiA 306 (pro konfigurátor PLC)</translation>
+        </message>
+        <message>
             <source>&amp;Export PDF…</source>
             <translation>&amp;Export do PDF…</translation>
         </message>
@@ -1836,6 +1970,14 @@ Ano načte a záznam zařadí do fronty; Ne nenačte nic.</translation>
         <message>
             <source>Choose the valve to communicate with</source>
             <translation>Výběr ventilu pro komunikaci</translation>
+        </message>
+        <message>
+            <source>&amp;CAN bus…</source>
+            <translation>Sběrnice &amp;CAN…</translation>
+        </message>
+        <message>
+            <source>Find the valves on a CAN bus and go online with one (CANopen)</source>
+            <translation>Najít ventily na sběrnici CAN a přejít s jedním do režimu online (CANopen)</translation>
         </message>
         <message>
             <source>O&amp;nline mode</source>
@@ -2022,6 +2164,57 @@ Ano načte a záznam zařadí do fronty; Ne nenačte nic.</translation>
         <message>
             <source>About prm9tool</source>
             <translation>O programu prm9tool</translation>
+        </message>
+    </context>
+    <context>
+        <name>ObjectDictionaryDialog</name>
+        <message>
+            <source>Object dictionary</source>
+            <translation>Slovník objektů</translation>
+        </message>
+        <message>
+            <source>Index</source>
+            <translation>Index</translation>
+        </message>
+        <message>
+            <source>Sub</source>
+            <translation>Subindex</translation>
+        </message>
+        <message>
+            <source>Name</source>
+            <translation>Název</translation>
+        </message>
+        <message>
+            <source>Type</source>
+            <translation>Typ</translation>
+        </message>
+        <message>
+            <source>Access</source>
+            <translation>Přístup</translation>
+        </message>
+        <message>
+            <source>Value</source>
+            <translation>Hodnota</translation>
+        </message>
+        <message>
+            <source>Read all</source>
+            <translation>Číst vše</translation>
+        </message>
+        <message>
+            <source>Double-click a writable object to write it.</source>
+            <translation>Zapisovatelný objekt zapíšete dvojklikem.</translation>
+        </message>
+        <message>
+            <source>Reading only: writing needs the Expert level.</source>
+            <translation>Jen čtení: zápis vyžaduje expertní úroveň.</translation>
+        </message>
+        <message>
+            <source>Write {0}</source>
+            <translation>Zapsat {0}</translation>
+        </message>
+        <message>
+            <source>{0} ({1}), raw value:</source>
+            <translation>{0} ({1}), surová hodnota:</translation>
         </message>
     </context>
     <context>
@@ -2320,6 +2513,10 @@ Ano načte a záznam zařadí do fronty; Ne nenačte nic.</translation>
         <message>
             <source>{0}: {1}{2} is stored as {3}{2}, the nearest value the valve can hold</source>
             <translation>{0}: {1}{2} se uloží jako {3}{2}, nejbližší hodnota, kterou ventil dokáže uložit</translation>
+        </message>
+        <message>
+            <source>{0} has no value: the valve it was read from does not have it over CANopen; not uploaded</source>
+            <translation>{0} nemá hodnotu: ventil, ze kterého byl načten, ji přes CANopen nemá; nenačte se do ventilu</translation>
         </message>
         <message>
             <source>{0} ({1}) is missing (required for {2} valves)</source>

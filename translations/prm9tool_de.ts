@@ -181,6 +181,101 @@ Die letzte Aktion wurde womöglich nicht vollständig ausgeführt. Speichern Sie
         </message>
     </context>
     <context>
+        <name>CanBusDialog</name>
+        <message>
+            <source>CAN bus</source>
+            <translation>CAN-Bus</translation>
+        </message>
+        <message>
+            <source>Search the bus</source>
+            <translation>Bus durchsuchen</translation>
+        </message>
+        <message>
+            <source>Search the bus to list its nodes.</source>
+            <translation>Den Bus durchsuchen, um seine Knoten aufzulisten.</translation>
+        </message>
+        <message>
+            <source>Node</source>
+            <translation>Knoten</translation>
+        </message>
+        <message>
+            <source>Type key</source>
+            <translation>Typschlüssel</translation>
+        </message>
+        <message>
+            <source>Serial</source>
+            <translation>Seriennummer</translation>
+        </message>
+        <message>
+            <source>Firmware</source>
+            <translation>Firmware</translation>
+        </message>
+        <message>
+            <source>NMT state</source>
+            <translation>NMT-Zustand</translation>
+        </message>
+        <message>
+            <source>Heartbeat</source>
+            <translation>Heartbeat</translation>
+        </message>
+        <message>
+            <source>Last EMCY</source>
+            <translation>Letzte EMCY</translation>
+        </message>
+        <message>
+            <source>Description</source>
+            <translation>Beschreibung</translation>
+        </message>
+        <message>
+            <source>Interface (python-can)</source>
+            <translation>Schnittstelle (python-can)</translation>
+        </message>
+        <message>
+            <source>Channel</source>
+            <translation>Kanal</translation>
+        </message>
+        <message>
+            <source>Bit rate</source>
+            <translation>Bitrate</translation>
+        </message>
+        <message>
+            <source>Searching the bus (node IDs 1…127)…</source>
+            <translation>Bus wird durchsucht (Knoten-IDs 1…127)…</translation>
+        </message>
+        <message>
+            <source>The bus could not be searched: {0}</source>
+            <translation>Der Bus konnte nicht durchsucht werden: {0}</translation>
+        </message>
+        <message>
+            <source>{0} nodes answered, {1} of them PRM9 valves.</source>
+            <translation>{0} Knoten haben geantwortet, davon {1} PRM9-Ventile.</translation>
+        </message>
+        <message>
+            <source>not a PRM9</source>
+            <translation>kein PRM9</translation>
+        </message>
+        <message>
+            <source>{0:.1f} s ago</source>
+            <translation>vor {0:.1f} s</translation>
+        </message>
+        <message>
+            <source>none</source>
+            <translation>keiner</translation>
+        </message>
+        <message>
+            <source>Type key of the valve</source>
+            <translation>Typschlüssel des Ventils</translation>
+        </message>
+        <message>
+            <source>The valve (serial number {0}) does not tell its type key; its objects say {1} -CA. Type key on the valve's label:</source>
+            <translation>Das Ventil (Seriennummer {0}) nennt seinen Typschlüssel nicht; seine Objekte sagen {1} -CA. Typschlüssel vom Typenschild des Ventils:</translation>
+        </message>
+        <message>
+            <source>{0} does not fit the valve: its objects say {1} -CA.</source>
+            <translation>{0} passt nicht zum Ventil: Seine Objekte sagen {1} -CA.</translation>
+        </message>
+    </context>
+    <context>
         <name>CanopenWindow</name>
         <message>
             <source>CANopen</source>
@@ -785,6 +880,25 @@ Die letzte Aktion wurde womöglich nicht vollständig ausgeführt. Speichern Sie
         </message>
     </context>
     <context>
+        <name>DcfExport</name>
+        <message>
+            <source>Export DCF</source>
+            <translation>DCF exportieren</translation>
+        </message>
+        <message>
+            <source>CANopen device configuration (*.dcf)</source>
+            <translation>CANopen-Gerätekonfiguration (*.dcf)</translation>
+        </message>
+        <message>
+            <source>Cannot write “{0}”: {1}</source>
+            <translation>„{0}“ kann nicht geschrieben werden: {1}</translation>
+        </message>
+        <message>
+            <source>DCF saved as {0} (node {1})</source>
+            <translation>DCF gespeichert als {0} (Knoten {1})</translation>
+        </message>
+    </context>
+    <context>
         <name>DiagramBlock</name>
         <message>
             <source>spool position (LVDT)</source>
@@ -1180,6 +1294,10 @@ Die letzte Aktion wurde womöglich nicht vollständig ausgeführt. Speichern Sie
         <message>
             <source>The emulated valve could not join the CAN bus; it works over USB without CAN.</source>
             <translation>Das emulierte Ventil konnte dem CAN-Bus nicht beitreten; es arbeitet über USB ohne CAN.</translation>
+        </message>
+        <message>
+            <source>The CAN interface could not be opened.</source>
+            <translation>Die CAN-Schnittstelle konnte nicht geöffnet werden.</translation>
         </message>
         <message>
             <source>The valve refused the access.</source>
@@ -1707,6 +1825,22 @@ Ja lädt hoch und stellt den Eintrag in die Warteschlange; Nein lädt nichts hoc
             <translation>Aktuellen Parametersatz drucken</translation>
         </message>
         <message>
+            <source>Object &amp;dictionary…</source>
+            <translation>Objekt&amp;verzeichnis…</translation>
+        </message>
+        <message>
+            <source>Read, and at Expert level write, any object of the valve</source>
+            <translation>Jedes Objekt des Ventils lesen und auf Expertenebene schreiben</translation>
+        </message>
+        <message>
+            <source>Export &amp;DCF…</source>
+            <translation>D&amp;CF exportieren…</translation>
+        </message>
+        <message>
+            <source>Save the valve's CANopen configuration as a CiA 306 DCF (for a PLC configurator)</source>
+            <translation>CANopen-Konfiguration des Ventils als CiA-306-DCF speichern (für einen SPS-Konfigurator)</translation>
+        </message>
+        <message>
             <source>&amp;Export PDF…</source>
             <translation>PDF &amp;exportieren…</translation>
         </message>
@@ -1829,6 +1963,14 @@ Ja lädt hoch und stellt den Eintrag in die Warteschlange; Nein lädt nichts hoc
         <message>
             <source>Choose the valve to communicate with</source>
             <translation>Ventil für die Kommunikation wählen</translation>
+        </message>
+        <message>
+            <source>&amp;CAN bus…</source>
+            <translation>&amp;CAN-Bus…</translation>
+        </message>
+        <message>
+            <source>Find the valves on a CAN bus and go online with one (CANopen)</source>
+            <translation>Ventile an einem CAN-Bus suchen und mit einem online gehen (CANopen)</translation>
         </message>
         <message>
             <source>O&amp;nline mode</source>
@@ -2014,6 +2156,57 @@ Ja lädt hoch und stellt den Eintrag in die Warteschlange; Nein lädt nichts hoc
         <message>
             <source>About prm9tool</source>
             <translation>Über prm9tool</translation>
+        </message>
+    </context>
+    <context>
+        <name>ObjectDictionaryDialog</name>
+        <message>
+            <source>Object dictionary</source>
+            <translation>Objektverzeichnis</translation>
+        </message>
+        <message>
+            <source>Index</source>
+            <translation>Index</translation>
+        </message>
+        <message>
+            <source>Sub</source>
+            <translation>Sub</translation>
+        </message>
+        <message>
+            <source>Name</source>
+            <translation>Name</translation>
+        </message>
+        <message>
+            <source>Type</source>
+            <translation>Typ</translation>
+        </message>
+        <message>
+            <source>Access</source>
+            <translation>Zugriff</translation>
+        </message>
+        <message>
+            <source>Value</source>
+            <translation>Wert</translation>
+        </message>
+        <message>
+            <source>Read all</source>
+            <translation>Alle lesen</translation>
+        </message>
+        <message>
+            <source>Double-click a writable object to write it.</source>
+            <translation>Ein beschreibbares Objekt doppelklicken, um es zu schreiben.</translation>
+        </message>
+        <message>
+            <source>Reading only: writing needs the Expert level.</source>
+            <translation>Nur lesen: Schreiben erfordert die Expertenebene.</translation>
+        </message>
+        <message>
+            <source>Write {0}</source>
+            <translation>{0} schreiben</translation>
+        </message>
+        <message>
+            <source>{0} ({1}), raw value:</source>
+            <translation>{0} ({1}), Rohwert:</translation>
         </message>
     </context>
     <context>
@@ -2311,6 +2504,10 @@ Ja lädt hoch und stellt den Eintrag in die Warteschlange; Nein lädt nichts hoc
         <message>
             <source>{0}: {1}{2} is stored as {3}{2}, the nearest value the valve can hold</source>
             <translation>{0}: {1}{2} wird als {3}{2} gespeichert, der nächste Wert, den das Ventil speichern kann</translation>
+        </message>
+        <message>
+            <source>{0} has no value: the valve it was read from does not have it over CANopen; not uploaded</source>
+            <translation>{0} hat keinen Wert: Das Ventil, aus dem er gelesen wurde, hat ihn über CANopen nicht; wird nicht hochgeladen</translation>
         </message>
         <message>
             <source>{0} ({1}) is missing (required for {2} valves)</source>

@@ -189,6 +189,12 @@ class Parameter:
         return f"0x{self.index:04X}/{self.subindex}"
 
     @property
+    def address_from_manual(self) -> bool:
+        """False when the object address is this project's decision (``source`` says so): a
+        real valve may lack that object, so over CANopen the parameter may be unavailable."""
+        return not _DECIDED_ADDRESS.search(self.source)
+
+    @property
     def is_string(self) -> bool:
         """True for string parameters (type key, firmware version, device name)."""
         return self.dtype.is_string
@@ -315,6 +321,9 @@ class Parameter:
         return str(raw)
 
 
+# "object 0x2041: decision", "object and scaling: decision", "decision (tuning generator)",
+# "not in 7-13: decision" (a CiA 301 object the manual's table does not list)
+_DECIDED_ADDRESS = re.compile(r"object[^:;)]*: decision|^decision \(|not in 7-13: decision")
 _NUMBER = re.compile(r"[+-]?([0-9]+\.?[0-9]*|\.[0-9]+)([eE][+-]?[0-9]+)?")
 
 

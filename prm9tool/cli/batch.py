@@ -24,7 +24,11 @@ from prm9tool.cli.batch_report import (
     write_report,
 )
 from prm9tool.device.factory import (
+    CAN,
+    NOT_PRM9,
+    CanOptions,
     DeviceEntry,
+    can_entries,
     emulator_entries,
     open_session,
     parse_emulator_spec,
@@ -32,7 +36,14 @@ from prm9tool.device.factory import (
     usb_unavailable_reason,
 )
 from prm9tool.device.session import ValveSession, reload_outcome
-from prm9tool.errors import CommunicationError, ExitCode, FileFormatError, Prm9Error, TypeKeyError
+from prm9tool.errors import (
+    CanAdapterError,
+    CommunicationError,
+    ExitCode,
+    FileFormatError,
+    Prm9Error,
+    TypeKeyError,
+)
 from prm9tool.files.backup import ensure_backup, existing_backups, write_device_file
 from prm9tool.files.prmfile import PrmContents, check_file, read_file
 
@@ -109,12 +120,15 @@ def _report_refusal(path: str) -> str | None:
 
 # --- devices ------------------------------------------------------------------------------------
 def _list_devices(args: argparse.Namespace) -> int:
-    entries = _usb(required=False) + _emulators(args)
+    entries = _usb(required=False) + _emulators(args) + _can(args)
     for entry in entries:
+        if entry.kind == NOT_PRM9:
+            print(f"{entry.device_id}\tnot a PRM9\t{entry.description}")
+            continue
         print(
             f"{entry.device_id}\t{entry.type_key}\tserial {entry.serial}\tfirmware {entry.firmware}"
         )
-    if not entries:
+    if not [e for e in entries if e.kind != NOT_PRM9]:
         reason = usb_unavailable_reason()
         print("prm9tool: no valves found" + (f" ({reason})" if reason else ""), file=sys.stderr)
         return ExitCode.NO_DEVICE
@@ -130,6 +144,23 @@ def _emulators(args: argparse.Namespace) -> list[DeviceEntry]:
         raise BatchError(ExitCode.NO_DEVICE, str(exc)) from exc
 
 
+def can_options(args: argparse.Namespace) -> CanOptions | None:
+    """The CAN bus the command line names (None: no CAN option given)."""
+    given = (args.can_interface, args.can_channel, args.can_bitrate)
+    return CanOptions.from_args(args) if any(v is not None for v in given) else None
+
+
+def _can(args: argparse.Namespace) -> list[DeviceEntry]:
+    """The nodes on the command line's CAN bus (none without CAN options)."""
+    options = can_options(args)
+    if options is None:
+        return []
+    try:
+        return can_entries(options)
+    except CanAdapterError as exc:
+        raise BatchError(ExitCode.COMMUNICATION, str(exc)) from exc
+
+
 def _usb(required: bool) -> list[DeviceEntry]:
     try:
         return usb_entries()
@@ -142,6 +173,8 @@ def _usb(required: bool) -> list[DeviceEntry]:
 def select(args: argparse.Namespace) -> list[DeviceEntry]:
     """The valves the options name; BatchError (4 or 2) if that is none or ambiguous."""
     chosen = _emulators(args)
+    if can_options(args) is not None:
+        return _select_can(args, chosen)
     if args.device or args.all:
         usb = _usb(required=True)
         for wanted in args.device:
@@ -161,6 +194,38 @@ def select(args: argparse.Namespace) -> list[DeviceEntry]:
     return _unique(chosen)
 
 
+def _select_can(args: argparse.Namespace, chosen: list[DeviceEntry]) -> list[DeviceEntry]:
+    """The valves on the CAN bus: ``--device can:N`` (checked to be a PRM9) or ``--all``."""
+    found = _can(args)
+    prm9 = [e for e in found if e.kind == CAN]
+    for wanted in args.device:
+        matches = [e for e in found if wanted in (e.device_id, str(e.serial)) and e.serial]
+        matches += [e for e in found if e.device_id == wanted and e not in matches]
+        if not matches:
+            known = ", ".join(e.device_id for e in prm9) or "none"
+            raise BatchError(
+                ExitCode.NO_DEVICE,
+                f"no valve {wanted!r} answers on the CAN bus {can_options(args)} (PRM9 found: {known})",
+            )
+        others = [e for e in matches if e.kind == NOT_PRM9]
+        if others:
+            raise BatchError(
+                ExitCode.NO_DEVICE, f"{others[0].description}; prm9tool does not write to it"
+            )
+        chosen += matches
+    if args.all:
+        chosen += prm9
+    elif not args.device and not chosen:
+        if len(prm9) > 1:
+            raise BatchError(
+                ExitCode.USAGE, f"{len(prm9)} valves are on the bus: choose with --device or --all"
+            )
+        chosen = prm9
+    if not chosen:
+        raise BatchError(ExitCode.NO_DEVICE, f"no PRM9 found on the CAN bus {can_options(args)}")
+    return _unique(chosen)
+
+
 def _unique(entries: list[DeviceEntry]) -> list[DeviceEntry]:
     """Each valve once, in the order first named (``--device 41 --device /dev/hidraw0``)."""
     by_id: dict[str, DeviceEntry] = {}
@@ -177,14 +242,17 @@ def _match(wanted: str, usb: list[DeviceEntry]) -> list[DeviceEntry]:
     return found
 
 
-def open_entry(entry: DeviceEntry) -> ValveSession:
+def open_entry(entry: DeviceEntry, can: CanOptions | None = None) -> ValveSession:
     """Open a session as the headless commands do (``--batch``, ``--diff``)."""
-    return _open(entry)
+    return _open(entry) if can is None else _open(entry, can)
 
 
-def _open(entry: DeviceEntry) -> ValveSession:
-    # an emulated valve is stepped on the link clock; the link itself runs at USB speed
-    return open_session(entry, paced=False, link_paced=True)
+def _open(
+    entry: DeviceEntry, can: CanOptions | None = None, type_key: str | None = None
+) -> ValveSession:
+    """Open one selected valve; ``type_key``: the file's, for a valve that does not tell its
+    own. An emulated valve is stepped on the link clock; its link runs at USB speed."""
+    return open_session(entry, paced=False, link_paced=True, can_link=can, type_key=type_key)
 
 
 # --- upload -------------------------------------------------------------------------------------
@@ -210,7 +278,7 @@ def _upload(args: argparse.Namespace, records: list[ValveRecord]) -> ExitCode:
     history = (
         BatchHistory.for_download(args) if args.dry_run else BatchHistory.open(args, BatchError)
     )
-    job = _UploadJob(contents, args.force_type, args.dry_run, printer, history)
+    job = _UploadJob(contents, args.force_type, args.dry_run, printer, history, can_options(args))
     try:
         with ThreadPoolExecutor(max_workers=len(entries)) as pool:
             records.extend(pool.map(job, entries))
@@ -236,9 +304,11 @@ class _UploadJob:
         dry_run: bool,
         printer: ProgressPrinter,
         history: BatchHistory,
+        can: CanOptions | None = None,
     ) -> None:
         self.contents, self.force, self.dry_run, self.printer = contents, force, dry_run, printer
         self.history = history
+        self.can = can
 
     def __call__(self, entry: DeviceEntry) -> ValveRecord:
         clock = Stopwatch()
@@ -246,7 +316,10 @@ class _UploadJob:
             entry.device_id, entry.kind, entry.serial, entry.type_key, entry.firmware
         )
         try:
-            with _open(entry) as session:
+            # the file's type key serves a CANopen valve that does not tell its own (0x2041)
+            key = str(self.contents.type_key)
+            opened = _open(entry) if self.can is None else _open(entry, self.can, key)
+            with opened as session:
                 info = session.info
                 record.type_key, record.serial, record.firmware = (
                     info.type_key,
@@ -257,6 +330,8 @@ class _UploadJob:
         except CommunicationError as exc:
             record.result, record.error = "communication-error", str(exc)
             _copy_progress(exc, record)
+        except TypeKeyError as exc:  # a CANopen valve whose objects contradict the file's key
+            record.result, record.error = "type-mismatch", str(exc)
         except Prm9Error as exc:  # a refused read during the backup, an unwritable backup …
             record.result, record.error = "communication-error", str(exc)
         except Exception as exc:  # whatever the valve answered: the run still ends with a report
@@ -306,6 +381,13 @@ class _UploadJob:
         record.result = "ok" if result.stored else "verification-failed"
         if result.failed_step == "store":
             record.result = "store-failed"
+        if result.skipped:
+            record.skipped = list(result.skipped)
+            self.printer.say(
+                who,
+                "warning: not available over CANopen on this valve, not uploaded: "
+                + ", ".join(result.skipped),
+            )
         if not result.stored:
             problem = result.failure or _mismatch_text(result.failed_step, result.mismatches)
             record.error = f"{problem}; {reload_outcome(result.reload_error)}"
@@ -362,7 +444,8 @@ def _download(args: argparse.Namespace, records: list[ValveRecord]) -> ExitCode:
     )
     records.append(record)
     try:
-        with _open(entry[0]) as session:
+        can = can_options(args)
+        with _open(entry[0]) if can is None else _open(entry[0], can) as session:
             values = session.download(printer.callback(str(record.serial)))
             info = session.info
     except Exception as exc:  # a Prm9Error, or whatever else the valve's answers caused

@@ -65,7 +65,7 @@ def file_side(path: str) -> Side:
 def valve_side(args: argparse.Namespace) -> Side:
     """The selected valve's parameters, downloaded (DiffError 4: no such valve, 6: no answer)."""
     from prm9tool.catalogue.typekey import TypeKey
-    from prm9tool.cli.batch import BatchError, open_entry, select
+    from prm9tool.cli.batch import BatchError, can_options, open_entry, select
 
     try:
         entries = select(args)
@@ -74,7 +74,7 @@ def valve_side(args: argparse.Namespace) -> Side:
     if len(entries) != 1:
         raise DiffError(ExitCode.USAGE, "--diff compares with one valve: select exactly one")
     try:
-        with open_entry(entries[0]) as session:
+        with open_entry(entries[0], can_options(args)) as session:
             values = session.download()
             info = session.info
     except (CommunicationError, Prm9Error) as exc:

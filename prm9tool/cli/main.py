@@ -57,10 +57,13 @@ def add_device_options(parser: argparse.ArgumentParser) -> None:
         action="append",
         default=[],
         metavar="ID",
-        help="USB valve to use (serial number, HID path or usb:PATH); with --batch repeatable",
+        help="valve to use (serial number, HID path, usb:PATH, or can:NODE on the CAN bus of "
+        "--can-interface); with --batch repeatable",
     )
     group.add_argument(
-        "--all", action="store_true", help="with --batch: use every valve connected over USB"
+        "--all",
+        action="store_true",
+        help="with --batch: use every valve connected over USB (or found on the CAN bus)",
     )
     group.add_argument(
         "--emulator",
@@ -74,11 +77,31 @@ def add_device_options(parser: argparse.ArgumentParser) -> None:
     )
     # no defaults here: None means "not given" (usage_problem) and CanOptions fills it in
     group.add_argument(
-        "--can-interface", help="python-can interface for an emulated -CA valve (default: virtual)"
+        "--can-interface",
+        help="python-can interface of the CAN bus (socketcan, pcan, kvaser, ixxat, vector, "
+        "slcan, udp_multicast, virtual, ...; default: virtual): valves on it are can:NODE; "
+        "an --emulator -CA valve joins it",
     )
     group.add_argument("--can-channel", help="python-can channel (default: prm9tool)")
     group.add_argument(
         "--can-bitrate", type=int, help="CAN bit rate in bit/s (default: from the valve's switches)"
+    )
+    serve = parser.add_argument_group("headless emulated valves on a CAN bus (no GUI)")
+    serve.add_argument(
+        "--serve-emulator",
+        action="append",
+        default=[],
+        metavar="TYPEKEY[:SERIAL]",
+        help="run an emulated -CA valve on the CAN bus of --can-interface/--can-channel in real "
+        "time until Ctrl+C or SIGTERM; repeatable",
+    )
+    serve.add_argument(
+        "--node-id",
+        action="append",
+        type=int,
+        default=[],
+        metavar="N",
+        help="with --serve-emulator: node ID 1-127 of the valve named at the same position",
     )
 
 
@@ -182,10 +205,11 @@ def _epilog() -> str:
 def usage_problem(args: argparse.Namespace) -> str | None:
     """What makes no sense in this combination of options (None: nothing), before anything runs.
 
-    The GUI takes a file, ``--emulator`` (with the CAN options) and one ``--device``; the
-    batch-only options need ``--batch``; ``--list-devices`` takes only ``--emulator``; the CAN
-    options only put the GUI's emulated -CA valve on a bus, so they need ``--emulator`` and no
-    other command (an option that would be ignored is an error, not a surprise).
+    The GUI takes a file, ``--emulator`` and one ``--device``; the batch-only options need
+    ``--batch``; ``--list-devices`` takes ``--emulator`` and the CAN options. The CAN options
+    name a bus: the one of ``can:NODE`` devices, ``--list-devices``, ``--batch`` and
+    ``--serve-emulator``, or the one the GUI's emulated -CA valve joins; a file tool takes
+    none (an option that would be ignored is an error, not a surprise).
     """
     if args.characterize:
         return _characterize_problem(args)
@@ -198,17 +222,28 @@ def usage_problem(args: argparse.Namespace) -> str | None:
         return problem
     batch_only = [flag for flag, dest in BATCH_ONLY.items() if getattr(args, dest)]
     tools = [flag for flag, dest in FILE_TOOLS.items() if getattr(args, dest) is not None]
-    command = "--list-devices" if args.list_devices else "--batch" if args.batch is not None else ""
+    command = _command(args)
+    if " and " in command:
+        return f"{command} are separate commands: use one at a time"
     if command and tools:
         return f"{command} and {tools[0]} are separate commands: use one at a time"
     can = [flag for flag, dest in CAN_OPTIONS.items() if getattr(args, dest) is not None]
-    if can and (command or tools):
+    if can and tools:
+        return f"{can[0]} names a CAN bus; {tools[0]} does not use CAN"
+    if command == "--serve-emulator":
+        return _serve_problem(args, batch_only)
+    if args.node_id:
+        return "--node-id belongs to --serve-emulator"
+    if can and not command and not args.emulator and not _can_devices(args):
         return (
-            f"{can[0]} puts the GUI's emulated -CA valve on a CAN bus; "
-            f"{command or tools[0]} does not use CAN"
+            f"{can[0]} names a CAN bus: use it with --device can:NODE, --list-devices, --batch "
+            "or --emulator TYPEKEY"
         )
-    if can and not args.emulator:
-        return f"{can[0]} puts an emulated -CA valve on a CAN bus: use it with --emulator TYPEKEY"
+    if command and args.emulator and can:
+        return (
+            f"{command} with --emulator uses the emulated valve over USB; to put one on the CAN "
+            "bus, run prm9tool --serve-emulator in another process"
+        )
     if command == "--list-devices":
         return _list_devices_problem(args, batch_only)
     if command == "--batch":
@@ -217,6 +252,39 @@ def usage_problem(args: argparse.Namespace) -> str | None:
         return f"{batch_only[0]} belongs to the headless production mode: use it with --batch"
     if not tools and len(args.device) > 1:
         return "the GUI goes online with one valve: give --device once (several: --batch)"
+    return None
+
+
+def _command(args: argparse.Namespace) -> str:
+    if args.serve_emulator:
+        others = [
+            flag
+            for flag, given in (("--list-devices", args.list_devices), ("--batch", args.batch))
+            if given not in (None, False)
+        ]
+        return "--serve-emulator" if not others else f"--serve-emulator and {others[0]}"
+    return "--list-devices" if args.list_devices else "--batch" if args.batch is not None else ""
+
+
+def _can_devices(args: argparse.Namespace) -> list[str]:
+    return [d for d in args.device if d.startswith("can:")]
+
+
+def _serve_problem(args: argparse.Namespace, batch_only: list[str]) -> str | None:
+    if args.can_interface is None:
+        return "--serve-emulator needs --can-interface (and --can-channel) naming the bus"
+    extra = batch_only + [
+        f for f, v in (("--device", args.device), ("--emulator", args.emulator)) if v
+    ]
+    if args.file:
+        extra.append(f"the file {args.file}")
+    if extra:
+        return f"--serve-emulator runs emulated valves on a bus and takes no {extra[0]}"
+    if len(args.node_id) > len(args.serve_emulator):
+        return "give at most one --node-id per --serve-emulator"
+    bad = [n for n in args.node_id if not 1 <= n <= 127]
+    if bad:
+        return f"--node-id {bad[0]}: CANopen node IDs are 1…127"
     return None
 
 
@@ -275,7 +343,10 @@ def _list_devices_problem(args: argparse.Namespace, batch_only: list[str]) -> st
         extra.append(f"the file {args.file}")
     if not extra:
         return None
-    return f"--list-devices lists every valve and takes only --emulator, not {extra[0]}"
+    return (
+        f"--list-devices lists every valve and takes only --emulator and the CAN options, "
+        f"not {extra[0]}"
+    )
 
 
 def _batch_problem(args: argparse.Namespace) -> str | None:
@@ -310,6 +381,10 @@ def main(argv: Sequence[str] | None = None) -> int:
         from prm9tool.cli import filetools as prmcli
 
         return prmcli.export_eds_command(args)
+    if args.serve_emulator:
+        from prm9tool.cli.serve import run as run_serve
+
+        return run_serve(args)
     if args.characterize:
         from prm9tool.cli.characterize import run as run_characterize
         from prm9tool.cli.history import recorder_for

@@ -1,7 +1,8 @@
 """The one device factory of prm9tool: the GUI and the batch mode list and open valves here.
 
-A device is a USB valve (``usb:<HID path>``) or an emulated valve
-(``emulator:<type key>:<serial>``). Emulated valves live in this process, one per serial
+A device is a USB valve (``usb:<HID path>``), an emulated valve
+(``emulator:<type key>:<serial>``) or a valve on a CAN bus (``can:<node ID>``, on the bus of
+the :class:`CanOptions` given). Emulated valves live in this process, one per serial
 number, and keep their non-volatile memory in ``<user data dir>/emulator/<serial>.json``
 (``PRM9TOOL_DATA_DIR`` overrides the user data dir), so what one run stores the next one sees.
 """
@@ -16,6 +17,7 @@ from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
 from prm9tool.catalogue.typekey import DEFAULT_EMULATOR_TYPE_KEY, TypeKey
+from prm9tool.device.canlink.bus import CanOptions
 from prm9tool.device.session import ValveSession
 from prm9tool.errors import CanBusError, CommunicationError, Prm9Error, TypeKeyError
 
@@ -24,7 +26,8 @@ if TYPE_CHECKING:
 
 log = logging.getLogger("prm9tool.device.factory")
 DEFAULT_EMULATOR_TYPE = DEFAULT_EMULATOR_TYPE_KEY  # one default for the GUI and the CLI
-USB, EMULATOR = "usb", "emulator"
+USB, EMULATOR, CAN, NOT_PRM9 = "usb", "emulator", "can", "not-prm9"
+__all__ = ["CanOptions", "DeviceEntry", "list_devices", "open_session"]
 
 
 @dataclass(frozen=True)
@@ -32,31 +35,14 @@ class DeviceEntry:
     """One valve that can be opened."""
 
     device_id: str
-    kind: str  # "usb" | "emulator"
+    kind: str  # "usb" | "emulator" | "can" | "not-prm9" (a CANopen node of another kind)
     type_key: str
     serial: int
     firmware: str
     description: str
-
-
-@dataclass(frozen=True)
-class CanOptions:
-    """Where an emulated -CA valve puts its CANopen interface (a python-can bus)."""
-
-    interface: str = "virtual"
-    channel: str = "prm9tool"
-    bitrate: int | None = None  # None: whatever the bus backend uses by default
-
-    @classmethod
-    def from_args(cls, args: Any) -> CanOptions:
-        """The options of the CLI's ``--can-interface/--can-channel/--can-bitrate`` (None: the
-        default here)."""
-        given = {
-            "interface": args.can_interface,
-            "channel": args.can_channel,
-            "bitrate": args.can_bitrate,
-        }
-        return cls(**{name: value for name, value in given.items() if value is not None})
+    nmt_state: str = ""  # CAN nodes: as the heartbeat said during the scan
+    heartbeat_age_s: float | None = None  # CAN nodes: seconds since the last heartbeat
+    last_emcy: str = ""  # CAN nodes: the last EMCY heard ("" none)
 
 
 def emulator_nv_path(serial: int) -> Path:
@@ -133,14 +119,67 @@ def usb_unavailable_reason() -> str | None:
     return None
 
 
-def list_devices(emulators: Sequence[str] = ()) -> list[DeviceEntry]:
-    """USB valves (if hidapi works) followed by the emulated valves of ``emulators``."""
+def list_devices(emulators: Sequence[str] = (), can: CanOptions | None = None) -> list[DeviceEntry]:
+    """USB valves (if hidapi works), the emulated valves of ``emulators`` and, with ``can``,
+    the nodes on that bus (CanAdapterError if it cannot be opened)."""
     try:
         found = usb_entries()
     except CommunicationError as exc:
         log.info("no USB valves listed: %s", exc)
         found = []
-    return found + emulator_entries(emulators)
+    found += emulator_entries(emulators)
+    return found + (can_entries(can) if can is not None else [])
+
+
+def can_entries(options: CanOptions) -> list[DeviceEntry]:
+    """Every node found on the bus ``options``: PRM9 valves (``can``) and other nodes
+    (``not-prm9``, never written to). CanAdapterError when the bus cannot be opened."""
+    from prm9tool.device.canlink import bus, discovery
+    from prm9tool.device.canlink.typekeys import remembered
+    from prm9tool.paths import user_data_dir
+
+    shared = bus.acquire(options)
+    try:
+        nodes = discovery.scan(shared)
+        heard = {node.node_id: _heard(shared.node_seen(node.node_id)) for node in nodes}
+    finally:
+        bus.release(shared)
+    entries = []
+    for node in nodes:
+        if not node.is_prm9:
+            text = f"node {node.node_id}: {node.problem}"
+            entries.append(
+                DeviceEntry(node.device_id, NOT_PRM9, "", 0, "", text, *heard[node.node_id])
+            )
+            continue
+        key = node.type_key or remembered(user_data_dir(), node.serial)
+        told = node.derived.describe() if node.derived else "-CA"
+        entries.append(
+            DeviceEntry(
+                node.device_id,
+                CAN,
+                key or f"? ({told}; type key unknown)",
+                node.serial,
+                node.firmware,
+                f"CANopen node {node.node_id} on {options}: {node.name}",
+                *heard[node.node_id],
+            )
+        )
+    return entries
+
+
+def _heard(seen: Any) -> tuple[str, float | None, str]:
+    """NMT state, heartbeat age and last EMCY of a node as the bus told them."""
+    import time
+
+    from prm9tool.device.canlink.status import emcy_text
+
+    age = None if seen.heartbeat_at is None else time.monotonic() - seen.heartbeat_at
+    emcy = ""
+    if seen.emcy_code is not None:
+        meaning = emcy_text(seen.emcy_code) if seen.emcy_code else "errors cleared"
+        emcy = f"{seen.emcy_code:04X} {meaning}"
+    return seen.nmt_state, age, emcy
 
 
 # --- emulated valves of this process ---------------------------------------------------------
@@ -182,6 +221,8 @@ def open_session(
     paced: bool = True,
     can: CanOptions | None = None,
     link_paced: bool | None = None,
+    type_key: str | None = None,
+    can_link: CanOptions | None = None,
 ) -> ValveSession:
     """Open a session to ``entry`` (a DeviceEntry or its ``device_id``).
 
@@ -191,26 +232,34 @@ def open_session(
     millisecond of wall-clock time. ``can``: put an emulated -CA valve on that python-can bus
     before returning (CanBusError if the bus cannot be opened); :func:`join_can` does the same
     for a session that is already open.
+    ``can:NODE`` opens a CANopen session to that node on the bus ``can_link`` (default:
+    ``can``, else the virtual bus); ``type_key`` is the key to use when the valve does not tell
+    its own.
     """
     device_id = entry.device_id if isinstance(entry, DeviceEntry) else entry
     kind, _, rest = device_id.partition(":")
     if kind == USB:
         return _open_usb(rest, device_id)
     if kind == EMULATOR:
-        type_key, _, serial = rest.rpartition(":")
         link = paced if link_paced is None else link_paced
-        return _open_emulator(type_key, int(serial), device_id, (paced, link), can)
-    raise Prm9Error(f"unknown device {device_id!r}: expected 'usb:…' or 'emulator:…'")
+        emulated_key, _, serial = rest.rpartition(":")
+        return _open_emulator(emulated_key, int(serial), device_id, (paced, link), can)
+    if kind == CAN and rest.isdigit():
+        from prm9tool.device.canlink.session import CanopenSession
+
+        return CanopenSession(can_link or can or CanOptions(), int(rest), type_key=type_key)
+    raise Prm9Error(f"unknown device {device_id!r}: expected 'usb:…', 'emulator:…' or 'can:NODE'")
 
 
 def _open_usb(path: str, device_id: str) -> ValveSession:
     from prm9tool.device.discovery import find_serial
     from prm9tool.device.transport.hidapi import HidTransport
+    from prm9tool.device.usb_session import UsbSession
 
     serial_box: list[int] = []
     transport = HidTransport(path.encode(), finder=lambda: find_serial(serial_box[0]))
     try:
-        session = ValveSession(transport, device_id)
+        session = UsbSession(transport, device_id)
     except BaseException:
         transport.close()
         raise
@@ -226,6 +275,7 @@ def _open_emulator(
     can: CanOptions | None,
 ) -> ValveSession:
     from prm9tool.device.transport.emulator import EmulatorTransport
+    from prm9tool.device.usb_session import UsbSession
 
     valve = emulated_valve(type_key, serial)
     closers: list[Callable[[], None]] = []
@@ -236,7 +286,7 @@ def _open_emulator(
         if can is not None and valve.variant.canopen:
             closers.append(_connect_can(valve, can))
         transport = EmulatorTransport(valve, paced=pacing[1])
-        return ValveSession(transport, device_id, on_close=lambda: _all(closers))
+        return UsbSession(transport, device_id, on_close=lambda: _all(closers))
     except BaseException:
         _all(closers)
         raise
@@ -251,7 +301,10 @@ def join_can(session: ValveSession, options: CanOptions) -> bool:
     (~0.2 s) is then off the way to "online" (docs/PERFORMANCE.md, Startup).
     """
     from prm9tool.device.transport.emulator import EmulatorTransport
+    from prm9tool.device.usb_session import UsbSession
 
+    if not isinstance(session, UsbSession):
+        return False
     transport = session.transport
     if not isinstance(transport, EmulatorTransport) or not transport.valve.variant.canopen:
         return False

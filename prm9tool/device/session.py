@@ -1,11 +1,12 @@
-"""The valve session: what the GUI and the batch mode do with one valve, over any transport.
+"""The valve session: what the GUI and the batch mode do with one valve, over any link.
 
 Long operations are synchronous (run them off the GUI thread), report ``progress(done, total,
 step)`` and stop at the next report when ``cancel`` is set. Failures raise the typed errors of
 :mod:`prm9tool.errors`; an upload never stores anything it has not read back and compared.
 
-**The upload contract, the same on every link** (USB here; CANopen writes "save" into
-0x1010/1 for the store and follows it too):
+**The upload contract, the same on every link** (it lives here once, in
+:class:`ValveSession`; the USB link stores with its STORE command, the CANopen link writes
+"save" into 0x1010/1):
 
 1. *write* every value; a refusal ends the upload (``failed_step`` ``write``);
 2. *verify*: read every value back and compare (``verify``);
@@ -19,7 +20,8 @@ step)`` and stop at the next report when ``cancel`` is set. Failures raise the t
    ``failure``.
 
 After any failure (also a cancel) the session asks the valve to reload its stored parameters
-(RELOAD; CANopen: the master writes the stored values back), so it runs on its stored set.
+(USB: RELOAD; CANopen: the master writes back the working values it read before the upload,
+prm9tool.device.canlink.session), so it runs on its stored set.
 """
 
 from __future__ import annotations
@@ -27,19 +29,18 @@ from __future__ import annotations
 import logging
 import threading
 import time
+from abc import ABC, abstractmethod
 from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass
-from typing import TypeVar
 
 import numpy as np
 
 from prm9tool.catalogue import CATALOGUE, Parameter
 from prm9tool.catalogue.typekey import TypeKey
 from prm9tool.device.emulated import EmulatorControls
-from prm9tool.device.emulator.states import DeviceState, LedState, ValveStatus
+from prm9tool.device.emulator.states import ValveStatus
 from prm9tool.device.entries import (
     STEPS,
-    EntryIO,
     OperationCancelledError,
     Progress,
     RefusedError,
@@ -47,29 +48,25 @@ from prm9tool.device.entries import (
     Value,
     check_cancel,
 )
-from prm9tool.device.protocol import (
-    PROTOCOL_VERSION,
-    AbortReply,
-    Done,
-    Identify,
-    IdentifyReply,
-    Nmt,
-    Reload,
-    Request,
-    Response,
-    Restart,
-    RestoreFactory,
-    StatusReply,
-    StatusRequest,
-    Store,
-)
-from prm9tool.device.stream import StreamReceiver
-from prm9tool.device.transport import Transport
-from prm9tool.errors import CommunicationError, Prm9Error, ProtocolError, SdoAbortError
+from prm9tool.errors import CommunicationError, Prm9Error, SdoAbortError
 
-R = TypeVar("R", bound=Response)
 log = logging.getLogger("prm9tool.device.session")
-__all__ = ["DeviceInfo", "OperationCancelledError", "UploadResult", "ValveSession"]
+__all__ = [
+    "DeviceInfo",
+    "NotAvailableError",
+    "OperationCancelledError",
+    "UploadResult",
+    "ValveSession",
+]
+
+
+class NotAvailableError(Prm9Error):
+    """Parameters whose objects the valve does not have on this link (a real valve over
+    CANopen lacks the objects this project decided on: abort 0x06020000/0x06090011)."""
+
+    def __init__(self, mnemonics: Sequence[str]) -> None:
+        self.mnemonics = tuple(mnemonics)
+        super().__init__(f"not available over CANopen on this valve: {', '.join(mnemonics)}")
 
 
 @dataclass(frozen=True)
@@ -90,7 +87,9 @@ class UploadResult:
     ``stored`` means verified stored (see the module docstring). ``failure`` says why the step
     failed when ``mismatches`` do not (a refused store). After a failed upload the session puts
     the valve's stored parameters back into its working values (:meth:`ValveSession.reload`,
-    no restart): ``reloaded`` says whether that worked, ``reload_error`` why not.
+    no restart): ``reloaded`` says whether that worked, ``reload_error`` why not. ``skipped``:
+    parameters of the set the valve does not have on this link, left out with a warning (never
+    a failed upload).
     """
 
     written: int
@@ -102,78 +101,151 @@ class UploadResult:
     reloaded: bool = False
     reload_error: str | None = None
     failure: str | None = None
+    skipped: tuple[str, ...] = ()  # parameters the valve lacks on this link (not uploaded)
 
 
-class ValveSession:
-    """One open valve. Thread-safe: the transport serializes the exchanges."""
+class ValveSession(ABC):
+    """One open valve, whatever the link: the interface the GUI, ``--batch`` and the backups use.
 
-    def __init__(
-        self,
-        transport: Transport,
-        device_id: str,
-        on_close: Callable[[], None] | None = None,
-    ) -> None:
-        self._transport = transport
+    The behaviour that must be the same on every link lives here once: range checks, the
+    transactional upload (write all → read back and compare → store), download, parameters the
+    valve lacks on this link (:attr:`unavailable`), close hooks. A link is one subclass
+    (:class:`prm9tool.device.usb_session.UsbSession`,
+    :class:`prm9tool.device.canopen.session.CanopenSession`) implementing the abstract
+    methods. Thread-safe as far as the link serializes its exchanges.
+    """
+
+    def __init__(self, device_id: str, on_close: Callable[[], None] | None = None) -> None:
         self._device_id = device_id
         self._on_close: list[Callable[[], None]] = [on_close] if on_close is not None else []
+        self.unavailable: set[str] = set()  # parameters this valve lacks on this link
+
+    def _start(self) -> None:
+        """Identify the valve once the link is up (subclasses call this from __init__)."""
         self.info = self.identify()
         self.variant = TypeKey.parse(self.info.type_key).variant
         self._params = {p.mnemonic: p for p in CATALOGUE.for_variant(self.variant)}
-        self._stream = StreamReceiver(self._call, transport)
-        self._entries = EntryIO(self._call)
+
+    # --- what a link implements -----------------------------------------------------------
+    @abstractmethod
+    def identify(self) -> DeviceInfo:
+        """Ask the valve who it is (refusing a valve this link cannot work with)."""
+
+    @abstractmethod
+    def _read_entries(
+        self, params: Sequence[Parameter], steps: Steps | None, cancel: threading.Event | None
+    ) -> dict[str, Value | SdoAbortError]:
+        """Values by mnemonic; a refused entry maps to its SdoAbortError. A parameter the
+        valve lacks on this link is added to :attr:`unavailable` and left out."""
+
+    @abstractmethod
+    def _write_entries(
+        self,
+        params: Sequence[Parameter],
+        values: Mapping[str, Value],
+        steps: Steps | None,
+        cancel: threading.Event | None,
+    ) -> int:
+        """Write in order; returns how many were written, raises RefusedError on a refusal.
+        A parameter the valve lacks is added to :attr:`unavailable`, skipped, not counted."""
+
+    @abstractmethod
+    def store(self) -> None:
+        """Make the working parameters permanent (non-volatile memory)."""
+
+    @abstractmethod
+    def reload(self) -> None:
+        """Working parameters ← the stored ones (non-volatile memory), without moving the
+        spool; after a failed upload."""
+
+    @abstractmethod
+    def restore_factory(self) -> None:
+        """Reset the stored parameters to factory values; effective after :meth:`restart`."""
+
+    @abstractmethod
+    def restart(self) -> None:
+        """Power-cycle the valve's electronics and reconnect (only with hydraulics off)."""
+
+    @abstractmethod
+    def status(self) -> ValveStatus:
+        """Device state, errors, LEDs, temperature and supply voltage."""
+
+    @abstractmethod
+    def stream_start(self, keys: Sequence[str], rate_hz: int = 5000) -> None:
+        """Stream up to three measuring points (signals.py keys) at about ``rate_hz``."""
+
+    @abstractmethod
+    def stream_read(self) -> np.ndarray:
+        """Samples received since the last call: shape (n, len(keys)), raw values."""
 
     @property
-    def transport(self) -> Transport:
-        """The link this session talks over (statistics, fault injection in tests)."""
-        return self._transport
+    @abstractmethod
+    def samples_lost(self) -> int:
+        """Samples lost since :meth:`stream_start`."""
+
+    @abstractmethod
+    def stream_stop(self) -> None:
+        """Stop streaming."""
+
+    @abstractmethod
+    def nmt(self, command: int) -> None:
+        """Send an NMT command (:class:`~prm9tool.catalogue.commissioning.NmtCommand`) to the
+        valve, as its CANopen master would (manual §7.2): start, stop, pre-operational, reset.
+        A valve with CANopen switched off ignores it."""
 
     @property
     def emulator(self) -> EmulatorControls | None:
-        """Inputs, switches and faults of an emulated valve (None for a real one)."""
-        from prm9tool.device.transport.emulator import EmulatorTransport
+        """Inputs, switches and faults of an emulated valve behind this link (None for a real
+        one, and for any valve reached over a CAN bus)."""
+        return None
 
-        if not isinstance(self._transport, EmulatorTransport):
-            return None
-        return EmulatorControls(self._transport)
+    @property
+    @abstractmethod
+    def closed(self) -> bool:
+        """True once the link is closed."""
 
-    # --- identity and single values -------------------------------------------------------
-    def identify(self) -> DeviceInfo:
-        """Ask the valve who it is; refuses a valve speaking another protocol version."""
-        reply = self._call(Identify(), IdentifyReply)
-        if reply.protocol_version != PROTOCOL_VERSION:
-            raise ProtocolError(
-                f"the valve speaks USB protocol version {reply.protocol_version}; "
-                f"this prm9tool speaks version {PROTOCOL_VERSION}"
-            )
-        return DeviceInfo(
-            reply.type_key, reply.serial, reply.firmware, reply.protocol_version, self._device_id
-        )
+    @abstractmethod
+    def _close_link(self) -> None:
+        """Stop any stream and release the link (called once)."""
 
+    def _before_upload(self, params: Sequence[Parameter], cancel: threading.Event | None) -> None:
+        """Runs before an upload writes anything (a link that cannot reload the stored set
+        without a restart takes its snapshot of the working values here)."""
+        del params, cancel  # the USB protocol reloads the stored set itself
+
+    # --- single values --------------------------------------------------------------------
     def read(self, mnemonic: str) -> Value:
-        """Raw value of one parameter."""
-        return self.read_many([mnemonic])[mnemonic]
+        """Raw value of one parameter (NotAvailableError: the valve lacks it on this link)."""
+        values = self.read_many([mnemonic])
+        if mnemonic not in values:
+            raise NotAvailableError([mnemonic])
+        return values[mnemonic]
 
     def write(self, mnemonic: str, raw: Value) -> None:
         """Write one raw value (ValueRangeError before sending, SdoAbortError if refused)."""
         self.write_many({mnemonic: raw})
 
     def read_many(self, mnemonics: Sequence[str]) -> dict[str, Value]:
-        """Raw values of several parameters (as few reports as possible)."""
+        """Raw values of several parameters; those the valve lacks on this link
+        (:attr:`unavailable`) are left out."""
         params = [self._param(m) for m in mnemonics]
-        results = self._entries.read(params)
+        results = self._read_entries(params, None, None)
         for param in params:
-            outcome = results[param.mnemonic]
+            outcome = results.get(param.mnemonic)
             if isinstance(outcome, SdoAbortError):
                 raise outcome
-        return {m: results[m] for m in mnemonics}  # type: ignore[misc]
+        return {m: results[m] for m in mnemonics if m in results}  # type: ignore[misc]
 
     def write_many(self, values: Mapping[str, Value]) -> None:
         """Write several raw values; all are range-checked before the first is sent."""
         params = self._checked(values)
         try:
-            self._entries.write(params, values)
+            self._write_entries(params, values, None, None)
         except RefusedError as refused:
             raise refused.error from None
+        missing = sorted(set(values) & self.unavailable)
+        if missing:
+            raise NotAvailableError(missing)
 
     # --- upload / download ----------------------------------------------------------------
     def upload(
@@ -197,17 +269,19 @@ class ValveSession:
         total = 2 * len(params) + 1
         step, writing, verified = "write", Steps(progress, total, 0, "write"), False
         try:
-            written = self._entries.write(params, values, writing, cancel)
+            self._before_upload(params, cancel)
+            written = self._write_entries(params, values, writing, cancel)
             step = "verify"
             verify = Steps(progress, total, len(params), step)
-            actual = self._entries.read(params, verify, cancel)
+            params = [p for p in params if p.mnemonic not in self.unavailable]
+            actual = self._read_entries(params, verify, cancel)
             mismatches = _differences(params, values, actual)
             if mismatches:
                 return self._failed(written, mismatches, start, "verify")
             step, verified = "store", True
             check_cancel(cancel, step)
             self.store()
-            after = self._entries.read(params)
+            after = self._read_entries(params, None, None)
             changed = _differences(params, values, after)
             if changed:
                 why = (
@@ -229,86 +303,25 @@ class ValveSession:
             raise _step_error(exc, step, self._revert(), writing.done, verified) from exc
         if progress:
             progress(total, total, "store")
-        return UploadResult(written, True, True, {}, _since(start), None)
+        skipped = tuple(sorted(set(values) & self.unavailable))
+        return UploadResult(written, True, True, {}, _since(start), None, skipped=skipped)
 
     def download(
         self, progress: Progress | None = None, cancel: threading.Event | None = None
     ) -> dict[str, Value]:
         """The raw values of the *.prm parameter set of the valve's variant."""
         params = CATALOGUE.file_parameters(self.variant)
-        results = self._entries.read(params, Steps(progress, len(params), 0, "download"), cancel)
+        results = self._read_entries(params, Steps(progress, len(params), 0, "download"), cancel)
         for outcome in results.values():
             if isinstance(outcome, SdoAbortError):
                 raise outcome
         return dict(results)  # type: ignore[arg-type]
 
-    # --- commands -------------------------------------------------------------------------
-    def store(self) -> None:
-        """Make the working parameters permanent (non-volatile memory)."""
-        self._call(Store(), Done)
-
-    def reload(self) -> None:
-        """Working parameters ← the stored ones (non-volatile memory), without a restart."""
-        self._call(Reload(), Done)
-
-    def restore_factory(self) -> None:
-        """Reset the stored parameters to factory values; effective after :meth:`restart`."""
-        self._call(RestoreFactory(), Done)
-
-    def restart(self) -> None:
-        """Power-cycle the valve's electronics and reconnect (only with hydraulics off)."""
-        self._call(Restart(), Done)
-        self._stream.forget()
-        self._transport.reconnect()
-
-    def nmt(self, command: int) -> None:
-        """Send an NMT command (:class:`~prm9tool.catalogue.commissioning.NmtCommand`) to the
-        valve, as its CANopen master would (manual §7.2): start, stop, pre-operational, reset.
-        A valve with CANopen switched off ignores it."""
-        self._call(Nmt(int(command)), Done)
-
-    def status(self) -> ValveStatus:
-        """Device state, errors, LEDs, temperature and supply voltage."""
-        reply = self._call(StatusRequest(0), StatusReply)
-        text = bytearray(reply.text_chunk)
-        for _ in range(16):
-            if len(text) >= reply.text_total:
-                break
-            more = self._call(StatusRequest(len(text)), StatusReply)
-            if more.text_total != reply.text_total or more.text_offset != len(text):
-                reply, text = more, bytearray()  # the error changed meanwhile: start over
-                continue
-            text += more.text_chunk
-        return _status(reply, text.decode("utf-8", errors="replace"))
-
-    # --- streaming ------------------------------------------------------------------------
-    def stream_start(self, keys: Sequence[str], rate_hz: int = 5000) -> None:
-        """Stream up to three measuring points (signals.py keys) at ``rate_hz``."""
-        self._stream.start(keys, rate_hz)
-
-    def stream_read(self) -> np.ndarray:
-        """Samples received since the last call: shape (n, len(keys)), raw values."""
-        return self._stream.read()
-
-    @property
-    def samples_lost(self) -> int:
-        """Samples lost since :meth:`stream_start` (gaps in the stream sequence numbers)."""
-        return self._stream.lost
-
-    def stream_stop(self) -> None:
-        """Stop streaming."""
-        self._stream.stop()
-
     def close(self) -> None:
         """Stop any stream and close the link (idempotent)."""
-        if self._transport.closed:
+        if self.closed:
             return
-        try:
-            if self._stream.running:
-                self._stream.stop()
-        except CommunicationError:
-            pass
-        self._transport.close()
+        self._close_link()
         hooks, self._on_close = self._on_close, []  # each hook runs once
         for hook in reversed(hooks):  # the last one added is undone first
             hook()
@@ -317,7 +330,7 @@ class ValveSession:
         """Call ``hook`` when the session closes (before the hooks added earlier); at once if
         it is closed already (a hook added from another thread while the session closed)."""
         self._on_close.append(hook)
-        if self._transport.closed and hook in self._on_close:
+        if self.closed and hook in self._on_close:
             self._on_close.remove(hook)
             hook()
 
@@ -358,16 +371,6 @@ class ValveSession:
             log.warning("%s: reloading the stored parameters failed: %s", self._device_id, exc)
             return str(exc)
         return None
-
-    def _call(self, request: Request, expected: type[R]) -> R:
-        reply = self._transport.request(request)
-        if isinstance(reply, AbortReply):
-            raise SdoAbortError(reply.index, reply.subindex, reply.code)
-        if not isinstance(reply, expected):
-            raise ProtocolError(
-                f"the valve answered {type(request).__name__} with {type(reply).__name__}"
-            )
-        return reply
 
     def _param(self, mnemonic: str) -> Parameter:
         param = self._params.get(mnemonic)
@@ -441,23 +444,3 @@ def _step_error(
     error.written = written  # type: ignore[attr-defined]
     error.verified = verified  # type: ignore[attr-defined]
     return error
-
-
-def _status(reply: StatusReply, text: str) -> ValveStatus:
-    try:
-        state = DeviceState(reply.device_state)
-    except ValueError:
-        raise ProtocolError(f"the valve reported an unknown state {reply.device_state!r}") from None
-    return ValveStatus(
-        device_state=state,
-        error_code=reply.error_code,
-        error_text=text,
-        warning=reply.warning,
-        active_errors=reply.active_errors,
-        error_register=reply.error_register,
-        leds=tuple(LedState(c, p, lit) for c, p, lit in reply.leds),  # type: ignore[arg-type]
-        temperature_c=reply.temperature_c,
-        supply_v=reply.supply_v,
-        nmt_state=reply.nmt_state,
-        booting=reply.booting,
-    )

@@ -57,6 +57,10 @@ _NO_VALUE = QT_TRANSLATE_NOOP("Problems", "{0}: no value after '='")
 _ROUNDED = QT_TRANSLATE_NOOP(
     "Problems", "{0}: {1}{2} is stored as {3}{2}, the nearest value the valve can hold"
 )
+_NOT_AVAILABLE = QT_TRANSLATE_NOOP(
+    "Problems",
+    "{0} has no value: the valve it was read from does not have it over CANopen; not uploaded",
+)
 _MISSING = QT_TRANSLATE_NOOP("Problems", "{0} ({1}) is missing (required for {2} valves)")
 
 
@@ -219,6 +223,10 @@ def _misplaced(param: Parameter, type_key: TypeKey | None) -> Message | None:
 
 
 def _check_value(param: Parameter, entry: Entry, result: CheckedEntries) -> None:
+    if not entry.value and not param.address_from_manual:
+        # written by a download over CANopen from a valve without this project's object
+        result.problems.append(FileProblem(entry.line, _NOT_AVAILABLE(param.mnemonic), "warning"))
+        return
     if not entry.value:
         result.problems.append(FileProblem(entry.line, _NO_VALUE(param.mnemonic)))
         return

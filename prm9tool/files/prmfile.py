@@ -75,8 +75,12 @@ class PrmContents:
         if self.firmware:
             self._emit(lines, "firmware", self.firmware)
         for number, param in enumerate(CATALOGUE.file_parameters(self.type_key.variant)):
-            value = param.format_display(self.values[param.mnemonic])
-            self._emit(lines, param.mnemonic, value, [""] if number == 0 else [], _hint(param))
+            raw = self.values.get(param.mnemonic)
+            if raw is None and param.address_from_manual:
+                raise KeyError(param.mnemonic)  # only this project's objects may be absent
+            value = "" if raw is None else param.format_display(raw)
+            hint = _hint(param) if raw is not None else NOT_AVAILABLE_HINT
+            self._emit(lines, param.mnemonic, value, [""] if number == 0 else [], hint)
         for name, value in self.unknown:
             self._emit(lines, name, value)
         lines.extend(self.comments.get("checksum", [""]))
@@ -95,6 +99,10 @@ class PrmContents:
         value = _escape_controls(value)  # values from a device are data, never file structure
         entry = _entry_text(name, value)
         lines.append(entry + self.inline_comments.get(name, hint))
+
+
+# A parameter a valve does not have over CANopen (downloaded from a real valve, docs/can-link.md)
+NOT_AVAILABLE_HINT = "  # not available over CANopen on the valve this was read from"
 
 
 def _escape_controls(value: str) -> str:

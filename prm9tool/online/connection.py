@@ -35,7 +35,7 @@ if TYPE_CHECKING:
 log = logging.getLogger(__name__)
 
 Opener = Callable[[object], Any]  # entry -> ValveSession
-Lister = Callable[[Sequence[str]], list[Any]]  # emulator specs -> [DeviceEntry]
+Lister = Callable[..., list[Any]]  # (emulator specs[, CAN bus dict]) -> [DeviceEntry]
 PROGRESS_PERIOD_S = 0.05
 OVERRIDE_OBJECTS = ("SETPOVR", "SETPOVRON")
 
@@ -160,15 +160,22 @@ class ValveConnection(QObject):
         return self._lister(emulators)
 
     def list_devices_async(
-        self, emulators: Sequence[str], deliver: Callable[[ListedValves], None]
+        self,
+        emulators: Sequence[str],
+        deliver: Callable[[ListedValves], None],
+        can: Mapping[str, object] | None = None,
     ) -> None:
         """:meth:`list_devices` in a thread of its own; ``deliver(entries)`` — or
-        ``deliver(exception)`` if listing failed — runs on the GUI thread."""
+        ``deliver(exception)`` if listing failed — runs on the GUI thread. ``can``: also scan
+        that CAN bus (``interface``, ``channel``, ``bitrate``) for its nodes."""
         specs = list(emulators)
+        bus = dict(can) if can is not None else None
 
         def run() -> None:
             try:
-                found: ListedValves = self._lister(specs)
+                found: ListedValves = (
+                    self._lister(specs) if bus is None else self._lister(specs, bus)
+                )
             except Exception as exc:  # e.g. a broken USB stack: the caller says so
                 found = exc
             # RuntimeError: the connection was deleted meanwhile, nobody is waiting
@@ -558,7 +565,13 @@ def _default_opener(entry: object) -> Any:
     return factory.open_session(entry)  # type: ignore[arg-type]
 
 
-def _default_lister(emulators: Sequence[str]) -> list[Any]:
+def _default_lister(emulators: Sequence[str], can: Mapping[str, Any] | None = None) -> list[Any]:
     from prm9tool.device import factory
 
-    return list(factory.list_devices(emulators))
+    if can is None:
+        return list(factory.list_devices(emulators))
+    rate = can.get("bitrate")
+    options = factory.CanOptions(
+        str(can["interface"]), str(can["channel"]), int(rate) if rate else None
+    )
+    return list(factory.list_devices(emulators, options))

@@ -22,11 +22,13 @@ _ACTIONS: tuple[tuple[str, str, object], ...] = (
     ("redo", "redo", ("Ctrl+Y", "Ctrl+Shift+Z")),
     ("print", "print", SK.Print),
     ("export_pdf", "pdf", "Ctrl+E"),
+    ("export_dcf", "", None),
     ("exit", "exit", (SK.Quit, "Ctrl+Q")),  # nor a Quit key
     ("view_diagram", "diagram", "Ctrl+1"),
     ("view_parameters", "parameters", "Ctrl+2"),
     ("view_scope", "scope", "Ctrl+3"),
     ("canopen", "canopen", "Ctrl+4"),
+    ("od_browser", "", None),
     ("level_basic", "", None),
     ("level_expert", "", None),
     ("change_password", "", None),
@@ -37,6 +39,7 @@ _ACTIONS: tuple[tuple[str, str, object], ...] = (
     ("restore_factory", "factory", None),
     ("restart", "restart", None),
     ("hid_configuration", "hid", "Ctrl+H"),
+    ("can_bus", "canopen", None),
     ("online", "online", "F5"),
     ("offline", "offline", "Shift+F5"),
     ("help", "help", SK.HelpContents),
@@ -104,6 +107,17 @@ def _texts() -> dict[str, _Texts]:
             translate("MainActions", "&Print…"),
             translate("MainActions", "Print the current parameter record"),
         ),
+        "od_browser": _Texts(
+            translate("MainActions", "Object &dictionary…"),
+            translate("MainActions", "Read, and at Expert level write, any object of the valve"),
+        ),
+        "export_dcf": _Texts(
+            translate("MainActions", "Export &DCF…"),
+            translate(
+                "MainActions",
+                "Save the valve's CANopen configuration as a CiA 306 DCF (for a PLC configurator)",
+            ),
+        ),
         "export_pdf": _Texts(
             translate("MainActions", "&Export PDF…"),
             translate("MainActions", "Save the parameter record as PDF"),
@@ -165,6 +179,12 @@ def _texts() -> dict[str, _Texts]:
         "hid_configuration": _Texts(
             translate("MainActions", "&HID configuration…"),
             translate("MainActions", "Choose the valve to communicate with"),
+        ),
+        "can_bus": _Texts(
+            translate("MainActions", "&CAN bus…"),
+            translate(
+                "MainActions", "Find the valves on a CAN bus and go online with one (CANopen)"
+            ),
         ),
         "online": _Texts(
             translate("MainActions", "O&nline mode"),
@@ -242,12 +262,12 @@ class MainActions(QObject):
         """File, View, Valve, Communication, Help (manual §8.5)."""
         layout: dict[str, tuple[str | None, ...]] = {
             "file": ("new", "open", "recent", "save", "save_as", None, "undo", "redo", None,
-                     "print", "export_pdf", None, "compare_file", None, "exit"),
+                     "print", "export_pdf", "export_dcf", None, "compare_file", None, "exit"),
             "view": ("view_diagram", "view_parameters", "view_scope", None, "access", "language",
-                     None, "canopen"),
+                     None, "canopen", "od_browser"),
             "valve": ("valve_selection", "valve_status", None, "upload", "download",
                       "compare_valve", "history", None, "restore_factory", "restart"),
-            "communication": ("hid_configuration", None, "online", "offline"),
+            "communication": ("hid_configuration", "can_bus", None, "online", "offline"),
             "help": ("help", "homepage", None, "about"),
         }  # fmt: skip
         for menu_name, items in layout.items():

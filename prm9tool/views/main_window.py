@@ -10,7 +10,7 @@ from collections.abc import Callable
 from pathlib import Path
 from typing import TYPE_CHECKING
 
-from PySide6.QtCore import QByteArray, QEvent, QLocale, QSettings
+from PySide6.QtCore import QByteArray, QEvent, QLocale, QSettings, Qt
 from PySide6.QtGui import QCloseEvent, QDragEnterEvent, QDropEvent
 from PySide6.QtWidgets import QApplication, QMainWindow, QScrollArea, QStackedWidget, QWidget
 
@@ -27,6 +27,7 @@ from prm9tool.views import prompts
 from prm9tool.views.access_dialog import ChangePasswordDialog, PasswordDialog
 from prm9tool.views.actions import MainActions
 from prm9tool.views.compare_workflow import CompareWorkflow
+from prm9tool.views.dcf_export import DcfExport
 from prm9tool.views.emcy import status_summary
 from prm9tool.views.emulated_valve import EmulatedValveMenu
 from prm9tool.views.file_workflow import FileWorkflow
@@ -72,6 +73,7 @@ class MainWindow(QMainWindow):
         self.control = ValveControl(connection, self)
         self.records = RecordActions(self)
         self.compare = CompareWorkflow(self, doc, undo, access, connection, self.sync, self.valve)
+        self.dcf = DcfExport(doc, self)
         self.commands = MainActions(self)
         self.commands.build_menus(self.menuBar())
         self.emulated_menu = EmulatedValveMenu(self.control, doc, self).attach(self.commands)
@@ -177,6 +179,8 @@ class MainWindow(QMainWindow):
             "redo": self.undo.stack.redo,
             "print": self.records.print_record,
             "export_pdf": self.records.export_pdf_dialog,
+            "export_dcf": lambda: self.dcf.export_dialog(self.files.last_folder()),
+            "od_browser": self.show_object_dictionary,
             "exit": self.close,
             "view_diagram": lambda: self.show_view("diagram"),
             "view_parameters": lambda: self.show_view("parameters"),
@@ -192,6 +196,7 @@ class MainWindow(QMainWindow):
             "restore_factory": self.valve.restore_factory,
             "restart": self.valve.restart,
             "hid_configuration": self.valve.configure_hid,
+            "can_bus": self.valve.configure_can_bus,
             "online": lambda: self.valve.go_online(),
             "offline": self.valve.go_offline,
             "help": self.show_help,
@@ -232,8 +237,18 @@ class MainWindow(QMainWindow):
             signal.connect(self._show_file)
         self.files.about_to_replace.connect(self.sync.stop)
         self.files.document_replaced.connect(self.valve.compare_again)
-        for source in (self.files, self.valve, self.records, self.compare):
+        for source in (self.files, self.valve, self.records, self.compare, self.dcf):
             source.message_posted.connect(lambda text: s.showMessage(text, 8000))
+
+    def show_object_dictionary(self) -> None:
+        """View → Object dictionary (online): every object, read and at Expert level write."""
+        from prm9tool.views.od_browser import ObjectDictionaryDialog
+
+        dialog = ObjectDictionaryDialog(self.connection, self.access, self.doc.variant, self)
+        dialog.setAttribute(Qt.WidgetAttribute.WA_DeleteOnClose)
+        self.connection.online_changed.connect(dialog.close)
+        dialog.show()
+        dialog.read_all()
 
     def _on_connection_online_changed(self, online: bool) -> None:
         if online:
@@ -251,6 +266,9 @@ class MainWindow(QMainWindow):
             "redo": self.undo.stack.canRedo(),
             "online": not online and not busy,
             "hid_configuration": not online and not busy,  # the valve is chosen before
+            "can_bus": not online and not busy,
+            "export_dcf": self.doc.variant.canopen,
+            "od_browser": ready,
             "offline": online,
             "upload": ready,
             "download": ready,

@@ -87,6 +87,20 @@ class ValveWorkflow(QObject):
             return None
         return dialog.selected_entry()
 
+    def configure_can_bus(self) -> None:
+        """Communication → CAN bus: choose the bus and a valve on it, then go online with it."""
+        from prm9tool.views.can_bus_dialog import CanBusDialog
+
+        def scan(bus: dict[str, object], deliver: Callable[[ListedValves], None]) -> None:
+            self._connection.list_devices_async((), deliver, bus)
+
+        dialog = CanBusDialog(scan, self._settings, self._window)
+        if dialog.exec() != QDialog.DialogCode.Accepted:
+            return
+        device_id = dialog.selected_device_id()
+        if device_id is not None and not self._connection.is_online:
+            self._connect(device_id)
+
     def chosen_entry(self, entries: ListedValves) -> ValveListing | None:
         """The valve to go online with among the listed ``entries`` (or the exception listing
         raised): the one chosen before, the only one, or ask."""

@@ -1,0 +1,238 @@
+"""The CANopen link of prm9tool (device/canlink) against the emulated E04 -CA valve.
+
+Prints, for one full E04 upload (write → verify → store → read back, the upload contract of
+prm9tool.device.session) over a python-can virtual bus:
+
+* the frames on the bus per step against the minimum the payload needs (one expedited SDO
+  request + answer per value written, per value read back, and the store: 2 frames each), the
+  time on the virtual bus, and the time those frames need on the wire at 500 and 125 kbit/s
+  from their bit lengths (an 8-byte standard frame: 111 bits without stuff bits, 135 with the
+  worst case, plus 3 bits of interframe space);
+* what the scope gets per channel by SDO sampling (measured on the virtual bus, and the bus
+  limit at 500 kbit/s);
+* the SDO round trip of the session against the ``canopen`` package's own LocalNode server in
+  the same run (same bus kind, same client).
+
+    .venv/bin/python benchmarks/bench_can_link.py [--reads 500]
+"""
+
+from __future__ import annotations
+
+import argparse
+import statistics
+import tempfile
+import time
+from collections.abc import Callable
+from pathlib import Path
+
+import can
+import canopen
+
+from prm9tool.device.canlink.bus import CanOptions
+from prm9tool.device.canlink.session import CanopenSession
+from prm9tool.device.emulator import EmulatedValve
+
+E04 = "PRM9-06.3Z11/30-24E04S02-CA"
+NODE = 10
+BITS = 111 + 3  # an 8-byte standard data frame without stuff bits, with interframe space
+BITS_STUFFED = 135 + 3  # the same with the worst-case stuff bits
+
+
+class Counter(can.Listener):
+    """Counts the frames seen on the bus (requests and answers alike)."""
+
+    def __init__(self) -> None:
+        self.frames = 0
+
+    def on_message_received(self, msg: can.Message) -> None:
+        self.frames += 1
+
+
+def _changed(session: CanopenSession) -> dict[str, int | str]:
+    """The whole file set, a few values changed within the catalogue's rules."""
+    values = session.download()
+    values.update(LIMTA=1500, LIMTB=1600, DYNFREQ=120, DTAMP=1000)
+    return values
+
+
+def _wire_ms(frames: int, bitrate: int, bits: int = BITS) -> float:
+    return frames * bits / bitrate * 1000
+
+
+def _upload_frames(
+    session: CanopenSession, counter: Counter, values: dict[str, int | str]
+) -> tuple[int, float, bool]:
+    time.sleep(0.05)
+    before, start = counter.frames, time.perf_counter()
+    result = session.upload(values)
+    elapsed = time.perf_counter() - start
+    time.sleep(0.05)
+    return counter.frames - before, elapsed, result.stored
+
+
+def upload_figures(channel: str, folder: Path) -> None:
+    """Frames and times of a full upload: into a session that has not read the values yet
+    (cold) and into one that has (after a download: the batch's backup, the GUI online)."""
+    valve = EmulatedValve(E04, 4711, nv_path=folder / "4711.json")
+    valve_bus = can.Bus(interface="virtual", channel=channel)
+    slave = valve.connect_can(valve_bus)
+    valve.advance(2.5)
+    listen = can.Bus(interface="virtual", channel=channel)
+    counter = Counter()
+    notifier = can.Notifier(listen, [counter])
+    options = CanOptions("virtual", channel)
+    try:
+        with CanopenSession(options, NODE) as session:
+            factory = session.download()
+            values = _changed(session)
+        with CanopenSession(options, NODE) as session:
+            cold = _upload_frames(session, counter, values)
+            warm = _upload_frames(session, counter, factory)
+    finally:
+        notifier.stop()
+        listen.shutdown()
+        slave.stop()
+        valve_bus.shutdown()
+    n = len(values)
+    minimum = 2 * n + 2 * n + 2  # write + verify + store
+    contract = minimum + 2 * n  # + the read-back after the store (device/session.py)
+    print(f"E04 upload of {n} parameters (stored: {cold[2]} / {warm[2]})")
+    print(
+        f"  frames minimum for write+verify+store: {minimum}; with the contract's read-back after the store: {contract}"
+    )
+    for name, (frames, elapsed, _) in (("cold (snapshot read)", cold), ("after a download", warm)):
+        print(
+            f"  {name}: {frames} frames -> {frames / minimum:.2f}x the minimum, "
+            f"{frames / contract:.2f}x the contract; {elapsed * 1000:.1f} ms on the virtual bus"
+        )
+        for rate in (500_000, 125_000):
+            wire, worst = _wire_ms(frames, rate), _wire_ms(frames, rate, BITS_STUFFED)
+            least = _wire_ms(minimum, rate)
+            print(
+                f"    at {rate // 1000} kbit/s: {wire:.0f} ms on the wire ({worst:.0f} ms with "
+                f"worst-case stuffing); the payload's minimum {least:.0f} ms -> {wire / least:.2f}x"
+            )
+
+
+def scope_figures(channel: str, folder: Path) -> None:
+    """Samples per second per channel by SDO sampling, 1 and 3 channels."""
+    valve = EmulatedValve(E04, 4712, nv_path=folder / "4712.json")
+    valve_bus = can.Bus(interface="virtual", channel=channel)
+    slave = valve.connect_can(valve_bus)
+    valve.advance(2.5)
+    try:
+        with CanopenSession(CanOptions("virtual", channel), NODE) as session:
+            for keys in (["position_actual"], ["position_actual", "process_actual", "temperature"]):
+                session.stream_start(keys, 5000)
+                time.sleep(1.0)
+                rate = session.sample_rate_hz
+                session.stream_stop()
+                limit = 500_000 / (2 * BITS) / len(keys)
+                print(
+                    f"  scope, {len(keys)} channel(s) by SDO: {rate:.0f} samples/s per channel on "
+                    f"the virtual bus; the 500 kbit/s bus allows at most {limit:.0f}"
+                )
+    finally:
+        slave.stop()
+        valve_bus.shutdown()
+    pdo_figures(channel + "-pdo", folder)
+
+
+def pdo_figures(channel: str, folder: Path) -> None:
+    """TPDO1 at the tool's SYNC, the valve running in real time and OPERATIONAL."""
+    valve = EmulatedValve(E04, 4714, nv_path=folder / "4714.json")
+    valve_bus = can.Bus(interface="virtual", channel=channel)
+    slave = valve.connect_can(valve_bus)
+    valve.start()
+    time.sleep(2.5)
+    try:
+        with CanopenSession(CanOptions("virtual", channel), NODE) as session:
+            session.write("HEARTBEAT", 20)
+            session.write("CTRLMODE", 2)
+            session.nmt(0x01)
+            time.sleep(0.2)
+            for rate_hz in (1000, 500):
+                session.stream_start(["position_actual"], rate_hz)
+                time.sleep(1.0)
+                got, lost, source = (
+                    session.sample_rate_hz,
+                    session.samples_lost,
+                    session.stream_source,
+                )
+                session.stream_stop()
+                print(
+                    f"  scope by TPDO1 ({source}) at a {1000 / rate_hz:g} ms SYNC: {got:.0f} samples/s "
+                    f"on the virtual bus, {lost} SYNC periods without a sample"
+                )
+    finally:
+        valve.stop()
+        slave.stop()
+        valve_bus.shutdown()
+    sync_and_tpdo1 = (47 + 3) + (47 + 32 + 3)  # SYNC (no data) + TPDO1 (4 bytes), bits
+    print(
+        f"  a 1 ms SYNC + TPDO1 takes {sync_and_tpdo1 * 1000 / 500_000 * 100:.0f} % of a "
+        f"500 kbit/s bus, {sync_and_tpdo1 * 1000 / 125_000 * 100:.0f} % of 125 kbit/s"
+    )
+
+
+def _timed(n: int, once: Callable[[], object]) -> list[float]:
+    for _ in range(min(50, n)):
+        once()
+    samples = []
+    for _ in range(n):
+        start = time.perf_counter()
+        once()
+        samples.append(time.perf_counter() - start)
+    return samples
+
+
+def round_trip_figures(channel: str, folder: Path, reads: int) -> None:
+    """SDO read: the session against canopen's LocalNode, same run."""
+    valve = EmulatedValve(E04, 4713, nv_path=folder / "4713.json")
+    valve_bus = can.Bus(interface="virtual", channel=channel)
+    slave = valve.connect_can(valve_bus)
+    valve.advance(2.5)
+    try:
+        with CanopenSession(CanOptions("virtual", channel), NODE) as session:
+            ours = _timed(reads, lambda: session.read("SNV"))
+    finally:
+        slave.stop()
+        valve_bus.shutdown()
+    ref_channel = channel + "-ref"
+    server = canopen.Network()
+    server.connect(interface="virtual", channel=ref_channel)
+    od = canopen.ObjectDictionary()
+    var = canopen.objectdictionary.ODVariable("serial", 0x1018, 0)
+    var.data_type, var.default = canopen.objectdictionary.UNSIGNED32, 4713
+    od.add_object(var)
+    server.add_node(canopen.LocalNode(NODE, od))
+    client = canopen.Network()
+    client.connect(interface="virtual", channel=ref_channel)
+    remote = client.add_node(NODE, canopen.ObjectDictionary())
+    try:
+        reference = _timed(reads, lambda: remote.sdo.upload(0x1018, 0))
+    finally:
+        client.disconnect()
+        server.disconnect()
+    a, b = statistics.median(ours), statistics.median(reference)
+    print(
+        f"  SDO read round trip, median of {reads}: session {a * 1e6:.0f} µs, canopen LocalNode "
+        f"{b * 1e6:.0f} µs -> ratio {a / b:.2f}"
+    )
+
+
+def main() -> None:
+    """Run the three measurements."""
+    parser = argparse.ArgumentParser(description=__doc__)
+    parser.add_argument("--reads", type=int, default=500)
+    args = parser.parse_args()
+    with tempfile.TemporaryDirectory() as tmp:
+        folder = Path(tmp)
+        stamp = time.monotonic_ns()
+        upload_figures(f"bench-up-{stamp}", folder)
+        scope_figures(f"bench-scope-{stamp}", folder)
+        round_trip_figures(f"bench-rt-{stamp}", folder, args.reads)
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,1 @@
+"""The CANopen link: python-can bus, ``canopen`` master, discovery, the CANopen valve session."""

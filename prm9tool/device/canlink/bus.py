@@ -1,0 +1,210 @@
+"""Opening a python-can bus and sharing one CANopen master (``canopen.Network``) per bus.
+
+python-can and canopen are imported when a bus is opened, never at import time (the GUI
+starts without them). A bus that cannot be opened is a :class:`CanAdapterError` naming the
+interface and what to install or check; no python-can traceback reaches the user.
+"""
+
+from __future__ import annotations
+
+import logging
+import threading
+import time
+from dataclasses import dataclass, field
+from typing import TYPE_CHECKING, Any
+
+from prm9tool.errors import CanAdapterError
+
+if TYPE_CHECKING:
+    import can
+    import canopen
+
+log = logging.getLogger(__name__)
+
+# What to install or check per python-can interface (docs/can-link.md lists them all).
+HINTS = {
+    "socketcan": "is the network interface there and up? (ip link show CHANNEL; "
+    "sudo ip link set CHANNEL up type can bitrate BITRATE)",
+    "pcan": "install PEAK's PCAN-Basic driver (Linux: libpcanbasic; Windows: the PEAK "
+    "driver package) and plug the PCAN-USB in; channel e.g. PCAN_USBBUS1",
+    "kvaser": "install Kvaser CANlib (the Kvaser drivers) and plug the interface in; channel 0",
+    "ixxat": "install the IXXAT VCI driver; channel 0",
+    "vector": "install Vector's XL Driver Library and assign the channel to python-can in "
+    "Vector Hardware Config",
+    "slcan": "CHANNEL is the adapter's serial port (e.g. /dev/ttyACM0 or COM3): is it "
+    "plugged in, and may you open it? (Linux: the group dialout)",
+    "gs_usb": "install gs_usb and pyusb, and allow your user the USB device (a udev rule)",
+    "udp_multicast": "needs the package msgpack and a multicast route (e.g. ip route add "
+    "224.0.0.0/4 dev lo for one machine)",
+    "virtual": "the in-process virtual bus always opens; check the channel name",
+}
+GENERIC_HINT = "check that the adapter is plugged in, its driver is installed and you may use it"
+
+
+@dataclass(frozen=True)
+class CanOptions:
+    """Which CAN bus: a python-can interface, channel and bit rate."""
+
+    interface: str = "virtual"
+    channel: str = "prm9tool"
+    bitrate: int | None = None  # None: whatever the bus backend uses by default
+
+    @classmethod
+    def from_args(cls, args: Any) -> CanOptions:
+        """The options of the CLI's ``--can-interface/--can-channel/--can-bitrate`` (None: the
+        default here)."""
+        given = {
+            "interface": args.can_interface,
+            "channel": args.can_channel,
+            "bitrate": args.can_bitrate,
+        }
+        return cls(**{name: value for name, value in given.items() if value is not None})
+
+    def __str__(self) -> str:
+        rate = f", {self.bitrate} bit/s" if self.bitrate else ""
+        return f"{self.interface} channel {self.channel}{rate}"
+
+
+def open_bus(options: CanOptions, default_bitrate: int | None = None) -> can.BusABC:
+    """A python-can bus for ``options``; CanAdapterError with what to check if it fails."""
+    try:
+        import can
+    except ImportError as exc:  # pragma: no cover - python-can is a dependency
+        raise CanAdapterError(f"python-can is not installed: {exc}") from exc
+    kwargs: dict[str, Any] = {"interface": options.interface, "channel": options.channel}
+    bitrate = options.bitrate if options.bitrate is not None else default_bitrate
+    if bitrate:
+        kwargs["bitrate"] = bitrate
+    try:
+        return can.Bus(**kwargs)
+    except (can.CanError, OSError, ValueError, ImportError, NotImplementedError) as exc:
+        raise CanAdapterError(adapter_problem(options, exc)) from exc
+
+
+def adapter_problem(options: CanOptions, exc: BaseException) -> str:
+    """The message for a bus that could not be opened: interface, reason, what to check."""
+    hint = HINTS.get(options.interface, GENERIC_HINT)
+    hint = hint.replace("CHANNEL", options.channel).replace(
+        "BITRATE", str(options.bitrate or 500000)
+    )
+    reason = str(exc) or type(exc).__name__
+    return f"cannot open the CAN interface {options.interface!r}, channel {options.channel!r}: {reason} — {hint}"
+
+
+@dataclass
+class NodeSeen:
+    """What the bus told about one node without being asked: heartbeat and EMCY."""
+
+    node_id: int
+    nmt_state: str = ""
+    heartbeat_at: float | None = None  # time.monotonic() of the last heartbeat/boot-up
+    emcy_code: int | None = None
+    emcy_register: int = 0
+    emcy_at: float | None = None
+    boot_ups: int = 0
+
+
+NMT_STATES = {0x00: "initialising", 0x04: "stopped", 0x05: "operational", 0x7F: "pre-operational"}
+
+
+@dataclass
+class CanNetwork:
+    """One opened bus with its CANopen master; shared by every session on that bus."""
+
+    options: CanOptions
+    network: canopen.Network
+    users: int = 0
+    seen: dict[int, NodeSeen] = field(default_factory=dict)
+    lock: threading.RLock = field(default_factory=threading.RLock)
+    error_frames: int = 0
+    sync_owner: object | None = None  # the scope producing SYNC on this bus (one at a time)
+
+    def on_frame(self, msg: can.Message) -> None:
+        """Every frame on the bus (a python-can listener): heartbeats, boot-ups, EMCY."""
+        if msg.is_error_frame:
+            self.error_frames += 1
+            return
+        if msg.is_extended_id or msg.is_remote_frame:
+            return
+        cob, node = msg.arbitration_id & 0x780, msg.arbitration_id & 0x7F
+        if node == 0:
+            return
+        if cob == 0x700 and len(msg.data) >= 1:
+            seen = self.seen.setdefault(node, NodeSeen(node))
+            code = msg.data[0] & 0x7F
+            seen.nmt_state = NMT_STATES.get(code, f"0x{code:02X}")
+            seen.heartbeat_at = time.monotonic()
+            seen.boot_ups += code == 0
+        elif cob == 0x080 and len(msg.data) >= 3:
+            seen = self.seen.setdefault(node, NodeSeen(node))
+            seen.emcy_code = int.from_bytes(bytes(msg.data[:2]), "little")
+            seen.emcy_register = msg.data[2]
+            seen.emcy_at = time.monotonic()
+
+    def node_seen(self, node_id: int) -> NodeSeen:
+        """What the bus told about ``node_id`` so far."""
+        return self.seen.setdefault(node_id, NodeSeen(node_id))
+
+
+_NETWORKS: dict[CanOptions, CanNetwork] = {}
+_LOCK = threading.Lock()
+
+
+def acquire(options: CanOptions) -> CanNetwork:
+    """The shared master of the bus ``options`` (opened on first use); :func:`release` it."""
+    with _LOCK:
+        shared = _NETWORKS.get(options)
+        if shared is None:
+            shared = _connect(options)
+            _NETWORKS[options] = shared
+        shared.users += 1
+        return shared
+
+
+def release(shared: CanNetwork) -> None:
+    """One user less; the last one closes the bus."""
+    with _LOCK:
+        shared.users -= 1
+        if shared.users > 0:
+            return
+        _NETWORKS.pop(shared.options, None)
+    try:
+        shared.network.disconnect()
+    except Exception as exc:
+        log.warning("closing the CAN bus %s: %s", shared.options, exc)
+
+
+def _connect(options: CanOptions) -> CanNetwork:
+    import canopen
+
+    bus = open_bus(options)
+    network = canopen.Network(bus)
+    network.NOTIFIER_CYCLE = 0.1
+    shared = CanNetwork(options, network)
+    network.listeners.append(_FrameListener(shared))  # type: ignore[arg-type]
+    try:
+        network.connect()
+    except Exception as exc:
+        bus.shutdown()
+        raise CanAdapterError(adapter_problem(options, exc)) from exc
+    return shared
+
+
+class _FrameListener:
+    """A python-can listener feeding :meth:`CanNetwork.on_frame` (duck-typed: can.Listener
+    would import python-can at module import)."""
+
+    def __init__(self, shared: CanNetwork) -> None:
+        self._shared = shared
+
+    def on_message_received(self, msg: can.Message) -> None:
+        self._shared.on_frame(msg)
+
+    def on_error(self, exc: Exception) -> None:
+        log.warning("CAN bus %s: %s", self._shared.options, exc)
+
+    def stop(self) -> None:
+        """Nothing to release."""
+
+    def __call__(self, msg: can.Message) -> None:
+        self.on_message_received(msg)

@@ -1,0 +1,107 @@
+"""The oscilloscope over the valve's fixed PDO mapping (manual table 7-13).
+
+TPDO1 carries the status word and, as entry 2, the actual position 0x6301 (control mode 2) or
+the process actual value 0x6381 (mode 4). While the node is OPERATIONAL, the scope sets TPDO1 to
+transmission type 1 (sent after every SYNC, table 7-12), produces SYNC at the chosen period
+(down to 1 ms, or what keeps the scope under half of a slower bus) and takes each TPDO1 as one sample; stopping stops the SYNC and puts the
+transmission type back. A SYNC without its TPDO1 counts as a lost sample, so the rate shown is
+the real one. Other measuring points, or a node that is not OPERATIONAL, are sampled by SDO
+(prm9tool.device.canlink.sampler).
+"""
+
+from __future__ import annotations
+
+import contextlib
+import threading
+import time
+from collections.abc import Sequence
+
+import numpy as np
+
+from prm9tool.device.canlink.bus import CanNetwork
+from prm9tool.device.canlink.sdo import SdoChannel
+from prm9tool.errors import Prm9Error
+
+MIN_PERIOD_S = 0.001
+SYNC_AND_TPDO1_BITS = (47 + 3) + (47 + 32 + 3)  # SYNC (no data) + TPDO1 (4 bytes) on the wire
+MAX_BUS_LOAD = 0.5  # decision: the scope takes at most half the bus, SDO and others need room
+SYNCHRONOUS_EVERY_SYNC = 1  # TPDO transmission type 1 (manual table 7-12)
+ENTRY2_KEYS = {0x6301: "position_actual", 0x6381: "process_actual"}
+
+
+class NotPdoMappedError(Prm9Error):
+    """These measuring points are not all in TPDO1, or TPDO1 cannot be used now."""
+
+
+def min_period_s(bitrate: int | None) -> float:
+    """The shortest SYNC period the bus allows: 1 ms, or longer where SYNC + TPDO1 would take
+    more than half of a slow bus (125 kbit/s: 2.1 ms)."""
+    if not bitrate:
+        return MIN_PERIOD_S
+    return max(MIN_PERIOD_S, SYNC_AND_TPDO1_BITS / bitrate / MAX_BUS_LOAD)
+
+
+class PdoSampler:
+    """Samples TPDO1's entry 2 at a tool-produced SYNC period (same interface as SdoSampler)."""
+
+    def __init__(
+        self, shared: CanNetwork, sdo: SdoChannel, keys: Sequence[str], rate_hz: float
+    ) -> None:
+        node = int(sdo.node.id or 0)
+        if shared.node_seen(node).nmt_state != "operational":
+            raise NotPdoMappedError(f"node {node} is not OPERATIONAL: no PDOs")
+        mapped = ENTRY2_KEYS.get(sdo.read_u32(0x1A00, 2) >> 16)
+        if list(keys) != [mapped]:
+            raise NotPdoMappedError(f"TPDO1 carries {mapped}, not {', '.join(keys)}")
+        cob_id = sdo.read_u32(0x1800, 1)
+        if cob_id & 0x8000_0000:
+            raise NotPdoMappedError("TPDO1 is switched off (0x1800/1 bit 31)")
+        if shared.sync_owner is not None:
+            raise NotPdoMappedError("another scope produces the SYNC on this bus")
+        self.keys = tuple(keys)
+        self.period_s = max(1.0 / rate_hz, min_period_s(shared.options.bitrate))
+        self.samples = 0
+        self._shared, self._sdo, self._cob_id = shared, sdo, cob_id & 0x7FF
+        self._rows: list[float] = []
+        self._lock = threading.Lock()
+        self._old_type = sdo.upload(0x1800, 2)
+        sdo.download(0x1800, 2, bytes([SYNCHRONOUS_EVERY_SYNC]))
+        shared.sync_owner = self
+        shared.network.subscribe(self._cob_id, self._on_tpdo)
+        self._started = time.monotonic()
+        shared.network.sync.start(self.period_s)
+
+    @property
+    def achieved_hz(self) -> float:
+        """TPDO1 frames received per second since the start."""
+        elapsed = time.monotonic() - self._started
+        return self.samples / elapsed if elapsed > 0 else 0.0
+
+    @property
+    def lost(self) -> int:
+        """SYNC periods without a TPDO1 so far."""
+        expected = int((time.monotonic() - self._started) / self.period_s)
+        return max(expected - self.samples - 1, 0)  # the frame of the latest SYNC may be due
+
+    def read(self) -> np.ndarray:
+        """Rows received since the last call, shape (n, 1)."""
+        with self._lock:
+            rows, self._rows = self._rows, []
+        return np.asarray(rows, dtype=np.float64).reshape(len(rows), 1)
+
+    def stop(self) -> None:
+        """Stop the SYNC, stop listening, put TPDO1's transmission type back."""
+        network = self._shared.network
+        network.sync.stop()
+        network.unsubscribe(self._cob_id, self._on_tpdo)
+        self._shared.sync_owner = None
+        with contextlib.suppress(Prm9Error):  # a lost link: type 1 stays until the next reset
+            self._sdo.download(0x1800, 2, self._old_type)
+
+    def _on_tpdo(self, _can_id: int, data: bytearray, _timestamp: float) -> None:
+        if len(data) < 4:
+            return
+        value = int.from_bytes(bytes(data[2:4]), "little", signed=True)
+        with self._lock:
+            self._rows.append(float(value))
+        self.samples += 1

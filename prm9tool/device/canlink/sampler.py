@@ -1,0 +1,113 @@
+"""Measuring points over CANopen: sampled by SDO at a fixed period in a thread of its own.
+
+A measuring point with an object in the valve's dictionary (actual position 0x6301, process
+actual value 0x6381, supply 0x2003, temperature 0x2002) is read each
+period; the others have no object on a real valve and give NaN (shown as no data, never a
+made-up curve). A period whose reads did not finish in time is counted as lost samples, so
+the scope's "lost" figure and the real sample rate (:attr:`SdoSampler.achieved_hz`) say how
+much the bus delivered; nothing is interpolated.
+"""
+
+from __future__ import annotations
+
+import logging
+import threading
+import time
+from collections.abc import Callable, Sequence
+from dataclasses import dataclass
+
+import numpy as np
+
+from prm9tool.errors import Prm9Error, ValueRangeError
+
+log = logging.getLogger(__name__)
+MAX_CHANNELS = 3
+
+
+@dataclass(frozen=True)
+class SignalObject:
+    """Where a measuring point lives in the object dictionary, and its raw conversion."""
+
+    index: int
+    subindex: int
+    signed: bool
+    factor: float = 1.0  # OD raw -> measuring-point raw (signals.py units)
+
+
+# Measuring point -> object (manual tables 7-13, 7-14; units as in catalogue/signals.py).
+SIGNAL_OBJECTS = {
+    "position_actual": SignalObject(0x6301, 0, True),
+    "process_actual": SignalObject(0x6381, 0, True),
+    "supply_voltage": SignalObject(0x2003, 0, False),
+    "temperature": SignalObject(0x2002, 0, True, 10.0),  # °C -> 0.1 °C
+}
+
+Reader = Callable[[int, int], bytes]
+
+
+class SdoSampler:
+    """Samples up to three measuring points at ``rate_hz`` by SDO until stopped."""
+
+    def __init__(self, read: Reader, keys: Sequence[str], rate_hz: float) -> None:
+        if not 1 <= len(keys) <= MAX_CHANNELS:
+            raise ValueRangeError(f"stream 1 to {MAX_CHANNELS} measuring points, not {len(keys)}")
+        if rate_hz <= 0:
+            raise ValueRangeError(f"sample rate {rate_hz} Hz")
+        self.keys = tuple(keys)
+        self.period_s = 1.0 / rate_hz
+        self.lost = 0
+        self.samples = 0
+        self.error: Prm9Error | None = None
+        self._read = read
+        self._rows: list[list[float]] = []
+        self._lock = threading.Lock()
+        self._stop = threading.Event()
+        self._started = time.monotonic()
+        self._thread = threading.Thread(target=self._run, name="prm9tool-can-sampler", daemon=True)
+        self._thread.start()
+
+    @property
+    def achieved_hz(self) -> float:
+        """Samples per second actually taken since the start."""
+        elapsed = time.monotonic() - self._started
+        return self.samples / elapsed if elapsed > 0 else 0.0
+
+    def read(self) -> np.ndarray:
+        """Rows taken since the last call (n, channels); raises the link error that ended it."""
+        with self._lock:
+            rows, self._rows = self._rows, []
+        if self.error is not None and not rows:
+            raise self.error
+        return np.asarray(rows, dtype=np.float64).reshape(len(rows), len(self.keys))
+
+    def stop(self) -> None:
+        """Stop sampling (waits for the thread)."""
+        self._stop.set()
+        if self._thread is not threading.current_thread():
+            self._thread.join(timeout=2.0)
+
+    def _run(self) -> None:
+        due = time.monotonic()
+        while not self._stop.is_set():
+            try:
+                row = [self._sample(key) for key in self.keys]
+            except Prm9Error as exc:
+                self.error = exc
+                return
+            with self._lock:
+                self._rows.append(row)
+            self.samples += 1
+            due += self.period_s
+            behind = time.monotonic() - due
+            if behind > 0:  # the reads took longer than a period: those samples are lost
+                missed = int(behind / self.period_s) + 1
+                self.lost += missed
+                due += missed * self.period_s
+            self._stop.wait(max(due - time.monotonic(), 0.0))
+
+    def _sample(self, key: str) -> float:
+        obj = SIGNAL_OBJECTS.get(key)
+        if obj is None:
+            return float("nan")
+        data = self._read(obj.index, obj.subindex)
+        return int.from_bytes(data, "little", signed=obj.signed) * obj.factor

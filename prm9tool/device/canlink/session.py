@@ -1,0 +1,338 @@
+"""The valve session over CANopen (manual chapter 7): one link of
+:class:`prm9tool.device.session.ValveSession`, with the ``canopen`` package as SDO/NMT master.
+
+Parameters travel by the catalogue's object address through SDO. An object the valve does not
+have (abort 0x06020000/0x06090011; on a real valve the objects this project decided on) makes
+the parameter "not available over CANopen on this valve": it is skipped and listed in
+:attr:`unavailable`. Store is 0x1010/1 "save", restore factory values 0x1011/1 "load",
+restart NMT reset node.
+
+**Decision (reverting a failed upload).** CiA 301 has no "reload the stored set into RAM"
+short of resetting the node, which power-cycles the electronics and drops the spool. So
+before an upload writes anything the session reads the working values of the parameters it is
+going to write (a snapshot) and, after a failed upload, writes them back: the valve then runs
+on with the values it had, its stored set untouched, and nothing moves. The snapshot costs one
+SDO read per parameter, except for the values this session read or wrote last (the batch's
+backup and the GUI's going online read them all): docs/can-link.md, docs/PERFORMANCE.md.
+"""
+
+from __future__ import annotations
+
+import threading
+import time
+from collections.abc import Callable, Mapping, Sequence
+
+import numpy as np
+
+from prm9tool.catalogue import LOAD_SIGNATURE, SAVE_SIGNATURE, Parameter
+from prm9tool.device.canlink import bus as canbus
+from prm9tool.device.canlink import discovery
+from prm9tool.device.canlink.pdo_scope import NotPdoMappedError, PdoSampler
+from prm9tool.device.canlink.sampler import SdoSampler
+from prm9tool.device.canlink.sdo import MISSING, SdoChannel
+from prm9tool.device.canlink.status import read_status
+from prm9tool.device.canlink.typekeys import remember, resolve
+from prm9tool.device.emulator.states import ValveStatus
+from prm9tool.device.entries import Progress, RefusedError, Steps, Value, check_cancel
+from prm9tool.device.session import DeviceInfo, UploadResult, ValveSession
+from prm9tool.errors import (
+    AccessDeniedError,
+    DeviceTimeoutError,
+    Prm9Error,
+    ProtocolError,
+    SdoAbortError,
+)
+
+SDO_TIMEOUT_S = 0.5
+STORE_TIMEOUT_S = 3.0  # writing the non-volatile memory takes longer than an SDO answer
+BOOT_TIMEOUT_S = 10.0  # NMT reset node -> boot-up (the valve takes about 2 s, manual §7.6)
+NMT_RESET_NODE = 0x81
+__all__ = ["CanopenSession", "NotAPrm9Error"]
+
+
+class NotAPrm9Error(AccessDeniedError):
+    """The node is some other CANopen device: prm9tool does not write to it."""
+
+
+class CanopenSession(ValveSession):
+    """One PRM9 -CA valve as a node on a CAN bus, the tool its CANopen master."""
+
+    def __init__(
+        self,
+        options: canbus.CanOptions,
+        node_id: int,
+        *,
+        type_key: str | None = None,
+        on_close: Callable[[], None] | None = None,
+        timeout_s: float = SDO_TIMEOUT_S,
+    ) -> None:
+        """``type_key``: the key to use when the valve has no 0x2041 (the batch file's, the
+        user's answer); it is checked against what the object dictionary tells."""
+        if not 1 <= node_id <= 127:
+            raise Prm9Error(f"CANopen node IDs are 1…127, not {node_id}")
+        super().__init__(f"can:{node_id}", on_close)
+        self.node_id = node_id
+        self._type_key_hint = type_key
+        self.key_given = False  # True: the type key was given, the valve has no 0x2041
+        self._shared = canbus.acquire(options)
+        self._closed = False
+        self._snapshot: dict[str, Value] | None = None  # None: no upload is running
+        self._touched: list[str] = []  # parameters the running upload wrote
+        self._known: dict[str, Value] = {}  # the valve's working values as last read/written
+        self._sampler: SdoSampler | PdoSampler | None = None
+        self.stream_source = ""  # "pdo" or "sdo" while a stream runs
+        self._lost_before = 0
+        try:
+            self._sdo = self._open_node(timeout_s)
+            self._start()
+        except BaseException:
+            self._release()
+            raise
+
+    @property
+    def options(self) -> canbus.CanOptions:
+        """The bus this session is on."""
+        return self._shared.options
+
+    @property
+    def sdo(self) -> SdoChannel:
+        """The node's SDO channel (the OD browser, statistics)."""
+        return self._sdo
+
+    @property
+    def closed(self) -> bool:
+        """True once the session released the bus."""
+        return self._closed
+
+    # --- identity ---------------------------------------------------------------------------
+    def identify(self) -> DeviceInfo:
+        """Who the node is; NotAPrm9Error for another CANopen device (0x1000, 0x1018/1)."""
+        found = discovery.identify_node(self._shared, self.node_id)
+        if found.device_type is None:
+            raise DeviceTimeoutError(f"node {self.node_id}: {found.problem}")
+        if not found.is_prm9:
+            raise NotAPrm9Error(
+                f"node {self.node_id} is {found.problem}; prm9tool does not write to it"
+            )
+        if found.problem:
+            raise ProtocolError(f"node {self.node_id}: {found.problem}")
+        key = found.type_key
+        self.key_given = key is None
+        if key is None:
+            assert found.derived is not None
+            from prm9tool.paths import user_data_dir
+
+            key = resolve(found.serial, found.derived, self._type_key_hint, user_data_dir())
+        return DeviceInfo(key, found.serial, found.firmware, 0, self._device_id)
+
+    def upload(
+        self,
+        values: Mapping[str, Value],
+        progress: Progress | None = None,
+        cancel: threading.Event | None = None,
+    ) -> UploadResult:
+        """:meth:`ValveSession.upload`; a valve without 0x2041 that stored a set for the type
+        key given (the batch file's) keeps that key remembered for its serial number."""
+        result = super().upload(values, progress, cancel)
+        if result.stored and self.key_given:
+            from prm9tool.paths import user_data_dir
+
+            remember(user_data_dir(), self.info.serial, self.info.type_key)
+        return result
+
+    # --- entries ----------------------------------------------------------------------------
+    def _read_entries(
+        self, params: Sequence[Parameter], steps: Steps | None, cancel: threading.Event | None
+    ) -> dict[str, Value | SdoAbortError]:
+        step = steps.step if steps else "read"
+        results: dict[str, Value | SdoAbortError] = {}
+        for param in params:
+            check_cancel(cancel, step)
+            if param.mnemonic not in self.unavailable:
+                outcome = self._read_one(param)
+                if outcome is not None:
+                    results[param.mnemonic] = outcome
+            if steps:
+                steps.advance(1)
+        return results
+
+    def _read_one(self, param: Parameter) -> Value | SdoAbortError | None:
+        try:
+            data = self._sdo.upload(param.index, param.subindex)
+        except SdoAbortError as exc:
+            if exc.code in MISSING:
+                self.unavailable.add(param.mnemonic)
+                return None
+            return exc
+        if param.is_string:
+            value: Value = data.split(b"\0", 1)[0].decode("latin-1")
+        else:
+            size = param.dtype.size
+            if len(data) < size:
+                raise ProtocolError(f"{param.mnemonic}: {len(data)} bytes for a {param.dtype.name}")
+            value = param.dtype.decode(data[:size])
+        self._known[param.mnemonic] = value
+        return value
+
+    def _write_entries(
+        self,
+        params: Sequence[Parameter],
+        values: Mapping[str, Value],
+        steps: Steps | None,
+        cancel: threading.Event | None,
+    ) -> int:
+        done = 0
+        for param in params:
+            check_cancel(cancel, "write")
+            if param.mnemonic not in self.unavailable:
+                data = param.dtype.encode(values[param.mnemonic])
+                try:
+                    self._known.pop(param.mnemonic, None)  # unknown if the answer is lost
+                    self._sdo.download(param.index, param.subindex, data)
+                    self._known[param.mnemonic] = values[param.mnemonic]
+                    self._touched.append(param.mnemonic)
+                    done += 1
+                except SdoAbortError as exc:
+                    if exc.code not in MISSING:
+                        raise RefusedError(param.mnemonic, exc, done) from exc
+                    self.unavailable.add(param.mnemonic)
+            if steps:
+                steps.advance(1)
+        return done
+
+    def _before_upload(self, params: Sequence[Parameter], cancel: threading.Event | None) -> None:
+        """The snapshot that :meth:`reload` writes back after a failed upload: the working
+        values this session read or wrote last (a download before the upload, the backup, going
+        online), the others read now."""
+        self._snapshot, self._touched = {}, []
+        unknown = [p for p in params if p.mnemonic not in self._known]
+        read = self._read_entries(unknown, None, cancel)
+        known = {p.mnemonic: self._known[p.mnemonic] for p in params if p.mnemonic in self._known}
+        fresh = {m: v for m, v in read.items() if not isinstance(v, SdoAbortError)}
+        self._snapshot = known | fresh
+
+    # --- commands ---------------------------------------------------------------------------
+    def store(self) -> None:
+        """0x1010/1 = "save": the working parameters become the stored ones."""
+        self._sdo.download(0x1010, 1, SAVE_SIGNATURE.to_bytes(4, "little"), STORE_TIMEOUT_S)
+        self._snapshot = None  # stored: nothing to put back any more
+
+    def reload(self) -> None:
+        """Working values ← those read before the upload, for the parameters it wrote (see
+        the module's decision); the stored set was never touched."""
+        if self._snapshot is None:
+            raise Prm9Error(
+                "over CANopen the stored parameters come back only with a restart (NMT reset node)"
+            )
+        touched = set(self._touched)
+        snapshot = {m: v for m, v in self._snapshot.items() if m in touched}
+        self._snapshot, self._touched = None, []
+        params = [self._param(m) for m in snapshot]
+        try:
+            self._write_entries(params, snapshot, None, None)
+        except RefusedError as refused:
+            raise refused.error from None
+
+    def restore_factory(self) -> None:
+        """0x1011/1 = "load": factory values at the next reset or power-up."""
+        self._sdo.download(0x1011, 1, LOAD_SIGNATURE.to_bytes(4, "little"), STORE_TIMEOUT_S)
+
+    def restart(self) -> None:
+        """NMT reset node, then wait for the boot-up and identify again (hydraulics off)."""
+        self._stop_sampler()
+        self._known.clear()  # the valve comes back with its stored set
+        seen = self._shared.node_seen(self.node_id)
+        boot_ups = seen.boot_ups
+        self._sdo.node.nmt.send_command(NMT_RESET_NODE)
+        deadline = time.monotonic() + BOOT_TIMEOUT_S
+        while seen.boot_ups == boot_ups:
+            if time.monotonic() > deadline:
+                raise DeviceTimeoutError(
+                    f"node {self.node_id}: no boot-up within {BOOT_TIMEOUT_S:g} s after the "
+                    "reset; is the valve powered and its node ID unchanged?"
+                )
+            time.sleep(0.02)
+        info = self.identify()
+        if info.serial != self.info.serial:
+            raise ProtocolError(
+                f"node {self.node_id} came back as serial {info.serial}, not {self.info.serial}"
+            )
+
+    def status(self) -> ValveStatus:
+        """State 0x6041, error register 0x1001, errors, LEDs derived from them, NMT state."""
+        return read_status(self._sdo, self._shared.node_seen(self.node_id))
+
+    def nmt(self, command: int) -> None:
+        """Send an NMT command (:class:`~prm9tool.catalogue.commissioning.NmtCommand`) to this
+        node on the bus (no answer comes; the heartbeat shows the new state)."""
+        self._sdo.node.nmt.send_command(command)
+
+    # --- measuring points -------------------------------------------------------------------
+    def stream_start(self, keys: Sequence[str], rate_hz: int = 5000) -> None:
+        """Sample ``keys`` at ``rate_hz``: TPDO1 at a SYNC the tool produces when they are its
+        mapped value and the node is OPERATIONAL, else by SDO (what the bus does not deliver
+        counts as lost; :attr:`stream_source` says which)."""
+        self._stop_sampler()
+        try:
+            self._sampler = PdoSampler(self._shared, self._sdo, keys, rate_hz)
+            self.stream_source = "pdo"
+        except NotPdoMappedError:
+            self._sampler = SdoSampler(self._sdo.upload, keys, rate_hz)
+            self.stream_source = "sdo"
+
+    def stream_read(self) -> np.ndarray:
+        """Samples taken since the last call: shape (n, len(keys)), raw values."""
+        if self._sampler is None:
+            return np.empty((0, 1))
+        return self._sampler.read()
+
+    @property
+    def samples_lost(self) -> int:
+        """Sample periods the bus could not serve since :meth:`stream_start`."""
+        return self._sampler.lost if self._sampler is not None else 0
+
+    @property
+    def sample_rate_hz(self) -> float:
+        """The rate the running stream really achieves (0 when none runs)."""
+        return self._sampler.achieved_hz if self._sampler is not None else 0.0
+
+    def stream_stop(self) -> None:
+        """Stop sampling."""
+        self._stop_sampler()
+
+    # --- internals --------------------------------------------------------------------------
+    def _open_node(self, timeout_s: float) -> SdoChannel:
+        import canopen
+
+        network = self._shared.network
+        with self._shared.lock:
+            if self.node_id in network.nodes:
+                raise Prm9Error(f"node {self.node_id} is already open in this program")
+            node = canopen.RemoteNode(self.node_id, canopen.ObjectDictionary())
+            network.add_node(node)
+        return SdoChannel(node, timeout_s, lambda: self._shared.error_frames)
+
+    def _stop_sampler(self) -> None:
+        sampler, self._sampler = self._sampler, None
+        self.stream_source = ""
+        if sampler is not None:
+            sampler.stop()
+
+    def _close_link(self) -> None:
+        self._stop_sampler()
+        self._release()
+
+    def _release(self) -> None:
+        if self._closed:
+            return
+        self._closed = True
+        network = self._shared.network
+        with self._shared.lock:
+            node = network.nodes.get(self.node_id)
+            if (
+                node is not None
+                and getattr(self, "_sdo", None) is not None
+                and node is self._sdo.node
+            ):
+                del network[self.node_id]
+        canbus.release(self._shared)

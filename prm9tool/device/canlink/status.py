@@ -1,0 +1,89 @@
+"""The valve's status over CANopen: device state, errors, LEDs, NMT state.
+
+Read by SDO: status word 0x6041 (state number in bits 8…11, manual §7.4, figure 7-11), error
+register 0x1001, error history 0x1003/1, temperature 0x2002, supply 0x2003 (table 7-14); the
+NMT state comes from the heartbeat (table 7-4) and the newest EMCY frame gives the active error
+(table 5-1). The LEDs are derived from these as the valve lights them (tables 5-2, 7-18).
+"""
+
+from __future__ import annotations
+
+import time
+
+from prm9tool.device.canlink.bus import NodeSeen
+from prm9tool.device.canlink.sdo import MISSING, SdoChannel
+from prm9tool.device.emulator.faults import ERROR_KINDS, ErrorKind
+from prm9tool.device.emulator.leds import leds
+from prm9tool.device.emulator.states import DeviceState, ValveStatus
+from prm9tool.errors import SdoAbortError
+
+# 0x6041 bits 8…11 (manual figure 7-11, docs/emulator.md)
+STATES = {
+    1: DeviceState.NOT_READY,
+    2: DeviceState.INIT,
+    3: DeviceState.DISABLED,
+    4: DeviceState.HOLD,
+    5: DeviceState.DEVICE_MODE_ACTIVE,
+    6: DeviceState.FAULT_HOLD,
+    7: DeviceState.FAULT,
+    8: DeviceState.FAULT_REACTION,
+}
+EMCY_TEXTS = {kind.code: kind.text for kind in reversed(ERROR_KINDS)}  # first listed wins
+
+
+def device_state(status_word: int) -> DeviceState:
+    """The state a status word 0x6041 reports (NOT_READY for an unknown number)."""
+    return STATES.get((status_word >> 8) & 0x0F, DeviceState.NOT_READY)
+
+
+def emcy_text(code: int) -> str:
+    """The English meaning of an EMCY code (manual table 5-1), or the code itself."""
+    return EMCY_TEXTS.get(code, f"error 0x{code:04X}")
+
+
+def read_status(sdo: SdoChannel, seen: NodeSeen) -> ValveStatus:
+    """A status snapshot of the node behind ``sdo``."""
+    state = device_state(sdo.read_u32(0x6041, 0))
+    register = sdo.read_u32(0x1001, 0) & 0xFF
+    code = _error_code(sdo, seen, register)
+    temperature = _optional_int(sdo, 0x2002, signed=True)
+    supply = _optional_int(sdo, 0x2003, signed=False)
+    kinds = tuple(k for k in ERROR_KINDS if k.code == code)[:1] if code else ()
+    nmt = seen.nmt_state or "unknown"
+    return ValveStatus(
+        device_state=state,
+        error_code=code,
+        error_text=emcy_text(code) if code else "",
+        warning=False,
+        active_errors=(code,) if code else (),
+        error_register=register,
+        leds=_leds(nmt, kinds),
+        temperature_c=float(temperature or 0),
+        supply_v=(supply or 0) / 1000.0,
+        nmt_state=nmt,
+        booting=nmt == "initialising",
+    )
+
+
+def _error_code(sdo: SdoChannel, seen: NodeSeen, register: int) -> int:
+    """The active error: the newest EMCY while the register shows one, else 0x1003/1."""
+    if not register:
+        return 0
+    if seen.emcy_code:
+        return seen.emcy_code
+    newest = _optional_int(sdo, 0x1003, 1, signed=False)
+    return (newest or 0) & 0xFFFF
+
+
+def _optional_int(sdo: SdoChannel, index: int, subindex: int = 0, *, signed: bool) -> int | None:
+    try:
+        data = sdo.upload(index, subindex)
+    except SdoAbortError as exc:
+        if exc.code in MISSING or exc.code == 0x08000024:  # no such object / no data
+            return None
+        raise
+    return int.from_bytes(data, "little", signed=signed)
+
+
+def _leds(nmt: str, kinds: tuple[ErrorKind, ...]) -> tuple:  # type: ignore[type-arg]
+    return leds(time.monotonic(), False, True, nmt, kinds, False)

@@ -1,0 +1,71 @@
+"""The type key of a valve over CANopen.
+
+The manual documents no object holding the type key; 0x2041 (PCODE) is this project's decision,
+which the emulated valve has and a real valve will not. Without it the object dictionary tells
+only part of the key: -CA (by definition: it speaks CANopen) and E02 or E04 (an E04 valve has
+the external-sensor objects 0x2005–0x2100, manual table 7-14). The user gives the rest from the
+valve's label; prm9tool remembers it per serial number in
+``<user data dir>/can-type-keys.json``.
+"""
+
+from __future__ import annotations
+
+import logging
+from dataclasses import dataclass
+from pathlib import Path
+
+from prm9tool.catalogue.typekey import TypeKey
+from prm9tool.catalogue.variant import Config
+from prm9tool.errors import TypeKeyError
+from prm9tool.files.can_type_keys import remember, remembered
+
+__all__ = ["Derived", "TypeKeyNeededError", "remember", "remembered", "resolve"]
+
+log = logging.getLogger(__name__)
+
+
+@dataclass(frozen=True)
+class Derived:
+    """What the object dictionary tells about the type key."""
+
+    config: Config
+    canopen: bool = True
+
+    def describe(self) -> str:
+        """E.g. ``E04 -CA``."""
+        return f"{self.config.value} -CA"
+
+    def problem(self, key: TypeKey) -> str | None:
+        """Why ``key`` cannot be this valve's (None: it fits every part the OD tells)."""
+        if not key.canopen:
+            return f"{key} has no -CA, but the valve speaks CANopen"
+        if key.config is not self.config:
+            return (
+                f"{key} is an {key.config.value} valve, the valve's objects say {self.config.value}"
+            )
+        return None
+
+
+class TypeKeyNeededError(TypeKeyError):
+    """The valve does not tell its full type key and none was given or remembered."""
+
+    def __init__(self, serial: int, derived: Derived) -> None:
+        self.serial, self.derived = serial, derived
+        super().__init__(
+            f"the valve (serial {serial}) has no type-key object 0x2041; its objects tell "
+            f"{derived.describe()}: give the type key on its label "
+            "(command line: the file's key is used; GUI: asked once, then remembered)"
+        )
+
+
+def resolve(serial: int, derived: Derived, hint: str | None, data_dir: Path) -> str:
+    """The type key of a valve without 0x2041: ``hint`` (the batch file's key, the user's
+    answer) or the one remembered for ``serial``, checked against what the OD tells."""
+    candidate = hint or remembered(data_dir, serial)
+    if candidate is None:
+        raise TypeKeyNeededError(serial, derived)
+    key = TypeKey.parse(candidate)
+    problem = derived.problem(key)
+    if problem:
+        raise TypeKeyError(f"valve serial {serial}: {problem}")
+    return str(key)

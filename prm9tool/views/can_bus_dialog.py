@@ -1,0 +1,241 @@
+"""Communication → CAN bus: choose a CAN adapter, look at the nodes on the bus, pick a valve.
+
+Interface (python-can's name), channel and bit rate are remembered in QSettings. "Search the
+bus" scans node IDs 1…127 off the GUI thread (ValveConnection.list_devices_async with the bus)
+and lists every node: PRM9 valves with type key, serial and firmware, other nodes as "not a
+PRM9" (not selectable), each with its NMT state, heartbeat age and last EMCY as the scan saw
+them (the network view). OK goes online with the chosen valve (``can:NODE``). docs/can-link.md.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+
+from PySide6.QtCore import QSettings, Qt
+from PySide6.QtWidgets import (
+    QAbstractItemView,
+    QComboBox,
+    QDialog,
+    QDialogButtonBox,
+    QFormLayout,
+    QHeaderView,
+    QInputDialog,
+    QLabel,
+    QLineEdit,
+    QPushButton,
+    QTableWidget,
+    QTableWidgetItem,
+    QVBoxLayout,
+    QWidget,
+)
+from shiboken6 import isValid
+
+from prm9tool.catalogue.typekey import TypeKey
+from prm9tool.errors import TypeKeyError
+from prm9tool.files.can_type_keys import remember
+from prm9tool.online.connection_protocol import ListedValves, ValveListing
+from prm9tool.paths import user_data_dir
+from prm9tool.translate import error_text
+
+INTERFACE_KEY, CHANNEL_KEY, BITRATE_KEY = "can/interface", "can/channel", "can/bitrate"
+INTERFACES = (
+    "socketcan",
+    "pcan",
+    "kvaser",
+    "ixxat",
+    "vector",
+    "slcan",
+    "gs_usb",
+    "udp_multicast",
+    "virtual",
+)
+BITRATES = (20_000, 50_000, 125_000, 250_000, 500_000, 800_000, 1_000_000)  # table 7-17
+DEFAULT_BITRATE = 500_000  # delivery state (manual table 7-22)
+# (bus as a dict, deliver): scans off the GUI thread, deliver(entries or exception) on it
+Scanner = Callable[[dict[str, object], Callable[[ListedValves], None]], None]
+
+
+def saved_bus(settings: QSettings) -> dict[str, object]:
+    """The bus the user chose last (``interface``, ``channel``, ``bitrate``)."""
+    bitrate = settings.value(BITRATE_KEY, DEFAULT_BITRATE)
+    try:
+        rate: int | None = int(str(bitrate)) or None
+    except ValueError:
+        rate = DEFAULT_BITRATE
+    return {
+        "interface": str(settings.value(INTERFACE_KEY, "socketcan")),
+        "channel": str(settings.value(CHANNEL_KEY, "can0")),
+        "bitrate": rate,
+    }
+
+
+class CanBusDialog(QDialog):
+    """The CAN bus, its nodes and the valve to go online with."""
+
+    def __init__(self, scan: Scanner, settings: QSettings, parent: QWidget | None = None) -> None:
+        super().__init__(parent)
+        self.setWindowTitle(self.tr("CAN bus"))
+        self._scan, self._settings = scan, settings
+        self._entries: list[ValveListing] = []
+        bus = saved_bus(settings)
+        self.interface = QComboBox()
+        self.interface.setEditable(True)
+        self.interface.addItems(INTERFACES)
+        self.interface.setCurrentText(str(bus["interface"]))
+        self.channel = QLineEdit(str(bus["channel"]))
+        self.bitrate = QComboBox()
+        for rate in BITRATES:
+            self.bitrate.addItem(f"{rate // 1000} kbit/s", rate)
+        self.bitrate.setCurrentIndex(max(self.bitrate.findData(bus["bitrate"]), 0))
+        self.search = QPushButton(self.tr("Search the bus"))
+        self.search.clicked.connect(self._on_search_clicked)
+        self.state = QLabel(self.tr("Search the bus to list its nodes."))
+        self.state.setWordWrap(True)
+        self.table = QTableWidget(0, 8)
+        self.table.setHorizontalHeaderLabels(
+            [
+                self.tr("Node"),
+                self.tr("Type key"),
+                self.tr("Serial"),
+                self.tr("Firmware"),
+                self.tr("NMT state"),
+                self.tr("Heartbeat"),
+                self.tr("Last EMCY"),
+                self.tr("Description"),
+            ]
+        )
+        self.table.verticalHeader().hide()
+        self.table.setSelectionBehavior(QAbstractItemView.SelectionBehavior.SelectRows)
+        self.table.setSelectionMode(QAbstractItemView.SelectionMode.SingleSelection)
+        self.table.setEditTriggers(QAbstractItemView.EditTrigger.NoEditTriggers)
+        self.table.horizontalHeader().setSectionResizeMode(QHeaderView.ResizeMode.ResizeToContents)
+        self.table.horizontalHeader().setStretchLastSection(True)
+        self.table.itemSelectionChanged.connect(self._update_ok)
+        self.table.doubleClicked.connect(lambda _i: self._accept_if_valve())
+        self.buttons = QDialogButtonBox(
+            QDialogButtonBox.StandardButton.Ok | QDialogButtonBox.StandardButton.Cancel
+        )
+        self.buttons.accepted.connect(self._accept_if_valve)
+        self.buttons.rejected.connect(self.reject)
+        form = QFormLayout()
+        form.addRow(self.tr("Interface (python-can)"), self.interface)
+        form.addRow(self.tr("Channel"), self.channel)
+        form.addRow(self.tr("Bit rate"), self.bitrate)
+        layout = QVBoxLayout(self)
+        layout.addLayout(form)
+        layout.addWidget(self.search)
+        layout.addWidget(self.state)
+        layout.addWidget(self.table)
+        layout.addWidget(self.buttons)
+        self.resize(860, 420)
+        self._update_ok()
+
+    def bus(self) -> dict[str, object]:
+        """The bus as entered."""
+        return {
+            "interface": self.interface.currentText().strip(),
+            "channel": self.channel.text().strip(),
+            "bitrate": self.bitrate.currentData(),
+        }
+
+    def selected_device_id(self) -> str | None:
+        """``can:NODE`` of the chosen PRM9 (None: none chosen)."""
+        row = self.table.currentRow()
+        if not 0 <= row < len(self._entries):
+            return None
+        entry = self._entries[row]
+        return entry.device_id if entry.kind == "can" else None
+
+    def _remember(self) -> None:
+        bus = self.bus()
+        self._settings.setValue(INTERFACE_KEY, bus["interface"])
+        self._settings.setValue(CHANNEL_KEY, bus["channel"])
+        self._settings.setValue(BITRATE_KEY, bus["bitrate"])
+
+    def _on_search_clicked(self) -> None:
+        self._remember()
+        self.search.setEnabled(False)
+        self.state.setText(self.tr("Searching the bus (node IDs 1…127)…"))
+        self._scan(self.bus(), self._on_scanned)
+
+    def _on_scanned(self, found: ListedValves) -> None:
+        if not isValid(self):
+            return
+        self.search.setEnabled(True)
+        if isinstance(found, Exception):
+            self._fill([])
+            self.state.setText(
+                self.tr("The bus could not be searched: {0}").format(error_text(found))
+            )
+            return
+        nodes = [e for e in found if e.kind in ("can", "not-prm9")]
+        self._fill(nodes)
+        valves = sum(e.kind == "can" for e in nodes)
+        self.state.setText(
+            self.tr("{0} nodes answered, {1} of them PRM9 valves.").format(len(nodes), valves)
+        )
+
+    def _fill(self, entries: list[ValveListing]) -> None:
+        self._entries = entries
+        self.table.setRowCount(len(entries))
+        for row, entry in enumerate(entries):
+            valve = entry.kind == "can"
+            age = entry.heartbeat_age_s
+            cells = [
+                entry.device_id,
+                entry.type_key if valve else self.tr("not a PRM9"),
+                str(entry.serial) if valve else "",
+                entry.firmware,
+                entry.nmt_state,
+                self.tr("{0:.1f} s ago").format(age) if age is not None else self.tr("none"),
+                entry.last_emcy,
+                entry.description,
+            ]
+            for column, text in enumerate(cells):
+                item = QTableWidgetItem(text)
+                if not valve:
+                    item.setFlags(item.flags() & ~Qt.ItemFlag.ItemIsSelectable)
+                self.table.setItem(row, column, item)
+        self._update_ok()
+
+    def _update_ok(self) -> None:
+        ok = self.buttons.button(QDialogButtonBox.StandardButton.Ok)
+        ok.setEnabled(self.selected_device_id() is not None)
+
+    def _accept_if_valve(self) -> None:
+        if self.selected_device_id() is None:
+            return
+        entry = self._entries[self.table.currentRow()]
+        if entry.type_key.startswith("?") and not self._ask_type_key(entry):
+            return
+        self._remember()
+        self.accept()
+
+    def _ask_type_key(self, entry: ValveListing) -> bool:
+        """A real valve does not tell its type key (docs/can-link.md): ask for the one on its
+        label, check it against what its objects tell, remember it for its serial number."""
+        serial = entry.serial
+        told = "E04" if "E04" in entry.type_key else "E02"
+        text, ok = QInputDialog.getText(
+            self,
+            self.tr("Type key of the valve"),
+            self.tr(
+                "The valve (serial number {0}) does not tell its type key; its objects say "
+                "{1} -CA. Type key on the valve's label:"
+            ).format(serial, told),
+            text=f"PRM9-06.3Z11/30-24{told}S02-CA",
+        )
+        if not ok:
+            return False
+        try:
+            key = TypeKey.parse(text)
+        except TypeKeyError as exc:
+            self.state.setText(error_text(exc))
+            return False
+        if key.config.value != told or not key.canopen:
+            self.state.setText(
+                self.tr("{0} does not fit the valve: its objects say {1} -CA.").format(key, told)
+            )
+            return False
+        remember(user_data_dir(), serial, str(key))
+        return True

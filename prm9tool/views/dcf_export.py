@@ -1,0 +1,64 @@
+"""File → Export DCF: the document's valve as a CiA 306 DCF (prm9tool.files.dcf).
+
+Online, the document holds the connected valve's values, so the DCF describes that valve as it
+is configured; offline, the parameter set being edited. Node ID and bit rate are those the
+valve runs with after power-up (switches and NODEID/BITRATE, manual table 7-17).
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+from PySide6.QtCore import QObject, Signal
+from PySide6.QtWidgets import QFileDialog, QWidget
+
+from prm9tool.catalogue.canopen_switches import effective
+from prm9tool.files.atomicfile import atomic_write
+from prm9tool.files.dcf import export_dcf
+from prm9tool.model.document import ParameterDocument
+from prm9tool.views import prompts
+
+
+class DcfExport(QObject):
+    """Asks for a file name and writes the DCF."""
+
+    message_posted = Signal(str)
+
+    def __init__(self, doc: ParameterDocument, window: QWidget) -> None:
+        super().__init__(window)
+        self._doc, self._window = doc, window
+
+    def export_dialog(self, folder: str = "") -> bool:
+        """Ask for the file and write it; False when cancelled or failed (said so)."""
+        name = str(self._doc.type_key).replace("/", "_").replace(".", "_") + ".dcf"
+        path, _filter = QFileDialog.getSaveFileName(
+            self._window, self.tr("Export DCF"), str(Path(folder) / name),
+            self.tr("CANopen device configuration (*.dcf)"),
+        )  # fmt: skip
+        if not path:
+            return False
+        return self.export(Path(path))
+
+    def export(self, path: Path) -> bool:
+        """Write the DCF of the document to ``path``."""
+        doc = self._doc
+        values = {m: doc.value(m) for m in doc.values}
+        value = doc.value
+        settings = effective(
+            *(int(value(m)) for m in ("SWBAUD", "SWNODE", "NODEID", "BITRATE", "CANTERM"))
+        )
+        node, rate = settings.node_id or int(value("NODEID")), settings.bitrate_kbit or 500
+        try:
+            text = export_dcf(doc.type_key, values, node, rate)
+            atomic_write(path, text.encode("ascii", errors="replace"), backup=False)
+        except OSError as exc:
+            prompts.ask(
+                self._window,
+                prompts.Icon.Critical,
+                self.tr("Export DCF"),
+                self.tr("Cannot write “{0}”: {1}").format(str(path), str(exc)),
+                prompts.Button.Ok,
+            )
+            return False
+        self.message_posted.emit(self.tr("DCF saved as {0} (node {1})").format(str(path), node))
+        return True

@@ -1,0 +1,157 @@
+"""View → Object dictionary: every object of the connected valve's dictionary, from the
+catalogue (index, sub-index, name, type, access, raw value); read all, and at Expert level write
+any writable object (double-click). Over any link; over CANopen the objects a valve lacks show
+"not available over CANopen on this valve"."""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from typing import Any
+
+from PySide6.QtWidgets import (
+    QAbstractItemView,
+    QDialog,
+    QHBoxLayout,
+    QHeaderView,
+    QInputDialog,
+    QLabel,
+    QPushButton,
+    QTableWidget,
+    QTableWidgetItem,
+    QVBoxLayout,
+    QWidget,
+)
+
+from prm9tool.catalogue import CATALOGUE, Access, DataType, Parameter
+from prm9tool.catalogue.variant import Variant
+from prm9tool.errors import Prm9Error
+from prm9tool.i18n import text
+from prm9tool.model.access import AccessModel
+from prm9tool.online.connection import ValveConnection
+from prm9tool.translate import error_text
+
+READ_ALL = "od_read_all"
+COLUMNS = 6
+
+
+def read_every(mnemonics: list[str]) -> Callable[[Any], dict[str, object]]:
+    """The job for the worker: each value, or why it could not be read (as text)."""
+
+    def run(session: Any) -> dict[str, object]:
+        values: dict[str, object] = {}
+        for mnemonic in mnemonics:
+            try:
+                values[mnemonic] = session.read(mnemonic)
+            except Prm9Error as exc:
+                values[mnemonic] = exc
+        return values
+
+    return run
+
+
+class ObjectDictionaryDialog(QDialog):
+    """The object-dictionary browser of the connected valve."""
+
+    def __init__(
+        self,
+        connection: ValveConnection,
+        access: AccessModel,
+        variant: Variant,
+        parent: QWidget | None = None,
+    ) -> None:
+        super().__init__(parent)
+        self.setWindowTitle(self.tr("Object dictionary"))
+        self._connection, self._access = connection, access
+        self._params: list[Parameter] = sorted(CATALOGUE.for_variant(variant), key=lambda p: p.key)
+        self.table = QTableWidget(len(self._params), COLUMNS)
+        self.table.setHorizontalHeaderLabels(
+            [self.tr("Index"), self.tr("Sub"), self.tr("Name"), self.tr("Type"),
+             self.tr("Access"), self.tr("Value")]
+        )  # fmt: skip
+        self.table.verticalHeader().hide()
+        self.table.setEditTriggers(QAbstractItemView.EditTrigger.NoEditTriggers)
+        self.table.setSelectionBehavior(QAbstractItemView.SelectionBehavior.SelectRows)
+        header = self.table.horizontalHeader()
+        header.setSectionResizeMode(QHeaderView.ResizeMode.ResizeToContents)
+        header.setSectionResizeMode(5, QHeaderView.ResizeMode.Stretch)
+        self.table.setWordWrap(False)
+        for row, param in enumerate(self._params):
+            cells = [f"0x{param.index:04X}", str(param.subindex), text(param.text),
+                     param.dtype.name, param.obj_access.value, ""]  # fmt: skip
+            for column, cell in enumerate(cells):
+                self.table.setItem(row, column, QTableWidgetItem(cell))
+        self.table.cellDoubleClicked.connect(self._on_table_double_clicked)
+        self.read = QPushButton(self.tr("Read all"))
+        self.read.clicked.connect(self.read_all)
+        self.note = QLabel()
+        self.note.setWordWrap(True)
+        buttons = QHBoxLayout()
+        buttons.addWidget(self.read)
+        buttons.addWidget(self.note, 1)
+        layout = QVBoxLayout(self)
+        layout.addLayout(buttons)
+        layout.addWidget(self.table)
+        self.resize(980, 560)
+        connection.operation_finished.connect(self._on_connection_operation_finished)
+        self._show_level()
+
+    def read_all(self) -> None:
+        """Read every object (in the connection's worker)."""
+        self.read.setEnabled(False)
+        self._connection.run_job(READ_ALL, read_every([p.mnemonic for p in self._params]))
+
+    def _show_level(self) -> None:
+        expert = self._access.level is Access.EXPERT
+        self.note.setText(
+            self.tr("Double-click a writable object to write it.")
+            if expert
+            else self.tr("Reading only: writing needs the Expert level.")
+        )
+
+    def _on_connection_operation_finished(self, name: str, result: object) -> None:
+        if name != READ_ALL or not isinstance(result, dict):
+            return
+        self.read.setEnabled(True)
+        for row, param in enumerate(self._params):
+            if param.mnemonic in result:
+                shown = self._shown(param, result[param.mnemonic])
+                self._value_cell(row).setText(shown)
+                self._value_cell(row).setToolTip(shown)
+
+    def _value_cell(self, row: int) -> QTableWidgetItem:
+        item = self.table.item(row, 5)
+        assert item is not None  # every cell is filled in __init__
+        return item
+
+    def _shown(self, param: Parameter, value: object) -> str:
+        if isinstance(value, Exception):
+            return error_text(value)
+        if isinstance(value, int) and param.dtype is DataType.UNSIGNED32:
+            return f"0x{value:X}"
+        return str(value)
+
+    def _on_table_double_clicked(self, row: int, _column: int) -> None:
+        param = self._params[row]
+        if self._access.level is not Access.EXPERT or not param.writable:
+            return
+        entry, ok = QInputDialog.getText(
+            self,
+            self.tr("Write {0}").format(f"0x{param.index:04X}/{param.subindex}"),
+            self.tr("{0} ({1}), raw value:").format(text(param.text), param.dtype.name),
+            text=self._value_cell(row).text(),
+        )
+        if not ok:
+            return
+        try:
+            raw: int | str = entry if param.is_string else _raw(entry)
+            param.check_raw(raw)
+        except (Prm9Error, ValueError) as exc:
+            self.note.setText(error_text(exc) if isinstance(exc, Prm9Error) else str(exc))
+            return
+        self._connection.write(param.mnemonic, raw)
+        self.read_all()
+
+
+def _raw(entry: str) -> int:
+    """A raw number as typed: decimal or 0x hexadecimal."""
+    return int(entry.strip(), 0)

@@ -1,0 +1,131 @@
+"""Communication → CAN bus: the dialog scans a real (virtual) bus through the connection, lists
+the valve and other nodes, remembers the bus, and going online with the chosen node works."""
+
+from __future__ import annotations
+
+import canopen
+import pytest
+from can_link_rig import E04, make_link_rig, unique_channel
+from PySide6.QtCore import QSettings
+from PySide6.QtWidgets import QDialogButtonBox, QInputDialog
+
+from prm9tool.device import factory
+from prm9tool.online.connection import ValveConnection
+from prm9tool.views.can_bus_dialog import BITRATE_KEY, CHANNEL_KEY, INTERFACE_KEY, CanBusDialog
+
+
+@pytest.fixture
+def settings(tmp_path):
+    return QSettings(str(tmp_path / "settings.ini"), QSettings.Format.IniFormat)
+
+
+@pytest.fixture
+def rig(tmp_path, request, monkeypatch):
+    monkeypatch.setenv("PRM9TOOL_DATA_DIR", str(tmp_path / "data"))
+    rig = make_link_rig(request.node.name, tmp_path)
+    yield rig
+    rig.close()
+
+
+def other_node(channel: str) -> canopen.Network:
+    """A CANopen node that is not a PRM9 (node 5, device type 0x191)."""
+    network = canopen.Network()
+    network.connect(interface="virtual", channel=channel)
+    od = canopen.ObjectDictionary()
+    var = canopen.objectdictionary.ODVariable("device type", 0x1000, 0)
+    var.data_type, var.default = canopen.objectdictionary.UNSIGNED32, 0x191
+    od.add_object(var)
+    network.add_node(canopen.LocalNode(5, od))
+    return network
+
+
+def test_the_dialog_lists_the_nodes_and_goes_online_with_the_valve(qtbot, rig, settings):
+    connection = ValveConnection(opener=lambda e: factory.open_session(e, can_link=rig.options))
+    other = other_node(rig.options.channel)
+    dialog = CanBusDialog(
+        lambda bus, deliver: connection.list_devices_async((), deliver, bus), settings
+    )
+    qtbot.addWidget(dialog)
+    dialog.interface.setCurrentText("virtual")
+    dialog.channel.setText(rig.options.channel)
+    ok = dialog.buttons.button(QDialogButtonBox.StandardButton.Ok)
+    try:
+        dialog.search.click()
+        qtbot.waitUntil(lambda: dialog.table.rowCount() == 2, timeout=10000)
+    finally:
+        other.disconnect()
+    cells = [[dialog.table.item(r, c).text() for c in range(4)] for r in range(2)]
+    assert cells[0] == ["can:5", "not a PRM9", "", ""]
+    assert cells[1][:3] == ["can:10", E04, str(rig.valve.serial)]
+    assert "2 nodes answered, 1 of them PRM9 valves." in dialog.state.text()
+    assert not ok.isEnabled()
+    dialog.table.selectRow(0)  # not a PRM9: not selectable
+    assert dialog.selected_device_id() is None and not ok.isEnabled()
+    dialog.table.selectRow(1)
+    assert dialog.selected_device_id() == "can:10" and ok.isEnabled()
+    ok.click()
+    assert (settings.value(INTERFACE_KEY), settings.value(CHANNEL_KEY)) == (
+        "virtual",
+        rig.options.channel,
+    )
+    assert int(settings.value(BITRATE_KEY)) == 500000
+    with qtbot.waitSignal(connection.online_changed, timeout=10000):
+        connection.go_online(dialog.selected_device_id())
+    assert connection.device.type_key == E04
+    connection.go_offline()
+    connection.shutdown()
+
+
+def test_a_bus_that_cannot_be_opened_is_said_in_the_dialog(qtbot, settings):
+    connection = ValveConnection()
+    dialog = CanBusDialog(
+        lambda bus, deliver: connection.list_devices_async((), deliver, bus), settings
+    )
+    qtbot.addWidget(dialog)
+    dialog.interface.setCurrentText("socketcan")
+    dialog.channel.setText(unique_channel("x")[:12])
+    dialog.search.click()
+    qtbot.waitUntil(lambda: dialog.search.isEnabled(), timeout=10000)
+    assert "The bus could not be searched" in dialog.state.text()
+    assert "cannot open the CAN interface 'socketcan'" in dialog.state.text()
+    assert dialog.table.rowCount() == 0
+    connection.shutdown()
+
+
+def test_a_valve_without_its_type_key_is_asked_for_it_once(qtbot, tmp_path, settings, monkeypatch):
+    monkeypatch.setenv("PRM9TOOL_DATA_DIR", str(tmp_path / "data"))
+    rig = make_link_rig("gui-real", tmp_path, real_valve=True)
+    connection = ValveConnection(opener=lambda e: factory.open_session(e, can_link=rig.options))
+    dialog = CanBusDialog(
+        lambda bus, deliver: connection.list_devices_async((), deliver, bus), settings
+    )
+    qtbot.addWidget(dialog)
+    dialog.interface.setCurrentText("virtual")
+    dialog.channel.setText(rig.options.channel)
+    answers = [("PRM9-06.3Z11/30-24E02S02-CA", True), ("PRM9-06.3Z11/30-24E04S02-CA", True)]
+    asked: list[str] = []
+
+    def answer(_parent, _title, label, text=""):
+        asked.append(label)
+        return answers.pop(0)
+
+    monkeypatch.setattr(QInputDialog, "getText", staticmethod(answer))
+    try:
+        dialog.search.click()
+        qtbot.waitUntil(lambda: dialog.table.rowCount() == 1, timeout=10000)
+        assert dialog.table.item(0, 1).text() == "? (E04 -CA; type key unknown)"
+        dialog.table.selectRow(0)
+        ok = dialog.buttons.button(QDialogButtonBox.StandardButton.Ok)
+        ok.click()  # an E02 key for an E04 valve: refused, the dialog stays
+        assert "does not fit the valve: its objects say E04 -CA" in dialog.state.text()
+        assert dialog.result() == 0
+        ok.click()
+        assert dialog.result() == 1
+        assert "does not tell its type key; its objects say E04 -CA" in asked[0]
+        with qtbot.waitSignal(connection.online_changed, timeout=10000):
+            connection.go_online(dialog.selected_device_id())
+        assert connection.device.type_key == E04  # remembered for its serial number
+        connection.go_offline()
+    finally:
+        connection.shutdown()
+        rig.close()

@@ -1,0 +1,68 @@
+"""View → Object dictionary over CANopen: every object read from the valve, the objects a real
+valve lacks said so, writing only at Expert level."""
+
+from __future__ import annotations
+
+import pytest
+from can_link_rig import make_link_rig
+from PySide6.QtWidgets import QInputDialog
+
+from prm9tool.catalogue import Access
+from prm9tool.device import factory
+from prm9tool.model.access import AccessModel
+from prm9tool.online.connection import ValveConnection
+from prm9tool.views.od_browser import ObjectDictionaryDialog
+
+
+@pytest.fixture
+def online(qtbot, tmp_path, monkeypatch):
+    monkeypatch.setenv("PRM9TOOL_DATA_DIR", str(tmp_path / "data"))
+    rig = make_link_rig("od", tmp_path, real_valve=True)
+    connection = ValveConnection(
+        opener=lambda e: factory.open_session(
+            e, can_link=rig.options, type_key=str(rig.valve.type_key)
+        )
+    )
+    with qtbot.waitSignal(connection.online_changed, timeout=10000):
+        connection.go_online("can:10")
+    yield rig, connection
+    connection.shutdown()
+    rig.close()
+
+
+def rows(dialog):
+    table = dialog.table
+    return {
+        (table.item(r, 0).text(), table.item(r, 1).text()): table.item(r, 5).text()
+        for r in range(table.rowCount())
+    }
+
+
+def test_every_object_is_read_and_missing_ones_are_named(qtbot, online):
+    rig, connection = online
+    access = AccessModel()
+    dialog = ObjectDictionaryDialog(connection, access, rig.valve.variant)
+    qtbot.addWidget(dialog)
+    dialog.read_all()
+    qtbot.waitUntil(lambda: dialog.read.isEnabled(), timeout=10000)
+    shown = rows(dialog)
+    assert shown[("0x1018", "4")] == f"0x{rig.valve.serial:X}"
+    assert shown[("0x1000", "0")] == "0x198"
+    assert "not available over CANopen on this valve" in shown[("0x2020", "1")]
+    assert "writing needs the Expert level" in dialog.note.text()
+
+
+def test_expert_writes_an_object(qtbot, online, monkeypatch):
+    rig, connection = online
+    access = AccessModel()
+    access.set_level(Access.EXPERT)
+    dialog = ObjectDictionaryDialog(connection, access, rig.valve.variant)
+    qtbot.addWidget(dialog)
+    monkeypatch.setattr(QInputDialog, "getText", staticmethod(lambda *_a, **_k: ("0x1F4", True)))
+    row = next(
+        r for r in range(dialog.table.rowCount()) if dialog.table.item(r, 0).text() == "0x1017"
+    )
+    with qtbot.waitSignal(connection.operation_finished, timeout=10000):
+        dialog._on_table_double_clicked(row, 5)
+    qtbot.waitUntil(lambda: dialog.table.item(row, 5).text() == "500", timeout=10000)
+    assert rig.valve.read(0x1017, 0) == 500
