@@ -2867,6 +2867,10 @@ Ano načte a záznam zařadí do fronty; Ne nenačte nic.</translation>
             <translation>Spojení se přerušilo: generátor žádané hodnoty se zastavil.</translation>
         </message>
         <message>
+            <source>The setpoint generator has stopped: another operation (a tuning test, an upload…) drives the valve now.</source>
+            <translation>Generátor žádané hodnoty se zastavil: ventil nyní řídí jiná operace (test ladění, načtení do ventilu…).</translation>
+        </message>
+        <message>
             <source>Nothing recorded yet.</source>
             <translation>Zatím nic nezaznamenáno.</translation>
         </message>
@@ -2939,6 +2943,10 @@ Ano načte a záznam zařadí do fronty; Ne nenačte nic.</translation>
         <message>
             <source>The setpoint generator needs a connected valve.</source>
             <translation>Generátor žádané hodnoty potřebuje připojený ventil.</translation>
+        </message>
+        <message>
+            <source>The valve is busy with another operation; start the generator after it.</source>
+            <translation>Ventil provádí jinou operaci; spusťte generátor až po ní.</translation>
         </message>
     </context>
     <context>

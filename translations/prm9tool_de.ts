@@ -2858,6 +2858,10 @@ Ja lädt hoch und stellt den Eintrag in die Warteschlange; Nein lädt nichts hoc
             <translation>Die Verbindung ist abgebrochen: der Sollwertgenerator wurde gestoppt.</translation>
         </message>
         <message>
+            <source>The setpoint generator has stopped: another operation (a tuning test, an upload…) drives the valve now.</source>
+            <translation>Der Sollwertgenerator wurde gestoppt: ein anderer Vorgang (ein Tuning-Test, ein Hochladen…) steuert jetzt das Ventil.</translation>
+        </message>
+        <message>
             <source>Nothing recorded yet.</source>
             <translation>Noch nichts aufgezeichnet.</translation>
         </message>
@@ -2930,6 +2934,10 @@ Ja lädt hoch und stellt den Eintrag in die Warteschlange; Nein lädt nichts hoc
         <message>
             <source>The setpoint generator needs a connected valve.</source>
             <translation>Der Sollwertgenerator braucht ein verbundenes Ventil.</translation>
+        </message>
+        <message>
+            <source>The valve is busy with another operation; start the generator after it.</source>
+            <translation>Das Ventil ist mit einem anderen Vorgang beschäftigt; starten Sie den Generator danach.</translation>
         </message>
     </context>
     <context>

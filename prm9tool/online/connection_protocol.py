@@ -226,6 +226,14 @@ class ScopeConnection(LinkState, Protocol):
     def status_changed(self) -> SignalInstance:
         """Emitted (≈ 2 Hz) with the valve's status (device state, NMT state, errors)."""
 
+    @property
+    def busy_changed(self) -> SignalInstance:
+        """Emitted with True when a long operation (upload, restart, a tuning test…) starts."""
+
+    @property
+    def is_busy(self) -> bool:
+        """True while a long operation runs."""
+
     def start_stream(self, keys: Sequence[str], rate_hz: int) -> None:
         """Start streaming ``keys`` at ``rate_hz`` (asynchronous)."""
 

@@ -143,6 +143,7 @@ class ScopeWidget(QWidget):
         self.generator.running_changed.connect(self.generator_panel.set_running)
         self.generator.stopped_by_link.connect(self._on_generator_stopped_by_link)
         self.generator.refused.connect(self._on_generator_refused)
+        self.generator.stopped_by_operation.connect(self._on_generator_stopped_by_operation)
 
     # --- public API --------------------------------------------------------------------------
     @property
@@ -361,6 +362,13 @@ class ScopeWidget(QWidget):
 
     def _on_generator_stopped_by_link(self) -> None:
         self._generator_note = self.tr("The link dropped: the setpoint generator has stopped.")
+        self._update_status()
+
+    def _on_generator_stopped_by_operation(self) -> None:
+        self._generator_note = self.tr(
+            "The setpoint generator has stopped: another operation (a tuning test, an upload…) "
+            "drives the valve now."
+        )
         self._update_status()
 
     def _on_generator_refused(self, reason: str) -> None:
