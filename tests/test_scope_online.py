@@ -117,6 +117,9 @@ def test_a_tuning_test_stops_the_generator_first_and_measures_a_real_step(
     from PySide6.QtWidgets import QMessageBox
 
     scope, valve = _generator_driving(qtbot, window)
+    scope.preselect("position_actual")
+    scope.start()
+    qtbot.waitUntil(lambda: scope.receiving, timeout=TIMEOUT)
     monkeypatch.setattr(QMessageBox, "question", lambda *a: QMessageBox.StandardButton.Yes)
     window.show_tuning_window("position")
     tuning = window.tuning_window
@@ -126,3 +129,4 @@ def test_a_tuning_test_stops_the_generator_first_and_measures_a_real_step(
     qtbot.waitUntil(lambda: not tuning.runner.busy, timeout=30_000)
     assert "Before: overshoot" in tuning.autotune.result.text(), tuning.autotune.result.text()
     assert _override_on(valve) == 0
+    assert not scope.running and "recording stopped" in scope.status.text()

@@ -2831,6 +2831,10 @@ Ano načte a záznam zařadí do fronty; Ne nenačte nic.</translation>
             <translation>Vpravo zvolte alespoň jeden měřicí bod.</translation>
         </message>
         <message>
+            <source>The recording stopped: another operation (a tuning test…) took the stream.</source>
+            <translation>Záznam se zastavil: datový tok převzala jiná operace (test ladění…).</translation>
+        </message>
+        <message>
             <source>The recording could not start: {0}</source>
             <translation>Záznam nelze spustit: {0}</translation>
         </message>

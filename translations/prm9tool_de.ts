@@ -2822,6 +2822,10 @@ Ja lädt hoch und stellt den Eintrag in die Warteschlange; Nein lädt nichts hoc
             <translation>Wählen Sie rechts mindestens einen Messpunkt.</translation>
         </message>
         <message>
+            <source>The recording stopped: another operation (a tuning test…) took the stream.</source>
+            <translation>Die Aufzeichnung wurde beendet: ein anderer Vorgang (ein Tuning-Test…) hat den Datenstrom übernommen.</translation>
+        </message>
+        <message>
             <source>The recording could not start: {0}</source>
             <translation>Die Aufzeichnung konnte nicht starten: {0}</translation>
         </message>

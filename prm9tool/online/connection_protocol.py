@@ -223,6 +223,10 @@ class ScopeConnection(LinkState, Protocol):
         """Emitted with the mnemonics of a write the valve refused (after ``failed``)."""
 
     @property
+    def stream_stopped(self) -> SignalInstance:
+        """Emitted when the stream has stopped (whoever stopped it)."""
+
+    @property
     def status_changed(self) -> SignalInstance:
         """Emitted (≈ 2 Hz) with the valve's status (device state, NMT state, errors)."""
 
