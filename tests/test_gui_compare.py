@@ -90,6 +90,21 @@ def test_the_view_filters_counts_and_enables_apply_only_with_a_choice(qtbot):
     assert dialog.applied == (1, {"LIMTA": 1500})
 
 
+def test_values_are_shown_with_the_decimal_separator_of_the_language(qtbot):
+    """In German the compare view showed ``1.5`` where the parameter list shows ``1,5``."""
+    document = factory_side("Dokument", GAINSETPOS=24576)  # 1.5
+    comparison = Comparison((document, factory_side("Ventil")), Side.factory(document.type_key))
+    i18n.set_language("de")
+    try:
+        dialog = CompareDialog(comparison, (0, 1))
+        qtbot.addWidget(dialog)
+        row = next(i for i, r in enumerate(dialog.model.rows) if r.mnemonic == "GAINSETPOS")
+        shown = [dialog.model.data(dialog.model.index(row, FIRST_VALUE + s)) for s in (0, 1, 2)]
+    finally:
+        i18n.set_language("en")
+    assert shown == ["1,5", "1", "1"]
+
+
 def test_compare_with_file_takes_the_chosen_values_as_one_undo_step(
     qtbot, window, tmp_path, monkeypatch
 ):

@@ -199,3 +199,15 @@ def test_online_the_autotune_runs_on_the_connected_valve_and_leaves_it_as_it_was
     finally:
         connection.shutdown()
         factory.forget_emulated_valves()
+
+
+def test_proposed_gains_use_the_decimal_separator_of_the_language(qapp):
+    from prm9tool import i18n
+    from prm9tool.views.tuning_window import gain_text
+
+    i18n.set_language("cs")
+    try:
+        shown = gain_text("POSKP", 42), gain_text("POSKD", 42)
+    finally:
+        i18n.set_language("en")
+    assert shown == ("0,42", "0,42 ms")

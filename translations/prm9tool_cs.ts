@@ -2846,6 +2846,10 @@ Ano načte a záznam zařadí do fronty; Ne nenačte nic.</translation>
             <translation>Vpravo zvolte alespoň jeden měřicí bod.</translation>
         </message>
         <message>
+            <source>The recording stopped: another operation (a tuning test…) took the stream.</source>
+            <translation>Záznam se zastavil: datový tok převzala jiná operace (test ladění…).</translation>
+        </message>
+        <message>
             <source>The recording could not start: {0}</source>
             <translation>Záznam nelze spustit: {0}</translation>
         </message>
@@ -2880,6 +2884,10 @@ Ano načte a záznam zařadí do fronty; Ne nenačte nic.</translation>
         <message>
             <source>The link dropped: the setpoint generator has stopped.</source>
             <translation>Spojení se přerušilo: generátor žádané hodnoty se zastavil.</translation>
+        </message>
+        <message>
+            <source>The setpoint generator has stopped: another operation (a tuning test, an upload…) drives the valve now.</source>
+            <translation>Generátor žádané hodnoty se zastavil: ventil nyní řídí jiná operace (test ladění, načtení do ventilu…).</translation>
         </message>
         <message>
             <source>Nothing recorded yet.</source>
@@ -2954,6 +2962,10 @@ Ano načte a záznam zařadí do fronty; Ne nenačte nic.</translation>
         <message>
             <source>The setpoint generator needs a connected valve.</source>
             <translation>Generátor žádané hodnoty potřebuje připojený ventil.</translation>
+        </message>
+        <message>
+            <source>The valve is busy with another operation; start the generator after it.</source>
+            <translation>Ventil provádí jinou operaci; spusťte generátor až po ní.</translation>
         </message>
     </context>
     <context>

@@ -2837,6 +2837,10 @@ Ja lädt hoch und stellt den Eintrag in die Warteschlange; Nein lädt nichts hoc
             <translation>Wählen Sie rechts mindestens einen Messpunkt.</translation>
         </message>
         <message>
+            <source>The recording stopped: another operation (a tuning test…) took the stream.</source>
+            <translation>Die Aufzeichnung wurde beendet: ein anderer Vorgang (ein Tuning-Test…) hat den Datenstrom übernommen.</translation>
+        </message>
+        <message>
             <source>The recording could not start: {0}</source>
             <translation>Die Aufzeichnung konnte nicht starten: {0}</translation>
         </message>
@@ -2871,6 +2875,10 @@ Ja lädt hoch und stellt den Eintrag in die Warteschlange; Nein lädt nichts hoc
         <message>
             <source>The link dropped: the setpoint generator has stopped.</source>
             <translation>Die Verbindung ist abgebrochen: der Sollwertgenerator wurde gestoppt.</translation>
+        </message>
+        <message>
+            <source>The setpoint generator has stopped: another operation (a tuning test, an upload…) drives the valve now.</source>
+            <translation>Der Sollwertgenerator wurde gestoppt: ein anderer Vorgang (ein Tuning-Test, ein Hochladen…) steuert jetzt das Ventil.</translation>
         </message>
         <message>
             <source>Nothing recorded yet.</source>
@@ -2945,6 +2953,10 @@ Ja lädt hoch und stellt den Eintrag in die Warteschlange; Nein lädt nichts hoc
         <message>
             <source>The setpoint generator needs a connected valve.</source>
             <translation>Der Sollwertgenerator braucht ein verbundenes Ventil.</translation>
+        </message>
+        <message>
+            <source>The valve is busy with another operation; start the generator after it.</source>
+            <translation>Das Ventil ist mit einem anderen Vorgang beschäftigt; starten Sie den Generator danach.</translation>
         </message>
     </context>
     <context>

@@ -235,8 +235,20 @@ class ScopeConnection(LinkState, Protocol):
         """Emitted with the mnemonics of a write the valve refused (after ``failed``)."""
 
     @property
+    def stream_stopped(self) -> SignalInstance:
+        """Emitted when the stream has stopped (whoever stopped it)."""
+
+    @property
     def status_changed(self) -> SignalInstance:
         """Emitted (≈ 2 Hz) with the valve's status (device state, NMT state, errors)."""
+
+    @property
+    def busy_changed(self) -> SignalInstance:
+        """Emitted with True when a long operation (upload, restart, a tuning test…) starts."""
+
+    @property
+    def is_busy(self) -> bool:
+        """True while a long operation runs."""
 
     def start_stream(self, keys: Sequence[str], rate_hz: int) -> None:
         """Start streaming ``keys`` at ``rate_hz`` (asynchronous)."""
