@@ -131,3 +131,33 @@ def compare_steps(
         rig.write(proposed)
         after = _step(rig, lp, amplitude_pct, 0.0, duration_s, None, loop)
     return before, after
+
+
+def simulate_steps(
+    rig: Rig, loop: str, proposed: dict[str, int], amplitude_pct: float, duration_s: float
+) -> tuple[StepResult, StepResult]:
+    """The steps with the present and the ``proposed`` gains, simulated on the emulator's
+    firmware: a fresh analog-only emulated valve of the rig's type with the rig's parameter
+    set (read from it), stepped faster than real time. The valve under test is not moved."""
+    from prm9tool.catalogue import CATALOGUE
+    from prm9tool.characterize.rig import EmulatorRig
+    from prm9tool.device.emulator import EmulatedValve
+
+    key = TypeKey.parse(rig.info.type_key)
+    analog = TypeKey(key.size, key.spool, key.flow, key.supply, key.config, False)
+    names = [p.mnemonic for p in CATALOGUE.for_variant(analog.variant) if p.in_file and p.writable]
+    present = rig.read(names)
+    lp = LOOPS[loop]
+    steps = []
+    for values in (present, {**present, **proposed}):
+        valve = EmulatedValve(analog)
+        for mnemonic, raw in values.items():
+            param = CATALOGUE[mnemonic]
+            try:
+                valve.write(param.index, param.subindex, raw)
+            except Prm9Error:  # e.g. a CANopen setpoint type on the analog copy: keep default
+                continue
+        copy = EmulatorRig(valve)
+        with preserved(copy, [], chain_changes(copy, loop)):
+            steps.append(_step(copy, lp, amplitude_pct, 0.0, duration_s, None, loop))
+    return steps[0], steps[1]
