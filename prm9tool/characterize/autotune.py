@@ -78,6 +78,11 @@ def model_tune(
     out_lo = -16384.0 if two_coils else 0.0
     with preserved(rig, names, chain_changes(rig, loop)) as saved:
         before = _step(rig, lp, amplitude_pct, 0.0, duration, limit_pct, loop)
+        if not np.isfinite(before.record.channels[lp.output]).all():
+            raise Prm9Error(
+                "the model-based autotune needs the controller's output, which this link does "
+                "not sample (CANopen); use the critical-gain method"
+            )
         data = [_io(before, lp.output, lp.actual)]
         t1 = from_parameters(lp.prefix, saved).t1
         step = amplitude_pct / 100.0 * 16384.0
