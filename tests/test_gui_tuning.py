@@ -68,6 +68,14 @@ def test_critical_gain_method_shows_kkr_and_tkr(qtbot, window):
     kkr = float(text.split("Kkr = ")[1].split(",")[0])
     assert 4.4 <= kkr <= 5.4  # the direct sweep of test_characterize finds 4.9
     assert window.autotune.proposal["POSKP"] == round(kkr * 50)  # K = 0.5·Kkr, raw ×0.01
+    # the proposal simulated on the emulator's firmware beside the measured before/after
+    assert "simulated on the emulator's firmware: overshoot" in text
+    labels = [s.label for s in window.autotune.plot.plots[0].series]
+    assert labels == ["before (measured)", "proposed (measured)", "proposed (simulated)"]
+    simulated = window.autotune.plot.plots[0].series[2]
+    measured = window.autotune.plot.plots[0].series[1]
+    # the copy holds the document's parameters: it answers like the measured valve
+    assert max(simulated.y) == pytest.approx(max(measured.y), abs=3.0)
 
 
 def test_bode_and_static_characteristic_with_linearization(qtbot, window):

@@ -22,12 +22,18 @@ from prm9tool.analysis.model import Targets
 from prm9tool.analysis.pid import to_parameters
 from prm9tool.analysis.profile import DEFAULT
 from prm9tool.analysis.static import linearization_values, propose_linearization
-from prm9tool.characterize.autotune import AutotuneResult, compare_steps, model_tune
+from prm9tool.characterize.autotune import (
+    AutotuneResult,
+    compare_steps,
+    model_tune,
+    simulate_steps,
+)
 from prm9tool.characterize.procedures import (
     LOOPS,
     BodeResult,
     CriticalGainResult,
     StaticResult,
+    StepResult,
     bode_test,
     critical_gain_tune,
     static_test,
@@ -150,10 +156,11 @@ class AutotunePage(Page):
         what = self.tr("P only with rising gain until the loop oscillates (steps of 5 %, "
                        "oscillation stopped at ±%1 %), about 5 s").replace("%1", f"{limit:g}")  # fmt: skip
 
-        def critical(rig: Any) -> tuple[CriticalGainResult, Any]:
+        def critical(rig: Any) -> tuple[CriticalGainResult, Any, Any]:
             found = critical_gain_tune(rig, loop, limit_pct=limit)
             proposed = to_parameters(LOOPS[loop].prefix, found.gains)
-            return found, compare_steps(rig, loop, proposed, amplitude, duration)
+            simulated = simulate_steps(rig, loop, proposed, amplitude, duration)
+            return found, compare_steps(rig, loop, proposed, amplitude, duration), simulated
 
         self.window_.start("autotune", what, critical)
 
@@ -176,7 +183,7 @@ class AutotunePage(Page):
             found: CriticalGainResult = result[0]  # type: ignore[index]
             before, after = result[1]  # type: ignore[index]
             self.proposal = to_parameters(prefix, found.gains)
-            simulated = None
+            simulated = result[2][1]  # type: ignore[index]  # a StepResult on the emulator
             head = self.tr("Critical gain Kkr = %1, period Tkr = %2 ms: K = 0.5·Kkr, Ti = 0.8·Tkr, Td = 0.12·Tkr.").replace(
                 "%1", f"{found.kkr:.2f}").replace("%2", f"{found.tkr * 1000:.1f}")  # fmt: skip
         from prm9tool.views.tuning_window import gain_text
@@ -185,35 +192,41 @@ class AutotunePage(Page):
             f"{k}: {gain_text(k, present[k])} → <b>{gain_text(k, v)}</b>"
             for k, v in self.proposal.items()
         ]
-        self.result.setText(
-            head + "<br>" + " · ".join(rows) + "<br>" + self._figures(before, after)
-        )
+        figures = self._figures(before, after)
+        if isinstance(simulated, StepResult):
+            figures += " " + self.tr("Proposed, simulated on the emulator's firmware: %1.").replace(
+                "%1", self._step_text(simulated)
+            )
+        self.result.setText(head + "<br>" + " · ".join(rows) + "<br>" + figures)
         series = [
             Series(before.record.t * 1000, before.record.channels[LOOPS[loop].actual], self.tr("before (measured)"), COLOURS[0]),
             Series(after.record.t * 1000, after.record.channels[LOOPS[loop].actual], self.tr("proposed (measured)"), COLOURS[1]),
         ]  # fmt: skip
-        if simulated is not None:
+        if isinstance(simulated, StepResult):
+            t, y = simulated.record.t * 1000, simulated.record.channels[LOOPS[loop].actual]
+            series.append(Series(t, y, self.tr("proposed (simulated)"), COLOURS[2], True))
+        elif simulated is not None:
             t = np.arange(len(simulated)) * 0.2
             series.append(Series(t, simulated, self.tr("proposed (simulated)"), COLOURS[2], True))
         self.plot.show_plots([Plot(self.tr("Step response"), self.tr("time [ms]"), "%", series)])
         self.accept_button.setEnabled(True)
 
-    def _figures(self, before: Any, after: Any) -> str:
-        def text(step: Any) -> str:
-            f = step.figures
-            if f is None:
-                return self.tr("no response")
-            settle = "—" if math.isnan(f.settling_time) else f"{f.settling_time * 1000:.1f} ms"
-            return (
-                self.tr("overshoot %1 %, settling %2")
-                .replace("%1", f"{f.overshoot:.1f}")
-                .replace("%2", settle)
-            )
+    def _step_text(self, step: Any) -> str:
+        f = step.figures
+        if f is None:
+            return self.tr("no response")
+        settle = "—" if math.isnan(f.settling_time) else f"{f.settling_time * 1000:.1f} ms"
+        return (
+            self.tr("overshoot %1 %, settling %2")
+            .replace("%1", f"{f.overshoot:.1f}")
+            .replace("%2", settle)
+        )
 
+    def _figures(self, before: Any, after: Any) -> str:
         return (
             self.tr("Before: %1. Proposed: %2.")
-            .replace("%1", text(before))
-            .replace("%2", text(after))
+            .replace("%1", self._step_text(before))
+            .replace("%2", self._step_text(after))
         )
 
     def accept(self) -> None:
