@@ -66,6 +66,10 @@ Poslední akce možná nebyla dokončena. Uložte svou práci pod novým názvem
             <translation>Kritické zesílení Kkr = %1, perioda Tkr = %2 ms: K = 0.5·Kkr, Ti = 0.8·Tkr, Td = 0.12·Tkr.</translation>
         </message>
         <message>
+            <source>Proposed, simulated on the emulator's firmware: %1.</source>
+            <translation>Návrh, simulovaný na firmwaru emulátoru: %1.</translation>
+        </message>
+        <message>
             <source>before (measured)</source>
             <translation>před (změřeno)</translation>
         </message>
@@ -1309,6 +1313,26 @@ Poslední akce možná nebyla dokončena. Uložte svou práci pod novým názvem
         <message>
             <source>The history database cannot be used.</source>
             <translation>Databázi historie nelze použít.</translation>
+        </message>
+        <message>
+            <source>node {0} is NMT {1}: the valve takes RPDOs only when OPERATIONAL — start it first (Valve status → Commissioning: NMT start)</source>
+            <translation>uzel {0} je ve stavu NMT {1}: ventil přijímá RPDO jen ve stavu OPERATIONAL — nejprve jej spusťte (Stav ventilu → Uvedení do provozu: NMT start)</translation>
+        </message>
+        <message>
+            <source>node {0} is in {1}: the valve applies a setpoint from the bus only in DEVICE_MODE_ACTIVE — enable it first (Valve status → Commissioning: control word 08h→09h→0Bh→0Fh)</source>
+            <translation>uzel {0} je ve stavu {1}: ventil přebírá žádanou hodnotu ze sběrnice jen v DEVICE_MODE_ACTIVE — nejprve jej uvolněte (Stav ventilu → Uvedení do provozu: řídicí slovo 08h→09h→0Bh→0Fh)</translation>
+        </message>
+        <message>
+            <source>node {0}: RPDO1 is switched off (0x1400/1 = {1}, bit 31): clear bit 31 to drive the setpoint from prm9tool</source>
+            <translation>uzel {0}: RPDO1 je vypnuto (0x1400/1 = {1}, bit 31): vynulujte bit 31, aby prm9tool mohl zadávat žádanou hodnotu</translation>
+        </message>
+        <message>
+            <source>node {0}: RPDO1 is synchronous (0x1400/2 = {1}), so the setpoint would wait for a SYNC: set 0x1400/2 to 255 (the delivery state)</source>
+            <translation>uzel {0}: RPDO1 je synchronní (0x1400/2 = {1}), žádaná hodnota by čekala na SYNC: nastavte 0x1400/2 na 255 (stav při dodání)</translation>
+        </message>
+        <message>
+            <source>node {0}: RPDO1 maps {1}, not the setpoint 0x6300/0x6380</source>
+            <translation>uzel {0}: RPDO1 mapuje {1}, ne žádanou hodnotu 0x6300/0x6380</translation>
         </message>
     </context>
     <context>
@@ -3280,6 +3304,10 @@ Ano načte a záznam zařadí do fronty; Ne nenačte nic.</translation>
         <message>
             <source>Result</source>
             <translation>Výsledek</translation>
+        </message>
+        <message>
+            <source>Limited by the link</source>
+            <translation>Omezeno spojením</translation>
         </message>
         <message>
             <source>PRM9 test report</source>

@@ -66,6 +66,10 @@ Die letzte Aktion wurde womöglich nicht vollständig ausgeführt. Speichern Sie
             <translation>Kritische Verstärkung Kkr = %1, Periode Tkr = %2 ms: K = 0.5·Kkr, Ti = 0.8·Tkr, Td = 0.12·Tkr.</translation>
         </message>
         <message>
+            <source>Proposed, simulated on the emulator's firmware: %1.</source>
+            <translation>Vorschlag, simuliert mit der Firmware des Emulators: %1.</translation>
+        </message>
+        <message>
             <source>before (measured)</source>
             <translation>vorher (gemessen)</translation>
         </message>
@@ -1306,6 +1310,26 @@ Die letzte Aktion wurde womöglich nicht vollständig ausgeführt. Speichern Sie
         <message>
             <source>The history database cannot be used.</source>
             <translation>Die Verlaufsdatenbank kann nicht benutzt werden.</translation>
+        </message>
+        <message>
+            <source>node {0} is NMT {1}: the valve takes RPDOs only when OPERATIONAL — start it first (Valve status → Commissioning: NMT start)</source>
+            <translation>Knoten {0} ist NMT {1}: das Ventil nimmt RPDOs nur im Zustand OPERATIONAL an — starten Sie ihn zuerst (Ventilstatus → Inbetriebnahme: NMT Start)</translation>
+        </message>
+        <message>
+            <source>node {0} is in {1}: the valve applies a setpoint from the bus only in DEVICE_MODE_ACTIVE — enable it first (Valve status → Commissioning: control word 08h→09h→0Bh→0Fh)</source>
+            <translation>Knoten {0} ist in {1}: das Ventil übernimmt einen Sollwert vom Bus nur in DEVICE_MODE_ACTIVE — geben Sie es zuerst frei (Ventilstatus → Inbetriebnahme: Steuerwort 08h→09h→0Bh→0Fh)</translation>
+        </message>
+        <message>
+            <source>node {0}: RPDO1 is switched off (0x1400/1 = {1}, bit 31): clear bit 31 to drive the setpoint from prm9tool</source>
+            <translation>Knoten {0}: RPDO1 ist ausgeschaltet (0x1400/1 = {1}, Bit 31): löschen Sie Bit 31, um den Sollwert aus prm9tool vorzugeben</translation>
+        </message>
+        <message>
+            <source>node {0}: RPDO1 is synchronous (0x1400/2 = {1}), so the setpoint would wait for a SYNC: set 0x1400/2 to 255 (the delivery state)</source>
+            <translation>Knoten {0}: RPDO1 ist synchron (0x1400/2 = {1}), der Sollwert würde auf ein SYNC warten: setzen Sie 0x1400/2 auf 255 (Auslieferungszustand)</translation>
+        </message>
+        <message>
+            <source>node {0}: RPDO1 maps {1}, not the setpoint 0x6300/0x6380</source>
+            <translation>Knoten {0}: RPDO1 bildet {1} ab, nicht den Sollwert 0x6300/0x6380</translation>
         </message>
     </context>
     <context>
@@ -3271,6 +3295,10 @@ Ja lädt hoch und stellt den Eintrag in die Warteschlange; Nein lädt nichts hoc
         <message>
             <source>Result</source>
             <translation>Ergebnis</translation>
+        </message>
+        <message>
+            <source>Limited by the link</source>
+            <translation>Durch die Verbindung begrenzt</translation>
         </message>
         <message>
             <source>PRM9 test report</source>

@@ -48,6 +48,7 @@ from prm9tool.device.entries import (
     Value,
     check_cancel,
 )
+from prm9tool.device.setpoint import OverrideSetpoint, SetpointLink
 from prm9tool.errors import CommunicationError, Prm9Error, SdoAbortError
 
 log = logging.getLogger("prm9tool.device.session")
@@ -195,6 +196,11 @@ class ValveSession(ABC):
         """Send an NMT command (:class:`~prm9tool.catalogue.commissioning.NmtCommand`) to the
         valve, as its CANopen master would (manual §7.2): start, stop, pre-operational, reset.
         A valve with CANopen switched off ignores it."""
+
+    def setpoint_link(self) -> SetpointLink:
+        """How the PC drives this valve's setpoint (the generator, the tuning procedures):
+        the service override SETPOVRON/SETPOVR unless the link has its own way."""
+        return OverrideSetpoint(self)
 
     @property
     def emulator(self) -> EmulatorControls | None:

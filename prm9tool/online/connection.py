@@ -24,7 +24,12 @@ from PySide6.QtCore import QObject, Qt, Signal
 
 from prm9tool.errors import CommunicationError, Prm9Error
 from prm9tool.online.polling import Poller, Schedule
-from prm9tool.online.setpoint_driver import SetpointDriver, StreamClock
+from prm9tool.online.setpoint_driver import (
+    GENERATOR_OBJECTS,
+    SetpointDriver,
+    StreamClock,
+    setpoint_link,
+)
 from prm9tool.translate import error_text
 
 if TYPE_CHECKING:
@@ -37,7 +42,7 @@ log = logging.getLogger(__name__)
 Opener = Callable[[object], Any]  # entry -> ValveSession
 Lister = Callable[..., list[Any]]  # (emulator specs[, CAN bus dict]) -> [DeviceEntry]
 PROGRESS_PERIOD_S = 0.05
-OVERRIDE_OBJECTS = ("SETPOVR", "SETPOVRON")
+OVERRIDE_OBJECTS = tuple(sorted(GENERATOR_OBJECTS))  # a refused generator start names these
 
 
 @dataclass
@@ -307,15 +312,17 @@ class ValveConnection(QObject):
         self._submit(_Job("stream_stop", self._poller.stop_stream, self._on_stream_stopped, False))
 
     def start_generator(self, settings: GeneratorSettings) -> None:
-        """Run the setpoint generator's waveform on the valve's SETPOVR, off the GUI thread
-        and on the valve's time base (:mod:`prm9tool.online.setpoint_driver`); it switches
-        the override on. A refused write arrives as ``failed`` and ``write_failed``."""
+        """Run the setpoint generator's waveform on the valve's setpoint, off the GUI thread
+        and on the valve's time base (:mod:`prm9tool.online.setpoint_driver`): the override
+        over USB, RPDO1 over CANopen. A refused write arrives as ``failed`` and
+        ``write_failed``."""
         refused = lambda: self.write_failed.emit(list(OVERRIDE_OBJECTS))  # noqa: E731
         run = lambda s: self._start_driver(s, settings)  # noqa: E731
         self._submit(_Job("generator", run, None, False, refused))
 
     def stop_generator(self) -> None:
-        """End the waveform and switch the override off (SETPOVRON = 0)."""
+        """End the waveform and give the setpoint back (SETPOVRON = 0; over CANopen the
+        RPDO1 setpoint from before the generator)."""
         refused = lambda: self.write_failed.emit(["SETPOVRON"])  # noqa: E731
         run = lambda s: self._stop_driver(s, switch_off=True)  # noqa: E731
         self._submit(_Job("generator_stop", run, None, False, refused))
@@ -507,7 +514,7 @@ class ValveConnection(QObject):
         if driver is not None:
             driver.stop(switch_off)
         elif switch_off and session is not None:
-            session.write("SETPOVRON", 0)
+            setpoint_link(session).release()  # what a previous session may have left on
 
     def _on_driver_refused(self, mnemonic: str, exc: Prm9Error) -> None:
         """The driver's thread: the valve refused one of its writes; the driver has ended."""

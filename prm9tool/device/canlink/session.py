@@ -35,8 +35,10 @@ from prm9tool.device.canlink.typekeys import remember, resolve
 from prm9tool.device.emulator.states import ValveStatus
 from prm9tool.device.entries import Progress, RefusedError, Steps, Value, check_cancel
 from prm9tool.device.session import DeviceInfo, UploadResult, ValveSession
+from prm9tool.device.setpoint import SetpointLink
 from prm9tool.errors import (
     AccessDeniedError,
+    DeviceDisconnectedError,
     DeviceTimeoutError,
     Prm9Error,
     ProtocolError,
@@ -262,6 +264,28 @@ class CanopenSession(ValveSession):
     def status(self) -> ValveStatus:
         """State 0x6041, error register 0x1001, errors, LEDs derived from them, NMT state."""
         return read_status(self._sdo, self._shared.node_seen(self.node_id))
+
+    @property
+    def nmt_state(self) -> str:
+        """The node's NMT state as its last heartbeat told ("" before one was heard)."""
+        return self._shared.node_seen(self.node_id).nmt_state
+
+    def setpoint_link(self) -> SetpointLink:
+        """RPDO1 (control word + 0x6300/0x6380, table 7-13): what a real valve has."""
+        from prm9tool.device.canlink.rpdo_setpoint import RpdoSetpoint
+
+        return RpdoSetpoint(self)
+
+    def send_frame(self, cob_id: int, data: bytes) -> None:
+        """Put one frame on the bus (a PDO); DeviceDisconnectedError when the bus refuses."""
+        import can
+
+        try:
+            self._shared.network.send_message(cob_id, data)
+        except (can.CanError, OSError, RuntimeError) as exc:  # RuntimeError: bus closed
+            raise DeviceDisconnectedError(
+                f"node {self.node_id}: the CAN bus refused to send 0x{cob_id:03X} ({exc})"
+            ) from None
 
     def nmt(self, command: int) -> None:
         """Send an NMT command (:class:`~prm9tool.catalogue.commissioning.NmtCommand`) to this
