@@ -2209,6 +2209,10 @@ Ano načte a záznam zařadí do fronty; Ne nenačte nic.</translation>
             <translation>Jen čtení: zápis vyžaduje expertní úroveň.</translation>
         </message>
         <message>
+            <source>— (no entry)</source>
+            <translation>— (žádný záznam)</translation>
+        </message>
+        <message>
             <source>Write {0}</source>
             <translation>Zapsat {0}</translation>
         </message>

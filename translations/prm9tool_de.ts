@@ -2201,6 +2201,10 @@ Ja lädt hoch und stellt den Eintrag in die Warteschlange; Nein lädt nichts hoc
             <translation>Nur lesen: Schreiben erfordert die Expertenebene.</translation>
         </message>
         <message>
+            <source>— (no entry)</source>
+            <translation>— (kein Eintrag)</translation>
+        </message>
+        <message>
             <source>Write {0}</source>
             <translation>{0} schreiben</translation>
         </message>
