@@ -151,7 +151,12 @@ def _start_emulated(window: MainWindow, specs: list[str]) -> None:
     from prm9tool.errors import TypeKeyError
     from prm9tool.translate import error_text
     from prm9tool.views import prompts
-    from prm9tool.views.hid_dialog import EMULATORS_KEY, SELECTED_KEY, saved_emulators
+    from prm9tool.views.hid_dialog import (
+        EMULATORS_KEY,
+        SELECTED_KEY,
+        one_per_serial,
+        saved_emulators,
+    )
 
     try:
         normal = [_normal_spec(spec) for spec in specs]
@@ -159,7 +164,7 @@ def _start_emulated(window: MainWindow, specs: list[str]) -> None:
         prompts.inform(window, prompts.Icon.Warning, "--emulator", error_text(exc))
         return
     known = saved_emulators(window.settings)
-    window.settings.setValue(EMULATORS_KEY, known + [s for s in normal if s not in known])
+    window.settings.setValue(EMULATORS_KEY, one_per_serial(known + normal))
     device_id = f"emulator:{normal[0]}"
     window.settings.setValue(SELECTED_KEY, device_id)
     window.valve.go_online(device_id)
