@@ -66,6 +66,10 @@ Poslední akce možná nebyla dokončena. Uložte svou práci pod novým názvem
             <translation>Kritické zesílení Kkr = %1, perioda Tkr = %2 ms: K = 0.5·Kkr, Ti = 0.8·Tkr, Td = 0.12·Tkr.</translation>
         </message>
         <message>
+            <source>Proposed, simulated on the emulator's firmware: %1.</source>
+            <translation type="unfinished"></translation>
+        </message>
+        <message>
             <source>before (measured)</source>
             <translation>před (změřeno)</translation>
         </message>
@@ -2224,6 +2228,10 @@ Ano načte a záznam zařadí do fronty; Ne nenačte nic.</translation>
             <translation>Jen čtení: zápis vyžaduje expertní úroveň.</translation>
         </message>
         <message>
+            <source>— (no entry)</source>
+            <translation>— (žádný záznam)</translation>
+        </message>
+        <message>
             <source>Write {0}</source>
             <translation>Zapsat {0}</translation>
         </message>
@@ -3280,6 +3288,10 @@ Ano načte a záznam zařadí do fronty; Ne nenačte nic.</translation>
         <message>
             <source>Result</source>
             <translation>Výsledek</translation>
+        </message>
+        <message>
+            <source>Limited by the link</source>
+            <translation type="unfinished"></translation>
         </message>
         <message>
             <source>PRM9 test report</source>

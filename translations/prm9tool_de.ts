@@ -66,6 +66,10 @@ Die letzte Aktion wurde womöglich nicht vollständig ausgeführt. Speichern Sie
             <translation>Kritische Verstärkung Kkr = %1, Periode Tkr = %2 ms: K = 0.5·Kkr, Ti = 0.8·Tkr, Td = 0.12·Tkr.</translation>
         </message>
         <message>
+            <source>Proposed, simulated on the emulator's firmware: %1.</source>
+            <translation type="unfinished"></translation>
+        </message>
+        <message>
             <source>before (measured)</source>
             <translation>vorher (gemessen)</translation>
         </message>
@@ -2216,6 +2220,10 @@ Ja lädt hoch und stellt den Eintrag in die Warteschlange; Nein lädt nichts hoc
             <translation>Nur lesen: Schreiben erfordert die Expertenebene.</translation>
         </message>
         <message>
+            <source>— (no entry)</source>
+            <translation>— (kein Eintrag)</translation>
+        </message>
+        <message>
             <source>Write {0}</source>
             <translation>{0} schreiben</translation>
         </message>
@@ -3271,6 +3279,10 @@ Ja lädt hoch und stellt den Eintrag in die Warteschlange; Nein lädt nichts hoc
         <message>
             <source>Result</source>
             <translation>Ergebnis</translation>
+        </message>
+        <message>
+            <source>Limited by the link</source>
+            <translation type="unfinished"></translation>
         </message>
         <message>
             <source>PRM9 test report</source>
