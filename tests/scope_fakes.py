@@ -16,10 +16,12 @@ class FakeConnection(QObject):
     failed = Signal(str)
     write_failed = Signal(list)
     status_changed = Signal(object)
+    busy_changed = Signal(bool)
 
     def __init__(self, online: bool = True) -> None:
         super().__init__()
         self.is_online = online
+        self.is_busy = False
         self.streams: list[tuple[list[str], int]] = []
         self.stream_stops = 0
         self.writes: list[tuple[str, int | str]] = []

@@ -90,6 +90,21 @@ def test_the_view_filters_counts_and_enables_apply_only_with_a_choice(qtbot):
     assert dialog.applied == (1, {"LIMTA": 1500})
 
 
+def test_values_are_shown_with_the_decimal_separator_of_the_language(qtbot):
+    """In German the compare view showed ``1.5`` where the parameter list shows ``1,5``."""
+    document = factory_side("Dokument", GAINSETPOS=24576)  # 1.5
+    comparison = Comparison((document, factory_side("Ventil")), Side.factory(document.type_key))
+    i18n.set_language("de")
+    try:
+        dialog = CompareDialog(comparison, (0, 1))
+        qtbot.addWidget(dialog)
+        row = next(i for i, r in enumerate(dialog.model.rows) if r.mnemonic == "GAINSETPOS")
+        shown = [dialog.model.data(dialog.model.index(row, FIRST_VALUE + s)) for s in (0, 1, 2)]
+    finally:
+        i18n.set_language("en")
+    assert shown == ["1,5", "1", "1"]
+
+
 def test_compare_with_file_takes_the_chosen_values_as_one_undo_step(
     qtbot, window, tmp_path, monkeypatch
 ):
@@ -252,3 +267,16 @@ def test_the_history_setting_chooses_the_database_for_the_gui_and_the_command_li
     expected = f"sqlite:///{tmp_path / 'line.sqlite3'}"
     assert database_url() == expected and unreachable_policy() == "refuse"
     assert window.connection.history.recorder.url == expected
+
+
+def test_the_history_window_names_a_damaged_database_and_keeps_working(qtbot, window, tmp_path):
+    damaged = tmp_path / "damaged.sqlite3"
+    damaged.write_bytes(b"not a database " * 100)
+    window.connection.set_recorder(Recorder(f"sqlite:///{damaged}", tmp_path / "q.jsonl"))
+    history = window.compare.show_history()
+    qtbot.addWidget(history)
+    history.serial.setText("4711")
+    history.reload()
+    qtbot.waitUntil(lambda: "is damaged" in history.state.text(), timeout=TIMEOUT)
+    assert history.model.rowCount() == 0 and not history.buttons["compare"].isEnabled()
+    assert damaged.read_bytes() == b"not a database " * 100

@@ -257,3 +257,15 @@ def test_e04_flow_page_measures_and_applies_the_offsets(qtbot):
     # the emulated plant has no overlap: nothing worth compensating
     assert all(v < 50 for v in w.flow.proposal.values())
     assert TuningWindow(ParameterDocument(E02)).flow is None
+
+
+def test_proposed_gains_use_the_decimal_separator_of_the_language(qapp):
+    from prm9tool import i18n
+    from prm9tool.views.tuning_window import gain_text
+
+    i18n.set_language("cs")
+    try:
+        shown = gain_text("POSKP", 42), gain_text("POSKD", 42)
+    finally:
+        i18n.set_language("en")
+    assert shown == ("0,42", "0,42 ms")

@@ -173,3 +173,21 @@ def test_the_measured_demand_becomes_the_reference_of_the_step_figures(scope, co
     scope.channels.set_selected(["position_actual", "current_a", "demand"])
     _start(scope)
     assert scope.step_panel.reference_slot() == 2  # already recorded: it is the reference
+
+
+def test_a_long_operation_stops_the_generator_before_it_runs_and_says_so(scope, conn, answer):
+    _start(scope)
+    conn.is_busy = True
+    conn.busy_changed.emit(True)  # e.g. a tuning test: emitted before its job is queued
+    assert conn.writes[-1] == ("SETPOVRON", 0)
+    assert not scope.generator.running
+    assert scope.generator_panel.button.text() == "Start generator"
+    assert "another operation" in scope.status.text()
+
+
+def test_the_generator_does_not_start_while_the_valve_is_busy(scope, conn, answer):
+    conn.is_busy = True
+    _start(scope)
+    assert conn.writes == [] and conn.generators == []
+    assert not scope.generator.running and not scope.generator_panel.button.isChecked()
+    assert "busy" in scope.status.text()

@@ -107,3 +107,26 @@ def test_a_refused_generator_write_stops_the_generator_and_says_why(
     assert "write access denied" in scope.status.text()
     assert not scope.generator_panel.button.isChecked()
     qtbot.waitUntil(lambda: _override_on(emulated(SERIAL)) == 0, timeout=TIMEOUT)
+
+
+def test_a_tuning_test_stops_the_generator_first_and_measures_a_real_step(
+    qtbot, window, monkeypatch
+):
+    """Autotune started while the generator drove the setpoint used to fit the generator's
+    waveform (a model with a negative gain) and propose Kp 0.01, Ki 0."""
+    from PySide6.QtWidgets import QMessageBox
+
+    scope, valve = _generator_driving(qtbot, window)
+    scope.preselect("position_actual")
+    scope.start()
+    qtbot.waitUntil(lambda: scope.receiving, timeout=TIMEOUT)
+    monkeypatch.setattr(QMessageBox, "question", lambda *a: QMessageBox.StandardButton.Yes)
+    window.show_tuning_window("position")
+    tuning = window.tuning_window
+    tuning.autotune.run_button.click()
+    assert not scope.generator.running
+    assert "another operation" in scope.status.text()
+    qtbot.waitUntil(lambda: not tuning.runner.busy, timeout=30_000)
+    assert "Before: overshoot" in tuning.autotune.result.text(), tuning.autotune.result.text()
+    assert _override_on(valve) == 0
+    assert not scope.running and "recording stopped" in scope.status.text()

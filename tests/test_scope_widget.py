@@ -144,6 +144,21 @@ def test_start_streams_the_selected_points_into_the_buffer_and_draws(scope, conn
     assert scope.plot.legend[0].value.text() == "50 %"
 
 
+def test_a_stream_stopped_by_someone_else_stops_the_recording_and_says_so(scope, conn):
+    """A tuning test stops the stream to stream itself: the scope used to keep saying
+    "Recording at 5000 Hz" over a frozen trace."""
+    scope.preselect("demand")
+    scope.start()
+    conn.samples_received.emit(_step_block(100, 10, channels=1))
+    conn.stream_stopped.emit()
+    assert not scope.running
+    assert scope.controls.start.isEnabled()
+    assert "recording stopped" in scope.status.text()
+    assert scope.capture.buffer.total == 100  # what came is kept
+    scope.start()
+    assert scope.running and "recording stopped" not in scope.status.text()
+
+
 def test_changing_channels_or_rate_while_running_restarts_cleanly(scope, conn):
     scope.preselect("demand")
     scope.start()

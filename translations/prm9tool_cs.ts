@@ -1833,6 +1833,21 @@ Ano načte a záznam zařadí do fronty; Ne nenačte nic.</translation>
         </message>
     </context>
     <context>
+        <name>LinkGuard</name>
+        <message>
+            <source>The connection will move</source>
+            <translation>Spojení se změní</translation>
+        </message>
+        <message>
+            <source>The node-ID switch is at position {0}: the switches decide node ID and bit rate (manual table 7-17), so this change does not move the valve; it stays at node {1}.</source>
+            <translation>Přepínač ID uzlu je v poloze {0}: ID uzlu a přenosovou rychlost určují přepínače (návod, tabulka 7-17), tato změna tedy ventil nepřesune; zůstává uzlem {1}.</translation>
+        </message>
+        <message>
+            <source>After the valve's next power-up or restart it answers at node {0}, {1}: prm9tool's connection then breaks. Store the change, restart the valve, then find it again under Communication → CAN bus (node {0}, bit rate {1}).</source>
+            <translation>Po příštím zapnutí nebo restartu ventil odpovídá jako uzel {0}, {1}: spojení prm9tool se pak přeruší. Uložte změnu, restartujte ventil a najděte ho znovu v Komunikace → Sběrnice CAN (uzel {0}, rychlost {1}).</translation>
+        </message>
+    </context>
+    <context>
         <name>MainActions</name>
         <message>
             <source>&amp;New…</source>
@@ -2890,6 +2905,10 @@ Ano načte a záznam zařadí do fronty; Ne nenačte nic.</translation>
             <translation>Vpravo zvolte alespoň jeden měřicí bod.</translation>
         </message>
         <message>
+            <source>The recording stopped: another operation (a tuning test…) took the stream.</source>
+            <translation>Záznam se zastavil: datový tok převzala jiná operace (test ladění…).</translation>
+        </message>
+        <message>
             <source>The recording could not start: {0}</source>
             <translation>Záznam nelze spustit: {0}</translation>
         </message>
@@ -2924,6 +2943,10 @@ Ano načte a záznam zařadí do fronty; Ne nenačte nic.</translation>
         <message>
             <source>The link dropped: the setpoint generator has stopped.</source>
             <translation>Spojení se přerušilo: generátor žádané hodnoty se zastavil.</translation>
+        </message>
+        <message>
+            <source>The setpoint generator has stopped: another operation (a tuning test, an upload…) drives the valve now.</source>
+            <translation>Generátor žádané hodnoty se zastavil: ventil nyní řídí jiná operace (test ladění, načtení do ventilu…).</translation>
         </message>
         <message>
             <source>Nothing recorded yet.</source>
@@ -2998,6 +3021,10 @@ Ano načte a záznam zařadí do fronty; Ne nenačte nic.</translation>
         <message>
             <source>The setpoint generator needs a connected valve.</source>
             <translation>Generátor žádané hodnoty potřebuje připojený ventil.</translation>
+        </message>
+        <message>
+            <source>The valve is busy with another operation; start the generator after it.</source>
+            <translation>Ventil provádí jinou operaci; spusťte generátor až po ní.</translation>
         </message>
     </context>
     <context>

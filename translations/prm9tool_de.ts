@@ -1826,6 +1826,21 @@ Ja lädt hoch und stellt den Eintrag in die Warteschlange; Nein lädt nichts hoc
         </message>
     </context>
     <context>
+        <name>LinkGuard</name>
+        <message>
+            <source>The connection will move</source>
+            <translation>Die Verbindung wird sich ändern</translation>
+        </message>
+        <message>
+            <source>The node-ID switch is at position {0}: the switches decide node ID and bit rate (manual table 7-17), so this change does not move the valve; it stays at node {1}.</source>
+            <translation>Der Knoten-ID-Schalter steht auf Position {0}: Die Schalter bestimmen Knoten-ID und Bitrate (Handbuch, Tabelle 7-17), diese Änderung verschiebt das Ventil also nicht; es bleibt Knoten {1}.</translation>
+        </message>
+        <message>
+            <source>After the valve's next power-up or restart it answers at node {0}, {1}: prm9tool's connection then breaks. Store the change, restart the valve, then find it again under Communication → CAN bus (node {0}, bit rate {1}).</source>
+            <translation>Nach dem nächsten Einschalten oder Neustart antwortet das Ventil als Knoten {0}, {1}: Die Verbindung von prm9tool bricht dann ab. Änderung speichern, Ventil neu starten und es unter Kommunikation → CAN-Bus wiederfinden (Knoten {0}, Bitrate {1}).</translation>
+        </message>
+    </context>
+    <context>
         <name>MainActions</name>
         <message>
             <source>&amp;New…</source>
@@ -2881,6 +2896,10 @@ Ja lädt hoch und stellt den Eintrag in die Warteschlange; Nein lädt nichts hoc
             <translation>Wählen Sie rechts mindestens einen Messpunkt.</translation>
         </message>
         <message>
+            <source>The recording stopped: another operation (a tuning test…) took the stream.</source>
+            <translation>Die Aufzeichnung wurde beendet: ein anderer Vorgang (ein Tuning-Test…) hat den Datenstrom übernommen.</translation>
+        </message>
+        <message>
             <source>The recording could not start: {0}</source>
             <translation>Die Aufzeichnung konnte nicht starten: {0}</translation>
         </message>
@@ -2915,6 +2934,10 @@ Ja lädt hoch und stellt den Eintrag in die Warteschlange; Nein lädt nichts hoc
         <message>
             <source>The link dropped: the setpoint generator has stopped.</source>
             <translation>Die Verbindung ist abgebrochen: der Sollwertgenerator wurde gestoppt.</translation>
+        </message>
+        <message>
+            <source>The setpoint generator has stopped: another operation (a tuning test, an upload…) drives the valve now.</source>
+            <translation>Der Sollwertgenerator wurde gestoppt: ein anderer Vorgang (ein Tuning-Test, ein Hochladen…) steuert jetzt das Ventil.</translation>
         </message>
         <message>
             <source>Nothing recorded yet.</source>
@@ -2989,6 +3012,10 @@ Ja lädt hoch und stellt den Eintrag in die Warteschlange; Nein lädt nichts hoc
         <message>
             <source>The setpoint generator needs a connected valve.</source>
             <translation>Der Sollwertgenerator braucht ein verbundenes Ventil.</translation>
+        </message>
+        <message>
+            <source>The valve is busy with another operation; start the generator after it.</source>
+            <translation>Das Ventil ist mit einem anderen Vorgang beschäftigt; starten Sie den Generator danach.</translation>
         </message>
     </context>
     <context>

@@ -54,6 +54,18 @@ class ValveListing(ValveIdentity, Protocol):
     def description(self) -> str:
         """A line about the valve in English (the device layer's words)."""
 
+    @property
+    def nmt_state(self) -> str:
+        """CAN nodes: the NMT state their heartbeat told during the scan ("" otherwise)."""
+
+    @property
+    def heartbeat_age_s(self) -> float | None:
+        """CAN nodes: seconds since their last heartbeat (None: none heard, or not CAN)."""
+
+    @property
+    def last_emcy(self) -> str:
+        """CAN nodes: the last EMCY heard ("" none)."""
+
 
 ListedValves = list[ValveListing] | Exception  # what listing the valves delivers: them, or why not
 
@@ -223,8 +235,20 @@ class ScopeConnection(LinkState, Protocol):
         """Emitted with the mnemonics of a write the valve refused (after ``failed``)."""
 
     @property
+    def stream_stopped(self) -> SignalInstance:
+        """Emitted when the stream has stopped (whoever stopped it)."""
+
+    @property
     def status_changed(self) -> SignalInstance:
         """Emitted (≈ 2 Hz) with the valve's status (device state, NMT state, errors)."""
+
+    @property
+    def busy_changed(self) -> SignalInstance:
+        """Emitted with True when a long operation (upload, restart, a tuning test…) starts."""
+
+    @property
+    def is_busy(self) -> bool:
+        """True while a long operation runs."""
 
     def start_stream(self, keys: Sequence[str], rate_hz: int) -> None:
         """Start streaming ``keys`` at ``rate_hz`` (asynchronous)."""

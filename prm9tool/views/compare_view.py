@@ -36,7 +36,7 @@ from PySide6.QtWidgets import (
 
 from prm9tool.catalogue import Access
 from prm9tool.compare.model import Comparison, Row
-from prm9tool.i18n import text
+from prm9tool.i18n import format_value, text
 from prm9tool.translate import translated
 from prm9tool.views.diagram.layout import layout_for
 
@@ -85,9 +85,11 @@ class CompareTableModel(QAbstractTableModel):
                 return row.mnemonic
             if column == 1:
                 return text(row.parameter.text)
-            value = row.display(self._side(column))
-            unit = row.parameter.unit
-            return f"{value} {unit}".strip() if value else "—"
+            side = self._side(column)
+            raw = row.reference if side < 0 else row.values[side]
+            if raw is None:
+                return "—"
+            return f"{format_value(row.parameter, raw)} {row.parameter.unit}".strip()
         chosen = self.comparison.choices.get(row.mnemonic)
         side = self._side(column)
         if role == Qt.ItemDataRole.CheckStateRole and column >= FIRST_VALUE and side >= 0:

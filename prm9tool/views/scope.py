@@ -65,6 +65,7 @@ class ScopeWidget(QWidget):
         self._running = False
         self._accepting = False  # False between a (re)start request and stream_started
         self._generator_note = ""
+        self._recording_note = ""  # why the recording stopped without the user
         self.generator = SetpointGenerator(connection, self)
         self._starter = GeneratorStart(control, self)  # the questions before it starts
         self._build()
@@ -122,6 +123,7 @@ class ScopeWidget(QWidget):
         conn.lost.connect(self._on_link_lost)
         conn.samples_received.connect(self._on_samples_received)
         conn.stream_started.connect(self._on_stream_started)
+        conn.stream_stopped.connect(self._on_stream_stopped)
         conn.failed.connect(self._on_failed)
         conn.status_changed.connect(self._on_status_changed)
         self._document.type_key_changed.connect(self._on_type_key_changed)
@@ -143,6 +145,7 @@ class ScopeWidget(QWidget):
         self.generator.running_changed.connect(self.generator_panel.set_running)
         self.generator.stopped_by_link.connect(self._on_generator_stopped_by_link)
         self.generator.refused.connect(self._on_generator_refused)
+        self.generator.stopped_by_operation.connect(self._on_generator_stopped_by_operation)
 
     # --- public API --------------------------------------------------------------------------
     @property
@@ -174,6 +177,7 @@ class ScopeWidget(QWidget):
             self._update_status()
             return
         self._running = True
+        self._recording_note = ""
         self._start_capture(keys)
 
     def stop(self) -> None:
@@ -206,6 +210,21 @@ class ScopeWidget(QWidget):
             capture.buffer.clear()
             self.display.engine.rearm()
             self._accepting = True
+
+    def _on_stream_stopped(self) -> None:
+        """The stream ended while samples flowed, and not by the scope (a tuning test streams
+        itself): the recording stops, the display holds what came, the status says so."""
+        if not (self._running and self._accepting):
+            return  # the scope's own stop, or the restart of its stream
+        self._running = False
+        self._accepting = False
+        self.display.hold_all()
+        self._timer.stop()
+        self._recording_note = self.tr(
+            "The recording stopped: another operation (a tuning test…) took the stream."
+        )
+        self._update_controls()
+        self._update_status()
 
     def _on_failed(self, message: str) -> None:
         """An operation failed; if it was the stream start we wait for, stop and say why."""
@@ -301,7 +320,12 @@ class ScopeWidget(QWidget):
         self._update_status()
 
     def _update_status(self) -> None:
-        parts = (self._generator_note, self._blocked_text(), self._state_text())
+        parts = (
+            self._generator_note,
+            self._recording_note,
+            self._blocked_text(),
+            self._state_text(),
+        )
         self._say(" ".join(filter(None, parts)))
 
     def _on_status_changed(self, status: object) -> None:
@@ -361,6 +385,13 @@ class ScopeWidget(QWidget):
 
     def _on_generator_stopped_by_link(self) -> None:
         self._generator_note = self.tr("The link dropped: the setpoint generator has stopped.")
+        self._update_status()
+
+    def _on_generator_stopped_by_operation(self) -> None:
+        self._generator_note = self.tr(
+            "The setpoint generator has stopped: another operation (a tuning test, an upload…) "
+            "drives the valve now."
+        )
         self._update_status()
 
     def _on_generator_refused(self, reason: str) -> None:

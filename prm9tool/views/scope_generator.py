@@ -6,7 +6,8 @@ The waveform itself runs off the GUI thread, on the valve's own time base
 valve's 200 µs cycle on an emulated valve, timed against the sample stream over a link. This
 class is its switch: it starts it (the override goes on), stops it (SETPOVRON = 0) on Stop,
 when the scope closes and before the program goes offline, and stops and says why when the
-valve refuses one of its writes. When the link drops it only stops: nothing can be written
+valve refuses one of its writes, and before a long operation of the connection (a tuning
+test, an upload, a restart) whose own writes it would otherwise fight. When the link drops it only stops: nothing can be written
 any more, and the firmware switches the override off by itself 500 ms after the last USB
 report; the generator still switches it off at the next connection, in case the valve did not
 notice (an emulated valve stands still while offline).
@@ -30,6 +31,7 @@ class SetpointGenerator(QObject):
     running_changed = Signal(bool)
     stopped_by_link = Signal()  # the link dropped while running
     refused = Signal(str)  # the valve refused a write while running (the reason): stopped
+    stopped_by_operation = Signal()  # a long operation (e.g. a tuning test) began: stopped
 
     def __init__(self, connection: ScopeConnection, parent: QObject | None = None) -> None:
         super().__init__(parent)
@@ -42,6 +44,7 @@ class SetpointGenerator(QObject):
         connection.online_changed.connect(self._on_online_changed)
         connection.failed.connect(self._on_connection_failed)
         connection.write_failed.connect(self._on_connection_write_failed)
+        connection.busy_changed.connect(self._on_busy_changed)
 
     @property
     def running(self) -> bool:
@@ -62,6 +65,10 @@ class SetpointGenerator(QObject):
         settings.check()
         if not self._connection.is_online:
             raise RuntimeError(self.tr("The setpoint generator needs a connected valve."))
+        if self._connection.is_busy:
+            raise RuntimeError(
+                self.tr("The valve is busy with another operation; start the generator after it.")
+            )
         self._settings = settings
         self._running = True  # running from here: a refusal of the first writes stops it
         self._override_left_on = True
@@ -93,6 +100,12 @@ class SetpointGenerator(QObject):
             self.refused.emit(self._last_failure)
         elif "SETPOVRON" in mine:
             self._override_left_on = True  # switching off failed: again at the next connection
+
+    def _on_busy_changed(self, busy: bool) -> None:
+        """A long operation starts: stop first (the stop is queued before the operation)."""
+        if busy and self.running:
+            self.stop()
+            self.stopped_by_operation.emit()
 
     def _on_link_lost(self, *_: object) -> None:
         if self.running:

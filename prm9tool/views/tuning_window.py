@@ -29,6 +29,7 @@ from PySide6.QtWidgets import (
 
 from prm9tool.catalogue import CATALOGUE
 from prm9tool.catalogue.variant import Config
+from prm9tool.i18n import format_value
 from prm9tool.model.document import ParameterDocument
 from prm9tool.online.tuning_runner import SimulationRunner, TuningRunner, ValveRunner
 from prm9tool.views.tuning_pages import AutotunePage, BodePage, Page
@@ -204,6 +205,6 @@ class TuningWindow(QDialog):
 
 
 def gain_text(mnemonic: str, raw: int) -> str:
-    """``0.40`` with the catalogue's unit."""
+    """``0.4`` (``0,4`` in German and Czech) with the catalogue's unit."""
     param = CATALOGUE[mnemonic]
-    return f"{param.format_display(raw)} {param.unit}".strip()
+    return f"{format_value(param, raw)} {param.unit}".strip()
