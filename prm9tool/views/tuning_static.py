@@ -23,6 +23,7 @@ from prm9tool.catalogue.variant import Config
 from prm9tool.characterize.flow import FlowResult, flow_test
 from prm9tool.characterize.procedures import StaticResult, static_test
 from prm9tool.characterize.run import Characterization
+from prm9tool.i18n import format_number, format_significant
 from prm9tool.views.tuning_pages import Page
 from prm9tool.views.tuning_plot import COLOURS, Plot, Series
 from prm9tool.views.tuning_report import static_plot
@@ -35,7 +36,7 @@ PREVIEW_POINTS = 400
 
 
 def _pct(raw: float) -> str:
-    return f"{raw / FULL * 100.0:.1f}"
+    return format_number(raw / FULL * 100.0, 1)
 
 
 class ProposalPage(Page):
@@ -89,8 +90,8 @@ class StaticPage(ProposalPage):
         fake = Characterization(None, DEFAULT, "", {}, static=result)  # type: ignore[arg-type]
         plot = static_plot(fake)
         text = self.tr("Gain %1, hysteresis %2 %, linearity error %3 %, dead band %4 %.").replace(
-            "%1", f"{c.gain:.3f}").replace("%2", f"{c.hysteresis_pct:.2f}").replace(
-            "%3", f"{c.linearity_pct:.2f}").replace("%4", f"{c.dead_band_pct:.1f}")  # fmt: skip
+            "%1", format_number(c.gain, 3)).replace("%2", format_number(c.hysteresis_pct, 2)).replace(
+            "%3", format_number(c.linearity_pct, 2)).replace("%4", format_number(c.dead_band_pct, 1))  # fmt: skip
         ch = result.record.channels
         self.proposal = {}
         if not np.isfinite(ch["setpoint_gain"]).all():  # a link without these measuring points
@@ -204,8 +205,9 @@ class FlowPage(ProposalPage):
         self.result.setText(
             self.tr("Flow gain %1 %/s per % of opening, dead band %2 … %3 % (width %4 %). "
                     "Proposed offsets on the control deviation (process Kp %5): %6.")
-            .replace("%1", f"{flow.gain:.2f}").replace("%2", f"{lo:.1f}").replace("%3", f"{hi:.1f}")
-            .replace("%4", f"{flow.dead_band_pct:.1f}").replace("%5", f"{result.kp:g}")
+            .replace("%1", format_number(flow.gain, 2)).replace("%2", format_number(lo, 1))
+            .replace("%3", format_number(hi, 1)).replace("%4", format_number(flow.dead_band_pct, 1))
+            .replace("%5", format_significant(result.kp, 6))
             .replace("%6", ", ".join(f"{k} {_pct(v)} %" for k, v in result.offsets.items()))
         )  # fmt: skip
         self.apply_button.setEnabled(bool(self.proposal))
