@@ -66,10 +66,6 @@ Die letzte Aktion wurde womöglich nicht vollständig ausgeführt. Speichern Sie
             <translation>Kritische Verstärkung Kkr = %1, Periode Tkr = %2 ms: K = 0.5·Kkr, Ti = 0.8·Tkr, Td = 0.12·Tkr.</translation>
         </message>
         <message>
-            <source>Proposed, simulated on the emulator's firmware: %1.</source>
-            <translation type="unfinished"></translation>
-        </message>
-        <message>
             <source>before (measured)</source>
             <translation>vorher (gemessen)</translation>
         </message>
@@ -140,6 +136,10 @@ Die letzte Aktion wurde womöglich nicht vollständig ausgeführt. Speichern Sie
         <message>
             <source>Accept the proposed gains</source>
             <translation>Vorgeschlagene Verstärkungen übernehmen</translation>
+        </message>
+        <message>
+            <source>Proposed, simulated on the emulator's firmware: %1.</source>
+            <translation>Vorschlag, simuliert auf der Firmware des Emulators: %1.</translation>
         </message>
     </context>
     <context>
@@ -1410,6 +1410,61 @@ Die letzte Aktion wurde womöglich nicht vollständig ausgeführt. Speichern Sie
                 <numerusform>… und %n weiteres Problem.</numerusform>
                 <numerusform>… und %n weitere Probleme.</numerusform>
             </translation>
+        </message>
+    </context>
+    <context>
+        <name>FlowPage</name>
+        <message>
+            <source>process setpoint steps %1 → %2 → %1 % with the process controller proportional only, %3 s each</source>
+            <translation>Prozesssollwert-Sprünge %1 → %2 → %1 % mit rein proportionalem Prozessregler, je %3 s</translation>
+        </message>
+        <message>
+            <source>Flow characteristic</source>
+            <translation>Durchflusskennlinie</translation>
+        </message>
+        <message>
+            <source>spool opening [%]</source>
+            <translation>Schieberöffnung [%]</translation>
+        </message>
+        <message>
+            <source>actuator velocity [%/s]</source>
+            <translation>Geschwindigkeit des Antriebs [%/s]</translation>
+        </message>
+        <message>
+            <source>measured</source>
+            <translation>gemessen</translation>
+        </message>
+        <message>
+            <source>with the proposed offsets (preview)</source>
+            <translation>mit den vorgeschlagenen Offsets (Vorschau)</translation>
+        </message>
+        <message>
+            <source>Flow gain %1 %/s per % of opening, dead band %2 … %3 % (width %4 %). Proposed offsets on the control deviation (process Kp %5): %6.</source>
+            <translation>Durchflussverstärkung %1 %/s je % Öffnung, Totband %2 … %3 % (Breite %4 %). Vorgeschlagene Offsets der Regelabweichung (Prozess-Kp %5): %6.</translation>
+        </message>
+        <message>
+            <source>Offsets from the flow characteristic</source>
+            <translation>Offsets aus der Durchflusskennlinie</translation>
+        </message>
+        <message>
+            <source>Step around the operating point:</source>
+            <translation>Sprung um den Arbeitspunkt:</translation>
+        </message>
+        <message>
+            <source>Operating point:</source>
+            <translation>Arbeitspunkt:</translation>
+        </message>
+        <message>
+            <source>Duration of each step:</source>
+            <translation>Dauer jedes Sprungs:</translation>
+        </message>
+        <message>
+            <source>Measure the flow characteristic</source>
+            <translation>Durchflusskennlinie messen</translation>
+        </message>
+        <message>
+            <source>Apply the proposed offsets</source>
+            <translation>Vorgeschlagene Offsets übernehmen</translation>
         </message>
     </context>
     <context>
@@ -3005,16 +3060,8 @@ Ja lädt hoch und stellt den Eintrag in die Warteschlange; Nein lädt nichts hoc
             <translation>ein Dreieck über den ganzen Bereich −100 … 100 %, %1 s</translation>
         </message>
         <message>
-            <source>linearized (preview)</source>
-            <translation>linearisiert (Vorschau)</translation>
-        </message>
-        <message>
             <source>Gain %1, hysteresis %2 %, linearity error %3 %, dead band %4 %.</source>
             <translation>Verstärkung %1, Hysterese %2 %, Linearitätsfehler %3 %, Totzone %4 %.</translation>
-        </message>
-        <message>
-            <source>Linearization from the static characteristic</source>
-            <translation>Linearisierung aus der statischen Kennlinie</translation>
         </message>
         <message>
             <source>Triangle period:</source>
@@ -3025,8 +3072,24 @@ Ja lädt hoch und stellt den Eintrag in die Warteschlange; Nein lädt nichts hoc
             <translation>Statische Kennlinie messen</translation>
         </message>
         <message>
-            <source>Apply the proposed linearization</source>
-            <translation>Vorgeschlagene Linearisierung übernehmen</translation>
+            <source>No proposal: this link does not sample the setpoint chain (USB and the emulator do).</source>
+            <translation>Kein Vorschlag: Diese Verbindung tastet die Sollwertkette nicht ab (USB und der Emulator tun es).</translation>
+        </message>
+        <message>
+            <source>Dead band behind the gain/offset stage %1 … %2 %: offsets %3.</source>
+            <translation>Totband hinter der Verstärkungs-/Offsetstufe %1 … %2 %: Offsets %3.</translation>
+        </message>
+        <message>
+            <source>with the proposed offsets and linearization (preview)</source>
+            <translation>mit den vorgeschlagenen Offsets und der Linearisierung (Vorschau)</translation>
+        </message>
+        <message>
+            <source>Offsets and linearization from the static characteristic</source>
+            <translation>Offsets und Linearisierung aus der statischen Kennlinie</translation>
+        </message>
+        <message>
+            <source>Apply the proposed offsets and linearization</source>
+            <translation>Vorgeschlagene Offsets und Linearisierung übernehmen</translation>
         </message>
     </context>
     <context>
@@ -3281,10 +3344,6 @@ Ja lädt hoch und stellt den Eintrag in die Warteschlange; Nein lädt nichts hoc
             <translation>Ergebnis</translation>
         </message>
         <message>
-            <source>Limited by the link</source>
-            <translation type="unfinished"></translation>
-        </message>
-        <message>
             <source>PRM9 test report</source>
             <translation>PRM9-Prüfbericht</translation>
         </message>
@@ -3303,6 +3362,10 @@ Ja lädt hoch und stellt den Eintrag in die Warteschlange; Nein lädt nichts hoc
         <message>
             <source>Parameter set (raw values)</source>
             <translation>Parametersatz (Rohwerte)</translation>
+        </message>
+        <message>
+            <source>Limited by the link</source>
+            <translation>Durch die Verbindung begrenzt</translation>
         </message>
     </context>
     <context>
@@ -3386,6 +3449,10 @@ Stellen Sie sicher, dass die Hydraulik dafür sicher ist. Stopp beendet ihn jede
         <message>
             <source>Ready.</source>
             <translation>Bereit.</translation>
+        </message>
+        <message>
+            <source>Flow characteristic (E04)</source>
+            <translation>Durchflusskennlinie (E04)</translation>
         </message>
     </context>
     <context>
