@@ -1433,6 +1433,61 @@ Die letzte Aktion wurde womöglich nicht vollständig ausgeführt. Speichern Sie
         </message>
     </context>
     <context>
+        <name>FlowPage</name>
+        <message>
+            <source>process setpoint steps %1 → %2 → %1 % with the process controller proportional only, %3 s each</source>
+            <translation>Prozesssollwert-Sprünge %1 → %2 → %1 % mit rein proportionalem Prozessregler, je %3 s</translation>
+        </message>
+        <message>
+            <source>Flow characteristic</source>
+            <translation>Durchflusskennlinie</translation>
+        </message>
+        <message>
+            <source>spool opening [%]</source>
+            <translation>Schieberöffnung [%]</translation>
+        </message>
+        <message>
+            <source>actuator velocity [%/s]</source>
+            <translation>Geschwindigkeit des Antriebs [%/s]</translation>
+        </message>
+        <message>
+            <source>measured</source>
+            <translation>gemessen</translation>
+        </message>
+        <message>
+            <source>with the proposed offsets (preview)</source>
+            <translation>mit den vorgeschlagenen Offsets (Vorschau)</translation>
+        </message>
+        <message>
+            <source>Flow gain %1 %/s per % of opening, dead band %2 … %3 % (width %4 %). Proposed offsets on the control deviation (process Kp %5): %6.</source>
+            <translation>Durchflussverstärkung %1 %/s je % Öffnung, Totband %2 … %3 % (Breite %4 %). Vorgeschlagene Offsets der Regelabweichung (Prozess-Kp %5): %6.</translation>
+        </message>
+        <message>
+            <source>Offsets from the flow characteristic</source>
+            <translation>Offsets aus der Durchflusskennlinie</translation>
+        </message>
+        <message>
+            <source>Step around the operating point:</source>
+            <translation>Sprung um den Arbeitspunkt:</translation>
+        </message>
+        <message>
+            <source>Operating point:</source>
+            <translation>Arbeitspunkt:</translation>
+        </message>
+        <message>
+            <source>Duration of each step:</source>
+            <translation>Dauer jedes Sprungs:</translation>
+        </message>
+        <message>
+            <source>Measure the flow characteristic</source>
+            <translation>Durchflusskennlinie messen</translation>
+        </message>
+        <message>
+            <source>Apply the proposed offsets</source>
+            <translation>Vorgeschlagene Offsets übernehmen</translation>
+        </message>
+    </context>
+    <context>
         <name>GeneratorPanel</name>
         <message>
             <source>Step</source>
@@ -2240,6 +2295,10 @@ Ja lädt hoch und stellt den Eintrag in die Warteschlange; Nein lädt nichts hoc
             <translation>Nur lesen: Schreiben erfordert die Expertenebene.</translation>
         </message>
         <message>
+            <source>— (no entry)</source>
+            <translation>— (kein Eintrag)</translation>
+        </message>
+        <message>
             <source>Write {0}</source>
             <translation>{0} schreiben</translation>
         </message>
@@ -3021,16 +3080,8 @@ Ja lädt hoch und stellt den Eintrag in die Warteschlange; Nein lädt nichts hoc
             <translation>ein Dreieck über den ganzen Bereich −100 … 100 %, %1 s</translation>
         </message>
         <message>
-            <source>linearized (preview)</source>
-            <translation>linearisiert (Vorschau)</translation>
-        </message>
-        <message>
             <source>Gain %1, hysteresis %2 %, linearity error %3 %, dead band %4 %.</source>
             <translation>Verstärkung %1, Hysterese %2 %, Linearitätsfehler %3 %, Totzone %4 %.</translation>
-        </message>
-        <message>
-            <source>Linearization from the static characteristic</source>
-            <translation>Linearisierung aus der statischen Kennlinie</translation>
         </message>
         <message>
             <source>Triangle period:</source>
@@ -3041,8 +3092,24 @@ Ja lädt hoch und stellt den Eintrag in die Warteschlange; Nein lädt nichts hoc
             <translation>Statische Kennlinie messen</translation>
         </message>
         <message>
-            <source>Apply the proposed linearization</source>
-            <translation>Vorgeschlagene Linearisierung übernehmen</translation>
+            <source>No proposal: this link does not sample the setpoint chain (USB and the emulator do).</source>
+            <translation>Kein Vorschlag: Diese Verbindung tastet die Sollwertkette nicht ab (USB und der Emulator tun es).</translation>
+        </message>
+        <message>
+            <source>Dead band behind the gain/offset stage %1 … %2 %: offsets %3.</source>
+            <translation>Totband hinter der Verstärkungs-/Offsetstufe %1 … %2 %: Offsets %3.</translation>
+        </message>
+        <message>
+            <source>with the proposed offsets and linearization (preview)</source>
+            <translation>mit den vorgeschlagenen Offsets und der Linearisierung (Vorschau)</translation>
+        </message>
+        <message>
+            <source>Offsets and linearization from the static characteristic</source>
+            <translation>Offsets und Linearisierung aus der statischen Kennlinie</translation>
+        </message>
+        <message>
+            <source>Apply the proposed offsets and linearization</source>
+            <translation>Vorgeschlagene Offsets und Linearisierung übernehmen</translation>
         </message>
     </context>
     <context>
@@ -3402,6 +3469,10 @@ Stellen Sie sicher, dass die Hydraulik dafür sicher ist. Stopp beendet ihn jede
         <message>
             <source>Ready.</source>
             <translation>Bereit.</translation>
+        </message>
+        <message>
+            <source>Flow characteristic (E04)</source>
+            <translation>Durchflusskennlinie (E04)</translation>
         </message>
     </context>
     <context>

@@ -21,7 +21,6 @@ from PySide6.QtWidgets import (
 from prm9tool.analysis.model import Targets
 from prm9tool.analysis.pid import to_parameters
 from prm9tool.analysis.profile import DEFAULT
-from prm9tool.analysis.static import linearization_values, propose_linearization
 from prm9tool.characterize.autotune import (
     AutotuneResult,
     compare_steps,
@@ -32,17 +31,14 @@ from prm9tool.characterize.procedures import (
     LOOPS,
     BodeResult,
     CriticalGainResult,
-    StaticResult,
     StepResult,
     bode_test,
     critical_gain_tune,
-    static_test,
 )
 from prm9tool.characterize.run import Characterization
 from prm9tool.views.tuning_plot import COLOURS, Plot, Series, paint_plot
 from prm9tool.views.tuning_report import (
     bode_plots,
-    static_plot,
 )
 
 if TYPE_CHECKING:
@@ -291,71 +287,3 @@ class BodePage(Page):
         ):
             self.tr_label(key, text)  # fmt: skip
         self.run_button.setText(self.tr("Measure the frequency response"))
-
-
-class StaticPage(Page):
-    """A slow triangle; hysteresis, linearity, dead band, gain; linearization proposal."""
-
-    def __init__(self, window: TuningWindow) -> None:
-        super().__init__(window)
-        from prm9tool.views.tuning_window import spin
-
-        self.period = self.field("period", spin(20.0, 2.0, 600.0, "s"))
-        self.apply_button = QPushButton()
-        self.apply_button.setEnabled(False)
-        self.apply_button.clicked.connect(self.apply)
-        self.buttons.insertWidget(1, self.apply_button)
-        self.proposal: dict[str, int] = {}
-
-    def run(self) -> None:
-        """Triangle over the whole range."""
-        period = self.period.value()
-        what = self.tr("a triangle over the whole range −100 … 100 %, %1 s").replace(
-            "%1", f"{period:g}"
-        )
-        self.window_.start("static", what, lambda rig: static_test(rig, period))
-
-    def show_result(self, result: object) -> None:
-        """Figures, the curve, and the linearization previewed on it."""
-        assert isinstance(result, StaticResult)
-        c = result.characteristic
-        ch = result.record.channels
-        lin = propose_linearization(ch["setpoint_gain"] * 163.84, ch["setpoint_linearized"] * 163.84,
-                                    ch["position_actual"], result.demand)  # fmt: skip
-        self.proposal = linearization_values(lin)
-        fake = Characterization(None, DEFAULT, "", {}, static=result)  # type: ignore[arg-type]
-        plot = static_plot(fake)
-        order = np.argsort(ch["setpoint_linearized"])
-        new_out = np.interp(ch["setpoint_gain"] * 163.84, lin.xs, lin.ys) / 163.84
-        predicted = np.interp(
-            new_out, ch["setpoint_linearized"][order], ch["position_actual"][order]
-        )
-        step = max(1, len(predicted) // 400)
-        plot.series.append(
-            Series(
-                result.demand[::step],
-                predicted[::step],
-                self.tr("linearized (preview)"),
-                COLOURS[3],
-                True,
-            )
-        )
-        self.plot.show_plots([plot])
-        self.result.setText(self.tr("Gain %1, hysteresis %2 %, linearity error %3 %, dead band %4 %.").replace(
-            "%1", f"{c.gain:.3f}").replace("%2", f"{c.hysteresis_pct:.2f}").replace(
-            "%3", f"{c.linearity_pct:.2f}").replace("%4", f"{c.dead_band_pct:.1f}"))  # fmt: skip
-        self.apply_button.setEnabled(True)
-
-    def apply(self) -> None:
-        """The proposed 9 points into the document, one undo step."""
-        if self.proposal:
-            self.window_.accept_values(
-                self.proposal, self.tr("Linearization from the static characteristic")
-            )
-            self.apply_button.setEnabled(False)
-
-    def retranslate(self) -> None:
-        """Texts."""
-        self.tr_label("period", self.tr("Triangle period:"))
-        self.run_button.setText(self.tr("Measure the static characteristic"))
-        self.apply_button.setText(self.tr("Apply the proposed linearization"))
