@@ -267,6 +267,22 @@ Poslední akce možná nebyla dokončena. Uložte svou práci pod novým názvem
             <translation>žádný</translation>
         </message>
         <message>
+            <source>new on the bus: search again to identify it</source>
+            <translation>nový na sběrnici: pro rozpoznání hledejte znovu</translation>
+        </message>
+        <message>
+            <source>{0} (boot-up {1:.1f} s ago)</source>
+            <translation>{0} (boot-up před {1:.1f} s)</translation>
+        </message>
+        <message>
+            <source>silent for {0:.1f} s</source>
+            <translation>mlčí {0:.1f} s</translation>
+        </message>
+        <message>
+            <source>The bus cannot be watched: {0}</source>
+            <translation>Sběrnici nelze sledovat: {0}</translation>
+        </message>
+        <message>
             <source>Type key of the valve</source>
             <translation>Objednací kód ventilu</translation>
         </message>

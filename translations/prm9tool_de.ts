@@ -267,6 +267,22 @@ Die letzte Aktion wurde womöglich nicht vollständig ausgeführt. Speichern Sie
             <translation>keiner</translation>
         </message>
         <message>
+            <source>new on the bus: search again to identify it</source>
+            <translation>neu am Bus: erneut suchen, um ihn zu erkennen</translation>
+        </message>
+        <message>
+            <source>{0} (boot-up {1:.1f} s ago)</source>
+            <translation>{0} (Boot-up vor {1:.1f} s)</translation>
+        </message>
+        <message>
+            <source>silent for {0:.1f} s</source>
+            <translation>still seit {0:.1f} s</translation>
+        </message>
+        <message>
+            <source>The bus cannot be watched: {0}</source>
+            <translation>Der Bus kann nicht beobachtet werden: {0}</translation>
+        </message>
+        <message>
             <source>Type key of the valve</source>
             <translation>Typschlüssel des Ventils</translation>
         </message>

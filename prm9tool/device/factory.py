@@ -196,14 +196,10 @@ def _heard(seen: Any) -> tuple[str, float | None, str]:
     """NMT state, heartbeat age and last EMCY of a node as the bus told them."""
     import time
 
-    from prm9tool.device.canlink.status import emcy_text
+    from prm9tool.device.canlink.watch import heard
 
-    age = None if seen.heartbeat_at is None else time.monotonic() - seen.heartbeat_at
-    emcy = ""
-    if seen.emcy_code is not None:
-        meaning = emcy_text(seen.emcy_code) if seen.emcy_code else "errors cleared"
-        emcy = f"{seen.emcy_code:04X} {meaning}"
-    return seen.nmt_state, age, emcy
+    now = heard(seen, time.monotonic())
+    return now.nmt_state, now.heartbeat_age_s, now.last_emcy
 
 
 # --- emulated valves of this process ---------------------------------------------------------

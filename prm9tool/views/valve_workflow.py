@@ -89,13 +89,18 @@ class ValveWorkflow(QObject):
 
     def configure_can_bus(self) -> None:
         """Communication → CAN bus: choose the bus and a valve on it, then go online with it."""
+        from prm9tool.online.bus_monitor import BusMonitor
         from prm9tool.views.can_bus_dialog import CanBusDialog
 
         def scan(bus: dict[str, object], deliver: Callable[[ListedValves], None]) -> None:
             self._connection.list_devices_async((), deliver, bus)
 
-        dialog = CanBusDialog(scan, self._settings, self._window)
-        if dialog.exec() != QDialog.DialogCode.Accepted:
+        monitor = BusMonitor()
+        dialog = CanBusDialog(scan, self._settings, self._window, monitor)
+        accepted = dialog.exec() == QDialog.DialogCode.Accepted
+        monitor.stop()
+        monitor.deleteLater()
+        if not accepted:
             return
         device_id = dialog.selected_device_id()
         if device_id is not None and not self._connection.is_online:
