@@ -145,7 +145,10 @@ def test_the_node_table_is_live_while_the_dialog_is_open(qtbot, rig, settings):
     connection = ValveConnection(opener=lambda e: factory.open_session(e, can_link=rig.options))
     monitor = BusMonitor()
     dialog = CanBusDialog(
-        lambda bus, deliver: connection.list_devices_async((), deliver, bus), settings, None, monitor
+        lambda bus, deliver: connection.list_devices_async((), deliver, bus),
+        settings,
+        None,
+        monitor,
     )
     qtbot.addWidget(dialog)
     dialog.interface.setCurrentText("virtual")
@@ -154,7 +157,9 @@ def test_the_node_table_is_live_while_the_dialog_is_open(qtbot, rig, settings):
     try:
         rig.valve.write(0x1017, 0, 50)  # heartbeat every 50 ms
         dialog.search.click()
-        qtbot.waitUntil(lambda: dialog.table.rowCount() == 1 and dialog.search.isEnabled(), timeout=10000)
+        qtbot.waitUntil(
+            lambda: dialog.table.rowCount() == 1 and dialog.search.isEnabled(), timeout=10000
+        )
         assert dialog.table.item(0, 0).text() == "can:10"
         qtbot.waitUntil(lambda: dialog.table.item(0, 4).text() == "pre-operational", timeout=3000)
         other.send(can.Message(arbitration_id=0x705, data=[0x00], is_extended_id=False))  # boot-up
@@ -169,7 +174,9 @@ def test_the_node_table_is_live_while_the_dialog_is_open(qtbot, rig, settings):
         qtbot.waitUntil(lambda: dialog.table.item(1, 6).text().startswith("8100 "), timeout=3000)
         assert dialog.table.item(1, 4).text().startswith("pre-operational (boot-up ")
         assert dialog.table.item(1, 5).text().endswith(" s ago")
-        qtbot.waitUntil(lambda: dialog.table.item(1, 5).text().startswith("silent for"), timeout=4000)
+        qtbot.waitUntil(
+            lambda: dialog.table.item(1, 5).text().startswith("silent for"), timeout=4000
+        )
         assert dialog.table.item(0, 5).text().endswith(" s ago")  # the valve still beats
         dialog.table.selectRow(1)  # a node not identified: not selectable
         assert dialog.selected_device_id() is None
