@@ -82,6 +82,8 @@ class DeviceInfo:
     # parameters whose change moves the valve away from this link at its next power-up (over
     # CANopen its node ID and bit rate); the GUI warns when one is changed online
     link_parameters: tuple[str, ...] = ()
+    # over CAN: the bus (python-can interface, channel, bit rate in bit/s or None) it answers on
+    can_bus: tuple[str, str, int | None] | None = None
 
 
 @dataclass

@@ -359,7 +359,28 @@ class ValveConnection(QObject):
         self._cancel.clear()
         self._set_busy(+1)
         done = lambda: self._set_busy(-1)  # noqa: E731
-        self._jobs.put(_Job(name, run, lambda _r: done(), on_error=done))
+        self._jobs.put(_Job(name, self._noting_moves(run), lambda _r: done(), on_error=done))
+
+    def _noting_moves(self, run: Callable[[Any], object]) -> Callable[[Any], object]:
+        """``run``, after which a changed identity of the valve (a restart that moved it to
+        another node ID or bit rate, which the session followed) is announced on the GUI
+        thread as ``device_changed``."""
+
+        def work(session: Any) -> object:
+            before = getattr(session, "info", None)
+            try:
+                return run(session)
+            finally:
+                after = getattr(session, "info", None)
+                if after is not before and after is not None:
+                    self._post(lambda: self._on_identity_changed(after))
+
+        return work
+
+    def _on_identity_changed(self, info: object) -> None:
+        if self._online:
+            self._device = cast("ValveIdentity", info)
+            self.device_changed.emit(info)
 
     def _set_busy(self, delta: int) -> None:
         was = self.is_busy

@@ -63,6 +63,7 @@ class ValveWorkflow(QObject):
         self._settings = settings
         self.progress_dialog: QProgressDialog | None = None
         self._operation = ""
+        self._restarted_from = ""  # device ID before the restart (a restart may move it)
         self._upload_repeats = False  # the running upload sends what the valve holds already
         self._pending_upload: dict[str, Raw] = {}
         self._uploading: dict[str, Raw] = {}  # the values of the running upload
@@ -384,6 +385,8 @@ class ValveWorkflow(QObject):
         dialog = RestartDialog(self._window)
         if dialog.exec() != QDialog.DialogCode.Accepted:
             return
+        device = self._connection.device
+        self._restarted_from = device.device_id if device is not None else ""
         self._start("restart", self.tr("Restarting the valve…"), cancellable=False)
         self._connection.run_job(AFTER_RESTART, _restart_and_read)
 
@@ -397,7 +400,7 @@ class ValveWorkflow(QObject):
         elif name == "restore_factory" and isinstance(result, _FactoryReset):
             self._on_factory_reset(result)
         elif name == AFTER_RESTART and isinstance(result, Mapping):
-            self.message_posted.emit(self.tr("The valve restarted"))
+            self._report_restart()
             self._sync.stop()
             self._on_compare_finished(result)
         elif name == "upload":
@@ -405,6 +408,25 @@ class ValveWorkflow(QObject):
         elif name == "store":
             self._sync.unstored = False
             self.message_posted.emit(self.tr("The valve stored its parameters"))
+
+    def _report_restart(self) -> None:
+        """Say that the valve restarted — and where, when a changed node ID or bit rate moved
+        it and the session followed (the CAN bus dialog then remembers the new bit rate)."""
+        device = self._connection.device
+        if device is None or device.device_id == self._restarted_from:
+            self.message_posted.emit(self.tr("The valve restarted"))
+            return
+        bus = getattr(device, "can_bus", None)
+        if bus is not None and bus[2]:
+            from prm9tool.views.can_bus_dialog import BITRATE_KEY
+
+            self._settings.setValue(BITRATE_KEY, bus[2])
+        rate = self.tr("{0} kbit/s").format(bus[2] // 1000) if bus and bus[2] else ""
+        self.message_posted.emit(
+            self.tr("The valve restarted at {0} {1}; prm9tool found it there").format(
+                device.device_id, rate
+            )
+        )
 
     def _on_factory_reset(self, result: _FactoryReset) -> None:
         self.take_valve_values(result.values, self.tr("Factory values of the valve"))

@@ -19,14 +19,13 @@ backup and the GUI's going online read them all): docs/can-link.md, docs/PERFORM
 from __future__ import annotations
 
 import threading
-import time
 from collections.abc import Callable, Mapping, Sequence
 
 import numpy as np
 
 from prm9tool.catalogue import LOAD_SIGNATURE, SAVE_SIGNATURE, Parameter
 from prm9tool.device.canlink import bus as canbus
-from prm9tool.device.canlink import discovery
+from prm9tool.device.canlink import discovery, relocate
 from prm9tool.device.canlink.pdo_scope import NotPdoMappedError, PdoSampler
 from prm9tool.device.canlink.sampler import SdoSampler
 from prm9tool.device.canlink.sdo import MISSING, SdoChannel
@@ -126,7 +125,16 @@ class CanopenSession(ValveSession):
             from prm9tool.paths import user_data_dir
 
             key = resolve(found.serial, found.derived, self._type_key_hint, user_data_dir())
-        return DeviceInfo(key, found.serial, found.firmware, 0, self._device_id, LINK_PARAMETERS)
+        bus = self.options
+        return DeviceInfo(
+            key,
+            found.serial,
+            found.firmware,
+            0,
+            self._device_id,
+            LINK_PARAMETERS,
+            (bus.interface, bus.channel, bus.bitrate),
+        )
 
     def upload(
         self,
@@ -241,25 +249,50 @@ class CanopenSession(ValveSession):
         self._sdo.download(0x1011, 1, LOAD_SIGNATURE.to_bytes(4, "little"), STORE_TIMEOUT_S)
 
     def restart(self) -> None:
-        """NMT reset node, then wait for the boot-up and identify again (hydraulics off)."""
+        """NMT reset node, then find the valve again — at its old node, or where a changed node
+        ID or bit rate puts it (prm9tool.device.canlink.relocate) — and identify it (hydraulics
+        off). ValveMovedError says where it is when the session cannot follow."""
         self._stop_sampler()
+        after = relocate.predict(self)
         self._known.clear()  # the valve comes back with its stored set
-        seen = self._shared.node_seen(self.node_id)
-        boot_ups = seen.boot_ups
+        nodes = [self.node_id, *([after.node_id] if after and after.node_id else [])]
+        boot_ups = {n: self._shared.node_seen(n).boot_ups for n in nodes}  # the old one first
+        old = self.node_id
         self._sdo.node.nmt.send_command(NMT_RESET_NODE)
-        deadline = time.monotonic() + BOOT_TIMEOUT_S
-        while seen.boot_ups == boot_ups:
-            if time.monotonic() > deadline:
-                raise DeviceTimeoutError(
-                    f"node {self.node_id}: no boot-up within {BOOT_TIMEOUT_S:g} s after the "
-                    "reset; is the valve powered and its node ID unchanged?"
-                )
-            time.sleep(0.02)
+        if relocate.bitrate_moves(self.options, after):
+            assert after is not None and after.node_id is not None
+            reason = relocate.why_not_follow(self.options, self._shared.users)
+            if reason:
+                raise relocate.moved_error(self.options, after, reason)
+            bus = canbus.CanOptions(self.options.interface, self.options.channel, after.bitrate)
+            self._rebind(after.node_id, bus)
+            relocate.await_answer(self._sdo, old, after, BOOT_TIMEOUT_S)
+        else:
+            booted = relocate.await_boot_up(self._shared, boot_ups, after, BOOT_TIMEOUT_S)
+            self._rebind(booted, self.options)
         info = self.identify()
         if info.serial != self.info.serial:
             raise ProtocolError(
                 f"node {self.node_id} came back as serial {info.serial}, not {self.info.serial}"
             )
+        if self.node_id != old or info != self.info:
+            self.info = info
+
+    def _rebind(self, node_id: int, options: canbus.CanOptions) -> None:
+        """This session now talks to ``node_id`` on the bus ``options``."""
+        if node_id == self.node_id and options == self.options:
+            return
+        timeout_s = self._sdo.timeout_s
+        network = self._shared.network
+        with self._shared.lock:
+            if network.nodes.get(self.node_id) is self._sdo.node:
+                del network[self.node_id]
+        if options != self.options:
+            shared = canbus.acquire(options)
+            canbus.release(self._shared)
+            self._shared = shared
+        self.node_id, self._device_id = node_id, f"can:{node_id}"
+        self._sdo = self._open_node(timeout_s)
 
     def status(self) -> ValveStatus:
         """State 0x6041, error register 0x1001, errors, LEDs derived from them, NMT state."""
