@@ -243,6 +243,7 @@ def open_session(
     link_paced: bool | None = None,
     type_key: str | None = None,
     can_link: CanOptions | None = None,
+    label_key: str | None = None,
 ) -> ValveSession:
     """Open a session to ``entry`` (a DeviceEntry or its ``device_id``).
 
@@ -254,7 +255,8 @@ def open_session(
     for a session that is already open.
     ``can:NODE`` opens a CANopen session to that node on the bus ``can_link`` (default:
     ``can``, else the virtual bus); ``type_key`` is the key to use when the valve does not tell
-    its own.
+    its own (a file's), ``label_key`` the key the user gave for it (``--type-key``, the GUI's
+    question), remembered for its serial number.
     """
     device_id = entry.device_id if isinstance(entry, DeviceEntry) else entry
     kind, _, rest = device_id.partition(":")
@@ -267,7 +269,8 @@ def open_session(
     if kind == CAN and rest.isdigit():
         from prm9tool.device.canlink.session import CanopenSession
 
-        return CanopenSession(can_link or can or CanOptions(), int(rest), type_key=type_key)
+        options = can_link or can or CanOptions()
+        return CanopenSession(options, int(rest), type_key=type_key, label_key=label_key)
     raise Prm9Error(f"unknown device {device_id!r}: expected 'usb:…', 'emulator:…' or 'can:NODE'")
 
 

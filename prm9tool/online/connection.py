@@ -75,6 +75,8 @@ class ValveConnection(QObject):
     backup_written = Signal(str)  # path of the backup taken before the first upload
     samples_lost_changed = Signal(int)  # samples the oscilloscope stream lost since it started
     history_problem = Signal(str)  # a record went to the local queue, or was lost (why)
+    # a CANopen valve without 0x2041 whose type key is not known: (device ID, serial, "E02"/"E04")
+    type_key_needed = Signal(str, int, str)
     _posted = Signal(object)  # a callable the GUI thread runs (results of the worker)
 
     def __init__(
@@ -503,8 +505,16 @@ class ValveConnection(QObject):
             self.failed.emit(message)
 
     def _open(self, entry: object) -> object:
+        from prm9tool.device.canlink.typekeys import TypeKeyNeededError
+
         self._cancel.clear()
-        self._session = self._opener(entry)
+        try:
+            self._session = self._opener(entry)
+        except TypeKeyNeededError as exc:  # the GUI asks for the key on the label, then again
+            device_id, serial = str(getattr(entry, "device_id", entry)), exc.serial
+            told = exc.derived.config.value
+            self._post(lambda: self.type_key_needed.emit(device_id, serial, told))
+            raise
         info = self._session.identify()
         self._poller.reset(info)
         if self._after_open is not None:

@@ -14,7 +14,7 @@ from __future__ import annotations
 
 from collections.abc import Callable
 
-from PySide6.QtCore import QSettings, Qt
+from PySide6.QtCore import QCoreApplication, QSettings, Qt
 from PySide6.QtGui import QBrush, QPalette
 from PySide6.QtWidgets import (
     QAbstractItemView,
@@ -286,28 +286,37 @@ class CanBusDialog(QDialog):
     def _ask_type_key(self, entry: ValveListing) -> bool:
         """A real valve does not tell its type key (docs/can-link.md): ask for the one on its
         label, check it against what its objects tell, remember it for its serial number."""
-        serial = entry.serial
         told = "E04" if "E04" in entry.type_key else "E02"
-        text, ok = QInputDialog.getText(
-            self,
-            self.tr("Type key of the valve"),
-            self.tr(
-                "The valve (serial number {0}) does not tell its type key; its objects say "
-                "{1} -CA. Type key on the valve's label:"
-            ).format(serial, told),
-            text=f"PRM9-06.3Z11/30-24{told}S02-CA",
+        key, problem = ask_type_key(self, entry.serial, told)
+        if problem:
+            self.state.setText(problem)
+        return key is not None
+
+
+def ask_type_key(parent: QWidget | None, serial: int, told: str) -> tuple[str | None, str]:
+    """Ask for the type key on the label of valve ``serial``, whose objects say ``told`` (E02,
+    E04) -CA; a fitting key is remembered for the serial number. Returns (key, "") — or (None,
+    why the answer does not fit), (None, "") when the user cancelled."""
+    text, ok = QInputDialog.getText(
+        parent,
+        QCoreApplication.translate("CanBusDialog", "Type key of the valve"),
+        QCoreApplication.translate(
+            "CanBusDialog",
+            "The valve (serial number {0}) does not tell its type key; its objects say "
+            "{1} -CA. Type key on the valve's label:",
+        ).format(serial, told),
+        text=f"PRM9-06.3Z11/30-24{told}S02-CA",
+    )
+    if not ok:
+        return None, ""
+    try:
+        key = TypeKey.parse(text)
+    except TypeKeyError as exc:
+        return None, error_text(exc)
+    if key.config.value != told or not key.canopen:
+        problem = QCoreApplication.translate(
+            "CanBusDialog", "{0} does not fit the valve: its objects say {1} -CA."
         )
-        if not ok:
-            return False
-        try:
-            key = TypeKey.parse(text)
-        except TypeKeyError as exc:
-            self.state.setText(error_text(exc))
-            return False
-        if key.config.value != told or not key.canopen:
-            self.state.setText(
-                self.tr("{0} does not fit the valve: its objects say {1} -CA.").format(key, told)
-            )
-            return False
-        remember(user_data_dir(), serial, str(key))
-        return True
+        return None, problem.format(key, told)
+    remember(user_data_dir(), serial, str(key))
+    return str(key), ""

@@ -11,7 +11,7 @@ from collections.abc import Callable, Mapping
 from dataclasses import dataclass
 from typing import Any
 
-from PySide6.QtCore import QObject, QSettings, Qt, QTime, Signal
+from PySide6.QtCore import QObject, QSettings, Qt, QTime, QTimer, Signal
 from PySide6.QtWidgets import QDialog, QProgressDialog, QWidget
 
 from prm9tool.catalogue import CATALOGUE, Access, variant_label
@@ -74,6 +74,7 @@ class ValveWorkflow(QObject):
         connection.progress.connect(self._on_connection_progress)
         connection.failed.connect(self._on_connection_failed)
         connection.lost.connect(self._on_connection_lost)
+        connection.type_key_needed.connect(self._on_type_key_needed)
         connection.live_values_changed.connect(doc.set_live)
         connection.write_failed.connect(sync.forget)
         connection.backup_written.connect(self._on_connection_backup_written)
@@ -141,6 +142,29 @@ class ValveWorkflow(QObject):
         entry = self.chosen_entry(entries)
         if entry is not None:
             self._connect(entry)
+
+    def _on_type_key_needed(self, device_id: str, serial: int, told: str) -> None:
+        """Going online with a CANopen valve that does not tell its type key (``--device
+        can:N``): ask for the key on its label (until it fits or the user cancels), remember
+        it for the serial number and go online again."""
+        from prm9tool.views.can_bus_dialog import ask_type_key
+
+        while True:
+            key, problem = ask_type_key(self._window, serial, told)
+            if not problem:
+                break
+            self.message_posted.emit(problem)
+        if key is not None:
+            self._connect_when_idle(device_id)
+
+    def _connect_when_idle(self, device_id: str) -> None:
+        """Go online once the failed attempt has finished (its end is still queued)."""
+        if self._connection.is_online:
+            return
+        if self._connection.is_busy:
+            QTimer.singleShot(50, lambda: self._connect_when_idle(device_id))
+            return
+        self._connect(device_id)
 
     def _connect(self, entry: ValveListing | str) -> None:
         self.message_posted.emit(self.tr("Connecting to {0}…").format(_name(entry)))

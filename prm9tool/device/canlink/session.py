@@ -67,14 +67,18 @@ class CanopenSession(ValveSession):
         type_key: str | None = None,
         on_close: Callable[[], None] | None = None,
         timeout_s: float = SDO_TIMEOUT_S,
+        label_key: str | None = None,
     ) -> None:
-        """``type_key``: the key to use when the valve has no 0x2041 (the batch file's, the
-        user's answer); it is checked against what the object dictionary tells."""
+        """``type_key``: the key to use when the valve has no 0x2041 (the batch file's); it is
+        checked against what the object dictionary tells. ``label_key``: the key the user read
+        from the valve's label (``--type-key``): it goes first, is checked the same way and is
+        remembered for the valve's serial number."""
         if not 1 <= node_id <= 127:
             raise Prm9Error(f"CANopen node IDs are 1…127, not {node_id}")
         super().__init__(f"can:{node_id}", on_close)
         self.node_id = node_id
         self._type_key_hint = type_key
+        self._label_key = label_key
         self.key_given = False  # True: the type key was given, the valve has no 0x2041
         self._shared = canbus.acquire(options)
         self._closed = False
@@ -124,7 +128,10 @@ class CanopenSession(ValveSession):
             assert found.derived is not None
             from prm9tool.paths import user_data_dir
 
-            key = resolve(found.serial, found.derived, self._type_key_hint, user_data_dir())
+            hint = self._label_key or self._type_key_hint
+            key = resolve(found.serial, found.derived, hint, user_data_dir())
+            if self._label_key:
+                remember(user_data_dir(), found.serial, key)
         bus = self.options
         return DeviceInfo(
             key,
