@@ -14,6 +14,14 @@ going to write (a snapshot) and, after a failed upload, writes them back: the va
 on with the values it had, its stored set untouched, and nothing moves. The snapshot costs one
 SDO read per parameter, except for the values this session read or wrote last (the batch's
 backup and the GUI's going online read them all): docs/can-link.md, docs/PERFORMANCE.md.
+
+**Decision (fewer frames, the same guarantees).** An upload does not send a value the snapshot
+shows the valve holding already (the verify step reads every value back all the same, and one
+that reads back otherwise is written and verified after all); and it makes sure of the store
+not by reading every value once more but by watching for the node's boot-up frame — which a
+node sends whenever it restarts (CiA 301) — from before the first write until the store's
+acknowledgement, plus one read-back of a value the upload changed. A valve that restarted
+before the store stored its old set, and said so on the bus.
 """
 
 from __future__ import annotations
@@ -31,9 +39,14 @@ from prm9tool.device.canlink.sampler import SdoSampler
 from prm9tool.device.canlink.sdo import MISSING, SdoChannel
 from prm9tool.device.canlink.status import read_status
 from prm9tool.device.canlink.typekeys import remember, resolve
+from prm9tool.device.canlink.upload_steps import UploadSteps
 from prm9tool.device.emulator.states import ValveStatus
 from prm9tool.device.entries import Progress, RefusedError, Steps, Value, check_cancel
-from prm9tool.device.session import DeviceInfo, UploadResult, ValveSession
+from prm9tool.device.session import (
+    DeviceInfo,
+    UploadResult,
+    ValveSession,
+)
 from prm9tool.device.setpoint import SetpointLink
 from prm9tool.errors import (
     AccessDeniedError,
@@ -56,7 +69,7 @@ class NotAPrm9Error(AccessDeniedError):
     """The node is some other CANopen device: prm9tool does not write to it."""
 
 
-class CanopenSession(ValveSession):
+class CanopenSession(UploadSteps, ValveSession):
     """One PRM9 -CA valve as a node on a CAN bus, the tool its CANopen master."""
 
     def __init__(
@@ -200,9 +213,12 @@ class CanopenSession(ValveSession):
         cancel: threading.Event | None,
     ) -> int:
         done = 0
+        holds = self._snapshot or {}  # during an upload: what the valve holds already
         for param in params:
             check_cancel(cancel, "write")
-            if param.mnemonic not in self.unavailable:
+            if holds.get(param.mnemonic, holds) == values[param.mnemonic]:
+                done += 1  # the valve holds it: not sent (the verify step reads it back)
+            elif param.mnemonic not in self.unavailable:
                 data = param.dtype.encode(values[param.mnemonic])
                 try:
                     self._known.pop(param.mnemonic, None)  # unknown if the answer is lost
@@ -218,38 +234,11 @@ class CanopenSession(ValveSession):
                 steps.advance(1)
         return done
 
-    def _before_upload(self, params: Sequence[Parameter], cancel: threading.Event | None) -> None:
-        """The snapshot that :meth:`reload` writes back after a failed upload: the working
-        values this session read or wrote last (a download before the upload, the backup, going
-        online), the others read now."""
-        self._snapshot, self._touched = {}, []
-        unknown = [p for p in params if p.mnemonic not in self._known]
-        read = self._read_entries(unknown, None, cancel)
-        known = {p.mnemonic: self._known[p.mnemonic] for p in params if p.mnemonic in self._known}
-        fresh = {m: v for m, v in read.items() if not isinstance(v, SdoAbortError)}
-        self._snapshot = known | fresh
-
     # --- commands ---------------------------------------------------------------------------
     def store(self) -> None:
         """0x1010/1 = "save": the working parameters become the stored ones."""
         self._sdo.download(0x1010, 1, SAVE_SIGNATURE.to_bytes(4, "little"), STORE_TIMEOUT_S)
         self._snapshot = None  # stored: nothing to put back any more
-
-    def reload(self) -> None:
-        """Working values ← those read before the upload, for the parameters it wrote (see
-        the module's decision); the stored set was never touched."""
-        if self._snapshot is None:
-            raise Prm9Error(
-                "over CANopen the stored parameters come back only with a restart (NMT reset node)"
-            )
-        touched = set(self._touched)
-        snapshot = {m: v for m, v in self._snapshot.items() if m in touched}
-        self._snapshot, self._touched = None, []
-        params = [self._param(m) for m in snapshot]
-        try:
-            self._write_entries(params, snapshot, None, None)
-        except RefusedError as refused:
-            raise refused.error from None
 
     def restore_factory(self) -> None:
         """0x1011/1 = "load": factory values at the next reset or power-up."""
