@@ -6,6 +6,7 @@ from __future__ import annotations
 import json
 import sys
 
+import numpy as np
 import pytest
 from pypdf import PdfReader
 from usb_fakes import FakeHid
@@ -114,3 +115,23 @@ def test_characterize_over_canopen_at_the_links_rate(can_valve, tmp_path, capsys
         assert f"Limited by the link sweep limited to {rate / 10:g} Hz" in text
     assert code in (ExitCode.OK, ExitCode.OUT_OF_LIMITS), err
     assert can_valve.working("SETPOVRON") == 0  # the override is off again
+
+
+def test_the_tuning_windows_rig_over_canopen(can_valve):
+    from prm9tool.analysis.model import Targets
+    from prm9tool.characterize.autotune import model_tune
+    from prm9tool.characterize.canrig import CanRig, rig_for_session
+    from prm9tool.characterize.procedures import step_test
+    from prm9tool.device.canlink.session import CanopenSession
+    from prm9tool.errors import Prm9Error
+
+    with CanopenSession(can_valve.options, 10) as session:
+        rig = rig_for_session(session, "USB")  # what the Tuning window's runner does online
+        assert isinstance(rig, CanRig) and rig.info.link.startswith("CANopen node 10")
+        step = step_test(rig, 25.0, duration_s=0.1)
+        assert step.figures is not None and step.figures.final == pytest.approx(25.0, abs=2.0)
+        assert np.isnan(step.record.channels["controller_output"]).all()  # no object: no data
+        with pytest.raises(Prm9Error, match="needs the controller's output"):
+            model_tune(rig, Targets(10.0, 0.04))
+    assert can_valve.working("SETPOVRON") == 0
+    assert can_valve.working("POSKP") == CATALOGUE["POSKP"].default

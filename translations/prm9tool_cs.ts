@@ -3241,6 +3241,10 @@ Ano načte a záznam zařadí do fronty; Ne nenačte nic.</translation>
             <translation>pásmo necitlivosti</translation>
         </message>
         <message>
+            <source>flow characteristic: %1</source>
+            <translation>průtoková charakteristika: %1</translation>
+        </message>
+        <message>
             <source>step %1 %: %2</source>
             <translation>skok %1 %: %2</translation>
         </message>
@@ -3319,6 +3323,22 @@ Ano načte a záznam zařadí do fronty; Ne nenačte nic.</translation>
         <message>
             <source>best line</source>
             <translation>proložená přímka</translation>
+        </message>
+        <message>
+            <source>Flow characteristic</source>
+            <translation>Průtoková charakteristika</translation>
+        </message>
+        <message>
+            <source>spool opening [%]</source>
+            <translation>otevření šoupátka [%]</translation>
+        </message>
+        <message>
+            <source>actuator velocity [%/s]</source>
+            <translation>rychlost pohonu [%/s]</translation>
+        </message>
+        <message>
+            <source>measured</source>
+            <translation>změřeno</translation>
         </message>
         <message>
             <source>Type key</source>

@@ -3232,6 +3232,10 @@ Ja lädt hoch und stellt den Eintrag in die Warteschlange; Nein lädt nichts hoc
             <translation>Totzone</translation>
         </message>
         <message>
+            <source>flow characteristic: %1</source>
+            <translation>Durchflusskennlinie: %1</translation>
+        </message>
+        <message>
             <source>step %1 %: %2</source>
             <translation>Sprung %1 %: %2</translation>
         </message>
@@ -3310,6 +3314,22 @@ Ja lädt hoch und stellt den Eintrag in die Warteschlange; Nein lädt nichts hoc
         <message>
             <source>best line</source>
             <translation>Ausgleichsgerade</translation>
+        </message>
+        <message>
+            <source>Flow characteristic</source>
+            <translation>Durchflusskennlinie</translation>
+        </message>
+        <message>
+            <source>spool opening [%]</source>
+            <translation>Schieberöffnung [%]</translation>
+        </message>
+        <message>
+            <source>actuator velocity [%/s]</source>
+            <translation>Geschwindigkeit des Antriebs [%/s]</translation>
+        </message>
+        <message>
+            <source>measured</source>
+            <translation>gemessen</translation>
         </message>
         <message>
             <source>Type key</source>
