@@ -46,11 +46,20 @@ def plan_from(args: argparse.Namespace, spools_problem: Prm9Error | None = None)
 
 
 def _emulator_spec(spec: str) -> str:
-    """``TYPEKEY[:SERIAL]`` with the defaults filled in."""
+    """``TYPEKEY[:SERIAL]`` with the defaults filled in: without a serial the first one from
+    1001 on that is free for this type (``factory.free_emulator_serial``)."""
+    from prm9tool.device.factory import free_emulator_serial
+    from prm9tool.errors import TypeKeyError
     from prm9tool.views.hid_dialog import DEFAULT_EMULATOR_SERIAL, DEFAULT_EMULATOR_TYPE_KEY
 
     key, _, serial = (spec or DEFAULT_EMULATOR_TYPE_KEY).partition(":")
-    return f"{key or DEFAULT_EMULATOR_TYPE_KEY}:{serial or DEFAULT_EMULATOR_SERIAL}"
+    key = key or DEFAULT_EMULATOR_TYPE_KEY
+    if not serial:
+        try:
+            serial = str(free_emulator_serial(key, DEFAULT_EMULATOR_SERIAL))
+        except TypeKeyError:  # a bad type key: reported where the spec is opened
+            serial = str(DEFAULT_EMULATOR_SERIAL)
+    return f"{key}:{serial}"
 
 
 def create_application(argv: list[str] | None = None) -> QApplication:
@@ -142,7 +151,12 @@ def _start_emulated(window: MainWindow, specs: list[str]) -> None:
     from prm9tool.errors import TypeKeyError
     from prm9tool.translate import error_text
     from prm9tool.views import prompts
-    from prm9tool.views.hid_dialog import EMULATORS_KEY, SELECTED_KEY, saved_emulators
+    from prm9tool.views.hid_dialog import (
+        EMULATORS_KEY,
+        SELECTED_KEY,
+        one_per_serial,
+        saved_emulators,
+    )
 
     try:
         normal = [_normal_spec(spec) for spec in specs]
@@ -150,7 +164,7 @@ def _start_emulated(window: MainWindow, specs: list[str]) -> None:
         prompts.inform(window, prompts.Icon.Warning, "--emulator", error_text(exc))
         return
     known = saved_emulators(window.settings)
-    window.settings.setValue(EMULATORS_KEY, known + [s for s in normal if s not in known])
+    window.settings.setValue(EMULATORS_KEY, one_per_serial(known + normal))
     device_id = f"emulator:{normal[0]}"
     window.settings.setValue(SELECTED_KEY, device_id)
     window.valve.go_online(device_id)

@@ -40,6 +40,19 @@ def test_plan_fills_in_the_emulator_defaults():
     assert app.plan_from(_args()).emulators == [] and app.plan_from(_args()).file is None
 
 
+def test_an_emulator_of_another_type_does_not_take_the_serial_of_a_stored_valve():
+    """README first line (E02-CA, serial 1001, stored), then ``--emulator`` of an E04-CA: it
+    used to fail on 1001's image ("the image belongs to a …E02S02-CA valve")."""
+    e02 = "PRM9-06.3Z11/30-24E02S02-CA"
+    with factory.open_session(f"emulator:{e02}:1001", paced=False) as session:
+        session.store()
+    factory.forget_emulated_valves()  # the first program has ended
+    assert app.plan_from(_args("--emulator", E04_CA)).emulators == [f"{E04_CA}:1002"]
+    assert app.plan_from(_args("--emulator")).emulators == [f"{e02}:1001"]  # its values again
+    with factory.open_session(f"emulator:{E04_CA}:1002", paced=False) as session:
+        assert session.read("PCODE") == E04_CA
+
+
 def test_a_file_on_the_command_line_is_opened(qtbot, tmp_path, answers):
     path = tmp_path / "valve.prm"
     prmfile.write_file(prmfile.PrmContents.factory(TypeKey.parse(E04_CA)), path)

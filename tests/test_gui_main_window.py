@@ -343,6 +343,26 @@ def test_emulated_valve_dialog_builds_type_key_and_serial(window):
     assert dialog.spec() == f"{E04_CA}:4711"
 
 
+def test_hid_dialog_lists_valves_despite_two_saved_emulators_with_one_serial(qtbot, window):
+    """Settings of an earlier version held both; every listing failed ("two emulated valves
+    with serial 1001") and left no row to remove. One serial is one valve: the later counts."""
+    from prm9tool.views.hid_dialog import EMULATORS_KEY, HidConfigurationDialog, saved_emulators
+
+    e02_ca = "PRM9-06.3Z11/30-24E02S02-CA"
+    window.settings.setValue(EMULATORS_KEY, [f"{e02_ca}:1001", f"{E04_CA}:1001", f"{E02}:79"])
+    assert saved_emulators(window.settings) == [f"{E04_CA}:1001", f"{E02}:79"]
+    dialog = HidConfigurationDialog(window.connection.list_devices_async, window.settings, window)
+    qtbot.waitUntil(lambda: not dialog.listing)
+    assert "failed" not in dialog.info.text()
+    assert [dialog.table.item(r, 2).text() for r in range(dialog.table.rowCount())] == [
+        "1001",
+        "79",
+    ]
+    dialog.add_emulator(f"{e02_ca}:79")  # the same serial again: it replaces that valve
+    qtbot.waitUntil(lambda: not dialog.listing)
+    assert saved_emulators(window.settings) == [f"{E04_CA}:1001", f"{e02_ca}:79"]
+
+
 def test_hid_dialog_removes_an_emulated_valve(qtbot, window):
     from prm9tool.views.hid_dialog import HidConfigurationDialog, saved_emulators
 

@@ -49,6 +49,8 @@ def test_every_object_is_read_and_missing_ones_are_named(qtbot, online):
     assert shown[("0x1018", "4")] == f"0x{rig.valve.serial:X}"
     assert shown[("0x1000", "0")] == "0x198"
     assert "not available over CANopen on this valve" in shown[("0x2020", "1")]
+    assert shown[("0x1003", "0")] == "0"
+    assert shown[("0x1003", "1")] == "— (no entry)"  # was "The valve refused the access."
     assert "writing needs the Expert level" in dialog.note.text()
 
 

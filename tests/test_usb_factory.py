@@ -63,6 +63,14 @@ def test_specs_without_serial_get_the_lowest_free_ones():
         factory.list_devices([f"{E02}:4", f"{E02}:4"])
 
 
+def test_a_serial_whose_image_is_of_another_type_is_not_given_to_a_spec_without_serial():
+    with factory.open_session(f"emulator:{E02}:1", paced=False) as session:
+        session.store()  # a valve of an earlier run left its EEPROM image
+    factory.forget_emulated_valves()
+    entries = factory.list_devices([E04CA, E02])
+    assert [(e.type_key, e.serial) for e in entries] == [(E04CA, 2), (E02, 1)]
+
+
 def test_one_serial_is_one_valve_of_one_type():
     factory.list_devices([f"{E02}:5"])
     with pytest.raises(Prm9Error, match=re.escape(f"emulated valve 5 is a {E02}")):

@@ -66,10 +66,6 @@ Poslední akce možná nebyla dokončena. Uložte svou práci pod novým názvem
             <translation>Kritické zesílení Kkr = %1, perioda Tkr = %2 ms: K = 0.5·Kkr, Ti = 0.8·Tkr, Td = 0.12·Tkr.</translation>
         </message>
         <message>
-            <source>Proposed, simulated on the emulator's firmware: %1.</source>
-            <translation>Návrh simulovaný na firmwaru emulátoru: %1.</translation>
-        </message>
-        <message>
             <source>before (measured)</source>
             <translation>před (změřeno)</translation>
         </message>
@@ -140,6 +136,10 @@ Poslední akce možná nebyla dokončena. Uložte svou práci pod novým názvem
         <message>
             <source>Accept the proposed gains</source>
             <translation>Převzít navržené konstanty</translation>
+        </message>
+        <message>
+            <source>Proposed, simulated on the emulator's firmware: %1.</source>
+            <translation>Návrh simulovaný na firmwaru emulátoru: %1.</translation>
         </message>
     </context>
     <context>
@@ -2283,6 +2283,10 @@ Ano načte a záznam zařadí do fronty; Ne nenačte nic.</translation>
             <translation>Jen čtení: zápis vyžaduje expertní úroveň.</translation>
         </message>
         <message>
+            <source>— (no entry)</source>
+            <translation>— (žádný záznam)</translation>
+        </message>
+        <message>
             <source>Write {0}</source>
             <translation>Zapsat {0}</translation>
         </message>
@@ -3069,6 +3073,14 @@ Ano načte a záznam zařadí do fronty; Ne nenačte nic.</translation>
             <translation>Zesílení %1, hystereze %2 %, chyba linearity %3 %, pásmo necitlivosti %4 %.</translation>
         </message>
         <message>
+            <source>Triangle period:</source>
+            <translation>Perioda trojúhelníku:</translation>
+        </message>
+        <message>
+            <source>Measure the static characteristic</source>
+            <translation>Změřit statickou charakteristiku</translation>
+        </message>
+        <message>
             <source>No proposal: this link does not sample the setpoint chain (USB and the emulator do).</source>
             <translation>Žádný návrh: toto spojení nevzorkuje řetězec řídicího signálu (USB a emulátor ano).</translation>
         </message>
@@ -3083,14 +3095,6 @@ Ano načte a záznam zařadí do fronty; Ne nenačte nic.</translation>
         <message>
             <source>Offsets and linearization from the static characteristic</source>
             <translation>Posunutí nuly a linearizace ze statické charakteristiky</translation>
-        </message>
-        <message>
-            <source>Triangle period:</source>
-            <translation>Perioda trojúhelníku:</translation>
-        </message>
-        <message>
-            <source>Measure the static characteristic</source>
-            <translation>Změřit statickou charakteristiku</translation>
         </message>
         <message>
             <source>Apply the proposed offsets and linearization</source>
@@ -3369,10 +3373,6 @@ Ano načte a záznam zařadí do fronty; Ne nenačte nic.</translation>
             <translation>Výsledek</translation>
         </message>
         <message>
-            <source>Limited by the link</source>
-            <translation>Omezeno spojením</translation>
-        </message>
-        <message>
             <source>PRM9 test report</source>
             <translation>Protokol o zkoušce PRM9</translation>
         </message>
@@ -3391,6 +3391,10 @@ Ano načte a záznam zařadí do fronty; Ne nenačte nic.</translation>
         <message>
             <source>Parameter set (raw values)</source>
             <translation>Sada parametrů (surové hodnoty)</translation>
+        </message>
+        <message>
+            <source>Limited by the link</source>
+            <translation>Omezeno spojením</translation>
         </message>
     </context>
     <context>
@@ -3472,12 +3476,12 @@ Zajistěte, aby to hydraulika bezpečně snesla. Tlačítko Stop test kdykoli uk
             <translation>Protokol o zkoušce</translation>
         </message>
         <message>
-            <source>Flow characteristic (E04)</source>
-            <translation>Průtoková charakteristika (E04)</translation>
-        </message>
-        <message>
             <source>Ready.</source>
             <translation>Připraveno.</translation>
+        </message>
+        <message>
+            <source>Flow characteristic (E04)</source>
+            <translation>Průtoková charakteristika (E04)</translation>
         </message>
     </context>
     <context>

@@ -66,10 +66,6 @@ Die letzte Aktion wurde womöglich nicht vollständig ausgeführt. Speichern Sie
             <translation>Kritische Verstärkung Kkr = %1, Periode Tkr = %2 ms: K = 0.5·Kkr, Ti = 0.8·Tkr, Td = 0.12·Tkr.</translation>
         </message>
         <message>
-            <source>Proposed, simulated on the emulator's firmware: %1.</source>
-            <translation>Vorschlag, simuliert auf der Firmware des Emulators: %1.</translation>
-        </message>
-        <message>
             <source>before (measured)</source>
             <translation>vorher (gemessen)</translation>
         </message>
@@ -140,6 +136,10 @@ Die letzte Aktion wurde womöglich nicht vollständig ausgeführt. Speichern Sie
         <message>
             <source>Accept the proposed gains</source>
             <translation>Vorgeschlagene Verstärkungen übernehmen</translation>
+        </message>
+        <message>
+            <source>Proposed, simulated on the emulator's firmware: %1.</source>
+            <translation>Vorschlag, simuliert auf der Firmware des Emulators: %1.</translation>
         </message>
     </context>
     <context>
@@ -2275,6 +2275,10 @@ Ja lädt hoch und stellt den Eintrag in die Warteschlange; Nein lädt nichts hoc
             <translation>Nur lesen: Schreiben erfordert die Expertenebene.</translation>
         </message>
         <message>
+            <source>— (no entry)</source>
+            <translation>— (kein Eintrag)</translation>
+        </message>
+        <message>
             <source>Write {0}</source>
             <translation>{0} schreiben</translation>
         </message>
@@ -3060,6 +3064,14 @@ Ja lädt hoch und stellt den Eintrag in die Warteschlange; Nein lädt nichts hoc
             <translation>Verstärkung %1, Hysterese %2 %, Linearitätsfehler %3 %, Totzone %4 %.</translation>
         </message>
         <message>
+            <source>Triangle period:</source>
+            <translation>Periode des Dreiecks:</translation>
+        </message>
+        <message>
+            <source>Measure the static characteristic</source>
+            <translation>Statische Kennlinie messen</translation>
+        </message>
+        <message>
             <source>No proposal: this link does not sample the setpoint chain (USB and the emulator do).</source>
             <translation>Kein Vorschlag: Diese Verbindung tastet die Sollwertkette nicht ab (USB und der Emulator tun es).</translation>
         </message>
@@ -3074,14 +3086,6 @@ Ja lädt hoch und stellt den Eintrag in die Warteschlange; Nein lädt nichts hoc
         <message>
             <source>Offsets and linearization from the static characteristic</source>
             <translation>Offsets und Linearisierung aus der statischen Kennlinie</translation>
-        </message>
-        <message>
-            <source>Triangle period:</source>
-            <translation>Periode des Dreiecks:</translation>
-        </message>
-        <message>
-            <source>Measure the static characteristic</source>
-            <translation>Statische Kennlinie messen</translation>
         </message>
         <message>
             <source>Apply the proposed offsets and linearization</source>
@@ -3360,10 +3364,6 @@ Ja lädt hoch und stellt den Eintrag in die Warteschlange; Nein lädt nichts hoc
             <translation>Ergebnis</translation>
         </message>
         <message>
-            <source>Limited by the link</source>
-            <translation>Durch die Verbindung begrenzt</translation>
-        </message>
-        <message>
             <source>PRM9 test report</source>
             <translation>PRM9-Prüfbericht</translation>
         </message>
@@ -3382,6 +3382,10 @@ Ja lädt hoch und stellt den Eintrag in die Warteschlange; Nein lädt nichts hoc
         <message>
             <source>Parameter set (raw values)</source>
             <translation>Parametersatz (Rohwerte)</translation>
+        </message>
+        <message>
+            <source>Limited by the link</source>
+            <translation>Durch die Verbindung begrenzt</translation>
         </message>
     </context>
     <context>
@@ -3463,12 +3467,12 @@ Stellen Sie sicher, dass die Hydraulik dafür sicher ist. Stopp beendet ihn jede
             <translation>Prüfbericht</translation>
         </message>
         <message>
-            <source>Flow characteristic (E04)</source>
-            <translation>Durchflusskennlinie (E04)</translation>
-        </message>
-        <message>
             <source>Ready.</source>
             <translation>Bereit.</translation>
+        </message>
+        <message>
+            <source>Flow characteristic (E04)</source>
+            <translation>Durchflusskennlinie (E04)</translation>
         </message>
     </context>
     <context>

@@ -11,7 +11,7 @@ from __future__ import annotations
 
 import logging
 import threading
-from collections.abc import Callable, Sequence
+from collections.abc import Callable, Collection, Sequence
 from dataclasses import dataclass
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
@@ -63,14 +63,38 @@ def parse_emulator_spec(spec: str, default_serial: int = 1) -> tuple[str, int]:
     return str(TypeKey.parse(text)), serial
 
 
+def free_emulator_serial(type_key: str, first: int, taken: Collection[int] = ()) -> int:
+    """The lowest serial from ``first`` on, not in ``taken``, that a ``type_key`` valve may
+    have: no emulated valve of another type in this process and no EEPROM image of another
+    type on disk. So ``--emulator`` of a new type does not fail on the image a valve of
+    another type left at the default serial; the same type finds its stored values again."""
+    from prm9tool.device.emulator.nvimage import stored_type_key
+
+    wanted = str(TypeKey.parse(type_key))
+    for serial in range(first, 2**32):
+        if serial in taken:
+            continue
+        with _LOCK:
+            valve = _VALVES.get(serial)
+        if valve is not None:
+            if str(valve.type_key) == wanted:
+                return serial
+            continue
+        if stored_type_key(emulator_nv_path(serial)) in (None, wanted):
+            return serial
+    raise TypeKeyError(f"no free serial for an emulated {type_key}")
+
+
 def emulator_entries(specs: Sequence[str]) -> list[DeviceEntry]:
-    """Entries for ``--emulator`` specs; specs without a serial get the lowest free ones."""
+    """Entries for ``--emulator`` specs; specs without a serial get the lowest free ones
+    (:func:`free_emulator_serial`)."""
     parsed = [parse_emulator_spec(s, 0) for s in specs]
     taken = {serial for _, serial in parsed if serial}
-    free = (n for n in range(1, 2**32) if n not in taken)
     entries, seen = [], set()
     for type_key, serial in parsed:
-        serial = serial or next(free)
+        if not serial:
+            serial = free_emulator_serial(type_key, 1, taken)
+            taken.add(serial)
         if serial in seen:
             raise TypeKeyError(f"two emulated valves with serial {serial}")
         seen.add(serial)

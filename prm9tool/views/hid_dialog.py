@@ -42,15 +42,27 @@ Lister = Callable[[Sequence[str], Callable[[ListedValves], None]], None]
 
 
 def saved_emulators(settings: QSettings) -> list[str]:
-    """The emulated valves the user added ("TYPEKEY:SERIAL"); one default at first."""
+    """The emulated valves the user added ("TYPEKEY:SERIAL"); one default at first.
+
+    One serial is one valve: of two entries with the same serial the later one counts (two
+    used to make every listing fail, "two emulated valves with serial 1001", with no row left
+    to remove)."""
     value = settings.value(EMULATORS_KEY, None)
     if value is None:
         return [DEFAULT_EMULATOR]
     if isinstance(value, str):
-        return [value] if value else []
-    if not isinstance(value, list | tuple):  # e.g. a number in a hand-edited settings file
+        specs = [value] if value else []
+    elif isinstance(value, list | tuple):
+        specs = [str(v) for v in value]
+    else:  # e.g. a number in a hand-edited settings file
         return []
-    return [str(v) for v in value]
+    return one_per_serial(specs)
+
+
+def one_per_serial(specs: Sequence[str]) -> list[str]:
+    """``specs`` ("TYPEKEY:SERIAL") without the earlier entries of a serial given again."""
+    last = {spec.rpartition(":")[2]: i for i, spec in enumerate(specs)}
+    return [spec for i, spec in enumerate(specs) if last[spec.rpartition(":")[2]] == i]
 
 
 def describe(entry: ValveListing) -> list[str]:
@@ -237,7 +249,7 @@ class HidConfigurationDialog(QDialog):
 
     def add_emulator(self, spec: str) -> None:
         """Add an emulated valve ``TYPEKEY:SERIAL`` to the list and select it."""
-        emulators = [e for e in saved_emulators(self._settings) if e != spec] + [spec]
+        emulators = one_per_serial([*saved_emulators(self._settings), spec])
         self._settings.setValue(EMULATORS_KEY, emulators)
         self._select_last = True
         self.refresh()

@@ -24,7 +24,7 @@ from PySide6.QtWidgets import (
 
 from prm9tool.catalogue import CATALOGUE, Access, DataType, Parameter
 from prm9tool.catalogue.variant import Variant
-from prm9tool.errors import Prm9Error
+from prm9tool.errors import AbortCode, Prm9Error, SdoAbortError
 from prm9tool.i18n import text
 from prm9tool.model.access import AccessModel
 from prm9tool.online.connection import ValveConnection
@@ -124,6 +124,8 @@ class ObjectDictionaryDialog(QDialog):
         return item
 
     def _shown(self, param: Parameter, value: object) -> str:
+        if isinstance(value, SdoAbortError) and value.code == AbortCode.NO_DATA:
+            return self.tr("— (no entry)")  # e.g. 0x1003/n beyond the number of errors
         if isinstance(value, Exception):
             return error_text(value)
         if isinstance(value, int) and param.dtype is DataType.UNSIGNED32:

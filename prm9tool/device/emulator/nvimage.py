@@ -32,6 +32,16 @@ def is_nonvolatile(param: Parameter) -> bool:
     return param.index in _COMM_INDICES or 0x1400 <= param.index <= 0x1801
 
 
+def stored_type_key(path: str | os.PathLike[str]) -> str | None:
+    """The type key an image file at ``path`` belongs to; None when there is no readable one."""
+    try:
+        data = json.loads(Path(path).read_text(encoding="utf-8"))
+    except (OSError, ValueError):
+        return None
+    key = data.get("type_key") if isinstance(data, dict) else None
+    return key if isinstance(key, str) else None
+
+
 class NvImage:
     """The stored values by mnemonic; missing entries mean the factory default."""
 
@@ -69,7 +79,9 @@ class NvImage:
             problems.append(
                 FileProblem(
                     0,
-                    f"the image belongs to a {data.get('type_key')} valve, not to {self.type_key}",
+                    f"the image belongs to a {data.get('type_key')} valve, not to "
+                    f"{self.type_key}: give the emulated valve another serial "
+                    f"(TYPEKEY:SERIAL) or delete the file",
                 )
             )
         elif not isinstance(data.get("values"), dict):
