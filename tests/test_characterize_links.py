@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import json
 import sys
+import time
 
 import numpy as np
 import pytest
@@ -135,3 +136,18 @@ def test_the_tuning_windows_rig_over_canopen(can_valve):
             model_tune(rig, Targets(10.0, 0.04))
     assert can_valve.working("SETPOVRON") == 0
     assert can_valve.working("POSKP") == CATALOGUE["POSKP"].default
+
+
+def test_the_sdo_sampler_reads_the_actual_position_not_its_entry_count(can_valve):
+    from prm9tool.device.canlink.session import CanopenSession
+
+    with CanopenSession(can_valve.options, 10) as session:
+        session.write_many({"SETPOVR": 8192, "SETPOVRON": 1})  # 50 %
+        time.sleep(0.1)
+        session.stream_start(["position_actual"], 200)
+        time.sleep(0.1)
+        samples = session.stream_read()
+        session.stream_stop()
+        session.write("SETPOVRON", 0)
+    assert session.stream_source == "" and len(samples)
+    assert samples[-1, 0] == pytest.approx(8192, rel=0.03)  # 0x6301/1, not 0x6301/0 (= 1)
