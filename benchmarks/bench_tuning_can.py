@@ -58,6 +58,9 @@ def main() -> None:
             ref_bw = reference.response.bandwidth_hz()
             print(f"-3 dB at {can_bw:.1f} Hz over CAN, {ref_bw:.1f} Hz at 5 kHz "
                   f"(ratio {can_bw / ref_bw:.3f})")  # fmt: skip
+            can_90, ref_90 = result.response.phase_90_hz(), reference.response.phase_90_hz()
+            print(f"-90 deg at {can_90:.1f} Hz over CAN, {ref_90:.1f} Hz at 5 kHz "
+                  f"(ratio {can_90 / ref_90:.3f})")  # fmt: skip
     finally:
         valve.stop()
         slave.stop()

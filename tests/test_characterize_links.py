@@ -4,6 +4,7 @@ in front of a paced emulated valve) and CANopen (an emulated -CA valve on a virt
 from __future__ import annotations
 
 import json
+import os
 import sys
 import time
 
@@ -151,3 +152,35 @@ def test_the_sdo_sampler_reads_the_actual_position_not_its_entry_count(can_valve
         session.write("SETPOVRON", 0)
     assert session.stream_source == "" and len(samples)
     assert samples[-1, 0] == pytest.approx(8192, rel=0.03)  # 0x6301/1, not 0x6301/0 (= 1)
+
+
+def test_the_tuning_window_online_over_canopen(qtbot, can_valve, monkeypatch):
+    from PySide6.QtWidgets import QMessageBox
+
+    from prm9tool.model.document import ParameterDocument
+    from prm9tool.online.connection import ValveConnection
+    from prm9tool.views.tuning_window import TuningWindow
+
+    connection = ValveConnection(
+        opener=lambda e: factory.open_session(e, can_link=can_valve.options)
+    )
+    try:
+        with qtbot.waitSignal(connection.online_changed, timeout=10000):
+            connection.go_online("can:10")
+        w = TuningWindow(ParameterDocument(E02 + "-CA"), connection)
+        qtbot.addWidget(w)
+        assert "Online" in w.mode.text()
+        monkeypatch.setattr(QMessageBox, "question", lambda *a: QMessageBox.StandardButton.Yes)
+        w.tabs.setCurrentWidget(w.bode)
+        w.bode.duration.setValue(1.5)
+        w.bode.f_min.setValue(2.0)
+        w.bode.run_button.click()  # asks 2 … 200 Hz
+        qtbot.waitUntil(lambda: not w.runner.busy, timeout=30000)
+        text = w.bode.result.text()
+        assert "−3 dB at" in text, w.status.text()
+        assert "The link's sample rate limited the sweep to" in text
+        if os.environ.get("PRM9TOOL_SCREENSHOTS"):
+            w.grab().save(os.path.join(os.environ["PRM9TOOL_SCREENSHOTS"], "tuning_bode_can.png"))
+    finally:
+        connection.shutdown()
+    assert can_valve.working("SETPOVRON") == 0

@@ -160,6 +160,10 @@ Poslední akce možná nebyla dokončena. Uložte svou práci pod novým názvem
             <translation>−3 dB při %1 Hz, −90° při %2 Hz.</translation>
         </message>
         <message>
+            <source>The link's sample rate limited the sweep to %1 Hz (nothing interpolated).</source>
+            <translation>Vzorkovací frekvence spojení omezila rozmítání na %1 Hz (nic nebylo interpolováno).</translation>
+        </message>
+        <message>
             <source>Amplitude:</source>
             <translation>Amplituda:</translation>
         </message>
@@ -1313,6 +1317,10 @@ Poslední akce možná nebyla dokončena. Uložte svou práci pod novým názvem
         <message>
             <source>The history database cannot be used.</source>
             <translation>Databázi historie nelze použít.</translation>
+        </message>
+        <message>
+            <source>The link could not keep the test's sample rate.</source>
+            <translation>Spojení nedokázalo udržet vzorkovací frekvenci testu.</translation>
         </message>
     </context>
     <context>

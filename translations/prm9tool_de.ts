@@ -160,6 +160,10 @@ Die letzte Aktion wurde womöglich nicht vollständig ausgeführt. Speichern Sie
             <translation>−3 dB bei %1 Hz, −90° bei %2 Hz.</translation>
         </message>
         <message>
+            <source>The link's sample rate limited the sweep to %1 Hz (nothing interpolated).</source>
+            <translation>Die Abtastrate der Verbindung begrenzte den Sweep auf %1 Hz (nichts interpoliert).</translation>
+        </message>
+        <message>
             <source>Amplitude:</source>
             <translation>Amplitude:</translation>
         </message>
@@ -1310,6 +1314,10 @@ Die letzte Aktion wurde womöglich nicht vollständig ausgeführt. Speichern Sie
         <message>
             <source>The history database cannot be used.</source>
             <translation>Die Verlaufsdatenbank kann nicht benutzt werden.</translation>
+        </message>
+        <message>
+            <source>The link could not keep the test's sample rate.</source>
+            <translation>Die Verbindung konnte die Abtastrate des Tests nicht halten.</translation>
         </message>
     </context>
     <context>

@@ -187,6 +187,7 @@ class BodeResult:
     record: Record
     response: FrequencyResponse
     note: str = ""  # set when the link's sample rate limited the sweep
+    limited_to_hz: float | None = None  # the sweep's highest frequency when it was limited
 
 
 def bode_test(
@@ -226,7 +227,8 @@ def bode_test(
     response = frequency_response(
         rec.channels[lp.setpoint], rec.channels[lp.actual], fs, f_min, f_max
     )
-    return BodeResult(amplitude_pct, centre_pct, rec, response, note)
+    limited = f_max if note else None
+    return BodeResult(amplitude_pct, centre_pct, rec, response, note, limited)
 
 
 # --- static characteristic --------------------------------------------------------------------
