@@ -183,6 +183,10 @@ Die letzte Aktion wurde womöglich nicht vollständig ausgeführt. Speichern Sie
             <source>Measure the frequency response</source>
             <translation>Frequenzgang messen</translation>
         </message>
+        <message>
+            <source>The link's sample rate limited the sweep to %1 Hz (nothing interpolated).</source>
+            <translation>Die Abtastrate der Verbindung begrenzte den Sweep auf %1 Hz (nichts interpoliert).</translation>
+        </message>
     </context>
     <context>
         <name>CanBusDialog</name>
@@ -1350,6 +1354,10 @@ Die letzte Aktion wurde womöglich nicht vollständig ausgeführt. Speichern Sie
         <message>
             <source>The valve restarted at another address or bit rate: go online with it there.</source>
             <translation>Das Ventil ist mit anderer Adresse oder Bitrate neu gestartet: gehen Sie dort mit ihm online.</translation>
+        </message>
+        <message>
+            <source>The link could not keep the test's sample rate.</source>
+            <translation>Die Verbindung konnte die Abtastrate des Tests nicht halten.</translation>
         </message>
     </context>
     <context>
@@ -3406,6 +3414,26 @@ Ja lädt hoch und stellt den Eintrag in die Warteschlange; Nein lädt nichts hoc
         <message>
             <source>Parameter set (raw values)</source>
             <translation>Parametersatz (Rohwerte)</translation>
+        </message>
+        <message>
+            <source>flow characteristic: %1</source>
+            <translation>Durchflusskennlinie: %1</translation>
+        </message>
+        <message>
+            <source>Flow characteristic</source>
+            <translation>Durchflusskennlinie</translation>
+        </message>
+        <message>
+            <source>spool opening [%]</source>
+            <translation>Schieberöffnung [%]</translation>
+        </message>
+        <message>
+            <source>actuator velocity [%/s]</source>
+            <translation>Geschwindigkeit des Antriebs [%/s]</translation>
+        </message>
+        <message>
+            <source>measured</source>
+            <translation>gemessen</translation>
         </message>
     </context>
     <context>

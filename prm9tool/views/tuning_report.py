@@ -42,6 +42,9 @@ def figure_label(figure: Figure) -> str:
         "linearity": translate("TuningReport", "linearity error"),
         "dead": translate("TuningReport", "dead band"),
     }
+    if parts[0] == "flow":  # E04: actuator velocity over opening
+        what = base.get(parts[1], figure.name)
+        return translate("TuningReport", "flow characteristic: %1").replace("%1", what)
     if parts[0] == "step":
         what = base.get(parts[2], parts[2])
         return (
@@ -151,6 +154,18 @@ def static_plot(c: Characterization) -> Plot:
     )
 
 
+def flow_plot(c: Characterization) -> Plot:
+    """E04: the actuator's velocity over the spool's opening (binned means)."""
+    assert c.flow is not None
+    f = c.flow.characteristic
+    return Plot(
+        translate("TuningReport", "Flow characteristic"),
+        translate("TuningReport", "spool opening [%]"),
+        translate("TuningReport", "actuator velocity [%/s]"),
+        [Series(f.x, f.velocity, translate("TuningReport", "measured"), COLOURS[0])],
+    )
+
+
 def build_report(c: Characterization) -> QTextDocument:
     """The report as a text document (its images as resources)."""
     doc = QTextDocument()
@@ -160,6 +175,8 @@ def build_report(c: Characterization) -> QTextDocument:
         plots.extend(bode_plots(c))
     if c.static is not None:
         plots.append(static_plot(c))
+    if c.flow is not None:
+        plots.append(flow_plot(c))
     images = []
     for k, plot in enumerate(plots):
         url = f"prm9tool://plot{k}.png"

@@ -36,8 +36,8 @@ class SignalObject:
 
 # Measuring point -> object (manual tables 7-13, 7-14; units as in catalogue/signals.py).
 SIGNAL_OBJECTS = {
-    "position_actual": SignalObject(0x6301, 0, True),
-    "process_actual": SignalObject(0x6381, 0, True),
+    "position_actual": SignalObject(0x6301, 1, True),  # subindex 0: the number of entries
+    "process_actual": SignalObject(0x6381, 1, True),
     "supply_voltage": SignalObject(0x2003, 0, False),
     "temperature": SignalObject(0x2002, 0, True, 10.0),  # °C -> 0.1 °C
 }
