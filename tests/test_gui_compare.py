@@ -267,3 +267,16 @@ def test_the_history_setting_chooses_the_database_for_the_gui_and_the_command_li
     expected = f"sqlite:///{tmp_path / 'line.sqlite3'}"
     assert database_url() == expected and unreachable_policy() == "refuse"
     assert window.connection.history.recorder.url == expected
+
+
+def test_the_history_window_names_a_damaged_database_and_keeps_working(qtbot, window, tmp_path):
+    damaged = tmp_path / "damaged.sqlite3"
+    damaged.write_bytes(b"not a database " * 100)
+    window.connection.set_recorder(Recorder(f"sqlite:///{damaged}", tmp_path / "q.jsonl"))
+    history = window.compare.show_history()
+    qtbot.addWidget(history)
+    history.serial.setText("4711")
+    history.reload()
+    qtbot.waitUntil(lambda: "is damaged" in history.state.text(), timeout=TIMEOUT)
+    assert history.model.rowCount() == 0 and not history.buttons["compare"].isEnabled()
+    assert damaged.read_bytes() == b"not a database " * 100

@@ -5,6 +5,7 @@ from __future__ import annotations
 import os
 from pathlib import Path
 
+import numpy as np
 import pytest
 from pypdf import PdfReader
 from PySide6.QtWidgets import QMessageBox
@@ -17,6 +18,7 @@ from prm9tool.views.diagram.dialogs.base import BlockContext
 from prm9tool.views.tuning_window import TuningWindow
 
 E02 = "PRM9-06.3Z11/30-24E02S02"
+E04 = "PRM9-06.3Z11/30-24E04S02"
 SHOTS = os.environ.get("PRM9TOOL_SCREENSHOTS")
 
 
@@ -68,6 +70,14 @@ def test_critical_gain_method_shows_kkr_and_tkr(qtbot, window):
     kkr = float(text.split("Kkr = ")[1].split(",")[0])
     assert 4.4 <= kkr <= 5.4  # the direct sweep of test_characterize finds 4.9
     assert window.autotune.proposal["POSKP"] == round(kkr * 50)  # K = 0.5·Kkr, raw ×0.01
+    # the proposal simulated on the emulator's firmware beside the measured before/after
+    assert "simulated on the emulator's firmware: overshoot" in text
+    labels = [s.label for s in window.autotune.plot.plots[0].series]
+    assert labels == ["before (measured)", "proposed (measured)", "proposed (simulated)"]
+    simulated = window.autotune.plot.plots[0].series[2]
+    measured = window.autotune.plot.plots[0].series[1]
+    # the copy holds the document's parameters: it answers like the measured valve
+    assert max(simulated.y) == pytest.approx(max(measured.y), abs=3.0)
 
 
 def test_bode_and_static_characteristic_with_linearization(qtbot, window):
@@ -199,6 +209,54 @@ def test_online_the_autotune_runs_on_the_connected_valve_and_leaves_it_as_it_was
     finally:
         connection.shutdown()
         factory.forget_emulated_valves()
+
+
+def test_static_proposes_offsets_with_the_linearization_as_one_undo_step(qtbot):
+    from test_characterize_deadband import DEAD_ZONE
+
+    doc = ParameterDocument(E02)
+    doc.set_values(DEAD_ZONE, "a dead zone of ±25 % in the linearization")
+    w = TuningWindow(doc)
+    qtbot.addWidget(w)
+    w.undo = DocumentUndo(doc, doc)
+    w.tabs.setCurrentWidget(w.static)
+    w.static.period.setValue(4.0)
+    w.static.run_button.click()
+    finish(qtbot, w)
+    text = w.static.result.text()
+    assert "Dead band behind the gain/offset stage -2" in text and "OFFSETPOS 25." in text, text
+    proposal = w.static.proposal
+    assert proposal["OFFSETPOS"] == pytest.approx(4096, rel=0.03)
+    assert proposal["SETPLINON"] == -1
+    labels = [s.label for s in w.static.plot.plots[0].series]
+    assert "with the proposed offsets and linearization (preview)" in labels
+    preview = w.static.plot.plots[0].series[-1]
+    inner = np.abs(preview.x) < 20
+    assert np.abs(preview.y[inner] - preview.x[inner]).max() < 3.0  # no dead band left
+    shot(w, "static_offsets")
+    steps = w.undo.stack.count()
+    w.static.apply_button.click()
+    assert w.undo.stack.count() == steps + 1
+    assert doc.value("OFFSETPOS") == proposal["OFFSETPOS"]
+    w.undo.stack.undo()
+    assert doc.value("OFFSETPOS") == 0 and doc.value("SETPLINYF") == 0
+
+
+def test_e04_flow_page_measures_and_applies_the_offsets(qtbot):
+    doc = ParameterDocument(E04)
+    w = TuningWindow(doc)
+    qtbot.addWidget(w)
+    w.undo = DocumentUndo(doc, doc)
+    assert w.tabs.tabText(3) == "Flow characteristic (E04)"
+    w.tabs.setCurrentWidget(w.flow)
+    w.flow.run_button.click()
+    finish(qtbot, w)
+    text = w.flow.result.text()
+    assert "Flow gain 4.0" in text or "Flow gain 3.9" in text, text
+    shot(w, "flow")
+    # the emulated plant has no overlap: nothing worth compensating
+    assert all(v < 50 for v in w.flow.proposal.values())
+    assert TuningWindow(ParameterDocument(E02)).flow is None
 
 
 def test_proposed_gains_use_the_decimal_separator_of_the_language(qapp):

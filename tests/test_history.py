@@ -111,15 +111,24 @@ def test_a_corrupt_database_is_named_left_untouched_and_records_are_queued(tmp_p
 
 def test_a_database_of_a_newer_program_is_refused_and_not_changed(tmp_path, capsys):
     url = sqlite_url(tmp_path)
-    fill(HistoryStore(url), 1, 1)
+    with HistoryStore(url) as store:
+        fill(store, 1, 1)
     raw_sql(url, "UPDATE alembic_version SET version_num = '0042_from_the_future'")
-    before = (tmp_path / "h.sqlite3").read_bytes()
+    before = dump(url)  # the content (SQLite may fold its write-ahead log into the file)
     with pytest.raises(HistoryError, match="written by a newer prm9tool") as caught:
         HistoryStore(url)
     assert caught.value.kind == "newer" and "0042_from_the_future" in str(caught.value)
     assert main(["--history", "1", "--history-db", url]) == ExitCode.HISTORY
     assert "update prm9tool" in capsys.readouterr().err
-    assert (tmp_path / "h.sqlite3").read_bytes() == before
+    assert dump(url) == before
+
+
+def dump(url: str) -> list[str]:
+    db = sqlite3.connect(url.removeprefix("sqlite:///"))
+    try:
+        return list(db.iterdump())
+    finally:
+        db.close()
 
 
 def test_a_full_disk_is_reported_and_the_record_waits_in_the_queue(tmp_path):
@@ -301,3 +310,29 @@ def test_a_characterization_is_recorded_with_its_verdict_and_figures(tmp_path, c
     figures = {f["name"]: f for f in record["details"]["figures"]}
     assert figures["bode_bandwidth_hz"]["passed"] is True
     assert record["details"]["profile"] == "fast test"
+
+
+def test_a_gui_characterization_online_is_recorded_and_offline_not(tmp_path):
+    from types import SimpleNamespace
+
+    from prm9tool.characterize.rig import RigInfo
+    from prm9tool.characterize.run import RESULT_HOOKS, Characterization
+    from prm9tool.online.characterization_history import run_with_history
+
+    recorder = Recorder(sqlite_url(tmp_path), tmp_path / "q.jsonl")
+    info = RigInfo("PRM9-06.3Z11/30-24E04S02-CA", 4713, "1.0.0", "emulator", 5000.0)
+    result = Characterization(info, SimpleNamespace(name="p"), "2026-11-24", factory_values())
+
+    def characterize():  # what characterize() does at its end
+        for hook in RESULT_HOOKS:
+            hook(result)
+        return result
+
+    connection = SimpleNamespace(history=SimpleNamespace(recorder=recorder), is_online=False)
+    run_with_history(connection, characterize)
+    assert recorder.store().records(4713) == []
+    connection.is_online = True
+    assert run_with_history(connection, characterize) is result
+    (record,) = recorder.store().records(4713)
+    assert (record["operation"], record["outcome"]) == ("characterization", "passed")
+    assert RESULT_HOOKS == []  # the hook is gone again

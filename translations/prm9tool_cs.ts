@@ -137,6 +137,10 @@ Poslední akce možná nebyla dokončena. Uložte svou práci pod novým názvem
             <source>Accept the proposed gains</source>
             <translation>Převzít navržené konstanty</translation>
         </message>
+        <message>
+            <source>Proposed, simulated on the emulator's firmware: %1.</source>
+            <translation>Návrh simulovaný na firmwaru emulátoru: %1.</translation>
+        </message>
     </context>
     <context>
         <name>BlockDialog</name>
@@ -1415,6 +1419,61 @@ Poslední akce možná nebyla dokončena. Uložte svou práci pod novým názvem
         </message>
     </context>
     <context>
+        <name>FlowPage</name>
+        <message>
+            <source>process setpoint steps %1 → %2 → %1 % with the process controller proportional only, %3 s each</source>
+            <translation>skoky žádané procesní veličiny %1 → %2 → %1 % s čistě proporcionálním procesním regulátorem, každý %3 s</translation>
+        </message>
+        <message>
+            <source>Flow characteristic</source>
+            <translation>Průtoková charakteristika</translation>
+        </message>
+        <message>
+            <source>spool opening [%]</source>
+            <translation>otevření šoupátka [%]</translation>
+        </message>
+        <message>
+            <source>actuator velocity [%/s]</source>
+            <translation>rychlost pohonu [%/s]</translation>
+        </message>
+        <message>
+            <source>measured</source>
+            <translation>změřeno</translation>
+        </message>
+        <message>
+            <source>with the proposed offsets (preview)</source>
+            <translation>s navrženým posunutím nuly (náhled)</translation>
+        </message>
+        <message>
+            <source>Flow gain %1 %/s per % of opening, dead band %2 … %3 % (width %4 %). Proposed offsets on the control deviation (process Kp %5): %6.</source>
+            <translation>Průtokové zesílení %1 %/s na % otevření, pásmo necitlivosti %2 … %3 % (šířka %4 %). Navržené posunutí nuly regulační odchylky (procesní Kp %5): %6.</translation>
+        </message>
+        <message>
+            <source>Offsets from the flow characteristic</source>
+            <translation>Posunutí nuly z průtokové charakteristiky</translation>
+        </message>
+        <message>
+            <source>Step around the operating point:</source>
+            <translation>Skok kolem pracovního bodu:</translation>
+        </message>
+        <message>
+            <source>Operating point:</source>
+            <translation>Pracovní bod:</translation>
+        </message>
+        <message>
+            <source>Duration of each step:</source>
+            <translation>Trvání každého skoku:</translation>
+        </message>
+        <message>
+            <source>Measure the flow characteristic</source>
+            <translation>Změřit průtokovou charakteristiku</translation>
+        </message>
+        <message>
+            <source>Apply the proposed offsets</source>
+            <translation>Použít navržené posunutí nuly</translation>
+        </message>
+    </context>
+    <context>
         <name>GeneratorPanel</name>
         <message>
             <source>Step</source>
@@ -1775,6 +1834,21 @@ Ano načte a záznam zařadí do fronty; Ne nenačte nic.</translation>
         <message>
             <source>Linearization reset to a straight line</source>
             <translation>Linearizace obnovena na přímku</translation>
+        </message>
+    </context>
+    <context>
+        <name>LinkGuard</name>
+        <message>
+            <source>The connection will move</source>
+            <translation>Spojení se změní</translation>
+        </message>
+        <message>
+            <source>The node-ID switch is at position {0}: the switches decide node ID and bit rate (manual table 7-17), so this change does not move the valve; it stays at node {1}.</source>
+            <translation>Přepínač ID uzlu je v poloze {0}: ID uzlu a přenosovou rychlost určují přepínače (návod, tabulka 7-17), tato změna tedy ventil nepřesune; zůstává uzlem {1}.</translation>
+        </message>
+        <message>
+            <source>After the valve's next power-up or restart it answers at node {0}, {1}: prm9tool's connection then breaks. Store the change, restart the valve, then find it again under Communication → CAN bus (node {0}, bit rate {1}).</source>
+            <translation>Po příštím zapnutí nebo restartu ventil odpovídá jako uzel {0}, {1}: spojení prm9tool se pak přeruší. Uložte změnu, restartujte ventil a najděte ho znovu v Komunikace → Sběrnice CAN (uzel {0}, rychlost {1}).</translation>
         </message>
     </context>
     <context>
@@ -2999,16 +3073,8 @@ Ano načte a záznam zařadí do fronty; Ne nenačte nic.</translation>
             <translation>trojúhelník přes celý rozsah −100 … 100 %, %1 s</translation>
         </message>
         <message>
-            <source>linearized (preview)</source>
-            <translation>linearizováno (náhled)</translation>
-        </message>
-        <message>
             <source>Gain %1, hysteresis %2 %, linearity error %3 %, dead band %4 %.</source>
             <translation>Zesílení %1, hystereze %2 %, chyba linearity %3 %, pásmo necitlivosti %4 %.</translation>
-        </message>
-        <message>
-            <source>Linearization from the static characteristic</source>
-            <translation>Linearizace ze statické charakteristiky</translation>
         </message>
         <message>
             <source>Triangle period:</source>
@@ -3019,8 +3085,24 @@ Ano načte a záznam zařadí do fronty; Ne nenačte nic.</translation>
             <translation>Změřit statickou charakteristiku</translation>
         </message>
         <message>
-            <source>Apply the proposed linearization</source>
-            <translation>Použít navrženou linearizaci</translation>
+            <source>No proposal: this link does not sample the setpoint chain (USB and the emulator do).</source>
+            <translation>Žádný návrh: toto spojení nevzorkuje řetězec řídicího signálu (USB a emulátor ano).</translation>
+        </message>
+        <message>
+            <source>Dead band behind the gain/offset stage %1 … %2 %: offsets %3.</source>
+            <translation>Pásmo necitlivosti za stupněm zesílení/posunutí nuly %1 … %2 %: posunutí nuly %3.</translation>
+        </message>
+        <message>
+            <source>with the proposed offsets and linearization (preview)</source>
+            <translation>s navrženým posunutím nuly a linearizací (náhled)</translation>
+        </message>
+        <message>
+            <source>Offsets and linearization from the static characteristic</source>
+            <translation>Posunutí nuly a linearizace ze statické charakteristiky</translation>
+        </message>
+        <message>
+            <source>Apply the proposed offsets and linearization</source>
+            <translation>Použít navržené posunutí nuly a linearizaci</translation>
         </message>
     </context>
     <context>
@@ -3294,6 +3376,10 @@ Ano načte a záznam zařadí do fronty; Ne nenačte nic.</translation>
             <source>Parameter set (raw values)</source>
             <translation>Sada parametrů (surové hodnoty)</translation>
         </message>
+        <message>
+            <source>Limited by the link</source>
+            <translation>Omezeno spojením</translation>
+        </message>
     </context>
     <context>
         <name>TuningWindow</name>
@@ -3376,6 +3462,10 @@ Zajistěte, aby to hydraulika bezpečně snesla. Tlačítko Stop test kdykoli uk
         <message>
             <source>Ready.</source>
             <translation>Připraveno.</translation>
+        </message>
+        <message>
+            <source>Flow characteristic (E04)</source>
+            <translation>Průtoková charakteristika (E04)</translation>
         </message>
     </context>
     <context>

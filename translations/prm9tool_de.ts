@@ -137,6 +137,10 @@ Die letzte Aktion wurde womöglich nicht vollständig ausgeführt. Speichern Sie
             <source>Accept the proposed gains</source>
             <translation>Vorgeschlagene Verstärkungen übernehmen</translation>
         </message>
+        <message>
+            <source>Proposed, simulated on the emulator's firmware: %1.</source>
+            <translation>Vorschlag, simuliert auf der Firmware des Emulators: %1.</translation>
+        </message>
     </context>
     <context>
         <name>BlockDialog</name>
@@ -1409,6 +1413,61 @@ Die letzte Aktion wurde womöglich nicht vollständig ausgeführt. Speichern Sie
         </message>
     </context>
     <context>
+        <name>FlowPage</name>
+        <message>
+            <source>process setpoint steps %1 → %2 → %1 % with the process controller proportional only, %3 s each</source>
+            <translation>Prozesssollwert-Sprünge %1 → %2 → %1 % mit rein proportionalem Prozessregler, je %3 s</translation>
+        </message>
+        <message>
+            <source>Flow characteristic</source>
+            <translation>Durchflusskennlinie</translation>
+        </message>
+        <message>
+            <source>spool opening [%]</source>
+            <translation>Schieberöffnung [%]</translation>
+        </message>
+        <message>
+            <source>actuator velocity [%/s]</source>
+            <translation>Geschwindigkeit des Antriebs [%/s]</translation>
+        </message>
+        <message>
+            <source>measured</source>
+            <translation>gemessen</translation>
+        </message>
+        <message>
+            <source>with the proposed offsets (preview)</source>
+            <translation>mit den vorgeschlagenen Offsets (Vorschau)</translation>
+        </message>
+        <message>
+            <source>Flow gain %1 %/s per % of opening, dead band %2 … %3 % (width %4 %). Proposed offsets on the control deviation (process Kp %5): %6.</source>
+            <translation>Durchflussverstärkung %1 %/s je % Öffnung, Totband %2 … %3 % (Breite %4 %). Vorgeschlagene Offsets der Regelabweichung (Prozess-Kp %5): %6.</translation>
+        </message>
+        <message>
+            <source>Offsets from the flow characteristic</source>
+            <translation>Offsets aus der Durchflusskennlinie</translation>
+        </message>
+        <message>
+            <source>Step around the operating point:</source>
+            <translation>Sprung um den Arbeitspunkt:</translation>
+        </message>
+        <message>
+            <source>Operating point:</source>
+            <translation>Arbeitspunkt:</translation>
+        </message>
+        <message>
+            <source>Duration of each step:</source>
+            <translation>Dauer jedes Sprungs:</translation>
+        </message>
+        <message>
+            <source>Measure the flow characteristic</source>
+            <translation>Durchflusskennlinie messen</translation>
+        </message>
+        <message>
+            <source>Apply the proposed offsets</source>
+            <translation>Vorgeschlagene Offsets übernehmen</translation>
+        </message>
+    </context>
+    <context>
         <name>GeneratorPanel</name>
         <message>
             <source>Step</source>
@@ -1768,6 +1827,21 @@ Ja lädt hoch und stellt den Eintrag in die Warteschlange; Nein lädt nichts hoc
         <message>
             <source>Linearization reset to a straight line</source>
             <translation>Linearisierung auf eine Gerade zurückgesetzt</translation>
+        </message>
+    </context>
+    <context>
+        <name>LinkGuard</name>
+        <message>
+            <source>The connection will move</source>
+            <translation>Die Verbindung wird sich ändern</translation>
+        </message>
+        <message>
+            <source>The node-ID switch is at position {0}: the switches decide node ID and bit rate (manual table 7-17), so this change does not move the valve; it stays at node {1}.</source>
+            <translation>Der Knoten-ID-Schalter steht auf Position {0}: Die Schalter bestimmen Knoten-ID und Bitrate (Handbuch, Tabelle 7-17), diese Änderung verschiebt das Ventil also nicht; es bleibt Knoten {1}.</translation>
+        </message>
+        <message>
+            <source>After the valve's next power-up or restart it answers at node {0}, {1}: prm9tool's connection then breaks. Store the change, restart the valve, then find it again under Communication → CAN bus (node {0}, bit rate {1}).</source>
+            <translation>Nach dem nächsten Einschalten oder Neustart antwortet das Ventil als Knoten {0}, {1}: Die Verbindung von prm9tool bricht dann ab. Änderung speichern, Ventil neu starten und es unter Kommunikation → CAN-Bus wiederfinden (Knoten {0}, Bitrate {1}).</translation>
         </message>
     </context>
     <context>
@@ -2990,16 +3064,8 @@ Ja lädt hoch und stellt den Eintrag in die Warteschlange; Nein lädt nichts hoc
             <translation>ein Dreieck über den ganzen Bereich −100 … 100 %, %1 s</translation>
         </message>
         <message>
-            <source>linearized (preview)</source>
-            <translation>linearisiert (Vorschau)</translation>
-        </message>
-        <message>
             <source>Gain %1, hysteresis %2 %, linearity error %3 %, dead band %4 %.</source>
             <translation>Verstärkung %1, Hysterese %2 %, Linearitätsfehler %3 %, Totzone %4 %.</translation>
-        </message>
-        <message>
-            <source>Linearization from the static characteristic</source>
-            <translation>Linearisierung aus der statischen Kennlinie</translation>
         </message>
         <message>
             <source>Triangle period:</source>
@@ -3010,8 +3076,24 @@ Ja lädt hoch und stellt den Eintrag in die Warteschlange; Nein lädt nichts hoc
             <translation>Statische Kennlinie messen</translation>
         </message>
         <message>
-            <source>Apply the proposed linearization</source>
-            <translation>Vorgeschlagene Linearisierung übernehmen</translation>
+            <source>No proposal: this link does not sample the setpoint chain (USB and the emulator do).</source>
+            <translation>Kein Vorschlag: Diese Verbindung tastet die Sollwertkette nicht ab (USB und der Emulator tun es).</translation>
+        </message>
+        <message>
+            <source>Dead band behind the gain/offset stage %1 … %2 %: offsets %3.</source>
+            <translation>Totband hinter der Verstärkungs-/Offsetstufe %1 … %2 %: Offsets %3.</translation>
+        </message>
+        <message>
+            <source>with the proposed offsets and linearization (preview)</source>
+            <translation>mit den vorgeschlagenen Offsets und der Linearisierung (Vorschau)</translation>
+        </message>
+        <message>
+            <source>Offsets and linearization from the static characteristic</source>
+            <translation>Offsets und Linearisierung aus der statischen Kennlinie</translation>
+        </message>
+        <message>
+            <source>Apply the proposed offsets and linearization</source>
+            <translation>Vorgeschlagene Offsets und Linearisierung übernehmen</translation>
         </message>
     </context>
     <context>
@@ -3285,6 +3367,10 @@ Ja lädt hoch und stellt den Eintrag in die Warteschlange; Nein lädt nichts hoc
             <source>Parameter set (raw values)</source>
             <translation>Parametersatz (Rohwerte)</translation>
         </message>
+        <message>
+            <source>Limited by the link</source>
+            <translation>Durch die Verbindung begrenzt</translation>
+        </message>
     </context>
     <context>
         <name>TuningWindow</name>
@@ -3367,6 +3453,10 @@ Stellen Sie sicher, dass die Hydraulik dafür sicher ist. Stopp beendet ihn jede
         <message>
             <source>Ready.</source>
             <translation>Bereit.</translation>
+        </message>
+        <message>
+            <source>Flow characteristic (E04)</source>
+            <translation>Durchflusskennlinie (E04)</translation>
         </message>
     </context>
     <context>

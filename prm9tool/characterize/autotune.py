@@ -78,6 +78,11 @@ def model_tune(
     out_lo = -16384.0 if two_coils else 0.0
     with preserved(rig, names, chain_changes(rig, loop)) as saved:
         before = _step(rig, lp, amplitude_pct, 0.0, duration, limit_pct, loop)
+        if not np.isfinite(before.record.channels[lp.output]).all():
+            raise Prm9Error(
+                "the model-based autotune needs the controller's output, which this link does "
+                "not sample (CANopen); use the critical-gain method"
+            )
         data = [_io(before, lp.output, lp.actual)]
         t1 = from_parameters(lp.prefix, saved).t1
         step = amplitude_pct / 100.0 * 16384.0
@@ -131,3 +136,33 @@ def compare_steps(
         rig.write(proposed)
         after = _step(rig, lp, amplitude_pct, 0.0, duration_s, None, loop)
     return before, after
+
+
+def simulate_steps(
+    rig: Rig, loop: str, proposed: dict[str, int], amplitude_pct: float, duration_s: float
+) -> tuple[StepResult, StepResult]:
+    """The steps with the present and the ``proposed`` gains, simulated on the emulator's
+    firmware: a fresh analog-only emulated valve of the rig's type with the rig's parameter
+    set (read from it), stepped faster than real time. The valve under test is not moved."""
+    from prm9tool.catalogue import CATALOGUE
+    from prm9tool.characterize.rig import EmulatorRig
+    from prm9tool.device.emulator import EmulatedValve
+
+    key = TypeKey.parse(rig.info.type_key)
+    analog = TypeKey(key.size, key.spool, key.flow, key.supply, key.config, False)
+    names = [p.mnemonic for p in CATALOGUE.for_variant(analog.variant) if p.in_file and p.writable]
+    present = rig.read(names)
+    lp = LOOPS[loop]
+    steps = []
+    for values in (present, {**present, **proposed}):
+        valve = EmulatedValve(analog)
+        for mnemonic, raw in values.items():
+            param = CATALOGUE[mnemonic]
+            try:
+                valve.write(param.index, param.subindex, raw)
+            except Prm9Error:  # e.g. a CANopen setpoint type on the analog copy: keep default
+                continue
+        copy = EmulatorRig(valve)
+        with preserved(copy, [], chain_changes(copy, loop)):
+            steps.append(_step(copy, lp, amplitude_pct, 0.0, duration_s, None, loop))
+    return steps[0], steps[1]

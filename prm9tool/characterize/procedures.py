@@ -24,6 +24,7 @@ from prm9tool.errors import Prm9Error
 from prm9tool.scope.measure import StepFigures, step_figures
 
 PERCENT = 100.0 / 16384.0
+SAMPLES_PER_PERIOD = 10  # a sweep goes no higher than the sample rate / this (decision)
 TRANSPARENT = {
     "THRESETP": 0,
     "SETPLINON": 0,
@@ -185,6 +186,7 @@ class BodeResult:
     centre_pct: float
     record: Record
     response: FrequencyResponse
+    note: str = ""  # set when the link's sample rate limited the sweep
 
 
 def bode_test(
@@ -196,9 +198,27 @@ def bode_test(
     duration_s: float = 10.0,
     loop: str = "position",
 ) -> BodeResult:
-    """Logarithmic sweep ``f_min`` → ``f_max`` around ``centre_pct``; demand → actual."""
+    """Logarithmic sweep ``f_min`` → ``f_max`` around ``centre_pct``; demand → actual.
+
+    A link whose sample rate gives fewer than SAMPLES_PER_PERIOD samples per period at
+    ``f_max`` (CANopen) limits the sweep to what it can sample, and :attr:`BodeResult.note`
+    says so; nothing is interpolated.
+    """
     lp = LOOPS[loop]
     fs = rig.info.sample_rate_hz
+    note = ""
+    highest = fs / SAMPLES_PER_PERIOD
+    if f_max > highest:
+        if f_min * 2.0 > highest:
+            raise ValueError(
+                f"the link samples at {fs:g} Hz: a sweep from {f_min:g} Hz needs at least "
+                f"{f_min * 2.0 * SAMPLES_PER_PERIOD:g} Hz"
+            )
+        note = (
+            f"sweep limited to {highest:g} Hz (of {f_max:g} Hz asked) by the link's sample "
+            f"rate of {fs:g} Hz"
+        )
+        f_max = highest
     sweep = centre_pct + amplitude_pct * log_chirp(duration_s, fs, f_min, f_max)
     with preserved(rig, [], chain_changes(rig, loop)):
         rig.play(np.full(int(0.05 * fs), centre_pct), [lp.setpoint])
@@ -206,7 +226,7 @@ def bode_test(
     response = frequency_response(
         rec.channels[lp.setpoint], rec.channels[lp.actual], fs, f_min, f_max
     )
-    return BodeResult(amplitude_pct, centre_pct, rec, response)
+    return BodeResult(amplitude_pct, centre_pct, rec, response, note)
 
 
 # --- static characteristic --------------------------------------------------------------------
@@ -221,6 +241,7 @@ class StaticResult:
 
 
 STATIC_KEYS = ("setpoint_gain", "setpoint_linearized", "position_actual")
+STATIC_MIN_SAMPLES = 606  # six per bin of the characteristic's 101
 
 
 def static_test(
@@ -229,8 +250,14 @@ def static_test(
     """One triangle period ``lo → hi → lo`` (through the valve's own setpoint chain)."""
     fs = rig.info.sample_rate_hz
     half = int(period_s * fs / 2)
-    # one override value per millisecond: fine enough for a static test, 5× fewer writes
-    rise = np.repeat(np.linspace(lo_pct, hi_pct, half // 5 + 1), 5)[:half]
+    if 2 * half < STATIC_MIN_SAMPLES:  # a slow link (CANopen): say what it needs
+        raise ValueError(
+            f"the static test needs at least {STATIC_MIN_SAMPLES} samples; at the link's "
+            f"{fs:g} Hz choose a triangle period of at least {STATIC_MIN_SAMPLES / fs:.1f} s"
+        )
+    # one override value per millisecond: fine enough for a static test, fewer writes
+    every = max(1, round(fs / 1000.0))
+    rise = np.repeat(np.linspace(lo_pct, hi_pct, half // every + 1), every)[:half]
     rig.ensure_active()
     sweep = np.concatenate([rise, rise[::-1]])
     rig.play(np.full(int(0.2 * fs), lo_pct), [STATIC_KEYS[2]])

@@ -69,6 +69,11 @@ class Characterization:
         """True when no figure failed its limit."""
         return all(f.passed is not False for f in self.figures)
 
+    @property
+    def notes(self) -> list[str]:
+        """What the link limited (e.g. a sweep cut at what its sample rate allows)."""
+        return [self.bode.note] if self.bode is not None and self.bode.note else []
+
 
 RESULT_HOOKS: list[Callable[[Characterization], None]] = []
 
@@ -151,6 +156,7 @@ def report_data(c: Characterization, csv_files: list[Path] | None = None) -> dic
         "sample_rate_hz": c.info.sample_rate_hz,
         "profile": c.profile.name,
         "passed": c.passed,
+        "notes": c.notes,
         "figures": [
             {
                 "name": f.name,

@@ -4,7 +4,7 @@ Runs the acceptance profile's tests (steps at three amplitudes, Bode, static cha
 writes the PDF report (``--report``), the JSON report (``--json``) and the raw data as CSV
 next to them, and exits 0 when every figure is within its limits, 8 when one is not (docs/
 tuning.md). An emulated valve is stepped as fast as the CPU allows; a USB valve runs at its
-stream rate.
+stream rate, a CANopen valve (``--device can:N``) at the SDO sample rate its link gives.
 """
 
 from __future__ import annotations
@@ -16,10 +16,11 @@ from collections.abc import Callable
 from pathlib import Path
 
 from prm9tool.analysis.profile import DEFAULT, Profile, ProfileError, load_profile
+from prm9tool.characterize.canrig import rig_for_session
 from prm9tool.characterize.procedures import LimitExceededError
-from prm9tool.characterize.rig import EmulatorRig, Rig, SessionRig, Stopped, ValveFaultError
+from prm9tool.characterize.rig import EmulatorRig, Rig, Stopped, ValveFaultError
 from prm9tool.characterize.run import Characterization, characterize, report_data, write_csv_files
-from prm9tool.cli.batch import BatchError, select
+from prm9tool.cli.batch import BatchError, can_options, select
 from prm9tool.device.factory import emulated_valve, open_session, parse_emulator_spec
 from prm9tool.errors import CommunicationError, ExitCode, Prm9Error
 from prm9tool.files.atomicfile import atomic_write
@@ -100,10 +101,16 @@ def _rig(args: argparse.Namespace) -> tuple[Rig, Callable[[], None]]:
     args.all = False
     entry = select(args)[0]
     try:
-        session = open_session(entry, paced=False)
+        session = open_session(entry, paced=False, can_link=can_options(args))
     except Prm9Error as exc:
         raise BatchError(ExitCode.COMMUNICATION, str(exc)) from exc
-    return SessionRig(session, "USB"), session.close
+    try:
+        return rig_for_session(session), session.close
+    except BaseException as exc:
+        session.close()
+        if isinstance(exc, Prm9Error):
+            raise BatchError(ExitCode.COMMUNICATION, str(exc)) from exc
+        raise
 
 
 def _write(result: Characterization, outputs: tuple[Path | None, Path | None]) -> None:

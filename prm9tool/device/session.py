@@ -78,6 +78,9 @@ class DeviceInfo:
     firmware: str
     protocol_version: int
     device_id: str
+    # parameters whose change moves the valve away from this link at its next power-up (over
+    # CANopen its node ID and bit rate); the GUI warns when one is changed online
+    link_parameters: tuple[str, ...] = ()
 
 
 @dataclass

@@ -41,3 +41,17 @@ def record_characterizations(recorder: Recorder) -> Callable[[], None]:
     hook = recording_hook(recorder)
     RESULT_HOOKS.append(hook)
     return lambda: RESULT_HOOKS.remove(hook) if hook in RESULT_HOOKS else None
+
+
+def run_with_history(connection: Any, run: Callable[[], Characterization]) -> Characterization:
+    """``run()`` (a characterization on the connection's valve, in the GUI's worker) with its
+    result recorded into the connection's history; offline (the simulated valve) nothing is
+    recorded."""
+    hook = getattr(connection, "history", None)
+    if hook is None or not getattr(connection, "is_online", False):
+        return run()
+    forget = record_characterizations(hook.recorder)
+    try:
+        return run()
+    finally:
+        forget()

@@ -54,6 +54,18 @@ class ValveListing(ValveIdentity, Protocol):
     def description(self) -> str:
         """A line about the valve in English (the device layer's words)."""
 
+    @property
+    def nmt_state(self) -> str:
+        """CAN nodes: the NMT state their heartbeat told during the scan ("" otherwise)."""
+
+    @property
+    def heartbeat_age_s(self) -> float | None:
+        """CAN nodes: seconds since their last heartbeat (None: none heard, or not CAN)."""
+
+    @property
+    def last_emcy(self) -> str:
+        """CAN nodes: the last EMCY heard ("" none)."""
+
 
 ListedValves = list[ValveListing] | Exception  # what listing the valves delivers: them, or why not
 

@@ -16,7 +16,8 @@ from typing import Any
 
 from PySide6.QtCore import QObject, Signal
 
-from prm9tool.characterize.rig import Rig, SessionRig
+from prm9tool.characterize.canrig import LinkTooSlowError, rig_for_session
+from prm9tool.characterize.rig import Rig
 from prm9tool.errors import CommunicationError, Prm9Error
 from prm9tool.translate import error_text
 
@@ -79,6 +80,8 @@ class TuningRunner(QObject):
                 rig.stop.set()
         try:
             return procedure(rig)
+        except LinkTooSlowError as exc:  # the test cannot run at this rate; the link is fine
+            return _Failure(error_text(exc))
         except CommunicationError:
             raise
         except Prm9Error as exc:
@@ -113,7 +116,8 @@ class ValveRunner(TuningRunner):
             self.connection.stop_stream()
         link = _link_name(self.connection.device)
         self.connection.run_job(
-            f"tuning:{kind}", lambda session: self._execute(SessionRig(session, link), procedure)
+            f"tuning:{kind}",
+            lambda session: self._execute(rig_for_session(session, link), procedure),
         )
 
     def _on_operation_finished(self, name: str, result: object) -> None:

@@ -33,6 +33,7 @@ from shiboken6 import isValid
 from prm9tool.catalogue.typekey import TypeKey
 from prm9tool.errors import TypeKeyError
 from prm9tool.files.can_type_keys import remember
+from prm9tool.online.connection_protocol import ListedValves, ValveListing
 from prm9tool.paths import user_data_dir
 from prm9tool.translate import error_text
 
@@ -51,7 +52,7 @@ INTERFACES = (
 BITRATES = (20_000, 50_000, 125_000, 250_000, 500_000, 800_000, 1_000_000)  # table 7-17
 DEFAULT_BITRATE = 500_000  # delivery state (manual table 7-22)
 # (bus as a dict, deliver): scans off the GUI thread, deliver(entries or exception) on it
-Scanner = Callable[[dict[str, object], Callable[[object], None]], None]
+Scanner = Callable[[dict[str, object], Callable[[ListedValves], None]], None]
 
 
 def saved_bus(settings: QSettings) -> dict[str, object]:
@@ -75,7 +76,7 @@ class CanBusDialog(QDialog):
         super().__init__(parent)
         self.setWindowTitle(self.tr("CAN bus"))
         self._scan, self._settings = scan, settings
-        self._entries: list[object] = []
+        self._entries: list[ValveListing] = []
         bus = saved_bus(settings)
         self.interface = QComboBox()
         self.interface.setEditable(True)
@@ -143,9 +144,7 @@ class CanBusDialog(QDialog):
         if not 0 <= row < len(self._entries):
             return None
         entry = self._entries[row]
-        if getattr(entry, "kind", "") != "can":
-            return None
-        return str(getattr(entry, "device_id", ""))
+        return entry.device_id if entry.kind == "can" else None
 
     def _remember(self) -> None:
         bus = self.bus()
@@ -159,7 +158,7 @@ class CanBusDialog(QDialog):
         self.state.setText(self.tr("Searching the bus (node IDs 1…127)…"))
         self._scan(self.bus(), self._on_scanned)
 
-    def _on_scanned(self, found: object) -> None:
+    def _on_scanned(self, found: ListedValves) -> None:
         if not isValid(self):
             return
         self.search.setEnabled(True)
@@ -169,28 +168,28 @@ class CanBusDialog(QDialog):
                 self.tr("The bus could not be searched: {0}").format(error_text(found))
             )
             return
-        nodes = [e for e in found if getattr(e, "kind", "") in ("can", "not-prm9")]  # type: ignore[attr-defined]
+        nodes = [e for e in found if e.kind in ("can", "not-prm9")]
         self._fill(nodes)
-        valves = sum(getattr(e, "kind", "") == "can" for e in nodes)
+        valves = sum(e.kind == "can" for e in nodes)
         self.state.setText(
             self.tr("{0} nodes answered, {1} of them PRM9 valves.").format(len(nodes), valves)
         )
 
-    def _fill(self, entries: list[object]) -> None:
+    def _fill(self, entries: list[ValveListing]) -> None:
         self._entries = entries
         self.table.setRowCount(len(entries))
         for row, entry in enumerate(entries):
-            valve = getattr(entry, "kind", "") == "can"
-            age = getattr(entry, "heartbeat_age_s", None)
+            valve = entry.kind == "can"
+            age = entry.heartbeat_age_s
             cells = [
-                str(getattr(entry, "device_id", "")),
-                str(getattr(entry, "type_key", "")) if valve else self.tr("not a PRM9"),
-                str(getattr(entry, "serial", "")) if valve else "",
-                str(getattr(entry, "firmware", "")),
-                str(getattr(entry, "nmt_state", "")),
+                entry.device_id,
+                entry.type_key if valve else self.tr("not a PRM9"),
+                str(entry.serial) if valve else "",
+                entry.firmware,
+                entry.nmt_state,
                 self.tr("{0:.1f} s ago").format(age) if age is not None else self.tr("none"),
-                str(getattr(entry, "last_emcy", "")),
-                str(getattr(entry, "description", "")),
+                entry.last_emcy,
+                entry.description,
             ]
             for column, text in enumerate(cells):
                 item = QTableWidgetItem(text)
@@ -207,16 +206,16 @@ class CanBusDialog(QDialog):
         if self.selected_device_id() is None:
             return
         entry = self._entries[self.table.currentRow()]
-        if str(getattr(entry, "type_key", "")).startswith("?") and not self._ask_type_key(entry):
+        if entry.type_key.startswith("?") and not self._ask_type_key(entry):
             return
         self._remember()
         self.accept()
 
-    def _ask_type_key(self, entry: object) -> bool:
+    def _ask_type_key(self, entry: ValveListing) -> bool:
         """A real valve does not tell its type key (docs/can-link.md): ask for the one on its
         label, check it against what its objects tell, remember it for its serial number."""
-        serial = int(getattr(entry, "serial", 0))
-        told = "E04" if "E04" in str(getattr(entry, "type_key", "")) else "E02"
+        serial = entry.serial
+        told = "E04" if "E04" in entry.type_key else "E02"
         text, ok = QInputDialog.getText(
             self,
             self.tr("Type key of the valve"),

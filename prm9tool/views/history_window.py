@@ -154,21 +154,22 @@ class HistoryWindow(QDialog):
 
     def _read(self, serial: int) -> None:
         try:
-            records = self._recorder.store().records(serial)
+            store = self._recorder.store()
+            records = store.records(serial)
         except Prm9Error as exc:
             self.loaded.emit(None, exc)
             return
-        self.loaded.emit(records, None)
+        self.loaded.emit((records, store.shown_url), None)
 
     def _on_loaded(self, records: object, error: object) -> None:
         if isinstance(error, Exception):
             self.model.set_records([])
             self.state.setText(error_text(error))
         else:
-            assert isinstance(records, list)
-            self.model.set_records(records)
-            self.state.setText(self.tr("%n record(s) in {0}", "", len(records)).format(
-                self._recorder.store().shown_url))  # fmt: skip
+            assert isinstance(records, tuple)
+            rows, where = records
+            self.model.set_records(rows)
+            self.state.setText(self.tr("%n record(s) in {0}", "", len(rows)).format(where))
             self.table.scrollToBottom()
         self._update_buttons()
 

@@ -33,6 +33,7 @@ from prm9tool.views.emulated_valve import EmulatedValveMenu
 from prm9tool.views.file_workflow import FileWorkflow
 from prm9tool.views.help_dialog import HelpWindow, about_html, open_homepage
 from prm9tool.views.icons import icon
+from prm9tool.views.link_guard import LinkGuard
 from prm9tool.views.parameter_view import ParameterListView
 from prm9tool.views.record_actions import RecordActions
 from prm9tool.views.status_bar import MainStatusBar
@@ -74,6 +75,7 @@ class MainWindow(QMainWindow):
         self.records = RecordActions(self)
         self.compare = CompareWorkflow(self, doc, undo, access, connection, self.sync, self.valve)
         self.dcf = DcfExport(doc, self)
+        self.link_guard = LinkGuard(doc, connection, self)
         self.commands = MainActions(self)
         self.commands.build_menus(self.menuBar())
         self.emulated_menu = EmulatedValveMenu(self.control, doc, self).attach(self.commands)

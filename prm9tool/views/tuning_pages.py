@@ -21,22 +21,24 @@ from PySide6.QtWidgets import (
 from prm9tool.analysis.model import Targets
 from prm9tool.analysis.pid import to_parameters
 from prm9tool.analysis.profile import DEFAULT
-from prm9tool.analysis.static import linearization_values, propose_linearization
-from prm9tool.characterize.autotune import AutotuneResult, compare_steps, model_tune
+from prm9tool.characterize.autotune import (
+    AutotuneResult,
+    compare_steps,
+    model_tune,
+    simulate_steps,
+)
 from prm9tool.characterize.procedures import (
     LOOPS,
     BodeResult,
     CriticalGainResult,
-    StaticResult,
+    StepResult,
     bode_test,
     critical_gain_tune,
-    static_test,
 )
 from prm9tool.characterize.run import Characterization
 from prm9tool.views.tuning_plot import COLOURS, Plot, Series, paint_plot
 from prm9tool.views.tuning_report import (
     bode_plots,
-    static_plot,
 )
 
 if TYPE_CHECKING:
@@ -150,10 +152,11 @@ class AutotunePage(Page):
         what = self.tr("P only with rising gain until the loop oscillates (steps of 5 %, "
                        "oscillation stopped at ±%1 %), about 5 s").replace("%1", f"{limit:g}")  # fmt: skip
 
-        def critical(rig: Any) -> tuple[CriticalGainResult, Any]:
+        def critical(rig: Any) -> tuple[CriticalGainResult, Any, Any]:
             found = critical_gain_tune(rig, loop, limit_pct=limit)
             proposed = to_parameters(LOOPS[loop].prefix, found.gains)
-            return found, compare_steps(rig, loop, proposed, amplitude, duration)
+            simulated = simulate_steps(rig, loop, proposed, amplitude, duration)
+            return found, compare_steps(rig, loop, proposed, amplitude, duration), simulated
 
         self.window_.start("autotune", what, critical)
 
@@ -176,7 +179,7 @@ class AutotunePage(Page):
             found: CriticalGainResult = result[0]  # type: ignore[index]
             before, after = result[1]  # type: ignore[index]
             self.proposal = to_parameters(prefix, found.gains)
-            simulated = None
+            simulated = result[2][1]  # type: ignore[index]  # a StepResult on the emulator
             head = self.tr("Critical gain Kkr = %1, period Tkr = %2 ms: K = 0.5·Kkr, Ti = 0.8·Tkr, Td = 0.12·Tkr.").replace(
                 "%1", f"{found.kkr:.2f}").replace("%2", f"{found.tkr * 1000:.1f}")  # fmt: skip
         from prm9tool.views.tuning_window import gain_text
@@ -185,35 +188,41 @@ class AutotunePage(Page):
             f"{k}: {gain_text(k, present[k])} → <b>{gain_text(k, v)}</b>"
             for k, v in self.proposal.items()
         ]
-        self.result.setText(
-            head + "<br>" + " · ".join(rows) + "<br>" + self._figures(before, after)
-        )
+        figures = self._figures(before, after)
+        if isinstance(simulated, StepResult):
+            figures += " " + self.tr("Proposed, simulated on the emulator's firmware: %1.").replace(
+                "%1", self._step_text(simulated)
+            )
+        self.result.setText(head + "<br>" + " · ".join(rows) + "<br>" + figures)
         series = [
             Series(before.record.t * 1000, before.record.channels[LOOPS[loop].actual], self.tr("before (measured)"), COLOURS[0]),
             Series(after.record.t * 1000, after.record.channels[LOOPS[loop].actual], self.tr("proposed (measured)"), COLOURS[1]),
         ]  # fmt: skip
-        if simulated is not None:
+        if isinstance(simulated, StepResult):
+            t, y = simulated.record.t * 1000, simulated.record.channels[LOOPS[loop].actual]
+            series.append(Series(t, y, self.tr("proposed (simulated)"), COLOURS[2], True))
+        elif simulated is not None:
             t = np.arange(len(simulated)) * 0.2
             series.append(Series(t, simulated, self.tr("proposed (simulated)"), COLOURS[2], True))
         self.plot.show_plots([Plot(self.tr("Step response"), self.tr("time [ms]"), "%", series)])
         self.accept_button.setEnabled(True)
 
-    def _figures(self, before: Any, after: Any) -> str:
-        def text(step: Any) -> str:
-            f = step.figures
-            if f is None:
-                return self.tr("no response")
-            settle = "—" if math.isnan(f.settling_time) else f"{f.settling_time * 1000:.1f} ms"
-            return (
-                self.tr("overshoot %1 %, settling %2")
-                .replace("%1", f"{f.overshoot:.1f}")
-                .replace("%2", settle)
-            )
+    def _step_text(self, step: Any) -> str:
+        f = step.figures
+        if f is None:
+            return self.tr("no response")
+        settle = "—" if math.isnan(f.settling_time) else f"{f.settling_time * 1000:.1f} ms"
+        return (
+            self.tr("overshoot %1 %, settling %2")
+            .replace("%1", f"{f.overshoot:.1f}")
+            .replace("%2", settle)
+        )
 
+    def _figures(self, before: Any, after: Any) -> str:
         return (
             self.tr("Before: %1. Proposed: %2.")
-            .replace("%1", text(before))
-            .replace("%2", text(after))
+            .replace("%1", self._step_text(before))
+            .replace("%2", self._step_text(after))
         )
 
     def accept(self) -> None:
@@ -278,71 +287,3 @@ class BodePage(Page):
         ):
             self.tr_label(key, text)  # fmt: skip
         self.run_button.setText(self.tr("Measure the frequency response"))
-
-
-class StaticPage(Page):
-    """A slow triangle; hysteresis, linearity, dead band, gain; linearization proposal."""
-
-    def __init__(self, window: TuningWindow) -> None:
-        super().__init__(window)
-        from prm9tool.views.tuning_window import spin
-
-        self.period = self.field("period", spin(20.0, 2.0, 600.0, "s"))
-        self.apply_button = QPushButton()
-        self.apply_button.setEnabled(False)
-        self.apply_button.clicked.connect(self.apply)
-        self.buttons.insertWidget(1, self.apply_button)
-        self.proposal: dict[str, int] = {}
-
-    def run(self) -> None:
-        """Triangle over the whole range."""
-        period = self.period.value()
-        what = self.tr("a triangle over the whole range −100 … 100 %, %1 s").replace(
-            "%1", f"{period:g}"
-        )
-        self.window_.start("static", what, lambda rig: static_test(rig, period))
-
-    def show_result(self, result: object) -> None:
-        """Figures, the curve, and the linearization previewed on it."""
-        assert isinstance(result, StaticResult)
-        c = result.characteristic
-        ch = result.record.channels
-        lin = propose_linearization(ch["setpoint_gain"] * 163.84, ch["setpoint_linearized"] * 163.84,
-                                    ch["position_actual"], result.demand)  # fmt: skip
-        self.proposal = linearization_values(lin)
-        fake = Characterization(None, DEFAULT, "", {}, static=result)  # type: ignore[arg-type]
-        plot = static_plot(fake)
-        order = np.argsort(ch["setpoint_linearized"])
-        new_out = np.interp(ch["setpoint_gain"] * 163.84, lin.xs, lin.ys) / 163.84
-        predicted = np.interp(
-            new_out, ch["setpoint_linearized"][order], ch["position_actual"][order]
-        )
-        step = max(1, len(predicted) // 400)
-        plot.series.append(
-            Series(
-                result.demand[::step],
-                predicted[::step],
-                self.tr("linearized (preview)"),
-                COLOURS[3],
-                True,
-            )
-        )
-        self.plot.show_plots([plot])
-        self.result.setText(self.tr("Gain %1, hysteresis %2 %, linearity error %3 %, dead band %4 %.").replace(
-            "%1", f"{c.gain:.3f}").replace("%2", f"{c.hysteresis_pct:.2f}").replace(
-            "%3", f"{c.linearity_pct:.2f}").replace("%4", f"{c.dead_band_pct:.1f}"))  # fmt: skip
-        self.apply_button.setEnabled(True)
-
-    def apply(self) -> None:
-        """The proposed 9 points into the document, one undo step."""
-        if self.proposal:
-            self.window_.accept_values(
-                self.proposal, self.tr("Linearization from the static characteristic")
-            )
-            self.apply_button.setEnabled(False)
-
-    def retranslate(self) -> None:
-        """Texts."""
-        self.tr_label("period", self.tr("Triangle period:"))
-        self.run_button.setText(self.tr("Measure the static characteristic"))
-        self.apply_button.setText(self.tr("Apply the proposed linearization"))

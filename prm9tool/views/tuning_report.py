@@ -187,6 +187,7 @@ def _header(c: Characterization) -> str:
         (translate("TuningReport", "Acceptance profile"), c.profile.name),
         (translate("TuningReport", "Result"), verdict(c.passed)),
     ]
+    rows += [(translate("TuningReport", "Limited by the link"), note) for note in c.notes]
     body = "".join(f"<tr><td><b>{e(k)}</b></td><td>{e(v)}</td></tr>" for k, v in rows)
     title = e(translate("TuningReport", "PRM9 test report"))
     return f"<h2>{title}</h2><table cellpadding='2'>{body}</table>"

@@ -16,6 +16,7 @@ from PySide6.QtWidgets import (
 
 from prm9tool.analysis.profile import DEFAULT, ProfileError, load_profile
 from prm9tool.characterize.run import Characterization, characterize, write_csv_files
+from prm9tool.online.characterization_history import run_with_history
 from prm9tool.views.tuning_pages import Page
 from prm9tool.views.tuning_report import figure_label, limit_text, value_text, verdict, write_pdf
 
@@ -65,7 +66,9 @@ class ReportPage(Page):
             "%1", ", ".join(f"{a:g}" for a in profile.step_amplitudes_pct)).replace(
             "%2", f"{profile.bode_amplitude_pct:g}").replace(
             "%3", f"{profile.bode_duration_s + profile.static_period_s + 1:.0f}")  # fmt: skip
-        self.window_.start("report", what, lambda rig: characterize(rig, profile))
+        connection = self.window_.connection  # online, the result goes into the history too
+        self.window_.start("report", what, lambda rig: run_with_history(
+            connection, lambda: characterize(rig, profile)))  # fmt: skip
 
     def show_result(self, result: object) -> None:
         """Every figure with its verdict."""

@@ -34,8 +34,9 @@ from prm9tool.model.document import ParameterDocument
 from prm9tool.online.tuning_runner import SimulationRunner, TuningRunner, ValveRunner
 from prm9tool.online.valve_control import ValveControl
 from prm9tool.views.scope_start import offer_enable
-from prm9tool.views.tuning_pages import AutotunePage, BodePage, StaticPage
+from prm9tool.views.tuning_pages import AutotunePage, BodePage, Page
 from prm9tool.views.tuning_report_page import ReportPage
+from prm9tool.views.tuning_static import FlowPage, StaticPage
 
 
 def spin(value: float, low: float, high: float, suffix: str, decimals: int = 1) -> QDoubleSpinBox:
@@ -78,8 +79,9 @@ class TuningWindow(QDialog):
         self.autotune = AutotunePage(self)
         self.bode = BodePage(self)
         self.static = StaticPage(self)
+        self.flow = FlowPage(self) if doc.variant.config is Config.E04 else None
         self.report = ReportPage(self)
-        for page in (self.autotune, self.bode, self.static, self.report):
+        for page in self.pages():
             self.tabs.addTab(page, "")
         top = QFormLayout()
         self._loop_label = QLabel()
@@ -150,15 +152,19 @@ class TuningWindow(QDialog):
 
     def _on_busy_changed(self, busy: bool) -> None:
         self.stop_button.setEnabled(busy)
-        for page in (self.autotune, self.bode, self.static, self.report):
+        for page in self.pages():
             page.set_busy(busy)
+
+    def pages(self) -> list[Page]:
+        """The tabs' pages in order (the flow characteristic on E04 only)."""
+        flow = [self.flow] if self.flow is not None else []
+        return [self.autotune, self.bode, self.static, *flow, self.report]
 
     def _on_finished(self, kind: str, result: object) -> None:
         self.status.setText(self.tr("Done."))
-        page = {"autotune": self.autotune, "bode": self.bode, "static": self.static}.get(
-            kind, self.report
-        )
-        page.show_result(result)
+        pages: dict[str, Page] = {"autotune": self.autotune, "bode": self.bode}
+        pages.update(static=self.static, flow=self.flow or self.report)
+        pages.get(kind, self.report).show_result(result)
 
     def _on_failed(self, _kind: str, message: str) -> None:
         self.status.setText(self.tr("Stopped: %1").replace("%1", message))
@@ -195,11 +201,13 @@ class TuningWindow(QDialog):
         else:
             mode = self.tr("Online: the tests move the connected valve.")
         self.mode.setText(mode)
-        names = (self.tr("Autotune"), self.tr("Frequency response"),
-                 self.tr("Static characteristic"), self.tr("Test report"))  # fmt: skip
+        names = [self.tr("Autotune"), self.tr("Frequency response"),
+                 self.tr("Static characteristic"), self.tr("Test report")]  # fmt: skip
+        if self.flow is not None:
+            names.insert(3, self.tr("Flow characteristic (E04)"))
         for k, name in enumerate(names):
             self.tabs.setTabText(k, name)
-        for page in (self.autotune, self.bode, self.static, self.report):
+        for page in self.pages():
             page.retranslate()
         self.status.setText(self.tr("Ready."))
 

@@ -92,7 +92,7 @@ class ValveWorkflow(QObject):
         """Communication → CAN bus: choose the bus and a valve on it, then go online with it."""
         from prm9tool.views.can_bus_dialog import CanBusDialog
 
-        def scan(bus: dict[str, object], deliver: Callable[[object], None]) -> None:
+        def scan(bus: dict[str, object], deliver: Callable[[ListedValves], None]) -> None:
             self._connection.list_devices_async((), deliver, bus)
 
         dialog = CanBusDialog(scan, self._settings, self._window)

@@ -47,6 +47,7 @@ SDO_TIMEOUT_S = 0.5
 STORE_TIMEOUT_S = 3.0  # writing the non-volatile memory takes longer than an SDO answer
 BOOT_TIMEOUT_S = 10.0  # NMT reset node -> boot-up (the valve takes about 2 s, manual §7.6)
 NMT_RESET_NODE = 0x81
+LINK_PARAMETERS = ("NODEID", "BITRATE")  # take effect at power-up: the tool's link moves
 __all__ = ["CanopenSession", "NotAPrm9Error"]
 
 
@@ -123,7 +124,7 @@ class CanopenSession(ValveSession):
             from prm9tool.paths import user_data_dir
 
             key = resolve(found.serial, found.derived, self._type_key_hint, user_data_dir())
-        return DeviceInfo(key, found.serial, found.firmware, 0, self._device_id)
+        return DeviceInfo(key, found.serial, found.firmware, 0, self._device_id, LINK_PARAMETERS)
 
     def upload(
         self,

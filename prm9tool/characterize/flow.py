@@ -1,0 +1,80 @@
+"""E04: the flow characteristic (the actuator's velocity over the spool's opening).
+
+In control mode 4 the process PIDT1 drives the spool. With that controller made proportional
+(Ki = Kd = 0, the valve's own Kp) and the dead-band offsets at 0, a process setpoint step from
+``centre − amplitude`` to ``centre + amplitude`` opens the spool fully and lets it close as the
+actuator approaches: the spool's opening sweeps from 100 % through the working range down to
+the edge of the dead band, where the actuator stops. The step back sweeps the negative side.
+Spool position and process value are recorded in the same firmware cycle, so each sample is
+one point of velocity over opening — the characteristic a spool-position setpoint would give
+in control mode 2 (there the spool follows its setpoint), measured without switching the
+control mode (which an analog-only valve allows only outside DEVICE_MODE_ACTIVE). The
+controller parameters, the chain and the offsets are put back afterwards in every case.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from prm9tool.analysis.deadband import deviation_offset
+from prm9tool.analysis.flow import FlowCharacteristic, flow_characteristic, velocity
+from prm9tool.catalogue import CATALOGUE
+from prm9tool.catalogue.typekey import TypeKey
+from prm9tool.catalogue.variant import Coils, Config
+from prm9tool.characterize.procedures import Record, chain_changes, preserved, record
+from prm9tool.characterize.rig import Rig
+from prm9tool.errors import Prm9Error
+
+QUASI_STATIC_PCT_S = 1500.0  # opening changing faster than this: a transition, not a point
+FLOW_KEYS = ("position_setpoint", "process_actual", "position_actual")  # [1]: band check
+
+
+@dataclass(frozen=True)
+class FlowResult:
+    """The two steps' record, the velocity, the characteristic and the offsets it proposes."""
+
+    record: Record
+    velocity: np.ndarray  # %/s, per sample
+    characteristic: FlowCharacteristic
+    kp: float  # the process controller's Kp during the test
+    offsets: dict[str, int]  # OFFSETPOS/OFFSETNEG that jump over the dead band (deviation)
+
+
+def flow_test(
+    rig: Rig, amplitude_pct: float = 40.0, centre_pct: float = 0.0, duration_s: float = 1.0
+) -> FlowResult:
+    """Steps of the process setpoint ``centre ∓ amplitude`` (see the module docstring)."""
+    key = TypeKey.parse(rig.info.type_key)
+    if key.variant.config is not Config.E04:
+        raise Prm9Error("the flow characteristic is measured on E04 valves (with an actuator)")
+    present = rig.read(["CTRLMODE", "PRCKP"])
+    if present["CTRLMODE"] != 4:
+        raise Prm9Error(
+            "the flow characteristic is measured in control mode 4 (process loop); the valve "
+            f"is in control mode {present['CTRLMODE']}"
+        )
+    if present["PRCKP"] <= 0:
+        raise Prm9Error("the process controller's Kp is 0: the spool would not move")
+    two_coils = key.variant.coils is Coils.AB
+    changes = {**chain_changes(rig, "process"), "PRCKI": 0, "PRCKD": 0, "OFFSETPOS": 0}
+    if two_coils:
+        changes["OFFSETNEG"] = 0
+    fs = rig.info.sample_rate_hz
+    n = int(duration_s * fs)
+    low, high = centre_pct - amplitude_pct, centre_pct + amplitude_pct
+    if not two_coils:  # one coil: the spring returns the actuator, the spool opens one way
+        low = max(low, 0.0)
+    stimulus = np.concatenate([np.full(n, high), np.full(n, low)])
+    with preserved(rig, [], changes):
+        rig.play(np.full(n, low), [FLOW_KEYS[1]])  # settle at the start
+        rec = record(rig, stimulus, list(FLOW_KEYS), centre_pct, amplitude_pct + 15.0)
+    speed = velocity(rec.channels["process_actual"], fs)
+    opening = rec.channels["position_actual"]
+    # the spool crossing its dead band at a step is not a flow point: the smoothed velocity
+    # lags it there; only samples where the spool moves slowly enough count
+    steady = np.abs(velocity(opening, fs)) < QUASI_STATIC_PCT_S
+    flow = flow_characteristic(opening[steady], speed[steady])
+    kp = present["PRCKP"] * CATALOGUE["PRCKP"].scale
+    return FlowResult(rec, speed, flow, kp, deviation_offset(flow.band, kp))

@@ -1,0 +1,116 @@
+"""``prm9tool --characterize --device`` over the links a real valve has: USB (the fake hidapi
+in front of a paced emulated valve) and CANopen (an emulated -CA valve on a virtual bus)."""
+
+from __future__ import annotations
+
+import json
+import sys
+
+import pytest
+from pypdf import PdfReader
+from usb_fakes import FakeHid
+
+from prm9tool.catalogue import CATALOGUE
+from prm9tool.catalogue.commissioning import ENABLE_SEQUENCE
+from prm9tool.cli.main import main
+from prm9tool.device import factory
+from prm9tool.device.emulator import EmulatedValve
+from prm9tool.device.transport.hidapi import HidTransport
+from prm9tool.errors import ExitCode
+
+E02 = "PRM9-06.3Z11/30-24E02S02"
+PATH = b"/dev/hidraw5"
+# short tests: the valve runs in real time behind a link
+SHORT = """name = "short"
+[test]
+step_amplitudes_pct = [25]
+step_duration_s = 0.1
+bode_amplitude_pct = 10
+bode_f_min_hz = 2
+bode_f_max_hz = 100
+bode_duration_s = 1.5
+static_period_s = 4
+[limits]
+step_overshoot_pct = { max = 15 }
+bode_bandwidth_hz = { min = 15 }
+static_linearity_pct = { max = 3 }
+"""
+
+
+@pytest.fixture(autouse=True)
+def _fresh_emulators():
+    yield
+    factory.forget_emulated_valves()
+
+
+@pytest.fixture
+def usb_valve(monkeypatch):
+    fake = FakeHid()
+    monkeypatch.setitem(sys.modules, "hid", fake.as_module())
+    monkeypatch.setitem(sys.modules, "hidraw", fake.as_module())
+    monkeypatch.setattr(HidTransport, "settle_s", 0.0)
+    valve = EmulatedValve(E02, 4711)
+    fake.add(valve, PATH)
+    valve.start()  # the valve's own clock: real time, as on the bench
+    yield valve
+    valve.stop()
+
+
+def test_characterize_over_usb_with_a_paced_valve(usb_valve, tmp_path, capsys):
+    (tmp_path / "short.toml").write_text(SHORT, encoding="utf-8")
+    js = tmp_path / "usb.json"
+    args = ["--characterize", "--device", f"usb:{PATH.decode()}", "--profile",
+            str(tmp_path / "short.toml"), "--json", str(js)]  # fmt: skip
+    assert main(args) == ExitCode.OK, capsys.readouterr().err
+    report = json.loads(js.read_text(encoding="utf-8"))
+    assert report["valve"]["serial"] == 4711
+    assert report["link"] == "USB" and report["sample_rate_hz"] == 5000
+    figures = {f["name"]: f["value"] for f in report["figures"]}
+    assert 15 < figures["bode_bandwidth_hz"] < 100
+    assert 0.9 < figures["static_gain"] < 1.1
+    assert figures["step_25_overshoot_pct"] < 15
+    over = CATALOGUE["SETPOVRON"]
+    assert usb_valve.read(over.index, over.subindex) == 0  # the override is off again
+
+
+@pytest.fixture
+def can_valve(tmp_path, monkeypatch, request):
+    from can_link_rig import make_link_rig
+
+    monkeypatch.setenv("PRM9TOOL_DATA_DIR", str(tmp_path / "data"))
+    rig = make_link_rig(request.node.name, tmp_path, E02 + "-CA")
+    word = CATALOGUE["CONTROLWORD"]
+    for value in ENABLE_SEQUENCE:  # the master enables the valve (commissioning, §7.6)
+        rig.valve.write(word.index, word.subindex, value)
+    rig.valve.start()
+    yield rig
+    rig.valve.stop()
+    rig.close()
+
+
+def test_characterize_over_canopen_at_the_links_rate(can_valve, tmp_path, capsys):
+    (tmp_path / "short.toml").write_text(SHORT, encoding="utf-8")
+    js, pdf = tmp_path / "can.json", tmp_path / "can.pdf"
+    args = ["--characterize", "--device", "can:10", "--can-interface", "virtual",
+            "--can-channel", can_valve.options.channel, "--profile", str(tmp_path / "short.toml"),
+            "--json", str(js), "--report", str(pdf)]  # fmt: skip
+    code = main(args)
+    err = capsys.readouterr().err
+    assert js.exists(), err
+    report = json.loads(js.read_text(encoding="utf-8"))
+    assert report["link"].startswith("CANopen node 10 (virtual "), report["link"]
+    rate = report["sample_rate_hz"]
+    assert 20 <= rate <= 1000  # one SDO write + read per sample, never the USB's 5 kHz
+    assert f"one sample per {1000 / rate:g} ms" in report["link"]
+    figures = {f["name"]: f["value"] for f in report["figures"]}
+    assert 0.9 < figures["static_gain"] < 1.1
+    assert figures["step_25_rise_s"] > 0
+    if rate / 10 < 100:  # the sweep asked up to 100 Hz: the link limits it and says so
+        assert report["notes"] == [
+            f"sweep limited to {rate / 10:g} Hz (of 100 Hz asked) by the link's sample rate "
+            f"of {rate:g} Hz"
+        ]
+        text = " ".join("".join(p.extract_text() for p in PdfReader(pdf).pages).split())
+        assert f"Limited by the link sweep limited to {rate / 10:g} Hz" in text
+    assert code in (ExitCode.OK, ExitCode.OUT_OF_LIMITS), err
+    assert can_valve.working("SETPOVRON") == 0  # the override is off again
