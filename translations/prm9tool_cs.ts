@@ -1677,6 +1677,10 @@ Uvolnit ho nyní (NMT start, řídicí slovo 08h → 09h → 0Bh → 0Fh)?</tran
             <translation>emulovaný ventil {0}, výrobní číslo {1}</translation>
         </message>
         <message>
+            <source>cannot be used (remove it): {0}</source>
+            <translation>nelze použít (odeberte jej): {0}</translation>
+        </message>
+        <message>
             <source>Emulated valve</source>
             <translation>Emulovaný ventil</translation>
         </message>

@@ -1671,6 +1671,10 @@ Jetzt freigeben (NMT Start, Steuerwort 08h → 09h → 0Bh → 0Fh)?</translatio
             <translation>emuliertes Ventil {0}, Seriennummer {1}</translation>
         </message>
         <message>
+            <source>cannot be used (remove it): {0}</source>
+            <translation>nicht verwendbar (bitte entfernen): {0}</translation>
+        </message>
+        <message>
             <source>Emulated valve</source>
             <translation>Emuliertes Ventil</translation>
         </message>
