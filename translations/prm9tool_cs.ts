@@ -48,6 +48,17 @@ Poslední akce možná nebyla dokončena. Uložte svou práci pod novým názvem
         </message>
     </context>
     <context>
+        <name>Autotune</name>
+        <message>
+            <source>The valve did not respond to the step at the present gains: the model is fitted to no response.</source>
+            <translation>Ventil na skok se stávajícími zesíleními nereagoval: model je přizpůsoben nulové odezvě.</translation>
+        </message>
+        <message>
+            <source>The model fits the measurement badly (fit error {0} %, at most {1} %).</source>
+            <translation>Model špatně odpovídá měření (chyba přizpůsobení {0} %, nejvýše {1} %).</translation>
+        </message>
+    </context>
+    <context>
         <name>AutotunePage</name>
         <message>
             <source>steps of %1 % from 0 %, a few times, about %2 s in all</source>
@@ -68,6 +79,10 @@ Poslední akce možná nebyla dokončena. Uložte svou práci pod novým názvem
         <message>
             <source>Proposed, simulated on the emulator's firmware: %1.</source>
             <translation>Návrh, simulovaný na firmwaru emulátoru: %1.</translation>
+        </message>
+        <message>
+            <source>Do not accept these gains: the identification is not trustworthy.</source>
+            <translation>Tato zesílení nepřebírejte: identifikace není důvěryhodná.</translation>
         </message>
         <message>
             <source>before (measured)</source>
@@ -140,6 +155,10 @@ Poslední akce možná nebyla dokončena. Uložte svou práci pod novým názvem
         <message>
             <source>Accept the proposed gains</source>
             <translation>Převzít navržené konstanty</translation>
+        </message>
+        <message>
+            <source>Accept anyway (I checked the measurement)</source>
+            <translation>Přesto převzít (měření jsem zkontroloval)</translation>
         </message>
     </context>
     <context>

@@ -48,6 +48,17 @@ Die letzte Aktion wurde womöglich nicht vollständig ausgeführt. Speichern Sie
         </message>
     </context>
     <context>
+        <name>Autotune</name>
+        <message>
+            <source>The valve did not respond to the step at the present gains: the model is fitted to no response.</source>
+            <translation>Das Ventil hat auf den Sprung mit den aktuellen Verstärkungen nicht reagiert: Das Modell ist an keine Antwort angepasst.</translation>
+        </message>
+        <message>
+            <source>The model fits the measurement badly (fit error {0} %, at most {1} %).</source>
+            <translation>Das Modell passt schlecht zur Messung (Anpassungsfehler {0} %, höchstens {1} %).</translation>
+        </message>
+    </context>
+    <context>
         <name>AutotunePage</name>
         <message>
             <source>steps of %1 % from 0 %, a few times, about %2 s in all</source>
@@ -68,6 +79,10 @@ Die letzte Aktion wurde womöglich nicht vollständig ausgeführt. Speichern Sie
         <message>
             <source>Proposed, simulated on the emulator's firmware: %1.</source>
             <translation>Vorschlag, simuliert mit der Firmware des Emulators: %1.</translation>
+        </message>
+        <message>
+            <source>Do not accept these gains: the identification is not trustworthy.</source>
+            <translation>Übernehmen Sie diese Verstärkungen nicht: Die Identifikation ist nicht vertrauenswürdig.</translation>
         </message>
         <message>
             <source>before (measured)</source>
@@ -140,6 +155,10 @@ Die letzte Aktion wurde womöglich nicht vollständig ausgeführt. Speichern Sie
         <message>
             <source>Accept the proposed gains</source>
             <translation>Vorgeschlagene Verstärkungen übernehmen</translation>
+        </message>
+        <message>
+            <source>Accept anyway (I checked the measurement)</source>
+            <translation>Trotzdem übernehmen (ich habe die Messung geprüft)</translation>
         </message>
     </context>
     <context>
