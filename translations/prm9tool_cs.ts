@@ -273,9 +273,21 @@ Poslední akce možná nebyla dokončena. Uložte svou práci pod novým názvem
             <source>The bus could not be searched: {0}</source>
             <translation>Sběrnici nelze prohledat: {0}</translation>
         </message>
-        <message>
-            <source>{0} nodes answered, {1} of them PRM9 valves.</source>
-            <translation>Odpovědělo uzlů: {0}, z toho ventilů PRM9: {1}.</translation>
+        <message numerus="yes">
+            <source>%n node(s) answered.</source>
+            <translation>
+                <numerusform>Odpověděl %n uzel.</numerusform>
+                <numerusform>Odpověděly %n uzly.</numerusform>
+                <numerusform>Odpovědělo %n uzlů.</numerusform>
+            </translation>
+        </message>
+        <message numerus="yes">
+            <source>%n of them PRM9 valve(s).</source>
+            <translation>
+                <numerusform>Z toho %n ventil PRM9.</numerusform>
+                <numerusform>Z toho %n ventily PRM9.</numerusform>
+                <numerusform>Z toho %n ventilů PRM9.</numerusform>
+            </translation>
         </message>
         <message>
             <source>not a PRM9</source>

@@ -273,9 +273,19 @@ Die letzte Aktion wurde womöglich nicht vollständig ausgeführt. Speichern Sie
             <source>The bus could not be searched: {0}</source>
             <translation>Der Bus konnte nicht durchsucht werden: {0}</translation>
         </message>
-        <message>
-            <source>{0} nodes answered, {1} of them PRM9 valves.</source>
-            <translation>{0} Knoten haben geantwortet, davon {1} PRM9-Ventile.</translation>
+        <message numerus="yes">
+            <source>%n node(s) answered.</source>
+            <translation>
+                <numerusform>%n Knoten hat geantwortet.</numerusform>
+                <numerusform>%n Knoten haben geantwortet.</numerusform>
+            </translation>
+        </message>
+        <message numerus="yes">
+            <source>%n of them PRM9 valve(s).</source>
+            <translation>
+                <numerusform>Davon %n PRM9-Ventil.</numerusform>
+                <numerusform>Davon %n PRM9-Ventile.</numerusform>
+            </translation>
         </message>
         <message>
             <source>not a PRM9</source>
