@@ -3728,6 +3728,26 @@ Zajistěte, aby to hydraulika bezpečně snesla. Tlačítko Stop test kdykoli uk
             <translation>drží svou polohu (stav zařízení HOLD). Uvolněte ho v nabídce Ventil → Stav ventilu.</translation>
         </message>
         <message>
+            <source>an error stops it (device state {0}); the list of errors shows it. Press Enable once the cause is gone.</source>
+            <translation>zastavila ho chyba (stav zařízení {0}); ukazuje ji seznam chyb. Po odstranění příčiny stiskněte „Uvolnit“.</translation>
+        </message>
+        <message>
+            <source>it waits for a CANopen master (NMT {1}, device state {0}). Press NMT start, then Enable (control word 08h → 09h → 0Bh → 0Fh).</source>
+            <translation>čeká na CANopen master (NMT {1}, stav zařízení {0}). Stiskněte „NMT start“ a pak „Uvolnit“ (řídicí slovo 08h → 09h → 0Bh → 0Fh).</translation>
+        </message>
+        <message>
+            <source>its CANopen master stopped it (NMT stopped). Press NMT start.</source>
+            <translation>jeho CANopen master ho zastavil (NMT zastaveno). Stiskněte „NMT start“.</translation>
+        </message>
+        <message>
+            <source>it is not enabled (device state {0}). Press Enable.</source>
+            <translation>není uvolněn (stav zařízení {0}). Stiskněte „Uvolnit“.</translation>
+        </message>
+        <message>
+            <source>it holds its position (device state HOLD). Press Enable.</source>
+            <translation>drží svou polohu (stav zařízení HOLD). Stiskněte „Uvolnit“.</translation>
+        </message>
+        <message>
             <source>offline</source>
             <translation>offline</translation>
         </message>

@@ -3717,6 +3717,26 @@ Stellen Sie sicher, dass die Hydraulik dafür sicher ist. Stopp beendet ihn jede
             <translation>es hält seine Position (Gerätezustand HOLD). Geben Sie es unter Ventil → Ventilstatus frei.</translation>
         </message>
         <message>
+            <source>an error stops it (device state {0}); the list of errors shows it. Press Enable once the cause is gone.</source>
+            <translation>ein Fehler hält es an (Gerätezustand {0}); die Fehlerliste zeigt ihn. Drücken Sie „Freigeben“, sobald die Ursache behoben ist.</translation>
+        </message>
+        <message>
+            <source>it waits for a CANopen master (NMT {1}, device state {0}). Press NMT start, then Enable (control word 08h → 09h → 0Bh → 0Fh).</source>
+            <translation>es wartet auf einen CANopen-Master (NMT {1}, Gerätezustand {0}). Drücken Sie „NMT Start“, dann „Freigeben“ (Steuerwort 08h → 09h → 0Bh → 0Fh).</translation>
+        </message>
+        <message>
+            <source>its CANopen master stopped it (NMT stopped). Press NMT start.</source>
+            <translation>sein CANopen-Master hat es angehalten (NMT gestoppt). Drücken Sie „NMT Start“.</translation>
+        </message>
+        <message>
+            <source>it is not enabled (device state {0}). Press Enable.</source>
+            <translation>es ist nicht freigegeben (Gerätezustand {0}). Drücken Sie „Freigeben“.</translation>
+        </message>
+        <message>
+            <source>it holds its position (device state HOLD). Press Enable.</source>
+            <translation>es hält seine Position (Gerätezustand HOLD). Drücken Sie „Freigeben“.</translation>
+        </message>
+        <message>
             <source>offline</source>
             <translation>offline</translation>
         </message>
