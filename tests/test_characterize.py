@@ -226,3 +226,27 @@ def test_an_identification_without_response_or_with_a_bad_fit_is_not_trustworthy
     assert len(texts) == 2
     assert "did not respond" in texts[0]
     assert "fit error 45 %, at most 20 %" in texts[1]
+
+
+def test_the_rigs_refusals_are_shown_in_the_program_language(qapp):
+    """A refusal stays English on the command line and is translated where a view shows it."""
+    from prm9tool import i18n
+    from prm9tool.characterize.rig import ValveFaultError
+    from prm9tool.translate import error_text
+
+    rig = EmulatorRig(EmulatedValve("PRM9-06.3Z11/30-24E02S02-CA"))
+    rig.valve.advance(2.0)  # booted: a -CA valve waits in INIT for its master
+    with pytest.raises(ValveFaultError) as refused:
+        rig.ensure_active()
+    rig.stop.set()
+    with pytest.raises(Stopped) as stopped:
+        rig.check()
+    assert "does not follow its setpoint: device state INIT (a -CA valve" in str(refused.value)
+    try:
+        i18n.set_language("de")
+        assert error_text(refused.value).startswith("das Ventil folgt seinem Sollwert nicht")
+        assert error_text(stopped.value).startswith("vom Benutzer abgebrochen")
+        i18n.set_language("cs")
+        assert error_text(stopped.value).startswith("zastaveno uživatelem")
+    finally:
+        i18n.set_language("en")

@@ -544,6 +544,41 @@ Poslední akce možná nebyla dokončena. Uložte svou práci pod novým názvem
         </message>
     </context>
     <context>
+        <name>Characterize</name>
+        <message>
+            <source>the model-based autotune needs the controller's output, which this link does not sample (CANopen); use the critical-gain method</source>
+            <translation>automatické ladění podle modelu potřebuje výstup regulátoru, který toto spojení nevzorkuje (CANopen); použijte metodu kritického zesílení</translation>
+        </message>
+        <message>
+            <source>no gains found for the target: {0}</source>
+            <translation>pro zadaný cíl nebyla nalezena žádná zesílení: {0}</translation>
+        </message>
+        <message>
+            <source>stopped by the user; the valve was put back as it was</source>
+            <translation>zastaveno uživatelem; ventil byl vrácen do původního stavu</translation>
+        </message>
+        <message>
+            <source>the valve reported error {0}: {1}</source>
+            <translation>ventil hlásil chybu {0}: {1}</translation>
+        </message>
+        <message>
+            <source>the valve reports error {0} ({1}); nothing was tested</source>
+            <translation>ventil hlásí chybu {0} ({1}); nic nebylo testováno</translation>
+        </message>
+        <message>
+            <source>the valve does not follow its setpoint: device state {0} (a -CA valve with CANopen on waits for its master to enable it); nothing was tested</source>
+            <translation>ventil nesleduje svou žádanou hodnotu: stav zařízení {0} (ventil -CA se zapnutým CANopen čeká, až ho jeho master uvolní); nic nebylo testováno</translation>
+        </message>
+        <message>
+            <source>the valve does not follow its setpoint: device state {0}; nothing was tested</source>
+            <translation>ventil nesleduje svou žádanou hodnotu: stav zařízení {0}; nic nebylo testováno</translation>
+        </message>
+        <message>
+            <source>the valve did not finish booting</source>
+            <translation>ventil nedokončil start</translation>
+        </message>
+    </context>
+    <context>
         <name>CommissioningPanel</name>
         <message>
             <source>Commissioning</source>

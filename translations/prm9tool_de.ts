@@ -542,6 +542,41 @@ Die letzte Aktion wurde womöglich nicht vollständig ausgeführt. Speichern Sie
         </message>
     </context>
     <context>
+        <name>Characterize</name>
+        <message>
+            <source>the model-based autotune needs the controller's output, which this link does not sample (CANopen); use the critical-gain method</source>
+            <translation>das modellbasierte Autotuning braucht den Reglerausgang, den diese Verbindung nicht abtastet (CANopen); verwenden Sie die Methode der kritischen Verstärkung</translation>
+        </message>
+        <message>
+            <source>no gains found for the target: {0}</source>
+            <translation>keine Verstärkungen für das Ziel gefunden: {0}</translation>
+        </message>
+        <message>
+            <source>stopped by the user; the valve was put back as it was</source>
+            <translation>vom Benutzer abgebrochen; das Ventil wurde in den vorherigen Zustand zurückversetzt</translation>
+        </message>
+        <message>
+            <source>the valve reported error {0}: {1}</source>
+            <translation>das Ventil meldete den Fehler {0}: {1}</translation>
+        </message>
+        <message>
+            <source>the valve reports error {0} ({1}); nothing was tested</source>
+            <translation>das Ventil meldet den Fehler {0} ({1}); es wurde nichts getestet</translation>
+        </message>
+        <message>
+            <source>the valve does not follow its setpoint: device state {0} (a -CA valve with CANopen on waits for its master to enable it); nothing was tested</source>
+            <translation>das Ventil folgt seinem Sollwert nicht: Gerätezustand {0} (ein -CA-Ventil mit eingeschaltetem CANopen wartet darauf, dass sein Master es freigibt); es wurde nichts getestet</translation>
+        </message>
+        <message>
+            <source>the valve does not follow its setpoint: device state {0}; nothing was tested</source>
+            <translation>das Ventil folgt seinem Sollwert nicht: Gerätezustand {0}; es wurde nichts getestet</translation>
+        </message>
+        <message>
+            <source>the valve did not finish booting</source>
+            <translation>das Ventil hat den Start nicht abgeschlossen</translation>
+        </message>
+    </context>
+    <context>
         <name>CommissioningPanel</name>
         <message>
             <source>Commissioning</source>

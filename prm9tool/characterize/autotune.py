@@ -120,8 +120,11 @@ def model_tune(
         before = _step(rig, lp, amplitude_pct, 0.0, duration, limit_pct, loop)
         if not np.isfinite(before.record.channels[lp.output]).all():
             raise Prm9Error(
-                "the model-based autotune needs the controller's output, which this link does "
-                "not sample (CANopen); use the critical-gain method"
+                QT_TRANSLATE_NOOP(
+                    "Characterize",
+                    "the model-based autotune needs the controller's output, which this link "
+                    "does not sample (CANopen); use the critical-gain method",
+                )()
             )
         data = [_io(before, lp.output, lp.actual)]
         t1 = from_parameters(lp.prefix, saved).t1
@@ -135,7 +138,11 @@ def model_tune(
             try:
                 chosen = design(model, targets, step, t1, out_lo=out_lo)
             except ValueError as exc:
-                raise Prm9Error(f"no gains found for the target: {exc}") from None
+                raise Prm9Error(
+                    QT_TRANSLATE_NOOP("Characterize", "no gains found for the target: {0}")(
+                        str(exc)
+                    )
+                ) from None
             values = to_parameters(lp.prefix, chosen.gains)
             history.append(values)
             rig.write(values)
