@@ -9,6 +9,7 @@ from __future__ import annotations
 
 from PySide6.QtCore import QCoreApplication
 
+from prm9tool.errors import FileFormatError
 from prm9tool.i18n import current_language
 from prm9tool.messages import Message, message_of
 
@@ -27,6 +28,8 @@ def error_text(error: BaseException) -> str:
     access level) is translated; a device error with a ``summary`` gives that lead sentence
     translated, with its technical English text in brackets; any other gives ``str(error)``.
     """
+    if isinstance(error, FileFormatError) and error.problems:  # each problem translated
+        return "\n".join(translated(p.located(error.path)) for p in error.problems)
     message = message_of(error)
     summary = getattr(error, "summary", None)
     if isinstance(message, Message) or summary is None:

@@ -171,3 +171,49 @@ def test_a_failed_image_write_leaves_memory_and_file_on_the_old_set(tmp_path, mo
     later = EmulatedValve(E04, 5, nv_path=path)  # … and a restart of the process agree
     assert in_process == later.read(*CATALOGUE["LIMTA"].key) == 1500
     assert not list(tmp_path.glob("*.tmp"))
+
+
+def test_the_refused_image_is_explained_in_the_program_language(qapp, tmp_path):
+    from prm9tool import i18n
+    from prm9tool.translate import error_text
+
+    path = tmp_path / "valve.eeprom"
+    EmulatedValve(E02_CA, nv_path=path).store()
+    with pytest.raises(FileFormatError) as refused:
+        EmulatedValve(E04, nv_path=path)
+    try:
+        i18n.set_language("de")
+        assert f"das Abbild gehört zu einem Ventil {E02_CA}, nicht zu {E04}" in error_text(
+            refused.value
+        )
+        i18n.set_language("cs")
+        assert f"obraz patří ventilu {E02_CA}, ne {E04}" in error_text(refused.value)
+    finally:
+        i18n.set_language("en")
+    assert f"belongs to a {E02_CA} valve, not to {E04}" in error_text(refused.value)
+
+
+def test_the_valve_list_says_in_german_why_a_remembered_emulated_valve_cannot_be_used(
+    qtbot, tmp_path, monkeypatch
+):
+    from PySide6.QtCore import QSettings
+
+    from prm9tool import i18n
+    from prm9tool.device import factory
+    from prm9tool.views.hid_dialog import HidConfigurationDialog
+
+    monkeypatch.setenv("PRM9TOOL_DATA_DIR", str(tmp_path))
+    factory.forget_emulated_valves()
+    EmulatedValve(E02_CA, nv_path=factory.emulator_nv_path(7007)).store()
+    _usable, unusable = factory.usable_emulators([f"{E04}:7007"])
+    settings = QSettings(str(tmp_path / "s.ini"), QSettings.Format.IniFormat)
+    try:
+        i18n.set_language("de")
+        dialog = HidConfigurationDialog(lambda _specs, deliver: deliver(unusable), settings)
+        qtbot.addWidget(dialog)
+        dialog.refresh()
+        text = dialog.table.item(0, 4).text()
+    finally:
+        i18n.set_language("en")
+        factory.forget_emulated_valves()
+    assert f"das Abbild gehört zu einem Ventil {E02_CA}, nicht zu {E04}" in text

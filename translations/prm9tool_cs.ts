@@ -2770,6 +2770,26 @@ Ano načte a záznam zařadí do fronty; Ne nenačte nic.</translation>
             <source>{0}: {1} is ambiguous (a thousands separator?); write the number without one, with '{2}' before the decimals</source>
             <translation>{0}: {1} je nejednoznačné (oddělovač tisíců?); napište číslo bez něj, s „{2}“ před desetinnými místy</translation>
         </message>
+        <message>
+            <source>unreadable EEPROM image of an emulated valve: {0}</source>
+            <translation>nečitelný obraz EEPROM emulovaného ventilu: {0}</translation>
+        </message>
+        <message>
+            <source>not an emulator EEPROM image (format {0})</source>
+            <translation>není to obraz EEPROM emulátoru (formát {0})</translation>
+        </message>
+        <message>
+            <source>unsupported EEPROM image version {0}</source>
+            <translation>nepodporovaná verze obrazu EEPROM {0}</translation>
+        </message>
+        <message>
+            <source>the image belongs to a {0} valve, not to {1}: give the emulated valve another serial (TYPEKEY:SERIAL) or delete the file</source>
+            <translation>obraz patří ventilu {0}, ne {1}: dejte emulovanému ventilu jiné výrobní číslo (TYPOVÝ_KLÍČ:ČÍSLO) nebo soubor smažte</translation>
+        </message>
+        <message>
+            <source>the EEPROM image has no 'values' table</source>
+            <translation>obraz EEPROM nemá tabulku 'values'</translation>
+        </message>
     </context>
     <context>
         <name>RampsDialog</name>

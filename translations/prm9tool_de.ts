@@ -2759,6 +2759,26 @@ Ja lädt hoch und stellt den Eintrag in die Warteschlange; Nein lädt nichts hoc
             <source>{0}: {1} is ambiguous (a thousands separator?); write the number without one, with '{2}' before the decimals</source>
             <translation>{0}: {1} ist mehrdeutig (ein Tausendertrennzeichen?); schreiben Sie die Zahl ohne Trennzeichen, mit „{2}“ vor den Nachkommastellen</translation>
         </message>
+        <message>
+            <source>unreadable EEPROM image of an emulated valve: {0}</source>
+            <translation>unlesbares EEPROM-Abbild eines emulierten Ventils: {0}</translation>
+        </message>
+        <message>
+            <source>not an emulator EEPROM image (format {0})</source>
+            <translation>kein EEPROM-Abbild des Emulators (Format {0})</translation>
+        </message>
+        <message>
+            <source>unsupported EEPROM image version {0}</source>
+            <translation>nicht unterstützte Version {0} des EEPROM-Abbilds</translation>
+        </message>
+        <message>
+            <source>the image belongs to a {0} valve, not to {1}: give the emulated valve another serial (TYPEKEY:SERIAL) or delete the file</source>
+            <translation>das Abbild gehört zu einem Ventil {0}, nicht zu {1}: Geben Sie dem emulierten Ventil eine andere Seriennummer (TYPSCHLÜSSEL:SERIENNUMMER) oder löschen Sie die Datei</translation>
+        </message>
+        <message>
+            <source>the EEPROM image has no 'values' table</source>
+            <translation>das EEPROM-Abbild hat keine Tabelle 'values'</translation>
+        </message>
     </context>
     <context>
         <name>RampsDialog</name>

@@ -45,6 +45,7 @@ class DeviceEntry:
     nmt_state: str = ""  # CAN nodes: as the heartbeat said during the scan
     heartbeat_age_s: float | None = None  # CAN nodes: seconds since the last heartbeat
     last_emcy: str = ""  # CAN nodes: the last EMCY heard ("" none)
+    error: Exception | None = None  # emulator-unusable: why, for the program language
 
 
 def emulator_nv_path(serial: int) -> Path:
@@ -118,7 +119,9 @@ def usable_emulators(specs: Sequence[str]) -> tuple[list[str], list[DeviceEntry]
             key, _, serial = spec.rpartition(":")
             number = int(serial) if serial.isdigit() else 0
             unusable.append(
-                DeviceEntry(f"{EMULATOR}:{spec}", UNUSABLE_EMULATOR, key, number, "", str(exc))
+                DeviceEntry(
+                    f"{EMULATOR}:{spec}", UNUSABLE_EMULATOR, key, number, "", str(exc), error=exc
+                )
             )
         else:
             usable.append(spec)

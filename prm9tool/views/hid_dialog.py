@@ -211,7 +211,9 @@ class HidConfigurationDialog(QDialog):
             if cells[0] == "emulator":  # the device layer describes it in English
                 cells[4] = self.tr("emulated {0}, serial {1}").format(cells[1], cells[2])
             elif cells[0] == UNUSABLE:
-                cells[4] = self.tr("cannot be used (remove it): {0}").format(cells[4])
+                why = getattr(entry, "error", None)  # the device layer's reason, translatable
+                reason = error_text(why) if isinstance(why, Exception) else cells[4]
+                cells[4] = self.tr("cannot be used (remove it): {0}").format(reason)
             cells[0] = self._kind_text(cells[0])
             for column, cell in enumerate(cells):
                 self.table.setItem(row, column, QTableWidgetItem(cell))

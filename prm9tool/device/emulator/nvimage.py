@@ -16,6 +16,17 @@ from pathlib import Path
 
 from prm9tool.catalogue import ObjAccess, Parameter
 from prm9tool.errors import FileFormatError, FileProblem
+from prm9tool.messages import QT_TRANSLATE_NOOP
+
+_UNREADABLE = QT_TRANSLATE_NOOP("Problems", "unreadable EEPROM image of an emulated valve: {0}")
+_NOT_AN_IMAGE = QT_TRANSLATE_NOOP("Problems", "not an emulator EEPROM image (format {0})")
+_VERSION = QT_TRANSLATE_NOOP("Problems", "unsupported EEPROM image version {0}")
+_OTHER_TYPE = QT_TRANSLATE_NOOP(
+    "Problems",
+    "the image belongs to a {0} valve, not to {1}: give the emulated valve another serial "
+    "(TYPEKEY:SERIAL) or delete the file",
+)
+_NO_VALUES = QT_TRANSLATE_NOOP("Problems", "the EEPROM image has no 'values' table")
 
 FORMAT = "prm9tool-emulator-eeprom"
 VERSION = 1
@@ -68,24 +79,19 @@ class NvImage:
         try:
             data = json.loads(path.read_text(encoding="utf-8"))
         except (OSError, ValueError) as exc:
-            problem = FileProblem(0, f"unreadable EEPROM image: {exc}")
+            problem = FileProblem(0, _UNREADABLE(str(exc)))
             raise FileFormatError(str(path), [problem]) from exc
         problems = []
         if not isinstance(data, dict) or data.get("format") != FORMAT:
-            problems.append(FileProblem(0, f"not an emulator EEPROM image (format {FORMAT!r})"))
+            problems.append(FileProblem(0, _NOT_AN_IMAGE(repr(FORMAT))))
         elif data.get("version") != VERSION:
-            problems.append(FileProblem(0, f"unsupported image version {data.get('version')!r}"))
+            problems.append(FileProblem(0, _VERSION(repr(data.get("version")))))
         elif data.get("type_key") != self.type_key:
             problems.append(
-                FileProblem(
-                    0,
-                    f"the image belongs to a {data.get('type_key')} valve, not to "
-                    f"{self.type_key}: give the emulated valve another serial "
-                    f"(TYPEKEY:SERIAL) or delete the file",
-                )
+                FileProblem(0, _OTHER_TYPE(str(data.get("type_key")), str(self.type_key)))
             )
         elif not isinstance(data.get("values"), dict):
-            problems.append(FileProblem(0, "the image has no 'values' table"))
+            problems.append(FileProblem(0, _NO_VALUES()))
         if problems:
             raise FileFormatError(str(path), problems)
         return {str(k): v for k, v in data["values"].items() if isinstance(v, (int, str))}
