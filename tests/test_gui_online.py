@@ -473,3 +473,22 @@ def test_a_broken_usb_stack_still_offers_the_hid_configuration(qtbot, window, mo
     assert "Listing the valves failed: The valve could not be reached. (hidapi:" in shown[0]
     assert "Listing the valves failed" in window.statusBar().currentMessage()
     assert not window.connection.is_online
+
+
+def test_going_online_again_retries_the_can_node_chosen_last_not_the_remembered_emulator(
+    qtbot, tmp_path, monkeypatch
+):
+    """``--device can:10`` while the node was still booting, then F5: the CAN node again."""
+    from prm9tool.views.hid_dialog import EMULATORS_KEY, SELECTED_KEY
+
+    with main_window(qtbot, tmp_path) as window:
+        window.settings.setValue(EMULATORS_KEY, [f"{E02}:4001"])
+        window.settings.setValue(SELECTED_KEY, f"emulator:{E02}:4001")
+        tried: list[str] = []
+        monkeypatch.setattr(
+            window.connection, "go_online", lambda e: tried.append(getattr(e, "device_id", e))
+        )
+        window.valve.go_online("can:10")  # what app.start does for --device can:10
+        window.valve.go_online()  # F5 after that attempt failed
+        qtbot.waitUntil(lambda: len(tried) == 2, timeout=5000)
+        assert tried == ["can:10", "can:10"]

@@ -127,12 +127,17 @@ class ValveWorkflow(QObject):
         return self.configure_hid()
 
     def go_online(self, entry: ValveListing | str | None = None) -> None:
-        """Connect to ``entry`` (a listed valve or a device id); without one, list the valves (off the GUI thread) and take
+        """Connect to ``entry`` (a listed valve or a device id); without one, retry the valve
+        chosen last: a CAN node directly, else list the valves (off the GUI thread) and take
         :meth:`chosen_entry`."""
         if self._connection.is_online:
             return
         if entry is not None:
             self._connect(entry)
+            return
+        chosen = str(self._settings.value(SELECTED_KEY, ""))
+        if chosen.startswith("can:"):  # a CAN node is not listed: retry it as it was chosen
+            self._connect(chosen)
             return
         self.message_posted.emit(self.tr("Looking for valves…"))
         self._connection.list_devices_async(saved_emulators(self._settings), self._on_listed)
@@ -168,6 +173,8 @@ class ValveWorkflow(QObject):
         self._connect(device_id)
 
     def _connect(self, entry: ValveListing | str) -> None:
+        device_id = entry if isinstance(entry, str) else entry.device_id
+        self._settings.setValue(SELECTED_KEY, device_id)  # going online again retries this one
         self.message_posted.emit(self.tr("Connecting to {0}…").format(_name(entry)))
         self._connection.go_online(entry)
 
