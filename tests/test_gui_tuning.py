@@ -310,7 +310,22 @@ def test_an_untrustworthy_fit_proposes_no_gains_without_an_explicit_override(
     assert "not trustworthy" in page.result.text()
     assert not page.accept_button.isEnabled()
     assert page.override.isVisible()
+    shot(window, "autotune_untrusted")
     page.override.setChecked(True)
     assert page.accept_button.isEnabled()
     page.accept_button.click()
     assert window.doc.value("POSKP") == page.proposal["POSKP"]
+
+
+def test_the_legend_goes_to_the_corner_the_curves_leave_free(qapp):
+    """A step response fills the top right (where the legend used to be): the legend moves."""
+    from PySide6.QtCore import QRectF
+
+    from prm9tool.views.tuning_plot import legend_box
+
+    area = QRectF(0, 0, 400, 200)
+    t = np.linspace(0, 400, 401)
+    step = np.where(t < 40, 200.0, 10.0)  # pixels: rises at once, then along the top
+    box = legend_box(area, (120, 50), np.column_stack([t, step]))
+    assert (box.left(), box.top()) == (280, 150)  # bottom right: nothing drawn there
+    assert legend_box(area, (120, 50), np.zeros((0, 2))).topRight() == area.topRight()

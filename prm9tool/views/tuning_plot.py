@@ -137,15 +137,57 @@ def paint_plot(painter: QPainter, rect: QRectF, plot: Plot, ink: QColor | None =
     for s in plot.series:
         _line(painter, s, px, py)
     painter.restore()
-    width = max((metrics.horizontalAdvance(s.label) for s in plot.series), default=0) + line
-    left = area.right() - width - 2 * line
+    if not plot.series:
+        return
+    width = max(metrics.horizontalAdvance(s.label) for s in plot.series) + line * 2.3
+    size = (width, line * (len(plot.series) + 0.4))
+    points = _pixels(plot.series, px, py, plot.logx)
+    box = legend_box(area.adjusted(line * 0.5, line * 0.5, -line * 0.5, -line * 0.5), size, points)
+    backdrop = QColor("black" if ink.lightness() > 128 else "white")  # under the text
+    backdrop.setAlpha(220)
+    painter.fillRect(box, backdrop)
     for k, s in enumerate(plot.series):
-        y = area.top() + line * (k + 0.3)
+        y = box.top() + line * (k + 0.2)
         painter.setPen(QPen(QColor(s.colour), 2))
-        painter.drawLine(QPointF(left, y + line / 2), QPointF(left + line * 1.5, y + line / 2))
+        painter.drawLine(
+            QPointF(box.left() + line * 0.3, y + line / 2),
+            QPointF(box.left() + line * 1.8, y + line / 2),
+        )
         painter.setPen(QPen(ink, 0))
-        box = QRectF(left + line * 1.8, y, width, line)
-        painter.drawText(box, Qt.AlignmentFlag.AlignLeft, s.label)
+        painter.drawText(
+            QRectF(box.left() + line * 2.1, y, width, line), Qt.AlignmentFlag.AlignLeft, s.label
+        )
+
+
+def _pixels(series: Sequence[Series], px: object, py: object, logx: bool) -> np.ndarray:
+    """The finite data points of ``series`` (at most ~500 each) in pixels, shape (n, 2)."""
+    rows: list[tuple[float, float]] = []
+    for s in series:
+        ok = np.isfinite(s.x) & np.isfinite(s.y) & ((s.x > 0) if logx else True)
+        x, y = s.x[ok], s.y[ok]
+        step = max(1, len(x) // 500)
+        rows += [(px(float(a)), py(float(b))) for a, b in zip(x[::step], y[::step], strict=True)]  # type: ignore[operator]
+    return np.array(rows, dtype=float).reshape(-1, 2)
+
+
+def legend_box(area: QRectF, size: tuple[float, float], points: np.ndarray) -> QRectF:
+    """The corner of ``area`` for a legend of ``size`` (w, h) that covers the fewest of the
+    data ``points`` (pixels, shape (n, 2)); top right on a tie, then top left, bottom right,
+    bottom left."""
+    w, h = size
+    corners = [
+        QRectF(area.right() - w, area.top(), w, h),
+        QRectF(area.left(), area.top(), w, h),
+        QRectF(area.right() - w, area.bottom() - h, w, h),
+        QRectF(area.left(), area.bottom() - h, w, h),
+    ]
+
+    def covered(box: QRectF) -> int:
+        x, y = points[:, 0], points[:, 1]
+        inside = (x >= box.left()) & (x <= box.right()) & (y >= box.top()) & (y <= box.bottom())
+        return int(inside.sum())
+
+    return min(corners, key=covered)
 
 
 def _marker(painter: QPainter, a: QPointF, b: QPointF, text: str, ink: QColor) -> None:
