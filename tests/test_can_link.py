@@ -57,6 +57,7 @@ def test_identify_reads_the_manual_objects(rig, data_dir):
         assert session.info.serial == rig.valve.serial
         assert session.info.device_id == "can:10"
         assert session.read("SNV") == rig.valve.serial
+        assert session.info.stream_rate_limit_hz == pytest.approx(1000.0)  # the 1 ms SYNC
 
 
 def test_upload_writes_verifies_and_stores(rig, data_dir):

@@ -96,6 +96,9 @@ class DeviceInfo:
     link_parameters: tuple[str, ...] = ()
     # over CAN: the bus (python-can interface, channel, bit rate in bit/s or None) it answers on
     can_bus: tuple[str, str, int | None] | None = None
+    # the fastest oscilloscope sample rate the link delivers without losing samples (0: the
+    # valve's own 5 kHz stream); over CANopen the SYNC + TPDO1 pace of docs/can-link.md
+    stream_rate_limit_hz: float = 0.0
 
 
 @dataclass

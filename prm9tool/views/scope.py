@@ -298,6 +298,9 @@ class ScopeWidget(QWidget):
     def _on_online_changed(self, online: bool) -> None:
         if online:
             self._generator_note = ""
+            device = getattr(self._connection, "device", None)
+            limit = getattr(device, "stream_rate_limit_hz", 0.0)
+            self.controls.limit_rates(float(limit or 0.0))  # over CANopen: what the bus delivers
         else:
             self._on_link_lost()
         self._update_controls()

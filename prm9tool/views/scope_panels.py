@@ -353,6 +353,23 @@ class ControlPanel(QWidget):
         """Selected sample rate."""
         return int(self.rate.currentData())
 
+    def limit_rates(self, limit_hz: float) -> None:
+        """Offer only the rates the link delivers (``limit_hz``; 0: all), the fastest of them
+        selected when the chosen one is not among them (at least the slowest is offered)."""
+        allowed = [r for r in RATES_HZ if not limit_hz or r <= limit_hz] or [RATES_HZ[-1]]
+        if [self.rate.itemData(i) for i in range(self.rate.count())] == allowed:
+            return
+        current = self.rate_hz()
+        self.rate.blockSignals(True)
+        self.rate.clear()
+        for rate in allowed:
+            period, khz = format_significant(1000.0 / rate, 6), format_significant(rate / 1000, 6)
+            self.rate.addItem(f"{period} ms ({khz} kHz)", rate)
+        self.rate.setCurrentIndex(allowed.index(current) if current in allowed else 0)
+        self.rate.blockSignals(False)
+        if self.rate_hz() != current:
+            self.rate_changed.emit(self.rate_hz())
+
     def window_s(self) -> float:
         """Selected time window."""
         return float(self.time_window.currentData())

@@ -34,7 +34,7 @@ import numpy as np
 from prm9tool.catalogue import LOAD_SIGNATURE, SAVE_SIGNATURE, Parameter
 from prm9tool.device.canlink import bus as canbus
 from prm9tool.device.canlink import discovery, relocate
-from prm9tool.device.canlink.pdo_scope import NotPdoMappedError, PdoSampler
+from prm9tool.device.canlink.pdo_scope import NotPdoMappedError, PdoSampler, min_period_s
 from prm9tool.device.canlink.sampler import SdoSampler
 from prm9tool.device.canlink.sdo import MISSING, SdoChannel
 from prm9tool.device.canlink.status import read_status
@@ -154,6 +154,7 @@ class CanopenSession(UploadSteps, ValveSession):
             self._device_id,
             LINK_PARAMETERS,
             (bus.interface, bus.channel, bus.bitrate),
+            1.0 / min_period_s(bus.bitrate),  # the SYNC + TPDO1 pace (docs/can-link.md)
         )
 
     def upload(
