@@ -621,3 +621,15 @@ def test_over_canopen_the_intervals_offered_are_those_the_link_delivers(qtbot, d
     conn.device = SimpleNamespace(stream_rate_limit_hz=0.0)
     conn.go_online()
     assert widget.controls.rate.itemData(0) == 5000
+
+
+def test_the_status_shows_the_rate_the_link_really_delivers(scope, conn):
+    scope.preselect("position_actual")
+    scope.controls.rate.setCurrentIndex(scope.controls.rate.findData(1000))
+    scope.start()
+    conn.samples_received.emit(_step_block(500, 100, channels=1))
+    conn.samples_lost = 500
+    scope._update_status()
+    assert scope.status.text() == (
+        "Recording at 500 Hz of the 1000 Hz asked for: 500 samples lost on the link."
+    )

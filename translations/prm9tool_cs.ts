@@ -3075,10 +3075,6 @@ Ano načte a záznam zařadí do fronty; Ne nenačte nic.</translation>
             <translation>Záznam s frekvencí {0} Hz.</translation>
         </message>
         <message>
-            <source>{0} samples lost on the link.</source>
-            <translation>{0} vzorků ztraceno na spojení.</translation>
-        </message>
-        <message>
             <source>The oscilloscope needs a connected valve: go online (Communication → Online).</source>
             <translation>Osciloskop potřebuje připojený ventil: přejděte do režimu online (Komunikace → Režim online).</translation>
         </message>
@@ -3129,6 +3125,10 @@ Ano načte a záznam zařadí do fronty; Ne nenačte nic.</translation>
         <message>
             <source>Tuning and characterization…</source>
             <translation>Ladění a charakterizace…</translation>
+        </message>
+        <message>
+            <source>Recording at {0} Hz of the {1} Hz asked for: {2} samples lost on the link.</source>
+            <translation>Záznam s frekvencí {0} Hz z požadovaných {1} Hz: na spojení ztraceno vzorků: {2}.</translation>
         </message>
         <message>
             <source>no reason given</source>

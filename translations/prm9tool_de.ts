@@ -3064,10 +3064,6 @@ Ja lädt hoch und stellt den Eintrag in die Warteschlange; Nein lädt nichts hoc
             <translation>Aufzeichnung mit {0} Hz.</translation>
         </message>
         <message>
-            <source>{0} samples lost on the link.</source>
-            <translation>{0} Abtastwerte auf der Verbindung verloren.</translation>
-        </message>
-        <message>
             <source>The oscilloscope needs a connected valve: go online (Communication → Online).</source>
             <translation>Das Oszilloskop braucht ein verbundenes Ventil: wechseln Sie online (Kommunikation → Online).</translation>
         </message>
@@ -3118,6 +3114,10 @@ Ja lädt hoch und stellt den Eintrag in die Warteschlange; Nein lädt nichts hoc
         <message>
             <source>Tuning and characterization…</source>
             <translation>Einstellung und Charakterisierung…</translation>
+        </message>
+        <message>
+            <source>Recording at {0} Hz of the {1} Hz asked for: {2} samples lost on the link.</source>
+            <translation>Aufzeichnung mit {0} Hz der angeforderten {1} Hz: {2} Abtastwerte auf der Verbindung verloren.</translation>
         </message>
         <message>
             <source>no reason given</source>

@@ -31,6 +31,7 @@ from PySide6.QtWidgets import (
 )
 
 from prm9tool.catalogue.signals import BY_KEY, signals_for
+from prm9tool.i18n import format_significant
 from prm9tool.model.document import ParameterDocument
 from prm9tool.online.connection_protocol import ScopeConnection
 from prm9tool.online.valve_control import ValveControl, blocker_text, status_blocker
@@ -361,10 +362,13 @@ class ScopeWidget(QWidget):
     def _recording_text(self) -> str:
         rate = self.display.capture.rate_hz if self.display.capture else 0
         lost = self._connection.samples_lost
-        text = self.tr("Recording at {0} Hz.").format(rate)
-        if lost:
-            text += " " + self.tr("{0} samples lost on the link.").format(lost)
-        return text
+        if not lost:
+            return self.tr("Recording at {0} Hz.").format(rate)
+        received = self.display.capture.buffer.total if self.display.capture else 0
+        real = rate * received / (received + lost)  # what the link really delivers
+        return self.tr(
+            "Recording at {0} Hz of the {1} Hz asked for: {2} samples lost on the link."
+        ).format(format_significant(real, 3), rate, lost)
 
     def _offline_text(self) -> str:
         return self.tr(
