@@ -253,7 +253,8 @@ def _lister(emulators: object, can: dict[str, object] | None = None) -> list[obj
     from prm9tool.device import factory
 
     options = _bus_options(can) if can is not None else None
-    return list(factory.list_devices(emulators, options))  # type: ignore[arg-type]
+    usable, unusable = factory.usable_emulators(emulators)  # type: ignore[arg-type]
+    return [*factory.list_devices(usable, options), *unusable]  # type: ignore[arg-type]
 
 
 def show_internal_error(

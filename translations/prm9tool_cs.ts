@@ -183,6 +183,10 @@ Poslední akce možná nebyla dokončena. Uložte svou práci pod novým názvem
             <source>Measure the frequency response</source>
             <translation>Změřit frekvenční charakteristiku</translation>
         </message>
+        <message>
+            <source>The link's sample rate limited the sweep to %1 Hz (nothing interpolated).</source>
+            <translation>Vzorkovací frekvence spojení omezila rozmítání na %1 Hz (nic nebylo interpolováno).</translation>
+        </message>
     </context>
     <context>
         <name>CanBusDialog</name>
@@ -1354,6 +1358,10 @@ Poslední akce možná nebyla dokončena. Uložte svou práci pod novým názvem
             <source>The valve restarted at another address or bit rate: go online with it there.</source>
             <translation>Ventil se restartoval s jinou adresou nebo rychlostí: připojte se k němu tam.</translation>
         </message>
+        <message>
+            <source>The link could not keep the test's sample rate.</source>
+            <translation>Spojení nedokázalo udržet vzorkovací frekvenci testu.</translation>
+        </message>
     </context>
     <context>
         <name>FileWorkflow</name>
@@ -1667,6 +1675,10 @@ Uvolnit ho nyní (NMT start, řídicí slovo 08h → 09h → 0Bh → 0Fh)?</tran
         <message>
             <source>emulated {0}, serial {1}</source>
             <translation>emulovaný ventil {0}, výrobní číslo {1}</translation>
+        </message>
+        <message>
+            <source>cannot be used (remove it): {0}</source>
+            <translation>nelze použít (odeberte jej): {0}</translation>
         </message>
         <message>
             <source>Emulated valve</source>
@@ -3415,6 +3427,26 @@ Ano načte a záznam zařadí do fronty; Ne nenačte nic.</translation>
         <message>
             <source>Parameter set (raw values)</source>
             <translation>Sada parametrů (surové hodnoty)</translation>
+        </message>
+        <message>
+            <source>flow characteristic: %1</source>
+            <translation>průtoková charakteristika: %1</translation>
+        </message>
+        <message>
+            <source>Flow characteristic</source>
+            <translation>Průtoková charakteristika</translation>
+        </message>
+        <message>
+            <source>spool opening [%]</source>
+            <translation>otevření šoupátka [%]</translation>
+        </message>
+        <message>
+            <source>actuator velocity [%/s]</source>
+            <translation>rychlost pohonu [%/s]</translation>
+        </message>
+        <message>
+            <source>measured</source>
+            <translation>změřeno</translation>
         </message>
     </context>
     <context>

@@ -183,6 +183,10 @@ Die letzte Aktion wurde womöglich nicht vollständig ausgeführt. Speichern Sie
             <source>Measure the frequency response</source>
             <translation>Frequenzgang messen</translation>
         </message>
+        <message>
+            <source>The link's sample rate limited the sweep to %1 Hz (nothing interpolated).</source>
+            <translation>Die Abtastrate der Verbindung begrenzte den Sweep auf %1 Hz (nichts interpoliert).</translation>
+        </message>
     </context>
     <context>
         <name>CanBusDialog</name>
@@ -1351,6 +1355,10 @@ Die letzte Aktion wurde womöglich nicht vollständig ausgeführt. Speichern Sie
             <source>The valve restarted at another address or bit rate: go online with it there.</source>
             <translation>Das Ventil ist mit anderer Adresse oder Bitrate neu gestartet: gehen Sie dort mit ihm online.</translation>
         </message>
+        <message>
+            <source>The link could not keep the test's sample rate.</source>
+            <translation>Die Verbindung konnte die Abtastrate des Tests nicht halten.</translation>
+        </message>
     </context>
     <context>
         <name>FileWorkflow</name>
@@ -1661,6 +1669,10 @@ Jetzt freigeben (NMT Start, Steuerwort 08h → 09h → 0Bh → 0Fh)?</translatio
         <message>
             <source>emulated {0}, serial {1}</source>
             <translation>emuliertes Ventil {0}, Seriennummer {1}</translation>
+        </message>
+        <message>
+            <source>cannot be used (remove it): {0}</source>
+            <translation>nicht verwendbar (bitte entfernen): {0}</translation>
         </message>
         <message>
             <source>Emulated valve</source>
@@ -3406,6 +3418,26 @@ Ja lädt hoch und stellt den Eintrag in die Warteschlange; Nein lädt nichts hoc
         <message>
             <source>Parameter set (raw values)</source>
             <translation>Parametersatz (Rohwerte)</translation>
+        </message>
+        <message>
+            <source>flow characteristic: %1</source>
+            <translation>Durchflusskennlinie: %1</translation>
+        </message>
+        <message>
+            <source>Flow characteristic</source>
+            <translation>Durchflusskennlinie</translation>
+        </message>
+        <message>
+            <source>spool opening [%]</source>
+            <translation>Schieberöffnung [%]</translation>
+        </message>
+        <message>
+            <source>actuator velocity [%/s]</source>
+            <translation>Geschwindigkeit des Antriebs [%/s]</translation>
+        </message>
+        <message>
+            <source>measured</source>
+            <translation>gemessen</translation>
         </message>
     </context>
     <context>

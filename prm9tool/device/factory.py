@@ -27,6 +27,7 @@ if TYPE_CHECKING:
 log = logging.getLogger("prm9tool.device.factory")
 DEFAULT_EMULATOR_TYPE = DEFAULT_EMULATOR_TYPE_KEY  # one default for the GUI and the CLI
 USB, EMULATOR, CAN, NOT_PRM9 = "usb", "emulator", "can", "not-prm9"
+UNUSABLE_EMULATOR = "emulator-unusable"  # a remembered emulated valve that cannot be made
 __all__ = ["CanOptions", "DeviceEntry", "list_devices", "open_session"]
 
 
@@ -36,6 +37,7 @@ class DeviceEntry:
 
     device_id: str
     kind: str  # "usb" | "emulator" | "can" | "not-prm9" (a CANopen node of another kind)
+    # | "emulator-unusable" (a remembered spec that cannot be made; description: why)
     type_key: str
     serial: int
     firmware: str
@@ -101,6 +103,26 @@ def emulator_entries(specs: Sequence[str]) -> list[DeviceEntry]:
         valve = emulated_valve(type_key, serial)
         entries.append(_emulator_entry(valve))
     return entries
+
+
+def usable_emulators(specs: Sequence[str]) -> tuple[list[str], list[DeviceEntry]]:
+    """``specs`` (each with its serial) split into those that make a valve and entries of
+    kind ``emulator-unusable`` for the others, whose description says why (an EEPROM image of
+    another type at that serial…), so one bad remembered valve does not hide the rest."""
+    usable: list[str] = []
+    unusable: list[DeviceEntry] = []
+    for spec in specs:
+        try:
+            emulator_entries([spec])
+        except Prm9Error as exc:
+            key, _, serial = spec.rpartition(":")
+            number = int(serial) if serial.isdigit() else 0
+            unusable.append(
+                DeviceEntry(f"{EMULATOR}:{spec}", UNUSABLE_EMULATOR, key, number, "", str(exc))
+            )
+        else:
+            usable.append(spec)
+    return usable, unusable
 
 
 def _emulator_entry(valve: EmulatedValve) -> DeviceEntry:

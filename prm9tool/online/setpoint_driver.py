@@ -28,15 +28,14 @@ import time
 from collections.abc import Callable
 from typing import TYPE_CHECKING, Any
 
+from prm9tool.catalogue.commissioning import SETPOINT_OBJECTS
 from prm9tool.errors import CommunicationError, Prm9Error
 
 if TYPE_CHECKING:  # numpy and the device layer stay out of the window's start-up
     from prm9tool.device.setpoint import SetpointLink  # (tests/test_gui_app.py)
     from prm9tool.scope import GeneratorSettings
 
-# every object a setpoint link writes, whatever the link (prm9tool.device.setpoint and
-# canlink.rpdo_setpoint): a refusal naming one of them stops the generator
-GENERATOR_OBJECTS = frozenset({"SETPOVR", "SETPOVRON", "POSSETP", "PRCSETP", "RPDO1TIMER"})
+GENERATOR_OBJECTS = frozenset(SETPOINT_OBJECTS)  # what a refusal names when it stops a generator
 KEEPALIVE_S = 0.1  # the override's watchdog is 500 ms; read at least this often (emulated)
 LINK_STEP_S = 0.001  # over a link: look for a changed value every millisecond (one USB frame)
 MAX_EXTRAPOLATION_S = 0.05  # trust the stream's time for this long after its last block
@@ -176,7 +175,7 @@ def setpoint_link(session: Any) -> SetpointLink:
     """The session's way to the setpoint (the service override for a session without one)."""
     make = getattr(session, "setpoint_link", None)
     if make is not None:
-        return make()  # type: ignore[no-any-return]
-    from prm9tool.device.setpoint import OverrideSetpoint
+        return make()  # type: ignore[no-any-return]  # the session is typed Any here
+    from prm9tool.device.setpoint import OverrideSetpoint  # only once a generator starts
 
     return OverrideSetpoint(session)

@@ -27,6 +27,7 @@ from prm9tool.translate import error_text, translated
 from prm9tool.views import prompts
 from prm9tool.views.hid_dialog import (
     SELECTED_KEY,
+    UNUSABLE,
     HidConfigurationDialog,
     saved_emulators,
 )
@@ -116,7 +117,7 @@ class ValveWorkflow(QObject):
                 self.tr("Listing the valves failed: {0}").format(error_text(entries))
             )
             entries = []
-        found = list(entries)
+        found = [e for e in entries if e.kind != UNUSABLE]  # the dialog says why not
         selected = str(self._settings.value(SELECTED_KEY, ""))
         for entry in found:
             if entry.device_id == selected:
