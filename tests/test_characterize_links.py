@@ -33,11 +33,13 @@ bode_f_min_hz = 2
 bode_f_max_hz = 100
 bode_duration_s = 1.5
 static_period_s = 4
-[limits]
-step_overshoot_pct = { max = 15 }
-bode_bandwidth_hz = { min = 15 }
-static_linearity_pct = { max = 3 }
-static_hysteresis_pct = { max = 5 }   # a 4 s triangle at the link's pace (real time)
+[limits]   # loose: the valve runs in real time on a shared, loaded PC (figures are asserted)
+step_overshoot_pct = { max = 25 }
+step_rise_s = { max = 0.05 }
+bode_bandwidth_hz = { min = 10 }
+static_gain = { min = 0.9, max = 1.1 }
+static_linearity_pct = { max = 5 }
+static_hysteresis_pct = { max = 8 }
 """
 
 
