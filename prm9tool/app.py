@@ -196,7 +196,13 @@ def _opener(args: argparse.Namespace) -> Callable[[object], object]:
     def open_session(entry: object) -> object:
         from prm9tool.device import factory
 
-        return factory.open_session(entry, paced=True, can_link=_can_link(args))  # type: ignore[arg-type]
+        label_key = getattr(args, "type_key", None)  # --type-key: a valve without 0x2041
+        return factory.open_session(
+            entry,  # type: ignore[arg-type]
+            paced=True,
+            can_link=_can_link(args),  # type: ignore[arg-type]
+            label_key=label_key,
+        )
 
     return open_session
 
@@ -247,7 +253,8 @@ def _lister(emulators: object, can: dict[str, object] | None = None) -> list[obj
     from prm9tool.device import factory
 
     options = _bus_options(can) if can is not None else None
-    return list(factory.list_devices(emulators, options))  # type: ignore[arg-type]
+    usable, unusable = factory.usable_emulators(emulators)  # type: ignore[arg-type]
+    return [*factory.list_devices(usable, options), *unusable]  # type: ignore[arg-type]
 
 
 def show_internal_error(

@@ -66,6 +66,10 @@ Poslední akce možná nebyla dokončena. Uložte svou práci pod novým názvem
             <translation>Kritické zesílení Kkr = %1, perioda Tkr = %2 ms: K = 0.5·Kkr, Ti = 0.8·Tkr, Td = 0.12·Tkr.</translation>
         </message>
         <message>
+            <source>Proposed, simulated on the emulator's firmware: %1.</source>
+            <translation>Návrh, simulovaný na firmwaru emulátoru: %1.</translation>
+        </message>
+        <message>
             <source>before (measured)</source>
             <translation>před (změřeno)</translation>
         </message>
@@ -137,10 +141,6 @@ Poslední akce možná nebyla dokončena. Uložte svou práci pod novým názvem
             <source>Accept the proposed gains</source>
             <translation>Převzít navržené konstanty</translation>
         </message>
-        <message>
-            <source>Proposed, simulated on the emulator's firmware: %1.</source>
-            <translation>Návrh simulovaný na firmwaru emulátoru: %1.</translation>
-        </message>
     </context>
     <context>
         <name>BlockDialog</name>
@@ -158,10 +158,6 @@ Poslední akce možná nebyla dokončena. Uložte svou práci pod novým názvem
         <message>
             <source>−3 dB at %1 Hz, −90° at %2 Hz.</source>
             <translation>−3 dB při %1 Hz, −90° při %2 Hz.</translation>
-        </message>
-        <message>
-            <source>The link's sample rate limited the sweep to %1 Hz (nothing interpolated).</source>
-            <translation>Vzorkovací frekvence spojení omezila rozmítání na %1 Hz (nic nebylo interpolováno).</translation>
         </message>
         <message>
             <source>Amplitude:</source>
@@ -186,6 +182,10 @@ Poslední akce možná nebyla dokončena. Uložte svou práci pod novým názvem
         <message>
             <source>Measure the frequency response</source>
             <translation>Změřit frekvenční charakteristiku</translation>
+        </message>
+        <message>
+            <source>The link's sample rate limited the sweep to %1 Hz (nothing interpolated).</source>
+            <translation>Vzorkovací frekvence spojení omezila rozmítání na %1 Hz (nic nebylo interpolováno).</translation>
         </message>
     </context>
     <context>
@@ -269,6 +269,22 @@ Poslední akce možná nebyla dokončena. Uložte svou práci pod novým názvem
         <message>
             <source>none</source>
             <translation>žádný</translation>
+        </message>
+        <message>
+            <source>new on the bus: search again to identify it</source>
+            <translation>nový na sběrnici: pro rozpoznání hledejte znovu</translation>
+        </message>
+        <message>
+            <source>{0} (boot-up {1:.1f} s ago)</source>
+            <translation>{0} (boot-up před {1:.1f} s)</translation>
+        </message>
+        <message>
+            <source>silent for {0:.1f} s</source>
+            <translation>mlčí {0:.1f} s</translation>
+        </message>
+        <message>
+            <source>The bus cannot be watched: {0}</source>
+            <translation>Sběrnici nelze sledovat: {0}</translation>
         </message>
         <message>
             <source>Type key of the valve</source>
@@ -1319,6 +1335,30 @@ Poslední akce možná nebyla dokončena. Uložte svou práci pod novým názvem
             <translation>Databázi historie nelze použít.</translation>
         </message>
         <message>
+            <source>node {0} is NMT {1}: the valve takes RPDOs only when OPERATIONAL — start it first (Valve status → Commissioning: NMT start)</source>
+            <translation>uzel {0} je ve stavu NMT {1}: ventil přijímá RPDO jen ve stavu OPERATIONAL — nejprve jej spusťte (Stav ventilu → Uvedení do provozu: NMT start)</translation>
+        </message>
+        <message>
+            <source>node {0} is in {1}: the valve applies a setpoint from the bus only in DEVICE_MODE_ACTIVE — enable it first (Valve status → Commissioning: control word 08h→09h→0Bh→0Fh)</source>
+            <translation>uzel {0} je ve stavu {1}: ventil přebírá žádanou hodnotu ze sběrnice jen v DEVICE_MODE_ACTIVE — nejprve jej uvolněte (Stav ventilu → Uvedení do provozu: řídicí slovo 08h→09h→0Bh→0Fh)</translation>
+        </message>
+        <message>
+            <source>node {0}: RPDO1 is switched off (0x1400/1 = {1}, bit 31): clear bit 31 to drive the setpoint from prm9tool</source>
+            <translation>uzel {0}: RPDO1 je vypnuto (0x1400/1 = {1}, bit 31): vynulujte bit 31, aby prm9tool mohl zadávat žádanou hodnotu</translation>
+        </message>
+        <message>
+            <source>node {0}: RPDO1 is synchronous (0x1400/2 = {1}), so the setpoint would wait for a SYNC: set 0x1400/2 to 255 (the delivery state)</source>
+            <translation>uzel {0}: RPDO1 je synchronní (0x1400/2 = {1}), žádaná hodnota by čekala na SYNC: nastavte 0x1400/2 na 255 (stav při dodání)</translation>
+        </message>
+        <message>
+            <source>node {0}: RPDO1 maps {1}, not the setpoint 0x6300/0x6380</source>
+            <translation>uzel {0}: RPDO1 mapuje {1}, ne žádanou hodnotu 0x6300/0x6380</translation>
+        </message>
+        <message>
+            <source>The valve restarted at another address or bit rate: go online with it there.</source>
+            <translation>Ventil se restartoval s jinou adresou nebo rychlostí: připojte se k němu tam.</translation>
+        </message>
+        <message>
             <source>The link could not keep the test's sample rate.</source>
             <translation>Spojení nedokázalo udržet vzorkovací frekvenci testu.</translation>
         </message>
@@ -1637,6 +1677,10 @@ Uvolnit ho nyní (NMT start, řídicí slovo 08h → 09h → 0Bh → 0Fh)?</tran
             <translation>emulovaný ventil {0}, výrobní číslo {1}</translation>
         </message>
         <message>
+            <source>cannot be used (remove it): {0}</source>
+            <translation>nelze použít (odeberte jej): {0}</translation>
+        </message>
+        <message>
             <source>Emulated valve</source>
             <translation>Emulovaný ventil</translation>
         </message>
@@ -1851,8 +1895,8 @@ Ano načte a záznam zařadí do fronty; Ne nenačte nic.</translation>
             <translation>Přepínač ID uzlu je v poloze {0}: ID uzlu a přenosovou rychlost určují přepínače (návod, tabulka 7-17), tato změna tedy ventil nepřesune; zůstává uzlem {1}.</translation>
         </message>
         <message>
-            <source>After the valve's next power-up or restart it answers at node {0}, {1}: prm9tool's connection then breaks. Store the change, restart the valve, then find it again under Communication → CAN bus (node {0}, bit rate {1}).</source>
-            <translation>Po příštím zapnutí nebo restartu ventil odpovídá jako uzel {0}, {1}: spojení prm9tool se pak přeruší. Uložte změnu, restartujte ventil a najděte ho znovu v Komunikace → Sběrnice CAN (uzel {0}, rychlost {1}).</translation>
+            <source>After the valve's next power-up or restart it answers at node {0}, {1}. Store the change and restart the valve from prm9tool (Valve → Restart valve): prm9tool then finds it there again — where it cannot change the adapter's bit rate itself (SocketCAN), it says how. After a power-up, find it under Communication → CAN bus (node {0}, bit rate {1}).</source>
+            <translation>Po příštím zapnutí nebo restartu ventil odpovídá jako uzel {0}, {1}. Uložte změnu a restartujte ventil z prm9tool (Ventil → Restart ventilu): prm9tool ho tam pak znovu najde — kde rychlost adaptéru sám změnit nemůže (SocketCAN), řekne jak. Po zapnutí ho najděte v Komunikace → Sběrnice CAN (uzel {0}, rychlost {1}).</translation>
         </message>
     </context>
     <context>
@@ -3253,10 +3297,6 @@ Ano načte a záznam zařadí do fronty; Ne nenačte nic.</translation>
             <translation>pásmo necitlivosti</translation>
         </message>
         <message>
-            <source>flow characteristic: %1</source>
-            <translation>průtoková charakteristika: %1</translation>
-        </message>
-        <message>
             <source>step %1 %: %2</source>
             <translation>skok %1 %: %2</translation>
         </message>
@@ -3337,22 +3377,6 @@ Ano načte a záznam zařadí do fronty; Ne nenačte nic.</translation>
             <translation>proložená přímka</translation>
         </message>
         <message>
-            <source>Flow characteristic</source>
-            <translation>Průtoková charakteristika</translation>
-        </message>
-        <message>
-            <source>spool opening [%]</source>
-            <translation>otevření šoupátka [%]</translation>
-        </message>
-        <message>
-            <source>actuator velocity [%/s]</source>
-            <translation>rychlost pohonu [%/s]</translation>
-        </message>
-        <message>
-            <source>measured</source>
-            <translation>změřeno</translation>
-        </message>
-        <message>
             <source>Type key</source>
             <translation>Objednací kód</translation>
         </message>
@@ -3381,6 +3405,10 @@ Ano načte a záznam zařadí do fronty; Ne nenačte nic.</translation>
             <translation>Výsledek</translation>
         </message>
         <message>
+            <source>Limited by the link</source>
+            <translation>Omezeno spojením</translation>
+        </message>
+        <message>
             <source>PRM9 test report</source>
             <translation>Protokol o zkoušce PRM9</translation>
         </message>
@@ -3401,8 +3429,24 @@ Ano načte a záznam zařadí do fronty; Ne nenačte nic.</translation>
             <translation>Sada parametrů (surové hodnoty)</translation>
         </message>
         <message>
-            <source>Limited by the link</source>
-            <translation>Omezeno spojením</translation>
+            <source>flow characteristic: %1</source>
+            <translation>průtoková charakteristika: %1</translation>
+        </message>
+        <message>
+            <source>Flow characteristic</source>
+            <translation>Průtoková charakteristika</translation>
+        </message>
+        <message>
+            <source>spool opening [%]</source>
+            <translation>otevření šoupátka [%]</translation>
+        </message>
+        <message>
+            <source>actuator velocity [%/s]</source>
+            <translation>rychlost pohonu [%/s]</translation>
+        </message>
+        <message>
+            <source>measured</source>
+            <translation>změřeno</translation>
         </message>
     </context>
     <context>
@@ -3960,6 +4004,14 @@ Zajistěte, aby to hydraulika bezpečně snesla. Tlačítko Stop test kdykoli uk
         <message>
             <source>Set every parameter of the document to the factory default?</source>
             <translation>Nastavit všechny parametry dokumentu na tovární hodnoty?</translation>
+        </message>
+        <message>
+            <source>{0} kbit/s</source>
+            <translation>{0} kbit/s</translation>
+        </message>
+        <message>
+            <source>The valve restarted at {0} {1}; prm9tool found it there</source>
+            <translation>Ventil se restartoval jako {0} {1}; prm9tool ho tam našel</translation>
         </message>
         <message>
             <source>Values written to the valve</source>

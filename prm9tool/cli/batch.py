@@ -242,17 +242,31 @@ def _match(wanted: str, usb: list[DeviceEntry]) -> list[DeviceEntry]:
     return found
 
 
-def open_entry(entry: DeviceEntry, can: CanOptions | None = None) -> ValveSession:
-    """Open a session as the headless commands do (``--batch``, ``--diff``)."""
-    return _open(entry) if can is None else _open(entry, can)
+def open_entry(
+    entry: DeviceEntry, can: CanOptions | None = None, label_key: str | None = None
+) -> ValveSession:
+    """Open a session as the headless commands do (``--batch``, ``--diff``); ``label_key``:
+    ``--type-key``."""
+    return _open(entry) if can is None else _open(entry, can, label_key=label_key)
 
 
 def _open(
-    entry: DeviceEntry, can: CanOptions | None = None, type_key: str | None = None
+    entry: DeviceEntry,
+    can: CanOptions | None = None,
+    type_key: str | None = None,
+    label_key: str | None = None,
 ) -> ValveSession:
     """Open one selected valve; ``type_key``: the file's, for a valve that does not tell its
-    own. An emulated valve is stepped on the link clock; its link runs at USB speed."""
-    return open_session(entry, paced=False, link_paced=True, can_link=can, type_key=type_key)
+    own; ``label_key``: ``--type-key`` (first, remembered). An emulated valve is stepped on
+    the link clock; its link runs at USB speed."""
+    return open_session(
+        entry,
+        paced=False,
+        link_paced=True,
+        can_link=can,
+        type_key=type_key,
+        label_key=label_key,
+    )
 
 
 # --- upload -------------------------------------------------------------------------------------
@@ -279,6 +293,7 @@ def _upload(args: argparse.Namespace, records: list[ValveRecord]) -> ExitCode:
         BatchHistory.for_download(args) if args.dry_run else BatchHistory.open(args, BatchError)
     )
     job = _UploadJob(contents, args.force_type, args.dry_run, printer, history, can_options(args))
+    job.label_key = getattr(args, "type_key", None)
     try:
         with ThreadPoolExecutor(max_workers=len(entries)) as pool:
             records.extend(pool.map(job, entries))
@@ -309,6 +324,7 @@ class _UploadJob:
         self.contents, self.force, self.dry_run, self.printer = contents, force, dry_run, printer
         self.history = history
         self.can = can
+        self.label_key: str | None = None  # --type-key
 
     def __call__(self, entry: DeviceEntry) -> ValveRecord:
         clock = Stopwatch()
@@ -318,7 +334,9 @@ class _UploadJob:
         try:
             # the file's type key serves a CANopen valve that does not tell its own (0x2041)
             key = str(self.contents.type_key)
-            opened = _open(entry) if self.can is None else _open(entry, self.can, key)
+            opened = (
+                _open(entry) if self.can is None else _open(entry, self.can, key, self.label_key)
+            )
             with opened as session:
                 info = session.info
                 record.type_key, record.serial, record.firmware = (
@@ -445,7 +463,8 @@ def _download(args: argparse.Namespace, records: list[ValveRecord]) -> ExitCode:
     records.append(record)
     try:
         can = can_options(args)
-        with _open(entry[0]) if can is None else _open(entry[0], can) as session:
+        label = getattr(args, "type_key", None)  # a valve without 0x2041 needs it
+        with _open(entry[0]) if can is None else _open(entry[0], can, None, label) as session:
             values = session.download(printer.callback(str(record.serial)))
             info = session.info
     except Exception as exc:  # a Prm9Error, or whatever else the valve's answers caused

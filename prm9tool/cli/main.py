@@ -86,6 +86,13 @@ def add_device_options(parser: argparse.ArgumentParser) -> None:
     group.add_argument(
         "--can-bitrate", type=int, help="CAN bit rate in bit/s (default: from the valve's switches)"
     )
+    group.add_argument(
+        "--type-key",
+        metavar="KEY",
+        help="the type key on the label of a CANopen valve that does not tell its own (no "
+        "object 0x2041, as real valves): checked against what its objects tell and remembered "
+        "for its serial number; with --batch it goes before the file's key",
+    )
     serve = parser.add_argument_group("headless emulated valves on a CAN bus (no GUI)")
     serve.add_argument(
         "--serve-emulator",
@@ -211,6 +218,10 @@ def usage_problem(args: argparse.Namespace) -> str | None:
     ``--serve-emulator``, or the one the GUI's emulated -CA valve joins; a file tool takes
     none (an option that would be ignored is an error, not a surprise).
     """
+    if args.type_key is not None:
+        problem = _type_key_problem(args)
+        if problem is not None:
+            return problem
     if args.characterize:
         return _characterize_problem(args)
     if args.profile:
@@ -264,6 +275,25 @@ def _command(args: argparse.Namespace) -> str:
         ]
         return "--serve-emulator" if not others else f"--serve-emulator and {others[0]}"
     return "--list-devices" if args.list_devices else "--batch" if args.batch is not None else ""
+
+
+def _type_key_problem(args: argparse.Namespace) -> str | None:
+    from prm9tool.catalogue.typekey import TypeKey
+    from prm9tool.errors import TypeKeyError
+
+    on_can = _can_devices(args) or (args.all and args.can_interface is not None)
+    if not on_can or args.serve_emulator:
+        return (
+            "--type-key belongs to a valve on a CAN bus: use it with --device can:NODE (or "
+            "--batch --all with the CAN options)"
+        )
+    try:
+        key = TypeKey.parse(args.type_key)
+    except TypeKeyError as exc:
+        return f"--type-key: {exc}"
+    if not key.canopen:
+        return f"--type-key {key}: a valve on a CAN bus is a -CA valve"
+    return None
 
 
 def _can_devices(args: argparse.Namespace) -> list[str]:
