@@ -35,3 +35,23 @@ def spools():
     yield SPOOLS
     SPOOLS.clear()
     SPOOLS.update(shipped)
+
+
+@pytest.fixture
+def answers(monkeypatch: pytest.MonkeyPatch):
+    """Every message box recorded and answered without blocking (``gui_support.Prompts``)."""
+    from gui_support import record_prompts
+
+    return record_prompts(monkeypatch)
+
+
+@pytest.fixture
+def window(qtbot, tmp_path, answers):
+    """The main window offline on an E02 document, isolated settings, prompts recorded.
+
+    A test module that needs another valve or the window online defines its own ``window``.
+    """
+    from gui_support import main_window
+
+    with main_window(qtbot, tmp_path) as win:
+        yield win

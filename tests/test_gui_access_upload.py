@@ -3,8 +3,7 @@ asks first (issue 15, item 19)."""
 
 from __future__ import annotations
 
-import pytest
-from gui_support import E02, go_online, main_window, record_prompts
+from gui_support import E02, go_online
 from PySide6.QtWidgets import QDialog
 
 from prm9tool.catalogue import Access
@@ -12,17 +11,6 @@ from prm9tool.views import prompts
 from prm9tool.views.online_dialogs import DiffChoice, OnlineDiffDialog
 
 TIMEOUT = 10_000
-
-
-@pytest.fixture
-def answers(monkeypatch):
-    return record_prompts(monkeypatch)
-
-
-@pytest.fixture
-def window(qtbot, tmp_path, answers):
-    with main_window(qtbot, tmp_path) as win:
-        yield win
 
 
 def _send_the_document(monkeypatch):

@@ -13,7 +13,6 @@ from gui_support import (
     emulated,
     go_online,
     main_window,
-    record_prompts,
     session_of,
 )
 from PySide6.QtWidgets import QDialog, QLabel, QPushButton
@@ -24,17 +23,6 @@ from prm9tool.views import prompts
 from prm9tool.views.online_dialogs import DiffChoice, OnlineDiffDialog, RestartDialog
 
 TIMEOUT = 10_000
-
-
-@pytest.fixture
-def answers(monkeypatch):
-    return record_prompts(monkeypatch)
-
-
-@pytest.fixture
-def window(qtbot, tmp_path, answers):
-    with main_window(qtbot, tmp_path) as win:
-        yield win
 
 
 def _settled(qtbot, window):

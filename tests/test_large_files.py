@@ -6,8 +6,7 @@ from __future__ import annotations
 import difflib
 import threading
 
-import pytest
-from gui_support import E02, main_window, record_prompts
+from gui_support import E02
 from PySide6.QtCore import QTimer
 
 from prm9tool.catalogue.typekey import TypeKey
@@ -40,17 +39,6 @@ def test_spelling_suggestions_are_made_for_the_first_unknown_names_only(monkeypa
         == "unknown parameter 'LIMTAX0': kept and written back unchanged (did you mean LIMTA?)"
     )
     assert unknown[-1] == "unknown parameter 'LIMTAX499': kept and written back unchanged"
-
-
-@pytest.fixture
-def answers(monkeypatch):
-    return record_prompts(monkeypatch)
-
-
-@pytest.fixture
-def window(qtbot, tmp_path, answers):
-    with main_window(qtbot, tmp_path) as win:
-        yield win
 
 
 def test_opening_a_file_reads_it_off_the_gui_thread_while_the_window_keeps_working(
