@@ -248,7 +248,7 @@ def test_cancelling_the_progress_dialog_cancels_the_operation(qtbot, window, ans
         release.wait(5)  # the user presses Cancel meanwhile
         return session.upload(values, None, window.connection._cancel)
 
-    window.valve._start("upload", "Uploading")
+    window.valve.progress.start("upload", "Uploading")
     window.connection.run_job("upload", slow_upload)
     window.valve.progress_dialog.findChild(QPushButton).click()  # the user presses Cancel
     release.set()

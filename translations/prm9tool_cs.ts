@@ -2355,6 +2355,13 @@ Ano načte a záznam zařadí do fronty; Ne nenačte nic.</translation>
         </message>
     </context>
     <context>
+        <name>OperationProgress</name>
+        <message>
+            <source>Cancel</source>
+            <translation>Zrušit</translation>
+        </message>
+    </context>
+    <context>
         <name>ParameterEditDialog</name>
         <message>
             <source>Parameter {0}</source>
@@ -3860,6 +3867,65 @@ Zajistěte, aby to hydraulika bezpečně snesla. Tlačítko Stop test kdykoli uk
         </message>
     </context>
     <context>
+        <name>ValveUpload</name>
+        <message>
+            <source>Nothing was sent to the valve</source>
+            <translation>Do ventilu nebylo nic odesláno</translation>
+        </message>
+        <message>
+            <source>Upload to valve</source>
+            <translation>Načtení do ventilu</translation>
+        </message>
+        <message>
+            <source>The document is for a {0} valve, the connected valve is a {1} valve. Choose the matching valve type or download the valve's parameters first.</source>
+            <translation>Dokument je pro ventil {0}, připojený ventil je {1}. Zvolte odpovídající typ ventilu nebo nejprve stáhněte parametry z ventilu.</translation>
+        </message>
+        <message>
+            <source>Uploading the parameters to the valve…</source>
+            <translation>Načítání parametrů do ventilu…</translation>
+        </message>
+        <message>
+            <source>Expert values at Basic level</source>
+            <translation>Expertní hodnoty na základní úrovni</translation>
+        </message>
+        <message numerus="yes">
+            <source>The document changes %n Expert-level value(s) of the valve ({0}), which the Basic access level cannot edit (controllers, linearizations, monitoring). Send them anyway?</source>
+            <translation>
+                <numerusform>Dokument mění %n hodnotu úrovně Expert ve ventilu ({0}), kterou základní úroveň oprávnění nemůže upravovat (regulátory, linearizace, monitorování). Přesto odeslat?</numerusform>
+                <numerusform>Dokument mění %n hodnoty úrovně Expert ve ventilu ({0}), které základní úroveň oprávnění nemůže upravovat (regulátory, linearizace, monitorování). Přesto odeslat?</numerusform>
+                <numerusform>Dokument mění %n hodnot úrovně Expert ve ventilu ({0}), které základní úroveň oprávnění nemůže upravovat (regulátory, linearizace, monitorování). Přesto odeslat?</numerusform>
+            </translation>
+        </message>
+        <message>
+            <source>Values written to the valve</source>
+            <translation>Hodnoty zapsané do ventilu</translation>
+        </message>
+        <message numerus="yes">
+            <source>%n parameter(s) written, verified and stored at {0}</source>
+            <translation>
+                <numerusform>%n parametr zapsán, ověřen a uložen v {0}</numerusform>
+                <numerusform>%n parametry zapsány, ověřeny a uloženy v {0}</numerusform>
+                <numerusform>%n parametrů zapsáno, ověřeno a uloženo v {0}</numerusform>
+            </translation>
+        </message>
+        <message numerus="yes">
+            <source>%n parameter(s) written, verified and stored again at {0}: the valve already held them</source>
+            <translation>
+                <numerusform>%n parametr znovu zapsán, ověřen a uložen v {0}: ventil jej již obsahoval</numerusform>
+                <numerusform>%n parametry znovu zapsány, ověřeny a uloženy v {0}: ventil je již obsahoval</numerusform>
+                <numerusform>%n parametrů znovu zapsáno, ověřeno a uloženo v {0}: ventil je již obsahoval</numerusform>
+            </translation>
+        </message>
+        <message>
+            <source>Upload failed</source>
+            <translation>Načtení do ventilu selhalo</translation>
+        </message>
+        <message>
+            <source>The upload failed at step “{0}”. Nothing was stored: after a restart the valve holds its previous parameters.</source>
+            <translation>Načtení do ventilu selhalo v kroku „{0}“. Nic nebylo uloženo: po restartu má ventil své předchozí parametry.</translation>
+        </message>
+    </context>
+    <context>
         <name>ValveWorkflow</name>
         <message>
             <source>Connecting to {0}…</source>
@@ -3898,60 +3964,12 @@ Zajistěte, aby to hydraulika bezpečně snesla. Tlačítko Stop test kdykoli uk
             <translation>Ventil hlásí neznámý typový klíč: {0}</translation>
         </message>
         <message>
-            <source>Upload to valve</source>
-            <translation>Načtení do ventilu</translation>
-        </message>
-        <message>
-            <source>The document is for a {0} valve, the connected valve is a {1} valve. Choose the matching valve type or download the valve's parameters first.</source>
-            <translation>Dokument je pro ventil {0}, připojený ventil je {1}. Zvolte odpovídající typ ventilu nebo nejprve stáhněte parametry z ventilu.</translation>
-        </message>
-        <message>
-            <source>Nothing was sent to the valve</source>
-            <translation>Do ventilu nebylo nic odesláno</translation>
-        </message>
-        <message>
-            <source>Uploading the parameters to the valve…</source>
-            <translation>Načítání parametrů do ventilu…</translation>
-        </message>
-        <message>
-            <source>Expert values at Basic level</source>
-            <translation>Expertní hodnoty na základní úrovni</translation>
-        </message>
-        <message numerus="yes">
-            <source>The document changes %n Expert-level value(s) of the valve ({0}), which the Basic access level cannot edit (controllers, linearizations, monitoring). Send them anyway?</source>
-            <translation>
-                <numerusform>Dokument mění %n hodnotu úrovně Expert ve ventilu ({0}), kterou základní úroveň oprávnění nemůže upravovat (regulátory, linearizace, monitorování). Přesto odeslat?</numerusform>
-                <numerusform>Dokument mění %n hodnoty úrovně Expert ve ventilu ({0}), které základní úroveň oprávnění nemůže upravovat (regulátory, linearizace, monitorování). Přesto odeslat?</numerusform>
-                <numerusform>Dokument mění %n hodnot úrovně Expert ve ventilu ({0}), které základní úroveň oprávnění nemůže upravovat (regulátory, linearizace, monitorování). Přesto odeslat?</numerusform>
-            </translation>
-        </message>
-        <message>
             <source>Downloading the parameters from the valve…</source>
             <translation>Stahování parametrů z ventilu…</translation>
         </message>
         <message>
             <source>Set every parameter of the document to the factory default?</source>
             <translation>Nastavit všechny parametry dokumentu na tovární hodnoty?</translation>
-        </message>
-        <message>
-            <source>Values written to the valve</source>
-            <translation>Hodnoty zapsané do ventilu</translation>
-        </message>
-        <message numerus="yes">
-            <source>%n parameter(s) written, verified and stored at {0}</source>
-            <translation>
-                <numerusform>%n parametr zapsán, ověřen a uložen v {0}</numerusform>
-                <numerusform>%n parametry zapsány, ověřeny a uloženy v {0}</numerusform>
-                <numerusform>%n parametrů zapsáno, ověřeno a uloženo v {0}</numerusform>
-            </translation>
-        </message>
-        <message numerus="yes">
-            <source>%n parameter(s) written, verified and stored again at {0}: the valve already held them</source>
-            <translation>
-                <numerusform>%n parametr znovu zapsán, ověřen a uložen v {0}: ventil jej již obsahoval</numerusform>
-                <numerusform>%n parametry znovu zapsány, ověřeny a uloženy v {0}: ventil je již obsahoval</numerusform>
-                <numerusform>%n parametrů znovu zapsáno, ověřeno a uloženo v {0}: ventil je již obsahoval</numerusform>
-            </translation>
         </message>
         <message>
             <source>Restore factory values</source>
@@ -3994,14 +4012,6 @@ Zajistěte, aby to hydraulika bezpečně snesla. Tlačítko Stop test kdykoli uk
             <translation>Tovární nastavení obnoveno; dosavadní parametry ventilu jsou v {0}</translation>
         </message>
         <message>
-            <source>Upload failed</source>
-            <translation>Načtení do ventilu selhalo</translation>
-        </message>
-        <message>
-            <source>The upload failed at step “{0}”. Nothing was stored: after a restart the valve holds its previous parameters.</source>
-            <translation>Načtení do ventilu selhalo v kroku „{0}“. Nic nebylo uloženo: po restartu má ventil své předchozí parametry.</translation>
-        </message>
-        <message>
             <source>Valve communication</source>
             <translation>Komunikace s ventilem</translation>
         </message>
@@ -4018,10 +4028,6 @@ Všechny hodnoty zůstávají v dokumentu: uložte jej, nebo přejděte znovu do
         <message>
             <source>Backup of the valve's parameters saved: {0}</source>
             <translation>Záloha parametrů ventilu uložena: {0}</translation>
-        </message>
-        <message>
-            <source>Cancel</source>
-            <translation>Zrušit</translation>
         </message>
     </context>
 </TS>

@@ -2346,6 +2346,13 @@ Ja lädt hoch und stellt den Eintrag in die Warteschlange; Nein lädt nichts hoc
         </message>
     </context>
     <context>
+        <name>OperationProgress</name>
+        <message>
+            <source>Cancel</source>
+            <translation>Abbrechen</translation>
+        </message>
+    </context>
+    <context>
         <name>ParameterEditDialog</name>
         <message>
             <source>Parameter {0}</source>
@@ -3851,6 +3858,62 @@ Stellen Sie sicher, dass die Hydraulik dafür sicher ist. Stopp beendet ihn jede
         </message>
     </context>
     <context>
+        <name>ValveUpload</name>
+        <message>
+            <source>Nothing was sent to the valve</source>
+            <translation>Es wurde nichts an das Ventil gesendet</translation>
+        </message>
+        <message>
+            <source>Upload to valve</source>
+            <translation>In das Ventil hochladen</translation>
+        </message>
+        <message>
+            <source>The document is for a {0} valve, the connected valve is a {1} valve. Choose the matching valve type or download the valve's parameters first.</source>
+            <translation>Das Dokument ist für ein Ventil {0}, das angeschlossene Ventil ist ein Ventil {1}. Wählen Sie den passenden Ventiltyp oder laden Sie zuerst die Parameter des Ventils herunter.</translation>
+        </message>
+        <message>
+            <source>Uploading the parameters to the valve…</source>
+            <translation>Parameter werden in das Ventil hochgeladen…</translation>
+        </message>
+        <message>
+            <source>Expert values at Basic level</source>
+            <translation>Expertenwerte in der Stufe Basis</translation>
+        </message>
+        <message numerus="yes">
+            <source>The document changes %n Expert-level value(s) of the valve ({0}), which the Basic access level cannot edit (controllers, linearizations, monitoring). Send them anyway?</source>
+            <translation>
+                <numerusform>Das Dokument ändert %n Wert der Stufe Experte im Ventil ({0}), den die Zugriffsstufe Basis nicht bearbeiten kann (Regler, Linearisierungen, Überwachung). Trotzdem senden?</numerusform>
+                <numerusform>Das Dokument ändert %n Werte der Stufe Experte im Ventil ({0}), die die Zugriffsstufe Basis nicht bearbeiten kann (Regler, Linearisierungen, Überwachung). Trotzdem senden?</numerusform>
+            </translation>
+        </message>
+        <message>
+            <source>Values written to the valve</source>
+            <translation>In das Ventil geschriebene Werte</translation>
+        </message>
+        <message numerus="yes">
+            <source>%n parameter(s) written, verified and stored at {0}</source>
+            <translation>
+                <numerusform>%n Parameter um {0} geschrieben, geprüft und gespeichert</numerusform>
+                <numerusform>%n Parameter um {0} geschrieben, geprüft und gespeichert</numerusform>
+            </translation>
+        </message>
+        <message numerus="yes">
+            <source>%n parameter(s) written, verified and stored again at {0}: the valve already held them</source>
+            <translation>
+                <numerusform>%n Parameter um {0} erneut geschrieben, geprüft und gespeichert: das Ventil hatte ihn schon</numerusform>
+                <numerusform>%n Parameter um {0} erneut geschrieben, geprüft und gespeichert: das Ventil hatte sie schon</numerusform>
+            </translation>
+        </message>
+        <message>
+            <source>Upload failed</source>
+            <translation>Hochladen fehlgeschlagen</translation>
+        </message>
+        <message>
+            <source>The upload failed at step “{0}”. Nothing was stored: after a restart the valve holds its previous parameters.</source>
+            <translation>Das Hochladen ist im Schritt „{0}“ fehlgeschlagen. Nichts wurde gespeichert: nach einem Neustart hat das Ventil seine vorherigen Parameter.</translation>
+        </message>
+    </context>
+    <context>
         <name>ValveWorkflow</name>
         <message>
             <source>Connecting to {0}…</source>
@@ -3889,57 +3952,12 @@ Stellen Sie sicher, dass die Hydraulik dafür sicher ist. Stopp beendet ihn jede
             <translation>Das Ventil meldet einen unbekannten Typschlüssel: {0}</translation>
         </message>
         <message>
-            <source>Upload to valve</source>
-            <translation>In das Ventil hochladen</translation>
-        </message>
-        <message>
-            <source>The document is for a {0} valve, the connected valve is a {1} valve. Choose the matching valve type or download the valve's parameters first.</source>
-            <translation>Das Dokument ist für ein Ventil {0}, das angeschlossene Ventil ist ein Ventil {1}. Wählen Sie den passenden Ventiltyp oder laden Sie zuerst die Parameter des Ventils herunter.</translation>
-        </message>
-        <message>
-            <source>Nothing was sent to the valve</source>
-            <translation>Es wurde nichts an das Ventil gesendet</translation>
-        </message>
-        <message>
-            <source>Uploading the parameters to the valve…</source>
-            <translation>Parameter werden in das Ventil hochgeladen…</translation>
-        </message>
-        <message>
-            <source>Expert values at Basic level</source>
-            <translation>Expertenwerte in der Stufe Basis</translation>
-        </message>
-        <message numerus="yes">
-            <source>The document changes %n Expert-level value(s) of the valve ({0}), which the Basic access level cannot edit (controllers, linearizations, monitoring). Send them anyway?</source>
-            <translation>
-                <numerusform>Das Dokument ändert %n Wert der Stufe Experte im Ventil ({0}), den die Zugriffsstufe Basis nicht bearbeiten kann (Regler, Linearisierungen, Überwachung). Trotzdem senden?</numerusform>
-                <numerusform>Das Dokument ändert %n Werte der Stufe Experte im Ventil ({0}), die die Zugriffsstufe Basis nicht bearbeiten kann (Regler, Linearisierungen, Überwachung). Trotzdem senden?</numerusform>
-            </translation>
-        </message>
-        <message>
             <source>Downloading the parameters from the valve…</source>
             <translation>Parameter werden aus dem Ventil heruntergeladen…</translation>
         </message>
         <message>
             <source>Set every parameter of the document to the factory default?</source>
             <translation>Alle Parameter des Dokuments auf die Werkseinstellung setzen?</translation>
-        </message>
-        <message>
-            <source>Values written to the valve</source>
-            <translation>In das Ventil geschriebene Werte</translation>
-        </message>
-        <message numerus="yes">
-            <source>%n parameter(s) written, verified and stored at {0}</source>
-            <translation>
-                <numerusform>%n Parameter um {0} geschrieben, geprüft und gespeichert</numerusform>
-                <numerusform>%n Parameter um {0} geschrieben, geprüft und gespeichert</numerusform>
-            </translation>
-        </message>
-        <message numerus="yes">
-            <source>%n parameter(s) written, verified and stored again at {0}: the valve already held them</source>
-            <translation>
-                <numerusform>%n Parameter um {0} erneut geschrieben, geprüft und gespeichert: das Ventil hatte ihn schon</numerusform>
-                <numerusform>%n Parameter um {0} erneut geschrieben, geprüft und gespeichert: das Ventil hatte sie schon</numerusform>
-            </translation>
         </message>
         <message>
             <source>Restore factory values</source>
@@ -3982,14 +4000,6 @@ Stellen Sie sicher, dass die Hydraulik dafür sicher ist. Stopp beendet ihn jede
             <translation>Werkseinstellungen wiederhergestellt; die bisherigen Parameter des Ventils sind in {0}</translation>
         </message>
         <message>
-            <source>Upload failed</source>
-            <translation>Hochladen fehlgeschlagen</translation>
-        </message>
-        <message>
-            <source>The upload failed at step “{0}”. Nothing was stored: after a restart the valve holds its previous parameters.</source>
-            <translation>Das Hochladen ist im Schritt „{0}“ fehlgeschlagen. Nichts wurde gespeichert: nach einem Neustart hat das Ventil seine vorherigen Parameter.</translation>
-        </message>
-        <message>
             <source>Valve communication</source>
             <translation>Kommunikation mit dem Ventil</translation>
         </message>
@@ -4006,10 +4016,6 @@ Alle Werte bleiben im Dokument erhalten: speichern Sie es oder gehen Sie wieder 
         <message>
             <source>Backup of the valve's parameters saved: {0}</source>
             <translation>Sicherung der Ventilparameter gespeichert: {0}</translation>
-        </message>
-        <message>
-            <source>Cancel</source>
-            <translation>Abbrechen</translation>
         </message>
     </context>
 </TS>

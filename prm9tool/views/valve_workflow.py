@@ -11,27 +11,27 @@ from collections.abc import Callable, Mapping
 from dataclasses import dataclass
 from typing import Any
 
-from PySide6.QtCore import QObject, QSettings, Qt, QTime, Signal
+from PySide6.QtCore import QObject, QSettings, Signal
 from PySide6.QtWidgets import QDialog, QProgressDialog, QWidget
 
-from prm9tool.catalogue import CATALOGUE, Access, variant_label
 from prm9tool.catalogue.typekey import TypeKey
 from prm9tool.errors import TypeKeyError
 from prm9tool.model.access import AccessModel
 from prm9tool.model.document import ParameterDocument, Raw
 from prm9tool.model.undo import DocumentUndo
 from prm9tool.online.connection import ValveConnection
-from prm9tool.online.connection_protocol import ListedValves, UploadOutcome, ValveListing
+from prm9tool.online.connection_protocol import ListedValves, ValveListing
 from prm9tool.online.sync import ValveSync
-from prm9tool.translate import error_text, translated
+from prm9tool.translate import error_text
 from prm9tool.views import prompts
 from prm9tool.views.hid_dialog import (
     SELECTED_KEY,
     HidConfigurationDialog,
     saved_emulators,
 )
-from prm9tool.views.history_policy import may_upload
 from prm9tool.views.online_dialogs import DiffChoice, OnlineDiffDialog, RestartDialog
+from prm9tool.views.operation_progress import OperationProgress
+from prm9tool.views.valve_upload import ValveUpload
 
 COMPARE = "compare"  # download made on going online, to compare with the document
 AFTER_RESTART = "after_restart"
@@ -55,17 +55,15 @@ class ValveWorkflow(QObject):
     ) -> None:
         super().__init__(window)
         self._window = window
-        self._access = access
         self._doc = doc
         self._undo = undo
         self._connection = connection
         self._sync = sync
         self._settings = settings
-        self.progress_dialog: QProgressDialog | None = None
-        self._operation = ""
-        self._upload_repeats = False  # the running upload sends what the valve holds already
-        self._pending_upload: dict[str, Raw] = {}
-        self._uploading: dict[str, Raw] = {}  # the values of the running upload
+        self.progress = OperationProgress(window, connection.cancel)
+        self.uploads = ValveUpload(
+            window, doc, connection, sync, self.progress, self.message_posted.emit, access
+        )
         # "choose per parameter" in the going-online dialog (the compare workflow sets it)
         self.choose_per_parameter: Callable[[Mapping[str, Raw]], None] | None = None
         connection.online_changed.connect(self._on_connection_online_changed)
@@ -76,6 +74,11 @@ class ValveWorkflow(QObject):
         connection.live_values_changed.connect(doc.set_live)
         connection.write_failed.connect(sync.forget)
         connection.backup_written.connect(self._on_connection_backup_written)
+
+    @property
+    def progress_dialog(self) -> QProgressDialog | None:
+        """The progress dialog of the running operation, if any."""
+        return self.progress.dialog
 
     # --- communication -----------------------------------------------------------------------
     def configure_hid(self) -> ValveListing | None:
@@ -168,10 +171,10 @@ class ValveWorkflow(QObject):
     def _on_connection_online_changed(self, online: bool) -> None:
         if not online:
             self._sync.stop()
-            self._close_progress()
+            self.progress.close()
             self.message_posted.emit(self.tr("Offline"))
             return
-        self._start(COMPARE, self.tr("Reading the valve's parameters…"), cancellable=False)
+        self.progress.start(COMPARE, self.tr("Reading the valve's parameters…"), cancellable=False)
         self._connection.download(COMPARE)
 
     def compare_again(self) -> None:
@@ -179,7 +182,9 @@ class ValveWorkflow(QObject):
         differences prompt decides what is written), instead of writing it unasked."""
         if self._connection.is_online:
             self._sync.stop()
-            self._start(COMPARE, self.tr("Reading the valve's parameters…"), cancellable=False)
+            self.progress.start(
+                COMPARE, self.tr("Reading the valve's parameters…"), cancellable=False
+            )
             self._connection.download(COMPARE)
 
     # --- the diff prompt --------------------------------------------------------------------------
@@ -260,97 +265,22 @@ class ValveWorkflow(QObject):
 
     # --- valve commands ---------------------------------------------------------------------------
     def upload(self, valve_values: Mapping[str, Raw] | None = None) -> bool:
-        """Write the document into the valve (backup first, then write → verify → store).
-
-        ``valve_values``: what the valve holds, if just read (else what the online sync
-        knows). False when nothing is sent (another variant, or the user declined).
-        """
+        """Write the document into the valve (``ValveUpload.upload``); False when nothing
+        is sent."""
         key = self._valve_key()
-        if key is None:
-            return False
-        if key.variant != self._doc.variant:
-            prompts.ask(
-                self._window,
-                prompts.Icon.Warning,
-                self.tr("Upload to valve"),
-                self.tr(
-                    "The document is for a {0} valve, the connected valve is a {1} valve. "
-                    "Choose the matching valve type or download the valve's parameters first."
-                ).format(
-                    translated(variant_label(self._doc.variant)),
-                    translated(variant_label(key.variant)),
-                ),
-                prompts.Button.Ok,
-            )
-            return False
-        known = self._sync.valve_values if valve_values is None else valve_values
-        if not self._basic_user_confirms_expert_values(known):
-            self.message_posted.emit(self.tr("Nothing was sent to the valve"))
-            return False
-        # the valve holds the document already (edits went to it, nothing left unstored)
-        self._upload_repeats = self._sync.active and not self._sync.unstored
-        self._upload_repeats &= not self._sync.differences()
-        self.upload_values(self._doc.values)
-        return True
+        return key is not None and self.uploads.upload(key, valve_values)
 
     def upload_values(self, values: Mapping[str, Raw]) -> None:
-        """Upload exactly ``values`` (write, read back, store), once the history can record
-        it or the user said to go ahead without it (views/history_policy.py)."""
-        self._pending_upload = dict(values)
-        if self._connection.history is None:
-            self._start_upload()
-            return
-        self._start("upload", self.tr("Uploading the parameters to the valve…"))
-        self._connection.check_history(self._on_history_checked)
-
-    def _on_history_checked(self, problem: object) -> None:
-        self._close_progress()
-        if may_upload(self._window, problem):
-            self._start_upload()
-
-    def _start_upload(self) -> None:
-        values, self._pending_upload = self._pending_upload, {}
-        self._uploading = values
-        self._start("upload", self.tr("Uploading the parameters to the valve…"))
-        self._connection.upload(values)
+        """Upload exactly ``values`` (``ValveUpload.upload_values``)."""
+        self.uploads.upload_values(values)
 
     def expert_differences(self, valve_values: Mapping[str, Raw]) -> list[str]:
         """The Expert-level parameters whose document value differs from the valve's."""
-        return [
-            mnemonic
-            for mnemonic, value in self._doc.values.items()
-            if CATALOGUE[mnemonic].access is Access.EXPERT
-            and mnemonic in valve_values
-            and valve_values[mnemonic] != value
-        ]
-
-    def _basic_user_confirms_expert_values(self, valve_values: Mapping[str, Raw]) -> bool:
-        """At Basic level, sending changes the Basic level cannot make needs a Yes."""
-        if self._access is None or self._access.level is not Access.BASIC:
-            return True
-        changed = self.expert_differences(valve_values)
-        if not changed:
-            return True
-        shown = ", ".join(changed[:8]) + (", …" if len(changed) > 8 else "")
-        answer = prompts.ask(
-            self._window,
-            prompts.Icon.Warning,
-            self.tr("Expert values at Basic level"),
-            self.tr(
-                "The document changes %n Expert-level value(s) of the valve ({0}), which the "
-                "Basic access level cannot edit (controllers, linearizations, monitoring). "
-                "Send them anyway?",
-                "",
-                len(changed),
-            ).format(shown),
-            prompts.Button.Yes | prompts.Button.No,
-            prompts.Button.No,
-        )
-        return answer == prompts.Button.Yes
+        return self.uploads.expert_differences(valve_values)
 
     def download(self) -> None:
         """Read the valve's parameters into the document (one undo step)."""
-        self._start("download", self.tr("Downloading the parameters from the valve…"))
+        self.progress.start("download", self.tr("Downloading the parameters from the valve…"))
         self._connection.download()
 
     def restore_factory(self) -> None:
@@ -359,7 +289,7 @@ class ValveWorkflow(QObject):
         if self._connection.is_online:
             if RestartDialog(self._window, factory=True).exec() != QDialog.DialogCode.Accepted:
                 return
-            self._start("restore_factory", self.tr("Restoring the factory values…"), False)
+            self.progress.start("restore_factory", self.tr("Restoring the factory values…"), False)
             self._connection.run_job("restore_factory", _back_up_restore_factory_and_read)
             return
         answer = prompts.ask(
@@ -379,12 +309,12 @@ class ValveWorkflow(QObject):
         dialog = RestartDialog(self._window)
         if dialog.exec() != QDialog.DialogCode.Accepted:
             return
-        self._start("restart", self.tr("Restarting the valve…"), cancellable=False)
+        self.progress.start("restart", self.tr("Restarting the valve…"), cancellable=False)
         self._connection.run_job(AFTER_RESTART, _restart_and_read)
 
     # --- results ------------------------------------------------------------------------------------
     def _on_connection_operation_finished(self, name: str, result: object) -> None:
-        self._close_progress()
+        self.progress.close()
         if name == COMPARE and isinstance(result, Mapping):
             self._on_compare_finished(result)
         elif name == "download" and isinstance(result, Mapping):
@@ -396,7 +326,7 @@ class ValveWorkflow(QObject):
             self._sync.stop()
             self._on_compare_finished(result)
         elif name == "upload":
-            self._on_upload_finished(result)
+            self.uploads.finished(result)
         elif name == "store":
             self._sync.unstored = False
             self.message_posted.emit(self.tr("The valve stored its parameters"))
@@ -411,58 +341,16 @@ class ValveWorkflow(QObject):
                 ).format(result.backup)
             )
 
-    def _on_upload_finished(self, result: object) -> None:
-        outcome = result if isinstance(result, UploadOutcome) else None
-        if outcome is not None and outcome.stored:
-            # values not from the document (a history record) become the document's too
-            written = {m: v for m, v in self._uploading.items() if self._doc.values.get(m) != v}
-            if written:
-                with self._sync.suspended():
-                    self._doc.set_values(written, self.tr("Values written to the valve"), False)
-            self._sync.start(self._doc.values)
-            at = QTime.currentTime().toString("HH:mm:ss")  # each upload's message differs
-            count = outcome.written
-            message = self.tr("%n parameter(s) written, verified and stored at {0}", "", count)
-            repeats, self._upload_repeats = self._upload_repeats, False
-            if repeats:
-                message = self.tr(
-                    "%n parameter(s) written, verified and stored again at {0}: the valve "
-                    "already held them",
-                    "",
-                    count,
-                )
-            self.message_posted.emit(message.format(at))
-            return
-        mismatches = outcome.mismatches if outcome is not None else {}
-        lines = [f"{mn}: {want} → {got}" for mn, (want, got) in mismatches.items()]
-        failure = outcome.failure if outcome is not None else None  # e.g. a refused store
-        details = "\n".join([failure, *lines] if failure else lines)
-        prompts.inform(
-            self._window,
-            prompts.Icon.Warning,
-            self.tr("Upload failed"),
-            self.tr(
-                "The upload failed at step “{0}”. Nothing was stored: after a restart the valve "
-                "holds its previous parameters."
-            ).format("" if outcome is None else str(outcome.failed_step)),
-            details,
-        )
-
     def _on_connection_progress(self, done: int, total: int, step: str) -> None:
-        dialog = self.progress_dialog
-        if dialog is None:
-            return
-        dialog.setMaximum(max(total, 1))
-        dialog.setValue(min(done, total))
-        dialog.setLabelText(f"{self._operation}\n{step}")
+        self.progress.show_step(done, total, step)
 
     def _on_connection_failed(self, message: str) -> None:
-        self._close_progress()
+        self.progress.close()
         self.message_posted.emit(message)
         prompts.inform(self._window, prompts.Icon.Warning, self.tr("Valve communication"), message)
 
     def _on_connection_lost(self, message: str) -> None:
-        self._close_progress()
+        self.progress.close()
         prompts.inform(
             self._window,
             prompts.Icon.Critical,
@@ -478,30 +366,6 @@ class ValveWorkflow(QObject):
         self.message_posted.emit(
             self.tr("Backup of the valve's parameters saved: {0}").format(path)
         )
-
-    # --- progress dialog ----------------------------------------------------------------------------
-    def _start(self, operation: str, label: str, cancellable: bool = True) -> None:
-        self._close_progress()
-        self._operation = label
-        dialog = QProgressDialog(label, self.tr("Cancel") if cancellable else "", 0, 0)
-        dialog.setParent(self._window, dialog.windowFlags())
-        dialog.setObjectName(f"progress_{operation}")
-        dialog.setWindowTitle("prm9tool")
-        dialog.setWindowModality(Qt.WindowModality.WindowModal)
-        dialog.setMinimumDuration(300)
-        dialog.setAutoClose(False)
-        dialog.setAutoReset(False)
-        if not cancellable:
-            dialog.setCancelButton(None)
-        dialog.canceled.connect(self._connection.cancel)
-        self.progress_dialog = dialog
-
-    def _close_progress(self) -> None:
-        dialog, self.progress_dialog = self.progress_dialog, None
-        if dialog is not None:
-            dialog.canceled.disconnect(self._connection.cancel)
-            dialog.close()
-            dialog.deleteLater()
 
 
 @dataclass(frozen=True)
