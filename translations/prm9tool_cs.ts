@@ -2875,6 +2875,41 @@ Ano načte a záznam zařadí do fronty; Ne nenačte nic.</translation>
         </message>
     </context>
     <context>
+        <name>ScopeExport</name>
+        <message>
+            <source>Nothing recorded yet.</source>
+            <translation>Zatím nic nezaznamenáno.</translation>
+        </message>
+        <message>
+            <source>Could not write {0}.</source>
+            <translation>{0} nelze zapsat.</translation>
+        </message>
+        <message>
+            <source>Export CSV</source>
+            <translation>Export CSV</translation>
+        </message>
+        <message>
+            <source>CSV files (*.csv)</source>
+            <translation>Soubory CSV (*.csv)</translation>
+        </message>
+        <message>
+            <source>Export PNG</source>
+            <translation>Export PNG</translation>
+        </message>
+        <message>
+            <source>PNG images (*.png)</source>
+            <translation>Obrázky PNG (*.png)</translation>
+        </message>
+        <message>
+            <source>Export</source>
+            <translation>Export</translation>
+        </message>
+        <message>
+            <source>Saved {0}.</source>
+            <translation>Uloženo: {0}.</translation>
+        </message>
+    </context>
+    <context>
         <name>ScopePlot</name>
         <message>
             <source>Auto</source>
@@ -2910,18 +2945,10 @@ Ano načte a záznam zařadí do fronty; Ne nenačte nic.</translation>
         </message>
     </context>
     <context>
-        <name>ScopeWidget</name>
+        <name>ScopeStatusText</name>
         <message>
-            <source>Select at least one measuring point on the right.</source>
-            <translation>Vpravo zvolte alespoň jeden měřicí bod.</translation>
-        </message>
-        <message>
-            <source>The recording stopped: another operation (a tuning test…) took the stream.</source>
-            <translation>Záznam se zastavil: datový tok převzala jiná operace (test ladění…).</translation>
-        </message>
-        <message>
-            <source>The recording could not start: {0}</source>
-            <translation>Záznam nelze spustit: {0}</translation>
+            <source>The valve does not follow its setpoint: {0}</source>
+            <translation>Ventil nesleduje svou žádanou hodnotu: {0}</translation>
         </message>
         <message>
             <source>Stopped. Choose up to three measuring points and press Start.</source>
@@ -2951,6 +2978,21 @@ Ano načte a záznam zařadí do fronty; Ne nenačte nic.</translation>
             <source>The oscilloscope needs a connected valve: go online (Communication → Online).</source>
             <translation>Osciloskop potřebuje připojený ventil: přejděte do režimu online (Komunikace → Režim online).</translation>
         </message>
+    </context>
+    <context>
+        <name>ScopeWidget</name>
+        <message>
+            <source>Select at least one measuring point on the right.</source>
+            <translation>Vpravo zvolte alespoň jeden měřicí bod.</translation>
+        </message>
+        <message>
+            <source>The recording stopped: another operation (a tuning test…) took the stream.</source>
+            <translation>Záznam se zastavil: datový tok převzala jiná operace (test ladění…).</translation>
+        </message>
+        <message>
+            <source>The recording could not start: {0}</source>
+            <translation>Záznam nelze spustit: {0}</translation>
+        </message>
         <message>
             <source>The link dropped: the setpoint generator has stopped.</source>
             <translation>Spojení se přerušilo: generátor žádané hodnoty se zastavil.</translation>
@@ -2958,38 +3000,6 @@ Ano načte a záznam zařadí do fronty; Ne nenačte nic.</translation>
         <message>
             <source>The setpoint generator has stopped: another operation (a tuning test, an upload…) drives the valve now.</source>
             <translation>Generátor žádané hodnoty se zastavil: ventil nyní řídí jiná operace (test ladění, načtení do ventilu…).</translation>
-        </message>
-        <message>
-            <source>Nothing recorded yet.</source>
-            <translation>Zatím nic nezaznamenáno.</translation>
-        </message>
-        <message>
-            <source>Could not write {0}.</source>
-            <translation>{0} nelze zapsat.</translation>
-        </message>
-        <message>
-            <source>Export CSV</source>
-            <translation>Export CSV</translation>
-        </message>
-        <message>
-            <source>CSV files (*.csv)</source>
-            <translation>Soubory CSV (*.csv)</translation>
-        </message>
-        <message>
-            <source>Export PNG</source>
-            <translation>Export PNG</translation>
-        </message>
-        <message>
-            <source>PNG images (*.png)</source>
-            <translation>Obrázky PNG (*.png)</translation>
-        </message>
-        <message>
-            <source>Export</source>
-            <translation>Export</translation>
-        </message>
-        <message>
-            <source>Saved {0}.</source>
-            <translation>Uloženo: {0}.</translation>
         </message>
         <message>
             <source>The valve refused a value of the setpoint generator ({0}): the generator has stopped.</source>
@@ -3002,10 +3012,6 @@ Ano načte a záznam zařadí do fronty; Ne nenačte nic.</translation>
         <message>
             <source>no reason given</source>
             <translation>bez udání důvodu</translation>
-        </message>
-        <message>
-            <source>The valve does not follow its setpoint: {0}</source>
-            <translation>Ventil nesleduje svou žádanou hodnotu: {0}</translation>
         </message>
     </context>
     <context>

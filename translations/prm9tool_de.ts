@@ -2866,6 +2866,41 @@ Ja lädt hoch und stellt den Eintrag in die Warteschlange; Nein lädt nichts hoc
         </message>
     </context>
     <context>
+        <name>ScopeExport</name>
+        <message>
+            <source>Nothing recorded yet.</source>
+            <translation>Noch nichts aufgezeichnet.</translation>
+        </message>
+        <message>
+            <source>Could not write {0}.</source>
+            <translation>{0} konnte nicht geschrieben werden.</translation>
+        </message>
+        <message>
+            <source>Export CSV</source>
+            <translation>CSV exportieren</translation>
+        </message>
+        <message>
+            <source>CSV files (*.csv)</source>
+            <translation>CSV-Dateien (*.csv)</translation>
+        </message>
+        <message>
+            <source>Export PNG</source>
+            <translation>PNG exportieren</translation>
+        </message>
+        <message>
+            <source>PNG images (*.png)</source>
+            <translation>PNG-Bilder (*.png)</translation>
+        </message>
+        <message>
+            <source>Export</source>
+            <translation>Export</translation>
+        </message>
+        <message>
+            <source>Saved {0}.</source>
+            <translation>{0} gespeichert.</translation>
+        </message>
+    </context>
+    <context>
         <name>ScopePlot</name>
         <message>
             <source>Auto</source>
@@ -2901,18 +2936,10 @@ Ja lädt hoch und stellt den Eintrag in die Warteschlange; Nein lädt nichts hoc
         </message>
     </context>
     <context>
-        <name>ScopeWidget</name>
+        <name>ScopeStatusText</name>
         <message>
-            <source>Select at least one measuring point on the right.</source>
-            <translation>Wählen Sie rechts mindestens einen Messpunkt.</translation>
-        </message>
-        <message>
-            <source>The recording stopped: another operation (a tuning test…) took the stream.</source>
-            <translation>Die Aufzeichnung wurde beendet: ein anderer Vorgang (ein Tuning-Test…) hat den Datenstrom übernommen.</translation>
-        </message>
-        <message>
-            <source>The recording could not start: {0}</source>
-            <translation>Die Aufzeichnung konnte nicht starten: {0}</translation>
+            <source>The valve does not follow its setpoint: {0}</source>
+            <translation>Das Ventil folgt seinem Sollwert nicht: {0}</translation>
         </message>
         <message>
             <source>Stopped. Choose up to three measuring points and press Start.</source>
@@ -2942,6 +2969,21 @@ Ja lädt hoch und stellt den Eintrag in die Warteschlange; Nein lädt nichts hoc
             <source>The oscilloscope needs a connected valve: go online (Communication → Online).</source>
             <translation>Das Oszilloskop braucht ein verbundenes Ventil: wechseln Sie online (Kommunikation → Online).</translation>
         </message>
+    </context>
+    <context>
+        <name>ScopeWidget</name>
+        <message>
+            <source>Select at least one measuring point on the right.</source>
+            <translation>Wählen Sie rechts mindestens einen Messpunkt.</translation>
+        </message>
+        <message>
+            <source>The recording stopped: another operation (a tuning test…) took the stream.</source>
+            <translation>Die Aufzeichnung wurde beendet: ein anderer Vorgang (ein Tuning-Test…) hat den Datenstrom übernommen.</translation>
+        </message>
+        <message>
+            <source>The recording could not start: {0}</source>
+            <translation>Die Aufzeichnung konnte nicht starten: {0}</translation>
+        </message>
         <message>
             <source>The link dropped: the setpoint generator has stopped.</source>
             <translation>Die Verbindung ist abgebrochen: der Sollwertgenerator wurde gestoppt.</translation>
@@ -2949,38 +2991,6 @@ Ja lädt hoch und stellt den Eintrag in die Warteschlange; Nein lädt nichts hoc
         <message>
             <source>The setpoint generator has stopped: another operation (a tuning test, an upload…) drives the valve now.</source>
             <translation>Der Sollwertgenerator wurde gestoppt: ein anderer Vorgang (ein Tuning-Test, ein Hochladen…) steuert jetzt das Ventil.</translation>
-        </message>
-        <message>
-            <source>Nothing recorded yet.</source>
-            <translation>Noch nichts aufgezeichnet.</translation>
-        </message>
-        <message>
-            <source>Could not write {0}.</source>
-            <translation>{0} konnte nicht geschrieben werden.</translation>
-        </message>
-        <message>
-            <source>Export CSV</source>
-            <translation>CSV exportieren</translation>
-        </message>
-        <message>
-            <source>CSV files (*.csv)</source>
-            <translation>CSV-Dateien (*.csv)</translation>
-        </message>
-        <message>
-            <source>Export PNG</source>
-            <translation>PNG exportieren</translation>
-        </message>
-        <message>
-            <source>PNG images (*.png)</source>
-            <translation>PNG-Bilder (*.png)</translation>
-        </message>
-        <message>
-            <source>Export</source>
-            <translation>Export</translation>
-        </message>
-        <message>
-            <source>Saved {0}.</source>
-            <translation>{0} gespeichert.</translation>
         </message>
         <message>
             <source>The valve refused a value of the setpoint generator ({0}): the generator has stopped.</source>
@@ -2993,10 +3003,6 @@ Ja lädt hoch und stellt den Eintrag in die Warteschlange; Nein lädt nichts hoc
         <message>
             <source>no reason given</source>
             <translation>ohne Angabe eines Grundes</translation>
-        </message>
-        <message>
-            <source>The valve does not follow its setpoint: {0}</source>
-            <translation>Das Ventil folgt seinem Sollwert nicht: {0}</translation>
         </message>
     </context>
     <context>
