@@ -2627,6 +2627,38 @@ Ano načte a záznam zařadí do fronty; Ne nenačte nic.</translation>
             <source>{0}: {1} is ambiguous (a thousands separator?); write the number without one, with '{2}' before the decimals</source>
             <translation>{0}: {1} je nejednoznačné (oddělovač tisíců?); napište číslo bez něj, s „{2}“ před desetinnými místy</translation>
         </message>
+        <message>
+            <source>byte 0x{0} is not UTF-8 text: the file is corrupt</source>
+            <translation>bajt 0x{0} není text UTF-8: soubor je poškozený</translation>
+        </message>
+        <message>
+            <source>control character U+{0}: binary data, the file is corrupt</source>
+            <translation>řídicí znak U+{0}: binární data, soubor je poškozený</translation>
+        </message>
+        <message>
+            <source>text after the checksum line, which must be the last line</source>
+            <translation>text za řádkem kontrolního součtu, který musí být poslední</translation>
+        </message>
+        <message>
+            <source>garbled line: expected 'NAME = value', a '#' comment or a blank line</source>
+            <translation>nečitelný řádek: očekáváno 'NÁZEV = hodnota', komentář '#' nebo prázdný řádek</translation>
+        </message>
+        <message>
+            <source>{0} is set twice (first on line {1})</source>
+            <translation>{0} je nastaven dvakrát (poprvé na řádku {1})</translation>
+        </message>
+        <message>
+            <source>no 'checksum = ...' line at the end: the file is truncated (a file written by hand must end with one, e.g. 'checksum = crc32:00000000')</source>
+            <translation>na konci chybí řádek 'checksum = ...': soubor je zkrácený (ručně psaný soubor musí takovým řádkem končit, např. 'checksum = crc32:00000000')</translation>
+        </message>
+        <message>
+            <source>checksum {0} is damaged (expected crc32: and 8 hex digits)</source>
+            <translation>kontrolní součet {0} je poškozený (očekáváno: crc32: a 8 šestnáctkových číslic)</translation>
+        </message>
+        <message>
+            <source>checksum does not match: the file was changed outside prm9tool (edited by hand?); saving it from prm9tool writes a new checksum</source>
+            <translation>kontrolní součet nesouhlasí: soubor byl změněn mimo prm9tool (ručně upraven?); uložením z prm9tool se zapíše nový kontrolní součet</translation>
+        </message>
     </context>
     <context>
         <name>RampsDialog</name>

@@ -2618,6 +2618,38 @@ Ja lädt hoch und stellt den Eintrag in die Warteschlange; Nein lädt nichts hoc
             <source>{0}: {1} is ambiguous (a thousands separator?); write the number without one, with '{2}' before the decimals</source>
             <translation>{0}: {1} ist mehrdeutig (ein Tausendertrennzeichen?); schreiben Sie die Zahl ohne Trennzeichen, mit „{2}“ vor den Nachkommastellen</translation>
         </message>
+        <message>
+            <source>byte 0x{0} is not UTF-8 text: the file is corrupt</source>
+            <translation>Byte 0x{0} ist kein UTF-8-Text: die Datei ist beschädigt</translation>
+        </message>
+        <message>
+            <source>control character U+{0}: binary data, the file is corrupt</source>
+            <translation>Steuerzeichen U+{0}: Binärdaten, die Datei ist beschädigt</translation>
+        </message>
+        <message>
+            <source>text after the checksum line, which must be the last line</source>
+            <translation>Text nach der Prüfsummenzeile, die die letzte Zeile sein muss</translation>
+        </message>
+        <message>
+            <source>garbled line: expected 'NAME = value', a '#' comment or a blank line</source>
+            <translation>unlesbare Zeile: erwartet 'NAME = Wert', einen '#'-Kommentar oder eine Leerzeile</translation>
+        </message>
+        <message>
+            <source>{0} is set twice (first on line {1})</source>
+            <translation>{0} ist zweimal gesetzt (zuerst in Zeile {1})</translation>
+        </message>
+        <message>
+            <source>no 'checksum = ...' line at the end: the file is truncated (a file written by hand must end with one, e.g. 'checksum = crc32:00000000')</source>
+            <translation>keine Zeile 'checksum = ...' am Ende: die Datei ist abgeschnitten (eine von Hand geschriebene Datei muss mit einer solchen Zeile enden, z. B. 'checksum = crc32:00000000')</translation>
+        </message>
+        <message>
+            <source>checksum {0} is damaged (expected crc32: and 8 hex digits)</source>
+            <translation>Prüfsumme {0} ist beschädigt (erwartet: crc32: und 8 Hexadezimalziffern)</translation>
+        </message>
+        <message>
+            <source>checksum does not match: the file was changed outside prm9tool (edited by hand?); saving it from prm9tool writes a new checksum</source>
+            <translation>Prüfsumme stimmt nicht: die Datei wurde außerhalb von prm9tool geändert (von Hand bearbeitet?); Speichern aus prm9tool schreibt eine neue Prüfsumme</translation>
+        </message>
     </context>
     <context>
         <name>RampsDialog</name>
