@@ -94,7 +94,7 @@ def create_window(args: argparse.Namespace) -> MainWindow:
     i18n.set_language(language if language in i18n.LANGUAGES else i18n.DEFAULT_LANGUAGE)
     doc = ParameterDocument(DEFAULT_TYPE_KEY)
     undo = DocumentUndo(doc)
-    connection = ValveConnection(opener=_opener(args), lister=_lister, after_open=_joiner(args))
+    connection = ValveConnection(opener=_opener(args), after_open=_joiner(args))
     from prm9tool.history.recorder import Recorder  # opens its database on first use
 
     connection.set_recorder(Recorder(getattr(args, "history_db", None)))
@@ -211,18 +211,10 @@ def _can_link(args: argparse.Namespace) -> object:
         return factory.CanOptions.from_args(args)
     from PySide6.QtCore import QSettings
 
+    from prm9tool.online.valve_listing import can_options
     from prm9tool.views.can_bus_dialog import saved_bus
 
-    return _bus_options(saved_bus(QSettings()))
-
-
-def _bus_options(bus: dict[str, object]) -> object:
-    from prm9tool.device import factory
-
-    rate = bus.get("bitrate")
-    return factory.CanOptions(
-        str(bus["interface"]), str(bus["channel"]), int(str(rate)) if rate else None
-    )
+    return can_options(saved_bus(QSettings()))
 
 
 def _joiner(args: argparse.Namespace) -> Callable[[object], object] | None:
@@ -241,13 +233,6 @@ def _joiner(args: argparse.Namespace) -> Callable[[object], object] | None:
         return factory.join_can(session, factory.CanOptions.from_args(args))  # type: ignore[arg-type]
 
     return join
-
-
-def _lister(emulators: object, can: dict[str, object] | None = None) -> list[object]:
-    from prm9tool.device import factory
-
-    options = _bus_options(can) if can is not None else None
-    return list(factory.list_devices(emulators, options))  # type: ignore[arg-type]
 
 
 def show_internal_error(

@@ -25,6 +25,7 @@ from PySide6.QtCore import QObject, Qt, Signal
 from prm9tool.errors import CommunicationError, Prm9Error
 from prm9tool.online.polling import Poller, Schedule
 from prm9tool.online.setpoint_driver import SetpointDriver, StreamClock
+from prm9tool.online.valve_listing import default_lister, default_opener
 from prm9tool.translate import error_text
 
 if TYPE_CHECKING:
@@ -83,8 +84,8 @@ class ValveConnection(QObject):
         the connection already reports online (the GUI puts an emulated -CA valve on its CAN
         bus there); a Prm9Error it raises arrives as ``failed``, the session stays open."""
         super().__init__(parent)
-        self._opener = opener or _default_opener
-        self._lister = lister or _default_lister
+        self._opener = opener or default_opener
+        self._lister = lister or default_lister
         self._after_open = after_open
         self._jobs: queue.Queue[_Job | None] = queue.Queue()
         self._thread: threading.Thread | None = None
@@ -557,21 +558,3 @@ class ValveConnection(QObject):
 
 
 _IDLE = _Job("idle", lambda _s: None)
-
-
-def _default_opener(entry: object) -> Any:
-    from prm9tool.device import factory
-
-    return factory.open_session(entry)  # type: ignore[arg-type]
-
-
-def _default_lister(emulators: Sequence[str], can: Mapping[str, Any] | None = None) -> list[Any]:
-    from prm9tool.device import factory
-
-    if can is None:
-        return list(factory.list_devices(emulators))
-    rate = can.get("bitrate")
-    options = factory.CanOptions(
-        str(can["interface"]), str(can["channel"]), int(rate) if rate else None
-    )
-    return list(factory.list_devices(emulators, options))
