@@ -5,13 +5,12 @@ from __future__ import annotations
 
 from prm9tool.catalogue._vocabulary import (
     E04_ONLY,
-    PERCENT,
     RO,
     S8,
-    S16,
     U16,
     U32,
     T,
+    process_value,
 )
 from prm9tool.catalogue.schema import EVERY_VARIANT, Access, Applies, ObjAccess, Parameter, Texts
 
@@ -19,26 +18,11 @@ from prm9tool.catalogue.schema import EVERY_VARIANT, Access, Applies, ObjAccess,
 def _pv(
     mnemonic: str, index: int, text: Texts, obj: ObjAccess = RO, applies: Applies = EVERY_VARIANT
 ) -> Parameter:
-    """A process value of CiA 408 (S16, ±16384 = ±100 %)."""
-    return Parameter(
-        mnemonic,
-        index,
-        1,
-        S16,
-        -16384,
-        16384,
-        0,
-        group="process_values",
-        access=Access.READ_ONLY,
-        obj_access=obj,
-        in_file=False,
-        unit="%",
-        scale=PERCENT,
-        decimals=1,
+    """A process value of the device profile (table 7-16)."""
+    return process_value(
+        mnemonic, index, 1, text, group="process_values", source="table 7-16", obj=obj,
         applies=applies,
-        text=text,
-        source="table 7-16",
-    )
+    )  # fmt: skip
 
 
 DEVICE_PROFILE: list[Parameter] = [

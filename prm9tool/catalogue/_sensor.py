@@ -16,8 +16,9 @@ from prm9tool.catalogue._vocabulary import (
     U16,
     T,
     linearization,
+    process_value,
 )
-from prm9tool.catalogue.schema import Access, ObjAccess, Parameter
+from prm9tool.catalogue.schema import ObjAccess, Parameter
 
 _SENSOR_LIN = T(
     "External sensor linearization",
@@ -121,24 +122,15 @@ EXTERNAL_SENSOR: list[Parameter] = [
 ]
 
 EXTERNAL_SENSOR_DATA: list[Parameter] = [
-    Parameter(
+    process_value(
         mn,
         0x2100,
         sub,
-        S16,
-        -16384,
-        16384,
-        0,
+        text,
         group="ext_sensor_data",
-        access=Access.READ_ONLY,
-        obj_access=obj,
-        in_file=False,
-        unit="%",
-        scale=PERCENT,
-        decimals=1,
-        applies=E04_ONLY,
-        text=text,
         source="table 7-14",
+        obj=obj,
+        applies=E04_ONLY,
     )
     for mn, sub, obj, text in (
         (

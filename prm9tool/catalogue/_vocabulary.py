@@ -3,7 +3,15 @@ choices several parameters share, and the nine-point linearization curves."""
 
 from __future__ import annotations
 
-from prm9tool.catalogue.schema import Applies, DataType, ObjAccess, Parameter, Texts
+from prm9tool.catalogue.schema import (
+    EVERY_VARIANT,
+    Access,
+    Applies,
+    DataType,
+    ObjAccess,
+    Parameter,
+    Texts,
+)
 from prm9tool.catalogue.variant import Coils, Config
 
 T = Texts
@@ -78,3 +86,36 @@ def linearization(
             )
         )
     return result
+
+
+def process_value(
+    mnemonic: str,
+    index: int,
+    subindex: int,
+    text: Texts,
+    *,
+    group: str,
+    source: str,
+    obj: ObjAccess = ObjAccess.RO,
+    applies: Applies = EVERY_VARIANT,
+) -> Parameter:
+    """A process value of CiA 408 (S16, ±16384 = ±100 %), read-only and not in the file."""
+    return Parameter(
+        mnemonic,
+        index,
+        subindex,
+        DataType.INTEGER16,
+        -16384,
+        16384,
+        0,
+        group=group,
+        access=Access.READ_ONLY,
+        obj_access=obj,
+        in_file=False,
+        unit="%",
+        scale=PERCENT,
+        decimals=1,
+        applies=applies,
+        text=text,
+        source=source,
+    )
