@@ -161,22 +161,10 @@ def test_two_masters_on_one_bus_never_leave_a_mixed_stored_set(rig, data_dir):
 
 def test_a_node_that_is_not_a_prm9_is_refused(tmp_path, data_dir):
     from can_link_rig import unique_channel
+    from canopen_rig import foreign_node
 
     channel = unique_channel("other")
-    network = canopen.Network()
-    network.connect(interface="virtual", channel=channel)
-    od = canopen.ObjectDictionary()
-    for index, value in ((0x1000, 0x191), (0x1001, 0)):
-        var = canopen.objectdictionary.ODVariable("v", index, 0)
-        var.data_type = canopen.objectdictionary.UNSIGNED32
-        var.default = value
-        od.add_object(var)
-    identity = canopen.objectdictionary.ODRecord("identity", 0x1018)
-    vendor = canopen.objectdictionary.ODVariable("vendor", 0x1018, 1)
-    vendor.data_type, vendor.default = canopen.objectdictionary.UNSIGNED32, 0x123
-    identity.add_member(vendor)
-    od.add_object(identity)
-    network.add_node(canopen.LocalNode(NODE, od))
+    network = foreign_node(channel, NODE, vendor=0x123)
     try:
         with pytest.raises(NotAPrm9Error, match=r"not a PRM9 .device type 0x191, vendor 0x123."):
             CanopenSession(CanOptions("virtual", channel), NODE)
