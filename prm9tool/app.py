@@ -94,7 +94,7 @@ def create_window(args: argparse.Namespace) -> MainWindow:
     i18n.set_language(language if language in i18n.LANGUAGES else i18n.DEFAULT_LANGUAGE)
     doc = ParameterDocument(DEFAULT_TYPE_KEY)
     undo = DocumentUndo(doc)
-    connection = ValveConnection(opener=_opener(args), after_open=_joiner(args))
+    connection = ValveConnection(opener=_opener(args), lister=_lister, after_open=_joiner(args))
     from prm9tool.history.recorder import Recorder  # opens its database on first use
 
     connection.set_recorder(Recorder(getattr(args, "history_db", None)))
@@ -196,7 +196,13 @@ def _opener(args: argparse.Namespace) -> Callable[[object], object]:
     def open_session(entry: object) -> object:
         from prm9tool.device import factory
 
-        return factory.open_session(entry, paced=True, can_link=_can_link(args))  # type: ignore[arg-type]
+        label_key = getattr(args, "type_key", None)  # --type-key: a valve without 0x2041
+        return factory.open_session(
+            entry,  # type: ignore[arg-type]
+            paced=True,
+            can_link=_can_link(args),  # type: ignore[arg-type]
+            label_key=label_key,
+        )
 
     return open_session
 
@@ -233,6 +239,16 @@ def _joiner(args: argparse.Namespace) -> Callable[[object], object] | None:
         return factory.join_can(session, factory.CanOptions.from_args(args))  # type: ignore[arg-type]
 
     return join
+
+
+def _lister(emulators: object, can: dict[str, object] | None = None) -> list[object]:
+    """The connection's listing, with the remembered emulated valves that cannot be made
+    listed as such (the valve selection says why and offers to remove them)."""
+    from prm9tool.device import factory
+    from prm9tool.online.valve_listing import default_lister
+
+    usable, unusable = factory.usable_emulators(emulators)  # type: ignore[arg-type]
+    return [*default_lister(usable, can), *unusable]
 
 
 def show_internal_error(

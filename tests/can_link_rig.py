@@ -74,12 +74,17 @@ class LinkRig:
 
 
 def make_link_rig(
-    name: str, tmp_path: Path, type_key: str = E04, real_valve: bool = False
+    name: str,
+    tmp_path: Path,
+    type_key: str = E04,
+    real_valve: bool = False,
+    switches: tuple[int, int] | None = None,
 ) -> LinkRig:
-    """A booted valve (node 10) on a fresh virtual channel; its EEPROM in ``tmp_path``."""
+    """A booted valve (node 10) on a fresh virtual channel; its EEPROM in ``tmp_path``.
+    ``switches``: its rotary switches (interface/bit rate, node ID; default 6, 2)."""
     channel = unique_channel(name)
     serial = next(_serials)
-    valve = EmulatedValve(type_key, serial, nv_path=tmp_path / f"{serial}.json")
+    valve = EmulatedValve(type_key, serial, nv_path=tmp_path / f"{serial}.json", switches=switches)
     bus = can.Bus(interface="virtual", channel=channel)
     slave = valve.connect_can(bus)
     rig = LinkRig(valve, slave, bus, CanOptions("virtual", channel))

@@ -116,7 +116,8 @@ def test_a_node_that_stops_answering_mid_upload_keeps_its_stored_set(rig, data_d
     with open_can(rig, timeout_s=0.05) as session:
         stored_before = rig.stored_set()
         values = changed(session)
-        rig.go_silent_after(20)  # 20 writes (the snapshot is the values just read)
+        rig.go_silent_after(2)  # 2 of the 4 writes (the snapshot is the values just read;
+        # values the valve holds already are not sent)
         with pytest.raises(DeviceTimeoutError) as caught:
             session.upload(values)
     message = str(caught.value)
@@ -300,6 +301,27 @@ def test_the_scope_takes_tpdo1_at_its_own_sync_when_the_node_is_operational(tmp_
         rig.close()
 
 
+def test_sampled_actual_values_are_read_where_the_catalogue_puts_them():
+    """The SDO sampler read 0x6301/0 and 0x6381/0 (the records' entry count, 1): over CAN the
+    scope showed the spool fixed at 0.006104 % whatever it did."""
+    from prm9tool.device.canlink.sampler import SdoSampler
+
+    reads: list[tuple[int, int]] = []
+
+    def read(index: int, subindex: int) -> bytes:
+        reads.append((index, subindex))
+        return (-4096).to_bytes(2, "little", signed=True)  # -25 %
+
+    sampler = SdoSampler(read, ["position_actual", "process_actual"], 100)  # samples in a thread
+    try:
+        shown = [sampler._sample(k) for k in ("position_actual", "process_actual")]
+    finally:
+        sampler.stop()
+    assert shown == [-4096, -4096]
+    assert set(reads) == {(0x6301, 1), (0x6381, 1)}
+    assert set(reads) == {CATALOGUE[m].key for m in ("POSACT", "PRCACT")}
+
+
 def test_the_sync_period_keeps_the_scope_under_half_of_a_slow_bus():
     from prm9tool.device.canlink.pdo_scope import min_period_s
 
@@ -336,7 +358,7 @@ def test_a_valve_reset_mid_upload_keeps_its_stored_set(tmp_path, data_dir):
         with open_can(rig, timeout_s=0.1) as session:
             stored_before = rig.stored_set()
             values = changed(session)
-            rig.reset_after(30)  # during the writes
+            rig.reset_after(3)  # during the writes (4 values change; the rest are held)
             with pytest.raises(DeviceTimeoutError) as caught:
                 session.upload(values)
         message = str(caught.value)

@@ -169,6 +169,21 @@ def test_no_emcy_while_stopped_and_none_when_invalid(rig: Rig, case: str):
 
 
 # --- PDO communication parameters -----------------------------------------------------------
+def test_sdo_requests_keep_the_setpoint_override_alive_as_usb_reports_do(rig: Rig):
+    """Over CAN the scope's generator keeps SETPOVR written; the override used to drop after
+    500 ms (only a USB report fed its watchdog) and the spool stopped following."""
+    _start(rig)
+    rig.send("60A 2F 50 20 01 01 00 00 00")  # SETPOVRON = 1
+    rig.barrier()
+    assert rig.valve.read(0x2050, 1) == 1
+    for _ in range(10):
+        rig.valve.advance(0.1)
+        rig.barrier()  # one SDO request (a read of 0x1000) every 100 ms
+    assert rig.valve.read(0x2050, 1) == 1
+    rig.valve.advance(0.6)  # the master went silent
+    assert rig.valve.read(0x2050, 1) == 0
+
+
 def test_cob_id_writable_only_outside_operational(rig: Rig):
     _start(rig)
     rig.exchange("60A 23 00 18 01 91 01 00 00", "58A 80 00 18 01 22 00 00 08")

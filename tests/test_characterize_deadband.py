@@ -99,3 +99,24 @@ def test_without_overlap_nothing_is_proposed_and_e02_is_refused():
     assert all(v < 30 for v in result.offsets.values())
     with pytest.raises(Prm9Error, match="measured on E04 valves"):
         flow_test(rig_of(E02))
+
+
+def test_end_of_line_on_e04_reports_the_flow_characteristic(tmp_path):
+    from prm9tool.analysis.profile import parse_profile
+    from prm9tool.characterize.run import characterize, report_data, write_csv_files
+
+    profile = parse_profile(
+        {"test": {"step_amplitudes_pct": [20], "step_duration_s": 1, "bode_duration_s": 4,
+                  "bode_f_min_hz": 0.5, "bode_f_max_hz": 5, "static_period_s": 20},
+         "limits": {"flow_dead_band_pct": {"max": 5}}}
+    )  # fmt: skip
+    result = characterize(rig_of(E04, overlap=0.1), profile)
+    figures = {f.name: f for f in result.figures}
+    assert figures["flow_gain"].value == pytest.approx(4.0, rel=0.05)
+    assert figures["flow_dead_band_pct"].value == pytest.approx(20.0, rel=0.05)
+    assert figures["flow_dead_band_pct"].passed is False  # the 10 % overlap is beyond 5 %
+    assert result.steps[0].loop == "process"  # in control mode 4 the setpoint is the process's
+    assert result.static is not None and result.static.response_key == "process_actual"
+    files = write_csv_files(result, tmp_path / "e04")
+    assert (tmp_path / "e04-flow.csv") in files
+    assert report_data(result, files)["passed"] is False

@@ -4,8 +4,11 @@ in front of a paced emulated valve) and CANopen (an emulated -CA valve on a virt
 from __future__ import annotations
 
 import json
+import os
 import sys
+import time
 
+import numpy as np
 import pytest
 from pypdf import PdfReader
 from usb_fakes import FakeHid
@@ -114,3 +117,70 @@ def test_characterize_over_canopen_at_the_links_rate(can_valve, tmp_path, capsys
         assert f"Limited by the link sweep limited to {rate / 10:g} Hz" in text
     assert code in (ExitCode.OK, ExitCode.OUT_OF_LIMITS), err
     assert can_valve.working("SETPOVRON") == 0  # the override is off again
+
+
+def test_the_tuning_windows_rig_over_canopen(can_valve):
+    from prm9tool.analysis.model import Targets
+    from prm9tool.characterize.autotune import model_tune
+    from prm9tool.characterize.canrig import CanRig, rig_for_session
+    from prm9tool.characterize.procedures import step_test
+    from prm9tool.device.canlink.session import CanopenSession
+    from prm9tool.errors import Prm9Error
+
+    with CanopenSession(can_valve.options, 10) as session:
+        rig = rig_for_session(session, "USB")  # what the Tuning window's runner does online
+        assert isinstance(rig, CanRig) and rig.info.link.startswith("CANopen node 10")
+        step = step_test(rig, 25.0, duration_s=0.1)
+        assert step.figures is not None and step.figures.final == pytest.approx(25.0, abs=2.0)
+        assert np.isnan(step.record.channels["controller_output"]).all()  # no object: no data
+        with pytest.raises(Prm9Error, match="needs the controller's output"):
+            model_tune(rig, Targets(10.0, 0.04))
+    assert can_valve.working("SETPOVRON") == 0
+    assert can_valve.working("POSKP") == CATALOGUE["POSKP"].default
+
+
+def test_the_sdo_sampler_reads_the_actual_position_not_its_entry_count(can_valve):
+    from prm9tool.device.canlink.session import CanopenSession
+
+    with CanopenSession(can_valve.options, 10) as session:
+        session.write_many({"SETPOVR": 8192, "SETPOVRON": 1})  # 50 %
+        time.sleep(0.1)
+        session.stream_start(["position_actual"], 200)
+        time.sleep(0.1)
+        samples = session.stream_read()
+        session.stream_stop()
+        session.write("SETPOVRON", 0)
+    assert session.stream_source == "" and len(samples)
+    assert samples[-1, 0] == pytest.approx(8192, rel=0.03)  # 0x6301/1, not 0x6301/0 (= 1)
+
+
+def test_the_tuning_window_online_over_canopen(qtbot, can_valve, monkeypatch):
+    from PySide6.QtWidgets import QMessageBox
+
+    from prm9tool.model.document import ParameterDocument
+    from prm9tool.online.connection import ValveConnection
+    from prm9tool.views.tuning_window import TuningWindow
+
+    connection = ValveConnection(
+        opener=lambda e: factory.open_session(e, can_link=can_valve.options)
+    )
+    try:
+        with qtbot.waitSignal(connection.online_changed, timeout=10000):
+            connection.go_online("can:10")
+        w = TuningWindow(ParameterDocument(E02 + "-CA"), connection)
+        qtbot.addWidget(w)
+        assert "Online" in w.mode.text()
+        monkeypatch.setattr(QMessageBox, "question", lambda *a: QMessageBox.StandardButton.Yes)
+        w.tabs.setCurrentWidget(w.bode)
+        w.bode.duration.setValue(1.5)
+        w.bode.f_min.setValue(2.0)
+        w.bode.run_button.click()  # asks 2 … 200 Hz
+        qtbot.waitUntil(lambda: not w.runner.busy, timeout=30000)
+        text = w.bode.result.text()
+        assert "−3 dB at" in text, w.status.text()
+        assert "The link's sample rate limited the sweep to" in text
+        if os.environ.get("PRM9TOOL_SCREENSHOTS"):
+            w.grab().save(os.path.join(os.environ["PRM9TOOL_SCREENSHOTS"], "tuning_bode_can.png"))
+    finally:
+        connection.shutdown()
+    assert can_valve.working("SETPOVRON") == 0

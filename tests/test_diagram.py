@@ -376,3 +376,11 @@ def test_the_printed_picture_shows_the_parameters_not_the_live_state(qtbot):
     for block_id, block in view.diagram.blocks.items():
         assert picture.blocks[block_id].lines == block.lines
         assert picture.blocks[block_id].title == block.title
+
+
+def test_a_measuring_point_without_data_shows_a_dash_not_nan():
+    """Online over CANopen most points have no object (NaN): the diagram showed "nan %"."""
+    nan = float("nan")
+    assert format_signal("demand", nan) == "—"
+    assert format_signal("current_a", nan) == "A —"
+    assert format_signal("pwm_a", nan) == "PWM A —"

@@ -117,3 +117,60 @@ def test_a_valve_without_its_type_key_is_asked_for_it_once(qtbot, tmp_path, sett
     finally:
         connection.shutdown()
         rig.close()
+
+
+def test_the_node_table_is_live_while_the_dialog_is_open(qtbot, rig, settings):
+    """The network view: after a search the monitor keeps NMT state, heartbeat age and last
+    EMCY current off the GUI thread; a node that boots is added, one whose heartbeat stops is
+    shown silent."""
+    import time
+
+    import can
+
+    from prm9tool.online.bus_monitor import BusMonitor
+
+    rig.valve.start()  # real time: the valve's heartbeat runs
+    connection = ValveConnection(opener=lambda e: factory.open_session(e, can_link=rig.options))
+    monitor = BusMonitor()
+    dialog = CanBusDialog(
+        lambda bus, deliver: connection.list_devices_async((), deliver, bus),
+        settings,
+        None,
+        monitor,
+    )
+    qtbot.addWidget(dialog)
+    dialog.interface.setCurrentText("virtual")
+    dialog.channel.setText(rig.options.channel)
+    other = can.Bus(interface="virtual", channel=rig.options.channel)
+    try:
+        rig.valve.write(0x1017, 0, 50)  # heartbeat every 50 ms
+        dialog.search.click()
+        qtbot.waitUntil(
+            lambda: dialog.table.rowCount() == 1 and dialog.search.isEnabled(), timeout=10000
+        )
+        assert dialog.table.item(0, 0).text() == "can:10"
+        qtbot.waitUntil(lambda: dialog.table.item(0, 4).text() == "pre-operational", timeout=3000)
+        other.send(can.Message(arbitration_id=0x705, data=[0x00], is_extended_id=False))  # boot-up
+        qtbot.waitUntil(lambda: dialog.table.rowCount() == 2, timeout=3000)
+        assert dialog.table.item(1, 0).text() == "can:5"
+        assert dialog.table.item(1, 1).text() == "new on the bus: search again to identify it"
+        for _ in range(4):  # its heartbeat, every 50 ms, and an EMCY
+            time.sleep(0.05)
+            other.send(can.Message(arbitration_id=0x705, data=[0x7F], is_extended_id=False))
+        other.send(can.Message(arbitration_id=0x085, data=[0x00, 0x81, 0x10, 0, 0, 0, 0, 0],
+                               is_extended_id=False))  # fmt: skip
+        qtbot.waitUntil(lambda: dialog.table.item(1, 6).text().startswith("8100 "), timeout=3000)
+        assert dialog.table.item(1, 4).text().startswith("pre-operational (boot-up ")
+        assert dialog.table.item(1, 5).text().endswith(" s ago")
+        qtbot.waitUntil(
+            lambda: dialog.table.item(1, 5).text().startswith("silent for"), timeout=4000
+        )
+        assert dialog.table.item(0, 5).text().endswith(" s ago")  # the valve still beats
+        dialog.table.selectRow(1)  # a node not identified: not selectable
+        assert dialog.selected_device_id() is None
+    finally:
+        other.shutdown()
+        dialog.reject()
+        rig.valve.stop()
+        connection.shutdown()
+    assert not monitor.running  # closing the dialog stops the watch

@@ -101,3 +101,25 @@ def test_a_valve_without_canopen_enables_itself_and_offers_no_commissioning(qtbo
         qtbot.waitUntil(lambda: "follows its setpoint" in panel.reason.text(), timeout=TIMEOUT)
         assert not any(button.isEnabled() for button in panel.buttons.values())
         assert window.status.status_label.text() == "Status: ok"
+
+
+def test_a_tuning_test_on_a_waiting_valve_offers_the_enabling_first(
+    qtbot, window, answers, monkeypatch
+):
+    """Autotune used to stop with "the valve does not follow its setpoint … nothing was
+    tested" (in English in every language), while the scope's generator offers the enabling."""
+    from PySide6.QtWidgets import QMessageBox
+
+    from prm9tool.catalogue.commissioning import Blocker
+    from prm9tool.online.valve_control import status_blocker
+
+    window.show_tuning_window("position")
+    tuning = window.tuning_window
+    waiting = Blocker.WAITING_FOR_MASTER
+    qtbot.waitUntil(lambda: status_blocker(tuning._status) is waiting, timeout=TIMEOUT)
+    monkeypatch.setattr(QMessageBox, "question", lambda *a: QMessageBox.StandardButton.Yes)
+    answers.answers.append(prompts.Button.Yes)  # enable it
+    tuning.autotune.run_button.click()
+    assert "Enable it now" in answers.asked[-1]
+    qtbot.waitUntil(lambda: not tuning.runner.busy, timeout=30_000)
+    assert "POSKP: 0.4 → " in tuning.autotune.result.text(), tuning.status.text()

@@ -352,6 +352,36 @@ def test_hid_dialog_lists_valves_despite_two_saved_emulators_with_one_serial(qtb
     assert saved_emulators(window.settings) == [f"{E04_CA}:1001", f"{e02_ca}:79"]
 
 
+def test_a_saved_emulated_valve_that_cannot_be_made_is_listed_with_why_and_can_go(qtbot, window):
+    """An E04-CA remembered at 1001 where an E02-CA left its EEPROM image: every listing
+    failed, the dialog stayed empty and nothing could be removed."""
+    from prm9tool.device import factory
+    from prm9tool.views.hid_dialog import EMULATORS_KEY, HidConfigurationDialog, saved_emulators
+
+    with factory.open_session(f"emulator:{E02}:1001", paced=False) as session:
+        session.store()
+    factory.forget_emulated_valves()
+    window.settings.setValue(EMULATORS_KEY, [f"{E04_CA}:1001", f"{E02}:80"])
+    from prm9tool import app
+
+    def lister(specs, deliver):  # the program's (the fixture's connection lists plainly)
+        deliver(app._lister(specs))
+
+    dialog = HidConfigurationDialog(lister, window.settings, window)
+    qtbot.waitUntil(lambda: not dialog.listing)
+    rows = [
+        [dialog.table.item(r, c).text() for c in (2, 4)] for r in range(dialog.table.rowCount())
+    ]
+    assert rows[0][0] == "80" and rows[1][0] == "1001"
+    assert "cannot be used" in rows[1][1] and "image belongs to" in rows[1][1]
+    dialog.table.selectRow(1)
+    ok = dialog.buttons.button(dialog.buttons.StandardButton.Ok)
+    assert not ok.isEnabled() and dialog.remove_button.isEnabled()
+    dialog.remove_button.click()
+    qtbot.waitUntil(lambda: not dialog.listing)
+    assert saved_emulators(window.settings) == [f"{E02}:80"]
+
+
 def test_hid_dialog_removes_an_emulated_valve(qtbot, window):
     from prm9tool.views.hid_dialog import HidConfigurationDialog, saved_emulators
 

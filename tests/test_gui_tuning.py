@@ -269,3 +269,21 @@ def test_proposed_gains_use_the_decimal_separator_of_the_language(qapp):
     finally:
         i18n.set_language("en")
     assert shown == ("0,42", "0,42 ms")
+
+
+def test_report_figures_use_the_decimal_separator_of_the_language(qapp):
+    """In German the test report showed ``5.75 %`` and ``0.95 … 1.05``."""
+    from prm9tool import i18n
+    from prm9tool.analysis.profile import Limit
+    from prm9tool.characterize.run import Figure
+    from prm9tool.views.tuning_report import limit_text, value_text
+
+    gain = Figure("gain", "gain", 1.14, "", Limit(0.95, 1.05))
+    rise = Figure("rise", "rise time", 0.0162, "s", Limit(None, 0.03))
+    i18n.set_language("de")
+    try:
+        shown = value_text(gain), limit_text(gain), value_text(rise), limit_text(rise)
+    finally:
+        i18n.set_language("en")
+    assert shown == ("1,14", "0,95 … 1,05", "16,2 ms", "≤ 30 ms")
+    assert (value_text(gain), limit_text(gain)) == ("1.14", "0.95 … 1.05")

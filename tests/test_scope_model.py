@@ -353,6 +353,16 @@ def test_peak_decimation_leaves_short_data_alone():
 
 
 # --- autoscale ---------------------------------------------------------------------------------
+def test_a_shared_axis_whose_channel_has_no_data_takes_the_common_range():
+    """Over CANopen the demand value is NaN; the spool's ±20 % was drawn on the demand's axis,
+    which kept its ±0.4 labels."""
+    current = [(-0.4, 0.4), (-0.4, 0.4)]
+    ranges = axis_ranges([None, (-20.0, 20.0)], current, ["%", "%"], True, auto=[True, True])
+    assert ranges == [(-24.0, 24.0), (-24.0, 24.0)]
+    manual = axis_ranges([None, (-20.0, 20.0)], current, ["%", "%"], True, auto=[False, True])
+    assert manual == [None, (-24.0, 24.0)]
+
+
 def test_axis_ranges_share_a_scale_per_unit_and_leave_manual_axes_alone():
     bounds = [(-30.0, 30.0), (-10.0, 50.0), None]  # channel 3 zoomed by hand
     current = [(0.0, 1.0), (0.0, 1.0), (0.0, 1.0)]

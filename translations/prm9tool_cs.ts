@@ -66,6 +66,10 @@ Poslední akce možná nebyla dokončena. Uložte svou práci pod novým názvem
             <translation>Kritické zesílení Kkr = %1, perioda Tkr = %2 ms: K = 0.5·Kkr, Ti = 0.8·Tkr, Td = 0.12·Tkr.</translation>
         </message>
         <message>
+            <source>Proposed, simulated on the emulator's firmware: %1.</source>
+            <translation>Návrh, simulovaný na firmwaru emulátoru: %1.</translation>
+        </message>
+        <message>
             <source>before (measured)</source>
             <translation>před (změřeno)</translation>
         </message>
@@ -137,10 +141,6 @@ Poslední akce možná nebyla dokončena. Uložte svou práci pod novým názvem
             <source>Accept the proposed gains</source>
             <translation>Převzít navržené konstanty</translation>
         </message>
-        <message>
-            <source>Proposed, simulated on the emulator's firmware: %1.</source>
-            <translation>Návrh simulovaný na firmwaru emulátoru: %1.</translation>
-        </message>
     </context>
     <context>
         <name>BlockDialog</name>
@@ -182,6 +182,10 @@ Poslední akce možná nebyla dokončena. Uložte svou práci pod novým názvem
         <message>
             <source>Measure the frequency response</source>
             <translation>Změřit frekvenční charakteristiku</translation>
+        </message>
+        <message>
+            <source>The link's sample rate limited the sweep to %1 Hz (nothing interpolated).</source>
+            <translation>Vzorkovací frekvence spojení omezila rozmítání na %1 Hz (nic nebylo interpolováno).</translation>
         </message>
     </context>
     <context>
@@ -265,6 +269,22 @@ Poslední akce možná nebyla dokončena. Uložte svou práci pod novým názvem
         <message>
             <source>none</source>
             <translation>žádný</translation>
+        </message>
+        <message>
+            <source>new on the bus: search again to identify it</source>
+            <translation>nový na sběrnici: pro rozpoznání hledejte znovu</translation>
+        </message>
+        <message>
+            <source>{0} (boot-up {1:.1f} s ago)</source>
+            <translation>{0} (boot-up před {1:.1f} s)</translation>
+        </message>
+        <message>
+            <source>silent for {0:.1f} s</source>
+            <translation>mlčí {0:.1f} s</translation>
+        </message>
+        <message>
+            <source>The bus cannot be watched: {0}</source>
+            <translation>Sběrnici nelze sledovat: {0}</translation>
         </message>
         <message>
             <source>Type key of the valve</source>
@@ -1314,6 +1334,34 @@ Poslední akce možná nebyla dokončena. Uložte svou práci pod novým názvem
             <source>The history database cannot be used.</source>
             <translation>Databázi historie nelze použít.</translation>
         </message>
+        <message>
+            <source>node {0} is NMT {1}: the valve takes RPDOs only when OPERATIONAL — start it first (Valve status → Commissioning: NMT start)</source>
+            <translation>uzel {0} je ve stavu NMT {1}: ventil přijímá RPDO jen ve stavu OPERATIONAL — nejprve jej spusťte (Stav ventilu → Uvedení do provozu: NMT start)</translation>
+        </message>
+        <message>
+            <source>node {0} is in {1}: the valve applies a setpoint from the bus only in DEVICE_MODE_ACTIVE — enable it first (Valve status → Commissioning: control word 08h→09h→0Bh→0Fh)</source>
+            <translation>uzel {0} je ve stavu {1}: ventil přebírá žádanou hodnotu ze sběrnice jen v DEVICE_MODE_ACTIVE — nejprve jej uvolněte (Stav ventilu → Uvedení do provozu: řídicí slovo 08h→09h→0Bh→0Fh)</translation>
+        </message>
+        <message>
+            <source>node {0}: RPDO1 is switched off (0x1400/1 = {1}, bit 31): clear bit 31 to drive the setpoint from prm9tool</source>
+            <translation>uzel {0}: RPDO1 je vypnuto (0x1400/1 = {1}, bit 31): vynulujte bit 31, aby prm9tool mohl zadávat žádanou hodnotu</translation>
+        </message>
+        <message>
+            <source>node {0}: RPDO1 is synchronous (0x1400/2 = {1}), so the setpoint would wait for a SYNC: set 0x1400/2 to 255 (the delivery state)</source>
+            <translation>uzel {0}: RPDO1 je synchronní (0x1400/2 = {1}), žádaná hodnota by čekala na SYNC: nastavte 0x1400/2 na 255 (stav při dodání)</translation>
+        </message>
+        <message>
+            <source>node {0}: RPDO1 maps {1}, not the setpoint 0x6300/0x6380</source>
+            <translation>uzel {0}: RPDO1 mapuje {1}, ne žádanou hodnotu 0x6300/0x6380</translation>
+        </message>
+        <message>
+            <source>The valve restarted at another address or bit rate: go online with it there.</source>
+            <translation>Ventil se restartoval s jinou adresou nebo rychlostí: připojte se k němu tam.</translation>
+        </message>
+        <message>
+            <source>The link could not keep the test's sample rate.</source>
+            <translation>Spojení nedokázalo udržet vzorkovací frekvenci testu.</translation>
+        </message>
     </context>
     <context>
         <name>FileWorkflow</name>
@@ -1629,6 +1677,10 @@ Uvolnit ho nyní (NMT start, řídicí slovo 08h → 09h → 0Bh → 0Fh)?</tran
             <translation>emulovaný ventil {0}, výrobní číslo {1}</translation>
         </message>
         <message>
+            <source>cannot be used (remove it): {0}</source>
+            <translation>nelze použít (odeberte jej): {0}</translation>
+        </message>
+        <message>
             <source>Emulated valve</source>
             <translation>Emulovaný ventil</translation>
         </message>
@@ -1843,8 +1895,8 @@ Ano načte a záznam zařadí do fronty; Ne nenačte nic.</translation>
             <translation>Přepínač ID uzlu je v poloze {0}: ID uzlu a přenosovou rychlost určují přepínače (návod, tabulka 7-17), tato změna tedy ventil nepřesune; zůstává uzlem {1}.</translation>
         </message>
         <message>
-            <source>After the valve's next power-up or restart it answers at node {0}, {1}: prm9tool's connection then breaks. Store the change, restart the valve, then find it again under Communication → CAN bus (node {0}, bit rate {1}).</source>
-            <translation>Po příštím zapnutí nebo restartu ventil odpovídá jako uzel {0}, {1}: spojení prm9tool se pak přeruší. Uložte změnu, restartujte ventil a najděte ho znovu v Komunikace → Sběrnice CAN (uzel {0}, rychlost {1}).</translation>
+            <source>After the valve's next power-up or restart it answers at node {0}, {1}. Store the change and restart the valve from prm9tool (Valve → Restart valve): prm9tool then finds it there again — where it cannot change the adapter's bit rate itself (SocketCAN), it says how. After a power-up, find it under Communication → CAN bus (node {0}, bit rate {1}).</source>
+            <translation>Po příštím zapnutí nebo restartu ventil odpovídá jako uzel {0}, {1}. Uložte změnu a restartujte ventil z prm9tool (Ventil → Restart ventilu): prm9tool ho tam pak znovu najde — kde rychlost adaptéru sám změnit nemůže (SocketCAN), řekne jak. Po zapnutí ho najděte v Komunikace → Sběrnice CAN (uzel {0}, rychlost {1}).</translation>
         </message>
     </context>
     <context>
@@ -2608,26 +2660,6 @@ Ano načte a záznam zařadí do fronty; Ne nenačte nic.</translation>
             <translation>{0} ({1}) chybí (povinný pro ventily {2})</translation>
         </message>
         <message>
-            <source>too large to be a parameter file ({0} bytes, more than {1})</source>
-            <translation>příliš velký na záznam parametrů ({0} bajtů, více než {1})</translation>
-        </message>
-        <message>
-            <source>the file is empty</source>
-            <translation>soubor je prázdný</translation>
-        </message>
-        <message>
-            <source>cannot read the file: {0}</source>
-            <translation>soubor nelze přečíst: {0}</translation>
-        </message>
-        <message>
-            <source>cannot save the file: {0}</source>
-            <translation>soubor nelze uložit: {0}</translation>
-        </message>
-        <message>
-            <source>{0}: {1} is ambiguous (a thousands separator?); write the number without one, with '{2}' before the decimals</source>
-            <translation>{0}: {1} je nejednoznačné (oddělovač tisíců?); napište číslo bez něj, s „{2}“ před desetinnými místy</translation>
-        </message>
-        <message>
             <source>byte 0x{0} is not UTF-8 text: the file is corrupt</source>
             <translation>bajt 0x{0} není text UTF-8: soubor je poškozený</translation>
         </message>
@@ -2648,6 +2680,14 @@ Ano načte a záznam zařadí do fronty; Ne nenačte nic.</translation>
             <translation>{0} je nastaven dvakrát (poprvé na řádku {1})</translation>
         </message>
         <message>
+            <source>too large to be a parameter file ({0} bytes, more than {1})</source>
+            <translation>příliš velký na záznam parametrů ({0} bajtů, více než {1})</translation>
+        </message>
+        <message>
+            <source>the file is empty</source>
+            <translation>soubor je prázdný</translation>
+        </message>
+        <message>
             <source>no 'checksum = ...' line at the end: the file is truncated (a file written by hand must end with one, e.g. 'checksum = crc32:00000000')</source>
             <translation>na konci chybí řádek 'checksum = ...': soubor je zkrácený (ručně psaný soubor musí takovým řádkem končit, např. 'checksum = crc32:00000000')</translation>
         </message>
@@ -2658,6 +2698,18 @@ Ano načte a záznam zařadí do fronty; Ne nenačte nic.</translation>
         <message>
             <source>checksum does not match: the file was changed outside prm9tool (edited by hand?); saving it from prm9tool writes a new checksum</source>
             <translation>kontrolní součet nesouhlasí: soubor byl změněn mimo prm9tool (ručně upraven?); uložením z prm9tool se zapíše nový kontrolní součet</translation>
+        </message>
+        <message>
+            <source>cannot read the file: {0}</source>
+            <translation>soubor nelze přečíst: {0}</translation>
+        </message>
+        <message>
+            <source>cannot save the file: {0}</source>
+            <translation>soubor nelze uložit: {0}</translation>
+        </message>
+        <message>
+            <source>{0}: {1} is ambiguous (a thousands separator?); write the number without one, with '{2}' before the decimals</source>
+            <translation>{0}: {1} je nejednoznačné (oddělovač tisíců?); napište číslo bez něj, s „{2}“ před desetinnými místy</translation>
         </message>
     </context>
     <context>
@@ -3366,6 +3418,10 @@ Ano načte a záznam zařadí do fronty; Ne nenačte nic.</translation>
             <translation>Výsledek</translation>
         </message>
         <message>
+            <source>Limited by the link</source>
+            <translation>Omezeno spojením</translation>
+        </message>
+        <message>
             <source>PRM9 test report</source>
             <translation>Protokol o zkoušce PRM9</translation>
         </message>
@@ -3386,8 +3442,24 @@ Ano načte a záznam zařadí do fronty; Ne nenačte nic.</translation>
             <translation>Sada parametrů (surové hodnoty)</translation>
         </message>
         <message>
-            <source>Limited by the link</source>
-            <translation>Omezeno spojením</translation>
+            <source>flow characteristic: %1</source>
+            <translation>průtoková charakteristika: %1</translation>
+        </message>
+        <message>
+            <source>Flow characteristic</source>
+            <translation>Průtoková charakteristika</translation>
+        </message>
+        <message>
+            <source>spool opening [%]</source>
+            <translation>otevření šoupátka [%]</translation>
+        </message>
+        <message>
+            <source>actuator velocity [%/s]</source>
+            <translation>rychlost pohonu [%/s]</translation>
+        </message>
+        <message>
+            <source>measured</source>
+            <translation>změřeno</translation>
         </message>
     </context>
     <context>
@@ -3976,6 +4048,14 @@ Zajistěte, aby to hydraulika bezpečně snesla. Tlačítko Stop test kdykoli uk
         <message>
             <source>Set every parameter of the document to the factory default?</source>
             <translation>Nastavit všechny parametry dokumentu na tovární hodnoty?</translation>
+        </message>
+        <message>
+            <source>{0} kbit/s</source>
+            <translation>{0} kbit/s</translation>
+        </message>
+        <message>
+            <source>The valve restarted at {0} {1}; prm9tool found it there</source>
+            <translation>Ventil se restartoval jako {0} {1}; prm9tool ho tam našel</translation>
         </message>
         <message>
             <source>Restore factory values</source>

@@ -66,6 +66,10 @@ Die letzte Aktion wurde womöglich nicht vollständig ausgeführt. Speichern Sie
             <translation>Kritische Verstärkung Kkr = %1, Periode Tkr = %2 ms: K = 0.5·Kkr, Ti = 0.8·Tkr, Td = 0.12·Tkr.</translation>
         </message>
         <message>
+            <source>Proposed, simulated on the emulator's firmware: %1.</source>
+            <translation>Vorschlag, simuliert mit der Firmware des Emulators: %1.</translation>
+        </message>
+        <message>
             <source>before (measured)</source>
             <translation>vorher (gemessen)</translation>
         </message>
@@ -137,10 +141,6 @@ Die letzte Aktion wurde womöglich nicht vollständig ausgeführt. Speichern Sie
             <source>Accept the proposed gains</source>
             <translation>Vorgeschlagene Verstärkungen übernehmen</translation>
         </message>
-        <message>
-            <source>Proposed, simulated on the emulator's firmware: %1.</source>
-            <translation>Vorschlag, simuliert auf der Firmware des Emulators: %1.</translation>
-        </message>
     </context>
     <context>
         <name>BlockDialog</name>
@@ -182,6 +182,10 @@ Die letzte Aktion wurde womöglich nicht vollständig ausgeführt. Speichern Sie
         <message>
             <source>Measure the frequency response</source>
             <translation>Frequenzgang messen</translation>
+        </message>
+        <message>
+            <source>The link's sample rate limited the sweep to %1 Hz (nothing interpolated).</source>
+            <translation>Die Abtastrate der Verbindung begrenzte den Sweep auf %1 Hz (nichts interpoliert).</translation>
         </message>
     </context>
     <context>
@@ -265,6 +269,22 @@ Die letzte Aktion wurde womöglich nicht vollständig ausgeführt. Speichern Sie
         <message>
             <source>none</source>
             <translation>keiner</translation>
+        </message>
+        <message>
+            <source>new on the bus: search again to identify it</source>
+            <translation>neu am Bus: erneut suchen, um ihn zu erkennen</translation>
+        </message>
+        <message>
+            <source>{0} (boot-up {1:.1f} s ago)</source>
+            <translation>{0} (Boot-up vor {1:.1f} s)</translation>
+        </message>
+        <message>
+            <source>silent for {0:.1f} s</source>
+            <translation>still seit {0:.1f} s</translation>
+        </message>
+        <message>
+            <source>The bus cannot be watched: {0}</source>
+            <translation>Der Bus kann nicht beobachtet werden: {0}</translation>
         </message>
         <message>
             <source>Type key of the valve</source>
@@ -1311,6 +1331,34 @@ Die letzte Aktion wurde womöglich nicht vollständig ausgeführt. Speichern Sie
             <source>The history database cannot be used.</source>
             <translation>Die Verlaufsdatenbank kann nicht benutzt werden.</translation>
         </message>
+        <message>
+            <source>node {0} is NMT {1}: the valve takes RPDOs only when OPERATIONAL — start it first (Valve status → Commissioning: NMT start)</source>
+            <translation>Knoten {0} ist NMT {1}: das Ventil nimmt RPDOs nur im Zustand OPERATIONAL an — starten Sie ihn zuerst (Ventilstatus → Inbetriebnahme: NMT Start)</translation>
+        </message>
+        <message>
+            <source>node {0} is in {1}: the valve applies a setpoint from the bus only in DEVICE_MODE_ACTIVE — enable it first (Valve status → Commissioning: control word 08h→09h→0Bh→0Fh)</source>
+            <translation>Knoten {0} ist in {1}: das Ventil übernimmt einen Sollwert vom Bus nur in DEVICE_MODE_ACTIVE — geben Sie es zuerst frei (Ventilstatus → Inbetriebnahme: Steuerwort 08h→09h→0Bh→0Fh)</translation>
+        </message>
+        <message>
+            <source>node {0}: RPDO1 is switched off (0x1400/1 = {1}, bit 31): clear bit 31 to drive the setpoint from prm9tool</source>
+            <translation>Knoten {0}: RPDO1 ist ausgeschaltet (0x1400/1 = {1}, Bit 31): löschen Sie Bit 31, um den Sollwert aus prm9tool vorzugeben</translation>
+        </message>
+        <message>
+            <source>node {0}: RPDO1 is synchronous (0x1400/2 = {1}), so the setpoint would wait for a SYNC: set 0x1400/2 to 255 (the delivery state)</source>
+            <translation>Knoten {0}: RPDO1 ist synchron (0x1400/2 = {1}), der Sollwert würde auf ein SYNC warten: setzen Sie 0x1400/2 auf 255 (Auslieferungszustand)</translation>
+        </message>
+        <message>
+            <source>node {0}: RPDO1 maps {1}, not the setpoint 0x6300/0x6380</source>
+            <translation>Knoten {0}: RPDO1 bildet {1} ab, nicht den Sollwert 0x6300/0x6380</translation>
+        </message>
+        <message>
+            <source>The valve restarted at another address or bit rate: go online with it there.</source>
+            <translation>Das Ventil ist mit anderer Adresse oder Bitrate neu gestartet: gehen Sie dort mit ihm online.</translation>
+        </message>
+        <message>
+            <source>The link could not keep the test's sample rate.</source>
+            <translation>Die Verbindung konnte die Abtastrate des Tests nicht halten.</translation>
+        </message>
     </context>
     <context>
         <name>FileWorkflow</name>
@@ -1623,6 +1671,10 @@ Jetzt freigeben (NMT Start, Steuerwort 08h → 09h → 0Bh → 0Fh)?</translatio
             <translation>emuliertes Ventil {0}, Seriennummer {1}</translation>
         </message>
         <message>
+            <source>cannot be used (remove it): {0}</source>
+            <translation>nicht verwendbar (bitte entfernen): {0}</translation>
+        </message>
+        <message>
             <source>Emulated valve</source>
             <translation>Emuliertes Ventil</translation>
         </message>
@@ -1836,8 +1888,8 @@ Ja lädt hoch und stellt den Eintrag in die Warteschlange; Nein lädt nichts hoc
             <translation>Der Knoten-ID-Schalter steht auf Position {0}: Die Schalter bestimmen Knoten-ID und Bitrate (Handbuch, Tabelle 7-17), diese Änderung verschiebt das Ventil also nicht; es bleibt Knoten {1}.</translation>
         </message>
         <message>
-            <source>After the valve's next power-up or restart it answers at node {0}, {1}: prm9tool's connection then breaks. Store the change, restart the valve, then find it again under Communication → CAN bus (node {0}, bit rate {1}).</source>
-            <translation>Nach dem nächsten Einschalten oder Neustart antwortet das Ventil als Knoten {0}, {1}: Die Verbindung von prm9tool bricht dann ab. Änderung speichern, Ventil neu starten und es unter Kommunikation → CAN-Bus wiederfinden (Knoten {0}, Bitrate {1}).</translation>
+            <source>After the valve's next power-up or restart it answers at node {0}, {1}. Store the change and restart the valve from prm9tool (Valve → Restart valve): prm9tool then finds it there again — where it cannot change the adapter's bit rate itself (SocketCAN), it says how. After a power-up, find it under Communication → CAN bus (node {0}, bit rate {1}).</source>
+            <translation>Nach dem nächsten Einschalten oder Neustart antwortet das Ventil als Knoten {0}, {1}. Speichern Sie die Änderung und starten Sie das Ventil aus prm9tool neu (Ventil → Ventil neu starten): prm9tool findet es dann dort wieder — wo es die Bitrate des Adapters nicht selbst ändern kann (SocketCAN), sagt es, wie. Nach einem Einschalten finden Sie es unter Kommunikation → CAN-Bus (Knoten {0}, Bitrate {1}).</translation>
         </message>
     </context>
     <context>
@@ -2599,26 +2651,6 @@ Ja lädt hoch und stellt den Eintrag in die Warteschlange; Nein lädt nichts hoc
             <translation>{0} ({1}) fehlt (erforderlich für Ventile {2})</translation>
         </message>
         <message>
-            <source>too large to be a parameter file ({0} bytes, more than {1})</source>
-            <translation>zu groß für eine Parameterdatei ({0} Bytes, mehr als {1})</translation>
-        </message>
-        <message>
-            <source>the file is empty</source>
-            <translation>die Datei ist leer</translation>
-        </message>
-        <message>
-            <source>cannot read the file: {0}</source>
-            <translation>die Datei kann nicht gelesen werden: {0}</translation>
-        </message>
-        <message>
-            <source>cannot save the file: {0}</source>
-            <translation>die Datei kann nicht gespeichert werden: {0}</translation>
-        </message>
-        <message>
-            <source>{0}: {1} is ambiguous (a thousands separator?); write the number without one, with '{2}' before the decimals</source>
-            <translation>{0}: {1} ist mehrdeutig (ein Tausendertrennzeichen?); schreiben Sie die Zahl ohne Trennzeichen, mit „{2}“ vor den Nachkommastellen</translation>
-        </message>
-        <message>
             <source>byte 0x{0} is not UTF-8 text: the file is corrupt</source>
             <translation>Byte 0x{0} ist kein UTF-8-Text: die Datei ist beschädigt</translation>
         </message>
@@ -2639,6 +2671,14 @@ Ja lädt hoch und stellt den Eintrag in die Warteschlange; Nein lädt nichts hoc
             <translation>{0} ist zweimal gesetzt (zuerst in Zeile {1})</translation>
         </message>
         <message>
+            <source>too large to be a parameter file ({0} bytes, more than {1})</source>
+            <translation>zu groß für eine Parameterdatei ({0} Bytes, mehr als {1})</translation>
+        </message>
+        <message>
+            <source>the file is empty</source>
+            <translation>die Datei ist leer</translation>
+        </message>
+        <message>
             <source>no 'checksum = ...' line at the end: the file is truncated (a file written by hand must end with one, e.g. 'checksum = crc32:00000000')</source>
             <translation>keine Zeile 'checksum = ...' am Ende: die Datei ist abgeschnitten (eine von Hand geschriebene Datei muss mit einer solchen Zeile enden, z. B. 'checksum = crc32:00000000')</translation>
         </message>
@@ -2649,6 +2689,18 @@ Ja lädt hoch und stellt den Eintrag in die Warteschlange; Nein lädt nichts hoc
         <message>
             <source>checksum does not match: the file was changed outside prm9tool (edited by hand?); saving it from prm9tool writes a new checksum</source>
             <translation>Prüfsumme stimmt nicht: die Datei wurde außerhalb von prm9tool geändert (von Hand bearbeitet?); Speichern aus prm9tool schreibt eine neue Prüfsumme</translation>
+        </message>
+        <message>
+            <source>cannot read the file: {0}</source>
+            <translation>die Datei kann nicht gelesen werden: {0}</translation>
+        </message>
+        <message>
+            <source>cannot save the file: {0}</source>
+            <translation>die Datei kann nicht gespeichert werden: {0}</translation>
+        </message>
+        <message>
+            <source>{0}: {1} is ambiguous (a thousands separator?); write the number without one, with '{2}' before the decimals</source>
+            <translation>{0}: {1} ist mehrdeutig (ein Tausendertrennzeichen?); schreiben Sie die Zahl ohne Trennzeichen, mit „{2}“ vor den Nachkommastellen</translation>
         </message>
     </context>
     <context>
@@ -3357,6 +3409,10 @@ Ja lädt hoch und stellt den Eintrag in die Warteschlange; Nein lädt nichts hoc
             <translation>Ergebnis</translation>
         </message>
         <message>
+            <source>Limited by the link</source>
+            <translation>Durch die Verbindung begrenzt</translation>
+        </message>
+        <message>
             <source>PRM9 test report</source>
             <translation>PRM9-Prüfbericht</translation>
         </message>
@@ -3377,8 +3433,24 @@ Ja lädt hoch und stellt den Eintrag in die Warteschlange; Nein lädt nichts hoc
             <translation>Parametersatz (Rohwerte)</translation>
         </message>
         <message>
-            <source>Limited by the link</source>
-            <translation>Durch die Verbindung begrenzt</translation>
+            <source>flow characteristic: %1</source>
+            <translation>Durchflusskennlinie: %1</translation>
+        </message>
+        <message>
+            <source>Flow characteristic</source>
+            <translation>Durchflusskennlinie</translation>
+        </message>
+        <message>
+            <source>spool opening [%]</source>
+            <translation>Schieberöffnung [%]</translation>
+        </message>
+        <message>
+            <source>actuator velocity [%/s]</source>
+            <translation>Geschwindigkeit des Antriebs [%/s]</translation>
+        </message>
+        <message>
+            <source>measured</source>
+            <translation>gemessen</translation>
         </message>
     </context>
     <context>
@@ -3964,6 +4036,14 @@ Stellen Sie sicher, dass die Hydraulik dafür sicher ist. Stopp beendet ihn jede
         <message>
             <source>Set every parameter of the document to the factory default?</source>
             <translation>Alle Parameter des Dokuments auf die Werkseinstellung setzen?</translation>
+        </message>
+        <message>
+            <source>{0} kbit/s</source>
+            <translation>{0} kbit/s</translation>
+        </message>
+        <message>
+            <source>The valve restarted at {0} {1}; prm9tool found it there</source>
+            <translation>Das Ventil ist als {0} {1} neu gestartet; prm9tool hat es dort gefunden</translation>
         </message>
         <message>
             <source>Restore factory values</source>

@@ -33,6 +33,8 @@ FIGURES = {  # figure name: unit (step figures are checked for every step amplit
     "static_hysteresis_pct": "%",
     "static_linearity_pct": "%",
     "static_dead_band_pct": "%",
+    "flow_gain": "%/s per %",  # E04 in control mode 4 only
+    "flow_dead_band_pct": "%",
 }
 
 
@@ -75,6 +77,8 @@ class Profile:
     bode_f_max_hz: float = 200.0
     bode_duration_s: float = 10.0
     static_period_s: float = 20.0
+    flow_amplitude_pct: float = 40.0  # E04: process setpoint steps centre ∓ this
+    flow_duration_s: float = 1.0
     limits: dict[str, Limit] = field(default_factory=dict)
 
 

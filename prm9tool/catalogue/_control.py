@@ -343,8 +343,8 @@ __all__ = [
 
 # Service objects for tuning from the PC (decision, not in the manual): while SETPOVRON = 1
 # the firmware uses SETPOVR instead of the analog setpoint. The firmware switches the override
-# off by itself on restart and when no USB report arrived for 500 ms (a dropped cable never
-# leaves a generator running).
+# off by itself on restart and when no USB report (or SDO request) arrived for 500 ms (a
+# dropped cable never leaves a generator running).
 SERVICE: list[Parameter] = [
     Parameter(
         "SETPOVRON",

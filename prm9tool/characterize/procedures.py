@@ -187,6 +187,7 @@ class BodeResult:
     record: Record
     response: FrequencyResponse
     note: str = ""  # set when the link's sample rate limited the sweep
+    limited_to_hz: float | None = None  # the sweep's highest frequency when it was limited
 
 
 def bode_test(
@@ -226,7 +227,8 @@ def bode_test(
     response = frequency_response(
         rec.channels[lp.setpoint], rec.channels[lp.actual], fs, f_min, f_max
     )
-    return BodeResult(amplitude_pct, centre_pct, rec, response, note)
+    limited = f_max if note else None
+    return BodeResult(amplitude_pct, centre_pct, rec, response, note, limited)
 
 
 # --- static characteristic --------------------------------------------------------------------
@@ -245,9 +247,17 @@ STATIC_MIN_SAMPLES = 606  # six per bin of the characteristic's 101
 
 
 def static_test(
-    rig: Rig, period_s: float = 4.0, lo_pct: float = -100.0, hi_pct: float = 100.0
+    rig: Rig,
+    period_s: float = 4.0,
+    lo_pct: float = -100.0,
+    hi_pct: float = 100.0,
+    response: str = "position_actual",
 ) -> StaticResult:
-    """One triangle period ``lo → hi → lo`` (through the valve's own setpoint chain)."""
+    """One triangle period ``lo → hi → lo`` (through the valve's own setpoint chain).
+
+    ``response``: the spool position, or on E04 in control mode 4 ``process_actual``.
+    """
+    keys = (*STATIC_KEYS[:2], response)
     fs = rig.info.sample_rate_hz
     half = int(period_s * fs / 2)
     if 2 * half < STATIC_MIN_SAMPLES:  # a slow link (CANopen): say what it needs
@@ -260,16 +270,16 @@ def static_test(
     rise = np.repeat(np.linspace(lo_pct, hi_pct, half // every + 1), every)[:half]
     rig.ensure_active()
     sweep = np.concatenate([rise, rise[::-1]])
-    rig.play(np.full(int(0.2 * fs), lo_pct), [STATIC_KEYS[2]])
+    rig.play(np.full(int(0.2 * fs), lo_pct), [response])
     try:
-        raw = rig.play(sweep, list(STATIC_KEYS))
+        raw = rig.play(sweep, list(keys))
     finally:
         rig.release()
-    channels = {k: raw[:, i] * BY_KEY[k].scale for i, k in enumerate(STATIC_KEYS)}
+    channels = {k: raw[:, i] * BY_KEY[k].scale for i, k in enumerate(keys)}
     demand = rig.last_demand[: len(raw)]
     rec = Record(np.arange(len(raw)) / fs, channels)
-    figures = static_characteristic(demand, channels[STATIC_KEYS[2]])
-    return StaticResult(rec, figures, demand, STATIC_KEYS[2])
+    figures = static_characteristic(demand, channels[response])
+    return StaticResult(rec, figures, demand, response)
 
 
 # --- critical-gain autotune -------------------------------------------------------------------

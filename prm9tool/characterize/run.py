@@ -21,6 +21,8 @@ from prm9tool import __version__
 from prm9tool.analysis.profile import FIGURES, Limit, Profile
 from prm9tool.catalogue import CATALOGUE
 from prm9tool.catalogue.typekey import TypeKey
+from prm9tool.catalogue.variant import Config
+from prm9tool.characterize.flow import FlowResult, flow_test
 from prm9tool.characterize.procedures import (
     BodeResult,
     StaticResult,
@@ -61,6 +63,7 @@ class Characterization:
     steps: list[StepResult] = field(default_factory=list)
     bode: BodeResult | None = None
     static: StaticResult | None = None
+    flow: FlowResult | None = None  # E04 in control mode 4
     figures: list[Figure] = field(default_factory=list)
     wall_s: float = 0.0
 
@@ -87,9 +90,14 @@ def characterize(rig: Rig, profile: Profile, progress: Progress | None = None) -
     result = Characterization(
         rig.info, profile, datetime.now(UTC).isoformat(timespec="seconds"), rig.read(names)
     )
+    e04 = variant.config is Config.E04
+    process = e04 and rig.read(["CTRLMODE"])["CTRLMODE"] == 4
+    loop = "process" if process else "position"  # E04 in mode 4: the setpoint is the process's
     for amplitude in profile.step_amplitudes_pct:
         say(f"step response {amplitude:g} %")
-        result.steps.append(step_test(rig, amplitude, duration_s=profile.step_duration_s))
+        result.steps.append(
+            step_test(rig, amplitude, duration_s=profile.step_duration_s, loop=loop)
+        )
     say(f"frequency response ±{profile.bode_amplitude_pct:g} %")
     result.bode = bode_test(
         rig,
@@ -98,9 +106,14 @@ def characterize(rig: Rig, profile: Profile, progress: Progress | None = None) -
         profile.bode_f_min_hz,
         profile.bode_f_max_hz,
         profile.bode_duration_s,
+        loop,
     )
     say("static characteristic")
-    result.static = static_test(rig, profile.static_period_s)
+    response = "process_actual" if process else "position_actual"
+    result.static = static_test(rig, profile.static_period_s, response=response)
+    if process:
+        say("flow characteristic")
+        result.flow = flow_test(rig, profile.flow_amplitude_pct, 0.0, profile.flow_duration_s)
     result.figures = figures(result)
     result.wall_s = time.perf_counter() - started
     for hook in RESULT_HOOKS:
@@ -135,6 +148,10 @@ def figures(c: Characterization) -> list[Figure]:
         add("static_hysteresis_pct", "hysteresis", s.hysteresis_pct, "static_hysteresis_pct")
         add("static_linearity_pct", "linearity error", s.linearity_pct, "static_linearity_pct")
         add("static_dead_band_pct", "dead band", s.dead_band_pct, "static_dead_band_pct")
+    if c.flow is not None:
+        flow = c.flow.characteristic
+        add("flow_gain", "flow gain", flow.gain, "flow_gain")
+        add("flow_dead_band_pct", "flow dead band", flow.dead_band_pct, "flow_dead_band_pct")
     return out
 
 
@@ -190,6 +207,11 @@ def write_csv_files(c: Characterization, stem: Path) -> list[Path]:
             "coherence": r.coherence,
         }
         _table(path, r.frequency, columns, "frequency [Hz]")
+        written.append(path)
+    if c.flow is not None:
+        path = stem.with_name(f"{stem.name}-flow.csv")
+        channels = {**c.flow.record.channels, "velocity [%/s]": c.flow.velocity}
+        _table(path, c.flow.record.t, channels)
         written.append(path)
     if c.static is not None:
         path = stem.with_name(f"{stem.name}-static.csv")

@@ -116,7 +116,14 @@ def _upload(args: argparse.Namespace, records: list[ValveRecord]) -> ExitCode:
         BatchHistory.for_download(args) if args.dry_run else BatchHistory.open(args, BatchError)
     )
     job = UploadJob(
-        contents, args.force_type, args.dry_run, printer, history, open_valve, can_options(args)
+        contents,
+        args.force_type,
+        args.dry_run,
+        printer,
+        history,
+        open_valve,
+        can_options(args),
+        getattr(args, "type_key", None),
     )
     try:
         with ThreadPoolExecutor(max_workers=len(entries)) as pool:
@@ -140,7 +147,12 @@ def _download(args: argparse.Namespace, records: list[ValveRecord]) -> ExitCode:
     records.append(record)
     try:
         can = can_options(args)
-        with open_valve(entry[0]) if can is None else open_valve(entry[0], can) as session:
+        label = getattr(args, "type_key", None)  # a valve without 0x2041 needs it
+        with (
+            open_valve(entry[0])
+            if can is None
+            else open_valve(entry[0], can, None, label) as session
+        ):
             values = session.download(printer.callback(str(record.serial)))
             info = session.info
     except Exception as exc:  # a Prm9Error, or whatever else the valve's answers caused

@@ -162,14 +162,28 @@ def _match(wanted: str, usb: list[DeviceEntry]) -> list[DeviceEntry]:
     return found
 
 
-def open_entry(entry: DeviceEntry, can: CanOptions | None = None) -> ValveSession:
-    """Open a session as the headless commands do (``--batch``, ``--diff``)."""
-    return open_valve(entry) if can is None else open_valve(entry, can)
+def open_entry(
+    entry: DeviceEntry, can: CanOptions | None = None, label_key: str | None = None
+) -> ValveSession:
+    """Open a session as the headless commands do (``--batch``, ``--diff``); ``label_key``:
+    ``--type-key``."""
+    return open_valve(entry) if can is None else open_valve(entry, can, label_key=label_key)
 
 
 def open_valve(
-    entry: DeviceEntry, can: CanOptions | None = None, type_key: str | None = None
+    entry: DeviceEntry,
+    can: CanOptions | None = None,
+    type_key: str | None = None,
+    label_key: str | None = None,
 ) -> ValveSession:
     """Open one selected valve; ``type_key``: the file's, for a valve that does not tell its
-    own. An emulated valve is stepped on the link clock; its link runs at USB speed."""
-    return open_session(entry, paced=False, link_paced=True, can_link=can, type_key=type_key)
+    own; ``label_key``: ``--type-key`` (first, remembered). An emulated valve is stepped on
+    the link clock; its link runs at USB speed."""
+    return open_session(
+        entry,
+        paced=False,
+        link_paced=True,
+        can_link=can,
+        type_key=type_key,
+        label_key=label_key,
+    )

@@ -38,11 +38,13 @@ class UploadJob:
         history: BatchHistory,
         open_valve: Opener,
         can: CanOptions | None = None,
+        label_key: str | None = None,
     ) -> None:
         self.contents, self.force, self.dry_run, self.printer = contents, force, dry_run, printer
         self.history = history
         self.can = can
         self.open_valve = open_valve
+        self.label_key = label_key  # --type-key
 
     def __call__(self, entry: DeviceEntry) -> ValveRecord:
         clock = Stopwatch()
@@ -78,7 +80,7 @@ class UploadJob:
     def _open(self, entry: DeviceEntry, key: str) -> ValveSession:
         if self.can is None:
             return self.open_valve(entry)
-        return self.open_valve(entry, self.can, key)
+        return self.open_valve(entry, self.can, key, self.label_key)
 
     def _run(self, session: ValveSession, record: ValveRecord) -> None:
         who = str(record.serial)

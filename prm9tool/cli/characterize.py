@@ -101,7 +101,9 @@ def _rig(args: argparse.Namespace) -> tuple[Rig, Callable[[], None]]:
     args.all = False
     entry = select(args)[0]
     try:
-        session = open_session(entry, paced=False, can_link=can_options(args))
+        session = open_session(
+            entry, paced=False, can_link=can_options(args), label_key=args.type_key
+        )
     except Prm9Error as exc:
         raise BatchError(ExitCode.COMMUNICATION, str(exc)) from exc
     try:

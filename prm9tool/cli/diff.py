@@ -74,7 +74,7 @@ def valve_side(args: argparse.Namespace) -> Side:
     if len(entries) != 1:
         raise DiffError(ExitCode.USAGE, "--diff compares with one valve: select exactly one")
     try:
-        with open_entry(entries[0], can_options(args)) as session:
+        with open_entry(entries[0], can_options(args), args.type_key) as session:
             values = session.download()
             info = session.info
     except (CommunicationError, Prm9Error) as exc:

@@ -61,6 +61,13 @@ def add_device_options(parser: argparse.ArgumentParser) -> None:
     group.add_argument(
         "--can-bitrate", type=int, help="CAN bit rate in bit/s (default: from the valve's switches)"
     )
+    group.add_argument(
+        "--type-key",
+        metavar="KEY",
+        help="the type key on the label of a CANopen valve that does not tell its own (no "
+        "object 0x2041, as real valves): checked against what its objects tell and remembered "
+        "for its serial number; with --batch it goes before the file's key",
+    )
     serve = parser.add_argument_group("headless emulated valves on a CAN bus (no GUI)")
     serve.add_argument(
         "--serve-emulator",

@@ -31,6 +31,10 @@ def usage_problem(args: argparse.Namespace) -> str | None:
     ``--serve-emulator``, or the one the GUI's emulated -CA valve joins; a file tool takes
     none (an option that would be ignored is an error, not a surprise).
     """
+    if args.type_key is not None:
+        problem = _type_key_problem(args)
+        if problem is not None:
+            return problem
     if args.characterize:
         return _characterize_problem(args)
     if args.profile:
@@ -84,6 +88,25 @@ def _command(args: argparse.Namespace) -> str:
         ]
         return "--serve-emulator" if not others else f"--serve-emulator and {others[0]}"
     return "--list-devices" if args.list_devices else "--batch" if args.batch is not None else ""
+
+
+def _type_key_problem(args: argparse.Namespace) -> str | None:
+    from prm9tool.catalogue.typekey import TypeKey
+    from prm9tool.errors import TypeKeyError
+
+    on_can = _can_devices(args) or (args.all and args.can_interface is not None)
+    if not on_can or args.serve_emulator:
+        return (
+            "--type-key belongs to a valve on a CAN bus: use it with --device can:NODE (or "
+            "--batch --all with the CAN options)"
+        )
+    try:
+        key = TypeKey.parse(args.type_key)
+    except TypeKeyError as exc:
+        return f"--type-key: {exc}"
+    if not key.canopen:
+        return f"--type-key {key}: a valve on a CAN bus is a -CA valve"
+    return None
 
 
 def _can_devices(args: argparse.Namespace) -> list[str]:

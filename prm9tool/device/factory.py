@@ -27,6 +27,7 @@ if TYPE_CHECKING:
 log = logging.getLogger("prm9tool.device.factory")
 DEFAULT_EMULATOR_TYPE = DEFAULT_EMULATOR_TYPE_KEY  # one default for the GUI and the CLI
 USB, EMULATOR, CAN, NOT_PRM9 = "usb", "emulator", "can", "not-prm9"
+UNUSABLE_EMULATOR = "emulator-unusable"  # a remembered emulated valve that cannot be made
 __all__ = ["CanOptions", "DeviceEntry", "list_devices", "open_session"]
 
 
@@ -36,6 +37,7 @@ class DeviceEntry:
 
     device_id: str
     kind: str  # "usb" | "emulator" | "can" | "not-prm9" (a CANopen node of another kind)
+    # | "emulator-unusable" (a remembered spec that cannot be made; description: why)
     type_key: str
     serial: int
     firmware: str
@@ -101,6 +103,26 @@ def emulator_entries(specs: Sequence[str]) -> list[DeviceEntry]:
         valve = emulated_valve(type_key, serial)
         entries.append(_emulator_entry(valve))
     return entries
+
+
+def usable_emulators(specs: Sequence[str]) -> tuple[list[str], list[DeviceEntry]]:
+    """``specs`` (each with its serial) split into those that make a valve and entries of
+    kind ``emulator-unusable`` for the others, whose description says why (an EEPROM image of
+    another type at that serial…), so one bad remembered valve does not hide the rest."""
+    usable: list[str] = []
+    unusable: list[DeviceEntry] = []
+    for spec in specs:
+        try:
+            emulator_entries([spec])
+        except Prm9Error as exc:
+            key, _, serial = spec.rpartition(":")
+            number = int(serial) if serial.isdigit() else 0
+            unusable.append(
+                DeviceEntry(f"{EMULATOR}:{spec}", UNUSABLE_EMULATOR, key, number, "", str(exc))
+            )
+        else:
+            usable.append(spec)
+    return usable, unusable
 
 
 def _emulator_entry(valve: EmulatedValve) -> DeviceEntry:
@@ -196,14 +218,10 @@ def _heard(seen: Any) -> tuple[str, float | None, str]:
     """NMT state, heartbeat age and last EMCY of a node as the bus told them."""
     import time
 
-    from prm9tool.device.canlink.status import emcy_text
+    from prm9tool.device.canlink.watch import heard
 
-    age = None if seen.heartbeat_at is None else time.monotonic() - seen.heartbeat_at
-    emcy = ""
-    if seen.emcy_code is not None:
-        meaning = emcy_text(seen.emcy_code) if seen.emcy_code else "errors cleared"
-        emcy = f"{seen.emcy_code:04X} {meaning}"
-    return seen.nmt_state, age, emcy
+    now = heard(seen, time.monotonic())
+    return now.nmt_state, now.heartbeat_age_s, now.last_emcy
 
 
 # --- emulated valves of this process ---------------------------------------------------------
@@ -247,6 +265,7 @@ def open_session(
     link_paced: bool | None = None,
     type_key: str | None = None,
     can_link: CanOptions | None = None,
+    label_key: str | None = None,
 ) -> ValveSession:
     """Open a session to ``entry`` (a DeviceEntry or its ``device_id``).
 
@@ -258,7 +277,8 @@ def open_session(
     for a session that is already open.
     ``can:NODE`` opens a CANopen session to that node on the bus ``can_link`` (default:
     ``can``, else the virtual bus); ``type_key`` is the key to use when the valve does not tell
-    its own.
+    its own (a file's), ``label_key`` the key the user gave for it (``--type-key``, the GUI's
+    question), remembered for its serial number.
     """
     device_id = entry.device_id if isinstance(entry, DeviceEntry) else entry
     kind, _, rest = device_id.partition(":")
@@ -271,7 +291,8 @@ def open_session(
     if kind == CAN and rest.isdigit():
         from prm9tool.device.canlink.session import CanopenSession
 
-        return CanopenSession(can_link or can or CanOptions(), int(rest), type_key=type_key)
+        options = can_link or can or CanOptions()
+        return CanopenSession(options, int(rest), type_key=type_key, label_key=label_key)
     raise Prm9Error(f"unknown device {device_id!r}: expected 'usb:…', 'emulator:…' or 'can:NODE'")
 
 

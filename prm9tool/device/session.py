@@ -10,14 +10,22 @@ step)`` and stop at the next report when ``cancel`` is set. Failures raise the t
 
 1. *write* every value; a refusal ends the upload (``failed_step`` ``write``);
 2. *verify*: read every value back and compare (``verify``);
-3. *store*: send the store command, then read every value back once more and compare
-   (``store``). ``stored`` is True only if the valve acknowledged the store **and** that
-   read-back equals the upload. The store copies the working values into non-volatile memory
-   and a restart replaces the working values with the stored ones, so a read-back after the
-   acknowledgement that still shows the upload proves the stored set is the upload: a valve
-   that restarted (brown-out) before the store stored its old set and reads back the old values.
-   A refused store (abort, e.g. 0x08000020) is ``failed_step`` ``store`` with the reason in
-   ``failure``.
+3. *store*: send the store command, then make sure the valve did not restart between the
+   verify and the store (``store``). ``stored`` is True only if the valve acknowledged the
+   store **and** it stored the verified working values. The store copies the working values
+   into non-volatile memory and a restart replaces the working values with the stored ones, so
+   a valve that restarted (brown-out) before the store stored its old set. How a link makes
+   sure is its own (:meth:`ValveSession._store_problem`): over USB it reads every value back
+   once more and compares — a valve that restarted reads back its old values; over CANopen
+   the master watches the node's boot-up frame, which a restarting node sends (CiA 301), from
+   before the first write to the store's acknowledgement, and reads back one value the upload
+   changed (prm9tool.device.canlink.session). A refused store (abort, e.g. 0x08000020) is
+   ``failed_step`` ``store`` with the reason in ``failure``.
+
+A link may leave out writing a value the valve is known to hold already (read during this
+upload or just before it); the verify step still reads every value back, and a value that
+reads back differently from what the link believed is written and verified after all
+(:meth:`ValveSession._verify_entries`).
 
 After any failure (also a cancel) the session asks the valve to reload its stored parameters
 (USB: RELOAD; CANopen: the master writes back the working values it read before the upload,
@@ -48,9 +56,14 @@ from prm9tool.device.entries import (
     Value,
     check_cancel,
 )
+from prm9tool.device.setpoint import OverrideSetpoint, SetpointLink
 from prm9tool.errors import CommunicationError, Prm9Error, SdoAbortError
 
 log = logging.getLogger("prm9tool.device.session")
+RESTARTED_BEFORE_STORE = (
+    "the valve's values changed after the store was acknowledged (it restarted before the "
+    "store?): its stored set is not the upload"
+)
 __all__ = [
     "DeviceInfo",
     "NotAvailableError",
@@ -81,6 +94,8 @@ class DeviceInfo:
     # parameters whose change moves the valve away from this link at its next power-up (over
     # CANopen its node ID and bit rate); the GUI warns when one is changed online
     link_parameters: tuple[str, ...] = ()
+    # over CAN: the bus (python-can interface, channel, bit rate in bit/s or None) it answers on
+    can_bus: tuple[str, str, int | None] | None = None
 
 
 @dataclass
@@ -196,6 +211,11 @@ class ValveSession(ABC):
         valve, as its CANopen master would (manual §7.2): start, stop, pre-operational, reset.
         A valve with CANopen switched off ignores it."""
 
+    def setpoint_link(self) -> SetpointLink:
+        """How the PC drives this valve's setpoint (the generator, the tuning procedures):
+        the service override SETPOVRON/SETPOVR unless the link has its own way."""
+        return OverrideSetpoint(self)
+
     @property
     def emulator(self) -> EmulatorControls | None:
         """Inputs, switches and faults of an emulated valve behind this link (None for a real
@@ -215,6 +235,32 @@ class ValveSession(ABC):
         """Runs before an upload writes anything (a link that cannot reload the stored set
         without a restart takes its snapshot of the working values here)."""
         del params, cancel  # the USB protocol reloads the stored set itself
+
+    def _restart_marker(self) -> object:
+        """Taken before an upload writes anything; :meth:`_store_problem` gets it back (a link
+        that can watch the valve restart notes its state here)."""
+        return None
+
+    def _verify_entries(
+        self,
+        params: Sequence[Parameter],
+        values: Mapping[str, Value],
+        steps: Steps | None,
+        cancel: threading.Event | None,
+    ) -> dict[str, Value | SdoAbortError]:
+        """The verify step's read-back of every value (a link that left out writes corrects
+        them here; see the module docstring)."""
+        del values
+        return self._read_entries(params, steps, cancel)
+
+    def _store_problem(
+        self, params: Sequence[Parameter], values: Mapping[str, Value], marker: object
+    ) -> tuple[dict[str, tuple[Value, Value]], str] | None:
+        """After the acknowledged store: (mismatches, why) when the stored set may not be the
+        upload, None when it is. Here: every value read back once more and compared."""
+        del marker
+        changed = _differences(params, values, self._read_entries(params, None, None))
+        return (changed, RESTARTED_BEFORE_STORE) if changed else None
 
     # --- single values --------------------------------------------------------------------
     def read(self, mnemonic: str) -> Value:
@@ -273,25 +319,21 @@ class ValveSession(ABC):
         step, writing, verified = "write", Steps(progress, total, 0, "write"), False
         try:
             self._before_upload(params, cancel)
+            marker = self._restart_marker()
             written = self._write_entries(params, values, writing, cancel)
             step = "verify"
             verify = Steps(progress, total, len(params), step)
             params = [p for p in params if p.mnemonic not in self.unavailable]
-            actual = self._read_entries(params, verify, cancel)
+            actual = self._verify_entries(params, values, verify, cancel)
             mismatches = _differences(params, values, actual)
             if mismatches:
                 return self._failed(written, mismatches, start, "verify")
             step, verified = "store", True
             check_cancel(cancel, step)
             self.store()
-            after = self._read_entries(params, None, None)
-            changed = _differences(params, values, after)
-            if changed:
-                why = (
-                    "the valve's values changed after the store was acknowledged (it restarted "
-                    "before the store?): its stored set is not the upload"
-                )
-                return self._failed(written, changed, start, "store", True, why)
+            problem = self._store_problem(params, values, marker)
+            if problem is not None:
+                return self._failed(written, problem[0], start, "store", True, problem[1])
         except RefusedError as refused:
             refusal: tuple[Value, Value] = (values[refused.mnemonic], str(refused.error))
             return self._failed(refused.done, {refused.mnemonic: refusal}, start, "write")

@@ -24,7 +24,12 @@ from PySide6.QtCore import QObject, Qt, Signal
 
 from prm9tool.errors import CommunicationError, Prm9Error
 from prm9tool.online.polling import Poller, Schedule
-from prm9tool.online.setpoint_driver import SetpointDriver, StreamClock
+from prm9tool.online.setpoint_driver import (
+    GENERATOR_OBJECTS,
+    SetpointDriver,
+    StreamClock,
+    setpoint_link,
+)
 from prm9tool.online.valve_listing import default_lister, default_opener
 from prm9tool.translate import error_text
 
@@ -38,7 +43,7 @@ log = logging.getLogger(__name__)
 Opener = Callable[[object], Any]  # entry -> ValveSession
 Lister = Callable[..., list[Any]]  # (emulator specs[, CAN bus dict]) -> [DeviceEntry]
 PROGRESS_PERIOD_S = 0.05
-OVERRIDE_OBJECTS = ("SETPOVR", "SETPOVRON")
+OVERRIDE_OBJECTS = tuple(sorted(GENERATOR_OBJECTS))  # a refused generator start names these
 
 
 @dataclass
@@ -71,6 +76,8 @@ class ValveConnection(QObject):
     backup_written = Signal(str)  # path of the backup taken before the first upload
     samples_lost_changed = Signal(int)  # samples the oscilloscope stream lost since it started
     history_problem = Signal(str)  # a record went to the local queue, or was lost (why)
+    # a CANopen valve without 0x2041 whose type key is not known: (device ID, serial, "E02"/"E04")
+    type_key_needed = Signal(str, int, str)
     _posted = Signal(object)  # a callable the GUI thread runs (results of the worker)
 
     def __init__(
@@ -308,15 +315,17 @@ class ValveConnection(QObject):
         self._submit(_Job("stream_stop", self._poller.stop_stream, self._on_stream_stopped, False))
 
     def start_generator(self, settings: GeneratorSettings) -> None:
-        """Run the setpoint generator's waveform on the valve's SETPOVR, off the GUI thread
-        and on the valve's time base (:mod:`prm9tool.online.setpoint_driver`); it switches
-        the override on. A refused write arrives as ``failed`` and ``write_failed``."""
+        """Run the setpoint generator's waveform on the valve's setpoint, off the GUI thread
+        and on the valve's time base (:mod:`prm9tool.online.setpoint_driver`): the override
+        over USB, RPDO1 over CANopen. A refused write arrives as ``failed`` and
+        ``write_failed``."""
         refused = lambda: self.write_failed.emit(list(OVERRIDE_OBJECTS))  # noqa: E731
         run = lambda s: self._start_driver(s, settings)  # noqa: E731
         self._submit(_Job("generator", run, None, False, refused))
 
     def stop_generator(self) -> None:
-        """End the waveform and switch the override off (SETPOVRON = 0)."""
+        """End the waveform and give the setpoint back (SETPOVRON = 0; over CANopen the
+        RPDO1 setpoint from before the generator)."""
         refused = lambda: self.write_failed.emit(["SETPOVRON"])  # noqa: E731
         run = lambda s: self._stop_driver(s, switch_off=True)  # noqa: E731
         self._submit(_Job("generator_stop", run, None, False, refused))
@@ -353,7 +362,28 @@ class ValveConnection(QObject):
         self._cancel.clear()
         self._set_busy(+1)
         done = lambda: self._set_busy(-1)  # noqa: E731
-        self._jobs.put(_Job(name, run, lambda _r: done(), on_error=done))
+        self._jobs.put(_Job(name, self._noting_moves(run), lambda _r: done(), on_error=done))
+
+    def _noting_moves(self, run: Callable[[Any], object]) -> Callable[[Any], object]:
+        """``run``, after which a changed identity of the valve (a restart that moved it to
+        another node ID or bit rate, which the session followed) is announced on the GUI
+        thread as ``device_changed``."""
+
+        def work(session: Any) -> object:
+            before = getattr(session, "info", None)
+            try:
+                return run(session)
+            finally:
+                after = getattr(session, "info", None)
+                if after is not before and after is not None:
+                    self._post(lambda: self._on_identity_changed(after))
+
+        return work
+
+    def _on_identity_changed(self, info: object) -> None:
+        if self._online:
+            self._device = cast("ValveIdentity", info)
+            self.device_changed.emit(info)
 
     def _set_busy(self, delta: int) -> None:
         was = self.is_busy
@@ -476,8 +506,16 @@ class ValveConnection(QObject):
             self.failed.emit(message)
 
     def _open(self, entry: object) -> object:
+        from prm9tool.device.canlink.typekeys import TypeKeyNeededError
+
         self._cancel.clear()
-        self._session = self._opener(entry)
+        try:
+            self._session = self._opener(entry)
+        except TypeKeyNeededError as exc:  # the GUI asks for the key on the label, then again
+            device_id, serial = str(getattr(entry, "device_id", entry)), exc.serial
+            told = exc.derived.config.value
+            self._post(lambda: self.type_key_needed.emit(device_id, serial, told))
+            raise
         info = self._session.identify()
         self._poller.reset(info)
         if self._after_open is not None:
@@ -508,7 +546,7 @@ class ValveConnection(QObject):
         if driver is not None:
             driver.stop(switch_off)
         elif switch_off and session is not None:
-            session.write("SETPOVRON", 0)
+            setpoint_link(session).release()  # what a previous session may have left on
 
     def _on_driver_refused(self, mnemonic: str, exc: Prm9Error) -> None:
         """The driver's thread: the valve refused one of its writes; the driver has ended."""

@@ -1,17 +1,21 @@
-"""The setpoint generator's engine: a waveform on the valve's SETPOVR, on the valve's time base.
+"""The setpoint generator's engine: a waveform on the valve's setpoint, on the valve's time base.
 
-While SETPOVRON = 1 the firmware takes its setpoint from SETPOVR instead of its analog input.
-The driver runs in a thread of its own, never on the GUI thread:
+The PC drives the setpoint through the session's :class:`~prm9tool.device.setpoint.SetpointLink`
+(``ValveSession.setpoint_link``): over USB the service override (while SETPOVRON = 1 the
+firmware takes its setpoint from SETPOVR instead of its analog input), over CANopen RPDO1
+(control word + 0x6300/0x6380, manual table 7-13). The driver runs in a thread of its own,
+never on the GUI thread:
 
 * An emulated valve gets the whole waveform (``ValveSession.emulator.drive_setpoint``): its
   loop applies it on its own clock, exact to the 200 µs cycle, paced or stepped faster than
   real time. The driver only keeps the link busy (the firmware drops the override 500 ms after
   the last USB report).
-* Over a link to a real valve the driver writes SETPOVR when the waveform's value changes (and
-  at least every 100 ms), timed against the oscilloscope's sample stream when one runs (sample
-  ``n`` lies ``n / rate`` after the stream started, so the waveform follows the valve's clock,
-  not the host's), otherwise against the host's monotonic clock. Its edges are as exact as the
-  link's latency allows (a USB report per millisecond).
+* Over a link to a real valve (and any valve on a CAN bus) the driver sends the setpoint when
+  the waveform's value changes (and at least every 100 ms), timed against the oscilloscope's
+  sample stream when one runs (sample ``n`` lies ``n / rate`` after the stream started, so the
+  waveform follows the valve's clock, not the host's), otherwise against the host's monotonic
+  clock. Its edges are as exact as the link's latency allows (a USB report per millisecond; one
+  RPDO frame, no answer awaited, on CAN).
 
 A refused write ends the driver and is reported (``on_refused``); a broken link just ends it:
 the connection notices the dead link itself.
@@ -24,12 +28,14 @@ import time
 from collections.abc import Callable
 from typing import TYPE_CHECKING, Any
 
+from prm9tool.device.setpoint import SETPOINT_OBJECTS, OverrideSetpoint, SetpointLink
 from prm9tool.errors import CommunicationError, Prm9Error
 
 if TYPE_CHECKING:  # numpy stays out of the window's start-up (tests/test_gui_app.py)
     from prm9tool.scope import GeneratorSettings
 
-KEEPALIVE_S = 0.1  # the override's watchdog is 500 ms; rewrite (or read) at least this often
+GENERATOR_OBJECTS = frozenset(SETPOINT_OBJECTS)  # what a refusal names when it stops a generator
+KEEPALIVE_S = 0.1  # the override's watchdog is 500 ms; read at least this often (emulated)
 LINK_STEP_S = 0.001  # over a link: look for a changed value every millisecond (one USB frame)
 MAX_EXTRAPOLATION_S = 0.05  # trust the stream's time for this long after its last block
 
@@ -72,7 +78,7 @@ class StreamClock:
 
 
 class SetpointDriver:
-    """Drives SETPOVR with a :class:`GeneratorSettings` waveform (see the module docstring)."""
+    """Drives the setpoint with a :class:`GeneratorSettings` waveform (the module docstring)."""
 
     def __init__(
         self,
@@ -86,6 +92,7 @@ class SetpointDriver:
         self._on_refused = on_refused
         self._clock = clock or StreamClock()
         self._controls = getattr(session, "emulator", None)
+        self._link = setpoint_link(session)
         self._stop = threading.Event()
         self._thread = threading.Thread(target=self._run, name="setpoint-generator", daemon=True)
         self._mark = self._clock.mark()
@@ -97,11 +104,16 @@ class SetpointDriver:
         return self._controls is not None
 
     def start(self) -> None:
-        """Write the first value, switch the override on and run. Raises what the valve
-        answered (e.g. SdoAbortError) or a CommunicationError; nothing runs then."""
+        """Send the first value, take the setpoint over and run. Raises what the valve
+        answered (e.g. SdoAbortError, a refusal saying what to do) or a CommunicationError;
+        nothing runs then."""
+        if self._controls is None:
+            self._mark = self._clock.mark()
+            self._link.begin(self._settings.raw_at(0.0))
+            self._thread.start()
+            return
         self._write("SETPOVR", self._settings.raw_at(0.0))
-        if self._controls is not None:
-            self._controls.drive_setpoint(self._settings.raw_values)
+        self._controls.drive_setpoint(self._settings.raw_values)
         self._mark = self._clock.mark()
         try:
             self._write("SETPOVRON", 1)
@@ -111,12 +123,17 @@ class SetpointDriver:
         self._thread.start()
 
     def stop(self, switch_off: bool = True) -> None:
-        """End the waveform; ``switch_off``: write SETPOVRON = 0 (not when the link is gone)."""
+        """End the waveform; ``switch_off``: give the setpoint back (SETPOVRON = 0, or the
+        RPDO setpoint from before; not when the link is gone)."""
         self._stop.set()
         if self._thread.is_alive() and self._thread is not threading.current_thread():
             self._thread.join()
         self._release()
-        if switch_off:
+        if not switch_off:
+            return
+        if self._controls is None:
+            self._link.end()
+        else:
             self._write("SETPOVRON", 0)
 
     def _release(self) -> None:
@@ -137,13 +154,23 @@ class SetpointDriver:
         except CommunicationError:
             return  # the link is gone: the connection reports it
         except Prm9Error as exc:
-            self._on_refused(self._writing, exc)
+            self._on_refused(self._writing if self._controls else self._link.writing, exc)
 
     def _follow_the_link(self) -> None:
         last, written = self._settings.raw_at(0.0), time.monotonic()
         while not self._stop.wait(LINK_STEP_S):
             raw = self._settings.raw_at(self._clock.seconds_since(self._mark))
             now = time.monotonic()
-            if raw != last or now - written >= KEEPALIVE_S:
-                self._write("SETPOVR", raw)
-                last, written = raw, now
+            if raw != last:
+                self._link.set(raw)
+            elif now - written >= self._link.keepalive_s:
+                self._link.keep_alive()
+            else:
+                continue
+            last, written = raw, now
+
+
+def setpoint_link(session: Any) -> SetpointLink:
+    """The session's way to the setpoint (the service override for a session without one)."""
+    make = getattr(session, "setpoint_link", None)
+    return make() if make is not None else OverrideSetpoint(session)

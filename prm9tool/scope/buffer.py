@@ -129,14 +129,17 @@ def axis_ranges(
     units: Sequence[str],
     share_units: bool,
     force: bool = False,
+    auto: Sequence[bool] = (),
 ) -> list[tuple[float, float] | None]:
     """New value range per autoscaled channel (None: keep the axis as it is).
 
     ``bounds`` holds each autoscaled channel's data minimum and maximum (None: not autoscaled
     or no data). With ``share_units``, autoscaled channels of the same unit get one common
-    range, so a setpoint and its actual value compare directly. Hysteresis: an axis changes
-    only when its data leaves the range or fills less than half of it (or when ``force``), so
-    a live axis neither jitters nor needs redrawing every frame.
+    range, so a setpoint and its actual value compare directly; an autoscaled channel without
+    data (``auto``; NaN, e.g. a point a valve over CANopen has no object for) gets it too, since
+    the others are drawn on its axis. Hysteresis: an axis changes only when its data leaves the
+    range or fills less than half of it (or when ``force``), so a live axis neither jitters nor
+    needs redrawing every frame.
     """
     wanted = list(bounds)
     if share_units:
@@ -144,8 +147,10 @@ def axis_ranges(
             group = [(k, b) for k, b in enumerate(bounds) if b is not None and units[k] == unit]
             if group:
                 common = (min(b[0] for _, b in group), max(b[1] for _, b in group))
-                for k, _ in group:
-                    wanted[k] = common
+                for k in range(len(bounds)):
+                    no_data = k < len(auto) and auto[k] and bounds[k] is None
+                    if units[k] == unit and (bounds[k] is not None or no_data):
+                        wanted[k] = common
     result: list[tuple[float, float] | None] = []
     for want, (y0, y1) in zip(wanted, current, strict=True):
         if want is None:

@@ -3,15 +3,19 @@
 Interface (python-can's name), channel and bit rate are remembered in QSettings. "Search the
 bus" scans node IDs 1…127 off the GUI thread (ValveConnection.list_devices_async with the bus)
 and lists every node: PRM9 valves with type key, serial and firmware, other nodes as "not a
-PRM9" (not selectable), each with its NMT state, heartbeat age and last EMCY as the scan saw
-them (the network view). OK goes online with the chosen valve (``can:NODE``). docs/can-link.md.
+PRM9" (not selectable), each with its NMT state, heartbeat age and last EMCY. From the search
+on, a :class:`~prm9tool.online.bus_monitor.BusMonitor` keeps these live while the dialog is open
+(fed off the GUI thread, a few times a second): the ages tick, a node that boots is marked so, a
+node that appears is added ("new on the bus"), one whose heartbeat stops is shown silent (the
+network view). OK goes online with the chosen valve (``can:NODE``). docs/can-link.md.
 """
 
 from __future__ import annotations
 
 from collections.abc import Callable
 
-from PySide6.QtCore import QSettings, Qt
+from PySide6.QtCore import QCoreApplication, QSettings, Qt
+from PySide6.QtGui import QBrush, QPalette
 from PySide6.QtWidgets import (
     QAbstractItemView,
     QComboBox,
@@ -33,6 +37,7 @@ from shiboken6 import isValid
 from prm9tool.catalogue.typekey import TypeKey
 from prm9tool.errors import TypeKeyError
 from prm9tool.files.can_type_keys import remember
+from prm9tool.online.bus_monitor import BusMonitor, HeardNode
 from prm9tool.online.connection_protocol import ListedValves, ValveListing
 from prm9tool.paths import user_data_dir
 from prm9tool.translate import error_text
@@ -53,6 +58,8 @@ BITRATES = (20_000, 50_000, 125_000, 250_000, 500_000, 800_000, 1_000_000)  # ta
 DEFAULT_BITRATE = 500_000  # delivery state (manual table 7-22)
 # (bus as a dict, deliver): scans off the GUI thread, deliver(entries or exception) on it
 Scanner = Callable[[dict[str, object], Callable[[ListedValves], None]], None]
+BOOT_SHOWN_S = 10.0  # a boot-up is pointed out this long
+NMT_COLUMN, HEARTBEAT_COLUMN, EMCY_COLUMN = 4, 5, 6
 
 
 def saved_bus(settings: QSettings) -> dict[str, object]:
@@ -72,11 +79,24 @@ def saved_bus(settings: QSettings) -> dict[str, object]:
 class CanBusDialog(QDialog):
     """The CAN bus, its nodes and the valve to go online with."""
 
-    def __init__(self, scan: Scanner, settings: QSettings, parent: QWidget | None = None) -> None:
+    def __init__(
+        self,
+        scan: Scanner,
+        settings: QSettings,
+        parent: QWidget | None = None,
+        monitor: BusMonitor | None = None,
+    ) -> None:
+        """``monitor``: keeps the node table live after a search (None: as the scan saw it)."""
         super().__init__(parent)
         self.setWindowTitle(self.tr("CAN bus"))
         self._scan, self._settings = scan, settings
         self._entries: list[ValveListing] = []
+        self._extra: list[int] = []  # nodes heard after the search, not identified (rows after)
+        self._monitor = monitor
+        if monitor is not None:
+            monitor.nodes_heard.connect(self._on_nodes_heard)
+            monitor.failed.connect(self._on_monitor_failed)
+            self.finished.connect(lambda _r: monitor.stop())
         bus = saved_bus(settings)
         self.interface = QComboBox()
         self.interface.setEditable(True)
@@ -127,7 +147,7 @@ class CanBusDialog(QDialog):
         layout.addWidget(self.state)
         layout.addWidget(self.table)
         layout.addWidget(self.buttons)
-        self.resize(860, 420)
+        self.resize(1060, 420)
         self._update_ok()
 
     def bus(self) -> dict[str, object]:
@@ -156,6 +176,8 @@ class CanBusDialog(QDialog):
         self._remember()
         self.search.setEnabled(False)
         self.state.setText(self.tr("Searching the bus (node IDs 1…127)…"))
+        if self._monitor is not None:
+            self._monitor.start(self.bus())
         self._scan(self.bus(), self._on_scanned)
 
     def _on_scanned(self, found: ListedValves) -> None:
@@ -176,7 +198,7 @@ class CanBusDialog(QDialog):
         )
 
     def _fill(self, entries: list[ValveListing]) -> None:
-        self._entries = entries
+        self._entries, self._extra = entries, []
         self.table.setRowCount(len(entries))
         for row, entry in enumerate(entries):
             valve = entry.kind == "can"
@@ -198,6 +220,56 @@ class CanBusDialog(QDialog):
                 self.table.setItem(row, column, item)
         self._update_ok()
 
+    def _on_nodes_heard(self, nodes: list[HeardNode]) -> None:
+        """The monitor's news: NMT state, heartbeat age, last EMCY; new and silent nodes."""
+        if not isValid(self) or not self.search.isEnabled():
+            return  # a search runs: its result comes first
+        rows = {e.device_id: row for row, e in enumerate(self._entries)}
+        rows |= {f"can:{n}": len(self._entries) + i for i, n in enumerate(self._extra)}
+        for node in nodes:
+            row = rows.get(node.device_id)
+            if row is None:
+                row = self._add_new_node(node.node_id)
+            self._show_heard(row, node)
+
+    def _add_new_node(self, node_id: int) -> int:
+        self._extra.append(node_id)
+        row = self.table.rowCount()
+        self.table.insertRow(row)
+        cells = [f"can:{node_id}", self.tr("new on the bus: search again to identify it")]
+        for column in range(self.table.columnCount()):
+            item = QTableWidgetItem(cells[column] if column < len(cells) else "")
+            item.setFlags(item.flags() & ~Qt.ItemFlag.ItemIsSelectable)
+            self.table.setItem(row, column, item)
+        return row
+
+    def _show_heard(self, row: int, node: HeardNode) -> None:
+        state, age = node.nmt_state, node.heartbeat_age_s
+        booted = node.boot_up_age_s
+        if booted is not None and booted < BOOT_SHOWN_S:
+            state = self.tr("{0} (boot-up {1:.1f} s ago)").format(state, booted)
+        if node.silent:
+            beat = self.tr("silent for {0:.1f} s").format(age)
+        else:
+            beat = self.tr("{0:.1f} s ago").format(age) if age is not None else self.tr("none")
+        role = QPalette.ColorRole.PlaceholderText if node.silent else QPalette.ColorRole.Text
+        for column, text in (
+            (NMT_COLUMN, state),
+            (HEARTBEAT_COLUMN, beat),
+            (EMCY_COLUMN, node.last_emcy),
+        ):
+            item = self.table.item(row, column)
+            if item is not None:
+                item.setText(text)
+        for column in range(self.table.columnCount()):
+            item = self.table.item(row, column)
+            if item is not None:
+                item.setForeground(QBrush(self.palette().color(role)))
+
+    def _on_monitor_failed(self, reason: str) -> None:
+        if isValid(self):
+            self.state.setText(self.tr("The bus cannot be watched: {0}").format(reason))
+
     def _update_ok(self) -> None:
         ok = self.buttons.button(QDialogButtonBox.StandardButton.Ok)
         ok.setEnabled(self.selected_device_id() is not None)
@@ -214,28 +286,37 @@ class CanBusDialog(QDialog):
     def _ask_type_key(self, entry: ValveListing) -> bool:
         """A real valve does not tell its type key (docs/can-link.md): ask for the one on its
         label, check it against what its objects tell, remember it for its serial number."""
-        serial = entry.serial
         told = "E04" if "E04" in entry.type_key else "E02"
-        text, ok = QInputDialog.getText(
-            self,
-            self.tr("Type key of the valve"),
-            self.tr(
-                "The valve (serial number {0}) does not tell its type key; its objects say "
-                "{1} -CA. Type key on the valve's label:"
-            ).format(serial, told),
-            text=f"PRM9-06.3Z11/30-24{told}S02-CA",
+        key, problem = ask_type_key(self, entry.serial, told)
+        if problem:
+            self.state.setText(problem)
+        return key is not None
+
+
+def ask_type_key(parent: QWidget | None, serial: int, told: str) -> tuple[str | None, str]:
+    """Ask for the type key on the label of valve ``serial``, whose objects say ``told`` (E02,
+    E04) -CA; a fitting key is remembered for the serial number. Returns (key, "") — or (None,
+    why the answer does not fit), (None, "") when the user cancelled."""
+    text, ok = QInputDialog.getText(
+        parent,
+        QCoreApplication.translate("CanBusDialog", "Type key of the valve"),
+        QCoreApplication.translate(
+            "CanBusDialog",
+            "The valve (serial number {0}) does not tell its type key; its objects say "
+            "{1} -CA. Type key on the valve's label:",
+        ).format(serial, told),
+        text=f"PRM9-06.3Z11/30-24{told}S02-CA",
+    )
+    if not ok:
+        return None, ""
+    try:
+        key = TypeKey.parse(text)
+    except TypeKeyError as exc:
+        return None, error_text(exc)
+    if key.config.value != told or not key.canopen:
+        problem = QCoreApplication.translate(
+            "CanBusDialog", "{0} does not fit the valve: its objects say {1} -CA."
         )
-        if not ok:
-            return False
-        try:
-            key = TypeKey.parse(text)
-        except TypeKeyError as exc:
-            self.state.setText(error_text(exc))
-            return False
-        if key.config.value != told or not key.canopen:
-            self.state.setText(
-                self.tr("{0} does not fit the valve: its objects say {1} -CA.").format(key, told)
-            )
-            return False
-        remember(user_data_dir(), serial, str(key))
-        return True
+        return None, problem.format(key, told)
+    remember(user_data_dir(), serial, str(key))
+    return str(key), ""

@@ -33,6 +33,7 @@ from prm9tool.views.valve_selection import ValveSelectionDialog
 
 EMULATORS_KEY = "hid/emulators"
 SELECTED_KEY = "hid/selected"
+UNUSABLE = "emulator-unusable"  # the kind of a remembered emulated valve that cannot be made
 DEFAULT_EMULATOR_SERIAL = 1001
 DEFAULT_EMULATOR = f"{DEFAULT_EMULATOR_TYPE_KEY}:{DEFAULT_EMULATOR_SERIAL}"
 # (emulator specs, deliver): lists the valves off the GUI thread — identifying a USB valve that
@@ -209,6 +210,8 @@ class HidConfigurationDialog(QDialog):
             cells = describe(entry)
             if cells[0] == "emulator":  # the device layer describes it in English
                 cells[4] = self.tr("emulated {0}, serial {1}").format(cells[1], cells[2])
+            elif cells[0] == UNUSABLE:
+                cells[4] = self.tr("cannot be used (remove it): {0}").format(cells[4])
             cells[0] = self._kind_text(cells[0])
             for column, cell in enumerate(cells):
                 self.table.setItem(row, column, QTableWidgetItem(cell))
@@ -222,7 +225,7 @@ class HidConfigurationDialog(QDialog):
         self._on_selection_changed()
 
     def _kind_text(self, kind: str) -> str:
-        return self.tr("Emulated valve") if kind == "emulator" else self.tr("USB")
+        return self.tr("Emulated valve") if kind in ("emulator", UNUSABLE) else self.tr("USB")
 
     def selected_entry(self) -> ValveListing | None:
         """The chosen device entry (None if the list is empty)."""
@@ -231,13 +234,14 @@ class HidConfigurationDialog(QDialog):
 
     def _on_selection_changed(self) -> None:
         entry = self.selected_entry()
-        self.buttons.button(QDialogButtonBox.StandardButton.Ok).setEnabled(entry is not None)
-        self.remove_button.setEnabled(entry is not None and entry.kind == "emulator")
+        usable = entry is not None and entry.kind != UNUSABLE
+        self.buttons.button(QDialogButtonBox.StandardButton.Ok).setEnabled(usable)
+        self.remove_button.setEnabled(entry is not None and entry.kind in ("emulator", UNUSABLE))
 
     def accept(self) -> None:
         """Remember the choice."""
         entry = self.selected_entry()
-        if entry is None:
+        if entry is None or entry.kind == UNUSABLE:
             return
         self._settings.setValue(SELECTED_KEY, entry.device_id)
         super().accept()

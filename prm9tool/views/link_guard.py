@@ -4,7 +4,8 @@ Over CANopen the node ID (NODEID 0x2030/1) and bit rate (BITRATE 0x2030/2) take 
 valve's next power-up or restart; prm9tool's connection then breaks. Which parameters do that is
 the link's business (``DeviceInfo.link_parameters``); this module says, right when one is
 changed and before any restart cuts the link, where the valve will answer afterwards — or that
-the rotary switches decide (manual table 7-17) and the change does not move it.
+the rotary switches decide (manual table 7-17) and the change does not move it. A restart from
+prm9tool follows the valve there (prm9tool.device.canlink.relocate).
 """
 
 from __future__ import annotations
@@ -54,7 +55,9 @@ class LinkGuard(QObject):
             ).format(switch_node, after.node_id)
         rate = format_bitrate(after.bitrate_kbit)
         return self.tr(
-            "After the valve's next power-up or restart it answers at node {0}, {1}: prm9tool's "
-            "connection then breaks. Store the change, restart the valve, then find it again "
-            "under Communication → CAN bus (node {0}, bit rate {1})."
+            "After the valve's next power-up or restart it answers at node {0}, {1}. Store the "
+            "change and restart the valve from prm9tool (Valve → Restart valve): prm9tool then finds "
+            "it there again — where it cannot change the adapter's bit rate itself "
+            "(SocketCAN), it says how. After a power-up, find it under Communication → CAN bus "
+            "(node {0}, bit rate {1})."
         ).format(after.node_id, rate)

@@ -133,7 +133,8 @@ class MainWindow(QMainWindow):
 
         window = getattr(self, "tuning_window", None)
         if window is None or window.doc is not self.doc:
-            window = self.tuning_window = TuningWindow(self.doc, self.connection, self)
+            window = TuningWindow(self.doc, self.connection, self, control=self.control)
+            self.tuning_window = window
         index = window.loop.findData(loop)
         if index >= 0 and not window.runner.busy:
             window.loop.setCurrentIndex(index)

@@ -1,6 +1,8 @@
-"""Setpoint generator for tuning: drives the valve's setpoint through the override objects.
+"""Setpoint generator for tuning: drives the valve's setpoint from the PC.
 
-While SETPOVRON = 1 the firmware takes its setpoint from SETPOVR instead of the analog input.
+Over USB through the override objects (while SETPOVRON = 1 the firmware takes its setpoint from
+SETPOVR instead of the analog input), over CANopen through RPDO1 (0x6300/0x6380, manual table
+7-13; prm9tool.device.canlink.rpdo_setpoint).
 The waveform itself runs off the GUI thread, on the valve's own time base
 (``connection.start_generator``, :mod:`prm9tool.online.setpoint_driver`): exact to the
 valve's 200 µs cycle on an emulated valve, timed against the sample stream over a link. This
@@ -19,10 +21,11 @@ from PySide6.QtCore import QObject, Signal
 from PySide6.QtWidgets import QComboBox, QDoubleSpinBox, QLabel, QPushButton, QWidget
 
 from prm9tool.online.connection_protocol import ScopeConnection
+from prm9tool.online.setpoint_driver import GENERATOR_OBJECTS
 from prm9tool.scope import GeneratorSettings, Waveform, setpoint_limits
 from prm9tool.views.scope_panels import SPACE, control_row, section_label
 
-OVERRIDE_OBJECTS = frozenset({"SETPOVR", "SETPOVRON"})
+OVERRIDE_OBJECTS = GENERATOR_OBJECTS  # a refusal of one of these stops the generator
 
 
 class SetpointGenerator(QObject):
@@ -117,7 +120,7 @@ class SetpointGenerator(QObject):
         if not online:
             self._on_link_lost()
         elif self._override_left_on and not self.running:
-            self._connection.write("SETPOVRON", 0)
+            self._connection.stop_generator()  # gives back what may have been left on
             self._override_left_on = False
 
 

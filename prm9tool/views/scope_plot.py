@@ -253,7 +253,7 @@ class ScopePlot(QWidget):
         slots = range(self._channels)
         bounds = [self._bounds(slot) if self._auto[slot] else None for slot in slots]
         current = [self.y_range(slot) for slot in slots]
-        ranges = axis_ranges(bounds, current, self._units, self._same_scale, force)
+        ranges = axis_ranges(bounds, current, self._units, self._same_scale, force, self._auto)
         for slot, new in enumerate(ranges):
             if new is not None:
                 self.views[slot].setYRange(*new, padding=0)

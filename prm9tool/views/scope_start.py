@@ -8,6 +8,7 @@ the step figures' reference: it is what the valve made of the setpoint, on its o
 
 from __future__ import annotations
 
+from PySide6.QtCore import QCoreApplication
 from PySide6.QtWidgets import QWidget
 
 from prm9tool.catalogue.commissioning import Blocker, NmtCommand
@@ -59,26 +60,36 @@ class GeneratorStart(QWidget):
         return True
 
     def _offer_enable(self, status: object | None) -> None:
-        reason = status_blocker(status)
-        if self._control is None or reason not in ENABLEABLE:
-            return
-        assert reason is not None
-        answer = prompts.ask(
-            self.parentWidget(),
-            prompts.Icon.Question,
-            self.tr("Setpoint generator"),
-            self.tr(
-                "The valve does not follow its setpoint: {0}\n\nEnable it now (NMT start, "
-                "control word 08h → 09h → 0Bh → 0Fh)?"
-            ).format(blocker_text(reason, status)),
-            prompts.Button.Yes | prompts.Button.No,
-            prompts.Button.Yes,
-        )
-        if answer != prompts.Button.Yes:
-            return
-        if str(getattr(status, "nmt_state", "off")) in ("pre-operational", "stopped"):
-            self._control.nmt(NmtCommand.START)
-        self._control.enable()
+        offer_enable(self.parentWidget(), self._control, status, self.tr("Setpoint generator"))
+
+
+def offer_enable(
+    parent: QWidget | None, control: ValveControl | None, status: object | None, title: str
+) -> None:
+    """A valve that waits for its CANopen master (or is not enabled) would not move: offer NMT
+    start and the enable sequence (manual §7.6). Queued on the connection, they run before a
+    job queued after this call (the generator's waveform, a tuning test)."""
+    reason = status_blocker(status)
+    if control is None or reason not in ENABLEABLE:
+        return
+    assert reason is not None
+    answer = prompts.ask(
+        parent,
+        prompts.Icon.Question,
+        title,
+        QCoreApplication.translate(
+            "GeneratorStart",
+            "The valve does not follow its setpoint: {0}\n\nEnable it now (NMT start, "
+            "control word 08h → 09h → 0Bh → 0Fh)?",
+        ).format(blocker_text(reason, status)),
+        prompts.Button.Yes | prompts.Button.No,
+        prompts.Button.Yes,
+    )
+    if answer != prompts.Button.Yes:
+        return
+    if str(getattr(status, "nmt_state", "off")) in ("pre-operational", "stopped"):
+        control.nmt(NmtCommand.START)
+    control.enable()
 
 
 def measure_against_demand(channels: ChannelPanel, steps: StepPanel) -> None:

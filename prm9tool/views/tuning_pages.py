@@ -273,8 +273,13 @@ class BodePage(Page):
         fake = Characterization(None, DEFAULT, "", {}, bode=result)  # type: ignore[arg-type]
         self.plot.show_plots(list(bode_plots(fake)))
         r = result.response
-        self.result.setText(self.tr("−3 dB at %1 Hz, −90° at %2 Hz.").replace("%1", f"{r.bandwidth_hz():.1f}").replace(
-            "%2", f"{r.phase_90_hz():.1f}"))  # fmt: skip
+        text = self.tr("−3 dB at %1 Hz, −90° at %2 Hz.").replace("%1", f"{r.bandwidth_hz():.1f}").replace(
+            "%2", f"{r.phase_90_hz():.1f}")  # fmt: skip
+        if result.limited_to_hz is not None:
+            text += " " + self.tr(
+                "The link's sample rate limited the sweep to %1 Hz (nothing interpolated)."
+            ).replace("%1", f"{result.limited_to_hz:g}")
+        self.result.setText(text)
 
     def retranslate(self) -> None:
         """Texts."""

@@ -21,6 +21,8 @@ from PySide6.QtWidgets import QApplication
 
 from prm9tool.analysis.profile import Limit
 from prm9tool.characterize.run import Characterization, Figure
+from prm9tool.i18n import current_language
+from prm9tool.messages import localized_number
 from prm9tool.views.record import configure_pdf
 from prm9tool.views.tuning_plot import COLOURS, Plot, Series, plot_image
 
@@ -42,6 +44,9 @@ def figure_label(figure: Figure) -> str:
         "linearity": translate("TuningReport", "linearity error"),
         "dead": translate("TuningReport", "dead band"),
     }
+    if parts[0] == "flow":  # E04: actuator velocity over opening
+        what = base.get(parts[1], figure.name)
+        return translate("TuningReport", "flow characteristic: %1").replace("%1", what)
     if parts[0] == "step":
         what = base.get(parts[2], parts[2])
         return (
@@ -58,23 +63,28 @@ def verdict(passed: bool | None) -> str:
 
 
 def value_text(f: Figure) -> str:
-    """The figure's value with its unit (times in ms)."""
+    """The figure's value with its unit (times in ms), with the program language's decimal
+    separator (``5,75 %`` in German and Czech)."""
     if math.isnan(f.value):
         return translate("TuningReport", "not reached")
     if f.unit == "s":
-        return f"{f.value * 1000:.1f} ms"
-    return f"{f.value:.3g} {f.unit}".strip()
+        return _local(f"{f.value * 1000:.1f} ms")
+    return _local(f"{f.value:.3g} {f.unit}".strip())
 
 
 def limit_text(f: Figure) -> str:
-    """The figure's limit with its unit."""
+    """The figure's limit with its unit (decimal separator as :func:`value_text`)."""
     if f.limit is None:
         return "—"
     if f.unit == "s":
         lo, hi = f.limit.minimum, f.limit.maximum
         in_ms = Limit(None if lo is None else lo * 1000, None if hi is None else hi * 1000)
-        return f"{in_ms.text()} ms"
-    return f"{f.limit.text()} {f.unit}".strip()
+        return _local(f"{in_ms.text()} ms")
+    return _local(f"{f.limit.text()} {f.unit}".strip())
+
+
+def _local(text: str) -> str:
+    return localized_number(text, current_language())
 
 
 def step_plot(c: Characterization, index: int) -> Plot:
@@ -151,6 +161,18 @@ def static_plot(c: Characterization) -> Plot:
     )
 
 
+def flow_plot(c: Characterization) -> Plot:
+    """E04: the actuator's velocity over the spool's opening (binned means)."""
+    assert c.flow is not None
+    f = c.flow.characteristic
+    return Plot(
+        translate("TuningReport", "Flow characteristic"),
+        translate("TuningReport", "spool opening [%]"),
+        translate("TuningReport", "actuator velocity [%/s]"),
+        [Series(f.x, f.velocity, translate("TuningReport", "measured"), COLOURS[0])],
+    )
+
+
 def build_report(c: Characterization) -> QTextDocument:
     """The report as a text document (its images as resources)."""
     doc = QTextDocument()
@@ -160,6 +182,8 @@ def build_report(c: Characterization) -> QTextDocument:
         plots.extend(bode_plots(c))
     if c.static is not None:
         plots.append(static_plot(c))
+    if c.flow is not None:
+        plots.append(flow_plot(c))
     images = []
     for k, plot in enumerate(plots):
         url = f"prm9tool://plot{k}.png"

@@ -32,6 +32,8 @@ from prm9tool.catalogue.variant import Config
 from prm9tool.i18n import format_value
 from prm9tool.model.document import ParameterDocument
 from prm9tool.online.tuning_runner import SimulationRunner, TuningRunner, ValveRunner
+from prm9tool.online.valve_control import ValveControl
+from prm9tool.views.scope_start import offer_enable
 from prm9tool.views.tuning_pages import AutotunePage, BodePage, Page
 from prm9tool.views.tuning_report_page import ReportPage
 from prm9tool.views.tuning_static import FlowPage, StaticPage
@@ -51,11 +53,17 @@ class TuningWindow(QDialog):
     """Autotune, frequency response, static characteristic and report for one valve."""
 
     def __init__(
-        self, doc: ParameterDocument, connection: Any | None = None, parent: QWidget | None = None
+        self,
+        doc: ParameterDocument,
+        connection: Any | None = None,
+        parent: QWidget | None = None,
+        control: ValveControl | None = None,
     ) -> None:
         super().__init__(parent)
         self.setObjectName("tuning_window")
         self.doc, self.connection = doc, connection
+        self._control = control  # NMT start and enabling, offered to a valve that would not move
+        self._status: object | None = None  # the valve's latest status
         self.runner: TuningRunner = self._make_runner()
         self.loop = QComboBox()
         self.loop.addItem("", "position")
@@ -88,6 +96,8 @@ class TuningWindow(QDialog):
         layout.addLayout(bottom)
         if connection is not None:
             connection.online_changed.connect(self._on_online_changed)
+            if hasattr(connection, "status_changed"):
+                connection.status_changed.connect(self._on_status_changed)
         self.resize(900, 680)
         self.retranslate()
 
@@ -101,6 +111,9 @@ class TuningWindow(QDialog):
         runner.failed.connect(self._on_failed)
         runner.busy_changed.connect(self._on_busy_changed)
         return runner
+
+    def _on_status_changed(self, status: object) -> None:
+        self._status = status
 
     def _on_online_changed(self, _online: bool) -> None:
         if self.runner.busy:
@@ -118,6 +131,8 @@ class TuningWindow(QDialog):
             self.runner.values = dict(self.doc.values)  # the document as it is now
         elif not self._confirm(what):
             return
+        else:
+            offer_enable(self, self._control, self._status, self.tr("Tuning"))
         self.status.setText(self.tr("Running: %1").replace("%1", what))
         self.runner.run(kind, procedure)
 

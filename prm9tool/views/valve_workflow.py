@@ -11,7 +11,7 @@ from collections.abc import Callable, Mapping
 from dataclasses import dataclass
 from typing import Any
 
-from PySide6.QtCore import QObject, QSettings, Signal
+from PySide6.QtCore import QObject, QSettings, QTimer, Signal
 from PySide6.QtWidgets import QDialog, QProgressDialog, QWidget
 
 from prm9tool.catalogue.typekey import TypeKey
@@ -26,6 +26,7 @@ from prm9tool.translate import error_text
 from prm9tool.views import prompts
 from prm9tool.views.hid_dialog import (
     SELECTED_KEY,
+    UNUSABLE,
     HidConfigurationDialog,
     saved_emulators,
 )
@@ -64,6 +65,7 @@ class ValveWorkflow(QObject):
         self.uploads = ValveUpload(
             window, doc, connection, sync, self.progress, self.message_posted.emit, access
         )
+        self._restarted_from = ""  # device ID before the restart (a restart may move it)
         # "choose per parameter" in the going-online dialog (the compare workflow sets it)
         self.choose_per_parameter: Callable[[Mapping[str, Raw]], None] | None = None
         connection.online_changed.connect(self._on_connection_online_changed)
@@ -71,6 +73,7 @@ class ValveWorkflow(QObject):
         connection.progress.connect(self._on_connection_progress)
         connection.failed.connect(self._on_connection_failed)
         connection.lost.connect(self._on_connection_lost)
+        connection.type_key_needed.connect(self._on_type_key_needed)
         connection.live_values_changed.connect(doc.set_live)
         connection.write_failed.connect(sync.forget)
         connection.backup_written.connect(self._on_connection_backup_written)
@@ -92,13 +95,18 @@ class ValveWorkflow(QObject):
 
     def configure_can_bus(self) -> None:
         """Communication → CAN bus: choose the bus and a valve on it, then go online with it."""
+        from prm9tool.online.bus_monitor import BusMonitor
         from prm9tool.views.can_bus_dialog import CanBusDialog
 
         def scan(bus: dict[str, object], deliver: Callable[[ListedValves], None]) -> None:
             self._connection.list_devices_async((), deliver, bus)
 
-        dialog = CanBusDialog(scan, self._settings, self._window)
-        if dialog.exec() != QDialog.DialogCode.Accepted:
+        monitor = BusMonitor()
+        dialog = CanBusDialog(scan, self._settings, self._window, monitor)
+        accepted = dialog.exec() == QDialog.DialogCode.Accepted
+        monitor.stop()
+        monitor.deleteLater()
+        if not accepted:
             return
         device_id = dialog.selected_device_id()
         if device_id is not None and not self._connection.is_online:
@@ -112,7 +120,7 @@ class ValveWorkflow(QObject):
                 self.tr("Listing the valves failed: {0}").format(error_text(entries))
             )
             entries = []
-        found = list(entries)
+        found = [e for e in entries if e.kind != UNUSABLE]  # the dialog says why not
         selected = str(self._settings.value(SELECTED_KEY, ""))
         for entry in found:
             if entry.device_id == selected:
@@ -138,6 +146,29 @@ class ValveWorkflow(QObject):
         entry = self.chosen_entry(entries)
         if entry is not None:
             self._connect(entry)
+
+    def _on_type_key_needed(self, device_id: str, serial: int, told: str) -> None:
+        """Going online with a CANopen valve that does not tell its type key (``--device
+        can:N``): ask for the key on its label (until it fits or the user cancels), remember
+        it for the serial number and go online again."""
+        from prm9tool.views.can_bus_dialog import ask_type_key
+
+        while True:
+            key, problem = ask_type_key(self._window, serial, told)
+            if not problem:
+                break
+            self.message_posted.emit(problem)
+        if key is not None:
+            self._connect_when_idle(device_id)
+
+    def _connect_when_idle(self, device_id: str) -> None:
+        """Go online once the failed attempt has finished (its end is still queued)."""
+        if self._connection.is_online:
+            return
+        if self._connection.is_busy:
+            QTimer.singleShot(50, lambda: self._connect_when_idle(device_id))
+            return
+        self._connect(device_id)
 
     def _connect(self, entry: ValveListing | str) -> None:
         self.message_posted.emit(self.tr("Connecting to {0}…").format(_name(entry)))
@@ -309,6 +340,8 @@ class ValveWorkflow(QObject):
         dialog = RestartDialog(self._window)
         if dialog.exec() != QDialog.DialogCode.Accepted:
             return
+        device = self._connection.device
+        self._restarted_from = device.device_id if device is not None else ""
         self.progress.start("restart", self.tr("Restarting the valve…"), cancellable=False)
         self._connection.run_job(AFTER_RESTART, _restart_and_read)
 
@@ -322,7 +355,7 @@ class ValveWorkflow(QObject):
         elif name == "restore_factory" and isinstance(result, _FactoryReset):
             self._on_factory_reset(result)
         elif name == AFTER_RESTART and isinstance(result, Mapping):
-            self.message_posted.emit(self.tr("The valve restarted"))
+            self._report_restart()
             self._sync.stop()
             self._on_compare_finished(result)
         elif name == "upload":
@@ -330,6 +363,25 @@ class ValveWorkflow(QObject):
         elif name == "store":
             self._sync.unstored = False
             self.message_posted.emit(self.tr("The valve stored its parameters"))
+
+    def _report_restart(self) -> None:
+        """Say that the valve restarted — and where, when a changed node ID or bit rate moved
+        it and the session followed (the CAN bus dialog then remembers the new bit rate)."""
+        device = self._connection.device
+        if device is None or device.device_id == self._restarted_from:
+            self.message_posted.emit(self.tr("The valve restarted"))
+            return
+        bus = getattr(device, "can_bus", None)
+        if bus is not None and bus[2]:
+            from prm9tool.views.can_bus_dialog import BITRATE_KEY
+
+            self._settings.setValue(BITRATE_KEY, bus[2])
+        rate = self.tr("{0} kbit/s").format(bus[2] // 1000) if bus and bus[2] else ""
+        self.message_posted.emit(
+            self.tr("The valve restarted at {0} {1}; prm9tool found it there").format(
+                device.device_id, rate
+            )
+        )
 
     def _on_factory_reset(self, result: _FactoryReset) -> None:
         self.take_valve_values(result.values, self.tr("Factory values of the valve"))

@@ -102,6 +102,8 @@ class NodeSeen:
     emcy_register: int = 0
     emcy_at: float | None = None
     boot_ups: int = 0
+    boot_up_at: float | None = None  # time.monotonic() of the last boot-up
+    period_s: float | None = None  # the time between its last two heartbeats (not boot-ups)
 
 
 NMT_STATES = {0x00: "initialising", 0x04: "stopped", 0x05: "operational", 0x7F: "pre-operational"}
@@ -131,10 +133,14 @@ class CanNetwork:
             return
         if cob == 0x700 and len(msg.data) >= 1:
             seen = self.seen.setdefault(node, NodeSeen(node))
-            code = msg.data[0] & 0x7F
+            code, now = msg.data[0] & 0x7F, time.monotonic()
             seen.nmt_state = NMT_STATES.get(code, f"0x{code:02X}")
-            seen.heartbeat_at = time.monotonic()
-            seen.boot_ups += code == 0
+            if code == 0:
+                seen.boot_ups += 1
+                seen.boot_up_at, seen.period_s = now, None  # a new life: its period anew
+            elif seen.heartbeat_at is not None and seen.heartbeat_at != seen.boot_up_at:
+                seen.period_s = now - seen.heartbeat_at
+            seen.heartbeat_at = now
         elif cob == 0x080 and len(msg.data) >= 3:
             seen = self.seen.setdefault(node, NodeSeen(node))
             seen.emcy_code = int.from_bytes(bytes(msg.data[:2]), "little")

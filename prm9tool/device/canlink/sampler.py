@@ -18,6 +18,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from prm9tool.catalogue import CATALOGUE
 from prm9tool.errors import Prm9Error, ValueRangeError
 
 log = logging.getLogger(__name__)
@@ -35,11 +36,17 @@ class SignalObject:
 
 
 # Measuring point -> object (manual tables 7-13, 7-14; units as in catalogue/signals.py).
+def _object(mnemonic: str, signed: bool, factor: float = 1.0) -> SignalObject:
+    """The catalogue's address of ``mnemonic`` (0x6301/1, not the record's count at /0)."""
+    param = CATALOGUE[mnemonic]
+    return SignalObject(param.index, param.subindex, signed, factor)
+
+
 SIGNAL_OBJECTS = {
-    "position_actual": SignalObject(0x6301, 0, True),
-    "process_actual": SignalObject(0x6381, 0, True),
-    "supply_voltage": SignalObject(0x2003, 0, False),
-    "temperature": SignalObject(0x2002, 0, True, 10.0),  # °C -> 0.1 °C
+    "position_actual": _object("POSACT", True),
+    "process_actual": _object("PRCACT", True),
+    "supply_voltage": _object("PWR", False),
+    "temperature": _object("TEMP", True, 10.0),  # °C -> 0.1 °C
 }
 
 Reader = Callable[[int, int], bytes]

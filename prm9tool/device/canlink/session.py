@@ -14,29 +14,43 @@ going to write (a snapshot) and, after a failed upload, writes them back: the va
 on with the values it had, its stored set untouched, and nothing moves. The snapshot costs one
 SDO read per parameter, except for the values this session read or wrote last (the batch's
 backup and the GUI's going online read them all): docs/can-link.md, docs/PERFORMANCE.md.
+
+**Decision (fewer frames, the same guarantees).** An upload does not send a value the snapshot
+shows the valve holding already (the verify step reads every value back all the same, and one
+that reads back otherwise is written and verified after all); and it makes sure of the store
+not by reading every value once more but by watching for the node's boot-up frame — which a
+node sends whenever it restarts (CiA 301) — from before the first write until the store's
+acknowledgement, plus one read-back of a value the upload changed. A valve that restarted
+before the store stored its old set, and said so on the bus.
 """
 
 from __future__ import annotations
 
 import threading
-import time
 from collections.abc import Callable, Mapping, Sequence
 
 import numpy as np
 
 from prm9tool.catalogue import LOAD_SIGNATURE, SAVE_SIGNATURE, Parameter
 from prm9tool.device.canlink import bus as canbus
-from prm9tool.device.canlink import discovery
+from prm9tool.device.canlink import discovery, relocate
 from prm9tool.device.canlink.pdo_scope import NotPdoMappedError, PdoSampler
 from prm9tool.device.canlink.sampler import SdoSampler
 from prm9tool.device.canlink.sdo import MISSING, SdoChannel
 from prm9tool.device.canlink.status import read_status
 from prm9tool.device.canlink.typekeys import remember, resolve
+from prm9tool.device.canlink.upload_steps import UploadSteps
 from prm9tool.device.emulator.states import ValveStatus
 from prm9tool.device.entries import Progress, RefusedError, Steps, Value, check_cancel
-from prm9tool.device.session import DeviceInfo, UploadResult, ValveSession
+from prm9tool.device.session import (
+    DeviceInfo,
+    UploadResult,
+    ValveSession,
+)
+from prm9tool.device.setpoint import SetpointLink
 from prm9tool.errors import (
     AccessDeniedError,
+    DeviceDisconnectedError,
     DeviceTimeoutError,
     Prm9Error,
     ProtocolError,
@@ -55,7 +69,7 @@ class NotAPrm9Error(AccessDeniedError):
     """The node is some other CANopen device: prm9tool does not write to it."""
 
 
-class CanopenSession(ValveSession):
+class CanopenSession(UploadSteps, ValveSession):
     """One PRM9 -CA valve as a node on a CAN bus, the tool its CANopen master."""
 
     def __init__(
@@ -66,14 +80,18 @@ class CanopenSession(ValveSession):
         type_key: str | None = None,
         on_close: Callable[[], None] | None = None,
         timeout_s: float = SDO_TIMEOUT_S,
+        label_key: str | None = None,
     ) -> None:
-        """``type_key``: the key to use when the valve has no 0x2041 (the batch file's, the
-        user's answer); it is checked against what the object dictionary tells."""
+        """``type_key``: the key to use when the valve has no 0x2041 (the batch file's); it is
+        checked against what the object dictionary tells. ``label_key``: the key the user read
+        from the valve's label (``--type-key``): it goes first, is checked the same way and is
+        remembered for the valve's serial number."""
         if not 1 <= node_id <= 127:
             raise Prm9Error(f"CANopen node IDs are 1…127, not {node_id}")
         super().__init__(f"can:{node_id}", on_close)
         self.node_id = node_id
         self._type_key_hint = type_key
+        self._label_key = label_key
         self.key_given = False  # True: the type key was given, the valve has no 0x2041
         self._shared = canbus.acquire(options)
         self._closed = False
@@ -123,8 +141,20 @@ class CanopenSession(ValveSession):
             assert found.derived is not None
             from prm9tool.paths import user_data_dir
 
-            key = resolve(found.serial, found.derived, self._type_key_hint, user_data_dir())
-        return DeviceInfo(key, found.serial, found.firmware, 0, self._device_id, LINK_PARAMETERS)
+            hint = self._label_key or self._type_key_hint
+            key = resolve(found.serial, found.derived, hint, user_data_dir())
+            if self._label_key:
+                remember(user_data_dir(), found.serial, key)
+        bus = self.options
+        return DeviceInfo(
+            key,
+            found.serial,
+            found.firmware,
+            0,
+            self._device_id,
+            LINK_PARAMETERS,
+            (bus.interface, bus.channel, bus.bitrate),
+        )
 
     def upload(
         self,
@@ -183,9 +213,12 @@ class CanopenSession(ValveSession):
         cancel: threading.Event | None,
     ) -> int:
         done = 0
+        holds = self._snapshot or {}  # during an upload: what the valve holds already
         for param in params:
             check_cancel(cancel, "write")
-            if param.mnemonic not in self.unavailable:
+            if holds.get(param.mnemonic, holds) == values[param.mnemonic]:
+                done += 1  # the valve holds it: not sent (the verify step reads it back)
+            elif param.mnemonic not in self.unavailable:
                 data = param.dtype.encode(values[param.mnemonic])
                 try:
                     self._known.pop(param.mnemonic, None)  # unknown if the answer is lost
@@ -201,67 +234,87 @@ class CanopenSession(ValveSession):
                 steps.advance(1)
         return done
 
-    def _before_upload(self, params: Sequence[Parameter], cancel: threading.Event | None) -> None:
-        """The snapshot that :meth:`reload` writes back after a failed upload: the working
-        values this session read or wrote last (a download before the upload, the backup, going
-        online), the others read now."""
-        self._snapshot, self._touched = {}, []
-        unknown = [p for p in params if p.mnemonic not in self._known]
-        read = self._read_entries(unknown, None, cancel)
-        known = {p.mnemonic: self._known[p.mnemonic] for p in params if p.mnemonic in self._known}
-        fresh = {m: v for m, v in read.items() if not isinstance(v, SdoAbortError)}
-        self._snapshot = known | fresh
-
     # --- commands ---------------------------------------------------------------------------
     def store(self) -> None:
         """0x1010/1 = "save": the working parameters become the stored ones."""
         self._sdo.download(0x1010, 1, SAVE_SIGNATURE.to_bytes(4, "little"), STORE_TIMEOUT_S)
         self._snapshot = None  # stored: nothing to put back any more
 
-    def reload(self) -> None:
-        """Working values ← those read before the upload, for the parameters it wrote (see
-        the module's decision); the stored set was never touched."""
-        if self._snapshot is None:
-            raise Prm9Error(
-                "over CANopen the stored parameters come back only with a restart (NMT reset node)"
-            )
-        touched = set(self._touched)
-        snapshot = {m: v for m, v in self._snapshot.items() if m in touched}
-        self._snapshot, self._touched = None, []
-        params = [self._param(m) for m in snapshot]
-        try:
-            self._write_entries(params, snapshot, None, None)
-        except RefusedError as refused:
-            raise refused.error from None
-
     def restore_factory(self) -> None:
         """0x1011/1 = "load": factory values at the next reset or power-up."""
         self._sdo.download(0x1011, 1, LOAD_SIGNATURE.to_bytes(4, "little"), STORE_TIMEOUT_S)
 
     def restart(self) -> None:
-        """NMT reset node, then wait for the boot-up and identify again (hydraulics off)."""
+        """NMT reset node, then find the valve again — at its old node, or where a changed node
+        ID or bit rate puts it (prm9tool.device.canlink.relocate) — and identify it (hydraulics
+        off). ValveMovedError says where it is when the session cannot follow."""
         self._stop_sampler()
+        after = relocate.predict(self)
         self._known.clear()  # the valve comes back with its stored set
-        seen = self._shared.node_seen(self.node_id)
-        boot_ups = seen.boot_ups
+        nodes = [self.node_id, *([after.node_id] if after and after.node_id else [])]
+        boot_ups = {n: self._shared.node_seen(n).boot_ups for n in nodes}  # the old one first
+        old = self.node_id
         self._sdo.node.nmt.send_command(NMT_RESET_NODE)
-        deadline = time.monotonic() + BOOT_TIMEOUT_S
-        while seen.boot_ups == boot_ups:
-            if time.monotonic() > deadline:
-                raise DeviceTimeoutError(
-                    f"node {self.node_id}: no boot-up within {BOOT_TIMEOUT_S:g} s after the "
-                    "reset; is the valve powered and its node ID unchanged?"
-                )
-            time.sleep(0.02)
+        if relocate.bitrate_moves(self.options, after):
+            assert after is not None and after.node_id is not None
+            reason = relocate.why_not_follow(self.options, self._shared.users)
+            if reason:
+                raise relocate.moved_error(self.options, after, reason)
+            bus = canbus.CanOptions(self.options.interface, self.options.channel, after.bitrate)
+            self._rebind(after.node_id, bus)
+            relocate.await_answer(self._sdo, old, after, BOOT_TIMEOUT_S)
+        else:
+            booted = relocate.await_boot_up(self._shared, boot_ups, after, BOOT_TIMEOUT_S)
+            self._rebind(booted, self.options)
         info = self.identify()
         if info.serial != self.info.serial:
             raise ProtocolError(
                 f"node {self.node_id} came back as serial {info.serial}, not {self.info.serial}"
             )
+        if self.node_id != old or info != self.info:
+            self.info = info
+
+    def _rebind(self, node_id: int, options: canbus.CanOptions) -> None:
+        """This session now talks to ``node_id`` on the bus ``options``."""
+        if node_id == self.node_id and options == self.options:
+            return
+        timeout_s = self._sdo.timeout_s
+        network = self._shared.network
+        with self._shared.lock:
+            if network.nodes.get(self.node_id) is self._sdo.node:
+                del network[self.node_id]
+        if options != self.options:
+            shared = canbus.acquire(options)
+            canbus.release(self._shared)
+            self._shared = shared
+        self.node_id, self._device_id = node_id, f"can:{node_id}"
+        self._sdo = self._open_node(timeout_s)
 
     def status(self) -> ValveStatus:
         """State 0x6041, error register 0x1001, errors, LEDs derived from them, NMT state."""
         return read_status(self._sdo, self._shared.node_seen(self.node_id))
+
+    @property
+    def nmt_state(self) -> str:
+        """The node's NMT state as its last heartbeat told ("" before one was heard)."""
+        return self._shared.node_seen(self.node_id).nmt_state
+
+    def setpoint_link(self) -> SetpointLink:
+        """RPDO1 (control word + 0x6300/0x6380, table 7-13): what a real valve has."""
+        from prm9tool.device.canlink.rpdo_setpoint import RpdoSetpoint
+
+        return RpdoSetpoint(self)
+
+    def send_frame(self, cob_id: int, data: bytes) -> None:
+        """Put one frame on the bus (a PDO); DeviceDisconnectedError when the bus refuses."""
+        import can
+
+        try:
+            self._shared.network.send_message(cob_id, data)
+        except (can.CanError, OSError, RuntimeError) as exc:  # RuntimeError: bus closed
+            raise DeviceDisconnectedError(
+                f"node {self.node_id}: the CAN bus refused to send 0x{cob_id:03X} ({exc})"
+            ) from None
 
     def nmt(self, command: int) -> None:
         """Send an NMT command (:class:`~prm9tool.catalogue.commissioning.NmtCommand`) to this

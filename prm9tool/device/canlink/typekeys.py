@@ -54,7 +54,8 @@ class TypeKeyNeededError(TypeKeyError):
         super().__init__(
             f"the valve (serial {serial}) has no type-key object 0x2041; its objects tell "
             f"{derived.describe()}: give the type key on its label "
-            "(command line: the file's key is used; GUI: asked once, then remembered)"
+            "(command line: --type-key KEY, or a batch file's key; GUI: asked once; "
+            "then remembered)"
         )
 
 

@@ -168,6 +168,7 @@ class CanopenSlave:
         if self.state is NmtState.STOPPED:
             return  # manual table 7-4: only NMT while stopped
         if can_id == 0x600 + self.node_id:
+            self._valve.usb_activity()  # the override's watchdog: a request, as a USB report
             response = self._sdo.handle(data, self._now_ms)
             if response is not None:
                 self._send(0x580 + self.node_id, response)

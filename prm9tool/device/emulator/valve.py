@@ -249,7 +249,8 @@ class EmulatedValve:
             )
 
     def usb_activity(self) -> None:
-        """Called by the USB firmware for every report it receives (override watchdog)."""
+        """Called by the USB firmware for every report it receives and by the CANopen slave
+        for every SDO request (the setpoint override's watchdog)."""
         with self.lock:
             self._fw.override_last = self._fw.time
 

@@ -11,6 +11,8 @@ CANopen window is the main window's single one.
 
 from __future__ import annotations
 
+import math
+
 from PySide6.QtCore import QCoreApplication, QEvent, QRectF, Qt, Signal
 from PySide6.QtGui import (
     QContextMenuEvent,
@@ -52,10 +54,13 @@ _TAGS = {
 
 
 def format_signal(key: str, raw: float) -> str:
-    """A measuring point's raw value in display units, e.g. ``12.5 %`` or ``A 1834 mA``."""
+    """A measuring point's raw value in display units, e.g. ``12.5 %`` or ``A 1834 mA``;
+    ``A —`` for no data (NaN: a point a valve over CANopen has no object for)."""
     signal = BY_KEY[key]
-    value = signal.to_display(raw)
     tag = f"{_TAGS[key]} " if key in _TAGS else ""
+    if math.isnan(raw):
+        return f"{tag}—"
+    value = signal.to_display(raw)
     return f"{tag}{format_measured(value, signal.unit)} {signal.unit}"
 
 

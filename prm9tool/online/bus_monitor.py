@@ -1,0 +1,116 @@
+"""The live network view's feed: the nodes of a CAN bus as they tell about themselves, delivered
+to the GUI thread a few times a second while a view shows them.
+
+:class:`BusMonitor` opens the bus (``prm9tool.device.canlink.watch.BusWatch``) in a thread of
+its own — opening an adapter may block — and emits :attr:`BusMonitor.nodes_heard` every
+:data:`PERIOD_S` with one ``NodeHeard`` per node (NMT state, heartbeat age, last EMCY, booted,
+silent), so the ages tick while nothing arrives. Nothing is sent on the bus. QtCore only.
+"""
+
+from __future__ import annotations
+
+import contextlib
+import logging
+import threading
+from collections.abc import Callable, Mapping
+from typing import Any, Protocol
+
+from PySide6.QtCore import QObject, Signal
+
+from prm9tool.errors import Prm9Error
+from prm9tool.translate import error_text
+
+log = logging.getLogger(__name__)
+PERIOD_S = 0.25
+Watcher = Callable[[Mapping[str, object]], Any]  # bus dict -> an object with nodes() and close()
+
+
+def open_watch(bus: Mapping[str, object]) -> Any:
+    """A ``BusWatch`` on the bus ``bus`` (``interface``, ``channel``, ``bitrate``)."""
+    from prm9tool.device.canlink.bus import CanOptions
+    from prm9tool.device.canlink.watch import BusWatch
+
+    rate = bus.get("bitrate")
+    return BusWatch(
+        CanOptions(str(bus["interface"]), str(bus["channel"]), int(str(rate)) if rate else None)
+    )
+
+
+class HeardNode(Protocol):
+    """What a view shows of one node (``prm9tool.device.canlink.watch.NodeHeard``)."""
+
+    node_id: int
+    nmt_state: str
+    heartbeat_age_s: float | None
+    last_emcy: str
+    boot_up_age_s: float | None
+    silent: bool
+
+    @property
+    def device_id(self) -> str:
+        """``can:NODE``."""
+        ...
+
+
+class BusMonitor(QObject):
+    """Feeds a network view while it is open (see the module docstring)."""
+
+    nodes_heard = Signal(list)  # [HeardNode], by node ID
+    failed = Signal(str)  # the bus could not be opened (the reason, in the program language)
+    _deliver = Signal(object)
+
+    def __init__(self, watcher: Watcher = open_watch, parent: QObject | None = None) -> None:
+        super().__init__(parent)
+        self._watcher = watcher
+        self._stop: threading.Event | None = None
+        self._thread: threading.Thread | None = None
+        self._deliver.connect(self._on_delivered)  # queued: emitted from the watch thread
+
+    @property
+    def running(self) -> bool:
+        """True while a bus is watched."""
+        return self._thread is not None
+
+    def start(self, bus: Mapping[str, object]) -> None:
+        """Watch ``bus`` (the one watched before is let go)."""
+        self.stop()
+        stop = threading.Event()
+        self._stop = stop
+        self._thread = threading.Thread(
+            target=self._run, args=(dict(bus), stop), name="can-bus-monitor", daemon=True
+        )
+        self._thread.start()
+
+    def stop(self) -> None:
+        """Stop watching; the bus is let go in the watch thread (no wait on the GUI thread)."""
+        if self._stop is not None:
+            self._stop.set()
+        self._stop, self._thread = None, None
+
+    def _run(self, bus: dict[str, object], stop: threading.Event) -> None:
+        try:
+            watch = self._watcher(bus)
+        except Prm9Error as exc:
+            self._post(exc)
+            return
+        try:
+            while not stop.is_set():
+                self._post(watch.nodes())
+                stop.wait(PERIOD_S)
+        except Exception:  # a bug must not pass silently, nor kill the view
+            log.exception("watching the CAN bus")
+        finally:
+            watch.close()
+
+    def _post(self, payload: object) -> None:
+        with contextlib.suppress(RuntimeError):  # the monitor was deleted meanwhile
+            self._deliver.emit(payload)
+
+    def _on_delivered(self, payload: object) -> None:
+        if self._thread is None:
+            return  # stopped meanwhile: a late delivery
+        if isinstance(payload, Exception):
+            self.failed.emit(error_text(payload))
+            self.stop()
+        else:
+            self.nodes_heard.emit(payload)

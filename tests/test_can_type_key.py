@@ -1,0 +1,100 @@
+"""A CANopen valve that does not tell its type key (no 0x2041, as real valves): ``--type-key``
+on the command line (``--batch --download`` and wherever a CAN valve is opened), the GUI asking
+when going online with ``--device can:N``; the key is checked against what the objects tell and
+remembered per serial number."""
+
+from __future__ import annotations
+
+import pytest
+from can_link_rig import E02, E04, make_link_rig
+from PySide6.QtWidgets import QInputDialog
+
+from prm9tool.cli.main import main
+from prm9tool.device.canlink.typekeys import remembered
+
+
+@pytest.fixture
+def data_dir(tmp_path, monkeypatch):
+    folder = tmp_path / "data"
+    monkeypatch.setenv("PRM9TOOL_DATA_DIR", str(folder))
+    return folder
+
+
+@pytest.fixture
+def real(tmp_path):
+    rig = make_link_rig("real-key", tmp_path, real_valve=True)
+    yield rig
+    rig.close()
+
+
+def _bus(rig) -> list[str]:
+    return [
+        "--can-interface",
+        "virtual",
+        "--can-channel",
+        rig.options.channel,
+        "--device",
+        "can:10",
+    ]
+
+
+def test_a_download_needs_the_key_and_takes_it_from_type_key(real, data_dir, tmp_path, capsys):
+    out = tmp_path / "valve.prm"
+    download = ["--batch", "--download", str(out), *_bus(real)]
+    assert main(download) == 6
+    assert "give the type key on its label (command line: --type-key KEY" in capsys.readouterr().err
+    assert not out.exists()  # nothing half-written
+    assert main([*download, "--type-key", E02]) == 6  # the valve's objects say E04
+    assert "is an E02 valve, the valve's objects say E04" in capsys.readouterr().err
+    assert main([*download, "--type-key", E04]) == 0
+    assert out.read_text(encoding="utf-8").count(E04) >= 1
+    assert remembered(data_dir, real.valve.serial) == E04  # next time without --type-key
+    out.unlink()
+    assert main(download) == 0 and out.exists()
+
+
+@pytest.mark.parametrize(
+    ("argv", "problem"),
+    [
+        (["--type-key", E04], "--type-key belongs to a valve on a CAN bus"),
+        (["--device", "can:10", "--type-key", "PRM9-nonsense"], "--type-key: "),
+        (["--device", "can:10", "--type-key", E04.removesuffix("-CA")], "is a -CA valve"),
+    ],
+)
+def test_type_key_usage_errors(argv, problem, capsys):
+    assert main(argv) == 2
+    assert problem in capsys.readouterr().err
+
+
+def test_the_gui_asks_for_the_key_when_going_online_with_device_can(
+    qtbot, real, data_dir, tmp_path, monkeypatch
+):
+    from gui_support import settings_in
+
+    from prm9tool.device import factory
+    from prm9tool.model.access import AccessModel
+    from prm9tool.model.document import ParameterDocument
+    from prm9tool.model.undo import DocumentUndo
+    from prm9tool.online.connection import ValveConnection
+    from prm9tool.views.main_window import MainWindow
+
+    asked: list[str] = []
+    answers = [(E02, True), (E04, True)]  # a key that does not fit is asked again
+
+    def answer(_parent, _title, label, text=""):
+        asked.append(label)
+        return answers.pop(0)
+
+    monkeypatch.setattr(QInputDialog, "getText", staticmethod(answer))
+    connection = ValveConnection(opener=lambda e: factory.open_session(e, can_link=real.options))
+    doc = ParameterDocument(E04)
+    win = MainWindow(doc, DocumentUndo(doc), AccessModel(), connection, settings_in(tmp_path))
+    qtbot.addWidget(win)
+    try:
+        win.valve.go_online("can:10")  # as --device can:10 does
+        qtbot.waitUntil(lambda: connection.is_online, timeout=10_000)
+        assert connection.device.type_key == E04
+        assert len(asked) == 2 and "its objects say E04 -CA" in asked[0]
+        assert remembered(data_dir, real.valve.serial) == E04
+    finally:
+        connection.shutdown()
