@@ -3739,6 +3739,21 @@ Zajistěte, aby to hydraulika bezpečně snesla. Tlačítko Stop test kdykoli uk
         </message>
     </context>
     <context>
+        <name>ValveFinder</name>
+        <message>
+            <source>Listing the valves failed: {0}</source>
+            <translation>Výpis ventilů selhal: {0}</translation>
+        </message>
+        <message>
+            <source>Looking for valves…</source>
+            <translation>Hledání ventilů…</translation>
+        </message>
+        <message>
+            <source>Connecting to {0}…</source>
+            <translation>Připojování k {0}…</translation>
+        </message>
+    </context>
+    <context>
         <name>ValveSelectionDialog</name>
         <message>
             <source>Valve selection</source>
@@ -4006,10 +4021,6 @@ Zajistěte, aby to hydraulika bezpečně snesla. Tlačítko Stop test kdykoli uk
     <context>
         <name>ValveWorkflow</name>
         <message>
-            <source>Connecting to {0}…</source>
-            <translation>Připojování k {0}…</translation>
-        </message>
-        <message>
             <source>Store changes in the valve</source>
             <translation>Uložit změny ve ventilu</translation>
         </message>
@@ -4080,14 +4091,6 @@ Zajistěte, aby to hydraulika bezpečně snesla. Tlačítko Stop test kdykoli uk
         <message>
             <source>The valve restarted</source>
             <translation>Ventil byl restartován</translation>
-        </message>
-        <message>
-            <source>Listing the valves failed: {0}</source>
-            <translation>Výpis ventilů selhal: {0}</translation>
-        </message>
-        <message>
-            <source>Looking for valves…</source>
-            <translation>Hledání ventilů…</translation>
         </message>
         <message>
             <source>The valve stored its parameters</source>

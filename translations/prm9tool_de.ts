@@ -3730,6 +3730,21 @@ Stellen Sie sicher, dass die Hydraulik dafür sicher ist. Stopp beendet ihn jede
         </message>
     </context>
     <context>
+        <name>ValveFinder</name>
+        <message>
+            <source>Listing the valves failed: {0}</source>
+            <translation>Auflisten der Ventile fehlgeschlagen: {0}</translation>
+        </message>
+        <message>
+            <source>Looking for valves…</source>
+            <translation>Ventile werden gesucht…</translation>
+        </message>
+        <message>
+            <source>Connecting to {0}…</source>
+            <translation>Verbinden mit {0}…</translation>
+        </message>
+    </context>
+    <context>
         <name>ValveSelectionDialog</name>
         <message>
             <source>Valve selection</source>
@@ -3994,10 +4009,6 @@ Stellen Sie sicher, dass die Hydraulik dafür sicher ist. Stopp beendet ihn jede
     <context>
         <name>ValveWorkflow</name>
         <message>
-            <source>Connecting to {0}…</source>
-            <translation>Verbinden mit {0}…</translation>
-        </message>
-        <message>
             <source>Store changes in the valve</source>
             <translation>Änderungen im Ventil speichern</translation>
         </message>
@@ -4068,14 +4079,6 @@ Stellen Sie sicher, dass die Hydraulik dafür sicher ist. Stopp beendet ihn jede
         <message>
             <source>The valve restarted</source>
             <translation>Das Ventil wurde neu gestartet</translation>
-        </message>
-        <message>
-            <source>Listing the valves failed: {0}</source>
-            <translation>Auflisten der Ventile fehlgeschlagen: {0}</translation>
-        </message>
-        <message>
-            <source>Looking for valves…</source>
-            <translation>Ventile werden gesucht…</translation>
         </message>
         <message>
             <source>The valve stored its parameters</source>

@@ -11,7 +11,7 @@ from collections.abc import Callable, Mapping
 from dataclasses import dataclass
 from typing import Any
 
-from PySide6.QtCore import QObject, QSettings, QTimer, Signal
+from PySide6.QtCore import QObject, QSettings, Signal
 from PySide6.QtWidgets import QDialog, QProgressDialog, QWidget
 
 from prm9tool.catalogue.typekey import TypeKey
@@ -24,14 +24,9 @@ from prm9tool.online.connection_protocol import ListedValves, ValveListing
 from prm9tool.online.sync import ValveSync
 from prm9tool.translate import error_text
 from prm9tool.views import prompts
-from prm9tool.views.hid_dialog import (
-    SELECTED_KEY,
-    UNUSABLE,
-    HidConfigurationDialog,
-    saved_emulators,
-)
 from prm9tool.views.online_dialogs import DiffChoice, OnlineDiffDialog, RestartDialog
 from prm9tool.views.operation_progress import OperationProgress
+from prm9tool.views.valve_finder import ValveFinder
 from prm9tool.views.valve_upload import ValveUpload
 
 COMPARE = "compare"  # download made on going online, to compare with the document
@@ -65,6 +60,7 @@ class ValveWorkflow(QObject):
         self.uploads = ValveUpload(
             window, doc, connection, sync, self.progress, self.message_posted.emit, access
         )
+        self.finder = ValveFinder(window, connection, settings, self.message_posted.emit)
         self._restarted_from = ""  # device ID before the restart (a restart may move it)
         # "choose per parameter" in the going-online dialog (the compare workflow sets it)
         self.choose_per_parameter: Callable[[Mapping[str, Raw]], None] | None = None
@@ -73,7 +69,6 @@ class ValveWorkflow(QObject):
         connection.progress.connect(self._on_connection_progress)
         connection.failed.connect(self._on_connection_failed)
         connection.lost.connect(self._on_connection_lost)
-        connection.type_key_needed.connect(self._on_type_key_needed)
         connection.live_values_changed.connect(doc.set_live)
         connection.write_failed.connect(sync.forget)
         connection.backup_written.connect(self._on_connection_backup_written)
@@ -86,93 +81,19 @@ class ValveWorkflow(QObject):
     # --- communication -----------------------------------------------------------------------
     def configure_hid(self) -> ValveListing | None:
         """Show the HID configuration; returns the chosen device entry (or None)."""
-        dialog = HidConfigurationDialog(
-            self._connection.list_devices_async, self._settings, self._window
-        )
-        if dialog.exec() != QDialog.DialogCode.Accepted:
-            return None
-        return dialog.selected_entry()
+        return self.finder.configure_hid()
 
     def configure_can_bus(self) -> None:
         """Communication → CAN bus: choose the bus and a valve on it, then go online with it."""
-        from prm9tool.online.bus_monitor import BusMonitor
-        from prm9tool.views.can_bus_dialog import CanBusDialog
-
-        def scan(bus: dict[str, object], deliver: Callable[[ListedValves], None]) -> None:
-            self._connection.list_devices_async((), deliver, bus)
-
-        monitor = BusMonitor()
-        dialog = CanBusDialog(scan, self._settings, self._window, monitor)
-        accepted = dialog.exec() == QDialog.DialogCode.Accepted
-        monitor.stop()
-        monitor.deleteLater()
-        if not accepted:
-            return
-        device_id = dialog.selected_device_id()
-        if device_id is not None and not self._connection.is_online:
-            self._connect(device_id)
+        self.finder.configure_can_bus()
 
     def chosen_entry(self, entries: ListedValves) -> ValveListing | None:
-        """The valve to go online with among the listed ``entries`` (or the exception listing
-        raised): the one chosen before, the only one, or ask."""
-        if isinstance(entries, Exception):  # a broken USB stack must not prevent the dialog
-            self.message_posted.emit(
-                self.tr("Listing the valves failed: {0}").format(error_text(entries))
-            )
-            entries = []
-        found = [e for e in entries if e.kind != UNUSABLE]  # the dialog says why not
-        selected = str(self._settings.value(SELECTED_KEY, ""))
-        for entry in found:
-            if entry.device_id == selected:
-                return entry
-        if len(found) == 1:
-            return found[0]
-        return self.configure_hid()
+        """The valve to go online with among the listed ``entries`` (``ValveFinder``)."""
+        return self.finder.chosen_entry(entries)
 
     def go_online(self, entry: ValveListing | str | None = None) -> None:
-        """Connect to ``entry`` (a listed valve or a device id); without one, list the valves (off the GUI thread) and take
-        :meth:`chosen_entry`."""
-        if self._connection.is_online:
-            return
-        if entry is not None:
-            self._connect(entry)
-            return
-        self.message_posted.emit(self.tr("Looking for valves…"))
-        self._connection.list_devices_async(saved_emulators(self._settings), self._on_listed)
-
-    def _on_listed(self, entries: ListedValves) -> None:
-        if self._connection.is_online or self._connection.is_busy:
-            return  # connected meanwhile (the HID dialog, the command line)
-        entry = self.chosen_entry(entries)
-        if entry is not None:
-            self._connect(entry)
-
-    def _on_type_key_needed(self, device_id: str, serial: int, told: str) -> None:
-        """Going online with a CANopen valve that does not tell its type key (``--device
-        can:N``): ask for the key on its label (until it fits or the user cancels), remember
-        it for the serial number and go online again."""
-        from prm9tool.views.can_bus_dialog import ask_type_key
-
-        while True:
-            key, problem = ask_type_key(self._window, serial, told)
-            if not problem:
-                break
-            self.message_posted.emit(problem)
-        if key is not None:
-            self._connect_when_idle(device_id)
-
-    def _connect_when_idle(self, device_id: str) -> None:
-        """Go online once the failed attempt has finished (its end is still queued)."""
-        if self._connection.is_online:
-            return
-        if self._connection.is_busy:
-            QTimer.singleShot(50, lambda: self._connect_when_idle(device_id))
-            return
-        self._connect(device_id)
-
-    def _connect(self, entry: ValveListing | str) -> None:
-        self.message_posted.emit(self.tr("Connecting to {0}…").format(_name(entry)))
-        self._connection.go_online(entry)
+        """Connect to ``entry`` (a listed valve or a device id), else find the valve first."""
+        self.finder.go_online(entry)
 
     def go_offline(self) -> bool:
         """Disconnect (offering to store values changed online); False if the user cancelled."""
@@ -443,9 +364,3 @@ def _restart_and_read(session: Any) -> dict[str, Raw]:
     """Worker job: restart, then read the (stored) parameters the valve runs with now."""
     session.restart()
     return dict(session.download())
-
-
-def _name(entry: ValveListing | str) -> str:
-    if isinstance(entry, str):
-        return entry.removeprefix("emulator:")
-    return f"{entry.type_key} #{entry.serial}"
