@@ -148,7 +148,7 @@ def valve_value(qtbot: Any, window: Any, mnemonic: str) -> Any:
 
 def session_of(window: Any) -> Any:
     """The open valve session (tests only: it belongs to the worker thread)."""
-    return window.connection._session
+    return window.connection._worker.session
 
 
 def emulated(serial: int) -> Any:

@@ -237,7 +237,7 @@ def test_cancelling_the_progress_dialog_cancels_the_operation(qtbot, window, ans
 
     def slow_upload(session):
         release.wait(5)  # the user presses Cancel meanwhile
-        return session.upload(values, None, window.connection._cancel)
+        return session.upload(values, None, window.connection._worker.cancel)
 
     window.valve.progress.start("upload", "Uploading")
     window.connection.run_job("upload", slow_upload)
