@@ -10,7 +10,8 @@ from prm9tool.catalogue.typekey import TypeKey
 from prm9tool.cli.batch_history import BatchHistory
 from prm9tool.cli.batch_report import ProgressPrinter, Stopwatch, ValveRecord
 from prm9tool.device.factory import CanOptions, DeviceEntry
-from prm9tool.device.session import ValveSession, reload_outcome
+from prm9tool.device.session import ValveSession
+from prm9tool.device.upload_outcome import reload_outcome
 from prm9tool.errors import CommunicationError, FileFormatError, Prm9Error, TypeKeyError
 from prm9tool.files.backup import ensure_backup, existing_backups
 from prm9tool.files.prmfile import PrmContents, check_file
