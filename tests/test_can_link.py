@@ -13,6 +13,7 @@ import canopen
 import pytest
 from can_link_rig import E02, E04, LinkRig, make_link_rig
 from canopen.sdo.exceptions import SdoError
+from waiting import wait_for
 
 from prm9tool.catalogue import CATALOGUE
 from prm9tool.device.canlink import bus as bus_module
@@ -260,13 +261,6 @@ def test_commissioning_over_can_as_the_gui_does_it(tmp_path, data_dir):
     finally:
         rig.valve.stop()
         rig.close()
-
-
-def wait_for(condition, timeout_s: float = 2.0) -> None:
-    deadline = time.monotonic() + timeout_s
-    while not condition():
-        assert time.monotonic() < deadline, "condition not met in time"
-        time.sleep(0.01)
 
 
 def test_the_scope_takes_tpdo1_at_its_own_sync_when_the_node_is_operational(tmp_path, data_dir):
