@@ -27,6 +27,14 @@ def _isolated_user_dirs(tmp_path_factory: pytest.TempPathFactory, monkeypatch: p
 
 
 @pytest.fixture
+def data_dir(tmp_path, monkeypatch: pytest.MonkeyPatch):
+    """The user data folder of this test (remembered type keys, backups, EEPROM images)."""
+    folder = tmp_path / "data"
+    monkeypatch.setenv("PRM9TOOL_DATA_DIR", str(folder))
+    return folder
+
+
+@pytest.fixture
 def spools():
     """The spool catalogue, as shipped again after the test (which may load a spools.json)."""
     from prm9tool.catalogue.typekey import SPOOLS

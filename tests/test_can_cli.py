@@ -17,13 +17,6 @@ from prm9tool.files.prmfile import PrmContents, write_file
 
 
 @pytest.fixture
-def data_dir(tmp_path, monkeypatch):
-    folder = tmp_path / "data"
-    monkeypatch.setenv("PRM9TOOL_DATA_DIR", str(folder))
-    return folder
-
-
-@pytest.fixture
 def rig(tmp_path, request):
     rig = make_link_rig(request.node.name, tmp_path)
     yield rig

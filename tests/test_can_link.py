@@ -33,13 +33,6 @@ def rig(tmp_path, request):
     rig.close()
 
 
-@pytest.fixture
-def data_dir(tmp_path, monkeypatch):
-    folder = tmp_path / "data"
-    monkeypatch.setenv("PRM9TOOL_DATA_DIR", str(folder))
-    return folder
-
-
 def open_can(rig: LinkRig, **kwargs: object) -> CanopenSession:
     return CanopenSession(rig.options, NODE, **kwargs)  # type: ignore[arg-type]
 

@@ -22,11 +22,6 @@ NODE = 10
 SQUARE = GeneratorSettings(Waveform.SQUARE, 40.0, 10.0, 0.2)  # 10 % … 50 %
 
 
-@pytest.fixture
-def data_dir(tmp_path, monkeypatch):
-    monkeypatch.setenv("PRM9TOOL_DATA_DIR", str(tmp_path / "data"))
-
-
 @pytest.fixture(params=[False, True], ids=["emulated", "real-valve"])
 def online(request, tmp_path, data_dir):
     """(rig, session): the valve running in real time, heartbeat every 20 ms, control mode 2
