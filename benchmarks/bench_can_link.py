@@ -24,11 +24,11 @@ import argparse
 import statistics
 import tempfile
 import time
-from collections.abc import Callable
 from pathlib import Path
 
 import can
 import canopen
+from bench_canopen import timed
 
 from prm9tool.device.canlink.bus import CanOptions
 from prm9tool.device.canlink.session import CanopenSession
@@ -219,17 +219,6 @@ def several_valves_figures(channel: str, folder: Path, count: int = 3) -> None:
     )
 
 
-def _timed(n: int, once: Callable[[], object]) -> list[float]:
-    for _ in range(min(50, n)):
-        once()
-    samples = []
-    for _ in range(n):
-        start = time.perf_counter()
-        once()
-        samples.append(time.perf_counter() - start)
-    return samples
-
-
 def round_trip_figures(channel: str, folder: Path, reads: int) -> None:
     """SDO read: the session against canopen's LocalNode, same run."""
     valve = EmulatedValve(E04, 4713, nv_path=folder / "4713.json")
@@ -238,7 +227,7 @@ def round_trip_figures(channel: str, folder: Path, reads: int) -> None:
     valve.advance(2.5)
     try:
         with CanopenSession(CanOptions("virtual", channel), NODE) as session:
-            ours = _timed(reads, lambda: session.read("SNV"))
+            ours = timed(reads, lambda: session.read("SNV"))
     finally:
         slave.stop()
         valve_bus.shutdown()
@@ -254,7 +243,7 @@ def round_trip_figures(channel: str, folder: Path, reads: int) -> None:
     client.connect(interface="virtual", channel=ref_channel)
     remote = client.add_node(NODE, canopen.ObjectDictionary())
     try:
-        reference = _timed(reads, lambda: remote.sdo.upload(0x1018, 0))
+        reference = timed(reads, lambda: remote.sdo.upload(0x1018, 0))
     finally:
         client.disconnect()
         server.disconnect()

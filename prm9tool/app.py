@@ -217,18 +217,10 @@ def _can_link(args: argparse.Namespace) -> object:
         return factory.CanOptions.from_args(args)
     from PySide6.QtCore import QSettings
 
+    from prm9tool.online.valve_listing import can_options
     from prm9tool.views.can_bus_dialog import saved_bus
 
-    return _bus_options(saved_bus(QSettings()))
-
-
-def _bus_options(bus: dict[str, object]) -> object:
-    from prm9tool.device import factory
-
-    rate = bus.get("bitrate")
-    return factory.CanOptions(
-        str(bus["interface"]), str(bus["channel"]), int(str(rate)) if rate else None
-    )
+    return can_options(saved_bus(QSettings()))
 
 
 def _joiner(args: argparse.Namespace) -> Callable[[object], object] | None:
@@ -250,11 +242,13 @@ def _joiner(args: argparse.Namespace) -> Callable[[object], object] | None:
 
 
 def _lister(emulators: object, can: dict[str, object] | None = None) -> list[object]:
+    """The connection's listing, with the remembered emulated valves that cannot be made
+    listed as such (the valve selection says why and offers to remove them)."""
     from prm9tool.device import factory
+    from prm9tool.online.valve_listing import default_lister
 
-    options = _bus_options(can) if can is not None else None
     usable, unusable = factory.usable_emulators(emulators)  # type: ignore[arg-type]
-    return [*factory.list_devices(usable, options), *unusable]  # type: ignore[arg-type]
+    return [*default_lister(usable, can), *unusable]
 
 
 def show_internal_error(

@@ -13,6 +13,7 @@ import time
 from dataclasses import dataclass, field
 
 import can
+import canopen
 
 from prm9tool.device.emulator import EmulatedValve
 from prm9tool.device.emulator.canopen_slave import CanopenSlave
@@ -22,6 +23,26 @@ E04 = "PRM9-06.3Z11/30-24E04S02-CA"
 BOOT_S = 2.0  # the valve's power-up timeline (~1.8 s) plus margin
 TIMEOUT_S = 5.0  # generous: the machine is shared; a healthy answer takes microseconds
 _counter = itertools.count()
+
+
+def foreign_node(channel: str, node_id: int = 5, vendor: int | None = None) -> canopen.Network:
+    """A CANopen node that is not a PRM9 on the virtual bus ``channel``: device type 0x191,
+    error register, the vendor ID ``vendor`` if given. Disconnect the network when done."""
+    network = canopen.Network()
+    network.connect(interface="virtual", channel=channel)
+    od = canopen.ObjectDictionary()
+    for name, index, value in (("device type", 0x1000, 0x191), ("error register", 0x1001, 0)):
+        var = canopen.objectdictionary.ODVariable(name, index, 0)
+        var.data_type, var.default = canopen.objectdictionary.UNSIGNED32, value
+        od.add_object(var)
+    if vendor is not None:
+        identity = canopen.objectdictionary.ODRecord("identity", 0x1018)
+        member = canopen.objectdictionary.ODVariable("vendor", 0x1018, 1)
+        member.data_type, member.default = canopen.objectdictionary.UNSIGNED32, vendor
+        identity.add_member(member)
+        od.add_object(identity)
+    network.add_node(canopen.LocalNode(node_id, od))
+    return network
 
 
 def unique_channel(name: str) -> str:

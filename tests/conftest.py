@@ -27,6 +27,14 @@ def _isolated_user_dirs(tmp_path_factory: pytest.TempPathFactory, monkeypatch: p
 
 
 @pytest.fixture
+def data_dir(tmp_path, monkeypatch: pytest.MonkeyPatch):
+    """The user data folder of this test (remembered type keys, backups, EEPROM images)."""
+    folder = tmp_path / "data"
+    monkeypatch.setenv("PRM9TOOL_DATA_DIR", str(folder))
+    return folder
+
+
+@pytest.fixture
 def spools():
     """The spool catalogue, as shipped again after the test (which may load a spools.json)."""
     from prm9tool.catalogue.typekey import SPOOLS
@@ -35,3 +43,23 @@ def spools():
     yield SPOOLS
     SPOOLS.clear()
     SPOOLS.update(shipped)
+
+
+@pytest.fixture
+def answers(monkeypatch: pytest.MonkeyPatch):
+    """Every message box recorded and answered without blocking (``gui_support.Prompts``)."""
+    from gui_support import record_prompts
+
+    return record_prompts(monkeypatch)
+
+
+@pytest.fixture
+def window(qtbot, tmp_path, answers):
+    """The main window offline on an E02 document, isolated settings, prompts recorded.
+
+    A test module that needs another valve or the window online defines its own ``window``.
+    """
+    from gui_support import main_window
+
+    with main_window(qtbot, tmp_path) as win:
+        yield win

@@ -135,9 +135,20 @@ def go_online(qtbot: Any, window: Any, spec: str = f"{E02}:4001") -> Any:
     return entry
 
 
+def valve_value(qtbot: Any, window: Any, mnemonic: str) -> Any:
+    """What the connected valve holds for ``mnemonic``, read through the window's connection."""
+    result: dict[str, Any] = {}
+    window.connection.operation_finished.connect(
+        lambda name, values: result.update(values) if name == "probe" else None
+    )
+    window.connection.read_many([mnemonic], "probe")
+    qtbot.waitUntil(lambda: mnemonic in result, timeout=10_000)
+    return result[mnemonic]
+
+
 def session_of(window: Any) -> Any:
     """The open valve session (tests only: it belongs to the worker thread)."""
-    return window.connection._session
+    return window.connection._worker.session
 
 
 def emulated(serial: int) -> Any:

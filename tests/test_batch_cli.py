@@ -385,7 +385,7 @@ def test_unplugged_at_the_store_step_the_report_keeps_what_was_written_and_verif
         links.append(transport)
         return UsbSession(transport, entry.device_id)
 
-    monkeypatch.setattr(batch, "_open", open_on_a_faulty_link)
+    monkeypatch.setattr(batch, "open_valve", open_on_a_faulty_link)
     try:
         assert main(["--batch", str(source), "--emulator", f"{E04}:91"]) == ExitCode.OK
         die_after.append(links[0].reports_on_link - 2)  # lost: the last read-back after the store
@@ -501,7 +501,7 @@ def test_a_refused_store_is_reported_truthfully_and_the_valve_reloaded(tmp_path,
     def refuse():
         raise SdoAbortError(0x1010, 1, AbortCode.CANNOT_STORE)
 
-    monkeypatch.setattr(batch, "_open", open_a_valve_that_refuses_to_store)
+    monkeypatch.setattr(batch, "open_valve", open_a_valve_that_refuses_to_store)
     try:
         args = ["--batch", str(source), "--emulator", f"{E04}:93"]
         assert main([*args, "--report", str(tmp_path / "r.json")]) == ExitCode.VERIFY_FAILED
@@ -525,7 +525,7 @@ def test_a_long_firmware_text_is_cut_and_the_upload_goes_on(tmp_path, monkeypatc
         valve = EmulatedValve(entry.type_key, entry.serial, long_text)
         return UsbSession(EmulatorTransport(valve), entry.device_id)
 
-    monkeypatch.setattr(batch, "_open", open_a_valve_with_a_long_firmware_text)
+    monkeypatch.setattr(batch, "open_valve", open_a_valve_with_a_long_firmware_text)
     args = ["--batch", str(source), "--emulator", f"{E04}:94"]
     assert main([*args, "--report", str(tmp_path / "r.json")]) == ExitCode.OK
     assert report(tmp_path, "r.json")["valves"][0]["firmware"] == long_text[:25]
@@ -538,7 +538,7 @@ def test_whatever_goes_wrong_the_run_ends_with_its_report_and_exit_6(tmp_path, m
     def open_a_valve_that_breaks_the_program(entry):
         raise ValueError("report of 75 bytes exceeds 64")
 
-    monkeypatch.setattr(batch, "_open", open_a_valve_that_breaks_the_program)
+    monkeypatch.setattr(batch, "open_valve", open_a_valve_that_breaks_the_program)
     command = ["--batch", str(source)] if mode == "upload" else ["--batch", "--download", "o.prm"]
     args = [*command, "--emulator", f"{E04}:95", "--report", str(tmp_path / "r.json")]
     assert main(args) == ExitCode.COMMUNICATION

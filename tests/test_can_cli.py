@@ -6,21 +6,14 @@ from __future__ import annotations
 
 import json
 
-import canopen
 import pytest
 from can_link_rig import E04, make_link_rig, unique_channel
+from canopen_rig import foreign_node
 
 from prm9tool.catalogue import CATALOGUE
 from prm9tool.catalogue.typekey import TypeKey
 from prm9tool.cli.main import main
 from prm9tool.files.prmfile import PrmContents, write_file
-
-
-@pytest.fixture
-def data_dir(tmp_path, monkeypatch):
-    folder = tmp_path / "data"
-    monkeypatch.setenv("PRM9TOOL_DATA_DIR", str(folder))
-    return folder
 
 
 @pytest.fixture
@@ -69,18 +62,7 @@ def test_batch_all_and_download(rig, data_dir, tmp_path, capsys):
 
 def test_a_node_that_is_not_a_prm9_is_listed_and_refused(data_dir, tmp_path, capsys):
     channel = unique_channel("cli-other")
-    network = canopen.Network()
-    network.connect(interface="virtual", channel=channel)
-    od = canopen.ObjectDictionary()
-    var = canopen.objectdictionary.ODVariable("device type", 0x1000, 0)
-    var.data_type, var.default = canopen.objectdictionary.UNSIGNED32, 0x191
-    od.add_object(var)
-    identity = canopen.objectdictionary.ODRecord("identity", 0x1018)
-    vendor = canopen.objectdictionary.ODVariable("vendor", 0x1018, 1)
-    vendor.data_type, vendor.default = canopen.objectdictionary.UNSIGNED32, 0x42
-    identity.add_member(vendor)
-    od.add_object(identity)
-    network.add_node(canopen.LocalNode(5, od))
+    network = foreign_node(channel, vendor=0x42)
     args = ["--can-interface", "virtual", "--can-channel", channel]
     try:
         assert main(["--list-devices", *args]) == 4  # no PRM9 on the bus

@@ -13,6 +13,7 @@ import canopen
 import pytest
 from can_link_rig import E02, E04, LinkRig, make_link_rig
 from canopen.sdo.exceptions import SdoError
+from waiting import wait_for
 
 from prm9tool.catalogue import CATALOGUE
 from prm9tool.device.canlink import bus as bus_module
@@ -30,13 +31,6 @@ def rig(tmp_path, request):
     rig = make_link_rig(request.node.name, tmp_path)
     yield rig
     rig.close()
-
-
-@pytest.fixture
-def data_dir(tmp_path, monkeypatch):
-    folder = tmp_path / "data"
-    monkeypatch.setenv("PRM9TOOL_DATA_DIR", str(folder))
-    return folder
 
 
 def open_can(rig: LinkRig, **kwargs: object) -> CanopenSession:
@@ -163,22 +157,10 @@ def test_two_masters_on_one_bus_never_leave_a_mixed_stored_set(rig, data_dir):
 
 def test_a_node_that_is_not_a_prm9_is_refused(tmp_path, data_dir):
     from can_link_rig import unique_channel
+    from canopen_rig import foreign_node
 
     channel = unique_channel("other")
-    network = canopen.Network()
-    network.connect(interface="virtual", channel=channel)
-    od = canopen.ObjectDictionary()
-    for index, value in ((0x1000, 0x191), (0x1001, 0)):
-        var = canopen.objectdictionary.ODVariable("v", index, 0)
-        var.data_type = canopen.objectdictionary.UNSIGNED32
-        var.default = value
-        od.add_object(var)
-    identity = canopen.objectdictionary.ODRecord("identity", 0x1018)
-    vendor = canopen.objectdictionary.ODVariable("vendor", 0x1018, 1)
-    vendor.data_type, vendor.default = canopen.objectdictionary.UNSIGNED32, 0x123
-    identity.add_member(vendor)
-    od.add_object(identity)
-    network.add_node(canopen.LocalNode(NODE, od))
+    network = foreign_node(channel, NODE, vendor=0x123)
     try:
         with pytest.raises(NotAPrm9Error, match=r"not a PRM9 .device type 0x191, vendor 0x123."):
             CanopenSession(CanOptions("virtual", channel), NODE)
@@ -273,13 +255,6 @@ def test_commissioning_over_can_as_the_gui_does_it(tmp_path, data_dir):
     finally:
         rig.valve.stop()
         rig.close()
-
-
-def wait_for(condition, timeout_s: float = 2.0) -> None:
-    deadline = time.monotonic() + timeout_s
-    while not condition():
-        assert time.monotonic() < deadline, "condition not met in time"
-        time.sleep(0.01)
 
 
 def test_the_scope_takes_tpdo1_at_its_own_sync_when_the_node_is_operational(tmp_path, data_dir):

@@ -21,11 +21,6 @@ from prm9tool.device.canlink.watch import BusWatch
 CODE_250K = 3  # BITRATE code (0 = 1 Mbit/s … 6 = 20 kbit/s)
 
 
-@pytest.fixture
-def data_dir(tmp_path, monkeypatch):
-    monkeypatch.setenv("PRM9TOOL_DATA_DIR", str(tmp_path / "data"))
-
-
 def _rig(name, tmp_path, node_switch: int):
     rig = make_link_rig(name, tmp_path, switches=(6, node_switch))
     rig.valve.start()  # real time: the reset's boot takes its ~2 s

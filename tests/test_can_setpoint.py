@@ -9,6 +9,7 @@ import time
 
 import pytest
 from can_link_rig import E04, make_link_rig
+from waiting import HandClock, wait_for
 
 from prm9tool.catalogue.commissioning import CONTROL_WORD, ENABLE_SEQUENCE, NmtCommand
 from prm9tool.device.canlink.rpdo_setpoint import DEADLINE_MS, RpdoSetpoint, RpdoSetpointError
@@ -19,24 +20,6 @@ from prm9tool.scope import GeneratorSettings, Waveform
 
 NODE = 10
 SQUARE = GeneratorSettings(Waveform.SQUARE, 40.0, 10.0, 0.2)  # 10 % … 50 %
-
-
-class _Clock:
-    """A stream clock the test moves by hand."""
-
-    def __init__(self) -> None:
-        self.now = 0.0
-
-    def mark(self):
-        return (0, 0, 0.0)
-
-    def seconds_since(self, _mark) -> float:
-        return self.now
-
-
-@pytest.fixture
-def data_dir(tmp_path, monkeypatch):
-    monkeypatch.setenv("PRM9TOOL_DATA_DIR", str(tmp_path / "data"))
 
 
 @pytest.fixture(params=[False, True], ids=["emulated", "real-valve"])
@@ -56,13 +39,6 @@ def online(request, tmp_path, data_dir):
         session.close()
         rig.valve.stop()
         rig.close()
-
-
-def wait_for(condition, timeout_s: float = 2.0) -> None:
-    deadline = time.monotonic() + timeout_s
-    while not condition():
-        assert time.monotonic() < deadline, "condition not met in time"
-        time.sleep(0.005)
 
 
 def enable(session: CanopenSession) -> None:
@@ -87,7 +63,7 @@ def test_the_generator_drives_the_setpoint_over_rpdo1_and_gives_it_back(online):
             session.read("SETPOVRON")  # what a real valve lacks: the override
     enable(session)
     before = rig.working("POSSETP")
-    clock = _Clock()
+    clock = HandClock()
     driver = SetpointDriver(session, SQUARE, _never, clock)
     driver.start()
     assert not driver.exact  # the waveform is sent over the bus, not run inside the valve
@@ -127,7 +103,7 @@ def test_a_lost_link_lets_the_valves_rpdo_deadline_end_the_motion(tmp_path, data
         session.write("CTRLMODE", 2)
         wait_for(lambda: session.nmt_state == "pre-operational")
         enable(session)
-        driver = SetpointDriver(session, SQUARE, _never, _Clock())
+        driver = SetpointDriver(session, SQUARE, _never, HandClock())
         driver.start()
         wait_for(lambda: rig.working("POSSETP") == 1638)
         driver.stop(switch_off=False)  # the link is gone: nothing more is sent
@@ -143,6 +119,10 @@ def test_the_session_offers_rpdo1_and_a_synchronous_rpdo_is_refused(online):
     _rig, session = online
     link = session.setpoint_link()
     assert isinstance(link, RpdoSetpoint)
+    from prm9tool.device.setpoint import OverrideSetpoint
+    from prm9tool.online.setpoint_driver import GENERATOR_OBJECTS
+
+    assert {*link.objects, *OverrideSetpoint(session).objects} == GENERATOR_OBJECTS
     enable(session)
     session.nmt(NmtCommand.PRE_OPERATIONAL)  # PDO parameters are written outside OPERATIONAL
     wait_for(lambda: session.nmt_state == "pre-operational")

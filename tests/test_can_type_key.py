@@ -14,13 +14,6 @@ from prm9tool.device.canlink.typekeys import remembered
 
 
 @pytest.fixture
-def data_dir(tmp_path, monkeypatch):
-    folder = tmp_path / "data"
-    monkeypatch.setenv("PRM9TOOL_DATA_DIR", str(folder))
-    return folder
-
-
-@pytest.fixture
 def real(tmp_path):
     rig = make_link_rig("real-key", tmp_path, real_valve=True)
     yield rig

@@ -17,11 +17,6 @@ NODE = 10
 
 
 @pytest.fixture
-def data_dir(tmp_path, monkeypatch):
-    monkeypatch.setenv("PRM9TOOL_DATA_DIR", str(tmp_path / "data"))
-
-
-@pytest.fixture
 def rig(tmp_path, request, data_dir):
     rig = make_link_rig(request.node.name, tmp_path)
     yield rig

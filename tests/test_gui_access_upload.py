@@ -3,8 +3,7 @@ asks first (issue 15, item 19)."""
 
 from __future__ import annotations
 
-import pytest
-from gui_support import E02, go_online, main_window, record_prompts
+from gui_support import E02, go_online, valve_value
 from PySide6.QtWidgets import QDialog
 
 from prm9tool.catalogue import Access
@@ -14,33 +13,12 @@ from prm9tool.views.online_dialogs import DiffChoice, OnlineDiffDialog
 TIMEOUT = 10_000
 
 
-@pytest.fixture
-def answers(monkeypatch):
-    return record_prompts(monkeypatch)
-
-
-@pytest.fixture
-def window(qtbot, tmp_path, answers):
-    with main_window(qtbot, tmp_path) as win:
-        yield win
-
-
 def _send_the_document(monkeypatch):
     def run(dialog):
         dialog.choice = DiffChoice.SEND_DOCUMENT
         return QDialog.DialogCode.Accepted
 
     monkeypatch.setattr(OnlineDiffDialog, "exec", run)
-
-
-def _valve_value(qtbot, window, mnemonic):
-    result = {}
-    window.connection.operation_finished.connect(
-        lambda name, values: result.update(values) if name == "probe" else None
-    )
-    window.connection.read_many([mnemonic], "probe")
-    qtbot.waitUntil(lambda: mnemonic in result, timeout=TIMEOUT)
-    return result[mnemonic]
 
 
 def _document_with_expert_changes(window):
@@ -73,8 +51,8 @@ def test_a_basic_user_who_confirms_sends_the_expert_values(qtbot, window, answer
     go_online(qtbot, window, f"{E02}:4302")
     qtbot.waitUntil(lambda: window.sync.active, timeout=TIMEOUT)
     assert "Expert values at Basic level" in answers.asked[0]
-    assert _valve_value(qtbot, window, "POSKP") == 90
-    assert _valve_value(qtbot, window, "DTAMP") == 1000
+    assert valve_value(qtbot, window, "POSKP") == 90
+    assert valve_value(qtbot, window, "DTAMP") == 1000
 
 
 def test_an_expert_user_is_not_asked(qtbot, window, answers, monkeypatch):
@@ -84,7 +62,7 @@ def test_an_expert_user_is_not_asked(qtbot, window, answers, monkeypatch):
     go_online(qtbot, window, f"{E02}:4303")
     qtbot.waitUntil(lambda: window.sync.active, timeout=TIMEOUT)
     assert not any("Expert values" in text for text in answers.asked)
-    assert _valve_value(qtbot, window, "POSKP") == 90
+    assert valve_value(qtbot, window, "POSKP") == 90
 
 
 def test_the_upload_command_at_basic_level_asks_too(qtbot, window, answers):

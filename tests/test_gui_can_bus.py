@@ -3,9 +3,9 @@ the valve and other nodes, remembers the bus, and going online with the chosen n
 
 from __future__ import annotations
 
-import canopen
 import pytest
 from can_link_rig import E04, make_link_rig, unique_channel
+from canopen_rig import foreign_node
 from PySide6.QtCore import QSettings
 from PySide6.QtWidgets import QDialogButtonBox, QInputDialog
 
@@ -30,21 +30,9 @@ def rig(tmp_path, request, monkeypatch):
     rig.close()
 
 
-def other_node(channel: str) -> canopen.Network:
-    """A CANopen node that is not a PRM9 (node 5, device type 0x191)."""
-    network = canopen.Network()
-    network.connect(interface="virtual", channel=channel)
-    od = canopen.ObjectDictionary()
-    var = canopen.objectdictionary.ODVariable("device type", 0x1000, 0)
-    var.data_type, var.default = canopen.objectdictionary.UNSIGNED32, 0x191
-    od.add_object(var)
-    network.add_node(canopen.LocalNode(5, od))
-    return network
-
-
 def test_the_dialog_lists_the_nodes_and_goes_online_with_the_valve(qtbot, rig, settings):
     connection = ValveConnection(opener=lambda e: factory.open_session(e, can_link=rig.options))
-    other = other_node(rig.options.channel)
+    other = foreign_node(rig.options.channel)
     dialog = CanBusDialog(
         lambda bus, deliver: connection.list_devices_async((), deliver, bus), settings
     )

@@ -5,18 +5,13 @@ faults, inputs and cable are in the Valve menu, and the LEDs and error list reac
 from __future__ import annotations
 
 import pytest
-from gui_support import E02_CA, emulated, go_online, main_window, record_prompts
+from gui_support import E02_CA, emulated, go_online, main_window
 
 from prm9tool.scope import Waveform
 from prm9tool.views import prompts
 
 TIMEOUT = 10_000
 SERIAL = 4301
-
-
-@pytest.fixture
-def answers(monkeypatch):
-    return record_prompts(monkeypatch)
 
 
 @pytest.fixture

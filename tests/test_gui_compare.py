@@ -5,8 +5,7 @@ from __future__ import annotations
 import os
 from pathlib import Path
 
-import pytest
-from gui_support import E02, go_online, main_window, record_prompts
+from gui_support import E02, go_online
 from PySide6.QtCore import Qt
 
 from prm9tool import i18n
@@ -19,17 +18,6 @@ from prm9tool.views.compare_view import BOTH, FIRST_VALUE, CompareDialog
 from prm9tool.views.online_dialogs import DiffChoice, OnlineDiffDialog
 
 TIMEOUT = 10_000
-
-
-@pytest.fixture
-def answers(monkeypatch):
-    return record_prompts(monkeypatch)
-
-
-@pytest.fixture
-def window(qtbot, tmp_path, answers):
-    with main_window(qtbot, tmp_path) as win:
-        yield win
 
 
 def snapshot(widget, name):

@@ -49,7 +49,7 @@ def _record(signal):
 
 
 def _unplug(connection):
-    transport = connection._session.transport
+    transport = connection._worker.session.transport
     transport.faults = LinkFaults(die_after=transport.reports_on_link)
 
 
@@ -115,7 +115,7 @@ def test_cancelled_upload_stores_nothing_and_says_so(qtbot, connection):
     busy = _record(connection.busy_changed)
     with qtbot.waitSignal(connection.failed, timeout=TIMEOUT) as failed:
         connection.run_job("upload", lambda s: (connection.cancel(), s.upload({"DTAMP": 1000},
-                                                None, connection._cancel))[1])  # fmt: skip
+                                                None, connection._worker.cancel))[1])  # fmt: skip
     assert "cancelled" in failed.args[0] and "nothing was stored" in failed.args[0]
     qtbot.waitUntil(lambda: busy and busy[-1] == (False,), timeout=TIMEOUT)
     assert not connection.is_busy and connection.is_online

@@ -3,8 +3,7 @@ undo/redo, print and PDF export."""
 
 from __future__ import annotations
 
-import pytest
-from gui_support import E02, E04_CA, main_window, record_prompts
+from gui_support import E02, E04_CA
 from PySide6.QtCore import QMimeData, QPointF, Qt, QUrl
 from PySide6.QtGui import QDropEvent
 from PySide6.QtWidgets import QFileDialog
@@ -15,17 +14,6 @@ from prm9tool.views import prompts
 from prm9tool.views.valve_selection import ValveSelectionDialog
 
 Accepted = ValveSelectionDialog.DialogCode.Accepted
-
-
-@pytest.fixture
-def answers(monkeypatch):
-    return record_prompts(monkeypatch)
-
-
-@pytest.fixture
-def window(qtbot, tmp_path, answers):
-    with main_window(qtbot, tmp_path) as win:
-        yield win
 
 
 def _select(key):

@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 import pytest
-from gui_support import E02, E04_CA, main_window, record_prompts, reject_all_dialogs
+from gui_support import E02, E04_CA, main_window, reject_all_dialogs
 from PySide6.QtCore import Qt
 
 from prm9tool.catalogue import Access
@@ -16,17 +16,6 @@ from prm9tool.views.valve_selection import ValveSelectionDialog
 
 Accepted = ValveSelectionDialog.DialogCode.Accepted
 Rejected = ValveSelectionDialog.DialogCode.Rejected
-
-
-@pytest.fixture
-def answers(monkeypatch):
-    return record_prompts(monkeypatch)
-
-
-@pytest.fixture
-def window(qtbot, tmp_path, answers):
-    with main_window(qtbot, tmp_path) as win:
-        yield win
 
 
 def _menu_texts(window, name):

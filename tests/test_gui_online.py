@@ -13,8 +13,8 @@ from gui_support import (
     emulated,
     go_online,
     main_window,
-    record_prompts,
     session_of,
+    valve_value,
 )
 from PySide6.QtWidgets import QDialog, QLabel, QPushButton
 
@@ -26,30 +26,9 @@ from prm9tool.views.online_dialogs import DiffChoice, OnlineDiffDialog, RestartD
 TIMEOUT = 10_000
 
 
-@pytest.fixture
-def answers(monkeypatch):
-    return record_prompts(monkeypatch)
-
-
-@pytest.fixture
-def window(qtbot, tmp_path, answers):
-    with main_window(qtbot, tmp_path) as win:
-        yield win
-
-
 def _settled(qtbot, window):
     """Wait until the going-online comparison is over and edits go to the valve."""
     qtbot.waitUntil(lambda: window.sync.active, timeout=TIMEOUT)
-
-
-def _valve_value(qtbot, window, mnemonic):
-    result = {}
-    window.connection.operation_finished.connect(
-        lambda name, values: result.update(values) if name == "probe" else None
-    )
-    window.connection.read_many([mnemonic], "probe")
-    qtbot.waitUntil(lambda: mnemonic in result, timeout=TIMEOUT)
-    return result[mnemonic]
 
 
 def _choose(monkeypatch, choice, shown=None):
@@ -97,7 +76,7 @@ def test_differences_prompt_take_the_valve_values(qtbot, window, monkeypatch):
     assert window.doc.value("LIMTA") == 2400
     window.undo.stack.undo()  # taking the valve's values is one undo step …
     assert window.doc.value("LIMTA") == 1500
-    assert _valve_value(qtbot, window, "LIMTA") == 1500  # … and online, undo reaches the valve
+    assert valve_value(qtbot, window, "LIMTA") == 1500  # … and online, undo reaches the valve
 
 
 def test_differences_prompt_send_the_document(qtbot, window, monkeypatch):
@@ -105,7 +84,7 @@ def test_differences_prompt_send_the_document(qtbot, window, monkeypatch):
     _choose(monkeypatch, DiffChoice.SEND_DOCUMENT)
     go_online(qtbot, window, f"{E02}:4102")
     _settled(qtbot, window)
-    assert _valve_value(qtbot, window, "DTAMP") == 1000
+    assert valve_value(qtbot, window, "DTAMP") == 1000
     assert len(backup.existing_backups(4102)) == 1  # the valve's own values were saved first
     assert "written, verified and stored" in window.status.currentMessage()
 
@@ -164,7 +143,7 @@ def test_table_edits_go_to_the_valve_and_downloads_come_back(qtbot, window):
     dialog.set_text("1900")
     dialog._buttons.accepted.emit()
     assert window.doc.value("LIMTB") == 1900
-    assert _valve_value(qtbot, window, "LIMTB") == 1900
+    assert valve_value(qtbot, window, "LIMTB") == 1900
     window.connection.write("DYNFREQ", 120)  # the valve changes behind the document's back
     with qtbot.waitSignal(window.connection.operation_finished, timeout=TIMEOUT):
         window.commands["download"].trigger()
@@ -258,9 +237,9 @@ def test_cancelling_the_progress_dialog_cancels_the_operation(qtbot, window, ans
 
     def slow_upload(session):
         release.wait(5)  # the user presses Cancel meanwhile
-        return session.upload(values, None, window.connection._cancel)
+        return session.upload(values, None, window.connection._worker.cancel)
 
-    window.valve._start("upload", "Uploading")
+    window.valve.progress.start("upload", "Uploading")
     window.connection.run_job("upload", slow_upload)
     window.valve.progress_dialog.findChild(QPushButton).click()  # the user presses Cancel
     release.set()
@@ -294,7 +273,7 @@ def _online_with_limta_2000(qtbot, window, serial: int) -> None:
     go_online(qtbot, window, f"{E02}:{serial}")
     _settled(qtbot, window)
     window.doc.set_value("LIMTA", 2000)
-    assert _valve_value(qtbot, window, "LIMTA") == 2000
+    assert valve_value(qtbot, window, "LIMTA") == 2000
 
 
 def test_restore_factory_values_online_needs_the_hydraulics_confirmation(
@@ -313,7 +292,7 @@ def test_restore_factory_values_online_needs_the_hydraulics_confirmation(
     assert not shown[0].restart_button.isEnabled()  # not before the hydraulics are confirmed
     assert answers.asked == []  # no plain Yes/No box instead of the confirmation
     assert not window.connection.is_busy and backup.existing_backups(4105) == []
-    assert _valve_value(qtbot, window, "LIMTA") == 2000
+    assert valve_value(qtbot, window, "LIMTA") == 2000
 
 
 def test_restore_factory_values_online_backs_the_valve_up_first(
@@ -332,7 +311,7 @@ def test_restore_factory_values_online_backs_the_valve_up_first(
     with qtbot.waitSignal(window.connection.operation_finished, timeout=TIMEOUT) as done:
         window.commands["restore_factory"].trigger()
     assert done.args[0] == "restore_factory"
-    assert window.doc.value("LIMTA") == 2400 and _valve_value(qtbot, window, "LIMTA") == 2400
+    assert window.doc.value("LIMTA") == 2400 and valve_value(qtbot, window, "LIMTA") == 2400
     [saved] = backup.existing_backups(4106)
     assert prmfile.read_file(saved).values["LIMTA"] == 2000  # the values before the reset
     assert str(saved) in window.status.currentMessage()
@@ -350,7 +329,7 @@ def test_going_offline_offers_to_store_online_changes(qtbot, window, answers):
     assert "not stored" in answers.asked[-1]
     go_online(qtbot, window, f"{E02}:4001")  # same valve: the stored value survived
     qtbot.waitUntil(lambda: window.sync.active, timeout=TIMEOUT)
-    assert _valve_value(qtbot, window, "DTAMP") == 999
+    assert valve_value(qtbot, window, "DTAMP") == 999
 
 
 def test_status_window_follows_the_valve(qtbot, window):

@@ -12,15 +12,10 @@ import subprocess
 
 import numpy as np
 import pytest
-from gui_support import E02, E04_CA, main_window, record_prompts
+from gui_support import E02, E04_CA, main_window
 from pypdf import PdfReader
 
 MM = 72 / 25.4  # PDF points per millimetre
-
-
-@pytest.fixture
-def answers(monkeypatch):
-    return record_prompts(monkeypatch)
 
 
 def _pictures(path) -> list[tuple[float, float, float, float]]:

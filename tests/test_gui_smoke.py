@@ -26,7 +26,7 @@ from prm9tool import app, i18n
 from prm9tool.catalogue import Access
 from prm9tool.cli.main import build_parser
 from prm9tool.device import factory
-from prm9tool.online.connection import PROGRESS_PERIOD_S
+from prm9tool.online.connection_worker import PROGRESS_PERIOD_S
 from prm9tool.scope.generator import GeneratorSettings, Waveform
 from prm9tool.views import prompts
 from prm9tool.views.access_dialog import ChangePasswordDialog, PasswordDialog

@@ -8,7 +8,7 @@ and the key built from it failed when it was formatted (issue 14, item 1).
 from __future__ import annotations
 
 import pytest
-from gui_support import E02, E02_CA, main_window, record_prompts
+from gui_support import E02, E02_CA, main_window
 from PySide6.QtCore import Qt
 
 from prm9tool.catalogue.typekey import TypeKey
@@ -17,11 +17,6 @@ from prm9tool.views import prompts
 from prm9tool.views.valve_selection import ValveSelectionDialog
 
 Accepted = ValveSelectionDialog.DialogCode.Accepted
-
-
-@pytest.fixture
-def answers(monkeypatch):
-    return record_prompts(monkeypatch)
 
 
 @pytest.fixture

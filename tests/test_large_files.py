@@ -6,8 +6,7 @@ from __future__ import annotations
 import difflib
 import threading
 
-import pytest
-from gui_support import E02, main_window, record_prompts
+from gui_support import E02
 from PySide6.QtCore import QTimer
 
 from prm9tool.catalogue.typekey import TypeKey
@@ -42,15 +41,21 @@ def test_spelling_suggestions_are_made_for_the_first_unknown_names_only(monkeypa
     assert unknown[-1] == "unknown parameter 'LIMTAX499': kept and written back unchanged"
 
 
-@pytest.fixture
-def answers(monkeypatch):
-    return record_prompts(monkeypatch)
+def _read_slowly(monkeypatch) -> dict[str, object]:
+    """``prmfile.read_file`` records its thread and waits for the GUI thread to run a timer:
+    it finishes when the GUI thread ran meanwhile; on the GUI thread it never could."""
+    real_read = prmfile.read_file
+    gui_ran = threading.Event()
+    seen: dict[str, object] = {}
 
+    def slow_read(where):
+        seen["thread"] = threading.current_thread()
+        seen["gui_ran_meanwhile"] = gui_ran.wait(timeout=3)
+        return real_read(where)
 
-@pytest.fixture
-def window(qtbot, tmp_path, answers):
-    with main_window(qtbot, tmp_path) as win:
-        yield win
+    monkeypatch.setattr(prmfile, "read_file", slow_read)
+    QTimer.singleShot(20, gui_ran.set)
+    return seen
 
 
 def test_opening_a_file_reads_it_off_the_gui_thread_while_the_window_keeps_working(
@@ -58,18 +63,7 @@ def test_opening_a_file_reads_it_off_the_gui_thread_while_the_window_keeps_worki
 ):
     path = tmp_path / "slow.prm"
     path.write_bytes(_with_unknown_names(3))
-    real_read = prmfile.read_file
-    gui_ran = threading.Event()
-    seen: dict[str, object] = {}
-
-    def slow_read(where):
-        seen["thread"] = threading.current_thread()
-        # Finishes when the GUI thread ran a timer meanwhile; on the GUI thread it never could.
-        seen["gui_ran_meanwhile"] = gui_ran.wait(timeout=3)
-        return real_read(where)
-
-    monkeypatch.setattr(prmfile, "read_file", slow_read)
-    QTimer.singleShot(20, gui_ran.set)
+    seen = _read_slowly(monkeypatch)
     assert window.files.open_path(path, ask=False)
     assert seen["thread"] is not threading.main_thread()
     assert seen["gui_ran_meanwhile"] is True
@@ -127,17 +121,7 @@ def test_opening_another_file_while_one_is_being_read_is_refused(window, tmp_pat
 def test_compare_with_file_reads_off_the_gui_thread_too(window, tmp_path, monkeypatch, answers):
     path = tmp_path / "other.prm"
     path.write_text("format = prm9tool 1\ngarbage\n", encoding="utf-8")
-    real_read = prmfile.read_file
-    gui_ran = threading.Event()
-    seen: dict[str, object] = {}
-
-    def slow_read(where):
-        seen["thread"] = threading.current_thread()
-        seen["gui_ran_meanwhile"] = gui_ran.wait(timeout=3)
-        return real_read(where)
-
-    monkeypatch.setattr(prmfile, "read_file", slow_read)
-    QTimer.singleShot(20, gui_ran.set)
+    seen = _read_slowly(monkeypatch)
     window.compare.compare_with_file(path)
     assert seen["thread"] is not threading.main_thread() and seen["gui_ran_meanwhile"] is True
     assert "other.prm cannot be compared" in answers.informed[-1]

@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 import pytest
-from gui_support import E02, emulated, go_online, main_window, record_prompts, session_of
+from gui_support import E02, emulated, go_online, main_window, session_of
 
 from prm9tool.catalogue import CATALOGUE
 from prm9tool.errors import AccessDeniedError
@@ -12,11 +12,6 @@ from prm9tool.views import prompts
 
 TIMEOUT = 10_000
 SERIAL = 4101
-
-
-@pytest.fixture
-def answers(monkeypatch):
-    return record_prompts(monkeypatch)
 
 
 @pytest.fixture

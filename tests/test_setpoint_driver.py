@@ -5,10 +5,10 @@ stream, with keepalive writes, and a refused write reported."""
 from __future__ import annotations
 
 import threading
-import time
 
 import numpy as np
 import pytest
+from waiting import HandClock, wait_for
 
 from prm9tool.catalogue import CATALOGUE
 from prm9tool.device import factory
@@ -97,44 +97,24 @@ class _LinkSession:
             return [raw for name, raw in self.writes if name == mnemonic]
 
 
-class _Clock:
-    """A stream clock the test moves by hand."""
-
-    def __init__(self) -> None:
-        self.now = 0.0
-
-    def mark(self):
-        return (0, 0, 0.0)
-
-    def seconds_since(self, _mark) -> float:
-        return self.now
-
-
-def _wait_for(condition, timeout_s: float = 5.0) -> None:
-    deadline = time.monotonic() + timeout_s
-    while not condition():
-        assert time.monotonic() < deadline, "timed out"
-        time.sleep(0.002)
-
-
 def test_over_a_link_the_writes_follow_the_stream_time_and_keep_the_override_alive():
-    session, clock = _LinkSession(), _Clock()
+    session, clock = _LinkSession(), HandClock()
     driver = SetpointDriver(session, GeneratorSettings(Waveform.SQUARE, 40.0, 10.0, 0.2), _never,
                             clock)  # fmt: skip
     driver.start()
     assert not driver.exact
     assert session.writes[:2] == [("SETPOVR", 1638), ("SETPOVRON", 1)]
     clock.now = 0.1  # the stream says half a period has passed: 50 %
-    _wait_for(lambda: 8192 in session.values("SETPOVR"))
-    _wait_for(lambda: session.values("SETPOVR").count(8192) >= 3)  # unchanged: keepalive
+    wait_for(lambda: 8192 in session.values("SETPOVR"))
+    wait_for(lambda: session.values("SETPOVR").count(8192) >= 3)  # unchanged: keepalive
     clock.now = 0.2
-    _wait_for(lambda: session.values("SETPOVR")[-1] == 1638)
+    wait_for(lambda: session.values("SETPOVR")[-1] == 1638)
     driver.stop()
     assert session.writes[-1] == ("SETPOVRON", 0)
 
 
 def test_a_refused_write_ends_the_driver_and_is_reported():
-    session, clock = _LinkSession(), _Clock()
+    session, clock = _LinkSession(), HandClock()
     refused: list[tuple[str, str]] = []
     driver = SetpointDriver(
         session,
@@ -145,7 +125,7 @@ def test_a_refused_write_ends_the_driver_and_is_reported():
     driver.start()
     session.refuse.add("SETPOVR")
     clock.now = 0.1
-    _wait_for(lambda: refused)
+    wait_for(lambda: refused)
     assert refused[0] == (
         "SETPOVR",
         "0x2050/2: abort 0x06090031 (value of parameter written too high)",

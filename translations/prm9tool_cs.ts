@@ -2473,6 +2473,13 @@ Ano načte a záznam zařadí do fronty; Ne nenačte nic.</translation>
         </message>
     </context>
     <context>
+        <name>OperationProgress</name>
+        <message>
+            <source>Cancel</source>
+            <translation>Zrušit</translation>
+        </message>
+    </context>
+    <context>
         <name>ParameterEditDialog</name>
         <message>
             <source>Parameter {0}</source>
@@ -3006,6 +3013,41 @@ Ano načte a záznam zařadí do fronty; Ne nenačte nic.</translation>
         </message>
     </context>
     <context>
+        <name>ScopeExport</name>
+        <message>
+            <source>Nothing recorded yet.</source>
+            <translation>Zatím nic nezaznamenáno.</translation>
+        </message>
+        <message>
+            <source>Could not write {0}.</source>
+            <translation>{0} nelze zapsat.</translation>
+        </message>
+        <message>
+            <source>Export CSV</source>
+            <translation>Export CSV</translation>
+        </message>
+        <message>
+            <source>CSV files (*.csv)</source>
+            <translation>Soubory CSV (*.csv)</translation>
+        </message>
+        <message>
+            <source>Export PNG</source>
+            <translation>Export PNG</translation>
+        </message>
+        <message>
+            <source>PNG images (*.png)</source>
+            <translation>Obrázky PNG (*.png)</translation>
+        </message>
+        <message>
+            <source>Export</source>
+            <translation>Export</translation>
+        </message>
+        <message>
+            <source>Saved {0}.</source>
+            <translation>Uloženo: {0}.</translation>
+        </message>
+    </context>
+    <context>
         <name>ScopePlot</name>
         <message>
             <source>Auto</source>
@@ -3041,18 +3083,10 @@ Ano načte a záznam zařadí do fronty; Ne nenačte nic.</translation>
         </message>
     </context>
     <context>
-        <name>ScopeWidget</name>
+        <name>ScopeStatusText</name>
         <message>
-            <source>Select at least one measuring point on the right.</source>
-            <translation>Vpravo zvolte alespoň jeden měřicí bod.</translation>
-        </message>
-        <message>
-            <source>The recording stopped: another operation (a tuning test…) took the stream.</source>
-            <translation>Záznam se zastavil: datový tok převzala jiná operace (test ladění…).</translation>
-        </message>
-        <message>
-            <source>The recording could not start: {0}</source>
-            <translation>Záznam nelze spustit: {0}</translation>
+            <source>The valve does not follow its setpoint: {0}</source>
+            <translation>Ventil nesleduje svou žádanou hodnotu: {0}</translation>
         </message>
         <message>
             <source>Stopped. Choose up to three measuring points and press Start.</source>
@@ -3075,8 +3109,27 @@ Ano načte a záznam zařadí do fronty; Ne nenačte nic.</translation>
             <translation>Záznam s frekvencí {0} Hz.</translation>
         </message>
         <message>
+            <source>Recording at {0} Hz of the {1} Hz asked for: {2} samples lost on the link.</source>
+            <translation>Záznam s frekvencí {0} Hz z požadovaných {1} Hz: na spojení ztraceno vzorků: {2}.</translation>
+        </message>
+        <message>
             <source>The oscilloscope needs a connected valve: go online (Communication → Online).</source>
             <translation>Osciloskop potřebuje připojený ventil: přejděte do režimu online (Komunikace → Režim online).</translation>
+        </message>
+    </context>
+    <context>
+        <name>ScopeWidget</name>
+        <message>
+            <source>Select at least one measuring point on the right.</source>
+            <translation>Vpravo zvolte alespoň jeden měřicí bod.</translation>
+        </message>
+        <message>
+            <source>The recording stopped: another operation (a tuning test…) took the stream.</source>
+            <translation>Záznam se zastavil: datový tok převzala jiná operace (test ladění…).</translation>
+        </message>
+        <message>
+            <source>The recording could not start: {0}</source>
+            <translation>Záznam nelze spustit: {0}</translation>
         </message>
         <message>
             <source>The link dropped: the setpoint generator has stopped.</source>
@@ -3087,38 +3140,6 @@ Ano načte a záznam zařadí do fronty; Ne nenačte nic.</translation>
             <translation>Generátor žádané hodnoty se zastavil: ventil nyní řídí jiná operace (test ladění, načtení do ventilu…).</translation>
         </message>
         <message>
-            <source>Nothing recorded yet.</source>
-            <translation>Zatím nic nezaznamenáno.</translation>
-        </message>
-        <message>
-            <source>Could not write {0}.</source>
-            <translation>{0} nelze zapsat.</translation>
-        </message>
-        <message>
-            <source>Export CSV</source>
-            <translation>Export CSV</translation>
-        </message>
-        <message>
-            <source>CSV files (*.csv)</source>
-            <translation>Soubory CSV (*.csv)</translation>
-        </message>
-        <message>
-            <source>Export PNG</source>
-            <translation>Export PNG</translation>
-        </message>
-        <message>
-            <source>PNG images (*.png)</source>
-            <translation>Obrázky PNG (*.png)</translation>
-        </message>
-        <message>
-            <source>Export</source>
-            <translation>Export</translation>
-        </message>
-        <message>
-            <source>Saved {0}.</source>
-            <translation>Uloženo: {0}.</translation>
-        </message>
-        <message>
             <source>The valve refused a value of the setpoint generator ({0}): the generator has stopped.</source>
             <translation>Ventil odmítl hodnotu generátoru žádané hodnoty ({0}): generátor se zastavil.</translation>
         </message>
@@ -3127,16 +3148,8 @@ Ano načte a záznam zařadí do fronty; Ne nenačte nic.</translation>
             <translation>Ladění a charakterizace…</translation>
         </message>
         <message>
-            <source>Recording at {0} Hz of the {1} Hz asked for: {2} samples lost on the link.</source>
-            <translation>Záznam s frekvencí {0} Hz z požadovaných {1} Hz: na spojení ztraceno vzorků: {2}.</translation>
-        </message>
-        <message>
             <source>no reason given</source>
             <translation>bez udání důvodu</translation>
-        </message>
-        <message>
-            <source>The valve does not follow its setpoint: {0}</source>
-            <translation>Ventil nesleduje svou žádanou hodnotu: {0}</translation>
         </message>
     </context>
     <context>
@@ -3832,6 +3845,21 @@ Zajistěte, aby to hydraulika bezpečně snesla. Tlačítko Stop test kdykoli uk
         </message>
     </context>
     <context>
+        <name>ValveFinder</name>
+        <message>
+            <source>Listing the valves failed: {0}</source>
+            <translation>Výpis ventilů selhal: {0}</translation>
+        </message>
+        <message>
+            <source>Looking for valves…</source>
+            <translation>Hledání ventilů…</translation>
+        </message>
+        <message>
+            <source>Connecting to {0}…</source>
+            <translation>Připojování k {0}…</translation>
+        </message>
+    </context>
+    <context>
         <name>ValveSelectionDialog</name>
         <message>
             <source>Valve selection</source>
@@ -4038,11 +4066,66 @@ Zajistěte, aby to hydraulika bezpečně snesla. Tlačítko Stop test kdykoli uk
         </message>
     </context>
     <context>
-        <name>ValveWorkflow</name>
+        <name>ValveUpload</name>
         <message>
-            <source>Connecting to {0}…</source>
-            <translation>Připojování k {0}…</translation>
+            <source>Nothing was sent to the valve</source>
+            <translation>Do ventilu nebylo nic odesláno</translation>
         </message>
+        <message>
+            <source>Upload to valve</source>
+            <translation>Načtení do ventilu</translation>
+        </message>
+        <message>
+            <source>The document is for a {0} valve, the connected valve is a {1} valve. Choose the matching valve type or download the valve's parameters first.</source>
+            <translation>Dokument je pro ventil {0}, připojený ventil je {1}. Zvolte odpovídající typ ventilu nebo nejprve stáhněte parametry z ventilu.</translation>
+        </message>
+        <message>
+            <source>Uploading the parameters to the valve…</source>
+            <translation>Načítání parametrů do ventilu…</translation>
+        </message>
+        <message>
+            <source>Expert values at Basic level</source>
+            <translation>Expertní hodnoty na základní úrovni</translation>
+        </message>
+        <message numerus="yes">
+            <source>The document changes %n Expert-level value(s) of the valve ({0}), which the Basic access level cannot edit (controllers, linearizations, monitoring). Send them anyway?</source>
+            <translation>
+                <numerusform>Dokument mění %n hodnotu úrovně Expert ve ventilu ({0}), kterou základní úroveň oprávnění nemůže upravovat (regulátory, linearizace, monitorování). Přesto odeslat?</numerusform>
+                <numerusform>Dokument mění %n hodnoty úrovně Expert ve ventilu ({0}), které základní úroveň oprávnění nemůže upravovat (regulátory, linearizace, monitorování). Přesto odeslat?</numerusform>
+                <numerusform>Dokument mění %n hodnot úrovně Expert ve ventilu ({0}), které základní úroveň oprávnění nemůže upravovat (regulátory, linearizace, monitorování). Přesto odeslat?</numerusform>
+            </translation>
+        </message>
+        <message>
+            <source>Values written to the valve</source>
+            <translation>Hodnoty zapsané do ventilu</translation>
+        </message>
+        <message numerus="yes">
+            <source>%n parameter(s) written, verified and stored at {0}</source>
+            <translation>
+                <numerusform>%n parametr zapsán, ověřen a uložen v {0}</numerusform>
+                <numerusform>%n parametry zapsány, ověřeny a uloženy v {0}</numerusform>
+                <numerusform>%n parametrů zapsáno, ověřeno a uloženo v {0}</numerusform>
+            </translation>
+        </message>
+        <message numerus="yes">
+            <source>%n parameter(s) written, verified and stored again at {0}: the valve already held them</source>
+            <translation>
+                <numerusform>%n parametr znovu zapsán, ověřen a uložen v {0}: ventil jej již obsahoval</numerusform>
+                <numerusform>%n parametry znovu zapsány, ověřeny a uloženy v {0}: ventil je již obsahoval</numerusform>
+                <numerusform>%n parametrů znovu zapsáno, ověřeno a uloženo v {0}: ventil je již obsahoval</numerusform>
+            </translation>
+        </message>
+        <message>
+            <source>Upload failed</source>
+            <translation>Načtení do ventilu selhalo</translation>
+        </message>
+        <message>
+            <source>The upload failed at step “{0}”. Nothing was stored: after a restart the valve holds its previous parameters.</source>
+            <translation>Načtení do ventilu selhalo v kroku „{0}“. Nic nebylo uloženo: po restartu má ventil své předchozí parametry.</translation>
+        </message>
+    </context>
+    <context>
+        <name>ValveWorkflow</name>
         <message>
             <source>Store changes in the valve</source>
             <translation>Uložit změny ve ventilu</translation>
@@ -4076,34 +4159,6 @@ Zajistěte, aby to hydraulika bezpečně snesla. Tlačítko Stop test kdykoli uk
             <translation>Ventil hlásí neznámý typový klíč: {0}</translation>
         </message>
         <message>
-            <source>Upload to valve</source>
-            <translation>Načtení do ventilu</translation>
-        </message>
-        <message>
-            <source>The document is for a {0} valve, the connected valve is a {1} valve. Choose the matching valve type or download the valve's parameters first.</source>
-            <translation>Dokument je pro ventil {0}, připojený ventil je {1}. Zvolte odpovídající typ ventilu nebo nejprve stáhněte parametry z ventilu.</translation>
-        </message>
-        <message>
-            <source>Nothing was sent to the valve</source>
-            <translation>Do ventilu nebylo nic odesláno</translation>
-        </message>
-        <message>
-            <source>Uploading the parameters to the valve…</source>
-            <translation>Načítání parametrů do ventilu…</translation>
-        </message>
-        <message>
-            <source>Expert values at Basic level</source>
-            <translation>Expertní hodnoty na základní úrovni</translation>
-        </message>
-        <message numerus="yes">
-            <source>The document changes %n Expert-level value(s) of the valve ({0}), which the Basic access level cannot edit (controllers, linearizations, monitoring). Send them anyway?</source>
-            <translation>
-                <numerusform>Dokument mění %n hodnotu úrovně Expert ve ventilu ({0}), kterou základní úroveň oprávnění nemůže upravovat (regulátory, linearizace, monitorování). Přesto odeslat?</numerusform>
-                <numerusform>Dokument mění %n hodnoty úrovně Expert ve ventilu ({0}), které základní úroveň oprávnění nemůže upravovat (regulátory, linearizace, monitorování). Přesto odeslat?</numerusform>
-                <numerusform>Dokument mění %n hodnot úrovně Expert ve ventilu ({0}), které základní úroveň oprávnění nemůže upravovat (regulátory, linearizace, monitorování). Přesto odeslat?</numerusform>
-            </translation>
-        </message>
-        <message>
             <source>Downloading the parameters from the valve…</source>
             <translation>Stahování parametrů z ventilu…</translation>
         </message>
@@ -4118,26 +4173,6 @@ Zajistěte, aby to hydraulika bezpečně snesla. Tlačítko Stop test kdykoli uk
         <message>
             <source>The valve restarted at {0} {1}; prm9tool found it there</source>
             <translation>Ventil se restartoval jako {0} {1}; prm9tool ho tam našel</translation>
-        </message>
-        <message>
-            <source>Values written to the valve</source>
-            <translation>Hodnoty zapsané do ventilu</translation>
-        </message>
-        <message numerus="yes">
-            <source>%n parameter(s) written, verified and stored at {0}</source>
-            <translation>
-                <numerusform>%n parametr zapsán, ověřen a uložen v {0}</numerusform>
-                <numerusform>%n parametry zapsány, ověřeny a uloženy v {0}</numerusform>
-                <numerusform>%n parametrů zapsáno, ověřeno a uloženo v {0}</numerusform>
-            </translation>
-        </message>
-        <message numerus="yes">
-            <source>%n parameter(s) written, verified and stored again at {0}: the valve already held them</source>
-            <translation>
-                <numerusform>%n parametr znovu zapsán, ověřen a uložen v {0}: ventil jej již obsahoval</numerusform>
-                <numerusform>%n parametry znovu zapsány, ověřeny a uloženy v {0}: ventil je již obsahoval</numerusform>
-                <numerusform>%n parametrů znovu zapsáno, ověřeno a uloženo v {0}: ventil je již obsahoval</numerusform>
-            </translation>
         </message>
         <message>
             <source>Restore factory values</source>
@@ -4164,28 +4199,12 @@ Zajistěte, aby to hydraulika bezpečně snesla. Tlačítko Stop test kdykoli uk
             <translation>Ventil byl restartován</translation>
         </message>
         <message>
-            <source>Listing the valves failed: {0}</source>
-            <translation>Výpis ventilů selhal: {0}</translation>
-        </message>
-        <message>
-            <source>Looking for valves…</source>
-            <translation>Hledání ventilů…</translation>
-        </message>
-        <message>
             <source>The valve stored its parameters</source>
             <translation>Ventil uložil své parametry</translation>
         </message>
         <message>
             <source>Factory values restored; the valve's previous parameters are in {0}</source>
             <translation>Tovární nastavení obnoveno; dosavadní parametry ventilu jsou v {0}</translation>
-        </message>
-        <message>
-            <source>Upload failed</source>
-            <translation>Načtení do ventilu selhalo</translation>
-        </message>
-        <message>
-            <source>The upload failed at step “{0}”. Nothing was stored: after a restart the valve holds its previous parameters.</source>
-            <translation>Načtení do ventilu selhalo v kroku „{0}“. Nic nebylo uloženo: po restartu má ventil své předchozí parametry.</translation>
         </message>
         <message>
             <source>Valve communication</source>
@@ -4204,10 +4223,6 @@ Všechny hodnoty zůstávají v dokumentu: uložte jej, nebo přejděte znovu do
         <message>
             <source>Backup of the valve's parameters saved: {0}</source>
             <translation>Záloha parametrů ventilu uložena: {0}</translation>
-        </message>
-        <message>
-            <source>Cancel</source>
-            <translation>Zrušit</translation>
         </message>
     </context>
 </TS>

@@ -2462,6 +2462,13 @@ Ja lädt hoch und stellt den Eintrag in die Warteschlange; Nein lädt nichts hoc
         </message>
     </context>
     <context>
+        <name>OperationProgress</name>
+        <message>
+            <source>Cancel</source>
+            <translation>Abbrechen</translation>
+        </message>
+    </context>
+    <context>
         <name>ParameterEditDialog</name>
         <message>
             <source>Parameter {0}</source>
@@ -2995,6 +3002,41 @@ Ja lädt hoch und stellt den Eintrag in die Warteschlange; Nein lädt nichts hoc
         </message>
     </context>
     <context>
+        <name>ScopeExport</name>
+        <message>
+            <source>Nothing recorded yet.</source>
+            <translation>Noch nichts aufgezeichnet.</translation>
+        </message>
+        <message>
+            <source>Could not write {0}.</source>
+            <translation>{0} konnte nicht geschrieben werden.</translation>
+        </message>
+        <message>
+            <source>Export CSV</source>
+            <translation>CSV exportieren</translation>
+        </message>
+        <message>
+            <source>CSV files (*.csv)</source>
+            <translation>CSV-Dateien (*.csv)</translation>
+        </message>
+        <message>
+            <source>Export PNG</source>
+            <translation>PNG exportieren</translation>
+        </message>
+        <message>
+            <source>PNG images (*.png)</source>
+            <translation>PNG-Bilder (*.png)</translation>
+        </message>
+        <message>
+            <source>Export</source>
+            <translation>Export</translation>
+        </message>
+        <message>
+            <source>Saved {0}.</source>
+            <translation>{0} gespeichert.</translation>
+        </message>
+    </context>
+    <context>
         <name>ScopePlot</name>
         <message>
             <source>Auto</source>
@@ -3030,18 +3072,10 @@ Ja lädt hoch und stellt den Eintrag in die Warteschlange; Nein lädt nichts hoc
         </message>
     </context>
     <context>
-        <name>ScopeWidget</name>
+        <name>ScopeStatusText</name>
         <message>
-            <source>Select at least one measuring point on the right.</source>
-            <translation>Wählen Sie rechts mindestens einen Messpunkt.</translation>
-        </message>
-        <message>
-            <source>The recording stopped: another operation (a tuning test…) took the stream.</source>
-            <translation>Die Aufzeichnung wurde beendet: ein anderer Vorgang (ein Tuning-Test…) hat den Datenstrom übernommen.</translation>
-        </message>
-        <message>
-            <source>The recording could not start: {0}</source>
-            <translation>Die Aufzeichnung konnte nicht starten: {0}</translation>
+            <source>The valve does not follow its setpoint: {0}</source>
+            <translation>Das Ventil folgt seinem Sollwert nicht: {0}</translation>
         </message>
         <message>
             <source>Stopped. Choose up to three measuring points and press Start.</source>
@@ -3064,8 +3098,27 @@ Ja lädt hoch und stellt den Eintrag in die Warteschlange; Nein lädt nichts hoc
             <translation>Aufzeichnung mit {0} Hz.</translation>
         </message>
         <message>
+            <source>Recording at {0} Hz of the {1} Hz asked for: {2} samples lost on the link.</source>
+            <translation>Aufzeichnung mit {0} Hz der angeforderten {1} Hz: {2} Abtastwerte auf der Verbindung verloren.</translation>
+        </message>
+        <message>
             <source>The oscilloscope needs a connected valve: go online (Communication → Online).</source>
             <translation>Das Oszilloskop braucht ein verbundenes Ventil: wechseln Sie online (Kommunikation → Online).</translation>
+        </message>
+    </context>
+    <context>
+        <name>ScopeWidget</name>
+        <message>
+            <source>Select at least one measuring point on the right.</source>
+            <translation>Wählen Sie rechts mindestens einen Messpunkt.</translation>
+        </message>
+        <message>
+            <source>The recording stopped: another operation (a tuning test…) took the stream.</source>
+            <translation>Die Aufzeichnung wurde beendet: ein anderer Vorgang (ein Tuning-Test…) hat den Datenstrom übernommen.</translation>
+        </message>
+        <message>
+            <source>The recording could not start: {0}</source>
+            <translation>Die Aufzeichnung konnte nicht starten: {0}</translation>
         </message>
         <message>
             <source>The link dropped: the setpoint generator has stopped.</source>
@@ -3076,38 +3129,6 @@ Ja lädt hoch und stellt den Eintrag in die Warteschlange; Nein lädt nichts hoc
             <translation>Der Sollwertgenerator wurde gestoppt: ein anderer Vorgang (ein Tuning-Test, ein Hochladen…) steuert jetzt das Ventil.</translation>
         </message>
         <message>
-            <source>Nothing recorded yet.</source>
-            <translation>Noch nichts aufgezeichnet.</translation>
-        </message>
-        <message>
-            <source>Could not write {0}.</source>
-            <translation>{0} konnte nicht geschrieben werden.</translation>
-        </message>
-        <message>
-            <source>Export CSV</source>
-            <translation>CSV exportieren</translation>
-        </message>
-        <message>
-            <source>CSV files (*.csv)</source>
-            <translation>CSV-Dateien (*.csv)</translation>
-        </message>
-        <message>
-            <source>Export PNG</source>
-            <translation>PNG exportieren</translation>
-        </message>
-        <message>
-            <source>PNG images (*.png)</source>
-            <translation>PNG-Bilder (*.png)</translation>
-        </message>
-        <message>
-            <source>Export</source>
-            <translation>Export</translation>
-        </message>
-        <message>
-            <source>Saved {0}.</source>
-            <translation>{0} gespeichert.</translation>
-        </message>
-        <message>
             <source>The valve refused a value of the setpoint generator ({0}): the generator has stopped.</source>
             <translation>Das Ventil hat einen Wert des Sollwertgenerators abgelehnt ({0}): Der Generator wurde gestoppt.</translation>
         </message>
@@ -3116,16 +3137,8 @@ Ja lädt hoch und stellt den Eintrag in die Warteschlange; Nein lädt nichts hoc
             <translation>Einstellung und Charakterisierung…</translation>
         </message>
         <message>
-            <source>Recording at {0} Hz of the {1} Hz asked for: {2} samples lost on the link.</source>
-            <translation>Aufzeichnung mit {0} Hz der angeforderten {1} Hz: {2} Abtastwerte auf der Verbindung verloren.</translation>
-        </message>
-        <message>
             <source>no reason given</source>
             <translation>ohne Angabe eines Grundes</translation>
-        </message>
-        <message>
-            <source>The valve does not follow its setpoint: {0}</source>
-            <translation>Das Ventil folgt seinem Sollwert nicht: {0}</translation>
         </message>
     </context>
     <context>
@@ -3821,6 +3834,21 @@ Stellen Sie sicher, dass die Hydraulik dafür sicher ist. Stopp beendet ihn jede
         </message>
     </context>
     <context>
+        <name>ValveFinder</name>
+        <message>
+            <source>Listing the valves failed: {0}</source>
+            <translation>Auflisten der Ventile fehlgeschlagen: {0}</translation>
+        </message>
+        <message>
+            <source>Looking for valves…</source>
+            <translation>Ventile werden gesucht…</translation>
+        </message>
+        <message>
+            <source>Connecting to {0}…</source>
+            <translation>Verbinden mit {0}…</translation>
+        </message>
+    </context>
+    <context>
         <name>ValveSelectionDialog</name>
         <message>
             <source>Valve selection</source>
@@ -4027,11 +4055,63 @@ Stellen Sie sicher, dass die Hydraulik dafür sicher ist. Stopp beendet ihn jede
         </message>
     </context>
     <context>
-        <name>ValveWorkflow</name>
+        <name>ValveUpload</name>
         <message>
-            <source>Connecting to {0}…</source>
-            <translation>Verbinden mit {0}…</translation>
+            <source>Nothing was sent to the valve</source>
+            <translation>Es wurde nichts an das Ventil gesendet</translation>
         </message>
+        <message>
+            <source>Upload to valve</source>
+            <translation>In das Ventil hochladen</translation>
+        </message>
+        <message>
+            <source>The document is for a {0} valve, the connected valve is a {1} valve. Choose the matching valve type or download the valve's parameters first.</source>
+            <translation>Das Dokument ist für ein Ventil {0}, das angeschlossene Ventil ist ein Ventil {1}. Wählen Sie den passenden Ventiltyp oder laden Sie zuerst die Parameter des Ventils herunter.</translation>
+        </message>
+        <message>
+            <source>Uploading the parameters to the valve…</source>
+            <translation>Parameter werden in das Ventil hochgeladen…</translation>
+        </message>
+        <message>
+            <source>Expert values at Basic level</source>
+            <translation>Expertenwerte in der Stufe Basis</translation>
+        </message>
+        <message numerus="yes">
+            <source>The document changes %n Expert-level value(s) of the valve ({0}), which the Basic access level cannot edit (controllers, linearizations, monitoring). Send them anyway?</source>
+            <translation>
+                <numerusform>Das Dokument ändert %n Wert der Stufe Experte im Ventil ({0}), den die Zugriffsstufe Basis nicht bearbeiten kann (Regler, Linearisierungen, Überwachung). Trotzdem senden?</numerusform>
+                <numerusform>Das Dokument ändert %n Werte der Stufe Experte im Ventil ({0}), die die Zugriffsstufe Basis nicht bearbeiten kann (Regler, Linearisierungen, Überwachung). Trotzdem senden?</numerusform>
+            </translation>
+        </message>
+        <message>
+            <source>Values written to the valve</source>
+            <translation>In das Ventil geschriebene Werte</translation>
+        </message>
+        <message numerus="yes">
+            <source>%n parameter(s) written, verified and stored at {0}</source>
+            <translation>
+                <numerusform>%n Parameter um {0} geschrieben, geprüft und gespeichert</numerusform>
+                <numerusform>%n Parameter um {0} geschrieben, geprüft und gespeichert</numerusform>
+            </translation>
+        </message>
+        <message numerus="yes">
+            <source>%n parameter(s) written, verified and stored again at {0}: the valve already held them</source>
+            <translation>
+                <numerusform>%n Parameter um {0} erneut geschrieben, geprüft und gespeichert: das Ventil hatte ihn schon</numerusform>
+                <numerusform>%n Parameter um {0} erneut geschrieben, geprüft und gespeichert: das Ventil hatte sie schon</numerusform>
+            </translation>
+        </message>
+        <message>
+            <source>Upload failed</source>
+            <translation>Hochladen fehlgeschlagen</translation>
+        </message>
+        <message>
+            <source>The upload failed at step “{0}”. Nothing was stored: after a restart the valve holds its previous parameters.</source>
+            <translation>Das Hochladen ist im Schritt „{0}“ fehlgeschlagen. Nichts wurde gespeichert: nach einem Neustart hat das Ventil seine vorherigen Parameter.</translation>
+        </message>
+    </context>
+    <context>
+        <name>ValveWorkflow</name>
         <message>
             <source>Store changes in the valve</source>
             <translation>Änderungen im Ventil speichern</translation>
@@ -4065,33 +4145,6 @@ Stellen Sie sicher, dass die Hydraulik dafür sicher ist. Stopp beendet ihn jede
             <translation>Das Ventil meldet einen unbekannten Typschlüssel: {0}</translation>
         </message>
         <message>
-            <source>Upload to valve</source>
-            <translation>In das Ventil hochladen</translation>
-        </message>
-        <message>
-            <source>The document is for a {0} valve, the connected valve is a {1} valve. Choose the matching valve type or download the valve's parameters first.</source>
-            <translation>Das Dokument ist für ein Ventil {0}, das angeschlossene Ventil ist ein Ventil {1}. Wählen Sie den passenden Ventiltyp oder laden Sie zuerst die Parameter des Ventils herunter.</translation>
-        </message>
-        <message>
-            <source>Nothing was sent to the valve</source>
-            <translation>Es wurde nichts an das Ventil gesendet</translation>
-        </message>
-        <message>
-            <source>Uploading the parameters to the valve…</source>
-            <translation>Parameter werden in das Ventil hochgeladen…</translation>
-        </message>
-        <message>
-            <source>Expert values at Basic level</source>
-            <translation>Expertenwerte in der Stufe Basis</translation>
-        </message>
-        <message numerus="yes">
-            <source>The document changes %n Expert-level value(s) of the valve ({0}), which the Basic access level cannot edit (controllers, linearizations, monitoring). Send them anyway?</source>
-            <translation>
-                <numerusform>Das Dokument ändert %n Wert der Stufe Experte im Ventil ({0}), den die Zugriffsstufe Basis nicht bearbeiten kann (Regler, Linearisierungen, Überwachung). Trotzdem senden?</numerusform>
-                <numerusform>Das Dokument ändert %n Werte der Stufe Experte im Ventil ({0}), die die Zugriffsstufe Basis nicht bearbeiten kann (Regler, Linearisierungen, Überwachung). Trotzdem senden?</numerusform>
-            </translation>
-        </message>
-        <message>
             <source>Downloading the parameters from the valve…</source>
             <translation>Parameter werden aus dem Ventil heruntergeladen…</translation>
         </message>
@@ -4106,24 +4159,6 @@ Stellen Sie sicher, dass die Hydraulik dafür sicher ist. Stopp beendet ihn jede
         <message>
             <source>The valve restarted at {0} {1}; prm9tool found it there</source>
             <translation>Das Ventil ist als {0} {1} neu gestartet; prm9tool hat es dort gefunden</translation>
-        </message>
-        <message>
-            <source>Values written to the valve</source>
-            <translation>In das Ventil geschriebene Werte</translation>
-        </message>
-        <message numerus="yes">
-            <source>%n parameter(s) written, verified and stored at {0}</source>
-            <translation>
-                <numerusform>%n Parameter um {0} geschrieben, geprüft und gespeichert</numerusform>
-                <numerusform>%n Parameter um {0} geschrieben, geprüft und gespeichert</numerusform>
-            </translation>
-        </message>
-        <message numerus="yes">
-            <source>%n parameter(s) written, verified and stored again at {0}: the valve already held them</source>
-            <translation>
-                <numerusform>%n Parameter um {0} erneut geschrieben, geprüft und gespeichert: das Ventil hatte ihn schon</numerusform>
-                <numerusform>%n Parameter um {0} erneut geschrieben, geprüft und gespeichert: das Ventil hatte sie schon</numerusform>
-            </translation>
         </message>
         <message>
             <source>Restore factory values</source>
@@ -4150,28 +4185,12 @@ Stellen Sie sicher, dass die Hydraulik dafür sicher ist. Stopp beendet ihn jede
             <translation>Das Ventil wurde neu gestartet</translation>
         </message>
         <message>
-            <source>Listing the valves failed: {0}</source>
-            <translation>Auflisten der Ventile fehlgeschlagen: {0}</translation>
-        </message>
-        <message>
-            <source>Looking for valves…</source>
-            <translation>Ventile werden gesucht…</translation>
-        </message>
-        <message>
             <source>The valve stored its parameters</source>
             <translation>Das Ventil hat seine Parameter gespeichert</translation>
         </message>
         <message>
             <source>Factory values restored; the valve's previous parameters are in {0}</source>
             <translation>Werkseinstellungen wiederhergestellt; die bisherigen Parameter des Ventils sind in {0}</translation>
-        </message>
-        <message>
-            <source>Upload failed</source>
-            <translation>Hochladen fehlgeschlagen</translation>
-        </message>
-        <message>
-            <source>The upload failed at step “{0}”. Nothing was stored: after a restart the valve holds its previous parameters.</source>
-            <translation>Das Hochladen ist im Schritt „{0}“ fehlgeschlagen. Nichts wurde gespeichert: nach einem Neustart hat das Ventil seine vorherigen Parameter.</translation>
         </message>
         <message>
             <source>Valve communication</source>
@@ -4190,10 +4209,6 @@ Alle Werte bleiben im Dokument erhalten: speichern Sie es oder gehen Sie wieder 
         <message>
             <source>Backup of the valve's parameters saved: {0}</source>
             <translation>Sicherung der Ventilparameter gespeichert: {0}</translation>
-        </message>
-        <message>
-            <source>Cancel</source>
-            <translation>Abbrechen</translation>
         </message>
     </context>
 </TS>

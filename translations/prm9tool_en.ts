@@ -97,7 +97,7 @@
         </message>
     </context>
     <context>
-        <name>ValveWorkflow</name>
+        <name>ValveUpload</name>
         <message numerus="yes">
             <source>The document changes %n Expert-level value(s) of the valve ({0}), which the Basic access level cannot edit (controllers, linearizations, monitoring). Send them anyway?</source>
             <translation>

@@ -19,19 +19,14 @@ from prm9tool.catalogue._control import (
     CANOPEN_SETTINGS,
     CONTROLLERS,
     CURRENT_AND_DITHER,
-    DEVICE_PROFILE,
-    EXTERNAL_SENSOR,
-    EXTERNAL_SENSOR_DATA,
     MONITORING,
     SERVICE,
 )
-from prm9tool.catalogue._setpoint import (
-    IDENTITY,
-    LIVE,
-    SETPOINT,
-    SETPOINT_LINEARIZATION,
-    SIGNAL_TYPES,
-)
+from prm9tool.catalogue._identity import IDENTITY, LIVE
+from prm9tool.catalogue._profile import DEVICE_PROFILE
+from prm9tool.catalogue._sensor import EXTERNAL_SENSOR, EXTERNAL_SENSOR_DATA
+from prm9tool.catalogue._setpoint import SETPOINT, SETPOINT_LINEARIZATION
+from prm9tool.catalogue._vocabulary import SIGNAL_TYPES
 from prm9tool.catalogue.schema import (
     Access,
     Applies,

@@ -9,7 +9,7 @@ from __future__ import annotations
 
 import dataclasses
 
-from prm9tool.catalogue._setpoint import CA_ONLY, FIRMWARE_VERSION, RO, STR, U8, U16, U32, T
+from prm9tool.catalogue._vocabulary import CA_ONLY, FIRMWARE_VERSION, RO, STR, U8, U16, U32, T
 from prm9tool.catalogue.schema import (
     EVERY_VARIANT as ALL,
 )

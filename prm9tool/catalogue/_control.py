@@ -1,27 +1,23 @@
-"""Catalogue data: controllers, current limiter, dither, external sensor, CiA 408 device objects."""
+"""Catalogue data: controllers, current limiter, dither, CANopen settings,
+monitoring, the service objects of the PC."""
 
 from __future__ import annotations
 
-from prm9tool.catalogue._setpoint import (
+from prm9tool.catalogue._vocabulary import (
     CA_ONLY,
     COIL_A,
     COIL_B,
     E04_ONLY,
-    GAIN,
     OFF_ON,
     PERCENT,
-    POLARITY,
     RO,
     S8,
     S16,
-    SIGNAL_TYPES,
     U8,
     U16,
-    U32,
     T,
-    _linearization,
 )
-from prm9tool.catalogue.schema import EVERY_VARIANT, Access, Applies, ObjAccess, Parameter, Texts
+from prm9tool.catalogue.schema import Access, Applies, Parameter, Texts
 from prm9tool.catalogue.variant import Config
 
 E02_ONLY = Applies(configs=frozenset({Config.E02}))
@@ -222,107 +218,6 @@ CURRENT_AND_DITHER: list[Parameter] = [
     ),
 ]
 
-_SENSOR_LIN = T(
-    "External sensor linearization",
-    "Linearisierung externer Sensor",
-    "Linearizace externího snímače",
-)
-EXTERNAL_SENSOR: list[Parameter] = [
-    Parameter(
-        "SENSTYPE",
-        0x2005,
-        1,
-        U16,
-        0,
-        14,
-        9,
-        group="ext_sensor",
-        applies=E04_ONLY,
-        choices=SIGNAL_TYPES,
-        text=T(
-            "External sensor: signal type",
-            "Externer Sensor: Signaltyp",
-            "Externí snímač: typ signálu",
-        ),
-        source="table 7-14, 7-15, 7-22",
-    ),
-    Parameter(
-        "SENSINV",
-        0x2005,
-        2,
-        U8,
-        0,
-        1,
-        0,
-        group="ext_sensor",
-        applies=E04_ONLY,
-        choices=POLARITY,
-        text=T(
-            "External sensor: polarity", "Externer Sensor: Polarität", "Externí snímač: polarita"
-        ),
-        source="table 7-14",
-    ),
-    Parameter(
-        "SENSOFFS",
-        0x2005,
-        3,
-        S16,
-        -16384,
-        16384,
-        0,
-        group="ext_sensor",
-        applies=E04_ONLY,
-        unit="%",
-        scale=PERCENT,
-        decimals=1,
-        text=T(
-            "External sensor: zero offset",
-            "Externer Sensor: Nullpunktverschiebung",
-            "Externí snímač: posunutí nuly",
-        ),
-        source="table 7-14",
-    ),
-    Parameter(
-        "SENSGAIN",
-        0x2005,
-        4,
-        U16,
-        16383,
-        65535,
-        16384,
-        group="ext_sensor",
-        applies=E04_ONLY,
-        scale=GAIN,
-        decimals=3,
-        text=T("External sensor: gain", "Externer Sensor: Verstärkung", "Externí snímač: zesílení"),
-        source="table 7-14 (16384 = 1.0: inference from the range 16383…65535)",
-    ),
-    *_linearization(
-        "SENSLIN", 0x2006, "X", "ext_sensor_linearization", _SENSOR_LIN, E04_ONLY, "table 7-14"
-    ),
-    *_linearization(
-        "SENSLIN", 0x2007, "Y", "ext_sensor_linearization", _SENSOR_LIN, E04_ONLY, "table 7-14"
-    ),
-    Parameter(
-        "SENSLINON",
-        0x2008,
-        0,
-        U8,
-        0,
-        1,
-        0,
-        group="ext_sensor_linearization",
-        applies=E04_ONLY,
-        choices=OFF_ON,
-        text=T(
-            "External sensor linearization on/off",
-            "Linearisierung externer Sensor ein/aus",
-            "Linearizace externího snímače zapnuto/vypnuto",
-        ),
-        source="table 7-14",
-    ),
-]
-
 _BITRATES = (
     (0, T("1 Mbit/s", "1 Mbit/s", "1 Mbit/s")),
     (1, T("800 kbit/s", "800 kbit/s", "800 kbit/s")),
@@ -437,283 +332,11 @@ MONITORING: list[Parameter] = [
 ]
 
 
-def _pv(
-    mnemonic: str, index: int, text: Texts, obj: ObjAccess = RO, applies: Applies = EVERY_VARIANT
-) -> Parameter:
-    """A process value of CiA 408 (S16, ±16384 = ±100 %)."""
-    return Parameter(
-        mnemonic,
-        index,
-        1,
-        S16,
-        -16384,
-        16384,
-        0,
-        group="process_values",
-        access=Access.READ_ONLY,
-        obj_access=obj,
-        in_file=False,
-        unit="%",
-        scale=PERCENT,
-        decimals=1,
-        applies=applies,
-        text=text,
-        source="table 7-16",
-    )
-
-
-DEVICE_PROFILE: list[Parameter] = [
-    Parameter(
-        "CONTROLWORD",
-        0x6040,
-        0,
-        U16,
-        0,
-        0xFFFF,
-        0,
-        group="device_control",
-        access=Access.READ_ONLY,
-        in_file=False,
-        text=T("Device control word", "Gerätesteuerwort", "Řídicí slovo zařízení"),
-        source="table 7-16, 7-19",
-    ),
-    Parameter(
-        "STATUSWORD",
-        0x6041,
-        0,
-        U16,
-        0,
-        0xFFFF,
-        0,
-        group="device_control",
-        access=Access.READ_ONLY,
-        obj_access=RO,
-        in_file=False,
-        text=T("Device status word", "Gerätestatuswort", "Stavové slovo zařízení"),
-        source="table 7-16",
-    ),
-    Parameter(
-        "DEVMODE",
-        0x6042,
-        0,
-        S8,
-        1,
-        1,
-        1,
-        group="device_control",
-        in_file=False,
-        text=T("Device mode", "Gerätemodus", "Režim zařízení"),
-        source="table 7-16",
-    ),
-    Parameter(
-        "CTRLMODE",
-        0x6043,
-        0,
-        S8,
-        2,
-        4,
-        2,
-        default_e04=4,
-        group="device_control",
-        in_file=False,
-        choices=(
-            (2, T("spool position control", "Schieberlageregelung", "řízení polohy šoupátka")),
-            (
-                4,
-                T(
-                    "process control (E04)",
-                    "Prozessregelung (E04)",
-                    "řízení procesní veličiny (E04)",
-                ),
-            ),
-        ),
-        text=T("Device control mode", "Regelmodus", "Režim řízení zařízení"),
-        source="table 7-16, 7-13 (4 on E04: decision)",
-    ),
-    Parameter(
-        "CAPABILITY",
-        0x605F,
-        0,
-        U32,
-        0,
-        0xFFFFFFFF,
-        0x00000006,
-        group="device_control",
-        access=Access.READ_ONLY,
-        obj_access=RO,
-        in_file=False,
-        text=T("Device capability", "Gerätefähigkeit", "Kapacita zařízení"),
-        source="table 7-16 (value: assumption)",
-    ),
-    _pv(
-        "POSSETP",
-        0x6300,
-        T("Position command value", "Lagesollwert", "Poloha (příkazová hodnota)"),
-        ObjAccess.RW,
-    ),
-    _pv("POSACT", 0x6301, T("Position actual value", "Lageistwert", "Poloha (skutečná hodnota)")),
-    _pv(
-        "DEMAND",
-        0x6310,
-        T("Demand value (after ramp)", "Sollwert nach Rampe", "Hodnota požadavku (za rampou)"),
-    ),
-    _pv("CTRLDEV", 0x6350, T("Control deviation", "Regelabweichung", "Odchylka řízení")),
-    _pv(
-        "PRCSETP",
-        0x6380,
-        T(
-            "Process command value (control mode 4)",
-            "Prozesssollwert (Regelmodus 4)",
-            "Hodnota příkazu procesní veličiny (režim 4)",
-        ),
-        ObjAccess.RW,
-        E04_ONLY,
-    ),
-    _pv(
-        "PRCACT",
-        0x6381,
-        T(
-            "Process actual value (control mode 4)",
-            "Prozessistwert (Regelmodus 4)",
-            "Skutečná hodnota procesní veličiny (režim 4)",
-        ),
-        RO,
-        E04_ONLY,
-    ),
-    Parameter(
-        "RAMPTYPE",
-        0x6330,
-        0,
-        S8,
-        3,
-        3,
-        3,
-        group="profile_types",
-        in_file=False,
-        text=T("Ramp type", "Rampentyp", "Typ rampy"),
-        source="table 7-16",
-    ),
-    Parameter(
-        "GAINTYPE",
-        0x6340,
-        0,
-        S8,
-        -1,
-        -1,
-        -1,
-        group="profile_types",
-        in_file=False,
-        text=T(
-            "Demand value generator gain type",
-            "Verstärkungstyp Sollwertgenerator",
-            "Typ zisku generátoru žádané hodnoty",
-        ),
-        source="table 7-16",
-    ),
-    Parameter(
-        "DBCTYPE",
-        0x6342,
-        0,
-        S8,
-        1,
-        1,
-        1,
-        group="profile_types",
-        in_file=False,
-        text=T(
-            "Dead-band compensation type",
-            "Typ der Totbandkompensation",
-            "Typ kompenzace pásma necitlivosti",
-        ),
-        source="table 7-16",
-    ),
-    Parameter(
-        "DITHERTYPE",
-        0x6360,
-        0,
-        S8,
-        1,
-        1,
-        1,
-        group="profile_types",
-        in_file=False,
-        text=T("Dither type", "Dithertyp", "Typ dynamického mazání"),
-        source="table 7-16",
-    ),
-]
-
-EXTERNAL_SENSOR_DATA: list[Parameter] = [
-    Parameter(
-        mn,
-        0x2100,
-        sub,
-        S16,
-        -16384,
-        16384,
-        0,
-        group="ext_sensor_data",
-        access=Access.READ_ONLY,
-        obj_access=obj,
-        in_file=False,
-        unit="%",
-        scale=PERCENT,
-        decimals=1,
-        applies=E04_ONLY,
-        text=text,
-        source="table 7-14",
-    )
-    for mn, sub, obj, text in (
-        (
-            "SENSVAL",
-            1,
-            RO,
-            T("External sensor value", "Wert externer Sensor", "Hodnota signálu snímače"),
-        ),
-        (
-            "SENSIN",
-            2,
-            ObjAccess.WO,
-            T(
-                "External sensor value received over CANopen",
-                "Sensorwert über CANopen",
-                "Vstup signálu snímače",
-            ),
-        ),
-        (
-            "SENSAFTINV",
-            3,
-            RO,
-            T("Sensor after inversion", "Sensor nach Invertierung", "Snímač po inverzi"),
-        ),
-        (
-            "SENSAFTOFFS",
-            4,
-            RO,
-            T("Sensor after zero offset", "Sensor nach Nullpunkt", "Snímač po posunutí nuly"),
-        ),
-        (
-            "SENSAFTGAIN",
-            5,
-            RO,
-            T("Sensor after gain", "Sensor nach Verstärkung", "Snímač po zesílení"),
-        ),
-        (
-            "SENSAFTLIN",
-            6,
-            RO,
-            T("Sensor after linearization", "Sensor nach Linearisierung", "Snímač po linearizaci"),
-        ),
-    )
-]
-
 __all__ = [
     "CANOPEN_SETTINGS",
     "CONTROLLERS",
     "CURRENT_AND_DITHER",
-    "DEVICE_PROFILE",
     "E02_ONLY",
-    "EXTERNAL_SENSOR",
-    "EXTERNAL_SENSOR_DATA",
     "MONITORING",
     "U8",
 ]

@@ -67,3 +67,8 @@ def blocker(
     if nmt_state not in ("off", ""):
         return Blocker.WAITING_FOR_MASTER
     return Blocker.DISABLED
+
+
+# Every object a setpoint link writes, whatever the link (the USB service override, CANopen
+# RPDO1 per manual table 7-13): a refusal of one of them stops the setpoint generator.
+SETPOINT_OBJECTS = ("SETPOVR", "SETPOVRON", "POSSETP", "PRCSETP", "RPDO1TIMER")

@@ -65,7 +65,7 @@ def file_side(path: str) -> Side:
 def valve_side(args: argparse.Namespace) -> Side:
     """The selected valve's parameters, downloaded (DiffError 4: no such valve, 6: no answer)."""
     from prm9tool.catalogue.typekey import TypeKey
-    from prm9tool.cli.batch import BatchError, can_options, open_entry, select
+    from prm9tool.cli.batch_devices import BatchError, can_options, open_entry, select
 
     try:
         entries = select(args)

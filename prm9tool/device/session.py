@@ -48,7 +48,6 @@ from prm9tool.catalogue.typekey import TypeKey
 from prm9tool.device.emulated import EmulatorControls
 from prm9tool.device.emulator.states import ValveStatus
 from prm9tool.device.entries import (
-    STEPS,
     OperationCancelledError,
     Progress,
     RefusedError,
@@ -57,13 +56,17 @@ from prm9tool.device.entries import (
     check_cancel,
 )
 from prm9tool.device.setpoint import OverrideSetpoint, SetpointLink
+from prm9tool.device.upload_outcome import (
+    RESTARTED_BEFORE_STORE,
+    UploadResult,
+    differences,
+    reload_outcome,
+    since,
+    step_error,
+)
 from prm9tool.errors import CommunicationError, Prm9Error, SdoAbortError
 
 log = logging.getLogger("prm9tool.device.session")
-RESTARTED_BEFORE_STORE = (
-    "the valve's values changed after the store was acknowledged (it restarted before the "
-    "store?): its stored set is not the upload"
-)
 __all__ = [
     "DeviceInfo",
     "NotAvailableError",
@@ -99,30 +102,6 @@ class DeviceInfo:
     # the fastest oscilloscope sample rate the link delivers without losing samples (0: the
     # valve's own 5 kHz stream); over CANopen the SYNC + TPDO1 pace of docs/can-link.md
     stream_rate_limit_hz: float = 0.0
-
-
-@dataclass
-class UploadResult:
-    """Outcome of an upload; ``failed_step`` is ``write``, ``verify``, ``store`` or None.
-
-    ``stored`` means verified stored (see the module docstring). ``failure`` says why the step
-    failed when ``mismatches`` do not (a refused store). After a failed upload the session puts
-    the valve's stored parameters back into its working values (:meth:`ValveSession.reload`,
-    no restart): ``reloaded`` says whether that worked, ``reload_error`` why not. ``skipped``:
-    parameters of the set the valve does not have on this link, left out with a warning (never
-    a failed upload).
-    """
-
-    written: int
-    verified: bool
-    stored: bool
-    mismatches: dict[str, tuple[Value, Value]]
-    duration_s: float
-    failed_step: str | None
-    reloaded: bool = False
-    reload_error: str | None = None
-    failure: str | None = None
-    skipped: tuple[str, ...] = ()  # parameters the valve lacks on this link (not uploaded)
 
 
 class ValveSession(ABC):
@@ -262,7 +241,7 @@ class ValveSession(ABC):
         """After the acknowledged store: (mismatches, why) when the stored set may not be the
         upload, None when it is. Here: every value read back once more and compared."""
         del marker
-        changed = _differences(params, values, self._read_entries(params, None, None))
+        changed = differences(params, values, self._read_entries(params, None, None))
         return (changed, RESTARTED_BEFORE_STORE) if changed else None
 
     # --- single values --------------------------------------------------------------------
@@ -328,7 +307,7 @@ class ValveSession(ABC):
             verify = Steps(progress, total, len(params), step)
             params = [p for p in params if p.mnemonic not in self.unavailable]
             actual = self._verify_entries(params, values, verify, cancel)
-            mismatches = _differences(params, values, actual)
+            mismatches = differences(params, values, actual)
             if mismatches:
                 return self._failed(written, mismatches, start, "verify")
             step, verified = "store", True
@@ -348,11 +327,11 @@ class ValveSession(ABC):
         except OperationCancelledError as exc:
             raise OperationCancelledError(exc.step, reload_outcome(self._revert())) from exc
         except CommunicationError as exc:
-            raise _step_error(exc, step, self._revert(), writing.done, verified) from exc
+            raise step_error(exc, step, self._revert(), writing.done, verified) from exc
         if progress:
             progress(total, total, "store")
         skipped = tuple(sorted(set(values) & self.unavailable))
-        return UploadResult(written, True, True, {}, _since(start), None, skipped=skipped)
+        return UploadResult(written, True, True, {}, since(start), None, skipped=skipped)
 
     def download(
         self, progress: Progress | None = None, cancel: threading.Event | None = None
@@ -404,7 +383,7 @@ class ValveSession(ABC):
             verified,
             False,
             mismatches,
-            _since(start),
+            since(start),
             step,
             problem is None,
             problem,
@@ -432,63 +411,3 @@ class ValveSession(ABC):
         for param in params:
             param.check_raw(values[param.mnemonic])
         return params
-
-
-def _differences(
-    params: Sequence[Parameter],
-    values: Mapping[str, Value],
-    actual: Mapping[str, Value | SdoAbortError],
-) -> dict[str, tuple[Value, Value]]:
-    """``{mnemonic: (uploaded, read back)}`` of every value that reads back differently."""
-    return {
-        p.mnemonic: (values[p.mnemonic], _shown(actual[p.mnemonic]))
-        for p in params
-        if actual[p.mnemonic] != values[p.mnemonic]
-    }
-
-
-def _shown(value: Value | SdoAbortError) -> Value:
-    return str(value) if isinstance(value, SdoAbortError) else value
-
-
-def _since(start: float) -> float:
-    return time.monotonic() - start
-
-
-def reload_outcome(problem: str | None) -> str:
-    """What a failed upload left in the valve, given why the reload failed (None: it worked)."""
-    if problem is None:
-        return "the valve's working parameters were reset to its stored ones (no restart)"
-    return (
-        "resetting its working parameters to the stored ones failed too "
-        f"({problem}): restart the valve, hydraulics off, to return to them"
-    )
-
-
-def _step_error(
-    exc: CommunicationError, step: str, problem: str | None, written: int, verified: bool
-) -> CommunicationError:
-    """``exc`` with the failed step and the valve's state named; ``problem``: reload failure.
-
-    ``written`` and ``verified`` say how far the upload got; they travel as attributes.
-    """
-    number = list(STEPS).index(step) + 1
-    if step != "store":
-        outcome = f"nothing was stored; {reload_outcome(problem)}"
-    elif problem is None:
-        outcome = (
-            "the store may not have completed: the valve now holds either its previous "
-            "parameters or the complete new set, working and stored alike — download to check"
-        )
-    else:
-        outcome = (
-            "the store may not have completed: after a restart the valve holds either its "
-            "previous parameters or the complete new set — download to check "
-            f"(resetting its working parameters failed too: {problem})"
-        )
-    error = type(exc)(f"upload failed while {STEPS[step]} (step {number} of 3): {exc}; {outcome}")
-    error.step = step  # type: ignore[attr-defined]
-    error.reloaded = problem is None  # type: ignore[attr-defined]
-    error.written = written  # type: ignore[attr-defined]
-    error.verified = verified  # type: ignore[attr-defined]
-    return error

@@ -19,8 +19,6 @@ from __future__ import annotations
 from abc import ABC, abstractmethod
 from typing import Any
 
-# every object a setpoint link writes, whatever the link (a refusal of one stops the generator)
-SETPOINT_OBJECTS = ("SETPOVR", "SETPOVRON", "POSSETP", "PRCSETP", "RPDO1TIMER")
 KEEPALIVE_S = 0.1  # the override's watchdog is 500 ms; rewrite at least this often
 
 

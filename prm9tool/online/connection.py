@@ -11,26 +11,18 @@ measuring points (≈ 7 Hz). A communication error ends the session: the connect
 from __future__ import annotations
 
 import contextlib
-import functools
 import logging
-import queue
 import threading
-import time
 from collections.abc import Callable, Mapping, Sequence
-from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any, cast
 
 from PySide6.QtCore import QObject, Qt, Signal
 
-from prm9tool.errors import CommunicationError, Prm9Error
-from prm9tool.online.polling import Poller, Schedule
+from prm9tool.online.connection_worker import ConnectionWorker, Job
 from prm9tool.online.setpoint_driver import (
     GENERATOR_OBJECTS,
-    SetpointDriver,
-    StreamClock,
-    setpoint_link,
 )
-from prm9tool.translate import error_text
+from prm9tool.online.valve_listing import default_lister, default_opener
 
 if TYPE_CHECKING:
     from prm9tool.online.connection_protocol import ListedValves, ValveIdentity
@@ -41,18 +33,7 @@ log = logging.getLogger(__name__)
 
 Opener = Callable[[object], Any]  # entry -> ValveSession
 Lister = Callable[..., list[Any]]  # (emulator specs[, CAN bus dict]) -> [DeviceEntry]
-PROGRESS_PERIOD_S = 0.05
 OVERRIDE_OBJECTS = tuple(sorted(GENERATOR_OBJECTS))  # a refused generator start names these
-
-
-@dataclass
-class _Job:
-    name: str
-    run: Callable[[Any], object]  # session -> result (runs in the worker)
-    on_done: Callable[[object], None] | None = None  # result -> None (runs in the GUI thread)
-    report: bool = True  # emit operation_finished(name, result)
-    on_error: Callable[[], None] | None = None  # runs in the GUI thread after a failure
-    needs_session: bool = True
 
 
 class ValveConnection(QObject):
@@ -90,20 +71,11 @@ class ValveConnection(QObject):
         the connection already reports online (the GUI puts an emulated -CA valve on its CAN
         bus there); a Prm9Error it raises arrives as ``failed``, the session stays open."""
         super().__init__(parent)
-        self._opener = opener or _default_opener
-        self._lister = lister or _default_lister
-        self._after_open = after_open
-        self._jobs: queue.Queue[_Job | None] = queue.Queue()
-        self._thread: threading.Thread | None = None
-        self._cancel = threading.Event()
-        self._session: Any = None  # touched by the worker thread only
+        self._lister = lister or default_lister
+        self._worker = ConnectionWorker(self, opener or default_opener, after_open)
         self._online = False
         self._device: ValveIdentity | None = None
         self._busy = 0
-        self._last_progress = 0.0
-        self._poller = Poller()  # worker-side state of the periodic reads
-        self._clock = StreamClock()  # the valve's time from its stream (the generator's)
-        self._driver: SetpointDriver | None = None  # worker-side: the running generator
         self._stream_keys: list[str] = []  # GUI-side: keys of the running stream
         self._samples_lost = 0  # GUI-side: lost samples of the running stream
         self._posted.connect(self._on_posted, Qt.ConnectionType.QueuedConnection)
@@ -121,7 +93,7 @@ class ValveConnection(QObject):
         on the GUI thread. Runs in the worker (a remote database may be slow)."""
         hook = self.history
         run = lambda _s: hook.problem() if hook else None  # noqa: E731
-        self._submit(_Job("history_check", run, on_done, report=False))
+        self._submit(Job("history_check", run, on_done, report=False))
 
     def record(self, operation: str, outcome: str, values: Mapping[str, int | str] | None,
                details: Mapping[str, Any] | None = None) -> None:  # fmt: skip
@@ -129,7 +101,7 @@ class ValveConnection(QObject):
         if self.history is not None:
             hook = self.history
             run = lambda s: hook.add(s, operation, outcome, values, details)  # noqa: E731
-            self._submit(_Job("record", run, None, False))
+            self._submit(Job("record", run, None, False))
 
     # --- state --------------------------------------------------------------------------------
     @property
@@ -198,17 +170,17 @@ class ValveConnection(QObject):
             busy = self.tr("The valve connection is busy; wait until it is done.")
             self.failed.emit(busy if self.is_busy else self.tr("Already online; go offline first."))
             return
-        self._ensure_worker()
+        self._worker.start()
         self._set_busy(+1)  # connecting: no second session may be opened meanwhile
         done = lambda: self._set_busy(-1)  # noqa: E731
-        self._submit(_Job("online", lambda _s: self._open(entry), self._on_opened, False, done,
+        self._submit(Job("online", lambda _s: self._worker.open(entry), self._on_opened, False, done,
                           needs_session=False))  # fmt: skip
 
     def go_offline(self) -> None:
         """Close the session (the stream stops); online_changed(False) follows."""
         if self._online:
-            self._cancel.set()
-            self._submit(_Job("offline", lambda _s: self._close(), self._on_closed, False))
+            self._worker.cancel.set()
+            self._submit(Job("offline", lambda _s: self._worker.close(), self._on_closed, False))
 
     def write(self, mnemonic: str, raw: int | str) -> None:
         """Write one value to the valve; failures arrive as ``failed`` and ``write_failed``."""
@@ -218,7 +190,7 @@ class ValveConnection(QObject):
         """Write values to the valve; failures arrive as ``failed`` and ``write_failed``."""
         values, names = dict(values), list(values)
         failed = lambda: self.write_failed.emit(names)  # noqa: E731
-        self._submit(_Job("write", lambda s: s.write_many(values), None, False, failed))
+        self._submit(Job("write", lambda s: s.write_many(values), None, False, failed))
 
     def store(self, values: Mapping[str, int | str] | None = None) -> None:
         """Copy the valve's working values to its non-volatile memory; ``values`` (the whole
@@ -235,7 +207,7 @@ class ValveConnection(QObject):
     def read_many(self, mnemonics: Sequence[str], tag: str = "read") -> None:
         """Read values; the result arrives as operation_finished(tag, {mnemonic: raw})."""
         names = list(mnemonics)
-        self._submit(_Job(tag, lambda s: s.read_many(names)))
+        self._submit(Job(tag, lambda s: s.read_many(names)))
 
     def upload(self, values: Mapping[str, int | str], backup: bool = True) -> None:
         """Write → read back and compare → store; result: operation_finished("upload", …).
@@ -249,14 +221,16 @@ class ValveConnection(QObject):
             if backup:
                 from prm9tool.files.backup import ensure_backup  # *.prm writing, only when needed
 
-                path = ensure_backup(session, self._progress, self._cancel)
+                path = ensure_backup(session, self._worker.progress, self._worker.cancel)
                 if path is not None:
                     self._post(lambda: self.backup_written.emit(str(path)))
                     if self.history is not None:
                         self.history.backup(session, path)
             if self.history is not None:
-                return self.history.upload(session, values, self._progress, self._cancel)
-            return session.upload(values, self._progress, self._cancel)
+                return self.history.upload(
+                    session, values, self._worker.progress, self._worker.cancel
+                )
+            return session.upload(values, self._worker.progress, self._worker.cancel)
 
         self._long_job("upload", run)
 
@@ -264,7 +238,7 @@ class ValveConnection(QObject):
         """Read the valve's file parameters; result: operation_finished(tag, {mnemonic: raw})."""
 
         def run(session: Any) -> object:
-            values = session.download(self._progress, self._cancel)
+            values = session.download(self._worker.progress, self._worker.cancel)
             if self.history is not None:
                 self.history.download(session, values, tag)
             return values
@@ -284,11 +258,11 @@ class ValveConnection(QObject):
         """Run ``work(session)`` in the worker between its polls (a short job: the connection
         does not become busy); ``on_done(result)`` runs on the GUI thread, a failure arrives
         as ``failed`` (or ``lost``)."""
-        self._submit(_Job(name, work, on_done, report=False))
+        self._submit(Job(name, work, on_done, report=False))
 
     def cancel(self) -> None:
         """Ask the running long operation to stop at the next safe point."""
-        self._cancel.set()
+        self._worker.cancel.set()
 
     def restore_factory(self) -> None:
         """Reset the valve to its factory values; result: operation_finished("restore_factory")."""
@@ -303,15 +277,17 @@ class ValveConnection(QObject):
         names = list(keys)
 
         def run(session: Any) -> list[str]:
-            started = self._poller.start_stream(session, names, rate_hz)
-            self._clock.restart(rate_hz)
+            started = self._worker.poller.start_stream(session, names, rate_hz)
+            self._worker.clock.restart(rate_hz)
             return started
 
-        self._submit(_Job("stream_start", run, self._on_stream_started, False))
+        self._submit(Job("stream_start", run, self._on_stream_started, False))
 
     def stop_stream(self) -> None:
         """Stop the stream (``stream_stopped`` follows)."""
-        self._submit(_Job("stream_stop", self._poller.stop_stream, self._on_stream_stopped, False))
+        self._submit(
+            Job("stream_stop", self._worker.poller.stop_stream, self._on_stream_stopped, False)
+        )
 
     def start_generator(self, settings: GeneratorSettings) -> None:
         """Run the setpoint generator's waveform on the valve's setpoint, off the GUI thread
@@ -319,49 +295,44 @@ class ValveConnection(QObject):
         over USB, RPDO1 over CANopen. A refused write arrives as ``failed`` and
         ``write_failed``."""
         refused = lambda: self.write_failed.emit(list(OVERRIDE_OBJECTS))  # noqa: E731
-        run = lambda s: self._start_driver(s, settings)  # noqa: E731
-        self._submit(_Job("generator", run, None, False, refused))
+        run = lambda s: self._worker.start_driver(s, settings)  # noqa: E731
+        self._submit(Job("generator", run, None, False, refused))
 
     def stop_generator(self) -> None:
         """End the waveform and give the setpoint back (SETPOVRON = 0; over CANopen the
         RPDO1 setpoint from before the generator)."""
         refused = lambda: self.write_failed.emit(["SETPOVRON"])  # noqa: E731
-        run = lambda s: self._stop_driver(s, switch_off=True)  # noqa: E731
-        self._submit(_Job("generator_stop", run, None, False, refused))
+        run = lambda s: self._worker.stop_driver(s, switch_off=True)  # noqa: E731
+        self._submit(Job("generator_stop", run, None, False, refused))
 
     def watch_signals(self, keys: Sequence[str]) -> None:
         """Measuring points whose values ``signal_values_changed`` carries (≈ 4 Hz)."""
-        self._poller.watched = list(keys)
+        self._worker.poller.watched = list(keys)
 
     def watch_live(self, mnemonics: Sequence[str]) -> None:
         """Read-only values polled for ``live_values_changed`` (default: the variant's)."""
-        self._poller.live = list(mnemonics)
-        self._poller.live_explicit = True
+        self._worker.poller.live = list(mnemonics)
+        self._worker.poller.live_explicit = True
 
     def shutdown(self, timeout_s: float = 3.0) -> None:
         """Close the session and end the worker thread (application exit)."""
-        if self._thread is None:
-            return
-        self._cancel.set()
-        self._jobs.put(None)
-        self._thread.join(timeout_s)
-        self._thread = None
+        self._worker.stop(timeout_s)
 
     # --- GUI-thread helpers --------------------------------------------------------------------
-    def _submit(self, job: _Job) -> None:
+    def _submit(self, job: Job) -> None:
         if job.needs_session and not self._online:
             self.failed.emit(self.tr("Not connected to a valve."))
             return
-        self._jobs.put(job)
+        self._worker.jobs.put(job)
 
     def _long_job(self, name: str, run: Callable[[Any], object]) -> None:
         if not self._online:
             self.failed.emit(self.tr("Not connected to a valve."))
             return
-        self._cancel.clear()
+        self._worker.cancel.clear()
         self._set_busy(+1)
         done = lambda: self._set_busy(-1)  # noqa: E731
-        self._jobs.put(_Job(name, self._noting_moves(run), lambda _r: done(), on_error=done))
+        self._worker.jobs.put(Job(name, self._noting_moves(run), lambda _r: done(), on_error=done))
 
     def _noting_moves(self, run: Callable[[Any], object]) -> Callable[[Any], object]:
         """``run``, after which a changed identity of the valve (a restart that moved it to
@@ -396,11 +367,6 @@ class ValveConnection(QObject):
     def _on_posted(self, action: object) -> None:
         assert callable(action)
         action()
-
-    def _ensure_worker(self) -> None:
-        if self._thread is None:
-            self._thread = threading.Thread(target=self._worker_main, name="valve", daemon=True)
-            self._thread.start()
 
     def _on_opened(self, info: object) -> None:
         self._set_busy(-1)
@@ -438,64 +404,11 @@ class ValveConnection(QObject):
             self._samples_lost = count
             self.samples_lost_changed.emit(count)
 
-    # --- worker thread -------------------------------------------------------------------------
-    def _worker_main(self) -> None:
-        schedule = Schedule()
-        while True:
-            streaming = bool(self._poller.stream_keys)
-            # offline there is nothing to read: wait for the next job
-            wait = (
-                schedule.wait_s(time.monotonic(), streaming) if self._session is not None else None
-            )
-            try:
-                job = self._jobs.get(timeout=wait)
-            except queue.Empty:
-                job = _IDLE
-            if job is None:
-                self._close()
-                return
-            if job is not _IDLE:
-                self._execute(job)
-            if self._session is not None:
-                due = schedule.take_due(time.monotonic(), bool(self._poller.stream_keys))
-                if any(due):
-                    self._guarded(functools.partial(self._poll, *due))
-
-    def _execute(self, job: _Job) -> None:
-        def run() -> None:
-            if job.needs_session and self._session is None:
-                raise CommunicationError("The valve is not connected.")
-            result = job.run(self._session)
-            self._post(lambda: self._finish(job, result))
-
-        if not self._guarded(run) and job.on_error is not None:
-            self._post(job.on_error)
-
-    def _finish(self, job: _Job, result: object) -> None:
+    def _finish(self, job: Job, result: object) -> None:
         if job.on_done is not None:
             job.on_done(result)
         if job.report:
             self.operation_finished.emit(job.name, result)
-
-    def _guarded(self, work: Callable[[], None]) -> bool:
-        """Run ``work``; turn errors into signals. Returns False if it failed."""
-        try:
-            work()
-        except CommunicationError as exc:
-            self._close()
-            lost = exc  # texts are translated on the GUI thread, where the translators live
-            self._post(lambda: self._report_lost(error_text(lost)))
-            return False
-        except Prm9Error as exc:
-            failure = exc
-            self._post(lambda: self.failed.emit(error_text(failure)))
-            return False
-        except Exception as exc:  # a bug must not kill the worker thread
-            log.exception("valve worker")
-            message = f"{type(exc).__name__}: {exc}"
-            self._post(lambda: self.failed.emit(message))
-            return False
-        return True
 
     def _report_lost(self, message: str) -> None:
         if self._online:
@@ -503,113 +416,3 @@ class ValveConnection(QObject):
             self.lost.emit(message)
         else:
             self.failed.emit(message)
-
-    def _open(self, entry: object) -> object:
-        from prm9tool.device.canlink.typekeys import TypeKeyNeededError
-
-        self._cancel.clear()
-        try:
-            self._session = self._opener(entry)
-        except TypeKeyNeededError as exc:  # the GUI asks for the key on the label, then again
-            device_id, serial = str(getattr(entry, "device_id", entry)), exc.serial
-            told = exc.derived.config.value
-            self._post(lambda: self.type_key_needed.emit(device_id, serial, told))
-            raise
-        info = self._session.identify()
-        self._poller.reset(info)
-        if self._after_open is not None:
-            session = self._session
-            threading.Thread(
-                target=self._run_after_open, args=(session,), name="valve-after-open", daemon=True
-            ).start()
-        return info
-
-    def _run_after_open(self, session: object) -> None:
-        assert self._after_open is not None
-        try:
-            self._after_open(session)
-        except Prm9Error as exc:
-            failure = exc
-            self._post(lambda: self.failed.emit(error_text(failure)))
-        except Exception:  # a bug must not pass silently
-            log.exception("after opening the session")
-
-    def _start_driver(self, session: Any, settings: GeneratorSettings) -> None:
-        self._stop_driver(session, switch_off=False)
-        driver = SetpointDriver(session, settings, self._on_driver_refused, self._clock)
-        driver.start()
-        self._driver = driver
-
-    def _stop_driver(self, session: Any, switch_off: bool) -> None:
-        driver, self._driver = self._driver, None
-        if driver is not None:
-            driver.stop(switch_off)
-        elif switch_off and session is not None:
-            setpoint_link(session).release()  # what a previous session may have left on
-
-    def _on_driver_refused(self, mnemonic: str, exc: Prm9Error) -> None:
-        """The driver's thread: the valve refused one of its writes; the driver has ended."""
-        text = error_text(exc)
-
-        def report() -> None:
-            self.failed.emit(text)
-            self.write_failed.emit([mnemonic])
-
-        self._post(report)
-
-    def _close(self) -> None:
-        self._stop_driver(None, switch_off=False)  # the link may be gone: nothing to write
-        session, self._session = self._session, None
-        self._poller.forget_streams()
-        if session is not None:
-            try:
-                session.close()
-            except Prm9Error as exc:  # closing a broken link must not raise
-                log.debug("closing the session failed: %s", exc)
-
-    def _progress(self, done: int, total: int, step: str) -> None:
-        now = time.monotonic()
-        if done < total and now - self._last_progress < PROGRESS_PERIOD_S:
-            return
-        self._last_progress = now
-        self._post(lambda: self.progress.emit(done, total, step))
-
-    def _poll(self, stream: bool, status: bool, signals: bool) -> None:
-        result = self._poller.poll(self._session, status, signals, stream)
-        if result.samples is not None:
-            samples = result.samples
-            self._clock.samples_arrived(len(samples))
-            self._post(lambda: self.samples_received.emit(samples))
-        if result.samples_lost is not None:
-            lost = result.samples_lost
-            self._post(lambda: self._set_samples_lost(lost) if self._stream_keys else None)
-        if result.status is not None:
-            valve_status = result.status
-            self._post(lambda: self.status_changed.emit(valve_status))
-        if result.live:
-            live = result.live
-            self._post(lambda: self.live_values_changed.emit(live))
-        if result.signals:
-            values = result.signals
-            self._post(lambda: self.signal_values_changed.emit(values))
-
-
-_IDLE = _Job("idle", lambda _s: None)
-
-
-def _default_opener(entry: object) -> Any:
-    from prm9tool.device import factory
-
-    return factory.open_session(entry)  # type: ignore[arg-type]
-
-
-def _default_lister(emulators: Sequence[str], can: Mapping[str, Any] | None = None) -> list[Any]:
-    from prm9tool.device import factory
-
-    if can is None:
-        return list(factory.list_devices(emulators))
-    rate = can.get("bitrate")
-    options = factory.CanOptions(
-        str(can["interface"]), str(can["channel"]), int(rate) if rate else None
-    )
-    return list(factory.list_devices(emulators, options))

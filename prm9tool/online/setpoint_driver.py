@@ -28,10 +28,11 @@ import time
 from collections.abc import Callable
 from typing import TYPE_CHECKING, Any
 
-from prm9tool.device.setpoint import SETPOINT_OBJECTS, OverrideSetpoint, SetpointLink
+from prm9tool.catalogue.commissioning import SETPOINT_OBJECTS
 from prm9tool.errors import CommunicationError, Prm9Error
 
-if TYPE_CHECKING:  # numpy stays out of the window's start-up (tests/test_gui_app.py)
+if TYPE_CHECKING:  # numpy and the device layer stay out of the window's start-up
+    from prm9tool.device.setpoint import SetpointLink  # (tests/test_gui_app.py)
     from prm9tool.scope import GeneratorSettings
 
 GENERATOR_OBJECTS = frozenset(SETPOINT_OBJECTS)  # what a refusal names when it stops a generator
@@ -173,4 +174,8 @@ class SetpointDriver:
 def setpoint_link(session: Any) -> SetpointLink:
     """The session's way to the setpoint (the service override for a session without one)."""
     make = getattr(session, "setpoint_link", None)
-    return make() if make is not None else OverrideSetpoint(session)
+    if make is not None:
+        return make()  # type: ignore[no-any-return]  # the session is typed Any here
+    from prm9tool.device.setpoint import OverrideSetpoint  # only once a generator starts
+
+    return OverrideSetpoint(session)

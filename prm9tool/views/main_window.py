@@ -6,13 +6,12 @@ own. It keeps one document object for its whole life, so every view stays connec
 
 from __future__ import annotations
 
-from collections.abc import Callable
 from pathlib import Path
 from typing import TYPE_CHECKING
 
 from PySide6.QtCore import QByteArray, QEvent, QLocale, QSettings, Qt
 from PySide6.QtGui import QCloseEvent, QDragEnterEvent, QDropEvent
-from PySide6.QtWidgets import QApplication, QMainWindow, QScrollArea, QStackedWidget, QWidget
+from PySide6.QtWidgets import QApplication, QMainWindow, QWidget
 
 from prm9tool import i18n
 from prm9tool.catalogue import Access
@@ -25,6 +24,7 @@ from prm9tool.online.sync import ValveSync
 from prm9tool.online.valve_control import ValveControl
 from prm9tool.views import prompts
 from prm9tool.views.access_dialog import ChangePasswordDialog, PasswordDialog
+from prm9tool.views.action_state import enabled_actions
 from prm9tool.views.actions import MainActions
 from prm9tool.views.compare_workflow import CompareWorkflow
 from prm9tool.views.dcf_export import DcfExport
@@ -34,6 +34,7 @@ from prm9tool.views.file_workflow import FileWorkflow
 from prm9tool.views.help_dialog import HelpWindow, about_html, open_homepage
 from prm9tool.views.icons import icon
 from prm9tool.views.link_guard import LinkGuard
+from prm9tool.views.page_stack import PageStack
 from prm9tool.views.parameter_view import ParameterListView
 from prm9tool.views.record_actions import RecordActions
 from prm9tool.views.status_bar import MainStatusBar
@@ -46,7 +47,6 @@ if TYPE_CHECKING:  # imported when first shown: it loads pyqtgraph
 
 VIEWS = ("diagram", "parameters", "scope")
 VIEW_KEY = "window/view"
-MAX_PAGE_WIDTH = 960  # the manual's minimum display is 1024 × 768
 
 
 class MainWindow(QMainWindow):
@@ -83,12 +83,11 @@ class MainWindow(QMainWindow):
         self.status = MainStatusBar(self)
         self.setStatusBar(self.status)
         self.parameter_view = ParameterListView(doc, access, self)
-        self.stack = QStackedWidget(self)
-        self.views: dict[str, QWidget] = _LazyViews(self._build_view)
-        self._pages: dict[str, QWidget] = {}
+        self.stack = PageStack(VIEWS, self._build_view, self)
+        self.views = self.stack.views
         self._scope: ScopeWidget | None = None  # built when first shown
-        self._add_page("diagram", self._make_diagram_view())
-        self._add_page("parameters", self.parameter_view)
+        self.stack.add("diagram", self._make_diagram_view())
+        self.stack.add("parameters", self.parameter_view)
         self.setCentralWidget(self.stack)
         self.status_window: ValveStatusWindow | None = None
         self.help_window: HelpWindow | None = None
@@ -119,18 +118,13 @@ class MainWindow(QMainWindow):
         self._scope.tuning_requested.connect(lambda: self.show_tuning_window("position"))
         return self._scope
 
-    def _add_page(self, name: str, view: QWidget) -> None:
-        self.views[name] = view
-        self._pages[name] = _page(view)
-        self.stack.insertWidget(VIEWS.index(name), self._pages[name])
-
     def _build_view(self, name: str) -> QWidget:
         """The oscilloscope is built when first needed: it loads pyqtgraph, which would
         otherwise cost a quarter of the start-up time."""
         if name != "scope":
             raise KeyError(name)
         view = self._make_scope_view()
-        self._add_page(name, view)
+        self.stack.add(name, view)
         return view
 
     def show_tuning_window(self, loop: str = "position") -> None:
@@ -160,15 +154,13 @@ class MainWindow(QMainWindow):
         """Show ``diagram``, ``parameters`` or ``scope`` in the main area."""
         if name == "scope" and not self.connection.is_online:
             name = "parameters" if self.current_view() == "scope" else self.current_view()
-        self.views[name]  # builds the view on first use
-        self.stack.setCurrentWidget(self._pages[name])
+        self.stack.show_page(name)
         self.commands[f"view_{name}"].setChecked(True)
         self.settings.setValue(VIEW_KEY, name)
 
     def current_view(self) -> str:
         """Name of the view shown."""
-        current = self.stack.currentWidget()
-        return next(name for name, page in self._pages.items() if page is current)
+        return self.stack.current_name()
 
     # --- wiring --------------------------------------------------------------------------------------
     def _connect_actions(self) -> None:
@@ -261,30 +253,8 @@ class MainWindow(QMainWindow):
             self.show_view("parameters")
 
     def _update_actions(self, *_args: object) -> None:
-        a, online, busy = self.commands, self.connection.is_online, self.connection.is_busy
-        ready = online and not busy
-        enabled = {
-            "save": self.doc.modified or self.doc.path is None,
-            "undo": self.undo.stack.canUndo(),
-            "redo": self.undo.stack.canRedo(),
-            "online": not online and not busy,
-            "hid_configuration": not online and not busy,  # the valve is chosen before
-            "can_bus": not online and not busy,
-            "export_dcf": self.doc.variant.canopen,
-            "od_browser": ready,
-            "offline": online,
-            "upload": ready,
-            "download": ready,
-            "compare_valve": ready,
-            "restart": ready,
-            "restore_factory": not busy,
-            "view_scope": online,
-            "canopen": self.doc.variant.canopen,
-            "change_password": self.access.level is Access.EXPERT,
-            "valve_selection": not online,
-            "new": not online,
-            "open": not busy,
-        }
+        a = self.commands
+        enabled = enabled_actions(self.doc, self.undo, self.access, self.connection)
         for name, value in enabled.items():
             a[name].setEnabled(value)
         a["level_expert" if self.access.level is Access.EXPERT else "level_basic"].setChecked(True)
@@ -419,31 +389,6 @@ class MainWindow(QMainWindow):
         if path is not None:
             event.acceptProposedAction()
             self.files.open_path(path)
-
-
-class _LazyViews(dict[str, QWidget]):
-    """The views by name; a view missing at first is built by ``build`` when asked for."""
-
-    def __init__(self, build: Callable[[str], QWidget]) -> None:
-        super().__init__()
-        self._build = build
-
-    def __missing__(self, name: str) -> QWidget:
-        return self._build(name)
-
-
-def _page(view: QWidget) -> QWidget:
-    """A view as a page of the main area; a view wider than a 1024-pixel screen scrolls.
-
-    The stack is as wide as its widest page, so one wide view would widen the whole window.
-    """
-    if view.minimumSizeHint().width() <= MAX_PAGE_WIDTH:
-        return view
-    area = QScrollArea()
-    area.setWidgetResizable(True)
-    area.setFrameShape(QScrollArea.Shape.NoFrame)
-    area.setWidget(view)
-    return area
 
 
 def _dropped_prm(event: QDragEnterEvent | QDropEvent) -> Path | None:

@@ -14,14 +14,12 @@ on. Online only, like PRM9.exe.
 
 from __future__ import annotations
 
-from collections.abc import Callable
 from pathlib import Path
 
 import numpy as np
 from PySide6.QtCore import QEvent, Qt, QTimer, Signal
-from PySide6.QtGui import QCloseEvent, QHideEvent, QImageWriter, QShowEvent
+from PySide6.QtGui import QCloseEvent, QHideEvent, QShowEvent
 from PySide6.QtWidgets import (
-    QFileDialog,
     QGridLayout,
     QLabel,
     QPushButton,
@@ -31,18 +29,18 @@ from PySide6.QtWidgets import (
 )
 
 from prm9tool.catalogue.signals import BY_KEY, signals_for
-from prm9tool.i18n import format_significant
 from prm9tool.model.document import ParameterDocument
 from prm9tool.online.connection_protocol import ScopeConnection
-from prm9tool.online.valve_control import ValveControl, blocker_text, status_blocker
-from prm9tool.scope import Capture, GeneratorSettings, write_csv
-from prm9tool.views import prompts
+from prm9tool.online.valve_control import ValveControl, status_blocker
+from prm9tool.scope import Capture, GeneratorSettings
 from prm9tool.views.scope_display import ScopeDisplay
+from prm9tool.views.scope_export import ScopeExport
 from prm9tool.views.scope_generator import GeneratorPanel, SetpointGenerator
 from prm9tool.views.scope_panels import ChannelPanel, ControlPanel
 from prm9tool.views.scope_plot import ScopePlot
 from prm9tool.views.scope_readout import CursorPanel, StepPanel
 from prm9tool.views.scope_start import GeneratorStart, measure_against_demand
+from prm9tool.views.scope_status import ScopeStatusText
 
 REDRAW_MS = 33  # ~30 Hz
 
@@ -85,6 +83,8 @@ class ScopeWidget(QWidget):
         self.controls = ControlPanel()
         self.generator_panel = GeneratorPanel()
         self.display = ScopeDisplay(self.plot, self.cursor_panel, self.step_panel, self)
+        self.exporter = ScopeExport(self.display, self.plot, self._say, self)
+        self._texts = ScopeStatusText(self._connection, self.display, self)
         self.status = QLabel()
         self.status.setTextInteractionFlags(Qt.TextInteractionFlag.TextSelectableByMouse)
         self.status.setWordWrap(True)
@@ -137,8 +137,8 @@ class ScopeWidget(QWidget):
         c.rate_changed.connect(self._on_rate_changed)
         c.window_changed.connect(self._on_window_changed)
         c.trigger_changed.connect(self._on_trigger_changed)
-        c.csv_requested.connect(self._on_csv_requested)
-        c.png_requested.connect(self._on_png_requested)
+        c.csv_requested.connect(self.exporter.ask_csv)
+        c.png_requested.connect(self.exporter.ask_png)
         self.display.held.connect(self._on_display_held)
         self.cursor_panel.cursors_toggled.connect(self.plot.set_cursors_visible)
         self.generator_panel.start_requested.connect(self._on_generator_start_requested)
@@ -327,8 +327,8 @@ class ScopeWidget(QWidget):
         parts = (
             self._generator_note,
             self._recording_note,
-            self._blocked_text(),
-            self._state_text(),
+            self._texts.blocked(self._status),
+            self._texts.state(self._running),
         )
         self._say(" ".join(filter(None, parts)))
 
@@ -337,43 +337,6 @@ class ScopeWidget(QWidget):
         self._status = status
         if status_blocker(status) != before:
             self._update_status()
-
-    def _blocked_text(self) -> str:
-        """Why the valve does not follow its setpoint (empty when it does, or offline)."""
-        reason = status_blocker(self._status) if self._connection.is_online else None
-        if reason is None:
-            return ""
-        text = blocker_text(reason, self._status)
-        return self.tr("The valve does not follow its setpoint: {0}").format(text)
-
-    def _state_text(self) -> str:
-        if not self._connection.is_online:
-            return self._offline_text()
-        if not self._running:
-            return self.tr("Stopped. Choose up to three measuring points and press Start.")
-        if self.display.engine.done:
-            return self.tr("Single capture complete. Resume arms the trigger again.")
-        if self.display.frozen:
-            return self.tr("Paused: zoom and pan with the mouse; recording continues.")
-        if self.display.waiting:
-            return self.tr("Waiting for the trigger…")
-        return self._recording_text()
-
-    def _recording_text(self) -> str:
-        rate = self.display.capture.rate_hz if self.display.capture else 0
-        lost = self._connection.samples_lost
-        if not lost:
-            return self.tr("Recording at {0} Hz.").format(rate)
-        received = self.display.capture.buffer.total if self.display.capture else 0
-        real = rate * received / (received + lost)  # what the link really delivers
-        return self.tr(
-            "Recording at {0} Hz of the {1} Hz asked for: {2} samples lost on the link."
-        ).format(format_significant(real, 3), rate, lost)
-
-    def _offline_text(self) -> str:
-        return self.tr(
-            "The oscilloscope needs a connected valve: go online (Communication → Online)."
-        )
 
     def _say(self, message: str) -> None:
         self.status.setText(message)
@@ -410,40 +373,11 @@ class ScopeWidget(QWidget):
     # --- export ------------------------------------------------------------------------------
     def export_csv(self, path: str | Path, whole: bool) -> int:
         """Write the visible window (or the whole recording) as CSV; returns the row count."""
-        capture = self.display.capture
-        if capture is None:
-            raise ValueError(self.tr("Nothing recorded yet."))
-        t, values = self.display.whole_data() if whole else self.display.visible_data()
-        with open(path, "w", encoding="utf-8", newline="") as out:
-            return write_csv(out, t, values, capture.signals)
+        return self.exporter.csv(path, whole)
 
     def export_png(self, path: str | Path) -> None:
         """Save the plot with its legend as a PNG image."""
-        writer = QImageWriter(str(path), b"PNG")  # PNG whatever the file name ends with
-        if not writer.write(self.plot.render_image()):
-            raise OSError(self.tr("Could not write {0}.").format(path))
-
-    def _on_csv_requested(self, whole: bool) -> None:
-        path, _ = QFileDialog.getSaveFileName(
-            self, self.tr("Export CSV"), "scope.csv", self.tr("CSV files (*.csv)")
-        )
-        if path:
-            self._report_export(lambda: self.export_csv(path, whole), path)
-
-    def _on_png_requested(self) -> None:
-        path, _ = QFileDialog.getSaveFileName(
-            self, self.tr("Export PNG"), "scope.png", self.tr("PNG images (*.png)")
-        )
-        if path:
-            self._report_export(lambda: self.export_png(path), path)
-
-    def _report_export(self, action: Callable[[], object], path: str) -> None:
-        try:
-            action()
-        except (OSError, ValueError) as exc:
-            prompts.inform(self, prompts.Icon.Warning, self.tr("Export"), str(exc))
-        else:
-            self._say(self.tr("Saved {0}.").format(path))
+        self.exporter.png(path)
 
     # --- Qt events ---------------------------------------------------------------------------
     def closeEvent(self, event: QCloseEvent) -> None:

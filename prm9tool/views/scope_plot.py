@@ -1,4 +1,5 @@
-"""The oscilloscope's plot: one ViewBox and axis per channel, A/B cursors, a live legend.
+"""The oscilloscope's plot: one ViewBox and axis per channel, A/B cursors, a live legend
+(``scope_legend.py``).
 
 Channel 1 uses the plot's own ViewBox and left axis; channels 2 and 3 get their own ViewBoxes
 (x-linked, stacked below the main one so the mouse and the cursors stay on it) with axes on the
@@ -14,129 +15,30 @@ grid is an opaque item of its own under all three views, the y axes are cached p
 
 from __future__ import annotations
 
-import math
 from collections.abc import Sequence
 
 import numpy as np
 import pyqtgraph as pg
-from PySide6.QtCore import QSize, Qt, Signal
-from PySide6.QtGui import QFontMetrics, QImage, QResizeEvent
+from PySide6.QtCore import Qt, Signal
+from PySide6.QtGui import QImage
 from PySide6.QtWidgets import (
     QGraphicsItem,
-    QGridLayout,
     QHBoxLayout,
-    QLabel,
-    QToolButton,
     QVBoxLayout,
     QWidget,
 )
 
 from prm9tool.catalogue.signals import MAX_CHANNELS
 from prm9tool.catalogue.signals import Signal as MeasuringPoint
-from prm9tool.i18n import format_significant, text
+from prm9tool.i18n import text
 from prm9tool.scope import axis_ranges, peak_decimate
 from prm9tool.views.localized_axis import LocalizedAxis
 from prm9tool.views.scope_items import CursorLine, PlotGrid
+from prm9tool.views.scope_legend import COLOURS, LegendEntry
 
-COLOURS = ("#ffd43b", "#4dd0e1", "#ff7eb6")  # channel 1, 2, 3
 CURSOR_COLOUR = "#e0e0e0"
 SHARED_AXIS_COLOUR = "#c8c8c8"  # tick labels of an axis two channels share
 SHARED_LABEL_CHARS = 72  # longer joined names do not fit a 520-pixel plot: channel numbers instead
-LIVE_COLOUR = "#7a7a7a"  # legend values newer than the held trace
-
-
-def _format(value: float, unit: str) -> str:
-    """A value with 4 significant digits and its unit ('—' for NaN)."""
-    return "—" if math.isnan(value) else f"{format_significant(value, 4)} {unit}"
-
-
-class _ElidedLabel(QLabel):
-    """A label that shortens its text with "…" when narrower than the text (full: tooltip)."""
-
-    def __init__(self) -> None:
-        super().__init__()
-        self._full = ""
-
-    def set_full_text(self, full: str) -> None:
-        """Show ``full``, elided to the label's width."""
-        self._full = full
-        self.setToolTip(full)
-        self._elide()
-        self.updateGeometry()
-
-    def sizeHint(self) -> QSize:
-        """Wide enough for the whole text."""
-        width = self.fontMetrics().horizontalAdvance(self._full) + 4
-        return QSize(width, super().sizeHint().height())
-
-    def minimumSizeHint(self) -> QSize:
-        """Narrow: the text is elided instead."""
-        return QSize(40, super().minimumSizeHint().height())
-
-    def resizeEvent(self, event: QResizeEvent) -> None:
-        """Elide the text to the new width."""
-        super().resizeEvent(event)
-        self._elide()
-
-    def _elide(self) -> None:
-        metrics = self.fontMetrics()
-        self.setText(metrics.elidedText(self._full, Qt.TextElideMode.ElideRight, self.width()))
-
-
-class _LegendEntry(QWidget):
-    """Colour, name and autoscale button of one channel above its value.
-
-    The value has a label of its own with a fixed width, so a new value never re-lays out
-    the window (that would cost a full repaint at every legend update). While the plot holds
-    a recording and the valve's values go on arriving, the value is marked as live.
-    """
-
-    def __init__(self, slot: int, parent: QWidget | None = None) -> None:
-        super().__init__(parent)
-        self.swatch = QLabel("■")
-        self.swatch.setStyleSheet(f"color: {COLOURS[slot]}")
-        self.name = _ElidedLabel()
-        self.value = QLabel()
-        bold = self.value.font()
-        bold.setBold(True)
-        self.value.setFont(bold)
-        self.autoscale = QToolButton()  # a framed button, not a bare word
-        grid = QGridLayout(self)
-        grid.setContentsMargins(0, 0, 12, 0)
-        grid.setHorizontalSpacing(4)
-        grid.setVerticalSpacing(0)
-        grid.addWidget(self.swatch, 0, 0)
-        grid.addWidget(self.name, 0, 1)
-        grid.addWidget(self.autoscale, 0, 2)
-        grid.addWidget(self.value, 1, 0, 1, 3)
-        grid.setColumnStretch(3, 1)  # the button next to the name, the space after it
-        self._unit = ""
-        self._live_prefix = ""
-        self._value = math.nan
-        self._live = False
-
-    def set_signal(self, signal: MeasuringPoint) -> None:
-        """Show ``signal``'s name and unit."""
-        self._unit = signal.unit
-        self.name.set_full_text(text(signal.text))  # the unit is in the value below
-        self.name.setToolTip(f"{text(signal.text)} [{signal.unit}]")
-        self.set_value(math.nan)
-
-    def set_live_texts(self, prefix: str, tooltip: str) -> None:
-        """The word marking a live value while the plot holds, and its explanation."""
-        self._live_prefix = prefix
-        self.value.setToolTip(tooltip)
-        widest = f"{prefix} −00000.0 mA"
-        self.value.setFixedWidth(QFontMetrics(self.value.font()).horizontalAdvance(widest) + 4)
-        self.set_value(self._value, self._live)
-
-    def set_value(self, value: float, live: bool = False) -> None:
-        """Show ``value``; ``live``: newer than the held trace."""
-        if live != self._live:  # a style change re-polishes the label: only when it changes
-            self.value.setStyleSheet(f"color: {LIVE_COLOUR}; font-style: italic" if live else "")
-        self._value, self._live = value, live
-        shown = _format(value, self._unit)
-        self.value.setText(f"{self._live_prefix} {shown}" if live else shown)
 
 
 class ScopePlot(QWidget):
@@ -178,7 +80,7 @@ class ScopePlot(QWidget):
             view.sigRangeChangedManually.connect(lambda *_, s=slot: self._on_manual_range(s))
         self.curves = [self._make_curve(slot) for slot in range(MAX_CHANNELS)]
         self.cursors = [self._make_cursor(name) for name in ("A", "B")]
-        self.legend = [_LegendEntry(slot) for slot in range(MAX_CHANNELS)]
+        self.legend = [LegendEntry(slot) for slot in range(MAX_CHANNELS)]
         self._same_scale = True
         self._units: list[str] = []
         self._signals: list[MeasuringPoint] = []

@@ -20,7 +20,7 @@ from prm9tool.catalogue.signals import MAX_CHANNELS
 from prm9tool.catalogue.signals import Signal as MeasuringPoint
 from prm9tool.i18n import format_number, format_significant, text
 from prm9tool.scope import CursorReadout, StepMeasurement, Verdict
-from prm9tool.views.scope_plot import COLOURS
+from prm9tool.views.scope_legend import COLOURS
 
 
 def _value(value: float, unit: str, digits: int = 4) -> str:

@@ -11,28 +11,23 @@ from collections.abc import Callable, Mapping
 from dataclasses import dataclass
 from typing import Any
 
-from PySide6.QtCore import QObject, QSettings, Qt, QTime, QTimer, Signal
+from PySide6.QtCore import QObject, QSettings, Signal
 from PySide6.QtWidgets import QDialog, QProgressDialog, QWidget
 
-from prm9tool.catalogue import CATALOGUE, Access, variant_label
 from prm9tool.catalogue.typekey import TypeKey
 from prm9tool.errors import TypeKeyError
 from prm9tool.model.access import AccessModel
 from prm9tool.model.document import ParameterDocument, Raw
 from prm9tool.model.undo import DocumentUndo
 from prm9tool.online.connection import ValveConnection
-from prm9tool.online.connection_protocol import ListedValves, UploadOutcome, ValveListing
+from prm9tool.online.connection_protocol import ListedValves, ValveListing
 from prm9tool.online.sync import ValveSync
-from prm9tool.translate import error_text, translated
+from prm9tool.translate import error_text
 from prm9tool.views import prompts
-from prm9tool.views.hid_dialog import (
-    SELECTED_KEY,
-    UNUSABLE,
-    HidConfigurationDialog,
-    saved_emulators,
-)
-from prm9tool.views.history_policy import may_upload
 from prm9tool.views.online_dialogs import DiffChoice, OnlineDiffDialog, RestartDialog
+from prm9tool.views.operation_progress import OperationProgress
+from prm9tool.views.valve_finder import ValveFinder
+from prm9tool.views.valve_upload import ValveUpload
 
 COMPARE = "compare"  # download made on going online, to compare with the document
 AFTER_RESTART = "after_restart"
@@ -56,18 +51,17 @@ class ValveWorkflow(QObject):
     ) -> None:
         super().__init__(window)
         self._window = window
-        self._access = access
         self._doc = doc
         self._undo = undo
         self._connection = connection
         self._sync = sync
         self._settings = settings
-        self.progress_dialog: QProgressDialog | None = None
-        self._operation = ""
+        self.progress = OperationProgress(window, connection.cancel)
+        self.uploads = ValveUpload(
+            window, doc, connection, sync, self.progress, self.message_posted.emit, access
+        )
+        self.finder = ValveFinder(window, connection, settings, self.message_posted.emit)
         self._restarted_from = ""  # device ID before the restart (a restart may move it)
-        self._upload_repeats = False  # the running upload sends what the valve holds already
-        self._pending_upload: dict[str, Raw] = {}
-        self._uploading: dict[str, Raw] = {}  # the values of the running upload
         # "choose per parameter" in the going-online dialog (the compare workflow sets it)
         self.choose_per_parameter: Callable[[Mapping[str, Raw]], None] | None = None
         connection.online_changed.connect(self._on_connection_online_changed)
@@ -75,108 +69,31 @@ class ValveWorkflow(QObject):
         connection.progress.connect(self._on_connection_progress)
         connection.failed.connect(self._on_connection_failed)
         connection.lost.connect(self._on_connection_lost)
-        connection.type_key_needed.connect(self._on_type_key_needed)
         connection.live_values_changed.connect(doc.set_live)
         connection.write_failed.connect(sync.forget)
         connection.backup_written.connect(self._on_connection_backup_written)
 
+    @property
+    def progress_dialog(self) -> QProgressDialog | None:
+        """The progress dialog of the running operation, if any."""
+        return self.progress.dialog
+
     # --- communication -----------------------------------------------------------------------
     def configure_hid(self) -> ValveListing | None:
         """Show the HID configuration; returns the chosen device entry (or None)."""
-        dialog = HidConfigurationDialog(
-            self._connection.list_devices_async, self._settings, self._window
-        )
-        if dialog.exec() != QDialog.DialogCode.Accepted:
-            return None
-        return dialog.selected_entry()
+        return self.finder.configure_hid()
 
     def configure_can_bus(self) -> None:
         """Communication → CAN bus: choose the bus and a valve on it, then go online with it."""
-        from prm9tool.online.bus_monitor import BusMonitor
-        from prm9tool.views.can_bus_dialog import CanBusDialog
-
-        def scan(bus: dict[str, object], deliver: Callable[[ListedValves], None]) -> None:
-            self._connection.list_devices_async((), deliver, bus)
-
-        monitor = BusMonitor()
-        dialog = CanBusDialog(scan, self._settings, self._window, monitor)
-        accepted = dialog.exec() == QDialog.DialogCode.Accepted
-        monitor.stop()
-        monitor.deleteLater()
-        if not accepted:
-            return
-        device_id = dialog.selected_device_id()
-        if device_id is not None and not self._connection.is_online:
-            self._connect(device_id)
+        self.finder.configure_can_bus()
 
     def chosen_entry(self, entries: ListedValves) -> ValveListing | None:
-        """The valve to go online with among the listed ``entries`` (or the exception listing
-        raised): the one chosen before, the only one, or ask."""
-        if isinstance(entries, Exception):  # a broken USB stack must not prevent the dialog
-            self.message_posted.emit(
-                self.tr("Listing the valves failed: {0}").format(error_text(entries))
-            )
-            entries = []
-        found = [e for e in entries if e.kind != UNUSABLE]  # the dialog says why not
-        selected = str(self._settings.value(SELECTED_KEY, ""))
-        for entry in found:
-            if entry.device_id == selected:
-                return entry
-        if len(found) == 1:
-            return found[0]
-        return self.configure_hid()
+        """The valve to go online with among the listed ``entries`` (``ValveFinder``)."""
+        return self.finder.chosen_entry(entries)
 
     def go_online(self, entry: ValveListing | str | None = None) -> None:
-        """Connect to ``entry`` (a listed valve or a device id); without one, retry the valve
-        chosen last: a CAN node directly, else list the valves (off the GUI thread) and take
-        :meth:`chosen_entry`."""
-        if self._connection.is_online:
-            return
-        if entry is not None:
-            self._connect(entry)
-            return
-        chosen = str(self._settings.value(SELECTED_KEY, ""))
-        if chosen.startswith("can:"):  # a CAN node is not listed: retry it as it was chosen
-            self._connect(chosen)
-            return
-        self.message_posted.emit(self.tr("Looking for valves…"))
-        self._connection.list_devices_async(saved_emulators(self._settings), self._on_listed)
-
-    def _on_listed(self, entries: ListedValves) -> None:
-        if self._connection.is_online or self._connection.is_busy:
-            return  # connected meanwhile (the HID dialog, the command line)
-        entry = self.chosen_entry(entries)
-        if entry is not None:
-            self._connect(entry)
-
-    def _on_type_key_needed(self, device_id: str, serial: int, told: str) -> None:
-        """Going online with a CANopen valve that does not tell its type key (``--device
-        can:N``): ask for the key on its label (until it fits or the user cancels), remember
-        it for the serial number and go online again."""
-        from prm9tool.views.can_bus_dialog import ask_type_key
-
-        while True:
-            key, problem = ask_type_key(self._window, serial, told)
-            if not problem:
-                break
-            self.message_posted.emit(problem)
-        if key is not None:
-            self._connect_when_idle(device_id)
-
-    def _connect_when_idle(self, device_id: str) -> None:
-        """Go online once the failed attempt has finished (its end is still queued)."""
-        if self._connection.is_online:
-            return
-        if self._connection.is_busy:
-            QTimer.singleShot(50, lambda: self._connect_when_idle(device_id))
-            return
-        self._connect(device_id)
-
-    def _connect(self, entry: ValveListing | str) -> None:
-        device_id = entry if isinstance(entry, str) else entry.device_id
-        self._settings.setValue(SELECTED_KEY, device_id)  # going online again retries this one
-        self.message_posted.emit(self.tr("Connecting to {0}…").format(_name(entry)))
-        self._connection.go_online(entry)
+        """Connect to ``entry`` (a listed valve or a device id), else find the valve first."""
+        self.finder.go_online(entry)
 
     def go_offline(self) -> bool:
         """Disconnect (offering to store values changed online); False if the user cancelled."""
@@ -206,10 +123,10 @@ class ValveWorkflow(QObject):
     def _on_connection_online_changed(self, online: bool) -> None:
         if not online:
             self._sync.stop()
-            self._close_progress()
+            self.progress.close()
             self.message_posted.emit(self.tr("Offline"))
             return
-        self._start(COMPARE, self.tr("Reading the valve's parameters…"), cancellable=False)
+        self.progress.start(COMPARE, self.tr("Reading the valve's parameters…"), cancellable=False)
         self._connection.download(COMPARE)
 
     def compare_again(self) -> None:
@@ -217,7 +134,9 @@ class ValveWorkflow(QObject):
         differences prompt decides what is written), instead of writing it unasked."""
         if self._connection.is_online:
             self._sync.stop()
-            self._start(COMPARE, self.tr("Reading the valve's parameters…"), cancellable=False)
+            self.progress.start(
+                COMPARE, self.tr("Reading the valve's parameters…"), cancellable=False
+            )
             self._connection.download(COMPARE)
 
     # --- the diff prompt --------------------------------------------------------------------------
@@ -298,97 +217,22 @@ class ValveWorkflow(QObject):
 
     # --- valve commands ---------------------------------------------------------------------------
     def upload(self, valve_values: Mapping[str, Raw] | None = None) -> bool:
-        """Write the document into the valve (backup first, then write → verify → store).
-
-        ``valve_values``: what the valve holds, if just read (else what the online sync
-        knows). False when nothing is sent (another variant, or the user declined).
-        """
+        """Write the document into the valve (``ValveUpload.upload``); False when nothing
+        is sent."""
         key = self._valve_key()
-        if key is None:
-            return False
-        if key.variant != self._doc.variant:
-            prompts.ask(
-                self._window,
-                prompts.Icon.Warning,
-                self.tr("Upload to valve"),
-                self.tr(
-                    "The document is for a {0} valve, the connected valve is a {1} valve. "
-                    "Choose the matching valve type or download the valve's parameters first."
-                ).format(
-                    translated(variant_label(self._doc.variant)),
-                    translated(variant_label(key.variant)),
-                ),
-                prompts.Button.Ok,
-            )
-            return False
-        known = self._sync.valve_values if valve_values is None else valve_values
-        if not self._basic_user_confirms_expert_values(known):
-            self.message_posted.emit(self.tr("Nothing was sent to the valve"))
-            return False
-        # the valve holds the document already (edits went to it, nothing left unstored)
-        self._upload_repeats = self._sync.active and not self._sync.unstored
-        self._upload_repeats &= not self._sync.differences()
-        self.upload_values(self._doc.values)
-        return True
+        return key is not None and self.uploads.upload(key, valve_values)
 
     def upload_values(self, values: Mapping[str, Raw]) -> None:
-        """Upload exactly ``values`` (write, read back, store), once the history can record
-        it or the user said to go ahead without it (views/history_policy.py)."""
-        self._pending_upload = dict(values)
-        if self._connection.history is None:
-            self._start_upload()
-            return
-        self._start("upload", self.tr("Uploading the parameters to the valve…"))
-        self._connection.check_history(self._on_history_checked)
-
-    def _on_history_checked(self, problem: object) -> None:
-        self._close_progress()
-        if may_upload(self._window, problem):
-            self._start_upload()
-
-    def _start_upload(self) -> None:
-        values, self._pending_upload = self._pending_upload, {}
-        self._uploading = values
-        self._start("upload", self.tr("Uploading the parameters to the valve…"))
-        self._connection.upload(values)
+        """Upload exactly ``values`` (``ValveUpload.upload_values``)."""
+        self.uploads.upload_values(values)
 
     def expert_differences(self, valve_values: Mapping[str, Raw]) -> list[str]:
         """The Expert-level parameters whose document value differs from the valve's."""
-        return [
-            mnemonic
-            for mnemonic, value in self._doc.values.items()
-            if CATALOGUE[mnemonic].access is Access.EXPERT
-            and mnemonic in valve_values
-            and valve_values[mnemonic] != value
-        ]
-
-    def _basic_user_confirms_expert_values(self, valve_values: Mapping[str, Raw]) -> bool:
-        """At Basic level, sending changes the Basic level cannot make needs a Yes."""
-        if self._access is None or self._access.level is not Access.BASIC:
-            return True
-        changed = self.expert_differences(valve_values)
-        if not changed:
-            return True
-        shown = ", ".join(changed[:8]) + (", …" if len(changed) > 8 else "")
-        answer = prompts.ask(
-            self._window,
-            prompts.Icon.Warning,
-            self.tr("Expert values at Basic level"),
-            self.tr(
-                "The document changes %n Expert-level value(s) of the valve ({0}), which the "
-                "Basic access level cannot edit (controllers, linearizations, monitoring). "
-                "Send them anyway?",
-                "",
-                len(changed),
-            ).format(shown),
-            prompts.Button.Yes | prompts.Button.No,
-            prompts.Button.No,
-        )
-        return answer == prompts.Button.Yes
+        return self.uploads.expert_differences(valve_values)
 
     def download(self) -> None:
         """Read the valve's parameters into the document (one undo step)."""
-        self._start("download", self.tr("Downloading the parameters from the valve…"))
+        self.progress.start("download", self.tr("Downloading the parameters from the valve…"))
         self._connection.download()
 
     def restore_factory(self) -> None:
@@ -397,7 +241,7 @@ class ValveWorkflow(QObject):
         if self._connection.is_online:
             if RestartDialog(self._window, factory=True).exec() != QDialog.DialogCode.Accepted:
                 return
-            self._start("restore_factory", self.tr("Restoring the factory values…"), False)
+            self.progress.start("restore_factory", self.tr("Restoring the factory values…"), False)
             self._connection.run_job("restore_factory", _back_up_restore_factory_and_read)
             return
         answer = prompts.ask(
@@ -419,12 +263,12 @@ class ValveWorkflow(QObject):
             return
         device = self._connection.device
         self._restarted_from = device.device_id if device is not None else ""
-        self._start("restart", self.tr("Restarting the valve…"), cancellable=False)
+        self.progress.start("restart", self.tr("Restarting the valve…"), cancellable=False)
         self._connection.run_job(AFTER_RESTART, _restart_and_read)
 
     # --- results ------------------------------------------------------------------------------------
     def _on_connection_operation_finished(self, name: str, result: object) -> None:
-        self._close_progress()
+        self.progress.close()
         if name == COMPARE and isinstance(result, Mapping):
             self._on_compare_finished(result)
         elif name == "download" and isinstance(result, Mapping):
@@ -436,7 +280,7 @@ class ValveWorkflow(QObject):
             self._sync.stop()
             self._on_compare_finished(result)
         elif name == "upload":
-            self._on_upload_finished(result)
+            self.uploads.finished(result)
         elif name == "store":
             self._sync.unstored = False
             self.message_posted.emit(self.tr("The valve stored its parameters"))
@@ -470,58 +314,16 @@ class ValveWorkflow(QObject):
                 ).format(result.backup)
             )
 
-    def _on_upload_finished(self, result: object) -> None:
-        outcome = result if isinstance(result, UploadOutcome) else None
-        if outcome is not None and outcome.stored:
-            # values not from the document (a history record) become the document's too
-            written = {m: v for m, v in self._uploading.items() if self._doc.values.get(m) != v}
-            if written:
-                with self._sync.suspended():
-                    self._doc.set_values(written, self.tr("Values written to the valve"), False)
-            self._sync.start(self._doc.values)
-            at = QTime.currentTime().toString("HH:mm:ss")  # each upload's message differs
-            count = outcome.written
-            message = self.tr("%n parameter(s) written, verified and stored at {0}", "", count)
-            repeats, self._upload_repeats = self._upload_repeats, False
-            if repeats:
-                message = self.tr(
-                    "%n parameter(s) written, verified and stored again at {0}: the valve "
-                    "already held them",
-                    "",
-                    count,
-                )
-            self.message_posted.emit(message.format(at))
-            return
-        mismatches = outcome.mismatches if outcome is not None else {}
-        lines = [f"{mn}: {want} → {got}" for mn, (want, got) in mismatches.items()]
-        failure = outcome.failure if outcome is not None else None  # e.g. a refused store
-        details = "\n".join([failure, *lines] if failure else lines)
-        prompts.inform(
-            self._window,
-            prompts.Icon.Warning,
-            self.tr("Upload failed"),
-            self.tr(
-                "The upload failed at step “{0}”. Nothing was stored: after a restart the valve "
-                "holds its previous parameters."
-            ).format("" if outcome is None else str(outcome.failed_step)),
-            details,
-        )
-
     def _on_connection_progress(self, done: int, total: int, step: str) -> None:
-        dialog = self.progress_dialog
-        if dialog is None:
-            return
-        dialog.setMaximum(max(total, 1))
-        dialog.setValue(min(done, total))
-        dialog.setLabelText(f"{self._operation}\n{step}")
+        self.progress.show_step(done, total, step)
 
     def _on_connection_failed(self, message: str) -> None:
-        self._close_progress()
+        self.progress.close()
         self.message_posted.emit(message)
         prompts.inform(self._window, prompts.Icon.Warning, self.tr("Valve communication"), message)
 
     def _on_connection_lost(self, message: str) -> None:
-        self._close_progress()
+        self.progress.close()
         prompts.inform(
             self._window,
             prompts.Icon.Critical,
@@ -537,30 +339,6 @@ class ValveWorkflow(QObject):
         self.message_posted.emit(
             self.tr("Backup of the valve's parameters saved: {0}").format(path)
         )
-
-    # --- progress dialog ----------------------------------------------------------------------------
-    def _start(self, operation: str, label: str, cancellable: bool = True) -> None:
-        self._close_progress()
-        self._operation = label
-        dialog = QProgressDialog(label, self.tr("Cancel") if cancellable else "", 0, 0)
-        dialog.setParent(self._window, dialog.windowFlags())
-        dialog.setObjectName(f"progress_{operation}")
-        dialog.setWindowTitle("prm9tool")
-        dialog.setWindowModality(Qt.WindowModality.WindowModal)
-        dialog.setMinimumDuration(300)
-        dialog.setAutoClose(False)
-        dialog.setAutoReset(False)
-        if not cancellable:
-            dialog.setCancelButton(None)
-        dialog.canceled.connect(self._connection.cancel)
-        self.progress_dialog = dialog
-
-    def _close_progress(self) -> None:
-        dialog, self.progress_dialog = self.progress_dialog, None
-        if dialog is not None:
-            dialog.canceled.disconnect(self._connection.cancel)
-            dialog.close()
-            dialog.deleteLater()
 
 
 @dataclass(frozen=True)
@@ -586,9 +364,3 @@ def _restart_and_read(session: Any) -> dict[str, Raw]:
     """Worker job: restart, then read the (stored) parameters the valve runs with now."""
     session.restart()
     return dict(session.download())
-
-
-def _name(entry: ValveListing | str) -> str:
-    if isinstance(entry, str):
-        return entry.removeprefix("emulator:")
-    return f"{entry.type_key} #{entry.serial}"

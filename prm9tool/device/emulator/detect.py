@@ -11,6 +11,7 @@ from __future__ import annotations
 from typing import TYPE_CHECKING
 
 from prm9tool.catalogue.variant import Coils, Config
+from prm9tool.device.emulator import loop_inputs
 from prm9tool.device.emulator.inputs import INPUT_TYPES
 from prm9tool.device.emulator.states import DeviceState, Fault
 
@@ -97,12 +98,12 @@ def _overcurrent(fw: Firmware, current_ma: float, key: str, fault: Fault) -> boo
 
 
 def _setpoint_error(fw: Firmware) -> bool:
-    if fw.digital_setpoint or fw.value("SETPOVRON"):
+    if loop_inputs.digital_setpoint(fw) or fw.value("SETPOVRON"):
         return False
     kind = INPUT_TYPES.get(fw.value("AINSETP"))
     if kind is None:
         return False
-    return kind.signal_error(fw.setpoint_electrical(), fw.supply, fw.fw)
+    return kind.signal_error(loop_inputs.setpoint_electrical(fw), fw.supply, fw.fw)
 
 
 def _sensor_error(fw: Firmware) -> bool:

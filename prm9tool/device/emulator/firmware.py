@@ -12,7 +12,7 @@ from collections.abc import Callable, Generator
 from prm9tool.catalogue import CATALOGUE, canopen_switches
 from prm9tool.catalogue.typekey import TypeKey
 from prm9tool.catalogue.variant import Coils
-from prm9tool.device.emulator import config, detect, thermal
+from prm9tool.device.emulator import config, detect, loop_inputs, thermal
 from prm9tool.device.emulator.constants import (
     CYCLE_S,
     TICK_CYCLES,
@@ -20,7 +20,6 @@ from prm9tool.device.emulator.constants import (
     PlantConstants,
 )
 from prm9tool.device.emulator.faults import FaultMonitor
-from prm9tool.device.emulator.inputs import CANOPEN_TYPE, INPUT_TYPES
 from prm9tool.device.emulator.kernel import control_loop as make_loop
 from prm9tool.device.emulator.loopstate import (
     MODE_ACTIVE,
@@ -370,9 +369,9 @@ class Firmware:
             Fault.COIL_B_OVERCURRENT in self.injected,
         )
         loop.lvdt_break = Fault.POSITION_SENSOR_BREAK in self.injected
-        self._refresh_sensor(supply)
+        loop_inputs.refresh_sensor(self, supply)
         signals = config.static_setpoint(
-            self.variant, self.value, self.raw_setpoint(supply), self.setp_curve
+            self.variant, self.value, loop_inputs.raw_setpoint(self, supply), self.setp_curve
         )
         loop.static_signals = signals
         loop.target = signals[3]
@@ -382,43 +381,6 @@ class Firmware:
         self.static_conditions = detect.static_conditions(self)
         self.static_alarm = detect.static_alarm(self)
         self.setpoint_dirty = self.config_dirty = False
-
-    def _refresh_sensor(self, supply: float) -> None:
-        loop = self.loop
-        code = self.value("SENSTYPE")
-        kind = INPUT_TYPES.get(code)
-        loop.sensor_from_plant = self.inputs["sensor_from_plant"] >= 0.5 and kind is not None
-        if kind is None:
-            loop.sensor_static = float(self.value("SENSIN"))
-        else:
-            loop.sensor_static = kind.to_normalized(self.inputs["sensor"], supply, self.fw)
-        broken = Fault.SENSOR_BREAK in self.injected
-        loop.sensor_break_value = (
-            (kind.to_normalized(0.0, supply, self.fw) if kind else 0.0) if broken else None
-        )
-
-    @property
-    def digital_setpoint(self) -> bool:
-        """True if the setpoint comes from the object dictionary (0x6300/0x6380)."""
-        return self.can_enabled or self.value("AINSETP") == CANOPEN_TYPE
-
-    def setpoint_electrical(self) -> float:
-        """The analog setpoint input as the A/D converter sees it (0 with a cut wire)."""
-        if Fault.SETPOINT_WIRE_BREAK in self.injected:
-            return 0.0
-        return self.inputs["setpoint"]
-
-    def raw_setpoint(self, supply: float) -> float:
-        """The setpoint before polarity: override, object dictionary or analog input."""
-        if self.value("SETPOVRON"):
-            return float(self.value("SETPOVR"))
-        if self.digital_setpoint:
-            mnemonic = "PRCSETP" if config.process_loop_on(self.variant, self.value) else "POSSETP"
-            return float(self.value(mnemonic))
-        kind = INPUT_TYPES.get(self.value("AINSETP"))
-        if kind is None:
-            return 0.0
-        return kind.to_normalized(self.setpoint_electrical(), supply, self.fw)
 
     def flush(self) -> LoopState:
         """Make the loop write every measuring point back; returns the mailbox."""

@@ -9,8 +9,6 @@ from PySide6.QtCore import QPointF, QRectF, Qt, Signal
 from PySide6.QtGui import (
     QBrush,
     QColor,
-    QFont,
-    QFontMetricsF,
     QPainter,
     QPainterPath,
     QPen,
@@ -28,6 +26,17 @@ from PySide6.QtWidgets import (
 )
 
 from prm9tool.views.diagram.colours import PAPER, DiagramColours
+from prm9tool.views.diagram.text_fit import (
+    LINE_H,
+    LINE_PIXELS,
+    PAD,
+    TITLE_LINE_H,
+    TITLE_PIXELS,
+    TITLE_TOP,
+    fit_lines,
+    fit_title,
+    pixel_font,
+)
 
 
 class BlockLook(NamedTuple):
@@ -37,66 +46,6 @@ class BlockLook(NamedTuple):
     edge: QColor
     rule: QColor  # the line under the title
     ink: QColor
-
-
-def _font(pixels: int, bold: bool = False) -> QFont:
-    font = QFont()
-    font.setPixelSize(pixels)
-    font.setBold(bold)
-    return font
-
-
-TITLE_PIXELS = (13, 12)  # bold title sizes, largest first (12 px stays ≥ 9 px at 1024 × 768)
-LINE_PIXELS = (13, 12)  # value-line sizes
-PAD = 5.0  # left/right padding of a block's texts
-TITLE_TOP = 3.0
-TITLE_LINE_H = 16.0
-LINE_H = 17.0
-
-
-def _two_lines(text: str, metrics: QFontMetricsF, width: float) -> list[str] | None:
-    """``text`` split once (at a space, else after a hyphen) into the best-balanced two lines
-    that both fit ``width``; None if no split fits."""
-    splits = [(text[:i], text[i + 1 :]) for i, c in enumerate(text) if c == " "]
-    if not splits:
-        splits = [(text[: i + 1], text[i + 1 :]) for i, c in enumerate(text[:-1]) if c == "-"]
-    best: tuple[float, list[str]] | None = None
-    for head, tail in splits:
-        widest = max(metrics.horizontalAdvance(head), metrics.horizontalAdvance(tail))
-        if widest <= width and (best is None or widest < best[0]):
-            best = (widest, [head, tail])
-    return best[1] if best else None
-
-
-def fit_title(text: str, width: float, max_lines: int) -> tuple[QFont, list[str], bool]:
-    """Font and lines of a block title in ``width``: one line, else two, at 13 then 12 px.
-
-    Returns ``(font, lines, fits)``; a title that fits nowhere is elided (``fits`` False).
-    """
-    for pixels in TITLE_PIXELS:
-        font = _font(pixels, bold=True)
-        metrics = QFontMetricsF(font)
-        if metrics.horizontalAdvance(text) <= width:
-            return font, [text], True
-        lines = _two_lines(text, metrics, width) if max_lines > 1 else None
-        if lines:
-            return font, lines, True
-    font = _font(TITLE_PIXELS[-1], bold=True)
-    elided = QFontMetricsF(font).elidedText(text, Qt.TextElideMode.ElideRight, width)
-    return font, [elided], False
-
-
-def fit_lines(lines: list[str], width: float) -> tuple[QFont, list[str], bool]:
-    """Font and shown text of value ``lines`` in ``width``: 13 px, else 12 px, else elided."""
-    for pixels in LINE_PIXELS:
-        font = _font(pixels)
-        metrics = QFontMetricsF(font)
-        if all(metrics.horizontalAdvance(line) <= width for line in lines):
-            return font, list(lines), True
-    font = _font(LINE_PIXELS[-1])
-    metrics = QFontMetricsF(font)
-    shown = [metrics.elidedText(line, Qt.TextElideMode.ElideRight, width) for line in lines]
-    return font, shown, False
 
 
 class BlockItem(QGraphicsObject):
@@ -118,9 +67,9 @@ class BlockItem(QGraphicsObject):
         self.title_lines = title_lines  # the title area's height in lines
         self.title = ""
         self.lines: list[str] = []
-        self.title_font = _font(TITLE_PIXELS[0], bold=True)
+        self.title_font = pixel_font(TITLE_PIXELS[0], bold=True)
         self.shown_title: list[str] = []
-        self.line_font = _font(LINE_PIXELS[0])
+        self.line_font = pixel_font(LINE_PIXELS[0])
         self.shown_lines: list[str] = []
         self.fits = True  # False when a text had to be elided
         self._tip = ""
@@ -265,7 +214,7 @@ class SumItem(QGraphicsItem):
         d = r * math.sqrt(0.5)
         painter.drawLine(QPointF(-d, -d), QPointF(d, d))
         painter.drawLine(QPointF(-d, d), QPointF(d, -d))
-        painter.setFont(_font(14, bold=True))
+        painter.setFont(pixel_font(14, bold=True))
         if self._minus_at == "bottom":
             painter.drawText(QPointF(-r - 9, r + 10), "−")
         else:
@@ -349,7 +298,7 @@ class DotItem(QGraphicsObject):
         self.setPos(centre)
         self.active = False
         self._label = _ValueLabel(self)
-        self._label.setFont(_font(11, bold=True))
+        self._label.setFont(pixel_font(11, bold=True))
         self._label_side = label_side
         self._colours = PAPER
         self.set_colours(PAPER)

@@ -1,0 +1,206 @@
+"""Catalogue data: the CiA 408 device profile objects (control and status word, process
+values, device modes)."""
+
+from __future__ import annotations
+
+from prm9tool.catalogue._vocabulary import (
+    E04_ONLY,
+    RO,
+    S8,
+    U16,
+    U32,
+    T,
+    process_value,
+)
+from prm9tool.catalogue.schema import EVERY_VARIANT, Access, Applies, ObjAccess, Parameter, Texts
+
+
+def _pv(
+    mnemonic: str, index: int, text: Texts, obj: ObjAccess = RO, applies: Applies = EVERY_VARIANT
+) -> Parameter:
+    """A process value of the device profile (table 7-16)."""
+    return process_value(
+        mnemonic, index, 1, text, group="process_values", source="table 7-16", obj=obj,
+        applies=applies,
+    )  # fmt: skip
+
+
+DEVICE_PROFILE: list[Parameter] = [
+    Parameter(
+        "CONTROLWORD",
+        0x6040,
+        0,
+        U16,
+        0,
+        0xFFFF,
+        0,
+        group="device_control",
+        access=Access.READ_ONLY,
+        in_file=False,
+        text=T("Device control word", "Gerätesteuerwort", "Řídicí slovo zařízení"),
+        source="table 7-16, 7-19",
+    ),
+    Parameter(
+        "STATUSWORD",
+        0x6041,
+        0,
+        U16,
+        0,
+        0xFFFF,
+        0,
+        group="device_control",
+        access=Access.READ_ONLY,
+        obj_access=RO,
+        in_file=False,
+        text=T("Device status word", "Gerätestatuswort", "Stavové slovo zařízení"),
+        source="table 7-16",
+    ),
+    Parameter(
+        "DEVMODE",
+        0x6042,
+        0,
+        S8,
+        1,
+        1,
+        1,
+        group="device_control",
+        in_file=False,
+        text=T("Device mode", "Gerätemodus", "Režim zařízení"),
+        source="table 7-16",
+    ),
+    Parameter(
+        "CTRLMODE",
+        0x6043,
+        0,
+        S8,
+        2,
+        4,
+        2,
+        default_e04=4,
+        group="device_control",
+        in_file=False,
+        choices=(
+            (2, T("spool position control", "Schieberlageregelung", "řízení polohy šoupátka")),
+            (
+                4,
+                T(
+                    "process control (E04)",
+                    "Prozessregelung (E04)",
+                    "řízení procesní veličiny (E04)",
+                ),
+            ),
+        ),
+        text=T("Device control mode", "Regelmodus", "Režim řízení zařízení"),
+        source="table 7-16, 7-13 (4 on E04: decision)",
+    ),
+    Parameter(
+        "CAPABILITY",
+        0x605F,
+        0,
+        U32,
+        0,
+        0xFFFFFFFF,
+        0x00000006,
+        group="device_control",
+        access=Access.READ_ONLY,
+        obj_access=RO,
+        in_file=False,
+        text=T("Device capability", "Gerätefähigkeit", "Kapacita zařízení"),
+        source="table 7-16 (value: assumption)",
+    ),
+    _pv(
+        "POSSETP",
+        0x6300,
+        T("Position command value", "Lagesollwert", "Poloha (příkazová hodnota)"),
+        ObjAccess.RW,
+    ),
+    _pv("POSACT", 0x6301, T("Position actual value", "Lageistwert", "Poloha (skutečná hodnota)")),
+    _pv(
+        "DEMAND",
+        0x6310,
+        T("Demand value (after ramp)", "Sollwert nach Rampe", "Hodnota požadavku (za rampou)"),
+    ),
+    _pv("CTRLDEV", 0x6350, T("Control deviation", "Regelabweichung", "Odchylka řízení")),
+    _pv(
+        "PRCSETP",
+        0x6380,
+        T(
+            "Process command value (control mode 4)",
+            "Prozesssollwert (Regelmodus 4)",
+            "Hodnota příkazu procesní veličiny (režim 4)",
+        ),
+        ObjAccess.RW,
+        E04_ONLY,
+    ),
+    _pv(
+        "PRCACT",
+        0x6381,
+        T(
+            "Process actual value (control mode 4)",
+            "Prozessistwert (Regelmodus 4)",
+            "Skutečná hodnota procesní veličiny (režim 4)",
+        ),
+        RO,
+        E04_ONLY,
+    ),
+    Parameter(
+        "RAMPTYPE",
+        0x6330,
+        0,
+        S8,
+        3,
+        3,
+        3,
+        group="profile_types",
+        in_file=False,
+        text=T("Ramp type", "Rampentyp", "Typ rampy"),
+        source="table 7-16",
+    ),
+    Parameter(
+        "GAINTYPE",
+        0x6340,
+        0,
+        S8,
+        -1,
+        -1,
+        -1,
+        group="profile_types",
+        in_file=False,
+        text=T(
+            "Demand value generator gain type",
+            "Verstärkungstyp Sollwertgenerator",
+            "Typ zisku generátoru žádané hodnoty",
+        ),
+        source="table 7-16",
+    ),
+    Parameter(
+        "DBCTYPE",
+        0x6342,
+        0,
+        S8,
+        1,
+        1,
+        1,
+        group="profile_types",
+        in_file=False,
+        text=T(
+            "Dead-band compensation type",
+            "Typ der Totbandkompensation",
+            "Typ kompenzace pásma necitlivosti",
+        ),
+        source="table 7-16",
+    ),
+    Parameter(
+        "DITHERTYPE",
+        0x6360,
+        0,
+        S8,
+        1,
+        1,
+        1,
+        group="profile_types",
+        in_file=False,
+        text=T("Dither type", "Dithertyp", "Typ dynamického mazání"),
+        source="table 7-16",
+    ),
+]

@@ -1,0 +1,177 @@
+"""Catalogue data: the external sensor of E04 valves (signal type, range, linearization) and
+its CiA 408 data objects."""
+
+from __future__ import annotations
+
+from prm9tool.catalogue._vocabulary import (
+    E04_ONLY,
+    GAIN,
+    OFF_ON,
+    PERCENT,
+    POLARITY,
+    RO,
+    S16,
+    SIGNAL_TYPES,
+    U8,
+    U16,
+    T,
+    linearization,
+    process_value,
+)
+from prm9tool.catalogue.schema import ObjAccess, Parameter
+
+_SENSOR_LIN = T(
+    "External sensor linearization",
+    "Linearisierung externer Sensor",
+    "Linearizace externího snímače",
+)
+EXTERNAL_SENSOR: list[Parameter] = [
+    Parameter(
+        "SENSTYPE",
+        0x2005,
+        1,
+        U16,
+        0,
+        14,
+        9,
+        group="ext_sensor",
+        applies=E04_ONLY,
+        choices=SIGNAL_TYPES,
+        text=T(
+            "External sensor: signal type",
+            "Externer Sensor: Signaltyp",
+            "Externí snímač: typ signálu",
+        ),
+        source="table 7-14, 7-15, 7-22",
+    ),
+    Parameter(
+        "SENSINV",
+        0x2005,
+        2,
+        U8,
+        0,
+        1,
+        0,
+        group="ext_sensor",
+        applies=E04_ONLY,
+        choices=POLARITY,
+        text=T(
+            "External sensor: polarity", "Externer Sensor: Polarität", "Externí snímač: polarita"
+        ),
+        source="table 7-14",
+    ),
+    Parameter(
+        "SENSOFFS",
+        0x2005,
+        3,
+        S16,
+        -16384,
+        16384,
+        0,
+        group="ext_sensor",
+        applies=E04_ONLY,
+        unit="%",
+        scale=PERCENT,
+        decimals=1,
+        text=T(
+            "External sensor: zero offset",
+            "Externer Sensor: Nullpunktverschiebung",
+            "Externí snímač: posunutí nuly",
+        ),
+        source="table 7-14",
+    ),
+    Parameter(
+        "SENSGAIN",
+        0x2005,
+        4,
+        U16,
+        16383,
+        65535,
+        16384,
+        group="ext_sensor",
+        applies=E04_ONLY,
+        scale=GAIN,
+        decimals=3,
+        text=T("External sensor: gain", "Externer Sensor: Verstärkung", "Externí snímač: zesílení"),
+        source="table 7-14 (16384 = 1.0: inference from the range 16383…65535)",
+    ),
+    *linearization(
+        "SENSLIN", 0x2006, "X", "ext_sensor_linearization", _SENSOR_LIN, E04_ONLY, "table 7-14"
+    ),
+    *linearization(
+        "SENSLIN", 0x2007, "Y", "ext_sensor_linearization", _SENSOR_LIN, E04_ONLY, "table 7-14"
+    ),
+    Parameter(
+        "SENSLINON",
+        0x2008,
+        0,
+        U8,
+        0,
+        1,
+        0,
+        group="ext_sensor_linearization",
+        applies=E04_ONLY,
+        choices=OFF_ON,
+        text=T(
+            "External sensor linearization on/off",
+            "Linearisierung externer Sensor ein/aus",
+            "Linearizace externího snímače zapnuto/vypnuto",
+        ),
+        source="table 7-14",
+    ),
+]
+
+EXTERNAL_SENSOR_DATA: list[Parameter] = [
+    process_value(
+        mn,
+        0x2100,
+        sub,
+        text,
+        group="ext_sensor_data",
+        source="table 7-14",
+        obj=obj,
+        applies=E04_ONLY,
+    )
+    for mn, sub, obj, text in (
+        (
+            "SENSVAL",
+            1,
+            RO,
+            T("External sensor value", "Wert externer Sensor", "Hodnota signálu snímače"),
+        ),
+        (
+            "SENSIN",
+            2,
+            ObjAccess.WO,
+            T(
+                "External sensor value received over CANopen",
+                "Sensorwert über CANopen",
+                "Vstup signálu snímače",
+            ),
+        ),
+        (
+            "SENSAFTINV",
+            3,
+            RO,
+            T("Sensor after inversion", "Sensor nach Invertierung", "Snímač po inverzi"),
+        ),
+        (
+            "SENSAFTOFFS",
+            4,
+            RO,
+            T("Sensor after zero offset", "Sensor nach Nullpunkt", "Snímač po posunutí nuly"),
+        ),
+        (
+            "SENSAFTGAIN",
+            5,
+            RO,
+            T("Sensor after gain", "Sensor nach Verstärkung", "Snímač po zesílení"),
+        ),
+        (
+            "SENSAFTLIN",
+            6,
+            RO,
+            T("Sensor after linearization", "Sensor nach Linearisierung", "Snímač po linearizaci"),
+        ),
+    )
+]

@@ -1,0 +1,189 @@
+"""The valves a headless command works on: ``--list-devices``, the selection by
+``--emulator``, ``--device``, ``--all`` and the CAN options, and opening a selected valve
+(shared by ``--batch``, ``--diff`` and ``--characterize``)."""
+
+from __future__ import annotations
+
+import argparse
+import sys
+
+from prm9tool.device.factory import (
+    CAN,
+    NOT_PRM9,
+    CanOptions,
+    DeviceEntry,
+    can_entries,
+    emulator_entries,
+    open_session,
+    usb_entries,
+    usb_unavailable_reason,
+)
+from prm9tool.device.session import ValveSession
+from prm9tool.errors import (
+    CanAdapterError,
+    CommunicationError,
+    ExitCode,
+    FileFormatError,
+    Prm9Error,
+    TypeKeyError,
+)
+
+
+class BatchError(Exception):
+    """Ends the run before any valve was touched, with ``code`` and a message for stderr."""
+
+    def __init__(self, code: ExitCode, message: str) -> None:
+        super().__init__(message)
+        self.code = code
+
+
+# --- listing ------------------------------------------------------------------------------------
+def list_devices(args: argparse.Namespace) -> int:
+    """``--list-devices``: one line per valve found; exit code 4 when there is none."""
+    entries = _usb(required=False) + _emulators(args) + _can(args)
+    for entry in entries:
+        if entry.kind == NOT_PRM9:
+            print(f"{entry.device_id}\tnot a PRM9\t{entry.description}")
+            continue
+        print(
+            f"{entry.device_id}\t{entry.type_key}\tserial {entry.serial}\tfirmware {entry.firmware}"
+        )
+    if not [e for e in entries if e.kind != NOT_PRM9]:
+        reason = usb_unavailable_reason()
+        print("prm9tool: no valves found" + (f" ({reason})" if reason else ""), file=sys.stderr)
+        return ExitCode.NO_DEVICE
+    return ExitCode.OK
+
+
+def _emulators(args: argparse.Namespace) -> list[DeviceEntry]:
+    try:
+        return emulator_entries(args.emulator)
+    except (TypeKeyError, FileFormatError) as exc:
+        raise BatchError(ExitCode.USAGE, f"--emulator: {exc}") from exc
+    except Prm9Error as exc:
+        raise BatchError(ExitCode.NO_DEVICE, str(exc)) from exc
+
+
+def can_options(args: argparse.Namespace) -> CanOptions | None:
+    """The CAN bus the command line names (None: no CAN option given)."""
+    given = (args.can_interface, args.can_channel, args.can_bitrate)
+    return CanOptions.from_args(args) if any(v is not None for v in given) else None
+
+
+def _can(args: argparse.Namespace) -> list[DeviceEntry]:
+    """The nodes on the command line's CAN bus (none without CAN options)."""
+    options = can_options(args)
+    if options is None:
+        return []
+    try:
+        return can_entries(options)
+    except CanAdapterError as exc:
+        raise BatchError(ExitCode.COMMUNICATION, str(exc)) from exc
+
+
+def _usb(required: bool) -> list[DeviceEntry]:
+    try:
+        return usb_entries()
+    except CommunicationError as exc:
+        if required:
+            raise BatchError(ExitCode.NO_DEVICE, str(exc)) from exc
+        return []
+
+
+def select(args: argparse.Namespace) -> list[DeviceEntry]:
+    """The valves the options name; BatchError (4 or 2) if that is none or ambiguous."""
+    chosen = _emulators(args)
+    if can_options(args) is not None:
+        return _select_can(args, chosen)
+    if args.device or args.all:
+        usb = _usb(required=True)
+        for wanted in args.device:
+            chosen += _match(wanted, usb)
+        if args.all:
+            chosen += usb
+    elif not chosen:
+        usb = _usb(required=False)
+        if len(usb) > 1:
+            raise BatchError(
+                ExitCode.USAGE, f"{len(usb)} valves are connected: choose with --device or --all"
+            )
+        chosen = usb
+    if not chosen:
+        reason = usb_unavailable_reason()
+        raise BatchError(ExitCode.NO_DEVICE, "no valve found" + (f" ({reason})" if reason else ""))
+    return _unique(chosen)
+
+
+def _select_can(args: argparse.Namespace, chosen: list[DeviceEntry]) -> list[DeviceEntry]:
+    """The valves on the CAN bus: ``--device can:N`` (checked to be a PRM9) or ``--all``."""
+    found = _can(args)
+    prm9 = [e for e in found if e.kind == CAN]
+    for wanted in args.device:
+        matches = [e for e in found if wanted in (e.device_id, str(e.serial)) and e.serial]
+        matches += [e for e in found if e.device_id == wanted and e not in matches]
+        if not matches:
+            known = ", ".join(e.device_id for e in prm9) or "none"
+            raise BatchError(
+                ExitCode.NO_DEVICE,
+                f"no valve {wanted!r} answers on the CAN bus {can_options(args)} (PRM9 found: {known})",
+            )
+        others = [e for e in matches if e.kind == NOT_PRM9]
+        if others:
+            raise BatchError(
+                ExitCode.NO_DEVICE, f"{others[0].description}; prm9tool does not write to it"
+            )
+        chosen += matches
+    if args.all:
+        chosen += prm9
+    elif not args.device and not chosen:
+        if len(prm9) > 1:
+            raise BatchError(
+                ExitCode.USAGE, f"{len(prm9)} valves are on the bus: choose with --device or --all"
+            )
+        chosen = prm9
+    if not chosen:
+        raise BatchError(ExitCode.NO_DEVICE, f"no PRM9 found on the CAN bus {can_options(args)}")
+    return _unique(chosen)
+
+
+def _unique(entries: list[DeviceEntry]) -> list[DeviceEntry]:
+    """Each valve once, in the order first named (``--device 41 --device /dev/hidraw0``)."""
+    by_id: dict[str, DeviceEntry] = {}
+    for entry in entries:
+        by_id.setdefault(entry.device_id, entry)
+    return list(by_id.values())
+
+
+def _match(wanted: str, usb: list[DeviceEntry]) -> list[DeviceEntry]:
+    found = [e for e in usb if wanted in (str(e.serial), e.device_id, e.device_id[4:])]
+    if not found:
+        known = ", ".join(f"{e.serial} ({e.device_id})" for e in usb) or "none"
+        raise BatchError(ExitCode.NO_DEVICE, f"no valve {wanted!r} is connected (found: {known})")
+    return found
+
+
+def open_entry(
+    entry: DeviceEntry, can: CanOptions | None = None, label_key: str | None = None
+) -> ValveSession:
+    """Open a session as the headless commands do (``--batch``, ``--diff``); ``label_key``:
+    ``--type-key``."""
+    return open_valve(entry) if can is None else open_valve(entry, can, label_key=label_key)
+
+
+def open_valve(
+    entry: DeviceEntry,
+    can: CanOptions | None = None,
+    type_key: str | None = None,
+    label_key: str | None = None,
+) -> ValveSession:
+    """Open one selected valve; ``type_key``: the file's, for a valve that does not tell its
+    own; ``label_key``: ``--type-key`` (first, remembered). An emulated valve is stepped on
+    the link clock; its link runs at USB speed."""
+    return open_session(
+        entry,
+        paced=False,
+        link_paced=True,
+        can_link=can,
+        type_key=type_key,
+        label_key=label_key,
+    )

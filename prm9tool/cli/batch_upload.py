@@ -1,0 +1,176 @@
+"""``--batch FILE.prm`` in one valve: the type check, the backup, the upload (or the dry
+run) and what goes into the valve's record of the report. Runs in a worker thread per valve."""
+
+from __future__ import annotations
+
+import logging
+from collections.abc import Callable, Mapping
+
+from prm9tool.catalogue.typekey import TypeKey
+from prm9tool.cli.batch_history import BatchHistory
+from prm9tool.cli.batch_report import ProgressPrinter, Stopwatch, ValveRecord
+from prm9tool.device.factory import CanOptions, DeviceEntry
+from prm9tool.device.session import ValveSession
+from prm9tool.device.upload_outcome import reload_outcome
+from prm9tool.errors import CommunicationError, FileFormatError, Prm9Error, TypeKeyError
+from prm9tool.files.backup import ensure_backup, existing_backups
+from prm9tool.files.prmfile import PrmContents, check_file
+
+log = logging.getLogger("prm9tool.cli.batch")
+
+Opener = Callable[..., ValveSession]
+
+
+def summary(record: ValveRecord) -> str:
+    """One valve\'s outcome as the last progress line says it."""
+    text = f"{record.result} ({record.duration_s:.2f} s)"
+    return f"{text}: {record.error}" if record.error else text
+
+
+class UploadJob:
+    """Uploads the file into one valve (runs in a worker thread)."""
+
+    def __init__(
+        self,
+        contents: PrmContents,
+        force: bool,
+        dry_run: bool,
+        printer: ProgressPrinter,
+        history: BatchHistory,
+        open_valve: Opener,
+        can: CanOptions | None = None,
+        label_key: str | None = None,
+    ) -> None:
+        self.contents, self.force, self.dry_run, self.printer = contents, force, dry_run, printer
+        self.history = history
+        self.can = can
+        self.open_valve = open_valve
+        self.label_key = label_key  # --type-key
+
+    def __call__(self, entry: DeviceEntry) -> ValveRecord:
+        clock = Stopwatch()
+        record = ValveRecord(
+            entry.device_id, entry.kind, entry.serial, entry.type_key, entry.firmware
+        )
+        try:
+            # the file's type key serves a CANopen valve that does not tell its own (0x2041)
+            key = str(self.contents.type_key)
+            opened = self._open(entry, key)
+            with opened as session:
+                info = session.info
+                record.type_key, record.serial, record.firmware = (
+                    info.type_key,
+                    info.serial,
+                    info.firmware,
+                )
+                self._run(session, record)
+        except CommunicationError as exc:
+            record.result, record.error = "communication-error", str(exc)
+            _copy_progress(exc, record)
+        except TypeKeyError as exc:  # a CANopen valve whose objects contradict the file's key
+            record.result, record.error = "type-mismatch", str(exc)
+        except Prm9Error as exc:  # a refused read during the backup, an unwritable backup …
+            record.result, record.error = "communication-error", str(exc)
+        except Exception as exc:  # whatever the valve answered: the run still ends with a report
+            log.exception("%s: unexpected error", entry.device_id)
+            record.result, record.error = "communication-error", unexpected(exc)
+        clock.finish(record)
+        self.history.upload(record, self.contents.values)
+        return record
+
+    def _open(self, entry: DeviceEntry, key: str) -> ValveSession:
+        if self.can is None:
+            return self.open_valve(entry)
+        return self.open_valve(entry, self.can, key, self.label_key)
+
+    def _run(self, session: ValveSession, record: ValveRecord) -> None:
+        who = str(record.serial)
+        mismatch = _type_problem(self.contents.type_key, session, self.force)
+        if mismatch:
+            record.result, record.error = "type-mismatch", mismatch
+            return
+        values = self.contents.values
+        if self.dry_run:
+            current = record.current = session.download()
+            record.changes = sum(current.get(m) != v for m, v in values.items())
+            record.result = "dry-run"
+            return
+        self.printer.say(who, f"{record.type_key}, firmware {record.firmware}: backing up")
+        record.failed_step = "backup"
+        try:
+            new_backup = ensure_backup(session, self.printer.callback(who))
+        except FileFormatError as exc:
+            raise Prm9Error(
+                f"the backup could not be written, nothing was uploaded: {exc}"
+            ) from exc
+        if new_backup is not None:
+            self.history.backup(record, new_backup)
+        backups = existing_backups(record.serial)
+        latest = new_backup or (backups[-1] if backups else None)
+        record.backup = str(latest) if latest else None
+        record.backup_valid = check_file(latest).valid if latest else None
+        if new_backup and not record.backup_valid:
+            self.printer.say(who, f"the valve held an invalid parameter set, kept in {latest}")
+        record.failed_step = None
+        result = session.upload(values, self.printer.callback(who))
+        record.parameters_written, record.failed_step = result.written, result.failed_step
+        record.verification = "passed" if result.verified else "failed"
+        if result.failed_step == "write":
+            record.verification = "not-run"
+        record.mismatches = {
+            m: {"expected": want, "actual": got} for m, (want, got) in result.mismatches.items()
+        }
+        record.result = "ok" if result.stored else "verification-failed"
+        if result.failed_step == "store":
+            record.result = "store-failed"
+        if result.skipped:
+            record.skipped = list(result.skipped)
+            self.printer.say(
+                who,
+                "warning: not available over CANopen on this valve, not uploaded: "
+                + ", ".join(result.skipped),
+            )
+        if not result.stored:
+            problem = result.failure or _mismatch_text(result.failed_step, result.mismatches)
+            record.error = f"{problem}; {reload_outcome(result.reload_error)}"
+
+
+def unexpected(exc: Exception) -> str:
+    """The record\'s error for an exception no valve should cause."""
+    return (
+        f"unexpected error ({type(exc).__name__}: {exc}); the valve may have answered something "
+        "this prm9tool cannot handle; details on standard error"
+    )
+
+
+def _copy_progress(exc: CommunicationError, record: ValveRecord) -> None:
+    """How far a broken upload got (the attributes ValveSession.upload puts on its error)."""
+    record.failed_step = getattr(exc, "step", record.failed_step)
+    record.parameters_written = getattr(exc, "written", record.parameters_written)
+    if getattr(exc, "verified", False):
+        record.verification = "passed"
+
+
+def _mismatch_text(step: str | None, mismatches: Mapping[str, tuple[object, object]]) -> str:
+    shown = "; ".join(f"{m}: wrote {w}, got {g}" for m, (w, g) in list(mismatches.items())[:5])
+    more = f" (and {len(mismatches) - 5} more)" if len(mismatches) > 5 else ""
+    if step == "write":
+        return f"the valve refused a value, nothing was stored: {shown}"
+    count = len(mismatches)
+    noun = "parameter" if count == 1 else "parameters"
+    return f"{count} {noun} read back differently, nothing was stored: {shown}{more}"
+
+
+def _type_problem(file_key: TypeKey, session: ValveSession, force: bool) -> str | None:
+    valve_key = TypeKey.parse(session.info.type_key)
+    if file_key == valve_key:
+        return None
+    if file_key.variant != valve_key.variant:
+        return (
+            f"the file is for {file_key} ({file_key.variant.label}) but the valve is "
+            f"{valve_key} ({valve_key.variant.label}): the parameter sets differ, even "
+            "--force-type cannot upload it"
+        )
+    if force:
+        return None
+    return f"the file is for {file_key} but the valve is {valve_key} (use --force-type to upload anyway)"

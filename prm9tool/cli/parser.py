@@ -1,0 +1,184 @@
+"""The command line's argument parser: the GUI's file, the offline file tools, the headless
+production mode, the end-of-line test, device selection, compare and history (docs/batch.md)."""
+
+from __future__ import annotations
+
+import argparse
+
+from prm9tool.errors import ExitCode
+
+EXIT_CODE_TEXT = {
+    ExitCode.OK: "done: every valve uploaded and verified (or listed, downloaded, file valid)",
+    ExitCode.VERIFY_FAILED: "a valve read back differently, refused a value or the store; "
+    "nothing stored",
+    ExitCode.USAGE: "usage error (options, several valves and no selection, ...)",
+    ExitCode.INVALID_FILE: "invalid *.prm file (or --download cannot write its file)",
+    ExitCode.NO_DEVICE: "no valve found, or none with the --device ID",
+    ExitCode.TYPE_MISMATCH: "the file's type key does not fit the valve",
+    ExitCode.COMMUNICATION: "communication error (valve gone, timeout, backup not written)",
+    ExitCode.HISTORY: "the history database cannot be used (nothing uploaded with 'refuse')",
+    ExitCode.OUT_OF_LIMITS: "--characterize: a figure is outside the acceptance profile's limits",
+}
+DIFF_EXIT_TEXT = "--diff: 0 equal, 1 they differ, 3 invalid file, 4 no such valve"
+
+
+def add_device_options(parser: argparse.ArgumentParser) -> None:
+    """Device selection shared by the GUI and the batch mode (one device factory)."""
+    from prm9tool.catalogue.typekey import DEFAULT_EMULATOR_TYPE_KEY  # loaded at start anyway
+
+    group = parser.add_argument_group("device selection")
+    group.add_argument(
+        "--device",
+        action="append",
+        default=[],
+        metavar="ID",
+        help="valve to use (serial number, HID path, usb:PATH, or can:NODE on the CAN bus of "
+        "--can-interface); with --batch repeatable",
+    )
+    group.add_argument(
+        "--all",
+        action="store_true",
+        help="with --batch: use every valve connected over USB (or found on the CAN bus)",
+    )
+    group.add_argument(
+        "--emulator",
+        action="append",
+        default=[],
+        nargs="?",
+        const="",
+        metavar="TYPEKEY[:SERIAL]",
+        help="use an emulated valve of that type (the GUI goes online with it); repeatable; "
+        f"without TYPEKEY {DEFAULT_EMULATOR_TYPE_KEY}",
+    )
+    # no defaults here: None means "not given" (usage_problem) and CanOptions fills it in
+    group.add_argument(
+        "--can-interface",
+        help="python-can interface of the CAN bus (socketcan, pcan, kvaser, ixxat, vector, "
+        "slcan, udp_multicast, virtual, ...; default: virtual): valves on it are can:NODE; "
+        "an --emulator -CA valve joins it",
+    )
+    group.add_argument("--can-channel", help="python-can channel (default: prm9tool)")
+    group.add_argument(
+        "--can-bitrate", type=int, help="CAN bit rate in bit/s (default: from the valve's switches)"
+    )
+    group.add_argument(
+        "--type-key",
+        metavar="KEY",
+        help="the type key on the label of a CANopen valve that does not tell its own (no "
+        "object 0x2041, as real valves): checked against what its objects tell and remembered "
+        "for its serial number; with --batch it goes before the file's key",
+    )
+    serve = parser.add_argument_group("headless emulated valves on a CAN bus (no GUI)")
+    serve.add_argument(
+        "--serve-emulator",
+        action="append",
+        default=[],
+        metavar="TYPEKEY[:SERIAL]",
+        help="run an emulated -CA valve on the CAN bus of --can-interface/--can-channel in real "
+        "time until Ctrl+C or SIGTERM; repeatable",
+    )
+    serve.add_argument(
+        "--node-id",
+        action="append",
+        type=int,
+        default=[],
+        metavar="N",
+        help="with --serve-emulator: node ID 1-127 of the valve named at the same position",
+    )
+
+
+def build_parser() -> argparse.ArgumentParser:
+    """The complete argument parser."""
+    parser = argparse.ArgumentParser(
+        prog="prm9tool",
+        description="Parameterize PRM9 proportional valves (GUI, file tools, batch upload).",
+        epilog=_epilog(),
+        formatter_class=argparse.RawDescriptionHelpFormatter,
+    )
+    parser.add_argument("file", nargs="?", help="*.prm file to open in the GUI")
+    parser.add_argument("--version", action="store_true", help="print the version and exit")
+    files = parser.add_argument_group("offline file tools (no GUI)")
+    files.add_argument(
+        "--new", metavar="TYPEKEY", help="write the factory defaults for TYPEKEY to the -o file"
+    )
+    files.add_argument("--check", metavar="FILE.prm", help="validate a *.prm file")
+    files.add_argument("--export-eds", metavar="TYPEKEY", help="write a CiA 306 EDS for TYPEKEY")
+    files.add_argument(
+        "-o",
+        "--output",
+        metavar="FILE",
+        help="output file of --new or --export-eds; - is standard output",
+    )
+    batch = parser.add_argument_group("headless production mode (no GUI)")
+    batch.add_argument("--list-devices", action="store_true", help="list valves and exit")
+    batch.add_argument(
+        "--batch",
+        nargs="?",
+        const="",
+        metavar="FILE.prm",
+        help="upload, verify and store FILE.prm into the selected valves",
+    )
+    batch.add_argument(
+        "--download", metavar="OUT.prm", help="with --batch: save a valve's parameters"
+    )
+    batch.add_argument("--report", metavar="REPORT.json", help="with --batch: JSON report file")
+    batch.add_argument(
+        "--force-type",
+        action="store_true",
+        help="with --batch: upload even if the type key does not fit the valve",
+    )
+    batch.add_argument(
+        "--dry-run", action="store_true", help="with --batch: check everything, write nothing"
+    )
+    eol = parser.add_argument_group("end-of-line test (no GUI; docs/tuning.md)")
+    eol.add_argument(
+        "--characterize",
+        action="store_true",
+        help="step responses, Bode and static characteristic of one valve (--report OUT.pdf)",
+    )
+    eol.add_argument(
+        "--profile", metavar="LIMITS.toml", help="with --characterize: acceptance profile"
+    )
+    add_device_options(parser)
+    add_history_options(parser)
+    return parser
+
+
+def add_history_options(parser: argparse.ArgumentParser) -> None:
+    """``--diff`` and the history commands (docs/history.md)."""
+    group = parser.add_argument_group("compare and history (no GUI)")
+    group.add_argument(
+        "--diff", nargs="+", metavar="FILE.prm",
+        help="compare two *.prm files, or one with the valve of --device/--emulator",
+    )  # fmt: skip
+    group.add_argument(
+        "--json", nargs="?", const=True, metavar="OUT.json",
+        help="with --diff, --history: print JSON; with --characterize: the JSON report file",
+    )  # fmt: skip
+    group.add_argument("--history", metavar="SERIAL", help="list the history of a valve")
+    group.add_argument(
+        "--history-check", action="store_true", help="verify every valve's hash chain"
+    )
+    group.add_argument(
+        "--history-export", type=int, metavar="ID", help="write record ID to -o FILE.prm/.csv"
+    )
+    group.add_argument(
+        "--history-import", action="store_true", help="import the old backup files once"
+    )
+    group.add_argument(
+        "--history-db", metavar="URL",
+        help="history database (default: SQLite in the user data dir; postgresql+psycopg://…)",
+    )  # fmt: skip
+    group.add_argument(
+        "--history-unreachable", choices=("refuse", "queue"),
+        help="with --batch, if the history database cannot be reached: refuse to upload "
+        "(default) or upload and keep the records in a local queue",
+    )  # fmt: skip
+
+
+def _epilog() -> str:
+    codes = "\n".join(f"  {int(code)}  {text}" for code, text in EXIT_CODE_TEXT.items())
+    return (
+        f"exit codes:\n{codes}\n  {DIFF_EXIT_TEXT}\n\n"
+        "headless production mode: README.md, docs/batch.md; USB protocol: docs/usb-protocol.md"
+    )

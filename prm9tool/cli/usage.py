@@ -1,0 +1,200 @@
+"""Which combinations of command-line options make sense: checked before anything runs, so an
+option that would be ignored is an error, not a surprise."""
+
+from __future__ import annotations
+
+import argparse
+
+HISTORY_COMMANDS = {
+    "--history": "history", "--history-export": "history_export",
+    "--history-check": "history_check", "--history-import": "history_import",
+}  # fmt: skip
+# Options of the headless production mode that mean nothing anywhere else.
+BATCH_ONLY = {
+    "--download": "download",
+    "--report": "report",
+    "--dry-run": "dry_run",
+    "--force-type": "force_type",
+    "--all": "all",
+}
+FILE_TOOLS = {"--new": "new", "--check": "check", "--export-eds": "export_eds"}
+CAN_OPTIONS = {"--can-interface": "can_interface", "--can-channel": "can_channel",
+               "--can-bitrate": "can_bitrate"}  # fmt: skip
+
+
+def usage_problem(args: argparse.Namespace) -> str | None:
+    """What makes no sense in this combination of options (None: nothing), before anything runs.
+
+    The GUI takes a file, ``--emulator`` and one ``--device``; the batch-only options need
+    ``--batch``; ``--list-devices`` takes ``--emulator`` and the CAN options. The CAN options
+    name a bus: the one of ``can:NODE`` devices, ``--list-devices``, ``--batch`` and
+    ``--serve-emulator``, or the one the GUI's emulated -CA valve joins; a file tool takes
+    none (an option that would be ignored is an error, not a surprise).
+    """
+    if args.type_key is not None:
+        problem = _type_key_problem(args)
+        if problem is not None:
+            return problem
+    if args.characterize:
+        return _characterize_problem(args)
+    if args.profile:
+        return "--profile belongs to --characterize"
+    if isinstance(args.json, str):
+        return "--json OUT.json belongs to --characterize (--diff and --history print JSON)"
+    problem = _compare_history_problem(args)
+    if problem is not None:
+        return problem
+    batch_only = [flag for flag, dest in BATCH_ONLY.items() if getattr(args, dest)]
+    tools = [flag for flag, dest in FILE_TOOLS.items() if getattr(args, dest) is not None]
+    command = _command(args)
+    if " and " in command:
+        return f"{command} are separate commands: use one at a time"
+    if command and tools:
+        return f"{command} and {tools[0]} are separate commands: use one at a time"
+    can = [flag for flag, dest in CAN_OPTIONS.items() if getattr(args, dest) is not None]
+    if can and tools:
+        return f"{can[0]} names a CAN bus; {tools[0]} does not use CAN"
+    if command == "--serve-emulator":
+        return _serve_problem(args, batch_only)
+    if args.node_id:
+        return "--node-id belongs to --serve-emulator"
+    if can and not command and not args.emulator and not _can_devices(args):
+        return (
+            f"{can[0]} names a CAN bus: use it with --device can:NODE, --list-devices, --batch "
+            "or --emulator TYPEKEY"
+        )
+    if command and args.emulator and can:
+        return (
+            f"{command} with --emulator uses the emulated valve over USB; to put one on the CAN "
+            "bus, run prm9tool --serve-emulator in another process"
+        )
+    if command == "--list-devices":
+        return _list_devices_problem(args, batch_only)
+    if command == "--batch":
+        return _batch_problem(args)
+    if batch_only:
+        return f"{batch_only[0]} belongs to the headless production mode: use it with --batch"
+    if not tools and len(args.device) > 1:
+        return "the GUI goes online with one valve: give --device once (several: --batch)"
+    return None
+
+
+def _command(args: argparse.Namespace) -> str:
+    if args.serve_emulator:
+        others = [
+            flag
+            for flag, given in (("--list-devices", args.list_devices), ("--batch", args.batch))
+            if given not in (None, False)
+        ]
+        return "--serve-emulator" if not others else f"--serve-emulator and {others[0]}"
+    return "--list-devices" if args.list_devices else "--batch" if args.batch is not None else ""
+
+
+def _type_key_problem(args: argparse.Namespace) -> str | None:
+    from prm9tool.catalogue.typekey import TypeKey
+    from prm9tool.errors import TypeKeyError
+
+    on_can = _can_devices(args) or (args.all and args.can_interface is not None)
+    if not on_can or args.serve_emulator:
+        return (
+            "--type-key belongs to a valve on a CAN bus: use it with --device can:NODE (or "
+            "--batch --all with the CAN options)"
+        )
+    try:
+        key = TypeKey.parse(args.type_key)
+    except TypeKeyError as exc:
+        return f"--type-key: {exc}"
+    if not key.canopen:
+        return f"--type-key {key}: a valve on a CAN bus is a -CA valve"
+    return None
+
+
+def _can_devices(args: argparse.Namespace) -> list[str]:
+    return [d for d in args.device if d.startswith("can:")]
+
+
+def _serve_problem(args: argparse.Namespace, batch_only: list[str]) -> str | None:
+    if args.can_interface is None:
+        return "--serve-emulator needs --can-interface (and --can-channel) naming the bus"
+    extra = batch_only + [
+        f for f, v in (("--device", args.device), ("--emulator", args.emulator)) if v
+    ]
+    if args.file:
+        extra.append(f"the file {args.file}")
+    if extra:
+        return f"--serve-emulator runs emulated valves on a bus and takes no {extra[0]}"
+    if len(args.node_id) > len(args.serve_emulator):
+        return "give at most one --node-id per --serve-emulator"
+    bad = [n for n in args.node_id if not 1 <= n <= 127]
+    if bad:
+        return f"--node-id {bad[0]}: CANopen node IDs are 1…127"
+    return None
+
+
+def _characterize_problem(args: argparse.Namespace) -> str | None:
+    options = {**BATCH_ONLY, **FILE_TOOLS, **HISTORY_COMMANDS, "--diff": "diff"}
+    others = [flag for flag, dest in options.items()
+              if dest != "report" and getattr(args, dest) not in (None, False)]  # fmt: skip
+    if args.batch is not None or args.list_devices:
+        others.insert(0, "--batch" if args.batch is not None else "--list-devices")
+    if others:
+        return f"--characterize and {others[0]} are separate commands: use one at a time"
+    if args.file:
+        return f"unexpected file {args.file}: --characterize tests a valve"
+    if args.json is True:
+        return "--characterize writes its JSON report to a file: --json OUT.json"
+    return None
+
+
+def _compare_history_problem(args: argparse.Namespace) -> str | None:
+    history = [
+        flag for flag, dest in HISTORY_COMMANDS.items() if getattr(args, dest) not in (None, False)
+    ]
+    commands = history + (["--diff"] if args.diff else [])
+    others = [flag for flag, dest in FILE_TOOLS.items() if getattr(args, dest) is not None]
+    others += ["--batch"] * (args.batch is not None) + ["--list-devices"] * args.list_devices
+    if len(commands) > 1 or (commands and others):
+        return f"{commands[0]} and {(commands[1:] + others)[0]} are separate commands: use one at a time"
+    if args.json and commands not in (["--diff"], ["--history"]):
+        return "--json belongs to --diff and --history"
+    if args.history_unreachable and args.batch is None:
+        return "--history-unreachable belongs to the headless production mode (--batch)"
+    if args.diff:
+        return _diff_problem(args)
+    if history and (args.device or args.emulator or args.file):
+        return f"{history[0]} works on the history database, not on a valve or file"
+    return None
+
+
+def _diff_problem(args: argparse.Namespace) -> str | None:
+    valve = bool(args.device or args.emulator)
+    if len(args.diff) > 2:
+        return "--diff compares two files (or one file and a valve)"
+    if len(args.diff) == 2 and valve:
+        return "--diff with two files compares them: leave out --device/--emulator"
+    if len(args.diff) == 1 and not valve:
+        return "--diff with one file compares it with a valve: add --device ID or --emulator"
+    if args.all or args.file:
+        return "--diff compares with one valve: --all and a file to open do not fit"
+    return None
+
+
+def _list_devices_problem(args: argparse.Namespace, batch_only: list[str]) -> str | None:
+    given = {"--batch": args.batch is not None, "--device": args.device, "-o": args.output}
+    extra = batch_only + [flag for flag, value in given.items() if value]
+    if args.file:
+        extra.append(f"the file {args.file}")
+    if not extra:
+        return None
+    return (
+        f"--list-devices lists every valve and takes only --emulator and the CAN options, "
+        f"not {extra[0]}"
+    )
+
+
+def _batch_problem(args: argparse.Namespace) -> str | None:
+    if args.file:
+        return f"unexpected file {args.file}: name the file to upload right after --batch"
+    if args.output:
+        return "-o/--output belongs to --new and --export-eds (--batch --download OUT.prm)"
+    return None

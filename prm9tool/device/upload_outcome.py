@@ -1,0 +1,105 @@
+"""What an upload reports (the contract is :class:`~prm9tool.device.session.ValveSession`'s):
+its result, the values that read back differently, what a failed upload left in the valve, and
+the communication error that names the failed step and how far the upload got. No Qt.
+"""
+
+from __future__ import annotations
+
+import time
+from collections.abc import Mapping, Sequence
+from dataclasses import dataclass
+
+from prm9tool.catalogue import Parameter
+from prm9tool.device.entries import STEPS, Value
+from prm9tool.errors import CommunicationError, SdoAbortError
+
+RESTARTED_BEFORE_STORE = (
+    "the valve's values changed after the store was acknowledged (it restarted before the "
+    "store?): its stored set is not the upload"
+)
+
+
+@dataclass
+class UploadResult:
+    """Outcome of an upload; ``failed_step`` is ``write``, ``verify``, ``store`` or None.
+
+    ``stored`` means verified stored (see the module docstring). ``failure`` says why the step
+    failed when ``mismatches`` do not (a refused store). After a failed upload the session puts
+    the valve's stored parameters back into its working values (:meth:`ValveSession.reload`,
+    no restart): ``reloaded`` says whether that worked, ``reload_error`` why not. ``skipped``:
+    parameters of the set the valve does not have on this link, left out with a warning (never
+    a failed upload).
+    """
+
+    written: int
+    verified: bool
+    stored: bool
+    mismatches: dict[str, tuple[Value, Value]]
+    duration_s: float
+    failed_step: str | None
+    reloaded: bool = False
+    reload_error: str | None = None
+    failure: str | None = None
+    skipped: tuple[str, ...] = ()  # parameters the valve lacks on this link (not uploaded)
+
+
+def differences(
+    params: Sequence[Parameter],
+    values: Mapping[str, Value],
+    actual: Mapping[str, Value | SdoAbortError],
+) -> dict[str, tuple[Value, Value]]:
+    """``{mnemonic: (uploaded, read back)}`` of every value that reads back differently."""
+    return {
+        p.mnemonic: (values[p.mnemonic], shown(actual[p.mnemonic]))
+        for p in params
+        if actual[p.mnemonic] != values[p.mnemonic]
+    }
+
+
+def shown(value: Value | SdoAbortError) -> Value:
+    """A value read back as the report shows it (a refusal as its text)."""
+    return str(value) if isinstance(value, SdoAbortError) else value
+
+
+def since(start: float) -> float:
+    """Seconds since ``start`` (``time.monotonic``)."""
+    return time.monotonic() - start
+
+
+def reload_outcome(problem: str | None) -> str:
+    """What a failed upload left in the valve, given why the reload failed (None: it worked)."""
+    if problem is None:
+        return "the valve's working parameters were reset to its stored ones (no restart)"
+    return (
+        "resetting its working parameters to the stored ones failed too "
+        f"({problem}): restart the valve, hydraulics off, to return to them"
+    )
+
+
+def step_error(
+    exc: CommunicationError, step: str, problem: str | None, written: int, verified: bool
+) -> CommunicationError:
+    """``exc`` with the failed step and the valve's state named; ``problem``: reload failure.
+
+    ``written`` and ``verified`` say how far the upload got; they travel as attributes.
+    """
+    number = list(STEPS).index(step) + 1
+    if step != "store":
+        outcome = f"nothing was stored; {reload_outcome(problem)}"
+    elif problem is None:
+        outcome = (
+            "the store may not have completed: the valve now holds either its previous "
+            "parameters or the complete new set, working and stored alike — download to check"
+        )
+    else:
+        outcome = (
+            "the store may not have completed: after a restart the valve holds either its "
+            "previous parameters or the complete new set — download to check "
+            f"(resetting its working parameters failed too: {problem})"
+        )
+    error = type(exc)(f"upload failed while {STEPS[step]} (step {number} of 3): {exc}; {outcome}")
+    error.step = step  # type: ignore[attr-defined]
+    error.reloaded = problem is None  # type: ignore[attr-defined]
+    error.written = written  # type: ignore[attr-defined]
+    error.verified = verified  # type: ignore[attr-defined]
+    return error

@@ -1,0 +1,35 @@
+"""Finding and opening valves for the connection: the device factory's listing (USB, emulated
+valves, the nodes on a CAN bus) and opening, imported only when used; the CAN bus the GUI
+remembers as a dict, turned into the factory's options."""
+
+from __future__ import annotations
+
+from collections.abc import Mapping, Sequence
+from typing import Any
+
+
+def can_options(bus: Mapping[str, object]) -> Any:
+    """The device factory's ``CanOptions`` of ``bus`` (``interface``, ``channel``, ``bitrate``)."""
+    from prm9tool.device import factory
+
+    rate = bus.get("bitrate")
+    return factory.CanOptions(
+        str(bus["interface"]), str(bus["channel"]), int(str(rate)) if rate else None
+    )
+
+
+def default_lister(emulators: Sequence[str], can: Mapping[str, object] | None = None) -> list[Any]:
+    """The valves connected over USB, the emulated ``emulators`` and, with ``can``, the nodes
+    on that CAN bus."""
+    from prm9tool.device import factory
+
+    if can is None:
+        return list(factory.list_devices(emulators))
+    return list(factory.list_devices(emulators, can_options(can)))
+
+
+def default_opener(entry: object) -> Any:
+    """A session to ``entry`` (a listed valve or a device id)."""
+    from prm9tool.device import factory
+
+    return factory.open_session(entry)  # type: ignore[arg-type]

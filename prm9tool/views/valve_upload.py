@@ -1,0 +1,185 @@
+"""Valve → Upload: the checks before the document goes to the valve (valve variant, Expert
+values at Basic level, the history), the upload itself and its outcome.
+
+Nothing here touches the device: it drives the ValveConnection, which writes, verifies and
+stores in its worker thread and reports an ``UploadOutcome``.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Mapping
+
+from PySide6.QtCore import QObject, QTime
+from PySide6.QtWidgets import QWidget
+
+from prm9tool.catalogue import CATALOGUE, Access, variant_label
+from prm9tool.catalogue.typekey import TypeKey
+from prm9tool.model.access import AccessModel
+from prm9tool.model.document import ParameterDocument, Raw
+from prm9tool.online.connection import ValveConnection
+from prm9tool.online.connection_protocol import UploadOutcome
+from prm9tool.online.sync import ValveSync
+from prm9tool.translate import translated
+from prm9tool.views import prompts
+from prm9tool.views.history_policy import may_upload
+from prm9tool.views.operation_progress import OperationProgress
+
+
+class ValveUpload(QObject):
+    """Sends the document (or chosen values) to the valve and reports how it went."""
+
+    def __init__(
+        self,
+        window: QWidget,
+        doc: ParameterDocument,
+        connection: ValveConnection,
+        sync: ValveSync,
+        progress: OperationProgress,
+        post: Callable[[str], None],
+        access: AccessModel | None = None,
+    ) -> None:
+        super().__init__(window)
+        self._window = window
+        self._doc = doc
+        self._connection = connection
+        self._sync = sync
+        self._progress = progress
+        self._post = post
+        self._access = access
+        self._repeats = False  # the running upload sends what the valve holds already
+        self._pending: dict[str, Raw] = {}
+        self._uploading: dict[str, Raw] = {}  # the values of the running upload
+
+    def upload(self, key: TypeKey, valve_values: Mapping[str, Raw] | None = None) -> bool:
+        """Write the document into the valve of type ``key`` (backup first, then write →
+        verify → store).
+
+        ``valve_values``: what the valve holds, if just read (else what the online sync
+        knows). False when nothing is sent (another variant, or the user declined).
+        """
+        if key.variant != self._doc.variant:
+            self._refuse_other_variant(key)
+            return False
+        known = self._sync.valve_values if valve_values is None else valve_values
+        if not self._basic_user_confirms_expert_values(known):
+            self._post(self.tr("Nothing was sent to the valve"))
+            return False
+        # the valve holds the document already (edits went to it, nothing left unstored)
+        self._repeats = self._sync.active and not self._sync.unstored
+        self._repeats &= not self._sync.differences()
+        self.upload_values(self._doc.values)
+        return True
+
+    def _refuse_other_variant(self, key: TypeKey) -> None:
+        prompts.ask(
+            self._window,
+            prompts.Icon.Warning,
+            self.tr("Upload to valve"),
+            self.tr(
+                "The document is for a {0} valve, the connected valve is a {1} valve. "
+                "Choose the matching valve type or download the valve's parameters first."
+            ).format(
+                translated(variant_label(self._doc.variant)),
+                translated(variant_label(key.variant)),
+            ),
+            prompts.Button.Ok,
+        )
+
+    def upload_values(self, values: Mapping[str, Raw]) -> None:
+        """Upload exactly ``values`` (write, read back, store), once the history can record
+        it or the user said to go ahead without it (views/history_policy.py)."""
+        self._pending = dict(values)
+        if self._connection.history is None:
+            self._start_upload()
+            return
+        self._progress.start("upload", self.tr("Uploading the parameters to the valve…"))
+        self._connection.check_history(self._on_history_checked)
+
+    def _on_history_checked(self, problem: object) -> None:
+        self._progress.close()
+        if may_upload(self._window, problem):
+            self._start_upload()
+
+    def _start_upload(self) -> None:
+        values, self._pending = self._pending, {}
+        self._uploading = values
+        self._progress.start("upload", self.tr("Uploading the parameters to the valve…"))
+        self._connection.upload(values)
+
+    def expert_differences(self, valve_values: Mapping[str, Raw]) -> list[str]:
+        """The Expert-level parameters whose document value differs from the valve's."""
+        return [
+            mnemonic
+            for mnemonic, value in self._doc.values.items()
+            if CATALOGUE[mnemonic].access is Access.EXPERT
+            and mnemonic in valve_values
+            and valve_values[mnemonic] != value
+        ]
+
+    def _basic_user_confirms_expert_values(self, valve_values: Mapping[str, Raw]) -> bool:
+        """At Basic level, sending changes the Basic level cannot make needs a Yes."""
+        if self._access is None or self._access.level is not Access.BASIC:
+            return True
+        changed = self.expert_differences(valve_values)
+        if not changed:
+            return True
+        shown = ", ".join(changed[:8]) + (", …" if len(changed) > 8 else "")
+        answer = prompts.ask(
+            self._window,
+            prompts.Icon.Warning,
+            self.tr("Expert values at Basic level"),
+            self.tr(
+                "The document changes %n Expert-level value(s) of the valve ({0}), which the "
+                "Basic access level cannot edit (controllers, linearizations, monitoring). "
+                "Send them anyway?",
+                "",
+                len(changed),
+            ).format(shown),
+            prompts.Button.Yes | prompts.Button.No,
+            prompts.Button.No,
+        )
+        return answer == prompts.Button.Yes
+
+    def finished(self, result: object) -> None:
+        """The connection finished the upload with ``result`` (an ``UploadOutcome``)."""
+        outcome = result if isinstance(result, UploadOutcome) else None
+        if outcome is not None and outcome.stored:
+            self._on_stored(outcome)
+        else:
+            self._report_failure(outcome)
+
+    def _on_stored(self, outcome: UploadOutcome) -> None:
+        # values not from the document (a history record) become the document's too
+        written = {m: v for m, v in self._uploading.items() if self._doc.values.get(m) != v}
+        if written:
+            with self._sync.suspended():
+                self._doc.set_values(written, self.tr("Values written to the valve"), False)
+        self._sync.start(self._doc.values)
+        at = QTime.currentTime().toString("HH:mm:ss")  # each upload's message differs
+        count = outcome.written
+        message = self.tr("%n parameter(s) written, verified and stored at {0}", "", count)
+        repeats, self._repeats = self._repeats, False
+        if repeats:
+            message = self.tr(
+                "%n parameter(s) written, verified and stored again at {0}: the valve "
+                "already held them",
+                "",
+                count,
+            )
+        self._post(message.format(at))
+
+    def _report_failure(self, outcome: UploadOutcome | None) -> None:
+        mismatches = outcome.mismatches if outcome is not None else {}
+        lines = [f"{mn}: {want} → {got}" for mn, (want, got) in mismatches.items()]
+        failure = outcome.failure if outcome is not None else None  # e.g. a refused store
+        details = "\n".join([failure, *lines] if failure else lines)
+        prompts.inform(
+            self._window,
+            prompts.Icon.Warning,
+            self.tr("Upload failed"),
+            self.tr(
+                "The upload failed at step “{0}”. Nothing was stored: after a restart the valve "
+                "holds its previous parameters."
+            ).format("" if outcome is None else str(outcome.failed_step)),
+            details,
+        )
