@@ -93,12 +93,25 @@ def test_e04_offsets_take_the_overlap_out_of_the_process_loop():
     assert abs(after) < 0.5
 
 
-def test_without_overlap_nothing_is_proposed_and_e02_is_refused():
+def test_without_overlap_nothing_is_proposed_and_e02_is_refused(qapp):
     result = flow_test(rig_of(E04))
     assert result.characteristic.dead_band_pct < 1.0
     assert all(v < 30 for v in result.offsets.values())
-    with pytest.raises(Prm9Error, match="measured on E04 valves"):
+    with pytest.raises(Prm9Error, match="measured on E04 valves") as refused:
         flow_test(rig_of(E02))
+    _check_german(refused.value)
+
+
+def _check_german(error: Exception) -> None:
+    """The refusal is a translatable message: a view shows it in the program language."""
+    from prm9tool import i18n
+    from prm9tool.translate import error_text
+
+    try:
+        i18n.set_language("de")
+        assert error_text(error).startswith("die Durchflusskennlinie wird an E04-Ventilen")
+    finally:
+        i18n.set_language("en")
 
 
 def test_end_of_line_on_e04_reports_the_flow_characteristic(tmp_path):

@@ -577,6 +577,18 @@ Poslední akce možná nebyla dokončena. Uložte svou práci pod novým názvem
             <source>the valve did not finish booting</source>
             <translation>ventil nedokončil start</translation>
         </message>
+        <message>
+            <source>the flow characteristic is measured on E04 valves (with an actuator)</source>
+            <translation>průtoková charakteristika se měří na ventilech E04 (s akčním členem)</translation>
+        </message>
+        <message>
+            <source>the flow characteristic is measured in control mode 4 (process loop); the valve is in control mode {0}</source>
+            <translation>průtoková charakteristika se měří v režimu řízení 4 (procesní smyčka); ventil je v režimu řízení {0}</translation>
+        </message>
+        <message>
+            <source>the process controller's Kp is 0: the spool would not move</source>
+            <translation>Kp procesního regulátoru je 0: šoupátko by se nepohnulo</translation>
+        </message>
     </context>
     <context>
         <name>CommissioningPanel</name>

@@ -575,6 +575,18 @@ Die letzte Aktion wurde womöglich nicht vollständig ausgeführt. Speichern Sie
             <source>the valve did not finish booting</source>
             <translation>das Ventil hat den Start nicht abgeschlossen</translation>
         </message>
+        <message>
+            <source>the flow characteristic is measured on E04 valves (with an actuator)</source>
+            <translation>die Durchflusskennlinie wird an E04-Ventilen (mit Stellglied) gemessen</translation>
+        </message>
+        <message>
+            <source>the flow characteristic is measured in control mode 4 (process loop); the valve is in control mode {0}</source>
+            <translation>die Durchflusskennlinie wird in Regelmodus 4 (Prozessregelkreis) gemessen; das Ventil ist in Regelmodus {0}</translation>
+        </message>
+        <message>
+            <source>the process controller's Kp is 0: the spool would not move</source>
+            <translation>Kp des Prozessreglers ist 0: der Schieber würde sich nicht bewegen</translation>
+        </message>
     </context>
     <context>
         <name>CommissioningPanel</name>

@@ -26,6 +26,7 @@ from prm9tool.catalogue.variant import Coils, Config
 from prm9tool.characterize.procedures import Record, chain_changes, preserved, record
 from prm9tool.characterize.rig import Rig
 from prm9tool.errors import Prm9Error
+from prm9tool.messages import QT_TRANSLATE_NOOP
 
 QUASI_STATIC_PCT_S = 1500.0  # opening changing faster than this: a transition, not a point
 FLOW_KEYS = ("position_setpoint", "process_actual", "position_actual")  # [1]: band check
@@ -48,15 +49,27 @@ def flow_test(
     """Steps of the process setpoint ``centre ∓ amplitude`` (see the module docstring)."""
     key = TypeKey.parse(rig.info.type_key)
     if key.variant.config is not Config.E04:
-        raise Prm9Error("the flow characteristic is measured on E04 valves (with an actuator)")
+        raise Prm9Error(
+            QT_TRANSLATE_NOOP(
+                "Characterize",
+                "the flow characteristic is measured on E04 valves (with an actuator)",
+            )()
+        )
     present = rig.read(["CTRLMODE", "PRCKP"])
     if present["CTRLMODE"] != 4:
         raise Prm9Error(
-            "the flow characteristic is measured in control mode 4 (process loop); the valve "
-            f"is in control mode {present['CTRLMODE']}"
+            QT_TRANSLATE_NOOP(
+                "Characterize",
+                "the flow characteristic is measured in control mode 4 (process loop); the "
+                "valve is in control mode {0}",
+            )(present["CTRLMODE"])
         )
     if present["PRCKP"] <= 0:
-        raise Prm9Error("the process controller's Kp is 0: the spool would not move")
+        raise Prm9Error(
+            QT_TRANSLATE_NOOP(
+                "Characterize", "the process controller's Kp is 0: the spool would not move"
+            )()
+        )
     two_coils = key.variant.coils is Coils.AB
     changes = {**chain_changes(rig, "process"), "PRCKI": 0, "PRCKD": 0, "OFFSETPOS": 0}
     if two_coils:
