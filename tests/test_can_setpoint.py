@@ -119,6 +119,10 @@ def test_the_session_offers_rpdo1_and_a_synchronous_rpdo_is_refused(online):
     _rig, session = online
     link = session.setpoint_link()
     assert isinstance(link, RpdoSetpoint)
+    from prm9tool.device.setpoint import OverrideSetpoint
+    from prm9tool.online.setpoint_driver import GENERATOR_OBJECTS
+
+    assert {*link.objects, *OverrideSetpoint(session).objects} == GENERATOR_OBJECTS
     enable(session)
     session.nmt(NmtCommand.PRE_OPERATIONAL)  # PDO parameters are written outside OPERATIONAL
     wait_for(lambda: session.nmt_state == "pre-operational")

@@ -207,3 +207,46 @@ def test_model_autotune_of_the_e04_process_loop():
     assert result.model.gain == pytest.approx(4.0, rel=0.05)  # full stroke in 0.5 s at 100 %
     assert result.meets_targets
     assert rig.read(["PRCKP", "GAINSETPOS"]) == {"PRCKP": 200, "GAINSETPOS": 16384}
+
+
+def test_an_identification_without_response_or_with_a_bad_fit_is_not_trustworthy():
+    """The verdict lives below the views: no response or a fit error above the threshold."""
+    from dataclasses import replace
+
+    from prm9tool.analysis.model import MAX_FIT_ERROR_PCT, PlantModel
+    from prm9tool.characterize.autotune import doubts
+    from prm9tool.characterize.procedures import Record, StepResult
+
+    good = PlantModel(1.0, 0.002, 0.001, 0.0005, 2, False, 3.0)
+    flat = StepResult(50.0, Record(np.zeros(3), {}), None)
+    assert good.trustworthy
+    assert not replace(good, fit_error=MAX_FIT_ERROR_PCT + 25.0).trustworthy
+    assert not replace(good, fit_error=float("nan")).trustworthy
+    texts = [str(d) for d in doubts(replace(good, fit_error=45.0), flat)]
+    assert len(texts) == 2
+    assert "did not respond" in texts[0]
+    assert "fit error 45 %, at most 20 %" in texts[1]
+
+
+def test_the_rigs_refusals_are_shown_in_the_program_language(qapp):
+    """A refusal stays English on the command line and is translated where a view shows it."""
+    from prm9tool import i18n
+    from prm9tool.characterize.rig import ValveFaultError
+    from prm9tool.translate import error_text
+
+    rig = EmulatorRig(EmulatedValve("PRM9-06.3Z11/30-24E02S02-CA"))
+    rig.valve.advance(2.0)  # booted: a -CA valve waits in INIT for its master
+    with pytest.raises(ValveFaultError) as refused:
+        rig.ensure_active()
+    rig.stop.set()
+    with pytest.raises(Stopped) as stopped:
+        rig.check()
+    assert "does not follow its setpoint: device state INIT (a -CA valve" in str(refused.value)
+    try:
+        i18n.set_language("de")
+        assert error_text(refused.value).startswith("das Ventil folgt seinem Sollwert nicht")
+        assert error_text(stopped.value).startswith("vom Benutzer abgebrochen")
+        i18n.set_language("cs")
+        assert error_text(stopped.value).startswith("zastaveno uživatelem")
+    finally:
+        i18n.set_language("en")

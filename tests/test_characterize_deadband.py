@@ -120,3 +120,10 @@ def test_end_of_line_on_e04_reports_the_flow_characteristic(tmp_path):
     files = write_csv_files(result, tmp_path / "e04")
     assert (tmp_path / "e04-flow.csv") in files
     assert report_data(result, files)["passed"] is False
+
+
+def test_a_sweep_too_short_for_the_rate_says_what_it_needs():
+    from prm9tool.characterize.procedures import bode_test
+
+    with pytest.raises(ValueError, match=r"at least 256 samples; .* at least 0\.1 s"):
+        bode_test(rig_of(E02), 10.0, 0.0, 1.0, 200.0, 0.04)

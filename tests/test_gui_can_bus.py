@@ -15,7 +15,10 @@ from prm9tool.views.can_bus_dialog import BITRATE_KEY, CHANNEL_KEY, INTERFACE_KE
 
 
 @pytest.fixture
-def settings(tmp_path):
+def settings(qapp, tmp_path):
+    from prm9tool import i18n
+
+    i18n.set_language("en")  # the English plural forms (prm9tool_en.qm)
     return QSettings(str(tmp_path / "settings.ini"), QSettings.Format.IniFormat)
 
 
@@ -45,7 +48,7 @@ def test_the_dialog_lists_the_nodes_and_goes_online_with_the_valve(qtbot, rig, s
     cells = [[dialog.table.item(r, c).text() for c in range(4)] for r in range(2)]
     assert cells[0] == ["can:5", "not a PRM9", "", ""]
     assert cells[1][:3] == ["can:10", E04, str(rig.valve.serial)]
-    assert "2 nodes answered, 1 of them PRM9 valves." in dialog.state.text()
+    assert "2 nodes answered. 1 of them a PRM9 valve." in dialog.state.text()
     assert not ok.isEnabled()
     dialog.table.selectRow(0)  # not a PRM9: not selectable
     assert dialog.selected_device_id() is None and not ok.isEnabled()
@@ -174,3 +177,37 @@ def test_the_node_table_is_live_while_the_dialog_is_open(qtbot, rig, settings):
         rig.valve.stop()
         connection.shutdown()
     assert not monitor.running  # closing the dialog stops the watch
+
+
+@pytest.mark.parametrize(
+    ("language", "one", "three"),
+    [
+        ("en", "1 node answered. 1 of them a PRM9 valve.", "3 nodes answered. 0 of them PRM9 valves."),
+        ("de", "1 Knoten hat geantwortet. Davon 1 PRM9-Ventil.", "3 Knoten haben geantwortet. Davon 0 PRM9-Ventile."),
+        ("cs", "Odpověděl 1 uzel. Z toho 1 ventil PRM9.", "Odpověděly 3 uzly. Z toho 0 ventilů PRM9."),
+    ],
+)  # fmt: skip
+def test_the_count_of_nodes_uses_the_plural_forms_of_the_language(
+    qtbot, settings, language, one, three
+):
+    from types import SimpleNamespace
+
+    from prm9tool import i18n
+
+    def node(number: int, kind: str) -> SimpleNamespace:
+        return SimpleNamespace(
+            kind=kind, device_id=f"can:{number}", type_key=E04, serial=1, firmware="",
+            nmt_state="", heartbeat_age_s=None, last_emcy="", description="",
+        )  # fmt: skip
+
+    answers = [[node(10, "can")], [node(n, "not-prm9") for n in (5, 6, 7)]]
+    dialog = CanBusDialog(lambda _bus, deliver: deliver(answers.pop(0)), settings)
+    qtbot.addWidget(dialog)
+    try:
+        i18n.set_language(language)
+        dialog.search.click()
+        assert dialog.state.text() == one
+        dialog.search.click()
+        assert dialog.state.text() == three
+    finally:
+        i18n.set_language("en")

@@ -30,6 +30,8 @@ def test_the_status_bar_and_the_status_window_say_the_valve_waits_for_a_master(q
     assert panel is not None
     qtbot.waitUntil(lambda: "waits for a CANopen master" in panel.reason.text(), timeout=TIMEOUT)
     assert "NMT pre-operational, device state INIT" in panel.reason.text()
+    assert "Press NMT start, then Enable" in panel.reason.text()  # not "under Valve → Valve status"
+    assert "Valve status" not in panel.reason.text()
     panel.buttons["nmt_start"].click()
     panel.buttons["enable"].click()
     qtbot.waitUntil(lambda: "follows its setpoint" in panel.reason.text(), timeout=TIMEOUT)

@@ -287,3 +287,30 @@ def test_report_figures_use_the_decimal_separator_of_the_language(qapp):
         i18n.set_language("en")
     assert shown == ("1,14", "0,95 … 1,05", "16,2 ms", "≤ 30 ms")
     assert (value_text(gain), limit_text(gain)) == ("1.14", "0.95 … 1.05")
+
+
+def test_an_untrustworthy_fit_proposes_no_gains_without_an_explicit_override(
+    qtbot, window, monkeypatch
+):
+    """A fit error above the threshold (docs/tuning.md) disables Accept until the user insists."""
+    from dataclasses import replace
+
+    import prm9tool.views.tuning_pages as pages
+    from prm9tool.characterize.autotune import model_tune
+
+    def badly_fitted(*args, **kwargs):
+        result = model_tune(*args, **kwargs)
+        return replace(result, model=replace(result.model, fit_error=45.0))
+
+    monkeypatch.setattr(pages, "model_tune", badly_fitted)
+    page = window.autotune
+    page.run_button.click()
+    finish(qtbot, window)
+    assert "fit error 45 %, at most 20 %" in page.result.text()
+    assert "not trustworthy" in page.result.text()
+    assert not page.accept_button.isEnabled()
+    assert page.override.isVisible()
+    page.override.setChecked(True)
+    assert page.accept_button.isEnabled()
+    page.accept_button.click()
+    assert window.doc.value("POSKP") == page.proposal["POSKP"]

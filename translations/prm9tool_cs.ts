@@ -48,6 +48,17 @@ Poslední akce možná nebyla dokončena. Uložte svou práci pod novým názvem
         </message>
     </context>
     <context>
+        <name>Autotune</name>
+        <message>
+            <source>The valve did not respond to the step at the present gains: the model is fitted to no response.</source>
+            <translation>Ventil na skok se stávajícími zesíleními nereagoval: model je přizpůsoben nulové odezvě.</translation>
+        </message>
+        <message>
+            <source>The model fits the measurement badly (fit error {0} %, at most {1} %).</source>
+            <translation>Model špatně odpovídá měření (chyba přizpůsobení {0} %, nejvýše {1} %).</translation>
+        </message>
+    </context>
+    <context>
         <name>AutotunePage</name>
         <message>
             <source>steps of %1 % from 0 %, a few times, about %2 s in all</source>
@@ -68,6 +79,10 @@ Poslední akce možná nebyla dokončena. Uložte svou práci pod novým názvem
         <message>
             <source>Proposed, simulated on the emulator's firmware: %1.</source>
             <translation>Návrh, simulovaný na firmwaru emulátoru: %1.</translation>
+        </message>
+        <message>
+            <source>Do not accept these gains: the identification is not trustworthy.</source>
+            <translation>Tato zesílení nepřebírejte: identifikace není důvěryhodná.</translation>
         </message>
         <message>
             <source>before (measured)</source>
@@ -140,6 +155,10 @@ Poslední akce možná nebyla dokončena. Uložte svou práci pod novým názvem
         <message>
             <source>Accept the proposed gains</source>
             <translation>Převzít navržené konstanty</translation>
+        </message>
+        <message>
+            <source>Accept anyway (I checked the measurement)</source>
+            <translation>Přesto převzít (měření jsem zkontroloval)</translation>
         </message>
     </context>
     <context>
@@ -254,9 +273,21 @@ Poslední akce možná nebyla dokončena. Uložte svou práci pod novým názvem
             <source>The bus could not be searched: {0}</source>
             <translation>Sběrnici nelze prohledat: {0}</translation>
         </message>
-        <message>
-            <source>{0} nodes answered, {1} of them PRM9 valves.</source>
-            <translation>Odpovědělo uzlů: {0}, z toho ventilů PRM9: {1}.</translation>
+        <message numerus="yes">
+            <source>%n node(s) answered.</source>
+            <translation>
+                <numerusform>Odpověděl %n uzel.</numerusform>
+                <numerusform>Odpověděly %n uzly.</numerusform>
+                <numerusform>Odpovědělo %n uzlů.</numerusform>
+            </translation>
+        </message>
+        <message numerus="yes">
+            <source>%n of them PRM9 valve(s).</source>
+            <translation>
+                <numerusform>Z toho %n ventil PRM9.</numerusform>
+                <numerusform>Z toho %n ventily PRM9.</numerusform>
+                <numerusform>Z toho %n ventilů PRM9.</numerusform>
+            </translation>
         </message>
         <message>
             <source>not a PRM9</source>
@@ -510,6 +541,41 @@ Poslední akce možná nebyla dokončena. Uložte svou práci pod novým názvem
         <message>
             <source>Same scale per unit</source>
             <translation>Stejné měřítko pro jednotku</translation>
+        </message>
+    </context>
+    <context>
+        <name>Characterize</name>
+        <message>
+            <source>the model-based autotune needs the controller's output, which this link does not sample (CANopen); use the critical-gain method</source>
+            <translation>automatické ladění podle modelu potřebuje výstup regulátoru, který toto spojení nevzorkuje (CANopen); použijte metodu kritického zesílení</translation>
+        </message>
+        <message>
+            <source>no gains found for the target: {0}</source>
+            <translation>pro zadaný cíl nebyla nalezena žádná zesílení: {0}</translation>
+        </message>
+        <message>
+            <source>stopped by the user; the valve was put back as it was</source>
+            <translation>zastaveno uživatelem; ventil byl vrácen do původního stavu</translation>
+        </message>
+        <message>
+            <source>the valve reported error {0}: {1}</source>
+            <translation>ventil hlásil chybu {0}: {1}</translation>
+        </message>
+        <message>
+            <source>the valve reports error {0} ({1}); nothing was tested</source>
+            <translation>ventil hlásí chybu {0} ({1}); nic nebylo testováno</translation>
+        </message>
+        <message>
+            <source>the valve does not follow its setpoint: device state {0} (a -CA valve with CANopen on waits for its master to enable it); nothing was tested</source>
+            <translation>ventil nesleduje svou žádanou hodnotu: stav zařízení {0} (ventil -CA se zapnutým CANopen čeká, až ho jeho master uvolní); nic nebylo testováno</translation>
+        </message>
+        <message>
+            <source>the valve does not follow its setpoint: device state {0}; nothing was tested</source>
+            <translation>ventil nesleduje svou žádanou hodnotu: stav zařízení {0}; nic nebylo testováno</translation>
+        </message>
+        <message>
+            <source>the valve did not finish booting</source>
+            <translation>ventil nedokončil start</translation>
         </message>
     </context>
     <context>
@@ -3708,6 +3774,26 @@ Zajistěte, aby to hydraulika bezpečně snesla. Tlačítko Stop test kdykoli uk
         <message>
             <source>it holds its position (device state HOLD). Enable it under Valve → Valve status.</source>
             <translation>drží svou polohu (stav zařízení HOLD). Uvolněte ho v nabídce Ventil → Stav ventilu.</translation>
+        </message>
+        <message>
+            <source>an error stops it (device state {0}); the list of errors shows it. Press Enable once the cause is gone.</source>
+            <translation>zastavila ho chyba (stav zařízení {0}); ukazuje ji seznam chyb. Po odstranění příčiny stiskněte „Uvolnit“.</translation>
+        </message>
+        <message>
+            <source>it waits for a CANopen master (NMT {1}, device state {0}). Press NMT start, then Enable (control word 08h → 09h → 0Bh → 0Fh).</source>
+            <translation>čeká na CANopen master (NMT {1}, stav zařízení {0}). Stiskněte „NMT start“ a pak „Uvolnit“ (řídicí slovo 08h → 09h → 0Bh → 0Fh).</translation>
+        </message>
+        <message>
+            <source>its CANopen master stopped it (NMT stopped). Press NMT start.</source>
+            <translation>jeho CANopen master ho zastavil (NMT zastaveno). Stiskněte „NMT start“.</translation>
+        </message>
+        <message>
+            <source>it is not enabled (device state {0}). Press Enable.</source>
+            <translation>není uvolněn (stav zařízení {0}). Stiskněte „Uvolnit“.</translation>
+        </message>
+        <message>
+            <source>it holds its position (device state HOLD). Press Enable.</source>
+            <translation>drží svou polohu (stav zařízení HOLD). Stiskněte „Uvolnit“.</translation>
         </message>
         <message>
             <source>offline</source>

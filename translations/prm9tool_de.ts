@@ -48,6 +48,17 @@ Die letzte Aktion wurde womöglich nicht vollständig ausgeführt. Speichern Sie
         </message>
     </context>
     <context>
+        <name>Autotune</name>
+        <message>
+            <source>The valve did not respond to the step at the present gains: the model is fitted to no response.</source>
+            <translation>Das Ventil hat auf den Sprung mit den aktuellen Verstärkungen nicht reagiert: Das Modell ist an keine Antwort angepasst.</translation>
+        </message>
+        <message>
+            <source>The model fits the measurement badly (fit error {0} %, at most {1} %).</source>
+            <translation>Das Modell passt schlecht zur Messung (Anpassungsfehler {0} %, höchstens {1} %).</translation>
+        </message>
+    </context>
+    <context>
         <name>AutotunePage</name>
         <message>
             <source>steps of %1 % from 0 %, a few times, about %2 s in all</source>
@@ -68,6 +79,10 @@ Die letzte Aktion wurde womöglich nicht vollständig ausgeführt. Speichern Sie
         <message>
             <source>Proposed, simulated on the emulator's firmware: %1.</source>
             <translation>Vorschlag, simuliert mit der Firmware des Emulators: %1.</translation>
+        </message>
+        <message>
+            <source>Do not accept these gains: the identification is not trustworthy.</source>
+            <translation>Übernehmen Sie diese Verstärkungen nicht: Die Identifikation ist nicht vertrauenswürdig.</translation>
         </message>
         <message>
             <source>before (measured)</source>
@@ -140,6 +155,10 @@ Die letzte Aktion wurde womöglich nicht vollständig ausgeführt. Speichern Sie
         <message>
             <source>Accept the proposed gains</source>
             <translation>Vorgeschlagene Verstärkungen übernehmen</translation>
+        </message>
+        <message>
+            <source>Accept anyway (I checked the measurement)</source>
+            <translation>Trotzdem übernehmen (ich habe die Messung geprüft)</translation>
         </message>
     </context>
     <context>
@@ -254,9 +273,19 @@ Die letzte Aktion wurde womöglich nicht vollständig ausgeführt. Speichern Sie
             <source>The bus could not be searched: {0}</source>
             <translation>Der Bus konnte nicht durchsucht werden: {0}</translation>
         </message>
-        <message>
-            <source>{0} nodes answered, {1} of them PRM9 valves.</source>
-            <translation>{0} Knoten haben geantwortet, davon {1} PRM9-Ventile.</translation>
+        <message numerus="yes">
+            <source>%n node(s) answered.</source>
+            <translation>
+                <numerusform>%n Knoten hat geantwortet.</numerusform>
+                <numerusform>%n Knoten haben geantwortet.</numerusform>
+            </translation>
+        </message>
+        <message numerus="yes">
+            <source>%n of them PRM9 valve(s).</source>
+            <translation>
+                <numerusform>Davon %n PRM9-Ventil.</numerusform>
+                <numerusform>Davon %n PRM9-Ventile.</numerusform>
+            </translation>
         </message>
         <message>
             <source>not a PRM9</source>
@@ -510,6 +539,41 @@ Die letzte Aktion wurde womöglich nicht vollständig ausgeführt. Speichern Sie
         <message>
             <source>Same scale per unit</source>
             <translation>Gleiche Skala je Einheit</translation>
+        </message>
+    </context>
+    <context>
+        <name>Characterize</name>
+        <message>
+            <source>the model-based autotune needs the controller's output, which this link does not sample (CANopen); use the critical-gain method</source>
+            <translation>das modellbasierte Autotuning braucht den Reglerausgang, den diese Verbindung nicht abtastet (CANopen); verwenden Sie die Methode der kritischen Verstärkung</translation>
+        </message>
+        <message>
+            <source>no gains found for the target: {0}</source>
+            <translation>keine Verstärkungen für das Ziel gefunden: {0}</translation>
+        </message>
+        <message>
+            <source>stopped by the user; the valve was put back as it was</source>
+            <translation>vom Benutzer abgebrochen; das Ventil wurde in den vorherigen Zustand zurückversetzt</translation>
+        </message>
+        <message>
+            <source>the valve reported error {0}: {1}</source>
+            <translation>das Ventil meldete den Fehler {0}: {1}</translation>
+        </message>
+        <message>
+            <source>the valve reports error {0} ({1}); nothing was tested</source>
+            <translation>das Ventil meldet den Fehler {0} ({1}); es wurde nichts getestet</translation>
+        </message>
+        <message>
+            <source>the valve does not follow its setpoint: device state {0} (a -CA valve with CANopen on waits for its master to enable it); nothing was tested</source>
+            <translation>das Ventil folgt seinem Sollwert nicht: Gerätezustand {0} (ein -CA-Ventil mit eingeschaltetem CANopen wartet darauf, dass sein Master es freigibt); es wurde nichts getestet</translation>
+        </message>
+        <message>
+            <source>the valve does not follow its setpoint: device state {0}; nothing was tested</source>
+            <translation>das Ventil folgt seinem Sollwert nicht: Gerätezustand {0}; es wurde nichts getestet</translation>
+        </message>
+        <message>
+            <source>the valve did not finish booting</source>
+            <translation>das Ventil hat den Start nicht abgeschlossen</translation>
         </message>
     </context>
     <context>
@@ -3699,6 +3763,26 @@ Stellen Sie sicher, dass die Hydraulik dafür sicher ist. Stopp beendet ihn jede
         <message>
             <source>it holds its position (device state HOLD). Enable it under Valve → Valve status.</source>
             <translation>es hält seine Position (Gerätezustand HOLD). Geben Sie es unter Ventil → Ventilstatus frei.</translation>
+        </message>
+        <message>
+            <source>an error stops it (device state {0}); the list of errors shows it. Press Enable once the cause is gone.</source>
+            <translation>ein Fehler hält es an (Gerätezustand {0}); die Fehlerliste zeigt ihn. Drücken Sie „Freigeben“, sobald die Ursache behoben ist.</translation>
+        </message>
+        <message>
+            <source>it waits for a CANopen master (NMT {1}, device state {0}). Press NMT start, then Enable (control word 08h → 09h → 0Bh → 0Fh).</source>
+            <translation>es wartet auf einen CANopen-Master (NMT {1}, Gerätezustand {0}). Drücken Sie „NMT Start“, dann „Freigeben“ (Steuerwort 08h → 09h → 0Bh → 0Fh).</translation>
+        </message>
+        <message>
+            <source>its CANopen master stopped it (NMT stopped). Press NMT start.</source>
+            <translation>sein CANopen-Master hat es angehalten (NMT gestoppt). Drücken Sie „NMT Start“.</translation>
+        </message>
+        <message>
+            <source>it is not enabled (device state {0}). Press Enable.</source>
+            <translation>es ist nicht freigegeben (Gerätezustand {0}). Drücken Sie „Freigeben“.</translation>
+        </message>
+        <message>
+            <source>it holds its position (device state HOLD). Press Enable.</source>
+            <translation>es hält seine Position (Gerätezustand HOLD). Drücken Sie „Freigeben“.</translation>
         </message>
         <message>
             <source>offline</source>

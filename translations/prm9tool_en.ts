@@ -2,6 +2,23 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="en_US">
     <context>
+        <name>CanBusDialog</name>
+        <message numerus="yes">
+            <source>%n node(s) answered.</source>
+            <translation>
+                <numerusform>%n node answered.</numerusform>
+                <numerusform>%n nodes answered.</numerusform>
+            </translation>
+        </message>
+        <message numerus="yes">
+            <source>%n of them PRM9 valve(s).</source>
+            <translation>
+                <numerusform>%n of them a PRM9 valve.</numerusform>
+                <numerusform>%n of them PRM9 valves.</numerusform>
+            </translation>
+        </message>
+    </context>
+    <context>
         <name>CompareDialog</name>
         <message numerus="yes">
             <source>%n parameter(s) differ</source>

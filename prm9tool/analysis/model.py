@@ -25,6 +25,9 @@ from prm9tool.scope.measure import step_figures
 ROBUST_GAIN = 1.5  # the overshoot target must hold with this much more plant gain
 ROBUST_DELAY = 2  # ... and this many more cycles of dead time
 MAX_DELAY = 12  # samples of dead time tried
+MAX_FIT_ERROR_PCT = (
+    20.0  # a fit worse than this (RMS, % of the span) proposes no gains (docs/tuning.md)
+)
 
 
 @dataclass(frozen=True)
@@ -38,6 +41,11 @@ class PlantModel:
     delay: int  # whole cycles of dead time
     integrating: bool
     fit_error: float  # RMS residual of the fit, in % of the response's span
+
+    @property
+    def trustworthy(self) -> bool:
+        """True when the fit error is within :data:`MAX_FIT_ERROR_PCT` (and finite)."""
+        return math.isfinite(self.fit_error) and self.fit_error <= MAX_FIT_ERROR_PCT
 
     def poles(self, dt: float = CYCLE_S) -> tuple[float, float, float]:
         """Discrete (ZOH) poles of the three lags at the sample time ``dt``."""

@@ -17,7 +17,15 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from prm9tool.analysis.model import Design, PlantModel, Targets, design, identify, simulate_loop
+from prm9tool.analysis.model import (
+    MAX_FIT_ERROR_PCT,
+    Design,
+    PlantModel,
+    Targets,
+    design,
+    identify,
+    simulate_loop,
+)
 from prm9tool.analysis.pid import CYCLE_S, from_parameters, to_parameters
 from prm9tool.catalogue.typekey import TypeKey
 from prm9tool.catalogue.variant import Coils
@@ -31,6 +39,7 @@ from prm9tool.characterize.procedures import (
 )
 from prm9tool.characterize.rig import Rig
 from prm9tool.errors import Prm9Error
+from prm9tool.messages import QT_TRANSLATE_NOOP, Message
 
 
 @dataclass(frozen=True)
@@ -48,6 +57,37 @@ class AutotuneResult:
     meets_targets: bool
     rounds: int
     history: list[dict[str, int]] = field(default_factory=list)
+
+    @property
+    def doubts(self) -> list[Message]:
+        """Why the proposal must not be trusted (empty: it may be accepted), see :func:`doubts`."""
+        return doubts(self.model, self.before)
+
+    @property
+    def trustworthy(self) -> bool:
+        """True when nothing speaks against the identification the proposal rests on."""
+        return not self.doubts
+
+
+def doubts(model: PlantModel, before: StepResult) -> list[Message]:
+    """The reasons an identification is not trustworthy: no response to the first step, or a
+    fit error above :data:`~prm9tool.analysis.model.MAX_FIT_ERROR_PCT` (docs/tuning.md)."""
+    found = []
+    if before.figures is None:
+        found.append(
+            QT_TRANSLATE_NOOP(
+                "Autotune",
+                "The valve did not respond to the step at the present gains: the model is fitted "
+                "to no response.",
+            )()
+        )
+    if not model.trustworthy:
+        found.append(
+            QT_TRANSLATE_NOOP(
+                "Autotune", "The model fits the measurement badly (fit error {0} %, at most {1} %)."
+            )(f"{model.fit_error:.0f}", f"{MAX_FIT_ERROR_PCT:.0f}")
+        )
+    return found
 
 
 def meets(step: StepResult, targets: Targets) -> bool:
@@ -80,8 +120,11 @@ def model_tune(
         before = _step(rig, lp, amplitude_pct, 0.0, duration, limit_pct, loop)
         if not np.isfinite(before.record.channels[lp.output]).all():
             raise Prm9Error(
-                "the model-based autotune needs the controller's output, which this link does "
-                "not sample (CANopen); use the critical-gain method"
+                QT_TRANSLATE_NOOP(
+                    "Characterize",
+                    "the model-based autotune needs the controller's output, which this link "
+                    "does not sample (CANopen); use the critical-gain method",
+                )()
             )
         data = [_io(before, lp.output, lp.actual)]
         t1 = from_parameters(lp.prefix, saved).t1
@@ -95,7 +138,11 @@ def model_tune(
             try:
                 chosen = design(model, targets, step, t1, out_lo=out_lo)
             except ValueError as exc:
-                raise Prm9Error(f"no gains found for the target: {exc}") from None
+                raise Prm9Error(
+                    QT_TRANSLATE_NOOP("Characterize", "no gains found for the target: {0}")(
+                        str(exc)
+                    )
+                ) from None
             values = to_parameters(lp.prefix, chosen.gains)
             history.append(values)
             rig.write(values)

@@ -10,8 +10,9 @@ on the link (the controller's output, the setpoint chain's stages) give NaN, nev
 value.
 
 The sample period is chosen from the SDO round trips measured when the rig is made (at least
-2 ms) and a trial run at that pace (doubled while more than 2.5 % of the trial comes late); a
-sample taken more than one period late makes the play fail rather than be stretched
+2 ms) and a trial run at that pace (doubled while more than 1 % of the trial comes late); more
+than 5 % of a test's samples taken over two periods late make the play fail rather than be
+stretched
 or interpolated (:class:`LinkTooSlowError`). The TPDO1 scope
 (:mod:`prm9tool.device.canlink.pdo_scope`) is not used: its samples carry no demand value.
 """
@@ -37,11 +38,13 @@ if TYPE_CHECKING:
 
 DEMAND_KEYS = ("position_setpoint", "process_setpoint")  # the demand the master wrote
 RESPONSE_OBJECTS = {"position_actual": "POSACT", "process_actual": "PRCACT"}  # 0x6301/0x6381
-LATE_SHARE = 0.05  # at most this share of samples may be late by more than one period
+LATE_PERIODS = 2.0  # a sample this many periods behind its time is late
+LATE_SHARE = 0.05  # at most this share of a test's samples may be late
+TRIAL_LATE_SHARE = 0.01  # the pace is kept when at most this share of the trial is late
 PROBES = 20  # SDO round trips measured to choose the period
 MIN_PERIOD_S = 0.002  # decision: below this a loaded PC cannot keep the period by sleeping
 MAX_PERIOD_S = 0.05  # the slowest pace tried (20 Hz)
-TRIAL = 100  # samples of the trial run at the chosen pace
+TRIAL = 200  # samples of the trial run at the chosen pace
 KEEP_ALIVE_S = 0.2  # SETPOVRON is written again this often (the valve drops it after 0.5 s)
 
 
@@ -69,7 +72,7 @@ class CanRig(Rig):
             f"SDO polling, one sample per {self.period_s * 1000:g} ms",
             1.0 / self.period_s,
         )
-        self.late = 0  # samples of the last play taken more than one period late
+        self.late = 0  # samples of the last play taken late (LATE_PERIODS)
 
     def _measure_period(self) -> float:
         """Twice the 90th percentile of measured write + read round trips, rounded up to
@@ -96,11 +99,11 @@ class CanRig(Rig):
                 wait = due - time.perf_counter()
                 if wait > 0:
                     time.sleep(wait)
-                elif -wait > period:
+                elif -wait > LATE_PERIODS * period:
                     late += 1
                 tick()
                 due += period
-            if late <= LATE_SHARE / 2 * TRIAL:
+            if late <= TRIAL_LATE_SHARE * TRIAL:
                 break
             period *= 2.0
         return period
@@ -131,7 +134,7 @@ class CanRig(Rig):
             wait = due - time.perf_counter()
             if wait > 0:
                 time.sleep(wait)
-            elif -wait > self.period_s:
+            elif -wait > LATE_PERIODS * self.period_s:
                 late += 1
             if value != last:
                 sdo.download(over.index, over.subindex, over.dtype.encode(value))

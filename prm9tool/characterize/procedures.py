@@ -26,6 +26,7 @@ from prm9tool.scope.measure import StepFigures, step_figures
 
 PERCENT = 100.0 / 16384.0
 SAMPLES_PER_PERIOD = 10  # a sweep goes no higher than the sample rate / this (decision)
+SWEEP_MIN_SAMPLES = 256  # what the frequency response needs
 
 
 @dataclass(frozen=True)
@@ -196,6 +197,11 @@ def bode_test(
     """
     lp = LOOPS[loop]
     fs = rig.info.sample_rate_hz
+    if duration_s * fs < SWEEP_MIN_SAMPLES:  # a slow link (CANopen): say what it needs
+        raise ValueError(
+            f"a sweep needs at least {SWEEP_MIN_SAMPLES} samples; at the link's {fs:g} Hz "
+            f"choose a duration of at least {math.ceil(SWEEP_MIN_SAMPLES / fs * 10) / 10:g} s"
+        )
     note = ""
     highest = fs / SAMPLES_PER_PERIOD
     if f_max > highest:

@@ -21,6 +21,7 @@ import numpy as np
 from prm9tool.catalogue import CATALOGUE
 from prm9tool.device.emulator.states import DeviceState, ValveStatus
 from prm9tool.errors import Prm9Error
+from prm9tool.messages import QT_TRANSLATE_NOOP
 
 if TYPE_CHECKING:
     from prm9tool.device.emulator import EmulatedValve
@@ -28,6 +29,8 @@ if TYPE_CHECKING:
 
 FULL = 16384.0  # 100 % in counts
 CHUNK = 500  # samples between checks for a stop request or a fault
+STOPPED = QT_TRANSLATE_NOOP("Characterize", "stopped by the user; the valve was put back as it was")
+REPORTED = QT_TRANSLATE_NOOP("Characterize", "the valve reported error {0}: {1}")
 
 
 class Stopped(Prm9Error):  # noqa: N818 (a user's request, not a failure)
@@ -88,22 +91,30 @@ class Rig(ABC):
         status = self.status()
         if status.error_code:
             raise ValveFaultError(
-                f"the valve reports error {status.error_code:#06x} ({status.error_text}); "
-                "nothing was tested"
+                QT_TRANSLATE_NOOP(
+                    "Characterize", "the valve reports error {0} ({1}); nothing was tested"
+                )(f"{status.error_code:#06x}", status.error_text)
             )
         if status.device_state is not DeviceState.DEVICE_MODE_ACTIVE:
             waiting = status.device_state is DeviceState.INIT and status.nmt_state != "off"
-            hint = " (a -CA valve with CANopen on waits for its master to enable it)"
-            hint = hint if waiting else ""
-            raise ValveFaultError(
-                f"the valve does not follow its setpoint: device state "
-                f"{status.device_state.value}{hint}; nothing was tested"
+            template = (
+                QT_TRANSLATE_NOOP(
+                    "Characterize",
+                    "the valve does not follow its setpoint: device state {0} (a -CA valve with "
+                    "CANopen on waits for its master to enable it); nothing was tested",
+                )
+                if waiting
+                else QT_TRANSLATE_NOOP(
+                    "Characterize",
+                    "the valve does not follow its setpoint: device state {0}; nothing was tested",
+                )
             )
+            raise ValveFaultError(template(status.device_state.value))
 
     def check(self) -> None:
         """Raise :class:`Stopped` if a stop was requested."""
         if self.stop.is_set():
-            raise Stopped("stopped by the user; the valve was put back as it was")
+            raise Stopped(STOPPED())
 
 
 def counts(pct: float) -> int:
@@ -175,9 +186,7 @@ class EmulatorRig(Rig):
     def _check_fault(self) -> None:
         status = self.valve.status()
         if status.error_code:
-            raise ValveFaultError(
-                f"the valve reported error {status.error_code:#06x}: {status.error_text}"
-            )
+            raise ValveFaultError(REPORTED(f"{status.error_code:#06x}", status.error_text))
 
     def release(self) -> None:
         """Override off."""
@@ -218,7 +227,9 @@ class SessionRig(Rig):
             if not self.session.status().booting:
                 return
             time.sleep(0.001)
-        raise ValveFaultError("the valve did not finish booting")
+        raise ValveFaultError(
+            QT_TRANSLATE_NOOP("Characterize", "the valve did not finish booting")()
+        )
 
     def read(self, mnemonics: Sequence[str]) -> dict[str, int]:
         """Raw values over the link."""
@@ -255,9 +266,7 @@ class SessionRig(Rig):
             session.stream_stop()
         status = session.status()
         if status.error_code:
-            raise ValveFaultError(
-                f"the valve reported error {status.error_code:#06x}: {status.error_text}"
-            )
+            raise ValveFaultError(REPORTED(f"{status.error_code:#06x}", status.error_text))
         self.last_demand = demand
         return np.concatenate(blocks)[:n]
 

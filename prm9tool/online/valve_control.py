@@ -14,7 +14,7 @@ from __future__ import annotations
 from collections.abc import Sequence
 from typing import Any
 
-from PySide6.QtCore import QCoreApplication, QObject, Signal
+from PySide6.QtCore import QT_TRANSLATE_NOOP, QCoreApplication, QObject, Signal
 
 from prm9tool.catalogue.commissioning import (
     CONTROL_WORD,
@@ -40,11 +40,17 @@ def status_blocker(status: object | None) -> Blocker | None:
     )
 
 
-def blocker_text(reason: Blocker, status: object | None = None) -> str:
-    """The reason in a sentence for the user (the program language)."""
+def blocker_text(reason: Blocker, status: object | None = None, in_status: bool = False) -> str:
+    """The reason in a sentence for the user (the program language).
+
+    ``in_status``: the sentence is shown in the Valve status window itself, so it names the
+    button to press there instead of sending the user to that window.
+    """
     translate = QCoreApplication.translate  # the name pyside6-lupdate looks for
     state = str(getattr(status, "device_state", ""))
     nmt = str(getattr(status, "nmt_state", ""))
+    if in_status and reason in _HERE:
+        return translate("ValveControl", str(_HERE[reason])).format(state, nmt)
     texts = {
         Blocker.OFFLINE: translate("ValveControl", "no valve is connected."),
         Blocker.BOOTING: translate("ValveControl", "the valve is starting up (about 2 s)."),
@@ -72,6 +78,29 @@ def blocker_text(reason: Blocker, status: object | None = None) -> str:
         ),
     }
     return texts[reason]
+
+
+_HERE = {  # in the Valve status window: which button of its Commissioning panel to press
+    Blocker.FAULT: QT_TRANSLATE_NOOP(
+        "ValveControl",
+        "an error stops it (device state {0}); the list of errors shows it. Press Enable once "
+        "the cause is gone.",
+    ),
+    Blocker.WAITING_FOR_MASTER: QT_TRANSLATE_NOOP(
+        "ValveControl",
+        "it waits for a CANopen master (NMT {1}, device state {0}). Press NMT start, then "
+        "Enable (control word 08h → 09h → 0Bh → 0Fh).",
+    ),
+    Blocker.NMT_STOPPED: QT_TRANSLATE_NOOP(
+        "ValveControl", "its CANopen master stopped it (NMT stopped). Press NMT start."
+    ),
+    Blocker.DISABLED: QT_TRANSLATE_NOOP(
+        "ValveControl", "it is not enabled (device state {0}). Press Enable."
+    ),
+    Blocker.HOLD: QT_TRANSLATE_NOOP(
+        "ValveControl", "it holds its position (device state HOLD). Press Enable."
+    ),
+}
 
 
 def blocker_summary(reason: Blocker) -> str:

@@ -194,7 +194,9 @@ class CanBusDialog(QDialog):
         self._fill(nodes)
         valves = sum(e.kind == "can" for e in nodes)
         self.state.setText(
-            self.tr("{0} nodes answered, {1} of them PRM9 valves.").format(len(nodes), valves)
+            self.tr("%n node(s) answered.", "", len(nodes))
+            + " "
+            + self.tr("%n of them PRM9 valve(s).", "", valves)
         )
 
     def _fill(self, entries: list[ValveListing]) -> None:

@@ -81,5 +81,5 @@ class CommissioningPanel(QGroupBox):
         if reason is None:
             self.reason.setText(self.tr("The valve follows its setpoint (DEVICE_MODE_ACTIVE)."))
         else:
-            text = blocker_text(reason, status)
+            text = blocker_text(reason, status, in_status=True)
             self.reason.setText(self.tr("The valve does not follow its setpoint: {0}").format(text))

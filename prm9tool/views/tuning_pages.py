@@ -9,6 +9,7 @@ import numpy as np
 from PySide6.QtCore import QRectF
 from PySide6.QtGui import QPainter, QPaintEvent
 from PySide6.QtWidgets import (
+    QCheckBox,
     QComboBox,
     QFormLayout,
     QHBoxLayout,
@@ -36,6 +37,7 @@ from prm9tool.characterize.procedures import (
     critical_gain_tune,
 )
 from prm9tool.characterize.run import Characterization
+from prm9tool.translate import translated
 from prm9tool.views.tuning_plot import COLOURS, Plot, Series, paint_plot
 from prm9tool.views.tuning_report import (
     bode_plots,
@@ -133,6 +135,10 @@ class AutotunePage(Page):
         self.accept_button.setEnabled(False)
         self.accept_button.clicked.connect(self.accept)
         self.buttons.insertWidget(1, self.accept_button)
+        self.override = QCheckBox()  # shown when the identification is not trustworthy
+        self.override.setVisible(False)
+        self.override.toggled.connect(self._override_toggled)
+        self.buttons.insertWidget(2, self.override)
         self.proposal: dict[str, int] = {}
 
     def run(self) -> None:
@@ -168,7 +174,9 @@ class AutotunePage(Page):
             k: int(self.window_.doc.value(k))
             for k in (prefix + s for s in ("KP", "KI", "KD", "T1"))
         }
+        doubts: list[str] = []
         if isinstance(result, AutotuneResult):
+            doubts = [translated(d) for d in result.doubts]
             self.proposal = result.proposed_values
             before, after, simulated = result.before, result.after, result.simulated
             head = self.tr("Model: gain %1, lags %2 ms, dead time %3 ms (fit error %4 %).").replace(
@@ -193,7 +201,11 @@ class AutotunePage(Page):
             figures += " " + self.tr("Proposed, simulated on the emulator's firmware: %1.").replace(
                 "%1", self._step_text(simulated)
             )
-        self.result.setText(head + "<br>" + " · ".join(rows) + "<br>" + figures)
+        text = head + "<br>" + " · ".join(rows) + "<br>" + figures
+        if doubts:
+            warning = self.tr("Do not accept these gains: the identification is not trustworthy.")
+            text += '<br><b><font color="#c00000">' + " ".join([warning, *doubts]) + "</font></b>"
+        self.result.setText(text)
         series = [
             Series(before.record.t * 1000, before.record.channels[LOOPS[loop].actual], self.tr("before (measured)"), COLOURS[0]),
             Series(after.record.t * 1000, after.record.channels[LOOPS[loop].actual], self.tr("proposed (measured)"), COLOURS[1]),
@@ -205,7 +217,15 @@ class AutotunePage(Page):
             t = np.arange(len(simulated)) * 0.2
             series.append(Series(t, simulated, self.tr("proposed (simulated)"), COLOURS[2], True))
         self.plot.show_plots([Plot(self.tr("Step response"), self.tr("time [ms]"), "%", series)])
-        self.accept_button.setEnabled(True)
+        self.override.blockSignals(True)
+        self.override.setChecked(False)
+        self.override.blockSignals(False)
+        self.override.setVisible(bool(doubts))
+        self.accept_button.setEnabled(not doubts)
+
+    def _override_toggled(self, checked: bool) -> None:
+        """An untrustworthy proposal can be accepted only after this explicit choice."""
+        self.accept_button.setEnabled(checked and bool(self.proposal))
 
     def _step_text(self, step: Any) -> str:
         f = step.figures
@@ -230,6 +250,7 @@ class AutotunePage(Page):
         if self.proposal:
             self.window_.accept_values(self.proposal, self.tr("Autotune"))
             self.accept_button.setEnabled(False)
+            self.override.setVisible(False)
 
     def retranslate(self) -> None:
         """Texts."""
@@ -242,6 +263,7 @@ class AutotunePage(Page):
         self.tr_label("limit", self.tr("Stop when the response leaves 0 ± (band):"))
         self.run_button.setText(self.tr("Run autotune"))
         self.accept_button.setText(self.tr("Accept the proposed gains"))
+        self.override.setText(self.tr("Accept anyway (I checked the measurement)"))
 
 
 class BodePage(Page):
