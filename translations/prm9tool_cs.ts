@@ -3128,20 +3128,9 @@ Ano načte a záznam zařadí do fronty; Ne nenačte nic.</translation>
             <source>The oscilloscope needs a connected valve: go online (Communication → Online).</source>
             <translation>Osciloskop potřebuje připojený ventil: přejděte do režimu online (Komunikace → Režim online).</translation>
         </message>
-    </context>
-    <context>
-        <name>ScopeWidget</name>
-        <message>
-            <source>Select at least one measuring point on the right.</source>
-            <translation>Vpravo zvolte alespoň jeden měřicí bod.</translation>
-        </message>
         <message>
             <source>The recording stopped: another operation (a tuning test…) took the stream.</source>
             <translation>Záznam se zastavil: datový tok převzala jiná operace (test ladění…).</translation>
-        </message>
-        <message>
-            <source>The recording could not start: {0}</source>
-            <translation>Záznam nelze spustit: {0}</translation>
         </message>
         <message>
             <source>The link dropped: the setpoint generator has stopped.</source>
@@ -3156,12 +3145,23 @@ Ano načte a záznam zařadí do fronty; Ne nenačte nic.</translation>
             <translation>Ventil odmítl hodnotu generátoru žádané hodnoty ({0}): generátor se zastavil.</translation>
         </message>
         <message>
-            <source>Tuning and characterization…</source>
-            <translation>Ladění a charakterizace…</translation>
-        </message>
-        <message>
             <source>no reason given</source>
             <translation>bez udání důvodu</translation>
+        </message>
+    </context>
+    <context>
+        <name>ScopeWidget</name>
+        <message>
+            <source>Select at least one measuring point on the right.</source>
+            <translation>Vpravo zvolte alespoň jeden měřicí bod.</translation>
+        </message>
+        <message>
+            <source>The recording could not start: {0}</source>
+            <translation>Záznam nelze spustit: {0}</translation>
+        </message>
+        <message>
+            <source>Tuning and characterization…</source>
+            <translation>Ladění a charakterizace…</translation>
         </message>
     </context>
     <context>

@@ -3117,20 +3117,9 @@ Ja lädt hoch und stellt den Eintrag in die Warteschlange; Nein lädt nichts hoc
             <source>The oscilloscope needs a connected valve: go online (Communication → Online).</source>
             <translation>Das Oszilloskop braucht ein verbundenes Ventil: wechseln Sie online (Kommunikation → Online).</translation>
         </message>
-    </context>
-    <context>
-        <name>ScopeWidget</name>
-        <message>
-            <source>Select at least one measuring point on the right.</source>
-            <translation>Wählen Sie rechts mindestens einen Messpunkt.</translation>
-        </message>
         <message>
             <source>The recording stopped: another operation (a tuning test…) took the stream.</source>
             <translation>Die Aufzeichnung wurde beendet: ein anderer Vorgang (ein Tuning-Test…) hat den Datenstrom übernommen.</translation>
-        </message>
-        <message>
-            <source>The recording could not start: {0}</source>
-            <translation>Die Aufzeichnung konnte nicht starten: {0}</translation>
         </message>
         <message>
             <source>The link dropped: the setpoint generator has stopped.</source>
@@ -3145,12 +3134,23 @@ Ja lädt hoch und stellt den Eintrag in die Warteschlange; Nein lädt nichts hoc
             <translation>Das Ventil hat einen Wert des Sollwertgenerators abgelehnt ({0}): Der Generator wurde gestoppt.</translation>
         </message>
         <message>
-            <source>Tuning and characterization…</source>
-            <translation>Einstellung und Charakterisierung…</translation>
-        </message>
-        <message>
             <source>no reason given</source>
             <translation>ohne Angabe eines Grundes</translation>
+        </message>
+    </context>
+    <context>
+        <name>ScopeWidget</name>
+        <message>
+            <source>Select at least one measuring point on the right.</source>
+            <translation>Wählen Sie rechts mindestens einen Messpunkt.</translation>
+        </message>
+        <message>
+            <source>The recording could not start: {0}</source>
+            <translation>Die Aufzeichnung konnte nicht starten: {0}</translation>
+        </message>
+        <message>
+            <source>Tuning and characterization…</source>
+            <translation>Einstellung und Charakterisierung…</translation>
         </message>
     </context>
     <context>

@@ -9,11 +9,12 @@ from __future__ import annotations
 
 import dataclasses
 
-from prm9tool.catalogue._vocabulary import CA_ONLY, FIRMWARE_VERSION, RO, STR, U8, U16, U32, T
+from prm9tool.catalogue._comm_objects import comm_object, pdo_objects
+from prm9tool.catalogue._vocabulary import FIRMWARE_VERSION, STR, U8, U16, U32, T
 from prm9tool.catalogue.schema import (
     EVERY_VARIANT as ALL,
 )
-from prm9tool.catalogue.schema import Access, Applies, DataType, ObjAccess, Parameter, Texts
+from prm9tool.catalogue.schema import Applies, ObjAccess, Parameter
 from prm9tool.catalogue.variant import Config
 
 WO = ObjAccess.WO
@@ -30,149 +31,8 @@ def revision_number(version: str) -> int:
     return (parts[0] & 0xFFFF) << 16 | (parts[1] & 0xFF) << 8 | (parts[2] & 0xFF)
 
 
-def _c(
-    mnemonic: str,
-    index: int,
-    sub: int,
-    dtype: DataType,
-    default: int | str,
-    text: Texts,
-    obj: ObjAccess = RO,
-    lo: int | None = None,
-    hi: int | None = None,
-    node_relative: bool = False,
-    applies: object = CA_ONLY,
-    source: str = "table 7-13",
-    unit: str = "",
-) -> Parameter:
-    nat_lo, nat_hi = dtype.natural_range
-    return Parameter(
-        mnemonic,
-        index,
-        sub,
-        dtype,
-        nat_lo if lo is None else lo,
-        nat_hi if hi is None else hi,
-        default,
-        group="canopen_comm",
-        access=Access.EXPERT if obj in (ObjAccess.RW, WO) else Access.READ_ONLY,
-        obj_access=obj,
-        in_file=False,
-        node_relative=node_relative,
-        text=text,
-        applies=applies,  # type: ignore[arg-type]
-        source=source,
-        unit=unit,
-    )
-
-
-def _pdo(kind: str, n: int, comm: int, mapping: tuple[int, ...], cob: int) -> list[Parameter]:
-    rx = kind == "RPDO"
-    result = [
-        _c(
-            f"{kind}{n}SUBS",
-            comm,
-            0,
-            U8,
-            5,
-            T(
-                f"{kind}{n} communication: highest subindex",
-                f"{kind}{n} Kommunikation: höchster Subindex",
-                f"{kind}{n} komunikace: nejvyšší subindex",
-            ),
-        ),
-        _c(
-            f"{kind}{n}COBID",
-            comm,
-            1,
-            U32,
-            cob,
-            T(f"{kind}{n} COB-ID", f"{kind}{n} COB-ID", f"{kind}{n} COB-ID"),
-            ObjAccess.RW,
-            node_relative=True,
-        ),
-        _c(
-            f"{kind}{n}TYPE",
-            comm,
-            2,
-            U8,
-            0xFF,
-            T(
-                f"{kind}{n} transmission type",
-                f"{kind}{n} Übertragungsart",
-                f"{kind}{n} typ přenosu",
-            ),
-            ObjAccess.RW,
-            source="table 7-13, 7-12 (RPDO type writable as §7.6 writes it: decision)",
-        ),
-    ]
-    result.append(_rpdo_timer(n, comm) if rx else _tpdo_timer(n, comm))
-    map_index = (0x1600 if rx else 0x1A00) + n - 1
-    result.append(
-        _c(
-            f"{kind}{n}MAPN",
-            map_index,
-            0,
-            U8,
-            len(mapping),
-            T(
-                f"{kind}{n} mapping: number of entries",
-                f"{kind}{n} Mapping: Anzahl Einträge",
-                f"{kind}{n} mapování: počet položek",
-            ),
-        )
-    )
-    for sub, entry in enumerate(mapping, start=1):
-        result.append(
-            _c(
-                f"{kind}{n}MAP{sub}",
-                map_index,
-                sub,
-                U32,
-                entry,
-                T(
-                    f"{kind}{n} mapping entry {sub}",
-                    f"{kind}{n} Mapping-Eintrag {sub}",
-                    f"{kind}{n} mapovaný objekt {sub}",
-                ),
-            )
-        )
-    return result
-
-
-def _tpdo_timer(n: int, comm: int) -> Parameter:
-    return _c(
-        f"TPDO{n}TIMER",
-        comm,
-        5,
-        U16,
-        0x1388,
-        T(f"TPDO{n} event timer", f"TPDO{n} Ereignis-Timer", f"TPDO{n} časovač událostí"),
-        ObjAccess.RW,
-        unit="ms",
-    )
-
-
-def _rpdo_timer(n: int, comm: int) -> Parameter:
-    return _c(
-        f"RPDO{n}TIMER",
-        comm,
-        5,
-        U16,
-        0,
-        T(
-            f"RPDO{n} event timer (reception deadline, 0 = off)",
-            f"RPDO{n} Ereignis-Timer (Empfangsfrist, 0 = aus)",
-            f"RPDO{n} časovač událostí (lhůta příjmu, 0 = vypnuto)",
-        ),
-        ObjAccess.RW,
-        unit="ms",
-        source="CiA 301 deadline monitoring for table 7-18 'Event-Timer Error' (not in 7-13: decision)",
-    )
-
-
 COMMUNICATION: list[Parameter] = [
-    _c(
+    comm_object(
         "DEVTYPE",
         0x1000,
         0,
@@ -182,8 +42,10 @@ COMMUNICATION: list[Parameter] = [
         CONST,
         applies=ALL,
     ),
-    _c("ERRREG", 0x1001, 0, U8, 0, T("Error register", "Fehlerregister", "Chybový registr")),
-    _c(
+    comm_object(
+        "ERRREG", 0x1001, 0, U8, 0, T("Error register", "Fehlerregister", "Chybový registr")
+    ),
+    comm_object(
         "ERRCOUNT",
         0x1003,
         0,
@@ -200,7 +62,7 @@ COMMUNICATION: list[Parameter] = [
         source="table 7-13 (only 0 may be written: clears the history, CiA 301)",
     ),
     *[
-        _c(
+        comm_object(
             f"ERRHIST{k}",
             0x1003,
             k,
@@ -214,7 +76,7 @@ COMMUNICATION: list[Parameter] = [
         )
         for k in range(1, ERROR_HISTORY_DEPTH + 1)
     ],
-    _c(
+    comm_object(
         "COBIDSYNC",
         0x1005,
         0,
@@ -223,7 +85,7 @@ COMMUNICATION: list[Parameter] = [
         T("COB-ID SYNC", "COB-ID SYNC", "COB-ID zprávy SYNC"),
         ObjAccess.RW,
     ),
-    _c(
+    comm_object(
         "CYCLEPERIOD",
         0x1006,
         0,
@@ -233,7 +95,7 @@ COMMUNICATION: list[Parameter] = [
         ObjAccess.RW,
         unit="µs",
     ),
-    _c(
+    comm_object(
         "DEVNAME",
         0x1008,
         0,
@@ -242,7 +104,7 @@ COMMUNICATION: list[Parameter] = [
         T("Manufacturer device name", "Gerätename des Herstellers", "Název zařízení výrobce"),
         CONST,
     ),
-    _c(
+    comm_object(
         "HWVER",
         0x1009,
         0,
@@ -251,7 +113,7 @@ COMMUNICATION: list[Parameter] = [
         T("Manufacturer hardware version", "Hardware-Version", "Verze HW výrobce"),
         CONST,
     ),
-    _c(
+    comm_object(
         "STORESUBS",
         0x1010,
         0,
@@ -264,7 +126,7 @@ COMMUNICATION: list[Parameter] = [
         ),
         source="CiA 301 (0x1010: seed 003)",
     ),
-    _c(
+    comm_object(
         "STOREALL",
         0x1010,
         1,
@@ -278,7 +140,7 @@ COMMUNICATION: list[Parameter] = [
         ObjAccess.RW,
         source="CiA 301 (reads 1: stores on command)",
     ),
-    _c(
+    comm_object(
         "RESTORESUBS",
         0x1011,
         0,
@@ -291,7 +153,7 @@ COMMUNICATION: list[Parameter] = [
         ),
         source="CiA 301",
     ),
-    _c(
+    comm_object(
         "RESTOREALL",
         0x1011,
         1,
@@ -305,7 +167,7 @@ COMMUNICATION: list[Parameter] = [
         ObjAccess.RW,
         source="CiA 301",
     ),
-    _c(
+    comm_object(
         "COBIDEMCY",
         0x1014,
         0,
@@ -316,7 +178,7 @@ COMMUNICATION: list[Parameter] = [
         node_relative=True,
         source="table 7-13 (U32 as §7.6 writes 4 bytes; default 0x80+node: decision)",
     ),
-    _c(
+    comm_object(
         "HEARTBEAT",
         0x1017,
         0,
@@ -326,7 +188,7 @@ COMMUNICATION: list[Parameter] = [
         ObjAccess.RW,
         unit="ms",
     ),
-    _c(
+    comm_object(
         "IDSUBS",
         0x1018,
         0,
@@ -334,8 +196,10 @@ COMMUNICATION: list[Parameter] = [
         4,
         T("Identity: highest subindex", "Identität: höchster Subindex", "Identita: počet položek"),
     ),
-    _c("VENDORID", 0x1018, 1, U32, 0xE6, T("Vendor ID", "Hersteller-ID", "Vendor ID"), CONST),
-    _c(
+    comm_object(
+        "VENDORID", 0x1018, 1, U32, 0xE6, T("Vendor ID", "Hersteller-ID", "Vendor ID"), CONST
+    ),
+    comm_object(
         "PRODCODE",
         0x1018,
         2,
@@ -344,7 +208,7 @@ COMMUNICATION: list[Parameter] = [
         T("Product code", "Produktcode", "Produktový klíč"),
         source="table 7-13 (value: decision)",
     ),
-    _c(
+    comm_object(
         "REVISION",
         0x1018,
         3,
@@ -357,7 +221,7 @@ COMMUNICATION: list[Parameter] = [
         ),
         source="table 7-13 (encoding: decision)",
     ),
-    _c(
+    comm_object(
         "NMTSTARTUP",
         0x1F80,
         0,
@@ -372,10 +236,10 @@ COMMUNICATION: list[Parameter] = [
         0,
         2,
     ),
-    *_pdo("RPDO", 1, 0x1400, (0x60400010, 0x63000110), 0x40000200),
-    *_pdo("RPDO", 2, 0x1401, (0x21000210,), 0x40000300),
-    *_pdo("TPDO", 1, 0x1800, (0x60410010, 0x63010110), 0x180),
-    *_pdo("TPDO", 2, 0x1801, (0x21000110, 0x21000610), 0x280),
+    *pdo_objects("RPDO", 1, 0x1400, (0x60400010, 0x63000110), 0x40000200),
+    *pdo_objects("RPDO", 2, 0x1401, (0x21000210,), 0x40000300),
+    *pdo_objects("TPDO", 1, 0x1800, (0x60410010, 0x63010110), 0x180),
+    *pdo_objects("TPDO", 2, 0x1801, (0x21000110, 0x21000610), 0x280),
 ]
 
 

@@ -20,24 +20,13 @@ from prm9tool.analysis.pid import PidGains, critical_gain_rule, from_parameters,
 from prm9tool.analysis.static import StaticCharacteristic, static_characteristic
 from prm9tool.catalogue.signals import BY_KEY
 from prm9tool.characterize.rig import Rig
+from prm9tool.characterize.transparent import TRANSPARENT
 from prm9tool.errors import Prm9Error
 from prm9tool.scope.measure import StepFigures, step_figures
 
 PERCENT = 100.0 / 16384.0
 SAMPLES_PER_PERIOD = 10  # a sweep goes no higher than the sample rate / this (decision)
 SWEEP_MIN_SAMPLES = 256  # what the frequency response needs
-TRANSPARENT = {
-    "THRESETP": 0,
-    "SETPLINON": 0,
-    "RAMPSETPOSUP": 0,
-    "RAMPSETPOSDOWN": 0,
-    "RAMPSETNEGUP": 0,
-    "RAMPSETNEGDOWN": 0,
-    "GAINSETPOS": 16384,
-    "GAINSETNEG": 16384,
-    "OFFSETPOS": 0,
-    "OFFSETNEG": 0,
-}
 
 
 @dataclass(frozen=True)

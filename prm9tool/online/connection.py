@@ -10,9 +10,7 @@ measuring points (≈ 7 Hz). A communication error ends the session: the connect
 
 from __future__ import annotations
 
-import contextlib
 import logging
-import threading
 from collections.abc import Callable, Mapping, Sequence
 from typing import TYPE_CHECKING, Any, cast
 
@@ -22,7 +20,7 @@ from prm9tool.online.connection_worker import ConnectionWorker, Job
 from prm9tool.online.setpoint_driver import (
     GENERATOR_OBJECTS,
 )
-from prm9tool.online.valve_listing import default_lister, default_opener
+from prm9tool.online.valve_listing import default_lister, default_opener, list_in_thread
 
 if TYPE_CHECKING:
     from prm9tool.online.connection_protocol import ListedValves, ValveIdentity
@@ -147,21 +145,9 @@ class ValveConnection(QObject):
         """:meth:`list_devices` in a thread of its own; ``deliver(entries)`` — or
         ``deliver(exception)`` if listing failed — runs on the GUI thread. ``can``: also scan
         that CAN bus (``interface``, ``channel``, ``bitrate``) for its nodes."""
-        specs = list(emulators)
-        bus = dict(can) if can is not None else None
-
-        def run() -> None:
-            try:
-                found: ListedValves = (
-                    self._lister(specs) if bus is None else self._lister(specs, bus)
-                )
-            except Exception as exc:  # e.g. a broken USB stack: the caller says so
-                found = exc
-            # RuntimeError: the connection was deleted meanwhile, nobody is waiting
-            with contextlib.suppress(RuntimeError):
-                self._post(lambda: deliver(found))
-
-        threading.Thread(target=run, name="valve-list", daemon=True).start()
+        list_in_thread(
+            self._lister, emulators, can, lambda found: self._post(lambda: deliver(found))
+        )
 
     # --- commands (GUI thread) ------------------------------------------------------------------
     def go_online(self, entry: object) -> None:

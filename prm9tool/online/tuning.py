@@ -25,6 +25,7 @@ from PySide6.QtCore import QCoreApplication, QObject, Signal
 from prm9tool.catalogue import CATALOGUE
 from prm9tool.catalogue.signals import BY_KEY
 from prm9tool.catalogue.typekey import TypeKey
+from prm9tool.characterize.transparent import NO_SHAPING, UNITY_GAIN
 from prm9tool.errors import Prm9Error
 from prm9tool.i18n import format_number, format_significant
 from prm9tool.model.document import ParameterDocument
@@ -43,24 +44,9 @@ LOOPS: dict[str, tuple[str, str, float, float]] = {
 PRE_STEP_S = 0.005
 SAMPLES = 300  # points per drawn response (the capture is decimated to about this many)
 VOLTS_PER_PERCENT = 0.1  # setpoint type 9: ±10 V = ±100 %
-_TRANSPARENT: dict[str, int] = {
-    "AINSETP": 9,
-    "INVERSEP": 0,
-    "THRESETP": 0,
-    "SETPLINON": 0,
-    "RAMPSETPOSUP": 0,
-    "RAMPSETPOSDOWN": 0,
-    "RAMPSETNEGUP": 0,
-    "RAMPSETNEGDOWN": 0,
-}
+_TRANSPARENT: dict[str, int] = {"AINSETP": 9, "INVERSEP": 0, **NO_SHAPING}
 # The position loop alone: spool position control mode (no process loop on E04), no gain/offset.
-_POSITION_ONLY: dict[str, int] = {
-    "CTRLMODE": 2,
-    "GAINSETPOS": 16384,
-    "GAINSETNEG": 16384,
-    "OFFSETPOS": 0,
-    "OFFSETNEG": 0,
-}
+_POSITION_ONLY: dict[str, int] = {"CTRLMODE": 2, **UNITY_GAIN}
 
 
 @dataclass(frozen=True)

@@ -4,7 +4,9 @@ remembers as a dict, turned into the factory's options."""
 
 from __future__ import annotations
 
-from collections.abc import Mapping, Sequence
+import contextlib
+import threading
+from collections.abc import Callable, Mapping, Sequence
 from typing import Any
 
 
@@ -33,3 +35,26 @@ def default_opener(entry: object) -> Any:
     from prm9tool.device import factory
 
     return factory.open_session(entry)  # type: ignore[arg-type]
+
+
+def list_in_thread(
+    lister: Callable[..., list[Any]],
+    emulators: Sequence[str],
+    can: Mapping[str, object] | None,
+    deliver: Callable[[list[Any] | Exception], None],
+) -> None:
+    """``lister(emulators[, can])`` in a thread of its own; ``deliver`` gets the entries or the
+    exception listing raised (e.g. a broken USB stack: the caller says so)."""
+    specs = list(emulators)
+    bus = dict(can) if can is not None else None
+
+    def run() -> None:
+        try:
+            found: list[Any] | Exception = lister(specs) if bus is None else lister(specs, bus)
+        except Exception as exc:
+            found = exc
+        # RuntimeError: the connection was deleted meanwhile, nobody is waiting
+        with contextlib.suppress(RuntimeError):
+            deliver(found)
+
+    threading.Thread(target=run, name="valve-list", daemon=True).start()

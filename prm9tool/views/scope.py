@@ -221,9 +221,7 @@ class ScopeWidget(QWidget):
         self._accepting = False
         self.display.hold_all()
         self._timer.stop()
-        self._recording_note = self.tr(
-            "The recording stopped: another operation (a tuning test…) took the stream."
-        )
+        self._recording_note = self._texts.stream_taken()
         self._update_controls()
         self._update_status()
 
@@ -354,20 +352,15 @@ class ScopeWidget(QWidget):
         measure_against_demand(self.channels, self.step_panel)
 
     def _on_generator_stopped_by_link(self) -> None:
-        self._generator_note = self.tr("The link dropped: the setpoint generator has stopped.")
+        self._generator_note = self._texts.generator_link_dropped()
         self._update_status()
 
     def _on_generator_stopped_by_operation(self) -> None:
-        self._generator_note = self.tr(
-            "The setpoint generator has stopped: another operation (a tuning test, an upload…) "
-            "drives the valve now."
-        )
+        self._generator_note = self._texts.generator_displaced()
         self._update_status()
 
     def _on_generator_refused(self, reason: str) -> None:
-        self._generator_note = self.tr(
-            "The valve refused a value of the setpoint generator ({0}): the generator has stopped."
-        ).format(reason or self.tr("no reason given"))
+        self._generator_note = self._texts.generator_refused(reason)
         self._update_status()
 
     # --- export ------------------------------------------------------------------------------

@@ -1,5 +1,6 @@
-"""The oscilloscope's status line: why the valve does not follow its setpoint, and what the
-recording does (stopped, waiting for the trigger, paused, recording at a rate, offline)."""
+"""The oscilloscope's status line: why the valve does not follow its setpoint, what the
+recording does (stopped, waiting for the trigger, paused, recording at a rate, offline) and
+why the recording or the setpoint generator stopped without the user."""
 
 from __future__ import annotations
 
@@ -58,3 +59,24 @@ class ScopeStatusText(QObject):
         return self.tr(
             "The oscilloscope needs a connected valve: go online (Communication → Online)."
         )
+
+    def stream_taken(self) -> str:
+        """The recording stopped because another operation took the stream."""
+        return self.tr("The recording stopped: another operation (a tuning test…) took the stream.")
+
+    def generator_link_dropped(self) -> str:
+        """The setpoint generator stopped with the link."""
+        return self.tr("The link dropped: the setpoint generator has stopped.")
+
+    def generator_displaced(self) -> str:
+        """The setpoint generator stopped for another operation."""
+        return self.tr(
+            "The setpoint generator has stopped: another operation (a tuning test, an upload…) "
+            "drives the valve now."
+        )
+
+    def generator_refused(self, reason: str) -> str:
+        """The valve refused a value of the setpoint generator (``reason``: its answer)."""
+        return self.tr(
+            "The valve refused a value of the setpoint generator ({0}): the generator has stopped."
+        ).format(reason or self.tr("no reason given"))
