@@ -14,7 +14,7 @@ from pypdf import PdfReader
 from usb_fakes import FakeHid
 
 from prm9tool.catalogue import CATALOGUE
-from prm9tool.catalogue.commissioning import ENABLE_SEQUENCE
+from prm9tool.catalogue.commissioning import ENABLE_SEQUENCE, NmtCommand
 from prm9tool.cli.main import main
 from prm9tool.device import factory
 from prm9tool.device.emulator import EmulatedValve
@@ -84,8 +84,10 @@ def can_valve(tmp_path, monkeypatch, request):
     from can_link_rig import make_link_rig
 
     monkeypatch.setenv("PRM9TOOL_DATA_DIR", str(tmp_path / "data"))
-    rig = make_link_rig(request.node.name, tmp_path, E02 + "-CA")
+    real = getattr(request, "param", False)  # True: without this project's objects (0x2050 …)
+    rig = make_link_rig(request.node.name, tmp_path, E02 + "-CA", real_valve=real)
     word = CATALOGUE["CONTROLWORD"]
+    rig.valve.nmt_command(NmtCommand.START)  # RPDO1 (the setpoint) counts only when OPERATIONAL
     for value in ENABLE_SEQUENCE:  # the master enables the valve (commissioning, §7.6)
         rig.valve.write(word.index, word.subindex, value)
     rig.valve.start()
@@ -145,6 +147,29 @@ def test_the_tuning_windows_rig_over_canopen(can_valve):
             model_tune(rig, Targets(10.0, 0.04))
     assert can_valve.working("SETPOVRON") == 0
     assert can_valve.working("POSKP") == CATALOGUE["POSKP"].default
+
+
+@pytest.mark.parametrize("can_valve", [True], indirect=True, ids=["real-valve"])
+def test_a_valve_without_the_override_objects_is_characterized_over_rpdo1(can_valve):
+    from prm9tool.characterize.canrig import rig_for_session
+    from prm9tool.characterize.procedures import static_test, step_test
+    from prm9tool.device.canlink.rpdo_setpoint import RpdoSetpoint
+    from prm9tool.device.canlink.session import CanopenSession
+    from prm9tool.errors import Prm9Error
+
+    before = can_valve.working("POSSETP")
+    with CanopenSession(can_valve.options, 10, type_key=E02 + "-CA") as session:
+        with pytest.raises(Prm9Error, match="not available over CANopen"):
+            session.read("SETPOVRON")  # what a real valve lacks: the override
+        assert "SETPOVRON" in session.unavailable
+        assert isinstance(session.setpoint_link(), RpdoSetpoint)
+        rig = rig_for_session(session)
+        step = step_test(rig, 25.0, duration_s=0.1)  # the setpoint travels in RPDO1 (0x6300)
+        assert step.figures is not None and step.figures.final == pytest.approx(25.0, abs=2.0)
+        static = static_test(rig, period_s=2.0)
+        assert 0.9 < static.characteristic.gain < 1.1
+        assert "SETPOVR" not in session.unavailable  # never asked for: not even tried
+    assert can_valve.working("POSSETP") == before  # the setpoint it had, given back
 
 
 def test_the_sdo_sampler_reads_the_actual_position_not_its_entry_count(can_valve):

@@ -1,25 +1,34 @@
 """The valve under test over the CANopen link: the stimulus and the samples by SDO.
 
 The CANopen link has no stream of measuring points sampled in one firmware cycle. The rig
-therefore runs its own loop on the master: each sample period it writes the override value
-(SETPOVR, only when it changes) and then reads the response's object (actual position 0x6301,
-process actual value 0x6381) — the demand of a sample is the value whose write the valve had
-confirmed before the response was read, so it is known exactly without an object for it, and
-the phase between them is accurate to one SDO round trip. Measuring points without an object
-on the link (the controller's output, the setpoint chain's stages) give NaN, never a made-up
-value.
+therefore runs its own loop on the master: each sample period it sends the setpoint through the
+session's setpoint link (``session.setpoint_link()``: RPDO1, control word + 0x6300/0x6380,
+manual §7.6 and table 7-13 — what a real valve has, not this project's override objects) and
+then reads the response's object by SDO (actual position 0x6301, process actual value 0x6381).
+CAN frames on one bus are delivered in order and the valve handles them in that order, so the
+SDO read sent after the RPDO frame is answered by a valve that has taken the setpoint: the
+demand of a sample is known exactly without an object for it, and the phase between them is
+accurate to one SDO round trip. Measuring points without an object on the link (the
+controller's output, the setpoint chain's stages) give NaN, never a made-up value.
+
+The link is taken at the first :meth:`CanRig.play` and held until :meth:`CanRig.release`
+(which the procedures call at the end, on Stop, on a fault and on a refusal): a keeper thread
+repeats the last frame between plays so the valve's RPDO reception deadline does not fire while
+a procedure computes; :meth:`~prm9tool.device.setpoint.SetpointLink.end` sends the setpoint the
+valve had before. A refusal (node not OPERATIONAL, not enabled, RPDO1 off) is the link's error,
+which says what to do.
 
 The sample period is chosen from the SDO round trips measured when the rig is made (at least
 2 ms) and a trial run at that pace (doubled while more than 1 % of the trial comes late); more
 than 5 % of a test's samples taken over two periods late make the play fail rather than be
-stretched
-or interpolated (:class:`LinkTooSlowError`). The TPDO1 scope
+stretched or interpolated (:class:`LinkTooSlowError`). The TPDO1 scope
 (:mod:`prm9tool.device.canlink.pdo_scope`) is not used: its samples carry no demand value.
 """
 
 from __future__ import annotations
 
 import math
+import threading
 import time
 from collections.abc import Mapping, Sequence
 from typing import TYPE_CHECKING
@@ -28,13 +37,14 @@ import numpy as np
 
 from prm9tool.catalogue import CATALOGUE
 from prm9tool.characterize.rig import Rig, RigInfo, ValveFaultError, counts
-from prm9tool.errors import CommunicationError
+from prm9tool.errors import CommunicationError, Prm9Error
 from prm9tool.messages import QT_TRANSLATE_NOOP
 
 if TYPE_CHECKING:
     from prm9tool.device.canlink.session import CanopenSession
     from prm9tool.device.emulator.states import ValveStatus
     from prm9tool.device.session import ValveSession
+    from prm9tool.device.setpoint import SetpointLink
 
 DEMAND_KEYS = ("position_setpoint", "process_setpoint")  # the demand the master wrote
 RESPONSE_OBJECTS = {"position_actual": "POSACT", "process_actual": "PRCACT"}  # 0x6301/0x6381
@@ -45,7 +55,7 @@ PROBES = 20  # SDO round trips measured to choose the period
 MIN_PERIOD_S = 0.002  # decision: below this a loaded PC cannot keep the period by sleeping
 MAX_PERIOD_S = 0.05  # the slowest pace tried (20 Hz)
 TRIAL = 200  # samples of the trial run at the chosen pace
-KEEP_ALIVE_S = 0.2  # SETPOVRON is written again this often (the valve drops it after 0.5 s)
+CHECK_S = 0.2  # a stop request is looked at this often during a play
 
 
 class LinkTooSlowError(CommunicationError):
@@ -60,7 +70,12 @@ class CanRig(Rig):
     def __init__(self, session: CanopenSession, period_s: float | None = None) -> None:
         super().__init__()
         self.session = session
-        self._over = CATALOGUE["SETPOVR"]
+        self._link: SetpointLink | None = None  # taken at the first play, until release()
+        self._lock = threading.Lock()  # one frame at a time, in order (set vs. keep-alive)
+        self._sent = 0.0  # perf_counter of the last frame
+        self._quit = threading.Event()
+        self._keeper: threading.Thread | None = None
+        self._keeper_error: Exception | None = None
         self.period_s = period_s if period_s is not None else self._measure_period()
         options = session.options
         info = session.info
@@ -75,15 +90,14 @@ class CanRig(Rig):
         self.late = 0  # samples of the last play taken late (LATE_PERIODS)
 
     def _measure_period(self) -> float:
-        """Twice the 90th percentile of measured write + read round trips, rounded up to
-        0.5 ms (≥ 2 ms); then tried for TRIAL samples at that pace (other threads and
-        processes take their share of the PC too) and doubled while too many come late."""
+        """Twice the 90th percentile of measured read round trips, rounded up to 0.5 ms
+        (≥ 2 ms); then tried for TRIAL samples at that pace (other threads and processes take
+        their share of the PC too) and doubled while too many come late. The setpoint frame
+        of a sample needs no answer, so only the read is measured (the valve is not moved)."""
         sdo = self.session.sdo
         obj = CATALOGUE["POSACT"]
-        data = self._over.dtype.encode(int(self.session.read("SETPOVR")))
 
         def tick() -> None:
-            sdo.download(self._over.index, self._over.subindex, data)  # the override is off
             sdo.upload(obj.index, obj.subindex)
 
         trips = []
@@ -117,28 +131,26 @@ class CanRig(Rig):
         self.session.write_many(dict(values))
 
     def play(self, setpoint_pct: np.ndarray, keys: Sequence[str]) -> np.ndarray:
-        """One override value and one reading per sample period (see the module docstring)."""
-        sdo, over = self.session.sdo, self._over
-        on = CATALOGUE["SETPOVRON"]
-        keep_alive = max(1, round(KEEP_ALIVE_S / self.period_s))
+        """One setpoint frame and one reading per sample period (see the module docstring)."""
+        sdo = self.session.sdo
+        checks = max(1, round(CHECK_S / self.period_s))
         values = [counts(float(v)) for v in setpoint_pct]
-        self.write({"SETPOVR": values[0], "SETPOVRON": 1})
-        last = values[0]
+        self._take(values[0])
         rows = np.full((len(values), len(keys)), np.nan)
         late = 0
         due = time.perf_counter()
         for i, value in enumerate(values):
-            if i % keep_alive == 0:
+            if i % checks == 0:
                 self.check()
-                sdo.download(on.index, on.subindex, on.dtype.encode(1))
+                self._raise_keeper_error()
             wait = due - time.perf_counter()
             if wait > 0:
                 time.sleep(wait)
             elif -wait > LATE_PERIODS * self.period_s:
                 late += 1
-            if value != last:
-                sdo.download(over.index, over.subindex, over.dtype.encode(value))
-                last = value
+            self._send(value)
+            # Frames on the bus are ordered: the SDO request below follows the RPDO frame, so
+            # the valve answers it after it has taken this sample's setpoint.
             for column, key in enumerate(keys):
                 if key in DEMAND_KEYS:
                     rows[i, column] = value
@@ -161,13 +173,57 @@ class CanRig(Rig):
         self.last_demand = np.asarray(values, dtype=float) / 163.84
         return rows
 
+    def _take(self, first: int) -> None:
+        """Take the setpoint over (once until :meth:`release`) and start the keeper."""
+        if self._link is not None:
+            return
+        link = self.session.setpoint_link()
+        link.begin(first)  # a refusal says what to do; nothing runs then
+        self._link, self._sent = link, time.perf_counter()
+        self._quit.clear()
+        self._keeper_error = None
+        self._keeper = threading.Thread(target=self._keep, name="canrig-keeper", daemon=True)
+        self._keeper.start()
+
+    def _send(self, value: int) -> None:
+        assert self._link is not None
+        with self._lock:
+            self._link.set(value)
+            self._sent = time.perf_counter()
+
+    def _keep(self) -> None:
+        """The last frame again when none was sent for the link's keep-alive interval."""
+        link = self._link
+        assert link is not None
+        while not self._quit.wait(link.keepalive_s / 2):
+            with self._lock:
+                if time.perf_counter() - self._sent < link.keepalive_s:
+                    continue
+                try:
+                    link.keep_alive()
+                except Prm9Error as exc:  # raised in the procedure's thread at its next check
+                    self._keeper_error = exc
+                    return
+                self._sent = time.perf_counter()
+
+    def _raise_keeper_error(self) -> None:
+        if self._keeper_error is not None:
+            raise self._keeper_error
+
+    def release(self) -> None:
+        """Stop the keeper and give the setpoint back (the value the valve had before)."""
+        self._quit.set()
+        if self._keeper is not None:
+            self._keeper.join()
+            self._keeper = None
+        link, self._link = self._link, None
+        if link is not None:
+            with self._lock:
+                link.end()
+
     def status(self) -> ValveStatus:
         """Status by SDO."""
         return self.session.status()
-
-    def release(self) -> None:
-        """Override off."""
-        self.session.write("SETPOVRON", 0)
 
 
 def rig_for_session(session: ValveSession, link: str = "USB") -> Rig:

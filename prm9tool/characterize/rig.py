@@ -1,10 +1,11 @@
-"""The valve under test: parameters, the setpoint override and synchronous measuring points.
+"""The valve under test: parameters, the setpoint from the PC and synchronous measuring points.
 
-Every procedure drives the valve's setpoint through the service override (SETPOVRON/SETPOVR,
-the oscilloscope generator's objects) and records up to three measuring points sampled in the
-same firmware cycle. :class:`EmulatorRig` steps an emulated valve itself, as fast as the CPU
-allows; :class:`SessionRig` works over any valve session (USB, or an emulated valve behind its
-link) at the rate its stream gives.
+Every procedure drives the valve's setpoint from the PC and records up to three measuring
+points sampled in the same firmware cycle. :class:`EmulatorRig` steps an emulated valve itself,
+as fast as the CPU allows, through the service override (SETPOVRON/SETPOVR); :class:`SessionRig`
+works over a valve session with a stream (USB) through the session's setpoint link (over USB
+the override) at the rate its stream gives. Over CANopen
+(:class:`~prm9tool.characterize.canrig.CanRig`) the setpoint travels in RPDO1.
 """
 
 from __future__ import annotations
@@ -205,7 +206,8 @@ def _runs(values: list[int]) -> list[tuple[int, int]]:
 
 
 class SessionRig(Rig):
-    """Any open valve session: the override is written at the link's pace, samples stream in.
+    """Any open valve session: the setpoint is driven through the session's setpoint link
+    (``session.setpoint_link()``, over USB the override) at the link's pace, samples stream in.
 
     The stimulus is written once per ``update`` samples (a USB report takes about 1 ms); the
     analysis uses the demand value the valve recorded, not the stimulus, so neither the
@@ -219,6 +221,7 @@ class SessionRig(Rig):
         self.info = RigInfo(info.type_key, info.serial, info.firmware, link, float(rate_hz))
         self.rate_hz = rate_hz
         self.update = max(1, rate_hz // 1000)
+        self._link = session.setpoint_link()  # over USB the override SETPOVRON/SETPOVR
         self._wait_booted()
 
     def _wait_booted(self, limit: int = 5000) -> None:
@@ -248,8 +251,9 @@ class SessionRig(Rig):
         """
         session = self.session
         n = len(setpoint_pct)
+        link = self._link
         session.stream_start(list(keys), self.rate_hz)
-        session.write_many({"SETPOVR": counts(float(setpoint_pct[0])), "SETPOVRON": 1})
+        link.begin(counts(float(setpoint_pct[0])))  # again each play: the valve may have dropped it
         blocks: list[np.ndarray] = []
         demand = np.empty(n)
         received = 0
@@ -257,7 +261,7 @@ class SessionRig(Rig):
             while received < n:
                 self.check()
                 value = float(setpoint_pct[received])
-                session.write("SETPOVR", counts(value))
+                link.set(counts(value))
                 block = session.stream_read()
                 blocks.append(block)
                 demand[received : received + len(block)] = value
@@ -275,5 +279,5 @@ class SessionRig(Rig):
         return self.session.status()
 
     def release(self) -> None:
-        """Override off."""
-        self.session.write("SETPOVRON", 0)
+        """Give the setpoint back (the link's end: over USB the override off)."""
+        self._link.end()
