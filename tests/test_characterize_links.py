@@ -84,10 +84,11 @@ def can_valve(tmp_path, monkeypatch, request):
     from can_link_rig import make_link_rig
 
     monkeypatch.setenv("PRM9TOOL_DATA_DIR", str(tmp_path / "data"))
-    real = getattr(request, "param", False)  # True: without this project's objects (0x2050 …)
-    rig = make_link_rig(request.node.name, tmp_path, E02 + "-CA", real_valve=real)
+    kind = getattr(request, "param", "")  # "real": without this project's objects (0x2050 …)
+    rig = make_link_rig(request.node.name, tmp_path, E02 + "-CA", real_valve=kind == "real")
     word = CATALOGUE["CONTROLWORD"]
-    rig.valve.nmt_command(NmtCommand.START)  # RPDO1 (the setpoint) counts only when OPERATIONAL
+    if kind != "not-started":  # RPDO1 (the setpoint) counts only when OPERATIONAL
+        rig.valve.nmt_command(NmtCommand.START)
     for value in ENABLE_SEQUENCE:  # the master enables the valve (commissioning, §7.6)
         rig.valve.write(word.index, word.subindex, value)
     rig.valve.start()
@@ -149,7 +150,7 @@ def test_the_tuning_windows_rig_over_canopen(can_valve):
     assert can_valve.working("POSKP") == CATALOGUE["POSKP"].default
 
 
-@pytest.mark.parametrize("can_valve", [True], indirect=True, ids=["real-valve"])
+@pytest.mark.parametrize("can_valve", ["real"], indirect=True)
 def test_a_valve_without_the_override_objects_is_characterized_over_rpdo1(can_valve):
     from prm9tool.characterize.canrig import rig_for_session
     from prm9tool.characterize.procedures import static_test, step_test
@@ -170,6 +171,28 @@ def test_a_valve_without_the_override_objects_is_characterized_over_rpdo1(can_va
         assert 0.9 < static.characteristic.gain < 1.1
         assert "SETPOVR" not in session.unavailable  # never asked for: not even tried
     assert can_valve.working("POSSETP") == before  # the setpoint it had, given back
+
+
+@pytest.mark.parametrize("can_valve", ["not-started"], indirect=True)
+def test_a_node_not_operational_is_refused_with_what_to_do_and_nothing_sent(can_valve):
+    from waiting import wait_for
+
+    from prm9tool.characterize.canrig import rig_for_session
+    from prm9tool.characterize.procedures import step_test
+    from prm9tool.device.canlink.rpdo_setpoint import RpdoSetpointError
+    from prm9tool.device.canlink.session import CanopenSession
+
+    before = can_valve.working("POSSETP")
+    with CanopenSession(can_valve.options, 10) as session:
+        session.write("HEARTBEAT", 20)
+        wait_for(lambda: session.nmt_state == "pre-operational")
+        rig = rig_for_session(session)
+        with pytest.raises(RpdoSetpointError, match=r"NMT pre-operational.*NMT start"):
+            step_test(rig, 25.0, duration_s=0.1)
+        session.write("HEARTBEAT", 0)
+    assert can_valve.working("POSSETP") == before
+    assert can_valve.working("RPDO1TIMER") == 0  # no deadline left armed
+    assert can_valve.working("POSKP") == CATALOGUE["POSKP"].default  # parameters as they were
 
 
 def test_the_sdo_sampler_reads_the_actual_position_not_its_entry_count(can_valve):
