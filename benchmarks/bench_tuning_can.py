@@ -18,7 +18,7 @@ import time
 import can
 
 from prm9tool.catalogue import CATALOGUE
-from prm9tool.catalogue.commissioning import ENABLE_SEQUENCE
+from prm9tool.catalogue.commissioning import ENABLE_SEQUENCE, NmtCommand
 from prm9tool.characterize.canrig import CanRig
 from prm9tool.characterize.procedures import bode_test
 from prm9tool.characterize.rig import EmulatorRig
@@ -38,6 +38,7 @@ def main() -> None:
     slave = valve.connect_can(bus)
     valve.advance(2.5)  # boot
     word = CATALOGUE["CONTROLWORD"]
+    valve.nmt_command(NmtCommand.START)  # the setpoint travels in RPDO1: OPERATIONAL
     for value in ENABLE_SEQUENCE:
         valve.write(word.index, word.subindex, value)
     valve.start()
