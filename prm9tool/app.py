@@ -74,7 +74,36 @@ def create_application(argv: list[str] | None = None) -> QApplication:
     QCoreApplication.setApplicationVersion(__version__)
     app = QApplication.instance() or QApplication(argv or sys.argv[:1])
     assert isinstance(app, QApplication)
+    collect_garbage_on_the_gui_thread(app)
     return app
+
+
+GC_INTERVAL_MS = 1000
+
+
+def collect_garbage_on_the_gui_thread(app: QApplication) -> None:
+    """Run Python's cycle collector only on the GUI thread, from a timer.
+
+    Left automatic, the collector runs in whichever thread happens to allocate: when that is a
+    worker (the valve's thread), the Qt widgets in the collected cycles are handed to the GUI
+    thread for deletion while the worker may hold a Qt connection lock and wait for the GIL —
+    the two threads then wait for each other and the window freezes (seen once in the test
+    suite: the GUI thread in ``QObject::~QObject`` under a ``sizeHint`` call, the worker in a
+    queued signal). pyqtgraph's ``GarbageCollector`` does the same; it is not used here so that
+    the window comes up without importing pyqtgraph.
+    """
+    import gc
+
+    from PySide6.QtCore import QTimer
+
+    gc.disable()
+    if app.property("prm9tool_gc_timer"):
+        return  # the application has its timer already
+    timer = QTimer(app)
+    timer.setInterval(GC_INTERVAL_MS)
+    timer.timeout.connect(gc.collect)
+    timer.start()
+    app.setProperty("prm9tool_gc_timer", True)
 
 
 def create_window(args: argparse.Namespace) -> MainWindow:

@@ -17,6 +17,18 @@ settings.load_profile("ci" if os.environ.get("CI") else "dev")
 
 
 @pytest.fixture(autouse=True)
+def _garbage_collected_on_the_main_thread():
+    """Python's cycle collector runs on the main (GUI) thread only, after each test, as the
+    program does it from a timer (prm9tool.app.collect_garbage_on_the_gui_thread): collected
+    in a worker thread, a cycle holding Qt widgets can deadlock the GUI thread."""
+    import gc
+
+    gc.disable()
+    yield
+    gc.collect()
+
+
+@pytest.fixture(autouse=True)
 def _isolated_user_dirs(tmp_path_factory: pytest.TempPathFactory, monkeypatch: pytest.MonkeyPatch):
     """Keep emulator EEPROM images, backups and QSettings out of the real home directory."""
     base = tmp_path_factory.mktemp("userdata")

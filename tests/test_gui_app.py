@@ -175,3 +175,27 @@ def test_the_window_comes_up_without_the_heavy_modules(tmp_path):
     env["XDG_CONFIG_HOME"] = str(tmp_path / "config")
     result = run_python("-c", code, env=env)
     assert result.stdout.strip() == "[]", result.stderr
+
+
+def test_cycles_are_collected_on_the_gui_thread_by_the_program_itself(qtbot):
+    """Automatic collection is off (it may run in the valve's thread and deadlock Qt); the
+    program's timer collects on the GUI thread instead."""
+    import gc
+    import threading
+    import weakref
+
+    app.create_application()
+    gc.enable()  # as a program starts: the collector is automatic until the application exists
+    app.create_application()
+    assert not gc.isenabled()
+
+    class Node:
+        pass
+
+    cycle = Node()
+    cycle.me = cycle  # only the cycle collector frees it
+    where: list[str] = []
+    weakref.finalize(cycle, lambda: where.append(threading.current_thread().name))
+    del cycle
+    qtbot.waitUntil(lambda: where != [], timeout=5000)
+    assert where == [threading.main_thread().name]
