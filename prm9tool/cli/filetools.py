@@ -8,13 +8,13 @@ summary and usage errors on standard error.
 from __future__ import annotations
 
 import argparse
-import os
 import sys
 from pathlib import Path
 
 from prm9tool.catalogue.typekey import TypeKey
 from prm9tool.errors import ExitCode, FileFormatError, FileProblem, Prm9Error, TypeKeyError
 from prm9tool.files import eds
+from prm9tool.files.atomicfile import atomic_write
 from prm9tool.files.prmfile import PrmContents, check_file, write_file
 
 STDOUT = "-"  # ``-o -``: standard output, for every command that takes -o
@@ -101,19 +101,8 @@ def export_eds_command(args: argparse.Namespace) -> int:
         return ExitCode.OK
     path = Path(args.output)
     try:
-        _write_atomically(path, text)
+        atomic_write(path, text.replace("\n", "\r\n").encode("ascii"), backup=False)
     except OSError as exc:
         sys.stderr.write(f"prm9tool: cannot write {path}: {exc.strerror or exc}\n")
         return ExitCode.USAGE
     return ExitCode.OK
-
-
-def _write_atomically(path: Path, text: str) -> None:
-    temporary = path.with_name(path.name + ".tmp")
-    try:
-        with open(temporary, "w", encoding="ascii", newline="\r\n") as stream:
-            stream.write(text)
-        os.replace(temporary, path)
-    except BaseException:
-        temporary.unlink(missing_ok=True)
-        raise
