@@ -142,7 +142,7 @@ def _emulator_entry(valve: EmulatedValve) -> DeviceEntry:
 
 def usb_entries() -> list[DeviceEntry]:
     """Entries for the valves on USB (raises CommunicationError when hidapi is missing)."""
-    from prm9tool.device.discovery import usb_valves
+    from prm9tool.device.usb.discovery import usb_valves
 
     return [
         DeviceEntry(
@@ -159,7 +159,7 @@ def usb_entries() -> list[DeviceEntry]:
 
 def usb_unavailable_reason() -> str | None:
     """Why USB valves cannot be listed on this machine, or None if hidapi works."""
-    from prm9tool.device.transport.hidapi import load_hid
+    from prm9tool.device.usb.transport.hidapi import load_hid
 
     try:
         load_hid()
@@ -300,9 +300,9 @@ def open_session(
 
 
 def _open_usb(path: str, device_id: str) -> ValveSession:
-    from prm9tool.device.discovery import find_serial
-    from prm9tool.device.transport.hidapi import HidTransport
-    from prm9tool.device.usb_session import UsbSession
+    from prm9tool.device.usb.discovery import find_serial
+    from prm9tool.device.usb.session import UsbSession
+    from prm9tool.device.usb.transport.hidapi import HidTransport
 
     serial_box: list[int] = []
     transport = HidTransport(path.encode(), finder=lambda: find_serial(serial_box[0]))
@@ -322,8 +322,8 @@ def _open_emulator(
     pacing: tuple[bool, bool],
     can: CanOptions | None,
 ) -> ValveSession:
-    from prm9tool.device.transport.emulator import EmulatorTransport
-    from prm9tool.device.usb_session import UsbSession
+    from prm9tool.device.usb.session import UsbSession
+    from prm9tool.device.usb.transport.emulator import EmulatorTransport
 
     valve = emulated_valve(type_key, serial)
     closers: list[Callable[[], None]] = []
@@ -348,8 +348,8 @@ def join_can(session: ValveSession, options: CanOptions) -> bool:
     session is not affected. The GUI calls this after going online: python-can's import
     (~0.2 s) is then off the way to "online" (docs/PERFORMANCE.md, Startup).
     """
-    from prm9tool.device.transport.emulator import EmulatorTransport
-    from prm9tool.device.usb_session import UsbSession
+    from prm9tool.device.usb.session import UsbSession
+    from prm9tool.device.usb.transport.emulator import EmulatorTransport
 
     if not isinstance(session, UsbSession):
         return False

@@ -47,14 +47,6 @@ from prm9tool.catalogue import CATALOGUE, Parameter
 from prm9tool.catalogue.typekey import TypeKey
 from prm9tool.device.emulated import EmulatorControls
 from prm9tool.device.emulator.states import ValveStatus
-from prm9tool.device.entries import (
-    OperationCancelledError,
-    Progress,
-    RefusedError,
-    Steps,
-    Value,
-    check_cancel,
-)
 from prm9tool.device.setpoint import OverrideSetpoint, SetpointLink
 from prm9tool.device.upload_outcome import (
     RESTARTED_BEFORE_STORE,
@@ -63,6 +55,14 @@ from prm9tool.device.upload_outcome import (
     reload_outcome,
     since,
     step_error,
+)
+from prm9tool.device.usb.entries import (
+    OperationCancelledError,
+    Progress,
+    RefusedError,
+    Steps,
+    Value,
+    check_cancel,
 )
 from prm9tool.errors import CommunicationError, Prm9Error, SdoAbortError
 
@@ -110,7 +110,7 @@ class ValveSession(ABC):
     The behaviour that must be the same on every link lives here once: range checks, the
     transactional upload (write all → read back and compare → store), download, parameters the
     valve lacks on this link (:attr:`unavailable`), close hooks. A link is one subclass
-    (:class:`prm9tool.device.usb_session.UsbSession`,
+    (:class:`prm9tool.device.usb.session.UsbSession`,
     :class:`prm9tool.device.canopen.session.CanopenSession`) implementing the abstract
     methods. Thread-safe as far as the link serializes its exchanges.
     """

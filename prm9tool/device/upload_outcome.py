@@ -10,7 +10,7 @@ from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
 
 from prm9tool.catalogue import Parameter
-from prm9tool.device.entries import STEPS, Value
+from prm9tool.device.usb.entries import STEPS, Value
 from prm9tool.errors import CommunicationError, SdoAbortError
 
 RESTARTED_BEFORE_STORE = (

@@ -41,13 +41,13 @@ from prm9tool.device.canlink.status import read_status
 from prm9tool.device.canlink.typekeys import remember, resolve
 from prm9tool.device.canlink.upload_steps import UploadSteps
 from prm9tool.device.emulator.states import ValveStatus
-from prm9tool.device.entries import Progress, RefusedError, Steps, Value, check_cancel
 from prm9tool.device.session import (
     DeviceInfo,
     UploadResult,
     ValveSession,
 )
 from prm9tool.device.setpoint import SetpointLink
+from prm9tool.device.usb.entries import Progress, RefusedError, Steps, Value, check_cancel
 from prm9tool.errors import (
     AccessDeniedError,
     DeviceDisconnectedError,
