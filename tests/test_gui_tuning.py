@@ -261,7 +261,7 @@ def test_e04_flow_page_measures_and_applies_the_offsets(qtbot):
 
 def test_proposed_gains_use_the_decimal_separator_of_the_language(qapp):
     from prm9tool import i18n
-    from prm9tool.views.tuning.window import gain_text
+    from prm9tool.views.tuning.host import gain_text
 
     i18n.set_language("cs")
     try:

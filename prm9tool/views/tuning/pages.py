@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 import math
-from typing import TYPE_CHECKING, Any
+from typing import Any
 
 import numpy as np
 from PySide6.QtCore import QRectF
@@ -38,13 +38,11 @@ from prm9tool.characterize.procedures import (
 )
 from prm9tool.characterize.run import Characterization
 from prm9tool.translate import translated
+from prm9tool.views.tuning.host import TuningHost, gain_text, spin
 from prm9tool.views.tuning.plot import COLOURS, Plot, Series, paint_plot
 from prm9tool.views.tuning.report import (
     bode_plots,
 )
-
-if TYPE_CHECKING:
-    from prm9tool.views.tuning.window import TuningWindow
 
 
 class PlotView(QWidget):
@@ -74,8 +72,8 @@ class PlotView(QWidget):
 class Page(QWidget):
     """Common parts: a form of settings, a Run button, a result text and a plot."""
 
-    def __init__(self, window: TuningWindow) -> None:
-        super().__init__(window)
+    def __init__(self, window: TuningHost) -> None:
+        super().__init__()  # the window's tabs become its parent
         self.window_ = window
         self.form = QFormLayout()
         self.labels: dict[str, QLabel] = {}
@@ -121,9 +119,8 @@ class Page(QWidget):
 class AutotunePage(Page):
     """Model-based (no oscillation) or critical-gain autotune, before/after, accept."""
 
-    def __init__(self, window: TuningWindow) -> None:
+    def __init__(self, window: TuningHost) -> None:
         super().__init__(window)
-        from prm9tool.views.tuning.window import spin
 
         self.method = self.field("method", QComboBox())
         self.method.addItems(["", ""])
@@ -190,7 +187,6 @@ class AutotunePage(Page):
             simulated = result[2][1]  # type: ignore[index]  # a StepResult on the emulator
             head = self.tr("Critical gain Kkr = %1, period Tkr = %2 ms: K = 0.5·Kkr, Ti = 0.8·Tkr, Td = 0.12·Tkr.").replace(
                 "%1", f"{found.kkr:.2f}").replace("%2", f"{found.tkr * 1000:.1f}")  # fmt: skip
-        from prm9tool.views.tuning.window import gain_text
 
         rows = [
             f"{k}: {gain_text(k, present[k])} → <b>{gain_text(k, v)}</b>"
@@ -269,9 +265,8 @@ class AutotunePage(Page):
 class BodePage(Page):
     """A logarithmic sine sweep around an operating point."""
 
-    def __init__(self, window: TuningWindow) -> None:
+    def __init__(self, window: TuningHost) -> None:
         super().__init__(window)
-        from prm9tool.views.tuning.window import spin
 
         self.amplitude = self.field("amplitude", spin(10.0, 1.0, 90.0, "%"))
         self.centre = self.field("centre", spin(0.0, -50.0, 50.0, "%"))

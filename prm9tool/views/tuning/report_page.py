@@ -2,8 +2,6 @@
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING
-
 from PySide6.QtWidgets import (
     QFileDialog,
     QHBoxLayout,
@@ -17,17 +15,15 @@ from PySide6.QtWidgets import (
 from prm9tool.analysis.profile import DEFAULT, ProfileError, load_profile
 from prm9tool.characterize.run import Characterization, characterize, write_csv_files
 from prm9tool.online.characterization_history import run_with_history
+from prm9tool.views.tuning.host import TuningHost
 from prm9tool.views.tuning.pages import Page
 from prm9tool.views.tuning.report import figure_label, limit_text, value_text, verdict, write_pdf
-
-if TYPE_CHECKING:
-    from prm9tool.views.tuning.window import TuningWindow
 
 
 class ReportPage(Page):
     """The end-of-line test with an acceptance profile; PDF and CSV."""
 
-    def __init__(self, window: TuningWindow) -> None:
+    def __init__(self, window: TuningHost) -> None:
         super().__init__(window)
         self.profile_path = QLineEdit()
         self.browse_button = QPushButton()

@@ -4,8 +4,6 @@ E04, the flow characteristic (actuator velocity over spool opening) with its off
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING
-
 import numpy as np
 from PySide6.QtWidgets import QPushButton
 
@@ -24,12 +22,10 @@ from prm9tool.characterize.flow import FlowResult, flow_test
 from prm9tool.characterize.procedures import StaticResult, static_test
 from prm9tool.characterize.run import Characterization
 from prm9tool.i18n import format_number, format_significant
+from prm9tool.views.tuning.host import TuningHost, spin
 from prm9tool.views.tuning.pages import Page
 from prm9tool.views.tuning.plot import COLOURS, Plot, Series
 from prm9tool.views.tuning.report import static_plot
-
-if TYPE_CHECKING:
-    from prm9tool.views.tuning.window import TuningWindow
 
 STAGE = ("GAINSETPOS", "OFFSETPOS", "GAINSETNEG", "OFFSETNEG")
 PREVIEW_POINTS = 400
@@ -42,7 +38,7 @@ def _pct(raw: float) -> str:
 class ProposalPage(Page):
     """A page whose result is a set of parameter values to apply as one undo step."""
 
-    def __init__(self, window: TuningWindow) -> None:
+    def __init__(self, window: TuningHost) -> None:
         super().__init__(window)
         self.apply_button = QPushButton()
         self.apply_button.setEnabled(False)
@@ -69,9 +65,8 @@ class ProposalPage(Page):
 class StaticPage(ProposalPage):
     """A slow triangle; hysteresis, linearity, dead band, gain; offsets and linearization."""
 
-    def __init__(self, window: TuningWindow) -> None:
+    def __init__(self, window: TuningHost) -> None:
         super().__init__(window)
-        from prm9tool.views.tuning.window import spin
 
         self.period = self.field("period", spin(20.0, 2.0, 600.0, "s"))
 
@@ -152,9 +147,8 @@ class StaticPage(ProposalPage):
 class FlowPage(ProposalPage):
     """E04: the actuator's velocity over the spool's opening; dead-band offsets from it."""
 
-    def __init__(self, window: TuningWindow) -> None:
+    def __init__(self, window: TuningHost) -> None:
         super().__init__(window)
-        from prm9tool.views.tuning.window import spin
 
         self.amplitude = self.field("amplitude", spin(40.0, 5.0, 90.0, "%"))
         self.centre = self.field("centre", spin(0.0, -50.0, 50.0, "%"))

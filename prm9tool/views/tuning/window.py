@@ -15,7 +15,6 @@ from typing import Any
 from PySide6.QtWidgets import (
     QComboBox,
     QDialog,
-    QDoubleSpinBox,
     QFileDialog,
     QFormLayout,
     QHBoxLayout,
@@ -27,9 +26,7 @@ from PySide6.QtWidgets import (
     QWidget,
 )
 
-from prm9tool.catalogue import CATALOGUE
 from prm9tool.catalogue.variant import Config
-from prm9tool.i18n import format_value
 from prm9tool.model.document import ParameterDocument
 from prm9tool.online.tuning_runner import SimulationRunner, TuningRunner, ValveRunner
 from prm9tool.online.valve_control import ValveControl
@@ -37,16 +34,6 @@ from prm9tool.views.scope.start import offer_enable
 from prm9tool.views.tuning.pages import AutotunePage, BodePage, Page
 from prm9tool.views.tuning.report_page import ReportPage
 from prm9tool.views.tuning.static import FlowPage, StaticPage
-
-
-def spin(value: float, low: float, high: float, suffix: str, decimals: int = 1) -> QDoubleSpinBox:
-    """A number field with a unit."""
-    box = QDoubleSpinBox()
-    box.setRange(low, high)
-    box.setDecimals(decimals)
-    box.setValue(value)
-    box.setSuffix(f" {suffix}")
-    return box
 
 
 class TuningWindow(QDialog):
@@ -217,9 +204,3 @@ class TuningWindow(QDialog):
         if isinstance(self.runner, SimulationRunner):
             self.runner.wait()
         super().closeEvent(event)
-
-
-def gain_text(mnemonic: str, raw: int) -> str:
-    """``0.4`` (``0,4`` in German and Czech) with the catalogue's unit."""
-    param = CATALOGUE[mnemonic]
-    return f"{format_value(param, raw)} {param.unit}".strip()
