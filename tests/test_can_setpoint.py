@@ -14,7 +14,7 @@ from waiting import HandClock, wait_for
 from prm9tool.catalogue.commissioning import CONTROL_WORD, ENABLE_SEQUENCE, NmtCommand
 from prm9tool.device.canlink.rpdo_setpoint import DEADLINE_MS, RpdoSetpoint, RpdoSetpointError
 from prm9tool.device.canlink.session import CanopenSession
-from prm9tool.device.emulator.states import DeviceState
+from prm9tool.device.records import DeviceState
 from prm9tool.online.setpoint_driver import SetpointDriver
 from prm9tool.scope import GeneratorSettings, Waveform
 

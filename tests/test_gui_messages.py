@@ -214,7 +214,7 @@ def test_device_errors_lead_with_a_sentence_in_the_program_language(language, er
 
 
 def test_a_refused_value_leads_with_the_refusal_and_keeps_the_abort_code(language):
-    from prm9tool.device.usb.entries import RefusedError
+    from prm9tool.device.records import RefusedError
     from prm9tool.errors import AbortCode, SdoAbortError
     from prm9tool.translate import error_text
 

@@ -12,7 +12,7 @@ from valve_sets import changed_set
 from prm9tool.catalogue import CATALOGUE
 from prm9tool.catalogue.typekey import TypeKey
 from prm9tool.device.emulator import EmulatedValve, usb_firmware
-from prm9tool.device.session import OperationCancelledError
+from prm9tool.device.records import OperationCancelledError
 from prm9tool.device.usb.session import UsbSession
 from prm9tool.device.usb.transport.emulator import EmulatorTransport, LinkFaults
 from prm9tool.errors import DeviceDisconnectedError, DeviceTimeoutError, ProtocolError

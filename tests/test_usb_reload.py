@@ -10,7 +10,7 @@ from valve_sets import changed_set
 from prm9tool.catalogue import CATALOGUE
 from prm9tool.device.emulator import EmulatedValve
 from prm9tool.device.emulator.usb_firmware import UsbFirmware
-from prm9tool.device.session import OperationCancelledError
+from prm9tool.device.records import OperationCancelledError
 from prm9tool.device.usb.protocol import (
     Done,
     Op,

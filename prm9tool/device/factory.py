@@ -18,6 +18,7 @@ from typing import TYPE_CHECKING, Any
 
 from prm9tool.catalogue.typekey import DEFAULT_EMULATOR_TYPE_KEY, TypeKey
 from prm9tool.device.canlink.bus import CanOptions
+from prm9tool.device.records import NmtState
 from prm9tool.device.session import ValveSession
 from prm9tool.errors import CanBusError, CommunicationError, Prm9Error, TypeKeyError
 
@@ -42,7 +43,7 @@ class DeviceEntry:
     serial: int
     firmware: str
     description: str
-    nmt_state: str = ""  # CAN nodes: as the heartbeat said during the scan
+    nmt_state: NmtState | None = None  # CAN nodes: as the heartbeat said during the scan
     heartbeat_age_s: float | None = None  # CAN nodes: seconds since the last heartbeat
     last_emcy: str = ""  # CAN nodes: the last EMCY heard ("" none)
     error: Exception | None = None  # emulator-unusable: why, for the program language
@@ -217,7 +218,7 @@ def can_entries(options: CanOptions) -> list[DeviceEntry]:
     return entries
 
 
-def _heard(seen: Any) -> tuple[str, float | None, str]:
+def _heard(seen: Any) -> tuple[NmtState | None, float | None, str]:
     """NMT state, heartbeat age and last EMCY of a node as the bus told them."""
     import time
 

@@ -11,8 +11,8 @@ from collections.abc import Mapping, Sequence
 from typing import TYPE_CHECKING
 
 from prm9tool.catalogue import Parameter
+from prm9tool.device.records import RefusedError, Steps, Value
 from prm9tool.device.upload_outcome import RESTARTED_BEFORE_STORE
-from prm9tool.device.usb.entries import RefusedError, Steps, Value
 from prm9tool.errors import Prm9Error, SdoAbortError
 
 if TYPE_CHECKING:

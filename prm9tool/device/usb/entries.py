@@ -12,6 +12,7 @@ from collections.abc import Callable, Mapping, Sequence
 from typing import Any
 
 from prm9tool.catalogue import Parameter
+from prm9tool.device.records import RefusedError, Steps, Value, check_cancel
 from prm9tool.device.usb.protocol import (
     ReadEntries,
     ReadReply,
@@ -24,50 +25,7 @@ from prm9tool.device.usb.protocol import (
     pack_writes,
     segments,
 )
-from prm9tool.errors import Prm9Error, ProtocolError, SdoAbortError
-
-Progress = Callable[[int, int, str], None]
-Value = int | str
-STEPS = {"write": "writing the parameters", "verify": "reading them back", "store": "storing"}
-
-
-class OperationCancelledError(Prm9Error):
-    """The user cancelled a long operation; ``step`` says where it stopped."""
-
-    def __init__(self, step: str, outcome: str = "") -> None:
-        self.step = step
-        text = f"cancelled while {STEPS[step]}; nothing was stored" if step in STEPS else ""
-        text = text or f"{step} cancelled"
-        super().__init__(f"{text}; {outcome}" if outcome else text)
-
-
-class RefusedError(Prm9Error):
-    """The valve refused one entry of a multi-entry write; ``done`` entries were written."""
-
-    summary = SdoAbortError.summary
-
-    def __init__(self, mnemonic: str, error: SdoAbortError, done: int) -> None:
-        super().__init__(f"{mnemonic}: {error}")
-        self.mnemonic, self.error, self.done = mnemonic, error, done
-
-
-class Steps:
-    """Progress of one step of an operation, as ``progress(done, total, step)`` calls."""
-
-    def __init__(self, progress: Progress | None, total: int, done: int, step: str) -> None:
-        self.progress, self.total, self.done, self.step = progress, total, done, step
-
-    def advance(self, count: int) -> None:
-        """``count`` more entries are done."""
-        self.done += count
-        if self.progress is not None:
-            self.progress(self.done, self.total, self.step)
-
-
-def check_cancel(cancel: threading.Event | None, step: str) -> None:
-    """Raise OperationCancelledError if ``cancel`` is set."""
-    if cancel is not None and cancel.is_set():
-        raise OperationCancelledError(step)
+from prm9tool.errors import ProtocolError, SdoAbortError
 
 
 class EntryIO:

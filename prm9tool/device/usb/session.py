@@ -11,9 +11,9 @@ import numpy as np
 
 from prm9tool.catalogue import Parameter
 from prm9tool.device.emulated import EmulatorControls
-from prm9tool.device.emulator.states import DeviceState, LedState, ValveStatus
-from prm9tool.device.session import DeviceInfo, ValveSession
-from prm9tool.device.usb.entries import EntryIO, Steps, Value
+from prm9tool.device.records import DeviceInfo, DeviceState, LedState, Steps, Value, ValveStatus
+from prm9tool.device.session import ValveSession
+from prm9tool.device.usb.entries import EntryIO
 from prm9tool.device.usb.protocol import (
     PROTOCOL_VERSION,
     AbortReply,
@@ -81,7 +81,11 @@ class UsbSession(ValveSession):
                 f"this prm9tool speaks version {PROTOCOL_VERSION}"
             )
         return DeviceInfo(
-            reply.type_key, reply.serial, reply.firmware, reply.protocol_version, self._device_id
+            type_key=reply.type_key,
+            serial=reply.serial,
+            firmware=reply.firmware,
+            protocol_version=reply.protocol_version,
+            device_id=self._device_id,
         )
 
     def _read_entries(
@@ -186,7 +190,7 @@ def _status(reply: StatusReply, text: str) -> ValveStatus:
         warning=reply.warning,
         active_errors=reply.active_errors,
         error_register=reply.error_register,
-        leds=tuple(LedState(c, p, lit) for c, p, lit in reply.leds),  # type: ignore[arg-type]
+        leds=tuple(LedState(color=c, pattern=p, lit=lit) for c, p, lit in reply.leds),  # type: ignore[arg-type]
         temperature_c=reply.temperature_c,
         supply_v=reply.supply_v,
         nmt_state=reply.nmt_state,

@@ -14,6 +14,7 @@ from PySide6.QtWidgets import QWidget
 from prm9tool.catalogue.commissioning import Blocker, NmtCommand
 from prm9tool.catalogue.signals import MAX_CHANNELS
 from prm9tool.errors import ValueRangeError
+from prm9tool.online.connection_protocol import StatusView
 from prm9tool.online.valve_control import ValveControl, blocker_text, status_blocker
 from prm9tool.scope import GeneratorSettings
 from prm9tool.translate import error_text
@@ -33,7 +34,7 @@ class GeneratorStart(QWidget):
         self._control = control
         self.hide()
 
-    def confirmed(self, settings: GeneratorSettings, status: object | None) -> bool:
+    def confirmed(self, settings: GeneratorSettings, status: StatusView | None) -> bool:
         """True when ``settings`` fit and the user agreed to start; a valve that would not
         follow is offered to be enabled first."""
         owner = self.parentWidget()
@@ -59,12 +60,12 @@ class GeneratorStart(QWidget):
         self._offer_enable(status)
         return True
 
-    def _offer_enable(self, status: object | None) -> None:
+    def _offer_enable(self, status: StatusView | None) -> None:
         offer_enable(self.parentWidget(), self._control, status, self.tr("Setpoint generator"))
 
 
 def offer_enable(
-    parent: QWidget | None, control: ValveControl | None, status: object | None, title: str
+    parent: QWidget | None, control: ValveControl | None, status: StatusView | None, title: str
 ) -> None:
     """A valve that waits for its CANopen master (or is not enabled) would not move: offer NMT
     start and the enable sequence (manual §7.6). Queued on the connection, they run before a
@@ -87,7 +88,7 @@ def offer_enable(
     )
     if answer != prompts.Button.Yes:
         return
-    if str(getattr(status, "nmt_state", "off")) in ("pre-operational", "stopped"):
+    if status is not None and str(status.nmt_state) in ("pre-operational", "stopped"):
         control.nmt(NmtCommand.START)
     control.enable()
 

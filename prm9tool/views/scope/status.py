@@ -7,7 +7,7 @@ from __future__ import annotations
 from PySide6.QtCore import QObject
 
 from prm9tool.i18n import format_significant
-from prm9tool.online.connection_protocol import ScopeConnection
+from prm9tool.online.connection_protocol import ScopeConnection, StatusView
 from prm9tool.online.valve_control import blocker_text, status_blocker
 from prm9tool.views.scope.display import ScopeDisplay
 
@@ -20,7 +20,7 @@ class ScopeStatusText(QObject):
         self._connection = connection
         self._display = display
 
-    def blocked(self, status: object | None) -> str:
+    def blocked(self, status: StatusView | None) -> str:
         """Why the valve does not follow its setpoint (empty when it does, or offline)."""
         reason = status_blocker(status) if self._connection.is_online else None
         if reason is None:

@@ -30,7 +30,7 @@ from PySide6.QtWidgets import (
 
 from prm9tool.catalogue.signals import BY_KEY, signals_for
 from prm9tool.model.document import ParameterDocument
-from prm9tool.online.connection_protocol import ScopeConnection
+from prm9tool.online.connection_protocol import ScopeConnection, StatusView
 from prm9tool.online.valve_control import ValveControl, status_blocker
 from prm9tool.scope import Capture, GeneratorSettings
 from prm9tool.views.scope.display import ScopeDisplay
@@ -60,7 +60,7 @@ class ScopeWidget(QWidget):
         super().__init__(parent)
         self._connection = connection
         self._document = document
-        self._status: object | None = None  # the valve's latest status
+        self._status: StatusView | None = None  # the valve's latest status
         self._running = False
         self._accepting = False  # False between a (re)start request and stream_started
         self._generator_note = ""
@@ -330,7 +330,7 @@ class ScopeWidget(QWidget):
         )
         self._say(" ".join(filter(None, parts)))
 
-    def _on_status_changed(self, status: object) -> None:
+    def _on_status_changed(self, status: StatusView) -> None:
         before = status_blocker(self._status)
         self._status = status
         if status_blocker(status) != before:

@@ -28,6 +28,7 @@ from PySide6.QtWidgets import (
 
 from prm9tool.catalogue.variant import Config
 from prm9tool.model.document import ParameterDocument
+from prm9tool.online.connection_protocol import StatusView
 from prm9tool.online.tuning_runner import SimulationRunner, TuningRunner, ValveRunner
 from prm9tool.online.valve_control import ValveControl
 from prm9tool.views.scope.start import offer_enable
@@ -50,7 +51,7 @@ class TuningWindow(QDialog):
         self.setObjectName("tuning_window")
         self.doc, self.connection = doc, connection
         self._control = control  # NMT start and enabling, offered to a valve that would not move
-        self._status: object | None = None  # the valve's latest status
+        self._status: StatusView | None = None  # the valve's latest status
         self.runner: TuningRunner = self._make_runner()
         self.loop = QComboBox()
         self.loop.addItem("", "position")
@@ -99,7 +100,7 @@ class TuningWindow(QDialog):
         runner.busy_changed.connect(self._on_busy_changed)
         return runner
 
-    def _on_status_changed(self, status: object) -> None:
+    def _on_status_changed(self, status: StatusView) -> None:
         self._status = status
 
     def _on_online_changed(self, _online: bool) -> None:

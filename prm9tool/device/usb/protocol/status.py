@@ -8,6 +8,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
+from prm9tool.device.records import NmtState
 from prm9tool.device.usb.protocol.wire import BODY_SIZE, MalformedReportError, Reader, Writer
 
 DEVICE_STATES = (
@@ -20,7 +21,13 @@ DEVICE_STATES = (
     "FAULT",
     "FAULT_REACTION",
 )
-NMT_STATES = ("off", "initialising", "pre-operational", "operational", "stopped")
+NMT_STATES = (  # wire codes 0…4 (docs/usb-protocol.md)
+    NmtState.OFF,
+    NmtState.INITIALISING,
+    NmtState.PRE_OPERATIONAL,
+    NmtState.OPERATIONAL,
+    NmtState.STOPPED,
+)
 LED_COLORS = ("off", "white", "green", "orange", "red", "blue", "magenta")
 LED_PATTERNS = (
     "off",
@@ -82,7 +89,7 @@ class StatusReply:
     error_register: int
     warning: bool
     booting: bool
-    nmt_state: str
+    nmt_state: NmtState
     leds: tuple[tuple[str, str, bool], ...]
     temperature_c: float
     supply_v: float
@@ -115,7 +122,7 @@ class StatusReply:
         """Parse the body."""
         state, error_code, register = _name(DEVICE_STATES, r.u8()), r.u16(), r.u8()
         flags = r.count(0, 3)
-        nmt = _name(NMT_STATES, r.u8())
+        nmt = NmtState(_name(NMT_STATES, r.u8()))  # an unknown code: NmtState.UNKNOWN
         leds = tuple(_decode_led(r.u8(), r.u8()) for _ in range(3))
         temperature, supply = r.i16() / 100, r.u16() / 1000
         active = tuple(r.u16() for _ in range(r.count(0, MAX_ACTIVE_ERRORS)))
