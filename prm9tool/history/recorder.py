@@ -44,10 +44,21 @@ OPERATIONS = (
 class ValveIdentity(Protocol):
     """What a record needs to know about the valve (the session's DeviceInfo has it)."""
 
-    type_key: str
-    serial: int
-    firmware: str
-    device_id: str
+    @property
+    def type_key(self) -> str:
+        """The valve's type key."""
+
+    @property
+    def serial(self) -> int:
+        """The valve's serial number."""
+
+    @property
+    def firmware(self) -> str:
+        """Its firmware version."""
+
+    @property
+    def device_id(self) -> str:
+        """How it was reached (``usb:…``, ``can:…``, ``emulator:…``)."""
 
 
 def now_utc() -> str:

@@ -171,7 +171,7 @@ class ParameterConnection(LinkState, Protocol):
     """Reading, writing and storing parameters (the CANopen window)."""
 
     @property
-    def device(self) -> object | None:
+    def device(self) -> ValveIdentity | None:
         """The connected valve's DeviceInfo (``type_key``, ``serial``, …), None offline."""
 
     @property

@@ -7,7 +7,10 @@ from __future__ import annotations
 import contextlib
 import threading
 from collections.abc import Callable, Mapping, Sequence
-from typing import Any
+from typing import TYPE_CHECKING, Any
+
+if TYPE_CHECKING:
+    from prm9tool.device.session import ValveSession
 
 
 def can_options(bus: Mapping[str, object]) -> Any:
@@ -30,11 +33,12 @@ def default_lister(emulators: Sequence[str], can: Mapping[str, object] | None = 
     return list(factory.list_devices(emulators, can_options(can)))
 
 
-def default_opener(entry: object) -> Any:
+def default_opener(entry: object) -> ValveSession:
     """A session to ``entry`` (a listed valve or a device id)."""
     from prm9tool.device import factory
 
-    return factory.open_session(entry)  # type: ignore[arg-type]
+    assert isinstance(entry, factory.DeviceEntry | str)
+    return factory.open_session(entry)
 
 
 def list_in_thread(
