@@ -38,11 +38,17 @@ class Loop:
     actual: str
     output: str
     integrating: bool
+    step_pct: float  # the step the step-response simulator makes (prm9tool.online.tuning)
+    simulated_s: float  # how long the simulator runs after the step
 
 
 LOOPS = {
-    "position": Loop("POS", "position_setpoint", "position_actual", "controller_output", False),
-    "process": Loop("PRC", "process_setpoint", "process_actual", "position_setpoint", True),
+    "position": Loop(
+        "POS", "position_setpoint", "position_actual", "controller_output", False, 50.0, 0.06
+    ),
+    "process": Loop(
+        "PRC", "process_setpoint", "process_actual", "position_setpoint", True, 20.0, 1.0
+    ),
 }
 GAIN_SUFFIXES = ("KP", "KI", "KD", "T1")
 
