@@ -24,7 +24,6 @@ from prm9tool.characterize.transparent import TRANSPARENT
 from prm9tool.errors import Prm9Error
 from prm9tool.scope.measure import StepFigures, step_figures
 
-PERCENT = 100.0 / 16384.0
 SAMPLES_PER_PERIOD = 10  # a sweep goes no higher than the sample rate / this (decision)
 SWEEP_MIN_SAMPLES = 256  # what the frequency response needs
 
