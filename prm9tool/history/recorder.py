@@ -21,12 +21,13 @@ import threading
 from collections.abc import Mapping
 from datetime import UTC, datetime
 from pathlib import Path
-from typing import TYPE_CHECKING, Any, Protocol
+from typing import TYPE_CHECKING, Any
 
 from prm9tool import __version__
 from prm9tool.errors import HistoryError
 from prm9tool.history.chain import Entry
 from prm9tool.history.config import database_url, queue_path
+from prm9tool.history.identity import ValveIdentity
 
 if TYPE_CHECKING:
     from prm9tool.history.store import HistoryStore
@@ -39,26 +40,6 @@ OPERATIONS = (
     "download", "upload", "store", "restore-factory", "online-edits", "batch-upload",
     "backup", "characterization",
 )  # fmt: skip
-
-
-class ValveIdentity(Protocol):
-    """What a record needs to know about the valve (the session's DeviceInfo has it)."""
-
-    @property
-    def type_key(self) -> str:
-        """The valve's type key."""
-
-    @property
-    def serial(self) -> int:
-        """The valve's serial number."""
-
-    @property
-    def firmware(self) -> str:
-        """Its firmware version."""
-
-    @property
-    def device_id(self) -> str:
-        """How it was reached (``usb:…``, ``can:…``, ``emulator:…``)."""
 
 
 def now_utc() -> str:
