@@ -270,7 +270,7 @@ def _joiner(args: argparse.Namespace) -> Callable[[ValveSession], object] | None
     return join
 
 
-def _lister(emulators: Sequence[str], can: dict[str, object] | None = None) -> list[object]:
+def _lister(emulators: Sequence[str], can: dict[str, object] | None = None) -> list[ValveListing]:
     """The connection's listing, with the remembered emulated valves that cannot be made
     listed as such (the valve selection says why and offers to remove them)."""
     from prm9tool.device import factory

@@ -25,14 +25,14 @@ from prm9tool.online.valve_listing import default_lister, default_opener, list_i
 if TYPE_CHECKING:
     from prm9tool.device.session import ValveSession
     from prm9tool.history.recorder import Recorder
-    from prm9tool.online.connection_protocol import ListedValves, ValveIdentity
+    from prm9tool.online.connection_protocol import ListedValves, ValveIdentity, ValveListing
     from prm9tool.online.recording import HistoryHook
     from prm9tool.scope import GeneratorSettings  # not at run time: numpy, at start-up
 
 log = logging.getLogger(__name__)
 
 Opener = Callable[[object], "ValveSession"]  # entry -> the open session
-Lister = Callable[..., list[Any]]  # (emulator specs[, CAN bus dict]) -> [DeviceEntry]
+Lister = Callable[..., "Sequence[ValveListing]"]  # (emulator specs[, CAN bus dict]) -> entries
 OVERRIDE_OBJECTS = tuple(sorted(GENERATOR_OBJECTS))  # a refused generator start names these
 
 
@@ -130,13 +130,13 @@ class ValveConnection(QObject):
         numbers: the link or the host could not keep up); 0 when no stream runs."""
         return self._samples_lost
 
-    def list_devices(self, emulators: Sequence[str] = ()) -> list[Any]:
+    def list_devices(self, emulators: Sequence[str] = ()) -> list[ValveListing]:
         """Connected valves plus the emulated valves ``emulators`` ("TYPEKEY[:SERIAL]").
 
         Blocks while each USB valve identifies itself (up to 0.6 s for one that does not
         answer): the GUI uses :meth:`list_devices_async`.
         """
-        return self._lister(emulators)
+        return list(self._lister(emulators))
 
     def list_devices_async(
         self,
