@@ -1176,6 +1176,10 @@ Poslední akce možná nebyla dokončena. Uložte svou práci pod novým názvem
             <translation>V režimu online je typ ventilu dán připojeným ventilem.</translation>
         </message>
         <message>
+            <source>%1 — no live value now: the valve streams three measuring points at a time and the oscilloscope is recording others (over CANopen: the valve has no object for this point).</source>
+            <translation>%1 – nyní bez živé hodnoty: ventil přenáší tři měřicí body najednou a osciloskop zaznamenává jiné (přes CANopen: ventil pro tento bod nemá objekt).</translation>
+        </message>
+        <message>
             <source>%1 — click to show it in the oscilloscope</source>
             <translation>%1 – klepnutím jej zobrazíte v osciloskopu</translation>
         </message>

@@ -1171,6 +1171,10 @@ Die letzte Aktion wurde womöglich nicht vollständig ausgeführt. Speichern Sie
             <translation>Online ist der Ventiltyp der des angeschlossenen Ventils.</translation>
         </message>
         <message>
+            <source>%1 — no live value now: the valve streams three measuring points at a time and the oscilloscope is recording others (over CANopen: the valve has no object for this point).</source>
+            <translation>%1 – zurzeit kein Messwert: Das Ventil überträgt drei Messpunkte gleichzeitig, und das Oszilloskop zeichnet andere auf (über CANopen: Das Ventil hat für diesen Punkt kein Objekt).</translation>
+        </message>
+        <message>
             <source>%1 — click to show it in the oscilloscope</source>
             <translation>%1 – klicken, um ihn im Oszilloskop anzuzeigen</translation>
         </message>
