@@ -2742,6 +2742,10 @@ Ano načte a záznam zařadí do fronty; Ne nenačte nic.</translation>
             <translation>{0} ({1}) chybí (povinný pro ventily {2})</translation>
         </message>
         <message>
+            <source>{0}: no value after '='; only a download over CANopen may leave a value out, marked with the comment '{1}'</source>
+            <translation>{0}: za '=' chybí hodnota; hodnotu smí vynechat jen načtení přes CANopen, označené komentářem '{1}'</translation>
+        </message>
+        <message>
             <source>byte 0x{0} is not UTF-8 text: the file is corrupt</source>
             <translation>bajt 0x{0} není text UTF-8: soubor je poškozený</translation>
         </message>

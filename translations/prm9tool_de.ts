@@ -2731,6 +2731,10 @@ Ja lädt hoch und stellt den Eintrag in die Warteschlange; Nein lädt nichts hoc
             <translation>{0} ({1}) fehlt (erforderlich für Ventile {2})</translation>
         </message>
         <message>
+            <source>{0}: no value after '='; only a download over CANopen may leave a value out, marked with the comment '{1}'</source>
+            <translation>{0}: kein Wert nach '='; nur ein Auslesen über CANopen darf einen Wert auslassen, gekennzeichnet mit dem Kommentar '{1}'</translation>
+        </message>
+        <message>
             <source>byte 0x{0} is not UTF-8 text: the file is corrupt</source>
             <translation>Byte 0x{0} ist kein UTF-8-Text: die Datei ist beschädigt</translation>
         </message>

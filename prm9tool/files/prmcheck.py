@@ -62,6 +62,15 @@ _NOT_AVAILABLE = QT_TRANSLATE_NOOP(
     "{0} has no value: the valve it was read from does not have it over CANopen; not uploaded",
 )
 _MISSING = QT_TRANSLATE_NOOP("Problems", "{0} ({1}) is missing (required for {2} valves)")
+_NO_VALUE_NOT_MARKED = QT_TRANSLATE_NOOP(
+    "Problems",
+    "{0}: no value after '='; only a download over CANopen may leave a value out, marked with"
+    " the comment '{1}'",
+)
+
+# The one way a parameter may stand in a file without a value: a download over CANopen from a
+# valve without this project's object writes the line with this comment (docs/prm-format.md).
+NOT_AVAILABLE_HINT = "  # not available over CANopen on the valve this was read from"
 
 
 _MNEMONICS = [p.mnemonic for p in CATALOGUE]
@@ -184,7 +193,7 @@ def check_entries(
         if problem is not None:
             result.problems.append(FileProblem(entry.line, problem))
             continue
-        _check_value(param, entry, result)
+        _check_value(param, entry, result, type_key)
     if type_key is not None:
         _check_complete(type_key, lines, type_key_line, result)
         for rule in CATALOGUE.check_rules(type_key.variant, result.values):
@@ -222,13 +231,29 @@ def _misplaced(param: Parameter, type_key: TypeKey | None) -> Message | None:
     return None
 
 
-def _check_value(param: Parameter, entry: Entry, result: CheckedEntries) -> None:
-    if not entry.value and not param.address_from_manual:
-        # written by a download over CANopen from a valve without this project's object
+def marked_absent(param: Parameter, entry: Entry, type_key: TypeKey | None) -> bool:
+    """True for the line a download over CANopen writes for an object the valve lacks: no
+    value, the comment :data:`NOT_AVAILABLE_HINT`, a parameter at this project's own address
+    (the manual's objects every -CA valve has), and a -CA type key."""
+    return (
+        not entry.value
+        and entry.comment.strip() == NOT_AVAILABLE_HINT.strip()
+        and not param.address_from_manual
+        and (type_key is None or type_key.canopen)
+    )
+
+
+def _check_value(
+    param: Parameter, entry: Entry, result: CheckedEntries, type_key: TypeKey | None
+) -> None:
+    if marked_absent(param, entry, type_key):
         result.problems.append(FileProblem(entry.line, _NOT_AVAILABLE(param.mnemonic), "warning"))
         return
     if not entry.value:
-        result.problems.append(FileProblem(entry.line, _NO_VALUE(param.mnemonic)))
+        marker = NOT_AVAILABLE_HINT.strip()
+        can_be_marked = not param.address_from_manual and (type_key is None or type_key.canopen)
+        problem = _NO_VALUE_NOT_MARKED(param.mnemonic, marker) if can_be_marked else None
+        result.problems.append(FileProblem(entry.line, problem or _NO_VALUE(param.mnemonic)))
         return
     try:
         raw = param.parse_display(entry.value)
