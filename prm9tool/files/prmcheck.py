@@ -16,7 +16,7 @@ from dataclasses import dataclass, field
 from prm9tool.catalogue import CATALOGUE, Access, Parameter, variant_label
 from prm9tool.catalogue.typekey import TypeKey
 from prm9tool.errors import FileProblem, TypeKeyError, ValueRangeError
-from prm9tool.messages import QT_TRANSLATE_NOOP, Message, message_of
+from prm9tool.messages import QT_TRANSLATE_NOOP, SHOWN_CHARACTERS, Message, message_of, quoted
 
 # A spelling suggestion for an unknown name compares it with every catalogue mnemonic; a file
 # full of unknown names (1 MiB holds 60 000) took 10-19 s. Typos in a real file are a handful.
@@ -134,7 +134,7 @@ class Header:
         line, value = order[0].line, order[0].value
         match = re.fullmatch(rf"{FORMAT_NAME} ([0-9]{{1,6}})", value)
         if match is None:
-            self._error(line, _UNKNOWN_FORMAT(repr(value), expected))
+            self._error(line, _UNKNOWN_FORMAT(quoted(value), expected))
         elif int(match[1]) > FORMAT_VERSION:
             self._error(line, _NEWER_FORMAT(int(match[1]), FORMAT_VERSION))
         elif int(match[1]) != FORMAT_VERSION:
@@ -156,7 +156,7 @@ class Header:
             not re.fullmatch(f"[0-9]{{1,{digits}}}", text)
             or not snv.raw_min <= int(text) <= snv.raw_max
         ):
-            self._error(entry.line, _BAD_SERIAL(repr(text), snv.raw_min, snv.raw_max))
+            self._error(entry.line, _BAD_SERIAL(quoted(text), snv.raw_min, snv.raw_max))
         else:
             self.serial = int(text)
 
@@ -205,8 +205,8 @@ def check_entries(
 def _unknown(name: str, suggest: bool) -> Message:
     close = _close_mnemonic(name.upper()) if suggest else None
     if close is not None:
-        return _UNKNOWN_CLOSE(repr(name), close)
-    return _UNKNOWN(repr(name))
+        return _UNKNOWN_CLOSE(quoted(name), close)
+    return _UNKNOWN(quoted(name))
 
 
 def _close_mnemonic(name: str) -> str | None:
@@ -278,7 +278,8 @@ def _rounding(param: Parameter, text: str, raw: int | str) -> Message | None:
     if not math.isfinite(written) or written == float(stored):
         return None
     unit = f" {param.unit}" if param.unit else ""
-    return _ROUNDED(param.mnemonic, text, unit, stored)
+    shown = text if len(text) <= SHOWN_CHARACTERS else quoted(text)
+    return _ROUNDED(param.mnemonic, shown, unit, stored)
 
 
 def _check_complete(
