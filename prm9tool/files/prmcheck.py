@@ -75,6 +75,33 @@ NOT_AVAILABLE_HINT = "  # not available over CANopen on the valve this was read 
 
 _MNEMONICS = [p.mnemonic for p in CATALOGUE]
 
+# What a free text of the header (the firmware a valve reports) must not hold as it is: a
+# backslash (the escape itself), a control character (a new line would inject an entry), a TAB,
+# a "#" (after a blank it starts a comment), and blanks at either end (the reader strips them).
+_MUST_ESCAPE = re.compile(r"[\\\x00-\x1f\x7f-\x9f#]|^\s|\s$")
+_ESCAPE = re.compile(r"\\(?:x([0-9a-f]{2})|u([0-9a-f]{4})|U([0-9a-f]{8}))")
+
+
+def escape_text(text: str) -> str:
+    """``text`` as a header value that reads back exactly (:func:`unescape_text`): each
+    character that would change or end it written as ``\\xNN`` (``\\uNNNN``,
+    ``\\UNNNNNNNN`` beyond Latin-1), e.g. ``1.0 \\x23 beta`` for ``1.0 # beta``."""
+    return _MUST_ESCAPE.sub(lambda m: "".join(map(_escaped, m.group())), text)
+
+
+def _escaped(char: str) -> str:
+    code = ord(char)
+    if code <= 0xFF:
+        return f"\\x{code:02x}"
+    return f"\\u{code:04x}" if code <= 0xFFFF else f"\\U{code:08x}"
+
+
+def unescape_text(value: str) -> str:
+    """A header value as the text it stands for: ``\\xNN``, ``\\uNNNN``, ``\\UNNNNNNNN``
+    (lower-case hex) are that character; any other backslash is itself (a file written by
+    hand, or before this escaping)."""
+    return _ESCAPE.sub(lambda m: chr(int(next(g for g in m.groups() if g), 16)), value)
+
 
 @dataclass
 class Entry:
@@ -162,7 +189,7 @@ class Header:
 
     def _firmware(self, entry: Entry) -> None:
         if entry.value:
-            self.firmware = entry.value
+            self.firmware = unescape_text(entry.value)  # exactly what the valve reported
         else:
             self._error(entry.line, _EMPTY_FIRMWARE(), "warning")
 

@@ -32,6 +32,7 @@ from prm9tool.files.prmcheck import (
     NOT_AVAILABLE_HINT,
     Header,
     check_entries,
+    escape_text,
 )
 from prm9tool.files.prmlexer import CONTROL_CHARACTERS, Lexer, check_integrity, checksum
 from prm9tool.messages import QT_TRANSLATE_NOOP
@@ -73,7 +74,7 @@ class PrmContents:
         if self.serial is not None:
             self._emit(lines, "serial", str(self.serial))
         if self.firmware:
-            self._emit(lines, "firmware", self.firmware)
+            self._emit(lines, "firmware", escape_text(self.firmware))
         for number, param in enumerate(CATALOGUE.file_parameters(self.type_key.variant)):
             raw = self.values.get(param.mnemonic)
             if raw is None and (param.address_from_manual or not self.type_key.canopen):

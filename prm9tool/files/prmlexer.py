@@ -17,7 +17,6 @@ _NAME = re.compile(r"[A-Za-z_][A-Za-z0-9_.\-]*")
 _CHECKSUM = re.compile(r"^crc32:[0-9a-f]{8}$")
 _BOM = b"\xef\xbb\xbf"
 CONTROL_CHARACTERS = re.compile(r"[\x00-\x08\x0a-\x1f\x7f-\x9f]")  # all but TAB: binary data
-
 _NOT_UTF8 = QT_TRANSLATE_NOOP("Problems", "byte 0x{0} is not UTF-8 text: the file is corrupt")
 _CONTROL_CHARACTER = QT_TRANSLATE_NOOP(
     "Problems", "control character U+{0}: binary data, the file is corrupt"
