@@ -41,8 +41,8 @@ def start_once(command: list[str]) -> float:
 
 
 def size_mb(path: Path) -> float:
-    """Size of a file, or of every file below a folder, in MB."""
-    files = [path] if path.is_file() else [p for p in path.parent.rglob("*") if p.is_file()]
+    """Size of the one-file executable, or of the whole folder of a one-folder build, in MB."""
+    files = [path] if path == ONEFILE else [p for p in path.parent.rglob("*") if p.is_file()]
     return sum(p.stat().st_size for p in files) / 1e6
 
 

@@ -71,7 +71,7 @@ def _smoke(exe: Path) -> int:
                 ],
                 lambda out: (work / "c.pdf").read_bytes().startswith(b"%PDF"),
             ),
-            ("--history", [exe, "--history", "101"], lambda out: "101" in out),
+            ("--history", [exe, "--history", "101"], lambda out: "batch-upload" in out),
             (
                 "--export-eds",
                 [exe, "--export-eds", E02, "-o", "v.eds"],
