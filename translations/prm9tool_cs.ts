@@ -655,6 +655,14 @@ Poslední akce možná nebyla dokončena. Uložte svou práci pod novým názvem
             <source>The valve variants differ: only the parameters both have are compared; {0} parameters that one side lacks are left out.</source>
             <translation>Varianty ventilů se liší: porovnávají se jen parametry, které mají obě strany; {0} parametrů, které jedné straně chybí, je vynecháno.</translation>
         </message>
+        <message>
+            <source>not on this valve</source>
+            <translation>ve ventilu není</translation>
+        </message>
+        <message>
+            <source>not on the valve it was read from</source>
+            <translation>není ve ventilu, ze kterého byl načten</translation>
+        </message>
     </context>
     <context>
         <name>CompareDialog</name>
@@ -715,6 +723,14 @@ Poslední akce možná nebyla dokončena. Uložte svou práci pod novým názvem
             </translation>
         </message>
         <message numerus="yes">
+            <source>%n parameter(s) not on the valve, not compared</source>
+            <translation>
+                <numerusform>%n parametr není ve ventilu, neporovnán</numerusform>
+                <numerusform>%n parametry nejsou ve ventilu, neporovnány</numerusform>
+                <numerusform>%n parametrů není ve ventilu, neporovnáno</numerusform>
+            </translation>
+        </message>
+        <message numerus="yes">
             <source>%n shown</source>
             <translation>
                 <numerusform>%n zobrazen</numerusform>
@@ -736,6 +752,10 @@ Poslední akce možná nebyla dokončena. Uložte svou práci pod novým názvem
         <message>
             <source>One side's valve type has no such parameter; it cannot be chosen.</source>
             <translation>Typ ventilu jedné strany tento parametr nemá; nelze jej zvolit.</translation>
+        </message>
+        <message>
+            <source>The valve type has this parameter, but the valve does not (a valve over CANopen without this object): not compared, not a difference; it cannot be chosen.</source>
+            <translation>Typ ventilu tento parametr má, ventil však ne (ventil přes CANopen bez tohoto objektu): neporovnává se, není to rozdíl; nelze jej zvolit.</translation>
         </message>
     </context>
     <context>

@@ -653,6 +653,14 @@ Die letzte Aktion wurde womöglich nicht vollständig ausgeführt. Speichern Sie
             <source>The valve variants differ: only the parameters both have are compared; {0} parameters that one side lacks are left out.</source>
             <translation>Die Ventilvarianten unterscheiden sich: verglichen werden nur die Parameter, die beide haben; {0} Parameter, die einer Seite fehlen, bleiben außen vor.</translation>
         </message>
+        <message>
+            <source>not on this valve</source>
+            <translation>nicht in diesem Ventil</translation>
+        </message>
+        <message>
+            <source>not on the valve it was read from</source>
+            <translation>nicht in dem Ventil, aus dem gelesen wurde</translation>
+        </message>
     </context>
     <context>
         <name>CompareDialog</name>
@@ -711,6 +719,13 @@ Die letzte Aktion wurde womöglich nicht vollständig ausgeführt. Speichern Sie
             </translation>
         </message>
         <message numerus="yes">
+            <source>%n parameter(s) not on the valve, not compared</source>
+            <translation>
+                <numerusform>%n Parameter nicht im Ventil, nicht verglichen</numerusform>
+                <numerusform>%n Parameter nicht im Ventil, nicht verglichen</numerusform>
+            </translation>
+        </message>
+        <message numerus="yes">
             <source>%n shown</source>
             <translation>
                 <numerusform>%n angezeigt</numerusform>
@@ -731,6 +746,10 @@ Die letzte Aktion wurde womöglich nicht vollständig ausgeführt. Speichern Sie
         <message>
             <source>One side's valve type has no such parameter; it cannot be chosen.</source>
             <translation>Der Ventiltyp einer Seite hat diesen Parameter nicht; er kann nicht gewählt werden.</translation>
+        </message>
+        <message>
+            <source>The valve type has this parameter, but the valve does not (a valve over CANopen without this object): not compared, not a difference; it cannot be chosen.</source>
+            <translation>Der Ventiltyp hat diesen Parameter, das Ventil aber nicht (ein Ventil über CANopen ohne dieses Objekt): nicht verglichen, kein Unterschied; er kann nicht gewählt werden.</translation>
         </message>
     </context>
     <context>
