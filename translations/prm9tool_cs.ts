@@ -3265,6 +3265,17 @@ Ano načte a záznam zařadí do fronty; Ne nenačte nic.</translation>
         </message>
     </context>
     <context>
+        <name>StepFigures</name>
+        <message>
+            <source>did not settle within ±{0} % of the step: oscillation of {1} at {2} Hz</source>
+            <translation>neustálilo se v pásmu ±{0} % skoku: kmitání {1} při {2} Hz</translation>
+        </message>
+        <message>
+            <source>did not settle within ±{0} % of the step: still moving by {1} at the end</source>
+            <translation>neustálilo se v pásmu ±{0} % skoku: na konci se ještě mění o {1}</translation>
+        </message>
+    </context>
+    <context>
         <name>StepPanel</name>
         <message>
             <source>Step response</source>
@@ -3309,10 +3320,6 @@ Ano načte a záznam zařadí do fronty; Ne nenačte nic.</translation>
         <message>
             <source>No step found in {0}.</source>
             <translation>V {0} nebyl nalezen žádný skok.</translation>
-        </message>
-        <message>
-            <source>not settled in the window</source>
-            <translation>v okně neustáleno</translation>
         </message>
         <message>
             <source>Measured on {0}.</source>

@@ -3254,6 +3254,17 @@ Ja lädt hoch und stellt den Eintrag in die Warteschlange; Nein lädt nichts hoc
         </message>
     </context>
     <context>
+        <name>StepFigures</name>
+        <message>
+            <source>did not settle within ±{0} % of the step: oscillation of {1} at {2} Hz</source>
+            <translation>nicht innerhalb ±{0} % des Sprungs eingeschwungen: Schwingung von {1} bei {2} Hz</translation>
+        </message>
+        <message>
+            <source>did not settle within ±{0} % of the step: still moving by {1} at the end</source>
+            <translation>nicht innerhalb ±{0} % des Sprungs eingeschwungen: bewegt sich am Ende noch um {1}</translation>
+        </message>
+    </context>
+    <context>
         <name>StepPanel</name>
         <message>
             <source>Step response</source>
@@ -3298,10 +3309,6 @@ Ja lädt hoch und stellt den Eintrag in die Warteschlange; Nein lädt nichts hoc
         <message>
             <source>No step found in {0}.</source>
             <translation>Kein Sprung in {0} gefunden.</translation>
-        </message>
-        <message>
-            <source>not settled in the window</source>
-            <translation>im Fenster nicht eingeschwungen</translation>
         </message>
         <message>
             <source>Measured on {0}.</source>

@@ -2,7 +2,6 @@
 
 from __future__ import annotations
 
-import math
 from typing import TYPE_CHECKING, Any
 
 import numpy as np
@@ -231,7 +230,8 @@ class AutotunePage(Page):
         f = step.figures
         if f is None:
             return self.tr("no response")
-        settle = "—" if math.isnan(f.settling_time) else f"{f.settling_time * 1000:.1f} ms"
+        why = f.not_settled("%")
+        settle = f"{f.settling_time * 1000:.1f} ms" if why is None else translated(why)
         return (
             self.tr("overshoot %1 %, settling %2")
             .replace("%1", f"{f.overshoot:.1f}")
