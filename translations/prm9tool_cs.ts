@@ -113,8 +113,8 @@ Poslední akce možná nebyla dokončena. Uložte svou práci pod novým názvem
             <translation>překmit %1 %, ustálení %2</translation>
         </message>
         <message>
-            <source>Before: %1. Proposed: %2.</source>
-            <translation>Před: %1. Návrh: %2.</translation>
+            <source>%1 — before: %2; proposed: %3.</source>
+            <translation>%1 — před: %2; návrh: %3.</translation>
         </message>
         <message>
             <source>Autotune</source>
@@ -3274,6 +3274,10 @@ Ano načte a záznam zařadí do fronty; Ne nenačte nic.</translation>
             <source>did not settle within ±{0} % of the step: still moving by {1} at the end</source>
             <translation>neustálilo se v pásmu ±{0} % skoku: na konci se ještě mění o {1}</translation>
         </message>
+        <message>
+            <source>Step {0} → {1} %, window {2} … {3} ms</source>
+            <translation>Skok {0} → {1} %, okno {2} … {3} ms</translation>
+        </message>
     </context>
     <context>
         <name>StepPanel</name>
@@ -3345,8 +3349,8 @@ Ano načte a záznam zařadí do fronty; Ne nenačte nic.</translation>
             <translation>nedosaženo</translation>
         </message>
         <message>
-            <source>Step %1 %: overshoot %2 %, rise time %3, settling (±2 %) %4, remaining error %5 %</source>
-            <translation>Skok %1 %: překmit %2 %, doba náběhu %3, ustálení (±2 %) %4, zbývající odchylka %5 %</translation>
+            <source>{0}: overshoot {1} %, rise time {2}, settling (±2 %) {3}, remaining error {4} %</source>
+            <translation>{0}: překmit {1} %, doba náběhu {2}, ustálení (±2 %) {3}, zbývající odchylka {4} %</translation>
         </message>
     </context>
     <context>

@@ -113,8 +113,8 @@ Die letzte Aktion wurde womöglich nicht vollständig ausgeführt. Speichern Sie
             <translation>Überschwingen %1 %, Ausregelzeit %2</translation>
         </message>
         <message>
-            <source>Before: %1. Proposed: %2.</source>
-            <translation>Vorher: %1. Vorschlag: %2.</translation>
+            <source>%1 — before: %2; proposed: %3.</source>
+            <translation>%1 — vorher: %2; Vorschlag: %3.</translation>
         </message>
         <message>
             <source>Autotune</source>
@@ -3263,6 +3263,10 @@ Ja lädt hoch und stellt den Eintrag in die Warteschlange; Nein lädt nichts hoc
             <source>did not settle within ±{0} % of the step: still moving by {1} at the end</source>
             <translation>nicht innerhalb ±{0} % des Sprungs eingeschwungen: bewegt sich am Ende noch um {1}</translation>
         </message>
+        <message>
+            <source>Step {0} → {1} %, window {2} … {3} ms</source>
+            <translation>Sprung {0} → {1} %, Fenster {2} … {3} ms</translation>
+        </message>
     </context>
     <context>
         <name>StepPanel</name>
@@ -3334,8 +3338,8 @@ Ja lädt hoch und stellt den Eintrag in die Warteschlange; Nein lädt nichts hoc
             <translation>nicht erreicht</translation>
         </message>
         <message>
-            <source>Step %1 %: overshoot %2 %, rise time %3, settling (±2 %) %4, remaining error %5 %</source>
-            <translation>Sprung %1 %: Überschwingen %2 %, Anstiegszeit %3, Einschwingen (±2 %) %4, bleibende Abweichung %5 %</translation>
+            <source>{0}: overshoot {1} %, rise time {2}, settling (±2 %) {3}, remaining error {4} %</source>
+            <translation>{0}: Überschwingen {1} %, Anstiegszeit {2}, Einschwingen (±2 %) {3}, bleibende Abweichung {4} %</translation>
         </message>
     </context>
     <context>

@@ -240,9 +240,10 @@ class AutotunePage(Page):
 
     def _figures(self, before: Any, after: Any) -> str:
         return (
-            self.tr("Before: %1. Proposed: %2.")
-            .replace("%1", self._step_text(before))
-            .replace("%2", self._step_text(after))
+            self.tr("%1 — before: %2; proposed: %3.")
+            .replace("%1", translated(before.caption()))
+            .replace("%2", self._step_text(before))
+            .replace("%3", self._step_text(after))
         )
 
     def accept(self) -> None:
