@@ -57,17 +57,17 @@ Poslední akce možná nebyla dokončena. Uložte svou práci pod novým názvem
             <source>The model fits the measurement badly (fit error {0} %, at most {1} %).</source>
             <translation>Model špatně odpovídá měření (chyba přizpůsobení {0} %, nejvýše {1} %).</translation>
         </message>
+        <message>
+            <source>The proposal passes the acceptance profile “{0}” (its steps both ways and the static test).</source>
+            <translation>Návrh splňuje přejímací profil „{0}“ (jeho skoky oběma směry a statickou zkoušku).</translation>
+        </message>
+        <message>
+            <source>The proposal fails the acceptance profile “{0}”: {1}. Do not accept it unchecked.</source>
+            <translation>Návrh nesplňuje přejímací profil „{0}“: {1}. Nepřebírejte jej bez kontroly.</translation>
+        </message>
     </context>
     <context>
         <name>AutotunePage</name>
-        <message>
-            <source>steps of %1 % from 0 %, a few times, about %2 s in all</source>
-            <translation>několik skoků o %1 % od 0 %, celkem asi %2 s</translation>
-        </message>
-        <message>
-            <source>P only with rising gain until the loop oscillates (steps of 5 %, oscillation stopped at ±%1 %), about 5 s</source>
-            <translation>pouze P se stoupajícím zesílením, dokud se smyčka nerozkmitá (skoky 5 %, kmitání přerušeno při ±%1 %), asi 5 s</translation>
-        </message>
         <message>
             <source>Model: gain %1, lags %2 ms, dead time %3 ms (fit error %4 %).</source>
             <translation>Model: zesílení %1, zpoždění %2 ms, dopravní zpoždění %3 ms (chyba proložení %4 %).</translation>
@@ -75,10 +75,6 @@ Poslední akce možná nebyla dokončena. Uložte svou práci pod novým názvem
         <message>
             <source>Critical gain Kkr = %1, period Tkr = %2 ms: K = 0.5·Kkr, Ti = 0.8·Tkr, Td = 0.12·Tkr.</source>
             <translation>Kritické zesílení Kkr = %1, perioda Tkr = %2 ms: K = 0.5·Kkr, Ti = 0.8·Tkr, Td = 0.12·Tkr.</translation>
-        </message>
-        <message>
-            <source>Proposed, simulated on the emulator's firmware: %1.</source>
-            <translation>Návrh, simulovaný na firmwaru emulátoru: %1.</translation>
         </message>
         <message>
             <source>Do not accept these gains: the identification is not trustworthy.</source>
@@ -97,10 +93,6 @@ Poslední akce možná nebyla dokončena. Uložte svou práci pod novým názvem
             <translation>návrh (simulováno)</translation>
         </message>
         <message>
-            <source>Step response</source>
-            <translation>Přechodová charakteristika</translation>
-        </message>
-        <message>
             <source>time [ms]</source>
             <translation>čas [ms]</translation>
         </message>
@@ -115,6 +107,38 @@ Poslední akce možná nebyla dokončena. Uložte svou práci pod novým názvem
         <message>
             <source>%1 — before: %2; proposed: %3.</source>
             <translation>%1 — před: %2; návrh: %3.</translation>
+        </message>
+        <message>
+            <source>steps of %1 % from 0 %, a few times</source>
+            <translation>několik skoků z 0 % o %1 %</translation>
+        </message>
+        <message>
+            <source>P only with rising gain until the loop oscillates (steps of 5 %, oscillation stopped at ±%1 %)</source>
+            <translation>jen P složka s rostoucím zesílením, dokud smyčka nekmitá (skoky 5 %, kmitání zastaveno při ±%1 %)</translation>
+        </message>
+        <message>
+            <source>; then the acceptance profile's steps of %1 % and its static test (a triangle of %2 s) with the present and the proposed gains; about %3 s in all</source>
+            <translation>; potom skoky přejímacího profilu o %1 % a jeho statická zkouška (trojúhelník %2 s) se stávajícím a navrženým zesílením; celkem asi %3 s</translation>
+        </message>
+        <message>
+            <source>Proposed, simulated on the emulator's firmware (as the controller dialog): %1.</source>
+            <translation>Návrh simulovaný firmwarem emulátoru (jako v dialogu regulátoru): %1.</translation>
+        </message>
+        <message>
+            <source>Tried before and failed the profile: %1 (%2).</source>
+            <translation>Dříve zkoušeno, profil nesplněn: %1 (%2).</translation>
+        </message>
+        <message>
+            <source>%1 before</source>
+            <translation>%1 před</translation>
+        </message>
+        <message>
+            <source>%1 proposed</source>
+            <translation>%1 návrh</translation>
+        </message>
+        <message>
+            <source>Acceptance steps of %1 %</source>
+            <translation>Přejímací skoky o %1 %</translation>
         </message>
         <message>
             <source>Autotune</source>
@@ -159,6 +183,26 @@ Poslední akce možná nebyla dokončena. Uložte svou práci pod novým názvem
         <message>
             <source>Accept anyway (I checked the measurement)</source>
             <translation>Přesto převzít (měření jsem zkontroloval)</translation>
+        </message>
+        <message>
+            <source>Figure</source>
+            <translation>Ukazatel</translation>
+        </message>
+        <message>
+            <source>Before</source>
+            <translation>Před</translation>
+        </message>
+        <message>
+            <source>Proposed</source>
+            <translation>Návrh</translation>
+        </message>
+        <message>
+            <source>Limit</source>
+            <translation>Mez</translation>
+        </message>
+        <message>
+            <source>Result</source>
+            <translation>Výsledek</translation>
         </message>
     </context>
     <context>
@@ -3419,6 +3463,10 @@ Ano načte a záznam zařadí do fronty; Ne nenačte nic.</translation>
             <translation>pásmo necitlivosti</translation>
         </message>
         <message>
+            <source>step %1 → %2 %: %3</source>
+            <translation>skok %1 → %2 %: %3</translation>
+        </message>
+        <message>
             <source>step %1 %: %2</source>
             <translation>skok %1 %: %2</translation>
         </message>
@@ -3588,6 +3636,14 @@ Zajistěte, aby to hydraulika bezpečně snesla. Tlačítko Stop test kdykoli uk
         <message>
             <source>Tuning</source>
             <translation>Ladění</translation>
+        </message>
+        <message>
+            <source>The oscilloscope's setpoint generator was stopped for the test.</source>
+            <translation>Generátor žádané hodnoty osciloskopu byl kvůli zkoušce zastaven.</translation>
+        </message>
+        <message>
+            <source>The oscilloscope's setpoint generator is running: the test stops it (start it again afterwards).</source>
+            <translation>Generátor žádané hodnoty osciloskopu běží: zkouška jej zastaví (poté jej spusťte znovu).</translation>
         </message>
         <message>
             <source>Stopping…</source>

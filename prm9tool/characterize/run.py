@@ -24,6 +24,7 @@ from prm9tool.catalogue.typekey import TypeKey
 from prm9tool.catalogue.variant import Config
 from prm9tool.characterize.flow import FlowResult, flow_test
 from prm9tool.characterize.procedures import (
+    STEP_PRE_S,
     BodeResult,
     StaticResult,
     StepResult,
@@ -79,6 +80,16 @@ class Characterization:
 
 
 RESULT_HOOKS: list[Callable[[Characterization], None]] = []
+
+
+def planned_s(profile: Profile, flow: bool = False) -> float:
+    """Valve seconds the profile's tests play (what a progress bar counts towards): each
+    step settles, records STEP_PRE_S and its window; the sweep settles 50 ms, the triangle
+    0.2 s; the flow characteristic (E04 in control mode 4) settles and steps twice."""
+    d = profile.step_duration_s
+    steps = len(profile.step_amplitudes_pct) * (max(0.1, d) + STEP_PRE_S + d)
+    seconds = steps + 0.05 + profile.bode_duration_s + 0.2 + profile.static_period_s
+    return seconds + (3.0 * profile.flow_duration_s if flow else 0.0)
 
 
 def characterize(rig: Rig, profile: Profile, progress: Progress | None = None) -> Characterization:

@@ -295,7 +295,9 @@ def _segment(
     initial = float(np.median(rest)) if len(rest) else float(y[0])
     ya_raw = y[after]
     final = float(np.mean(ya_raw[-max(1, len(ya_raw) // 10) :]))
-    noise = max(noise, _spread(rest))
+    spread = _spread(rest)
+    if spread <= 3.0 * noise_level(rest) or not len(rest) >= 5:  # a level swinging smoothly
+        noise = max(noise, spread)  # (a hunting spool) is not noise: it would hide a small step
     size = final - initial
     if strict and not (_at_rest(ya_raw, size, band, noise) and _at_rest(before, size, band, noise)):
         return Verdict.TOO_SHORT, None

@@ -47,6 +47,14 @@ def figure_label(figure: Figure) -> str:
     if parts[0] == "flow":  # E04: actuator velocity over opening
         what = base.get(parts[1], figure.name)
         return translate("TuningReport", "flow characteristic: %1").replace("%1", what)
+    if parts[0] == "step" and len(parts) > 3 and parts[3] in base:  # step_<from>_<to>_…
+        start, end = (p.replace("-", "−") for p in parts[1:3])
+        return (
+            translate("TuningReport", "step %1 → %2 %: %3")
+            .replace("%1", start)
+            .replace("%2", end)
+            .replace("%3", base[parts[3]])
+        )
     if parts[0] == "step":
         what = base.get(parts[2], parts[2])
         return (
