@@ -213,6 +213,62 @@ def test_online_a_test_asks_first_and_does_nothing_when_declined(qtbot, monkeypa
     assert connection.jobs == ["tuning:autotune"]
 
 
+def test_a_test_on_the_valve_says_that_it_stops_the_running_setpoint_generator(qtbot, monkeypatch):
+    """Issue 25 item 7: the autotune stopped a running generator without a word."""
+    from PySide6.QtCore import QObject, Signal
+
+    class Signals(QObject):
+        online_changed = Signal(bool)
+        operation_finished = Signal(str, object)
+        failed = Signal(str)
+        lost = Signal(str)
+
+    class Online:
+        is_online = True
+        device = None
+
+        def __init__(self):
+            self.streaming_keys: list[str] = []
+            self.signals = Signals()
+            for name in ("online_changed", "operation_finished", "failed", "lost"):
+                setattr(self, name, getattr(self.signals, name))
+            self.jobs: list[str] = []
+            self.generator_running = True
+
+        def run_job(self, name, work):
+            self.jobs.append(name)
+
+        def stop_generator(self):
+            self.generator_running = False
+
+    connection = Online()
+    w = TuningWindow(ParameterDocument(E02), connection)
+    qtbot.addWidget(w)
+    asked = []
+    monkeypatch.setattr(
+        QMessageBox, "question", lambda *a: asked.append(a[2]) or QMessageBox.StandardButton.Yes
+    )
+    w.autotune.run_button.click()
+    assert "setpoint generator is running: the test stops it" in asked[0]
+    assert not connection.generator_running and connection.jobs == ["tuning:autotune"]
+    assert w.status.text().startswith("The oscilloscope's setpoint generator was stopped")
+
+
+def test_the_end_of_line_test_shows_its_progress_and_stops(qtbot, window):
+    """Issue 25 item 7: the 31 s end-of-line run had no progress bar."""
+    window.tabs.setCurrentWidget(window.report)
+    window.report.run_button.click()
+    bar = window.progress
+    assert bar.isVisible() and bar.maximum() == 100
+    qtbot.waitUntil(lambda: bar.value() >= 20, timeout=30000)  # the steps and the sweep played
+    assert bar.value() <= 99
+    window.stop_button.click()
+    finish(qtbot, window)
+    assert not bar.isVisible()
+    assert window.status.text().startswith("Stopped: stopped by the user")
+    assert window.report.table.rowCount() == 0  # nothing half-measured is shown
+
+
 def test_the_position_controller_dialog_opens_the_tuning_window(qtbot):
     doc = ParameterDocument(E02)
     opened = []

@@ -135,7 +135,8 @@ class TuningWindow(QDialog):
         else:
             offer_enable(self, self._control, self._status, self.tr("Tuning"))
         running = self.tr("Running: %1").replace("%1", what)
-        if generator:
+        if generator:  # stopped here, before the test, whether or not the scope is open
+            self.connection.stop_generator()  # type: ignore[union-attr]
             running = self.tr("The oscilloscope's setpoint generator was stopped for the test.") + " " + running  # fmt: skip
         self.status.setText(running)
         self.runner.run(kind, procedure)
