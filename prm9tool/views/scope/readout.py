@@ -129,6 +129,9 @@ class StepPanel(QWidget):
         self.figures = {
             name: QLabel() for name in ("step", "rise", "overshoot", "settling", "error")
         }
+        settling = self.figures["settling"]  # "did not settle …: oscillation of …"
+        settling.setWordWrap(True)
+        settling.setMinimumHeight(settling.fontMetrics().lineSpacing() * 3)  # room kept for it
         channels, self.form = QFormLayout(), QFormLayout()  # short labels: wide combos
         channels.setFieldGrowthPolicy(QFormLayout.FieldGrowthPolicy.AllNonFixedFieldsGrow)
         fields = [self.reference, self.response, *self.figures.values()]

@@ -26,6 +26,7 @@ from prm9tool.analysis.profile import ProfileError
 from prm9tool.characterize.acceptance import TRIES, Proposal, propose, step_start
 from prm9tool.characterize.autotune import AutotuneResult
 from prm9tool.characterize.procedures import LOOPS, StepResult, step_window
+from prm9tool.i18n import format_number, format_significant
 from prm9tool.translate import error_text, translated
 from prm9tool.views.tuning.host import TuningHost, gain_text, spin
 from prm9tool.views.tuning.pages import Page
@@ -60,8 +61,8 @@ class AutotunePage(Page):
         layout = self.layout()
         layout.removeWidget(self.plot)  # type: ignore[union-attr]
         row = QHBoxLayout()
-        row.addWidget(self.plot, 3)
-        row.addWidget(self.table, 2)
+        row.addWidget(self.plot, 1)
+        row.addWidget(self.table, 1)
         layout.addLayout(row, 1)  # type: ignore[union-attr]
         self.proposal: dict[str, int] = {}
         self.last: Proposal | None = None
@@ -79,15 +80,17 @@ class AutotunePage(Page):
         steps = ", ".join(f"±{a:g}" for a in profile.step_amplitudes_pct)
         method = "model" if self.method.currentIndex() == 0 else "critical"
         if method == "model":
-            what = self.tr("steps of %1 % from 0 %, a few times").replace("%1", f"{amplitude:g}")
+            what = self.tr("steps of %1 % from 0 %, a few times").replace(
+                "%1", format_significant(amplitude, 6)
+            )
         else:
             what = self.tr("P only with rising gain until the loop oscillates (steps of 5 %, "
-                           "oscillation stopped at ±%1 %)").replace("%1", f"{limit:g}")  # fmt: skip
+                           "oscillation stopped at ±%1 %)").replace("%1", format_significant(limit, 6))  # fmt: skip
         seconds = planned_s(profile, loop, targets.settling_s, method)
         what += self.tr(
             "; then the acceptance profile's steps of %1 % and its static test (a triangle of "
             "%2 s) with the present and the proposed gains; about %3 s in all"
-        ).replace("%1", steps).replace("%2", f"{profile.static_period_s:g}").replace(
+        ).replace("%1", steps).replace("%2", format_significant(profile.static_period_s, 6)).replace(
             "%3", f"{seconds:.0f}"
         )  # fmt: skip
         self.window_.start(
@@ -107,13 +110,13 @@ class AutotunePage(Page):
             m = found.model
             doubts = [translated(d) for d in found.doubts]
             head = self.tr("Model: gain %1, lags %2 ms, dead time %3 ms (fit error %4 %).").replace(
-                "%1", f"{m.gain:.3g}").replace(
-                "%2", ", ".join(f"{t * 1000:.2f}" for t in (m.tau1, m.tau2, m.tau3))).replace(
-                "%3", f"{m.delay * 0.2:.1f}").replace("%4", f"{m.fit_error:.1f}")  # fmt: skip
+                "%1", format_significant(m.gain, 3)).replace(
+                "%2", ", ".join(format_number(t * 1000, 2) for t in (m.tau1, m.tau2, m.tau3))).replace(
+                "%3", format_number(m.delay * 0.2, 1)).replace("%4", format_number(m.fit_error, 1))  # fmt: skip
         else:
             doubts = []
             head = self.tr("Critical gain Kkr = %1, period Tkr = %2 ms: K = 0.5·Kkr, Ti = 0.8·Tkr, Td = 0.12·Tkr.").replace(
-                "%1", f"{found.kkr:.2f}").replace("%2", f"{found.tkr * 1000:.1f}")  # fmt: skip
+                "%1", format_number(found.kkr, 2)).replace("%2", format_number(found.tkr * 1000, 1))  # fmt: skip
         rows = [
             f"{k}: {gain_text(k, result.present[k])} → <b>{gain_text(k, v)}</b>"
             for k, v in self.proposal.items()
@@ -129,7 +132,7 @@ class AutotunePage(Page):
         ).replace("%1", self._step_text(result.simulated))
         lines = [head, " · ".join(rows), figures]
         for earlier in result.tried:
-            gains = ", ".join(gain_text(k, v) for k, v in earlier.values.items())
+            gains = ", ".join(f"{k} {gain_text(k, v)}" for k, v in earlier.values.items())
             failed = ", ".join(figure_label(f) for f in earlier.failed[:3])
             lines.append(
                 self.tr("Tried before and failed the profile: %1 (%2).")
@@ -185,12 +188,16 @@ class AutotunePage(Page):
         by_size: dict[float, list[Series]] = {}
         for before, after in pairs:
             start = step_start(after)
-            name = f"{start:g} → {start + after.amplitude_pct:g} %"
+            ends = (
+                format_significant(v, 6).replace("-", "−")
+                for v in (start, start + after.amplitude_pct)
+            )
+            name = "{} → {} %".format(*ends)
             series = by_size.setdefault(abs(after.amplitude_pct), [])
             series.append(line(before, self.tr("%1 before").replace("%1", name), GREY, True))
             series.append(line(after, self.tr("%1 proposed").replace("%1", name), COLOURS[1]))
         for size, series in by_size.items():
-            title = self.tr("Acceptance steps of %1 %").replace("%1", f"{size:g}")
+            title = self.tr("Acceptance steps of %1 %").replace("%1", format_significant(size, 6))
             plots.append(Plot(title, ms, pct, series))
         return plots
 
@@ -203,10 +210,12 @@ class AutotunePage(Page):
         if f is None:
             return self.tr("no response")
         why = f.not_settled("%")
-        settle = f"{f.settling_time * 1000:.1f} ms" if why is None else translated(why)
+        settle = (
+            f"{format_number(f.settling_time * 1000, 1)} ms" if why is None else translated(why)
+        )
         return (
             self.tr("overshoot %1 %, settling %2")
-            .replace("%1", f"{f.overshoot:.1f}")
+            .replace("%1", format_number(f.overshoot, 1))
             .replace("%2", settle)
         )
 
