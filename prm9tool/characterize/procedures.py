@@ -25,7 +25,6 @@ from prm9tool.errors import Prm9Error
 from prm9tool.messages import QT_TRANSLATE_NOOP, Message, Number
 from prm9tool.scope.measure import StepFigures, step_figures
 
-PERCENT = 100.0 / 16384.0
 SAMPLES_PER_PERIOD = 10  # a sweep goes no higher than the sample rate / this (decision)
 SWEEP_MIN_SAMPLES = 256  # what the frequency response needs
 
@@ -39,18 +38,24 @@ class Loop:
     actual: str
     output: str
     integrating: bool
+    step_pct: float  # the step the step-response simulator makes (prm9tool.online.tuning)
+    simulated_s: float  # the window recorded after a step: the simulator's and the autotune's
 
 
 LOOPS = {
-    "position": Loop("POS", "position_setpoint", "position_actual", "controller_output", False),
-    "process": Loop("PRC", "process_setpoint", "process_actual", "position_setpoint", True),
+    "position": Loop(
+        "POS", "position_setpoint", "position_actual", "controller_output", False, 50.0, 0.12
+    ),
+    "process": Loop(
+        "PRC", "process_setpoint", "process_actual", "position_setpoint", True, 20.0, 1.0
+    ),
 }
 GAIN_SUFFIXES = ("KP", "KI", "KD", "T1")
 # One step measurement for the autotune, the controller dialogs and the end-of-line steps:
 # the loop rests at the start level, STEP_PRE_S of it are recorded, then the step and the
 # window after it (at least STEP_WINDOW_S; the autotune takes 3× its settling target if longer).
 STEP_PRE_S = 0.02
-STEP_WINDOW_S = {"position": 0.12, "process": 1.0}
+STEP_WINDOW_S = {name: lp.simulated_s for name, lp in LOOPS.items()}
 
 
 class LimitExceededError(Prm9Error):

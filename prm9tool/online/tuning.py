@@ -25,7 +25,7 @@ from PySide6.QtCore import QCoreApplication, QObject, Signal
 from prm9tool.catalogue import CATALOGUE
 from prm9tool.catalogue.typekey import TypeKey
 from prm9tool.characterize.autotune import emulated_step
-from prm9tool.characterize.procedures import STEP_CAPTION, STEP_WINDOW_S
+from prm9tool.characterize.procedures import LOOPS, STEP_CAPTION
 from prm9tool.characterize.transparent import NO_SHAPING, UNITY_GAIN
 from prm9tool.errors import Prm9Error
 from prm9tool.i18n import format_number
@@ -40,11 +40,6 @@ if TYPE_CHECKING:
 
 Raw = int | str
 
-LOOPS: dict[str, tuple[str, str, float]] = {
-    # loop: (setpoint signal, actual signal, step %); the window: procedures.STEP_WINDOW_S
-    "position": ("position_setpoint", "position_actual", 50.0),
-    "process": ("process_setpoint", "process_actual", 20.0),
-}
 _TRANSPARENT: dict[str, int] = {"AINSETP": 9, "INVERSEP": 0, **NO_SHAPING}
 # The position loop alone: spool position control mode (no process loop on E04), no gain/offset.
 _POSITION_ONLY: dict[str, int] = {"CTRLMODE": 2, **UNITY_GAIN}
@@ -146,16 +141,16 @@ def simulate_step(type_key: str | TypeKey, values: Mapping[str, Raw], loop: str)
     Raises Prm9Error subclasses if the emulated valve refuses a parameter.
     """
     valve = _prepared_valve(type_key, values, loop)
-    sp_key, act_key, step = LOOPS[loop]
-    result = emulated_step(valve, loop, step, STEP_WINDOW_S[loop])
+    lp = LOOPS[loop]
+    result = emulated_step(valve, loop, lp.step_pct, lp.simulated_s)
     channels = result.record.channels
     return StepResponse(
         loop,
         {mn: int(v) for mn, v in values.items() if mn.startswith(("POS", "PRC"))},
         tuple(float(v) for v in result.record.t),
-        tuple(float(v) for v in channels[sp_key]),
-        tuple(float(v) for v in channels[act_key]),
-        step,
+        tuple(float(v) for v in channels[lp.setpoint]),
+        tuple(float(v) for v in channels[lp.actual]),
+        lp.step_pct,
     )
 
 
