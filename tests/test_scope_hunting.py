@@ -93,3 +93,33 @@ def test_ripple_finds_amplitude_and_frequency_through_noise(frequency):
     assert found.frequency_hz == pytest.approx(frequency, rel=0.03)
     assert found.amplitude == pytest.approx(1.5, abs=0.2)
     assert abs(found.drift) < 0.05
+
+
+def test_the_end_of_line_report_says_what_a_step_that_never_settled_did():
+    """The report's settling time read "not reached" (JSON: null) without a word of why."""
+    from prm9tool.analysis.profile import parse_profile
+    from prm9tool.characterize.rig import EmulatorRig
+    from prm9tool.characterize.run import characterize, report_data
+
+    valve = EmulatedValve(E02)
+    profile = parse_profile(
+        {
+            "test": {
+                "step_amplitudes_pct": [5, 90],
+                "bode_duration_s": 1,
+                "bode_f_min_hz": 5,
+                "bode_f_max_hz": 50,
+                "static_period_s": 1,
+            }
+        }
+    )
+    figures = {
+        f["name"]: f for f in report_data(characterize(EmulatorRig(valve), profile))["figures"]
+    }
+    small = figures["step_5_settling_s"]
+    assert small["value"] is None
+    assert small["note"].startswith("did not settle within ±2 % of the step: oscillation of ±")
+    assert small["note"].endswith("at 80 Hz")  # the dither (DYNFREQ) fills a 5 % step's band
+    assert (
+        figures["step_90_settling_s"]["value"] > 0 and figures["step_90_settling_s"]["note"] is None
+    )

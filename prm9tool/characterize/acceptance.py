@@ -109,7 +109,9 @@ def _step_figure(step: StepResult, key: str, profile: Profile) -> Figure:
     f = step.figures
     name = f"step_{start:g}_{end:g}_{key.removeprefix('step_')}"
     text = f"step {start:g} → {end:g} %: {label}".replace("-", "−")
-    return Figure(name, text, value(f) if f else math.nan, FIGURES[key], profile.limits.get(key))
+    note = f.not_settled("%") if f is not None and key == "step_settling_s" else None
+    found = value(f) if f else math.nan
+    return Figure(name, text, found, FIGURES[key], profile.limits.get(key), note)
 
 
 def step_start(step: StepResult) -> float:

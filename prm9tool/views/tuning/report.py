@@ -23,6 +23,7 @@ from prm9tool.analysis.profile import Limit
 from prm9tool.characterize.run import Characterization, Figure
 from prm9tool.i18n import current_language
 from prm9tool.messages import localized_number
+from prm9tool.translate import translated
 from prm9tool.views.record import configure_pdf
 from prm9tool.views.tuning.plot import COLOURS, Plot, Series, plot_image
 
@@ -73,8 +74,8 @@ def verdict(passed: bool | None) -> str:
 def value_text(f: Figure) -> str:
     """The figure's value with its unit (times in ms), with the program language's decimal
     separator (``5,75 %`` in German and Czech)."""
-    if math.isnan(f.value):
-        return translate("TuningReport", "not reached")
+    if math.isnan(f.value):  # what it saw instead, e.g. an oscillation at 80 Hz
+        return translate("TuningReport", "not reached") if f.note is None else translated(f.note)
     if f.unit == "s":
         return _local(f"{f.value * 1000:.1f} ms")
     return _local(f"{f.value:.3g} {f.unit}".strip())
