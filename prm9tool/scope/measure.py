@@ -295,6 +295,7 @@ def _segment(
     initial = float(np.median(rest)) if len(rest) else float(y[0])
     ya_raw = y[after]
     final = float(np.mean(ya_raw[-max(1, len(ya_raw) // 10) :]))
+    sample_noise = noise  # of the samples; a level's slow swing (hunting) does not enter it
     spread = _spread(rest)
     if spread <= 3.0 * noise_level(rest) or not len(rest) >= 5:  # a level swinging smoothly
         noise = max(noise, spread)  # (a hunting spool) is not noise: it would hide a small step
@@ -307,7 +308,7 @@ def _segment(
     t10 = _first_crossing(ta, ya, initial, final, 0.1, t_step)
     t90 = _first_crossing(ta, ya, initial, final, 0.9, t_step)
     excess = max(0.0, float(np.max((ya - final) / size)))
-    overshoot = excess * 100.0 if excess * abs(size) > OVERSHOOT_NOISE * noise else 0.0
+    overshoot = excess * 100.0 if excess * abs(size) > OVERSHOOT_NOISE * sample_noise else 0.0
     settling = _settling_time(ta, ya, final, band * abs(size), t_step)
     end = ripple_at_end(ta, ya)
     if end.amplitude > band * abs(size):  # it ends swinging beyond the band: never settled
