@@ -57,17 +57,17 @@ Die letzte Aktion wurde womöglich nicht vollständig ausgeführt. Speichern Sie
             <source>The model fits the measurement badly (fit error {0} %, at most {1} %).</source>
             <translation>Das Modell passt schlecht zur Messung (Anpassungsfehler {0} %, höchstens {1} %).</translation>
         </message>
+        <message>
+            <source>The proposal passes the acceptance profile “{0}” (its steps both ways and the static test).</source>
+            <translation>Der Vorschlag besteht das Abnahmeprofil „{0}“ (seine Sprünge in beide Richtungen und die statische Prüfung).</translation>
+        </message>
+        <message>
+            <source>The proposal fails the acceptance profile “{0}”: {1}. Do not accept it unchecked.</source>
+            <translation>Der Vorschlag besteht das Abnahmeprofil „{0}“ nicht: {1}. Nicht ungeprüft übernehmen.</translation>
+        </message>
     </context>
     <context>
         <name>AutotunePage</name>
-        <message>
-            <source>steps of %1 % from 0 %, a few times, about %2 s in all</source>
-            <translation>einige Sprünge von %1 % ab 0 %, insgesamt etwa %2 s</translation>
-        </message>
-        <message>
-            <source>P only with rising gain until the loop oscillates (steps of 5 %, oscillation stopped at ±%1 %), about 5 s</source>
-            <translation>nur P mit steigender Verstärkung, bis der Kreis schwingt (Sprünge von 5 %, Schwingung bei ±%1 % abgebrochen), etwa 5 s</translation>
-        </message>
         <message>
             <source>Model: gain %1, lags %2 ms, dead time %3 ms (fit error %4 %).</source>
             <translation>Modell: Verstärkung %1, Verzögerungen %2 ms, Totzeit %3 ms (Anpassungsfehler %4 %).</translation>
@@ -75,10 +75,6 @@ Die letzte Aktion wurde womöglich nicht vollständig ausgeführt. Speichern Sie
         <message>
             <source>Critical gain Kkr = %1, period Tkr = %2 ms: K = 0.5·Kkr, Ti = 0.8·Tkr, Td = 0.12·Tkr.</source>
             <translation>Kritische Verstärkung Kkr = %1, Periode Tkr = %2 ms: K = 0.5·Kkr, Ti = 0.8·Tkr, Td = 0.12·Tkr.</translation>
-        </message>
-        <message>
-            <source>Proposed, simulated on the emulator's firmware: %1.</source>
-            <translation>Vorschlag, simuliert mit der Firmware des Emulators: %1.</translation>
         </message>
         <message>
             <source>Do not accept these gains: the identification is not trustworthy.</source>
@@ -97,10 +93,6 @@ Die letzte Aktion wurde womöglich nicht vollständig ausgeführt. Speichern Sie
             <translation>Vorschlag (simuliert)</translation>
         </message>
         <message>
-            <source>Step response</source>
-            <translation>Sprungantwort</translation>
-        </message>
-        <message>
             <source>time [ms]</source>
             <translation>Zeit [ms]</translation>
         </message>
@@ -113,8 +105,40 @@ Die letzte Aktion wurde womöglich nicht vollständig ausgeführt. Speichern Sie
             <translation>Überschwingen %1 %, Ausregelzeit %2</translation>
         </message>
         <message>
-            <source>Before: %1. Proposed: %2.</source>
-            <translation>Vorher: %1. Vorschlag: %2.</translation>
+            <source>%1 — before: %2; proposed: %3.</source>
+            <translation>%1 — vorher: %2; Vorschlag: %3.</translation>
+        </message>
+        <message>
+            <source>steps of %1 % from 0 %, a few times</source>
+            <translation>einige Sprünge von 0 % um %1 %</translation>
+        </message>
+        <message>
+            <source>P only with rising gain until the loop oscillates (steps of 5 %, oscillation stopped at ±%1 %)</source>
+            <translation>nur P-Anteil mit steigender Verstärkung, bis der Regelkreis schwingt (Sprünge von 5 %, Abbruch bei ±%1 %)</translation>
+        </message>
+        <message>
+            <source>; then the acceptance profile's steps of %1 % and its static test (a triangle of %2 s) with the present and the proposed gains; about %3 s in all</source>
+            <translation>; danach die Sprünge des Abnahmeprofils um %1 % und seine statische Prüfung (ein Dreieck von %2 s) mit den aktuellen und den vorgeschlagenen Verstärkungen; insgesamt etwa %3 s</translation>
+        </message>
+        <message>
+            <source>Proposed, simulated on the emulator's firmware (as the controller dialog): %1.</source>
+            <translation>Vorschlag, simuliert mit der Firmware des Emulators (wie im Reglerdialog): %1.</translation>
+        </message>
+        <message>
+            <source>Tried before and failed the profile: %1 (%2).</source>
+            <translation>Zuvor versucht, Profil nicht bestanden: %1 (%2).</translation>
+        </message>
+        <message>
+            <source>%1 before</source>
+            <translation>%1 vorher</translation>
+        </message>
+        <message>
+            <source>%1 proposed</source>
+            <translation>%1 Vorschlag</translation>
+        </message>
+        <message>
+            <source>Acceptance steps of %1 %</source>
+            <translation>Abnahmesprünge um %1 %</translation>
         </message>
         <message>
             <source>Autotune</source>
@@ -159,6 +183,26 @@ Die letzte Aktion wurde womöglich nicht vollständig ausgeführt. Speichern Sie
         <message>
             <source>Accept anyway (I checked the measurement)</source>
             <translation>Trotzdem übernehmen (ich habe die Messung geprüft)</translation>
+        </message>
+        <message>
+            <source>Figure</source>
+            <translation>Kennwert</translation>
+        </message>
+        <message>
+            <source>Before</source>
+            <translation>Vorher</translation>
+        </message>
+        <message>
+            <source>Proposed</source>
+            <translation>Vorschlag</translation>
+        </message>
+        <message>
+            <source>Limit</source>
+            <translation>Grenze</translation>
+        </message>
+        <message>
+            <source>Result</source>
+            <translation>Ergebnis</translation>
         </message>
     </context>
     <context>
@@ -3281,6 +3325,21 @@ Ja lädt hoch und stellt den Eintrag in die Warteschlange; Nein lädt nichts hoc
         </message>
     </context>
     <context>
+        <name>StepFigures</name>
+        <message>
+            <source>did not settle within ±{0} % of the step: oscillation of {1} at {2} Hz</source>
+            <translation>nicht innerhalb ±{0} % des Sprungs eingeschwungen: Schwingung von {1} bei {2} Hz</translation>
+        </message>
+        <message>
+            <source>did not settle within ±{0} % of the step: still moving by {1} at the end</source>
+            <translation>nicht innerhalb ±{0} % des Sprungs eingeschwungen: bewegt sich am Ende noch um {1}</translation>
+        </message>
+        <message>
+            <source>Step {0} → {1} %, window {2} … {3} ms</source>
+            <translation>Sprung {0} → {1} %, Fenster {2} … {3} ms</translation>
+        </message>
+    </context>
+    <context>
         <name>StepPanel</name>
         <message>
             <source>Step response</source>
@@ -3327,10 +3386,6 @@ Ja lädt hoch und stellt den Eintrag in die Warteschlange; Nein lädt nichts hoc
             <translation>Kein Sprung in {0} gefunden.</translation>
         </message>
         <message>
-            <source>not settled in the window</source>
-            <translation>im Fenster nicht eingeschwungen</translation>
-        </message>
-        <message>
             <source>Measured on {0}.</source>
             <translation>Gemessen auf {0}.</translation>
         </message>
@@ -3354,8 +3409,8 @@ Ja lädt hoch und stellt den Eintrag in die Warteschlange; Nein lädt nichts hoc
             <translation>nicht erreicht</translation>
         </message>
         <message>
-            <source>Step %1 %: overshoot %2 %, rise time %3, settling (±2 %) %4, remaining error %5 %</source>
-            <translation>Sprung %1 %: Überschwingen %2 %, Anstiegszeit %3, Einschwingen (±2 %) %4, bleibende Abweichung %5 %</translation>
+            <source>{0}: overshoot {1} %, rise time {2}, settling (±2 %) {3}, remaining error {4} %</source>
+            <translation>{0}: Überschwingen {1} %, Anstiegszeit {2}, Einschwingen (±2 %) {3}, bleibende Abweichung {4} %</translation>
         </message>
     </context>
     <context>
@@ -3422,6 +3477,10 @@ Ja lädt hoch und stellt den Eintrag in die Warteschlange; Nein lädt nichts hoc
         <message>
             <source>dead band</source>
             <translation>Totzone</translation>
+        </message>
+        <message>
+            <source>step %1 → %2 %: %3</source>
+            <translation>Sprung %1 → %2 %: %3</translation>
         </message>
         <message>
             <source>step %1 %: %2</source>
@@ -3593,6 +3652,14 @@ Stellen Sie sicher, dass die Hydraulik dafür sicher ist. Stopp beendet ihn jede
         <message>
             <source>Tuning</source>
             <translation>Einstellung</translation>
+        </message>
+        <message>
+            <source>The oscilloscope's setpoint generator was stopped for the test.</source>
+            <translation>Der Sollwertgenerator des Oszilloskops wurde für die Prüfung angehalten.</translation>
+        </message>
+        <message>
+            <source>The oscilloscope's setpoint generator is running: the test stops it (start it again afterwards).</source>
+            <translation>Der Sollwertgenerator des Oszilloskops läuft: Die Prüfung hält ihn an (danach erneut starten).</translation>
         </message>
         <message>
             <source>Stopping…</source>
