@@ -1440,6 +1440,10 @@ Poslední akce možná nebyla dokončena. Uložte svou práci pod novým názvem
             <source>The link could not keep the test's sample rate.</source>
             <translation>Spojení nedokázalo udržet vzorkovací frekvenci testu.</translation>
         </message>
+        <message>
+            <source>Node ID assignment (LSS) did not complete.</source>
+            <translation>Přidělení Node ID (LSS) nebylo dokončeno.</translation>
+        </message>
     </context>
     <context>
         <name>FileWorkflow</name>
@@ -1975,6 +1979,85 @@ Ano načte a záznam zařadí do fronty; Ne nenačte nic.</translation>
         <message>
             <source>After the valve's next power-up or restart it answers at node {0}, {1}. Store the change and restart the valve from prm9tool (Valve → Restart valve): prm9tool then finds it there again — where it cannot change the adapter's bit rate itself (SocketCAN), it says how. After a power-up, find it under Communication → CAN bus (node {0}, bit rate {1}).</source>
             <translation>Po příštím zapnutí nebo restartu ventil odpovídá jako uzel {0}, {1}. Uložte změnu a restartujte ventil z prm9tool (Ventil → Restart ventilu): prm9tool ho tam pak znovu najde — kde rychlost adaptéru sám změnit nemůže (SocketCAN), řekne jak. Po zapnutí ho najděte v Komunikace → Sběrnice CAN (uzel {0}, rychlost {1}).</translation>
+        </message>
+    </context>
+    <context>
+        <name>LssPanel</name>
+        <message>
+            <source>Devices without a node ID (node-ID switch at 1: LSS)</source>
+            <translation>Zařízení bez Node ID (přepínač Node ID v poloze 1: LSS)</translation>
+        </message>
+        <message>
+            <source>Serial</source>
+            <translation>Sériové číslo</translation>
+        </message>
+        <message>
+            <source>Device</source>
+            <translation>Zařízení</translation>
+        </message>
+        <message>
+            <source>Vendor ID</source>
+            <translation>Vendor ID</translation>
+        </message>
+        <message>
+            <source>Product code</source>
+            <translation>Produktový klíč</translation>
+        </message>
+        <message>
+            <source>Revision</source>
+            <translation>Revize</translation>
+        </message>
+        <message>
+            <source>Look for devices without a node ID</source>
+            <translation>Hledat zařízení bez Node ID</translation>
+        </message>
+        <message>
+            <source>Assign node ID…</source>
+            <translation>Přidělit Node ID…</translation>
+        </message>
+        <message>
+            <source>Looking for devices without a node ID (LSS Fastscan)…</source>
+            <translation>Hledají se zařízení bez Node ID (LSS Fastscan)…</translation>
+        </message>
+        <message>
+            <source>PRM9</source>
+            <translation>PRM9</translation>
+        </message>
+        <message>
+            <source>not a PRM9</source>
+            <translation>není PRM9</translation>
+        </message>
+        <message numerus="yes">
+            <source>%n device(s) without a node ID.</source>
+            <translation>
+                <numerusform>%n zařízení bez Node ID.</numerusform>
+                <numerusform>%n zařízení bez Node ID.</numerusform>
+                <numerusform>%n zařízení bez Node ID.</numerusform>
+            </translation>
+        </message>
+        <message>
+            <source>No device without a node ID answered: every device has one, or none is at node-ID switch 1, or the bus runs at another bit rate.</source>
+            <translation>Neodpovědělo žádné zařízení bez Node ID: každé zařízení ho má, žádné nemá přepínač Node ID v poloze 1, nebo sběrnice běží jinou přenosovou rychlostí.</translation>
+        </message>
+        <message>
+            <source>Assign node ID</source>
+            <translation>Přidělit Node ID</translation>
+        </message>
+        <message>
+            <source>Node ID for serial {0} (1…127; stored in the valve, used from now on and after every power-up):</source>
+            <translation>Node ID pro sériové číslo {0} (1…127; uloží se do ventilu, platí ihned i po každém zapnutí):</translation>
+        </message>
+        <message>
+            <source>Node ID {0} is taken: a node answers there. Choose another one.</source>
+            <translation>Node ID {0} je obsazené: na něm odpovídá uzel. Zvolte jiné.</translation>
+        </message>
+        <message>
+            <source>Giving serial {0} node ID {1} and storing it…</source>
+            <translation>Sériové číslo {0} dostává Node ID {1} a ukládá ho…</translation>
+        </message>
+        <message>
+            <source>Serial {0} answers as {1} (stored). Going online with it…</source>
+            <translation>Sériové číslo {0} odpovídá jako {1} (uloženo). Přechod do režimu online…</translation>
         </message>
     </context>
     <context>

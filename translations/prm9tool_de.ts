@@ -1435,6 +1435,10 @@ Die letzte Aktion wurde womöglich nicht vollständig ausgeführt. Speichern Sie
             <source>The link could not keep the test's sample rate.</source>
             <translation>Die Verbindung konnte die Abtastrate des Tests nicht halten.</translation>
         </message>
+        <message>
+            <source>Node ID assignment (LSS) did not complete.</source>
+            <translation>Die Vergabe der Node-ID (LSS) wurde nicht abgeschlossen.</translation>
+        </message>
     </context>
     <context>
         <name>FileWorkflow</name>
@@ -1966,6 +1970,84 @@ Ja lädt hoch und stellt den Eintrag in die Warteschlange; Nein lädt nichts hoc
         <message>
             <source>After the valve's next power-up or restart it answers at node {0}, {1}. Store the change and restart the valve from prm9tool (Valve → Restart valve): prm9tool then finds it there again — where it cannot change the adapter's bit rate itself (SocketCAN), it says how. After a power-up, find it under Communication → CAN bus (node {0}, bit rate {1}).</source>
             <translation>Nach dem nächsten Einschalten oder Neustart antwortet das Ventil als Knoten {0}, {1}. Speichern Sie die Änderung und starten Sie das Ventil aus prm9tool neu (Ventil → Ventil neu starten): prm9tool findet es dann dort wieder — wo es die Bitrate des Adapters nicht selbst ändern kann (SocketCAN), sagt es, wie. Nach einem Einschalten finden Sie es unter Kommunikation → CAN-Bus (Knoten {0}, Bitrate {1}).</translation>
+        </message>
+    </context>
+    <context>
+        <name>LssPanel</name>
+        <message>
+            <source>Devices without a node ID (node-ID switch at 1: LSS)</source>
+            <translation>Geräte ohne Node-ID (Node-ID-Schalter auf 1: LSS)</translation>
+        </message>
+        <message>
+            <source>Serial</source>
+            <translation>Seriennummer</translation>
+        </message>
+        <message>
+            <source>Device</source>
+            <translation>Gerät</translation>
+        </message>
+        <message>
+            <source>Vendor ID</source>
+            <translation>Hersteller-ID</translation>
+        </message>
+        <message>
+            <source>Product code</source>
+            <translation>Produktcode</translation>
+        </message>
+        <message>
+            <source>Revision</source>
+            <translation>Revision</translation>
+        </message>
+        <message>
+            <source>Look for devices without a node ID</source>
+            <translation>Geräte ohne Node-ID suchen</translation>
+        </message>
+        <message>
+            <source>Assign node ID…</source>
+            <translation>Node-ID zuweisen…</translation>
+        </message>
+        <message>
+            <source>Looking for devices without a node ID (LSS Fastscan)…</source>
+            <translation>Suche Geräte ohne Node-ID (LSS-Fastscan)…</translation>
+        </message>
+        <message>
+            <source>PRM9</source>
+            <translation>PRM9</translation>
+        </message>
+        <message>
+            <source>not a PRM9</source>
+            <translation>kein PRM9</translation>
+        </message>
+        <message numerus="yes">
+            <source>%n device(s) without a node ID.</source>
+            <translation>
+                <numerusform>%n Gerät ohne Node-ID.</numerusform>
+                <numerusform>%n Geräte ohne Node-ID.</numerusform>
+            </translation>
+        </message>
+        <message>
+            <source>No device without a node ID answered: every device has one, or none is at node-ID switch 1, or the bus runs at another bit rate.</source>
+            <translation>Kein Gerät ohne Node-ID hat geantwortet: Jedes Gerät hat eine, keines steht mit dem Node-ID-Schalter auf 1, oder der Bus läuft mit einer anderen Bitrate.</translation>
+        </message>
+        <message>
+            <source>Assign node ID</source>
+            <translation>Node-ID zuweisen</translation>
+        </message>
+        <message>
+            <source>Node ID for serial {0} (1…127; stored in the valve, used from now on and after every power-up):</source>
+            <translation>Node-ID für Seriennummer {0} (1…127; im Ventil gespeichert, ab sofort und nach jedem Einschalten gültig):</translation>
+        </message>
+        <message>
+            <source>Node ID {0} is taken: a node answers there. Choose another one.</source>
+            <translation>Node-ID {0} ist vergeben: Dort antwortet ein Knoten. Wählen Sie eine andere.</translation>
+        </message>
+        <message>
+            <source>Giving serial {0} node ID {1} and storing it…</source>
+            <translation>Seriennummer {0} erhält Node-ID {1}, sie wird gespeichert…</translation>
+        </message>
+        <message>
+            <source>Serial {0} answers as {1} (stored). Going online with it…</source>
+            <translation>Seriennummer {0} antwortet als {1} (gespeichert). Online-Verbindung wird aufgebaut…</translation>
         </message>
     </context>
     <context>

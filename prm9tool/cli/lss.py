@@ -6,10 +6,15 @@ from __future__ import annotations
 import argparse
 import json
 import sys
-import time
 
 from prm9tool.device.canlink.bus import CanNetwork, CanOptions, acquire, release
-from prm9tool.device.canlink.lss import LssAddress, LssFailedError, LssMasterLink
+from prm9tool.device.canlink.lss import (
+    LssAddress,
+    LssFailedError,
+    LssMasterLink,
+    answers_at,
+    first_free,
+)
 from prm9tool.errors import CanAdapterError, ExitCode
 
 LSS_COMMANDS = {"--lss-scan": "lss_scan", "--lss-assign": "lss_assign"}
@@ -134,7 +139,7 @@ def _assign(shared: CanNetwork, options: CanOptions, pairs: list[tuple[int, int]
             what = f"serial {who.serial}" if who.serial else who.problem or "a device"
             raise LssFailedError(
                 f"node ID {node} is taken: {what} answers there. Choose a free node ID; "
-                f"nothing was changed (free: {free_node_ids(set(taken), 3)})",
+                f"nothing was changed (free: {', '.join(map(str, first_free(set(taken), 3)))}, …)",
                 "taken",
             )
     link = LssMasterLink(shared)
@@ -150,7 +155,7 @@ def _assign(shared: CanNetwork, options: CanOptions, pairs: list[tuple[int, int]
     failed = 0
     for serial, node in pairs:
         link.assign(found[serial], node)
-        if _answers(shared, node, serial):
+        if answers_at(shared, node, serial, BOOT_TIMEOUT_S):
             print(f"serial {serial}: node {node}, stored; it answers as can:{node}")
         else:
             failed += 1
@@ -161,25 +166,6 @@ def _assign(shared: CanNetwork, options: CanOptions, pairs: list[tuple[int, int]
                 file=sys.stderr,
             )
     return ExitCode.COMMUNICATION if failed else ExitCode.OK
-
-
-def free_node_ids(taken: set[int], count: int) -> str:
-    """The first ``count`` node IDs not in ``taken``, as text."""
-    free = [n for n in range(1, 128) if n not in taken][:count]
-    return ", ".join(str(n) for n in free) + ", …"
-
-
-def _answers(shared: CanNetwork, node: int, serial: int) -> bool:
-    """The valve with ``serial`` answers at ``node`` (boot-up awaited, then identified)."""
-    from prm9tool.device.canlink.discovery import identify_node
-
-    deadline = time.monotonic() + BOOT_TIMEOUT_S
-    while time.monotonic() < deadline:
-        info = identify_node(shared, node)
-        if info.serial == serial:
-            return True
-        time.sleep(0.05)
-    return False
 
 
 def _bus_args(options: CanOptions) -> str:

@@ -39,8 +39,10 @@ from prm9tool.errors import TypeKeyError
 from prm9tool.files.can_type_keys import remember
 from prm9tool.online.bus_monitor import BusMonitor, HeardNode
 from prm9tool.online.connection_protocol import ListedValves, ValveListing
+from prm9tool.online.lss_commissioning import LssCommissioning
 from prm9tool.paths import user_data_dir
 from prm9tool.translate import error_text
+from prm9tool.views.can_lss_panel import LssPanel
 
 INTERFACE_KEY, CHANNEL_KEY, BITRATE_KEY = "can/interface", "can/channel", "can/bitrate"
 INTERFACES = (
@@ -85,9 +87,12 @@ class CanBusDialog(QDialog):
         settings: QSettings,
         parent: QWidget | None = None,
         monitor: BusMonitor | None = None,
+        lss: LssCommissioning | None = None,
     ) -> None:
-        """``monitor``: keeps the node table live after a search (None: as the scan saw it)."""
+        """``monitor``: keeps the node table live after a search (None: as the scan saw it);
+        ``lss``: shows the devices without a node ID and assigns one (None: not offered)."""
         super().__init__(parent)
+        self._chosen: str | None = None  # a valve given its node ID here (LSS)
         self.setWindowTitle(self.tr("CAN bus"))
         self._scan, self._settings = scan, settings
         self._entries: list[ValveListing] = []
@@ -146,8 +151,13 @@ class CanBusDialog(QDialog):
         layout.addWidget(self.search)
         layout.addWidget(self.state)
         layout.addWidget(self.table)
+        self.lss_panel: LssPanel | None = None
+        if lss is not None:
+            self.lss_panel = LssPanel(lss, self.bus, self._taken, self)
+            self.lss_panel.assigned_id.connect(self._on_lss_assigned)
+            layout.addWidget(self.lss_panel)
         layout.addWidget(self.buttons)
-        self.resize(1060, 420)
+        self.resize(1060, 620 if lss is not None else 420)
         self._update_ok()
 
     def bus(self) -> dict[str, object]:
@@ -160,6 +170,8 @@ class CanBusDialog(QDialog):
 
     def selected_device_id(self) -> str | None:
         """``can:NODE`` of the chosen PRM9 (None: none chosen)."""
+        if self._chosen is not None:
+            return self._chosen
         row = self.table.currentRow()
         if not 0 <= row < len(self._entries):
             return None
@@ -192,6 +204,8 @@ class CanBusDialog(QDialog):
             return
         nodes = [e for e in found if e.kind in ("can", "not-prm9")]
         self._fill(nodes)
+        if self.lss_panel is not None:
+            self.lss_panel.start_scan()
         valves = sum(e.kind == "can" for e in nodes)
         self.state.setText(
             self.tr("%n node(s) answered.", "", len(nodes))
@@ -271,6 +285,17 @@ class CanBusDialog(QDialog):
     def _on_monitor_failed(self, reason: str) -> None:
         if isValid(self):
             self.state.setText(self.tr("The bus cannot be watched: {0}").format(reason))
+
+    def _taken(self) -> set[int]:
+        """Node IDs that answered the search or were heard since."""
+        ids = {int(e.device_id.removeprefix("can:")) for e in self._entries}
+        return ids | set(self._extra)
+
+    def _on_lss_assigned(self, device_id: str) -> None:
+        """A valve answers at the node ID it was given: go online with it."""
+        self._chosen = device_id
+        self._remember()
+        self.accept()
 
     def _update_ok(self) -> None:
         ok = self.buttons.button(QDialogButtonBox.StandardButton.Ok)

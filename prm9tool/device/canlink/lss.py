@@ -28,6 +28,7 @@ from typing import TYPE_CHECKING
 from prm9tool.catalogue.canopen_switches import LSS_BIT_TIMINGS_KBIT, LSS_UNCONFIGURED
 from prm9tool.device.canlink.sdo import ARGO_HYTOS_VENDOR
 from prm9tool.errors import CommunicationError
+from prm9tool.messages import QT_TRANSLATE_NOOP
 
 if TYPE_CHECKING:
     from prm9tool.device.canlink.bus import CanNetwork
@@ -60,6 +61,8 @@ SERVICE = {
 
 class LssFailedError(CommunicationError):
     """An LSS service failed; ``kind``: none, duplicate, taken, refused, lost."""
+
+    summary = QT_TRANSLATE_NOOP("Errors", "Node ID assignment (LSS) did not complete.")
 
     def __init__(self, message: str, kind: str) -> None:
         super().__init__(message)
@@ -309,6 +312,39 @@ class LssMasterLink:
             return call()
         finally:
             self._lss.RESPONSE_TIMEOUT = saved
+
+
+def answers_at(shared: CanNetwork, node_id: int, serial: int, timeout_s: float) -> bool:
+    """The device with ``serial`` answers SDO at ``node_id`` within ``timeout_s`` (its boot
+    after the LSS release included)."""
+    from prm9tool.device.canlink.discovery import identify_node
+
+    deadline = time.monotonic() + timeout_s
+    while time.monotonic() < deadline:
+        if identify_node(shared, node_id).serial == serial:
+            return True
+        time.sleep(0.05)
+    return False
+
+
+def check_free(shared: CanNetwork, node_id: int) -> None:
+    """LssFailedError ``taken`` when a device answers SDO at ``node_id`` (nothing is changed)."""
+    from prm9tool.device.canlink.discovery import identify_node
+
+    info = identify_node(shared, node_id)
+    if info.device_type is None:
+        return
+    what = f"serial {info.serial}" if info.serial else info.problem or "a device"
+    raise LssFailedError(
+        f"node ID {node_id} is taken: {what} answers there. Choose a free node ID; nothing "
+        "was changed",
+        "taken",
+    )
+
+
+def first_free(taken: set[int], count: int = 1) -> list[int]:
+    """The first ``count`` node IDs 1…127 not in ``taken``."""
+    return [n for n in range(1, 128) if n not in taken][:count]
 
 
 def _service_problem(

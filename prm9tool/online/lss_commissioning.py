@@ -1,0 +1,155 @@
+"""LSS commissioning for the CAN bus dialog: Fastscan and node-ID assignment off the GUI thread.
+
+:class:`LssCommissioning` runs one LSS job at a time (``prm9tool.device.canlink.lss``) in a
+thread of its own on the bus the dialog names (the master shared with the live network view
+and any session on that bus) and delivers the outcome on the GUI thread through a queued
+signal. The dialog sees plain :class:`LssDevice` records, never the device layer. QtCore only.
+"""
+
+from __future__ import annotations
+
+import contextlib
+import logging
+import threading
+from collections.abc import Callable, Mapping
+from dataclasses import dataclass
+from typing import Any
+
+from PySide6.QtCore import QObject, Signal
+
+from prm9tool.errors import Prm9Error
+from prm9tool.translate import error_text
+
+log = logging.getLogger(__name__)
+ANSWER_TIMEOUT_S = 10.0  # release -> boot-up at the new node ID (as after NMT reset node)
+
+
+@dataclass(frozen=True)
+class LssDevice:
+    """A device without a node ID as Fastscan found it (its identity object 0x1018)."""
+
+    vendor: int
+    product: int
+    revision: int
+    serial: int
+    is_prm9: bool
+
+
+@dataclass(frozen=True)
+class Assigned:
+    """A device that answers at the node ID it was given (stored)."""
+
+    device: LssDevice
+    node_id: int
+
+    @property
+    def device_id(self) -> str:
+        """``can:NODE``."""
+        return f"can:{self.node_id}"
+
+
+def _options(bus: Mapping[str, object]) -> Any:
+    from prm9tool.device.canlink.bus import CanOptions
+
+    rate = bus.get("bitrate")
+    return CanOptions(str(bus["interface"]), str(bus["channel"]), int(str(rate)) if rate else None)
+
+
+def scan_bus(bus: Mapping[str, object]) -> list[LssDevice]:
+    """Every device without a node ID on ``bus`` (blocking; the worker thread's job)."""
+    from prm9tool.device.canlink.bus import acquire, release
+    from prm9tool.device.canlink.lss import LssMasterLink
+
+    shared = acquire(_options(bus))
+    try:
+        found = LssMasterLink(shared).scan()
+    finally:
+        release(shared)
+    return [LssDevice(a.vendor, a.product, a.revision, a.serial, a.is_prm9) for a in found]
+
+
+def assign_on_bus(bus: Mapping[str, object], device: LssDevice, node_id: int) -> Assigned:
+    """Give ``device`` ``node_id`` and store it, refusing an ID that answers; returns once the
+    device answers there (blocking)."""
+    from prm9tool.device.canlink.bus import acquire, release
+    from prm9tool.device.canlink.lss import (
+        LssAddress,
+        LssFailedError,
+        LssMasterLink,
+        answers_at,
+        check_free,
+    )
+
+    shared = acquire(_options(bus))
+    try:
+        check_free(shared, node_id)
+        address = LssAddress(device.vendor, device.product, device.revision, device.serial)
+        LssMasterLink(shared).assign(address, node_id)
+        if not answers_at(shared, node_id, device.serial, ANSWER_TIMEOUT_S):
+            raise LssFailedError(
+                f"serial {device.serial}: node {node_id} was stored, but the valve does not "
+                f"answer as can:{node_id} within {ANSWER_TIMEOUT_S:g} s: search the bus",
+                "lost",
+            )
+    finally:
+        release(shared)
+    return Assigned(device, node_id)
+
+
+class LssCommissioning(QObject):
+    """One LSS job at a time off the GUI thread; outcomes on the GUI thread."""
+
+    scanned = Signal(list)  # [LssDevice]
+    assigned = Signal(object)  # Assigned
+    failed = Signal(str)  # why (in the program language)
+    _deliver = Signal(object, object)
+
+    def __init__(
+        self,
+        scan: Callable[[Mapping[str, object]], list[LssDevice]] = scan_bus,
+        assign: Callable[[Mapping[str, object], LssDevice, int], Assigned] = assign_on_bus,
+        parent: QObject | None = None,
+    ) -> None:
+        super().__init__(parent)
+        self._scan, self._assign = scan, assign
+        self._thread: threading.Thread | None = None
+        self._deliver.connect(self._on_delivered)  # queued: emitted from the job's thread
+
+    @property
+    def busy(self) -> bool:
+        """True while a job runs."""
+        return self._thread is not None
+
+    def scan(self, bus: Mapping[str, object]) -> None:
+        """Fastscan ``bus``: :attr:`scanned` or :attr:`failed` follows."""
+        self._start(self.scanned, lambda: self._scan(dict(bus)))
+
+    def assign(self, bus: Mapping[str, object], device: LssDevice, node_id: int) -> None:
+        """Give ``device`` ``node_id``: :attr:`assigned` or :attr:`failed` follows."""
+        self._start(self.assigned, lambda: self._assign(dict(bus), device, node_id))
+
+    def _start(self, done: Any, job: Callable[[], object]) -> None:
+        if self._thread is not None:
+            return
+        self._thread = threading.Thread(
+            target=self._run, args=(done, job), name="lss-commissioning", daemon=True
+        )
+        self._thread.start()
+
+    def _run(self, done: Any, job: Callable[[], object]) -> None:
+        try:
+            result: object = job()
+        except Prm9Error as exc:
+            result = exc
+        except Exception as exc:  # a bug must not pass silently, nor hang the dialog
+            log.exception("LSS job")
+            result = exc
+        with contextlib.suppress(RuntimeError):  # deleted meanwhile
+            self._deliver.emit(done, result)
+
+    def _on_delivered(self, done: Any, result: object) -> None:
+        self._thread = None
+        if isinstance(result, Exception):
+            self.failed.emit(error_text(result))
+        else:
+            done.emit(result)

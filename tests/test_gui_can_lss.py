@@ -1,0 +1,116 @@
+"""Communication → CAN bus, devices without a node ID: the dialog lists a valve at node-ID
+switch 1 (LSS) beside the configured nodes, "Assign node ID…" proposes the first free ID,
+refuses one that answers, gives the valve its ID (stored) and goes online with it."""
+
+from __future__ import annotations
+
+import pytest
+from lss_rig import make_lss_rig
+from PySide6.QtCore import QSettings
+from PySide6.QtWidgets import QInputDialog
+
+from prm9tool.device import factory
+from prm9tool.online.connection import ValveConnection
+from prm9tool.online.lss_commissioning import LssCommissioning
+from prm9tool.views.can_bus_dialog import CanBusDialog
+
+
+@pytest.fixture
+def settings(qapp, tmp_path):
+    from prm9tool import i18n
+
+    i18n.set_language("en")
+    return QSettings(str(tmp_path / "settings.ini"), QSettings.Format.IniFormat)
+
+
+@pytest.fixture
+def rig(tmp_path, request, monkeypatch):
+    monkeypatch.setenv("PRM9TOOL_DATA_DIR", str(tmp_path / "data"))
+    rig = make_lss_rig(request.node.name)
+    rig.add(4700, switches=(6, 2))  # a configured valve: node 10 by its switch
+    rig.add(4711)  # node-ID switch at 1: no node ID
+    yield rig
+    rig.close()
+
+
+@pytest.fixture
+def dialog(qtbot, rig, settings):
+    connection = ValveConnection(opener=lambda e: factory.open_session(e, can_link=rig.options))
+    lss = LssCommissioning()
+    dialog = CanBusDialog(
+        lambda bus, deliver: connection.list_devices_async((), deliver, bus),
+        settings,
+        lss=lss,
+    )
+    qtbot.addWidget(dialog)
+    dialog.interface.setCurrentText("virtual")
+    dialog.channel.setText(rig.options.channel)
+    qtbot.waitUntil(lambda: rig.valves[0].status().nmt_state == "pre-operational", timeout=10000)
+    dialog.search.click()
+    panel = dialog.lss_panel
+    qtbot.waitUntil(lambda: panel.table.rowCount() == 1 and panel.look.isEnabled(), timeout=30000)
+    yield dialog
+    connection.shutdown()
+
+
+def test_assign_node_id_proposes_the_first_free_id_and_goes_online(qtbot, dialog, rig, monkeypatch):
+    panel = dialog.lss_panel
+    assert dialog.table.item(0, 0).text() == "can:10"
+    assert [panel.table.item(0, c).text() for c in range(5)] == [
+        "4711", "PRM9", "0xE6", "0x9", "0x10000",
+    ]  # fmt: skip
+    assert panel.state.text() == "1 device without a node ID."
+    asked = []
+
+    def answer(_parent, _title, label, value, low, high):
+        asked.append((label, value, low, high))
+        return 21, True
+
+    monkeypatch.setattr(QInputDialog, "getInt", answer)
+    with qtbot.waitSignal(dialog.accepted, timeout=30000):
+        panel.assign.click()
+    assert asked == [
+        (
+            "Node ID for serial 4711 (1…127; stored in the valve, used from now on and after "
+            "every power-up):",
+            1,
+            1,
+            127,
+        )
+    ]
+    assert dialog.selected_device_id() == "can:21"
+    valve = rig.valves[1]
+    assert (valve.node_id, valve._fw.nv.lss["node_id"]) == (21, 21)
+    assert panel.state.text() == "Serial 4711 answers as can:21 (stored). Going online with it…"
+    connection = ValveConnection(opener=lambda e: factory.open_session(e, can_link=rig.options))
+    with qtbot.waitSignal(connection.online_changed, timeout=10000):
+        connection.go_online(dialog.selected_device_id())
+    assert connection.device.serial == 4711
+    connection.go_offline()
+    connection.shutdown()
+
+
+def test_an_id_that_answers_is_refused_and_nothing_is_sent(qtbot, dialog, rig, monkeypatch):
+    panel = dialog.lss_panel
+    monkeypatch.setattr(QInputDialog, "getInt", lambda *_a: (10, True))
+    rig.frames()
+    panel.assign.click()
+    assert panel.state.text() == "Node ID 10 is taken: a node answers there. Choose another one."
+    assert not [f for f in rig.frames() if f.startswith("7E5")]
+    assert (rig.valves[1].node_id, rig.valves[1]._fw.nv.lss) == (0, {})
+    assert dialog.result() == 0  # still open
+
+
+def test_an_id_taken_behind_the_dialogs_back_is_refused_by_the_job(qtbot, dialog, rig, monkeypatch):
+    panel = dialog.lss_panel
+    rig.add(4800, switches=(6, 3))  # node 15 joins after the search
+    qtbot.waitUntil(lambda: rig.valves[2].status().nmt_state == "pre-operational", timeout=10000)
+    monkeypatch.setattr(QInputDialog, "getInt", lambda *_a: (15, True))
+    panel.table.selectRow(0)
+    panel.assign.click()
+    qtbot.waitUntil(lambda: panel.assign.isEnabled(), timeout=30000)
+    assert panel.state.text() == (
+        "Node ID assignment (LSS) did not complete. (node ID 15 is taken: serial 4800 answers "
+        "there. Choose a free node ID; nothing was changed)"
+    )
+    assert (rig.valves[1].node_id, rig.valves[1]._fw.nv.lss) == (0, {})
