@@ -114,3 +114,42 @@ def test_an_id_taken_behind_the_dialogs_back_is_refused_by_the_job(qtbot, dialog
         "there. Choose a free node ID; nothing was changed)"
     )
     assert (rig.valves[1].node_id, rig.valves[1]._fw.nv.lss) == (0, {})
+
+
+def test_find_bit_rate_sets_the_rate_the_bus_runs_at(qtbot, settings):
+    from prm9tool.online.lss_commissioning import FoundRate
+
+    asked = []
+
+    def find(bus):
+        asked.append(dict(bus))
+        return FoundRate(250_000, (10, 21))
+
+    dialog = CanBusDialog(lambda _b, _d: None, settings, lss=LssCommissioning(find=find))
+    qtbot.addWidget(dialog)
+    dialog.interface.setCurrentText("pcan")
+    dialog.channel.setText("PCAN_USBBUS1")
+    dialog.find_rate.click()
+    qtbot.waitUntil(lambda: dialog.find_rate.isEnabled(), timeout=10000)
+    assert asked[0]["interface"] == "pcan"
+    assert dialog.bitrate.currentData() == 250_000
+    assert dialog.state.text() == (
+        "The bus runs at 250 kbit/s (frames from nodes: 10, 21). Search the bus."
+    )
+
+
+def test_find_bit_rate_on_an_adapter_without_listen_only_says_what_to_try(qtbot, settings):
+    dialog = CanBusDialog(lambda _b, _d: None, settings, lss=LssCommissioning())
+    qtbot.addWidget(dialog)
+    dialog.interface.setCurrentText("socketcan")
+    dialog.channel.setText("can0")
+    rate = dialog.bitrate.currentData()
+    dialog.find_rate.click()
+    qtbot.waitUntil(lambda: dialog.find_rate.isEnabled(), timeout=10000)
+    assert dialog.state.text().startswith(
+        "The bit rate cannot be found without transmitting on this adapter. (prm9tool cannot "
+        "find the bit rate on socketcan channel can0: the socketcan interface has no listen-only "
+        "mode prm9tool can switch on, and it never transmits at a guessed rate. Try: set the "
+        "controller to listen-only yourself"
+    )
+    assert dialog.bitrate.currentData() == rate

@@ -262,6 +262,14 @@ Poslední akce možná nebyla dokončena. Uložte svou práci pod novým názvem
             <translation>Kanál</translation>
         </message>
         <message>
+            <source>Find bit rate</source>
+            <translation>Zjistit přenosovou rychlost</translation>
+        </message>
+        <message>
+            <source>Listen at each bit rate in listen-only mode (nothing is sent)</source>
+            <translation>Naslouchat při každé přenosové rychlosti v režimu pouze poslech (nic se neodesílá)</translation>
+        </message>
+        <message>
             <source>Bit rate</source>
             <translation>Přenosová rychlost</translation>
         </message>
@@ -316,6 +324,18 @@ Poslední akce možná nebyla dokončena. Uložte svou práci pod novým názvem
         <message>
             <source>The bus cannot be watched: {0}</source>
             <translation>Sběrnici nelze sledovat: {0}</translation>
+        </message>
+        <message>
+            <source>Listening at each bit rate (listen-only: nothing is sent)…</source>
+            <translation>Naslouchá se při každé přenosové rychlosti (pouze poslech: nic se neodesílá)…</translation>
+        </message>
+        <message>
+            <source>none identified</source>
+            <translation>žádný nerozpoznán</translation>
+        </message>
+        <message>
+            <source>The bus runs at {0} kbit/s (frames from nodes: {1}). Search the bus.</source>
+            <translation>Sběrnice běží rychlostí {0} kbit/s (rámce od uzlů: {1}). Prohledejte sběrnici.</translation>
         </message>
         <message>
             <source>Type key of the valve</source>
@@ -1443,6 +1463,14 @@ Poslední akce možná nebyla dokončena. Uložte svou práci pod novým názvem
         <message>
             <source>Node ID assignment (LSS) did not complete.</source>
             <translation>Přidělení Node ID (LSS) nebylo dokončeno.</translation>
+        </message>
+        <message>
+            <source>The bit rate cannot be found without transmitting on this adapter.</source>
+            <translation>S tímto adaptérem nelze přenosovou rychlost zjistit bez vysílání.</translation>
+        </message>
+        <message>
+            <source>No bit rate gave valid frames.</source>
+            <translation>Při žádné přenosové rychlosti nepřišly platné rámce.</translation>
         </message>
     </context>
     <context>

@@ -262,6 +262,14 @@ Die letzte Aktion wurde womöglich nicht vollständig ausgeführt. Speichern Sie
             <translation>Kanal</translation>
         </message>
         <message>
+            <source>Find bit rate</source>
+            <translation>Bitrate ermitteln</translation>
+        </message>
+        <message>
+            <source>Listen at each bit rate in listen-only mode (nothing is sent)</source>
+            <translation>Bei jeder Bitrate im Nur-Hören-Modus mithören (es wird nichts gesendet)</translation>
+        </message>
+        <message>
             <source>Bit rate</source>
             <translation>Bitrate</translation>
         </message>
@@ -314,6 +322,18 @@ Die letzte Aktion wurde womöglich nicht vollständig ausgeführt. Speichern Sie
         <message>
             <source>The bus cannot be watched: {0}</source>
             <translation>Der Bus kann nicht beobachtet werden: {0}</translation>
+        </message>
+        <message>
+            <source>Listening at each bit rate (listen-only: nothing is sent)…</source>
+            <translation>Höre bei jeder Bitrate mit (nur hören: es wird nichts gesendet)…</translation>
+        </message>
+        <message>
+            <source>none identified</source>
+            <translation>keiner erkannt</translation>
+        </message>
+        <message>
+            <source>The bus runs at {0} kbit/s (frames from nodes: {1}). Search the bus.</source>
+            <translation>Der Bus läuft mit {0} kbit/s (Frames von Knoten: {1}). Durchsuchen Sie den Bus.</translation>
         </message>
         <message>
             <source>Type key of the valve</source>
@@ -1438,6 +1458,14 @@ Die letzte Aktion wurde womöglich nicht vollständig ausgeführt. Speichern Sie
         <message>
             <source>Node ID assignment (LSS) did not complete.</source>
             <translation>Die Vergabe der Node-ID (LSS) wurde nicht abgeschlossen.</translation>
+        </message>
+        <message>
+            <source>The bit rate cannot be found without transmitting on this adapter.</source>
+            <translation>Mit diesem Adapter lässt sich die Bitrate nicht ermitteln, ohne zu senden.</translation>
+        </message>
+        <message>
+            <source>No bit rate gave valid frames.</source>
+            <translation>Bei keiner Bitrate kamen gültige Frames an.</translation>
         </message>
     </context>
     <context>

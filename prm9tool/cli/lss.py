@@ -17,7 +17,8 @@ from prm9tool.device.canlink.lss import (
 )
 from prm9tool.errors import CanAdapterError, ExitCode
 
-LSS_COMMANDS = {"--lss-scan": "lss_scan", "--lss-assign": "lss_assign"}
+LSS_COMMANDS = {"--lss-scan": "lss_scan", "--lss-assign": "lss_assign",
+                "--find-bitrate": "find_bitrate"}  # fmt: skip
 BOOT_TIMEOUT_S = 10.0  # LSS release -> boot-up at the new node ID (as after NMT reset node)
 EXIT_FOR = {"duplicate": ExitCode.USAGE, "taken": ExitCode.USAGE, "refused": ExitCode.VERIFY_FAILED,
             "lost": ExitCode.COMMUNICATION, "none": ExitCode.NO_DEVICE}  # fmt: skip
@@ -42,6 +43,8 @@ def lss_problem(args: argparse.Namespace) -> str | None:
         return f"{given[0]} needs --can-interface (and --can-channel) naming the bus"
     if given[0] == "--lss-assign":
         return _pairs_problem(args.lss_assign)
+    if given[0] == "--find-bitrate" and args.can_bitrate is not None:
+        return "--find-bitrate listens at every rate a PRM9 supports: leave out --can-bitrate"
     return None
 
 
@@ -77,6 +80,8 @@ def _pairs_problem(pairs: list[str]) -> str | None:
 def run(args: argparse.Namespace) -> int:
     """The LSS command ``args`` names; its exit code."""
     options = CanOptions.from_args(args)
+    if args.find_bitrate:
+        return _find_bitrate(options)
     try:
         shared = acquire(options)
     except CanAdapterError as exc:
@@ -166,6 +171,34 @@ def _assign(shared: CanNetwork, options: CanOptions, pairs: list[tuple[int, int]
                 file=sys.stderr,
             )
     return ExitCode.COMMUNICATION if failed else ExitCode.OK
+
+
+def _find_bitrate(options: CanOptions) -> int:
+    """``--find-bitrate``: listen-only at each rate; one line per rate, then the result."""
+    from prm9tool.device.canlink import bitrate
+    from prm9tool.device.canlink.bitrate import (
+        BitrateNotFoundError,
+        NoListenOnlyError,
+        RateHeard,
+        find_bitrate,
+    )
+
+    def said(heard: RateHeard) -> None:
+        print(f"listening at {heard.describe()}", flush=True)
+
+    try:
+        rate, _heard = find_bitrate(options, bitrate.LISTEN_S, progress=said)
+    except NoListenOnlyError as exc:
+        print(f"prm9tool: {exc}", file=sys.stderr)
+        return ExitCode.COMMUNICATION
+    except BitrateNotFoundError as exc:
+        print(f"prm9tool: {exc}", file=sys.stderr)
+        return ExitCode.NO_DEVICE
+    except CanAdapterError as exc:
+        print(f"prm9tool: {exc}", file=sys.stderr)
+        return ExitCode.COMMUNICATION
+    print(f"the bus runs at {rate} bit/s: use --can-bitrate {rate}")
+    return ExitCode.OK
 
 
 def _bus_args(options: CanOptions) -> str:

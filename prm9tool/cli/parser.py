@@ -99,6 +99,12 @@ def add_device_options(parser: argparse.ArgumentParser) -> None:
         help="give each valve without a node ID its node ID and store it; exit 0 only when "
         "every one then answers at its node ID",
     )
+    lss.add_argument(
+        "--find-bitrate",
+        action="store_true",
+        help="find the bit rate of the CAN bus by listening (listen-only adapters: pcan, "
+        "kvaser, vector, slcan); never transmits",
+    )
 
 
 def node_id_arg(text: str) -> int | str:

@@ -38,7 +38,9 @@ def usage_problem(args: argparse.Namespace) -> str | None:
     from prm9tool.cli.lss import lss_problem
 
     problem = lss_problem(args)
-    if problem is not None or any(getattr(args, d) for d in ("lss_scan", "lss_assign")):
+    if problem is not None or any(
+        getattr(args, d) for d in ("lss_scan", "lss_assign", "find_bitrate")
+    ):
         return problem
     if args.characterize:
         return _characterize_problem(args)

@@ -1,4 +1,5 @@
-"""LSS commissioning for the CAN bus dialog: Fastscan and node-ID assignment off the GUI thread.
+"""LSS commissioning for the CAN bus dialog: Fastscan, node-ID assignment and finding the bit
+rate (listen-only), off the GUI thread.
 
 :class:`LssCommissioning` runs one LSS job at a time (``prm9tool.device.canlink.lss``) in a
 thread of its own on the bus the dialog names (the master shared with the live network view
@@ -46,6 +47,23 @@ class Assigned:
     def device_id(self) -> str:
         """``can:NODE``."""
         return f"can:{self.node_id}"
+
+
+@dataclass(frozen=True)
+class FoundRate:
+    """The bus's bit rate found by listening, and the nodes heard at it."""
+
+    bitrate: int
+    nodes: tuple[int, ...]
+
+
+def find_bitrate_on_bus(bus: Mapping[str, object]) -> FoundRate:
+    """Listen-only at each rate a PRM9 supports (blocking; never transmits)."""
+    from prm9tool.device.canlink.bitrate import find_bitrate
+
+    rate, heard = find_bitrate(_options({**bus, "bitrate": None}))
+    nodes = next(h.nodes for h in heard if h.bitrate == rate)
+    return FoundRate(rate, tuple(sorted(nodes)))
 
 
 def _options(bus: Mapping[str, object]) -> Any:
@@ -100,18 +118,20 @@ class LssCommissioning(QObject):
     """One LSS job at a time off the GUI thread; outcomes on the GUI thread."""
 
     scanned = Signal(list)  # [LssDevice]
+    bitrate_found = Signal(object)  # FoundRate
     assigned = Signal(object)  # Assigned
-    failed = Signal(str)  # why (in the program language)
-    _deliver = Signal(object, object)
+    failed = Signal(str, str)  # the job ("scan", "assign", "bitrate"), why (program language)
+    _deliver = Signal(str, object, object)
 
     def __init__(
         self,
         scan: Callable[[Mapping[str, object]], list[LssDevice]] = scan_bus,
         assign: Callable[[Mapping[str, object], LssDevice, int], Assigned] = assign_on_bus,
+        find: Callable[[Mapping[str, object]], FoundRate] = find_bitrate_on_bus,
         parent: QObject | None = None,
     ) -> None:
         super().__init__(parent)
-        self._scan, self._assign = scan, assign
+        self._scan, self._assign, self._find = scan, assign, find
         self._thread: threading.Thread | None = None
         self._deliver.connect(self._on_delivered)  # queued: emitted from the job's thread
 
@@ -122,21 +142,25 @@ class LssCommissioning(QObject):
 
     def scan(self, bus: Mapping[str, object]) -> None:
         """Fastscan ``bus``: :attr:`scanned` or :attr:`failed` follows."""
-        self._start(self.scanned, lambda: self._scan(dict(bus)))
+        self._start("scan", self.scanned, lambda: self._scan(dict(bus)))
 
     def assign(self, bus: Mapping[str, object], device: LssDevice, node_id: int) -> None:
         """Give ``device`` ``node_id``: :attr:`assigned` or :attr:`failed` follows."""
-        self._start(self.assigned, lambda: self._assign(dict(bus), device, node_id))
+        self._start("assign", self.assigned, lambda: self._assign(dict(bus), device, node_id))
 
-    def _start(self, done: Any, job: Callable[[], object]) -> None:
+    def find_bitrate(self, bus: Mapping[str, object]) -> None:
+        """Listen for the bus's bit rate: :attr:`bitrate_found` or :attr:`failed` follows."""
+        self._start("bitrate", self.bitrate_found, lambda: self._find(dict(bus)))
+
+    def _start(self, name: str, done: Any, job: Callable[[], object]) -> None:
         if self._thread is not None:
             return
         self._thread = threading.Thread(
-            target=self._run, args=(done, job), name="lss-commissioning", daemon=True
+            target=self._run, args=(name, done, job), name="lss-commissioning", daemon=True
         )
         self._thread.start()
 
-    def _run(self, done: Any, job: Callable[[], object]) -> None:
+    def _run(self, name: str, done: Any, job: Callable[[], object]) -> None:
         try:
             result: object = job()
         except Prm9Error as exc:
@@ -145,11 +169,11 @@ class LssCommissioning(QObject):
             log.exception("LSS job")
             result = exc
         with contextlib.suppress(RuntimeError):  # deleted meanwhile
-            self._deliver.emit(done, result)
+            self._deliver.emit(name, done, result)
 
-    def _on_delivered(self, done: Any, result: object) -> None:
+    def _on_delivered(self, name: str, done: Any, result: object) -> None:
         self._thread = None
         if isinstance(result, Exception):
-            self.failed.emit(error_text(result))
+            self.failed.emit(name, error_text(result))
         else:
             done.emit(result)

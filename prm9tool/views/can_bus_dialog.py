@@ -22,6 +22,7 @@ from PySide6.QtWidgets import (
     QDialog,
     QDialogButtonBox,
     QFormLayout,
+    QHBoxLayout,
     QHeaderView,
     QInputDialog,
     QLabel,
@@ -39,7 +40,7 @@ from prm9tool.errors import TypeKeyError
 from prm9tool.files.can_type_keys import remember
 from prm9tool.online.bus_monitor import BusMonitor, HeardNode
 from prm9tool.online.connection_protocol import ListedValves, ValveListing
-from prm9tool.online.lss_commissioning import LssCommissioning
+from prm9tool.online.lss_commissioning import FoundRate, LssCommissioning
 from prm9tool.paths import user_data_dir
 from prm9tool.translate import error_text
 from prm9tool.views.can_lss_panel import LssPanel
@@ -145,14 +146,26 @@ class CanBusDialog(QDialog):
         form = QFormLayout()
         form.addRow(self.tr("Interface (python-can)"), self.interface)
         form.addRow(self.tr("Channel"), self.channel)
-        form.addRow(self.tr("Bit rate"), self.bitrate)
+        rate_row = QHBoxLayout()
+        rate_row.addWidget(self.bitrate, 1)
+        self.find_rate = QPushButton(self.tr("Find bit rate"))
+        self.find_rate.setToolTip(
+            self.tr("Listen at each bit rate in listen-only mode (nothing is sent)")
+        )
+        self.find_rate.clicked.connect(self._on_find_rate_clicked)
+        self.find_rate.setVisible(lss is not None)
+        rate_row.addWidget(self.find_rate)
+        form.addRow(self.tr("Bit rate"), rate_row)
         layout = QVBoxLayout(self)
         layout.addLayout(form)
         layout.addWidget(self.search)
         layout.addWidget(self.state)
         layout.addWidget(self.table)
         self.lss_panel: LssPanel | None = None
+        self._lss = lss
         if lss is not None:
+            lss.bitrate_found.connect(self._on_rate_found)
+            lss.failed.connect(self._on_lss_failed)
             self.lss_panel = LssPanel(lss, self.bus, self._taken, self)
             self.lss_panel.assigned_id.connect(self._on_lss_assigned)
             layout.addWidget(self.lss_panel)
@@ -285,6 +298,32 @@ class CanBusDialog(QDialog):
     def _on_monitor_failed(self, reason: str) -> None:
         if isValid(self):
             self.state.setText(self.tr("The bus cannot be watched: {0}").format(reason))
+
+    def _on_find_rate_clicked(self) -> None:
+        if self._lss is None or self._lss.busy:
+            return
+        if self._monitor is not None:
+            self._monitor.stop()  # it holds the adapter at the rate set now
+        self.find_rate.setEnabled(False)
+        self.state.setText(self.tr("Listening at each bit rate (listen-only: nothing is sent)…"))
+        self._lss.find_bitrate(self.bus())
+
+    def _on_rate_found(self, found: FoundRate) -> None:
+        if not isValid(self):
+            return
+        self.find_rate.setEnabled(True)
+        self.bitrate.setCurrentIndex(max(self.bitrate.findData(found.bitrate), 0))
+        nodes = ", ".join(str(n) for n in found.nodes) or self.tr("none identified")
+        self.state.setText(
+            self.tr("The bus runs at {0} kbit/s (frames from nodes: {1}). Search the bus.").format(
+                found.bitrate // 1000, nodes
+            )
+        )
+
+    def _on_lss_failed(self, job: str, reason: str) -> None:
+        if isValid(self) and job == "bitrate":
+            self.find_rate.setEnabled(True)
+            self.state.setText(reason)
 
     def _taken(self) -> set[int]:
         """Node IDs that answered the search or were heard since."""

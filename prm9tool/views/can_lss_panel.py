@@ -171,9 +171,10 @@ class LssPanel(QWidget):
         )
         self.assigned_id.emit(assigned.device_id)
 
-    def _on_failed(self, reason: str) -> None:
+    def _on_failed(self, job: str, reason: str) -> None:
         if isValid(self):
-            self.state.setText(reason)
+            if job != "bitrate":  # the dialog says that one
+                self.state.setText(reason)
             self._update_buttons()
 
     def _update_buttons(self) -> None:
