@@ -233,3 +233,19 @@ def test_lss_usage_errors(args, message, capsys):
 def test_lss_commands_need_a_bus(capsys):
     assert main(["--lss-scan"]) == 2
     assert "--lss-scan needs --can-interface" in capsys.readouterr().err
+
+
+def test_a_restart_from_prm9tool_finds_an_lss_valve_at_its_lss_node_id(rig, data_dir):
+    """At switch 1 NODEID does not apply (table 7-17): a stored NODEID change does not move
+    the valve, and the session's restart finds it at the node ID LSS gave it."""
+    from prm9tool.device.canlink.session import CanopenSession
+
+    valve = rig.add(4711)
+    LssMasterLink(rig.shared).assign(ADDRESS_4711, 21)
+    wait_for(lambda: valve.status().nmt_state == "pre-operational", 10)
+    with CanopenSession(rig.options, 21) as session:
+        session.write("NODEID", 30)
+        session.store()
+        session.restart()
+        assert (session.node_id, session.info.device_id) == (21, "can:21")
+    assert valve.node_id == 21

@@ -2005,6 +2005,10 @@ Ano načte a záznam zařadí do fronty; Ne nenačte nic.</translation>
             <translation>Přepínač ID uzlu je v poloze {0}: ID uzlu a přenosovou rychlost určují přepínače (návod, tabulka 7-17), tato změna tedy ventil nepřesune; zůstává uzlem {1}.</translation>
         </message>
         <message>
+            <source>The node-ID switch is at position 1 (LSS): an LSS master sets node ID and bit rate (manual table 7-17; Communication → CAN bus). NODEID and BITRATE apply at position 0 only, so this change does not move the valve.</source>
+            <translation>Přepínač Node ID je v poloze 1 (LSS): Node ID a přenosovou rychlost nastavuje LSS master (návod, tabulka 7-17; Komunikace → CAN sběrnice). NODEID a BITRATE platí jen v poloze 0, tato změna tedy ventil nepřesune.</translation>
+        </message>
+        <message>
             <source>After the valve's next power-up or restart it answers at node {0}, {1}. Store the change and restart the valve from prm9tool (Valve → Restart valve): prm9tool then finds it there again — where it cannot change the adapter's bit rate itself (SocketCAN), it says how. After a power-up, find it under Communication → CAN bus (node {0}, bit rate {1}).</source>
             <translation>Po příštím zapnutí nebo restartu ventil odpovídá jako uzel {0}, {1}. Uložte změnu a restartujte ventil z prm9tool (Ventil → Restart ventilu): prm9tool ho tam pak znovu najde — kde rychlost adaptéru sám změnit nemůže (SocketCAN), řekne jak. Po zapnutí ho najděte v Komunikace → Sběrnice CAN (uzel {0}, rychlost {1}).</translation>
         </message>

@@ -1996,6 +1996,10 @@ Ja lädt hoch und stellt den Eintrag in die Warteschlange; Nein lädt nichts hoc
             <translation>Der Knoten-ID-Schalter steht auf Position {0}: Die Schalter bestimmen Knoten-ID und Bitrate (Handbuch, Tabelle 7-17), diese Änderung verschiebt das Ventil also nicht; es bleibt Knoten {1}.</translation>
         </message>
         <message>
+            <source>The node-ID switch is at position 1 (LSS): an LSS master sets node ID and bit rate (manual table 7-17; Communication → CAN bus). NODEID and BITRATE apply at position 0 only, so this change does not move the valve.</source>
+            <translation>Der Node-ID-Schalter steht auf Position 1 (LSS): Node-ID und Bitrate setzt ein LSS-Master (Handbuch Tabelle 7-17; Kommunikation → CAN-Bus). NODEID und BITRATE gelten nur in Position 0, diese Änderung verschiebt das Ventil also nicht.</translation>
+        </message>
+        <message>
             <source>After the valve's next power-up or restart it answers at node {0}, {1}. Store the change and restart the valve from prm9tool (Valve → Restart valve): prm9tool then finds it there again — where it cannot change the adapter's bit rate itself (SocketCAN), it says how. After a power-up, find it under Communication → CAN bus (node {0}, bit rate {1}).</source>
             <translation>Nach dem nächsten Einschalten oder Neustart antwortet das Ventil als Knoten {0}, {1}. Speichern Sie die Änderung und starten Sie das Ventil aus prm9tool neu (Ventil → Ventil neu starten): prm9tool findet es dann dort wieder — wo es die Bitrate des Adapters nicht selbst ändern kann (SocketCAN), sagt es, wie. Nach einem Einschalten finden Sie es unter Kommunikation → CAN-Bus (Knoten {0}, Bitrate {1}).</translation>
         </message>
