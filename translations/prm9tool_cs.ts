@@ -1359,6 +1359,18 @@ Poslední akce možná nebyla dokončena. Uložte svou práci pod novým názvem
             <source>The valve reads its rotary switches at power-up only: restart it (Valve → Restart valve) for a new position to apply. The setpoint input counts only while the valve takes its setpoint from the analog input (no CANopen, no setpoint generator).</source>
             <translation>Ventil čte své otočné přepínače jen po zapnutí: restartujte ho (Ventil → Restart ventilu), aby platila nová poloha. Vstup žádané hodnoty platí jen tehdy, když ventil bere žádanou hodnotu z analogového vstupu (bez CANopen, bez generátoru žádané hodnoty).</translation>
         </message>
+        <message>
+            <source>node ID and bit rate by software (NODEID, BITRATE)</source>
+            <translation>Node ID a přenosová rychlost softwarem (NODEID, BITRATE)</translation>
+        </message>
+        <message>
+            <source>LSS: node ID from an LSS master, automatic bit rate</source>
+            <translation>LSS: Node ID od LSS mastera, automatická přenosová rychlost</translation>
+        </message>
+        <message>
+            <source>node {0}</source>
+            <translation>uzel {0}</translation>
+        </message>
     </context>
     <context>
         <name>EmulatedValveMenu</name>

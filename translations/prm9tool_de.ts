@@ -1354,6 +1354,18 @@ Die letzte Aktion wurde womöglich nicht vollständig ausgeführt. Speichern Sie
             <source>The valve reads its rotary switches at power-up only: restart it (Valve → Restart valve) for a new position to apply. The setpoint input counts only while the valve takes its setpoint from the analog input (no CANopen, no setpoint generator).</source>
             <translation>Das Ventil liest seine Drehschalter nur beim Einschalten: starten Sie es neu (Ventil → Ventil neu starten), damit eine neue Stellung gilt. Der Sollwerteingang zählt nur, solange das Ventil seinen Sollwert vom Analogeingang nimmt (kein CANopen, kein Sollwertgenerator).</translation>
         </message>
+        <message>
+            <source>node ID and bit rate by software (NODEID, BITRATE)</source>
+            <translation>Node-ID und Bitrate per Software (NODEID, BITRATE)</translation>
+        </message>
+        <message>
+            <source>LSS: node ID from an LSS master, automatic bit rate</source>
+            <translation>LSS: Node-ID von einem LSS-Master, automatische Bitrate</translation>
+        </message>
+        <message>
+            <source>node {0}</source>
+            <translation>Knoten {0}</translation>
+        </message>
     </context>
     <context>
         <name>EmulatedValveMenu</name>
