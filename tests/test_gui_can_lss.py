@@ -153,3 +153,55 @@ def test_find_bit_rate_on_an_adapter_without_listen_only_says_what_to_try(qtbot,
         "controller to listen-only yourself"
     )
     assert dialog.bitrate.currentData() == rate
+
+
+def test_change_node_id_by_lss_warns_that_the_link_moves_and_goes_online_there(
+    qtbot, settings, tmp_path, monkeypatch
+):
+    from gui_support import record_prompts
+
+    from prm9tool.device.canlink.lss import LssAddress, LssMasterLink
+    from prm9tool.views import prompts
+
+    monkeypatch.setenv("PRM9TOOL_DATA_DIR", str(tmp_path / "data"))
+    rig = make_lss_rig("renumber")
+    try:
+        valve = rig.add(4711)  # switch 1, given node 21 by LSS
+        LssMasterLink(rig.shared).assign(LssAddress(0xE6, 0x9, 0x10000, 4711), 21)
+        qtbot.waitUntil(lambda: valve.status().nmt_state == "pre-operational", timeout=10000)
+        fixed = rig.add(4700, switches=(6, 2))  # node 10 by its switch: no LSS
+        qtbot.waitUntil(lambda: fixed.status().nmt_state == "pre-operational", timeout=10000)
+        connection = ValveConnection(opener=lambda e: factory.open_session(e, can_link=rig.options))
+        dialog = CanBusDialog(
+            lambda bus, deliver: connection.list_devices_async((), deliver, bus),
+            settings,
+            lss=LssCommissioning(),
+        )
+        qtbot.addWidget(dialog)
+        dialog.interface.setCurrentText("virtual")
+        dialog.channel.setText(rig.options.channel)
+        dialog.search.click()
+        qtbot.waitUntil(lambda: dialog.table.rowCount() == 2, timeout=30000)
+        qtbot.waitUntil(lambda: dialog.lss_panel.look.isEnabled(), timeout=30000)
+        assert [dialog.table.item(r, 0).text() for r in range(2)] == ["can:10", "can:21"]
+        answers = record_prompts(monkeypatch)
+        answers.answers = [prompts.Button.Yes, prompts.Button.Yes]
+        monkeypatch.setattr(QInputDialog, "getInt", lambda *_a: (22, True))
+        dialog.table.selectRow(0)  # node 10: its switch decides, LSS cannot move it
+        dialog.renumber.click()
+        qtbot.waitUntil(lambda: dialog.renumber.isEnabled(), timeout=30000)
+        assert "node 10 (serial 4700) does not answer LSS: its node-ID switch is not at 1" in (
+            dialog.state.text()
+        )
+        assert fixed.node_id == 10
+        dialog.table.selectRow(1)
+        with qtbot.waitSignal(dialog.accepted, timeout=30000):
+            dialog.renumber.click()
+        assert (
+            "prm9tool's own link moves with it: a connection to can:21 ends" in (answers.asked[-1])
+        )
+        assert dialog.selected_device_id() == "can:22"
+        assert (valve.node_id, valve._fw.nv.lss["node_id"]) == (22, 22)
+        connection.shutdown()
+    finally:
+        rig.close()

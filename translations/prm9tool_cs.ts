@@ -208,6 +208,53 @@ Poslední akce možná nebyla dokončena. Uložte svou práci pod novým názvem
         </message>
     </context>
     <context>
+        <name>BusLssActions</name>
+        <message>
+            <source>Find bit rate</source>
+            <translation>Zjistit přenosovou rychlost</translation>
+        </message>
+        <message>
+            <source>Listen at each bit rate in listen-only mode (nothing is sent)</source>
+            <translation>Naslouchat při každé přenosové rychlosti v režimu pouze poslech (nic se neodesílá)</translation>
+        </message>
+        <message>
+            <source>Change node ID by LSS…</source>
+            <translation>Změnit Node ID pomocí LSS…</translation>
+        </message>
+        <message>
+            <source>Listening at each bit rate (listen-only: nothing is sent)…</source>
+            <translation>Naslouchá se při každé přenosové rychlosti (pouze poslech: nic se neodesílá)…</translation>
+        </message>
+        <message>
+            <source>none identified</source>
+            <translation>žádný nerozpoznán</translation>
+        </message>
+        <message>
+            <source>The bus runs at {0} kbit/s (frames from nodes: {1}). Search the bus.</source>
+            <translation>Sběrnice běží rychlostí {0} kbit/s (rámce od uzlů: {1}). Prohledejte sběrnici.</translation>
+        </message>
+        <message>
+            <source>Change node ID by LSS</source>
+            <translation>Změnit Node ID pomocí LSS</translation>
+        </message>
+        <message>
+            <source>New node ID for serial {0}, now {1} (1…127):</source>
+            <translation>Nové Node ID pro sériové číslo {0}, nyní {1} (1…127):</translation>
+        </message>
+        <message>
+            <source>Node ID {0} is taken: a node answers there. Choose another one.</source>
+            <translation>Node ID {0} je obsazené: na něm odpovídá uzel. Zvolte jiné.</translation>
+        </message>
+        <message>
+            <source>Serial {0} will answer at node {2} instead of {1}, stored in the valve (its node-ID switch must be at 1: LSS). prm9tool's own link moves with it: a connection to can:{1} ends, and prm9tool goes online with can:{2}. A PLC that addresses node {1} no longer reaches the valve. Change it?</source>
+            <translation>Sériové číslo {0} pak odpovídá jako uzel {2} místo {1}, uloženo ve ventilu (jeho přepínač Node ID musí být v poloze 1: LSS). Vlastní spojení prm9tool se přesune s ním: spojení s can:{1} skončí a prm9tool přejde do režimu online s can:{2}. PLC, které adresuje uzel {1}, ventil již nezastihne. Změnit?</translation>
+        </message>
+        <message>
+            <source>Changing the node ID of serial {0} to {1}…</source>
+            <translation>Node ID sériového čísla {0} se mění na {1}…</translation>
+        </message>
+    </context>
+    <context>
         <name>CanBusDialog</name>
         <message>
             <source>CAN bus</source>
@@ -260,14 +307,6 @@ Poslední akce možná nebyla dokončena. Uložte svou práci pod novým názvem
         <message>
             <source>Channel</source>
             <translation>Kanál</translation>
-        </message>
-        <message>
-            <source>Find bit rate</source>
-            <translation>Zjistit přenosovou rychlost</translation>
-        </message>
-        <message>
-            <source>Listen at each bit rate in listen-only mode (nothing is sent)</source>
-            <translation>Naslouchat při každé přenosové rychlosti v režimu pouze poslech (nic se neodesílá)</translation>
         </message>
         <message>
             <source>Bit rate</source>
@@ -324,18 +363,6 @@ Poslední akce možná nebyla dokončena. Uložte svou práci pod novým názvem
         <message>
             <source>The bus cannot be watched: {0}</source>
             <translation>Sběrnici nelze sledovat: {0}</translation>
-        </message>
-        <message>
-            <source>Listening at each bit rate (listen-only: nothing is sent)…</source>
-            <translation>Naslouchá se při každé přenosové rychlosti (pouze poslech: nic se neodesílá)…</translation>
-        </message>
-        <message>
-            <source>none identified</source>
-            <translation>žádný nerozpoznán</translation>
-        </message>
-        <message>
-            <source>The bus runs at {0} kbit/s (frames from nodes: {1}). Search the bus.</source>
-            <translation>Sběrnice běží rychlostí {0} kbit/s (rámce od uzlů: {1}). Prohledejte sběrnici.</translation>
         </message>
         <message>
             <source>Type key of the valve</source>

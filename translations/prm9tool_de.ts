@@ -208,6 +208,53 @@ Die letzte Aktion wurde womöglich nicht vollständig ausgeführt. Speichern Sie
         </message>
     </context>
     <context>
+        <name>BusLssActions</name>
+        <message>
+            <source>Find bit rate</source>
+            <translation>Bitrate ermitteln</translation>
+        </message>
+        <message>
+            <source>Listen at each bit rate in listen-only mode (nothing is sent)</source>
+            <translation>Bei jeder Bitrate im Nur-Hören-Modus mithören (es wird nichts gesendet)</translation>
+        </message>
+        <message>
+            <source>Change node ID by LSS…</source>
+            <translation>Node-ID per LSS ändern…</translation>
+        </message>
+        <message>
+            <source>Listening at each bit rate (listen-only: nothing is sent)…</source>
+            <translation>Höre bei jeder Bitrate mit (nur hören: es wird nichts gesendet)…</translation>
+        </message>
+        <message>
+            <source>none identified</source>
+            <translation>keiner erkannt</translation>
+        </message>
+        <message>
+            <source>The bus runs at {0} kbit/s (frames from nodes: {1}). Search the bus.</source>
+            <translation>Der Bus läuft mit {0} kbit/s (Frames von Knoten: {1}). Durchsuchen Sie den Bus.</translation>
+        </message>
+        <message>
+            <source>Change node ID by LSS</source>
+            <translation>Node-ID per LSS ändern</translation>
+        </message>
+        <message>
+            <source>New node ID for serial {0}, now {1} (1…127):</source>
+            <translation>Neue Node-ID für Seriennummer {0}, jetzt {1} (1…127):</translation>
+        </message>
+        <message>
+            <source>Node ID {0} is taken: a node answers there. Choose another one.</source>
+            <translation>Node-ID {0} ist vergeben: Dort antwortet ein Knoten. Wählen Sie eine andere.</translation>
+        </message>
+        <message>
+            <source>Serial {0} will answer at node {2} instead of {1}, stored in the valve (its node-ID switch must be at 1: LSS). prm9tool's own link moves with it: a connection to can:{1} ends, and prm9tool goes online with can:{2}. A PLC that addresses node {1} no longer reaches the valve. Change it?</source>
+            <translation>Seriennummer {0} antwortet dann als Knoten {2} statt {1}, im Ventil gespeichert (sein Node-ID-Schalter muss auf 1 stehen: LSS). Die eigene Verbindung von prm9tool zieht mit um: Eine Verbindung zu can:{1} endet, und prm9tool geht mit can:{2} online. Eine SPS, die Knoten {1} anspricht, erreicht das Ventil nicht mehr. Ändern?</translation>
+        </message>
+        <message>
+            <source>Changing the node ID of serial {0} to {1}…</source>
+            <translation>Node-ID von Seriennummer {0} wird auf {1} geändert…</translation>
+        </message>
+    </context>
+    <context>
         <name>CanBusDialog</name>
         <message>
             <source>CAN bus</source>
@@ -262,14 +309,6 @@ Die letzte Aktion wurde womöglich nicht vollständig ausgeführt. Speichern Sie
             <translation>Kanal</translation>
         </message>
         <message>
-            <source>Find bit rate</source>
-            <translation>Bitrate ermitteln</translation>
-        </message>
-        <message>
-            <source>Listen at each bit rate in listen-only mode (nothing is sent)</source>
-            <translation>Bei jeder Bitrate im Nur-Hören-Modus mithören (es wird nichts gesendet)</translation>
-        </message>
-        <message>
             <source>Bit rate</source>
             <translation>Bitrate</translation>
         </message>
@@ -322,18 +361,6 @@ Die letzte Aktion wurde womöglich nicht vollständig ausgeführt. Speichern Sie
         <message>
             <source>The bus cannot be watched: {0}</source>
             <translation>Der Bus kann nicht beobachtet werden: {0}</translation>
-        </message>
-        <message>
-            <source>Listening at each bit rate (listen-only: nothing is sent)…</source>
-            <translation>Höre bei jeder Bitrate mit (nur hören: es wird nichts gesendet)…</translation>
-        </message>
-        <message>
-            <source>none identified</source>
-            <translation>keiner erkannt</translation>
-        </message>
-        <message>
-            <source>The bus runs at {0} kbit/s (frames from nodes: {1}). Search the bus.</source>
-            <translation>Der Bus läuft mit {0} kbit/s (Frames von Knoten: {1}). Durchsuchen Sie den Bus.</translation>
         </message>
         <message>
             <source>Type key of the valve</source>

@@ -8,20 +8,16 @@ import json
 import sys
 
 from prm9tool.device.canlink.bus import CanNetwork, CanOptions, acquire, release
-from prm9tool.device.canlink.lss import (
-    LssAddress,
-    LssFailedError,
-    LssMasterLink,
-    answers_at,
-    first_free,
-)
+from prm9tool.device.canlink.lss import LssAddress, LssFailedError, LssMasterLink
+from prm9tool.device.canlink.lss_nodes import answers_at, first_free
 from prm9tool.errors import CanAdapterError, ExitCode
 
 LSS_COMMANDS = {"--lss-scan": "lss_scan", "--lss-assign": "lss_assign",
                 "--find-bitrate": "find_bitrate"}  # fmt: skip
 BOOT_TIMEOUT_S = 10.0  # LSS release -> boot-up at the new node ID (as after NMT reset node)
 EXIT_FOR = {"duplicate": ExitCode.USAGE, "taken": ExitCode.USAGE, "refused": ExitCode.VERIFY_FAILED,
-            "lost": ExitCode.COMMUNICATION, "none": ExitCode.NO_DEVICE}  # fmt: skip
+            "lost": ExitCode.COMMUNICATION, "none": ExitCode.NO_DEVICE,
+            "unanswered": ExitCode.COMMUNICATION}  # fmt: skip
 
 
 def lss_problem(args: argparse.Namespace) -> str | None:

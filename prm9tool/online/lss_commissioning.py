@@ -66,6 +66,33 @@ def find_bitrate_on_bus(bus: Mapping[str, object]) -> FoundRate:
     return FoundRate(rate, tuple(sorted(nodes)))
 
 
+@dataclass(frozen=True)
+class Renumbered:
+    """A configured valve that answers at the node ID LSS gave it (stored)."""
+
+    serial: int
+    old_node_id: int
+    node_id: int
+
+    @property
+    def device_id(self) -> str:
+        """``can:NODE``."""
+        return f"can:{self.node_id}"
+
+
+def renumber_on_bus(bus: Mapping[str, object], node_id: int, new_node_id: int) -> Renumbered:
+    """The valve at ``node_id`` (switch 1) gets ``new_node_id`` by LSS (blocking)."""
+    from prm9tool.device.canlink.bus import acquire, release
+    from prm9tool.device.canlink.lss_nodes import renumber
+
+    shared = acquire(_options(bus))
+    try:
+        serial = renumber(shared, node_id, new_node_id, ANSWER_TIMEOUT_S)
+    finally:
+        release(shared)
+    return Renumbered(serial, node_id, new_node_id)
+
+
 def _options(bus: Mapping[str, object]) -> Any:
     from prm9tool.device.canlink.bus import CanOptions
 
@@ -90,13 +117,8 @@ def assign_on_bus(bus: Mapping[str, object], device: LssDevice, node_id: int) ->
     """Give ``device`` ``node_id`` and store it, refusing an ID that answers; returns once the
     device answers there (blocking)."""
     from prm9tool.device.canlink.bus import acquire, release
-    from prm9tool.device.canlink.lss import (
-        LssAddress,
-        LssFailedError,
-        LssMasterLink,
-        answers_at,
-        check_free,
-    )
+    from prm9tool.device.canlink.lss import LssAddress, LssFailedError, LssMasterLink
+    from prm9tool.device.canlink.lss_nodes import answers_at, check_free
 
     shared = acquire(_options(bus))
     try:
@@ -119,6 +141,7 @@ class LssCommissioning(QObject):
 
     scanned = Signal(list)  # [LssDevice]
     bitrate_found = Signal(object)  # FoundRate
+    renumbered = Signal(object)  # Renumbered
     assigned = Signal(object)  # Assigned
     failed = Signal(str, str)  # the job ("scan", "assign", "bitrate"), why (program language)
     _deliver = Signal(str, object, object)
@@ -128,10 +151,12 @@ class LssCommissioning(QObject):
         scan: Callable[[Mapping[str, object]], list[LssDevice]] = scan_bus,
         assign: Callable[[Mapping[str, object], LssDevice, int], Assigned] = assign_on_bus,
         find: Callable[[Mapping[str, object]], FoundRate] = find_bitrate_on_bus,
+        renumber: Callable[[Mapping[str, object], int, int], Renumbered] = renumber_on_bus,
         parent: QObject | None = None,
     ) -> None:
         super().__init__(parent)
         self._scan, self._assign, self._find = scan, assign, find
+        self._renumber = renumber
         self._thread: threading.Thread | None = None
         self._deliver.connect(self._on_delivered)  # queued: emitted from the job's thread
 
@@ -147,6 +172,13 @@ class LssCommissioning(QObject):
     def assign(self, bus: Mapping[str, object], device: LssDevice, node_id: int) -> None:
         """Give ``device`` ``node_id``: :attr:`assigned` or :attr:`failed` follows."""
         self._start("assign", self.assigned, lambda: self._assign(dict(bus), device, node_id))
+
+    def renumber(self, bus: Mapping[str, object], node_id: int, new_node_id: int) -> None:
+        """Move the valve at ``node_id`` to ``new_node_id`` by LSS: :attr:`renumbered` or
+        :attr:`failed` follows."""
+        self._start(
+            "renumber", self.renumbered, lambda: self._renumber(dict(bus), node_id, new_node_id)
+        )
 
     def find_bitrate(self, bus: Mapping[str, object]) -> None:
         """Listen for the bus's bit rate: :attr:`bitrate_found` or :attr:`failed` follows."""

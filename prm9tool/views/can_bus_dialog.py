@@ -40,10 +40,10 @@ from prm9tool.errors import TypeKeyError
 from prm9tool.files.can_type_keys import remember
 from prm9tool.online.bus_monitor import BusMonitor, HeardNode
 from prm9tool.online.connection_protocol import ListedValves, ValveListing
-from prm9tool.online.lss_commissioning import FoundRate, LssCommissioning
+from prm9tool.online.lss_commissioning import LssCommissioning
 from prm9tool.paths import user_data_dir
 from prm9tool.translate import error_text
-from prm9tool.views.can_lss_panel import LssPanel
+from prm9tool.views.can_lss_panel import BusLssActions, LssPanel
 
 INTERFACE_KEY, CHANNEL_KEY, BITRATE_KEY = "can/interface", "can/channel", "can/bitrate"
 INTERFACES = (
@@ -136,7 +136,7 @@ class CanBusDialog(QDialog):
         self.table.setEditTriggers(QAbstractItemView.EditTrigger.NoEditTriggers)
         self.table.horizontalHeader().setSectionResizeMode(QHeaderView.ResizeMode.ResizeToContents)
         self.table.horizontalHeader().setStretchLastSection(True)
-        self.table.itemSelectionChanged.connect(self._update_ok)
+        self.table.itemSelectionChanged.connect(self.update_ok)
         self.table.doubleClicked.connect(lambda _i: self._accept_if_valve())
         self.buttons = QDialogButtonBox(
             QDialogButtonBox.StandardButton.Ok | QDialogButtonBox.StandardButton.Cancel
@@ -148,12 +148,9 @@ class CanBusDialog(QDialog):
         form.addRow(self.tr("Channel"), self.channel)
         rate_row = QHBoxLayout()
         rate_row.addWidget(self.bitrate, 1)
-        self.find_rate = QPushButton(self.tr("Find bit rate"))
-        self.find_rate.setToolTip(
-            self.tr("Listen at each bit rate in listen-only mode (nothing is sent)")
-        )
-        self.find_rate.clicked.connect(self._on_find_rate_clicked)
-        self.find_rate.setVisible(lss is not None)
+        self._lss = lss
+        self.lss_actions = BusLssActions(self, lss)
+        self.find_rate, self.renumber = self.lss_actions.find_rate, self.lss_actions.renumber
         rate_row.addWidget(self.find_rate)
         form.addRow(self.tr("Bit rate"), rate_row)
         layout = QVBoxLayout(self)
@@ -161,17 +158,15 @@ class CanBusDialog(QDialog):
         layout.addWidget(self.search)
         layout.addWidget(self.state)
         layout.addWidget(self.table)
+        layout.addWidget(self.renumber, 0, Qt.AlignmentFlag.AlignLeft)
         self.lss_panel: LssPanel | None = None
-        self._lss = lss
         if lss is not None:
-            lss.bitrate_found.connect(self._on_rate_found)
-            lss.failed.connect(self._on_lss_failed)
-            self.lss_panel = LssPanel(lss, self.bus, self._taken, self)
-            self.lss_panel.assigned_id.connect(self._on_lss_assigned)
+            self.lss_panel = LssPanel(lss, self.bus, self.taken, self)
+            self.lss_panel.assigned_id.connect(self.on_lss_assigned)
             layout.addWidget(self.lss_panel)
         layout.addWidget(self.buttons)
         self.resize(1060, 620 if lss is not None else 420)
-        self._update_ok()
+        self.update_ok()
 
     def bus(self) -> dict[str, object]:
         """The bus as entered."""
@@ -247,7 +242,7 @@ class CanBusDialog(QDialog):
                 if not valve:
                     item.setFlags(item.flags() & ~Qt.ItemFlag.ItemIsSelectable)
                 self.table.setItem(row, column, item)
-        self._update_ok()
+        self.update_ok()
 
     def _on_nodes_heard(self, nodes: list[HeardNode]) -> None:
         """The monitor's news: NMT state, heartbeat age, last EMCY; new and silent nodes."""
@@ -299,46 +294,31 @@ class CanBusDialog(QDialog):
         if isValid(self):
             self.state.setText(self.tr("The bus cannot be watched: {0}").format(reason))
 
-    def _on_find_rate_clicked(self) -> None:
-        if self._lss is None or self._lss.busy:
-            return
+    @property
+    def entries(self) -> list[ValveListing]:
+        """The nodes the last search listed, by row."""
+        return self._entries
+
+    def stop_monitor(self) -> None:
+        """Let the live view go of the adapter (finding the bit rate opens it otherwise)."""
         if self._monitor is not None:
-            self._monitor.stop()  # it holds the adapter at the rate set now
-        self.find_rate.setEnabled(False)
-        self.state.setText(self.tr("Listening at each bit rate (listen-only: nothing is sent)…"))
-        self._lss.find_bitrate(self.bus())
+            self._monitor.stop()
 
-    def _on_rate_found(self, found: FoundRate) -> None:
-        if not isValid(self):
-            return
-        self.find_rate.setEnabled(True)
-        self.bitrate.setCurrentIndex(max(self.bitrate.findData(found.bitrate), 0))
-        nodes = ", ".join(str(n) for n in found.nodes) or self.tr("none identified")
-        self.state.setText(
-            self.tr("The bus runs at {0} kbit/s (frames from nodes: {1}). Search the bus.").format(
-                found.bitrate // 1000, nodes
-            )
-        )
-
-    def _on_lss_failed(self, job: str, reason: str) -> None:
-        if isValid(self) and job == "bitrate":
-            self.find_rate.setEnabled(True)
-            self.state.setText(reason)
-
-    def _taken(self) -> set[int]:
+    def taken(self) -> set[int]:
         """Node IDs that answered the search or were heard since."""
         ids = {int(e.device_id.removeprefix("can:")) for e in self._entries}
         return ids | set(self._extra)
 
-    def _on_lss_assigned(self, device_id: str) -> None:
+    def on_lss_assigned(self, device_id: str) -> None:
         """A valve answers at the node ID it was given: go online with it."""
         self._chosen = device_id
         self._remember()
         self.accept()
 
-    def _update_ok(self) -> None:
+    def update_ok(self) -> None:
         ok = self.buttons.button(QDialogButtonBox.StandardButton.Ok)
         ok.setEnabled(self.selected_device_id() is not None)
+        self.lss_actions.set_selected(self.selected_device_id() is not None)
 
     def _accept_if_valve(self) -> None:
         if self.selected_device_id() is None:

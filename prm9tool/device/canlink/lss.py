@@ -60,7 +60,7 @@ SERVICE = {
 
 
 class LssFailedError(CommunicationError):
-    """An LSS service failed; ``kind``: none, duplicate, taken, refused, lost."""
+    """An LSS service failed; ``kind``: none, duplicate, taken, refused, lost, unanswered."""
 
     summary = QT_TRANSLATE_NOOP("Errors", "Node ID assignment (LSS) did not complete.")
 
@@ -205,8 +205,8 @@ class LssMasterLink:
             except LssError:
                 raise LssFailedError(
                     f"no device answers to the LSS address {address.describe()}: it left the "
-                    "bus or has a node ID already (search the bus)",
-                    "lost",
+                    "bus or does not take part in LSS (search the bus)",
+                    "unanswered",
                 ) from None
             answered = [t for t, d in heard.frames if d and d[0] == CS_SELECTIVE_RESPONSE]
             first = answered[0] - start if answered else MIN_STEP_S
@@ -312,39 +312,6 @@ class LssMasterLink:
             return call()
         finally:
             self._lss.RESPONSE_TIMEOUT = saved
-
-
-def answers_at(shared: CanNetwork, node_id: int, serial: int, timeout_s: float) -> bool:
-    """The device with ``serial`` answers SDO at ``node_id`` within ``timeout_s`` (its boot
-    after the LSS release included)."""
-    from prm9tool.device.canlink.discovery import identify_node
-
-    deadline = time.monotonic() + timeout_s
-    while time.monotonic() < deadline:
-        if identify_node(shared, node_id).serial == serial:
-            return True
-        time.sleep(0.05)
-    return False
-
-
-def check_free(shared: CanNetwork, node_id: int) -> None:
-    """LssFailedError ``taken`` when a device answers SDO at ``node_id`` (nothing is changed)."""
-    from prm9tool.device.canlink.discovery import identify_node
-
-    info = identify_node(shared, node_id)
-    if info.device_type is None:
-        return
-    what = f"serial {info.serial}" if info.serial else info.problem or "a device"
-    raise LssFailedError(
-        f"node ID {node_id} is taken: {what} answers there. Choose a free node ID; nothing "
-        "was changed",
-        "taken",
-    )
-
-
-def first_free(taken: set[int], count: int = 1) -> list[int]:
-    """The first ``count`` node IDs 1…127 not in ``taken``."""
-    return [n for n in range(1, 128) if n not in taken][:count]
 
 
 def _service_problem(
