@@ -205,3 +205,33 @@ def test_change_node_id_by_lss_warns_that_the_link_moves_and_goes_online_there(
         connection.shutdown()
     finally:
         rig.close()
+
+
+def test_assign_node_ids_to_all_gives_consecutive_free_ids_in_one_action(
+    qtbot, dialog, rig, monkeypatch
+):
+    panel = dialog.lss_panel
+    second = rig.add(4712)
+    panel.start_scan()
+    qtbot.waitUntil(lambda: panel.table.rowCount() == 2 and panel.look.isEnabled(), timeout=30000)
+    asked = []
+
+    def first_id(_parent, _title, label, value, low, high):
+        asked.append((label, value))
+        return 9, True  # 10 answers already: 9 and 11 are the next free ones
+
+    monkeypatch.setattr(QInputDialog, "getInt", first_id)
+    panel.assign_all.click()
+    assert asked == [
+        (
+            "First node ID: the 2 valves get consecutive free node IDs from it, in the order of "
+            "their serial numbers (stored in each valve):",
+            1,
+        )
+    ]
+    qtbot.waitUntil(lambda: dialog.table.rowCount() == 3, timeout=60000)
+    assert [dialog.table.item(r, 0).text() for r in range(3)] == ["can:9", "can:10", "can:11"]
+    assert [dialog.table.item(r, 2).text() for r in range(3)] == ["4711", "4700", "4712"]
+    assert (rig.valves[1]._fw.nv.lss["node_id"], second._fw.nv.lss["node_id"]) == (9, 11)
+    qtbot.waitUntil(lambda: panel.look.isEnabled(), timeout=30000)
+    assert panel.table.rowCount() == 0

@@ -2087,6 +2087,10 @@ Ano načte a záznam zařadí do fronty; Ne nenačte nic.</translation>
             <translation>Přidělit Node ID…</translation>
         </message>
         <message>
+            <source>Assign node IDs to all…</source>
+            <translation>Přidělit Node ID všem…</translation>
+        </message>
+        <message>
             <source>Looking for devices without a node ID (LSS Fastscan)…</source>
             <translation>Hledají se zařízení bez Node ID (LSS Fastscan)…</translation>
         </message>
@@ -2125,6 +2129,26 @@ Ano načte a záznam zařadí do fronty; Ne nenačte nic.</translation>
         <message>
             <source>Giving serial {0} node ID {1} and storing it…</source>
             <translation>Sériové číslo {0} dostává Node ID {1} a ukládá ho…</translation>
+        </message>
+        <message>
+            <source>Assign node IDs to all</source>
+            <translation>Přidělit Node ID všem</translation>
+        </message>
+        <message>
+            <source>First node ID: the {0} valves get consecutive free node IDs from it, in the order of their serial numbers (stored in each valve):</source>
+            <translation>První Node ID: {0} ventilů dostane od něj po sobě jdoucí volná Node ID v pořadí sériových čísel (uloží se do každého ventilu):</translation>
+        </message>
+        <message>
+            <source>From node ID {0} on there are only {1} free node IDs for {2} valves.</source>
+            <translation>Od Node ID {0} je volných jen {1} Node ID pro {2} ventilů.</translation>
+        </message>
+        <message>
+            <source>Giving node IDs: {0}…</source>
+            <translation>Přidělují se Node ID: {0}…</translation>
+        </message>
+        <message>
+            <source>Given and stored: {0}. Searching the bus again…</source>
+            <translation>Přiděleno a uloženo: {0}. Sběrnice se prohledává znovu…</translation>
         </message>
         <message>
             <source>Serial {0} answers as {1} (stored). Going online with it…</source>

@@ -2078,6 +2078,10 @@ Ja lädt hoch und stellt den Eintrag in die Warteschlange; Nein lädt nichts hoc
             <translation>Node-ID zuweisen…</translation>
         </message>
         <message>
+            <source>Assign node IDs to all…</source>
+            <translation>Allen Node-IDs zuweisen…</translation>
+        </message>
+        <message>
             <source>Looking for devices without a node ID (LSS Fastscan)…</source>
             <translation>Suche Geräte ohne Node-ID (LSS-Fastscan)…</translation>
         </message>
@@ -2115,6 +2119,26 @@ Ja lädt hoch und stellt den Eintrag in die Warteschlange; Nein lädt nichts hoc
         <message>
             <source>Giving serial {0} node ID {1} and storing it…</source>
             <translation>Seriennummer {0} erhält Node-ID {1}, sie wird gespeichert…</translation>
+        </message>
+        <message>
+            <source>Assign node IDs to all</source>
+            <translation>Allen Node-IDs zuweisen</translation>
+        </message>
+        <message>
+            <source>First node ID: the {0} valves get consecutive free node IDs from it, in the order of their serial numbers (stored in each valve):</source>
+            <translation>Erste Node-ID: Die {0} Ventile erhalten ab ihr fortlaufende freie Node-IDs, in der Reihenfolge ihrer Seriennummern (in jedem Ventil gespeichert):</translation>
+        </message>
+        <message>
+            <source>From node ID {0} on there are only {1} free node IDs for {2} valves.</source>
+            <translation>Ab Node-ID {0} gibt es nur {1} freie Node-IDs für {2} Ventile.</translation>
+        </message>
+        <message>
+            <source>Giving node IDs: {0}…</source>
+            <translation>Node-IDs werden vergeben: {0}…</translation>
+        </message>
+        <message>
+            <source>Given and stored: {0}. Searching the bus again…</source>
+            <translation>Vergeben und gespeichert: {0}. Der Bus wird erneut durchsucht…</translation>
         </message>
         <message>
             <source>Serial {0} answers as {1} (stored). Going online with it…</source>

@@ -57,6 +57,25 @@ class FoundRate:
     nodes: tuple[int, ...]
 
 
+def assign_all_on_bus(
+    bus: Mapping[str, object], plan: list[tuple[LssDevice, int]]
+) -> list[Assigned]:
+    """Every device of ``plan`` gets its node ID, one after the other (blocking); on a failure
+    the error names the valves that got theirs already."""
+    from prm9tool.device.canlink.lss import LssFailedError
+
+    done: list[Assigned] = []
+    for device, node_id in plan:
+        try:
+            done.append(assign_on_bus(bus, device, node_id))
+        except LssFailedError as exc:
+            given = ", ".join(f"serial {a.device.serial} → {a.device_id}" for a in done)
+            if given:
+                raise LssFailedError(f"{exc} (given before: {given})", exc.kind) from exc
+            raise
+    return done
+
+
 def find_bitrate_on_bus(bus: Mapping[str, object]) -> FoundRate:
     """Listen-only at each rate a PRM9 supports (blocking; never transmits)."""
     from prm9tool.device.canlink.bitrate import find_bitrate
@@ -142,6 +161,7 @@ class LssCommissioning(QObject):
     scanned = Signal(list)  # [LssDevice]
     bitrate_found = Signal(object)  # FoundRate
     renumbered = Signal(object)  # Renumbered
+    assigned_all = Signal(list)  # [Assigned]
     assigned = Signal(object)  # Assigned
     failed = Signal(str, str)  # the job ("scan", "assign", "bitrate"), why (program language)
     _deliver = Signal(str, object, object)
@@ -152,11 +172,14 @@ class LssCommissioning(QObject):
         assign: Callable[[Mapping[str, object], LssDevice, int], Assigned] = assign_on_bus,
         find: Callable[[Mapping[str, object]], FoundRate] = find_bitrate_on_bus,
         renumber: Callable[[Mapping[str, object], int, int], Renumbered] = renumber_on_bus,
+        assign_all: Callable[
+            [Mapping[str, object], list[tuple[LssDevice, int]]], list[Assigned]
+        ] = assign_all_on_bus,
         parent: QObject | None = None,
     ) -> None:
         super().__init__(parent)
         self._scan, self._assign, self._find = scan, assign, find
-        self._renumber = renumber
+        self._renumber, self._assign_all = renumber, assign_all
         self._thread: threading.Thread | None = None
         self._deliver.connect(self._on_delivered)  # queued: emitted from the job's thread
 
@@ -172,6 +195,10 @@ class LssCommissioning(QObject):
     def assign(self, bus: Mapping[str, object], device: LssDevice, node_id: int) -> None:
         """Give ``device`` ``node_id``: :attr:`assigned` or :attr:`failed` follows."""
         self._start("assign", self.assigned, lambda: self._assign(dict(bus), device, node_id))
+
+    def assign_all(self, bus: Mapping[str, object], plan: list[tuple[LssDevice, int]]) -> None:
+        """Give each device of ``plan`` its node ID: :attr:`assigned_all` or :attr:`failed`."""
+        self._start("assign", self.assigned_all, lambda: self._assign_all(dict(bus), list(plan)))
 
     def renumber(self, bus: Mapping[str, object], node_id: int, new_node_id: int) -> None:
         """Move the valve at ``node_id`` to ``new_node_id`` by LSS: :attr:`renumbered` or

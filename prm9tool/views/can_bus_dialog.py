@@ -163,6 +163,7 @@ class CanBusDialog(QDialog):
         if lss is not None:
             self.lss_panel = LssPanel(lss, self.bus, self.taken, self)
             self.lss_panel.assigned_id.connect(self.on_lss_assigned)
+            self.lss_panel.assigned_many.connect(self._on_search_clicked)
             layout.addWidget(self.lss_panel)
         layout.addWidget(self.buttons)
         self.resize(1060, 620 if lss is not None else 420)

@@ -39,6 +39,7 @@ class LssPanel(QWidget):
     """Devices without a node ID and the assignment of one."""
 
     assigned_id = Signal(str)  # can:NODE of a valve that answers at its new node ID
+    assigned_many = Signal()  # several valves got their node IDs: search the bus again
 
     def __init__(
         self,
@@ -53,6 +54,7 @@ class LssPanel(QWidget):
         self._devices: list[LssDevice] = []
         lss.scanned.connect(self._on_scanned)
         lss.assigned.connect(self._on_assigned)
+        lss.assigned_all.connect(self._on_assigned_all)
         lss.failed.connect(self._on_failed)
         title = QLabel(self.tr("Devices without a node ID (node-ID switch at 1: LSS)"))
         self.table = QTableWidget(0, 5)
@@ -77,11 +79,14 @@ class LssPanel(QWidget):
         self.look.clicked.connect(self.start_scan)
         self.assign = QPushButton(self.tr("Assign node ID…"))
         self.assign.clicked.connect(self._on_assign_clicked)
+        self.assign_all = QPushButton(self.tr("Assign node IDs to all…"))
+        self.assign_all.clicked.connect(self._on_assign_all_clicked)
         self.state = QLabel()
         self.state.setWordWrap(True)
         buttons = QHBoxLayout()
         buttons.addWidget(self.look)
         buttons.addWidget(self.assign)
+        buttons.addWidget(self.assign_all)
         buttons.addStretch(1)
         layout = QVBoxLayout(self)
         layout.setContentsMargins(0, 0, 0, 0)
@@ -164,6 +169,54 @@ class LssPanel(QWidget):
         self._lss.assign(self._bus(), device, node)
         self._update_buttons()
 
+    def _on_assign_all_clicked(self) -> None:
+        """Every device listed gets a node ID: consecutive free ones from the first asked for,
+        in the order of the serial numbers (one action for a machine's valves)."""
+        if not self._devices or self._lss.busy:
+            return
+        taken = self._taken()
+        proposal = next((n for n in range(1, 128) if n not in taken), 1)
+        first, ok = QInputDialog.getInt(
+            self,
+            self.tr("Assign node IDs to all"),
+            self.tr(
+                "First node ID: the {0} valves get consecutive free node IDs from it, in the "
+                "order of their serial numbers (stored in each valve):"
+            ).format(len(self._devices)),
+            proposal,
+            1,
+            127,
+        )
+        if not ok:
+            return
+        free = [n for n in range(first, 128) if n not in taken]
+        devices = sorted(self._devices, key=lambda d: d.serial)
+        if len(free) < len(devices):
+            self.state.setText(
+                self.tr(
+                    "From node ID {0} on there are only {1} free node IDs for {2} valves."
+                ).format(first, len(free), len(devices))
+            )
+            return
+        plan = list(zip(devices, free, strict=False))
+        self.state.setText(
+            self.tr("Giving node IDs: {0}…").format(", ".join(f"{d.serial} → {n}" for d, n in plan))
+        )
+        self._lss.assign_all(self._bus(), plan)
+        self._update_buttons()
+
+    def _on_assigned_all(self, done: list[Assigned]) -> None:
+        if not isValid(self):
+            return
+        given = {a.device for a in done}
+        self._on_scanned([d for d in self._devices if d not in given])
+        self.state.setText(
+            self.tr("Given and stored: {0}. Searching the bus again…").format(
+                ", ".join(f"{a.device.serial} → {a.device_id}" for a in done)
+            )
+        )
+        self.assigned_many.emit()
+
     def _on_assigned(self, assigned: Assigned) -> None:
         if not isValid(self):
             return
@@ -186,6 +239,7 @@ class LssPanel(QWidget):
         idle = not self._lss.busy
         self.look.setEnabled(idle)
         self.assign.setEnabled(idle and self.selected() is not None)
+        self.assign_all.setEnabled(idle and bool(self._devices))
 
 
 class BusLssActions(QObject):
