@@ -8,13 +8,12 @@ from __future__ import annotations
 import time
 from typing import TYPE_CHECKING
 
+from prm9tool.catalogue.commissioning import NmtCommand
 from prm9tool.device.canlink.lss import LssAddress, LssFailedError, LssMasterLink
 from prm9tool.errors import Prm9Error
 
 if TYPE_CHECKING:
     from prm9tool.device.canlink.bus import CanNetwork
-
-NMT_RESET_COMMUNICATION = 0x82
 
 
 def answers_at(shared: CanNetwork, node_id: int, serial: int, timeout_s: float) -> bool:
@@ -79,9 +78,7 @@ def renumber(shared: CanNetwork, node_id: int, new_node_id: int, timeout_s: floa
         ) from None
     nmt = canopen.nmt.NmtMaster(node_id)
     nmt.network = shared.network
-    nmt.send_command(
-        NMT_RESET_COMMUNICATION
-    )  # reset communication: the pending node ID becomes active
+    nmt.send_command(NmtCommand.RESET_COMMUNICATION)  # the pending node ID becomes active
     if not answers_at(shared, new_node_id, address.serial, timeout_s):
         raise LssFailedError(
             f"serial {address.serial}: node {new_node_id} was stored, but the valve does not "
