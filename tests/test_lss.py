@@ -123,6 +123,18 @@ def test_two_devices_with_the_same_identity_are_refused_and_left_alone(rig):
     assert [(v.node_id, v._fw.nv.lss) for v in twins] == [(0, {}), (0, {})]
 
 
+def test_assigning_one_of_two_alike_changes_neither_and_releases_both(rig, capsys):
+    twins = [rig.add(4711), rig.add(4711)]
+    with pytest.raises(LssFailedError) as caught:
+        LssMasterLink(rig.shared).assign(ADDRESS_4711, 21)
+    assert caught.value.kind == "duplicate"
+    wait_for(lambda: [s.lss.state for s in rig.slaves] == [0, 0])  # both waiting again
+    assert not any(f.startswith(("7E5 11", "7E5 17")) for f in rig.frames())
+    assert [(v.node_id, v._fw.nv.lss) for v in twins] == [(0, {}), (0, {})]
+    assert _cli(rig, "--lss-scan") == 2
+    assert "2 devices answer with the same LSS address" in capsys.readouterr().err
+
+
 def test_a_fastscan_that_finds_nothing_says_what_to_check(rig, capsys):
     rig.add(4711, switches=(6, 2))  # node 10 by its switch: it has a node ID
     assert LssMasterLink(rig.shared).scan() == []

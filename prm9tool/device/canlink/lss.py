@@ -235,7 +235,11 @@ class LssMasterLink:
             raise LssFailedError(f"node ID {node_id} is outside 1…127", "refused")
         with self._lock:
             self._lss.send_switch_state_global(WAITING)
-            self._select(address)
+            try:
+                self._select(address)
+            except LssFailedError:
+                self._lss.send_switch_state_global(WAITING)  # two alike: release both
+                raise
             try:
                 before = self._inquire_node_id(address)
                 self._configure(address, CS_CONFIGURE_NODE_ID, node_id)
