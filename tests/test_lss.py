@@ -261,3 +261,43 @@ def test_a_restart_from_prm9tool_finds_an_lss_valve_at_its_lss_node_id(rig, data
         session.restart()
         assert (session.node_id, session.info.device_id) == (21, "can:21")
     assert valve.node_id == 21
+
+
+def _send(rig, *data: int) -> None:
+    rig.recorder.send(
+        can.Message(arbitration_id=0x7E5, data=bytes(data).ljust(8, b"\0"), is_extended_id=False)
+    )
+
+
+def test_the_slave_answers_identify_remote_slave_within_its_range_and_inquiries(rig):
+    rig.add(4711)
+    rig.frames()
+    low, high = (4700).to_bytes(4, "little"), (4720).to_bytes(4, "little")
+    for cs, value in ((0x46, b"\xe6\0\0\0"), (0x47, b"\x09\0\0\0"), (0x48, bytes(4)),
+                      (0x49, b"\xff\xff\xff\xff"), (0x4A, low), (0x4B, high)):  # fmt: skip
+        _send(rig, cs, *value)
+    wait_for(lambda: "7E4 4F 00 00 00 00 00 00 00" in rig.frames())
+    _send(rig, 0x4A, *(4712).to_bytes(4, "little"))  # out of sequence: nothing
+    _send(rig, 0x04, 0x01)  # switch state global: configuration
+    for cs in (0x5A, 0x5B, 0x5C, 0x5D, 0x5E):
+        _send(rig, cs)
+    answers: list[str] = []
+    wait_for(lambda: len(answers) >= 5 or answers.extend(rig.frames()))
+    assert answers == [
+        "7E4 5A E6 00 00 00 00 00 00",
+        "7E4 5B 09 00 00 00 00 00 00",
+        "7E4 5C 00 00 01 00 00 00 00",
+        "7E4 5D 67 12 00 00 00 00 00",
+        "7E4 5E FF 00 00 00 00 00 00",
+    ]
+    _send(rig, 0x11, 0x80)  # node ID 128: out of range
+    wait_for(lambda: "7E4 11 01 00 00 00 00 00 00" in rig.frames())
+    _send(rig, 0x04, 0x00)
+
+
+def test_serve_emulator_node_id_takes_a_number_or_lss(capsys):
+    args = ["--serve-emulator", "PRM9-06.3Z11/30-24E04S02-CA:1", "--can-interface", "virtual"]
+    assert main([*args, "--node-id", "ten"]) == 2
+    assert "'ten' is neither a node ID 1-127 nor 'lss'" in capsys.readouterr().err
+    assert main([*args, "--node-id", "200"]) == 2
+    assert "--node-id 200: CANopen node IDs are 1…127" in capsys.readouterr().err
