@@ -301,3 +301,35 @@ def test_serve_emulator_node_id_takes_a_number_or_lss(capsys):
     assert "'ten' is neither a node ID 1-127 nor 'lss'" in capsys.readouterr().err
     assert main([*args, "--node-id", "200"]) == 2
     assert "--node-id 200: CANopen node IDs are 1…127" in capsys.readouterr().err
+
+
+def test_the_bus_bit_rate_changes_by_lss_on_every_lss_valve_together(rig):
+    valves = [rig.add(4711), rig.add(4712)]
+    link = LssMasterLink(rig.shared)
+    for node, address in enumerate(link.scan(), start=21):
+        link.assign(address, node)
+    rig.frames()
+    assert link.change_bus_bit_timing(3, 100) == 2  # 250 kbit/s
+    frames = rig.frames()
+    assert frames[:2] == ["7E5 04 01 00 00 00 00 00 00", "7E5 13 00 03 00 00 00 00 00"]
+    assert "7E5 15 64 00 00 00 00 00 00" in frames  # activate, switch delay 100 ms
+    wait_for(lambda: [v.bitrate for v in valves] == [250_000] * 2)
+    assert [v._fw.nv.lss["bit_timing"] for v in valves] == [3, 3]
+    with pytest.raises(LssFailedError) as caught:
+        link.change_bus_bit_timing(5, 100)  # 100 kbit/s: refused by both
+    assert str(caught.value) == (
+        "2 of 2 devices refused configure bit timing 100 kbit/s: the device does not support "
+        "this bit rate; no device switched now"
+    )
+    assert not any(f.startswith("7E5 15") for f in rig.frames())  # nothing activated
+    assert [v.bitrate for v in valves] == [250_000] * 2
+
+
+def test_changing_the_bus_bit_rate_without_lss_valves_says_so(rig):
+    rig.add(4700, switches=(6, 2))
+    with pytest.raises(LssFailedError) as caught:
+        LssMasterLink(rig.shared).change_bus_bit_timing(3, 100)
+    assert str(caught.value) == (
+        "no device answers LSS on this bus (configure bit timing 250 kbit/s): none has its "
+        "node-ID switch at 1; nothing was changed"
+    )

@@ -38,6 +38,7 @@ CS_CONFIGURE_NODE_ID, CS_CONFIGURE_BIT_TIMING, CS_STORE = 0x11, 0x13, 0x17
 CS_SELECTIVE_RESPONSE, CS_IDENTIFY_SLAVE, CS_NON_CONFIGURED_SLAVE = 0x44, 0x4F, 0x50
 CS_INQUIRE = (0x5A, 0x5B, 0x5C, 0x5D)  # vendor, product, revision, serial
 WAITING, CONFIGURATION = 0, 1
+ERROR_NONE = 0
 PROBE_WAIT_S = 0.5  # how long "identify non-configured" waits for a first answer (canopen's)
 MIN_STEP_S, MAX_STEP_S = 0.05, 0.8
 SCAN_ATTEMPTS = 4
@@ -259,6 +260,54 @@ class LssMasterLink:
             self._lss.send_switch_state_global(CONFIGURATION)
             self._lss.activate_bit_timing(switch_delay_ms)
             self._lss.send_switch_state_global(WAITING)
+            time.sleep(2 * switch_delay_ms / 1000)  # CiA 305: they are silent until then
+
+    def change_bus_bit_timing(self, index: int, switch_delay_ms: int) -> int:
+        """Every device that takes part in LSS goes to the CiA 305 table-0 bit timing
+        ``index``: configure (all must accept), store (all must confirm), activate after
+        ``switch_delay_ms``. Returns how many devices switch; LssFailedError when none answers
+        or one refuses (then nothing is activated: no device changes its rate now)."""
+        from canopen.lss import LssError
+
+        rate = _kbit(index)
+        with self._lock, self._listen() as heard:
+            self._lss.send_switch_state_global(CONFIGURATION)
+            try:
+                for cs, call in (
+                    (CS_CONFIGURE_BIT_TIMING, lambda: self._lss.configure_bit_timing(index)),
+                    (CS_STORE, self._lss.store_configuration),
+                ):
+                    with suppress(LssError):  # every answer is judged below, not the first
+                        call()
+                    time.sleep(max(4 * (self.latency_s or 0.0), MIN_STEP_S))
+                    answers = [d for _, d in heard.frames if d and d[0] == cs]
+                    if not answers:
+                        raise LssFailedError(
+                            f"no device answers LSS on this bus ({SERVICE[cs]} {rate}): none "
+                            "has its node-ID switch at 1; nothing was changed",
+                            "none",
+                        )
+                    refused = [d for d in answers if d[1] != ERROR_NONE]
+                    if refused:
+                        reason = ERRORS[cs].get(refused[0][1], f"error {refused[0][1]}")
+                        stored = (
+                            ""
+                            if cs == CS_CONFIGURE_BIT_TIMING
+                            else (
+                                f"; the other {len(answers) - len(refused)} stored it and take it "
+                                "at their next power-up"
+                            )
+                        )
+                        raise LssFailedError(
+                            f"{len(refused)} of {len(answers)} devices refused {SERVICE[cs]} "
+                            f"{rate}: {reason}; no device switched now{stored}",
+                            "refused",
+                        )
+                self._lss.activate_bit_timing(switch_delay_ms)
+            finally:
+                self._lss.send_switch_state_global(WAITING)
+            time.sleep(2 * switch_delay_ms / 1000)  # CiA 305: they are silent until then
+        return len(answers)
 
     def _inquire_node_id(self, address: LssAddress) -> int:
         from canopen.lss import LssError
