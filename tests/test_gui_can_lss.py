@@ -48,7 +48,7 @@ def dialog(qtbot, rig, settings):
     qtbot.waitUntil(lambda: rig.valves[0].status().nmt_state == "pre-operational", timeout=10000)
     dialog.search.click()
     panel = dialog.lss_panel
-    qtbot.waitUntil(lambda: panel.table.rowCount() == 1 and panel.look.isEnabled(), timeout=30000)
+    qtbot.waitUntil(lambda: panel.table.rowCount() == 1 and panel.look.isEnabled(), timeout=90000)
     yield dialog
     connection.shutdown()
 
@@ -67,7 +67,7 @@ def test_assign_node_id_proposes_the_first_free_id_and_goes_online(qtbot, dialog
         return 21, True
 
     monkeypatch.setattr(QInputDialog, "getInt", answer)
-    with qtbot.waitSignal(dialog.accepted, timeout=30000):
+    with qtbot.waitSignal(dialog.accepted, timeout=90000):
         panel.assign.click()
     assert asked == [
         (
@@ -108,7 +108,7 @@ def test_an_id_taken_behind_the_dialogs_back_is_refused_by_the_job(qtbot, dialog
     monkeypatch.setattr(QInputDialog, "getInt", lambda *_a: (15, True))
     panel.table.selectRow(0)
     panel.assign.click()
-    qtbot.waitUntil(lambda: panel.assign.isEnabled(), timeout=30000)
+    qtbot.waitUntil(lambda: panel.assign.isEnabled(), timeout=90000)
     assert panel.state.text() == (
         "Node ID assignment (LSS) did not complete. (node ID 15 is taken: serial 4800 answers "
         "there. Choose a free node ID; nothing was changed)"
@@ -181,21 +181,21 @@ def test_change_node_id_by_lss_warns_that_the_link_moves_and_goes_online_there(
         dialog.interface.setCurrentText("virtual")
         dialog.channel.setText(rig.options.channel)
         dialog.search.click()
-        qtbot.waitUntil(lambda: dialog.table.rowCount() == 2, timeout=30000)
-        qtbot.waitUntil(lambda: dialog.lss_panel.look.isEnabled(), timeout=30000)
+        qtbot.waitUntil(lambda: dialog.table.rowCount() == 2, timeout=90000)
+        qtbot.waitUntil(lambda: dialog.lss_panel.look.isEnabled(), timeout=90000)
         assert [dialog.table.item(r, 0).text() for r in range(2)] == ["can:10", "can:21"]
         answers = record_prompts(monkeypatch)
         answers.answers = [prompts.Button.Yes, prompts.Button.Yes]
         monkeypatch.setattr(QInputDialog, "getInt", lambda *_a: (22, True))
         dialog.table.selectRow(0)  # node 10: its switch decides, LSS cannot move it
         dialog.renumber.click()
-        qtbot.waitUntil(lambda: dialog.renumber.isEnabled(), timeout=30000)
+        qtbot.waitUntil(lambda: dialog.renumber.isEnabled(), timeout=90000)
         assert "node 10 (serial 4700) does not answer LSS: its node-ID switch is not at 1" in (
             dialog.state.text()
         )
         assert fixed.node_id == 10
         dialog.table.selectRow(1)
-        with qtbot.waitSignal(dialog.accepted, timeout=30000):
+        with qtbot.waitSignal(dialog.accepted, timeout=90000):
             dialog.renumber.click()
         assert (
             "prm9tool's own link moves with it: a connection to can:21 ends" in (answers.asked[-1])
@@ -213,7 +213,7 @@ def test_assign_node_ids_to_all_gives_consecutive_free_ids_in_one_action(
     panel = dialog.lss_panel
     second = rig.add(4712)
     panel.start_scan()
-    qtbot.waitUntil(lambda: panel.table.rowCount() == 2 and panel.look.isEnabled(), timeout=30000)
+    qtbot.waitUntil(lambda: panel.table.rowCount() == 2 and panel.look.isEnabled(), timeout=90000)
     asked = []
 
     def first_id(_parent, _title, label, value, low, high):
@@ -229,9 +229,52 @@ def test_assign_node_ids_to_all_gives_consecutive_free_ids_in_one_action(
             1,
         )
     ]
-    qtbot.waitUntil(lambda: dialog.table.rowCount() == 3, timeout=60000)
+    qtbot.waitUntil(lambda: dialog.table.rowCount() == 3, timeout=90000)
     assert [dialog.table.item(r, 0).text() for r in range(3)] == ["can:9", "can:10", "can:11"]
     assert [dialog.table.item(r, 2).text() for r in range(3)] == ["4711", "4700", "4712"]
     assert (rig.valves[1]._fw.nv.lss["node_id"], second._fw.nv.lss["node_id"]) == (9, 11)
-    qtbot.waitUntil(lambda: panel.look.isEnabled(), timeout=30000)
+    qtbot.waitUntil(lambda: panel.look.isEnabled(), timeout=90000)
     assert panel.table.rowCount() == 0
+
+
+def test_change_bit_rate_by_lss_moves_every_lss_valve_and_the_tools_link(
+    qtbot, settings, tmp_path, monkeypatch
+):
+    from gui_support import record_prompts
+
+    from prm9tool.device.canlink.lss import LssMasterLink
+    from prm9tool.views import prompts
+
+    monkeypatch.setenv("PRM9TOOL_DATA_DIR", str(tmp_path / "data"))
+    rig = make_lss_rig("bus-rate")
+    try:
+        valves = [rig.add(4711), rig.add(4712)]
+        link = LssMasterLink(rig.shared)
+        for node, address in enumerate(link.scan(), start=21):
+            link.assign(address, node)
+        connection = ValveConnection(opener=lambda e: factory.open_session(e, can_link=rig.options))
+        dialog = CanBusDialog(
+            lambda bus, deliver: connection.list_devices_async((), deliver, bus),
+            settings,
+            lss=LssCommissioning(),
+        )
+        qtbot.addWidget(dialog)
+        dialog.interface.setCurrentText("virtual")
+        dialog.channel.setText(rig.options.channel)
+        answers = record_prompts(monkeypatch)
+        answers.answers = [prompts.Button.Yes]
+        monkeypatch.setattr(QInputDialog, "getItem", lambda *_a: ("250 kbit/s", True))
+        dialog.lss_actions.change_rate.click()
+        assert answers.asked[-1].startswith(
+            "Change bit rate by LSS: Every valve at node-ID switch 1 (LSS) switches from 500 "
+            "kbit/s to 250 kbit/s together and stores it."
+        )
+        assert "prm9tool's own link moves to 250 kbit/s" in answers.asked[-1]
+        qtbot.waitUntil(lambda: dialog.table.rowCount() == 2, timeout=90000)
+        assert dialog.bitrate.currentData() == 250_000
+        assert [v.bitrate for v in valves] == [250_000, 250_000]
+        assert [v._fw.nv.lss["bit_timing"] for v in valves] == [3, 3]
+        assert [dialog.table.item(r, 0).text() for r in range(2)] == ["can:21", "can:22"]
+        connection.shutdown()
+    finally:
+        rig.close()

@@ -222,6 +222,10 @@ Poslední akce možná nebyla dokončena. Uložte svou práci pod novým názvem
             <translation>Změnit Node ID pomocí LSS…</translation>
         </message>
         <message>
+            <source>Change bit rate by LSS…</source>
+            <translation>Změnit přenosovou rychlost pomocí LSS…</translation>
+        </message>
+        <message>
             <source>Listening at each bit rate (listen-only: nothing is sent)…</source>
             <translation>Naslouchá se při každé přenosové rychlosti (pouze poslech: nic se neodesílá)…</translation>
         </message>
@@ -252,6 +256,30 @@ Poslední akce možná nebyla dokončena. Uložte svou práci pod novým názvem
         <message>
             <source>Changing the node ID of serial {0} to {1}…</source>
             <translation>Node ID sériového čísla {0} se mění na {1}…</translation>
+        </message>
+        <message>
+            <source>Change bit rate by LSS</source>
+            <translation>Změnit přenosovou rychlost pomocí LSS</translation>
+        </message>
+        <message>
+            <source>New bit rate of the bus:</source>
+            <translation>Nová přenosová rychlost sběrnice:</translation>
+        </message>
+        <message>
+            <source>Every valve at node-ID switch 1 (LSS) switches from {1} kbit/s to {0} kbit/s together and stores it. Nodes whose switches set the bit rate (node-ID switch 0 or 2…F) and the PLC keep {1} kbit/s: set them too before the machine runs again, or the bus stops working. prm9tool's own link moves to {0} kbit/s. Change the bit rate?</source>
+            <translation>Všechny ventily s přepínačem Node ID v poloze 1 (LSS) přejdou společně z {1} kbit/s na {0} kbit/s a uloží to. Uzly, jejichž přepínače určují přenosovou rychlost (přepínač Node ID 0 nebo 2…F), a PLC zůstanou na {1} kbit/s: přestavte je také, než stroj znovu poběží, jinak sběrnice přestane fungovat. Vlastní spojení prm9tool přejde na {0} kbit/s. Změnit přenosovou rychlost?</translation>
+        </message>
+        <message>
+            <source>Changing the bit rate to {0} kbit/s by LSS…</source>
+            <translation>Přenosová rychlost se mění pomocí LSS na {0} kbit/s…</translation>
+        </message>
+        <message>
+            <source>{0} valve(s) switched to {1} kbit/s. prm9tool cannot change the bit rate of a socketcan interface: sudo ip link set {2} down &amp;&amp; sudo ip link set {2} up type can bitrate {3}, then search the bus.</source>
+            <translation>Ventily přepnuté na {1} kbit/s: {0}. prm9tool nemůže změnit přenosovou rychlost rozhraní socketcan: sudo ip link set {2} down &amp;&amp; sudo ip link set {2} up type can bitrate {3}, pak prohledejte sběrnici.</translation>
+        </message>
+        <message>
+            <source>{0} valve(s) switched to {1} kbit/s; prm9tool follows.</source>
+            <translation>Ventily přepnuté na {1} kbit/s: {0}; prm9tool je následuje.</translation>
         </message>
     </context>
     <context>

@@ -222,6 +222,10 @@ Die letzte Aktion wurde womöglich nicht vollständig ausgeführt. Speichern Sie
             <translation>Node-ID per LSS ändern…</translation>
         </message>
         <message>
+            <source>Change bit rate by LSS…</source>
+            <translation>Bitrate per LSS ändern…</translation>
+        </message>
+        <message>
             <source>Listening at each bit rate (listen-only: nothing is sent)…</source>
             <translation>Höre bei jeder Bitrate mit (nur hören: es wird nichts gesendet)…</translation>
         </message>
@@ -252,6 +256,30 @@ Die letzte Aktion wurde womöglich nicht vollständig ausgeführt. Speichern Sie
         <message>
             <source>Changing the node ID of serial {0} to {1}…</source>
             <translation>Node-ID von Seriennummer {0} wird auf {1} geändert…</translation>
+        </message>
+        <message>
+            <source>Change bit rate by LSS</source>
+            <translation>Bitrate per LSS ändern</translation>
+        </message>
+        <message>
+            <source>New bit rate of the bus:</source>
+            <translation>Neue Bitrate des Busses:</translation>
+        </message>
+        <message>
+            <source>Every valve at node-ID switch 1 (LSS) switches from {1} kbit/s to {0} kbit/s together and stores it. Nodes whose switches set the bit rate (node-ID switch 0 or 2…F) and the PLC keep {1} kbit/s: set them too before the machine runs again, or the bus stops working. prm9tool's own link moves to {0} kbit/s. Change the bit rate?</source>
+            <translation>Alle Ventile mit Node-ID-Schalter auf 1 (LSS) wechseln gemeinsam von {1} kbit/s auf {0} kbit/s und speichern es. Knoten, deren Schalter die Bitrate bestimmen (Node-ID-Schalter 0 oder 2…F), und die SPS bleiben bei {1} kbit/s: Stellen Sie auch sie um, bevor die Maschine wieder läuft, sonst funktioniert der Bus nicht mehr. Die eigene Verbindung von prm9tool wechselt auf {0} kbit/s. Bitrate ändern?</translation>
+        </message>
+        <message>
+            <source>Changing the bit rate to {0} kbit/s by LSS…</source>
+            <translation>Bitrate wird per LSS auf {0} kbit/s geändert…</translation>
+        </message>
+        <message>
+            <source>{0} valve(s) switched to {1} kbit/s. prm9tool cannot change the bit rate of a socketcan interface: sudo ip link set {2} down &amp;&amp; sudo ip link set {2} up type can bitrate {3}, then search the bus.</source>
+            <translation>{0} Ventil(e) auf {1} kbit/s umgestellt. prm9tool kann die Bitrate einer socketcan-Schnittstelle nicht ändern: sudo ip link set {2} down &amp;&amp; sudo ip link set {2} up type can bitrate {3}, dann den Bus durchsuchen.</translation>
+        </message>
+        <message>
+            <source>{0} valve(s) switched to {1} kbit/s; prm9tool follows.</source>
+            <translation>{0} Ventil(e) auf {1} kbit/s umgestellt; prm9tool folgt.</translation>
         </message>
     </context>
     <context>

@@ -22,6 +22,7 @@ from prm9tool.errors import Prm9Error
 from prm9tool.translate import error_text
 
 log = logging.getLogger(__name__)
+SWITCH_DELAY_MS = 200  # decision: CiA 305 activate bit timing's switch delay
 ANSWER_TIMEOUT_S = 10.0  # release -> boot-up at the new node ID (as after NMT reset node)
 
 
@@ -112,6 +113,32 @@ def renumber_on_bus(bus: Mapping[str, object], node_id: int, new_node_id: int) -
     return Renumbered(serial, node_id, new_node_id)
 
 
+@dataclass(frozen=True)
+class RateChanged:
+    """The LSS devices of a bus switched to ``bitrate`` (stored)."""
+
+    bitrate: int
+    devices: int
+
+
+def change_rate_on_bus(bus: Mapping[str, object], bitrate: int) -> RateChanged:
+    """Every LSS device of ``bus`` goes to ``bitrate`` by LSS (blocking); the tool's bus at
+    the old rate is released, so the next search opens the adapter at the new one."""
+    from prm9tool.catalogue.canopen_switches import lss_bit_timing
+    from prm9tool.device.canlink.bus import acquire, release
+    from prm9tool.device.canlink.lss import LssFailedError, LssMasterLink
+
+    index = lss_bit_timing(bitrate // 1000)
+    if index is None:
+        raise LssFailedError(f"a PRM9 does not run at {bitrate} bit/s", "refused")
+    shared = acquire(_options(bus))
+    try:
+        devices = LssMasterLink(shared).change_bus_bit_timing(index, SWITCH_DELAY_MS)
+    finally:
+        release(shared)
+    return RateChanged(bitrate, devices)
+
+
 def _options(bus: Mapping[str, object]) -> Any:
     from prm9tool.device.canlink.bus import CanOptions
 
@@ -162,6 +189,7 @@ class LssCommissioning(QObject):
     bitrate_found = Signal(object)  # FoundRate
     renumbered = Signal(object)  # Renumbered
     assigned_all = Signal(list)  # [Assigned]
+    rate_changed = Signal(object)  # RateChanged
     assigned = Signal(object)  # Assigned
     failed = Signal(str, str)  # the job ("scan", "assign", "bitrate"), why (program language)
     _deliver = Signal(str, object, object)
@@ -175,11 +203,13 @@ class LssCommissioning(QObject):
         assign_all: Callable[
             [Mapping[str, object], list[tuple[LssDevice, int]]], list[Assigned]
         ] = assign_all_on_bus,
+        change_rate: Callable[[Mapping[str, object], int], RateChanged] = change_rate_on_bus,
         parent: QObject | None = None,
     ) -> None:
         super().__init__(parent)
         self._scan, self._assign, self._find = scan, assign, find
         self._renumber, self._assign_all = renumber, assign_all
+        self._change_rate = change_rate
         self._thread: threading.Thread | None = None
         self._deliver.connect(self._on_delivered)  # queued: emitted from the job's thread
 
@@ -206,6 +236,10 @@ class LssCommissioning(QObject):
         self._start(
             "renumber", self.renumbered, lambda: self._renumber(dict(bus), node_id, new_node_id)
         )
+
+    def change_rate(self, bus: Mapping[str, object], bitrate: int) -> None:
+        """Every LSS device of ``bus`` to ``bitrate``: :attr:`rate_changed` or :attr:`failed`."""
+        self._start("rate", self.rate_changed, lambda: self._change_rate(dict(bus), bitrate))
 
     def find_bitrate(self, bus: Mapping[str, object]) -> None:
         """Listen for the bus's bit rate: :attr:`bitrate_found` or :attr:`failed` follows."""

@@ -43,7 +43,8 @@ from prm9tool.online.connection_protocol import ListedValves, ValveListing
 from prm9tool.online.lss_commissioning import LssCommissioning
 from prm9tool.paths import user_data_dir
 from prm9tool.translate import error_text
-from prm9tool.views.can_lss_panel import BusLssActions, LssPanel
+from prm9tool.views.can_bus_lss import BusLssActions
+from prm9tool.views.can_lss_panel import LssPanel
 
 INTERFACE_KEY, CHANNEL_KEY, BITRATE_KEY = "can/interface", "can/channel", "can/bitrate"
 INTERFACES = (
@@ -158,7 +159,11 @@ class CanBusDialog(QDialog):
         layout.addWidget(self.search)
         layout.addWidget(self.state)
         layout.addWidget(self.table)
-        layout.addWidget(self.renumber, 0, Qt.AlignmentFlag.AlignLeft)
+        lss_row = QHBoxLayout()
+        lss_row.addWidget(self.renumber)
+        lss_row.addWidget(self.lss_actions.change_rate)
+        lss_row.addStretch(1)
+        layout.addLayout(lss_row)
         self.lss_panel: LssPanel | None = None
         if lss is not None:
             self.lss_panel = LssPanel(lss, self.bus, self.taken, self)
@@ -299,6 +304,10 @@ class CanBusDialog(QDialog):
     def entries(self) -> list[ValveListing]:
         """The nodes the last search listed, by row."""
         return self._entries
+
+    def search_bus(self) -> None:
+        """Search the bus as entered (as the button does)."""
+        self._on_search_clicked()
 
     def stop_monitor(self) -> None:
         """Let the live view go of the adapter (finding the bit rate opens it otherwise)."""
