@@ -84,6 +84,16 @@
         </message>
     </context>
     <context>
+        <name>LssPanel</name>
+        <message numerus="yes">
+            <source>%n device(s) without a node ID.</source>
+            <translation>
+                <numerusform>%n device without a node ID.</numerusform>
+                <numerusform>%n devices without a node ID.</numerusform>
+            </translation>
+        </message>
+    </context>
+    <context>
         <name>MainStatusBar</name>
         <message numerus="yes">
             <source>%n sample(s) lost</source>

@@ -53,6 +53,8 @@ def _headless_command(args: argparse.Namespace) -> tuple[str, str] | None:
         return "prm9tool.cli.filetools", "export_eds_command"
     if args.serve_emulator:
         return "prm9tool.cli.serve", "run"
+    if args.lss_scan or args.lss_assign or args.find_bitrate:
+        return "prm9tool.cli.lss", "run"
     if args.characterize:
         return "prm9tool.cli.main", "_characterize"
     if args.diff:

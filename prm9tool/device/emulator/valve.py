@@ -322,6 +322,38 @@ class EmulatedValve:
         """True on a -CA valve whose interface switch enables CANopen."""
         return self._fw.can_enabled
 
+    @property
+    def lss_mode(self) -> bool:
+        """Node-ID switch at 1 at power-up: node ID by LSS, automatic bit rate (table 7-17)."""
+        return self._fw.lss_mode
+
+    def lss_assign(self, node_id: int) -> None:
+        """Take ``node_id`` given by an LSS master now: node-relative communication objects
+        follow it as at NMT reset communication."""
+        with self.lock:
+            self._fw.node_id = node_id
+            self._fw.reset_communication()
+
+    def lss_bit_timing(self, index: int) -> None:
+        """CiA 305 activate bit timing: run at the rate of table-0 index ``index`` now."""
+        from prm9tool.catalogue.canopen_switches import LSS_BIT_TIMINGS_KBIT
+
+        with self.lock:
+            self._fw.bitrate = LSS_BIT_TIMINGS_KBIT[index] * 1000
+
+    def lss_store(self, node_id: int, bit_timing: int | None) -> None:
+        """CiA 305 store configuration: the LSS record of the NV image (OSError if it fails)."""
+        from prm9tool.catalogue.canopen_switches import LSS_BIT_TIMINGS_KBIT
+
+        with self.lock:
+            record = dict(self._fw.nv.lss)
+            record["node_id"] = node_id
+            if bit_timing is not None:
+                record["bit_timing"] = bit_timing
+            elif "bit_timing" not in record and self._fw.bitrate // 1000 in LSS_BIT_TIMINGS_KBIT:
+                record["bit_timing"] = LSS_BIT_TIMINGS_KBIT.index(self._fw.bitrate // 1000)
+            self._fw.nv.replace_lss(record)
+
     # --- hooks for the CANopen slave --------------------------------------------------
     def add_cycle_listener(self, fn: Callable[[float], None]) -> None:
         """``fn(sim_time)`` every 1 ms of simulated time (loop thread, lock held)."""
