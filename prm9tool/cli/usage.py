@@ -39,6 +39,8 @@ def usage_problem(args: argparse.Namespace) -> str | None:
         return _characterize_problem(args)
     if args.profile:
         return "--profile belongs to --characterize"
+    if getattr(args, "od", None) and not (args.emulator or args.serve_emulator):
+        return "--od chooses the object dictionary of --emulator or --serve-emulator valves"
     if isinstance(args.json, str):
         return "--json OUT.json belongs to --characterize (--diff and --history print JSON)"
     problem = _compare_history_problem(args)
