@@ -28,7 +28,7 @@ bode_amplitude_pct = 10
 bode_f_min_hz = 2
 bode_f_max_hz = 20
 bode_duration_s = 4.0
-static_period_s = 2
+static_period_s = 4
 """
 CHANGES = {  # the upload changes these (display units): a ramp, a monitoring delay
     "RAMPSETPOSUP = 0": "RAMPSETPOSUP = 20",
@@ -190,9 +190,15 @@ def main() -> None:
         )
         result["gui"] = {"code": gui.returncode, "out": gui.stdout, "err": gui.stderr[-3000:]}
         result["history"] = tool("--history", "4711", "--json")
+    except Exception as exc:  # the outcome says what broke; the test shows it
+        result["driver_error"] = repr(exc)
     finally:
         serve.send_signal(signal.SIGTERM)
-        serve.wait(timeout=20)
+        try:
+            serve.wait(timeout=60)
+        except subprocess.TimeoutExpired:
+            serve.kill()
+            serve.wait()
         rest = serve.stdout.read() if serve.stdout is not None else ""  # what readline buffered too
         result["serve"] = {"code": serve.returncode, "out": "".join(lines) + rest}
         (out / "result.json").write_text(json.dumps(result, indent=1), encoding="utf-8")

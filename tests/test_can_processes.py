@@ -53,6 +53,7 @@ def outcome(request, tmp_path_factory):
     command = f"{NAMESPACE} && exec {sys.executable} {DRIVER} {out} {GROUP} {request.param}"
     subprocess.run(["unshare", "-n", "sh", "-c", command], env=env, timeout=540, check=False)
     result = json.loads((out / "result.json").read_text(encoding="utf-8"))
+    assert "driver_error" not in result, result["driver_error"]
     result["od"] = request.param
     return result
 
@@ -102,8 +103,6 @@ def test_diff_against_the_valve_after_the_upload(outcome):
 
 @pytest.mark.timeout(600)
 def test_a_plc_commissions_the_valve_and_tpdo1_shows_the_cia_408_status_words(outcome):
-    if outcome["commissioning"] != ["0008", "0009", "000B", "000F"]:
-        pytest.xfail("status word per CiA 408: issue 20 item 1")
     assert outcome["commissioning"] == ["0008", "0009", "000B", "000F"]
 
 

@@ -60,7 +60,8 @@ class ValveStatus:
     ``error_code`` is the CANopen EMCY code of the most severe active error (0 = none),
     ``error_text`` its English description ("" when there is no error and no warning).
     ``nmt_state`` is ``initialising``, ``pre-operational``, ``operational``, ``stopped`` or
-    ``off`` (no CANopen interface, or the interface switch at 0/1).
+    ``off`` (no CANopen interface, or the interface switch at 0/1). ``status_word``: the
+    CiA 408 status word 0x6041 the state was decoded from, where it was read over CANopen.
     """
 
     device_state: DeviceState
@@ -74,3 +75,4 @@ class ValveStatus:
     supply_v: float
     nmt_state: str
     booting: bool
+    status_word: int | None = None  # 0x6041 as read over CANopen (None: not read that way)
