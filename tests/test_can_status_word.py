@@ -13,7 +13,7 @@ from prm9tool.characterize.canrig import rig_for_session
 from prm9tool.characterize.rig import ValveFaultError
 from prm9tool.device.canlink.rpdo_setpoint import RpdoSetpoint, RpdoSetpointError
 from prm9tool.device.canlink.session import CanopenSession
-from prm9tool.device.emulator.states import DeviceState
+from prm9tool.device.records import DeviceState
 
 STATUS = (0x6041, 0)
 
