@@ -27,8 +27,8 @@ step_duration_s = 0.1
 bode_amplitude_pct = 10
 bode_f_min_hz = 2
 bode_f_max_hz = 20
-bode_duration_s = 4.0
-static_period_s = 4
+bode_duration_s = 6.0
+static_period_s = 8
 """
 CHANGES = {  # the upload changes these (display units): a ramp, a monitoring delay
     "RAMPSETPOSUP = 0": "RAMPSETPOSUP = 20",

@@ -58,11 +58,6 @@ def outcome(request, tmp_path_factory):
     return result
 
 
-def _until_item_2(outcome) -> None:
-    if outcome["od"] == "manual" and outcome["batch"]["code"] != 0:
-        pytest.xfail("storing on a valve without 0x1010: issue 20 item 2")
-
-
 @pytest.mark.timeout(600)
 def test_list_devices_in_another_process_finds_the_served_valve(outcome):
     listed = outcome["list"]
@@ -75,7 +70,6 @@ def test_list_devices_in_another_process_finds_the_served_valve(outcome):
 
 @pytest.mark.timeout(600)
 def test_batch_in_another_process_uploads_verifies_and_stores(outcome):
-    _until_item_2(outcome)
     assert outcome["batch"]["code"] == 0, outcome["batch"]["err"]
     record = outcome["report"]["valves"][0]
     assert (record["device_id"], record["result"], record["verification"]) == (
@@ -83,11 +77,12 @@ def test_batch_in_another_process_uploads_verifies_and_stores(outcome):
         "ok",
         "passed",
     )
+    kept = "kept by the valve as written (it has no store command)"
+    assert record["store"] == {"full": "stored with 0x1010", "manual": kept}[outcome["od"]]
 
 
 @pytest.mark.timeout(600)
 def test_download_in_another_process_reads_what_the_upload_left(outcome):
-    _until_item_2(outcome)
     assert outcome["download"]["code"] == 0, outcome["download"]["err"]
     text = outcome["downloaded"]
     assert "RAMPSETPOSUP = 20" in text and "MONDELAY = 1500" in text
@@ -108,10 +103,12 @@ def test_a_plc_commissions_the_valve_and_tpdo1_shows_the_cia_408_status_words(ou
 
 @pytest.mark.timeout(600)
 def test_characterize_in_another_process(outcome):
-    _until_item_2(outcome)
     done = outcome["characterize"]
     if done["code"] == 6:  # a PC too loaded to keep the SDO pace: said, not hidden
         assert "the CANopen link did not keep one sample per" in done["err"], done["err"]
+        return
+    if "the measurement cannot be analysed" in done["err"]:  # the link's rate fell below 80 Hz
+        assert "choose a" in done["err"] and "at the link's" in done["err"], done["err"]
         return
     assert done["code"] in (0, 8), done["err"]
     assert "device state" not in done["err"], done["err"]  # the valve is seen enabled
@@ -123,7 +120,6 @@ def test_characterize_in_another_process(outcome):
 
 @pytest.mark.timeout(600)
 def test_history_lists_the_upload_and_download(outcome):
-    _until_item_2(outcome)
     history = outcome["history"]
     assert history["code"] == 0, history["err"]
     operations = [r["operation"] for r in json.loads(history["out"])["records"]]
@@ -132,7 +128,6 @@ def test_history_lists_the_upload_and_download(outcome):
 
 @pytest.mark.timeout(600)
 def test_the_gui_in_another_process_goes_online_over_can(outcome):
-    _until_item_2(outcome)
     gui = outcome["gui"]
     assert gui["code"] == 0, gui["out"] + gui["err"]
     seen = json.loads(gui["out"].strip().splitlines()[-1])

@@ -56,6 +56,7 @@ class ValveRecord:
     error: str | None = None
     skipped: list[str] = field(default_factory=list)  # not available over CANopen: not uploaded
     history: str | None = None  # "recorded", "queued" or why it was not recorded
+    store: str | None = None  # how the valve keeps the set ("stored with 0x1010", …; CANopen)
     current: dict[str, Any] | None = field(default=None, repr=False)  # --dry-run: as read
 
     @property

@@ -130,6 +130,12 @@ def build_parser() -> argparse.ArgumentParser:
     )
     batch.add_argument("--report", metavar="REPORT.json", help="with --batch: JSON report file")
     batch.add_argument(
+        "--verify-by-restart",
+        action="store_true",
+        help="with --batch over CANopen: after the store, restart the valve (NMT reset node: "
+        "the spool drops — hydraulics off!) and read every value back",
+    )
+    batch.add_argument(
         "--force-type",
         action="store_true",
         help="with --batch: upload even if the type key does not fit the valve",

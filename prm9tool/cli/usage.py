@@ -16,6 +16,7 @@ BATCH_ONLY = {
     "--dry-run": "dry_run",
     "--force-type": "force_type",
     "--all": "all",
+    "--verify-by-restart": "verify_by_restart",
 }
 FILE_TOOLS = {"--new": "new", "--check": "check", "--export-eds": "export_eds"}
 CAN_OPTIONS = {"--can-interface": "can_interface", "--can-channel": "can_channel",

@@ -155,6 +155,9 @@ class UploadResult:
     reload_error: str | None = None
     failure: str | None = None
     skipped: tuple[str, ...] = ()
+    # how the valve keeps the set (CANopen: "stored with 0x1010", "kept by the valve as written
+    # (it has no store command)", "verified after a restart"; None: the link's store command)
+    store: str | None = None
 
 
 class OperationCancelledError(Prm9Error):
