@@ -94,22 +94,25 @@ def tool(*args: str, timeout: float = 90) -> dict[str, object]:
     return {"code": done.returncode, "out": done.stdout, "err": done.stderr}
 
 
-def commission(group: str, node: int = 10) -> list[str]:
+def commission(
+    group: str, node: int = 10, words: tuple[int, ...] = (0x08, 0x09, 0x0B, 0x0F)
+) -> list[str]:
     """The PLC's part of §7.6: NMT start, then control words 08h → 09h → 0Bh → 0Fh by SDO,
-    each followed by the status word the next TPDO1 carries (``"0008"`` …)."""
+    each followed by the status word the next TPDO1 carries (``"0008"`` …). With 00h first
+    the rising edge of R resets a fault that has gone (table 7-20)."""
     import can
 
     bus = can.Bus(interface="udp_multicast", channel=group)
-    words = []
+    seen = []
     try:
         bus.send(can.Message(arbitration_id=0, data=bytes([1, node]), is_extended_id=False))
-        for word in (0x08, 0x09, 0x0B, 0x0F):
+        for word in words:
             request = bytes([0x2B, 0x40, 0x60, 0, word, 0, 0, 0])
             bus.send(can.Message(arbitration_id=0x600 + node, data=request, is_extended_id=False))
-            words.append(_next_status(bus, node, word))
+            seen.append(_next_status(bus, node, word))
     finally:
         bus.shutdown()
-    return words
+    return seen
 
 
 def _next_status(bus: object, node: int, word: int) -> str:
@@ -180,6 +183,8 @@ def main() -> None:
             if characterized.exists()
             else None
         )
+        # the PLC enables the valve again (the test's steps may have ended in a fault reaction)
+        result["recommissioning"] = commission(group, words=(0x00, 0x08, 0x09, 0x0B, 0x0F))
         gui = subprocess.run(
             [sys.executable, "-c", GUI, *device],
             capture_output=True,

@@ -107,8 +107,11 @@ def test_characterize_in_another_process(outcome):
     if done["code"] == 6:  # a PC too loaded to keep the SDO pace: said, not hidden
         assert "the CANopen link did not keep one sample per" in done["err"], done["err"]
         return
-    if "the measurement cannot be analysed" in done["err"]:  # the link's rate fell below 80 Hz
-        assert "choose a" in done["err"] and "at the link's" in done["err"], done["err"]
+    if "the measurement cannot be analysed" in done["err"]:
+        # SDO-polled samples on a loaded PC: too few for the static test ("choose a … period"),
+        # or the E04 flow test's opening/velocity records of unequal length — said, exit 8;
+        # sampling at the bus's pace (issue 20 items 5/6, another branch) removes both
+        assert done["code"] == 8, done["err"]
         return
     assert done["code"] in (0, 8), done["err"]
     assert "device state" not in done["err"], done["err"]  # the valve is seen enabled
@@ -136,7 +139,8 @@ def test_the_gui_in_another_process_goes_online_over_can(outcome):
         "type_key": E04,
         "serial": 4711,
     }, seen
-    assert seen["failed"] == []
+    assert outcome["recommissioning"][-1] == "000F", outcome["serve"]["out"]
+    assert seen["failed"] == [], outcome["serve"]["out"]
     assert ["operational", "DEVICE_MODE_ACTIVE"] in seen["states"]  # the status poll
     assert "position_actual" in seen["signals"]  # the live diagram's values
     assert seen["samples"] > 100  # the oscilloscope

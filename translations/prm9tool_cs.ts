@@ -4128,6 +4128,18 @@ Zajistěte, aby to hydraulika bezpečně snesla. Tlačítko Stop test kdykoli uk
             </translation>
         </message>
         <message>
+            <source>stored with 0x1010</source>
+            <translation>uloženo pomocí 0x1010</translation>
+        </message>
+        <message>
+            <source>kept by the valve as written (it has no store command)</source>
+            <translation>ventil si hodnoty ponechal tak, jak byly zapsány (nemá příkaz k uložení)</translation>
+        </message>
+        <message>
+            <source>verified after a restart</source>
+            <translation>ověřeno po restartu</translation>
+        </message>
+        <message>
             <source>Upload failed</source>
             <translation>Načtení do ventilu selhalo</translation>
         </message>

@@ -4114,6 +4114,18 @@ Stellen Sie sicher, dass die Hydraulik dafür sicher ist. Stopp beendet ihn jede
             </translation>
         </message>
         <message>
+            <source>stored with 0x1010</source>
+            <translation>mit 0x1010 gespeichert</translation>
+        </message>
+        <message>
+            <source>kept by the valve as written (it has no store command)</source>
+            <translation>vom Ventil wie geschrieben behalten (es hat keinen Speicherbefehl)</translation>
+        </message>
+        <message>
+            <source>verified after a restart</source>
+            <translation>nach einem Neustart geprüft</translation>
+        </message>
+        <message>
             <source>Upload failed</source>
             <translation>Hochladen fehlgeschlagen</translation>
         </message>

@@ -12,6 +12,14 @@ these, and the CANopen master is tested against it.
 
 from __future__ import annotations
 
+# how a valve keeps an upload (the upload result, the report, the GUI and the history say it):
+# 0x1010 present = store on command (CiA 301); absent, as in table 7-13 = it keeps what is
+# written (§7.2.2, figure 7-3 point B); the restart verification reads everything back after
+# an NMT reset node
+STORED_WITH_1010 = "stored with 0x1010"
+KEPT_AS_WRITTEN = "kept by the valve as written (it has no store command)"
+VERIFIED_RESTART = "verified after a restart"
+
 
 def _record(index: int, highest: int, first: int = 0) -> dict[int, range]:
     return {index: range(first, highest + 1)}

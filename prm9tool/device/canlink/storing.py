@@ -24,6 +24,7 @@ from collections.abc import Mapping, Sequence
 from typing import TYPE_CHECKING
 
 from prm9tool.catalogue import CATALOGUE, Parameter
+from prm9tool.catalogue.manual_od import KEPT_AS_WRITTEN, STORED_WITH_1010, VERIFIED_RESTART
 from prm9tool.catalogue.variant import Variant
 from prm9tool.device.canlink.sdo import MISSING, SdoChannel
 from prm9tool.errors import Prm9Error, SdoAbortError
@@ -32,9 +33,7 @@ if TYPE_CHECKING:
     from prm9tool.device.session import ValveSession
 
 Value = int | str
-STORED_WITH_1010 = "stored with 0x1010"
-KEPT_AS_WRITTEN = "kept by the valve as written (it has no store command)"
-VERIFIED_RESTART = "verified after a restart"
+__all__ = ["KEPT_AS_WRITTEN", "STORED_WITH_1010", "VERIFIED_RESTART", "safe_order", "store_kind"]
 STORE_ON_COMMAND, STORE_AUTONOMOUSLY = 0x01, 0x02  # CiA 301, 0x1010 sub-index 1
 
 
