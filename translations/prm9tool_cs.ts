@@ -318,6 +318,10 @@ Poslední akce možná nebyla dokončena. Uložte svou práci pod novým názvem
             <translation>Sběrnici nelze sledovat: {0}</translation>
         </message>
         <message>
+            <source>The valve (serial number {0}) does not tell its type key, and its objects do not tell E02 from E04 (-CA). Type key on the valve's label:</source>
+            <translation>Ventil (výrobní číslo {0}) neuvádí svůj typový klíč a jeho objekty nerozliší E02 od E04 (-CA). Typový klíč ze štítku ventilu:</translation>
+        </message>
+        <message>
             <source>Type key of the valve</source>
             <translation>Objednací kód ventilu</translation>
         </message>

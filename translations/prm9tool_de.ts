@@ -316,6 +316,10 @@ Die letzte Aktion wurde womöglich nicht vollständig ausgeführt. Speichern Sie
             <translation>Der Bus kann nicht beobachtet werden: {0}</translation>
         </message>
         <message>
+            <source>The valve (serial number {0}) does not tell its type key, and its objects do not tell E02 from E04 (-CA). Type key on the valve's label:</source>
+            <translation>Das Ventil (Seriennummer {0}) nennt seinen Typenschlüssel nicht, und seine Objekte unterscheiden E02 nicht von E04 (-CA). Typenschlüssel auf dem Typenschild des Ventils:</translation>
+        </message>
+        <message>
             <source>Type key of the valve</source>
             <translation>Typschlüssel des Ventils</translation>
         </message>
