@@ -76,7 +76,7 @@ connection.status_changed.connect(status)
 connection.signal_values_changed.connect(values)
 connection.samples_received.connect(samples)
 connection.failed.connect(lambda text: seen["failed"].append(text))
-QTimer.singleShot(40000, lambda: finish(timeout=True))
+QTimer.singleShot(80000, lambda: finish(timeout=True))
 app.start(window, app.plan_from(args))
 qt.exec()
 """
@@ -189,7 +189,7 @@ def main() -> None:
             [sys.executable, "-c", GUI, *device],
             capture_output=True,
             text=True,
-            timeout=90,
+            timeout=120,
             check=False,
             env={**os.environ, "QT_QPA_PLATFORM": "offscreen"},
         )

@@ -591,6 +591,10 @@ Die letzte Aktion wurde womöglich nicht vollständig ausgeführt. Speichern Sie
             <source>the process controller's Kp is 0: the spool would not move</source>
             <translation>Kp des Prozessreglers ist 0: der Schieber würde sich nicht bewegen</translation>
         </message>
+        <message>
+            <source>this valve has no object for {0} on this link (their addresses are this project's, not the manual's): the tuning cannot change them here; nothing was changed — tune these over USB</source>
+            <translation>dieses Ventil hat auf dieser Verbindung kein Objekt für {0} (ihre Adressen sind die dieses Projekts, nicht die des Handbuchs): die Abstimmung kann sie hier nicht ändern; nichts wurde geändert — stimmen Sie diese über USB ab</translation>
+        </message>
     </context>
     <context>
         <name>CommissioningPanel</name>
@@ -1173,6 +1177,10 @@ Die letzte Aktion wurde womöglich nicht vollständig ausgeführt. Speichern Sie
         <message>
             <source>Online, the valve type is that of the connected valve.</source>
             <translation>Online ist der Ventiltyp der des angeschlossenen Ventils.</translation>
+        </message>
+        <message>
+            <source>%1 — no live value now: the valve streams three measuring points at a time and the oscilloscope is recording others (over CANopen: the valve has no object for this point).</source>
+            <translation>%1 – zurzeit kein Messwert: Das Ventil überträgt drei Messpunkte gleichzeitig, und das Oszilloskop zeichnet andere auf (über CANopen: Das Ventil hat für diesen Punkt kein Objekt).</translation>
         </message>
         <message>
             <source>%1 — click to show it in the oscilloscope</source>
@@ -2729,6 +2737,10 @@ Ja lädt hoch und stellt den Eintrag in die Warteschlange; Nein lädt nichts hoc
         <message>
             <source>{0} ({1}) is missing (required for {2} valves)</source>
             <translation>{0} ({1}) fehlt (erforderlich für Ventile {2})</translation>
+        </message>
+        <message>
+            <source>{0}: no value after '='; only a download over CANopen may leave a value out, marked with the comment '{1}'</source>
+            <translation>{0}: kein Wert nach '='; nur ein Auslesen über CANopen darf einen Wert auslassen, gekennzeichnet mit dem Kommentar '{1}'</translation>
         </message>
         <message>
             <source>byte 0x{0} is not UTF-8 text: the file is corrupt</source>

@@ -22,9 +22,9 @@ from prm9tool.catalogue.signals import BY_KEY
 from prm9tool.characterize.rig import Rig
 from prm9tool.characterize.transparent import TRANSPARENT
 from prm9tool.errors import Prm9Error
+from prm9tool.messages import QT_TRANSLATE_NOOP
 from prm9tool.scope.measure import StepFigures, step_figures
 
-PERCENT = 100.0 / 16384.0
 SAMPLES_PER_PERIOD = 10  # a sweep goes no higher than the sample rate / this (decision)
 SWEEP_MIN_SAMPLES = 256  # what the frequency response needs
 
@@ -38,11 +38,17 @@ class Loop:
     actual: str
     output: str
     integrating: bool
+    step_pct: float  # the step the step-response simulator makes (prm9tool.online.tuning)
+    simulated_s: float  # how long the simulator runs after the step
 
 
 LOOPS = {
-    "position": Loop("POS", "position_setpoint", "position_actual", "controller_output", False),
-    "process": Loop("PRC", "process_setpoint", "process_actual", "position_setpoint", True),
+    "position": Loop(
+        "POS", "position_setpoint", "position_actual", "controller_output", False, 50.0, 0.06
+    ),
+    "process": Loop(
+        "PRC", "process_setpoint", "process_actual", "position_setpoint", True, 20.0, 1.0
+    ),
 }
 GAIN_SUFFIXES = ("KP", "KI", "KD", "T1")
 
@@ -60,10 +66,24 @@ def gain_names(loop: Loop) -> list[str]:
 def preserved(
     rig: Rig, mnemonics: Sequence[str], changes: dict[str, int]
 ) -> Iterator[dict[str, int]]:
-    """Save ``mnemonics`` and ``changes``' keys, apply ``changes``; always restore and release."""
+    """Save ``mnemonics`` and ``changes``' keys, apply ``changes``; always restore and release.
+
+    ``mnemonics`` are what the procedure changes (controller gains): a valve that lacks one on
+    its link (a real valve over CANopen has no object at this project's addresses) is refused
+    here, naming them, before anything is written or moved."""
     rig.ensure_active()
     names = list(dict.fromkeys([*mnemonics, *changes]))
     saved = rig.read(names)
+    missing = [m for m in mnemonics if m not in saved]
+    if missing:
+        raise Prm9Error(
+            QT_TRANSLATE_NOOP(
+                "Characterize",
+                "this valve has no object for {0} on this link (their addresses are this "
+                "project's, not the manual's): the tuning cannot change them here; nothing "
+                "was changed — tune these over USB",
+            )(", ".join(missing))
+        )
     try:
         rig.write(changes)
         yield saved
