@@ -437,6 +437,10 @@ Poslední akce možná nebyla dokončena. Uložte svou práci pod novým názvem
             <translation>Sběrnici nelze sledovat: {0}</translation>
         </message>
         <message>
+            <source>The valve (serial number {0}) does not tell its type key, and its objects do not tell E02 from E04 (-CA). Type key on the valve's label:</source>
+            <translation>Ventil (výrobní číslo {0}) neuvádí svůj typový klíč a jeho objekty nerozliší E02 od E04 (-CA). Typový klíč ze štítku ventilu:</translation>
+        </message>
+        <message>
             <source>Type key of the valve</source>
             <translation>Objednací kód ventilu</translation>
         </message>
@@ -707,6 +711,10 @@ Poslední akce možná nebyla dokončena. Uložte svou práci pod novým názvem
         <message>
             <source>the process controller's Kp is 0: the spool would not move</source>
             <translation>Kp procesního regulátoru je 0: šoupátko by se nepohnulo</translation>
+        </message>
+        <message>
+            <source>this valve has no object for {0} on this link (their addresses are this project's, not the manual's): the tuning cannot change them here; nothing was changed — tune these over USB</source>
+            <translation>tento ventil nemá na tomto spojení objekt pro {0} (jejich adresy jsou adresami tohoto projektu, ne příručky): ladění je zde nemůže změnit; nic nebylo změněno — nalaďte je přes USB</translation>
         </message>
     </context>
     <context>
@@ -4427,6 +4435,18 @@ Zajistěte, aby to hydraulika bezpečně snesla. Tlačítko Stop test kdykoli uk
                 <numerusform>%n parametry znovu zapsány, ověřeny a uloženy v {0}: ventil je již obsahoval</numerusform>
                 <numerusform>%n parametrů znovu zapsáno, ověřeno a uloženo v {0}: ventil je již obsahoval</numerusform>
             </translation>
+        </message>
+        <message>
+            <source>stored with 0x1010</source>
+            <translation>uloženo pomocí 0x1010</translation>
+        </message>
+        <message>
+            <source>kept by the valve as written (it has no store command)</source>
+            <translation>ventil si hodnoty ponechal tak, jak byly zapsány (nemá příkaz k uložení)</translation>
+        </message>
+        <message>
+            <source>verified after a restart</source>
+            <translation>ověřeno po restartu</translation>
         </message>
         <message>
             <source>Upload failed</source>

@@ -435,6 +435,10 @@ Die letzte Aktion wurde womöglich nicht vollständig ausgeführt. Speichern Sie
             <translation>Der Bus kann nicht beobachtet werden: {0}</translation>
         </message>
         <message>
+            <source>The valve (serial number {0}) does not tell its type key, and its objects do not tell E02 from E04 (-CA). Type key on the valve's label:</source>
+            <translation>Das Ventil (Seriennummer {0}) nennt seinen Typenschlüssel nicht, und seine Objekte unterscheiden E02 nicht von E04 (-CA). Typenschlüssel auf dem Typenschild des Ventils:</translation>
+        </message>
+        <message>
             <source>Type key of the valve</source>
             <translation>Typschlüssel des Ventils</translation>
         </message>
@@ -705,6 +709,10 @@ Die letzte Aktion wurde womöglich nicht vollständig ausgeführt. Speichern Sie
         <message>
             <source>the process controller's Kp is 0: the spool would not move</source>
             <translation>Kp des Prozessreglers ist 0: der Schieber würde sich nicht bewegen</translation>
+        </message>
+        <message>
+            <source>this valve has no object for {0} on this link (their addresses are this project's, not the manual's): the tuning cannot change them here; nothing was changed — tune these over USB</source>
+            <translation>dieses Ventil hat auf dieser Verbindung kein Objekt für {0} (ihre Adressen sind die dieses Projekts, nicht die des Handbuchs): die Abstimmung kann sie hier nicht ändern; nichts wurde geändert — stimmen Sie diese über USB ab</translation>
         </message>
     </context>
     <context>
@@ -4411,6 +4419,18 @@ Stellen Sie sicher, dass die Hydraulik dafür sicher ist. Stopp beendet ihn jede
                 <numerusform>%n Parameter um {0} erneut geschrieben, geprüft und gespeichert: das Ventil hatte ihn schon</numerusform>
                 <numerusform>%n Parameter um {0} erneut geschrieben, geprüft und gespeichert: das Ventil hatte sie schon</numerusform>
             </translation>
+        </message>
+        <message>
+            <source>stored with 0x1010</source>
+            <translation>mit 0x1010 gespeichert</translation>
+        </message>
+        <message>
+            <source>kept by the valve as written (it has no store command)</source>
+            <translation>vom Ventil wie geschrieben behalten (es hat keinen Speicherbefehl)</translation>
+        </message>
+        <message>
+            <source>verified after a restart</source>
+            <translation>nach einem Neustart geprüft</translation>
         </message>
         <message>
             <source>Upload failed</source>

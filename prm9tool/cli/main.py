@@ -35,6 +35,10 @@ def main(argv: Sequence[str] | None = None) -> int:
 
         print(f"prm9tool {__version__}")
         return ExitCode.OK
+    if args.od:
+        from prm9tool.device.factory import set_emulator_od
+
+        set_emulator_od(args.od)
     spools_problem = _load_user_spools()
     command = _headless_command(args)
     if command is not None:
