@@ -1,6 +1,6 @@
 """Signal-flow diagram and tuning simulator: costs against references measured in the same run.
 
-    QT_QPA_PLATFORM=offscreen python benchmarks/bench_diagram.py
+    QT_QPA_PLATFORM=offscreen python benchmarks/bench_diagram.py [--quick]
 
 Diagram: building the E04 -CA diagram, redrawing it (1024 x 640) and pushing one set of live
 values, against a plain QGraphicsScene with the same number of rectangles and texts.
@@ -11,6 +11,7 @@ set-up; and the speed-up over real time.
 
 from __future__ import annotations
 
+import argparse
 import os
 import statistics
 import sys
@@ -35,12 +36,13 @@ from prm9tool.views.diagram import DiagramView
 
 E04_CA = "PRM9-06.3Z11/30-24E04S02-CA"
 E02 = "PRM9-06.3Z11/30-24E02S02"
+QUICK = [False]  # --quick: every measurement once (a smoke run)
 
 
 def median_ms(work: Callable[[], object], repeat: int) -> float:
     """Median wall time of ``work`` in milliseconds."""
     times = []
-    for _ in range(repeat):
+    for _ in range(1 if QUICK[0] else repeat):
         start = time.perf_counter()
         work()
         times.append(time.perf_counter() - start)
@@ -144,6 +146,9 @@ def bench_tuning() -> None:
 
 def main() -> int:
     """Run both benchmarks."""
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--quick", action="store_true", help="a smoke run: seconds, not figures")
+    QUICK[0] = parser.parse_args().quick
     app = QApplication.instance() or QApplication(sys.argv)
     assert app is not None
     print(f"Python {sys.version.split()[0]}")

@@ -76,10 +76,24 @@ def gain_names(loop: Loop) -> list[str]:
 def preserved(
     rig: Rig, mnemonics: Sequence[str], changes: dict[str, int]
 ) -> Iterator[dict[str, int]]:
-    """Save ``mnemonics`` and ``changes``' keys, apply ``changes``; always restore and release."""
+    """Save ``mnemonics`` and ``changes``' keys, apply ``changes``; always restore and release.
+
+    ``mnemonics`` are what the procedure changes (controller gains): a valve that lacks one on
+    its link (a real valve over CANopen has no object at this project's addresses) is refused
+    here, naming them, before anything is written or moved."""
     rig.ensure_active()
     names = list(dict.fromkeys([*mnemonics, *changes]))
     saved = rig.read(names)
+    missing = [m for m in mnemonics if m not in saved]
+    if missing:
+        raise Prm9Error(
+            QT_TRANSLATE_NOOP(
+                "Characterize",
+                "this valve has no object for {0} on this link (their addresses are this "
+                "project's, not the manual's): the tuning cannot change them here; nothing "
+                "was changed — tune these over USB",
+            )(", ".join(missing))
+        )
     try:
         rig.write(changes)
         yield saved

@@ -114,7 +114,10 @@ class Rig(ABC):
                     "the valve does not follow its setpoint: device state {0}; nothing was tested",
                 )
             )
-            raise ValveFaultError(template(status.device_state.value))
+            seen = status.device_state.value
+            if status.status_word is not None:  # over CANopen: the word it was read from
+                seen = f"{seen} (status word 0x{status.status_word:04X})"
+            raise ValveFaultError(template(seen))
 
     def check(self) -> None:
         """Raise :class:`Stopped` if a stop was requested."""
