@@ -99,12 +99,16 @@ def settings_in(folder: Path) -> QSettings:
     return QSettings(str(folder / "prm9tool.ini"), QSettings.Format.IniFormat)
 
 
-def emulator_connection(paced: bool = False) -> ValveConnection:
-    """A connection to emulated valves, unpaced (as fast as the link asks) unless ``paced``."""
-    return ValveConnection(
+def emulator_connection(paced: bool = False, reconnect: bool = False) -> ValveConnection:
+    """A connection to emulated valves, unpaced (as fast as the link asks) unless ``paced``;
+    ``reconnect``: a lost valve is looked for (the program's default; off here, so that the
+    tests of a lost link see it offline)."""
+    connection = ValveConnection(
         opener=lambda entry: factory.open_session(entry, paced=paced),  # type: ignore[arg-type]
-        lister=lambda emulators: factory.list_devices(emulators),
+        lister=lambda emulators, can=None: factory.list_devices(emulators),
     )
+    connection.auto_reconnect = reconnect
+    return connection
 
 
 @contextmanager

@@ -17,11 +17,13 @@ class FakeConnection(QObject):
     write_failed = Signal(list)
     status_changed = Signal(object)
     busy_changed = Signal(bool)
+    reconnect_ended = Signal()
 
     def __init__(self, online: bool = True) -> None:
         super().__init__()
         self.is_online = online
         self.is_busy = False
+        self.is_reconnecting = False
         self.streams: list[tuple[list[str], int]] = []
         self.stream_stops = 0
         self.writes: list[tuple[str, int | str]] = []

@@ -1522,8 +1522,16 @@ Poslední akce možná nebyla dokončena. Uložte svou práci pod novým názvem
             <translation>&amp;Vytáhnout kabel USB</translation>
         </message>
         <message>
-            <source>The link drops as when a real cable is pulled</source>
-            <translation>Spojení se přeruší jako při vytažení skutečného kabelu</translation>
+            <source>The link drops as when a real cable is pulled; it stays out until plugged back</source>
+            <translation>Spojení se přeruší jako při vytažení skutečného kabelu; kabel zůstane vytažený, dokud se znovu nezapojí</translation>
+        </message>
+        <message>
+            <source>Plug the USB &amp;cable back in</source>
+            <translation>Znovu zapojit &amp;kabel USB</translation>
+        </message>
+        <message>
+            <source>The emulated valve is connected again; prm9tool finds it by itself</source>
+            <translation>Emulovaný ventil je opět připojen; prm9tool jej najde sám</translation>
         </message>
         <message>
             <source>Inject this fault into the emulated valve, or repair it</source>
@@ -2587,6 +2595,14 @@ Ano načte a záznam zařadí do fronty; Ne nenačte nic.</translation>
         <message>
             <source>Connected, but the document and the valve do not agree yet: edits are not sent to the valve</source>
             <translation>Připojeno, ale dokument a ventil se zatím neshodují: změny se do ventilu neposílají</translation>
+        </message>
+        <message>
+            <source>RECONNECTING… {0} s</source>
+            <translation>OBNOVA SPOJENÍ… {0} s</translation>
+        </message>
+        <message>
+            <source>The link to the valve {0} broke. prm9tool looks for it and compares when it is back; nothing is written to the valve without you.</source>
+            <translation>Spojení s ventilem {0} se přerušilo. prm9tool jej hledá a po jeho návratu jej porovná s dokumentem; bez vás se do ventilu nic nezapíše.</translation>
         </message>
         <message>
             <source>Expert</source>
@@ -4476,6 +4492,10 @@ Zajistěte, aby to hydraulika bezpečně snesla. Tlačítko Stop test kdykoli uk
             <translation>Čtení parametrů ventilu…</translation>
         </message>
         <message>
+            <source>Back online: document and valve agree</source>
+            <translation>Opět online: dokument a ventil se shodují</translation>
+        </message>
+        <message>
             <source>Online: document and valve agree</source>
             <translation>Online: dokument a ventil se shodují</translation>
         </message>
@@ -4544,6 +4564,16 @@ Zajistěte, aby to hydraulika bezpečně snesla. Tlačítko Stop test kdykoli uk
             <translation>Komunikace s ventilem</translation>
         </message>
         <message>
+            <source>Connection to the valve lost ({0}); looking for it…</source>
+            <translation>Spojení s ventilem ztraceno ({0}); hledá se…</translation>
+        </message>
+        <message>
+            <source>The connection to the valve was lost; prm9tool is offline now and looks for the valve. When it is back, prm9tool compares it with the document and you decide what to do; nothing is sent again by itself.
+Every value is kept in the document.</source>
+            <translation>Spojení s ventilem bylo ztraceno; prm9tool je nyní offline a ventil hledá. Až bude ventil zpět, prm9tool jej porovná s dokumentem a o dalším postupu rozhodnete vy; nic se samo znovu neodešle.
+Všechny hodnoty zůstávají v dokumentu.</translation>
+        </message>
+        <message>
             <source>Connection to the valve lost</source>
             <translation>Spojení s ventilem ztraceno</translation>
         </message>
@@ -4552,6 +4582,18 @@ Zajistěte, aby to hydraulika bezpečně snesla. Tlačítko Stop test kdykoli uk
 Every value is kept in the document: save it, or go online again and send it.</source>
             <translation>Spojení s ventilem bylo ztraceno; prm9tool je nyní v režimu offline.
 Všechny hodnoty zůstávají v dokumentu: uložte jej, nebo přejděte znovu do režimu online a odešlete jej.</translation>
+        </message>
+        <message>
+            <source>The valve {0} is back online; reading its parameters…</source>
+            <translation>Ventil {0} je opět online; načítají se jeho parametry…</translation>
+        </message>
+        <message>
+            <source>Another valve (serial number {0}) is where the lost valve {1} was ({2}). prm9tool does not connect to it by itself: it is a new valve. Go online to work with it.</source>
+            <translation>Na místě ztraceného ventilu {1} ({2}) je jiný ventil (sériové číslo {0}). prm9tool se k němu sám nepřipojí: je to nový ventil. Chcete-li s ním pracovat, přejděte do režimu online.</translation>
+        </message>
+        <message>
+            <source>Another valve</source>
+            <translation>Jiný ventil</translation>
         </message>
         <message>
             <source>Backup of the valve's parameters saved: {0}</source>

@@ -1516,8 +1516,16 @@ Die letzte Aktion wurde womöglich nicht vollständig ausgeführt. Speichern Sie
             <translation>USB-Kabel &amp;ziehen</translation>
         </message>
         <message>
-            <source>The link drops as when a real cable is pulled</source>
-            <translation>Die Verbindung bricht ab wie bei einem gezogenen Kabel</translation>
+            <source>The link drops as when a real cable is pulled; it stays out until plugged back</source>
+            <translation>Die Verbindung bricht ab wie bei einem gezogenen Kabel; es bleibt draußen, bis es wieder eingesteckt wird</translation>
+        </message>
+        <message>
+            <source>Plug the USB &amp;cable back in</source>
+            <translation>USB-&amp;Kabel wieder einstecken</translation>
+        </message>
+        <message>
+            <source>The emulated valve is connected again; prm9tool finds it by itself</source>
+            <translation>Das emulierte Ventil ist wieder angeschlossen; prm9tool findet es von selbst</translation>
         </message>
         <message>
             <source>Inject this fault into the emulated valve, or repair it</source>
@@ -2576,6 +2584,14 @@ Ja lädt hoch und stellt den Eintrag in die Warteschlange; Nein lädt nichts hoc
         <message>
             <source>Connected, but the document and the valve do not agree yet: edits are not sent to the valve</source>
             <translation>Verbunden, aber Dokument und Ventil stimmen noch nicht überein: Änderungen werden nicht an das Ventil gesendet</translation>
+        </message>
+        <message>
+            <source>RECONNECTING… {0} s</source>
+            <translation>NEU VERBINDEN… {0} s</translation>
+        </message>
+        <message>
+            <source>The link to the valve {0} broke. prm9tool looks for it and compares when it is back; nothing is written to the valve without you.</source>
+            <translation>Die Verbindung zum Ventil {0} ist abgebrochen. prm9tool sucht es und vergleicht, sobald es wieder da ist; ohne Sie wird nichts ins Ventil geschrieben.</translation>
         </message>
         <message>
             <source>Expert</source>
@@ -4460,6 +4476,10 @@ Stellen Sie sicher, dass die Hydraulik dafür sicher ist. Stopp beendet ihn jede
             <translation>Parameter des Ventils werden gelesen…</translation>
         </message>
         <message>
+            <source>Back online: document and valve agree</source>
+            <translation>Wieder online: Dokument und Ventil stimmen überein</translation>
+        </message>
+        <message>
             <source>Online: document and valve agree</source>
             <translation>Online: Dokument und Ventil stimmen überein</translation>
         </message>
@@ -4528,6 +4548,16 @@ Stellen Sie sicher, dass die Hydraulik dafür sicher ist. Stopp beendet ihn jede
             <translation>Kommunikation mit dem Ventil</translation>
         </message>
         <message>
+            <source>Connection to the valve lost ({0}); looking for it…</source>
+            <translation>Verbindung zum Ventil verloren ({0}); es wird gesucht…</translation>
+        </message>
+        <message>
+            <source>The connection to the valve was lost; prm9tool is offline now and looks for the valve. When it is back, prm9tool compares it with the document and you decide what to do; nothing is sent again by itself.
+Every value is kept in the document.</source>
+            <translation>Die Verbindung zum Ventil ist verloren; prm9tool ist jetzt offline und sucht das Ventil. Sobald es wieder da ist, vergleicht prm9tool es mit dem Dokument und Sie entscheiden, was geschieht; nichts wird von selbst erneut gesendet.
+Alle Werte bleiben im Dokument erhalten.</translation>
+        </message>
+        <message>
             <source>Connection to the valve lost</source>
             <translation>Verbindung zum Ventil verloren</translation>
         </message>
@@ -4536,6 +4566,18 @@ Stellen Sie sicher, dass die Hydraulik dafür sicher ist. Stopp beendet ihn jede
 Every value is kept in the document: save it, or go online again and send it.</source>
             <translation>Die Verbindung zum Ventil ist verloren; prm9tool ist jetzt offline.
 Alle Werte bleiben im Dokument erhalten: speichern Sie es oder gehen Sie wieder online und senden Sie es.</translation>
+        </message>
+        <message>
+            <source>The valve {0} is back online; reading its parameters…</source>
+            <translation>Das Ventil {0} ist wieder online; seine Parameter werden gelesen…</translation>
+        </message>
+        <message>
+            <source>Another valve (serial number {0}) is where the lost valve {1} was ({2}). prm9tool does not connect to it by itself: it is a new valve. Go online to work with it.</source>
+            <translation>Wo das verlorene Ventil {1} war ({2}), ist ein anderes Ventil (Seriennummer {0}). prm9tool verbindet sich nicht von selbst damit: Es ist ein neues Ventil. Gehen Sie online, um damit zu arbeiten.</translation>
+        </message>
+        <message>
+            <source>Another valve</source>
+            <translation>Ein anderes Ventil</translation>
         </message>
         <message>
             <source>Backup of the valve's parameters saved: {0}</source>

@@ -9,6 +9,7 @@ No Qt.
 
 from __future__ import annotations
 
+import threading
 from collections.abc import Callable
 from dataclasses import dataclass
 from typing import TYPE_CHECKING
@@ -20,6 +21,23 @@ from prm9tool.errors import ValueRangeError
 if TYPE_CHECKING:
     from prm9tool.device.emulator import EmulatedValve
     from prm9tool.device.usb.transport.emulator import EmulatorTransport
+
+_CABLES_OUT: set[int] = set()  # serials of emulated valves whose USB cable is pulled
+_CABLES_LOCK = threading.Lock()
+
+
+def cable_plugged(serial: int) -> bool:
+    """False while the USB cable of the emulated valve ``serial`` is pulled (it is then not
+    listed and cannot be opened, as a real valve without its cable)."""
+    with _CABLES_LOCK:
+        return serial not in _CABLES_OUT
+
+
+def plug_cable(serial: int, plugged: bool = True) -> None:
+    """Plug the USB cable of the emulated valve ``serial`` back in (or pull it: False)."""
+    with _CABLES_LOCK:
+        (_CABLES_OUT.discard if plugged else _CABLES_OUT.add)(serial)
+
 
 INPUTS = ("setpoint", "sensor", "supply_voltage", "ambient_temperature")
 SWITCHES = ("switch_baud", "switch_node")
@@ -118,5 +136,7 @@ class EmulatorControls:
 
     def pull_cable(self) -> None:
         """Pull the USB cable: the link dies, the valve runs on (its setpoint override drops
-        500 ms later, as without any USB traffic)."""
+        500 ms later, as without any USB traffic). It stays out — the valve is not listed —
+        until :func:`plug_cable` puts it back."""
+        plug_cable(self.valve.serial, plugged=False)
         self._transport.unplug()

@@ -20,7 +20,13 @@ from prm9tool.catalogue.typekey import DEFAULT_EMULATOR_TYPE_KEY, TypeKey
 from prm9tool.device.canlink.bus import CanOptions
 from prm9tool.device.records import NmtState
 from prm9tool.device.session import ValveSession
-from prm9tool.errors import CanBusError, CommunicationError, Prm9Error, TypeKeyError
+from prm9tool.errors import (
+    CanBusError,
+    CommunicationError,
+    DeviceDisconnectedError,
+    Prm9Error,
+    TypeKeyError,
+)
 
 if TYPE_CHECKING:
     from prm9tool.device.emulator import EmulatedValve
@@ -92,6 +98,8 @@ def free_emulator_serial(type_key: str, first: int, taken: Collection[int] = ())
 def emulator_entries(specs: Sequence[str]) -> list[DeviceEntry]:
     """Entries for ``--emulator`` specs; specs without a serial get the lowest free ones
     (:func:`free_emulator_serial`)."""
+    from prm9tool.device.emulated import cable_plugged
+
     parsed = [parse_emulator_spec(s, 0) for s in specs]
     taken = {serial for _, serial in parsed if serial}
     entries, seen = [], set()
@@ -103,7 +111,8 @@ def emulator_entries(specs: Sequence[str]) -> list[DeviceEntry]:
             raise TypeKeyError(f"two emulated valves with serial {serial}")
         seen.add(serial)
         valve = emulated_valve(type_key, serial)
-        entries.append(_emulator_entry(valve))
+        if cable_plugged(serial):  # a pulled cable: not listed, as a real valve
+            entries.append(_emulator_entry(valve))
     return entries
 
 
@@ -267,7 +276,11 @@ def emulated_valve(type_key: str, serial: int) -> EmulatedValve:
 
 def forget_emulated_valves() -> None:
     """Drop this process's emulated valves (their EEPROM files stay); for tests and tools."""
+    from prm9tool.device.emulated import plug_cable
+
     with _LOCK:
+        for serial in _VALVES:
+            plug_cable(serial)
         for serial, valve in _VALVES.items():
             if _RUNNING.pop(serial, 0):
                 valve.stop()
@@ -337,10 +350,13 @@ def _open_emulator(
     pacing: tuple[bool, bool],
     can: CanOptions | None,
 ) -> ValveSession:
+    from prm9tool.device.emulated import cable_plugged
     from prm9tool.device.usb.session import UsbSession
     from prm9tool.device.usb.transport.emulator import EmulatorTransport
 
     valve = emulated_valve(type_key, serial)
+    if not cable_plugged(serial):
+        raise DeviceDisconnectedError(f"the USB cable of the emulated valve {serial} is pulled")
     closers: list[Callable[[], None]] = []
     try:
         if pacing[0]:

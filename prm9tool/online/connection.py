@@ -17,6 +17,7 @@ from typing import TYPE_CHECKING, Any, cast
 from PySide6.QtCore import QObject, Qt, Signal
 
 from prm9tool.online.connection_worker import ConnectionWorker, Job
+from prm9tool.online.reconnect import LostValve, Reconnector
 from prm9tool.online.setpoint_driver import (
     GENERATOR_OBJECTS,
 )
@@ -58,6 +59,11 @@ class ValveConnection(QObject):
     history_problem = Signal(str)  # a record went to the local queue, or was lost (why)
     # a CANopen valve without 0x2041 whose type key is not known: (device ID, serial, "E02"/"E04")
     type_key_needed = Signal(str, int, str)
+    # the lost valve is looked for (online/reconnect.py): seconds since it was lost
+    reconnecting = Signal(float)
+    reconnected = Signal(object)  # DeviceInfo: the same valve is back (online_changed follows)
+    reconnect_ended = Signal()  # no longer looking (back, another valve, or the user decided)
+    other_valve = Signal(int, int, str)  # (lost serial, serial found, device ID): a new valve
     _posted = Signal(object)  # a callable the GUI thread runs (results of the worker)
 
     def __init__(
@@ -81,6 +87,8 @@ class ValveConnection(QObject):
         self._samples_lost = 0  # GUI-side: lost samples of the running stream
         self._posted.connect(self._on_posted, Qt.ConnectionType.QueuedConnection)
         self.history: HistoryHook | None = None  # set_recorder(); used by the worker only
+        self.auto_reconnect = True  # look for a lost valve until it is back (online/reconnect.py)
+        self._reconnector: Reconnector | None = None
 
     def set_recorder(self, recorder: Recorder) -> None:
         """Record every operation on the valve's parameter set into this history."""
@@ -155,6 +163,7 @@ class ValveConnection(QObject):
     # --- commands (GUI thread) ------------------------------------------------------------------
     def go_online(self, entry: object) -> None:
         """Open a session to ``entry`` (a DeviceEntry or device-id string)."""
+        self.stop_reconnecting()
         if self._online or self.is_busy:
             busy = self.tr("The valve connection is busy; wait until it is done.")
             self.failed.emit(busy if self.is_busy else self.tr("Already online; go offline first."))
@@ -166,7 +175,9 @@ class ValveConnection(QObject):
                           needs_session=False))  # fmt: skip
 
     def go_offline(self) -> None:
-        """Close the session (the stream stops); online_changed(False) follows."""
+        """Close the session (the stream stops); online_changed(False) follows. Also stops
+        looking for a lost valve."""
+        self.stop_reconnecting()
         if self._online:
             self._worker.cancel.set()
             self._submit(Job("offline", lambda _s: self._worker.close(), self._on_closed, False))
@@ -317,6 +328,7 @@ class ValveConnection(QObject):
 
     def shutdown(self, timeout_s: float = 3.0) -> None:
         """Close the session and end the worker thread (application exit)."""
+        self.stop_reconnecting()
         self._worker.stop(timeout_s)
 
     # --- GUI-thread helpers --------------------------------------------------------------------
@@ -416,7 +428,112 @@ class ValveConnection(QObject):
 
     def _report_lost(self, message: str) -> None:
         if self._online:
+            device = self._device
+            if self.auto_reconnect and device is not None and device.serial:
+                bus = getattr(device, "can_bus", None)  # known looking before going offline
+                self._make_reconnector(LostValve(device.serial, device.device_id, bus), None)
             self._on_closed()
             self.lost.emit(message)
+            self._go_looking()
         else:
             self.failed.emit(message)
+
+    # --- finding a lost valve again ------------------------------------------------------------
+    @property
+    def is_reconnecting(self) -> bool:
+        """True while a lost valve is looked for."""
+        return self._reconnector is not None
+
+    @property
+    def lost_valve(self) -> LostValve | None:
+        """The valve looked for (None when none is)."""
+        return None if self._reconnector is None else self._reconnector.lost
+
+    def stop_reconnecting(self) -> None:
+        """Stop looking for the lost valve (``reconnect_ended`` follows if it was looked for)."""
+        looking, self._reconnector = self._reconnector, None
+        if looking is not None:
+            looking.stop.set()
+            self.reconnect_ended.emit()
+
+    def _start_reconnecting(self, lost: LostValve, since: float | None = None) -> None:
+        self._make_reconnector(lost, since)
+        self._go_looking()
+
+    def _make_reconnector(self, lost: LostValve, since: float | None) -> None:
+        self.stop_reconnecting()
+        lister = self._lister
+
+        def listing(emulators: Sequence[str], can: Mapping[str, object] | None) -> list[Any]:
+            return list(lister(emulators) if can is None else lister(emulators, can))
+
+        def current(action: Callable[[], None]) -> Callable[[], None]:
+            return lambda: action() if self._reconnector is looking else None
+
+        def other(entry: Any) -> None:
+            self._post(current(lambda: self._found_other(entry.serial, entry.device_id)))
+
+        looking = Reconnector(
+            lost,
+            listing,
+            lambda s: self._post(current(lambda: self.reconnecting.emit(s))),
+            lambda entry: self._post(current(lambda: self._reopen(entry))),
+            other,
+            since=since,
+        )
+        self._reconnector = looking
+
+    def _go_looking(self) -> None:
+        if self._reconnector is not None:
+            self.reconnecting.emit(self._reconnector.elapsed())
+            self._reconnector.start()
+
+    def _found_other(self, serial: int, device_id: str) -> None:
+        lost = self.lost_valve
+        self.stop_reconnecting()
+        if lost is not None:
+            self.other_valve.emit(lost.serial, serial, device_id)
+
+    def _reopen(self, entry: object) -> None:
+        """Open the valve found again (worker); a failure keeps looking."""
+        looking = self._reconnector
+        if looking is None or self._online or self.is_busy:
+            return
+        self._worker.start()
+        self._set_busy(+1)
+
+        def run(_session: object) -> object:
+            try:
+                info = self._worker.open(entry)
+            except Exception as exc:  # not (yet) openable: it may be still starting up
+                log.info("reopening the lost valve failed: %s", exc)
+                self._worker.close()
+                return exc
+            if getattr(info, "serial", 0) != looking.lost.serial:
+                self._worker.close()  # another valve answered: nothing is read or written
+            return info
+
+        def done(info: object) -> None:
+            self._set_busy(-1)
+            if self._reconnector is not looking:  # the user decided meanwhile
+                if not isinstance(info, Exception):
+                    self._submit(Job("offline", lambda _s: self._worker.close(), None, False,
+                                     needs_session=False))  # fmt: skip
+                return
+            if isinstance(info, Exception):
+                self._reconnector = None
+                self._start_reconnecting(looking.lost, looking.since)
+                return
+            serial = getattr(info, "serial", 0)
+            if serial != looking.lost.serial:  # the serial check: the worker closed it
+                self._found_other(serial, getattr(info, "device_id", ""))
+                return
+            self._reconnector = None
+            self._online = True
+            self._device = cast("ValveIdentity", info)
+            self.reconnect_ended.emit()
+            self.device_changed.emit(info)
+            self.reconnected.emit(info)
+            self.online_changed.emit(True)
+
+        self._submit(Job("reconnect", run, done, False, needs_session=False))

@@ -217,6 +217,14 @@ class ScopeConnection(LinkState, Protocol):
         """Emitted with a raw ``(n, channels)`` numpy block of the running stream."""
 
     @property
+    def reconnect_ended(self) -> SignalInstance:
+        """Emitted when a lost valve is no longer looked for (back online, or not)."""
+
+    @property
+    def is_reconnecting(self) -> bool:
+        """True while a lost valve is looked for (online/reconnect.py)."""
+
+    @property
     def stream_started(self) -> SignalInstance:
         """Emitted with the keys actually streaming once the valve started the stream."""
 

@@ -124,12 +124,33 @@ class ValveControl(QObject):
     """NMT, enable/disable and, for an emulated valve, inputs, switches and faults."""
 
     emulator_changed = Signal(object)  # EmulatorState, or None (offline or a real valve)
+    cable_out_changed = Signal(bool)  # the lost valve is an emulated one with its cable pulled
 
     def __init__(self, connection: ValveConnection, parent: QObject | None = None) -> None:
         super().__init__(parent)
         self._connection = connection
         self._state: object | None = None
         connection.online_changed.connect(self._on_connection_online_changed)
+        connection.reconnecting.connect(lambda _s: self.cable_out_changed.emit(self.cable_out))
+        connection.reconnect_ended.connect(lambda: self.cable_out_changed.emit(False))
+
+    @property
+    def cable_out(self) -> bool:
+        """True while the valve looked for is an emulated one whose USB cable is pulled."""
+        from prm9tool.device.emulated import cable_plugged
+
+        lost = self._connection.lost_valve
+        return bool(lost and lost.emulators and not cable_plugged(lost.serial))
+
+    def plug_cable_back(self) -> None:
+        """Plug the pulled USB cable of the emulated valve looked for back in: the reconnect
+        finds it at its next listing."""
+        from prm9tool.device.emulated import plug_cable
+
+        lost = self._connection.lost_valve
+        if lost is not None and lost.emulators:
+            plug_cable(lost.serial)
+        self.cable_out_changed.emit(self.cable_out)
 
     @property
     def connection(self) -> ValveConnection:

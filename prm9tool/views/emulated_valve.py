@@ -63,13 +63,21 @@ class EmulatedValveMenu(QMenu):
         self.inputs_action.triggered.connect(self.show_dialog)
         self.cable_action = QAction(self)
         self.cable_action.triggered.connect(control.pull_cable)
+        self.plug_action = QAction(self)  # while the emulated valve is looked for
+        self.plug_action.setObjectName("action_plug_cable")
+        self.plug_action.triggered.connect(control.plug_cable_back)
+        self.plug_action.setEnabled(False)
+        self._cable_out = False
+        self._state_known = False
         self.fault_actions: dict[str, QAction] = {}
         self.addAction(self.inputs_action)
         self.addSeparator()
         self._faults_end = self.addSeparator()  # the fault actions go between the separators
         self.addAction(self.cable_action)
+        self.addAction(self.plug_action)
         self.dialog: EmulatedValveDialog | None = None
         control.emulator_changed.connect(self._on_control_emulator_changed)
+        control.cable_out_changed.connect(self._on_control_cable_out_changed)
         self._on_control_emulator_changed(control.emulator_state)
 
     def attach(self, actions: MainActions) -> EmulatedValveMenu:
@@ -85,9 +93,24 @@ class EmulatedValveMenu(QMenu):
         present: frozenset[str] = frozenset(getattr(state, "faults", ()))
         for name, action in self.fault_actions.items():
             action.setChecked(name in present)
-        self.setEnabled(state is not None)
-        self.menuAction().setEnabled(state is not None)
+        self._state_known = state is not None
+        self._enable()
         self.retranslate()
+
+    def _on_control_cable_out_changed(self, out: bool) -> None:
+        self._cable_out = out
+        self._enable()
+
+    def _enable(self) -> None:
+        """Online with an emulated valve, or while its pulled cable can be plugged back."""
+        usable = self._state_known or self._cable_out
+        self.setEnabled(usable)
+        self.menuAction().setEnabled(usable)
+        self.inputs_action.setEnabled(self._state_known)
+        self.cable_action.setEnabled(self._state_known)
+        self.plug_action.setEnabled(self._cable_out)
+        for action in self.fault_actions.values():
+            action.setEnabled(self._state_known)
 
     def _rebuild(self, faults: tuple[str, ...]) -> None:
         for action in self.fault_actions.values():
@@ -115,7 +138,15 @@ class EmulatedValveMenu(QMenu):
             self.tr("Setpoint and sensor signals, supply, temperature and rotary switches")
         )
         self.cable_action.setText(self.tr("&Pull the USB cable"))
-        self.cable_action.setStatusTip(self.tr("The link drops as when a real cable is pulled"))
+        self.cable_action.setStatusTip(
+            self.tr(
+                "The link drops as when a real cable is pulled; it stays out until plugged back"
+            )
+        )
+        self.plug_action.setText(self.tr("Plug the USB &cable back in"))
+        self.plug_action.setStatusTip(
+            self.tr("The emulated valve is connected again; prm9tool finds it by itself")
+        )
         names = fault_names()
         for name, action in self.fault_actions.items():
             action.setText(names.get(name, name))

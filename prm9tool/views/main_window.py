@@ -227,6 +227,10 @@ class MainWindow(QMainWindow):
         c.device_changed.connect(lambda info: s.set_firmware(info.firmware if info else ""))
         c.status_changed.connect(lambda status: s.set_device_status(status_summary(status)))
         c.samples_lost_changed.connect(s.set_samples_lost)
+        c.reconnecting.connect(
+            lambda seconds: s.set_reconnecting(seconds, getattr(c.lost_valve, "serial", 0))
+        )
+        c.reconnect_ended.connect(lambda: s.set_reconnecting(None))
         d.type_key_changed.connect(s.set_type_key)
         for signal in (d.modified_changed, d.path_changed):
             signal.connect(self._show_file)
@@ -249,7 +253,7 @@ class MainWindow(QMainWindow):
         if online:
             return
         self.parameter_view.model.forget_live_values()  # offline, live values would be stale
-        if self.current_view() == "scope":
+        if self.current_view() == "scope" and not self.connection.is_reconnecting:
             self.show_view("parameters")
 
     def _update_actions(self, *_args: object) -> None:

@@ -40,6 +40,7 @@ class MainStatusBar(QStatusBar):
         self._path: Path | None = None
         self._modified = False
         self._lost = 0
+        self._reconnecting: tuple[float, int] | None = None  # (seconds, serial) while looking
         self.retranslate()
 
     def labels(self) -> list[QLabel]:
@@ -87,6 +88,11 @@ class MainStatusBar(QStatusBar):
         self._lost = count
         self.retranslate()
 
+    def set_reconnecting(self, seconds: float | None, serial: int = 0) -> None:
+        """Show that the lost valve ``serial`` is looked for since ``seconds`` (None: not)."""
+        self._reconnecting = None if seconds is None else (seconds, serial)
+        self.retranslate()
+
     def set_type_key(self, type_key: str) -> None:
         """Show the valve type of the document."""
         self.type_key_label.setText(type_key)
@@ -102,14 +108,20 @@ class MainStatusBar(QStatusBar):
         mode = self.tr("OFFLINE")
         if self._online:
             mode = self.tr("ONLINE") if self._synchronised else self.tr("CONNECTING")
-        self.mode_label.setText(self.tr("Mode: {0}").format(mode))
-        self.mode_label.setToolTip(
-            self.tr(
+        tip = ""
+        if self._online and not self._synchronised:
+            tip = self.tr(
                 "Connected, but the document and the valve do not agree yet: edits are not sent to the valve"
             )
-            if self._online and not self._synchronised
-            else ""
-        )
+        elif self._reconnecting is not None and not self._online:
+            seconds, serial = self._reconnecting
+            mode = self.tr("RECONNECTING… {0} s").format(int(seconds))
+            tip = self.tr(
+                "The link to the valve {0} broke. prm9tool looks for it and compares when it is "
+                "back; nothing is written to the valve without you."
+            ).format(serial)
+        self.mode_label.setText(self.tr("Mode: {0}").format(mode))
+        self.mode_label.setToolTip(tip)
         levels = [self.tr("Level: {0}").format(t) for t in (self.tr("Basic"), self.tr("Expert"))]
         self.level_label.setText(levels[self._expert])
         margins = self.level_label.contentsMargins()  # as wide as the longer: no jump, no clip

@@ -64,6 +64,7 @@ class ScopeWidget(QWidget):
         self._document = document
         self._status: StatusView | None = None  # the valve's latest status
         self._running = False
+        self._resume = False  # recording when the link broke: again when the valve is back
         self._accepting = False  # False between a (re)start request and stream_started
         self._generator_note = ""
         self._recording_note = ""  # why the recording stopped without the user
@@ -124,6 +125,7 @@ class ScopeWidget(QWidget):
         conn = self._connection
         conn.online_changed.connect(self._on_online_changed)
         conn.lost.connect(self._on_link_lost)
+        conn.reconnect_ended.connect(self._on_reconnect_ended)
         conn.samples_received.connect(self._on_samples_received)
         conn.stream_started.connect(self._on_stream_started)
         conn.stream_stopped.connect(self._on_stream_stopped)
@@ -306,8 +308,17 @@ class ScopeWidget(QWidget):
             self._on_link_lost()
         self._update_controls()
         self._update_status()
+        if online and self._resume:  # the same valve is back: record on
+            self._resume = False
+            self.start()
+
+    def _on_reconnect_ended(self) -> None:
+        if not self._connection.is_online:  # not back: the user decides
+            self._resume = False
 
     def _on_link_lost(self, *_: object) -> None:
+        if self._running and self._connection.is_reconnecting:
+            self._resume = True
         if self._running:
             self._running = False
             self._accepting = False

@@ -69,6 +69,9 @@ class ValveWorkflow(QObject):
         connection.progress.connect(self._on_connection_progress)
         connection.failed.connect(self._on_connection_failed)
         connection.lost.connect(self._on_connection_lost)
+        connection.reconnected.connect(self._on_connection_reconnected)
+        connection.other_valve.connect(self._on_connection_other_valve)
+        self._back = False  # the valve came back by itself: the comparison says "back online"
         connection.live_values_changed.connect(doc.set_live)
         connection.write_failed.connect(sync.forget)
         connection.backup_written.connect(self._on_connection_backup_written)
@@ -150,9 +153,14 @@ class ValveWorkflow(QObject):
             return
         same_key = valve_key == self._doc.type_key
         differs = any(self._doc.values.get(mn) != value for mn, value in values.items())
+        back, self._back = self._back, False
         if same_key and not differs:
             self._sync.start(values)
-            self.message_posted.emit(self.tr("Online: document and valve agree"))
+            self.message_posted.emit(
+                self.tr("Back online: document and valve agree")
+                if back
+                else self.tr("Online: document and valve agree")
+            )
             return
         self._ask_about_differences(valve_key, values)
 
@@ -323,17 +331,47 @@ class ValveWorkflow(QObject):
         prompts.inform(self._window, prompts.Icon.Warning, self.tr("Valve communication"), message)
 
     def _on_connection_lost(self, message: str) -> None:
+        busy = self.progress.dialog is not None  # an upload, download, … was running
         self.progress.close()
+        if self._connection.is_reconnecting and not busy:
+            self.message_posted.emit(
+                self.tr("Connection to the valve lost ({0}); looking for it…").format(message)
+            )
+            return
+        text = self.tr(
+            "The connection to the valve was lost; prm9tool is offline now.\n"
+            "Every value is kept in the document: save it, or go online again and send it."
+        )
+        if self._connection.is_reconnecting:
+            text = self.tr(
+                "The connection to the valve was lost; prm9tool is offline now and looks for "
+                "the valve. When it is back, prm9tool compares it with the document and you "
+                "decide what to do; nothing is sent again by itself.\n"
+                "Every value is kept in the document."
+            )
         prompts.inform(
             self._window,
             prompts.Icon.Critical,
             self.tr("Connection to the valve lost"),
-            self.tr(
-                "The connection to the valve was lost; prm9tool is offline now.\n"
-                "Every value is kept in the document: save it, or go online again and send it."
-            ),
+            text,
             message,
         )
+
+    def _on_connection_reconnected(self, info: object) -> None:
+        self._back = True
+        self.message_posted.emit(
+            self.tr("The valve {0} is back online; reading its parameters…").format(
+                getattr(info, "serial", "")
+            )
+        )
+
+    def _on_connection_other_valve(self, lost: int, found: int, device_id: str) -> None:
+        text = self.tr(
+            "Another valve (serial number {0}) is where the lost valve {1} was ({2}). prm9tool "
+            "does not connect to it by itself: it is a new valve. Go online to work with it."
+        ).format(found, lost, device_id)
+        self.message_posted.emit(text)
+        prompts.inform(self._window, prompts.Icon.Information, self.tr("Another valve"), text)
 
     def _on_connection_backup_written(self, path: str) -> None:
         self.message_posted.emit(
