@@ -4564,8 +4564,8 @@ Zajistěte, aby to hydraulika bezpečně snesla. Tlačítko Stop test kdykoli uk
             <translation>Komunikace s ventilem</translation>
         </message>
         <message>
-            <source>Connection to the valve lost ({0}); looking for it…</source>
-            <translation>Spojení s ventilem ztraceno ({0}); hledá se…</translation>
+            <source>Connection to the valve lost; looking for it… ({0})</source>
+            <translation>Spojení s ventilem ztraceno; hledá se… ({0})</translation>
         </message>
         <message>
             <source>The connection to the valve was lost; prm9tool is offline now and looks for the valve. When it is back, prm9tool compares it with the document and you decide what to do; nothing is sent again by itself.

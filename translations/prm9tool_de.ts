@@ -4548,8 +4548,8 @@ Stellen Sie sicher, dass die Hydraulik dafür sicher ist. Stopp beendet ihn jede
             <translation>Kommunikation mit dem Ventil</translation>
         </message>
         <message>
-            <source>Connection to the valve lost ({0}); looking for it…</source>
-            <translation>Verbindung zum Ventil verloren ({0}); es wird gesucht…</translation>
+            <source>Connection to the valve lost; looking for it… ({0})</source>
+            <translation>Verbindung zum Ventil verloren; es wird gesucht… ({0})</translation>
         </message>
         <message>
             <source>The connection to the valve was lost; prm9tool is offline now and looks for the valve. When it is back, prm9tool compares it with the document and you decide what to do; nothing is sent again by itself.

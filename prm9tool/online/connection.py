@@ -88,6 +88,7 @@ class ValveConnection(QObject):
         self._posted.connect(self._on_posted, Qt.ConnectionType.QueuedConnection)
         self.history: HistoryHook | None = None  # set_recorder(); used by the worker only
         self.auto_reconnect = True  # look for a lost valve until it is back (online/reconnect.py)
+        self.lost_during_operation = False  # the last loss cut a long operation off
         self._reconnector: Reconnector | None = None
 
     def set_recorder(self, recorder: Recorder) -> None:
@@ -429,6 +430,7 @@ class ValveConnection(QObject):
     def _report_lost(self, message: str) -> None:
         if self._online:
             device = self._device
+            self.lost_during_operation = self.is_busy  # an upload, download, … was cut off
             if self.auto_reconnect and device is not None and device.serial:
                 bus = getattr(device, "can_bus", None)  # known looking before going offline
                 self._make_reconnector(LostValve(device.serial, device.device_id, bus), None)

@@ -122,6 +122,7 @@ class MainStatusBar(QStatusBar):
             ).format(serial)
         self.mode_label.setText(self.tr("Mode: {0}").format(mode))
         self.mode_label.setToolTip(tip)
+        self.mode_label.setMinimumWidth(self.mode_label.sizeHint().width())  # never clipped
         levels = [self.tr("Level: {0}").format(t) for t in (self.tr("Basic"), self.tr("Expert"))]
         self.level_label.setText(levels[self._expert])
         margins = self.level_label.contentsMargins()  # as wide as the longer: no jump, no clip

@@ -221,6 +221,9 @@ class ScopeWidget(QWidget):
         itself): the recording stops, the display holds what came, the status says so."""
         if not (self._running and self._accepting):
             return  # the scope's own stop, or the restart of its stream
+        if self._connection.is_reconnecting:  # the link broke: recording on when it is back
+            self._on_link_lost()
+            return
         self._running = False
         self._accepting = False
         self.display.hold_all()

@@ -147,13 +147,13 @@ class ValveWorkflow(QObject):
         valve_key = self._valve_key()
         if valve_key is None:
             return
-        pristine = self._doc.path is None and not self._doc.modified
-        if pristine:
-            self._adopt_valve(valve_key, values)
-            return
+        back, self._back = self._back, False
         same_key = valve_key == self._doc.type_key
         differs = any(self._doc.values.get(mn) != value for mn, value in values.items())
-        back, self._back = self._back, False
+        pristine = self._doc.path is None and not self._doc.modified
+        if pristine and not (back and same_key and not differs):
+            self._adopt_valve(valve_key, values)
+            return
         if same_key and not differs:
             self._sync.start(values)
             self.message_posted.emit(
@@ -331,11 +331,11 @@ class ValveWorkflow(QObject):
         prompts.inform(self._window, prompts.Icon.Warning, self.tr("Valve communication"), message)
 
     def _on_connection_lost(self, message: str) -> None:
-        busy = self.progress.dialog is not None  # an upload, download, … was running
+        busy = self._connection.lost_during_operation  # an upload, download, … was cut off
         self.progress.close()
         if self._connection.is_reconnecting and not busy:
             self.message_posted.emit(
-                self.tr("Connection to the valve lost ({0}); looking for it…").format(message)
+                self.tr("Connection to the valve lost; looking for it… ({0})").format(message)
             )
             return
         text = self.tr(

@@ -1,0 +1,167 @@
+"""The main window when the valve drops off and comes back (emulated USB cable pulled and
+plugged back in): status bar, oscilloscope, generator, unsaved online edits, an upload."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import pytest
+from gui_support import E02, emulated, go_online, main_window, session_of
+from PySide6.QtWidgets import QDialog
+from valve_sets import changed_set
+
+from prm9tool.catalogue import CATALOGUE
+from prm9tool.device.usb.transport.emulator import LinkFaults
+from prm9tool.scope import Waveform
+from prm9tool.views import prompts
+from prm9tool.views.online_dialogs import DiffChoice, OnlineDiffDialog
+
+TIMEOUT = 10_000
+SERIAL = 4301
+SCREENSHOT = Path(__file__).resolve().parents[1] / "docs" / "screenshots"
+
+
+@pytest.fixture
+def window(qtbot, tmp_path, answers):
+    with main_window(qtbot, tmp_path) as win:
+        win.connection.auto_reconnect = True  # as in the program (off in gui_support)
+        go_online(qtbot, win, f"{E02}:{SERIAL}")
+        qtbot.waitUntil(lambda: win.sync.active, timeout=TIMEOUT)
+        yield win
+
+
+def pull_cable(qtbot, window):
+    """Valve → Emulated valve → Pull the USB cable; returns once the window looks for it."""
+    with qtbot.waitSignal(window.connection.reconnecting, timeout=TIMEOUT):
+        window.emulated_menu.cable_action.trigger()
+    assert not window.connection.is_online
+
+
+def plug_back(qtbot, window):
+    """Valve → Emulated valve → Plug the USB cable back in; returns once it is online."""
+    assert window.emulated_menu.plug_action.isEnabled()
+    with qtbot.waitSignal(window.connection.reconnected, timeout=TIMEOUT):
+        window.emulated_menu.plug_action.trigger()
+
+
+def valve_raw(mnemonic: str) -> int:
+    return int(emulated(SERIAL).read(*CATALOGUE[mnemonic].key))
+
+
+def test_idle_the_status_bar_counts_and_the_window_is_back_online(qtbot, window, answers):
+    pull_cable(qtbot, window)
+    mode = window.status.mode_label
+    assert mode.text().startswith("Mode: RECONNECTING… ") and mode.text().endswith(" s")
+    assert str(SERIAL) in mode.toolTip() and "nothing is written" in mode.toolTip()
+    assert answers.informed == []  # no dialog in the way: the status bar says it
+    assert "looking for it" in window.status.currentMessage()
+    assert not window.emulated_menu.cable_action.isEnabled()
+    status = window.status.status_label
+    counted = []  # the seconds go on while it looks (the picture shows a few)
+    window.connection.reconnecting.connect(counted.append)
+    qtbot.waitUntil(lambda: bool(counted) and counted[-1] >= 2, timeout=TIMEOUT)
+    assert mode.text().startswith(f"Mode: RECONNECTING… {int(counted[-1])} s")
+    laid_out = lambda: mode.geometry().right() < status.geometry().left()  # noqa: E731
+    qtbot.waitUntil(lambda: mode.width() >= mode.sizeHint().width() and laid_out(), timeout=TIMEOUT)
+    window.status.grab().save(str(SCREENSHOT / "status_bar_reconnecting.png"))
+    plug_back(qtbot, window)
+    qtbot.waitUntil(lambda: window.sync.active, timeout=TIMEOUT)
+    assert window.status.mode_label.text() == "Mode: ONLINE"
+    assert window.status.currentMessage() == "Back online: document and valve agree"
+    assert not window.emulated_menu.plug_action.isEnabled()
+
+
+def test_the_oscilloscope_records_on_when_the_valve_is_back(qtbot, window):
+    window.open_scope("position_actual")
+    scope = window.views["scope"]
+    scope.start()
+    qtbot.waitUntil(lambda: scope.capture is not None and scope.capture.buffer.total > 100,
+                    timeout=TIMEOUT)  # fmt: skip
+    pull_cable(qtbot, window)
+    assert not scope.running and window.current_view() == "scope"  # the view stays
+    plug_back(qtbot, window)
+    qtbot.waitUntil(lambda: scope.running, timeout=TIMEOUT)
+    before = scope.capture.buffer.total
+    qtbot.waitUntil(lambda: scope.capture.buffer.total > before + 100, timeout=TIMEOUT)
+
+
+def test_live_values_flow_again(qtbot, window):
+    pull_cable(qtbot, window)
+    with qtbot.waitSignal(window.connection.live_values_changed, timeout=TIMEOUT):
+        plug_back(qtbot, window)
+
+
+def test_the_generator_stops_with_the_link_and_is_not_restarted(qtbot, window, answers):
+    window.open_scope("setpoint_raw")
+    scope = window.views["scope"]
+    answers.answers.append(prompts.Button.Yes)
+    panel = scope.generator_panel
+    panel.waveform.setCurrentIndex(panel.waveform.findData(Waveform.STEP))
+    panel.button.click()
+    qtbot.waitUntil(lambda: valve_raw("SETPOVRON") == 1, timeout=TIMEOUT)
+    pull_cable(qtbot, window)
+    assert not scope.generator.running
+    plug_back(qtbot, window)
+    qtbot.waitUntil(lambda: window.sync.active, timeout=TIMEOUT)
+    assert not scope.generator.running  # it writes setpoints: only the user starts it again
+    qtbot.waitUntil(lambda: valve_raw("SETPOVRON") == 0, timeout=TIMEOUT)
+
+
+def test_unstored_online_edits_are_offered_not_sent(qtbot, window, monkeypatch):
+    """The valve was power-cycled while away: it lost an edit that was not stored. The
+    comparison shows it; the valve keeps its own value until the user decides."""
+    before = valve_raw("THRESETP")
+    window.doc.set_value("THRESETP", before + 100)
+    qtbot.waitUntil(lambda: valve_raw("THRESETP") == before + 100, timeout=TIMEOUT)
+    assert window.sync.unstored
+    pull_cable(qtbot, window)
+    emulated(SERIAL).restart()  # power cycle: the working values come from the EEPROM
+    offered = []
+
+    def decide(dialog):
+        offered.append(valve_raw("THRESETP"))
+        dialog.choice = DiffChoice.CANCEL
+        return QDialog.DialogCode.Rejected
+
+    monkeypatch.setattr(OnlineDiffDialog, "exec", decide)
+    plug_back(qtbot, window)
+    qtbot.waitUntil(lambda: bool(offered), timeout=TIMEOUT)
+    assert offered == [before]  # nothing was sent before the user's answer
+    qtbot.waitUntil(lambda: not window.connection.is_online, timeout=TIMEOUT)  # Cancel
+    assert valve_raw("THRESETP") == before
+    assert window.doc.value("THRESETP") == before + 100  # the edit is kept in the document
+
+
+def test_an_upload_cut_off_reports_and_is_not_resumed(qtbot, window, answers, monkeypatch):
+    window.doc.set_value("DTAMP", 2000)
+    qtbot.waitUntil(lambda: valve_raw("DTAMP") == 2000, timeout=TIMEOUT)
+    values = changed_set(window.doc.variant)  # every value differs: a long upload
+    offered = []
+    monkeypatch.setattr(
+        OnlineDiffDialog,
+        "exec",
+        lambda d: (
+            (offered.append(valve_raw("LIMTA")), setattr(d, "choice", DiffChoice.CANCEL))
+            and QDialog.DialogCode.Rejected
+        ),
+    )
+    worker, transport = window.connection._worker, session_of(window).transport
+    report_progress, cut = worker.progress, []
+
+    def cut_in_the_middle(done, total, step):  # the worker thread, inside the upload
+        if not cut and 0 < done < total and "write" in str(step):  # not the backup
+            cut.append(done)
+            transport.faults = LinkFaults(die_after=transport.reports_on_link)
+        report_progress(done, total, step)
+
+    monkeypatch.setattr(worker, "progress", cut_in_the_middle)
+    finished = []
+    window.connection.operation_finished.connect(lambda name, _r: finished.append(name))
+    with qtbot.waitSignal(window.connection.reconnected, timeout=TIMEOUT):
+        window.valve.upload_values(values)
+    assert cut and "upload" not in finished
+    report = answers.informed[-1]
+    assert "Connection to the valve lost" in report and "upload failed while" in report
+    assert "nothing is sent again by itself" in report
+    qtbot.waitUntil(lambda: bool(offered) or window.sync.active, timeout=TIMEOUT)
+    assert finished == ["compare"]  # the comparison; the upload did not run again by itself
