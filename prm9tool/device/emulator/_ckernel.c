@@ -51,13 +51,10 @@ enum { /* bits of the raw fault conditions (detect.conditions order) */
 /* Python's round(v) returns an int, which has no negative zero: "+ 0.0" turns -0.0 into 0.0. */
 static inline double py_round(double v) { return rint(v) + 0.0; }
 
-static inline double signal(const double *s, const double *in, int k)
+static inline double signal(const double *s, const double *in, const double *stat, int k)
 {
     switch (k) {
-    case 0: return in[I_STAT0];
-    case 1: return in[I_STAT1];
-    case 2: return in[I_STAT2];
-    case 3: return in[I_STAT3];
+    case 0: case 1: case 2: case 3: return stat[k];
     case 4: case 5: return s[S_R];
     case 6: return s[S_PV];
     case 7: return s[S_DG];
@@ -78,7 +75,8 @@ static inline double signal(const double *s, const double *in, int k)
 }
 
 /* Run n cycles; captured samples go to cap (3 doubles each). Returns the number of samples. */
-static Py_ssize_t cycles(double *st, const double *c, const double *in, long n, double *cap)
+static Py_ssize_t cycles(double *st, const double *c, const double *in, long n, double *cap,
+                         const double *prog)
 {
     double r = st[S_R], x = st[S_X], v = st[S_V], act = st[S_ACT], ia = st[S_IA], ib = st[S_IB];
     double f = st[S_F], ia_i = st[S_IA_I], ib_i = st[S_IB_I];
@@ -109,7 +107,9 @@ static Py_ssize_t cycles(double *st, const double *c, const double *in, long n, 
     const int sl_n = (int)c[C_SL_N];
     const double *sl_x = c + C_SL_X, *sl_k = c + C_SL_K, *sl_b = c + C_SL_B;
     const long mode = (long)in[I_MODE];
-    const double tgt = in[I_TGT], vs = in[I_VS], inv_vs = in[I_INV_VS];
+    double tgt = in[I_TGT];
+    const double vs = in[I_VS], inv_vs = in[I_INV_VS];
+    double stat[4] = {in[I_STAT0], in[I_STAT1], in[I_STAT2], in[I_STAT3]};
     const int short_a = in[I_SHORT_A] != 0.0, short_b = in[I_SHORT_B] != 0.0;
     const int on_a = in[I_ON_A] != 0.0, on_b = in[I_ON_B] != 0.0;
     const double aa = in[I_AA], ba = in[I_BA], ab = in[I_AB], bb = in[I_BB];
@@ -122,6 +122,11 @@ static Py_ssize_t cycles(double *st, const double *c, const double *in, long n, 
     Py_ssize_t samples = 0;
 
     for (long k = 0; k < n; k++) {
+        if (prog) { /* the generator's waveform: this cycle's static setpoint chain */
+            const double *p = prog + 4 * k;
+            stat[0] = p[0]; stat[1] = p[1]; stat[2] = p[2]; stat[3] = p[3];
+            tgt = p[3];
+        }
         /* demand value generator: four ramps */
         if (r != tgt) {
             if (r > 0.0 || (r == 0.0 && tgt > 0.0)) {
@@ -296,9 +301,9 @@ static Py_ssize_t cycles(double *st, const double *c, const double *in, long n, 
                 st[S_PE] = pe; st[S_U] = u; st[S_CA] = ca; st[S_CB] = cb; st[S_IA] = ia;
                 st[S_IB] = ib; st[S_DA] = da; st[S_DB] = db; st[S_S0] = s0;
                 double *row = cap + 3 * samples++;
-                row[0] = signal(st, in, cap0);
-                row[1] = signal(st, in, cap1);
-                row[2] = signal(st, in, cap2);
+                row[0] = signal(st, in, stat, cap0);
+                row[1] = signal(st, in, stat, cap1);
+                row[2] = signal(st, in, stat, cap2);
             }
         }
     }
@@ -374,19 +379,22 @@ static int get(PyObject *obj, Py_buffer *view, Py_ssize_t count, const char *wha
 }
 
 PyDoc_STRVAR(run_doc,
-"run(state, coefficients, inputs, n, countdown, tick, capture)\n"
+"run(state, coefficients, inputs, n, countdown, tick, capture, program=None)\n"
 "-> (cycles, ticks, samples, countdown)\n\n"
 "Run up to n control cycles. Without tick parameters (None) exactly min(n, countdown) cycles.\n"
 "With them, every 1 ms task due before n cycles that would change nothing is passed (counted\n"
 "in ticks) until one would, which is left for the caller (countdown 0). Captured samples go\n"
-"to capture (3 doubles each, room for n). The GIL is released while the cycles run.");
+"to capture (3 doubles each, room for n). program: the static setpoint chain (4 doubles:\n"
+"raw, threshold, gain, linearized) of each of the n cycles, or None (the inputs' values).\n"
+"The GIL is released while the cycles run.");
 
 static PyObject *run(PyObject *self, PyObject *args)
 {
-    PyObject *o_st, *o_c, *o_in, *o_t, *o_cap;
+    PyObject *o_st, *o_c, *o_in, *o_t, *o_cap, *o_prog = Py_None;
     long n, countdown;
     (void)self;
-    if (!PyArg_ParseTuple(args, "OOOllOO", &o_st, &o_c, &o_in, &n, &countdown, &o_t, &o_cap))
+    if (!PyArg_ParseTuple(args, "OOOllOO|O", &o_st, &o_c, &o_in, &n, &countdown, &o_t, &o_cap,
+                          &o_prog))
         return NULL;
     if (n < 0 || countdown < 1 || countdown > TICK_CYCLES) {
         PyErr_SetString(PyExc_ValueError, "run: n must be >= 0 and countdown 1...5");
@@ -399,21 +407,24 @@ static PyObject *run(PyObject *self, PyObject *args)
     const int ticking = o_t != Py_None;
     if (ticking && get(o_t, &b_t, T_COUNT, "tick") < 0) goto fail_in;
     if (get(o_cap, &b_cap, 3 * n, "capture") < 0) goto fail_t;
+    Py_buffer b_prog = {0};
+    const int programmed = o_prog != Py_None;
+    if (programmed && get(o_prog, &b_prog, 4 * n, "program") < 0) goto fail_cap;
     double *st = b_st.buf, *cap = b_cap.buf;
-    const double *c = b_c.buf, *in = b_in.buf, *t = b_t.buf;
+    const double *c = b_c.buf, *in = b_in.buf, *t = b_t.buf, *prog = b_prog.buf;
     long done = 0, ticks = 0;
     Py_ssize_t samples = 0;
     Py_BEGIN_ALLOW_THREADS
     if (!ticking) {
         done = n < countdown ? n : countdown;
-        samples = cycles(st, c, in, done, cap);
+        samples = cycles(st, c, in, done, cap, prog);
         countdown -= done;
     } else {
         const long max_ticks = (long)t[T_MAX_TICKS];
         const int64_t count0 = (int64_t)t[T_CYCLES0];
         while (done < n) {
             long seg = n - done < countdown ? n - done : countdown;
-            samples += cycles(st, c, in, seg, cap + 3 * samples);
+            samples += cycles(st, c, in, seg, cap + 3 * samples, prog ? prog + 4 * done : NULL);
             done += seg;
             countdown -= seg;
             if (countdown > 0) break;
@@ -423,12 +434,15 @@ static PyObject *run(PyObject *self, PyObject *args)
         }
     }
     Py_END_ALLOW_THREADS
+    if (programmed) PyBuffer_Release(&b_prog);
     PyBuffer_Release(&b_cap);
     if (ticking) PyBuffer_Release(&b_t);
     PyBuffer_Release(&b_in);
     PyBuffer_Release(&b_c);
     PyBuffer_Release(&b_st);
     return Py_BuildValue("(llnl)", done, ticks, samples, countdown);
+fail_cap:
+    PyBuffer_Release(&b_cap);
 fail_t:
     if (ticking) PyBuffer_Release(&b_t);
 fail_in:

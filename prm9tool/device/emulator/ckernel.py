@@ -305,13 +305,19 @@ class CompiledLoop:
             ],
         )
 
-    def cycles(self, n: int, countdown: int, tick: array | None) -> tuple[int, int, int]:
+    def cycles(
+        self, n: int, countdown: int, tick: array | None, program: Any = None
+    ) -> tuple[int, int, int]:
         """Run up to ``n`` cycles in C (see ``_ckernel.run``): (cycles, no-op 1 ms tasks passed,
-        cycles to the next 1 ms task; 0 = it is due and left to the caller)."""
+        cycles to the next 1 ms task; 0 = it is due and left to the caller).
+
+        ``program``: the static setpoint chain per cycle (a C-contiguous float array of ``n``
+        rows raw, threshold, gain, linearized), or None for the inputs' values.
+        """
         if len(self.scratch) < MAX_CHANNELS * n:
             self.scratch = array("d", bytes(8 * MAX_CHANNELS * n))
         done, ticks, samples, countdown = _ckernel.run(
-            self.state, self.coef, self.inputs, n, countdown, tick, self.scratch
+            self.state, self.coef, self.inputs, n, countdown, tick, self.scratch, program
         )
         if samples:
             self.cap_buffer.extend(self.scratch[: MAX_CHANNELS * samples])

@@ -12,6 +12,8 @@ import math
 from collections.abc import Callable
 from typing import Any
 
+import numpy as np
+
 from prm9tool.catalogue import dither
 from prm9tool.catalogue.variant import Coils, Config, Variant
 from prm9tool.device.emulator.constants import CYCLE_S, FULL, FirmwareConstants, PlantConstants
@@ -201,3 +203,32 @@ def static_setpoint(
     if values("SETPLINON") == -1:
         x = evaluate_curve(curve, x)
     return raw, after_threshold, after_gain, x
+
+
+def static_setpoint_array(
+    variant: Variant, values: Values, raw: np.ndarray, curve: Curve
+) -> np.ndarray:
+    """:func:`static_setpoint` of every value of ``raw``: rows (raw, threshold, gain, linear).
+
+    The same IEEE operations element by element (numpy rounds each one like Python does), so
+    every row equals the tuple :func:`static_setpoint` returns, bit for bit (the generator's
+    waveform in the compiled loop; tests/test_emulator_kernels.py).
+    """
+    raw = np.asarray(raw, dtype=np.float64)
+    x = -raw if values("INVERSEP") == 1 else raw.copy()
+    if variant.coils is not Coils.AB:
+        x[x < 0.0] = 0.0
+    x[np.abs(x) < values("THRESETP")] = 0.0
+    after_threshold = x.copy()
+    if not process_loop_on(variant, values):
+        pos, neg = x > 0.0, x < 0.0
+        g, off = gain_offset(values("GAINSETPOS"), values("OFFSETPOS"))
+        x[pos] = off + x[pos] * g
+        g, off = gain_offset(values("GAINSETNEG"), values("OFFSETNEG"))
+        x[neg] = -off + x[neg] * g
+        x = np.minimum(np.maximum(x, -FULL), FULL)
+    after_gain = x.copy()
+    if values("SETPLINON") == -1:
+        i = np.searchsorted(np.asarray(curve[0]), x, side="right")
+        x = np.asarray(curve[2])[i] + np.asarray(curve[1])[i] * x
+    return np.column_stack((raw, after_threshold, after_gain, x))

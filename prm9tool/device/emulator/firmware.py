@@ -13,7 +13,15 @@ from typing import TYPE_CHECKING, cast
 from prm9tool.catalogue import CATALOGUE, canopen_switches
 from prm9tool.catalogue.typekey import TypeKey
 from prm9tool.catalogue.variant import Coils
-from prm9tool.device.emulator import config, detect, fasttick, kernels, loop_inputs, thermal
+from prm9tool.device.emulator import (
+    config,
+    detect,
+    fasttick,
+    kernels,
+    loop_inputs,
+    override,
+    thermal,
+)
 from prm9tool.device.emulator.constants import (
     CYCLE_S,
     TICK_CYCLES,
@@ -96,7 +104,7 @@ class Firmware:
         self.can_enabled = self.terminator = False
         self.cycle_listeners: list[Callable[[float], None]] = []
         self.program: OverrideProgram | None = None  # a setpoint waveform on SETPOVR
-        self._setpovr_key = CATALOGUE["SETPOVR"].key
+        self.setpovr_key = CATALOGUE["SETPOVR"].key
         self.setpoint_dirty = True
         self.config_dirty = True
         self.coil_temperature = 25.0
@@ -127,11 +135,17 @@ class Firmware:
             if self.kernel == "compiled":
                 gen = cast("CompiledLoop", self.gen)
                 n = min(cycles, span)
+                program = None
+                if self.program is not None and self.override_on:
+                    program = override.program_rows(self, cycles)
+                    n = len(program)
                 tick = fasttick.parameters(self) if n > self.tick_countdown else None
                 gen.prepare()
-                n, ticks, countdown = gen.cycles(n, self.tick_countdown, tick)
+                n, ticks, countdown = gen.cycles(n, self.tick_countdown, tick, program)
                 gen.write_back()
                 self.ticks += ticks
+                if program is not None:
+                    override.program_ran(self, program[n - 1])
             else:
                 n = min(cycles, self.tick_countdown, span)
                 self.gen.send(n)
@@ -151,7 +165,7 @@ class Firmware:
         """
         assert self.program is not None
         value, span = self.program.value_and_span(self.cycles)
-        key = self._setpovr_key
+        key = self.setpovr_key
         if self.od.values.get(key) != value:
             self.od.values[key] = value
             if self.override_on and not (self.setpoint_dirty or self.config_dirty):
