@@ -17,7 +17,8 @@ from typing import TYPE_CHECKING
 
 from prm9tool.device.emulator import detect, thermal
 from prm9tool.device.emulator.constants import CYCLE_S
-from prm9tool.device.emulator.states import DeviceState, Fault
+from prm9tool.device.emulator.states import Fault
+from prm9tool.device.records import DeviceState
 
 if TYPE_CHECKING:
     from prm9tool.device.emulator.firmware import Firmware
