@@ -38,12 +38,15 @@ enum { /* the 1 ms task's no-op test (see fasttick.py) */
     T_CYCLE_S, T_CYCLES0, T_BOOTING, T_BOOT_S, T_MAX_TICKS, T_OVR_ON, T_OVR_LAST, T_OVR_TIMEOUT,
     T_EVAL, T_REF_MASK, T_STATIC_BITS, T_OVERCURRENT_MA, T_TEMP_ALARM, T_MON_THR,
     T_STATE_ACTIVE, T_PRESENT_MON, T_SUPPLY, T_COIL_OPEN_A, T_COIL_OPEN_B, T_HAS_A, T_HAS_B,
-    T_OC_HOLD_A, T_OC_HOLD_B, T_LOOP_BREAK_MA, T_OPEN_MIN_V, T_OPEN_MA, T_N_DEADLINES,
-    T_DEADLINES, T_COUNT = T_DEADLINES + 3 * 16
+    T_OC_HOLD_A, T_OC_HOLD_B, T_LOOP_BREAK_MA, T_OPEN_MIN_V, T_OPEN_MA,
+    /* the thermal model (thermal.step every THERMAL_TICKS); T_RISE and T_TEMPERATURE in/out */
+    T_THERMAL, T_TICKS0, T_THERMAL_TICKS, T_DT, T_R_COIL, T_LOSS_W, T_K_PER_W, T_TAU_S,
+    T_AMBIENT, T_COIL_T, T_COIL_REFRESH_K, T_RISE, T_TEMPERATURE, T_WARN_C, T_WARN_OFF_C,
+    T_WARNING, T_TEMP_LIMIT, T_N_DEADLINES, T_DEADLINES, T_COUNT = T_DEADLINES + 3 * 16
 };
 enum { /* bits of the raw fault conditions (detect.conditions order) */
     B_COIL_A_OPEN = 1 << 2, B_COIL_B_OPEN = 1 << 3, B_POSITION = 1 << 4,
-    B_COIL_A_OC = 1 << 5, B_COIL_B_OC = 1 << 6, B_MONITORING = 1 << 9
+    B_COIL_A_OC = 1 << 5, B_COIL_B_OC = 1 << 6, B_TEMPERATURE = 1 << 8, B_MONITORING = 1 << 9
 };
 #define TICK_CYCLES 5
 #define TWO_PI 6.283185307179586 /* 2.0 * math.pi */
@@ -321,20 +324,37 @@ static Py_ssize_t cycles(double *st, const double *c, const double *in, long n, 
 
 /* True if the firmware's 1 ms task at the end of cycle number `count` would change nothing:
  * Firmware.tick's every step, with the parameters fasttick.py derived from the firmware. */
-static int tick_is_noop(const double *st, const double *c, const double *in, const double *t,
-                        int64_t count)
+static int tick_is_noop(const double *st, const double *c, const double *in, double *t,
+                        int64_t count, int64_t tick)
 {
     const double now = (double)count * t[T_CYCLE_S];
     if (t[T_BOOTING] != 0.0 && now >= t[T_BOOT_S] - 1e-9) return 0;
     const double ia = st[S_IA], ib = st[S_IB];
+    double temperature = t[T_TEMPERATURE], rise = t[T_RISE];
+    int temp_alarm = t[T_TEMP_ALARM] != 0.0;
+    int64_t static_bits = (int64_t)t[T_STATIC_BITS];
+    if (tick % (int64_t)t[T_THERMAL_TICKS] == 0) {
+        /* thermal.step: the same expressions; anything beyond a new reading is left to Python */
+        if (t[T_THERMAL] == 0.0) return 0;
+        const double power = t[T_R_COIL] * (ia * ia + ib * ib) * 1e-6 + t[T_LOSS_W];
+        rise += (t[T_K_PER_W] * power - rise) * t[T_DT] / t[T_TAU_S];
+        temperature = t[T_AMBIENT] + rise;
+        if (fabs(temperature - t[T_COIL_T]) > t[T_COIL_REFRESH_K]) return 0;
+        const int warning = temperature > t[T_WARN_C] ||
+                            (t[T_WARNING] != 0.0 && temperature > t[T_WARN_OFF_C]);
+        if (warning != (t[T_WARNING] != 0.0)) return 0;
+        temp_alarm = temperature > t[T_WARN_C];
+        static_bits &= ~(int64_t)B_TEMPERATURE;
+        if (temperature > t[T_TEMP_LIMIT]) static_bits |= B_TEMPERATURE;
+    }
     const double ctrl_dev = c[C_PROCESS_ON] != 0.0 ? st[S_DEV] : st[S_R] - st[S_XM];
     const int beyond = fabs(ctrl_dev) > t[T_MON_THR];
     const double limit = t[T_OVERCURRENT_MA];
-    const int alarm = ia > limit || ib > limit || t[T_TEMP_ALARM] != 0.0 ||
+    const int alarm = ia > limit || ib > limit || temp_alarm ||
                       (beyond && t[T_STATE_ACTIVE] != 0.0);
     if (t[T_EVAL] != 0.0 || alarm) {
         /* FaultMonitor.update changes nothing if every raw condition is as last fed ... */
-        int64_t mask = (int64_t)t[T_STATIC_BITS];
+        int64_t mask = static_bits;
         const double supply = t[T_SUPPLY];
         if (t[T_HAS_A] != 0.0 &&
             (st[S_DA] * supply >= t[T_OPEN_MIN_V] ? ia < t[T_OPEN_MA] : t[T_COIL_OPEN_A] != 0.0))
@@ -361,6 +381,11 @@ static int tick_is_noop(const double *st, const double *c, const double *in, con
         }
     }
     if (t[T_OVR_ON] != 0.0 && now - t[T_OVR_LAST] > t[T_OVR_TIMEOUT]) return 0;
+    /* a no-op but for the thermal model: commit it (the caller hands the reading on) */
+    t[T_RISE] = rise;
+    t[T_TEMPERATURE] = temperature;
+    t[T_TEMP_ALARM] = temp_alarm;
+    t[T_STATIC_BITS] = (double)static_bits;
     return 1;
 }
 
@@ -410,8 +435,8 @@ static PyObject *run(PyObject *self, PyObject *args)
     Py_buffer b_prog = {0};
     const int programmed = o_prog != Py_None;
     if (programmed && get(o_prog, &b_prog, 4 * n, "program") < 0) goto fail_cap;
-    double *st = b_st.buf, *cap = b_cap.buf;
-    const double *c = b_c.buf, *in = b_in.buf, *t = b_t.buf, *prog = b_prog.buf;
+    double *st = b_st.buf, *cap = b_cap.buf, *in = b_in.buf, *t = b_t.buf;
+    const double *c = b_c.buf, *prog = b_prog.buf;
     long done = 0, ticks = 0;
     Py_ssize_t samples = 0;
     Py_BEGIN_ALLOW_THREADS
@@ -421,15 +446,17 @@ static PyObject *run(PyObject *self, PyObject *args)
         countdown -= done;
     } else {
         const long max_ticks = (long)t[T_MAX_TICKS];
-        const int64_t count0 = (int64_t)t[T_CYCLES0];
+        const int64_t count0 = (int64_t)t[T_CYCLES0], ticks0 = (int64_t)t[T_TICKS0];
         while (done < n) {
             long seg = n - done < countdown ? n - done : countdown;
             samples += cycles(st, c, in, seg, cap + 3 * samples, prog ? prog + 4 * done : NULL);
             done += seg;
             countdown -= seg;
             if (countdown > 0) break;
-            if (ticks >= max_ticks || !tick_is_noop(st, c, in, t, count0 + done)) break;
+            if (ticks >= max_ticks || !tick_is_noop(st, c, in, t, count0 + done, ticks0 + ticks + 1))
+                break;
             ticks++;
+            in[I_TEMP10] = t[T_TEMPERATURE] * 10.0; /* Firmware._update_outputs' new reading */
             countdown = TICK_CYCLES;
         }
     }
@@ -465,6 +492,9 @@ static int exec_module(PyObject *m)
     if (PyModule_AddIntConstant(m, "COEFFICIENT_COUNT", C_COUNT) < 0) return -1;
     if (PyModule_AddIntConstant(m, "INPUT_COUNT", I_COUNT) < 0) return -1;
     if (PyModule_AddIntConstant(m, "TICK_COUNT", T_COUNT) < 0) return -1;
+    if (PyModule_AddIntConstant(m, "TICK_RISE", T_RISE) < 0) return -1;
+    if (PyModule_AddIntConstant(m, "TICK_TEMPERATURE", T_TEMPERATURE) < 0) return -1;
+    if (PyModule_AddIntConstant(m, "TICK_DEADLINES", T_DEADLINES) < 0) return -1;
     if (PyModule_AddIntConstant(m, "CURVE_POINTS", 16) < 0) return -1;
     if (PyModule_AddIntConstant(m, "MAX_DEADLINES", 16) < 0) return -1;
     return 0;

@@ -14,7 +14,7 @@ from array import array
 from typing import Any
 
 from prm9tool.catalogue.signals import MAX_CHANNELS
-from prm9tool.device.emulator import _ckernel  # type: ignore[attr-defined]
+from prm9tool.device.emulator import _ckernel, fasttick  # type: ignore[attr-defined]
 from prm9tool.device.emulator.constants import TICK_CYCLES
 from prm9tool.device.emulator.loopstate import MODE_ACTIVE, MODE_OFF, LoopState
 
@@ -152,6 +152,12 @@ if (
     or len(INPUTS) != _ckernel.INPUT_COUNT
 ):
     raise ImportError("_ckernel was built from another version of the layout: rebuild it")
+if (fasttick.TICK_RISE, fasttick.TICK_TEMPERATURE, fasttick.TICK_DEADLINES) != (
+    _ckernel.TICK_RISE,
+    _ckernel.TICK_TEMPERATURE,
+    _ckernel.TICK_DEADLINES,
+) or fasttick.TICK_DEADLINES + 3 * fasttick.MAX_DEADLINES != _ckernel.TICK_COUNT:
+    raise ImportError("_ckernel was built from another version of the tick layout: rebuild it")
 _X, _V, _ACT, _R, _PV, _XM = S["x"], S["v"], S["act"], S["r"], S["pv"], S["xm"]
 _IA, _IB, _DA, _DB, _DEV = S["ia"], S["ib"], S["da"], S["db"], S["dev"]
 

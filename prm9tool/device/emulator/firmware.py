@@ -8,20 +8,11 @@ from __future__ import annotations
 
 import os
 from collections.abc import Callable
-from typing import TYPE_CHECKING, cast
 
 from prm9tool.catalogue import CATALOGUE, canopen_switches
 from prm9tool.catalogue.typekey import TypeKey
 from prm9tool.catalogue.variant import Coils
-from prm9tool.device.emulator import (
-    config,
-    detect,
-    fasttick,
-    kernels,
-    loop_inputs,
-    override,
-    thermal,
-)
+from prm9tool.device.emulator import config, detect, fasttick, kernels, loop_inputs, thermal
 from prm9tool.device.emulator.constants import (
     CYCLE_S,
     TICK_CYCLES,
@@ -42,9 +33,6 @@ from prm9tool.device.emulator.override import OverrideProgram
 from prm9tool.device.emulator.statemachine import DeviceStateMachine
 from prm9tool.device.emulator.states import Fault
 from prm9tool.device.records import DeviceState, NmtState
-
-if TYPE_CHECKING:
-    from prm9tool.device.emulator.ckernel import CompiledLoop
 
 AUTO_CONTROL_WORD = 0x0F  # analog-only mode: the firmware enables itself (decision)
 _ACTIVE_STATES = (DeviceState.HOLD, DeviceState.DEVICE_MODE_ACTIVE, DeviceState.FAULT_HOLD)
@@ -134,19 +122,7 @@ class Firmware:
             if self.setpoint_dirty or self.config_dirty:
                 self._refresh_inputs()
             if self.kernel == "compiled":
-                gen = cast("CompiledLoop", self.gen)
-                n = min(cycles, span)
-                program = None
-                if self.program is not None and self.override_on:
-                    program = override.program_rows(self, cycles)
-                    n = len(program)
-                tick = fasttick.parameters(self) if n > self.tick_countdown else None
-                gen.prepare()
-                n, ticks, countdown = gen.cycles(n, self.tick_countdown, tick, program)
-                gen.write_back()
-                self.ticks += ticks
-                if program is not None:
-                    override.program_ran(self, program[n - 1])
+                n, countdown = fasttick.compiled_batch(self, cycles, span)
             else:
                 n = min(cycles, self.tick_countdown, span)
                 self.gen.send(n)
