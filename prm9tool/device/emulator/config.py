@@ -205,30 +205,43 @@ def static_setpoint(
     return raw, after_threshold, after_gain, x
 
 
-def static_setpoint_array(
-    variant: Variant, values: Values, raw: np.ndarray, curve: Curve
-) -> np.ndarray:
+SetpointChain = tuple[bool, bool, int, bool, float, float, float, float, bool]
+
+
+def setpoint_chain(variant: Variant, values: Values) -> SetpointChain:
+    """The parameters :func:`static_setpoint` reads, for :func:`static_setpoint_array`."""
+    return (
+        values("INVERSEP") == 1,
+        variant.coils is not Coils.AB,
+        values("THRESETP"),
+        not process_loop_on(variant, values),
+        *gain_offset(values("GAINSETPOS"), values("OFFSETPOS")),
+        *gain_offset(values("GAINSETNEG"), values("OFFSETNEG")),
+        values("SETPLINON") == -1,
+    )
+
+
+def static_setpoint_array(chain: SetpointChain, raw: np.ndarray, curve: Curve) -> np.ndarray:
     """:func:`static_setpoint` of every value of ``raw``: rows (raw, threshold, gain, linear).
 
     The same IEEE operations element by element (numpy rounds each one like Python does), so
     every row equals the tuple :func:`static_setpoint` returns, bit for bit (the generator's
     waveform in the compiled loop; tests/test_emulator_kernels.py).
     """
+    inverse, one_coil, threshold, gain_on, gp, op, gn, on_, linearize = chain
     raw = np.asarray(raw, dtype=np.float64)
-    x = -raw if values("INVERSEP") == 1 else raw.copy()
-    if variant.coils is not Coils.AB:
+    x = -raw if inverse else raw.copy()
+    if one_coil:
         x[x < 0.0] = 0.0
-    x[np.abs(x) < values("THRESETP")] = 0.0
+    x[np.abs(x) < threshold] = 0.0
     after_threshold = x.copy()
-    if not process_loop_on(variant, values):
+    if gain_on:
         pos, neg = x > 0.0, x < 0.0
-        g, off = gain_offset(values("GAINSETPOS"), values("OFFSETPOS"))
-        x[pos] = off + x[pos] * g
-        g, off = gain_offset(values("GAINSETNEG"), values("OFFSETNEG"))
-        x[neg] = -off + x[neg] * g
+        x[pos] = op + x[pos] * gp
+        x[neg] = -on_ + x[neg] * gn
         x = np.minimum(np.maximum(x, -FULL), FULL)
     after_gain = x.copy()
-    if values("SETPLINON") == -1:
+    if linearize:
         i = np.searchsorted(np.asarray(curve[0]), x, side="right")
         x = np.asarray(curve[2])[i] + np.asarray(curve[1])[i] * x
     return np.column_stack((raw, after_threshold, after_gain, x))

@@ -33,6 +33,7 @@ class OverrideProgram:
         self._first = 0
         self._values = np.empty(0, dtype=np.int64)
         self._changes = np.empty(0, dtype=np.int64)  # positions in _values where it changes
+        self.chain: tuple[int, config.SetpointChain] | None = None  # (loop version, chain)
 
     def value_and_span(self, cycle: int) -> tuple[int, int]:
         """SETPOVR at ``cycle`` and for how many cycles from there on it stays so (≥ 1)."""
@@ -67,9 +68,13 @@ def program_rows(fw: Firmware, cycles: int) -> np.ndarray:
     The value of this cycle is applied already (``Firmware._apply_program``); the compiled loop
     takes it and the following ones cycle by cycle, instead of one batch per value.
     """
-    assert fw.program is not None
-    raw = fw.program.upcoming(fw.cycles, cycles)
-    rows = config.static_setpoint_array(fw.variant, fw.value, raw, fw.setp_curve)
+    program = fw.program
+    assert program is not None
+    raw = program.upcoming(fw.cycles, cycles)
+    version = fw.loop.version  # a parameter write rebuilds the coefficients: a new version
+    if program.chain is None or program.chain[0] != version:
+        program.chain = (version, config.setpoint_chain(fw.variant, fw.value))
+    rows = config.static_setpoint_array(program.chain[1], raw, fw.setp_curve)
     return np.ascontiguousarray(rows)
 
 
