@@ -26,7 +26,7 @@ enum { /* coefficients */
     C_QKP, C_QKI, C_QKD, C_QT1, C_OUT_LO, C_KCUR, C_LIM_A, C_LIM_B, C_DAMP, C_DPH, C_CKP, C_CKI,
     C_RFF_A, C_RFF_B, C_VMAX_I, C_KF, C_KS, C_CD, C_FC, C_FS, C_IM, C_H, C_NSUB, C_XMAX, C_FLAG,
     C_KX, C_LVDT_Q, C_LVDT_LO, C_LVDT_MA_K, C_LVDT_SAT, C_S_A, C_S_B, C_S_Q, C_S_O, C_SINV,
-    C_SOFFS, C_SGAIN, C_SLIN, C_GP, C_OP, C_GN, C_ON, C_ACT_K, C_OVERLAP, C_ACT_RET, C_SL_N,
+    C_SOFFS, C_SGAIN, C_SLIN, C_GP, C_OP, C_GN, C_ON, C_ACT_K, C_OVERLAP, C_ACT_RET, C_FULL, C_SL_N,
     C_SL_X, C_SL_K = C_SL_X + 16, C_SL_B = C_SL_K + 17, C_COUNT = C_SL_B + 17
 };
 enum { /* per-batch inputs */
@@ -95,6 +95,7 @@ static Py_ssize_t cycles(double *st, const double *c, const double *in, long n, 
     const double rpu = c[C_RPU], rpd = c[C_RPD], rnu = c[C_RNU], rnd = c[C_RND];
     const double pkp = c[C_PKP], pki = c[C_PKI], pkd = c[C_PKD], pt1 = c[C_PT1];
     const double qkp = c[C_QKP], qki = c[C_QKI], qkd = c[C_QKD], qt1 = c[C_QT1];
+    const double full = c[C_FULL]; /* 100 %: the controllers' and the sensor path's limit */
     const double out_lo = c[C_OUT_LO], kcur = c[C_KCUR], lim_a = c[C_LIM_A], lim_b = c[C_LIM_B];
     const double damp = c[C_DAMP], dph = c[C_DPH], ckp = c[C_CKP], cki = c[C_CKI];
     const double rff_a = c[C_RFF_A], rff_b = c[C_RFF_B], vmax_i = c[C_VMAX_I];
@@ -158,8 +159,8 @@ static Py_ssize_t cycles(double *st, const double *c, const double *in, long n, 
             s1 = sinv ? -s0 : s0;
             s2 = s1 + soffs;
             s3 = s2 * sgain;
-            if (s3 > 16384.0) s3 = 16384.0;
-            else if (s3 < -16384.0) s3 = -16384.0;
+            if (s3 > full) s3 = full;
+            else if (s3 < -full) s3 = -full;
             if (slin) {
                 int i = 0;
                 while (i < sl_n && sl_x[i] <= s3) i++; /* bisect_right */
@@ -176,12 +177,12 @@ static Py_ssize_t cycles(double *st, const double *c, const double *in, long n, 
         }
         if (process) {
             q_int += qki * dg;
-            if (q_int > 16384.0) q_int = 16384.0;
+            if (q_int > full) q_int = full;
             else if (q_int < out_lo) q_int = out_lo;
             q_d = qt1 * q_d + qkd * (dg - q_prev);
             q_prev = dg;
             w = qkp * dg + q_int + q_d;
-            if (w > 16384.0) w = 16384.0;
+            if (w > full) w = full;
             else if (w < out_lo) w = out_lo;
         } else if (active) {
             w = r;
@@ -192,12 +193,12 @@ static Py_ssize_t cycles(double *st, const double *c, const double *in, long n, 
         pe = w - xm;
         if (mode) {
             p_int += pki * pe;
-            if (p_int > 16384.0) p_int = 16384.0;
+            if (p_int > full) p_int = full;
             else if (p_int < out_lo) p_int = out_lo;
             p_d = pt1 * p_d + pkd * (pe - p_prev);
             p_prev = pe;
             u = pkp * pe + p_int + p_d;
-            if (u > 16384.0) u = 16384.0;
+            if (u > full) u = full;
             else if (u < out_lo) u = out_lo;
         } else {
             u = 0.0;

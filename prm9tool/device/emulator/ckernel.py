@@ -15,7 +15,7 @@ from typing import Any
 
 from prm9tool.catalogue.signals import MAX_CHANNELS
 from prm9tool.device.emulator import _ckernel, fasttick  # type: ignore[attr-defined]
-from prm9tool.device.emulator.constants import TICK_CYCLES
+from prm9tool.device.emulator.constants import FULL, TICK_CYCLES
 from prm9tool.device.emulator.loopstate import MODE_ACTIVE, MODE_OFF, LoopState
 
 # Slots of the flat arrays; the order is the C enums' (_ckernel.c).
@@ -114,6 +114,7 @@ SCALARS = [
     "act_k",
     "overlap",
     "act_ret",
+    "full",
     "sl_n",
 ]
 CURVE = _ckernel.CURVE_POINTS  # room per curve array
@@ -177,7 +178,7 @@ def coefficient_array(c: dict[str, Any]) -> array:
         *c["ramp_steps"],
         *c["position_pid"],
         *c["process_pid"],
-        0.0 if not two else -16384.0,
+        0.0 if not two else -FULL,
         c["ma_per_count"],
         *c["limits_ma"],
         *c["dither"],
@@ -188,6 +189,7 @@ def coefficient_array(c: dict[str, Any]) -> array:
         *c["sensor"],
         *c["deviation_gain"],
         *c["actuator"],
+        FULL,
         len(sl_x),
     ]
     # mechanics: kf ks cd fc fs im h nsub xmax flag (nsub is an int: exact in a double)
