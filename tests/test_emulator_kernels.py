@@ -280,3 +280,55 @@ def test_capture_and_generator_are_exercised_by_a_sine_on_the_compiled_kernel() 
     samples = valve.capture_read()[:, 0]
     assert len(samples) == 250
     assert samples.max() > 7000 and samples.min() < -7000
+
+
+@pytest.fixture
+def fresh_choice() -> Iterator[None]:
+    """The process's kernel choice forgotten before and after (chosen at the next valve)."""
+    kernels.use(None)
+    yield
+    kernels.use(None)
+
+
+def test_the_compiled_kernel_is_the_default_and_said_once_in_the_log(
+    fresh_choice: None, monkeypatch: pytest.MonkeyPatch, caplog: pytest.LogCaptureFixture
+) -> None:
+    monkeypatch.delenv(kernels.ENV, raising=False)
+    with caplog.at_level("INFO", logger=kernels.__name__):
+        first = EmulatedValve(VARIANTS["E02"][0])
+        second = EmulatedValve(VARIANTS["E04"][0])
+    assert first._fw.kernel == second._fw.kernel == "compiled"
+    said = [r.getMessage() for r in caplog.records if r.name == kernels.__name__]
+    assert said == ["emulator: compiled control loop"]
+
+
+def test_the_environment_variable_forces_the_python_kernel(
+    fresh_choice: None, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    monkeypatch.setenv(kernels.ENV, "python")
+    assert EmulatedValve(VARIANTS["E02"][0])._fw.kernel == "python"
+
+
+def test_an_unknown_kernel_name_is_a_clear_error(
+    fresh_choice: None, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    monkeypatch.setenv(kernels.ENV, "fortran")
+    with pytest.raises(
+        Prm9Error, match=r"PRM9TOOL_EMULATOR_KERNEL='fortran': use 'python' or 'compiled'"
+    ):
+        EmulatedValve(VARIANTS["E02"][0])
+
+
+def test_a_forced_compiled_kernel_that_is_unavailable_is_a_clear_error_and_else_python_runs(
+    fresh_choice: None, monkeypatch: pytest.MonkeyPatch, caplog: pytest.LogCaptureFixture
+) -> None:
+    monkeypatch.setattr(kernels, "compiled_unavailable", lambda: "no _ckernel (no compiler)")
+    monkeypatch.setenv(kernels.ENV, "compiled")
+    with pytest.raises(Prm9Error, match="compiled kernel is unavailable: no _ckernel"):
+        EmulatedValve(VARIANTS["E02"][0])
+    monkeypatch.delenv(kernels.ENV)
+    kernels.use(None)
+    with caplog.at_level("WARNING", logger=kernels.__name__):
+        valve = EmulatedValve(VARIANTS["E02"][0])
+    assert valve._fw.kernel == "python"
+    assert "compiled control loop unavailable (no _ckernel (no compiler))" in caplog.text
