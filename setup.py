@@ -5,8 +5,16 @@ runs on the pure-Python reference loop (docs/emulator.md "Compiled kernel"). The
 IEEE double arithmetic exactly as CPython evaluates it: no fast-math, no fused multiply-add.
 """
 
+import hashlib
+from pathlib import Path
+
 from setuptools import Extension, setup
 from setuptools.command.build_ext import build_ext
+
+SOURCE = "prm9tool/device/emulator/_ckernel.c"
+# The module carries the hash of its source: ckernel.py refuses a build older than the source
+# in a working tree (an edited _ckernel.c that was not rebuilt).
+SOURCE_HASH = hashlib.sha256((Path(__file__).parent / SOURCE).read_bytes()).hexdigest()[:16]
 
 FLAGS = {
     "unix": ["-O2", "-ffp-contract=off", "-fno-fast-math", "-std=c99"],
@@ -29,7 +37,8 @@ setup(
     ext_modules=[
         Extension(
             "prm9tool.device.emulator._ckernel",
-            ["prm9tool/device/emulator/_ckernel.c"],
+            [SOURCE],
+            define_macros=[("SOURCE_HASH", f'"{SOURCE_HASH}"')],
             optional=True,  # no compiler: installs anyway, the Python loop runs
         )
     ],

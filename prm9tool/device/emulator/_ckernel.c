@@ -489,6 +489,10 @@ static PyMethodDef methods[] = {
 
 static int exec_module(PyObject *m)
 {
+#ifndef SOURCE_HASH
+#define SOURCE_HASH ""
+#endif
+    if (PyModule_AddStringConstant(m, "SOURCE_HASH", SOURCE_HASH) < 0) return -1;
     if (PyModule_AddIntConstant(m, "STATE_COUNT", S_COUNT) < 0) return -1;
     if (PyModule_AddIntConstant(m, "COEFFICIENT_COUNT", C_COUNT) < 0) return -1;
     if (PyModule_AddIntConstant(m, "INPUT_COUNT", I_COUNT) < 0) return -1;

@@ -11,6 +11,8 @@ same order as in the reference.
 from __future__ import annotations
 
 from array import array
+from hashlib import sha256
+from pathlib import Path
 from typing import Any
 
 from prm9tool.catalogue.signals import MAX_CHANNELS
@@ -153,6 +155,10 @@ if (
     or len(INPUTS) != _ckernel.INPUT_COUNT
 ):
     raise ImportError("_ckernel was built from another version of the layout: rebuild it")
+_SOURCE = Path(__file__).with_name("_ckernel.c")  # absent in a wheel or a bundled program
+_BUILT_FROM = getattr(_ckernel, "SOURCE_HASH", None)
+if _SOURCE.exists() and sha256(_SOURCE.read_bytes()).hexdigest()[:16] != _BUILT_FROM:
+    raise ImportError("_ckernel is older than _ckernel.c: rebuild it")
 if (fasttick.TICK_RISE, fasttick.TICK_TEMPERATURE, fasttick.TICK_DEADLINES) != (
     _ckernel.TICK_RISE,
     _ckernel.TICK_TEMPERATURE,
