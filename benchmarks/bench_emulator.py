@@ -259,8 +259,8 @@ def main() -> None:
                 type_key, args.seconds, args.repeat, kernel_name
             )
             print(
-                f"{name} all features, {kernel_name} kernel: {cost * 1e6:6.3f} µs/cycle, "
-                f"{CYCLE_S / cost:7.1f} x real time, {cost / reference:5.2f}x the minimal cascade"
+                f"{name} all features, {kernel_name} kernel: {cost * 1e6:.3f} µs/cycle, "
+                f"{CYCLE_S / cost:.1f} x real time, {cost / reference:.2f}x the minimal cascade"
             )
             if args.generator:
                 _generator_line(name, type_key, args, kernel_name, cost)
@@ -268,7 +268,7 @@ def main() -> None:
                 profile(type_key, kernel_name)
         if len(costs) == 2:
             print(
-                f"{name}: the compiled kernel is {costs['python'] / costs['compiled']:5.1f}x "
+                f"{name}: the compiled kernel is {costs['python'] / costs['compiled']:.1f}x "
                 "faster than the python kernel"
             )
         if args.lines:
@@ -280,7 +280,7 @@ def main() -> None:
         share, ratio, dropped = paced_bus_share(args.valves, args.bus_seconds, kernel_name)
         print(
             f"{args.valves} paced E04 -CA valves on one bus, {kernel_name} kernel: "
-            f"{share * 100:5.1f} % of one core, slowest valve {ratio:.4f} s simulated per s, "
+            f"{share * 100:.1f} % of one core, slowest valve {ratio:.4f} s simulated per s, "
             f"dropped cycles: {dropped}"
         )
     if args.paced > 0:
@@ -298,7 +298,7 @@ def _generator_line(
     driven = generator_cycle_s(type_key, args.seconds, args.repeat, kernel_name)
     print(
         f"{name} with the generator's 20 Hz sine on the override, {kernel_name} kernel: "
-        f"{driven * 1e6:6.3f} µs/cycle, {CYCLE_S / driven:7.1f} x real time, "
+        f"{driven * 1e6:.3f} µs/cycle, {CYCLE_S / driven:.1f} x real time, "
         f"{driven / cost:4.2f}x the square-wave run"
     )
 
