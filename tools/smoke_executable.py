@@ -99,6 +99,8 @@ def _clean_env(work: Path) -> dict[str, str]:
         XDG_CONFIG_HOME=str(work / "config"),
         PRM9TOOL_DATA_DIR=str(work / "data"),
         QT_QPA_PLATFORM="offscreen",
+        # the emulated valves must run on the compiled control loop the build bundles
+        PRM9TOOL_EMULATOR_KERNEL="compiled",
     )
     return env
 
