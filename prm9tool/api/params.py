@@ -19,7 +19,7 @@ from prm9tool.files.prmfile import PrmContents, read_file, write_file
 Display = float | int | str
 """A value in display units: a number (int when the catalogue's scale is 1) or a text."""
 
-__all__ = ["Display", "ParameterSet", "lookup", "read_prm", "write_prm"]
+__all__ = ["Display", "ParameterSet", "display", "lookup", "read_prm", "write_prm"]
 
 
 class ParameterSet(MutableMapping[str, Display]):
@@ -84,8 +84,8 @@ class ParameterSet(MutableMapping[str, Display]):
 
     # --- the mapping ------------------------------------------------------------------------
     def __getitem__(self, mnemonic: str) -> Display:
-        raw = self._raw[self._parameter(mnemonic).mnemonic]
-        return self._params[mnemonic].to_display(raw)
+        param = self._parameter(mnemonic)
+        return display(param, self._raw[mnemonic])
 
     def __setitem__(self, mnemonic: str, value: Display) -> None:
         param = self._parameter(mnemonic)
@@ -127,6 +127,16 @@ class ParameterSet(MutableMapping[str, Display]):
     def _parameter(self, mnemonic: str) -> Parameter:
         where = f"in the parameter set of a {self.type_key.variant.label} valve"
         return lookup(self._params, mnemonic, where)
+
+
+def display(param: Parameter, raw: Value) -> Display:
+    """``raw`` in display units: an int when the scale is 1, else the shortest decimal that
+    reads back to exactly ``raw`` (``12.5``, not ``12.500000000000002``); a text as it is."""
+    if param.is_string or isinstance(raw, str):
+        return raw
+    if param.scale == 1.0:
+        return int(raw)
+    return float(param.format_display(raw))
 
 
 def lookup(params: Mapping[str, Parameter], mnemonic: str, where: str) -> Parameter:

@@ -15,7 +15,7 @@ import time
 from collections.abc import Callable, Mapping, Sequence
 from typing import TYPE_CHECKING, Any
 
-from prm9tool.api.params import Display, ParameterSet, as_parameter_set, lookup
+from prm9tool.api.params import Display, ParameterSet, as_parameter_set, display, lookup
 from prm9tool.catalogue import CATALOGUE, Parameter
 from prm9tool.catalogue.commissioning import (
     CONTROL_WORD,
@@ -102,7 +102,7 @@ class Valve:
     # --- single values ------------------------------------------------------------------------
     def __getitem__(self, mnemonic: str) -> Display:
         param = self.parameter(mnemonic)
-        return param.to_display(self._session.read(mnemonic))
+        return display(param, self._session.read(mnemonic))
 
     def __setitem__(self, mnemonic: str, value: Display) -> None:
         param = self.parameter(mnemonic)
@@ -110,13 +110,13 @@ class Valve:
         self._session.write(mnemonic, raw)  # ValueRangeError before anything is sent
         back = self._session.read(mnemonic)
         if back != raw:
-            raise ReadBackError(mnemonic, param.to_display(raw), param.to_display(back))
+            raise ReadBackError(mnemonic, display(param, raw), display(param, back))
 
     def read(self, *mnemonics: str) -> dict[str, Display]:
         """Several parameters at once, in display units."""
         params = [self.parameter(m) for m in mnemonics]
         raw = self._session.read_many(list(mnemonics))
-        return {p.mnemonic: p.to_display(raw[p.mnemonic]) for p in params if p.mnemonic in raw}
+        return {p.mnemonic: display(p, raw[p.mnemonic]) for p in params if p.mnemonic in raw}
 
     def status(self) -> ValveStatus:
         """Device state, errors, LEDs, temperature, supply voltage and NMT state now."""

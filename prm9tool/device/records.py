@@ -10,8 +10,9 @@ from __future__ import annotations
 import html
 import threading
 from collections.abc import Callable
-from dataclasses import dataclass, field, fields
+from dataclasses import asdict, dataclass, field, fields
 from enum import StrEnum
+from typing import Any
 
 from prm9tool.errors import Prm9Error, SdoAbortError
 
@@ -44,7 +45,12 @@ STEPS = {"write": "writing the parameters", "verify": "reading them back", "stor
 
 
 class HtmlRecord:
-    """Mixin of the records: a table of their fields for Jupyter (``_repr_html_``)."""
+    """Mixin of the records: a table of their fields for Jupyter (``_repr_html_``) and the
+    plain data the command line's JSON shows (:meth:`to_dict`)."""
+
+    def to_dict(self) -> dict[str, Any]:
+        """The fields as JSON-ready data (enums as their text, tuples as lists)."""
+        return asdict(self)  # type: ignore[call-overload, no-any-return]
 
     def _repr_html_(self) -> str:
         rows = "".join(
@@ -151,6 +157,10 @@ class DeviceInfo(HtmlRecord):
     def link(self) -> str:
         """How the valve is reached: ``usb``, ``emulator`` or ``can``."""
         return self.device_id.partition(":")[0]
+
+    def to_dict(self) -> dict[str, Any]:
+        """The fields and the :attr:`link` as JSON-ready data."""
+        return {**super().to_dict(), "link": self.link}
 
 
 @dataclass(frozen=True, kw_only=True)
