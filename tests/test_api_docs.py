@@ -10,6 +10,8 @@ from pathlib import Path
 
 import pytest
 
+import prm9tool
+from prm9tool.cli.parser import build_parser
 from prm9tool.device import factory
 
 PAGE = Path(__file__).resolve().parents[1] / "docs" / "api.md"
@@ -59,3 +61,22 @@ def test_every_python_block_runs(tmp_path, monkeypatch):
         [operation, "ok", "python", "API"]
         for operation in ("download", "backup", "upload", "download", "store", "restore-factory")
     ]
+
+
+def test_the_help_page_names_only_what_the_api_has():
+    from prm9tool.api.valve import Valve
+
+    resources = PAGE.parents[1] / "resources" / "help"
+    page = (resources / "scripting_en.html").read_text(encoding="utf-8")
+    called = set(re.findall(r"prm9tool\.(\w+)\(", page))
+    assert called >= {"connect", "read_prm", "list_devices"}
+    assert all(hasattr(prm9tool, name) for name in called)
+    methods = set(re.findall(r"valve\.(\w+)", page))
+    assert methods >= {"upload", "capture", "info"}
+    assert all(hasattr(Valve, name) for name in methods)
+    for option in re.findall(r"(--[a-z-]+)", page):
+        assert option in build_parser().format_help()
+    for language in ("en", "de", "cs"):  # reachable from the main page in every language
+        assert 'href="scripting_en.html"' in (resources / f"help_{language}.html").read_text(
+            encoding="utf-8"
+        )
