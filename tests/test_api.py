@@ -113,6 +113,10 @@ def test_single_values_in_display_units(valve):
     with pytest.raises(ValueRangeError, match="LIMTA: 99999 mA is outside the allowed range"):
         valve["LIMTA"] = 99999
     assert valve["LIMTA"] == 1800  # nothing was sent
+    with pytest.raises(ValueRangeError, match=r"LIMTA = 3000 mA is above .* CURNORM = 2600 mA"):
+        valve["LIMTA"] = 3000  # within 0 … 4000 mA, above this valve's CURNORM (table 7-14)
+    assert valve["LIMTA"] == 1800
+    assert valve.check({"LIMTA": 2000, "DYNFREQ": 100}) == {"LIMTA": 2000, "DYNFREQ": 100}
 
 
 def test_upload_refuses_another_variant_and_writes_nothing(valve):

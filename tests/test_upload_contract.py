@@ -169,6 +169,9 @@ def test_a_value_out_of_range_leaves_the_valve_unchanged(link):
         values = {**valve.download(), **CHANGES, "LIMTA": 99999}
         with pytest.raises(ValueRangeError, match="LIMTA: 99999 mA is outside the allowed range"):
             valve.upload(values)
+        above_cap = {**valve.download(), **CHANGES, "LIMTB": 3000.0}  # > CURNORM (7-14)
+        with pytest.raises(ValueRangeError, match="LIMTB = 3000 mA is above the nominal"):
+            valve.upload(above_cap)
         raw = {**valve.download().raw, **RAW, "DYNFREQ": 70000}
         with pytest.raises(ValueRangeError, match="DYNFREQ"):
             valve.session.upload(raw)  # the device layer checks before it sends, too

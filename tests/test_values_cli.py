@@ -11,8 +11,10 @@ from pathlib import Path
 import pytest
 from python_process import run_python
 
+from prm9tool.catalogue import CATALOGUE
 from prm9tool.cli.main import main
-from prm9tool.errors import ExitCode
+from prm9tool.device import factory
+from prm9tool.errors import AbortCode, ExitCode, SdoAbortError
 
 E02 = "PRM9-06.3Z11/30-24E02S02-CA"
 VALVE = f"{E02}:21"
@@ -52,15 +54,35 @@ def test_a_value_out_of_range_writes_nothing(tmp_path):
     assert json.loads(done.stdout)["values"]["DYNFREQ"] != 120  # not even the valid first one
 
 
-def test_a_refused_value_is_exit_1_and_nothing_is_stored(tmp_path):
-    # LIMTA may not exceed CURNORM (2600 mA, manual table 7-14): the valve refuses it
-    done = run(tmp_path, "--emulator", VALVE, "--set", "LIMTA=3000", "--store")
-    assert done.returncode == ExitCode.VERIFY_FAILED
-    assert "--set LIMTA: 0x2004/2: abort 0x06090031 (value of parameter written too high); " in (
-        done.stderr
-    )
-    assert done.stderr.endswith("nothing was stored\n")
-    assert run(tmp_path, "--emulator", VALVE, "--get", "LIMTA").stdout == "LIMTA\t2400\tmA\n"
+def test_a_value_above_the_valves_cap_writes_nothing(tmp_path):
+    # LIMTA may not exceed the valve's CURNORM (2600 mA, manual table 7-14)
+    done = run(tmp_path, "--emulator", VALVE, "--set", "DYNFREQ=120", "LIMTA=3000", "--store")
+    assert done.returncode == ExitCode.USAGE
+    assert "LIMTA = 3000 mA is above the nominal coil current CURNORM = 2600 mA" in done.stderr
+    assert done.stderr.endswith("nothing was written\n")
+    done = run(tmp_path, "--emulator", VALVE, "--get", "LIMTA", "DYNFREQ")
+    assert done.stdout == "LIMTA\t2400\tmA\nDYNFREQ\t80\tHz\n"
+
+
+def test_a_value_the_valve_refuses_is_exit_1_and_nothing_is_stored(monkeypatch, capsys):
+    valve = factory.emulated_valve(E02, 21)  # the one --emulator opens in this process
+    key, write = CATALOGUE["DTAMP"].key, valve.write_bytes
+
+    def refuse_dither(index, subindex, data):
+        if (index, subindex) == key:
+            raise SdoAbortError(index, subindex, AbortCode.CANNOT_STORE_DEVICE_STATE)
+        write(index, subindex, data)
+
+    monkeypatch.setattr(valve, "write_bytes", refuse_dither)
+    try:
+        code = main(["--emulator", VALVE, "--set", "LIMTA=1800", "DTAMP=10", "--store"])
+        assert code == ExitCode.VERIFY_FAILED
+        assert "--set DTAMP: 0x6361/1: abort 0x08000022" in capsys.readouterr().err
+        assert valve.read(*CATALOGUE["LIMTA"].key) == 1800  # written before, a working value
+        stored = valve._fw.nv.values
+        assert stored.get("LIMTA", CATALOGUE["LIMTA"].default) == 2400  # nothing stored
+    finally:
+        factory.forget_emulated_valves()
 
 
 @pytest.mark.parametrize(

@@ -16,7 +16,7 @@ from collections.abc import Callable, Mapping, Sequence
 from typing import TYPE_CHECKING, Any
 
 from prm9tool.api.params import Display, ParameterSet, as_parameter_set, display, lookup
-from prm9tool.catalogue import CATALOGUE, Parameter
+from prm9tool.catalogue import CAPPED_BY, CATALOGUE, Parameter
 from prm9tool.catalogue.commissioning import (
     CONTROL_WORD,
     DISABLE_SEQUENCE,
@@ -24,9 +24,16 @@ from prm9tool.catalogue.commissioning import (
     NmtCommand,
 )
 from prm9tool.catalogue.typekey import TypeKey
-from prm9tool.device.records import DeviceInfo, Progress, UploadResult, ValveStatus
+from prm9tool.device.records import DeviceInfo, Progress, UploadResult, Value, ValveStatus
+from prm9tool.device.session import NotAvailableError
 from prm9tool.device.upload_outcome import type_problem
-from prm9tool.errors import AccessDeniedError, DeviceTimeoutError, Prm9Error, TypeKeyError
+from prm9tool.errors import (
+    AccessDeniedError,
+    DeviceTimeoutError,
+    Prm9Error,
+    TypeKeyError,
+    ValueRangeError,
+)
 
 if TYPE_CHECKING:
     import numpy as np
@@ -106,11 +113,24 @@ class Valve:
 
     def __setitem__(self, mnemonic: str, value: Display) -> None:
         param = self.parameter(mnemonic)
-        raw = param.to_raw(value)
-        self._session.write(mnemonic, raw)  # ValueRangeError before anything is sent
+        raw = self.check({mnemonic: value})[mnemonic]  # ValueRangeError: nothing is sent
+        self._session.write(mnemonic, raw)
         back = self._session.read(mnemonic)
         if back != raw:
             raise ReadBackError(mnemonic, display(param, raw), display(param, back))
+
+    def check(self, values: Mapping[str, Display]) -> dict[str, Value]:
+        """The raw values of ``values`` (display units) if this valve would take them: each in
+        its catalogue range and, together with what the valve holds, within the rules between
+        parameters (LIMTA/LIMTB at most its CURNORM, manual table 7-14). ValueRangeError
+        names what is not; KeyError an unknown mnemonic. Sends nothing, reads the caps."""
+        raw: dict[str, Value] = {}
+        for mnemonic, value in values.items():
+            param = self.parameter(mnemonic)
+            raw[mnemonic] = param.to_raw(value)
+            param.check_raw(raw[mnemonic])
+        self._check_rules(raw)
+        return raw
 
     def read(self, *mnemonics: str) -> dict[str, Display]:
         """Several parameters at once, in display units."""
@@ -166,9 +186,10 @@ class Valve:
         problem = type_problem(wanted.type_key, self.type_key, force_type, "force_type=True")
         if problem is not None:
             raise TypeKeyError(problem)
+        values = wanted.raw
+        self._check_rules(values)  # a set the valve would refuse to store: nothing is sent
         if backup:
             self._backup(progress, cancel)
-        values = wanted.raw
         result = self._session.upload(values, progress, cancel)
         outcome = "ok" if result.stored else f"{result.failed_step}-failed"
         details: dict[str, Any] = {"written": result.written, "verified": result.verified}
@@ -289,6 +310,19 @@ class Valve:
         return f"<Valve {info.device_id} {info.type_key} serial {info.serial} ({state})>"
 
     # --- internals ----------------------------------------------------------------------------
+    def _check_rules(self, values: Mapping[str, Value]) -> None:
+        """ValueRangeError naming every cross-parameter rule ``values`` break with the
+        valve's own caps (LIMTA/LIMTB at most its CURNORM, manual table 7-14)."""
+        caps = {CAPPED_BY[m] for m in values if m in CAPPED_BY}
+        try:
+            held = self._session.read_many(sorted(caps)) if caps else {}
+        except NotAvailableError:  # a valve without the object: it checks the cap itself
+            held = {}
+        problems = CATALOGUE.check_rules(self._session.variant, {**values, **held})
+        errors = [p.message for p in problems if p.severity == "error"]
+        if errors:
+            raise ValueRangeError("; ".join(errors))
+
     def _backup(self, progress: Progress | None, cancel: threading.Event | None) -> None:
         from prm9tool.files.backup import ensure_backup
 

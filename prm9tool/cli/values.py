@@ -101,12 +101,14 @@ def _checked(valve: Valve, wanted: list[tuple[str, str]]) -> dict[str, Value]:
         if not param.writable:
             raise BatchError(ExitCode.USAGE, f"--set {mnemonic}: the parameter is read-only")
         try:
-            value = param.parse_display(text)
-            param.check_raw(value)
+            raw[mnemonic] = param.parse_display(text)
+            param.check_raw(raw[mnemonic])
         except ValueRangeError as exc:
             raise BatchError(ExitCode.USAGE, f"--set: {exc}; nothing was written") from exc
-        raw[mnemonic] = value
-    return raw
+    try:  # together, with what the valve holds (LIMTA at most its CURNORM …)
+        return valve.check({m: display(valve.parameter(m), v) for m, v in raw.items()})
+    except ValueRangeError as exc:
+        raise BatchError(ExitCode.USAGE, f"--set: {exc}; nothing was written") from exc
 
 
 def line(param: Parameter, value: Any) -> str:
