@@ -189,3 +189,29 @@ def test_reprs_for_notebooks(valve):
         assert type(record).__name__ in record._repr_html_()
     assert isinstance(valve, Valve)
     assert isinstance(valve.capture(["demand"], 0.01)["t"], np.ndarray)
+
+
+def test_a_valve_on_a_can_bus_is_listed_and_opened_by_its_node(tmp_path, request):
+    from can_link_rig import E04, make_link_rig
+
+    rig = make_link_rig(request.node.name, tmp_path, E04)
+    try:
+        bus = {"can_interface": "virtual", "can_channel": rig.options.channel}
+        (found,) = prm9tool.list_devices(**bus)
+        assert (found.device_id, found.type_key, found.link) == ("can:10", E04, "can")
+        assert found.serial == rig.valve.serial
+        assert found.can_bus == ("virtual", rig.options.channel, None)
+        with prm9tool.connect("can:10", **bus) as valve:
+            assert valve.info.serial == rig.valve.serial and valve.info.link == "can"
+            valve["DYNFREQ"] = 125
+            assert valve["DYNFREQ"] == 125
+            assert valve.download()["DYNFREQ"] == 125
+    finally:
+        rig.close()
+
+
+def test_an_unknown_device_id_is_a_clear_error():
+    with pytest.raises(prm9tool.Prm9Error, match="unknown device 'com3'"):
+        prm9tool.connect("com3")
+    with pytest.raises(TypeKeyError, match="must start with 'PRM9-'"):
+        prm9tool.connect("emulator:XYZ:1")
