@@ -39,7 +39,7 @@ HID_PATH = b"/dev/hidraw7"
 # cross-parameter rule); every link's valve holds its factory values before
 CHANGES = {"LIMTA": 1500, "LIMTB": 1600, "DYNFREQ": 120, "DTAMP": 10.0}  # display units
 RAW = {m: CATALOGUE[m].to_raw(v) for m, v in CHANGES.items()}
-# "canopen-manual": a valve with only the objects the manual lists (can_link_rig real_valve)
+# "canopen-manual": a valve with only the objects the manual lists (the emulator's --od manual)
 LINKS = ("usb-emulated", "usb-hidapi", "canopen", "canopen-manual")
 
 
@@ -50,15 +50,24 @@ class Link:
     name: str
     valve: EmulatedValve
     opener: Callable[[], ValveSession]
+    # how the link's peer refuses a write: CANopen's SDO server (can_link_rig), else the
+    # emulated valve's object dictionary behind the USB firmware
+    refuser: Callable[[int, int, int], None] | None = None
 
     def open(self) -> Valve:
         """The link's session as the API's Valve."""
         return Valve(self.opener())
 
     def stored(self) -> dict[str, int | str]:
-        """The valve's non-volatile memory: what it holds after a power cycle."""
+        """What the valve starts with after a power cycle, of the parameters the tests change
+        (non-volatile memory; an entry never stored is at its factory value). A valve without
+        a store command keeps what is written (manual §7.2.2), so after a failed upload the
+        master writes the old values back and they are in its memory again: the values count,
+        not which entries the memory holds."""
         with self.valve.lock:
-            return dict(self.valve._fw.nv.values)
+            memory = dict(self.valve._fw.nv.values)
+        variant = self.valve.variant
+        return {m: memory.get(m, CATALOGUE[m].default_for(variant)) for m in CHANGES}
 
     def working(self) -> dict[str, int | str]:
         """The values the valve works with now (RAM), of its file parameter set."""
@@ -68,6 +77,9 @@ class Link:
     def refuse(self, monkeypatch: pytest.MonkeyPatch, mnemonic: str) -> None:
         """The valve refuses every write of ``mnemonic`` (abort 0x08000022, whatever the link)."""
         key, original = CATALOGUE[mnemonic].key, self.valve.write_bytes
+        if self.refuser is not None:
+            self.refuser(*key, AbortCode.CANNOT_STORE_DEVICE_STATE)
+            return
 
         def write_bytes(index: int, subindex: int, data: bytes) -> None:
             if (index, subindex) == key:
@@ -85,9 +97,12 @@ def link(request, tmp_path: Path, monkeypatch: pytest.MonkeyPatch, data_dir) -> 
         from prm9tool.device.canlink.session import CanopenSession
 
         manual = kind == "canopen-manual"  # it does not tell its type key: the label's is given
-        rig = make_link_rig(request.node.name, tmp_path, E04, real_valve=manual)
+        od = "manual" if manual else "full"  # the emulator's --od manual
+        rig = make_link_rig(request.node.name, tmp_path, E04, real_valve=manual, od=od)
         key = E04 if manual else None
-        yield Link(kind, rig.valve, lambda: CanopenSession(rig.options, 10, type_key=key))
+        yield Link(
+            kind, rig.valve, lambda: CanopenSession(rig.options, 10, type_key=key), rig.refuse
+        )
         rig.close()
         return
     valve = EmulatedValve(E04, 4711, "2.3.4", nv_path=tmp_path / "nv.json")

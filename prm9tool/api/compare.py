@@ -6,7 +6,7 @@ import os
 from typing import TYPE_CHECKING
 
 from prm9tool.api.params import ParameterSet, read_prm
-from prm9tool.compare.model import Comparison, Side
+from prm9tool.compare.model import NOT_ON_SOURCE_VALVE, Comparison, Side
 
 if TYPE_CHECKING:
     from prm9tool.api.valve import Valve
@@ -32,12 +32,13 @@ def _side(source: ParameterSet | Valve | str | os.PathLike[str]) -> Side:
     from prm9tool.api.valve import Valve
 
     if isinstance(source, Valve):
-        label = f"valve {source.info.serial}"
         params = source.download()
-    elif isinstance(source, ParameterSet):
+        return Side(f"valve {source.info.serial}", params.type_key, params.raw)
+    if isinstance(source, ParameterSet):
         label = f"parameters of {source.type_key}"
         params = source
     else:
         label = os.fspath(source)
         params = read_prm(source)
-    return Side(label, params.type_key, params.raw)
+    # a set read from a valve lacks what that valve did not have (docs/compare.md)
+    return Side(label, params.type_key, params.raw, NOT_ON_SOURCE_VALVE())

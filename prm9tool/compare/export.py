@@ -24,6 +24,16 @@ def as_json(comparison: Comparison) -> dict[str, Any]:
         "equal": comparison.equal,
         "changed": len(comparison.changed),
         "missing": len(comparison.missing),
+        "not_on_valve": [
+            {
+                "mnemonic": row.mnemonic,
+                "not_on": [name for name, lacks in zip("ab", row.absent, strict=True) if lacks],
+                "a": value(row, 0),
+                "b": value(row, 1),
+                "unit": row.parameter.unit,
+            }
+            for row in comparison.not_on_valve
+        ],
         "warnings": [str(w) for w in comparison.warnings()],
         "differences": [
             {
