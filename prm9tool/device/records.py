@@ -49,7 +49,8 @@ class HtmlRecord:
     plain data the command line's JSON shows (:meth:`to_dict`)."""
 
     def to_dict(self) -> dict[str, Any]:
-        """The fields as JSON-ready data (enums as their text, tuples as lists)."""
+        """The fields as plain data for ``json.dumps`` (the states are StrEnums, so JSON shows
+        their text; tuples become lists): what the command line's ``--json`` prints."""
         return asdict(self)  # type: ignore[call-overload, no-any-return]
 
     def _repr_html_(self) -> str:
