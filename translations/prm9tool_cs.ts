@@ -1480,6 +1480,10 @@ Poslední akce možná nebyla dokončena. Uložte svou práci pod novým názvem
             <translation>Otevírání {0} zrušeno</translation>
         </message>
         <message>
+            <source>Backup copy saved as {0}; {1} stays the open document</source>
+            <translation>Záložní kopie uložena jako {0}; otevřený zůstává dokument {1}</translation>
+        </message>
+        <message>
             <source>Still reading {0}</source>
             <translation>{0} se ještě načítá</translation>
         </message>
@@ -1522,6 +1526,18 @@ Poslední akce možná nebyla dokončena. Uložte svou práci pod novým názvem
         <message>
             <source>Cannot save “{0}”</source>
             <translation>„{0}“ nelze uložit</translation>
+        </message>
+        <message numerus="yes">
+            <source>(marked: %n rule(s) broken)</source>
+            <translation>
+                <numerusform>(označeno: porušeno %n pravidlo)</numerusform>
+                <numerusform>(označeno: porušena %n pravidla)</numerusform>
+                <numerusform>(označeno: porušeno %n pravidel)</numerusform>
+            </translation>
+        </message>
+        <message>
+            <source>Save backup copy</source>
+            <translation>Uložit záložní kopii</translation>
         </message>
         <message>
             <source>Saved {0}</source>
@@ -2010,6 +2026,14 @@ Ano načte a záznam zařadí do fronty; Ne nenačte nic.</translation>
         <message>
             <source>Save the parameters under another name</source>
             <translation>Uložení záznamu parametrů pod jiným jménem</translation>
+        </message>
+        <message>
+            <source>Save bac&amp;kup copy…</source>
+            <translation>Uložit zá&amp;ložní kopii…</translation>
+        </message>
+        <message>
+            <source>Save a copy of the parameters to another file; you keep working on this one</source>
+            <translation>Uložení kopie parametrů do jiného souboru; dále se pracuje s tímto</translation>
         </message>
         <message>
             <source>&amp;Undo</source>

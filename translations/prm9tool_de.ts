@@ -1475,6 +1475,10 @@ Die letzte Aktion wurde womöglich nicht vollständig ausgeführt. Speichern Sie
             <translation>Öffnen von {0} abgebrochen</translation>
         </message>
         <message>
+            <source>Backup copy saved as {0}; {1} stays the open document</source>
+            <translation>Sicherungskopie als {0} gespeichert; geöffnet bleibt {1}</translation>
+        </message>
+        <message>
             <source>Still reading {0}</source>
             <translation>{0} wird noch gelesen</translation>
         </message>
@@ -1516,6 +1520,17 @@ Die letzte Aktion wurde womöglich nicht vollständig ausgeführt. Speichern Sie
         <message>
             <source>Cannot save “{0}”</source>
             <translation>„{0}“ kann nicht gespeichert werden</translation>
+        </message>
+        <message numerus="yes">
+            <source>(marked: %n rule(s) broken)</source>
+            <translation>
+                <numerusform>(gekennzeichnet: %n Regel verletzt)</numerusform>
+                <numerusform>(gekennzeichnet: %n Regeln verletzt)</numerusform>
+            </translation>
+        </message>
+        <message>
+            <source>Save backup copy</source>
+            <translation>Sicherungskopie speichern</translation>
         </message>
         <message>
             <source>Saved {0}</source>
@@ -2001,6 +2016,14 @@ Ja lädt hoch und stellt den Eintrag in die Warteschlange; Nein lädt nichts hoc
         <message>
             <source>Save the parameters under another name</source>
             <translation>Parameter unter einem anderen Namen speichern</translation>
+        </message>
+        <message>
+            <source>Save bac&amp;kup copy…</source>
+            <translation>Sicherungs&amp;kopie speichern…</translation>
+        </message>
+        <message>
+            <source>Save a copy of the parameters to another file; you keep working on this one</source>
+            <translation>Eine Kopie der Parameter in eine andere Datei speichern; Sie arbeiten in dieser weiter</translation>
         </message>
         <message>
             <source>&amp;Undo</source>

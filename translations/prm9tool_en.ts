@@ -52,6 +52,13 @@
             </translation>
         </message>
         <message numerus="yes">
+            <source>(marked: %n rule(s) broken)</source>
+            <translation>
+                <numerusform>(marked: %n rule broken)</numerusform>
+                <numerusform>(marked: %n rules broken)</numerusform>
+            </translation>
+        </message>
+        <message numerus="yes">
             <source>… and %n more problem(s).</source>
             <translation>
                 <numerusform>… and %n more problem.</numerusform>

@@ -170,6 +170,7 @@ class MainWindow(QMainWindow):
             "open": self.files.open_dialog,
             "save": self.files.save,
             "save_as": self.files.save_as,
+            "save_copy": self.files.save_backup_copy,
             "undo": self.undo.stack.undo,
             "redo": self.undo.stack.redo,
             "print": self.records.print_record,

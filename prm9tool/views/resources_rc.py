@@ -6,7 +6,7 @@
 from PySide6 import QtCore
 
 qt_resource_data = b"\
-\x00\x00\x13\xd9\
+\x00\x00\x15\x83\
 <\
 !DOCTYPE html>\x0a<\
 html lang=\x22cs\x22>\x0a\
@@ -284,49 +284,76 @@ ovn\xc3\xad opr\xc3\xa1vn\xc4\x9bn\
 \xc3\xad, postupov\xc3\xbdm \
 diagramem a v\xc5\xa1e\
 mi\x0aparametry s j\
-ednotkami.</p>\x0a\x0a\
-<h2>Kl\xc3\xa1vesnice<\
-/h2>\x0a<table>\x0a<tr\
-><td>Ctrl+O / Ct\
-rl+S / Ctrl+Shif\
-t+S</td><td>Otev\
-\xc5\x99\xc3\xadt / Ulo\xc5\xbeit \
-/ Ulo\xc5\xbeit jako</\
-td></tr>\x0a<tr><td\
->Ctrl+Z / Ctrl+Y\
-</td><td>Zp\xc4\x9bt /\
- Znovu</td></tr>\
-\x0a<tr><td>Ctrl+P \
-/ Ctrl+E</td><td\
->Tisk / Export d\
-o PDF</td></tr>\x0a\
-<tr><td>Ctrl+1 /\
- Ctrl+2 / Ctrl+3\
- / Ctrl+4</td><t\
-d>Postupov\xc3\xbd dia\
-gram / Seznam pa\
-rametr\xc5\xaf / Oscil\
-oskop / Okno CAN\
-open</td></tr>\x0a<\
-tr><td>F5 / Shif\
-t+F5</td><td>Re\xc5\
-\xbeim online / Re\xc5\
-\xbeim offline</td>\
-</tr>\x0a<tr><td>Ct\
-rl+U / Ctrl+D</t\
-d><td>Na\xc4\x8dten\xc3\xad \
-do ventilu / Sta\
-\xc5\xbeen\xc3\xad z ventilu\
+ednotkami.</p>\x0a<\
+p><b>Z\xc3\xa1loha ven\
+tilu</b>: p\xc5\x99ipo\
+jte se (re\xc5\xbeim o\
+nline), Ventil \xe2\
+\x86\x92 Sta\xc5\xbeen\xc3\xad z v\
+entilu, pak\x0aSoub\
+or \xe2\x86\x92 <b>Ulo\xc5\xbei\
+t z\xc3\xa1lo\xc5\xben\xc3\xad kop\
+ii\xe2\x80\xa6</b> (navr\xc5\
+\xbeen\xc3\xbd n\xc3\xa1zev: ty\
+pov\xc3\xbd kl\xc3\xad\xc4\x8d, v\xc3\
+\xbdrobn\xc3\xad \xc4\x8d\xc3\xadslo,\
+ datum\x0aa \xc4\x8das). \
+Kopie se zap\xc3\xad\xc5\xa1\
+e a otev\xc5\x99en\xc3\xbd d\
+okument z\xc5\xafstane\
+, jak\xc3\xbd byl: poz\
+d\xc4\x9bj\xc5\xa1\xc3\xad zm\xc4\x9bny \
+se ukl\xc3\xa1daj\xc3\xad do\
+\x0ajeho vlastn\xc3\xadho\
+ souboru, nikdy \
+do z\xc3\xa1lohy. Napr\
+oti tomu Ulo\xc5\xbeit\
+ jako ud\xc4\x9bl\xc3\xa1 z \
+nov\xc3\xa9ho souboru\x0a\
+otev\xc5\x99en\xc3\xbd dokum\
+ent.</p>\x0a\x0a<h2>Kl\
+\xc3\xa1vesnice</h2>\x0a<\
+table>\x0a<tr><td>C\
+trl+O / Ctrl+S /\
+ Ctrl+Shift+S</t\
+d><td>Otev\xc5\x99\xc3\xadt \
+/ Ulo\xc5\xbeit / Ulo\xc5\
+\xbeit jako</td></t\
+r>\x0a<tr><td>Ctrl+\
+Z / Ctrl+Y</td><\
+td>Zp\xc4\x9bt / Znovu\
 </td></tr>\x0a<tr><\
-td>Ctrl+T / Ctrl\
-+I / Ctrl+H</td>\
-<td>V\xc3\xbdb\xc4\x9br vent\
-ilu / Stav venti\
-lu / HID konfigu\
-race</td></tr>\x0a<\
-/table>\x0a</body>\x0a\
-</html>\x0a\
-\x00\x00\x14Z\
+td>Ctrl+P / Ctrl\
++E</td><td>Tisk \
+/ Export do PDF<\
+/td></tr>\x0a<tr><t\
+d>Ctrl+1 / Ctrl+\
+2 / Ctrl+3 / Ctr\
+l+4</td><td>Post\
+upov\xc3\xbd diagram /\
+ Seznam parametr\
+\xc5\xaf / Osciloskop \
+/ Okno CANopen</\
+td></tr>\x0a<tr><td\
+>F5 / Shift+F5</\
+td><td>Re\xc5\xbeim on\
+line / Re\xc5\xbeim of\
+fline</td></tr>\x0a\
+<tr><td>Ctrl+U /\
+ Ctrl+D</td><td>\
+Na\xc4\x8dten\xc3\xad do ven\
+tilu / Sta\xc5\xbeen\xc3\xad\
+ z ventilu</td><\
+/tr>\x0a<tr><td>Ctr\
+l+T / Ctrl+I / C\
+trl+H</td><td>V\xc3\
+\xbdb\xc4\x9br ventilu / \
+Stav ventilu / H\
+ID konfigurace</\
+td></tr>\x0a</table\
+>\x0a</body>\x0a</html\
+>\x0a\
+\x00\x00\x16\x12\
 <\
 !DOCTYPE html>\x0a<\
 html lang=\x22de\x22>\x0a\
@@ -611,50 +638,78 @@ htigungsstufe, d\
 em Ablaufdiagram\
 m und allen Para\
 metern mit Einhe\
-it.</p>\x0a\x0a<h2>Tas\
-tatur</h2>\x0a<tabl\
-e>\x0a<tr><td>Strg+\
-O / Strg+S / Str\
-g+Umschalt+S</td\
-><td>\xc3\x96ffnen / S\
-peichern / Speic\
-hern unter</td><\
-/tr>\x0a<tr><td>Str\
-g+Z / Strg+Y</td\
-><td>R\xc3\xbcckg\xc3\xa4ngi\
-g / Wiederherste\
-llen</td></tr>\x0a<\
-tr><td>Strg+P / \
-Strg+E</td><td>D\
-rucken / PDF exp\
-ortieren</td></t\
-r>\x0a<tr><td>Strg+\
-1 / Strg+2 / Str\
-g+3 / Strg+4</td\
-><td>Ablaufdiagr\
-amm / Parameterl\
-iste / Oszillosk\
-op / CANopen-Fen\
-ster</td></tr>\x0a<\
-tr><td>F5 / Umsc\
-halt+F5</td><td>\
-Online / Offline\
+it.</p>\x0a<p><b>Ei\
+n Ventil sichern\
+</b>: online geh\
+en, Ventil \xe2\x86\x92 A\
+us dem Ventil he\
+runterladen, dan\
+n\x0aDatei \xe2\x86\x92 <b>S\
+icherungskopie s\
+peichern\xe2\x80\xa6</b> \
+(vorgeschlagener\
+ Name: Typschl\xc3\xbc\
+ssel, Seriennumm\
+er,\x0aDatum und Uh\
+rzeit). Die Kopi\
+e wird geschrieb\
+en, das ge\xc3\xb6ffne\
+te Dokument blei\
+bt, was es war:\x0a\
+sp\xc3\xa4tere \xc3\x84nderu\
+ngen werden in s\
+eine eigene Date\
+i gespeichert, n\
+ie in die Sicher\
+ung. Speichern\x0au\
+nter dagegen mac\
+ht die neue Date\
+i zum ge\xc3\xb6ffnete\
+n Dokument.</p>\x0a\
+\x0a<h2>Tastatur</h\
+2>\x0a<table>\x0a<tr><\
+td>Strg+O / Strg\
++S / Strg+Umscha\
+lt+S</td><td>\xc3\x96f\
+fnen / Speichern\
+ / Speichern unt\
+er</td></tr>\x0a<tr\
+><td>Strg+Z / St\
+rg+Y</td><td>R\xc3\xbc\
+ckg\xc3\xa4ngig / Wied\
+erherstellen</td\
+></tr>\x0a<tr><td>S\
+trg+P / Strg+E</\
+td><td>Drucken /\
+ PDF exportieren\
 </td></tr>\x0a<tr><\
-td>Strg+U / Strg\
-+D</td><td>In da\
-s Ventil hochlad\
-en / Aus dem Ven\
-til herunterlade\
-n</td></tr>\x0a<tr>\
-<td>Strg+T / Str\
-g+I / Strg+H</td\
-><td>Ventilauswa\
-hl / Ventilstatu\
-s / HID-Konfigur\
-ation</td></tr>\x0a\
-</table>\x0a</body>\
-\x0a</html>\x0a\
-\x00\x00\x11\x8b\
+td>Strg+1 / Strg\
++2 / Strg+3 / St\
+rg+4</td><td>Abl\
+aufdiagramm / Pa\
+rameterliste / O\
+szilloskop / CAN\
+open-Fenster</td\
+></tr>\x0a<tr><td>F\
+5 / Umschalt+F5<\
+/td><td>Online /\
+ Offline</td></t\
+r>\x0a<tr><td>Strg+\
+U / Strg+D</td><\
+td>In das Ventil\
+ hochladen / Aus\
+ dem Ventil heru\
+nterladen</td></\
+tr>\x0a<tr><td>Strg\
++T / Strg+I / St\
+rg+H</td><td>Ven\
+tilauswahl / Ven\
+tilstatus / HID-\
+Konfiguration</t\
+d></tr>\x0a</table>\
+\x0a</body>\x0a</html>\
+\x0a\
+\x00\x00\x12\xfc\
 <\
 !DOCTYPE html>\x0a<\
 html lang=\x22en\x22>\x0a\
@@ -898,45 +953,68 @@ ate, access leve\
 l,\x0athe flow diag\
 ram and every pa\
 rameter with its\
- unit.</p>\x0a\x0a<h2>\
-Keyboard</h2>\x0a<t\
-able>\x0a<tr><td>Ct\
-rl+O / Ctrl+S / \
-Ctrl+Shift+S</td\
-><td>Open / Save\
- / Save As</td><\
-/tr>\x0a<tr><td>Ctr\
-l+Z / Ctrl+Y</td\
-><td>Undo / Redo\
-</td></tr>\x0a<tr><\
-td>Ctrl+P / Ctrl\
-+E</td><td>Print\
- / Export PDF</t\
-d></tr>\x0a<tr><td>\
-Ctrl+1 / Ctrl+2 \
-/ Ctrl+3 / Ctrl+\
-4</td><td>Flow d\
-iagram / Paramet\
-er list / Oscill\
-oscope / CANopen\
- window</td></tr\
->\x0a<tr><td>F5 / S\
-hift+F5</td><td>\
-Online / Offline\
-</td></tr>\x0a<tr><\
-td>Ctrl+U / Ctrl\
-+D</td><td>Uploa\
-d to valve / Dow\
-nload from valve\
-</td></tr>\x0a<tr><\
-td>Ctrl+T / Ctrl\
-+I / Ctrl+H</td>\
-<td>Valve select\
-ion / Valve stat\
-us / HID configu\
-ration</td></tr>\
-\x0a</table>\x0a</body\
->\x0a</html>\x0a\
+ unit.</p>\x0a<p><b\
+>Back up a valve\
+</b>: go online,\
+ Valve \xe2\x86\x92 Downl\
+oad from valve, \
+then File \xe2\x86\x92 <b\
+>Save backup\x0acop\
+y\xe2\x80\xa6</b> (propos\
+ed name: type ke\
+y, serial number\
+, date and time)\
+. The copy is wr\
+itten and\x0athe op\
+en document stay\
+s what it was: l\
+ater changes are\
+ saved into the \
+document's own f\
+ile,\x0anever into \
+the backup. Save\
+ As, by contrast\
+, makes the new \
+file the open do\
+cument.</p>\x0a\x0a<h2\
+>Keyboard</h2>\x0a<\
+table>\x0a<tr><td>C\
+trl+O / Ctrl+S /\
+ Ctrl+Shift+S</t\
+d><td>Open / Sav\
+e / Save As</td>\
+</tr>\x0a<tr><td>Ct\
+rl+Z / Ctrl+Y</t\
+d><td>Undo / Red\
+o</td></tr>\x0a<tr>\
+<td>Ctrl+P / Ctr\
+l+E</td><td>Prin\
+t / Export PDF</\
+td></tr>\x0a<tr><td\
+>Ctrl+1 / Ctrl+2\
+ / Ctrl+3 / Ctrl\
++4</td><td>Flow \
+diagram / Parame\
+ter list / Oscil\
+loscope / CANope\
+n window</td></t\
+r>\x0a<tr><td>F5 / \
+Shift+F5</td><td\
+>Online / Offlin\
+e</td></tr>\x0a<tr>\
+<td>Ctrl+U / Ctr\
+l+D</td><td>Uplo\
+ad to valve / Do\
+wnload from valv\
+e</td></tr>\x0a<tr>\
+<td>Ctrl+T / Ctr\
+l+I / Ctrl+H</td\
+><td>Valve selec\
+tion / Valve sta\
+tus / HID config\
+uration</td></tr\
+>\x0a</table>\x0a</bod\
+y>\x0a</html>\x0a\
 \x00\x00\x01\xc2\
 <\
 svg xmlns=\x22http:\
@@ -1375,22 +1453,22 @@ qt_resource_struct = b"\
 \x00\x00\x00\x00\x00\x02\x00\x00\x00\x02\x00\x00\x00\x01\
 \x00\x00\x00\x10\x00\x02\x00\x00\x00\x03\x00\x00\x00\x10\
 \x00\x00\x00\x00\x00\x02\x00\x00\x00\x0d\x00\x00\x00\x03\
-\x00\x00\x00\xfc\x00\x00\x00\x00\x00\x01\x00\x00A.\
-\x00\x00\x00\x92\x00\x00\x00\x00\x00\x01\x00\x00;\x90\
-\x00\x00\x01\x9e\x00\x00\x00\x00\x00\x01\x00\x00Kd\
-\x00\x00\x01\x16\x00\x00\x00\x00\x00\x01\x00\x00B[\
-\x00\x00\x00x\x00\x00\x00\x00\x00\x01\x00\x009\xca\
-\x00\x00\x01\xba\x00\x00\x00\x00\x00\x01\x00\x00L\xfc\
-\x00\x00\x01.\x00\x00\x00\x00\x00\x01\x00\x00D*\
-\x00\x00\x01\x80\x00\x00\x00\x00\x00\x01\x00\x00I\xb8\
-\x00\x00\x00\xaa\x00\x00\x00\x00\x00\x01\x00\x00=6\
-\x00\x00\x01J\x00\x00\x00\x00\x00\x01\x00\x00E\xf3\
-\x00\x00\x00\xc6\x00\x00\x00\x00\x00\x01\x00\x00>3\
-\x00\x00\x00\xe2\x00\x00\x00\x00\x00\x01\x00\x00?\xec\
-\x00\x00\x01^\x00\x00\x00\x00\x00\x01\x00\x00Hw\
+\x00\x00\x00\xfc\x00\x00\x00\x00\x00\x01\x00\x00F\x01\
+\x00\x00\x00\x92\x00\x00\x00\x00\x00\x01\x00\x00@c\
+\x00\x00\x01\x9e\x00\x00\x00\x00\x00\x01\x00\x00P7\
+\x00\x00\x01\x16\x00\x00\x00\x00\x00\x01\x00\x00G.\
+\x00\x00\x00x\x00\x00\x00\x00\x00\x01\x00\x00>\x9d\
+\x00\x00\x01\xba\x00\x00\x00\x00\x00\x01\x00\x00Q\xcf\
+\x00\x00\x01.\x00\x00\x00\x00\x00\x01\x00\x00H\xfd\
+\x00\x00\x01\x80\x00\x00\x00\x00\x00\x01\x00\x00N\x8b\
+\x00\x00\x00\xaa\x00\x00\x00\x00\x00\x01\x00\x00B\x09\
+\x00\x00\x01J\x00\x00\x00\x00\x00\x01\x00\x00J\xc6\
+\x00\x00\x00\xc6\x00\x00\x00\x00\x00\x01\x00\x00C\x06\
+\x00\x00\x00\xe2\x00\x00\x00\x00\x00\x01\x00\x00D\xbf\
+\x00\x00\x01^\x00\x00\x00\x00\x00\x01\x00\x00MJ\
 \x00\x00\x00\x1e\x00\x00\x00\x00\x00\x01\x00\x00\x00\x00\
-\x00\x00\x00<\x00\x00\x00\x00\x00\x01\x00\x00\x13\xdd\
-\x00\x00\x00Z\x00\x00\x00\x00\x00\x01\x00\x00(;\
+\x00\x00\x00<\x00\x00\x00\x00\x00\x01\x00\x00\x15\x87\
+\x00\x00\x00Z\x00\x00\x00\x00\x00\x01\x00\x00+\x9d\
 "
 
 def qInitResources():
