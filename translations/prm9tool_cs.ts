@@ -687,16 +687,56 @@ Poslední akce možná nebyla dokončena. Uložte svou práci pod novým názvem
             <translation>Úroveň oprávnění:</translation>
         </message>
         <message>
-            <source>Take every shown value from {0}</source>
-            <translation>Převzít všechny zobrazené hodnoty z {0}</translation>
+            <source>Tick every shown value of {0}</source>
+            <translation>Označit všechny zobrazené hodnoty „{0}“</translation>
         </message>
         <message>
-            <source>Apply: each side takes the chosen values</source>
-            <translation>Použít: každá strana převezme zvolené hodnoty</translation>
+            <source>Close</source>
+            <translation>Zavřít</translation>
+        </message>
+        <message numerus="yes">
+            <source>Write %n ticked value(s) into the valve</source>
+            <translation>
+                <numerusform>Zapsat %n označenou hodnotu do ventilu</numerusform>
+                <numerusform>Zapsat %n označené hodnoty do ventilu</numerusform>
+                <numerusform>Zapsat %n označených hodnot do ventilu</numerusform>
+            </translation>
+        </message>
+        <message numerus="yes">
+            <source>Take %n ticked value(s) into the document</source>
+            <translation>
+                <numerusform>Převzít %n označenou hodnotu do dokumentu</numerusform>
+                <numerusform>Převzít %n označené hodnoty do dokumentu</numerusform>
+                <numerusform>Převzít %n označených hodnot do dokumentu</numerusform>
+            </translation>
+        </message>
+        <message numerus="yes">
+            <source>Copy %n ticked value(s) into “{0}”</source>
+            <translation>
+                <numerusform>Zkopírovat %n označenou hodnotu do „{0}“</numerusform>
+                <numerusform>Zkopírovat %n označené hodnoty do „{0}“</numerusform>
+                <numerusform>Zkopírovat %n označených hodnot do „{0}“</numerusform>
+            </translation>
         </message>
         <message>
-            <source>Apply the chosen values to {0}</source>
-            <translation>Použít zvolené hodnoty na: {0}</translation>
+            <source>Every row starts with the valve's value ticked. Tick the document's value where the document is right, then press Apply: the document takes the ticked valve values and the valve the ticked document values.</source>
+            <translation>V každém řádku je nejprve označena hodnota ventilu. Kde je správná hodnota dokumentu, označte ji a pak stiskněte „Použít“: dokument převezme označené hodnoty ventilu a ventil označené hodnoty dokumentu.</translation>
+        </message>
+        <message>
+            <source>Tick the values to take, in either column; then take them into the document, or write them into the valve (online with this valve).</source>
+            <translation>Označte požadované hodnoty v kterémkoli sloupci; pak je převezměte do dokumentu nebo zapište do ventilu (v režimu online s tímto ventilem).</translation>
+        </message>
+        <message>
+            <source>Shown for comparison only.</source>
+            <translation>Zobrazeno jen pro porovnání.</translation>
+        </message>
+        <message>
+            <source>Apply: each side takes the ticked values</source>
+            <translation>Použít: každá strana převezme označené hodnoty</translation>
+        </message>
+        <message>
+            <source>Tick values in the column “{0}” first</source>
+            <translation>Nejprve označte hodnoty ve sloupci „{0}“</translation>
         </message>
         <message numerus="yes">
             <source>%n parameter(s) differ</source>
@@ -705,6 +745,18 @@ Poslední akce možná nebyla dokončena. Uložte svou práci pod novým názvem
                 <numerusform>%n parametry se liší</numerusform>
                 <numerusform>%n parametrů se liší</numerusform>
             </translation>
+        </message>
+        <message>
+            <source>To write values into the valve: tick them in the column “{0}”, then press the button below.</source>
+            <translation>Zápis hodnot do ventilu: označte je ve sloupci „{0}“ a stiskněte tlačítko dole.</translation>
+        </message>
+        <message>
+            <source>To take values into the document: tick them in the column “{0}”, then press the button below.</source>
+            <translation>Převzetí hodnot do dokumentu: označte je ve sloupci „{0}“ a stiskněte tlačítko dole.</translation>
+        </message>
+        <message>
+            <source>To copy values into “{0}”: tick them in the column “{1}”, then press the button below.</source>
+            <translation>Kopírování hodnot do „{0}“: označte je ve sloupci „{1}“ a stiskněte tlačítko dole.</translation>
         </message>
         <message numerus="yes">
             <source>%n parameter(s) only on one side</source>
@@ -795,6 +847,14 @@ Poslední akce možná nebyla dokončena. Uložte svou práci pod novým názvem
         <message>
             <source>Parameters restored from the history</source>
             <translation>Parametry obnovené z historie</translation>
+        </message>
+        <message numerus="yes">
+            <source>%n value(s) taken from the history</source>
+            <translation>
+                <numerusform>%n hodnota převzata z historie</numerusform>
+                <numerusform>%n hodnoty převzaty z historie</numerusform>
+                <numerusform>%n hodnot převzato z historie</numerusform>
+            </translation>
         </message>
     </context>
     <context>

@@ -685,16 +685,53 @@ Die letzte Aktion wurde womöglich nicht vollständig ausgeführt. Speichern Sie
             <translation>Zugriffsebene:</translation>
         </message>
         <message>
-            <source>Take every shown value from {0}</source>
-            <translation>Alle angezeigten Werte von {0} nehmen</translation>
+            <source>Tick every shown value of {0}</source>
+            <translation>Alle angezeigten Werte von „{0}“ ankreuzen</translation>
         </message>
         <message>
-            <source>Apply: each side takes the chosen values</source>
-            <translation>Übernehmen: jede Seite erhält die gewählten Werte</translation>
+            <source>Close</source>
+            <translation>Schließen</translation>
+        </message>
+        <message numerus="yes">
+            <source>Write %n ticked value(s) into the valve</source>
+            <translation>
+                <numerusform>%n angekreuzten Wert in das Ventil schreiben</numerusform>
+                <numerusform>%n angekreuzte Werte in das Ventil schreiben</numerusform>
+            </translation>
+        </message>
+        <message numerus="yes">
+            <source>Take %n ticked value(s) into the document</source>
+            <translation>
+                <numerusform>%n angekreuzten Wert in das Dokument übernehmen</numerusform>
+                <numerusform>%n angekreuzte Werte in das Dokument übernehmen</numerusform>
+            </translation>
+        </message>
+        <message numerus="yes">
+            <source>Copy %n ticked value(s) into “{0}”</source>
+            <translation>
+                <numerusform>%n angekreuzten Wert nach „{0}“ kopieren</numerusform>
+                <numerusform>%n angekreuzte Werte nach „{0}“ kopieren</numerusform>
+            </translation>
         </message>
         <message>
-            <source>Apply the chosen values to {0}</source>
-            <translation>Gewählte Werte übernehmen in: {0}</translation>
+            <source>Every row starts with the valve's value ticked. Tick the document's value where the document is right, then press Apply: the document takes the ticked valve values and the valve the ticked document values.</source>
+            <translation>In jeder Zeile ist zunächst der Wert des Ventils angekreuzt. Kreuzen Sie den Wert des Dokuments an, wo das Dokument richtig ist, und drücken Sie dann „Übernehmen“: Das Dokument erhält die angekreuzten Werte des Ventils, das Ventil die angekreuzten Werte des Dokuments.</translation>
+        </message>
+        <message>
+            <source>Tick the values to take, in either column; then take them into the document, or write them into the valve (online with this valve).</source>
+            <translation>Kreuzen Sie die gewünschten Werte in einer der beiden Spalten an; übernehmen Sie sie dann in das Dokument oder schreiben Sie sie in das Ventil (online mit diesem Ventil).</translation>
+        </message>
+        <message>
+            <source>Shown for comparison only.</source>
+            <translation>Nur zum Vergleich angezeigt.</translation>
+        </message>
+        <message>
+            <source>Apply: each side takes the ticked values</source>
+            <translation>Übernehmen: Jede Seite erhält die angekreuzten Werte</translation>
+        </message>
+        <message>
+            <source>Tick values in the column “{0}” first</source>
+            <translation>Kreuzen Sie zuerst Werte in der Spalte „{0}“ an</translation>
         </message>
         <message numerus="yes">
             <source>%n parameter(s) differ</source>
@@ -702,6 +739,18 @@ Die letzte Aktion wurde womöglich nicht vollständig ausgeführt. Speichern Sie
                 <numerusform>%n Parameter unterscheidet sich</numerusform>
                 <numerusform>%n Parameter unterscheiden sich</numerusform>
             </translation>
+        </message>
+        <message>
+            <source>To write values into the valve: tick them in the column “{0}”, then press the button below.</source>
+            <translation>Werte in das Ventil schreiben: in der Spalte „{0}“ ankreuzen, dann die Schaltfläche unten drücken.</translation>
+        </message>
+        <message>
+            <source>To take values into the document: tick them in the column “{0}”, then press the button below.</source>
+            <translation>Werte in das Dokument übernehmen: in der Spalte „{0}“ ankreuzen, dann die Schaltfläche unten drücken.</translation>
+        </message>
+        <message>
+            <source>To copy values into “{0}”: tick them in the column “{1}”, then press the button below.</source>
+            <translation>Werte nach „{0}“ kopieren: in der Spalte „{1}“ ankreuzen, dann die Schaltfläche unten drücken.</translation>
         </message>
         <message numerus="yes">
             <source>%n parameter(s) only on one side</source>
@@ -790,6 +839,13 @@ Die letzte Aktion wurde womöglich nicht vollständig ausgeführt. Speichern Sie
         <message>
             <source>Parameters restored from the history</source>
             <translation>Parameter aus dem Verlauf wiederhergestellt</translation>
+        </message>
+        <message numerus="yes">
+            <source>%n value(s) taken from the history</source>
+            <translation>
+                <numerusform>%n Wert aus dem Verlauf übernommen</numerusform>
+                <numerusform>%n Werte aus dem Verlauf übernommen</numerusform>
+            </translation>
         </message>
     </context>
     <context>

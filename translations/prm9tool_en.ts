@@ -41,6 +41,37 @@
                 <numerusform>%n shown</numerusform>
             </translation>
         </message>
+        <message numerus="yes">
+            <source>Write %n ticked value(s) into the valve</source>
+            <translation>
+                <numerusform>Write %n ticked value into the valve</numerusform>
+                <numerusform>Write %n ticked values into the valve</numerusform>
+            </translation>
+        </message>
+        <message numerus="yes">
+            <source>Take %n ticked value(s) into the document</source>
+            <translation>
+                <numerusform>Take %n ticked value into the document</numerusform>
+                <numerusform>Take %n ticked values into the document</numerusform>
+            </translation>
+        </message>
+        <message numerus="yes">
+            <source>Copy %n ticked value(s) into “{0}”</source>
+            <translation>
+                <numerusform>Copy %n ticked value into “{0}”</numerusform>
+                <numerusform>Copy %n ticked values into “{0}”</numerusform>
+            </translation>
+        </message>
+    </context>
+    <context>
+        <name>CompareWorkflow</name>
+        <message numerus="yes">
+            <source>%n value(s) taken from the history</source>
+            <translation>
+                <numerusform>%n value taken from the history</numerusform>
+                <numerusform>%n values taken from the history</numerusform>
+            </translation>
+        </message>
     </context>
     <context>
         <name>FileWorkflow</name>

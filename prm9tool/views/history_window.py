@@ -87,7 +87,7 @@ class HistoryWindow(QDialog):
         self,
         recorder: Recorder,
         serial: int | None,
-        restore_document: Callable[[TypeKey, dict[str, int | str]], None],
+        restore_document: Callable[[TypeKey | None, dict[str, int | str]], None],
         restore_valve: Callable[[int, dict[str, int | str]], bool],
         parent: QWidget | None = None,
     ) -> None:
@@ -195,19 +195,36 @@ class HistoryWindow(QDialog):
         return TypeKey.parse(whole["type_key"]), dict(json.loads(whole["parameters"]))
 
     def compare_selected(self) -> CompareDialogLike | None:
-        """Show the difference of the two selected records in the compare view."""
-        from prm9tool.views.compare_view import CompareDialog
+        """Show the difference of the two selected records in the compare view, from which
+        the ticked values go into the document or into the valve they were recorded from."""
+        from prm9tool.views.compare_view import DOCUMENT, VALVE, CompareDialog
 
-        sides = []
-        for record in self.selected():
+        sides, records = [], self.selected()
+        for record in records:
             full = self._full(record)
             if full is None:
                 return None
             label = self.tr("No. {0}, {1}").format(record["seq"], record["recorded_at"][:19])
             sides.append(Side(label, full[0], full[1]))
-        dialog = CompareDialog(Comparison((sides[0], sides[1])), (), parent=self)
+        comparison = Comparison((sides[0], sides[1]))
+        dialog = CompareDialog(comparison, (), parent=self, destinations=(DOCUMENT, VALVE))
+        serial = int(records[0]["serial"])
+        dialog.accepted.connect(lambda: self._on_compare_applied(dialog.applied, serial))
         dialog.open()
         return dialog
+
+    def _on_compare_applied(self, applied: object, serial: int) -> None:
+        """Ticked values of two records: into the document (one undo step, its type key kept)
+        or into the valve they came from (a transactional upload)."""
+        from prm9tool.views.compare_view import DOCUMENT
+
+        if not isinstance(applied, tuple) or not applied[1]:
+            return
+        target, values = applied
+        if target == DOCUMENT:
+            self._restore_document(None, dict(values))
+        elif not self._restore_valve(serial, dict(values)):
+            self._not_online(serial)
 
     def _restore(self, how: Callable[[Record, TypeKey, dict[str, int | str]], None]) -> None:
         (record,) = self.selected()
@@ -224,9 +241,12 @@ class HistoryWindow(QDialog):
         self, record: Record, _key: TypeKey, values: dict[str, int | str]
     ) -> None:
         if not self._restore_valve(int(record["serial"]), values):
-            prompts.inform(self, prompts.Icon.Warning, self.tr("Restore to the valve"),
-                           self.tr("Go online with valve {0} first: a record is restored only "
-                                   "into the valve it was recorded from.").format(record["serial"]))  # fmt: skip
+            self._not_online(int(record["serial"]))
+
+    def _not_online(self, serial: int) -> None:
+        prompts.inform(self, prompts.Icon.Warning, self.tr("Restore to the valve"),
+                       self.tr("Go online with valve {0} first: a record is restored only "
+                               "into the valve it was recorded from.").format(serial))  # fmt: skip
 
     def edit_settings(self) -> None:
         """Choose the database and the policy; the new database is used from now on."""

@@ -73,7 +73,9 @@ class MainWindow(QMainWindow):
         self.valve = ValveWorkflow(self, doc, undo, connection, self.sync, settings, access)
         self.control = ValveControl(connection, self)
         self.records = RecordActions(self)
-        self.compare = CompareWorkflow(self, doc, undo, access, connection, self.sync, self.valve)
+        self.compare = CompareWorkflow(
+            self, doc, undo, access, connection, self.sync, self.valve, settings
+        )
         self.dcf = DcfExport(doc, self)
         self.link_guard = LinkGuard(doc, connection, self)
         self.commands = MainActions(self)
