@@ -2576,6 +2576,13 @@ Ano načte a záznam zařadí do fronty; Ne nenačte nic.</translation>
         </message>
     </context>
     <context>
+        <name>PagedPrint</name>
+        <message>
+            <source>Page {0} of {1}</source>
+            <translation>Strana {0} z {1}</translation>
+        </message>
+    </context>
+    <context>
         <name>ParameterEditDialog</name>
         <message>
             <source>Parameter {0}</source>
@@ -2932,8 +2939,28 @@ Ano načte a záznam zařadí do fronty; Ne nenačte nic.</translation>
     <context>
         <name>Record</name>
         <message>
+            <source>serial number {0}</source>
+            <translation>výrobní číslo {0}</translation>
+        </message>
+        <message>
+            <source>PRM9 parameter record</source>
+            <translation>Protokol parametrů PRM9</translation>
+        </message>
+        <message>
             <source>untitled</source>
             <translation>nepojmenovaná</translation>
+        </message>
+        <message>
+            <source>untitled (the values are not saved in a file)</source>
+            <translation>nepojmenovaný (hodnoty nejsou uloženy v žádném souboru)</translation>
+        </message>
+        <message>
+            <source>{0} (changed, not saved: the file holds another valve type)</source>
+            <translation>{0} (změněno, neuloženo: soubor obsahuje jiný typ ventilu)</translation>
+        </message>
+        <message>
+            <source>{0} (changed, not saved: the values marked {1} differ from the file)</source>
+            <translation>{0} (změněno, neuloženo: hodnoty označené {1} se liší od souboru)</translation>
         </message>
         <message>
             <source>Type key</source>
@@ -2974,6 +3001,18 @@ Ano načte a záznam zařadí do fronty; Ne nenačte nic.</translation>
         <message>
             <source>Unit</source>
             <translation>Jednotka</translation>
+        </message>
+        <message>
+            <source>Date:</source>
+            <translation>Datum:</translation>
+        </message>
+        <message>
+            <source>Name:</source>
+            <translation>Jméno:</translation>
+        </message>
+        <message>
+            <source>Signature:</source>
+            <translation>Podpis:</translation>
         </message>
     </context>
     <context>

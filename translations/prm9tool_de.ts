@@ -2560,6 +2560,13 @@ Ja lädt hoch und stellt den Eintrag in die Warteschlange; Nein lädt nichts hoc
         </message>
     </context>
     <context>
+        <name>PagedPrint</name>
+        <message>
+            <source>Page {0} of {1}</source>
+            <translation>Seite {0} von {1}</translation>
+        </message>
+    </context>
+    <context>
         <name>ParameterEditDialog</name>
         <message>
             <source>Parameter {0}</source>
@@ -2916,8 +2923,28 @@ Ja lädt hoch und stellt den Eintrag in die Warteschlange; Nein lädt nichts hoc
     <context>
         <name>Record</name>
         <message>
+            <source>serial number {0}</source>
+            <translation>Seriennummer {0}</translation>
+        </message>
+        <message>
+            <source>PRM9 parameter record</source>
+            <translation>PRM9-Parameterprotokoll</translation>
+        </message>
+        <message>
             <source>untitled</source>
             <translation>unbenannt</translation>
+        </message>
+        <message>
+            <source>untitled (the values are not saved in a file)</source>
+            <translation>unbenannt (die Werte sind in keiner Datei gespeichert)</translation>
+        </message>
+        <message>
+            <source>{0} (changed, not saved: the file holds another valve type)</source>
+            <translation>{0} (geändert, nicht gespeichert: Die Datei enthält einen anderen Ventiltyp)</translation>
+        </message>
+        <message>
+            <source>{0} (changed, not saved: the values marked {1} differ from the file)</source>
+            <translation>{0} (geändert, nicht gespeichert: Die mit {1} markierten Werte weichen von der Datei ab)</translation>
         </message>
         <message>
             <source>Type key</source>
@@ -2958,6 +2985,18 @@ Ja lädt hoch und stellt den Eintrag in die Warteschlange; Nein lädt nichts hoc
         <message>
             <source>Unit</source>
             <translation>Einheit</translation>
+        </message>
+        <message>
+            <source>Date:</source>
+            <translation>Datum:</translation>
+        </message>
+        <message>
+            <source>Name:</source>
+            <translation>Name:</translation>
+        </message>
+        <message>
+            <source>Signature:</source>
+            <translation>Unterschrift:</translation>
         </message>
     </context>
     <context>

@@ -6,7 +6,7 @@
 from PySide6 import QtCore
 
 qt_resource_data = b"\
-\x00\x00\x15\x83\
+\x00\x00\x16s\
 <\
 !DOCTYPE html>\x0a<\
 html lang=\x22cs\x22>\x0a\
@@ -284,7 +284,22 @@ ovn\xc3\xad opr\xc3\xa1vn\xc4\x9bn\
 \xc3\xad, postupov\xc3\xbdm \
 diagramem a v\xc5\xa1e\
 mi\x0aparametry s j\
-ednotkami.</p>\x0a<\
+ednotkami. Hodno\
+ty zm\xc4\x9bn\xc4\x9bn\xc3\xa9 od\
+ ulo\xc5\xbeen\xc3\xad soubo\
+ru jsou ozna\xc4\x8den\
+y <b>*</b> a \xc5\x99\xc3\
+\xa1dek\x0a\xe2\x80\x9eSoubor\xe2\x80\
+\x9c to uv\xc3\xa1d\xc3\xad; ka\
+\xc5\xbed\xc3\xa1 strana uv\xc3\
+\xa1d\xc3\xad typov\xc3\xbd kl\xc3\
+\xad\xc4\x8d a v\xc3\xbdrobn\xc3\xad \
+\xc4\x8d\xc3\xadslo a sv\xc3\xa9 \xc4\
+\x8d\xc3\xadslo strany; n\
+a\x0aposledn\xc3\xad stra\
+n\xc4\x9b je \xc5\x99\xc3\xa1dek p\
+ro datum, jm\xc3\xa9no\
+ a podpis.</p>\x0a<\
 p><b>Z\xc3\xa1loha ven\
 tilu</b>: p\xc5\x99ipo\
 jte se (re\xc5\xbeim o\
@@ -353,7 +368,7 @@ ID konfigurace</\
 td></tr>\x0a</table\
 >\x0a</body>\x0a</html\
 >\x0a\
-\x00\x00\x16\x12\
+\x00\x00\x17\x04\
 <\
 !DOCTYPE html>\x0a<\
 html lang=\x22de\x22>\x0a\
@@ -638,78 +653,93 @@ htigungsstufe, d\
 em Ablaufdiagram\
 m und allen Para\
 metern mit Einhe\
-it.</p>\x0a<p><b>Ei\
-n Ventil sichern\
-</b>: online geh\
-en, Ventil \xe2\x86\x92 A\
+it. Seit dem\x0aSpe\
+ichern ge\xc3\xa4ndert\
+e Werte sind mit\
+ <b>*</b> markie\
+rt, und die Zeil\
+e \xe2\x80\x9eDatei\xe2\x80\x9c sa\
+gt es; jede Seit\
+e\x0anennt Typschl\xc3\
+\xbcssel und Serien\
+nummer und tr\xc3\xa4g\
+t ihre Seitenzah\
+l; die letzte Se\
+ite hat eine Zei\
+le\x0af\xc3\xbcr Datum, N\
+ame und Untersch\
+rift.</p>\x0a<p><b>\
+Ein Ventil siche\
+rn</b>: online g\
+ehen, Ventil \xe2\x86\x92\
+ Aus dem Ventil \
+herunterladen, d\
+ann\x0aDatei \xe2\x86\x92 <b\
+>Sicherungskopie\
+ speichern\xe2\x80\xa6</b\
+> (vorgeschlagen\
+er Name: Typschl\
+\xc3\xbcssel, Seriennu\
+mmer,\x0aDatum und \
+Uhrzeit). Die Ko\
+pie wird geschri\
+eben, das ge\xc3\xb6ff\
+nete Dokument bl\
+eibt, was es war\
+:\x0asp\xc3\xa4tere \xc3\x84nde\
+rungen werden in\
+ seine eigene Da\
+tei gespeichert,\
+ nie in die Sich\
+erung. Speichern\
+\x0aunter dagegen m\
+acht die neue Da\
+tei zum ge\xc3\xb6ffne\
+ten Dokument.</p\
+>\x0a\x0a<h2>Tastatur<\
+/h2>\x0a<table>\x0a<tr\
+><td>Strg+O / St\
+rg+S / Strg+Umsc\
+halt+S</td><td>\xc3\
+\x96ffnen / Speiche\
+rn / Speichern u\
+nter</td></tr>\x0a<\
+tr><td>Strg+Z / \
+Strg+Y</td><td>R\
+\xc3\xbcckg\xc3\xa4ngig / Wi\
+ederherstellen</\
+td></tr>\x0a<tr><td\
+>Strg+P / Strg+E\
+</td><td>Drucken\
+ / PDF exportier\
+en</td></tr>\x0a<tr\
+><td>Strg+1 / St\
+rg+2 / Strg+3 / \
+Strg+4</td><td>A\
+blaufdiagramm / \
+Parameterliste /\
+ Oszilloskop / C\
+ANopen-Fenster</\
+td></tr>\x0a<tr><td\
+>F5 / Umschalt+F\
+5</td><td>Online\
+ / Offline</td><\
+/tr>\x0a<tr><td>Str\
+g+U / Strg+D</td\
+><td>In das Vent\
+il hochladen / A\
 us dem Ventil he\
-runterladen, dan\
-n\x0aDatei \xe2\x86\x92 <b>S\
-icherungskopie s\
-peichern\xe2\x80\xa6</b> \
-(vorgeschlagener\
- Name: Typschl\xc3\xbc\
-ssel, Seriennumm\
-er,\x0aDatum und Uh\
-rzeit). Die Kopi\
-e wird geschrieb\
-en, das ge\xc3\xb6ffne\
-te Dokument blei\
-bt, was es war:\x0a\
-sp\xc3\xa4tere \xc3\x84nderu\
-ngen werden in s\
-eine eigene Date\
-i gespeichert, n\
-ie in die Sicher\
-ung. Speichern\x0au\
-nter dagegen mac\
-ht die neue Date\
-i zum ge\xc3\xb6ffnete\
-n Dokument.</p>\x0a\
-\x0a<h2>Tastatur</h\
-2>\x0a<table>\x0a<tr><\
-td>Strg+O / Strg\
-+S / Strg+Umscha\
-lt+S</td><td>\xc3\x96f\
-fnen / Speichern\
- / Speichern unt\
-er</td></tr>\x0a<tr\
-><td>Strg+Z / St\
-rg+Y</td><td>R\xc3\xbc\
-ckg\xc3\xa4ngig / Wied\
-erherstellen</td\
-></tr>\x0a<tr><td>S\
-trg+P / Strg+E</\
-td><td>Drucken /\
- PDF exportieren\
-</td></tr>\x0a<tr><\
-td>Strg+1 / Strg\
-+2 / Strg+3 / St\
-rg+4</td><td>Abl\
-aufdiagramm / Pa\
-rameterliste / O\
-szilloskop / CAN\
-open-Fenster</td\
-></tr>\x0a<tr><td>F\
-5 / Umschalt+F5<\
-/td><td>Online /\
- Offline</td></t\
-r>\x0a<tr><td>Strg+\
-U / Strg+D</td><\
-td>In das Ventil\
- hochladen / Aus\
- dem Ventil heru\
-nterladen</td></\
-tr>\x0a<tr><td>Strg\
-+T / Strg+I / St\
-rg+H</td><td>Ven\
-tilauswahl / Ven\
-tilstatus / HID-\
-Konfiguration</t\
-d></tr>\x0a</table>\
-\x0a</body>\x0a</html>\
-\x0a\
-\x00\x00\x12\xfc\
+runterladen</td>\
+</tr>\x0a<tr><td>St\
+rg+T / Strg+I / \
+Strg+H</td><td>V\
+entilauswahl / V\
+entilstatus / HI\
+D-Konfiguration<\
+/td></tr>\x0a</tabl\
+e>\x0a</body>\x0a</htm\
+l>\x0a\
+\x00\x00\x13\xd7\
 <\
 !DOCTYPE html>\x0a<\
 html lang=\x22en\x22>\x0a\
@@ -953,68 +983,82 @@ ate, access leve\
 l,\x0athe flow diag\
 ram and every pa\
 rameter with its\
- unit.</p>\x0a<p><b\
->Back up a valve\
-</b>: go online,\
- Valve \xe2\x86\x92 Downl\
-oad from valve, \
-then File \xe2\x86\x92 <b\
->Save backup\x0acop\
-y\xe2\x80\xa6</b> (propos\
-ed name: type ke\
-y, serial number\
-, date and time)\
-. The copy is wr\
-itten and\x0athe op\
-en document stay\
-s what it was: l\
-ater changes are\
- saved into the \
-document's own f\
-ile,\x0anever into \
-the backup. Save\
- As, by contrast\
-, makes the new \
-file the open do\
-cument.</p>\x0a\x0a<h2\
->Keyboard</h2>\x0a<\
-table>\x0a<tr><td>C\
-trl+O / Ctrl+S /\
- Ctrl+Shift+S</t\
-d><td>Open / Sav\
-e / Save As</td>\
-</tr>\x0a<tr><td>Ct\
-rl+Z / Ctrl+Y</t\
-d><td>Undo / Red\
-o</td></tr>\x0a<tr>\
-<td>Ctrl+P / Ctr\
-l+E</td><td>Prin\
-t / Export PDF</\
-td></tr>\x0a<tr><td\
->Ctrl+1 / Ctrl+2\
- / Ctrl+3 / Ctrl\
-+4</td><td>Flow \
-diagram / Parame\
-ter list / Oscil\
-loscope / CANope\
-n window</td></t\
-r>\x0a<tr><td>F5 / \
-Shift+F5</td><td\
->Online / Offlin\
-e</td></tr>\x0a<tr>\
-<td>Ctrl+U / Ctr\
-l+D</td><td>Uplo\
-ad to valve / Do\
-wnload from valv\
-e</td></tr>\x0a<tr>\
-<td>Ctrl+T / Ctr\
-l+I / Ctrl+H</td\
-><td>Valve selec\
-tion / Valve sta\
-tus / HID config\
-uration</td></tr\
->\x0a</table>\x0a</bod\
-y>\x0a</html>\x0a\
+ unit. Values ch\
+anged since the \
+file was saved\x0aa\
+re marked <b>*</\
+b> and the file \
+line says so; ev\
+ery page names t\
+he type key and \
+serial\x0anumber an\
+d carries its pa\
+ge number; the l\
+ast page has a l\
+ine for date, na\
+me and\x0asignature\
+.</p>\x0a<p><b>Back\
+ up a valve</b>:\
+ go online, Valv\
+e \xe2\x86\x92 Download f\
+rom valve, then \
+File \xe2\x86\x92 <b>Save\
+ backup\x0acopy\xe2\x80\xa6<\
+/b> (proposed na\
+me: type key, se\
+rial number, dat\
+e and time). The\
+ copy is written\
+ and\x0athe open do\
+cument stays wha\
+t it was: later \
+changes are save\
+d into the docum\
+ent's own file,\x0a\
+never into the b\
+ackup. Save As, \
+by contrast, mak\
+es the new file \
+the open documen\
+t.</p>\x0a\x0a<h2>Keyb\
+oard</h2>\x0a<table\
+>\x0a<tr><td>Ctrl+O\
+ / Ctrl+S / Ctrl\
++Shift+S</td><td\
+>Open / Save / S\
+ave As</td></tr>\
+\x0a<tr><td>Ctrl+Z \
+/ Ctrl+Y</td><td\
+>Undo / Redo</td\
+></tr>\x0a<tr><td>C\
+trl+P / Ctrl+E</\
+td><td>Print / E\
+xport PDF</td></\
+tr>\x0a<tr><td>Ctrl\
++1 / Ctrl+2 / Ct\
+rl+3 / Ctrl+4</t\
+d><td>Flow diagr\
+am / Parameter l\
+ist / Oscillosco\
+pe / CANopen win\
+dow</td></tr>\x0a<t\
+r><td>F5 / Shift\
++F5</td><td>Onli\
+ne / Offline</td\
+></tr>\x0a<tr><td>C\
+trl+U / Ctrl+D</\
+td><td>Upload to\
+ valve / Downloa\
+d from valve</td\
+></tr>\x0a<tr><td>C\
+trl+T / Ctrl+I /\
+ Ctrl+H</td><td>\
+Valve selection \
+/ Valve status /\
+ HID configurati\
+on</td></tr>\x0a</t\
+able>\x0a</body>\x0a</\
+html>\x0a\
 \x00\x00\x01\xc2\
 <\
 svg xmlns=\x22http:\
@@ -1453,22 +1497,22 @@ qt_resource_struct = b"\
 \x00\x00\x00\x00\x00\x02\x00\x00\x00\x02\x00\x00\x00\x01\
 \x00\x00\x00\x10\x00\x02\x00\x00\x00\x03\x00\x00\x00\x10\
 \x00\x00\x00\x00\x00\x02\x00\x00\x00\x0d\x00\x00\x00\x03\
-\x00\x00\x00\xfc\x00\x00\x00\x00\x00\x01\x00\x00F\x01\
-\x00\x00\x00\x92\x00\x00\x00\x00\x00\x01\x00\x00@c\
-\x00\x00\x01\x9e\x00\x00\x00\x00\x00\x01\x00\x00P7\
-\x00\x00\x01\x16\x00\x00\x00\x00\x00\x01\x00\x00G.\
-\x00\x00\x00x\x00\x00\x00\x00\x00\x01\x00\x00>\x9d\
-\x00\x00\x01\xba\x00\x00\x00\x00\x00\x01\x00\x00Q\xcf\
-\x00\x00\x01.\x00\x00\x00\x00\x00\x01\x00\x00H\xfd\
-\x00\x00\x01\x80\x00\x00\x00\x00\x00\x01\x00\x00N\x8b\
-\x00\x00\x00\xaa\x00\x00\x00\x00\x00\x01\x00\x00B\x09\
-\x00\x00\x01J\x00\x00\x00\x00\x00\x01\x00\x00J\xc6\
-\x00\x00\x00\xc6\x00\x00\x00\x00\x00\x01\x00\x00C\x06\
-\x00\x00\x00\xe2\x00\x00\x00\x00\x00\x01\x00\x00D\xbf\
-\x00\x00\x01^\x00\x00\x00\x00\x00\x01\x00\x00MJ\
+\x00\x00\x00\xfc\x00\x00\x00\x00\x00\x01\x00\x00H\xbe\
+\x00\x00\x00\x92\x00\x00\x00\x00\x00\x01\x00\x00C \
+\x00\x00\x01\x9e\x00\x00\x00\x00\x00\x01\x00\x00R\xf4\
+\x00\x00\x01\x16\x00\x00\x00\x00\x00\x01\x00\x00I\xeb\
+\x00\x00\x00x\x00\x00\x00\x00\x00\x01\x00\x00AZ\
+\x00\x00\x01\xba\x00\x00\x00\x00\x00\x01\x00\x00T\x8c\
+\x00\x00\x01.\x00\x00\x00\x00\x00\x01\x00\x00K\xba\
+\x00\x00\x01\x80\x00\x00\x00\x00\x00\x01\x00\x00QH\
+\x00\x00\x00\xaa\x00\x00\x00\x00\x00\x01\x00\x00D\xc6\
+\x00\x00\x01J\x00\x00\x00\x00\x00\x01\x00\x00M\x83\
+\x00\x00\x00\xc6\x00\x00\x00\x00\x00\x01\x00\x00E\xc3\
+\x00\x00\x00\xe2\x00\x00\x00\x00\x00\x01\x00\x00G|\
+\x00\x00\x01^\x00\x00\x00\x00\x00\x01\x00\x00P\x07\
 \x00\x00\x00\x1e\x00\x00\x00\x00\x00\x01\x00\x00\x00\x00\
-\x00\x00\x00<\x00\x00\x00\x00\x00\x01\x00\x00\x15\x87\
-\x00\x00\x00Z\x00\x00\x00\x00\x00\x01\x00\x00+\x9d\
+\x00\x00\x00<\x00\x00\x00\x00\x00\x01\x00\x00\x16w\
+\x00\x00\x00Z\x00\x00\x00\x00\x00\x01\x00\x00-\x7f\
 "
 
 def qInitResources():
