@@ -42,7 +42,7 @@ from prm9tool.messages import QT_TRANSLATE_NOOP
 
 if TYPE_CHECKING:
     from prm9tool.device.canlink.session import CanopenSession
-    from prm9tool.device.emulator.states import ValveStatus
+    from prm9tool.device.records import ValveStatus
     from prm9tool.device.session import ValveSession
     from prm9tool.device.setpoint import SetpointLink
 

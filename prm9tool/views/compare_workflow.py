@@ -29,7 +29,7 @@ from prm9tool.views import prompts
 from prm9tool.views.compare_view import BOTH, DOCUMENT, VALVE, CompareDialog
 from prm9tool.views.file_reader import read_in_background
 from prm9tool.views.file_workflow import FOLDER_KEY
-from prm9tool.views.valve_workflow import ValveWorkflow
+from prm9tool.views.valve.workflow import ValveWorkflow
 
 COMPARE_VIEW = "compare_view"  # the download behind Valve → Compare with valve
 
