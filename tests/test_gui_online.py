@@ -471,3 +471,30 @@ def test_going_online_again_retries_the_can_node_chosen_last_not_the_remembered_
         window.valve.go_online()  # F5 after that attempt failed
         qtbot.waitUntil(lambda: len(tried) == 2, timeout=5000)
         assert tried == ["can:10", "can:10"]
+
+
+@pytest.mark.parametrize("answer", [prompts.Button.No, prompts.Button.Yes])
+def test_a_document_of_another_valve_is_named_before_going_online(
+    qtbot, window, answers, tmp_path, answer
+):
+    """Issue 25 item 11: a document read from valve 1001 went online with valve 4711 unasked."""
+    window.doc.source_serial = 1001
+    window.files.save_to(tmp_path / "valve_1001.prm")
+    answers.answers = [answer]
+    go_online(qtbot, window, f"{E02}:4711")
+    if answer == prompts.Button.No:
+        qtbot.waitUntil(lambda: not window.connection.is_online, timeout=TIMEOUT)
+        assert not window.sync.active
+    else:
+        _settled(qtbot, window)  # the same values: online as usual
+    (question,) = answers.asked
+    assert question.startswith("Another valve: The document was read from valve 1001; you are "
+                               "online with valve 4711")  # fmt: skip
+
+
+def test_the_same_valve_goes_online_without_a_question(qtbot, window, answers, tmp_path):
+    window.doc.source_serial = 4712
+    window.files.save_to(tmp_path / "valve_4712.prm")
+    go_online(qtbot, window, f"{E02}:4712")
+    _settled(qtbot, window)
+    assert answers.asked == []

@@ -4282,6 +4282,18 @@ Zajistěte, aby to hydraulika bezpečně snesla. Tlačítko Stop test kdykoli uk
             <translation>Online: dokument a ventil se shodují</translation>
         </message>
         <message>
+            <source>Another valve</source>
+            <translation>Jiný ventil</translation>
+        </message>
+        <message>
+            <source>The document was read from valve {0}; you are online with valve {1} (serial numbers). Continue with this document on valve {1}?
+
+Yes compares the two as usual (nothing is written unasked); No goes offline.</source>
+            <translation>Dokument byl načten z ventilu {0}; v režimu online jste s ventilem {1} (výrobní čísla). Pokračovat s tímto dokumentem na ventilu {1}?
+
+Ano je porovná jako obvykle (bez dotazu se nic nezapíše); Ne přejde do režimu offline.</translation>
+        </message>
+        <message>
             <source>Values read from the valve</source>
             <translation>Hodnoty načtené z ventilu</translation>
         </message>

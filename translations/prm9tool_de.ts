@@ -4263,6 +4263,18 @@ Stellen Sie sicher, dass die Hydraulik dafür sicher ist. Stopp beendet ihn jede
             <translation>Online: Dokument und Ventil stimmen überein</translation>
         </message>
         <message>
+            <source>Another valve</source>
+            <translation>Anderes Ventil</translation>
+        </message>
+        <message>
+            <source>The document was read from valve {0}; you are online with valve {1} (serial numbers). Continue with this document on valve {1}?
+
+Yes compares the two as usual (nothing is written unasked); No goes offline.</source>
+            <translation>Das Dokument wurde aus Ventil {0} gelesen; online sind Sie mit Ventil {1} (Seriennummern). Mit diesem Dokument an Ventil {1} weiterarbeiten?
+
+Ja vergleicht beide wie gewohnt (ohne Rückfrage wird nichts geschrieben); Nein geht offline.</translation>
+        </message>
+        <message>
             <source>Values read from the valve</source>
             <translation>Aus dem Ventil gelesene Werte</translation>
         </message>

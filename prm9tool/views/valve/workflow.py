@@ -148,6 +148,9 @@ class ValveWorkflow(QObject):
         if pristine:
             self._adopt_valve(valve_key, values)
             return
+        if not self._same_valve_or_confirmed():
+            self.go_offline()
+            return
         same_key = valve_key == self._doc.type_key
         differs = any(self._doc.values.get(mn) != value for mn, value in values.items())
         if same_key and not differs:
@@ -155,6 +158,27 @@ class ValveWorkflow(QObject):
             self.message_posted.emit(self.tr("Online: document and valve agree"))
             return
         self._ask_about_differences(valve_key, values)
+
+    def _same_valve_or_confirmed(self) -> bool:
+        """A document read from one valve (its serial number) meets another: say so first,
+        before anything is compared, taken or sent; No goes offline."""
+        info, source = self._connection.device, self._doc.source_serial
+        if info is None or not source or int(source) == int(info.serial):
+            return True
+        answer = prompts.ask(
+            self._window,
+            prompts.Icon.Warning,
+            self.tr("Another valve"),
+            self.tr(
+                "The document was read from valve {0}; you are online with valve {1} "
+                "(serial numbers). Continue with this document on valve {1}?\n\n"
+                "Yes compares the two as usual (nothing is written unasked); "
+                "No goes offline."
+            ).format(source, info.serial),
+            prompts.Button.Yes | prompts.Button.No,
+            prompts.Button.No,
+        )
+        return answer == prompts.Button.Yes
 
     def _ask_about_differences(self, valve_key: TypeKey, values: Mapping[str, Raw]) -> None:
         dialog = OnlineDiffDialog(
