@@ -33,6 +33,7 @@ def test_menus_and_toolbar_are_those_of_the_manual(window):
         "Valve s&tatus…",
         "&Upload to valve",
         "&Download from valve",
+        "St&ore in valve",  # issue 25
         "&Compare with valve",  # issue 17
         "&History…",
         "Restore &factory values…",

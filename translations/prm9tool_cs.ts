@@ -2236,6 +2236,14 @@ Ano načte a záznam zařadí do fronty; Ne nenačte nic.</translation>
             <translation>Načtení parametrů z elektroniky ventilu do programu</translation>
         </message>
         <message>
+            <source>St&amp;ore in valve</source>
+            <translation>&amp;Uložit do paměti ventilu</translation>
+        </message>
+        <message>
+            <source>Make the values the valve works with permanent: they stay after a restart</source>
+            <translation>Trvalé uložení hodnot, se kterými ventil pracuje: zůstanou zachovány i po restartu</translation>
+        </message>
+        <message>
             <source>Restore &amp;factory values…</source>
             <translation>&amp;Obnovit tovární nastavení…</translation>
         </message>
@@ -4306,12 +4314,20 @@ Ano je porovná jako obvykle (bez dotazu se nic nezapíše); Ne přejde do reži
             <translation>Ventil hlásí neznámý typový klíč: {0}</translation>
         </message>
         <message>
+            <source>Storing the parameters in the valve…</source>
+            <translation>Ukládání parametrů do paměti ventilu…</translation>
+        </message>
+        <message>
             <source>Downloading the parameters from the valve…</source>
             <translation>Stahování parametrů z ventilu…</translation>
         </message>
         <message>
             <source>Set every parameter of the document to the factory default?</source>
             <translation>Nastavit všechny parametry dokumentu na tovární hodnoty?</translation>
+        </message>
+        <message>
+            <source>The valve stored its parameters at {0}</source>
+            <translation>Ventil uložil své parametry v {0}</translation>
         </message>
         <message>
             <source>{0} kbit/s</source>
@@ -4344,10 +4360,6 @@ Ano je porovná jako obvykle (bez dotazu se nic nezapíše); Ne přejde do reži
         <message>
             <source>The valve restarted</source>
             <translation>Ventil byl restartován</translation>
-        </message>
-        <message>
-            <source>The valve stored its parameters</source>
-            <translation>Ventil uložil své parametry</translation>
         </message>
         <message>
             <source>Factory values restored; the valve's previous parameters are in {0}</source>

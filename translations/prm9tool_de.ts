@@ -2222,6 +2222,14 @@ Ja lädt hoch und stellt den Eintrag in die Warteschlange; Nein lädt nichts hoc
             <translation>Parameter des Ventils in das Programm lesen</translation>
         </message>
         <message>
+            <source>St&amp;ore in valve</source>
+            <translation>Im Ventil s&amp;peichern</translation>
+        </message>
+        <message>
+            <source>Make the values the valve works with permanent: they stay after a restart</source>
+            <translation>Die Werte, mit denen das Ventil arbeitet, dauerhaft speichern: Sie bleiben nach einem Neustart erhalten</translation>
+        </message>
+        <message>
             <source>Restore &amp;factory values…</source>
             <translation>&amp;Werkseinstellungen wiederherstellen…</translation>
         </message>
@@ -4287,12 +4295,20 @@ Ja vergleicht beide wie gewohnt (ohne Rückfrage wird nichts geschrieben); Nein 
             <translation>Das Ventil meldet einen unbekannten Typschlüssel: {0}</translation>
         </message>
         <message>
+            <source>Storing the parameters in the valve…</source>
+            <translation>Parameter werden im Ventil gespeichert…</translation>
+        </message>
+        <message>
             <source>Downloading the parameters from the valve…</source>
             <translation>Parameter werden aus dem Ventil heruntergeladen…</translation>
         </message>
         <message>
             <source>Set every parameter of the document to the factory default?</source>
             <translation>Alle Parameter des Dokuments auf die Werkseinstellung setzen?</translation>
+        </message>
+        <message>
+            <source>The valve stored its parameters at {0}</source>
+            <translation>Das Ventil hat seine Parameter um {0} gespeichert</translation>
         </message>
         <message>
             <source>{0} kbit/s</source>
@@ -4325,10 +4341,6 @@ Ja vergleicht beide wie gewohnt (ohne Rückfrage wird nichts geschrieben); Nein 
         <message>
             <source>The valve restarted</source>
             <translation>Das Ventil wurde neu gestartet</translation>
-        </message>
-        <message>
-            <source>The valve stored its parameters</source>
-            <translation>Das Ventil hat seine Parameter gespeichert</translation>
         </message>
         <message>
             <source>Factory values restored; the valve's previous parameters are in {0}</source>

@@ -190,6 +190,13 @@ class ValveConnection(QObject):
 
         self._long_job("store", run)
 
+    def store_valve(self) -> None:
+        """Valve → Store: what the valve works with becomes its stored set (the link's store),
+        read back and recorded in the history; result: operation_finished("store", values)."""
+        from prm9tool.online.recording import store_and_read
+
+        self._long_job("store", lambda s: store_and_read(s, self.history, self._worker.progress))
+
     def read_many(self, mnemonics: Sequence[str], tag: str = "read") -> None:
         """Read values; the result arrives as operation_finished(tag, {mnemonic: raw})."""
         names = list(mnemonics)

@@ -97,3 +97,16 @@ class HistoryHook:
         outcome = "ok" if result.stored else "verification-failed"
         self.add(session, "upload", outcome, after, details, result.failed_step)
         return result
+
+
+def store_and_read(
+    session: Any, history: HistoryHook | None, progress: Progress | None = None
+) -> dict[str, Raw]:
+    """The valve's working parameters become its stored ones; then they are read back (what
+    it holds now) and, with ``history``, recorded as a ``store``. A failing store raises
+    before anything is recorded."""
+    session.store()
+    values = dict(session.download(progress))
+    if history is not None:
+        history.add(session, "store", "ok", values, {"command": "Valve → Store"})
+    return values

@@ -37,6 +37,7 @@ _ACTIONS: tuple[tuple[str, str, object], ...] = (
     ("valve_status", "status", "Ctrl+I"),
     ("upload", "upload", "Ctrl+U"),
     ("download", "download", "Ctrl+D"),
+    ("store", "", None),
     ("restore_factory", "factory", None),
     ("restart", "restart", None),
     ("hid_configuration", "hid", "Ctrl+H"),
@@ -173,6 +174,13 @@ def _texts() -> dict[str, _Texts]:
             translate("MainActions", "&Download from valve"),
             translate("MainActions", "Read the parameters of the valve into the program"),
         ),
+        "store": _Texts(
+            translate("MainActions", "St&ore in valve"),
+            translate(
+                "MainActions",
+                "Make the values the valve works with permanent: they stay after a restart",
+            ),
+        ),
         "restore_factory": _Texts(
             translate("MainActions", "Restore &factory values…"),
             translate("MainActions", "Return the parameters to the factory values"),
@@ -274,7 +282,7 @@ class MainActions(QObject):
                      "exit"),
             "view": ("view_diagram", "view_parameters", "view_scope", None, "access", "language",
                      None, "canopen", "od_browser"),
-            "valve": ("valve_selection", "valve_status", None, "upload", "download",
+            "valve": ("valve_selection", "valve_status", None, "upload", "download", "store",
                       "compare_valve", "history", None, "restore_factory", "restart"),
             "communication": ("hid_configuration", "can_bus", None, "online", "offline"),
             "help": ("help", "homepage", None, "about"),

@@ -191,6 +191,7 @@ class MainWindow(QMainWindow):
             "valve_status": self.show_status_window,
             "upload": self.valve.upload,
             "download": self.valve.download,
+            "store": self.valve.store,
             "restore_factory": self.valve.restore_factory,
             "restart": self.valve.restart,
             "hid_configuration": self.valve.configure_hid,

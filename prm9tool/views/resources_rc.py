@@ -6,7 +6,7 @@
 from PySide6 import QtCore
 
 qt_resource_data = b"\
-\x00\x00\x17\x02\
+\x00\x00\x17\x8a\
 <\
 !DOCTYPE html>\x0a<\
 html lang=\x22cs\x22>\x0a\
@@ -229,155 +229,163 @@ p\xc5\x99i p\xc5\x99echodu d\
 o\x0are\xc5\xbeimu offlin\
 e program nab\xc3\xadd\
 ne jejich ulo\xc5\xbee\
-n\xc3\xad. <b>Na\xc4\x8dten\xc3\
-\xad do ventilu</b>\
- zap\xc3\xad\xc5\xa1e v\xc5\xa1ech\
-ny\x0ahodnoty, p\xc5\x99e\
-\xc4\x8dte je zp\xc4\x9bt, p\
-orovn\xc3\xa1 a ulo\xc5\xbe\xc3\
-\xad; ulo\xc5\xbe\xc3\xad se je\
-n tehdy, je-li k\
-a\xc5\xbed\xc3\xa1 hodnota o\
-v\xc4\x9b\xc5\x99ena.\x0aP\xc5\x99ed \
-prvn\xc3\xadm na\xc4\x8dten\xc3\
-\xadm do ventilu pr\
-ogram ulo\xc5\xbe\xc3\xad z\xc3\
-\xa1lohu vlastn\xc3\xadch\
- parametr\xc5\xaf vent\
-ilu do slo\xc5\xbeky\x0au\
-\xc5\xbeivatelsk\xc3\xbdch d\
-at (<code>backup\
-s/&lt;v\xc3\xbdrobn\xc3\xad \
-\xc4\x8d\xc3\xadslo&gt;/</co\
-de>).</p>\x0a<p><b>\
-Restart ventilu<\
-/b> a <b>Obnoven\
-\xc3\xad tov\xc3\xa1rn\xc3\xadho n\
-astaven\xc3\xad</b> js\
-ou dovoleny pouz\
-e p\xc5\x99i\x0aodpojen\xc3\xa9\
-m hydraulick\xc3\xa9m \
-obvodu; program \
-v\xc3\xa1s po\xc5\xbe\xc3\xa1d\xc3\xa1 o\
- potvrzen\xc3\xad.</p>\
-\x0a\x0a<h2>Soubory</h\
-2>\x0a<p>Z\xc3\xa1znamy p\
-arametr\xc5\xaf (<code\
->*.prm</code>) j\
-sou textov\xc3\xa9 sou\
-bory. Otev\xc5\x99\xc3\xadt,\
- Ulo\xc5\xbeit, Ulo\xc5\xbei\
-t jako,\x0anaposled\
-y otev\xc5\x99en\xc3\xa9 sou\
-bory a p\xc5\x99eta\xc5\xbee\
-n\xc3\xad my\xc5\xa1\xc3\xad fungu\
-j\xc3\xad obvykl\xc3\xbdm zp\
-\xc5\xafsobem; p\xc5\x99ed z\
-tr\xc3\xa1tou\x0aneulo\xc5\xbee\
-n\xc3\xbdch zm\xc4\x9bn se p\
-rogram zept\xc3\xa1. K\
-a\xc5\xbedou zm\xc4\x9bnu lz\
-e vr\xc3\xa1tit (Ctrl+\
-Z) a znovu prov\xc3\
-\xa9st\x0a(Ctrl+Y). So\
-ubor \xe2\x86\x92 Tisk a \
-Soubor \xe2\x86\x92 Expor\
-t do PDF vytvo\xc5\x99\
-\xc3\xad protokol para\
-metr\xc5\xaf s typov\xc3\xbd\
-m kl\xc3\xad\xc4\x8dem,\x0av\xc3\xbdr\
-obn\xc3\xadm \xc4\x8d\xc3\xadslem,\
- firmware, soubo\
-rem, datem, \xc3\xbaro\
-vn\xc3\xad opr\xc3\xa1vn\xc4\x9bn\xc3\
-\xad, postupov\xc3\xbdm d\
-iagramem a v\xc5\xa1em\
-i\x0aparametry s je\
-dnotkami. Hodnot\
-y zm\xc4\x9bn\xc4\x9bn\xc3\xa9 od \
-ulo\xc5\xbeen\xc3\xad soubor\
-u jsou ozna\xc4\x8deny\
- <b>*</b> a \xc5\x99\xc3\xa1\
-dek\x0a\xe2\x80\x9eSoubor\xe2\x80\x9c\
- to uv\xc3\xa1d\xc3\xad; ka\xc5\
-\xbed\xc3\xa1 strana uv\xc3\xa1\
-d\xc3\xad typov\xc3\xbd kl\xc3\xad\
-\xc4\x8d a v\xc3\xbdrobn\xc3\xad \xc4\
-\x8d\xc3\xadslo a sv\xc3\xa9 \xc4\x8d\
-\xc3\xadslo strany; na\
-\x0aposledn\xc3\xad stran\
-\xc4\x9b je \xc5\x99\xc3\xa1dek pr\
-o datum, jm\xc3\xa9no \
-a podpis.</p>\x0a<p\
-><b>Z\xc3\xa1loha vent\
-ilu</b>: p\xc5\x99ipoj\
-te se (re\xc5\xbeim on\
-line), Ventil \xe2\x86\
-\x92 Sta\xc5\xbeen\xc3\xad z ve\
-ntilu, pak\x0aSoubo\
-r \xe2\x86\x92 <b>Ulo\xc5\xbeit\
- z\xc3\xa1lo\xc5\xben\xc3\xad kopi\
-i\xe2\x80\xa6</b> (navr\xc5\xbe\
-en\xc3\xbd n\xc3\xa1zev: typ\
-ov\xc3\xbd kl\xc3\xad\xc4\x8d, v\xc3\xbd\
-robn\xc3\xad \xc4\x8d\xc3\xadslo, \
-datum\x0aa \xc4\x8das). K\
-opie se zap\xc3\xad\xc5\xa1e\
- a otev\xc5\x99en\xc3\xbd do\
-kument z\xc5\xafstane,\
- jak\xc3\xbd byl: pozd\
-\xc4\x9bj\xc5\xa1\xc3\xad zm\xc4\x9bny s\
-e ukl\xc3\xa1daj\xc3\xad do\x0a\
-jeho vlastn\xc3\xadho \
-souboru, nikdy d\
-o z\xc3\xa1lohy. Napro\
-ti tomu Ulo\xc5\xbeit \
-jako ud\xc4\x9bl\xc3\xa1 z n\
-ov\xc3\xa9ho souboru\x0ao\
-tev\xc5\x99en\xc3\xbd dokume\
-nt.</p>\x0a\x0a<h2>Kl\xc3\
-\xa1vesnice</h2>\x0a<t\
-able>\x0a<tr><td>Ct\
-rl+O / Ctrl+S / \
-Ctrl+Shift+S</td\
-><td>Otev\xc5\x99\xc3\xadt /\
- Ulo\xc5\xbeit / Ulo\xc5\xbe\
-it jako</td></tr\
->\x0a<tr><td>Ctrl+Z\
- / Ctrl+Y</td><t\
-d>Zp\xc4\x9bt / Znovu<\
+n\xc3\xad a Ventil \xe2\x86\x92\
+ <b>Ulo\xc5\xbeit do p\
+am\xc4\x9bti ventilu</\
+b> je ulo\xc5\xbe\xc3\xad\x0ahn\
+ed (s \xc4\x8d\xc3\xadm vent\
+il pracuje, s t\xc3\
+\xadm i nastartuje;\
+ zaznamen\xc3\xa1 se d\
+o historie). <b>\
+Na\xc4\x8dten\xc3\xad do ven\
+tilu</b> zap\xc3\xad\xc5\xa1\
+e v\xc5\xa1echny\x0ahodno\
+ty, p\xc5\x99e\xc4\x8dte je \
+zp\xc4\x9bt, porovn\xc3\xa1 \
+a ulo\xc5\xbe\xc3\xad; ulo\xc5\xbe\
+\xc3\xad se jen tehdy,\
+ je-li ka\xc5\xbed\xc3\xa1 h\
+odnota ov\xc4\x9b\xc5\x99ena\
+.\x0aP\xc5\x99ed prvn\xc3\xadm \
+na\xc4\x8dten\xc3\xadm do ve\
+ntilu program ul\
+o\xc5\xbe\xc3\xad z\xc3\xa1lohu vl\
+astn\xc3\xadch paramet\
+r\xc5\xaf ventilu do s\
+lo\xc5\xbeky\x0au\xc5\xbeivatel\
+sk\xc3\xbdch dat (<cod\
+e>backups/&lt;v\xc3\
+\xbdrobn\xc3\xad \xc4\x8d\xc3\xadslo&\
+gt;/</code>).</p\
+>\x0a<p><b>Restart \
+ventilu</b> a <b\
+>Obnoven\xc3\xad tov\xc3\xa1\
+rn\xc3\xadho nastaven\xc3\
+\xad</b> jsou dovol\
+eny pouze p\xc5\x99i\x0ao\
+dpojen\xc3\xa9m hydrau\
+lick\xc3\xa9m obvodu; \
+program v\xc3\xa1s po\xc5\
+\xbe\xc3\xa1d\xc3\xa1 o potvrze\
+n\xc3\xad.</p>\x0a\x0a<h2>So\
+ubory</h2>\x0a<p>Z\xc3\
+\xa1znamy parametr\xc5\
+\xaf (<code>*.prm</\
+code>) jsou text\
+ov\xc3\xa9 soubory. Ot\
+ev\xc5\x99\xc3\xadt, Ulo\xc5\xbeit\
+, Ulo\xc5\xbeit jako,\x0a\
+naposledy otev\xc5\x99\
+en\xc3\xa9 soubory a p\
+\xc5\x99eta\xc5\xbeen\xc3\xad my\xc5\xa1\
+\xc3\xad funguj\xc3\xad obvy\
+kl\xc3\xbdm zp\xc5\xafsobem;\
+ p\xc5\x99ed ztr\xc3\xa1tou\x0a\
+neulo\xc5\xbeen\xc3\xbdch zm\
+\xc4\x9bn se program z\
+ept\xc3\xa1. Ka\xc5\xbedou z\
+m\xc4\x9bnu lze vr\xc3\xa1ti\
+t (Ctrl+Z) a zno\
+vu prov\xc3\xa9st\x0a(Ctr\
+l+Y). Soubor \xe2\x86\x92\
+ Tisk a Soubor \xe2\
+\x86\x92 Export do PDF\
+ vytvo\xc5\x99\xc3\xad proto\
+kol parametr\xc5\xaf s\
+ typov\xc3\xbdm kl\xc3\xad\xc4\x8d\
+em,\x0av\xc3\xbdrobn\xc3\xadm \xc4\
+\x8d\xc3\xadslem, firmwar\
+e, souborem, dat\
+em, \xc3\xbarovn\xc3\xad opr\
+\xc3\xa1vn\xc4\x9bn\xc3\xad, postu\
+pov\xc3\xbdm diagramem\
+ a v\xc5\xa1emi\x0aparame\
+try s jednotkami\
+. Hodnoty zm\xc4\x9bn\xc4\
+\x9bn\xc3\xa9 od ulo\xc5\xbeen\xc3\
+\xad souboru jsou o\
+zna\xc4\x8deny <b>*</b\
+> a \xc5\x99\xc3\xa1dek\x0a\xe2\x80\x9eS\
+oubor\xe2\x80\x9c to uv\xc3\xa1\
+d\xc3\xad; ka\xc5\xbed\xc3\xa1 str\
+ana uv\xc3\xa1d\xc3\xad typo\
+v\xc3\xbd kl\xc3\xad\xc4\x8d a v\xc3\xbd\
+robn\xc3\xad \xc4\x8d\xc3\xadslo a\
+ sv\xc3\xa9 \xc4\x8d\xc3\xadslo st\
+rany; na\x0aposledn\
+\xc3\xad stran\xc4\x9b je \xc5\x99\
+\xc3\xa1dek pro datum,\
+ jm\xc3\xa9no a podpis\
+.</p>\x0a<p><b>Z\xc3\xa1l\
+oha ventilu</b>:\
+ p\xc5\x99ipojte se (r\
+e\xc5\xbeim online), V\
+entil \xe2\x86\x92 Sta\xc5\xbee\
+n\xc3\xad z ventilu, p\
+ak\x0aSoubor \xe2\x86\x92 <b\
+>Ulo\xc5\xbeit z\xc3\xa1lo\xc5\xbe\
+n\xc3\xad kopii\xe2\x80\xa6</b>\
+ (navr\xc5\xbeen\xc3\xbd n\xc3\xa1\
+zev: typov\xc3\xbd kl\xc3\
+\xad\xc4\x8d, v\xc3\xbdrobn\xc3\xad \xc4\
+\x8d\xc3\xadslo, datum\x0aa \
+\xc4\x8das). Kopie se \
+zap\xc3\xad\xc5\xa1e a otev\xc5\
+\x99en\xc3\xbd dokument z\
+\xc5\xafstane, jak\xc3\xbd b\
+yl: pozd\xc4\x9bj\xc5\xa1\xc3\xad \
+zm\xc4\x9bny se ukl\xc3\xa1d\
+aj\xc3\xad do\x0ajeho vla\
+stn\xc3\xadho souboru,\
+ nikdy do z\xc3\xa1loh\
+y. Naproti tomu \
+Ulo\xc5\xbeit jako ud\xc4\
+\x9bl\xc3\xa1 z nov\xc3\xa9ho s\
+ouboru\x0aotev\xc5\x99en\xc3\
+\xbd dokument.</p>\x0a\
+\x0a<h2>Kl\xc3\xa1vesnice\
+</h2>\x0a<table>\x0a<t\
+r><td>Ctrl+O / C\
+trl+S / Ctrl+Shi\
+ft+S</td><td>Ote\
+v\xc5\x99\xc3\xadt / Ulo\xc5\xbeit\
+ / Ulo\xc5\xbeit jako<\
 /td></tr>\x0a<tr><t\
-d>Ctrl+P / Ctrl+\
-E</td><td>Tisk /\
- Export do PDF</\
-td></tr>\x0a<tr><td\
->Ctrl+1 / Ctrl+2\
- / Ctrl+3 / Ctrl\
-+4</td><td>Postu\
-pov\xc3\xbd diagram / \
-Seznam parametr\xc5\
-\xaf / Osciloskop /\
- Okno CANopen</t\
-d></tr>\x0a<tr><td>\
-F5 / Shift+F5</t\
-d><td>Re\xc5\xbeim onl\
-ine / Re\xc5\xbeim off\
-line</td></tr>\x0a<\
-tr><td>Ctrl+U / \
-Ctrl+D</td><td>N\
-a\xc4\x8dten\xc3\xad do vent\
-ilu / Sta\xc5\xbeen\xc3\xad \
-z ventilu</td></\
-tr>\x0a<tr><td>Ctrl\
-+T / Ctrl+I / Ct\
-rl+H</td><td>V\xc3\xbd\
-b\xc4\x9br ventilu / S\
-tav ventilu / HI\
-D konfigurace</t\
-d></tr>\x0a</table>\
-\x0a</body>\x0a</html>\
-\x0a\
-\x00\x00\x17\x88\
+d>Ctrl+Z / Ctrl+\
+Y</td><td>Zp\xc4\x9bt \
+/ Znovu</td></tr\
+>\x0a<tr><td>Ctrl+P\
+ / Ctrl+E</td><t\
+d>Tisk / Export \
+do PDF</td></tr>\
+\x0a<tr><td>Ctrl+1 \
+/ Ctrl+2 / Ctrl+\
+3 / Ctrl+4</td><\
+td>Postupov\xc3\xbd di\
+agram / Seznam p\
+arametr\xc5\xaf / Osci\
+loskop / Okno CA\
+Nopen</td></tr>\x0a\
+<tr><td>F5 / Shi\
+ft+F5</td><td>Re\
+\xc5\xbeim online / Re\
+\xc5\xbeim offline</td\
+></tr>\x0a<tr><td>C\
+trl+U / Ctrl+D</\
+td><td>Na\xc4\x8dten\xc3\xad\
+ do ventilu / St\
+a\xc5\xbeen\xc3\xad z ventil\
+u</td></tr>\x0a<tr>\
+<td>Ctrl+T / Ctr\
+l+I / Ctrl+H</td\
+><td>V\xc3\xbdb\xc4\x9br ven\
+tilu / Stav vent\
+ilu / HID konfig\
+urace</td></tr>\x0a\
+</table>\x0a</body>\
+\x0a</html>\x0a\
+\x00\x00\x18\x14\
 <\
 !DOCTYPE html>\x0a<\
 html lang=\x22de\x22>\x0a\
@@ -605,158 +613,167 @@ ichert: beim Wec\
 hsel\x0aauf offline\
  bietet das Prog\
 ramm an, sie zu \
-speichern. <b>In\
- das Ventil hoch\
-laden</b>\x0aschrei\
-bt alle Werte, l\
-iest sie zur\xc3\xbcck\
-, vergleicht und\
- speichert sie; \
-gespeichert wird\
- nur,\x0awenn jeder\
- Wert best\xc3\xa4tigt\
- wurde. Vor dem \
-ersten Hochladen\
- in ein Ventil s\
-ichert das\x0aProgr\
-amm dessen eigen\
-e Parameter im B\
-enutzerdatenordn\
-er (<code>backup\
-s/&lt;Seriennumm\
-er&gt;/</code>).\
-</p>\x0a<p><b>Venti\
-l neu starten</b\
-> und <b>Werksei\
-nstellungen wied\
-erherstellen</b>\
- sind nur bei\x0age\
-trennter Hydraul\
-ik erlaubt; das \
-Programm l\xc3\xa4sst \
-Sie das best\xc3\xa4ti\
-gen.</p>\x0a\x0a<h2>Da\
-teien</h2>\x0a<p>Pa\
-rameterdateien (\
-<code>*.prm</cod\
-e>) sind Textdat\
-eien. \xc3\x96ffnen, S\
-peichern, Speich\
-ern\x0aunter, die z\
-uletzt ge\xc3\xb6ffnet\
-en Dateien und D\
-rag &amp; Drop f\
-unktionieren wie\
- gewohnt; vor de\
-m\x0aVerlust ungesp\
-eicherter \xc3\x84nder\
-ungen fragt das \
-Programm nach. J\
-ede \xc3\x84nderung l\xc3\
-\xa4sst sich\x0ar\xc3\xbcckg\
-\xc3\xa4ngig machen (S\
-trg+Z) und wiede\
-rherstellen (Str\
-g+Y). Datei \xe2\x86\x92 \
-Drucken und Date\
-i \xe2\x86\x92 PDF\x0aexport\
-ieren erzeugen e\
-in Parameterprot\
-okoll mit Typsch\
-l\xc3\xbcssel, Serienn\
-ummer, Firmware,\
- Datei,\x0aDatum, B\
-erechtigungsstuf\
-e, dem Ablaufdia\
-gramm und allen \
-Parametern mit E\
-inheit. Seit dem\
-\x0aSpeichern ge\xc3\xa4n\
-derte Werte sind\
- mit <b>*</b> ma\
-rkiert, und die \
-Zeile \xe2\x80\x9eDatei\xe2\x80\
-\x9c sagt es; jede \
-Seite\x0anennt Typs\
-chl\xc3\xbcssel und Se\
-riennummer und t\
-r\xc3\xa4gt ihre Seite\
-nzahl; die letzt\
-e Seite hat eine\
- Zeile\x0af\xc3\xbcr Datu\
-m, Name und Unte\
-rschrift.</p>\x0a<p\
-><b>Ein Ventil s\
-ichern</b>: onli\
-ne gehen, Ventil\
- \xe2\x86\x92 Aus dem Ven\
-til herunterlade\
-n, dann\x0aDatei \xe2\x86\
-\x92 <b>Sicherungsk\
-opie speichern\xe2\x80\
-\xa6</b> (vorgeschl\
-agener Name: Typ\
-schl\xc3\xbcssel, Seri\
-ennummer,\x0aDatum \
-und Uhrzeit). Di\
-e Kopie wird ges\
-chrieben, das ge\
-\xc3\xb6ffnete Dokumen\
-t bleibt, was es\
- war:\x0asp\xc3\xa4tere \xc3\
-\x84nderungen werde\
-n in seine eigen\
-e Datei gespeich\
-ert, nie in die \
-Sicherung. Speic\
-hern\x0aunter dageg\
-en macht die neu\
-e Datei zum ge\xc3\xb6\
-ffneten Dokument\
-.</p>\x0a\x0a<h2>Tasta\
-tur</h2>\x0a<table>\
-\x0a<tr><td>Strg+O \
-/ Strg+S / Strg+\
-Umschalt+S</td><\
-td>\xc3\x96ffnen / Spe\
-ichern / Speiche\
-rn unter</td></t\
-r>\x0a<tr><td>Strg+\
-Z / Strg+Y</td><\
-td>R\xc3\xbcckg\xc3\xa4ngig \
-/ Wiederherstell\
-en</td></tr>\x0a<tr\
-><td>Strg+P / St\
-rg+E</td><td>Dru\
-cken / PDF expor\
-tieren</td></tr>\
-\x0a<tr><td>Strg+1 \
-/ Strg+2 / Strg+\
-3 / Strg+4</td><\
-td>Ablaufdiagram\
-m / Parameterlis\
-te / Oszilloskop\
- / CANopen-Fenst\
-er</td></tr>\x0a<tr\
-><td>F5 / Umscha\
-lt+F5</td><td>On\
-line / Offline</\
+speichern, und V\
+entil \xe2\x86\x92 <b>Im \
+Ventil speichern\
+</b>\x0aspeichert s\
+ie sofort (womit\
+ das Ventil arbe\
+itet, damit star\
+tet es auch; im \
+Verlauf\x0afestgeha\
+lten). <b>In das\
+ Ventil hochlade\
+n</b>\x0aschreibt a\
+lle Werte, liest\
+ sie zur\xc3\xbcck, ve\
+rgleicht und spe\
+ichert sie; gesp\
+eichert wird nur\
+,\x0awenn jeder Wer\
+t best\xc3\xa4tigt wur\
+de. Vor dem erst\
+en Hochladen in \
+ein Ventil siche\
+rt das\x0aProgramm \
+dessen eigene Pa\
+rameter im Benut\
+zerdatenordner (\
+<code>backups/&l\
+t;Seriennummer&g\
+t;/</code>).</p>\
+\x0a<p><b>Ventil ne\
+u starten</b> un\
+d <b>Werkseinste\
+llungen wiederhe\
+rstellen</b> sin\
+d nur bei\x0agetren\
+nter Hydraulik e\
+rlaubt; das Prog\
+ramm l\xc3\xa4sst Sie \
+das best\xc3\xa4tigen.\
+</p>\x0a\x0a<h2>Dateie\
+n</h2>\x0a<p>Parame\
+terdateien (<cod\
+e>*.prm</code>) \
+sind Textdateien\
+. \xc3\x96ffnen, Speic\
+hern, Speichern\x0a\
+unter, die zulet\
+zt ge\xc3\xb6ffneten D\
+ateien und Drag \
+&amp; Drop funkt\
+ionieren wie gew\
+ohnt; vor dem\x0aVe\
+rlust ungespeich\
+erter \xc3\x84nderunge\
+n fragt das Prog\
+ramm nach. Jede \
+\xc3\x84nderung l\xc3\xa4sst\
+ sich\x0ar\xc3\xbcckg\xc3\xa4ng\
+ig machen (Strg+\
+Z) und wiederher\
+stellen (Strg+Y)\
+. Datei \xe2\x86\x92 Druc\
+ken und Datei \xe2\x86\
+\x92 PDF\x0aexportiere\
+n erzeugen ein P\
+arameterprotokol\
+l mit Typschl\xc3\xbcs\
+sel, Seriennumme\
+r, Firmware, Dat\
+ei,\x0aDatum, Berec\
+htigungsstufe, d\
+em Ablaufdiagram\
+m und allen Para\
+metern mit Einhe\
+it. Seit dem\x0aSpe\
+ichern ge\xc3\xa4ndert\
+e Werte sind mit\
+ <b>*</b> markie\
+rt, und die Zeil\
+e \xe2\x80\x9eDatei\xe2\x80\x9c sa\
+gt es; jede Seit\
+e\x0anennt Typschl\xc3\
+\xbcssel und Serien\
+nummer und tr\xc3\xa4g\
+t ihre Seitenzah\
+l; die letzte Se\
+ite hat eine Zei\
+le\x0af\xc3\xbcr Datum, N\
+ame und Untersch\
+rift.</p>\x0a<p><b>\
+Ein Ventil siche\
+rn</b>: online g\
+ehen, Ventil \xe2\x86\x92\
+ Aus dem Ventil \
+herunterladen, d\
+ann\x0aDatei \xe2\x86\x92 <b\
+>Sicherungskopie\
+ speichern\xe2\x80\xa6</b\
+> (vorgeschlagen\
+er Name: Typschl\
+\xc3\xbcssel, Seriennu\
+mmer,\x0aDatum und \
+Uhrzeit). Die Ko\
+pie wird geschri\
+eben, das ge\xc3\xb6ff\
+nete Dokument bl\
+eibt, was es war\
+:\x0asp\xc3\xa4tere \xc3\x84nde\
+rungen werden in\
+ seine eigene Da\
+tei gespeichert,\
+ nie in die Sich\
+erung. Speichern\
+\x0aunter dagegen m\
+acht die neue Da\
+tei zum ge\xc3\xb6ffne\
+ten Dokument.</p\
+>\x0a\x0a<h2>Tastatur<\
+/h2>\x0a<table>\x0a<tr\
+><td>Strg+O / St\
+rg+S / Strg+Umsc\
+halt+S</td><td>\xc3\
+\x96ffnen / Speiche\
+rn / Speichern u\
+nter</td></tr>\x0a<\
+tr><td>Strg+Z / \
+Strg+Y</td><td>R\
+\xc3\xbcckg\xc3\xa4ngig / Wi\
+ederherstellen</\
 td></tr>\x0a<tr><td\
->Strg+U / Strg+D\
-</td><td>In das \
-Ventil hochladen\
- / Aus dem Venti\
-l herunterladen<\
-/td></tr>\x0a<tr><t\
-d>Strg+T / Strg+\
-I / Strg+H</td><\
-td>Ventilauswahl\
- / Ventilstatus \
-/ HID-Konfigurat\
-ion</td></tr>\x0a</\
-table>\x0a</body>\x0a<\
-/html>\x0a\
-\x00\x00\x14@\
+>Strg+P / Strg+E\
+</td><td>Drucken\
+ / PDF exportier\
+en</td></tr>\x0a<tr\
+><td>Strg+1 / St\
+rg+2 / Strg+3 / \
+Strg+4</td><td>A\
+blaufdiagramm / \
+Parameterliste /\
+ Oszilloskop / C\
+ANopen-Fenster</\
+td></tr>\x0a<tr><td\
+>F5 / Umschalt+F\
+5</td><td>Online\
+ / Offline</td><\
+/tr>\x0a<tr><td>Str\
+g+U / Strg+D</td\
+><td>In das Vent\
+il hochladen / A\
+us dem Ventil he\
+runterladen</td>\
+</tr>\x0a<tr><td>St\
+rg+T / Strg+I / \
+Strg+H</td><td>V\
+entilauswahl / V\
+entilstatus / HI\
+D-Konfiguration<\
+/td></tr>\x0a</tabl\
+e>\x0a</body>\x0a</htm\
+l>\x0a\
+\x00\x00\x14\xca\
 <\
 !DOCTYPE html>\x0a<\
 html lang=\x22en\x22>\x0a\
@@ -951,137 +968,146 @@ re active in the\
  valve but not y\
 et stored: going\
  offline offers \
-to\x0astore them. <\
-b>Upload to valv\
-e</b> writes all\
- values, reads t\
-hem back, compar\
-es and stores\x0ath\
-em; nothing is s\
-tored unless eve\
-ry value was ver\
-ified. Before th\
-e first upload t\
-o a valve\x0athe pr\
-ogram saves a ba\
-ckup of the valv\
-e's own paramete\
-rs in the user d\
-ata folder\x0a(<cod\
-e>backups/&lt;se\
-rial&gt;/</code>\
-).</p>\x0a<p><b>Res\
-tart valve</b> a\
-nd <b>Restore fa\
-ctory values</b>\
- are allowed onl\
-y with the\x0ahydra\
-ulics disconnect\
-ed; the program \
-asks you to conf\
-irm this.</p>\x0a\x0a<\
-h2>Files</h2>\x0a<p\
->Parameter files\
- (<code>*.prm</c\
-ode>) are text f\
-iles. Open, Save\
-, Save As, the r\
-ecent\x0afiles and \
-drag and drop wo\
-rk as usual; the\
- program asks be\
-fore unsaved cha\
-nges are lost.\x0aE\
-very change can \
-be undone (Ctrl+\
-Z) and redone (C\
-trl+Y). File \xe2\x86\x92\
- Print and File \
-\xe2\x86\x92 Export PDF\x0ap\
-roduce a paramet\
-er record with t\
-ype key, serial \
-number, firmware\
-, file, date, ac\
-cess level,\x0athe \
-flow diagram and\
- every parameter\
- with its unit. \
-Values changed s\
-ince the file wa\
-s saved\x0aare mark\
-ed <b>*</b> and \
-the file line sa\
-ys so; every pag\
-e names the type\
- key and serial\x0a\
-number and carri\
-es its page numb\
-er; the last pag\
-e has a line for\
- date, name and\x0a\
-signature.</p>\x0a<\
-p><b>Back up a v\
-alve</b>: go onl\
-ine, Valve \xe2\x86\x92 D\
-ownload from val\
-ve, then File \xe2\x86\
-\x92 <b>Save backup\
-\x0acopy\xe2\x80\xa6</b> (pr\
-oposed name: typ\
-e key, serial nu\
-mber, date and t\
-ime). The copy i\
-s written and\x0ath\
-e open document \
-stays what it wa\
-s: later changes\
- are saved into \
-the document's o\
-wn file,\x0anever i\
-nto the backup. \
-Save As, by cont\
-rast, makes the \
-new file the ope\
-n document.</p>\x0a\
-\x0a<h2>Keyboard</h\
-2>\x0a<table>\x0a<tr><\
-td>Ctrl+O / Ctrl\
-+S / Ctrl+Shift+\
-S</td><td>Open /\
- Save / Save As<\
+to\x0astore them, a\
+nd Valve \xe2\x86\x92 <b>\
+Store in valve</\
+b> stores them a\
+t once (what the\
+ valve works wit\
+h\x0abecomes what i\
+t starts with; r\
+ecorded in the h\
+istory). <b>Uplo\
+ad to valve</b> \
+writes all value\
+s, reads them ba\
+ck, compares and\
+ stores\x0athem; no\
+thing is stored \
+unless every val\
+ue was verified.\
+ Before the firs\
+t upload to a va\
+lve\x0athe program \
+saves a backup o\
+f the valve's ow\
+n parameters in \
+the user data fo\
+lder\x0a(<code>back\
+ups/&lt;serial&g\
+t;/</code>).</p>\
+\x0a<p><b>Restart v\
+alve</b> and <b>\
+Restore factory \
+values</b> are a\
+llowed only with\
+ the\x0ahydraulics \
+disconnected; th\
+e program asks y\
+ou to confirm th\
+is.</p>\x0a\x0a<h2>Fil\
+es</h2>\x0a<p>Param\
+eter files (<cod\
+e>*.prm</code>) \
+are text files. \
+Open, Save, Save\
+ As, the recent\x0a\
+files and drag a\
+nd drop work as \
+usual; the progr\
+am asks before u\
+nsaved changes a\
+re lost.\x0aEvery c\
+hange can be und\
+one (Ctrl+Z) and\
+ redone (Ctrl+Y)\
+. File \xe2\x86\x92 Print\
+ and File \xe2\x86\x92 Ex\
+port PDF\x0aproduce\
+ a parameter rec\
+ord with type ke\
+y, serial number\
+, firmware, file\
+, date, access l\
+evel,\x0athe flow d\
+iagram and every\
+ parameter with \
+its unit. Values\
+ changed since t\
+he file was save\
+d\x0aare marked <b>\
+*</b> and the fi\
+le line says so;\
+ every page name\
+s the type key a\
+nd serial\x0anumber\
+ and carries its\
+ page number; th\
+e last page has \
+a line for date,\
+ name and\x0asignat\
+ure.</p>\x0a<p><b>B\
+ack up a valve</\
+b>: go online, V\
+alve \xe2\x86\x92 Downloa\
+d from valve, th\
+en File \xe2\x86\x92 <b>S\
+ave backup\x0acopy\xe2\
+\x80\xa6</b> (proposed\
+ name: type key,\
+ serial number, \
+date and time). \
+The copy is writ\
+ten and\x0athe open\
+ document stays \
+what it was: lat\
+er changes are s\
+aved into the do\
+cument's own fil\
+e,\x0anever into th\
+e backup. Save A\
+s, by contrast, \
+makes the new fi\
+le the open docu\
+ment.</p>\x0a\x0a<h2>K\
+eyboard</h2>\x0a<ta\
+ble>\x0a<tr><td>Ctr\
+l+O / Ctrl+S / C\
+trl+Shift+S</td>\
+<td>Open / Save \
+/ Save As</td></\
+tr>\x0a<tr><td>Ctrl\
++Z / Ctrl+Y</td>\
+<td>Undo / Redo<\
 /td></tr>\x0a<tr><t\
-d>Ctrl+Z / Ctrl+\
-Y</td><td>Undo /\
- Redo</td></tr>\x0a\
-<tr><td>Ctrl+P /\
- Ctrl+E</td><td>\
-Print / Export P\
-DF</td></tr>\x0a<tr\
-><td>Ctrl+1 / Ct\
-rl+2 / Ctrl+3 / \
-Ctrl+4</td><td>F\
-low diagram / Pa\
-rameter list / O\
-scilloscope / CA\
-Nopen window</td\
-></tr>\x0a<tr><td>F\
-5 / Shift+F5</td\
-><td>Online / Of\
-fline</td></tr>\x0a\
-<tr><td>Ctrl+U /\
- Ctrl+D</td><td>\
-Upload to valve \
-/ Download from \
-valve</td></tr>\x0a\
-<tr><td>Ctrl+T /\
- Ctrl+I / Ctrl+H\
-</td><td>Valve s\
-election / Valve\
- status / HID co\
-nfiguration</td>\
-</tr>\x0a</table>\x0a<\
-/body>\x0a</html>\x0a\
+d>Ctrl+P / Ctrl+\
+E</td><td>Print \
+/ Export PDF</td\
+></tr>\x0a<tr><td>C\
+trl+1 / Ctrl+2 /\
+ Ctrl+3 / Ctrl+4\
+</td><td>Flow di\
+agram / Paramete\
+r list / Oscillo\
+scope / CANopen \
+window</td></tr>\
+\x0a<tr><td>F5 / Sh\
+ift+F5</td><td>O\
+nline / Offline<\
+/td></tr>\x0a<tr><t\
+d>Ctrl+U / Ctrl+\
+D</td><td>Upload\
+ to valve / Down\
+load from valve<\
+/td></tr>\x0a<tr><t\
+d>Ctrl+T / Ctrl+\
+I / Ctrl+H</td><\
+td>Valve selecti\
+on / Valve statu\
+s / HID configur\
+ation</td></tr>\x0a\
+</table>\x0a</body>\
+\x0a</html>\x0a\
 \x00\x00\x01\xc2\
 <\
 svg xmlns=\x22http:\
@@ -1520,22 +1546,22 @@ qt_resource_struct = b"\
 \x00\x00\x00\x00\x00\x02\x00\x00\x00\x02\x00\x00\x00\x01\
 \x00\x00\x00\x10\x00\x02\x00\x00\x00\x03\x00\x00\x00\x10\
 \x00\x00\x00\x00\x00\x02\x00\x00\x00\x0d\x00\x00\x00\x03\
-\x00\x00\x00\xfc\x00\x00\x00\x00\x00\x01\x00\x00J:\
-\x00\x00\x00\x92\x00\x00\x00\x00\x00\x01\x00\x00D\x9c\
-\x00\x00\x01\x9e\x00\x00\x00\x00\x00\x01\x00\x00Tp\
-\x00\x00\x01\x16\x00\x00\x00\x00\x00\x01\x00\x00Kg\
-\x00\x00\x00x\x00\x00\x00\x00\x00\x01\x00\x00B\xd6\
-\x00\x00\x01\xba\x00\x00\x00\x00\x00\x01\x00\x00V\x08\
-\x00\x00\x01.\x00\x00\x00\x00\x00\x01\x00\x00M6\
-\x00\x00\x01\x80\x00\x00\x00\x00\x00\x01\x00\x00R\xc4\
-\x00\x00\x00\xaa\x00\x00\x00\x00\x00\x01\x00\x00FB\
-\x00\x00\x01J\x00\x00\x00\x00\x00\x01\x00\x00N\xff\
-\x00\x00\x00\xc6\x00\x00\x00\x00\x00\x01\x00\x00G?\
-\x00\x00\x00\xe2\x00\x00\x00\x00\x00\x01\x00\x00H\xf8\
-\x00\x00\x01^\x00\x00\x00\x00\x00\x01\x00\x00Q\x83\
+\x00\x00\x00\xfc\x00\x00\x00\x00\x00\x01\x00\x00K\xd8\
+\x00\x00\x00\x92\x00\x00\x00\x00\x00\x01\x00\x00F:\
+\x00\x00\x01\x9e\x00\x00\x00\x00\x00\x01\x00\x00V\x0e\
+\x00\x00\x01\x16\x00\x00\x00\x00\x00\x01\x00\x00M\x05\
+\x00\x00\x00x\x00\x00\x00\x00\x00\x01\x00\x00Dt\
+\x00\x00\x01\xba\x00\x00\x00\x00\x00\x01\x00\x00W\xa6\
+\x00\x00\x01.\x00\x00\x00\x00\x00\x01\x00\x00N\xd4\
+\x00\x00\x01\x80\x00\x00\x00\x00\x00\x01\x00\x00Tb\
+\x00\x00\x00\xaa\x00\x00\x00\x00\x00\x01\x00\x00G\xe0\
+\x00\x00\x01J\x00\x00\x00\x00\x00\x01\x00\x00P\x9d\
+\x00\x00\x00\xc6\x00\x00\x00\x00\x00\x01\x00\x00H\xdd\
+\x00\x00\x00\xe2\x00\x00\x00\x00\x00\x01\x00\x00J\x96\
+\x00\x00\x01^\x00\x00\x00\x00\x00\x01\x00\x00S!\
 \x00\x00\x00\x1e\x00\x00\x00\x00\x00\x01\x00\x00\x00\x00\
-\x00\x00\x00<\x00\x00\x00\x00\x00\x01\x00\x00\x17\x06\
-\x00\x00\x00Z\x00\x00\x00\x00\x00\x01\x00\x00.\x92\
+\x00\x00\x00<\x00\x00\x00\x00\x00\x01\x00\x00\x17\x8e\
+\x00\x00\x00Z\x00\x00\x00\x00\x00\x01\x00\x00/\xa6\
 "
 
 def qInitResources():

@@ -11,7 +11,7 @@ from collections.abc import Callable, Mapping
 from dataclasses import dataclass
 from typing import Any
 
-from PySide6.QtCore import QObject, QSettings, Signal
+from PySide6.QtCore import QObject, QSettings, QTime, Signal
 from PySide6.QtWidgets import QDialog, QProgressDialog, QWidget
 
 from prm9tool.catalogue.typekey import TypeKey
@@ -254,6 +254,11 @@ class ValveWorkflow(QObject):
         """The Expert-level parameters whose document value differs from the valve's."""
         return self.uploads.expert_differences(valve_values)
 
+    def store(self) -> None:
+        """Valve → Store: the valve keeps what it works with now (also after a restart)."""
+        self.progress.start("store", self.tr("Storing the parameters in the valve…"), False)
+        self._connection.store_valve()
+
     def download(self) -> None:
         """Read the valve's parameters into the document (one undo step)."""
         self.progress.start("download", self.tr("Downloading the parameters from the valve…"))
@@ -307,7 +312,8 @@ class ValveWorkflow(QObject):
             self.uploads.finished(result)
         elif name == "store":
             self._sync.unstored = False
-            self.message_posted.emit(self.tr("The valve stored its parameters"))
+            at = QTime.currentTime().toString("HH:mm:ss")
+            self.message_posted.emit(self.tr("The valve stored its parameters at {0}").format(at))
 
     def _report_restart(self) -> None:
         """Say that the valve restarted — and where, when a changed node ID or bit rate moved
