@@ -3911,6 +3911,10 @@ Zajistěte, aby to hydraulika bezpečně snesla. Tlačítko Stop test kdykoli uk
     <context>
         <name>ValveControl</name>
         <message>
+            <source>it is operational on CANopen but not enabled yet (device state {0}). Press Enable (control word 08h → 09h → 0Bh → 0Fh).</source>
+            <translation>na sběrnici CANopen je ve stavu operational, ale ještě není uvolněn (stav zařízení {0}). Stiskněte „Uvolnit“ (řídicí slovo 08h → 09h → 0Bh → 0Fh).</translation>
+        </message>
+        <message>
             <source>no valve is connected.</source>
             <translation>není připojen žádný ventil.</translation>
         </message>

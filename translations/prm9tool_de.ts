@@ -3895,6 +3895,10 @@ Stellen Sie sicher, dass die Hydraulik dafür sicher ist. Stopp beendet ihn jede
     <context>
         <name>ValveControl</name>
         <message>
+            <source>it is operational on CANopen but not enabled yet (device state {0}). Press Enable (control word 08h → 09h → 0Bh → 0Fh).</source>
+            <translation>es ist am CANopen-Bus operational, aber noch nicht freigegeben (Gerätezustand {0}). Drücken Sie „Freigeben“ (Steuerwort 08h → 09h → 0Bh → 0Fh).</translation>
+        </message>
+        <message>
             <source>no valve is connected.</source>
             <translation>kein Ventil ist verbunden.</translation>
         </message>

@@ -21,7 +21,6 @@ from PySide6.QtCore import QEvent, Qt, QTimer, Signal
 from PySide6.QtGui import QCloseEvent, QHideEvent, QShowEvent
 from PySide6.QtWidgets import (
     QGridLayout,
-    QLabel,
     QPushButton,
     QTabWidget,
     QVBoxLayout,
@@ -33,6 +32,7 @@ from prm9tool.model.document import ParameterDocument
 from prm9tool.online.connection_protocol import ScopeConnection, StatusView
 from prm9tool.online.valve_control import ValveControl, status_blocker
 from prm9tool.scope import Capture, GeneratorSettings
+from prm9tool.views.fixed_lines import FixedLinesLabel
 from prm9tool.views.scope.display import ScopeDisplay
 from prm9tool.views.scope.export import ScopeExport
 from prm9tool.views.scope.generator import GeneratorPanel, SetpointGenerator
@@ -43,6 +43,7 @@ from prm9tool.views.scope.start import GeneratorStart, measure_against_demand
 from prm9tool.views.scope.status import ScopeStatusText
 
 REDRAW_MS = 33  # ~30 Hz
+STATUS_LINES = 3  # the status line's height: its messages wrap in it
 
 
 class ScopeWidget(QWidget):
@@ -85,10 +86,8 @@ class ScopeWidget(QWidget):
         self.display = ScopeDisplay(self.plot, self.cursor_panel, self.step_panel, self)
         self.exporter = ScopeExport(self.display, self.plot, self._say, self)
         self._texts = ScopeStatusText(self._connection, self.display, self)
-        self.status = QLabel()
+        self.status = FixedLinesLabel(STATUS_LINES)  # a longer message moves no button
         self.status.setTextInteractionFlags(Qt.TextInteractionFlag.TextSelectableByMouse)
-        self.status.setWordWrap(True)
-        self.status.setMinimumWidth(1)  # a long message wraps instead of widening the window
         self._timer = QTimer(self)
         self._timer.setInterval(REDRAW_MS)
         self._timer.timeout.connect(self._redraw)
