@@ -3201,6 +3201,14 @@ Ano načte a záznam zařadí do fronty; Ne nenačte nic.</translation>
             <translation>Znovu přizpůsobit měřítko kanálu jeho datům</translation>
         </message>
         <message>
+            <source>at stop:</source>
+            <translation>při zastavení:</translation>
+        </message>
+        <message>
+            <source>The last value recorded before Stop; the valve may hold another now.</source>
+            <translation>Poslední hodnota zaznamenaná před zastavením; ventil už může mít jinou.</translation>
+        </message>
+        <message>
             <source>Time from trigger [ms]</source>
             <translation>Čas od spuštění [ms]</translation>
         </message>

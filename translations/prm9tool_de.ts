@@ -3185,6 +3185,14 @@ Ja lädt hoch und stellt den Eintrag in die Warteschlange; Nein lädt nichts hoc
             <translation>Diesen Kanal wieder an seine Daten anpassen</translation>
         </message>
         <message>
+            <source>at stop:</source>
+            <translation>bei Stopp:</translation>
+        </message>
+        <message>
+            <source>The last value recorded before Stop; the valve may hold another now.</source>
+            <translation>Der letzte vor „Stopp“ aufgezeichnete Wert; das Ventil kann inzwischen einen anderen haben.</translation>
+        </message>
+        <message>
             <source>Time from trigger [ms]</source>
             <translation>Zeit ab Trigger [ms]</translation>
         </message>

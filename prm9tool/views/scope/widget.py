@@ -14,6 +14,7 @@ on. Online only, like PRM9.exe.
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from pathlib import Path
 
 import numpy as np
@@ -64,8 +65,10 @@ class ScopeWidget(QWidget):
         self._status: StatusView | None = None  # the valve's latest status
         self._running = False
         self._accepting = False  # False between a (re)start request and stream_started
-        self._generator_note = ""
-        self._recording_note = ""  # why the recording stopped without the user
+        # why the generator or the recording stopped without the user: in the language of the
+        # moment it is shown (a text made at the time stayed English after a switch)
+        self._generator_note: Callable[[], str] | None = None
+        self._recording_note: Callable[[], str] | None = None
         self.generator = SetpointGenerator(connection, self)
         self._starter = GeneratorStart(control, self)  # the questions before it starts
         self._build()
@@ -177,7 +180,7 @@ class ScopeWidget(QWidget):
             self._update_status()
             return
         self._running = True
-        self._recording_note = ""
+        self._recording_note = None
         self._start_capture(keys)
 
     def stop(self) -> None:
@@ -220,7 +223,7 @@ class ScopeWidget(QWidget):
         self._accepting = False
         self.display.hold_all()
         self._timer.stop()
-        self._recording_note = self._texts.stream_taken()
+        self._recording_note = self._texts.stream_taken
         self._update_controls()
         self._update_status()
 
@@ -295,7 +298,7 @@ class ScopeWidget(QWidget):
 
     def _on_online_changed(self, online: bool) -> None:
         if online:
-            self._generator_note = ""
+            self._generator_note = None
             device = getattr(self._connection, "device", None)
             limit = getattr(device, "stream_rate_limit_hz", 0.0)
             self.controls.limit_rates(float(limit or 0.0))  # over CANopen: what the bus delivers
@@ -322,8 +325,8 @@ class ScopeWidget(QWidget):
 
     def _update_status(self) -> None:
         parts = (
-            self._generator_note,
-            self._recording_note,
+            self._generator_note() if self._generator_note else "",
+            self._recording_note() if self._recording_note else "",
             self._texts.blocked(self._status),
             self._texts.state(self._running),
         )
@@ -342,7 +345,7 @@ class ScopeWidget(QWidget):
     def _on_generator_start_requested(self, settings: GeneratorSettings) -> None:
         if not self._starter.confirmed(settings, self._status):
             return
-        self._generator_note = ""
+        self._generator_note = None
         try:
             self.generator.start(settings)
         except RuntimeError as exc:
@@ -351,15 +354,15 @@ class ScopeWidget(QWidget):
         measure_against_demand(self.channels, self.step_panel)
 
     def _on_generator_stopped_by_link(self) -> None:
-        self._generator_note = self._texts.generator_link_dropped()
+        self._generator_note = self._texts.generator_link_dropped
         self._update_status()
 
     def _on_generator_stopped_by_operation(self) -> None:
-        self._generator_note = self._texts.generator_displaced()
+        self._generator_note = self._texts.generator_displaced
         self._update_status()
 
     def _on_generator_refused(self, reason: str) -> None:
-        self._generator_note = self._texts.generator_refused(reason)
+        self._generator_note = lambda: self._texts.generator_refused(reason)
         self._update_status()
 
     # --- export ------------------------------------------------------------------------------
