@@ -103,7 +103,7 @@ def test_a_broken_file_is_reported_in_the_program_language(window, tmp_path, ans
         f"„broken.prm“ kann nicht geöffnet werden: broken.prm:{limta}: LIMTA: 'lots' ist keine "
         "Zahl\n1 weiteres Problem in den Details.\n"
         f"{path}:{limta}: LIMTA: 'lots' ist keine Zahl\n"
-        f"{path}:{checksum}: Warnung: Prüfsumme stimmt nicht: die Datei wurde außerhalb von "
+        f"{path}:{checksum}: Warnung: Prüfsumme stimmt nicht: Die Datei wurde außerhalb von "
         "prm9tool geändert (von Hand bearbeitet?); Speichern aus prm9tool schreibt eine neue "
         "Prüfsumme"
     )

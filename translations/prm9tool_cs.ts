@@ -1780,7 +1780,7 @@ Uvolnit ho nyní (NMT start, řídicí slovo 08h → 09h → 0Bh → 0Fh)?</tran
         <name>HidConfigurationDialog</name>
         <message>
             <source>HID configuration</source>
-            <translation>HID konfigurace</translation>
+            <translation>Konfigurace HID</translation>
         </message>
         <message>
             <source>Valves connected to this computer and emulated valves. Choose the one to communicate with.</source>
@@ -2261,7 +2261,7 @@ Ano načte a záznam zařadí do fronty; Ne nenačte nic.</translation>
         </message>
         <message>
             <source>&amp;HID configuration…</source>
-            <translation>&amp;HID konfigurace…</translation>
+            <translation>Konfigurace &amp;HID…</translation>
         </message>
         <message>
             <source>Choose the valve to communicate with</source>

@@ -424,7 +424,7 @@ Die letzte Aktion wurde womöglich nicht vollständig ausgeführt. Speichern Sie
         </message>
         <message>
             <source>The node-ID switch is not at 0: the switch sets the node ID.</source>
-            <translation>Der Node-ID-Schalter steht nicht auf 0: der Schalter legt die Node-ID fest.</translation>
+            <translation>Der Node-ID-Schalter steht nicht auf 0: Der Schalter legt die Node-ID fest.</translation>
         </message>
         <message>
             <source>This valve type has no CANopen interface (no -CA in the type key).</source>
@@ -432,7 +432,7 @@ Die letzte Aktion wurde womöglich nicht vollständig ausgeführt. Speichern Sie
         </message>
         <message>
             <source>Offline: the switch positions are unknown. Settings changed here go into the document; upload it to the valve and restart the valve.</source>
-            <translation>Offline: die Schalterstellungen sind unbekannt. Hier geänderte Einstellungen gehen in das Dokument; laden Sie es in das Ventil und starten Sie das Ventil neu.</translation>
+            <translation>Offline: Die Schalterstellungen sind unbekannt. Hier geänderte Einstellungen gehen in das Dokument; laden Sie es in das Ventil und starten Sie das Ventil neu.</translation>
         </message>
         <message>
             <source>Reading the switch positions from the valve …</source>
@@ -585,7 +585,7 @@ Die letzte Aktion wurde womöglich nicht vollständig ausgeführt. Speichern Sie
         </message>
         <message>
             <source>the process controller's Kp is 0: the spool would not move</source>
-            <translation>Kp des Prozessreglers ist 0: der Schieber würde sich nicht bewegen</translation>
+            <translation>Kp des Prozessreglers ist 0: Der Schieber würde sich nicht bewegen</translation>
         </message>
     </context>
     <context>
@@ -632,7 +632,7 @@ Die letzte Aktion wurde womöglich nicht vollständig ausgeführt. Speichern Sie
         </message>
         <message>
             <source>NMT stop: only NMT is answered</source>
-            <translation>NMT Stopp: nur NMT wird beantwortet</translation>
+            <translation>NMT Stopp: Nur NMT wird beantwortet</translation>
         </message>
         <message>
             <source>The valve follows its setpoint (DEVICE_MODE_ACTIVE).</source>
@@ -670,11 +670,11 @@ Die letzte Aktion wurde womöglich nicht vollständig ausgeführt. Speichern Sie
         </message>
         <message>
             <source>Basic level</source>
-            <translation>Basis-Ebene</translation>
+            <translation>Basisstufe</translation>
         </message>
         <message>
             <source>Expert level</source>
-            <translation>Experten-Ebene</translation>
+            <translation>Expertenstufe</translation>
         </message>
         <message>
             <source>Block:</source>
@@ -682,7 +682,7 @@ Die letzte Aktion wurde womöglich nicht vollständig ausgeführt. Speichern Sie
         </message>
         <message>
             <source>Access level:</source>
-            <translation>Zugriffsebene:</translation>
+            <translation>Berechtigungsstufe:</translation>
         </message>
         <message>
             <source>Tick every shown value of {0}</source>
@@ -1388,7 +1388,7 @@ Die letzte Aktion wurde womöglich nicht vollständig ausgeführt. Speichern Sie
         </message>
         <message>
             <source>The valve reads its rotary switches at power-up only: restart it (Valve → Restart valve) for a new position to apply. The setpoint input counts only while the valve takes its setpoint from the analog input (no CANopen, no setpoint generator).</source>
-            <translation>Das Ventil liest seine Drehschalter nur beim Einschalten: starten Sie es neu (Ventil → Ventil neu starten), damit eine neue Stellung gilt. Der Sollwerteingang zählt nur, solange das Ventil seinen Sollwert vom Analogeingang nimmt (kein CANopen, kein Sollwertgenerator).</translation>
+            <translation>Das Ventil liest seine Drehschalter nur beim Einschalten: Starten Sie es neu (Ventil → Ventil neu starten), damit eine neue Stellung gilt. Der Sollwerteingang zählt nur, solange das Ventil seinen Sollwert vom Analogeingang nimmt (kein CANopen, kein Sollwertgenerator).</translation>
         </message>
     </context>
     <context>
@@ -1465,19 +1465,19 @@ Die letzte Aktion wurde womöglich nicht vollständig ausgeführt. Speichern Sie
         </message>
         <message>
             <source>node {0} is NMT {1}: the valve takes RPDOs only when OPERATIONAL — start it first (Valve status → Commissioning: NMT start)</source>
-            <translation>Knoten {0} ist NMT {1}: das Ventil nimmt RPDOs nur im Zustand OPERATIONAL an — starten Sie ihn zuerst (Ventilstatus → Inbetriebnahme: NMT Start)</translation>
+            <translation>Knoten {0} ist NMT {1}: Das Ventil nimmt RPDOs nur im Zustand OPERATIONAL an — starten Sie ihn zuerst (Ventilstatus → Inbetriebnahme: NMT Start)</translation>
         </message>
         <message>
             <source>node {0} is in {1}: the valve applies a setpoint from the bus only in DEVICE_MODE_ACTIVE — enable it first (Valve status → Commissioning: control word 08h→09h→0Bh→0Fh)</source>
-            <translation>Knoten {0} ist in {1}: das Ventil übernimmt einen Sollwert vom Bus nur in DEVICE_MODE_ACTIVE — geben Sie es zuerst frei (Ventilstatus → Inbetriebnahme: Steuerwort 08h→09h→0Bh→0Fh)</translation>
+            <translation>Knoten {0} ist in {1}: Das Ventil übernimmt einen Sollwert vom Bus nur in DEVICE_MODE_ACTIVE — geben Sie es zuerst frei (Ventilstatus → Inbetriebnahme: Steuerwort 08h→09h→0Bh→0Fh)</translation>
         </message>
         <message>
             <source>node {0}: RPDO1 is switched off (0x1400/1 = {1}, bit 31): clear bit 31 to drive the setpoint from prm9tool</source>
-            <translation>Knoten {0}: RPDO1 ist ausgeschaltet (0x1400/1 = {1}, Bit 31): löschen Sie Bit 31, um den Sollwert aus prm9tool vorzugeben</translation>
+            <translation>Knoten {0}: RPDO1 ist ausgeschaltet (0x1400/1 = {1}, Bit 31): Löschen Sie Bit 31, um den Sollwert aus prm9tool vorzugeben</translation>
         </message>
         <message>
             <source>node {0}: RPDO1 is synchronous (0x1400/2 = {1}), so the setpoint would wait for a SYNC: set 0x1400/2 to 255 (the delivery state)</source>
-            <translation>Knoten {0}: RPDO1 ist synchron (0x1400/2 = {1}), der Sollwert würde auf ein SYNC warten: setzen Sie 0x1400/2 auf 255 (Auslieferungszustand)</translation>
+            <translation>Knoten {0}: RPDO1 ist synchron (0x1400/2 = {1}), der Sollwert würde auf ein SYNC warten: Setzen Sie 0x1400/2 auf 255 (Auslieferungszustand)</translation>
         </message>
         <message>
             <source>node {0}: RPDO1 maps {1}, not the setpoint 0x6300/0x6380</source>
@@ -1485,7 +1485,7 @@ Die letzte Aktion wurde womöglich nicht vollständig ausgeführt. Speichern Sie
         </message>
         <message>
             <source>The valve restarted at another address or bit rate: go online with it there.</source>
-            <translation>Das Ventil ist mit anderer Adresse oder Bitrate neu gestartet: gehen Sie dort mit ihm online.</translation>
+            <translation>Das Ventil ist mit anderer Adresse oder Bitrate neu gestartet: Gehen Sie dort mit ihm online.</translation>
         </message>
         <message>
             <source>The link could not keep the test's sample rate.</source>
@@ -1978,7 +1978,7 @@ Ja lädt hoch und stellt den Eintrag in die Warteschlange; Nein lädt nichts hoc
         </message>
         <message>
             <source>Go online with valve {0} first: a record is restored only into the valve it was recorded from.</source>
-            <translation>Zuerst mit Ventil {0} online gehen: ein Eintrag wird nur in das Ventil zurückgeschrieben, von dem er stammt.</translation>
+            <translation>Zuerst mit Ventil {0} online gehen: Ein Eintrag wird nur in das Ventil zurückgeschrieben, von dem er stammt.</translation>
         </message>
         <message>
             <source>Export record</source>
@@ -2111,7 +2111,7 @@ Ja lädt hoch und stellt den Eintrag in die Warteschlange; Nein lädt nichts hoc
         </message>
         <message>
             <source>Read, and at Expert level write, any object of the valve</source>
-            <translation>Jedes Objekt des Ventils lesen und auf Expertenebene schreiben</translation>
+            <translation>Jedes Objekt des Ventils lesen und, in der Expertenstufe, schreiben</translation>
         </message>
         <message>
             <source>Export &amp;DCF…</source>
@@ -2487,7 +2487,7 @@ Ja lädt hoch und stellt den Eintrag in die Warteschlange; Nein lädt nichts hoc
         </message>
         <message>
             <source>Reading only: writing needs the Expert level.</source>
-            <translation>Nur lesen: Schreiben erfordert die Expertenebene.</translation>
+            <translation>Nur lesen: Schreiben erfordert die Expertenstufe.</translation>
         </message>
         <message>
             <source>— (no entry)</source>
@@ -2533,7 +2533,7 @@ Ja lädt hoch und stellt den Eintrag in die Warteschlange; Nein lädt nichts hoc
         </message>
         <message>
             <source>The valve is of another variant: only its values can be taken.</source>
-            <translation>Das Ventil ist eine andere Variante: nur seine Werte können übernommen werden.</translation>
+            <translation>Das Ventil ist eine andere Variante: Nur seine Werte können übernommen werden.</translation>
         </message>
         <message>
             <source>Cancel stays offline; the document is not changed and nothing is written.</source>
@@ -2774,7 +2774,7 @@ Ja lädt hoch und stellt den Eintrag in die Warteschlange; Nein lädt nichts hoc
         </message>
         <message>
             <source>no 'type_key = ...' entry: the header is incomplete</source>
-            <translation>kein Eintrag 'type_key = ...': der Kopf ist unvollständig</translation>
+            <translation>kein Eintrag 'type_key = ...': Der Kopf ist unvollständig</translation>
         </message>
         <message>
             <source>serial {0} must be a whole number {1} … {2}</source>
@@ -2822,7 +2822,7 @@ Ja lädt hoch und stellt den Eintrag in die Warteschlange; Nein lädt nichts hoc
         </message>
         <message>
             <source>byte 0x{0} is not UTF-8 text: the file is corrupt</source>
-            <translation>Byte 0x{0} ist kein UTF-8-Text: die Datei ist beschädigt</translation>
+            <translation>Byte 0x{0} ist kein UTF-8-Text: Die Datei ist beschädigt</translation>
         </message>
         <message>
             <source>control character U+{0}: binary data, the file is corrupt</source>
@@ -2850,7 +2850,7 @@ Ja lädt hoch und stellt den Eintrag in die Warteschlange; Nein lädt nichts hoc
         </message>
         <message>
             <source>no 'checksum = ...' line at the end: the file is truncated (a file written by hand must end with one, e.g. 'checksum = crc32:00000000')</source>
-            <translation>keine Zeile 'checksum = ...' am Ende: die Datei ist abgeschnitten (eine von Hand geschriebene Datei muss mit einer solchen Zeile enden, z. B. 'checksum = crc32:00000000')</translation>
+            <translation>keine Zeile 'checksum = ...' am Ende: Die Datei ist abgeschnitten (eine von Hand geschriebene Datei muss mit einer solchen Zeile enden, z. B. 'checksum = crc32:00000000')</translation>
         </message>
         <message>
             <source>checksum {0} is damaged (expected crc32: and 8 hex digits)</source>
@@ -2858,7 +2858,7 @@ Ja lädt hoch und stellt den Eintrag in die Warteschlange; Nein lädt nichts hoc
         </message>
         <message>
             <source>checksum does not match: the file was changed outside prm9tool (edited by hand?); saving it from prm9tool writes a new checksum</source>
-            <translation>Prüfsumme stimmt nicht: die Datei wurde außerhalb von prm9tool geändert (von Hand bearbeitet?); Speichern aus prm9tool schreibt eine neue Prüfsumme</translation>
+            <translation>Prüfsumme stimmt nicht: Die Datei wurde außerhalb von prm9tool geändert (von Hand bearbeitet?); Speichern aus prm9tool schreibt eine neue Prüfsumme</translation>
         </message>
         <message>
             <source>cannot read the file: {0}</source>
@@ -2905,7 +2905,7 @@ Ja lädt hoch und stellt den Eintrag in die Warteschlange; Nein lädt nichts hoc
         </message>
         <message>
             <source>Basic access level: one time sets all ramps. Expert level sets each ramp on its own.</source>
-            <translation>Basisstufe: eine Zeit stellt alle Rampen ein. Die Expertenstufe stellt jede Rampe einzeln ein.</translation>
+            <translation>Basisstufe: Eine Zeit stellt alle Rampen ein. Die Expertenstufe stellt jede Rampe einzeln ein.</translation>
         </message>
         <message>
             <source>Each time is for a 100 % step; a 50 % step takes half as long.</source>
@@ -3253,15 +3253,15 @@ Ja lädt hoch und stellt den Eintrag in die Warteschlange; Nein lädt nichts hoc
         </message>
         <message>
             <source>The recording stopped: another operation (a tuning test…) took the stream.</source>
-            <translation>Die Aufzeichnung wurde beendet: ein anderer Vorgang (ein Tuning-Test…) hat den Datenstrom übernommen.</translation>
+            <translation>Die Aufzeichnung wurde beendet: Ein anderer Vorgang (ein Tuning-Test…) hat den Datenstrom übernommen.</translation>
         </message>
         <message>
             <source>The link dropped: the setpoint generator has stopped.</source>
-            <translation>Die Verbindung ist abgebrochen: der Sollwertgenerator wurde gestoppt.</translation>
+            <translation>Die Verbindung ist abgebrochen: Der Sollwertgenerator wurde gestoppt.</translation>
         </message>
         <message>
             <source>The setpoint generator has stopped: another operation (a tuning test, an upload…) drives the valve now.</source>
-            <translation>Der Sollwertgenerator wurde gestoppt: ein anderer Vorgang (ein Tuning-Test, ein Hochladen…) steuert jetzt das Ventil.</translation>
+            <translation>Der Sollwertgenerator wurde gestoppt: Ein anderer Vorgang (ein Tuning-Test, ein Hochladen…) steuert jetzt das Ventil.</translation>
         </message>
         <message>
             <source>The valve refused a value of the setpoint generator ({0}): the generator has stopped.</source>
@@ -4133,7 +4133,7 @@ Stellen Sie sicher, dass die Hydraulik dafür sicher ist. Stopp beendet ihn jede
         </message>
         <message>
             <source>No status: the valve is offline.</source>
-            <translation>Kein Status: das Ventil ist offline.</translation>
+            <translation>Kein Status: Das Ventil ist offline.</translation>
         </message>
         <message>
             <source>white</source>
@@ -4224,13 +4224,13 @@ Stellen Sie sicher, dass die Hydraulik dafür sicher ist. Stopp beendet ihn jede
         </message>
         <message>
             <source>Expert values at Basic level</source>
-            <translation>Expertenwerte in der Stufe Basis</translation>
+            <translation>Expertenwerte in der Basisstufe</translation>
         </message>
         <message numerus="yes">
             <source>The document changes %n Expert-level value(s) of the valve ({0}), which the Basic access level cannot edit (controllers, linearizations, monitoring). Send them anyway?</source>
             <translation>
-                <numerusform>Das Dokument ändert %n Wert der Stufe Experte im Ventil ({0}), den die Zugriffsstufe Basis nicht bearbeiten kann (Regler, Linearisierungen, Überwachung). Trotzdem senden?</numerusform>
-                <numerusform>Das Dokument ändert %n Werte der Stufe Experte im Ventil ({0}), die die Zugriffsstufe Basis nicht bearbeiten kann (Regler, Linearisierungen, Überwachung). Trotzdem senden?</numerusform>
+                <numerusform>Das Dokument ändert %n Expertenwert des Ventils ({0}), den die Basisstufe nicht bearbeiten kann (Regler, Linearisierungen, Überwachung). Trotzdem senden?</numerusform>
+                <numerusform>Das Dokument ändert %n Expertenwerte des Ventils ({0}), die die Basisstufe nicht bearbeiten kann (Regler, Linearisierungen, Überwachung). Trotzdem senden?</numerusform>
             </translation>
         </message>
         <message>
@@ -4247,8 +4247,8 @@ Stellen Sie sicher, dass die Hydraulik dafür sicher ist. Stopp beendet ihn jede
         <message numerus="yes">
             <source>%n parameter(s) written, verified and stored again at {0}: the valve already held them</source>
             <translation>
-                <numerusform>%n Parameter um {0} erneut geschrieben, geprüft und gespeichert: das Ventil hatte ihn schon</numerusform>
-                <numerusform>%n Parameter um {0} erneut geschrieben, geprüft und gespeichert: das Ventil hatte sie schon</numerusform>
+                <numerusform>%n Parameter um {0} erneut geschrieben, geprüft und gespeichert: Das Ventil hatte ihn schon</numerusform>
+                <numerusform>%n Parameter um {0} erneut geschrieben, geprüft und gespeichert: Das Ventil hatte sie schon</numerusform>
             </translation>
         </message>
         <message>
@@ -4268,7 +4268,7 @@ Stellen Sie sicher, dass die Hydraulik dafür sicher ist. Stopp beendet ihn jede
         </message>
         <message>
             <source>Values changed online are active in the valve but not stored: a restart of the valve would undo them. Store them in the valve now?</source>
-            <translation>Online geänderte Werte sind im Ventil aktiv, aber nicht gespeichert: ein Neustart des Ventils würde sie rückgängig machen. Jetzt im Ventil speichern?</translation>
+            <translation>Online geänderte Werte sind im Ventil aktiv, aber nicht gespeichert: Ein Neustart des Ventils würde sie rückgängig machen. Jetzt im Ventil speichern?</translation>
         </message>
         <message>
             <source>Offline</source>
@@ -4370,7 +4370,7 @@ Ja vergleicht beide wie gewohnt (ohne Rückfrage wird nichts geschrieben); Nein 
             <source>The connection to the valve was lost; prm9tool is offline now.
 Every value is kept in the document: save it, or go online again and send it.</source>
             <translation>Die Verbindung zum Ventil ist verloren; prm9tool ist jetzt offline.
-Alle Werte bleiben im Dokument erhalten: speichern Sie es oder gehen Sie wieder online und senden Sie es.</translation>
+Alle Werte bleiben im Dokument erhalten: Speichern Sie es oder gehen Sie wieder online und senden Sie es.</translation>
         </message>
         <message>
             <source>Backup of the valve's parameters saved: {0}</source>

@@ -173,8 +173,8 @@ am se nejprve ze\
 pt\xc3\xa1.</p>\x0a\x0a<h2>O\
 nline a offline<\
 /h2>\x0a<p>Komunika\
-ce \xe2\x86\x92 HID konfi\
-gurace zobraz\xc3\xad \
+ce \xe2\x86\x92 Konfigura\
+ce HID zobraz\xc3\xad \
 ventily p\xc5\x99ipoje\
 n\xc3\xa9 p\xc5\x99es USB a \
 emulovan\xc3\xa9 venti\
@@ -381,8 +381,8 @@ u</td></tr>\x0a<tr>\
 l+I / Ctrl+H</td\
 ><td>V\xc3\xbdb\xc4\x9br ven\
 tilu / Stav vent\
-ilu / HID konfig\
-urace</td></tr>\x0a\
+ilu / Konfigurac\
+e HID</td></tr>\x0a\
 </table>\x0a</body>\
 \x0a</html>\x0a\
 \x00\x00\x18\x14\
