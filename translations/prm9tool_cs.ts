@@ -3627,6 +3627,10 @@ Ano načte a záznam zařadí do fronty; Ne nenačte nic.</translation>
             <translation>proložená přímka</translation>
         </message>
         <message>
+            <source>{0} · serial number {1}</source>
+            <translation>{0} · výrobní číslo {1}</translation>
+        </message>
+        <message>
             <source>Type key</source>
             <translation>Objednací kód</translation>
         </message>
@@ -3659,6 +3663,10 @@ Ano načte a záznam zařadí do fronty; Ne nenačte nic.</translation>
             <translation>Omezeno spojením</translation>
         </message>
         <message>
+            <source>Parameter set</source>
+            <translation>Sada parametrů</translation>
+        </message>
+        <message>
             <source>PRM9 test report</source>
             <translation>Protokol o zkoušce PRM9</translation>
         </message>
@@ -3673,10 +3681,6 @@ Ano načte a záznam zařadí do fronty; Ne nenačte nic.</translation>
         <message>
             <source>Limit</source>
             <translation>Mez</translation>
-        </message>
-        <message>
-            <source>Parameter set (raw values)</source>
-            <translation>Sada parametrů (surové hodnoty)</translation>
         </message>
         <message>
             <source>flow characteristic: %1</source>

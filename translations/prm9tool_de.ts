@@ -3611,6 +3611,10 @@ Ja lädt hoch und stellt den Eintrag in die Warteschlange; Nein lädt nichts hoc
             <translation>Ausgleichsgerade</translation>
         </message>
         <message>
+            <source>{0} · serial number {1}</source>
+            <translation>{0} · Seriennummer {1}</translation>
+        </message>
+        <message>
             <source>Type key</source>
             <translation>Typschlüssel</translation>
         </message>
@@ -3643,6 +3647,10 @@ Ja lädt hoch und stellt den Eintrag in die Warteschlange; Nein lädt nichts hoc
             <translation>Durch die Verbindung begrenzt</translation>
         </message>
         <message>
+            <source>Parameter set</source>
+            <translation>Parametersatz</translation>
+        </message>
+        <message>
             <source>PRM9 test report</source>
             <translation>PRM9-Prüfbericht</translation>
         </message>
@@ -3657,10 +3665,6 @@ Ja lädt hoch und stellt den Eintrag in die Warteschlange; Nein lädt nichts hoc
         <message>
             <source>Limit</source>
             <translation>Grenze</translation>
-        </message>
-        <message>
-            <source>Parameter set (raw values)</source>
-            <translation>Parametersatz (Rohwerte)</translation>
         </message>
         <message>
             <source>flow characteristic: %1</source>
