@@ -351,3 +351,59 @@ def test_values_ticked_in_two_history_records_go_into_the_valve_or_the_document(
     dialog.apply_buttons[DOCUMENT].click()
     assert window.doc.value("DTAMP") == 1234 and window.undo.stack.count() == before + 1
     assert window.undo.stack.undoText() == "1 value taken from the history"
+
+
+def _records(serial):
+    return Recorder().store().records(serial)
+
+
+def test_the_history_records_what_the_user_did_online_with_its_meaning(
+    qtbot, window, tmp_path, monkeypatch
+):
+    """Issue 25 item 13: values put back from a compared file and accepted tuning gains went
+    into the history only as "online-edits", and only once stored on exit."""
+    i18n.set_language("en")
+    window.connection.set_recorder(Recorder())
+    go_online(qtbot, window, f"{E02}:4304")
+    qtbot.waitUntil(lambda: window.sync.active, timeout=TIMEOUT)
+    contents = PrmContents.factory(TypeKey.parse(E02))
+    contents.values.update(LIMTA=1700)
+    write_file(contents, tmp_path / "other.prm")
+    answer_compare(monkeypatch, {"LIMTA": 1}, 0, [])
+    window.compare.compare_with_file(tmp_path / "other.prm")
+    window.show_tuning_window()
+    tuning = window.tuning_window
+    tuning.accept_values({"POSKP": 55}, "Autotune")
+    qtbot.waitUntil(lambda: len(_records(4304)) == 3, timeout=TIMEOUT)
+    _download, applied, accepted = _records(4304)
+    assert (applied["operation"], accepted["operation"]) == ("compare-apply", "tuning-accepted")
+    history = window.compare.show_history()
+    qtbot.addWidget(history)
+    qtbot.waitUntil(lambda: history.model.rowCount() == 3, timeout=TIMEOUT)
+    meanings = [history.model.meaning(r) for r in history.model.records]
+    assert meanings[0] == "Read from the valve: going online"
+    assert meanings[1] == (
+        "Values from a compared file, written online: other.prm; LIMTA 2400 → 1700 mA"
+    )
+    assert meanings[2].startswith("Tuning accepted, written online: Autotune; POSKP 0.4 → ")
+    assert history.model.data(history.model.index(1, 3)) == meanings[1]
+
+
+def test_an_upload_from_the_compare_view_says_so_in_the_history(qtbot, window, monkeypatch):
+    i18n.set_language("en")
+    window.connection.set_recorder(Recorder())
+    go_online(qtbot, window, f"{E02}:4305")
+    qtbot.waitUntil(lambda: window.sync.active, timeout=TIMEOUT)
+    with window.sync.suspended():
+        window.doc.set_value("DTAMP", 1000)  # the document differs, the valve does not know
+    answer_compare(monkeypatch, {"DTAMP": 0}, 1, [])
+    with qtbot.waitSignal(window.connection.operation_finished, timeout=TIMEOUT,
+                          check_params_cb=lambda name, _r: name == "upload"):  # fmt: skip
+        window.compare.compare_with_valve()
+    qtbot.waitUntil(lambda: _records(4305)[-1]["operation"] == "upload", timeout=TIMEOUT)
+    history = window.compare.show_history()
+    qtbot.addWidget(history)
+    qtbot.waitUntil(lambda: history.model.rowCount() >= 3, timeout=TIMEOUT)
+    assert history.model.meaning(history.model.records[-1]) == (
+        "Written, verified and stored: chosen in the compare view"
+    )

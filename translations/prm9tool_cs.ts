@@ -1920,12 +1920,96 @@ Ano načte a záznam zařadí do fronty; Ne nenačte nic.</translation>
             <translation>Typový klíč</translation>
         </message>
         <message>
+            <source>What was done</source>
+            <translation>Co bylo provedeno</translation>
+        </message>
+        <message>
             <source>Firmware</source>
             <translation>Firmware</translation>
         </message>
         <message>
             <source>User, station, link</source>
             <translation>Uživatel, stanice, připojení</translation>
+        </message>
+        <message numerus="yes">
+            <source>%n more</source>
+            <translation>
+                <numerusform>%n další</numerusform>
+                <numerusform>%n další</numerusform>
+                <numerusform>%n dalších</numerusform>
+            </translation>
+        </message>
+        <message>
+            <source>Read from the valve</source>
+            <translation>Načteno z ventilu</translation>
+        </message>
+        <message>
+            <source>Written, verified and stored</source>
+            <translation>Zapsáno, ověřeno a uloženo</translation>
+        </message>
+        <message>
+            <source>Written by --batch</source>
+            <translation>Zapsáno pomocí --batch</translation>
+        </message>
+        <message>
+            <source>Stored (Valve → Store in valve)</source>
+            <translation>Uloženo (Ventil → Uložit do paměti ventilu)</translation>
+        </message>
+        <message>
+            <source>Values changed online, stored</source>
+            <translation>Hodnoty změněné online uloženy</translation>
+        </message>
+        <message>
+            <source>Backup of the valve's values</source>
+            <translation>Záloha hodnot ventilu</translation>
+        </message>
+        <message>
+            <source>Factory values restored</source>
+            <translation>Obnoveno tovární nastavení</translation>
+        </message>
+        <message>
+            <source>Test report</source>
+            <translation>Zkušební protokol</translation>
+        </message>
+        <message>
+            <source>Values from a compared file, written online</source>
+            <translation>Hodnoty z porovnávaného souboru, zapsány online</translation>
+        </message>
+        <message>
+            <source>Values from the history, written online</source>
+            <translation>Hodnoty z historie, zapsány online</translation>
+        </message>
+        <message>
+            <source>Tuning accepted, written online</source>
+            <translation>Nastavení regulace převzato, zapsáno online</translation>
+        </message>
+        <message>
+            <source>going online</source>
+            <translation>při přechodu do režimu online</translation>
+        </message>
+        <message>
+            <source>Valve → Download</source>
+            <translation>Ventil → Stažení z ventilu</translation>
+        </message>
+        <message>
+            <source>Compare with valve</source>
+            <translation>Porovnat s ventilem</translation>
+        </message>
+        <message>
+            <source>Valve → Upload</source>
+            <translation>Ventil → Načtení do ventilu</translation>
+        </message>
+        <message>
+            <source>chosen in the compare view</source>
+            <translation>zvoleno v porovnání</translation>
+        </message>
+        <message>
+            <source>chosen per parameter going online</source>
+            <translation>zvoleno po parametrech při přechodu do režimu online</translation>
+        </message>
+        <message>
+            <source>a history record restored</source>
+            <translation>obnoven záznam z historie</translation>
         </message>
     </context>
     <context>

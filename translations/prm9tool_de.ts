@@ -1907,12 +1907,95 @@ Ja lädt hoch und stellt den Eintrag in die Warteschlange; Nein lädt nichts hoc
             <translation>Typenschlüssel</translation>
         </message>
         <message>
+            <source>What was done</source>
+            <translation>Was getan wurde</translation>
+        </message>
+        <message>
             <source>Firmware</source>
             <translation>Firmware</translation>
         </message>
         <message>
             <source>User, station, link</source>
             <translation>Benutzer, Station, Verbindung</translation>
+        </message>
+        <message numerus="yes">
+            <source>%n more</source>
+            <translation>
+                <numerusform>%n weiterer</numerusform>
+                <numerusform>%n weitere</numerusform>
+            </translation>
+        </message>
+        <message>
+            <source>Read from the valve</source>
+            <translation>Aus dem Ventil gelesen</translation>
+        </message>
+        <message>
+            <source>Written, verified and stored</source>
+            <translation>Geschrieben, geprüft und gespeichert</translation>
+        </message>
+        <message>
+            <source>Written by --batch</source>
+            <translation>Mit --batch geschrieben</translation>
+        </message>
+        <message>
+            <source>Stored (Valve → Store in valve)</source>
+            <translation>Gespeichert (Ventil → Im Ventil speichern)</translation>
+        </message>
+        <message>
+            <source>Values changed online, stored</source>
+            <translation>Online geänderte Werte gespeichert</translation>
+        </message>
+        <message>
+            <source>Backup of the valve's values</source>
+            <translation>Sicherung der Werte des Ventils</translation>
+        </message>
+        <message>
+            <source>Factory values restored</source>
+            <translation>Werkseinstellungen wiederhergestellt</translation>
+        </message>
+        <message>
+            <source>Test report</source>
+            <translation>Prüfprotokoll</translation>
+        </message>
+        <message>
+            <source>Values from a compared file, written online</source>
+            <translation>Werte aus einer verglichenen Datei, online geschrieben</translation>
+        </message>
+        <message>
+            <source>Values from the history, written online</source>
+            <translation>Werte aus dem Verlauf, online geschrieben</translation>
+        </message>
+        <message>
+            <source>Tuning accepted, written online</source>
+            <translation>Einstellung übernommen, online geschrieben</translation>
+        </message>
+        <message>
+            <source>going online</source>
+            <translation>beim Online-Gehen</translation>
+        </message>
+        <message>
+            <source>Valve → Download</source>
+            <translation>Ventil → Herunterladen</translation>
+        </message>
+        <message>
+            <source>Compare with valve</source>
+            <translation>Mit Ventil vergleichen</translation>
+        </message>
+        <message>
+            <source>Valve → Upload</source>
+            <translation>Ventil → Hochladen</translation>
+        </message>
+        <message>
+            <source>chosen in the compare view</source>
+            <translation>in der Vergleichsansicht gewählt</translation>
+        </message>
+        <message>
+            <source>chosen per parameter going online</source>
+            <translation>beim Online-Gehen je Parameter gewählt</translation>
+        </message>
+        <message>
+            <source>a history record restored</source>
+            <translation>ein Eintrag aus dem Verlauf wiederhergestellt</translation>
         </message>
     </context>
     <context>

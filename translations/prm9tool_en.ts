@@ -105,6 +105,16 @@
         </message>
     </context>
     <context>
+        <name>HistoryTableModel</name>
+        <message numerus="yes">
+            <source>%n more</source>
+            <translation>
+                <numerusform>%n more</numerusform>
+                <numerusform>%n more</numerusform>
+            </translation>
+        </message>
+    </context>
+    <context>
         <name>HistoryWindow</name>
         <message numerus="yes">
             <source>%n record(s) in {0}</source>

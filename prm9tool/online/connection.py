@@ -202,11 +202,13 @@ class ValveConnection(QObject):
         names = list(mnemonics)
         self._submit(Job(tag, lambda s: s.read_many(names)))
 
-    def upload(self, values: Mapping[str, int | str], backup: bool = True) -> None:
+    def upload(
+        self, values: Mapping[str, int | str], backup: bool = True, purpose: str = ""
+    ) -> None:
         """Write → read back and compare → store; result: operation_finished("upload", …).
 
         With ``backup``, a valve that has no backup yet is downloaded into one first
-        (``backup_written`` reports the file).
+        (``backup_written`` reports the file). ``purpose``: what the user did, for the history.
         """
         values = dict(values)
 
@@ -221,7 +223,7 @@ class ValveConnection(QObject):
                         self.history.backup(session, path)
             if self.history is not None:
                 return self.history.upload(
-                    session, values, self._worker.progress, self._worker.cancel
+                    session, values, self._worker.progress, self._worker.cancel, purpose
                 )
             return session.upload(values, self._worker.progress, self._worker.cancel)
 

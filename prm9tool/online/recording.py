@@ -74,6 +74,7 @@ class HistoryHook:
         values: Mapping[str, Raw],
         progress: Progress | None,
         cancel: threading.Event | None,
+        purpose: str = "",
     ) -> Any:
         """``session.upload`` with its outcome recorded (a broken link too, then re-raised).
 
@@ -94,6 +95,8 @@ class HistoryHook:
             after = values if whole <= set(values) else session.download()
         details = {"written": result.written, "chosen": len(values), "mismatches": {
             m: [str(want), str(got)] for m, (want, got) in result.mismatches.items()}}  # fmt: skip
+        if purpose:
+            details["purpose"] = purpose
         outcome = "ok" if result.stored else "verification-failed"
         self.add(session, "upload", outcome, after, details, result.failed_step)
         return result

@@ -29,6 +29,7 @@ from prm9tool.views import prompts
 from prm9tool.views.compare_view import BOTH, DOCUMENT, VALVE, CompareDialog
 from prm9tool.views.file_reader import read_in_background
 from prm9tool.views.file_workflow import FOLDER_KEY
+from prm9tool.views.history_notes import record_online_change
 from prm9tool.views.valve.workflow import ValveWorkflow
 
 COMPARE_VIEW = "compare_view"  # the download behind Valve → Compare with valve
@@ -112,7 +113,10 @@ class CompareWorkflow(QObject):
         dialog = self._run(comparison, (0,), valve=False)
         if dialog.applied is not None and dialog.applied[1]:
             label = self.tr("Values taken from {0}").format(path.name)
+            before = dict(self._doc.values)
             self._doc.set_values(dialog.applied[1], label)
+            record_online_change(self._connection, "compare-apply", before, self._doc.values,
+                                 source=path.name)  # fmt: skip
             self.message_posted.emit(label)
 
     # --- Valve → Compare with valve ---------------------------------------------------------
@@ -142,7 +146,7 @@ class CompareWorkflow(QObject):
                 self._doc.set_values(chosen, label, validate=False)
             self.message_posted.emit(label)
         else:
-            self._valve.upload_values(chosen)
+            self._valve.upload_values(chosen, "compare: values chosen from the document")
 
     # --- going online: choose per parameter --------------------------------------------------
     def choose_going_online(self, values: Mapping[str, Raw]) -> None:
@@ -160,7 +164,8 @@ class CompareWorkflow(QObject):
             with self._sync.suspended():
                 self._doc.set_values(to_document, self.tr("Values chosen from the valve"), False)
         if to_valve:
-            self._valve.upload_values(to_valve)  # the sync starts when it is stored
+            # the sync starts when it is stored
+            self._valve.upload_values(to_valve, "going online: values chosen per parameter")
         else:
             self._sync.start(values)
             self.message_posted.emit(self.tr("Online: document and valve agree"))
@@ -189,11 +194,15 @@ class CompareWorkflow(QObject):
         label = self.tr("Parameters restored from the history")
         if key is None:
             label = self.tr("%n value(s) taken from the history", "", len(values))
+        before = dict(self._doc.values)
         self._undo.stack.beginMacro(label)
         if key is not None:
             self._doc.set_type_key(key)
         self._doc.set_values(values, label, validate=False)
         self._undo.stack.endMacro()
+        whole = "record" if key is not None else "ticked values"
+        record_online_change(self._connection, "history-restore", before, self._doc.values,
+                             source=whole)  # fmt: skip
         self.message_posted.emit(label)
 
     def restore_to_valve(self, serial: int, values: Mapping[str, Raw]) -> bool:
@@ -201,5 +210,5 @@ class CompareWorkflow(QObject):
         info = self._connection.device
         if info is None or info.serial != serial or not self._connection.is_online:
             return False
-        self._valve.upload_values(values)
+        self._valve.upload_values(values, "history: a record's values restored")
         return True

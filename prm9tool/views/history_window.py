@@ -28,15 +28,38 @@ from PySide6.QtWidgets import (
     QWidget,
 )
 
+from prm9tool.catalogue import CATALOGUE
 from prm9tool.catalogue.typekey import TypeKey
 from prm9tool.compare.model import Comparison, Side
 from prm9tool.errors import Prm9Error
 from prm9tool.history.recorder import Recorder
+from prm9tool.i18n import format_value
 from prm9tool.translate import error_text
 from prm9tool.views import prompts
 
 Index = QModelIndex | QPersistentModelIndex
 Record = dict[str, Any]
+MEANING = 3  # the column saying what was done
+MAX_CHANGES = 4  # changed values listed in that column (all of them in the record)
+
+
+def _details(record: Record) -> dict[str, Any]:
+    try:
+        details = json.loads(record.get("details") or "{}")
+    except (TypeError, ValueError):
+        return {}
+    return details if isinstance(details, dict) else {}
+
+
+def _change(mnemonic: str, pair: object) -> str:
+    """``POSKP 0.4 → 0.6`` in display units (raw when the catalogue has no such parameter)."""
+    param = CATALOGUE.get(mnemonic)
+    old, new = pair if isinstance(pair, list) and len(pair) == 2 else ("?", "?")
+    if param is None or not isinstance(old, int | str) or not isinstance(new, int | str):
+        return f"{mnemonic} {old} → {new}"
+    return (
+        f"{mnemonic} {format_value(param, old)} → {format_value(param, new)} {param.unit}".strip()
+    )
 
 
 class HistoryTableModel(QAbstractTableModel):
@@ -56,25 +79,75 @@ class HistoryTableModel(QAbstractTableModel):
         return 0 if parent.isValid() else len(self.records)
 
     def columnCount(self, parent: Index = QModelIndex()) -> int:  # noqa: B008
-        return 0 if parent.isValid() else 7
+        return 0 if parent.isValid() else 8
 
     def headerData(self, section: int, orientation: Qt.Orientation, role: int = 0) -> Any:
         if orientation != Qt.Orientation.Horizontal or role != Qt.ItemDataRole.DisplayRole:
             return None
-        return [self.tr("No."), self.tr("Time (UTC)"), self.tr("Operation"), self.tr("Outcome"),
-                self.tr("Type key"), self.tr("Firmware"), self.tr("User, station, link")][section]  # fmt: skip
+        return [self.tr("No."), self.tr("Time (UTC)"), self.tr("Operation"),
+                self.tr("What was done"), self.tr("Outcome"), self.tr("Type key"),
+                self.tr("Firmware"), self.tr("User, station, link")][section]  # fmt: skip
 
     def data(self, index: Index, role: int = 0) -> Any:
+        r = self.records[index.row()]
+        if role == Qt.ItemDataRole.ToolTipRole and index.column() == MEANING:
+            return self.meaning(r)
         if role != Qt.ItemDataRole.DisplayRole:
             return None
-        r = self.records[index.row()]
         failed = f" ({r['failed_step']})" if r["failed_step"] else ""
         cells = [
             str(r["seq"]), r["recorded_at"][:19].replace("T", " "), r["operation"],
-            r["outcome"] + failed, r["type_key"], r["firmware"],
+            self.meaning(r), r["outcome"] + failed, r["type_key"], r["firmware"],
             f"{r['os_user']}@{r['host']}, {r['device_id']}",
         ]  # fmt: skip
         return cells[index.column()]
+
+    def meaning(self, record: Record) -> str:
+        """What the user did, in the program language: the operation, why, and the values
+        it changed in display units ("Tuning accepted online: Autotune; POSKP 0.4 → 0.6")."""
+        details = _details(record)
+        operation = record["operation"]
+        text = self._operations().get(operation) or str(operation)
+        why = [self._purposes().get(str(details["purpose"]), str(details["purpose"]))
+               if "purpose" in details else "",
+               str(details.get("source", "")), str(details.get("what", ""))]  # fmt: skip
+        shown = ", ".join(part for part in why if part)
+        changed = details.get("changes")
+        if isinstance(changed, dict) and changed:
+            listed = [_change(mn, pair) for mn, pair in list(changed.items())[:MAX_CHANGES]]
+            more = len(changed) - MAX_CHANGES
+            if more > 0:
+                listed.append(self.tr("%n more", "", more))
+            shown = "; ".join(part for part in (shown, ", ".join(listed)) if part)
+        return f"{text}: {shown}" if shown else text
+
+    def _operations(self) -> dict[str, str]:
+        return {
+            "download": self.tr("Read from the valve"),
+            "upload": self.tr("Written, verified and stored"),
+            "batch-upload": self.tr("Written by --batch"),
+            "store": self.tr("Stored (Valve → Store in valve)"),
+            "online-edits": self.tr("Values changed online, stored"),
+            "backup": self.tr("Backup of the valve's values"),
+            "restore-factory": self.tr("Factory values restored"),
+            "characterization": self.tr("Test report"),
+            "compare-apply": self.tr("Values from a compared file, written online"),
+            "history-restore": self.tr("Values from the history, written online"),
+            "tuning-accepted": self.tr("Tuning accepted, written online"),
+        }
+
+    def _purposes(self) -> dict[str, str]:
+        return {
+            "compare": self.tr("going online"),
+            "download": self.tr("Valve → Download"),
+            "compare_view": self.tr("Compare with valve"),
+            "upload": self.tr("Valve → Upload"),
+            "compare: values chosen from the document": self.tr("chosen in the compare view"),
+            "going online: values chosen per parameter": self.tr(
+                "chosen per parameter going online"
+            ),
+            "history: a record's values restored": self.tr("a history record restored"),
+        }
 
 
 class HistoryWindow(QDialog):

@@ -246,9 +246,9 @@ class ValveWorkflow(QObject):
         key = self._valve_key()
         return key is not None and self.uploads.upload(key, valve_values)
 
-    def upload_values(self, values: Mapping[str, Raw]) -> None:
+    def upload_values(self, values: Mapping[str, Raw], purpose: str = "") -> None:
         """Upload exactly ``values`` (``ValveUpload.upload_values``)."""
-        self.uploads.upload_values(values)
+        self.uploads.upload_values(values, purpose)
 
     def expert_differences(self, valve_values: Mapping[str, Raw]) -> list[str]:
         """The Expert-level parameters whose document value differs from the valve's."""
