@@ -24,13 +24,12 @@ from pathlib import Path
 
 from prm9tool.catalogue.typekey import TypeKey
 from prm9tool.files import prmcheck
+from prm9tool.files.prmdocument import load_document, save_document
 from prm9tool.files.prmfile import (
     MAX_FILE_SIZE,
     PrmContents,
     check_bytes,
-    load_document,
     read_file,
-    save_document,
     write_file,
 )
 

@@ -12,6 +12,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from prm9tool.catalogue.scale import FULL_SCALE
+
 DEAD_BAND_LEVEL = 1.0  # % of span: the response counts as "not moving" below this
 LIN_POINTS = 9  # the firmware's characteristics have nine points (A…I)
 
@@ -129,14 +131,14 @@ def propose_linearization(
     y_lo = float(np.interp(lo_d, demand[order], response[order]))
     y_hi = float(np.interp(hi_d, demand[order], response[order]))
     gain = (y_hi - y_lo) / (hi_d - lo_d) if hi_d != lo_d else 1.0
-    first = -16384 if bipolar else 0
-    xs = np.linspace(first, 16384, LIN_POINTS)
+    first = -FULL_SCALE if bipolar else 0
+    xs = np.linspace(first, FULL_SCALE, LIN_POINTS)
     wanted = gain * np.interp(xs, *d_at)
     inverse = _monotonic(y_of_out[1], y_of_out[0])
     ys = np.interp(wanted, *inverse)
     return Linearization(
         tuple(round(v) for v in xs),
-        tuple(round(float(np.clip(v, -16384, 16384))) for v in ys),
+        tuple(round(float(np.clip(v, -FULL_SCALE, FULL_SCALE))) for v in ys),
         float(gain),
     )
 

@@ -24,7 +24,6 @@ from prm9tool.characterize.transparent import TRANSPARENT
 from prm9tool.errors import Prm9Error
 from prm9tool.scope.measure import StepFigures, step_figures
 
-PERCENT = 100.0 / 16384.0
 SAMPLES_PER_PERIOD = 10  # a sweep goes no higher than the sample rate / this (decision)
 SWEEP_MIN_SAMPLES = 256  # what the frequency response needs
 
@@ -38,11 +37,17 @@ class Loop:
     actual: str
     output: str
     integrating: bool
+    step_pct: float  # the step the step-response simulator makes (prm9tool.online.tuning)
+    simulated_s: float  # how long the simulator runs after the step
 
 
 LOOPS = {
-    "position": Loop("POS", "position_setpoint", "position_actual", "controller_output", False),
-    "process": Loop("PRC", "process_setpoint", "process_actual", "position_setpoint", True),
+    "position": Loop(
+        "POS", "position_setpoint", "position_actual", "controller_output", False, 50.0, 0.06
+    ),
+    "process": Loop(
+        "PRC", "process_setpoint", "process_actual", "position_setpoint", True, 20.0, 1.0
+    ),
 }
 GAIN_SUFFIXES = ("KP", "KI", "KD", "T1")
 

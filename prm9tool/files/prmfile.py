@@ -20,7 +20,6 @@ from __future__ import annotations
 import os
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import TYPE_CHECKING
 
 from prm9tool.catalogue import CATALOGUE, Parameter
 from prm9tool.catalogue.typekey import TypeKey
@@ -29,9 +28,6 @@ from prm9tool.files.atomicfile import atomic_write
 from prm9tool.files.prmcheck import FORMAT_NAME, FORMAT_VERSION, Header, check_entries
 from prm9tool.files.prmlexer import CONTROL_CHARACTERS, Lexer, check_integrity, checksum
 from prm9tool.messages import QT_TRANSLATE_NOOP
-
-if TYPE_CHECKING:
-    from prm9tool.model.document import ParameterDocument
 
 MAX_FILE_SIZE = 1 << 20  # a full file is about 4 kB; anything near 1 MiB is not a *.prm file
 BANNER = (
@@ -232,45 +228,3 @@ def write_file(
         problem = FileProblem(0, _CANNOT_SAVE(exc.strerror or str(exc)))
         raise FileFormatError(os.fspath(path), [problem]) from exc
     return result.contents
-
-
-# --- documents --------------------------------------------------------------------------------
-def document_from(contents: PrmContents, path: Path | None = None) -> ParameterDocument:
-    """A new, unmodified document holding ``contents`` (``path``: where it was read from)."""
-    from prm9tool.model.document import ParameterDocument
-
-    doc = ParameterDocument(contents.type_key)
-    doc.set_values(contents.values, "Open file", validate=False)
-    doc.source_serial = contents.serial
-    doc.source_firmware = contents.firmware
-    doc.unknown_entries = list(contents.unknown)
-    doc.comments = {name: list(lines) for name, lines in contents.comments.items()}
-    doc.inline_comments = dict(contents.inline_comments)
-    doc.mark_saved(path)
-    return doc
-
-
-def contents_of(doc: ParameterDocument) -> PrmContents:
-    """What saving ``doc`` writes."""
-    return PrmContents(
-        doc.type_key,
-        dict(doc.values),
-        doc.source_serial,
-        doc.source_firmware,
-        list(doc.unknown_entries),
-        {name: list(lines) for name, lines in doc.comments.items()},
-        dict(doc.inline_comments),
-    )
-
-
-def load_document(path: str | os.PathLike[str]) -> ParameterDocument:
-    """Read a *.prm file into a new document; raises FileFormatError with every problem."""
-    return document_from(read_file(path), Path(path))
-
-
-def save_document(doc: ParameterDocument, path: str | os.PathLike[str]) -> None:
-    """Save ``doc`` atomically, keep the old file as ``.bak``, mark the document saved."""
-    written = write_file(contents_of(doc), path)
-    doc.comments = written.comments  # so that the next save reproduces this file exactly
-    doc.inline_comments = written.inline_comments
-    doc.mark_saved(Path(path))

@@ -142,7 +142,7 @@ class FileWorkflow(QObject):
             return False
         if ask and not self.maybe_save():
             return False
-        from prm9tool.files import prmfile  # imported when first needed: faster start-up
+        from prm9tool.files import prmdocument  # imported when first needed: faster start-up
 
         self._reading = path
         try:
@@ -155,7 +155,7 @@ class FileWorkflow(QObject):
         if isinstance(contents, FileFormatError):
             self._report_file_error(self.tr("Cannot open “{0}”").format(path.name), contents)
             return False
-        self._replace(prmfile.document_from(contents, path))
+        self._replace(prmdocument.document_from(contents, path))
         self._remember(path)
         self.message_posted.emit(self.tr("Opened {0}").format(str(path)))
         if contents.warnings:
@@ -202,7 +202,7 @@ class FileWorkflow(QObject):
             if path is None:
                 return None
         from prm9tool.files.backup import write_device_file
-        from prm9tool.files.prmfile import contents_of
+        from prm9tool.files.prmdocument import contents_of
 
         try:  # what the document holds, also when it breaks a rule (the file then says so)
             problems = write_device_file(contents_of(self._doc), path)
@@ -235,10 +235,10 @@ class FileWorkflow(QObject):
 
     def save_to(self, path: Path) -> bool:
         """Save atomically to ``path``; errors are reported and nothing is lost."""
-        from prm9tool.files import prmfile
+        from prm9tool.files import prmdocument
 
         try:
-            prmfile.save_document(self._doc, path)
+            prmdocument.save_document(self._doc, path)
         except FileFormatError as exc:
             self._report_file_error(self.tr("Cannot save “{0}”").format(path.name), exc)
             return False
