@@ -2577,6 +2577,10 @@ Ano načte a záznam zařadí do fronty; Ne nenačte nic.</translation>
             <translation>Hodnota</translation>
         </message>
         <message>
+            <source>Search: index, name, type or value</source>
+            <translation>Hledat: index, název, typ nebo hodnota</translation>
+        </message>
+        <message>
             <source>Read all</source>
             <translation>Číst vše</translation>
         </message>

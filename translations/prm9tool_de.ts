@@ -2561,6 +2561,10 @@ Ja lädt hoch und stellt den Eintrag in die Warteschlange; Nein lädt nichts hoc
             <translation>Wert</translation>
         </message>
         <message>
+            <source>Search: index, name, type or value</source>
+            <translation>Suchen: Index, Name, Typ oder Wert</translation>
+        </message>
+        <message>
             <source>Read all</source>
             <translation>Alle lesen</translation>
         </message>
