@@ -41,6 +41,7 @@ from prm9tool.online.bus_monitor import BusMonitor, HeardNode
 from prm9tool.online.connection_protocol import ListedValves, ValveListing
 from prm9tool.paths import user_data_dir
 from prm9tool.translate import error_text
+from prm9tool.views.help_dialog import add_context_help
 
 INTERFACE_KEY, CHANNEL_KEY, BITRATE_KEY = "can/interface", "can/channel", "can/bitrate"
 INTERFACES = (
@@ -88,6 +89,7 @@ class CanBusDialog(QDialog):
     ) -> None:
         """``monitor``: keeps the node table live after a search (None: as the scan saw it)."""
         super().__init__(parent)
+        add_context_help(self, "can")  # F1
         self.setWindowTitle(self.tr("CAN bus"))
         self._scan, self._settings = scan, settings
         self._entries: list[ValveListing] = []

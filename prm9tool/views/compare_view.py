@@ -39,6 +39,7 @@ from prm9tool.compare.model import Comparison, Row
 from prm9tool.i18n import format_value, text
 from prm9tool.translate import translated
 from prm9tool.views.diagram.layout import layout_for
+from prm9tool.views.help_dialog import add_context_help
 from prm9tool.views.icons import icon
 
 Index = QModelIndex | QPersistentModelIndex
@@ -160,6 +161,7 @@ class CompareDialog(QDialog):
         self.roles = dict(roles or {})
         self.applied: tuple[Target, dict[str, int | str]] | None = None
         self.setWindowTitle(self.tr("Compare parameters"))
+        add_context_help(self, "compare")  # F1
         self.summary = QLabel()
         self.summary.setWordWrap(True)
         self.model = CompareTableModel(comparison, self)

@@ -36,6 +36,7 @@ from prm9tool.history.recorder import Recorder
 from prm9tool.i18n import format_value
 from prm9tool.translate import error_text
 from prm9tool.views import prompts
+from prm9tool.views.help_dialog import add_context_help
 
 Index = QModelIndex | QPersistentModelIndex
 Record = dict[str, Any]
@@ -168,6 +169,7 @@ class HistoryWindow(QDialog):
         self._recorder = recorder
         self._restore_document, self._restore_valve = restore_document, restore_valve
         self.setWindowTitle(self.tr("History"))
+        add_context_help(self, "history")  # F1
         self.serial = QLineEdit(str(serial) if serial else "")
         self.serial.setPlaceholderText(self.tr("serial number"))
         show = QPushButton(self.tr("Show"))

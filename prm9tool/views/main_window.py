@@ -32,6 +32,7 @@ from prm9tool.views.emcy import status_summary
 from prm9tool.views.emulated_valve import EmulatedValveMenu
 from prm9tool.views.file_workflow import FileWorkflow
 from prm9tool.views.help_dialog import HelpWindow, about_html, open_homepage
+from prm9tool.views.help_dialog import show_help as show_help_page
 from prm9tool.views.icons import icon
 from prm9tool.views.link_guard import LinkGuard
 from prm9tool.views.page_stack import PageStack
@@ -326,10 +327,7 @@ class MainWindow(QMainWindow):
 
     def show_help(self) -> HelpWindow:
         """Show the help page of this program."""
-        if self.help_window is None:
-            self.help_window = HelpWindow(self)
-        self.help_window.show()
-        self.help_window.raise_()
+        self.help_window = show_help_page(self)
         return self.help_window
 
     def show_about(self) -> None:

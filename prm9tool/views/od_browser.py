@@ -32,6 +32,7 @@ from prm9tool.i18n import text
 from prm9tool.model.access import AccessModel
 from prm9tool.online.connection import ValveConnection
 from prm9tool.translate import error_text
+from prm9tool.views.help_dialog import add_context_help
 
 READ_ALL = "od_read_all"
 COLUMNS = 6
@@ -64,6 +65,7 @@ class ObjectDictionaryDialog(QDialog):
     ) -> None:
         super().__init__(parent)
         self.setWindowTitle(self.tr("Object dictionary"))
+        add_context_help(self, "can")  # F1
         self._connection, self._access = connection, access
         self._params: list[Parameter] = sorted(CATALOGUE.for_variant(variant), key=lambda p: p.key)
         self.model = QStandardItemModel(len(self._params), COLUMNS, self)

@@ -31,6 +31,7 @@ from prm9tool.model.document import ParameterDocument
 from prm9tool.online.connection_protocol import StatusView
 from prm9tool.online.tuning_runner import SimulationRunner, TuningRunner, ValveRunner
 from prm9tool.online.valve_control import ValveControl
+from prm9tool.views.help_dialog import add_context_help
 from prm9tool.views.history_notes import record_online_change
 from prm9tool.views.scope.start import offer_enable
 from prm9tool.views.tuning.pages import AutotunePage, BodePage, Page
@@ -49,6 +50,7 @@ class TuningWindow(QDialog):
         control: ValveControl | None = None,
     ) -> None:
         super().__init__(parent)
+        add_context_help(self, "tuning")  # F1
         self.setObjectName("tuning_window")
         self.doc, self.connection = doc, connection
         self._control = control  # NMT start and enabling, offered to a valve that would not move
