@@ -33,8 +33,15 @@ class StaticCharacteristic:
 
     @property
     def mean(self) -> np.ndarray:
-        """The mean of both branches (one branch where only one was measured)."""
-        return np.nanmean(np.vstack([self.up, self.down]), axis=0)
+        """The mean of both branches (one branch where only one was measured, NaN where
+        neither has a sample)."""
+        return branch_mean(self.up, self.down)
+
+
+def branch_mean(up: np.ndarray, down: np.ndarray) -> np.ndarray:
+    """Per bin: the mean of both branches, the one measured, or NaN where neither was (a bin
+    no sample fell in: samples lost on a busy link, a demand the sweep jumped over)."""
+    return np.where(np.isnan(up), down, np.where(np.isnan(down), up, (up + down) / 2.0))
 
 
 def static_characteristic(
@@ -50,10 +57,12 @@ def static_characteristic(
     rising = np.gradient(x) >= 0.0
     up = _branch(x[rising], y[rising], edges)
     down = _branch(x[~rising], y[~rising], edges)
-    mean = np.nanmean(np.vstack([up, down]), axis=0)
-    span = float(np.nanmax(mean) - np.nanmin(mean)) or 1.0
-    dead = _dead_band(centres, mean, span)
-    fit = np.isfinite(mean)
+    mean = branch_mean(up, down)
+    fit = np.isfinite(mean)  # bins no sample fell in are left out of every figure
+    if np.count_nonzero(fit) < 2:
+        raise ValueError("the sweep's samples fall in fewer than two bins of its demand range")
+    span = float(np.max(mean[fit]) - np.min(mean[fit])) or 1.0
+    dead = _dead_band(centres[fit], mean[fit], span)
     if exclude_dead_band and dead[1] > dead[0]:
         fit &= (centres < dead[0]) | (centres > dead[1])
     gain, intercept = np.polyfit(centres[fit], mean[fit], 1)

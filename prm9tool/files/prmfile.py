@@ -25,7 +25,14 @@ from prm9tool.catalogue import CATALOGUE, Parameter
 from prm9tool.catalogue.typekey import TypeKey
 from prm9tool.errors import FileFormatError, FileProblem
 from prm9tool.files.atomicfile import atomic_write
-from prm9tool.files.prmcheck import FORMAT_NAME, FORMAT_VERSION, Header, check_entries
+from prm9tool.files.prmcheck import (
+    FORMAT_NAME,
+    FORMAT_VERSION,
+    NOT_AVAILABLE_HINT,
+    Header,
+    check_entries,
+    escape_text,
+)
 from prm9tool.files.prmlexer import CONTROL_CHARACTERS, Lexer, check_integrity, checksum
 from prm9tool.messages import QT_TRANSLATE_NOOP
 
@@ -63,11 +70,11 @@ class PrmContents:
         if self.serial is not None:
             self._emit(lines, "serial", str(self.serial))
         if self.firmware:
-            self._emit(lines, "firmware", self.firmware)
+            self._emit(lines, "firmware", escape_text(self.firmware))
         for number, param in enumerate(CATALOGUE.file_parameters(self.type_key.variant)):
             raw = self.values.get(param.mnemonic)
-            if raw is None and param.address_from_manual:
-                raise KeyError(param.mnemonic)  # only this project's objects may be absent
+            if raw is None and (param.address_from_manual or not self.type_key.canopen):
+                raise KeyError(param.mnemonic)  # only this project's objects, only on -CA keys
             value = "" if raw is None else param.format_display(raw)
             hint = _hint(param) if raw is not None else NOT_AVAILABLE_HINT
             self._emit(lines, param.mnemonic, value, [""] if number == 0 else [], hint)
@@ -89,10 +96,6 @@ class PrmContents:
         value = _escape_controls(value)  # values from a device are data, never file structure
         entry = _entry_text(name, value)
         lines.append(entry + self.inline_comments.get(name, hint))
-
-
-# A parameter a valve does not have over CANopen (downloaded from a real valve, docs/can-link.md)
-NOT_AVAILABLE_HINT = "  # not available over CANopen on the valve this was read from"
 
 
 def _escape_controls(value: str) -> str:

@@ -5,6 +5,7 @@ measuring points and the oscilloscope stream. Runs in the worker thread only; no
 from __future__ import annotations
 
 import logging
+import math
 from dataclasses import dataclass, field
 from typing import TYPE_CHECKING
 
@@ -94,7 +95,7 @@ class Poller:
         if self.stream_keys:
             session.stream_stop()
         session.stream_start(keys, rate_hz)
-        self.stream_keys = list(keys)
+        self.stream_keys, self._last_row = list(keys), {}
         self._lost_reported = 0
         return self.stream_keys
 
@@ -142,11 +143,13 @@ class Poller:
         """Latest values of the watched measuring points.
 
         The valve reports measuring points only in its stream (at most three at once). While
-        the oscilloscope streams, its samples serve; otherwise a slow "watch" stream visits
-        the watched points three at a time, so each one is refreshed every few polls.
+        the oscilloscope streams, its samples serve, and every other watched point is NaN (no
+        value now), never the value it had before the oscilloscope took the stream; otherwise
+        a slow "watch" stream visits the watched points three at a time, so each one is
+        refreshed every few polls.
         """
         if self.stream_keys:
-            return {k: v for k, v in self._last_row.items() if k in self.watched}
+            return {k: self._last_row.get(k, math.nan) for k in self.watched}
         values: dict[str, float] = {}
         if self._watch_chunk:
             block = session.stream_read()
