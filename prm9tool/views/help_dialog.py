@@ -40,7 +40,10 @@ def help_window(parent: QWidget | None = None) -> HelpWindow:
     """The program's one help window (made on first use, beside ``parent``'s window)."""
     window = _HELP[0] if _HELP else None
     if window is None or not Shiboken.isValid(window):  # deleted with the window it belonged to
-        window = HelpWindow(parent.window() if parent is not None else None)
+        root = parent
+        while root is not None and root.parentWidget() is not None:
+            root = root.parentWidget()  # the main window, not a dialog closed (deleted) soon
+        window = HelpWindow(root)
         _HELP[:] = [window]
     return window
 
