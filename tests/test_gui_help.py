@@ -59,10 +59,12 @@ def test_f1_in_the_compare_view_opens_its_help_page(qtbot, language):
         i18n.set_language("en")
 
 
-def test_the_help_window_belongs_to_the_main_window_not_to_the_dialog(qtbot, window):
+def test_the_help_window_belongs_to_the_main_window_not_to_the_dialog(qtbot, window, monkeypatch):
     """A dialog closed (and deleted) must not take the help window it opened with it."""
+    from prm9tool.views import help_dialog
     from prm9tool.views.help_dialog import show_help
 
+    monkeypatch.setattr(help_dialog, "_HELP", [])  # not the help window of an earlier test
     side = Side.factory(TypeKey.parse(E02), "A")
     dialog = CompareDialog(Comparison((side, side)), (0, 1), parent=window)
     help_page = show_help(dialog, "compare")
