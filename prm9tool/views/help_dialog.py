@@ -57,6 +57,9 @@ def show_help(parent: QWidget | None = None, topic: str = "help") -> HelpWindow:
     return window
 
 
+show_help_page = show_help  # the name the main window uses beside its own show_help
+
+
 def add_context_help(widget: QWidget, topic: str) -> QShortcut:
     """F1 in ``widget`` (a dialog or window) opens the help page ``topic``."""
     shortcut = QShortcut(QKeySequence(QKeySequence.StandardKey.HelpContents), widget)

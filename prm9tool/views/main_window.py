@@ -31,8 +31,7 @@ from prm9tool.views.dcf_export import DcfExport
 from prm9tool.views.emcy import status_summary
 from prm9tool.views.emulated_valve import EmulatedValveMenu
 from prm9tool.views.file_workflow import FileWorkflow
-from prm9tool.views.help_dialog import HelpWindow, about_html, open_homepage
-from prm9tool.views.help_dialog import show_help as show_help_page
+from prm9tool.views.help_dialog import HelpWindow, about_html, open_homepage, show_help_page
 from prm9tool.views.icons import icon
 from prm9tool.views.link_guard import LinkGuard
 from prm9tool.views.page_stack import PageStack
