@@ -941,7 +941,7 @@ Poslední akce možná nebyla dokončena. Uložte svou práci pod novým názvem
         </message>
         <message>
             <source>PNG image of the plot…</source>
-            <translation>Obrázek PNG grafu…</translation>
+            <translation>Graf jako obrázek PNG…</translation>
         </message>
         <message>
             <source>Trigger channel</source>
@@ -3056,7 +3056,7 @@ Ano načte a záznam zařadí do fronty; Ne nenačte nic.</translation>
         </message>
         <message>
             <source>untitled (the values are not saved in a file)</source>
-            <translation>nepojmenovaný (hodnoty nejsou uloženy v žádném souboru)</translation>
+            <translation>nepojmenovaná (hodnoty nejsou uloženy v žádném souboru)</translation>
         </message>
         <message>
             <source>{0} (changed, not saved: the file holds another valve type)</source>
@@ -3326,7 +3326,7 @@ Ano načte a záznam zařadí do fronty; Ne nenačte nic.</translation>
         </message>
         <message>
             <source>live:</source>
-            <translation>živě:</translation>
+            <translation>aktuálně:</translation>
         </message>
     </context>
     <context>
@@ -3341,7 +3341,7 @@ Ano načte a záznam zařadí do fronty; Ne nenačte nic.</translation>
         </message>
         <message>
             <source>Single capture complete. Resume arms the trigger again.</source>
-            <translation>Jednorázový záznam dokončen. Pokračovat znovu aktivuje spouštění.</translation>
+            <translation>Jednorázový záznam dokončen. Tlačítko Pokračovat znovu aktivuje spouštění.</translation>
         </message>
         <message>
             <source>Paused: zoom and pan with the mouse; recording continues.</source>
@@ -3353,7 +3353,7 @@ Ano načte a záznam zařadí do fronty; Ne nenačte nic.</translation>
         </message>
         <message>
             <source>Recording at {0} Hz.</source>
-            <translation>Záznam s frekvencí {0} Hz.</translation>
+            <translation>Záznam se vzorkovací frekvencí {0} Hz.</translation>
         </message>
         <message>
             <source>Recording at {0} Hz of the {1} Hz asked for: {2} samples lost on the link.</source>
