@@ -321,3 +321,15 @@ def test_a_backup_copy_that_cannot_be_written_says_so_and_loses_nothing(window, 
     assert window.files.save_backup_copy(target) is None
     assert "Cannot save “copy.prm”" in answers.asked[-1]
     assert window.doc.value("DTAMP") == 1000 and window.doc.modified and window.doc.path is None
+
+
+def test_after_a_download_the_status_bar_points_to_the_backup_copy(qtbot, window):
+    """Issue 25 item 8: the backup workflow (Download from valve, then keep a copy) leads to
+    Save backup copy, which leaves the document as it is."""
+    from gui_support import go_online
+
+    go_online(qtbot, window, f"{E02}:4730")
+    qtbot.waitUntil(lambda: window.sync.active, timeout=10_000)
+    with qtbot.waitSignal(window.connection.operation_finished, timeout=10_000):
+        window.commands["download"].trigger()
+    assert "File → Save backup copy… keeps a copy" in window.status.currentMessage()

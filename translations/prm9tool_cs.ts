@@ -4438,6 +4438,10 @@ Ano je porovná jako obvykle (bez dotazu se nic nezapíše); Ne přejde do reži
             <translation>Nastavit všechny parametry dokumentu na tovární hodnoty?</translation>
         </message>
         <message>
+            <source>The valve's parameters are in the document; File → Save backup copy… keeps a copy of them</source>
+            <translation>Parametry ventilu jsou v dokumentu; Soubor → Uložit záložní kopii… z nich uloží kopii</translation>
+        </message>
+        <message>
             <source>The valve stored its parameters at {0}</source>
             <translation>Ventil uložil své parametry v {0}</translation>
         </message>

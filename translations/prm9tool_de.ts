@@ -4418,6 +4418,10 @@ Ja vergleicht beide wie gewohnt (ohne Rückfrage wird nichts geschrieben); Nein 
             <translation>Alle Parameter des Dokuments auf die Werkseinstellung setzen?</translation>
         </message>
         <message>
+            <source>The valve's parameters are in the document; File → Save backup copy… keeps a copy of them</source>
+            <translation>Die Parameter des Ventils sind im Dokument; Datei → Sicherungskopie speichern… bewahrt eine Kopie davon auf</translation>
+        </message>
+        <message>
             <source>The valve stored its parameters at {0}</source>
             <translation>Das Ventil hat seine Parameter um {0} gespeichert</translation>
         </message>

@@ -302,6 +302,8 @@ class ValveWorkflow(QObject):
             self._on_compare_finished(result)
         elif name == "download" and isinstance(result, Mapping):
             self.take_valve_values(result, self.tr("Download from valve"))
+            self.message_posted.emit(self.tr("The valve's parameters are in the document; File → "
+                                             "Save backup copy… keeps a copy of them"))  # fmt: skip
         elif name == "restore_factory" and isinstance(result, _FactoryReset):
             self._on_factory_reset(result)
         elif name == AFTER_RESTART and isinstance(result, Mapping):
