@@ -101,6 +101,8 @@ class HistoryHook:
             m: [str(want), str(got)] for m, (want, got) in result.mismatches.items()}}  # fmt: skip
         if purpose:
             details["purpose"] = purpose
+        if result.store:
+            details["store"] = result.store  # which store happened (CANopen)
         outcome = "ok" if result.stored else "verification-failed"
         self.add(session, "upload", outcome, after, details, result.failed_step)
         return result
