@@ -46,7 +46,7 @@ from prm9tool.views.scope.start import GeneratorStart, measure_against_demand
 from prm9tool.views.scope.status import ScopeStatusText
 
 REDRAW_MS = 33  # ~30 Hz
-STATUS_LINES = 3  # the status line's height: its messages wrap in it
+STATUS_LINES = 2  # the status line's height: its messages wrap in it (the whole one in its tip)
 
 
 class ScopeWidget(QWidget):
