@@ -19,6 +19,7 @@ ROOT = Path(__file__).resolve().parents[1]
 # turns a file into the QtCore document the views edit.
 EXCEPTIONS = ("prm9tool.files.prmdocument:",)
 QT_FREE = (
+    "api",
     "analysis",
     "characterize",
     "scope",
