@@ -57,17 +57,17 @@ Poslední akce možná nebyla dokončena. Uložte svou práci pod novým názvem
             <source>The model fits the measurement badly (fit error {0} %, at most {1} %).</source>
             <translation>Model špatně odpovídá měření (chyba přizpůsobení {0} %, nejvýše {1} %).</translation>
         </message>
+        <message>
+            <source>The proposal passes the acceptance profile “{0}” (its steps both ways and the static test).</source>
+            <translation>Návrh splňuje přejímací profil „{0}“ (jeho skoky oběma směry a statickou zkoušku).</translation>
+        </message>
+        <message>
+            <source>The proposal fails the acceptance profile “{0}”: {1}. Do not accept it unchecked.</source>
+            <translation>Návrh nesplňuje přejímací profil „{0}“: {1}. Nepřebírejte jej bez kontroly.</translation>
+        </message>
     </context>
     <context>
         <name>AutotunePage</name>
-        <message>
-            <source>steps of %1 % from 0 %, a few times, about %2 s in all</source>
-            <translation>několik skoků o %1 % od 0 %, celkem asi %2 s</translation>
-        </message>
-        <message>
-            <source>P only with rising gain until the loop oscillates (steps of 5 %, oscillation stopped at ±%1 %), about 5 s</source>
-            <translation>pouze P se stoupajícím zesílením, dokud se smyčka nerozkmitá (skoky 5 %, kmitání přerušeno při ±%1 %), asi 5 s</translation>
-        </message>
         <message>
             <source>Model: gain %1, lags %2 ms, dead time %3 ms (fit error %4 %).</source>
             <translation>Model: zesílení %1, zpoždění %2 ms, dopravní zpoždění %3 ms (chyba proložení %4 %).</translation>
@@ -75,10 +75,6 @@ Poslední akce možná nebyla dokončena. Uložte svou práci pod novým názvem
         <message>
             <source>Critical gain Kkr = %1, period Tkr = %2 ms: K = 0.5·Kkr, Ti = 0.8·Tkr, Td = 0.12·Tkr.</source>
             <translation>Kritické zesílení Kkr = %1, perioda Tkr = %2 ms: K = 0.5·Kkr, Ti = 0.8·Tkr, Td = 0.12·Tkr.</translation>
-        </message>
-        <message>
-            <source>Proposed, simulated on the emulator's firmware: %1.</source>
-            <translation>Návrh, simulovaný na firmwaru emulátoru: %1.</translation>
         </message>
         <message>
             <source>Do not accept these gains: the identification is not trustworthy.</source>
@@ -97,10 +93,6 @@ Poslední akce možná nebyla dokončena. Uložte svou práci pod novým názvem
             <translation>návrh (simulováno)</translation>
         </message>
         <message>
-            <source>Step response</source>
-            <translation>Přechodová charakteristika</translation>
-        </message>
-        <message>
             <source>time [ms]</source>
             <translation>čas [ms]</translation>
         </message>
@@ -113,8 +105,40 @@ Poslední akce možná nebyla dokončena. Uložte svou práci pod novým názvem
             <translation>překmit %1 %, ustálení %2</translation>
         </message>
         <message>
-            <source>Before: %1. Proposed: %2.</source>
-            <translation>Před: %1. Návrh: %2.</translation>
+            <source>%1 — before: %2; proposed: %3.</source>
+            <translation>%1 — před: %2; návrh: %3.</translation>
+        </message>
+        <message>
+            <source>steps of %1 % from 0 %, a few times</source>
+            <translation>několik skoků z 0 % o %1 %</translation>
+        </message>
+        <message>
+            <source>P only with rising gain until the loop oscillates (steps of 5 %, oscillation stopped at ±%1 %)</source>
+            <translation>jen P složka s rostoucím zesílením, dokud smyčka nekmitá (skoky 5 %, kmitání zastaveno při ±%1 %)</translation>
+        </message>
+        <message>
+            <source>; then the acceptance profile's steps of %1 % and its static test (a triangle of %2 s) with the present and the proposed gains; about %3 s in all</source>
+            <translation>; potom skoky přejímacího profilu o %1 % a jeho statická zkouška (trojúhelník %2 s) se stávajícím a navrženým zesílením; celkem asi %3 s</translation>
+        </message>
+        <message>
+            <source>Proposed, simulated on the emulator's firmware (as the controller dialog): %1.</source>
+            <translation>Návrh simulovaný firmwarem emulátoru (jako v dialogu regulátoru): %1.</translation>
+        </message>
+        <message>
+            <source>Tried before and failed the profile: %1 (%2).</source>
+            <translation>Dříve zkoušeno, profil nesplněn: %1 (%2).</translation>
+        </message>
+        <message>
+            <source>%1 before</source>
+            <translation>%1 před</translation>
+        </message>
+        <message>
+            <source>%1 proposed</source>
+            <translation>%1 návrh</translation>
+        </message>
+        <message>
+            <source>Acceptance steps of %1 %</source>
+            <translation>Přejímací skoky o %1 %</translation>
         </message>
         <message>
             <source>Autotune</source>
@@ -159,6 +183,26 @@ Poslední akce možná nebyla dokončena. Uložte svou práci pod novým názvem
         <message>
             <source>Accept anyway (I checked the measurement)</source>
             <translation>Přesto převzít (měření jsem zkontroloval)</translation>
+        </message>
+        <message>
+            <source>Figure</source>
+            <translation>Ukazatel</translation>
+        </message>
+        <message>
+            <source>Before</source>
+            <translation>Před</translation>
+        </message>
+        <message>
+            <source>Proposed</source>
+            <translation>Návrh</translation>
+        </message>
+        <message>
+            <source>Limit</source>
+            <translation>Mez</translation>
+        </message>
+        <message>
+            <source>Result</source>
+            <translation>Výsledek</translation>
         </message>
     </context>
     <context>
@@ -391,6 +435,10 @@ Poslední akce možná nebyla dokončena. Uložte svou práci pod novým názvem
         <message>
             <source>The bus cannot be watched: {0}</source>
             <translation>Sběrnici nelze sledovat: {0}</translation>
+        </message>
+        <message>
+            <source>The valve (serial number {0}) does not tell its type key, and its objects do not tell E02 from E04 (-CA). Type key on the valve's label:</source>
+            <translation>Ventil (výrobní číslo {0}) neuvádí svůj typový klíč a jeho objekty nerozliší E02 od E04 (-CA). Typový klíč ze štítku ventilu:</translation>
         </message>
         <message>
             <source>Type key of the valve</source>
@@ -664,6 +712,10 @@ Poslední akce možná nebyla dokončena. Uložte svou práci pod novým názvem
             <source>the process controller's Kp is 0: the spool would not move</source>
             <translation>Kp procesního regulátoru je 0: šoupátko by se nepohnulo</translation>
         </message>
+        <message>
+            <source>this valve has no object for {0} on this link (their addresses are this project's, not the manual's): the tuning cannot change them here; nothing was changed — tune these over USB</source>
+            <translation>tento ventil nemá na tomto spojení objekt pro {0} (jejich adresy jsou adresami tohoto projektu, ne příručky): ladění je zde nemůže změnit; nic nebylo změněno — nalaďte je přes USB</translation>
+        </message>
     </context>
     <context>
         <name>CommissioningPanel</name>
@@ -730,6 +782,14 @@ Poslední akce možná nebyla dokončena. Uložte svou práci pod novým názvem
             <source>The valve variants differ: only the parameters both have are compared; {0} parameters that one side lacks are left out.</source>
             <translation>Varianty ventilů se liší: porovnávají se jen parametry, které mají obě strany; {0} parametrů, které jedné straně chybí, je vynecháno.</translation>
         </message>
+        <message>
+            <source>not on this valve</source>
+            <translation>ve ventilu není</translation>
+        </message>
+        <message>
+            <source>not on the valve it was read from</source>
+            <translation>není ve ventilu, ze kterého byl načten</translation>
+        </message>
     </context>
     <context>
         <name>CompareDialog</name>
@@ -790,6 +850,14 @@ Poslední akce možná nebyla dokončena. Uložte svou práci pod novým názvem
             </translation>
         </message>
         <message numerus="yes">
+            <source>%n parameter(s) not on the valve, not compared</source>
+            <translation>
+                <numerusform>%n parametr není ve ventilu, neporovnán</numerusform>
+                <numerusform>%n parametry nejsou ve ventilu, neporovnány</numerusform>
+                <numerusform>%n parametrů není ve ventilu, neporovnáno</numerusform>
+            </translation>
+        </message>
+        <message numerus="yes">
             <source>%n shown</source>
             <translation>
                 <numerusform>%n zobrazen</numerusform>
@@ -811,6 +879,10 @@ Poslední akce možná nebyla dokončena. Uložte svou práci pod novým názvem
         <message>
             <source>One side's valve type has no such parameter; it cannot be chosen.</source>
             <translation>Typ ventilu jedné strany tento parametr nemá; nelze jej zvolit.</translation>
+        </message>
+        <message>
+            <source>The valve type has this parameter, but the valve does not (a valve over CANopen without this object): not compared, not a difference; it cannot be chosen.</source>
+            <translation>Typ ventilu tento parametr má, ventil však ne (ventil přes CANopen bez tohoto objektu): neporovnává se, není to rozdíl; nelze jej zvolit.</translation>
         </message>
     </context>
     <context>
@@ -3479,6 +3551,21 @@ Ano načte a záznam zařadí do fronty; Ne nenačte nic.</translation>
         </message>
     </context>
     <context>
+        <name>StepFigures</name>
+        <message>
+            <source>did not settle within ±{0} % of the step: oscillation of {1} at {2} Hz</source>
+            <translation>neustálilo se v pásmu ±{0} % skoku: kmitání {1} při {2} Hz</translation>
+        </message>
+        <message>
+            <source>did not settle within ±{0} % of the step: still moving by {1} at the end</source>
+            <translation>neustálilo se v pásmu ±{0} % skoku: na konci se ještě mění o {1}</translation>
+        </message>
+        <message>
+            <source>Step {0} → {1} %, window {2} … {3} ms</source>
+            <translation>Skok {0} → {1} %, okno {2} … {3} ms</translation>
+        </message>
+    </context>
+    <context>
         <name>StepPanel</name>
         <message>
             <source>Step response</source>
@@ -3525,10 +3612,6 @@ Ano načte a záznam zařadí do fronty; Ne nenačte nic.</translation>
             <translation>V {0} nebyl nalezen žádný skok.</translation>
         </message>
         <message>
-            <source>not settled in the window</source>
-            <translation>v okně neustáleno</translation>
-        </message>
-        <message>
             <source>Measured on {0}.</source>
             <translation>Měřeno na {0}.</translation>
         </message>
@@ -3552,8 +3635,8 @@ Ano načte a záznam zařadí do fronty; Ne nenačte nic.</translation>
             <translation>nedosaženo</translation>
         </message>
         <message>
-            <source>Step %1 %: overshoot %2 %, rise time %3, settling (±2 %) %4, remaining error %5 %</source>
-            <translation>Skok %1 %: překmit %2 %, doba náběhu %3, ustálení (±2 %) %4, zbývající odchylka %5 %</translation>
+            <source>{0}: overshoot {1} %, rise time {2}, settling (±2 %) {3}, remaining error {4} %</source>
+            <translation>{0}: překmit {1} %, doba náběhu {2}, ustálení (±2 %) {3}, zbývající odchylka {4} %</translation>
         </message>
     </context>
     <context>
@@ -3620,6 +3703,10 @@ Ano načte a záznam zařadí do fronty; Ne nenačte nic.</translation>
         <message>
             <source>dead band</source>
             <translation>pásmo necitlivosti</translation>
+        </message>
+        <message>
+            <source>step %1 → %2 %: %3</source>
+            <translation>skok %1 → %2 %: %3</translation>
         </message>
         <message>
             <source>step %1 %: %2</source>
@@ -3791,6 +3878,14 @@ Zajistěte, aby to hydraulika bezpečně snesla. Tlačítko Stop test kdykoli uk
         <message>
             <source>Tuning</source>
             <translation>Ladění</translation>
+        </message>
+        <message>
+            <source>The oscilloscope's setpoint generator was stopped for the test.</source>
+            <translation>Generátor žádané hodnoty osciloskopu byl kvůli zkoušce zastaven.</translation>
+        </message>
+        <message>
+            <source>The oscilloscope's setpoint generator is running: the test stops it (start it again afterwards).</source>
+            <translation>Generátor žádané hodnoty osciloskopu běží: zkouška jej zastaví (poté jej spusťte znovu).</translation>
         </message>
         <message>
             <source>Stopping…</source>
@@ -4340,6 +4435,18 @@ Zajistěte, aby to hydraulika bezpečně snesla. Tlačítko Stop test kdykoli uk
                 <numerusform>%n parametry znovu zapsány, ověřeny a uloženy v {0}: ventil je již obsahoval</numerusform>
                 <numerusform>%n parametrů znovu zapsáno, ověřeno a uloženo v {0}: ventil je již obsahoval</numerusform>
             </translation>
+        </message>
+        <message>
+            <source>stored with 0x1010</source>
+            <translation>uloženo pomocí 0x1010</translation>
+        </message>
+        <message>
+            <source>kept by the valve as written (it has no store command)</source>
+            <translation>ventil si hodnoty ponechal tak, jak byly zapsány (nemá příkaz k uložení)</translation>
+        </message>
+        <message>
+            <source>verified after a restart</source>
+            <translation>ověřeno po restartu</translation>
         </message>
         <message>
             <source>Upload failed</source>

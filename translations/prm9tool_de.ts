@@ -57,17 +57,17 @@ Die letzte Aktion wurde womöglich nicht vollständig ausgeführt. Speichern Sie
             <source>The model fits the measurement badly (fit error {0} %, at most {1} %).</source>
             <translation>Das Modell passt schlecht zur Messung (Anpassungsfehler {0} %, höchstens {1} %).</translation>
         </message>
+        <message>
+            <source>The proposal passes the acceptance profile “{0}” (its steps both ways and the static test).</source>
+            <translation>Der Vorschlag besteht das Abnahmeprofil „{0}“ (seine Sprünge in beide Richtungen und die statische Prüfung).</translation>
+        </message>
+        <message>
+            <source>The proposal fails the acceptance profile “{0}”: {1}. Do not accept it unchecked.</source>
+            <translation>Der Vorschlag besteht das Abnahmeprofil „{0}“ nicht: {1}. Nicht ungeprüft übernehmen.</translation>
+        </message>
     </context>
     <context>
         <name>AutotunePage</name>
-        <message>
-            <source>steps of %1 % from 0 %, a few times, about %2 s in all</source>
-            <translation>einige Sprünge von %1 % ab 0 %, insgesamt etwa %2 s</translation>
-        </message>
-        <message>
-            <source>P only with rising gain until the loop oscillates (steps of 5 %, oscillation stopped at ±%1 %), about 5 s</source>
-            <translation>nur P mit steigender Verstärkung, bis der Kreis schwingt (Sprünge von 5 %, Schwingung bei ±%1 % abgebrochen), etwa 5 s</translation>
-        </message>
         <message>
             <source>Model: gain %1, lags %2 ms, dead time %3 ms (fit error %4 %).</source>
             <translation>Modell: Verstärkung %1, Verzögerungen %2 ms, Totzeit %3 ms (Anpassungsfehler %4 %).</translation>
@@ -75,10 +75,6 @@ Die letzte Aktion wurde womöglich nicht vollständig ausgeführt. Speichern Sie
         <message>
             <source>Critical gain Kkr = %1, period Tkr = %2 ms: K = 0.5·Kkr, Ti = 0.8·Tkr, Td = 0.12·Tkr.</source>
             <translation>Kritische Verstärkung Kkr = %1, Periode Tkr = %2 ms: K = 0.5·Kkr, Ti = 0.8·Tkr, Td = 0.12·Tkr.</translation>
-        </message>
-        <message>
-            <source>Proposed, simulated on the emulator's firmware: %1.</source>
-            <translation>Vorschlag, simuliert mit der Firmware des Emulators: %1.</translation>
         </message>
         <message>
             <source>Do not accept these gains: the identification is not trustworthy.</source>
@@ -97,10 +93,6 @@ Die letzte Aktion wurde womöglich nicht vollständig ausgeführt. Speichern Sie
             <translation>Vorschlag (simuliert)</translation>
         </message>
         <message>
-            <source>Step response</source>
-            <translation>Sprungantwort</translation>
-        </message>
-        <message>
             <source>time [ms]</source>
             <translation>Zeit [ms]</translation>
         </message>
@@ -113,8 +105,40 @@ Die letzte Aktion wurde womöglich nicht vollständig ausgeführt. Speichern Sie
             <translation>Überschwingen %1 %, Ausregelzeit %2</translation>
         </message>
         <message>
-            <source>Before: %1. Proposed: %2.</source>
-            <translation>Vorher: %1. Vorschlag: %2.</translation>
+            <source>%1 — before: %2; proposed: %3.</source>
+            <translation>%1 — vorher: %2; Vorschlag: %3.</translation>
+        </message>
+        <message>
+            <source>steps of %1 % from 0 %, a few times</source>
+            <translation>einige Sprünge von 0 % um %1 %</translation>
+        </message>
+        <message>
+            <source>P only with rising gain until the loop oscillates (steps of 5 %, oscillation stopped at ±%1 %)</source>
+            <translation>nur P-Anteil mit steigender Verstärkung, bis der Regelkreis schwingt (Sprünge von 5 %, Abbruch bei ±%1 %)</translation>
+        </message>
+        <message>
+            <source>; then the acceptance profile's steps of %1 % and its static test (a triangle of %2 s) with the present and the proposed gains; about %3 s in all</source>
+            <translation>; danach die Sprünge des Abnahmeprofils um %1 % und seine statische Prüfung (ein Dreieck von %2 s) mit den aktuellen und den vorgeschlagenen Verstärkungen; insgesamt etwa %3 s</translation>
+        </message>
+        <message>
+            <source>Proposed, simulated on the emulator's firmware (as the controller dialog): %1.</source>
+            <translation>Vorschlag, simuliert mit der Firmware des Emulators (wie im Reglerdialog): %1.</translation>
+        </message>
+        <message>
+            <source>Tried before and failed the profile: %1 (%2).</source>
+            <translation>Zuvor versucht, Profil nicht bestanden: %1 (%2).</translation>
+        </message>
+        <message>
+            <source>%1 before</source>
+            <translation>%1 vorher</translation>
+        </message>
+        <message>
+            <source>%1 proposed</source>
+            <translation>%1 Vorschlag</translation>
+        </message>
+        <message>
+            <source>Acceptance steps of %1 %</source>
+            <translation>Abnahmesprünge um %1 %</translation>
         </message>
         <message>
             <source>Autotune</source>
@@ -159,6 +183,26 @@ Die letzte Aktion wurde womöglich nicht vollständig ausgeführt. Speichern Sie
         <message>
             <source>Accept anyway (I checked the measurement)</source>
             <translation>Trotzdem übernehmen (ich habe die Messung geprüft)</translation>
+        </message>
+        <message>
+            <source>Figure</source>
+            <translation>Kennwert</translation>
+        </message>
+        <message>
+            <source>Before</source>
+            <translation>Vorher</translation>
+        </message>
+        <message>
+            <source>Proposed</source>
+            <translation>Vorschlag</translation>
+        </message>
+        <message>
+            <source>Limit</source>
+            <translation>Grenze</translation>
+        </message>
+        <message>
+            <source>Result</source>
+            <translation>Ergebnis</translation>
         </message>
     </context>
     <context>
@@ -389,6 +433,10 @@ Die letzte Aktion wurde womöglich nicht vollständig ausgeführt. Speichern Sie
         <message>
             <source>The bus cannot be watched: {0}</source>
             <translation>Der Bus kann nicht beobachtet werden: {0}</translation>
+        </message>
+        <message>
+            <source>The valve (serial number {0}) does not tell its type key, and its objects do not tell E02 from E04 (-CA). Type key on the valve's label:</source>
+            <translation>Das Ventil (Seriennummer {0}) nennt seinen Typenschlüssel nicht, und seine Objekte unterscheiden E02 nicht von E04 (-CA). Typenschlüssel auf dem Typenschild des Ventils:</translation>
         </message>
         <message>
             <source>Type key of the valve</source>
@@ -662,6 +710,10 @@ Die letzte Aktion wurde womöglich nicht vollständig ausgeführt. Speichern Sie
             <source>the process controller's Kp is 0: the spool would not move</source>
             <translation>Kp des Prozessreglers ist 0: der Schieber würde sich nicht bewegen</translation>
         </message>
+        <message>
+            <source>this valve has no object for {0} on this link (their addresses are this project's, not the manual's): the tuning cannot change them here; nothing was changed — tune these over USB</source>
+            <translation>dieses Ventil hat auf dieser Verbindung kein Objekt für {0} (ihre Adressen sind die dieses Projekts, nicht die des Handbuchs): die Abstimmung kann sie hier nicht ändern; nichts wurde geändert — stimmen Sie diese über USB ab</translation>
+        </message>
     </context>
     <context>
         <name>CommissioningPanel</name>
@@ -728,6 +780,14 @@ Die letzte Aktion wurde womöglich nicht vollständig ausgeführt. Speichern Sie
             <source>The valve variants differ: only the parameters both have are compared; {0} parameters that one side lacks are left out.</source>
             <translation>Die Ventilvarianten unterscheiden sich: verglichen werden nur die Parameter, die beide haben; {0} Parameter, die einer Seite fehlen, bleiben außen vor.</translation>
         </message>
+        <message>
+            <source>not on this valve</source>
+            <translation>nicht in diesem Ventil</translation>
+        </message>
+        <message>
+            <source>not on the valve it was read from</source>
+            <translation>nicht in dem Ventil, aus dem gelesen wurde</translation>
+        </message>
     </context>
     <context>
         <name>CompareDialog</name>
@@ -786,6 +846,13 @@ Die letzte Aktion wurde womöglich nicht vollständig ausgeführt. Speichern Sie
             </translation>
         </message>
         <message numerus="yes">
+            <source>%n parameter(s) not on the valve, not compared</source>
+            <translation>
+                <numerusform>%n Parameter nicht im Ventil, nicht verglichen</numerusform>
+                <numerusform>%n Parameter nicht im Ventil, nicht verglichen</numerusform>
+            </translation>
+        </message>
+        <message numerus="yes">
             <source>%n shown</source>
             <translation>
                 <numerusform>%n angezeigt</numerusform>
@@ -806,6 +873,10 @@ Die letzte Aktion wurde womöglich nicht vollständig ausgeführt. Speichern Sie
         <message>
             <source>One side's valve type has no such parameter; it cannot be chosen.</source>
             <translation>Der Ventiltyp einer Seite hat diesen Parameter nicht; er kann nicht gewählt werden.</translation>
+        </message>
+        <message>
+            <source>The valve type has this parameter, but the valve does not (a valve over CANopen without this object): not compared, not a difference; it cannot be chosen.</source>
+            <translation>Der Ventiltyp hat diesen Parameter, das Ventil aber nicht (ein Ventil über CANopen ohne dieses Objekt): nicht verglichen, kein Unterschied; er kann nicht gewählt werden.</translation>
         </message>
     </context>
     <context>
@@ -3467,6 +3538,21 @@ Ja lädt hoch und stellt den Eintrag in die Warteschlange; Nein lädt nichts hoc
         </message>
     </context>
     <context>
+        <name>StepFigures</name>
+        <message>
+            <source>did not settle within ±{0} % of the step: oscillation of {1} at {2} Hz</source>
+            <translation>nicht innerhalb ±{0} % des Sprungs eingeschwungen: Schwingung von {1} bei {2} Hz</translation>
+        </message>
+        <message>
+            <source>did not settle within ±{0} % of the step: still moving by {1} at the end</source>
+            <translation>nicht innerhalb ±{0} % des Sprungs eingeschwungen: bewegt sich am Ende noch um {1}</translation>
+        </message>
+        <message>
+            <source>Step {0} → {1} %, window {2} … {3} ms</source>
+            <translation>Sprung {0} → {1} %, Fenster {2} … {3} ms</translation>
+        </message>
+    </context>
+    <context>
         <name>StepPanel</name>
         <message>
             <source>Step response</source>
@@ -3513,10 +3599,6 @@ Ja lädt hoch und stellt den Eintrag in die Warteschlange; Nein lädt nichts hoc
             <translation>Kein Sprung in {0} gefunden.</translation>
         </message>
         <message>
-            <source>not settled in the window</source>
-            <translation>im Fenster nicht eingeschwungen</translation>
-        </message>
-        <message>
             <source>Measured on {0}.</source>
             <translation>Gemessen auf {0}.</translation>
         </message>
@@ -3540,8 +3622,8 @@ Ja lädt hoch und stellt den Eintrag in die Warteschlange; Nein lädt nichts hoc
             <translation>nicht erreicht</translation>
         </message>
         <message>
-            <source>Step %1 %: overshoot %2 %, rise time %3, settling (±2 %) %4, remaining error %5 %</source>
-            <translation>Sprung %1 %: Überschwingen %2 %, Anstiegszeit %3, Einschwingen (±2 %) %4, bleibende Abweichung %5 %</translation>
+            <source>{0}: overshoot {1} %, rise time {2}, settling (±2 %) {3}, remaining error {4} %</source>
+            <translation>{0}: Überschwingen {1} %, Anstiegszeit {2}, Einschwingen (±2 %) {3}, bleibende Abweichung {4} %</translation>
         </message>
     </context>
     <context>
@@ -3608,6 +3690,10 @@ Ja lädt hoch und stellt den Eintrag in die Warteschlange; Nein lädt nichts hoc
         <message>
             <source>dead band</source>
             <translation>Totzone</translation>
+        </message>
+        <message>
+            <source>step %1 → %2 %: %3</source>
+            <translation>Sprung %1 → %2 %: %3</translation>
         </message>
         <message>
             <source>step %1 %: %2</source>
@@ -3779,6 +3865,14 @@ Stellen Sie sicher, dass die Hydraulik dafür sicher ist. Stopp beendet ihn jede
         <message>
             <source>Tuning</source>
             <translation>Einstellung</translation>
+        </message>
+        <message>
+            <source>The oscilloscope's setpoint generator was stopped for the test.</source>
+            <translation>Der Sollwertgenerator des Oszilloskops wurde für die Prüfung angehalten.</translation>
+        </message>
+        <message>
+            <source>The oscilloscope's setpoint generator is running: the test stops it (start it again afterwards).</source>
+            <translation>Der Sollwertgenerator des Oszilloskops läuft: Die Prüfung hält ihn an (danach erneut starten).</translation>
         </message>
         <message>
             <source>Stopping…</source>
@@ -4325,6 +4419,18 @@ Stellen Sie sicher, dass die Hydraulik dafür sicher ist. Stopp beendet ihn jede
                 <numerusform>%n Parameter um {0} erneut geschrieben, geprüft und gespeichert: das Ventil hatte ihn schon</numerusform>
                 <numerusform>%n Parameter um {0} erneut geschrieben, geprüft und gespeichert: das Ventil hatte sie schon</numerusform>
             </translation>
+        </message>
+        <message>
+            <source>stored with 0x1010</source>
+            <translation>mit 0x1010 gespeichert</translation>
+        </message>
+        <message>
+            <source>kept by the valve as written (it has no store command)</source>
+            <translation>vom Ventil wie geschrieben behalten (es hat keinen Speicherbefehl)</translation>
+        </message>
+        <message>
+            <source>verified after a restart</source>
+            <translation>nach einem Neustart geprüft</translation>
         </message>
         <message>
             <source>Upload failed</source>

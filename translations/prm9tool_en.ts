@@ -35,6 +35,13 @@
             </translation>
         </message>
         <message numerus="yes">
+            <source>%n parameter(s) not on the valve, not compared</source>
+            <translation>
+                <numerusform>%n parameter not on the valve, not compared</numerusform>
+                <numerusform>%n parameters not on the valve, not compared</numerusform>
+            </translation>
+        </message>
+        <message numerus="yes">
             <source>%n shown</source>
             <translation>
                 <numerusform>%n shown</numerusform>

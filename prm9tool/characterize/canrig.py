@@ -142,6 +142,7 @@ class CanRig(Rig):
         for i, value in enumerate(values):
             if i % checks == 0:
                 self.check()
+                self.played_s += checks * self.period_s if i else 0.0
                 self._raise_keeper_error()
             wait = due - time.perf_counter()
             if wait > 0:

@@ -68,6 +68,13 @@ def add_device_options(parser: argparse.ArgumentParser) -> None:
         "object 0x2041, as real valves): checked against what its objects tell and remembered "
         "for its serial number; with --batch it goes before the file's key",
     )
+    group.add_argument(
+        "--od",
+        choices=("full", "manual"),
+        help="object dictionary of --emulator/--serve-emulator valves over CANopen: full (every "
+        "object of the catalogue, store with 0x1010; default) or manual (only the objects the "
+        "manual's tables 7-13/7-14/7-16 list; the valve keeps what is written)",
+    )
     serve = parser.add_argument_group("headless emulated valves on a CAN bus (no GUI)")
     serve.add_argument(
         "--serve-emulator",
@@ -152,6 +159,12 @@ def build_parser() -> argparse.ArgumentParser:
         "--download", metavar="OUT.prm", help="with --batch: save a valve's parameters"
     )
     batch.add_argument("--report", metavar="REPORT.json", help="with --batch: JSON report file")
+    batch.add_argument(
+        "--verify-by-restart",
+        action="store_true",
+        help="with --batch over CANopen: after the store, restart the valve (NMT reset node: "
+        "the spool drops — hydraulics off!) and read every value back",
+    )
     batch.add_argument(
         "--force-type",
         action="store_true",

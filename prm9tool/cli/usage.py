@@ -16,6 +16,7 @@ BATCH_ONLY = {
     "--dry-run": "dry_run",
     "--force-type": "force_type",
     "--all": "all",
+    "--verify-by-restart": "verify_by_restart",
 }
 FILE_TOOLS = {"--new": "new", "--check": "check", "--export-eds": "export_eds"}
 CAN_OPTIONS = {"--can-interface": "can_interface", "--can-channel": "can_channel",
@@ -46,6 +47,8 @@ def usage_problem(args: argparse.Namespace) -> str | None:
         return _characterize_problem(args)
     if args.profile:
         return "--profile belongs to --characterize"
+    if getattr(args, "od", None) and not (args.emulator or args.serve_emulator):
+        return "--od chooses the object dictionary of --emulator or --serve-emulator valves"
     if isinstance(args.json, str):
         return "--json OUT.json belongs to --characterize (--diff and --history print JSON)"
     problem = _compare_history_problem(args)

@@ -353,15 +353,24 @@ def ask_type_key(parent: QWidget | None, serial: int, told: str) -> tuple[str | 
     """Ask for the type key on the label of valve ``serial``, whose objects say ``told`` (E02,
     E04) -CA; a fitting key is remembered for the serial number. Returns (key, "") — or (None,
     why the answer does not fit), (None, "") when the user cancelled."""
-    text, ok = QInputDialog.getText(
-        parent,
-        QCoreApplication.translate("CanBusDialog", "Type key of the valve"),
+    question = (
         QCoreApplication.translate(
             "CanBusDialog",
             "The valve (serial number {0}) does not tell its type key; its objects say "
             "{1} -CA. Type key on the valve's label:",
-        ).format(serial, told),
-        text=f"PRM9-06.3Z11/30-24{told}S02-CA",
+        ).format(serial, told)
+        if told
+        else QCoreApplication.translate(
+            "CanBusDialog",
+            "The valve (serial number {0}) does not tell its type key, and its objects do not "
+            "tell E02 from E04 (-CA). Type key on the valve's label:",
+        ).format(serial)
+    )
+    text, ok = QInputDialog.getText(
+        parent,
+        QCoreApplication.translate("CanBusDialog", "Type key of the valve"),
+        question,
+        text=f"PRM9-06.3Z11/30-24{told or 'E02'}S02-CA",
     )
     if not ok:
         return None, ""
@@ -369,7 +378,7 @@ def ask_type_key(parent: QWidget | None, serial: int, told: str) -> tuple[str | 
         key = TypeKey.parse(text)
     except TypeKeyError as exc:
         return None, error_text(exc)
-    if key.config.value != told or not key.canopen:
+    if (told and key.config.value != told) or not key.canopen:
         problem = QCoreApplication.translate(
             "CanBusDialog", "{0} does not fit the valve: its objects say {1} -CA."
         )

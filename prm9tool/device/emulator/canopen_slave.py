@@ -309,14 +309,14 @@ class CanopenSlave:
     # --- SDO access ------------------------------------------------------------------------
     def _sdo_read(self, index: int, subindex: int) -> bytes:
         if index in (0x1600, 0x1A00) and subindex == 2:
-            self._valve.read_bytes(index, subindex)  # existence and access check
+            self._valve.can_read_bytes(index, subindex)  # existence and access check
             entry_index, entry_sub, bits = mapping(self._valve, index)[subindex - 1]
             return struct.pack("<I", (entry_index << 16) | (entry_sub << 8) | bits)
-        return self._valve.read_bytes(index, subindex)
+        return self._valve.can_read_bytes(index, subindex)
 
     def _sdo_write(self, index: int, subindex: int, data: bytes) -> None:
         check_comm_write(index, subindex, data, self.state)
-        self._valve.write_bytes(index, subindex, data)
+        self._valve.can_write_bytes(index, subindex, data)
         if 0x1000 <= index < 0x2000:
             self._load_config()
             if index == HEARTBEAT_TIME:
