@@ -73,6 +73,11 @@ def _smoke(exe: Path) -> int:
             ),
             ("--history", [exe, "--history", "101"], lambda out: "batch-upload" in out),
             (
+                "--get --json",
+                [exe, "--emulator", f"{E02}:101", "--get", "LIMTA", "--json"],
+                lambda out: json.loads(out)["values"] == {"LIMTA": 2400},
+            ),
+            (
                 "--export-eds",
                 [exe, "--export-eds", E02, "-o", "v.eds"],
                 lambda out: "[DeviceInfo]" in (work / "v.eds").read_text(),
@@ -99,6 +104,8 @@ def _clean_env(work: Path) -> dict[str, str]:
         XDG_CONFIG_HOME=str(work / "config"),
         PRM9TOOL_DATA_DIR=str(work / "data"),
         QT_QPA_PLATFORM="offscreen",
+        # the emulated valves must run on the compiled control loop the build bundles
+        PRM9TOOL_EMULATOR_KERNEL="compiled",
     )
     return env
 
