@@ -362,7 +362,7 @@ un ist, wenn sie\
 r ist.</li>\x0a</ul\
 >\x0a</body>\x0a</html\
 >\x0a\
-\x00\x00\x19G\
+\x00\x00\x1d\xe2\
 <\
 !DOCTYPE html>\x0a<\
 html lang=\x22cs\x22>\x0a\
@@ -587,188 +587,262 @@ nline jde ka\xc5\xbed\xc3\
 o ventilu i do d\
 okumentu, v re\xc5\xbe\
 imu offline\x0apouz\
-e do dokumentu. \
-Ztrat\xc3\xad-li se sp\
-ojen\xc3\xad s ventile\
-m, program p\xc5\x99ej\
-de do re\xc5\xbeimu of\
-fline a\x0av\xc5\xa1echny\
- hodnoty zachov\xc3\
-\xa1.</p>\x0a<p>Hodnot\
-y zm\xc4\x9bn\xc4\x9bn\xc3\xa9 onl\
-ine jsou ve vent\
-ilu aktivn\xc3\xad, al\
-e je\xc5\xa1t\xc4\x9b neulo\xc5\
-\xbeen\xc3\xa9: p\xc5\x99i p\xc5\x99e\
-chodu do\x0are\xc5\xbeimu\
- offline program\
- nab\xc3\xaddne jejich\
- ulo\xc5\xbeen\xc3\xad a Ven\
-til \xe2\x86\x92 <b>Ulo\xc5\xbe\
-it do pam\xc4\x9bti ve\
-ntilu</b> je ulo\
-\xc5\xbe\xc3\xad\x0ahned (s \xc4\x8d\xc3\
-\xadm ventil pracuj\
-e, s t\xc3\xadm i nast\
-artuje; zaznamen\
-\xc3\xa1 se do histori\
-e). <b>Na\xc4\x8dten\xc3\xad\
- do ventilu</b> \
-zap\xc3\xad\xc5\xa1e v\xc5\xa1echn\
-y\x0ahodnoty, p\xc5\x99e\xc4\
-\x8dte je zp\xc4\x9bt, po\
-rovn\xc3\xa1 a ulo\xc5\xbe\xc3\xad\
-; ulo\xc5\xbe\xc3\xad se jen\
- tehdy, je-li ka\
-\xc5\xbed\xc3\xa1 hodnota ov\
-\xc4\x9b\xc5\x99ena.\x0aP\xc5\x99ed p\
-rvn\xc3\xadm na\xc4\x8dten\xc3\xad\
-m do ventilu pro\
-gram ulo\xc5\xbe\xc3\xad z\xc3\xa1\
-lohu vlastn\xc3\xadch \
-parametr\xc5\xaf venti\
-lu do slo\xc5\xbeky\x0au\xc5\
-\xbeivatelsk\xc3\xbdch da\
-t (<code>backups\
-/&lt;v\xc3\xbdrobn\xc3\xad \xc4\
-\x8d\xc3\xadslo&gt;/</cod\
-e>).</p>\x0a<p><b>R\
-estart ventilu</\
-b> a <b>Obnoven\xc3\
-\xad tov\xc3\xa1rn\xc3\xadho na\
-staven\xc3\xad</b> jso\
-u dovoleny pouze\
- p\xc5\x99i\x0aodpojen\xc3\xa9m\
- hydraulick\xc3\xa9m o\
-bvodu; program v\
-\xc3\xa1s po\xc5\xbe\xc3\xa1d\xc3\xa1 o \
-potvrzen\xc3\xad.</p>\x0a\
-\x0a<h2>Soubory</h2\
->\x0a<p>Z\xc3\xa1znamy pa\
-rametr\xc5\xaf (<code>\
-*.prm</code>) js\
-ou textov\xc3\xa9 soub\
-ory. Otev\xc5\x99\xc3\xadt, \
-Ulo\xc5\xbeit, Ulo\xc5\xbeit\
- jako,\x0anaposledy\
- otev\xc5\x99en\xc3\xa9 soub\
-ory a p\xc5\x99eta\xc5\xbeen\
-\xc3\xad my\xc5\xa1\xc3\xad funguj\
-\xc3\xad obvykl\xc3\xbdm zp\xc5\
-\xafsobem; p\xc5\x99ed zt\
-r\xc3\xa1tou\x0aneulo\xc5\xbeen\
-\xc3\xbdch zm\xc4\x9bn se pr\
-ogram zept\xc3\xa1. Ka\
-\xc5\xbedou zm\xc4\x9bnu lze\
- vr\xc3\xa1tit (Ctrl+Z\
-) a znovu prov\xc3\xa9\
-st\x0a(Ctrl+Y). Sou\
-bor \xe2\x86\x92 Tisk a S\
-oubor \xe2\x86\x92 Export\
- do PDF vytvo\xc5\x99\xc3\
-\xad protokol param\
-etr\xc5\xaf s typov\xc3\xbdm\
- kl\xc3\xad\xc4\x8dem,\x0av\xc3\xbdro\
-bn\xc3\xadm \xc4\x8d\xc3\xadslem, \
-firmware, soubor\
-em, datem, \xc3\xbarov\
-n\xc3\xad opr\xc3\xa1vn\xc4\x9bn\xc3\xad\
-, postupov\xc3\xbdm di\
-agramem a v\xc5\xa1emi\
-\x0aparametry s jed\
-notkami. Hodnoty\
- zm\xc4\x9bn\xc4\x9bn\xc3\xa9 od u\
-lo\xc5\xbeen\xc3\xad souboru\
- jsou ozna\xc4\x8deny \
-<b>*</b> a \xc5\x99\xc3\xa1d\
-ek\x0a\xe2\x80\x9eSoubor\xe2\x80\x9c \
-to uv\xc3\xa1d\xc3\xad; ka\xc5\xbe\
-d\xc3\xa1 strana uv\xc3\xa1d\
-\xc3\xad typov\xc3\xbd kl\xc3\xad\xc4\
-\x8d a v\xc3\xbdrobn\xc3\xad \xc4\x8d\
-\xc3\xadslo a sv\xc3\xa9 \xc4\x8d\xc3\
-\xadslo strany; na\x0a\
-posledn\xc3\xad stran\xc4\
-\x9b je \xc5\x99\xc3\xa1dek pro\
- datum, jm\xc3\xa9no a\
- podpis.</p>\x0a<p>\
-<b>Z\xc3\xa1loha venti\
-lu</b>: p\xc5\x99ipojt\
-e se (re\xc5\xbeim onl\
-ine), Ventil \xe2\x86\x92\
- Sta\xc5\xbeen\xc3\xad z ven\
-tilu, pak\x0aSoubor\
- \xe2\x86\x92 <b>Ulo\xc5\xbeit \
-z\xc3\xa1lo\xc5\xben\xc3\xad kopii\
-\xe2\x80\xa6</b> (navr\xc5\xbee\
-n\xc3\xbd n\xc3\xa1zev: typo\
-v\xc3\xbd kl\xc3\xad\xc4\x8d, v\xc3\xbdr\
-obn\xc3\xad \xc4\x8d\xc3\xadslo, d\
-atum\x0aa \xc4\x8das). Ko\
-pie se zap\xc3\xad\xc5\xa1e \
-a otev\xc5\x99en\xc3\xbd dok\
-ument z\xc5\xafstane, \
-jak\xc3\xbd byl: pozd\xc4\
-\x9bj\xc5\xa1\xc3\xad zm\xc4\x9bny se\
- ukl\xc3\xa1daj\xc3\xad do\x0aj\
-eho vlastn\xc3\xadho s\
-ouboru, nikdy do\
- z\xc3\xa1lohy. Naprot\
-i tomu Ulo\xc5\xbeit j\
-ako ud\xc4\x9bl\xc3\xa1 z no\
-v\xc3\xa9ho souboru\x0aot\
-ev\xc5\x99en\xc3\xbd dokumen\
-t.</p>\x0a\x0a<h2>Kl\xc3\xa1\
-vesnice</h2>\x0a<ta\
-ble>\x0a<tr><td>Ctr\
-l+O / Ctrl+S / C\
-trl+Shift+S</td>\
-<td>Otev\xc5\x99\xc3\xadt / \
-Ulo\xc5\xbeit / Ulo\xc5\xbei\
-t jako</td></tr>\
-\x0a<tr><td>Ctrl+Z \
-/ Ctrl+Y</td><td\
->Zp\xc4\x9bt / Znovu</\
-td></tr>\x0a<tr><td\
->Ctrl+P / Ctrl+E\
-</td><td>Tisk / \
-Export do PDF</t\
-d></tr>\x0a<tr><td>\
-Ctrl+1 / Ctrl+2 \
-/ Ctrl+3 / Ctrl+\
-4</td><td>Postup\
-ov\xc3\xbd diagram / S\
-eznam parametr\xc5\xaf\
- / Osciloskop / \
-Okno CANopen</td\
-></tr>\x0a<tr><td>F\
-5 / Shift+F5</td\
-><td>Re\xc5\xbeim onli\
-ne / Re\xc5\xbeim offl\
-ine</td></tr>\x0a<t\
-r><td>Ctrl+U / C\
-trl+D</td><td>Na\
-\xc4\x8dten\xc3\xad do venti\
-lu / Sta\xc5\xbeen\xc3\xad z\
- ventilu</td></t\
+e do dokumentu.<\
+/p>\x0a<p><b>Kdy\xc5\xbe \
+ventil vypadne</\
+b> (vyta\xc5\xbeen\xc3\xbd k\
+abel USB, vypnut\
+\xc3\xad a zapnut\xc3\xad na\
+p\xc3\xa1jen\xc3\xad, CAN bu\
+s-off,\x0arestart, \
+po kter\xc3\xa9m se ve\
+ntil nevr\xc3\xa1t\xc3\xad),\
+ program p\xc5\x99ejde\
+ do re\xc5\xbeimu offl\
+ine, v\xc5\xa1echny ho\
+dnoty\x0azachov\xc3\xa1 a\
+ ventil s\xc3\xa1m hle\
+d\xc3\xa1: stavov\xc3\xbd \xc5\x99\
+\xc3\xa1dek ukazuje <i\
+>Re\xc5\xbeim: OBNOVA \
+SPOJEN\xc3\x8d\xe2\x80\xa6 3 s<\
+/i>. Hled\xc3\xa1 na\x0as\
+tejn\xc3\xa9m spojen\xc3\xad\
+ \xe2\x80\x94 po CAN i po\
+d jin\xc3\xbdm \xc4\x8d\xc3\xadsle\
+m uzlu, pokud v\xc3\
+\xbdrobn\xc3\xad \xc4\x8d\xc3\xadslo \
+(0x1018/4) \xc5\x99\xc3\xadk\
+\xc3\xa1, \xc5\xbee jde\x0ao te\
+nt\xc3\xbd\xc5\xbe ventil. A\
+\xc5\xbe se ventil vr\xc3\
+\xa1t\xc3\xad, program je\
+j na\xc4\x8dte a porov\
+n\xc3\xa1 s dokumentem\
+ jako p\xc5\x99i\x0ap\xc5\x99ec\
+hodu do re\xc5\xbeimu \
+online (<i>Op\xc4\x9bt\
+ online</i>, pok\
+ud se shoduj\xc3\xad);\
+ bez v\xc3\xa1s se do \
+ventilu nic\x0aneza\
+p\xc3\xad\xc5\xa1e: hodnoty \
+zm\xc4\x9bn\xc4\x9bn\xc3\xa9 onlin\
+e, kter\xc3\xa9 ventil\
+ p\xc5\x99i vypnut\xc3\xad n\
+ap\xc3\xa1jen\xc3\xad ztrati\
+l, jsou nab\xc3\xaddnu\
+ty\x0av dialogu roz\
+d\xc3\xadl\xc5\xaf, ne odesl\
+\xc3\xa1ny. Osciloskop\
+ zaznamen\xc3\xa1v\xc3\xa1 d\
+\xc3\xa1l; gener\xc3\xa1tor \
+\xc5\xbe\xc3\xa1dan\xc3\xa9 hodnot\
+y a test\x0alad\xc4\x9bn\xc3\
+\xad z\xc5\xafstanou zast\
+aveny, dokud je \
+nespust\xc3\xadte. P\xc5\x99\
+eru\xc5\xa1en\xc3\xa9 na\xc4\x8dte\
+n\xc3\xad do ventilu o\
+hl\xc3\xa1s\xc3\xad, co se\x0as\
+talo a co ventil\
+ obsahuje; nepok\
+ra\xc4\x8duje samo. Ji\
+n\xc3\xbd ventil (jin\xc3\
+\xa9 v\xc3\xbdrobn\xc3\xad \xc4\x8d\xc3\xad\
+slo) na m\xc3\xadst\xc4\x9b\x0a\
+ztracen\xc3\xa9ho je n\
+ov\xc3\xbd ventil: pro\
+gram to ohl\xc3\xa1s\xc3\xad\
+ a s\xc3\xa1m se k n\xc4\x9b\
+mu nep\xc5\x99ipoj\xc3\xad. \
+P\xc5\x99echod do re\xc5\xbe\
+imu\x0aonline nebo \
+offline hled\xc3\xa1n\xc3\
+\xad ukon\xc4\x8d\xc3\xad. U em\
+ulovan\xc3\xa9ho venti\
+lu to ukazuj\xc3\xad V\
+entil \xe2\x86\x92 Emulov\
+an\xc3\xbd ventil\x0a\xe2\x86\x92 \
+<b>Vyt\xc3\xa1hnout ka\
+bel USB</b> a <b\
+>Znovu zapojit k\
+abel USB</b>.</p\
+>\x0a<p>Hodnoty zm\xc4\
+\x9bn\xc4\x9bn\xc3\xa9 online j\
+sou ve ventilu a\
+ktivn\xc3\xad, ale je\xc5\
+\xa1t\xc4\x9b neulo\xc5\xbeen\xc3\xa9\
+: p\xc5\x99i p\xc5\x99echodu\
+ do\x0are\xc5\xbeimu offl\
+ine program nab\xc3\
+\xaddne jejich ulo\xc5\
+\xbeen\xc3\xad a Ventil \xe2\
+\x86\x92 <b>Ulo\xc5\xbeit do\
+ pam\xc4\x9bti ventilu\
+</b> je ulo\xc5\xbe\xc3\xad\x0a\
+hned (s \xc4\x8d\xc3\xadm ve\
+ntil pracuje, s \
+t\xc3\xadm i nastartuj\
+e; zaznamen\xc3\xa1 se\
+ do historie). <\
+b>Na\xc4\x8dten\xc3\xad do v\
+entilu</b> zap\xc3\xad\
+\xc5\xa1e v\xc5\xa1echny\x0ahod\
+noty, p\xc5\x99e\xc4\x8dte j\
+e zp\xc4\x9bt, porovn\xc3\
+\xa1 a ulo\xc5\xbe\xc3\xad; ulo\
+\xc5\xbe\xc3\xad se jen tehd\
+y, je-li ka\xc5\xbed\xc3\xa1\
+ hodnota ov\xc4\x9b\xc5\x99e\
+na.\x0aP\xc5\x99ed prvn\xc3\xad\
+m na\xc4\x8dten\xc3\xadm do \
+ventilu program \
+ulo\xc5\xbe\xc3\xad z\xc3\xa1lohu \
+vlastn\xc3\xadch param\
+etr\xc5\xaf ventilu do\
+ slo\xc5\xbeky\x0au\xc5\xbeivat\
+elsk\xc3\xbdch dat (<c\
+ode>backups/&lt;\
+v\xc3\xbdrobn\xc3\xad \xc4\x8d\xc3\xadsl\
+o&gt;/</code>).<\
+/p>\x0a<p><b>Restar\
+t ventilu</b> a \
+<b>Obnoven\xc3\xad tov\
+\xc3\xa1rn\xc3\xadho nastave\
+n\xc3\xad</b> jsou dov\
+oleny pouze p\xc5\x99i\
+\x0aodpojen\xc3\xa9m hydr\
+aulick\xc3\xa9m obvodu\
+; program v\xc3\xa1s p\
+o\xc5\xbe\xc3\xa1d\xc3\xa1 o potvr\
+zen\xc3\xad.</p>\x0a\x0a<h2>\
+Soubory</h2>\x0a<p>\
+Z\xc3\xa1znamy paramet\
+r\xc5\xaf (<code>*.prm\
+</code>) jsou te\
+xtov\xc3\xa9 soubory. \
+Otev\xc5\x99\xc3\xadt, Ulo\xc5\xbe\
+it, Ulo\xc5\xbeit jako\
+,\x0anaposledy otev\
+\xc5\x99en\xc3\xa9 soubory a\
+ p\xc5\x99eta\xc5\xbeen\xc3\xad my\
+\xc5\xa1\xc3\xad funguj\xc3\xad ob\
+vykl\xc3\xbdm zp\xc5\xafsobe\
+m; p\xc5\x99ed ztr\xc3\xa1to\
+u\x0aneulo\xc5\xbeen\xc3\xbdch \
+zm\xc4\x9bn se program\
+ zept\xc3\xa1. Ka\xc5\xbedou\
+ zm\xc4\x9bnu lze vr\xc3\xa1\
+tit (Ctrl+Z) a z\
+novu prov\xc3\xa9st\x0a(C\
+trl+Y). Soubor \xe2\
+\x86\x92 Tisk a Soubor\
+ \xe2\x86\x92 Export do P\
+DF vytvo\xc5\x99\xc3\xad pro\
+tokol parametr\xc5\xaf\
+ s typov\xc3\xbdm kl\xc3\xad\
+\xc4\x8dem,\x0av\xc3\xbdrobn\xc3\xadm\
+ \xc4\x8d\xc3\xadslem, firmw\
+are, souborem, d\
+atem, \xc3\xbarovn\xc3\xad o\
+pr\xc3\xa1vn\xc4\x9bn\xc3\xad, pos\
+tupov\xc3\xbdm diagram\
+em a v\xc5\xa1emi\x0apara\
+metry s jednotka\
+mi. Hodnoty zm\xc4\x9b\
+n\xc4\x9bn\xc3\xa9 od ulo\xc5\xbee\
+n\xc3\xad souboru jsou\
+ ozna\xc4\x8deny <b>*<\
+/b> a \xc5\x99\xc3\xa1dek\x0a\xe2\x80\
+\x9eSoubor\xe2\x80\x9c to uv\
+\xc3\xa1d\xc3\xad; ka\xc5\xbed\xc3\xa1 s\
+trana uv\xc3\xa1d\xc3\xad ty\
+pov\xc3\xbd kl\xc3\xad\xc4\x8d a v\
+\xc3\xbdrobn\xc3\xad \xc4\x8d\xc3\xadslo\
+ a sv\xc3\xa9 \xc4\x8d\xc3\xadslo \
+strany; na\x0aposle\
+dn\xc3\xad stran\xc4\x9b je \
+\xc5\x99\xc3\xa1dek pro datu\
+m, jm\xc3\xa9no a podp\
+is.</p>\x0a<p><b>Z\xc3\
+\xa1loha ventilu</b\
+>: p\xc5\x99ipojte se \
+(re\xc5\xbeim online),\
+ Ventil \xe2\x86\x92 Sta\xc5\
+\xbeen\xc3\xad z ventilu,\
+ pak\x0aSoubor \xe2\x86\x92 \
+<b>Ulo\xc5\xbeit z\xc3\xa1lo\
+\xc5\xben\xc3\xad kopii\xe2\x80\xa6</\
+b> (navr\xc5\xbeen\xc3\xbd n\
+\xc3\xa1zev: typov\xc3\xbd k\
+l\xc3\xad\xc4\x8d, v\xc3\xbdrobn\xc3\xad\
+ \xc4\x8d\xc3\xadslo, datum\x0a\
+a \xc4\x8das). Kopie s\
+e zap\xc3\xad\xc5\xa1e a ote\
+v\xc5\x99en\xc3\xbd dokument\
+ z\xc5\xafstane, jak\xc3\xbd\
+ byl: pozd\xc4\x9bj\xc5\xa1\xc3\
+\xad zm\xc4\x9bny se ukl\xc3\
+\xa1daj\xc3\xad do\x0ajeho v\
+lastn\xc3\xadho soubor\
+u, nikdy do z\xc3\xa1l\
+ohy. Naproti tom\
+u Ulo\xc5\xbeit jako u\
+d\xc4\x9bl\xc3\xa1 z nov\xc3\xa9ho\
+ souboru\x0aotev\xc5\x99e\
+n\xc3\xbd dokument.</p\
+>\x0a\x0a<h2>Kl\xc3\xa1vesni\
+ce</h2>\x0a<table>\x0a\
+<tr><td>Ctrl+O /\
+ Ctrl+S / Ctrl+S\
+hift+S</td><td>O\
+tev\xc5\x99\xc3\xadt / Ulo\xc5\xbe\
+it / Ulo\xc5\xbeit jak\
+o</td></tr>\x0a<tr>\
+<td>Ctrl+Z / Ctr\
+l+Y</td><td>Zp\xc4\x9b\
+t / Znovu</td></\
+tr>\x0a<tr><td>Ctrl\
++P / Ctrl+E</td>\
+<td>Tisk / Expor\
+t do PDF</td></t\
 r>\x0a<tr><td>Ctrl+\
-T / Ctrl+I / Ctr\
-l+H</td><td>V\xc3\xbdb\
-\xc4\x9br ventilu / St\
-av ventilu / Kon\
-figurace HID</td\
-></tr>\x0a</table>\x0a\
-<p><b>Skripty a \
-zku\xc5\xa1ebn\xc3\xad stani\
-ce</b>: ventil z\
- Pythonu a ze sh\
-ellov\xc3\xbdch skript\
-\xc5\xaf, <a href=\x22scr\
-ipting_en.html\x22>\
-na t\xc3\xa9to str\xc3\xa1nc\
-e</a> (anglicky)\
-.</p>\x0a</body>\x0a</\
-html>\x0a\
+1 / Ctrl+2 / Ctr\
+l+3 / Ctrl+4</td\
+><td>Postupov\xc3\xbd \
+diagram / Seznam\
+ parametr\xc5\xaf / Os\
+ciloskop / Okno \
+CANopen</td></tr\
+>\x0a<tr><td>F5 / S\
+hift+F5</td><td>\
+Re\xc5\xbeim online / \
+Re\xc5\xbeim offline</\
+td></tr>\x0a<tr><td\
+>Ctrl+U / Ctrl+D\
+</td><td>Na\xc4\x8dten\
+\xc3\xad do ventilu / \
+Sta\xc5\xbeen\xc3\xad z vent\
+ilu</td></tr>\x0a<t\
+r><td>Ctrl+T / C\
+trl+I / Ctrl+H</\
+td><td>V\xc3\xbdb\xc4\x9br v\
+entilu / Stav ve\
+ntilu / Konfigur\
+ace HID</td></tr\
+>\x0a</table>\x0a<p><b\
+>Skripty a zku\xc5\xa1\
+ebn\xc3\xad stanice</b\
+>: ventil z Pyth\
+onu a ze shellov\
+\xc3\xbdch skript\xc5\xaf, <\
+a href=\x22scriptin\
+g_en.html\x22>na t\xc3\
+\xa9to str\xc3\xa1nce</a>\
+ (anglicky).</p>\
+\x0a</body>\x0a</html>\
+\x0a\
 \x00\x00\x062\
 <\
 !DOCTYPE html>\x0a<\
@@ -1211,7 +1285,7 @@ t\xc3\xa1len\xc3\xad ka\xc5\xbed\xc3\xa9\
 ho zobrazen\xc3\xa9ho \
 skoku.</p>\x0a</bod\
 y>\x0a</html>\x0a\
-\x00\x00\x19\xde\
+\x00\x00\x1e\xb9\
 <\
 !DOCTYPE html>\x0a<\
 html lang=\x22de\x22>\x0a\
@@ -1444,189 +1518,267 @@ fort an das Vent\
 il und in das Do\
 kument, offline \
 nur in das Dokum\
-ent. Geht die\x0aVe\
-rbindung verlore\
-n, schaltet das \
-Programm auf off\
-line und beh\xc3\xa4lt\
- alle Werte.</p>\
-\x0a<p>Online ge\xc3\xa4n\
-derte Werte sind\
- im Ventil aktiv\
-, aber noch nich\
-t gespeichert: b\
-eim Wechsel\x0aauf \
-offline bietet d\
-as Programm an, \
-sie zu speichern\
-, und Ventil \xe2\x86\x92\
- <b>Im Ventil sp\
-eichern</b>\x0aspei\
-chert sie sofort\
- (womit das Vent\
-il arbeitet, dam\
-it startet es au\
-ch; im Verlauf\x0af\
-estgehalten). <b\
->In das Ventil h\
-ochladen</b>\x0asch\
-reibt alle Werte\
-, liest sie zur\xc3\
-\xbcck, vergleicht \
-und speichert si\
-e; gespeichert w\
-ird nur,\x0awenn je\
-der Wert best\xc3\xa4t\
-igt wurde. Vor d\
-em ersten Hochla\
-den in ein Venti\
-l sichert das\x0aPr\
-ogramm dessen ei\
-gene Parameter i\
-m Benutzerdateno\
-rdner (<code>bac\
-kups/&lt;Serienn\
-ummer&gt;/</code\
->).</p>\x0a<p><b>Ve\
-ntil neu starten\
-</b> und <b>Werk\
-seinstellungen w\
-iederherstellen<\
-/b> sind nur bei\
-\x0agetrennter Hydr\
-aulik erlaubt; d\
-as Programm l\xc3\xa4s\
-st Sie das best\xc3\
-\xa4tigen.</p>\x0a\x0a<h2\
->Dateien</h2>\x0a<p\
->Parameterdateie\
-n (<code>*.prm</\
-code>) sind Text\
-dateien. \xc3\x96ffnen\
-, Speichern, Spe\
-ichern\x0aunter, di\
-e zuletzt ge\xc3\xb6ff\
-neten Dateien un\
-d Drag &amp; Dro\
-p funktionieren \
-wie gewohnt; vor\
- dem\x0aVerlust ung\
-espeicherter \xc3\x84n\
-derungen fragt d\
-as Programm nach\
-. Jede \xc3\x84nderung\
- l\xc3\xa4sst sich\x0ar\xc3\xbc\
-ckg\xc3\xa4ngig machen\
- (Strg+Z) und wi\
-ederherstellen (\
-Strg+Y). Datei \xe2\
-\x86\x92 Drucken und D\
-atei \xe2\x86\x92 PDF\x0aexp\
-ortieren erzeuge\
-n ein Parameterp\
-rotokoll mit Typ\
-schl\xc3\xbcssel, Seri\
-ennummer, Firmwa\
-re, Datei,\x0aDatum\
-, Berechtigungss\
-tufe, dem Ablauf\
-diagramm und all\
-en Parametern mi\
-t Einheit. Seit \
-dem\x0aSpeichern ge\
-\xc3\xa4nderte Werte s\
-ind mit <b>*</b>\
- markiert, und d\
-ie Zeile \xe2\x80\x9eDate\
-i\xe2\x80\x9c sagt es; je\
-de Seite\x0anennt T\
-ypschl\xc3\xbcssel und\
- Seriennummer un\
-d tr\xc3\xa4gt ihre Se\
-itenzahl; die le\
-tzte Seite hat e\
-ine Zeile\x0af\xc3\xbcr D\
-atum, Name und U\
-nterschrift.</p>\
-\x0a<p><b>Ein Venti\
-l sichern</b>: o\
-nline gehen, Ven\
-til \xe2\x86\x92 Aus dem \
-Ventil herunterl\
-aden, dann\x0aDatei\
- \xe2\x86\x92 <b>Sicherun\
-gskopie speicher\
-n\xe2\x80\xa6</b> (vorges\
-chlagener Name: \
-Typschl\xc3\xbcssel, S\
-eriennummer,\x0aDat\
-um und Uhrzeit).\
- Die Kopie wird \
-geschrieben, das\
- ge\xc3\xb6ffnete Doku\
-ment bleibt, was\
- es war:\x0asp\xc3\xa4ter\
-e \xc3\x84nderungen we\
-rden in seine ei\
-gene Datei gespe\
-ichert, nie in d\
-ie Sicherung. Sp\
-eichern\x0aunter da\
-gegen macht die \
-neue Datei zum g\
-e\xc3\xb6ffneten Dokum\
-ent.</p>\x0a\x0a<h2>Ta\
-statur</h2>\x0a<tab\
-le>\x0a<tr><td>Strg\
-+O / Strg+S / St\
-rg+Umschalt+S</t\
-d><td>\xc3\x96ffnen / \
-Speichern / Spei\
-chern unter</td>\
-</tr>\x0a<tr><td>St\
-rg+Z / Strg+Y</t\
-d><td>R\xc3\xbcckg\xc3\xa4ng\
-ig / Wiederherst\
-ellen</td></tr>\x0a\
-<tr><td>Strg+P /\
- Strg+E</td><td>\
-Drucken / PDF ex\
-portieren</td></\
-tr>\x0a<tr><td>Strg\
-+1 / Strg+2 / St\
-rg+3 / Strg+4</t\
-d><td>Ablaufdiag\
-ramm / Parameter\
-liste / Oszillos\
-kop / CANopen-Fe\
-nster</td></tr>\x0a\
-<tr><td>F5 / Ums\
-chalt+F5</td><td\
->Online / Offlin\
-e</td></tr>\x0a<tr>\
-<td>Strg+U / Str\
-g+D</td><td>In d\
+ent.</p>\x0a<p><b>W\
+enn das Ventil w\
+egf\xc3\xa4llt</b> (US\
+B-Kabel gezogen,\
+ Spannung aus un\
+d ein, CAN-Bus-o\
+ff, ein\x0aNeustart\
+, nach dem es ni\
+cht zur\xc3\xbcckkommt\
+), geht das Prog\
+ramm offline, be\
+h\xc3\xa4lt alle Werte\
+ und\x0asucht das V\
+entil von selbst\
+: die Statusleis\
+te zeigt <i>Modu\
+s: NEU VERBINDEN\
+\xe2\x80\xa6 3 s</i>. Es \
+sucht\x0aauf dersel\
+ben Verbindung \xe2\
+\x80\x94 \xc3\xbcber CAN auc\
+h unter einer an\
+deren Knotennumm\
+er, wenn die\x0aSer\
+iennummer (0x101\
+8/4) sagt, dass \
+es dasselbe Vent\
+il ist. Ist das \
+Ventil zur\xc3\xbcck, \
+liest das\x0aProgra\
+mm es und vergle\
+icht es wie beim\
+ Online-Gehen mi\
+t dem Dokument (\
+<i>Wieder online\
+</i>,\x0awenn sie \xc3\
+\xbcbereinstimmen);\
+ ohne Sie wird n\
+ichts ins Ventil\
+ geschrieben: on\
+line ge\xc3\xa4nderte \
+Werte,\x0adie das V\
+entil beim Aus- \
+und Einschalten \
+verloren hat, we\
+rden im Untersch\
+iede-Dialog\x0aange\
+boten, nicht ges\
+endet. Das Oszil\
+loskop zeichnet \
+weiter auf; der \
+Sollwertgenerato\
+r und ein\x0aTuning\
+-Test bleiben an\
+gehalten, bis Si\
+e sie starten. E\
+in abgebrochenes\
+ Hochladen melde\
+t, was\x0ageschah u\
+nd was das Venti\
+l enth\xc3\xa4lt; es w\
+ird nicht fortge\
+setzt. Ein ander\
+es Ventil (ander\
+e\x0aSeriennummer) \
+an der Stelle de\
+s verlorenen ist\
+ ein neues Venti\
+l: das Programm \
+sagt es und\x0averb\
+indet sich nicht\
+ von selbst. Sel\
+bst online oder \
+offline gehen be\
+endet die Suche.\
+ Mit\x0aeinem emuli\
+erten Ventil zei\
+gen es Ventil \xe2\x86\
+\x92 Emuliertes Ven\
+til \xe2\x86\x92 <b>USB-K\
+abel ziehen</b> \
+und\x0a<b>USB-Kabel\
+ wieder einsteck\
+en</b>.</p>\x0a<p>O\
+nline ge\xc3\xa4nderte\
+ Werte sind im V\
+entil aktiv, abe\
+r noch nicht ges\
+peichert: beim W\
+echsel\x0aauf offli\
+ne bietet das Pr\
+ogramm an, sie z\
+u speichern, und\
+ Ventil \xe2\x86\x92 <b>I\
+m Ventil speiche\
+rn</b>\x0aspeichert\
+ sie sofort (wom\
+it das Ventil ar\
+beitet, damit st\
+artet es auch; i\
+m Verlauf\x0afestge\
+halten). <b>In d\
 as Ventil hochla\
-den / Aus dem Ve\
-ntil herunterlad\
-en</td></tr>\x0a<tr\
-><td>Strg+T / St\
-rg+I / Strg+H</t\
-d><td>Ventilausw\
-ahl / Ventilstat\
-us / HID-Konfigu\
-ration</td></tr>\
-\x0a</table>\x0a<p><b>\
-Skripte und Pr\xc3\xbc\
-fst\xc3\xa4nde</b>: da\
-s Ventil aus Pyt\
-hon und Shell-Sk\
-ripten, <a href=\
-\x22scripting_en.ht\
-ml\x22>auf dieser S\
-eite</a> (auf En\
-glisch).</p>\x0a</b\
-ody>\x0a</html>\x0a\
+den</b>\x0aschreibt\
+ alle Werte, lie\
+st sie zur\xc3\xbcck, \
+vergleicht und s\
+peichert sie; ge\
+speichert wird n\
+ur,\x0awenn jeder W\
+ert best\xc3\xa4tigt w\
+urde. Vor dem er\
+sten Hochladen i\
+n ein Ventil sic\
+hert das\x0aProgram\
+m dessen eigene \
+Parameter im Ben\
+utzerdatenordner\
+ (<code>backups/\
+&lt;Seriennummer\
+&gt;/</code>).</\
+p>\x0a<p><b>Ventil \
+neu starten</b> \
+und <b>Werkseins\
+tellungen wieder\
+herstellen</b> s\
+ind nur bei\x0agetr\
+ennter Hydraulik\
+ erlaubt; das Pr\
+ogramm l\xc3\xa4sst Si\
+e das best\xc3\xa4tige\
+n.</p>\x0a\x0a<h2>Date\
+ien</h2>\x0a<p>Para\
+meterdateien (<c\
+ode>*.prm</code>\
+) sind Textdatei\
+en. \xc3\x96ffnen, Spe\
+ichern, Speicher\
+n\x0aunter, die zul\
+etzt ge\xc3\xb6ffneten\
+ Dateien und Dra\
+g &amp; Drop fun\
+ktionieren wie g\
+ewohnt; vor dem\x0a\
+Verlust ungespei\
+cherter \xc3\x84nderun\
+gen fragt das Pr\
+ogramm nach. Jed\
+e \xc3\x84nderung l\xc3\xa4s\
+st sich\x0ar\xc3\xbcckg\xc3\xa4\
+ngig machen (Str\
+g+Z) und wiederh\
+erstellen (Strg+\
+Y). Datei \xe2\x86\x92 Dr\
+ucken und Datei \
+\xe2\x86\x92 PDF\x0aexportie\
+ren erzeugen ein\
+ Parameterprotok\
+oll mit Typschl\xc3\
+\xbcssel, Seriennum\
+mer, Firmware, D\
+atei,\x0aDatum, Ber\
+echtigungsstufe,\
+ dem Ablaufdiagr\
+amm und allen Pa\
+rametern mit Ein\
+heit. Seit dem\x0aS\
+peichern ge\xc3\xa4nde\
+rte Werte sind m\
+it <b>*</b> mark\
+iert, und die Ze\
+ile \xe2\x80\x9eDatei\xe2\x80\x9c \
+sagt es; jede Se\
+ite\x0anennt Typsch\
+l\xc3\xbcssel und Seri\
+ennummer und tr\xc3\
+\xa4gt ihre Seitenz\
+ahl; die letzte \
+Seite hat eine Z\
+eile\x0af\xc3\xbcr Datum,\
+ Name und Unters\
+chrift.</p>\x0a<p><\
+b>Ein Ventil sic\
+hern</b>: online\
+ gehen, Ventil \xe2\
+\x86\x92 Aus dem Venti\
+l herunterladen,\
+ dann\x0aDatei \xe2\x86\x92 \
+<b>Sicherungskop\
+ie speichern\xe2\x80\xa6<\
+/b> (vorgeschlag\
+ener Name: Typsc\
+hl\xc3\xbcssel, Serien\
+nummer,\x0aDatum un\
+d Uhrzeit). Die \
+Kopie wird gesch\
+rieben, das ge\xc3\xb6\
+ffnete Dokument \
+bleibt, was es w\
+ar:\x0asp\xc3\xa4tere \xc3\x84n\
+derungen werden \
+in seine eigene \
+Datei gespeicher\
+t, nie in die Si\
+cherung. Speiche\
+rn\x0aunter dagegen\
+ macht die neue \
+Datei zum ge\xc3\xb6ff\
+neten Dokument.<\
+/p>\x0a\x0a<h2>Tastatu\
+r</h2>\x0a<table>\x0a<\
+tr><td>Strg+O / \
+Strg+S / Strg+Um\
+schalt+S</td><td\
+>\xc3\x96ffnen / Speic\
+hern / Speichern\
+ unter</td></tr>\
+\x0a<tr><td>Strg+Z \
+/ Strg+Y</td><td\
+>R\xc3\xbcckg\xc3\xa4ngig / \
+Wiederherstellen\
+</td></tr>\x0a<tr><\
+td>Strg+P / Strg\
++E</td><td>Druck\
+en / PDF exporti\
+eren</td></tr>\x0a<\
+tr><td>Strg+1 / \
+Strg+2 / Strg+3 \
+/ Strg+4</td><td\
+>Ablaufdiagramm \
+/ Parameterliste\
+ / Oszilloskop /\
+ CANopen-Fenster\
+</td></tr>\x0a<tr><\
+td>F5 / Umschalt\
++F5</td><td>Onli\
+ne / Offline</td\
+></tr>\x0a<tr><td>S\
+trg+U / Strg+D</\
+td><td>In das Ve\
+ntil hochladen /\
+ Aus dem Ventil \
+herunterladen</t\
+d></tr>\x0a<tr><td>\
+Strg+T / Strg+I \
+/ Strg+H</td><td\
+>Ventilauswahl /\
+ Ventilstatus / \
+HID-Konfiguratio\
+n</td></tr>\x0a</ta\
+ble>\x0a<p><b>Skrip\
+te und Pr\xc3\xbcfst\xc3\xa4\
+nde</b>: das Ven\
+til aus Python u\
+nd Shell-Skripte\
+n, <a href=\x22scri\
+pting_en.html\x22>a\
+uf dieser Seite<\
+/a> (auf Englisc\
+h).</p>\x0a</body>\x0a\
+</html>\x0a\
 \x00\x00\x05\xaf\
 <\
 !DOCTYPE html>\x0a<\
@@ -2085,7 +2237,7 @@ ls \xe2\x80\x9e\xe2\x80\x94\xe2\x80\x9c und\
 ht\x0aw\xc3\xa4hlen.</p>\x0a\
 </body>\x0a</html>\x0a\
 \
-\x00\x00\x16x\
+\x00\x00\x1a\xc7\
 <\
 !DOCTYPE html>\x0a<\
 html lang=\x22en\x22>\x0a\
@@ -2287,166 +2439,235 @@ very change goes\
  once and into t\
 he document;\x0aoff\
 line, into the d\
-ocument only. If\
- the valve is lo\
-st, the program \
-goes offline and\
- keeps\x0aevery val\
-ue.</p>\x0a<p>Value\
-s changed online\
- are active in t\
-he valve but not\
- yet stored: goi\
-ng offline offer\
-s to\x0astore them,\
- and Valve \xe2\x86\x92 <\
-b>Store in valve\
-</b> stores them\
- at once (what t\
-he valve works w\
-ith\x0abecomes what\
- it starts with;\
- recorded in the\
- history). <b>Up\
-load to valve</b\
-> writes all val\
-ues, reads them \
-back, compares a\
-nd stores\x0athem; \
-nothing is store\
-d unless every v\
-alue was verifie\
-d. Before the fi\
-rst upload to a \
-valve\x0athe progra\
-m saves a backup\
- of the valve's \
-own parameters i\
-n the user data \
-folder\x0a(<code>ba\
-ckups/&lt;serial\
-&gt;/</code>).</\
-p>\x0a<p><b>Restart\
- valve</b> and <\
-b>Restore factor\
-y values</b> are\
- allowed only wi\
-th the\x0ahydraulic\
-s disconnected; \
-the program asks\
- you to confirm \
-this.</p>\x0a\x0a<h2>F\
-iles</h2>\x0a<p>Par\
-ameter files (<c\
-ode>*.prm</code>\
-) are text files\
-. Open, Save, Sa\
-ve As, the recen\
-t\x0afiles and drag\
- and drop work a\
-s usual; the pro\
-gram asks before\
- unsaved changes\
- are lost.\x0aEvery\
- change can be u\
-ndone (Ctrl+Z) a\
-nd redone (Ctrl+\
-Y). File \xe2\x86\x92 Pri\
-nt and File \xe2\x86\x92 \
-Export PDF\x0aprodu\
-ce a parameter r\
-ecord with type \
-key, serial numb\
-er, firmware, fi\
-le, date, access\
- level,\x0athe flow\
- diagram and eve\
-ry parameter wit\
-h its unit. Valu\
-es changed since\
- the file was sa\
-ved\x0aare marked <\
-b>*</b> and the \
-file line says s\
-o; every page na\
-mes the type key\
- and serial\x0anumb\
-er and carries i\
-ts page number; \
-the last page ha\
-s a line for dat\
-e, name and\x0asign\
-ature.</p>\x0a<p><b\
->Back up a valve\
-</b>: go online,\
- Valve \xe2\x86\x92 Downl\
-oad from valve, \
-then File \xe2\x86\x92 <b\
->Save backup\x0acop\
-y\xe2\x80\xa6</b> (propos\
-ed name: type ke\
-y, serial number\
-, date and time)\
-. The copy is wr\
-itten and\x0athe op\
-en document stay\
-s what it was: l\
-ater changes are\
- saved into the \
-document's own f\
-ile,\x0anever into \
-the backup. Save\
- As, by contrast\
-, makes the new \
-file the open do\
-cument.</p>\x0a\x0a<h2\
->Keyboard</h2>\x0a<\
-table>\x0a<tr><td>C\
-trl+O / Ctrl+S /\
- Ctrl+Shift+S</t\
-d><td>Open / Sav\
-e / Save As</td>\
-</tr>\x0a<tr><td>Ct\
-rl+Z / Ctrl+Y</t\
-d><td>Undo / Red\
-o</td></tr>\x0a<tr>\
-<td>Ctrl+P / Ctr\
-l+E</td><td>Prin\
-t / Export PDF</\
-td></tr>\x0a<tr><td\
->Ctrl+1 / Ctrl+2\
- / Ctrl+3 / Ctrl\
-+4</td><td>Flow \
-diagram / Parame\
-ter list / Oscil\
-loscope / CANope\
-n window</td></t\
-r>\x0a<tr><td>F5 / \
-Shift+F5</td><td\
->Online / Offlin\
-e</td></tr>\x0a<tr>\
-<td>Ctrl+U / Ctr\
-l+D</td><td>Uplo\
-ad to valve / Do\
-wnload from valv\
-e</td></tr>\x0a<tr>\
-<td>Ctrl+T / Ctr\
-l+I / Ctrl+H</td\
-><td>Valve selec\
-tion / Valve sta\
-tus / HID config\
-uration</td></tr\
->\x0a</table>\x0a<p><b\
->Scripts and tes\
-t benches</b>: t\
-he valve from Py\
-thon and shell s\
-cripts, <a href=\
-\x22scripting_en.ht\
-ml\x22>on this page\
-</a> (in English\
-).</p>\x0a</body>\x0a<\
-/html>\x0a\
+ocument only.</p\
+>\x0a<p><b>When the\
+ valve drops off\
+</b> (a pulled U\
+SB cable, a powe\
+r cycle, a CAN b\
+us-off, a restar\
+t\x0athat does not \
+come back), the \
+program goes off\
+line, keeps ever\
+y value and look\
+s for the valve\x0a\
+by itself: the s\
+tatus bar reads \
+<i>Mode: RECONNE\
+CTING\xe2\x80\xa6 3 s</i>\
+. It looks on th\
+e same link \xe2\x80\x94 \
+over\x0aCAN also at\
+ another node ID\
+, if the serial \
+number (0x1018/4\
+) says it is the\
+ same valve. Whe\
+n\x0athe valve is b\
+ack it reads it \
+and compares it \
+with the documen\
+t as on going on\
+line\x0a(<i>Back on\
+line</i> when th\
+ey agree); nothi\
+ng is written to\
+ the valve witho\
+ut you: values\x0ac\
+hanged online th\
+at the valve los\
+t in a power cyc\
+le are offered i\
+n the difference\
+s dialog, not\x0ase\
+nt. The oscillos\
+cope records on;\
+ the setpoint ge\
+nerator and a tu\
+ning test stay s\
+topped until\x0ayou\
+ start them. An \
+upload that was \
+cut off reports \
+what happened an\
+d what the valve\
+ holds; it\x0ais no\
+t resumed. Anoth\
+er valve (anothe\
+r serial number)\
+ where the lost \
+one was is a new\
+ valve:\x0athe prog\
+ram says so and \
+does not connect\
+ to it by itself\
+. Going online o\
+r offline yourse\
+lf\x0astops the sea\
+rch. With an emu\
+lated valve, Val\
+ve \xe2\x86\x92 Emulated \
+valve \xe2\x86\x92 <b>Pul\
+l the USB cable<\
+/b>\x0aand <b>Plug \
+the USB cable ba\
+ck in</b> show i\
+t.</p>\x0a<p>Values\
+ changed online \
+are active in th\
+e valve but not \
+yet stored: goin\
+g offline offers\
+ to\x0astore them, \
+and Valve \xe2\x86\x92 <b\
+>Store in valve<\
+/b> stores them \
+at once (what th\
+e valve works wi\
+th\x0abecomes what \
+it starts with; \
+recorded in the \
+history). <b>Upl\
+oad to valve</b>\
+ writes all valu\
+es, reads them b\
+ack, compares an\
+d stores\x0athem; n\
+othing is stored\
+ unless every va\
+lue was verified\
+. Before the fir\
+st upload to a v\
+alve\x0athe program\
+ saves a backup \
+of the valve's o\
+wn parameters in\
+ the user data f\
+older\x0a(<code>bac\
+kups/&lt;serial&\
+gt;/</code>).</p\
+>\x0a<p><b>Restart \
+valve</b> and <b\
+>Restore factory\
+ values</b> are \
+allowed only wit\
+h the\x0ahydraulics\
+ disconnected; t\
+he program asks \
+you to confirm t\
+his.</p>\x0a\x0a<h2>Fi\
+les</h2>\x0a<p>Para\
+meter files (<co\
+de>*.prm</code>)\
+ are text files.\
+ Open, Save, Sav\
+e As, the recent\
+\x0afiles and drag \
+and drop work as\
+ usual; the prog\
+ram asks before \
+unsaved changes \
+are lost.\x0aEvery \
+change can be un\
+done (Ctrl+Z) an\
+d redone (Ctrl+Y\
+). File \xe2\x86\x92 Prin\
+t and File \xe2\x86\x92 E\
+xport PDF\x0aproduc\
+e a parameter re\
+cord with type k\
+ey, serial numbe\
+r, firmware, fil\
+e, date, access \
+level,\x0athe flow \
+diagram and ever\
+y parameter with\
+ its unit. Value\
+s changed since \
+the file was sav\
+ed\x0aare marked <b\
+>*</b> and the f\
+ile line says so\
+; every page nam\
+es the type key \
+and serial\x0anumbe\
+r and carries it\
+s page number; t\
+he last page has\
+ a line for date\
+, name and\x0asigna\
+ture.</p>\x0a<p><b>\
+Back up a valve<\
+/b>: go online, \
+Valve \xe2\x86\x92 Downlo\
+ad from valve, t\
+hen File \xe2\x86\x92 <b>\
+Save backup\x0acopy\
+\xe2\x80\xa6</b> (propose\
+d name: type key\
+, serial number,\
+ date and time).\
+ The copy is wri\
+tten and\x0athe ope\
+n document stays\
+ what it was: la\
+ter changes are \
+saved into the d\
+ocument's own fi\
+le,\x0anever into t\
+he backup. Save \
+As, by contrast,\
+ makes the new f\
+ile the open doc\
+ument.</p>\x0a\x0a<h2>\
+Keyboard</h2>\x0a<t\
+able>\x0a<tr><td>Ct\
+rl+O / Ctrl+S / \
+Ctrl+Shift+S</td\
+><td>Open / Save\
+ / Save As</td><\
+/tr>\x0a<tr><td>Ctr\
+l+Z / Ctrl+Y</td\
+><td>Undo / Redo\
+</td></tr>\x0a<tr><\
+td>Ctrl+P / Ctrl\
++E</td><td>Print\
+ / Export PDF</t\
+d></tr>\x0a<tr><td>\
+Ctrl+1 / Ctrl+2 \
+/ Ctrl+3 / Ctrl+\
+4</td><td>Flow d\
+iagram / Paramet\
+er list / Oscill\
+oscope / CANopen\
+ window</td></tr\
+>\x0a<tr><td>F5 / S\
+hift+F5</td><td>\
+Online / Offline\
+</td></tr>\x0a<tr><\
+td>Ctrl+U / Ctrl\
++D</td><td>Uploa\
+d to valve / Dow\
+nload from valve\
+</td></tr>\x0a<tr><\
+td>Ctrl+T / Ctrl\
++I / Ctrl+H</td>\
+<td>Valve select\
+ion / Valve stat\
+us / HID configu\
+ration</td></tr>\
+\x0a</table>\x0a<p><b>\
+Scripts and test\
+ benches</b>: th\
+e valve from Pyt\
+hon and shell sc\
+ripts, <a href=\x22\
+scripting_en.htm\
+l\x22>on this page<\
+/a> (in English)\
+.</p>\x0a</body>\x0a</\
+html>\x0a\
 \x00\x00\x08u\
 <\
 !DOCTYPE html>\x0a<\
@@ -3202,35 +3423,35 @@ qt_resource_struct = b"\
 \x00\x00\x00\x00\x00\x02\x00\x00\x00\x02\x00\x00\x00\x01\
 \x00\x00\x00\x10\x00\x02\x00\x00\x00\x10\x00\x00\x00\x10\
 \x00\x00\x00\x00\x00\x02\x00\x00\x00\x0d\x00\x00\x00\x03\
-\x00\x00\x02\xb6\x00\x00\x00\x00\x00\x01\x00\x00\xae0\
-\x00\x00\x02L\x00\x00\x00\x00\x00\x01\x00\x00\xa8\x92\
-\x00\x00\x03X\x00\x00\x00\x00\x00\x01\x00\x00\xb8f\
-\x00\x00\x02\xd0\x00\x00\x00\x00\x00\x01\x00\x00\xaf]\
-\x00\x00\x022\x00\x00\x00\x00\x00\x01\x00\x00\xa6\xcc\
-\x00\x00\x03t\x00\x00\x00\x00\x00\x01\x00\x00\xb9\xfe\
-\x00\x00\x02\xe8\x00\x00\x00\x00\x00\x01\x00\x00\xb1,\
-\x00\x00\x03:\x00\x00\x00\x00\x00\x01\x00\x00\xb6\xba\
-\x00\x00\x02d\x00\x00\x00\x00\x00\x01\x00\x00\xaa8\
-\x00\x00\x03\x04\x00\x00\x00\x00\x00\x01\x00\x00\xb2\xf5\
-\x00\x00\x02\x80\x00\x00\x00\x00\x00\x01\x00\x00\xab5\
-\x00\x00\x02\x9c\x00\x00\x00\x00\x00\x01\x00\x00\xac\xee\
-\x00\x00\x03\x18\x00\x00\x00\x00\x00\x01\x00\x00\xb5y\
-\x00\x00\x01J\x00\x00\x00\x00\x00\x01\x00\x00d\x02\
-\x00\x00\x00\xe6\x00\x00\x00\x00\x00\x01\x00\x00<\x95\
-\x00\x00\x01\xac\x00\x00\x00\x00\x00\x01\x00\x00y3\
-\x00\x00\x00\xc4\x00\x00\x00\x00\x00\x01\x00\x005L\
-\x00\x00\x01\x0a\x00\x00\x00\x00\x00\x01\x00\x00C \
-\x00\x00\x01\x8a\x00\x00\x00\x00\x00\x01\x00\x00r\xd9\
+\x00\x00\x02\xb6\x00\x00\x00\x00\x00\x01\x00\x00\xbb\xf5\
+\x00\x00\x02L\x00\x00\x00\x00\x00\x01\x00\x00\xb6W\
+\x00\x00\x03X\x00\x00\x00\x00\x00\x01\x00\x00\xc6+\
+\x00\x00\x02\xd0\x00\x00\x00\x00\x00\x01\x00\x00\xbd\x22\
+\x00\x00\x022\x00\x00\x00\x00\x00\x01\x00\x00\xb4\x91\
+\x00\x00\x03t\x00\x00\x00\x00\x00\x01\x00\x00\xc7\xc3\
+\x00\x00\x02\xe8\x00\x00\x00\x00\x00\x01\x00\x00\xbe\xf1\
+\x00\x00\x03:\x00\x00\x00\x00\x00\x01\x00\x00\xc4\x7f\
+\x00\x00\x02d\x00\x00\x00\x00\x00\x01\x00\x00\xb7\xfd\
+\x00\x00\x03\x04\x00\x00\x00\x00\x00\x01\x00\x00\xc0\xba\
+\x00\x00\x02\x80\x00\x00\x00\x00\x00\x01\x00\x00\xb8\xfa\
+\x00\x00\x02\x9c\x00\x00\x00\x00\x00\x01\x00\x00\xba\xb3\
+\x00\x00\x03\x18\x00\x00\x00\x00\x00\x01\x00\x00\xc3>\
+\x00\x00\x01J\x00\x00\x00\x00\x00\x01\x00\x00mx\
+\x00\x00\x00\xe6\x00\x00\x00\x00\x00\x01\x00\x00A0\
+\x00\x00\x01\xac\x00\x00\x00\x00\x00\x01\x00\x00\x82\xa9\
+\x00\x00\x00\xc4\x00\x00\x00\x00\x00\x01\x00\x009\xe7\
+\x00\x00\x01\x0a\x00\x00\x00\x00\x00\x01\x00\x00G\xbb\
+\x00\x00\x01\x8a\x00\x00\x00\x00\x00\x01\x00\x00|O\
 \x00\x00\x00:\x00\x00\x00\x00\x00\x01\x00\x00\x09V\
-\x00\x00\x02\x0a\x00\x00\x00\x00\x00\x01\x00\x00\x9f\x0d\
+\x00\x00\x02\x0a\x00\x00\x00\x00\x00\x01\x00\x00\xac\xd2\
 \x00\x00\x00\x82\x00\x00\x00\x00\x00\x01\x00\x00\x15\xcb\
-\x00\x00\x01,\x00\x00\x00\x00\x00\x01\x00\x00J \
-\x00\x00\x01\xd0\x00\x00\x00\x00\x00\x01\x00\x00\x80\x18\
-\x00\x00\x01n\x00\x00\x00\x00\x00\x01\x00\x00i\xb5\
+\x00\x00\x01,\x00\x00\x00\x00\x00\x01\x00\x00N\xbb\
+\x00\x00\x01\xd0\x00\x00\x00\x00\x00\x01\x00\x00\x89\x8e\
+\x00\x00\x01n\x00\x00\x00\x00\x00\x01\x00\x00s+\
 \x00\x00\x00\x1e\x00\x00\x00\x00\x00\x01\x00\x00\x00\x00\
-\x00\x00\x01\xee\x00\x00\x00\x00\x00\x01\x00\x00\x96\x94\
+\x00\x00\x01\xee\x00\x00\x00\x00\x00\x01\x00\x00\xa4Y\
 \x00\x00\x00^\x00\x00\x00\x00\x00\x01\x00\x00\x0fD\
-\x00\x00\x00\xa0\x00\x00\x00\x00\x00\x01\x00\x00/\x16\
+\x00\x00\x00\xa0\x00\x00\x00\x00\x00\x01\x00\x003\xb1\
 "
 
 def qInitResources():
