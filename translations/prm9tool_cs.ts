@@ -4109,6 +4109,13 @@ Ano načte a záznam zařadí do fronty; Ne nenačte nic.</translation>
         </message>
     </context>
     <context>
+        <name>TuningRunner</name>
+        <message>
+            <source>The valve is back: what the broken test had changed is restored ({0}) and the setpoint is the valve's own again.</source>
+            <translation>Ventil je zpět: co přerušený test změnil, je obnoveno ({0}) a žádaná hodnota je opět vlastní hodnotou ventilu.</translation>
+        </message>
+    </context>
+    <context>
         <name>TuningWindow</name>
         <message>
             <source>Running: %1</source>

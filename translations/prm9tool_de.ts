@@ -4090,6 +4090,13 @@ Ja lädt hoch und stellt den Eintrag in die Warteschlange; Nein lädt nichts hoc
         </message>
     </context>
     <context>
+        <name>TuningRunner</name>
+        <message>
+            <source>The valve is back: what the broken test had changed is restored ({0}) and the setpoint is the valve's own again.</source>
+            <translation>Das Ventil ist zurück: was der abgebrochene Test geändert hatte, ist wiederhergestellt ({0}), und der Sollwert ist wieder der des Ventils.</translation>
+        </message>
+    </context>
+    <context>
         <name>TuningWindow</name>
         <message>
             <source>Running: %1</source>

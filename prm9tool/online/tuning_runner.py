@@ -15,6 +15,7 @@ from collections.abc import Callable, Mapping
 from typing import TYPE_CHECKING, Any
 
 from PySide6.QtCore import QObject, Signal
+from shiboken6 import Shiboken
 
 from prm9tool.characterize.canrig import LinkTooSlowError, rig_for_session
 from prm9tool.characterize.rig import Rig
@@ -111,23 +112,61 @@ class TuningRunner(QObject):
 
 
 class ValveRunner(TuningRunner):
-    """Procedures on the connected valve (a long job of :class:`ValveConnection`)."""
+    """Procedures on the connected valve (a long job of :class:`ValveConnection`).
+
+    The values a procedure writes are read first and kept: a procedure puts them back itself,
+    but when the link breaks in the middle it cannot. Then, once the same valve is back
+    (the connection's ``reconnected``, before its comparison), the runner writes those values
+    back and gives the setpoint back; ``restored(message)`` says so."""
+
+    restored = Signal(str)
 
     def __init__(self, connection: Any, parent: QObject | None = None) -> None:
         super().__init__(parent)
         self.connection = connection
+        self.to_restore: dict[str, int] | None = None  # a broken test's changes (GUI thread)
+        self._originals: dict[str, int] = {}  # worker thread, while a procedure runs
         connection.operation_finished.connect(self._on_operation_finished)
         connection.failed.connect(self._on_connection_failed)
-        connection.lost.connect(self._on_connection_failed)
+        connection.lost.connect(self._on_connection_lost)
+        reconnected = getattr(connection, "reconnected", None)
+        if reconnected is not None:
+            reconnected.connect(self._on_connection_reconnected)
 
     def _start(self, kind: str, procedure: Procedure) -> None:
         if self.connection.streaming_keys:
             self.connection.stop_stream()
         link = _link_name(self.connection.device)
+        self._originals = {}
         self.connection.run_job(
             f"tuning:{kind}",
-            lambda session: self._execute(rig_for_session(session, link), procedure),
+            lambda session: self._execute(
+                _recording(rig_for_session(session, link), self._originals), procedure
+            ),
         )
+
+    def _on_connection_lost(self, message: str) -> None:
+        if self._kind:  # cut off: what it changed goes back when the valve is back
+            self.to_restore = dict(self._originals)
+        self._on_connection_failed(message)
+
+    def _on_connection_reconnected(self, _info: object) -> None:
+        values, self.to_restore = self.to_restore, None
+        if values is None:
+            return
+
+        def restore(session: Any) -> None:
+            if values:
+                session.write_many(values)
+            session.setpoint_link().end()  # the override off, as the test's own end does
+
+        names = ", ".join(values)
+
+        def done(_result: object) -> None:
+            if Shiboken.isValid(self):  # the window may have been closed meanwhile
+                self.restored.emit(_restored_text(names))
+
+        self.connection.run("tuning-restore", restore, done)
 
     def _on_operation_finished(self, name: str, result: object) -> None:
         if self._kind and name == f"tuning:{self._kind}":
@@ -136,6 +175,30 @@ class ValveRunner(TuningRunner):
     def _on_connection_failed(self, message: str) -> None:
         if self._kind:
             self._deliver(_Failure(message))
+
+
+def _recording(rig: Rig, originals: dict[str, int]) -> Rig:
+    """``rig`` whose writes first read and keep (in ``originals``) the values they replace."""
+    write = rig.write
+
+    def recording_write(values: Mapping[str, int]) -> None:
+        new = [m for m in values if m not in originals]
+        if new:
+            originals.update(rig.read(new))
+        write(values)
+
+    setattr(rig, "write", recording_write)  # noqa: B010 (this instance only)
+    return rig
+
+
+def _restored_text(names: str) -> str:
+    from PySide6.QtCore import QCoreApplication
+
+    return QCoreApplication.translate(
+        "TuningRunner",
+        "The valve is back: what the broken test had changed is restored ({0}) and the "
+        "setpoint is the valve's own again.",
+    ).format(names or "—")
 
 
 def _link_name(device: ValveIdentity | None) -> str:

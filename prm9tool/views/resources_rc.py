@@ -362,7 +362,7 @@ un ist, wenn sie\
 r ist.</li>\x0a</ul\
 >\x0a</body>\x0a</html\
 >\x0a\
-\x00\x00\x1d\xe2\
+\x00\x00\x1eT\
 <\
 !DOCTYPE html>\x0a<\
 html lang=\x22cs\x22>\x0a\
@@ -634,215 +634,222 @@ ap\xc3\xa1jen\xc3\xad ztrati\
 l, jsou nab\xc3\xaddnu\
 ty\x0av dialogu roz\
 d\xc3\xadl\xc5\xaf, ne odesl\
-\xc3\xa1ny. Osciloskop\
- zaznamen\xc3\xa1v\xc3\xa1 d\
-\xc3\xa1l; gener\xc3\xa1tor \
-\xc5\xbe\xc3\xa1dan\xc3\xa9 hodnot\
-y a test\x0alad\xc4\x9bn\xc3\
-\xad z\xc5\xafstanou zast\
-aveny, dokud je \
-nespust\xc3\xadte. P\xc5\x99\
-eru\xc5\xa1en\xc3\xa9 na\xc4\x8dte\
-n\xc3\xad do ventilu o\
-hl\xc3\xa1s\xc3\xad, co se\x0as\
-talo a co ventil\
- obsahuje; nepok\
-ra\xc4\x8duje samo. Ji\
-n\xc3\xbd ventil (jin\xc3\
-\xa9 v\xc3\xbdrobn\xc3\xad \xc4\x8d\xc3\xad\
-slo) na m\xc3\xadst\xc4\x9b\x0a\
-ztracen\xc3\xa9ho je n\
-ov\xc3\xbd ventil: pro\
-gram to ohl\xc3\xa1s\xc3\xad\
- a s\xc3\xa1m se k n\xc4\x9b\
-mu nep\xc5\x99ipoj\xc3\xad. \
-P\xc5\x99echod do re\xc5\xbe\
-imu\x0aonline nebo \
-offline hled\xc3\xa1n\xc3\
-\xad ukon\xc4\x8d\xc3\xad. U em\
-ulovan\xc3\xa9ho venti\
-lu to ukazuj\xc3\xad V\
-entil \xe2\x86\x92 Emulov\
-an\xc3\xbd ventil\x0a\xe2\x86\x92 \
-<b>Vyt\xc3\xa1hnout ka\
-bel USB</b> a <b\
->Znovu zapojit k\
-abel USB</b>.</p\
->\x0a<p>Hodnoty zm\xc4\
-\x9bn\xc4\x9bn\xc3\xa9 online j\
-sou ve ventilu a\
-ktivn\xc3\xad, ale je\xc5\
-\xa1t\xc4\x9b neulo\xc5\xbeen\xc3\xa9\
-: p\xc5\x99i p\xc5\x99echodu\
- do\x0are\xc5\xbeimu offl\
-ine program nab\xc3\
-\xaddne jejich ulo\xc5\
-\xbeen\xc3\xad a Ventil \xe2\
-\x86\x92 <b>Ulo\xc5\xbeit do\
- pam\xc4\x9bti ventilu\
-</b> je ulo\xc5\xbe\xc3\xad\x0a\
-hned (s \xc4\x8d\xc3\xadm ve\
-ntil pracuje, s \
-t\xc3\xadm i nastartuj\
-e; zaznamen\xc3\xa1 se\
- do historie). <\
-b>Na\xc4\x8dten\xc3\xad do v\
-entilu</b> zap\xc3\xad\
-\xc5\xa1e v\xc5\xa1echny\x0ahod\
-noty, p\xc5\x99e\xc4\x8dte j\
-e zp\xc4\x9bt, porovn\xc3\
-\xa1 a ulo\xc5\xbe\xc3\xad; ulo\
-\xc5\xbe\xc3\xad se jen tehd\
-y, je-li ka\xc5\xbed\xc3\xa1\
- hodnota ov\xc4\x9b\xc5\x99e\
-na.\x0aP\xc5\x99ed prvn\xc3\xad\
-m na\xc4\x8dten\xc3\xadm do \
-ventilu program \
-ulo\xc5\xbe\xc3\xad z\xc3\xa1lohu \
-vlastn\xc3\xadch param\
-etr\xc5\xaf ventilu do\
- slo\xc5\xbeky\x0au\xc5\xbeivat\
-elsk\xc3\xbdch dat (<c\
-ode>backups/&lt;\
-v\xc3\xbdrobn\xc3\xad \xc4\x8d\xc3\xadsl\
-o&gt;/</code>).<\
-/p>\x0a<p><b>Restar\
-t ventilu</b> a \
-<b>Obnoven\xc3\xad tov\
-\xc3\xa1rn\xc3\xadho nastave\
-n\xc3\xad</b> jsou dov\
-oleny pouze p\xc5\x99i\
-\x0aodpojen\xc3\xa9m hydr\
-aulick\xc3\xa9m obvodu\
-; program v\xc3\xa1s p\
-o\xc5\xbe\xc3\xa1d\xc3\xa1 o potvr\
-zen\xc3\xad.</p>\x0a\x0a<h2>\
-Soubory</h2>\x0a<p>\
-Z\xc3\xa1znamy paramet\
-r\xc5\xaf (<code>*.prm\
-</code>) jsou te\
-xtov\xc3\xa9 soubory. \
-Otev\xc5\x99\xc3\xadt, Ulo\xc5\xbe\
-it, Ulo\xc5\xbeit jako\
-,\x0anaposledy otev\
-\xc5\x99en\xc3\xa9 soubory a\
- p\xc5\x99eta\xc5\xbeen\xc3\xad my\
-\xc5\xa1\xc3\xad funguj\xc3\xad ob\
-vykl\xc3\xbdm zp\xc5\xafsobe\
-m; p\xc5\x99ed ztr\xc3\xa1to\
-u\x0aneulo\xc5\xbeen\xc3\xbdch \
-zm\xc4\x9bn se program\
- zept\xc3\xa1. Ka\xc5\xbedou\
- zm\xc4\x9bnu lze vr\xc3\xa1\
-tit (Ctrl+Z) a z\
-novu prov\xc3\xa9st\x0a(C\
-trl+Y). Soubor \xe2\
-\x86\x92 Tisk a Soubor\
- \xe2\x86\x92 Export do P\
-DF vytvo\xc5\x99\xc3\xad pro\
-tokol parametr\xc5\xaf\
- s typov\xc3\xbdm kl\xc3\xad\
-\xc4\x8dem,\x0av\xc3\xbdrobn\xc3\xadm\
- \xc4\x8d\xc3\xadslem, firmw\
-are, souborem, d\
-atem, \xc3\xbarovn\xc3\xad o\
-pr\xc3\xa1vn\xc4\x9bn\xc3\xad, pos\
-tupov\xc3\xbdm diagram\
-em a v\xc5\xa1emi\x0apara\
-metry s jednotka\
-mi. Hodnoty zm\xc4\x9b\
-n\xc4\x9bn\xc3\xa9 od ulo\xc5\xbee\
-n\xc3\xad souboru jsou\
- ozna\xc4\x8deny <b>*<\
-/b> a \xc5\x99\xc3\xa1dek\x0a\xe2\x80\
-\x9eSoubor\xe2\x80\x9c to uv\
-\xc3\xa1d\xc3\xad; ka\xc5\xbed\xc3\xa1 s\
-trana uv\xc3\xa1d\xc3\xad ty\
-pov\xc3\xbd kl\xc3\xad\xc4\x8d a v\
-\xc3\xbdrobn\xc3\xad \xc4\x8d\xc3\xadslo\
- a sv\xc3\xa9 \xc4\x8d\xc3\xadslo \
-strany; na\x0aposle\
-dn\xc3\xad stran\xc4\x9b je \
-\xc5\x99\xc3\xa1dek pro datu\
-m, jm\xc3\xa9no a podp\
-is.</p>\x0a<p><b>Z\xc3\
-\xa1loha ventilu</b\
->: p\xc5\x99ipojte se \
-(re\xc5\xbeim online),\
- Ventil \xe2\x86\x92 Sta\xc5\
-\xbeen\xc3\xad z ventilu,\
- pak\x0aSoubor \xe2\x86\x92 \
-<b>Ulo\xc5\xbeit z\xc3\xa1lo\
-\xc5\xben\xc3\xad kopii\xe2\x80\xa6</\
-b> (navr\xc5\xbeen\xc3\xbd n\
-\xc3\xa1zev: typov\xc3\xbd k\
-l\xc3\xad\xc4\x8d, v\xc3\xbdrobn\xc3\xad\
- \xc4\x8d\xc3\xadslo, datum\x0a\
-a \xc4\x8das). Kopie s\
-e zap\xc3\xad\xc5\xa1e a ote\
-v\xc5\x99en\xc3\xbd dokument\
- z\xc5\xafstane, jak\xc3\xbd\
- byl: pozd\xc4\x9bj\xc5\xa1\xc3\
-\xad zm\xc4\x9bny se ukl\xc3\
-\xa1daj\xc3\xad do\x0ajeho v\
-lastn\xc3\xadho soubor\
-u, nikdy do z\xc3\xa1l\
-ohy. Naproti tom\
-u Ulo\xc5\xbeit jako u\
-d\xc4\x9bl\xc3\xa1 z nov\xc3\xa9ho\
- souboru\x0aotev\xc5\x99e\
-n\xc3\xbd dokument.</p\
->\x0a\x0a<h2>Kl\xc3\xa1vesni\
-ce</h2>\x0a<table>\x0a\
-<tr><td>Ctrl+O /\
- Ctrl+S / Ctrl+S\
-hift+S</td><td>O\
-tev\xc5\x99\xc3\xadt / Ulo\xc5\xbe\
-it / Ulo\xc5\xbeit jak\
-o</td></tr>\x0a<tr>\
-<td>Ctrl+Z / Ctr\
-l+Y</td><td>Zp\xc4\x9b\
-t / Znovu</td></\
-tr>\x0a<tr><td>Ctrl\
-+P / Ctrl+E</td>\
-<td>Tisk / Expor\
-t do PDF</td></t\
-r>\x0a<tr><td>Ctrl+\
-1 / Ctrl+2 / Ctr\
-l+3 / Ctrl+4</td\
-><td>Postupov\xc3\xbd \
-diagram / Seznam\
- parametr\xc5\xaf / Os\
-ciloskop / Okno \
-CANopen</td></tr\
->\x0a<tr><td>F5 / S\
-hift+F5</td><td>\
-Re\xc5\xbeim online / \
-Re\xc5\xbeim offline</\
-td></tr>\x0a<tr><td\
->Ctrl+U / Ctrl+D\
-</td><td>Na\xc4\x8dten\
-\xc3\xad do ventilu / \
-Sta\xc5\xbeen\xc3\xad z vent\
-ilu</td></tr>\x0a<t\
-r><td>Ctrl+T / C\
-trl+I / Ctrl+H</\
-td><td>V\xc3\xbdb\xc4\x9br v\
-entilu / Stav ve\
-ntilu / Konfigur\
-ace HID</td></tr\
->\x0a</table>\x0a<p><b\
->Skripty a zku\xc5\xa1\
-ebn\xc3\xad stanice</b\
->: ventil z Pyth\
-onu a ze shellov\
-\xc3\xbdch skript\xc5\xaf, <\
-a href=\x22scriptin\
-g_en.html\x22>na t\xc3\
-\xa9to str\xc3\xa1nce</a>\
- (anglicky).</p>\
-\x0a</body>\x0a</html>\
-\x0a\
+\xc3\xa1ny. Test lad\xc4\x9b\
+n\xc3\xad p\xc5\x99eru\xc5\xa1en\xc3\xbd\
+ v\xc3\xbdpadkem spoje\
+n\xc3\xad zap\xc3\xad\xc5\xa1e zp\xc4\
+\x9bt, co\x0azm\xc4\x9bnil, \
+jakmile je venti\
+l zp\xc4\x9bt, a ohl\xc3\xa1\
+s\xc3\xad to. Oscilosk\
+op zaznamen\xc3\xa1v\xc3\xa1\
+ d\xc3\xa1l; gener\xc3\xa1to\
+r \xc5\xbe\xc3\xa1dan\xc3\xa9 hodn\
+oty a test\x0alad\xc4\x9b\
+n\xc3\xad z\xc5\xafstanou za\
+staveny, dokud j\
+e nespust\xc3\xadte. P\
+\xc5\x99eru\xc5\xa1en\xc3\xa9 na\xc4\x8d\
+ten\xc3\xad do ventilu\
+ ohl\xc3\xa1s\xc3\xad, co se\
+\x0astalo a co vent\
+il obsahuje; nep\
+okra\xc4\x8duje samo. \
+Jin\xc3\xbd ventil (ji\
+n\xc3\xa9 v\xc3\xbdrobn\xc3\xad \xc4\x8d\
+\xc3\xadslo) na m\xc3\xadst\xc4\
+\x9b\x0aztracen\xc3\xa9ho je\
+ nov\xc3\xbd ventil: p\
+rogram to ohl\xc3\xa1s\
+\xc3\xad a s\xc3\xa1m se k n\
+\xc4\x9bmu nep\xc5\x99ipoj\xc3\xad\
+. P\xc5\x99echod do re\
+\xc5\xbeimu\x0aonline neb\
+o offline hled\xc3\xa1\
+n\xc3\xad ukon\xc4\x8d\xc3\xad. U \
+emulovan\xc3\xa9ho ven\
+tilu to ukazuj\xc3\xad\
+ Ventil \xe2\x86\x92 Emul\
+ovan\xc3\xbd ventil\x0a\xe2\x86\
+\x92 <b>Vyt\xc3\xa1hnout \
+kabel USB</b> a \
+<b>Znovu zapojit\
+ kabel USB</b>.<\
+/p>\x0a<p>Hodnoty z\
+m\xc4\x9bn\xc4\x9bn\xc3\xa9 online\
+ jsou ve ventilu\
+ aktivn\xc3\xad, ale j\
+e\xc5\xa1t\xc4\x9b neulo\xc5\xbeen\
+\xc3\xa9: p\xc5\x99i p\xc5\x99echo\
+du do\x0are\xc5\xbeimu of\
+fline program na\
+b\xc3\xaddne jejich ul\
+o\xc5\xbeen\xc3\xad a Ventil\
+ \xe2\x86\x92 <b>Ulo\xc5\xbeit \
+do pam\xc4\x9bti venti\
+lu</b> je ulo\xc5\xbe\xc3\
+\xad\x0ahned (s \xc4\x8d\xc3\xadm \
+ventil pracuje, \
+s t\xc3\xadm i nastart\
+uje; zaznamen\xc3\xa1 \
+se do historie).\
+ <b>Na\xc4\x8dten\xc3\xad do\
+ ventilu</b> zap\
+\xc3\xad\xc5\xa1e v\xc5\xa1echny\x0ah\
+odnoty, p\xc5\x99e\xc4\x8dte\
+ je zp\xc4\x9bt, porov\
+n\xc3\xa1 a ulo\xc5\xbe\xc3\xad; u\
+lo\xc5\xbe\xc3\xad se jen te\
+hdy, je-li ka\xc5\xbed\
+\xc3\xa1 hodnota ov\xc4\x9b\xc5\
+\x99ena.\x0aP\xc5\x99ed prvn\
+\xc3\xadm na\xc4\x8dten\xc3\xadm d\
+o ventilu progra\
+m ulo\xc5\xbe\xc3\xad z\xc3\xa1loh\
+u vlastn\xc3\xadch par\
+ametr\xc5\xaf ventilu \
+do slo\xc5\xbeky\x0au\xc5\xbeiv\
+atelsk\xc3\xbdch dat (\
+<code>backups/&l\
+t;v\xc3\xbdrobn\xc3\xad \xc4\x8d\xc3\xad\
+slo&gt;/</code>)\
+.</p>\x0a<p><b>Rest\
+art ventilu</b> \
+a <b>Obnoven\xc3\xad t\
+ov\xc3\xa1rn\xc3\xadho nasta\
+ven\xc3\xad</b> jsou d\
+ovoleny pouze p\xc5\
+\x99i\x0aodpojen\xc3\xa9m hy\
+draulick\xc3\xa9m obvo\
+du; program v\xc3\xa1s\
+ po\xc5\xbe\xc3\xa1d\xc3\xa1 o pot\
+vrzen\xc3\xad.</p>\x0a\x0a<h\
+2>Soubory</h2>\x0a<\
+p>Z\xc3\xa1znamy param\
+etr\xc5\xaf (<code>*.p\
+rm</code>) jsou \
+textov\xc3\xa9 soubory\
+. Otev\xc5\x99\xc3\xadt, Ulo\
+\xc5\xbeit, Ulo\xc5\xbeit ja\
+ko,\x0anaposledy ot\
+ev\xc5\x99en\xc3\xa9 soubory\
+ a p\xc5\x99eta\xc5\xbeen\xc3\xad \
+my\xc5\xa1\xc3\xad funguj\xc3\xad \
+obvykl\xc3\xbdm zp\xc5\xafso\
+bem; p\xc5\x99ed ztr\xc3\xa1\
+tou\x0aneulo\xc5\xbeen\xc3\xbdc\
+h zm\xc4\x9bn se progr\
+am zept\xc3\xa1. Ka\xc5\xbed\
+ou zm\xc4\x9bnu lze vr\
+\xc3\xa1tit (Ctrl+Z) a\
+ znovu prov\xc3\xa9st\x0a\
+(Ctrl+Y). Soubor\
+ \xe2\x86\x92 Tisk a Soub\
+or \xe2\x86\x92 Export do\
+ PDF vytvo\xc5\x99\xc3\xad p\
+rotokol parametr\
+\xc5\xaf s typov\xc3\xbdm kl\
+\xc3\xad\xc4\x8dem,\x0av\xc3\xbdrobn\xc3\
+\xadm \xc4\x8d\xc3\xadslem, fir\
+mware, souborem,\
+ datem, \xc3\xbarovn\xc3\xad\
+ opr\xc3\xa1vn\xc4\x9bn\xc3\xad, p\
+ostupov\xc3\xbdm diagr\
+amem a v\xc5\xa1emi\x0apa\
+rametry s jednot\
+kami. Hodnoty zm\
+\xc4\x9bn\xc4\x9bn\xc3\xa9 od ulo\xc5\
+\xbeen\xc3\xad souboru js\
+ou ozna\xc4\x8deny <b>\
+*</b> a \xc5\x99\xc3\xa1dek\x0a\
+\xe2\x80\x9eSoubor\xe2\x80\x9c to \
+uv\xc3\xa1d\xc3\xad; ka\xc5\xbed\xc3\xa1\
+ strana uv\xc3\xa1d\xc3\xad \
+typov\xc3\xbd kl\xc3\xad\xc4\x8d a\
+ v\xc3\xbdrobn\xc3\xad \xc4\x8d\xc3\xads\
+lo a sv\xc3\xa9 \xc4\x8d\xc3\xadsl\
+o strany; na\x0apos\
+ledn\xc3\xad stran\xc4\x9b j\
+e \xc5\x99\xc3\xa1dek pro da\
+tum, jm\xc3\xa9no a po\
+dpis.</p>\x0a<p><b>\
+Z\xc3\xa1loha ventilu<\
+/b>: p\xc5\x99ipojte s\
+e (re\xc5\xbeim online\
+), Ventil \xe2\x86\x92 St\
+a\xc5\xbeen\xc3\xad z ventil\
+u, pak\x0aSoubor \xe2\x86\
+\x92 <b>Ulo\xc5\xbeit z\xc3\xa1\
+lo\xc5\xben\xc3\xad kopii\xe2\x80\xa6\
+</b> (navr\xc5\xbeen\xc3\xbd\
+ n\xc3\xa1zev: typov\xc3\xbd\
+ kl\xc3\xad\xc4\x8d, v\xc3\xbdrobn\
+\xc3\xad \xc4\x8d\xc3\xadslo, datu\
+m\x0aa \xc4\x8das). Kopie\
+ se zap\xc3\xad\xc5\xa1e a o\
+tev\xc5\x99en\xc3\xbd dokume\
+nt z\xc5\xafstane, jak\
+\xc3\xbd byl: pozd\xc4\x9bj\xc5\
+\xa1\xc3\xad zm\xc4\x9bny se uk\
+l\xc3\xa1daj\xc3\xad do\x0ajeho\
+ vlastn\xc3\xadho soub\
+oru, nikdy do z\xc3\
+\xa1lohy. Naproti t\
+omu Ulo\xc5\xbeit jako\
+ ud\xc4\x9bl\xc3\xa1 z nov\xc3\xa9\
+ho souboru\x0aotev\xc5\
+\x99en\xc3\xbd dokument.<\
+/p>\x0a\x0a<h2>Kl\xc3\xa1ves\
+nice</h2>\x0a<table\
+>\x0a<tr><td>Ctrl+O\
+ / Ctrl+S / Ctrl\
++Shift+S</td><td\
+>Otev\xc5\x99\xc3\xadt / Ulo\
+\xc5\xbeit / Ulo\xc5\xbeit j\
+ako</td></tr>\x0a<t\
+r><td>Ctrl+Z / C\
+trl+Y</td><td>Zp\
+\xc4\x9bt / Znovu</td>\
+</tr>\x0a<tr><td>Ct\
+rl+P / Ctrl+E</t\
+d><td>Tisk / Exp\
+ort do PDF</td><\
+/tr>\x0a<tr><td>Ctr\
+l+1 / Ctrl+2 / C\
+trl+3 / Ctrl+4</\
+td><td>Postupov\xc3\
+\xbd diagram / Sezn\
+am parametr\xc5\xaf / \
+Osciloskop / Okn\
+o CANopen</td></\
+tr>\x0a<tr><td>F5 /\
+ Shift+F5</td><t\
+d>Re\xc5\xbeim online \
+/ Re\xc5\xbeim offline\
+</td></tr>\x0a<tr><\
+td>Ctrl+U / Ctrl\
++D</td><td>Na\xc4\x8dt\
+en\xc3\xad do ventilu \
+/ Sta\xc5\xbeen\xc3\xad z ve\
+ntilu</td></tr>\x0a\
+<tr><td>Ctrl+T /\
+ Ctrl+I / Ctrl+H\
+</td><td>V\xc3\xbdb\xc4\x9br\
+ ventilu / Stav \
+ventilu / Konfig\
+urace HID</td></\
+tr>\x0a</table>\x0a<p>\
+<b>Skripty a zku\
+\xc5\xa1ebn\xc3\xad stanice<\
+/b>: ventil z Py\
+thonu a ze shell\
+ov\xc3\xbdch skript\xc5\xaf,\
+ <a href=\x22script\
+ing_en.html\x22>na \
+t\xc3\xa9to str\xc3\xa1nce</\
+a> (anglicky).</\
+p>\x0a</body>\x0a</htm\
+l>\x0a\
 \x00\x00\x062\
 <\
 !DOCTYPE html>\x0a<\
@@ -1285,7 +1292,7 @@ t\xc3\xa1len\xc3\xad ka\xc5\xbed\xc3\xa9\
 ho zobrazen\xc3\xa9ho \
 skoku.</p>\x0a</bod\
 y>\x0a</html>\x0a\
-\x00\x00\x1e\xb9\
+\x00\x00\x1fF\
 <\
 !DOCTYPE html>\x0a<\
 html lang=\x22de\x22>\x0a\
@@ -1566,219 +1573,228 @@ verloren hat, we\
 rden im Untersch\
 iede-Dialog\x0aange\
 boten, nicht ges\
-endet. Das Oszil\
-loskop zeichnet \
-weiter auf; der \
-Sollwertgenerato\
-r und ein\x0aTuning\
--Test bleiben an\
-gehalten, bis Si\
-e sie starten. E\
-in abgebrochenes\
- Hochladen melde\
-t, was\x0ageschah u\
-nd was das Venti\
-l enth\xc3\xa4lt; es w\
-ird nicht fortge\
-setzt. Ein ander\
-es Ventil (ander\
-e\x0aSeriennummer) \
-an der Stelle de\
-s verlorenen ist\
- ein neues Venti\
-l: das Programm \
-sagt es und\x0averb\
-indet sich nicht\
- von selbst. Sel\
-bst online oder \
-offline gehen be\
-endet die Suche.\
- Mit\x0aeinem emuli\
-erten Ventil zei\
-gen es Ventil \xe2\x86\
-\x92 Emuliertes Ven\
-til \xe2\x86\x92 <b>USB-K\
-abel ziehen</b> \
-und\x0a<b>USB-Kabel\
- wieder einsteck\
-en</b>.</p>\x0a<p>O\
-nline ge\xc3\xa4nderte\
- Werte sind im V\
-entil aktiv, abe\
-r noch nicht ges\
-peichert: beim W\
-echsel\x0aauf offli\
-ne bietet das Pr\
-ogramm an, sie z\
-u speichern, und\
- Ventil \xe2\x86\x92 <b>I\
-m Ventil speiche\
-rn</b>\x0aspeichert\
- sie sofort (wom\
-it das Ventil ar\
-beitet, damit st\
-artet es auch; i\
-m Verlauf\x0afestge\
-halten). <b>In d\
-as Ventil hochla\
-den</b>\x0aschreibt\
- alle Werte, lie\
-st sie zur\xc3\xbcck, \
-vergleicht und s\
-peichert sie; ge\
-speichert wird n\
-ur,\x0awenn jeder W\
-ert best\xc3\xa4tigt w\
-urde. Vor dem er\
-sten Hochladen i\
-n ein Ventil sic\
-hert das\x0aProgram\
-m dessen eigene \
-Parameter im Ben\
-utzerdatenordner\
- (<code>backups/\
-&lt;Seriennummer\
-&gt;/</code>).</\
-p>\x0a<p><b>Ventil \
-neu starten</b> \
-und <b>Werkseins\
-tellungen wieder\
-herstellen</b> s\
-ind nur bei\x0agetr\
-ennter Hydraulik\
- erlaubt; das Pr\
-ogramm l\xc3\xa4sst Si\
-e das best\xc3\xa4tige\
-n.</p>\x0a\x0a<h2>Date\
-ien</h2>\x0a<p>Para\
-meterdateien (<c\
-ode>*.prm</code>\
-) sind Textdatei\
-en. \xc3\x96ffnen, Spe\
-ichern, Speicher\
-n\x0aunter, die zul\
-etzt ge\xc3\xb6ffneten\
- Dateien und Dra\
-g &amp; Drop fun\
-ktionieren wie g\
-ewohnt; vor dem\x0a\
-Verlust ungespei\
-cherter \xc3\x84nderun\
-gen fragt das Pr\
-ogramm nach. Jed\
-e \xc3\x84nderung l\xc3\xa4s\
-st sich\x0ar\xc3\xbcckg\xc3\xa4\
-ngig machen (Str\
-g+Z) und wiederh\
-erstellen (Strg+\
-Y). Datei \xe2\x86\x92 Dr\
-ucken und Datei \
-\xe2\x86\x92 PDF\x0aexportie\
-ren erzeugen ein\
- Parameterprotok\
-oll mit Typschl\xc3\
+endet. Ein durch\
+ die Verbindung \
+abgebrochener Tu\
+ning-Test schrei\
+bt\x0azur\xc3\xbcck, was \
+er ge\xc3\xa4ndert hat\
+te, sobald das V\
+entil wieder da \
+ist, und meldet \
+es. Das Oszillos\
+kop zeichnet wei\
+ter auf; der Sol\
+lwertgenerator u\
+nd ein\x0aTuning-Te\
+st bleiben angeh\
+alten, bis Sie s\
+ie starten. Ein \
+abgebrochenes Ho\
+chladen meldet, \
+was\x0ageschah und \
+was das Ventil e\
+nth\xc3\xa4lt; es wird\
+ nicht fortgeset\
+zt. Ein anderes \
+Ventil (andere\x0aS\
+eriennummer) an \
+der Stelle des v\
+erlorenen ist ei\
+n neues Ventil: \
+das Programm sag\
+t es und\x0averbind\
+et sich nicht vo\
+n selbst. Selbst\
+ online oder off\
+line gehen beend\
+et die Suche. Mi\
+t\x0aeinem emuliert\
+en Ventil zeigen\
+ es Ventil \xe2\x86\x92 E\
+muliertes Ventil\
+ \xe2\x86\x92 <b>USB-Kabe\
+l ziehen</b> und\
+\x0a<b>USB-Kabel wi\
+eder einstecken<\
+/b>.</p>\x0a<p>Onli\
+ne ge\xc3\xa4nderte We\
+rte sind im Vent\
+il aktiv, aber n\
+och nicht gespei\
+chert: beim Wech\
+sel\x0aauf offline \
+bietet das Progr\
+amm an, sie zu s\
+peichern, und Ve\
+ntil \xe2\x86\x92 <b>Im V\
+entil speichern<\
+/b>\x0aspeichert si\
+e sofort (womit \
+das Ventil arbei\
+tet, damit start\
+et es auch; im V\
+erlauf\x0afestgehal\
+ten). <b>In das \
+Ventil hochladen\
+</b>\x0aschreibt al\
+le Werte, liest \
+sie zur\xc3\xbcck, ver\
+gleicht und spei\
+chert sie; gespe\
+ichert wird nur,\
+\x0awenn jeder Wert\
+ best\xc3\xa4tigt wurd\
+e. Vor dem erste\
+n Hochladen in e\
+in Ventil sicher\
+t das\x0aProgramm d\
+essen eigene Par\
+ameter im Benutz\
+erdatenordner (<\
+code>backups/&lt\
+;Seriennummer&gt\
+;/</code>).</p>\x0a\
+<p><b>Ventil neu\
+ starten</b> und\
+ <b>Werkseinstel\
+lungen wiederher\
+stellen</b> sind\
+ nur bei\x0agetrenn\
+ter Hydraulik er\
+laubt; das Progr\
+amm l\xc3\xa4sst Sie d\
+as best\xc3\xa4tigen.<\
+/p>\x0a\x0a<h2>Dateien\
+</h2>\x0a<p>Paramet\
+erdateien (<code\
+>*.prm</code>) s\
+ind Textdateien.\
+ \xc3\x96ffnen, Speich\
+ern, Speichern\x0au\
+nter, die zuletz\
+t ge\xc3\xb6ffneten Da\
+teien und Drag &\
+amp; Drop funkti\
+onieren wie gewo\
+hnt; vor dem\x0aVer\
+lust ungespeiche\
+rter \xc3\x84nderungen\
+ fragt das Progr\
+amm nach. Jede \xc3\
+\x84nderung l\xc3\xa4sst \
+sich\x0ar\xc3\xbcckg\xc3\xa4ngi\
+g machen (Strg+Z\
+) und wiederhers\
+tellen (Strg+Y).\
+ Datei \xe2\x86\x92 Druck\
+en und Datei \xe2\x86\x92\
+ PDF\x0aexportieren\
+ erzeugen ein Pa\
+rameterprotokoll\
+ mit Typschl\xc3\xbcss\
+el, Seriennummer\
+, Firmware, Date\
+i,\x0aDatum, Berech\
+tigungsstufe, de\
+m Ablaufdiagramm\
+ und allen Param\
+etern mit Einhei\
+t. Seit dem\x0aSpei\
+chern ge\xc3\xa4nderte\
+ Werte sind mit \
+<b>*</b> markier\
+t, und die Zeile\
+ \xe2\x80\x9eDatei\xe2\x80\x9c sag\
+t es; jede Seite\
+\x0anennt Typschl\xc3\xbc\
+ssel und Serienn\
+ummer und tr\xc3\xa4gt\
+ ihre Seitenzahl\
+; die letzte Sei\
+te hat eine Zeil\
+e\x0af\xc3\xbcr Datum, Na\
+me und Unterschr\
+ift.</p>\x0a<p><b>E\
+in Ventil sicher\
+n</b>: online ge\
+hen, Ventil \xe2\x86\x92 \
+Aus dem Ventil h\
+erunterladen, da\
+nn\x0aDatei \xe2\x86\x92 <b>\
+Sicherungskopie \
+speichern\xe2\x80\xa6</b>\
+ (vorgeschlagene\
+r Name: Typschl\xc3\
 \xbcssel, Seriennum\
-mer, Firmware, D\
-atei,\x0aDatum, Ber\
-echtigungsstufe,\
- dem Ablaufdiagr\
-amm und allen Pa\
-rametern mit Ein\
-heit. Seit dem\x0aS\
-peichern ge\xc3\xa4nde\
-rte Werte sind m\
-it <b>*</b> mark\
-iert, und die Ze\
-ile \xe2\x80\x9eDatei\xe2\x80\x9c \
-sagt es; jede Se\
-ite\x0anennt Typsch\
-l\xc3\xbcssel und Seri\
-ennummer und tr\xc3\
-\xa4gt ihre Seitenz\
-ahl; die letzte \
-Seite hat eine Z\
-eile\x0af\xc3\xbcr Datum,\
- Name und Unters\
-chrift.</p>\x0a<p><\
-b>Ein Ventil sic\
-hern</b>: online\
- gehen, Ventil \xe2\
-\x86\x92 Aus dem Venti\
-l herunterladen,\
- dann\x0aDatei \xe2\x86\x92 \
-<b>Sicherungskop\
-ie speichern\xe2\x80\xa6<\
-/b> (vorgeschlag\
-ener Name: Typsc\
-hl\xc3\xbcssel, Serien\
-nummer,\x0aDatum un\
-d Uhrzeit). Die \
-Kopie wird gesch\
-rieben, das ge\xc3\xb6\
-ffnete Dokument \
-bleibt, was es w\
-ar:\x0asp\xc3\xa4tere \xc3\x84n\
-derungen werden \
-in seine eigene \
-Datei gespeicher\
-t, nie in die Si\
-cherung. Speiche\
-rn\x0aunter dagegen\
- macht die neue \
-Datei zum ge\xc3\xb6ff\
-neten Dokument.<\
-/p>\x0a\x0a<h2>Tastatu\
-r</h2>\x0a<table>\x0a<\
-tr><td>Strg+O / \
-Strg+S / Strg+Um\
-schalt+S</td><td\
->\xc3\x96ffnen / Speic\
-hern / Speichern\
- unter</td></tr>\
-\x0a<tr><td>Strg+Z \
-/ Strg+Y</td><td\
->R\xc3\xbcckg\xc3\xa4ngig / \
-Wiederherstellen\
-</td></tr>\x0a<tr><\
-td>Strg+P / Strg\
-+E</td><td>Druck\
-en / PDF exporti\
-eren</td></tr>\x0a<\
-tr><td>Strg+1 / \
-Strg+2 / Strg+3 \
-/ Strg+4</td><td\
->Ablaufdiagramm \
-/ Parameterliste\
- / Oszilloskop /\
- CANopen-Fenster\
-</td></tr>\x0a<tr><\
-td>F5 / Umschalt\
-+F5</td><td>Onli\
-ne / Offline</td\
-></tr>\x0a<tr><td>S\
-trg+U / Strg+D</\
-td><td>In das Ve\
-ntil hochladen /\
- Aus dem Ventil \
-herunterladen</t\
+mer,\x0aDatum und U\
+hrzeit). Die Kop\
+ie wird geschrie\
+ben, das ge\xc3\xb6ffn\
+ete Dokument ble\
+ibt, was es war:\
+\x0asp\xc3\xa4tere \xc3\x84nder\
+ungen werden in \
+seine eigene Dat\
+ei gespeichert, \
+nie in die Siche\
+rung. Speichern\x0a\
+unter dagegen ma\
+cht die neue Dat\
+ei zum ge\xc3\xb6ffnet\
+en Dokument.</p>\
+\x0a\x0a<h2>Tastatur</\
+h2>\x0a<table>\x0a<tr>\
+<td>Strg+O / Str\
+g+S / Strg+Umsch\
+alt+S</td><td>\xc3\x96\
+ffnen / Speicher\
+n / Speichern un\
+ter</td></tr>\x0a<t\
+r><td>Strg+Z / S\
+trg+Y</td><td>R\xc3\
+\xbcckg\xc3\xa4ngig / Wie\
+derherstellen</t\
 d></tr>\x0a<tr><td>\
-Strg+T / Strg+I \
-/ Strg+H</td><td\
->Ventilauswahl /\
- Ventilstatus / \
-HID-Konfiguratio\
-n</td></tr>\x0a</ta\
-ble>\x0a<p><b>Skrip\
-te und Pr\xc3\xbcfst\xc3\xa4\
-nde</b>: das Ven\
-til aus Python u\
-nd Shell-Skripte\
-n, <a href=\x22scri\
-pting_en.html\x22>a\
-uf dieser Seite<\
-/a> (auf Englisc\
-h).</p>\x0a</body>\x0a\
-</html>\x0a\
+Strg+P / Strg+E<\
+/td><td>Drucken \
+/ PDF exportiere\
+n</td></tr>\x0a<tr>\
+<td>Strg+1 / Str\
+g+2 / Strg+3 / S\
+trg+4</td><td>Ab\
+laufdiagramm / P\
+arameterliste / \
+Oszilloskop / CA\
+Nopen-Fenster</t\
+d></tr>\x0a<tr><td>\
+F5 / Umschalt+F5\
+</td><td>Online \
+/ Offline</td></\
+tr>\x0a<tr><td>Strg\
++U / Strg+D</td>\
+<td>In das Venti\
+l hochladen / Au\
+s dem Ventil her\
+unterladen</td><\
+/tr>\x0a<tr><td>Str\
+g+T / Strg+I / S\
+trg+H</td><td>Ve\
+ntilauswahl / Ve\
+ntilstatus / HID\
+-Konfiguration</\
+td></tr>\x0a</table\
+>\x0a<p><b>Skripte \
+und Pr\xc3\xbcfst\xc3\xa4nde\
+</b>: das Ventil\
+ aus Python und \
+Shell-Skripten, \
+<a href=\x22scripti\
+ng_en.html\x22>auf \
+dieser Seite</a>\
+ (auf Englisch).\
+</p>\x0a</body>\x0a</h\
+tml>\x0a\
 \x00\x00\x05\xaf\
 <\
 !DOCTYPE html>\x0a<\
@@ -2237,7 +2253,7 @@ ls \xe2\x80\x9e\xe2\x80\x94\xe2\x80\x9c und\
 ht\x0aw\xc3\xa4hlen.</p>\x0a\
 </body>\x0a</html>\x0a\
 \
-\x00\x00\x1a\xc7\
+\x00\x00\x1b4\
 <\
 !DOCTYPE html>\x0a<\
 html lang=\x22en\x22>\x0a\
@@ -2481,193 +2497,200 @@ t in a power cyc\
 le are offered i\
 n the difference\
 s dialog, not\x0ase\
-nt. The oscillos\
-cope records on;\
- the setpoint ge\
-nerator and a tu\
-ning test stay s\
-topped until\x0ayou\
- start them. An \
-upload that was \
-cut off reports \
-what happened an\
-d what the valve\
- holds; it\x0ais no\
-t resumed. Anoth\
-er valve (anothe\
-r serial number)\
- where the lost \
-one was is a new\
- valve:\x0athe prog\
-ram says so and \
-does not connect\
- to it by itself\
-. Going online o\
-r offline yourse\
-lf\x0astops the sea\
-rch. With an emu\
-lated valve, Val\
-ve \xe2\x86\x92 Emulated \
-valve \xe2\x86\x92 <b>Pul\
-l the USB cable<\
-/b>\x0aand <b>Plug \
-the USB cable ba\
-ck in</b> show i\
-t.</p>\x0a<p>Values\
- changed online \
-are active in th\
-e valve but not \
-yet stored: goin\
-g offline offers\
- to\x0astore them, \
-and Valve \xe2\x86\x92 <b\
->Store in valve<\
-/b> stores them \
-at once (what th\
-e valve works wi\
-th\x0abecomes what \
-it starts with; \
-recorded in the \
-history). <b>Upl\
-oad to valve</b>\
- writes all valu\
-es, reads them b\
-ack, compares an\
-d stores\x0athem; n\
-othing is stored\
- unless every va\
-lue was verified\
-. Before the fir\
-st upload to a v\
-alve\x0athe program\
- saves a backup \
-of the valve's o\
-wn parameters in\
- the user data f\
-older\x0a(<code>bac\
-kups/&lt;serial&\
-gt;/</code>).</p\
->\x0a<p><b>Restart \
-valve</b> and <b\
->Restore factory\
- values</b> are \
-allowed only wit\
-h the\x0ahydraulics\
- disconnected; t\
-he program asks \
-you to confirm t\
-his.</p>\x0a\x0a<h2>Fi\
-les</h2>\x0a<p>Para\
-meter files (<co\
-de>*.prm</code>)\
- are text files.\
- Open, Save, Sav\
-e As, the recent\
-\x0afiles and drag \
-and drop work as\
- usual; the prog\
-ram asks before \
-unsaved changes \
-are lost.\x0aEvery \
-change can be un\
-done (Ctrl+Z) an\
-d redone (Ctrl+Y\
-). File \xe2\x86\x92 Prin\
-t and File \xe2\x86\x92 E\
-xport PDF\x0aproduc\
-e a parameter re\
-cord with type k\
-ey, serial numbe\
-r, firmware, fil\
-e, date, access \
-level,\x0athe flow \
-diagram and ever\
-y parameter with\
- its unit. Value\
-s changed since \
-the file was sav\
-ed\x0aare marked <b\
->*</b> and the f\
-ile line says so\
-; every page nam\
-es the type key \
-and serial\x0anumbe\
-r and carries it\
-s page number; t\
-he last page has\
- a line for date\
-, name and\x0asigna\
-ture.</p>\x0a<p><b>\
-Back up a valve<\
-/b>: go online, \
-Valve \xe2\x86\x92 Downlo\
-ad from valve, t\
-hen File \xe2\x86\x92 <b>\
-Save backup\x0acopy\
-\xe2\x80\xa6</b> (propose\
-d name: type key\
-, serial number,\
- date and time).\
- The copy is wri\
-tten and\x0athe ope\
-n document stays\
- what it was: la\
-ter changes are \
-saved into the d\
-ocument's own fi\
-le,\x0anever into t\
-he backup. Save \
-As, by contrast,\
- makes the new f\
-ile the open doc\
-ument.</p>\x0a\x0a<h2>\
-Keyboard</h2>\x0a<t\
-able>\x0a<tr><td>Ct\
-rl+O / Ctrl+S / \
-Ctrl+Shift+S</td\
-><td>Open / Save\
- / Save As</td><\
-/tr>\x0a<tr><td>Ctr\
-l+Z / Ctrl+Y</td\
-><td>Undo / Redo\
-</td></tr>\x0a<tr><\
-td>Ctrl+P / Ctrl\
-+E</td><td>Print\
- / Export PDF</t\
+nt. A tuning tes\
+t cut off by the\
+ link writes bac\
+k what it had ch\
+anged as soon as\
+ the valve\x0ais ba\
+ck, and says so.\
+ The oscilloscop\
+e records on; th\
+e setpoint gener\
+ator and a tunin\
+g test\x0astay stop\
+ped until you st\
+art them. An upl\
+oad that was cut\
+ off reports wha\
+t happened and w\
+hat the valve ho\
+lds; it\x0ais not r\
+esumed. Another \
+valve (another s\
+erial number) wh\
+ere the lost one\
+ was is a new va\
+lve:\x0athe program\
+ says so and doe\
+s not connect to\
+ it by itself. G\
+oing online or o\
+ffline yourself\x0a\
+stops the search\
+. With an emulat\
+ed valve, Valve \
+\xe2\x86\x92 Emulated val\
+ve \xe2\x86\x92 <b>Pull t\
+he USB cable</b>\
+\x0aand <b>Plug the\
+ USB cable back \
+in</b> show it.<\
+/p>\x0a<p>Values ch\
+anged online are\
+ active in the v\
+alve but not yet\
+ stored: going o\
+ffline offers to\
+\x0astore them, and\
+ Valve \xe2\x86\x92 <b>St\
+ore in valve</b>\
+ stores them at \
+once (what the v\
+alve works with\x0a\
+becomes what it \
+starts with; rec\
+orded in the his\
+tory). <b>Upload\
+ to valve</b> wr\
+ites all values,\
+ reads them back\
+, compares and s\
+tores\x0athem; noth\
+ing is stored un\
+less every value\
+ was verified. B\
+efore the first \
+upload to a valv\
+e\x0athe program sa\
+ves a backup of \
+the valve's own \
+parameters in th\
+e user data fold\
+er\x0a(<code>backup\
+s/&lt;serial&gt;\
+/</code>).</p>\x0a<\
+p><b>Restart val\
+ve</b> and <b>Re\
+store factory va\
+lues</b> are all\
+owed only with t\
+he\x0ahydraulics di\
+sconnected; the \
+program asks you\
+ to confirm this\
+.</p>\x0a\x0a<h2>Files\
+</h2>\x0a<p>Paramet\
+er files (<code>\
+*.prm</code>) ar\
+e text files. Op\
+en, Save, Save A\
+s, the recent\x0afi\
+les and drag and\
+ drop work as us\
+ual; the program\
+ asks before uns\
+aved changes are\
+ lost.\x0aEvery cha\
+nge can be undon\
+e (Ctrl+Z) and r\
+edone (Ctrl+Y). \
+File \xe2\x86\x92 Print a\
+nd File \xe2\x86\x92 Expo\
+rt PDF\x0aproduce a\
+ parameter recor\
+d with type key,\
+ serial number, \
+firmware, file, \
+date, access lev\
+el,\x0athe flow dia\
+gram and every p\
+arameter with it\
+s unit. Values c\
+hanged since the\
+ file was saved\x0a\
+are marked <b>*<\
+/b> and the file\
+ line says so; e\
+very page names \
+the type key and\
+ serial\x0anumber a\
+nd carries its p\
+age number; the \
+last page has a \
+line for date, n\
+ame and\x0asignatur\
+e.</p>\x0a<p><b>Bac\
+k up a valve</b>\
+: go online, Val\
+ve \xe2\x86\x92 Download \
+from valve, then\
+ File \xe2\x86\x92 <b>Sav\
+e backup\x0acopy\xe2\x80\xa6\
+</b> (proposed n\
+ame: type key, s\
+erial number, da\
+te and time). Th\
+e copy is writte\
+n and\x0athe open d\
+ocument stays wh\
+at it was: later\
+ changes are sav\
+ed into the docu\
+ment's own file,\
+\x0anever into the \
+backup. Save As,\
+ by contrast, ma\
+kes the new file\
+ the open docume\
+nt.</p>\x0a\x0a<h2>Key\
+board</h2>\x0a<tabl\
+e>\x0a<tr><td>Ctrl+\
+O / Ctrl+S / Ctr\
+l+Shift+S</td><t\
+d>Open / Save / \
+Save As</td></tr\
+>\x0a<tr><td>Ctrl+Z\
+ / Ctrl+Y</td><t\
+d>Undo / Redo</t\
 d></tr>\x0a<tr><td>\
-Ctrl+1 / Ctrl+2 \
-/ Ctrl+3 / Ctrl+\
-4</td><td>Flow d\
-iagram / Paramet\
-er list / Oscill\
-oscope / CANopen\
- window</td></tr\
->\x0a<tr><td>F5 / S\
-hift+F5</td><td>\
-Online / Offline\
-</td></tr>\x0a<tr><\
-td>Ctrl+U / Ctrl\
-+D</td><td>Uploa\
-d to valve / Dow\
-nload from valve\
-</td></tr>\x0a<tr><\
-td>Ctrl+T / Ctrl\
-+I / Ctrl+H</td>\
-<td>Valve select\
-ion / Valve stat\
-us / HID configu\
-ration</td></tr>\
-\x0a</table>\x0a<p><b>\
-Scripts and test\
- benches</b>: th\
-e valve from Pyt\
-hon and shell sc\
-ripts, <a href=\x22\
-scripting_en.htm\
-l\x22>on this page<\
-/a> (in English)\
-.</p>\x0a</body>\x0a</\
-html>\x0a\
+Ctrl+P / Ctrl+E<\
+/td><td>Print / \
+Export PDF</td><\
+/tr>\x0a<tr><td>Ctr\
+l+1 / Ctrl+2 / C\
+trl+3 / Ctrl+4</\
+td><td>Flow diag\
+ram / Parameter \
+list / Oscillosc\
+ope / CANopen wi\
+ndow</td></tr>\x0a<\
+tr><td>F5 / Shif\
+t+F5</td><td>Onl\
+ine / Offline</t\
+d></tr>\x0a<tr><td>\
+Ctrl+U / Ctrl+D<\
+/td><td>Upload t\
+o valve / Downlo\
+ad from valve</t\
+d></tr>\x0a<tr><td>\
+Ctrl+T / Ctrl+I \
+/ Ctrl+H</td><td\
+>Valve selection\
+ / Valve status \
+/ HID configurat\
+ion</td></tr>\x0a</\
+table>\x0a<p><b>Scr\
+ipts and test be\
+nches</b>: the v\
+alve from Python\
+ and shell scrip\
+ts, <a href=\x22scr\
+ipting_en.html\x22>\
+on this page</a>\
+ (in English).</\
+p>\x0a</body>\x0a</htm\
+l>\x0a\
 \x00\x00\x08u\
 <\
 !DOCTYPE html>\x0a<\
@@ -3423,35 +3446,35 @@ qt_resource_struct = b"\
 \x00\x00\x00\x00\x00\x02\x00\x00\x00\x02\x00\x00\x00\x01\
 \x00\x00\x00\x10\x00\x02\x00\x00\x00\x10\x00\x00\x00\x10\
 \x00\x00\x00\x00\x00\x02\x00\x00\x00\x0d\x00\x00\x00\x03\
-\x00\x00\x02\xb6\x00\x00\x00\x00\x00\x01\x00\x00\xbb\xf5\
-\x00\x00\x02L\x00\x00\x00\x00\x00\x01\x00\x00\xb6W\
-\x00\x00\x03X\x00\x00\x00\x00\x00\x01\x00\x00\xc6+\
-\x00\x00\x02\xd0\x00\x00\x00\x00\x00\x01\x00\x00\xbd\x22\
-\x00\x00\x022\x00\x00\x00\x00\x00\x01\x00\x00\xb4\x91\
-\x00\x00\x03t\x00\x00\x00\x00\x00\x01\x00\x00\xc7\xc3\
-\x00\x00\x02\xe8\x00\x00\x00\x00\x00\x01\x00\x00\xbe\xf1\
-\x00\x00\x03:\x00\x00\x00\x00\x00\x01\x00\x00\xc4\x7f\
-\x00\x00\x02d\x00\x00\x00\x00\x00\x01\x00\x00\xb7\xfd\
-\x00\x00\x03\x04\x00\x00\x00\x00\x00\x01\x00\x00\xc0\xba\
-\x00\x00\x02\x80\x00\x00\x00\x00\x00\x01\x00\x00\xb8\xfa\
-\x00\x00\x02\x9c\x00\x00\x00\x00\x00\x01\x00\x00\xba\xb3\
-\x00\x00\x03\x18\x00\x00\x00\x00\x00\x01\x00\x00\xc3>\
-\x00\x00\x01J\x00\x00\x00\x00\x00\x01\x00\x00mx\
-\x00\x00\x00\xe6\x00\x00\x00\x00\x00\x01\x00\x00A0\
-\x00\x00\x01\xac\x00\x00\x00\x00\x00\x01\x00\x00\x82\xa9\
-\x00\x00\x00\xc4\x00\x00\x00\x00\x00\x01\x00\x009\xe7\
-\x00\x00\x01\x0a\x00\x00\x00\x00\x00\x01\x00\x00G\xbb\
-\x00\x00\x01\x8a\x00\x00\x00\x00\x00\x01\x00\x00|O\
+\x00\x00\x02\xb6\x00\x00\x00\x00\x00\x01\x00\x00\xbda\
+\x00\x00\x02L\x00\x00\x00\x00\x00\x01\x00\x00\xb7\xc3\
+\x00\x00\x03X\x00\x00\x00\x00\x00\x01\x00\x00\xc7\x97\
+\x00\x00\x02\xd0\x00\x00\x00\x00\x00\x01\x00\x00\xbe\x8e\
+\x00\x00\x022\x00\x00\x00\x00\x00\x01\x00\x00\xb5\xfd\
+\x00\x00\x03t\x00\x00\x00\x00\x00\x01\x00\x00\xc9/\
+\x00\x00\x02\xe8\x00\x00\x00\x00\x00\x01\x00\x00\xc0]\
+\x00\x00\x03:\x00\x00\x00\x00\x00\x01\x00\x00\xc5\xeb\
+\x00\x00\x02d\x00\x00\x00\x00\x00\x01\x00\x00\xb9i\
+\x00\x00\x03\x04\x00\x00\x00\x00\x00\x01\x00\x00\xc2&\
+\x00\x00\x02\x80\x00\x00\x00\x00\x00\x01\x00\x00\xbaf\
+\x00\x00\x02\x9c\x00\x00\x00\x00\x00\x01\x00\x00\xbc\x1f\
+\x00\x00\x03\x18\x00\x00\x00\x00\x00\x01\x00\x00\xc4\xaa\
+\x00\x00\x01J\x00\x00\x00\x00\x00\x01\x00\x00nw\
+\x00\x00\x00\xe6\x00\x00\x00\x00\x00\x01\x00\x00A\xa2\
+\x00\x00\x01\xac\x00\x00\x00\x00\x00\x01\x00\x00\x83\xa8\
+\x00\x00\x00\xc4\x00\x00\x00\x00\x00\x01\x00\x00:Y\
+\x00\x00\x01\x0a\x00\x00\x00\x00\x00\x01\x00\x00H-\
+\x00\x00\x01\x8a\x00\x00\x00\x00\x00\x01\x00\x00}N\
 \x00\x00\x00:\x00\x00\x00\x00\x00\x01\x00\x00\x09V\
-\x00\x00\x02\x0a\x00\x00\x00\x00\x00\x01\x00\x00\xac\xd2\
+\x00\x00\x02\x0a\x00\x00\x00\x00\x00\x01\x00\x00\xae>\
 \x00\x00\x00\x82\x00\x00\x00\x00\x00\x01\x00\x00\x15\xcb\
-\x00\x00\x01,\x00\x00\x00\x00\x00\x01\x00\x00N\xbb\
-\x00\x00\x01\xd0\x00\x00\x00\x00\x00\x01\x00\x00\x89\x8e\
-\x00\x00\x01n\x00\x00\x00\x00\x00\x01\x00\x00s+\
+\x00\x00\x01,\x00\x00\x00\x00\x00\x01\x00\x00O-\
+\x00\x00\x01\xd0\x00\x00\x00\x00\x00\x01\x00\x00\x8a\x8d\
+\x00\x00\x01n\x00\x00\x00\x00\x00\x01\x00\x00t*\
 \x00\x00\x00\x1e\x00\x00\x00\x00\x00\x01\x00\x00\x00\x00\
-\x00\x00\x01\xee\x00\x00\x00\x00\x00\x01\x00\x00\xa4Y\
+\x00\x00\x01\xee\x00\x00\x00\x00\x00\x01\x00\x00\xa5\xc5\
 \x00\x00\x00^\x00\x00\x00\x00\x00\x01\x00\x00\x0fD\
-\x00\x00\x00\xa0\x00\x00\x00\x00\x00\x01\x00\x003\xb1\
+\x00\x00\x00\xa0\x00\x00\x00\x00\x00\x01\x00\x004#\
 "
 
 def qInitResources():

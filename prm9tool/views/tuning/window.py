@@ -106,14 +106,19 @@ class TuningWindow(QDialog):
         runner.finished.connect(self._on_finished)
         runner.failed.connect(self._on_failed)
         runner.busy_changed.connect(self._on_busy_changed)
+        if isinstance(runner, ValveRunner):
+            runner.restored.connect(self._on_restored)
         return runner
 
     def _on_status_changed(self, status: StatusView) -> None:
         self._status = status
 
-    def _on_online_changed(self, _online: bool) -> None:
+    def _on_online_changed(self, online: bool) -> None:
         if self.runner.busy:
             self.runner.stop()
+            return
+        if online and isinstance(self.runner, ValveRunner):  # the valve is back: the same one
+            self.retranslate()  # (it may still restore what a broken test changed)
             return
         self.runner.deleteLater()
         self.runner = self._make_runner()
@@ -186,6 +191,9 @@ class TuningWindow(QDialog):
         pages: dict[str, Page] = {"autotune": self.autotune, "bode": self.bode}
         pages.update(static=self.static, flow=self.flow or self.report)
         pages.get(kind, self.report).show_result(result)
+
+    def _on_restored(self, message: str) -> None:
+        self.status.setText(message)
 
     def _on_failed(self, _kind: str, message: str) -> None:
         self.status.setText(self.tr("Stopped: %1").replace("%1", message))
