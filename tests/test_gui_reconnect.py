@@ -172,3 +172,20 @@ def test_a_tuning_test_cut_off_is_undone_once_the_valve_is_back(qtbot, connectio
     assert int(valve.read(*key)) == before and runner.to_restore is None
     setpovron = CATALOGUE["SETPOVRON"].key
     assert int(valve.read(*setpovron)) == 0
+
+
+def test_a_valve_found_that_cannot_be_opened_yet_is_tried_again(qtbot, connection):
+    online(qtbot, connection)
+    opener, refused = connection._worker._opener, []
+
+    def refusing_once(entry):
+        if not refused:
+            refused.append(entry)
+            raise factory.DeviceDisconnectedError("still starting up")
+        return opener(entry)
+
+    connection._worker._opener = refusing_once
+    pull_cable(qtbot, connection)
+    with qtbot.waitSignal(connection.reconnected, timeout=TIMEOUT):
+        plug_cable(5101)
+    assert len(refused) == 1 and connection.is_online

@@ -141,3 +141,13 @@ def test_the_seconds_count_from_the_loss_when_the_loop_starts_again():
     clock = FakeClock()
     loop = Reconnector(USB, lambda *_: [], print, print, print, clock=clock, since=90.0)
     assert loop.elapsed() == pytest.approx(10.0)
+
+
+def test_after_a_failed_opening_the_loop_pauses_before_it_lists_again():
+    clock, reported = FakeClock(), []
+    back = Entry("usb:1-2:1.0", 4711)
+    loop = Reconnector(USB, lambda *_: [back], print, reported.append, print, clock=clock,
+                       first_pause_s=MAX_PAUSE_S)  # fmt: skip
+    loop.stop.wait = lambda timeout: reported.append(("pause", timeout))  # type: ignore[method-assign]
+    loop.run()
+    assert reported == [("pause", MAX_PAUSE_S), back]

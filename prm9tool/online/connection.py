@@ -16,8 +16,9 @@ from typing import TYPE_CHECKING, Any, cast
 
 from PySide6.QtCore import QObject, Qt, Signal
 
+from prm9tool.online.connection_reconnect import ReconnectLink
 from prm9tool.online.connection_worker import ConnectionWorker, Job
-from prm9tool.online.reconnect import LostValve, Reconnector
+from prm9tool.online.reconnect import LostValve
 from prm9tool.online.setpoint_driver import (
     GENERATOR_OBJECTS,
 )
@@ -89,7 +90,7 @@ class ValveConnection(QObject):
         self.history: HistoryHook | None = None  # set_recorder(); used by the worker only
         self.auto_reconnect = True  # look for a lost valve until it is back (online/reconnect.py)
         self.lost_during_operation = False  # the last loss cut a long operation off
-        self._reconnector: Reconnector | None = None
+        self._reconnect = ReconnectLink(self)
 
     def set_recorder(self, recorder: Recorder) -> None:
         """Record every operation on the valve's parameter set into this history."""
@@ -442,109 +443,34 @@ class ValveConnection(QObject):
             self.lost_during_operation = self.is_busy  # an upload, download, … was cut off
             if self.auto_reconnect and device is not None and device.serial:
                 bus = getattr(device, "can_bus", None)  # known looking before going offline
-                self._make_reconnector(LostValve(device.serial, device.device_id, bus), None)
+                self._reconnect.prepare(LostValve(device.serial, device.device_id, bus))
             self._on_closed()
             self.lost.emit(message)
-            self._go_looking()
+            self._reconnect.go()
         else:
             self.failed.emit(message)
 
-    # --- finding a lost valve again ------------------------------------------------------------
+    # --- finding a lost valve again (connection_reconnect.py) ---------------------------------
     @property
     def is_reconnecting(self) -> bool:
         """True while a lost valve is looked for."""
-        return self._reconnector is not None
+        return self._reconnect.looking is not None
 
     @property
     def lost_valve(self) -> LostValve | None:
         """The valve looked for (None when none is)."""
-        return None if self._reconnector is None else self._reconnector.lost
+        looking = self._reconnect.looking
+        return None if looking is None else looking.lost
 
     def stop_reconnecting(self) -> None:
         """Stop looking for the lost valve (``reconnect_ended`` follows if it was looked for)."""
-        looking, self._reconnector = self._reconnector, None
-        if looking is not None:
-            looking.stop.set()
-            self.reconnect_ended.emit()
+        self._reconnect.stop()
 
-    def _start_reconnecting(self, lost: LostValve, since: float | None = None) -> None:
-        self._make_reconnector(lost, since)
-        self._go_looking()
-
-    def _make_reconnector(self, lost: LostValve, since: float | None) -> None:
-        self.stop_reconnecting()
-        lister = self._lister
-
-        def listing(emulators: Sequence[str], can: Mapping[str, object] | None) -> list[Any]:
-            return list(lister(emulators) if can is None else lister(emulators, can))
-
-        def current(action: Callable[[], None]) -> Callable[[], None]:
-            return lambda: action() if self._reconnector is looking else None
-
-        def other(entry: Any) -> None:
-            self._post(current(lambda: self._found_other(entry.serial, entry.device_id)))
-
-        looking = Reconnector(
-            lost,
-            listing,
-            lambda s: self._post(current(lambda: self.reconnecting.emit(s))),
-            lambda entry: self._post(current(lambda: self._reopen(entry))),
-            other,
-            since=since,
-        )
-        self._reconnector = looking
-
-    def _go_looking(self) -> None:
-        if self._reconnector is not None:
-            self.reconnecting.emit(self._reconnector.elapsed())
-            self._reconnector.start()
-
-    def _found_other(self, serial: int, device_id: str) -> None:
-        lost = self.lost_valve
-        self.stop_reconnecting()
-        if lost is not None:
-            self.other_valve.emit(lost.serial, serial, device_id)
-
-    def _reopen(self, entry: object) -> None:
-        """Open the valve found again (worker); a failure keeps looking."""
-        looking = self._reconnector
-        if looking is None or self._online or self.is_busy:
-            return
-        self._worker.start()
-        self._set_busy(+1)
-
-        def run(_session: object) -> object:
-            try:
-                info = self._worker.open(entry)
-            except Exception as exc:  # not (yet) openable: it may be still starting up
-                log.info("reopening the lost valve failed: %s", exc)
-                self._worker.close()
-                return exc
-            if getattr(info, "serial", 0) != looking.lost.serial:
-                self._worker.close()  # another valve answered: nothing is read or written
-            return info
-
-        def done(info: object) -> None:
-            self._set_busy(-1)
-            if self._reconnector is not looking:  # the user decided meanwhile
-                if not isinstance(info, Exception):
-                    self._submit(Job("offline", lambda _s: self._worker.close(), None, False,
-                                     needs_session=False))  # fmt: skip
-                return
-            if isinstance(info, Exception):
-                self._reconnector = None
-                self._start_reconnecting(looking.lost, looking.since)
-                return
-            serial = getattr(info, "serial", 0)
-            if serial != looking.lost.serial:  # the serial check: the worker closed it
-                self._found_other(serial, getattr(info, "device_id", ""))
-                return
-            self._reconnector = None
-            self._online = True
-            self._device = cast("ValveIdentity", info)
-            self.reconnect_ended.emit()
-            self.device_changed.emit(info)
-            self.reconnected.emit(info)
-            self.online_changed.emit(True)
-
-        self._submit(Job("reconnect", run, done, False, needs_session=False))
+    def _on_reopened(self, info: object) -> None:
+        """The lost valve is open again (its serial checked): online, as after go_online."""
+        self._online = True
+        self._device = cast("ValveIdentity", info)
+        self.reconnect_ended.emit()
+        self.device_changed.emit(info)
+        self.reconnected.emit(info)
+        self.online_changed.emit(True)

@@ -116,8 +116,10 @@ class Reconnector:
         other: Callable[[Listed], None],
         clock: Callable[[], float] = time.monotonic,
         since: float | None = None,
+        first_pause_s: float = 0.0,
     ) -> None:
-        """``since``: when the valve was lost (``clock`` time; default: now)."""
+        """``since``: when the valve was lost (``clock`` time; default: now); ``first_pause_s``:
+        wait this long before the first listing (after a found valve failed to open)."""
         self.lost = lost
         self.stop = threading.Event()  # set: the loop ends at its next step
         self._lister = lister
@@ -126,6 +128,7 @@ class Reconnector:
         self.since = clock() if since is None else since
         self._thread: threading.Thread | None = None
         self.attempts = 0
+        self._first_pause_s = first_pause_s
 
     def elapsed(self) -> float:
         """Seconds since the valve was lost."""
@@ -144,6 +147,8 @@ class Reconnector:
 
     def run(self) -> None:
         """The loop itself (also callable directly, in tests)."""
+        if self._first_pause_s:
+            self.stop.wait(self._first_pause_s)
         while not self.stop.is_set():
             began = self._clock()
             outcome, entry = self.attempt()
