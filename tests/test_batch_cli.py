@@ -583,3 +583,35 @@ def test_download_of_an_invalid_valve_saves_what_it_holds_marked_invalid(tmp_pat
     assert "warning: the valve's set is not valid" in result.stderr
     text = (tmp_path / "out.prm").read_text(encoding="utf-8")
     assert "# NOT A VALID PARAMETER SET" in text and "SETPLINXA = 61.035" in text
+
+
+@pytest.mark.parametrize("plugged_back", [True, False])
+def test_a_valve_listed_again_after_its_link_broke_is_reported_not_retried(
+    tmp_path, monkeypatch, capsys, plugged_back
+):
+    from prm9tool.device.emulated import plug_cable
+
+    source = tuned_file(tmp_path)
+    opened: list[EmulatorTransport] = []
+
+    def open_and_pull_the_cable(entry):
+        transport = EmulatorTransport(factory.emulated_valve(entry.type_key, entry.serial))
+        transport.faults = LinkFaults(die_after=transport.reports_on_link + 30)  # in the run
+        opened.append(transport)
+        if not plugged_back:
+            plug_cable(entry.serial, plugged=False)  # still out when the run ends
+        return UsbSession(transport, entry.device_id)
+
+    monkeypatch.setattr(batch, "open_valve", open_and_pull_the_cable)
+    try:
+        args = ["--batch", str(source), "--emulator", f"{E04}:93"]
+        assert main([*args, "--report", str(tmp_path / "r.json")]) == ExitCode.COMMUNICATION
+    finally:
+        factory.forget_emulated_valves()
+    record = report(tmp_path, "r.json")["valves"][0]
+    assert record["result"] == "communication-error" and len(opened) == 1  # no retry
+    if plugged_back:
+        assert record["came_back"] == f"emulator:{E04}:93"
+        assert "connected again" in capsys.readouterr().err  # the operator reads it
+    else:
+        assert record["came_back"] is None

@@ -14,7 +14,14 @@ from concurrent.futures import ThreadPoolExecutor
 from pathlib import Path
 
 from prm9tool.catalogue.typekey import TypeKey
-from prm9tool.cli.batch_devices import BatchError, can_options, list_devices, open_valve, select
+from prm9tool.cli.batch_devices import (
+    BatchError,
+    can_options,
+    list_devices,
+    listed_again,
+    open_valve,
+    select,
+)
 from prm9tool.cli.batch_history import BatchHistory
 from prm9tool.cli.batch_report import (
     ProgressPrinter,
@@ -131,9 +138,21 @@ def _upload(args: argparse.Namespace, records: list[ValveRecord]) -> ExitCode:
             records.extend(pool.map(job, entries))
     finally:
         history.close()
+    _note_came_back(args, records)
     for record in records:
         printer.say(str(record.serial), summary(record))
     return overall(records)
+
+
+def _note_came_back(args: argparse.Namespace, records: list[ValveRecord]) -> None:
+    """A valve whose link broke and that is listed again after the run is reported as back
+    (``came_back``); it is not uploaded again (no silent retries: the operator decides)."""
+    broken = {r.serial for r in records if r.result == "communication-error" and r.serial}
+    if broken:
+        back = listed_again(args, broken)
+        for record in records:
+            if record.result == "communication-error":
+                record.came_back = back.get(record.serial)
 
 
 # --- download -----------------------------------------------------------------------------------

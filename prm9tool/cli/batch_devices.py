@@ -6,11 +6,14 @@ from __future__ import annotations
 
 import argparse
 import json
+import logging
 import sys
 
 from prm9tool.device.factory import (
     CAN,
+    EMULATOR,
     NOT_PRM9,
+    USB,
     CanOptions,
     DeviceEntry,
     can_entries,
@@ -28,6 +31,8 @@ from prm9tool.errors import (
     Prm9Error,
     TypeKeyError,
 )
+
+log = logging.getLogger(__name__)
 
 
 class BatchError(Exception):
@@ -197,3 +202,17 @@ def open_valve(
         type_key=type_key,
         label_key=label_key,
     )
+
+
+def listed_again(args: argparse.Namespace, serials: set[int]) -> dict[int, str]:
+    """After the run: the valves among ``serials`` that are listed now (serial → device ID),
+    on the links the command line names. One listing, no retry; nothing is opened. A listing
+    that fails finds none."""
+    found: list[DeviceEntry] = []
+    for listing in (lambda: _emulators(args), lambda: _usb(required=False), lambda: _can(args)):
+        try:
+            found += listing()
+        except (BatchError, Prm9Error) as exc:
+            log.info("listing the valves again failed: %s", exc)
+    openable = (CAN, USB, EMULATOR)
+    return {e.serial: e.device_id for e in found if e.kind in openable and e.serial in serials}

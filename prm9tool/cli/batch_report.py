@@ -58,6 +58,7 @@ class ValveRecord:
     absent_in_file: list[str] = field(default_factory=list)  # marked absent: never uploaded
     history: str | None = None  # "recorded", "queued" or why it was not recorded
     store: str | None = None  # how the valve keeps the set ("stored with 0x1010", …; CANopen)
+    came_back: str | None = None  # after a communication error: listed again there (not retried)
     current: dict[str, Any] | None = field(default=None, repr=False)  # --dry-run: as read
 
     @property

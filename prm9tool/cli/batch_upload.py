@@ -26,7 +26,13 @@ Opener = Callable[..., ValveSession]
 def summary(record: ValveRecord) -> str:
     """One valve\'s outcome as the last progress line says it."""
     text = f"{record.result} ({record.duration_s:.2f} s)"
-    return f"{text}: {record.error}" if record.error else text
+    text = f"{text}: {record.error}" if record.error else text
+    if record.came_back:
+        text += (
+            f"; the valve is connected again ({record.came_back}) but was not uploaded "
+            "again: run the batch for it once more"
+        )
+    return text
 
 
 class UploadJob:
