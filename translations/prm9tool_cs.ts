@@ -701,6 +701,10 @@ Poslední akce možná nebyla dokončena. Uložte svou práci pod novým názvem
             <translation>ventil nedokončil start</translation>
         </message>
         <message>
+            <source>flow characteristic not measured: this valve has no object for {0} over this link (measure it over USB)</source>
+            <translation>Průtoková charakteristika nebyla změřena: ventil nemá po tomto spojení objekt pro {0} (změřte ji přes USB)</translation>
+        </message>
+        <message>
             <source>the flow characteristic is measured on E04 valves (with an actuator)</source>
             <translation>průtoková charakteristika se měří na ventilech E04 (s akčním členem)</translation>
         </message>

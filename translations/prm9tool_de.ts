@@ -699,6 +699,10 @@ Die letzte Aktion wurde womöglich nicht vollständig ausgeführt. Speichern Sie
             <translation>das Ventil hat den Start nicht abgeschlossen</translation>
         </message>
         <message>
+            <source>flow characteristic not measured: this valve has no object for {0} over this link (measure it over USB)</source>
+            <translation>Durchflusskennlinie nicht gemessen: Dieses Ventil hat über diese Verbindung kein Objekt für {0} (über USB messen)</translation>
+        </message>
+        <message>
             <source>the flow characteristic is measured on E04 valves (with an actuator)</source>
             <translation>die Durchflusskennlinie wird an E04-Ventilen (mit Stellglied) gemessen</translation>
         </message>
