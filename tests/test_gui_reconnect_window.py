@@ -165,3 +165,13 @@ def test_an_upload_cut_off_reports_and_is_not_resumed(qtbot, window, answers, mo
     assert "nothing is sent again by itself" in report
     qtbot.waitUntil(lambda: bool(offered) or window.sync.active, timeout=TIMEOUT)
     assert finished == ["compare"]  # the comparison; the upload did not run again by itself
+
+
+def test_going_offline_stops_the_search(qtbot, window):
+    pull_cable(qtbot, window)
+    assert window.commands["offline"].isEnabled() and window.commands["online"].isEnabled()
+    with qtbot.waitSignal(window.connection.reconnect_ended, timeout=TIMEOUT):
+        window.commands["offline"].trigger()
+    assert not window.connection.is_reconnecting
+    assert window.status.mode_label.text() == "Mode: OFFLINE"
+    assert not window.commands["offline"].isEnabled()

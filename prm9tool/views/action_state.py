@@ -25,7 +25,7 @@ def enabled_actions(
         "can_bus": not online and not busy,
         "export_dcf": doc.variant.canopen,
         "od_browser": ready,
-        "offline": online,
+        "offline": online or connection.is_reconnecting,  # also: stop looking for a lost valve
         "upload": ready,
         "download": ready,
         "store": ready,

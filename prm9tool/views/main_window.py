@@ -235,6 +235,8 @@ class MainWindow(QMainWindow):
             lambda seconds: s.set_reconnecting(seconds, getattr(c.lost_valve, "serial", 0))
         )
         c.reconnect_ended.connect(lambda: s.set_reconnecting(None))
+        c.reconnect_ended.connect(self._update_actions)
+        c.lost.connect(self._update_actions)  # Go offline stops the search
         d.type_key_changed.connect(s.set_type_key)
         for signal in (d.modified_changed, d.path_changed):
             signal.connect(self._show_file)
