@@ -331,6 +331,29 @@ Poslední akce možná nebyla dokončena. Uložte svou práci pod novým názvem
         </message>
     </context>
     <context>
+        <name>CanLink</name>
+        <message>
+            <source>CANopen: prm9tool abandoned an SDO transfer: {0} (abort code {1})</source>
+            <translation>CANopen: prm9tool přerušil přenos SDO: {0} (kód přerušení {1})</translation>
+        </message>
+        <message>
+            <source>CANopen: the node did not answer an SDO request in time; asking again</source>
+            <translation>CANopen: Uzel neodpověděl na požadavek SDO včas; požadavek se opakuje</translation>
+        </message>
+        <message>
+            <source>CANopen: receiving stopped after an error of the CAN interface; go offline and connect again</source>
+            <translation>CANopen: Po chybě rozhraní CAN se příjem zastavil; přejděte do režimu offline a připojte se znovu</translation>
+        </message>
+        <message>
+            <source>CANopen: a received frame could not be processed: {0}</source>
+            <translation>CANopen: Přijatou zprávu nelze zpracovat: {0}</translation>
+        </message>
+        <message>
+            <source>CAN interface ({0}): {1}</source>
+            <translation>Rozhraní CAN ({0}): {1}</translation>
+        </message>
+    </context>
+    <context>
         <name>CanopenWindow</name>
         <message>
             <source>CANopen</source>

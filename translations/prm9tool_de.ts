@@ -329,6 +329,29 @@ Die letzte Aktion wurde womöglich nicht vollständig ausgeführt. Speichern Sie
         </message>
     </context>
     <context>
+        <name>CanLink</name>
+        <message>
+            <source>CANopen: prm9tool abandoned an SDO transfer: {0} (abort code {1})</source>
+            <translation>CANopen: prm9tool hat eine SDO-Übertragung abgebrochen: {0} (Abbruchcode {1})</translation>
+        </message>
+        <message>
+            <source>CANopen: the node did not answer an SDO request in time; asking again</source>
+            <translation>CANopen: Der Knoten hat auf eine SDO-Anfrage nicht rechtzeitig geantwortet; die Anfrage wird wiederholt</translation>
+        </message>
+        <message>
+            <source>CANopen: receiving stopped after an error of the CAN interface; go offline and connect again</source>
+            <translation>CANopen: Nach einem Fehler der CAN-Schnittstelle werden keine Telegramme mehr empfangen; offline gehen und neu verbinden</translation>
+        </message>
+        <message>
+            <source>CANopen: a received frame could not be processed: {0}</source>
+            <translation>CANopen: Ein empfangenes Telegramm konnte nicht verarbeitet werden: {0}</translation>
+        </message>
+        <message>
+            <source>CAN interface ({0}): {1}</source>
+            <translation>CAN-Schnittstelle ({0}): {1}</translation>
+        </message>
+    </context>
+    <context>
         <name>CanopenWindow</name>
         <message>
             <source>CANopen</source>
