@@ -106,7 +106,7 @@ def test_characterize_over_canopen_at_the_links_rate(can_valve, tmp_path, capsys
     code = main(args)
     err = capsys.readouterr().err
     if code == ExitCode.COMMUNICATION:  # a PC too loaded to keep the pace: said, not hidden
-        assert "the CANopen link did not keep one sample per" in err, err
+        assert "link lost" in err, err
         assert "nothing was interpolated" in err and not js.exists()
         assert can_valve.working("SETPOVRON") == 0
         return
@@ -114,8 +114,8 @@ def test_characterize_over_canopen_at_the_links_rate(can_valve, tmp_path, capsys
     report = json.loads(js.read_text(encoding="utf-8"))
     assert report["link"].startswith("CANopen node 10 (virtual "), report["link"]
     rate = report["sample_rate_hz"]
-    assert 20 <= rate <= 1000  # one SDO write + read per sample, never the USB's 5 kHz
-    assert f"one sample per {1000 / rate:g} ms" in report["link"]
+    assert rate == 1000  # the bus's pace: RPDO1 + SYNC + TPDO1 per ms, never the USB's 5 kHz
+    assert "TPDO1 at the tool's SYNC, one sample per 1 ms" in report["link"]
     figures = {f["name"]: f["value"] for f in report["figures"]}
     assert 0.9 < figures["static_gain"] < 1.1
     assert figures["step_25_rise_s"] > 0
@@ -133,7 +133,7 @@ def test_characterize_over_canopen_at_the_links_rate(can_valve, tmp_path, capsys
 def test_the_tuning_windows_rig_over_canopen(can_valve):
     from prm9tool.analysis.model import Targets
     from prm9tool.characterize.autotune import model_tune
-    from prm9tool.characterize.canrig import CanRig, rig_for_session
+    from prm9tool.characterize.canrig import CanRig, LinkTooSlowError, rig_for_session
     from prm9tool.characterize.procedures import step_test
     from prm9tool.device.canlink.session import CanopenSession
     from prm9tool.errors import Prm9Error
@@ -141,7 +141,10 @@ def test_the_tuning_windows_rig_over_canopen(can_valve):
     with CanopenSession(can_valve.options, 10) as session:
         rig = rig_for_session(session, "USB")  # what the Tuning window's runner does online
         assert isinstance(rig, CanRig) and rig.info.link.startswith("CANopen node 10")
-        step = step_test(rig, 25.0, duration_s=0.1)
+        try:
+            step = step_test(rig, 25.0, duration_s=0.1)
+        except LinkTooSlowError as exc:  # the documented refusal on a PC too loaded for 1 kHz
+            pytest.skip(f"this PC is too loaded to keep 1 kHz now: {exc}")
         assert step.figures is not None and step.figures.final == pytest.approx(25.0, abs=2.0)
         assert np.isnan(step.record.channels["controller_output"]).all()  # no object: no data
         with pytest.raises(Prm9Error, match="needs the controller's output"):
@@ -235,7 +238,7 @@ def test_the_tuning_window_online_over_canopen(qtbot, can_valve, monkeypatch):
         text = w.bode.result.text()
         # a PC too loaded to keep the pace is said in the status line, never hidden
         if "The link could not keep the test's sample rate." not in w.status.text():
-            assert "−3 dB at" in text, w.status.text()
+            assert "−3 dB: " in text and " Hz, −90°: " in text, w.status.text()
             assert "The link's sample rate limited the sweep to" in text
         if os.environ.get("PRM9TOOL_SCREENSHOTS"):
             w.grab().save(os.path.join(os.environ["PRM9TOOL_SCREENSHOTS"], "tuning_bode_can.png"))

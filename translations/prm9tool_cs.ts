@@ -175,8 +175,20 @@ Poslední akce možná nebyla dokončena. Uložte svou práci pod novým názvem
             <translation>rozmítaný sinus %1 … %2 Hz o ±%3 % kolem %4 %, %5 s</translation>
         </message>
         <message>
-            <source>−3 dB at %1 Hz, −90° at %2 Hz.</source>
-            <translation>−3 dB při %1 Hz, −90° při %2 Hz.</translation>
+            <source>above %1 Hz</source>
+            <translation>nad %1 Hz</translation>
+        </message>
+        <message>
+            <source>not reached</source>
+            <translation>nedosaženo</translation>
+        </message>
+        <message>
+            <source>−3 dB: %1, −90°: %2.</source>
+            <translation>−3 dB: %1, −90°: %2.</translation>
+        </message>
+        <message>
+            <source>%1 of %2 samples were lost on the link and left out of the estimate.</source>
+            <translation>%1 z %2 vzorků se na spojení ztratilo a do odhadu nebyly zahrnuty.</translation>
         </message>
         <message>
             <source>Amplitude:</source>
@@ -3445,6 +3457,10 @@ Ano načte a záznam zařadí do fronty; Ne nenačte nic.</translation>
         <message>
             <source>not reached</source>
             <translation>nedosaženo</translation>
+        </message>
+        <message>
+            <source>above {0}</source>
+            <translation>nad {0}</translation>
         </message>
         <message>
             <source>Step response %1 %</source>

@@ -175,8 +175,20 @@ Die letzte Aktion wurde womöglich nicht vollständig ausgeführt. Speichern Sie
             <translation>ein Sinus-Sweep %1 … %2 Hz von ±%3 % um %4 %, %5 s</translation>
         </message>
         <message>
-            <source>−3 dB at %1 Hz, −90° at %2 Hz.</source>
-            <translation>−3 dB bei %1 Hz, −90° bei %2 Hz.</translation>
+            <source>above %1 Hz</source>
+            <translation>über %1 Hz</translation>
+        </message>
+        <message>
+            <source>not reached</source>
+            <translation>nicht erreicht</translation>
+        </message>
+        <message>
+            <source>−3 dB: %1, −90°: %2.</source>
+            <translation>−3 dB: %1, −90°: %2.</translation>
+        </message>
+        <message>
+            <source>%1 of %2 samples were lost on the link and left out of the estimate.</source>
+            <translation>%1 von %2 Messwerten gingen auf der Verbindung verloren und wurden bei der Schätzung ausgelassen.</translation>
         </message>
         <message>
             <source>Amplitude:</source>
@@ -3434,6 +3446,10 @@ Ja lädt hoch und stellt den Eintrag in die Warteschlange; Nein lädt nichts hoc
         <message>
             <source>not reached</source>
             <translation>nicht erreicht</translation>
+        </message>
+        <message>
+            <source>above {0}</source>
+            <translation>über {0}</translation>
         </message>
         <message>
             <source>Step response %1 %</source>

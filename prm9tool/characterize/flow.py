@@ -81,7 +81,7 @@ def flow_test(
         low = max(low, 0.0)
     stimulus = np.concatenate([np.full(n, high), np.full(n, low)])
     with preserved(rig, [], changes):
-        rig.play(np.full(n, low), [FLOW_KEYS[1]])  # settle at the start
+        rig.play(np.full(n, low), [FLOW_KEYS[1]], gaps=True)  # settle at the start
         rec = record(rig, stimulus, list(FLOW_KEYS), centre_pct, amplitude_pct + 15.0)
     speed = velocity(rec.channels["process_actual"], fs)
     opening = rec.channels["position_actual"]

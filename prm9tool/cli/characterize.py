@@ -57,7 +57,7 @@ def run(args: argparse.Namespace) -> int:
         return ExitCode.USAGE
     for figure in result.figures:
         if figure.passed is False:
-            print(f"prm9tool: out of limits: {figure.name} = {figure.value:.4g} {figure.unit} "
+            print(f"prm9tool: out of limits: {figure.name} = {figure.text} "
                   f"(limit {figure.limit.text() if figure.limit else ''})", file=sys.stderr)  # fmt: skip
     verdict = "PASSED" if result.passed else "FAILED"
     print(f"{result.info.type_key} serial {result.info.serial}: {verdict}")

@@ -3,16 +3,18 @@
 TPDO1 carries the status word and, as entry 2, the actual position 0x6301 (control mode 2) or
 the process actual value 0x6381 (mode 4). While the node is OPERATIONAL, the scope sets TPDO1 to
 transmission type 1 (sent after every SYNC, table 7-12), produces SYNC at the chosen period
-(down to 1 ms, or what keeps the scope under half of a slower bus) and takes each TPDO1 as one sample; stopping stops the SYNC and puts the
-transmission type back. A SYNC without its TPDO1 counts as a lost sample, so the rate shown is
-the real one. Other measuring points, or a node that is not OPERATIONAL, are sampled by SDO
-(prm9tool.device.canlink.sampler).
+(down to 1 ms, or what keeps the scope under half of a slower bus) and takes each TPDO1 as one
+sample; stopping stops the SYNC and puts the transmission type back. Samples are placed by the
+number of the SYNC they answer (:mod:`prm9tool.device.canlink.sync_clock`): the stream has one
+row per SYNC period, and a SYNC without its TPDO1 (or one a busy PC could not send) is a NaN
+row — a gap in the curve at its time, counted as lost — so a 1 s square wave keeps its 1 s
+period whatever is lost. Other measuring points, or a node that is not OPERATIONAL, are sampled
+by SDO (prm9tool.device.canlink.sampler).
 """
 
 from __future__ import annotations
 
 import contextlib
-import threading
 import time
 from collections.abc import Sequence
 
@@ -20,13 +22,15 @@ import numpy as np
 
 from prm9tool.device.canlink.bus import CanNetwork
 from prm9tool.device.canlink.sdo import SdoChannel
-from prm9tool.errors import Prm9Error
+from prm9tool.device.canlink.sync_clock import SlotSamples, SyncClock
+from prm9tool.errors import DeviceDisconnectedError, Prm9Error
 
 MIN_PERIOD_S = 0.001
 SYNC_AND_TPDO1_BITS = (47 + 3) + (47 + 32 + 3)  # SYNC (no data) + TPDO1 (4 bytes) on the wire
 MAX_BUS_LOAD = 0.5  # decision: the scope takes at most half the bus, SDO and others need room
 SYNCHRONOUS_EVERY_SYNC = 1  # TPDO transmission type 1 (manual table 7-12)
 ENTRY2_KEYS = {0x6301: "position_actual", 0x6381: "process_actual"}
+SETTLE_S = 0.05  # a SYNC's slot is handed out this long after it (its TPDO1 has arrived)
 
 
 class NotPdoMappedError(Prm9Error):
@@ -60,16 +64,22 @@ class PdoSampler:
             raise NotPdoMappedError("another scope produces the SYNC on this bus")
         self.keys = tuple(keys)
         self.period_s = max(1.0 / rate_hz, min_period_s(shared.options.bitrate))
-        self.samples = 0
         self._shared, self._sdo, self._cob_id = shared, sdo, cob_id & 0x7FF
-        self._rows: list[float] = []
-        self._lock = threading.Lock()
+        self._clock = SyncClock(shared.network.send_message, self.period_s)
+        self._slots = SlotSamples(self._clock)
+        self._settle = max(2, round(SETTLE_S / self.period_s))
+        self._gaps = 0  # NaN rows handed out
         self._old_type = sdo.upload(0x1800, 2)
         sdo.download(0x1800, 2, bytes([SYNCHRONOUS_EVERY_SYNC]))
         shared.sync_owner = self
         shared.network.subscribe(self._cob_id, self._on_tpdo)
         self._started = time.monotonic()
-        shared.network.sync.start(self.period_s)
+        self._clock.start()
+
+    @property
+    def samples(self) -> int:
+        """TPDO1 frames received and placed so far."""
+        return self._slots.received
 
     @property
     def achieved_hz(self) -> float:
@@ -79,29 +89,27 @@ class PdoSampler:
 
     @property
     def lost(self) -> int:
-        """SYNC periods without a TPDO1 so far."""
-        expected = int((time.monotonic() - self._started) / self.period_s)
-        return max(expected - self.samples - 1, 0)  # the frame of the latest SYNC may be due
+        """SYNC periods handed out without a sample (NaN rows) so far."""
+        return self._gaps
 
     def read(self) -> np.ndarray:
-        """Rows received since the last call, shape (n, 1)."""
-        with self._lock:
-            rows, self._rows = self._rows, []
-        return np.asarray(rows, dtype=np.float64).reshape(len(rows), 1)
+        """One row per SYNC period up to one settling time ago, shape (n, 1); a period
+        without its TPDO1 is NaN. Raises the bus's error that stopped the SYNC."""
+        if self._clock.error is not None:
+            raise DeviceDisconnectedError(f"the CAN bus refused the SYNC ({self._clock.error})")
+        rows = self._slots.take(self._clock.ticks - self._settle)
+        self._gaps += int(np.isnan(rows[:, 0]).sum())
+        return rows
 
     def stop(self) -> None:
         """Stop the SYNC, stop listening, put TPDO1's transmission type back."""
-        network = self._shared.network
-        network.sync.stop()
-        network.unsubscribe(self._cob_id, self._on_tpdo)
+        self._clock.stop()
+        self._shared.network.unsubscribe(self._cob_id, self._on_tpdo)
         self._shared.sync_owner = None
         with contextlib.suppress(Prm9Error):  # a lost link: type 1 stays until the next reset
             self._sdo.download(0x1800, 2, self._old_type)
 
-    def _on_tpdo(self, _can_id: int, data: bytearray, _timestamp: float) -> None:
+    def _on_tpdo(self, _can_id: int, data: bytearray, timestamp: float) -> None:
         if len(data) < 4:
             return
-        value = int.from_bytes(bytes(data[2:4]), "little", signed=True)
-        with self._lock:
-            self._rows.append(float(value))
-        self.samples += 1
+        self._slots.put(timestamp, [float(int.from_bytes(bytes(data[2:4]), "little", signed=True))])

@@ -317,6 +317,15 @@ class CanopenSession(UploadSteps, ValveSession):
                 f"node {self.node_id}: the CAN bus refused to send 0x{cob_id:03X} ({exc})"
             ) from None
 
+    def listen(self, cob_id: int, callback: Callable[[int, bytearray, float], None]) -> None:
+        """Call ``callback(can_id, data, timestamp)`` for each frame with ``cob_id`` (a PDO),
+        from the bus's receive thread, until :meth:`unlisten`."""
+        self._shared.network.subscribe(cob_id, callback)
+
+    def unlisten(self, cob_id: int, callback: Callable[[int, bytearray, float], None]) -> None:
+        """Stop calling ``callback`` for ``cob_id``."""
+        self._shared.network.unsubscribe(cob_id, callback)
+
     def nmt(self, command: int) -> None:
         """Send an NMT command (:class:`~prm9tool.catalogue.commissioning.NmtCommand`) to this
         node on the bus (no answer comes; the heartbeat shows the new state)."""
