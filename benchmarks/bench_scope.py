@@ -33,9 +33,9 @@ from PySide6.QtWidgets import QApplication
 from prm9tool.model.document import ParameterDocument
 from prm9tool.online.connection import ValveConnection
 from prm9tool.scope import GeneratorSettings, TriggerMode, Waveform
-from prm9tool.views.scope import ScopeWidget
-from prm9tool.views.scope_display import ScopeDisplay
-from prm9tool.views.scope_generator import SetpointGenerator
+from prm9tool.views.scope.display import ScopeDisplay
+from prm9tool.views.scope.generator import SetpointGenerator
+from prm9tool.views.scope.widget import ScopeWidget
 
 TYPE_KEY = "PRM9-06.3Z11/30-24E02S02"
 KEYS = ("setpoint_raw", "position_actual", "current_a")

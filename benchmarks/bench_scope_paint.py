@@ -24,7 +24,7 @@ import numpy as np
 from bench_scope import RATE_HZ, SIZE, scope_on
 from PySide6.QtWidgets import QApplication, QGraphicsItem
 
-from prm9tool.views.scope import ScopeWidget
+from prm9tool.views.scope.widget import ScopeWidget
 
 sys.path.insert(0, str(Path(__file__).resolve().parent.parent / "tests"))
 from scope_fakes import FakeConnection  # the scope tests' stand-in connection

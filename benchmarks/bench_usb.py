@@ -21,8 +21,8 @@ import time
 from prm9tool.catalogue import CATALOGUE
 from prm9tool.catalogue.typekey import TypeKey
 from prm9tool.device.emulator import EmulatedValve
-from prm9tool.device.transport.emulator import SLOT_S, EmulatorTransport
-from prm9tool.device.usb_session import UsbSession
+from prm9tool.device.usb.session import UsbSession
+from prm9tool.device.usb.transport.emulator import SLOT_S, EmulatorTransport
 
 E04 = "PRM9-06.3Z11/30-24E04S02-CA"
 REPORT = 64

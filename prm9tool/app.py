@@ -117,7 +117,7 @@ def create_window(args: argparse.Namespace) -> MainWindow:
     from prm9tool.model.undo import DocumentUndo
     from prm9tool.online.connection import ValveConnection
     from prm9tool.views.main_window import MainWindow
-    from prm9tool.views.valve_selection import DEFAULT_TYPE_KEY
+    from prm9tool.views.valve.selection import DEFAULT_TYPE_KEY
 
     settings = QSettings()
     language = str(settings.value("language", i18n.system_language()))

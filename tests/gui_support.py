@@ -78,7 +78,7 @@ def _modal_dialogs() -> list[type]:
     from prm9tool.views.can_bus_dialog import CanBusDialog
     from prm9tool.views.hid_dialog import EmulatorDialog, HidConfigurationDialog
     from prm9tool.views.online_dialogs import OnlineDiffDialog, RestartDialog
-    from prm9tool.views.valve_selection import ValveSelectionDialog
+    from prm9tool.views.valve.selection import ValveSelectionDialog
 
     return [
         QPrintDialog, ChangePasswordDialog, PasswordDialog, EmulatorDialog,

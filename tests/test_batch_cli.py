@@ -23,8 +23,8 @@ from prm9tool.cli import batch
 from prm9tool.cli.main import main
 from prm9tool.device import factory
 from prm9tool.device.emulator import EmulatedValve
-from prm9tool.device.transport.emulator import EmulatorTransport, LinkFaults
-from prm9tool.device.usb_session import UsbSession
+from prm9tool.device.usb.session import UsbSession
+from prm9tool.device.usb.transport.emulator import EmulatorTransport, LinkFaults
 from prm9tool.errors import AbortCode, ExitCode, SdoAbortError
 from prm9tool.files.prmfile import PrmContents, read_file, write_file
 

@@ -53,8 +53,8 @@ def test_every_answer_is_placed_by_the_number_of_its_sync_and_a_stall_leaves_a_g
     assert clock.wait_ticks(100, 10.0)
     rows = slots.take(100)[:, 0]
     arrived = ~np.isnan(rows)
-    assert clock.skipped >= 8 and (~arrived).sum() == clock.skipped + clock.voided
-    assert not arrived[20:29].any()  # the stall is a gap where it happened …
+    assert clock.skipped >= 5 and (~arrived).sum() == clock.skipped + clock.voided
+    assert not arrived[20:26].any()  # the stall is a gap where it happened …
     # … and every sample sits where its time is: the valve's clock agrees with the SYNC count
     # (a busy test machine delays single ticks by up to half a period before they are skipped)
     k = np.flatnonzero(arrived)

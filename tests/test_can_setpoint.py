@@ -14,7 +14,7 @@ from waiting import HandClock, wait_for
 from prm9tool.catalogue.commissioning import CONTROL_WORD, ENABLE_SEQUENCE, NmtCommand
 from prm9tool.device.canlink.rpdo_setpoint import DEADLINE_MS, RpdoSetpoint, RpdoSetpointError
 from prm9tool.device.canlink.session import CanopenSession
-from prm9tool.device.emulator.states import DeviceState
+from prm9tool.device.records import DeviceState
 from prm9tool.online.setpoint_driver import SetpointDriver
 from prm9tool.scope import GeneratorSettings, Waveform
 
@@ -139,7 +139,7 @@ def test_the_scopes_generator_over_can_refuses_then_runs_and_stops(qtbot, tmp_pa
     from prm9tool.device import factory
     from prm9tool.online.connection import ValveConnection
     from prm9tool.online.valve_control import ValveControl
-    from prm9tool.views.scope_generator import SetpointGenerator
+    from prm9tool.views.scope.generator import SetpointGenerator
 
     rig = make_link_rig("rpdo-gui", tmp_path)
     rig.valve.start()

@@ -12,7 +12,7 @@ from pathlib import Path
 import pytest
 from canopen_rig import E02, Rig, make_rig
 
-from prm9tool.device.emulator import DeviceState
+from prm9tool.device.records import DeviceState
 
 DOC = Path(__file__).resolve().parent.parent / "docs" / "canopen.md"
 FRAME = re.compile(r"[0-9A-F]{3}( [0-9A-F]{2}){0,8}")  # "COB-ID data bytes" as the manual writes

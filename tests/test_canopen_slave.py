@@ -8,7 +8,8 @@ import can
 import pytest
 from canopen_rig import E02, E04, Rig, make_rig, unique_channel
 
-from prm9tool.device.emulator import DeviceState, EmulatedValve, Fault
+from prm9tool.device.emulator import EmulatedValve, Fault
+from prm9tool.device.records import DeviceState
 from prm9tool.errors import AccessDeniedError
 
 

@@ -18,7 +18,7 @@ from prm9tool.catalogue.commissioning import ENABLE_SEQUENCE, NmtCommand
 from prm9tool.cli.main import main
 from prm9tool.device import factory
 from prm9tool.device.emulator import EmulatedValve
-from prm9tool.device.transport.hidapi import HidTransport
+from prm9tool.device.usb.transport.hidapi import HidTransport
 from prm9tool.errors import ExitCode
 
 E02 = "PRM9-06.3Z11/30-24E02S02"
@@ -218,7 +218,7 @@ def test_the_tuning_window_online_over_canopen(qtbot, can_valve, monkeypatch):
 
     from prm9tool.model.document import ParameterDocument
     from prm9tool.online.connection import ValveConnection
-    from prm9tool.views.tuning_window import TuningWindow
+    from prm9tool.views.tuning.window import TuningWindow
 
     connection = ValveConnection(
         opener=lambda e: factory.open_session(e, can_link=can_valve.options)

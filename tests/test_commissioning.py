@@ -20,11 +20,11 @@ from prm9tool.catalogue.commissioning import (
 )
 from prm9tool.device import factory
 from prm9tool.device.emulator import EmulatedValve
-from prm9tool.device.protocol import Nmt, decode_request, encode_request
-from prm9tool.device.protocol.wire import MalformedReportError
-from prm9tool.device.transport.emulator import EmulatorTransport
-from prm9tool.device.transport.hidapi import HidTransport
-from prm9tool.device.usb_session import UsbSession
+from prm9tool.device.usb.protocol import Nmt, decode_request, encode_request
+from prm9tool.device.usb.protocol.wire import MalformedReportError
+from prm9tool.device.usb.session import UsbSession
+from prm9tool.device.usb.transport.emulator import EmulatorTransport
+from prm9tool.device.usb.transport.hidapi import HidTransport
 from prm9tool.errors import DeviceDisconnectedError
 
 CA = "PRM9-06.3Z11/30-24E02S02-CA"

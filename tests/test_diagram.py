@@ -16,7 +16,7 @@ from prm9tool.model.document import ParameterDocument
 from prm9tool.model.undo import DocumentUndo
 from prm9tool.views.diagram import DiagramView, format_signal
 from prm9tool.views.diagram.dialogs import BlockDialog
-from prm9tool.views.valve_selection import ValveSelectionDialog
+from prm9tool.views.valve.selection import ValveSelectionDialog
 
 E02 = "PRM9-06.3Z11/30-24E02S02"
 E02_A = "PRM9-06.2Z51/30-24E02S02"

@@ -5,8 +5,9 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from prm9tool.device.emulator import DeviceState, EmulatedValve
+from prm9tool.device.emulator import EmulatedValve
 from prm9tool.device.emulator.analysis import step_response
+from prm9tool.device.records import DeviceState
 
 CYCLE = EmulatedValve.CYCLE_S
 FULL = 16384

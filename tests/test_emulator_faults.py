@@ -7,9 +7,10 @@ import dataclasses
 import pytest
 
 from prm9tool.catalogue.typekey import TypeKey
-from prm9tool.device.emulator import DeviceState, EmulatedValve, Fault, detect
+from prm9tool.device.emulator import EmulatedValve, Fault, detect
 from prm9tool.device.emulator.constants import FIRMWARE, PLANT
 from prm9tool.device.emulator.firmware import Firmware
+from prm9tool.device.records import DeviceState
 
 E04_CA_ANALOG = "PRM9-06.3Z11/30-24E04S02-CA"
 FULL = 16384

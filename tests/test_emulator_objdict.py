@@ -5,7 +5,8 @@ from __future__ import annotations
 import pytest
 
 from prm9tool.catalogue import CATALOGUE
-from prm9tool.device.emulator import DeviceState, EmulatedValve
+from prm9tool.device.emulator import EmulatedValve
+from prm9tool.device.records import DeviceState
 from prm9tool.errors import AbortCode, SdoAbortError
 
 E02_CA = "PRM9-06.3Z11/30-24E02S02-CA"

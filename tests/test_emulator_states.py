@@ -4,8 +4,9 @@ from __future__ import annotations
 
 import pytest
 
-from prm9tool.device.emulator import DeviceState, EmulatedValve, Fault
+from prm9tool.device.emulator import EmulatedValve, Fault
 from prm9tool.device.emulator.statemachine import DeviceStateMachine
+from prm9tool.device.records import DeviceState
 from prm9tool.errors import AbortCode, SdoAbortError, ValueRangeError
 
 S = DeviceState

@@ -10,7 +10,7 @@ from gui_support import E02, E04_CA, emulator_connection
 from PySide6.QtCore import QTimer
 
 from prm9tool.device import factory
-from prm9tool.device.transport.emulator import LinkFaults
+from prm9tool.device.usb.transport.emulator import LinkFaults
 from prm9tool.errors import CommunicationError
 from prm9tool.files import backup
 from prm9tool.online.connection import ValveConnection

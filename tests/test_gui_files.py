@@ -11,7 +11,7 @@ from PySide6.QtWidgets import QFileDialog
 from prm9tool.catalogue.typekey import TypeKey
 from prm9tool.files import prmfile
 from prm9tool.views import prompts
-from prm9tool.views.valve_selection import ValveSelectionDialog
+from prm9tool.views.valve.selection import ValveSelectionDialog
 
 Accepted = ValveSelectionDialog.DialogCode.Accepted
 

@@ -12,7 +12,7 @@ from prm9tool.model.password import DEFAULT_PASSWORD, PasswordStore
 from prm9tool.views import main_window as main_window_module
 from prm9tool.views import prompts
 from prm9tool.views.access_dialog import ChangePasswordDialog, PasswordDialog
-from prm9tool.views.valve_selection import ValveSelectionDialog
+from prm9tool.views.valve.selection import ValveSelectionDialog
 
 Accepted = ValveSelectionDialog.DialogCode.Accepted
 Rejected = ValveSelectionDialog.DialogCode.Rejected

@@ -17,7 +17,7 @@ from prm9tool.model.editing import apply_edit
 from prm9tool.model.undo import DocumentUndo
 from prm9tool.views.hid_dialog import HidConfigurationDialog
 from prm9tool.views.parameter_view import ParameterListView
-from prm9tool.views.valve_selection import ValveSelectionDialog
+from prm9tool.views.valve.selection import ValveSelectionDialog
 
 
 @pytest.fixture
@@ -214,7 +214,7 @@ def test_device_errors_lead_with_a_sentence_in_the_program_language(language, er
 
 
 def test_a_refused_value_leads_with_the_refusal_and_keeps_the_abort_code(language):
-    from prm9tool.device.entries import RefusedError
+    from prm9tool.device.records import RefusedError
     from prm9tool.errors import AbortCode, SdoAbortError
     from prm9tool.translate import error_text
 

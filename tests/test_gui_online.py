@@ -18,7 +18,7 @@ from gui_support import (
 )
 from PySide6.QtWidgets import QDialog, QLabel, QPushButton
 
-from prm9tool.device.transport.emulator import LinkFaults
+from prm9tool.device.usb.transport.emulator import LinkFaults
 from prm9tool.files import backup
 from prm9tool.views import prompts
 from prm9tool.views.online_dialogs import DiffChoice, OnlineDiffDialog, RestartDialog

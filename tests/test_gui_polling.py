@@ -5,9 +5,9 @@ from __future__ import annotations
 import pytest
 
 from prm9tool.device.emulator import EmulatedValve
-from prm9tool.device.protocol import Op
-from prm9tool.device.transport.emulator import EmulatorTransport
-from prm9tool.device.usb_session import UsbSession
+from prm9tool.device.usb.protocol import Op
+from prm9tool.device.usb.session import UsbSession
+from prm9tool.device.usb.transport.emulator import EmulatorTransport
 from prm9tool.online.polling import Poller
 
 E04_CA = "PRM9-10.3Z11/60-24E04S02-CA"

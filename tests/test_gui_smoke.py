@@ -34,7 +34,7 @@ from prm9tool.views.hid_dialog import EmulatorDialog, HidConfigurationDialog
 from prm9tool.views.online_dialogs import OnlineDiffDialog, RestartDialog
 from prm9tool.views.parameter_dialog import ParameterEditDialog
 from prm9tool.views.parameter_model import Column
-from prm9tool.views.valve_selection import ValveSelectionDialog
+from prm9tool.views.valve.selection import ValveSelectionDialog
 
 TIMEOUT = 15_000
 E02 = "PRM9-06.3Z11/30-24E02S02"

@@ -15,7 +15,7 @@ from prm9tool.model.document import ParameterDocument
 from prm9tool.model.undo import DocumentUndo
 from prm9tool.views.diagram.dialogs import create_block_dialog
 from prm9tool.views.diagram.dialogs.base import BlockContext
-from prm9tool.views.tuning_window import TuningWindow
+from prm9tool.views.tuning.window import TuningWindow
 
 E02 = "PRM9-06.3Z11/30-24E02S02"
 E04 = "PRM9-06.3Z11/30-24E04S02"
@@ -261,7 +261,7 @@ def test_e04_flow_page_measures_and_applies_the_offsets(qtbot):
 
 def test_proposed_gains_use_the_decimal_separator_of_the_language(qapp):
     from prm9tool import i18n
-    from prm9tool.views.tuning_window import gain_text
+    from prm9tool.views.tuning.host import gain_text
 
     i18n.set_language("cs")
     try:
@@ -276,7 +276,7 @@ def test_report_figures_use_the_decimal_separator_of_the_language(qapp):
     from prm9tool import i18n
     from prm9tool.analysis.profile import Limit
     from prm9tool.characterize.run import Figure
-    from prm9tool.views.tuning_report import limit_text, value_text
+    from prm9tool.views.tuning.report import limit_text, value_text
 
     gain = Figure("gain", "gain", 1.14, "", Limit(0.95, 1.05))
     rise = Figure("rise", "rise time", 0.0162, "s", Limit(None, 0.03))
@@ -295,7 +295,7 @@ def test_an_untrustworthy_fit_proposes_no_gains_without_an_explicit_override(
     """A fit error above the threshold (docs/tuning.md) disables Accept until the user insists."""
     from dataclasses import replace
 
-    import prm9tool.views.tuning_pages as pages
+    import prm9tool.views.tuning.pages as pages
     from prm9tool.characterize.autotune import model_tune
 
     def badly_fitted(*args, **kwargs):
@@ -321,7 +321,7 @@ def test_the_legend_goes_to_the_corner_the_curves_leave_free(qapp):
     """A step response fills the top right (where the legend used to be): the legend moves."""
     from PySide6.QtCore import QRectF
 
-    from prm9tool.views.tuning_plot import legend_box
+    from prm9tool.views.tuning.plot import legend_box
 
     area = QRectF(0, 0, 400, 200)
     t = np.linspace(0, 400, 401)

@@ -14,7 +14,7 @@ from PySide6.QtCore import Qt
 from prm9tool.catalogue.typekey import TypeKey
 from prm9tool.catalogue.variant import Config
 from prm9tool.views import prompts
-from prm9tool.views.valve_selection import ValveSelectionDialog
+from prm9tool.views.valve.selection import ValveSelectionDialog
 
 Accepted = ValveSelectionDialog.DialogCode.Accepted
 

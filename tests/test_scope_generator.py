@@ -8,7 +8,7 @@ from scope_fakes import FakeConnection
 from prm9tool.model.document import ParameterDocument
 from prm9tool.scope import GeneratorSettings, Waveform
 from prm9tool.views import prompts
-from prm9tool.views.scope import ScopeWidget
+from prm9tool.views.scope.widget import ScopeWidget
 
 YES, NO = prompts.Button.Yes, prompts.Button.No
 

@@ -14,7 +14,7 @@ from prm9tool import i18n
 from prm9tool.catalogue.signals import signals_for
 from prm9tool.model.document import ParameterDocument
 from prm9tool.scope import TriggerMode
-from prm9tool.views.scope import ScopeWidget
+from prm9tool.views.scope.widget import ScopeWidget
 
 E02 = "PRM9-06.3Z11/30-24E02S02"
 E04 = "PRM9-10.2Z51/60-24E04S02-CA"

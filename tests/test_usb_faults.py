@@ -12,9 +12,9 @@ from valve_sets import changed_set
 from prm9tool.catalogue import CATALOGUE
 from prm9tool.catalogue.typekey import TypeKey
 from prm9tool.device.emulator import EmulatedValve, usb_firmware
-from prm9tool.device.session import OperationCancelledError
-from prm9tool.device.transport.emulator import EmulatorTransport, LinkFaults
-from prm9tool.device.usb_session import UsbSession
+from prm9tool.device.records import OperationCancelledError
+from prm9tool.device.usb.session import UsbSession
+from prm9tool.device.usb.transport.emulator import EmulatorTransport, LinkFaults
 from prm9tool.errors import DeviceDisconnectedError, DeviceTimeoutError, ProtocolError
 
 E04 = "PRM9-06.3Z11/30-24E04S02-CA"
@@ -252,7 +252,7 @@ def test_cancelled_download(link):
 def test_the_transport_logs_reports_and_retries(link, caplog):
     _valve, session, transport = link
     transport.faults = LinkFaults(drop=frozenset({transport.reports_on_link + 1}))
-    with caplog.at_level(logging.DEBUG, logger="prm9tool.device.transport"):
+    with caplog.at_level(logging.DEBUG, logger="prm9tool.device.usb.transport"):
         session.read("SNV")
     lines = [record.getMessage() for record in caplog.records]
     seq = transport._seq

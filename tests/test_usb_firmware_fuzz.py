@@ -20,7 +20,7 @@ from hypothesis import strategies as st
 from prm9tool.catalogue import CATALOGUE
 from prm9tool.device.emulator import EmulatedValve
 from prm9tool.device.emulator.usb_firmware import UsbFirmware
-from prm9tool.device.protocol import (
+from prm9tool.device.usb.protocol import (
     ERROR_OP,
     AbortReply,
     MalformedReportError,

@@ -11,8 +11,8 @@ from valve_sets import changed_set
 
 from prm9tool.device import factory
 from prm9tool.device.emulator import EmulatedValve
-from prm9tool.device.transport.hidapi import HidTransport, UsbFilter, load_hid
-from prm9tool.device.usb_session import UsbSession
+from prm9tool.device.usb.session import UsbSession
+from prm9tool.device.usb.transport.hidapi import HidTransport, UsbFilter, load_hid
 from prm9tool.errors import CommunicationError, DeviceDisconnectedError
 
 E02 = "PRM9-06.3Z11/30-24E02S02"

@@ -13,7 +13,7 @@ import pytest
 
 from prm9tool.device.emulator import EmulatedValve, Fault
 from prm9tool.device.emulator.usb_firmware import UsbFirmware
-from prm9tool.device.protocol import (
+from prm9tool.device.usb.protocol import (
     AbortReply,
     Done,
     Identify,

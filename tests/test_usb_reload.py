@@ -10,7 +10,8 @@ from valve_sets import changed_set
 from prm9tool.catalogue import CATALOGUE
 from prm9tool.device.emulator import EmulatedValve
 from prm9tool.device.emulator.usb_firmware import UsbFirmware
-from prm9tool.device.protocol import (
+from prm9tool.device.records import OperationCancelledError
+from prm9tool.device.usb.protocol import (
     Done,
     Op,
     Reload,
@@ -20,9 +21,8 @@ from prm9tool.device.protocol import (
     encode_request,
     encode_response,
 )
-from prm9tool.device.session import OperationCancelledError
-from prm9tool.device.transport.emulator import EmulatorTransport, LinkFaults
-from prm9tool.device.usb_session import UsbSession
+from prm9tool.device.usb.session import UsbSession
+from prm9tool.device.usb.transport.emulator import EmulatorTransport, LinkFaults
 from prm9tool.errors import AbortCode, DeviceDisconnectedError, DeviceTimeoutError, SdoAbortError
 
 E04 = "PRM9-06.3Z11/30-24E04S02-CA"

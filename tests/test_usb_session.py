@@ -11,9 +11,9 @@ from valve_sets import changed_set
 from prm9tool.catalogue import CATALOGUE
 from prm9tool.device.emulator import EmulatedValve, Fault
 from prm9tool.device.emulator.usb_firmware import UsbFirmware
-from prm9tool.device.session import OperationCancelledError
-from prm9tool.device.transport.emulator import EmulatorTransport
-from prm9tool.device.usb_session import UsbSession
+from prm9tool.device.records import OperationCancelledError
+from prm9tool.device.usb.session import UsbSession
+from prm9tool.device.usb.transport.emulator import EmulatorTransport
 from prm9tool.errors import AbortCode, Prm9Error, SdoAbortError, ValueRangeError
 from prm9tool.files.backup import ensure_backup
 from prm9tool.files.prmfile import read_file

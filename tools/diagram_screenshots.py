@@ -31,7 +31,7 @@ from prm9tool.model.undo import DocumentUndo
 from prm9tool.online.tuning import StepSimulator
 from prm9tool.views.canopen_window import CanopenWindow
 from prm9tool.views.diagram import DiagramView
-from prm9tool.views.valve_selection import ValveSelectionDialog
+from prm9tool.views.valve.selection import ValveSelectionDialog
 
 VARIANTS = {
     "diagram_e02.png": "PRM9-06.3Z11/30-24E02S02",

@@ -27,7 +27,7 @@ from PySide6.QtWidgets import QApplication
 from prm9tool.model.document import ParameterDocument
 from prm9tool.online.connection import ValveConnection
 from prm9tool.scope import Edge, TriggerMode, Waveform
-from prm9tool.views.scope import ScopeWidget
+from prm9tool.views.scope.widget import ScopeWidget
 
 TYPE_KEY = "PRM9-06.3Z11/30-24E02S02"
 OUTPUT = Path("docs/screenshots/scope_step_response.png")

@@ -62,7 +62,7 @@ __all__ = ["CanRig", "LinkTooSlowError", "rig_for_session"]
 
 if TYPE_CHECKING:
     from prm9tool.device.canlink.session import CanopenSession
-    from prm9tool.device.emulator.states import ValveStatus
+    from prm9tool.device.records import ValveStatus
     from prm9tool.device.session import ValveSession
     from prm9tool.device.setpoint import SetpointLink
 

@@ -20,7 +20,7 @@ from typing import TYPE_CHECKING, TypeVar
 import numpy as np
 
 from prm9tool.catalogue import CATALOGUE
-from prm9tool.device.emulator.states import DeviceState, ValveStatus
+from prm9tool.device.records import DeviceState, NmtState, ValveStatus
 from prm9tool.errors import CommunicationError, Prm9Error
 from prm9tool.messages import QT_TRANSLATE_NOOP
 
@@ -152,7 +152,9 @@ class Rig(ABC):
                 )(f"{status.error_code:#06x}", status.error_text)
             )
         if status.device_state is not DeviceState.DEVICE_MODE_ACTIVE:
-            waiting = status.device_state is DeviceState.INIT and status.nmt_state != "off"
+            waiting = (
+                status.device_state is DeviceState.INIT and status.nmt_state is not NmtState.OFF
+            )
             template = (
                 QT_TRANSLATE_NOOP(
                     "Characterize",

@@ -120,7 +120,7 @@ def _write(result: Characterization, outputs: tuple[Path | None, Path | None]) -
     stem = (pdf or js or Path("report")).with_suffix("")
     csv_files = write_csv_files(result, stem)
     if pdf is not None:
-        from prm9tool.views.tuning_report import write_pdf
+        from prm9tool.views.tuning.report import write_pdf
 
         write_pdf(result, pdf)
     if js is not None:

@@ -21,6 +21,7 @@ from prm9tool.catalogue.canopen_switches import POSITIONS, node_position
 from prm9tool.device import factory
 from prm9tool.device.canlink.bus import CanOptions, open_bus
 from prm9tool.device.canlink.status import emcy_text
+from prm9tool.device.records import DeviceState, NmtState
 from prm9tool.errors import CanAdapterError, ExitCode, Prm9Error, TypeKeyError
 
 if TYPE_CHECKING:
@@ -34,8 +35,8 @@ class _Served:
     valve: EmulatedValve
     close: Callable[[], None]
     emcy: list[str]  # EMCY lines the valve's error listener queued
-    nmt: str = ""
-    state: str = ""
+    nmt: NmtState | None = None  # None: not reported yet
+    state: DeviceState | None = None
 
 
 def run(args: argparse.Namespace) -> int:
@@ -107,7 +108,10 @@ def _report_changes(item: _Served, options: CanOptions) -> None:
     while item.emcy:
         _say(f"serial {item.valve.serial} node {item.valve.node_id}: {item.emcy.pop(0)}")
     if status.nmt_state != item.nmt:
-        if item.nmt in ("", "initialising") and status.nmt_state == "pre-operational":
+        if (
+            item.nmt in (None, NmtState.INITIALISING)
+            and status.nmt_state is NmtState.PRE_OPERATIONAL
+        ):
             _say(f"serial {item.valve.serial} node {item.valve.node_id}: on the bus {options}")
         item.nmt = status.nmt_state
         _say(f"serial {item.valve.serial} node {item.valve.node_id}: NMT {status.nmt_state}")

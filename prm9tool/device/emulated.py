@@ -19,7 +19,7 @@ from prm9tool.errors import ValueRangeError
 
 if TYPE_CHECKING:
     from prm9tool.device.emulator import EmulatedValve
-    from prm9tool.device.transport.emulator import EmulatorTransport
+    from prm9tool.device.usb.transport.emulator import EmulatorTransport
 
 INPUTS = ("setpoint", "sensor", "supply_voltage", "ambient_temperature")
 SWITCHES = ("switch_baud", "switch_node")

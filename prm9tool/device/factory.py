@@ -18,6 +18,7 @@ from typing import TYPE_CHECKING, Any
 
 from prm9tool.catalogue.typekey import DEFAULT_EMULATOR_TYPE_KEY, TypeKey
 from prm9tool.device.canlink.bus import CanOptions
+from prm9tool.device.records import NmtState
 from prm9tool.device.session import ValveSession
 from prm9tool.errors import CanBusError, CommunicationError, Prm9Error, TypeKeyError
 
@@ -42,7 +43,7 @@ class DeviceEntry:
     serial: int
     firmware: str
     description: str
-    nmt_state: str = ""  # CAN nodes: as the heartbeat said during the scan
+    nmt_state: NmtState | None = None  # CAN nodes: as the heartbeat said during the scan
     heartbeat_age_s: float | None = None  # CAN nodes: seconds since the last heartbeat
     last_emcy: str = ""  # CAN nodes: the last EMCY heard ("" none)
     error: Exception | None = None  # emulator-unusable: why, for the program language
@@ -142,7 +143,7 @@ def _emulator_entry(valve: EmulatedValve) -> DeviceEntry:
 
 def usb_entries() -> list[DeviceEntry]:
     """Entries for the valves on USB (raises CommunicationError when hidapi is missing)."""
-    from prm9tool.device.discovery import usb_valves
+    from prm9tool.device.usb.discovery import usb_valves
 
     return [
         DeviceEntry(
@@ -159,7 +160,7 @@ def usb_entries() -> list[DeviceEntry]:
 
 def usb_unavailable_reason() -> str | None:
     """Why USB valves cannot be listed on this machine, or None if hidapi works."""
-    from prm9tool.device.transport.hidapi import load_hid
+    from prm9tool.device.usb.transport.hidapi import load_hid
 
     try:
         load_hid()
@@ -217,7 +218,7 @@ def can_entries(options: CanOptions) -> list[DeviceEntry]:
     return entries
 
 
-def _heard(seen: Any) -> tuple[str, float | None, str]:
+def _heard(seen: Any) -> tuple[NmtState | None, float | None, str]:
     """NMT state, heartbeat age and last EMCY of a node as the bus told them."""
     import time
 
@@ -300,9 +301,9 @@ def open_session(
 
 
 def _open_usb(path: str, device_id: str) -> ValveSession:
-    from prm9tool.device.discovery import find_serial
-    from prm9tool.device.transport.hidapi import HidTransport
-    from prm9tool.device.usb_session import UsbSession
+    from prm9tool.device.usb.discovery import find_serial
+    from prm9tool.device.usb.session import UsbSession
+    from prm9tool.device.usb.transport.hidapi import HidTransport
 
     serial_box: list[int] = []
     transport = HidTransport(path.encode(), finder=lambda: find_serial(serial_box[0]))
@@ -322,8 +323,8 @@ def _open_emulator(
     pacing: tuple[bool, bool],
     can: CanOptions | None,
 ) -> ValveSession:
-    from prm9tool.device.transport.emulator import EmulatorTransport
-    from prm9tool.device.usb_session import UsbSession
+    from prm9tool.device.usb.session import UsbSession
+    from prm9tool.device.usb.transport.emulator import EmulatorTransport
 
     valve = emulated_valve(type_key, serial)
     closers: list[Callable[[], None]] = []
@@ -348,8 +349,8 @@ def join_can(session: ValveSession, options: CanOptions) -> bool:
     session is not affected. The GUI calls this after going online: python-can's import
     (~0.2 s) is then off the way to "online" (docs/PERFORMANCE.md, Startup).
     """
-    from prm9tool.device.transport.emulator import EmulatorTransport
-    from prm9tool.device.usb_session import UsbSession
+    from prm9tool.device.usb.session import UsbSession
+    from prm9tool.device.usb.transport.emulator import EmulatorTransport
 
     if not isinstance(session, UsbSession):
         return False

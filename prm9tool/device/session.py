@@ -39,26 +39,26 @@ import threading
 import time
 from abc import ABC, abstractmethod
 from collections.abc import Callable, Mapping, Sequence
-from dataclasses import dataclass
 
 import numpy as np
 
 from prm9tool.catalogue import CATALOGUE, Parameter
 from prm9tool.catalogue.typekey import TypeKey
 from prm9tool.device.emulated import EmulatorControls
-from prm9tool.device.emulator.states import ValveStatus
-from prm9tool.device.entries import (
+from prm9tool.device.records import (
+    DeviceInfo,
     OperationCancelledError,
     Progress,
     RefusedError,
     Steps,
+    UploadResult,
     Value,
+    ValveStatus,
     check_cancel,
 )
 from prm9tool.device.setpoint import OverrideSetpoint, SetpointLink
 from prm9tool.device.upload_outcome import (
     RESTARTED_BEFORE_STORE,
-    UploadResult,
     differences,
     reload_outcome,
     since,
@@ -67,13 +67,7 @@ from prm9tool.device.upload_outcome import (
 from prm9tool.errors import CommunicationError, Prm9Error, SdoAbortError
 
 log = logging.getLogger("prm9tool.device.session")
-__all__ = [
-    "DeviceInfo",
-    "NotAvailableError",
-    "OperationCancelledError",
-    "UploadResult",
-    "ValveSession",
-]
+__all__ = ["NotAvailableError", "ValveSession"]
 
 
 class NotAvailableError(Prm9Error):
@@ -85,32 +79,13 @@ class NotAvailableError(Prm9Error):
         super().__init__(f"not available over CANopen on this valve: {', '.join(mnemonics)}")
 
 
-@dataclass(frozen=True)
-class DeviceInfo:
-    """Who the valve is (from the identification exchange)."""
-
-    type_key: str
-    serial: int
-    firmware: str
-    protocol_version: int
-    device_id: str
-    # parameters whose change moves the valve away from this link at its next power-up (over
-    # CANopen its node ID and bit rate); the GUI warns when one is changed online
-    link_parameters: tuple[str, ...] = ()
-    # over CAN: the bus (python-can interface, channel, bit rate in bit/s or None) it answers on
-    can_bus: tuple[str, str, int | None] | None = None
-    # the fastest oscilloscope sample rate the link delivers without losing samples (0: the
-    # valve's own 5 kHz stream); over CANopen the SYNC + TPDO1 pace of docs/can-link.md
-    stream_rate_limit_hz: float = 0.0
-
-
 class ValveSession(ABC):
     """One open valve, whatever the link: the interface the GUI, ``--batch`` and the backups use.
 
     The behaviour that must be the same on every link lives here once: range checks, the
     transactional upload (write all → read back and compare → store), download, parameters the
     valve lacks on this link (:attr:`unavailable`), close hooks. A link is one subclass
-    (:class:`prm9tool.device.usb_session.UsbSession`,
+    (:class:`prm9tool.device.usb.session.UsbSession`,
     :class:`prm9tool.device.canopen.session.CanopenSession`) implementing the abstract
     methods. Thread-safe as far as the link serializes its exchanges.
     """
@@ -331,7 +306,13 @@ class ValveSession(ABC):
         if progress:
             progress(total, total, "store")
         skipped = tuple(sorted(set(values) & self.unavailable))
-        return UploadResult(written, True, True, {}, since(start), None, skipped=skipped)
+        return UploadResult(
+            written=written,
+            verified=True,
+            stored=True,
+            duration_s=since(start),
+            skipped=skipped,
+        )
 
     def download(
         self, progress: Progress | None = None, cancel: threading.Event | None = None
@@ -379,15 +360,15 @@ class ValveSession(ABC):
     ) -> UploadResult:
         problem = self._revert()
         return UploadResult(
-            written,
-            verified,
-            False,
-            mismatches,
-            since(start),
-            step,
-            problem is None,
-            problem,
-            failure,
+            written=written,
+            verified=verified,
+            stored=False,
+            mismatches=mismatches,
+            duration_s=since(start),
+            failed_step=step,
+            reloaded=problem is None,
+            reload_error=problem,
+            failure=failure,
         )
 
     def _revert(self) -> str | None:

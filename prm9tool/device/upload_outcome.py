@@ -7,40 +7,15 @@ from __future__ import annotations
 
 import time
 from collections.abc import Mapping, Sequence
-from dataclasses import dataclass
 
 from prm9tool.catalogue import Parameter
-from prm9tool.device.entries import STEPS, Value
+from prm9tool.device.records import STEPS, Value
 from prm9tool.errors import CommunicationError, SdoAbortError
 
 RESTARTED_BEFORE_STORE = (
     "the valve's values changed after the store was acknowledged (it restarted before the "
     "store?): its stored set is not the upload"
 )
-
-
-@dataclass
-class UploadResult:
-    """Outcome of an upload; ``failed_step`` is ``write``, ``verify``, ``store`` or None.
-
-    ``stored`` means verified stored (see the module docstring). ``failure`` says why the step
-    failed when ``mismatches`` do not (a refused store). After a failed upload the session puts
-    the valve's stored parameters back into its working values (:meth:`ValveSession.reload`,
-    no restart): ``reloaded`` says whether that worked, ``reload_error`` why not. ``skipped``:
-    parameters of the set the valve does not have on this link, left out with a warning (never
-    a failed upload).
-    """
-
-    written: int
-    verified: bool
-    stored: bool
-    mismatches: dict[str, tuple[Value, Value]]
-    duration_s: float
-    failed_step: str | None
-    reloaded: bool = False
-    reload_error: str | None = None
-    failure: str | None = None
-    skipped: tuple[str, ...] = ()  # parameters the valve lacks on this link (not uploaded)
 
 
 def differences(

@@ -40,7 +40,7 @@ class HeardNode(Protocol):
     """What a view shows of one node (``prm9tool.device.canlink.watch.NodeHeard``)."""
 
     node_id: int
-    nmt_state: str
+    nmt_state: str | None  # None: no heartbeat heard
     heartbeat_age_s: float | None
     last_emcy: str
     boot_up_age_s: float | None

@@ -55,8 +55,8 @@ class ValveListing(ValveIdentity, Protocol):
         """A line about the valve in English (the device layer's words)."""
 
     @property
-    def nmt_state(self) -> str:
-        """CAN nodes: the NMT state their heartbeat told during the scan ("" otherwise)."""
+    def nmt_state(self) -> str | None:
+        """CAN nodes: the NMT state their heartbeat told during the scan (None otherwise)."""
 
     @property
     def heartbeat_age_s(self) -> float | None:
@@ -95,7 +95,11 @@ class StatusView(Protocol):
 
     @property
     def nmt_state(self) -> str:
-        """The CANopen NMT state, or ``off`` without a CANopen interface."""
+        """The CANopen NMT state (``NmtState``), or ``off`` without a CANopen interface."""
+
+    @property
+    def booting(self) -> bool:
+        """The valve is starting up (the first ~2 s after power-up)."""
 
     @property
     def error_code(self) -> int:
@@ -289,9 +293,8 @@ class StepSimulation(Protocol):
 
 
 if TYPE_CHECKING:  # mypy proves that the real connection and records fit the protocols above
-    from prm9tool.device.emulator.states import ValveStatus
     from prm9tool.device.factory import DeviceEntry
-    from prm9tool.device.session import DeviceInfo, UploadResult
+    from prm9tool.device.records import DeviceInfo, UploadResult, ValveStatus
     from prm9tool.online.connection import ValveConnection
     from prm9tool.online.tuning import StepSimulator
 

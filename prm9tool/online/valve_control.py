@@ -25,30 +25,28 @@ from prm9tool.catalogue.commissioning import (
     blocker,
 )
 from prm9tool.online.connection import ValveConnection
+from prm9tool.online.connection_protocol import StatusView
 
 
-def status_blocker(status: object | None) -> Blocker | None:
+def status_blocker(status: StatusView | None) -> Blocker | None:
     """Why the valve with ``status`` (a ValveStatus) does not follow its setpoint; None: it
     does (or there is no status)."""
     if status is None:
         return None
     return blocker(
-        str(getattr(status, "device_state", "")),
-        str(getattr(status, "nmt_state", "")),
-        tuple(getattr(status, "active_errors", ())),
-        bool(getattr(status, "booting", False)),
+        str(status.device_state), str(status.nmt_state), tuple(status.active_errors), status.booting
     )
 
 
-def blocker_text(reason: Blocker, status: object | None = None, in_status: bool = False) -> str:
+def blocker_text(reason: Blocker, status: StatusView | None = None, in_status: bool = False) -> str:
     """The reason in a sentence for the user (the program language).
 
     ``in_status``: the sentence is shown in the Valve status window itself, so it names the
     button to press there instead of sending the user to that window.
     """
     translate = QCoreApplication.translate  # the name pyside6-lupdate looks for
-    state = str(getattr(status, "device_state", ""))
-    nmt = str(getattr(status, "nmt_state", ""))
+    state = str(status.device_state) if status is not None else ""
+    nmt = str(status.nmt_state) if status is not None else ""
     if in_status and reason in _HERE:
         return translate("ValveControl", str(_HERE[reason])).format(state, nmt)
     texts = {

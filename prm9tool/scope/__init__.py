@@ -1,6 +1,6 @@
 """Oscilloscope model: ring buffer, trigger engine, cursors, step-response figures, CSV, generator.
 
-Numpy, no Qt widgets (the widget lives in ``prm9tool/views/scope.py``; the generator's
+Numpy, no Qt widgets (the widget lives in ``prm9tool/views/scope/widget.py``; the generator's
 messages go through QtCore's translate). Samples arrive from the valve's stream as raw
 ``(n, channels)`` blocks; :class:`Capture` converts them to display units once and appends them
 to a preallocated :class:`RingBuffer`, so everything downstream (trigger level, cursors,

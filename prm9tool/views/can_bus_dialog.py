@@ -210,7 +210,7 @@ class CanBusDialog(QDialog):
                 entry.type_key if valve else self.tr("not a PRM9"),
                 str(entry.serial) if valve else "",
                 entry.firmware,
-                entry.nmt_state,
+                entry.nmt_state or "",
                 self.tr("{0:.1f} s ago").format(age) if age is not None else self.tr("none"),
                 entry.last_emcy,
                 entry.description,
@@ -246,7 +246,7 @@ class CanBusDialog(QDialog):
         return row
 
     def _show_heard(self, row: int, node: HeardNode) -> None:
-        state, age = node.nmt_state, node.heartbeat_age_s
+        state, age = node.nmt_state or "", node.heartbeat_age_s
         booted = node.boot_up_age_s
         if booted is not None and booted < BOOT_SHOWN_S:
             state = self.tr("{0} (boot-up {1:.1f} s ago)").format(state, booted)

@@ -11,6 +11,7 @@ from __future__ import annotations
 from PySide6.QtWidgets import QGridLayout, QGroupBox, QLabel, QPushButton, QWidget
 
 from prm9tool.catalogue.commissioning import Blocker, NmtCommand
+from prm9tool.online.connection_protocol import StatusView
 from prm9tool.online.valve_control import ValveControl, blocker_text, status_blocker
 
 
@@ -20,7 +21,7 @@ class CommissioningPanel(QGroupBox):
     def __init__(self, control: ValveControl, parent: QWidget | None = None) -> None:
         super().__init__(parent)
         self._control = control
-        self._status: object | None = None
+        self._status: StatusView | None = None
         self.reason = QLabel()
         self.reason.setWordWrap(True)
         self.buttons = {
@@ -69,11 +70,11 @@ class CommissioningPanel(QGroupBox):
             self.buttons[name].setToolTip(tip)
         self.show_status(self._status)
 
-    def show_status(self, status: object | None) -> None:
+    def show_status(self, status: StatusView | None) -> None:
         """Follow the valve's status (None: offline)."""
         self._status = status
         online = status is not None and self._control.connection.is_online
-        nmt = str(getattr(status, "nmt_state", "off")) if status is not None else "off"
+        nmt = str(status.nmt_state) if status is not None else "off"
         canopen = online and nmt not in ("off", "")  # off: analog only, it enables itself
         for name, button in self.buttons.items():
             button.setEnabled(canopen and not (name.startswith("nmt") and nmt == "initialising"))

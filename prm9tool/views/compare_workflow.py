@@ -28,7 +28,7 @@ from prm9tool.translate import error_text
 from prm9tool.views import prompts
 from prm9tool.views.compare_view import BOTH, CompareDialog
 from prm9tool.views.file_reader import read_in_background
-from prm9tool.views.valve_workflow import ValveWorkflow
+from prm9tool.views.valve.workflow import ValveWorkflow
 
 COMPARE_VIEW = "compare_view"  # the download behind Valve → Compare with valve
 

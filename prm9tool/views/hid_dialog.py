@@ -29,7 +29,7 @@ from shiboken6 import isValid
 from prm9tool.catalogue.typekey import DEFAULT_EMULATOR_TYPE_KEY, TypeKey
 from prm9tool.online.connection_protocol import ListedValves, ValveListing
 from prm9tool.translate import error_text
-from prm9tool.views.valve_selection import ValveSelectionDialog
+from prm9tool.views.valve.selection import ValveSelectionDialog
 
 EMULATORS_KEY = "hid/emulators"
 SELECTED_KEY = "hid/selected"

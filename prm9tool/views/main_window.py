@@ -38,12 +38,12 @@ from prm9tool.views.page_stack import PageStack
 from prm9tool.views.parameter_view import ParameterListView
 from prm9tool.views.record_actions import RecordActions
 from prm9tool.views.status_bar import MainStatusBar
-from prm9tool.views.valve_selection import ValveSelectionDialog
-from prm9tool.views.valve_status import ValveStatusWindow
-from prm9tool.views.valve_workflow import ValveWorkflow
+from prm9tool.views.valve.selection import ValveSelectionDialog
+from prm9tool.views.valve.status import ValveStatusWindow
+from prm9tool.views.valve.workflow import ValveWorkflow
 
 if TYPE_CHECKING:  # imported when first shown: it loads pyqtgraph
-    from prm9tool.views.scope import ScopeWidget
+    from prm9tool.views.scope.widget import ScopeWidget
 
 VIEWS = ("diagram", "parameters", "scope")
 VIEW_KEY = "window/view"
@@ -112,7 +112,7 @@ class MainWindow(QMainWindow):
         return view
 
     def _make_scope_view(self) -> QWidget:
-        from prm9tool.views.scope import ScopeWidget
+        from prm9tool.views.scope.widget import ScopeWidget
 
         self._scope = ScopeWidget(self.connection, self.doc, self, control=self.control)
         self._scope.tuning_requested.connect(lambda: self.show_tuning_window("position"))
@@ -129,7 +129,7 @@ class MainWindow(QMainWindow):
 
     def show_tuning_window(self, loop: str = "position") -> None:
         """Open (or raise) the Tuning window on ``loop`` (``position`` or ``process``)."""
-        from prm9tool.views.tuning_window import TuningWindow
+        from prm9tool.views.tuning.window import TuningWindow
 
         window = getattr(self, "tuning_window", None)
         if window is None or window.doc is not self.doc:

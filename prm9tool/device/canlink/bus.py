@@ -13,6 +13,7 @@ import time
 from dataclasses import dataclass, field
 from typing import TYPE_CHECKING, Any
 
+from prm9tool.device.records import NmtState
 from prm9tool.errors import CanAdapterError
 
 if TYPE_CHECKING:
@@ -96,7 +97,7 @@ class NodeSeen:
     """What the bus told about one node without being asked: heartbeat and EMCY."""
 
     node_id: int
-    nmt_state: str = ""
+    nmt_state: NmtState | None = None  # None: no heartbeat heard yet
     heartbeat_at: float | None = None  # time.monotonic() of the last heartbeat/boot-up
     emcy_code: int | None = None
     emcy_register: int = 0
@@ -106,7 +107,12 @@ class NodeSeen:
     period_s: float | None = None  # the time between its last two heartbeats (not boot-ups)
 
 
-NMT_STATES = {0x00: "initialising", 0x04: "stopped", 0x05: "operational", 0x7F: "pre-operational"}
+NMT_STATES = {  # the state byte of a heartbeat (CiA 301 §7.2.8.3.2.1)
+    0x00: NmtState.INITIALISING,
+    0x04: NmtState.STOPPED,
+    0x05: NmtState.OPERATIONAL,
+    0x7F: NmtState.PRE_OPERATIONAL,
+}
 
 
 @dataclass
@@ -134,7 +140,7 @@ class CanNetwork:
         if cob == 0x700 and len(msg.data) >= 1:
             seen = self.seen.setdefault(node, NodeSeen(node))
             code, now = msg.data[0] & 0x7F, time.monotonic()
-            seen.nmt_state = NMT_STATES.get(code, f"0x{code:02X}")
+            seen.nmt_state = NMT_STATES.get(code, NmtState.UNKNOWN)
             if code == 0:
                 seen.boot_ups += 1
                 seen.boot_up_at, seen.period_s = now, None  # a new life: its period anew

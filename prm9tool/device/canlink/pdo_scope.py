@@ -23,6 +23,7 @@ import numpy as np
 from prm9tool.device.canlink.bus import CanNetwork
 from prm9tool.device.canlink.sdo import SdoChannel
 from prm9tool.device.canlink.sync_clock import SlotSamples, SyncClock
+from prm9tool.device.records import NmtState
 from prm9tool.errors import DeviceDisconnectedError, Prm9Error
 
 MIN_PERIOD_S = 0.001
@@ -52,7 +53,7 @@ class PdoSampler:
         self, shared: CanNetwork, sdo: SdoChannel, keys: Sequence[str], rate_hz: float
     ) -> None:
         node = int(sdo.node.id or 0)
-        if shared.node_seen(node).nmt_state != "operational":
+        if shared.node_seen(node).nmt_state is not NmtState.OPERATIONAL:
             raise NotPdoMappedError(f"node {node} is not OPERATIONAL: no PDOs")
         mapped = ENTRY2_KEYS.get(sdo.read_u32(0x1A00, 2) >> 16)
         if list(keys) != [mapped]:

@@ -25,7 +25,7 @@ from typing import TYPE_CHECKING
 
 from prm9tool.catalogue import CATALOGUE
 from prm9tool.device.canlink.status import device_state
-from prm9tool.device.emulator.states import DeviceState
+from prm9tool.device.records import DeviceState, NmtState
 from prm9tool.device.session import NotAvailableError
 from prm9tool.device.setpoint import SetpointLink
 from prm9tool.errors import AccessDeniedError
@@ -137,7 +137,7 @@ class RpdoSetpoint(SetpointLink):
 
     def _check_operational(self) -> None:
         nmt = self._session.nmt_state
-        if nmt and nmt != "operational":
+        if nmt is not None and nmt is not NmtState.OPERATIONAL:
             raise RpdoSetpointError(_NOT_OPERATIONAL(self._session.node_id, nmt))
 
     def _arm_deadline(self) -> None:

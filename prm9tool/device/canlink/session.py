@@ -40,13 +40,18 @@ from prm9tool.device.canlink.sdo import MISSING, SdoChannel
 from prm9tool.device.canlink.status import read_status
 from prm9tool.device.canlink.typekeys import remember, resolve
 from prm9tool.device.canlink.upload_steps import UploadSteps
-from prm9tool.device.emulator.states import ValveStatus
-from prm9tool.device.entries import Progress, RefusedError, Steps, Value, check_cancel
-from prm9tool.device.session import (
+from prm9tool.device.records import (
     DeviceInfo,
+    NmtState,
+    Progress,
+    RefusedError,
+    Steps,
     UploadResult,
-    ValveSession,
+    Value,
+    ValveStatus,
+    check_cancel,
 )
+from prm9tool.device.session import ValveSession
 from prm9tool.device.setpoint import SetpointLink
 from prm9tool.errors import (
     AccessDeniedError,
@@ -147,14 +152,15 @@ class CanopenSession(UploadSteps, ValveSession):
                 remember(user_data_dir(), found.serial, key)
         bus = self.options
         return DeviceInfo(
-            key,
-            found.serial,
-            found.firmware,
-            0,
-            self._device_id,
-            LINK_PARAMETERS,
-            (bus.interface, bus.channel, bus.bitrate),
-            1.0 / min_period_s(bus.bitrate),  # the SYNC + TPDO1 pace (docs/can-link.md)
+            type_key=key,
+            serial=found.serial,
+            firmware=found.firmware,
+            protocol_version=0,
+            device_id=self._device_id,
+            link_parameters=LINK_PARAMETERS,
+            can_bus=(bus.interface, bus.channel, bus.bitrate),
+            # the SYNC + TPDO1 pace (docs/can-link.md)
+            stream_rate_limit_hz=1.0 / min_period_s(bus.bitrate),
         )
 
     def upload(
@@ -296,8 +302,8 @@ class CanopenSession(UploadSteps, ValveSession):
         return read_status(self._sdo, self._shared.node_seen(self.node_id))
 
     @property
-    def nmt_state(self) -> str:
-        """The node's NMT state as its last heartbeat told ("" before one was heard)."""
+    def nmt_state(self) -> NmtState | None:
+        """The node's NMT state as its last heartbeat told (None before one was heard)."""
         return self._shared.node_seen(self.node_id).nmt_state
 
     def setpoint_link(self) -> SetpointLink:

@@ -14,7 +14,7 @@ from prm9tool.device.canlink.bus import NodeSeen
 from prm9tool.device.canlink.sdo import MISSING, SdoChannel
 from prm9tool.device.emulator.faults import ERROR_KINDS, ErrorKind
 from prm9tool.device.emulator.leds import leds
-from prm9tool.device.emulator.states import DeviceState, ValveStatus
+from prm9tool.device.records import DeviceState, NmtState, ValveStatus
 from prm9tool.errors import SdoAbortError
 
 # 0x6041 bits 8…11 (manual figure 7-11, docs/emulator.md)
@@ -49,7 +49,7 @@ def read_status(sdo: SdoChannel, seen: NodeSeen) -> ValveStatus:
     temperature = _optional_int(sdo, 0x2002, signed=True)
     supply = _optional_int(sdo, 0x2003, signed=False)
     kinds = tuple(k for k in ERROR_KINDS if k.code == code)[:1] if code else ()
-    nmt = seen.nmt_state or "unknown"
+    nmt = seen.nmt_state or NmtState.UNKNOWN
     return ValveStatus(
         device_state=state,
         error_code=code,
@@ -61,7 +61,7 @@ def read_status(sdo: SdoChannel, seen: NodeSeen) -> ValveStatus:
         temperature_c=float(temperature or 0),
         supply_v=(supply or 0) / 1000.0,
         nmt_state=nmt,
-        booting=nmt == "initialising",
+        booting=nmt is NmtState.INITIALISING,
     )
 
 
@@ -85,5 +85,5 @@ def _optional_int(sdo: SdoChannel, index: int, subindex: int = 0, *, signed: boo
     return int.from_bytes(data, "little", signed=signed)
 
 
-def _leds(nmt: str, kinds: tuple[ErrorKind, ...]) -> tuple:  # type: ignore[type-arg]
+def _leds(nmt: NmtState, kinds: tuple[ErrorKind, ...]) -> tuple:  # type: ignore[type-arg]
     return leds(time.monotonic(), False, True, nmt, kinds, False)

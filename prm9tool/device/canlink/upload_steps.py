@@ -11,7 +11,7 @@ from collections.abc import Mapping, Sequence
 from typing import TYPE_CHECKING
 
 from prm9tool.catalogue import Parameter
-from prm9tool.device.entries import RefusedError, Steps, Value
+from prm9tool.device.records import RefusedError, Steps, Value
 from prm9tool.device.upload_outcome import RESTARTED_BEFORE_STORE
 from prm9tool.errors import Prm9Error, SdoAbortError
 

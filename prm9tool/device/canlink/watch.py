@@ -19,6 +19,7 @@ from dataclasses import dataclass
 
 from prm9tool.device.canlink import bus as canbus
 from prm9tool.device.canlink.status import emcy_text
+from prm9tool.device.records import NmtState
 
 SILENT_PERIODS = 3.0
 SILENT_MIN_S = 1.0
@@ -29,7 +30,7 @@ class NodeHeard:
     """One node as the bus told about it (ages in seconds at the time of asking)."""
 
     node_id: int
-    nmt_state: str
+    nmt_state: NmtState | None  # None: no heartbeat heard
     heartbeat_age_s: float | None
     period_s: float | None
     last_emcy: str  # "8100 communication error", "" none heard

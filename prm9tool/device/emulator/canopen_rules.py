@@ -7,20 +7,9 @@ from the rotary switches at power-up, manual §7.3.1 table 7-17); this module on
 from __future__ import annotations
 
 import struct
-from enum import StrEnum
 
+from prm9tool.device.records import NmtState
 from prm9tool.errors import AbortCode, SdoAbortError
-
-
-class NmtState(StrEnum):
-    """CiA 301 NMT states of the slave (``off``: no CANopen, switch at 0/1)."""
-
-    OFF = "off"
-    INITIALISING = "initialising"
-    PRE_OPERATIONAL = "pre-operational"
-    OPERATIONAL = "operational"
-    STOPPED = "stopped"
-
 
 # --- CiA 301 rules for writes to the communication objects -----------------------------------
 PDO_COMM = (0x1400, 0x1401, 0x1800, 0x1801)

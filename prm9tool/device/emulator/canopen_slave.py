@@ -16,8 +16,9 @@ from typing import TYPE_CHECKING
 import can
 
 from prm9tool.device.emulator.canopen_pdo import PdoChannel, RpdoLogic, TpdoLogic, mapping
-from prm9tool.device.emulator.canopen_rules import NmtState, check_comm_write
+from prm9tool.device.emulator.canopen_rules import check_comm_write
 from prm9tool.device.emulator.canopen_sdo import SdoServer
+from prm9tool.device.records import NmtState
 
 if TYPE_CHECKING:
     from prm9tool.device.emulator.valve import EmulatedValve

@@ -13,7 +13,8 @@ from typing import TYPE_CHECKING
 from prm9tool.catalogue.variant import Coils, Config
 from prm9tool.device.emulator import loop_inputs
 from prm9tool.device.emulator.inputs import INPUT_TYPES
-from prm9tool.device.emulator.states import DeviceState, Fault
+from prm9tool.device.emulator.states import Fault
+from prm9tool.device.records import DeviceState
 
 OPEN_LOAD_MIN_V = 1.0  # on-state open-load check only above 1 V average at the coil (assumption)
 OPEN_LOAD_MA = 10.0  # ... where a connected coil carries far more than 10 mA (assumption)

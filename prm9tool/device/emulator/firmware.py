@@ -32,7 +32,8 @@ from prm9tool.device.emulator.nvimage import NvImage, is_nonvolatile
 from prm9tool.device.emulator.objdict import ObjectDictionary
 from prm9tool.device.emulator.override import OverrideProgram
 from prm9tool.device.emulator.statemachine import DeviceStateMachine
-from prm9tool.device.emulator.states import DeviceState, Fault
+from prm9tool.device.emulator.states import Fault
+from prm9tool.device.records import DeviceState, NmtState
 
 AUTO_CONTROL_WORD = 0x0F  # analog-only mode: the firmware enables itself (decision)
 _ACTIVE_STATES = (DeviceState.HOLD, DeviceState.DEVICE_MODE_ACTIVE, DeviceState.FAULT_HOLD)
@@ -87,7 +88,7 @@ class Firmware:
         self.temperature = 25.0  # electronics temperature reading, °C
         self.warning = False
         self.override_last = 0.0
-        self.nmt_state = "off"
+        self.nmt_state = NmtState.OFF
         self.booting = True
         self.node_id = self.bitrate = 0
         self.can_enabled = self.terminator = False
@@ -159,7 +160,7 @@ class Firmware:
         self.latched_switches = (self.switches[0], self.switches[1])
         self._load_ram()
         self.booting = True
-        self.nmt_state = "initialising" if self.can_enabled else "off"
+        self.nmt_state = NmtState.INITIALISING if self.can_enabled else NmtState.OFF
         self.sm.power_on()
         self.faults.reset()
         self.warning = False
@@ -196,7 +197,7 @@ class Firmware:
                     value = param.default_for(self.variant, self.node_id)
                 if param.key not in od.getters:
                     od.values[param.key] = value
-        self.nmt_state = "pre-operational"
+        self.nmt_state = NmtState.PRE_OPERATIONAL
 
     def reload(self) -> None:
         """Working values of the stored parameters ← the NV image, without a power cycle.
@@ -301,7 +302,10 @@ class Firmware:
         self.booting = False
         self.sm.init_done()
         if self.can_enabled:
-            self.nmt_state = "operational" if self.od.get("NMTSTARTUP") == 0 else "pre-operational"
+            startup_operational = self.od.get("NMTSTARTUP") == 0
+            self.nmt_state = (
+                NmtState.OPERATIONAL if startup_operational else NmtState.PRE_OPERATIONAL
+            )
         else:
             self.sm.write_control_word(AUTO_CONTROL_WORD, self.faults.any_present)
         self.setpoint_dirty = True

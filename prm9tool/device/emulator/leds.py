@@ -7,7 +7,7 @@ state. LEDs 2 and 3 exist only on -CA valves (§5.5); on other valves they read 
 from __future__ import annotations
 
 from prm9tool.device.emulator.faults import CAN_ERROR_KEYS, NOTICE_KEYS, ErrorKind
-from prm9tool.device.emulator.states import LED_OFF, LedState
+from prm9tool.device.records import LED_OFF, LedState, NmtState
 
 # (on, off) sequences in seconds; a pattern repeats with its period (CiA 303-3 timing).
 _SEQUENCES: dict[str, tuple[float, ...]] = {
@@ -45,10 +45,10 @@ def led(color: str, pattern: str, t: float) -> LedState:
     """A LED state at time ``t``."""
     if pattern == "off" or color == "off":
         return LED_OFF
-    return LedState(color, pattern, lit(pattern, t))
+    return LedState(color=color, pattern=pattern, lit=lit(pattern, t))
 
 
-def can_pattern(nmt_state: str) -> str:
+def can_pattern(nmt_state: NmtState) -> str:
     """LED3 pattern for an NMT state (table 7-18)."""
     return {
         "pre-operational": "2.5Hz",
@@ -61,7 +61,7 @@ def leds(
     t: float,
     booting: bool,
     canopen: bool,
-    nmt_state: str,
+    nmt_state: NmtState,
     active: tuple[ErrorKind, ...],
     warning: bool,
 ) -> tuple[LedState, LedState, LedState]:

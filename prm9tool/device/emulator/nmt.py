@@ -4,7 +4,7 @@ from __future__ import annotations
 
 from typing import TYPE_CHECKING
 
-from prm9tool.device.emulator.states import DeviceState
+from prm9tool.device.records import DeviceState, NmtState
 from prm9tool.errors import ValueRangeError
 
 if TYPE_CHECKING:
@@ -52,16 +52,16 @@ def apply_nmt_event(fw: Firmware, event: str) -> None:
     if event in ("rpdo_length_error", "rpdo_length_ok"):
         fw.faults.force("pdo_length", event == "rpdo_length_error", now)
     elif event == "operational":
-        fw.nmt_state = "operational"
+        fw.nmt_state = NmtState.OPERATIONAL
         for key in (*_ERROR_EVENTS.values(), "pdo_length"):
             fw.faults.force(key, False, now)
     elif event == "preoperational":
-        fw.nmt_state = "pre-operational"
+        fw.nmt_state = NmtState.PRE_OPERATIONAL
     elif event in ("stopped", "reset_comm", *_ERROR_EVENTS):
         if sm.state is DeviceState.DEVICE_MODE_ACTIVE:
             sm.fault(fw.fw.fault_reaction_s)
         if event == "stopped":
-            fw.nmt_state = "stopped"
+            fw.nmt_state = NmtState.STOPPED
         elif event == "reset_comm":
             fw.reset_communication()
         else:

@@ -13,7 +13,7 @@ from prm9tool.device.emulator.constants import FULL
 from prm9tool.device.emulator.inputs import CANOPEN_TYPE
 from prm9tool.device.emulator.loopstate import SIGNAL_ORDER
 from prm9tool.device.emulator.objdict import Value, abort
-from prm9tool.device.emulator.states import DeviceState
+from prm9tool.device.records import DeviceState
 from prm9tool.errors import AbortCode
 
 if TYPE_CHECKING:

@@ -14,7 +14,7 @@ Decisions where table 7-20 is garbled (documented in docs/emulator.md):
 
 from __future__ import annotations
 
-from prm9tool.device.emulator.states import DeviceState as S
+from prm9tool.device.records import DeviceState as S
 
 BIT_D = 0x01
 BIT_H = 0x02

@@ -19,7 +19,7 @@ from typing import TYPE_CHECKING
 import numpy as np
 
 from prm9tool.catalogue.signals import BY_CODE, signals_for
-from prm9tool.device.protocol import (
+from prm9tool.device.usb.protocol import (
     MAX_SEGMENTED_LENGTH,
     PROTOCOL_VERSION,
     REPORT_SIZE,
@@ -56,8 +56,8 @@ from prm9tool.device.protocol import (
     encode_stream,
     malformed_answer,
 )
-from prm9tool.device.protocol.packing import READ_ANSWER_ROOM
-from prm9tool.device.protocol.status import MAX_ACTIVE_ERRORS, MAX_TEXT_BYTES
+from prm9tool.device.usb.protocol.packing import READ_ANSWER_ROOM
+from prm9tool.device.usb.protocol.status import MAX_ACTIVE_ERRORS, MAX_TEXT_BYTES
 from prm9tool.errors import AbortCode, Prm9Error, SdoAbortError
 
 if TYPE_CHECKING:

@@ -27,7 +27,8 @@ from prm9tool.device.emulator.firmware import Firmware
 from prm9tool.device.emulator.leds import leds
 from prm9tool.device.emulator.override import OverrideProgram, Source
 from prm9tool.device.emulator.pacing import Pacer
-from prm9tool.device.emulator.states import DeviceState, Fault, ValveStatus
+from prm9tool.device.emulator.states import Fault
+from prm9tool.device.records import DeviceState, ValveStatus
 from prm9tool.errors import AccessDeniedError, ValueRangeError
 
 if TYPE_CHECKING:

@@ -1,0 +1,277 @@
+"""The characterization test report: one PDF per valve (QTextDocument → QPrinter PDF).
+
+Header (type key, serial, firmware, date, link and its sample rate, profile, verdict), every
+figure against its limit with pass/fail, the step responses at the profile's amplitudes, the
+Bode plot, the static characteristic and the parameter set. The raw data go to CSV beside it
+(:func:`prm9tool.characterize.run.write_csv_files`).
+"""
+
+from __future__ import annotations
+
+import html
+import math
+import os
+import tempfile
+from pathlib import Path
+
+from PySide6.QtCore import QCoreApplication, QUrl
+from PySide6.QtGui import QGuiApplication, QTextDocument
+from PySide6.QtPrintSupport import QPrinter
+from PySide6.QtWidgets import QApplication
+
+from prm9tool.analysis.profile import Limit
+from prm9tool.characterize.run import Characterization, Figure
+from prm9tool.i18n import current_language
+from prm9tool.messages import localized_number
+from prm9tool.views.record import configure_pdf
+from prm9tool.views.tuning.plot import COLOURS, Plot, Series, plot_image
+
+translate = QCoreApplication.translate
+_APP: list[QApplication] = []
+
+
+def figure_label(figure: Figure) -> str:
+    """The figure's name in the program language."""
+    parts = figure.name.split("_")
+    base = {
+        "overshoot": translate("TuningReport", "overshoot"),
+        "rise": translate("TuningReport", "rise time (10–90 %)"),
+        "settling": translate("TuningReport", "settling time (±2 %)"),
+        "bandwidth": translate("TuningReport", "−3 dB frequency"),
+        "phase90": translate("TuningReport", "−90° frequency"),
+        "gain": translate("TuningReport", "gain"),
+        "hysteresis": translate("TuningReport", "hysteresis"),
+        "linearity": translate("TuningReport", "linearity error"),
+        "dead": translate("TuningReport", "dead band"),
+    }
+    if parts[0] == "flow":  # E04: actuator velocity over opening
+        what = base.get(parts[1], figure.name)
+        return translate("TuningReport", "flow characteristic: %1").replace("%1", what)
+    if parts[0] == "step":
+        what = base.get(parts[2], parts[2])
+        return (
+            translate("TuningReport", "step %1 %: %2").replace("%1", parts[1]).replace("%2", what)
+        )
+    return base.get(parts[1], figure.name)
+
+
+def verdict(passed: bool | None) -> str:
+    """PASS / FAIL / — in the program language."""
+    if passed is None:
+        return "—"
+    return translate("TuningReport", "PASS") if passed else translate("TuningReport", "FAIL")
+
+
+def value_text(f: Figure) -> str:
+    """The figure's value with its unit (times in ms), with the program language's decimal
+    separator (``5,75 %`` in German and Czech)."""
+    if math.isnan(f.value):
+        return translate("TuningReport", "not reached")
+    if f.above:  # not reached by the sweep's end
+        return translate("TuningReport", "above {0}").format(_local(f"{f.value:.3g} {f.unit}"))
+    if f.unit == "s":
+        return _local(f"{f.value * 1000:.1f} ms")
+    return _local(f"{f.value:.3g} {f.unit}".strip())
+
+
+def limit_text(f: Figure) -> str:
+    """The figure's limit with its unit (decimal separator as :func:`value_text`)."""
+    if f.limit is None:
+        return "—"
+    if f.unit == "s":
+        lo, hi = f.limit.minimum, f.limit.maximum
+        in_ms = Limit(None if lo is None else lo * 1000, None if hi is None else hi * 1000)
+        return _local(f"{in_ms.text()} ms")
+    return _local(f"{f.limit.text()} {f.unit}".strip())
+
+
+def _local(text: str) -> str:
+    return localized_number(text, current_language())
+
+
+def step_plot(c: Characterization, index: int) -> Plot:
+    """One step response: setpoint and actual value over time."""
+    step = c.steps[index]
+    rec = step.record
+    keys = list(rec.channels)
+    return Plot(
+        translate("TuningReport", "Step response %1 %").replace("%1", f"{step.amplitude_pct:g}"),
+        translate("TuningReport", "time [ms]"),
+        "%",
+        [
+            Series(
+                rec.t * 1000,
+                rec.channels[keys[0]],
+                translate("TuningReport", "setpoint"),
+                COLOURS[0],
+                True,
+            ),
+            Series(
+                rec.t * 1000, rec.channels[keys[1]], translate("TuningReport", "actual"), COLOURS[1]
+            ),
+        ],
+    )
+
+
+def bode_plots(c: Characterization) -> tuple[Plot, Plot]:
+    """Magnitude (dB) and phase (°) over frequency, −3 dB and −90° marked."""
+    assert c.bode is not None
+    r = c.bode.response
+    hz = translate("TuningReport", "frequency [Hz]")
+    magnitude = Plot(
+        translate("TuningReport", "Frequency response ±%1 %: magnitude").replace(
+            "%1", f"{c.bode.amplitude_pct:g}"
+        ),
+        hz,
+        "dB",
+        [Series(r.frequency, r.magnitude_db, translate("TuningReport", "magnitude"), COLOURS[0])],
+        logx=True,
+        vlines=[(r.bandwidth_hz(), f"−3 dB: {r.bandwidth_hz():.1f} Hz")],
+        hlines=[(-3.0, "")],
+    )
+    phase = Plot(
+        translate("TuningReport", "Phase and coherence"),
+        hz,
+        "°",
+        [Series(r.frequency, r.phase_deg, translate("TuningReport", "phase"), COLOURS[1]),
+         Series(r.frequency, r.coherence * 100.0, translate("TuningReport", "coherence ×100"), COLOURS[2], True)],
+        logx=True,
+        vlines=[(r.phase_90_hz(), f"−90°: {r.phase_90_hz():.1f} Hz")],
+    )  # fmt: skip
+    return magnitude, phase
+
+
+def static_plot(c: Characterization) -> Plot:
+    """Actual value over demand, rising and falling branch, and the best straight line."""
+    assert c.static is not None
+    s = c.static.characteristic
+    return Plot(
+        translate("TuningReport", "Static characteristic"),
+        translate("TuningReport", "demand [%]"),
+        translate("TuningReport", "actual [%]"),
+        [
+            Series(s.x, s.up, translate("TuningReport", "rising"), COLOURS[0]),
+            Series(s.x, s.down, translate("TuningReport", "falling"), COLOURS[1]),
+            Series(
+                s.x,
+                s.gain * s.x + s.intercept,
+                translate("TuningReport", "best line"),
+                COLOURS[2],
+                True,
+            ),
+        ],
+    )
+
+
+def flow_plot(c: Characterization) -> Plot:
+    """E04: the actuator's velocity over the spool's opening (binned means)."""
+    assert c.flow is not None
+    f = c.flow.characteristic
+    return Plot(
+        translate("TuningReport", "Flow characteristic"),
+        translate("TuningReport", "spool opening [%]"),
+        translate("TuningReport", "actuator velocity [%/s]"),
+        [Series(f.x, f.velocity, translate("TuningReport", "measured"), COLOURS[0])],
+    )
+
+
+def build_report(c: Characterization) -> QTextDocument:
+    """The report as a text document (its images as resources)."""
+    doc = QTextDocument()
+    doc.setDocumentMargin(0)
+    plots: list[Plot] = [step_plot(c, k) for k in range(len(c.steps))]
+    if c.bode is not None:
+        plots.extend(bode_plots(c))
+    if c.static is not None:
+        plots.append(static_plot(c))
+    if c.flow is not None:
+        plots.append(flow_plot(c))
+    images = []
+    for k, plot in enumerate(plots):
+        url = f"prm9tool://plot{k}.png"
+        doc.addResource(QTextDocument.ResourceType.ImageResource, QUrl(url), plot_image(plot))
+        images.append(f'<p><img src="{url}" width="520"></p>')
+    doc.setHtml(_header(c) + _figures(c) + "".join(images) + _parameters(c))
+    return doc
+
+
+def _header(c: Characterization) -> str:
+    e = html.escape
+    rows = [
+        (translate("TuningReport", "Type key"), c.info.type_key),
+        (translate("TuningReport", "Serial number"), str(c.info.serial)),
+        (translate("TuningReport", "Firmware"), c.info.firmware),
+        (translate("TuningReport", "Date"), c.date),
+        (translate("TuningReport", "Link"), f"{c.info.link}, {c.info.sample_rate_hz:g} Hz"),
+        (translate("TuningReport", "Acceptance profile"), c.profile.name),
+        (translate("TuningReport", "Result"), verdict(c.passed)),
+    ]
+    rows += [(translate("TuningReport", "Limited by the link"), note) for note in c.notes]
+    body = "".join(f"<tr><td><b>{e(k)}</b></td><td>{e(v)}</td></tr>" for k, v in rows)
+    title = e(translate("TuningReport", "PRM9 test report"))
+    return f"<h2>{title}</h2><table cellpadding='2'>{body}</table>"
+
+
+def _figures(c: Characterization) -> str:
+    e = html.escape
+    head = [
+        translate("TuningReport", "Figure"),
+        translate("TuningReport", "Value"),
+        translate("TuningReport", "Limit"),
+        translate("TuningReport", "Result"),
+    ]
+    rows = []
+    for f in c.figures:
+        colour = {True: "#1a7f37", False: "#c0392b", None: "#555555"}[f.passed]
+        rows.append(
+            f"<tr><td>{e(figure_label(f))}</td><td>{e(value_text(f))}</td><td>{e(limit_text(f))}</td>"
+            f"<td style='color:{colour}'><b>{e(verdict(f.passed))}</b></td></tr>"
+        )
+    heading = "".join(f"<th align='left'>{e(h)}</th>" for h in head)
+    return f"<h3>{e(translate('TuningReport', 'Figures'))}</h3><table cellpadding='2'><tr>{heading}</tr>{''.join(rows)}</table>"
+
+
+def _parameters(c: Characterization) -> str:
+    items = sorted(c.parameters.items())
+    third = (len(items) + 2) // 3
+    columns = [items[k * third : (k + 1) * third] for k in range(3)]
+    rows = []
+    for i in range(third):
+        cells = []
+        for column in columns:
+            name, value = column[i] if i < len(column) else ("", "")
+            cells.append(f"<td>{html.escape(str(name))}</td><td align='right'>{value}</td>")
+        rows.append(f"<tr>{''.join(cells)}</tr>")
+    title = html.escape(translate("TuningReport", "Parameter set (raw values)"))
+    return f"<h3>{title}</h3><table cellpadding='1' style='font-size:7pt'>{''.join(rows)}</table>"
+
+
+def ensure_app() -> None:
+    """An application object for painting text (offscreen when none runs: headless lines).
+
+    A QApplication, not a QGuiApplication: a later GUI in the same process (tests) needs one.
+    """
+    if QGuiApplication.instance() is None:
+        os.environ.setdefault("QT_QPA_PLATFORM", "offscreen")
+        _APP.append(QApplication(["prm9tool"]))
+
+
+def write_pdf(c: Characterization, path: Path) -> None:
+    """Write the report to ``path`` (complete or not at all; OSError if it cannot be written)."""
+    ensure_app()
+    doc = build_report(c)
+    fd, temporary = tempfile.mkstemp(suffix=".pdf", dir=path.parent)
+    os.close(fd)
+    try:
+        printer = QPrinter(QPrinter.PrinterMode.HighResolution)
+        configure_pdf(printer, Path(temporary), f"{c.info.type_key} {c.info.serial}")
+        doc.print_(printer)
+        if os.path.getsize(temporary) == 0:
+            raise OSError(f"cannot write {path}")
+        umask = os.umask(0)
+        os.umask(umask)
+        os.chmod(temporary, 0o666 & ~umask)  # mkstemp made it private; a report is not
+        os.replace(temporary, path)
+    finally:
+        if os.path.exists(temporary):
+            os.unlink(temporary)

@@ -1,0 +1,104 @@
+"""The Tuning window's "Test report" page: the end-of-line test with an acceptance profile."""
+
+from __future__ import annotations
+
+from PySide6.QtWidgets import (
+    QFileDialog,
+    QHBoxLayout,
+    QLabel,
+    QLineEdit,
+    QPushButton,
+    QTableWidget,
+    QTableWidgetItem,
+)
+
+from prm9tool.analysis.profile import DEFAULT, ProfileError, load_profile
+from prm9tool.characterize.run import Characterization, characterize, write_csv_files
+from prm9tool.online.characterization_history import run_with_history
+from prm9tool.views.tuning.host import TuningHost
+from prm9tool.views.tuning.pages import Page
+from prm9tool.views.tuning.report import figure_label, limit_text, value_text, verdict, write_pdf
+
+
+class ReportPage(Page):
+    """The end-of-line test with an acceptance profile; PDF and CSV."""
+
+    def __init__(self, window: TuningHost) -> None:
+        super().__init__(window)
+        self.profile_path = QLineEdit()
+        self.browse_button = QPushButton()
+        self.browse_button.clicked.connect(self.browse)
+        row = QHBoxLayout()
+        row.addWidget(self.profile_path, 1)
+        row.addWidget(self.browse_button)
+        self.labels["profile"] = QLabel()
+        self.form.addRow(self.labels["profile"], row)
+        self.table = QTableWidget(0, 4)
+        self.layout().insertWidget(3, self.table, 1)  # type: ignore[union-attr]
+        self.plot.hide()
+        self.save_button = QPushButton()
+        self.save_button.setEnabled(False)
+        self.save_button.clicked.connect(self.save)
+        self.buttons.insertWidget(1, self.save_button)
+        self.last: Characterization | None = None
+
+    def browse(self) -> None:
+        """Choose the acceptance profile file."""
+        path, _ = QFileDialog.getOpenFileName(
+            self, self.tr("Acceptance profile"), self.profile_path.text(), "TOML (*.toml)"
+        )
+        if path:
+            self.profile_path.setText(path)
+
+    def run(self) -> None:
+        """All tests of the profile."""
+        path = self.profile_path.text().strip()
+        try:
+            profile = load_profile(path) if path else DEFAULT
+        except ProfileError as exc:
+            self.result.setText(str(exc))
+            return
+        what = self.tr("steps of %1 %, a sine sweep of ±%2 % and a triangle over the whole range, about %3 s").replace(
+            "%1", ", ".join(f"{a:g}" for a in profile.step_amplitudes_pct)).replace(
+            "%2", f"{profile.bode_amplitude_pct:g}").replace(
+            "%3", f"{profile.bode_duration_s + profile.static_period_s + 1:.0f}")  # fmt: skip
+        connection = self.window_.connection  # online, the result goes into the history too
+        self.window_.start("report", what, lambda rig: run_with_history(
+            connection, lambda: characterize(rig, profile)))  # fmt: skip
+
+    def show_result(self, result: object) -> None:
+        """Every figure with its verdict."""
+        assert isinstance(result, Characterization)
+        self.last = result
+        self.table.setRowCount(len(result.figures))
+        for row, f in enumerate(result.figures):
+            cells = (figure_label(f), value_text(f), limit_text(f), verdict(f.passed))
+            for col, text in enumerate(cells):
+                self.table.setItem(row, col, QTableWidgetItem(text))
+        self.table.resizeColumnsToContents()
+        self.result.setText(self.tr("Result: %1").replace("%1", verdict(result.passed)))
+        self.save_button.setEnabled(True)
+
+    def save(self) -> None:
+        """The PDF report and the raw data as CSV beside it."""
+        if self.last is None:
+            return
+        name = f"{self.last.info.serial}-report.pdf"
+        path = self.window_.save_file(self.tr("Save the test report"), "PDF (*.pdf)", name)
+        if path is None:
+            return
+        try:
+            write_pdf(self.last, path)
+            write_csv_files(self.last, path.with_suffix(""))
+        except OSError as exc:
+            self.result.setText(self.tr("Cannot write the report: %1").replace("%1", str(exc)))
+
+    def retranslate(self) -> None:
+        """Texts."""
+        self.tr_label("profile", self.tr("Acceptance profile (TOML, empty: default):"))
+        self.run_button.setText(self.tr("Run the end-of-line test"))
+        self.save_button.setText(self.tr("Save PDF and CSV…"))
+        self.browse_button.setText(self.tr("Browse…"))
+        self.table.setHorizontalHeaderLabels(
+            [self.tr("Figure"), self.tr("Value"), self.tr("Limit"), self.tr("Result")]
+        )

@@ -1,0 +1,207 @@
+"""The Tuning window: autotune, Bode, static characteristic and the test report.
+
+Reached from the controller blocks of the diagram and from the oscilloscope. Online the tests
+run on the valve (each asks first whether the hydraulics are safe for what it will do, and Stop
+ends it at once with the valve put back as it was); offline they run on an emulated copy of
+the document's valve. Proposals (gains, linearization) change the document only when accepted,
+as one undo step. The procedures themselves: :mod:`prm9tool.characterize`.
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+from typing import Any
+
+from PySide6.QtWidgets import (
+    QComboBox,
+    QDialog,
+    QFileDialog,
+    QFormLayout,
+    QHBoxLayout,
+    QLabel,
+    QMessageBox,
+    QPushButton,
+    QTabWidget,
+    QVBoxLayout,
+    QWidget,
+)
+
+from prm9tool.catalogue.variant import Config
+from prm9tool.model.document import ParameterDocument
+from prm9tool.online.connection_protocol import StatusView
+from prm9tool.online.tuning_runner import SimulationRunner, TuningRunner, ValveRunner
+from prm9tool.online.valve_control import ValveControl
+from prm9tool.views.scope.start import offer_enable
+from prm9tool.views.tuning.pages import AutotunePage, BodePage, Page
+from prm9tool.views.tuning.report_page import ReportPage
+from prm9tool.views.tuning.static import FlowPage, StaticPage
+
+
+class TuningWindow(QDialog):
+    """Autotune, frequency response, static characteristic and report for one valve."""
+
+    def __init__(
+        self,
+        doc: ParameterDocument,
+        connection: Any | None = None,
+        parent: QWidget | None = None,
+        control: ValveControl | None = None,
+    ) -> None:
+        super().__init__(parent)
+        self.setObjectName("tuning_window")
+        self.doc, self.connection = doc, connection
+        self._control = control  # NMT start and enabling, offered to a valve that would not move
+        self._status: StatusView | None = None  # the valve's latest status
+        self.runner: TuningRunner = self._make_runner()
+        self.loop = QComboBox()
+        self.loop.addItem("", "position")
+        if doc.variant.config is Config.E04:
+            self.loop.addItem("", "process")
+        self.mode = QLabel()
+        self.status = QLabel()
+        self.status.setWordWrap(True)
+        self.stop_button = QPushButton()
+        self.stop_button.setEnabled(False)
+        self.stop_button.clicked.connect(self.stop)
+        self.tabs = QTabWidget()
+        self.autotune = AutotunePage(self)
+        self.bode = BodePage(self)
+        self.static = StaticPage(self)
+        self.flow = FlowPage(self) if doc.variant.config is Config.E04 else None
+        self.report = ReportPage(self)
+        for page in self.pages():
+            self.tabs.addTab(page, "")
+        top = QFormLayout()
+        self._loop_label = QLabel()
+        top.addRow(self._loop_label, self.loop)
+        bottom = QHBoxLayout()
+        bottom.addWidget(self.status, 1)
+        bottom.addWidget(self.stop_button)
+        layout = QVBoxLayout(self)
+        layout.addWidget(self.mode)
+        layout.addLayout(top)
+        layout.addWidget(self.tabs, 1)
+        layout.addLayout(bottom)
+        if connection is not None:
+            connection.online_changed.connect(self._on_online_changed)
+            if hasattr(connection, "status_changed"):
+                connection.status_changed.connect(self._on_status_changed)
+        self.resize(900, 680)
+        self.retranslate()
+
+    # --- runner ----------------------------------------------------------------------------------
+    def _make_runner(self) -> TuningRunner:
+        if self.connection is not None and self.connection.is_online:
+            runner: TuningRunner = ValveRunner(self.connection, self)
+        else:
+            runner = SimulationRunner(str(self.doc.type_key), dict(self.doc.values), self)
+        runner.finished.connect(self._on_finished)
+        runner.failed.connect(self._on_failed)
+        runner.busy_changed.connect(self._on_busy_changed)
+        return runner
+
+    def _on_status_changed(self, status: StatusView) -> None:
+        self._status = status
+
+    def _on_online_changed(self, _online: bool) -> None:
+        if self.runner.busy:
+            self.runner.stop()
+            return
+        self.runner.deleteLater()
+        self.runner = self._make_runner()
+        self.retranslate()
+
+    def start(self, kind: str, what: str, procedure: Any) -> None:
+        """Confirm (on a valve) what the test will do, then run ``procedure(rig)``."""
+        if self.runner.busy:
+            return
+        if isinstance(self.runner, SimulationRunner):
+            self.runner.values = dict(self.doc.values)  # the document as it is now
+        elif not self._confirm(what):
+            return
+        else:
+            offer_enable(self, self._control, self._status, self.tr("Tuning"))
+        self.status.setText(self.tr("Running: %1").replace("%1", what))
+        self.runner.run(kind, procedure)
+
+    def _confirm(self, what: str) -> bool:
+        text = self.tr(
+            "This test moves the spool (and on E04 the actuator): %1.\n\n"
+            "Make sure the hydraulics are safe for it. Stop ends it at any time and puts the "
+            "valve back as it was. Start the test?"
+        ).replace("%1", what)
+        answer = QMessageBox.question(self, self.tr("Tuning"), text)
+        return answer == QMessageBox.StandardButton.Yes
+
+    def stop(self) -> None:
+        """Stop the running test."""
+        self.runner.stop()
+        self.status.setText(self.tr("Stopping…"))
+
+    def _on_busy_changed(self, busy: bool) -> None:
+        self.stop_button.setEnabled(busy)
+        for page in self.pages():
+            page.set_busy(busy)
+
+    def pages(self) -> list[Page]:
+        """The tabs' pages in order (the flow characteristic on E04 only)."""
+        flow = [self.flow] if self.flow is not None else []
+        return [self.autotune, self.bode, self.static, *flow, self.report]
+
+    def _on_finished(self, kind: str, result: object) -> None:
+        self.status.setText(self.tr("Done."))
+        pages: dict[str, Page] = {"autotune": self.autotune, "bode": self.bode}
+        pages.update(static=self.static, flow=self.flow or self.report)
+        pages.get(kind, self.report).show_result(result)
+
+    def _on_failed(self, _kind: str, message: str) -> None:
+        self.status.setText(self.tr("Stopped: %1").replace("%1", message))
+
+    # --- document --------------------------------------------------------------------------------
+    def accept_values(self, values: dict[str, int], text: str) -> None:
+        """Put ``values`` into the document as one undo step (online, on to the valve)."""
+        wanted = {k: v for k, v in values.items() if k in self.doc.values}
+        self.doc.set_values(wanted, text)
+        self.status.setText(self.tr("Accepted: %1").replace("%1", text))
+
+    def current_loop(self) -> str:
+        """``position`` or ``process``."""
+        return str(self.loop.currentData())
+
+    def save_file(self, title: str, pattern: str, suggestion: str) -> Path | None:
+        """Ask for a file name to write."""
+        path, _ = QFileDialog.getSaveFileName(self, title, suggestion, pattern)
+        return Path(path) if path else None
+
+    # --- texts -----------------------------------------------------------------------------------
+    def retranslate(self) -> None:
+        """Set every text in the program language."""
+        self.setWindowTitle(self.tr("Tuning and characterization"))
+        self.loop.setItemText(0, self.tr("Position controller (spool)"))
+        if self.loop.count() > 1:
+            self.loop.setItemText(1, self.tr("Process controller (E04)"))
+        self._loop_label.setText(self.tr("Loop:"))
+        self.stop_button.setText(self.tr("Stop"))
+        if isinstance(self.runner, SimulationRunner):
+            mode = self.tr(
+                "Offline: the tests run on an emulated valve with the document's values."
+            )
+        else:
+            mode = self.tr("Online: the tests move the connected valve.")
+        self.mode.setText(mode)
+        names = [self.tr("Autotune"), self.tr("Frequency response"),
+                 self.tr("Static characteristic"), self.tr("Test report")]  # fmt: skip
+        if self.flow is not None:
+            names.insert(3, self.tr("Flow characteristic (E04)"))
+        for k, name in enumerate(names):
+            self.tabs.setTabText(k, name)
+        for page in self.pages():
+            page.retranslate()
+        self.status.setText(self.tr("Ready."))
+
+    def closeEvent(self, event: Any) -> None:
+        if self.runner.busy:
+            self.runner.stop()
+        if isinstance(self.runner, SimulationRunner):
+            self.runner.wait()
+        super().closeEvent(event)

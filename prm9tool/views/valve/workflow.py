@@ -1,0 +1,366 @@
+"""Valve and Communication workflows: online/offline with the diff prompt, upload, download,
+factory values, restart, and what happens when the valve is lost.
+
+Nothing here touches the device: it drives the ValveConnection (which runs the I/O in its
+worker thread) and the document, and reacts to their signals.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Mapping
+from dataclasses import dataclass
+from typing import Any
+
+from PySide6.QtCore import QObject, QSettings, Signal
+from PySide6.QtWidgets import QDialog, QProgressDialog, QWidget
+
+from prm9tool.catalogue.typekey import TypeKey
+from prm9tool.errors import TypeKeyError
+from prm9tool.model.access import AccessModel
+from prm9tool.model.document import ParameterDocument, Raw
+from prm9tool.model.undo import DocumentUndo
+from prm9tool.online.connection import ValveConnection
+from prm9tool.online.connection_protocol import ListedValves, ValveListing
+from prm9tool.online.sync import ValveSync
+from prm9tool.translate import error_text
+from prm9tool.views import prompts
+from prm9tool.views.online_dialogs import DiffChoice, OnlineDiffDialog, RestartDialog
+from prm9tool.views.operation_progress import OperationProgress
+from prm9tool.views.valve.finder import ValveFinder
+from prm9tool.views.valve.upload import ValveUpload
+
+COMPARE = "compare"  # download made on going online, to compare with the document
+AFTER_RESTART = "after_restart"
+
+
+class ValveWorkflow(QObject):
+    """What the Valve and Communication menus do."""
+
+    message_posted = Signal(str)  # a short status-bar message
+    diff_dialog_created = Signal(object)  # OnlineDiffDialog, before it is shown (tests, help)
+
+    def __init__(
+        self,
+        window: QWidget,
+        doc: ParameterDocument,
+        undo: DocumentUndo,
+        connection: ValveConnection,
+        sync: ValveSync,
+        settings: QSettings,
+        access: AccessModel | None = None,
+    ) -> None:
+        super().__init__(window)
+        self._window = window
+        self._doc = doc
+        self._undo = undo
+        self._connection = connection
+        self._sync = sync
+        self._settings = settings
+        self.progress = OperationProgress(window, connection.cancel)
+        self.uploads = ValveUpload(
+            window, doc, connection, sync, self.progress, self.message_posted.emit, access
+        )
+        self.finder = ValveFinder(window, connection, settings, self.message_posted.emit)
+        self._restarted_from = ""  # device ID before the restart (a restart may move it)
+        # "choose per parameter" in the going-online dialog (the compare workflow sets it)
+        self.choose_per_parameter: Callable[[Mapping[str, Raw]], None] | None = None
+        connection.online_changed.connect(self._on_connection_online_changed)
+        connection.operation_finished.connect(self._on_connection_operation_finished)
+        connection.progress.connect(self._on_connection_progress)
+        connection.failed.connect(self._on_connection_failed)
+        connection.lost.connect(self._on_connection_lost)
+        connection.live_values_changed.connect(doc.set_live)
+        connection.write_failed.connect(sync.forget)
+        connection.backup_written.connect(self._on_connection_backup_written)
+
+    @property
+    def progress_dialog(self) -> QProgressDialog | None:
+        """The progress dialog of the running operation, if any."""
+        return self.progress.dialog
+
+    # --- communication -----------------------------------------------------------------------
+    def configure_hid(self) -> ValveListing | None:
+        """Show the HID configuration; returns the chosen device entry (or None)."""
+        return self.finder.configure_hid()
+
+    def configure_can_bus(self) -> None:
+        """Communication → CAN bus: choose the bus and a valve on it, then go online with it."""
+        self.finder.configure_can_bus()
+
+    def chosen_entry(self, entries: ListedValves) -> ValveListing | None:
+        """The valve to go online with among the listed ``entries`` (``ValveFinder``)."""
+        return self.finder.chosen_entry(entries)
+
+    def go_online(self, entry: ValveListing | str | None = None) -> None:
+        """Connect to ``entry`` (a listed valve or a device id), else find the valve first."""
+        self.finder.go_online(entry)
+
+    def go_offline(self) -> bool:
+        """Disconnect (offering to store values changed online); False if the user cancelled."""
+        if self._connection.is_online and self._sync.unstored:
+            answer = prompts.ask(
+                self._window,
+                prompts.Icon.Question,
+                self.tr("Store changes in the valve"),
+                self.tr(
+                    "Values changed online are active in the valve but not stored: a restart "
+                    "of the valve would undo them. Store them in the valve now?"
+                ),
+                prompts.Button.Yes | prompts.Button.No | prompts.Button.Cancel,
+                prompts.Button.Yes,
+            )
+            if answer == prompts.Button.Cancel:
+                return False
+            if answer == prompts.Button.Yes:
+                self._connection.store(self._doc.values)
+        scope = getattr(self._window, "views", {}).get("scope")
+        if scope is not None:  # the setpoint generator switches its override off while online
+            scope.stop()
+        self._sync.stop()
+        self._connection.go_offline()
+        return True
+
+    def _on_connection_online_changed(self, online: bool) -> None:
+        if not online:
+            self._sync.stop()
+            self.progress.close()
+            self.message_posted.emit(self.tr("Offline"))
+            return
+        self.progress.start(COMPARE, self.tr("Reading the valve's parameters…"), cancellable=False)
+        self._connection.download(COMPARE)
+
+    def compare_again(self) -> None:
+        """The document was replaced while online: compare it with the valve again (the
+        differences prompt decides what is written), instead of writing it unasked."""
+        if self._connection.is_online:
+            self._sync.stop()
+            self.progress.start(
+                COMPARE, self.tr("Reading the valve's parameters…"), cancellable=False
+            )
+            self._connection.download(COMPARE)
+
+    # --- the diff prompt --------------------------------------------------------------------------
+    def _on_compare_finished(self, values: Mapping[str, Raw]) -> None:
+        valve_key = self._valve_key()
+        if valve_key is None:
+            return
+        pristine = self._doc.path is None and not self._doc.modified
+        if pristine:
+            self._adopt_valve(valve_key, values)
+            return
+        same_key = valve_key == self._doc.type_key
+        differs = any(self._doc.values.get(mn) != value for mn, value in values.items())
+        if same_key and not differs:
+            self._sync.start(values)
+            self.message_posted.emit(self.tr("Online: document and valve agree"))
+            return
+        self._ask_about_differences(valve_key, values)
+
+    def _ask_about_differences(self, valve_key: TypeKey, values: Mapping[str, Raw]) -> None:
+        dialog = OnlineDiffDialog(
+            dict(self._doc.values), values, str(self._doc.type_key), str(valve_key), self._window
+        )
+        self.diff_dialog_created.emit(dialog)
+        dialog.exec()
+        if dialog.choice is DiffChoice.TAKE_VALVE:
+            self.take_valve_values(values, self.tr("Values read from the valve"))
+        elif dialog.choice is DiffChoice.SEND_DOCUMENT:
+            if not self.upload(values):
+                self.go_offline()  # as Cancel: nothing was written
+        elif dialog.choice is DiffChoice.CHOOSE and self.choose_per_parameter is not None:
+            self.choose_per_parameter(values)
+        else:
+            self.go_offline()
+
+    def _adopt_valve(self, key: TypeKey, values: Mapping[str, Raw]) -> None:
+        """An untouched new document simply becomes the valve's parameter set."""
+        fresh = ParameterDocument(key)
+        fresh.set_values(values, "valve", validate=False)
+        self._stamp(fresh)
+        fresh.mark_saved(None)
+        with self._sync.suspended():
+            self._doc.replace_with(fresh)
+        self._undo.stack.clear()
+        self._sync.start(values)
+        self.message_posted.emit(self.tr("Online: parameters read from the valve"))
+
+    def take_valve_values(self, values: Mapping[str, Raw], label: str) -> None:
+        """The document takes the valve's type key and values as one undo step."""
+        key = self._valve_key()
+        if key is None:
+            return
+        with self._sync.suspended():
+            self._undo.stack.beginMacro(label)
+            self._doc.set_type_key(key)
+            self._doc.set_values(values, label, validate=False)
+            self._undo.stack.endMacro()
+        self._stamp(self._doc)
+        self._sync.start(values)
+        self.message_posted.emit(label)
+
+    def _stamp(self, doc: ParameterDocument) -> None:
+        info = self._connection.device
+        doc.source_serial = None if info is None else info.serial
+        doc.source_firmware = None if info is None else info.firmware
+
+    def _valve_key(self) -> TypeKey | None:
+        info = self._connection.device
+        text = "" if info is None else info.type_key
+        try:
+            return TypeKey.parse(text)
+        except TypeKeyError as exc:
+            self._on_connection_failed(
+                self.tr("The valve reports an unknown type key: {0}").format(error_text(exc))
+            )
+            self.go_offline()
+            return None
+
+    # --- valve commands ---------------------------------------------------------------------------
+    def upload(self, valve_values: Mapping[str, Raw] | None = None) -> bool:
+        """Write the document into the valve (``ValveUpload.upload``); False when nothing
+        is sent."""
+        key = self._valve_key()
+        return key is not None and self.uploads.upload(key, valve_values)
+
+    def upload_values(self, values: Mapping[str, Raw]) -> None:
+        """Upload exactly ``values`` (``ValveUpload.upload_values``)."""
+        self.uploads.upload_values(values)
+
+    def expert_differences(self, valve_values: Mapping[str, Raw]) -> list[str]:
+        """The Expert-level parameters whose document value differs from the valve's."""
+        return self.uploads.expert_differences(valve_values)
+
+    def download(self) -> None:
+        """Read the valve's parameters into the document (one undo step)."""
+        self.progress.start("download", self.tr("Downloading the parameters from the valve…"))
+        self._connection.download()
+
+    def restore_factory(self) -> None:
+        """Factory values: online into the valve (backup, reset, restart, after the user
+        confirmed that the hydraulics are disconnected), offline into the document."""
+        if self._connection.is_online:
+            if RestartDialog(self._window, factory=True).exec() != QDialog.DialogCode.Accepted:
+                return
+            self.progress.start("restore_factory", self.tr("Restoring the factory values…"), False)
+            self._connection.run_job("restore_factory", _back_up_restore_factory_and_read)
+            return
+        answer = prompts.ask(
+            self._window,
+            prompts.Icon.Question,
+            self.tr("Restore factory values"),
+            self.tr("Set every parameter of the document to the factory default?"),
+            prompts.Button.Yes | prompts.Button.No,
+            prompts.Button.No,
+        )
+        if answer == prompts.Button.Yes:
+            defaults = ParameterDocument(self._doc.type_key).values
+            self._doc.set_values(defaults, self.tr("Restore factory values"))
+
+    def restart(self) -> None:
+        """Restart the valve after the user confirmed that the hydraulics are disconnected."""
+        dialog = RestartDialog(self._window)
+        if dialog.exec() != QDialog.DialogCode.Accepted:
+            return
+        device = self._connection.device
+        self._restarted_from = device.device_id if device is not None else ""
+        self.progress.start("restart", self.tr("Restarting the valve…"), cancellable=False)
+        self._connection.run_job(AFTER_RESTART, _restart_and_read)
+
+    # --- results ------------------------------------------------------------------------------------
+    def _on_connection_operation_finished(self, name: str, result: object) -> None:
+        self.progress.close()
+        if name == COMPARE and isinstance(result, Mapping):
+            self._on_compare_finished(result)
+        elif name == "download" and isinstance(result, Mapping):
+            self.take_valve_values(result, self.tr("Download from valve"))
+        elif name == "restore_factory" and isinstance(result, _FactoryReset):
+            self._on_factory_reset(result)
+        elif name == AFTER_RESTART and isinstance(result, Mapping):
+            self._report_restart()
+            self._sync.stop()
+            self._on_compare_finished(result)
+        elif name == "upload":
+            self.uploads.finished(result)
+        elif name == "store":
+            self._sync.unstored = False
+            self.message_posted.emit(self.tr("The valve stored its parameters"))
+
+    def _report_restart(self) -> None:
+        """Say that the valve restarted — and where, when a changed node ID or bit rate moved
+        it and the session followed (the CAN bus dialog then remembers the new bit rate)."""
+        device = self._connection.device
+        if device is None or device.device_id == self._restarted_from:
+            self.message_posted.emit(self.tr("The valve restarted"))
+            return
+        bus = getattr(device, "can_bus", None)
+        if bus is not None and bus[2]:
+            from prm9tool.views.can_bus_dialog import BITRATE_KEY
+
+            self._settings.setValue(BITRATE_KEY, bus[2])
+        rate = self.tr("{0} kbit/s").format(bus[2] // 1000) if bus and bus[2] else ""
+        self.message_posted.emit(
+            self.tr("The valve restarted at {0} {1}; prm9tool found it there").format(
+                device.device_id, rate
+            )
+        )
+
+    def _on_factory_reset(self, result: _FactoryReset) -> None:
+        self.take_valve_values(result.values, self.tr("Factory values of the valve"))
+        self._connection.record("restore-factory", "ok", result.values, {"backup": result.backup})
+        if result.backup is not None:
+            self.message_posted.emit(
+                self.tr(
+                    "Factory values restored; the valve's previous parameters are in {0}"
+                ).format(result.backup)
+            )
+
+    def _on_connection_progress(self, done: int, total: int, step: str) -> None:
+        self.progress.show_step(done, total, step)
+
+    def _on_connection_failed(self, message: str) -> None:
+        self.progress.close()
+        self.message_posted.emit(message)
+        prompts.inform(self._window, prompts.Icon.Warning, self.tr("Valve communication"), message)
+
+    def _on_connection_lost(self, message: str) -> None:
+        self.progress.close()
+        prompts.inform(
+            self._window,
+            prompts.Icon.Critical,
+            self.tr("Connection to the valve lost"),
+            self.tr(
+                "The connection to the valve was lost; prm9tool is offline now.\n"
+                "Every value is kept in the document: save it, or go online again and send it."
+            ),
+            message,
+        )
+
+    def _on_connection_backup_written(self, path: str) -> None:
+        self.message_posted.emit(
+            self.tr("Backup of the valve's parameters saved: {0}").format(path)
+        )
+
+
+@dataclass(frozen=True)
+class _FactoryReset:
+    """Result of the factory reset: the valve's values now, and the backup taken before."""
+
+    values: dict[str, Raw]
+    backup: str | None
+
+
+def _back_up_restore_factory_and_read(session: Any) -> _FactoryReset:
+    """Worker job: back the valve's parameters up (as before the first upload), reset them to
+    the factory values, which become effective after a restart, and read them back."""
+    from prm9tool.files.backup import ensure_backup  # *.prm writing, only when needed
+
+    path = ensure_backup(session)
+    session.restore_factory()
+    session.restart()
+    return _FactoryReset(dict(session.download()), None if path is None else str(path))
+
+
+def _restart_and_read(session: Any) -> dict[str, Raw]:
+    """Worker job: restart, then read the (stored) parameters the valve runs with now."""
+    session.restart()
+    return dict(session.download())
