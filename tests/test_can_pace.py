@@ -108,21 +108,38 @@ def drop_tpdo1(rig, share: float, burst: int) -> list[int]:
 def test_the_sweep_over_can_runs_at_1_khz_to_100_hz_and_lost_samples_do_not_move_it(can_valve):
     dropped = drop_tpdo1(can_valve, 0.1, 25)
     reference = bode_test(EmulatorRig(EmulatedValve(E02)), 10.0, 0.0, 2.0, 100.0, 3.0)
+    lags: list[float] = []  # how far the emulated valve's simulation fell behind real time
+    done = threading.Event()
+
+    def watch() -> None:
+        while not done.wait(0.002):
+            lags.append(can_valve.valve.pacer.lag_s())
+
+    watcher = threading.Thread(target=watch)
     with CanopenSession(can_valve.options, 10, type_key=E02 + "-CA") as session:
         rig = CanRig(session)
         assert rig.info.sample_rate_hz == 1000.0
         assert "TPDO1 at the tool's SYNC, one sample per 1 ms" in rig.info.link
+        watcher.start()
         try:
             result = bode_test(rig, 10.0, 0.0, 2.0, 200.0, 3.0)
         except LinkTooSlowError as exc:  # the refusal a PC too loaded for 1 kHz gets
             pytest.skip(f"this PC is too loaded to keep 1 kHz now: {exc}")
+        finally:
+            done.set()
+            watcher.join()
     assert result.limited_to_hz == 100.0  # 1 kHz / 10 samples per period
     assert len(result.record.t) == 3000 and result.record.t[-1] == pytest.approx(2.999)
     assert result.lost_samples >= 0.1 * 3000 * 0.7  # at least most of what was dropped
     assert result.lost_samples >= min(dropped[0], 3000) * 0.5
     ref_bw = reference.response.bandwidth_hz()
-    # the emulated valve runs in this process in batches of 2 ms (longer when the PC holds it
-    # up), which a valve of its own does not; benchmarks/bench_tuning_can.py measures how close
+    # the emulated valve runs in this process in batches of 2 ms; when the PC holds it up its
+    # simulation falls behind real time and the valve over CAN is not the one measured
+    # directly any more (a valve of its own never does): that is said, not measured
+    # (benchmarks/bench_tuning_can.py measures how close the figures come)
+    behind = float(np.percentile(lags, 90)) if lags else 0.0
+    if behind > 0.006:
+        pytest.skip(f"the emulated valve was {behind * 1000:.0f} ms behind real time 10 % of it")
     assert result.response.bandwidth_hz() == pytest.approx(ref_bw, rel=0.08)
     assert can_valve.working("POSSETP") == 0  # the setpoint it had, given back
 

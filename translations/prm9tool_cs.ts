@@ -3342,6 +3342,14 @@ Ano načte a záznam zařadí do fronty; Ne nenačte nic.</translation>
             <translation>(žádná: skok na odezvě)</translation>
         </message>
         <message>
+            <source>No step found: the reference channel has no data in {0}. Over CANopen the valve does not report its demand value; the channel shows the setpoint prm9tool sends while its setpoint generator runs. Start the generator, or choose “(none: step on the response)”.</source>
+            <translation>Skok nenalezen: referenční kanál nemá v {0} žádná data. Přes CANopen ventil svou žádanou hodnotu nehlásí; kanál ukazuje žádanou hodnotu, kterou prm9tool posílá, dokud běží jeho generátor žádané hodnoty. Spusťte generátor, nebo zvolte „(žádná: skok na odezvě)“.</translation>
+        </message>
+        <message>
+            <source>No step found: the response channel has no data in {0} (the link does not deliver this measuring point, or lost every sample).</source>
+            <translation>Skok nenalezen: kanál odezvy nemá v {0} žádná data (spojení tento měřicí bod nedodává, nebo ztratilo všechny vzorky).</translation>
+        </message>
+        <message>
             <source>No step found in {0}.</source>
             <translation>V {0} nebyl nalezen žádný skok.</translation>
         </message>

@@ -3331,6 +3331,14 @@ Ja lädt hoch und stellt den Eintrag in die Warteschlange; Nein lädt nichts hoc
             <translation>(keine: Sprung auf der Antwort)</translation>
         </message>
         <message>
+            <source>No step found: the reference channel has no data in {0}. Over CANopen the valve does not report its demand value; the channel shows the setpoint prm9tool sends while its setpoint generator runs. Start the generator, or choose “(none: step on the response)”.</source>
+            <translation>Kein Sprung gefunden: Der Referenzkanal hat in {0} keine Daten. Über CANopen meldet das Ventil seinen Sollwert nicht; der Kanal zeigt den Sollwert, den prm9tool sendet, solange sein Sollwertgenerator läuft. Starten Sie den Generator oder wählen Sie „(keine: Sprung auf der Antwort)“.</translation>
+        </message>
+        <message>
+            <source>No step found: the response channel has no data in {0} (the link does not deliver this measuring point, or lost every sample).</source>
+            <translation>Kein Sprung gefunden: Der Antwortkanal hat in {0} keine Daten (die Verbindung liefert diesen Messpunkt nicht oder hat jeden Messwert verloren).</translation>
+        </message>
+        <message>
             <source>No step found in {0}.</source>
             <translation>Kein Sprung in {0} gefunden.</translation>
         </message>

@@ -5,8 +5,10 @@ messages go through QtCore's translate). Samples arrive from the valve's stream 
 ``(n, channels)`` blocks; :class:`Capture` converts them to display units once and appends them
 to a preallocated :class:`RingBuffer`, so everything downstream (trigger level, cursors,
 figures, CSV) works in the units the user sees. Sample ``i`` of a capture lies at
-``i / rate`` seconds after the capture started; the stream has no gaps (lost samples are counted
-by the session, not hidden here).
+``i / rate`` seconds after the capture started. A link that places its samples by time (over
+CANopen by the SYNC count) gives a NaN row for each lost sample: a gap at its time, drawn as a
+break in the curve and left out of the figures; the USB stream has no gaps (its lost samples
+are counted by the session).
 """
 
 from __future__ import annotations
@@ -19,6 +21,7 @@ from prm9tool.scope.buffer import (
     Capture,
     RingBuffer,
     axis_ranges,
+    curve_points,
     peak_decimate,
 )
 from prm9tool.scope.generator import GeneratorSettings, Waveform, setpoint_limits
@@ -65,6 +68,7 @@ __all__ = [
     "Waveform",
     "axis_ranges",
     "cursor_readout",
+    "curve_points",
     "find_edge",
     "find_step",
     "find_steps",

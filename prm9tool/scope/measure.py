@@ -69,6 +69,8 @@ class Verdict(StrEnum):
     NO_STEP = "no step"  # nothing stepped in the window
     NO_RESPONSE = "no response"  # the reference stepped, the response stayed within its noise
     TOO_SHORT = "too short"  # the window cuts the response before it came to rest
+    NO_DATA = "no data"  # the response has no sample in the window (all lost or not reported)
+    NO_REFERENCE = "no reference data"  # the reference channel has no sample in the window
 
 
 @dataclass(frozen=True)
@@ -214,6 +216,16 @@ def _measure(
     comparable: bool,
     strict: bool,
 ) -> StepMeasurement:
+    if len(y) and not np.isfinite(y).any():
+        return StepMeasurement(Verdict.NO_DATA)
+    if reference is not None and len(reference) and not np.isfinite(reference).any():
+        return StepMeasurement(Verdict.NO_REFERENCE)
+    # lost samples (NaN, a link that places samples by time) are left out: the others keep
+    # their times, so the figures are those of the samples that arrived
+    keep = np.isfinite(y) if reference is None else np.isfinite(y) & np.isfinite(reference)
+    if not keep.all():
+        t, y = t[keep], y[keep]
+        reference = reference[keep] if reference is not None else None
     if len(y) < MIN_AFTER:
         return StepMeasurement(Verdict.NO_STEP)
     if reference is None:

@@ -8,8 +8,11 @@ sample; stopping stops the SYNC and puts the transmission type back. Samples are
 number of the SYNC they answer (:mod:`prm9tool.device.canlink.sync_clock`): the stream has one
 row per SYNC period, and a SYNC without its TPDO1 (or one a busy PC could not send) is a NaN
 row — a gap in the curve at its time, counted as lost — so a 1 s square wave keeps its 1 s
-period whatever is lost. Other measuring points, or a node that is not OPERATIONAL, are sampled
-by SDO (prm9tool.device.canlink.sampler).
+period whatever is lost. The demand channel (``position_setpoint``/``process_setpoint``), which
+the valve does not report, is the setpoint this tool sends in RPDO1 at each SYNC (the setpoint
+generator's; NaN while the tool sends none), and a channel without an object is NaN. Measuring
+points with an object other than TPDO1's, or a node that is not OPERATIONAL, are sampled by SDO
+(prm9tool.device.canlink.sampler).
 """
 
 from __future__ import annotations
@@ -21,6 +24,7 @@ from collections.abc import Sequence
 import numpy as np
 
 from prm9tool.device.canlink.bus import CanNetwork
+from prm9tool.device.canlink.sampler import DEMAND_KEYS, SIGNAL_OBJECTS, Demand
 from prm9tool.device.canlink.sdo import SdoChannel
 from prm9tool.device.canlink.sync_clock import SlotSamples, SyncClock
 from prm9tool.device.records import NmtState
@@ -50,13 +54,19 @@ class PdoSampler:
     """Samples TPDO1's entry 2 at a tool-produced SYNC period (same interface as SdoSampler)."""
 
     def __init__(
-        self, shared: CanNetwork, sdo: SdoChannel, keys: Sequence[str], rate_hz: float
+        self,
+        shared: CanNetwork,
+        sdo: SdoChannel,
+        keys: Sequence[str],
+        rate_hz: float,
+        demand: Demand | None = None,
     ) -> None:
         node = int(sdo.node.id or 0)
         if shared.node_seen(node).nmt_state is not NmtState.OPERATIONAL:
             raise NotPdoMappedError(f"node {node} is not OPERATIONAL: no PDOs")
         mapped = ENTRY2_KEYS.get(sdo.read_u32(0x1A00, 2) >> 16)
-        if list(keys) != [mapped]:
+        read_by_sdo = [k for k in keys if k != mapped and k in SIGNAL_OBJECTS]
+        if mapped not in keys or read_by_sdo:
             raise NotPdoMappedError(f"TPDO1 carries {mapped}, not {', '.join(keys)}")
         cob_id = sdo.read_u32(0x1800, 1)
         if cob_id & 0x8000_0000:
@@ -66,7 +76,10 @@ class PdoSampler:
         self.keys = tuple(keys)
         self.period_s = max(1.0 / rate_hz, min_period_s(shared.options.bitrate))
         self._shared, self._sdo, self._cob_id = shared, sdo, cob_id & 0x7FF
-        self._clock = SyncClock(shared.network.send_message, self.period_s)
+        self._column = self.keys.index(mapped)
+        self._demand = demand
+        self._demands: dict[int, list[float]] = {}  # tick -> the other columns at its SYNC
+        self._clock = SyncClock(shared.network.send_message, self.period_s, self._at_sync)
         self._slots = SlotSamples(self._clock)
         self._settle = max(2, round(SETTLE_S / self.period_s))
         self._gaps = 0  # NaN rows handed out
@@ -94,13 +107,29 @@ class PdoSampler:
         return self._gaps
 
     def read(self) -> np.ndarray:
-        """One row per SYNC period up to one settling time ago, shape (n, 1); a period
-        without its TPDO1 is NaN. Raises the bus's error that stopped the SYNC."""
+        """One row per SYNC period up to one settling time ago, shape (n, len(keys)); a
+        period without its TPDO1 is NaN in TPDO1's column. Raises the bus's error that stopped
+        the SYNC."""
         if self._clock.error is not None:
             raise DeviceDisconnectedError(f"the CAN bus refused the SYNC ({self._clock.error})")
-        rows = self._slots.take(self._clock.ticks - self._settle)
-        self._gaps += int(np.isnan(rows[:, 0]).sum())
+        first = self._slots.given
+        mapped = self._slots.take(self._clock.ticks - self._settle)
+        self._gaps += int(np.isnan(mapped[:, 0]).sum())
+        rows = np.full((len(mapped), len(self.keys)), np.nan)
+        for i in range(len(mapped)):
+            others = self._demands.pop(first + i, None)
+            if others is not None:
+                rows[i] = others
+        rows[:, self._column] = mapped[:, 0]
         return rows
+
+    def _at_sync(self, tick: int) -> None:
+        """Just before SYNC ``tick``: the demand this tool sends now (the other columns)."""
+        demand = self._demand
+        self._demands[tick] = [
+            demand(key) if demand is not None and key in DEMAND_KEYS else float("nan")
+            for key in self.keys
+        ]
 
     def stop(self) -> None:
         """Stop the SYNC, stop listening, put TPDO1's transmission type back."""

@@ -167,6 +167,11 @@ class SlotSamples:
                 self.received += 1
             self._slots[k] = values  # two answers in one slot: the newer counts
 
+    @property
+    def given(self) -> int:
+        """The first slot the next :meth:`take` hands out."""
+        return self._given
+
     def wait_for(self, tick: int, timeout_s: float) -> None:
         """Wait at most ``timeout_s`` for the answer to SYNC ``tick`` (the last of a test)."""
         deadline = time.perf_counter() + timeout_s
