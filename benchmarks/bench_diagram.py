@@ -26,10 +26,11 @@ from PySide6.QtWidgets import QApplication, QGraphicsScene
 from prm9tool.catalogue import CATALOGUE, Access
 from prm9tool.catalogue.signals import signals_for
 from prm9tool.catalogue.typekey import TypeKey
+from prm9tool.characterize.procedures import LOOPS
 from prm9tool.device.emulator import EmulatedValve
 from prm9tool.model.access import AccessModel
 from prm9tool.model.document import ParameterDocument
-from prm9tool.online.tuning import LOOPS, PRE_STEP_S, analog_type_key, power_up, simulate_step
+from prm9tool.online.tuning import PRE_STEP_S, analog_type_key, power_up, simulate_step
 from prm9tool.views.diagram import DiagramView
 
 E04_CA = "PRM9-06.3Z11/30-24E04S02-CA"
@@ -124,7 +125,7 @@ def bench_tuning() -> None:
         analog = analog_type_key(key)
         probe = EmulatedValve(analog)
         power_up(probe)
-        simulated = PRE_STEP_S + LOOPS[loop][3]
+        simulated = PRE_STEP_S + LOOPS[loop].simulated_s
         total = probe.time + simulated  # power-up and settling, then the step
         step_ms = median_ms(lambda k=key, v=values, lp=loop: simulate_step(k, v, lp), 11)
 

@@ -3,11 +3,13 @@
 The baseline, measured in the same run, is the standard library's configparser reading and
 writing the same text (keys and values only: no types, ranges, rules, checksum or fsync).
 
-    .venv/bin/python benchmarks/bench_prm.py [--repeat 7] [--number 200]
+    .venv/bin/python benchmarks/bench_prm.py [--repeat 7] [--number 200] [--quick]
 
 Then a file at the 1 MiB limit full of unknown names (issue 15 item 16): ``check_bytes`` with
 the bounded spelling suggestions, with a suggestion for every unknown name (as before), and
-configparser on the same text.
+configparser on the same text; and the worst case of a number (issue 25 item 20): a run of
+nines ending in a letter, from 24 kB to the 1 MiB limit, against the old number rule.
+``--quick`` is a smoke run (seconds): the small cases only.
 """
 
 from __future__ import annotations
@@ -15,6 +17,7 @@ from __future__ import annotations
 import argparse
 import configparser
 import io
+import re
 import statistics
 import sys
 import tempfile
@@ -22,15 +25,16 @@ import timeit
 from collections.abc import Callable
 from pathlib import Path
 
+from prm9tool.catalogue import CATALOGUE
 from prm9tool.catalogue.typekey import TypeKey
+from prm9tool.errors import ValueRangeError
 from prm9tool.files import prmcheck
+from prm9tool.files.prmdocument import load_document, save_document
 from prm9tool.files.prmfile import (
     MAX_FILE_SIZE,
     PrmContents,
     check_bytes,
-    load_document,
     read_file,
-    save_document,
     write_file,
 )
 
@@ -120,12 +124,52 @@ def bench_unknown_names() -> None:
     print(f"  configparser (keys and values only): {baseline:7.2f} s")
 
 
+# the number rule before issue 25 item 20: correct, but quadratic on a failing long token
+OLD_NUMBER = re.compile(r"[+-]?([0-9]+\.?[0-9]*|\.[0-9]+)([eE][+-]?[0-9]+)?")
+
+
+def long_number_file(size: int) -> bytes:
+    """A full file whose LIMTA is a run of nines ending in a letter, ``size`` bytes in all."""
+    text = PrmContents.factory(TypeKey.parse(TYPE_KEY)).to_text()
+    digits = size - len(text)
+    return re.sub(r"(?m)^LIMTA = .*$", lambda _m: f"LIMTA = {'9' * digits}x", text).encode()
+
+
+def bench_long_numbers(quick: bool) -> None:
+    """The worst case of issue 25 item 20: check time against file size (linear now), and the
+    number rule alone on a run of digits ending in a letter, old (quadratic) against new."""
+    sizes = (24_000, 96_000) if quick else (24_000, 96_000, 384_000, MAX_FILE_SIZE - 1)
+    print("\nA full file whose LIMTA is a run of nines ending in 'x' (check_bytes)")
+    for size in sizes:
+        data = long_number_file(size)
+        now = per_call(lambda data=data: check_bytes(data), 1 if quick else 3, 1)
+        print(f"  {size:>8} bytes: {now * 1000:8.1f} ms = {now / size * 1e9:6.1f} ns/byte")
+    print("The number rule alone on n nines and an 'x': old regex (before), parse_display (now)")
+    for digits in (500, 1000) if quick else (1000, 2000, 4000):
+        token = "9" * digits + "x"
+        old = per_call(lambda token=token: OLD_NUMBER.fullmatch(token), 1, 1)
+        new = per_call(lambda token=token: _refused(token), 3, 10)
+        print(f"  {digits:>6} digits: old {old * 1000:9.1f} ms, new {new * 1e6:7.1f} µs")
+
+
+def _refused(token: str) -> bool:
+    """The new rule, through the public parser (it refuses the token)."""
+    try:
+        CATALOGUE["LIMTA"].parse_display(token)
+    except ValueRangeError:
+        return True
+    return False
+
+
 def main(argv: list[str] | None = None) -> int:
     """Run the benchmark and print the figures and ratios."""
     options = argparse.ArgumentParser(description="*.prm load/save against configparser")
     options.add_argument("--repeat", type=int, default=7)
     options.add_argument("--number", type=int, default=200)
+    options.add_argument("--quick", action="store_true", help="a smoke run: seconds, not figures")
     args = options.parse_args(argv)
+    if args.quick:
+        args.repeat, args.number = 1, 3
     size = len(PrmContents.factory(TypeKey.parse(TYPE_KEY)).values)
     print(f"*.prm benchmark: {TYPE_KEY} ({size} parameters) against configparser")
     print(f"python {sys.version.split()[0]}, median of {args.repeat} x {args.number} calls\n")
@@ -135,7 +179,9 @@ def main(argv: list[str] | None = None) -> int:
             mine = per_call(ours, args.repeat, args.number)
             theirs = per_call(baseline, args.repeat, args.number)
             print(f"{name:<46}{mine * 1e6:>9.1f} µs{theirs * 1e6:>9.1f} µs{mine / theirs:>7.1f}x")
-    bench_unknown_names()
+    if not args.quick:
+        bench_unknown_names()
+    bench_long_numbers(args.quick)
     return 0
 
 

@@ -9,7 +9,7 @@ from __future__ import annotations
 
 import argparse
 import sys
-from collections.abc import Callable
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 from pathlib import Path
 from types import TracebackType
@@ -20,6 +20,8 @@ from prm9tool.errors import ExitCode
 if TYPE_CHECKING:
     from PySide6.QtWidgets import QApplication, QWidget
 
+    from prm9tool.device.canlink.bus import CanOptions
+    from prm9tool.device.session import ValveSession
     from prm9tool.errors import Prm9Error
     from prm9tool.online.connection_protocol import ListedValves, ValveListing
     from prm9tool.online.library_log import LibraryLog
@@ -220,24 +222,22 @@ def _matches(entry: ValveListing, wanted: str) -> bool:
     return wanted in (entry.device_id, str(entry.serial))
 
 
-def _opener(args: argparse.Namespace) -> Callable[[object], object]:
+def _opener(args: argparse.Namespace) -> Callable[[object], ValveSession]:
     """Open sessions through the one device factory (the CAN bus joins later: _joiner)."""
 
-    def open_session(entry: object) -> object:
+    def open_session(entry: object) -> ValveSession:
         from prm9tool.device import factory
 
+        assert isinstance(entry, factory.DeviceEntry | str)  # a listed valve or its device id
         label_key = getattr(args, "type_key", None)  # --type-key: a valve without 0x2041
         return factory.open_session(
-            entry,  # type: ignore[arg-type]
-            paced=True,
-            can_link=_can_link(args),  # type: ignore[arg-type]
-            label_key=label_key,
+            entry, paced=True, can_link=_can_link(args), label_key=label_key
         )
 
     return open_session
 
 
-def _can_link(args: argparse.Namespace) -> object:
+def _can_link(args: argparse.Namespace) -> CanOptions:
     """The bus of ``can:NODE`` valves: the command line's CAN options, else the CAN bus dialog's
     remembered choice (QSettings)."""
     from prm9tool.device import factory
@@ -253,7 +253,7 @@ def _can_link(args: argparse.Namespace) -> object:
     return can_options(saved_bus(QSettings()))
 
 
-def _joiner(args: argparse.Namespace) -> Callable[[object], object] | None:
+def _joiner(args: argparse.Namespace) -> Callable[[ValveSession], object] | None:
     """Put an emulated -CA valve on the command line's CAN bus once its session is open.
 
     Not part of opening: python-can's import would delay "online" by ~0.2 s, and a bus that
@@ -263,21 +263,21 @@ def _joiner(args: argparse.Namespace) -> Callable[[object], object] | None:
     if not hasattr(args, "can_interface"):
         return None
 
-    def join(session: object) -> object:
+    def join(session: ValveSession) -> object:
         from prm9tool.device import factory
 
-        return factory.join_can(session, factory.CanOptions.from_args(args))  # type: ignore[arg-type]
+        return factory.join_can(session, factory.CanOptions.from_args(args))
 
     return join
 
 
-def _lister(emulators: object, can: dict[str, object] | None = None) -> list[object]:
+def _lister(emulators: Sequence[str], can: dict[str, object] | None = None) -> list[ValveListing]:
     """The connection's listing, with the remembered emulated valves that cannot be made
     listed as such (the valve selection says why and offers to remove them)."""
     from prm9tool.device import factory
     from prm9tool.online.valve_listing import default_lister
 
-    usable, unusable = factory.usable_emulators(emulators)  # type: ignore[arg-type]
+    usable, unusable = factory.usable_emulators(emulators)
     return [*default_lister(usable, can), *unusable]
 
 

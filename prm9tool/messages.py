@@ -123,3 +123,16 @@ def _render(arg: Arg, translate: Translate, language: str) -> str:
     if isinstance(arg, (str, int, float)):
         return str(arg)
     return arg.get(language)
+
+
+SHOWN_CHARACTERS = 40  # a value longer than this is cut in a message (its length is said)
+
+
+def quoted(text: str, limit: int = SHOWN_CHARACTERS) -> str:
+    """``text`` quoted for a message (``repr``), cut in the middle when it is longer than
+    ``limit`` characters: ``'99999999999999999999…9999999999999999999x' (20001 characters)``.
+    A message must not repeat an 8000-digit value from a file."""
+    if len(text) <= limit:
+        return repr(text)
+    half = limit // 2
+    return f"{text[:half] + '…' + text[-half:]!r} ({len(text)} characters)"

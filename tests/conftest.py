@@ -16,6 +16,32 @@ settings.register_profile("dev", max_examples=200, deadline=None)
 settings.load_profile("ci" if os.environ.get("CI") else "dev")
 
 
+def pytest_addoption(parser: pytest.Parser) -> None:
+    parser.addoption(
+        "--busy",
+        type=int,
+        default=int(os.environ.get("PRM9TOOL_TEST_BUSY", "0") or 0),
+        metavar="N",
+        help="run the tests on a busy machine: N busy-loop processes run for the whole session"
+        " (also PRM9TOOL_TEST_BUSY=N)",
+    )
+
+
+@pytest.fixture(autouse=True, scope="session")
+def _busy_machine(request: pytest.FixtureRequest):
+    """``--busy N``: N processes that spin for the session, as other work on a shared PC does
+    (issue 25 item 17: real-time tests must measure their own pace and adapt)."""
+    import subprocess
+    import sys
+
+    count = int(request.config.getoption("--busy"))
+    spinning = [subprocess.Popen([sys.executable, "-c", "while True: pass"]) for _ in range(count)]
+    yield
+    for process in spinning:
+        process.kill()
+        process.wait()
+
+
 @pytest.fixture(autouse=True)
 def _garbage_collected_on_the_main_thread():
     """Python's cycle collector runs on the main (GUI) thread only, after each test, as the

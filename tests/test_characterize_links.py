@@ -43,6 +43,12 @@ static_hysteresis_pct = { max = 8 }
 """
 
 
+def step_s(rig) -> float:
+    """A step record of 0.1 s, or of 30 samples at the pace the rig measured on this PC (a
+    loaded PC makes the CANopen rig slow down; step figures need samples after the step)."""
+    return max(0.1, 30 / rig.info.sample_rate_hz)
+
+
 @pytest.fixture(autouse=True)
 def _fresh_emulators():
     yield
@@ -109,7 +115,11 @@ def test_characterize_over_canopen_at_the_links_rate(can_valve, tmp_path, capsys
         assert "link lost" in err, err
         assert "nothing was interpolated" in err and not js.exists()
         assert can_valve.working("SETPOVRON") == 0
-        return
+        pytest.skip(f"the rig refused the run on this loaded PC: {err.strip()}")
+    if "a sweep needs at least" in err:  # the pace this PC keeps is too slow for the profile
+        assert "choose a duration of at least" in err and not js.exists(), err
+        assert can_valve.working("SETPOVRON") == 0
+        pytest.skip(f"the link's pace on this loaded PC is too slow for the sweep: {err.strip()}")
     assert js.exists(), err
     report = json.loads(js.read_text(encoding="utf-8"))
     assert report["link"].startswith("CANopen node 10 (virtual "), report["link"]
@@ -138,25 +148,35 @@ def test_the_tuning_windows_rig_over_canopen(can_valve):
     from prm9tool.device.canlink.session import CanopenSession
     from prm9tool.errors import Prm9Error
 
+    too_slow: LinkTooSlowError | None = None
     with CanopenSession(can_valve.options, 10) as session:
         rig = rig_for_session(session, "USB")  # what the Tuning window's runner does online
         assert isinstance(rig, CanRig) and rig.info.link.startswith("CANopen node 10")
         try:
-            step = step_test(rig, 25.0, duration_s=0.1)
-        except LinkTooSlowError as exc:  # the documented refusal on a PC too loaded for 1 kHz
-            pytest.skip(f"this PC is too loaded to keep 1 kHz now: {exc}")
-        assert step.figures is not None and step.figures.final == pytest.approx(25.0, abs=2.0)
-        assert np.isnan(step.record.channels["controller_output"]).all()  # no object: no data
-        with pytest.raises(Prm9Error, match="needs the controller's output"):
+            step = step_test(rig, 25.0, duration_s=step_s(rig))
+        except LinkTooSlowError as exc:  # a PC too loaded to keep the pace: the rig says so
+            too_slow = exc
+        else:
+            assert step.figures is not None
+            assert step.figures.final == pytest.approx(25.0, abs=2.0)
+            assert np.isnan(step.record.channels["controller_output"]).all()  # no object
+        with pytest.raises(Prm9Error) as refused:
             model_tune(rig, Targets(10.0, 0.04))
+        if isinstance(refused.value, LinkTooSlowError):  # it plays before it can tell
+            too_slow = too_slow or refused.value
+        else:
+            assert "needs the controller's output" in str(refused.value)
     assert can_valve.working("SETPOVRON") == 0
     assert can_valve.working("POSKP") == CATALOGUE["POSKP"].default
+    if too_slow is not None:  # the refusal and the valve's state were checked, not the figures
+        assert "nothing was interpolated" in str(too_slow), too_slow
+        pytest.skip(f"the rig refused a test on this loaded PC: {too_slow}")
 
 
 @pytest.mark.parametrize("can_valve", ["real"], indirect=True)
 def test_a_valve_without_the_override_objects_is_characterized_over_rpdo1(can_valve):
-    from prm9tool.characterize.canrig import rig_for_session
-    from prm9tool.characterize.procedures import static_test, step_test
+    from prm9tool.characterize.canrig import LinkTooSlowError, rig_for_session
+    from prm9tool.characterize.procedures import STATIC_MIN_SAMPLES, static_test, step_test
     from prm9tool.device.canlink.rpdo_setpoint import RpdoSetpoint
     from prm9tool.device.canlink.session import CanopenSession
     from prm9tool.errors import Prm9Error
@@ -168,12 +188,24 @@ def test_a_valve_without_the_override_objects_is_characterized_over_rpdo1(can_va
         assert "SETPOVRON" in session.unavailable
         assert isinstance(session.setpoint_link(), RpdoSetpoint)
         rig = rig_for_session(session)
-        step = step_test(rig, 25.0, duration_s=0.1)  # the setpoint travels in RPDO1 (0x6300)
-        assert step.figures is not None and step.figures.final == pytest.approx(25.0, abs=2.0)
-        static = static_test(rig, period_s=2.0)
-        assert 0.9 < static.characteristic.gain < 1.1
+        try:
+            step = step_test(
+                rig, 25.0, duration_s=step_s(rig)
+            )  # the setpoint travels in RPDO1 (0x6300)
+            # the triangle's period for the pace this PC keeps (the rig measured it)
+            period_s = max(2.0, 1.1 * STATIC_MIN_SAMPLES / rig.info.sample_rate_hz)
+            static = static_test(rig, period_s=period_s)
+        except LinkTooSlowError as exc:  # a PC too loaded to keep the pace: the rig says so
+            too_slow: LinkTooSlowError | None = exc
+        else:
+            too_slow = None
+            assert step.figures is not None
+            assert step.figures.final == pytest.approx(25.0, abs=2.0)
+            assert 0.9 < static.characteristic.gain < 1.1
         assert "SETPOVR" not in session.unavailable  # never asked for: not even tried
     assert can_valve.working("POSSETP") == before  # the setpoint it had, given back
+    if too_slow is not None:  # the link and the valve's state were checked, not the figures
+        pytest.skip(f"the rig refused a test on this loaded PC: {too_slow}")
 
 
 @pytest.mark.parametrize("can_valve", ["not-started"], indirect=True)
@@ -191,7 +223,7 @@ def test_a_node_not_operational_is_refused_with_what_to_do_and_nothing_sent(can_
         wait_for(lambda: session.nmt_state == "pre-operational")
         rig = rig_for_session(session)
         with pytest.raises(RpdoSetpointError, match=r"NMT pre-operational.*NMT start"):
-            step_test(rig, 25.0, duration_s=0.1)
+            step_test(rig, 25.0, duration_s=step_s(rig))
         session.write("HEARTBEAT", 0)
     assert can_valve.working("POSSETP") == before
     assert can_valve.working("RPDO1TIMER") == 0  # no deadline left armed
@@ -237,11 +269,17 @@ def test_the_tuning_window_online_over_canopen(qtbot, can_valve, monkeypatch):
         qtbot.waitUntil(lambda: not w.runner.busy, timeout=30000)
         text = w.bode.result.text()
         # a PC too loaded to keep the pace is said in the status line, never hidden
-        if "The link could not keep the test's sample rate." not in w.status.text():
-            assert "−3 dB: " in text and " Hz, −90°: " in text, w.status.text()
+        status = w.status.text()
+        refused = "The link could not keep the test's sample rate." in status or (
+            "a sweep needs at least" in status and "choose a duration of at least" in status
+        )
+        if not refused:
+            assert "−3 dB: " in text and " Hz, −90°: " in text, status
             assert "The link's sample rate limited the sweep to" in text
         if os.environ.get("PRM9TOOL_SCREENSHOTS"):
             w.grab().save(os.path.join(os.environ["PRM9TOOL_SCREENSHOTS"], "tuning_bode_can.png"))
     finally:
         connection.shutdown()
     assert can_valve.working("SETPOVRON") == 0
+    if refused:  # said in the window and the valve given back; no figures to check
+        pytest.skip(f"the link's pace on this loaded PC refused the sweep: {status}")

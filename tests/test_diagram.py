@@ -296,6 +296,23 @@ def test_online_measuring_points_show_live_values_and_ask_for_the_scope(qtbot):
     assert not demand.active
 
 
+def test_a_point_without_a_live_value_says_why_and_shows_no_old_value(qtbot):
+    """Issue 25 item 1: while the oscilloscope holds the valve's stream, the other points
+    arrive as NaN; the dot shows a dash with the reason instead of the value from before."""
+    valve = EmulatedValve(E02)
+    link = EmulatorConnection(valve)
+    view = make_view(qtbot, E02, connection=link)
+    link.go_online()
+    link.signal_values_changed.emit({"pwm_a": 0.0})
+    dot = view.diagram.dots["pwm_a"]
+    assert dot.value_text == "PWM A 0.0 %"
+    link.signal_values_changed.emit({"pwm_a": float("nan")})
+    assert dot.value_text == "PWM A —"
+    assert "no live value now" in dot.toolTip() and "oscilloscope" in dot.toolTip()
+    link.signal_values_changed.emit({"pwm_a": 120.0})
+    assert "click to show it in the oscilloscope" in dot.toolTip()
+
+
 def test_online_the_valve_type_is_locked(qtbot):
     link = EmulatorConnection(EmulatedValve(E02))
     view = make_view(qtbot, E02, connection=link)

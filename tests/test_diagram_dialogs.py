@@ -481,3 +481,21 @@ def test_dialogs_open_at_a_default_size_that_fits_a_1024_x_768_screen(qtbot, set
             dialog.close()
     finally:
         i18n.set_language("en")
+
+
+# --- one editing rule for both editors -----------------------------------------------------------
+def test_both_parameter_editors_show_limta_capped_by_curnorm(qtbot, setup):
+    """The parameter list's edit dialog and the diagram's field show the same allowed range,
+    capped by the nominal coil current (manual table 7-14: LIMTA 0..CURNORM)."""
+    from prm9tool.views.parameter_dialog import ParameterEditDialog
+
+    s = setup(E02)
+    curnorm = int(s.doc.value("CURNORM"))
+    assert curnorm < CATALOGUE["LIMTA"].raw_max  # else there is no cap to show
+    capped = f"0 … {curnorm} mA (CURNORM)"
+    field = open_dialog(qtbot, s, "current_limit").fields["LIMTA"]
+    edit = ParameterEditDialog(s.doc, s.ctx.access, "LIMTA")
+    qtbot.addWidget(edit)
+    assert field.range == capped
+    assert field.toolTip() == f"LIMTA: {capped}"
+    assert edit._labels["range"].text() == capped

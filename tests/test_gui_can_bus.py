@@ -10,8 +10,22 @@ from PySide6.QtCore import QSettings
 from PySide6.QtWidgets import QDialogButtonBox, QInputDialog
 
 from prm9tool.device import factory
+from prm9tool.device.canlink.discovery import IDENTIFY_TIMEOUT_S, SCAN_WINDOW_S
+from prm9tool.device.canlink.session import SDO_TIMEOUT_S
 from prm9tool.online.connection import ValveConnection
 from prm9tool.views.can_bus_dialog import BITRATE_KEY, CHANNEL_KEY, INTERFACE_KEY, CanBusDialog
+
+IDENTIFY_READS = 7  # discovery.identify_node of a PRM9: 0x1000, 0x1018/1, 0x1008, 0x100A,
+# 0x1018/4, the type key 0x2041 and 0x2005/1 (E04 or E02)
+OPEN_READS = 40  # CanopenSession opening: identity, type key, the switches' objects ...
+
+
+def search_bound_ms(nodes: int) -> int:
+    """The longest a search of ``nodes`` nodes takes by its own timeouts (the scan window,
+    then every identifying read timing out and tried twice, as canopen's SDO client does);
+    doubled: on a loaded PC the test's own threads wait for the cores too."""
+    worst = SCAN_WINDOW_S + nodes * IDENTIFY_READS * 2 * IDENTIFY_TIMEOUT_S
+    return int(2 * worst * 1000)
 
 
 @pytest.fixture
@@ -42,9 +56,11 @@ def test_the_dialog_lists_the_nodes_and_goes_online_with_the_valve(qtbot, rig, s
     ok = dialog.buttons.button(QDialogButtonBox.StandardButton.Ok)
     try:
         dialog.search.click()
-        qtbot.waitUntil(lambda: dialog.table.rowCount() == 2, timeout=10000)
+        # the search ends (its button comes back) within its own timeouts, however slow the PC
+        qtbot.waitUntil(dialog.search.isEnabled, timeout=search_bound_ms(2))
     finally:
         other.disconnect()
+    assert dialog.table.rowCount() == 2, dialog.state.text()
     cells = [[dialog.table.item(r, c).text() for c in range(4)] for r in range(2)]
     assert cells[0] == ["can:5", "not a PRM9", "", ""]
     assert cells[1][:3] == ["can:10", E04, str(rig.valve.serial)]
@@ -60,8 +76,14 @@ def test_the_dialog_lists_the_nodes_and_goes_online_with_the_valve(qtbot, rig, s
         rig.options.channel,
     )
     assert int(settings.value(BITRATE_KEY)) == 500000
-    with qtbot.waitSignal(connection.online_changed, timeout=10000):
-        connection.go_online(dialog.selected_device_id())
+    failed: list[str] = []
+    connection.failed.connect(failed.append)
+    connection.go_online(dialog.selected_device_id())
+    qtbot.waitUntil(  # online, or refused: both come within the opening's SDO timeouts
+        lambda: connection.is_online or bool(failed),
+        timeout=int(2 * OPEN_READS * 2 * SDO_TIMEOUT_S * 1000),
+    )
+    assert connection.is_online, failed
     assert connection.device.type_key == E04
     connection.go_offline()
     connection.shutdown()

@@ -2,8 +2,11 @@
 
 from __future__ import annotations
 
+import math
+
 import pytest
 
+from prm9tool.catalogue import CATALOGUE
 from prm9tool.device.emulator import EmulatedValve
 from prm9tool.device.usb.protocol import Op
 from prm9tool.device.usb.session import UsbSession
@@ -51,3 +54,24 @@ def test_watch_stream_values_keep_their_labels_when_the_chunk_changes(valve):
     for values in seen:
         for key, value in values.items():
             assert (value == pytest.approx(supply, abs=1)) == (key == "supply_voltage"), values
+
+
+def test_points_outside_the_oscilloscopes_stream_say_no_value_not_an_old_one(valve):
+    """Issue 25 item 1: with the oscilloscope streaming three points, the diagram's other
+    measuring points were left at the value they had before (0 mA on a fresh valve) while the
+    spool moved. They are reported as NaN (no value now) each poll; streamed ones are live."""
+    with UsbSession(EmulatorTransport(valve), "emulator:test") as session:
+        poller = Poller()
+        poller.reset(session.info)
+        poller.watched = ["demand", "controller_output", "current_a", "pwm_a"]
+        poller.poll(session, status=False, signals=True)  # the watch stream runs first
+        valve.advance(0.15)
+        poller.start_stream(session, ["demand", "position_actual", "current_a"], 1000)
+        valve.write(*CATALOGUE["SETPOVR"].key, 3277)
+        valve.write(*CATALOGUE["SETPOVRON"].key, 1)
+        valve.advance(0.3)
+        values = poller.poll(session, status=False, signals=True).signals
+    assert set(values) == {"demand", "controller_output", "current_a", "pwm_a"}
+    assert math.isnan(values["controller_output"]) and math.isnan(values["pwm_a"])
+    assert values["demand"] == valve.signal("demand") == 3277
+    assert values["current_a"] == pytest.approx(valve.signal("current_a"), abs=40)

@@ -11,7 +11,7 @@ from prm9tool import i18n
 from prm9tool.catalogue import CATALOGUE, Access
 from prm9tool.catalogue.typekey import TypeKey
 from prm9tool.errors import ValueRangeError
-from prm9tool.files import prmfile
+from prm9tool.files import prmdocument, prmfile
 from prm9tool.messages import DECIMAL_POINT
 from prm9tool.model.access import AccessModel
 from prm9tool.model.document import ParameterDocument
@@ -70,7 +70,7 @@ def test_the_parameter_dialog_takes_a_decimal_comma_and_the_file_keeps_the_point
     dialog._buttons.accepted.emit()
     assert dialog.result() == dialog.DialogCode.Accepted and doc.value("POSKP") == 50
     path = tmp_path / "valve.prm"
-    prmfile.save_document(doc, path)
+    prmdocument.save_document(doc, path)
     text = path.read_text(encoding="utf-8")
     assert "\nPOSKP = 0.5  #" in text and "\nMONTHRES = 9.766  #" in text
     assert prmfile.read_file(path).values["POSKP"] == 50

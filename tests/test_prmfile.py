@@ -16,14 +16,13 @@ from prm9tool.catalogue.typekey import TypeKey, all_type_keys
 from prm9tool.catalogue.variant import ALL_VARIANTS, Variant
 from prm9tool.errors import FileFormatError, FileProblem
 from prm9tool.files import atomicfile
+from prm9tool.files.prmdocument import load_document, save_document
 from prm9tool.files.prmfile import (
     MAX_FILE_SIZE,
     PrmContents,
     check_bytes,
-    load_document,
     read_bytes,
     read_file,
-    save_document,
     write_file,
 )
 from prm9tool.messages import Message

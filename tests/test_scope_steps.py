@@ -103,3 +103,36 @@ def test_without_a_reference_a_square_wave_response_is_measured_on_its_first_ste
     assert fig.rise_time == pytest.approx(TAU * math.log(9), abs=2 / RATE)
     assert fig.overshoot == pytest.approx(0.0, abs=0.05)
     assert fig.t_end < 0.16  # it ends where the response heads back down
+
+
+def _hunting_then_overshoot(rising: bool):
+    """A 0 → 20 step (reference) from a level that hunts ±1.5 at 24 Hz to a quiet one, through
+    a second-order response that overshoots by 1 (5 % of the step); mirrored: 20 → 0."""
+    t = np.arange(int(1.0 * RATE)) / RATE
+    ref = np.where(t >= 0.5, 20.0, 0.0)
+    s = np.clip(t - 0.5, 0, None)
+    zeta, wn = 0.69, 2 * np.pi * 40  # overshoot exp(−ζπ/√(1−ζ²)) = 5 %
+    wd = wn * math.sqrt(1 - zeta**2)
+    step = 1 - np.exp(-zeta * wn * s) * (
+        np.cos(wd * s) + zeta / math.sqrt(1 - zeta**2) * np.sin(wd * s)
+    )
+    y = 20.0 * step + np.where(t < 0.5, 1.5 * np.sin(2 * np.pi * 24 * t), 0.0)
+    return (t, ref, y) if rising else (t, 20.0 - ref, 20.0 - y)
+
+
+@pytest.mark.parametrize("rising", [True, False])
+def test_an_overshoot_after_a_hunting_level_is_measured_in_both_directions(rising):
+    """Issue 25 item 2: the spool hunting at 0 % before a rising step was taken as noise of
+    the response after it, so the 5 % overshoot of a 0 → 20 % step read 0.0 % while the
+    falling step (from a quiet 20 %) was measured."""
+    t, ref, y = _hunting_then_overshoot(rising)
+    fig = measure_step(t, y, ref).figures
+    assert fig is not None
+    assert fig.overshoot == pytest.approx(5.0, abs=0.3)
+
+
+def test_white_noise_alone_is_no_overshoot():
+    rng = np.random.default_rng(7)
+    t, ref, y = _square(0.2, 1.0)
+    fig = measure_step(t, y + rng.normal(0, 0.05, len(y)), ref).figures
+    assert fig is not None and fig.overshoot == 0.0

@@ -255,5 +255,5 @@ def test_a_firmware_text_with_cr_lf_cannot_inject_an_entry_into_the_backup():
         "LIMTA = 2400  # Solenoid A: maximum current [mA]",
     ]
     contents = read_file(path)
-    assert (contents.firmware, contents.unknown) == ("1.0\\x0d\\x0aLIMTA = 5\\x0aX=1", [])
+    assert (contents.firmware, contents.unknown) == ("1.0\r\nLIMTA = 5\nX=1", [])  # exactly
     assert contents.values["LIMTA"] == 2400

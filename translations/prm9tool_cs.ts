@@ -1211,6 +1211,10 @@ Poslední akce možná nebyla dokončena. Uložte svou práci pod novým názvem
             <translation>V režimu online je typ ventilu dán připojeným ventilem.</translation>
         </message>
         <message>
+            <source>%1 — no live value now: the valve streams three measuring points at a time and the oscilloscope is recording others (over CANopen: the valve has no object for this point).</source>
+            <translation>%1 – nyní bez živé hodnoty: ventil přenáší tři měřicí body najednou a osciloskop zaznamenává jiné (přes CANopen: ventil pro tento bod nemá objekt).</translation>
+        </message>
+        <message>
             <source>%1 — click to show it in the oscilloscope</source>
             <translation>%1 – klepnutím jej zobrazíte v osciloskopu</translation>
         </message>
@@ -2771,6 +2775,10 @@ Ano načte a záznam zařadí do fronty; Ne nenačte nic.</translation>
         <message>
             <source>{0} ({1}) is missing (required for {2} valves)</source>
             <translation>{0} ({1}) chybí (povinný pro ventily {2})</translation>
+        </message>
+        <message>
+            <source>{0}: no value after '='; only a download over CANopen may leave a value out, marked with the comment '{1}'</source>
+            <translation>{0}: za '=' chybí hodnota; hodnotu smí vynechat jen načtení přes CANopen, označené komentářem '{1}'</translation>
         </message>
         <message>
             <source>byte 0x{0} is not UTF-8 text: the file is corrupt</source>

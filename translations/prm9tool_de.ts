@@ -1206,6 +1206,10 @@ Die letzte Aktion wurde womöglich nicht vollständig ausgeführt. Speichern Sie
             <translation>Online ist der Ventiltyp der des angeschlossenen Ventils.</translation>
         </message>
         <message>
+            <source>%1 — no live value now: the valve streams three measuring points at a time and the oscilloscope is recording others (over CANopen: the valve has no object for this point).</source>
+            <translation>%1 – zurzeit kein Messwert: Das Ventil überträgt drei Messpunkte gleichzeitig, und das Oszilloskop zeichnet andere auf (über CANopen: Das Ventil hat für diesen Punkt kein Objekt).</translation>
+        </message>
+        <message>
             <source>%1 — click to show it in the oscilloscope</source>
             <translation>%1 – klicken, um ihn im Oszilloskop anzuzeigen</translation>
         </message>
@@ -2760,6 +2764,10 @@ Ja lädt hoch und stellt den Eintrag in die Warteschlange; Nein lädt nichts hoc
         <message>
             <source>{0} ({1}) is missing (required for {2} valves)</source>
             <translation>{0} ({1}) fehlt (erforderlich für Ventile {2})</translation>
+        </message>
+        <message>
+            <source>{0}: no value after '='; only a download over CANopen may leave a value out, marked with the comment '{1}'</source>
+            <translation>{0}: kein Wert nach '='; nur ein Auslesen über CANopen darf einen Wert auslassen, gekennzeichnet mit dem Kommentar '{1}'</translation>
         </message>
         <message>
             <source>byte 0x{0} is not UTF-8 text: the file is corrupt</source>

@@ -19,7 +19,9 @@ from dataclasses import dataclass
 
 import numpy as np
 
-FULL = 16384.0  # 100 % in counts
+from prm9tool.catalogue.scale import FULL_SCALE
+
+FULL = float(FULL_SCALE)  # 100 % in counts
 WORKING = (0.1, 0.9)  # share of each side's response span used for the straight line
 
 

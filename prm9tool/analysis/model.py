@@ -20,7 +20,10 @@ import numpy as np
 from scipy import optimize, signal
 
 from prm9tool.analysis.pid import CYCLE_S, PidGains
+from prm9tool.catalogue.scale import FULL_SCALE
 from prm9tool.scope.measure import step_figures
+
+_FULL = float(FULL_SCALE)  # 100 %: where the controller output saturates
 
 ROBUST_GAIN = 1.5  # the overshoot target must hold with this much more plant gain
 ROBUST_DELAY = 2  # ... and this many more cycles of dead time
@@ -120,7 +123,7 @@ def simulate_loop(
     gains: PidGains,
     step: float,
     duration_s: float,
-    out_lo: float = -16384.0,
+    out_lo: float = -_FULL,
     dt: float = CYCLE_S,
 ) -> np.ndarray:
     """Closed-loop response to a setpoint step of ``step`` counts (the firmware's PIDT1).
@@ -144,10 +147,10 @@ def simulate_loop(
         s3 = a3 * s3 + g3 * s2
         y = y + dt * s3 if integrating else s3
         e = step - y
-        integ = min(max(integ + ki * e, out_lo), 16384.0)
+        integ = min(max(integ + ki * e, out_lo), _FULL)
         deriv = t1 * deriv + kd * (e - prev)
         prev = e
-        delayed[k % len(delayed)] = min(max(kp * e + integ + deriv, out_lo), 16384.0)
+        delayed[k % len(delayed)] = min(max(kp * e + integ + deriv, out_lo), _FULL)
         out[k] = y
     return out
 
@@ -182,7 +185,7 @@ def design(
     step: float,
     t1: float,
     margin: float = 0.7,
-    out_lo: float = -16384.0,
+    out_lo: float = -_FULL,
 ) -> Design:
     """Search Kp, Ki and the derivative time for the fastest settling within the overshoot.
 

@@ -12,6 +12,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from prm9tool.catalogue.scale import FULL_SCALE
+
 DEAD_BAND_LEVEL = 1.0  # % of span: the response counts as "not moving" below this
 LIN_POINTS = 9  # the firmware's characteristics have nine points (A…I)
 
@@ -31,8 +33,15 @@ class StaticCharacteristic:
 
     @property
     def mean(self) -> np.ndarray:
-        """The mean of both branches (one branch where only one was measured)."""
-        return np.nanmean(np.vstack([self.up, self.down]), axis=0)
+        """The mean of both branches (one branch where only one was measured, NaN where
+        neither has a sample)."""
+        return branch_mean(self.up, self.down)
+
+
+def branch_mean(up: np.ndarray, down: np.ndarray) -> np.ndarray:
+    """Per bin: the mean of both branches, the one measured, or NaN where neither was (a bin
+    no sample fell in: samples lost on a busy link, a demand the sweep jumped over)."""
+    return np.where(np.isnan(up), down, np.where(np.isnan(down), up, (up + down) / 2.0))
 
 
 def static_characteristic(
@@ -48,10 +57,12 @@ def static_characteristic(
     rising = np.gradient(x) >= 0.0
     up = _branch(x[rising], y[rising], edges)
     down = _branch(x[~rising], y[~rising], edges)
-    mean = np.nanmean(np.vstack([up, down]), axis=0)
-    span = float(np.nanmax(mean) - np.nanmin(mean)) or 1.0
-    dead = _dead_band(centres, mean, span)
-    fit = np.isfinite(mean)
+    mean = branch_mean(up, down)
+    fit = np.isfinite(mean)  # bins no sample fell in are left out of every figure
+    if np.count_nonzero(fit) < 2:
+        raise ValueError("the sweep's samples fall in fewer than two bins of its demand range")
+    span = float(np.max(mean[fit]) - np.min(mean[fit])) or 1.0
+    dead = _dead_band(centres[fit], mean[fit], span)
     if exclude_dead_band and dead[1] > dead[0]:
         fit &= (centres < dead[0]) | (centres > dead[1])
     gain, intercept = np.polyfit(centres[fit], mean[fit], 1)
@@ -129,14 +140,14 @@ def propose_linearization(
     y_lo = float(np.interp(lo_d, demand[order], response[order]))
     y_hi = float(np.interp(hi_d, demand[order], response[order]))
     gain = (y_hi - y_lo) / (hi_d - lo_d) if hi_d != lo_d else 1.0
-    first = -16384 if bipolar else 0
-    xs = np.linspace(first, 16384, LIN_POINTS)
+    first = -FULL_SCALE if bipolar else 0
+    xs = np.linspace(first, FULL_SCALE, LIN_POINTS)
     wanted = gain * np.interp(xs, *d_at)
     inverse = _monotonic(y_of_out[1], y_of_out[0])
     ys = np.interp(wanted, *inverse)
     return Linearization(
         tuple(round(v) for v in xs),
-        tuple(round(float(np.clip(v, -16384, 16384))) for v in ys),
+        tuple(round(float(np.clip(v, -FULL_SCALE, FULL_SCALE))) for v in ys),
         float(gain),
     )
 

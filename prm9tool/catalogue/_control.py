@@ -17,6 +17,7 @@ from prm9tool.catalogue._vocabulary import (
     U16,
     T,
 )
+from prm9tool.catalogue.scale import FULL_SCALE
 from prm9tool.catalogue.schema import Access, Applies, Parameter, Texts
 from prm9tool.catalogue.variant import Config
 
@@ -192,7 +193,7 @@ CURRENT_AND_DITHER: list[Parameter] = [
         1,
         U16,
         0,
-        16384,
+        FULL_SCALE,
         2458,
         group="dither",
         access=Access.BASIC,
@@ -316,7 +317,7 @@ MONITORING: list[Parameter] = [
         1,
         S16,
         0,
-        16384,
+        FULL_SCALE,
         1600,
         group="monitoring",
         unit="%",
@@ -369,8 +370,8 @@ SERVICE: list[Parameter] = [
         0x2050,
         2,
         S16,
-        -16384,
-        16384,
+        -FULL_SCALE,
+        FULL_SCALE,
         0,
         group="service",
         in_file=False,

@@ -5,7 +5,6 @@ from __future__ import annotations
 
 from prm9tool.catalogue._vocabulary import (
     E04_ONLY,
-    GAIN,
     OFF_ON,
     PERCENT,
     POLARITY,
@@ -18,6 +17,7 @@ from prm9tool.catalogue._vocabulary import (
     linearization,
     process_value,
 )
+from prm9tool.catalogue.scale import FULL_SCALE, GAIN
 from prm9tool.catalogue.schema import ObjAccess, Parameter
 
 _SENSOR_LIN = T(
@@ -65,8 +65,8 @@ EXTERNAL_SENSOR: list[Parameter] = [
         0x2005,
         3,
         S16,
-        -16384,
-        16384,
+        -FULL_SCALE,
+        FULL_SCALE,
         0,
         group="ext_sensor",
         applies=E04_ONLY,
@@ -87,7 +87,7 @@ EXTERNAL_SENSOR: list[Parameter] = [
         U16,
         16383,
         65535,
-        16384,
+        FULL_SCALE,
         group="ext_sensor",
         applies=E04_ONLY,
         scale=GAIN,

@@ -3,7 +3,6 @@
 from __future__ import annotations
 
 from prm9tool.catalogue._vocabulary import (
-    GAIN,
     PERCENT,
     POLARITY,
     S8,
@@ -16,6 +15,7 @@ from prm9tool.catalogue._vocabulary import (
     T,
     linearization,
 )
+from prm9tool.catalogue.scale import FULL_SCALE, GAIN
 from prm9tool.catalogue.schema import (
     Access,
     Applies,
@@ -62,7 +62,7 @@ SETPOINT: list[Parameter] = [
         1,
         S16,
         0,
-        16384,
+        FULL_SCALE,
         819,
         group="threshold",
         access=Access.BASIC,
@@ -157,7 +157,7 @@ SETPOINT: list[Parameter] = [
         U32,
         0,
         65535,
-        16384,
+        FULL_SCALE,
         group="gain_offset",
         access=Access.BASIC,
         scale=GAIN,
@@ -176,7 +176,7 @@ SETPOINT: list[Parameter] = [
         U32,
         0,
         65535,
-        16384,
+        FULL_SCALE,
         group="gain_offset",
         access=Access.BASIC,
         scale=GAIN,
@@ -195,7 +195,7 @@ SETPOINT: list[Parameter] = [
         1,
         S16,
         0,
-        16384,
+        FULL_SCALE,
         0,
         group="gain_offset",
         access=Access.BASIC,
@@ -215,7 +215,7 @@ SETPOINT: list[Parameter] = [
         1,
         S16,
         0,
-        16384,
+        FULL_SCALE,
         0,
         group="gain_offset",
         access=Access.BASIC,

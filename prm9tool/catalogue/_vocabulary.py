@@ -3,6 +3,7 @@ choices several parameters share, and the nine-point linearization curves."""
 
 from __future__ import annotations
 
+from prm9tool.catalogue.scale import FULL_SCALE, PERCENT
 from prm9tool.catalogue.schema import (
     EVERY_VARIANT,
     Access,
@@ -21,8 +22,6 @@ STR = DataType.VISIBLE_STRING
 RO = ObjAccess.RO
 # The firmware version the catalogue (and so the EDS) describes; the emulated valve runs it.
 FIRMWARE_VERSION = "1.0.0"
-PERCENT = 100.0 / 16384.0  # normalized internal scale: 16384 = 100 %
-GAIN = 1.0 / 16384.0  # gain factors: 16384 = 1.0 (the manual's sensor-gain convention)
 
 TWO_COILS = Applies(coils=frozenset({Coils.AB}))
 COIL_A = Applies(coils=frozenset({Coils.AB, Coils.A}))
@@ -62,15 +61,15 @@ def linearization(
     points = "ABCDEFGHI"
     result = []
     for n, letter in enumerate(points):
-        default = -16384 + n * 4096
+        default = -FULL_SCALE + n * 4096
         result.append(
             Parameter(
                 f"{prefix}{axis}{letter}",
                 index,
                 n + 1,
                 S16,
-                -16384,
-                16384,
+                -FULL_SCALE,
+                FULL_SCALE,
                 default,
                 group=group,
                 unit="%",
@@ -105,8 +104,8 @@ def process_value(
         index,
         subindex,
         DataType.INTEGER16,
-        -16384,
-        16384,
+        -FULL_SCALE,
+        FULL_SCALE,
         0,
         group=group,
         access=Access.READ_ONLY,

@@ -8,7 +8,9 @@ The emulated firmware applies this rule and the current-limiter dialog draws it.
 
 from __future__ import annotations
 
-FULL = 16384  # DTAMP raw value of 100 %
+from prm9tool.catalogue import scale
+
+FULL = scale.FULL_SCALE  # DTAMP raw value of 100 %
 FULL_SCALE = 0.10  # DTAMP 100 % = a peak dither of 10 % CURNORM (decision)
 MAX_HZ = 2500.0  # Nyquist of the 200 µs control loop; higher DYNFREQ settings are clamped
 

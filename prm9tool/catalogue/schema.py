@@ -10,7 +10,7 @@ from enum import IntEnum, StrEnum
 
 from prm9tool.catalogue.variant import Coils, Config, Variant
 from prm9tool.errors import ValueRangeError
-from prm9tool.messages import QT_TRANSLATE_NOOP, Number
+from prm9tool.messages import QT_TRANSLATE_NOOP, SHOWN_CHARACTERS, Number, quoted
 
 
 class DataType(IntEnum):
@@ -232,13 +232,13 @@ class Parameter:
         if not math.isfinite(value):
             raise ValueRangeError(
                 QT_TRANSLATE_NOOP("Problems", "{0}: {1} is not a number")(
-                    self.mnemonic, repr(display)
+                    self.mnemonic, quoted(display) if isinstance(display, str) else repr(display)
                 )
             )
         if not math.isfinite(value / self.scale):  # e.g. 1e308 % overflows the raw value
             raise ValueRangeError(
                 QT_TRANSLATE_NOOP("Problems", "{0}: {1} is far outside the range")(
-                    self.mnemonic, repr(display)
+                    self.mnemonic, quoted(display) if isinstance(display, str) else repr(display)
                 )
             )
         return round(value / self.scale)
@@ -273,7 +273,7 @@ class Parameter:
         if not _is_number(cleaned):
             raise ValueRangeError(
                 QT_TRANSLATE_NOOP("Problems", "{0}: {1} is not a number")(
-                    self.mnemonic, repr(text.strip())
+                    self.mnemonic, quoted(text.strip())
                 )
             )
         raw = self.to_raw(cleaned)
@@ -301,7 +301,7 @@ class Parameter:
             allowed = ", ".join(str(code) for code, _ in self.choices)
             raise ValueRangeError(
                 QT_TRANSLATE_NOOP("Problems", "{0}: {1} is not one of the allowed codes {2}")(
-                    self.mnemonic, raw, allowed
+                    self.mnemonic, _short_number(str(raw)), allowed
                 )
             )
         if not self.raw_min <= raw <= self.raw_max:
@@ -310,7 +310,13 @@ class Parameter:
             raise ValueRangeError(
                 QT_TRANSLATE_NOOP(
                     "Problems", "{0}: {1}{2} is outside the allowed range {3} … {4}{2}"
-                )(self.mnemonic, Number(self.format_display(raw)), unit, Number(lo), Number(hi))
+                )(
+                    self.mnemonic,
+                    Number(_short_number(self.format_display(raw))),
+                    unit,
+                    Number(lo),
+                    Number(hi),
+                )
             )
 
     def choice_text(self, raw: int, language: str = "en") -> str:
@@ -324,7 +330,16 @@ class Parameter:
 # "object 0x2041: decision", "object and scaling: decision", "decision (tuning generator)",
 # "not in 7-13: decision" (a CiA 301 object the manual's table does not list)
 _DECIDED_ADDRESS = re.compile(r"object[^:;)]*: decision|^decision \(|not in 7-13: decision")
-_NUMBER = re.compile(r"[+-]?([0-9]+\.?[0-9]*|\.[0-9]+)([eE][+-]?[0-9]+)?")
+# Unambiguous: digits, then a fraction only after a point. "[0-9]+\.?[0-9]*" split a run of
+# digits between its two parts in every way before failing on a trailing letter: a check time
+# quadratic in the number's length (20 000 digits and an "x": 15 s).
+_NUMBER = re.compile(r"[+-]?(?:[0-9]+(?:\.[0-9]*)?|\.[0-9]+)(?:[eE][+-]?[0-9]+)?")
+
+
+def _short_number(text: str) -> str:
+    """A number's text for a message: as it is, or in powers of ten when it is longer than a
+    message should repeat (``1e+149``, not its 150 digits)."""
+    return text if len(text) <= SHOWN_CHARACTERS else f"{float(text):.6g}"
 
 
 def _is_number(text: str) -> bool:

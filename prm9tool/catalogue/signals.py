@@ -10,10 +10,10 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
+from prm9tool.catalogue.scale import PERCENT
 from prm9tool.catalogue.schema import EVERY_VARIANT, Applies, Texts
 from prm9tool.catalogue.variant import Coils, Config, Variant
 
-PERCENT = 100.0 / 16384.0
 T = Texts
 _E04 = Applies(configs=frozenset({Config.E04}))
 _COIL_A = Applies(coils=frozenset({Coils.AB, Coils.A}))

@@ -27,6 +27,7 @@ from prm9tool.analysis.model import (
     simulate_loop,
 )
 from prm9tool.analysis.pid import CYCLE_S, from_parameters, to_parameters
+from prm9tool.catalogue.scale import FULL_SCALE, PERCENT, from_percent
 from prm9tool.catalogue.typekey import TypeKey
 from prm9tool.catalogue.variant import Coils
 from prm9tool.characterize.procedures import (
@@ -115,7 +116,7 @@ def model_tune(
     names = gain_names(lp)
     duration = max(3.0 * targets.settling_s, 0.06)
     two_coils = TypeKey.parse(rig.info.type_key).variant.coils is Coils.AB
-    out_lo = -16384.0 if two_coils else 0.0
+    out_lo = -float(FULL_SCALE) if two_coils else 0.0
     with preserved(rig, names, chain_changes(rig, loop)) as saved:
         before = _step(rig, lp, amplitude_pct, 0.0, duration, limit_pct, loop)
         if not np.isfinite(before.record.channels[lp.output]).all():
@@ -128,7 +129,7 @@ def model_tune(
             )
         data = [_io(before, lp.output, lp.actual)]
         t1 = from_parameters(lp.prefix, saved).t1
-        step = amplitude_pct / 100.0 * 16384.0
+        step = from_percent(amplitude_pct)
         after, history = before, []
         round_no = 0
         while round_no < rounds:
@@ -150,7 +151,7 @@ def model_tune(
             if meets(after, targets):
                 break
             data.append(_io(after, lp.output, lp.actual))
-    simulated = simulate_loop(model, chosen.gains, step, duration, out_lo) / 16384.0 * 100.0
+    simulated = simulate_loop(model, chosen.gains, step, duration, out_lo) * PERCENT
     return AutotuneResult(
         loop,
         {k: saved[k] for k in names},
@@ -169,7 +170,7 @@ def model_tune(
 def _io(step: StepResult, output: str, actual: str) -> tuple[np.ndarray, np.ndarray]:
     """Controller output and response in counts from the step onwards."""
     keep = step.record.t >= -CYCLE_S
-    scale = 16384.0 / 100.0
+    scale = FULL_SCALE / 100.0
     return step.record.channels[output][keep] * scale, step.record.channels[actual][keep] * scale
 
 

@@ -36,7 +36,6 @@ from prm9tool.characterize.transparent import TRANSPARENT
 from prm9tool.errors import Prm9Error
 from prm9tool.scope.measure import StepFigures, step_figures
 
-PERCENT = 100.0 / 16384.0
 SAMPLES_PER_PERIOD = 10  # a sweep goes no higher than the sample rate / this (decision)
 SWEEP_MIN_SAMPLES = 256  # what the frequency response needs
 
@@ -50,11 +49,17 @@ class Loop:
     actual: str
     output: str
     integrating: bool
+    step_pct: float  # the step the step-response simulator makes (prm9tool.online.tuning)
+    simulated_s: float  # how long the simulator runs after the step
 
 
 LOOPS = {
-    "position": Loop("POS", "position_setpoint", "position_actual", "controller_output", False),
-    "process": Loop("PRC", "process_setpoint", "process_actual", "position_setpoint", True),
+    "position": Loop(
+        "POS", "position_setpoint", "position_actual", "controller_output", False, 50.0, 0.06
+    ),
+    "process": Loop(
+        "PRC", "process_setpoint", "process_actual", "position_setpoint", True, 20.0, 1.0
+    ),
 }
 GAIN_SUFFIXES = ("KP", "KI", "KD", "T1")
 
@@ -188,9 +193,14 @@ def _step(
             [np.full(pre, start), np.full(int(duration * fs), start + amplitude)]
         )
         band = limit if limit is not None else abs(amplitude) * 2.0 + 5.0
-        rec = record(rig, stimulus, keys, start, band, gaps=True)
+        try:
+            rec = record(rig, stimulus, keys, start, band, gaps=True)
+        except LinkTooSlowError:  # this repetition lost nearly everything: the next one
+            if attempt + 1 < ATTEMPTS:
+                continue
+            raise
         missing = rig.last_missing if len(rig.last_missing) else np.zeros(len(rec.t), bool)
-        if attempt == 0:
+        if not channels:
             channels, hole = dict(rec.channels), missing.copy()
         else:  # the samples this repetition delivered where the record has none
             for key, values in rec.channels.items():

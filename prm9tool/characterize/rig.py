@@ -20,6 +20,7 @@ from typing import TYPE_CHECKING, TypeVar
 import numpy as np
 
 from prm9tool.catalogue import CATALOGUE
+from prm9tool.catalogue.scale import FULL_SCALE
 from prm9tool.device.records import DeviceState, NmtState, ValveStatus
 from prm9tool.errors import CommunicationError, Prm9Error
 from prm9tool.messages import QT_TRANSLATE_NOOP
@@ -29,7 +30,7 @@ if TYPE_CHECKING:
     from prm9tool.device.session import ValveSession
 
 T = TypeVar("T")
-FULL = 16384.0  # 100 % in counts
+FULL = float(FULL_SCALE)  # 100 % in counts
 CHUNK = 500  # samples between checks for a stop request or a fault
 STOPPED = QT_TRANSLATE_NOOP("Characterize", "stopped by the user; the valve was put back as it was")
 REPORTED = QT_TRANSLATE_NOOP("Characterize", "the valve reported error {0}: {1}")

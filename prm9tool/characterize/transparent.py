@@ -4,6 +4,8 @@ no offset. The procedures here and the step-response simulator (online/tuning.py
 
 from __future__ import annotations
 
+from prm9tool.catalogue.scale import FULL_SCALE
+
 NO_SHAPING: dict[str, int] = {
     "THRESETP": 0,
     "SETPLINON": 0,
@@ -13,8 +15,8 @@ NO_SHAPING: dict[str, int] = {
     "RAMPSETNEGDOWN": 0,
 }
 UNITY_GAIN: dict[str, int] = {
-    "GAINSETPOS": 16384,
-    "GAINSETNEG": 16384,
+    "GAINSETPOS": FULL_SCALE,
+    "GAINSETNEG": FULL_SCALE,
     "OFFSETPOS": 0,
     "OFFSETNEG": 0,
 }

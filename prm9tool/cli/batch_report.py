@@ -54,7 +54,8 @@ class ValveRecord:
     output: str | None = None  # --download: the file written
     changes: int | None = None  # --dry-run: parameters that an upload would change
     error: str | None = None
-    skipped: list[str] = field(default_factory=list)  # not available over CANopen: not uploaded
+    skipped: list[str] = field(default_factory=list)  # every parameter of the file not uploaded
+    absent_in_file: list[str] = field(default_factory=list)  # marked absent: never uploaded
     history: str | None = None  # "recorded", "queued" or why it was not recorded
     current: dict[str, Any] | None = field(default=None, repr=False)  # --dry-run: as read
 

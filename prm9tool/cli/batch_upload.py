@@ -6,6 +6,7 @@ from __future__ import annotations
 import logging
 from collections.abc import Callable, Mapping
 
+from prm9tool.catalogue import CATALOGUE
 from prm9tool.catalogue.typekey import TypeKey
 from prm9tool.cli.batch_history import BatchHistory
 from prm9tool.cli.batch_report import ProgressPrinter, Stopwatch, ValveRecord
@@ -123,16 +124,34 @@ class UploadJob:
         record.result = "ok" if result.stored else "verification-failed"
         if result.failed_step == "store":
             record.result = "store-failed"
+        record.absent_in_file = absent_in(self.contents)
+        record.skipped = sorted({*result.skipped, *record.absent_in_file})
         if result.skipped:
-            record.skipped = list(result.skipped)
             self.printer.say(
                 who,
                 "warning: not available over CANopen on this valve, not uploaded: "
                 + ", ".join(result.skipped),
             )
+        if record.absent_in_file:
+            self.printer.say(
+                who,
+                "warning: marked absent in the file (the valve it was read from lacks them), "
+                "not uploaded: " + ", ".join(record.absent_in_file),
+            )
         if not result.stored:
             problem = result.failure or _mismatch_text(result.failed_step, result.mismatches)
             record.error = f"{problem}; {reload_outcome(result.reload_error)}"
+
+
+def absent_in(contents: PrmContents) -> list[str]:
+    """The parameters of the file's type key that it marks absent (no value: the valve it was
+    downloaded from over CANopen lacks them, docs/prm-format.md), in catalogue order."""
+    present = contents.values
+    return [
+        p.mnemonic
+        for p in CATALOGUE.file_parameters(contents.type_key.variant)
+        if p.mnemonic not in present
+    ]
 
 
 def unexpected(exc: Exception) -> str:

@@ -16,7 +16,7 @@ from dataclasses import dataclass, field
 from prm9tool.catalogue import CATALOGUE, Access, Parameter, variant_label
 from prm9tool.catalogue.typekey import TypeKey
 from prm9tool.errors import FileProblem, TypeKeyError, ValueRangeError
-from prm9tool.messages import QT_TRANSLATE_NOOP, Message, message_of
+from prm9tool.messages import QT_TRANSLATE_NOOP, SHOWN_CHARACTERS, Message, message_of, quoted
 
 # A spelling suggestion for an unknown name compares it with every catalogue mnemonic; a file
 # full of unknown names (1 MiB holds 60 000) took 10-19 s. Typos in a real file are a handful.
@@ -62,9 +62,45 @@ _NOT_AVAILABLE = QT_TRANSLATE_NOOP(
     "{0} has no value: the valve it was read from does not have it over CANopen; not uploaded",
 )
 _MISSING = QT_TRANSLATE_NOOP("Problems", "{0} ({1}) is missing (required for {2} valves)")
+_NO_VALUE_NOT_MARKED = QT_TRANSLATE_NOOP(
+    "Problems",
+    "{0}: no value after '='; only a download over CANopen may leave a value out, marked with"
+    " the comment '{1}'",
+)
+
+# The one way a parameter may stand in a file without a value: a download over CANopen from a
+# valve without this project's object writes the line with this comment (docs/prm-format.md).
+NOT_AVAILABLE_HINT = "  # not available over CANopen on the valve this was read from"
 
 
 _MNEMONICS = [p.mnemonic for p in CATALOGUE]
+
+# What a free text of the header (the firmware a valve reports) must not hold as it is: a
+# backslash (the escape itself), a control character (a new line would inject an entry), a TAB,
+# a "#" (after a blank it starts a comment), and blanks at either end (the reader strips them).
+_MUST_ESCAPE = re.compile(r"[\\\x00-\x1f\x7f-\x9f#]|^\s|\s$")
+_ESCAPE = re.compile(r"\\(?:x([0-9a-f]{2})|u([0-9a-f]{4})|U([0-9a-f]{8}))")
+
+
+def escape_text(text: str) -> str:
+    """``text`` as a header value that reads back exactly (:func:`unescape_text`): each
+    character that would change or end it written as ``\\xNN`` (``\\uNNNN``,
+    ``\\UNNNNNNNN`` beyond Latin-1), e.g. ``1.0 \\x23 beta`` for ``1.0 # beta``."""
+    return _MUST_ESCAPE.sub(lambda m: "".join(map(_escaped, m.group())), text)
+
+
+def _escaped(char: str) -> str:
+    code = ord(char)
+    if code <= 0xFF:
+        return f"\\x{code:02x}"
+    return f"\\u{code:04x}" if code <= 0xFFFF else f"\\U{code:08x}"
+
+
+def unescape_text(value: str) -> str:
+    """A header value as the text it stands for: ``\\xNN``, ``\\uNNNN``, ``\\UNNNNNNNN``
+    (lower-case hex) are that character; any other backslash is itself (a file written by
+    hand, or before this escaping)."""
+    return _ESCAPE.sub(lambda m: chr(int(next(g for g in m.groups() if g), 16)), value)
 
 
 @dataclass
@@ -125,7 +161,7 @@ class Header:
         line, value = order[0].line, order[0].value
         match = re.fullmatch(rf"{FORMAT_NAME} ([0-9]{{1,6}})", value)
         if match is None:
-            self._error(line, _UNKNOWN_FORMAT(repr(value), expected))
+            self._error(line, _UNKNOWN_FORMAT(quoted(value), expected))
         elif int(match[1]) > FORMAT_VERSION:
             self._error(line, _NEWER_FORMAT(int(match[1]), FORMAT_VERSION))
         elif int(match[1]) != FORMAT_VERSION:
@@ -147,13 +183,13 @@ class Header:
             not re.fullmatch(f"[0-9]{{1,{digits}}}", text)
             or not snv.raw_min <= int(text) <= snv.raw_max
         ):
-            self._error(entry.line, _BAD_SERIAL(repr(text), snv.raw_min, snv.raw_max))
+            self._error(entry.line, _BAD_SERIAL(quoted(text), snv.raw_min, snv.raw_max))
         else:
             self.serial = int(text)
 
     def _firmware(self, entry: Entry) -> None:
         if entry.value:
-            self.firmware = entry.value
+            self.firmware = unescape_text(entry.value)  # exactly what the valve reported
         else:
             self._error(entry.line, _EMPTY_FIRMWARE(), "warning")
 
@@ -184,7 +220,7 @@ def check_entries(
         if problem is not None:
             result.problems.append(FileProblem(entry.line, problem))
             continue
-        _check_value(param, entry, result)
+        _check_value(param, entry, result, type_key)
     if type_key is not None:
         _check_complete(type_key, lines, type_key_line, result)
         for rule in CATALOGUE.check_rules(type_key.variant, result.values):
@@ -196,8 +232,8 @@ def check_entries(
 def _unknown(name: str, suggest: bool) -> Message:
     close = _close_mnemonic(name.upper()) if suggest else None
     if close is not None:
-        return _UNKNOWN_CLOSE(repr(name), close)
-    return _UNKNOWN(repr(name))
+        return _UNKNOWN_CLOSE(quoted(name), close)
+    return _UNKNOWN(quoted(name))
 
 
 def _close_mnemonic(name: str) -> str | None:
@@ -222,13 +258,29 @@ def _misplaced(param: Parameter, type_key: TypeKey | None) -> Message | None:
     return None
 
 
-def _check_value(param: Parameter, entry: Entry, result: CheckedEntries) -> None:
-    if not entry.value and not param.address_from_manual:
-        # written by a download over CANopen from a valve without this project's object
+def marked_absent(param: Parameter, entry: Entry, type_key: TypeKey | None) -> bool:
+    """True for the line a download over CANopen writes for an object the valve lacks: no
+    value, the comment :data:`NOT_AVAILABLE_HINT`, a parameter at this project's own address
+    (the manual's objects every -CA valve has), and a -CA type key."""
+    return (
+        not entry.value
+        and entry.comment.strip() == NOT_AVAILABLE_HINT.strip()
+        and not param.address_from_manual
+        and (type_key is None or type_key.canopen)
+    )
+
+
+def _check_value(
+    param: Parameter, entry: Entry, result: CheckedEntries, type_key: TypeKey | None
+) -> None:
+    if marked_absent(param, entry, type_key):
         result.problems.append(FileProblem(entry.line, _NOT_AVAILABLE(param.mnemonic), "warning"))
         return
     if not entry.value:
-        result.problems.append(FileProblem(entry.line, _NO_VALUE(param.mnemonic)))
+        marker = NOT_AVAILABLE_HINT.strip()
+        can_be_marked = not param.address_from_manual and (type_key is None or type_key.canopen)
+        problem = _NO_VALUE_NOT_MARKED(param.mnemonic, marker) if can_be_marked else None
+        result.problems.append(FileProblem(entry.line, problem or _NO_VALUE(param.mnemonic)))
         return
     try:
         raw = param.parse_display(entry.value)
@@ -253,7 +305,8 @@ def _rounding(param: Parameter, text: str, raw: int | str) -> Message | None:
     if not math.isfinite(written) or written == float(stored):
         return None
     unit = f" {param.unit}" if param.unit else ""
-    return _ROUNDED(param.mnemonic, text, unit, stored)
+    shown = text if len(text) <= SHOWN_CHARACTERS else quoted(text)
+    return _ROUNDED(param.mnemonic, shown, unit, stored)
 
 
 def _check_complete(

@@ -20,18 +20,21 @@ from __future__ import annotations
 import os
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import TYPE_CHECKING
 
 from prm9tool.catalogue import CATALOGUE, Parameter
 from prm9tool.catalogue.typekey import TypeKey
 from prm9tool.errors import FileFormatError, FileProblem
 from prm9tool.files.atomicfile import atomic_write
-from prm9tool.files.prmcheck import FORMAT_NAME, FORMAT_VERSION, Header, check_entries
+from prm9tool.files.prmcheck import (
+    FORMAT_NAME,
+    FORMAT_VERSION,
+    NOT_AVAILABLE_HINT,
+    Header,
+    check_entries,
+    escape_text,
+)
 from prm9tool.files.prmlexer import CONTROL_CHARACTERS, Lexer, check_integrity, checksum
 from prm9tool.messages import QT_TRANSLATE_NOOP
-
-if TYPE_CHECKING:
-    from prm9tool.model.document import ParameterDocument
 
 MAX_FILE_SIZE = 1 << 20  # a full file is about 4 kB; anything near 1 MiB is not a *.prm file
 BANNER = (
@@ -67,11 +70,11 @@ class PrmContents:
         if self.serial is not None:
             self._emit(lines, "serial", str(self.serial))
         if self.firmware:
-            self._emit(lines, "firmware", self.firmware)
+            self._emit(lines, "firmware", escape_text(self.firmware))
         for number, param in enumerate(CATALOGUE.file_parameters(self.type_key.variant)):
             raw = self.values.get(param.mnemonic)
-            if raw is None and param.address_from_manual:
-                raise KeyError(param.mnemonic)  # only this project's objects may be absent
+            if raw is None and (param.address_from_manual or not self.type_key.canopen):
+                raise KeyError(param.mnemonic)  # only this project's objects, only on -CA keys
             value = "" if raw is None else param.format_display(raw)
             hint = _hint(param) if raw is not None else NOT_AVAILABLE_HINT
             self._emit(lines, param.mnemonic, value, [""] if number == 0 else [], hint)
@@ -93,10 +96,6 @@ class PrmContents:
         value = _escape_controls(value)  # values from a device are data, never file structure
         entry = _entry_text(name, value)
         lines.append(entry + self.inline_comments.get(name, hint))
-
-
-# A parameter a valve does not have over CANopen (downloaded from a real valve, docs/can-link.md)
-NOT_AVAILABLE_HINT = "  # not available over CANopen on the valve this was read from"
 
 
 def _escape_controls(value: str) -> str:
@@ -232,45 +231,3 @@ def write_file(
         problem = FileProblem(0, _CANNOT_SAVE(exc.strerror or str(exc)))
         raise FileFormatError(os.fspath(path), [problem]) from exc
     return result.contents
-
-
-# --- documents --------------------------------------------------------------------------------
-def document_from(contents: PrmContents, path: Path | None = None) -> ParameterDocument:
-    """A new, unmodified document holding ``contents`` (``path``: where it was read from)."""
-    from prm9tool.model.document import ParameterDocument
-
-    doc = ParameterDocument(contents.type_key)
-    doc.set_values(contents.values, "Open file", validate=False)
-    doc.source_serial = contents.serial
-    doc.source_firmware = contents.firmware
-    doc.unknown_entries = list(contents.unknown)
-    doc.comments = {name: list(lines) for name, lines in contents.comments.items()}
-    doc.inline_comments = dict(contents.inline_comments)
-    doc.mark_saved(path)
-    return doc
-
-
-def contents_of(doc: ParameterDocument) -> PrmContents:
-    """What saving ``doc`` writes."""
-    return PrmContents(
-        doc.type_key,
-        dict(doc.values),
-        doc.source_serial,
-        doc.source_firmware,
-        list(doc.unknown_entries),
-        {name: list(lines) for name, lines in doc.comments.items()},
-        dict(doc.inline_comments),
-    )
-
-
-def load_document(path: str | os.PathLike[str]) -> ParameterDocument:
-    """Read a *.prm file into a new document; raises FileFormatError with every problem."""
-    return document_from(read_file(path), Path(path))
-
-
-def save_document(doc: ParameterDocument, path: str | os.PathLike[str]) -> None:
-    """Save ``doc`` atomically, keep the old file as ``.bak``, mark the document saved."""
-    written = write_file(contents_of(doc), path)
-    doc.comments = written.comments  # so that the next save reproduces this file exactly
-    doc.inline_comments = written.inline_comments
-    doc.mark_saved(Path(path))

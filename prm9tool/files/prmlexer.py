@@ -11,13 +11,12 @@ import zlib
 
 from prm9tool.errors import FileProblem
 from prm9tool.files.prmcheck import Entry
-from prm9tool.messages import QT_TRANSLATE_NOOP, Message
+from prm9tool.messages import QT_TRANSLATE_NOOP, Message, quoted
 
 _NAME = re.compile(r"[A-Za-z_][A-Za-z0-9_.\-]*")
 _CHECKSUM = re.compile(r"^crc32:[0-9a-f]{8}$")
 _BOM = b"\xef\xbb\xbf"
 CONTROL_CHARACTERS = re.compile(r"[\x00-\x08\x0a-\x1f\x7f-\x9f]")  # all but TAB: binary data
-
 _NOT_UTF8 = QT_TRANSLATE_NOOP("Problems", "byte 0x{0} is not UTF-8 text: the file is corrupt")
 _CONTROL_CHARACTER = QT_TRANSLATE_NOOP(
     "Problems", "control character U+{0}: binary data, the file is corrupt"
@@ -145,7 +144,7 @@ def check_integrity(lexer: Lexer) -> list[FileProblem]:
     if entry is None:
         return [FileProblem(lexer.last_line, _NO_CHECKSUM())]
     if not _CHECKSUM.match(entry.value):
-        return [FileProblem(entry.line, _CHECKSUM_DAMAGED(repr(entry.value)))]
+        return [FileProblem(entry.line, _CHECKSUM_DAMAGED(quoted(entry.value)))]
     if entry.value != checksum(lexer.seen):
         return [FileProblem(entry.line, _CHECKSUM_CHANGED(), "warning")]
     return []

@@ -21,12 +21,13 @@ import threading
 from collections.abc import Mapping
 from datetime import UTC, datetime
 from pathlib import Path
-from typing import TYPE_CHECKING, Any, Protocol
+from typing import TYPE_CHECKING, Any
 
 from prm9tool import __version__
 from prm9tool.errors import HistoryError
 from prm9tool.history.chain import Entry
 from prm9tool.history.config import database_url, queue_path
+from prm9tool.history.identity import ValveIdentity
 
 if TYPE_CHECKING:
     from prm9tool.history.store import HistoryStore
@@ -39,15 +40,6 @@ OPERATIONS = (
     "download", "upload", "store", "restore-factory", "online-edits", "batch-upload",
     "backup", "characterization",
 )  # fmt: skip
-
-
-class ValveIdentity(Protocol):
-    """What a record needs to know about the valve (the session's DeviceInfo has it)."""
-
-    type_key: str
-    serial: int
-    firmware: str
-    device_id: str
 
 
 def now_utc() -> str:

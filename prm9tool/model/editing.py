@@ -6,8 +6,9 @@ funkce"): changing one ramp sets every ramp of the valve to that value as one un
 
 from __future__ import annotations
 
-from prm9tool.catalogue import CATALOGUE, Access
+from prm9tool.catalogue import CAPPED_BY, CATALOGUE, Access, Parameter
 from prm9tool.errors import AccessDeniedError
+from prm9tool.i18n import format_value
 from prm9tool.messages import QT_TRANSLATE_NOOP, Number
 from prm9tool.model.access import AccessModel
 from prm9tool.model.document import ParameterDocument, Raw
@@ -20,6 +21,28 @@ def linked_mnemonics(doc: ParameterDocument, access: AccessModel, mnemonic: str)
     if mnemonic in RAMPS and access.level is Access.BASIC:
         return [mn for mn in RAMPS if mn in doc.values]
     return [mnemonic]
+
+
+def allowed_range(param: Parameter, doc: ParameterDocument | None) -> tuple[int, int, str | None]:
+    """Lowest and highest raw value ``param`` may take in ``doc``, and the parameter that caps
+    it (LIMTA and LIMTB: at most CURNORM, manual table 7-14), None when only its own range
+    does. Without a document: the catalogue range."""
+    cap = CAPPED_BY.get(param.mnemonic) if doc is not None else None
+    if doc is None or cap is None:
+        return param.raw_min, param.raw_max, None
+    return param.raw_min, min(param.raw_max, int(doc.value(cap))), cap
+
+
+def range_text(param: Parameter, doc: ParameterDocument | None, *, unit: bool = True) -> str:
+    """The allowed range as every editor shows it: ``0 … 2600 mA (CURNORM)``, ``0 … 100 %``;
+    the codes of a choice parameter. ``doc`` None: the catalogue range; ``unit``: with the unit.
+    """
+    if param.choices:
+        return ", ".join(str(code) for code, _label in param.choices)
+    low, high, cap = allowed_range(param, doc)
+    suffix = f" {param.unit}" if unit and param.unit else ""
+    capped = f" ({cap})" if cap is not None else ""
+    return f"{format_value(param, low)} … {format_value(param, high)}{suffix}{capped}"
 
 
 def apply_edit(doc: ParameterDocument, access: AccessModel, mnemonic: str, raw: Raw) -> None:

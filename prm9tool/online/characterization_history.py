@@ -9,10 +9,13 @@ from __future__ import annotations
 
 from collections.abc import Callable
 from types import SimpleNamespace
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from prm9tool.characterize.run import RESULT_HOOKS, Characterization
 from prm9tool.history.recorder import Recorder
+
+if TYPE_CHECKING:
+    from prm9tool.online.connection import ValveConnection
 
 
 def recording_hook(recorder: Recorder) -> Callable[[Characterization], None]:
@@ -49,7 +52,9 @@ def record_characterizations(recorder: Recorder) -> Callable[[], None]:
     return lambda: RESULT_HOOKS.remove(hook) if hook in RESULT_HOOKS else None
 
 
-def run_with_history(connection: Any, run: Callable[[], Characterization]) -> Characterization:
+def run_with_history(
+    connection: ValveConnection | None, run: Callable[[], Characterization]
+) -> Characterization:
     """``run()`` (a characterization on the connection's valve, in the GUI's worker) with its
     result recorded into the connection's history; offline (the simulated valve) nothing is
     recorded."""

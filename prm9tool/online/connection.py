@@ -23,14 +23,16 @@ from prm9tool.online.setpoint_driver import (
 from prm9tool.online.valve_listing import default_lister, default_opener, list_in_thread
 
 if TYPE_CHECKING:
-    from prm9tool.online.connection_protocol import ListedValves, ValveIdentity
+    from prm9tool.device.session import ValveSession
+    from prm9tool.history.recorder import Recorder
+    from prm9tool.online.connection_protocol import ListedValves, ValveIdentity, ValveListing
     from prm9tool.online.recording import HistoryHook
     from prm9tool.scope import GeneratorSettings  # not at run time: numpy, at start-up
 
 log = logging.getLogger(__name__)
 
-Opener = Callable[[object], Any]  # entry -> ValveSession
-Lister = Callable[..., list[Any]]  # (emulator specs[, CAN bus dict]) -> [DeviceEntry]
+Opener = Callable[[object], "ValveSession"]  # entry -> the open session
+Lister = Callable[..., "Sequence[ValveListing]"]  # (emulator specs[, CAN bus dict]) -> entries
 OVERRIDE_OBJECTS = tuple(sorted(GENERATOR_OBJECTS))  # a refused generator start names these
 
 
@@ -63,7 +65,7 @@ class ValveConnection(QObject):
         opener: Opener | None = None,
         lister: Lister | None = None,
         parent: QObject | None = None,
-        after_open: Callable[[Any], object] | None = None,
+        after_open: Callable[[ValveSession], object] | None = None,
     ) -> None:
         """``after_open(session)`` runs in a thread of its own once a session is open, while
         the connection already reports online (the GUI puts an emulated -CA valve on its CAN
@@ -79,7 +81,7 @@ class ValveConnection(QObject):
         self._posted.connect(self._on_posted, Qt.ConnectionType.QueuedConnection)
         self.history: HistoryHook | None = None  # set_recorder(); used by the worker only
 
-    def set_recorder(self, recorder: Any) -> None:
+    def set_recorder(self, recorder: Recorder) -> None:
         """Record every operation on the valve's parameter set into this history."""
         from prm9tool.online.recording import HistoryHook
 
@@ -128,13 +130,13 @@ class ValveConnection(QObject):
         numbers: the link or the host could not keep up); 0 when no stream runs."""
         return self._samples_lost
 
-    def list_devices(self, emulators: Sequence[str] = ()) -> list[Any]:
+    def list_devices(self, emulators: Sequence[str] = ()) -> list[ValveListing]:
         """Connected valves plus the emulated valves ``emulators`` ("TYPEKEY[:SERIAL]").
 
         Blocks while each USB valve identifies itself (up to 0.6 s for one that does not
         answer): the GUI uses :meth:`list_devices_async`.
         """
-        return self._lister(emulators)
+        return list(self._lister(emulators))
 
     def list_devices_async(
         self,
@@ -183,7 +185,7 @@ class ValveConnection(QObject):
         set as the GUI knows it) goes into the history as the stored online edits."""
         known = None if values is None else dict(values)
 
-        def run(session: Any) -> None:
+        def run(session: ValveSession) -> None:
             session.store()
             if self.history is not None:
                 self.history.add(session, "online-edits", "ok", known, {"stored": True})
@@ -203,7 +205,7 @@ class ValveConnection(QObject):
         """
         values = dict(values)
 
-        def run(session: Any) -> object:
+        def run(session: ValveSession) -> object:
             if backup:
                 from prm9tool.files.backup import ensure_backup  # *.prm writing, only when needed
 
@@ -223,7 +225,7 @@ class ValveConnection(QObject):
     def download(self, tag: str = "download") -> None:
         """Read the valve's file parameters; result: operation_finished(tag, {mnemonic: raw})."""
 
-        def run(session: Any) -> object:
+        def run(session: ValveSession) -> object:
             values = session.download(self._worker.progress, self._worker.cancel)
             if self.history is not None:
                 self.history.download(session, values, tag)
@@ -231,14 +233,14 @@ class ValveConnection(QObject):
 
         self._long_job(tag, run)
 
-    def run_job(self, name: str, work: Callable[[Any], object]) -> None:
+    def run_job(self, name: str, work: Callable[[ValveSession], object]) -> None:
         """Run ``work(session)`` as a long operation; result: operation_finished(name, …)."""
         self._long_job(name, work)
 
     def run(
         self,
         name: str,
-        work: Callable[[Any], object],
+        work: Callable[[ValveSession], object],
         on_done: Callable[[object], None] | None = None,
     ) -> None:
         """Run ``work(session)`` in the worker between its polls (a short job: the connection
@@ -262,7 +264,7 @@ class ValveConnection(QObject):
         """Stream up to three measuring points; samples arrive as ``samples_received``."""
         names = list(keys)
 
-        def run(session: Any) -> list[str]:
+        def run(session: ValveSession) -> list[str]:
             started = self._worker.poller.start_stream(session, names, rate_hz)
             self._worker.clock.restart(rate_hz)
             return started
@@ -311,7 +313,7 @@ class ValveConnection(QObject):
             return
         self._worker.jobs.put(job)
 
-    def _long_job(self, name: str, run: Callable[[Any], object]) -> None:
+    def _long_job(self, name: str, run: Callable[[ValveSession], object]) -> None:
         if not self._online:
             self.failed.emit(self.tr("Not connected to a valve."))
             return
@@ -320,12 +322,14 @@ class ValveConnection(QObject):
         done = lambda: self._set_busy(-1)  # noqa: E731
         self._worker.jobs.put(Job(name, self._noting_moves(run), lambda _r: done(), on_error=done))
 
-    def _noting_moves(self, run: Callable[[Any], object]) -> Callable[[Any], object]:
+    def _noting_moves(
+        self, run: Callable[[ValveSession], object]
+    ) -> Callable[[ValveSession], object]:
         """``run``, after which a changed identity of the valve (a restart that moved it to
         another node ID or bit rate, which the session followed) is announced on the GUI
         thread as ``device_changed``."""
 
-        def work(session: Any) -> object:
+        def work(session: ValveSession) -> object:
             before = getattr(session, "info", None)
             try:
                 return run(session)

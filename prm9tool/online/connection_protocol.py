@@ -19,28 +19,10 @@ from typing import TYPE_CHECKING, Protocol, runtime_checkable
 
 from PySide6.QtCore import SignalInstance
 
+from prm9tool.history.identity import ValveIdentity
+
 if TYPE_CHECKING:
     from prm9tool.scope import GeneratorSettings
-
-
-class ValveIdentity(Protocol):
-    """Who the connected valve is (``DeviceInfo`` of the device layer)."""
-
-    @property
-    def type_key(self) -> str:
-        """The valve's type key as it reports it."""
-
-    @property
-    def serial(self) -> int:
-        """The valve's serial number."""
-
-    @property
-    def firmware(self) -> str:
-        """The firmware version, e.g. ``V0.35.16``."""
-
-    @property
-    def device_id(self) -> str:
-        """What identifies the valve for going online again (e.g. ``usb:…``, ``emulator:…``)."""
 
 
 class ValveListing(ValveIdentity, Protocol):
@@ -171,7 +153,7 @@ class ParameterConnection(LinkState, Protocol):
     """Reading, writing and storing parameters (the CANopen window)."""
 
     @property
-    def device(self) -> object | None:
+    def device(self) -> ValveIdentity | None:
         """The connected valve's DeviceInfo (``type_key``, ``serial``, …), None offline."""
 
     @property

@@ -15,7 +15,7 @@ import threading
 import time
 from collections.abc import Callable
 from dataclasses import dataclass
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING, cast
 
 from prm9tool.errors import CommunicationError, Prm9Error
 from prm9tool.online.polling import Poller, Schedule
@@ -23,6 +23,7 @@ from prm9tool.online.setpoint_driver import SetpointDriver, StreamClock, setpoin
 from prm9tool.translate import error_text
 
 if TYPE_CHECKING:
+    from prm9tool.device.session import ValveSession
     from prm9tool.online.connection import ValveConnection
     from prm9tool.scope import GeneratorSettings  # not at run time: numpy, at start-up
 
@@ -37,7 +38,7 @@ class Job:
     thread."""
 
     name: str
-    run: Callable[[Any], object]  # session -> result (runs in the worker)
+    run: Callable[[ValveSession], object]  # session -> result (runs in the worker)
     on_done: Callable[[object], None] | None = None  # result -> None (runs in the GUI thread)
     report: bool = True  # emit operation_finished(name, result)
     on_error: Callable[[], None] | None = None  # runs in the GUI thread after a failure
@@ -54,15 +55,15 @@ class ConnectionWorker:
     def __init__(
         self,
         host: ValveConnection,
-        opener: Callable[[object], Any],
-        after_open: Callable[[Any], object] | None,
+        opener: Callable[[object], ValveSession],
+        after_open: Callable[[ValveSession], object] | None,
     ) -> None:
         self._host = host
         self._opener = opener
         self._after_open = after_open
         self.jobs: queue.Queue[Job | None] = queue.Queue()
         self.cancel = threading.Event()  # set: the running long operation stops
-        self.session: Any = None  # touched by the worker thread only
+        self.session: ValveSession | None = None  # touched by the worker thread only
         self.poller = Poller()  # worker-side state of the periodic reads
         self.clock = StreamClock()  # the valve's time from its stream (the generator's)
         self._driver: SetpointDriver | None = None  # the running generator
@@ -110,7 +111,8 @@ class ConnectionWorker:
         def run() -> None:
             if job.needs_session and self.session is None:
                 raise CommunicationError("The valve is not connected.")
-            result = job.run(self.session)
+            # a job that needs no session (going online) ignores its argument
+            result = job.run(cast("ValveSession", self.session))
             self._host._post(lambda: self._host._finish(job, result))
 
         if not self.guarded(run) and job.on_error is not None:
@@ -157,7 +159,7 @@ class ConnectionWorker:
             ).start()
         return info
 
-    def _run_after_open(self, session: object) -> None:
+    def _run_after_open(self, session: ValveSession) -> None:
         assert self._after_open is not None
         try:
             self._after_open(session)
@@ -167,14 +169,14 @@ class ConnectionWorker:
         except Exception:  # a bug must not pass silently
             log.exception("after opening the session")
 
-    def start_driver(self, session: Any, settings: GeneratorSettings) -> None:
+    def start_driver(self, session: ValveSession, settings: GeneratorSettings) -> None:
         """Run the setpoint generator's waveform (a running one is replaced)."""
         self.stop_driver(session, switch_off=False)
         driver = SetpointDriver(session, settings, self._on_driver_refused, self.clock)
         driver.start()
         self._driver = driver
 
-    def stop_driver(self, session: Any, switch_off: bool) -> None:
+    def stop_driver(self, session: ValveSession | None, switch_off: bool) -> None:
         """End the waveform; ``switch_off``: give the valve its own setpoint back."""
         driver, self._driver = self._driver, None
         if driver is not None:
@@ -212,6 +214,8 @@ class ConnectionWorker:
         self._host._post(lambda: self._host.progress.emit(done, total, step))
 
     def _poll(self, stream: bool, status: bool, signals: bool) -> None:
+        if self.session is None:  # closed since the poll was due
+            return
         result = self.poller.poll(self.session, status, signals, stream)
         if result.samples is not None:
             samples = result.samples

@@ -5,8 +5,9 @@ measuring points and the oscilloscope stream. Runs in the worker thread only; no
 from __future__ import annotations
 
 import logging
+import math
 from dataclasses import dataclass, field
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING
 
 from prm9tool.catalogue import CATALOGUE
 from prm9tool.catalogue.signals import MAX_CHANNELS, signals_for
@@ -16,6 +17,10 @@ from prm9tool.errors import Prm9Error, SdoAbortError
 
 if TYPE_CHECKING:
     import numpy as np
+
+    from prm9tool.device.records import DeviceInfo, ValveStatus
+    from prm9tool.device.session import ValveSession
+    from prm9tool.online.connection_protocol import ValveIdentity
 
 log = logging.getLogger(__name__)
 WATCH_RATE_HZ = 250  # the slow stream that refreshes the diagram's measuring points
@@ -29,17 +34,19 @@ SIGNAL_PERIOD_S = 0.15  # the diagram's measuring points
 class PollResult:
     """What one poll read (None / empty: nothing new)."""
 
-    status: object | None = None
+    status: ValveStatus | None = None
     live: dict[str, int | str] = field(default_factory=dict)
     signals: dict[str, float] = field(default_factory=dict)
     samples: np.ndarray | None = None  # (n, channels) raw block of the running stream
     samples_lost: int | None = None  # lost samples of the running stream, when the count changed
 
 
-def variant_of(info: object) -> Variant | None:
-    """The variant of a DeviceInfo's type key (None if it cannot be parsed)."""
+def variant_of(info: ValveIdentity | None) -> Variant | None:
+    """The variant of a DeviceInfo's type key (None offline or if it cannot be parsed)."""
+    if info is None:
+        return None
     try:
-        return TypeKey.parse(str(getattr(info, "type_key", ""))).variant
+        return TypeKey.parse(info.type_key).variant
     except Prm9Error:
         return None
 
@@ -69,7 +76,7 @@ class Poller:
         self._signal_keys: set[str] = set()
         self._lost_reported = 0
 
-    def reset(self, info: object) -> None:
+    def reset(self, info: DeviceInfo) -> None:
         """A session to the valve ``info`` was opened."""
         variant = variant_of(info)
         self.stream_keys, self._watch_chunk, self._last_row = [], [], {}
@@ -82,24 +89,26 @@ class Poller:
         self.stream_keys, self._watch_chunk = [], []
 
     # --- the oscilloscope stream -----------------------------------------------------------------
-    def start_stream(self, session: Any, keys: list[str], rate_hz: int) -> list[str]:
+    def start_stream(self, session: ValveSession, keys: list[str], rate_hz: int) -> list[str]:
         """Start the oscilloscope's stream (the watch stream gives way)."""
         self._stop_watch(session)
         if self.stream_keys:
             session.stream_stop()
         session.stream_start(keys, rate_hz)
-        self.stream_keys = list(keys)
+        self.stream_keys, self._last_row = list(keys), {}
         self._lost_reported = 0
         return self.stream_keys
 
-    def stop_stream(self, session: Any) -> None:
+    def stop_stream(self, session: ValveSession) -> None:
         """Stop the oscilloscope's stream."""
         if self.stream_keys:
             self.stream_keys = []
             session.stream_stop()
 
     # --- polling ----------------------------------------------------------------------------------
-    def poll(self, session: Any, status: bool, signals: bool, stream: bool = True) -> PollResult:
+    def poll(
+        self, session: ValveSession, status: bool, signals: bool, stream: bool = True
+    ) -> PollResult:
         """Read what is due; communication errors propagate (the link is lost)."""
         result = PollResult()
         if stream and self.stream_keys:
@@ -117,7 +126,7 @@ class Poller:
             result.signals = self._read_signals(session)
         return result
 
-    def _read_live(self, session: Any) -> dict[str, int | str]:
+    def _read_live(self, session: ValveSession) -> dict[str, int | str]:
         """Read the live values; one the valve refuses is dropped from the list, not retried."""
         names = list(self.live)
         if not names:
@@ -130,15 +139,17 @@ class Poller:
             self.live = [] if refused is None else [n for n in names if n != refused.mnemonic]
             return {}
 
-    def _read_signals(self, session: Any) -> dict[str, float]:
+    def _read_signals(self, session: ValveSession) -> dict[str, float]:
         """Latest values of the watched measuring points.
 
         The valve reports measuring points only in its stream (at most three at once). While
-        the oscilloscope streams, its samples serve; otherwise a slow "watch" stream visits
-        the watched points three at a time, so each one is refreshed every few polls.
+        the oscilloscope streams, its samples serve, and every other watched point is NaN (no
+        value now), never the value it had before the oscilloscope took the stream; otherwise
+        a slow "watch" stream visits the watched points three at a time, so each one is
+        refreshed every few polls.
         """
         if self.stream_keys:
-            return {k: v for k, v in self._last_row.items() if k in self.watched}
+            return {k: self._last_row.get(k, math.nan) for k in self.watched}
         values: dict[str, float] = {}
         if self._watch_chunk:
             block = session.stream_read()
@@ -160,7 +171,7 @@ class Poller:
         self._watch_index = start + MAX_CHANNELS
         return [usable[(start + i) % len(usable)] for i in range(min(MAX_CHANNELS, len(usable)))]
 
-    def _stop_watch(self, session: Any) -> None:
+    def _stop_watch(self, session: ValveSession) -> None:
         if self._watch_chunk:
             self._watch_chunk = []
             session.stream_stop()

@@ -12,11 +12,15 @@ from __future__ import annotations
 import threading
 from collections.abc import Callable, Mapping
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from prm9tool.catalogue import CATALOGUE
 from prm9tool.errors import CommunicationError, FileFormatError, HistoryError
 from prm9tool.history.recorder import Recorder
+
+if TYPE_CHECKING:
+    from prm9tool.device.records import UploadResult
+    from prm9tool.device.session import ValveSession
 
 Raw = int | str
 Progress = Callable[[int, int, str], None]
@@ -34,7 +38,7 @@ class HistoryHook:
 
     def add(
         self,
-        session: Any,
+        session: ValveSession,
         operation: str,
         outcome: str,
         parameters: Mapping[str, Raw] | None,
@@ -54,11 +58,11 @@ class HistoryHook:
                 f"the history database cannot be reached; the record waits in {self.recorder.queue}"
             )
 
-    def download(self, session: Any, values: Mapping[str, Raw], purpose: str) -> None:
+    def download(self, session: ValveSession, values: Mapping[str, Raw], purpose: str) -> None:
         """Record a download (also the one that compares document and valve)."""
         self.add(session, "download", "ok", values, {"purpose": purpose})
 
-    def backup(self, session: Any, path: Path) -> None:
+    def backup(self, session: ValveSession, path: Path) -> None:
         """Record the backup file taken before the first upload."""
         from prm9tool.files.prmfile import read_file
 
@@ -70,11 +74,11 @@ class HistoryHook:
 
     def upload(
         self,
-        session: Any,
+        session: ValveSession,
         values: Mapping[str, Raw],
         progress: Progress | None,
         cancel: threading.Event | None,
-    ) -> Any:
+    ) -> UploadResult:
         """``session.upload`` with its outcome recorded (a broken link too, then re-raised).
 
         A partial upload (the compare view's chosen values) is followed by a download, so the

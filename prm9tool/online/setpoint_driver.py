@@ -26,12 +26,13 @@ from __future__ import annotations
 import threading
 import time
 from collections.abc import Callable
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING
 
 from prm9tool.catalogue.commissioning import SETPOINT_OBJECTS
 from prm9tool.errors import CommunicationError, Prm9Error
 
 if TYPE_CHECKING:  # numpy and the device layer stay out of the window's start-up
+    from prm9tool.device.session import ValveSession
     from prm9tool.device.setpoint import SetpointLink  # (tests/test_gui_app.py)
     from prm9tool.scope import GeneratorSettings
 
@@ -83,7 +84,7 @@ class SetpointDriver:
 
     def __init__(
         self,
-        session: Any,
+        session: ValveSession,
         settings: GeneratorSettings,
         on_refused: Callable[[str, Prm9Error], None],
         clock: StreamClock | None = None,
@@ -171,11 +172,6 @@ class SetpointDriver:
             last, written = raw, now
 
 
-def setpoint_link(session: Any) -> SetpointLink:
-    """The session's way to the setpoint (the service override for a session without one)."""
-    make = getattr(session, "setpoint_link", None)
-    if make is not None:
-        return make()  # type: ignore[no-any-return]  # the session is typed Any here
-    from prm9tool.device.setpoint import OverrideSetpoint  # only once a generator starts
-
-    return OverrideSetpoint(session)
+def setpoint_link(session: ValveSession) -> SetpointLink:
+    """The session's way to the setpoint (its link's own, or the USB service override)."""
+    return session.setpoint_link()

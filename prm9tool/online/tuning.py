@@ -25,6 +25,7 @@ from PySide6.QtCore import QCoreApplication, QObject, Signal
 from prm9tool.catalogue import CATALOGUE
 from prm9tool.catalogue.signals import BY_KEY
 from prm9tool.catalogue.typekey import TypeKey
+from prm9tool.characterize.procedures import LOOPS
 from prm9tool.characterize.transparent import NO_SHAPING, UNITY_GAIN
 from prm9tool.errors import Prm9Error
 from prm9tool.i18n import format_number, format_significant
@@ -36,11 +37,6 @@ if TYPE_CHECKING:
 
 Raw = int | str
 
-LOOPS: dict[str, tuple[str, str, float, float]] = {
-    # loop: (setpoint signal, actual signal, step %, simulated seconds after the step)
-    "position": ("position_setpoint", "position_actual", 50.0, 0.06),
-    "process": ("process_setpoint", "process_actual", 20.0, 1.0),
-}
 PRE_STEP_S = 0.005
 SAMPLES = 300  # points per drawn response (the capture is decimated to about this many)
 VOLTS_PER_PERCENT = 0.1  # setpoint type 9: ±10 V = ±100 %
@@ -131,7 +127,8 @@ def simulate_step(type_key: str | TypeKey, values: Mapping[str, Raw], loop: str)
     """
     valve = _prepared_valve(type_key, values, loop)
     power_up(valve)
-    sp_key, act_key, step, duration = LOOPS[loop]
+    lp = LOOPS[loop]
+    sp_key, act_key, step, duration = lp.setpoint, lp.actual, lp.step_pct, lp.simulated_s
     decimation = max(1, round((PRE_STEP_S + duration) / valve.CYCLE_S / SAMPLES))
     valve.capture_start([sp_key, act_key], decimation)
     valve.advance(PRE_STEP_S)

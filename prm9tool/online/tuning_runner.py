@@ -12,7 +12,7 @@ from __future__ import annotations
 
 import threading
 from collections.abc import Callable, Mapping
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from PySide6.QtCore import QObject, Signal
 
@@ -20,6 +20,9 @@ from prm9tool.characterize.canrig import LinkTooSlowError, rig_for_session
 from prm9tool.characterize.rig import Rig
 from prm9tool.errors import CommunicationError, Prm9Error
 from prm9tool.translate import error_text
+
+if TYPE_CHECKING:
+    from prm9tool.online.connection_protocol import ValveIdentity
 
 Procedure = Callable[[Rig], object]
 
@@ -129,8 +132,8 @@ class ValveRunner(TuningRunner):
             self._deliver(_Failure(message))
 
 
-def _link_name(device: object) -> str:
-    device_id = str(getattr(device, "device_id", ""))
+def _link_name(device: ValveIdentity | None) -> str:
+    device_id = device.device_id if device is not None else ""
     if device_id.startswith("emulator:"):
         return "emulator over its USB link (real time)"
     return "USB"

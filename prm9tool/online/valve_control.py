@@ -11,8 +11,8 @@ connection's worker thread; QtCore only, the device layer is reached through the
 
 from __future__ import annotations
 
-from collections.abc import Sequence
-from typing import Any
+from collections.abc import Callable, Sequence
+from typing import TYPE_CHECKING
 
 from PySide6.QtCore import QT_TRANSLATE_NOOP, QCoreApplication, QObject, Signal
 
@@ -26,6 +26,10 @@ from prm9tool.catalogue.commissioning import (
 )
 from prm9tool.online.connection import ValveConnection
 from prm9tool.online.connection_protocol import StatusView
+
+if TYPE_CHECKING:
+    from prm9tool.device.emulated import EmulatorControls
+    from prm9tool.device.session import ValveSession
 
 
 def status_blocker(status: StatusView | None) -> Blocker | None:
@@ -151,7 +155,7 @@ class ValveControl(QObject):
         self._write_in_turn(DISABLE_SEQUENCE)
 
     def _write_in_turn(self, words: Sequence[int]) -> None:
-        def run(session: Any) -> None:
+        def run(session: ValveSession) -> None:
             for word in words:
                 session.write(CONTROL_WORD, word)
 
@@ -174,9 +178,11 @@ class ValveControl(QObject):
         """Read the emulated valve's state again (``emulator_changed`` follows)."""
         self._emulator_job(lambda e: None)
 
-    def _emulator_job(self, change: Any, report: bool = True) -> None:
-        def run(session: Any) -> object:
-            controls = getattr(session, "emulator", None)
+    def _emulator_job(
+        self, change: Callable[[EmulatorControls], object], report: bool = True
+    ) -> None:
+        def run(session: ValveSession) -> object:
+            controls = session.emulator
             if controls is None:
                 return None
             change(controls)

@@ -7,10 +7,16 @@ from __future__ import annotations
 import contextlib
 import threading
 from collections.abc import Callable, Mapping, Sequence
-from typing import Any
+from typing import TYPE_CHECKING
+
+if TYPE_CHECKING:
+    from prm9tool.device.canlink.bus import CanOptions
+    from prm9tool.device.factory import DeviceEntry
+    from prm9tool.device.session import ValveSession
+    from prm9tool.online.connection_protocol import ValveListing
 
 
-def can_options(bus: Mapping[str, object]) -> Any:
+def can_options(bus: Mapping[str, object]) -> CanOptions:
     """The device factory's ``CanOptions`` of ``bus`` (``interface``, ``channel``, ``bitrate``)."""
     from prm9tool.device import factory
 
@@ -20,7 +26,9 @@ def can_options(bus: Mapping[str, object]) -> Any:
     )
 
 
-def default_lister(emulators: Sequence[str], can: Mapping[str, object] | None = None) -> list[Any]:
+def default_lister(
+    emulators: Sequence[str], can: Mapping[str, object] | None = None
+) -> list[DeviceEntry]:
     """The valves connected over USB, the emulated ``emulators`` and, with ``can``, the nodes
     on that CAN bus."""
     from prm9tool.device import factory
@@ -30,18 +38,19 @@ def default_lister(emulators: Sequence[str], can: Mapping[str, object] | None = 
     return list(factory.list_devices(emulators, can_options(can)))
 
 
-def default_opener(entry: object) -> Any:
+def default_opener(entry: object) -> ValveSession:
     """A session to ``entry`` (a listed valve or a device id)."""
     from prm9tool.device import factory
 
-    return factory.open_session(entry)  # type: ignore[arg-type]
+    assert isinstance(entry, factory.DeviceEntry | str)
+    return factory.open_session(entry)
 
 
 def list_in_thread(
-    lister: Callable[..., list[Any]],
+    lister: Callable[..., Sequence[ValveListing]],
     emulators: Sequence[str],
     can: Mapping[str, object] | None,
-    deliver: Callable[[list[Any] | Exception], None],
+    deliver: Callable[[list[ValveListing] | Exception], None],
 ) -> None:
     """``lister(emulators[, can])`` in a thread of its own; ``deliver`` gets the entries or the
     exception listing raised (e.g. a broken USB stack: the caller says so)."""
@@ -50,7 +59,9 @@ def list_in_thread(
 
     def run() -> None:
         try:
-            found: list[Any] | Exception = lister(specs) if bus is None else lister(specs, bus)
+            found: list[ValveListing] | Exception = list(
+                lister(specs) if bus is None else lister(specs, bus)
+            )
         except Exception as exc:
             found = exc
         # RuntimeError: the connection was deleted meanwhile, nobody is waiting

@@ -1,8 +1,8 @@
 """The setpoint generator's waveform maths (the Qt part drives SETPOVR with it).
 
-Its messages are translated with QtCore's ``QCoreApplication.translate`` (context
-``GeneratorSettings``), imported when a message is needed: the emulator imports the scope
-model for its step figures and stays free of Qt.
+Its messages are :class:`~prm9tool.messages.Message` templates (context ``GeneratorSettings``):
+English in ``str()``, translated where a view shows them. No Qt, so the emulator and the
+tuning procedures import the scope model without PySide6.
 """
 
 from __future__ import annotations
@@ -14,9 +14,14 @@ import numpy as np
 
 from prm9tool.catalogue import CATALOGUE
 from prm9tool.errors import ValueRangeError
-from prm9tool.i18n import format_significant
+from prm9tool.messages import QT_TRANSLATE_NOOP, Number
 
 EDGE_TOLERANCE_S = 1e-9  # an edge on the cycle grid falls on its cycle despite rounding
+_PERIOD = QT_TRANSLATE_NOOP("GeneratorSettings", "The generator period must be longer than 0 s.")
+_OUTSIDE = QT_TRANSLATE_NOOP(
+    "GeneratorSettings",
+    "The waveform reaches {0} … {1} %; the setpoint must stay within {2} … {3} %.",
+)
 
 
 class Waveform(StrEnum):
@@ -51,22 +56,12 @@ class GeneratorSettings:
 
     def check(self) -> None:
         """Raise ValueRangeError with a user-facing message if the waveform is not allowed."""
-        from PySide6.QtCore import QCoreApplication  # see the module docstring
-
-        translate = QCoreApplication.translate  # the name pyside6-lupdate looks for
         if not self.period > 0:
-            raise ValueRangeError(
-                translate("GeneratorSettings", "The generator period must be longer than 0 s.")
-            )
+            raise ValueRangeError(_PERIOD())
         low, high = self.extremes()
         lo, hi = setpoint_limits()
         if low < lo or high > hi:
-            raise ValueRangeError(
-                translate(
-                    "GeneratorSettings",
-                    "The waveform reaches {0} … {1} %; the setpoint must stay within {2} … {3} %.",
-                ).format(*(format_significant(v, 6) for v in (low, high, lo, hi)))
-            )
+            raise ValueRangeError(_OUTSIDE(*(Number(f"{v:.6g}") for v in (low, high, lo, hi))))
 
     def value_at(self, t: np.ndarray | float) -> np.ndarray:
         """Setpoint in % at time(s) ``t`` seconds after the generator started.

@@ -291,6 +291,7 @@ def _segment(
     initial = float(np.median(rest)) if len(rest) else float(y[0])
     ya_raw = y[after]
     final = float(np.mean(ya_raw[-max(1, len(ya_raw) // 10) :]))
+    sample_noise = noise  # of the samples; a level's slow swing (hunting) does not enter it
     noise = max(noise, _spread(rest))
     size = final - initial
     if strict and not (_at_rest(ya_raw, size, band, noise) and _at_rest(before, size, band, noise)):
@@ -301,7 +302,7 @@ def _segment(
     t10 = _first_crossing(ta, ya, initial, final, 0.1, t_step)
     t90 = _first_crossing(ta, ya, initial, final, 0.9, t_step)
     excess = max(0.0, float(np.max((ya - final) / size)))
-    overshoot = excess * 100.0 if excess * abs(size) > OVERSHOOT_NOISE * noise else 0.0
+    overshoot = excess * 100.0 if excess * abs(size) > OVERSHOOT_NOISE * sample_noise else 0.0
     settling = _settling_time(ta, ya, final, band * abs(size), t_step)
     figures = StepFigures(
         t_step, initial, final, target, t90 - t10, overshoot, settling, band, float(t[-1])

@@ -139,7 +139,7 @@ class FileWorkflow(QObject):
             return False
         if ask and not self.maybe_save():
             return False
-        from prm9tool.files import prmfile  # imported when first needed: faster start-up
+        from prm9tool.files import prmdocument  # imported when first needed: faster start-up
 
         self._reading = path
         try:
@@ -152,7 +152,7 @@ class FileWorkflow(QObject):
         if isinstance(contents, FileFormatError):
             self._report_file_error(self.tr("Cannot open “{0}”").format(path.name), contents)
             return False
-        self._replace(prmfile.document_from(contents, path))
+        self._replace(prmdocument.document_from(contents, path))
         self._remember(path)
         self.message_posted.emit(self.tr("Opened {0}").format(str(path)))
         if contents.warnings:
@@ -191,10 +191,10 @@ class FileWorkflow(QObject):
 
     def save_to(self, path: Path) -> bool:
         """Save atomically to ``path``; errors are reported and nothing is lost."""
-        from prm9tool.files import prmfile
+        from prm9tool.files import prmdocument
 
         try:
-            prmfile.save_document(self._doc, path)
+            prmdocument.save_document(self._doc, path)
         except FileFormatError as exc:
             self._report_file_error(self.tr("Cannot save “{0}”").format(path.name), exc)
             return False

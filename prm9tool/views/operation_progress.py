@@ -1,5 +1,10 @@
 """The progress dialog of a valve operation (upload, download, restart …): window-modal,
-shown after 300 ms, its Cancel button cancels the connection's running job."""
+shown after 300 ms, its Cancel button cancels the connection's running job.
+
+The connection's signals are queued from its worker thread, so a step or the end of an
+operation can arrive after the dialog went with its window (a window closed while the valve
+still works, a busy PC): such a signal finds no dialog and changes nothing.
+"""
 
 from __future__ import annotations
 
@@ -7,6 +12,7 @@ from collections.abc import Callable
 
 from PySide6.QtCore import QObject, Qt
 from PySide6.QtWidgets import QProgressDialog, QWidget
+from shiboken6 import isValid
 
 
 class OperationProgress(QObject):
@@ -38,17 +44,23 @@ class OperationProgress(QObject):
 
     def show_step(self, done: int, total: int, step: str) -> None:
         """The operation reached ``done`` of ``total`` steps, now at ``step``."""
-        dialog = self.dialog
+        dialog = self._open_dialog()
         if dialog is None:
             return
         dialog.setMaximum(max(total, 1))
-        dialog.setValue(min(done, total))
         dialog.setLabelText(f"{self._label}\n{step}")
+        dialog.setValue(min(done, total))  # last: a shown modal dialog processes events here
 
     def close(self) -> None:
         """Close the dialog, if one is open."""
-        dialog, self.dialog = self.dialog, None
+        dialog, self.dialog = self._open_dialog(), None
         if dialog is not None:
             dialog.canceled.disconnect(self._cancel)
             dialog.close()
             dialog.deleteLater()
+
+    def _open_dialog(self) -> QProgressDialog | None:
+        """The dialog, unless it was deleted with its window (then forgotten)."""
+        if self.dialog is not None and not isValid(self.dialog):
+            self.dialog = None
+        return self.dialog

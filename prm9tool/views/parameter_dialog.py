@@ -20,12 +20,12 @@ from PySide6.QtWidgets import (
     QWidget,
 )
 
-from prm9tool.catalogue import CAPPED_BY, CATALOGUE, Access, Parameter
+from prm9tool.catalogue import CATALOGUE, Access, Parameter
 from prm9tool.errors import AccessDeniedError, ValueRangeError
 from prm9tool.i18n import ambiguous_number, current_language, format_value, text
 from prm9tool.model.access import AccessModel
 from prm9tool.model.document import ParameterDocument, Raw
-from prm9tool.model.editing import apply_edit, linked_mnemonics
+from prm9tool.model.editing import apply_edit, linked_mnemonics, range_text
 from prm9tool.translate import error_text
 from prm9tool.views.diagram.colours import toned_style
 
@@ -113,7 +113,7 @@ class ParameterEditDialog(QDialog):
         self._form_titles["new"].setText(self.tr("New value:"))
         unit = f" {p.unit}" if p.unit else ""
         self._labels["current"].setText(format_value(p, self._doc.value(p.mnemonic)) + unit)
-        self._labels["range"].setText(self._range_text(unit))
+        self._labels["range"].setText(range_text(p, self._doc))
         self._labels["default"].setText(format_value(p, p.default_for(self._doc.variant)) + unit)
         linked = linked_mnemonics(self._doc, self._access, p.mnemonic)
         hint = ""
@@ -132,17 +132,6 @@ class ParameterEditDialog(QDialog):
         if not self.param.writable or self.param.access is Access.READ_ONLY:
             return self.tr("Read-only value of the valve.")
         return self.tr("Can only be changed at Expert access level.")
-
-    def _range_text(self, unit: str = "", capped: bool = True) -> str:
-        p = self.param
-        if p.choices:
-            return ", ".join(str(code) for code, _label in p.choices)
-        high = format_value(p, p.raw_max) + unit
-        cap = CAPPED_BY.get(p.mnemonic) if capped else None
-        if cap is not None:  # e.g. LIMTA: "0 … 2600 mA (CURNORM)", what the valve accepts
-            limit = min(p.raw_max, int(self._doc.value(cap)))
-            high = f"{format_value(p, limit)}{unit} ({cap})"
-        return f"{format_value(p, p.raw_min)} … {high}"
 
     def changeEvent(self, event: QEvent) -> None:
         """Retranslate when the program language changes."""
@@ -175,7 +164,10 @@ class ParameterEditDialog(QDialog):
             unit = f" {self.param.unit}" if self.param.unit else ""
             raise ValueRangeError(
                 self.tr("{0}: {1}{2} is outside the allowed range {3}{2}.").format(
-                    self.param.mnemonic, entered.strip(), unit, self._range_text(capped=False)
+                    self.param.mnemonic,
+                    entered.strip(),
+                    unit,
+                    range_text(self.param, None, unit=False),
                 )
             )
         return raw

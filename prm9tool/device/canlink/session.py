@@ -32,6 +32,7 @@ from collections.abc import Callable, Mapping, Sequence
 import numpy as np
 
 from prm9tool.catalogue import LOAD_SIGNATURE, SAVE_SIGNATURE, Parameter
+from prm9tool.catalogue.commissioning import NmtCommand
 from prm9tool.device.canlink import bus as canbus
 from prm9tool.device.canlink import discovery, relocate
 from prm9tool.device.canlink.pdo_scope import NotPdoMappedError, PdoSampler, min_period_s
@@ -65,7 +66,6 @@ from prm9tool.errors import (
 SDO_TIMEOUT_S = 0.5
 STORE_TIMEOUT_S = 3.0  # writing the non-volatile memory takes longer than an SDO answer
 BOOT_TIMEOUT_S = 10.0  # NMT reset node -> boot-up (the valve takes about 2 s, manual §7.6)
-NMT_RESET_NODE = 0x81
 LINK_PARAMETERS = ("NODEID", "BITRATE")  # take effect at power-up: the tool's link moves
 __all__ = ["CanopenSession", "NotAPrm9Error"]
 
@@ -265,7 +265,7 @@ class CanopenSession(UploadSteps, ValveSession):
         nodes = [self.node_id, *([after.node_id] if after and after.node_id else [])]
         boot_ups = {n: self._shared.node_seen(n).boot_ups for n in nodes}  # the old one first
         old = self.node_id
-        self._sdo.node.nmt.send_command(NMT_RESET_NODE)
+        self._sdo.node.nmt.send_command(NmtCommand.RESET_NODE)
         if relocate.bitrate_moves(self.options, after):
             assert after is not None and after.node_id is not None
             reason = relocate.why_not_follow(self.options, self._shared.users)

@@ -15,6 +15,7 @@ from typing import TYPE_CHECKING
 
 import can
 
+from prm9tool.catalogue.commissioning import NmtCommand
 from prm9tool.device.emulator.canopen_pdo import PdoChannel, RpdoLogic, TpdoLogic, mapping
 from prm9tool.device.emulator.canopen_rules import check_comm_write
 from prm9tool.device.emulator.canopen_sdo import SdoServer
@@ -25,8 +26,6 @@ if TYPE_CHECKING:
 
 log = logging.getLogger(__name__)
 
-NMT_START, NMT_STOP, NMT_PRE_OPERATIONAL = 0x01, 0x02, 0x80
-NMT_RESET_NODE, NMT_RESET_COMMUNICATION = 0x81, 0x82
 HEARTBEAT_CODES = {
     NmtState.INITIALISING: 0x00,
     NmtState.STOPPED: 0x04,
@@ -133,18 +132,18 @@ class CanopenSlave:
         if self.state is NmtState.INITIALISING:
             return  # manual table 7-4: no NMT service while initialising
         command = data[0]
-        if command == NMT_START and self.state is NmtState.OPERATIONAL:
+        if command == NmtCommand.START and self.state is NmtState.OPERATIONAL:
             self._valve.nmt_event("operational")  # confirms; clears a communication error
-        elif command == NMT_START:
+        elif command == NmtCommand.START:
             self._enter(NmtState.OPERATIONAL)
-        elif command == NMT_STOP:
+        elif command == NmtCommand.STOP:
             self._enter(NmtState.STOPPED)
-        elif command == NMT_PRE_OPERATIONAL:
+        elif command == NmtCommand.PRE_OPERATIONAL:
             self._enter(NmtState.PRE_OPERATIONAL)
-        elif command == NMT_RESET_NODE:
+        elif command == NmtCommand.RESET_NODE:
             self.state = NmtState.INITIALISING
             self._valve.nmt_event("reset_node")  # restarts the valve -> _on_restart
-        elif command == NMT_RESET_COMMUNICATION:
+        elif command == NmtCommand.RESET_COMMUNICATION:
             self.state = NmtState.INITIALISING
             self._valve.nmt_event("reset_comm")
             self._boot_up()

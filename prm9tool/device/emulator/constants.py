@@ -8,9 +8,11 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
+from prm9tool.catalogue.scale import FULL_SCALE
+
 CYCLE_S = 200e-6  # controller cycle period (manual §2.2: 200 µs)
 TICK_CYCLES = 5  # the firmware's slow task (faults, LEDs, state machine) runs every 1 ms
-FULL = 16384.0  # normalized internal scale: ±16384 = ±100 % (manual table 7-14/7-16)
+FULL = float(FULL_SCALE)  # normalized internal scale (prm9tool.catalogue.scale)
 
 
 @dataclass(frozen=True)

@@ -10,6 +10,7 @@ import os
 from collections.abc import Callable, Generator
 
 from prm9tool.catalogue import CATALOGUE, canopen_switches
+from prm9tool.catalogue.scale import FULL_SCALE
 from prm9tool.catalogue.typekey import TypeKey
 from prm9tool.catalogue.variant import Coils
 from prm9tool.device.emulator import config, detect, loop_inputs, thermal
@@ -80,7 +81,7 @@ class Firmware:
         self.ticks = 0
         self.tick_countdown = TICK_CYCLES
         self.override_on = False
-        self.monitoring_threshold = 16384
+        self.monitoring_threshold = FULL_SCALE
         self.monitoring_delay_s = 1.0
         self.static_conditions: dict[str, tuple[bool, float]] = {}
         self.static_alarm = False

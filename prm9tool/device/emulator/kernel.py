@@ -16,6 +16,7 @@ import math
 from bisect import bisect_right
 from collections.abc import Generator
 
+from prm9tool.device.emulator.constants import FULL
 from prm9tool.device.emulator.loopstate import MODE_ACTIVE, MODE_OFF, LoopState
 
 
@@ -29,6 +30,7 @@ def control_loop(s: LoopState) -> Generator[None, int, None]:
     sin = math.sin
     bis = bisect_right
     two_pi = 2.0 * math.pi
+    full = FULL  # 100 %: the controllers' and the sensor path's upper limit
     # --- dynamic state (kept in this frame) ------------------------------------------------
     r = 0.0  # ramp output (demand value)
     x = s.spool_m
@@ -58,7 +60,7 @@ def control_loop(s: LoopState) -> Generator[None, int, None]:
         rpu, rpd, rnu, rnd = c["ramp_steps"]
         pkp, pki, pkd, pt1 = c["position_pid"]
         qkp, qki, qkd, qt1 = c["process_pid"]
-        out_lo = 0.0 if not two else -16384.0
+        out_lo = 0.0 if not two else -full
         kcur = c["ma_per_count"]
         lim_a, lim_b = c["limits_ma"]
         damp, dph = c["dither"]
@@ -173,10 +175,10 @@ def control_loop(s: LoopState) -> Generator[None, int, None]:
                     s1 = -s0 if sinv else s0
                     s2 = s1 + soffs
                     s3 = s2 * sgain
-                    if s3 > 16384.0:
-                        s3 = 16384.0
-                    elif s3 < -16384.0:
-                        s3 = -16384.0
+                    if s3 > full:
+                        s3 = full
+                    elif s3 < -full:
+                        s3 = -full
                     if slin:
                         i = bis(sl_x, s3)
                         pv = sl_b[i] + sl_k[i] * s3
@@ -192,15 +194,15 @@ def control_loop(s: LoopState) -> Generator[None, int, None]:
                             dg = 0.0
                 if process:
                     q_int += qki * dg
-                    if q_int > 16384.0:
-                        q_int = 16384.0
+                    if q_int > full:
+                        q_int = full
                     elif q_int < out_lo:
                         q_int = out_lo
                     q_d = qt1 * q_d + qkd * (dg - q_prev)
                     q_prev = dg
                     w = qkp * dg + q_int + q_d
-                    if w > 16384.0:
-                        w = 16384.0
+                    if w > full:
+                        w = full
                     elif w < out_lo:
                         w = out_lo
                 elif active:
@@ -211,15 +213,15 @@ def control_loop(s: LoopState) -> Generator[None, int, None]:
                 pe = w - xm
                 if mode:
                     p_int += pki * pe
-                    if p_int > 16384.0:
-                        p_int = 16384.0
+                    if p_int > full:
+                        p_int = full
                     elif p_int < out_lo:
                         p_int = out_lo
                     p_d = pt1 * p_d + pkd * (pe - p_prev)
                     p_prev = pe
                     u = pkp * pe + p_int + p_d
-                    if u > 16384.0:
-                        u = 16384.0
+                    if u > full:
+                        u = full
                     elif u < out_lo:
                         u = out_lo
                 else:

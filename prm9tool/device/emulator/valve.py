@@ -11,6 +11,7 @@ from typing import TYPE_CHECKING
 import numpy as np
 
 from prm9tool.catalogue import CATALOGUE, LOAD_SIGNATURE, SAVE_SIGNATURE
+from prm9tool.catalogue.commissioning import NmtCommand
 from prm9tool.catalogue.signals import BY_KEY
 from prm9tool.catalogue.typekey import TypeKey
 from prm9tool.catalogue.variant import Variant
@@ -36,12 +37,12 @@ if TYPE_CHECKING:
 
     from prm9tool.device.emulator.canopen_slave import CanopenSlave
 
-_NMT_EVENTS = {  # CiA 301 command specifier -> NMT event (nmt.NMT_EVENTS)
-    0x01: "operational",
-    0x02: "stopped",
-    0x80: "preoperational",
-    0x81: "reset_node",
-    0x82: "reset_comm",
+_NMT_EVENTS: dict[int, str] = {  # CiA 301 command specifier -> NMT event (nmt.NMT_EVENTS)
+    NmtCommand.START: "operational",
+    NmtCommand.STOP: "stopped",
+    NmtCommand.PRE_OPERATIONAL: "preoperational",
+    NmtCommand.RESET_NODE: "reset_node",
+    NmtCommand.RESET_COMMUNICATION: "reset_comm",
 }
 INPUT_NAMES = (
     "setpoint",

@@ -10,7 +10,9 @@ import math
 from collections.abc import Sequence
 from dataclasses import dataclass
 
-FULL = 16384  # raw value of 100 % on the normalized internal scale
+from prm9tool.catalogue.scale import FULL_SCALE
+
+FULL = FULL_SCALE  # raw value of 100 % on the normalized internal scale
 
 
 @dataclass(frozen=True)

@@ -274,10 +274,10 @@ class DiagramView(QGraphicsView):
     def _refresh_dots(self) -> None:
         online = self.is_online
         for key, dot in self.diagram.dots.items():
-            name = text(BY_KEY[key].text)
             if online:
-                tip = self.tr("%1 — click to show it in the oscilloscope").replace("%1", name)
+                tip = self._online_tip(key, math.isnan(self._signals.get(key, 0.0)))
             else:
+                name = text(BY_KEY[key].text)
                 tip = self.tr(
                     "%1 — offline: measuring points show live values only with a valve online."
                 ).replace("%1", name)
@@ -319,6 +319,17 @@ class DiagramView(QGraphicsView):
             dot = self.diagram.dots.get(key)
             if dot is not None:
                 dot.set_value_text(format_signal(key, raw))
+                dot.setToolTip(self._online_tip(key, math.isnan(raw)))
+
+    def _online_tip(self, key: str, no_value: bool) -> str:
+        name = text(BY_KEY[key].text)
+        if no_value:
+            return self.tr(
+                "%1 — no live value now: the valve streams three measuring points at a time and"
+                " the oscilloscope is recording others (over CANopen: the valve has no object"
+                " for this point)."
+            ).replace("%1", name)
+        return self.tr("%1 — click to show it in the oscilloscope").replace("%1", name)
 
     # --- Qt events -------------------------------------------------------------------------------------
     def resizeEvent(self, event: QResizeEvent) -> None:

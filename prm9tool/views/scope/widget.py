@@ -29,10 +29,12 @@ from PySide6.QtWidgets import (
 )
 
 from prm9tool.catalogue.signals import BY_KEY, signals_for
+from prm9tool.errors import ValueRangeError
 from prm9tool.model.document import ParameterDocument
 from prm9tool.online.connection_protocol import ScopeConnection, StatusView
 from prm9tool.online.valve_control import ValveControl, status_blocker
 from prm9tool.scope import Capture, GeneratorSettings
+from prm9tool.translate import error_text
 from prm9tool.views.scope.display import ScopeDisplay
 from prm9tool.views.scope.export import ScopeExport
 from prm9tool.views.scope.generator import GeneratorPanel, SetpointGenerator
@@ -346,8 +348,8 @@ class ScopeWidget(QWidget):
         self._generator_note = ""
         try:
             self.generator.start(settings)
-        except RuntimeError as exc:
-            self._say(str(exc))
+        except (RuntimeError, ValueRangeError) as exc:
+            self._say(error_text(exc))
             return
         measure_against_demand(self.channels, self.step_panel)
 

@@ -13,11 +13,12 @@ from PySide6.QtCore import QSignalBlocker, Qt
 from PySide6.QtGui import QKeyEvent
 from PySide6.QtWidgets import QComboBox, QDialogButtonBox, QLineEdit, QPushButton, QWidget
 
-from prm9tool.catalogue import CATALOGUE, Parameter
+from prm9tool.catalogue import CATALOGUE
 from prm9tool.errors import ValueRangeError
 from prm9tool.i18n import current_language, format_value, parse_value
 from prm9tool.model.access import AccessModel
 from prm9tool.model.document import ParameterDocument, Raw
+from prm9tool.model.editing import range_text
 from prm9tool.translate import error_text
 
 Apply = Callable[[str, Raw], bool]  # returns False (and shows the reason) when refused
@@ -33,12 +34,6 @@ def not_on_enter(buttons: QDialogButtonBox) -> None:
         button.setDefault(False)
 
 
-def range_text(param: Parameter) -> str:
-    """``0 … 100 %`` — the allowed range of a numeric parameter in display units."""
-    unit = f" {param.unit}" if param.unit else ""
-    return f"{format_value(param, param.raw_min)} … {format_value(param, param.raw_max)}{unit}"
-
-
 class ValueField(QLineEdit):
     """A numeric parameter typed in display units; refused text stays, marked red."""
 
@@ -50,8 +45,9 @@ class ValueField(QLineEdit):
         self._apply = apply
         self._report = report
         self._shown = ""
+        self.range = range_text(self.param, None)  # the allowed range, capped once a doc is shown
         self.setMaximumWidth(110)
-        self.setPlaceholderText(range_text(self.param))
+        self.setPlaceholderText(self.range)
         self.editingFinished.connect(self._on_editing_finished)
         self.textEdited.connect(self._on_text_edited)
 
@@ -63,7 +59,10 @@ class ValueField(QLineEdit):
     def show_value(self, doc: ParameterDocument) -> None:
         """Display the document's value (does not emit edit signals)."""
         self._shown = format_value(self.param, doc.value(self.mnemonic))
-        self.setPlaceholderText(range_text(self.param))
+        self.range = range_text(self.param, doc)
+        self.setPlaceholderText(self.range)
+        if self.toolTip().startswith(f"{self.mnemonic}: "):  # the range, not a lock reason
+            self.setToolTip(f"{self.mnemonic}: {self.range}")
         with QSignalBlocker(self):
             self.setText(self._shown)
         self.setStyleSheet("")
@@ -81,7 +80,7 @@ class ValueField(QLineEdit):
         allowed = access.may_edit(self.param) and not read_only
         self.setEnabled(allowed)
         reason = access.why_locked(self.param)
-        self.setToolTip(reason or f"{self.mnemonic}: {range_text(self.param)}")
+        self.setToolTip(reason or f"{self.mnemonic}: {self.range}")
 
     def keyPressEvent(self, event: QKeyEvent) -> None:
         """Enter commits the field (``editingFinished``) and stays in the dialog.
