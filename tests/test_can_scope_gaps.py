@@ -179,3 +179,10 @@ def test_the_demand_channel_shows_the_sent_setpoint_only_while_the_tool_sends_on
     arrived = rows[np.isfinite(rows[:, 1])]
     assert np.isnan(arrived[0, 0]) and arrived[-1, 0] == 3277.0  # NaN until the tool sends
     assert (arrived[:, 1] == 4096).all() and np.isnan(rows[:, 2]).all()  # no object: no data
+
+
+def test_a_lost_sample_does_not_blank_the_live_value():
+    from prm9tool.online.polling import latest_values
+
+    block = np.array([[1.0, 5.0, np.nan], [2.0, np.nan, np.nan], [np.nan, np.nan, np.nan]])
+    assert latest_values(["a", "b", "c"], block) == {"a": 2.0, "b": 5.0}
