@@ -65,7 +65,7 @@ def test_a_square_keeps_its_period_with_half_the_tpdo1_frames_lost(can_valve):  
     period = 1.0 / 1000
     demand, actual = rows[:, 0] * BY_KEY["position_setpoint"].scale, rows[:, 1]
     actual = actual * BY_KEY["position_actual"].scale
-    assert dropped[0] > 0.3 * len(rows) and lost >= dropped[0] * 0.9
+    assert dropped[0] > 100 and lost >= dropped[0] * 0.9  # (and the ticks a busy PC skipped)
     assert np.isnan(actual).sum() == lost  # each lost sample is a gap at its place
     # the demand is what the tool sent, at the SYNC it went with: its edges are the toggles'
     demand_edges = rising_edges(demand, 10.0) * period
@@ -186,3 +186,11 @@ def test_a_lost_sample_does_not_blank_the_live_value():
 
     block = np.array([[1.0, 5.0, np.nan], [2.0, np.nan, np.nan], [np.nan, np.nan, np.nan]])
     assert latest_values(["a", "b", "c"], block) == {"a": 2.0, "b": 5.0}
+
+
+def test_the_legend_shows_the_newest_sample_that_arrived():
+    from prm9tool.views.scope.display import newest_arrived
+
+    rows = np.array([[1.0, 5.0, np.nan], [2.0, np.nan, np.nan], [np.nan, np.nan, np.nan]])
+    shown = newest_arrived(rows)
+    assert shown[:2].tolist() == [2.0, 5.0] and np.isnan(shown[2])
