@@ -194,3 +194,13 @@ def test_the_legend_shows_the_newest_sample_that_arrived():
     rows = np.array([[1.0, 5.0, np.nan], [2.0, np.nan, np.nan], [np.nan, np.nan, np.nan]])
     shown = newest_arrived(rows)
     assert shown[:2].tolist() == [2.0, 5.0] and np.isnan(shown[2])
+
+
+def test_the_cursors_read_between_the_samples_that_arrived():
+    from prm9tool.scope import cursor_readout
+
+    t = np.arange(5) / 1000.0
+    values = np.column_stack([[0.0, np.nan, np.nan, 3.0, 4.0], np.full(5, np.nan)])
+    readout = cursor_readout(t, values, 0.0015, 0.004)
+    assert readout.a[0] == pytest.approx(1.5) and readout.b[0] == 4.0
+    assert np.isnan(readout.a[1])  # no data on that channel: no value, no warning

@@ -39,14 +39,23 @@ class CursorReadout:
 
 
 def cursor_readout(t: np.ndarray, values: np.ndarray, t_a: float, t_b: float) -> CursorReadout:
-    """Linearly interpolated channel values at times ``t_a`` and ``t_b``."""
+    """Linearly interpolated channel values at times ``t_a`` and ``t_b`` (between the samples
+    that arrived; a channel without any gives NaN)."""
 
     def at(when: float) -> np.ndarray:
         if len(t) == 0 or not t[0] <= when <= t[-1]:
             return np.full(values.shape[1], math.nan)
-        return np.array([np.interp(when, t, values[:, c]) for c in range(values.shape[1])])
+        return np.array([_interp(when, t, values[:, c]) for c in range(values.shape[1])])
 
     return CursorReadout(t_a, t_b, at(t_a), at(t_b))
+
+
+def _interp(when: float, t: np.ndarray, y: np.ndarray) -> float:
+    """``y`` at ``when`` between the samples that arrived (NaN: lost, over CANopen)."""
+    ok = np.isfinite(y)
+    if ok.all():
+        return float(np.interp(when, t, y))
+    return float(np.interp(when, t[ok], y[ok])) if ok.any() else math.nan
 
 
 # --- step response ---------------------------------------------------------------------------
