@@ -258,7 +258,10 @@ def main() -> None:
     """Run the three measurements."""
     parser = argparse.ArgumentParser(description=__doc__)
     parser.add_argument("--reads", type=int, default=500)
+    parser.add_argument("--quick", action="store_true", help="a smoke run: seconds, not figures")
     args = parser.parse_args()
+    if args.quick:
+        args.reads = 20
     with tempfile.TemporaryDirectory() as tmp:
         folder = Path(tmp)
         stamp = time.monotonic_ns()

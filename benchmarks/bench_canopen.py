@@ -125,7 +125,9 @@ def main() -> None:
     """Run the three measurements and print the figures and ratios."""
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--reads", type=int, default=1000)
-    n = parser.parse_args().reads
+    parser.add_argument("--quick", action="store_true", help="a smoke run: seconds, not figures")
+    args = parser.parse_args()
+    n = 20 if args.quick else args.reads
     with tempfile.TemporaryDirectory() as folder:
         eds = Path(folder) / "prm9.eds"
         eds.write_text(export_eds(TYPE_KEY), encoding="ascii")

@@ -1,6 +1,6 @@
 """Signal-flow diagram and tuning simulator: costs against references measured in the same run.
 
-    QT_QPA_PLATFORM=offscreen python benchmarks/bench_diagram.py
+    QT_QPA_PLATFORM=offscreen python benchmarks/bench_diagram.py [--quick]
 
 Diagram: building the E04 -CA diagram, redrawing it (1024 x 640) and pushing one set of live
 values, against a plain QGraphicsScene with the same number of rectangles and texts.
@@ -11,6 +11,7 @@ set-up; and the speed-up over real time.
 
 from __future__ import annotations
 
+import argparse
 import os
 import statistics
 import sys
@@ -26,21 +27,22 @@ from PySide6.QtWidgets import QApplication, QGraphicsScene
 from prm9tool.catalogue import CATALOGUE, Access
 from prm9tool.catalogue.signals import signals_for
 from prm9tool.catalogue.typekey import TypeKey
-from prm9tool.characterize.procedures import LOOPS
+from prm9tool.characterize.procedures import LOOPS, STEP_PRE_S
 from prm9tool.device.emulator import EmulatedValve
 from prm9tool.model.access import AccessModel
 from prm9tool.model.document import ParameterDocument
-from prm9tool.online.tuning import PRE_STEP_S, analog_type_key, power_up, simulate_step
+from prm9tool.online.tuning import analog_type_key, simulate_step
 from prm9tool.views.diagram import DiagramView
 
 E04_CA = "PRM9-06.3Z11/30-24E04S02-CA"
 E02 = "PRM9-06.3Z11/30-24E02S02"
+QUICK = [False]  # --quick: every measurement once (a smoke run)
 
 
 def median_ms(work: Callable[[], object], repeat: int) -> float:
     """Median wall time of ``work`` in milliseconds."""
     times = []
-    for _ in range(repeat):
+    for _ in range(1 if QUICK[0] else repeat):
         start = time.perf_counter()
         work()
         times.append(time.perf_counter() - start)
@@ -124,8 +126,10 @@ def bench_tuning() -> None:
         values = {p.mnemonic: p.default_for(variant) for p in CATALOGUE.file_parameters(variant)}
         analog = analog_type_key(key)
         probe = EmulatedValve(analog)
-        power_up(probe)
-        simulated = PRE_STEP_S + LOOPS[loop].simulated_s
+        while probe.status().booting:  # as the EmulatorRig of the simulator boots it
+            probe.advance(0.05)
+        window = LOOPS[loop].simulated_s  # the autotune's step: rest, pre-step, window
+        simulated = max(0.1, window) + STEP_PRE_S + window
         total = probe.time + simulated  # power-up and settling, then the step
         step_ms = median_ms(lambda k=key, v=values, lp=loop: simulate_step(k, v, lp), 11)
 
@@ -142,6 +146,9 @@ def bench_tuning() -> None:
 
 def main() -> int:
     """Run both benchmarks."""
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--quick", action="store_true", help="a smoke run: seconds, not figures")
+    QUICK[0] = parser.parse_args().quick
     app = QApplication.instance() or QApplication(sys.argv)
     assert app is not None
     print(f"Python {sys.version.split()[0]}")

@@ -109,7 +109,10 @@ def main() -> int:
     parser.add_argument("--uploads", type=int, default=5)
     parser.add_argument("--records", type=int, default=10_000)
     parser.add_argument("--postgres", action="store_true")
+    parser.add_argument("--quick", action="store_true", help="a smoke run: seconds, not figures")
     args = parser.parse_args()
+    if args.quick:
+        args.uploads, args.records = 1, 100
     folder = Path(tempfile.mkdtemp(prefix="prm9tool-bench-history-"))
     os.environ["PRM9TOOL_DATA_DIR"] = str(folder / "data")
     print("SQLite (the default history):")

@@ -43,7 +43,7 @@ def filled_scope(window_s: float) -> ScopeWidget:
     block = np.column_stack([square, noisy, current]).astype(np.int64)
     for start in range(0, count, 500):
         link.samples_received.emit(block[start : start + 500])
-    scope._redraw()
+    scope.display.redraw()  # what the scope's 30 Hz timer does
     return scope
 
 
@@ -79,7 +79,11 @@ def main() -> int:
     """Measure and print the table."""
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--window", type=float, default=10.0)
+    parser.add_argument("--quick", action="store_true", help="a smoke run: seconds, not figures")
     args = parser.parse_args()
+    rounds, repaints = (1, 5) if args.quick else (3, 60)
+    if args.quick:
+        args.window = 1.0
     app = QApplication.instance() or QApplication([])
     scope = filled_scope(args.window)
     app.processEvents()
@@ -88,11 +92,11 @@ def main() -> int:
     print(f"{'repaint':10s} {'scope':>12s} {'pyqtgraph grid':>15s} {'ratio':>7s}")
     for label, roll in (("static", False), ("roll", True)):
         cached, uncached = [], []
-        for _ in range(3):  # interleaved, so a slow spell of the machine hits both
+        for _ in range(rounds):  # interleaved, so a slow spell of the machine hits both
             standard_grid(scope, False)
-            cached.append(repaint_ms(scope, roll))
+            cached.append(repaint_ms(scope, roll, repaints))
             standard_grid(scope, True)
-            uncached.append(repaint_ms(scope, roll))
+            uncached.append(repaint_ms(scope, roll, repaints))
         standard_grid(scope, False)
         a, b = statistics.median(cached), statistics.median(uncached)
         print(f"{label:10s} {a:9.2f} ms {b:12.2f} ms {a / b:6.2f}x")

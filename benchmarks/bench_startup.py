@@ -95,7 +95,9 @@ def main() -> int:
     """Measure and print the figures."""
     parser = argparse.ArgumentParser(description=__doc__)
     parser.add_argument("--runs", type=int, default=7)
-    runs = parser.parse_args().runs
+    parser.add_argument("--quick", action="store_true", help="a smoke run: seconds, not figures")
+    args = parser.parse_args()
+    runs = 1 if args.quick else args.runs
     reference_once()  # warm the file cache for both
     prm9tool_once()
     reference = statistics.median(reference_once() for _ in range(runs))

@@ -8,11 +8,14 @@ same valve time with a constant setpoint: the ratio wall/reference is the cost o
 setpoint cycle by cycle and of the analysis. Goals (issue 16): autotune ≤ 30 s of valve time,
 a 1–200 Hz Bode ≤ 20 s of valve time.
 
-    .venv/bin/python benchmarks/bench_tuning.py
+    .venv/bin/python benchmarks/bench_tuning.py [--quick]
+
+``--quick`` (a smoke run) runs the critical-gain autotune and a 1 s sweep only.
 """
 
 from __future__ import annotations
 
+import argparse
 import time
 from collections.abc import Callable
 
@@ -44,12 +47,21 @@ def free_run_s(valve_seconds: float) -> float:
     return time.perf_counter() - start
 
 
+QUICK_TESTS: list[tuple[str, Callable[[EmulatorRig], object], float]] = [
+    ("autotune, critical gain", lambda rig: critical_gain_tune(rig), 0.0),
+    ("Bode 1-200 Hz, 1 s sweep", lambda rig: bode_test(rig, 10.0, 0.0, 1.0, 200.0, 1.0), 1.0),
+]
+
+
 def main() -> None:
     """Run every procedure once and print the table."""
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--quick", action="store_true", help="a smoke run: seconds, not figures")
+    quick = parser.parse_args().quick
     print(
         f"{'procedure':32} {'physics':>8} {'valve':>8} {'wall':>8} {'valve/wall':>10} {'wall/ref':>9}"
     )
-    for name, procedure, physics in TESTS:
+    for name, procedure, physics in QUICK_TESTS if quick else TESTS:
         rig = EmulatorRig(EmulatedValve(E02))
         start = time.perf_counter()
         procedure(rig)

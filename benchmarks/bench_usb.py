@@ -170,7 +170,10 @@ def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--realtime-stream", action="store_true")
     parser.add_argument("--seconds", type=float, default=10.0)
+    parser.add_argument("--quick", action="store_true", help="a smoke run: seconds, not figures")
     args = parser.parse_args()
+    if args.quick:
+        args.seconds = 0.5
     bench_upload()
     bench_stream(args.seconds, args.realtime_stream)
     bench_parallel(8)

@@ -79,12 +79,16 @@ def make_link_rig(
     type_key: str = E04,
     real_valve: bool = False,
     switches: tuple[int, int] | None = None,
+    od: str = "full",
 ) -> LinkRig:
     """A booted valve (node 10) on a fresh virtual channel; its EEPROM in ``tmp_path``.
-    ``switches``: its rotary switches (interface/bit rate, node ID; default 6, 2)."""
+    ``switches``: its rotary switches (interface/bit rate, node ID; default 6, 2); ``od``:
+    ``manual`` for a valve with only the objects the manual lists (``--od manual``)."""
     channel = unique_channel(name)
     serial = next(_serials)
-    valve = EmulatedValve(type_key, serial, nv_path=tmp_path / f"{serial}.json", switches=switches)
+    valve = EmulatedValve(
+        type_key, serial, nv_path=tmp_path / f"{serial}.json", switches=switches, od=od
+    )
     bus = can.Bus(interface="virtual", channel=channel)
     slave = valve.connect_can(bus)
     rig = LinkRig(valve, slave, bus, CanOptions("virtual", channel))

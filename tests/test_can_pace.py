@@ -138,9 +138,10 @@ def test_the_sweep_over_can_runs_at_1_khz_to_100_hz_and_lost_samples_do_not_move
     # directly any more (a valve of its own never does): that is said, not measured
     # (benchmarks/bench_tuning_can.py measures how close the figures come)
     behind = float(np.percentile(lags, 90)) if lags else 0.0
-    if behind > 0.006:
+    if behind > 0.003:
         pytest.skip(f"the emulated valve was {behind * 1000:.0f} ms behind real time 10 % of it")
-    assert result.response.bandwidth_hz() == pytest.approx(ref_bw, rel=0.08)
+    # (a squeezed or stretched time axis would move it by tens of %)
+    assert result.response.bandwidth_hz() == pytest.approx(ref_bw, rel=0.1)
     assert can_valve.working("POSSETP") == 0  # the setpoint it had, given back
 
 

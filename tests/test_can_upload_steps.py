@@ -33,8 +33,10 @@ def test_only_changed_values_are_sent_and_every_value_is_verified(rig):
         result = session.upload(values)
         requests = session.sdo.requests - before
     assert result.stored and result.written == len(values)  # the valve holds every value
-    # 4 writes, every value read back, the store, one read-back after it
-    assert requests == len(CHANGES) + len(values) + 1 + 1
+    # its store capability 0x1010/1 (CiA 301), 4 writes, every value read back, the store,
+    # one read-back after it
+    assert requests == 1 + len(CHANGES) + len(values) + 1 + 1
+    assert result.store == "stored with 0x1010"
     stored = rig.stored_set()
     assert all(stored[m] == v for m, v in values.items() if m in stored)
 

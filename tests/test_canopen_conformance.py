@@ -79,12 +79,23 @@ def test_emcy_8210_is_in_0x1001_and_0x1003_and_reset_after_a_good_rpdo(rig: Rig)
     rig.exchange("60A 40 03 10 00 00 00 00 00", "58A 4F 03 10 00 01 00 00 00")
     rig.exchange("60A 40 03 10 01 00 00 00 00", "58A 43 03 10 01 10 82 00 00")
     assert rig.valve.status().device_state is state  # reported only: no fault reaction
-    rig.send("20A 0F 00 00 00")  # the right length: the error goes
+    rig.send("20A 0F 00 00 00")  # the right length: the error goes, CiA 301 error reset
     rig.barrier()
-    rig.valve.advance(11.0)  # shown ~10 s after it went, as every error (manual §5.5)
     assert [f for f in rig.drain() if f.startswith("08A")] == ["08A 00 00 00 00 00 00 00 00"]
-    rig.exchange("60A 40 01 10 00 00 00 00 00", "58A 4F 01 10 00 00 00 00 00")
+    rig.exchange("60A 40 01 10 00 00 00 00 00", "58A 4F 01 10 00 00 00 00 00")  # bit cleared
     rig.exchange("60A 40 03 10 01 00 00 00 00", "58A 43 03 10 01 10 82 00 00")  # history kept
+
+
+def test_emcy_8210_is_reset_once_when_correct_rpdos_arrive_again(rig: Rig):
+    rig.exchange("60A 2B 17 10 00 00 00 00 00", "58A 60 17 10 00 00 00 00 00")
+    rig.send("000 01 0A")
+    rig.send("20A 0F")
+    rig.barrier()
+    assert [f for f in rig.drain() if f.startswith("08A")] == ["08A 10 82 11 00 00 00 00 00"]
+    for _ in range(3):  # correct RPDOs: one error reset, not one per frame
+        rig.send("20A 0F 00 00 00")
+    rig.barrier()
+    assert [f for f in rig.drain() if f.startswith("08A")] == ["08A 00 00 00 00 00 00 00 00"]
 
 
 def test_emcy_8210_ends_with_the_next_nmt_start(rig: Rig):

@@ -67,7 +67,7 @@ def test_section_7_2_6_pdo_set_up(rig: Rig):
     rig.exchange("60A 2B 00 18 05 64 00 00 00", "58A 60 00 18 05 00 00 00 00")
     rig.exchange("60A 2B 17 10 00 00 00 00 00", "58A 60 17 10 00 00 00 00 00")
     rig.send("000 01 0A")
-    assert rig.receive() == "18A 00 02 00 00"  # entering OPERATIONAL: INIT (0x0200), spool at 0
+    assert rig.receive() == "18A 08 00 00 00"  # entering OPERATIONAL: INIT (0x0008), spool at 0
     rig.valve.advance(1.0)
     tpdos = rig.drain()
     assert len(tpdos) == 10  # "every 100 ms a message with COB-ID 18Ah"
@@ -89,10 +89,10 @@ CONFIGURATION = [  # §7.6 "Příklad konfigurace s Node ID Ah", answered in ful
     ("60A 2B 01 18 05 64 00 00 00", "58A 60 01 18 05 00 00 00 00"),  # TPDO2 every 100 ms
 ]
 ENABLE = [  # figure 7-13: control word R, D, H, M in turn; TPDO1 = status word + position 0
-    (0x08, "18A 00 02 00 00"),  # INIT
-    (0x09, "18A 01 03 00 00"),  # DISABLED
-    (0x0B, "18A 03 04 00 00"),  # HOLD
-    (0x0F, "18A 07 05 00 00"),  # DEVICE_MODE_ACTIVE
+    (0x08, "18A 08 00 00 00"),  # INIT
+    (0x09, "18A 09 00 00 00"),  # DISABLED
+    (0x0B, "18A 0B 00 00 00"),  # HOLD
+    (0x0F, "18A 0F 00 00 00"),  # DEVICE_MODE_ACTIVE
 ]
 SETPOINTS = [("20A 0F 00 40 1F 00 00 00 00", 8000), ("20A 0F 00 C0 E0 00 00 00 00", -8000)]
 
@@ -103,13 +103,13 @@ def _commission(rig: Rig) -> None:
     for request, response in CONFIGURATION:
         rig.exchange(request, response)
     rig.send("000 01 00")  # the whole bus to OPERATIONAL
-    rig.expect("18A 00 02 00 00")  # TPDO1 at once: INIT, spool at 0; E02: no TPDO2
+    rig.expect("18A 08 00 00 00")  # TPDO1 at once: INIT, spool at 0; E02: no TPDO2
     rig.send("000 01 0A")  # only the valve: it is already OPERATIONAL, nothing changes
     rig.barrier()
     assert rig.drain() == []
     rig.valve.advance(1.05)
     frames = rig.drain()
-    assert sorted(frames) == ["18A 00 02 00 00"] * 10 + ["70A 05"]  # heartbeat: OPERATIONAL
+    assert sorted(frames) == ["18A 08 00 00 00"] * 10 + ["70A 05"]  # heartbeat: OPERATIONAL
     for word, tpdo in ENABLE:
         rig.exchange(f"60A 2B 40 60 00 {word:02X} 00 00 00", "58A 60 40 60 00 00 00 00 00")
         rig.valve.advance(0.1)
@@ -121,7 +121,7 @@ def _commission(rig: Rig) -> None:
         assert rig.valve.read(0x6300, 1) == target
         rig.valve.advance(0.5)
         tpdos = [f for f in rig.drain() if f != "70A 05"]
-        assert len(tpdos) == 5 and all(f.startswith("18A 07 05 ") for f in tpdos)  # active
+        assert len(tpdos) == 5 and all(f.startswith("18A 0F 00 ") for f in tpdos)  # active
         actual = struct.unpack("<h", bytes.fromhex(tpdos[-1][10:]))[0]
         assert actual == rig.valve.read(0x6301, 1) == pytest.approx(target, abs=0.02 * 16384)
 
@@ -167,4 +167,4 @@ def test_figure_7_13_state_machine_to_device_mode_active(rig: Rig):
         rig.exchange(f"60A 2B 40 60 00 {word:02X} 00 00 00", "58A 60 40 60 00 00 00 00 00")
         assert rig.valve.device_state is state
         status = struct.unpack("<H", rig.sdo_read(0x6041, 0))[0]
-        assert status >> 8 == list(DeviceState).index(state) + 1
+        assert status == word  # CiA 408: R M H D of the state, here equal to the command

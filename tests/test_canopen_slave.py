@@ -109,7 +109,7 @@ def test_nmt_startup_0_goes_operational_by_itself(tmp_path, request: pytest.Fixt
         rig.exchange("60A 23 10 10 01 73 61 76 65", "58A 60 10 10 01 00 00 00 00")
         rig.valve.restart()
         rig.valve.advance(2.0)
-        assert rig.drain() == ["70A 00", "18A 00 02 00 00"]
+        assert rig.drain() == ["70A 00", "18A 08 00 00 00"]
         assert rig.valve.status().nmt_state == "operational"
     finally:
         rig.close()
@@ -331,7 +331,7 @@ def test_rpdo2_carries_the_external_sensor_value_over_can(rig_e04: Rig):
     rig = rig_e04
     rig.exchange("60A 2B 05 20 01 0E 00 00 00", "58A 60 05 20 01 00 00 00 00")  # SENSTYPE 14
     rig.exchange("60A 2B 01 18 05 0A 00 00 00", "58A 60 01 18 05 00 00 00 00")  # TPDO2 10 ms
-    assert _start(rig) == ["18A 00 02 00 00", "28A 00 00 00 00"]
+    assert _start(rig) == ["18A 08 00 00 00", "28A 00 00 00 00"]
     rig.send("30A 60 F0")  # RPDO2 (default COB-ID 0x300 + node): 0x2100/2 = 0xF060 = -4000
     rig.barrier()
     rig.valve.advance(0.01)  # the sensor chain takes it in the next 1 ms cycle

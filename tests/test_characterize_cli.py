@@ -73,6 +73,19 @@ def test_out_of_limits_exits_8_and_names_the_figure(tmp_path, capsys):
     assert "out of limits: bode_bandwidth_hz" in capsys.readouterr().err
 
 
+def test_a_step_that_never_settles_says_what_it_did(tmp_path, capsys):
+    """Issue 25 item 6: a failed settling time printed "nan" without a word of why."""
+    limited = FAST + "step_settling_s = { max = 0.05 }\n"
+    js = tmp_path / "out.json"
+    assert run(tmp_path, limited, 33, "--json", str(js)) == ExitCode.OUT_OF_LIMITS
+    err = capsys.readouterr().err
+    line = next(x for x in err.splitlines() if "out of limits: step_5_settling_s" in x)
+    assert "(did not settle within ±2 % of the step: oscillation of ±" in line
+    report = json.loads(js.read_text(encoding="utf-8"))
+    note = {f["name"]: f["note"] for f in report["figures"]}["step_5_settling_s"]
+    assert note is not None and line.endswith(f"({note})")
+
+
 @pytest.mark.parametrize(
     ("profile", "message"),
     [

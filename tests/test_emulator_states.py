@@ -4,8 +4,9 @@ from __future__ import annotations
 
 import pytest
 
+from prm9tool.device.canlink.status import device_state
 from prm9tool.device.emulator import EmulatedValve, Fault
-from prm9tool.device.emulator.statemachine import DeviceStateMachine
+from prm9tool.device.emulator.statemachine import STATUS_CONTROL_DEVIATION, DeviceStateMachine
 from prm9tool.device.records import DeviceState
 from prm9tool.errors import AbortCode, SdoAbortError, ValueRangeError
 
@@ -83,12 +84,25 @@ def test_fault_reaction_ends_in_fault_hold_or_fault_by_the_hold_bit(word, expect
     assert state_after(valve, word | 0x08) is reset_target  # transitions 11 / 10
 
 
-def test_status_word_carries_the_state_number():
+@pytest.mark.parametrize(
+    ("state", "bits"),
+    [
+        (S.NOT_READY, 0b0000),
+        (S.INIT, 0b1000),
+        (S.DISABLED, 0b1001),
+        (S.HOLD, 0b1011),
+        (S.DEVICE_MODE_ACTIVE, 0b1111),
+        (S.FAULT_HOLD, 0b0011),
+        (S.FAULT_REACTION, 0b0111),
+        (S.FAULT, 0b0001),
+    ],
+)
+def test_status_word_bits_0_to_3_tell_the_state_as_cia_408_defines(state, bits):
     machine = DeviceStateMachine()
-    assert machine.status_word() == 1 << 8
-    machine.init_done()
-    machine.write_control_word(0x0F, fault_present=False)
-    assert machine.status_word() == (5 << 8) | 0x07
+    machine.state = state
+    assert machine.status_word() == bits  # R M H D, nothing in bits 8…11
+    assert machine.status_word(STATUS_CONTROL_DEVIATION) == bits | 0x0800
+    assert device_state(machine.status_word(0xFFF0)) is state  # the master ignores the flags
 
 
 def test_analog_only_valve_runs_by_itself_and_refuses_a_control_word():

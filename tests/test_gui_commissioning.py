@@ -88,6 +88,24 @@ def test_the_inputs_dialog_sets_the_supply_and_the_switches(qtbot, window):
     qtbot.waitUntil(lambda: "0x3410" in window.status.status_label.text(), timeout=TIMEOUT)
 
 
+def test_the_node_id_switch_at_1_is_lss_and_the_valve_then_waits_for_an_lss_master(qtbot, window):
+    dialog = window.emulated_menu.show_dialog()
+    qtbot.waitUntil(dialog.isEnabled, timeout=TIMEOUT)
+    combo = dialog.switches["switch_node"]
+    assert [combo.itemText(p) for p in (0, 1, 2, 15)] == [
+        "0 — node ID and bit rate by software (NODEID, BITRATE)",
+        "1 — LSS: node ID from an LSS master, automatic bit rate",
+        "2 — node 10",
+        "F — node 75",
+    ]
+    combo.setCurrentIndex(1)
+    combo.activated.emit(1)
+    valve = emulated(SERIAL)
+    qtbot.waitUntil(lambda: valve.switches == (6, 1), timeout=TIMEOUT)
+    valve.restart()  # switches are read at power-up
+    assert valve.lss_mode and valve.node_id == 0  # no node ID until an LSS master gives one
+
+
 def test_pulling_the_cable_takes_the_program_offline_with_a_message(qtbot, window, answers):
     with qtbot.waitSignal(window.connection.lost, timeout=TIMEOUT):
         window.emulated_menu.cable_action.trigger()

@@ -268,3 +268,32 @@ def test_the_history_window_names_a_damaged_database_and_keeps_working(qtbot, wi
     qtbot.waitUntil(lambda: "is damaged" in history.state.text(), timeout=TIMEOUT)
     assert history.model.rowCount() == 0 and not history.buttons["compare"].isEnabled()
     assert damaged.read_bytes() == b"not a database " * 100
+
+
+def test_parameters_not_on_the_valve_are_shown_apart_not_as_differences(qtbot):
+    """Issue 20 item 4: a -CA valve without this project's objects (POSKP …) showed each of
+    them as a difference ("only on one side"), so the view never said equal."""
+    from prm9tool.catalogue import CATALOGUE
+
+    i18n.set_language("en")
+    document = factory_side("Document")
+    ours = {p.mnemonic for p in CATALOGUE if not p.address_from_manual} & set(document.values)
+    valve = Side(
+        "Valve 7", document.type_key, {m: v for m, v in document.values.items() if m not in ours}
+    )
+    dialog = CompareDialog(Comparison((document, valve)), (0, 1))
+    qtbot.addWidget(dialog)
+    assert ours and dialog.model.rows == []  # differences only: nothing differs
+    assert dialog.summary.text().startswith(
+        f"0 parameters differ, 0 parameters only on one side, {len(ours)} parameters not on"
+        " the valve, not compared"
+    )
+    dialog.differences_only.setChecked(False)
+    model = dialog.model
+    row = next(i for i, r in enumerate(model.rows) if r.mnemonic == "POSKP")
+    assert model.data(model.index(row, FIRST_VALUE + 1)) == "not on this valve"
+    assert "not a difference" in model.data(
+        model.index(row, FIRST_VALUE + 1), Qt.ItemDataRole.ToolTipRole
+    )
+    assert not model.flags(model.index(row, FIRST_VALUE)) & Qt.ItemFlag.ItemIsUserCheckable
+    snapshot(dialog, "compare_not_on_valve.png")

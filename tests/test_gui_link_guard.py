@@ -51,6 +51,18 @@ def test_with_the_node_switch_deciding_the_change_does_not_move_it(qtbot, window
     assert "stays at node 10" in answers.informed[-1]
 
 
+def test_with_the_node_switch_at_lss_the_change_does_not_move_it(qtbot, window, monkeypatch):
+    win, _rig = window
+    answers = record_prompts(monkeypatch)
+    win.doc._live["SWNODE"] = 1
+    win.doc.set_value("NODEID", 20)
+    assert answers.informed[-1].endswith(
+        "The node-ID switch is at position 1 (LSS): an LSS master sets node ID and bit rate "
+        "(manual table 7-17; Communication → CAN bus). NODEID and BITRATE apply at position 0 "
+        "only, so this change does not move the valve."
+    )
+
+
 def test_other_changes_are_not_warned_about(qtbot, window, monkeypatch):
     win, _rig = window
     answers = record_prompts(monkeypatch)

@@ -59,11 +59,12 @@ def test_watch_stream_values_keep_their_labels_when_the_chunk_changes(valve):
 def test_points_outside_the_oscilloscopes_stream_say_no_value_not_an_old_one(valve):
     """Issue 25 item 1: with the oscilloscope streaming three points, the diagram's other
     measuring points were left at the value they had before (0 mA on a fresh valve) while the
-    spool moved. They are reported as NaN (no value now) each poll; streamed ones are live."""
+    spool moved. A point the valve holds as an object (the control deviation) is read; the
+    others are reported as NaN (no value now) each poll; streamed ones are live."""
     with UsbSession(EmulatorTransport(valve), "emulator:test") as session:
         poller = Poller()
         poller.reset(session.info)
-        poller.watched = ["demand", "controller_output", "current_a", "pwm_a"]
+        poller.watched = ["demand", "controller_output", "current_a", "pwm_a", "position_deviation"]
         poller.poll(session, status=False, signals=True)  # the watch stream runs first
         valve.advance(0.15)
         poller.start_stream(session, ["demand", "position_actual", "current_a"], 1000)
@@ -71,7 +72,15 @@ def test_points_outside_the_oscilloscopes_stream_say_no_value_not_an_old_one(val
         valve.write(*CATALOGUE["SETPOVRON"].key, 1)
         valve.advance(0.3)
         values = poller.poll(session, status=False, signals=True).signals
-    assert set(values) == {"demand", "controller_output", "current_a", "pwm_a"}
+        deviation = valve.read(*CATALOGUE["CTRLDEV"].key)
+    assert set(values) == {
+        "demand",
+        "controller_output",
+        "current_a",
+        "pwm_a",
+        "position_deviation",
+    }
     assert math.isnan(values["controller_output"]) and math.isnan(values["pwm_a"])
+    assert values["position_deviation"] == deviation  # an object of the valve: read, live
     assert values["demand"] == valve.signal("demand") == 3277
     assert values["current_a"] == pytest.approx(valve.signal("current_a"), abs=40)

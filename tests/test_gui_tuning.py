@@ -35,8 +35,8 @@ def window(qtbot):
     w.close()
 
 
-def finish(qtbot, w: TuningWindow) -> None:
-    qtbot.waitUntil(lambda: not w.runner.busy, timeout=30000)
+def finish(qtbot, w: TuningWindow, timeout_s: float = 30.0) -> None:
+    qtbot.waitUntil(lambda: not w.runner.busy, timeout=round(timeout_s * 1000))
 
 
 def shot(w: TuningWindow, name: str) -> None:
@@ -44,13 +44,34 @@ def shot(w: TuningWindow, name: str) -> None:
         w.grab().save(str(Path(SHOTS) / f"tuning_{name}.png"))
 
 
-def test_model_autotune_proposes_and_accepts_as_one_undo_step(qtbot, window):
+def use_profile(window: TuningWindow, tmp_path: Path, text: str) -> None:
+    path = tmp_path / "profile.toml"
+    path.write_text(text)
+    window.report.profile_path.setText(str(path))
+
+
+def test_model_autotune_proposes_and_accepts_as_one_undo_step(qtbot, window, tmp_path):
+    """Issue 25 item 4: the proposal is checked against the acceptance profile (its steps both
+    ways and its static test) before it is offered; this one passes."""
+    use_profile(window, tmp_path, "[test]\nstep_amplitudes_pct = [25, 90]\nstatic_period_s = 4\n")
     assert "Offline" in window.mode.text()
     window.autotune.run_button.click()
+    assert window.progress.isVisible()  # a test with Stop and a progress bar
     finish(qtbot, window)
+    assert not window.progress.isVisible()
     page = window.autotune
-    assert "POSKP: 0.04 → " in page.result.text()
-    assert page.accept_button.isEnabled()
+    text = page.result.text()
+    assert "POSKP: 0.04 → " in text
+    assert "passes the acceptance profile" in text
+    assert "Step 0 → 50 %, window −20 … 120 ms — before:" in text
+    assert page.accept_button.isEnabled() and not page.override.isVisible()
+    names = [page.table.item(r, 0).text() for r in range(page.table.rowCount())]
+    assert "step 0 → −90 %: overshoot" in names and "hysteresis" in names, names
+    assert all(page.table.item(r, 4).text() != "FAIL" for r in range(page.table.rowCount()))
+    assert [p.title for p in page.plot.plots[1:]] == [
+        "Acceptance steps of 25 %",
+        "Acceptance steps of 90 %",
+    ]
     proposal = dict(page.proposal)
     assert proposal["POSKP"] != 4
     shot(window, "autotune")
@@ -62,6 +83,24 @@ def test_model_autotune_proposes_and_accepts_as_one_undo_step(qtbot, window):
     assert window.doc.value("POSKP") == 4
 
 
+def test_a_proposal_that_fails_the_profile_says_so_and_needs_accept_anyway(qtbot, window, tmp_path):
+    """On the emulator the spool hunts at 0 % (docs/emulator.md): a 5 % step overshoots the
+    default profile's 15 % with any gains. The autotune tries stricter targets, then shows
+    the best proposal in red with what it fails; Accept needs the explicit override."""
+    use_profile(window, tmp_path, "[test]\nstatic_period_s = 4\n")
+    window.autotune.run_button.click()
+    finish(qtbot, window)
+    page = window.autotune
+    text = page.result.text()
+    assert "fails the acceptance profile" in text and "step 0 → 5 %: overshoot" in text
+    assert "Tried before and failed the profile" in text
+    assert not page.accept_button.isEnabled() and page.override.isVisible()
+    assert "FAIL" in [page.table.item(r, 4).text() for r in range(page.table.rowCount())]
+    shot(window, "autotune_fails_profile")
+    page.override.setChecked(True)
+    assert page.accept_button.isEnabled()
+
+
 def test_critical_gain_method_shows_kkr_and_tkr(qtbot, window):
     window.autotune.method.setCurrentIndex(1)
     window.autotune.run_button.click()
@@ -71,7 +110,9 @@ def test_critical_gain_method_shows_kkr_and_tkr(qtbot, window):
     assert 4.4 <= kkr <= 5.4  # the direct sweep of test_characterize finds 4.9
     assert window.autotune.proposal["POSKP"] == round(kkr * 50)  # K = 0.5·Kkr, raw ×0.01
     # the proposal simulated on the emulator's firmware beside the measured before/after
-    assert "simulated on the emulator's firmware: overshoot" in text
+    assert "simulated on the emulator's firmware (as the controller dialog): overshoot" in text
+    # the rule's starting values ring: the profile check says so (Accept needs the override)
+    assert "fails the acceptance profile" in text and not window.autotune.accept_button.isEnabled()
     labels = [s.label for s in window.autotune.plot.plots[0].series]
     assert labels == ["before (measured)", "proposed (measured)", "proposed (simulated)"]
     simulated = window.autotune.plot.plots[0].series[2]
@@ -172,6 +213,62 @@ def test_online_a_test_asks_first_and_does_nothing_when_declined(qtbot, monkeypa
     assert connection.jobs == ["tuning:autotune"]
 
 
+def test_a_test_on_the_valve_says_that_it_stops_the_running_setpoint_generator(qtbot, monkeypatch):
+    """Issue 25 item 7: the autotune stopped a running generator without a word."""
+    from PySide6.QtCore import QObject, Signal
+
+    class Signals(QObject):
+        online_changed = Signal(bool)
+        operation_finished = Signal(str, object)
+        failed = Signal(str)
+        lost = Signal(str)
+
+    class Online:
+        is_online = True
+        device = None
+
+        def __init__(self):
+            self.streaming_keys: list[str] = []
+            self.signals = Signals()
+            for name in ("online_changed", "operation_finished", "failed", "lost"):
+                setattr(self, name, getattr(self.signals, name))
+            self.jobs: list[str] = []
+            self.generator_running = True
+
+        def run_job(self, name, work):
+            self.jobs.append(name)
+
+        def stop_generator(self):
+            self.generator_running = False
+
+    connection = Online()
+    w = TuningWindow(ParameterDocument(E02), connection)
+    qtbot.addWidget(w)
+    asked = []
+    monkeypatch.setattr(
+        QMessageBox, "question", lambda *a: asked.append(a[2]) or QMessageBox.StandardButton.Yes
+    )
+    w.autotune.run_button.click()
+    assert "setpoint generator is running: the test stops it" in asked[0]
+    assert not connection.generator_running and connection.jobs == ["tuning:autotune"]
+    assert w.status.text().startswith("The oscilloscope's setpoint generator was stopped")
+
+
+def test_the_end_of_line_test_shows_its_progress_and_stops(qtbot, window):
+    """Issue 25 item 7: the 31 s end-of-line run had no progress bar."""
+    window.tabs.setCurrentWidget(window.report)
+    window.report.run_button.click()
+    bar = window.progress
+    assert bar.isVisible() and bar.maximum() == 100
+    qtbot.waitUntil(lambda: bar.value() >= 20, timeout=30000)  # the steps and the sweep played
+    assert bar.value() <= 99
+    window.stop_button.click()
+    finish(qtbot, window)
+    assert not bar.isVisible()
+    assert window.status.text().startswith("Stopped: stopped by the user")
+    assert window.report.table.rowCount() == 0  # nothing half-measured is shown
+
+
 def test_the_position_controller_dialog_opens_the_tuning_window(qtbot):
     doc = ParameterDocument(E02)
     opened = []
@@ -183,7 +280,7 @@ def test_the_position_controller_dialog_opens_the_tuning_window(qtbot):
 
 
 def test_online_the_autotune_runs_on_the_connected_valve_and_leaves_it_as_it_was(
-    qtbot, monkeypatch
+    qtbot, monkeypatch, tmp_path
 ):
     from gui_support import emulator_connection
 
@@ -199,8 +296,11 @@ def test_online_the_autotune_runs_on_the_connected_valve_and_leaves_it_as_it_was
         qtbot.addWidget(w)
         assert "Online" in w.mode.text()
         monkeypatch.setattr(QMessageBox, "question", lambda *a: QMessageBox.StandardButton.Yes)
+        profile = tmp_path / "short.toml"  # real time: a short acceptance check
+        profile.write_text("[test]\nstep_amplitudes_pct = [25]\nstatic_period_s = 0.5\n")
+        w.report.profile_path.setText(str(profile))
         w.autotune.run_button.click()
-        finish(qtbot, w)
+        finish(qtbot, w, 120.0)  # real time: the tests, and a parameter exchange between them
         assert "POSKP: 0.4 → " in w.autotune.result.text(), w.status.text()
         valve = factory.emulated_valve(E02, 5101)
         for mnemonic, raw in {"POSKP": 40, "THRESETP": 819, "SETPOVRON": 0}.items():
@@ -295,14 +395,14 @@ def test_an_untrustworthy_fit_proposes_no_gains_without_an_explicit_override(
     """A fit error above the threshold (docs/tuning.md) disables Accept until the user insists."""
     from dataclasses import replace
 
-    import prm9tool.views.tuning.pages as pages
+    import prm9tool.characterize.acceptance as acceptance
     from prm9tool.characterize.autotune import model_tune
 
     def badly_fitted(*args, **kwargs):
         result = model_tune(*args, **kwargs)
         return replace(result, model=replace(result.model, fit_error=45.0))
 
-    monkeypatch.setattr(pages, "model_tune", badly_fitted)
+    monkeypatch.setattr(acceptance, "model_tune", badly_fitted)
     page = window.autotune
     page.run_button.click()
     finish(qtbot, window)

@@ -105,7 +105,7 @@ def test_a_refused_generator_write_stops_the_generator_and_says_why(
 
 
 def test_a_tuning_test_stops_the_generator_first_and_measures_a_real_step(
-    qtbot, window, monkeypatch
+    qtbot, window, monkeypatch, tmp_path
 ):
     """Autotune started while the generator drove the setpoint used to fit the generator's
     waveform (a model with a negative gain) and propose Kp 0.01, Ki 0."""
@@ -118,10 +118,13 @@ def test_a_tuning_test_stops_the_generator_first_and_measures_a_real_step(
     monkeypatch.setattr(QMessageBox, "question", lambda *a: QMessageBox.StandardButton.Yes)
     window.show_tuning_window("position")
     tuning = window.tuning_window
+    profile = tmp_path / "short.toml"  # the acceptance check in real time: keep it short
+    profile.write_text("[test]\nstep_amplitudes_pct = [25]\nstatic_period_s = 0.5\n")
+    tuning.report.profile_path.setText(str(profile))
     tuning.autotune.run_button.click()
     assert not scope.generator.running
     assert "another operation" in scope.status.text()
-    qtbot.waitUntil(lambda: not tuning.runner.busy, timeout=30_000)
-    assert "Before: overshoot" in tuning.autotune.result.text(), tuning.autotune.result.text()
+    qtbot.waitUntil(lambda: not tuning.runner.busy, timeout=120_000)
+    assert "— before: overshoot" in tuning.autotune.result.text(), tuning.autotune.result.text()
     assert _override_on(valve) == 0
     assert not scope.running and "recording stopped" in scope.status.text()

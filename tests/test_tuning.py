@@ -107,3 +107,26 @@ def test_a_refused_parameter_is_reported(qtbot):
 def test_an_unknown_loop_is_refused():
     with pytest.raises(ValueError, match="unknown loop"):
         StepSimulator(E02, {}, "pressure")
+
+
+def test_the_dialog_and_the_autotune_give_the_same_figures_for_the_same_gains():
+    """Issue 25 item 5: the dialog said 0.9 % / 13.6 ms where the autotune said 0.0 % / 17.2 ms
+    for the same gains (another stimulus, a 60 ms window). Now both take the autotune's step."""
+    from prm9tool.characterize.autotune import simulate_steps
+    from prm9tool.characterize.procedures import STEP_PRE_S, STEP_WINDOW_S
+    from prm9tool.characterize.rig import EmulatorRig
+    from prm9tool.device.emulator import EmulatedValve
+
+    gains = {"POSKP": 44, "POSKI": 1031, "POSKD": 44, "POST1": 20}
+    dialog = simulate_step(E02, {**defaults(E02), **gains}, "position")
+    _, autotune = simulate_steps(EmulatorRig(EmulatedValve(E02)), "position", gains, 50.0, 0.12)
+    assert autotune.figures is not None
+    shown = dialog.measured()
+    assert shown is not None
+    assert shown.overshoot == pytest.approx(autotune.figures.overshoot, abs=1e-9)
+    assert shown.settling_time == pytest.approx(autotune.figures.settling_time, abs=1e-9)
+    assert shown.rise_time == pytest.approx(autotune.figures.rise_time, abs=1e-9)
+    assert dialog.t[0] == pytest.approx(-STEP_PRE_S)
+    assert dialog.t[-1] == pytest.approx(STEP_WINDOW_S["position"], abs=0.001)
+    assert dialog.summary().startswith("Step 0 → 50 %, window −20 … 120 ms: overshoot ")
+    assert str(autotune.caption()) == "Step 0 → 50 %, window −20 … 120 ms"

@@ -6,7 +6,9 @@ Usage (from the repository root)::
 
 Real, on a virtual bus: an emulated E04 -CA valve (node 10, heartbeat 100 ms) in real time, a
 node that is not a PRM9 (node 5), and a node that boots, beats a few times, sends an EMCY and
-goes silent (node 20). The dialog searches the bus; its monitor then keeps the table live.
+goes silent (node 20), and two valves at node-ID switch 1 (LSS) without a node ID, which the
+dialog lists under "devices without a node ID". The dialog searches the bus; its monitor then
+keeps the table live.
 """
 
 from __future__ import annotations
@@ -30,6 +32,7 @@ from prm9tool.device.canlink.bus import CanOptions
 from prm9tool.device.emulator import EmulatedValve
 from prm9tool.online.bus_monitor import BusMonitor
 from prm9tool.online.connection import ValveConnection
+from prm9tool.online.lss_commissioning import LssCommissioning
 from prm9tool.views.can_bus_dialog import CanBusDialog
 
 CHANNEL = "prm9tool-screenshot"
@@ -45,6 +48,12 @@ def main(output: Path) -> None:
     valve.advance(2.0)
     valve.start()
     valve.write(0x1017, 0, 100)
+    unconfigured = []
+    for serial in (4801, 4802):  # node-ID switch at 1: LSS, no node ID yet
+        lss_valve = EmulatedValve("PRM9-06.3Z11/30-24E02S02-CA", serial, switches=(6, 1))
+        lss_bus = can.Bus(interface="virtual", channel=CHANNEL)
+        unconfigured.append((lss_valve, lss_valve.connect_can(lss_bus), lss_bus))
+        lss_valve.start()
     other = canopen.Network()
     other.connect(interface="virtual", channel=CHANNEL)
     od = canopen.ObjectDictionary()
@@ -62,12 +71,16 @@ def main(output: Path) -> None:
         settings,
         None,
         monitor,
+        LssCommissioning(),
     )
     dialog.interface.setCurrentText("virtual")
     dialog.channel.setText(CHANNEL)
     dialog.show()
     dialog.search.click()
     _spin(app, lambda: dialog.search.isEnabled() and dialog.table.rowCount() >= 2, 10)
+    panel = dialog.lss_panel
+    assert panel is not None
+    _spin(app, lambda: panel.table.rowCount() == 2 and panel.look.isEnabled(), 60)
     raw.send(can.Message(arbitration_id=0x714, data=[0], is_extended_id=False))
     for _ in range(4):
         time.sleep(0.1)
@@ -82,6 +95,10 @@ def main(output: Path) -> None:
     _spin(app, lambda: False, 0.3)
     for closing in (raw.shutdown, other.disconnect, valve.stop, slave.stop, valve_bus.shutdown):
         closing()
+    for lss_valve, lss_slave, lss_bus in unconfigured:
+        lss_valve.stop()
+        lss_slave.stop()
+        lss_bus.shutdown()
     connection.shutdown()
     print(f"wrote {output}")  # noqa: T201
 

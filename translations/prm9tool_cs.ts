@@ -57,17 +57,17 @@ Poslední akce možná nebyla dokončena. Uložte svou práci pod novým názvem
             <source>The model fits the measurement badly (fit error {0} %, at most {1} %).</source>
             <translation>Model špatně odpovídá měření (chyba přizpůsobení {0} %, nejvýše {1} %).</translation>
         </message>
+        <message>
+            <source>The proposal passes the acceptance profile “{0}” (its steps both ways and the static test).</source>
+            <translation>Návrh splňuje přejímací profil „{0}“ (jeho skoky oběma směry a statickou zkoušku).</translation>
+        </message>
+        <message>
+            <source>The proposal fails the acceptance profile “{0}”: {1}. Do not accept it unchecked.</source>
+            <translation>Návrh nesplňuje přejímací profil „{0}“: {1}. Nepřebírejte jej bez kontroly.</translation>
+        </message>
     </context>
     <context>
         <name>AutotunePage</name>
-        <message>
-            <source>steps of %1 % from 0 %, a few times, about %2 s in all</source>
-            <translation>několik skoků o %1 % od 0 %, celkem asi %2 s</translation>
-        </message>
-        <message>
-            <source>P only with rising gain until the loop oscillates (steps of 5 %, oscillation stopped at ±%1 %), about 5 s</source>
-            <translation>pouze P se stoupajícím zesílením, dokud se smyčka nerozkmitá (skoky 5 %, kmitání přerušeno při ±%1 %), asi 5 s</translation>
-        </message>
         <message>
             <source>Model: gain %1, lags %2 ms, dead time %3 ms (fit error %4 %).</source>
             <translation>Model: zesílení %1, zpoždění %2 ms, dopravní zpoždění %3 ms (chyba proložení %4 %).</translation>
@@ -75,10 +75,6 @@ Poslední akce možná nebyla dokončena. Uložte svou práci pod novým názvem
         <message>
             <source>Critical gain Kkr = %1, period Tkr = %2 ms: K = 0.5·Kkr, Ti = 0.8·Tkr, Td = 0.12·Tkr.</source>
             <translation>Kritické zesílení Kkr = %1, perioda Tkr = %2 ms: K = 0.5·Kkr, Ti = 0.8·Tkr, Td = 0.12·Tkr.</translation>
-        </message>
-        <message>
-            <source>Proposed, simulated on the emulator's firmware: %1.</source>
-            <translation>Návrh, simulovaný na firmwaru emulátoru: %1.</translation>
         </message>
         <message>
             <source>Do not accept these gains: the identification is not trustworthy.</source>
@@ -97,10 +93,6 @@ Poslední akce možná nebyla dokončena. Uložte svou práci pod novým názvem
             <translation>návrh (simulováno)</translation>
         </message>
         <message>
-            <source>Step response</source>
-            <translation>Přechodová charakteristika</translation>
-        </message>
-        <message>
             <source>time [ms]</source>
             <translation>čas [ms]</translation>
         </message>
@@ -113,8 +105,40 @@ Poslední akce možná nebyla dokončena. Uložte svou práci pod novým názvem
             <translation>překmit %1 %, ustálení %2</translation>
         </message>
         <message>
-            <source>Before: %1. Proposed: %2.</source>
-            <translation>Před: %1. Návrh: %2.</translation>
+            <source>%1 — before: %2; proposed: %3.</source>
+            <translation>%1 — před: %2; návrh: %3.</translation>
+        </message>
+        <message>
+            <source>steps of %1 % from 0 %, a few times</source>
+            <translation>několik skoků z 0 % o %1 %</translation>
+        </message>
+        <message>
+            <source>P only with rising gain until the loop oscillates (steps of 5 %, oscillation stopped at ±%1 %)</source>
+            <translation>jen P složka s rostoucím zesílením, dokud smyčka nekmitá (skoky 5 %, kmitání zastaveno při ±%1 %)</translation>
+        </message>
+        <message>
+            <source>; then the acceptance profile's steps of %1 % and its static test (a triangle of %2 s) with the present and the proposed gains; about %3 s in all</source>
+            <translation>; potom skoky přejímacího profilu o %1 % a jeho statická zkouška (trojúhelník %2 s) se stávajícím a navrženým zesílením; celkem asi %3 s</translation>
+        </message>
+        <message>
+            <source>Proposed, simulated on the emulator's firmware (as the controller dialog): %1.</source>
+            <translation>Návrh simulovaný firmwarem emulátoru (jako v dialogu regulátoru): %1.</translation>
+        </message>
+        <message>
+            <source>Tried before and failed the profile: %1 (%2).</source>
+            <translation>Dříve zkoušeno, profil nesplněn: %1 (%2).</translation>
+        </message>
+        <message>
+            <source>%1 before</source>
+            <translation>%1 před</translation>
+        </message>
+        <message>
+            <source>%1 proposed</source>
+            <translation>%1 návrh</translation>
+        </message>
+        <message>
+            <source>Acceptance steps of %1 %</source>
+            <translation>Přejímací skoky o %1 %</translation>
         </message>
         <message>
             <source>Autotune</source>
@@ -159,6 +183,26 @@ Poslední akce možná nebyla dokončena. Uložte svou práci pod novým názvem
         <message>
             <source>Accept anyway (I checked the measurement)</source>
             <translation>Přesto převzít (měření jsem zkontroloval)</translation>
+        </message>
+        <message>
+            <source>Figure</source>
+            <translation>Ukazatel</translation>
+        </message>
+        <message>
+            <source>Before</source>
+            <translation>Před</translation>
+        </message>
+        <message>
+            <source>Proposed</source>
+            <translation>Návrh</translation>
+        </message>
+        <message>
+            <source>Limit</source>
+            <translation>Mez</translation>
+        </message>
+        <message>
+            <source>Result</source>
+            <translation>Výsledek</translation>
         </message>
     </context>
     <context>
@@ -217,6 +261,81 @@ Poslední akce možná nebyla dokončena. Uložte svou práci pod novým názvem
         <message>
             <source>The link's sample rate limited the sweep to %1 Hz (nothing interpolated).</source>
             <translation>Vzorkovací frekvence spojení omezila rozmítání na %1 Hz (nic nebylo interpolováno).</translation>
+        </message>
+    </context>
+    <context>
+        <name>BusLssActions</name>
+        <message>
+            <source>Find bit rate</source>
+            <translation>Zjistit přenosovou rychlost</translation>
+        </message>
+        <message>
+            <source>Listen at each bit rate in listen-only mode (nothing is sent)</source>
+            <translation>Naslouchat při každé přenosové rychlosti v režimu pouze poslech (nic se neodesílá)</translation>
+        </message>
+        <message>
+            <source>Change node ID by LSS…</source>
+            <translation>Změnit Node ID pomocí LSS…</translation>
+        </message>
+        <message>
+            <source>Change bit rate by LSS…</source>
+            <translation>Změnit přenosovou rychlost pomocí LSS…</translation>
+        </message>
+        <message>
+            <source>Listening at each bit rate (listen-only: nothing is sent)…</source>
+            <translation>Naslouchá se při každé přenosové rychlosti (pouze poslech: nic se neodesílá)…</translation>
+        </message>
+        <message>
+            <source>none identified</source>
+            <translation>žádný nerozpoznán</translation>
+        </message>
+        <message>
+            <source>The bus runs at {0} kbit/s (frames from nodes: {1}). Search the bus.</source>
+            <translation>Sběrnice běží rychlostí {0} kbit/s (rámce od uzlů: {1}). Prohledejte sběrnici.</translation>
+        </message>
+        <message>
+            <source>Change node ID by LSS</source>
+            <translation>Změnit Node ID pomocí LSS</translation>
+        </message>
+        <message>
+            <source>New node ID for serial {0}, now {1} (1…127):</source>
+            <translation>Nové Node ID pro sériové číslo {0}, nyní {1} (1…127):</translation>
+        </message>
+        <message>
+            <source>Node ID {0} is taken: a node answers there. Choose another one.</source>
+            <translation>Node ID {0} je obsazené: na něm odpovídá uzel. Zvolte jiné.</translation>
+        </message>
+        <message>
+            <source>Serial {0} will answer at node {2} instead of {1}, stored in the valve (its node-ID switch must be at 1: LSS). prm9tool's own link moves with it: a connection to can:{1} ends, and prm9tool goes online with can:{2}. A PLC that addresses node {1} no longer reaches the valve. Change it?</source>
+            <translation>Sériové číslo {0} pak odpovídá jako uzel {2} místo {1}, uloženo ve ventilu (jeho přepínač Node ID musí být v poloze 1: LSS). Vlastní spojení prm9tool se přesune s ním: spojení s can:{1} skončí a prm9tool přejde do režimu online s can:{2}. PLC, které adresuje uzel {1}, ventil již nezastihne. Změnit?</translation>
+        </message>
+        <message>
+            <source>Changing the node ID of serial {0} to {1}…</source>
+            <translation>Node ID sériového čísla {0} se mění na {1}…</translation>
+        </message>
+        <message>
+            <source>Change bit rate by LSS</source>
+            <translation>Změnit přenosovou rychlost pomocí LSS</translation>
+        </message>
+        <message>
+            <source>New bit rate of the bus:</source>
+            <translation>Nová přenosová rychlost sběrnice:</translation>
+        </message>
+        <message>
+            <source>Every valve at node-ID switch 1 (LSS) switches from {1} kbit/s to {0} kbit/s together and stores it. Nodes whose switches set the bit rate (node-ID switch 0 or 2…F) and the PLC keep {1} kbit/s: set them too before the machine runs again, or the bus stops working. prm9tool's own link moves to {0} kbit/s. Change the bit rate?</source>
+            <translation>Všechny ventily s přepínačem Node ID v poloze 1 (LSS) přejdou společně z {1} kbit/s na {0} kbit/s a uloží to. Uzly, jejichž přepínače určují přenosovou rychlost (přepínač Node ID 0 nebo 2…F), a PLC zůstanou na {1} kbit/s: přestavte je také, než stroj znovu poběží, jinak sběrnice přestane fungovat. Vlastní spojení prm9tool přejde na {0} kbit/s. Změnit přenosovou rychlost?</translation>
+        </message>
+        <message>
+            <source>Changing the bit rate to {0} kbit/s by LSS…</source>
+            <translation>Přenosová rychlost se mění pomocí LSS na {0} kbit/s…</translation>
+        </message>
+        <message>
+            <source>{0} valve(s) switched to {1} kbit/s. prm9tool cannot change the bit rate of a socketcan interface: sudo ip link set {2} down &amp;&amp; sudo ip link set {2} up type can bitrate {3}, then search the bus.</source>
+            <translation>Ventily přepnuté na {1} kbit/s: {0}. prm9tool nemůže změnit přenosovou rychlost rozhraní socketcan: sudo ip link set {2} down &amp;&amp; sudo ip link set {2} up type can bitrate {3}, pak prohledejte sběrnici.</translation>
+        </message>
+        <message>
+            <source>{0} valve(s) switched to {1} kbit/s; prm9tool follows.</source>
+            <translation>Ventily přepnuté na {1} kbit/s: {0}; prm9tool je následuje.</translation>
         </message>
     </context>
     <context>
@@ -328,6 +447,10 @@ Poslední akce možná nebyla dokončena. Uložte svou práci pod novým názvem
         <message>
             <source>The bus cannot be watched: {0}</source>
             <translation>Sběrnici nelze sledovat: {0}</translation>
+        </message>
+        <message>
+            <source>The valve (serial number {0}) does not tell its type key, and its objects do not tell E02 from E04 (-CA). Type key on the valve's label:</source>
+            <translation>Ventil (výrobní číslo {0}) neuvádí svůj typový klíč a jeho objekty nerozliší E02 od E04 (-CA). Typový klíč ze štítku ventilu:</translation>
         </message>
         <message>
             <source>Type key of the valve</source>
@@ -624,6 +747,10 @@ Poslední akce možná nebyla dokončena. Uložte svou práci pod novým názvem
             <source>the process controller's Kp is 0: the spool would not move</source>
             <translation>Kp procesního regulátoru je 0: šoupátko by se nepohnulo</translation>
         </message>
+        <message>
+            <source>this valve has no object for {0} on this link (their addresses are this project's, not the manual's): the tuning cannot change them here; nothing was changed — tune these over USB</source>
+            <translation>tento ventil nemá na tomto spojení objekt pro {0} (jejich adresy jsou adresami tohoto projektu, ne příručky): ladění je zde nemůže změnit; nic nebylo změněno — nalaďte je přes USB</translation>
+        </message>
     </context>
     <context>
         <name>CommissioningPanel</name>
@@ -690,6 +817,14 @@ Poslední akce možná nebyla dokončena. Uložte svou práci pod novým názvem
             <source>The valve variants differ: only the parameters both have are compared; {0} parameters that one side lacks are left out.</source>
             <translation>Varianty ventilů se liší: porovnávají se jen parametry, které mají obě strany; {0} parametrů, které jedné straně chybí, je vynecháno.</translation>
         </message>
+        <message>
+            <source>not on this valve</source>
+            <translation>ve ventilu není</translation>
+        </message>
+        <message>
+            <source>not on the valve it was read from</source>
+            <translation>není ve ventilu, ze kterého byl načten</translation>
+        </message>
     </context>
     <context>
         <name>CompareDialog</name>
@@ -750,6 +885,14 @@ Poslední akce možná nebyla dokončena. Uložte svou práci pod novým názvem
             </translation>
         </message>
         <message numerus="yes">
+            <source>%n parameter(s) not on the valve, not compared</source>
+            <translation>
+                <numerusform>%n parametr není ve ventilu, neporovnán</numerusform>
+                <numerusform>%n parametry nejsou ve ventilu, neporovnány</numerusform>
+                <numerusform>%n parametrů není ve ventilu, neporovnáno</numerusform>
+            </translation>
+        </message>
+        <message numerus="yes">
             <source>%n shown</source>
             <translation>
                 <numerusform>%n zobrazen</numerusform>
@@ -771,6 +914,10 @@ Poslední akce možná nebyla dokončena. Uložte svou práci pod novým názvem
         <message>
             <source>One side's valve type has no such parameter; it cannot be chosen.</source>
             <translation>Typ ventilu jedné strany tento parametr nemá; nelze jej zvolit.</translation>
+        </message>
+        <message>
+            <source>The valve type has this parameter, but the valve does not (a valve over CANopen without this object): not compared, not a difference; it cannot be chosen.</source>
+            <translation>Typ ventilu tento parametr má, ventil však ne (ventil přes CANopen bez tohoto objektu): neporovnává se, není to rozdíl; nelze jej zvolit.</translation>
         </message>
     </context>
     <context>
@@ -1378,6 +1525,18 @@ Poslední akce možná nebyla dokončena. Uložte svou práci pod novým názvem
             <source>The valve reads its rotary switches at power-up only: restart it (Valve → Restart valve) for a new position to apply. The setpoint input counts only while the valve takes its setpoint from the analog input (no CANopen, no setpoint generator).</source>
             <translation>Ventil čte své otočné přepínače jen po zapnutí: restartujte ho (Ventil → Restart ventilu), aby platila nová poloha. Vstup žádané hodnoty platí jen tehdy, když ventil bere žádanou hodnotu z analogového vstupu (bez CANopen, bez generátoru žádané hodnoty).</translation>
         </message>
+        <message>
+            <source>node ID and bit rate by software (NODEID, BITRATE)</source>
+            <translation>Node ID a přenosová rychlost softwarem (NODEID, BITRATE)</translation>
+        </message>
+        <message>
+            <source>LSS: node ID from an LSS master, automatic bit rate</source>
+            <translation>LSS: Node ID od LSS mastera, automatická přenosová rychlost</translation>
+        </message>
+        <message>
+            <source>node {0}</source>
+            <translation>uzel {0}</translation>
+        </message>
     </context>
     <context>
         <name>EmulatedValveMenu</name>
@@ -1478,6 +1637,18 @@ Poslední akce možná nebyla dokončena. Uložte svou práci pod novým názvem
         <message>
             <source>The link could not keep the test's sample rate.</source>
             <translation>Spojení nedokázalo udržet vzorkovací frekvenci testu.</translation>
+        </message>
+        <message>
+            <source>Node ID assignment (LSS) did not complete.</source>
+            <translation>Přidělení Node ID (LSS) nebylo dokončeno.</translation>
+        </message>
+        <message>
+            <source>The bit rate cannot be found without transmitting on this adapter.</source>
+            <translation>S tímto adaptérem nelze přenosovou rychlost zjistit bez vysílání.</translation>
+        </message>
+        <message>
+            <source>No bit rate gave valid frames.</source>
+            <translation>Při žádné přenosové rychlosti nepřišly platné rámce.</translation>
         </message>
     </context>
     <context>
@@ -2012,8 +2183,115 @@ Ano načte a záznam zařadí do fronty; Ne nenačte nic.</translation>
             <translation>Přepínač ID uzlu je v poloze {0}: ID uzlu a přenosovou rychlost určují přepínače (návod, tabulka 7-17), tato změna tedy ventil nepřesune; zůstává uzlem {1}.</translation>
         </message>
         <message>
+            <source>The node-ID switch is at position 1 (LSS): an LSS master sets node ID and bit rate (manual table 7-17; Communication → CAN bus). NODEID and BITRATE apply at position 0 only, so this change does not move the valve.</source>
+            <translation>Přepínač Node ID je v poloze 1 (LSS): Node ID a přenosovou rychlost nastavuje LSS master (návod, tabulka 7-17; Komunikace → CAN sběrnice). NODEID a BITRATE platí jen v poloze 0, tato změna tedy ventil nepřesune.</translation>
+        </message>
+        <message>
             <source>After the valve's next power-up or restart it answers at node {0}, {1}. Store the change and restart the valve from prm9tool (Valve → Restart valve): prm9tool then finds it there again — where it cannot change the adapter's bit rate itself (SocketCAN), it says how. After a power-up, find it under Communication → CAN bus (node {0}, bit rate {1}).</source>
             <translation>Po příštím zapnutí nebo restartu ventil odpovídá jako uzel {0}, {1}. Uložte změnu a restartujte ventil z prm9tool (Ventil → Restart ventilu): prm9tool ho tam pak znovu najde — kde rychlost adaptéru sám změnit nemůže (SocketCAN), řekne jak. Po zapnutí ho najděte v Komunikace → Sběrnice CAN (uzel {0}, rychlost {1}).</translation>
+        </message>
+    </context>
+    <context>
+        <name>LssPanel</name>
+        <message>
+            <source>Devices without a node ID (node-ID switch at 1: LSS)</source>
+            <translation>Zařízení bez Node ID (přepínač Node ID v poloze 1: LSS)</translation>
+        </message>
+        <message>
+            <source>Serial</source>
+            <translation>Sériové číslo</translation>
+        </message>
+        <message>
+            <source>Device</source>
+            <translation>Zařízení</translation>
+        </message>
+        <message>
+            <source>Vendor ID</source>
+            <translation>Vendor ID</translation>
+        </message>
+        <message>
+            <source>Product code</source>
+            <translation>Produktový klíč</translation>
+        </message>
+        <message>
+            <source>Revision</source>
+            <translation>Revize</translation>
+        </message>
+        <message>
+            <source>Look for devices without a node ID</source>
+            <translation>Hledat zařízení bez Node ID</translation>
+        </message>
+        <message>
+            <source>Assign node ID…</source>
+            <translation>Přidělit Node ID…</translation>
+        </message>
+        <message>
+            <source>Assign node IDs to all…</source>
+            <translation>Přidělit Node ID všem…</translation>
+        </message>
+        <message>
+            <source>Looking for devices without a node ID (LSS Fastscan)…</source>
+            <translation>Hledají se zařízení bez Node ID (LSS Fastscan)…</translation>
+        </message>
+        <message>
+            <source>PRM9</source>
+            <translation>PRM9</translation>
+        </message>
+        <message>
+            <source>not a PRM9</source>
+            <translation>není PRM9</translation>
+        </message>
+        <message numerus="yes">
+            <source>%n device(s) without a node ID.</source>
+            <translation>
+                <numerusform>%n zařízení bez Node ID.</numerusform>
+                <numerusform>%n zařízení bez Node ID.</numerusform>
+                <numerusform>%n zařízení bez Node ID.</numerusform>
+            </translation>
+        </message>
+        <message>
+            <source>No device without a node ID answered: every device has one, or none is at node-ID switch 1, or the bus runs at another bit rate.</source>
+            <translation>Neodpovědělo žádné zařízení bez Node ID: každé zařízení ho má, žádné nemá přepínač Node ID v poloze 1, nebo sběrnice běží jinou přenosovou rychlostí.</translation>
+        </message>
+        <message>
+            <source>Assign node ID</source>
+            <translation>Přidělit Node ID</translation>
+        </message>
+        <message>
+            <source>Node ID for serial {0} (1…127; stored in the valve, used from now on and after every power-up):</source>
+            <translation>Node ID pro sériové číslo {0} (1…127; uloží se do ventilu, platí ihned i po každém zapnutí):</translation>
+        </message>
+        <message>
+            <source>Node ID {0} is taken: a node answers there. Choose another one.</source>
+            <translation>Node ID {0} je obsazené: na něm odpovídá uzel. Zvolte jiné.</translation>
+        </message>
+        <message>
+            <source>Giving serial {0} node ID {1} and storing it…</source>
+            <translation>Sériové číslo {0} dostává Node ID {1} a ukládá ho…</translation>
+        </message>
+        <message>
+            <source>Assign node IDs to all</source>
+            <translation>Přidělit Node ID všem</translation>
+        </message>
+        <message>
+            <source>First node ID: the {0} valves get consecutive free node IDs from it, in the order of their serial numbers (stored in each valve):</source>
+            <translation>První Node ID: {0} ventilů dostane od něj po sobě jdoucí volná Node ID v pořadí sériových čísel (uloží se do každého ventilu):</translation>
+        </message>
+        <message>
+            <source>From node ID {0} on there are only {1} free node IDs for {2} valves.</source>
+            <translation>Od Node ID {0} je volných jen {1} Node ID pro {2} ventilů.</translation>
+        </message>
+        <message>
+            <source>Giving node IDs: {0}…</source>
+            <translation>Přidělují se Node ID: {0}…</translation>
+        </message>
+        <message>
+            <source>Given and stored: {0}. Searching the bus again…</source>
+            <translation>Přiděleno a uloženo: {0}. Sběrnice se prohledává znovu…</translation>
+        </message>
+        <message>
+            <source>Serial {0} answers as {1} (stored). Going online with it…</source>
+            <translation>Sériové číslo {0} odpovídá jako {1} (uloženo). Přechod do režimu online…</translation>
         </message>
     </context>
     <context>
@@ -3308,6 +3586,21 @@ Ano načte a záznam zařadí do fronty; Ne nenačte nic.</translation>
         </message>
     </context>
     <context>
+        <name>StepFigures</name>
+        <message>
+            <source>did not settle within ±{0} % of the step: oscillation of {1} at {2} Hz</source>
+            <translation>neustálilo se v pásmu ±{0} % skoku: kmitání {1} při {2} Hz</translation>
+        </message>
+        <message>
+            <source>did not settle within ±{0} % of the step: still moving by {1} at the end</source>
+            <translation>neustálilo se v pásmu ±{0} % skoku: na konci se ještě mění o {1}</translation>
+        </message>
+        <message>
+            <source>Step {0} → {1} %, window {2} … {3} ms</source>
+            <translation>Skok {0} → {1} %, okno {2} … {3} ms</translation>
+        </message>
+    </context>
+    <context>
         <name>StepPanel</name>
         <message>
             <source>Step response</source>
@@ -3362,10 +3655,6 @@ Ano načte a záznam zařadí do fronty; Ne nenačte nic.</translation>
             <translation>V {0} nebyl nalezen žádný skok.</translation>
         </message>
         <message>
-            <source>not settled in the window</source>
-            <translation>v okně neustáleno</translation>
-        </message>
-        <message>
             <source>Measured on {0}.</source>
             <translation>Měřeno na {0}.</translation>
         </message>
@@ -3389,8 +3678,8 @@ Ano načte a záznam zařadí do fronty; Ne nenačte nic.</translation>
             <translation>nedosaženo</translation>
         </message>
         <message>
-            <source>Step %1 %: overshoot %2 %, rise time %3, settling (±2 %) %4, remaining error %5 %</source>
-            <translation>Skok %1 %: překmit %2 %, doba náběhu %3, ustálení (±2 %) %4, zbývající odchylka %5 %</translation>
+            <source>{0}: overshoot {1} %, rise time {2}, settling (±2 %) {3}, remaining error {4} %</source>
+            <translation>{0}: překmit {1} %, doba náběhu {2}, ustálení (±2 %) {3}, zbývající odchylka {4} %</translation>
         </message>
     </context>
     <context>
@@ -3457,6 +3746,10 @@ Ano načte a záznam zařadí do fronty; Ne nenačte nic.</translation>
         <message>
             <source>dead band</source>
             <translation>pásmo necitlivosti</translation>
+        </message>
+        <message>
+            <source>step %1 → %2 %: %3</source>
+            <translation>skok %1 → %2 %: %3</translation>
         </message>
         <message>
             <source>step %1 %: %2</source>
@@ -3632,6 +3925,14 @@ Zajistěte, aby to hydraulika bezpečně snesla. Tlačítko Stop test kdykoli uk
         <message>
             <source>Tuning</source>
             <translation>Ladění</translation>
+        </message>
+        <message>
+            <source>The oscilloscope's setpoint generator was stopped for the test.</source>
+            <translation>Generátor žádané hodnoty osciloskopu byl kvůli zkoušce zastaven.</translation>
+        </message>
+        <message>
+            <source>The oscilloscope's setpoint generator is running: the test stops it (start it again afterwards).</source>
+            <translation>Generátor žádané hodnoty osciloskopu běží: zkouška jej zastaví (poté jej spusťte znovu).</translation>
         </message>
         <message>
             <source>Stopping…</source>
@@ -4181,6 +4482,18 @@ Zajistěte, aby to hydraulika bezpečně snesla. Tlačítko Stop test kdykoli uk
                 <numerusform>%n parametry znovu zapsány, ověřeny a uloženy v {0}: ventil je již obsahoval</numerusform>
                 <numerusform>%n parametrů znovu zapsáno, ověřeno a uloženo v {0}: ventil je již obsahoval</numerusform>
             </translation>
+        </message>
+        <message>
+            <source>stored with 0x1010</source>
+            <translation>uloženo pomocí 0x1010</translation>
+        </message>
+        <message>
+            <source>kept by the valve as written (it has no store command)</source>
+            <translation>ventil si hodnoty ponechal tak, jak byly zapsány (nemá příkaz k uložení)</translation>
+        </message>
+        <message>
+            <source>verified after a restart</source>
+            <translation>ověřeno po restartu</translation>
         </message>
         <message>
             <source>Upload failed</source>

@@ -57,17 +57,17 @@ Die letzte Aktion wurde womöglich nicht vollständig ausgeführt. Speichern Sie
             <source>The model fits the measurement badly (fit error {0} %, at most {1} %).</source>
             <translation>Das Modell passt schlecht zur Messung (Anpassungsfehler {0} %, höchstens {1} %).</translation>
         </message>
+        <message>
+            <source>The proposal passes the acceptance profile “{0}” (its steps both ways and the static test).</source>
+            <translation>Der Vorschlag besteht das Abnahmeprofil „{0}“ (seine Sprünge in beide Richtungen und die statische Prüfung).</translation>
+        </message>
+        <message>
+            <source>The proposal fails the acceptance profile “{0}”: {1}. Do not accept it unchecked.</source>
+            <translation>Der Vorschlag besteht das Abnahmeprofil „{0}“ nicht: {1}. Nicht ungeprüft übernehmen.</translation>
+        </message>
     </context>
     <context>
         <name>AutotunePage</name>
-        <message>
-            <source>steps of %1 % from 0 %, a few times, about %2 s in all</source>
-            <translation>einige Sprünge von %1 % ab 0 %, insgesamt etwa %2 s</translation>
-        </message>
-        <message>
-            <source>P only with rising gain until the loop oscillates (steps of 5 %, oscillation stopped at ±%1 %), about 5 s</source>
-            <translation>nur P mit steigender Verstärkung, bis der Kreis schwingt (Sprünge von 5 %, Schwingung bei ±%1 % abgebrochen), etwa 5 s</translation>
-        </message>
         <message>
             <source>Model: gain %1, lags %2 ms, dead time %3 ms (fit error %4 %).</source>
             <translation>Modell: Verstärkung %1, Verzögerungen %2 ms, Totzeit %3 ms (Anpassungsfehler %4 %).</translation>
@@ -75,10 +75,6 @@ Die letzte Aktion wurde womöglich nicht vollständig ausgeführt. Speichern Sie
         <message>
             <source>Critical gain Kkr = %1, period Tkr = %2 ms: K = 0.5·Kkr, Ti = 0.8·Tkr, Td = 0.12·Tkr.</source>
             <translation>Kritische Verstärkung Kkr = %1, Periode Tkr = %2 ms: K = 0.5·Kkr, Ti = 0.8·Tkr, Td = 0.12·Tkr.</translation>
-        </message>
-        <message>
-            <source>Proposed, simulated on the emulator's firmware: %1.</source>
-            <translation>Vorschlag, simuliert mit der Firmware des Emulators: %1.</translation>
         </message>
         <message>
             <source>Do not accept these gains: the identification is not trustworthy.</source>
@@ -97,10 +93,6 @@ Die letzte Aktion wurde womöglich nicht vollständig ausgeführt. Speichern Sie
             <translation>Vorschlag (simuliert)</translation>
         </message>
         <message>
-            <source>Step response</source>
-            <translation>Sprungantwort</translation>
-        </message>
-        <message>
             <source>time [ms]</source>
             <translation>Zeit [ms]</translation>
         </message>
@@ -113,8 +105,40 @@ Die letzte Aktion wurde womöglich nicht vollständig ausgeführt. Speichern Sie
             <translation>Überschwingen %1 %, Ausregelzeit %2</translation>
         </message>
         <message>
-            <source>Before: %1. Proposed: %2.</source>
-            <translation>Vorher: %1. Vorschlag: %2.</translation>
+            <source>%1 — before: %2; proposed: %3.</source>
+            <translation>%1 — vorher: %2; Vorschlag: %3.</translation>
+        </message>
+        <message>
+            <source>steps of %1 % from 0 %, a few times</source>
+            <translation>einige Sprünge von 0 % um %1 %</translation>
+        </message>
+        <message>
+            <source>P only with rising gain until the loop oscillates (steps of 5 %, oscillation stopped at ±%1 %)</source>
+            <translation>nur P-Anteil mit steigender Verstärkung, bis der Regelkreis schwingt (Sprünge von 5 %, Abbruch bei ±%1 %)</translation>
+        </message>
+        <message>
+            <source>; then the acceptance profile's steps of %1 % and its static test (a triangle of %2 s) with the present and the proposed gains; about %3 s in all</source>
+            <translation>; danach die Sprünge des Abnahmeprofils um %1 % und seine statische Prüfung (ein Dreieck von %2 s) mit den aktuellen und den vorgeschlagenen Verstärkungen; insgesamt etwa %3 s</translation>
+        </message>
+        <message>
+            <source>Proposed, simulated on the emulator's firmware (as the controller dialog): %1.</source>
+            <translation>Vorschlag, simuliert mit der Firmware des Emulators (wie im Reglerdialog): %1.</translation>
+        </message>
+        <message>
+            <source>Tried before and failed the profile: %1 (%2).</source>
+            <translation>Zuvor versucht, Profil nicht bestanden: %1 (%2).</translation>
+        </message>
+        <message>
+            <source>%1 before</source>
+            <translation>%1 vorher</translation>
+        </message>
+        <message>
+            <source>%1 proposed</source>
+            <translation>%1 Vorschlag</translation>
+        </message>
+        <message>
+            <source>Acceptance steps of %1 %</source>
+            <translation>Abnahmesprünge um %1 %</translation>
         </message>
         <message>
             <source>Autotune</source>
@@ -159,6 +183,26 @@ Die letzte Aktion wurde womöglich nicht vollständig ausgeführt. Speichern Sie
         <message>
             <source>Accept anyway (I checked the measurement)</source>
             <translation>Trotzdem übernehmen (ich habe die Messung geprüft)</translation>
+        </message>
+        <message>
+            <source>Figure</source>
+            <translation>Kennwert</translation>
+        </message>
+        <message>
+            <source>Before</source>
+            <translation>Vorher</translation>
+        </message>
+        <message>
+            <source>Proposed</source>
+            <translation>Vorschlag</translation>
+        </message>
+        <message>
+            <source>Limit</source>
+            <translation>Grenze</translation>
+        </message>
+        <message>
+            <source>Result</source>
+            <translation>Ergebnis</translation>
         </message>
     </context>
     <context>
@@ -217,6 +261,81 @@ Die letzte Aktion wurde womöglich nicht vollständig ausgeführt. Speichern Sie
         <message>
             <source>The link's sample rate limited the sweep to %1 Hz (nothing interpolated).</source>
             <translation>Die Abtastrate der Verbindung begrenzte den Sweep auf %1 Hz (nichts interpoliert).</translation>
+        </message>
+    </context>
+    <context>
+        <name>BusLssActions</name>
+        <message>
+            <source>Find bit rate</source>
+            <translation>Bitrate ermitteln</translation>
+        </message>
+        <message>
+            <source>Listen at each bit rate in listen-only mode (nothing is sent)</source>
+            <translation>Bei jeder Bitrate im Nur-Hören-Modus mithören (es wird nichts gesendet)</translation>
+        </message>
+        <message>
+            <source>Change node ID by LSS…</source>
+            <translation>Node-ID per LSS ändern…</translation>
+        </message>
+        <message>
+            <source>Change bit rate by LSS…</source>
+            <translation>Bitrate per LSS ändern…</translation>
+        </message>
+        <message>
+            <source>Listening at each bit rate (listen-only: nothing is sent)…</source>
+            <translation>Höre bei jeder Bitrate mit (nur hören: es wird nichts gesendet)…</translation>
+        </message>
+        <message>
+            <source>none identified</source>
+            <translation>keiner erkannt</translation>
+        </message>
+        <message>
+            <source>The bus runs at {0} kbit/s (frames from nodes: {1}). Search the bus.</source>
+            <translation>Der Bus läuft mit {0} kbit/s (Frames von Knoten: {1}). Durchsuchen Sie den Bus.</translation>
+        </message>
+        <message>
+            <source>Change node ID by LSS</source>
+            <translation>Node-ID per LSS ändern</translation>
+        </message>
+        <message>
+            <source>New node ID for serial {0}, now {1} (1…127):</source>
+            <translation>Neue Node-ID für Seriennummer {0}, jetzt {1} (1…127):</translation>
+        </message>
+        <message>
+            <source>Node ID {0} is taken: a node answers there. Choose another one.</source>
+            <translation>Node-ID {0} ist vergeben: Dort antwortet ein Knoten. Wählen Sie eine andere.</translation>
+        </message>
+        <message>
+            <source>Serial {0} will answer at node {2} instead of {1}, stored in the valve (its node-ID switch must be at 1: LSS). prm9tool's own link moves with it: a connection to can:{1} ends, and prm9tool goes online with can:{2}. A PLC that addresses node {1} no longer reaches the valve. Change it?</source>
+            <translation>Seriennummer {0} antwortet dann als Knoten {2} statt {1}, im Ventil gespeichert (sein Node-ID-Schalter muss auf 1 stehen: LSS). Die eigene Verbindung von prm9tool zieht mit um: Eine Verbindung zu can:{1} endet, und prm9tool geht mit can:{2} online. Eine SPS, die Knoten {1} anspricht, erreicht das Ventil nicht mehr. Ändern?</translation>
+        </message>
+        <message>
+            <source>Changing the node ID of serial {0} to {1}…</source>
+            <translation>Node-ID von Seriennummer {0} wird auf {1} geändert…</translation>
+        </message>
+        <message>
+            <source>Change bit rate by LSS</source>
+            <translation>Bitrate per LSS ändern</translation>
+        </message>
+        <message>
+            <source>New bit rate of the bus:</source>
+            <translation>Neue Bitrate des Busses:</translation>
+        </message>
+        <message>
+            <source>Every valve at node-ID switch 1 (LSS) switches from {1} kbit/s to {0} kbit/s together and stores it. Nodes whose switches set the bit rate (node-ID switch 0 or 2…F) and the PLC keep {1} kbit/s: set them too before the machine runs again, or the bus stops working. prm9tool's own link moves to {0} kbit/s. Change the bit rate?</source>
+            <translation>Alle Ventile mit Node-ID-Schalter auf 1 (LSS) wechseln gemeinsam von {1} kbit/s auf {0} kbit/s und speichern es. Knoten, deren Schalter die Bitrate bestimmen (Node-ID-Schalter 0 oder 2…F), und die SPS bleiben bei {1} kbit/s: Stellen Sie auch sie um, bevor die Maschine wieder läuft, sonst funktioniert der Bus nicht mehr. Die eigene Verbindung von prm9tool wechselt auf {0} kbit/s. Bitrate ändern?</translation>
+        </message>
+        <message>
+            <source>Changing the bit rate to {0} kbit/s by LSS…</source>
+            <translation>Bitrate wird per LSS auf {0} kbit/s geändert…</translation>
+        </message>
+        <message>
+            <source>{0} valve(s) switched to {1} kbit/s. prm9tool cannot change the bit rate of a socketcan interface: sudo ip link set {2} down &amp;&amp; sudo ip link set {2} up type can bitrate {3}, then search the bus.</source>
+            <translation>{0} Ventil(e) auf {1} kbit/s umgestellt. prm9tool kann die Bitrate einer socketcan-Schnittstelle nicht ändern: sudo ip link set {2} down &amp;&amp; sudo ip link set {2} up type can bitrate {3}, dann den Bus durchsuchen.</translation>
+        </message>
+        <message>
+            <source>{0} valve(s) switched to {1} kbit/s; prm9tool follows.</source>
+            <translation>{0} Ventil(e) auf {1} kbit/s umgestellt; prm9tool folgt.</translation>
         </message>
     </context>
     <context>
@@ -326,6 +445,10 @@ Die letzte Aktion wurde womöglich nicht vollständig ausgeführt. Speichern Sie
         <message>
             <source>The bus cannot be watched: {0}</source>
             <translation>Der Bus kann nicht beobachtet werden: {0}</translation>
+        </message>
+        <message>
+            <source>The valve (serial number {0}) does not tell its type key, and its objects do not tell E02 from E04 (-CA). Type key on the valve's label:</source>
+            <translation>Das Ventil (Seriennummer {0}) nennt seinen Typenschlüssel nicht, und seine Objekte unterscheiden E02 nicht von E04 (-CA). Typenschlüssel auf dem Typenschild des Ventils:</translation>
         </message>
         <message>
             <source>Type key of the valve</source>
@@ -622,6 +745,10 @@ Die letzte Aktion wurde womöglich nicht vollständig ausgeführt. Speichern Sie
             <source>the process controller's Kp is 0: the spool would not move</source>
             <translation>Kp des Prozessreglers ist 0: der Schieber würde sich nicht bewegen</translation>
         </message>
+        <message>
+            <source>this valve has no object for {0} on this link (their addresses are this project's, not the manual's): the tuning cannot change them here; nothing was changed — tune these over USB</source>
+            <translation>dieses Ventil hat auf dieser Verbindung kein Objekt für {0} (ihre Adressen sind die dieses Projekts, nicht die des Handbuchs): die Abstimmung kann sie hier nicht ändern; nichts wurde geändert — stimmen Sie diese über USB ab</translation>
+        </message>
     </context>
     <context>
         <name>CommissioningPanel</name>
@@ -688,6 +815,14 @@ Die letzte Aktion wurde womöglich nicht vollständig ausgeführt. Speichern Sie
             <source>The valve variants differ: only the parameters both have are compared; {0} parameters that one side lacks are left out.</source>
             <translation>Die Ventilvarianten unterscheiden sich: verglichen werden nur die Parameter, die beide haben; {0} Parameter, die einer Seite fehlen, bleiben außen vor.</translation>
         </message>
+        <message>
+            <source>not on this valve</source>
+            <translation>nicht in diesem Ventil</translation>
+        </message>
+        <message>
+            <source>not on the valve it was read from</source>
+            <translation>nicht in dem Ventil, aus dem gelesen wurde</translation>
+        </message>
     </context>
     <context>
         <name>CompareDialog</name>
@@ -746,6 +881,13 @@ Die letzte Aktion wurde womöglich nicht vollständig ausgeführt. Speichern Sie
             </translation>
         </message>
         <message numerus="yes">
+            <source>%n parameter(s) not on the valve, not compared</source>
+            <translation>
+                <numerusform>%n Parameter nicht im Ventil, nicht verglichen</numerusform>
+                <numerusform>%n Parameter nicht im Ventil, nicht verglichen</numerusform>
+            </translation>
+        </message>
+        <message numerus="yes">
             <source>%n shown</source>
             <translation>
                 <numerusform>%n angezeigt</numerusform>
@@ -766,6 +908,10 @@ Die letzte Aktion wurde womöglich nicht vollständig ausgeführt. Speichern Sie
         <message>
             <source>One side's valve type has no such parameter; it cannot be chosen.</source>
             <translation>Der Ventiltyp einer Seite hat diesen Parameter nicht; er kann nicht gewählt werden.</translation>
+        </message>
+        <message>
+            <source>The valve type has this parameter, but the valve does not (a valve over CANopen without this object): not compared, not a difference; it cannot be chosen.</source>
+            <translation>Der Ventiltyp hat diesen Parameter, das Ventil aber nicht (ein Ventil über CANopen ohne dieses Objekt): nicht verglichen, kein Unterschied; er kann nicht gewählt werden.</translation>
         </message>
     </context>
     <context>
@@ -1373,6 +1519,18 @@ Die letzte Aktion wurde womöglich nicht vollständig ausgeführt. Speichern Sie
             <source>The valve reads its rotary switches at power-up only: restart it (Valve → Restart valve) for a new position to apply. The setpoint input counts only while the valve takes its setpoint from the analog input (no CANopen, no setpoint generator).</source>
             <translation>Das Ventil liest seine Drehschalter nur beim Einschalten: starten Sie es neu (Ventil → Ventil neu starten), damit eine neue Stellung gilt. Der Sollwerteingang zählt nur, solange das Ventil seinen Sollwert vom Analogeingang nimmt (kein CANopen, kein Sollwertgenerator).</translation>
         </message>
+        <message>
+            <source>node ID and bit rate by software (NODEID, BITRATE)</source>
+            <translation>Node-ID und Bitrate per Software (NODEID, BITRATE)</translation>
+        </message>
+        <message>
+            <source>LSS: node ID from an LSS master, automatic bit rate</source>
+            <translation>LSS: Node-ID von einem LSS-Master, automatische Bitrate</translation>
+        </message>
+        <message>
+            <source>node {0}</source>
+            <translation>Knoten {0}</translation>
+        </message>
     </context>
     <context>
         <name>EmulatedValveMenu</name>
@@ -1473,6 +1631,18 @@ Die letzte Aktion wurde womöglich nicht vollständig ausgeführt. Speichern Sie
         <message>
             <source>The link could not keep the test's sample rate.</source>
             <translation>Die Verbindung konnte die Abtastrate des Tests nicht halten.</translation>
+        </message>
+        <message>
+            <source>Node ID assignment (LSS) did not complete.</source>
+            <translation>Die Vergabe der Node-ID (LSS) wurde nicht abgeschlossen.</translation>
+        </message>
+        <message>
+            <source>The bit rate cannot be found without transmitting on this adapter.</source>
+            <translation>Mit diesem Adapter lässt sich die Bitrate nicht ermitteln, ohne zu senden.</translation>
+        </message>
+        <message>
+            <source>No bit rate gave valid frames.</source>
+            <translation>Bei keiner Bitrate kamen gültige Frames an.</translation>
         </message>
     </context>
     <context>
@@ -2003,8 +2173,114 @@ Ja lädt hoch und stellt den Eintrag in die Warteschlange; Nein lädt nichts hoc
             <translation>Der Knoten-ID-Schalter steht auf Position {0}: Die Schalter bestimmen Knoten-ID und Bitrate (Handbuch, Tabelle 7-17), diese Änderung verschiebt das Ventil also nicht; es bleibt Knoten {1}.</translation>
         </message>
         <message>
+            <source>The node-ID switch is at position 1 (LSS): an LSS master sets node ID and bit rate (manual table 7-17; Communication → CAN bus). NODEID and BITRATE apply at position 0 only, so this change does not move the valve.</source>
+            <translation>Der Node-ID-Schalter steht auf Position 1 (LSS): Node-ID und Bitrate setzt ein LSS-Master (Handbuch Tabelle 7-17; Kommunikation → CAN-Bus). NODEID und BITRATE gelten nur in Position 0, diese Änderung verschiebt das Ventil also nicht.</translation>
+        </message>
+        <message>
             <source>After the valve's next power-up or restart it answers at node {0}, {1}. Store the change and restart the valve from prm9tool (Valve → Restart valve): prm9tool then finds it there again — where it cannot change the adapter's bit rate itself (SocketCAN), it says how. After a power-up, find it under Communication → CAN bus (node {0}, bit rate {1}).</source>
             <translation>Nach dem nächsten Einschalten oder Neustart antwortet das Ventil als Knoten {0}, {1}. Speichern Sie die Änderung und starten Sie das Ventil aus prm9tool neu (Ventil → Ventil neu starten): prm9tool findet es dann dort wieder — wo es die Bitrate des Adapters nicht selbst ändern kann (SocketCAN), sagt es, wie. Nach einem Einschalten finden Sie es unter Kommunikation → CAN-Bus (Knoten {0}, Bitrate {1}).</translation>
+        </message>
+    </context>
+    <context>
+        <name>LssPanel</name>
+        <message>
+            <source>Devices without a node ID (node-ID switch at 1: LSS)</source>
+            <translation>Geräte ohne Node-ID (Node-ID-Schalter auf 1: LSS)</translation>
+        </message>
+        <message>
+            <source>Serial</source>
+            <translation>Seriennummer</translation>
+        </message>
+        <message>
+            <source>Device</source>
+            <translation>Gerät</translation>
+        </message>
+        <message>
+            <source>Vendor ID</source>
+            <translation>Hersteller-ID</translation>
+        </message>
+        <message>
+            <source>Product code</source>
+            <translation>Produktcode</translation>
+        </message>
+        <message>
+            <source>Revision</source>
+            <translation>Revision</translation>
+        </message>
+        <message>
+            <source>Look for devices without a node ID</source>
+            <translation>Geräte ohne Node-ID suchen</translation>
+        </message>
+        <message>
+            <source>Assign node ID…</source>
+            <translation>Node-ID zuweisen…</translation>
+        </message>
+        <message>
+            <source>Assign node IDs to all…</source>
+            <translation>Allen Node-IDs zuweisen…</translation>
+        </message>
+        <message>
+            <source>Looking for devices without a node ID (LSS Fastscan)…</source>
+            <translation>Suche Geräte ohne Node-ID (LSS-Fastscan)…</translation>
+        </message>
+        <message>
+            <source>PRM9</source>
+            <translation>PRM9</translation>
+        </message>
+        <message>
+            <source>not a PRM9</source>
+            <translation>kein PRM9</translation>
+        </message>
+        <message numerus="yes">
+            <source>%n device(s) without a node ID.</source>
+            <translation>
+                <numerusform>%n Gerät ohne Node-ID.</numerusform>
+                <numerusform>%n Geräte ohne Node-ID.</numerusform>
+            </translation>
+        </message>
+        <message>
+            <source>No device without a node ID answered: every device has one, or none is at node-ID switch 1, or the bus runs at another bit rate.</source>
+            <translation>Kein Gerät ohne Node-ID hat geantwortet: Jedes Gerät hat eine, keines steht mit dem Node-ID-Schalter auf 1, oder der Bus läuft mit einer anderen Bitrate.</translation>
+        </message>
+        <message>
+            <source>Assign node ID</source>
+            <translation>Node-ID zuweisen</translation>
+        </message>
+        <message>
+            <source>Node ID for serial {0} (1…127; stored in the valve, used from now on and after every power-up):</source>
+            <translation>Node-ID für Seriennummer {0} (1…127; im Ventil gespeichert, ab sofort und nach jedem Einschalten gültig):</translation>
+        </message>
+        <message>
+            <source>Node ID {0} is taken: a node answers there. Choose another one.</source>
+            <translation>Node-ID {0} ist vergeben: Dort antwortet ein Knoten. Wählen Sie eine andere.</translation>
+        </message>
+        <message>
+            <source>Giving serial {0} node ID {1} and storing it…</source>
+            <translation>Seriennummer {0} erhält Node-ID {1}, sie wird gespeichert…</translation>
+        </message>
+        <message>
+            <source>Assign node IDs to all</source>
+            <translation>Allen Node-IDs zuweisen</translation>
+        </message>
+        <message>
+            <source>First node ID: the {0} valves get consecutive free node IDs from it, in the order of their serial numbers (stored in each valve):</source>
+            <translation>Erste Node-ID: Die {0} Ventile erhalten ab ihr fortlaufende freie Node-IDs, in der Reihenfolge ihrer Seriennummern (in jedem Ventil gespeichert):</translation>
+        </message>
+        <message>
+            <source>From node ID {0} on there are only {1} free node IDs for {2} valves.</source>
+            <translation>Ab Node-ID {0} gibt es nur {1} freie Node-IDs für {2} Ventile.</translation>
+        </message>
+        <message>
+            <source>Giving node IDs: {0}…</source>
+            <translation>Node-IDs werden vergeben: {0}…</translation>
+        </message>
+        <message>
+            <source>Given and stored: {0}. Searching the bus again…</source>
+            <translation>Vergeben und gespeichert: {0}. Der Bus wird erneut durchsucht…</translation>
+        </message>
+        <message>
+            <source>Serial {0} answers as {1} (stored). Going online with it…</source>
+            <translation>Seriennummer {0} antwortet als {1} (gespeichert). Online-Verbindung wird aufgebaut…</translation>
         </message>
     </context>
     <context>
@@ -3297,6 +3573,21 @@ Ja lädt hoch und stellt den Eintrag in die Warteschlange; Nein lädt nichts hoc
         </message>
     </context>
     <context>
+        <name>StepFigures</name>
+        <message>
+            <source>did not settle within ±{0} % of the step: oscillation of {1} at {2} Hz</source>
+            <translation>nicht innerhalb ±{0} % des Sprungs eingeschwungen: Schwingung von {1} bei {2} Hz</translation>
+        </message>
+        <message>
+            <source>did not settle within ±{0} % of the step: still moving by {1} at the end</source>
+            <translation>nicht innerhalb ±{0} % des Sprungs eingeschwungen: bewegt sich am Ende noch um {1}</translation>
+        </message>
+        <message>
+            <source>Step {0} → {1} %, window {2} … {3} ms</source>
+            <translation>Sprung {0} → {1} %, Fenster {2} … {3} ms</translation>
+        </message>
+    </context>
+    <context>
         <name>StepPanel</name>
         <message>
             <source>Step response</source>
@@ -3351,10 +3642,6 @@ Ja lädt hoch und stellt den Eintrag in die Warteschlange; Nein lädt nichts hoc
             <translation>Kein Sprung in {0} gefunden.</translation>
         </message>
         <message>
-            <source>not settled in the window</source>
-            <translation>im Fenster nicht eingeschwungen</translation>
-        </message>
-        <message>
             <source>Measured on {0}.</source>
             <translation>Gemessen auf {0}.</translation>
         </message>
@@ -3378,8 +3665,8 @@ Ja lädt hoch und stellt den Eintrag in die Warteschlange; Nein lädt nichts hoc
             <translation>nicht erreicht</translation>
         </message>
         <message>
-            <source>Step %1 %: overshoot %2 %, rise time %3, settling (±2 %) %4, remaining error %5 %</source>
-            <translation>Sprung %1 %: Überschwingen %2 %, Anstiegszeit %3, Einschwingen (±2 %) %4, bleibende Abweichung %5 %</translation>
+            <source>{0}: overshoot {1} %, rise time {2}, settling (±2 %) {3}, remaining error {4} %</source>
+            <translation>{0}: Überschwingen {1} %, Anstiegszeit {2}, Einschwingen (±2 %) {3}, bleibende Abweichung {4} %</translation>
         </message>
     </context>
     <context>
@@ -3446,6 +3733,10 @@ Ja lädt hoch und stellt den Eintrag in die Warteschlange; Nein lädt nichts hoc
         <message>
             <source>dead band</source>
             <translation>Totzone</translation>
+        </message>
+        <message>
+            <source>step %1 → %2 %: %3</source>
+            <translation>Sprung %1 → %2 %: %3</translation>
         </message>
         <message>
             <source>step %1 %: %2</source>
@@ -3621,6 +3912,14 @@ Stellen Sie sicher, dass die Hydraulik dafür sicher ist. Stopp beendet ihn jede
         <message>
             <source>Tuning</source>
             <translation>Einstellung</translation>
+        </message>
+        <message>
+            <source>The oscilloscope's setpoint generator was stopped for the test.</source>
+            <translation>Der Sollwertgenerator des Oszilloskops wurde für die Prüfung angehalten.</translation>
+        </message>
+        <message>
+            <source>The oscilloscope's setpoint generator is running: the test stops it (start it again afterwards).</source>
+            <translation>Der Sollwertgenerator des Oszilloskops läuft: Die Prüfung hält ihn an (danach erneut starten).</translation>
         </message>
         <message>
             <source>Stopping…</source>
@@ -4167,6 +4466,18 @@ Stellen Sie sicher, dass die Hydraulik dafür sicher ist. Stopp beendet ihn jede
                 <numerusform>%n Parameter um {0} erneut geschrieben, geprüft und gespeichert: das Ventil hatte ihn schon</numerusform>
                 <numerusform>%n Parameter um {0} erneut geschrieben, geprüft und gespeichert: das Ventil hatte sie schon</numerusform>
             </translation>
+        </message>
+        <message>
+            <source>stored with 0x1010</source>
+            <translation>mit 0x1010 gespeichert</translation>
+        </message>
+        <message>
+            <source>kept by the valve as written (it has no store command)</source>
+            <translation>vom Ventil wie geschrieben behalten (es hat keinen Speicherbefehl)</translation>
+        </message>
+        <message>
+            <source>verified after a restart</source>
+            <translation>nach einem Neustart geprüft</translation>
         </message>
         <message>
             <source>Upload failed</source>

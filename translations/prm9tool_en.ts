@@ -35,6 +35,13 @@
             </translation>
         </message>
         <message numerus="yes">
+            <source>%n parameter(s) not on the valve, not compared</source>
+            <translation>
+                <numerusform>%n parameter not on the valve, not compared</numerusform>
+                <numerusform>%n parameters not on the valve, not compared</numerusform>
+            </translation>
+        </message>
+        <message numerus="yes">
             <source>%n shown</source>
             <translation>
                 <numerusform>%n shown</numerusform>
@@ -73,6 +80,16 @@
             <translation>
                 <numerusform>%n record in {0}</numerusform>
                 <numerusform>%n records in {0}</numerusform>
+            </translation>
+        </message>
+    </context>
+    <context>
+        <name>LssPanel</name>
+        <message numerus="yes">
+            <source>%n device(s) without a node ID.</source>
+            <translation>
+                <numerusform>%n device without a node ID.</numerusform>
+                <numerusform>%n devices without a node ID.</numerusform>
             </translation>
         </message>
     </context>

@@ -13,8 +13,9 @@ this reading of it applies **(inference)**:
   CANopen window gives access to the bit rate); the interface switch keeps its terminator
   function, so 9…F switch the terminator on here as well. 1 = LSS and automatic bit-rate
   detection: table 7-17 says the interface switch then "has no function", so neither its bit
-  rate nor its terminator apply; the terminator follows CANTERM (node ID from NODEID, which an
-  LSS master stores). 2…F = node ID 10, 15, …, 75 with the bit rate of the interface switch.
+  rate nor its terminator apply; the terminator follows CANTERM. The node ID is the one an LSS
+  master configured and stored (CiA 305; none from the factory) — :func:`effective` reports
+  NODEID there, which the master side reads as "where it is now" (docs/can-link.md, LSS). 2…F = node ID 10, 15, …, 75 with the bit rate of the interface switch.
   The emulated valve's firmware decodes its switches with :func:`effective`, so the CANopen
   window and the valve cannot disagree.
 
@@ -30,6 +31,17 @@ BITRATES_KBIT: tuple[int, ...] = (20, 50, 125, 250, 500, 800, 1000)
 BITRATE_CODES_KBIT: tuple[int, ...] = (1000, 800, 500, 250, 125, 50, 20)
 """Bit rate of each code of the catalogue parameter BITRATE (0 = 1 Mbit/s … 6 = 20 kbit/s)."""
 POSITIONS = range(16)
+LSS_BIT_TIMINGS_KBIT: tuple[int, ...] = (1000, 800, 500, 250, 125, 100, 50, 20, 10)
+"""CiA 305 standard bit-timing table (table selector 0): the rate of each index 0…8."""
+LSS_UNCONFIGURED = 0xFF
+"""CiA 305: the node ID of an LSS slave that has none."""
+
+
+def lss_bit_timing(kbit: int) -> int | None:
+    """The CiA 305 table-0 index of ``kbit``; None for a rate the valve does not run at."""
+    if kbit not in BITRATES_KBIT:
+        return None
+    return LSS_BIT_TIMINGS_KBIT.index(kbit)
 
 
 @dataclass(frozen=True)

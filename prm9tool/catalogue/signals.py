@@ -254,6 +254,18 @@ BY_KEY = {s.key: s for s in SIGNALS}
 BY_CODE = {s.code: s for s in SIGNALS}
 MAX_CHANNELS = 3  # the valve streams at most three measuring points at once (manual §8.7.2)
 
+# Measuring points the valve also holds as an object of its dictionary (manual tables 7-13 and
+# 7-14, CiA 408): readable at any time, also while the stream carries other points. Key ->
+# (parameter mnemonic, factor from the object's raw value to the measuring point's raw units).
+SIGNAL_OBJECTS: dict[str, tuple[str, float]] = {
+    "position_actual": ("POSACT", 1.0),
+    "process_actual": ("PRCACT", 1.0),
+    "demand": ("DEMAND", 1.0),
+    "position_deviation": ("CTRLDEV", 1.0),
+    "supply_voltage": ("PWR", 1.0),
+    "temperature": ("TEMP", 10.0),  # °C -> 0.1 °C
+}
+
 
 def signals_for(variant: Variant) -> list[Signal]:
     """The measuring points that exist on ``variant``."""

@@ -14,6 +14,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass, field
+from typing import TYPE_CHECKING
 
 import numpy as np
 
@@ -37,10 +38,14 @@ from prm9tool.characterize.procedures import (
     chain_changes,
     gain_names,
     preserved,
+    step_window,
 )
 from prm9tool.characterize.rig import Rig
 from prm9tool.errors import Prm9Error
 from prm9tool.messages import QT_TRANSLATE_NOOP, Message
+
+if TYPE_CHECKING:
+    from prm9tool.device.emulator import EmulatedValve
 
 
 @dataclass(frozen=True)
@@ -114,7 +119,7 @@ def model_tune(
     """
     lp = LOOPS[loop]
     names = gain_names(lp)
-    duration = max(3.0 * targets.settling_s, 0.06)
+    duration = step_window(loop, targets.settling_s)
     two_coils = TypeKey.parse(rig.info.type_key).variant.coils is Coils.AB
     out_lo = -float(FULL_SCALE) if two_coils else 0.0
     with preserved(rig, names, chain_changes(rig, loop)) as saved:
@@ -193,14 +198,12 @@ def simulate_steps(
     firmware: a fresh analog-only emulated valve of the rig's type with the rig's parameter
     set (read from it), stepped faster than real time. The valve under test is not moved."""
     from prm9tool.catalogue import CATALOGUE
-    from prm9tool.characterize.rig import EmulatorRig
     from prm9tool.device.emulator import EmulatedValve
 
     key = TypeKey.parse(rig.info.type_key)
     analog = TypeKey(key.size, key.spool, key.flow, key.supply, key.config, False)
     names = [p.mnemonic for p in CATALOGUE.for_variant(analog.variant) if p.in_file and p.writable]
     present = rig.read(names)
-    lp = LOOPS[loop]
     steps = []
     for values in (present, {**present, **proposed}):
         valve = EmulatedValve(analog)
@@ -210,7 +213,18 @@ def simulate_steps(
                 valve.write(param.index, param.subindex, raw)
             except Prm9Error:  # e.g. a CANopen setpoint type on the analog copy: keep default
                 continue
-        copy = EmulatorRig(valve)
-        with preserved(copy, [], chain_changes(copy, loop)):
-            steps.append(_step(copy, lp, amplitude_pct, 0.0, duration_s, None, loop))
+        steps.append(emulated_step(valve, loop, amplitude_pct, duration_s))
     return steps[0], steps[1]
+
+
+def emulated_step(
+    valve: EmulatedValve, loop: str, amplitude_pct: float, duration_s: float
+) -> StepResult:
+    """The step the autotune measures (from 0 %, :data:`STEP_PRE_S` before it, ``duration_s``
+    after it), on an emulated valve holding the values to simulate: the one measurement the
+    controller dialogs show too."""
+    from prm9tool.characterize.rig import EmulatorRig
+
+    rig = EmulatorRig(valve)
+    with preserved(rig, [], chain_changes(rig, loop)):
+        return _step(rig, LOOPS[loop], amplitude_pct, 0.0, duration_s, None, loop)

@@ -208,9 +208,12 @@ class CanRig(Rig):
         self.session.listen(cob_id, on_tpdo)
         try:
             clock.start()
+            played = self.played_s
             while not clock.wait_ticks(n, CHECK_S):
                 self.check()
                 self._raise_keeper_error()
+                self.played_s = played + clock.ticks * self.period_s
+            self.played_s = played + n * self.period_s
             slots.wait_for(n - 1, max(SETTLE_S, 20 * self.period_s))
         finally:
             clock.stop()
@@ -257,6 +260,7 @@ class CanRig(Rig):
         for i, value in enumerate(values):
             if i % checks == 0:
                 self.check()
+                self.played_s += checks * self.period_s if i else 0.0
                 self._raise_keeper_error()
             wait = due - time.perf_counter()
             if wait > 0:

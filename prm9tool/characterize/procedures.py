@@ -34,6 +34,7 @@ from prm9tool.characterize.rig import (
 )
 from prm9tool.characterize.transparent import TRANSPARENT
 from prm9tool.errors import Prm9Error
+from prm9tool.messages import QT_TRANSLATE_NOOP, Message, Number
 from prm9tool.scope.measure import StepFigures, step_figures
 
 SAMPLES_PER_PERIOD = 10  # a sweep goes no higher than the sample rate / this (decision)
@@ -50,22 +51,32 @@ class Loop:
     output: str
     integrating: bool
     step_pct: float  # the step the step-response simulator makes (prm9tool.online.tuning)
-    simulated_s: float  # how long the simulator runs after the step
+    simulated_s: float  # the window recorded after a step: the simulator's and the autotune's
 
 
 LOOPS = {
     "position": Loop(
-        "POS", "position_setpoint", "position_actual", "controller_output", False, 50.0, 0.06
+        "POS", "position_setpoint", "position_actual", "controller_output", False, 50.0, 0.12
     ),
     "process": Loop(
         "PRC", "process_setpoint", "process_actual", "position_setpoint", True, 20.0, 1.0
     ),
 }
 GAIN_SUFFIXES = ("KP", "KI", "KD", "T1")
+# One step measurement for the autotune, the controller dialogs and the end-of-line steps:
+# the loop rests at the start level, STEP_PRE_S of it are recorded, then the step and the
+# window after it (at least STEP_WINDOW_S; the autotune takes 3× its settling target if longer).
+STEP_PRE_S = 0.02
+STEP_WINDOW_S = {name: lp.simulated_s for name, lp in LOOPS.items()}
 
 
 class LimitExceededError(Prm9Error):
     """The valve left the allowed band around the operating point; the test was stopped."""
+
+
+def step_window(loop: str, settling_s: float = 0.0) -> float:
+    """Seconds recorded after a step of ``loop``: STEP_WINDOW_S, or three settling times."""
+    return max(3.0 * settling_s, STEP_WINDOW_S[loop])
 
 
 def gain_names(loop: Loop) -> list[str]:
@@ -77,10 +88,24 @@ def gain_names(loop: Loop) -> list[str]:
 def preserved(
     rig: Rig, mnemonics: Sequence[str], changes: dict[str, int]
 ) -> Iterator[dict[str, int]]:
-    """Save ``mnemonics`` and ``changes``' keys, apply ``changes``; always restore and release."""
+    """Save ``mnemonics`` and ``changes``' keys, apply ``changes``; always restore and release.
+
+    ``mnemonics`` are what the procedure changes (controller gains): a valve that lacks one on
+    its link (a real valve over CANopen has no object at this project's addresses) is refused
+    here, naming them, before anything is written or moved."""
     rig.ensure_active()
     names = list(dict.fromkeys([*mnemonics, *changes]))
     saved = rig.read(names)
+    missing = [m for m in mnemonics if m not in saved]
+    if missing:
+        raise Prm9Error(
+            QT_TRANSLATE_NOOP(
+                "Characterize",
+                "this valve has no object for {0} on this link (their addresses are this "
+                "project's, not the manual's): the tuning cannot change them here; nothing "
+                "was changed — tune these over USB",
+            )(", ".join(missing))
+        )
     try:
         rig.write(changes)
         yield saved
@@ -153,6 +178,21 @@ class StepResult:
     figures: StepFigures | None
     loop: str = "position"
 
+    def caption(self) -> Message:
+        """The step and the window its figures were measured on, e.g. "Step 0 → 50 %, window
+        −20 … 120 ms" (every view shows it next to the figures)."""
+        t = self.record.t
+        start = round(float(self.record.channels[LOOPS[self.loop].setpoint][0]), 1) + 0.0
+        return STEP_CAPTION(
+            Number(f"{start:g}"),
+            Number(f"{start + self.amplitude_pct:g}"),
+            Number(f"{t[0] * 1000.0:.0f}".replace("-", "−")),
+            Number(f"{t[-1] * 1000.0:.0f}"),
+        )
+
+
+STEP_CAPTION = QT_TRANSLATE_NOOP("StepFigures", "Step {0} → {1} %, window {2} … {3} ms")
+
 
 def step_test(
     rig: Rig,
@@ -183,15 +223,13 @@ def _step(
     keeps the first that arrived at each); what none delivered is bridged when
     :func:`~prm9tool.characterize.rig.bridgeable`, else the step is refused."""
     fs = rig.info.sample_rate_hz
-    pre = int(0.02 * fs)
+    pre, n = round(STEP_PRE_S * fs), round(duration * fs)
     keys = [lp.setpoint, lp.actual, lp.output]
     channels: dict[str, np.ndarray] = {}
     hole = np.zeros(0, dtype=bool)
     for attempt in range(ATTEMPTS):
         rig.play(np.full(int(max(0.1, duration) * fs), start), [lp.setpoint])  # settle first
-        stimulus = np.concatenate(
-            [np.full(pre, start), np.full(int(duration * fs), start + amplitude)]
-        )
+        stimulus = np.concatenate([np.full(pre, start), np.full(n, start + amplitude)])
         band = limit if limit is not None else abs(amplitude) * 2.0 + 5.0
         try:
             rec = record(rig, stimulus, keys, start, band, gaps=True)

@@ -114,6 +114,7 @@ class Rig(ABC):
         self.stop = threading.Event()
         self.last_demand = np.empty(0)  # the override in %, per sample of the last play()
         self.last_missing = np.zeros(0, dtype=bool)  # samples of the last play() lost (bridged)
+        self.played_s = 0.0  # valve seconds played so far (the GUI's progress bar reads it)
 
     @abstractmethod
     def read(self, mnemonics: Sequence[str]) -> dict[str, int]:
@@ -168,7 +169,10 @@ class Rig(ABC):
                     "the valve does not follow its setpoint: device state {0}; nothing was tested",
                 )
             )
-            raise ValveFaultError(template(status.device_state.value))
+            seen = status.device_state.value
+            if status.status_word is not None:  # over CANopen: the word it was read from
+                seen = f"{seen} (status word 0x{status.status_word:04X})"
+            raise ValveFaultError(template(seen))
 
     def check(self) -> None:
         """Raise :class:`Stopped` if a stop was requested."""
@@ -231,6 +235,7 @@ class EmulatorRig(Rig):
                     valve.advance(run * valve.CYCLE_S)
                 valve.usb_activity()
                 blocks.append(valve.capture_read())
+                self.played_s += len(values[start : start + CHUNK]) * valve.CYCLE_S
                 self._check_fault()
         finally:
             valve.capture_stop()
@@ -324,6 +329,7 @@ class SessionRig(Rig):
                 blocks.append(block)
                 demand[received : received + len(block)] = value
                 received += len(block)
+                self.played_s += len(block) / self.rate_hz
         finally:
             session.stream_stop()
         status = session.status()

@@ -24,6 +24,7 @@ from prm9tool.catalogue.typekey import TypeKey
 from prm9tool.catalogue.variant import Config
 from prm9tool.characterize.flow import FlowResult, flow_test
 from prm9tool.characterize.procedures import (
+    STEP_PRE_S,
     BodeResult,
     StaticResult,
     StepResult,
@@ -32,6 +33,7 @@ from prm9tool.characterize.procedures import (
     step_test,
 )
 from prm9tool.characterize.rig import Rig, RigInfo
+from prm9tool.messages import Message
 
 Progress = Callable[[str], None]
 
@@ -45,6 +47,7 @@ class Figure:
     value: float
     unit: str
     limit: Limit | None
+    note: Message | None = None  # what a figure that could not be measured saw instead
     above: bool = False  # the figure lies above ``value`` (not reached by the sweep's end)
 
     @property
@@ -103,6 +106,16 @@ class Characterization:
 RESULT_HOOKS: list[Callable[[Characterization], None]] = []
 
 
+def planned_s(profile: Profile, flow: bool = False) -> float:
+    """Valve seconds the profile's tests play (what a progress bar counts towards): each
+    step settles, records STEP_PRE_S and its window; the sweep settles 50 ms, the triangle
+    0.2 s; the flow characteristic (E04 in control mode 4) settles and steps twice."""
+    d = profile.step_duration_s
+    steps = len(profile.step_amplitudes_pct) * (max(0.1, d) + STEP_PRE_S + d)
+    seconds = steps + 0.05 + profile.bode_duration_s + 0.2 + profile.static_period_s
+    return seconds + (3.0 * profile.flow_duration_s if flow else 0.0)
+
+
 def characterize(rig: Rig, profile: Profile, progress: Progress | None = None) -> Characterization:
     """Run the profile's tests on ``rig`` (the valve is left as it was after each test)."""
     say = progress or (lambda _text: None)
@@ -148,13 +161,22 @@ def figures(c: Characterization) -> list[Figure]:
     limits = c.profile.limits
     out: list[Figure] = []
 
-    def add(name: str, label: str, value: float, base: str, above: float = math.nan) -> None:
+    def add(
+        name: str,
+        label: str,
+        value: float,
+        base: str,
+        note: Message | None = None,
+        above: float = math.nan,
+    ) -> None:
         """``above``: the figure was not reached up to this frequency (used when ``value`` is
         NaN: the figure is above the sweep's end)."""
         if math.isnan(value) and not math.isnan(above):
-            out.append(Figure(name, label, above, FIGURES[base], limits.get(base), True))
+            out.append(
+                Figure(name, label, above, FIGURES[base], limits.get(base), note, above=True)
+            )
         else:
-            out.append(Figure(name, label, value, FIGURES[base], limits.get(base)))
+            out.append(Figure(name, label, value, FIGURES[base], limits.get(base), note))
 
     for step in c.steps:
         f = step.figures
@@ -164,13 +186,13 @@ def figures(c: Characterization) -> list[Figure]:
             "step_overshoot_pct")  # fmt: skip
         add(f"step_{a}_rise_s", f"step {a} %: rise time", f.rise_time if f else nan, "step_rise_s")
         add(f"step_{a}_settling_s", f"step {a} %: settling time", f.settling_time if f else nan,
-            "step_settling_s")  # fmt: skip
+            "step_settling_s", f.not_settled("%") if f else None)  # fmt: skip
     if c.bode is not None:
         r = c.bode.response
         add("bode_bandwidth_hz", "−3 dB frequency", r.bandwidth_hz(), "bode_bandwidth_hz",
-            r.bandwidth_above_hz())  # fmt: skip
+            above=r.bandwidth_above_hz())  # fmt: skip
         add("bode_phase90_hz", "−90° frequency", r.phase_90_hz(), "bode_phase90_hz",
-            r.phase_90_above_hz())  # fmt: skip
+            above=r.phase_90_above_hz())  # fmt: skip
     if c.static is not None:
         s = c.static.characteristic
         add("static_gain", "gain", s.gain, "static_gain")
@@ -212,6 +234,7 @@ def report_data(c: Characterization, csv_files: list[Path] | None = None) -> dic
                 "min": f.limit.minimum if f.limit else None,
                 "max": f.limit.maximum if f.limit else None,
                 "passed": f.passed,
+                "note": str(f.note) if f.note is not None else None,
             }
             for f in c.figures
         ],

@@ -124,6 +124,7 @@ def _upload(args: argparse.Namespace, records: list[ValveRecord]) -> ExitCode:
         open_valve,
         can_options(args),
         getattr(args, "type_key", None),
+        getattr(args, "verify_by_restart", False),
     )
     try:
         with ThreadPoolExecutor(max_workers=len(entries)) as pool:

@@ -70,6 +70,8 @@ class BatchHistory:
         }
         if record.error:
             details["error"] = record.error
+        if record.store:
+            details["store"] = record.store
         parameters = values if stored else None  # not stored: the valve kept its stored set
         self._add(record, "batch-upload", record.result, parameters, details)
 

@@ -57,6 +57,7 @@ class ValveRecord:
     skipped: list[str] = field(default_factory=list)  # every parameter of the file not uploaded
     absent_in_file: list[str] = field(default_factory=list)  # marked absent: never uploaded
     history: str | None = None  # "recorded", "queued" or why it was not recorded
+    store: str | None = None  # how the valve keeps the set ("stored with 0x1010", …; CANopen)
     current: dict[str, Any] | None = field(default=None, repr=False)  # --dry-run: as read
 
     @property

@@ -10,6 +10,7 @@ from prm9tool.catalogue import CATALOGUE
 from prm9tool.catalogue.typekey import TypeKey
 from prm9tool.cli.batch_history import BatchHistory
 from prm9tool.cli.batch_report import ProgressPrinter, Stopwatch, ValveRecord
+from prm9tool.device.canlink.storing import KEPT_AS_WRITTEN
 from prm9tool.device.factory import CanOptions, DeviceEntry
 from prm9tool.device.session import ValveSession
 from prm9tool.device.upload_outcome import reload_outcome
@@ -41,12 +42,14 @@ class UploadJob:
         open_valve: Opener,
         can: CanOptions | None = None,
         label_key: str | None = None,
+        verify_by_restart: bool = False,
     ) -> None:
         self.contents, self.force, self.dry_run, self.printer = contents, force, dry_run, printer
         self.history = history
         self.can = can
         self.open_valve = open_valve
         self.label_key = label_key  # --type-key
+        self.verify_by_restart = verify_by_restart  # --verify-by-restart (CANopen)
 
     def __call__(self, entry: DeviceEntry) -> ValveRecord:
         clock = Stopwatch()
@@ -113,7 +116,10 @@ class UploadJob:
         if new_backup and not record.backup_valid:
             self.printer.say(who, f"the valve held an invalid parameter set, kept in {latest}")
         record.failed_step = None
+        if self.verify_by_restart and hasattr(session, "verify_by_restart"):
+            session.verify_by_restart = True  # hydraulics off: the operator confirmed it
         result = session.upload(values, self.printer.callback(who))
+        record.store = result.store
         record.parameters_written, record.failed_step = result.written, result.failed_step
         record.verification = "passed" if result.verified else "failed"
         if result.failed_step == "write":
@@ -140,7 +146,10 @@ class UploadJob:
             )
         if not result.stored:
             problem = result.failure or _mismatch_text(result.failed_step, result.mismatches)
-            record.error = f"{problem}; {reload_outcome(result.reload_error)}"
+            kept = result.store == KEPT_AS_WRITTEN
+            record.error = f"{problem}; {reload_outcome(result.reload_error, kept)}"
+        elif result.store:
+            self.printer.say(who, result.store)
 
 
 def absent_in(contents: PrmContents) -> list[str]:

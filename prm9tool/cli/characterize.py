@@ -57,8 +57,9 @@ def run(args: argparse.Namespace) -> int:
         return ExitCode.USAGE
     for figure in result.figures:
         if figure.passed is False:
+            seen = f" ({figure.note})" if figure.note is not None else ""  # what it saw instead
             print(f"prm9tool: out of limits: {figure.name} = {figure.text} "
-                  f"(limit {figure.limit.text() if figure.limit else ''})", file=sys.stderr)  # fmt: skip
+                  f"(limit {figure.limit.text() if figure.limit else ''}){seen}", file=sys.stderr)  # fmt: skip
     verdict = "PASSED" if result.passed else "FAILED"
     print(f"{result.info.type_key} serial {result.info.serial}: {verdict}")
     return ExitCode.OK if result.passed else ExitCode.OUT_OF_LIMITS

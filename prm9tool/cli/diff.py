@@ -1,9 +1,12 @@
 """``--diff A.prm B.prm`` and ``--diff A.prm --device ID``: what differs, one line each.
 
 Prints ``MNEMONIC<TAB>A<TAB>B<TAB>unit`` per differing parameter in display units (a side
-that lacks the parameter shows ``-``), or the same as JSON with ``--json``. Exit 0 when equal,
-1 when they differ, 3 for an invalid file, 4 when there is no such valve, 6 when it does not
-answer. No Qt.
+whose valve type lacks the parameter shows ``-``), or the same as JSON with ``--json``. A
+parameter a side's valve type has but the side does not hold (a valve over CANopen without
+this project's object; a file marking it absent) is "not on this valve": listed apart on
+standard error, never a difference (issue 20 item 4). Exit 0 when everything both sides have
+agrees, 1 when something differs, 3 for an invalid file, 4 when there is no such valve, 6 when
+it does not answer. No Qt.
 """
 
 from __future__ import annotations
@@ -13,7 +16,7 @@ import json
 import sys
 from typing import Any
 
-from prm9tool.compare.model import Comparison, Row, Side
+from prm9tool.compare.model import NOT_ON_SOURCE_VALVE, Comparison, Row, Side
 from prm9tool.errors import CommunicationError, ExitCode, FileFormatError, Prm9Error
 from prm9tool.files.prmfile import read_file
 
@@ -41,6 +44,8 @@ def run(args: argparse.Namespace) -> int:
         for row in comparison.rows:
             if row.differs:
                 print(line(row))
+        for note in not_on_valve_notes(comparison):
+            print(f"prm9tool: {note}", file=sys.stderr)
     return ExitCode.OK if comparison.equal else ExitCode.VERIFY_FAILED
 
 
@@ -59,7 +64,7 @@ def file_side(path: str) -> Side:
     except FileFormatError as exc:
         message = f"{path} is not a valid parameter file:\n{exc}"
         raise DiffError(ExitCode.INVALID_FILE, message) from None
-    return Side(path, contents.type_key, contents.values)
+    return Side(path, contents.type_key, contents.values, NOT_ON_SOURCE_VALVE())
 
 
 def valve_side(args: argparse.Namespace) -> Side:
@@ -105,6 +110,17 @@ def line(row: Row) -> str:
     return f"{row.mnemonic}\t{a}\t{b}\t{row.parameter.unit}".rstrip("\t")
 
 
+def not_on_valve_notes(comparison: Comparison) -> list[str]:
+    """Per side, the parameters it does not hold although its valve type has them (not
+    compared): ``not on this valve (valve 4711), not compared: POSKP, POSKI``."""
+    notes = []
+    for column, side in enumerate(comparison.sides):
+        names = [row.mnemonic for row in comparison.not_on_valve if row.absent[column]]
+        if names:
+            notes.append(f"{side.absent} ({side.label}), not compared: {', '.join(names)}")
+    return notes
+
+
 def as_json(comparison: Comparison) -> dict[str, Any]:
     """The comparison as the JSON ``--diff --json`` prints (docs/compare.md)."""
     first, second = comparison.sides
@@ -114,6 +130,16 @@ def as_json(comparison: Comparison) -> dict[str, Any]:
         "equal": comparison.equal,
         "changed": len(comparison.changed),
         "missing": len(comparison.missing),
+        "not_on_valve": [
+            {
+                "mnemonic": row.mnemonic,
+                "not_on": [name for name, lacks in zip("ab", row.absent, strict=True) if lacks],
+                "a": _value(row, 0),
+                "b": _value(row, 1),
+                "unit": row.parameter.unit,
+            }
+            for row in comparison.not_on_valve
+        ],
         "warnings": [str(w) for w in comparison.warnings()],
         "differences": [
             {

@@ -35,6 +35,10 @@ def main(argv: Sequence[str] | None = None) -> int:
 
         print(f"prm9tool {__version__}")
         return ExitCode.OK
+    if args.od:
+        from prm9tool.device.factory import set_emulator_od
+
+        set_emulator_od(args.od)
     # the CAN libraries' warnings as prm9tool's messages, not their raw log lines
     from prm9tool.device.canlink.liblog import route_library_logs
 
@@ -60,6 +64,8 @@ def _headless_command(args: argparse.Namespace) -> tuple[str, str] | None:
         return "prm9tool.cli.filetools", "export_eds_command"
     if args.serve_emulator:
         return "prm9tool.cli.serve", "run"
+    if args.lss_scan or args.lss_assign or args.find_bitrate:
+        return "prm9tool.cli.lss", "run"
     if args.characterize:
         return "prm9tool.cli.main", "_characterize"
     if args.diff:

@@ -68,6 +68,13 @@ def add_device_options(parser: argparse.ArgumentParser) -> None:
         "object 0x2041, as real valves): checked against what its objects tell and remembered "
         "for its serial number; with --batch it goes before the file's key",
     )
+    group.add_argument(
+        "--od",
+        choices=("full", "manual"),
+        help="object dictionary of --emulator/--serve-emulator valves over CANopen: full (every "
+        "object of the catalogue, store with 0x1010; default) or manual (only the objects the "
+        "manual's tables 7-13/7-14/7-16 list; the valve keeps what is written)",
+    )
     serve = parser.add_argument_group("headless emulated valves on a CAN bus (no GUI)")
     serve.add_argument(
         "--serve-emulator",
@@ -80,11 +87,41 @@ def add_device_options(parser: argparse.ArgumentParser) -> None:
     serve.add_argument(
         "--node-id",
         action="append",
-        type=int,
+        type=node_id_arg,
         default=[],
         metavar="N",
-        help="with --serve-emulator: node ID 1-127 of the valve named at the same position",
+        help="with --serve-emulator: node ID 1-127 of the valve named at the same position, "
+        "or 'lss': node-ID switch at 1, no node ID until an LSS master gives one",
     )
+    lss = parser.add_argument_group("valves without a node ID: LSS, CiA 305 (no GUI)")
+    lss.add_argument(
+        "--lss-scan",
+        action="store_true",
+        help="list the devices on the CAN bus that have no node ID (Fastscan); --json",
+    )
+    lss.add_argument(
+        "--lss-assign",
+        nargs="+",
+        metavar="SERIAL=NODE",
+        help="give each valve without a node ID its node ID and store it; exit 0 only when "
+        "every one then answers at its node ID",
+    )
+    lss.add_argument(
+        "--find-bitrate",
+        action="store_true",
+        help="find the bit rate of the CAN bus by listening (listen-only adapters: pcan, "
+        "kvaser, vector, slcan); never transmits",
+    )
+
+
+def node_id_arg(text: str) -> int | str:
+    """``--node-id``: a number, or ``lss`` (node-ID switch at 1)."""
+    if text.strip().lower() == "lss":
+        return "lss"
+    try:
+        return int(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"{text!r} is neither a node ID 1-127 nor 'lss'") from None
 
 
 def build_parser() -> argparse.ArgumentParser:
@@ -122,6 +159,12 @@ def build_parser() -> argparse.ArgumentParser:
         "--download", metavar="OUT.prm", help="with --batch: save a valve's parameters"
     )
     batch.add_argument("--report", metavar="REPORT.json", help="with --batch: JSON report file")
+    batch.add_argument(
+        "--verify-by-restart",
+        action="store_true",
+        help="with --batch over CANopen: after the store, restart the valve (NMT reset node: "
+        "the spool drops — hydraulics off!) and read every value back",
+    )
     batch.add_argument(
         "--force-type",
         action="store_true",

@@ -28,6 +28,7 @@ if TYPE_CHECKING:
     from prm9tool.device.emulator import EmulatedValve
 
 POLL_S = 0.02
+LSS_POSITION = 1  # node-ID switch: LSS and automatic bit rate (table 7-17)
 
 
 @dataclass
@@ -68,19 +69,26 @@ def run(args: argparse.Namespace) -> int:
     return ExitCode.OK
 
 
-def _serve(spec: str, position: int, node: int | None, options: CanOptions) -> _Served:
+def _serve(spec: str, position: int, node: int | str | None, options: CanOptions) -> _Served:
     type_key, serial = factory.parse_emulator_spec(spec, position + 1)
     valve = factory.emulated_valve(type_key, serial)
     if not valve.variant.canopen:
         raise TypeKeyError(f"{type_key} has no CANopen interface: serve a -CA valve")
-    if node is not None:
-        _set_node(valve, node)
+    if node == "lss":
+        _set_lss(valve)
+    elif node is not None:
+        _set_node(valve, int(node))
     bus = open_bus(options, valve.bitrate)
     slave = valve.connect_can(bus)
     emcy: list[str] = []
     valve.add_error_listener(lambda code, register: emcy.append(_emcy_line(code, register)))
     valve.start()
-    _say(f"serial {serial}: {type_key} starting as node {valve.node_id} on {options}")
+    if valve.node_id:
+        _say(f"serial {serial}: {type_key} starting as node {valve.node_id} on {options}")
+    else:
+        _say(
+            f"serial {serial}: {type_key} without a node ID on {options}: waiting for an LSS master"
+        )
 
     def close() -> None:
         valve.stop()
@@ -100,6 +108,14 @@ def _set_node(valve: EmulatedValve, node: int) -> None:
         position = 0
     valve.set_input("switch_node", position)
     if valve.node_id != node:
+        valve.restart()
+
+
+def _set_lss(valve: EmulatedValve) -> None:
+    """Node-ID switch at 1: the node ID an LSS master stored, none from the factory
+    (manual table 7-17, CiA 305). Read at power-up, so restart."""
+    valve.set_input("switch_node", LSS_POSITION)
+    if not valve.lss_mode:
         valve.restart()
 
 

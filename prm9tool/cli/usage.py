@@ -16,6 +16,7 @@ BATCH_ONLY = {
     "--dry-run": "dry_run",
     "--force-type": "force_type",
     "--all": "all",
+    "--verify-by-restart": "verify_by_restart",
 }
 FILE_TOOLS = {"--new": "new", "--check": "check", "--export-eds": "export_eds"}
 CAN_OPTIONS = {"--can-interface": "can_interface", "--can-channel": "can_channel",
@@ -35,10 +36,19 @@ def usage_problem(args: argparse.Namespace) -> str | None:
         problem = _type_key_problem(args)
         if problem is not None:
             return problem
+    from prm9tool.cli.lss import lss_problem
+
+    problem = lss_problem(args)
+    if problem is not None or any(
+        getattr(args, d) for d in ("lss_scan", "lss_assign", "find_bitrate")
+    ):
+        return problem
     if args.characterize:
         return _characterize_problem(args)
     if args.profile:
         return "--profile belongs to --characterize"
+    if getattr(args, "od", None) and not (args.emulator or args.serve_emulator):
+        return "--od chooses the object dictionary of --emulator or --serve-emulator valves"
     if isinstance(args.json, str):
         return "--json OUT.json belongs to --characterize (--diff and --history print JSON)"
     problem = _compare_history_problem(args)
@@ -125,7 +135,7 @@ def _serve_problem(args: argparse.Namespace, batch_only: list[str]) -> str | Non
         return f"--serve-emulator runs emulated valves on a bus and takes no {extra[0]}"
     if len(args.node_id) > len(args.serve_emulator):
         return "give at most one --node-id per --serve-emulator"
-    bad = [n for n in args.node_id if not 1 <= n <= 127]
+    bad = [n for n in args.node_id if n != "lss" and not 1 <= int(n) <= 127]
     if bad:
         return f"--node-id {bad[0]}: CANopen node IDs are 1…127"
     return None

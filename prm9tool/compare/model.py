@@ -3,8 +3,11 @@
 A :class:`Comparison` lines up the *.prm parameter sets of its sides in catalogue order. Two
 sides are compared (``sides[0]`` and ``sides[1]``, e.g. document and valve); an optional
 reference (the factory defaults of the valve type) is shown beside them and never counts as a
-difference. A side whose valve variant lacks a parameter shows no value there ("missing"), and
-such a row can be neither chosen nor applied. The user chooses per row which side's value to
+difference. A side whose valve variant lacks a parameter shows no value there ("missing", a
+difference: the type keys differ). A side whose valve type has the parameter but which holds
+no value for it — a valve over CANopen without this project's object, a file marking it absent
+— is "not on this valve": listed apart, never a difference (issue 20 item 4). Neither kind of
+row can be chosen or applied. The user chooses per row which side's value to
 take; :meth:`Comparison.to_apply` gives exactly the values that would change on a target side.
 """
 
@@ -27,13 +30,19 @@ _VARIANTS_DIFFER = QT_TRANSLATE_NOOP(
 )
 
 
+NOT_ON_VALVE = QT_TRANSLATE_NOOP("Compare", "not on this valve")
+NOT_ON_SOURCE_VALVE = QT_TRANSLATE_NOOP("Compare", "not on the valve it was read from")
+
+
 @dataclass(frozen=True)
 class Side:
-    """One column: a label for the user, the valve type and its raw values."""
+    """One column: a label for the user, the valve type and its raw values; ``absent`` says
+    why a parameter of its valve type has no value (not on this valve)."""
 
     label: str
     type_key: TypeKey
     values: Mapping[str, Raw]
+    absent: Message = field(default_factory=NOT_ON_VALVE)
 
     @classmethod
     def factory(cls, type_key: TypeKey, label: str = "factory defaults") -> Side:
@@ -50,6 +59,11 @@ class Side:
         """The raw value, or None when the side lacks the parameter."""
         return self.values[parameter.mnemonic] if self.has(parameter) else None
 
+    def lacks(self, parameter: Parameter) -> bool:
+        """True when this side's valve type has the parameter but the side holds no value for
+        it (not on this valve): not a difference."""
+        return parameter.applies(self.type_key.variant) and parameter.mnemonic not in self.values
+
 
 @dataclass(frozen=True)
 class Row:
@@ -58,6 +72,12 @@ class Row:
     parameter: Parameter
     values: tuple[Raw | None, ...]
     reference: Raw | None = None
+    absent: tuple[bool, ...] = (False, False)  # per side: not on this valve
+
+    @property
+    def not_on_valve(self) -> bool:
+        """True when a side's valve type has the parameter but the side holds no value."""
+        return any(self.absent)
 
     @property
     def mnemonic(self) -> str:
@@ -66,13 +86,18 @@ class Row:
 
     @property
     def missing(self) -> bool:
-        """True when one of the compared sides lacks the parameter."""
-        return any(value is None for value in self.values)
+        """True when one compared side's valve type has no such parameter."""
+        return any(v is None and not a for v, a in zip(self.values, self.absent, strict=True))
+
+    @property
+    def comparable(self) -> bool:
+        """True when both compared sides hold a value."""
+        return all(value is not None for value in self.values)
 
     @property
     def changed(self) -> bool:
         """True when both compared sides have the parameter with different values."""
-        return not self.missing and len(set(self.values)) > 1
+        return self.comparable and len(set(self.values)) > 1
 
     @property
     def differs(self) -> bool:
@@ -104,7 +129,7 @@ class Comparison:
     def _row(self, parameter: Parameter) -> Row:
         values = tuple(side.value(parameter) for side in self.sides)
         reference = self.reference.value(parameter) if self.reference else None
-        return Row(parameter, values, reference)
+        return Row(parameter, values, reference, tuple(s.lacks(parameter) for s in self.sides))
 
     # --- what differs ---------------------------------------------------------------------
     @property
@@ -118,8 +143,15 @@ class Comparison:
         return [row for row in self.rows if row.missing]
 
     @property
+    def not_on_valve(self) -> list[Row]:
+        """Rows a side's valve type has but the side holds no value for: listed apart, not
+        compared, never a difference."""
+        return [row for row in self.rows if row.not_on_valve and not row.missing]
+
+    @property
     def equal(self) -> bool:
-        """True when nothing differs and the type keys are the same."""
+        """True when nothing that both sides have differs and the type keys are the same
+        (parameters not on a valve do not count)."""
         return not self.changed and not self.missing and not self.keys_differ
 
     @property
@@ -163,7 +195,7 @@ class Comparison:
         if side is None:
             self.choices.pop(mnemonic, None)
             return
-        if row.missing:
+        if not row.comparable:
             raise ValueError(f"{mnemonic}: one side lacks this parameter; it cannot be chosen")
         self.choices[mnemonic] = side
 

@@ -232,6 +232,18 @@ def _heard(seen: Any) -> tuple[NmtState | None, float | None, str]:
 _VALVES: dict[int, EmulatedValve] = {}
 _RUNNING: dict[int, int] = {}  # paced sessions per serial (the valve's thread runs while > 0)
 _LOCK = threading.Lock()
+_EMULATOR_OD = ["full"]  # --od of this process (set_emulator_od)
+
+
+def set_emulator_od(od: str) -> None:
+    """The object dictionary of the emulated valves this process makes from now on (``--od``):
+    ``full`` or ``manual`` (only the objects the manual lists; prm9tool.device.emulator.manual_od).
+    """
+    from prm9tool.device.emulator.manual_od import OD_PROFILES
+
+    if od not in OD_PROFILES:
+        raise Prm9Error(f"--od {od}: one of {', '.join(OD_PROFILES)}")
+    _EMULATOR_OD[0] = od
 
 
 def emulated_valve(type_key: str, serial: int) -> EmulatedValve:
@@ -241,7 +253,9 @@ def emulated_valve(type_key: str, serial: int) -> EmulatedValve:
     with _LOCK:
         valve = _VALVES.get(serial)
         if valve is None:
-            valve = EmulatedValve(type_key, serial, nv_path=emulator_nv_path(serial))
+            valve = EmulatedValve(
+                type_key, serial, nv_path=emulator_nv_path(serial), od=_EMULATOR_OD[0]
+            )
             _VALVES[serial] = valve
         elif str(valve.type_key) != str(TypeKey.parse(type_key)):
             raise Prm9Error(

@@ -95,6 +95,8 @@ class ValveStatus:
 
     ``error_code`` is the CANopen EMCY code of the most severe active error (0 = none),
     ``error_text`` its English description ("" when there is no error and no warning).
+    ``status_word``: the CiA 408 status word 0x6041 the state was decoded from, where it was
+    read over CANopen (None: another link).
     """
 
     device_state: DeviceState
@@ -108,6 +110,7 @@ class ValveStatus:
     supply_v: float
     nmt_state: NmtState
     booting: bool
+    status_word: int | None = None
 
 
 @dataclass(frozen=True, kw_only=True)
@@ -155,6 +158,9 @@ class UploadResult:
     reload_error: str | None = None
     failure: str | None = None
     skipped: tuple[str, ...] = ()
+    # how the valve keeps the set (CANopen: "stored with 0x1010", "kept by the valve as written
+    # (it has no store command)", "verified after a restart"; None: the link's store command)
+    store: str | None = None
 
 
 class OperationCancelledError(Prm9Error):

@@ -94,6 +94,7 @@ class ValveSession(ABC):
         self._device_id = device_id
         self._on_close: list[Callable[[], None]] = [on_close] if on_close is not None else []
         self.unavailable: set[str] = set()  # parameters this valve lacks on this link
+        self.store_done: str | None = None  # how the last store kept the set (UploadResult)
 
     def _start(self) -> None:
         """Identify the valve once the link is up (subclasses call this from __init__)."""
@@ -276,6 +277,7 @@ class ValveSession(ABC):
         step, writing, verified = "write", Steps(progress, total, 0, "write"), False
         try:
             self._before_upload(params, cancel)
+            params = self._write_order(params, values)
             marker = self._restart_marker()
             written = self._write_entries(params, values, writing, cancel)
             step = "verify"
@@ -300,9 +302,11 @@ class ValveSession(ABC):
             why = f"the valve refused to store the parameters: {exc}"
             return self._failed(written, {}, start, "store", True, why)
         except OperationCancelledError as exc:
-            raise OperationCancelledError(exc.step, reload_outcome(self._revert())) from exc
+            reverted = self._revert()
+            raise OperationCancelledError(exc.step, reload_outcome(reverted, self._kept)) from exc
         except CommunicationError as exc:
-            raise step_error(exc, step, self._revert(), writing.done, verified) from exc
+            reverted = self._revert()
+            raise step_error(exc, step, reverted, writing.done, verified, self._kept) from exc
         if progress:
             progress(total, total, "store")
         skipped = tuple(sorted(set(values) & self.unavailable))
@@ -312,6 +316,7 @@ class ValveSession(ABC):
             stored=True,
             duration_s=since(start),
             skipped=skipped,
+            store=self.store_done,
         )
 
     def download(
@@ -369,7 +374,18 @@ class ValveSession(ABC):
             reloaded=problem is None,
             reload_error=problem,
             failure=failure,
+            store=self.store_done,
         )
+
+    @property
+    def _kept(self) -> bool:
+        """True on a valve that keeps every write (a failed upload puts the backup back)."""
+        return False
+
+    def _write_order(self, params: list[Parameter], values: Mapping[str, Value]) -> list[Parameter]:
+        """The order the upload writes ``params`` in (a link may need a safe one)."""
+        del values
+        return params
 
     def _revert(self) -> str | None:
         """After a failed upload: working values ← stored ones (best effort); why it failed."""

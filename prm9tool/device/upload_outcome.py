@@ -41,8 +41,18 @@ def since(start: float) -> float:
     return time.monotonic() - start
 
 
-def reload_outcome(problem: str | None) -> str:
-    """What a failed upload left in the valve, given why the reload failed (None: it worked)."""
+KEPT_OUTCOME = (
+    "every value the upload changed was put back from the backup and reads back so: the valve "
+    "holds its previous set again (it keeps what is written)"
+)
+
+
+def reload_outcome(problem: str | None, kept: bool = False) -> str:
+    """What a failed upload left in the valve, given why the reload failed (None: it worked).
+    ``kept``: a valve that keeps every write (no store command): the backup's values were
+    written back instead, and ``problem`` says what it holds where that failed."""
+    if kept:
+        return KEPT_OUTCOME if problem is None else f"putting the backup back failed: {problem}"
     if problem is None:
         return "the valve's working parameters were reset to its stored ones (no restart)"
     return (
@@ -52,14 +62,21 @@ def reload_outcome(problem: str | None) -> str:
 
 
 def step_error(
-    exc: CommunicationError, step: str, problem: str | None, written: int, verified: bool
+    exc: CommunicationError,
+    step: str,
+    problem: str | None,
+    written: int,
+    verified: bool,
+    kept: bool = False,
 ) -> CommunicationError:
     """``exc`` with the failed step and the valve's state named; ``problem``: reload failure.
 
     ``written`` and ``verified`` say how far the upload got; they travel as attributes.
     """
     number = list(STEPS).index(step) + 1
-    if step != "store":
+    if kept:
+        outcome = reload_outcome(problem, kept=True)
+    elif step != "store":
         outcome = f"nothing was stored; {reload_outcome(problem)}"
     elif problem is None:
         outcome = (

@@ -77,6 +77,7 @@ class ValveConnection(QObject):
         self._device: ValveIdentity | None = None
         self._busy = 0
         self._stream_keys: list[str] = []  # GUI-side: keys of the running stream
+        self._generator = False  # GUI-side: a setpoint generator was started and not stopped
         self._samples_lost = 0  # GUI-side: lost samples of the running stream
         self._posted.connect(self._on_posted, Qt.ConnectionType.QueuedConnection)
         self.history: HistoryHook | None = None  # set_recorder(); used by the worker only
@@ -282,15 +283,27 @@ class ValveConnection(QObject):
         and on the valve's time base (:mod:`prm9tool.online.setpoint_driver`): the override
         over USB, RPDO1 over CANopen. A refused write arrives as ``failed`` and
         ``write_failed``."""
-        refused = lambda: self.write_failed.emit(list(OVERRIDE_OBJECTS))  # noqa: E731
+
+        def refused() -> None:
+            self._generator = False
+            self.write_failed.emit(list(OVERRIDE_OBJECTS))
+
         run = lambda s: self._worker.start_driver(s, settings)  # noqa: E731
+        self._generator = True
         self._submit(Job("generator", run, None, False, refused))
+
+    @property
+    def generator_running(self) -> bool:
+        """True from start_generator until stop_generator, a refusal or the link's end (what
+        the Tuning window tells the user a test will stop)."""
+        return self._generator
 
     def stop_generator(self) -> None:
         """End the waveform and give the setpoint back (SETPOVRON = 0; over CANopen the
         RPDO1 setpoint from before the generator)."""
         refused = lambda: self.write_failed.emit(["SETPOVRON"])  # noqa: E731
         run = lambda s: self._worker.stop_driver(s, switch_off=True)  # noqa: E731
+        self._generator = False
         self._submit(Job("generator_stop", run, None, False, refused))
 
     def watch_signals(self, keys: Sequence[str]) -> None:
@@ -371,6 +384,7 @@ class ValveConnection(QObject):
         self._online = False
         self._device = None
         self._busy = 0
+        self._generator = False
         self.busy_changed.emit(False)
         if self._stream_keys:
             self._stream_keys = []

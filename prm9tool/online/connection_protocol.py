@@ -136,6 +136,10 @@ class UploadOutcome(Protocol):
     def failure(self) -> str | None:
         """Why the step failed when ``mismatches`` do not say it (e.g. a refused store)."""
 
+    @property
+    def store(self) -> str | None:
+        """How the valve keeps the set over CANopen (prm9tool.device.canlink.storing)."""
+
 
 class LinkState(Protocol):
     """Whether a valve is online, and the signal announcing a change."""

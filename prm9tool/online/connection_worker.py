@@ -147,7 +147,7 @@ class ConnectionWorker:
             self.session = self._opener(entry)
         except TypeKeyNeededError as exc:  # the GUI asks for the key on the label, then again
             device_id, serial = str(getattr(entry, "device_id", entry)), exc.serial
-            told = exc.derived.config.value
+            told = exc.derived.config.value if exc.derived.config else ""
             self._host._post(lambda: self._host.type_key_needed.emit(device_id, serial, told))
             raise
         info = self.session.identify()

@@ -10,7 +10,7 @@ from dataclasses import dataclass, field
 from typing import TYPE_CHECKING, Any
 
 from prm9tool.catalogue import CATALOGUE
-from prm9tool.catalogue.signals import MAX_CHANNELS, signals_for
+from prm9tool.catalogue.signals import MAX_CHANNELS, SIGNAL_OBJECTS, signals_for
 from prm9tool.catalogue.typekey import TypeKey
 from prm9tool.catalogue.variant import Variant
 from prm9tool.errors import Prm9Error, SdoAbortError
@@ -74,6 +74,7 @@ class Poller:
         self._watch_chunk: list[str] = []
         self._watch_index = 0
         self._signal_keys: set[str] = set()
+        self._readable: set[str] = set()  # measuring points with an object (SIGNAL_OBJECTS)
         self._lost_reported = 0
 
     def reset(self, info: DeviceInfo) -> None:
@@ -81,6 +82,11 @@ class Poller:
         variant = variant_of(info)
         self.stream_keys, self._watch_chunk, self._last_row = [], [], {}
         self._signal_keys = {s.key for s in signals_for(variant)} if variant else set()
+        self._readable = {
+            key
+            for key, (mnemonic, _factor) in SIGNAL_OBJECTS.items()
+            if key in self._signal_keys and variant and CATALOGUE[mnemonic].applies(variant)
+        }
         if not self.live_explicit:
             self.live = live_mnemonics(variant)
 
@@ -142,14 +148,17 @@ class Poller:
     def _read_signals(self, session: ValveSession) -> dict[str, float]:
         """Latest values of the watched measuring points.
 
-        The valve reports measuring points only in its stream (at most three at once). While
-        the oscilloscope streams, its samples serve, and every other watched point is NaN (no
-        value now), never the value it had before the oscilloscope took the stream; otherwise
-        a slow "watch" stream visits the watched points three at a time, so each one is
-        refreshed every few polls.
+        The valve reports measuring points in its stream (at most three at once). While the
+        oscilloscope streams, its samples serve; a point the valve also holds as an object
+        (the actual position, the demand, the control deviation …: SIGNAL_OBJECTS) is read;
+        every other watched point is NaN (no value now), never the value it had before the
+        oscilloscope took the stream. Otherwise a slow "watch" stream visits the watched points
+        three at a time, so each one is refreshed every few polls.
         """
         if self.stream_keys:
-            return {k: self._last_row.get(k, math.nan) for k in self.watched}
+            live = {k: self._last_row.get(k, math.nan) for k in self.watched}
+            live.update(self._read_objects(session, [k for k in live if math.isnan(live[k])]))
+            return live
         values: dict[str, float] = {}
         if self._watch_chunk:
             block = session.stream_read()
@@ -162,6 +171,20 @@ class Poller:
             session.stream_stop()
         self._watch_chunk = chunk
         return values
+
+    def _read_objects(self, session: ValveSession, keys: list[str]) -> dict[str, float]:
+        """The points among ``keys`` the valve holds as objects, read now; one it refuses is
+        not asked for again in this session."""
+        wanted = [k for k in keys if k in self._readable]
+        if not wanted:
+            return {}
+        try:
+            raw = session.read_many([SIGNAL_OBJECTS[k][0] for k in wanted])
+        except SdoAbortError as exc:
+            log.info("measuring point by object refused, no longer read: %s", exc)
+            self._readable -= set(wanted)
+            return {}
+        return {k: float(raw[SIGNAL_OBJECTS[k][0]]) * SIGNAL_OBJECTS[k][1] for k in wanted}
 
     def _next_watch_chunk(self) -> list[str]:
         usable = [k for k in self.watched if k in self._signal_keys]

@@ -98,6 +98,8 @@ class HistoryHook:
             after = values if whole <= set(values) else session.download()
         details = {"written": result.written, "chosen": len(values), "mismatches": {
             m: [str(want), str(got)] for m, (want, got) in result.mismatches.items()}}  # fmt: skip
+        if result.store:
+            details["store"] = result.store  # which store happened (CANopen)
         outcome = "ok" if result.stored else "verification-failed"
         self.add(session, "upload", outcome, after, details, result.failed_step)
         return result

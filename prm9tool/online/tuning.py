@@ -23,23 +23,23 @@ import numpy as np
 from PySide6.QtCore import QCoreApplication, QObject, Signal
 
 from prm9tool.catalogue import CATALOGUE
-from prm9tool.catalogue.signals import BY_KEY
 from prm9tool.catalogue.typekey import TypeKey
-from prm9tool.characterize.procedures import LOOPS
+from prm9tool.characterize.autotune import emulated_step
+from prm9tool.characterize.procedures import LOOPS, STEP_CAPTION
 from prm9tool.characterize.transparent import NO_SHAPING, UNITY_GAIN
 from prm9tool.errors import Prm9Error
-from prm9tool.i18n import format_number, format_significant
+from prm9tool.i18n import format_number
+from prm9tool.messages import Number
 from prm9tool.model.document import ParameterDocument
+from prm9tool.scope.measure import StepFigures as ScopeFigures
 from prm9tool.scope.measure import step_figures
+from prm9tool.translate import translated
 
 if TYPE_CHECKING:
     from prm9tool.device.emulator import EmulatedValve
 
 Raw = int | str
 
-PRE_STEP_S = 0.005
-SAMPLES = 300  # points per drawn response (the capture is decimated to about this many)
-VOLTS_PER_PERCENT = 0.1  # setpoint type 9: ±10 V = ±100 %
 _TRANSPARENT: dict[str, int] = {"AINSETP": 9, "INVERSEP": 0, **NO_SHAPING}
 # The position loop alone: spool position control mode (no process loop on E04), no gain/offset.
 _POSITION_ONLY: dict[str, int] = {"CTRLMODE": 2, **UNITY_GAIN}
@@ -66,14 +66,18 @@ class StepResponse:
     actual: tuple[float, ...]
     step_pct: float
 
+    def measured(self) -> ScopeFigures | None:
+        """The oscilloscope's figures of this step (None: the actual value did not move)."""
+        t = np.asarray(self.t)
+        return step_figures(t, np.asarray(self.actual), np.asarray(self.setpoint))
+
     def figures(self) -> StepFigures:
         """Overshoot, rise time, settling time and steady-state error relative to the step.
 
         The oscilloscope's definitions (:func:`prm9tool.scope.step_figures`, reference = the
         simulated setpoint), so the controller dialog and the scope give the same figures.
         """
-        t = np.asarray(self.t)
-        measured = step_figures(t, np.asarray(self.actual), np.asarray(self.setpoint))
+        measured = self.measured()
         if measured is None:  # the actual value did not move at all
             return StepFigures(0.0, None, None, 100.0)
         step = measured.target - measured.initial
@@ -86,8 +90,10 @@ class StepResponse:
         )
 
     def summary(self) -> str:
-        """One line for the dialog: overshoot, rise time, settling time, remaining error."""
+        """One line for the dialog: the step and its window, overshoot, rise time, settling
+        time (or what the response did instead), remaining error."""
         f = self.figures()
+        measured = self.measured()
         translate = QCoreApplication.translate  # the name pyside6-lupdate looks for
 
         def ms(value: float | None) -> str:
@@ -97,16 +103,23 @@ class StepResponse:
                 else f"{format_number(value * 1000.0, 1)} ms"
             )
 
+        why = measured.not_settled("%") if measured is not None else None
+        caption = STEP_CAPTION(
+            Number("0"),
+            Number(f"{self.step_pct:g}"),
+            Number(f"{self.t[0] * 1000.0:.0f}".replace("-", "−")),
+            Number(f"{self.t[-1] * 1000.0:.0f}"),
+        )
         return (
             translate(
                 "StepResponse",
-                "Step %1 %: overshoot %2 %, rise time %3, settling (±2 %) %4, remaining error %5 %",
+                "{0}: overshoot {1} %, rise time {2}, settling (±2 %) {3}, remaining error {4} %",
             )
-            .replace("%1", format_significant(self.step_pct, 6))
-            .replace("%2", format_number(f.overshoot_pct, 1))
-            .replace("%3", ms(f.rise_time_s))
-            .replace("%4", ms(f.settling_time_s))
-            .replace("%5", format_number(f.steady_error_pct, 1))
+            .replace("{0}", translated(caption))
+            .replace("{1}", format_number(f.overshoot_pct, 1))
+            .replace("{2}", ms(f.rise_time_s))
+            .replace("{3}", ms(f.settling_time_s) if why is None else translated(why))
+            .replace("{4}", format_number(f.steady_error_pct, 1))
         )
 
 
@@ -122,28 +135,22 @@ def simulation_values(base: Mapping[str, Raw], loop: str) -> dict[str, Raw]:
 def simulate_step(type_key: str | TypeKey, values: Mapping[str, Raw], loop: str) -> StepResponse:
     """Run the emulated valve through a setpoint step and return the loop's response.
 
-    Blocking (tens of milliseconds): call it off the GUI thread. Raises Prm9Error subclasses
-    if the emulated valve refuses a parameter.
+    The autotune's step (:func:`prm9tool.characterize.autotune.emulated_step`: from rest at
+    0 %, the same window, every 200 µs cycle), so the dialog and the autotune give the same
+    figures for the same gains. Blocking (tens of milliseconds): call it off the GUI thread.
+    Raises Prm9Error subclasses if the emulated valve refuses a parameter.
     """
     valve = _prepared_valve(type_key, values, loop)
-    power_up(valve)
     lp = LOOPS[loop]
-    sp_key, act_key, step, duration = lp.setpoint, lp.actual, lp.step_pct, lp.simulated_s
-    decimation = max(1, round((PRE_STEP_S + duration) / valve.CYCLE_S / SAMPLES))
-    valve.capture_start([sp_key, act_key], decimation)
-    valve.advance(PRE_STEP_S)
-    valve.set_input("setpoint", step * VOLTS_PER_PERCENT)
-    valve.advance(duration)
-    data = valve.capture_read()
-    valve.capture_stop()
-    dt = valve.CYCLE_S * decimation
+    result = emulated_step(valve, loop, lp.step_pct, lp.simulated_s)
+    channels = result.record.channels
     return StepResponse(
         loop,
         {mn: int(v) for mn, v in values.items() if mn.startswith(("POS", "PRC"))},
-        tuple(n * dt - PRE_STEP_S for n in range(len(data))),
-        tuple(float(v) * BY_KEY[sp_key].scale for v in data[:, 0]),
-        tuple(float(v) * BY_KEY[act_key].scale for v in data[:, 1]),
-        step,
+        tuple(float(v) for v in result.record.t),
+        tuple(float(v) for v in channels[lp.setpoint]),
+        tuple(float(v) for v in channels[lp.actual]),
+        lp.step_pct,
     )
 
 
@@ -157,7 +164,6 @@ def _prepared_valve(type_key: str | TypeKey, values: Mapping[str, Raw], loop: st
         param = CATALOGUE.get(mnemonic)
         if param is not None and param.writable and param.applies(analog.variant):
             valve.write(param.index, param.subindex, raw)
-    valve.set_input("setpoint", 0.0)
     if loop == "process":
         valve.set_input("sensor_from_plant", 1)
     return valve

@@ -65,6 +65,12 @@ class TuningRunner(QObject):
         self.busy_changed.emit(True)
         self._start(kind, procedure)
 
+    def played_s(self) -> float:
+        """Valve seconds the running procedure has played so far (0 when none runs)."""
+        with self._lock:
+            rig = self._rig
+        return rig.played_s if rig is not None else 0.0
+
     def stop(self) -> None:
         """Ask the running procedure to stop (it restores the valve)."""
         self.stop_requested.set()

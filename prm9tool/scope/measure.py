@@ -11,6 +11,8 @@ from typing import TextIO
 import numpy as np
 
 from prm9tool.catalogue.signals import Signal
+from prm9tool.messages import Message
+from prm9tool.scope.ripple import not_settled, ripple_at_end
 
 
 @dataclass(frozen=True)
@@ -95,11 +97,25 @@ class StepFigures:
     settling_time: float  # until the response stays within ±band of the final value
     band: float = 0.02
     t_end: float = math.nan  # end of the measured segment: the next step or the window's end
+    ripple: float = math.nan  # not settled: half the peak-to-peak left at the end (NaN: settled)
+    ripple_hz: float = math.nan  # ... and its frequency (NaN: settled, or not periodic)
 
     @property
     def steady_state_error(self) -> float:
         """Target − final value (NaN without a reference)."""
         return self.target - self.final
+
+    @property
+    def settled(self) -> bool:
+        """True when the response came into ±band of its final value for good."""
+        return math.isfinite(self.settling_time)
+
+    def not_settled(self, unit: str = "%") -> Message | None:
+        """Why there is no settling time, with what the response did instead (None: settled),
+        e.g. "did not settle within ±2 % of the step: oscillation of ±1.5 % at 24 Hz"."""
+        if self.settled:
+            return None
+        return not_settled(self.band, self.ripple, self.ripple_hz, unit)
 
 
 @dataclass(frozen=True)
@@ -301,7 +317,9 @@ def _segment(
     ya_raw = y[after]
     final = float(np.mean(ya_raw[-max(1, len(ya_raw) // 10) :]))
     sample_noise = noise  # of the samples; a level's slow swing (hunting) does not enter it
-    noise = max(noise, _spread(rest))
+    spread = _spread(rest)
+    if spread <= 3.0 * noise_level(rest) or not len(rest) >= 5:  # a level swinging smoothly
+        noise = max(noise, spread)  # (a hunting spool) is not noise: it would hide a small step
     size = final - initial
     if strict and not (_at_rest(ya_raw, size, band, noise) and _at_rest(before, size, band, noise)):
         return Verdict.TOO_SHORT, None
@@ -313,21 +331,40 @@ def _segment(
     excess = max(0.0, float(np.max((ya - final) / size)))
     overshoot = excess * 100.0 if excess * abs(size) > OVERSHOOT_NOISE * sample_noise else 0.0
     settling = _settling_time(ta, ya, final, band * abs(size), t_step)
+    end = ripple_at_end(ta, ya)
+    if end.amplitude > band * abs(size):  # it ends swinging beyond the band: never settled
+        settling = math.nan  # (a last stretch inside it would give a time by chance)
+    left = end if math.isnan(settling) else None
     figures = StepFigures(
-        t_step, initial, final, target, t90 - t10, overshoot, settling, band, float(t[-1])
+        t_step,
+        initial,
+        final,
+        target,
+        t90 - t10,
+        overshoot,
+        settling,
+        band,
+        float(t[-1]),
+        left.amplitude if left else math.nan,
+        left.frequency_hz if left else math.nan,
     )
     return Verdict.MEASURED, figures
 
 
 def _at_rest(y: np.ndarray, size: float, band: float, noise: float) -> bool:
     """True when ``y`` has stopped moving by its end: the medians of the two halves of its
-    last 20 % differ by less than half the settling band (or than their noise)."""
+    last 20 % differ by less than half the settling band (or than their noise), or it
+    oscillates about a level that no longer moves (over its last half, the mean of the last
+    whole period is that of the first within the same allowance: a hunting spool)."""
     tail = y[-max(2 * MIN_BEFORE, int(len(y) * TAIL_SHARE)) :]
     half = len(tail) // 2
     if half == 0:
         return True
-    drift = abs(float(np.median(tail[half:]) - np.median(tail[:half])))
-    return drift <= max(REST_SHARE * band * abs(size), 4.0 * noise / math.sqrt(half))
+    allowed = max(REST_SHARE * band * abs(size), 4.0 * noise / math.sqrt(half))
+    if abs(float(np.median(tail[half:]) - np.median(tail[:half]))) <= allowed:
+        return True
+    left = ripple_at_end(np.arange(len(y), dtype=float), y)
+    return left.periodic and abs(left.drift) <= allowed
 
 
 def _settling_time(

@@ -22,6 +22,7 @@ from PySide6.QtWidgets import (
     QDialog,
     QDialogButtonBox,
     QFormLayout,
+    QHBoxLayout,
     QHeaderView,
     QInputDialog,
     QLabel,
@@ -39,8 +40,11 @@ from prm9tool.errors import TypeKeyError
 from prm9tool.files.can_type_keys import remember
 from prm9tool.online.bus_monitor import BusMonitor, HeardNode
 from prm9tool.online.connection_protocol import ListedValves, ValveListing
+from prm9tool.online.lss_commissioning import LssCommissioning
 from prm9tool.paths import user_data_dir
 from prm9tool.translate import error_text
+from prm9tool.views.can_bus_lss import BusLssActions
+from prm9tool.views.can_lss_panel import LssPanel
 
 INTERFACE_KEY, CHANNEL_KEY, BITRATE_KEY = "can/interface", "can/channel", "can/bitrate"
 INTERFACES = (
@@ -85,9 +89,12 @@ class CanBusDialog(QDialog):
         settings: QSettings,
         parent: QWidget | None = None,
         monitor: BusMonitor | None = None,
+        lss: LssCommissioning | None = None,
     ) -> None:
-        """``monitor``: keeps the node table live after a search (None: as the scan saw it)."""
+        """``monitor``: keeps the node table live after a search (None: as the scan saw it);
+        ``lss``: shows the devices without a node ID and assigns one (None: not offered)."""
         super().__init__(parent)
+        self._chosen: str | None = None  # a valve given its node ID here (LSS)
         self.setWindowTitle(self.tr("CAN bus"))
         self._scan, self._settings = scan, settings
         self._entries: list[ValveListing] = []
@@ -130,7 +137,7 @@ class CanBusDialog(QDialog):
         self.table.setEditTriggers(QAbstractItemView.EditTrigger.NoEditTriggers)
         self.table.horizontalHeader().setSectionResizeMode(QHeaderView.ResizeMode.ResizeToContents)
         self.table.horizontalHeader().setStretchLastSection(True)
-        self.table.itemSelectionChanged.connect(self._update_ok)
+        self.table.itemSelectionChanged.connect(self.update_ok)
         self.table.doubleClicked.connect(lambda _i: self._accept_if_valve())
         self.buttons = QDialogButtonBox(
             QDialogButtonBox.StandardButton.Ok | QDialogButtonBox.StandardButton.Cancel
@@ -140,15 +147,32 @@ class CanBusDialog(QDialog):
         form = QFormLayout()
         form.addRow(self.tr("Interface (python-can)"), self.interface)
         form.addRow(self.tr("Channel"), self.channel)
-        form.addRow(self.tr("Bit rate"), self.bitrate)
+        rate_row = QHBoxLayout()
+        rate_row.addWidget(self.bitrate, 1)
+        self._lss = lss
+        self.lss_actions = BusLssActions(self, lss)
+        self.find_rate, self.renumber = self.lss_actions.find_rate, self.lss_actions.renumber
+        rate_row.addWidget(self.find_rate)
+        form.addRow(self.tr("Bit rate"), rate_row)
         layout = QVBoxLayout(self)
         layout.addLayout(form)
         layout.addWidget(self.search)
         layout.addWidget(self.state)
         layout.addWidget(self.table)
+        lss_row = QHBoxLayout()
+        lss_row.addWidget(self.renumber)
+        lss_row.addWidget(self.lss_actions.change_rate)
+        lss_row.addStretch(1)
+        layout.addLayout(lss_row)
+        self.lss_panel: LssPanel | None = None
+        if lss is not None:
+            self.lss_panel = LssPanel(lss, self.bus, self.taken, self)
+            self.lss_panel.assigned_id.connect(self.on_lss_assigned)
+            self.lss_panel.assigned_many.connect(self._on_search_clicked)
+            layout.addWidget(self.lss_panel)
         layout.addWidget(self.buttons)
-        self.resize(1060, 420)
-        self._update_ok()
+        self.resize(1060, 620 if lss is not None else 420)
+        self.update_ok()
 
     def bus(self) -> dict[str, object]:
         """The bus as entered."""
@@ -160,6 +184,8 @@ class CanBusDialog(QDialog):
 
     def selected_device_id(self) -> str | None:
         """``can:NODE`` of the chosen PRM9 (None: none chosen)."""
+        if self._chosen is not None:
+            return self._chosen
         row = self.table.currentRow()
         if not 0 <= row < len(self._entries):
             return None
@@ -192,6 +218,8 @@ class CanBusDialog(QDialog):
             return
         nodes = [e for e in found if e.kind in ("can", "not-prm9")]
         self._fill(nodes)
+        if self.lss_panel is not None:
+            self.lss_panel.start_scan()
         valves = sum(e.kind == "can" for e in nodes)
         self.state.setText(
             self.tr("%n node(s) answered.", "", len(nodes))
@@ -220,7 +248,7 @@ class CanBusDialog(QDialog):
                 if not valve:
                     item.setFlags(item.flags() & ~Qt.ItemFlag.ItemIsSelectable)
                 self.table.setItem(row, column, item)
-        self._update_ok()
+        self.update_ok()
 
     def _on_nodes_heard(self, nodes: list[HeardNode]) -> None:
         """The monitor's news: NMT state, heartbeat age, last EMCY; new and silent nodes."""
@@ -272,9 +300,35 @@ class CanBusDialog(QDialog):
         if isValid(self):
             self.state.setText(self.tr("The bus cannot be watched: {0}").format(reason))
 
-    def _update_ok(self) -> None:
+    @property
+    def entries(self) -> list[ValveListing]:
+        """The nodes the last search listed, by row."""
+        return self._entries
+
+    def search_bus(self) -> None:
+        """Search the bus as entered (as the button does)."""
+        self._on_search_clicked()
+
+    def stop_monitor(self) -> None:
+        """Let the live view go of the adapter (finding the bit rate opens it otherwise)."""
+        if self._monitor is not None:
+            self._monitor.stop()
+
+    def taken(self) -> set[int]:
+        """Node IDs that answered the search or were heard since."""
+        ids = {int(e.device_id.removeprefix("can:")) for e in self._entries}
+        return ids | set(self._extra)
+
+    def on_lss_assigned(self, device_id: str) -> None:
+        """A valve answers at the node ID it was given: go online with it."""
+        self._chosen = device_id
+        self._remember()
+        self.accept()
+
+    def update_ok(self) -> None:
         ok = self.buttons.button(QDialogButtonBox.StandardButton.Ok)
         ok.setEnabled(self.selected_device_id() is not None)
+        self.lss_actions.set_selected(self.selected_device_id() is not None)
 
     def _accept_if_valve(self) -> None:
         if self.selected_device_id() is None:
@@ -299,15 +353,24 @@ def ask_type_key(parent: QWidget | None, serial: int, told: str) -> tuple[str | 
     """Ask for the type key on the label of valve ``serial``, whose objects say ``told`` (E02,
     E04) -CA; a fitting key is remembered for the serial number. Returns (key, "") — or (None,
     why the answer does not fit), (None, "") when the user cancelled."""
-    text, ok = QInputDialog.getText(
-        parent,
-        QCoreApplication.translate("CanBusDialog", "Type key of the valve"),
+    question = (
         QCoreApplication.translate(
             "CanBusDialog",
             "The valve (serial number {0}) does not tell its type key; its objects say "
             "{1} -CA. Type key on the valve's label:",
-        ).format(serial, told),
-        text=f"PRM9-06.3Z11/30-24{told}S02-CA",
+        ).format(serial, told)
+        if told
+        else QCoreApplication.translate(
+            "CanBusDialog",
+            "The valve (serial number {0}) does not tell its type key, and its objects do not "
+            "tell E02 from E04 (-CA). Type key on the valve's label:",
+        ).format(serial)
+    )
+    text, ok = QInputDialog.getText(
+        parent,
+        QCoreApplication.translate("CanBusDialog", "Type key of the valve"),
+        question,
+        text=f"PRM9-06.3Z11/30-24{told or 'E02'}S02-CA",
     )
     if not ok:
         return None, ""
@@ -315,7 +378,7 @@ def ask_type_key(parent: QWidget | None, serial: int, told: str) -> tuple[str | 
         key = TypeKey.parse(text)
     except TypeKeyError as exc:
         return None, error_text(exc)
-    if key.config.value != told or not key.canopen:
+    if (told and key.config.value != told) or not key.canopen:
         problem = QCoreApplication.translate(
             "CanBusDialog", "{0} does not fit the valve: its objects say {1} -CA."
         )

@@ -87,13 +87,15 @@ class CompareTableModel(QAbstractTableModel):
                 return text(row.parameter.text)
             side = self._side(column)
             raw = row.reference if side < 0 else row.values[side]
+            if raw is None and side >= 0 and row.absent[side]:
+                return translated(self.comparison.sides[side].absent)
             if raw is None:
                 return "—"
             return f"{format_value(row.parameter, raw)} {row.parameter.unit}".strip()
         chosen = self.comparison.choices.get(row.mnemonic)
         side = self._side(column)
         if role == Qt.ItemDataRole.CheckStateRole and column >= FIRST_VALUE and side >= 0:
-            if row.missing:
+            if not row.comparable:  # missing on a side, or not on the valve: nothing to choose
                 return None
             return Qt.CheckState.Checked if chosen == side else Qt.CheckState.Unchecked
         if role == Qt.ItemDataRole.FontRole and row.differs and column >= FIRST_VALUE:
@@ -102,6 +104,11 @@ class CompareTableModel(QAbstractTableModel):
             return font
         if role == Qt.ItemDataRole.ToolTipRole and row.missing:
             return self.tr("One side's valve type has no such parameter; it cannot be chosen.")
+        if role == Qt.ItemDataRole.ToolTipRole and row.not_on_valve:
+            return self.tr(
+                "The valve type has this parameter, but the valve does not (a valve over CANopen"
+                " without this object): not compared, not a difference; it cannot be chosen."
+            )
         return None
 
     def flags(self, index: Index) -> Qt.ItemFlag:
@@ -239,6 +246,8 @@ class CompareDialog(QDialog):
             self.tr("%n parameter(s) differ", "", len(c.changed))
             + ", "
             + self.tr("%n parameter(s) only on one side", "", len(c.missing))
+            + ", "
+            + self.tr("%n parameter(s) not on the valve, not compared", "", len(c.not_on_valve))
             + ", "
             + self.tr("%n shown", "", self.model.rowCount())
         ]

@@ -17,7 +17,7 @@ from PySide6.QtCore import QObject, Signal
 from PySide6.QtWidgets import QDialog, QFileDialog, QWidget
 
 from prm9tool.catalogue.typekey import TypeKey
-from prm9tool.compare.model import Comparison, Side
+from prm9tool.compare.model import NOT_ON_SOURCE_VALVE, Comparison, Side
 from prm9tool.errors import FileFormatError
 from prm9tool.model.access import AccessModel
 from prm9tool.model.document import ParameterDocument, Raw
@@ -97,7 +97,7 @@ class CompareWorkflow(QObject):
                            self.tr("{0} cannot be compared.").format(path.name),
                            error_text(contents))  # fmt: skip
             return
-        file_side = Side(path.name, contents.type_key, contents.values)
+        file_side = Side(path.name, contents.type_key, contents.values, NOT_ON_SOURCE_VALVE())
         comparison = Comparison((self._document(), file_side), self._factory(self._doc.type_key))
         dialog = self._run(comparison, (0,))
         if dialog.applied is not None and dialog.applied[1]:

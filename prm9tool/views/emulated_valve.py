@@ -23,6 +23,7 @@ from PySide6.QtWidgets import (
     QWidget,
 )
 
+from prm9tool.catalogue.canopen_switches import node_position
 from prm9tool.model.document import ParameterDocument
 from prm9tool.online.valve_control import ValveControl
 from prm9tool.views.actions import MainActions
@@ -160,7 +161,7 @@ class EmulatedValveDialog(QDialog):
         self.switches = {name: QComboBox() for name in ("switch_baud", "switch_node")}
         for name, combo in self.switches.items():
             for position in range(16):
-                combo.addItem(f"{position:X}", position)
+                combo.addItem(f"{position:X}", position)  # texts: retranslate()
             combo.activated.connect(
                 lambda _=0, n=name, c=combo: self._on_field_changed(n, c.currentData())
             )
@@ -194,6 +195,9 @@ class EmulatedValveDialog(QDialog):
         }
         for name, label in self.labels.items():
             label.setText(texts[name])
+        node = self.switches["switch_node"]
+        for position in range(16):
+            node.setItemText(position, self._node_position_text(position))
         self.note.setText(
             self.tr(
                 "The valve reads its rotary switches at power-up only: restart it "
@@ -202,6 +206,17 @@ class EmulatedValveDialog(QDialog):
                 "no setpoint generator)."
             )
         )
+
+    def _node_position_text(self, position: int) -> str:
+        """``1 — LSS, automatic bit rate``: what a node-ID switch position means (table 7-17)."""
+        decoded = node_position(position)
+        if decoded.software:
+            meaning = self.tr("node ID and bit rate by software (NODEID, BITRATE)")
+        elif decoded.lss:
+            meaning = self.tr("LSS: node ID from an LSS master, automatic bit rate")
+        else:
+            meaning = self.tr("node {0}").format(decoded.node_id)
+        return f"{position:X} — {meaning}"
 
     def _unit(self, mnemonic: str) -> str:
         if mnemonic not in self._document.values:

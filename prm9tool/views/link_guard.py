@@ -53,6 +53,12 @@ class LinkGuard(QObject):
                 "(manual table 7-17), so this change does not move the valve; it stays at node "
                 "{1}."
             ).format(switch_node, after.node_id)
+        if switch_node == 1:
+            return self.tr(
+                "The node-ID switch is at position 1 (LSS): an LSS master sets node ID and bit "
+                "rate (manual table 7-17; Communication → CAN bus). NODEID and BITRATE apply at "
+                "position 0 only, so this change does not move the valve."
+            )
         rate = format_bitrate(after.bitrate_kbit)
         return self.tr(
             "After the valve's next power-up or restart it answers at node {0}, {1}. Store the "

@@ -27,7 +27,7 @@ from prm9tool.errors import CommunicationError, SdoAbortError
 SCAN_WINDOW_S = 0.3
 IDENTIFY_TIMEOUT_S = 0.3
 PCODE = (0x2041, 0)  # the type key: this project's decision (not in the manual)
-EXT_SENSOR_TYPE = (0x2005, 1)  # E04 only (manual table 7-14)
+CONTROL_MODE = (0x6043, 0)  # 4 = process control: E04 valves only (table 7-16)
 
 
 @dataclass(frozen=True)
@@ -113,14 +113,16 @@ def optional_text(sdo: SdoChannel, index: int, subindex: int) -> str | None:
 
 
 def derive(sdo: SdoChannel) -> Derived:
-    """What the object dictionary tells about the type key: E04 has 0x2005 (sensor type)."""
+    """What the object dictionary tells about the type key: control mode 0x6043 = 4 exists
+    on E04 valves only; anything else leaves E02/E04 open (0x2005–0x2100 are on every valve,
+    manual table 7-14, so their presence tells nothing)."""
     try:
-        sdo.upload(*EXT_SENSOR_TYPE)
+        mode = int.from_bytes(sdo.upload(*CONTROL_MODE)[:1], "little", signed=True)
     except SdoAbortError as exc:
         if exc.code in MISSING:
-            return Derived(Config.E02)
+            return Derived(None)
         raise
-    return Derived(Config.E04)
+    return Derived(Config.E04 if mode == 4 else None)
 
 
 @contextmanager

@@ -2,7 +2,8 @@
 
 Node ID and bit rate take effect at power-up, so an NMT reset node may bring the valve back at
 another address: with the node-ID switch at 0 (table 7-17) its stored NODEID and BITRATE
-(0x2030/1, 0x2030/2, this project's objects) decide; at 1 (LSS) NODEID and the bus's bit rate;
+(0x2030/1, 0x2030/2, this project's objects) decide; at 1 (LSS) the node ID an LSS master
+stored (it stays where it is) and the bus's bit rate;
 at 2…F the switches, read at power-up. Before the reset :func:`predict` reads the switch
 positions and those objects (the working values, which the store made the stored ones) and
 works out where the valve will answer (``catalogue.canopen_switches.effective``, the rule the
@@ -33,6 +34,7 @@ if TYPE_CHECKING:
     from prm9tool.device.canlink.sdo import SdoChannel
     from prm9tool.device.canlink.session import CanopenSession
 
+LSS_POSITION = 1  # node-ID switch: LSS and automatic bit rate (table 7-17)
 SETTINGS = ("SWBAUD", "SWNODE", "NODEID", "BITRATE", "CANTERM")  # effective()'s arguments
 FIXED_BITRATE = frozenset({"socketcan"})  # the system sets the bit rate, not python-can
 
@@ -70,6 +72,10 @@ def predict(session: CanopenSession) -> Whereabouts | None:
         return None
     raw = [int(values[m]) for m in SETTINGS]
     after = effective(*raw)
+    if after.can_enabled and raw[1] == LSS_POSITION:
+        # LSS: the node ID an LSS master stored, which the valve runs at now (CiA 305); the
+        # bus's bit rate. NODEID/BITRATE do not apply: it stays where it is.
+        return Whereabouts(True, session.node_id, None, True)
     rate = after.bitrate_kbit * 1000 if after.bitrate_kbit else None
     return Whereabouts(after.can_enabled, after.node_id, rate, raw[1] >= 2)
 

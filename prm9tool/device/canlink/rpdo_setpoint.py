@@ -24,7 +24,7 @@ from __future__ import annotations
 from typing import TYPE_CHECKING
 
 from prm9tool.catalogue import CATALOGUE
-from prm9tool.device.canlink.status import device_state
+from prm9tool.device.canlink.status import device_state, state_text
 from prm9tool.device.records import DeviceState, NmtState
 from prm9tool.device.session import NotAvailableError
 from prm9tool.device.setpoint import SetpointLink
@@ -111,9 +111,9 @@ class RpdoSetpoint(SetpointLink):
             raise RpdoSetpointError(_OTHER_MAPPING(node, f"0x{entry:04X}"))
         self._cob_id, self._object = cob & 0x7FF, SETPOINT_OBJECTS[entry]
         self._control = sdo.read_u32(0x6040, 0) & 0xFFFF
-        state = device_state(sdo.read_u32(0x6041, 0))
-        if state != DeviceState.DEVICE_MODE_ACTIVE:
-            raise RpdoSetpointError(_NOT_ENABLED(node, state.value))
+        word = sdo.read_u32(0x6041, 0) & 0xFFFF
+        if device_state(word) != DeviceState.DEVICE_MODE_ACTIVE:
+            raise RpdoSetpointError(_NOT_ENABLED(node, state_text(word)))
         self._before = int(self._session.read(self._object))
         self._arm_deadline()
         self.set(raw)

@@ -39,6 +39,7 @@ from prm9tool.device.canlink.pdo_scope import NotPdoMappedError, PdoSampler, min
 from prm9tool.device.canlink.sampler import SdoSampler
 from prm9tool.device.canlink.sdo import MISSING, SdoChannel
 from prm9tool.device.canlink.status import read_status
+from prm9tool.device.canlink.storing import STORED_WITH_1010, factory_upload, store_kind
 from prm9tool.device.canlink.typekeys import remember, resolve
 from prm9tool.device.canlink.upload_steps import UploadSteps
 from prm9tool.device.records import (
@@ -247,13 +248,23 @@ class CanopenSession(UploadSteps, ValveSession):
 
     # --- commands ---------------------------------------------------------------------------
     def store(self) -> None:
-        """0x1010/1 = "save": the working parameters become the stored ones."""
-        self._sdo.download(0x1010, 1, SAVE_SIGNATURE.to_bytes(4, "little"), STORE_TIMEOUT_S)
+        """0x1010/1 = "save": the working parameters become the stored ones; a valve without
+        a store command kept every write already (prm9tool.device.canlink.storing)."""
+        self._store = self._store or store_kind(self._sdo)
+        if self._store == STORED_WITH_1010:
+            self._sdo.download(0x1010, 1, SAVE_SIGNATURE.to_bytes(4, "little"), STORE_TIMEOUT_S)
+        self.store_done = self._store
         self._snapshot = None  # stored: nothing to put back any more
 
     def restore_factory(self) -> None:
-        """0x1011/1 = "load": factory values at the next reset or power-up."""
-        self._sdo.download(0x1011, 1, LOAD_SIGNATURE.to_bytes(4, "little"), STORE_TIMEOUT_S)
+        """0x1011/1 = "load": factory values at the next reset or power-up. A valve without
+        0x1011 (manual table 7-13) gets the catalogue's factory set uploaded, as any upload."""
+        try:
+            self._sdo.download(0x1011, 1, LOAD_SIGNATURE.to_bytes(4, "little"), STORE_TIMEOUT_S)
+        except SdoAbortError as exc:
+            if exc.code not in MISSING:
+                raise
+            factory_upload(self)
 
     def restart(self) -> None:
         """NMT reset node, then find the valve again — at its old node, or where a changed node

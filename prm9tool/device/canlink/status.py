@@ -1,6 +1,7 @@
 """The valve's status over CANopen: device state, errors, LEDs, NMT state.
 
-Read by SDO: status word 0x6041 (state number in bits 8…11, manual §7.4, figure 7-11), error
+Read by SDO: status word 0x6041 (the state in bits 0…3 as CiA 408 defines them, manual §7.4
+delegating to the profile; flags in the upper bits are not needed here and ignored), error
 register 0x1001, error history 0x1003/1, temperature 0x2002, supply 0x2003 (table 7-14); the
 NMT state comes from the heartbeat (table 7-4) and the newest EMCY frame gives the active error
 (table 5-1). The LEDs are derived from these as the valve lights them (tables 5-2, 7-18).
@@ -17,23 +18,32 @@ from prm9tool.device.emulator.leds import leds
 from prm9tool.device.records import DeviceState, NmtState, ValveStatus
 from prm9tool.errors import SdoAbortError
 
-# 0x6041 bits 8…11 (manual figure 7-11, docs/emulator.md)
+# CiA 408: 0x6041 bits 3…0 = R M H D tell the device state (docs/canopen.md)
 STATES = {
-    1: DeviceState.NOT_READY,
-    2: DeviceState.INIT,
-    3: DeviceState.DISABLED,
-    4: DeviceState.HOLD,
-    5: DeviceState.DEVICE_MODE_ACTIVE,
-    6: DeviceState.FAULT_HOLD,
-    7: DeviceState.FAULT,
-    8: DeviceState.FAULT_REACTION,
+    0b0000: DeviceState.NOT_READY,
+    0b1000: DeviceState.INIT,
+    0b1001: DeviceState.DISABLED,
+    0b1011: DeviceState.HOLD,
+    0b1111: DeviceState.DEVICE_MODE_ACTIVE,
+    0b0011: DeviceState.FAULT_HOLD,
+    0b0111: DeviceState.FAULT_REACTION,
+    0b0001: DeviceState.FAULT,
 }
 EMCY_TEXTS = {kind.code: kind.text for kind in reversed(ERROR_KINDS)}  # first listed wins
 
 
 def device_state(status_word: int) -> DeviceState:
-    """The state a status word 0x6041 reports (NOT_READY for an unknown number)."""
-    return STATES.get((status_word >> 8) & 0x0F, DeviceState.NOT_READY)
+    """The state bits 0…3 of a status word 0x6041 report (CiA 408); the upper bits are flags
+    and do not change it. A combination CiA 408 does not define counts as NOT_READY (the
+    valve does not follow a setpoint); :func:`state_text` shows the word itself."""
+    return STATES.get(status_word & 0x0F, DeviceState.NOT_READY)
+
+
+def state_text(status_word: int) -> str:
+    """``DEVICE_MODE_ACTIVE (status word 0x000F)``: the state and the word it was read from."""
+    known = status_word & 0x0F in STATES
+    state = device_state(status_word).value if known else "an undefined state"
+    return f"{state} (status word 0x{status_word & 0xFFFF:04X})"
 
 
 def emcy_text(code: int) -> str:
@@ -43,7 +53,8 @@ def emcy_text(code: int) -> str:
 
 def read_status(sdo: SdoChannel, seen: NodeSeen) -> ValveStatus:
     """A status snapshot of the node behind ``sdo``."""
-    state = device_state(sdo.read_u32(0x6041, 0))
+    word = sdo.read_u32(0x6041, 0) & 0xFFFF
+    state = device_state(word)
     register = sdo.read_u32(0x1001, 0) & 0xFF
     code = _error_code(sdo, seen, register)
     temperature = _optional_int(sdo, 0x2002, signed=True)
@@ -62,6 +73,7 @@ def read_status(sdo: SdoChannel, seen: NodeSeen) -> ValveStatus:
         supply_v=(supply or 0) / 1000.0,
         nmt_state=nmt,
         booting=nmt is NmtState.INITIALISING,
+        status_word=word,
     )
 
 

@@ -2,10 +2,12 @@
 
 The manual documents no object holding the type key; 0x2041 (PCODE) is this project's decision,
 which the emulated valve has and a real valve will not. Without it the object dictionary tells
-only part of the key: -CA (by definition: it speaks CANopen) and E02 or E04 (an E04 valve has
-the external-sensor objects 0x2005–0x2100, manual table 7-14). The user gives the rest from the
-valve's label; prm9tool remembers it per serial number in
-``<user data dir>/can-type-keys.json``.
+only part of the key: -CA (by definition: it speaks CANopen) and, only where it really tells,
+E04: the control mode 0x6043 reads 4 (process control), which exists on E04 valves only (table
+7-16 and this project's catalogue). The external-sensor objects 0x2005–0x2100 tell nothing:
+table 7-14 lists them among the objects of all valves. A valve in control mode 2 leaves E02/E04
+open. The user gives the rest from the valve's label; prm9tool remembers it per serial number
+in ``<user data dir>/can-type-keys.json``.
 """
 
 from __future__ import annotations
@@ -28,18 +30,20 @@ log = logging.getLogger(__name__)
 class Derived:
     """What the object dictionary tells about the type key."""
 
-    config: Config
+    config: Config | None  # None: the objects do not tell E02 from E04
     canopen: bool = True
 
     def describe(self) -> str:
-        """E.g. ``E04 -CA``."""
+        """E.g. ``E04 -CA``, or ``-CA (E02 or E04: its objects do not tell)``."""
+        if self.config is None:
+            return "-CA (E02 or E04: its objects do not tell)"
         return f"{self.config.value} -CA"
 
     def problem(self, key: TypeKey) -> str | None:
         """Why ``key`` cannot be this valve's (None: it fits every part the OD tells)."""
         if not key.canopen:
             return f"{key} has no -CA, but the valve speaks CANopen"
-        if key.config is not self.config:
+        if self.config is not None and key.config is not self.config:
             return (
                 f"{key} is an {key.config.value} valve, the valve's objects say {self.config.value}"
             )
@@ -69,4 +73,11 @@ def resolve(serial: int, derived: Derived, hint: str | None, data_dir: Path) -> 
     problem = derived.problem(key)
     if problem:
         raise TypeKeyError(f"valve serial {serial}: {problem}")
+    if derived.config is None:
+        log.warning(
+            "valve serial %s: %s taken from its label; its objects cannot confirm %s",
+            serial,
+            key,
+            key.config.value,
+        )
     return str(key)

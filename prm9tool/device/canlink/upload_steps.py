@@ -7,16 +7,27 @@ is made sure of (see the decisions in prm9tool.device.canlink.session). A mixin 
 from __future__ import annotations
 
 import threading
+import time
 from collections.abc import Mapping, Sequence
 from typing import TYPE_CHECKING
 
 from prm9tool.catalogue import Parameter
+from prm9tool.catalogue.variant import Variant
+from prm9tool.device.canlink.storing import (
+    KEPT_AS_WRITTEN,
+    VERIFIED_RESTART,
+    safe_order,
+    store_kind,
+)
 from prm9tool.device.records import RefusedError, Steps, Value
-from prm9tool.device.upload_outcome import RESTARTED_BEFORE_STORE
-from prm9tool.errors import Prm9Error, SdoAbortError
+from prm9tool.device.upload_outcome import RESTARTED_BEFORE_STORE, differences
+from prm9tool.errors import CommunicationError, Prm9Error, SdoAbortError
 
 if TYPE_CHECKING:
     from prm9tool.device.canlink.bus import CanNetwork
+    from prm9tool.device.canlink.sdo import SdoChannel
+
+BOOT_WAIT_S = 10.0  # NMT reset node / power-up → answering again (the valve takes ~2 s, §7.6)
 
 
 class UploadSteps:
@@ -27,6 +38,10 @@ class UploadSteps:
     _known: dict[str, Value]
     _shared: CanNetwork
     node_id: int
+    variant: Variant
+    store_done: str | None
+    _store: str | None = None  # how this valve keeps parameters (canlink.storing), once known
+    verify_by_restart = False  # after the store: NMT reset node, then read every value back
 
     if TYPE_CHECKING:  # CanopenSession and ValveSession provide these
 
@@ -44,10 +59,18 @@ class UploadSteps:
 
         def _param(self, mnemonic: str) -> Parameter: ...
 
+        @property
+        def sdo(self) -> SdoChannel: ...
+
+        def restart(self) -> None: ...
+
     def _before_upload(self, params: Sequence[Parameter], cancel: threading.Event | None) -> None:
         """The snapshot that :meth:`reload` writes back after a failed upload: the working
         values this session read or wrote last (a download before the upload, the backup, going
-        online), the others read now."""
+        online), the others read now. First: how the valve keeps parameters (a valve that
+        cannot store refuses the upload here, before anything is written)."""
+        self._store = store_kind(self.sdo)
+        self.store_done = self._store if self._kept else None  # each write is kept as it lands
         self._snapshot, self._touched = {}, []
         unknown = [p for p in params if p.mnemonic not in self._known]
         read = self._read_entries(unknown, None, cancel)
@@ -80,6 +103,16 @@ class UploadSteps:
             actual.update(self._read_entries(stale, None, cancel))
         return actual
 
+    @property
+    def _kept(self) -> bool:
+        return self._store == KEPT_AS_WRITTEN
+
+    def _write_order(self, params: list[Parameter], values: Mapping[str, Value]) -> list[Parameter]:
+        """On a valve that keeps every write: an order that never leaves a refused set."""
+        if not self._kept or self._snapshot is None:
+            return params
+        return safe_order(self.variant, params, self._snapshot, values)
+
     def _restart_marker(self) -> object:
         """Boot-ups heard from the node so far (a restart adds one)."""
         return self._shared.node_seen(self.node_id).boot_ups
@@ -88,7 +121,11 @@ class UploadSteps:
         self, params: Sequence[Parameter], values: Mapping[str, Value], marker: object
     ) -> tuple[dict[str, tuple[Value, Value]], str] | None:
         """No boot-up since before the first write, and the last value the upload changed
-        reads back as uploaded (the module's decision)."""
+        reads back as uploaded (the module's decision). A valve that keeps every write has
+        kept each value as it landed (the verify read them all). Then, if asked, the restart
+        verification."""
+        if self._kept:
+            return self._restart_check(params, values)
         if self._shared.node_seen(self.node_id).boot_ups != marker:
             return {}, (
                 "the valve restarted (its boot-up frame) during the upload: it stored its "
@@ -101,7 +138,24 @@ class UploadSteps:
             for p in sample
             if after.get(p.mnemonic) != values[p.mnemonic]
         }
-        return (changed, RESTARTED_BEFORE_STORE) if changed else None
+        return (changed, RESTARTED_BEFORE_STORE) if changed else self._restart_check(params, values)
+
+    def _restart_check(
+        self, params: Sequence[Parameter], values: Mapping[str, Value]
+    ) -> tuple[dict[str, tuple[Value, Value]], str] | None:
+        """With :attr:`verify_by_restart`: NMT reset node, then every value read back."""
+        if not self.verify_by_restart:
+            return None
+        self.restart()
+        actual = self._read_entries(params, None, None)
+        changed = differences([p for p in params if p.mnemonic in actual], values, actual)
+        if changed:
+            return changed, (
+                "after a restart (NMT reset node) the valve reads back values other than the "
+                "upload's: it did not keep them"
+            )
+        self.store_done = VERIFIED_RESTART
+        return None
 
     def reload(self) -> None:
         """Working values ← those read before the upload, for the parameters it wrote (see
@@ -114,7 +168,49 @@ class UploadSteps:
         snapshot = {m: v for m, v in self._snapshot.items() if m in touched}
         self._snapshot, self._touched = None, []
         params = [self._param(m) for m in snapshot]
+        if self._kept:
+            self._put_back(params, snapshot)
+            return
         try:
             self._write_entries(params, snapshot, None, None)
         except RefusedError as refused:
             raise refused.error from None
+
+    def _put_back(self, params: list[Parameter], backup: dict[str, Value]) -> None:
+        """A valve that keeps every write: the backup's values written back in a safe order
+        and read back; Prm9Error says exactly what the valve holds where that fails."""
+        written = {m: self._known.get(m, "?") for m in backup}  # what the upload left
+        try:
+            self._await_answer()
+            now = self._read_entries(params, None, None)
+            holds = {m: v for m, v in now.items() if not isinstance(v, SdoAbortError)}
+            ordered = safe_order(self.variant, params, holds, backup)
+            refused = ""
+            try:
+                self._write_entries(ordered, backup, None, None)
+            except RefusedError as exc:
+                refused = f"{exc.mnemonic} refused ({exc.error}); "
+            after = self._read_entries(params, None, None)
+        except CommunicationError as exc:
+            shown = ", ".join(f"{m} = {v}" for m, v in written.items())
+            raise Prm9Error(
+                f"the valve does not answer ({exc}); as it keeps every write it holds what the "
+                f"upload wrote ({shown}) and its previous values for the rest"
+            ) from exc
+        wrong = {m: after.get(m) for m in backup if after.get(m) != backup[m]}
+        if wrong:
+            shown = "; ".join(
+                f"{m} = {v} (before the upload {backup[m]})" for m, v in wrong.items()
+            )
+            raise Prm9Error(f"{refused}the valve holds: {shown}; every other value as before")
+
+    def _await_answer(self) -> None:
+        """Until the node answers again (it may be restarting: power dip, NMT reset)."""
+        deadline = time.monotonic() + BOOT_WAIT_S
+        while True:
+            try:
+                self.sdo.upload(0x1000, 0)
+                return
+            except CommunicationError:
+                if time.monotonic() > deadline:
+                    raise

@@ -16,6 +16,7 @@ from typing import TYPE_CHECKING
 import can
 
 from prm9tool.catalogue.commissioning import NmtCommand
+from prm9tool.device.emulator.canopen_lss import LSS_REQUEST, LSS_RESPONSE, LssHost, LssSlave
 from prm9tool.device.emulator.canopen_pdo import PdoChannel, RpdoLogic, TpdoLogic, mapping
 from prm9tool.device.emulator.canopen_rules import check_comm_write
 from prm9tool.device.emulator.canopen_sdo import SdoServer
@@ -61,8 +62,10 @@ class CanopenSlave:
         self._heartbeat_due_ms = 0
         self._last_sync_ms: int | None = None
         self._closed = False
+        self._silent_until_ms = 0  # CiA 305 activate bit timing: no frames until then
         self.state = NmtState.OFF
         self.node_id = 0
+        self.lss: LssSlave | None = None  # node-ID switch at 1 (table 7-17)
         with valve.lock:
             self._power_up()
             valve.add_cycle_listener(self._on_cycle)
@@ -92,6 +95,8 @@ class CanopenSlave:
     # --- power-up, NMT ---------------------------------------------------------------------
     def _power_up(self) -> None:
         self.node_id = self._valve.node_id
+        self._silent_until_ms = 0
+        self.lss = LssSlave(self._lss_host()) if self._valve.lss_mode else None
         self._sdo.reset()
         self._length_error = False
         self.state = NmtState.INITIALISING if self._valve.can_enabled else NmtState.OFF
@@ -146,6 +151,10 @@ class CanopenSlave:
         elif command == NmtCommand.RESET_COMMUNICATION:
             self.state = NmtState.INITIALISING
             self._valve.nmt_event("reset_comm")
+            pending = self.lss.reset_communication() if self.lss is not None else None
+            if pending is not None:  # CiA 305: the pending node ID becomes active now
+                self._valve.lss_assign(pending)
+                self.node_id = pending
             self._boot_up()
 
     # --- frames ------------------------------------------------------------------------------
@@ -153,6 +162,10 @@ class CanopenSlave:
         if msg.is_error_frame or msg.is_remote_frame or msg.is_extended_id or msg.is_fd:
             return  # a classical CAN node ignores CAN FD frames
         with self._valve.lock:
+            if msg.arbitration_id == LSS_REQUEST:
+                if self.lss is not None and self.state is not NmtState.OFF:
+                    self.lss.handle(bytes(msg.data))
+                return
             if self.state in (NmtState.OFF, NmtState.INITIALISING) and msg.arbitration_id:
                 return
             try:
@@ -189,6 +202,8 @@ class CanopenSlave:
             self._transmit(tpdo, tpdo.on_sync())
 
     def _send(self, can_id: int, data: bytes) -> None:
+        if self._now_ms < self._silent_until_ms:
+            return
         try:
             self._bus.send(can.Message(arbitration_id=can_id, data=data, is_extended_id=False))
         except can.CanError as exc:
@@ -200,8 +215,8 @@ class CanopenSlave:
         if self._closed or self.state is NmtState.OFF:
             return
         if self.state is NmtState.INITIALISING:
-            if not self._valve.status().booting:
-                self._boot_up()
+            if self.node_id and not self._valve.status().booting:
+                self._boot_up()  # without a node ID (LSS) it waits for an LSS master
             return
         if self._sdo.busy and (abort := self._sdo.expire(self._now_ms)) is not None:
             self._send(0x580 + self.node_id, abort)
@@ -263,17 +278,45 @@ class CanopenSlave:
             self._length_error = False
             self._valve.nmt_event("rpdo_length_ok")
 
+    # --- LSS (CiA 305) --------------------------------------------------------------------
+    def _lss_host(self) -> LssHost:
+        valve = self._valve
+        return LssHost(
+            identity=self._identity,
+            active_node_id=lambda: self.node_id,
+            send=lambda data: self._send(LSS_RESPONSE, data),
+            boot_with=self._lss_boot,
+            store=valve.lss_store,
+            activate_bit_timing=self._lss_activate_bit_timing,
+        )
+
+    def _identity(self) -> tuple[int, int, int, int]:
+        vendor, product, revision, serial = (int(self._valve.read(0x1018, s)) for s in (1, 2, 3, 4))
+        return vendor, product, revision, serial
+
+    def _lss_boot(self, node_id: int) -> None:
+        """A node ID for a valve that had none: NMT initialisation with it (boot-up)."""
+        self._valve.lss_assign(node_id)
+        self.node_id = node_id
+        if not self._valve.status().booting:
+            self._boot_up()
+
+    def _lss_activate_bit_timing(self, index: int, delay_ms: int) -> None:
+        """CiA 305: silent for the switch delay, then at the new rate, silent once more."""
+        self._valve.lss_bit_timing(index)
+        self._silent_until_ms = self._now_ms + 2 * delay_ms
+
     # --- SDO access ------------------------------------------------------------------------
     def _sdo_read(self, index: int, subindex: int) -> bytes:
         if index in (0x1600, 0x1A00) and subindex == 2:
-            self._valve.read_bytes(index, subindex)  # existence and access check
+            self._valve.can_read_bytes(index, subindex)  # existence and access check
             entry_index, entry_sub, bits = mapping(self._valve, index)[subindex - 1]
             return struct.pack("<I", (entry_index << 16) | (entry_sub << 8) | bits)
-        return self._valve.read_bytes(index, subindex)
+        return self._valve.can_read_bytes(index, subindex)
 
     def _sdo_write(self, index: int, subindex: int, data: bytes) -> None:
         check_comm_write(index, subindex, data, self.state)
-        self._valve.write_bytes(index, subindex, data)
+        self._valve.can_write_bytes(index, subindex, data)
         if 0x1000 <= index < 0x2000:
             self._load_config()
             if index == HEARTBEAT_TIME:

@@ -143,7 +143,9 @@ class FaultMonitor:
         if present:
             t.present, t.since, t.active_until = True, now, float("inf")
         elif t.present:
-            t.present, t.since, t.active_until = False, -1.0, now + self.hold_s
+            # a reported-only protocol error (8210) ends with its cause: CiA 301 error reset
+            hold = self.hold_s if KINDS[key].fault else 0.0
+            t.present, t.since, t.active_until = False, -1.0, now + hold
         self._refresh(now)
 
     def is_present(self, key: str) -> bool:

@@ -10,6 +10,7 @@ import os
 from collections.abc import Callable, Generator
 
 from prm9tool.catalogue import CATALOGUE, canopen_switches
+from prm9tool.catalogue.canopen_switches import LSS_BIT_TIMINGS_KBIT as LSS_KBIT
 from prm9tool.catalogue.scale import FULL_SCALE
 from prm9tool.catalogue.typekey import TypeKey
 from prm9tool.catalogue.variant import Coils
@@ -93,6 +94,7 @@ class Firmware:
         self.booting = True
         self.node_id = self.bitrate = 0
         self.can_enabled = self.terminator = False
+        self.lss_mode = False  # node-ID switch at 1 (LSS, table 7-17)
         self.cycle_listeners: list[Callable[[float], None]] = []
         self.program: OverrideProgram | None = None  # a setpoint waveform on SETPOVR
         self._setpovr_key = CATALOGUE["SETPOVR"].key
@@ -232,8 +234,11 @@ class Firmware:
     def _latch_interface(self) -> None:
         """Decode the switches (prm9tool.catalogue.canopen_switches, table 7-17) at power-up.
 
-        LSS (node switch 1) is not emulated: the valve then uses the NODEID parameter (what an
-        LSS master would have stored) and the bit rate of the interface switch.
+        At node switch 1 (LSS and automatic bit rate) the node ID is the one an LSS master
+        stored (``nv.lss``; none from the factory: the valve waits for an LSS master, CiA 305)
+        and the bit rate is the bus's: the emulated valve hears any rate its bus runs at, so
+        ``bitrate`` is the rate LSS stored, else the interface switch's (what the bus is
+        opened at when served).
         """
         baud, node = self.latched_switches
         settings = (
@@ -245,12 +250,19 @@ class Firmware:
         )
         self.can_enabled = settings.can_enabled
         self.terminator = settings.terminator
+        self.lss_mode = self.variant.canopen and canopen_switches.node_position(node).lss
         self.node_id = 0
         self.bitrate = 0
         if self.variant.canopen:
             self.node_id = settings.node_id or self.value("NODEID")
+        if self.lss_mode:
+            stored = self.nv.lss.get("node_id", canopen_switches.LSS_UNCONFIGURED)
+            self.node_id = stored if 1 <= stored <= 127 else 0
         if settings.can_enabled:
             kbit = settings.bitrate_kbit or canopen_switches.baud_position(baud).bitrate_kbit
+            index = self.nv.lss.get("bit_timing")
+            if self.lss_mode and index is not None and 0 <= index < len(LSS_KBIT):
+                kbit = LSS_KBIT[index]
             self.bitrate = (kbit or 0) * 1000
 
     @property

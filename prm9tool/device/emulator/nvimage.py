@@ -5,6 +5,11 @@ parameter set, plus the CANopen communication objects the master configures (0x1
 0x1014, 0x1017, the PDO communication parameters 0x1400-0x1801, 0x1F80). A node-relative
 COB-ID that still has its default is not stored, so it follows the node ID at power-up as on a
 real CANopen device. The file is JSON, written atomically (temporary file + rename).
+
+Beside the parameters the image keeps the LSS configuration (CiA 305 "store configuration":
+node ID and bit-rate code, ``lss``), which a valve at node-ID switch 1 uses at power-up
+(manual table 7-17). It is the LSS slave's own record: storing or restoring the parameter set
+(0x1010/0x1011) leaves it alone, as on a CiA 305 device.
 """
 
 from __future__ import annotations
@@ -61,8 +66,16 @@ class NvImage:
         self.serial = serial
         self.path = Path(path) if path is not None else None
         self.values: dict[str, int | str] = {}
+        self.lss: dict[str, int] = {}  # "node_id", "bit_timing" (CiA 305 table 0) once stored
         if self.path is not None and self.path.exists():
             self.values = self._load(self.path)
+
+    def replace_lss(self, lss: dict[str, int]) -> None:
+        """Store the LSS configuration (file first, then memory; a failed write raises)."""
+        new = dict(lss)
+        if self.path is not None:
+            self._save(self.path, self.values, new)
+        self.lss = new
 
     def replace(self, values: dict[str, int | str]) -> None:
         """Write ``values`` to the file (if any), then make them the image in memory.
@@ -72,7 +85,7 @@ class NvImage:
         """
         new = dict(values)
         if self.path is not None:
-            self._save(self.path, new)
+            self._save(self.path, new, self.lss)
         self.values = new
 
     def _load(self, path: Path) -> dict[str, int | str]:
@@ -94,16 +107,21 @@ class NvImage:
             problems.append(FileProblem(0, _NO_VALUES()))
         if problems:
             raise FileFormatError(str(path), problems)
+        lss = data.get("lss")
+        if isinstance(lss, dict):
+            self.lss = {str(k): v for k, v in lss.items() if isinstance(v, int)}
         return {str(k): v for k, v in data["values"].items() if isinstance(v, (int, str))}
 
-    def _save(self, path: Path, values: dict[str, int | str]) -> None:
-        payload = {
+    def _save(self, path: Path, values: dict[str, int | str], lss: dict[str, int]) -> None:
+        payload: dict[str, object] = {
             "format": FORMAT,
             "version": VERSION,
             "type_key": self.type_key,
             "serial": self.serial,
             "values": dict(sorted(values.items())),
         }
+        if lss:
+            payload["lss"] = dict(sorted(lss.items()))
         path.parent.mkdir(parents=True, exist_ok=True)
         fd, tmp = tempfile.mkstemp(prefix=path.name, suffix=".tmp", dir=path.parent)
         try:

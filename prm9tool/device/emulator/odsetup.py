@@ -13,6 +13,7 @@ from prm9tool.device.emulator.constants import FULL
 from prm9tool.device.emulator.inputs import CANOPEN_TYPE
 from prm9tool.device.emulator.loopstate import SIGNAL_ORDER
 from prm9tool.device.emulator.objdict import Value, abort
+from prm9tool.device.emulator.statemachine import STATUS_CONTROL_DEVIATION, STATUS_LOCAL
 from prm9tool.device.records import DeviceState
 from prm9tool.errors import AbortCode
 
@@ -63,7 +64,7 @@ def _pv(fw: Firmware, signal: str) -> int:
 def _live(fw: Firmware) -> None:
     _getter(fw, "PWR", lambda: int(min(65535, max(0, round(fw.supply * 1000)))))
     _getter(fw, "TEMP", lambda: int(min(127, max(-128, round(fw.temperature)))))
-    _getter(fw, "STATUSWORD", lambda: fw.sm.status_word())
+    _getter(fw, "STATUSWORD", lambda: fw.sm.status_word(_status_flags(fw)))
     _getter(fw, "CONTROLWORD", lambda: fw.sm.control_word)
     _getter(fw, "POSACT", lambda: _pv(fw, "position_actual"))
     _getter(fw, "DEMAND", lambda: _pv(fw, "demand"))
@@ -82,6 +83,15 @@ def _errors(fw: Firmware) -> None:
         _getter(fw, f"ERRHIST{k}", lambda k=k: _history(fw, k))
     if fw.od.has("ERRCOUNT"):
         fw.od.hooks[fw.od.param("ERRCOUNT").key] = lambda _v: fw.faults.clear_history()
+
+
+def _status_flags(fw: Firmware) -> int:
+    """The CiA 408 upper status-word flags the emulated valve has (docs/canopen.md)."""
+    flags = STATUS_LOCAL if fw.analog_only else 0
+    active = fw.sm.state is DeviceState.DEVICE_MODE_ACTIVE
+    if active and abs(fw.loop.ctrl_dev) > fw.monitoring_threshold:
+        flags |= STATUS_CONTROL_DEVIATION
+    return flags
 
 
 def _history(fw: Firmware, k: int) -> int:

@@ -73,24 +73,10 @@ class DeviceStateMachine:
         if self.state in (S.DEVICE_MODE_ACTIVE, S.HOLD, S.DISABLED):
             self.state = S.INIT
 
-    def status_word(self) -> int:
-        """0x6041: the control-word bits the state confirms, plus the state in bits 8…11.
-
-        Bits 0…3 mirror D, H, M, R as CiA 408 defines for the status word (D/H/M set when the
-        state has reached them, R = a fault is pending); bits 8…11 hold the state number of
-        figure 7-11 (1 NOT_READY … 8 FAULT_REACTION) (decision).
-        """
-        s = self.state
-        bits = 0
-        if s in (S.DISABLED, S.HOLD, S.DEVICE_MODE_ACTIVE):
-            bits |= BIT_D
-        if s in (S.HOLD, S.DEVICE_MODE_ACTIVE, S.FAULT_HOLD):
-            bits |= BIT_H
-        if s is S.DEVICE_MODE_ACTIVE:
-            bits |= BIT_M
-        if s in (S.FAULT, S.FAULT_HOLD, S.FAULT_REACTION):
-            bits |= BIT_R
-        return bits | (_STATE_NUMBERS[s] << 8)
+    def status_word(self, flags: int = 0) -> int:
+        """0x6041 as CiA 408 defines it: bits 0…3 (D, H, M, R) tell the state, ``flags`` the
+        profile's upper bits the caller knows (:data:`STATUS_LOCAL` …)."""
+        return STATE_BITS[self.state] | (flags & ~0x0F & 0xFFFF)
 
     def _settle(self) -> None:
         word = self.control_word
@@ -113,13 +99,18 @@ class DeviceStateMachine:
                 return
 
 
-_STATE_NUMBERS = {
-    S.NOT_READY: 1,
-    S.INIT: 2,
-    S.DISABLED: 3,
-    S.HOLD: 4,
-    S.DEVICE_MODE_ACTIVE: 5,
-    S.FAULT_HOLD: 6,
-    S.FAULT: 7,
-    S.FAULT_REACTION: 8,
+# CiA 408 status word bits 0…3 per state, written R M H D (bit 3 … bit 0); the manual
+# (§7.4) delegates the state machine to the profile and its figure 7-11 is not in the text
+STATE_BITS = {
+    S.NOT_READY: 0b0000,
+    S.INIT: 0b1000,
+    S.DISABLED: 0b1001,
+    S.HOLD: 0b1011,
+    S.DEVICE_MODE_ACTIVE: 0b1111,
+    S.FAULT_HOLD: 0b0011,
+    S.FAULT_REACTION: 0b0111,
+    S.FAULT: 0b0001,
 }
+# CiA 408 upper flags of the status word this valve has
+STATUS_LOCAL = 1 << 4  # the setpoint comes from the valve's own (analog) input, not the bus
+STATUS_CONTROL_DEVIATION = 1 << 11  # |0x6350| beyond the monitoring threshold 0x6353

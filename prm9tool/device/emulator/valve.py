@@ -15,6 +15,7 @@ from prm9tool.catalogue.commissioning import NmtCommand
 from prm9tool.catalogue.signals import BY_KEY
 from prm9tool.catalogue.typekey import TypeKey
 from prm9tool.catalogue.variant import Variant
+from prm9tool.device.emulator import manual_od
 from prm9tool.device.emulator.capture import Capture
 from prm9tool.device.emulator.constants import (
     CYCLE_S,
@@ -73,7 +74,14 @@ class EmulatedValve:
         switches: tuple[int, int] | None = None,
         plant: PlantConstants = PLANT,
         constants: FirmwareConstants = FIRMWARE,
+        od: str = manual_od.FULL,
     ) -> None:
+        """``od``: ``full`` (every catalogue object over CANopen, store on command) or
+        ``manual`` (only the objects the manual lists, keeps what is written:
+        :mod:`prm9tool.device.emulator.manual_od`)."""
+        if od not in manual_od.OD_PROFILES:
+            raise ValueError(f"object dictionary {od!r}: one of {', '.join(manual_od.OD_PROFILES)}")
+        self.od = od
         self.type_key = type_key if isinstance(type_key, TypeKey) else TypeKey.parse(type_key)
         self.variant: Variant = self.type_key.variant
         self.serial = serial
@@ -109,6 +117,21 @@ class EmulatedValve:
         """Write encoded bytes; a wrong length aborts (LENGTH_TOO_HIGH / LENGTH_TOO_LOW)."""
         with self.lock:
             self._fw.od.write_bytes(index, subindex, data)
+
+    def can_read_bytes(self, index: int, subindex: int) -> bytes:
+        """An SDO upload: :meth:`read_bytes` as this valve's CANopen interface answers it."""
+        with self.lock:
+            if self.od == manual_od.MANUAL:
+                return manual_od.read_bytes(self._fw, index, subindex)
+            return self._fw.od.read_bytes(index, subindex)
+
+    def can_write_bytes(self, index: int, subindex: int, data: bytes) -> None:
+        """An SDO download: :meth:`write_bytes` as this valve's CANopen interface takes it."""
+        with self.lock:
+            if self.od == manual_od.MANUAL:
+                manual_od.write_bytes(self._fw, index, subindex, data)
+            else:
+                self._fw.od.write_bytes(index, subindex, data)
 
     def store(self) -> None:
         """RAM → non-volatile image (and the nv_path file, atomically)."""
@@ -321,6 +344,38 @@ class EmulatedValve:
     def can_enabled(self) -> bool:
         """True on a -CA valve whose interface switch enables CANopen."""
         return self._fw.can_enabled
+
+    @property
+    def lss_mode(self) -> bool:
+        """Node-ID switch at 1 at power-up: node ID by LSS, automatic bit rate (table 7-17)."""
+        return self._fw.lss_mode
+
+    def lss_assign(self, node_id: int) -> None:
+        """Take ``node_id`` given by an LSS master now: node-relative communication objects
+        follow it as at NMT reset communication."""
+        with self.lock:
+            self._fw.node_id = node_id
+            self._fw.reset_communication()
+
+    def lss_bit_timing(self, index: int) -> None:
+        """CiA 305 activate bit timing: run at the rate of table-0 index ``index`` now."""
+        from prm9tool.catalogue.canopen_switches import LSS_BIT_TIMINGS_KBIT
+
+        with self.lock:
+            self._fw.bitrate = LSS_BIT_TIMINGS_KBIT[index] * 1000
+
+    def lss_store(self, node_id: int, bit_timing: int | None) -> None:
+        """CiA 305 store configuration: the LSS record of the NV image (OSError if it fails)."""
+        from prm9tool.catalogue.canopen_switches import LSS_BIT_TIMINGS_KBIT
+
+        with self.lock:
+            record = dict(self._fw.nv.lss)
+            record["node_id"] = node_id
+            if bit_timing is not None:
+                record["bit_timing"] = bit_timing
+            elif "bit_timing" not in record and self._fw.bitrate // 1000 in LSS_BIT_TIMINGS_KBIT:
+                record["bit_timing"] = LSS_BIT_TIMINGS_KBIT.index(self._fw.bitrate // 1000)
+            self._fw.nv.replace_lss(record)
 
     # --- hooks for the CANopen slave --------------------------------------------------
     def add_cycle_listener(self, fn: Callable[[float], None]) -> None:

@@ -20,6 +20,7 @@ from prm9tool.catalogue.signals import MAX_CHANNELS
 from prm9tool.catalogue.signals import Signal as MeasuringPoint
 from prm9tool.i18n import format_number, format_significant, text
 from prm9tool.scope import CursorReadout, StepMeasurement, Verdict
+from prm9tool.translate import translated
 from prm9tool.views.scope.legend import COLOURS
 
 
@@ -128,6 +129,9 @@ class StepPanel(QWidget):
         self.figures = {
             name: QLabel() for name in ("step", "rise", "overshoot", "settling", "error")
         }
+        settling = self.figures["settling"]  # "did not settle …: oscillation of …"
+        settling.setWordWrap(True)
+        settling.setMinimumHeight(settling.fontMetrics().lineSpacing() * 3)  # room kept for it
         channels, self.form = QFormLayout(), QFormLayout()  # short labels: wide combos
         channels.setFieldGrowthPolicy(QFormLayout.FieldGrowthPolicy.AllNonFixedFieldsGrow)
         fields = [self.reference, self.response, *self.figures.values()]
@@ -219,10 +223,9 @@ class StepPanel(QWidget):
         )
         self.figures["rise"].setText(_time(figures.rise_time))
         self.figures["overshoot"].setText(f"{format_number(figures.overshoot, 1)} %")
+        why = figures.not_settled(unit)  # what it did instead, e.g. oscillate at 24 Hz
         self.figures["settling"].setText(
-            _time(figures.settling_time)
-            if not math.isnan(figures.settling_time)
-            else self.tr("not settled in the window")
+            _time(figures.settling_time) if why is None else translated(why)
         )
         self.figures["error"].setText(_fixed(figures.steady_state_error, unit, size))
         if measurement.steps > 1:

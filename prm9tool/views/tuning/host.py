@@ -12,6 +12,7 @@ from typing import Any, Protocol
 
 from PySide6.QtWidgets import QDoubleSpinBox
 
+from prm9tool.analysis.profile import Profile
 from prm9tool.catalogue import CATALOGUE
 from prm9tool.i18n import format_value
 from prm9tool.model.document import ParameterDocument
@@ -23,8 +24,14 @@ class TuningHost(Protocol):
     doc: ParameterDocument
     connection: Any | None
 
-    def start(self, kind: str, what: str, procedure: Callable[..., Any]) -> None:
-        """Confirm (on a valve) what the test will do, then run ``procedure(rig)``."""
+    def start(
+        self, kind: str, what: str, procedure: Callable[..., Any], planned_s: float | None = None
+    ) -> None:
+        """Confirm (on a valve) what the test will do, then run ``procedure(rig)``;
+        ``planned_s``: the valve seconds it plays (the progress bar; None: unknown)."""
+
+    def profile(self) -> Profile:
+        """The acceptance profile chosen on the test report page (ProfileError if unusable)."""
 
     def accept_values(self, values: dict[str, int], text: str) -> None:
         """Put ``values`` into the document as one undo step."""

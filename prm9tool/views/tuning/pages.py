@@ -1,16 +1,13 @@
-"""The pages of the Tuning window: autotune, Bode, static characteristic, test report."""
+"""The pages of the Tuning window: the common page and the Bode page (autotune: autotune.py)."""
 
 from __future__ import annotations
 
 import math
 from typing import Any
 
-import numpy as np
 from PySide6.QtCore import QRectF
 from PySide6.QtGui import QPainter, QPaintEvent
 from PySide6.QtWidgets import (
-    QCheckBox,
-    QComboBox,
     QFormLayout,
     QHBoxLayout,
     QLabel,
@@ -19,34 +16,22 @@ from PySide6.QtWidgets import (
     QWidget,
 )
 
-from prm9tool.analysis.model import Targets
-from prm9tool.analysis.pid import to_parameters
 from prm9tool.analysis.profile import DEFAULT
-from prm9tool.characterize.autotune import (
-    AutotuneResult,
-    compare_steps,
-    model_tune,
-    simulate_steps,
-)
 from prm9tool.characterize.procedures import (
-    LOOPS,
     BodeResult,
-    CriticalGainResult,
-    StepResult,
     bode_test,
-    critical_gain_tune,
 )
 from prm9tool.characterize.run import Characterization
-from prm9tool.translate import translated
-from prm9tool.views.tuning.host import TuningHost, gain_text, spin
-from prm9tool.views.tuning.plot import COLOURS, Plot, Series, paint_plot
+from prm9tool.views.tuning.host import TuningHost, spin
+from prm9tool.views.tuning.plot import Plot, paint_plot
 from prm9tool.views.tuning.report import (
     bode_plots,
 )
 
 
 class PlotView(QWidget):
-    """Shows one or more :class:`Plot` stacked vertically, in the palette's colours."""
+    """Shows one or more :class:`Plot` stacked vertically (three or more in two columns), in
+    the palette's colours."""
 
     def __init__(self, parent: QWidget | None = None) -> None:
         super().__init__(parent)
@@ -63,9 +48,13 @@ class PlotView(QWidget):
         painter.setRenderHint(QPainter.RenderHint.Antialiasing)
         painter.fillRect(self.rect(), self.palette().base())
         ink = self.palette().text().color()
-        height = self.height() / max(1, len(self.plots))
+        columns = 2 if len(self.plots) >= 3 else 1  # four plots: two by two
+        rows = max(1, -(-len(self.plots) // columns))
+        width, height = self.width() / columns, self.height() / rows
         for k, plot in enumerate(self.plots):
-            paint_plot(painter, QRectF(0, k * height, self.width(), height), plot, ink)
+            row, column = divmod(k, columns)
+            area = QRectF(column * width, row * height, width, height)
+            paint_plot(painter, area, plot, ink)
         painter.end()
 
 
@@ -114,152 +103,6 @@ class Page(QWidget):
     def tr_label(self, key: str, text: str) -> None:
         """Set a field's label."""
         self.labels[key].setText(text)
-
-
-class AutotunePage(Page):
-    """Model-based (no oscillation) or critical-gain autotune, before/after, accept."""
-
-    def __init__(self, window: TuningHost) -> None:
-        super().__init__(window)
-
-        self.method = self.field("method", QComboBox())
-        self.method.addItems(["", ""])
-        self.amplitude = self.field("amplitude", spin(50.0, 1.0, 90.0, "%"))
-        self.overshoot = self.field("overshoot", spin(10.0, 0.0, 50.0, "%"))
-        self.settling = self.field("settling", spin(40.0, 2.0, 2000.0, "ms", 0))
-        self.limit = self.field("limit", spin(60.0, 5.0, 100.0, "%"))
-        self.accept_button = QPushButton()
-        self.accept_button.setEnabled(False)
-        self.accept_button.clicked.connect(self.accept)
-        self.buttons.insertWidget(1, self.accept_button)
-        self.override = QCheckBox()  # shown when the identification is not trustworthy
-        self.override.setVisible(False)
-        self.override.toggled.connect(self._override_toggled)
-        self.buttons.insertWidget(2, self.override)
-        self.proposal: dict[str, int] = {}
-
-    def run(self) -> None:
-        """Run the chosen method."""
-        loop = self.window_.current_loop()
-        amplitude = self.amplitude.value()
-        targets = Targets(self.overshoot.value(), self.settling.value() / 1000.0)
-        duration = max(3 * targets.settling_s, 0.06)
-        limit = self.limit.value()
-        if self.method.currentIndex() == 0:
-            what = self.tr("steps of %1 % from 0 %, a few times, about %2 s in all")
-            what = what.replace("%1", f"{amplitude:g}").replace("%2", f"{4 * duration:.1f}")
-            self.window_.start(
-                "autotune", what, lambda rig: model_tune(rig, targets, loop, amplitude, 3, limit)
-            )
-            return
-        what = self.tr("P only with rising gain until the loop oscillates (steps of 5 %, "
-                       "oscillation stopped at ±%1 %), about 5 s").replace("%1", f"{limit:g}")  # fmt: skip
-
-        def critical(rig: Any) -> tuple[CriticalGainResult, Any, Any]:
-            found = critical_gain_tune(rig, loop, limit_pct=limit)
-            proposed = to_parameters(LOOPS[loop].prefix, found.gains)
-            simulated = simulate_steps(rig, loop, proposed, amplitude, duration)
-            return found, compare_steps(rig, loop, proposed, amplitude, duration), simulated
-
-        self.window_.start("autotune", what, critical)
-
-    def show_result(self, result: object) -> None:
-        """Proposed gains, before/after (simulated, measured)."""
-        loop = self.window_.current_loop()
-        prefix = LOOPS[loop].prefix
-        present = {
-            k: int(self.window_.doc.value(k))
-            for k in (prefix + s for s in ("KP", "KI", "KD", "T1"))
-        }
-        doubts: list[str] = []
-        if isinstance(result, AutotuneResult):
-            doubts = [translated(d) for d in result.doubts]
-            self.proposal = result.proposed_values
-            before, after, simulated = result.before, result.after, result.simulated
-            head = self.tr("Model: gain %1, lags %2 ms, dead time %3 ms (fit error %4 %).").replace(
-                "%1", f"{result.model.gain:.3g}").replace(
-                "%2", ", ".join(f"{t * 1000:.2f}" for t in (result.model.tau1, result.model.tau2, result.model.tau3))).replace(
-                "%3", f"{result.model.delay * 0.2:.1f}").replace("%4", f"{result.model.fit_error:.1f}")  # fmt: skip
-        else:
-            found: CriticalGainResult = result[0]  # type: ignore[index]
-            before, after = result[1]  # type: ignore[index]
-            self.proposal = to_parameters(prefix, found.gains)
-            simulated = result[2][1]  # type: ignore[index]  # a StepResult on the emulator
-            head = self.tr("Critical gain Kkr = %1, period Tkr = %2 ms: K = 0.5·Kkr, Ti = 0.8·Tkr, Td = 0.12·Tkr.").replace(
-                "%1", f"{found.kkr:.2f}").replace("%2", f"{found.tkr * 1000:.1f}")  # fmt: skip
-
-        rows = [
-            f"{k}: {gain_text(k, present[k])} → <b>{gain_text(k, v)}</b>"
-            for k, v in self.proposal.items()
-        ]
-        figures = self._figures(before, after)
-        if isinstance(simulated, StepResult):
-            figures += " " + self.tr("Proposed, simulated on the emulator's firmware: %1.").replace(
-                "%1", self._step_text(simulated)
-            )
-        text = head + "<br>" + " · ".join(rows) + "<br>" + figures
-        if doubts:
-            warning = self.tr("Do not accept these gains: the identification is not trustworthy.")
-            text += '<br><b><font color="#c00000">' + " ".join([warning, *doubts]) + "</font></b>"
-        self.result.setText(text)
-        series = [
-            Series(before.record.t * 1000, before.record.channels[LOOPS[loop].actual], self.tr("before (measured)"), COLOURS[0]),
-            Series(after.record.t * 1000, after.record.channels[LOOPS[loop].actual], self.tr("proposed (measured)"), COLOURS[1]),
-        ]  # fmt: skip
-        if isinstance(simulated, StepResult):
-            t, y = simulated.record.t * 1000, simulated.record.channels[LOOPS[loop].actual]
-            series.append(Series(t, y, self.tr("proposed (simulated)"), COLOURS[2], True))
-        elif simulated is not None:
-            t = np.arange(len(simulated)) * 0.2
-            series.append(Series(t, simulated, self.tr("proposed (simulated)"), COLOURS[2], True))
-        self.plot.show_plots([Plot(self.tr("Step response"), self.tr("time [ms]"), "%", series)])
-        self.override.blockSignals(True)
-        self.override.setChecked(False)
-        self.override.blockSignals(False)
-        self.override.setVisible(bool(doubts))
-        self.accept_button.setEnabled(not doubts)
-
-    def _override_toggled(self, checked: bool) -> None:
-        """An untrustworthy proposal can be accepted only after this explicit choice."""
-        self.accept_button.setEnabled(checked and bool(self.proposal))
-
-    def _step_text(self, step: Any) -> str:
-        f = step.figures
-        if f is None:
-            return self.tr("no response")
-        settle = "—" if math.isnan(f.settling_time) else f"{f.settling_time * 1000:.1f} ms"
-        return (
-            self.tr("overshoot %1 %, settling %2")
-            .replace("%1", f"{f.overshoot:.1f}")
-            .replace("%2", settle)
-        )
-
-    def _figures(self, before: Any, after: Any) -> str:
-        return (
-            self.tr("Before: %1. Proposed: %2.")
-            .replace("%1", self._step_text(before))
-            .replace("%2", self._step_text(after))
-        )
-
-    def accept(self) -> None:
-        """The proposal into the document, one undo step."""
-        if self.proposal:
-            self.window_.accept_values(self.proposal, self.tr("Autotune"))
-            self.accept_button.setEnabled(False)
-            self.override.setVisible(False)
-
-    def retranslate(self) -> None:
-        """Texts."""
-        self.method.setItemText(0, self.tr("Model-based (never oscillates)"))
-        self.method.setItemText(1, self.tr("Critical gain (APOSYS 10 rule)"))
-        self.tr_label("method", self.tr("Method:"))
-        self.tr_label("amplitude", self.tr("Step amplitude:"))
-        self.tr_label("overshoot", self.tr("Target overshoot at most:"))
-        self.tr_label("settling", self.tr("Target settling time (±2 %) at most:"))
-        self.tr_label("limit", self.tr("Stop when the response leaves 0 ± (band):"))
-        self.run_button.setText(self.tr("Run autotune"))
-        self.accept_button.setText(self.tr("Accept the proposed gains"))
-        self.override.setText(self.tr("Accept anyway (I checked the measurement)"))
 
 
 class BodePage(Page):

@@ -23,6 +23,7 @@ from prm9tool.analysis.profile import Limit
 from prm9tool.characterize.run import Characterization, Figure
 from prm9tool.i18n import current_language
 from prm9tool.messages import localized_number
+from prm9tool.translate import translated
 from prm9tool.views.record import configure_pdf
 from prm9tool.views.tuning.plot import COLOURS, Plot, Series, plot_image
 
@@ -47,6 +48,14 @@ def figure_label(figure: Figure) -> str:
     if parts[0] == "flow":  # E04: actuator velocity over opening
         what = base.get(parts[1], figure.name)
         return translate("TuningReport", "flow characteristic: %1").replace("%1", what)
+    if parts[0] == "step" and len(parts) > 3 and parts[3] in base:  # step_<from>_<to>_…
+        start, end = (p.replace("-", "−") for p in parts[1:3])
+        return (
+            translate("TuningReport", "step %1 → %2 %: %3")
+            .replace("%1", start)
+            .replace("%2", end)
+            .replace("%3", base[parts[3]])
+        )
     if parts[0] == "step":
         what = base.get(parts[2], parts[2])
         return (
@@ -65,8 +74,8 @@ def verdict(passed: bool | None) -> str:
 def value_text(f: Figure) -> str:
     """The figure's value with its unit (times in ms), with the program language's decimal
     separator (``5,75 %`` in German and Czech)."""
-    if math.isnan(f.value):
-        return translate("TuningReport", "not reached")
+    if math.isnan(f.value):  # what it saw instead, e.g. an oscillation at 80 Hz
+        return translate("TuningReport", "not reached") if f.note is None else translated(f.note)
     if f.above:  # not reached by the sweep's end
         return translate("TuningReport", "above {0}").format(_local(f"{f.value:.3g} {f.unit}"))
     if f.unit == "s":

@@ -13,7 +13,13 @@ from PySide6.QtWidgets import (
 )
 
 from prm9tool.analysis.profile import DEFAULT, ProfileError, load_profile
-from prm9tool.characterize.run import Characterization, characterize, write_csv_files
+from prm9tool.catalogue.variant import Config
+from prm9tool.characterize.run import (
+    Characterization,
+    characterize,
+    planned_s,
+    write_csv_files,
+)
 from prm9tool.online.characterization_history import run_with_history
 from prm9tool.views.tuning.host import TuningHost
 from prm9tool.views.tuning.pages import Page
@@ -63,8 +69,12 @@ class ReportPage(Page):
             "%2", f"{profile.bode_amplitude_pct:g}").replace(
             "%3", f"{profile.bode_duration_s + profile.static_period_s + 1:.0f}")  # fmt: skip
         connection = self.window_.connection  # online, the result goes into the history too
+        flow = (
+            self.window_.doc.variant.config is Config.E04
+            and self.window_.doc.value("CTRLMODE") == 4
+        )
         self.window_.start("report", what, lambda rig: run_with_history(
-            connection, lambda: characterize(rig, profile)))  # fmt: skip
+            connection, lambda: characterize(rig, profile)), planned_s(profile, flow))  # fmt: skip
 
     def show_result(self, result: object) -> None:
         """Every figure with its verdict."""

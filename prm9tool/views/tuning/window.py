@@ -26,13 +26,16 @@ from PySide6.QtWidgets import (
     QWidget,
 )
 
+from prm9tool.analysis.profile import DEFAULT, Profile, load_profile
 from prm9tool.catalogue.variant import Config
 from prm9tool.model.document import ParameterDocument
 from prm9tool.online.connection_protocol import StatusView
 from prm9tool.online.tuning_runner import SimulationRunner, TuningRunner, ValveRunner
 from prm9tool.online.valve_control import ValveControl
 from prm9tool.views.scope.start import offer_enable
-from prm9tool.views.tuning.pages import AutotunePage, BodePage, Page
+from prm9tool.views.tuning.autotune import AutotunePage
+from prm9tool.views.tuning.pages import BodePage, Page
+from prm9tool.views.tuning.progress import TestProgress
 from prm9tool.views.tuning.report_page import ReportPage
 from prm9tool.views.tuning.static import FlowPage, StaticPage
 
@@ -75,7 +78,9 @@ class TuningWindow(QDialog):
         self._loop_label = QLabel()
         top.addRow(self._loop_label, self.loop)
         bottom = QHBoxLayout()
+        self.progress = TestProgress()
         bottom.addWidget(self.status, 1)
+        bottom.addWidget(self.progress)
         bottom.addWidget(self.stop_button)
         layout = QVBoxLayout(self)
         layout.addWidget(self.mode)
@@ -111,27 +116,50 @@ class TuningWindow(QDialog):
         self.runner = self._make_runner()
         self.retranslate()
 
-    def start(self, kind: str, what: str, procedure: Any) -> None:
-        """Confirm (on a valve) what the test will do, then run ``procedure(rig)``."""
+    def start(self, kind: str, what: str, procedure: Any, planned_s: float | None = None) -> None:
+        """Confirm (on a valve) what the test will do, then run ``procedure(rig)``.
+
+        ``planned_s``: the valve seconds the test plays, for the progress bar (None: unknown,
+        the bar only shows that it runs). A running setpoint generator is stopped by the test
+        (the connection runs one thing on the valve's setpoint at a time): the confirmation and
+        the status line say so.
+        """
         if self.runner.busy:
             return
+        generator = bool(getattr(self.connection, "generator_running", False))
         if isinstance(self.runner, SimulationRunner):
             self.runner.values = dict(self.doc.values)  # the document as it is now
-        elif not self._confirm(what):
+            generator = False  # the test does not touch the valve
+        elif not self._confirm(what, generator):
             return
         else:
             offer_enable(self, self._control, self._status, self.tr("Tuning"))
-        self.status.setText(self.tr("Running: %1").replace("%1", what))
+        running = self.tr("Running: %1").replace("%1", what)
+        if generator:  # stopped here, before the test, whether or not the scope is open
+            self.connection.stop_generator()  # type: ignore[union-attr]
+            running = self.tr("The oscilloscope's setpoint generator was stopped for the test.") + " " + running  # fmt: skip
+        self.status.setText(running)
         self.runner.run(kind, procedure)
+        self.progress.start(self.runner, planned_s)
 
-    def _confirm(self, what: str) -> bool:
+    def _confirm(self, what: str, generator: bool = False) -> bool:
         text = self.tr(
             "This test moves the spool (and on E04 the actuator): %1.\n\n"
             "Make sure the hydraulics are safe for it. Stop ends it at any time and puts the "
             "valve back as it was. Start the test?"
         ).replace("%1", what)
+        if generator:
+            text += "\n\n" + self.tr(
+                "The oscilloscope's setpoint generator is running: the test stops it (start it "
+                "again afterwards)."
+            )
         answer = QMessageBox.question(self, self.tr("Tuning"), text)
         return answer == QMessageBox.StandardButton.Yes
+
+    def profile(self) -> Profile:
+        """The acceptance profile chosen on the test report page (default when empty)."""
+        path = self.report.profile_path.text().strip()
+        return load_profile(path) if path else DEFAULT
 
     def stop(self) -> None:
         """Stop the running test."""
@@ -140,6 +168,8 @@ class TuningWindow(QDialog):
 
     def _on_busy_changed(self, busy: bool) -> None:
         self.stop_button.setEnabled(busy)
+        if not busy:
+            self.progress.finish()
         for page in self.pages():
             page.set_busy(busy)
 

@@ -52,16 +52,18 @@ class ValveFinder(QObject):
     def configure_can_bus(self) -> None:
         """Communication → CAN bus: choose the bus and a valve on it, then go online with it."""
         from prm9tool.online.bus_monitor import BusMonitor
+        from prm9tool.online.lss_commissioning import LssCommissioning
         from prm9tool.views.can_bus_dialog import CanBusDialog
 
         def scan(bus: dict[str, object], deliver: Callable[[ListedValves], None]) -> None:
             self._connection.list_devices_async((), deliver, bus)
 
-        monitor = BusMonitor()
-        dialog = CanBusDialog(scan, self._settings, self._window, monitor)
+        monitor, lss = BusMonitor(), LssCommissioning()
+        dialog = CanBusDialog(scan, self._settings, self._window, monitor, lss)
         accepted = dialog.exec() == QDialog.DialogCode.Accepted
         monitor.stop()
         monitor.deleteLater()
+        lss.deleteLater()
         if not accepted:
             return
         device_id = dialog.selected_device_id()

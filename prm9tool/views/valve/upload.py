@@ -13,6 +13,7 @@ from PySide6.QtCore import QObject, QTime
 from PySide6.QtWidgets import QWidget
 
 from prm9tool.catalogue import CATALOGUE, Access, variant_label
+from prm9tool.catalogue.manual_od import KEPT_AS_WRITTEN, STORED_WITH_1010, VERIFIED_RESTART
 from prm9tool.catalogue.typekey import TypeKey
 from prm9tool.model.access import AccessModel
 from prm9tool.model.document import ParameterDocument, Raw
@@ -166,7 +167,16 @@ class ValveUpload(QObject):
                 "",
                 count,
             )
-        self._post(message.format(at))
+        how = self._store_texts().get(getattr(outcome, "store", None) or "")
+        self._post(message.format(at) + (f" ({how})" if how else ""))
+
+    def _store_texts(self) -> dict[str, str]:
+        """How the valve kept the set, as prm9tool.device.canlink.storing names it."""
+        return {
+            STORED_WITH_1010: self.tr("stored with 0x1010"),
+            KEPT_AS_WRITTEN: self.tr("kept by the valve as written (it has no store command)"),
+            VERIFIED_RESTART: self.tr("verified after a restart"),
+        }
 
     def _report_failure(self, outcome: UploadOutcome | None) -> None:
         mismatches = outcome.mismatches if outcome is not None else {}

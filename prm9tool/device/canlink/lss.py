@@ -1,0 +1,402 @@
+"""LSS master (CiA 305): finding devices without a node ID and giving them one.
+
+The protocol is the ``canopen`` package's :class:`canopen.lss.LssMaster` (``network.lss``):
+switch state global and selective, Fastscan, inquire, configure node ID and bit timing,
+activate bit timing, store configuration. This module adds what a commissioning tool needs
+on top: every unconfigured device rather than the first (each one Fastscan finds stays in the
+configuration state, so the next Fastscan finds the next), two devices with the same LSS
+address detected (both answer the selective switch), every CiA 305 error answer turned into
+a sentence, and an assignment that either stores node ID and bit timing together or leaves
+the device as it was.
+
+Timing is derived, not guessed: "identify non-configured remote slave" (answered by every
+device without a node ID) tells at once whether Fastscan will find anything and how long an
+answer takes on this bus; each Fastscan step waits ten times that (at least 50 ms). A step
+whose answer came too late makes the scan miss the device (its final check fails, never a
+wrong address); the scan then runs again with twice the wait.
+"""
+
+from __future__ import annotations
+
+import threading
+import time
+from collections.abc import Callable, Iterator
+from contextlib import contextmanager, suppress
+from dataclasses import dataclass
+from typing import TYPE_CHECKING
+
+from prm9tool.catalogue.canopen_switches import LSS_BIT_TIMINGS_KBIT, LSS_UNCONFIGURED
+from prm9tool.device.canlink.sdo import ARGO_HYTOS_VENDOR
+from prm9tool.errors import CommunicationError
+from prm9tool.messages import QT_TRANSLATE_NOOP
+
+if TYPE_CHECKING:
+    from prm9tool.device.canlink.bus import CanNetwork
+
+LSS_RESPONSE = 0x7E4
+CS_CONFIGURE_NODE_ID, CS_CONFIGURE_BIT_TIMING, CS_STORE = 0x11, 0x13, 0x17
+CS_SELECTIVE_RESPONSE, CS_IDENTIFY_SLAVE, CS_NON_CONFIGURED_SLAVE = 0x44, 0x4F, 0x50
+CS_INQUIRE = (0x5A, 0x5B, 0x5C, 0x5D)  # vendor, product, revision, serial
+WAITING, CONFIGURATION = 0, 1
+ERROR_NONE = 0
+PROBE_WAIT_S = 0.5  # how long "identify non-configured" waits for a first answer (canopen's)
+MIN_STEP_S, MAX_STEP_S = 0.05, 0.8
+SCAN_ATTEMPTS = 4
+MAX_DEVICES = 127
+
+# CiA 305 error codes of configure node ID / bit timing / store configuration
+ERRORS = {
+    CS_CONFIGURE_NODE_ID: {1: "the node ID is out of range (1…127)"},
+    CS_CONFIGURE_BIT_TIMING: {1: "the device does not support this bit rate"},
+    CS_STORE: {
+        1: "the device cannot store its configuration (store not supported)",
+        2: "the device could not write its non-volatile memory (storage media access error)",
+    },
+}
+SERVICE = {
+    CS_CONFIGURE_NODE_ID: "configure node ID",
+    CS_CONFIGURE_BIT_TIMING: "configure bit timing",
+    CS_STORE: "store configuration",
+}
+
+
+class LssFailedError(CommunicationError):
+    """An LSS service failed; ``kind``: none, duplicate, taken, refused, lost, unanswered."""
+
+    summary = QT_TRANSLATE_NOOP("Errors", "Node ID assignment (LSS) did not complete.")
+
+    def __init__(self, message: str, kind: str) -> None:
+        super().__init__(message)
+        self.kind = kind
+
+
+@dataclass(frozen=True)
+class LssAddress:
+    """The 128-bit LSS address of a device: its identity object 0x1018/1…4."""
+
+    vendor: int
+    product: int
+    revision: int
+    serial: int
+
+    @property
+    def is_prm9(self) -> bool:
+        """Argo-Hytos' vendor ID 0xE6 (manual §7.6): a PRM9."""
+        return self.vendor == ARGO_HYTOS_VENDOR
+
+    def as_tuple(self) -> tuple[int, int, int, int]:
+        """(vendor, product, revision, serial) as canopen's LssMaster takes them."""
+        return (self.vendor, self.product, self.revision, self.serial)
+
+    def describe(self) -> str:
+        """``PRM9 (vendor 0xE6), product 0x9, revision 0x10000, serial 4711``."""
+        who = "PRM9" if self.is_prm9 else "not a PRM9"
+        return (
+            f"{who} (vendor 0x{self.vendor:X}), product 0x{self.product:X}, "
+            f"revision 0x{self.revision:X}, serial {self.serial}"
+        )
+
+
+@dataclass
+class _Heard:
+    """The LSS answers (COB-ID 0x7E4) since :meth:`LssMasterLink._listen` started."""
+
+    frames: list[tuple[float, bytes]]
+
+    def count(self, cs: int) -> int:
+        return sum(1 for _, data in self.frames if data and data[0] == cs)
+
+    def last(self, cs: int) -> bytes | None:
+        return next((data for _, data in reversed(self.frames) if data and data[0] == cs), None)
+
+
+_LOCKS: dict[int, threading.Lock] = {}
+_LOCKS_LOCK = threading.Lock()
+
+
+def _bus_lock(shared: CanNetwork) -> threading.Lock:
+    """One LSS conversation at a time per bus (LSS requests carry no address)."""
+    with _LOCKS_LOCK:
+        return _LOCKS.setdefault(id(shared.network), threading.Lock())
+
+
+class LssMasterLink:
+    """LSS services on one shared bus, through ``shared.network.lss``."""
+
+    def __init__(self, shared: CanNetwork) -> None:
+        self._shared = shared
+        self._lss = shared.network.lss
+        self._lock = _bus_lock(shared)
+        self.latency_s: float | None = None  # the first answer to the last probe
+
+    # --- finding devices ---------------------------------------------------------------
+    def scan(self, progress: Callable[[LssAddress], None] | None = None) -> list[LssAddress]:
+        """Every device without a node ID, by Fastscan; [] when there is none.
+
+        LssFailedError ``duplicate`` when two devices answer with one address (neither changed).
+        """
+        with self._lock:
+            self._lss.send_switch_state_global(WAITING)
+            try:
+                found = self._fastscan_all(progress)
+            finally:
+                self._lss.send_switch_state_global(WAITING)
+            for address in found:
+                self._check_unique(address)
+            return found
+
+    def _fastscan_all(self, progress: Callable[[LssAddress], None] | None) -> list[LssAddress]:
+        found: list[LssAddress] = []
+        latency = self._probe()
+        if latency is None:
+            return found
+        step = min(max(10 * latency, MIN_STEP_S), MAX_STEP_S)
+        misses = 0
+        while len(found) < MAX_DEVICES:
+            with self._listen() as heard:
+                ok, parts = self._with_timeout(step, self._lss.fast_scan)
+            if ok and parts is not None:
+                address = LssAddress(*(int(p) for p in parts))
+                found.append(address)
+                if progress is not None:
+                    progress(address)
+                continue
+            if not heard.count(CS_IDENTIFY_SLAVE):
+                break  # nobody answered its first step: every device was found
+            misses += 1
+            if misses >= SCAN_ATTEMPTS:
+                for address in found:  # two alike are the likeliest reason: say so
+                    self._check_unique(address)
+                raise LssFailedError(
+                    f"Fastscan did not complete although devices without a node ID answer "
+                    f"(tried {misses} times, up to {step * 1000:.0f} ms per step): the bus is "
+                    "too busy or a device answers late; try again on a quieter bus",
+                    "none",
+                )
+            step = min(2 * step, MAX_STEP_S)
+        return found
+
+    def _probe(self) -> float | None:
+        """Seconds until the first device without a node ID answered (None: none did)."""
+        with self._listen() as heard:
+            start = time.monotonic()
+            self._lss.send_identify_non_configured_remote_slave()
+            deadline = start + PROBE_WAIT_S
+            while time.monotonic() < deadline and not heard.count(CS_NON_CONFIGURED_SLAVE):
+                time.sleep(0.002)
+            answers = [t for t, data in heard.frames if data and data[0] == CS_NON_CONFIGURED_SLAVE]
+        self.latency_s = answers[0] - start if answers else None
+        return self.latency_s
+
+    def _check_unique(self, address: LssAddress) -> None:
+        """Select ``address`` alone; LssFailedError ``duplicate`` if two devices answer."""
+        try:
+            self._select(address)
+        finally:
+            self._lss.send_switch_state_global(WAITING)
+
+    def _select(self, address: LssAddress) -> None:
+        """Switch state selective to ``address``: exactly one device must answer."""
+        from canopen.lss import LssError
+
+        with self._listen() as heard:
+            start = time.monotonic()
+            try:
+                self._lss.send_switch_state_selective(*address.as_tuple())
+            except LssError:
+                raise LssFailedError(
+                    f"no device answers to the LSS address {address.describe()}: it left the "
+                    "bus or does not take part in LSS (search the bus)",
+                    "unanswered",
+                ) from None
+            answered = [t for t, d in heard.frames if d and d[0] == CS_SELECTIVE_RESPONSE]
+            first = answered[0] - start if answered else MIN_STEP_S
+            time.sleep(max(4 * (self.latency_s or first), MIN_STEP_S))
+            count = heard.count(CS_SELECTIVE_RESPONSE)
+        if count > 1:
+            raise LssFailedError(
+                f"{count} devices answer with the same LSS address ({address.describe()}): LSS "
+                "cannot tell them apart and prm9tool changed neither. Take all but one off the "
+                "bus (or set one's node-ID switch to a fixed node ID), assign that one, then "
+                "the next",
+                "duplicate",
+            )
+
+    # --- configuring -------------------------------------------------------------------
+    def assign(self, address: LssAddress, node_id: int, bit_timing: int | None = None) -> None:
+        """Give ``address`` node ID ``node_id`` (and a CiA 305 table-0 bit timing), stored.
+
+        The node ID and bit timing are stored together or not at all: when a service is
+        refused or the device stops answering before the store is acknowledged, the master
+        puts the pending node ID back (where the device still answers) and releases it, so
+        the device keeps what it had. A device without a node ID boots with the new one when
+        released (CiA 305); a configured one takes it at its next NMT reset communication.
+        """
+        if not 1 <= node_id <= 127:
+            raise LssFailedError(f"node ID {node_id} is outside 1…127", "refused")
+        with self._lock:
+            self._lss.send_switch_state_global(WAITING)
+            try:
+                self._select(address)
+            except LssFailedError:
+                self._lss.send_switch_state_global(WAITING)  # two alike: release both
+                raise
+            try:
+                before = self._inquire_node_id(address)
+                self._configure(address, CS_CONFIGURE_NODE_ID, node_id)
+                if bit_timing is not None:
+                    self._configure(address, CS_CONFIGURE_BIT_TIMING, bit_timing)
+                self._configure(address, CS_STORE)
+            except LssFailedError:
+                self._undo(before)
+                raise
+            finally:
+                self._lss.send_switch_state_global(WAITING)
+
+    def activate_bit_timing(self, switch_delay_ms: int) -> None:
+        """Every configured device switches to its pending bit timing (no answer; CiA 305:
+        silent for ``switch_delay_ms``, switch, silent for it once more)."""
+        with self._lock:
+            self._lss.send_switch_state_global(CONFIGURATION)
+            self._lss.activate_bit_timing(switch_delay_ms)
+            self._lss.send_switch_state_global(WAITING)
+            time.sleep(2 * switch_delay_ms / 1000)  # CiA 305: they are silent until then
+
+    def change_bus_bit_timing(self, index: int, switch_delay_ms: int) -> int:
+        """Every device that takes part in LSS goes to the CiA 305 table-0 bit timing
+        ``index``: configure (all must accept), store (all must confirm), activate after
+        ``switch_delay_ms``. Returns how many devices switch; LssFailedError when none answers
+        or one refuses (then nothing is activated: no device changes its rate now)."""
+        from canopen.lss import LssError
+
+        rate = _kbit(index)
+        with self._lock, self._listen() as heard:
+            self._lss.send_switch_state_global(CONFIGURATION)
+            try:
+                for cs, call in (
+                    (CS_CONFIGURE_BIT_TIMING, lambda: self._lss.configure_bit_timing(index)),
+                    (CS_STORE, self._lss.store_configuration),
+                ):
+                    with suppress(LssError):  # every answer is judged below, not the first
+                        call()
+                    time.sleep(max(4 * (self.latency_s or 0.0), MIN_STEP_S))
+                    answers = [d for _, d in heard.frames if d and d[0] == cs]
+                    if not answers:
+                        raise LssFailedError(
+                            f"no device answers LSS on this bus ({SERVICE[cs]} {rate}): none "
+                            "has its node-ID switch at 1; nothing was changed",
+                            "none",
+                        )
+                    refused = [d for d in answers if d[1] != ERROR_NONE]
+                    if refused:
+                        reason = ERRORS[cs].get(refused[0][1], f"error {refused[0][1]}")
+                        stored = (
+                            ""
+                            if cs == CS_CONFIGURE_BIT_TIMING
+                            else (
+                                f"; the other {len(answers) - len(refused)} stored it and take it "
+                                "at their next power-up"
+                            )
+                        )
+                        raise LssFailedError(
+                            f"{len(refused)} of {len(answers)} devices refused {SERVICE[cs]} "
+                            f"{rate}: {reason}; no device switched now{stored}",
+                            "refused",
+                        )
+                self._lss.activate_bit_timing(switch_delay_ms)
+            finally:
+                self._lss.send_switch_state_global(WAITING)
+            time.sleep(2 * switch_delay_ms / 1000)  # CiA 305: they are silent until then
+        return len(answers)
+
+    def _inquire_node_id(self, address: LssAddress) -> int:
+        from canopen.lss import LssError
+
+        try:
+            return int(self._lss.inquire_node_id())
+        except LssError:
+            raise LssFailedError(
+                f"serial {address.serial}: no answer to inquire node ID: the device left the "
+                "bus during configuration; nothing was changed",
+                "lost",
+            ) from None
+
+    def _configure(self, address: LssAddress, cs: int, value: int = 0) -> None:
+        """One configure/store service; LssFailedError with the CiA 305 error in words."""
+        from canopen.lss import LssError
+
+        call: dict[int, Callable[[], None]] = {
+            CS_CONFIGURE_NODE_ID: lambda: self._lss.configure_node_id(value),
+            CS_CONFIGURE_BIT_TIMING: lambda: self._lss.configure_bit_timing(value),
+            CS_STORE: self._lss.store_configuration,
+        }
+        with self._listen() as heard:
+            try:
+                call[cs]()
+            except LssError:
+                answer = heard.last(cs)
+                raise _service_problem(address, cs, value, answer) from None
+
+    def _undo(self, before: int) -> None:
+        """Put the pending node ID back (best effort: the device may be gone)."""
+        from canopen.lss import LssError
+
+        with suppress(LssError):
+            self._lss.configure_node_id(before if 1 <= before <= 127 else LSS_UNCONFIGURED)
+
+    @contextmanager
+    def _listen(self) -> Iterator[_Heard]:
+        heard = _Heard([])
+
+        def on_answer(can_id: int, data: bytearray, timestamp: float) -> None:
+            heard.frames.append((time.monotonic(), bytes(data)))
+
+        network = self._shared.network
+        network.subscribe(LSS_RESPONSE, on_answer)
+        try:
+            yield heard
+        finally:
+            network.unsubscribe(LSS_RESPONSE, on_answer)
+
+    def _with_timeout(self, timeout_s: float, call: Callable[[], tuple[bool, list[int] | None]]):  # type: ignore[no-untyped-def]
+        saved = self._lss.RESPONSE_TIMEOUT
+        self._lss.RESPONSE_TIMEOUT = timeout_s
+        try:
+            return call()
+        finally:
+            self._lss.RESPONSE_TIMEOUT = saved
+
+
+def _service_problem(
+    address: LssAddress, cs: int, value: int, answer: bytes | None
+) -> LssFailedError:
+    what = SERVICE[cs]
+    if cs == CS_CONFIGURE_NODE_ID:
+        what += f" {value}"
+    elif cs == CS_CONFIGURE_BIT_TIMING:
+        what += f" {_kbit(value)}"
+    if answer is None:
+        stored = (
+            "it may or may not have stored the new configuration: power it up and search the "
+            "bus (and the devices without a node ID)"
+            if cs == CS_STORE
+            else "it stored nothing"
+        )
+        return LssFailedError(
+            f"serial {address.serial}: no answer to {what}: the device left the bus during "
+            f"configuration; {stored}",
+            "lost",
+        )
+    code, specific = answer[1], answer[2]
+    reason = ERRORS[cs].get(code)
+    if reason is None:
+        reason = f"manufacturer-specific error {specific} (CiA 305 error code {code})"
+    return LssFailedError(
+        f"serial {address.serial} refused {what}: {reason}; nothing was stored", "refused"
+    )
+
+
+def _kbit(index: int) -> str:
+    if 0 <= index < len(LSS_BIT_TIMINGS_KBIT):
+        return f"{LSS_BIT_TIMINGS_KBIT[index]} kbit/s"
+    return f"(table index {index})"
