@@ -75,7 +75,8 @@ def can_valve(tmp_path, monkeypatch, request):
     from can_link_rig import make_link_rig
 
     monkeypatch.setenv("PRM9TOOL_DATA_DIR", str(tmp_path / "data"))
-    rig = make_link_rig(request.node.name, tmp_path, E02 + "-CA", real_valve=True)
+    od = getattr(request, "param", "full")  # "manual": only the objects the manual lists
+    rig = make_link_rig(request.node.name, tmp_path, E02 + "-CA", real_valve=True, od=od)
     word = CATALOGUE["CONTROLWORD"]
     rig.valve.nmt_command(NmtCommand.START)  # RPDO1 (the setpoint) counts when OPERATIONAL
     for value in ENABLE_SEQUENCE:
@@ -105,6 +106,7 @@ def drop_tpdo1(rig, share: float, burst: int) -> list[int]:
     return dropped
 
 
+@pytest.mark.parametrize("can_valve", ["full", "manual"], indirect=True)
 def test_the_sweep_over_can_runs_at_1_khz_to_100_hz_and_lost_samples_do_not_move_it(can_valve):
     dropped = drop_tpdo1(can_valve, 0.1, 25)
     reference = bode_test(EmulatorRig(EmulatedValve(E02)), 10.0, 0.0, 2.0, 100.0, 3.0)
