@@ -32,6 +32,7 @@ def rising_edges(values: np.ndarray, level: float) -> np.ndarray:
     return rows[1:][above[1:] & ~above[:-1]]
 
 
+@pytest.mark.parametrize("can_valve", ["full", "manual"], indirect=True)
 def test_a_square_keeps_its_period_with_half_the_tpdo1_frames_lost(can_valve):  # noqa: F811
     dropped = drop_tpdo1(can_valve, 0.45, 40)
     with CanopenSession(can_valve.options, 10, type_key=E02 + "-CA") as session:
