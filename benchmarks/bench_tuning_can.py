@@ -13,7 +13,7 @@ within 5 % both times, at ≥ 1 kHz.
 
     .venv/bin/python benchmarks/bench_tuning_can.py [--quick]
 
-``--quick``: one short sweep (1 s), quiet only (the CI smoke run).
+``--quick``: one short sweep (2 s), quiet only (the CI smoke run).
 """
 
 from __future__ import annotations
@@ -106,7 +106,7 @@ def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--quick", action="store_true", help="one short quiet sweep (CI)")
     quick = parser.parse_args().quick
-    sweep_s = 1.0 if quick else SWEEP_S
+    sweep_s = 2.0 if quick else SWEEP_S
     reference = bode_test(EmulatorRig(EmulatedValve(TYPE_KEY[:-3])), 10.0, 0.0, 1.0, 100.0, sweep_s)
     report("quiet PC", *over_can(sweep_s), reference)
     if quick:

@@ -120,6 +120,7 @@ def frequency_response(
 
 
 FIR_S = 0.1  # decision: the impulse response fitted when samples are missing (10 periods of 100 Hz)
+FIT_EQUATIONS = 10  # decision: at least ten arrived samples per coefficient of that fit
 
 
 def frequency_response_with_gaps(
@@ -161,8 +162,11 @@ def filled_response(u: np.ndarray, y: np.ndarray, missing: np.ndarray, fs: float
     windows = np.lib.stride_tricks.sliding_window_view(padded, taps)[
         :, ::-1
     ]  # row k: u[k…k-taps+1]
-    if present.sum() < 2 * taps:  # twice as many equations as unknowns at least
-        raise ValueError(f"too few response samples arrived ({int(present.sum())} of {len(u)})")
+    if present.sum() < FIT_EQUATIONS * taps:
+        raise ValueError(
+            f"too few response samples arrived ({int(present.sum())} of {len(u)}; the fit "
+            f"needs {FIT_EQUATIONS * taps})"
+        )
     weights, *_ = np.linalg.lstsq(windows[present], y[present] - offset_y, rcond=None)
     out = y.copy()
     out[missing] = windows[missing] @ weights + offset_y

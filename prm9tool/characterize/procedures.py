@@ -316,7 +316,13 @@ def bode_test(
     limited = f_max if note else None  # (the note says the sweep was limited)
     u, y, missing = rec.channels[lp.setpoint], rec.channels[lp.actual], rig.last_missing
     if missing.any():  # lost on the link: not filled in, the fit uses what arrived
-        response = frequency_response_with_gaps(u, y, missing, fs, f_min, f_max)
+        try:
+            response = frequency_response_with_gaps(u, y, missing, fs, f_min, f_max)
+        except ValueError as exc:  # too few arrived for the fit: the link's refusal
+            raise LinkTooSlowError(
+                f"the link lost {int(missing.sum())} of {len(missing)} samples of the sweep "
+                f"({exc}); choose a longer sweep, the test was stopped, nothing was interpolated"
+            ) from None
     else:
         response = frequency_response(u, y, fs, f_min, f_max)
     lost = int(missing.sum())

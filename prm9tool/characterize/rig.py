@@ -36,7 +36,7 @@ STOPPED = QT_TRANSLATE_NOOP("Characterize", "stopped by the user; the valve was 
 REPORTED = QT_TRANSLATE_NOOP("Characterize", "the valve reported error {0}: {1}")
 
 
-ATTEMPTS = 3  # a test whose samples the link lost runs at most this often in all
+ATTEMPTS = 5  # a test whose samples the link lost runs at most this often in all
 LATE_SHARE = 0.05  # at most this share of a test's samples may be late or lost (bridged)
 MAX_GAP_S = 0.005  # decision: a longer run of lost samples is not bridged (half of 100 Hz)
 
