@@ -3,9 +3,11 @@ in front of a paced emulated valve) and CANopen (an emulated -CA valve on a virt
 
 from __future__ import annotations
 
+import contextlib
 import json
 import os
 import sys
+import threading
 import time
 
 import numpy as np
@@ -41,6 +43,27 @@ static_gain = { min = 0.9, max = 1.1 }
 static_linearity_pct = { max = 5 }
 static_hysteresis_pct = { max = 8 }
 """
+
+
+@contextlib.contextmanager
+def emulator_lag(valve):
+    """How far the emulated valve's simulation (in this process) fell behind real time while
+    the block ran, sampled every 2 ms: a valve of its own never does, so a figure measured
+    while it did describes the PC's load, not the valve."""
+    lags: list[float] = []
+    done = threading.Event()
+
+    def watch() -> None:
+        while not done.wait(0.002):
+            lags.append(valve.pacer.lag_s())
+
+    watcher = threading.Thread(target=watch)
+    watcher.start()
+    try:
+        yield lags
+    finally:
+        done.set()
+        watcher.join()
 
 
 def step_s(rig) -> float:
@@ -109,8 +132,12 @@ def test_characterize_over_canopen_at_the_links_rate(can_valve, tmp_path, capsys
     args = ["--characterize", "--device", "can:10", "--can-interface", "virtual",
             "--can-channel", can_valve.options.channel, "--profile", str(tmp_path / "short.toml"),
             "--json", str(js), "--report", str(pdf)]  # fmt: skip
-    code = main(args)
+    with emulator_lag(can_valve.valve) as lags:
+        code = main(args)
     err = capsys.readouterr().err
+    behind = float(np.percentile(lags, 90)) if lags else 0.0
+    if code == ExitCode.OUT_OF_LIMITS and behind > 0.003:  # the valve is in this process
+        pytest.skip(f"the emulated valve was {behind * 1000:.0f} ms behind real time: {err}")
     if code == ExitCode.COMMUNICATION:  # a PC too loaded to keep the pace: said, not hidden
         assert "link lost" in err, err
         assert "nothing was interpolated" in err and not js.exists()
