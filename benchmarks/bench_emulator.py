@@ -1,10 +1,13 @@
-"""Emulator speed: real-time factor of E02 and E04 with every feature on, and paced accuracy.
+"""Emulator speed: both control-loop kernels, E02 and E04 with every feature on, paced valves.
 
-The reference, measured in the same run, is a minimal inline Python cascade (threshold, ramp,
-PID, first-order coil, spring-mass spool) written below: the least any pure-Python 200 µs loop
-has to do. The ratio emulator/reference is the price of the full firmware and plant.
+Per kernel (compiled C, Python reference) the real-time factor of E02 and E04 with every
+feature on; the reference, measured in the same run, is a minimal inline Python cascade
+(threshold, ramp, PID, first-order coil, spring-mass spool) written below: the least any
+pure-Python 200 µs loop has to do. Then the CPU share of 8 paced E04 -CA valves on one
+(virtual) CAN bus, as ``--serve-emulator`` x8 runs them, per kernel.
 
-    .venv/bin/python benchmarks/bench_emulator.py              # speed, ~30 s
+    .venv/bin/python benchmarks/bench_emulator.py              # everything, ~1 min
+    .venv/bin/python benchmarks/bench_emulator.py --quick      # smoke run, a few seconds
     .venv/bin/python benchmarks/bench_emulator.py --paced 10   # plus a 10 s paced run
     .venv/bin/python benchmarks/bench_emulator.py --generator  # plus the generator's sine
 """
@@ -21,7 +24,9 @@ from collections import Counter
 from types import FrameType
 from typing import Any
 
-from prm9tool.device.emulator import EmulatedValve, kernel
+import can
+
+from prm9tool.device.emulator import EmulatedValve, kernel, kernels
 
 CYCLE_S = EmulatedValve.CYCLE_S
 TYPE_KEYS = {
@@ -30,9 +35,24 @@ TYPE_KEYS = {
 }
 
 
-def all_features(type_key: str) -> EmulatedValve:
+KERNELS = ("compiled", "python")
+# The per-cycle figures are CPU time of this (single-threaded) process: on the shared machine
+# the wall time of the same run varies several-fold with the other work; --wall measures that.
+CLOCK = time.process_time
+
+
+def new_valve(kernel_name: str, type_key: str, **kwargs: Any) -> EmulatedValve:
+    """A valve whose loop runs ``kernel_name`` ("compiled" or "python")."""
+    kernels.use(kernel_name)
+    try:
+        return EmulatedValve(type_key, **kwargs)
+    finally:
+        kernels.use(None)
+
+
+def all_features(type_key: str, kernel_name: str = "compiled") -> EmulatedValve:
     """A booted valve in analog mode with ramps, linearizations, dither and a 3-channel capture."""
-    valve = EmulatedValve(type_key, switches=(0, 2))
+    valve = new_valve(kernel_name, type_key, switches=(0, 2))
     valve.write(0x6332, 1, 200)  # ramps
     valve.write(0x6335, 1, 200)
     valve.write(0x6333, 1, 200)
@@ -46,37 +66,37 @@ def all_features(type_key: str) -> EmulatedValve:
     return valve
 
 
-def emulator_cycle_s(type_key: str, seconds: float, repeat: int) -> float:
+def emulator_cycle_s(type_key: str, seconds: float, repeat: int, kernel_name: str) -> float:
     """Best-of-repeat wall time per 200 µs cycle, a square-wave setpoint keeping everything moving."""
-    valve = all_features(type_key)
+    valve = all_features(type_key, kernel_name)
     times = []
     for _ in range(repeat):
-        start = time.perf_counter()
+        start = CLOCK()
         for k in range(int(seconds / 0.1)):
             valve.set_input("setpoint", 5.0 if k % 2 else -5.0)
             valve.advance(0.1)
             valve.capture_read()
-        times.append((time.perf_counter() - start) / (seconds / CYCLE_S))
+        times.append((CLOCK() - start) / (seconds / CYCLE_S))
     return min(times)
 
 
-def generator_cycle_s(type_key: str, seconds: float, repeat: int) -> float:
+def generator_cycle_s(type_key: str, seconds: float, repeat: int, kernel_name: str) -> float:
     """Best-of-repeat wall time per cycle with the setpoint generator's sine (20 Hz, ±40 %)
     running on the override in the valve's loop: the value changes nearly every cycle."""
     from prm9tool.catalogue import CATALOGUE
     from prm9tool.scope import GeneratorSettings, Waveform
 
-    valve = all_features(type_key)
+    valve = all_features(type_key, kernel_name)
     valve.write(*CATALOGUE["SETPOVRON"].key, 1)
     valve.drive_override(GeneratorSettings(Waveform.SINE, 40.0, 0.0, 0.05).raw_values)
     times = []
     for _ in range(repeat):
-        start = time.perf_counter()
+        start = CLOCK()
         for _ in range(int(seconds / 0.1)):
             valve.usb_activity()  # the override's watchdog
             valve.advance(0.1)
             valve.capture_read()
-        times.append((time.perf_counter() - start) / (seconds / CYCLE_S))
+        times.append((CLOCK() - start) / (seconds / CYCLE_S))
     return min(times)
 
 
@@ -84,9 +104,9 @@ def reference_cycle_s(cycles: int, repeat: int) -> float:
     """Best-of-repeat wall time per cycle of a minimal inline cascade (same loop style, no features)."""
     times = []
     for _ in range(repeat):
-        start = time.perf_counter()
+        start = CLOCK()
         minimal_cascade(cycles)
-        times.append((time.perf_counter() - start) / cycles)
+        times.append((CLOCK() - start) / cycles)
     return min(times)
 
 
@@ -117,6 +137,38 @@ def minimal_cascade(cycles: int) -> float:
     return x
 
 
+def paced_bus_share(count: int, seconds: float, kernel_name: str) -> tuple[float, float, int]:
+    """(CPU share of one core, worst simulated/wall ratio, dropped cycles) of ``count`` paced
+    E04 -CA valves on one virtual CAN bus, operational and enabled, following a setpoint."""
+    channel = f"bench-emulator-{kernel_name}-{time.monotonic_ns()}"
+    buses = [can.Bus(interface="virtual", channel=channel) for _ in range(count)]
+    valves, slaves = [], []
+    for position, bus in enumerate(buses, start=2):  # node switch 2…: node IDs 10, 15, ...
+        valve = new_valve(kernel_name, TYPE_KEYS["E04"], switches=(6, position))
+        slaves.append(valve.connect_can(bus))
+        valve.advance(2.0)  # booted
+        valve.nmt_command(1)  # operational
+        for word in (0x01, 0x03, 0x07, 0x0F):  # enabled: the loop controls
+            valve.write(0x6040, 0, word)
+        valve.write(0x6300, 1, 4000)  # a setpoint, as an RPDO would bring it
+        valves.append(valve)
+    sims = [v.time for v in valves]
+    cpu0, wall0 = time.process_time(), time.monotonic()
+    for valve in valves:
+        valve.start()
+    time.sleep(seconds)
+    for valve in valves:
+        valve.stop()
+    cpu, wall = time.process_time() - cpu0, time.monotonic() - wall0
+    ratio = min((v.time - s0) / wall for v, s0 in zip(valves, sims, strict=True))
+    dropped = sum(v.pacer.dropped_cycles for v in valves)
+    for slave in slaves:
+        slave.stop()
+    for bus in buses:
+        bus.shutdown()
+    return cpu / wall, ratio, dropped
+
+
 def paced_run(seconds: float) -> tuple[float, float, int]:
     """(simulated s, wall s, dropped cycles) of a real paced run with every feature on."""
     valve = all_features(TYPE_KEYS["E04"])
@@ -129,9 +181,9 @@ def paced_run(seconds: float) -> tuple[float, float, int]:
     return valve.time - sim0, wall, valve.pacer.dropped_cycles
 
 
-def profile(type_key: str) -> None:
+def profile(type_key: str, kernel_name: str) -> None:
     """Print where the time of one simulated second goes (cProfile, by total time)."""
-    valve = all_features(type_key)
+    valve = all_features(type_key, kernel_name)
     profiler = cProfile.Profile()
     profiler.enable()
     for k in range(10):
@@ -144,7 +196,7 @@ def profile(type_key: str) -> None:
 
 def line_counts(type_key: str, cycles: int = 2000) -> dict[str, float]:
     """Python lines executed per cycle in each block of the loop (blocks: ``# ---`` comments)."""
-    valve = all_features(type_key)
+    valve = all_features(type_key, "python")
     valve.set_input("setpoint", 5.0)
     valve.advance(0.05)
     code = kernel.control_loop.__code__
@@ -177,6 +229,8 @@ def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__)
     parser.add_argument("--seconds", type=float, default=2.0, help="simulated s per repeat")
     parser.add_argument("--repeat", type=int, default=5)
+    parser.add_argument("--valves", type=int, default=8, help="paced valves on one bus")
+    parser.add_argument("--bus-seconds", type=float, default=5.0, help="wall s of that run")
     parser.add_argument("--paced", type=float, default=0.0, help="also run paced for N s")
     parser.add_argument("--profile", action="store_true", help="print a cProfile summary")
     parser.add_argument("--lines", action="store_true", help="print lines per cycle per block")
@@ -184,33 +238,52 @@ def main() -> None:
         "--generator", action="store_true", help="also run with a sine on the setpoint override"
     )
     parser.add_argument("--quick", action="store_true", help="a smoke run: seconds, not figures")
+    parser.add_argument("--wall", action="store_true", help="wall time instead of CPU time")
     args = parser.parse_args()
+    if args.wall:
+        global CLOCK
+        CLOCK = time.perf_counter
     if args.quick:
-        args.seconds, args.repeat = 0.05, 1
+        args.seconds, args.repeat, args.bus_seconds = 0.05, 1, 0.5
         args.paced = min(args.paced, 0.2)
+    available = kernels.compiled_unavailable()
+    names = KERNELS if available is None else ("python",)
+    if available is not None:
+        print(f"compiled kernel unavailable ({available}): python kernel only")
     cycles = int(args.seconds / CYCLE_S)
     reference = reference_cycle_s(cycles, args.repeat)
-    print(f"minimal inline cascade: {reference * 1e6:6.2f} µs/cycle")
+    print(f"minimal inline cascade (Python): {reference * 1e6:6.2f} µs/cycle ({CLOCK.__name__})")
     for name, type_key in TYPE_KEYS.items():
-        cost = emulator_cycle_s(type_key, args.seconds, args.repeat)
-        print(
-            f"{name} all features: {cost * 1e6:6.2f} µs/cycle, "
-            f"{CYCLE_S / cost:6.1f}x real time, {cost / reference:4.2f}x the minimal cascade"
-        )
-        if args.generator:
-            driven = generator_cycle_s(type_key, args.seconds, args.repeat)
-            print(
-                f"{name} with the generator's 20 Hz sine on the override: "
-                f"{driven * 1e6:6.2f} µs/cycle, {CYCLE_S / driven:6.1f}x real time, "
-                f"{driven / cost:4.2f}x the square-wave run"
+        costs = {}
+        for kernel_name in names:
+            cost = costs[kernel_name] = emulator_cycle_s(
+                type_key, args.seconds, args.repeat, kernel_name
             )
-        if args.profile:
-            profile(type_key)
+            print(
+                f"{name} all features, {kernel_name} kernel: {cost * 1e6:.3f} µs/cycle, "
+                f"{CYCLE_S / cost:.1f} x real time, {cost / reference:.2f}x the minimal cascade"
+            )
+            if args.generator:
+                _generator_line(name, type_key, args, kernel_name, cost)
+            if args.profile:
+                profile(type_key, kernel_name)
+        if len(costs) == 2:
+            print(
+                f"{name}: the compiled kernel is {costs['python'] / costs['compiled']:.1f}x "
+                "faster than the python kernel"
+            )
         if args.lines:
             counts = line_counts(type_key)
             print(f"  Python lines per cycle: {sum(counts.values()):.1f}")
             for block, count in counts.items():
                 print(f"    {count:5.1f}  {block}")
+    for kernel_name in names:
+        share, ratio, dropped = paced_bus_share(args.valves, args.bus_seconds, kernel_name)
+        print(
+            f"{args.valves} paced E04 -CA valves on one bus, {kernel_name} kernel: "
+            f"{share * 100:.1f} % of one core, slowest valve {ratio:.4f} s simulated per s, "
+            f"dropped cycles: {dropped}"
+        )
     if args.paced > 0:
         sim, wall, dropped = paced_run(args.paced)
         error = (sim - wall) / wall * 100
@@ -218,6 +291,17 @@ def main() -> None:
             f"paced E04 run: {sim:.4f} s simulated in {wall:.4f} s wall "
             f"({error:+.3f} %), dropped cycles: {dropped}"
         )
+
+
+def _generator_line(
+    name: str, type_key: str, args: argparse.Namespace, kernel_name: str, cost: float
+) -> None:
+    driven = generator_cycle_s(type_key, args.seconds, args.repeat, kernel_name)
+    print(
+        f"{name} with the generator's 20 Hz sine on the override, {kernel_name} kernel: "
+        f"{driven * 1e6:.3f} µs/cycle, {CYCLE_S / driven:.1f} x real time, "
+        f"{driven / cost:4.2f}x the square-wave run"
+    )
 
 
 if __name__ == "__main__":

@@ -9,7 +9,9 @@ Prints, for N valves without a node ID on a python-can virtual bus (real time):
 * as the reference in the same run, the SDO node scan of ``--list-devices``
   (``discovery.scan``: 127 requests, 0.3 s listening) once they have their IDs.
 
-    .venv/bin/python benchmarks/bench_lss.py [--valves 2]
+    .venv/bin/python benchmarks/bench_lss.py [--valves 2] [--quick]
+
+``--quick`` (a smoke run): one valve.
 """
 
 from __future__ import annotations
@@ -44,7 +46,9 @@ def main() -> None:
     """Run the measurement and print the figures."""
     parser = argparse.ArgumentParser()
     parser.add_argument("--valves", type=int, default=2)
-    count = parser.parse_args().valves
+    parser.add_argument("--quick", action="store_true", help="a smoke run: seconds, not figures")
+    args = parser.parse_args()
+    count = 1 if args.quick else args.valves
     channel = f"bench-lss-{time.monotonic_ns()}"
     valves, slaves, buses = [], [], []
     for serial in itertools.islice(itertools.count(4711), count):

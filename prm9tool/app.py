@@ -8,7 +8,9 @@ the views) are imported here, lazily, so the command-line tools never load them.
 from __future__ import annotations
 
 import argparse
+import os
 import sys
+import time
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 from pathlib import Path
@@ -330,8 +332,26 @@ def run(args: argparse.Namespace, spools_problem: Prm9Error | None = None) -> in
     library_log = show_library_messages(window)
     window.show()
     start(window, plan_from(args, spools_problem))
+    _probe_start_up(window)
     try:
         code = app.exec()
     finally:
         library_log.close()
     return ExitCode.OK if code == 0 else int(code)
+
+
+def _probe_start_up(window: MainWindow) -> None:
+    """``PRM9TOOL_STARTUP_PROBE=SECONDS``: print when the window is shown (``shown <epoch>``),
+    then close it after SECONDS — how the single executable's start-up is measured and its GUI
+    smoke-tested (tools/smoke_executable.py, benchmarks/bench_startup.py --executable)."""
+    seconds = os.environ.get("PRM9TOOL_STARTUP_PROBE")
+    if not seconds:
+        return
+    from PySide6.QtCore import QTimer
+
+    def shown() -> None:
+        sys.stdout.write(f"shown {time.time()}\n")
+        sys.stdout.flush()
+        QTimer.singleShot(int(float(seconds) * 1000), window.close)
+
+    QTimer.singleShot(0, shown)

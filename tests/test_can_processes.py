@@ -91,8 +91,6 @@ def test_download_in_another_process_reads_what_the_upload_left(outcome):
 @pytest.mark.timeout(600)
 def test_diff_against_the_valve_after_the_upload(outcome):
     diff = outcome["diff"]
-    if outcome["od"] == "manual" and diff["code"] != 0:
-        pytest.xfail("missing is not different: issue 20 item 4 (another branch)")
     assert diff["code"] == 0, diff["out"] + diff["err"]
 
 

@@ -96,6 +96,10 @@ def test_a_proposal_that_fails_the_profile_says_so_and_needs_accept_anyway(qtbot
     assert "Tried before and failed the profile" in text
     assert not page.accept_button.isEnabled() and page.override.isVisible()
     assert "FAIL" in [page.table.item(r, 4).text() for r in range(page.table.rowCount())]
+    names = [page.table.item(r, 0).text() for r in range(page.table.rowCount())]
+    settling = page.table.item(names.index("step 0 → 5 %: settling time (±2 %)"), 2)
+    assert settling.text() == "not reached"  # what it saw instead: in the tooltip
+    assert settling.toolTip().startswith("did not settle within ±2 % of the step: oscillation")
     shot(window, "autotune_fails_profile")
     page.override.setChecked(True)
     assert page.accept_button.isEnabled()
@@ -390,7 +394,7 @@ def test_report_figures_use_the_decimal_separator_of_the_language(qapp):
 
 
 def test_an_untrustworthy_fit_proposes_no_gains_without_an_explicit_override(
-    qtbot, window, monkeypatch
+    qtbot, window, monkeypatch, tmp_path
 ):
     """A fit error above the threshold (docs/tuning.md) disables Accept until the user insists."""
     from dataclasses import replace
@@ -403,6 +407,7 @@ def test_an_untrustworthy_fit_proposes_no_gains_without_an_explicit_override(
         return replace(result, model=replace(result.model, fit_error=45.0))
 
     monkeypatch.setattr(acceptance, "model_tune", badly_fitted)
+    use_profile(window, tmp_path, "[test]\nstep_amplitudes_pct = [25, 90]\nstatic_period_s = 4\n")
     page = window.autotune
     page.run_button.click()
     finish(qtbot, window)

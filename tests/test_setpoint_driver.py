@@ -13,6 +13,7 @@ from waiting import HandClock, wait_for
 from prm9tool.catalogue import CATALOGUE
 from prm9tool.device import factory
 from prm9tool.device.emulator.constants import CYCLE_S
+from prm9tool.device.setpoint import OverrideSetpoint
 from prm9tool.errors import AbortCode, SdoAbortError
 from prm9tool.online.setpoint_driver import SetpointDriver, StreamClock
 from prm9tool.scope import GeneratorSettings, Waveform
@@ -95,6 +96,10 @@ class _LinkSession:
     def values(self, mnemonic: str) -> list[int]:
         with self.lock:
             return [raw for name, raw in self.writes if name == mnemonic]
+
+    def setpoint_link(self) -> OverrideSetpoint:
+        """As ValveSession's default: the service override SETPOVRON/SETPOVR."""
+        return OverrideSetpoint(self)
 
 
 def test_over_a_link_the_writes_follow_the_stream_time_and_keep_the_override_alive():

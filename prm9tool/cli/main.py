@@ -31,9 +31,9 @@ def main(argv: Sequence[str] | None = None) -> int:
     except SystemExit as exc:
         return int(exc.code or 0)
     if args.version:
-        from prm9tool import __version__
+        from prm9tool.buildinfo import build_info, qt_version
 
-        print(f"prm9tool {__version__}")
+        print(build_info().line(qt_version()))
         return ExitCode.OK
     if args.od:
         from prm9tool.device.factory import set_emulator_od

@@ -10,6 +10,7 @@ from PySide6.QtGui import QDesktopServices
 from PySide6.QtWidgets import QDialog, QDialogButtonBox, QTextBrowser, QVBoxLayout, QWidget
 
 from prm9tool import __version__
+from prm9tool.buildinfo import build_info
 from prm9tool.i18n import current_language
 from prm9tool.views import resources_rc  # noqa: F401  (registers the :/help/ resources)
 
@@ -79,8 +80,11 @@ def _version(package: str) -> str:
 
 def versions() -> list[tuple[str, str]]:
     """(component, version) of the program and what it runs on."""
+    info = build_info()
     return [
         ("prm9tool", __version__),
+        ("commit", info.commit),
+        ("built", info.built + (" (single executable)" if info.frozen else "")),
         ("Python", platform.python_version()),
         ("Qt", qVersion()),
         ("PySide6", pyside_version),

@@ -45,7 +45,13 @@ class Capture:
         self.keys = keys
         self.buffer = array("d")
         self.dropped_rows = 0
-        self.loop.capture = (self.buffer.extend, itemgetter(*index), int(decimation))
+        self.loop.capture = (  # the reference loop uses the first three, the compiled one the rest
+            self.buffer.extend,
+            itemgetter(*index),
+            int(decimation),
+            self.buffer,
+            tuple(index),
+        )
         self.loop.inputs_version += 1  # the loop picks the capture up in its next cycle
 
     def read(self) -> np.ndarray:

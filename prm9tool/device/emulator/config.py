@@ -12,6 +12,8 @@ import math
 from collections.abc import Callable
 from typing import Any
 
+import numpy as np
+
 from prm9tool.catalogue import dither
 from prm9tool.catalogue.variant import Coils, Config, Variant
 from prm9tool.device.emulator.constants import CYCLE_S, FULL, FirmwareConstants, PlantConstants
@@ -201,3 +203,45 @@ def static_setpoint(
     if values("SETPLINON") == -1:
         x = evaluate_curve(curve, x)
     return raw, after_threshold, after_gain, x
+
+
+SetpointChain = tuple[bool, bool, int, bool, float, float, float, float, bool]
+
+
+def setpoint_chain(variant: Variant, values: Values) -> SetpointChain:
+    """The parameters :func:`static_setpoint` reads, for :func:`static_setpoint_array`."""
+    return (
+        values("INVERSEP") == 1,
+        variant.coils is not Coils.AB,
+        values("THRESETP"),
+        not process_loop_on(variant, values),
+        *gain_offset(values("GAINSETPOS"), values("OFFSETPOS")),
+        *gain_offset(values("GAINSETNEG"), values("OFFSETNEG")),
+        values("SETPLINON") == -1,
+    )
+
+
+def static_setpoint_array(chain: SetpointChain, raw: np.ndarray, curve: Curve) -> np.ndarray:
+    """:func:`static_setpoint` of every value of ``raw``: rows (raw, threshold, gain, linear).
+
+    The same IEEE operations element by element (numpy rounds each one like Python does), so
+    every row equals the tuple :func:`static_setpoint` returns, bit for bit (the generator's
+    waveform in the compiled loop; tests/test_emulator_kernels.py).
+    """
+    inverse, one_coil, threshold, gain_on, gp, op, gn, on_, linearize = chain
+    raw = np.asarray(raw, dtype=np.float64)
+    x = -raw if inverse else raw.copy()
+    if one_coil:
+        x[x < 0.0] = 0.0
+    x[np.abs(x) < threshold] = 0.0
+    after_threshold = x.copy()
+    if gain_on:
+        pos, neg = x > 0.0, x < 0.0
+        x[pos] = op + x[pos] * gp
+        x[neg] = -on_ + x[neg] * gn
+        x = np.minimum(np.maximum(x, -FULL), FULL)
+    after_gain = x.copy()
+    if linearize:
+        i = np.searchsorted(np.asarray(curve[0]), x, side="right")
+        x = np.asarray(curve[2])[i] + np.asarray(curve[1])[i] * x
+    return np.column_stack((raw, after_threshold, after_gain, x))

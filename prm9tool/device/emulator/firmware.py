@@ -7,14 +7,14 @@ access with its lock.
 from __future__ import annotations
 
 import os
-from collections.abc import Callable, Generator
+from collections.abc import Callable
 
 from prm9tool.catalogue import CATALOGUE, canopen_switches
 from prm9tool.catalogue.canopen_switches import LSS_BIT_TIMINGS_KBIT as LSS_KBIT
 from prm9tool.catalogue.scale import FULL_SCALE
 from prm9tool.catalogue.typekey import TypeKey
 from prm9tool.catalogue.variant import Coils
-from prm9tool.device.emulator import config, detect, loop_inputs, thermal
+from prm9tool.device.emulator import config, detect, fasttick, kernels, loop_inputs, thermal
 from prm9tool.device.emulator.constants import (
     CYCLE_S,
     TICK_CYCLES,
@@ -22,7 +22,6 @@ from prm9tool.device.emulator.constants import (
     PlantConstants,
 )
 from prm9tool.device.emulator.faults import FaultMonitor
-from prm9tool.device.emulator.kernel import control_loop as make_loop
 from prm9tool.device.emulator.loopstate import (
     MODE_ACTIVE,
     MODE_HOLD,
@@ -97,11 +96,12 @@ class Firmware:
         self.lss_mode = False  # node-ID switch at 1 (LSS, table 7-17)
         self.cycle_listeners: list[Callable[[float], None]] = []
         self.program: OverrideProgram | None = None  # a setpoint waveform on SETPOVR
-        self._setpovr_key = CATALOGUE["SETPOVR"].key
+        self.setpovr_key = CATALOGUE["SETPOVR"].key
         self.setpoint_dirty = True
         self.config_dirty = True
         self.coil_temperature = 25.0
-        self.gen: Generator[None, int, None] = make_loop(self.loop)
+        self.kernel, self.make_loop = kernels.chosen()
+        self.gen: kernels.Loop = self.make_loop(self.loop)
         from prm9tool.device.emulator.odsetup import install
 
         install(self)
@@ -117,18 +117,23 @@ class Firmware:
         """Run ``cycles`` control cycles, with the 1 ms task every 5 cycles.
 
         ``self.gen`` is looked up per batch: a listener may power-cycle the valve (NMT reset
-        node), which replaces the loop generator.
+        node), which replaces the loop generator. The compiled loop also passes the 1 ms tasks
+        that would change nothing (:mod:`.fasttick`) and leaves the others to :meth:`tick`.
         """
         while cycles > 0:
             span = self._apply_program() if self.program is not None else cycles
             if self.setpoint_dirty or self.config_dirty:
                 self._refresh_inputs()
-            n = min(cycles, self.tick_countdown, span)
-            self.gen.send(n)
+            if self.kernel == "compiled":
+                n, countdown = fasttick.compiled_batch(self, cycles, span)
+            else:
+                n = min(cycles, self.tick_countdown, span)
+                self.gen.send(n)
+                countdown = self.tick_countdown - n
             self.cycles += n
             cycles -= n
-            self.tick_countdown -= n
-            if self.tick_countdown == 0:
+            self.tick_countdown = countdown
+            if countdown == 0:
                 self.tick_countdown = TICK_CYCLES
                 self.tick()
 
@@ -140,7 +145,7 @@ class Firmware:
         """
         assert self.program is not None
         value, span = self.program.value_and_span(self.cycles)
-        key = self._setpovr_key
+        key = self.setpovr_key
         if self.od.values.get(key) != value:
             self.od.values[key] = value
             if self.override_on and not (self.setpoint_dirty or self.config_dirty):
@@ -171,7 +176,7 @@ class Firmware:
         self.program = None
         if self.loop.coefficients:
             self.gen.send(0)  # the plant (spool, load) keeps its physical state over a power cycle
-        self.gen = make_loop(self.loop)
+        self.gen = self.make_loop(self.loop)
         next(self.gen)
         self.loop.mode = MODE_OFF
         self.setpoint_dirty = self.config_dirty = True
@@ -329,7 +334,8 @@ class Firmware:
             sm.write_control_word(AUTO_CONTROL_WORD & ~0x08, False)
             sm.write_control_word(AUTO_CONTROL_WORD, False)
 
-    def _update_outputs(self) -> None:
+    def _outputs(self) -> tuple[int, tuple[bool, bool]]:
+        """The loop's mode and output stages (safety switches) for the present state."""
         state = self.sm.state
         if self.booting or self.faults.any_present or state not in _ACTIVE_STATES:
             mode = MODE_OFF
@@ -341,6 +347,16 @@ class Firmware:
             not self.faults.is_present("coil_a_overcurrent"),
             not self.faults.is_present("coil_b_overcurrent"),
         )
+        return mode, stage
+
+    def outputs_pending(self) -> bool:
+        """True if the next 1 ms task hands the loop a new mode, stage or temperature."""
+        mode, stage = self._outputs()
+        loop = self.loop
+        return mode != loop.mode or stage != loop.stage_on or self.temperature != loop.temperature_c
+
+    def _update_outputs(self) -> None:
+        mode, stage = self._outputs()
         loop = self.loop
         if mode != loop.mode or stage != loop.stage_on or self.temperature != loop.temperature_c:
             loop.mode, loop.stage_on, loop.temperature_c = mode, stage, self.temperature

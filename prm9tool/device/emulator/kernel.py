@@ -108,7 +108,7 @@ def control_loop(s: LoopState) -> Generator[None, int, None]:
                 stat = s.static_signals
                 cap = s.capture
                 if cap is not None:
-                    cap_ext, cap_get, cap_dec = cap
+                    cap_ext, cap_get, cap_dec = cap[:3]
                 temp10 = s.temperature_c * 10.0
             if n == 0:
                 # --- flush: every measuring point and the plant state -------------------

@@ -61,7 +61,7 @@ class LoopState:
         self.sensor_static = 0.0  # sensor value when it does not come from the plant
         self.sensor_from_plant = True
         self.sensor_break_value: float | None = None  # reading of a broken sensor, or None
-        self.capture: Any = None  # (extend, itemgetter, decimation) or None
+        self.capture: Any = None  # (extend, itemgetter, decimation, buffer, index) or None
         # outputs (measuring points and plant state), written back every batch
         self.signals: tuple[float, ...] = (0.0,) * len(SIGNAL_ORDER)
         self.ctrl_dev = 0.0  # 0x6350: deviation of the active control mode

@@ -10,10 +10,15 @@ time. It takes effect while SETPOVRON = 1, like a value written over the link.
 from __future__ import annotations
 
 from collections.abc import Callable
+from typing import TYPE_CHECKING
 
 import numpy as np
 
+from prm9tool.device.emulator import config
 from prm9tool.device.emulator.constants import CYCLE_S
+
+if TYPE_CHECKING:
+    from prm9tool.device.emulator.firmware import Firmware
 
 Source = Callable[[np.ndarray], np.ndarray]
 BLOCK_CYCLES = 250  # the source is evaluated 50 ms ahead at a time
@@ -28,6 +33,7 @@ class OverrideProgram:
         self._first = 0
         self._values = np.empty(0, dtype=np.int64)
         self._changes = np.empty(0, dtype=np.int64)  # positions in _values where it changes
+        self.chain: tuple[int, config.SetpointChain] | None = None  # (loop version, chain)
 
     def value_and_span(self, cycle: int) -> tuple[int, int]:
         """SETPOVR at ``cycle`` and for how many cycles from there on it stays so (≥ 1)."""
@@ -39,6 +45,14 @@ class OverrideProgram:
         end = int(self._changes[following]) if following < len(self._changes) else len(self._values)
         return int(self._values[i]), end - i
 
+    def upcoming(self, cycle: int, limit: int) -> np.ndarray:
+        """SETPOVR at ``cycle`` and the cycles after it: at least 1, at most ``limit`` values."""
+        k = cycle - self._start
+        if not self._first <= k < self._first + len(self._values):
+            self._evaluate(k)
+        i = k - self._first
+        return self._values[i : i + limit]
+
     def _evaluate(self, k: int) -> None:
         times = np.arange(k, k + BLOCK_CYCLES, dtype=np.float64) * CYCLE_S
         values = np.asarray(self._source(times), dtype=np.int64)
@@ -46,3 +60,30 @@ class OverrideProgram:
             raise ValueError(f"setpoint source returned shape {values.shape}")
         self._first, self._values = k, values
         self._changes = np.flatnonzero(np.diff(values)) + 1
+
+
+def program_rows(fw: Firmware, cycles: int) -> np.ndarray:
+    """The static setpoint chain of the override program's next cycles, for the compiled loop.
+
+    The value of this cycle is applied already (``Firmware._apply_program``); the compiled loop
+    takes it and the following ones cycle by cycle, instead of one batch per value.
+    """
+    program = fw.program
+    assert program is not None
+    raw = program.upcoming(fw.cycles, cycles)
+    version = fw.loop.version  # a parameter write rebuilds the coefficients: a new version
+    if program.chain is None or program.chain[0] != version:
+        program.chain = (version, config.setpoint_chain(fw.variant, fw.value))
+    rows = config.static_setpoint_array(program.chain[1], raw, fw.setp_curve)
+    return np.ascontiguousarray(rows)
+
+
+def program_ran(fw: Firmware, row: np.ndarray) -> None:
+    """SETPOVR and the setpoint chain ← the last cycle's, as ``Firmware._apply_program`` sets."""
+    value = int(row[0])
+    if fw.od.values.get(fw.setpovr_key) != value:
+        fw.od.values[fw.setpovr_key] = value
+        signals = (float(row[0]), float(row[1]), float(row[2]), float(row[3]))
+        fw.loop.static_signals = signals
+        fw.loop.target = signals[3]
+        fw.loop.inputs_version += 1

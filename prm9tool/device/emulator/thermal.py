@@ -44,10 +44,13 @@ def update_reading(fw: Firmware) -> None:
         fw.temperature = fw.inputs["ambient_temperature"] + fw.temperature_rise
 
 
-def update_warning(fw: Firmware) -> None:
-    """Temperature warning (> 70 °C, manual table 5-1) with hysteresis."""
+def warning_after(fw: Firmware) -> bool:
+    """The temperature warning (> 70 °C, manual table 5-1, with hysteresis) at the reading."""
     c = fw.fw
     temp = fw.temperature
-    fw.warning = temp > c.temp_warning_c or (
-        fw.warning and temp > c.temp_warning_c - c.temp_hysteresis_c
-    )
+    return temp > c.temp_warning_c or (fw.warning and temp > c.temp_warning_c - c.temp_hysteresis_c)
+
+
+def update_warning(fw: Firmware) -> None:
+    """Temperature warning (> 70 °C, manual table 5-1) with hysteresis."""
+    fw.warning = warning_after(fw)

@@ -31,7 +31,13 @@ from prm9tool.translate import error_text, translated
 from prm9tool.views.tuning.host import TuningHost, gain_text, spin
 from prm9tool.views.tuning.pages import Page
 from prm9tool.views.tuning.plot import COLOURS, Plot, Series
-from prm9tool.views.tuning.report import figure_label, limit_text, value_text, verdict
+from prm9tool.views.tuning.report import (
+    figure_label,
+    limit_text,
+    value_short,
+    value_text,
+    verdict,
+)
 
 GREY = "#808080"
 RED, GREEN = "#c00000", "#207020"
@@ -159,10 +165,17 @@ class AutotunePage(Page):
         pairs = list(zip(result.before_check.figures, result.after_check.figures, strict=True))
         self.table.setRowCount(len(pairs))
         for row, (before, after) in enumerate(pairs):
-            cells = (figure_label(after), value_text(before), value_text(after),
-                     limit_text(after), verdict(after.passed))  # fmt: skip
-            for col, text in enumerate(cells):
-                self.table.setItem(row, col, QTableWidgetItem(text))
+            cells = (
+                (figure_label(after), ""),
+                value_short(before),
+                value_short(after),
+                (limit_text(after), ""),
+                (verdict(after.passed), ""),
+            )
+            for col, (text, tip) in enumerate(cells):
+                item = QTableWidgetItem(text)
+                item.setToolTip(tip)
+                self.table.setItem(row, col, item)
         self.table.resizeColumnsToContents()
 
     def _plots(self, result: Proposal) -> list[Plot]:

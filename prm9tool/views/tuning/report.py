@@ -71,6 +71,14 @@ def verdict(passed: bool | None) -> str:
     return translate("TuningReport", "PASS") if passed else translate("TuningReport", "FAIL")
 
 
+def value_short(f: Figure) -> tuple[str, str]:
+    """A table cell's text and tooltip: what was seen instead of a value goes to the tooltip
+    ("not reached" in the cell), so the columns keep their width."""
+    if math.isnan(f.value) and f.note is not None:
+        return translate("TuningReport", "not reached"), translated(f.note)
+    return value_text(f), ""
+
+
 def value_text(f: Figure) -> str:
     """The figure's value with its unit (times in ms), with the program language's decimal
     separator (``5,75 %`` in German and Czech)."""

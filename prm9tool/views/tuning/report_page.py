@@ -23,7 +23,7 @@ from prm9tool.characterize.run import (
 from prm9tool.online.characterization_history import run_with_history
 from prm9tool.views.tuning.host import TuningHost
 from prm9tool.views.tuning.pages import Page
-from prm9tool.views.tuning.report import figure_label, limit_text, value_text, verdict, write_pdf
+from prm9tool.views.tuning.report import figure_label, limit_text, value_short, verdict, write_pdf
 
 
 class ReportPage(Page):
@@ -82,9 +82,12 @@ class ReportPage(Page):
         self.last = result
         self.table.setRowCount(len(result.figures))
         for row, f in enumerate(result.figures):
-            cells = (figure_label(f), value_text(f), limit_text(f), verdict(f.passed))
+            value, tip = value_short(f)
+            cells = (figure_label(f), value, limit_text(f), verdict(f.passed))
             for col, text in enumerate(cells):
-                self.table.setItem(row, col, QTableWidgetItem(text))
+                item = QTableWidgetItem(text)
+                item.setToolTip(tip if col == 1 else "")
+                self.table.setItem(row, col, item)
         self.table.resizeColumnsToContents()
         self.result.setText(self.tr("Result: %1").replace("%1", verdict(result.passed)))
         self.save_button.setEnabled(True)

@@ -91,7 +91,7 @@ class TuningWindow(QDialog):
             connection.online_changed.connect(self._on_online_changed)
             if hasattr(connection, "status_changed"):
                 connection.status_changed.connect(self._on_status_changed)
-        self.resize(900, 680)
+        self.resize(1000, 720)  # fits 1024×768; the autotune page has plots and a table
         self.retranslate()
 
     # --- runner ----------------------------------------------------------------------------------

@@ -1,0 +1,172 @@
+"""The compiled loop's batches, and when it may pass the firmware's 1 ms task itself.
+
+Most 1 ms tasks change nothing: no fault condition changes, no detection delay or display hold
+ends, the state machine and the loop's mode stay, no listener is registered. The compiled
+kernel (``_ckernel.tick_is_noop``) re-checks per millisecond what can change within a batch
+(coil currents, PWM duties, LVDT loop current, control deviation, time) against the firmware
+state summarized here; the first task that would do anything is left to
+:meth:`.firmware.Firmware.tick`, exactly at its millisecond. Everything else this depends on
+only changes in Python (a tick, a parameter or input write), which ends the compiled run.
+"""
+
+from __future__ import annotations
+
+import math
+from array import array
+from typing import TYPE_CHECKING, cast
+
+from prm9tool.device.emulator import config, detect, override, thermal
+from prm9tool.device.emulator.constants import CYCLE_S, TICK_CYCLES
+from prm9tool.device.emulator.states import Fault
+from prm9tool.device.records import DeviceState
+
+if TYPE_CHECKING:
+    from prm9tool.device.emulator.ckernel import CompiledLoop
+    from prm9tool.device.emulator.firmware import Firmware
+
+MAX_DEADLINES = 16  # _ckernel.c: room for detection delays and display holds
+MAX_TICKS = 1 << 40  # no limit: the batch's length bounds it
+THERMAL_DT = thermal.THERMAL_TICKS * TICK_CYCLES * CYCLE_S  # as Firmware.tick computes it
+TICK_DEADLINES = 44  # _ckernel.c: where the deadlines start (checked by ckernel.py)
+TICK_RISE, TICK_TEMPERATURE = 37, 38  # _ckernel.c: the thermal state the kernel writes back
+STATIC_BITS = {"setpoint": 1 << 0, "sensor": 1 << 1, "supply": 1 << 7, "temperature": 1 << 8}
+CONDITION_BITS = (  # detect.conditions' keys in the C kernel's bit order
+    "setpoint",
+    "sensor",
+    "coil_a_open",
+    "coil_b_open",
+    "position_sensor",
+    "coil_a_overcurrent",
+    "coil_b_overcurrent",
+    "supply",
+    "temperature",
+    "monitoring",
+)
+_FAULTED = (DeviceState.FAULT, DeviceState.FAULT_HOLD)
+
+
+def compiled_batch(fw: Firmware, cycles: int, span: int) -> tuple[int, int]:
+    """Run up to ``cycles`` cycles on the compiled loop: (cycles run, cycles to the next 1 ms
+    task; 0 = it is due). The override program's values go in cycle by cycle."""
+    gen = cast("CompiledLoop", fw.gen)
+    n = min(cycles, span)
+    program = None
+    if fw.program is not None and fw.override_on:
+        program = override.program_rows(fw, cycles)
+        n = len(program)
+    tick = parameters(fw) if n > fw.tick_countdown else None
+    gen.prepare()
+    n, ticks, countdown = gen.cycles(n, fw.tick_countdown, tick, program)
+    gen.write_back()
+    if ticks:
+        fw.ticks += ticks
+        commit(fw, cast("array", tick))
+    if program is not None:
+        override.program_ran(fw, program[n - 1])
+    return n, countdown
+
+
+def parameters(fw: Firmware) -> array | None:
+    """The C kernel's tick parameters, or None if the next 1 ms task may do something."""
+    faults = fw.faults
+    state = fw.sm.state
+    if (
+        fw.cycle_listeners
+        or faults.any_present
+        or state is DeviceState.FAULT_REACTION
+        or (fw.analog_only and not fw.booting and state in _FAULTED)
+        or fw.outputs_pending()
+        or thermal.warning_after(fw) != fw.warning
+    ):
+        return None
+    c = fw.fw
+    temp_alarm = fw.temperature > c.temp_warning_c
+    evaluate = fw.static_alarm or faults.busy
+    static_bits = ref_mask = 0
+    deadlines: list[float] = []
+    if evaluate or temp_alarm:
+        conditions = detect.conditions(fw)
+        timers = faults.timers
+        for bit, key in enumerate(CONDITION_BITS):
+            condition, delay = conditions[key]
+            if key in STATIC_BITS and condition:
+                static_bits |= STATIC_BITS[key]
+            t = timers[key]
+            if t.since >= 0.0:
+                ref_mask |= 1 << bit
+                if not t.present:
+                    deadlines += (0.0, t.since, delay)
+        for t in timers.values():
+            if 0.0 <= t.active_until < math.inf:
+                deadlines += (1.0, t.active_until, 0.0)
+        if len(deadlines) > 3 * MAX_DEADLINES:
+            return None
+    coils = fw.variant.coils.value
+    plant = fw.plant
+    temp_limit = c.temp_error_c
+    if faults.is_present("temperature"):
+        temp_limit -= c.temp_hysteresis_c
+    return array(
+        "d",
+        [
+            CYCLE_S,
+            fw.cycles,
+            fw.booting,
+            c.boot_s,
+            MAX_TICKS,
+            fw.override_on,
+            fw.override_last,
+            c.override_timeout_s,
+            evaluate,
+            ref_mask,
+            static_bits,
+            c.overcurrent_ma,
+            temp_alarm,
+            fw.monitoring_threshold,
+            fw.sm.state is DeviceState.DEVICE_MODE_ACTIVE,
+            faults.is_present("monitoring"),
+            fw.supply,
+            fw.loop.coil_open[0],
+            fw.loop.coil_open[1],
+            coils != "B",
+            coils != "A",
+            faults.is_present("coil_a_overcurrent") and Fault.COIL_A_OVERCURRENT in fw.injected,
+            faults.is_present("coil_b_overcurrent") and Fault.COIL_B_OVERCURRENT in fw.injected,
+            c.loop_break_ma,
+            detect.OPEN_LOAD_MIN_V,
+            detect.OPEN_LOAD_MA,
+            Fault.OVER_TEMPERATURE not in fw.injected,  # else the reading is forced
+            fw.ticks,
+            thermal.THERMAL_TICKS,
+            THERMAL_DT,
+            config.coil_resistance(fw.coil_temperature, plant),
+            plant.electronics_loss_w,
+            plant.thermal_k_per_w,
+            plant.thermal_tau_s,
+            fw.inputs["ambient_temperature"],
+            fw.coil_temperature,
+            thermal.COIL_REFRESH_K,
+            fw.temperature_rise,
+            fw.temperature,
+            c.temp_warning_c,
+            c.temp_warning_c - c.temp_hysteresis_c,
+            fw.warning,
+            temp_limit,
+            len(deadlines) // 3,
+            *deadlines,
+            *[0.0] * (3 * MAX_DEADLINES - len(deadlines)),
+        ],
+    )
+
+
+def commit(fw: Firmware, tick: array) -> None:
+    """After the kernel passed 1 ms tasks: the thermal model's state and reading as they left it.
+
+    (The reading reaches the loop as :meth:`.firmware.Firmware.tick` hands it on.)
+    """
+    fw.temperature_rise = tick[TICK_RISE]
+    temperature = tick[TICK_TEMPERATURE]
+    if temperature != fw.temperature:
+        fw.temperature = temperature
+        fw.loop.temperature_c = temperature
+        fw.loop.inputs_version += 1

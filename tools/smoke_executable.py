@@ -1,0 +1,150 @@
+"""Smoke test of the built executable: every kind of command, from an empty folder, without the
+project's Python on PATH. CI runs it after tools/build_executable.py.
+
+    python tools/smoke_executable.py dist/prm9tool [dist/prm9tool-folder/prm9tool]
+
+Exit 0 when every step passed; each step prints its name, exit code and time.
+"""
+
+from __future__ import annotations
+
+import json
+import os
+import subprocess
+import sys
+import tempfile
+import time
+from pathlib import Path
+
+E02 = "PRM9-06.3Z11/30-24E02S02-CA"
+PLAIN = "PRM9-06.3Z11/30-24E02S02"
+GUI_SECONDS = 8.0
+
+
+def main(argv: list[str]) -> int:
+    """Run the smoke steps against each executable named on the command line."""
+    if not argv:
+        print(__doc__)  # noqa: T201
+        return 2
+    failures = 0
+    for name in argv:
+        failures += _smoke(Path(name).resolve())
+    print("smoke test:", "passed" if not failures else f"{failures} step(s) failed")  # noqa: T201
+    return 1 if failures else 0
+
+
+def _smoke(exe: Path) -> int:
+    with tempfile.TemporaryDirectory(prefix="prm9tool-smoke-") as folder:
+        work = Path(folder)
+        env = _clean_env(work)
+        steps = [
+            ("--version", [exe, "--version"], lambda out: "single executable" in out),
+            ("--new", [exe, "--new", E02, "-o", "v.prm"], lambda out: (work / "v.prm").exists()),
+            ("--check", [exe, "--check", "v.prm"], None),
+            (
+                "--batch 2 valves",
+                [
+                    exe,
+                    "--batch",
+                    "v.prm",
+                    "--emulator",
+                    f"{E02}:101",
+                    "--emulator",
+                    f"{E02}:102",
+                    "--all",
+                    "--report",
+                    "r.json",
+                ],
+                lambda out: len(json.loads((work / "r.json").read_text())["valves"]) == 2,
+            ),
+            (
+                "--characterize",
+                [
+                    exe,
+                    "--characterize",
+                    "--emulator",
+                    f"{PLAIN}:77",
+                    "--report",
+                    "c.pdf",
+                    "--json",
+                    "c.json",
+                ],
+                lambda out: (work / "c.pdf").read_bytes().startswith(b"%PDF"),
+            ),
+            ("--history", [exe, "--history", "101"], lambda out: "batch-upload" in out),
+            (
+                "--export-eds",
+                [exe, "--export-eds", E02, "-o", "v.eds"],
+                lambda out: "[DeviceInfo]" in (work / "v.eds").read_text(),
+            ),
+        ]
+        failed = sum(not _step(exe, name, cmd, check, work, env) for name, cmd, check in steps)
+        failed += not _gui(exe, work, env)
+    return failed
+
+
+def _clean_env(work: Path) -> dict[str, str]:
+    """No venv, no project Python on PATH; data, settings and history in the empty folder."""
+    env = {k: v for k, v in os.environ.items() if not k.startswith(("PYTHON", "VIRTUAL_ENV"))}
+    env["PATH"] = (
+        os.pathsep.join(
+            p
+            for p in env.get("PATH", "").split(os.pathsep)
+            if p and "venv" not in p and "pyenv" not in p
+        )
+        or "/usr/bin:/bin"
+    )
+    env.update(
+        HOME=str(work),
+        XDG_CONFIG_HOME=str(work / "config"),
+        PRM9TOOL_DATA_DIR=str(work / "data"),
+        QT_QPA_PLATFORM="offscreen",
+        # the emulated valves must run on the compiled control loop the build bundles
+        PRM9TOOL_EMULATOR_KERNEL="compiled",
+    )
+    return env
+
+
+def _step(exe: Path, name: str, cmd: list, check, work: Path, env: dict[str, str]) -> bool:
+    start = time.monotonic()
+    done = subprocess.run(
+        [str(c) for c in cmd], cwd=work, env=env, capture_output=True, text=True, timeout=600
+    )
+    ok = done.returncode == 0 and "Traceback" not in done.stderr
+    try:
+        ok = ok and (check is None or bool(check(done.stdout)))
+    except (OSError, ValueError, KeyError) as exc:
+        print(f"  check failed: {exc}")  # noqa: T201
+        ok = False
+    print(  # noqa: T201
+        f"{'ok  ' if ok else 'FAIL'} {exe.name} {name}: exit {done.returncode}, "
+        f"{time.monotonic() - start:.1f} s"
+    )
+    if not ok:
+        print(done.stdout[-2000:], done.stderr[-4000:], sep="\n")  # noqa: T201
+    return ok
+
+
+def _gui(exe: Path, work: Path, env: dict[str, str]) -> bool:
+    """The window on an emulated valve for a few seconds, then closed: no traceback, exit 0."""
+    start = time.monotonic()
+    done = subprocess.run(
+        [str(exe), "--emulator", f"{E02}:103"],
+        cwd=work,
+        env=dict(env, PRM9TOOL_STARTUP_PROBE=str(GUI_SECONDS)),
+        capture_output=True,
+        text=True,
+        timeout=300,
+    )
+    ok = done.returncode == 0 and "shown" in done.stdout and "Traceback" not in done.stderr
+    print(  # noqa: T201
+        f"{'ok  ' if ok else 'FAIL'} {exe.name} GUI offscreen {GUI_SECONDS:.0f} s: "
+        f"exit {done.returncode}, {time.monotonic() - start:.1f} s"
+    )
+    if not ok:
+        print(done.stdout[-2000:], done.stderr[-4000:], sep="\n")  # noqa: T201
+    return ok
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv[1:]))
