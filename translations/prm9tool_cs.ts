@@ -740,6 +740,10 @@ Poslední akce možná nebyla dokončena. Uložte svou práci pod novým názvem
             <translation>průtoková charakteristika se měří na ventilech E04 (s akčním členem)</translation>
         </message>
         <message>
+            <source>this valve has no object for the process controller's gains on this link: the flow characteristic (made proportional for the test) cannot be measured here; nothing was changed — measure it over USB</source>
+            <translation>tento ventil nemá na tomto spojení objekt pro zesílení regulátoru procesu: průtokovou charakteristiku (pro test proporcionální) zde nelze změřit; nic nebylo změněno — změřte ji přes USB</translation>
+        </message>
+        <message>
             <source>the flow characteristic is measured in control mode 4 (process loop); the valve is in control mode {0}</source>
             <translation>průtoková charakteristika se měří v režimu řízení 4 (procesní smyčka); ventil je v režimu řízení {0}</translation>
         </message>

@@ -738,6 +738,10 @@ Die letzte Aktion wurde womöglich nicht vollständig ausgeführt. Speichern Sie
             <translation>die Durchflusskennlinie wird an E04-Ventilen (mit Stellglied) gemessen</translation>
         </message>
         <message>
+            <source>this valve has no object for the process controller's gains on this link: the flow characteristic (made proportional for the test) cannot be measured here; nothing was changed — measure it over USB</source>
+            <translation>dieses Ventil hat auf dieser Verbindung kein Objekt für die Verstärkungen des Prozessreglers: die Durchflusskennlinie (für den Test proportional gemacht) kann hier nicht gemessen werden; nichts wurde geändert — messen Sie sie über USB</translation>
+        </message>
+        <message>
             <source>the flow characteristic is measured in control mode 4 (process loop); the valve is in control mode {0}</source>
             <translation>die Durchflusskennlinie wird in Regelmodus 4 (Prozessregelkreis) gemessen; das Ventil ist in Regelmodus {0}</translation>
         </message>

@@ -56,6 +56,15 @@ def flow_test(
             )()
         )
     present = rig.read(["CTRLMODE", "PRCKP"])
+    if "PRCKP" not in present:  # a valve without this project's objects on this link (CAN)
+        raise Prm9Error(
+            QT_TRANSLATE_NOOP(
+                "Characterize",
+                "this valve has no object for the process controller's gains on this link: "
+                "the flow characteristic (made proportional for the test) cannot be measured "
+                "here; nothing was changed — measure it over USB",
+            )()
+        )
     if present["CTRLMODE"] != 4:
         raise Prm9Error(
             QT_TRANSLATE_NOOP(

@@ -48,6 +48,9 @@ def run(args: argparse.Namespace) -> int:
     except ValueError as exc:  # a record the analysis cannot use (no response at all)
         print(f"prm9tool: the measurement cannot be analysed: {exc}", file=sys.stderr)
         return ExitCode.OUT_OF_LIMITS
+    except Prm9Error as exc:  # a test this valve cannot take on this link (it says why)
+        print(f"prm9tool: test stopped: {exc}", file=sys.stderr)
+        return ExitCode.OUT_OF_LIMITS
     finally:
         close()
     try:
