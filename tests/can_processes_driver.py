@@ -81,6 +81,18 @@ app.start(window, app.plan_from(args))
 qt.exec()
 """
 
+API = """
+import json, sys, prm9tool
+bus = {"can_interface": "udp_multicast", "can_channel": sys.argv[1]}
+listed = [d.to_dict() for d in prm9tool.list_devices(**bus)]
+with prm9tool.connect("can:10", type_key=sys.argv[2], **bus) as valve:
+    values = valve.read("DYNFREQ", "MONDELAY")
+    valve["DYNFREQ"] = 105
+    values["DYNFREQ after"] = valve["DYNFREQ"]
+    info = valve.info.to_dict()
+print(json.dumps({"listed": listed, "values": values, "info": info}))
+"""
+
 
 def tool(*args: str, timeout: float = 90) -> dict[str, object]:
     """Run prm9tool in a process of its own; its exit code and output."""
@@ -195,6 +207,18 @@ def main() -> None:
         )
         result["gui"] = {"code": gui.returncode, "out": gui.stdout, "err": gui.stderr[-3000:]}
         result["history"] = tool("--history", "4711", "--json")
+        # shell scripts and Python scripts on the same bus (docs/api.md), after everything else
+        label = ["--type-key", E04]  # the manual valve does not tell its key
+        result["set"] = tool("--set", "DYNFREQ=110", "--store", *device, *label)
+        result["get"] = tool("--get", "DYNFREQ", "--json", *device, *label)
+        api = subprocess.run(
+            [sys.executable, "-c", API, group, E04],
+            capture_output=True,
+            text=True,
+            timeout=90,
+            check=False,
+        )
+        result["api"] = {"code": api.returncode, "out": api.stdout, "err": api.stderr[-3000:]}
     except Exception as exc:  # the outcome says what broke; the test shows it
         result["driver_error"] = repr(exc)
     finally:

@@ -1,6 +1,7 @@
 """The valve session over CANopen (device/canlink) against the emulated -CA valve on a virtual
-bus: identity, upload/verify/store, download, objects a real valve lacks, refusals, a node that
-stops answering, two masters, other nodes, type keys, a missing adapter."""
+bus: identity, download, objects a real valve lacks, a node that stops answering, two masters,
+other nodes, type keys, a missing adapter. The upload contract every link shares (write, verify,
+store, a refusal) is tests/test_upload_contract.py."""
 
 from __future__ import annotations
 
@@ -54,21 +55,6 @@ def test_identify_reads_the_manual_objects(rig, data_dir):
         assert session.info.stream_rate_limit_hz == pytest.approx(1000.0)  # the 1 ms SYNC
 
 
-def test_upload_writes_verifies_and_stores(rig, data_dir):
-    with open_can(rig) as session:
-        values = changed(session)
-        result = session.upload(values)
-    assert (result.stored, result.verified, result.failed_step, result.skipped) == (
-        True,
-        True,
-        None,
-        (),
-    )
-    stored = rig.stored_set()
-    assert all(stored[m] == v for m, v in values.items() if m in stored)
-    assert stored["LIMTA"] == values["LIMTA"] != CATALOGUE["LIMTA"].default
-
-
 def test_download_gives_the_valves_file_set(rig, data_dir):
     with open_can(rig) as session:
         values = session.download()
@@ -92,19 +78,6 @@ def test_objects_a_real_valve_lacks_are_skipped_with_their_names(tmp_path, data_
         assert rig.stored_set()["LIMTA"] == values["LIMTA"]
     finally:
         rig.close()
-
-
-def test_an_sdo_abort_stores_nothing_and_puts_the_working_values_back(rig, data_dir):
-    rig.refuse(*CATALOGUE["LIMTB"].key)
-    with open_can(rig) as session:
-        before = session.download()
-        stored_before = rig.stored_set()
-        values = changed(session)
-        result = session.upload(values)
-    assert (result.stored, result.failed_step, result.reloaded) == (False, "write", True)
-    assert "LIMTB" in result.mismatches and "0x06090030" in str(result.mismatches["LIMTB"][1])
-    assert rig.stored_set() == stored_before
-    assert rig.working("LIMTA") == before["LIMTA"]  # written, then put back
 
 
 def test_a_node_that_stops_answering_mid_upload_keeps_its_stored_set(rig, data_dir):

@@ -158,3 +158,18 @@ def test_the_served_valve_reports_its_life_and_stops_on_sigterm(outcome):
     assert f"serial 4711 node 10: on the bus udp_multicast channel {GROUP}" in text
     assert "serial 4711 node 10: NMT pre-operational" in text
     assert text.rstrip().endswith("prm9tool: stopped")
+
+
+@pytest.mark.timeout(600)
+def test_get_set_and_the_python_api_in_other_processes(outcome):
+    assert outcome["set"]["code"] == 0, outcome["set"]["err"]
+    assert outcome["set"]["out"] == "DYNFREQ\t110\tHz\n"
+    assert outcome["get"]["code"] == 0, outcome["get"]["err"]
+    got = json.loads(outcome["get"]["out"])
+    assert got["values"] == {"DYNFREQ": 110}
+    assert (got["device"]["device_id"], got["device"]["link"]) == ("can:10", "can")
+    assert outcome["api"]["code"] == 0, outcome["api"]["err"]
+    api = json.loads(outcome["api"]["out"])
+    assert [(d["device_id"], d["serial"]) for d in api["listed"]] == [("can:10", 4711)]
+    assert api["values"] == {"DYNFREQ": 110, "MONDELAY": 1500, "DYNFREQ after": 105}
+    assert api["info"]["type_key"] == E04

@@ -135,3 +135,22 @@ def test_a_valve_that_does_not_follow_its_setpoint_is_not_tested(tmp_path, capsy
     assert "does not follow its setpoint: device state INIT" in err
     assert "waits for its master" in err
     assert not js.exists()
+
+
+def test_the_report_pdf_speaks_display_units_and_names_the_valve_on_every_page(tmp_path):
+    """Issue 25 item 9: the report's last page listed raw values (DTAMP 2458 for 15 %), and
+    its pages repeated neither type key nor serial number."""
+    import unicodedata
+
+    pdf = tmp_path / "out.pdf"
+    assert run(tmp_path, FAST, 33, "--report", str(pdf)) == ExitCode.OK
+    pages = [
+        " ".join(unicodedata.normalize("NFKC", page.extract_text()).split())
+        for page in PdfReader(pdf).pages
+    ]
+    last = pages[-1]
+    assert "DTAMP 15 %" in last and "LIMTA 2400 mA" in last and "2458" not in last
+    assert "raw values" not in last and "Signature:" in last
+    for number, text in enumerate(pages, start=1):
+        assert f"{E02} · serial number 33" in text and "PRM9 test report" in text
+        assert f"Page {number} of {len(pages)}" in text

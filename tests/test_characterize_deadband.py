@@ -140,3 +140,31 @@ def test_a_sweep_too_short_for_the_rate_says_what_it_needs():
 
     with pytest.raises(ValueError, match=r"at least 256 samples; .* at least 0\.1 s"):
         bode_test(rig_of(E02), 10.0, 0.0, 1.0, 200.0, 0.04)
+
+
+class _ManualOnlyRig(EmulatorRig):
+    """As a -CA valve reached over CAN that has only the manual's objects: no process gains."""
+
+    def read(self, mnemonics):
+        return {k: v for k, v in super().read(mnemonics).items() if not k.startswith("PRCK")}
+
+
+def test_a_valve_without_the_process_gains_skips_the_flow_test_and_says_why(qapp):
+    from prm9tool.analysis.profile import Profile
+    from prm9tool.characterize.flow import flow_objects_missing
+    from prm9tool.characterize.run import characterize
+
+    rig = rig_of(E04, {"CTRLMODE": 4})
+    manual = _ManualOnlyRig(rig.valve)
+    why = flow_objects_missing(manual)
+    assert "PRCKP, PRCKI, PRCKD" in why
+    assert flow_objects_missing(rig) == ""
+    with pytest.raises(Prm9Error, match="no object for PRCKP"):  # not a KeyError
+        flow_test(manual)
+    profile = dataclasses.replace(
+        Profile(), step_amplitudes_pct=(), bode_f_max_hz=20.0, bode_duration_s=1.0,
+        static_period_s=1.0,
+    )  # fmt: skip
+    result = characterize(manual, profile)
+    assert result.flow is None
+    assert why in result.notes

@@ -142,9 +142,19 @@ def test_diff_with_no_such_valve_exits_4(tmp_path, capsys):
         (["--diff", "a.prm", "b.prm", "--emulator", E04], "leave out --device/--emulator"),
         (["--diff", "a.prm", "b.prm", "c.prm"], "compares two files"),
         (["--diff", "a.prm", "b.prm", "--batch", "x.prm"], "separate commands"),
-        (["--json"], "--json belongs to --diff and --history"),
+        (["--json"], "--json belongs to --diff, --history, --get/--set and --list-devices"),
     ],
 )
 def test_diff_usage_errors_exit_2(args, problem, capsys):
     assert main(args) == ExitCode.USAGE
     assert problem in capsys.readouterr().err
+
+
+def test_the_chosen_values_come_from_the_side_chosen_per_row():
+    """What two history records give to a document or valve outside the comparison."""
+    comparison = Comparison((side(E04, LIMTA=1500), side(E04, DTAMP=1000)))
+    comparison.choose("LIMTA", 0)
+    comparison.choose("DTAMP", 1)
+    assert comparison.chosen() == {"LIMTA": 1500, "DTAMP": 1000}
+    comparison.choose("LIMTA", None)
+    assert comparison.chosen() == {"DTAMP": 1000}

@@ -233,3 +233,23 @@ def test_the_count_of_nodes_uses_the_plural_forms_of_the_language(
         assert dialog.state.text() == three
     finally:
         i18n.set_language("en")
+
+
+def test_valve_store_over_canopen_uses_the_sessions_store(qtbot, rig, settings):
+    """Issue 25 item 12: Valve → Store over CAN is the link's store (0x1010 here), and the
+    values read back after it are the stored ones."""
+    connection = ValveConnection(opener=lambda e: factory.open_session(e, can_link=rig.options))
+    with qtbot.waitSignal(connection.online_changed, timeout=10000):
+        connection.go_online("can:10")
+    try:
+        with qtbot.waitSignal(connection.operation_finished, timeout=10000):
+            connection.write("DTAMP", 1234)
+            connection.read_many(["DTAMP"], "probe")
+        assert rig.working("DTAMP") == 1234 and rig.stored_set().get("DTAMP") != 1234
+        with qtbot.waitSignal(connection.operation_finished, timeout=10000,
+                              check_params_cb=lambda name, _r: name == "store") as done:  # fmt: skip
+            connection.store_valve()
+        assert rig.stored_set()["DTAMP"] == 1234 and done.args[1]["DTAMP"] == 1234
+    finally:
+        connection.go_offline()
+        connection.shutdown()

@@ -143,3 +143,39 @@ def test_a_tuning_test_on_a_waiting_valve_offers_the_enabling_first(
     assert "Enable it now" in answers.asked[-1]
     qtbot.waitUntil(lambda: not tuning.runner.busy, timeout=30_000)
     assert "POSKP: 0.4 → " in tuning.autotune.result.text(), tuning.status.text()
+
+
+def _position(widget):
+    return widget.mapTo(widget.window(), widget.rect().topLeft())
+
+
+def test_after_nmt_start_valve_status_asks_only_for_enable_and_enter_enables_nothing(qtbot, window):
+    """Issue 25 item 14: "Press NMT start, then Enable" stayed after NMT start, and Enable
+    was the default button (Enter moved the valve)."""
+    panel = window.show_status_window().commissioning
+    qtbot.waitUntil(lambda: "Press NMT start, then Enable" in panel.reason.text(), timeout=TIMEOUT)
+    assert not any(b.isDefault() or b.autoDefault() for b in panel.buttons.values())
+    buttons = {name: _position(button) for name, button in panel.buttons.items()}
+    panel.buttons["nmt_start"].click()
+    qtbot.waitUntil(lambda: "operational on CANopen" in panel.reason.text(), timeout=TIMEOUT)
+    assert "Press Enable" in panel.reason.text() and "NMT start" not in panel.reason.text()
+    panel.buttons["enable"].click()
+    qtbot.waitUntil(lambda: "follows its setpoint" in panel.reason.text(), timeout=TIMEOUT)
+    assert {name: _position(button) for name, button in panel.buttons.items()} == buttons
+
+
+def test_the_oscilloscopes_buttons_stay_where_they_are_whatever_the_message(qtbot, window):
+    """Issue 25 item 14: the buttons under the plot moved when the status line changed its
+    number of lines (clicks missed)."""
+    window.open_scope("position_actual")
+    scope = window.views["scope"]
+    window.resize(1024, 700)
+    qtbot.waitUntil(lambda: "waits for a CANopen master" in scope.status.text(), timeout=TIMEOUT)
+    watched = [scope.generator_panel.button, scope.tuning_button, *scope.controls.findChildren(
+        type(scope.tuning_button))]  # fmt: skip
+    before = [_position(button) for button in watched]
+    for text in ("", "Short.", " ".join(["A long message that wraps."] * 30)):
+        scope._say(text)
+        qtbot.wait(10)  # the layout settles in the event loop
+        assert [_position(button) for button in watched] == before
+    assert scope.status.toolTip()  # the cut message is whole in the tip

@@ -7,6 +7,7 @@ from pathlib import Path
 
 from gui_support import E02, go_online
 from PySide6.QtCore import Qt
+from PySide6.QtWidgets import QFileDialog
 
 from prm9tool import i18n
 from prm9tool.catalogue.typekey import TypeKey
@@ -14,7 +15,7 @@ from prm9tool.compare import Comparison, Side
 from prm9tool.files.prmfile import PrmContents, write_file
 from prm9tool.history.recorder import Recorder
 from prm9tool.views import prompts
-from prm9tool.views.compare_view import BOTH, FIRST_VALUE, CompareDialog
+from prm9tool.views.compare_view import BOTH, DOCUMENT, FIRST_VALUE, VALVE, CompareDialog
 from prm9tool.views.online_dialogs import DiffChoice, OnlineDiffDialog
 
 TIMEOUT = 10_000
@@ -268,6 +269,144 @@ def test_the_history_window_names_a_damaged_database_and_keeps_working(qtbot, wi
     qtbot.waitUntil(lambda: "is damaged" in history.state.text(), timeout=TIMEOUT)
     assert history.model.rowCount() == 0 and not history.buttons["compare"].isEnabled()
     assert damaged.read_bytes() == b"not a database " * 100
+
+
+def test_compare_with_file_opens_in_the_last_folder_used(window, tmp_path, monkeypatch):
+    """Issue 25 item 10: Compare with file opened in the home folder."""
+    folder, other = tmp_path / "valves", tmp_path / "elsewhere"
+    folder.mkdir(), other.mkdir()
+    window.files.save_to(folder / "work.prm")
+    write_file(PrmContents.factory(TypeKey.parse(E02)), other / "other.prm")
+    asked = []
+
+    def choose(_parent, _title, where, _filter):
+        asked.append(where)
+        return (str(other / "other.prm"), "") if len(asked) == 1 else ("", "")
+
+    monkeypatch.setattr(QFileDialog, "getOpenFileName", choose)
+    monkeypatch.setattr(CompareDialog, "exec", lambda _d: 0)
+    window.commands["compare_file"].trigger()
+    window.commands["compare_file"].trigger()
+    assert asked == [str(folder), str(other)]
+
+
+def test_the_apply_buttons_say_where_the_ticked_values_go(qtbot):
+    """Issue 25 item 10: the user did not find how to put values back into the valve."""
+    i18n.set_language("en")
+    document, valve = factory_side("Document", LIMTA=1500, DTAMP=1000), factory_side("Valve 4711")
+    dialog = CompareDialog(Comparison((document, valve)), (0, 1), roles={0: DOCUMENT, 1: VALVE})
+    qtbot.addWidget(dialog)
+    to_valve, to_document = dialog.apply_buttons[1], dialog.apply_buttons[0]
+    assert to_valve.text() == "Write 0 ticked values into the valve"
+    assert not to_valve.isEnabled() and "“Document”" in to_valve.toolTip()
+    assert "To write values into the valve: tick them in the column “Document”" in (
+        dialog.hint.text()
+    )
+    assert not to_valve.icon().isNull() and not to_document.icon().isNull()
+    check(dialog, "LIMTA", 0)
+    check(dialog, "DTAMP", 0)
+    assert to_valve.isEnabled() and to_valve.text() == "Write 2 ticked values into the valve"
+    assert to_document.text() == "Take 0 ticked values into the document"
+    to_valve.click()
+    assert dialog.applied == (1, {"LIMTA": 1500, "DTAMP": 1000})
+
+
+def _select_rows(history, rows):
+    selection = history.table.selectionModel()
+    selection.clearSelection()
+    for row in rows:
+        selection.select(
+            history.model.index(row, 0),
+            selection.SelectionFlag.Select | selection.SelectionFlag.Rows,
+        )
+
+
+def test_values_ticked_in_two_history_records_go_into_the_valve_or_the_document(qtbot, window):
+    """Issue 25 item 10: the history's compare view only showed the difference."""
+    window.connection.set_recorder(Recorder())
+    go_online(qtbot, window, f"{E02}:4303")
+    qtbot.waitUntil(lambda: window.sync.active, timeout=TIMEOUT)
+    original = window.doc.value("DTAMP")
+    window.doc.set_value("DTAMP", 1234)
+    with qtbot.waitSignal(window.connection.operation_finished, timeout=TIMEOUT,
+                          check_params_cb=lambda name, _r: name == "upload"):  # fmt: skip
+        window.commands["upload"].trigger()
+    history = window.compare.show_history()
+    qtbot.addWidget(history)
+    qtbot.waitUntil(lambda: history.model.rowCount() == 3, timeout=TIMEOUT)
+    _select_rows(history, (0, 2))  # read when going online; the upload
+    dialog = history.compare_selected()
+    assert "write them into the valve" in dialog.hint.text()
+    check(dialog, "DTAMP", 0)
+    assert dialog.apply_buttons[VALVE].text() == "Write 1 ticked value into the valve"
+    snapshot(dialog, "window_dialog_history_compare.png")
+    with qtbot.waitSignal(window.connection.operation_finished, timeout=TIMEOUT,
+                          check_params_cb=lambda name, _r: name == "upload") as done:  # fmt: skip
+        dialog.apply_buttons[VALVE].click()
+    assert done.args[1].stored and done.args[1].written == 1
+    assert window.doc.value("DTAMP") == original  # the document follows the valve
+    dialog = history.compare_selected()
+    check(dialog, "DTAMP", 1)
+    before = window.undo.stack.count()
+    dialog.apply_buttons[DOCUMENT].click()
+    assert window.doc.value("DTAMP") == 1234 and window.undo.stack.count() == before + 1
+    assert window.undo.stack.undoText() == "1 value taken from the history"
+
+
+def _records(serial):
+    return Recorder().store().records(serial)
+
+
+def test_the_history_records_what_the_user_did_online_with_its_meaning(
+    qtbot, window, tmp_path, monkeypatch
+):
+    """Issue 25 item 13: values put back from a compared file and accepted tuning gains went
+    into the history only as "online-edits", and only once stored on exit."""
+    i18n.set_language("en")
+    window.connection.set_recorder(Recorder())
+    go_online(qtbot, window, f"{E02}:4304")
+    qtbot.waitUntil(lambda: window.sync.active, timeout=TIMEOUT)
+    contents = PrmContents.factory(TypeKey.parse(E02))
+    contents.values.update(LIMTA=1700)
+    write_file(contents, tmp_path / "other.prm")
+    answer_compare(monkeypatch, {"LIMTA": 1}, 0, [])
+    window.compare.compare_with_file(tmp_path / "other.prm")
+    window.show_tuning_window()
+    tuning = window.tuning_window
+    tuning.accept_values({"POSKP": 55}, "Autotune")
+    qtbot.waitUntil(lambda: len(_records(4304)) == 3, timeout=TIMEOUT)
+    _download, applied, accepted = _records(4304)
+    assert (applied["operation"], accepted["operation"]) == ("compare-apply", "tuning-accepted")
+    history = window.compare.show_history()
+    qtbot.addWidget(history)
+    qtbot.waitUntil(lambda: history.model.rowCount() == 3, timeout=TIMEOUT)
+    meanings = [history.model.meaning(r) for r in history.model.records]
+    assert meanings[0] == "Read from the valve: going online"
+    assert meanings[1] == (
+        "Values from a compared file, written online: other.prm; LIMTA 2400 → 1700 mA"
+    )
+    assert meanings[2].startswith("Tuning accepted, written online: Autotune; POSKP 0.4 → ")
+    assert history.model.data(history.model.index(1, 3)) == meanings[1]
+
+
+def test_an_upload_from_the_compare_view_says_so_in_the_history(qtbot, window, monkeypatch):
+    i18n.set_language("en")
+    window.connection.set_recorder(Recorder())
+    go_online(qtbot, window, f"{E02}:4305")
+    qtbot.waitUntil(lambda: window.sync.active, timeout=TIMEOUT)
+    with window.sync.suspended():
+        window.doc.set_value("DTAMP", 1000)  # the document differs, the valve does not know
+    answer_compare(monkeypatch, {"DTAMP": 0}, 1, [])
+    with qtbot.waitSignal(window.connection.operation_finished, timeout=TIMEOUT,
+                          check_params_cb=lambda name, _r: name == "upload"):  # fmt: skip
+        window.compare.compare_with_valve()
+    qtbot.waitUntil(lambda: _records(4305)[-1]["operation"] == "upload", timeout=TIMEOUT)
+    history = window.compare.show_history()
+    qtbot.addWidget(history)
+    qtbot.waitUntil(lambda: history.model.rowCount() >= 3, timeout=TIMEOUT)
+    assert history.model.meaning(history.model.records[-1]) == (
+        "Written, verified and stored: chosen in the compare view"
+    )
 
 
 def test_parameters_not_on_the_valve_are_shown_apart_not_as_differences(qtbot):

@@ -3,6 +3,8 @@ undo/redo, print and PDF export."""
 
 from __future__ import annotations
 
+from pathlib import Path
+
 from gui_support import E02, E04_CA
 from PySide6.QtCore import QMimeData, QPointF, Qt, QUrl
 from PySide6.QtGui import QDropEvent
@@ -101,7 +103,7 @@ def test_a_broken_file_is_reported_in_the_program_language(window, tmp_path, ans
         f"„broken.prm“ kann nicht geöffnet werden: broken.prm:{limta}: LIMTA: 'lots' ist keine "
         "Zahl\n1 weiteres Problem in den Details.\n"
         f"{path}:{limta}: LIMTA: 'lots' ist keine Zahl\n"
-        f"{path}:{checksum}: Warnung: Prüfsumme stimmt nicht: die Datei wurde außerhalb von "
+        f"{path}:{checksum}: Warnung: Prüfsumme stimmt nicht: Die Datei wurde außerhalb von "
         "prm9tool geändert (von Hand bearbeitet?); Speichern aus prm9tool schreibt eine neue "
         "Prüfsumme"
     )
@@ -269,3 +271,65 @@ def test_unsaved_changes_prompt_on_open_can_cancel(window, answers):
     window.commands["open"].trigger()  # a file dialog would fail the test: it must not open
     assert "Unsaved changes" in answers.asked[-1]
     assert window.doc.value("LIMTA") == 2000 and window.doc.modified
+
+
+def test_a_backup_copy_leaves_the_document_as_it_is(window, answers, tmp_path, monkeypatch):
+    """Issue 25 item 8: a backup made with Save As became the working document, and Exit
+    offered to save later edits into the backup. Save backup copy keeps the document."""
+    work = tmp_path / "work.prm"
+    window.files.save_to(work)
+    window.doc.set_value("DTAMP", 1000)  # an unsaved change, kept in the copy
+    suggested = []
+
+    def save_name(_parent, _title, suggestion, _filter):
+        suggested.append(suggestion)
+        return str(tmp_path / "copy"), ""
+
+    monkeypatch.setattr(QFileDialog, "getSaveFileName", save_name)
+    assert window.commands["save_copy"] in window.commands.menus["file"].actions()
+    window.commands["save_copy"].trigger()
+    copy = tmp_path / "copy.prm"
+    assert prmfile.read_file(copy).values["DTAMP"] == 1000
+    assert window.doc.path == work and window.doc.modified  # still the working document
+    assert prmfile.read_file(work).values["DTAMP"] != 1000
+    assert window.files.recent_files() == [str(work)]  # the copy is not the document
+    assert Path(suggested[0]).name.startswith(f"{str(window.doc.type_key).replace('/', '_')}_")
+    window.doc.set_value("DTAMP", 2000)
+    answers.answers = [prompts.Button.Save]
+    window.close()
+    assert "“work.prm”" in answers.asked[-1]
+    assert prmfile.read_file(work).values["DTAMP"] == 2000
+    assert prmfile.read_file(copy).values["DTAMP"] == 1000  # later edits never reach the copy
+
+
+def test_the_next_backup_copy_is_proposed_in_the_folder_of_the_last(window, tmp_path, monkeypatch):
+    folder = tmp_path / "backups"
+    folder.mkdir()
+    window.files.save_backup_copy(folder / "first.prm")
+    seen = []
+    monkeypatch.setattr(
+        QFileDialog, "getSaveFileName", lambda _p, _t, where, _f: (seen.append(where), ("", ""))[1]
+    )
+    assert window.files.save_backup_copy() is None  # cancelled: nothing written
+    assert Path(seen[0]).parent == folder and Path(seen[0]).suffix == ".prm"
+    assert sorted(p.name for p in folder.iterdir()) == ["first.prm"]
+
+
+def test_a_backup_copy_that_cannot_be_written_says_so_and_loses_nothing(window, answers, tmp_path):
+    window.doc.set_value("DTAMP", 1000)
+    target = tmp_path / "missing-folder" / "copy.prm"
+    assert window.files.save_backup_copy(target) is None
+    assert "Cannot save “copy.prm”" in answers.asked[-1]
+    assert window.doc.value("DTAMP") == 1000 and window.doc.modified and window.doc.path is None
+
+
+def test_after_a_download_the_status_bar_points_to_the_backup_copy(qtbot, window):
+    """Issue 25 item 8: the backup workflow (Download from valve, then keep a copy) leads to
+    Save backup copy, which leaves the document as it is."""
+    from gui_support import go_online
+
+    go_online(qtbot, window, f"{E02}:4730")
+    qtbot.waitUntil(lambda: window.sync.active, timeout=10_000)
+    with qtbot.waitSignal(window.connection.operation_finished, timeout=10_000):
+        window.commands["download"].trigger()
+    assert "File → Save backup copy… keeps a copy" in window.status.currentMessage()

@@ -33,6 +33,7 @@ def test_menus_and_toolbar_are_those_of_the_manual(window):
         "Valve s&tatus…",
         "&Upload to valve",
         "&Download from valve",
+        "St&ore in valve",  # issue 25
         "&Compare with valve",  # issue 17
         "&History…",
         "Restore &factory values…",
@@ -467,3 +468,21 @@ def test_save_as_and_exit_have_windows_shortcuts_too(window):
     keys = {n: [k.toString() for k in window.commands[n].shortcuts()] for n in ("save_as", "exit")}
     assert "Ctrl+Shift+S" in keys["save_as"] and "Ctrl+Q" in keys["exit"]
     assert all(len(set(v)) == len(v) for v in keys.values())  # no key bound twice
+
+
+def test_a_long_status_message_is_read_whole_and_the_fields_come_back(window):
+    """Issue 25 item 16: the status bar cut "… stored at 03:37:0" (German and Czech are longer)."""
+    window.resize(1024, 700)
+    bar = window.status
+    message = (
+        "43 Parameter geschrieben, überprüft und um 03:37:05 gespeichert; das Ventil arbeitet "
+        "jetzt mit ihnen"
+    )
+    bar.showMessage(message, 8000)
+    needed = bar.fontMetrics().horizontalAdvance(message)
+    shown = [label for label in bar.labels() if label.isVisible()]
+    taken = sum(label.sizeHint().width() + 6 for label in shown)
+    assert bar.width() - taken > needed and bar.toolTip() == message
+    assert bar.mode_label in shown and bar.status_label in shown  # these always stay
+    bar.clearMessage()
+    assert all(label.isVisible() for label in bar.labels())

@@ -31,7 +31,7 @@ def online(qtbot, tmp_path, monkeypatch):
 
 
 def rows(dialog):
-    table = dialog.table
+    table = dialog.model
     return {
         (table.item(r, 0).text(), table.item(r, 1).text()): table.item(r, 5).text()
         for r in range(table.rowCount())
@@ -62,9 +62,25 @@ def test_expert_writes_an_object(qtbot, online, monkeypatch):
     qtbot.addWidget(dialog)
     monkeypatch.setattr(QInputDialog, "getText", staticmethod(lambda *_a, **_k: ("0x1F4", True)))
     row = next(
-        r for r in range(dialog.table.rowCount()) if dialog.table.item(r, 0).text() == "0x1017"
+        r for r in range(dialog.model.rowCount()) if dialog.model.item(r, 0).text() == "0x1017"
     )
     with qtbot.waitSignal(connection.operation_finished, timeout=10000):
         dialog._on_table_double_clicked(row, 5)
-    qtbot.waitUntil(lambda: dialog.table.item(row, 5).text() == "500", timeout=10000)
+    qtbot.waitUntil(lambda: dialog.model.item(row, 5).text() == "500", timeout=10000)
     assert rig.valve.read(0x1017, 0) == 500
+
+
+def test_the_search_line_filters_the_objects(qtbot, online):
+    """Issue 25 item 15: the object dictionary browser had no search or filter."""
+    rig, connection = online
+    dialog = ObjectDictionaryDialog(connection, AccessModel(), rig.valve.variant)
+    qtbot.addWidget(dialog)
+    everything = dialog.proxy.rowCount()
+    qtbot.keyClicks(dialog.search, "0x1018")  # the identity object's four entries and count
+    shown = [dialog.proxy.index(r, 0).data() for r in range(dialog.proxy.rowCount())]
+    assert 1 < len(shown) < everything and set(shown) == {"0x1018"}
+    dialog.search.setText("heartbeat")  # a name, in any case
+    names = [dialog.proxy.index(r, 2).data() for r in range(dialog.proxy.rowCount())]
+    assert names and all("heartbeat" in name.lower() for name in names)
+    dialog.search.clear()
+    assert dialog.proxy.rowCount() == everything

@@ -3,6 +3,7 @@ download, restart, factory values, the status window, and a valve that disappear
 
 from __future__ import annotations
 
+import json
 import threading
 
 import pytest
@@ -471,3 +472,57 @@ def test_going_online_again_retries_the_can_node_chosen_last_not_the_remembered_
         window.valve.go_online()  # F5 after that attempt failed
         qtbot.waitUntil(lambda: len(tried) == 2, timeout=5000)
         assert tried == ["can:10", "can:10"]
+
+
+@pytest.mark.parametrize("answer", [prompts.Button.No, prompts.Button.Yes])
+def test_a_document_of_another_valve_is_named_before_going_online(
+    qtbot, window, answers, tmp_path, answer
+):
+    """Issue 25 item 11: a document read from valve 1001 went online with valve 4711 unasked."""
+    window.doc.source_serial = 1001
+    window.files.save_to(tmp_path / "valve_1001.prm")
+    answers.answers = [answer]
+    go_online(qtbot, window, f"{E02}:4711")
+    if answer == prompts.Button.No:
+        qtbot.waitUntil(lambda: not window.connection.is_online, timeout=TIMEOUT)
+        assert not window.sync.active
+    else:
+        _settled(qtbot, window)  # the same values: online as usual
+    (question,) = answers.asked
+    assert question.startswith("Another valve: The document was read from valve 1001; you are "
+                               "online with valve 4711")  # fmt: skip
+
+
+def test_the_same_valve_goes_online_without_a_question(qtbot, window, answers, tmp_path):
+    window.doc.source_serial = 4712
+    window.files.save_to(tmp_path / "valve_4712.prm")
+    go_online(qtbot, window, f"{E02}:4712")
+    _settled(qtbot, window)
+    assert answers.asked == []
+
+
+def test_valve_store_keeps_the_online_edits_and_the_history_records_them(qtbot, window, answers):
+    """Issue 25 item 12: there was no Store command; the user uploaded all 43 parameters to
+    store two online edits."""
+    from prm9tool.history.recorder import Recorder
+
+    window.connection.set_recorder(Recorder())
+    go_online(qtbot, window, f"{E02}:4720")
+    _settled(qtbot, window)
+    window.doc.set_value("DTAMP", 999)
+    qtbot.waitUntil(lambda: valve_value(qtbot, window, "DTAMP") == 999, timeout=TIMEOUT)
+    assert window.commands["store"].isEnabled()
+    with qtbot.waitSignal(window.connection.operation_finished, timeout=TIMEOUT,
+                          check_params_cb=lambda name, _r: name == "store") as done:  # fmt: skip
+        window.commands["store"].trigger()
+    assert done.args[1]["DTAMP"] == 999  # read back after the store
+    assert "The valve stored its parameters at " in window.status.currentMessage()
+    emulated(4720).reload()  # working values <- stored ones: the edit was stored
+    assert valve_value(qtbot, window, "DTAMP") == 999
+    records = Recorder().store().records(4720)
+    assert records[-1]["operation"] == "store" and records[-1]["outcome"] == "ok"
+    full = Recorder().store().record(records[-1]["id"])
+    assert json.loads(full["parameters"])["DTAMP"] == 999
+    with qtbot.waitSignal(window.connection.online_changed, timeout=TIMEOUT):
+        window.commands["offline"].trigger()
+    assert answers.asked == []  # stored: nothing left to ask about

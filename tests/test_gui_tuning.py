@@ -434,3 +434,25 @@ def test_the_legend_goes_to_the_corner_the_curves_leave_free(qapp):
     box = legend_box(area, (120, 50), np.column_stack([t, step]))
     assert (box.left(), box.top()) == (280, 150)  # bottom right: nothing drawn there
     assert legend_box(area, (120, 50), np.zeros((0, 2))).topRight() == area.topRight()
+
+
+def test_a_marker_label_is_drawn_whole_inside_the_plot(qtbot):
+    """Issue 25 item 9: the "−3 dB" label of the Bode plot lost its top to the plot's clip."""
+    import numpy as np
+    from PySide6.QtGui import QFont, QFontMetrics
+
+    from prm9tool.views.tuning.plot import Plot, Series, plot_image
+
+    def image(label):
+        x = np.geomspace(1, 100, 50)
+        series = [Series(x, -x / 10, "magnitude")]
+        return plot_image(Plot("t", "f", "dB", series, logx=True, vlines=[(20.0, label)]))
+
+    with_label, without = image("−3 dB: 27.0 Hz"), image("")
+    a = np.frombuffer(with_label.constBits(), np.uint32).reshape(with_label.height(), -1)
+    b = np.frombuffer(without.constBits(), np.uint32).reshape(without.height(), -1)
+    rows = np.nonzero((a != b).any(axis=1))[0]
+    font = QFont()
+    font.setPixelSize(20)  # plot_image's font at 1200 × 560
+    digits = QFontMetrics(font).tightBoundingRect("3").height()
+    assert rows.max() - rows.min() + 1 >= digits  # the whole height of the text

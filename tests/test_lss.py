@@ -315,6 +315,8 @@ def test_the_bus_bit_rate_changes_by_lss_on_every_lss_valve_together(rig):
     assert "7E5 15 64 00 00 00 00 00 00" in frames  # activate, switch delay 100 ms
     wait_for(lambda: [v.bitrate for v in valves] == [250_000] * 2)
     assert [v._fw.nv.lss["bit_timing"] for v in valves] == [3, 3]
+    # the emulated valves keep CiA 305's silence in their own (simulated) time: let it end
+    wait_for(lambda: all(s._now_ms >= s._silent_until_ms for s in rig.slaves))
     with pytest.raises(LssFailedError) as caught:
         link.change_bus_bit_timing(5, 100)  # 100 kbit/s: refused by both
     assert str(caught.value) == (

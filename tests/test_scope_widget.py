@@ -367,7 +367,7 @@ def test_each_channel_has_its_own_scale_and_same_units_can_share_one(scope, conn
     assert "Spool position actual" not in plot.axes[0].labelText
 
 
-def test_an_axis_shared_by_three_long_names_is_labelled_with_channel_numbers(scope, conn):
+def test_an_axis_shared_by_three_long_names_is_labelled_with_shortened_names(scope, conn):
     for key in ("demand", "position_actual", "position_setpoint"):
         scope.preselect(key)
     scope.start()
@@ -375,8 +375,9 @@ def test_an_axis_shared_by_three_long_names_is_labelled_with_channel_numbers(sco
     scope._redraw()
     assert scope.plot.shared_axes() == {1: 0, 2: 0}
     label = scope.plot.axes[0].labelText
-    assert "Spool position actual" not in label
-    assert all(f">{n}</span>" in label for n in (1, 2, 3)) and label.endswith("[%]")
+    assert "Spool position actual (0x6301)" not in label  # shortened, issue 25: not numbered
+    assert not any(f">{n}</span>" in label for n in (1, 2, 3)) and label.endswith("[%]")
+    assert label.count("</span>") == 3
 
 
 def test_zooming_an_axis_by_hand_stops_its_autoscale_until_auto(scope, conn):
@@ -449,7 +450,7 @@ def test_while_the_plot_holds_the_legend_marks_its_values_as_live(scope, conn):
     scope._redraw()
     assert value.text() == "live: 0 %"
     scope.stop()  # the recording ended: the plot holds all of it, the legend its last values
-    assert value.text() == "0 %"
+    assert value.text() == "at stop: 0 %"  # issue 25: not as if they were the valve's now
     assert len(scope.display.data()[0]) == 400
 
 

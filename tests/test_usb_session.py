@@ -132,23 +132,6 @@ def test_verification_mismatch_stores_nothing(valve):
     assert session.download() == before
 
 
-def test_refused_value_is_reported_and_nothing_stored(session, valve, monkeypatch):
-    before = session.download()
-    original = valve.write_bytes
-
-    def refuse_dither(index, subindex, data):
-        if (index, subindex) == CATALOGUE["DTAMP"].key:
-            raise SdoAbortError(index, subindex, AbortCode.CANNOT_STORE_DEVICE_STATE)
-        original(index, subindex, data)
-
-    monkeypatch.setattr(valve, "write_bytes", refuse_dither)
-    result = session.upload(changed_values(session))
-    assert (result.stored, result.failed_step) == (False, "write")
-    assert "abort 0x08000022" in str(result.mismatches["DTAMP"][1])
-    valve.restart()
-    assert session.download() == before
-
-
 def test_cancel_stops_the_upload_and_stores_nothing(session, valve):
     before = session.download()
     cancel = threading.Event()

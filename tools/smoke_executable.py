@@ -73,6 +73,11 @@ def _smoke(exe: Path) -> int:
             ),
             ("--history", [exe, "--history", "101"], lambda out: "batch-upload" in out),
             (
+                "--get --json",
+                [exe, "--emulator", f"{E02}:101", "--get", "LIMTA", "--json"],
+                lambda out: json.loads(out)["values"] == {"LIMTA": 2400},
+            ),
+            (
                 "--export-eds",
                 [exe, "--export-eds", E02, "-o", "v.eds"],
                 lambda out: "[DeviceInfo]" in (work / "v.eds").read_text(),

@@ -736,6 +736,10 @@ Poslední akce možná nebyla dokončena. Uložte svou práci pod novým názvem
             <translation>ventil nedokončil start</translation>
         </message>
         <message>
+            <source>flow characteristic not measured: this valve has no object for {0} over this link (measure it over USB)</source>
+            <translation>Průtoková charakteristika nebyla změřena: ventil nemá po tomto spojení objekt pro {0} (změřte ji přes USB)</translation>
+        </message>
+        <message>
             <source>the flow characteristic is measured on E04 valves (with an actuator)</source>
             <translation>průtoková charakteristika se měří na ventilech E04 (s akčním členem)</translation>
         </message>
@@ -861,16 +865,56 @@ Poslední akce možná nebyla dokončena. Uložte svou práci pod novým názvem
             <translation>Úroveň oprávnění:</translation>
         </message>
         <message>
-            <source>Take every shown value from {0}</source>
-            <translation>Převzít všechny zobrazené hodnoty z {0}</translation>
+            <source>Tick every shown value of {0}</source>
+            <translation>Označit všechny zobrazené hodnoty „{0}“</translation>
         </message>
         <message>
-            <source>Apply: each side takes the chosen values</source>
-            <translation>Použít: každá strana převezme zvolené hodnoty</translation>
+            <source>Close</source>
+            <translation>Zavřít</translation>
+        </message>
+        <message numerus="yes">
+            <source>Write %n ticked value(s) into the valve</source>
+            <translation>
+                <numerusform>Zapsat %n označenou hodnotu do ventilu</numerusform>
+                <numerusform>Zapsat %n označené hodnoty do ventilu</numerusform>
+                <numerusform>Zapsat %n označených hodnot do ventilu</numerusform>
+            </translation>
+        </message>
+        <message numerus="yes">
+            <source>Take %n ticked value(s) into the document</source>
+            <translation>
+                <numerusform>Převzít %n označenou hodnotu do dokumentu</numerusform>
+                <numerusform>Převzít %n označené hodnoty do dokumentu</numerusform>
+                <numerusform>Převzít %n označených hodnot do dokumentu</numerusform>
+            </translation>
+        </message>
+        <message numerus="yes">
+            <source>Copy %n ticked value(s) into “{0}”</source>
+            <translation>
+                <numerusform>Zkopírovat %n označenou hodnotu do „{0}“</numerusform>
+                <numerusform>Zkopírovat %n označené hodnoty do „{0}“</numerusform>
+                <numerusform>Zkopírovat %n označených hodnot do „{0}“</numerusform>
+            </translation>
         </message>
         <message>
-            <source>Apply the chosen values to {0}</source>
-            <translation>Použít zvolené hodnoty na: {0}</translation>
+            <source>Every row starts with the valve's value ticked. Tick the document's value where the document is right, then press Apply: the document takes the ticked valve values and the valve the ticked document values.</source>
+            <translation>V každém řádku je nejprve označena hodnota ventilu. Kde je správná hodnota dokumentu, označte ji a pak stiskněte „Použít“: dokument převezme označené hodnoty ventilu a ventil označené hodnoty dokumentu.</translation>
+        </message>
+        <message>
+            <source>Tick the values to take, in either column; then take them into the document, or write them into the valve (online with this valve).</source>
+            <translation>Označte požadované hodnoty v kterémkoli sloupci; pak je převezměte do dokumentu nebo zapište do ventilu (v režimu online s tímto ventilem).</translation>
+        </message>
+        <message>
+            <source>Shown for comparison only.</source>
+            <translation>Zobrazeno jen pro porovnání.</translation>
+        </message>
+        <message>
+            <source>Apply: each side takes the ticked values</source>
+            <translation>Použít: každá strana převezme označené hodnoty</translation>
+        </message>
+        <message>
+            <source>Tick values in the column “{0}” first</source>
+            <translation>Nejprve označte hodnoty ve sloupci „{0}“</translation>
         </message>
         <message numerus="yes">
             <source>%n parameter(s) differ</source>
@@ -879,6 +923,18 @@ Poslední akce možná nebyla dokončena. Uložte svou práci pod novým názvem
                 <numerusform>%n parametry se liší</numerusform>
                 <numerusform>%n parametrů se liší</numerusform>
             </translation>
+        </message>
+        <message>
+            <source>To write values into the valve: tick them in the column “{0}”, then press the button below.</source>
+            <translation>Zápis hodnot do ventilu: označte je ve sloupci „{0}“ a stiskněte tlačítko dole.</translation>
+        </message>
+        <message>
+            <source>To take values into the document: tick them in the column “{0}”, then press the button below.</source>
+            <translation>Převzetí hodnot do dokumentu: označte je ve sloupci „{0}“ a stiskněte tlačítko dole.</translation>
+        </message>
+        <message>
+            <source>To copy values into “{0}”: tick them in the column “{1}”, then press the button below.</source>
+            <translation>Kopírování hodnot do „{0}“: označte je ve sloupci „{1}“ a stiskněte tlačítko dole.</translation>
         </message>
         <message numerus="yes">
             <source>%n parameter(s) only on one side</source>
@@ -982,6 +1038,14 @@ Poslední akce možná nebyla dokončena. Uložte svou práci pod novým názvem
             <source>Parameters restored from the history</source>
             <translation>Parametry obnovené z historie</translation>
         </message>
+        <message numerus="yes">
+            <source>%n value(s) taken from the history</source>
+            <translation>
+                <numerusform>%n hodnota převzata z historie</numerusform>
+                <numerusform>%n hodnoty převzaty z historie</numerusform>
+                <numerusform>%n hodnot převzato z historie</numerusform>
+            </translation>
+        </message>
     </context>
     <context>
         <name>ControlPanel</name>
@@ -1067,7 +1131,7 @@ Poslední akce možná nebyla dokončena. Uložte svou práci pod novým názvem
         </message>
         <message>
             <source>PNG image of the plot…</source>
-            <translation>Obrázek PNG grafu…</translation>
+            <translation>Graf jako obrázek PNG…</translation>
         </message>
         <message>
             <source>Trigger channel</source>
@@ -1694,6 +1758,10 @@ Poslední akce možná nebyla dokončena. Uložte svou práci pod novým názvem
             <translation>Otevírání {0} zrušeno</translation>
         </message>
         <message>
+            <source>Backup copy saved as {0}; {1} stays the open document</source>
+            <translation>Záložní kopie uložena jako {0}; otevřený zůstává dokument {1}</translation>
+        </message>
+        <message>
             <source>Still reading {0}</source>
             <translation>{0} se ještě načítá</translation>
         </message>
@@ -1736,6 +1804,18 @@ Poslední akce možná nebyla dokončena. Uložte svou práci pod novým názvem
         <message>
             <source>Cannot save “{0}”</source>
             <translation>„{0}“ nelze uložit</translation>
+        </message>
+        <message numerus="yes">
+            <source>(marked: %n rule(s) broken)</source>
+            <translation>
+                <numerusform>(označeno: porušeno %n pravidlo)</numerusform>
+                <numerusform>(označeno: porušena %n pravidla)</numerusform>
+                <numerusform>(označeno: porušeno %n pravidel)</numerusform>
+            </translation>
+        </message>
+        <message>
+            <source>Save backup copy</source>
+            <translation>Uložit záložní kopii</translation>
         </message>
         <message>
             <source>Saved {0}</source>
@@ -1918,7 +1998,7 @@ Uvolnit ho nyní (NMT start, řídicí slovo 08h → 09h → 0Bh → 0Fh)?</tran
         <name>HidConfigurationDialog</name>
         <message>
             <source>HID configuration</source>
-            <translation>HID konfigurace</translation>
+            <translation>Konfigurace HID</translation>
         </message>
         <message>
             <source>Valves connected to this computer and emulated valves. Choose the one to communicate with.</source>
@@ -2058,12 +2138,96 @@ Ano načte a záznam zařadí do fronty; Ne nenačte nic.</translation>
             <translation>Typový klíč</translation>
         </message>
         <message>
+            <source>What was done</source>
+            <translation>Co bylo provedeno</translation>
+        </message>
+        <message>
             <source>Firmware</source>
             <translation>Firmware</translation>
         </message>
         <message>
             <source>User, station, link</source>
             <translation>Uživatel, stanice, připojení</translation>
+        </message>
+        <message numerus="yes">
+            <source>%n more</source>
+            <translation>
+                <numerusform>%n další</numerusform>
+                <numerusform>%n další</numerusform>
+                <numerusform>%n dalších</numerusform>
+            </translation>
+        </message>
+        <message>
+            <source>Read from the valve</source>
+            <translation>Načteno z ventilu</translation>
+        </message>
+        <message>
+            <source>Written, verified and stored</source>
+            <translation>Zapsáno, ověřeno a uloženo</translation>
+        </message>
+        <message>
+            <source>Written by --batch</source>
+            <translation>Zapsáno pomocí --batch</translation>
+        </message>
+        <message>
+            <source>Stored (Valve → Store in valve)</source>
+            <translation>Uloženo (Ventil → Uložit do paměti ventilu)</translation>
+        </message>
+        <message>
+            <source>Values changed online, stored</source>
+            <translation>Hodnoty změněné online uloženy</translation>
+        </message>
+        <message>
+            <source>Backup of the valve's values</source>
+            <translation>Záloha hodnot ventilu</translation>
+        </message>
+        <message>
+            <source>Factory values restored</source>
+            <translation>Obnoveno tovární nastavení</translation>
+        </message>
+        <message>
+            <source>Test report</source>
+            <translation>Zkušební protokol</translation>
+        </message>
+        <message>
+            <source>Values from a compared file, written online</source>
+            <translation>Hodnoty z porovnávaného souboru, zapsány online</translation>
+        </message>
+        <message>
+            <source>Values from the history, written online</source>
+            <translation>Hodnoty z historie, zapsány online</translation>
+        </message>
+        <message>
+            <source>Tuning accepted, written online</source>
+            <translation>Nastavení regulace převzato, zapsáno online</translation>
+        </message>
+        <message>
+            <source>going online</source>
+            <translation>při přechodu do režimu online</translation>
+        </message>
+        <message>
+            <source>Valve → Download</source>
+            <translation>Ventil → Stažení z ventilu</translation>
+        </message>
+        <message>
+            <source>Compare with valve</source>
+            <translation>Porovnat s ventilem</translation>
+        </message>
+        <message>
+            <source>Valve → Upload</source>
+            <translation>Ventil → Načtení do ventilu</translation>
+        </message>
+        <message>
+            <source>chosen in the compare view</source>
+            <translation>zvoleno v porovnání</translation>
+        </message>
+        <message>
+            <source>chosen per parameter going online</source>
+            <translation>zvoleno po parametrech při přechodu do režimu online</translation>
+        </message>
+        <message>
+            <source>a history record restored</source>
+            <translation>obnoven záznam z historie</translation>
         </message>
     </context>
     <context>
@@ -2333,6 +2497,14 @@ Ano načte a záznam zařadí do fronty; Ne nenačte nic.</translation>
             <translation>Uložení záznamu parametrů pod jiným jménem</translation>
         </message>
         <message>
+            <source>Save bac&amp;kup copy…</source>
+            <translation>Uložit zá&amp;ložní kopii…</translation>
+        </message>
+        <message>
+            <source>Save a copy of the parameters to another file; you keep working on this one</source>
+            <translation>Uložení kopie parametrů do jiného souboru; dále se pracuje s tímto</translation>
+        </message>
+        <message>
             <source>&amp;Undo</source>
             <translation>&amp;Zpět</translation>
         </message>
@@ -2473,6 +2645,14 @@ Ano načte a záznam zařadí do fronty; Ne nenačte nic.</translation>
             <translation>Načtení parametrů z elektroniky ventilu do programu</translation>
         </message>
         <message>
+            <source>St&amp;ore in valve</source>
+            <translation>&amp;Uložit do paměti ventilu</translation>
+        </message>
+        <message>
+            <source>Make the values the valve works with permanent: they stay after a restart</source>
+            <translation>Trvalé uložení hodnot, se kterými ventil pracuje: zůstanou zachovány i po restartu</translation>
+        </message>
+        <message>
             <source>Restore &amp;factory values…</source>
             <translation>&amp;Obnovit tovární nastavení…</translation>
         </message>
@@ -2490,7 +2670,7 @@ Ano načte a záznam zařadí do fronty; Ne nenačte nic.</translation>
         </message>
         <message>
             <source>&amp;HID configuration…</source>
-            <translation>&amp;HID konfigurace…</translation>
+            <translation>Konfigurace &amp;HID…</translation>
         </message>
         <message>
             <source>Choose the valve to communicate with</source>
@@ -2722,6 +2902,10 @@ Ano načte a záznam zařadí do fronty; Ne nenačte nic.</translation>
             <translation>Hodnota</translation>
         </message>
         <message>
+            <source>Search: index, name, type or value</source>
+            <translation>Hledat: index, název, typ nebo hodnota</translation>
+        </message>
+        <message>
             <source>Read all</source>
             <translation>Číst vše</translation>
         </message>
@@ -2810,6 +2994,13 @@ Ano načte a záznam zařadí do fronty; Ne nenačte nic.</translation>
         <message>
             <source>Cancel</source>
             <translation>Zrušit</translation>
+        </message>
+    </context>
+    <context>
+        <name>PagedPrint</name>
+        <message>
+            <source>Page {0} of {1}</source>
+            <translation>Strana {0} z {1}</translation>
         </message>
     </context>
     <context>
@@ -3173,8 +3364,28 @@ Ano načte a záznam zařadí do fronty; Ne nenačte nic.</translation>
     <context>
         <name>Record</name>
         <message>
+            <source>serial number {0}</source>
+            <translation>výrobní číslo {0}</translation>
+        </message>
+        <message>
+            <source>PRM9 parameter record</source>
+            <translation>Protokol parametrů PRM9</translation>
+        </message>
+        <message>
             <source>untitled</source>
             <translation>nepojmenovaná</translation>
+        </message>
+        <message>
+            <source>untitled (the values are not saved in a file)</source>
+            <translation>nepojmenovaná (hodnoty nejsou uloženy v žádném souboru)</translation>
+        </message>
+        <message>
+            <source>{0} (changed, not saved: the file holds another valve type)</source>
+            <translation>{0} (změněno, neuloženo: soubor obsahuje jiný typ ventilu)</translation>
+        </message>
+        <message>
+            <source>{0} (changed, not saved: the values marked {1} differ from the file)</source>
+            <translation>{0} (změněno, neuloženo: hodnoty označené {1} se liší od souboru)</translation>
         </message>
         <message>
             <source>Type key</source>
@@ -3215,6 +3426,18 @@ Ano načte a záznam zařadí do fronty; Ne nenačte nic.</translation>
         <message>
             <source>Unit</source>
             <translation>Jednotka</translation>
+        </message>
+        <message>
+            <source>Date:</source>
+            <translation>Datum:</translation>
+        </message>
+        <message>
+            <source>Name:</source>
+            <translation>Jméno:</translation>
+        </message>
+        <message>
+            <source>Signature:</source>
+            <translation>Podpis:</translation>
         </message>
     </context>
     <context>
@@ -3395,6 +3618,14 @@ Ano načte a záznam zařadí do fronty; Ne nenačte nic.</translation>
             <translation>Znovu přizpůsobit měřítko kanálu jeho datům</translation>
         </message>
         <message>
+            <source>at stop:</source>
+            <translation>při zastavení:</translation>
+        </message>
+        <message>
+            <source>The last value recorded before Stop; the valve may hold another now.</source>
+            <translation>Poslední hodnota zaznamenaná před zastavením; ventil už může mít jinou.</translation>
+        </message>
+        <message>
             <source>Time from trigger [ms]</source>
             <translation>Čas od spuštění [ms]</translation>
         </message>
@@ -3416,7 +3647,7 @@ Ano načte a záznam zařadí do fronty; Ne nenačte nic.</translation>
         </message>
         <message>
             <source>live:</source>
-            <translation>živě:</translation>
+            <translation>aktuálně:</translation>
         </message>
     </context>
     <context>
@@ -3431,7 +3662,7 @@ Ano načte a záznam zařadí do fronty; Ne nenačte nic.</translation>
         </message>
         <message>
             <source>Single capture complete. Resume arms the trigger again.</source>
-            <translation>Jednorázový záznam dokončen. Pokračovat znovu aktivuje spouštění.</translation>
+            <translation>Jednorázový záznam dokončen. Tlačítko Pokračovat znovu aktivuje spouštění.</translation>
         </message>
         <message>
             <source>Paused: zoom and pan with the mouse; recording continues.</source>
@@ -3443,7 +3674,7 @@ Ano načte a záznam zařadí do fronty; Ne nenačte nic.</translation>
         </message>
         <message>
             <source>Recording at {0} Hz.</source>
-            <translation>Záznam s frekvencí {0} Hz.</translation>
+            <translation>Záznam se vzorkovací frekvencí {0} Hz.</translation>
         </message>
         <message>
             <source>Recording at {0} Hz of the {1} Hz asked for: {2} samples lost on the link.</source>
@@ -3840,6 +4071,10 @@ Ano načte a záznam zařadí do fronty; Ne nenačte nic.</translation>
             <translation>proložená přímka</translation>
         </message>
         <message>
+            <source>{0} · serial number {1}</source>
+            <translation>{0} · výrobní číslo {1}</translation>
+        </message>
+        <message>
             <source>Type key</source>
             <translation>Objednací kód</translation>
         </message>
@@ -3872,6 +4107,10 @@ Ano načte a záznam zařadí do fronty; Ne nenačte nic.</translation>
             <translation>Omezeno spojením</translation>
         </message>
         <message>
+            <source>Parameter set</source>
+            <translation>Sada parametrů</translation>
+        </message>
+        <message>
             <source>PRM9 test report</source>
             <translation>Protokol o zkoušce PRM9</translation>
         </message>
@@ -3886,10 +4125,6 @@ Ano načte a záznam zařadí do fronty; Ne nenačte nic.</translation>
         <message>
             <source>Limit</source>
             <translation>Mez</translation>
-        </message>
-        <message>
-            <source>Parameter set (raw values)</source>
-            <translation>Sada parametrů (surové hodnoty)</translation>
         </message>
         <message>
             <source>flow characteristic: %1</source>
@@ -4139,6 +4374,10 @@ Zajistěte, aby to hydraulika bezpečně snesla. Tlačítko Stop test kdykoli uk
     </context>
     <context>
         <name>ValveControl</name>
+        <message>
+            <source>it is operational on CANopen but not enabled yet (device state {0}). Press Enable (control word 08h → 09h → 0Bh → 0Fh).</source>
+            <translation>na sběrnici CANopen je ve stavu operational, ale ještě není uvolněn (stav zařízení {0}). Stiskněte „Uvolnit“ (řídicí slovo 08h → 09h → 0Bh → 0Fh).</translation>
+        </message>
         <message>
             <source>no valve is connected.</source>
             <translation>není připojen žádný ventil.</translation>
@@ -4531,6 +4770,18 @@ Zajistěte, aby to hydraulika bezpečně snesla. Tlačítko Stop test kdykoli uk
             <translation>Online: dokument a ventil se shodují</translation>
         </message>
         <message>
+            <source>Another valve</source>
+            <translation>Jiný ventil</translation>
+        </message>
+        <message>
+            <source>The document was read from valve {0}; you are online with valve {1} (serial numbers). Continue with this document on valve {1}?
+
+Yes compares the two as usual (nothing is written unasked); No goes offline.</source>
+            <translation>Dokument byl načten z ventilu {0}; v režimu online jste s ventilem {1} (výrobní čísla). Pokračovat s tímto dokumentem na ventilu {1}?
+
+Ano je porovná jako obvykle (bez dotazu se nic nezapíše); Ne přejde do režimu offline.</translation>
+        </message>
+        <message>
             <source>Values read from the valve</source>
             <translation>Hodnoty načtené z ventilu</translation>
         </message>
@@ -4543,12 +4794,24 @@ Zajistěte, aby to hydraulika bezpečně snesla. Tlačítko Stop test kdykoli uk
             <translation>Ventil hlásí neznámý typový klíč: {0}</translation>
         </message>
         <message>
+            <source>Storing the parameters in the valve…</source>
+            <translation>Ukládání parametrů do paměti ventilu…</translation>
+        </message>
+        <message>
             <source>Downloading the parameters from the valve…</source>
             <translation>Stahování parametrů z ventilu…</translation>
         </message>
         <message>
             <source>Set every parameter of the document to the factory default?</source>
             <translation>Nastavit všechny parametry dokumentu na tovární hodnoty?</translation>
+        </message>
+        <message>
+            <source>The valve's parameters are in the document; File → Save backup copy… keeps a copy of them</source>
+            <translation>Parametry ventilu jsou v dokumentu; Soubor → Uložit záložní kopii… z nich uloží kopii</translation>
+        </message>
+        <message>
+            <source>The valve stored its parameters at {0}</source>
+            <translation>Ventil uložil své parametry v {0}</translation>
         </message>
         <message>
             <source>{0} kbit/s</source>
@@ -4581,10 +4844,6 @@ Zajistěte, aby to hydraulika bezpečně snesla. Tlačítko Stop test kdykoli uk
         <message>
             <source>The valve restarted</source>
             <translation>Ventil byl restartován</translation>
-        </message>
-        <message>
-            <source>The valve stored its parameters</source>
-            <translation>Ventil uložil své parametry</translation>
         </message>
         <message>
             <source>Factory values restored; the valve's previous parameters are in {0}</source>

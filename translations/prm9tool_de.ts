@@ -582,7 +582,7 @@ Die letzte Aktion wurde womöglich nicht vollständig ausgeführt. Speichern Sie
         </message>
         <message>
             <source>The node-ID switch is not at 0: the switch sets the node ID.</source>
-            <translation>Der Node-ID-Schalter steht nicht auf 0: der Schalter legt die Node-ID fest.</translation>
+            <translation>Der Node-ID-Schalter steht nicht auf 0: Der Schalter legt die Node-ID fest.</translation>
         </message>
         <message>
             <source>This valve type has no CANopen interface (no -CA in the type key).</source>
@@ -590,7 +590,7 @@ Die letzte Aktion wurde womöglich nicht vollständig ausgeführt. Speichern Sie
         </message>
         <message>
             <source>Offline: the switch positions are unknown. Settings changed here go into the document; upload it to the valve and restart the valve.</source>
-            <translation>Offline: die Schalterstellungen sind unbekannt. Hier geänderte Einstellungen gehen in das Dokument; laden Sie es in das Ventil und starten Sie das Ventil neu.</translation>
+            <translation>Offline: Die Schalterstellungen sind unbekannt. Hier geänderte Einstellungen gehen in das Dokument; laden Sie es in das Ventil und starten Sie das Ventil neu.</translation>
         </message>
         <message>
             <source>Reading the switch positions from the valve …</source>
@@ -734,6 +734,10 @@ Die letzte Aktion wurde womöglich nicht vollständig ausgeführt. Speichern Sie
             <translation>das Ventil hat den Start nicht abgeschlossen</translation>
         </message>
         <message>
+            <source>flow characteristic not measured: this valve has no object for {0} over this link (measure it over USB)</source>
+            <translation>Durchflusskennlinie nicht gemessen: Dieses Ventil hat über diese Verbindung kein Objekt für {0} (über USB messen)</translation>
+        </message>
+        <message>
             <source>the flow characteristic is measured on E04 valves (with an actuator)</source>
             <translation>die Durchflusskennlinie wird an E04-Ventilen (mit Stellglied) gemessen</translation>
         </message>
@@ -747,7 +751,7 @@ Die letzte Aktion wurde womöglich nicht vollständig ausgeführt. Speichern Sie
         </message>
         <message>
             <source>the process controller's Kp is 0: the spool would not move</source>
-            <translation>Kp des Prozessreglers ist 0: der Schieber würde sich nicht bewegen</translation>
+            <translation>Kp des Prozessreglers ist 0: Der Schieber würde sich nicht bewegen</translation>
         </message>
         <message>
             <source>this valve has no object for {0} on this link (their addresses are this project's, not the manual's): the tuning cannot change them here; nothing was changed — tune these over USB</source>
@@ -798,7 +802,7 @@ Die letzte Aktion wurde womöglich nicht vollständig ausgeführt. Speichern Sie
         </message>
         <message>
             <source>NMT stop: only NMT is answered</source>
-            <translation>NMT Stopp: nur NMT wird beantwortet</translation>
+            <translation>NMT Stopp: Nur NMT wird beantwortet</translation>
         </message>
         <message>
             <source>The valve follows its setpoint (DEVICE_MODE_ACTIVE).</source>
@@ -844,11 +848,11 @@ Die letzte Aktion wurde womöglich nicht vollständig ausgeführt. Speichern Sie
         </message>
         <message>
             <source>Basic level</source>
-            <translation>Basis-Ebene</translation>
+            <translation>Basisstufe</translation>
         </message>
         <message>
             <source>Expert level</source>
-            <translation>Experten-Ebene</translation>
+            <translation>Expertenstufe</translation>
         </message>
         <message>
             <source>Block:</source>
@@ -856,19 +860,56 @@ Die letzte Aktion wurde womöglich nicht vollständig ausgeführt. Speichern Sie
         </message>
         <message>
             <source>Access level:</source>
-            <translation>Zugriffsebene:</translation>
+            <translation>Berechtigungsstufe:</translation>
         </message>
         <message>
-            <source>Take every shown value from {0}</source>
-            <translation>Alle angezeigten Werte von {0} nehmen</translation>
+            <source>Tick every shown value of {0}</source>
+            <translation>Alle angezeigten Werte von „{0}“ ankreuzen</translation>
         </message>
         <message>
-            <source>Apply: each side takes the chosen values</source>
-            <translation>Übernehmen: jede Seite erhält die gewählten Werte</translation>
+            <source>Close</source>
+            <translation>Schließen</translation>
+        </message>
+        <message numerus="yes">
+            <source>Write %n ticked value(s) into the valve</source>
+            <translation>
+                <numerusform>%n angekreuzten Wert in das Ventil schreiben</numerusform>
+                <numerusform>%n angekreuzte Werte in das Ventil schreiben</numerusform>
+            </translation>
+        </message>
+        <message numerus="yes">
+            <source>Take %n ticked value(s) into the document</source>
+            <translation>
+                <numerusform>%n angekreuzten Wert in das Dokument übernehmen</numerusform>
+                <numerusform>%n angekreuzte Werte in das Dokument übernehmen</numerusform>
+            </translation>
+        </message>
+        <message numerus="yes">
+            <source>Copy %n ticked value(s) into “{0}”</source>
+            <translation>
+                <numerusform>%n angekreuzten Wert nach „{0}“ kopieren</numerusform>
+                <numerusform>%n angekreuzte Werte nach „{0}“ kopieren</numerusform>
+            </translation>
         </message>
         <message>
-            <source>Apply the chosen values to {0}</source>
-            <translation>Gewählte Werte übernehmen in: {0}</translation>
+            <source>Every row starts with the valve's value ticked. Tick the document's value where the document is right, then press Apply: the document takes the ticked valve values and the valve the ticked document values.</source>
+            <translation>In jeder Zeile ist zunächst der Wert des Ventils angekreuzt. Kreuzen Sie den Wert des Dokuments an, wo das Dokument richtig ist, und drücken Sie dann „Übernehmen“: Das Dokument erhält die angekreuzten Werte des Ventils, das Ventil die angekreuzten Werte des Dokuments.</translation>
+        </message>
+        <message>
+            <source>Tick the values to take, in either column; then take them into the document, or write them into the valve (online with this valve).</source>
+            <translation>Kreuzen Sie die gewünschten Werte in einer der beiden Spalten an; übernehmen Sie sie dann in das Dokument oder schreiben Sie sie in das Ventil (online mit diesem Ventil).</translation>
+        </message>
+        <message>
+            <source>Shown for comparison only.</source>
+            <translation>Nur zum Vergleich angezeigt.</translation>
+        </message>
+        <message>
+            <source>Apply: each side takes the ticked values</source>
+            <translation>Übernehmen: Jede Seite erhält die angekreuzten Werte</translation>
+        </message>
+        <message>
+            <source>Tick values in the column “{0}” first</source>
+            <translation>Kreuzen Sie zuerst Werte in der Spalte „{0}“ an</translation>
         </message>
         <message numerus="yes">
             <source>%n parameter(s) differ</source>
@@ -876,6 +917,18 @@ Die letzte Aktion wurde womöglich nicht vollständig ausgeführt. Speichern Sie
                 <numerusform>%n Parameter unterscheidet sich</numerusform>
                 <numerusform>%n Parameter unterscheiden sich</numerusform>
             </translation>
+        </message>
+        <message>
+            <source>To write values into the valve: tick them in the column “{0}”, then press the button below.</source>
+            <translation>Werte in das Ventil schreiben: in der Spalte „{0}“ ankreuzen, dann die Schaltfläche unten drücken.</translation>
+        </message>
+        <message>
+            <source>To take values into the document: tick them in the column “{0}”, then press the button below.</source>
+            <translation>Werte in das Dokument übernehmen: in der Spalte „{0}“ ankreuzen, dann die Schaltfläche unten drücken.</translation>
+        </message>
+        <message>
+            <source>To copy values into “{0}”: tick them in the column “{1}”, then press the button below.</source>
+            <translation>Werte nach „{0}“ kopieren: in der Spalte „{1}“ ankreuzen, dann die Schaltfläche unten drücken.</translation>
         </message>
         <message numerus="yes">
             <source>%n parameter(s) only on one side</source>
@@ -975,6 +1028,13 @@ Die letzte Aktion wurde womöglich nicht vollständig ausgeführt. Speichern Sie
         <message>
             <source>Parameters restored from the history</source>
             <translation>Parameter aus dem Verlauf wiederhergestellt</translation>
+        </message>
+        <message numerus="yes">
+            <source>%n value(s) taken from the history</source>
+            <translation>
+                <numerusform>%n Wert aus dem Verlauf übernommen</numerusform>
+                <numerusform>%n Werte aus dem Verlauf übernommen</numerusform>
+            </translation>
         </message>
     </context>
     <context>
@@ -1521,7 +1581,7 @@ Die letzte Aktion wurde womöglich nicht vollständig ausgeführt. Speichern Sie
         </message>
         <message>
             <source>The valve reads its rotary switches at power-up only: restart it (Valve → Restart valve) for a new position to apply. The setpoint input counts only while the valve takes its setpoint from the analog input (no CANopen, no setpoint generator).</source>
-            <translation>Das Ventil liest seine Drehschalter nur beim Einschalten: starten Sie es neu (Ventil → Ventil neu starten), damit eine neue Stellung gilt. Der Sollwerteingang zählt nur, solange das Ventil seinen Sollwert vom Analogeingang nimmt (kein CANopen, kein Sollwertgenerator).</translation>
+            <translation>Das Ventil liest seine Drehschalter nur beim Einschalten: Starten Sie es neu (Ventil → Ventil neu starten), damit eine neue Stellung gilt. Der Sollwerteingang zählt nur, solange das Ventil seinen Sollwert vom Analogeingang nimmt (kein CANopen, kein Sollwertgenerator).</translation>
         </message>
         <message>
             <source>node ID and bit rate by software (NODEID, BITRATE)</source>
@@ -1610,19 +1670,19 @@ Die letzte Aktion wurde womöglich nicht vollständig ausgeführt. Speichern Sie
         </message>
         <message>
             <source>node {0} is NMT {1}: the valve takes RPDOs only when OPERATIONAL — start it first (Valve status → Commissioning: NMT start)</source>
-            <translation>Knoten {0} ist NMT {1}: das Ventil nimmt RPDOs nur im Zustand OPERATIONAL an — starten Sie ihn zuerst (Ventilstatus → Inbetriebnahme: NMT Start)</translation>
+            <translation>Knoten {0} ist NMT {1}: Das Ventil nimmt RPDOs nur im Zustand OPERATIONAL an — starten Sie ihn zuerst (Ventilstatus → Inbetriebnahme: NMT Start)</translation>
         </message>
         <message>
             <source>node {0} is in {1}: the valve applies a setpoint from the bus only in DEVICE_MODE_ACTIVE — enable it first (Valve status → Commissioning: control word 08h→09h→0Bh→0Fh)</source>
-            <translation>Knoten {0} ist in {1}: das Ventil übernimmt einen Sollwert vom Bus nur in DEVICE_MODE_ACTIVE — geben Sie es zuerst frei (Ventilstatus → Inbetriebnahme: Steuerwort 08h→09h→0Bh→0Fh)</translation>
+            <translation>Knoten {0} ist in {1}: Das Ventil übernimmt einen Sollwert vom Bus nur in DEVICE_MODE_ACTIVE — geben Sie es zuerst frei (Ventilstatus → Inbetriebnahme: Steuerwort 08h→09h→0Bh→0Fh)</translation>
         </message>
         <message>
             <source>node {0}: RPDO1 is switched off (0x1400/1 = {1}, bit 31): clear bit 31 to drive the setpoint from prm9tool</source>
-            <translation>Knoten {0}: RPDO1 ist ausgeschaltet (0x1400/1 = {1}, Bit 31): löschen Sie Bit 31, um den Sollwert aus prm9tool vorzugeben</translation>
+            <translation>Knoten {0}: RPDO1 ist ausgeschaltet (0x1400/1 = {1}, Bit 31): Löschen Sie Bit 31, um den Sollwert aus prm9tool vorzugeben</translation>
         </message>
         <message>
             <source>node {0}: RPDO1 is synchronous (0x1400/2 = {1}), so the setpoint would wait for a SYNC: set 0x1400/2 to 255 (the delivery state)</source>
-            <translation>Knoten {0}: RPDO1 ist synchron (0x1400/2 = {1}), der Sollwert würde auf ein SYNC warten: setzen Sie 0x1400/2 auf 255 (Auslieferungszustand)</translation>
+            <translation>Knoten {0}: RPDO1 ist synchron (0x1400/2 = {1}), der Sollwert würde auf ein SYNC warten: Setzen Sie 0x1400/2 auf 255 (Auslieferungszustand)</translation>
         </message>
         <message>
             <source>node {0}: RPDO1 maps {1}, not the setpoint 0x6300/0x6380</source>
@@ -1630,7 +1690,7 @@ Die letzte Aktion wurde womöglich nicht vollständig ausgeführt. Speichern Sie
         </message>
         <message>
             <source>The valve restarted at another address or bit rate: go online with it there.</source>
-            <translation>Das Ventil ist mit anderer Adresse oder Bitrate neu gestartet: gehen Sie dort mit ihm online.</translation>
+            <translation>Das Ventil ist mit anderer Adresse oder Bitrate neu gestartet: Gehen Sie dort mit ihm online.</translation>
         </message>
         <message>
             <source>The link could not keep the test's sample rate.</source>
@@ -1688,6 +1748,10 @@ Die letzte Aktion wurde womöglich nicht vollständig ausgeführt. Speichern Sie
             <translation>Öffnen von {0} abgebrochen</translation>
         </message>
         <message>
+            <source>Backup copy saved as {0}; {1} stays the open document</source>
+            <translation>Sicherungskopie als {0} gespeichert; geöffnet bleibt {1}</translation>
+        </message>
+        <message>
             <source>Still reading {0}</source>
             <translation>{0} wird noch gelesen</translation>
         </message>
@@ -1729,6 +1793,17 @@ Die letzte Aktion wurde womöglich nicht vollständig ausgeführt. Speichern Sie
         <message>
             <source>Cannot save “{0}”</source>
             <translation>„{0}“ kann nicht gespeichert werden</translation>
+        </message>
+        <message numerus="yes">
+            <source>(marked: %n rule(s) broken)</source>
+            <translation>
+                <numerusform>(gekennzeichnet: %n Regel verletzt)</numerusform>
+                <numerusform>(gekennzeichnet: %n Regeln verletzt)</numerusform>
+            </translation>
+        </message>
+        <message>
+            <source>Save backup copy</source>
+            <translation>Sicherungskopie speichern</translation>
         </message>
         <message>
             <source>Saved {0}</source>
@@ -2049,12 +2124,95 @@ Ja lädt hoch und stellt den Eintrag in die Warteschlange; Nein lädt nichts hoc
             <translation>Typenschlüssel</translation>
         </message>
         <message>
+            <source>What was done</source>
+            <translation>Was getan wurde</translation>
+        </message>
+        <message>
             <source>Firmware</source>
             <translation>Firmware</translation>
         </message>
         <message>
             <source>User, station, link</source>
             <translation>Benutzer, Station, Verbindung</translation>
+        </message>
+        <message numerus="yes">
+            <source>%n more</source>
+            <translation>
+                <numerusform>%n weiterer</numerusform>
+                <numerusform>%n weitere</numerusform>
+            </translation>
+        </message>
+        <message>
+            <source>Read from the valve</source>
+            <translation>Aus dem Ventil gelesen</translation>
+        </message>
+        <message>
+            <source>Written, verified and stored</source>
+            <translation>Geschrieben, geprüft und gespeichert</translation>
+        </message>
+        <message>
+            <source>Written by --batch</source>
+            <translation>Mit --batch geschrieben</translation>
+        </message>
+        <message>
+            <source>Stored (Valve → Store in valve)</source>
+            <translation>Gespeichert (Ventil → Im Ventil speichern)</translation>
+        </message>
+        <message>
+            <source>Values changed online, stored</source>
+            <translation>Online geänderte Werte gespeichert</translation>
+        </message>
+        <message>
+            <source>Backup of the valve's values</source>
+            <translation>Sicherung der Werte des Ventils</translation>
+        </message>
+        <message>
+            <source>Factory values restored</source>
+            <translation>Werkseinstellungen wiederhergestellt</translation>
+        </message>
+        <message>
+            <source>Test report</source>
+            <translation>Prüfprotokoll</translation>
+        </message>
+        <message>
+            <source>Values from a compared file, written online</source>
+            <translation>Werte aus einer verglichenen Datei, online geschrieben</translation>
+        </message>
+        <message>
+            <source>Values from the history, written online</source>
+            <translation>Werte aus dem Verlauf, online geschrieben</translation>
+        </message>
+        <message>
+            <source>Tuning accepted, written online</source>
+            <translation>Einstellung übernommen, online geschrieben</translation>
+        </message>
+        <message>
+            <source>going online</source>
+            <translation>beim Online-Gehen</translation>
+        </message>
+        <message>
+            <source>Valve → Download</source>
+            <translation>Ventil → Herunterladen</translation>
+        </message>
+        <message>
+            <source>Compare with valve</source>
+            <translation>Mit Ventil vergleichen</translation>
+        </message>
+        <message>
+            <source>Valve → Upload</source>
+            <translation>Ventil → Hochladen</translation>
+        </message>
+        <message>
+            <source>chosen in the compare view</source>
+            <translation>in der Vergleichsansicht gewählt</translation>
+        </message>
+        <message>
+            <source>chosen per parameter going online</source>
+            <translation>beim Online-Gehen je Parameter gewählt</translation>
+        </message>
+        <message>
+            <source>a history record restored</source>
+            <translation>ein Eintrag aus dem Verlauf wiederhergestellt</translation>
         </message>
     </context>
     <context>
@@ -2120,7 +2278,7 @@ Ja lädt hoch und stellt den Eintrag in die Warteschlange; Nein lädt nichts hoc
         </message>
         <message>
             <source>Go online with valve {0} first: a record is restored only into the valve it was recorded from.</source>
-            <translation>Zuerst mit Ventil {0} online gehen: ein Eintrag wird nur in das Ventil zurückgeschrieben, von dem er stammt.</translation>
+            <translation>Zuerst mit Ventil {0} online gehen: Ein Eintrag wird nur in das Ventil zurückgeschrieben, von dem er stammt.</translation>
         </message>
         <message>
             <source>Export record</source>
@@ -2322,6 +2480,14 @@ Ja lädt hoch und stellt den Eintrag in die Warteschlange; Nein lädt nichts hoc
             <translation>Parameter unter einem anderen Namen speichern</translation>
         </message>
         <message>
+            <source>Save bac&amp;kup copy…</source>
+            <translation>Sicherungs&amp;kopie speichern…</translation>
+        </message>
+        <message>
+            <source>Save a copy of the parameters to another file; you keep working on this one</source>
+            <translation>Eine Kopie der Parameter in eine andere Datei speichern; Sie arbeiten in dieser weiter</translation>
+        </message>
+        <message>
             <source>&amp;Undo</source>
             <translation>&amp;Rückgängig</translation>
         </message>
@@ -2351,7 +2517,7 @@ Ja lädt hoch und stellt den Eintrag in die Warteschlange; Nein lädt nichts hoc
         </message>
         <message>
             <source>Read, and at Expert level write, any object of the valve</source>
-            <translation>Jedes Objekt des Ventils lesen und auf Expertenebene schreiben</translation>
+            <translation>Jedes Objekt des Ventils lesen und, in der Expertenstufe, schreiben</translation>
         </message>
         <message>
             <source>Export &amp;DCF…</source>
@@ -2460,6 +2626,14 @@ Ja lädt hoch und stellt den Eintrag in die Warteschlange; Nein lädt nichts hoc
         <message>
             <source>Read the parameters of the valve into the program</source>
             <translation>Parameter des Ventils in das Programm lesen</translation>
+        </message>
+        <message>
+            <source>St&amp;ore in valve</source>
+            <translation>Im Ventil s&amp;peichern</translation>
+        </message>
+        <message>
+            <source>Make the values the valve works with permanent: they stay after a restart</source>
+            <translation>Die Werte, mit denen das Ventil arbeitet, dauerhaft speichern: Sie bleiben nach einem Neustart erhalten</translation>
         </message>
         <message>
             <source>Restore &amp;factory values…</source>
@@ -2710,6 +2884,10 @@ Ja lädt hoch und stellt den Eintrag in die Warteschlange; Nein lädt nichts hoc
             <translation>Wert</translation>
         </message>
         <message>
+            <source>Search: index, name, type or value</source>
+            <translation>Suchen: Index, Name, Typ oder Wert</translation>
+        </message>
+        <message>
             <source>Read all</source>
             <translation>Alle lesen</translation>
         </message>
@@ -2719,7 +2897,7 @@ Ja lädt hoch und stellt den Eintrag in die Warteschlange; Nein lädt nichts hoc
         </message>
         <message>
             <source>Reading only: writing needs the Expert level.</source>
-            <translation>Nur lesen: Schreiben erfordert die Expertenebene.</translation>
+            <translation>Nur lesen: Schreiben erfordert die Expertenstufe.</translation>
         </message>
         <message>
             <source>— (no entry)</source>
@@ -2765,7 +2943,7 @@ Ja lädt hoch und stellt den Eintrag in die Warteschlange; Nein lädt nichts hoc
         </message>
         <message>
             <source>The valve is of another variant: only its values can be taken.</source>
-            <translation>Das Ventil ist eine andere Variante: nur seine Werte können übernommen werden.</translation>
+            <translation>Das Ventil ist eine andere Variante: Nur seine Werte können übernommen werden.</translation>
         </message>
         <message>
             <source>Cancel stays offline; the document is not changed and nothing is written.</source>
@@ -2797,6 +2975,13 @@ Ja lädt hoch und stellt den Eintrag in die Warteschlange; Nein lädt nichts hoc
         <message>
             <source>Cancel</source>
             <translation>Abbrechen</translation>
+        </message>
+    </context>
+    <context>
+        <name>PagedPrint</name>
+        <message>
+            <source>Page {0} of {1}</source>
+            <translation>Seite {0} von {1}</translation>
         </message>
     </context>
     <context>
@@ -2999,7 +3184,7 @@ Ja lädt hoch und stellt den Eintrag in die Warteschlange; Nein lädt nichts hoc
         </message>
         <message>
             <source>no 'type_key = ...' entry: the header is incomplete</source>
-            <translation>kein Eintrag 'type_key = ...': der Kopf ist unvollständig</translation>
+            <translation>kein Eintrag 'type_key = ...': Der Kopf ist unvollständig</translation>
         </message>
         <message>
             <source>serial {0} must be a whole number {1} … {2}</source>
@@ -3051,7 +3236,7 @@ Ja lädt hoch und stellt den Eintrag in die Warteschlange; Nein lädt nichts hoc
         </message>
         <message>
             <source>byte 0x{0} is not UTF-8 text: the file is corrupt</source>
-            <translation>Byte 0x{0} ist kein UTF-8-Text: die Datei ist beschädigt</translation>
+            <translation>Byte 0x{0} ist kein UTF-8-Text: Die Datei ist beschädigt</translation>
         </message>
         <message>
             <source>control character U+{0}: binary data, the file is corrupt</source>
@@ -3079,7 +3264,7 @@ Ja lädt hoch und stellt den Eintrag in die Warteschlange; Nein lädt nichts hoc
         </message>
         <message>
             <source>no 'checksum = ...' line at the end: the file is truncated (a file written by hand must end with one, e.g. 'checksum = crc32:00000000')</source>
-            <translation>keine Zeile 'checksum = ...' am Ende: die Datei ist abgeschnitten (eine von Hand geschriebene Datei muss mit einer solchen Zeile enden, z. B. 'checksum = crc32:00000000')</translation>
+            <translation>keine Zeile 'checksum = ...' am Ende: Die Datei ist abgeschnitten (eine von Hand geschriebene Datei muss mit einer solchen Zeile enden, z. B. 'checksum = crc32:00000000')</translation>
         </message>
         <message>
             <source>checksum {0} is damaged (expected crc32: and 8 hex digits)</source>
@@ -3087,7 +3272,7 @@ Ja lädt hoch und stellt den Eintrag in die Warteschlange; Nein lädt nichts hoc
         </message>
         <message>
             <source>checksum does not match: the file was changed outside prm9tool (edited by hand?); saving it from prm9tool writes a new checksum</source>
-            <translation>Prüfsumme stimmt nicht: die Datei wurde außerhalb von prm9tool geändert (von Hand bearbeitet?); Speichern aus prm9tool schreibt eine neue Prüfsumme</translation>
+            <translation>Prüfsumme stimmt nicht: Die Datei wurde außerhalb von prm9tool geändert (von Hand bearbeitet?); Speichern aus prm9tool schreibt eine neue Prüfsumme</translation>
         </message>
         <message>
             <source>cannot read the file: {0}</source>
@@ -3134,7 +3319,7 @@ Ja lädt hoch und stellt den Eintrag in die Warteschlange; Nein lädt nichts hoc
         </message>
         <message>
             <source>Basic access level: one time sets all ramps. Expert level sets each ramp on its own.</source>
-            <translation>Basisstufe: eine Zeit stellt alle Rampen ein. Die Expertenstufe stellt jede Rampe einzeln ein.</translation>
+            <translation>Basisstufe: Eine Zeit stellt alle Rampen ein. Die Expertenstufe stellt jede Rampe einzeln ein.</translation>
         </message>
         <message>
             <source>Each time is for a 100 % step; a 50 % step takes half as long.</source>
@@ -3160,8 +3345,28 @@ Ja lädt hoch und stellt den Eintrag in die Warteschlange; Nein lädt nichts hoc
     <context>
         <name>Record</name>
         <message>
+            <source>serial number {0}</source>
+            <translation>Seriennummer {0}</translation>
+        </message>
+        <message>
+            <source>PRM9 parameter record</source>
+            <translation>PRM9-Parameterprotokoll</translation>
+        </message>
+        <message>
             <source>untitled</source>
             <translation>unbenannt</translation>
+        </message>
+        <message>
+            <source>untitled (the values are not saved in a file)</source>
+            <translation>unbenannt (die Werte sind in keiner Datei gespeichert)</translation>
+        </message>
+        <message>
+            <source>{0} (changed, not saved: the file holds another valve type)</source>
+            <translation>{0} (geändert, nicht gespeichert: Die Datei enthält einen anderen Ventiltyp)</translation>
+        </message>
+        <message>
+            <source>{0} (changed, not saved: the values marked {1} differ from the file)</source>
+            <translation>{0} (geändert, nicht gespeichert: Die mit {1} markierten Werte weichen von der Datei ab)</translation>
         </message>
         <message>
             <source>Type key</source>
@@ -3202,6 +3407,18 @@ Ja lädt hoch und stellt den Eintrag in die Warteschlange; Nein lädt nichts hoc
         <message>
             <source>Unit</source>
             <translation>Einheit</translation>
+        </message>
+        <message>
+            <source>Date:</source>
+            <translation>Datum:</translation>
+        </message>
+        <message>
+            <source>Name:</source>
+            <translation>Name:</translation>
+        </message>
+        <message>
+            <source>Signature:</source>
+            <translation>Unterschrift:</translation>
         </message>
     </context>
     <context>
@@ -3382,6 +3599,14 @@ Ja lädt hoch und stellt den Eintrag in die Warteschlange; Nein lädt nichts hoc
             <translation>Diesen Kanal wieder an seine Daten anpassen</translation>
         </message>
         <message>
+            <source>at stop:</source>
+            <translation>bei Stopp:</translation>
+        </message>
+        <message>
+            <source>The last value recorded before Stop; the valve may hold another now.</source>
+            <translation>Der letzte vor „Stopp“ aufgezeichnete Wert; das Ventil kann inzwischen einen anderen haben.</translation>
+        </message>
+        <message>
             <source>Time from trigger [ms]</source>
             <translation>Zeit ab Trigger [ms]</translation>
         </message>
@@ -3442,15 +3667,15 @@ Ja lädt hoch und stellt den Eintrag in die Warteschlange; Nein lädt nichts hoc
         </message>
         <message>
             <source>The recording stopped: another operation (a tuning test…) took the stream.</source>
-            <translation>Die Aufzeichnung wurde beendet: ein anderer Vorgang (ein Tuning-Test…) hat den Datenstrom übernommen.</translation>
+            <translation>Die Aufzeichnung wurde beendet: Ein anderer Vorgang (ein Tuning-Test…) hat den Datenstrom übernommen.</translation>
         </message>
         <message>
             <source>The link dropped: the setpoint generator has stopped.</source>
-            <translation>Die Verbindung ist abgebrochen: der Sollwertgenerator wurde gestoppt.</translation>
+            <translation>Die Verbindung ist abgebrochen: Der Sollwertgenerator wurde gestoppt.</translation>
         </message>
         <message>
             <source>The setpoint generator has stopped: another operation (a tuning test, an upload…) drives the valve now.</source>
-            <translation>Der Sollwertgenerator wurde gestoppt: ein anderer Vorgang (ein Tuning-Test, ein Hochladen…) steuert jetzt das Ventil.</translation>
+            <translation>Der Sollwertgenerator wurde gestoppt: Ein anderer Vorgang (ein Tuning-Test, ein Hochladen…) steuert jetzt das Ventil.</translation>
         </message>
         <message>
             <source>The valve refused a value of the setpoint generator ({0}): the generator has stopped.</source>
@@ -3827,6 +4052,10 @@ Ja lädt hoch und stellt den Eintrag in die Warteschlange; Nein lädt nichts hoc
             <translation>Ausgleichsgerade</translation>
         </message>
         <message>
+            <source>{0} · serial number {1}</source>
+            <translation>{0} · Seriennummer {1}</translation>
+        </message>
+        <message>
             <source>Type key</source>
             <translation>Typschlüssel</translation>
         </message>
@@ -3859,6 +4088,10 @@ Ja lädt hoch und stellt den Eintrag in die Warteschlange; Nein lädt nichts hoc
             <translation>Durch die Verbindung begrenzt</translation>
         </message>
         <message>
+            <source>Parameter set</source>
+            <translation>Parametersatz</translation>
+        </message>
+        <message>
             <source>PRM9 test report</source>
             <translation>PRM9-Prüfbericht</translation>
         </message>
@@ -3873,10 +4106,6 @@ Ja lädt hoch und stellt den Eintrag in die Warteschlange; Nein lädt nichts hoc
         <message>
             <source>Limit</source>
             <translation>Grenze</translation>
-        </message>
-        <message>
-            <source>Parameter set (raw values)</source>
-            <translation>Parametersatz (Rohwerte)</translation>
         </message>
         <message>
             <source>flow characteristic: %1</source>
@@ -4127,6 +4356,10 @@ Stellen Sie sicher, dass die Hydraulik dafür sicher ist. Stopp beendet ihn jede
     <context>
         <name>ValveControl</name>
         <message>
+            <source>it is operational on CANopen but not enabled yet (device state {0}). Press Enable (control word 08h → 09h → 0Bh → 0Fh).</source>
+            <translation>es ist am CANopen-Bus operational, aber noch nicht freigegeben (Gerätezustand {0}). Drücken Sie „Freigeben“ (Steuerwort 08h → 09h → 0Bh → 0Fh).</translation>
+        </message>
+        <message>
             <source>no valve is connected.</source>
             <translation>kein Ventil ist verbunden.</translation>
         </message>
@@ -4353,7 +4586,7 @@ Stellen Sie sicher, dass die Hydraulik dafür sicher ist. Stopp beendet ihn jede
         </message>
         <message>
             <source>No status: the valve is offline.</source>
-            <translation>Kein Status: das Ventil ist offline.</translation>
+            <translation>Kein Status: Das Ventil ist offline.</translation>
         </message>
         <message>
             <source>white</source>
@@ -4444,13 +4677,13 @@ Stellen Sie sicher, dass die Hydraulik dafür sicher ist. Stopp beendet ihn jede
         </message>
         <message>
             <source>Expert values at Basic level</source>
-            <translation>Expertenwerte in der Stufe Basis</translation>
+            <translation>Expertenwerte in der Basisstufe</translation>
         </message>
         <message numerus="yes">
             <source>The document changes %n Expert-level value(s) of the valve ({0}), which the Basic access level cannot edit (controllers, linearizations, monitoring). Send them anyway?</source>
             <translation>
-                <numerusform>Das Dokument ändert %n Wert der Stufe Experte im Ventil ({0}), den die Zugriffsstufe Basis nicht bearbeiten kann (Regler, Linearisierungen, Überwachung). Trotzdem senden?</numerusform>
-                <numerusform>Das Dokument ändert %n Werte der Stufe Experte im Ventil ({0}), die die Zugriffsstufe Basis nicht bearbeiten kann (Regler, Linearisierungen, Überwachung). Trotzdem senden?</numerusform>
+                <numerusform>Das Dokument ändert %n Expertenwert des Ventils ({0}), den die Basisstufe nicht bearbeiten kann (Regler, Linearisierungen, Überwachung). Trotzdem senden?</numerusform>
+                <numerusform>Das Dokument ändert %n Expertenwerte des Ventils ({0}), die die Basisstufe nicht bearbeiten kann (Regler, Linearisierungen, Überwachung). Trotzdem senden?</numerusform>
             </translation>
         </message>
         <message>
@@ -4467,8 +4700,8 @@ Stellen Sie sicher, dass die Hydraulik dafür sicher ist. Stopp beendet ihn jede
         <message numerus="yes">
             <source>%n parameter(s) written, verified and stored again at {0}: the valve already held them</source>
             <translation>
-                <numerusform>%n Parameter um {0} erneut geschrieben, geprüft und gespeichert: das Ventil hatte ihn schon</numerusform>
-                <numerusform>%n Parameter um {0} erneut geschrieben, geprüft und gespeichert: das Ventil hatte sie schon</numerusform>
+                <numerusform>%n Parameter um {0} erneut geschrieben, geprüft und gespeichert: Das Ventil hatte ihn schon</numerusform>
+                <numerusform>%n Parameter um {0} erneut geschrieben, geprüft und gespeichert: Das Ventil hatte sie schon</numerusform>
             </translation>
         </message>
         <message>
@@ -4500,7 +4733,7 @@ Stellen Sie sicher, dass die Hydraulik dafür sicher ist. Stopp beendet ihn jede
         </message>
         <message>
             <source>Values changed online are active in the valve but not stored: a restart of the valve would undo them. Store them in the valve now?</source>
-            <translation>Online geänderte Werte sind im Ventil aktiv, aber nicht gespeichert: ein Neustart des Ventils würde sie rückgängig machen. Jetzt im Ventil speichern?</translation>
+            <translation>Online geänderte Werte sind im Ventil aktiv, aber nicht gespeichert: Ein Neustart des Ventils würde sie rückgängig machen. Jetzt im Ventil speichern?</translation>
         </message>
         <message>
             <source>Offline</source>
@@ -4515,6 +4748,18 @@ Stellen Sie sicher, dass die Hydraulik dafür sicher ist. Stopp beendet ihn jede
             <translation>Online: Dokument und Ventil stimmen überein</translation>
         </message>
         <message>
+            <source>Another valve</source>
+            <translation>Anderes Ventil</translation>
+        </message>
+        <message>
+            <source>The document was read from valve {0}; you are online with valve {1} (serial numbers). Continue with this document on valve {1}?
+
+Yes compares the two as usual (nothing is written unasked); No goes offline.</source>
+            <translation>Das Dokument wurde aus Ventil {0} gelesen; online sind Sie mit Ventil {1} (Seriennummern). Mit diesem Dokument an Ventil {1} weiterarbeiten?
+
+Ja vergleicht beide wie gewohnt (ohne Rückfrage wird nichts geschrieben); Nein geht offline.</translation>
+        </message>
+        <message>
             <source>Values read from the valve</source>
             <translation>Aus dem Ventil gelesene Werte</translation>
         </message>
@@ -4527,12 +4772,24 @@ Stellen Sie sicher, dass die Hydraulik dafür sicher ist. Stopp beendet ihn jede
             <translation>Das Ventil meldet einen unbekannten Typschlüssel: {0}</translation>
         </message>
         <message>
+            <source>Storing the parameters in the valve…</source>
+            <translation>Parameter werden im Ventil gespeichert…</translation>
+        </message>
+        <message>
             <source>Downloading the parameters from the valve…</source>
             <translation>Parameter werden aus dem Ventil heruntergeladen…</translation>
         </message>
         <message>
             <source>Set every parameter of the document to the factory default?</source>
             <translation>Alle Parameter des Dokuments auf die Werkseinstellung setzen?</translation>
+        </message>
+        <message>
+            <source>The valve's parameters are in the document; File → Save backup copy… keeps a copy of them</source>
+            <translation>Die Parameter des Ventils sind im Dokument; Datei → Sicherungskopie speichern… bewahrt eine Kopie davon auf</translation>
+        </message>
+        <message>
+            <source>The valve stored its parameters at {0}</source>
+            <translation>Das Ventil hat seine Parameter um {0} gespeichert</translation>
         </message>
         <message>
             <source>{0} kbit/s</source>
@@ -4567,10 +4824,6 @@ Stellen Sie sicher, dass die Hydraulik dafür sicher ist. Stopp beendet ihn jede
             <translation>Das Ventil wurde neu gestartet</translation>
         </message>
         <message>
-            <source>The valve stored its parameters</source>
-            <translation>Das Ventil hat seine Parameter gespeichert</translation>
-        </message>
-        <message>
             <source>Factory values restored; the valve's previous parameters are in {0}</source>
             <translation>Werkseinstellungen wiederhergestellt; die bisherigen Parameter des Ventils sind in {0}</translation>
         </message>
@@ -4586,7 +4839,7 @@ Stellen Sie sicher, dass die Hydraulik dafür sicher ist. Stopp beendet ihn jede
             <source>The connection to the valve was lost; prm9tool is offline now.
 Every value is kept in the document: save it, or go online again and send it.</source>
             <translation>Die Verbindung zum Ventil ist verloren; prm9tool ist jetzt offline.
-Alle Werte bleiben im Dokument erhalten: speichern Sie es oder gehen Sie wieder online und senden Sie es.</translation>
+Alle Werte bleiben im Dokument erhalten: Speichern Sie es oder gehen Sie wieder online und senden Sie es.</translation>
         </message>
         <message>
             <source>Backup of the valve's parameters saved: {0}</source>

@@ -48,6 +48,37 @@
                 <numerusform>%n shown</numerusform>
             </translation>
         </message>
+        <message numerus="yes">
+            <source>Write %n ticked value(s) into the valve</source>
+            <translation>
+                <numerusform>Write %n ticked value into the valve</numerusform>
+                <numerusform>Write %n ticked values into the valve</numerusform>
+            </translation>
+        </message>
+        <message numerus="yes">
+            <source>Take %n ticked value(s) into the document</source>
+            <translation>
+                <numerusform>Take %n ticked value into the document</numerusform>
+                <numerusform>Take %n ticked values into the document</numerusform>
+            </translation>
+        </message>
+        <message numerus="yes">
+            <source>Copy %n ticked value(s) into “{0}”</source>
+            <translation>
+                <numerusform>Copy %n ticked value into “{0}”</numerusform>
+                <numerusform>Copy %n ticked values into “{0}”</numerusform>
+            </translation>
+        </message>
+    </context>
+    <context>
+        <name>CompareWorkflow</name>
+        <message numerus="yes">
+            <source>%n value(s) taken from the history</source>
+            <translation>
+                <numerusform>%n value taken from the history</numerusform>
+                <numerusform>%n values taken from the history</numerusform>
+            </translation>
+        </message>
     </context>
     <context>
         <name>FileWorkflow</name>
@@ -56,6 +87,13 @@
             <translation>
                 <numerusform>“{0}” was opened; %n warning was found.</numerusform>
                 <numerusform>“{0}” was opened; %n warnings were found.</numerusform>
+            </translation>
+        </message>
+        <message numerus="yes">
+            <source>(marked: %n rule(s) broken)</source>
+            <translation>
+                <numerusform>(marked: %n rule broken)</numerusform>
+                <numerusform>(marked: %n rules broken)</numerusform>
             </translation>
         </message>
         <message numerus="yes">
@@ -70,6 +108,16 @@
             <translation>
                 <numerusform>%n more problem in the details.</numerusform>
                 <numerusform>%n more problems in the details.</numerusform>
+            </translation>
+        </message>
+    </context>
+    <context>
+        <name>HistoryTableModel</name>
+        <message numerus="yes">
+            <source>%n more</source>
+            <translation>
+                <numerusform>%n more</numerusform>
+                <numerusform>%n more</numerusform>
             </translation>
         </message>
     </context>

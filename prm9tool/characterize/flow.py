@@ -43,6 +43,24 @@ class FlowResult:
     offsets: dict[str, int]  # OFFSETPOS/OFFSETNEG that jump over the dead band (deviation)
 
 
+FLOW_PARAMETERS = ("CTRLMODE", "PRCKP", "PRCKI", "PRCKD", "OFFSETPOS")
+
+
+def flow_objects_missing(rig: Rig) -> str:
+    """Why the flow test cannot run on this valve ("" when it can): it sets the process
+    controller's gains, which a valve with only the manual's CANopen objects does not have."""
+    absent = [name for name in FLOW_PARAMETERS if name not in rig.read(list(FLOW_PARAMETERS))]
+    if not absent:
+        return ""
+    return str(
+        QT_TRANSLATE_NOOP(
+            "Characterize",
+            "flow characteristic not measured: this valve has no object for {0} over this "
+            "link (measure it over USB)",
+        )(", ".join(absent))
+    )
+
+
 def flow_test(
     rig: Rig, amplitude_pct: float = 40.0, centre_pct: float = 0.0, duration_s: float = 1.0
 ) -> FlowResult:
@@ -55,6 +73,9 @@ def flow_test(
                 "the flow characteristic is measured on E04 valves (with an actuator)",
             )()
         )
+    missing = flow_objects_missing(rig)
+    if missing:
+        raise Prm9Error(missing)
     present = rig.read(["CTRLMODE", "PRCKP"])
     if "PRCKP" not in present:  # a valve without this project's objects on this link (CAN)
         raise Prm9Error(

@@ -22,7 +22,7 @@ from prm9tool.analysis.profile import FIGURES, Limit, Profile
 from prm9tool.catalogue import CATALOGUE
 from prm9tool.catalogue.typekey import TypeKey
 from prm9tool.catalogue.variant import Config
-from prm9tool.characterize.flow import FlowResult, flow_test
+from prm9tool.characterize.flow import FlowResult, flow_objects_missing, flow_test
 from prm9tool.characterize.procedures import (
     STEP_PRE_S,
     BodeResult,
@@ -82,6 +82,7 @@ class Characterization:
     flow: FlowResult | None = None  # E04 in control mode 4
     figures: list[Figure] = field(default_factory=list)
     wall_s: float = 0.0
+    skipped: list[str] = field(default_factory=list)  # tests this valve cannot run, and why
 
     @property
     def passed(self) -> bool:
@@ -90,17 +91,18 @@ class Characterization:
 
     @property
     def notes(self) -> list[str]:
-        """What the link limited (a sweep cut at what its sample rate allows, samples lost)."""
+        """What the link limited (a sweep cut at what its sample rate allows, samples lost)
+        and the tests skipped with their reason."""
+        notes = []
         bode = self.bode
-        if bode is None:
-            return []
-        notes = [bode.note] if bode.note else []
-        if bode.lost_samples:
+        if bode is not None and bode.note:
+            notes.append(bode.note)
+        if bode is not None and bode.lost_samples:
             notes.append(
                 f"frequency response: {bode.lost_samples} of {len(bode.record.t)} samples lost "
                 "on the link, left out of the estimate"
             )
-        return notes
+        return notes + self.skipped
 
 
 RESULT_HOOKS: list[Callable[[Characterization], None]] = []
@@ -148,7 +150,11 @@ def characterize(rig: Rig, profile: Profile, progress: Progress | None = None) -
     result.static = static_test(rig, profile.static_period_s, response=response)
     if process:
         say("flow characteristic")
-        result.flow = flow_test(rig, profile.flow_amplitude_pct, 0.0, profile.flow_duration_s)
+        why_not = flow_objects_missing(rig)
+        if why_not:
+            result.skipped.append(why_not)
+        else:
+            result.flow = flow_test(rig, profile.flow_amplitude_pct, 0.0, profile.flow_duration_s)
     result.figures = figures(result)
     result.wall_s = time.perf_counter() - started
     for hook in RESULT_HOOKS:

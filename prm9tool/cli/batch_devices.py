@@ -5,6 +5,7 @@
 from __future__ import annotations
 
 import argparse
+import json
 import sys
 
 from prm9tool.device.factory import (
@@ -39,9 +40,18 @@ class BatchError(Exception):
 
 # --- listing ------------------------------------------------------------------------------------
 def list_devices(args: argparse.Namespace) -> int:
-    """``--list-devices``: one line per valve found; exit code 4 when there is none."""
+    """``--list-devices``: one line per valve found (``--json``: a list of the
+    :class:`~prm9tool.device.records.DeviceInfo` records); exit code 4 when there is none."""
     entries = _usb(required=False) + _emulators(args) + _can(args)
-    for entry in entries:
+    if args.json:  # what prm9tool.list_devices() returns; other CANopen nodes on stderr
+        from prm9tool.api.devices import device_info
+
+        others = [e for e in entries if e.kind == NOT_PRM9]
+        for entry in others:
+            print(f"prm9tool: {entry.device_id}: not a PRM9: {entry.description}", file=sys.stderr)
+        valves = [device_info(e, can_options(args)).to_dict() for e in entries if e not in others]
+        print(json.dumps(valves, indent=2))
+    for entry in entries if not args.json else []:
         if entry.kind == NOT_PRM9:
             print(f"{entry.device_id}\tnot a PRM9\t{entry.description}")
             continue

@@ -13,7 +13,7 @@ from prm9tool.cli.batch_report import ProgressPrinter, Stopwatch, ValveRecord
 from prm9tool.device.canlink.storing import KEPT_AS_WRITTEN
 from prm9tool.device.factory import CanOptions, DeviceEntry
 from prm9tool.device.session import ValveSession
-from prm9tool.device.upload_outcome import reload_outcome
+from prm9tool.device.upload_outcome import reload_outcome, type_problem
 from prm9tool.errors import CommunicationError, FileFormatError, Prm9Error, TypeKeyError
 from prm9tool.files.backup import ensure_backup, existing_backups
 from prm9tool.files.prmfile import PrmContents, check_file
@@ -89,7 +89,9 @@ class UploadJob:
 
     def _run(self, session: ValveSession, record: ValveRecord) -> None:
         who = str(record.serial)
-        mismatch = _type_problem(self.contents.type_key, session, self.force)
+        mismatch = type_problem(
+            self.contents.type_key, TypeKey.parse(session.info.type_key), self.force
+        )
         if mismatch:
             record.result, record.error = "type-mismatch", mismatch
             return
@@ -187,18 +189,3 @@ def _mismatch_text(step: str | None, mismatches: Mapping[str, tuple[object, obje
     count = len(mismatches)
     noun = "parameter" if count == 1 else "parameters"
     return f"{count} {noun} read back differently, nothing was stored: {shown}{more}"
-
-
-def _type_problem(file_key: TypeKey, session: ValveSession, force: bool) -> str | None:
-    valve_key = TypeKey.parse(session.info.type_key)
-    if file_key == valve_key:
-        return None
-    if file_key.variant != valve_key.variant:
-        return (
-            f"the file is for {file_key} ({file_key.variant.label}) but the valve is "
-            f"{valve_key} ({valve_key.variant.label}): the parameter sets differ, even "
-            "--force-type cannot upload it"
-        )
-    if force:
-        return None
-    return f"the file is for {file_key} but the valve is {valve_key} (use --force-type to upload anyway)"

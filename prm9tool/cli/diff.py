@@ -16,6 +16,7 @@ import json
 import sys
 from typing import Any
 
+from prm9tool.compare.export import as_json, value
 from prm9tool.compare.model import NOT_ON_SOURCE_VALVE, Comparison, Row, Side
 from prm9tool.errors import CommunicationError, ExitCode, FileFormatError, Prm9Error
 from prm9tool.files.prmfile import read_file
@@ -100,13 +101,9 @@ def _record_download(args: argparse.Namespace, info: Any, values: dict[str, Any]
         print(f"prm9tool: warning: the download was not recorded: {problem}", file=sys.stderr)
 
 
-def _value(row: Row, column: int) -> str | None:
-    return None if row.values[column] is None else row.display(column)
-
-
 def line(row: Row) -> str:
     """``MNEMONIC<TAB>A<TAB>B<TAB>unit`` (``-`` for a side that lacks the parameter)."""
-    a, b = (_value(row, column) or "-" for column in (0, 1))
+    a, b = (value(row, column) or "-" for column in (0, 1))
     return f"{row.mnemonic}\t{a}\t{b}\t{row.parameter.unit}".rstrip("\t")
 
 
@@ -119,36 +116,3 @@ def not_on_valve_notes(comparison: Comparison) -> list[str]:
         if names:
             notes.append(f"{side.absent} ({side.label}), not compared: {', '.join(names)}")
     return notes
-
-
-def as_json(comparison: Comparison) -> dict[str, Any]:
-    """The comparison as the JSON ``--diff --json`` prints (docs/compare.md)."""
-    first, second = comparison.sides
-    return {
-        "a": {"source": first.label, "type_key": str(first.type_key)},
-        "b": {"source": second.label, "type_key": str(second.type_key)},
-        "equal": comparison.equal,
-        "changed": len(comparison.changed),
-        "missing": len(comparison.missing),
-        "not_on_valve": [
-            {
-                "mnemonic": row.mnemonic,
-                "not_on": [name for name, lacks in zip("ab", row.absent, strict=True) if lacks],
-                "a": _value(row, 0),
-                "b": _value(row, 1),
-                "unit": row.parameter.unit,
-            }
-            for row in comparison.not_on_valve
-        ],
-        "warnings": [str(w) for w in comparison.warnings()],
-        "differences": [
-            {
-                "mnemonic": row.mnemonic,
-                "a": _value(row, 0),
-                "b": _value(row, 1),
-                "unit": row.parameter.unit,
-            }
-            for row in comparison.rows
-            if row.differs
-        ],
-    }

@@ -9,6 +9,7 @@ import sys
 from typing import Any
 
 from prm9tool.errors import ExitCode, FileFormatError, HistoryError
+from prm9tool.history import decoded
 from prm9tool.history.recorder import Recorder
 
 
@@ -41,8 +42,7 @@ def _list(recorder: Recorder, serial_text: str, as_json: bool) -> int:
         return ExitCode.USAGE
     records = recorder.store().records(int(serial_text))
     if as_json:
-        for record in records:
-            record["details"] = json.loads(record["details"])
+        decoded(records)
         print(json.dumps({"serial": int(serial_text), "records": records}, indent=2))
         return ExitCode.OK
     if not records:

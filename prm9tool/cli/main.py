@@ -72,6 +72,8 @@ def _headless_command(args: argparse.Namespace) -> tuple[str, str] | None:
         return "prm9tool.cli.diff", "run"
     if any(getattr(args, dest) not in (None, False) for dest in HISTORY_COMMANDS.values()):
         return "prm9tool.cli.history", "run"
+    if args.get or args.set:
+        return "prm9tool.cli.values", "run"
     if args.list_devices or args.batch is not None:
         return "prm9tool.cli.batch", "run"
     return None

@@ -182,6 +182,18 @@ def build_parser() -> argparse.ArgumentParser:
     eol.add_argument(
         "--profile", metavar="LIMITS.toml", help="with --characterize: acceptance profile"
     )
+    values = parser.add_argument_group("single parameters for shell scripts (no GUI; docs/api.md)")
+    values.add_argument(
+        "--get", nargs="+", metavar="MNEMONIC",
+        help="print parameters of the valve of --device/--emulator in display units",
+    )  # fmt: skip
+    values.add_argument(
+        "--set", nargs="+", metavar="MNEMONIC=VALUE",
+        help="write parameters (all checked first, each read back); not stored without --store",
+    )  # fmt: skip
+    values.add_argument(
+        "--store", action="store_true", help="with --set: store the working values permanently"
+    )
     add_device_options(parser)
     add_history_options(parser)
     return parser
@@ -196,7 +208,8 @@ def add_history_options(parser: argparse.ArgumentParser) -> None:
     )  # fmt: skip
     group.add_argument(
         "--json", nargs="?", const=True, metavar="OUT.json",
-        help="with --diff, --history: print JSON; with --characterize: the JSON report file",
+        help="with --diff, --history, --get/--set, --list-devices: print JSON; with "
+        "--characterize: the JSON report file",
     )  # fmt: skip
     group.add_argument("--history", metavar="SERIAL", help="list the history of a valve")
     group.add_argument(

@@ -18,6 +18,7 @@ BATCH_ONLY = {
     "--all": "all",
     "--verify-by-restart": "verify_by_restart",
 }
+VALUE_COMMANDS = {"--get": "get", "--set": "set", "--store": "store"}
 FILE_TOOLS = {"--new": "new", "--check": "check", "--export-eds": "export_eds"}
 CAN_OPTIONS = {"--can-interface": "can_interface", "--can-channel": "can_channel",
                "--can-bitrate": "can_bitrate"}  # fmt: skip
@@ -45,12 +46,17 @@ def usage_problem(args: argparse.Namespace) -> str | None:
         return problem
     if args.characterize:
         return _characterize_problem(args)
+    if args.get or args.set or args.store:
+        return _values_problem(args)
     if args.profile:
         return "--profile belongs to --characterize"
     if getattr(args, "od", None) and not (args.emulator or args.serve_emulator):
         return "--od chooses the object dictionary of --emulator or --serve-emulator valves"
     if isinstance(args.json, str):
-        return "--json OUT.json belongs to --characterize (--diff and --history print JSON)"
+        return (
+            "--json OUT.json belongs to --characterize (--diff, --history, --get/--set and "
+            "--list-devices print JSON)"
+        )
     problem = _compare_history_problem(args)
     if problem is not None:
         return problem
@@ -142,7 +148,7 @@ def _serve_problem(args: argparse.Namespace, batch_only: list[str]) -> str | Non
 
 
 def _characterize_problem(args: argparse.Namespace) -> str | None:
-    options = {**BATCH_ONLY, **FILE_TOOLS, **HISTORY_COMMANDS, "--diff": "diff"}
+    options = {**BATCH_ONLY, **FILE_TOOLS, **HISTORY_COMMANDS, "--diff": "diff", **VALUE_COMMANDS}
     others = [flag for flag, dest in options.items()
               if dest != "report" and getattr(args, dest) not in (None, False)]  # fmt: skip
     if args.batch is not None or args.list_devices:
@@ -165,8 +171,8 @@ def _compare_history_problem(args: argparse.Namespace) -> str | None:
     others += ["--batch"] * (args.batch is not None) + ["--list-devices"] * args.list_devices
     if len(commands) > 1 or (commands and others):
         return f"{commands[0]} and {(commands[1:] + others)[0]} are separate commands: use one at a time"
-    if args.json and commands not in (["--diff"], ["--history"]):
-        return "--json belongs to --diff and --history"
+    if args.json and commands not in (["--diff"], ["--history"]) and not args.list_devices:
+        return "--json belongs to --diff, --history, --get/--set and --list-devices"
     if args.history_unreachable and args.batch is None:
         return "--history-unreachable belongs to the headless production mode (--batch)"
     if args.diff:
@@ -207,4 +213,32 @@ def _batch_problem(args: argparse.Namespace) -> str | None:
         return f"unexpected file {args.file}: name the file to upload right after --batch"
     if args.output:
         return "-o/--output belongs to --new and --export-eds (--batch --download OUT.prm)"
+    return None
+
+
+def _values_problem(args: argparse.Namespace) -> str | None:
+    """``--get``/``--set [--store]``: one valve, no other command."""
+    if args.store and not args.set:
+        return "--store belongs to --set (it stores the values --set writes)"
+    name = "--set" if args.set else "--get"
+    commands = {**BATCH_ONLY, **FILE_TOOLS, **HISTORY_COMMANDS, "--diff": "diff",
+                "--serve-emulator": "serve_emulator", "--list-devices": "list_devices"}  # fmt: skip
+    others = [
+        flag for flag, dest in commands.items() if getattr(args, dest) not in (None, False, [])
+    ]
+    others += ["--batch"] * (args.batch is not None)
+    if others:
+        return f"{name} and {others[0]} are separate commands: use one at a time"
+    if args.file:
+        return f"unexpected file {args.file}: {name} works on a valve"
+    if isinstance(args.json, str):
+        return f"--json OUT.json belongs to --characterize ({name} prints JSON with --json alone)"
+    if len(args.device) + len(args.emulator) != 1:
+        return f"{name} works on one valve: give one --device ID or --emulator TYPEKEY[:SERIAL]"
+    can = [flag for flag, dest in CAN_OPTIONS.items() if getattr(args, dest) is not None]
+    if can and args.emulator:
+        return (
+            f"{name} with --emulator uses the emulated valve over USB; {can[0]} names a bus for "
+            "--device can:NODE"
+        )
     return None

@@ -212,6 +212,17 @@ class Comparison:
                 return row
         raise KeyError(mnemonic)
 
+    def chosen(self) -> dict[str, Raw]:
+        """The chosen value of every row with a choice, whichever side it comes from (what
+        goes into a document or valve outside the comparison, e.g. from two history
+        records)."""
+        result: dict[str, Raw] = {}
+        for mnemonic, side in self.choices.items():
+            value = self.row(mnemonic).values[side]
+            if value is not None:
+                result[mnemonic] = value
+        return result
+
     def to_apply(self, target: int) -> dict[str, Raw]:
         """The chosen values that differ from side ``target``'s: exactly what to write there."""
         result: dict[str, Raw] = {}

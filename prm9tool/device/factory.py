@@ -11,7 +11,8 @@ from __future__ import annotations
 
 import logging
 import threading
-from collections.abc import Callable, Collection, Sequence
+from collections.abc import Callable, Collection, Iterator, Sequence
+from contextlib import contextmanager
 from dataclasses import dataclass
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
@@ -394,6 +395,21 @@ def _connect_can(valve: EmulatedValve, options: CanOptions) -> Callable[[], None
         bus.shutdown()
 
     return close
+
+
+@contextmanager
+def stepped_here(valve: EmulatedValve) -> Iterator[EmulatedValve]:
+    """Hold a paced emulated valve's real-time thread while a procedure steps the valve itself
+    (the end-of-line test of an open valve runs as fast as the CPU allows), then run it again."""
+    with _LOCK:
+        running = _RUNNING.get(valve.serial, 0)
+    if running:
+        _halt(valve)
+    try:
+        yield valve
+    finally:
+        if running:
+            _run(valve)
 
 
 def _run(valve: EmulatedValve) -> None:

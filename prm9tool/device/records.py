@@ -7,10 +7,12 @@ states are enums (a ``StrEnum`` compares equal to its text, which is also what t
 
 from __future__ import annotations
 
+import html
 import threading
 from collections.abc import Callable
-from dataclasses import dataclass, field
+from dataclasses import asdict, dataclass, field, fields
 from enum import StrEnum
+from typing import Any
 
 from prm9tool.errors import Prm9Error, SdoAbortError
 
@@ -19,6 +21,7 @@ __all__ = [
     "STEPS",
     "DeviceInfo",
     "DeviceState",
+    "HtmlRecord",
     "LedState",
     "NmtState",
     "OperationCancelledError",
@@ -39,6 +42,24 @@ Progress = Callable[[int, int, str], None]
 
 STEPS = {"write": "writing the parameters", "verify": "reading them back", "store": "storing"}
 """The steps of the transactional upload, and how a message names each."""
+
+
+class HtmlRecord:
+    """Mixin of the records: a table of their fields for Jupyter (``_repr_html_``) and the
+    plain data the command line's JSON shows (:meth:`to_dict`)."""
+
+    def to_dict(self) -> dict[str, Any]:
+        """The fields as plain data for ``json.dumps`` (the states are StrEnums, so JSON shows
+        their text; tuples become lists): what the command line's ``--json`` prints."""
+        return asdict(self)  # type: ignore[call-overload, no-any-return]
+
+    def _repr_html_(self) -> str:
+        rows = "".join(
+            f"<tr><th style='text-align:left'>{html.escape(f.name)}</th>"
+            f"<td style='text-align:left'>{html.escape(str(getattr(self, f.name)))}</td></tr>"
+            for f in fields(self)  # type: ignore[arg-type]
+        )
+        return f"<table><caption>{type(self).__name__}</caption>{rows}</table>"
 
 
 class DeviceState(StrEnum):
@@ -90,7 +111,7 @@ LED_OFF = LedState(color="off", pattern="off", lit=False)
 
 
 @dataclass(frozen=True, kw_only=True)
-class ValveStatus:
+class ValveStatus(HtmlRecord):
     """A snapshot of everything the valve shows outside: state, errors, LEDs, supply.
 
     ``error_code`` is the CANopen EMCY code of the most severe active error (0 = none),
@@ -114,14 +135,19 @@ class ValveStatus:
 
 
 @dataclass(frozen=True, kw_only=True)
-class DeviceInfo:
-    """Who the valve is (from the identification exchange)."""
+class DeviceInfo(HtmlRecord):
+    """Who the valve is (from the identification exchange, or as a device listing found it).
+
+    ``device_id`` opens it again (``prm9tool.connect``); its prefix is the :attr:`link`.
+    ``protocol_version``: the USB protocol version the valve speaks (0: not over USB, or not
+    asked, as in a listing).
+    """
 
     type_key: str
     serial: int
     firmware: str
-    protocol_version: int
     device_id: str
+    protocol_version: int = 0
     # parameters whose change moves the valve away from this link at its next power-up (over
     # CANopen its node ID and bit rate); the GUI warns when one is changed online
     link_parameters: tuple[str, ...] = ()
@@ -134,9 +160,18 @@ class DeviceInfo:
     # (over CANopen: placed by the SYNC count); False: lost samples are only counted
     stream_gaps: bool = False
 
+    @property
+    def link(self) -> str:
+        """How the valve is reached: ``usb``, ``emulator`` or ``can``."""
+        return self.device_id.partition(":")[0]
+
+    def to_dict(self) -> dict[str, Any]:
+        """The fields and the :attr:`link` as JSON-ready data."""
+        return {**super().to_dict(), "link": self.link}
+
 
 @dataclass(frozen=True, kw_only=True)
-class UploadResult:
+class UploadResult(HtmlRecord):
     """Outcome of an upload; ``failed_step`` is ``write``, ``verify``, ``store`` or None.
 
     ``stored`` means verified stored (the upload contract of

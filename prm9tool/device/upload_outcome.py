@@ -9,6 +9,7 @@ import time
 from collections.abc import Mapping, Sequence
 
 from prm9tool.catalogue import Parameter
+from prm9tool.catalogue.typekey import TypeKey
 from prm9tool.device.records import STEPS, Value
 from prm9tool.errors import CommunicationError, SdoAbortError
 
@@ -95,3 +96,24 @@ def step_error(
     error.written = written  # type: ignore[attr-defined]
     error.verified = verified  # type: ignore[attr-defined]
     return error
+
+
+def type_problem(
+    file_key: TypeKey, valve_key: TypeKey, force: bool, option: str = "--force-type"
+) -> str | None:
+    """Why a parameter set of ``file_key`` must not go into a ``valve_key`` valve (None: it
+    may). Another variant never (its parameter set differs); another type key of the same
+    variant only with ``force``, which the message names as ``option``."""
+    if file_key == valve_key:
+        return None
+    if file_key.variant != valve_key.variant:
+        return (
+            f"the file is for {file_key} ({file_key.variant.label}) but the valve is "
+            f"{valve_key} ({valve_key.variant.label}): the parameter sets differ, even "
+            f"{option} cannot upload it"
+        )
+    if force:
+        return None
+    return (
+        f"the file is for {file_key} but the valve is {valve_key} (use {option} to upload anyway)"
+    )

@@ -209,6 +209,11 @@ class ParameterDocument(QObject):
             values["CURNORM"] = self._live["CURNORM"]
         return CATALOGUE.check_rules(self.variant, values)
 
+    def unsaved_mnemonics(self) -> list[str]:
+        """The parameters whose value differs from the one last saved (or opened)."""
+        saved = self._saved[1]
+        return [mn for mn, value in self._values.items() if saved.get(mn) != value]
+
     def mark_saved(self, path: Path | None = None) -> None:
         """Record that the document now equals the file at ``path``."""
         if path is not None and path != self._path:

@@ -193,16 +193,25 @@ class ValveConnection(QObject):
 
         self._long_job("store", run)
 
+    def store_valve(self) -> None:
+        """Valve → Store: what the valve works with becomes its stored set (the link's store),
+        read back and recorded in the history; result: operation_finished("store", values)."""
+        from prm9tool.online.recording import store_and_read
+
+        self._long_job("store", lambda s: store_and_read(s, self.history, self._worker.progress))
+
     def read_many(self, mnemonics: Sequence[str], tag: str = "read") -> None:
         """Read values; the result arrives as operation_finished(tag, {mnemonic: raw})."""
         names = list(mnemonics)
         self._submit(Job(tag, lambda s: s.read_many(names)))
 
-    def upload(self, values: Mapping[str, int | str], backup: bool = True) -> None:
+    def upload(
+        self, values: Mapping[str, int | str], backup: bool = True, purpose: str = ""
+    ) -> None:
         """Write → read back and compare → store; result: operation_finished("upload", …).
 
         With ``backup``, a valve that has no backup yet is downloaded into one first
-        (``backup_written`` reports the file).
+        (``backup_written`` reports the file). ``purpose``: what the user did, for the history.
         """
         values = dict(values)
 
@@ -217,7 +226,7 @@ class ValveConnection(QObject):
                         self.history.backup(session, path)
             if self.history is not None:
                 return self.history.upload(
-                    session, values, self._worker.progress, self._worker.cancel
+                    session, values, self._worker.progress, self._worker.cancel, purpose
                 )
             return session.upload(values, self._worker.progress, self._worker.cancel)
 

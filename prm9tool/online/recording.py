@@ -78,6 +78,7 @@ class HistoryHook:
         values: Mapping[str, Raw],
         progress: Progress | None,
         cancel: threading.Event | None,
+        purpose: str = "",
     ) -> UploadResult:
         """``session.upload`` with its outcome recorded (a broken link too, then re-raised).
 
@@ -98,8 +99,23 @@ class HistoryHook:
             after = values if whole <= set(values) else session.download()
         details = {"written": result.written, "chosen": len(values), "mismatches": {
             m: [str(want), str(got)] for m, (want, got) in result.mismatches.items()}}  # fmt: skip
+        if purpose:
+            details["purpose"] = purpose
         if result.store:
             details["store"] = result.store  # which store happened (CANopen)
         outcome = "ok" if result.stored else "verification-failed"
         self.add(session, "upload", outcome, after, details, result.failed_step)
         return result
+
+
+def store_and_read(
+    session: Any, history: HistoryHook | None, progress: Progress | None = None
+) -> dict[str, Raw]:
+    """The valve's working parameters become its stored ones; then they are read back (what
+    it holds now) and, with ``history``, recorded as a ``store``. A failing store raises
+    before anything is recorded."""
+    session.store()
+    values = dict(session.download(progress))
+    if history is not None:
+        history.add(session, "store", "ok", values, {"command": "Valve → Store"})
+    return values

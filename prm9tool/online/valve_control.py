@@ -51,6 +51,12 @@ def blocker_text(reason: Blocker, status: StatusView | None = None, in_status: b
     translate = QCoreApplication.translate  # the name pyside6-lupdate looks for
     state = str(status.device_state) if status is not None else ""
     nmt = str(status.nmt_state) if status is not None else ""
+    if in_status and reason is Blocker.WAITING_FOR_MASTER and nmt == "operational":
+        return translate(  # NMT start was pressed already: only Enable is left
+            "ValveControl",
+            "it is operational on CANopen but not enabled yet (device state {0}). Press Enable "
+            "(control word 08h → 09h → 0Bh → 0Fh).",
+        ).format(state)
     if in_status and reason in _HERE:
         return translate("ValveControl", str(_HERE[reason])).format(state, nmt)
     texts = {

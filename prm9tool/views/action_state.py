@@ -28,6 +28,7 @@ def enabled_actions(
         "offline": online,
         "upload": ready,
         "download": ready,
+        "store": ready,
         "compare_valve": ready,
         "restart": ready,
         "restore_factory": not busy,

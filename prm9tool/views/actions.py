@@ -18,6 +18,7 @@ _ACTIONS: tuple[tuple[str, str, object], ...] = (
     ("open", "open", SK.Open),
     ("save", "save", SK.Save),
     ("save_as", "save_as", (SK.SaveAs, "Ctrl+Shift+S")),  # Windows binds no SaveAs key
+    ("save_copy", "", None),
     ("undo", "undo", SK.Undo),
     ("redo", "redo", ("Ctrl+Y", "Ctrl+Shift+Z")),
     ("print", "print", SK.Print),
@@ -36,6 +37,7 @@ _ACTIONS: tuple[tuple[str, str, object], ...] = (
     ("valve_status", "status", "Ctrl+I"),
     ("upload", "upload", "Ctrl+U"),
     ("download", "download", "Ctrl+D"),
+    ("store", "", None),
     ("restore_factory", "factory", None),
     ("restart", "restart", None),
     ("hid_configuration", "hid", "Ctrl+H"),
@@ -95,6 +97,13 @@ def _texts() -> dict[str, _Texts]:
         "save_as": _Texts(
             translate("MainActions", "Save &As…"),
             translate("MainActions", "Save the parameters under another name"),
+        ),
+        "save_copy": _Texts(
+            translate("MainActions", "Save bac&kup copy…"),
+            translate(
+                "MainActions",
+                "Save a copy of the parameters to another file; you keep working on this one",
+            ),
         ),
         "undo": _Texts(
             translate("MainActions", "&Undo"), translate("MainActions", "Undo the last change")
@@ -164,6 +173,13 @@ def _texts() -> dict[str, _Texts]:
         "download": _Texts(
             translate("MainActions", "&Download from valve"),
             translate("MainActions", "Read the parameters of the valve into the program"),
+        ),
+        "store": _Texts(
+            translate("MainActions", "St&ore in valve"),
+            translate(
+                "MainActions",
+                "Make the values the valve works with permanent: they stay after a restart",
+            ),
         ),
         "restore_factory": _Texts(
             translate("MainActions", "Restore &factory values…"),
@@ -261,11 +277,12 @@ class MainActions(QObject):
     def build_menus(self, bar: QMenuBar) -> None:
         """File, View, Valve, Communication, Help (manual §8.5)."""
         layout: dict[str, tuple[str | None, ...]] = {
-            "file": ("new", "open", "recent", "save", "save_as", None, "undo", "redo", None,
-                     "print", "export_pdf", "export_dcf", None, "compare_file", None, "exit"),
+            "file": ("new", "open", "recent", "save", "save_as", "save_copy", None, "undo",
+                     "redo", None, "print", "export_pdf", "export_dcf", None, "compare_file", None,
+                     "exit"),
             "view": ("view_diagram", "view_parameters", "view_scope", None, "access", "language",
                      None, "canopen", "od_browser"),
-            "valve": ("valve_selection", "valve_status", None, "upload", "download",
+            "valve": ("valve_selection", "valve_status", None, "upload", "download", "store",
                       "compare_valve", "history", None, "restore_factory", "restart"),
             "communication": ("hid_configuration", "can_bus", None, "online", "offline"),
             "help": ("help", "homepage", None, "about"),

@@ -45,6 +45,7 @@ from prm9tool.paths import user_data_dir
 from prm9tool.translate import error_text
 from prm9tool.views.can_bus_lss import BusLssActions
 from prm9tool.views.can_lss_panel import LssPanel
+from prm9tool.views.help_dialog import add_context_help
 
 INTERFACE_KEY, CHANNEL_KEY, BITRATE_KEY = "can/interface", "can/channel", "can/bitrate"
 INTERFACES = (
@@ -94,6 +95,7 @@ class CanBusDialog(QDialog):
         """``monitor``: keeps the node table live after a search (None: as the scan saw it);
         ``lss``: shows the devices without a node ID and assigns one (None: not offered)."""
         super().__init__(parent)
+        add_context_help(self, "can")  # F1
         self._chosen: str | None = None  # a valve given its node ID here (LSS)
         self.setWindowTitle(self.tr("CAN bus"))
         self._scan, self._settings = scan, settings

@@ -45,6 +45,7 @@ from prm9tool.translate import error_text
 from prm9tool.views.canopen_tables import SwitchTables
 from prm9tool.views.diagram.colours import toned_style
 from prm9tool.views.diagram.dialogs.fields import not_on_enter
+from prm9tool.views.help_dialog import add_context_help
 
 SETTINGS = ("NODEID", "BITRATE", "CANTERM")
 SWITCHES = ("SWBAUD", "SWNODE")
@@ -67,6 +68,7 @@ class CanopenWindow(QDialog):
         sync: ValveSync | None = None,
     ) -> None:
         super().__init__(parent)
+        add_context_help(self, "can")  # F1
         self._doc, self._connection, self._access = document, connection, access
         self._sync = sync  # writes document edits to the valve while online
         self.switches: tuple[int, int] | None = None  # (interface, node) at the last power-up

@@ -2,17 +2,21 @@
 
 A -CA valve as delivered waits for a CANopen master; on the desk the user is that master:
 "Start (NMT)" and "Enable" (control word 08h → 09h → 0Bh → 0Fh) make it follow its setpoint,
-"Disable" and "Pre-operational"/"Stop" take it back. A line above the buttons says why the
-valve does not follow its setpoint, or that it does.
+"Disable" and "Pre-operational"/"Stop" take it back, in the order of commissioning: NMT first,
+then the enable sequence. Below them, in lines of a fixed height, why the valve does not
+follow its setpoint, or that it does. No button is the default: Enter never moves the valve.
 """
 
 from __future__ import annotations
 
-from PySide6.QtWidgets import QGridLayout, QGroupBox, QLabel, QPushButton, QWidget
+from PySide6.QtWidgets import QGridLayout, QGroupBox, QPushButton, QWidget
 
 from prm9tool.catalogue.commissioning import Blocker, NmtCommand
 from prm9tool.online.connection_protocol import StatusView
 from prm9tool.online.valve_control import ValveControl, blocker_text, status_blocker
+from prm9tool.views.fixed_lines import FixedLinesLabel
+
+REASON_LINES = 4
 
 
 class CommissioningPanel(QGroupBox):
@@ -22,18 +26,20 @@ class CommissioningPanel(QGroupBox):
         super().__init__(parent)
         self._control = control
         self._status: StatusView | None = None
-        self.reason = QLabel()
-        self.reason.setWordWrap(True)
+        self.reason = FixedLinesLabel(REASON_LINES)  # its length never moves the buttons
         self.buttons = {
             name: QPushButton()
             for name in ("enable", "disable", "nmt_start", "nmt_preop", "nmt_stop")
         }
+        for button in self.buttons.values():  # Enter must not move the valve
+            button.setAutoDefault(False)
+            button.setDefault(False)
         grid = QGridLayout(self)
-        grid.addWidget(self.reason, 0, 0, 1, 3)
+        for column, name in enumerate(("nmt_start", "nmt_preop", "nmt_stop")):
+            grid.addWidget(self.buttons[name], 0, column)
         for column, name in enumerate(("enable", "disable")):
             grid.addWidget(self.buttons[name], 1, column)
-        for column, name in enumerate(("nmt_start", "nmt_preop", "nmt_stop")):
-            grid.addWidget(self.buttons[name], 2, column)
+        grid.addWidget(self.reason, 2, 0, 1, 3)
         actions = {
             "enable": control.enable,
             "disable": control.disable,

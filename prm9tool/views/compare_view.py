@@ -9,7 +9,7 @@ caller writes them (one undo step in the document, a transactional upload to the
 
 from __future__ import annotations
 
-from collections.abc import Sequence
+from collections.abc import Mapping, Sequence
 from typing import Any
 
 from PySide6.QtCore import (
@@ -17,6 +17,7 @@ from PySide6.QtCore import (
     QCoreApplication,
     QModelIndex,
     QPersistentModelIndex,
+    QSize,
     Qt,
 )
 from PySide6.QtGui import QFont
@@ -24,7 +25,6 @@ from PySide6.QtWidgets import (
     QCheckBox,
     QComboBox,
     QDialog,
-    QDialogButtonBox,
     QHBoxLayout,
     QHeaderView,
     QLabel,
@@ -39,10 +39,14 @@ from prm9tool.compare.model import Comparison, Row
 from prm9tool.i18n import format_value, text
 from prm9tool.translate import translated
 from prm9tool.views.diagram.layout import layout_for
+from prm9tool.views.help_dialog import add_context_help
+from prm9tool.views.icons import icon
 
 Index = QModelIndex | QPersistentModelIndex
 FIRST_VALUE = 2  # columns: mnemonic, description, side 0, side 1[, reference]
 BOTH = -1  # target: each side takes the values chosen from the other (going online)
+DOCUMENT, VALVE = "document", "valve"  # what a side is; or a target outside the comparison
+Target = int | str  # a side, BOTH, or DOCUMENT / VALVE outside the comparison
 
 
 class CompareTableModel(QAbstractTableModel):
@@ -144,7 +148,10 @@ class CompareTableModel(QAbstractTableModel):
 class CompareDialog(QDialog):
     """Compare two sides, choose per parameter, apply to one of the ``targets`` sides.
 
-    After ``exec()``, ``applied`` is ``(target side, {mnemonic: raw})`` or None.
+    ``roles`` names what a side is (:data:`DOCUMENT`, :data:`VALVE`), so that its apply
+    button says what it does ("Write 2 ticked values into Valve 4711"). ``destinations`` are
+    targets outside the comparison (two history records: the document, the valve), which take
+    every ticked value. After ``exec()``, ``applied`` is ``(target, {mnemonic: raw})`` or None.
     """
 
     def __init__(
@@ -153,11 +160,15 @@ class CompareDialog(QDialog):
         targets: Sequence[int] = (0, 1),
         access: Access = Access.EXPERT,
         parent: QWidget | None = None,
+        roles: Mapping[int, str] | None = None,
+        destinations: Sequence[str] = (),
     ) -> None:
         super().__init__(parent)
         self.comparison = comparison
-        self.applied: tuple[int, dict[str, int | str]] | None = None
+        self.roles = dict(roles or {})
+        self.applied: tuple[Target, dict[str, int | str]] | None = None
         self.setWindowTitle(self.tr("Compare parameters"))
+        add_context_help(self, "compare")  # F1
         self.summary = QLabel()
         self.summary.setWordWrap(True)
         self.model = CompareTableModel(comparison, self)
@@ -167,12 +178,16 @@ class CompareDialog(QDialog):
         header = self.table.horizontalHeader()
         header.setSectionResizeMode(QHeaderView.ResizeMode.ResizeToContents)
         header.setSectionResizeMode(1, QHeaderView.ResizeMode.Stretch)
+        self.hint = QLabel(self._hint(targets, destinations))
+        self.hint.setObjectName("compare_hint")
+        self.hint.setWordWrap(True)
         layout = QVBoxLayout(self)
         layout.addWidget(self.summary)
         layout.addLayout(self._filters(access))
+        layout.addWidget(self.hint)
         layout.addWidget(self.table)
         layout.addLayout(self._choice_buttons())
-        layout.addWidget(self._buttons(targets))
+        layout.addLayout(self._apply_bar([*targets, *destinations]))
         self.model.dataChanged.connect(lambda *_args: self._update_summary())
         self._refilter()
         self.resize(900, 560)
@@ -207,26 +222,66 @@ class CompareDialog(QDialog):
     def _choice_buttons(self) -> QHBoxLayout:
         row = QHBoxLayout()
         for side, source in enumerate(self.comparison.sides):
-            button = QPushButton(self.tr("Take every shown value from {0}").format(source.label))
+            button = QPushButton(self.tr("Tick every shown value of {0}").format(source.label))
             button.clicked.connect(lambda _c=False, s=side: self._choose_all(s))
             row.addWidget(button)
         row.addStretch(1)
         return row
 
-    def _buttons(self, targets: Sequence[int]) -> QDialogButtonBox:
-        box = QDialogButtonBox(QDialogButtonBox.StandardButton.Close)
-        box.rejected.connect(self.reject)
-        self.apply_buttons: dict[int, QPushButton] = {}
+    def _apply_bar(self, targets: Sequence[Target]) -> QHBoxLayout:
+        """The apply buttons, large, with the icon of where the values go; then Close."""
+        row = QHBoxLayout()
+        self.apply_buttons: dict[Target, QPushButton] = {}
         for target in targets:
-            if target == BOTH:
-                button = QPushButton(self.tr("Apply: each side takes the chosen values"))
-            else:
-                label = self.comparison.sides[target].label
-                button = QPushButton(self.tr("Apply the chosen values to {0}").format(label))
+            button = QPushButton(icon(self._icon_name(target)), "")
+            button.setObjectName(f"apply_{target}")
+            button.setIconSize(QSize(24, 24))
+            button.setMinimumHeight(36)
             button.clicked.connect(lambda _c=False, t=target: self._apply(t))
-            box.addButton(button, QDialogButtonBox.ButtonRole.ActionRole)
+            row.addWidget(button)
             self.apply_buttons[target] = button
-        return box
+        row.addStretch(1)
+        close = QPushButton(self.tr("Close"))
+        close.clicked.connect(self.reject)
+        row.addWidget(close)
+        return row
+
+    def _role(self, target: Target) -> str | None:
+        return target if isinstance(target, str) else self.roles.get(target)
+
+    def _icon_name(self, target: Target) -> str:
+        return {VALVE: "upload", DOCUMENT: "parameters"}.get(self._role(target) or "", "")
+
+    def _hint(self, targets: Sequence[int], destinations: Sequence[str]) -> str:
+        """How to put values back, in one or two sentences above the table."""
+        labels = [side.label for side in self.comparison.sides]
+        if BOTH in targets:
+            return self.tr(
+                "Every row starts with the valve's value ticked. Tick the document's value "
+                "where the document is right, then press Apply: the document takes the ticked "
+                "valve values and the valve the ticked document values."
+            )
+        lines = []
+        for target in targets:
+            source, role = labels[1 - target], self._role(target)
+            if role == VALVE:
+                line = self.tr("To write values into the valve: tick them in the column “{0}”, "
+                               "then press the button below.").format(source)  # fmt: skip
+            elif role == DOCUMENT:
+                line = self.tr("To take values into the document: tick them in the column "
+                               "“{0}”, then press the button below.").format(source)  # fmt: skip
+            else:
+                line = self.tr("To copy values into “{0}”: tick them in the column “{1}”, "
+                               "then press the button below.").format(labels[target], source)  # fmt: skip
+            lines.append(line)
+        if destinations:
+            lines.append(
+                self.tr(
+                    "Tick the values to take, in either column; then take them into the "
+                    "document, or write them into the valve (online with this valve)."
+                )
+            )
+        return "\n".join(lines) or self.tr("Shown for comparison only.")
 
     # --- behaviour ------------------------------------------------------------------------
     def _refilter(self) -> None:
@@ -254,12 +309,37 @@ class CompareDialog(QDialog):
         lines += [translated(warning) for warning in c.warnings()]
         self.summary.setText("\n".join(lines))
         for target, button in getattr(self, "apply_buttons", {}).items():
-            if target == BOTH:  # every difference needs a choice, then both sides agree
-                button.setEnabled(all(row.mnemonic in c.choices for row in c.changed))
-            else:
-                button.setEnabled(bool(c.to_apply(target)))
+            self._update_apply_button(target, button)
 
-    def _apply(self, target: int) -> None:
-        values = {} if target == BOTH else self.comparison.to_apply(target)
-        self.applied = (target, values)
+    def _update_apply_button(self, target: Target, button: QPushButton) -> None:
+        c = self.comparison
+        if target == BOTH:  # every difference needs a choice, then both sides agree
+            button.setText(self.tr("Apply: each side takes the ticked values"))
+            button.setEnabled(all(row.mnemonic in c.choices for row in c.changed))
+            return
+        count = len(self._values_for(target))
+        role = self._role(target)
+        label = "" if isinstance(target, str) else c.sides[target].label
+        if role == VALVE:
+            text = self.tr("Write %n ticked value(s) into the valve", "", count)
+        elif role == DOCUMENT:
+            text = self.tr("Take %n ticked value(s) into the document", "", count)
+        else:
+            text = self.tr("Copy %n ticked value(s) into “{0}”", "", count)
+        button.setText(text.format(label))
+        button.setEnabled(count > 0)
+        source = "" if isinstance(target, str) else c.sides[1 - target].label
+        button.setToolTip(
+            ""
+            if count or not source
+            else self.tr("Tick values in the column “{0}” first").format(source)
+        )
+
+    def _values_for(self, target: Target) -> dict[str, int | str]:
+        if isinstance(target, str):
+            return self.comparison.chosen()
+        return {} if target == BOTH else self.comparison.to_apply(target)
+
+    def _apply(self, target: Target) -> None:
+        self.applied = (target, self._values_for(target))
         self.accept()

@@ -13,7 +13,7 @@ from __future__ import annotations
 from collections.abc import Mapping
 from pathlib import Path
 
-from PySide6.QtCore import QObject, Signal
+from PySide6.QtCore import QObject, QSettings, Signal
 from PySide6.QtWidgets import QDialog, QFileDialog, QWidget
 
 from prm9tool.catalogue.typekey import TypeKey
@@ -26,8 +26,10 @@ from prm9tool.online.connection import ValveConnection
 from prm9tool.online.sync import ValveSync
 from prm9tool.translate import error_text
 from prm9tool.views import prompts
-from prm9tool.views.compare_view import BOTH, CompareDialog
+from prm9tool.views.compare_view import BOTH, DOCUMENT, VALVE, CompareDialog
 from prm9tool.views.file_reader import read_in_background
+from prm9tool.views.file_workflow import FOLDER_KEY
+from prm9tool.views.history_notes import record_online_change
 from prm9tool.views.valve.workflow import ValveWorkflow
 
 COMPARE_VIEW = "compare_view"  # the download behind Valve → Compare with valve
@@ -48,10 +50,12 @@ class CompareWorkflow(QObject):
         connection: ValveConnection,
         sync: ValveSync,
         valve: ValveWorkflow,
+        settings: QSettings | None = None,
     ) -> None:
         super().__init__(window)
         self._window, self._doc, self._undo, self._access = window, doc, undo, access
         self._connection, self._sync, self._valve = connection, sync, valve
+        self._settings = settings if settings is not None else QSettings()
         valve.choose_per_parameter = self.choose_going_online
         connection.operation_finished.connect(self._on_connection_operation_finished)
         connection.history_problem.connect(self._on_connection_history_problem)
@@ -72,8 +76,13 @@ class CompareWorkflow(QObject):
     def _factory(self, key: TypeKey) -> Side:
         return Side.factory(key, self.tr("Factory defaults"))
 
-    def _run(self, comparison: Comparison, targets: tuple[int, ...]) -> CompareDialog:
-        dialog = CompareDialog(comparison, targets, self._access.level, self._window)
+    def _run(
+        self, comparison: Comparison, targets: tuple[int, ...], valve: bool = True
+    ) -> CompareDialog:
+        """The compare view of ``comparison``: side 0 the document, side 1 the valve (or,
+        not ``valve``, a file)."""
+        roles = {0: DOCUMENT, 1: VALVE} if valve else {0: DOCUMENT}
+        dialog = CompareDialog(comparison, targets, self._access.level, self._window, roles)
         self.dialog_created.emit(dialog)
         dialog.exec()
         return dialog
@@ -82,13 +91,15 @@ class CompareWorkflow(QObject):
     def compare_with_file(self, path: Path | None = None) -> None:
         """Compare the document with a *.prm file; the file's chosen values can be taken."""
         if path is None:
+            folder = str(self._settings.value(FOLDER_KEY, str(Path.home())))
             name, _filter = QFileDialog.getOpenFileName(
-                self._window, self.tr("Compare with file"), "",
+                self._window, self.tr("Compare with file"), folder,
                 self.tr("Parameter files (*.prm);;All files (*)"),
             )  # fmt: skip
             if not name:
                 return
             path = Path(name)
+            self._settings.setValue(FOLDER_KEY, str(path.parent))  # the last folder used
         contents = read_in_background(self._window, path)  # the window keeps working
         if contents is None:
             return  # the user cancelled the reading
@@ -99,10 +110,13 @@ class CompareWorkflow(QObject):
             return
         file_side = Side(path.name, contents.type_key, contents.values, NOT_ON_SOURCE_VALVE())
         comparison = Comparison((self._document(), file_side), self._factory(self._doc.type_key))
-        dialog = self._run(comparison, (0,))
+        dialog = self._run(comparison, (0,), valve=False)
         if dialog.applied is not None and dialog.applied[1]:
             label = self.tr("Values taken from {0}").format(path.name)
+            before = dict(self._doc.values)
             self._doc.set_values(dialog.applied[1], label)
+            record_online_change(self._connection, "compare-apply", before, self._doc.values,
+                                 source=path.name)  # fmt: skip
             self.message_posted.emit(label)
 
     # --- Valve → Compare with valve ---------------------------------------------------------
@@ -132,7 +146,7 @@ class CompareWorkflow(QObject):
                 self._doc.set_values(chosen, label, validate=False)
             self.message_posted.emit(label)
         else:
-            self._valve.upload_values(chosen)
+            self._valve.upload_values(chosen, "compare: values chosen from the document")
 
     # --- going online: choose per parameter --------------------------------------------------
     def choose_going_online(self, values: Mapping[str, Raw]) -> None:
@@ -150,7 +164,8 @@ class CompareWorkflow(QObject):
             with self._sync.suspended():
                 self._doc.set_values(to_document, self.tr("Values chosen from the valve"), False)
         if to_valve:
-            self._valve.upload_values(to_valve)  # the sync starts when it is stored
+            # the sync starts when it is stored
+            self._valve.upload_values(to_valve, "going online: values chosen per parameter")
         else:
             self._sync.start(values)
             self.message_posted.emit(self.tr("Online: document and valve agree"))
@@ -172,14 +187,22 @@ class CompareWorkflow(QObject):
         window.show()
         return window
 
-    def restore_into_document(self, key: TypeKey, values: Mapping[str, Raw]) -> None:
-        """A record's parameter set becomes the document's: one undo step (online it goes to
-        the valve as any edit does)."""
+    def restore_into_document(self, key: TypeKey | None, values: Mapping[str, Raw]) -> None:
+        """A record's parameter set becomes the document's, type key included (``key``), or
+        the values ticked in two records (``key`` None: the document keeps its type key):
+        one undo step (online it goes to the valve as any edit does)."""
         label = self.tr("Parameters restored from the history")
+        if key is None:
+            label = self.tr("%n value(s) taken from the history", "", len(values))
+        before = dict(self._doc.values)
         self._undo.stack.beginMacro(label)
-        self._doc.set_type_key(key)
+        if key is not None:
+            self._doc.set_type_key(key)
         self._doc.set_values(values, label, validate=False)
         self._undo.stack.endMacro()
+        whole = "record" if key is not None else "ticked values"
+        record_online_change(self._connection, "history-restore", before, self._doc.values,
+                             source=whole)  # fmt: skip
         self.message_posted.emit(label)
 
     def restore_to_valve(self, serial: int, values: Mapping[str, Raw]) -> bool:
@@ -187,5 +210,5 @@ class CompareWorkflow(QObject):
         info = self._connection.device
         if info is None or info.serial != serial or not self._connection.is_online:
             return False
-        self._valve.upload_values(values)
+        self._valve.upload_values(values, "history: a record's values restored")
         return True

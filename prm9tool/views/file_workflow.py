@@ -1,7 +1,9 @@
-"""File workflows: new, open, save, save as, recent files, unsaved-changes prompt."""
+"""File workflows: new, open, save, save as, save a backup copy, recent files, unsaved-changes
+prompt."""
 
 from __future__ import annotations
 
+from datetime import datetime
 from pathlib import Path
 
 from PySide6.QtCore import QObject, QSettings, Signal
@@ -19,6 +21,7 @@ MAX_RECENT = 8
 MAX_LISTED_PROBLEMS = 200  # a message box lists at most this many, then says how many more
 RECENT_KEY = "files/recent"
 FOLDER_KEY = "files/last_folder"
+BACKUP_FOLDER_KEY = "files/backup_folder"  # where the last backup copy went
 
 
 class FileWorkflow(QObject):
@@ -188,6 +191,47 @@ class FileWorkflow(QObject):
         if target.suffix.lower() != ".prm":
             target = target.with_name(target.name + ".prm")
         return self.save_to(target)
+
+    def save_backup_copy(self, path: Path | None = None) -> Path | None:
+        """File → Save backup copy: write the document's values to another file and keep
+        working on the document as it was (its file, its unsaved changes: a later Save or
+        Exit never writes into the copy). Asks for the name unless ``path`` is given; returns
+        the file written, None when cancelled or when it cannot be written (then said so)."""
+        if path is None:
+            path = self._ask_backup_name()
+            if path is None:
+                return None
+        from prm9tool.files.backup import write_device_file
+        from prm9tool.files.prmdocument import contents_of
+
+        try:  # what the document holds, also when it breaks a rule (the file then says so)
+            problems = write_device_file(contents_of(self._doc), path)
+        except FileFormatError as exc:
+            self._report_file_error(self.tr("Cannot save “{0}”").format(path.name), exc)
+            return None
+        self._settings.setValue(BACKUP_FOLDER_KEY, str(path.parent))
+        message = self.tr("Backup copy saved as {0}; {1} stays the open document").format(
+            str(path), self._doc.path.name if self._doc.path else self.tr("untitled")
+        )
+        if problems:
+            message += " " + self.tr("(marked: %n rule(s) broken)", "", len(problems))
+        self.message_posted.emit(message)
+        return path
+
+    def _ask_backup_name(self) -> Path | None:
+        folder = self._settings.value(BACKUP_FOLDER_KEY, self.last_folder())
+        stamp = datetime.now().strftime("%Y%m%d-%H%M")
+        name = self._suggested_name().removesuffix(".prm") + f"_{stamp}.prm"
+        path, _filter = QFileDialog.getSaveFileName(
+            self._window,
+            self.tr("Save backup copy"),
+            str(Path(str(folder)) / name),
+            self.tr("Parameter files (*.prm)"),
+        )
+        if not path:
+            return None
+        target = Path(path)
+        return target if target.suffix.lower() == ".prm" else target.with_name(target.name + ".prm")
 
     def save_to(self, path: Path) -> bool:
         """Save atomically to ``path``; errors are reported and nothing is lost."""

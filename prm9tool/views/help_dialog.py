@@ -1,13 +1,22 @@
-"""Help: the program's own help page (shipped HTML), the homepage, and About with versions."""
+"""Help: the program's own help pages (shipped HTML: the main page and one per topic — CAN
+bus, tuning, compare, history), F1 in a window opening the page about it, the homepage, and
+About with versions."""
 
 from __future__ import annotations
 
 import platform
 
 from PySide6 import __version__ as pyside_version
-from PySide6.QtCore import QCoreApplication, QEvent, QFile, QUrl, qVersion
-from PySide6.QtGui import QDesktopServices
-from PySide6.QtWidgets import QDialog, QDialogButtonBox, QTextBrowser, QVBoxLayout, QWidget
+from PySide6.QtCore import QCoreApplication, QEvent, QFile, Qt, QUrl, qVersion
+from PySide6.QtGui import QDesktopServices, QKeySequence, QShortcut
+from PySide6.QtWidgets import (
+    QDialog,
+    QDialogButtonBox,
+    QTextBrowser,
+    QVBoxLayout,
+    QWidget,
+)
+from shiboken6 import Shiboken
 
 from prm9tool import __version__
 from prm9tool.buildinfo import build_info
@@ -18,17 +27,54 @@ HELP_PREFIX = ":/help/"  # resources/help/, compiled into resources_rc
 HOMEPAGE = "https://www.argo-hytos.com"
 
 
-def help_file(language: str) -> str:
-    """The resource path of the help page in ``language`` (English if there is none)."""
-    path = f"{HELP_PREFIX}help_{language}.html"
-    return path if QFile.exists(path) else f"{HELP_PREFIX}help_en.html"
+TOPICS = ("help", "can", "tuning", "compare", "history")  # help_en.html, can_en.html, …
+_HELP: list[HelpWindow] = []  # the one help window, once made
+
+
+def help_file(language: str, topic: str = "help") -> str:
+    """The resource path of the page ``topic`` in ``language`` (English if there is none)."""
+    path = f"{HELP_PREFIX}{topic}_{language}.html"
+    return path if QFile.exists(path) else f"{HELP_PREFIX}{topic}_en.html"
+
+
+def help_window(parent: QWidget | None = None) -> HelpWindow:
+    """The program's one help window (made on first use, beside ``parent``'s window)."""
+    window = _HELP[0] if _HELP else None
+    if window is None or not Shiboken.isValid(window):  # deleted with the window it belonged to
+        root = parent
+        while root is not None and root.parentWidget() is not None:
+            root = root.parentWidget()  # the main window, not a dialog closed (deleted) soon
+        window = HelpWindow(root)
+        _HELP[:] = [window]
+    return window
+
+
+def show_help(parent: QWidget | None = None, topic: str = "help") -> HelpWindow:
+    """Show the help page ``topic`` (the main page by default) and bring it to the front."""
+    window = help_window(parent)
+    window.show_topic(topic)
+    window.show()
+    window.raise_()
+    return window
+
+
+show_help_page = show_help  # the name the main window uses beside its own show_help
+
+
+def add_context_help(widget: QWidget, topic: str) -> QShortcut:
+    """F1 in ``widget`` (a dialog or window) opens the help page ``topic``."""
+    shortcut = QShortcut(QKeySequence(QKeySequence.StandardKey.HelpContents), widget)
+    shortcut.setContext(Qt.ShortcutContext.WidgetWithChildrenShortcut)
+    shortcut.activated.connect(lambda: show_help(widget, topic))
+    return shortcut
 
 
 class HelpWindow(QDialog):
-    """Shows the local help page; follows the program language."""
+    """Shows the local help pages; follows the program language."""
 
     def __init__(self, parent: QWidget | None = None) -> None:
         super().__init__(parent)
+        self.topic = "help"
         self.browser = QTextBrowser()
         self.browser.setOpenExternalLinks(True)
         buttons = QDialogButtonBox(QDialogButtonBox.StandardButton.Close)
@@ -39,10 +85,15 @@ class HelpWindow(QDialog):
         self.resize(760, 640)
         self.retranslate()
 
+    def show_topic(self, topic: str) -> None:
+        """Show the page ``topic`` (see :data:`TOPICS`) in the current language."""
+        self.topic = topic if topic in TOPICS else "help"
+        self.browser.setSource(QUrl("qrc" + help_file(current_language(), self.topic)))
+
     def retranslate(self) -> None:
         """Load the page in the current language."""
         self.setWindowTitle(self.tr("prm9tool help"))
-        self.browser.setSource(QUrl("qrc" + help_file(current_language())))
+        self.show_topic(self.topic)
 
     def changeEvent(self, event: QEvent) -> None:
         """Reload when the program language changes."""

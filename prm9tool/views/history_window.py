@@ -28,15 +28,39 @@ from PySide6.QtWidgets import (
     QWidget,
 )
 
+from prm9tool.catalogue import CATALOGUE
 from prm9tool.catalogue.typekey import TypeKey
 from prm9tool.compare.model import Comparison, Side
 from prm9tool.errors import Prm9Error
 from prm9tool.history.recorder import Recorder
+from prm9tool.i18n import format_value
 from prm9tool.translate import error_text
 from prm9tool.views import prompts
+from prm9tool.views.help_dialog import add_context_help
 
 Index = QModelIndex | QPersistentModelIndex
 Record = dict[str, Any]
+MEANING = 3  # the column saying what was done
+MAX_CHANGES = 4  # changed values listed in that column (all of them in the record)
+
+
+def _details(record: Record) -> dict[str, Any]:
+    try:
+        details = json.loads(record.get("details") or "{}")
+    except (TypeError, ValueError):
+        return {}
+    return details if isinstance(details, dict) else {}
+
+
+def _change(mnemonic: str, pair: object) -> str:
+    """``POSKP 0.4 → 0.6`` in display units (raw when the catalogue has no such parameter)."""
+    param = CATALOGUE.get(mnemonic)
+    old, new = pair if isinstance(pair, list) and len(pair) == 2 else ("?", "?")
+    if param is None or not isinstance(old, int | str) or not isinstance(new, int | str):
+        return f"{mnemonic} {old} → {new}"
+    return (
+        f"{mnemonic} {format_value(param, old)} → {format_value(param, new)} {param.unit}".strip()
+    )
 
 
 class HistoryTableModel(QAbstractTableModel):
@@ -56,25 +80,75 @@ class HistoryTableModel(QAbstractTableModel):
         return 0 if parent.isValid() else len(self.records)
 
     def columnCount(self, parent: Index = QModelIndex()) -> int:  # noqa: B008
-        return 0 if parent.isValid() else 7
+        return 0 if parent.isValid() else 8
 
     def headerData(self, section: int, orientation: Qt.Orientation, role: int = 0) -> Any:
         if orientation != Qt.Orientation.Horizontal or role != Qt.ItemDataRole.DisplayRole:
             return None
-        return [self.tr("No."), self.tr("Time (UTC)"), self.tr("Operation"), self.tr("Outcome"),
-                self.tr("Type key"), self.tr("Firmware"), self.tr("User, station, link")][section]  # fmt: skip
+        return [self.tr("No."), self.tr("Time (UTC)"), self.tr("Operation"),
+                self.tr("What was done"), self.tr("Outcome"), self.tr("Type key"),
+                self.tr("Firmware"), self.tr("User, station, link")][section]  # fmt: skip
 
     def data(self, index: Index, role: int = 0) -> Any:
+        r = self.records[index.row()]
+        if role == Qt.ItemDataRole.ToolTipRole and index.column() == MEANING:
+            return self.meaning(r)
         if role != Qt.ItemDataRole.DisplayRole:
             return None
-        r = self.records[index.row()]
         failed = f" ({r['failed_step']})" if r["failed_step"] else ""
         cells = [
             str(r["seq"]), r["recorded_at"][:19].replace("T", " "), r["operation"],
-            r["outcome"] + failed, r["type_key"], r["firmware"],
+            self.meaning(r), r["outcome"] + failed, r["type_key"], r["firmware"],
             f"{r['os_user']}@{r['host']}, {r['device_id']}",
         ]  # fmt: skip
         return cells[index.column()]
+
+    def meaning(self, record: Record) -> str:
+        """What the user did, in the program language: the operation, why, and the values
+        it changed in display units ("Tuning accepted online: Autotune; POSKP 0.4 → 0.6")."""
+        details = _details(record)
+        operation = record["operation"]
+        text = self._operations().get(operation) or str(operation)
+        why = [self._purposes().get(str(details["purpose"]), str(details["purpose"]))
+               if "purpose" in details else "",
+               str(details.get("source", "")), str(details.get("what", ""))]  # fmt: skip
+        shown = ", ".join(part for part in why if part)
+        changed = details.get("changes")
+        if isinstance(changed, dict) and changed:
+            listed = [_change(mn, pair) for mn, pair in list(changed.items())[:MAX_CHANGES]]
+            more = len(changed) - MAX_CHANGES
+            if more > 0:
+                listed.append(self.tr("%n more", "", more))
+            shown = "; ".join(part for part in (shown, ", ".join(listed)) if part)
+        return f"{text}: {shown}" if shown else text
+
+    def _operations(self) -> dict[str, str]:
+        return {
+            "download": self.tr("Read from the valve"),
+            "upload": self.tr("Written, verified and stored"),
+            "batch-upload": self.tr("Written by --batch"),
+            "store": self.tr("Stored (Valve → Store in valve)"),
+            "online-edits": self.tr("Values changed online, stored"),
+            "backup": self.tr("Backup of the valve's values"),
+            "restore-factory": self.tr("Factory values restored"),
+            "characterization": self.tr("Test report"),
+            "compare-apply": self.tr("Values from a compared file, written online"),
+            "history-restore": self.tr("Values from the history, written online"),
+            "tuning-accepted": self.tr("Tuning accepted, written online"),
+        }
+
+    def _purposes(self) -> dict[str, str]:
+        return {
+            "compare": self.tr("going online"),
+            "download": self.tr("Valve → Download"),
+            "compare_view": self.tr("Compare with valve"),
+            "upload": self.tr("Valve → Upload"),
+            "compare: values chosen from the document": self.tr("chosen in the compare view"),
+            "going online: values chosen per parameter": self.tr(
+                "chosen per parameter going online"
+            ),
+            "history: a record's values restored": self.tr("a history record restored"),
+        }
 
 
 class HistoryWindow(QDialog):
@@ -87,7 +161,7 @@ class HistoryWindow(QDialog):
         self,
         recorder: Recorder,
         serial: int | None,
-        restore_document: Callable[[TypeKey, dict[str, int | str]], None],
+        restore_document: Callable[[TypeKey | None, dict[str, int | str]], None],
         restore_valve: Callable[[int, dict[str, int | str]], bool],
         parent: QWidget | None = None,
     ) -> None:
@@ -95,6 +169,7 @@ class HistoryWindow(QDialog):
         self._recorder = recorder
         self._restore_document, self._restore_valve = restore_document, restore_valve
         self.setWindowTitle(self.tr("History"))
+        add_context_help(self, "history")  # F1
         self.serial = QLineEdit(str(serial) if serial else "")
         self.serial.setPlaceholderText(self.tr("serial number"))
         show = QPushButton(self.tr("Show"))
@@ -195,19 +270,36 @@ class HistoryWindow(QDialog):
         return TypeKey.parse(whole["type_key"]), dict(json.loads(whole["parameters"]))
 
     def compare_selected(self) -> CompareDialogLike | None:
-        """Show the difference of the two selected records in the compare view."""
-        from prm9tool.views.compare_view import CompareDialog
+        """Show the difference of the two selected records in the compare view, from which
+        the ticked values go into the document or into the valve they were recorded from."""
+        from prm9tool.views.compare_view import DOCUMENT, VALVE, CompareDialog
 
-        sides = []
-        for record in self.selected():
+        sides, records = [], self.selected()
+        for record in records:
             full = self._full(record)
             if full is None:
                 return None
             label = self.tr("No. {0}, {1}").format(record["seq"], record["recorded_at"][:19])
             sides.append(Side(label, full[0], full[1]))
-        dialog = CompareDialog(Comparison((sides[0], sides[1])), (), parent=self)
+        comparison = Comparison((sides[0], sides[1]))
+        dialog = CompareDialog(comparison, (), parent=self, destinations=(DOCUMENT, VALVE))
+        serial = int(records[0]["serial"])
+        dialog.accepted.connect(lambda: self._on_compare_applied(dialog.applied, serial))
         dialog.open()
         return dialog
+
+    def _on_compare_applied(self, applied: object, serial: int) -> None:
+        """Ticked values of two records: into the document (one undo step, its type key kept)
+        or into the valve they came from (a transactional upload)."""
+        from prm9tool.views.compare_view import DOCUMENT
+
+        if not isinstance(applied, tuple) or not applied[1]:
+            return
+        target, values = applied
+        if target == DOCUMENT:
+            self._restore_document(None, dict(values))
+        elif not self._restore_valve(serial, dict(values)):
+            self._not_online(serial)
 
     def _restore(self, how: Callable[[Record, TypeKey, dict[str, int | str]], None]) -> None:
         (record,) = self.selected()
@@ -224,9 +316,12 @@ class HistoryWindow(QDialog):
         self, record: Record, _key: TypeKey, values: dict[str, int | str]
     ) -> None:
         if not self._restore_valve(int(record["serial"]), values):
-            prompts.inform(self, prompts.Icon.Warning, self.tr("Restore to the valve"),
-                           self.tr("Go online with valve {0} first: a record is restored only "
-                                   "into the valve it was recorded from.").format(record["serial"]))  # fmt: skip
+            self._not_online(int(record["serial"]))
+
+    def _not_online(self, serial: int) -> None:
+        prompts.inform(self, prompts.Icon.Warning, self.tr("Restore to the valve"),
+                       self.tr("Go online with valve {0} first: a record is restored only "
+                               "into the valve it was recorded from.").format(serial))  # fmt: skip
 
     def edit_settings(self) -> None:
         """Choose the database and the policy; the new database is used from now on."""

@@ -31,7 +31,7 @@ from prm9tool.views.dcf_export import DcfExport
 from prm9tool.views.emcy import status_summary
 from prm9tool.views.emulated_valve import EmulatedValveMenu
 from prm9tool.views.file_workflow import FileWorkflow
-from prm9tool.views.help_dialog import HelpWindow, about_html, open_homepage
+from prm9tool.views.help_dialog import HelpWindow, about_html, open_homepage, show_help_page
 from prm9tool.views.icons import icon
 from prm9tool.views.link_guard import LinkGuard
 from prm9tool.views.page_stack import PageStack
@@ -73,7 +73,9 @@ class MainWindow(QMainWindow):
         self.valve = ValveWorkflow(self, doc, undo, connection, self.sync, settings, access)
         self.control = ValveControl(connection, self)
         self.records = RecordActions(self)
-        self.compare = CompareWorkflow(self, doc, undo, access, connection, self.sync, self.valve)
+        self.compare = CompareWorkflow(
+            self, doc, undo, access, connection, self.sync, self.valve, settings
+        )
         self.dcf = DcfExport(doc, self)
         self.link_guard = LinkGuard(doc, connection, self)
         self.commands = MainActions(self)
@@ -170,6 +172,7 @@ class MainWindow(QMainWindow):
             "open": self.files.open_dialog,
             "save": self.files.save,
             "save_as": self.files.save_as,
+            "save_copy": self.files.save_backup_copy,
             "undo": self.undo.stack.undo,
             "redo": self.undo.stack.redo,
             "print": self.records.print_record,
@@ -188,6 +191,7 @@ class MainWindow(QMainWindow):
             "valve_status": self.show_status_window,
             "upload": self.valve.upload,
             "download": self.valve.download,
+            "store": self.valve.store,
             "restore_factory": self.valve.restore_factory,
             "restart": self.valve.restart,
             "hid_configuration": self.valve.configure_hid,
@@ -322,10 +326,7 @@ class MainWindow(QMainWindow):
 
     def show_help(self) -> HelpWindow:
         """Show the help page of this program."""
-        if self.help_window is None:
-            self.help_window = HelpWindow(self)
-        self.help_window.show()
-        self.help_window.raise_()
+        self.help_window = show_help_page(self)
         return self.help_window
 
     def show_about(self) -> None:

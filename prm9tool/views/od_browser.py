@@ -1,13 +1,16 @@
 """View → Object dictionary: every object of the connected valve's dictionary, from the
 catalogue (index, sub-index, name, type, access, raw value); read all, and at Expert level write
 any writable object (double-click). Over any link; over CANopen the objects a valve lacks show
-"not available over CANopen on this valve"."""
+"not available over CANopen on this valve". A search line filters the rows (index, name, type,
+value: any column) through a QSortFilterProxyModel over the objects' model."""
 
 from __future__ import annotations
 
 from collections.abc import Callable
 from typing import Any
 
+from PySide6.QtCore import QModelIndex, QSortFilterProxyModel, Qt
+from PySide6.QtGui import QStandardItem, QStandardItemModel
 from PySide6.QtWidgets import (
     QAbstractItemView,
     QDialog,
@@ -15,9 +18,9 @@ from PySide6.QtWidgets import (
     QHeaderView,
     QInputDialog,
     QLabel,
+    QLineEdit,
     QPushButton,
-    QTableWidget,
-    QTableWidgetItem,
+    QTableView,
     QVBoxLayout,
     QWidget,
 )
@@ -29,6 +32,7 @@ from prm9tool.i18n import text
 from prm9tool.model.access import AccessModel
 from prm9tool.online.connection import ValveConnection
 from prm9tool.translate import error_text
+from prm9tool.views.help_dialog import add_context_help
 
 READ_ALL = "od_read_all"
 COLUMNS = 6
@@ -61,13 +65,24 @@ class ObjectDictionaryDialog(QDialog):
     ) -> None:
         super().__init__(parent)
         self.setWindowTitle(self.tr("Object dictionary"))
+        add_context_help(self, "can")  # F1
         self._connection, self._access = connection, access
         self._params: list[Parameter] = sorted(CATALOGUE.for_variant(variant), key=lambda p: p.key)
-        self.table = QTableWidget(len(self._params), COLUMNS)
-        self.table.setHorizontalHeaderLabels(
+        self.model = QStandardItemModel(len(self._params), COLUMNS, self)
+        self.model.setHorizontalHeaderLabels(
             [self.tr("Index"), self.tr("Sub"), self.tr("Name"), self.tr("Type"),
              self.tr("Access"), self.tr("Value")]
         )  # fmt: skip
+        self.proxy = QSortFilterProxyModel(self)
+        self.proxy.setSourceModel(self.model)
+        self.proxy.setFilterKeyColumn(-1)  # a match in any column keeps the row
+        self.proxy.setFilterCaseSensitivity(Qt.CaseSensitivity.CaseInsensitive)
+        self.search = QLineEdit()
+        self.search.setClearButtonEnabled(True)
+        self.search.setPlaceholderText(self.tr("Search: index, name, type or value"))
+        self.search.textChanged.connect(self.proxy.setFilterFixedString)
+        self.table = QTableView()
+        self.table.setModel(self.proxy)
         self.table.verticalHeader().hide()
         self.table.setEditTriggers(QAbstractItemView.EditTrigger.NoEditTriggers)
         self.table.setSelectionBehavior(QAbstractItemView.SelectionBehavior.SelectRows)
@@ -79,14 +94,17 @@ class ObjectDictionaryDialog(QDialog):
             cells = [f"0x{param.index:04X}", str(param.subindex), text(param.text),
                      param.dtype.name, param.obj_access.value, ""]  # fmt: skip
             for column, cell in enumerate(cells):
-                self.table.setItem(row, column, QTableWidgetItem(cell))
-        self.table.cellDoubleClicked.connect(self._on_table_double_clicked)
+                item = QStandardItem(cell)
+                item.setEditable(False)
+                self.model.setItem(row, column, item)
+        self.table.doubleClicked.connect(self._on_table_double_clicked_at)
         self.read = QPushButton(self.tr("Read all"))
         self.read.clicked.connect(self.read_all)
         self.note = QLabel()
         self.note.setWordWrap(True)
         buttons = QHBoxLayout()
         buttons.addWidget(self.read)
+        buttons.addWidget(self.search, 1)
         buttons.addWidget(self.note, 1)
         layout = QVBoxLayout(self)
         layout.addLayout(buttons)
@@ -118,10 +136,14 @@ class ObjectDictionaryDialog(QDialog):
                 self._value_cell(row).setText(shown)
                 self._value_cell(row).setToolTip(shown)
 
-    def _value_cell(self, row: int) -> QTableWidgetItem:
-        item = self.table.item(row, 5)
+    def _value_cell(self, row: int) -> QStandardItem:
+        item = self.model.item(row, 5)
         assert item is not None  # every cell is filled in __init__
         return item
+
+    def _on_table_double_clicked_at(self, index: QModelIndex) -> None:
+        source = self.proxy.mapToSource(index)
+        self._on_table_double_clicked(source.row(), source.column())
 
     def _shown(self, param: Parameter, value: object) -> str:
         if isinstance(value, SdoAbortError) and value.code == AbortCode.NO_DATA:

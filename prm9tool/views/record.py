@@ -1,6 +1,9 @@
-"""The printed parameter record: header, every parameter with its unit, the diagram picture.
+"""The printed parameter record: header, every parameter with its unit, the diagram picture,
+a signature line; on every page type key, serial number and the page number.
 
-The same QTextDocument is printed (print dialog) and written to PDF, so the two agree.
+The same QTextDocument is printed (print dialog) and written to PDF, so the two agree. Values
+that differ from the file the record names are marked: a record of unsaved edits must not pass
+for the file's contents.
 """
 
 from __future__ import annotations
@@ -11,29 +14,25 @@ from dataclasses import dataclass
 from datetime import datetime
 from pathlib import Path
 
-from PySide6.QtCore import QCoreApplication, QMarginsF, QRectF, QSizeF, QUrl
-from PySide6.QtGui import (
-    QGuiApplication,
-    QImage,
-    QPageLayout,
-    QPageSize,
-    QPainter,
-    QTextDocument,
-)
+from PySide6.QtCore import QCoreApplication, QRectF, QUrl
+from PySide6.QtGui import QImage, QPageLayout, QPainter, QTextDocument
 from PySide6.QtPrintSupport import QPrinter
 
 from prm9tool.i18n import current_language, format_value, text
 from prm9tool.model.document import ParameterDocument
+from prm9tool.views.paged_print import (
+    A4_LAYOUT,
+    PageFrame,
+    body_size,
+    configure_pdf,
+    print_paged,
+)
 
+__all__ = ["A4_LAYOUT", "RecordHeader", "build_record", "configure_pdf", "record_frame"]
 translate = QCoreApplication.translate
 DiagramPainter = Callable[[QPainter, QRectF], None]
 DIAGRAM_URL = "prm9tool://diagram.png"
-A4_LAYOUT = QPageLayout(
-    QPageSize(QPageSize.PageSizeId.A4),
-    QPageLayout.Orientation.Portrait,
-    QMarginsF(15, 15, 15, 15),
-    QPageLayout.Unit.Millimeter,
-)
+UNSAVED_MARK = "*"
 
 
 @dataclass
@@ -47,28 +46,67 @@ class RecordHeader:
 
 
 def record_rows(doc: ParameterDocument) -> list[tuple[str, str, str, str]]:
-    """(mnemonic, description, value, unit) of every file parameter, in catalogue order."""
+    """(mnemonic, description, value, unit) of every file parameter, in catalogue order; a
+    value not saved in the document's file ends in :data:`UNSAVED_MARK`."""
     rows = []
+    unsaved = set(doc.unsaved_mnemonics()) if doc.path is not None else set()
     for param in doc.parameters():
         raw = doc.value(param.mnemonic)
         value = format_value(param, raw)
         if param.choices and isinstance(raw, int):
             value = f"{raw}: {param.choice_text(raw, current_language())}"
+        if param.mnemonic in unsaved:
+            value += f" {UNSAVED_MARK}"
         rows.append((param.mnemonic, text(param.text), value, param.unit))
     return rows
 
 
-def page_size(layout: QPageLayout) -> QSizeF:
-    """The printable part of a page in the units a text document lays out in (screen pixels).
+def record_file_stem(type_key: str, serial: str = "") -> str:
+    """A file name (without suffix) for a record or report: type key and serial number.
 
-    A record laid out on this page size is printed page by page as it is, scaled to the
-    printer's page. Without a page size ``QTextDocument.print_`` adds margins of its own and
-    a picture as wide as the text overflowed the page (issue 14, item 3).
+    The type key's "/" would make a folder; its dots stay (a name ends in ".pdf").
     """
-    screen = QGuiApplication.primaryScreen()
-    dpi = screen.logicalDotsPerInchX() if screen is not None else 96.0
-    points = layout.paintRect(QPageLayout.Unit.Point).size()
-    return QSizeF(points.width() * dpi / 72, points.height() * dpi / 72)
+    key = type_key.replace("/", "_").replace("\\", "_")
+    return f"{key}_{serial}" if serial else key
+
+
+def record_frame(doc: ParameterDocument, header: RecordHeader) -> PageFrame:
+    """What each page of the record repeats: the valve, the title, the file and the date."""
+    serial = _serial(doc, header)
+    subject = str(doc.type_key)
+    if serial != "—":
+        subject += " · " + translate("Record", "serial number {0}").format(serial)
+    return PageFrame(
+        subject,
+        translate("Record", "PRM9 parameter record"),
+        f"{_file_name(doc)} · {_date(header)}",
+    )
+
+
+def _serial(doc: ParameterDocument, header: RecordHeader) -> str:
+    return header.serial or (str(doc.source_serial) if doc.source_serial else "—")
+
+
+def _date(header: RecordHeader) -> str:
+    return (header.date or datetime.now()).strftime("%Y-%m-%d %H:%M")
+
+
+def _file_name(doc: ParameterDocument) -> str:
+    return str(doc.path) if doc.path else translate("Record", "untitled")
+
+
+def _file_fact(doc: ParameterDocument) -> str:
+    """The file line: the file, and whether the values printed are what it holds."""
+    if doc.path is None:
+        return translate("Record", "untitled (the values are not saved in a file)")
+    if not doc.modified:
+        return str(doc.path)
+    if not doc.unsaved_mnemonics():  # another valve type than the file's
+        return translate("Record", "{0} (changed, not saved: the file holds another valve type)"
+                         ).format(str(doc.path))  # fmt: skip
+    return translate(
+        "Record", "{0} (changed, not saved: the values marked {1} differ from the file)"
+    ).format(str(doc.path), UNSAVED_MARK)
 
 
 def build_record(
@@ -80,7 +118,7 @@ def build_record(
     """The record as a text document laid out on the pages of ``layout``, ready to print."""
     record = QTextDocument()
     record.setDocumentMargin(0)
-    size = page_size(layout)
+    size = body_size(layout)
     record.setPageSize(size)
     if diagram is not None:
         record.addResource(
@@ -117,16 +155,13 @@ def _trimmed(image: QImage, margin: int = 12) -> QImage:
 
 def _html(doc: ParameterDocument, header: RecordHeader, picture_width: float | None) -> str:
     t = html.escape
-    date = (header.date or datetime.now()).strftime("%Y-%m-%d %H:%M")
-    file_name = str(doc.path) if doc.path else translate("Record", "untitled")
-    serial = header.serial or (str(doc.source_serial) if doc.source_serial else "—")
     firmware = header.firmware or doc.source_firmware or "—"
     facts = [
         (translate("Record", "Type key"), str(doc.type_key)),
-        (translate("Record", "Serial number"), serial),
+        (translate("Record", "Serial number"), _serial(doc, header)),
         (translate("Record", "Firmware"), firmware),
-        (translate("Record", "File"), file_name),
-        (translate("Record", "Date"), date),
+        (translate("Record", "File"), _file_fact(doc)),
+        (translate("Record", "Date"), _date(header)),
         (translate("Record", "Access level"), header.access_level),
     ]
     head = "".join(f"<tr><td><b>{t(k)}:</b></td><td>{t(v)}</td></tr>" for k, v in facts)
@@ -148,27 +183,32 @@ def _html(doc: ParameterDocument, header: RecordHeader, picture_width: float | N
     return (
         f"<h2>{t(translate('Record', 'PRM9 parameter record'))}</h2>"
         f"<table cellspacing='2'>{head}</table>{picture}"
-        f"<table border='1' cellspacing='0' cellpadding='3' width='100%'>"
-        f"<thead><tr>{heading}</tr></thead>{rows}</table>"
+        f"<table border='1' cellspacing='0' cellpadding='3' width='100%' style='border-collapse: collapse; border-color: #808080'>"
+        f"<thead><tr>{heading}</tr></thead>{rows}</table>{signature_line()}"
     )
 
 
-def configure_pdf(printer: QPrinter, path: Path, title: str) -> None:
-    """Make ``printer`` write a PDF of :data:`A4_LAYOUT` pages to ``path``."""
-    printer.setOutputFormat(QPrinter.OutputFormat.PdfFormat)
-    printer.setOutputFileName(str(path))
-    printer.setDocName(title)
-    printer.setCreator("prm9tool")
-    printer.setPageLayout(A4_LAYOUT)
+def signature_line() -> str:
+    """Date, name and signature of whoever checked the record, to be filled in by hand."""
+    blank = "_" * 22
+    cells = "".join(
+        f"<td>{html.escape(label)} {blank}</td>"
+        for label in (
+            translate("Record", "Date:"),
+            translate("Record", "Name:"),
+            translate("Record", "Signature:"),
+        )
+    )
+    return f"<p>&nbsp;</p><table width='100%' cellspacing='0'><tr>{cells}</tr></table>"
 
 
-def write_pdf(record: QTextDocument, path: Path, title: str) -> None:
-    """Write ``record`` (built for :data:`A4_LAYOUT`) as a PDF to ``path``.
+def write_pdf(record: QTextDocument, path: Path, title: str, frame: PageFrame) -> None:
+    """Write ``record`` as a PDF of :data:`A4_LAYOUT` pages, each with ``frame``, to ``path``.
 
     Raises OSError if it cannot be written.
     """
     printer = QPrinter(QPrinter.PrinterMode.HighResolution)
     configure_pdf(printer, path, title)
-    record.print_(printer)
+    print_paged(record, printer, frame)
     if not path.exists() or path.stat().st_size == 0:
         raise OSError(f"cannot write {path}")

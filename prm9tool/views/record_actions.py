@@ -19,6 +19,8 @@ if TYPE_CHECKING:
     from PySide6.QtGui import QPageLayout, QTextDocument
 
     from prm9tool.views.main_window import MainWindow
+    from prm9tool.views.paged_print import PageFrame
+    from prm9tool.views.record import RecordHeader
 
 
 class RecordActions(QObject):
@@ -30,35 +32,64 @@ class RecordActions(QObject):
         super().__init__(window)
         self._window = window
 
-    def record(self, layout: QPageLayout | None = None) -> QTextDocument:
-        """The record of the current document (with the diagram picture when available).
-
-        Laid out on the pages of ``layout`` (A4 with 15 mm margins unless given).
-        """
-        from prm9tool.views.record import A4_LAYOUT, RecordHeader, build_record
+    def header(self) -> RecordHeader:
+        """The record's facts besides the document's: access level, the valve online, now."""
+        from prm9tool.views.record import RecordHeader
 
         w = self._window
         level = self.tr("Expert") if w.access.level is Access.EXPERT else self.tr("Basic")
         info = w.connection.device
-        header = RecordHeader(
+        return RecordHeader(
             access_level=level,
             serial=str(info.serial) if info else "",
             firmware=info.firmware if info else "",
             date=datetime.now(),
         )
+
+    def record(
+        self, layout: QPageLayout | None = None, header: RecordHeader | None = None
+    ) -> QTextDocument:
+        """The record of the current document (with the diagram picture when available).
+
+        Laid out on the pages of ``layout`` (A4 with 15 mm margins unless given).
+        """
+        from prm9tool.views.record import A4_LAYOUT, build_record
+
+        w = self._window
         diagram = getattr(w.views.get("diagram"), "render_picture", None)
-        return build_record(w.doc, header, diagram, layout or A4_LAYOUT)
+        return build_record(w.doc, header or self.header(), diagram, layout or A4_LAYOUT)
+
+    def _frame(self, header: RecordHeader) -> PageFrame:
+        from prm9tool.views.record import record_frame
+
+        return record_frame(self._window.doc, header)
+
+    def file_stem(self) -> str:
+        """The name a record file is proposed under: type key and serial number."""
+        from prm9tool.views.record import record_file_stem
+
+        doc, info = self._window.doc, self._window.connection.device
+        serial = info.serial if info else doc.source_serial
+        return record_file_stem(str(doc.type_key), str(serial) if serial else "")
 
     def print_record(self) -> bool:
-        """Print through the print dialog."""
+        """Print through the print dialog (15 mm margins proposed)."""
+        from PySide6.QtCore import QMarginsF
+        from PySide6.QtGui import QPageLayout
         from PySide6.QtPrintSupport import QPrintDialog, QPrinter
 
+        from prm9tool.views.paged_print import MARGIN_MM, print_paged
+
         printer = QPrinter(QPrinter.PrinterMode.HighResolution)
-        printer.setDocName(self._title())
+        margins = QMarginsF(MARGIN_MM, MARGIN_MM, MARGIN_MM, MARGIN_MM)
+        printer.setPageMargins(margins, QPageLayout.Unit.Millimeter)
+        # the job's name; Qt's "print to file" proposes it up to its last dot, plus ".pdf"
+        printer.setDocName(self.file_stem() + ".pdf")
         dialog = QPrintDialog(printer, self._window)
         if dialog.exec() != QDialog.DialogCode.Accepted:
             return False
-        self.record(printer.pageLayout()).print_(printer)
+        header = self.header()
+        print_paged(self.record(printer.pageLayout(), header), printer, self._frame(header))
         self.message_posted.emit(self.tr("Parameter record printed"))
         return True
 
@@ -67,7 +98,7 @@ class RecordActions(QObject):
         doc = self._window.doc
         base = doc.path.with_suffix(".pdf") if doc.path else None
         folder = Path(self._window.files.last_folder())
-        suggestion = base or folder / (str(doc.type_key).replace("/", "_") + ".pdf")
+        suggestion = base or folder / (self.file_stem() + ".pdf")
         path, _filter = QFileDialog.getSaveFileName(
             self._window, self.tr("Export PDF"), str(suggestion), self.tr("PDF files (*.pdf)")
         )
@@ -82,8 +113,9 @@ class RecordActions(QObject):
         """Write the record to ``path``; a failure is reported and returns False."""
         from prm9tool.views.record import write_pdf
 
+        header = self.header()
         try:
-            write_pdf(self.record(), path, self._title())
+            write_pdf(self.record(header=header), path, self._title(), self._frame(header))
         except OSError as exc:
             prompts.ask(
                 self._window,

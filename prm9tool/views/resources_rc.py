@@ -6,7 +6,363 @@
 from PySide6 import QtCore
 
 qt_resource_data = b"\
-\x00\x00\x13\xd9\
+\x00\x00\x09R\
+<\
+!DOCTYPE html>\x0a<\
+html lang=\x22de\x22>\x0a\
+<head><meta char\
+set=\x22utf-8\x22><tit\
+le>CAN-Bus und C\
+ANopen</title></\
+head>\x0a<body>\x0a<p>\
+<a href=\x22help_de\
+.html\x22>Hilfe zu \
+prm9tool</a></p>\
+\x0a<h1>CAN-Bus und\
+ CANopen</h1>\x0a<p\
+>Ein -CA-Ventil \
+spricht auch CAN\
+open (Handbuch K\
+apitel 7). prm9t\
+ool ist dann der\
+\x0aCANopen-Master,\
+ \xc3\xbcber jeden CAN\
+-Adapter, den py\
+thon-can unterst\
+\xc3\xbctzt (PEAK, Kva\
+ser, IXXAT,\x0aVect\
+or, CANable/slca\
+n, SocketCAN).</\
+p>\x0a<h2>\xc3\x9cber CAN\
+ online gehen</h\
+2>\x0a<ol>\x0a<li>Komm\
+unikation \xe2\x86\x92 <b\
+>CAN-Bus\xe2\x80\xa6</b>:\
+ Schnittstelle, \
+Kanal und Bitrat\
+e w\xc3\xa4hlen, dann\x0a\
+<b>Bus durchsuch\
+en</b>. Jeder an\
+twortende Knoten\
+ wird mit NMT-Zu\
+stand, Heartbeat\
+ und letzter\x0aEMC\
+Y aufgelistet; K\
+noten, die keine\
+ PRM9-Ventile si\
+nd, lassen sich \
+nicht w\xc3\xa4hlen.</\
+li>\x0a<li>Ventil w\
+\xc3\xa4hlen und OK dr\
+\xc3\xbccken: Das Prog\
+ramm geht mit ih\
+m online (<code>\
+can:KNOTEN</code\
+>).\x0aEin reales V\
+entil nennt sein\
+en vollst\xc3\xa4ndige\
+n Typschl\xc3\xbcssel \
+nicht: Geben Sie\
+ den vom Typensc\
+hild\x0aein; er wir\
+d je Seriennumme\
+r gespeichert.</\
+li>\x0a</ol>\x0a<h2>In\
+betriebnahme</h2\
+>\x0a<p>Ein -CA-Ven\
+til wartet im Au\
+slieferungszusta\
+nd auf seinen Ma\
+ster: NMT pre-op\
+erational,\x0aGer\xc3\xa4\
+tezustand INIT; \
+es folgt seinem \
+Sollwert nicht. \
+Ventil \xe2\x86\x92 <b>Ve\
+ntilstatus</b>, \
+Gruppe\x0aInbetrieb\
+nahme: <b>NMT St\
+art</b>, dann <b\
+>Freigeben</b> d\
+r\xc3\xbccken (Steuerw\
+ort 08h \xe2\x86\x92 09h \
+\xe2\x86\x92 0Bh\x0a\xe2\x86\x92 0Fh)\
+. Die Zeile unte\
+r den Schaltfl\xc3\xa4\
+chen sagt, was n\
+och fehlt. \xe2\x80\x9eSp\
+erren\xe2\x80\x9c und \xe2\x80\x9e\
+NMT Stopp\xe2\x80\x9c\x0aneh\
+men es zur\xc3\xbcck.<\
+/p>\x0a<h2>Objekte \
+und Konfiguratio\
+n</h2>\x0a<ul>\x0a<li>\
+Ansicht \xe2\x86\x92 <b>O\
+bjektverzeichnis\
+\xe2\x80\xa6</b> liest je\
+des Objekt; in d\
+er Suchzeile fin\
+den Sie einen\x0aIn\
+dex, einen Namen\
+ oder einen Wert\
+. In der Experte\
+nstufe schreibt \
+ein Doppelklick \
+ein\x0abeschreibbar\
+es Objekt.</li>\x0a\
+<li>Ansicht \xe2\x86\x92 \
+<b>CANopen-Fenst\
+er</b>: Node-ID,\
+ Bitrate und Abs\
+chlusswiderstand\
+. Das Ventil\x0alie\
+st seine Drehsch\
+alter beim Einsc\
+halten; eine ge\xc3\
+\xa4nderte Node-ID \
+oder Bitrate gil\
+t nach einem\x0aNeu\
+start, und nach \
+Ventil \xe2\x86\x92 Venti\
+l neu starten fi\
+ndet prm9tool da\
+s Ventil an sein\
+er neuen\x0aAdresse\
+.</li>\x0a<li>Datei\
+ \xe2\x86\x92 <b>DCF expo\
+rtieren\xe2\x80\xa6</b> s\
+peichert die Kon\
+figuration des V\
+entils f\xc3\xbcr ein\x0a\
+SPS-Konfiguratio\
+nswerkzeug.</li>\
+\x0a<li>Ventil \xe2\x86\x92 \
+<b>Im Ventil spe\
+ichern</b> speic\
+hert die Werte, \
+mit denen das Ve\
+ntil arbeitet,\x0ad\
+auerhaft (Objekt\
+ 0x1010, oder au\
+f dem eigenen We\
+g des Ventils, w\
+o es fehlt).</li\
+>\x0a</ul>\x0a<p>Das O\
+szilloskop nimmt\
+ die Schieberlag\
+e aus TPDO1; Sol\
+lwertgenerator u\
+nd Einstelltests\
+\x0asenden den Soll\
+wert in RPDO1, w\
+ie eine SPS.</p>\
+\x0a</body>\x0a</html>\
+\x0a\
+\x00\x00\x05\xea\
+<\
+!DOCTYPE html>\x0a<\
+html lang=\x22en\x22>\x0a\
+<head><meta char\
+set=\x22utf-8\x22><tit\
+le>Compare param\
+eter sets</title\
+></head>\x0a<body>\x0a\
+<p><a href=\x22help\
+_en.html\x22>prm9to\
+ol help</a></p>\x0a\
+<h1>Compare para\
+meter sets</h1>\x0a\
+<p>The compare v\
+iew shows two pa\
+rameter sets sid\
+e by side in dis\
+play units, with\
+ the factory\x0adef\
+aults as a third\
+ column. Bold va\
+lues differ.</p>\
+\x0a<ul>\x0a<li>File \xe2\
+\x86\x92 <b>Compare wi\
+th file\xe2\x80\xa6</b>: \
+the document aga\
+inst a <code>*.p\
+rm</code> file (\
+the\x0adialog opens\
+ in the folder u\
+sed last).</li>\x0a\
+<li>Valve \xe2\x86\x92 <b\
+>Compare with va\
+lve</b> (online)\
+: the document a\
+gainst what the \
+valve holds\x0anow.\
+</li>\x0a<li>Going \
+online with a do\
+cument that diff\
+ers: <b>Choose p\
+er parameter\xe2\x80\xa6<\
+/b>.</li>\x0a<li>Va\
+lve \xe2\x86\x92 History:\
+ two records sel\
+ected, <b>Compar\
+e the two select\
+ed records</b>.<\
+/li>\x0a</ul>\x0a<h2>P\
+utting values ba\
+ck</h2>\x0a<ol>\x0a<li\
+>Tick the value \
+you want in each\
+ row (a tick in \
+the column of th\
+e side it comes \
+from), or\x0ause <b\
+>Tick every show\
+n value of \xe2\x80\xa6</\
+b> for the rows \
+shown.</li>\x0a<li>\
+Press the button\
+ that says where\
+ the values go: \
+<b>Write \xe2\x80\xa6 tic\
+ked values into \
+the\x0avalve</b> (a\
+n upload of exac\
+tly those values\
+: written, read \
+back, compared, \
+stored) or\x0a<b>Ta\
+ke \xe2\x80\xa6 ticked va\
+lues into the do\
+cument</b> (one \
+undo step). The \
+line above the t\
+able says\x0awhich \
+column to tick f\
+or which button;\
+ a button stays \
+grey until somet\
+hing is ticked.<\
+/li>\x0a</ol>\x0a<p>Fi\
+lters: differenc\
+es only, one blo\
+ck of the flow d\
+iagram, the Basi\
+c or Expert leve\
+l.\x0aParameters on\
+e valve variant \
+lacks are shown \
+with \xe2\x80\x9c\xe2\x80\x94\xe2\x80\x9d a\
+nd cannot be cho\
+sen.</p>\x0a</body>\
+\x0a</html>\x0a\
+\x00\x00\x06\x83\
+<\
+!DOCTYPE html>\x0a<\
+html lang=\x22de\x22>\x0a\
+<head><meta char\
+set=\x22utf-8\x22><tit\
+le>Verlauf eines\
+ Ventils</title>\
+</head>\x0a<body>\x0a<\
+p><a href=\x22help_\
+de.html\x22>Hilfe z\
+u prm9tool</a></\
+p>\x0a<h1>Verlauf e\
+ines Ventils</h1\
+>\x0a<p>Jeder Vorga\
+ng an den Parame\
+tern eines Venti\
+ls wird mit Zeit\
+ (UTC), Seriennu\
+mmer,\x0aTypschl\xc3\xbcs\
+sel, Firmware, V\
+erbindung, Progr\
+ammversion, Benu\
+tzer und Station\
+ festgehalten: L\
+esen,\x0aHochladen \
+(und wozu), Sich\
+erungen, Speiche\
+rn, Werkseinstel\
+lungen, Pr\xc3\xbcfber\
+ichte und was Si\
+e\x0aonline getan h\
+aben \xe2\x80\x94 Werte a\
+us einer verglic\
+henen Datei oder\
+ aus dem Verlauf\
+, \xc3\xbcbernommene\x0aE\
+instellungen \xe2\x80\x94\
+ mit jedem ge\xc3\xa4n\
+derten Wert. Die\
+ Eintr\xc3\xa4ge eines\
+ Ventils bilden \
+eine\x0aHash-Kette;\
+ ein ver\xc3\xa4nderte\
+r Eintrag f\xc3\xa4llt\
+ auf.</p>\x0a<p>Ven\
+til \xe2\x86\x92 <b>Verla\
+uf\xe2\x80\xa6</b> listet\
+ die Eintr\xc3\xa4ge d\
+es verbundenen V\
+entils (oder ein\
+er\x0aeingegebenen \
+Seriennummer). D\
+ie Spalte <b>Was\
+ getan wurde</b>\
+ nennt die Bedeu\
+tung jedes\x0aEintr\
+ags, z. B. \xe2\x80\x9eEi\
+nstellung \xc3\xbcbern\
+ommen, online ge\
+schrieben: Autot\
+une; POSKP 0,4 \xe2\
+\x86\x92 0,55\xe2\x80\x9c.</p>\x0a\
+<ul>\x0a<li><b>Die \
+zwei gew\xc3\xa4hlten \
+Eintr\xc3\xa4ge vergle\
+ichen</b>: der U\
+nterschied in de\
+r Vergleichsansi\
+cht;\x0aWerte ankre\
+uzen und in das \
+Dokument \xc3\xbcberne\
+hmen oder in das\
+ Ventil schreibe\
+n.</li>\x0a<li><b>I\
+n das Dokument \xc3\
+\xbcbernehmen</b>: \
+der ganze Satz e\
+ines Eintrags sa\
+mt Typschl\xc3\xbcssel\
+\x0a(ein R\xc3\xbcckg\xc3\xa4ng\
+ig-Schritt). <b>\
+In das Ventil zu\
+r\xc3\xbcckschreiben</\
+b>: ein transakt\
+ionales Hochlade\
+n\x0ain das Ventil,\
+ von dem der Ein\
+trag stammt (onl\
+ine mit ihm).</l\
+i>\x0a<li><b>Export\
+ieren\xe2\x80\xa6</b>: ei\
+n Eintrag als <c\
+ode>*.prm</code>\
+ oder CSV. <b>Da\
+tenbank\xe2\x80\xa6</b>:\x0a\
+SQLite auf diese\
+m Rechner oder e\
+in PostgreSQL-Se\
+rver f\xc3\xbcr eine L\
+inie von Station\
+en, und was zu\x0at\
+un ist, wenn sie\
+ nicht erreichba\
+r ist.</li>\x0a</ul\
+>\x0a</body>\x0a</html\
+>\x0a\
+\x00\x00\x19G\
 <\
 !DOCTYPE html>\x0a<\
 html lang=\x22cs\x22>\x0a\
@@ -32,301 +388,830 @@ ry popisuje p\xc5\x99\xc3\
 (kapitola 8); ta\
 to str\xc3\xa1nka popi\
 suje program.</p\
->\x0a\x0a<h2>Spu\xc5\xa1t\xc4\x9bn\
-\xc3\xad</h2>\x0a<ul>\x0a<li\
-><code>prm9tool<\
-/code> otev\xc5\x99e o\
-kno s nov\xc3\xbdm z\xc3\xa1\
-znamem parametr\xc5\
-\xaf.</li>\x0a<li><cod\
-e>prm9tool SOUBO\
-R.prm</code> ote\
-v\xc5\x99e z\xc3\xa1znam par\
-ametr\xc5\xaf.</li>\x0a<l\
-i><code>prm9tool\
- --emulator [TYP\
-OV\xc3\x9d_KL\xc3\x8d\xc4\x8c[:V\xc3\x9d\
-ROBN\xc3\x8d_\xc4\x8c\xc3\x8dSLO]]\
-</code> spust\xc3\xad \
-program v re\xc5\xbeim\
-u\x0aonline s emulo\
-van\xc3\xbdm ventilem \
-(v\xc3\xbdchoz\xc3\xad typov\
-\xc3\xbd kl\xc3\xad\xc4\x8d <code>\
-PRM9-06.3Z11/30-\
-24E02S02-CA</cod\
-e>).</li>\x0a</ul>\x0a\
-\x0a<h2>Okno</h2>\x0a<\
-p>Hlavn\xc3\xad menu, \
-panel n\xc3\xa1stroj\xc5\xaf\
-, hlavn\xc3\xad plocha\
- a stavov\xc3\xbd \xc5\x99\xc3\xa1\
-dek. Stavov\xc3\xbd \xc5\x99\
-\xc3\xa1dek zobrazuje \
-re\xc5\xbeim\x0akomunikac\
-e, stav elektron\
-iky ventilu (<i>\
-ok</i> nebo akti\
-vn\xc3\xad chybu), ver\
-zi firmware, typ\
-ov\xc3\xbd\x0akl\xc3\xad\xc4\x8d a n\xc3\
-\xa1zev souboru; <b\
->*</b> ozna\xc4\x8duje\
- neulo\xc5\xbeen\xc3\xa9 zm\xc4\
-\x9bny; nakonec \xc3\xbar\
-ove\xc5\x88 opr\xc3\xa1vn\xc4\x9bn\
-\xc3\xad. Re\xc5\xbeim\x0aukazu\
-je P\xc5\x98IPOJOV\xc3\x81N\xc3\
-\x8d, dokud se pr\xc3\xa1\
-v\xc4\x9b p\xc5\x99ipojen\xc3\xbd \
-ventil porovn\xc3\xa1v\
-\xc3\xa1 se sadou para\
-metr\xc5\xaf, a ONLINE\
-,\x0ajakmile se sho\
-duj\xc3\xad.</p>\x0a<p>Hl\
-avn\xc3\xad plocha zob\
-razuje jeden ze \
-t\xc5\x99\xc3\xad n\xc3\xa1hled\xc5\xaf:\
- <b>postupov\xc3\xbd d\
-iagram</b> (klik\
-nut\xc3\xadm na blok\x0an\
-astav\xc3\xadte jeho p\
-arametry, kliknu\
-t\xc3\xadm na \xc4\x8derven\xc3\
-\xbd m\xc4\x9b\xc5\x99ic\xc3\xad bod \
-jej zobraz\xc3\xadte v\
- osciloskopu),\x0a<\
-b>seznam paramet\
-r\xc5\xaf</b> (dvojkli\
-kem na \xc5\x99\xc3\xa1dek z\
-m\xc4\x9bn\xc3\xadte hodnotu\
-; hodnoty odli\xc5\xa1\
-n\xc3\xa9 od tov\xc3\xa1rn\xc3\xad\
-ho\x0anastaven\xc3\xad js\
-ou zv\xc3\xbdrazn\xc4\x9bny;\
- hled\xc3\xa1n\xc3\xad a \xe2\x80\x9e\
-Jen zm\xc4\x9bn\xc4\x9bn\xc3\xa9\xe2\x80\
-\x9c seznam filtruj\
-\xc3\xad) a <b>oscilos\
-kop</b>\x0a(pouze v\
- re\xc5\xbeimu online,\
- nejv\xc3\xbd\xc5\xa1e t\xc5\x99i \
-m\xc4\x9b\xc5\x99ic\xc3\xad body).\
-</p>\x0a\x0a<h2>\xc3\x9arovn\
-\xc4\x9b opr\xc3\xa1vn\xc4\x9bn\xc3\xad<\
-/h2>\x0a<p><b>Z\xc3\xa1kl\
-adn\xc3\xad</b> \xc3\xbarove\
-\xc5\x88 zobrazuje z\xc3\xa1\
-kladn\xc3\xad nastaven\
-\xc3\xad; na z\xc3\xa1kladn\xc3\
-\xad \xc3\xbarovni se \xc4\x8dt\
-y\xc5\x99i rampy\x0anasta\
-vuj\xc3\xad spole\xc4\x8dn\xc4\x9b\
-. <b>Expertn\xc3\xad</\
-b> \xc3\xbarove\xc5\x88 p\xc5\x99i\
-d\xc3\xa1v\xc3\xa1 regul\xc3\xa1to\
-ry, linearizace \
-a nastaven\xc3\xad\x0aext\
-ern\xc3\xadho sn\xc3\xadma\xc4\x8d\
-e a je chr\xc3\xa1n\xc4\x9bn\
-a heslem. Heslo \
-p\xc5\x99i dod\xc3\xa1n\xc3\xad je\
- <code>expert</c\
-ode>; na expertn\
-\xc3\xad\x0a\xc3\xbarovni jej z\
-m\xc4\x9bn\xc3\xadte v menu \
-N\xc3\xa1hled \xe2\x86\x92 \xc3\x9aro\
-ve\xc5\x88 opr\xc3\xa1vn\xc4\x9bn\xc3\
-\xad \xe2\x86\x92 Zm\xc4\x9bnit he\
-slo pro expertn\xc3\
-\xad \xc3\xbarove\xc5\x88.\x0aProg\
-ram ukl\xc3\xa1d\xc3\xa1 pou\
-ze jeho osolen\xc3\xbd\
- hash.</p>\x0a<p>\xc3\x9a\
-rovn\xc4\x9b opr\xc3\xa1vn\xc4\x9b\
-n\xc3\xad chr\xc3\xa1n\xc3\xad p\xc5\x99\
-ed ne\xc3\xbamysln\xc3\xbdmi\
- zm\xc4\x9bnami, ne p\xc5\
-\x99ed t\xc3\xadm, kdo m\xc5\
-\xaf\xc5\xbee upravovat n\
-astaven\xc3\xad\x0aprogra\
-mu: odstran\xc4\x9bn\xc3\xad\
-m polo\xc5\xbeky <code\
->access/expert_p\
-assword</code> z\
- nastaven\xc3\xad plat\
-\xc3\xad op\xc4\x9bt heslo\x0ap\
-\xc5\x99i dod\xc3\xa1n\xc3\xad. So\
-ubor parametr\xc5\xaf \
-obsahuje v\xc5\xa1echn\
-y hodnoty bez oh\
-ledu na \xc3\xbarove\xc5\x88\
-: pokud u\xc5\xbeivate\
-l na\x0az\xc3\xa1kladn\xc3\xad \
-\xc3\xbarovni odes\xc3\xadl\xc3\
-\xa1 dokument, jeho\
-\xc5\xbe hodnoty exper\
-tn\xc3\xad \xc3\xbarovn\xc4\x9b se\
- li\xc5\xa1\xc3\xad od hodno\
-t ventilu,\x0aprogr\
-am se nejprve ze\
-pt\xc3\xa1.</p>\x0a\x0a<h2>O\
-nline a offline<\
-/h2>\x0a<p>Komunika\
-ce \xe2\x86\x92 HID konfi\
-gurace zobraz\xc3\xad \
-ventily p\xc5\x99ipoje\
-n\xc3\xa9 p\xc5\x99es USB a \
-emulovan\xc3\xa9 venti\
-ly;\x0aemulovan\xc3\xbd v\
-entil p\xc5\x99id\xc3\xa1te \
-zad\xc3\xa1n\xc3\xadm typov\xc3\
-\xa9ho kl\xc3\xad\xc4\x8de a v\xc3\
-\xbdrobn\xc3\xadho \xc4\x8d\xc3\xadsl\
-a. Komunikace \xe2\x86\
-\x92 Re\xc5\xbeim online\x0a\
-nav\xc3\xa1\xc5\xbee spojen\xc3\
-\xad. Li\xc5\xa1\xc3\xad-li se \
-otev\xc5\x99en\xc3\xbd z\xc3\xa1zn\
-am parametr\xc5\xaf od\
- ventilu, progra\
-m zobraz\xc3\xad rozd\xc3\
-\xadly a\x0azept\xc3\xa1 se,\
- zda p\xc5\x99evz\xc3\xadt h\
-odnoty ventilu, \
-odeslat hodnoty \
-dokumentu (na\xc4\x8dt\
-en\xc3\xad do ventilu)\
- nebo\x0azru\xc5\xa1it. V\
- re\xc5\xbeimu online \
-jde ka\xc5\xbed\xc3\xa1 zm\xc4\x9b\
-na ihned do vent\
-ilu i do dokumen\
-tu, v re\xc5\xbeimu of\
-fline\x0apouze do d\
-okumentu. Ztrat\xc3\
-\xad-li se spojen\xc3\xad\
- s ventilem, pro\
-gram p\xc5\x99ejde do \
-re\xc5\xbeimu offline \
-a\x0av\xc5\xa1echny hodno\
-ty zachov\xc3\xa1.</p>\
-\x0a<p>Hodnoty zm\xc4\x9b\
-n\xc4\x9bn\xc3\xa9 online js\
-ou ve ventilu ak\
-tivn\xc3\xad, ale je\xc5\xa1\
-t\xc4\x9b neulo\xc5\xbeen\xc3\xa9:\
- p\xc5\x99i p\xc5\x99echodu \
-do\x0are\xc5\xbeimu offli\
-ne program nab\xc3\xad\
-dne jejich ulo\xc5\xbe\
-en\xc3\xad. <b>Na\xc4\x8dten\
-\xc3\xad do ventilu</b\
-> zap\xc3\xad\xc5\xa1e v\xc5\xa1ec\
-hny\x0ahodnoty, p\xc5\x99\
-e\xc4\x8dte je zp\xc4\x9bt, \
-porovn\xc3\xa1 a ulo\xc5\xbe\
-\xc3\xad; ulo\xc5\xbe\xc3\xad se j\
-en tehdy, je-li \
-ka\xc5\xbed\xc3\xa1 hodnota \
-ov\xc4\x9b\xc5\x99ena.\x0aP\xc5\x99ed\
- prvn\xc3\xadm na\xc4\x8dten\
-\xc3\xadm do ventilu p\
-rogram ulo\xc5\xbe\xc3\xad z\
-\xc3\xa1lohu vlastn\xc3\xadc\
-h parametr\xc5\xaf ven\
-tilu do slo\xc5\xbeky\x0a\
-u\xc5\xbeivatelsk\xc3\xbdch \
-dat (<code>backu\
-ps/&lt;v\xc3\xbdrobn\xc3\xad\
- \xc4\x8d\xc3\xadslo&gt;/</c\
-ode>).</p>\x0a<p><b\
->Restart ventilu\
-</b> a <b>Obnove\
-n\xc3\xad tov\xc3\xa1rn\xc3\xadho \
-nastaven\xc3\xad</b> j\
-sou dovoleny pou\
-ze p\xc5\x99i\x0aodpojen\xc3\
-\xa9m hydraulick\xc3\xa9m\
- obvodu; program\
- v\xc3\xa1s po\xc5\xbe\xc3\xa1d\xc3\xa1 \
-o potvrzen\xc3\xad.</p\
->\x0a\x0a<h2>Soubory</\
-h2>\x0a<p>Z\xc3\xa1znamy \
-parametr\xc5\xaf (<cod\
-e>*.prm</code>) \
-jsou textov\xc3\xa9 so\
-ubory. Otev\xc5\x99\xc3\xadt\
-, Ulo\xc5\xbeit, Ulo\xc5\xbe\
-it jako,\x0anaposle\
-dy otev\xc5\x99en\xc3\xa9 so\
-ubory a p\xc5\x99eta\xc5\xbe\
-en\xc3\xad my\xc5\xa1\xc3\xad fung\
-uj\xc3\xad obvykl\xc3\xbdm z\
-p\xc5\xafsobem; p\xc5\x99ed \
-ztr\xc3\xa1tou\x0aneulo\xc5\xbe\
-en\xc3\xbdch zm\xc4\x9bn se \
-program zept\xc3\xa1. \
-Ka\xc5\xbedou zm\xc4\x9bnu l\
-ze vr\xc3\xa1tit (Ctrl\
-+Z) a znovu prov\
-\xc3\xa9st\x0a(Ctrl+Y). S\
-oubor \xe2\x86\x92 Tisk a\
- Soubor \xe2\x86\x92 Expo\
-rt do PDF vytvo\xc5\
-\x99\xc3\xad protokol par\
-ametr\xc5\xaf s typov\xc3\
-\xbdm kl\xc3\xad\xc4\x8dem,\x0av\xc3\xbd\
-robn\xc3\xadm \xc4\x8d\xc3\xadslem\
-, firmware, soub\
-orem, datem, \xc3\xbar\
-ovn\xc3\xad opr\xc3\xa1vn\xc4\x9bn\
-\xc3\xad, postupov\xc3\xbdm \
-diagramem a v\xc5\xa1e\
-mi\x0aparametry s j\
-ednotkami.</p>\x0a\x0a\
-<h2>Kl\xc3\xa1vesnice<\
-/h2>\x0a<table>\x0a<tr\
-><td>Ctrl+O / Ct\
-rl+S / Ctrl+Shif\
-t+S</td><td>Otev\
-\xc5\x99\xc3\xadt / Ulo\xc5\xbeit \
-/ Ulo\xc5\xbeit jako</\
+>\x0a\x0a<p><b>Dal\xc5\xa1\xc3\xad\
+ str\xc3\xa1nky:</b> <\
+a href=\x22can_cs.h\
+tml\x22>Sb\xc4\x9brnice C\
+AN a CANopen</a>\
+ \xc2\xb7 <a href=\x22tun\
+ing_cs.html\x22>Lad\
+\xc4\x9bn\xc3\xad a charakte\
+rizace</a> \xc2\xb7 <a\
+ href=\x22compare_c\
+s.html\x22>Porovn\xc3\xa1\
+n\xc3\xad sad parametr\
+\xc5\xaf</a> \xc2\xb7 <a hre\
+f=\x22history_cs.ht\
+ml\x22>Historie ven\
+tilu</a>. V okn\xc4\
+\x9b otev\xc5\x99e <b>F1<\
+/b> str\xc3\xa1nku o n\
+\xc4\x9bm.</p>\x0a\x0a<h2>Sp\
+u\xc5\xa1t\xc4\x9bn\xc3\xad</h2>\x0a<\
+ul>\x0a<li><code>pr\
+m9tool</code> ot\
+ev\xc5\x99e okno s nov\
+\xc3\xbdm z\xc3\xa1znamem pa\
+rametr\xc5\xaf.</li>\x0a<\
+li><code>prm9too\
+l SOUBOR.prm</co\
+de> otev\xc5\x99e z\xc3\xa1z\
+nam parametr\xc5\xaf.<\
+/li>\x0a<li><code>p\
+rm9tool --emulat\
+or [TYPOV\xc3\x9d_KL\xc3\x8d\
+\xc4\x8c[:V\xc3\x9dROBN\xc3\x8d_\xc4\x8c\
+\xc3\x8dSLO]]</code> s\
+pust\xc3\xad program v\
+ re\xc5\xbeimu\x0aonline \
+s emulovan\xc3\xbdm ve\
+ntilem (v\xc3\xbdchoz\xc3\
+\xad typov\xc3\xbd kl\xc3\xad\xc4\x8d\
+ <code>PRM9-06.3\
+Z11/30-24E02S02-\
+CA</code>).</li>\
+\x0a</ul>\x0a\x0a<h2>Okno\
+</h2>\x0a<p>Hlavn\xc3\xad\
+ menu, panel n\xc3\xa1\
+stroj\xc5\xaf, hlavn\xc3\xad\
+ plocha a stavov\
+\xc3\xbd \xc5\x99\xc3\xa1dek. Stav\
+ov\xc3\xbd \xc5\x99\xc3\xa1dek zob\
+razuje re\xc5\xbeim\x0ako\
+munikace, stav e\
+lektroniky venti\
+lu (<i>ok</i> ne\
+bo aktivn\xc3\xad chyb\
+u), verzi firmwa\
+re, typov\xc3\xbd\x0akl\xc3\xad\
+\xc4\x8d a n\xc3\xa1zev soub\
+oru; <b>*</b> oz\
+na\xc4\x8duje neulo\xc5\xbee\
+n\xc3\xa9 zm\xc4\x9bny; nako\
+nec \xc3\xbarove\xc5\x88 opr\
+\xc3\xa1vn\xc4\x9bn\xc3\xad. Re\xc5\xbei\
+m\x0aukazuje P\xc5\x98IPO\
+JOV\xc3\x81N\xc3\x8d, dokud \
+se pr\xc3\xa1v\xc4\x9b p\xc5\x99ip\
+ojen\xc3\xbd ventil po\
+rovn\xc3\xa1v\xc3\xa1 se sad\
+ou parametr\xc5\xaf, a\
+ ONLINE,\x0ajakmile\
+ se shoduj\xc3\xad.</p\
+>\x0a<p>Hlavn\xc3\xad plo\
+cha zobrazuje je\
+den ze t\xc5\x99\xc3\xad n\xc3\xa1\
+hled\xc5\xaf: <b>postu\
+pov\xc3\xbd diagram</b\
+> (kliknut\xc3\xadm na\
+ blok\x0anastav\xc3\xadte\
+ jeho parametry,\
+ kliknut\xc3\xadm na \xc4\
+\x8derven\xc3\xbd m\xc4\x9b\xc5\x99ic\
+\xc3\xad bod jej zobra\
+z\xc3\xadte v oscilosk\
+opu),\x0a<b>seznam \
+parametr\xc5\xaf</b> (\
+dvojklikem na \xc5\x99\
+\xc3\xa1dek zm\xc4\x9bn\xc3\xadte \
+hodnotu; hodnoty\
+ odli\xc5\xa1n\xc3\xa9 od to\
+v\xc3\xa1rn\xc3\xadho\x0anastav\
+en\xc3\xad jsou zv\xc3\xbdra\
+zn\xc4\x9bny; hled\xc3\xa1n\xc3\
+\xad a \xe2\x80\x9eJen zm\xc4\x9bn\
+\xc4\x9bn\xc3\xa9\xe2\x80\x9c seznam \
+filtruj\xc3\xad) a <b>\
+osciloskop</b>\x0a(\
+pouze v re\xc5\xbeimu \
+online, nejv\xc3\xbd\xc5\xa1\
+e t\xc5\x99i m\xc4\x9b\xc5\x99ic\xc3\xad\
+ body).</p>\x0a\x0a<h2\
+>\xc3\x9arovn\xc4\x9b opr\xc3\xa1v\
+n\xc4\x9bn\xc3\xad</h2>\x0a<p><\
+b>Z\xc3\xa1kladn\xc3\xad</b>\
+ \xc3\xbarove\xc5\x88 zobraz\
+uje z\xc3\xa1kladn\xc3\xad n\
+astaven\xc3\xad; na z\xc3\
+\xa1kladn\xc3\xad \xc3\xbarovni\
+ se \xc4\x8dty\xc5\x99i ramp\
+y\x0anastavuj\xc3\xad spo\
+le\xc4\x8dn\xc4\x9b. <b>Expe\
+rtn\xc3\xad</b> \xc3\xbarove\
+\xc5\x88 p\xc5\x99id\xc3\xa1v\xc3\xa1 re\
+gul\xc3\xa1tory, linea\
+rizace a nastave\
+n\xc3\xad\x0aextern\xc3\xadho s\
+n\xc3\xadma\xc4\x8de a je ch\
+r\xc3\xa1n\xc4\x9bna heslem.\
+ Heslo p\xc5\x99i dod\xc3\
+\xa1n\xc3\xad je <code>ex\
+pert</code>; na \
+expertn\xc3\xad\x0a\xc3\xbarovn\
+i jej zm\xc4\x9bn\xc3\xadte \
+v menu N\xc3\xa1hled \xe2\
+\x86\x92 \xc3\x9arove\xc5\x88 opr\xc3\
+\xa1vn\xc4\x9bn\xc3\xad \xe2\x86\x92 Zm\xc4\
+\x9bnit heslo pro e\
+xpertn\xc3\xad \xc3\xbarove\xc5\
+\x88.\x0aProgram ukl\xc3\xa1\
+d\xc3\xa1 pouze jeho o\
+solen\xc3\xbd hash.</p\
+>\x0a<p>\xc3\x9arovn\xc4\x9b op\
+r\xc3\xa1vn\xc4\x9bn\xc3\xad chr\xc3\xa1\
+n\xc3\xad p\xc5\x99ed ne\xc3\xbamy\
+sln\xc3\xbdmi zm\xc4\x9bnami\
+, ne p\xc5\x99ed t\xc3\xadm,\
+ kdo m\xc5\xaf\xc5\xbee upra\
+vovat nastaven\xc3\xad\
+\x0aprogramu: odstr\
+an\xc4\x9bn\xc3\xadm polo\xc5\xbek\
+y <code>access/e\
+xpert_password</\
+code> z nastaven\
+\xc3\xad plat\xc3\xad op\xc4\x9bt \
+heslo\x0ap\xc5\x99i dod\xc3\xa1\
+n\xc3\xad. Soubor para\
+metr\xc5\xaf obsahuje \
+v\xc5\xa1echny hodnoty\
+ bez ohledu na \xc3\
+\xbarove\xc5\x88: pokud u\
+\xc5\xbeivatel na\x0az\xc3\xa1k\
+ladn\xc3\xad \xc3\xbarovni o\
+des\xc3\xadl\xc3\xa1 dokumen\
+t, jeho\xc5\xbe hodnot\
+y expertn\xc3\xad \xc3\xbaro\
+vn\xc4\x9b se li\xc5\xa1\xc3\xad o\
+d hodnot ventilu\
+,\x0aprogram se nej\
+prve zept\xc3\xa1.</p>\
+\x0a\x0a<h2>Online a o\
+ffline</h2>\x0a<p>K\
+omunikace \xe2\x86\x92 Ko\
+nfigurace HID zo\
+braz\xc3\xad ventily p\
+\xc5\x99ipojen\xc3\xa9 p\xc5\x99es\
+ USB a emulovan\xc3\
+\xa9 ventily;\x0aemulo\
+van\xc3\xbd ventil p\xc5\x99\
+id\xc3\xa1te zad\xc3\xa1n\xc3\xadm\
+ typov\xc3\xa9ho kl\xc3\xad\xc4\
+\x8de a v\xc3\xbdrobn\xc3\xadho\
+ \xc4\x8d\xc3\xadsla. Komuni\
+kace \xe2\x86\x92 Re\xc5\xbeim \
+online\x0anav\xc3\xa1\xc5\xbee \
+spojen\xc3\xad. Dokume\
+nt na\xc4\x8dten\xc3\xbd z j\
+in\xc3\xa9ho ventilu (\
+jin\xc3\xa9 v\xc3\xbdrobn\xc3\xad \
+\xc4\x8d\xc3\xadslo) program\
+ nejprve ohl\xc3\xa1s\xc3\
+\xad: pokra\xc4\x8dovat s\
+ n\xc3\xadm, nebo p\xc5\x99e\
+j\xc3\xadt do re\xc5\xbeimu \
+offline. Li\xc5\xa1\xc3\xad-\
+li se otev\xc5\x99en\xc3\xbd\
+ z\xc3\xa1znam paramet\
+r\xc5\xaf od ventilu, \
+program zobraz\xc3\xad\
+ rozd\xc3\xadly a\x0azept\
+\xc3\xa1 se, zda p\xc5\x99ev\
+z\xc3\xadt hodnoty ven\
+tilu, odeslat ho\
+dnoty dokumentu \
+(na\xc4\x8dten\xc3\xad do ve\
+ntilu) nebo\x0azru\xc5\
+\xa1it. V re\xc5\xbeimu o\
+nline jde ka\xc5\xbed\xc3\
+\xa1 zm\xc4\x9bna ihned d\
+o ventilu i do d\
+okumentu, v re\xc5\xbe\
+imu offline\x0apouz\
+e do dokumentu. \
+Ztrat\xc3\xad-li se sp\
+ojen\xc3\xad s ventile\
+m, program p\xc5\x99ej\
+de do re\xc5\xbeimu of\
+fline a\x0av\xc5\xa1echny\
+ hodnoty zachov\xc3\
+\xa1.</p>\x0a<p>Hodnot\
+y zm\xc4\x9bn\xc4\x9bn\xc3\xa9 onl\
+ine jsou ve vent\
+ilu aktivn\xc3\xad, al\
+e je\xc5\xa1t\xc4\x9b neulo\xc5\
+\xbeen\xc3\xa9: p\xc5\x99i p\xc5\x99e\
+chodu do\x0are\xc5\xbeimu\
+ offline program\
+ nab\xc3\xaddne jejich\
+ ulo\xc5\xbeen\xc3\xad a Ven\
+til \xe2\x86\x92 <b>Ulo\xc5\xbe\
+it do pam\xc4\x9bti ve\
+ntilu</b> je ulo\
+\xc5\xbe\xc3\xad\x0ahned (s \xc4\x8d\xc3\
+\xadm ventil pracuj\
+e, s t\xc3\xadm i nast\
+artuje; zaznamen\
+\xc3\xa1 se do histori\
+e). <b>Na\xc4\x8dten\xc3\xad\
+ do ventilu</b> \
+zap\xc3\xad\xc5\xa1e v\xc5\xa1echn\
+y\x0ahodnoty, p\xc5\x99e\xc4\
+\x8dte je zp\xc4\x9bt, po\
+rovn\xc3\xa1 a ulo\xc5\xbe\xc3\xad\
+; ulo\xc5\xbe\xc3\xad se jen\
+ tehdy, je-li ka\
+\xc5\xbed\xc3\xa1 hodnota ov\
+\xc4\x9b\xc5\x99ena.\x0aP\xc5\x99ed p\
+rvn\xc3\xadm na\xc4\x8dten\xc3\xad\
+m do ventilu pro\
+gram ulo\xc5\xbe\xc3\xad z\xc3\xa1\
+lohu vlastn\xc3\xadch \
+parametr\xc5\xaf venti\
+lu do slo\xc5\xbeky\x0au\xc5\
+\xbeivatelsk\xc3\xbdch da\
+t (<code>backups\
+/&lt;v\xc3\xbdrobn\xc3\xad \xc4\
+\x8d\xc3\xadslo&gt;/</cod\
+e>).</p>\x0a<p><b>R\
+estart ventilu</\
+b> a <b>Obnoven\xc3\
+\xad tov\xc3\xa1rn\xc3\xadho na\
+staven\xc3\xad</b> jso\
+u dovoleny pouze\
+ p\xc5\x99i\x0aodpojen\xc3\xa9m\
+ hydraulick\xc3\xa9m o\
+bvodu; program v\
+\xc3\xa1s po\xc5\xbe\xc3\xa1d\xc3\xa1 o \
+potvrzen\xc3\xad.</p>\x0a\
+\x0a<h2>Soubory</h2\
+>\x0a<p>Z\xc3\xa1znamy pa\
+rametr\xc5\xaf (<code>\
+*.prm</code>) js\
+ou textov\xc3\xa9 soub\
+ory. Otev\xc5\x99\xc3\xadt, \
+Ulo\xc5\xbeit, Ulo\xc5\xbeit\
+ jako,\x0anaposledy\
+ otev\xc5\x99en\xc3\xa9 soub\
+ory a p\xc5\x99eta\xc5\xbeen\
+\xc3\xad my\xc5\xa1\xc3\xad funguj\
+\xc3\xad obvykl\xc3\xbdm zp\xc5\
+\xafsobem; p\xc5\x99ed zt\
+r\xc3\xa1tou\x0aneulo\xc5\xbeen\
+\xc3\xbdch zm\xc4\x9bn se pr\
+ogram zept\xc3\xa1. Ka\
+\xc5\xbedou zm\xc4\x9bnu lze\
+ vr\xc3\xa1tit (Ctrl+Z\
+) a znovu prov\xc3\xa9\
+st\x0a(Ctrl+Y). Sou\
+bor \xe2\x86\x92 Tisk a S\
+oubor \xe2\x86\x92 Export\
+ do PDF vytvo\xc5\x99\xc3\
+\xad protokol param\
+etr\xc5\xaf s typov\xc3\xbdm\
+ kl\xc3\xad\xc4\x8dem,\x0av\xc3\xbdro\
+bn\xc3\xadm \xc4\x8d\xc3\xadslem, \
+firmware, soubor\
+em, datem, \xc3\xbarov\
+n\xc3\xad opr\xc3\xa1vn\xc4\x9bn\xc3\xad\
+, postupov\xc3\xbdm di\
+agramem a v\xc5\xa1emi\
+\x0aparametry s jed\
+notkami. Hodnoty\
+ zm\xc4\x9bn\xc4\x9bn\xc3\xa9 od u\
+lo\xc5\xbeen\xc3\xad souboru\
+ jsou ozna\xc4\x8deny \
+<b>*</b> a \xc5\x99\xc3\xa1d\
+ek\x0a\xe2\x80\x9eSoubor\xe2\x80\x9c \
+to uv\xc3\xa1d\xc3\xad; ka\xc5\xbe\
+d\xc3\xa1 strana uv\xc3\xa1d\
+\xc3\xad typov\xc3\xbd kl\xc3\xad\xc4\
+\x8d a v\xc3\xbdrobn\xc3\xad \xc4\x8d\
+\xc3\xadslo a sv\xc3\xa9 \xc4\x8d\xc3\
+\xadslo strany; na\x0a\
+posledn\xc3\xad stran\xc4\
+\x9b je \xc5\x99\xc3\xa1dek pro\
+ datum, jm\xc3\xa9no a\
+ podpis.</p>\x0a<p>\
+<b>Z\xc3\xa1loha venti\
+lu</b>: p\xc5\x99ipojt\
+e se (re\xc5\xbeim onl\
+ine), Ventil \xe2\x86\x92\
+ Sta\xc5\xbeen\xc3\xad z ven\
+tilu, pak\x0aSoubor\
+ \xe2\x86\x92 <b>Ulo\xc5\xbeit \
+z\xc3\xa1lo\xc5\xben\xc3\xad kopii\
+\xe2\x80\xa6</b> (navr\xc5\xbee\
+n\xc3\xbd n\xc3\xa1zev: typo\
+v\xc3\xbd kl\xc3\xad\xc4\x8d, v\xc3\xbdr\
+obn\xc3\xad \xc4\x8d\xc3\xadslo, d\
+atum\x0aa \xc4\x8das). Ko\
+pie se zap\xc3\xad\xc5\xa1e \
+a otev\xc5\x99en\xc3\xbd dok\
+ument z\xc5\xafstane, \
+jak\xc3\xbd byl: pozd\xc4\
+\x9bj\xc5\xa1\xc3\xad zm\xc4\x9bny se\
+ ukl\xc3\xa1daj\xc3\xad do\x0aj\
+eho vlastn\xc3\xadho s\
+ouboru, nikdy do\
+ z\xc3\xa1lohy. Naprot\
+i tomu Ulo\xc5\xbeit j\
+ako ud\xc4\x9bl\xc3\xa1 z no\
+v\xc3\xa9ho souboru\x0aot\
+ev\xc5\x99en\xc3\xbd dokumen\
+t.</p>\x0a\x0a<h2>Kl\xc3\xa1\
+vesnice</h2>\x0a<ta\
+ble>\x0a<tr><td>Ctr\
+l+O / Ctrl+S / C\
+trl+Shift+S</td>\
+<td>Otev\xc5\x99\xc3\xadt / \
+Ulo\xc5\xbeit / Ulo\xc5\xbei\
+t jako</td></tr>\
+\x0a<tr><td>Ctrl+Z \
+/ Ctrl+Y</td><td\
+>Zp\xc4\x9bt / Znovu</\
 td></tr>\x0a<tr><td\
->Ctrl+Z / Ctrl+Y\
-</td><td>Zp\xc4\x9bt /\
- Znovu</td></tr>\
-\x0a<tr><td>Ctrl+P \
-/ Ctrl+E</td><td\
->Tisk / Export d\
-o PDF</td></tr>\x0a\
-<tr><td>Ctrl+1 /\
- Ctrl+2 / Ctrl+3\
- / Ctrl+4</td><t\
-d>Postupov\xc3\xbd dia\
-gram / Seznam pa\
-rametr\xc5\xaf / Oscil\
-oskop / Okno CAN\
-open</td></tr>\x0a<\
-tr><td>F5 / Shif\
-t+F5</td><td>Re\xc5\
-\xbeim online / Re\xc5\
-\xbeim offline</td>\
-</tr>\x0a<tr><td>Ct\
-rl+U / Ctrl+D</t\
-d><td>Na\xc4\x8dten\xc3\xad \
-do ventilu / Sta\
-\xc5\xbeen\xc3\xad z ventilu\
-</td></tr>\x0a<tr><\
-td>Ctrl+T / Ctrl\
-+I / Ctrl+H</td>\
-<td>V\xc3\xbdb\xc4\x9br vent\
-ilu / Stav venti\
-lu / HID konfigu\
-race</td></tr>\x0a<\
-/table>\x0a</body>\x0a\
-</html>\x0a\
-\x00\x00\x14Z\
+>Ctrl+P / Ctrl+E\
+</td><td>Tisk / \
+Export do PDF</t\
+d></tr>\x0a<tr><td>\
+Ctrl+1 / Ctrl+2 \
+/ Ctrl+3 / Ctrl+\
+4</td><td>Postup\
+ov\xc3\xbd diagram / S\
+eznam parametr\xc5\xaf\
+ / Osciloskop / \
+Okno CANopen</td\
+></tr>\x0a<tr><td>F\
+5 / Shift+F5</td\
+><td>Re\xc5\xbeim onli\
+ne / Re\xc5\xbeim offl\
+ine</td></tr>\x0a<t\
+r><td>Ctrl+U / C\
+trl+D</td><td>Na\
+\xc4\x8dten\xc3\xad do venti\
+lu / Sta\xc5\xbeen\xc3\xad z\
+ ventilu</td></t\
+r>\x0a<tr><td>Ctrl+\
+T / Ctrl+I / Ctr\
+l+H</td><td>V\xc3\xbdb\
+\xc4\x9br ventilu / St\
+av ventilu / Kon\
+figurace HID</td\
+></tr>\x0a</table>\x0a\
+<p><b>Skripty a \
+zku\xc5\xa1ebn\xc3\xad stani\
+ce</b>: ventil z\
+ Pythonu a ze sh\
+ellov\xc3\xbdch skript\
+\xc5\xaf, <a href=\x22scr\
+ipting_en.html\x22>\
+na t\xc3\xa9to str\xc3\xa1nc\
+e</a> (anglicky)\
+.</p>\x0a</body>\x0a</\
+html>\x0a\
+\x00\x00\x062\
+<\
+!DOCTYPE html>\x0a<\
+html lang=\x22cs\x22>\x0a\
+<head><meta char\
+set=\x22utf-8\x22><tit\
+le>Historie vent\
+ilu</title></hea\
+d>\x0a<body>\x0a<p><a \
+href=\x22help_cs.ht\
+ml\x22>N\xc3\xa1pov\xc4\x9bda p\
+rm9tool</a></p>\x0a\
+<h1>Historie ven\
+tilu</h1>\x0a<p>Ka\xc5\
+\xbed\xc3\xa1 operace s p\
+arametry ventilu\
+ se zaznamen\xc3\xa1 s\
+ \xc4\x8dasem (UTC), v\
+\xc3\xbdrobn\xc3\xadm \xc4\x8d\xc3\xadsl\
+em, typov\xc3\xbdm\x0akl\xc3\
+\xad\xc4\x8dem, firmware,\
+ p\xc5\x99ipojen\xc3\xadm, v\
+erz\xc3\xad programu, \
+u\xc5\xbeivatelem a st\
+anic\xc3\xad: \xc4\x8dten\xc3\xad,\
+ na\xc4\x8dten\xc3\xad do ve\
+ntilu\x0a(a k \xc4\x8demu\
+), z\xc3\xa1lohy, ulo\xc5\
+\xbeen\xc3\xad, tov\xc3\xa1rn\xc3\xad\
+ nastaven\xc3\xad, pro\
+tokoly o zkou\xc5\xa1c\
+e a co jste prov\
+edli online\x0a\xe2\x80\x94 \
+hodnoty z porovn\
+\xc3\xa1van\xc3\xa9ho soubor\
+u nebo z histori\
+e, p\xc5\x99evzat\xc3\xa9 na\
+staven\xc3\xad regulac\
+e \xe2\x80\x94 s ka\xc5\xbedou\x0a\
+zm\xc4\x9bn\xc4\x9bnou hodno\
+tou. Z\xc3\xa1znamy je\
+dnoho ventilu tv\
+o\xc5\x99\xc3\xad \xc5\x99et\xc4\x9bzec \
+hash\xc5\xaf, tak\xc5\xbee z\
+m\xc4\x9bn\xc4\x9bn\xc3\xbd z\xc3\xa1zna\
+m se\x0aodhal\xc3\xad.</p\
+>\x0a<p>Ventil \xe2\x86\x92 \
+<b>Historie\xe2\x80\xa6</\
+b> vyp\xc3\xad\xc5\xa1e z\xc3\xa1z\
+namy p\xc5\x99ipojen\xc3\xa9\
+ho ventilu (nebo\
+ zadan\xc3\xa9ho v\xc3\xbdro\
+bn\xc3\xadho\x0a\xc4\x8d\xc3\xadsla).\
+ Sloupec <b>Co b\
+ylo provedeno</b\
+> uv\xc3\xa1d\xc3\xad v\xc3\xbdzna\
+m ka\xc5\xbed\xc3\xa9ho z\xc3\xa1z\
+namu, nap\xc5\x99. \xe2\x80\x9e\
+Nastaven\xc3\xad\x0aregul\
+ace p\xc5\x99evzato, z\
+aps\xc3\xa1no online: \
+Autotune; POSKP \
+0,4 \xe2\x86\x92 0,55\xe2\x80\x9c.\
+</p>\x0a<ul>\x0a<li><b\
+>Porovnat dva vy\
+bran\xc3\xa9 z\xc3\xa1znamy<\
+/b>: rozd\xc3\xadl v p\
+orovn\xc3\xa1n\xc3\xad; ozna\
+\xc4\x8dte hodnoty a p\
+\xc5\x99evezm\xc4\x9bte je\x0ad\
+o dokumentu nebo\
+ je zapi\xc5\xa1te do \
+ventilu.</li>\x0a<l\
+i><b>Obnovit do \
+dokumentu</b>: c\
+el\xc3\xa1 sada z\xc3\xa1zna\
+mu v\xc4\x8detn\xc4\x9b typo\
+v\xc3\xa9ho kl\xc3\xad\xc4\x8de (j\
+eden krok zp\xc4\x9bt)\
+.\x0a<b>Obnovit do \
+ventilu</b>: tra\
+nsak\xc4\x8dn\xc3\xad na\xc4\x8dte\
+n\xc3\xad do ventilu, \
+ze kter\xc3\xa9ho z\xc3\xa1z\
+nam poch\xc3\xa1z\xc3\xad (v\
+ re\xc5\xbeimu\x0aonline \
+s n\xc3\xadm).</li>\x0a<l\
+i><b>Exportovat\xe2\
+\x80\xa6</b>: z\xc3\xa1znam \
+jako <code>*.prm\
+</code> nebo CSV\
+. <b>Datab\xc3\xa1ze\xe2\x80\
+\xa6</b>: SQLite\x0av \
+tomto po\xc4\x8d\xc3\xadta\xc4\x8d\
+i, nebo server P\
+ostgreSQL pro li\
+nku se stanicemi\
+, a co d\xc4\x9blat, k\
+dy\xc5\xbe nen\xc3\xad\x0adostu\
+pn\xc3\xa1.</li>\x0a</ul>\
+\x0a</body>\x0a</html>\
+\x0a\
+\x00\x00\x07E\
+<\
+!DOCTYPE html>\x0a<\
+html lang=\x22de\x22>\x0a\
+<head><meta char\
+set=\x22utf-8\x22><tit\
+le>Einstellung u\
+nd Charakterisie\
+rung</title></he\
+ad>\x0a<body>\x0a<p><a\
+ href=\x22help_de.h\
+tml\x22>Hilfe zu pr\
+m9tool</a></p>\x0a<\
+h1>Einstellung u\
+nd Charakterisie\
+rung</h1>\x0a<p>Das\
+ Fenster \xc3\xb6ffnet\
+ sich aus dem Os\
+zilloskop (<b>Ei\
+nstellung und Ch\
+arakterisierung\xe2\
+\x80\xa6</b>)\x0aoder aus\
+ den Reglerbl\xc3\xb6c\
+ken des Ablaufdi\
+agramms. Online \
+bewegt es das ve\
+rbundene Ventil,\
+ offline\x0al\xc3\xa4uft \
+es auf einer emu\
+lierten Kopie de\
+s Ventils des Do\
+kuments. Das Ven\
+til muss seinem \
+Sollwert\x0afolgen \
+(ein -CA-Ventil:\
+ zuerst NMT Star\
+t und Freigeben)\
+; ein Test biete\
+t die Freigabe a\
+n.</p>\x0a<p><b>Ach\
+tung:</b> Jeder \
+Test bewegt den \
+Schieber. Stelle\
+n Sie sicher, da\
+ss sich die Masc\
+hine\x0abewegen dar\
+f.</p>\x0a<h2>Die S\
+eiten</h2>\x0a<ul>\x0a\
+<li><b>Autotune<\
+/b>: modellbasie\
+rt (einige Spr\xc3\xbc\
+nge, ein angepas\
+stes Modell, Ver\
+st\xc3\xa4rkungen, die\
+\x0anicht schwingen\
+) oder nach der \
+Regel der kritis\
+chen Verst\xc3\xa4rkun\
+g. Der Vorschlag\
+ wird den\x0aaktuel\
+len Verst\xc3\xa4rkung\
+en gegen\xc3\xbcberges\
+tellt; <b>Vorges\
+chlagene Verst\xc3\xa4\
+rkungen \xc3\xbcberneh\
+men</b>\x0asetzt si\
+e in das Dokumen\
+t (ein R\xc3\xbcckg\xc3\xa4n\
+gig-Schritt; onl\
+ine auch in das \
+Ventil, im Verla\
+uf\x0afestgehalten)\
+. Dauerhaft spei\
+chern mit Ventil\
+ \xe2\x86\x92 Im Ventil s\
+peichern.</li>\x0a<\
+li><b>Frequenzga\
+ng</b>: ein Sinu\
+s-Sweep um einen\
+ Arbeitspunkt; d\
+ie Frequenzen be\
+i \xe2\x88\x923 dB\x0aund \xe2\x88\
+\x9290\xc2\xb0.</li>\x0a<li>\
+<b>Statische Ken\
+nlinie</b>: ein \
+langsames Dreiec\
+k; Hysterese, Li\
+nearit\xc3\xa4t und To\
+tband,\x0adazu ein \
+Vorschlag f\xc3\xbcr d\
+ie Linearisierun\
+g.</li>\x0a<li><b>P\
+r\xc3\xbcfbericht</b>:\
+ ein Abnahmeprof\
+il (Spr\xc3\xbcnge, Sw\
+eep, statischer \
+Test und ihre\x0aGr\
+enzen) in einem \
+Durchgang; das P\
+DF nennt auf jed\
+er Seite Typschl\
+\xc3\xbcssel und Serie\
+nnummer und\x0alist\
+et den Parameter\
+satz in Anzeigee\
+inheiten; die Ro\
+hdaten gehen als\
+ CSV daneben.</l\
+i>\x0a</ul>\x0a<p>Die \
+Registerkarte <b\
+>Sprungantwort</\
+b> des Oszillosk\
+ops misst \xc3\x9cbers\
+chwingen, Anstie\
+gs- und\x0aAusregel\
+zeit jedes angez\
+eigten Sprungs.<\
+/p>\x0a</body>\x0a</ht\
+ml>\x0a\
+\x00\x00\x06\x87\
+<\
+!DOCTYPE html>\x0a<\
+html lang=\x22cs\x22>\x0a\
+<head><meta char\
+set=\x22utf-8\x22><tit\
+le>Porovn\xc3\xa1n\xc3\xad s\
+ad parametr\xc5\xaf</t\
+itle></head>\x0a<bo\
+dy>\x0a<p><a href=\x22\
+help_cs.html\x22>N\xc3\
+\xa1pov\xc4\x9bda prm9too\
+l</a></p>\x0a<h1>Po\
+rovn\xc3\xa1n\xc3\xad sad pa\
+rametr\xc5\xaf</h1>\x0a<p\
+>Porovn\xc3\xa1n\xc3\xad uka\
+zuje dv\xc4\x9b sady p\
+arametr\xc5\xaf vedle \
+sebe v zobrazova\
+n\xc3\xbdch jednotk\xc3\xa1c\
+h a jako t\xc5\x99et\xc3\xad\
+\x0asloupec tov\xc3\xa1rn\
+\xc3\xad nastaven\xc3\xad. T\
+u\xc4\x8dn\xc3\xa9 hodnoty s\
+e li\xc5\xa1\xc3\xad.</p>\x0a<u\
+l>\x0a<li>Soubor \xe2\x86\
+\x92 <b>Porovnat se\
+ souborem\xe2\x80\xa6</b>\
+: dokument proti\
+ souboru <code>*\
+.prm</code> (dia\
+log\x0aotev\xc5\x99e napo\
+sledy pou\xc5\xbeitou \
+slo\xc5\xbeku).</li>\x0a<\
+li>Ventil \xe2\x86\x92 <b\
+>Porovnat s vent\
+ilem</b> (online\
+): dokument prot\
+i tomu, co venti\
+l pr\xc3\xa1v\xc4\x9b\x0aobsahu\
+je.</li>\x0a<li>P\xc5\x99\
+i p\xc5\x99echodu do r\
+e\xc5\xbeimu online s \
+odli\xc5\xa1n\xc3\xbdm dokum\
+entem: <b>Zvolit\
+ po parametrech\xe2\
+\x80\xa6</b>.</li>\x0a<li\
+>Ventil \xe2\x86\x92 Hist\
+orie: vyberte dv\
+a z\xc3\xa1znamy, <b>P\
+orovnat dva vybr\
+an\xc3\xa9 z\xc3\xa1znamy</b\
+>.</li>\x0a</ul>\x0a<h\
+2>Vr\xc3\xa1cen\xc3\xad hodn\
+ot</h2>\x0a<ol>\x0a<li\
+>V ka\xc5\xbed\xc3\xa9m \xc5\x99\xc3\xa1\
+dku ozna\xc4\x8dte po\xc5\
+\xbeadovanou hodnot\
+u (ve sloupci st\
+rany, ze kter\xc3\xa9 \
+poch\xc3\xa1z\xc3\xad), nebo\
+\x0apro zobrazen\xc3\xa9 \
+\xc5\x99\xc3\xa1dky pou\xc5\xbeijt\
+e <b>Ozna\xc4\x8dit v\xc5\
+\xa1echny zobrazen\xc3\
+\xa9 hodnoty \xe2\x80\xa6</b\
+>.</li>\x0a<li>Stis\
+kn\xc4\x9bte tla\xc4\x8d\xc3\xadtk\
+o, kter\xc3\xa9 \xc5\x99\xc3\xadk\xc3\
+\xa1, kam hodnoty j\
+dou: <b>Zapsat \xe2\
+\x80\xa6 ozna\xc4\x8den\xc3\xbdch \
+hodnot do\x0aventil\
+u</b> (na\xc4\x8dten\xc3\xad\
+ p\xc5\x99esn\xc4\x9b t\xc4\x9bcht\
+o hodnot do vent\
+ilu: z\xc3\xa1pis, zp\xc4\
+\x9btn\xc3\xa9 \xc4\x8dten\xc3\xad, p\
+orovn\xc3\xa1n\xc3\xad,\x0aulo\xc5\
+\xbeen\xc3\xad) nebo <b>P\
+\xc5\x99evz\xc3\xadt \xe2\x80\xa6 ozn\
+a\xc4\x8den\xc3\xbdch hodnot\
+ do dokumentu</b\
+> (jeden krok zp\
+\xc4\x9bt). \xc5\x98\xc3\xa1dek na\
+d\x0atabulkou \xc5\x99\xc3\xadk\
+\xc3\xa1, kter\xc3\xbd sloup\
+ec pat\xc5\x99\xc3\xad ke kt\
+er\xc3\xa9mu tla\xc4\x8d\xc3\xadtk\
+u; tla\xc4\x8d\xc3\xadtko z\xc5\
+\xafstane \xc5\xa1ed\xc3\xa9, d\
+okud nen\xc3\xad nic\x0ao\
+zna\xc4\x8deno.</li>\x0a<\
+/ol>\x0a<p>Filtry: \
+jen rozd\xc3\xadly, je\
+den blok postupo\
+v\xc3\xa9ho diagramu, \
+z\xc3\xa1kladn\xc3\xad nebo \
+expertn\xc3\xad \xc3\xbarove\
+\xc5\x88.\x0aParametry, k\
+ter\xc3\xa9 jedna vari\
+anta ventilu nem\
+\xc3\xa1, se zobraz\xc3\xad \
+jako \xe2\x80\x9e\xe2\x80\x94\xe2\x80\x9c a\
+ nelze je zvolit\
+.</p>\x0a</body>\x0a</\
+html>\x0a\
+\x00\x00\x06\xfc\
+<\
+!DOCTYPE html>\x0a<\
+html lang=\x22cs\x22>\x0a\
+<head><meta char\
+set=\x22utf-8\x22><tit\
+le>Lad\xc4\x9bn\xc3\xad a ch\
+arakterizace</ti\
+tle></head>\x0a<bod\
+y>\x0a<p><a href=\x22h\
+elp_cs.html\x22>N\xc3\xa1\
+pov\xc4\x9bda prm9tool\
+</a></p>\x0a<h1>Lad\
+\xc4\x9bn\xc3\xad a charakte\
+rizace</h1>\x0a<p>O\
+kno se otev\xc5\x99e z\
+ osciloskopu (<b\
+>Lad\xc4\x9bn\xc3\xad a char\
+akterizace\xe2\x80\xa6</b\
+>) nebo z blok\xc5\xaf\
+ regul\xc3\xa1tor\xc5\xaf\x0av \
+postupov\xc3\xa9m diag\
+ramu. V re\xc5\xbeimu \
+online pohybuje \
+p\xc5\x99ipojen\xc3\xbdm ven\
+tilem, offline b\
+\xc4\x9b\xc5\xbe\xc3\xad na emulov\
+an\xc3\xa9\x0akopii venti\
+lu dokumentu. Ve\
+ntil mus\xc3\xad sledo\
+vat \xc5\xbe\xc3\xa1danou ho\
+dnotu (ventil -C\
+A: nejprve NMT s\
+tart a\x0aUvolnit);\
+ zkou\xc5\xa1ka uvoln\xc4\
+\x9bn\xc3\xad nab\xc3\xaddne.</\
+p>\x0a<p><b>Pozor:<\
+/b> ka\xc5\xbed\xc3\xa1 zkou\
+\xc5\xa1ka pohybuje \xc5\xa1\
+oup\xc3\xa1tkem. Ujist\
+\xc4\x9bte se, \xc5\xbee se \
+stroj sm\xc3\xad pohyb\
+ovat.</p>\x0a<h2>St\
+r\xc3\xa1nky</h2>\x0a<ul>\
+\x0a<li><b>Autotune\
+</b>: podle mode\
+lu (n\xc4\x9bkolik sko\
+k\xc5\xaf, p\xc5\x99izp\xc5\xafsob\
+en\xc3\xbd model, kons\
+tanty, kter\xc3\xa9\x0ane\
+kmitaj\xc3\xad) nebo p\
+odle pravidla kr\
+itick\xc3\xa9ho zes\xc3\xadl\
+en\xc3\xad. N\xc3\xa1vrh se \
+zobraz\xc3\xad vedle s\
+ou\xc4\x8dasn\xc3\xbdch\x0akons\
+tant; <b>P\xc5\x99evz\xc3\
+\xadt navr\xc5\xbeen\xc3\xa9 ko\
+nstanty</b> je v\
+lo\xc5\xbe\xc3\xad do dokume\
+ntu (jeden krok \
+zp\xc4\x9bt; online\x0ai \
+do ventilu, se z\
+\xc3\xa1znamem v histo\
+rii). Trvale je \
+ulo\xc5\xbete p\xc5\x99\xc3\xadkaz\
+em Ventil \xe2\x86\x92 Ul\
+o\xc5\xbeit do pam\xc4\x9bti\
+\x0aventilu.</li>\x0a<\
+li><b>Frekven\xc4\x8dn\
+\xc3\xad charakteristi\
+ka</b>: sinusov\xc3\
+\xbd rozm\xc3\xadtan\xc3\xbd si\
+gn\xc3\xa1l kolem prac\
+ovn\xc3\xadho bodu;\x0afr\
+ekvence p\xc5\x99i \xe2\x88\x92\
+3 dB a \xe2\x88\x9290\xc2\xb0.<\
+/li>\x0a<li><b>Stat\
+ick\xc3\xa1 charakteri\
+stika</b>: pomal\
+\xc3\xbd troj\xc3\xbaheln\xc3\xadk\
+; hystereze, lin\
+earita a p\xc3\xa1smo\x0a\
+necitlivosti a n\
+\xc3\xa1vrh linearizac\
+e.</li>\x0a<li><b>P\
+rotokol o zkou\xc5\xa1\
+ce</b>: p\xc5\x99ej\xc3\xadm\
+ac\xc3\xad profil (sko\
+ky, rozm\xc3\xadt\xc3\xa1n\xc3\xad\
+, statick\xc3\xa1 zkou\
+\xc5\xa1ka a jejich\x0ame\
+ze) v jednom b\xc4\x9b\
+hu; PDF uv\xc3\xa1d\xc3\xad \
+na ka\xc5\xbed\xc3\xa9 stran\
+\xc4\x9b typov\xc3\xbd kl\xc3\xad\xc4\
+\x8d a v\xc3\xbdrobn\xc3\xad \xc4\x8d\
+\xc3\xadslo a obsahuje\
+ sadu\x0aparametr\xc5\xaf\
+ v zobrazovan\xc3\xbdc\
+h jednotk\xc3\xa1ch; n\
+am\xc4\x9b\xc5\x99en\xc3\xa1 data \
+jdou vedle do CS\
+V.</li>\x0a</ul>\x0a<p\
+>Karta <b>P\xc5\x99ech\
+odov\xc3\xa1 charakter\
+istika</b> oscil\
+oskopu m\xc4\x9b\xc5\x99\xc3\xad p\
+\xc5\x99ekmit, dobu n\xc3\
+\xa1b\xc4\x9bhu a dobu\x0aus\
+t\xc3\xa1len\xc3\xad ka\xc5\xbed\xc3\xa9\
+ho zobrazen\xc3\xa9ho \
+skoku.</p>\x0a</bod\
+y>\x0a</html>\x0a\
+\x00\x00\x19\xde\
 <\
 !DOCTYPE html>\x0a<\
 html lang=\x22de\x22>\x0a\
@@ -353,308 +1238,854 @@ des Ventils (Kap\
 itel 8); diese S\
 eite beschreibt \
 das\x0aProgramm.</p\
->\x0a\x0a<h2>Start</h2\
->\x0a<ul>\x0a<li><code\
->prm9tool</code>\
- \xc3\xb6ffnet das Fen\
-ster mit einem n\
-euen Parametersa\
-tz.</li>\x0a<li><co\
-de>prm9tool DATE\
-I.prm</code> \xc3\xb6f\
-fnet eine Parame\
-terdatei.</li>\x0a<\
-li><code>prm9too\
-l --emulator [TY\
-PSCHL\xc3\x9cSSEL[:SER\
-IENNUMMER]]</cod\
-e> startet onlin\
-e mit einem\x0aemul\
-ierten Ventil (S\
-tandard-Typschl\xc3\
-\xbcssel <code>PRM9\
--06.3Z11/30-24E0\
-2S02-CA</code>).\
-</li>\x0a</ul>\x0a\x0a<h2\
->Das Fenster</h2\
->\x0a<p>Hauptmen\xc3\xbc,\
- Werkzeugleiste,\
- Hauptfl\xc3\xa4che un\
-d Statuszeile. D\
-ie Statuszeile z\
-eigt den\x0aKommuni\
-kationsmodus, de\
-n Zustand des Ve\
-ntils (<i>ok</i>\
- oder den aktive\
-n Fehler), die\x0aF\
-irmware-Version,\
- den Typschl\xc3\xbcss\
-el und den Datei\
-namen (<b>*</b>:\
- ungespeicherte \
-\xc3\x84nderungen)\x0aund\
- zuletzt die Ber\
-echtigungsstufe.\
- Der Modus laute\
-t VERBINDEN, sol\
-ange ein eben ve\
-rbundenes\x0aVentil\
- mit dem Paramet\
-ersatz vergliche\
-n wird, und ONLI\
-NE, sobald beide\
- \xc3\xbcbereinstimmen\
-.</p>\x0a<p>Die Hau\
-ptfl\xc3\xa4che zeigt \
-eine von drei An\
-sichten: das <b>\
-Ablaufdiagramm</\
-b> (ein Klick au\
-f\x0aeinen Block st\
-ellt seine Param\
-eter ein, ein Kl\
-ick auf einen ro\
-ten Messpunkt ze\
-igt ihn im\x0aOszil\
-loskop), die <b>\
-Parameterliste</\
-b> (Doppelklick \
-auf eine Zeile \xc3\
-\xa4ndert den Wert;\
- Werte,\x0adie von \
-der Werkseinstel\
-lung abweichen, \
-sind hervorgehob\
-en; Suche und \xe2\x80\
-\x9eNur ge\xc3\xa4nderte\xe2\
-\x80\x9c\x0afiltern die L\
-iste) und das <b\
->Oszilloskop</b>\
- (nur online, h\xc3\
-\xb6chstens drei Me\
-sspunkte).</p>\x0a\x0a\
-<h2>Berechtigung\
-sstufen</h2>\x0a<p>\
-<b>Basis</b> zei\
-gt die grundlege\
-nden Einstellung\
-en; in der Basis\
-stufe werden die\
- vier\x0aRampen gem\
-einsam eingestel\
-lt. <b>Experte</\
-b> erg\xc3\xa4nzt die \
-Regler, die Line\
-arisierungen und\
-\x0adie Einstellung\
-en des externen \
-Sensors und ist \
-durch ein Passwo\
-rt gesch\xc3\xbctzt. D\
-as Passwort\x0aim A\
-uslieferungszust\
-and lautet <code\
->expert</code>; \
-in der Expertens\
-tufe \xc3\xa4ndern Sie\
- es unter\x0aAnsich\
-t \xe2\x86\x92 Berechtigu\
-ngsstufe \xe2\x86\x92 Exp\
-ertenpasswort \xc3\xa4\
-ndern. Das Progr\
-amm speichert nu\
-r einen\x0agesalzen\
-en Hash davon.</\
-p>\x0a<p>Die Berech\
-tigungsstufen sc\
-h\xc3\xbctzen vor vers\
-ehentlichen \xc3\x84nd\
-erungen, nicht v\
-or jemandem, der\
- die\x0aEinstellung\
-en des Programms\
- bearbeiten kann\
-: Wird der Eintr\
-ag\x0a<code>access/\
-expert_password<\
-/code> aus den E\
-instellungen ent\
-fernt, gilt wied\
-er das Passwort\x0a\
-des Auslieferung\
-szustands. Eine \
-Parameterdatei e\
-nth\xc3\xa4lt alle Wer\
-te, unabh\xc3\xa4ngig \
-von der Stufe:\x0aS\
-endet ein Benutz\
-er der Stufe Bas\
-is ein Dokument,\
- dessen Experten\
-werte von denen \
-des Ventils\x0aabwe\
-ichen, fragt das\
- Programm zuerst\
- nach.</p>\x0a\x0a<h2>\
-Online und offli\
-ne</h2>\x0a<p>Kommu\
-nikation \xe2\x86\x92 HID\
--Konfiguration l\
-istet die \xc3\xbcber \
-USB angeschlosse\
-nen und die emul\
-ierten\x0aVentile; \
-ein emuliertes V\
-entil f\xc3\xbcgen Sie\
- mit Typschl\xc3\xbcss\
-el und Seriennum\
-mer hinzu.\x0aKommu\
-nikation \xe2\x86\x92 Onl\
-ine-Modus verbin\
-det. Weicht der \
-ge\xc3\xb6ffnete Param\
-etersatz vom Ven\
-til ab,\x0azeigt da\
-s Programm die U\
-nterschiede und \
-fragt, ob die We\
-rte des Ventils \
-\xc3\xbcbernommen, die\
-\x0aWerte des Dokum\
-ents gesendet (H\
-ochladen) oder a\
-bgebrochen werde\
-n soll. Online g\
-eht jede\x0a\xc3\x84nderu\
-ng sofort an das\
- Ventil und in d\
-as Dokument, off\
-line nur in das \
-Dokument. Geht d\
-ie\x0aVerbindung ve\
-rloren, schaltet\
- das Programm au\
-f offline und be\
-h\xc3\xa4lt alle Werte\
-.</p>\x0a<p>Online \
-ge\xc3\xa4nderte Werte\
- sind im Ventil \
-aktiv, aber noch\
- nicht gespeiche\
-rt: beim Wechsel\
-\x0aauf offline bie\
-tet das Programm\
- an, sie zu spei\
-chern. <b>In das\
- Ventil hochlade\
-n</b>\x0aschreibt a\
-lle Werte, liest\
- sie zur\xc3\xbcck, ve\
-rgleicht und spe\
-ichert sie; gesp\
-eichert wird nur\
-,\x0awenn jeder Wer\
-t best\xc3\xa4tigt wur\
-de. Vor dem erst\
-en Hochladen in \
-ein Ventil siche\
-rt das\x0aProgramm \
-dessen eigene Pa\
-rameter im Benut\
-zerdatenordner (\
-<code>backups/&l\
-t;Seriennummer&g\
-t;/</code>).</p>\
-\x0a<p><b>Ventil ne\
-u starten</b> un\
-d <b>Werkseinste\
-llungen wiederhe\
-rstellen</b> sin\
-d nur bei\x0agetren\
-nter Hydraulik e\
-rlaubt; das Prog\
-ramm l\xc3\xa4sst Sie \
-das best\xc3\xa4tigen.\
-</p>\x0a\x0a<h2>Dateie\
-n</h2>\x0a<p>Parame\
-terdateien (<cod\
-e>*.prm</code>) \
-sind Textdateien\
-. \xc3\x96ffnen, Speic\
-hern, Speichern\x0a\
-unter, die zulet\
-zt ge\xc3\xb6ffneten D\
-ateien und Drag \
-&amp; Drop funkt\
-ionieren wie gew\
-ohnt; vor dem\x0aVe\
-rlust ungespeich\
-erter \xc3\x84nderunge\
-n fragt das Prog\
-ramm nach. Jede \
-\xc3\x84nderung l\xc3\xa4sst\
- sich\x0ar\xc3\xbcckg\xc3\xa4ng\
-ig machen (Strg+\
-Z) und wiederher\
-stellen (Strg+Y)\
-. Datei \xe2\x86\x92 Druc\
-ken und Datei \xe2\x86\
-\x92 PDF\x0aexportiere\
-n erzeugen ein P\
-arameterprotokol\
-l mit Typschl\xc3\xbcs\
-sel, Seriennumme\
-r, Firmware, Dat\
-ei,\x0aDatum, Berec\
-htigungsstufe, d\
-em Ablaufdiagram\
-m und allen Para\
-metern mit Einhe\
-it.</p>\x0a\x0a<h2>Tas\
-tatur</h2>\x0a<tabl\
-e>\x0a<tr><td>Strg+\
-O / Strg+S / Str\
-g+Umschalt+S</td\
-><td>\xc3\x96ffnen / S\
-peichern / Speic\
-hern unter</td><\
-/tr>\x0a<tr><td>Str\
-g+Z / Strg+Y</td\
-><td>R\xc3\xbcckg\xc3\xa4ngi\
-g / Wiederherste\
-llen</td></tr>\x0a<\
-tr><td>Strg+P / \
-Strg+E</td><td>D\
-rucken / PDF exp\
-ortieren</td></t\
-r>\x0a<tr><td>Strg+\
-1 / Strg+2 / Str\
-g+3 / Strg+4</td\
-><td>Ablaufdiagr\
-amm / Parameterl\
-iste / Oszillosk\
-op / CANopen-Fen\
-ster</td></tr>\x0a<\
-tr><td>F5 / Umsc\
-halt+F5</td><td>\
-Online / Offline\
-</td></tr>\x0a<tr><\
-td>Strg+U / Strg\
-+D</td><td>In da\
-s Ventil hochlad\
-en / Aus dem Ven\
-til herunterlade\
-n</td></tr>\x0a<tr>\
-<td>Strg+T / Str\
-g+I / Strg+H</td\
-><td>Ventilauswa\
-hl / Ventilstatu\
-s / HID-Konfigur\
-ation</td></tr>\x0a\
-</table>\x0a</body>\
-\x0a</html>\x0a\
-\x00\x00\x11\x8b\
+>\x0a\x0a<p><b>Weitere\
+ Seiten:</b> <a \
+href=\x22can_de.htm\
+l\x22>CAN-Bus und C\
+ANopen</a> \xc2\xb7 <a\
+ href=\x22tuning_de\
+.html\x22>Einstellu\
+ng und Charakter\
+isierung</a> \xc2\xb7 \
+<a href=\x22compare\
+_de.html\x22>Parame\
+ters\xc3\xa4tze vergle\
+ichen</a> \xc2\xb7 <a \
+href=\x22history_de\
+.html\x22>Verlauf e\
+ines Ventils</a>\
+. In einem Fenst\
+er \xc3\xb6ffnet <b>F1\
+</b> die Seite d\
+azu.</p>\x0a\x0a<h2>St\
+art</h2>\x0a<ul>\x0a<l\
+i><code>prm9tool\
+</code> \xc3\xb6ffnet \
+das Fenster mit \
+einem neuen Para\
+metersatz.</li>\x0a\
+<li><code>prm9to\
+ol DATEI.prm</co\
+de> \xc3\xb6ffnet eine\
+ Parameterdatei.\
+</li>\x0a<li><code>\
+prm9tool --emula\
+tor [TYPSCHL\xc3\x9cSS\
+EL[:SERIENNUMMER\
+]]</code> starte\
+t online mit ein\
+em\x0aemulierten Ve\
+ntil (Standard-T\
+ypschl\xc3\xbcssel <co\
+de>PRM9-06.3Z11/\
+30-24E02S02-CA</\
+code>).</li>\x0a</u\
+l>\x0a\x0a<h2>Das Fens\
+ter</h2>\x0a<p>Haup\
+tmen\xc3\xbc, Werkzeug\
+leiste, Hauptfl\xc3\
+\xa4che und Statusz\
+eile. Die Status\
+zeile zeigt den\x0a\
+Kommunikationsmo\
+dus, den Zustand\
+ des Ventils (<i\
+>ok</i> oder den\
+ aktiven Fehler)\
+, die\x0aFirmware-V\
+ersion, den Typs\
+chl\xc3\xbcssel und de\
+n Dateinamen (<b\
+>*</b>: ungespei\
+cherte \xc3\x84nderung\
+en)\x0aund zuletzt \
+die Berechtigung\
+sstufe. Der Modu\
+s lautet VERBIND\
+EN, solange ein \
+eben verbundenes\
+\x0aVentil mit dem \
+Parametersatz ve\
+rglichen wird, u\
+nd ONLINE, sobal\
+d beide \xc3\xbcberein\
+stimmen.</p>\x0a<p>\
+Die Hauptfl\xc3\xa4che\
+ zeigt eine von \
+drei Ansichten: \
+das <b>Ablaufdia\
+gramm</b> (ein K\
+lick auf\x0aeinen B\
+lock stellt sein\
+e Parameter ein,\
+ ein Klick auf e\
+inen roten Messp\
+unkt zeigt ihn i\
+m\x0aOszilloskop), \
+die <b>Parameter\
+liste</b> (Doppe\
+lklick auf eine \
+Zeile \xc3\xa4ndert de\
+n Wert; Werte,\x0ad\
+ie von der Werks\
+einstellung abwe\
+ichen, sind herv\
+orgehoben; Suche\
+ und \xe2\x80\x9eNur ge\xc3\xa4\
+nderte\xe2\x80\x9c\x0afilter\
+n die Liste) und\
+ das <b>Oszillos\
+kop</b> (nur onl\
+ine, h\xc3\xb6chstens \
+drei Messpunkte)\
+.</p>\x0a\x0a<h2>Berec\
+htigungsstufen</\
+h2>\x0a<p><b>Basis<\
+/b> zeigt die gr\
+undlegenden Eins\
+tellungen; in de\
+r Basisstufe wer\
+den die vier\x0aRam\
+pen gemeinsam ei\
+ngestellt. <b>Ex\
+perte</b> erg\xc3\xa4n\
+zt die Regler, d\
+ie Linearisierun\
+gen und\x0adie Eins\
+tellungen des ex\
+ternen Sensors u\
+nd ist durch ein\
+ Passwort gesch\xc3\
+\xbctzt. Das Passwo\
+rt\x0aim Auslieferu\
+ngszustand laute\
+t <code>expert</\
+code>; in der Ex\
+pertenstufe \xc3\xa4nd\
+ern Sie es unter\
+\x0aAnsicht \xe2\x86\x92 Ber\
+echtigungsstufe \
+\xe2\x86\x92 Expertenpass\
+wort \xc3\xa4ndern. Da\
+s Programm speic\
+hert nur einen\x0ag\
+esalzenen Hash d\
+avon.</p>\x0a<p>Die\
+ Berechtigungsst\
+ufen sch\xc3\xbctzen v\
+or versehentlich\
+en \xc3\x84nderungen, \
+nicht vor jemand\
+em, der die\x0aEins\
+tellungen des Pr\
+ogramms bearbeit\
+en kann: Wird de\
+r Eintrag\x0a<code>\
+access/expert_pa\
+ssword</code> au\
+s den Einstellun\
+gen entfernt, gi\
+lt wieder das Pa\
+sswort\x0ades Ausli\
+eferungszustands\
+. Eine Parameter\
+datei enth\xc3\xa4lt a\
+lle Werte, unabh\
+\xc3\xa4ngig von der S\
+tufe:\x0aSendet ein\
+ Benutzer der St\
+ufe Basis ein Do\
+kument, dessen E\
+xpertenwerte von\
+ denen des Venti\
+ls\x0aabweichen, fr\
+agt das Programm\
+ zuerst nach.</p\
+>\x0a\x0a<h2>Online un\
+d offline</h2>\x0a<\
+p>Kommunikation \
+\xe2\x86\x92 HID-Konfigur\
+ation listet die\
+ \xc3\xbcber USB anges\
+chlossenen und d\
+ie emulierten\x0aVe\
+ntile; ein emuli\
+ertes Ventil f\xc3\xbc\
+gen Sie mit Typs\
+chl\xc3\xbcssel und Se\
+riennummer hinzu\
+.\x0aKommunikation \
+\xe2\x86\x92 Online-Modus\
+ verbindet. Ein \
+aus einem andere\
+n Ventil (andere\
+ Seriennummer) g\
+elesenes Dokumen\
+t wird zuerst ge\
+nannt: damit wei\
+terarbeiten oder\
+ offline gehen. \
+Weicht der ge\xc3\xb6f\
+fnete Parameters\
+atz vom Ventil a\
+b,\x0azeigt das Pro\
+gramm die Unters\
+chiede und fragt\
+, ob die Werte d\
+es Ventils \xc3\xbcber\
+nommen, die\x0aWert\
+e des Dokuments \
+gesendet (Hochla\
+den) oder abgebr\
+ochen werden sol\
+l. Online geht j\
+ede\x0a\xc3\x84nderung so\
+fort an das Vent\
+il und in das Do\
+kument, offline \
+nur in das Dokum\
+ent. Geht die\x0aVe\
+rbindung verlore\
+n, schaltet das \
+Programm auf off\
+line und beh\xc3\xa4lt\
+ alle Werte.</p>\
+\x0a<p>Online ge\xc3\xa4n\
+derte Werte sind\
+ im Ventil aktiv\
+, aber noch nich\
+t gespeichert: b\
+eim Wechsel\x0aauf \
+offline bietet d\
+as Programm an, \
+sie zu speichern\
+, und Ventil \xe2\x86\x92\
+ <b>Im Ventil sp\
+eichern</b>\x0aspei\
+chert sie sofort\
+ (womit das Vent\
+il arbeitet, dam\
+it startet es au\
+ch; im Verlauf\x0af\
+estgehalten). <b\
+>In das Ventil h\
+ochladen</b>\x0asch\
+reibt alle Werte\
+, liest sie zur\xc3\
+\xbcck, vergleicht \
+und speichert si\
+e; gespeichert w\
+ird nur,\x0awenn je\
+der Wert best\xc3\xa4t\
+igt wurde. Vor d\
+em ersten Hochla\
+den in ein Venti\
+l sichert das\x0aPr\
+ogramm dessen ei\
+gene Parameter i\
+m Benutzerdateno\
+rdner (<code>bac\
+kups/&lt;Serienn\
+ummer&gt;/</code\
+>).</p>\x0a<p><b>Ve\
+ntil neu starten\
+</b> und <b>Werk\
+seinstellungen w\
+iederherstellen<\
+/b> sind nur bei\
+\x0agetrennter Hydr\
+aulik erlaubt; d\
+as Programm l\xc3\xa4s\
+st Sie das best\xc3\
+\xa4tigen.</p>\x0a\x0a<h2\
+>Dateien</h2>\x0a<p\
+>Parameterdateie\
+n (<code>*.prm</\
+code>) sind Text\
+dateien. \xc3\x96ffnen\
+, Speichern, Spe\
+ichern\x0aunter, di\
+e zuletzt ge\xc3\xb6ff\
+neten Dateien un\
+d Drag &amp; Dro\
+p funktionieren \
+wie gewohnt; vor\
+ dem\x0aVerlust ung\
+espeicherter \xc3\x84n\
+derungen fragt d\
+as Programm nach\
+. Jede \xc3\x84nderung\
+ l\xc3\xa4sst sich\x0ar\xc3\xbc\
+ckg\xc3\xa4ngig machen\
+ (Strg+Z) und wi\
+ederherstellen (\
+Strg+Y). Datei \xe2\
+\x86\x92 Drucken und D\
+atei \xe2\x86\x92 PDF\x0aexp\
+ortieren erzeuge\
+n ein Parameterp\
+rotokoll mit Typ\
+schl\xc3\xbcssel, Seri\
+ennummer, Firmwa\
+re, Datei,\x0aDatum\
+, Berechtigungss\
+tufe, dem Ablauf\
+diagramm und all\
+en Parametern mi\
+t Einheit. Seit \
+dem\x0aSpeichern ge\
+\xc3\xa4nderte Werte s\
+ind mit <b>*</b>\
+ markiert, und d\
+ie Zeile \xe2\x80\x9eDate\
+i\xe2\x80\x9c sagt es; je\
+de Seite\x0anennt T\
+ypschl\xc3\xbcssel und\
+ Seriennummer un\
+d tr\xc3\xa4gt ihre Se\
+itenzahl; die le\
+tzte Seite hat e\
+ine Zeile\x0af\xc3\xbcr D\
+atum, Name und U\
+nterschrift.</p>\
+\x0a<p><b>Ein Venti\
+l sichern</b>: o\
+nline gehen, Ven\
+til \xe2\x86\x92 Aus dem \
+Ventil herunterl\
+aden, dann\x0aDatei\
+ \xe2\x86\x92 <b>Sicherun\
+gskopie speicher\
+n\xe2\x80\xa6</b> (vorges\
+chlagener Name: \
+Typschl\xc3\xbcssel, S\
+eriennummer,\x0aDat\
+um und Uhrzeit).\
+ Die Kopie wird \
+geschrieben, das\
+ ge\xc3\xb6ffnete Doku\
+ment bleibt, was\
+ es war:\x0asp\xc3\xa4ter\
+e \xc3\x84nderungen we\
+rden in seine ei\
+gene Datei gespe\
+ichert, nie in d\
+ie Sicherung. Sp\
+eichern\x0aunter da\
+gegen macht die \
+neue Datei zum g\
+e\xc3\xb6ffneten Dokum\
+ent.</p>\x0a\x0a<h2>Ta\
+statur</h2>\x0a<tab\
+le>\x0a<tr><td>Strg\
++O / Strg+S / St\
+rg+Umschalt+S</t\
+d><td>\xc3\x96ffnen / \
+Speichern / Spei\
+chern unter</td>\
+</tr>\x0a<tr><td>St\
+rg+Z / Strg+Y</t\
+d><td>R\xc3\xbcckg\xc3\xa4ng\
+ig / Wiederherst\
+ellen</td></tr>\x0a\
+<tr><td>Strg+P /\
+ Strg+E</td><td>\
+Drucken / PDF ex\
+portieren</td></\
+tr>\x0a<tr><td>Strg\
++1 / Strg+2 / St\
+rg+3 / Strg+4</t\
+d><td>Ablaufdiag\
+ramm / Parameter\
+liste / Oszillos\
+kop / CANopen-Fe\
+nster</td></tr>\x0a\
+<tr><td>F5 / Ums\
+chalt+F5</td><td\
+>Online / Offlin\
+e</td></tr>\x0a<tr>\
+<td>Strg+U / Str\
+g+D</td><td>In d\
+as Ventil hochla\
+den / Aus dem Ve\
+ntil herunterlad\
+en</td></tr>\x0a<tr\
+><td>Strg+T / St\
+rg+I / Strg+H</t\
+d><td>Ventilausw\
+ahl / Ventilstat\
+us / HID-Konfigu\
+ration</td></tr>\
+\x0a</table>\x0a<p><b>\
+Skripte und Pr\xc3\xbc\
+fst\xc3\xa4nde</b>: da\
+s Ventil aus Pyt\
+hon und Shell-Sk\
+ripten, <a href=\
+\x22scripting_en.ht\
+ml\x22>auf dieser S\
+eite</a> (auf En\
+glisch).</p>\x0a</b\
+ody>\x0a</html>\x0a\
+\x00\x00\x05\xaf\
+<\
+!DOCTYPE html>\x0a<\
+html lang=\x22en\x22>\x0a\
+<head><meta char\
+set=\x22utf-8\x22><tit\
+le>History of a \
+valve</title></h\
+ead>\x0a<body>\x0a<p><\
+a href=\x22help_en.\
+html\x22>prm9tool h\
+elp</a></p>\x0a<h1>\
+History of a val\
+ve</h1>\x0a<p>Every\
+ operation on a \
+valve's paramete\
+rs is recorded w\
+ith time (UTC), \
+serial number, t\
+ype\x0akey, firmwar\
+e, link, program\
+ version, user a\
+nd station: read\
+ing, uploading (\
+and what for),\x0ab\
+ackups, storing,\
+ factory values,\
+ test reports, a\
+nd what you did \
+online \xe2\x80\x94 value\
+s taken from\x0aa c\
+ompared file or \
+from the history\
+, tuning accepte\
+d \xe2\x80\x94 with each \
+value changed. E\
+ach valve's\x0areco\
+rds form a hash \
+chain, so a chan\
+ged record is fo\
+und.</p>\x0a<p>Valv\
+e \xe2\x86\x92 <b>History\
+\xe2\x80\xa6</b> lists th\
+e records of the\
+ connected valve\
+ (or of a serial\
+ number\x0ayou type\
+). The column <b\
+>What was done</\
+b> says each rec\
+ord's meaning, e\
+.g. \xe2\x80\x9cTuning ac\
+cepted,\x0awritten \
+online: Autotune\
+; POSKP 0.4 \xe2\x86\x92 \
+0.55\xe2\x80\x9d.</p>\x0a<ul\
+>\x0a<li><b>Compare\
+ the two selecte\
+d records</b>: t\
+he difference in\
+ the compare vie\
+w; tick values\x0aa\
+nd take them int\
+o the document o\
+r write them int\
+o the valve.</li\
+>\x0a<li><b>Restore\
+ into the docume\
+nt</b>: a record\
+'s whole set, ty\
+pe key included \
+(one undo\x0astep).\
+ <b>Restore to t\
+he valve</b>: a \
+transactional up\
+load into the va\
+lve the record c\
+ame\x0afrom (online\
+ with it).</li>\x0a\
+<li><b>Export\xe2\x80\xa6\
+</b>: a record a\
+s <code>*.prm</c\
+ode> or CSV. <b>\
+Database\xe2\x80\xa6</b>:\
+ SQLite on this\x0a\
+computer, or a P\
+ostgreSQL server\
+ for a line of s\
+tations, and wha\
+t to do when it \
+cannot be\x0areache\
+d.</li>\x0a</ul>\x0a</\
+body>\x0a</html>\x0a\
+\x00\x00\x09 \
+<\
+!DOCTYPE html>\x0a<\
+html lang=\x22cs\x22>\x0a\
+<head><meta char\
+set=\x22utf-8\x22><tit\
+le>Sb\xc4\x9brnice CAN\
+ a CANopen</titl\
+e></head>\x0a<body>\
+\x0a<p><a href=\x22hel\
+p_cs.html\x22>N\xc3\xa1po\
+v\xc4\x9bda prm9tool</\
+a></p>\x0a<h1>Sb\xc4\x9br\
+nice CAN a CANop\
+en</h1>\x0a<p>Venti\
+l -CA komunikuje\
+ tak\xc3\xa9 p\xc5\x99es CAN\
+open (n\xc3\xa1vod, ka\
+pitola 7). prm9t\
+ool je pak CANop\
+en\x0amaster, p\xc5\x99es\
+ kter\xc3\xbdkoli adap\
+t\xc3\xa9r CAN, kter\xc3\xbd\
+ podporuje pytho\
+n-can (PEAK, Kva\
+ser, IXXAT, Vect\
+or,\x0aCANable/slca\
+n, SocketCAN).</\
+p>\x0a<h2>P\xc5\x99ipojen\
+\xc3\xad p\xc5\x99es CAN</h2\
+>\x0a<ol>\x0a<li>Komun\
+ikace \xe2\x86\x92 <b>Sb\xc4\
+\x9brnice CAN\xe2\x80\xa6</b\
+>: zvolte rozhra\
+n\xc3\xad, kan\xc3\xa1l a p\xc5\
+\x99enosovou rychlo\
+st a pak\x0a<b>Proh\
+ledat sb\xc4\x9brnici<\
+/b>. Ka\xc5\xbed\xc3\xbd uze\
+l, kter\xc3\xbd odpov\xc3\
+\xad, se vyp\xc3\xad\xc5\xa1e s\
+e stavem NMT, he\
+artbeatem\x0aa posl\
+edn\xc3\xad zpr\xc3\xa1vou E\
+MCY; uzly, kter\xc3\
+\xa9 nejsou ventily\
+ PRM9, zvolit ne\
+lze.</li>\x0a<li>Zv\
+olte ventil a st\
+iskn\xc4\x9bte OK: pro\
+gram se s n\xc3\xadm s\
+poj\xc3\xad (<code>can\
+:UZEL</code>). S\
+kute\xc4\x8dn\xc3\xbd\x0aventil\
+ neuv\xc3\xa1d\xc3\xad sv\xc5\xafj\
+ \xc3\xbapln\xc3\xbd typov\xc3\xbd\
+ kl\xc3\xad\xc4\x8d: zadejte\
+ ten ze \xc5\xa1t\xc3\xadtku\
+ ventilu; progra\
+m si ho pamatuje\
+\x0apodle v\xc3\xbdrobn\xc3\xad\
+ho \xc4\x8d\xc3\xadsla.</li>\
+\x0a</ol>\x0a<h2>Uvede\
+n\xc3\xad do provozu</\
+h2>\x0a<p>Ventil -C\
+A ve stavu p\xc5\x99i \
+dod\xc3\xa1n\xc3\xad \xc4\x8dek\xc3\xa1 \
+na sv\xc5\xafj master:\
+ NMT pre-operati\
+onal, stav za\xc5\x99\xc3\
+\xadzen\xc3\xad\x0aINIT; nes\
+leduje \xc5\xbe\xc3\xa1danou\
+ hodnotu. Ventil\
+ \xe2\x86\x92 <b>Stav ven\
+tilu</b>, skupin\
+a Uveden\xc3\xad do pr\
+ovozu:\x0astiskn\xc4\x9bt\
+e <b>NMT start</\
+b> a pak <b>Uvol\
+nit</b> (\xc5\x99\xc3\xaddic\
+\xc3\xad slovo 08h \xe2\x86\x92\
+ 09h \xe2\x86\x92 0Bh \xe2\x86\x92\
+ 0Fh). \xc5\x98\xc3\xa1dek\x0ap\
+od tla\xc4\x8d\xc3\xadtky \xc5\x99\
+\xc3\xadk\xc3\xa1, co je\xc5\xa1t\xc4\
+\x9b chyb\xc3\xad. \xe2\x80\x9eZab\
+lokovat\xe2\x80\x9c a \xe2\x80\x9e\
+NMT stop\xe2\x80\x9c to v\
+r\xc3\xa1t\xc3\xad zp\xc4\x9bt.</p\
+>\x0a<h2>Objekty a \
+konfigurace</h2>\
+\x0a<ul>\x0a<li>N\xc3\xa1hle\
+d \xe2\x86\x92 <b>Slovn\xc3\xad\
+k objekt\xc5\xaf\xe2\x80\xa6</b\
+> p\xc5\x99e\xc4\x8dte ka\xc5\xbed\
+\xc3\xbd objekt; do vy\
+hled\xc3\xa1vac\xc3\xadho \xc5\x99\
+\xc3\xa1dku napi\xc5\xa1te\x0ai\
+ndex, n\xc3\xa1zev neb\
+o hodnotu. V exp\
+ertn\xc3\xad \xc3\xbarovni z\
+ap\xc3\xad\xc5\xa1e dvojklik\
+ zapisovateln\xc3\xbd \
+objekt.</li>\x0a<li\
+>N\xc3\xa1hled \xe2\x86\x92 <b>\
+Okno CANopen</b>\
+: ID uzlu, p\xc5\x99en\
+osov\xc3\xa1 rychlost \
+a zakon\xc4\x8dovac\xc3\xad \
+odpor. Ventil \xc4\x8d\
+te\x0asv\xc3\xa9 oto\xc4\x8dn\xc3\xa9\
+ p\xc5\x99ep\xc3\xadna\xc4\x8de po\
+ zapnut\xc3\xad; zm\xc4\x9bn\
+\xc4\x9bn\xc3\xa9 ID uzlu ne\
+bo rychlost plat\
+\xc3\xad po restartu a\
+ po Ventil \xe2\x86\x92\x0aR\
+estart ventilu n\
+ajde prm9tool ve\
+ntil na nov\xc3\xa9 ad\
+rese.</li>\x0a<li>S\
+oubor \xe2\x86\x92 <b>Exp\
+ort DCF\xe2\x80\xa6</b> u\
+lo\xc5\xbe\xc3\xad konfigura\
+ci ventilu pro k\
+onfigur\xc3\xa1tor PLC\
+.</li>\x0a<li>Venti\
+l \xe2\x86\x92 <b>Ulo\xc5\xbeit\
+ do pam\xc4\x9bti vent\
+ilu</b> trvale u\
+lo\xc5\xbe\xc3\xad hodnoty, \
+se kter\xc3\xbdmi vent\
+il pracuje\x0a(obje\
+kt 0x1010, nebo \
+vlastn\xc3\xadm zp\xc5\xafso\
+bem ventilu, kde\
+ objekt chyb\xc3\xad).\
+</li>\x0a</ul>\x0a<p>O\
+sciloskop bere s\
+kute\xc4\x8dnou polohu\
+ z TPDO1; gener\xc3\
+\xa1tor \xc5\xbe\xc3\xa1dan\xc3\xa9 h\
+odnoty a zkou\xc5\xa1k\
+y lad\xc4\x9bn\xc3\xad pos\xc3\xad\
+laj\xc3\xad\x0a\xc5\xbe\xc3\xa1danou \
+hodnotu v RPDO1,\
+ jako PLC.</p>\x0a<\
+/body>\x0a</html>\x0a\
+\x00\x00\x06V\
+<\
+!DOCTYPE html>\x0a<\
+html lang=\x22en\x22>\x0a\
+<head><meta char\
+set=\x22utf-8\x22><tit\
+le>Tuning and ch\
+aracterization</\
+title></head>\x0a<b\
+ody>\x0a<p><a href=\
+\x22help_en.html\x22>p\
+rm9tool help</a>\
+</p>\x0a<h1>Tuning \
+and characteriza\
+tion</h1>\x0a<p>Ope\
+n the Tuning win\
+dow from the osc\
+illoscope (<b>Tu\
+ning and charact\
+erization\xe2\x80\xa6</b>\
+) or from\x0athe co\
+ntroller blocks \
+of the flow diag\
+ram. Online it m\
+oves the connect\
+ed valve; offlin\
+e it\x0aruns on an \
+emulated copy of\
+ the document's \
+valve. The valve\
+ must follow its\
+ setpoint (a -CA\
+\x0avalve: NMT star\
+t and Enable fir\
+st); a test offe\
+rs to enable it.\
+</p>\x0a<p><b>Warni\
+ng:</b> every te\
+st moves the spo\
+ol. Make sure th\
+e machine may mo\
+ve.</p>\x0a<h2>The \
+pages</h2>\x0a<ul>\x0a\
+<li><b>Autotune<\
+/b>: model-based\
+ (a few steps, a\
+ fitted model, g\
+ains that do not\
+ oscillate) or\x0at\
+he critical-gain\
+ rule. The propo\
+sal is shown aga\
+inst the present\
+ gains; <b>Accep\
+t the\x0aproposed g\
+ains</b> puts th\
+em into the docu\
+ment (one undo s\
+tep; online into\
+ the valve too,\x0a\
+recorded in the \
+history). Store \
+them with Valve \
+\xe2\x86\x92 Store in val\
+ve.</li>\x0a<li><b>\
+Frequency respon\
+se</b>: a sine s\
+weep around an o\
+perating point; \
+the \xe2\x88\x923 dB and \
+\xe2\x88\x9290\xc2\xb0\x0afrequenc\
+ies.</li>\x0a<li><b\
+>Static characte\
+ristic</b>: a sl\
+ow triangle; hys\
+teresis, lineari\
+ty and dead band\
+, and a\x0aproposed\
+ linearization.<\
+/li>\x0a<li><b>Test\
+ report</b>: an \
+acceptance profi\
+le (steps, sweep\
+, static test an\
+d their limits)\x0a\
+run in one go; t\
+he PDF names typ\
+e key and serial\
+ number on every\
+ page and lists \
+the parameter\x0ase\
+t in display uni\
+ts; the raw data\
+ go to CSV besid\
+e it.</li>\x0a</ul>\
+\x0a<p>The oscillos\
+cope's <b>Step r\
+esponse</b> tab \
+measures oversho\
+ot, rise and set\
+tling time of\x0aan\
+y step it shows.\
+</p>\x0a</body>\x0a</h\
+tml>\x0a\
+\x00\x00\x06\xe1\
+<\
+!DOCTYPE html>\x0a<\
+html lang=\x22de\x22>\x0a\
+<head><meta char\
+set=\x22utf-8\x22><tit\
+le>Parameters\xc3\xa4t\
+ze vergleichen</\
+title></head>\x0a<b\
+ody>\x0a<p><a href=\
+\x22help_de.html\x22>H\
+ilfe zu prm9tool\
+</a></p>\x0a<h1>Par\
+ameters\xc3\xa4tze ver\
+gleichen</h1>\x0a<p\
+>Die Vergleichsa\
+nsicht zeigt zwe\
+i Parameters\xc3\xa4tz\
+e nebeneinander \
+in Anzeigeeinhei\
+ten, dazu die\x0aWe\
+rkseinstellungen\
+ als dritte Spal\
+te. Fett gedruck\
+te Werte untersc\
+heiden sich.</p>\
+\x0a<ul>\x0a<li>Datei \
+\xe2\x86\x92 <b>Mit Datei\
+ vergleichen\xe2\x80\xa6<\
+/b>: das Dokumen\
+t gegen eine <co\
+de>*.prm</code>-\
+Datei\x0a(der Dialo\
+g \xc3\xb6ffnet den zu\
+letzt benutzten \
+Ordner).</li>\x0a<l\
+i>Ventil \xe2\x86\x92 <b>\
+Mit Ventil vergl\
+eichen</b> (onli\
+ne): das Dokumen\
+t gegen das, was\
+ das Ventil\x0agera\
+de enth\xc3\xa4lt.</li\
+>\x0a<li>Beim Onlin\
+e-Gehen mit eine\
+m abweichenden D\
+okument: <b>Je P\
+arameter w\xc3\xa4hlen\
+\xe2\x80\xa6</b>.</li>\x0a<l\
+i>Ventil \xe2\x86\x92 Ver\
+lauf: zwei Eintr\
+\xc3\xa4ge w\xc3\xa4hlen, <b\
+>Die zwei gew\xc3\xa4h\
+lten Eintr\xc3\xa4ge v\
+ergleichen</b>.<\
+/li>\x0a</ul>\x0a<h2>W\
+erte zur\xc3\xbcckschr\
+eiben</h2>\x0a<ol>\x0a\
+<li>Kreuzen Sie \
+in jeder Zeile d\
+en gew\xc3\xbcnschten \
+Wert an (in der \
+Spalte der Seite\
+, von der er\x0akom\
+mt), oder nehmen\
+ Sie <b>Alle ang\
+ezeigten Werte v\
+on \xe2\x80\xa6 ankreuzen\
+</b> f\xc3\xbcr die an\
+gezeigten\x0aZeilen\
+.</li>\x0a<li>Dr\xc3\xbcc\
+ken Sie die Scha\
+ltfl\xc3\xa4che, die s\
+agt, wohin die W\
+erte gehen: <b>\xe2\
+\x80\xa6 angekreuzte W\
+erte in\x0adas Vent\
+il schreiben</b>\
+ (ein Hochladen \
+genau dieser Wer\
+te: geschrieben,\
+ zur\xc3\xbcckgelesen,\
+\x0averglichen, ges\
+peichert) oder <\
+b>\xe2\x80\xa6 angekreuzt\
+e Werte in das D\
+okument \xc3\xbcberneh\
+men</b> (ein\x0aR\xc3\xbc\
+ckg\xc3\xa4ngig-Schrit\
+t). Die Zeile \xc3\xbc\
+ber der Tabelle \
+sagt, welche Spa\
+lte zu welcher S\
+chaltfl\xc3\xa4che\x0ageh\
+\xc3\xb6rt; eine Schal\
+tfl\xc3\xa4che bleibt \
+grau, bis etwas \
+angekreuzt ist.<\
+/li>\x0a</ol>\x0a<p>Fi\
+lter: nur Unters\
+chiede, ein Bloc\
+k des Ablaufdiag\
+ramms, die Basis\
+- oder Expertens\
+tufe.\x0aParameter,\
+ die eine Ventil\
+variante nicht h\
+at, erscheinen a\
+ls \xe2\x80\x9e\xe2\x80\x94\xe2\x80\x9c und\
+ lassen sich nic\
+ht\x0aw\xc3\xa4hlen.</p>\x0a\
+</body>\x0a</html>\x0a\
+\
+\x00\x00\x16x\
 <\
 !DOCTYPE html>\x0a<\
 html lang=\x22en\x22>\x0a\
@@ -679,263 +2110,606 @@ r 8) describes t\
 he parameters; t\
 his page describ\
 es the program.<\
-/p>\x0a\x0a<h2>Startin\
-g</h2>\x0a<ul>\x0a<li>\
-<code>prm9tool</\
-code> opens the \
-window with a ne\
-w parameter set.\
-</li>\x0a<li><code>\
-prm9tool FILE.pr\
-m</code> opens a\
- parameter file.\
-</li>\x0a<li><code>\
-prm9tool --emula\
-tor [TYPEKEY[:SE\
-RIAL]]</code> st\
-arts online with\
- an emulated val\
-ve\x0a(default type\
- key <code>PRM9-\
-06.3Z11/30-24E02\
-S02-CA</code>).<\
-/li>\x0a</ul>\x0a\x0a<h2>\
-The window</h2>\x0a\
-<p>Main menu, to\
-olbar, main area\
- and status bar.\
- The status bar \
-shows the commun\
-ication mode,\x0ath\
-e valve state (<\
-i>ok</i> or the \
-active error), t\
-he firmware vers\
-ion, the type ke\
-y and the\x0afile n\
-ame; <b>*</b> ma\
-rks unsaved chan\
-ges; last the ac\
-cess level. The \
-mode reads CONNE\
-CTING\x0awhile a va\
-lve just connect\
-ed is compared w\
-ith the paramete\
-r set, and ONLIN\
-E once they agre\
-e.</p>\x0a<p>The ma\
-in area shows on\
-e of three views\
-: the <b>flow di\
-agram</b> (click\
- a block to set \
-its\x0aparameters, \
-click a red meas\
-uring point to w\
-atch it in the o\
-scilloscope), th\
-e\x0a<b>parameter l\
-ist</b> (double-\
-click a row to c\
-hange the value;\
- values that dif\
-fer from the\x0afac\
-tory defaults ar\
-e highlighted; s\
-earch and \xe2\x80\x9cMod\
-ified only\xe2\x80\x9d fi\
-lter the list) a\
-nd the\x0a<b>oscill\
-oscope</b> (onli\
-ne only, at most\
- three measuring\
- points).</p>\x0a\x0a<\
-h2>Access levels\
-</h2>\x0a<p><b>Basi\
-c</b> shows the \
-basic settings; \
-at Basic level t\
-he four ramps ar\
-e set together.\x0a\
-<b>Expert</b> ad\
-ds the controlle\
-rs, the lineariz\
-ations and the e\
-xternal-sensor s\
-ettings and\x0ais p\
-rotected by a pa\
-ssword. The pass\
-word as delivere\
-d is <code>exper\
-t</code>; change\
- it at\x0aExpert le\
-vel with View \xe2\x86\
-\x92 Access level \xe2\
-\x86\x92 Change Expert\
- password. The p\
-rogram keeps onl\
-y a\x0asalted hash \
-of it.</p>\x0a<p>Th\
-e access levels \
-guard against ac\
-cidental changes\
-, not against so\
-meone who can ed\
-it the\x0aprogram's\
- settings: remov\
-ing the entry <c\
-ode>access/exper\
-t_password</code\
-> from the setti\
-ngs\x0abrings back \
-the delivered pa\
-ssword. A parame\
-ter file carries\
- every value wha\
-tever the level:\
-\x0aat Basic level,\
- sending a docum\
-ent whose Expert\
--level values di\
-ffer from the va\
-lve's asks\x0afirst\
-.</p>\x0a\x0a<h2>Onlin\
-e and offline</h\
-2>\x0a<p>Communicat\
-ion \xe2\x86\x92 HID conf\
-iguration lists \
-the valves conne\
-cted over USB an\
-d the emulated\x0av\
-alves; add an em\
-ulated valve wit\
-h its type key a\
-nd serial number\
-. Communication \
-\xe2\x86\x92 Online\x0amode \
-connects. If the\
- open parameter \
-set differs from\
- the valve's, th\
-e program lists \
-the\x0adifferences \
-and asks whether\
- to take the val\
-ve's values, sen\
-d the document's\
- values\x0a(upload)\
- or cancel. Onli\
-ne, every change\
- goes to the val\
-ve at once and i\
-nto the document\
-;\x0aoffline, into \
-the document onl\
-y. If the valve \
-is lost, the pro\
-gram goes offlin\
-e and keeps\x0aever\
-y value.</p>\x0a<p>\
-Values changed o\
-nline are active\
- in the valve bu\
-t not yet stored\
-: going offline \
-offers to\x0astore \
-them. <b>Upload \
-to valve</b> wri\
-tes all values, \
-reads them back,\
- compares and st\
-ores\x0athem; nothi\
-ng is stored unl\
-ess every value \
-was verified. Be\
-fore the first u\
-pload to a valve\
-\x0athe program sav\
-es a backup of t\
-he valve's own p\
-arameters in the\
- user data folde\
-r\x0a(<code>backups\
-/&lt;serial&gt;/\
-</code>).</p>\x0a<p\
-><b>Restart valv\
-e</b> and <b>Res\
-tore factory val\
-ues</b> are allo\
-wed only with th\
-e\x0ahydraulics dis\
-connected; the p\
-rogram asks you \
-to confirm this.\
-</p>\x0a\x0a<h2>Files<\
-/h2>\x0a<p>Paramete\
-r files (<code>*\
-.prm</code>) are\
- text files. Ope\
-n, Save, Save As\
-, the recent\x0afil\
-es and drag and \
-drop work as usu\
-al; the program \
-asks before unsa\
-ved changes are \
-lost.\x0aEvery chan\
-ge can be undone\
- (Ctrl+Z) and re\
-done (Ctrl+Y). F\
-ile \xe2\x86\x92 Print an\
-d File \xe2\x86\x92 Expor\
-t PDF\x0aproduce a \
-parameter record\
- with type key, \
-serial number, f\
-irmware, file, d\
-ate, access leve\
-l,\x0athe flow diag\
-ram and every pa\
-rameter with its\
- unit.</p>\x0a\x0a<h2>\
-Keyboard</h2>\x0a<t\
-able>\x0a<tr><td>Ct\
-rl+O / Ctrl+S / \
-Ctrl+Shift+S</td\
-><td>Open / Save\
- / Save As</td><\
-/tr>\x0a<tr><td>Ctr\
-l+Z / Ctrl+Y</td\
-><td>Undo / Redo\
-</td></tr>\x0a<tr><\
-td>Ctrl+P / Ctrl\
-+E</td><td>Print\
- / Export PDF</t\
-d></tr>\x0a<tr><td>\
-Ctrl+1 / Ctrl+2 \
-/ Ctrl+3 / Ctrl+\
-4</td><td>Flow d\
-iagram / Paramet\
-er list / Oscill\
-oscope / CANopen\
- window</td></tr\
->\x0a<tr><td>F5 / S\
-hift+F5</td><td>\
-Online / Offline\
-</td></tr>\x0a<tr><\
-td>Ctrl+U / Ctrl\
-+D</td><td>Uploa\
-d to valve / Dow\
-nload from valve\
-</td></tr>\x0a<tr><\
-td>Ctrl+T / Ctrl\
-+I / Ctrl+H</td>\
-<td>Valve select\
-ion / Valve stat\
-us / HID configu\
-ration</td></tr>\
-\x0a</table>\x0a</body\
+/p>\x0a\x0a<p><b>More \
+pages:</b> <a hr\
+ef=\x22can_en.html\x22\
+>CAN bus and CAN\
+open</a> \xc2\xb7 <a h\
+ref=\x22tuning_en.h\
+tml\x22>Tuning and \
+characterization\
+</a> \xc2\xb7 <a href=\
+\x22compare_en.html\
+\x22>Compare parame\
+ter sets</a> \xc2\xb7 \
+<a href=\x22history\
+_en.html\x22>Histor\
+y of a valve</a>\
+. In a window, <\
+b>F1</b> opens t\
+he page about it\
+.</p>\x0a\x0a<h2>Start\
+ing</h2>\x0a<ul>\x0a<l\
+i><code>prm9tool\
+</code> opens th\
+e window with a \
+new parameter se\
+t.</li>\x0a<li><cod\
+e>prm9tool FILE.\
+prm</code> opens\
+ a parameter fil\
+e.</li>\x0a<li><cod\
+e>prm9tool --emu\
+lator [TYPEKEY[:\
+SERIAL]]</code> \
+starts online wi\
+th an emulated v\
+alve\x0a(default ty\
+pe key <code>PRM\
+9-06.3Z11/30-24E\
+02S02-CA</code>)\
+.</li>\x0a</ul>\x0a\x0a<h\
+2>The window</h2\
+>\x0a<p>Main menu, \
+toolbar, main ar\
+ea and status ba\
+r. The status ba\
+r shows the comm\
+unication mode,\x0a\
+the valve state \
+(<i>ok</i> or th\
+e active error),\
+ the firmware ve\
+rsion, the type \
+key and the\x0afile\
+ name; <b>*</b> \
+marks unsaved ch\
+anges; last the \
+access level. Th\
+e mode reads CON\
+NECTING\x0awhile a \
+valve just conne\
+cted is compared\
+ with the parame\
+ter set, and ONL\
+INE once they ag\
+ree.</p>\x0a<p>The \
+main area shows \
+one of three vie\
+ws: the <b>flow \
+diagram</b> (cli\
+ck a block to se\
+t its\x0aparameters\
+, click a red me\
+asuring point to\
+ watch it in the\
+ oscilloscope), \
+the\x0a<b>parameter\
+ list</b> (doubl\
+e-click a row to\
+ change the valu\
+e; values that d\
+iffer from the\x0af\
+actory defaults \
+are highlighted;\
+ search and \xe2\x80\x9cM\
+odified only\xe2\x80\x9d \
+filter the list)\
+ and the\x0a<b>osci\
+lloscope</b> (on\
+line only, at mo\
+st three measuri\
+ng points).</p>\x0a\
+\x0a<h2>Access leve\
+ls</h2>\x0a<p><b>Ba\
+sic</b> shows th\
+e basic settings\
+; at Basic level\
+ the four ramps \
+are set together\
+.\x0a<b>Expert</b> \
+adds the control\
+lers, the linear\
+izations and the\
+ external-sensor\
+ settings and\x0ais\
+ protected by a \
+password. The pa\
+ssword as delive\
+red is <code>exp\
+ert</code>; chan\
+ge it at\x0aExpert \
+level with View \
+\xe2\x86\x92 Access level\
+ \xe2\x86\x92 Change Expe\
+rt password. The\
+ program keeps o\
+nly a\x0asalted has\
+h of it.</p>\x0a<p>\
+The access level\
+s guard against \
+accidental chang\
+es, not against \
+someone who can \
+edit the\x0aprogram\
+'s settings: rem\
+oving the entry \
+<code>access/exp\
+ert_password</co\
+de> from the set\
+tings\x0abrings bac\
+k the delivered \
+password. A para\
+meter file carri\
+es every value w\
+hatever the leve\
+l:\x0aat Basic leve\
+l, sending a doc\
+ument whose Expe\
+rt-level values \
+differ from the \
+valve's asks\x0afir\
+st.</p>\x0a\x0a<h2>Onl\
+ine and offline<\
+/h2>\x0a<p>Communic\
+ation \xe2\x86\x92 HID co\
+nfiguration list\
+s the valves con\
+nected over USB \
+and the emulated\
+\x0avalves; add an \
+emulated valve w\
+ith its type key\
+ and serial numb\
+er. Communicatio\
+n \xe2\x86\x92 Online\x0amod\
+e connects. A do\
+cument read from\
+ another valve (\
+another serial n\
+umber) is named \
+first: go on wit\
+h it, or go offl\
+ine. If the open\
+ parameter set d\
+iffers from the \
+valve's, the pro\
+gram lists the\x0ad\
+ifferences and a\
+sks whether to t\
+ake the valve's \
+values, send the\
+ document's valu\
+es\x0a(upload) or c\
+ancel. Online, e\
+very change goes\
+ to the valve at\
+ once and into t\
+he document;\x0aoff\
+line, into the d\
+ocument only. If\
+ the valve is lo\
+st, the program \
+goes offline and\
+ keeps\x0aevery val\
+ue.</p>\x0a<p>Value\
+s changed online\
+ are active in t\
+he valve but not\
+ yet stored: goi\
+ng offline offer\
+s to\x0astore them,\
+ and Valve \xe2\x86\x92 <\
+b>Store in valve\
+</b> stores them\
+ at once (what t\
+he valve works w\
+ith\x0abecomes what\
+ it starts with;\
+ recorded in the\
+ history). <b>Up\
+load to valve</b\
+> writes all val\
+ues, reads them \
+back, compares a\
+nd stores\x0athem; \
+nothing is store\
+d unless every v\
+alue was verifie\
+d. Before the fi\
+rst upload to a \
+valve\x0athe progra\
+m saves a backup\
+ of the valve's \
+own parameters i\
+n the user data \
+folder\x0a(<code>ba\
+ckups/&lt;serial\
+&gt;/</code>).</\
+p>\x0a<p><b>Restart\
+ valve</b> and <\
+b>Restore factor\
+y values</b> are\
+ allowed only wi\
+th the\x0ahydraulic\
+s disconnected; \
+the program asks\
+ you to confirm \
+this.</p>\x0a\x0a<h2>F\
+iles</h2>\x0a<p>Par\
+ameter files (<c\
+ode>*.prm</code>\
+) are text files\
+. Open, Save, Sa\
+ve As, the recen\
+t\x0afiles and drag\
+ and drop work a\
+s usual; the pro\
+gram asks before\
+ unsaved changes\
+ are lost.\x0aEvery\
+ change can be u\
+ndone (Ctrl+Z) a\
+nd redone (Ctrl+\
+Y). File \xe2\x86\x92 Pri\
+nt and File \xe2\x86\x92 \
+Export PDF\x0aprodu\
+ce a parameter r\
+ecord with type \
+key, serial numb\
+er, firmware, fi\
+le, date, access\
+ level,\x0athe flow\
+ diagram and eve\
+ry parameter wit\
+h its unit. Valu\
+es changed since\
+ the file was sa\
+ved\x0aare marked <\
+b>*</b> and the \
+file line says s\
+o; every page na\
+mes the type key\
+ and serial\x0anumb\
+er and carries i\
+ts page number; \
+the last page ha\
+s a line for dat\
+e, name and\x0asign\
+ature.</p>\x0a<p><b\
+>Back up a valve\
+</b>: go online,\
+ Valve \xe2\x86\x92 Downl\
+oad from valve, \
+then File \xe2\x86\x92 <b\
+>Save backup\x0acop\
+y\xe2\x80\xa6</b> (propos\
+ed name: type ke\
+y, serial number\
+, date and time)\
+. The copy is wr\
+itten and\x0athe op\
+en document stay\
+s what it was: l\
+ater changes are\
+ saved into the \
+document's own f\
+ile,\x0anever into \
+the backup. Save\
+ As, by contrast\
+, makes the new \
+file the open do\
+cument.</p>\x0a\x0a<h2\
+>Keyboard</h2>\x0a<\
+table>\x0a<tr><td>C\
+trl+O / Ctrl+S /\
+ Ctrl+Shift+S</t\
+d><td>Open / Sav\
+e / Save As</td>\
+</tr>\x0a<tr><td>Ct\
+rl+Z / Ctrl+Y</t\
+d><td>Undo / Red\
+o</td></tr>\x0a<tr>\
+<td>Ctrl+P / Ctr\
+l+E</td><td>Prin\
+t / Export PDF</\
+td></tr>\x0a<tr><td\
+>Ctrl+1 / Ctrl+2\
+ / Ctrl+3 / Ctrl\
++4</td><td>Flow \
+diagram / Parame\
+ter list / Oscil\
+loscope / CANope\
+n window</td></t\
+r>\x0a<tr><td>F5 / \
+Shift+F5</td><td\
+>Online / Offlin\
+e</td></tr>\x0a<tr>\
+<td>Ctrl+U / Ctr\
+l+D</td><td>Uplo\
+ad to valve / Do\
+wnload from valv\
+e</td></tr>\x0a<tr>\
+<td>Ctrl+T / Ctr\
+l+I / Ctrl+H</td\
+><td>Valve selec\
+tion / Valve sta\
+tus / HID config\
+uration</td></tr\
+>\x0a</table>\x0a<p><b\
+>Scripts and tes\
+t benches</b>: t\
+he valve from Py\
+thon and shell s\
+cripts, <a href=\
+\x22scripting_en.ht\
+ml\x22>on this page\
+</a> (in English\
+).</p>\x0a</body>\x0a<\
+/html>\x0a\
+\x00\x00\x08u\
+<\
+!DOCTYPE html>\x0a<\
+html lang=\x22en\x22>\x0a\
+<head><meta char\
+set=\x22utf-8\x22><tit\
+le>CAN bus and C\
+ANopen</title></\
+head>\x0a<body>\x0a<p>\
+<a href=\x22help_en\
+.html\x22>prm9tool \
+help</a></p>\x0a<h1\
+>CAN bus and CAN\
+open</h1>\x0a<p>A -\
+CA valve also ta\
+lks CANopen (man\
+ual chapter 7). \
+prm9tool is then\
+ the CANopen mas\
+ter,\x0athrough any\
+ CAN adapter pyt\
+hon-can supports\
+ (PEAK, Kvaser, \
+IXXAT, Vector, C\
+ANable/slcan,\x0aSo\
+cketCAN).</p>\x0a<h\
+2>Going online o\
+ver CAN</h2>\x0a<ol\
+>\x0a<li>Communicat\
+ion \xe2\x86\x92 <b>CAN b\
+us\xe2\x80\xa6</b>: choos\
+e the interface,\
+ the channel and\
+ the bit rate,\x0at\
+hen <b>Search th\
+e bus</b>. Every\
+ node that answe\
+rs is listed wit\
+h its NMT state,\
+ heartbeat\x0aand l\
+ast EMCY; nodes \
+that are not PRM\
+9 valves cannot \
+be chosen.</li>\x0a\
+<li>Choose the v\
+alve and press O\
+K: the program g\
+oes online with \
+it (<code>can:NO\
+DE</code>).\x0aA re\
+al valve does no\
+t tell its full \
+type key: type t\
+he one on its la\
+bel; it is remem\
+bered\x0aper serial\
+ number.</li>\x0a</\
+ol>\x0a<h2>Commissi\
+oning</h2>\x0a<p>A \
+-CA valve as del\
+ivered waits for\
+ its master: NMT\
+ pre-operational\
+, device state I\
+NIT; it\x0adoes not\
+ follow its setp\
+oint. Valve \xe2\x86\x92 \
+<b>Valve status<\
+/b>, group Commi\
+ssioning: press\x0a\
+<b>NMT start</b>\
+, then <b>Enable\
+</b> (control wo\
+rd 08h \xe2\x86\x92 09h \xe2\
+\x86\x92 0Bh \xe2\x86\x92 0Fh).\
+ The line below\x0a\
+the buttons says\
+ what is still m\
+issing. Disable \
+and NMT stop tak\
+e it back.</p>\x0a<\
+h2>Objects and c\
+onfiguration</h2\
+>\x0a<ul>\x0a<li>View \
+\xe2\x86\x92 <b>Object di\
+ctionary\xe2\x80\xa6</b> \
+reads every obje\
+ct; type in the \
+search line to f\
+ind an\x0aindex, a \
+name or a value.\
+ At Expert level\
+ a double-click \
+writes a writabl\
+e object.</li>\x0a<\
+li>View \xe2\x86\x92 <b>C\
+ANopen window</b\
+>: node ID, bit \
+rate and termina\
+tor. The valve r\
+eads its\x0arotary \
+switches at powe\
+r-up; a changed \
+node ID or bit r\
+ate takes effect\
+ after a restart\
+, and\x0aprm9tool f\
+inds the valve a\
+t its new addres\
+s after Valve \xe2\x86\
+\x92 Restart valve.\
+</li>\x0a<li>File \xe2\
+\x86\x92 <b>Export DCF\
+\xe2\x80\xa6</b> saves th\
+e valve's config\
+uration for a PL\
+C configurator.<\
+/li>\x0a<li>Valve \xe2\
+\x86\x92 <b>Store in v\
+alve</b> makes t\
+he values the va\
+lve works with p\
+ermanent (object\
+\x0a0x1010, or the \
+valve's own way \
+where it lacks i\
+t).</li>\x0a</ul>\x0a<\
+p>The oscillosco\
+pe takes the act\
+ual position fro\
+m TPDO1; the set\
+point generator \
+and the tuning\x0at\
+ests send the se\
+tpoint in RPDO1,\
+ as a PLC does.<\
+/p>\x0a</body>\x0a</ht\
+ml>\x0a\
+\x00\x00\x07\xbb\
+<\
+!DOCTYPE html>\x0a<\
+html lang=\x22en\x22>\x0a\
+<head><meta char\
+set=\x22utf-8\x22><tit\
+le>Scripts and t\
+est benches</tit\
+le></head>\x0a<body\
+>\x0a<p><a href=\x22he\
+lp_en.html\x22>prm9\
+tool help</a></p\
+>\x0a<h1>Scripts an\
+d test benches</\
+h1>\x0a<p>Test benc\
+hes, end-of-line\
+ stations and no\
+tebooks drive a \
+valve from Pytho\
+n with the\x0a<code\
+>prm9tool</code>\
+ package, withou\
+t the window and\
+ without Qt. It \
+uses the same li\
+nks, the\x0asame up\
+load (write ever\
+y value, read ev\
+ery one back, co\
+mpare, store) an\
+d the same histo\
+ry as\x0athe progra\
+m.</p>\x0a<pre>\x0aimp\
+ort prm9tool\x0a\x0awi\
+th prm9tool.conn\
+ect(\x22usb:/dev/hi\
+draw0\x22) as valve\
+:   # or \x22emulat\
+or:TYPEKEY:SERIA\
+L\x22, \x22can:10\x22\x0a   \
+ print(valve.inf\
+o.type_key, valv\
+e.info.serial)\x0a \
+   valve[\x22LIMTA\x22\
+] = 1800        \
+          # mA: \
+checked, written\
+, read back\x0a    \
+result = valve.u\
+pload(prm9tool.r\
+ead_prm(\x22release\
+d.prm\x22))\x0a    pri\
+nt(result.stored\
+)\x0a    data = val\
+ve.capture([\x22dem\
+and\x22, \x22position_\
+actual\x22], second\
+s=1.0)\x0a</pre>\x0a<p\
+><code>prm9tool.\
+list_devices()</\
+code> lists the \
+valves (on a CAN\
+ bus with\x0a<code>\
+can_interface=\xe2\x80\
+\xa6</code>, <code>\
+can_channel=\xe2\x80\xa6<\
+/code>). A valve\
+ also stores, re\
+stores the\x0afacto\
+ry values, resta\
+rts (only with <\
+code>confirm_hyd\
+raulics_off=True\
+</code>), takes \
+NMT\x0acommands, is\
+ enabled, runs t\
+he setpoint gene\
+rator and the en\
+d-of-line test. \
+The measuring\x0apo\
+ints of <code>ca\
+pture</code> are\
+ those of the os\
+cilloscope (<cod\
+e>demand</code>,\
+\x0a<code>position_\
+actual</code>, <\
+code>current_a</\
+code> \xe2\x80\xa6).</p>\x0a\
+<h2>Shell script\
+s</h2>\x0a<pre>\x0aprm\
+9tool --device 4\
+711 --set LIMTA=\
+1800 DYNFREQ=120\
+ --store\x0aprm9too\
+l --device 4711 \
+--get LIMTA DYNF\
+REQ --json\x0aprm9t\
+ool --list-devic\
+es --json\x0a</pre>\
+\x0a<p><code>--set<\
+/code> checks ev\
+ery value before\
+ it writes the f\
+irst and reads e\
+ach back; withou\
+t\x0a<code>--store<\
+/code> the value\
+s are not stored\
+. Exit code 0: d\
+one, 1: the valv\
+e refused a valu\
+e,\x0a2: a wrong mn\
+emonic or value \
+(nothing written\
+), 4: no such va\
+lve, 6: no answe\
+r.</p>\x0a<p>Every \
+call, the list o\
+f measuring poin\
+ts and the JSON:\
+ <code>docs/api.\
+md</code> in the\
+\x0asource distribu\
+tion.</p>\x0a</body\
 >\x0a</html>\x0a\
 \x00\x00\x01\xc2\
 <\
@@ -1305,18 +3079,71 @@ qt_resource_name = b"\
 \x00\x06\xec0\
 \x00h\
 \x00e\x00l\x00p\
+\x00\x0b\
+\x0a\xd7\xf3\x9c\
+\x00c\
+\x00a\x00n\x00_\x00d\x00e\x00.\x00h\x00t\x00m\x00l\
+\x00\x0f\
+\x04\xc4D\x1c\
+\x00c\
+\x00o\x00m\x00p\x00a\x00r\x00e\x00_\x00e\x00n\x00.\x00h\x00t\x00m\x00l\
+\x00\x0f\
+\x0f(y\xbc\
+\x00h\
+\x00i\x00s\x00t\x00o\x00r\x00y\x00_\x00d\x00e\x00.\x00h\x00t\x00m\x00l\
 \x00\x0c\
 \x07\xbc\x97\x9c\
 \x00h\
 \x00e\x00l\x00p\x00_\x00c\x00s\x00.\x00h\x00t\x00m\x00l\
+\x00\x0f\
+\x0fHy\xbc\
+\x00h\
+\x00i\x00s\x00t\x00o\x00r\x00y\x00_\x00c\x00s\x00.\x00h\x00t\x00m\x00l\
+\x00\x0e\
+\x02\xe4\x7f|\
+\x00t\
+\x00u\x00n\x00i\x00n\x00g\x00_\x00d\x00e\x00.\x00h\x00t\x00m\x00l\
+\x00\x0f\
+\x02\xb4D\x1c\
+\x00c\
+\x00o\x00m\x00p\x00a\x00r\x00e\x00_\x00c\x00s\x00.\x00h\x00t\x00m\x00l\
+\x00\x0e\
+\x03\x04\x7f|\
+\x00t\
+\x00u\x00n\x00i\x00n\x00g\x00_\x00c\x00s\x00.\x00h\x00t\x00m\x00l\
 \x00\x0c\
 \x07\xdc\x97\x9c\
 \x00h\
 \x00e\x00l\x00p\x00_\x00d\x00e\x00.\x00h\x00t\x00m\x00l\
+\x00\x0f\
+\x01xy\x9c\
+\x00h\
+\x00i\x00s\x00t\x00o\x00r\x00y\x00_\x00e\x00n\x00.\x00h\x00t\x00m\x00l\
+\x00\x0b\
+\x0a\xb7\xf3\x9c\
+\x00c\
+\x00a\x00n\x00_\x00c\x00s\x00.\x00h\x00t\x00m\x00l\
+\x00\x0e\
+\x04\xb4\x7f|\
+\x00t\
+\x00u\x00n\x00i\x00n\x00g\x00_\x00e\x00n\x00.\x00h\x00t\x00m\x00l\
+\x00\x0f\
+\x02\xd4D\x1c\
+\x00c\
+\x00o\x00m\x00p\x00a\x00r\x00e\x00_\x00d\x00e\x00.\x00h\x00t\x00m\x00l\
 \x00\x0c\
 \x09\xcc\x97\x9c\
 \x00h\
 \x00e\x00l\x00p\x00_\x00e\x00n\x00.\x00h\x00t\x00m\x00l\
+\x00\x0b\
+\x0c\xc7\xf3\x9c\
+\x00c\
+\x00a\x00n\x00_\x00e\x00n\x00.\x00h\x00t\x00m\x00l\
+\x00\x11\
+\x06\xaa\xc5\x9c\
+\x00s\
+\x00c\x00r\x00i\x00p\x00t\x00i\x00n\x00g\x00_\x00e\x00n\x00.\x00h\x00t\x00m\x00l\
+\
 \x00\x0a\
 \x05x\xd4\xa7\
 \x00u\
@@ -1373,24 +3200,37 @@ qt_resource_name = b"\
 
 qt_resource_struct = b"\
 \x00\x00\x00\x00\x00\x02\x00\x00\x00\x02\x00\x00\x00\x01\
-\x00\x00\x00\x10\x00\x02\x00\x00\x00\x03\x00\x00\x00\x10\
+\x00\x00\x00\x10\x00\x02\x00\x00\x00\x10\x00\x00\x00\x10\
 \x00\x00\x00\x00\x00\x02\x00\x00\x00\x0d\x00\x00\x00\x03\
-\x00\x00\x00\xfc\x00\x00\x00\x00\x00\x01\x00\x00A.\
-\x00\x00\x00\x92\x00\x00\x00\x00\x00\x01\x00\x00;\x90\
-\x00\x00\x01\x9e\x00\x00\x00\x00\x00\x01\x00\x00Kd\
-\x00\x00\x01\x16\x00\x00\x00\x00\x00\x01\x00\x00B[\
-\x00\x00\x00x\x00\x00\x00\x00\x00\x01\x00\x009\xca\
-\x00\x00\x01\xba\x00\x00\x00\x00\x00\x01\x00\x00L\xfc\
-\x00\x00\x01.\x00\x00\x00\x00\x00\x01\x00\x00D*\
-\x00\x00\x01\x80\x00\x00\x00\x00\x00\x01\x00\x00I\xb8\
-\x00\x00\x00\xaa\x00\x00\x00\x00\x00\x01\x00\x00=6\
-\x00\x00\x01J\x00\x00\x00\x00\x00\x01\x00\x00E\xf3\
-\x00\x00\x00\xc6\x00\x00\x00\x00\x00\x01\x00\x00>3\
-\x00\x00\x00\xe2\x00\x00\x00\x00\x00\x01\x00\x00?\xec\
-\x00\x00\x01^\x00\x00\x00\x00\x00\x01\x00\x00Hw\
+\x00\x00\x02\xb6\x00\x00\x00\x00\x00\x01\x00\x00\xae0\
+\x00\x00\x02L\x00\x00\x00\x00\x00\x01\x00\x00\xa8\x92\
+\x00\x00\x03X\x00\x00\x00\x00\x00\x01\x00\x00\xb8f\
+\x00\x00\x02\xd0\x00\x00\x00\x00\x00\x01\x00\x00\xaf]\
+\x00\x00\x022\x00\x00\x00\x00\x00\x01\x00\x00\xa6\xcc\
+\x00\x00\x03t\x00\x00\x00\x00\x00\x01\x00\x00\xb9\xfe\
+\x00\x00\x02\xe8\x00\x00\x00\x00\x00\x01\x00\x00\xb1,\
+\x00\x00\x03:\x00\x00\x00\x00\x00\x01\x00\x00\xb6\xba\
+\x00\x00\x02d\x00\x00\x00\x00\x00\x01\x00\x00\xaa8\
+\x00\x00\x03\x04\x00\x00\x00\x00\x00\x01\x00\x00\xb2\xf5\
+\x00\x00\x02\x80\x00\x00\x00\x00\x00\x01\x00\x00\xab5\
+\x00\x00\x02\x9c\x00\x00\x00\x00\x00\x01\x00\x00\xac\xee\
+\x00\x00\x03\x18\x00\x00\x00\x00\x00\x01\x00\x00\xb5y\
+\x00\x00\x01J\x00\x00\x00\x00\x00\x01\x00\x00d\x02\
+\x00\x00\x00\xe6\x00\x00\x00\x00\x00\x01\x00\x00<\x95\
+\x00\x00\x01\xac\x00\x00\x00\x00\x00\x01\x00\x00y3\
+\x00\x00\x00\xc4\x00\x00\x00\x00\x00\x01\x00\x005L\
+\x00\x00\x01\x0a\x00\x00\x00\x00\x00\x01\x00\x00C \
+\x00\x00\x01\x8a\x00\x00\x00\x00\x00\x01\x00\x00r\xd9\
+\x00\x00\x00:\x00\x00\x00\x00\x00\x01\x00\x00\x09V\
+\x00\x00\x02\x0a\x00\x00\x00\x00\x00\x01\x00\x00\x9f\x0d\
+\x00\x00\x00\x82\x00\x00\x00\x00\x00\x01\x00\x00\x15\xcb\
+\x00\x00\x01,\x00\x00\x00\x00\x00\x01\x00\x00J \
+\x00\x00\x01\xd0\x00\x00\x00\x00\x00\x01\x00\x00\x80\x18\
+\x00\x00\x01n\x00\x00\x00\x00\x00\x01\x00\x00i\xb5\
 \x00\x00\x00\x1e\x00\x00\x00\x00\x00\x01\x00\x00\x00\x00\
-\x00\x00\x00<\x00\x00\x00\x00\x00\x01\x00\x00\x13\xdd\
-\x00\x00\x00Z\x00\x00\x00\x00\x00\x01\x00\x00(;\
+\x00\x00\x01\xee\x00\x00\x00\x00\x00\x01\x00\x00\x96\x94\
+\x00\x00\x00^\x00\x00\x00\x00\x00\x01\x00\x00\x0fD\
+\x00\x00\x00\xa0\x00\x00\x00\x00\x00\x01\x00\x00/\x16\
 "
 
 def qInitResources():

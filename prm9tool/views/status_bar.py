@@ -40,7 +40,40 @@ class MainStatusBar(QStatusBar):
         self._path: Path | None = None
         self._modified = False
         self._lost = 0
+        self._made_room: list[QLabel] = []  # fields hidden while a long message is shown
+        self.messageChanged.connect(self._on_message_changed)
         self.retranslate()
+
+    def showMessage(self, message: str, timeout: int | None = 0) -> None:
+        """Show ``message``; while it is longer than the room left of the fields, the file,
+        type key and firmware fields step aside (in that order) so that it is read whole (a
+        message ending "stored at 03:37:0" lost its last digit), and the whole message is the
+        bar's tip."""
+        super().showMessage(message, timeout or 0)
+        self.setToolTip(message)
+        needed = self.fontMetrics().horizontalAdvance(message) + 24
+        for label in (self.file_label, self.type_key_label, self.firmware_label):
+            if self._room() >= needed:
+                break
+            if label.isVisible():
+                label.hide()
+                self._made_room.append(label)
+
+    def _room(self) -> int:
+        """The width left of the visible fields."""
+        taken = sum(
+            label.sizeHint().width() + 6 for label in [self.lost_label, *self.labels()]
+            if label.isVisible()
+        )  # fmt: skip
+        return self.width() - taken
+
+    def _on_message_changed(self, message: str) -> None:
+        if message:
+            return
+        self.setToolTip("")
+        for label in self._made_room:
+            label.show()
+        self._made_room.clear()
 
     def labels(self) -> list[QLabel]:
         """The six fields from left to right."""

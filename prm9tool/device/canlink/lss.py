@@ -25,49 +25,32 @@ from contextlib import contextmanager, suppress
 from dataclasses import dataclass
 from typing import TYPE_CHECKING
 
-from prm9tool.catalogue.canopen_switches import LSS_BIT_TIMINGS_KBIT, LSS_UNCONFIGURED
+from prm9tool.catalogue.canopen_switches import LSS_UNCONFIGURED
+from prm9tool.device.canlink.lss_errors import (
+    CS_CONFIGURE_BIT_TIMING,
+    CS_CONFIGURE_NODE_ID,
+    CS_STORE,
+    ERRORS,
+    SERVICE,
+    LssFailedError,
+    kbit,
+    service_problem,
+)
 from prm9tool.device.canlink.sdo import ARGO_HYTOS_VENDOR
-from prm9tool.errors import CommunicationError
-from prm9tool.messages import QT_TRANSLATE_NOOP
 
 if TYPE_CHECKING:
     from prm9tool.device.canlink.bus import CanNetwork
 
 LSS_RESPONSE = 0x7E4
-CS_CONFIGURE_NODE_ID, CS_CONFIGURE_BIT_TIMING, CS_STORE = 0x11, 0x13, 0x17
 CS_SELECTIVE_RESPONSE, CS_IDENTIFY_SLAVE, CS_NON_CONFIGURED_SLAVE = 0x44, 0x4F, 0x50
 CS_INQUIRE = (0x5A, 0x5B, 0x5C, 0x5D)  # vendor, product, revision, serial
 WAITING, CONFIGURATION = 0, 1
 ERROR_NONE = 0
 PROBE_WAIT_S = 0.5  # how long "identify non-configured" waits for a first answer (canopen's)
 MIN_STEP_S, MAX_STEP_S = 0.05, 0.8
+SETTLE_MIN_S = 0.1  # further answers to a request several devices may answer
 SCAN_ATTEMPTS = 4
 MAX_DEVICES = 127
-
-# CiA 305 error codes of configure node ID / bit timing / store configuration
-ERRORS = {
-    CS_CONFIGURE_NODE_ID: {1: "the node ID is out of range (1…127)"},
-    CS_CONFIGURE_BIT_TIMING: {1: "the device does not support this bit rate"},
-    CS_STORE: {
-        1: "the device cannot store its configuration (store not supported)",
-        2: "the device could not write its non-volatile memory (storage media access error)",
-    },
-}
-SERVICE = {
-    CS_CONFIGURE_NODE_ID: "configure node ID",
-    CS_CONFIGURE_BIT_TIMING: "configure bit timing",
-    CS_STORE: "store configuration",
-}
-
-
-class LssFailedError(CommunicationError):
-    """An LSS service failed; ``kind``: none, duplicate, taken, refused, lost, unanswered."""
-
-    summary = QT_TRANSLATE_NOOP("Errors", "Node ID assignment (LSS) did not complete.")
-
-    def __init__(self, message: str, kind: str) -> None:
-        super().__init__(message)
-        self.kind = kind
 
 
 @dataclass(frozen=True)
@@ -209,9 +192,7 @@ class LssMasterLink:
                     "bus or does not take part in LSS (search the bus)",
                     "unanswered",
                 ) from None
-            answered = [t for t, d in heard.frames if d and d[0] == CS_SELECTIVE_RESPONSE]
-            first = answered[0] - start if answered else MIN_STEP_S
-            time.sleep(max(4 * (self.latency_s or first), MIN_STEP_S))
+            _settle(heard, CS_SELECTIVE_RESPONSE, start)
             count = heard.count(CS_SELECTIVE_RESPONSE)
         if count > 1:
             raise LssFailedError(
@@ -269,7 +250,7 @@ class LssMasterLink:
         or one refuses (then nothing is activated: no device changes its rate now)."""
         from canopen.lss import LssError
 
-        rate = _kbit(index)
+        rate = kbit(index)
         with self._lock, self._listen() as heard:
             self._lss.send_switch_state_global(CONFIGURATION)
             try:
@@ -277,9 +258,10 @@ class LssMasterLink:
                     (CS_CONFIGURE_BIT_TIMING, lambda: self._lss.configure_bit_timing(index)),
                     (CS_STORE, self._lss.store_configuration),
                 ):
+                    sent = time.monotonic()
                     with suppress(LssError):  # every answer is judged below, not the first
                         call()
-                    time.sleep(max(4 * (self.latency_s or 0.0), MIN_STEP_S))
+                    _settle(heard, cs, sent)
                     answers = [d for _, d in heard.frames if d and d[0] == cs]
                     if not answers:
                         raise LssFailedError(
@@ -335,7 +317,7 @@ class LssMasterLink:
                 call[cs]()
             except LssError:
                 answer = heard.last(cs)
-                raise _service_problem(address, cs, value, answer) from None
+                raise service_problem(address, cs, value, answer) from None
 
     def _undo(self, before: int) -> None:
         """Put the pending node ID back (best effort: the device may be gone)."""
@@ -367,36 +349,15 @@ class LssMasterLink:
             self._lss.RESPONSE_TIMEOUT = saved
 
 
-def _service_problem(
-    address: LssAddress, cs: int, value: int, answer: bytes | None
-) -> LssFailedError:
-    what = SERVICE[cs]
-    if cs == CS_CONFIGURE_NODE_ID:
-        what += f" {value}"
-    elif cs == CS_CONFIGURE_BIT_TIMING:
-        what += f" {_kbit(value)}"
-    if answer is None:
-        stored = (
-            "it may or may not have stored the new configuration: power it up and search the "
-            "bus (and the devices without a node ID)"
-            if cs == CS_STORE
-            else "it stored nothing"
-        )
-        return LssFailedError(
-            f"serial {address.serial}: no answer to {what}: the device left the bus during "
-            f"configuration; {stored}",
-            "lost",
-        )
-    code, specific = answer[1], answer[2]
-    reason = ERRORS[cs].get(code)
-    if reason is None:
-        reason = f"manufacturer-specific error {specific} (CiA 305 error code {code})"
-    return LssFailedError(
-        f"serial {address.serial} refused {what}: {reason}; nothing was stored", "refused"
-    )
-
-
-def _kbit(index: int) -> str:
-    if 0 <= index < len(LSS_BIT_TIMINGS_KBIT):
-        return f"{LSS_BIT_TIMINGS_KBIT[index]} kbit/s"
-    return f"(table index {index})"
+def _settle(heard: _Heard, cs: int, sent: float) -> None:
+    """Wait for further answers ``cs`` to a request sent at ``sent`` (several devices may
+    answer): until none came for ten times the first answer's delay (at least 0.1 s)."""
+    times = [t for t, d in heard.frames if d and d[0] == cs]
+    quiet = max(10 * (times[0] - sent), SETTLE_MIN_S) if times else SETTLE_MIN_S
+    while True:
+        times = [t for t, d in heard.frames if d and d[0] == cs]
+        last = times[-1] if times else sent
+        left = last + quiet - time.monotonic()
+        if left <= 0:
+            return
+        time.sleep(min(left, 0.01))

@@ -73,6 +73,7 @@ class ScopeDisplay(QObject):
         self._frame = None
         self._shown = EMPTY
         self._frozen = None
+        self._legend_ticks = 0  # the first values of the new recording at once (not "at stop")
         self.plot.set_time_interactive(False)
 
     def set_trigger(self, settings: TriggerSettings, window_s: float) -> None:
@@ -120,15 +121,16 @@ class ScopeDisplay(QObject):
         )
         self._show_latest(capture)
 
-    def _show_latest(self, capture: Capture, force: bool = False) -> None:
+    def _show_latest(self, capture: Capture, force: bool = False, stopped: bool = False) -> None:
         """The newest values in the legend, ~8 Hz (readable, no relayout every frame); at
-        once when they become, or stop being, newer than a held trace."""
+        once when they become, or stop being, newer than a held trace (``stopped``: the
+        recording ended, they are the values at Stop)."""
         held = self._frozen is not None and not force
         self._legend_ticks += 1
         if force or held != self._legend_held or self._legend_ticks % 4 == 1:
             _, recent = capture.buffer.latest(LEGEND_LOOKBACK)
             if len(recent):
-                self.plot.show_latest(newest_arrived(recent), held)
+                self.plot.show_latest(newest_arrived(recent), held, stopped)
                 self._legend_held = held
 
     # --- hold ------------------------------------------------------------------------------------
@@ -149,7 +151,7 @@ class ScopeDisplay(QObject):
             return
         self._frozen = None
         self.freeze()
-        self._show_latest(self.capture, force=True)
+        self._show_latest(self.capture, force=True, stopped=True)
 
     def thaw(self) -> None:
         """Follow the stream again (a completed single capture re-arms)."""

@@ -23,7 +23,7 @@ from PySide6.QtWidgets import QComboBox, QDoubleSpinBox, QLabel, QPushButton, QW
 from prm9tool.online.connection_protocol import ScopeConnection
 from prm9tool.online.setpoint_driver import GENERATOR_OBJECTS
 from prm9tool.scope import GeneratorSettings, Waveform, setpoint_limits
-from prm9tool.views.scope.panels import SPACE, control_row, section_label
+from prm9tool.views.scope.rows import SPACE, control_row, section_label
 
 OVERRIDE_OBJECTS = GENERATOR_OBJECTS  # a refusal of one of these stops the generator
 

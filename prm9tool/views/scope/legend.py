@@ -82,29 +82,42 @@ class LegendEntry(QWidget):
         grid.addWidget(self.value, 1, 0, 1, 3)
         grid.setColumnStretch(3, 1)  # the button next to the name, the space after it
         self._unit = ""
+        self._key = ""
         self._live_prefix = ""
+        self._last_prefix = ""
         self._value = math.nan
         self._live = False
+        self._last = False
+        self._tips = ("", "")  # what "live:" and "at stop:" mean
 
     def set_signal(self, signal: MeasuringPoint) -> None:
-        """Show ``signal``'s name and unit."""
+        """Show ``signal``'s name and unit (its value stays when only the language changed,
+        shown in the new language's numbers)."""
         self._unit = signal.unit
         self.name.set_full_text(text(signal.text))  # the unit is in the value below
         self.name.setToolTip(f"{text(signal.text)} [{signal.unit}]")
-        self.set_value(math.nan)
+        same = signal.key == self._key
+        self._key = signal.key
+        self.set_value(self._value if same else math.nan, self._live, self._last and same)
 
-    def set_live_texts(self, prefix: str, tooltip: str) -> None:
-        """The word marking a live value while the plot holds, and its explanation."""
-        self._live_prefix = prefix
-        self.value.setToolTip(tooltip)
-        widest = f"{prefix} −00000.0 mA"
+    def set_live_texts(self, prefix: str, tooltip: str, last: str = "", last_tip: str = "") -> None:
+        """The words marking a live value while the plot holds and the last one after Stop,
+        and what they mean."""
+        self._live_prefix, self._last_prefix = prefix, last
+        self._tips = (tooltip, last_tip)
+        widest = max(prefix, last, key=len) + " −00000.0 mA"
         self.value.setFixedWidth(QFontMetrics(self.value.font()).horizontalAdvance(widest) + 4)
-        self.set_value(self._value, self._live)
+        self.set_value(self._value, self._live, self._last)
 
-    def set_value(self, value: float, live: bool = False) -> None:
-        """Show ``value``; ``live``: newer than the held trace."""
-        if live != self._live:  # a style change re-polishes the label: only when it changes
-            self.value.setStyleSheet(f"color: {LIVE_COLOUR}; font-style: italic" if live else "")
-        self._value, self._live = value, live
+    def set_value(self, value: float, live: bool = False, last: bool = False) -> None:
+        """Show ``value``; ``live``: newer than the held trace; ``last``: the value when the
+        recording stopped (the valve may hold another one now)."""
+        if (live, last) != (self._live, self._last):  # a style change re-polishes the label
+            grey = live or last
+            italic = "; font-style: italic" if live else ""
+            self.value.setStyleSheet(f"color: {LIVE_COLOUR}{italic}" if grey else "")
+        self._value, self._live, self._last = value, live, last
         shown = _format(value, self._unit)
-        self.value.setText(f"{self._live_prefix} {shown}" if live else shown)
+        prefix = self._live_prefix if live else self._last_prefix if last else ""
+        self.value.setText(f"{prefix} {shown}" if prefix and not math.isnan(value) else shown)
+        self.value.setToolTip(self._tips[0] if live else self._tips[1] if last else "")

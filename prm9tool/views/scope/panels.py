@@ -10,7 +10,6 @@ from PySide6.QtWidgets import (
     QComboBox,
     QDoubleSpinBox,
     QGroupBox,
-    QHBoxLayout,
     QLabel,
     QListWidget,
     QListWidgetItem,
@@ -23,61 +22,22 @@ from PySide6.QtWidgets import (
 
 from prm9tool.catalogue.signals import MAX_CHANNELS
 from prm9tool.catalogue.signals import Signal as MeasuringPoint
-from prm9tool.i18n import format_significant, text
+from prm9tool.i18n import text
 from prm9tool.scope import RATES_HZ, WINDOWS_S, Edge, TriggerMode, TriggerSettings
 from prm9tool.views.diagram.colours import toned_style
+from prm9tool.views.scope.rows import (
+    SPACE,
+    ShrinkingCombo,
+    control_row,
+    rate_text,
+    section_label,
+    window_text,
+)
 
 KEY_ROLE = Qt.ItemDataRole.UserRole
 MIN_LIST_WIDTH = 230  # px: the measuring-point list in a 1024-pixel window
 MESSAGE_MS = 8000  # how long a notice about the measuring points stays
 MAX_LIST_WIDTH = 340  # px: wider names are elided rather than the legend's in a 1024-px window
-SPACE = None  # a gap between groups of controls in a row
-
-
-class ShrinkingCombo(QComboBox):
-    """A combo box as wide as its longest item when there is room, down to ``minimum``
-    characters in a small window (a long item is elided there; its tooltip says it all)."""
-
-    def __init__(self, minimum: int) -> None:
-        super().__init__()
-        self.setSizeAdjustPolicy(QComboBox.SizeAdjustPolicy.AdjustToMinimumContentsLengthWithIcon)
-        self.setMinimumContentsLength(minimum)
-
-    def sizeHint(self) -> QSize:
-        """Wide enough for the longest item."""
-        hint = super().sizeHint()
-        metrics = self.fontMetrics()
-        widest = max(
-            (metrics.horizontalAdvance(self.itemText(i)) for i in range(self.count())), default=0
-        )
-        short = metrics.horizontalAdvance("x") * self.minimumContentsLength()
-        return QSize(hint.width() + max(0, widest - short), hint.height())
-
-
-def section_label() -> QLabel:
-    """A bold label naming a row of controls (Recording, Trigger, Setpoint generator)."""
-    label = QLabel()
-    font = label.font()
-    font.setBold(True)
-    label.setFont(font)
-    return label
-
-
-def control_row(
-    label: QLabel, widgets: Sequence[QWidget | None], end: QWidget | None = None
-) -> QHBoxLayout:
-    """``label`` and ``widgets`` in a row (None: a gap), ``end`` at the right edge."""
-    row = QHBoxLayout()
-    row.addWidget(label)
-    for widget in widgets:
-        if widget is None:
-            row.addSpacing(12)
-        else:
-            row.addWidget(widget)
-    row.addStretch(1)
-    if end is not None:
-        row.addWidget(end)
-    return row
 
 
 class _PointList(QListWidget):
@@ -244,15 +204,16 @@ class ControlPanel(QWidget):
         super().__init__(parent)
         self.rate = QComboBox()
         for rate in RATES_HZ:
-            period, khz = format_significant(1000.0 / rate, 6), format_significant(rate / 1000, 6)
-            self.rate.addItem(f"{period} ms ({khz} kHz)", rate)
+            self.rate.addItem(rate_text(rate), rate)
         self.time_window = QComboBox()
         for seconds in WINDOWS_S:
-            self.time_window.addItem(f"{format_significant(seconds, 6)} s", seconds)
+            self.time_window.addItem(window_text(seconds), seconds)
         self.time_window.setCurrentIndex(WINDOWS_S.index(1.0))
         self.start, self.stop, self.pause = QPushButton(), QPushButton(), QPushButton()
         self.pause.setCheckable(True)
         self.mode, self.channel, self.edge = QComboBox(), ShrinkingCombo(12), QComboBox()
+        for combo in (self.rate, self.time_window, self.mode, self.edge):  # not only at the
+            combo.setSizeAdjustPolicy(QComboBox.SizeAdjustPolicy.AdjustToContents)  # first show
         for mode in TriggerMode:
             self.mode.addItem("", mode)
         for edge in Edge:
@@ -321,6 +282,10 @@ class ControlPanel(QWidget):
         for combo in (self.mode, self.edge):
             for row in range(combo.count()):
                 combo.setItemText(row, names[combo.itemData(row)])  # StrEnum == its str
+        for row in range(self.rate.count()):  # the decimal separator of the new language
+            self.rate.setItemText(row, rate_text(self.rate.itemData(row)))
+        for row in range(self.time_window.count()):
+            self.time_window.setItemText(row, window_text(self.time_window.itemData(row)))
         self.channel.setToolTip(self.tr("Trigger channel"))
         self.level_label.setText(self.tr("Level"))
         self.pre_label.setText(self.tr("Pre-trigger"))
@@ -363,8 +328,7 @@ class ControlPanel(QWidget):
         self.rate.blockSignals(True)
         self.rate.clear()
         for rate in allowed:
-            period, khz = format_significant(1000.0 / rate, 6), format_significant(rate / 1000, 6)
-            self.rate.addItem(f"{period} ms ({khz} kHz)", rate)
+            self.rate.addItem(rate_text(rate), rate)
         self.rate.setCurrentIndex(allowed.index(current) if current in allowed else 0)
         self.rate.blockSignals(False)
         if self.rate_hz() != current:

@@ -15,6 +15,7 @@ grid is an opaque item of its own under all three views, the y axes are cached p
 
 from __future__ import annotations
 
+import re
 from collections.abc import Sequence
 
 import numpy as np
@@ -38,7 +39,7 @@ from prm9tool.views.scope.legend import COLOURS, LegendEntry
 
 CURSOR_COLOUR = "#e0e0e0"
 SHARED_AXIS_COLOUR = "#c8c8c8"  # tick labels of an axis two channels share
-SHARED_LABEL_CHARS = 72  # longer joined names do not fit a 520-pixel plot: channel numbers instead
+SHARED_LABEL_CHARS = 72  # longer joined names do not fit a 520-pixel plot: they are shortened
 
 
 class ScopePlot(QWidget):
@@ -138,6 +139,8 @@ class ScopePlot(QWidget):
                     "The valve's newest value. The plot holds an earlier recording; read it "
                     "with the cursors."
                 ),
+                self.tr("at stop:"),
+                self.tr("The last value recorded before Stop; the valve may hold another now."),
             )
 
     # --- channels and data ---------------------------------------------------------------------
@@ -177,9 +180,7 @@ class ScopePlot(QWidget):
                 axis.setLabel(f"{text(signal.text)} [{signal.unit}]", color=COLOURS[slot])
                 axis.setTextPen(COLOURS[slot])
                 continue
-            names = [text(signals[k].text) for k in members]
-            if sum(len(name) + 2 for name in names) > SHARED_LABEL_CHARS:
-                names = [str(k + 1) for k in members]  # channel numbers, as in the cursor table
+            names = shared_names([text(signals[k].text) for k in members], SHARED_LABEL_CHARS)
             spans = (
                 f'<span style="color:{COLOURS[k]}">{name}</span>'
                 for k, name in zip(members, names, strict=True)
@@ -273,11 +274,12 @@ class ScopePlot(QWidget):
             return None
         return float(finite.min()), float(finite.max())
 
-    def show_latest(self, values: np.ndarray, held: bool = False) -> None:
+    def show_latest(self, values: np.ndarray, held: bool = False, stopped: bool = False) -> None:
         """The newest values in the legend (one per channel, NaN when unknown); ``held``:
-        the plot holds an earlier recording, so they are marked as live."""
+        the plot holds an earlier recording, so they are marked as live; ``stopped``: the
+        recording ended, so they are marked as the values at Stop."""
         for slot in range(self._channels):
-            self.legend[slot].set_value(float(values[slot]), held)
+            self.legend[slot].set_value(float(values[slot]), held, stopped and not held)
 
     def set_x_range(self, x0: float, x1: float) -> None:
         """Show times ``x0`` … ``x1`` (new data: a new frame or capture).
@@ -362,3 +364,20 @@ class ScopePlot(QWidget):
     def render_image(self) -> QImage:
         """The legend strip and plot as an image (PNG export)."""
         return self.grab().toImage()
+
+
+def shared_names(names: Sequence[str], limit: int) -> list[str]:
+    """The names of channels that share an axis, short enough to fit ``limit`` characters
+    together: first without their object numbers ("(0x6301)"), then each cut to an equal
+    share with "…". Never bare channel numbers: "1, 2 [%]" named nothing (issue 25)."""
+
+    def fits(candidates: Sequence[str]) -> bool:
+        return sum(len(name) + 2 for name in candidates) <= limit
+
+    if fits(names):
+        return list(names)
+    short = [re.sub(r"\s*\(0x[0-9A-Fa-f]+\)", "", name) for name in names]
+    if fits(short):
+        return short
+    share = max(8, limit // len(short) - 2)
+    return [name if len(name) <= share else name[: share - 1].rstrip() + "…" for name in short]

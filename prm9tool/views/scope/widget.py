@@ -14,6 +14,7 @@ on. Online only, like PRM9.exe.
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from pathlib import Path
 
 import numpy as np
@@ -21,7 +22,6 @@ from PySide6.QtCore import QEvent, Qt, QTimer, Signal
 from PySide6.QtGui import QCloseEvent, QHideEvent, QShowEvent
 from PySide6.QtWidgets import (
     QGridLayout,
-    QLabel,
     QPushButton,
     QTabWidget,
     QVBoxLayout,
@@ -35,6 +35,7 @@ from prm9tool.online.connection_protocol import ScopeConnection, StatusView
 from prm9tool.online.valve_control import ValveControl, status_blocker
 from prm9tool.scope import Capture, GeneratorSettings
 from prm9tool.translate import error_text
+from prm9tool.views.fixed_lines import FixedLinesLabel
 from prm9tool.views.scope.display import ScopeDisplay
 from prm9tool.views.scope.export import ScopeExport
 from prm9tool.views.scope.generator import GeneratorPanel, SetpointGenerator
@@ -45,6 +46,7 @@ from prm9tool.views.scope.start import GeneratorStart, measure_against_demand
 from prm9tool.views.scope.status import ScopeStatusText
 
 REDRAW_MS = 33  # ~30 Hz
+STATUS_LINES = 2  # the status line's height: its messages wrap in it (the whole one in its tip)
 
 
 class ScopeWidget(QWidget):
@@ -65,8 +67,10 @@ class ScopeWidget(QWidget):
         self._status: StatusView | None = None  # the valve's latest status
         self._running = False
         self._accepting = False  # False between a (re)start request and stream_started
-        self._generator_note = ""
-        self._recording_note = ""  # why the recording stopped without the user
+        # why the generator or the recording stopped without the user: in the language of the
+        # moment it is shown (a text made at the time stayed English after a switch)
+        self._generator_note: Callable[[], str] | None = None
+        self._recording_note: Callable[[], str] | None = None
         self.generator = SetpointGenerator(connection, self)
         self._starter = GeneratorStart(control, self)  # the questions before it starts
         self._build()
@@ -87,10 +91,8 @@ class ScopeWidget(QWidget):
         self.display = ScopeDisplay(self.plot, self.cursor_panel, self.step_panel, self)
         self.exporter = ScopeExport(self.display, self.plot, self._say, self)
         self._texts = ScopeStatusText(self._connection, self.display, self)
-        self.status = QLabel()
+        self.status = FixedLinesLabel(STATUS_LINES)  # a longer message moves no button
         self.status.setTextInteractionFlags(Qt.TextInteractionFlag.TextSelectableByMouse)
-        self.status.setWordWrap(True)
-        self.status.setMinimumWidth(1)  # a long message wraps instead of widening the window
         self._timer = QTimer(self)
         self._timer.setInterval(REDRAW_MS)
         self._timer.timeout.connect(self._redraw)
@@ -180,7 +182,7 @@ class ScopeWidget(QWidget):
             self._update_status()
             return
         self._running = True
-        self._recording_note = ""
+        self._recording_note = None
         self._start_capture(keys)
 
     def stop(self) -> None:
@@ -223,7 +225,7 @@ class ScopeWidget(QWidget):
         self._accepting = False
         self.display.hold_all()
         self._timer.stop()
-        self._recording_note = self._texts.stream_taken()
+        self._recording_note = self._texts.stream_taken
         self._update_controls()
         self._update_status()
 
@@ -298,7 +300,7 @@ class ScopeWidget(QWidget):
 
     def _on_online_changed(self, online: bool) -> None:
         if online:
-            self._generator_note = ""
+            self._generator_note = None
             device = getattr(self._connection, "device", None)
             limit = getattr(device, "stream_rate_limit_hz", 0.0)
             self.controls.limit_rates(float(limit or 0.0))  # over CANopen: what the bus delivers
@@ -325,8 +327,8 @@ class ScopeWidget(QWidget):
 
     def _update_status(self) -> None:
         parts = (
-            self._generator_note,
-            self._recording_note,
+            self._generator_note() if self._generator_note else "",
+            self._recording_note() if self._recording_note else "",
             self._texts.blocked(self._status),
             self._texts.state(self._running),
         )
@@ -345,7 +347,7 @@ class ScopeWidget(QWidget):
     def _on_generator_start_requested(self, settings: GeneratorSettings) -> None:
         if not self._starter.confirmed(settings, self._status):
             return
-        self._generator_note = ""
+        self._generator_note = None
         try:
             self.generator.start(settings)
         except (RuntimeError, ValueRangeError) as exc:
@@ -354,15 +356,15 @@ class ScopeWidget(QWidget):
         measure_against_demand(self.channels, self.step_panel)
 
     def _on_generator_stopped_by_link(self) -> None:
-        self._generator_note = self._texts.generator_link_dropped()
+        self._generator_note = self._texts.generator_link_dropped
         self._update_status()
 
     def _on_generator_stopped_by_operation(self) -> None:
-        self._generator_note = self._texts.generator_displaced()
+        self._generator_note = self._texts.generator_displaced
         self._update_status()
 
     def _on_generator_refused(self, reason: str) -> None:
-        self._generator_note = self._texts.generator_refused(reason)
+        self._generator_note = lambda: self._texts.generator_refused(reason)
         self._update_status()
 
     # --- export ------------------------------------------------------------------------------

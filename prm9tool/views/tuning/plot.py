@@ -123,7 +123,12 @@ def paint_plot(painter: QPainter, rect: QRectF, plot: Plot, ink: QColor | None =
     painter.setClipRect(area)
     for value, text in plot.hlines:
         _marker(
-            painter, QPointF(area.left(), py(value)), QPointF(area.right(), py(value)), text, ink
+            painter,
+            QPointF(area.left(), py(value)),
+            QPointF(area.right(), py(value)),
+            text,
+            ink,
+            area,
         )
     for value, text in plot.vlines:
         if math.isfinite(value) and value > 0:
@@ -133,6 +138,7 @@ def paint_plot(painter: QPainter, rect: QRectF, plot: Plot, ink: QColor | None =
                 QPointF(px(value), area.bottom()),
                 text,
                 ink,
+                area,
             )
     for s in plot.series:
         _line(painter, s, px, py)
@@ -190,12 +196,19 @@ def legend_box(area: QRectF, size: tuple[float, float], points: np.ndarray) -> Q
     return min(corners, key=covered)
 
 
-def _marker(painter: QPainter, a: QPointF, b: QPointF, text: str, ink: QColor) -> None:
+def _marker(
+    painter: QPainter, a: QPointF, b: QPointF, text: str, ink: QColor, area: QRectF
+) -> None:
+    """A dashed marker line from ``a`` to ``b`` and its text just below ``a``, whole inside
+    ``area`` (the "−3 dB" label lost its top to the clip, and ran off near the right edge)."""
     pen = QPen(QColor("#888888"), 1, Qt.PenStyle.DashLine)
     painter.setPen(pen)
     painter.drawLine(a, b)
     painter.setPen(QPen(ink, 0))
-    painter.drawText(a + QPointF(3, 12), text)
+    metrics = painter.fontMetrics()
+    width = metrics.horizontalAdvance(text)
+    x = a.x() + 3 if a.x() + 3 + width <= area.right() else a.x() - 3 - width
+    painter.drawText(QPointF(x, a.y() + metrics.ascent() + 2), text)
 
 
 def _line(painter: QPainter, s: Series, px: object, py: object) -> None:

@@ -12,6 +12,7 @@ import html
 import math
 import os
 import tempfile
+from collections.abc import Mapping
 from pathlib import Path
 
 from PySide6.QtCore import QCoreApplication, QUrl
@@ -20,11 +21,13 @@ from PySide6.QtPrintSupport import QPrinter
 from PySide6.QtWidgets import QApplication
 
 from prm9tool.analysis.profile import Limit
+from prm9tool.catalogue import CATALOGUE
 from prm9tool.characterize.run import Characterization, Figure
-from prm9tool.i18n import current_language
+from prm9tool.i18n import current_language, format_value
 from prm9tool.messages import localized_number
 from prm9tool.translate import translated
-from prm9tool.views.record import configure_pdf
+from prm9tool.views.paged_print import PageFrame, configure_pdf, print_paged
+from prm9tool.views.record import signature_line
 from prm9tool.views.tuning.plot import COLOURS, Plot, Series, plot_image
 
 translate = QCoreApplication.translate
@@ -208,8 +211,16 @@ def build_report(c: Characterization) -> QTextDocument:
         url = f"prm9tool://plot{k}.png"
         doc.addResource(QTextDocument.ResourceType.ImageResource, QUrl(url), plot_image(plot))
         images.append(f'<p><img src="{url}" width="520"></p>')
-    doc.setHtml(_header(c) + _figures(c) + "".join(images) + _parameters(c))
+    doc.setHtml(_header(c) + _figures(c) + "".join(images) + _parameters(c) + signature_line())
     return doc
+
+
+def report_frame(c: Characterization) -> PageFrame:
+    """What each page of the report repeats: the valve, the title, the date."""
+    subject = translate("TuningReport", "{0} · serial number {1}").format(
+        c.info.type_key, c.info.serial
+    )
+    return PageFrame(subject, translate("TuningReport", "PRM9 test report"), c.date)
 
 
 def _header(c: Characterization) -> str:
@@ -248,8 +259,19 @@ def _figures(c: Characterization) -> str:
     return f"<h3>{e(translate('TuningReport', 'Figures'))}</h3><table cellpadding='2'><tr>{heading}</tr>{''.join(rows)}</table>"
 
 
+def parameter_rows(parameters: Mapping[str, int | str]) -> list[tuple[str, str]]:
+    """(mnemonic, value with its unit) in display units, in catalogue order: what a customer
+    reads (the raw 2458 of DTAMP is 15 %)."""
+    rows = []
+    for param in CATALOGUE:
+        if param.mnemonic in parameters:
+            raw = parameters[param.mnemonic]
+            rows.append((param.mnemonic, f"{format_value(param, raw)} {param.unit}".strip()))
+    return rows
+
+
 def _parameters(c: Characterization) -> str:
-    items = sorted(c.parameters.items())
+    items = parameter_rows(c.parameters)
     third = (len(items) + 2) // 3
     columns = [items[k * third : (k + 1) * third] for k in range(3)]
     rows = []
@@ -257,9 +279,12 @@ def _parameters(c: Characterization) -> str:
         cells = []
         for column in columns:
             name, value = column[i] if i < len(column) else ("", "")
-            cells.append(f"<td>{html.escape(str(name))}</td><td align='right'>{value}</td>")
+            cells.append(
+                f"<td>{html.escape(name)}</td><td align='right'>{html.escape(value)}</td>"
+                "<td width='12'></td>"
+            )
         rows.append(f"<tr>{''.join(cells)}</tr>")
-    title = html.escape(translate("TuningReport", "Parameter set (raw values)"))
+    title = html.escape(translate("TuningReport", "Parameter set"))
     return f"<h3>{title}</h3><table cellpadding='1' style='font-size:7pt'>{''.join(rows)}</table>"
 
 
@@ -282,7 +307,7 @@ def write_pdf(c: Characterization, path: Path) -> None:
     try:
         printer = QPrinter(QPrinter.PrinterMode.HighResolution)
         configure_pdf(printer, Path(temporary), f"{c.info.type_key} {c.info.serial}")
-        doc.print_(printer)
+        print_paged(doc, printer, report_frame(c))
         if os.path.getsize(temporary) == 0:
             raise OSError(f"cannot write {path}")
         umask = os.umask(0)

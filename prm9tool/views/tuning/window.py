@@ -32,6 +32,8 @@ from prm9tool.model.document import ParameterDocument
 from prm9tool.online.connection_protocol import StatusView
 from prm9tool.online.tuning_runner import SimulationRunner, TuningRunner, ValveRunner
 from prm9tool.online.valve_control import ValveControl
+from prm9tool.views.help_dialog import add_context_help
+from prm9tool.views.history_notes import record_online_change
 from prm9tool.views.scope.start import offer_enable
 from prm9tool.views.tuning.autotune import AutotunePage
 from prm9tool.views.tuning.pages import BodePage, Page
@@ -51,6 +53,7 @@ class TuningWindow(QDialog):
         control: ValveControl | None = None,
     ) -> None:
         super().__init__(parent)
+        add_context_help(self, "tuning")  # F1
         self.setObjectName("tuning_window")
         self.doc, self.connection = doc, connection
         self._control = control  # NMT start and enabling, offered to a valve that would not move
@@ -191,7 +194,10 @@ class TuningWindow(QDialog):
     def accept_values(self, values: dict[str, int], text: str) -> None:
         """Put ``values`` into the document as one undo step (online, on to the valve)."""
         wanted = {k: v for k, v in values.items() if k in self.doc.values}
+        before = dict(self.doc.values)
         self.doc.set_values(wanted, text)
+        record_online_change(self.connection, "tuning-accepted", before, self.doc.values,
+                             what=text, loop=self.current_loop())  # fmt: skip
         self.status.setText(self.tr("Accepted: %1").replace("%1", text))
 
     def current_loop(self) -> str:

@@ -49,6 +49,7 @@ class ValveUpload(QObject):
         self._access = access
         self._repeats = False  # the running upload sends what the valve holds already
         self._pending: dict[str, Raw] = {}
+        self._purpose = ""  # what the running upload is for, in the history
         self._uploading: dict[str, Raw] = {}  # the values of the running upload
 
     def upload(self, key: TypeKey, valve_values: Mapping[str, Raw] | None = None) -> bool:
@@ -68,7 +69,7 @@ class ValveUpload(QObject):
         # the valve holds the document already (edits went to it, nothing left unstored)
         self._repeats = self._sync.active and not self._sync.unstored
         self._repeats &= not self._sync.differences()
-        self.upload_values(self._doc.values)
+        self.upload_values(self._doc.values, "upload")
         return True
 
     def _refuse_other_variant(self, key: TypeKey) -> None:
@@ -86,10 +87,12 @@ class ValveUpload(QObject):
             prompts.Button.Ok,
         )
 
-    def upload_values(self, values: Mapping[str, Raw]) -> None:
+    def upload_values(self, values: Mapping[str, Raw], purpose: str = "") -> None:
         """Upload exactly ``values`` (write, read back, store), once the history can record
-        it or the user said to go ahead without it (views/history_policy.py)."""
+        it or the user said to go ahead without it (views/history_policy.py); ``purpose``
+        goes into the history record (e.g. ``compare``)."""
         self._pending = dict(values)
+        self._purpose = purpose
         if self._connection.history is None:
             self._start_upload()
             return
@@ -105,7 +108,7 @@ class ValveUpload(QObject):
         values, self._pending = self._pending, {}
         self._uploading = values
         self._progress.start("upload", self.tr("Uploading the parameters to the valve…"))
-        self._connection.upload(values)
+        self._connection.upload(values, purpose=self._purpose)
 
     def expert_differences(self, valve_values: Mapping[str, Raw]) -> list[str]:
         """The Expert-level parameters whose document value differs from the valve's."""

@@ -11,7 +11,7 @@ from collections.abc import Callable, Mapping
 from dataclasses import dataclass
 from typing import Any
 
-from PySide6.QtCore import QObject, QSettings, Signal
+from PySide6.QtCore import QObject, QSettings, QTime, Signal
 from PySide6.QtWidgets import QDialog, QProgressDialog, QWidget
 
 from prm9tool.catalogue.typekey import TypeKey
@@ -148,6 +148,9 @@ class ValveWorkflow(QObject):
         if pristine:
             self._adopt_valve(valve_key, values)
             return
+        if not self._same_valve_or_confirmed():
+            self.go_offline()
+            return
         same_key = valve_key == self._doc.type_key
         differs = any(self._doc.values.get(mn) != value for mn, value in values.items())
         if same_key and not differs:
@@ -155,6 +158,27 @@ class ValveWorkflow(QObject):
             self.message_posted.emit(self.tr("Online: document and valve agree"))
             return
         self._ask_about_differences(valve_key, values)
+
+    def _same_valve_or_confirmed(self) -> bool:
+        """A document read from one valve (its serial number) meets another: say so first,
+        before anything is compared, taken or sent; No goes offline."""
+        info, source = self._connection.device, self._doc.source_serial
+        if info is None or not source or int(source) == int(info.serial):
+            return True
+        answer = prompts.ask(
+            self._window,
+            prompts.Icon.Warning,
+            self.tr("Another valve"),
+            self.tr(
+                "The document was read from valve {0}; you are online with valve {1} "
+                "(serial numbers). Continue with this document on valve {1}?\n\n"
+                "Yes compares the two as usual (nothing is written unasked); "
+                "No goes offline."
+            ).format(source, info.serial),
+            prompts.Button.Yes | prompts.Button.No,
+            prompts.Button.No,
+        )
+        return answer == prompts.Button.Yes
 
     def _ask_about_differences(self, valve_key: TypeKey, values: Mapping[str, Raw]) -> None:
         dialog = OnlineDiffDialog(
@@ -222,13 +246,18 @@ class ValveWorkflow(QObject):
         key = self._valve_key()
         return key is not None and self.uploads.upload(key, valve_values)
 
-    def upload_values(self, values: Mapping[str, Raw]) -> None:
+    def upload_values(self, values: Mapping[str, Raw], purpose: str = "") -> None:
         """Upload exactly ``values`` (``ValveUpload.upload_values``)."""
-        self.uploads.upload_values(values)
+        self.uploads.upload_values(values, purpose)
 
     def expert_differences(self, valve_values: Mapping[str, Raw]) -> list[str]:
         """The Expert-level parameters whose document value differs from the valve's."""
         return self.uploads.expert_differences(valve_values)
+
+    def store(self) -> None:
+        """Valve → Store: the valve keeps what it works with now (also after a restart)."""
+        self.progress.start("store", self.tr("Storing the parameters in the valve…"), False)
+        self._connection.store_valve()
 
     def download(self) -> None:
         """Read the valve's parameters into the document (one undo step)."""
@@ -273,6 +302,8 @@ class ValveWorkflow(QObject):
             self._on_compare_finished(result)
         elif name == "download" and isinstance(result, Mapping):
             self.take_valve_values(result, self.tr("Download from valve"))
+            self.message_posted.emit(self.tr("The valve's parameters are in the document; File → "
+                                             "Save backup copy… keeps a copy of them"))  # fmt: skip
         elif name == "restore_factory" and isinstance(result, _FactoryReset):
             self._on_factory_reset(result)
         elif name == AFTER_RESTART and isinstance(result, Mapping):
@@ -283,7 +314,8 @@ class ValveWorkflow(QObject):
             self.uploads.finished(result)
         elif name == "store":
             self._sync.unstored = False
-            self.message_posted.emit(self.tr("The valve stored its parameters"))
+            at = QTime.currentTime().toString("HH:mm:ss")
+            self.message_posted.emit(self.tr("The valve stored its parameters at {0}").format(at))
 
     def _report_restart(self) -> None:
         """Say that the valve restarted — and where, when a changed node ID or bit rate moved

@@ -1,0 +1,172 @@
+"""Measuring with a valve from a script: :func:`capture`, :class:`SetpointGenerator` and
+:func:`characterize`, each on the device layer's session and the engines the GUI and the
+command line use (the oscilloscope's stream, the setpoint generator's driver, the end-of-line
+test). No Qt.
+"""
+
+from __future__ import annotations
+
+import os
+import time
+from collections.abc import Callable, Sequence
+from typing import TYPE_CHECKING
+
+import numpy as np
+
+from prm9tool.catalogue.signals import BY_KEY, MAX_CHANNELS, signals_for
+from prm9tool.errors import DeviceTimeoutError, Prm9Error, ValueRangeError
+
+if TYPE_CHECKING:
+    from prm9tool.analysis.profile import Profile
+    from prm9tool.characterize.run import Characterization
+    from prm9tool.device.session import ValveSession
+    from prm9tool.scope.generator import GeneratorSettings
+
+__all__ = ["SetpointGenerator", "capture", "characterize"]
+
+STREAM_BASE_HZ = 5000  # the valve samples its measuring points every 200 µs (manual §8.7.2)
+SILENCE_S = 1.0  # no sample for this long (and for 20 sample periods): the stream is dead
+
+
+def capture(
+    session: ValveSession, keys: Sequence[str], seconds: float, rate_hz: int | None = None
+) -> dict[str, np.ndarray]:
+    """``seconds`` of the measuring points ``keys`` in display units, plus ``"t"`` (s)."""
+    keys = list(keys)
+    _check_keys(session, keys)
+    if not seconds > 0:
+        raise ValueRangeError(f"capture: {seconds} s is not a duration")
+    rate = rate_hz or _link_rate(session)
+    wanted = max(1, round(seconds * rate))
+    poll_s = max(0.001, 10 / rate)  # about one report's worth of samples
+    silence_s = max(SILENCE_S, 20 / rate)
+    session.stream_start(keys, rate)
+    blocks: list[np.ndarray] = []
+    got, heard = 0, time.monotonic()
+    try:
+        while got < wanted:
+            block = session.stream_read()
+            if len(block):
+                blocks.append(block)
+                got += len(block)
+                heard = time.monotonic()
+            elif time.monotonic() - heard > silence_s:
+                raise DeviceTimeoutError(
+                    f"the valve sent no samples for {silence_s:.1f} s ({got} of {wanted})"
+                )
+            else:
+                time.sleep(poll_s)
+    finally:
+        session.stream_stop()
+    samples = np.concatenate(blocks)[:wanted]
+    data: dict[str, np.ndarray] = {
+        key: samples[:, i] * BY_KEY[key].scale for i, key in enumerate(keys)
+    }
+    data["t"] = np.arange(wanted) / rate
+    return data
+
+
+def _check_keys(session: ValveSession, keys: list[str]) -> None:
+    if not 1 <= len(keys) <= MAX_CHANNELS:
+        raise ValueRangeError(f"capture: 1 to {MAX_CHANNELS} measuring points, not {len(keys)}")
+    here = {s.key for s in signals_for(session.variant)}
+    for key in keys:
+        if key == "t":
+            raise ValueRangeError("capture: 't' is the time the result adds, not a signal")
+        if key not in here:
+            known = ", ".join(s.key for s in signals_for(session.variant))
+            where = "" if key in BY_KEY else " of the catalogue"
+            raise ValueRangeError(
+                f"capture: {key!r} is not a measuring point{where} on a "
+                f"{session.variant.label} valve (known: {known})"
+            )
+
+
+def _link_rate(session: ValveSession) -> int:
+    """The fastest rate the link streams without losing samples: 5000 Hz divided by a whole
+    number (docs/can-link.md for CANopen's SYNC + TPDO pace)."""
+    limit = session.info.stream_rate_limit_hz
+    if not limit or limit >= STREAM_BASE_HZ:
+        return STREAM_BASE_HZ
+    divider = int(np.ceil(STREAM_BASE_HZ / limit))
+    return STREAM_BASE_HZ // divider
+
+
+class SetpointGenerator:
+    """A waveform on the valve's setpoint (the GUI's setpoint generator, the same driver).
+
+    ``with valve.generator("square", amplitude=20, period=0.5): data = valve.capture(...)``.
+    Over USB it drives the service override SETPOVRON/SETPOVR, over CANopen RPDO1; when it
+    stops the valve takes its setpoint from where it did before. A refusal while it runs ends
+    it and is raised by :meth:`stop` (the valve's Prm9Error).
+    """
+
+    def __init__(self, session: ValveSession, settings: GeneratorSettings) -> None:
+        from prm9tool.online.setpoint_driver import SetpointDriver
+
+        settings.check()  # ValueRangeError: the waveform leaves the setpoint range
+        self.settings = settings
+        self.error: Prm9Error | None = None
+        self._running = False
+        self._driver = SetpointDriver(session, settings, self._refused)
+
+    @property
+    def running(self) -> bool:
+        """True between :meth:`start` and :meth:`stop`."""
+        return self._running
+
+    def start(self) -> None:
+        """Take the setpoint over and run the waveform (raises what the valve answered)."""
+        self._driver.start()
+        self._running = True
+
+    def stop(self) -> None:
+        """End the waveform and give the setpoint back; raises a refusal met while running."""
+        if self._running:
+            self._running = False
+            self._driver.stop(switch_off=self.error is None)
+        if self.error is not None:
+            raise self.error
+
+    def __enter__(self) -> SetpointGenerator:
+        self.start()
+        return self
+
+    def __exit__(self, *exc: object) -> None:
+        self.stop()
+
+    def __repr__(self) -> str:
+        s = self.settings
+        state = "running" if self._running else "stopped"
+        return (
+            f"<SetpointGenerator {s.waveform.value} amplitude {s.amplitude} % offset "
+            f"{s.offset} % period {s.period} s ({state})>"
+        )
+
+    def _refused(self, mnemonic: str, error: Prm9Error) -> None:
+        self.error = error
+        del mnemonic  # the error names the object
+
+
+def characterize(
+    session: ValveSession,
+    profile: Profile | str | os.PathLike[str] | None,
+    progress: Callable[[str], None] | None,
+) -> Characterization:
+    """The end-of-line test of ``--characterize`` on the open ``session``."""
+    from prm9tool.analysis.profile import DEFAULT, Profile, load_profile
+    from prm9tool.characterize.canrig import rig_for_session
+    from prm9tool.characterize.rig import EmulatorRig
+    from prm9tool.characterize.run import characterize as run
+
+    if profile is None:
+        profile = DEFAULT
+    elif not isinstance(profile, Profile):
+        profile = load_profile(os.fspath(profile))
+    if session.emulator is None:
+        return run(rig_for_session(session), profile, progress)
+    from prm9tool.device.factory import emulated_valve, stepped_here
+
+    # an emulated valve is stepped as fast as the CPU allows, as --characterize --emulator does
+    with stepped_here(emulated_valve(session.info.type_key, session.info.serial)) as valve:
+        return run(EmulatorRig(valve), profile, progress)

@@ -1,0 +1,132 @@
+"""``--get MNEMONIC…`` and ``--set MNEMONIC=VALUE… [--store]``: single parameters of one valve
+for shell scripts, through the Python API's :class:`~prm9tool.api.valve.Valve` (docs/api.md).
+
+Prints ``MNEMONIC<TAB>value<TAB>unit`` per parameter (display units, as a *.prm file writes
+them), or with ``--json`` one object: the valve (``--list-devices --json``'s record), the values
+and their units. ``--set`` checks every value against the catalogue before it writes the first
+(exit 2, nothing written), writes them in order and reads each back (exit 1 when the valve
+refuses one or it reads back differently); ``--store`` then makes them permanent. Exit codes
+as ``--batch`` (docs/batch.md). No Qt.
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import sys
+from typing import Any
+
+from prm9tool.api.params import display
+from prm9tool.api.valve import ReadBackError, Valve
+from prm9tool.catalogue import Parameter
+from prm9tool.cli.batch_devices import BatchError, can_options, open_entry, select
+from prm9tool.device.records import Value
+from prm9tool.errors import CommunicationError, ExitCode, Prm9Error, SdoAbortError, ValueRangeError
+
+
+def run(args: argparse.Namespace) -> int:
+    """Entry point of ``--get``/``--set``; returns the exit code."""
+    try:
+        wanted = parse_assignments(args.set or [])
+        entries = select(args)
+        if len(entries) != 1:
+            raise BatchError(ExitCode.USAGE, "--get/--set work on one valve: select exactly one")
+        session = open_entry(entries[0], can_options(args), args.type_key)
+    except BatchError as exc:
+        print(f"prm9tool: {exc}", file=sys.stderr)
+        return int(exc.code)
+    except CommunicationError as exc:
+        print(f"prm9tool: {exc}", file=sys.stderr)
+        return ExitCode.COMMUNICATION
+    with Valve(session, history_db=args.history_db) as valve:
+        try:
+            return _run(args, valve, wanted)
+        except BatchError as exc:
+            print(f"prm9tool: {exc}", file=sys.stderr)
+            return int(exc.code)
+
+
+def parse_assignments(items: list[str]) -> list[tuple[str, str]]:
+    """``["LIMTA=1800", …]`` → ``[("LIMTA", "1800"), …]``; BatchError(2) for a malformed one."""
+    pairs = []
+    for item in items:
+        name, sep, text = item.partition("=")
+        if not sep or not name.strip():
+            raise BatchError(ExitCode.USAGE, f"--set {item}: write MNEMONIC=VALUE (LIMTA=1800)")
+        pairs.append((name.strip(), text.strip()))
+    return pairs
+
+
+def _run(args: argparse.Namespace, valve: Valve, wanted: list[tuple[str, str]]) -> int:
+    raw = _checked(valve, wanted)  # every value before the first is written
+    names = [m for m, _ in wanted] + [m for m in args.get or [] if m not in raw]
+    for mnemonic in args.get or []:
+        _parameter(valve, mnemonic)
+    doing = ""
+    try:
+        for mnemonic, value in raw.items():
+            doing = f"--set {mnemonic}: "
+            valve[mnemonic] = display(valve.parameter(mnemonic), value)
+        doing = "--store: "
+        if args.store and raw:
+            valve.store()
+        doing = ""
+        values = valve.read(*names) if names else {}
+    except (ReadBackError, SdoAbortError) as exc:
+        raise BatchError(ExitCode.VERIFY_FAILED, f"{doing}{exc}; nothing was stored") from exc
+    except CommunicationError as exc:
+        raise BatchError(ExitCode.COMMUNICATION, str(exc)) from exc
+    except Prm9Error as exc:  # a parameter the valve lacks on this link
+        raise BatchError(ExitCode.VERIFY_FAILED, str(exc)) from exc
+    params = {m: valve.parameter(m) for m in values}
+    if args.json:
+        print(json.dumps(as_json(valve, params, values, bool(args.store and raw)), indent=2))
+    else:
+        for mnemonic, shown in values.items():
+            print(line(params[mnemonic], shown))
+    return ExitCode.OK
+
+
+def _parameter(valve: Valve, mnemonic: str) -> Parameter:
+    try:
+        return valve.parameter(mnemonic)
+    except KeyError as exc:
+        raise BatchError(ExitCode.USAGE, str(exc.args[0])) from exc
+
+
+def _checked(valve: Valve, wanted: list[tuple[str, str]]) -> dict[str, Value]:
+    raw: dict[str, Value] = {}
+    for mnemonic, text in wanted:
+        param = _parameter(valve, mnemonic)
+        if not param.writable:
+            raise BatchError(ExitCode.USAGE, f"--set {mnemonic}: the parameter is read-only")
+        try:
+            raw[mnemonic] = param.parse_display(text)
+            param.check_raw(raw[mnemonic])
+        except ValueRangeError as exc:
+            raise BatchError(ExitCode.USAGE, f"--set: {exc}; nothing was written") from exc
+    try:  # together, with what the valve holds (LIMTA at most its CURNORM …)
+        return valve.check({m: display(valve.parameter(m), v) for m, v in raw.items()})
+    except ValueRangeError as exc:
+        raise BatchError(ExitCode.USAGE, f"--set: {exc}; nothing was written") from exc
+
+
+def line(param: Parameter, value: Any) -> str:
+    """``MNEMONIC<TAB>value<TAB>unit`` (the value as a *.prm file writes it)."""
+    text = param.format_display(param.to_raw(value)) if not param.is_string else str(value)
+    return f"{param.mnemonic}\t{text}\t{param.unit}".rstrip("\t")
+
+
+def as_json(
+    valve: Valve, params: dict[str, Parameter], values: dict[str, Any], stored: bool
+) -> dict[str, Any]:
+    """What ``--get``/``--set --json`` print (docs/api.md)."""
+    return {
+        "device": valve.info.to_dict(),
+        "values": values,
+        "units": {m: params[m].unit for m in values},
+        "stored": stored,
+    }
+
+
+__all__ = ["as_json", "line", "parse_assignments", "run"]

@@ -1,0 +1,217 @@
+"""The public Python API (docs/api.md): the issue's snippet as written, on a real emulated
+valve; a lazy, Qt-free import; each operation with its error a script author meets."""
+
+from __future__ import annotations
+
+import subprocess
+import sys
+import textwrap
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+import prm9tool
+from prm9tool.api import EXPORTS, Valve
+from prm9tool.catalogue.typekey import TypeKey
+from prm9tool.device import factory
+from prm9tool.errors import AccessDeniedError, FileFormatError, TypeKeyError, ValueRangeError
+from prm9tool.files.prmfile import PrmContents, write_file
+
+ROOT = Path(__file__).resolve().parents[1]
+KEY = "PRM9-06.3Z11/30-24E02S02-CA"
+SNIPPET = textwrap.dedent(
+    """
+    import prm9tool
+    prm9tool.list_devices(can_interface="virtual", can_channel="x")  # -> list of DeviceInfo (id, type key, serial, firmware, link)
+    with prm9tool.connect("emulator:PRM9-06.3Z11/30-24E02S02-CA:4711") as valve:   # or "usb:…", "can:10" with can_interface=…, can_channel=…, can_bitrate=…
+        valve.info                          # DeviceInfo
+        valve["LIMTA"]                      # value in display units (mA); KeyError for an unknown mnemonic
+        valve["LIMTA"] = 1800               # checked against the catalogue, written, read back; ValueRangeError when out of range
+        params = prm9tool.read_prm("released.prm")      # a ParameterSet (mapping mnemonic -> value, with type key)
+        result = valve.upload(params)       # transactional, returns the UploadResult
+        valve.download()                    # -> ParameterSet; prm9tool.write_prm(path, params)
+        data = valve.capture(["demand", "position_actual"], seconds=1.0)   # dict of numpy arrays at the valve's rate, plus "t"
+        valve.status()                      # ValveStatus
+    """
+)
+
+
+@pytest.fixture(autouse=True)
+def _fresh_emulators():
+    yield
+    factory.forget_emulated_valves()
+
+
+@pytest.fixture
+def released(tmp_path: Path) -> Path:
+    """released.prm: the factory set of KEY with LIMTA 1500 mA, DYNFREQ changed."""
+    contents = PrmContents.factory(TypeKey.parse(KEY))
+    contents.values.update(LIMTA=1500, DYNFREQ=120)
+    path = tmp_path / "released.prm"
+    write_file(contents, path)
+    return path
+
+
+@pytest.fixture
+def valve():
+    with prm9tool.connect(f"emulator:{KEY}:4711") as opened:
+        yield opened
+
+
+def test_the_snippet_runs_as_written(released, monkeypatch):
+    monkeypatch.chdir(released.parent)
+    scope: dict = {}
+    exec(compile(SNIPPET, "snippet", "exec"), scope)
+    valve, result, data = scope["valve"], scope["result"], scope["data"]
+    assert valve.closed
+    assert valve.info.serial == 4711 and valve.info.type_key == KEY
+    assert valve.info.link == "emulator"
+    assert result.stored and result.verified and result.failed_step is None
+    assert set(data) == {"demand", "position_actual", "t"}
+    assert len(data["t"]) == 5000 and data["t"][1] == pytest.approx(1 / 5000)
+    assert all(len(column) == 5000 for column in data.values())
+    with prm9tool.connect(f"emulator:{KEY}:4711") as again:  # the upload was stored
+        assert again["LIMTA"] == 1500
+        assert again["DYNFREQ"] == 120
+
+
+def test_import_loads_no_qt_and_no_emulator():
+    code = textwrap.dedent(
+        """
+        import sys
+        import prm9tool
+        prm9tool.connect, prm9tool.ParameterSet, prm9tool.list_devices, prm9tool.history.records
+        bad = sorted(m for m in sys.modules
+                     if m.partition(".")[0] in ("PySide6", "pyqtgraph")
+                     or m.startswith("prm9tool.device.emulator"))
+        print(bad)
+        """
+    )
+    done = subprocess.run(
+        [sys.executable, "-c", code], cwd=ROOT, capture_output=True, text=True, check=True
+    )
+    assert done.stdout.strip() == "[]"
+
+
+def test_the_package_namespace_is_lazy_and_complete():
+    assert set(prm9tool.__all__) == set(EXPORTS) | {"__version__", "api", "history"}
+    assert set(EXPORTS) <= set(dir(prm9tool))
+    for name in EXPORTS:
+        assert getattr(prm9tool, name) is getattr(prm9tool.api, name)
+    with pytest.raises(AttributeError, match="no attribute 'conect'"):
+        prm9tool.conect  # noqa: B018
+
+
+def test_single_values_in_display_units(valve):
+    assert valve["LIMTA"] == 2400  # mA, the factory value
+    valve["LIMTA"] = 1800
+    assert valve["LIMTA"] == 1800
+    assert valve.read("LIMTA", "LIMTB") == {"LIMTA": 1800, "LIMTB": valve["LIMTB"]}
+    with pytest.raises(KeyError, match="NOPE: no such parameter in the catalogue"):
+        valve["NOPE"]
+    with pytest.raises(ValueRangeError, match="LIMTA: 99999 mA is outside the allowed range"):
+        valve["LIMTA"] = 99999
+    assert valve["LIMTA"] == 1800  # nothing was sent
+    with pytest.raises(ValueRangeError, match=r"LIMTA = 3000 mA is above .* CURNORM = 2600 mA"):
+        valve["LIMTA"] = 3000  # within 0 … 4000 mA, above this valve's CURNORM (table 7-14)
+    assert valve["LIMTA"] == 1800
+    assert valve.check({"LIMTA": 2000, "DYNFREQ": 100}) == {"LIMTA": 2000, "DYNFREQ": 100}
+
+
+def test_upload_refuses_another_variant_and_writes_nothing(valve):
+    other = prm9tool.ParameterSet.factory("PRM9-06.3Z11/30-24E04S02-CA")
+    other["LIMTA"] = 1000
+    with pytest.raises(TypeKeyError, match="even force_type=True cannot upload it"):
+        valve.upload(other, force_type=True)
+    assert valve["LIMTA"] == 2400
+
+
+def test_upload_of_display_values_and_its_history(valve):
+    result = valve.upload({**valve.download(), "LIMTA": 1700}, backup=True)
+    assert result.stored
+    records = prm9tool.history.records(4711)
+    assert [r["operation"] for r in records] == ["download", "backup", "upload"]
+    assert records[-1]["outcome"] == "ok"
+    assert records[-1]["details"]["command"] == "python API"
+
+
+def test_parameter_set_checks_values_and_round_trips(tmp_path):
+    params = prm9tool.ParameterSet.factory(KEY)
+    with pytest.raises(ValueRangeError):
+        params["LIMTA"] = -5
+    with pytest.raises(KeyError, match="no such parameter"):
+        params["NOPE"] = 1
+    params["LIMTA"] = 1650
+    prm9tool.write_prm(tmp_path / "a.prm", params)
+    assert prm9tool.read_prm(tmp_path / "a.prm") == params
+    assert "LIMTA=1650" in repr(params) or len(params) > 4
+    assert "<table>" in params._repr_html_()
+    (tmp_path / "bad.prm").write_text("nonsense\n", encoding="utf-8")
+    with pytest.raises(FileFormatError):
+        prm9tool.read_prm(tmp_path / "bad.prm")
+
+
+def test_restart_needs_the_hydraulics_confirmed(valve):
+    with pytest.raises(AccessDeniedError, match="confirm_hydraulics_off=True"):
+        valve.restart()
+    valve.restore_factory()
+    valve.restart(confirm_hydraulics_off=True)
+    assert valve["LIMTA"] == 2400
+
+
+def test_nmt_enable_generator_and_capture(valve):
+    assert not valve.wait_booted().booting
+    valve.nmt("start")
+    assert valve.status().nmt_state is prm9tool.NmtState.OPERATIONAL
+    valve.enable()
+    assert valve.status().device_state is prm9tool.DeviceState.DEVICE_MODE_ACTIVE
+    with valve.generator("square", amplitude=20.0, period=0.2) as generator:
+        data = valve.capture(["demand", "position_actual"], seconds=0.4)
+    assert not generator.running
+    assert data["demand"].max() == pytest.approx(20.0, abs=0.1)
+    assert data["position_actual"].max() > 5.0  # the spool followed
+    with pytest.raises(ValueError, match="unknown NMT command 'go'"):
+        valve.nmt("go")
+    with pytest.raises(ValueRangeError, match="'nope' is not a measuring point"):
+        valve.capture(["nope"])
+
+
+def test_diff_of_a_file_and_a_valve(valve, released):
+    comparison = prm9tool.diff(released, valve)
+    assert {row.mnemonic for row in comparison.changed} == {"LIMTA", "DYNFREQ"}
+    assert not comparison.equal
+
+
+def test_reprs_for_notebooks(valve):
+    assert repr(valve).startswith(f"<Valve emulator:{KEY}:4711")
+    for record in (valve.info, valve.status()):
+        assert type(record).__name__ in record._repr_html_()
+    assert isinstance(valve, Valve)
+    assert isinstance(valve.capture(["demand"], 0.01)["t"], np.ndarray)
+
+
+def test_a_valve_on_a_can_bus_is_listed_and_opened_by_its_node(tmp_path, request):
+    from can_link_rig import E04, make_link_rig
+
+    rig = make_link_rig(request.node.name, tmp_path, E04)
+    try:
+        bus = {"can_interface": "virtual", "can_channel": rig.options.channel}
+        (found,) = prm9tool.list_devices(**bus)
+        assert (found.device_id, found.type_key, found.link) == ("can:10", E04, "can")
+        assert found.serial == rig.valve.serial
+        assert found.can_bus == ("virtual", rig.options.channel, None)
+        with prm9tool.connect("can:10", **bus) as valve:
+            assert valve.info.serial == rig.valve.serial and valve.info.link == "can"
+            valve["DYNFREQ"] = 125
+            assert valve["DYNFREQ"] == 125
+            assert valve.download()["DYNFREQ"] == 125
+    finally:
+        rig.close()
+
+
+def test_an_unknown_device_id_is_a_clear_error():
+    with pytest.raises(prm9tool.Prm9Error, match="unknown device 'com3'"):
+        prm9tool.connect("com3")
+    with pytest.raises(TypeKeyError, match="must start with 'PRM9-'"):
+        prm9tool.connect("emulator:XYZ:1")

@@ -1,0 +1,110 @@
+"""The oscilloscope in German and Czech (issue 25 item 16): nothing cut off, numbers and
+messages in the language switched to, the shared axis named, the legend after Stop."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+from PySide6.QtCore import QEvent
+from scope_fakes import FakeConnection
+
+from prm9tool import i18n
+from prm9tool.model.document import ParameterDocument
+from prm9tool.views.scope.plot import SHARED_LABEL_CHARS, shared_names
+from prm9tool.views.scope.widget import ScopeWidget
+
+E02 = "PRM9-06.3Z11/30-24E02S02"
+
+
+@pytest.fixture
+def conn():
+    return FakeConnection()
+
+
+@pytest.fixture
+def scope(qtbot, conn):
+    i18n.set_language("en")
+    widget = ScopeWidget(conn, ParameterDocument(E02))
+    qtbot.addWidget(widget)
+    widget.resize(1024, 700)
+    widget.show()
+    yield widget
+    i18n.set_language("en")
+
+
+def _switch(qtbot, scope, language):
+    i18n.set_language(language)
+    qtbot.wait(10)  # the layout follows the new texts in the event loop
+
+
+@pytest.mark.parametrize("language", ["de", "cs"])
+def test_the_drop_downs_are_as_wide_as_their_texts_after_a_switch(qtbot, scope, language):
+    """ "Rollen (ohne Trig", "Náběžná hra": their width was that of the English texts."""
+    _switch(qtbot, scope, language)
+    c = scope.controls
+    for combo in (c.mode, c.edge, c.rate, c.time_window):
+        metrics = combo.fontMetrics()
+        widest = max(metrics.horizontalAdvance(combo.itemText(i)) for i in range(combo.count()))
+        assert combo.width() > widest + 16, (combo.currentText(), combo.width(), widest)
+
+
+def test_the_interval_takes_the_decimal_comma_of_german(qtbot, scope):
+    assert scope.controls.rate.itemText(0) == "0.2 ms (5 kHz)"
+    _switch(qtbot, scope, "de")
+    assert scope.controls.rate.itemText(0) == "0,2 ms (5 kHz)"
+    assert "0,5 s" in [scope.controls.time_window.itemText(i) for i in range(6)]
+
+
+def test_a_note_made_in_english_is_shown_in_german_after_the_switch(qtbot, scope):
+    scope._on_generator_stopped_by_operation()
+    assert "The setpoint generator has stopped" in scope.status.text()
+    _switch(qtbot, scope, "de")
+    assert "Sollwertgenerator" in scope.status.text()
+    assert "The setpoint generator" not in scope.status.text()
+
+
+def test_an_axis_two_channels_share_is_named_in_czech_not_numbered(qtbot, scope, conn):
+    """The Czech axis read "1, 2 [%]": the joined names were too long, so channel numbers
+    replaced them."""
+    _switch(qtbot, scope, "cs")
+    for key in ("setpoint_threshold", "position_actual"):
+        scope.preselect(key)
+    scope.start()
+    conn.samples_received.emit(np.zeros((100, 2)))
+    scope._redraw()
+    assert scope.plot.shared_axes() == {1: 0}
+    label = scope.plot.axes[0].labelText
+    assert ">1</span>" not in label and ">2</span>" not in label
+    assert "Skutečná poloha šoupátka" in label and label.endswith("[%]")
+
+
+def test_shared_names_drop_object_numbers_then_cut_each_name_evenly():
+    names = ["Skutečná poloha šoupátka (0x6301)", "Žádaná hodnota po polaritě a prahu"]
+    assert shared_names(names, 80) == names
+    assert shared_names(names, 62) == ["Skutečná poloha šoupátka", names[1]]
+    cut = shared_names([*names, "Výstup polohového regulátoru"], SHARED_LABEL_CHARS)
+    assert all(len(name) <= SHARED_LABEL_CHARS // 3 for name in cut)
+    assert cut[0].startswith("Skutečná") and cut[1].endswith("…")
+
+
+def test_after_stop_the_legend_marks_the_values_as_those_at_stop(qtbot, scope, conn):
+    """The legend went on showing the values of the recording as if they were the valve's."""
+    scope.preselect("demand")
+    scope.start()
+    conn.samples_received.emit(np.full((100, 1), 2048))  # 12.5 %
+    scope._redraw()
+    value = scope.plot.legend[0].value
+    assert value.text() == "12.5 %"
+    scope.stop()
+    assert value.text() == "at stop: 12.5 %" and "before Stop" in value.toolTip()
+    _switch(qtbot, scope, "de")
+    assert value.text() == "bei Stopp: 12,5 %"
+    scope.start()
+    conn.samples_received.emit(np.full((100, 1), 4096))
+    scope._redraw()
+    assert value.text() == "25 %"
+
+
+def test_language_change_events_alone_keep_the_scope_consistent(scope):
+    scope.changeEvent(QEvent(QEvent.Type.LanguageChange))  # no exception, nothing lost
+    assert scope.controls.rate.count() > 0
