@@ -5,7 +5,7 @@ returns samples as arrays; the session module needs numpy). Each import figure i
 of several fresh processes; the valve figures are medians of repeated calls in one process,
 with emulator data in a temporary folder.
 
-Run:  python benchmarks/bench_api.py [--runs N]
+Run:  python benchmarks/bench_api.py [--runs N] [--quick]
 """
 
 from __future__ import annotations
@@ -64,7 +64,9 @@ def main() -> None:
     """Print the figures and their ratios to the reference."""
     parser = argparse.ArgumentParser()
     parser.add_argument("--runs", type=int, default=7)
-    runs = parser.parse_args().runs
+    parser.add_argument("--quick", action="store_true", help="a smoke run: one of each")
+    args = parser.parse_args()
+    runs = 1 if args.quick else args.runs
     with tempfile.TemporaryDirectory() as data:
         os.environ["PRM9TOOL_DATA_DIR"] = data
         imports = {name: process_s(code, runs) for name, code in IMPORTS.items()}

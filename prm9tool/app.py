@@ -26,6 +26,7 @@ if TYPE_CHECKING:
     from prm9tool.device.session import ValveSession
     from prm9tool.errors import Prm9Error
     from prm9tool.online.connection_protocol import ListedValves, ValveListing
+    from prm9tool.online.library_log import LibraryLog
     from prm9tool.views.main_window import MainWindow
 
 
@@ -307,6 +308,16 @@ def show_internal_error(
     prompts.inform(window, prompts.Icon.Critical, title, text.format(error), details)
 
 
+def show_library_messages(window: MainWindow) -> LibraryLog:
+    """The CAN libraries' warnings, as prm9tool's messages, in the window's status bar (the
+    command line prints them on standard error too)."""
+    from prm9tool.online.library_log import LibraryLog
+
+    library_log = LibraryLog(window)
+    library_log.message_posted.connect(lambda text: window.status.showMessage(text, 8000))
+    return library_log
+
+
 def run(args: argparse.Namespace, spools_problem: Prm9Error | None = None) -> int:
     """Start the GUI (``spools_problem``: why spools.json was left out); returns the exit code."""
     from prm9tool.display import missing_x11_message, missing_x11_packages
@@ -318,10 +329,14 @@ def run(args: argparse.Namespace, spools_problem: Prm9Error | None = None) -> in
     app = create_application()
     window = create_window(args)
     sys.excepthook = lambda *exc: show_internal_error(window, *exc)
+    library_log = show_library_messages(window)
     window.show()
     start(window, plan_from(args, spools_problem))
     _probe_start_up(window)
-    code = app.exec()
+    try:
+        code = app.exec()
+    finally:
+        library_log.close()
     return ExitCode.OK if code == 0 else int(code)
 
 

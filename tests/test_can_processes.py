@@ -102,8 +102,12 @@ def test_a_plc_commissions_the_valve_and_tpdo1_shows_the_cia_408_status_words(ou
 @pytest.mark.timeout(600)
 def test_characterize_in_another_process(outcome):
     done = outcome["characterize"]
-    if done["code"] == 6:  # a PC too loaded to keep the SDO pace: said, not hidden
-        assert "the CANopen link did not keep one sample per" in done["err"], done["err"]
+    if done["code"] == 6:  # a PC too loaded to keep the bus's pace: said, not hidden
+        assert "link lost" in done["err"], done["err"]
+        assert "nothing was interpolated" in done["err"], done["err"]
+        return
+    if "measure it over USB" in done["err"]:  # E04 flow test: no gains to set on this link
+        assert done["code"] == 8 and "nothing was changed" in done["err"], done["err"]
         return
     if "the measurement cannot be analysed" in done["err"]:
         # SDO-polled samples on a loaded PC: too few for the static test ("choose a … period"),

@@ -3,9 +3,11 @@ in front of a paced emulated valve) and CANopen (an emulated -CA valve on a virt
 
 from __future__ import annotations
 
+import contextlib
 import json
 import os
 import sys
+import threading
 import time
 
 import numpy as np
@@ -41,6 +43,27 @@ static_gain = { min = 0.9, max = 1.1 }
 static_linearity_pct = { max = 5 }
 static_hysteresis_pct = { max = 8 }
 """
+
+
+@contextlib.contextmanager
+def emulator_lag(valve):
+    """How far the emulated valve's simulation (in this process) fell behind real time while
+    the block ran, sampled every 2 ms: a valve of its own never does, so a figure measured
+    while it did describes the PC's load, not the valve."""
+    lags: list[float] = []
+    done = threading.Event()
+
+    def watch() -> None:
+        while not done.wait(0.002):
+            lags.append(valve.pacer.lag_s())
+
+    watcher = threading.Thread(target=watch)
+    watcher.start()
+    try:
+        yield lags
+    finally:
+        done.set()
+        watcher.join()
 
 
 def step_s(rig) -> float:
@@ -109,10 +132,14 @@ def test_characterize_over_canopen_at_the_links_rate(can_valve, tmp_path, capsys
     args = ["--characterize", "--device", "can:10", "--can-interface", "virtual",
             "--can-channel", can_valve.options.channel, "--profile", str(tmp_path / "short.toml"),
             "--json", str(js), "--report", str(pdf)]  # fmt: skip
-    code = main(args)
+    with emulator_lag(can_valve.valve) as lags:
+        code = main(args)
     err = capsys.readouterr().err
+    behind = float(np.percentile(lags, 90)) if lags else 0.0
+    if code == ExitCode.OUT_OF_LIMITS and behind > 0.003:  # the valve is in this process
+        pytest.skip(f"the emulated valve was {behind * 1000:.0f} ms behind real time: {err}")
     if code == ExitCode.COMMUNICATION:  # a PC too loaded to keep the pace: said, not hidden
-        assert "the CANopen link did not keep one sample per" in err, err
+        assert "link lost" in err, err
         assert "nothing was interpolated" in err and not js.exists()
         assert can_valve.working("SETPOVRON") == 0
         pytest.skip(f"the rig refused the run on this loaded PC: {err.strip()}")
@@ -124,8 +151,8 @@ def test_characterize_over_canopen_at_the_links_rate(can_valve, tmp_path, capsys
     report = json.loads(js.read_text(encoding="utf-8"))
     assert report["link"].startswith("CANopen node 10 (virtual "), report["link"]
     rate = report["sample_rate_hz"]
-    assert 20 <= rate <= 1000  # one SDO write + read per sample, never the USB's 5 kHz
-    assert f"one sample per {1000 / rate:g} ms" in report["link"]
+    assert rate == 1000  # the bus's pace: RPDO1 + SYNC + TPDO1 per ms, never the USB's 5 kHz
+    assert "TPDO1 at the tool's SYNC, one sample per 1 ms" in report["link"]
     figures = {f["name"]: f["value"] for f in report["figures"]}
     assert 0.9 < figures["static_gain"] < 1.1
     assert figures["step_25_rise_s"] > 0
@@ -274,7 +301,7 @@ def test_the_tuning_window_online_over_canopen(qtbot, can_valve, monkeypatch):
             "a sweep needs at least" in status and "choose a duration of at least" in status
         )
         if not refused:
-            assert "−3 dB at" in text, status
+            assert "−3 dB: " in text and " Hz, −90°: " in text, status
             assert "The link's sample rate limited the sweep to" in text
         if os.environ.get("PRM9TOOL_SCREENSHOTS"):
             w.grab().save(os.path.join(os.environ["PRM9TOOL_SCREENSHOTS"], "tuning_bode_can.png"))

@@ -132,7 +132,7 @@ def test_bode_and_static_characteristic_with_linearization(qtbot, window):
     window.bode.f_max.setValue(100.0)
     window.bode.run_button.click()
     finish(qtbot, window)
-    assert "−3 dB at" in window.bode.result.text()
+    assert "−3 dB: " in window.bode.result.text()
     shot(window, "bode")
     window.tabs.setCurrentWidget(window.static)
     window.static.period.setValue(4.0)

@@ -219,8 +219,20 @@ Poslední akce možná nebyla dokončena. Uložte svou práci pod novým názvem
             <translation>rozmítaný sinus %1 … %2 Hz o ±%3 % kolem %4 %, %5 s</translation>
         </message>
         <message>
-            <source>−3 dB at %1 Hz, −90° at %2 Hz.</source>
-            <translation>−3 dB při %1 Hz, −90° při %2 Hz.</translation>
+            <source>above %1 Hz</source>
+            <translation>nad %1 Hz</translation>
+        </message>
+        <message>
+            <source>not reached</source>
+            <translation>nedosaženo</translation>
+        </message>
+        <message>
+            <source>−3 dB: %1, −90°: %2.</source>
+            <translation>−3 dB: %1, −90°: %2.</translation>
+        </message>
+        <message>
+            <source>%1 of %2 samples were lost on the link and left out of the estimate.</source>
+            <translation>%1 z %2 vzorků se na spojení ztratilo a do odhadu nebyly zahrnuty.</translation>
         </message>
         <message>
             <source>Amplitude:</source>
@@ -451,6 +463,29 @@ Poslední akce možná nebyla dokončena. Uložte svou práci pod novým názvem
         <message>
             <source>{0} does not fit the valve: its objects say {1} -CA.</source>
             <translation>{0} neodpovídá ventilu: jeho objekty říkají {1} -CA.</translation>
+        </message>
+    </context>
+    <context>
+        <name>CanLink</name>
+        <message>
+            <source>CANopen: prm9tool abandoned an SDO transfer: {0} (abort code {1})</source>
+            <translation>CANopen: prm9tool přerušil přenos SDO: {0} (kód přerušení {1})</translation>
+        </message>
+        <message>
+            <source>CANopen: the node did not answer an SDO request in time; asking again</source>
+            <translation>CANopen: Uzel neodpověděl na požadavek SDO včas; požadavek se opakuje</translation>
+        </message>
+        <message>
+            <source>CANopen: receiving stopped after an error of the CAN interface; go offline and connect again</source>
+            <translation>CANopen: Po chybě rozhraní CAN se příjem zastavil; přejděte do režimu offline a připojte se znovu</translation>
+        </message>
+        <message>
+            <source>CANopen: a received frame could not be processed: {0}</source>
+            <translation>CANopen: Přijatou zprávu nelze zpracovat: {0}</translation>
+        </message>
+        <message>
+            <source>CAN interface ({0}): {1}</source>
+            <translation>Rozhraní CAN ({0}): {1}</translation>
         </message>
     </context>
     <context>
@@ -707,6 +742,10 @@ Poslední akce možná nebyla dokončena. Uložte svou práci pod novým názvem
         <message>
             <source>the flow characteristic is measured on E04 valves (with an actuator)</source>
             <translation>průtoková charakteristika se měří na ventilech E04 (s akčním členem)</translation>
+        </message>
+        <message>
+            <source>this valve has no object for the process controller's gains on this link: the flow characteristic (made proportional for the test) cannot be measured here; nothing was changed — measure it over USB</source>
+            <translation>tento ventil nemá na tomto spojení objekt pro zesílení regulátoru procesu: průtokovou charakteristiku (pro test proporcionální) zde nelze změřit; nic nebylo změněno — změřte ji přes USB</translation>
         </message>
         <message>
             <source>the flow characteristic is measured in control mode 4 (process loop); the valve is in control mode {0}</source>
@@ -3855,6 +3894,14 @@ Ano načte a záznam zařadí do fronty; Ne nenačte nic.</translation>
             <translation>(žádná: skok na odezvě)</translation>
         </message>
         <message>
+            <source>No step found: the reference channel has no data in {0}. Over CANopen the valve does not report its demand value; the channel shows the setpoint prm9tool sends while its setpoint generator runs. Start the generator, or choose “(none: step on the response)”.</source>
+            <translation>Skok nenalezen: referenční kanál nemá v {0} žádná data. Přes CANopen ventil svou žádanou hodnotu nehlásí; kanál ukazuje žádanou hodnotu, kterou prm9tool posílá, dokud běží jeho generátor žádané hodnoty. Spusťte generátor, nebo zvolte „(žádná: skok na odezvě)“.</translation>
+        </message>
+        <message>
+            <source>No step found: the response channel has no data in {0} (the link does not deliver this measuring point, or lost every sample).</source>
+            <translation>Skok nenalezen: kanál odezvy nemá v {0} žádná data (spojení tento měřicí bod nedodává, nebo ztratilo všechny vzorky).</translation>
+        </message>
+        <message>
             <source>No step found in {0}.</source>
             <translation>V {0} nebyl nalezen žádný skok.</translation>
         </message>
@@ -3970,6 +4017,10 @@ Ano načte a záznam zařadí do fronty; Ne nenačte nic.</translation>
         <message>
             <source>not reached</source>
             <translation>nedosaženo</translation>
+        </message>
+        <message>
+            <source>above {0}</source>
+            <translation>nad {0}</translation>
         </message>
         <message>
             <source>Step response %1 %</source>

@@ -219,8 +219,20 @@ Die letzte Aktion wurde womöglich nicht vollständig ausgeführt. Speichern Sie
             <translation>ein Sinus-Sweep %1 … %2 Hz von ±%3 % um %4 %, %5 s</translation>
         </message>
         <message>
-            <source>−3 dB at %1 Hz, −90° at %2 Hz.</source>
-            <translation>−3 dB bei %1 Hz, −90° bei %2 Hz.</translation>
+            <source>above %1 Hz</source>
+            <translation>über %1 Hz</translation>
+        </message>
+        <message>
+            <source>not reached</source>
+            <translation>nicht erreicht</translation>
+        </message>
+        <message>
+            <source>−3 dB: %1, −90°: %2.</source>
+            <translation>−3 dB: %1, −90°: %2.</translation>
+        </message>
+        <message>
+            <source>%1 of %2 samples were lost on the link and left out of the estimate.</source>
+            <translation>%1 von %2 Messwerten gingen auf der Verbindung verloren und wurden bei der Schätzung ausgelassen.</translation>
         </message>
         <message>
             <source>Amplitude:</source>
@@ -449,6 +461,29 @@ Die letzte Aktion wurde womöglich nicht vollständig ausgeführt. Speichern Sie
         <message>
             <source>{0} does not fit the valve: its objects say {1} -CA.</source>
             <translation>{0} passt nicht zum Ventil: Seine Objekte sagen {1} -CA.</translation>
+        </message>
+    </context>
+    <context>
+        <name>CanLink</name>
+        <message>
+            <source>CANopen: prm9tool abandoned an SDO transfer: {0} (abort code {1})</source>
+            <translation>CANopen: prm9tool hat eine SDO-Übertragung abgebrochen: {0} (Abbruchcode {1})</translation>
+        </message>
+        <message>
+            <source>CANopen: the node did not answer an SDO request in time; asking again</source>
+            <translation>CANopen: Der Knoten hat auf eine SDO-Anfrage nicht rechtzeitig geantwortet; die Anfrage wird wiederholt</translation>
+        </message>
+        <message>
+            <source>CANopen: receiving stopped after an error of the CAN interface; go offline and connect again</source>
+            <translation>CANopen: Nach einem Fehler der CAN-Schnittstelle werden keine Telegramme mehr empfangen; offline gehen und neu verbinden</translation>
+        </message>
+        <message>
+            <source>CANopen: a received frame could not be processed: {0}</source>
+            <translation>CANopen: Ein empfangenes Telegramm konnte nicht verarbeitet werden: {0}</translation>
+        </message>
+        <message>
+            <source>CAN interface ({0}): {1}</source>
+            <translation>CAN-Schnittstelle ({0}): {1}</translation>
         </message>
     </context>
     <context>
@@ -705,6 +740,10 @@ Die letzte Aktion wurde womöglich nicht vollständig ausgeführt. Speichern Sie
         <message>
             <source>the flow characteristic is measured on E04 valves (with an actuator)</source>
             <translation>die Durchflusskennlinie wird an E04-Ventilen (mit Stellglied) gemessen</translation>
+        </message>
+        <message>
+            <source>this valve has no object for the process controller's gains on this link: the flow characteristic (made proportional for the test) cannot be measured here; nothing was changed — measure it over USB</source>
+            <translation>dieses Ventil hat auf dieser Verbindung kein Objekt für die Verstärkungen des Prozessreglers: die Durchflusskennlinie (für den Test proportional gemacht) kann hier nicht gemessen werden; nichts wurde geändert — messen Sie sie über USB</translation>
         </message>
         <message>
             <source>the flow characteristic is measured in control mode 4 (process loop); the valve is in control mode {0}</source>
@@ -3836,6 +3875,14 @@ Ja lädt hoch und stellt den Eintrag in die Warteschlange; Nein lädt nichts hoc
             <translation>(keine: Sprung auf der Antwort)</translation>
         </message>
         <message>
+            <source>No step found: the reference channel has no data in {0}. Over CANopen the valve does not report its demand value; the channel shows the setpoint prm9tool sends while its setpoint generator runs. Start the generator, or choose “(none: step on the response)”.</source>
+            <translation>Kein Sprung gefunden: Der Referenzkanal hat in {0} keine Daten. Über CANopen meldet das Ventil seinen Sollwert nicht; der Kanal zeigt den Sollwert, den prm9tool sendet, solange sein Sollwertgenerator läuft. Starten Sie den Generator oder wählen Sie „(keine: Sprung auf der Antwort)“.</translation>
+        </message>
+        <message>
+            <source>No step found: the response channel has no data in {0} (the link does not deliver this measuring point, or lost every sample).</source>
+            <translation>Kein Sprung gefunden: Der Antwortkanal hat in {0} keine Daten (die Verbindung liefert diesen Messpunkt nicht oder hat jeden Messwert verloren).</translation>
+        </message>
+        <message>
             <source>No step found in {0}.</source>
             <translation>Kein Sprung in {0} gefunden.</translation>
         </message>
@@ -3951,6 +3998,10 @@ Ja lädt hoch und stellt den Eintrag in die Warteschlange; Nein lädt nichts hoc
         <message>
             <source>not reached</source>
             <translation>nicht erreicht</translation>
+        </message>
+        <message>
+            <source>above {0}</source>
+            <translation>über {0}</translation>
         </message>
         <message>
             <source>Step response %1 %</source>

@@ -48,6 +48,25 @@ class FrequencyResponse:
         ok = self.reliable()
         return crossing(self.frequency[ok], self.phase_deg[ok], -90.0)
 
+    def bandwidth_above_hz(self) -> float:
+        """The highest reliable frequency when the magnitude never fell 3 dB below its
+        low-frequency value up to it — the −3 dB frequency is above the sweep's end — else
+        NaN (it was found, or too few reliable points to tell)."""
+        ok = self.reliable()
+        f, db = self.frequency[ok], self.magnitude_db[ok]
+        if len(f) < 2 or np.any(db <= float(db[0]) - 3.0103):
+            return math.nan
+        return float(f[-1])
+
+    def phase_90_above_hz(self) -> float:
+        """The highest reliable frequency when the phase lag stayed under 90° up to it (the
+        −90° frequency is above the sweep's end), else NaN."""
+        ok = self.reliable()
+        f, phase = self.frequency[ok], self.phase_deg[ok]
+        if len(f) < 2 or np.any(phase <= -90.0):
+            return math.nan
+        return float(f[-1])
+
 
 def crossing(f: np.ndarray, values: np.ndarray, level: float) -> float:
     """First frequency where ``values`` falls through ``level``, interpolated in log f."""
@@ -98,6 +117,60 @@ def frequency_response(
     phase = np.degrees(np.unwrap(np.angle(response)))
     freq = np.asarray(centres)
     return FrequencyResponse(freq, np.abs(response), phase, np.interp(freq, fc, coh))
+
+
+FIR_S = 0.1  # decision: the impulse response fitted when samples are missing (10 periods of 100 Hz)
+FIT_EQUATIONS = 10  # decision: at least ten arrived samples per coefficient of that fit
+
+
+def frequency_response_with_gaps(
+    u: np.ndarray,
+    y: np.ndarray,
+    missing: np.ndarray,
+    fs: float,
+    f_min: float,
+    f_max: float,
+    points: int = 60,
+) -> FrequencyResponse:
+    """:func:`frequency_response` of a record whose response lost samples (``missing``, or
+    NaN); ``u`` is complete (the demand the tool itself sent).
+
+    The same estimator as for a complete record needs a sample in every period, so each lost
+    one is replaced by what the demand predicts through an impulse response of :data:`FIR_S`
+    fitted by least squares to the samples that arrived (each arrived sample is the demand's
+    last ``FIR_S`` weighted by it: a lost one is just one equation less). Nothing is drawn
+    between neighbours, and a long gap is filled as well as a short one; the samples that
+    arrived are used as they are.
+    """
+    return frequency_response(u, filled_response(u, y, missing, fs), fs, f_min, f_max, points)
+
+
+def filled_response(u: np.ndarray, y: np.ndarray, missing: np.ndarray, fs: float) -> np.ndarray:
+    """``y`` with its ``missing`` (or NaN) samples predicted from ``u`` (see
+    :func:`frequency_response_with_gaps`)."""
+    u = np.asarray(u, dtype=float)
+    y = np.asarray(y, dtype=float)
+    missing = np.asarray(missing, dtype=bool) | np.isnan(y)
+    taps = max(2, round(FIR_S * fs))
+    if u.shape != y.shape or len(u) < max(256, 2 * taps):
+        raise ValueError("u and y must be equally long records of at least 256 samples")
+    present = ~missing
+    if present.all():
+        return y
+    offset_u, offset_y = u.mean(), y[present].mean()
+    padded = np.concatenate([np.full(taps - 1, u[0] - offset_u), u - offset_u])  # at rest before
+    windows = np.lib.stride_tricks.sliding_window_view(padded, taps)[
+        :, ::-1
+    ]  # row k: u[k…k-taps+1]
+    if present.sum() < FIT_EQUATIONS * taps:
+        raise ValueError(
+            f"too few response samples arrived ({int(present.sum())} of {len(u)}; the fit "
+            f"needs {FIT_EQUATIONS * taps})"
+        )
+    weights, *_ = np.linalg.lstsq(windows[present], y[present] - offset_y, rcond=None)
+    out = y.copy()
+    out[missing] = windows[missing] @ weights + offset_y
+    return out
 
 
 def log_chirp(duration_s: float, fs: float, f0: float, f1: float) -> np.ndarray:

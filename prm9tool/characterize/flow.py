@@ -77,6 +77,15 @@ def flow_test(
     if missing:
         raise Prm9Error(missing)
     present = rig.read(["CTRLMODE", "PRCKP"])
+    if "PRCKP" not in present:  # a valve without this project's objects on this link (CAN)
+        raise Prm9Error(
+            QT_TRANSLATE_NOOP(
+                "Characterize",
+                "this valve has no object for the process controller's gains on this link: "
+                "the flow characteristic (made proportional for the test) cannot be measured "
+                "here; nothing was changed — measure it over USB",
+            )()
+        )
     if present["CTRLMODE"] != 4:
         raise Prm9Error(
             QT_TRANSLATE_NOOP(
@@ -102,7 +111,7 @@ def flow_test(
         low = max(low, 0.0)
     stimulus = np.concatenate([np.full(n, high), np.full(n, low)])
     with preserved(rig, [], changes):
-        rig.play(np.full(n, low), [FLOW_KEYS[1]])  # settle at the start
+        rig.play(np.full(n, low), [FLOW_KEYS[1]], gaps=True)  # settle at the start
         rec = record(rig, stimulus, list(FLOW_KEYS), centre_pct, amplitude_pct + 15.0)
     speed = velocity(rec.channels["process_actual"], fs)
     opening = rec.channels["position_actual"]

@@ -15,11 +15,23 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from prm9tool.analysis.frequency import FrequencyResponse, frequency_response, log_chirp
+from prm9tool.analysis.frequency import (
+    FrequencyResponse,
+    frequency_response,
+    frequency_response_with_gaps,
+    log_chirp,
+)
 from prm9tool.analysis.pid import PidGains, critical_gain_rule, from_parameters, oscillation
 from prm9tool.analysis.static import StaticCharacteristic, static_characteristic
 from prm9tool.catalogue.signals import BY_KEY
-from prm9tool.characterize.rig import Rig
+from prm9tool.characterize.rig import (
+    ATTEMPTS,
+    LinkTooSlowError,
+    Rig,
+    bridgeable,
+    bridged,
+    retried,
+)
 from prm9tool.characterize.transparent import TRANSPARENT
 from prm9tool.errors import Prm9Error
 from prm9tool.messages import QT_TRANSLATE_NOOP, Message, Number
@@ -132,13 +144,15 @@ def record(
     centre: float,
     limit: float,
     strict: bool = True,
+    gaps: bool = False,
 ) -> Record:
     """Play ``stimulus`` and convert the samples to %.
 
     ``strict``: LimitExceededError when the response leaves ``centre ± limit``; otherwise the
-    record ends at the first sample outside.
+    record ends at the first sample outside. ``gaps``: the analysis takes lost samples
+    (``rig.last_missing``) as missing.
     """
-    raw = rig.play(stimulus, keys)
+    raw = rig.play(stimulus, keys, gaps)
     channels = {k: raw[:, i] * BY_KEY[k].scale for i, k in enumerate(keys)}
     outside = np.flatnonzero(np.abs(channels[keys[1]] - centre) > limit)
     if len(outside) and not strict:
@@ -203,15 +217,46 @@ def _step(
     limit: float | None,
     loop: str,
 ) -> StepResult:
+    """One step from rest. A link that lost samples (CANopen on a busy PC) repeats it from
+    rest, at most ATTEMPTS times in all: the valve answers the same step the same way, so
+    each repetition fills the samples the others lost at the same SYNC number (the record
+    keeps the first that arrived at each); what none delivered is bridged when
+    :func:`~prm9tool.characterize.rig.bridgeable`, else the step is refused."""
     fs = rig.info.sample_rate_hz
     pre, n = round(STEP_PRE_S * fs), round(duration * fs)
-    rig.play(np.full(int(max(0.1, duration) * fs), start), [lp.setpoint])  # settle first
-    stimulus = np.concatenate([np.full(pre, start), np.full(n, start + amplitude)])
-    band = limit if limit is not None else abs(amplitude) * 2.0 + 5.0
-    rec = record(rig, stimulus, [lp.setpoint, lp.actual, lp.output], start, band)
+    keys = [lp.setpoint, lp.actual, lp.output]
+    channels: dict[str, np.ndarray] = {}
+    hole = np.zeros(0, dtype=bool)
+    for attempt in range(ATTEMPTS):
+        rig.play(np.full(int(max(0.1, duration) * fs), start), [lp.setpoint])  # settle first
+        stimulus = np.concatenate([np.full(pre, start), np.full(n, start + amplitude)])
+        band = limit if limit is not None else abs(amplitude) * 2.0 + 5.0
+        try:
+            rec = record(rig, stimulus, keys, start, band, gaps=True)
+        except LinkTooSlowError:  # this repetition lost nearly everything: the next one
+            if attempt + 1 < ATTEMPTS:
+                continue
+            raise
+        missing = rig.last_missing if len(rig.last_missing) else np.zeros(len(rec.t), bool)
+        if not channels:
+            channels, hole = dict(rec.channels), missing.copy()
+        else:  # the samples this repetition delivered where the record has none
+            for key, values in rec.channels.items():
+                channels[key] = np.where(hole & ~missing, values, channels[key])
+            hole &= missing
+        if bridgeable(hole, fs):
+            break
+    else:
+        raise LinkTooSlowError(
+            f"the link lost {int(hole.sum())} of {len(hole)} samples of the step even in "
+            f"{ATTEMPTS} repetitions; the test was stopped, nothing was interpolated"
+        )
+    response = channels[lp.actual]
+    if hole.any():  # the few none delivered: a straight line between their neighbours
+        channels[lp.actual] = bridged(np.where(hole, np.nan, response))
     t = rec.t - pre / fs
-    figures = step_figures(t, rec.channels[lp.actual], rec.channels[lp.setpoint])
-    return StepResult(amplitude, Record(t, rec.channels), figures, loop)
+    figures = step_figures(t, channels[lp.actual], channels[lp.setpoint])
+    return StepResult(amplitude, Record(t, channels), figures, loop)
 
 
 # --- frequency response -----------------------------------------------------------------------
@@ -225,6 +270,7 @@ class BodeResult:
     response: FrequencyResponse
     note: str = ""  # set when the link's sample rate limited the sweep
     limited_to_hz: float | None = None  # the sweep's highest frequency when it was limited
+    lost_samples: int = 0  # responses the link lost (left out of the estimate)
 
 
 def bode_test(
@@ -265,12 +311,22 @@ def bode_test(
     sweep = centre_pct + amplitude_pct * log_chirp(duration_s, fs, f_min, f_max)
     with preserved(rig, [], chain_changes(rig, loop)):
         rig.play(np.full(int(0.05 * fs), centre_pct), [lp.setpoint])
-        rec = record(rig, sweep, [lp.setpoint, lp.actual], centre_pct, 2.5 * amplitude_pct + 5.0)
-    response = frequency_response(
-        rec.channels[lp.setpoint], rec.channels[lp.actual], fs, f_min, f_max
-    )
-    limited = f_max if note else None
-    return BodeResult(amplitude_pct, centre_pct, rec, response, note, limited)
+        band = 2.5 * amplitude_pct + 5.0
+        rec = record(rig, sweep, [lp.setpoint, lp.actual], centre_pct, band, gaps=True)
+    limited = f_max if note else None  # (the note says the sweep was limited)
+    u, y, missing = rec.channels[lp.setpoint], rec.channels[lp.actual], rig.last_missing
+    if missing.any():  # lost on the link: not filled in, the fit uses what arrived
+        try:
+            response = frequency_response_with_gaps(u, y, missing, fs, f_min, f_max)
+        except ValueError as exc:  # too few arrived for the fit: the link's refusal
+            raise LinkTooSlowError(
+                f"the link lost {int(missing.sum())} of {len(missing)} samples of the sweep "
+                f"({exc}); choose a longer sweep, the test was stopped, nothing was interpolated"
+            ) from None
+    else:
+        response = frequency_response(u, y, fs, f_min, f_max)
+    lost = int(missing.sum())
+    return BodeResult(amplitude_pct, centre_pct, rec, response, note, limited, lost)
 
 
 # --- static characteristic --------------------------------------------------------------------
@@ -312,9 +368,9 @@ def static_test(
     rise = np.repeat(np.linspace(lo_pct, hi_pct, half // every + 1), every)[:half]
     rig.ensure_active()
     sweep = np.concatenate([rise, rise[::-1]])
-    rig.play(np.full(int(0.2 * fs), lo_pct), [response])
-    try:
-        raw = rig.play(sweep, list(keys))
+    rig.play(np.full(int(0.2 * fs), lo_pct), [response], gaps=True)  # settling: not analysed
+    try:  # lost samples of a slow triangle are bridged (gaps of ms in a period of seconds)
+        raw = rig.play(sweep, list(keys), gaps=True)
     finally:
         rig.release()
     channels = {k: raw[:, i] * BY_KEY[k].scale for i, k in enumerate(keys)}
@@ -362,7 +418,7 @@ def critical_gain_tune(
             rig.write({k: saved[k] for k in names})
             rig.play(np.zeros(int(0.05 * rig.info.sample_rate_hz)), [lp.setpoint])
             rig.write({param: kp_raw, lp.prefix + "KI": 0, lp.prefix + "KD": 0})
-            ringing, period = _ring(rig, lp, amplitude_pct, limit_pct, window_s)
+            ringing, period = retried(lambda: _ring(rig, lp, amplitude_pct, limit_pct, window_s))
             trials.append((kp_raw * 0.01, ringing[0], ringing[1]))
             return ringing[1] >= 0.3 * amplitude_pct and ringing[1] >= 0.9 * ringing[0], period
 

@@ -13,26 +13,77 @@ from __future__ import annotations
 import threading
 import time
 from abc import ABC, abstractmethod
-from collections.abc import Mapping, Sequence
+from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, TypeVar
 
 import numpy as np
 
 from prm9tool.catalogue import CATALOGUE
 from prm9tool.catalogue.scale import FULL_SCALE
 from prm9tool.device.records import DeviceState, NmtState, ValveStatus
-from prm9tool.errors import Prm9Error
+from prm9tool.errors import CommunicationError, Prm9Error
 from prm9tool.messages import QT_TRANSLATE_NOOP
 
 if TYPE_CHECKING:
     from prm9tool.device.emulator import EmulatedValve
     from prm9tool.device.session import ValveSession
 
+T = TypeVar("T")
 FULL = float(FULL_SCALE)  # 100 % in counts
 CHUNK = 500  # samples between checks for a stop request or a fault
 STOPPED = QT_TRANSLATE_NOOP("Characterize", "stopped by the user; the valve was put back as it was")
 REPORTED = QT_TRANSLATE_NOOP("Characterize", "the valve reported error {0}: {1}")
+
+
+ATTEMPTS = 5  # a test whose samples the link lost runs at most this often in all
+LATE_SHARE = 0.05  # at most this share of a test's samples may be late or lost (bridged)
+MAX_GAP_S = 0.005  # decision: a longer run of lost samples is not bridged (half of 100 Hz)
+
+
+class LinkTooSlowError(CommunicationError):
+    """The link could not keep the sample period; the test was stopped (nothing interpolated)."""
+
+    summary = QT_TRANSLATE_NOOP("Errors", "The link could not keep the test's sample rate.")
+
+
+def retried(run: Callable[[], T], attempts: int = ATTEMPTS) -> T:
+    """``run()`` again from its start when the link lost too many of its samples (a busy PC
+    over CANopen), at most ``attempts`` times in all; the last refusal is raised. ``run`` must
+    bring the valve to its start itself (a step settles first)."""
+    for _ in range(attempts - 1):
+        try:
+            return run()
+        except LinkTooSlowError:
+            continue
+    return run()
+
+
+def longest_run(mask: np.ndarray) -> int:
+    """The longest run of True in ``mask``."""
+    if not mask.any():
+        return 0
+    edges = np.flatnonzero(np.diff(np.concatenate([[0], mask.astype(np.int8), [0]])))
+    return int((edges[1::2] - edges[::2]).max())
+
+
+def bridged(values: np.ndarray) -> np.ndarray:
+    """NaN samples replaced by the straight line between their neighbours (ends: the nearest)."""
+    missing = np.isnan(values)
+    if not missing.any() or missing.all():
+        return values
+    index = np.arange(len(values))
+    out = values.copy()
+    out[missing] = np.interp(index[missing], index[~missing], values[~missing])
+    return out
+
+
+def bridgeable(missing: np.ndarray, fs: float) -> bool:
+    """True when the lost samples may be bridged for an analysis that needs every sample: at
+    most :data:`LATE_SHARE` of them, none in a run longer than :data:`MAX_GAP_S`."""
+    return bool(
+        missing.sum() <= LATE_SHARE * len(missing) and longest_run(missing) <= MAX_GAP_S * fs
+    )
 
 
 class Stopped(Prm9Error):  # noqa: N818 (a user's request, not a failure)
@@ -62,6 +113,7 @@ class Rig(ABC):
     def __init__(self) -> None:
         self.stop = threading.Event()
         self.last_demand = np.empty(0)  # the override in %, per sample of the last play()
+        self.last_missing = np.zeros(0, dtype=bool)  # samples of the last play() lost (bridged)
         self.played_s = 0.0  # valve seconds played so far (the GUI's progress bar reads it)
 
     @abstractmethod
@@ -73,10 +125,13 @@ class Rig(ABC):
         """Write raw values (in the given order)."""
 
     @abstractmethod
-    def play(self, setpoint_pct: np.ndarray, keys: Sequence[str]) -> np.ndarray:
+    def play(self, setpoint_pct: np.ndarray, keys: Sequence[str], gaps: bool = False) -> np.ndarray:
         """Drive the override with ``setpoint_pct`` (one value per sample) and record ``keys``.
 
-        Returns raw samples, shape (n, len(keys)), one row per sample period. Raises
+        Returns raw samples, shape (n, len(keys)), one row per sample period. A link that can
+        lose samples (CANopen) bridges them and marks them in :attr:`last_missing`; ``gaps``:
+        the caller's analysis takes them as missing, so more may be lost before the play is
+        refused. Raises
         :class:`Stopped` when :attr:`stop` is set and :class:`ValveFaultError` on a valve error;
         the override stays on until :meth:`release`.
         """
@@ -161,8 +216,8 @@ class EmulatorRig(Rig):
             param = CATALOGUE[mnemonic]
             self.valve.write(param.index, param.subindex, int(raw))
 
-    def play(self, setpoint_pct: np.ndarray, keys: Sequence[str]) -> np.ndarray:
-        """One override value per 200 µs cycle; the capture records every cycle."""
+    def play(self, setpoint_pct: np.ndarray, keys: Sequence[str], gaps: bool = False) -> np.ndarray:
+        """One override value per 200 µs cycle; the capture records every cycle (no gaps)."""
         valve = self.valve
         over = CATALOGUE["SETPOVR"]
         self.write({"SETPOVR": counts(float(setpoint_pct[0])), "SETPOVRON": 1})
@@ -250,8 +305,8 @@ class SessionRig(Rig):
         """Write over the link."""
         self.session.write_many(dict(values))
 
-    def play(self, setpoint_pct: np.ndarray, keys: Sequence[str]) -> np.ndarray:
-        """Write the stimulus at the link's pace while collecting the stream.
+    def play(self, setpoint_pct: np.ndarray, keys: Sequence[str], gaps: bool = False) -> np.ndarray:
+        """Write the stimulus at the link's pace while collecting the stream (no gaps).
 
         The stimulus is a function of the valve's time: each write sends the value for the
         samples received so far, so a slow link writes less often but never stretches the

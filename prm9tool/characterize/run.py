@@ -48,11 +48,24 @@ class Figure:
     unit: str
     limit: Limit | None
     note: Message | None = None  # what a figure that could not be measured saw instead
+    above: bool = False  # the figure lies above ``value`` (not reached by the sweep's end)
 
     @property
     def passed(self) -> bool | None:
-        """True/False against the limit; None when no limit is set."""
-        return None if self.limit is None else self.limit.passed(self.value)
+        """True/False against the limit; None when no limit is set. A figure known only to be
+        above ``value`` passes a minimum at most ``value`` and fails any maximum (unverified)."""
+        if self.limit is None:
+            return None
+        if self.above:
+            low = self.limit.minimum is None or self.value >= self.limit.minimum
+            return low and self.limit.maximum is None
+        return self.limit.passed(self.value)
+
+    @property
+    def text(self) -> str:
+        """The value as the command line prints it: ``29.3 Hz`` or ``above 100 Hz``."""
+        shown = f"{self.value:.4g} {self.unit}".strip()
+        return f"above {shown}" if self.above else shown
 
 
 @dataclass
@@ -78,9 +91,18 @@ class Characterization:
 
     @property
     def notes(self) -> list[str]:
-        """What the link limited (e.g. a sweep cut at what its sample rate allows)."""
-        bode = [self.bode.note] if self.bode is not None and self.bode.note else []
-        return bode + self.skipped
+        """What the link limited (a sweep cut at what its sample rate allows, samples lost)
+        and the tests skipped with their reason."""
+        notes = []
+        bode = self.bode
+        if bode is not None and bode.note:
+            notes.append(bode.note)
+        if bode is not None and bode.lost_samples:
+            notes.append(
+                f"frequency response: {bode.lost_samples} of {len(bode.record.t)} samples lost "
+                "on the link, left out of the estimate"
+            )
+        return notes + self.skipped
 
 
 RESULT_HOOKS: list[Callable[[Characterization], None]] = []
@@ -145,8 +167,22 @@ def figures(c: Characterization) -> list[Figure]:
     limits = c.profile.limits
     out: list[Figure] = []
 
-    def add(name: str, label: str, value: float, base: str, note: Message | None = None) -> None:
-        out.append(Figure(name, label, value, FIGURES[base], limits.get(base), note))
+    def add(
+        name: str,
+        label: str,
+        value: float,
+        base: str,
+        note: Message | None = None,
+        above: float = math.nan,
+    ) -> None:
+        """``above``: the figure was not reached up to this frequency (used when ``value`` is
+        NaN: the figure is above the sweep's end)."""
+        if math.isnan(value) and not math.isnan(above):
+            out.append(
+                Figure(name, label, above, FIGURES[base], limits.get(base), note, above=True)
+            )
+        else:
+            out.append(Figure(name, label, value, FIGURES[base], limits.get(base), note))
 
     for step in c.steps:
         f = step.figures
@@ -159,8 +195,10 @@ def figures(c: Characterization) -> list[Figure]:
             "step_settling_s", f.not_settled("%") if f else None)  # fmt: skip
     if c.bode is not None:
         r = c.bode.response
-        add("bode_bandwidth_hz", "−3 dB frequency", r.bandwidth_hz(), "bode_bandwidth_hz")
-        add("bode_phase90_hz", "−90° frequency", r.phase_90_hz(), "bode_phase90_hz")
+        add("bode_bandwidth_hz", "−3 dB frequency", r.bandwidth_hz(), "bode_bandwidth_hz",
+            above=r.bandwidth_above_hz())  # fmt: skip
+        add("bode_phase90_hz", "−90° frequency", r.phase_90_hz(), "bode_phase90_hz",
+            above=r.phase_90_above_hz())  # fmt: skip
     if c.static is not None:
         s = c.static.characteristic
         add("static_gain", "gain", s.gain, "static_gain")
@@ -197,6 +235,7 @@ def report_data(c: Characterization, csv_files: list[Path] | None = None) -> dic
             {
                 "name": f.name,
                 "value": _num(f.value),
+                "above": f.above,
                 "unit": f.unit,
                 "min": f.limit.minimum if f.limit else None,
                 "max": f.limit.maximum if f.limit else None,

@@ -48,6 +48,9 @@ def run(args: argparse.Namespace) -> int:
     except ValueError as exc:  # a record the analysis cannot use (no response at all)
         print(f"prm9tool: the measurement cannot be analysed: {exc}", file=sys.stderr)
         return ExitCode.OUT_OF_LIMITS
+    except Prm9Error as exc:  # a test this valve cannot take on this link (it says why)
+        print(f"prm9tool: test stopped: {exc}", file=sys.stderr)
+        return ExitCode.OUT_OF_LIMITS
     finally:
         close()
     try:
@@ -58,7 +61,7 @@ def run(args: argparse.Namespace) -> int:
     for figure in result.figures:
         if figure.passed is False:
             seen = f" ({figure.note})" if figure.note is not None else ""  # what it saw instead
-            print(f"prm9tool: out of limits: {figure.name} = {figure.value:.4g} {figure.unit} "
+            print(f"prm9tool: out of limits: {figure.name} = {figure.text} "
                   f"(limit {figure.limit.text() if figure.limit else ''}){seen}", file=sys.stderr)  # fmt: skip
     verdict = "PASSED" if result.passed else "FAILED"
     print(f"{result.info.type_key} serial {result.info.serial}: {verdict}")

@@ -39,14 +39,21 @@ def main(argv: Sequence[str] | None = None) -> int:
         from prm9tool.device.factory import set_emulator_od
 
         set_emulator_od(args.od)
-    spools_problem = _load_user_spools()
-    command = _headless_command(args)
-    if command is not None:
-        module, function = command
-        return int(getattr(importlib.import_module(module), function)(args))
-    from prm9tool.app import run as run_app
+    # the CAN libraries' warnings as prm9tool's messages, not their raw log lines
+    from prm9tool.device.canlink.liblog import route_library_logs
 
-    return run_app(args, spools_problem)
+    undo = route_library_logs(lambda message: print(f"prm9tool: {message}", file=sys.stderr))
+    try:
+        spools_problem = _load_user_spools()
+        command = _headless_command(args)
+        if command is not None:
+            module, function = command
+            return int(getattr(importlib.import_module(module), function)(args))
+        from prm9tool.app import run as run_app
+
+        return run_app(args, spools_problem)
+    finally:
+        undo()
 
 
 def _headless_command(args: argparse.Namespace) -> tuple[str, str] | None:

@@ -156,6 +156,9 @@ class DeviceInfo(HtmlRecord):
     # the fastest oscilloscope sample rate the link delivers without losing samples (0: the
     # valve's own 5 kHz stream); over CANopen the SYNC + TPDO1 pace of docs/can-link.md
     stream_rate_limit_hz: float = 0.0
+    # the stream has one row per sample period and a lost sample is a NaN row at its time
+    # (over CANopen: placed by the SYNC count); False: lost samples are only counted
+    stream_gaps: bool = False
 
     @property
     def link(self) -> str:

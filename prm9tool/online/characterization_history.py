@@ -29,7 +29,13 @@ def recording_hook(recorder: Recorder) -> Callable[[Characterization], None]:
             "profile": result.profile.name,
             "started": result.date,
             "figures": [
-                {"name": f.name, "value": f.value, "unit": f.unit, "passed": f.passed}
+                {
+                    "name": f.name,
+                    "value": f.value,
+                    "above": f.above,
+                    "unit": f.unit,
+                    "passed": f.passed,
+                }
                 for f in result.figures
             ],
         }

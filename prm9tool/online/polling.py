@@ -7,7 +7,7 @@ from __future__ import annotations
 import logging
 import math
 from dataclasses import dataclass, field
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, Any
 
 from prm9tool.catalogue import CATALOGUE
 from prm9tool.catalogue.signals import MAX_CHANNELS, SIGNAL_OBJECTS, signals_for
@@ -120,7 +120,7 @@ class Poller:
         if stream and self.stream_keys:
             block = session.stream_read()
             if len(block):
-                self._last_row = dict(zip(self.stream_keys, map(float, block[-1]), strict=False))
+                self._last_row.update(latest_values(self.stream_keys, block))
                 result.samples = block
             lost = int(getattr(session, "samples_lost", 0))
             if lost != self._lost_reported:
@@ -228,3 +228,16 @@ class Schedule:
         if signals:
             self.next_signals = now + SIGNAL_PERIOD_S
         return stream, status, signals
+
+
+def latest_values(keys: list[str], block: Any) -> dict[str, float]:
+    """Each channel's newest sample that arrived in ``block`` (a lost one, NaN over CANopen,
+    does not blank the live value); channels without any are left out."""
+    import numpy as np  # loaded with the stream anyway; not at the program's start
+
+    values: dict[str, float] = {}
+    for column, key in enumerate(keys[: block.shape[1]]):
+        arrived = np.flatnonzero(np.isfinite(block[:, column]))
+        if len(arrived):
+            values[key] = float(block[arrived[-1], column])
+    return values

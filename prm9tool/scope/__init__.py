@@ -5,8 +5,10 @@ translatable :class:`~prm9tool.messages.Message` templates). Samples arrive from
 stream as raw ``(n, channels)`` blocks; :class:`Capture` converts them to display units once and
 appends them to a preallocated :class:`RingBuffer`, so everything downstream (trigger level,
 cursors, figures, CSV) works in the units the user sees. Sample ``i`` of a capture lies at
-``i / rate`` seconds after the capture started; the stream has no gaps (lost samples are counted
-by the session, not hidden here).
+``i / rate`` seconds after the capture started. A link that places its samples by time (over
+CANopen by the SYNC count) gives a NaN row for each lost sample: a gap at its time, drawn as a
+break in the curve (:func:`curve_points`) and left out of the figures; the USB stream has no gaps
+(its lost samples are counted by the session).
 
 The names below load their module on first use (PEP 562): importing one part
 (``prm9tool.scope.measure``) loads neither the others nor what they import.
@@ -26,6 +28,7 @@ if TYPE_CHECKING:
         Capture,
         RingBuffer,
         axis_ranges,
+        curve_points,
         peak_decimate,
     )
     from prm9tool.scope.generator import (
@@ -76,6 +79,7 @@ __all__ = [
     "Waveform",
     "axis_ranges",
     "cursor_readout",
+    "curve_points",
     "find_edge",
     "find_step",
     "find_steps",
@@ -97,6 +101,7 @@ _WHERE = {
             "Capture",
             "RingBuffer",
             "axis_ranges",
+            "curve_points",
             "peak_decimate",
         ),
         "generator": (

@@ -107,7 +107,8 @@ def peak_decimate(t: np.ndarray, values: np.ndarray, points: int) -> tuple[np.nd
 
     Blocks of ``ds`` samples become two points (min, max) at the block's first time stamp, so
     spikes and the envelope of fast signals survive (the peak method of pyqtgraph). The
-    samples of a last, incomplete block are kept as they are.
+    samples of a last, incomplete block are kept as they are. Lost samples (NaN) are left out
+    of a block's peaks; a block without any sample stays NaN (a gap in the curve).
     """
     ds = -(-len(t) // max(1, points // 2))
     if ds <= 1:
@@ -117,10 +118,34 @@ def peak_decimate(t: np.ndarray, values: np.ndarray, points: int) -> tuple[np.nd
     peaks = np.empty((2 * blocks + len(t) - full, values.shape[1]))
     for c in range(values.shape[1]):
         column = np.ascontiguousarray(values[:full, c]).reshape(blocks, ds)
-        peaks[0 : 2 * blocks : 2, c] = column.min(axis=1)
-        peaks[1 : 2 * blocks : 2, c] = column.max(axis=1)
+        # fmin/fmax skip lost samples (NaN) without a warning; a block of only NaN stays a gap
+        peaks[0 : 2 * blocks : 2, c] = np.fmin.reduce(column, axis=1)
+        peaks[1 : 2 * blocks : 2, c] = np.fmax.reduce(column, axis=1)
     peaks[2 * blocks :] = values[full:]
     return np.concatenate([np.repeat(t[:full:ds], 2), t[full:]]), peaks
+
+
+BRIDGE_SAMPLES = 4  # decision: a line is drawn across at most this many lost samples
+
+
+def curve_points(
+    t: np.ndarray, y: np.ndarray, bridge: int = BRIDGE_SAMPLES
+) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """The samples of one channel that arrived, and where the curve connects them:
+    ``(times, values, connect)``, ``connect[i]`` joining point ``i`` to ``i + 1``.
+
+    A lost sample (NaN) is left out; the line goes on across at most ``bridge`` lost samples
+    (a few ms, not visible as such at a scope's zoom) and breaks at a longer gap, which the plot
+    then shows as a gap at its time. The spacing is taken from ``t`` itself, so peak-decimated
+    times (two points per block) work too.
+    """
+    ok = np.isfinite(y)
+    x, v = t[ok], y[ok]
+    connect = np.ones(len(x), dtype=bool)
+    if len(x) > 1 and len(t) > 1:
+        spacing = (float(t[-1]) - float(t[0])) / (len(t) - 1)
+        connect[:-1] = np.diff(x) <= (bridge + 1) * spacing * 1.0001
+    return x, v, connect
 
 
 def axis_ranges(

@@ -41,14 +41,23 @@ class CursorReadout:
 
 
 def cursor_readout(t: np.ndarray, values: np.ndarray, t_a: float, t_b: float) -> CursorReadout:
-    """Linearly interpolated channel values at times ``t_a`` and ``t_b``."""
+    """Linearly interpolated channel values at times ``t_a`` and ``t_b`` (between the samples
+    that arrived; a channel without any gives NaN)."""
 
     def at(when: float) -> np.ndarray:
         if len(t) == 0 or not t[0] <= when <= t[-1]:
             return np.full(values.shape[1], math.nan)
-        return np.array([np.interp(when, t, values[:, c]) for c in range(values.shape[1])])
+        return np.array([_interp(when, t, values[:, c]) for c in range(values.shape[1])])
 
     return CursorReadout(t_a, t_b, at(t_a), at(t_b))
+
+
+def _interp(when: float, t: np.ndarray, y: np.ndarray) -> float:
+    """``y`` at ``when`` between the samples that arrived (NaN: lost, over CANopen)."""
+    ok = np.isfinite(y)
+    if ok.all():
+        return float(np.interp(when, t, y))
+    return float(np.interp(when, t[ok], y[ok])) if ok.any() else math.nan
 
 
 # --- step response ---------------------------------------------------------------------------
@@ -71,6 +80,8 @@ class Verdict(StrEnum):
     NO_STEP = "no step"  # nothing stepped in the window
     NO_RESPONSE = "no response"  # the reference stepped, the response stayed within its noise
     TOO_SHORT = "too short"  # the window cuts the response before it came to rest
+    NO_DATA = "no data"  # the response has no sample in the window (all lost or not reported)
+    NO_REFERENCE = "no reference data"  # the reference channel has no sample in the window
 
 
 @dataclass(frozen=True)
@@ -230,6 +241,16 @@ def _measure(
     comparable: bool,
     strict: bool,
 ) -> StepMeasurement:
+    if len(y) and not np.isfinite(y).any():
+        return StepMeasurement(Verdict.NO_DATA)
+    if reference is not None and len(reference) and not np.isfinite(reference).any():
+        return StepMeasurement(Verdict.NO_REFERENCE)
+    # lost samples (NaN, a link that places samples by time) are left out: the others keep
+    # their times, so the figures are those of the samples that arrived
+    keep = np.isfinite(y) if reference is None else np.isfinite(y) & np.isfinite(reference)
+    if not keep.all():
+        t, y = t[keep], y[keep]
+        reference = reference[keep] if reference is not None else None
     if len(y) < MIN_AFTER:
         return StepMeasurement(Verdict.NO_STEP)
     if reference is None:

@@ -36,6 +36,7 @@ if TYPE_CHECKING:
 
 DEADLINE_MS = 500  # RPDO1 reception deadline while the generator runs (the override's watchdog)
 SETPOINT_OBJECTS = {0x6300: "POSSETP", 0x6380: "PRCSETP"}  # RPDO1 entry 2 (table 7-13)
+DEMAND_KEYS = {"POSSETP": "position_setpoint", "PRCSETP": "process_setpoint"}  # scope channels
 ASYNCHRONOUS = (254, 255)
 _NOT_OPERATIONAL = QT_TRANSLATE_NOOP(
     "Errors",
@@ -122,6 +123,7 @@ class RpdoSetpoint(SetpointLink):
         CATALOGUE[self._object].check_raw(raw)
         self._last = raw
         self._send(raw)
+        self._session.sent_setpoint = (DEMAND_KEYS[self._object], float(raw))
 
     def keep_alive(self) -> None:
         """The last frame again (keeps the reception deadline)."""
@@ -129,6 +131,7 @@ class RpdoSetpoint(SetpointLink):
 
     def end(self) -> None:
         """The setpoint the valve had before, and the event timer as it was."""
+        self._session.sent_setpoint = None  # from now on the valve's own (or its PLC's)
         self._send(self._before)
         if self._timer_before is not None:
             self.writing = "RPDO1TIMER"

@@ -2,10 +2,13 @@
 
 A measuring point with an object in the valve's dictionary (actual position 0x6301, process
 actual value 0x6381, supply 0x2003, temperature 0x2002) is read each
-period; the others have no object on a real valve and give NaN (shown as no data, never a
-made-up curve). A period whose reads did not finish in time is counted as lost samples, so
-the scope's "lost" figure and the real sample rate (:attr:`SdoSampler.achieved_hz`) say how
-much the bus delivered; nothing is interpolated.
+period; the demand value (``position_setpoint``/``process_setpoint``) is the setpoint this tool
+sends in RPDO1 while it drives the valve (``demand``; the valve does not report its own); the
+others have no object on a real valve and give NaN (shown as no data, never a made-up curve).
+The stream has one row per period: a period whose reads did not finish in time is a NaN row
+at its time and counts as lost, so the time axis stays true and the scope's "lost" figure and
+the real sample rate (:attr:`SdoSampler.achieved_hz`) say how much the bus delivered; nothing
+is interpolated.
 """
 
 from __future__ import annotations
@@ -50,12 +53,16 @@ SIGNAL_OBJECTS = {
 }
 
 Reader = Callable[[int, int], bytes]
+Demand = Callable[[str], float]  # measuring-point key -> the setpoint this tool sends (NaN: none)
+DEMAND_KEYS = ("position_setpoint", "process_setpoint")
 
 
 class SdoSampler:
     """Samples up to three measuring points at ``rate_hz`` by SDO until stopped."""
 
-    def __init__(self, read: Reader, keys: Sequence[str], rate_hz: float) -> None:
+    def __init__(
+        self, read: Reader, keys: Sequence[str], rate_hz: float, demand: Demand | None = None
+    ) -> None:
         if not 1 <= len(keys) <= MAX_CHANNELS:
             raise ValueRangeError(f"stream 1 to {MAX_CHANNELS} measuring points, not {len(keys)}")
         if rate_hz <= 0:
@@ -66,6 +73,7 @@ class SdoSampler:
         self.samples = 0
         self.error: Prm9Error | None = None
         self._read = read
+        self._demand = demand
         self._rows: list[list[float]] = []
         self._lock = threading.Lock()
         self._stop = threading.Event()
@@ -110,11 +118,13 @@ class SdoSampler:
                 missed = int(behind / self.period_s) + 1
                 self.lost += missed
                 due += missed * self.period_s
+                with self._lock:  # gaps at their time, so the time axis stays true
+                    self._rows.extend([[float("nan")] * len(self.keys)] * missed)
             self._stop.wait(max(due - time.monotonic(), 0.0))
 
     def _sample(self, key: str) -> float:
         obj = SIGNAL_OBJECTS.get(key)
         if obj is None:
-            return float("nan")
+            return self._demand(key) if key in DEMAND_KEYS and self._demand else float("nan")
         data = self._read(obj.index, obj.subindex)
         return int.from_bytes(data, "little", signed=obj.signed) * obj.factor

@@ -106,6 +106,9 @@ class CanopenSession(UploadSteps, ValveSession):
         self._known: dict[str, Value] = {}  # the valve's working values as last read/written
         self._sampler: SdoSampler | PdoSampler | None = None
         self.stream_source = ""  # "pdo" or "sdo" while a stream runs
+        # the setpoint this tool sends in RPDO1 now (measuring-point key, raw), None when it
+        # does not drive the valve: the oscilloscope's demand channel over CAN
+        self.sent_setpoint: tuple[str, float] | None = None
         self._lost_before = 0
         try:
             self._sdo = self._open_node(timeout_s)
@@ -162,6 +165,7 @@ class CanopenSession(UploadSteps, ValveSession):
             can_bus=(bus.interface, bus.channel, bus.bitrate),
             # the SYNC + TPDO1 pace (docs/can-link.md)
             stream_rate_limit_hz=1.0 / min_period_s(bus.bitrate),
+            stream_gaps=True,  # both samplers place samples by time (NaN rows for lost ones)
         )
 
     def upload(
@@ -334,6 +338,15 @@ class CanopenSession(UploadSteps, ValveSession):
                 f"node {self.node_id}: the CAN bus refused to send 0x{cob_id:03X} ({exc})"
             ) from None
 
+    def listen(self, cob_id: int, callback: Callable[[int, bytearray, float], None]) -> None:
+        """Call ``callback(can_id, data, timestamp)`` for each frame with ``cob_id`` (a PDO),
+        from the bus's receive thread, until :meth:`unlisten`."""
+        self._shared.network.subscribe(cob_id, callback)
+
+    def unlisten(self, cob_id: int, callback: Callable[[int, bytearray, float], None]) -> None:
+        """Stop calling ``callback`` for ``cob_id``."""
+        self._shared.network.unsubscribe(cob_id, callback)
+
     def nmt(self, command: int) -> None:
         """Send an NMT command (:class:`~prm9tool.catalogue.commissioning.NmtCommand`) to this
         node on the bus (no answer comes; the heartbeat shows the new state)."""
@@ -346,11 +359,17 @@ class CanopenSession(UploadSteps, ValveSession):
         counts as lost; :attr:`stream_source` says which)."""
         self._stop_sampler()
         try:
-            self._sampler = PdoSampler(self._shared, self._sdo, keys, rate_hz)
+            self._sampler = PdoSampler(self._shared, self._sdo, keys, rate_hz, self._demand)
             self.stream_source = "pdo"
         except NotPdoMappedError:
-            self._sampler = SdoSampler(self._sdo.upload, keys, rate_hz)
+            self._sampler = SdoSampler(self._sdo.upload, keys, rate_hz, self._demand)
             self.stream_source = "sdo"
+
+    def _demand(self, key: str) -> float:
+        """The setpoint this tool sends now as measuring point ``key`` (NaN: it sends none,
+        or another one): the valve reports no demand value over CANopen."""
+        sent = self.sent_setpoint
+        return sent[1] if sent is not None and sent[0] == key else float("nan")
 
     def stream_read(self) -> np.ndarray:
         """Samples taken since the last call: shape (n, len(keys)), raw values."""

@@ -29,6 +29,7 @@ from prm9tool.views.scope.plot import ScopePlot
 from prm9tool.views.scope.readout import CursorPanel, StepPanel
 
 FIGURES_EVERY = 8  # live step figures every 8th redraw (~4 Hz)
+LEGEND_LOOKBACK = 100  # the legend shows a channel's newest sample among the last 100
 EMPTY = (np.empty(0), np.empty((0, 0)))
 
 
@@ -127,9 +128,9 @@ class ScopeDisplay(QObject):
         held = self._frozen is not None and not force
         self._legend_ticks += 1
         if force or held != self._legend_held or self._legend_ticks % 4 == 1:
-            _, latest = capture.buffer.latest(1)
-            if len(latest):
-                self.plot.show_latest(latest[0], held, stopped)
+            _, recent = capture.buffer.latest(LEGEND_LOOKBACK)
+            if len(recent):
+                self.plot.show_latest(newest_arrived(recent), held, stopped)
                 self._legend_held = held
 
     # --- hold ------------------------------------------------------------------------------------
@@ -218,3 +219,12 @@ class ScopeDisplay(QObject):
         ref = values[inside, reference] if reference is not None else None
         same_unit = self.steps.units_match()
         return measure_step(t[inside], values[inside, response], ref, comparable=same_unit)
+
+
+def newest_arrived(rows: np.ndarray) -> np.ndarray:
+    """Per channel the newest sample of ``rows`` that arrived (NaN only when none did): a lost
+    sample over CANopen does not blank the legend."""
+    finite = np.isfinite(rows)
+    last = rows.shape[0] - 1 - np.argmax(finite[::-1], axis=0)
+    values = rows[last, np.arange(rows.shape[1])]
+    return np.where(finite.any(axis=0), values, np.nan)

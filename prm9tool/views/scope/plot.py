@@ -32,7 +32,7 @@ from PySide6.QtWidgets import (
 from prm9tool.catalogue.signals import MAX_CHANNELS
 from prm9tool.catalogue.signals import Signal as MeasuringPoint
 from prm9tool.i18n import text
-from prm9tool.scope import axis_ranges, peak_decimate
+from prm9tool.scope import axis_ranges, curve_points, peak_decimate
 from prm9tool.views.localized_axis import LocalizedAxis
 from prm9tool.views.scope.items import CursorLine, PlotGrid
 from prm9tool.views.scope.legend import COLOURS, LegendEntry
@@ -232,15 +232,21 @@ class ScopePlot(QWidget):
         width = max(100, int(self.views[0].width()))
         t, values = peak_decimate(t, values, 2 * width)
         for slot in range(self._channels):
-            self.curves[slot].setData(t, values[:, slot])
+            self._set_curve(slot, t, values[:, slot])
         self._rescale()
 
     def show_all(self, t: np.ndarray, values: np.ndarray) -> None:
         """Draw a held recording: pyqtgraph clips and decimates to whatever the user zooms to."""
         self._set_clipping(True)
         for slot in range(self._channels):
-            self.curves[slot].setData(t, values[:, slot])
+            self._set_curve(slot, t, values[:, slot])
         self._rescale(force=True)
+
+    def _set_curve(self, slot: int, t: np.ndarray, y: np.ndarray) -> None:
+        """The samples that arrived; a run of lost ones (NaN, over CANopen) longer than a few
+        samples is a gap in the line at its time (:func:`curve_points`)."""
+        x, v, connect = curve_points(t, y)
+        self.curves[slot].setData(x, v, connect="all" if connect.all() else connect)
 
     def _set_clipping(self, on: bool) -> None:
         if self._clipping != on:
@@ -263,8 +269,10 @@ class ScopePlot(QWidget):
         y = self.curves[slot].yData
         if y is None or not len(y):
             return None
-        lo, hi = float(np.nanmin(y)), float(np.nanmax(y))
-        return (lo, hi) if np.isfinite(lo) and np.isfinite(hi) else None
+        finite = y[np.isfinite(y)]  # a channel without data (NaN) has no bounds, no warning
+        if not len(finite):
+            return None
+        return float(finite.min()), float(finite.max())
 
     def show_latest(self, values: np.ndarray, held: bool = False, stopped: bool = False) -> None:
         """The newest values in the legend (one per channel, NaN when unknown); ``held``:

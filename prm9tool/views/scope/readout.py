@@ -246,6 +246,18 @@ class StepPanel(QWidget):
                 "Window too short: in {0} the response has not come to rest yet. "
                 "Widen the time window or move the cursors apart."
             ).format(region)
+        if measurement.verdict is Verdict.NO_REFERENCE:
+            return self.tr(
+                "No step found: the reference channel has no data in {0}. Over CANopen the "
+                "valve does not report its demand value; the channel shows the setpoint "
+                "prm9tool sends while its setpoint generator runs. Start the generator, or "
+                "choose “(none: step on the response)”."
+            ).format(region)
+        if measurement.verdict is Verdict.NO_DATA:
+            return self.tr(
+                "No step found: the response channel has no data in {0} (the link does not "
+                "deliver this measuring point, or lost every sample)."
+            ).format(region)
         if measurement.verdict is Verdict.NO_RESPONSE:
             return self.tr(
                 "No response to the step in {0}: the response stays flat or within its noise."

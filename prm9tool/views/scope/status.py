@@ -48,8 +48,12 @@ class ScopeStatusText(QObject):
         lost = self._connection.samples_lost
         if not lost:
             return self.tr("Recording at {0} Hz.").format(rate)
-        received = self._display.capture.buffer.total if self._display.capture else 0
-        real = rate * received / (received + lost)  # what the link really delivers
+        rows = self._display.capture.buffer.total if self._display.capture else 0
+        device = getattr(self._connection, "device", None)
+        if getattr(device, "stream_gaps", False):  # lost samples are NaN rows at their time
+            real = rate * max(rows - lost, 0) / rows if rows else 0.0
+        else:
+            real = rate * rows / (rows + lost)  # what the link really delivers
         return self.tr(
             "Recording at {0} Hz of the {1} Hz asked for: {2} samples lost on the link."
         ).format(format_significant(real, 3), rate, lost)

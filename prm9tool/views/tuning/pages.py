@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import math
 from typing import Any
 
 from PySide6.QtCore import QRectF
@@ -126,14 +127,27 @@ class BodePage(Page):
             "%2", f"{hi:g}").replace("%3", f"{a:g}").replace("%4", f"{c:g}").replace("%5", f"{d:g}")  # fmt: skip
         self.window_.start("bode", what, lambda rig: bode_test(rig, a, c, lo, hi, d, loop))
 
+    def _frequency(self, value: float, above: float) -> str:
+        """``29.3 Hz``, ``above 100 Hz`` (not reached by the sweep's end) or ``not reached``."""
+        if not math.isnan(value):
+            return f"{value:.1f} Hz"
+        if not math.isnan(above):
+            return self.tr("above %1 Hz").replace("%1", f"{above:g}")
+        return self.tr("not reached")
+
     def show_result(self, result: object) -> None:
         """Magnitude, phase, −3 dB and −90°."""
         assert isinstance(result, BodeResult)
         fake = Characterization(None, DEFAULT, "", {}, bode=result)  # type: ignore[arg-type]
         self.plot.show_plots(list(bode_plots(fake)))
         r = result.response
-        text = self.tr("−3 dB at %1 Hz, −90° at %2 Hz.").replace("%1", f"{r.bandwidth_hz():.1f}").replace(
-            "%2", f"{r.phase_90_hz():.1f}")  # fmt: skip
+        text = self.tr("−3 dB: %1, −90°: %2.").replace(
+            "%1", self._frequency(r.bandwidth_hz(), r.bandwidth_above_hz())).replace(
+            "%2", self._frequency(r.phase_90_hz(), r.phase_90_above_hz()))  # fmt: skip
+        if result.lost_samples:
+            text += " " + self.tr(
+                "%1 of %2 samples were lost on the link and left out of the estimate."
+            ).replace("%1", str(result.lost_samples)).replace("%2", str(len(result.record.t)))
         if result.limited_to_hz is not None:
             text += " " + self.tr(
                 "The link's sample rate limited the sweep to %1 Hz (nothing interpolated)."

@@ -87,6 +87,8 @@ def value_text(f: Figure) -> str:
     separator (``5,75 %`` in German and Czech)."""
     if math.isnan(f.value):  # what it saw instead, e.g. an oscillation at 80 Hz
         return translate("TuningReport", "not reached") if f.note is None else translated(f.note)
+    if f.above:  # not reached by the sweep's end
+        return translate("TuningReport", "above {0}").format(_local(f"{f.value:.3g} {f.unit}"))
     if f.unit == "s":
         return _local(f"{f.value * 1000:.1f} ms")
     return _local(f"{f.value:.3g} {f.unit}".strip())
