@@ -88,6 +88,21 @@ def test_the_oscilloscope_records_on_when_the_valve_is_back(qtbot, window):
     qtbot.waitUntil(lambda: scope.capture.buffer.total > before + 100, timeout=TIMEOUT)
 
 
+def test_a_recording_stopped_while_the_valve_is_away_stays_stopped(qtbot, window):
+    window.open_scope("position_actual")
+    scope = window.views["scope"]
+    scope.start()
+    qtbot.waitUntil(lambda: scope.capture is not None and scope.capture.buffer.total > 10,
+                    timeout=TIMEOUT)  # fmt: skip
+    pull_cable(qtbot, window)
+    scope.stop()  # the user's Stop while it is looked for
+    streams = []
+    window.connection.stream_started.connect(streams.append)
+    plug_back(qtbot, window)
+    qtbot.waitUntil(lambda: window.sync.active, timeout=TIMEOUT)
+    assert not scope.running and streams == []
+
+
 def test_live_values_flow_again(qtbot, window):
     pull_cable(qtbot, window)
     with qtbot.waitSignal(window.connection.live_values_changed, timeout=TIMEOUT):

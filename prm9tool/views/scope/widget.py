@@ -189,6 +189,7 @@ class ScopeWidget(QWidget):
 
     def stop(self) -> None:
         """Stop the generator and the recording; the display holds the recorded data."""
+        self._resume = False  # also a recording the valve's return would have resumed
         self.generator.stop()
         if self._running:
             self._running = False
