@@ -67,9 +67,13 @@ def scan(shared: CanNetwork, window_s: float = SCAN_WINDOW_S, limit: int = 127) 
     return [identify_node(shared, node_id) for node_id in sorted(heard) if 0 < node_id <= limit]
 
 
-def identify_node(shared: CanNetwork, node_id: int) -> NodeInfo:
-    """Who node ``node_id`` is (problem set when it is not a PRM9 or does not answer)."""
-    with sdo_channel(shared, node_id, IDENTIFY_TIMEOUT_S) as sdo:
+def identify_node(
+    shared: CanNetwork, node_id: int, timeout_s: float = IDENTIFY_TIMEOUT_S
+) -> NodeInfo:
+    """Who node ``node_id`` is (problem set when it is not a PRM9 or does not answer).
+    ``timeout_s``: per SDO answer — short while scanning a bus, the session's own when
+    opening a node the user chose."""
+    with sdo_channel(shared, node_id, timeout_s) as sdo:
         try:
             device_type = sdo.read_u32(0x1000, 0)
         except (CommunicationError, SdoAbortError) as exc:

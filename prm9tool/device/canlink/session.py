@@ -135,7 +135,7 @@ class CanopenSession(UploadSteps, ValveSession):
     # --- identity ---------------------------------------------------------------------------
     def identify(self) -> DeviceInfo:
         """Who the node is; NotAPrm9Error for another CANopen device (0x1000, 0x1018/1)."""
-        found = discovery.identify_node(self._shared, self.node_id)
+        found = discovery.identify_node(self._shared, self.node_id, SDO_TIMEOUT_S)
         if found.device_type is None:
             raise DeviceTimeoutError(f"node {self.node_id}: {found.problem}")
         if not found.is_prm9:
