@@ -17,18 +17,15 @@ from collections.abc import Callable
 from PySide6.QtCore import QCoreApplication, QSettings, Qt
 from PySide6.QtGui import QBrush, QPalette
 from PySide6.QtWidgets import (
-    QAbstractItemView,
     QComboBox,
     QDialog,
     QDialogButtonBox,
     QFormLayout,
     QHBoxLayout,
-    QHeaderView,
     QInputDialog,
     QLabel,
     QLineEdit,
     QPushButton,
-    QTableWidget,
     QTableWidgetItem,
     QVBoxLayout,
     QWidget,
@@ -46,6 +43,7 @@ from prm9tool.translate import error_text
 from prm9tool.views.can_bus_lss import BusLssActions
 from prm9tool.views.can_lss_panel import LssPanel
 from prm9tool.views.help_dialog import add_context_help
+from prm9tool.views.row_table import row_table
 
 INTERFACE_KEY, CHANNEL_KEY, BITRATE_KEY = "can/interface", "can/channel", "can/bitrate"
 INTERFACES = (
@@ -120,8 +118,7 @@ class CanBusDialog(QDialog):
         self.search.clicked.connect(self._on_search_clicked)
         self.state = QLabel(self.tr("Search the bus to list its nodes."))
         self.state.setWordWrap(True)
-        self.table = QTableWidget(0, 8)
-        self.table.setHorizontalHeaderLabels(
+        self.table = row_table(
             [
                 self.tr("Node"),
                 self.tr("Type key"),
@@ -133,12 +130,6 @@ class CanBusDialog(QDialog):
                 self.tr("Description"),
             ]
         )
-        self.table.verticalHeader().hide()
-        self.table.setSelectionBehavior(QAbstractItemView.SelectionBehavior.SelectRows)
-        self.table.setSelectionMode(QAbstractItemView.SelectionMode.SingleSelection)
-        self.table.setEditTriggers(QAbstractItemView.EditTrigger.NoEditTriggers)
-        self.table.horizontalHeader().setSectionResizeMode(QHeaderView.ResizeMode.ResizeToContents)
-        self.table.horizontalHeader().setStretchLastSection(True)
         self.table.itemSelectionChanged.connect(self.update_ok)
         self.table.doubleClicked.connect(lambda _i: self._accept_if_valve())
         self.buttons = QDialogButtonBox(

@@ -15,13 +15,10 @@ from typing import TYPE_CHECKING
 
 from PySide6.QtCore import Signal
 from PySide6.QtWidgets import (
-    QAbstractItemView,
     QHBoxLayout,
-    QHeaderView,
     QInputDialog,
     QLabel,
     QPushButton,
-    QTableWidget,
     QTableWidgetItem,
     QVBoxLayout,
     QWidget,
@@ -33,6 +30,7 @@ from prm9tool.online.lss_commissioning import (
     LssCommissioning,
     LssDevice,
 )
+from prm9tool.views.row_table import row_table
 
 if TYPE_CHECKING:
     pass
@@ -60,8 +58,7 @@ class LssPanel(QWidget):
         lss.assigned_all.connect(self._on_assigned_all)
         lss.failed.connect(self._on_failed)
         title = QLabel(self.tr("Devices without a node ID (node-ID switch at 1: LSS)"))
-        self.table = QTableWidget(0, 5)
-        self.table.setHorizontalHeaderLabels(
+        self.table = row_table(
             [
                 self.tr("Serial"),
                 self.tr("Device"),
@@ -70,12 +67,6 @@ class LssPanel(QWidget):
                 self.tr("Revision"),
             ]
         )
-        self.table.verticalHeader().hide()
-        self.table.setSelectionBehavior(QAbstractItemView.SelectionBehavior.SelectRows)
-        self.table.setSelectionMode(QAbstractItemView.SelectionMode.SingleSelection)
-        self.table.setEditTriggers(QAbstractItemView.EditTrigger.NoEditTriggers)
-        self.table.horizontalHeader().setSectionResizeMode(QHeaderView.ResizeMode.ResizeToContents)
-        self.table.horizontalHeader().setStretchLastSection(True)
         self.table.setMaximumHeight(170)
         self.table.itemSelectionChanged.connect(self._update_buttons)
         self.look = QPushButton(self.tr("Look for devices without a node ID"))
