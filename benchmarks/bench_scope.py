@@ -42,6 +42,9 @@ KEYS = ("setpoint_raw", "position_actual", "current_a")
 RATE_HZ = 5000
 SIZE = (1400, 850)
 MIN_RECEIVED = 0.99  # of rate x wall time: less means the stream stalled or dropped blocks
+# What is still on its way when the run stops (the link's 10 ms blocks, the worker's hand-over to
+# the GUI thread, one 30 Hz frame): not a loss. In a 1 s smoke run it is ~3 % of the stream.
+IN_FLIGHT_S = 0.05
 
 
 class FrameTimer:
@@ -271,10 +274,12 @@ def main() -> None:
     failures = []
     if result["lost"] != 0:
         failures.append(f"{result['lost']} samples lost (gaps in the session's sequence)")
-    if result["received"] < MIN_RECEIVED * expected:  # gaps are not the only way to lose data
+    least = MIN_RECEIVED * expected - IN_FLIGHT_S * RATE_HZ
+    if result["received"] < least:  # gaps are not the only way to lose data
         failures.append(
             f"received {result['received']} samples, under {MIN_RECEIVED:.0%} of the "
-            f"{expected:.0f} the stream should have carried"
+            f"{expected:.0f} the stream should have carried (less {IN_FLIGHT_S * 1000:.0f} ms "
+            "still in flight)"
         )
     if failures:
         sys.exit("FAIL: " + "; ".join(failures))
