@@ -266,6 +266,11 @@ SIGNAL_OBJECTS: dict[str, tuple[str, float]] = {
     "temperature": ("TEMP", 10.0),  # °C -> 0.1 °C
 }
 
+# Measuring points that are the setpoint a CANopen master writes (RPDO1 entry 2, manual table
+# 7-13: 0x6300 in control mode 2, 0x6380 in mode 4): key -> the object's mnemonic. TPDO1 does
+# not carry them back; over CANopen the scope shows the setpoint the tool itself sends.
+SETPOINT_SIGNALS: dict[str, str] = {"position_setpoint": "POSSETP", "process_setpoint": "PRCSETP"}
+
 
 def signal_object(key: str) -> tuple[Parameter, float] | None:
     """The catalogue parameter of the object that holds measuring point ``key`` (its address

@@ -20,7 +20,7 @@ from collections.abc import Callable, Sequence
 
 import numpy as np
 
-from prm9tool.catalogue.signals import signal_object
+from prm9tool.catalogue.signals import SETPOINT_SIGNALS, signal_object
 from prm9tool.errors import Prm9Error, ValueRangeError
 
 log = logging.getLogger(__name__)
@@ -29,7 +29,7 @@ MAX_CHANNELS = 3
 
 Reader = Callable[[int, int], bytes]
 Demand = Callable[[str], float]  # measuring-point key -> the setpoint this tool sends (NaN: none)
-DEMAND_KEYS = ("position_setpoint", "process_setpoint")
+DEMAND_KEYS = tuple(SETPOINT_SIGNALS)  # the setpoint the tool sends in RPDO1 (not read back)
 
 
 class SdoSampler:
