@@ -11,6 +11,7 @@ from typing import TYPE_CHECKING
 import numpy as np
 
 from prm9tool.catalogue import CATALOGUE, LOAD_SIGNATURE, SAVE_SIGNATURE
+from prm9tool.catalogue.error_kinds import WARNING_TEXT
 from prm9tool.catalogue.signals import BY_KEY
 from prm9tool.catalogue.typekey import TypeKey
 from prm9tool.catalogue.variant import Variant
@@ -23,13 +24,12 @@ from prm9tool.device.emulator.constants import (
     FirmwareConstants,
     PlantConstants,
 )
-from prm9tool.device.emulator.faults import WARNING_TEXT
 from prm9tool.device.emulator.firmware import Firmware
-from prm9tool.device.emulator.leds import leds
 from prm9tool.device.emulator.override import OverrideProgram, Source
 from prm9tool.device.emulator.pacing import Pacer
 from prm9tool.device.emulator.states import Fault
 from prm9tool.device.emulator.valve_canopen import CanopenSide
+from prm9tool.device.leds import leds
 from prm9tool.device.records import DeviceState, ValveStatus
 from prm9tool.errors import AccessDeniedError, ValueRangeError
 
