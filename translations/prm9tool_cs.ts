@@ -3624,11 +3624,11 @@ Ano načte a záznam zařadí do fronty; Ne nenačte nic.</translation>
             <translation>Ventil pracuje s hodnotami změněnými online od načtení do ventilu, které neuložil: restart by je ztratil. Nejprve je uložte (Ventil → Uložit do paměti ventilu), pak ověřte. Ventil nebyl restartován.</translation>
         </message>
         <message numerus="yes">
-            <source>The last upload wrote %n parameter(s) ({0}). The valve is restarted, then its parameters are read back and compared with the document: this shows that it keeps them through a restart, as after a power loss.</source>
+            <source>The last upload wrote %n parameter(s): {0}. The valve is restarted, then its parameters are read back and compared with the document: this shows that it keeps them through a restart, as after a power loss.</source>
             <translation>
-                <numerusform>Poslední načtení do ventilu zapsalo %n parametr ({0}). Ventil se restartuje, pak se jeho parametry zpětně načtou a porovnají s dokumentem: to ukáže, že si je ponechá i po restartu, jako po výpadku napájení.</numerusform>
-                <numerusform>Poslední načtení do ventilu zapsalo %n parametry ({0}). Ventil se restartuje, pak se jeho parametry zpětně načtou a porovnají s dokumentem: to ukáže, že si je ponechá i po restartu, jako po výpadku napájení.</numerusform>
-                <numerusform>Poslední načtení do ventilu zapsalo %n parametrů ({0}). Ventil se restartuje, pak se jeho parametry zpětně načtou a porovnají s dokumentem: to ukáže, že si je ponechá i po restartu, jako po výpadku napájení.</numerusform>
+                <numerusform>Poslední načtení do ventilu zapsalo %n parametr: {0}. Ventil se restartuje, pak se jeho parametry zpětně načtou a porovnají s dokumentem: to ukáže, že si je ponechá i po restartu, jako po výpadku napájení.</numerusform>
+                <numerusform>Poslední načtení do ventilu zapsalo %n parametry: {0}. Ventil se restartuje, pak se jeho parametry zpětně načtou a porovnají s dokumentem: to ukáže, že si je ponechá i po restartu, jako po výpadku napájení.</numerusform>
+                <numerusform>Poslední načtení do ventilu zapsalo %n parametrů: {0}. Ventil se restartuje, pak se jeho parametry zpětně načtou a porovnají s dokumentem: to ukáže, že si je ponechá i po restartu, jako po výpadku napájení.</numerusform>
             </translation>
         </message>
         <message>

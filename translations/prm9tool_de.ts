@@ -3605,10 +3605,10 @@ Ja lädt hoch und stellt den Eintrag in die Warteschlange; Nein lädt nichts hoc
             <translation>Das Ventil arbeitet mit seit dem Hochladen online geänderten Werten, die es nicht gespeichert hat: Ein Neustart würde sie verlieren. Speichern Sie sie zuerst (Ventil → Im Ventil speichern) und prüfen Sie dann. Das Ventil wurde nicht neu gestartet.</translation>
         </message>
         <message numerus="yes">
-            <source>The last upload wrote %n parameter(s) ({0}). The valve is restarted, then its parameters are read back and compared with the document: this shows that it keeps them through a restart, as after a power loss.</source>
+            <source>The last upload wrote %n parameter(s): {0}. The valve is restarted, then its parameters are read back and compared with the document: this shows that it keeps them through a restart, as after a power loss.</source>
             <translation>
-                <numerusform>Das letzte Hochladen schrieb %n Parameter ({0}). Das Ventil wird neu gestartet, dann werden seine Parameter zurückgelesen und mit dem Dokument verglichen: Das zeigt, dass es sie über einen Neustart behält, wie nach einem Stromausfall.</numerusform>
-                <numerusform>Das letzte Hochladen schrieb %n Parameter ({0}). Das Ventil wird neu gestartet, dann werden seine Parameter zurückgelesen und mit dem Dokument verglichen: Das zeigt, dass es sie über einen Neustart behält, wie nach einem Stromausfall.</numerusform>
+                <numerusform>Das letzte Hochladen schrieb %n Parameter: {0}. Das Ventil wird neu gestartet, dann werden seine Parameter zurückgelesen und mit dem Dokument verglichen: Das zeigt, dass es sie über einen Neustart behält, wie nach einem Stromausfall.</numerusform>
+                <numerusform>Das letzte Hochladen schrieb %n Parameter: {0}. Das Ventil wird neu gestartet, dann werden seine Parameter zurückgelesen und mit dem Dokument verglichen: Das zeigt, dass es sie über einen Neustart behält, wie nach einem Stromausfall.</numerusform>
             </translation>
         </message>
         <message>

@@ -164,10 +164,10 @@
     <context>
         <name>RestartVerifier</name>
         <message numerus="yes">
-            <source>The last upload wrote %n parameter(s) ({0}). The valve is restarted, then its parameters are read back and compared with the document: this shows that it keeps them through a restart, as after a power loss.</source>
+            <source>The last upload wrote %n parameter(s): {0}. The valve is restarted, then its parameters are read back and compared with the document: this shows that it keeps them through a restart, as after a power loss.</source>
             <translation>
-                <numerusform>The last upload wrote %n parameter ({0}). The valve is restarted, then its parameters are read back and compared with the document: this shows that it keeps them through a restart, as after a power loss.</numerusform>
-                <numerusform>The last upload wrote %n parameters ({0}). The valve is restarted, then its parameters are read back and compared with the document: this shows that it keeps them through a restart, as after a power loss.</numerusform>
+                <numerusform>The last upload wrote %n parameter: {0}. The valve is restarted, then its parameters are read back and compared with the document: this shows that it keeps them through a restart, as after a power loss.</numerusform>
+                <numerusform>The last upload wrote %n parameters: {0}. The valve is restarted, then its parameters are read back and compared with the document: this shows that it keeps them through a restart, as after a power loss.</numerusform>
             </translation>
         </message>
         <message numerus="yes">

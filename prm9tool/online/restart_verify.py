@@ -18,7 +18,7 @@ from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field
 from typing import TYPE_CHECKING
 
-from prm9tool.catalogue.manual_od import VERIFIED_RESTART
+from prm9tool.catalogue.manual_od import NOT_KEPT_AFTER_RESTART, VERIFIED_RESTART
 from prm9tool.errors import CommunicationError
 
 if TYPE_CHECKING:
@@ -28,11 +28,6 @@ if TYPE_CHECKING:
 Raw = int | str
 Progress = Callable[[int, int, str], None]
 OPERATION = "restart-verify"  # its history operation (docs/history.md)
-# the history's and the report's text when the valve did not keep the values (as --batch says)
-NOT_KEPT = (
-    "after a restart (NMT reset node) the valve reads back values other than the upload's: "
-    "it did not keep them"
-)
 
 
 @dataclass(frozen=True)
@@ -82,7 +77,7 @@ def verify_by_restart(
     if history is not None:
         details |= {"store": store, "checked": len(compared)}
         if mismatches:
-            details |= {"error": NOT_KEPT, "mismatches": {
+            details |= {"error": NOT_KEPT_AFTER_RESTART, "mismatches": {
                 m: [str(want), str(got)] for m, (want, got) in mismatches.items()}}  # fmt: skip
         outcome = "verification-failed" if mismatches else "ok"
         history.add(session, OPERATION, outcome, values, details, "verify" if mismatches else None)

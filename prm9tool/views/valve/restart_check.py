@@ -74,7 +74,7 @@ class RestartVerifier(QObject):
                 "then verify. The valve was not restarted."))  # fmt: skip
             return False
         intro = self.tr(
-            "The last upload wrote %n parameter(s) ({0}). The valve is restarted, then its "
+            "The last upload wrote %n parameter(s): {0}. The valve is restarted, then its "
             "parameters are read back and compared with the document: this shows that it "
             "keeps them through a restart, as after a power loss.",
             "",
