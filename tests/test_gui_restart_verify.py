@@ -113,7 +113,14 @@ def test_the_upload_is_verified_after_a_restart(qtbot, can_window, store, monkey
     upload(qtbot, win)
     assert win.status.currentMessage().endswith(f"({store})")
     hydraulics = Hydraulics(monkeypatch)
-    result = finish(qtbot, win, "verify_restart", win.commands["verify_restart"].trigger)
+
+    def start() -> None:
+        win.commands["verify_restart"].trigger()
+        assert win.connection.is_busy  # the GUI thread goes on: the worker restarts the valve
+        assert win.valve.progress.dialog.objectName() == "progress_verify_restart"
+
+    result = finish(qtbot, win, "verify_restart", start)
+    assert win.valve.progress.dialog is None  # closed with the result
     (title, box), = hydraulics.shown  # fmt: skip
     assert (title, box) == ("Verify by restart", "The hydraulics are disconnected")
     assert result.verified and result.store == VERIFIED_RESTART
@@ -190,6 +197,7 @@ def test_a_valve_that_does_not_come_back_says_what_it_holds(
         f"now.\nAs far as known, the valve holds the values of the last upload ({KEPT_AS_WRITTEN})"
     )
     assert "Nothing was lost on the PC side: the document still holds every value" in shown
+    assert "then go online again: prm9tool compares the valve with the document." in shown
     assert {m: win.doc.values[m] for m in CHANGED} == CHANGED  # nothing lost on the PC
     assert {m: rig.stored_set().get(m) for m in CHANGED} == CHANGED  # and the valve kept it
     last = history(rig.valve.serial)[-1]

@@ -3668,12 +3668,20 @@ Ano načte a záznam zařadí do fronty; Ne nenačte nic.</translation>
             <translation>Ventil se po restartu znovu neozval</translation>
         </message>
         <message>
+            <source>Check the valve's supply and cable, then go online again: prm9tool compares the valve with the document.</source>
+            <translation>Zkontrolujte napájení a kabel ventilu a pak znovu přejděte do režimu online: prm9tool porovná ventil s dokumentem.</translation>
+        </message>
+        <message>
+            <source>prm9tool looks for the valve; when it is back, prm9tool compares it with the document and you decide what to do.</source>
+            <translation>prm9tool ventil hledá; až bude zpět, prm9tool ho porovná s dokumentem a vy rozhodnete, co dál.</translation>
+        </message>
+        <message>
             <source>The valve did not come back after the restart; prm9tool is offline now.
 As far as known, the valve holds the values of the last upload ({0}): every one read back correctly before the restart, but whether it kept them through the restart could not be read.
-Nothing was lost on the PC side: the document still holds every value, the backup and the history are unchanged. Check the valve's supply and cable, then go online again: prm9tool compares the valve with the document.</source>
+Nothing was lost on the PC side: the document still holds every value, the backup and the history are unchanged. {1}</source>
             <translation>Ventil se po restartu znovu neozval; prm9tool je nyní offline.
 Pokud je známo, ventil obsahuje naposledy načtené hodnoty ({0}): každá se před restartem zpětně načetla správně, zda si je ale ponechal i po restartu, se načíst nepodařilo.
-Na straně PC se nic neztratilo: dokument dál obsahuje každou hodnotu, záloha a historie jsou beze změny. Zkontrolujte napájení a kabel ventilu a pak znovu přejděte do režimu online: prm9tool porovná ventil s dokumentem.</translation>
+Na straně PC se nic neztratilo: dokument dál obsahuje každou hodnotu, záloha a historie jsou beze změny. {1}</translation>
         </message>
     </context>
     <context>

@@ -3646,12 +3646,20 @@ Ja lädt hoch und stellt den Eintrag in die Warteschlange; Nein lädt nichts hoc
             <translation>Das Ventil hat sich nach dem Neustart nicht wieder gemeldet</translation>
         </message>
         <message>
+            <source>Check the valve's supply and cable, then go online again: prm9tool compares the valve with the document.</source>
+            <translation>Prüfen Sie Versorgung und Kabel des Ventils und gehen Sie dann wieder online: prm9tool vergleicht das Ventil mit dem Dokument.</translation>
+        </message>
+        <message>
+            <source>prm9tool looks for the valve; when it is back, prm9tool compares it with the document and you decide what to do.</source>
+            <translation>prm9tool sucht das Ventil; wenn es wieder da ist, vergleicht prm9tool es mit dem Dokument, und Sie entscheiden, was geschieht.</translation>
+        </message>
+        <message>
             <source>The valve did not come back after the restart; prm9tool is offline now.
 As far as known, the valve holds the values of the last upload ({0}): every one read back correctly before the restart, but whether it kept them through the restart could not be read.
-Nothing was lost on the PC side: the document still holds every value, the backup and the history are unchanged. Check the valve's supply and cable, then go online again: prm9tool compares the valve with the document.</source>
+Nothing was lost on the PC side: the document still holds every value, the backup and the history are unchanged. {1}</source>
             <translation>Das Ventil hat sich nach dem Neustart nicht wieder gemeldet; prm9tool ist jetzt offline.
 Soweit bekannt, hält das Ventil die zuletzt hochgeladenen Werte ({0}): Jeder wurde vor dem Neustart richtig zurückgelesen, ob es sie über den Neustart behalten hat, ließ sich aber nicht lesen.
-Auf dem PC ging nichts verloren: Das Dokument enthält weiterhin jeden Wert, Sicherung und Verlauf sind unverändert. Prüfen Sie Versorgung und Kabel des Ventils und gehen Sie dann wieder online: prm9tool vergleicht das Ventil mit dem Dokument.</translation>
+Auf dem PC ging nichts verloren: Das Dokument enthält weiterhin jeden Wert, Sicherung und Verlauf sind unverändert. {1}</translation>
         </message>
     </context>
     <context>

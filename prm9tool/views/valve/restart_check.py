@@ -145,20 +145,25 @@ class RestartVerifier(QObject):
         if upload is None:
             return False
         self._post(self.tr("The valve did not come back after the restart"))
+        then = self.tr(
+            "Check the valve's supply and cable, then go online again: prm9tool compares the "
+            "valve with the document."
+        )
+        if self._connection.is_reconnecting:
+            then = self.tr(
+                "prm9tool looks for the valve; when it is back, prm9tool compares it with the "
+                "document and you decide what to do."
+            )
+        text = self.tr(
+            "The valve did not come back after the restart; prm9tool is offline now.\n"
+            "As far as known, the valve holds the values of the last upload ({0}): every "
+            "one read back correctly before the restart, but whether it kept them through "
+            "the restart could not be read.\n"
+            "Nothing was lost on the PC side: the document still holds every value, the "
+            "backup and the history are unchanged. {1}"
+        ).format(self._how(upload), then)
         prompts.inform(
-            self._window,
-            prompts.Icon.Critical,
-            self.tr("Verify by restart"),
-            self.tr(
-                "The valve did not come back after the restart; prm9tool is offline now.\n"
-                "As far as known, the valve holds the values of the last upload ({0}): every "
-                "one read back correctly before the restart, but whether it kept them through "
-                "the restart could not be read.\n"
-                "Nothing was lost on the PC side: the document still holds every value, the "
-                "backup and the history are unchanged. Check the valve's supply and cable, "
-                "then go online again: prm9tool compares the valve with the document."
-            ).format(self._how(upload)),
-            message,
+            self._window, prompts.Icon.Critical, self.tr("Verify by restart"), text, message
         )
         return True
 
