@@ -35,6 +35,7 @@ class UploadSteps:
     """The CANopen session's upload hooks (ValveSession's ``_before_upload`` … ``reload``)."""
 
     _snapshot: dict[str, Value] | None
+    _stored_backup: dict[str, Value] | None
     _touched: list[str]
     _known: dict[str, Value]
     _shared: CanNetwork
@@ -151,6 +152,8 @@ class UploadSteps:
         actual = self._read_entries(params, None, None)
         changed = differences([p for p in params if p.mnemonic in actual], values, actual)
         if changed:
+            if self._kept:  # each write is durable: the backup goes back as after any failure
+                self._snapshot = self._stored_backup
             return changed, NOT_KEPT_AFTER_RESTART
         self.store_done = VERIFIED_RESTART
         return None
