@@ -182,10 +182,12 @@ def test_values_not_kept_through_the_restart_are_listed_and_recorded(
     assert "it did not keep them" in details["error"]
 
 
+@pytest.mark.parametrize("reconnect", [False, True])
 def test_a_valve_that_does_not_come_back_says_what_it_holds(
-    qtbot, can_window, monkeypatch, answers
+    qtbot, can_window, monkeypatch, answers, reconnect
 ):
     win, rig = can_window
+    win.connection.auto_reconnect = reconnect  # the program's default: it looks for the valve
     upload(qtbot, win)
     Hydraulics(monkeypatch)
     rig.go_silent_after(0)  # it restarts (boot-up) but answers no request any more
@@ -197,7 +199,13 @@ def test_a_valve_that_does_not_come_back_says_what_it_holds(
         f"now.\nAs far as known, the valve holds the values of the last upload ({KEPT_AS_WRITTEN})"
     )
     assert "Nothing was lost on the PC side: the document still holds every value" in shown
-    assert "then go online again: prm9tool compares the valve with the document." in shown
+    then = (
+        "prm9tool looks for the valve; when it is back, prm9tool compares it with the document "
+        "and you decide what to do."
+        if reconnect
+        else "then go online again: prm9tool compares the valve with the document."
+    )
+    assert then in shown
     assert {m: win.doc.values[m] for m in CHANGED} == CHANGED  # nothing lost on the PC
     assert {m: rig.stored_set().get(m) for m in CHANGED} == CHANGED  # and the valve kept it
     last = history(rig.valve.serial)[-1]
