@@ -4857,6 +4857,10 @@ Zajistěte, aby to hydraulika bezpečně snesla. Tlačítko Stop test kdykoli uk
             </translation>
         </message>
         <message>
+            <source>; Valve → Verify by restart… checks that it keeps them</source>
+            <translation>; Ventil → Ověřit restartem… ověří, že si je ponechá</translation>
+        </message>
+        <message>
             <source>stored with 0x1010</source>
             <translation>uloženo pomocí 0x1010</translation>
         </message>

@@ -4832,6 +4832,10 @@ Stellen Sie sicher, dass die Hydraulik dafür sicher ist. Stopp beendet ihn jede
             </translation>
         </message>
         <message>
+            <source>; Valve → Verify by restart… checks that it keeps them</source>
+            <translation>; Ventil → Durch Neustart prüfen… prüft, ob es sie behält</translation>
+        </message>
+        <message>
             <source>stored with 0x1010</source>
             <translation>mit 0x1010 gespeichert</translation>
         </message>

@@ -191,7 +191,10 @@ class ValveUpload(QObject):
                 count,
             )
         how = self._store_texts().get(store or "")
-        self._post(message.format(at) + (f" ({how})" if how else ""))
+        hint = ""
+        if store == KEPT_AS_WRITTEN:  # no store command: a restart shows that it really keeps them
+            hint = self.tr("; Valve → Verify by restart… checks that it keeps them")
+        self._post(message.format(at) + (f" ({how})" if how else "") + hint)
 
     def store_text(self, store: str | None) -> str:
         """How the valve kept the set, in the program language ("" when not over CANopen)."""
