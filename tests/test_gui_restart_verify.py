@@ -257,3 +257,10 @@ def test_the_history_window_says_which_store_happened(qtbot):
         assert model.meaning(record) == (
             f"Restarted and read back (Valve → Verify by restart…): {store}"
         )
+    upload_record = {
+        "operation": "upload",
+        "details": json.dumps({"purpose": "upload", "store": KEPT_AS_WRITTEN}),
+    }
+    assert model.meaning(upload_record) == (
+        f"Written, verified and stored: Valve → Upload, {KEPT_AS_WRITTEN}"
+    )
