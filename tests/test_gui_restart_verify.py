@@ -231,6 +231,16 @@ def test_over_usb_the_upload_is_verified_after_a_restart(qtbot, window, monkeypa
     )
 
 
+def test_factory_values_end_what_there_is_to_verify(qtbot, window, monkeypatch):
+    go_online(qtbot, window, f"{E02}:4732")
+    qtbot.waitUntil(lambda: not window.connection.is_busy, timeout=TIMEOUT)
+    upload(qtbot, window)
+    assert window.commands["verify_restart"].isEnabled()
+    Hydraulics(monkeypatch)
+    finish(qtbot, window, "restore_factory", window.valve.restore_factory)
+    assert not window.commands["verify_restart"].isEnabled()  # not the last upload any more
+
+
 def test_online_edits_not_stored_since_the_upload_are_not_lost_by_a_restart(
     qtbot, can_window, monkeypatch, answers
 ):

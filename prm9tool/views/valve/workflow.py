@@ -355,6 +355,7 @@ class ValveWorkflow(QObject):
         )
 
     def _on_factory_reset(self, result: _FactoryReset) -> None:
+        self.uploads.last_stored = None  # the valve no longer holds the last upload
         self.take_valve_values(result.values, self.tr("Factory values of the valve"))
         self._connection.record("restore-factory", "ok", result.values, {"backup": result.backup})
         if result.backup is not None:
