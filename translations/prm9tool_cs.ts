@@ -759,6 +759,18 @@ Poslední akce možná nebyla dokončena. Uložte svou práci pod novým názvem
             <source>this valve has no object for {0} on this link (their addresses are this project's, not the manual's): the tuning cannot change them here; nothing was changed — tune these over USB</source>
             <translation>tento ventil nemá na tomto spojení objekt pro {0} (jejich adresy jsou adresami tohoto projektu, ne příručky): ladění je zde nemůže změnit; nic nebylo změněno — nalaďte je přes USB</translation>
         </message>
+        <message>
+            <source>the valve is in control mode {0} (spool position): it has no process loop to test; the process loop runs in control mode 4 (CTRLMODE). Nothing was changed</source>
+            <translation>ventil je v režimu řízení {0} (poloha šoupátka): nemá procesní smyčku, kterou by šlo testovat; procesní smyčka pracuje v režimu řízení 4 (CTRLMODE). Nic nebylo změněno</translation>
+        </message>
+        <message>
+            <source>the valve is in control mode {0} (process loop): its setpoint drives the process controller, not the spool, so the position loop cannot be tested on its own. Choose the process loop, or set CTRLMODE to 2 (spool position) while the valve is not enabled. Nothing was changed</source>
+            <translation>ventil je v režimu řízení {0} (procesní smyčka): jeho žádaná hodnota řídí regulátor procesu, ne šoupátko, takže smyčku polohy nelze testovat samostatně. Zvolte procesní smyčku, nebo nastavte CTRLMODE na 2 (poloha šoupátka), dokud ventil není povolen. Nic nebylo změněno</translation>
+        </message>
+        <message>
+            <source>{0} left the allowed band {1} ± {2} %; the test was stopped and the valve put back as it was</source>
+            <translation>{0}: hodnota opustila povolené pásmo {1} ± {2} %; test byl zastaven a ventil uveden do původního stavu</translation>
+        </message>
     </context>
     <context>
         <name>CommissioningPanel</name>

@@ -757,6 +757,18 @@ Die letzte Aktion wurde womöglich nicht vollständig ausgeführt. Speichern Sie
             <source>this valve has no object for {0} on this link (their addresses are this project's, not the manual's): the tuning cannot change them here; nothing was changed — tune these over USB</source>
             <translation>dieses Ventil hat auf dieser Verbindung kein Objekt für {0} (ihre Adressen sind die dieses Projekts, nicht die des Handbuchs): die Abstimmung kann sie hier nicht ändern; nichts wurde geändert — stimmen Sie diese über USB ab</translation>
         </message>
+        <message>
+            <source>the valve is in control mode {0} (spool position): it has no process loop to test; the process loop runs in control mode 4 (CTRLMODE). Nothing was changed</source>
+            <translation>das Ventil ist in Regelmodus {0} (Schieberlage): es hat keinen Prozessregelkreis zum Testen; der Prozessregelkreis arbeitet in Regelmodus 4 (CTRLMODE). Nichts wurde geändert</translation>
+        </message>
+        <message>
+            <source>the valve is in control mode {0} (process loop): its setpoint drives the process controller, not the spool, so the position loop cannot be tested on its own. Choose the process loop, or set CTRLMODE to 2 (spool position) while the valve is not enabled. Nothing was changed</source>
+            <translation>das Ventil ist in Regelmodus {0} (Prozessregelkreis): sein Sollwert steuert den Prozessregler, nicht den Schieber, daher lässt sich der Lageregelkreis nicht allein testen. Wählen Sie den Prozessregelkreis oder stellen Sie CTRLMODE auf 2 (Schieberlage), solange das Ventil nicht freigegeben ist. Nichts wurde geändert</translation>
+        </message>
+        <message>
+            <source>{0} left the allowed band {1} ± {2} %; the test was stopped and the valve put back as it was</source>
+            <translation>{0} hat das zulässige Band {1} ± {2} % verlassen; der Test wurde abgebrochen und das Ventil wiederhergestellt, wie es war</translation>
+        </message>
     </context>
     <context>
         <name>CommissioningPanel</name>

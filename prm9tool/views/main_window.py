@@ -230,6 +230,7 @@ class MainWindow(QMainWindow):
         s.set_expert(self.access.level is Access.EXPERT)
         c.online_changed.connect(self.commands.set_online)
         c.online_changed.connect(self._on_connection_online_changed)
+        c.live_values_changed.connect(self.parameter_view.model.show_live)
         c.device_changed.connect(lambda info: s.set_firmware(info.firmware if info else ""))
         c.status_changed.connect(lambda status: s.set_device_status(status_summary(status)))
         c.samples_lost_changed.connect(s.set_samples_lost)
