@@ -137,7 +137,7 @@ def test_upload_of_display_values_and_its_history(valve):
     assert records[-1]["details"]["command"] == "python API"
 
 
-QUICK = "[test]\nstep_amplitudes_pct = [25.0]\nbode_duration_s = 1.0\nstatic_period_s = 2.0\n"
+QUICK = "[test]\nstep_amplitudes_pct = [25.0]\nbode_duration_s = 0.5\nstatic_period_s = 1.0\n"
 
 
 def test_a_characterization_is_recorded_as_the_command_line_records_it(valve, tmp_path):
