@@ -160,6 +160,7 @@ def test_a_characterization_is_recorded_as_the_command_line_records_it(valve, tm
     recording_hook(recorder)(result)
     cli = prm9tool.history.records(4711)[-1]
     assert {k: v for k, v in details.items() if k != "command"} == cli["details"]
+    assert (cli["device_id"], cli["link"]) == (record["device_id"], record["link"])
     whole = recorder.store().record(record["id"])
     assert whole is not None and json.loads(whole["parameters"]) == result.parameters
     assert recorder.store().check_valve(4711) is None  # the chain holds both
