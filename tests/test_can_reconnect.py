@@ -1,11 +1,14 @@
-"""A CANopen valve that leaves the bus and comes back (power cycle, bus-off): the connection
-scans the bus for its serial number (0x1018/4) and goes online with it — also at a new node
-ID. Emulated -CA valve in real time on a private virtual channel (can_link_rig)."""
+"""A CANopen valve that leaves the bus and comes back (power cycle), and the tool's adapter
+going bus-off and recovering (tests/can_bus_off.py): the connection scans the bus for the
+valve's serial number (0x1018/4) and goes online with it — also at a new node ID. Emulated -CA
+valve in real time on a private virtual channel (can_link_rig)."""
 
 from __future__ import annotations
 
 import pytest
+from can_bus_off import install
 from can_link_rig import E02, make_link_rig
+from reconnect_links import online_window
 
 from prm9tool.device import factory
 from prm9tool.online.connection import ValveConnection
@@ -62,3 +65,35 @@ def test_the_valve_found_at_a_new_node_id_by_its_serial(qtbot, rig, connection):
     assert back.args[0].serial == rig.valve.serial
     assert back.args[0].device_id == f"can:{rig.valve.node_id}"
     assert connection.is_online and connection.device.device_id == f"can:{rig.valve.node_id}"
+
+
+def test_a_bus_off_of_the_adapter_is_said_and_the_window_is_back_by_itself(
+    qtbot, tmp_path, data_dir, answers, monkeypatch
+):
+    """The tool's CAN controller goes bus-off (SocketCAN's error frame, then every send
+    refused): the status bar says so and counts while it looks; when the adapter is back on
+    the bus (restart-ms), the window finds the same valve and is online again by itself."""
+    adapters = []
+    with online_window(
+        qtbot, tmp_path, "can", lambda channel: adapters.append(install(monkeypatch, channel))
+    ) as link:
+        window, adapter = link.window, adapters[0]
+        with qtbot.waitSignal(window.connection.reconnecting, timeout=TIMEOUT):
+            adapter.go_bus_off()
+        assert link.valve.serial == window.connection.lost_valve.serial
+        message = window.status.currentMessage()
+        assert message.startswith("Connection to the valve lost; looking for it… (")
+        assert "The CAN adapter went bus-off" in message and "node 10" in message
+        assert answers.informed == []  # no dialog in the way: the status bar says it
+        mode = window.status.mode_label
+        counted = []
+        window.connection.reconnecting.connect(counted.append)
+        qtbot.waitUntil(lambda: len(counted) >= 2, timeout=TIMEOUT)  # still off: it looks on
+        assert mode.text().startswith("Mode: RECONNECTING… ") and not window.connection.is_online
+        assert window.status.grab().save(str(tmp_path / "status_bar_bus_off.png"))
+        with qtbot.waitSignal(window.connection.reconnected, timeout=TIMEOUT) as back:
+            adapter.recover()
+        assert back.args[0].serial == link.valve.serial and back.args[0].device_id == "can:10"
+        qtbot.waitUntil(lambda: window.sync.active, timeout=TIMEOUT)
+        assert mode.text() == "Mode: ONLINE"
+        assert window.status.currentMessage() == "Back online: document and valve agree"

@@ -1671,6 +1671,10 @@ Poslední akce možná nebyla dokončena. Uložte svou práci pod novým názvem
             <translation>Spojení s ventilem je přerušeno.</translation>
         </message>
         <message>
+            <source>The CAN adapter went bus-off: check the wiring, termination and bit rate.</source>
+            <translation>CAN adaptér přešel do stavu bus-off: zkontrolujte kabeláž, zakončení sběrnice a přenosovou rychlost.</translation>
+        </message>
+        <message>
             <source>The emulated valve could not join the CAN bus; it works over USB without CAN.</source>
             <translation>Emulovaný ventil se nemohl připojit ke sběrnici CAN; pracuje přes USB bez CAN.</translation>
         </message>

@@ -1661,6 +1661,10 @@ Die letzte Aktion wurde womöglich nicht vollständig ausgeführt. Speichern Sie
             <translation>Die Verbindung zum Ventil ist unterbrochen.</translation>
         </message>
         <message>
+            <source>The CAN adapter went bus-off: check the wiring, termination and bit rate.</source>
+            <translation>Der CAN-Adapter ist im Zustand Bus-Off: Verkabelung, Abschlusswiderstände und Bitrate prüfen.</translation>
+        </message>
+        <message>
             <source>The emulated valve could not join the CAN bus; it works over USB without CAN.</source>
             <translation>Das emulierte Ventil konnte dem CAN-Bus nicht beitreten; es arbeitet über USB ohne CAN.</translation>
         </message>
