@@ -134,8 +134,9 @@ def generator_drives(link) -> bool:
 
 def test_the_generator_stops_with_the_link_and_is_not_restarted(qtbot, link, answers):
     """Over USB the valve drops the override 500 ms after the link; over CANopen the RPDO1
-    deadline the generator armed ends the motion (fault 8100h). Back, nothing drives the
-    setpoint and the generator stays off: only the user starts it again."""
+    deadline the generator armed ends the motion (fault 8100h), and once the valve is back the
+    deadline is put back as it was. Nothing drives the setpoint then and the generator stays
+    off: only the user starts it again."""
     window = link.window
     if link.name == "can":  # RPDO1 drives the setpoint only of an operational, enabled valve
         window.control.nmt(NmtCommand.START)
@@ -154,12 +155,16 @@ def test_the_generator_stops_with_the_link_and_is_not_restarted(qtbot, link, ans
     assert not scope.generator.running
     if link.name == "can":  # away: the valve's deadline ends the motion
         qtbot.waitUntil(lambda: 0x8100 in link.valve.status().active_errors, timeout=TIMEOUT)
+    said = []
+    window.valve.message_posted.connect(said.append)
     link.plug()
     qtbot.waitUntil(lambda: window.sync.active, timeout=TIMEOUT)
     assert not scope.generator.running  # it writes setpoints: only the user starts it again
     if link.name == "usb":
         qtbot.waitUntil(lambda: link.raw("SETPOVRON") == 0, timeout=TIMEOUT)
-    else:
+    else:  # the deadline it armed is put back as it was, and the status bar says so
+        assert link.raw("RPDO1TIMER") == 0
+        assert any("is as before (RPDO1TIMER)" in text for text in said), said
         assert link.valve.status().device_state != DeviceState.DEVICE_MODE_ACTIVE
 
 

@@ -4909,6 +4909,10 @@ Všechny hodnoty zůstávají v dokumentu: uložte jej, nebo přejděte znovu do
             <translation>Ventil {0} je opět online; načítají se jeho parametry…</translation>
         </message>
         <message>
+            <source>The valve is open again: what the setpoint generator cut off with the link had changed is as before ({0})</source>
+            <translation>Ventil je opět připojen: co změnil generátor žádané hodnoty přerušený se spojením, je opět jako předtím ({0})</translation>
+        </message>
+        <message>
             <source>Another valve (serial number {0}) is where the lost valve {1} was ({2}). prm9tool does not connect to it by itself: it is a new valve. Go online to work with it.</source>
             <translation>Na místě ztraceného ventilu {1} ({2}) je jiný ventil (sériové číslo {0}). prm9tool se k němu sám nepřipojí: je to nový ventil. Chcete-li s ním pracovat, přejděte do režimu online.</translation>
         </message>

@@ -4887,6 +4887,10 @@ Alle Werte bleiben im Dokument erhalten: Speichern Sie es oder gehen Sie wieder 
             <translation>Das Ventil {0} ist wieder online; seine Parameter werden gelesen…</translation>
         </message>
         <message>
+            <source>The valve is open again: what the setpoint generator cut off with the link had changed is as before ({0})</source>
+            <translation>Das Ventil ist wieder verbunden: Was der mit der Verbindung abgebrochene Sollwertgenerator geändert hatte, ist wieder wie vorher ({0})</translation>
+        </message>
+        <message>
             <source>Another valve (serial number {0}) is where the lost valve {1} was ({2}). prm9tool does not connect to it by itself: it is a new valve. Go online to work with it.</source>
             <translation>Wo das verlorene Ventil {1} war ({2}), ist ein anderes Ventil (Seriennummer {0}). prm9tool verbindet sich nicht von selbst damit: Es ist ein neues Ventil. Gehen Sie online, um damit zu arbeiten.</translation>
         </message>

@@ -40,6 +40,9 @@ class LiveData(_Base):
     stream_started = Signal(list)
     stream_stopped = Signal()
     samples_lost_changed = Signal(int)  # samples the oscilloscope stream lost since it started
+    # a generator cut off with its session had changed these; the same valve open again, they
+    # were written back (over CANopen: the RPDO1 deadline 0x1400/5 it armed)
+    generator_undone = Signal(list)
 
     if TYPE_CHECKING:  # the connection's, used here
         write_failed = Signal(list)
