@@ -1,12 +1,12 @@
 """A CANopen valve that leaves the bus and comes back (power cycle), and the tool's adapter
-going bus-off and recovering (tests/can_bus_off.py): the connection scans the bus for the
+going bus-off and recovering (tests/bus_off_rig.py): the connection scans the bus for the
 valve's serial number (0x1018/4) and goes online with it — also at a new node ID. Emulated -CA
 valve in real time on a private virtual channel (can_link_rig)."""
 
 from __future__ import annotations
 
 import pytest
-from can_bus_off import install
+from bus_off_rig import install
 from can_link_rig import E02, make_link_rig
 from reconnect_links import online_window
 
