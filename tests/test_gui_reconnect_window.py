@@ -117,10 +117,10 @@ def test_a_recording_stopped_while_the_valve_is_away_stays_stopped(qtbot, window
     assert not scope.running and streams == []
 
 
-def test_live_values_flow_again(qtbot, window):
-    pull_cable(qtbot, window)
-    with qtbot.waitSignal(window.connection.live_values_changed, timeout=TIMEOUT):
-        plug_back(qtbot, window)
+def test_live_values_flow_again(qtbot, link):
+    link.pull()
+    with qtbot.waitSignal(link.window.connection.live_values_changed, timeout=TIMEOUT):
+        link.plug()
 
 
 def generator_drives(link) -> bool:
