@@ -1,16 +1,20 @@
 """The links a valve drops off and comes back on, for the reconnect tests that run once per
 link: a main window online with an emulated valve over USB (its cable pulled and plugged back
-through Valve → Emulated valve) or over CANopen (an emulated -CA valve in real time on a
-private virtual bus whose CAN cable is pulled: it leaves the bus, runs on, and joins again).
+through Valve → Emulated valve) or over CANopen — an emulated -CA valve in real time on a
+private virtual bus whose CAN cable is pulled (it leaves the bus, runs on, and joins again), or
+whose master's adapter goes bus-off and recovers (tests/bus_off_rig.py).
 """
 
 from __future__ import annotations
 
-from collections.abc import Callable, Iterator
+import time
+from collections.abc import Iterator
 from contextlib import contextmanager
 from pathlib import Path
 from typing import Any
 
+import pytest
+from bus_off_rig import Adapter, install
 from can_link_rig import LinkRig, make_link_rig
 from gui_support import E02, E02_CA, emulated, go_online, main_window, session_of
 
@@ -21,13 +25,14 @@ from prm9tool.online.valve_listing import default_lister
 
 TIMEOUT = 10_000
 USB_SERIAL = 4301
-LINKS = ("usb", "can")
+LINKS = ("usb", "can", "bus-off")
 
 
 class Link:
     """One window online with one emulated valve on one link."""
 
     name = ""
+    canopen = True  # the valve is reached over CANopen
 
     def __init__(self, qtbot: Any, window: Any) -> None:
         self.qtbot = qtbot
@@ -75,6 +80,7 @@ class UsbLink(Link):
     """Over USB: Valve → Emulated valve → Pull the USB cable / Plug it back in."""
 
     name = "usb"
+    canopen = False
 
     @property
     def valve(self) -> Any:
@@ -112,6 +118,30 @@ class CanLink(Link):
         self.rig.plug()
 
 
+class BusOffLink(CanLink):
+    """Over CANopen, the tool's adapter going bus-off (every frame refused, none received) and
+    back on the bus; the valve stays where it is."""
+
+    name = "bus-off"
+
+    def __init__(self, qtbot: Any, window: Any, rig: LinkRig, adapter: Adapter) -> None:
+        super().__init__(qtbot, window, rig)
+        self.adapter = adapter
+
+    def pull_from_worker(self) -> None:
+        """Bus-off, and back once the tool's bus has seen it (its next frame is refused)."""
+        self._pull()
+        deadline = time.monotonic() + TIMEOUT / 1000
+        while not self.adapter.told() and time.monotonic() < deadline:
+            time.sleep(0.001)
+
+    def _pull(self) -> None:
+        self.adapter.go_bus_off()
+
+    def _plug(self) -> None:
+        self.adapter.recover()
+
+
 def can_connection(rig: LinkRig) -> ValveConnection:
     """The program's connection for a valve on ``rig``'s bus (lists and opens CAN nodes)."""
     return ValveConnection(
@@ -122,11 +152,11 @@ def can_connection(rig: LinkRig) -> ValveConnection:
 
 @contextmanager
 def online_window(
-    qtbot: Any, tmp_path: Path, link: str, before_online: Callable[[str], object] | None = None
+    qtbot: Any, tmp_path: Path, link: str, monkeypatch: pytest.MonkeyPatch | None = None
 ) -> Iterator[Link]:
-    """A main window online and in step with an emulated valve on ``link`` ("usb", "can"),
-    looking for it when it drops off (as the program does). ``before_online(channel)`` runs
-    before the window opens the CAN bus of that virtual channel."""
+    """A main window online and in step with an emulated valve on ``link`` (one of
+    :data:`LINKS`; "bus-off" needs ``monkeypatch`` for the adapter), looking for it when it
+    drops off (as the program does)."""
     if link == "usb":
         with main_window(qtbot, tmp_path) as window:
             window.connection.auto_reconnect = True
@@ -136,15 +166,21 @@ def online_window(
         return
     rig = make_link_rig("reconnect-window", tmp_path, E02_CA, switches=(6, 2))  # node 10
     rig.valve.start()
-    if before_online is not None:
-        before_online(rig.options.channel)
+    adapter = None
+    if link == "bus-off":
+        assert monkeypatch is not None
+        adapter = install(monkeypatch, rig.options.channel)
     try:
         with main_window(qtbot, tmp_path, E02_CA, can_connection(rig)) as window:
             window.connection.auto_reconnect = True
             with qtbot.waitSignal(window.connection.online_changed, timeout=TIMEOUT):
                 window.valve.go_online("can:10")
             qtbot.waitUntil(lambda: window.sync.active, timeout=TIMEOUT)
-            yield CanLink(qtbot, window, rig)
+            yield (
+                CanLink(qtbot, window, rig)
+                if adapter is None
+                else BusOffLink(qtbot, window, rig, adapter)
+            )
     finally:
         rig.valve.stop()
         rig.close()

@@ -9,7 +9,6 @@ import os
 from pathlib import Path
 
 import pytest
-from bus_off_rig import install
 from can_link_rig import E02, make_link_rig
 from gui_support import session_of
 from reconnect_links import online_window
@@ -96,11 +95,8 @@ def test_a_bus_off_of_the_adapter_is_said_and_the_window_is_back_by_itself(
     refused: the SDO requests and the oscilloscope's SYNC): the status bar says so and counts
     while it looks; when the adapter is back on the bus (restart-ms), the window finds the
     same valve and is online again by itself, and the oscilloscope records on."""
-    adapters = []
-    with online_window(
-        qtbot, tmp_path, "can", lambda channel: adapters.append(install(monkeypatch, channel))
-    ) as link:
-        window, adapter = link.window, adapters[0]
+    with online_window(qtbot, tmp_path, "bus-off", monkeypatch) as link:
+        window, adapter = link.window, link.adapter
         scope = start_pdo_scope(qtbot, window) if state == "scope" else None
         with qtbot.waitSignal(window.connection.reconnecting, timeout=TIMEOUT):
             adapter.go_bus_off()

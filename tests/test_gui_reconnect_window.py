@@ -1,8 +1,9 @@
 """The main window when the valve drops off and comes back: status bar, oscilloscope,
 generator, unsaved online edits, an upload, a tuning test. Over USB (the emulated cable pulled
 and plugged back in) and, where the state is the link's own business — the stream, the
-generator, an upload, a tuning test —, also over CANopen (the valve leaves the bus and joins
-again; tests/reconnect_links.py). The CAN adapter's bus-off: tests/test_can_reconnect.py."""
+generator, an upload, a tuning test —, also over CANopen: the valve leaves the bus and joins
+again, and the tool's adapter goes bus-off and recovers (tests/reconnect_links.py). What the
+status bar says of a bus-off: tests/test_can_reconnect.py."""
 
 from __future__ import annotations
 
@@ -37,9 +38,9 @@ def window(qtbot, tmp_path, answers):
 
 
 @pytest.fixture(params=LINKS)
-def link(request, qtbot, tmp_path, answers, data_dir):
+def link(request, qtbot, tmp_path, answers, data_dir, monkeypatch):
     """A window online with an emulated valve over each link (reconnect_links.Link)."""
-    with online_window(qtbot, tmp_path, request.param) as link:
+    with online_window(qtbot, tmp_path, request.param, monkeypatch) as link:
         yield link
 
 
@@ -126,7 +127,7 @@ def test_live_values_flow_again(qtbot, link):
 def generator_drives(link) -> bool:
     """The valve follows the generator: the override on (USB), or RPDO1 frames arriving under
     the reception deadline the generator armed (CANopen: a frame came since 0x1400/5 was set)."""
-    if link.name == "usb":
+    if not link.canopen:
         return link.raw("SETPOVRON") == 1
     armed = [r.channel.deadline_ms for r in link.rig.slave._rpdo_logic]
     return link.raw("RPDO1TIMER") == DEADLINE_MS and any(d is not None for d in armed)
@@ -138,13 +139,13 @@ def test_the_generator_stops_with_the_link_and_is_not_restarted(qtbot, link, ans
     deadline is put back as it was. Nothing drives the setpoint then and the generator stays
     off: only the user starts it again."""
     window = link.window
-    if link.name == "can":  # RPDO1 drives the setpoint only of an operational, enabled valve
+    if link.canopen:  # RPDO1 drives the setpoint only of an operational, enabled valve
         window.control.nmt(NmtCommand.START)
         window.control.enable()
         qtbot.waitUntil(lambda: link.valve.status().device_state == DeviceState.DEVICE_MODE_ACTIVE,
                         timeout=TIMEOUT)  # fmt: skip
         qtbot.waitUntil(lambda: not window.connection.is_busy, timeout=TIMEOUT)
-    window.open_scope("setpoint_raw" if link.name == "usb" else "position_setpoint")
+    window.open_scope("position_setpoint" if link.canopen else "setpoint_raw")
     scope = window.views["scope"]
     answers.answers.append(prompts.Button.Yes)
     panel = scope.generator_panel
@@ -153,14 +154,14 @@ def test_the_generator_stops_with_the_link_and_is_not_restarted(qtbot, link, ans
     qtbot.waitUntil(lambda: generator_drives(link), timeout=TIMEOUT)
     link.pull()
     assert not scope.generator.running
-    if link.name == "can":  # away: the valve's deadline ends the motion
+    if link.canopen:  # away: the valve's deadline ends the motion
         qtbot.waitUntil(lambda: 0x8100 in link.valve.status().active_errors, timeout=TIMEOUT)
     said = []
     window.valve.message_posted.connect(said.append)
     link.plug()
     qtbot.waitUntil(lambda: window.sync.active, timeout=TIMEOUT)
     assert not scope.generator.running  # it writes setpoints: only the user starts it again
-    if link.name == "usb":
+    if not link.canopen:
         qtbot.waitUntil(lambda: link.raw("SETPOVRON") == 0, timeout=TIMEOUT)
     else:  # the deadline it armed is put back as it was, and the status bar says so
         assert link.raw("RPDO1TIMER") == 0
@@ -266,5 +267,5 @@ def test_a_tuning_test_cut_off_is_undone_once_the_valve_is_back(qtbot, link):
         link.plug()
     assert "restored (LIMTA)" in restored.args[0]
     assert link.raw("LIMTA") == before and runner.to_restore is None
-    if link.name == "usb":
+    if not link.canopen:
         assert link.raw("SETPOVRON") == 0
