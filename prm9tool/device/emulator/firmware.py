@@ -379,9 +379,10 @@ class Firmware:
 
     def value(self, mnemonic: str) -> int:
         """Integer RAM value of a parameter; 0 if it does not exist on this variant."""
-        if not self.od.has(mnemonic):
+        param = self.od.by_mnemonic.get(mnemonic)  # od.has and od.get in one lookup
+        if param is None:
             return 0
-        value = self.od.get(mnemonic)
+        value = self.od.values[param.key]
         return value if isinstance(value, int) else 0
 
     def _refresh_inputs(self) -> None:
