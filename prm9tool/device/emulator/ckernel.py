@@ -216,6 +216,7 @@ class CompiledLoop:
         self.state = st
         self.inputs = array("d", bytes(8 * len(INPUTS)))
         self.coef = array("d")
+        self.coef_of: dict[str, Any] | None = None  # the coefficients ``coef`` was built from
         self.version = -1
         self.inputs_version = -1
         self.last_mode = MODE_OFF
@@ -248,7 +249,8 @@ class CompiledLoop:
         if s.version != self.version:
             c = s.coefficients
             self.version = s.version
-            self.coef = coefficient_array(c)
+            if c is not self.coef_of:  # the firmware's memo hands back the same coefficients
+                self.coef, self.coef_of = coefficient_array(c), c
             self.process_on = bool(c["process_loop"])
             if not self.process_on:
                 self.state[S["dev"]] = self.state[S["dg"]] = 0.0
