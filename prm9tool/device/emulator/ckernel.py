@@ -3,9 +3,9 @@
 :class:`CompiledLoop` is driven exactly like :func:`.kernel.control_loop`'s generator
 (``send(n)`` runs ``n`` cycles, ``send(0)`` writes every measuring point back) and reads and
 writes the same :class:`~.loopstate.LoopState`; the cycles themselves run in the C extension
-``_ckernel`` on flat arrays of doubles, without the GIL. What happens between batches (reading
-new coefficients and inputs, the bumpless start of the ramp, the write-back) stays here, in the
-same order as in the reference.
+``_ckernel`` on flat arrays of doubles, without the GIL (batches of 100 cycles or more). What
+happens between batches (reading new coefficients and inputs, the bumpless start of the ramp,
+the write-back) stays here, in the same order as in the reference.
 """
 
 from __future__ import annotations

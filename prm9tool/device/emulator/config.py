@@ -39,22 +39,25 @@ class Memo(Generic[T]):
 
     def __init__(self) -> None:
         self._inputs: tuple[object, ...] | None = None
-        self._reads: list[tuple[str, int]] = []
+        self._names: list[str] = []  # the values the last computation read, in order
+        self._values: list[int] = []
         self._result: Any = None
 
     def get(self, values: Values, inputs: tuple[object, ...], compute: Callable[[Values], T]) -> T:
         """``compute(values)``, or its last result if nothing it depends on has changed."""
-        if inputs == self._inputs and all(values(m) == v for m, v in self._reads):
+        if inputs == self._inputs and [values(m) for m in self._names] == self._values:
             return self._result  # type: ignore[no-any-return]
-        reads: list[tuple[str, int]] = []
+        names: list[str] = []
+        read: list[int] = []
 
         def recording(mnemonic: str) -> int:
             value = values(mnemonic)
-            reads.append((mnemonic, value))
+            names.append(mnemonic)
+            read.append(value)
             return value
 
         self._result = result = compute(recording)
-        self._inputs, self._reads = inputs, reads
+        self._inputs, self._names, self._values = inputs, names, read
         return result
 
 
