@@ -194,6 +194,7 @@ class MainWindow(QMainWindow):
             "store": self.valve.store,
             "restore_factory": self.valve.restore_factory,
             "restart": self.valve.restart,
+            "verify_restart": self.valve.verify_by_restart,
             "hid_configuration": self.valve.configure_hid,
             "can_bus": self.valve.configure_can_bus,
             "online": lambda: self.valve.go_online(),
@@ -215,7 +216,8 @@ class MainWindow(QMainWindow):
 
     def _connect_models(self) -> None:
         c, d, s = self.connection, self.doc, self.status
-        for signal in (c.online_changed, c.busy_changed, d.modified_changed, d.type_key_changed):
+        for signal in (c.online_changed, c.busy_changed, c.operation_finished,
+                       d.modified_changed, d.type_key_changed):  # fmt: skip
             signal.connect(self._update_actions)
         self.undo.stack.canUndoChanged.connect(self._update_actions)
         self.undo.stack.canRedoChanged.connect(self._update_actions)
@@ -228,6 +230,7 @@ class MainWindow(QMainWindow):
         s.set_expert(self.access.level is Access.EXPERT)
         c.online_changed.connect(self.commands.set_online)
         c.online_changed.connect(self._on_connection_online_changed)
+        c.live_values_changed.connect(self.parameter_view.model.show_live)
         c.device_changed.connect(lambda info: s.set_firmware(info.firmware if info else ""))
         c.status_changed.connect(lambda status: s.set_device_status(status_summary(status)))
         c.samples_lost_changed.connect(s.set_samples_lost)
@@ -264,7 +267,8 @@ class MainWindow(QMainWindow):
 
     def _update_actions(self, *_args: object) -> None:
         a = self.commands
-        enabled = enabled_actions(self.doc, self.undo, self.access, self.connection)
+        uploaded = self.valve.verifier.available
+        enabled = enabled_actions(self.doc, self.undo, self.access, self.connection, uploaded)
         for name, value in enabled.items():
             a[name].setEnabled(value)
         a["level_expert" if self.access.level is Access.EXPERT else "level_basic"].setChecked(True)
