@@ -3290,6 +3290,10 @@ Ano načte a záznam zařadí do fronty; Ne nenačte nic.</translation>
             <translation>{0} ({1}) u ventilů {2} neexistuje (typový klíč {3}); odstraňte řádek nebo změňte typový klíč</translation>
         </message>
         <message>
+            <source>{0} ({1}) is not a parameter of {2} valves (type key {3}): they have the object but no external sensor input; remove the line or change the type key</source>
+            <translation>{0} ({1}) není parametrem ventilů {2} (typový klíč {3}): mají objekt, ale žádný vstup externího snímače; odstraňte řádek nebo změňte typový klíč</translation>
+        </message>
+        <message>
             <source>{0}: no value after '='</source>
             <translation>{0}: za '=' chybí hodnota</translation>
         </message>

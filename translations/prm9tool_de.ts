@@ -3271,6 +3271,10 @@ Ja lädt hoch und stellt den Eintrag in die Warteschlange; Nein lädt nichts hoc
             <translation>{0} ({1}) gibt es bei Ventilen {2} nicht (Typschlüssel {3}); die Zeile entfernen oder den Typschlüssel ändern</translation>
         </message>
         <message>
+            <source>{0} ({1}) is not a parameter of {2} valves (type key {3}): they have the object but no external sensor input; remove the line or change the type key</source>
+            <translation>{0} ({1}) ist kein Parameter von Ventilen {2} (Typschlüssel {3}): sie haben das Objekt, aber keinen Eingang für einen externen Sensor; die Zeile entfernen oder den Typschlüssel ändern</translation>
+        </message>
+        <message>
             <source>{0}: no value after '='</source>
             <translation>{0}: kein Wert nach '='</translation>
         </message>
