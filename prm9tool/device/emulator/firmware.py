@@ -31,6 +31,7 @@ from prm9tool.device.emulator.loopstate import (
     Curve,
     LoopState,
 )
+from prm9tool.device.emulator.memory import ParameterMemory
 from prm9tool.device.emulator.nvimage import NvImage, is_nonvolatile
 from prm9tool.device.emulator.objdict import ObjectDictionary
 from prm9tool.device.emulator.override import OverrideProgram
@@ -42,7 +43,7 @@ AUTO_CONTROL_WORD = 0x0F  # analog-only mode: the firmware enables itself (decis
 _ACTIVE_STATES = (DeviceState.HOLD, DeviceState.DEVICE_MODE_ACTIVE, DeviceState.FAULT_HOLD)
 
 
-class Firmware:
+class Firmware(ParameterMemory):
     """Object dictionary, NV image, state machine, fault monitor and the loop generator."""
 
     def __init__(
@@ -198,46 +199,6 @@ class Firmware:
         for param in od.entries.values():
             if param.node_relative and param.mnemonic not in self.nv.values:
                 od.values[param.key] = param.default_for(self.variant, self.node_id)
-
-    def reset_communication(self) -> None:
-        """NMT reset communication: communication objects back to their power-on values."""
-        od = self.od
-        for param in od.entries.values():
-            if 0x1000 <= param.index <= 0x1FFF and param.group != "od_structure":
-                value = self.nv.values.get(param.mnemonic)
-                if value is None or not is_nonvolatile(param):
-                    value = param.default_for(self.variant, self.node_id)
-                if param.key not in od.getters:
-                    od.values[param.key] = value
-        self.nmt_state = NmtState.PRE_OPERATIONAL
-
-    def reload(self) -> None:
-        """Working values of the stored parameters ← the NV image, without a power cycle.
-
-        Only the parameters the store command keeps change; the state machine, the boot
-        timeline and the latched interface settings stay as they are, and the loop picks the
-        values up in its next cycle.
-        """
-        od = self.od
-        for param in od.entries.values():
-            if is_nonvolatile(param) and param.key not in od.getters:
-                value = self.nv.values.get(param.mnemonic)
-                if value is None:
-                    value = param.default_for(self.variant, self.node_id)
-                od.values[param.key] = value
-        self.setpoint_dirty = self.config_dirty = True
-
-    def nonvolatile_values(self) -> dict[str, int | str]:
-        """The RAM values the store command writes (node-relative defaults left out)."""
-        image = {}
-        for param in self.od.entries.values():
-            if not is_nonvolatile(param):
-                continue
-            value = self.od.values[param.key]
-            if param.node_relative and value == param.default_for(self.variant, self.node_id):
-                continue
-            image[param.mnemonic] = value
-        return image
 
     # --- CANopen interface settings (latched at power-up) ----------------------------------
     def _latch_interface(self) -> None:
