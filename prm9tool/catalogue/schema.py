@@ -120,11 +120,17 @@ class Texts:
 
 @dataclass(frozen=True)
 class Applies:
-    """The variants a parameter exists on."""
+    """The variants a parameter belongs to (calling it: the variant's parameter set).
+
+    ``every_canopen``: the object is in the object dictionary of every -CA valve, also where
+    it is not part of the parameter set (the external sensor objects of manual table 7-14 on
+    an E02 -CA, which has no sensor input): :meth:`on_device` says where the object exists.
+    """
 
     configs: frozenset[Config] = frozenset(Config)
     coils: frozenset[Coils] = frozenset(Coils)
     canopen_only: bool = False
+    every_canopen: bool = False
 
     def __call__(self, variant: Variant) -> bool:
         return (
@@ -133,6 +139,10 @@ class Applies:
             and (variant.canopen or not self.canopen_only)
         )
 
+    def on_device(self, variant: Variant) -> bool:
+        """True if ``variant``'s object dictionary has the object (over CANopen and USB)."""
+        return self(variant) or (self.every_canopen and variant.canopen)
+
     def describe(self) -> str:
         """Human-readable list of the variants, e.g. ``E04, coils AB/A, -CA only``."""
         parts = ["/".join(sorted(c.value for c in self.configs))]
@@ -140,6 +150,9 @@ class Applies:
             parts.append("coils " + "/".join(sorted(c.value for c in self.coils)))
         if self.canopen_only:
             parts.append("-CA only")
+        if self.every_canopen and self.configs != frozenset(Config):
+            others = "/".join(sorted(c.value for c in set(Config) - self.configs))
+            parts.append(f"object also on {others} -CA")
         return ", ".join(parts)
 
 
@@ -202,6 +215,11 @@ class Parameter:
     def is_string(self) -> bool:
         """True for string parameters (type key, firmware version, device name)."""
         return self.dtype.is_string
+
+    def on_device(self, variant: Variant) -> bool:
+        """True if ``variant``'s object dictionary has this object; it may still not be part
+        of the variant's parameter set (``applies``): see :class:`Applies`."""
+        return self.applies.on_device(variant)
 
     @cached_property
     def writable(self) -> bool:
