@@ -4621,6 +4621,45 @@ Zajistěte, aby to hydraulika bezpečně snesla. Tlačítko Stop test kdykoli uk
         </message>
     </context>
     <context>
+        <name>ValveRestarts</name>
+        <message>
+            <source>Restoring the factory values…</source>
+            <translation>Obnovování továrního nastavení…</translation>
+        </message>
+        <message>
+            <source>Restore factory values</source>
+            <translation>Obnovit tovární nastavení</translation>
+        </message>
+        <message>
+            <source>Set every parameter of the document to the factory default?</source>
+            <translation>Nastavit všechny parametry dokumentu na tovární hodnoty?</translation>
+        </message>
+        <message>
+            <source>Restarting the valve…</source>
+            <translation>Restartování ventilu…</translation>
+        </message>
+        <message>
+            <source>The valve restarted</source>
+            <translation>Ventil byl restartován</translation>
+        </message>
+        <message>
+            <source>{0} kbit/s</source>
+            <translation>{0} kbit/s</translation>
+        </message>
+        <message>
+            <source>The valve restarted at {0} {1}; prm9tool found it there</source>
+            <translation>Ventil se restartoval jako {0} {1}; prm9tool ho tam našel</translation>
+        </message>
+        <message>
+            <source>Factory values of the valve</source>
+            <translation>Tovární nastavení ventilu</translation>
+        </message>
+        <message>
+            <source>Factory values restored; the valve's previous parameters are in {0}</source>
+            <translation>Tovární nastavení obnoveno; dosavadní parametry ventilu jsou v {0}</translation>
+        </message>
+    </context>
+    <context>
         <name>ValveSelectionDialog</name>
         <message>
             <source>Valve selection</source>
@@ -4960,10 +4999,6 @@ Ano je porovná jako obvykle (bez dotazu se nic nezapíše); Ne přejde do reži
             <translation>Stahování parametrů z ventilu…</translation>
         </message>
         <message>
-            <source>Set every parameter of the document to the factory default?</source>
-            <translation>Nastavit všechny parametry dokumentu na tovární hodnoty?</translation>
-        </message>
-        <message>
             <source>The valve's parameters are in the document; File → Save backup copy… keeps a copy of them</source>
             <translation>Parametry ventilu jsou v dokumentu; Soubor → Uložit záložní kopii… z nich uloží kopii</translation>
         </message>
@@ -4972,40 +5007,8 @@ Ano je porovná jako obvykle (bez dotazu se nic nezapíše); Ne přejde do reži
             <translation>Ventil uložil své parametry v {0}</translation>
         </message>
         <message>
-            <source>{0} kbit/s</source>
-            <translation>{0} kbit/s</translation>
-        </message>
-        <message>
-            <source>The valve restarted at {0} {1}; prm9tool found it there</source>
-            <translation>Ventil se restartoval jako {0} {1}; prm9tool ho tam našel</translation>
-        </message>
-        <message>
-            <source>Restore factory values</source>
-            <translation>Obnovit tovární nastavení</translation>
-        </message>
-        <message>
-            <source>Restoring the factory values…</source>
-            <translation>Obnovování továrního nastavení…</translation>
-        </message>
-        <message>
-            <source>Restarting the valve…</source>
-            <translation>Restartování ventilu…</translation>
-        </message>
-        <message>
             <source>Download from valve</source>
             <translation>Stažení z ventilu</translation>
-        </message>
-        <message>
-            <source>Factory values of the valve</source>
-            <translation>Tovární nastavení ventilu</translation>
-        </message>
-        <message>
-            <source>The valve restarted</source>
-            <translation>Ventil byl restartován</translation>
-        </message>
-        <message>
-            <source>Factory values restored; the valve's previous parameters are in {0}</source>
-            <translation>Tovární nastavení obnoveno; dosavadní parametry ventilu jsou v {0}</translation>
         </message>
         <message>
             <source>Valve communication</source>
