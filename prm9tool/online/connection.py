@@ -256,6 +256,18 @@ class ValveConnection(QObject):
 
         self._long_job(tag, run)
 
+    def verify_by_restart(
+        self, expected: Mapping[str, int | str], upload_store: str | None
+    ) -> None:
+        """Restart the valve and read back that it kept ``expected`` (online/restart_verify.py;
+        only after the hydraulics confirmation); result: operation_finished("verify_restart",
+        RestartVerification), a valve that does not come back arrives as ``lost``."""
+        from prm9tool.online.restart_verify import verify_by_restart
+
+        values, progress = dict(expected), self._worker.progress
+        work = lambda s: verify_by_restart(s, values, upload_store, self.history, progress)  # noqa: E731
+        self._long_job("verify_restart", work)
+
     def run_job(self, name: str, work: Callable[[ValveSession], object]) -> None:
         """Run ``work(session)`` as a long operation; result: operation_finished(name, …)."""
         self._long_job(name, work)

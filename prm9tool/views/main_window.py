@@ -194,6 +194,7 @@ class MainWindow(QMainWindow):
             "store": self.valve.store,
             "restore_factory": self.valve.restore_factory,
             "restart": self.valve.restart,
+            "verify_restart": self.valve.verify_by_restart,
             "hid_configuration": self.valve.configure_hid,
             "can_bus": self.valve.configure_can_bus,
             "online": lambda: self.valve.go_online(),
@@ -215,7 +216,8 @@ class MainWindow(QMainWindow):
 
     def _connect_models(self) -> None:
         c, d, s = self.connection, self.doc, self.status
-        for signal in (c.online_changed, c.busy_changed, d.modified_changed, d.type_key_changed):
+        for signal in (c.online_changed, c.busy_changed, c.operation_finished,
+                       d.modified_changed, d.type_key_changed):  # fmt: skip
             signal.connect(self._update_actions)
         self.undo.stack.canUndoChanged.connect(self._update_actions)
         self.undo.stack.canRedoChanged.connect(self._update_actions)
@@ -265,7 +267,8 @@ class MainWindow(QMainWindow):
 
     def _update_actions(self, *_args: object) -> None:
         a = self.commands
-        enabled = enabled_actions(self.doc, self.undo, self.access, self.connection)
+        uploaded = self.valve.verifier.available
+        enabled = enabled_actions(self.doc, self.undo, self.access, self.connection, uploaded)
         for name, value in enabled.items():
             a[name].setEnabled(value)
         a["level_expert" if self.access.level is Access.EXPERT else "level_basic"].setChecked(True)

@@ -102,6 +102,7 @@ class CanopenSession(UploadSteps, ValveSession):
         self._shared = canbus.acquire(options)
         self._closed = False
         self._snapshot: dict[str, Value] | None = None  # None: no upload is running
+        self._stored_backup: dict[str, Value] | None = None  # the snapshot of the last store
         self._touched: list[str] = []  # parameters the running upload wrote
         self._known: dict[str, Value] = {}  # the valve's working values as last read/written
         self._sampler: SdoSampler | PdoSampler | None = None
@@ -254,7 +255,9 @@ class CanopenSession(UploadSteps, ValveSession):
         if self._store == STORED_WITH_1010:
             self._sdo.download(0x1010, 1, SAVE_SIGNATURE.to_bytes(4, "little"), STORE_TIMEOUT_S)
         self.store_done = self._store
-        self._snapshot = None  # stored: nothing to put back any more
+        # stored: nothing to put back any more — unless the restart verification finds the
+        # valve did not keep the upload (upload_steps._restart_check)
+        self._stored_backup, self._snapshot = self._snapshot, None
 
     def restore_factory(self) -> None:
         """0x1011/1 = "load": factory values at the next reset or power-up. A valve without

@@ -24,7 +24,7 @@ CAN_ID_MASK = 0x7FF
 SYNC_TYPES = range(241)  # 0 acyclic synchronous, 1-240 every n-th SYNC
 EVENT_TYPES = (254, 255)
 CHANGE_INHIBIT_MS = 10  # decision: event timer 0 -> on change, at most every 10 ms
-CONTROL_MODE = (0x6043, 0)
+CONTROL_MODE = CATALOGUE["CTRLMODE"].key  # 0x6043
 
 
 class Dictionary(Protocol):
