@@ -4944,6 +4944,10 @@ Ano je porovná jako obvykle (bez dotazu se nic nezapíše); Ne přejde do reži
             <translation>Ventil hlásí neznámý typový klíč: {0}</translation>
         </message>
         <message>
+            <source>Nothing was sent to the valve</source>
+            <translation>Do ventilu nebylo nic odesláno</translation>
+        </message>
+        <message>
             <source>Storing the parameters in the valve…</source>
             <translation>Ukládání parametrů do paměti ventilu…</translation>
         </message>

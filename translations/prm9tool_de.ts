@@ -4919,6 +4919,10 @@ Ja vergleicht beide wie gewohnt (ohne Rückfrage wird nichts geschrieben); Nein 
             <translation>Das Ventil meldet einen unbekannten Typschlüssel: {0}</translation>
         </message>
         <message>
+            <source>Nothing was sent to the valve</source>
+            <translation>Es wurde nichts an das Ventil gesendet</translation>
+        </message>
+        <message>
             <source>Storing the parameters in the valve…</source>
             <translation>Parameter werden im Ventil gespeichert…</translation>
         </message>
