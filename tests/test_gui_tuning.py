@@ -193,9 +193,10 @@ def test_online_a_test_asks_first_and_does_nothing_when_declined(qtbot, monkeypa
                 operation_finished = Signal(str, object)
                 failed = Signal(str)
                 lost = Signal(str)
+                reconnected = Signal(object)  # the runner's restore after a lost link
 
             self.signals = Signals()
-            for name in ("online_changed", "operation_finished", "failed", "lost"):
+            for name in ("online_changed", "operation_finished", "failed", "lost", "reconnected"):
                 setattr(self, name, getattr(self.signals, name))
             self.jobs = []
 
@@ -226,6 +227,7 @@ def test_a_test_on_the_valve_says_that_it_stops_the_running_setpoint_generator(q
         operation_finished = Signal(str, object)
         failed = Signal(str)
         lost = Signal(str)
+        reconnected = Signal(object)  # the runner's restore after a lost link
 
     class Online:
         is_online = True
@@ -234,7 +236,7 @@ def test_a_test_on_the_valve_says_that_it_stops_the_running_setpoint_generator(q
         def __init__(self):
             self.streaming_keys: list[str] = []
             self.signals = Signals()
-            for name in ("online_changed", "operation_finished", "failed", "lost"):
+            for name in ("online_changed", "operation_finished", "failed", "lost", "reconnected"):
                 setattr(self, name, getattr(self.signals, name))
             self.jobs: list[str] = []
             self.generator_running = True
@@ -474,3 +476,21 @@ def test_an_open_tuning_window_follows_the_program_language(qtbot, window):
                          "Autotune starten")  # fmt: skip
     assert shown[4] == "Stopped: a result the user still reads"  # not replaced by "Bereit."
     assert window.windowTitle() == "Tuning and characterization"
+
+
+def test_at_basic_level_accepting_gains_is_refused_as_in_the_controller_dialogs(qtbot):
+    """The Tuning window (open at Basic level from the oscilloscope) accepted an autotune's
+    POSKP…POST1 into the document, and online into the valve, at Basic level, where the
+    diagram and the list lock the controllers."""
+    doc, access = ParameterDocument(E02), AccessModel()
+    w = TuningWindow(doc, access=access)
+    qtbot.addWidget(w)
+    kp = doc.value("POSKP")
+    w.accept_values({"POSKP": kp + 10, "POSKI": 500}, "Autotune")
+    assert doc.value("POSKP") == kp and not doc.modified
+    assert w.status.text() == (
+        "Not accepted: POSKP can only be changed at Expert access level. (View → Access level)"
+    )
+    access.set_level(Access.EXPERT)
+    w.accept_values({"POSKP": kp + 10}, "Autotune")
+    assert doc.value("POSKP") == kp + 10 and w.status.text() == "Accepted: Autotune"

@@ -4328,6 +4328,14 @@ Zajistěte, aby to hydraulika bezpečně snesla. Tlačítko Stop test kdykoli uk
             <translation>Přerušeno: %1</translation>
         </message>
         <message>
+            <source>(View → Access level)</source>
+            <translation>(Náhled → Úroveň oprávnění)</translation>
+        </message>
+        <message>
+            <source>Not accepted: %1</source>
+            <translation>Nepřevzato: %1</translation>
+        </message>
+        <message>
             <source>Accepted: %1</source>
             <translation>Převzato: %1</translation>
         </message>

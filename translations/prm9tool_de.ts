@@ -4306,6 +4306,14 @@ Stellen Sie sicher, dass die Hydraulik dafür sicher ist. Stopp beendet ihn jede
             <translation>Abgebrochen: %1</translation>
         </message>
         <message>
+            <source>(View → Access level)</source>
+            <translation>(Ansicht → Berechtigungsstufe)</translation>
+        </message>
+        <message>
+            <source>Not accepted: %1</source>
+            <translation>Nicht übernommen: %1</translation>
+        </message>
+        <message>
             <source>Accepted: %1</source>
             <translation>Übernommen: %1</translation>
         </message>

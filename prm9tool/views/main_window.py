@@ -135,7 +135,7 @@ class MainWindow(QMainWindow):
 
         window = getattr(self, "tuning_window", None)
         if window is None or window.doc is not self.doc:
-            window = TuningWindow(self.doc, self.connection, self, control=self.control)
+            window = TuningWindow(self.doc, self.connection, self, self.control, self.access)
             self.tuning_window = window
         index = window.loop.findData(loop)
         if index >= 0 and not window.runner.busy:
