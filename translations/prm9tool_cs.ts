@@ -1683,6 +1683,10 @@ Poslední akce možná nebyla dokončena. Uložte svou práci pod novým názvem
             <translation>Spojení s ventilem je přerušeno.</translation>
         </message>
         <message>
+            <source>The CAN adapter went bus-off: check the wiring, termination and bit rate.</source>
+            <translation>CAN adaptér přešel do stavu bus-off: zkontrolujte kabeláž, zakončení sběrnice a přenosovou rychlost.</translation>
+        </message>
+        <message>
             <source>The emulated valve could not join the CAN bus; it works over USB without CAN.</source>
             <translation>Emulovaný ventil se nemohl připojit ke sběrnici CAN; pracuje přes USB bez CAN.</translation>
         </message>
@@ -3284,6 +3288,10 @@ Ano načte a záznam zařadí do fronty; Ne nenačte nic.</translation>
         <message>
             <source>{0} ({1}) does not exist on {2} valves (type key {3}); remove the line or change the type key</source>
             <translation>{0} ({1}) u ventilů {2} neexistuje (typový klíč {3}); odstraňte řádek nebo změňte typový klíč</translation>
+        </message>
+        <message>
+            <source>{0} ({1}) is not a parameter of {2} valves (type key {3}): they have the object but no external sensor input; remove the line or change the type key</source>
+            <translation>{0} ({1}) není parametrem ventilů {2} (typový klíč {3}): mají objekt, ale žádný vstup externího snímače; odstraňte řádek nebo změňte typový klíč</translation>
         </message>
         <message>
             <source>{0}: no value after '='</source>
@@ -5038,6 +5046,10 @@ Všechny hodnoty zůstávají v dokumentu: uložte jej, nebo přejděte znovu do
         <message>
             <source>The valve {0} is back online; reading its parameters…</source>
             <translation>Ventil {0} je opět online; načítají se jeho parametry…</translation>
+        </message>
+        <message>
+            <source>The valve is open again: what the setpoint generator cut off with the link had changed is as before ({0})</source>
+            <translation>Ventil je opět připojen: co změnil generátor žádané hodnoty přerušený se spojením, je opět jako předtím ({0})</translation>
         </message>
         <message>
             <source>Another valve (serial number {0}) is where the lost valve {1} was ({2}). prm9tool does not connect to it by itself: it is a new valve. Go online to work with it.</source>

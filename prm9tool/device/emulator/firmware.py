@@ -8,6 +8,7 @@ from __future__ import annotations
 
 import os
 from collections.abc import Callable
+from typing import Any
 
 from prm9tool.catalogue import CATALOGUE, canopen_switches
 from prm9tool.catalogue.canopen_switches import LSS_BIT_TIMINGS_KBIT as LSS_KBIT
@@ -27,6 +28,7 @@ from prm9tool.device.emulator.loopstate import (
     MODE_HOLD,
     MODE_OFF,
     SIGNAL_ORDER,
+    Curve,
     LoopState,
 )
 from prm9tool.device.emulator.nvimage import NvImage, is_nonvolatile
@@ -100,6 +102,8 @@ class Firmware:
         self.setpoint_dirty = True
         self.config_dirty = True
         self.coil_temperature = 25.0
+        self.coefficients_memo: config.Memo[dict[str, Any]] = config.Memo()
+        self.curve_memo: config.Memo[Curve] = config.Memo()
         self.kernel, self.make_loop = kernels.chosen()
         self.gen: kernels.Loop = self.make_loop(self.loop)
         from prm9tool.device.emulator.odsetup import install
@@ -379,20 +383,25 @@ class Firmware:
 
     def value(self, mnemonic: str) -> int:
         """Integer RAM value of a parameter; 0 if it does not exist on this variant."""
-        if not self.od.has(mnemonic):
+        param = self.od.by_mnemonic.get(mnemonic)  # od.has and od.get in one lookup
+        if param is None:
             return 0
-        value = self.od.get(mnemonic)
+        value = self.od.values[param.key]
         return value if isinstance(value, int) else 0
 
     def _refresh_inputs(self) -> None:
         loop = self.loop
         supply = self.supply
         if self.config_dirty:
-            loop.coefficients = config.coefficients(
-                self.variant, self.value, self.plant, self.fw, self.coil_temperature, supply
+            variant, plant, fw = self.variant, self.plant, self.fw
+            temperature = self.coil_temperature
+            loop.coefficients = self.coefficients_memo.get(
+                self.value,
+                (variant, plant, fw, float(temperature).hex(), float(supply).hex()),
+                lambda v: config.coefficients(variant, v, plant, fw, temperature, supply),
             )
             loop.version += 1
-            self.setp_curve = config.curve_of(self.value, "SETPLIN")
+            self.setp_curve = self.curve_memo.get(self.value, (), config.setpoint_curve)
         loop.supply_v = supply
         loop.inputs_version += 1
         thermal.update_reading(self)

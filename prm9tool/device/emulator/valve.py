@@ -380,8 +380,14 @@ class EmulatedValve:
     # --- hooks for the CANopen slave --------------------------------------------------
     def add_cycle_listener(self, fn: Callable[[float], None]) -> None:
         """``fn(sim_time)`` every 1 ms of simulated time (loop thread, lock held)."""
+        with self.lock:  # a new list: a listener may add or remove one while they are called
+            self._fw.cycle_listeners = [*self._fw.cycle_listeners, fn]
+
+    def remove_cycle_listener(self, fn: Callable[[float], None]) -> None:
+        """Stop calling ``fn`` (no error if it is not registered). Without listeners, the
+        compiled kernel may pass the 1 ms tasks that change nothing itself (fasttick)."""
         with self.lock:
-            self._fw.cycle_listeners.append(fn)
+            self._fw.cycle_listeners = [f for f in self._fw.cycle_listeners if f != fn]
 
     def add_error_listener(self, fn: Callable[[int, int], None]) -> None:
         """``fn(emcy_code, error_register)`` on every change of the active error set."""
