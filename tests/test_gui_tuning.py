@@ -193,7 +193,7 @@ def test_online_a_test_asks_first_and_does_nothing_when_declined(qtbot, monkeypa
                 operation_finished = Signal(str, object)
                 failed = Signal(str)
                 lost = Signal(str)
-                reconnected = Signal(object)  # the runner's restore after a lost link
+                reconnected = Signal(object)  # as ValveConnection's (ValveRunner follows it)
 
             self.signals = Signals()
             for name in ("online_changed", "operation_finished", "failed", "lost", "reconnected"):
@@ -227,7 +227,7 @@ def test_a_test_on_the_valve_says_that_it_stops_the_running_setpoint_generator(q
         operation_finished = Signal(str, object)
         failed = Signal(str)
         lost = Signal(str)
-        reconnected = Signal(object)  # the runner's restore after a lost link
+        reconnected = Signal(object)  # as ValveConnection's (ValveRunner follows it)
 
     class Online:
         is_online = True

@@ -14,7 +14,7 @@ from __future__ import annotations
 
 import logging
 from collections.abc import Callable, Mapping, Sequence
-from typing import TYPE_CHECKING, Any, cast
+from typing import TYPE_CHECKING, cast
 
 from PySide6.QtCore import QObject, Qt, Signal
 
@@ -26,7 +26,7 @@ from prm9tool.online.valve_listing import default_lister, default_opener, list_i
 
 if TYPE_CHECKING:
     from prm9tool.device.session import ValveSession
-    from prm9tool.history.recorder import Recorder
+    from prm9tool.history.recorder import Details, Recorder
     from prm9tool.online.connection_protocol import ListedValves, ValveIdentity, ValveListing
     from prm9tool.online.recording import HistoryHook
 
@@ -98,7 +98,7 @@ class ValveConnection(LiveData, QObject):
         self._submit(Job("history_check", run, on_done, report=False))
 
     def record(self, operation: str, outcome: str, values: Mapping[str, int | str] | None,
-               details: Mapping[str, Any] | None = None) -> None:  # fmt: skip
+               details: Details | None = None) -> None:  # fmt: skip
         """Record an operation the GUI ran as its own job (e.g. restore factory values)."""
         if self.history is not None:
             hook = self.history
