@@ -4336,6 +4336,14 @@ Zajistěte, aby to hydraulika bezpečně snesla. Tlačítko Stop test kdykoli uk
             <translation>Přerušeno: %1</translation>
         </message>
         <message>
+            <source>(View → Access level)</source>
+            <translation>(Náhled → Úroveň oprávnění)</translation>
+        </message>
+        <message>
+            <source>Not accepted: %1</source>
+            <translation>Nepřevzato: %1</translation>
+        </message>
+        <message>
             <source>Accepted: %1</source>
             <translation>Převzato: %1</translation>
         </message>
@@ -4989,6 +4997,10 @@ Ano je porovná jako obvykle (bez dotazu se nic nezapíše); Ne přejde do reži
         <message>
             <source>The valve reports an unknown type key: {0}</source>
             <translation>Ventil hlásí neznámý typový klíč: {0}</translation>
+        </message>
+        <message>
+            <source>Nothing was sent to the valve</source>
+            <translation>Do ventilu nebylo nic odesláno</translation>
         </message>
         <message>
             <source>Storing the parameters in the valve…</source>

@@ -4314,6 +4314,14 @@ Stellen Sie sicher, dass die Hydraulik dafür sicher ist. Stopp beendet ihn jede
             <translation>Abgebrochen: %1</translation>
         </message>
         <message>
+            <source>(View → Access level)</source>
+            <translation>(Ansicht → Berechtigungsstufe)</translation>
+        </message>
+        <message>
+            <source>Not accepted: %1</source>
+            <translation>Nicht übernommen: %1</translation>
+        </message>
+        <message>
             <source>Accepted: %1</source>
             <translation>Übernommen: %1</translation>
         </message>
@@ -4964,6 +4972,10 @@ Ja vergleicht beide wie gewohnt (ohne Rückfrage wird nichts geschrieben); Nein 
         <message>
             <source>The valve reports an unknown type key: {0}</source>
             <translation>Das Ventil meldet einen unbekannten Typschlüssel: {0}</translation>
+        </message>
+        <message>
+            <source>Nothing was sent to the valve</source>
+            <translation>Es wurde nichts an das Ventil gesendet</translation>
         </message>
         <message>
             <source>Storing the parameters in the valve…</source>

@@ -268,6 +268,17 @@ class ValveWorkflow(QObject):
         """The Expert-level parameters whose document value differs from the valve's."""
         return self.uploads.expert_differences(valve_values)
 
+    def confirms_online_values(self, values: Mapping[str, Raw]) -> bool:
+        """Online, ``values`` about to go into the document, and so to the valve (a compared
+        file's, a history record's): at Basic level Expert-level changes need a Yes, as an
+        upload's do. Offline True (an upload asks later)."""
+        if not self._connection.is_online:
+            return True
+        if self.uploads.basic_user_confirms_expert_values(self._doc.values, values):
+            return True
+        self.message_posted.emit(self.tr("Nothing was sent to the valve"))
+        return False
+
     def store(self) -> None:
         """Valve → Store: the valve keeps what it works with now (also after a restart)."""
         self.progress.start("store", self.tr("Storing the parameters in the valve…"), False)
