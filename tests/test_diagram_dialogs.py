@@ -336,6 +336,19 @@ def test_slider_mapping_round_trips():
 
 
 # --- current and dither ----------------------------------------------------------------------------------
+def test_a_value_finer_than_the_resolution_is_taken_rounded_and_said_so(qtbot, setup):
+    s = setup(E02)
+    dialog = open_dialog(qtbot, s, "current_limit")
+    type_into(dialog.fields["LIMTB"], "2100.7")
+    assert s.doc.value("LIMTB") == 2101  # taken, not refused
+    assert dialog.error_label.isVisible()
+    assert dialog.error_label.text() == (
+        "2100.7 mA rounded to 2101 mA (the parameter's resolution is 1 mA)"
+    )
+    type_into(dialog.fields["LIMTB"], "2000")  # an exact value: the note goes
+    assert s.doc.value("LIMTB") == 2000 and not dialog.error_label.isVisible()
+
+
 def test_a_current_limit_above_curnorm_is_refused(qtbot, setup):
     s = setup(E02)
     dialog = open_dialog(qtbot, s, "current_limit")

@@ -115,6 +115,26 @@ def test_edit_dialog_shows_limits_and_default_and_sets_the_value(view, doc):
     assert doc.display("DTAMP") == "20"
 
 
+def test_a_value_finer_than_the_resolution_is_set_rounded_and_the_status_bar_says_so(
+    view, doc, qtbot
+):
+    dialog = view.make_edit_dialog("LIMTB")
+    dialog.set_text("2100,7")  # the decimal comma as well
+    with qtbot.waitSignal(view.message_posted) as posted:
+        dialog._buttons.accepted.emit()
+    assert dialog.result() == dialog.DialogCode.Accepted
+    assert doc.value("LIMTB") == 2101
+    assert posted.args == ["2100.7 mA rounded to 2101 mA (the parameter's resolution is 1 mA)"]
+
+
+def test_an_exact_value_posts_no_rounding_note(view, doc, qtbot):
+    dialog = view.make_edit_dialog("LIMTB")
+    dialog.set_text("2100")
+    with qtbot.assertNotEmitted(view.message_posted):
+        dialog._buttons.accepted.emit()
+    assert doc.value("LIMTB") == 2100
+
+
 @pytest.mark.parametrize(
     ("mnemonic", "text", "reason"),
     [

@@ -1459,6 +1459,10 @@ Die letzte Aktion wurde womöglich nicht vollständig ausgeführt. Speichern Sie
             <translation>Ventilauswahl {0}</translation>
         </message>
         <message>
+            <source>{0}{1} rounded to {2}{1} (the parameter's resolution is {3}{1})</source>
+            <translation>{0}{1} auf {2}{1} gerundet (die Auflösung des Parameters ist {3}{1})</translation>
+        </message>
+        <message>
             <source>All ramps = {0}{1}</source>
             <translation>Alle Rampen = {0}{1}</translation>
         </message>

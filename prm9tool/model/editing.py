@@ -6,14 +6,20 @@ funkce"): changing one ramp sets every ramp of the valve to that value as one un
 
 from __future__ import annotations
 
+import math
+
 from prm9tool.catalogue import CAPPED_BY, CATALOGUE, Access, Parameter
 from prm9tool.errors import AccessDeniedError
 from prm9tool.i18n import format_value
-from prm9tool.messages import QT_TRANSLATE_NOOP, Number
+from prm9tool.messages import QT_TRANSLATE_NOOP, Message, Number
 from prm9tool.model.access import AccessModel
 from prm9tool.model.document import ParameterDocument, Raw
 
 RAMPS: tuple[str, ...] = ("RAMPSETPOSUP", "RAMPSETPOSDOWN", "RAMPSETNEGUP", "RAMPSETNEGDOWN")
+
+_ROUNDED = QT_TRANSLATE_NOOP(
+    "Edits", "{0}{1} rounded to {2}{1} (the parameter's resolution is {3}{1})"
+)
 
 
 def linked_mnemonics(doc: ParameterDocument, access: AccessModel, mnemonic: str) -> list[str]:
@@ -45,11 +51,36 @@ def range_text(param: Parameter, doc: ParameterDocument | None, *, unit: bool = 
     return f"{format_value(param, low)} … {format_value(param, high)}{suffix}{capped}"
 
 
-def apply_edit(doc: ParameterDocument, access: AccessModel, mnemonic: str, raw: Raw) -> None:
+def rounding_note(param: Parameter, entered: str, raw: Raw) -> Message | None:
+    """What to tell the user when ``entered`` (a number as typed, point or comma) is finer than
+    ``param``'s resolution and became ``raw``: ``2100.7 mA rounded to 2101 mA (the parameter's
+    resolution is 1 mA)``; None when the value is kept as typed (or is not a number)."""
+    if param.is_string or param.choices or not isinstance(raw, int):
+        return None
+    typed_text = entered.strip()
+    if typed_text.count(",") == 1:
+        typed_text = typed_text.replace(",", ".")
+    try:
+        typed = float(typed_text)
+    except ValueError:
+        return None
+    if math.isclose(typed, raw * param.scale, rel_tol=1e-9, abs_tol=param.scale * 1e-6):
+        return None
+    unit = f" {param.unit}" if param.unit else ""
+    return _ROUNDED(
+        Number(typed_text), unit, Number(param.format_display(raw)), Number(param.format_display(1))
+    )
+
+
+def apply_edit(
+    doc: ParameterDocument, access: AccessModel, mnemonic: str, raw: Raw, entered: str | None = None
+) -> Message | None:
     """Set ``mnemonic`` as the user at the current access level would; one undo step.
 
     Raises AccessDeniedError if the level may not change it, ValueRangeError with the reason
-    if the value is not allowed. Nothing changes when an error is raised.
+    if the value is not allowed. Nothing changes when an error is raised. ``entered``: the
+    text the user typed; the value is then set and the note returned if it was rounded to
+    the parameter's resolution (:func:`rounding_note`), which the editor shows. Else None.
     """
     param = CATALOGUE[mnemonic]
     reason = access.lock_reason(param)
@@ -66,3 +97,4 @@ def apply_edit(doc: ParameterDocument, access: AccessModel, mnemonic: str, raw: 
             Number(param.format_display(raw)), unit
         )
         doc.set_values(dict.fromkeys(targets, raw), label)
+    return rounding_note(param, entered, raw) if entered is not None else None

@@ -231,7 +231,8 @@ class MainWindow(QMainWindow):
             signal.connect(self._show_file)
         self.files.about_to_replace.connect(self.sync.stop)
         self.files.document_replaced.connect(self.valve.compare_again)
-        for source in (self.files, self.valve, self.records, self.compare, self.dcf):
+        for source in (self.files, self.valve, self.records, self.compare, self.dcf,
+                       self.parameter_view):  # fmt: skip
             source.message_posted.connect(lambda text: s.showMessage(text, 8000))
 
     def show_object_dictionary(self) -> None:

@@ -8,7 +8,7 @@ from __future__ import annotations
 
 import re
 
-from PySide6.QtCore import QEvent
+from PySide6.QtCore import QEvent, Signal
 from PySide6.QtWidgets import (
     QComboBox,
     QDialog,
@@ -26,7 +26,7 @@ from prm9tool.i18n import ambiguous_number, current_language, format_value, text
 from prm9tool.model.access import AccessModel
 from prm9tool.model.document import ParameterDocument, Raw
 from prm9tool.model.editing import apply_edit, linked_mnemonics, range_text
-from prm9tool.translate import error_text
+from prm9tool.translate import error_text, translated
 from prm9tool.views.diagram.colours import toned_style
 
 # A value and its unit stay on one line when the reason wraps ("2600 mA", not "2600 / mA").
@@ -39,6 +39,10 @@ def _unbroken_units(text: str) -> str:
 
 class ParameterEditDialog(QDialog):
     """Shows a parameter's limits and default and lets the user enter a new value."""
+
+    # The value was taken, but not exactly as typed ("2100.7 mA rounded to 2101 mA …"): the
+    # dialog closes, so the parameter list passes this on to the status bar.
+    value_rounded = Signal(str)
 
     def __init__(
         self,
@@ -174,10 +178,14 @@ class ParameterEditDialog(QDialog):
 
     def _on_accepted(self) -> None:
         try:
-            apply_edit(self._doc, self._access, self.param.mnemonic, self._entered_raw())
+            raw = self._entered_raw()
+            entered = self._editor.text() if isinstance(self._editor, QLineEdit) else None
+            note = apply_edit(self._doc, self._access, self.param.mnemonic, raw, entered)
         except (ValueRangeError, AccessDeniedError) as exc:
             self.show_error(exc)
             return
+        if note is not None:
+            self.value_rounded.emit(translated(note))
         self.accept()
 
     def show_error(self, error: Exception) -> None:

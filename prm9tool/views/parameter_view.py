@@ -29,6 +29,7 @@ class ParameterListView(QWidget):
     """Table of every parameter of the variant at the current access level."""
 
     edit_requested = Signal(str)  # mnemonic whose edit dialog is about to open
+    message_posted = Signal(str)  # for the status bar: a typed value was rounded
 
     def __init__(
         self, doc: ParameterDocument, access: AccessModel, parent: QWidget | None = None
@@ -99,7 +100,9 @@ class ParameterListView(QWidget):
 
     def make_edit_dialog(self, mnemonic: str) -> ParameterEditDialog:
         """The edit dialog for ``mnemonic`` (not yet shown)."""
-        return ParameterEditDialog(self._doc, self._access, mnemonic, self)
+        dialog = ParameterEditDialog(self._doc, self._access, mnemonic, self)
+        dialog.value_rounded.connect(self.message_posted)
+        return dialog
 
     def edit_parameter(self, mnemonic: str) -> None:
         """Open the edit dialog for ``mnemonic`` (window-modal; one at a time)."""

@@ -28,11 +28,13 @@ from prm9tool.model.access import AccessModel
 from prm9tool.model.document import ParameterDocument, Raw
 from prm9tool.model.editing import apply_edit
 from prm9tool.online.connection_protocol import DiagramConnection, StepSimulation
-from prm9tool.translate import error_text
+from prm9tool.translate import error_text, translated
 from prm9tool.views.diagram.colours import toned_style
 from prm9tool.views.diagram.dialogs.fields import ChoiceField, ValueField, not_on_enter
 
 Field = ValueField | ChoiceField
+ERROR_LABEL_STYLE = "color: #d03030; font-weight: bold;"  # a refused entry
+NOTE_LABEL_STYLE = "color: #1a5fb4;"  # a remark on an entry that was taken
 MAX_SIZE = (1000, 690)  # a 1024 × 768 screen less the title bar and a task bar
 
 
@@ -79,7 +81,7 @@ class BlockDialog(QDialog):
         )
         self.error_label = QLabel()
         self.error_label.setWordWrap(True)
-        self.set_paper_style(self.error_label, "color: #d03030; font-weight: bold;")
+        self.set_paper_style(self.error_label, ERROR_LABEL_STYLE)
         self.error_label.hide()
         self.form = QFormLayout()
         self.form.setRowWrapPolicy(QFormLayout.RowWrapPolicy.WrapAllRows)  # caption above field
@@ -166,14 +168,18 @@ class BlockDialog(QDialog):
         self.resize(width, height)
 
     # --- editing -----------------------------------------------------------------------------
-    def apply_value(self, mnemonic: str, raw: Raw) -> bool:
-        """Set one value as the user at the current level would; show the reason if refused."""
+    def apply_value(self, mnemonic: str, raw: Raw, entered: str | None = None, /) -> bool:
+        """Set one value as the user at the current level would; show the reason if refused,
+        or that the value ``entered`` (as typed) was rounded to the parameter's resolution."""
         try:
-            apply_edit(self.doc, self.access, mnemonic, raw)
+            note = apply_edit(self.doc, self.access, mnemonic, raw, entered)
         except (ValueRangeError, AccessDeniedError) as exc:
             self.show_error(error_text(exc))
             return False
-        self.clear_error()
+        if note is None:
+            self.clear_error()
+        else:
+            self.show_note(translated(note))
         return True
 
     def apply_values(self, values: Mapping[str, Raw], label: str) -> bool:
@@ -201,6 +207,13 @@ class BlockDialog(QDialog):
 
     def show_error(self, message: str) -> None:
         """Show why an entry was refused."""
+        self.set_paper_style(self.error_label, ERROR_LABEL_STYLE)
+        self.error_label.setText(message)
+        self.error_label.show()
+
+    def show_note(self, message: str) -> None:
+        """Show a remark on an entry that was taken (where a refusal would be, not in red)."""
+        self.set_paper_style(self.error_label, NOTE_LABEL_STYLE)
         self.error_label.setText(message)
         self.error_label.show()
 

@@ -8,6 +8,7 @@ applies it as one undoable edit or shows why it was refused.
 from __future__ import annotations
 
 from collections.abc import Callable, Iterable
+from typing import Protocol
 
 from PySide6.QtCore import QSignalBlocker, Qt
 from PySide6.QtGui import QKeyEvent
@@ -21,7 +22,15 @@ from prm9tool.model.document import ParameterDocument, Raw
 from prm9tool.model.editing import range_text
 from prm9tool.translate import error_text
 
-Apply = Callable[[str, Raw], bool]  # returns False (and shows the reason) when refused
+
+class Apply(Protocol):
+    """Sets a value (``entered``: as typed); returns False (and shows the reason) if refused."""
+
+    def __call__(self, mnemonic: str, raw: Raw, entered: str | None = None, /) -> bool:
+        """Set ``mnemonic`` to ``raw``."""
+        ...
+
+
 Report = Callable[[str], None]  # shows a refusal reason
 ERROR_STYLE = "border: 2px solid #d03030;"
 
@@ -106,7 +115,7 @@ class ValueField(QLineEdit):
             self.setStyleSheet(ERROR_STYLE)
             self._report(error_text(exc))
             return
-        if not self._apply(self.mnemonic, raw):
+        if not self._apply(self.mnemonic, raw, text):
             self.setStyleSheet(ERROR_STYLE)
 
 
