@@ -10,7 +10,6 @@ from scope_fakes import FakeConnection
 
 from prm9tool import i18n
 from prm9tool.model.document import ParameterDocument
-from prm9tool.views.scope.plot import SHARED_LABEL_CHARS, shared_names
 from prm9tool.views.scope.widget import ScopeWidget
 
 E02 = "PRM9-06.3Z11/30-24E02S02"
@@ -76,15 +75,6 @@ def test_an_axis_two_channels_share_is_named_in_czech_not_numbered(qtbot, scope,
     label = scope.plot.axes[0].labelText
     assert ">1</span>" not in label and ">2</span>" not in label
     assert "Skutečná poloha šoupátka" in label and label.endswith("[%]")
-
-
-def test_shared_names_drop_object_numbers_then_cut_each_name_evenly():
-    names = ["Skutečná poloha šoupátka (0x6301)", "Žádaná hodnota po polaritě a prahu"]
-    assert shared_names(names, 80) == names
-    assert shared_names(names, 62) == ["Skutečná poloha šoupátka", names[1]]
-    cut = shared_names([*names, "Výstup polohového regulátoru"], SHARED_LABEL_CHARS)
-    assert all(len(name) <= SHARED_LABEL_CHARS // 3 for name in cut)
-    assert cut[0].startswith("Skutečná") and cut[1].endswith("…")
 
 
 def test_after_stop_the_legend_marks_the_values_as_those_at_stop(qtbot, scope, conn):

@@ -3,17 +3,20 @@
 from __future__ import annotations
 
 import math
+import re
 
 import numpy as np
 import pyqtgraph as pg
 import pytest
 from PySide6.QtCore import QCoreApplication, QEvent, Qt
+from PySide6.QtGui import QFontMetrics
 from scope_fakes import FakeConnection
 
 from prm9tool import i18n
 from prm9tool.catalogue.signals import signals_for
 from prm9tool.model.document import ParameterDocument
 from prm9tool.scope import TriggerMode
+from prm9tool.views.scope.legend import COLOURS
 from prm9tool.views.scope.widget import ScopeWidget
 
 E02 = "PRM9-06.3Z11/30-24E02S02"
@@ -367,17 +370,37 @@ def test_each_channel_has_its_own_scale_and_same_units_can_share_one(scope, conn
     assert "Spool position actual" not in plot.axes[0].labelText
 
 
-def test_an_axis_shared_by_three_long_names_is_labelled_with_shortened_names(scope, conn):
+def _plain_width(axis, label: str) -> int:
+    plain = re.sub(r"<[^>]+>", "", label)
+    return QFontMetrics(axis.label.font()).horizontalAdvance(plain)
+
+
+def test_an_axis_shared_by_names_too_long_for_it_shows_the_legends_colour_squares(
+    qtbot, scope, conn
+):
+    """At 1000 × 620 the three joined names were cut: "Demand value…, Spool position
+    actual (…". The axis now shows the legend's squares in the channels' colours (the legend
+    above names them) and names them all in its tooltip; a taller plot names them on it."""
+    scope.resize(1000, 620)
     for key in ("demand", "position_actual", "position_setpoint"):
         scope.preselect(key)
     scope.start()
     conn.samples_received.emit(np.zeros((100, 3)))
     scope._redraw()
+    qtbot.waitUntil(lambda: scope.plot._label_room > 0)
     assert scope.plot.shared_axes() == {1: 0, 2: 0}
-    label = scope.plot.axes[0].labelText
-    assert "Spool position actual (0x6301)" not in label  # shortened, issue 25: not numbered
-    assert not any(f">{n}</span>" in label for n in (1, 2, 3)) and label.endswith("[%]")
-    assert label.count("</span>") == 3
+    axis = scope.plot.axes[0]
+    label = axis.labelText
+    assert re.sub(r"<[^>]+>", "", label) == "■ ■ ■ [%]"
+    for slot in range(3):  # each square in its channel's colour, as in the legend
+        assert f'color:{COLOURS[slot]}">■</span>' in label
+    assert axis.toolTip() == (
+        "Demand value after ramp (0x6310), Spool position actual (0x6301), Position setpoint [%]"
+    )
+    scope.resize(1000, 1000)  # room for the names: they come back, whole
+    qtbot.waitUntil(lambda: "Spool position actual" in axis.labelText)
+    assert _plain_width(axis, axis.labelText) <= scope.plot.views[0].height()
+    assert "…" not in axis.labelText
 
 
 def test_zooming_an_axis_by_hand_stops_its_autoscale_until_auto(scope, conn):

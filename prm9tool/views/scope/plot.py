@@ -21,7 +21,7 @@ from collections.abc import Sequence
 import numpy as np
 import pyqtgraph as pg
 from PySide6.QtCore import Qt, Signal
-from PySide6.QtGui import QImage
+from PySide6.QtGui import QFontMetrics, QImage
 from PySide6.QtWidgets import (
     QGraphicsItem,
     QHBoxLayout,
@@ -39,7 +39,7 @@ from prm9tool.views.scope.legend import COLOURS, LegendEntry
 
 CURSOR_COLOUR = "#e0e0e0"
 SHARED_AXIS_COLOUR = "#c8c8c8"  # tick labels of an axis two channels share
-SHARED_LABEL_CHARS = 72  # longer joined names do not fit a 520-pixel plot: they are shortened
+OBJECT_NUMBER = re.compile(r"\s*\(0x[0-9A-Fa-f]+\)")  # "(0x6301)" in a measuring point's name
 
 
 class ScopePlot(QWidget):
@@ -71,6 +71,8 @@ class ScopePlot(QWidget):
             view.setXLink(self.item)
             view.setZValue(-10)  # below the main plot: mouse and cursors act on channel 1's view
         self.views[0].sigResized.connect(self._sync_geometry)
+        self.views[0].sigResized.connect(self._on_resized)
+        self._label_room = 0  # the axis length the labels were last fitted to (pixels)
         self.grid = PlotGrid(self.views[0], self.item.getAxis("bottom"), self.axes[0])
         self.item.scene().addItem(self.grid)
         self.grid.follow_view()
@@ -177,18 +179,42 @@ class ScopePlot(QWidget):
             if slot in self._shared:
                 continue
             if len(members) == 1:
+                axis.setToolTip("")
                 axis.setLabel(f"{text(signal.text)} [{signal.unit}]", color=COLOURS[slot])
                 axis.setTextPen(COLOURS[slot])
                 continue
-            names = shared_names([text(signals[k].text) for k in members], SHARED_LABEL_CHARS)
-            spans = (
-                f'<span style="color:{COLOURS[k]}">{name}</span>'
-                for k, name in zip(members, names, strict=True)
-            )
-            axis.setLabel(f"{', '.join(spans)} [{signal.unit}]", color=SHARED_AXIS_COLOUR)
+            names = [text(signals[k].text) for k in members]
+            axis.setLabel(self._shared_label(members, names, signal.unit), color=SHARED_AXIS_COLOUR)
+            axis.setToolTip(f"{', '.join(names)} [{signal.unit}]")
             axis.setTextPen(SHARED_AXIS_COLOUR)
         if not signals:
             self.axes[0].setLabel("")
+
+    def _shared_label(self, members: Sequence[int], names: Sequence[str], unit: str) -> str:
+        """The label of an axis several channels share: their names in their colours if they
+        fit along the axis (without object numbers if need be), else the legend's colour
+        squares ("■ ■ [%]"): the legend above the plot names the channels, the axis's tooltip
+        too. A cut "Demand value…, Spool position actual (…" named nothing readable."""
+        room = self._label_room
+        metrics = QFontMetrics(self.axes[0].label.font())
+        for candidate in (names, [OBJECT_NUMBER.sub("", name) for name in names]):
+            if metrics.horizontalAdvance(f"{', '.join(candidate)} [{unit}]") <= room:
+                break
+        else:
+            candidate = ["■"] * len(members)
+        spans = (
+            f'<span style="color:{COLOURS[k]}">{name}</span>'
+            for k, name in zip(members, candidate, strict=True)
+        )
+        joint = " " if candidate[0] == "■" else ", "
+        return f"{joint.join(spans)} [{unit}]"
+
+    def _on_resized(self) -> None:
+        room = int(self.views[0].height())
+        if room != self._label_room:
+            self._label_room = room
+            if self._shared:
+                self._label_axes()
 
     def _sharing(self) -> dict[int, int]:
         """Channels whose axis would repeat an earlier channel's: same unit, both autoscaled
@@ -364,20 +390,3 @@ class ScopePlot(QWidget):
     def render_image(self) -> QImage:
         """The legend strip and plot as an image (PNG export)."""
         return self.grab().toImage()
-
-
-def shared_names(names: Sequence[str], limit: int) -> list[str]:
-    """The names of channels that share an axis, short enough to fit ``limit`` characters
-    together: first without their object numbers ("(0x6301)"), then each cut to an equal
-    share with "…". Never bare channel numbers: "1, 2 [%]" named nothing (issue 25)."""
-
-    def fits(candidates: Sequence[str]) -> bool:
-        return sum(len(name) + 2 for name in candidates) <= limit
-
-    if fits(names):
-        return list(names)
-    short = [re.sub(r"\s*\(0x[0-9A-Fa-f]+\)", "", name) for name in names]
-    if fits(short):
-        return short
-    share = max(8, limit // len(short) - 2)
-    return [name if len(name) <= share else name[: share - 1].rstrip() + "…" for name in short]
