@@ -169,6 +169,26 @@ def test_a_bad_profile_is_reported_and_nothing_runs(qtbot, window, tmp_path):
     assert not window.runner.busy
 
 
+def test_the_profile_refusal_goes_when_the_field_is_cleared_or_a_good_profile_chosen(
+    qtbot, window, tmp_path
+):
+    report = window.report
+    window.tabs.setCurrentWidget(report)
+    report.profile_path.setText(str(tmp_path / "missing.toml"))
+    report.run_button.click()
+    assert "cannot read the profile" in report.result.text()
+    shot(window, "profile_error")
+    report.profile_path.clear()
+    assert report.result.text() == ""
+    shot(window, "profile_cleared")
+    report.profile_path.setText(str(tmp_path / "missing.toml"))
+    report.run_button.click()
+    assert "cannot read the profile" in report.result.text()
+    use_profile(window, tmp_path, "[test]\nstep_amplitudes_pct = [25]\n")  # as Browse… does
+    assert report.result.text() == ""
+    assert not window.runner.busy  # choosing a profile runs nothing
+
+
 def test_stop_ends_the_test_and_says_so(qtbot, window):
     window.tabs.setCurrentWidget(window.static)
     window.static.period.setValue(60.0)

@@ -32,6 +32,8 @@ class ReportPage(Page):
     def __init__(self, window: TuningHost) -> None:
         super().__init__(window)
         self.profile_path = QLineEdit()
+        self.profile_path.textChanged.connect(self._on_profile_changed)
+        self._profile_error = False  # the result line shows why the profile was refused
         self.browse_button = QPushButton()
         self.browse_button.clicked.connect(self.browse)
         row = QHBoxLayout()
@@ -56,6 +58,13 @@ class ReportPage(Page):
         if path:
             self.profile_path.setText(path)
 
+    def _on_profile_changed(self) -> None:
+        """A refusal of the profile named before no longer applies once the field changes
+        (cleared, typed over or another file chosen): it would blame the new one."""
+        if self._profile_error:
+            self._profile_error = False
+            self.result.clear()
+
     def run(self) -> None:
         """All tests of the profile."""
         path = self.profile_path.text().strip()
@@ -63,6 +72,7 @@ class ReportPage(Page):
             profile = load_profile(path) if path else DEFAULT
         except ProfileError as exc:
             self.result.setText(str(exc))
+            self._profile_error = True
             return
         what = self.tr("steps of %1 %, a sine sweep of ±%2 % and a triangle over the whole range, about %3 s").replace(
             "%1", ", ".join(f"{a:g}" for a in profile.step_amplitudes_pct)).replace(
