@@ -64,6 +64,9 @@ def test_the_dialog_lists_the_nodes_and_goes_online_with_the_valve(qtbot, rig, s
     cells = [[dialog.table.item(r, c).text() for c in range(4)] for r in range(2)]
     assert cells[0] == ["can:5", "not a PRM9", "", ""]
     assert cells[1][:3] == ["can:10", E04, str(rig.valve.serial)]
+    described = [dialog.table.item(r, 7).text() for r in range(2)]
+    assert described[0].startswith("Node 5: not a PRM9 (device type 0x")
+    assert described[1].startswith(f"CANopen node 10 on virtual channel {rig.options.channel}")
     assert "2 nodes answered. 1 of them a PRM9 valve." in dialog.state.text()
     assert not ok.isEnabled()
     dialog.table.selectRow(0)  # not a PRM9: not selectable
@@ -219,7 +222,7 @@ def test_the_count_of_nodes_uses_the_plural_forms_of_the_language(
     def node(number: int, kind: str) -> SimpleNamespace:
         return SimpleNamespace(
             kind=kind, device_id=f"can:{number}", type_key=E04, serial=1, firmware="",
-            nmt_state="", heartbeat_age_s=None, last_emcy="", description="",
+            nmt_state="", heartbeat_age_s=None, last_emcy="", description="", can=None,
         )  # fmt: skip
 
     answers = [[node(10, "can")], [node(n, "not-prm9") for n in (5, 6, 7)]]
@@ -253,3 +256,58 @@ def test_valve_store_over_canopen_uses_the_sessions_store(qtbot, rig, settings):
     finally:
         connection.go_offline()
         connection.shutdown()
+
+
+def test_the_description_column_is_in_the_program_language(qtbot, settings):
+    """The device layer's description is English ("CANopen node 10 on udp_multicast …"); the
+    dialog words the node's facts in German and Czech."""
+    from prm9tool import i18n
+    from prm9tool.device.factory import DeviceEntry
+    from prm9tool.device.records import CanNodeFacts
+
+    bus = {"interface": "udp_multicast", "channel": "239.0.0.1", "bitrate": 500000}
+    valve = DeviceEntry(
+        "can:10", "can", E04, 7, "1.0", "CANopen node 10 on udp_multicast channel 239.0.0.1",
+        can=CanNodeFacts(node_id=10, name="PRM9", **bus),
+    )  # fmt: skip
+    other = DeviceEntry(
+        "can:5", "not-prm9", "", 0, "", "node 5: not a PRM9",
+        can=CanNodeFacts(node_id=5, device_type=0x191, vendor=None, **bus),
+    )  # fmt: skip
+    mute = DeviceEntry(
+        "can:6", "not-prm9", "", 0, "", "node 6: does not answer",
+        can=CanNodeFacts(node_id=6, detail="SDO timeout", **bus),
+    )  # fmt: skip
+    dialog = CanBusDialog(lambda _bus, deliver: deliver([valve, other, mute]), settings)
+    qtbot.addWidget(dialog)
+    expected = {
+        "de": [
+            "CANopen-Knoten 10 an udp_multicast Kanal 239.0.0.1, 500000 bit/s: PRM9",
+            "Knoten 5: kein PRM9 (Gerätetyp 0x191, Hersteller keiner)",
+            "Knoten 6 antwortet nicht als CANopen-Knoten: SDO timeout",
+        ],
+        "cs": [
+            "Uzel CANopen 10 na udp_multicast kanál 239.0.0.1, 500000 bit/s: PRM9",
+            "Uzel 5: není PRM9 (typ zařízení 0x191, výrobce žádný)",
+            "Uzel 6 neodpovídá jako uzel CANopen: SDO timeout",
+        ],
+    }
+    try:
+        for language, rows in expected.items():
+            i18n.set_language(language)
+            dialog.search.click()
+            assert [dialog.table.item(r, 7).text() for r in range(3)] == rows
+            if language == "de":
+                dialog.resize(1000, 360)
+                dialog.show()
+                _shot(dialog, "can_bus_description_de")
+    finally:
+        i18n.set_language("en")
+
+
+def _shot(widget, name: str) -> None:
+    import os
+    from pathlib import Path
+
+    if os.environ.get("PRM9TOOL_SCREENSHOTS"):
+        widget.grab().save(str(Path(os.environ["PRM9TOOL_SCREENSHOTS"]) / f"{name}.png"))

@@ -489,6 +489,37 @@ Poslední akce možná nebyla dokončena. Uložte svou práci pod novým názvem
         </message>
     </context>
     <context>
+        <name>CanNodeText</name>
+        <message>
+            <source>{0} channel {1}</source>
+            <translation>{0} kanál {1}</translation>
+        </message>
+        <message>
+            <source>, {0} bit/s</source>
+            <translation>, {0} bit/s</translation>
+        </message>
+        <message>
+            <source>CANopen node {0} on {1}: {2}</source>
+            <translation>Uzel CANopen {0} na {1}: {2}</translation>
+        </message>
+        <message>
+            <source>Node {0} does not answer as a CANopen node: {1}</source>
+            <translation>Uzel {0} neodpovídá jako uzel CANopen: {1}</translation>
+        </message>
+        <message>
+            <source>Node {0} could not be identified: {1}</source>
+            <translation>Uzel {0} se nepodařilo identifikovat: {1}</translation>
+        </message>
+        <message>
+            <source>none</source>
+            <translation>žádný</translation>
+        </message>
+        <message>
+            <source>Node {0}: not a PRM9 (device type 0x{1:X}, vendor {2})</source>
+            <translation>Uzel {0}: není PRM9 (typ zařízení 0x{1:X}, výrobce {2})</translation>
+        </message>
+    </context>
+    <context>
         <name>CanopenWindow</name>
         <message>
             <source>CANopen</source>

@@ -487,6 +487,37 @@ Die letzte Aktion wurde womöglich nicht vollständig ausgeführt. Speichern Sie
         </message>
     </context>
     <context>
+        <name>CanNodeText</name>
+        <message>
+            <source>{0} channel {1}</source>
+            <translation>{0} Kanal {1}</translation>
+        </message>
+        <message>
+            <source>, {0} bit/s</source>
+            <translation>, {0} bit/s</translation>
+        </message>
+        <message>
+            <source>CANopen node {0} on {1}: {2}</source>
+            <translation>CANopen-Knoten {0} an {1}: {2}</translation>
+        </message>
+        <message>
+            <source>Node {0} does not answer as a CANopen node: {1}</source>
+            <translation>Knoten {0} antwortet nicht als CANopen-Knoten: {1}</translation>
+        </message>
+        <message>
+            <source>Node {0} could not be identified: {1}</source>
+            <translation>Knoten {0} konnte nicht identifiziert werden: {1}</translation>
+        </message>
+        <message>
+            <source>none</source>
+            <translation>keiner</translation>
+        </message>
+        <message>
+            <source>Node {0}: not a PRM9 (device type 0x{1:X}, vendor {2})</source>
+            <translation>Knoten {0}: kein PRM9 (Gerätetyp 0x{1:X}, Hersteller {2})</translation>
+        </message>
+    </context>
+    <context>
         <name>CanopenWindow</name>
         <message>
             <source>CANopen</source>

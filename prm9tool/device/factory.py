@@ -19,7 +19,7 @@ from typing import TYPE_CHECKING, Any
 
 from prm9tool.catalogue.typekey import DEFAULT_EMULATOR_TYPE_KEY, TypeKey
 from prm9tool.device.canlink.bus import CanOptions
-from prm9tool.device.records import NmtState
+from prm9tool.device.records import CanNodeFacts, NmtState
 from prm9tool.device.session import ValveSession
 from prm9tool.errors import (
     CanBusError,
@@ -54,6 +54,7 @@ class DeviceEntry:
     heartbeat_age_s: float | None = None  # CAN nodes: seconds since the last heartbeat
     last_emcy: str = ""  # CAN nodes: the last EMCY heard ("" none)
     error: Exception | None = None  # emulator-unusable: why, for the program language
+    can: CanNodeFacts | None = None  # CAN nodes: what the description says, for the views
 
 
 def emulator_nv_path(serial: int) -> Path:
@@ -206,10 +207,17 @@ def can_entries(options: CanOptions) -> list[DeviceEntry]:
         bus.release(shared)
     entries = []
     for node in nodes:
+        facts = CanNodeFacts(
+            node_id=node.node_id, interface=options.interface, channel=options.channel,
+            bitrate=options.bitrate, name=node.name, device_type=node.device_type,
+            vendor=node.vendor, detail=node.detail,
+        )  # fmt: skip
         if not node.is_prm9:
             text = f"node {node.node_id}: {node.problem}"
             entries.append(
-                DeviceEntry(node.device_id, NOT_PRM9, "", 0, "", text, *heard[node.node_id])
+                DeviceEntry(
+                    node.device_id, NOT_PRM9, "", 0, "", text, *heard[node.node_id], can=facts
+                )
             )
             continue
         key = node.type_key or remembered(user_data_dir(), node.serial)
@@ -223,6 +231,7 @@ def can_entries(options: CanOptions) -> list[DeviceEntry]:
                 node.firmware,
                 f"CANopen node {node.node_id} on {options}: {node.name}",
                 *heard[node.node_id],
+                can=facts,
             )
         )
     return entries

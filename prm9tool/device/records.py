@@ -238,3 +238,18 @@ def check_cancel(cancel: threading.Event | None, step: str) -> None:
     """Raise OperationCancelledError if ``cancel`` is set."""
     if cancel is not None and cancel.is_set():
         raise OperationCancelledError(step)
+
+
+@dataclass(frozen=True, kw_only=True)
+class CanNodeFacts:
+    """What a CAN node's ``description`` says, as fields a view words in the program language
+    (the description is the command line's English)."""
+
+    node_id: int
+    interface: str  # the bus: python-can interface, channel and bit rate (None: its default)
+    channel: str
+    bitrate: int | None
+    name: str = ""  # a PRM9's device name (0x1008), the valve's own words
+    device_type: int | None = None  # another node's 0x1000 (None: it did not answer)
+    vendor: int | None = None  # its 0x1018/1 (None: no identity object)
+    detail: str = ""  # why it did not answer or identify itself (English, the device's error)

@@ -25,6 +25,43 @@ if TYPE_CHECKING:
     from prm9tool.scope import GeneratorSettings
 
 
+class CanNodeListing(Protocol):
+    """What a listed CAN node's English description says, as fields (``CanNodeFacts``): the
+    CAN bus dialog words it in the program language."""
+
+    @property
+    def node_id(self) -> int:
+        """The node ID, 1…127."""
+
+    @property
+    def interface(self) -> str:
+        """The bus's python-can interface."""
+
+    @property
+    def channel(self) -> str:
+        """The bus's channel."""
+
+    @property
+    def bitrate(self) -> int | None:
+        """The bus's bit rate (None: the interface's default)."""
+
+    @property
+    def name(self) -> str:
+        """A PRM9's device name (0x1008)."""
+
+    @property
+    def device_type(self) -> int | None:
+        """Another node's device type 0x1000 (None: it did not answer)."""
+
+    @property
+    def vendor(self) -> int | None:
+        """Another node's vendor ID 0x1018/1 (None: it has no identity object)."""
+
+    @property
+    def detail(self) -> str:
+        """Why it did not answer or identify itself (English), else ""."""
+
+
 class ValveListing(ValveIdentity, Protocol):
     """A valve that can be opened, as the HID configuration lists it (``DeviceEntry``)."""
 
@@ -47,6 +84,10 @@ class ValveListing(ValveIdentity, Protocol):
     @property
     def last_emcy(self) -> str:
         """CAN nodes: the last EMCY heard ("" none)."""
+
+    @property
+    def can(self) -> CanNodeListing | None:
+        """CAN nodes: what ``description`` says, as fields (None: not a CAN node)."""
 
 
 ListedValves = list[ValveListing] | Exception  # what listing the valves delivers: them, or why not

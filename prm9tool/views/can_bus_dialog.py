@@ -42,6 +42,7 @@ from prm9tool.paths import user_data_dir
 from prm9tool.translate import error_text
 from prm9tool.views.can_bus_lss import BusLssActions
 from prm9tool.views.can_lss_panel import LssPanel
+from prm9tool.views.can_node_text import node_description
 from prm9tool.views.help_dialog import add_context_help
 from prm9tool.views.row_table import row_table
 
@@ -234,7 +235,7 @@ class CanBusDialog(QDialog):
                 entry.nmt_state or "",
                 self.tr("{0:.1f} s ago").format(age) if age is not None else self.tr("none"),
                 entry.last_emcy,
-                entry.description,
+                node_description(entry),
             ]
             for column, text in enumerate(cells):
                 item = QTableWidgetItem(text)

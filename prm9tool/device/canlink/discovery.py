@@ -44,6 +44,7 @@ class NodeInfo:
     type_key: str | None = None  # 0x2041 where the valve has it
     derived: Derived | None = None
     problem: str = ""  # why it is not usable (not a PRM9, no answer)
+    detail: str = ""  # the error when it did not answer or identify itself (English)
 
     @property
     def is_prm9(self) -> bool:
@@ -78,7 +79,13 @@ def identify_node(
         try:
             device_type = sdo.read_u32(0x1000, 0)
         except (CommunicationError, SdoAbortError) as exc:
-            return NodeInfo(node_id, None, None, problem=f"does not answer as CANopen node: {exc}")
+            return NodeInfo(
+                node_id,
+                None,
+                None,
+                problem=f"does not answer as CANopen node: {exc}",
+                detail=str(exc),
+            )
         try:
             vendor: int | None = sdo.read_u32(0x1018, 1)
         except SdoAbortError:
@@ -104,7 +111,13 @@ def identify_node(
                 derive(sdo),
             )
         except (CommunicationError, SdoAbortError) as exc:
-            return NodeInfo(node_id, device_type, vendor, problem=f"identification failed: {exc}")
+            return NodeInfo(
+                node_id,
+                device_type,
+                vendor,
+                problem=f"identification failed: {exc}",
+                detail=str(exc),
+            )
 
 
 def optional_text(sdo: SdoChannel, index: int, subindex: int) -> str | None:
