@@ -137,7 +137,7 @@ def test_upload_of_display_values_and_its_history(valve):
     assert records[-1]["details"]["command"] == "python API"
 
 
-QUICK = "[test]\nstep_amplitudes_pct = [25.0]\nbode_duration_s = 1.0\nstatic_period_s = 2.0\n"
+QUICK = "[test]\nstep_amplitudes_pct = [25.0]\nbode_duration_s = 0.5\nstatic_period_s = 1.0\n"
 
 
 def test_a_characterization_is_recorded_as_the_command_line_records_it(valve, tmp_path):
@@ -160,6 +160,7 @@ def test_a_characterization_is_recorded_as_the_command_line_records_it(valve, tm
     recording_hook(recorder)(result)
     cli = prm9tool.history.records(4711)[-1]
     assert {k: v for k, v in details.items() if k != "command"} == cli["details"]
+    assert (cli["device_id"], cli["link"]) == (record["device_id"], record["link"])
     whole = recorder.store().record(record["id"])
     assert whole is not None and json.loads(whole["parameters"]) == result.parameters
     assert recorder.store().check_valve(4711) is None  # the chain holds both

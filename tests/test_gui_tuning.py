@@ -193,9 +193,10 @@ def test_online_a_test_asks_first_and_does_nothing_when_declined(qtbot, monkeypa
                 operation_finished = Signal(str, object)
                 failed = Signal(str)
                 lost = Signal(str)
+                reconnected = Signal(object)  # as ValveConnection's (ValveRunner follows it)
 
             self.signals = Signals()
-            for name in ("online_changed", "operation_finished", "failed", "lost"):
+            for name in ("online_changed", "operation_finished", "failed", "lost", "reconnected"):
                 setattr(self, name, getattr(self.signals, name))
             self.jobs = []
 
@@ -226,6 +227,7 @@ def test_a_test_on_the_valve_says_that_it_stops_the_running_setpoint_generator(q
         operation_finished = Signal(str, object)
         failed = Signal(str)
         lost = Signal(str)
+        reconnected = Signal(object)  # as ValveConnection's (ValveRunner follows it)
 
     class Online:
         is_online = True
@@ -234,7 +236,7 @@ def test_a_test_on_the_valve_says_that_it_stops_the_running_setpoint_generator(q
         def __init__(self):
             self.streaming_keys: list[str] = []
             self.signals = Signals()
-            for name in ("online_changed", "operation_finished", "failed", "lost"):
+            for name in ("online_changed", "operation_finished", "failed", "lost", "reconnected"):
                 setattr(self, name, getattr(self.signals, name))
             self.jobs: list[str] = []
             self.generator_running = True

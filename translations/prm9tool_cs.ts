@@ -1683,6 +1683,10 @@ Poslední akce možná nebyla dokončena. Uložte svou práci pod novým názvem
             <translation>Spojení s ventilem je přerušeno.</translation>
         </message>
         <message>
+            <source>The CAN adapter went bus-off: check the wiring, termination and bit rate.</source>
+            <translation>CAN adaptér přešel do stavu bus-off: zkontrolujte kabeláž, zakončení sběrnice a přenosovou rychlost.</translation>
+        </message>
+        <message>
             <source>The emulated valve could not join the CAN bus; it works over USB without CAN.</source>
             <translation>Emulovaný ventil se nemohl připojit ke sběrnici CAN; pracuje přes USB bez CAN.</translation>
         </message>
@@ -5030,6 +5034,10 @@ Všechny hodnoty zůstávají v dokumentu: uložte jej, nebo přejděte znovu do
         <message>
             <source>The valve {0} is back online; reading its parameters…</source>
             <translation>Ventil {0} je opět online; načítají se jeho parametry…</translation>
+        </message>
+        <message>
+            <source>The valve is open again: what the setpoint generator cut off with the link had changed is as before ({0})</source>
+            <translation>Ventil je opět připojen: co změnil generátor žádané hodnoty přerušený se spojením, je opět jako předtím ({0})</translation>
         </message>
         <message>
             <source>Another valve (serial number {0}) is where the lost valve {1} was ({2}). prm9tool does not connect to it by itself: it is a new valve. Go online to work with it.</source>

@@ -1673,6 +1673,10 @@ Die letzte Aktion wurde womöglich nicht vollständig ausgeführt. Speichern Sie
             <translation>Die Verbindung zum Ventil ist unterbrochen.</translation>
         </message>
         <message>
+            <source>The CAN adapter went bus-off: check the wiring, termination and bit rate.</source>
+            <translation>Der CAN-Adapter ist im Zustand Bus-Off: Verkabelung, Abschlusswiderstände und Bitrate prüfen.</translation>
+        </message>
+        <message>
             <source>The emulated valve could not join the CAN bus; it works over USB without CAN.</source>
             <translation>Das emulierte Ventil konnte dem CAN-Bus nicht beitreten; es arbeitet über USB ohne CAN.</translation>
         </message>
@@ -5005,6 +5009,10 @@ Alle Werte bleiben im Dokument erhalten: Speichern Sie es oder gehen Sie wieder 
         <message>
             <source>The valve {0} is back online; reading its parameters…</source>
             <translation>Das Ventil {0} ist wieder online; seine Parameter werden gelesen…</translation>
+        </message>
+        <message>
+            <source>The valve is open again: what the setpoint generator cut off with the link had changed is as before ({0})</source>
+            <translation>Das Ventil ist wieder verbunden: Was der mit der Verbindung abgebrochene Sollwertgenerator geändert hatte, ist wieder wie vorher ({0})</translation>
         </message>
         <message>
             <source>Another valve (serial number {0}) is where the lost valve {1} was ({2}). prm9tool does not connect to it by itself: it is a new valve. Go online to work with it.</source>

@@ -7,6 +7,7 @@ import re
 import struct
 from dataclasses import dataclass, field
 from enum import IntEnum, StrEnum
+from functools import cached_property
 
 from prm9tool.catalogue.variant import Coils, Config, Variant
 from prm9tool.errors import ValueRangeError
@@ -30,7 +31,7 @@ class DataType(IntEnum):
         """Encoded size in bytes (0 for variable-length strings)."""
         return _SIZES[self]
 
-    @property
+    @cached_property
     def is_string(self) -> bool:
         """True for the variable-length string type."""
         return self is DataType.VISIBLE_STRING
@@ -42,15 +43,17 @@ class DataType(IntEnum):
 
     def encode(self, value: int | str) -> bytes:
         """Encode a raw value little-endian as on the CAN bus."""
-        if self.is_string:
+        codec = _STRUCTS.get(self)
+        if codec is None:
             return str(value).encode("latin-1", errors="replace")
-        return struct.pack("<" + _FORMATS[self], int(value))
+        return codec.pack(int(value))
 
     def decode(self, data: bytes) -> int | str:
         """Decode little-endian bytes; raises ``struct.error``/``ValueError`` on wrong length."""
-        if self.is_string:
+        codec = _STRUCTS.get(self)
+        if codec is None:
             return data.decode("latin-1")
-        return int(struct.unpack("<" + _FORMATS[self], data)[0])
+        return int(codec.unpack(data)[0])
 
 
 _SIZES = {
@@ -72,6 +75,7 @@ _FORMATS = {
     DataType.UNSIGNED16: "H",
     DataType.UNSIGNED32: "I",
 }
+_STRUCTS = {dtype: struct.Struct("<" + fmt) for dtype, fmt in _FORMATS.items()}  # not strings
 _RANGES = {
     DataType.BOOLEAN: (0, 1),
     DataType.INTEGER8: (-128, 127),
@@ -191,7 +195,7 @@ class Parameter:
     extra: dict[str, str] = field(default_factory=dict, compare=False, hash=False)
 
     # --- identity -----------------------------------------------------------------
-    @property
+    @cached_property
     def key(self) -> tuple[int, int]:
         """``(index, subindex)``."""
         return (self.index, self.subindex)
@@ -207,7 +211,7 @@ class Parameter:
         real valve may lack that object, so over CANopen the parameter may be unavailable."""
         return not _DECIDED_ADDRESS.search(self.source)
 
-    @property
+    @cached_property
     def is_string(self) -> bool:
         """True for string parameters (type key, firmware version, device name)."""
         return self.dtype.is_string
@@ -217,7 +221,7 @@ class Parameter:
         of the variant's parameter set (``applies``): see :class:`Applies`."""
         return self.applies.on_device(variant)
 
-    @property
+    @cached_property
     def writable(self) -> bool:
         """True if the object dictionary accepts writes."""
         return self.obj_access in (ObjAccess.RW, ObjAccess.WO)

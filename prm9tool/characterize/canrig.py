@@ -110,6 +110,7 @@ class CanRig(Rig):
             f"CANopen node {session.node_id} ({options.interface} {options.channel}), "
             f"{how}, one sample per {self.period_s * 1000:g} ms",
             1.0 / self.period_s,
+            info.device_id,
         )
         self.late = 0  # samples of the last play taken late (SDO) or lost (SYNC)
         self.lost = 0  # samples lost in every play so far (bridged for the analysis)

@@ -67,7 +67,9 @@ class Details(TypedDict, total=False):
     chosen: int  # values the upload was given (a partial upload: fewer than the set)
     mismatches: dict[str, list[str]] | int  # mnemonic -> [wanted, read] (GUI); a count (batch)
     verification: str  # the batch mode's verdict of the read-back
-    store: str  # which store the link made (CANopen: 0x1010 or the upload's own)
+    store: str | None  # which store the link made (CANopen: 0x1010 or the upload's own)
+    upload_store: str | None  # restart-verify: how the verified upload had stored the set
+    checked: int  # restart-verify: uploaded values compared after the restart
     error: str  # why it failed
     backup: str | None  # the backup file taken before (restore-factory)
     stored: bool  # online edits: whether the values were stored

@@ -26,8 +26,8 @@ def recording_hook(recorder: Recorder) -> Callable[[Characterization], None]:
 
     def record(result: Characterization) -> None:
         info = result.info
-        valve = SimpleNamespace(type_key=info.type_key, serial=info.serial,
-                                firmware=info.firmware, device_id=str(info.link))  # fmt: skip
+        valve = SimpleNamespace(type_key=info.type_key, serial=info.serial, firmware=info.firmware,
+                                device_id=info.device_id or info.link)  # fmt: skip
         outcome, details = characterization_details(result)
         recorder.record_safely(valve, "characterization", outcome, result.parameters, details)
 

@@ -48,7 +48,7 @@ class HistoryHook:
         operation: str,
         outcome: str,
         parameters: Mapping[str, Raw] | None,
-        details: Details | Mapping[str, object] | None = None,
+        details: Details | None = None,
         failed_step: str | None = None,
     ) -> None:
         """Record one operation on the session's valve; ``details``: a :class:`Details`

@@ -23,6 +23,7 @@ from prm9tool.errors import CommunicationError
 
 if TYPE_CHECKING:
     from prm9tool.device.session import ValveSession
+    from prm9tool.history.recorder import Details
     from prm9tool.online.recording import HistoryHook
 
 Raw = int | str
@@ -61,7 +62,7 @@ def verify_by_restart(
     last upload wrote, as the document holds them now); ``upload_store`` is how that upload
     stored them. The outcome goes into ``history``; CommunicationError when the valve does not
     come back (recorded first)."""
-    details: dict[str, object] = {"upload_store": upload_store, "checked": len(expected)}
+    details: Details = {"upload_store": upload_store, "checked": len(expected)}
     try:
         session.restart()
         values = dict(session.download(progress))

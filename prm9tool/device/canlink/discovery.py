@@ -146,7 +146,7 @@ def sdo_channel(shared: CanNetwork, node_id: int, timeout_s: float) -> Iterator[
         if existing is None:
             network.add_node(node)
     try:
-        yield SdoChannel(node, timeout_s, lambda: shared.error_frames)  # type: ignore[arg-type]
+        yield SdoChannel(node, timeout_s, shared)  # type: ignore[arg-type]
     finally:
         if existing is None:
             with shared.lock:

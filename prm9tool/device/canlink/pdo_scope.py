@@ -29,7 +29,7 @@ from prm9tool.device.canlink.sampler import DEMAND_KEYS, Demand
 from prm9tool.device.canlink.sdo import SdoChannel
 from prm9tool.device.canlink.sync_clock import SlotSamples, SyncClock
 from prm9tool.device.records import NmtState
-from prm9tool.errors import DeviceDisconnectedError, Prm9Error
+from prm9tool.errors import CanBusOffError, DeviceDisconnectedError, Prm9Error
 
 MIN_PERIOD_S = 0.001
 SYNC_AND_TPDO1_BITS = (47 + 3) + (47 + 32 + 3)  # SYNC (no data) + TPDO1 (4 bytes) on the wire
@@ -110,8 +110,11 @@ class PdoSampler:
         """One row per SYNC period up to one settling time ago, shape (n, len(keys)); a
         period without its TPDO1 is NaN in TPDO1's column. Raises the bus's error that stopped
         the SYNC."""
-        if self._clock.error is not None:
-            raise DeviceDisconnectedError(f"the CAN bus refused the SYNC ({self._clock.error})")
+        refusal = self._clock.error
+        if refusal is not None:
+            if self._shared.is_bus_off(refusal):
+                raise CanBusOffError(f"the CAN adapter is bus-off: no SYNC ({refusal})")
+            raise DeviceDisconnectedError(f"the CAN bus refused the SYNC ({refusal})")
         first = self._slots.given
         mapped = self._slots.take(self._clock.ticks - self._settle)
         self._gaps += int(np.isnan(mapped[:, 0]).sum())

@@ -141,6 +141,10 @@ class RpdoSetpoint(SetpointLink):
             self._session.write("RPDO1TIMER", self._timer_before)
             self._timer_before = None
 
+    def leftovers(self) -> dict[str, int]:
+        """The RPDO1 event timer as it was, while the deadline :meth:`begin` armed is on."""
+        return {} if self._timer_before is None else {"RPDO1TIMER": self._timer_before}
+
     def _check_operational(self) -> None:
         nmt = self._session.nmt_state
         if nmt is not None and nmt is not NmtState.OPERATIONAL:

@@ -57,6 +57,7 @@ from prm9tool.device.session import ValveSession
 from prm9tool.device.setpoint import SetpointLink
 from prm9tool.errors import (
     AccessDeniedError,
+    CanBusOffError,
     DeviceDisconnectedError,
     DeviceTimeoutError,
     Prm9Error,
@@ -337,6 +338,10 @@ class CanopenSession(UploadSteps, ValveSession):
         try:
             self._shared.network.send_message(cob_id, data)
         except (can.CanError, OSError, RuntimeError) as exc:  # RuntimeError: bus closed
+            if self._shared.is_bus_off(exc):
+                raise CanBusOffError(
+                    f"node {self.node_id}: the CAN adapter is bus-off ({exc})"
+                ) from None
             raise DeviceDisconnectedError(
                 f"node {self.node_id}: the CAN bus refused to send 0x{cob_id:03X} ({exc})"
             ) from None
@@ -404,7 +409,7 @@ class CanopenSession(UploadSteps, ValveSession):
                 raise Prm9Error(f"node {self.node_id} is already open in this program")
             node = canopen.RemoteNode(self.node_id, canopen.ObjectDictionary())
             network.add_node(node)
-        return SdoChannel(node, timeout_s, lambda: self._shared.error_frames)
+        return SdoChannel(node, timeout_s, self._shared)
 
     def _stop_sampler(self) -> None:
         sampler, self._sampler = self._sampler, None

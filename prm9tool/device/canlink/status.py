@@ -12,10 +12,10 @@ from __future__ import annotations
 import time
 
 from prm9tool.catalogue import CATALOGUE
+from prm9tool.catalogue.error_kinds import ERROR_KINDS, ErrorKind
 from prm9tool.device.canlink.bus import NodeSeen
 from prm9tool.device.canlink.sdo import MISSING, SdoChannel
-from prm9tool.device.emulator.faults import ERROR_KINDS, ErrorKind
-from prm9tool.device.emulator.leds import leds
+from prm9tool.device.leds import leds
 from prm9tool.device.records import DeviceState, NmtState, ValveStatus
 from prm9tool.errors import SdoAbortError
 

@@ -75,6 +75,7 @@ class ValveWorkflow(QObject):
         connection.lost.connect(self._on_connection_lost)
         connection.reconnected.connect(self._on_connection_reconnected)
         connection.other_valve.connect(self._on_connection_other_valve)
+        connection.generator_undone.connect(self._on_generator_undone)
         self._back = False  # the valve came back by itself: the comparison says "back online"
         connection.live_values_changed.connect(doc.set_live)
         connection.write_failed.connect(sync.forget)
@@ -409,6 +410,14 @@ class ValveWorkflow(QObject):
             self.tr("The valve {0} is back online; reading its parameters…").format(
                 getattr(info, "serial", "")
             )
+        )
+
+    def _on_generator_undone(self, names: list[str]) -> None:
+        self.message_posted.emit(
+            self.tr(
+                "The valve is open again: what the setpoint generator cut off with the link had "
+                "changed is as before ({0})"
+            ).format(", ".join(names))
         )
 
     def _on_connection_other_valve(self, lost: int, found: int, device_id: str) -> None:
