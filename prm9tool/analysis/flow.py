@@ -14,7 +14,6 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
-from scipy.signal import savgol_filter
 
 from prm9tool.analysis.deadband import FULL, DeadBand, dead_band
 
@@ -45,6 +44,8 @@ class FlowCharacteristic:
 def velocity(position: np.ndarray, fs: float) -> np.ndarray:
     """d position / dt in units per second (Savitzky-Golay, quadratic over 10 ms)."""
     window = max(5, int(SMOOTHING_S * fs) | 1)
+    from scipy.signal import savgol_filter  # imported when used: see prm9tool.analysis.model
+
     return np.asarray(savgol_filter(position, window, 2, deriv=1, delta=1.0 / fs))
 
 

@@ -12,7 +12,6 @@ import math
 from dataclasses import dataclass
 
 import numpy as np
-from scipy import signal
 
 MIN_COHERENCE = 0.5  # points below are shown but not used for the −3 dB / −90° figures
 
@@ -101,6 +100,8 @@ def frequency_response(
     if u.shape != y.shape or len(u) < 256:
         raise ValueError("u and y must be equally long records of at least 256 samples")
     whole = {"fs": fs, "nperseg": len(u), "window": "boxcar", "detrend": "constant"}
+    from scipy import signal  # imported when used: see prm9tool.analysis.model
+
     f, puu = signal.welch(u, **whole)
     _, puy = signal.csd(u, y, **whole)
     fc, coh = signal.coherence(u, y, fs=fs, nperseg=len(u) // 8)
@@ -176,6 +177,8 @@ def filled_response(u: np.ndarray, y: np.ndarray, missing: np.ndarray, fs: float
 def log_chirp(duration_s: float, fs: float, f0: float, f1: float) -> np.ndarray:
     """A logarithmic sine sweep ``f0`` → ``f1`` of unit amplitude (scipy.signal.chirp)."""
     t = np.arange(round(duration_s * fs)) / fs
+    from scipy import signal
+
     return np.asarray(signal.chirp(t, f0, duration_s, f1, method="logarithmic", phi=-90.0))
 
 

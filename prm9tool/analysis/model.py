@@ -8,6 +8,10 @@ that plant (the same per-cycle equations, output limits included) against a targ
 and settling time; the gains must also hold the overshoot with the plant's gain 50 % higher
 and two cycles more dead time.
 Nothing here ever drives a real loop: the valve only sees steps at gains found safe this way.
+
+scipy is imported in the functions that use it, here and in the other analysis modules: it
+takes over a second to import, and the Tuning window, which imports these modules, opened that
+much later (docs/PERFORMANCE.md, "Opening the Tuning window").
 """
 
 from __future__ import annotations
@@ -17,7 +21,6 @@ from collections.abc import Sequence
 from dataclasses import dataclass, replace
 
 import numpy as np
-from scipy import optimize, signal
 
 from prm9tool.analysis.pid import CYCLE_S, PidGains
 from prm9tool.catalogue.scale import FULL_SCALE
@@ -60,6 +63,8 @@ class PlantModel:
 
     def simulate(self, u: np.ndarray, dt: float = CYCLE_S) -> np.ndarray:
         """The model's output for the input record ``u`` (starting at rest)."""
+        from scipy import signal
+
         x = np.concatenate([np.zeros(self.delay), u[: len(u) - self.delay]]) * self.gain
         for a in self.poles(dt):
             x = signal.lfilter([0.0, 1.0 - a], [1.0, -a], x)
@@ -101,6 +106,8 @@ def _fit(
         gain0 /= len(u0) * dt
     start = np.array([gain0, math.log(3e-3), math.log(1e-3), math.log(3e-4)])
     low, high = math.log(dt / 4.0), math.log(100.0)
+    from scipy import optimize
+
     fit = optimize.least_squares(
         residual, start, bounds=([-np.inf, low, low, low], [np.inf, high, high, high]), max_nfev=200
     )
