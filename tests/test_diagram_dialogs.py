@@ -342,9 +342,7 @@ def test_a_value_finer_than_the_resolution_is_taken_rounded_and_said_so(qtbot, s
     type_into(dialog.fields["LIMTB"], "2100.7")
     assert s.doc.value("LIMTB") == 2101  # taken, not refused
     assert dialog.error_label.isVisible()
-    assert dialog.error_label.text() == (
-        "2100.7 mA rounded to 2101 mA (the parameter's resolution is 1 mA)"
-    )
+    assert dialog.error_label.text() == ("2100.7 mA rounded to 2101 mA (resolution 1 mA)")
     type_into(dialog.fields["LIMTB"], "2000")  # an exact value: the note goes
     assert s.doc.value("LIMTB") == 2000 and not dialog.error_label.isVisible()
 

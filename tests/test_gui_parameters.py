@@ -124,7 +124,7 @@ def test_a_value_finer_than_the_resolution_is_set_rounded_and_the_status_bar_say
         dialog._buttons.accepted.emit()
     assert dialog.result() == dialog.DialogCode.Accepted
     assert doc.value("LIMTB") == 2101
-    assert posted.args == ["2100.7 mA rounded to 2101 mA (the parameter's resolution is 1 mA)"]
+    assert posted.args == ["2100.7 mA rounded to 2101 mA (resolution 1 mA)"]
 
 
 def test_an_exact_value_posts_no_rounding_note(view, doc, qtbot):
@@ -207,3 +207,20 @@ def test_measured_values_follow_one_rule_in_the_list_and_the_diagram(view, doc):
     assert shown == {"PWR": "24.00", "TEMP": "25.0"}  # was "24" and "25"
     assert format_signal("supply_voltage", 24000) == "24.00 V"
     assert format_signal("temperature", 250) == "25.0 °C"
+
+
+def test_the_main_window_status_bar_says_a_value_was_rounded(qtbot, tmp_path):
+    import os
+
+    from gui_support import main_window
+
+    with main_window(qtbot, tmp_path) as window:
+        dialog = window.parameter_view.make_edit_dialog("LIMTB")
+        dialog.set_text("2100.7")
+        dialog._buttons.accepted.emit()
+        assert window.doc.value("LIMTB") == 2101
+        assert window.status.currentMessage() == ("2100.7 mA rounded to 2101 mA (resolution 1 mA)")
+        if os.environ.get("PRM9TOOL_SCREENSHOTS"):
+            window.resize(1024, 700)
+            window.grab().save(os.path.join(os.environ["PRM9TOOL_SCREENSHOTS"], "rounded.png"))
+        window.doc.mark_saved(None)  # closing asks nothing

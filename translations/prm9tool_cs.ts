@@ -1500,8 +1500,8 @@ Poslední akce možná nebyla dokončena. Uložte svou práci pod novým názvem
             <translation>Výběr ventilu {0}</translation>
         </message>
         <message>
-            <source>{0}{1} rounded to {2}{1} (the parameter's resolution is {3}{1})</source>
-            <translation>{0}{1} zaokrouhleno na {2}{1} (rozlišení parametru je {3}{1})</translation>
+            <source>{0}{1} rounded to {2}{1} (resolution {3}{1})</source>
+            <translation>{0}{1} zaokrouhleno na {2}{1} (rozlišení {3}{1})</translation>
         </message>
         <message>
             <source>All ramps = {0}{1}</source>

@@ -1490,8 +1490,8 @@ Die letzte Aktion wurde womöglich nicht vollständig ausgeführt. Speichern Sie
             <translation>Ventilauswahl {0}</translation>
         </message>
         <message>
-            <source>{0}{1} rounded to {2}{1} (the parameter's resolution is {3}{1})</source>
-            <translation>{0}{1} auf {2}{1} gerundet (die Auflösung des Parameters ist {3}{1})</translation>
+            <source>{0}{1} rounded to {2}{1} (resolution {3}{1})</source>
+            <translation>{0}{1} auf {2}{1} gerundet (Auflösung {3}{1})</translation>
         </message>
         <message>
             <source>All ramps = {0}{1}</source>

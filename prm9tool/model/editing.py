@@ -17,9 +17,7 @@ from prm9tool.model.document import ParameterDocument, Raw
 
 RAMPS: tuple[str, ...] = ("RAMPSETPOSUP", "RAMPSETPOSDOWN", "RAMPSETNEGUP", "RAMPSETNEGDOWN")
 
-_ROUNDED = QT_TRANSLATE_NOOP(
-    "Edits", "{0}{1} rounded to {2}{1} (the parameter's resolution is {3}{1})"
-)
+_ROUNDED = QT_TRANSLATE_NOOP("Edits", "{0}{1} rounded to {2}{1} (resolution {3}{1})")
 
 
 def linked_mnemonics(doc: ParameterDocument, access: AccessModel, mnemonic: str) -> list[str]:
@@ -53,8 +51,9 @@ def range_text(param: Parameter, doc: ParameterDocument | None, *, unit: bool = 
 
 def rounding_note(param: Parameter, entered: str, raw: Raw) -> Message | None:
     """What to tell the user when ``entered`` (a number as typed, point or comma) is finer than
-    ``param``'s resolution and became ``raw``: ``2100.7 mA rounded to 2101 mA (the parameter's
-    resolution is 1 mA)``; None when the value is kept as typed (or is not a number)."""
+    ``param``'s resolution and became ``raw``: ``2100.7 mA rounded to 2101 mA (resolution
+    1 mA)``, short enough for the status bar beside its fields at 1024 pixels; None when the
+    value is kept as typed (or is not a number)."""
     if param.is_string or param.choices or not isinstance(raw, int):
         return None
     typed_text = entered.strip()
