@@ -45,8 +45,11 @@ def start_once(command: list[str], cache: str) -> float:
 
 
 def size_mb(path: Path) -> float:
-    """Size of the one-file executable, or of the whole folder of a one-folder build, in MB."""
-    files = [path] if path == ONEFILE else [p for p in path.parent.rglob("*") if p.is_file()]
+    """Size of the one-file executable, or of the whole folder of a one-folder build, in MB
+    (its symbolic links not counted twice)."""
+    if path == ONEFILE:
+        return path.stat().st_size / 1e6
+    files = [p for p in path.parent.rglob("*") if p.is_file() and not p.is_symlink()]
     return sum(p.stat().st_size for p in files) / 1e6
 
 
