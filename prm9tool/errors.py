@@ -107,6 +107,15 @@ class DeviceDisconnectedError(CommunicationError):
     summary = QT_TRANSLATE_NOOP("Errors", "The connection to the valve is broken.")
 
 
+class CanBusOffError(DeviceDisconnectedError):
+    """The tool's CAN adapter went bus-off: it stopped sending after too many bus errors."""
+
+    summary = QT_TRANSLATE_NOOP(
+        "Errors",
+        "The CAN adapter went bus-off: check the wiring, termination and bit rate.",
+    )
+
+
 class CanBusError(Prm9Error):
     """An emulated -CA valve could not join its CAN bus (its USB link is not affected)."""
 

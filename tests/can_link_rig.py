@@ -3,7 +3,8 @@
 ``real_valve=True`` makes the emulated valve answer like a real PRM9 is expected to: the
 objects whose address is this project's decision (catalogue ``address_from_manual`` False)
 do not exist (abort 0x06020000). Faults: :meth:`LinkRig.refuse` (an SDO abort on one object),
-:meth:`LinkRig.go_silent_after` (the node stops answering after n SDO requests).
+:meth:`LinkRig.go_silent_after` (the node stops answering after n SDO requests),
+:meth:`LinkRig.unplug` / :meth:`LinkRig.plug` (its CAN cable).
 """
 
 from __future__ import annotations
@@ -41,6 +42,16 @@ class LinkRig:
     silent_after: int | None = None
     reset_at: int | None = None
     requests: int = 0
+    unplugged: bool = False
+
+    def unplug(self) -> None:
+        """Pull the valve's CAN cable: no frame reaches it or leaves it; the valve and its CAN
+        controller run on (its heartbeat and RPDO deadline timers keep counting)."""
+        self.unplugged = True
+
+    def plug(self) -> None:
+        """Plug the valve's CAN cable back in."""
+        self.unplugged = False
 
     def refuse(self, index: int, subindex: int, code: int = AbortCode.INVALID_VALUE) -> None:
         """Writes to this object are aborted with ``code``."""
@@ -122,6 +133,8 @@ def _wrap_sdo(rig: LinkRig) -> None:
     on_message: Callable[[can.Message], None] = rig.slave._on_message
 
     def filtered(msg: can.Message) -> None:
+        if rig.unplugged:
+            return
         if msg.arbitration_id == 0x600 + rig.slave.node_id:
             rig.requests += 1
             if rig.silent_after is not None and rig.requests > rig.silent_after:
@@ -133,3 +146,10 @@ def _wrap_sdo(rig: LinkRig) -> None:
 
     rig.slave._notifier.remove_listener(on_message)
     rig.slave._notifier.add_listener(filtered)
+    send = rig.bus.send
+
+    def cabled_send(msg: can.Message, timeout: float | None = None) -> None:
+        if not rig.unplugged:  # a controller without a bus: its frames go nowhere
+            send(msg, timeout)
+
+    rig.bus.send = cabled_send  # type: ignore[method-assign]

@@ -112,15 +112,17 @@ def emulator_connection(paced: bool = False, reconnect: bool = False) -> ValveCo
 
 
 @contextmanager
-def main_window(qtbot: Any, folder: Path, type_key: str = E02) -> Iterator[Any]:
-    """A shown main window; offline, English, Basic level, emulator connection."""
+def main_window(
+    qtbot: Any, folder: Path, type_key: str = E02, connection: ValveConnection | None = None
+) -> Iterator[Any]:
+    """A shown main window; offline, English, Basic level; ``connection`` (default: to
+    emulated valves, :func:`emulator_connection`)."""
     from prm9tool.views.main_window import MainWindow
 
     i18n.set_language("en")
     doc = ParameterDocument(type_key)
-    window = MainWindow(
-        doc, DocumentUndo(doc), AccessModel(), emulator_connection(), settings_in(folder)
-    )
+    connection = connection or emulator_connection()
+    window = MainWindow(doc, DocumentUndo(doc), AccessModel(), connection, settings_in(folder))
     qtbot.addWidget(window)
     window.show()
     try:

@@ -3,6 +3,7 @@ valve; a lazy, Qt-free import; each operation with its error a script author mee
 
 from __future__ import annotations
 
+import json
 import subprocess
 import sys
 import textwrap
@@ -134,6 +135,92 @@ def test_upload_of_display_values_and_its_history(valve):
     assert [r["operation"] for r in records] == ["download", "backup", "upload"]
     assert records[-1]["outcome"] == "ok"
     assert records[-1]["details"]["command"] == "python API"
+
+
+QUICK = "[test]\nstep_amplitudes_pct = [25.0]\nbode_duration_s = 0.5\nstatic_period_s = 1.0\n"
+
+
+def test_a_characterization_is_recorded_as_the_command_line_records_it(valve, tmp_path):
+    from prm9tool.history.recorder import Recorder
+    from prm9tool.online.characterization_history import recording_hook
+
+    (tmp_path / "quick.toml").write_text(QUICK, encoding="utf-8")
+    valve.wait_booted()
+    valve.nmt("start")
+    valve.enable()  # a -CA valve follows its setpoint once its master enabled it
+    result = valve.characterize(tmp_path / "quick.toml")
+    (record,) = prm9tool.history.records(4711)
+    verdict = "passed" if result.passed else "failed"
+    assert (record["operation"], record["outcome"]) == ("characterization", verdict)
+    assert record["device_id"] == f"emulator:{KEY}:4711" and record["link"] == "emulator"
+    details = record["details"]
+    assert details["command"] == "python API"
+    # the same details as --characterize's record (its hook), into the same chain
+    recorder = Recorder()
+    recording_hook(recorder)(result)
+    cli = prm9tool.history.records(4711)[-1]
+    assert {k: v for k, v in details.items() if k != "command"} == cli["details"]
+    assert (cli["device_id"], cli["link"]) == (record["device_id"], record["link"])
+    whole = recorder.store().record(record["id"])
+    assert whole is not None and json.loads(whole["parameters"]) == result.parameters
+    assert recorder.store().check_valve(4711) is None  # the chain holds both
+    recorder.close()
+
+
+def test_record_history_false_records_nothing(tmp_path):
+    (tmp_path / "quick.toml").write_text(QUICK, encoding="utf-8")
+    with prm9tool.connect(f"emulator:{KEY}:4712", record_history=False) as valve:
+        valve.wait_booted()
+        valve.nmt("start")
+        valve.enable()
+        valve.characterize(tmp_path / "quick.toml")
+        valve.upload(valve.download(), backup=False)  # a backup file becomes a record when
+        valve.store()  # a history is first opened (the import of old backups)
+        valve.restore_factory(backup=False)
+    assert prm9tool.history.records(4712) == []
+
+
+def test_store_and_factory_reset_are_recorded_as_the_gui_records_them(valve):
+    from prm9tool.history.recorder import Recorder
+
+    valve["LIMTA"] = 1900
+    valve.store()
+    valve.restore_factory()
+    records = prm9tool.history.records(4711)
+    assert [r["operation"] for r in records] == ["store", "backup", "restore-factory"]
+    store = Recorder().store()
+    stored = store.record(records[0]["id"])
+    assert stored is not None and json.loads(stored["parameters"])["LIMTA"] == 1900  # read back
+    backup = records[1]["details"]["file"]
+    assert records[2]["details"] == {"backup": backup, "command": "python API"}
+    backed_up = store.record(records[1]["id"])
+    assert backed_up is not None and json.loads(backed_up["parameters"])["LIMTA"] == 1900
+    store.close()
+
+
+def test_a_refused_upload_is_recorded_with_its_failed_step(valve, monkeypatch):
+    from prm9tool.device.records import UploadResult
+
+    def refused(values, progress=None, cancel=None):
+        return UploadResult(stored=False, written=3, verified=False, duration_s=0.1,
+                            failed_step="write", failure="LIMTA: the valve refused it")  # fmt: skip
+
+    monkeypatch.setattr(valve.session, "upload", refused)
+    result = valve.upload(valve.download(), backup=False)
+    assert not result.stored
+    record = prm9tool.history.records(4711)[-1]
+    assert (record["operation"], record["outcome"], record["failed_step"]) == (
+        "upload", "verification-failed", "write")  # fmt: skip
+    assert record["details"]["written"] == 3
+    assert record["details"]["error"] == "LIMTA: the valve refused it"
+
+
+def test_set_and_store_on_the_command_line_is_recorded_as_such(tmp_path, capsys):
+    from prm9tool.cli.main import main
+
+    assert main(["--emulator", f"{KEY}:4714", "--set", "LIMTA=1800", "--store"]) == 0
+    (record,) = prm9tool.history.records(4714)
+    assert (record["operation"], record["details"]["command"]) == ("store", "--set --store")
 
 
 def test_parameter_set_checks_values_and_round_trips(tmp_path):

@@ -30,6 +30,22 @@ def test_an_e04_in_control_mode_2_is_not_called_either(tmp_path, data_dir, capsy
         rig.close()
 
 
+@pytest.mark.parametrize("od", ["full", "manual"])
+def test_an_e02_with_the_sensor_objects_of_all_valves_is_not_taken_for_an_e04(
+    tmp_path, data_dir, capsys, od
+):
+    rig = make_link_rig(f"e02-{od}", tmp_path, E02, real_valve=True, od=od)
+    try:
+        # table 7-14: the external sensor objects are on every valve, and so on this E02
+        assert rig.valve.read(0x2005, 1) == 9 and rig.valve.read(0x2100, 6) == 0
+        assert main(["--list-devices", *_bus(rig)]) == 0
+        out = capsys.readouterr().out
+        assert "? (-CA (E02 or E04: its objects do not tell); type key unknown)" in out
+        assert "E04 -CA" not in out
+    finally:
+        rig.close()
+
+
 def test_process_control_tells_e04_and_a_label_saying_e02_is_refused(tmp_path, data_dir):
     rig = make_link_rig("mode4", tmp_path, E04, real_valve=True, od="manual")
     try:

@@ -283,6 +283,39 @@ def test_sampled_actual_values_are_read_where_the_catalogue_puts_them():
     assert set(reads) == {CATALOGUE[m].key for m in ("POSACT", "PRCACT")}
 
 
+def test_the_sampler_reads_every_measuring_point_the_catalogue_gives_an_object():
+    """The sampler had a table of its own without the demand value 0x6310 and the control
+    deviation 0x6350 (manual table 7-14 lists both, readable): over CAN they showed no data.
+    It reads what ``catalogue.signals.SIGNAL_OBJECTS`` says, signed as the catalogue's type."""
+    from prm9tool.catalogue.signals import SIGNAL_OBJECTS, signal_at_index
+    from prm9tool.device.canlink.sampler import SdoSampler
+
+    def read(index: int, subindex: int) -> bytes:
+        size = next(p.dtype.size for p in CATALOGUE if p.key == (index, subindex))
+        return (-2 if size == 1 else 0xFFFE if index == 0x2003 else -4096).to_bytes(
+            size, "little", signed=index != 0x2003
+        )
+
+    keys = list(SIGNAL_OBJECTS)
+    shown = {}
+    for first in range(0, len(keys), 3):
+        sampler = SdoSampler(read, keys[first : first + 3], 100)
+        try:
+            shown.update({k: sampler._sample(k) for k in keys[first : first + 3]})
+        finally:
+            sampler.stop()
+    assert shown == {
+        "position_actual": -4096,
+        "process_actual": -4096,
+        "demand": -4096,
+        "position_deviation": -4096,
+        "supply_voltage": 0xFFFE,
+        "temperature": -20.0,
+    }  # fmt: skip  (-2 °C in 0.1 °C)
+    assert signal_at_index(0x6301) == "position_actual"  # TPDO1 entry 2 (table 7-13)
+    assert signal_at_index(0x6381) == "process_actual" and signal_at_index(0x6300) is None
+
+
 def test_the_sync_period_keeps_the_scope_under_half_of_a_slow_bus():
     from prm9tool.device.canlink.pdo_scope import min_period_s
 

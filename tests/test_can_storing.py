@@ -11,6 +11,7 @@ from can_link_rig import E04, LinkRig, make_link_rig
 from waiting import wait_for
 
 from prm9tool.catalogue import CATALOGUE
+from prm9tool.catalogue.manual_od import NOT_KEPT_AFTER_RESTART
 from prm9tool.catalogue.typekey import TypeKey
 from prm9tool.cli.main import main
 from prm9tool.device.canlink.session import CanopenSession
@@ -21,6 +22,7 @@ from prm9tool.device.canlink.storing import (
     factory_values,
     safe_order,
 )
+from prm9tool.device.upload_outcome import KEPT_OUTCOME
 from prm9tool.errors import DeviceTimeoutError, Prm9Error
 
 NODE = 10
@@ -156,3 +158,29 @@ def test_factory_values_without_0x1011_are_uploaded(manual):
     factory = factory_values(session.variant)
     assert {m: after[m] for m in MOVED} == {m: factory[m] for m in MOVED}
     assert {m: held(manual, m) for m in MOVED} == {m: factory[m] for m in MOVED}
+
+
+def test_batch_verify_by_restart_says_what_the_valve_did_not_keep(
+    manual, tmp_path, capsys, monkeypatch
+):
+    """--batch --verify-by-restart against a valve whose memory loses DTAMP: the report and
+    the history say it with the same text as the GUI's Verify by restart…"""
+    nv = manual.valve._fw.nv
+    replace = nv.replace
+    lost = {"DTAMP": nv.values.get("DTAMP", CATALOGUE["DTAMP"].default)}
+    monkeypatch.setattr(nv, "replace", lambda values: replace({**values, **lost}))
+    source, report = tmp_path / "set.prm", tmp_path / "report.json"
+    assert main(["--new", E04, "-o", str(source)]) == 0
+    text = source.read_text(encoding="utf-8").replace("DTAMP = 15", "DTAMP = 20")
+    source.write_text(text, encoding="utf-8")
+    bus = ["--can-interface", "virtual", "--can-channel", manual.options.channel]
+    args = ["--batch", str(source), "--device", "can:10", *bus, "--verify-by-restart"]
+    code = main([*args, "--report", str(report)])
+    out = capsys.readouterr()
+    assert code != 0, out.out
+    record = json.loads(report.read_text(encoding="utf-8"))["valves"][0]
+    assert record["result"] == "store-failed"
+    assert record["error"] == f"{NOT_KEPT_AFTER_RESTART}; {KEPT_OUTCOME}"  # the backup is back
+    assert list(record["mismatches"]) == ["DTAMP"]
+    assert record["store"] == KEPT_AS_WRITTEN  # not "verified after a restart"
+    assert held(manual, "DTAMP") == lost["DTAMP"] == manual.working("DTAMP")

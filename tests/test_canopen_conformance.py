@@ -112,12 +112,20 @@ def test_emcy_8210_ends_with_the_next_nmt_start(rig: Rig):
     assert rig.valve.status().error_register == 0
 
 
-# --- item 2: a mapping never points to an object the valve lacks -------------------------------
-def test_on_a_valve_without_the_external_sensor_pdo2_maps_nothing(rig: Rig):
-    rig.exchange("60A 40 01 1A 00 00 00 00 00", "58A 4F 01 1A 00 00 00 00 00")  # 0 entries
-    rig.exchange("60A 40 01 1A 01 00 00 00 00", "58A 80 01 1A 01 11 00 09 06")  # no sub 1
-    rig.exchange("60A 40 01 16 00 00 00 00 00", "58A 4F 01 16 00 00 00 00 00")
-    rig.exchange("60A 40 00 21 01 00 00 00 00", "58A 80 00 21 01 00 00 02 06")  # no 0x2100
+# --- a mapping never points to an object the valve lacks ---------------------------------------
+def test_an_e02_valve_has_the_sensor_objects_and_the_pdo2_mappings_of_every_valve(rig: Rig):
+    """Table 7-14: 0x2005-0x2008 and 0x2100 are objects of all valves; table 7-13's 0x1601 (one
+    entry) and 0x1A01 (two) hold on every -CA valve, so on an E02 too."""
+    rig.exchange("60A 40 01 1A 00 00 00 00 00", "58A 4F 01 1A 00 02 00 00 00")  # 2 entries
+    rig.exchange("60A 40 01 1A 01 00 00 00 00", "58A 43 01 1A 01 10 01 00 21")  # 0x2100/1
+    rig.exchange("60A 40 01 1A 02 00 00 00 00", "58A 43 01 1A 02 10 06 00 21")  # 0x2100/6
+    rig.exchange("60A 40 01 16 00 00 00 00 00", "58A 4F 01 16 00 01 00 00 00")  # 1 entry
+    rig.exchange("60A 40 01 16 01 00 00 00 00", "58A 43 01 16 01 10 02 00 21")  # 0x2100/2
+    rig.exchange("60A 40 00 21 00 00 00 00 00", "58A 4F 00 21 00 06 00 00 00")  # 0x2100: 6 subs
+    rig.exchange("60A 40 00 21 01 00 00 00 00", "58A 4B 00 21 01 00 00 00 00")  # no sensor: 0
+    rig.exchange("60A 40 05 20 01 00 00 00 00", "58A 4B 05 20 01 09 00 00 00")  # type 9
+    rig.exchange("60A 2F 08 20 00 01 00 00 00", "58A 60 08 20 00 00 00 00 00")  # lin. on: kept
+    rig.exchange("60A 40 08 20 00 00 00 00 00", "58A 4F 08 20 00 01 00 00 00")
     rig.exchange("60A 40 01 18 01 00 00 00 00", "58A 43 01 18 01 8A 02 00 00")  # PDO2 exists
 
 

@@ -16,6 +16,9 @@ from prm9tool.device.records import DeviceState
 
 DOC = Path(__file__).resolve().parent.parent / "docs" / "canopen.md"
 FRAME = re.compile(r"[0-9A-F]{3}( [0-9A-F]{2}){0,8}")  # "COB-ID data bytes" as the manual writes
+# TPDO2 of an E02 -CA: table 7-13 maps the external sensor 0x2100/1 and /6 on every -CA valve;
+# the E02 has no sensor input, so both read 0 (decision, docs/canopen.md)
+TPDO2_E02 = "28A 00 00 00 00"
 TESTED_ELSEWHERE = {  # walkthrough frames outside the §7.6 sequence: tests in test_canopen_slave.py
     "60A 23 10 10 01 73 61 76 65": "test_store_and_restore_use_the_cia_301_signatures",
     "60A 23 11 10 01 6C 6F 61 64": "test_store_and_restore_use_the_cia_301_signatures",
@@ -68,10 +71,14 @@ def test_section_7_2_6_pdo_set_up(rig: Rig):
     rig.exchange("60A 2B 17 10 00 00 00 00 00", "58A 60 17 10 00 00 00 00 00")
     rig.send("000 01 0A")
     assert rig.receive() == "18A 08 00 00 00"  # entering OPERATIONAL: INIT (0x0008), spool at 0
+    assert rig.receive() == TPDO2_E02  # TPDO2 by its defaults (table 7-13): at once, then 5 s
     rig.valve.advance(1.0)
-    tpdos = rig.drain()
+    tpdos = [f for f in rig.drain() if f.startswith("18A ")]
     assert len(tpdos) == 10  # "every 100 ms a message with COB-ID 18Ah"
-    assert all(f.startswith("18A ") and len(bytes.fromhex(f[4:])) == 4 for f in tpdos)
+    assert all(len(bytes.fromhex(f[4:])) == 4 for f in tpdos)
+    assert rig.log.count(TPDO2_E02) == 1  # 0x1801/5 = 1388h: the next one after 5000 ms
+    rig.valve.advance(4.0)
+    assert rig.drain().count(TPDO2_E02) == 1
 
 
 CONFIGURATION = [  # §7.6 "Příklad konfigurace s Node ID Ah", answered in full on every -CA valve
@@ -99,28 +106,33 @@ SETPOINTS = [("20A 0F 00 40 1F 00 00 00 00", 8000), ("20A 0F 00 C0 E0 00 00 00 0
 
 def _commission(rig: Rig) -> None:
     """§7.6 on an E02 -CA valve (as the manual), node 0x0A: configuration, NMT start, figure
-    7-13, figure 7-14. Simulated time: TPDO1 every 100 ms, heartbeat every 1000 ms."""
+    7-13, figure 7-14. Simulated time: TPDO1 and TPDO2 every 100 ms, heartbeat every 1000 ms.
+    TPDO2 carries the external sensor 0x2100/1 and /6 (table 7-13), which read 0 on an E02."""
     for request, response in CONFIGURATION:
         rig.exchange(request, response)
     rig.send("000 01 00")  # the whole bus to OPERATIONAL
-    rig.expect("18A 08 00 00 00")  # TPDO1 at once: INIT, spool at 0; E02: no TPDO2
+    rig.expect("18A 08 00 00 00")  # TPDO1 at once: INIT, spool at 0
+    rig.expect(TPDO2_E02)  # TPDO2 at once: external sensor raw and linearized, 0 on an E02
     rig.send("000 01 0A")  # only the valve: it is already OPERATIONAL, nothing changes
     rig.barrier()
     assert rig.drain() == []
     rig.valve.advance(1.05)
     frames = rig.drain()
-    assert sorted(frames) == ["18A 08 00 00 00"] * 10 + ["70A 05"]  # heartbeat: OPERATIONAL
+    # heartbeat: OPERATIONAL
+    assert sorted(frames) == ["18A 08 00 00 00"] * 10 + [TPDO2_E02] * 10 + ["70A 05"]
     for word, tpdo in ENABLE:
         rig.exchange(f"60A 2B 40 60 00 {word:02X} 00 00 00", "58A 60 40 60 00 00 00 00 00")
         rig.valve.advance(0.1)
-        assert rig.drain() == [tpdo]
+        assert rig.drain() == [tpdo, TPDO2_E02]
     assert rig.valve.device_state is DeviceState.DEVICE_MODE_ACTIVE
     for rpdo, target in SETPOINTS:
         rig.send(rpdo)
         rig.barrier()
         assert rig.valve.read(0x6300, 1) == target
         rig.valve.advance(0.5)
-        tpdos = [f for f in rig.drain() if f != "70A 05"]
+        frames = rig.drain()
+        assert frames.count(TPDO2_E02) == 5  # the sensor stays 0 while the spool moves
+        tpdos = [f for f in frames if f.startswith("18A ")]
         assert len(tpdos) == 5 and all(f.startswith("18A 0F 00 ") for f in tpdos)  # active
         actual = struct.unpack("<h", bytes.fromhex(tpdos[-1][10:]))[0]
         assert actual == rig.valve.read(0x6301, 1) == pytest.approx(target, abs=0.02 * 16384)
@@ -128,7 +140,8 @@ def _commission(rig: Rig) -> None:
 
 def test_section_7_6_commissioning_sequence_node_0x0a(rig: Rig):
     _commission(rig)
-    assert {f[:3] for f in rig.log} == {"000", "20A", "60A", "58A", "18A", "70A"}  # no PDO2
+    assert {f[:3] for f in rig.log} == {"000", "20A", "60A", "58A", "18A", "28A", "70A"}
+    assert {f for f in rig.log if f.startswith("28A")} == {TPDO2_E02}
 
 
 def _walkthrough_frames() -> list[str]:

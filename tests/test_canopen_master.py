@@ -306,12 +306,12 @@ def test_the_master_reads_the_pdo_configuration_without_complaint(
         master.node.tpdo.read()
         master.node.rpdo.read()
     assert [r.getMessage() for r in caplog.records if r.name.startswith("canopen")] == []
-    has_sensor = 0x2100 in master.node.object_dictionary
-    for map_index, entries in ((0x1601, 1), (0x1A01, 2)):
+    assert 0x2100 in master.node.object_dictionary  # table 7-14: on every valve, E02 too
+    for map_index, entries in ((0x1601, 1), (0x1A01, 2)):  # table 7-13, on every -CA valve
         count = master.node.sdo.upload(map_index, 0)[0]
-        assert count == (entries if has_sensor else 0)  # E02: PDO2 maps nothing
+        assert count == entries
         for sub in range(1, count + 1):
             value = struct.unpack("<I", master.node.sdo.upload(map_index, sub))[0]
             assert value >> 16 in master.node.object_dictionary
-    assert len(master.node.tpdo[2].map) == (2 if has_sensor else 0)
-    assert len(master.node.rpdo[2].map) == (1 if has_sensor else 0)
+    assert len(master.node.tpdo[2].map) == 2
+    assert len(master.node.rpdo[2].map) == 1

@@ -81,6 +81,35 @@ def test_variant_filtering():
     assert "LIMTA" not in names
 
 
+def test_the_sensor_objects_are_on_every_ca_valve_but_parameters_of_the_e04_only():
+    """Table 7-14: 0x2005-0x2008 and 0x2100 are objects of all valves; the E02 has no sensor
+    input (table 7-22), so they are not part of its parameter set."""
+    sensor = {
+        p.mnemonic for p in CATALOGUE if p.index in range(0x2005, 0x2009) or p.index == 0x2100
+    }
+    assert len(sensor) == 29
+    for config, coils, canopen, objects, parameters in (
+        (Config.E02, Coils.AB, True, True, False),
+        (Config.E02, Coils.A, True, True, False),
+        (Config.E02, Coils.AB, False, False, False),
+        (Config.E04, Coils.B, True, True, True),
+        (Config.E04, Coils.AB, False, True, True),
+    ):
+        variant = Variant(config, coils, canopen)
+        on_device = {p.mnemonic for p in CATALOGUE.for_variant(variant)}
+        in_set = {p.mnemonic for p in CATALOGUE.parameter_set(variant)}
+        in_file = {p.mnemonic for p in CATALOGUE.file_parameters(variant)}
+        shown = {p.mnemonic for p in CATALOGUE.visible(variant, Access.EXPERT)}
+        assert (sensor <= on_device) is objects and bool(sensor & on_device) is objects
+        assert (sensor <= in_set) is parameters and bool(sensor & in_set) is parameters
+        assert bool(sensor & (in_file | shown)) is parameters
+        assert in_set <= on_device
+    e02_ca = Variant(Config.E02, Coils.AB, True)
+    assert CATALOGUE["TPDO2MAPN"].default_for(e02_ca) == 2  # table 7-13 on every -CA valve
+    assert CATALOGUE["RPDO2MAPN"].default_for(e02_ca) == 1
+    assert CATALOGUE["SENSTYPE"].applies.describe() == "E04, object also on E02 -CA"
+
+
 def _subs(index: int, *subs: int) -> list[tuple[int, int]]:
     return [(index, sub) for sub in subs]
 

@@ -250,3 +250,40 @@ def test_the_rigs_refusals_are_shown_in_the_program_language(qapp):
         assert error_text(stopped.value).startswith("zastaveno uživatelem")
     finally:
         i18n.set_language("en")
+
+
+def test_a_loop_the_control_mode_does_not_close_is_refused_before_anything_moves():
+    """An E04 as delivered (control mode 4): the Tuning window's "Position controller (spool)"
+    autotune stepped the process loop instead and stopped with "position_actual left the
+    allowed band 0 ± 60 %"; the position loop needs mode 2, the process loop mode 4."""
+    from prm9tool.errors import Prm9Error
+
+    e04 = EmulatedValve("PRM9-06.3Z11/30-24E04S02")
+    rig = EmulatorRig(e04)
+    before = rig.read(["THRESETP", "SETPOVRON", "POSKP"])
+    with pytest.raises(Prm9Error, match=r"control mode 4 \(process loop\)") as refused:
+        model_tune(rig, Targets(overshoot_pct=10.0, settling_s=0.04))
+    assert "Choose the process loop, or set CTRLMODE to 2" in str(refused.value)
+    assert rig.played_s == 0.0 and rig.read(list(before)) == before  # nothing written or moved
+    e04 = EmulatedValve("PRM9-06.3Z11/30-24E04S02")
+    put(e04, "CTRLMODE", 2)  # before it boots (an active valve refuses a new control mode)
+    rig = EmulatorRig(e04)
+    with pytest.raises(Prm9Error, match=r"control mode 2 \(spool position\): it has no process"):
+        step_test(rig, 20.0, loop="process")
+    assert step_test(rig, 20.0, duration_s=0.05).figures is not None  # mode 2: the spool's
+
+
+def test_leaving_the_band_names_the_signal_in_the_program_language(qapp):
+    from prm9tool import i18n
+    from prm9tool.translate import error_text
+
+    rig = EmulatorRig(booted())
+    with pytest.raises(LimitExceededError) as stopped:
+        step_test(rig, 50.0, duration_s=0.05, limit_pct=20.0)
+    assert str(stopped.value).startswith("Spool position actual (0x6301) left the allowed band")
+    i18n.set_language("de")
+    try:
+        german = error_text(stopped.value)
+    finally:
+        i18n.set_language("en")
+    assert german.startswith("Schieberlage Ist (0x6301) hat das zulässige Band 0 ± 20 % verlassen")

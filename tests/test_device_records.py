@@ -48,6 +48,14 @@ def test_importing_the_valve_session_loads_no_emulator_and_no_qt():
     assert [m for m in loaded if m.startswith(("PySide6", "pyqtgraph"))] == []
 
 
+def test_the_canopen_link_loads_no_emulator():
+    """The CAN status read the error table and the LED rules from the emulator's modules; they
+    are the catalogue's (error_kinds.py) and the device layer's (leds.py) now."""
+    loaded = loaded_by("import prm9tool.device.canlink.session")
+    assert "prm9tool.device.canlink.status" in loaded and "prm9tool.device.leds" in loaded
+    assert [m for m in loaded if m.startswith("prm9tool.device.emulator")] == []
+
+
 def test_records_take_keywords_only_and_are_frozen():
     info = DeviceInfo(type_key=E04, serial=7, firmware="1.0", protocol_version=1, device_id="usb:7")
     with pytest.raises(TypeError):

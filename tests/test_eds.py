@@ -61,7 +61,16 @@ def test_every_catalogue_entry_of_the_variant_is_in_the_eds():
             else f"{param.index:04X}sub{param.subindex:X}"
         )
         assert eds[section]["DataType"] == f"0x{param.dtype.value:04X}", param.mnemonic
-    assert "2100" not in eds  # E02: no external sensor objects
+    # table 7-14: the external sensor objects are objects of all valves, an E02 -CA's too, and
+    # table 7-13's PDO2 mappings (0x1601: one entry, 0x1A01: two) point at them on every -CA
+    for section in ("2005sub1", "2005sub4", "2006sub9", "2007sub1", "2008", "2100sub1", "2100sub6"):
+        assert section in eds, section
+    assert (eds["1601sub0"]["DefaultValue"], eds["1601sub1"]["DefaultValue"]) == ("1", "0x21000210")
+    assert [eds[f"1A01sub{sub}"]["DefaultValue"] for sub in range(3)] == [
+        "2",
+        "0x21000110",
+        "0x21000610",
+    ]
 
 
 def test_export_to_stdout(capsys: pytest.CaptureFixture[str]):

@@ -54,6 +54,32 @@ def test_every_object_the_tables_list_for_the_variant_answers(manual: Rig):
     assert all(index in MANUAL_OBJECTS for index, _ in (p.key for p in listed))
 
 
+def test_the_manual_e02_has_the_sensor_objects_and_pdo2_mappings_of_all_valves(
+    request: pytest.FixtureRequest, tmp_path
+):
+    """Tables 7-13 and 7-14 hold on an E02 -CA too: 0x2005-0x2008, 0x2100 (read 0: no sensor
+    input) and both PDO2 mappings; a sensor set-up written is kept like any other write."""
+    rig = make_rig(request.node.name, E02, nv_path=tmp_path / "nv.json", od="manual")
+    try:
+        for index in (0x1601, 0x1A01, 0x2005, 0x2006, 0x2007, 0x2008, 0x2100):
+            for sub in MANUAL_OBJECTS[index]:
+                if sub == 2 and index == 0x2100:
+                    continue  # write-only: the sensor value over CANopen
+                data = rig.sdo_read(index, sub)
+                if index == 0x2100 and sub:
+                    assert data == b"\x00\x00", sub
+        rig.exchange("60A 40 01 1A 00 00 00 00 00", "58A 4F 01 1A 00 02 00 00 00")
+        rig.exchange("60A 40 01 16 00 00 00 00 00", "58A 4F 01 16 00 01 00 00 00")
+        rig.exchange("60A 2B 05 20 03 00 10 00 00", "58A 60 05 20 03 00 00 00 00")  # offset 25 %
+        rig.valve.restart()
+        rig.valve.advance(2.0)
+        rig.drain()
+        rig.exchange("60A 40 05 20 03 00 00 00 00", "58A 4B 05 20 03 00 10 00 00")  # kept
+        rig.exchange("60A 40 00 21 04 00 00 00 00", "58A 4B 00 21 04 00 00 00 00")  # still 0
+    finally:
+        rig.close()
+
+
 def test_the_full_valve_still_has_the_projects_objects(request: pytest.FixtureRequest):
     rig = make_rig(request.node.name, E04)
     try:

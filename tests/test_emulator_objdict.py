@@ -58,15 +58,23 @@ def test_sub0_of_records_gives_the_highest_subindex(valve):
     [
         ((0x5FFF, 0), AbortCode.NO_SUCH_OBJECT),
         ((0x6332, 7), AbortCode.NO_SUCH_SUBINDEX),
-        ((0x2100, 2), AbortCode.NO_SUCH_OBJECT),  # E04 only: absent on E02
+        ((0x6381, 1), AbortCode.NO_SUCH_OBJECT),  # process control: E04 only
     ],
 )
 def test_missing_objects_abort(valve, args, code):
     assert abort_code(valve, "read", *args) == code
 
 
-def test_write_only_object_cannot_be_read():
-    valve = EmulatedValve("PRM9-06.3Z11/30-24E04S02-CA")
+def test_the_sensor_objects_are_on_every_ca_valve_only():
+    """Table 7-14: objects of all valves (an E02 -CA has them); an E02 without CANopen has
+    no sensor at all."""
+    assert abort_code(EmulatedValve(E02), "read", 0x2100, 1) == AbortCode.NO_SUCH_OBJECT
+    assert EmulatedValve(E02_CA).read(0x2100, 1) == 0
+
+
+@pytest.mark.parametrize("type_key", ["PRM9-06.3Z11/30-24E04S02-CA", E02_CA])
+def test_write_only_object_cannot_be_read(type_key):
+    valve = EmulatedValve(type_key)
     assert abort_code(valve, "read", 0x2100, 2) == AbortCode.WRITE_ONLY
     valve.write(0x2100, 2, 1234)  # accepted
 

@@ -38,6 +38,7 @@ def test_menus_and_toolbar_are_those_of_the_manual(window):
         "&History…",
         "Restore &factory values…",
         "&Restart valve…",
+        "&Verify by restart…",  # issue 20 item 2: after an upload, hydraulics off
         "E&mulated valve",  # this program's addition: the emulated valve's inputs and faults
     ]
     assert _menu_texts(window, "communication") == [

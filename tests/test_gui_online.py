@@ -162,6 +162,11 @@ def test_live_values_refresh_in_the_table(qtbot, window):
     with qtbot.waitSignal(window.connection.online_changed, timeout=TIMEOUT):
         window.valve.go_offline()
     assert model.data(index) == "—"  # offline, a live value would be stale
+    go_online(qtbot, window)  # the same valve again: its supply has not changed
+    error = model.index(model.row_of("ERROR"), 2)
+    assert error.isValid()
+    qtbot.waitUntil(lambda: model.data(index) != "—", timeout=TIMEOUT)  # was "—" for good
+    qtbot.waitUntil(lambda: model.data(error) == "0x0000", timeout=TIMEOUT)
 
 
 def test_a_refused_online_edit_is_reported_and_kept(qtbot, window, answers):

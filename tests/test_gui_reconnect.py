@@ -143,37 +143,6 @@ def test_the_stream_stops_with_the_link_and_is_restarted_by_its_owner(qtbot, pac
         conn.start_stream(["supply_voltage", "demand"], 1000)
 
 
-def test_a_tuning_test_cut_off_is_undone_once_the_valve_is_back(qtbot, connection):
-    """The test wrote a value, then the cable was pulled: the test stops with the link and,
-    when the same valve is back, what it changed is written back before the comparison."""
-    from prm9tool.catalogue import CATALOGUE
-    from prm9tool.online.tuning_runner import ValveRunner
-
-    online(qtbot, connection)
-    valve = factory._VALVES[5101]
-    key = CATALOGUE["LIMTA"].key
-    before = int(valve.read(*key))
-
-    def procedure(rig):
-        rig.write({"LIMTA": before - 100})
-        assert int(valve.read(*key)) == before - 100
-        rig.session.emulator.pull_cable()
-        rig.read(["LIMTA"])  # the link is gone: CommunicationError
-
-    runner = ValveRunner(connection)
-    with qtbot.waitSignal(runner.failed, timeout=TIMEOUT) as failed:
-        runner.run("probe", procedure)
-    assert "broken" in failed.args[1] and not runner.busy
-    assert runner.to_restore == {"LIMTA": before}
-    assert int(valve.read(*key)) == before - 100  # nothing could be written meanwhile
-    with qtbot.waitSignal(runner.restored, timeout=TIMEOUT) as restored:
-        plug_cable(5101)
-    assert "restored (LIMTA)" in restored.args[0]
-    assert int(valve.read(*key)) == before and runner.to_restore is None
-    setpovron = CATALOGUE["SETPOVRON"].key
-    assert int(valve.read(*setpovron)) == 0
-
-
 def test_a_valve_found_that_cannot_be_opened_yet_is_tried_again(qtbot, connection):
     online(qtbot, connection)
     opener, refused = connection._worker._opener, []

@@ -22,4 +22,5 @@ def test_the_upload_message_names_the_store(qtbot, window, store):
         assert message.startswith("3 parameters written, verified and stored at ")
         assert "(" not in message
     else:
-        assert message.endswith(f" ({store})")
+        hint = "; Valve → Verify by restart… checks that it keeps them"
+        assert message.endswith(f" ({store})" + (hint if store == KEPT_AS_WRITTEN else ""))

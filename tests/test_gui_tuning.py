@@ -193,9 +193,10 @@ def test_online_a_test_asks_first_and_does_nothing_when_declined(qtbot, monkeypa
                 operation_finished = Signal(str, object)
                 failed = Signal(str)
                 lost = Signal(str)
+                reconnected = Signal(object)  # as ValveConnection's (ValveRunner follows it)
 
             self.signals = Signals()
-            for name in ("online_changed", "operation_finished", "failed", "lost"):
+            for name in ("online_changed", "operation_finished", "failed", "lost", "reconnected"):
                 setattr(self, name, getattr(self.signals, name))
             self.jobs = []
 
@@ -226,6 +227,7 @@ def test_a_test_on_the_valve_says_that_it_stops_the_running_setpoint_generator(q
         operation_finished = Signal(str, object)
         failed = Signal(str)
         lost = Signal(str)
+        reconnected = Signal(object)  # as ValveConnection's (ValveRunner follows it)
 
     class Online:
         is_online = True
@@ -234,7 +236,7 @@ def test_a_test_on_the_valve_says_that_it_stops_the_running_setpoint_generator(q
         def __init__(self):
             self.streaming_keys: list[str] = []
             self.signals = Signals()
-            for name in ("online_changed", "operation_finished", "failed", "lost"):
+            for name in ("online_changed", "operation_finished", "failed", "lost", "reconnected"):
                 setattr(self, name, getattr(self.signals, name))
             self.jobs: list[str] = []
             self.generator_running = True
@@ -456,3 +458,21 @@ def test_a_marker_label_is_drawn_whole_inside_the_plot(qtbot):
     font.setPixelSize(20)  # plot_image's font at 1200 × 560
     digits = QFontMetrics(font).tightBoundingRect("3").height()
     assert rows.max() - rows.min() + 1 >= digits  # the whole height of the text
+
+
+def test_an_open_tuning_window_follows_the_program_language(qtbot, window):
+    """The main window keeps its Tuning window: after View → Language → Deutsch it showed
+    "Tuning and characterization", "Loop:" and "Run autotune" in English for good."""
+    from prm9tool import i18n
+
+    window.status.setText("Stopped: a result the user still reads")
+    i18n.set_language("de")
+    try:
+        shown = (window.windowTitle(), window._loop_label.text(), window.tabs.tabText(0),
+                 window.autotune.run_button.text(), window.status.text())  # fmt: skip
+    finally:
+        i18n.set_language("en")
+    assert shown[:4] == ("Einstellung und Charakterisierung", "Regelkreis:", "Autotune",
+                         "Autotune starten")  # fmt: skip
+    assert shown[4] == "Stopped: a result the user still reads"  # not replaced by "Bereit."
+    assert window.windowTitle() == "Tuning and characterization"

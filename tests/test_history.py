@@ -293,7 +293,7 @@ def test_old_backups_become_records_the_first_time_a_history_is_opened(tmp_path)
 
 
 def test_a_characterization_is_recorded_with_its_verdict_and_figures(tmp_path, capsys):
-    from test_characterize_cli import FAST
+    from test_characterize_cli import E02, FAST
     from test_characterize_cli import run as characterize
 
     from prm9tool.device import factory
@@ -307,6 +307,8 @@ def test_a_characterization_is_recorded_with_its_verdict_and_figures(tmp_path, c
     assert main(["--history", "7201", "--json"]) == ExitCode.OK
     (record,) = json.loads(capsys.readouterr().out)["records"]
     assert (record["operation"], record["outcome"]) == ("characterization", "passed")
+    # the valve's device ID and link, not the report's sentence on how it was measured
+    assert (record["link"], record["device_id"]) == ("emulator", f"emulator:{E02}:7201")
     figures = {f["name"]: f for f in record["details"]["figures"]}
     assert figures["bode_bandwidth_hz"]["passed"] is True
     assert record["details"]["profile"] == "fast test"

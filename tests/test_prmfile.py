@@ -178,6 +178,22 @@ def test_a_parameter_the_type_key_does_not_have_is_an_error():
     )
 
 
+def test_an_e02_ca_file_neither_needs_nor_takes_the_external_sensor_objects():
+    """Table 7-14 gives an E02 -CA the objects 0x2005-0x2008 too, but it has no sensor input:
+    they are not part of its parameter set, so its file has none and refuses one."""
+    e02_ca = TypeKey.parse(f"{E02}-CA")
+    factory = factory_text(e02_ca)
+    assert "SENS" not in factory and problems_of(factory) == []
+    text = replace_line(factory, "LIMTB =", "LIMTB = 2400\nSENSTYPE = 9")
+    problem = _one(text)
+    assert problem.line == line_of(text, "SENSTYPE")
+    assert problem.message == (
+        "SENSTYPE (External sensor: signal type) is not a parameter of E02 two coils -CA valves "
+        f"(type key {e02_ca}): they have the object but no external sensor input; remove the "
+        "line or change the type key"
+    )
+
+
 def test_a_missing_parameter_is_reported_on_the_type_key_line():
     text = replace_line(factory_text(E02), "DTAMP =", None)
     problem = _one(text)

@@ -182,3 +182,21 @@ def test_a_set_the_catalogue_rejects_is_not_stored(tmp_path):
     valve.restart()
     assert valve.read(0x2000, 1) == -16384  # the stored set is the one before
     assert not (tmp_path / "nv.json").exists()
+
+
+def test_the_firmware_listens_to_the_1_ms_task_only_while_it_streams(firmware, valve):
+    """Without a listener the compiled kernel passes the 1 ms tasks that change nothing
+    itself (fasttick); a USB link that does not stream must not take that away."""
+    listeners = valve._fw.cycle_listeners
+    assert listeners == []
+    firmware.handle(frame("0a 01 01 00 01 13"))  # stream the supply voltage
+    assert valve._fw.cycle_listeners == [firmware._on_cycle]
+    valve.advance(0.02)
+    assert firmware.outbox  # the stream still runs from the 1 ms task
+    firmware.handle(frame("0a 02 01 00 01 13"))  # a new stream replaces the old one
+    assert len(valve._fw.cycle_listeners) == 1
+    firmware.handle(frame("0b 03"))  # STREAM_STOP
+    assert valve._fw.cycle_listeners == []
+    firmware.handle(frame("0a 04 01 00 01 13"))
+    firmware.handle(frame("08 05 62 6f 6f 74"))  # a restart ends the stream too
+    assert valve._fw.cycle_listeners == []

@@ -759,6 +759,18 @@ Poslední akce možná nebyla dokončena. Uložte svou práci pod novým názvem
             <source>this valve has no object for {0} on this link (their addresses are this project's, not the manual's): the tuning cannot change them here; nothing was changed — tune these over USB</source>
             <translation>tento ventil nemá na tomto spojení objekt pro {0} (jejich adresy jsou adresami tohoto projektu, ne příručky): ladění je zde nemůže změnit; nic nebylo změněno — nalaďte je přes USB</translation>
         </message>
+        <message>
+            <source>the valve is in control mode {0} (spool position): it has no process loop to test; the process loop runs in control mode 4 (CTRLMODE). Nothing was changed</source>
+            <translation>ventil je v režimu řízení {0} (poloha šoupátka): nemá procesní smyčku, kterou by šlo testovat; procesní smyčka pracuje v režimu řízení 4 (CTRLMODE). Nic nebylo změněno</translation>
+        </message>
+        <message>
+            <source>the valve is in control mode {0} (process loop): its setpoint drives the process controller, not the spool, so the position loop cannot be tested on its own. Choose the process loop, or set CTRLMODE to 2 (spool position) while the valve is not enabled. Nothing was changed</source>
+            <translation>ventil je v režimu řízení {0} (procesní smyčka): jeho žádaná hodnota řídí regulátor procesu, ne šoupátko, takže smyčku polohy nelze testovat samostatně. Zvolte procesní smyčku, nebo nastavte CTRLMODE na 2 (poloha šoupátka), dokud ventil není povolen. Nic nebylo změněno</translation>
+        </message>
+        <message>
+            <source>{0} left the allowed band {1} ± {2} %; the test was stopped and the valve put back as it was</source>
+            <translation>{0}: hodnota opustila povolené pásmo {1} ± {2} %; test byl zastaven a ventil uveden do původního stavu</translation>
+        </message>
     </context>
     <context>
         <name>CommissioningPanel</name>
@@ -1671,6 +1683,10 @@ Poslední akce možná nebyla dokončena. Uložte svou práci pod novým názvem
             <translation>Spojení s ventilem je přerušeno.</translation>
         </message>
         <message>
+            <source>The CAN adapter went bus-off: check the wiring, termination and bit rate.</source>
+            <translation>CAN adaptér přešel do stavu bus-off: zkontrolujte kabeláž, zakončení sběrnice a přenosovou rychlost.</translation>
+        </message>
+        <message>
             <source>The emulated valve could not join the CAN bus; it works over USB without CAN.</source>
             <translation>Emulovaný ventil se nemohl připojit ke sběrnici CAN; pracuje přes USB bez CAN.</translation>
         </message>
@@ -2210,6 +2226,22 @@ Ano načte a záznam zařadí do fronty; Ne nenačte nic.</translation>
             <translation>Nastavení regulace převzato, zapsáno online</translation>
         </message>
         <message>
+            <source>Restarted and read back (Valve → Verify by restart…)</source>
+            <translation>Restartováno a zpětně načteno (Ventil → Ověřit restartem…)</translation>
+        </message>
+        <message>
+            <source>stored with 0x1010</source>
+            <translation>uloženo pomocí 0x1010</translation>
+        </message>
+        <message>
+            <source>kept by the valve as written (it has no store command)</source>
+            <translation>ventil si hodnoty ponechal tak, jak byly zapsány (nemá příkaz k uložení)</translation>
+        </message>
+        <message>
+            <source>verified after a restart</source>
+            <translation>ověřeno po restartu</translation>
+        </message>
+        <message>
             <source>going online</source>
             <translation>při přechodu do režimu online</translation>
         </message>
@@ -2675,6 +2707,14 @@ Ano načte a záznam zařadí do fronty; Ne nenačte nic.</translation>
         <message>
             <source>Restart the valve electronics (only with the hydraulics disconnected)</source>
             <translation>Restartování elektroniky ventilu (dovoleno pouze při odpojeném hydraulickém obvodu)</translation>
+        </message>
+        <message>
+            <source>&amp;Verify by restart…</source>
+            <translation>Ověř&amp;it restartem…</translation>
+        </message>
+        <message>
+            <source>After an upload: restart the valve (hydraulics disconnected) and read back that it kept the values</source>
+            <translation>Po načtení do ventilu: restartovat ventil (hydraulika odpojena) a zpětně načíst, zda si hodnoty ponechal</translation>
         </message>
         <message>
             <source>&amp;HID configuration…</source>
@@ -3250,6 +3290,10 @@ Ano načte a záznam zařadí do fronty; Ne nenačte nic.</translation>
             <translation>{0} ({1}) u ventilů {2} neexistuje (typový klíč {3}); odstraňte řádek nebo změňte typový klíč</translation>
         </message>
         <message>
+            <source>{0} ({1}) is not a parameter of {2} valves (type key {3}): they have the object but no external sensor input; remove the line or change the type key</source>
+            <translation>{0} ({1}) není parametrem ventilů {2} (typový klíč {3}): mají objekt, ale žádný vstup externího snímače; odstraňte řádek nebo změňte typový klíč</translation>
+        </message>
+        <message>
             <source>{0}: no value after '='</source>
             <translation>{0}: za '=' chybí hodnota</translation>
         </message>
@@ -3557,8 +3601,16 @@ Ano načte a záznam zařadí do fronty; Ne nenačte nic.</translation>
             <translation>Obnovit tovární nastavení</translation>
         </message>
         <message>
+            <source>Verify by restart</source>
+            <translation>Ověřit restartem</translation>
+        </message>
+        <message>
             <source>Restore and restart</source>
             <translation>Obnovit a restartovat</translation>
+        </message>
+        <message>
+            <source>Restart and verify</source>
+            <translation>Restartovat a ověřit</translation>
         </message>
         <message>
             <source>&lt;b&gt;Restarting the valve electronics is only allowed with the hydraulic circuit disconnected.&lt;/b&gt;&lt;br&gt;During the restart the spool returns to its spring-centred position and the setpoint is ignored for a few seconds.</source>
@@ -3575,6 +3627,81 @@ Ano načte a záznam zařadí do fronty; Ne nenačte nic.</translation>
         <message>
             <source>Restart</source>
             <translation>Restartovat</translation>
+        </message>
+    </context>
+    <context>
+        <name>RestartVerifier</name>
+        <message>
+            <source>Verify by restart</source>
+            <translation>Ověřit restartem</translation>
+        </message>
+        <message>
+            <source>Upload the parameters to the valve first: the verification restarts the valve and reads back whether it kept the last upload.</source>
+            <translation>Nejprve načtěte parametry do ventilu: ověření ventil restartuje a zpětně načte, zda si ponechal naposledy načtené hodnoty.</translation>
+        </message>
+        <message>
+            <source>The valve works with values changed online since the upload that it has not stored: a restart would lose them. Store them first (Valve → Store in valve), then verify. The valve was not restarted.</source>
+            <translation>Ventil pracuje s hodnotami změněnými online od načtení do ventilu, které neuložil: restart by je ztratil. Nejprve je uložte (Ventil → Uložit do paměti ventilu), pak ověřte. Ventil nebyl restartován.</translation>
+        </message>
+        <message numerus="yes">
+            <source>The last upload wrote %n parameter(s): {0}. The valve is restarted, then its parameters are read back and compared with the document: this shows that it keeps them through a restart, as after a power loss.</source>
+            <translation>
+                <numerusform>Poslední načtení do ventilu zapsalo %n parametr: {0}. Ventil se restartuje, pak se jeho parametry zpětně načtou a porovnají s dokumentem: to ukáže, že si je ponechá i po restartu, jako po výpadku napájení.</numerusform>
+                <numerusform>Poslední načtení do ventilu zapsalo %n parametry: {0}. Ventil se restartuje, pak se jeho parametry zpětně načtou a porovnají s dokumentem: to ukáže, že si je ponechá i po restartu, jako po výpadku napájení.</numerusform>
+                <numerusform>Poslední načtení do ventilu zapsalo %n parametrů: {0}. Ventil se restartuje, pak se jeho parametry zpětně načtou a porovnají s dokumentem: to ukáže, že si je ponechá i po restartu, jako po výpadku napájení.</numerusform>
+            </translation>
+        </message>
+        <message>
+            <source>Verification by restart cancelled: the valve was not restarted</source>
+            <translation>Ověření restartem zrušeno: ventil nebyl restartován</translation>
+        </message>
+        <message>
+            <source>Restarting the valve and reading its parameters back…</source>
+            <translation>Ventil se restartuje a jeho parametry se zpětně načítají…</translation>
+        </message>
+        <message>
+            <source>stored with its store command</source>
+            <translation>uloženo jeho příkazem k uložení</translation>
+        </message>
+        <message numerus="yes">
+            <source>%n parameter(s) of the last upload read back unchanged at {0}: {1}</source>
+            <translation>
+                <numerusform>%n parametr posledního načtení do ventilu zpětně načten beze změny v {0}: {1}</numerusform>
+                <numerusform>%n parametry posledního načtení do ventilu zpětně načteny beze změny v {0}: {1}</numerusform>
+                <numerusform>%n parametrů posledního načtení do ventilu zpětně načteno beze změny v {0}: {1}</numerusform>
+            </translation>
+        </message>
+        <message>
+            <source>Verification by restart failed: the valve did not keep {0}</source>
+            <translation>Ověření restartem selhalo: ventil si neponechal {0}</translation>
+        </message>
+        <message numerus="yes">
+            <source>After the restart the valve reads back %n value(s) of the last upload otherwise: it did not keep them ({0}). It works with the values read back now (expected → read back below); the document still holds the uploaded values and the history records the differences. Edits no longer go to the valve: upload the document again, or download the valve's values.</source>
+            <translation>
+                <numerusform>Po restartu ventil zpětně načítá %n hodnotu posledního načtení do ventilu jinak: neponechal si ji ({0}). Pracuje s hodnotou načtenou nyní (očekáváno → načteno níže); dokument dál obsahuje načtenou hodnotu a historie zaznamenává rozdíl. Změny už nejdou do ventilu: načtěte dokument do ventilu znovu, nebo stáhněte hodnoty z ventilu.</numerusform>
+                <numerusform>Po restartu ventil zpětně načítá %n hodnoty posledního načtení do ventilu jinak: neponechal si je ({0}). Pracuje s hodnotami načtenými nyní (očekáváno → načteno níže); dokument dál obsahuje načtené hodnoty a historie zaznamenává rozdíly. Změny už nejdou do ventilu: načtěte dokument do ventilu znovu, nebo stáhněte hodnoty z ventilu.</numerusform>
+                <numerusform>Po restartu ventil zpětně načítá %n hodnot posledního načtení do ventilu jinak: neponechal si je ({0}). Pracuje s hodnotami načtenými nyní (očekáváno → načteno níže); dokument dál obsahuje načtené hodnoty a historie zaznamenává rozdíly. Změny už nejdou do ventilu: načtěte dokument do ventilu znovu, nebo stáhněte hodnoty z ventilu.</numerusform>
+            </translation>
+        </message>
+        <message>
+            <source>The valve did not come back after the restart</source>
+            <translation>Ventil se po restartu znovu neozval</translation>
+        </message>
+        <message>
+            <source>Check the valve's supply and cable, then go online again: prm9tool compares the valve with the document.</source>
+            <translation>Zkontrolujte napájení a kabel ventilu a pak znovu přejděte do režimu online: prm9tool porovná ventil s dokumentem.</translation>
+        </message>
+        <message>
+            <source>prm9tool looks for the valve; when it is back, prm9tool compares it with the document and you decide what to do.</source>
+            <translation>prm9tool ventil hledá; až bude zpět, prm9tool ho porovná s dokumentem a vy rozhodnete, co dál.</translation>
+        </message>
+        <message>
+            <source>The valve did not come back after the restart; prm9tool is offline now.
+As far as known, the valve holds the values of the last upload ({0}): every one read back correctly before the restart, but whether it kept them through the restart could not be read.
+Nothing was lost on the PC side: the document still holds every value, the backup and the history are unchanged. {1}</source>
+            <translation>Ventil se po restartu znovu neozval; prm9tool je nyní offline.
+Pokud je známo, ventil obsahuje naposledy načtené hodnoty ({0}): každá se před restartem zpětně načetla správně, zda si je ale ponechal i po restartu, se načíst nepodařilo.
+Na straně PC se nic neztratilo: dokument dál obsahuje každou hodnotu, záloha a historie jsou beze změny. {1}</translation>
         </message>
     </context>
     <context>
@@ -4750,6 +4877,10 @@ Zajistěte, aby to hydraulika bezpečně snesla. Tlačítko Stop test kdykoli uk
             </translation>
         </message>
         <message>
+            <source>; Valve → Verify by restart… checks that it keeps them</source>
+            <translation>; Ventil → Ověřit restartem… ověří, že si je ponechá</translation>
+        </message>
+        <message>
             <source>stored with 0x1010</source>
             <translation>uloženo pomocí 0x1010</translation>
         </message>
@@ -4903,6 +5034,10 @@ Všechny hodnoty zůstávají v dokumentu: uložte jej, nebo přejděte znovu do
         <message>
             <source>The valve {0} is back online; reading its parameters…</source>
             <translation>Ventil {0} je opět online; načítají se jeho parametry…</translation>
+        </message>
+        <message>
+            <source>The valve is open again: what the setpoint generator cut off with the link had changed is as before ({0})</source>
+            <translation>Ventil je opět připojen: co změnil generátor žádané hodnoty přerušený se spojením, je opět jako předtím ({0})</translation>
         </message>
         <message>
             <source>Another valve (serial number {0}) is where the lost valve {1} was ({2}). prm9tool does not connect to it by itself: it is a new valve. Go online to work with it.</source>

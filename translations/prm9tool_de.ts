@@ -757,6 +757,18 @@ Die letzte Aktion wurde womöglich nicht vollständig ausgeführt. Speichern Sie
             <source>this valve has no object for {0} on this link (their addresses are this project's, not the manual's): the tuning cannot change them here; nothing was changed — tune these over USB</source>
             <translation>dieses Ventil hat auf dieser Verbindung kein Objekt für {0} (ihre Adressen sind die dieses Projekts, nicht die des Handbuchs): die Abstimmung kann sie hier nicht ändern; nichts wurde geändert — stimmen Sie diese über USB ab</translation>
         </message>
+        <message>
+            <source>the valve is in control mode {0} (spool position): it has no process loop to test; the process loop runs in control mode 4 (CTRLMODE). Nothing was changed</source>
+            <translation>das Ventil ist in Regelmodus {0} (Schieberlage): es hat keinen Prozessregelkreis zum Testen; der Prozessregelkreis arbeitet in Regelmodus 4 (CTRLMODE). Nichts wurde geändert</translation>
+        </message>
+        <message>
+            <source>the valve is in control mode {0} (process loop): its setpoint drives the process controller, not the spool, so the position loop cannot be tested on its own. Choose the process loop, or set CTRLMODE to 2 (spool position) while the valve is not enabled. Nothing was changed</source>
+            <translation>das Ventil ist in Regelmodus {0} (Prozessregelkreis): sein Sollwert steuert den Prozessregler, nicht den Schieber, daher lässt sich der Lageregelkreis nicht allein testen. Wählen Sie den Prozessregelkreis oder stellen Sie CTRLMODE auf 2 (Schieberlage), solange das Ventil nicht freigegeben ist. Nichts wurde geändert</translation>
+        </message>
+        <message>
+            <source>{0} left the allowed band {1} ± {2} %; the test was stopped and the valve put back as it was</source>
+            <translation>{0} hat das zulässige Band {1} ± {2} % verlassen; der Test wurde abgebrochen und das Ventil wiederhergestellt, wie es war</translation>
+        </message>
     </context>
     <context>
         <name>CommissioningPanel</name>
@@ -1661,6 +1673,10 @@ Die letzte Aktion wurde womöglich nicht vollständig ausgeführt. Speichern Sie
             <translation>Die Verbindung zum Ventil ist unterbrochen.</translation>
         </message>
         <message>
+            <source>The CAN adapter went bus-off: check the wiring, termination and bit rate.</source>
+            <translation>Der CAN-Adapter ist im Zustand Bus-Off: Verkabelung, Abschlusswiderstände und Bitrate prüfen.</translation>
+        </message>
+        <message>
             <source>The emulated valve could not join the CAN bus; it works over USB without CAN.</source>
             <translation>Das emulierte Ventil konnte dem CAN-Bus nicht beitreten; es arbeitet über USB ohne CAN.</translation>
         </message>
@@ -2195,6 +2211,22 @@ Ja lädt hoch und stellt den Eintrag in die Warteschlange; Nein lädt nichts hoc
             <translation>Einstellung übernommen, online geschrieben</translation>
         </message>
         <message>
+            <source>Restarted and read back (Valve → Verify by restart…)</source>
+            <translation>Neu gestartet und zurückgelesen (Ventil → Durch Neustart prüfen…)</translation>
+        </message>
+        <message>
+            <source>stored with 0x1010</source>
+            <translation>mit 0x1010 gespeichert</translation>
+        </message>
+        <message>
+            <source>kept by the valve as written (it has no store command)</source>
+            <translation>vom Ventil wie geschrieben behalten (es hat keinen Speicherbefehl)</translation>
+        </message>
+        <message>
+            <source>verified after a restart</source>
+            <translation>nach einem Neustart geprüft</translation>
+        </message>
+        <message>
             <source>going online</source>
             <translation>beim Online-Gehen</translation>
         </message>
@@ -2658,6 +2690,14 @@ Ja lädt hoch und stellt den Eintrag in die Warteschlange; Nein lädt nichts hoc
         <message>
             <source>Restart the valve electronics (only with the hydraulics disconnected)</source>
             <translation>Ventilelektronik neu starten (nur bei getrennter Hydraulik)</translation>
+        </message>
+        <message>
+            <source>&amp;Verify by restart…</source>
+            <translation>&amp;Durch Neustart prüfen…</translation>
+        </message>
+        <message>
+            <source>After an upload: restart the valve (hydraulics disconnected) and read back that it kept the values</source>
+            <translation>Nach dem Hochladen: Ventil neu starten (Hydraulik getrennt) und zurücklesen, ob es die Werte behalten hat</translation>
         </message>
         <message>
             <source>&amp;HID configuration…</source>
@@ -3231,6 +3271,10 @@ Ja lädt hoch und stellt den Eintrag in die Warteschlange; Nein lädt nichts hoc
             <translation>{0} ({1}) gibt es bei Ventilen {2} nicht (Typschlüssel {3}); die Zeile entfernen oder den Typschlüssel ändern</translation>
         </message>
         <message>
+            <source>{0} ({1}) is not a parameter of {2} valves (type key {3}): they have the object but no external sensor input; remove the line or change the type key</source>
+            <translation>{0} ({1}) ist kein Parameter von Ventilen {2} (Typschlüssel {3}): sie haben das Objekt, aber keinen Eingang für einen externen Sensor; die Zeile entfernen oder den Typschlüssel ändern</translation>
+        </message>
+        <message>
             <source>{0}: no value after '='</source>
             <translation>{0}: kein Wert nach '='</translation>
         </message>
@@ -3538,8 +3582,16 @@ Ja lädt hoch und stellt den Eintrag in die Warteschlange; Nein lädt nichts hoc
             <translation>Werkseinstellungen wiederherstellen</translation>
         </message>
         <message>
+            <source>Verify by restart</source>
+            <translation>Durch Neustart prüfen</translation>
+        </message>
+        <message>
             <source>Restore and restart</source>
             <translation>Wiederherstellen und neu starten</translation>
+        </message>
+        <message>
+            <source>Restart and verify</source>
+            <translation>Neu starten und prüfen</translation>
         </message>
         <message>
             <source>&lt;b&gt;Restarting the valve electronics is only allowed with the hydraulic circuit disconnected.&lt;/b&gt;&lt;br&gt;During the restart the spool returns to its spring-centred position and the setpoint is ignored for a few seconds.</source>
@@ -3556,6 +3608,78 @@ Ja lädt hoch und stellt den Eintrag in die Warteschlange; Nein lädt nichts hoc
         <message>
             <source>Restart</source>
             <translation>Neu starten</translation>
+        </message>
+    </context>
+    <context>
+        <name>RestartVerifier</name>
+        <message>
+            <source>Verify by restart</source>
+            <translation>Durch Neustart prüfen</translation>
+        </message>
+        <message>
+            <source>Upload the parameters to the valve first: the verification restarts the valve and reads back whether it kept the last upload.</source>
+            <translation>Laden Sie die Parameter zuerst in das Ventil hoch: Die Prüfung startet das Ventil neu und liest zurück, ob es die zuletzt hochgeladenen Werte behalten hat.</translation>
+        </message>
+        <message>
+            <source>The valve works with values changed online since the upload that it has not stored: a restart would lose them. Store them first (Valve → Store in valve), then verify. The valve was not restarted.</source>
+            <translation>Das Ventil arbeitet mit seit dem Hochladen online geänderten Werten, die es nicht gespeichert hat: Ein Neustart würde sie verlieren. Speichern Sie sie zuerst (Ventil → Im Ventil speichern) und prüfen Sie dann. Das Ventil wurde nicht neu gestartet.</translation>
+        </message>
+        <message numerus="yes">
+            <source>The last upload wrote %n parameter(s): {0}. The valve is restarted, then its parameters are read back and compared with the document: this shows that it keeps them through a restart, as after a power loss.</source>
+            <translation>
+                <numerusform>Das letzte Hochladen schrieb %n Parameter: {0}. Das Ventil wird neu gestartet, dann werden seine Parameter zurückgelesen und mit dem Dokument verglichen: Das zeigt, dass es sie über einen Neustart behält, wie nach einem Stromausfall.</numerusform>
+                <numerusform>Das letzte Hochladen schrieb %n Parameter: {0}. Das Ventil wird neu gestartet, dann werden seine Parameter zurückgelesen und mit dem Dokument verglichen: Das zeigt, dass es sie über einen Neustart behält, wie nach einem Stromausfall.</numerusform>
+            </translation>
+        </message>
+        <message>
+            <source>Verification by restart cancelled: the valve was not restarted</source>
+            <translation>Prüfung durch Neustart abgebrochen: Das Ventil wurde nicht neu gestartet</translation>
+        </message>
+        <message>
+            <source>Restarting the valve and reading its parameters back…</source>
+            <translation>Das Ventil wird neu gestartet und seine Parameter werden zurückgelesen…</translation>
+        </message>
+        <message>
+            <source>stored with its store command</source>
+            <translation>mit seinem Speicherbefehl gespeichert</translation>
+        </message>
+        <message numerus="yes">
+            <source>%n parameter(s) of the last upload read back unchanged at {0}: {1}</source>
+            <translation>
+                <numerusform>%n Parameter des letzten Hochladens um {0} unverändert zurückgelesen: {1}</numerusform>
+                <numerusform>%n Parameter des letzten Hochladens um {0} unverändert zurückgelesen: {1}</numerusform>
+            </translation>
+        </message>
+        <message>
+            <source>Verification by restart failed: the valve did not keep {0}</source>
+            <translation>Prüfung durch Neustart fehlgeschlagen: Das Ventil hat {0} nicht behalten</translation>
+        </message>
+        <message numerus="yes">
+            <source>After the restart the valve reads back %n value(s) of the last upload otherwise: it did not keep them ({0}). It works with the values read back now (expected → read back below); the document still holds the uploaded values and the history records the differences. Edits no longer go to the valve: upload the document again, or download the valve's values.</source>
+            <translation>
+                <numerusform>Nach dem Neustart liest das Ventil %n Wert des letzten Hochladens anders zurück: Es hat ihn nicht behalten ({0}). Es arbeitet mit dem jetzt zurückgelesenen Wert (erwartet → zurückgelesen unten); das Dokument enthält weiterhin den hochgeladenen Wert, und der Verlauf zeichnet die Abweichung auf. Änderungen gehen nicht mehr an das Ventil: Laden Sie das Dokument erneut hoch oder laden Sie die Werte des Ventils herunter.</numerusform>
+                <numerusform>Nach dem Neustart liest das Ventil %n Werte des letzten Hochladens anders zurück: Es hat sie nicht behalten ({0}). Es arbeitet mit den jetzt zurückgelesenen Werten (erwartet → zurückgelesen unten); das Dokument enthält weiterhin die hochgeladenen Werte, und der Verlauf zeichnet die Abweichungen auf. Änderungen gehen nicht mehr an das Ventil: Laden Sie das Dokument erneut hoch oder laden Sie die Werte des Ventils herunter.</numerusform>
+            </translation>
+        </message>
+        <message>
+            <source>The valve did not come back after the restart</source>
+            <translation>Das Ventil hat sich nach dem Neustart nicht wieder gemeldet</translation>
+        </message>
+        <message>
+            <source>Check the valve's supply and cable, then go online again: prm9tool compares the valve with the document.</source>
+            <translation>Prüfen Sie Versorgung und Kabel des Ventils und gehen Sie dann wieder online: prm9tool vergleicht das Ventil mit dem Dokument.</translation>
+        </message>
+        <message>
+            <source>prm9tool looks for the valve; when it is back, prm9tool compares it with the document and you decide what to do.</source>
+            <translation>prm9tool sucht das Ventil; wenn es wieder da ist, vergleicht prm9tool es mit dem Dokument, und Sie entscheiden, was geschieht.</translation>
+        </message>
+        <message>
+            <source>The valve did not come back after the restart; prm9tool is offline now.
+As far as known, the valve holds the values of the last upload ({0}): every one read back correctly before the restart, but whether it kept them through the restart could not be read.
+Nothing was lost on the PC side: the document still holds every value, the backup and the history are unchanged. {1}</source>
+            <translation>Das Ventil hat sich nach dem Neustart nicht wieder gemeldet; prm9tool ist jetzt offline.
+Soweit bekannt, hält das Ventil die zuletzt hochgeladenen Werte ({0}): Jeder wurde vor dem Neustart richtig zurückgelesen, ob es sie über den Neustart behalten hat, ließ sich aber nicht lesen.
+Auf dem PC ging nichts verloren: Das Dokument enthält weiterhin jeden Wert, Sicherung und Verlauf sind unverändert. {1}</translation>
         </message>
     </context>
     <context>
@@ -4728,6 +4852,10 @@ Stellen Sie sicher, dass die Hydraulik dafür sicher ist. Stopp beendet ihn jede
             </translation>
         </message>
         <message>
+            <source>; Valve → Verify by restart… checks that it keeps them</source>
+            <translation>; Ventil → Durch Neustart prüfen… prüft, ob es sie behält</translation>
+        </message>
+        <message>
             <source>stored with 0x1010</source>
             <translation>mit 0x1010 gespeichert</translation>
         </message>
@@ -4881,6 +5009,10 @@ Alle Werte bleiben im Dokument erhalten: Speichern Sie es oder gehen Sie wieder 
         <message>
             <source>The valve {0} is back online; reading its parameters…</source>
             <translation>Das Ventil {0} ist wieder online; seine Parameter werden gelesen…</translation>
+        </message>
+        <message>
+            <source>The valve is open again: what the setpoint generator cut off with the link had changed is as before ({0})</source>
+            <translation>Das Ventil ist wieder verbunden: Was der mit der Verbindung abgebrochene Sollwertgenerator geändert hatte, ist wieder wie vorher ({0})</translation>
         </message>
         <message>
             <source>Another valve (serial number {0}) is where the lost valve {1} was ({2}). prm9tool does not connect to it by itself: it is a new valve. Go online to work with it.</source>

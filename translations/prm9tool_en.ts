@@ -162,6 +162,30 @@
         </message>
     </context>
     <context>
+        <name>RestartVerifier</name>
+        <message numerus="yes">
+            <source>The last upload wrote %n parameter(s): {0}. The valve is restarted, then its parameters are read back and compared with the document: this shows that it keeps them through a restart, as after a power loss.</source>
+            <translation>
+                <numerusform>The last upload wrote %n parameter: {0}. The valve is restarted, then its parameters are read back and compared with the document: this shows that it keeps them through a restart, as after a power loss.</numerusform>
+                <numerusform>The last upload wrote %n parameters: {0}. The valve is restarted, then its parameters are read back and compared with the document: this shows that it keeps them through a restart, as after a power loss.</numerusform>
+            </translation>
+        </message>
+        <message numerus="yes">
+            <source>%n parameter(s) of the last upload read back unchanged at {0}: {1}</source>
+            <translation>
+                <numerusform>%n parameter of the last upload read back unchanged at {0}: {1}</numerusform>
+                <numerusform>%n parameters of the last upload read back unchanged at {0}: {1}</numerusform>
+            </translation>
+        </message>
+        <message numerus="yes">
+            <source>After the restart the valve reads back %n value(s) of the last upload otherwise: it did not keep them ({0}). It works with the values read back now (expected → read back below); the document still holds the uploaded values and the history records the differences. Edits no longer go to the valve: upload the document again, or download the valve's values.</source>
+            <translation>
+                <numerusform>After the restart the valve reads back %n value of the last upload otherwise: it did not keep it ({0}). It works with the value read back now (expected → read back below); the document still holds the uploaded value and the history records the difference. Edits no longer go to the valve: upload the document again, or download the valve's values.</numerusform>
+                <numerusform>After the restart the valve reads back %n values of the last upload otherwise: it did not keep them ({0}). It works with the values read back now (expected → read back below); the document still holds the uploaded values and the history records the differences. Edits no longer go to the valve: upload the document again, or download the valve's values.</numerusform>
+            </translation>
+        </message>
+    </context>
+    <context>
         <name>ValveUpload</name>
         <message numerus="yes">
             <source>The document changes %n Expert-level value(s) of the valve ({0}), which the Basic access level cannot edit (controllers, linearizations, monitoring). Send them anyway?</source>

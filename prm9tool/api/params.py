@@ -9,7 +9,6 @@ from __future__ import annotations
 import html
 import os
 from collections.abc import Iterator, Mapping, MutableMapping
-from typing import Any
 
 from prm9tool.catalogue import CATALOGUE, Parameter
 from prm9tool.catalogue.typekey import TypeKey
@@ -159,7 +158,7 @@ def write_prm(path: str | os.PathLike[str], params: ParameterSet, backup: bool =
     write_file(params.to_contents(), path, backup=backup)
 
 
-def as_parameter_set(values: Mapping[str, Any], type_key: TypeKey) -> ParameterSet:
+def as_parameter_set(values: Mapping[str, Display], type_key: TypeKey) -> ParameterSet:
     """``values`` as a ParameterSet: itself, or display values for ``type_key`` checked here."""
     if isinstance(values, ParameterSet):
         return values

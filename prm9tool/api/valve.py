@@ -13,7 +13,7 @@ import os
 import threading
 import time
 from collections.abc import Callable, Mapping, Sequence
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING
 
 from prm9tool.api.params import Display, ParameterSet, as_parameter_set, display, lookup
 from prm9tool.catalogue import CAPPED_BY, CATALOGUE, Parameter
@@ -43,7 +43,7 @@ if TYPE_CHECKING:
     from prm9tool.characterize.run import Characterization
     from prm9tool.device.emulated import EmulatorControls
     from prm9tool.device.session import ValveSession
-    from prm9tool.history.recorder import Recorder
+    from prm9tool.online.recording import HistoryHook
     from prm9tool.scope.generator import Waveform
 
 log = logging.getLogger("prm9tool.api")
@@ -69,11 +69,17 @@ class Valve:
     """
 
     def __init__(
-        self, session: ValveSession, *, history_db: str | None = None, record_history: bool = True
+        self,
+        session: ValveSession,
+        *,
+        history_db: str | None = None,
+        record_history: bool = True,
+        command: str = "python API",
     ) -> None:
         self._session = session
         self._history_db, self._record_history = history_db, record_history
-        self._recorder: Recorder | None = None
+        self._command = command  # the records' "command" detail (the CLI's --set names itself)
+        self._hook: HistoryHook | None = None
         self._params = {p.mnemonic: p for p in CATALOGUE.for_variant(session.variant)}
 
     # --- who -----------------------------------------------------------------------------------
@@ -158,14 +164,15 @@ class Valve:
         """The valve's parameter set (the working values; the *.prm file's parameters)."""
         values = self._session.download(progress)
         info = self.info
-        self._record("download", "ok", values, {})
+        if (history := self._history()) is not None:
+            history.download(self._session, values, "")
         return ParameterSet(
             info.type_key, values, serial=info.serial, firmware=info.firmware or None
         )
 
     def upload(
         self,
-        params: Mapping[str, Any],
+        params: Mapping[str, Display],
         *,
         force_type: bool = False,
         backup: bool = True,
@@ -190,25 +197,29 @@ class Valve:
         self._check_rules(values)  # a set the valve would refuse to store: nothing is sent
         if backup:
             self._backup(progress, cancel)
-        result = self._session.upload(values, progress, cancel)
-        outcome = "ok" if result.stored else f"{result.failed_step}-failed"
-        details: dict[str, Any] = {"written": result.written, "verified": result.verified}
-        if result.failure:
-            details["error"] = result.failure
-        stored = values if result.stored else None  # not stored: the valve kept its stored set
-        self._record("upload", outcome, stored, details, result.failed_step)
-        return result
+        if (history := self._history()) is None:
+            return self._session.upload(values, progress, cancel)
+        return history.upload(self._session, values, progress, cancel)  # as the GUI records it
 
     def store(self) -> None:
-        """Make the working parameters permanent (the valve's non-volatile memory)."""
-        self._session.store()
-        self._record("store", "ok", None, {})
+        """Make the working parameters permanent (the valve's non-volatile memory). Recorded
+        as the GUI's Valve → Store is: with the set read back after the store."""
+        if (history := self._history()) is None:
+            self._session.store()
+        else:
+            from prm9tool.online.recording import store_and_read
 
-    def restore_factory(self) -> None:
+            store_and_read(self._session, history)
+
+    def restore_factory(self, *, backup: bool = True) -> None:
         """Reset the stored parameters to the factory values; they take effect at the next
-        :meth:`restart`."""
+        :meth:`restart`. ``backup``: first save the valve's parameters as its backup file,
+        unless it has one (as the GUI does)."""
+        path = self._backup(None, None) if backup else None
         self._session.restore_factory()
-        self._record("restore-factory", "ok", None, {})
+        if (history := self._history()) is not None:
+            # no parameter set: the valve runs on its old one until the restart
+            history.add(self._session, "restore-factory", "ok", None, {"backup": path})
 
     def restart(self, *, confirm_hydraulics_off: bool = False) -> None:
         """Restart the valve's electronics and reconnect. The spool moves to its rest position
@@ -285,18 +296,23 @@ class Valve:
         """The end-of-line test (step responses, Bode, static characteristic) against an
         acceptance profile (a LIMITS.toml path or a Profile; default the built-in one), as
         ``--characterize`` runs it; ``report_data(result)`` of
-        :mod:`prm9tool.characterize.run` is its JSON report."""
+        :mod:`prm9tool.characterize.run` is its JSON report. The result is recorded in the
+        history as ``--characterize`` records it (a ``characterization`` record: verdict,
+        figures, the parameters the valve ran with); a run that raises records nothing."""
         from prm9tool.api.measure import characterize
 
-        return characterize(self._session, profile, progress)
+        result = characterize(self._session, profile, progress)
+        if (history := self._history()) is not None:
+            history.characterization(self._session, result)
+        return result
 
     # --- closing ------------------------------------------------------------------------------
     def close(self) -> None:
         """Close the link (idempotent)."""
         self._session.close()
-        if self._recorder is not None:
-            self._recorder.close()
-            self._recorder = None
+        if self._hook is not None:
+            self._hook.recorder.close()
+            self._hook = None
 
     def __enter__(self) -> Valve:
         return self
@@ -323,32 +339,28 @@ class Valve:
         if errors:
             raise ValueRangeError("; ".join(errors))
 
-    def _backup(self, progress: Progress | None, cancel: threading.Event | None) -> None:
+    def _backup(self, progress: Progress | None, cancel: threading.Event | None) -> str | None:
+        """Save the valve's parameters as its backup file unless it has one, and record it;
+        the file's path (None: it had one)."""
         from prm9tool.files.backup import ensure_backup
 
         path = ensure_backup(self._session, progress, cancel)
-        if path is not None:
-            from prm9tool.files.prmfile import read_file
+        if path is None:
+            return None
+        if (history := self._history()) is not None:
+            history.backup(self._session, path)
+        return str(path)
 
-            self._record("backup", "ok", read_file(path).values, {"file": str(path)})
-
-    def _record(
-        self,
-        operation: str,
-        outcome: str,
-        values: Mapping[str, Any] | None,
-        details: dict[str, Any],
-        failed_step: str | None = None,
-    ) -> None:
+    def _history(self) -> HistoryHook | None:
+        """The history this valve records into (opened on first use); None with
+        ``record_history=False``. A record the database cannot take is logged, never raised."""
         if not self._record_history:
-            return
-        if self._recorder is None:
+            return None
+        if self._hook is None:
             from prm9tool.history.recorder import Recorder
+            from prm9tool.online.recording import HistoryHook
 
-            self._recorder = Recorder(self._history_db)
-        details = {"command": "python API", **details}
-        problem = self._recorder.record_safely(
-            self.info, operation, outcome, values, details, failed_step
-        )
-        if problem:
-            log.warning("the %s was not recorded in the history: %s", operation, problem)
+            report = lambda problem: log.warning("history: %s", problem)  # noqa: E731
+            recorder = Recorder(self._history_db)
+            self._hook = HistoryHook(recorder, report, {"command": self._command})
+        return self._hook

@@ -119,17 +119,24 @@ class Catalogue:
         return {p.index for p in self._parameters}
 
     def for_variant(self, variant: Variant) -> list[Parameter]:
-        """Every parameter that exists on ``variant``, in catalogue order."""
+        """Every object that exists on ``variant`` (its object dictionary), in catalogue order.
+
+        Includes objects that are not part of the variant's parameter set (``Applies``): the
+        external sensor objects of an E02 -CA."""
+        return [p for p in self._parameters if p.on_device(variant)]
+
+    def parameter_set(self, variant: Variant) -> list[Parameter]:
+        """The parameters of ``variant``: the list, the diagram, files, uploads, comparisons."""
         return [p for p in self._parameters if p.applies(variant)]
 
     def file_parameters(self, variant: Variant) -> list[Parameter]:
         """The parameter set a *.prm file and an upload carry for ``variant``."""
-        return [p for p in self.for_variant(variant) if p.in_file]
+        return [p for p in self.parameter_set(variant) if p.in_file]
 
     def visible(self, variant: Variant, access: Access) -> list[Parameter]:
         """Parameters shown in the parameter list at ``access`` (Basic hides expert ones)."""
         result = []
-        for p in self.for_variant(variant):
+        for p in self.parameter_set(variant):
             if p.group in ("canopen_comm", "profile_types", "service"):
                 continue
             if access is Access.BASIC and p.access is Access.EXPERT:

@@ -14,8 +14,7 @@ from prm9tool.catalogue._vocabulary import FIRMWARE_VERSION, STR, U8, U16, U32, 
 from prm9tool.catalogue.schema import (
     EVERY_VARIANT as ALL,
 )
-from prm9tool.catalogue.schema import Applies, ObjAccess, Parameter
-from prm9tool.catalogue.variant import Config
+from prm9tool.catalogue.schema import ObjAccess, Parameter
 
 WO = ObjAccess.WO
 CONST = ObjAccess.CONST
@@ -273,22 +272,10 @@ COMMUNICATION = [
     for p in COMMUNICATION
 ]
 
-# Table 7-13 maps the external sensor 0x2100 into RPDO2 and TPDO2. A valve without it (E02) has
-# no 0x2100, and a mapping never points to an object the device lacks: there both PDOs map
-# nothing (number of entries 0 = mapping disabled, CiA 301), so TPDO2 is never sent and RPDO2
-# is ignored; their communication parameters stay, so the §7.6 sequence works on every -CA
-# valve (decision, docs/canopen.md).
-_SENSOR_PDO_COUNTS = {"RPDO2MAPN": 1, "TPDO2MAPN": 2}
-_SENSOR_PDO_ENTRIES = {"RPDO2MAP1", "TPDO2MAP1", "TPDO2MAP2"}
-_E04_CA = Applies(configs=frozenset({Config.E04}), canopen_only=True)
-COMMUNICATION = [
-    dataclasses.replace(p, default=0, default_e04=_SENSOR_PDO_COUNTS[p.mnemonic])
-    if p.mnemonic in _SENSOR_PDO_COUNTS
-    else dataclasses.replace(p, applies=_E04_CA)
-    if p.mnemonic in _SENSOR_PDO_ENTRIES
-    else p
-    for p in COMMUNICATION
-]
+# Table 7-13 maps the external sensor 0x2100 into RPDO2 (0x1601: one entry) and TPDO2 (0x1A01:
+# two entries) for every -CA valve, and table 7-14 makes 0x2100 an object of all valves: on an
+# E02 -CA (no sensor input) TPDO2 is sent by its defaults and carries zeros, and RPDO2 writes
+# 0x2100/2 without effect (decision, docs/canopen.md).
 
 # Table 7-13 gives TPDO2 entry 2 as 0x21000510 but calls it "after linearization" (0x2100/6).
 _DECISIONS = {"TPDO2MAP2": "table 7-13 (entry 2 after linearization: decision, docs/canopen.md)"}

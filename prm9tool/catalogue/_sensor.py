@@ -1,15 +1,16 @@
 """Catalogue data: the external sensor of E04 valves (signal type, range, linearization) and
-its CiA 408 data objects."""
+its data objects 0x2100. Manual table 7-14 lists these objects among those of all valves, so
+an E02 -CA has them too (``SENSOR_OBJECTS``), though they are not part of its parameter set."""
 
 from __future__ import annotations
 
 from prm9tool.catalogue._vocabulary import (
-    E04_ONLY,
     OFF_ON,
     PERCENT,
     POLARITY,
     RO,
     S16,
+    SENSOR_OBJECTS,
     SIGNAL_TYPES,
     U8,
     U16,
@@ -35,7 +36,7 @@ EXTERNAL_SENSOR: list[Parameter] = [
         14,
         9,
         group="ext_sensor",
-        applies=E04_ONLY,
+        applies=SENSOR_OBJECTS,
         choices=SIGNAL_TYPES,
         text=T(
             "External sensor: signal type",
@@ -53,7 +54,7 @@ EXTERNAL_SENSOR: list[Parameter] = [
         1,
         0,
         group="ext_sensor",
-        applies=E04_ONLY,
+        applies=SENSOR_OBJECTS,
         choices=POLARITY,
         text=T(
             "External sensor: polarity", "Externer Sensor: Polarität", "Externí snímač: polarita"
@@ -69,7 +70,7 @@ EXTERNAL_SENSOR: list[Parameter] = [
         FULL_SCALE,
         0,
         group="ext_sensor",
-        applies=E04_ONLY,
+        applies=SENSOR_OBJECTS,
         unit="%",
         scale=PERCENT,
         decimals=1,
@@ -89,17 +90,29 @@ EXTERNAL_SENSOR: list[Parameter] = [
         65535,
         FULL_SCALE,
         group="ext_sensor",
-        applies=E04_ONLY,
+        applies=SENSOR_OBJECTS,
         scale=GAIN,
         decimals=3,
         text=T("External sensor: gain", "Externer Sensor: Verstärkung", "Externí snímač: zesílení"),
         source="table 7-14 (16384 = 1.0: inference from the range 16383…65535)",
     ),
     *linearization(
-        "SENSLIN", 0x2006, "X", "ext_sensor_linearization", _SENSOR_LIN, E04_ONLY, "table 7-14"
+        "SENSLIN",
+        0x2006,
+        "X",
+        "ext_sensor_linearization",
+        _SENSOR_LIN,
+        SENSOR_OBJECTS,
+        "table 7-14",
     ),
     *linearization(
-        "SENSLIN", 0x2007, "Y", "ext_sensor_linearization", _SENSOR_LIN, E04_ONLY, "table 7-14"
+        "SENSLIN",
+        0x2007,
+        "Y",
+        "ext_sensor_linearization",
+        _SENSOR_LIN,
+        SENSOR_OBJECTS,
+        "table 7-14",
     ),
     Parameter(
         "SENSLINON",
@@ -110,7 +123,7 @@ EXTERNAL_SENSOR: list[Parameter] = [
         1,
         0,
         group="ext_sensor_linearization",
-        applies=E04_ONLY,
+        applies=SENSOR_OBJECTS,
         choices=OFF_ON,
         text=T(
             "External sensor linearization on/off",
@@ -130,7 +143,7 @@ EXTERNAL_SENSOR_DATA: list[Parameter] = [
         group="ext_sensor_data",
         source="table 7-14",
         obj=obj,
-        applies=E04_ONLY,
+        applies=SENSOR_OBJECTS,
     )
     for mn, sub, obj, text in (
         (

@@ -27,6 +27,10 @@ TWO_COILS = Applies(coils=frozenset({Coils.AB}))
 COIL_A = Applies(coils=frozenset({Coils.AB, Coils.A}))
 COIL_B = Applies(coils=frozenset({Coils.AB, Coils.B}))
 E04_ONLY = Applies(configs=frozenset({Config.E04}))
+# The external sensor 0x2005-0x2008/0x2100: table 7-14 lists them among the objects of all
+# valves, so every -CA valve answers them; they are parameters of the E04 only (the E02 has no
+# external sensor input: §3.1, table 7-22, its diagram and list table 8-1/figure 8-18).
+SENSOR_OBJECTS = Applies(configs=frozenset({Config.E04}), every_canopen=True)
 CA_ONLY = Applies(canopen_only=True)
 
 SIGNAL_TYPES: tuple[tuple[int, Texts], ...] = (

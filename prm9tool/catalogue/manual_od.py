@@ -19,6 +19,10 @@ from __future__ import annotations
 STORED_WITH_1010 = "stored with 0x1010"
 KEPT_AS_WRITTEN = "kept by the valve as written (it has no store command)"
 VERIFIED_RESTART = "verified after a restart"
+# why the restart verification failed (--batch's report, the GUI's history record)
+NOT_KEPT_AFTER_RESTART = (
+    "after a restart the valve reads back values other than the upload's: it did not keep them"
+)
 
 
 def _record(index: int, highest: int, first: int = 0) -> dict[int, range]:

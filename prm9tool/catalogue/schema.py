@@ -7,6 +7,7 @@ import re
 import struct
 from dataclasses import dataclass, field
 from enum import IntEnum, StrEnum
+from functools import cached_property
 
 from prm9tool.catalogue.variant import Coils, Config, Variant
 from prm9tool.errors import ValueRangeError
@@ -30,7 +31,7 @@ class DataType(IntEnum):
         """Encoded size in bytes (0 for variable-length strings)."""
         return _SIZES[self]
 
-    @property
+    @cached_property
     def is_string(self) -> bool:
         """True for the variable-length string type."""
         return self is DataType.VISIBLE_STRING
@@ -42,15 +43,17 @@ class DataType(IntEnum):
 
     def encode(self, value: int | str) -> bytes:
         """Encode a raw value little-endian as on the CAN bus."""
-        if self.is_string:
+        codec = _STRUCTS.get(self)
+        if codec is None:
             return str(value).encode("latin-1", errors="replace")
-        return struct.pack("<" + _FORMATS[self], int(value))
+        return codec.pack(int(value))
 
     def decode(self, data: bytes) -> int | str:
         """Decode little-endian bytes; raises ``struct.error``/``ValueError`` on wrong length."""
-        if self.is_string:
+        codec = _STRUCTS.get(self)
+        if codec is None:
             return data.decode("latin-1")
-        return int(struct.unpack("<" + _FORMATS[self], data)[0])
+        return int(codec.unpack(data)[0])
 
 
 _SIZES = {
@@ -72,6 +75,7 @@ _FORMATS = {
     DataType.UNSIGNED16: "H",
     DataType.UNSIGNED32: "I",
 }
+_STRUCTS = {dtype: struct.Struct("<" + fmt) for dtype, fmt in _FORMATS.items()}  # not strings
 _RANGES = {
     DataType.BOOLEAN: (0, 1),
     DataType.INTEGER8: (-128, 127),
@@ -116,11 +120,17 @@ class Texts:
 
 @dataclass(frozen=True)
 class Applies:
-    """The variants a parameter exists on."""
+    """The variants a parameter belongs to (calling it: the variant's parameter set).
+
+    ``every_canopen``: the object is in the object dictionary of every -CA valve, also where
+    it is not part of the parameter set (the external sensor objects of manual table 7-14 on
+    an E02 -CA, which has no sensor input): :meth:`on_device` says where the object exists.
+    """
 
     configs: frozenset[Config] = frozenset(Config)
     coils: frozenset[Coils] = frozenset(Coils)
     canopen_only: bool = False
+    every_canopen: bool = False
 
     def __call__(self, variant: Variant) -> bool:
         return (
@@ -129,6 +139,10 @@ class Applies:
             and (variant.canopen or not self.canopen_only)
         )
 
+    def on_device(self, variant: Variant) -> bool:
+        """True if ``variant``'s object dictionary has the object (over CANopen and USB)."""
+        return self(variant) or (self.every_canopen and variant.canopen)
+
     def describe(self) -> str:
         """Human-readable list of the variants, e.g. ``E04, coils AB/A, -CA only``."""
         parts = ["/".join(sorted(c.value for c in self.configs))]
@@ -136,6 +150,9 @@ class Applies:
             parts.append("coils " + "/".join(sorted(c.value for c in self.coils)))
         if self.canopen_only:
             parts.append("-CA only")
+        if self.every_canopen and self.configs != frozenset(Config):
+            others = "/".join(sorted(c.value for c in set(Config) - self.configs))
+            parts.append(f"object also on {others} -CA")
         return ", ".join(parts)
 
 
@@ -178,7 +195,7 @@ class Parameter:
     extra: dict[str, str] = field(default_factory=dict, compare=False, hash=False)
 
     # --- identity -----------------------------------------------------------------
-    @property
+    @cached_property
     def key(self) -> tuple[int, int]:
         """``(index, subindex)``."""
         return (self.index, self.subindex)
@@ -194,12 +211,17 @@ class Parameter:
         real valve may lack that object, so over CANopen the parameter may be unavailable."""
         return not _DECIDED_ADDRESS.search(self.source)
 
-    @property
+    @cached_property
     def is_string(self) -> bool:
         """True for string parameters (type key, firmware version, device name)."""
         return self.dtype.is_string
 
-    @property
+    def on_device(self, variant: Variant) -> bool:
+        """True if ``variant``'s object dictionary has this object; it may still not be part
+        of the variant's parameter set (``applies``): see :class:`Applies`."""
+        return self.applies.on_device(variant)
+
+    @cached_property
     def writable(self) -> bool:
         """True if the object dictionary accepts writes."""
         return self.obj_access in (ObjAccess.RW, ObjAccess.WO)

@@ -11,7 +11,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 from prm9tool.catalogue.scale import PERCENT
-from prm9tool.catalogue.schema import EVERY_VARIANT, Applies, Texts
+from prm9tool.catalogue.schema import EVERY_VARIANT, Applies, Parameter, Texts
 from prm9tool.catalogue.variant import Coils, Config, Variant
 
 T = Texts
@@ -265,6 +265,32 @@ SIGNAL_OBJECTS: dict[str, tuple[str, float]] = {
     "supply_voltage": ("PWR", 1.0),
     "temperature": ("TEMP", 10.0),  # °C -> 0.1 °C
 }
+
+# Measuring points that are the setpoint a CANopen master writes (RPDO1 entry 2, manual table
+# 7-13: 0x6300 in control mode 2, 0x6380 in mode 4): key -> the object's mnemonic. TPDO1 does
+# not carry them back; over CANopen the scope shows the setpoint the tool itself sends.
+SETPOINT_SIGNALS: dict[str, str] = {"position_setpoint": "POSSETP", "process_setpoint": "PRCSETP"}
+
+
+def signal_object(key: str) -> tuple[Parameter, float] | None:
+    """The catalogue parameter of the object that holds measuring point ``key`` (its address
+    and data type: 0x6301/1, not the record's count at /0) and the factor from its raw value to
+    the point's raw units; None when the point has no object (SIGNAL_OBJECTS)."""
+    from prm9tool.catalogue import CATALOGUE
+
+    found = SIGNAL_OBJECTS.get(key)
+    return None if found is None else (CATALOGUE[found[0]], found[1])
+
+
+def signal_at_index(index: int) -> str | None:
+    """The measuring point the object ``index`` holds (0x6301 → ``position_actual``, the
+    value a PDO mapping entry names by its index); None for any other object."""
+    from prm9tool.catalogue import CATALOGUE
+
+    for key, (mnemonic, _factor) in SIGNAL_OBJECTS.items():
+        if CATALOGUE[mnemonic].index == index:
+            return key
+    return None
 
 
 def signals_for(variant: Variant) -> list[Signal]:

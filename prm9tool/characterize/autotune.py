@@ -202,7 +202,7 @@ def simulate_steps(
 
     key = TypeKey.parse(rig.info.type_key)
     analog = TypeKey(key.size, key.spool, key.flow, key.supply, key.config, False)
-    names = [p.mnemonic for p in CATALOGUE.for_variant(analog.variant) if p.in_file and p.writable]
+    names = [p.mnemonic for p in CATALOGUE.file_parameters(analog.variant) if p.writable]
     present = rig.read(names)
     steps = []
     for values in (present, {**present, **proposed}):

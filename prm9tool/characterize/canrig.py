@@ -42,6 +42,7 @@ from typing import TYPE_CHECKING
 import numpy as np
 
 from prm9tool.catalogue import CATALOGUE
+from prm9tool.catalogue.signals import signal_at_index, signal_object
 from prm9tool.characterize.rig import (
     LATE_SHARE,
     LinkTooSlowError,
@@ -55,6 +56,7 @@ from prm9tool.characterize.rig import (
 )
 from prm9tool.device.canlink.pdo_scope import MAX_BUS_LOAD
 from prm9tool.device.canlink.pdo_scope import MIN_PERIOD_S as MIN_SYNC_PERIOD_S
+from prm9tool.device.canlink.sampler import DEMAND_KEYS  # the demand the master wrote
 from prm9tool.device.canlink.sync_clock import SlotSamples, SyncClock
 from prm9tool.errors import CommunicationError, Prm9Error
 
@@ -66,13 +68,10 @@ if TYPE_CHECKING:
     from prm9tool.device.session import ValveSession
     from prm9tool.device.setpoint import SetpointLink
 
-DEMAND_KEYS = ("position_setpoint", "process_setpoint")  # the demand the master wrote
-RESPONSE_OBJECTS = {"position_actual": "POSACT", "process_actual": "PRCACT"}  # 0x6301/0x6381
 LATE_PERIODS = 2.0  # a sample this many periods behind its time is late
 GAPS_SHARE = 0.75  # a play whose analysis takes gaps (the sweep) may lose up to this share
 SETTLE_S = 0.1  # the last SYNC's TPDO1 is awaited this long at most
 TICK_BITS = (47 + 3) + 2 * (47 + 32 + 3)  # SYNC + RPDO1 + TPDO1 (4 bytes each) on the wire
-TPDO1_ENTRY2 = {0x6301: "position_actual", 0x6381: "process_actual"}
 SYNCHRONOUS_EVERY_SYNC = 1  # TPDO transmission type 1 (table 7-12)
 TRIAL_LATE_SHARE = 0.01  # the pace is kept when at most this share of the trial is late
 PROBES = 20  # SDO round trips measured to choose the period
@@ -111,6 +110,7 @@ class CanRig(Rig):
             f"CANopen node {session.node_id} ({options.interface} {options.channel}), "
             f"{how}, one sample per {self.period_s * 1000:g} ms",
             1.0 / self.period_s,
+            info.device_id,
         )
         self.late = 0  # samples of the last play taken late (SDO) or lost (SYNC)
         self.lost = 0  # samples lost in every play so far (bridged for the analysis)
@@ -121,7 +121,7 @@ class CanRig(Rig):
         sdo = self.session.sdo
         try:
             cob_id = sdo.read_u32(0x1800, 1)
-            key = TPDO1_ENTRY2.get(sdo.read_u32(0x1A00, 2) >> 16)
+            key = signal_at_index(sdo.read_u32(0x1A00, 2) >> 16)  # 0x6301 or 0x6381
         except Prm9Error:  # no such object: the SDO way
             return None
         if cob_id & 0x8000_0000 or key is None:
@@ -255,6 +255,7 @@ class CanRig(Rig):
         sdo = self.session.sdo
         checks = max(1, round(CHECK_S / self.period_s))
         rows = np.full((len(values), len(keys)), np.nan)
+        objects = [signal_object(key) for key in keys]  # the catalogue's measuring-point objects
         late = 0
         due = time.perf_counter()
         for i, value in enumerate(values):
@@ -273,9 +274,10 @@ class CanRig(Rig):
             for column, key in enumerate(keys):
                 if key in DEMAND_KEYS:
                     rows[i, column] = value
-                elif key in RESPONSE_OBJECTS:
-                    obj = CATALOGUE[RESPONSE_OBJECTS[key]]
-                    rows[i, column] = int(obj.dtype.decode(sdo.upload(obj.index, obj.subindex)))
+                elif (found := objects[column]) is not None:  # 0x6301, 0x6381 …
+                    obj, factor = found
+                    raw = int(obj.dtype.decode(sdo.upload(obj.index, obj.subindex)))
+                    rows[i, column] = raw * factor
             due += self.period_s
         self.late, self.samples = late, self.samples + len(values)
         if late > LATE_SHARE * len(values):

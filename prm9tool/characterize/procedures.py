@@ -121,12 +121,42 @@ def chain_changes(rig: Rig, loop: str = "position") -> dict[str, int]:
     the valve lacks on its link (a real valve over CANopen has no object for them) stays as the
     valve has it: the test then runs through that part of the valve's own chain.
     """
+    _check_control_mode(rig, loop)
     wanted = dict(TRANSPARENT)
     if loop == "process":
         for key in ("GAINSETPOS", "GAINSETNEG", "OFFSETPOS", "OFFSETNEG"):
             del wanted[key]
     present = rig.read(list(wanted))
     return {k: v for k, v in wanted.items() if k in present and present[k] != v}
+
+
+def _check_control_mode(rig: Rig, loop: str) -> None:
+    """Refuse, before anything is written or moved, a loop the valve's control mode does not
+    close: on an E04 in control mode 4 (its default) the setpoint drives the process loop, so
+    a position-loop test would step the actuator, not the spool; in mode 2 there is no
+    process loop. A valve without the object on its link is left to its own chain."""
+    mode = rig.read(["CTRLMODE"]).get("CTRLMODE")
+    wanted = 4 if loop == "process" else 2
+    if mode is None or mode == wanted:
+        return
+    if loop == "process":
+        raise Prm9Error(
+            QT_TRANSLATE_NOOP(
+                "Characterize",
+                "the valve is in control mode {0} (spool position): it has no process loop "
+                "to test; the process loop runs in control mode 4 (CTRLMODE). Nothing was "
+                "changed",
+            )(mode)
+        )
+    raise Prm9Error(
+        QT_TRANSLATE_NOOP(
+            "Characterize",
+            "the valve is in control mode {0} (process loop): its setpoint drives the process "
+            "controller, not the spool, so the position loop cannot be tested on its own. "
+            "Choose the process loop, or set CTRLMODE to 2 (spool position) while the valve "
+            "is not enabled. Nothing was changed",
+        )(mode)
+    )
 
 
 @dataclass(frozen=True)
@@ -161,8 +191,11 @@ def record(
         return Record(t, {k: v[:end] for k, v in channels.items()})
     if len(outside):
         raise LimitExceededError(
-            f"{BY_KEY[keys[1]].key} left the allowed band {centre:g} ± {limit:g} %; "
-            "the test was stopped and the valve put back as it was"
+            QT_TRANSLATE_NOOP(
+                "Characterize",
+                "{0} left the allowed band {1} ± {2} %; the test was stopped and the valve "
+                "put back as it was",
+            )(BY_KEY[keys[1]].text, Number(f"{centre:g}"), Number(f"{limit:g}"))
         )
     t = np.arange(len(raw)) / rig.info.sample_rate_hz
     return Record(t, channels)

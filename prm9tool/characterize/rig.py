@@ -101,8 +101,9 @@ class RigInfo:
     type_key: str
     serial: int
     firmware: str
-    link: str
+    link: str  # how it was measured, for the report ("CANopen node 10 (…), SDO polling …")
     sample_rate_hz: float
+    device_id: str = ""  # the valve's device ID (``emulator:KEY:SERIAL``, ``can:10`` …)
 
 
 class Rig(ABC):
@@ -197,6 +198,7 @@ class EmulatorRig(Rig):
             valve.firmware_version,
             "emulator (stepped faster than real time)",
             1.0 / valve.CYCLE_S,
+            f"emulator:{valve.type_key}:{valve.serial}",
         )
         self.valve_seconds = 0.0  # valve time the procedures took (benchmarks)
         while valve.status().booting:
@@ -281,7 +283,9 @@ class SessionRig(Rig):
         super().__init__()
         self.session = session
         info = session.info
-        self.info = RigInfo(info.type_key, info.serial, info.firmware, link, float(rate_hz))
+        self.info = RigInfo(
+            info.type_key, info.serial, info.firmware, link, float(rate_hz), info.device_id
+        )
         self.rate_hz = rate_hz
         self.update = max(1, rate_hz // 1000)
         self._link = session.setpoint_link()  # over USB the override SETPOVRON/SETPOVR

@@ -123,7 +123,7 @@ def characterize(rig: Rig, profile: Profile, progress: Progress | None = None) -
     say = progress or (lambda _text: None)
     started = time.perf_counter()
     variant = TypeKey.parse(rig.info.type_key).variant
-    names = [p.mnemonic for p in CATALOGUE.for_variant(variant) if p.in_file]
+    names = [p.mnemonic for p in CATALOGUE.file_parameters(variant)]
     result = Characterization(
         rig.info, profile, datetime.now(UTC).isoformat(timespec="seconds"), rig.read(names)
     )

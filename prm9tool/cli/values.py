@@ -38,7 +38,7 @@ def run(args: argparse.Namespace) -> int:
     except CommunicationError as exc:
         print(f"prm9tool: {exc}", file=sys.stderr)
         return ExitCode.COMMUNICATION
-    with Valve(session, history_db=args.history_db) as valve:
+    with Valve(session, history_db=args.history_db, command="--set --store") as valve:
         try:
             return _run(args, valve, wanted)
         except BatchError as exc:

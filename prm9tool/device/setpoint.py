@@ -54,6 +54,12 @@ class SetpointLink(ABC):
         undo what a previous session may have left on. Nothing to do by default."""
         return
 
+    def leftovers(self) -> dict[str, int]:
+        """What :meth:`begin` changed on the valve that :meth:`end` would put back, as
+        {mnemonic: value before}: for a link that broke before :meth:`end`, written back once
+        the same valve is open again. Nothing by default."""
+        return {}
+
 
 class OverrideSetpoint(SetpointLink):
     """The service override SETPOVRON/SETPOVR (see the module docstring)."""

@@ -326,7 +326,7 @@ def markdown_table(parameters: Iterable[Parameter] | None = None) -> str:
 def _canopen_parameters() -> list[Parameter]:
     """Every catalogue entry that exists on at least one -CA variant."""
     ca_variants = [v for v in ALL_VARIANTS if v.canopen]
-    return [p for p in CATALOGUE if any(p.applies(v) for v in ca_variants)]
+    return [p for p in CATALOGUE if any(p.on_device(v) for v in ca_variants)]
 
 
 def _md(text: str) -> str:

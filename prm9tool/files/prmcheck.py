@@ -53,6 +53,11 @@ _NOT_ON_VARIANT = QT_TRANSLATE_NOOP(
     "Problems",
     "{0} ({1}) does not exist on {2} valves (type key {3}); remove the line or change the type key",
 )
+_NOT_IN_SET = QT_TRANSLATE_NOOP(
+    "Problems",
+    "{0} ({1}) is not a parameter of {2} valves (type key {3}): they have the object but no"
+    " external sensor input; remove the line or change the type key",
+)
 _NO_VALUE = QT_TRANSLATE_NOOP("Problems", "{0}: no value after '='")
 _ROUNDED = QT_TRANSLATE_NOOP(
     "Problems", "{0}: {1}{2} is stored as {3}{2}, the nearest value the valve can hold"
@@ -254,7 +259,9 @@ def _misplaced(param: Parameter, type_key: TypeKey | None) -> Message | None:
         return _ONLINE_ONLY(param.mnemonic, param.text)
     if type_key is not None and not param.applies(type_key.variant):
         variant = variant_label(type_key.variant)
-        return _NOT_ON_VARIANT(param.mnemonic, param.text, variant, str(type_key))
+        # an object of the valve outside its parameter set: the external sensor on an E02 -CA
+        text = _NOT_IN_SET if param.on_device(type_key.variant) else _NOT_ON_VARIANT
+        return text(param.mnemonic, param.text, variant, str(type_key))
     return None
 
 

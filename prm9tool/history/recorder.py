@@ -21,7 +21,7 @@ import threading
 from collections.abc import Mapping
 from datetime import UTC, datetime
 from pathlib import Path
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING, Any, TypedDict
 
 from prm9tool import __version__
 from prm9tool.errors import HistoryError
@@ -40,6 +40,46 @@ OPERATIONS = (
     "download", "upload", "store", "restore-factory", "online-edits", "batch-upload",
     "backup", "characterization",
 )  # fmt: skip
+
+
+class FigureDetails(TypedDict):
+    """One figure of a ``characterization`` record: its value and verdict (None: no limit)."""
+
+    name: str
+    value: float
+    above: bool
+    unit: str
+    passed: bool | None
+
+
+class Details(TypedDict, total=False):
+    """What a record's ``details`` hold, by the operation that wrote them (docs/history.md).
+
+    Every key is optional: an operation writes the ones that say what it did. The database
+    keeps them as JSON; records read back are plain dicts with the same keys.
+    """
+
+    command: str  # what ran it: "--diff", "python API", "Valve → Store" …
+    purpose: str  # what the GUI's download or upload was for ("compare", "download" …)
+    file: str | None  # the *.prm file read or written (backup, batch, --diff)
+    written: int  # parameters written (upload)
+    verified: bool  # every value read back as written (upload)
+    chosen: int  # values the upload was given (a partial upload: fewer than the set)
+    mismatches: dict[str, list[str]] | int  # mnemonic -> [wanted, read] (GUI); a count (batch)
+    verification: str  # the batch mode's verdict of the read-back
+    store: str | None  # which store the link made (CANopen: 0x1010 or the upload's own)
+    upload_store: str | None  # restart-verify: how the verified upload had stored the set
+    checked: int  # restart-verify: uploaded values compared after the restart
+    error: str  # why it failed
+    backup: str | None  # the backup file taken before (restore-factory)
+    stored: bool  # online edits: whether the values were stored
+    profile: str  # characterization: the acceptance profile's name
+    started: str  # characterization: when the run started
+    figures: list[FigureDetails]  # characterization: every figure with its verdict
+    changes: dict[str, list[int | str]]  # online changes: mnemonic -> [from, to] (raw)
+    source: str  # online changes: the file or the history record the values came from
+    what: str  # tuning accepted: what was accepted
+    loop: str  # tuning accepted: the loop it was accepted for
 
 
 def now_utc() -> str:

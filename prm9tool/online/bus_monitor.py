@@ -12,20 +12,22 @@ from __future__ import annotations
 import contextlib
 import logging
 import threading
-from collections.abc import Callable, Mapping
-from typing import Any, Protocol
+from collections.abc import Callable, Mapping, Sequence
+from typing import TYPE_CHECKING, Protocol
 
 from PySide6.QtCore import QObject, Signal
 
 from prm9tool.errors import Prm9Error
 from prm9tool.translate import error_text
 
+if TYPE_CHECKING:
+    from prm9tool.device.canlink.watch import BusWatch
+
 log = logging.getLogger(__name__)
 PERIOD_S = 0.25
-Watcher = Callable[[Mapping[str, object]], Any]  # bus dict -> an object with nodes() and close()
 
 
-def open_watch(bus: Mapping[str, object]) -> Any:
+def open_watch(bus: Mapping[str, object]) -> BusWatch:
     """A ``BusWatch`` on the bus ``bus`` (``interface``, ``channel``, ``bitrate``)."""
     from prm9tool.device.canlink.bus import CanOptions
     from prm9tool.device.canlink.watch import BusWatch
@@ -37,19 +39,57 @@ def open_watch(bus: Mapping[str, object]) -> Any:
 
 
 class HeardNode(Protocol):
-    """What a view shows of one node (``prm9tool.device.canlink.watch.NodeHeard``)."""
+    """What a view shows of one node (``prm9tool.device.canlink.watch.NodeHeard``; read-only)."""
 
-    node_id: int
-    nmt_state: str | None  # None: no heartbeat heard
-    heartbeat_age_s: float | None
-    last_emcy: str
-    boot_up_age_s: float | None
-    silent: bool
+    @property
+    def node_id(self) -> int:
+        """The node ID (1 … 127)."""
+        ...
+
+    @property
+    def nmt_state(self) -> str | None:
+        """The NMT state its heartbeat tells (None: no heartbeat heard)."""
+        ...
+
+    @property
+    def heartbeat_age_s(self) -> float | None:
+        """Seconds since its last heartbeat (None: none heard)."""
+        ...
+
+    @property
+    def last_emcy(self) -> str:
+        """Its last emergency message ("" none heard)."""
+        ...
+
+    @property
+    def boot_up_age_s(self) -> float | None:
+        """Seconds since its last boot-up frame (None: none heard)."""
+        ...
+
+    @property
+    def silent(self) -> bool:
+        """True when its heartbeats stopped coming (several periods missed)."""
+        ...
 
     @property
     def device_id(self) -> str:
         """``can:NODE``."""
         ...
+
+
+class NodeWatch(Protocol):
+    """An open bus the monitor asks for its nodes (``BusWatch``; a fake in a test)."""
+
+    def nodes(self) -> Sequence[HeardNode]:
+        """Every node heard so far, by node ID."""
+        ...
+
+    def close(self) -> None:
+        """Let the bus go."""
+        ...
+
+
+Watcher = Callable[[Mapping[str, object]], NodeWatch]  # bus dict -> the bus, open
 
 
 class BusMonitor(QObject):

@@ -2,17 +2,20 @@
 
 A run records one ``characterization`` record of the valve: outcome ``passed``/``failed``, the
 parameter set the valve ran with (read at the start of the run) and every figure with its
-limit verdict in the details. Used by ``--characterize`` and the GUI alike. No Qt.
+limit verdict in the details (:func:`~prm9tool.online.recording.characterization_details`, which
+a script's :meth:`Valve.characterize <prm9tool.api.valve.Valve.characterize>` records too).
+Used by ``--characterize`` and the GUI alike. No Qt.
 """
 
 from __future__ import annotations
 
 from collections.abc import Callable
 from types import SimpleNamespace
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING
 
 from prm9tool.characterize.run import RESULT_HOOKS, Characterization
 from prm9tool.history.recorder import Recorder
+from prm9tool.online.recording import characterization_details
 
 if TYPE_CHECKING:
     from prm9tool.online.connection import ValveConnection
@@ -23,23 +26,9 @@ def recording_hook(recorder: Recorder) -> Callable[[Characterization], None]:
 
     def record(result: Characterization) -> None:
         info = result.info
-        valve = SimpleNamespace(type_key=info.type_key, serial=info.serial,
-                                firmware=info.firmware, device_id=str(info.link))  # fmt: skip
-        details: dict[str, Any] = {
-            "profile": result.profile.name,
-            "started": result.date,
-            "figures": [
-                {
-                    "name": f.name,
-                    "value": f.value,
-                    "above": f.above,
-                    "unit": f.unit,
-                    "passed": f.passed,
-                }
-                for f in result.figures
-            ],
-        }
-        outcome = "passed" if result.passed else "failed"
+        valve = SimpleNamespace(type_key=info.type_key, serial=info.serial, firmware=info.firmware,
+                                device_id=info.device_id or info.link)  # fmt: skip
+        outcome, details = characterization_details(result)
         recorder.record_safely(valve, "characterization", outcome, result.parameters, details)
 
     return record

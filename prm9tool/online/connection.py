@@ -4,51 +4,45 @@ One worker thread owns the session; the GUI thread only queues jobs (go online, 
 …) and receives results as signals, so the GUI never blocks on the valve. Between jobs the
 worker polls the valve on its own schedule, whether or not jobs keep arriving: the
 oscilloscope stream (every 20 ms), status and read-only live values (≈ 2 Hz) and watched
-measuring points (≈ 7 Hz). A communication error ends the session: the connection reports
-``lost`` and is offline afterwards. QtCore only; the device layer is imported lazily.
+measuring points (≈ 7 Hz); those live commands and their state are :class:`LiveData`
+(connection_live.py). A communication error ends the session: the connection reports ``lost``,
+is offline afterwards and looks for the same valve again (connection_reconnect.py). QtCore
+only; the device layer is imported lazily.
 """
 
 from __future__ import annotations
 
 import logging
 from collections.abc import Callable, Mapping, Sequence
-from typing import TYPE_CHECKING, Any, cast
+from typing import TYPE_CHECKING, cast
 
 from PySide6.QtCore import QObject, Qt, Signal
 
+from prm9tool.online.connection_live import LiveData
 from prm9tool.online.connection_reconnect import ReconnectLink
 from prm9tool.online.connection_worker import ConnectionWorker, Job
 from prm9tool.online.reconnect import LostValve
-from prm9tool.online.setpoint_driver import (
-    GENERATOR_OBJECTS,
-)
 from prm9tool.online.valve_listing import default_lister, default_opener, list_in_thread
 
 if TYPE_CHECKING:
     from prm9tool.device.session import ValveSession
-    from prm9tool.history.recorder import Recorder
+    from prm9tool.history.recorder import Details, Recorder
     from prm9tool.online.connection_protocol import ListedValves, ValveIdentity, ValveListing
     from prm9tool.online.recording import HistoryHook
-    from prm9tool.scope import GeneratorSettings  # not at run time: numpy, at start-up
 
 log = logging.getLogger(__name__)
 
 Opener = Callable[[object], "ValveSession"]  # entry -> the open session
 Lister = Callable[..., "Sequence[ValveListing]"]  # (emulator specs[, CAN bus dict]) -> entries
-OVERRIDE_OBJECTS = tuple(sorted(GENERATOR_OBJECTS))  # a refused generator start names these
 
 
-class ValveConnection(QObject):
-    """Online/offline state and asynchronous operations on one valve (docs/ARCHITECTURE.md)."""
+class ValveConnection(LiveData, QObject):
+    """Online/offline state and asynchronous operations on one valve (docs/ARCHITECTURE.md);
+    its stream, generator and polled values in :class:`LiveData` (connection_live.py)."""
 
     online_changed = Signal(bool)
     device_changed = Signal(object)  # DeviceInfo or None
     status_changed = Signal(object)  # ValveStatus
-    live_values_changed = Signal(dict)  # {mnemonic: raw}
-    signal_values_changed = Signal(dict)  # {measuring-point key: raw}
-    samples_received = Signal(object)  # numpy (n, k) raw block, in stream key order
-    stream_started = Signal(list)
-    stream_stopped = Signal()
     failed = Signal(str)
     lost = Signal(str)
     progress = Signal(int, int, str)
@@ -56,7 +50,6 @@ class ValveConnection(QObject):
     busy_changed = Signal(bool)
     write_failed = Signal(list)  # mnemonics whose write failed (the valve state is unknown)
     backup_written = Signal(str)  # path of the backup taken before the first upload
-    samples_lost_changed = Signal(int)  # samples the oscilloscope stream lost since it started
     history_problem = Signal(str)  # a record went to the local queue, or was lost (why)
     # a CANopen valve without 0x2041 whose type key is not known: (device ID, serial, "E02"/"E04")
     type_key_needed = Signal(str, int, str)
@@ -83,9 +76,7 @@ class ValveConnection(QObject):
         self._online = False
         self._device: ValveIdentity | None = None
         self._busy = 0
-        self._stream_keys: list[str] = []  # GUI-side: keys of the running stream
-        self._generator = False  # GUI-side: a setpoint generator was started and not stopped
-        self._samples_lost = 0  # GUI-side: lost samples of the running stream
+        self._init_live()
         self._posted.connect(self._on_posted, Qt.ConnectionType.QueuedConnection)
         self.history: HistoryHook | None = None  # set_recorder(); used by the worker only
         self.auto_reconnect = True  # look for a lost valve until it is back (online/reconnect.py)
@@ -107,7 +98,7 @@ class ValveConnection(QObject):
         self._submit(Job("history_check", run, on_done, report=False))
 
     def record(self, operation: str, outcome: str, values: Mapping[str, int | str] | None,
-               details: Mapping[str, Any] | None = None) -> None:  # fmt: skip
+               details: Details | None = None) -> None:  # fmt: skip
         """Record an operation the GUI ran as its own job (e.g. restore factory values)."""
         if self.history is not None:
             hook = self.history
@@ -129,17 +120,6 @@ class ValveConnection(QObject):
     def is_busy(self) -> bool:
         """True while a long operation (upload, download, …) runs."""
         return self._busy > 0
-
-    @property
-    def streaming_keys(self) -> list[str]:
-        """The measuring points of the running stream ([] when none runs)."""
-        return list(self._stream_keys)
-
-    @property
-    def samples_lost(self) -> int:
-        """Samples the running oscilloscope stream lost since it started (gaps in its sequence
-        numbers: the link or the host could not keep up); 0 when no stream runs."""
-        return self._samples_lost
 
     def list_devices(self, emulators: Sequence[str] = ()) -> list[ValveListing]:
         """Connected valves plus the emulated valves ``emulators`` ("TYPEKEY[:SERIAL]").
@@ -256,6 +236,18 @@ class ValveConnection(QObject):
 
         self._long_job(tag, run)
 
+    def verify_by_restart(
+        self, expected: Mapping[str, int | str], upload_store: str | None
+    ) -> None:
+        """Restart the valve and read back that it kept ``expected`` (online/restart_verify.py;
+        only after the hydraulics confirmation); result: operation_finished("verify_restart",
+        RestartVerification), a valve that does not come back arrives as ``lost``."""
+        from prm9tool.online.restart_verify import verify_by_restart
+
+        values, progress = dict(expected), self._worker.progress
+        work = lambda s: verify_by_restart(s, values, upload_store, self.history, progress)  # noqa: E731
+        self._long_job("verify_restart", work)
+
     def run_job(self, name: str, work: Callable[[ValveSession], object]) -> None:
         """Run ``work(session)`` as a long operation; result: operation_finished(name, …)."""
         self._long_job(name, work)
@@ -282,60 +274,6 @@ class ValveConnection(QObject):
     def restart(self) -> None:
         """Restart the valve electronics; result: operation_finished("restart", None)."""
         self._long_job("restart", lambda s: s.restart())
-
-    def start_stream(self, keys: Sequence[str], rate_hz: int) -> None:
-        """Stream up to three measuring points; samples arrive as ``samples_received``."""
-        names = list(keys)
-
-        def run(session: ValveSession) -> list[str]:
-            started = self._worker.poller.start_stream(session, names, rate_hz)
-            self._worker.clock.restart(rate_hz)
-            return started
-
-        self._submit(Job("stream_start", run, self._on_stream_started, False))
-
-    def stop_stream(self) -> None:
-        """Stop the stream (``stream_stopped`` follows)."""
-        self._submit(
-            Job("stream_stop", self._worker.poller.stop_stream, self._on_stream_stopped, False)
-        )
-
-    def start_generator(self, settings: GeneratorSettings) -> None:
-        """Run the setpoint generator's waveform on the valve's setpoint, off the GUI thread
-        and on the valve's time base (:mod:`prm9tool.online.setpoint_driver`): the override
-        over USB, RPDO1 over CANopen. A refused write arrives as ``failed`` and
-        ``write_failed``."""
-
-        def refused() -> None:
-            self._generator = False
-            self.write_failed.emit(list(OVERRIDE_OBJECTS))
-
-        run = lambda s: self._worker.start_driver(s, settings)  # noqa: E731
-        self._generator = True
-        self._submit(Job("generator", run, None, False, refused))
-
-    @property
-    def generator_running(self) -> bool:
-        """True from start_generator until stop_generator, a refusal or the link's end (what
-        the Tuning window tells the user a test will stop)."""
-        return self._generator
-
-    def stop_generator(self) -> None:
-        """End the waveform and give the setpoint back (SETPOVRON = 0; over CANopen the
-        RPDO1 setpoint from before the generator)."""
-        refused = lambda: self.write_failed.emit(["SETPOVRON"])  # noqa: E731
-        run = lambda s: self._worker.stop_driver(s, switch_off=True)  # noqa: E731
-        self._generator = False
-        self._submit(Job("generator_stop", run, None, False, refused))
-
-    def watch_signals(self, keys: Sequence[str]) -> None:
-        """Measuring points whose values ``signal_values_changed`` carries (≈ 4 Hz)."""
-        self._worker.poller.watched = list(keys)
-
-    def watch_live(self, mnemonics: Sequence[str]) -> None:
-        """Read-only values polled for ``live_values_changed`` (default: the variant's)."""
-        self._worker.poller.live = list(mnemonics)
-        self._worker.poller.live_explicit = True
 
     def shutdown(self, timeout_s: float = 3.0) -> None:
         """Close the session and end the worker thread (application exit)."""
@@ -409,27 +347,9 @@ class ValveConnection(QObject):
         self._busy = 0
         self._generator = False
         self.busy_changed.emit(False)
-        if self._stream_keys:
-            self._stream_keys = []
-            self._set_samples_lost(0)
-            self.stream_stopped.emit()
+        self._forget_live()
         self.device_changed.emit(None)
         self.online_changed.emit(False)
-
-    def _on_stream_started(self, keys: object) -> None:
-        self._stream_keys = list(keys)  # type: ignore[call-overload]
-        self._set_samples_lost(0)
-        self.stream_started.emit(self._stream_keys)
-
-    def _on_stream_stopped(self, _result: object) -> None:
-        self._stream_keys = []
-        self._set_samples_lost(0)
-        self.stream_stopped.emit()
-
-    def _set_samples_lost(self, count: int) -> None:
-        if count != self._samples_lost:
-            self._samples_lost = count
-            self.samples_lost_changed.emit(count)
 
     def _finish(self, job: Job, result: object) -> None:
         if job.on_done is not None:

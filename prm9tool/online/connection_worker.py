@@ -67,6 +67,8 @@ class ConnectionWorker:
         self.poller = Poller()  # worker-side state of the periodic reads
         self.clock = StreamClock()  # the valve's time from its stream (the generator's)
         self._driver: SetpointDriver | None = None  # the running generator
+        # (serial, {mnemonic: value}): what a generator cut off with its session had changed
+        self._left_on: tuple[int, dict[str, int]] | None = None
         self._thread: threading.Thread | None = None
         self._last_progress = 0.0
 
@@ -152,6 +154,7 @@ class ConnectionWorker:
             raise
         info = self.session.identify()
         self.poller.reset(info)
+        self._put_back_left_on(self.session, getattr(info, "serial", 0))
         if self._after_open is not None:
             session = self.session
             threading.Thread(
@@ -194,8 +197,30 @@ class ConnectionWorker:
 
         self._host._post(report)
 
+    def _put_back_left_on(self, session: ValveSession, serial: int) -> None:
+        """The same valve again: write back what a generator cut off with its last session
+        had changed (over CANopen the RPDO1 deadline it armed) and say so."""
+        left_on = self._left_on
+        if left_on is None or left_on[0] != serial:
+            return
+        self._left_on = None
+        values = left_on[1]
+        try:
+            session.write_many(values)
+        except Prm9Error as exc:  # said; the session stays open
+            text = error_text(exc)
+            self._host._post(lambda: self._host.failed.emit(text))
+            return
+        names = sorted(values)
+        self._host._post(lambda: self._host.generator_undone.emit(names))
+
     def close(self) -> None:
         """Stop the generator and close the session (a broken link closes quietly)."""
+        if self._driver is not None and self.session is not None:
+            left_on = self._driver.leftovers()  # its end cannot run: put back when it is back
+            if left_on:
+                serial = int(getattr(getattr(self.session, "info", None), "serial", 0))
+                self._left_on = (serial, left_on)
         self.stop_driver(None, switch_off=False)  # the link may be gone: nothing to write
         session, self.session = self.session, None
         self.poller.forget_streams()

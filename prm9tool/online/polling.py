@@ -57,7 +57,7 @@ def live_mnemonics(variant: Variant | None) -> list[str]:
         return ["PWR", "TEMP", "ERROR"]
     return [
         p.mnemonic
-        for p in CATALOGUE.for_variant(variant)
+        for p in CATALOGUE.parameter_set(variant)
         if not p.in_file and p.dtype.size and p.group not in HIDDEN_GROUPS
     ]
 

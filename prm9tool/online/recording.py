@@ -12,13 +12,14 @@ from __future__ import annotations
 import threading
 from collections.abc import Callable, Mapping
 from pathlib import Path
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING
 
 from prm9tool.catalogue import CATALOGUE
 from prm9tool.errors import CommunicationError, FileFormatError, HistoryError
-from prm9tool.history.recorder import Recorder
+from prm9tool.history.recorder import Details, Recorder
 
 if TYPE_CHECKING:
+    from prm9tool.characterize.run import Characterization
     from prm9tool.device.records import UploadResult
     from prm9tool.device.session import ValveSession
 
@@ -27,10 +28,15 @@ Progress = Callable[[int, int, str], None]
 
 
 class HistoryHook:
-    """Records the operations of one connection (the GUI's) into the history."""
+    """Records the operations of one connection into the history: the GUI's, and a script's
+    :class:`~prm9tool.api.valve.Valve` (``context``: details every record carries, e.g. the
+    command that ran it; they win over an operation's own)."""
 
-    def __init__(self, recorder: Recorder, report: Callable[[str], None]) -> None:
+    def __init__(
+        self, recorder: Recorder, report: Callable[[str], None], context: Details | None = None
+    ) -> None:
         self.recorder, self._report = recorder, report
+        self._context: Details = context or {}
 
     def problem(self) -> HistoryError | None:
         """Why the database cannot take records now (None: it can)."""
@@ -42,10 +48,12 @@ class HistoryHook:
         operation: str,
         outcome: str,
         parameters: Mapping[str, Raw] | None,
-        details: Mapping[str, Any] | None = None,
+        details: Details | None = None,
         failed_step: str | None = None,
     ) -> None:
-        """Record one operation on the session's valve."""
+        """Record one operation on the session's valve; ``details``: a :class:`Details`
+        (what the GUI's own jobs pass through ``ValveConnection.record`` is still a mapping)."""
+        details = {**(details or {}), **self._context}
         try:
             status = self.recorder.record(
                 session.info, operation, outcome, parameters, details, failed_step
@@ -60,7 +68,7 @@ class HistoryHook:
 
     def download(self, session: ValveSession, values: Mapping[str, Raw], purpose: str) -> None:
         """Record a download (also the one that compares document and valve)."""
-        self.add(session, "download", "ok", values, {"purpose": purpose})
+        self.add(session, "download", "ok", values, {"purpose": purpose} if purpose else {})
 
     def backup(self, session: ValveSession, path: Path) -> None:
         """Record the backup file taken before the first upload."""
@@ -71,6 +79,11 @@ class HistoryHook:
         except FileFormatError:
             values = None
         self.add(session, "backup", "ok", values, {"file": str(path)})
+
+    def characterization(self, session: ValveSession, result: Characterization) -> None:
+        """Record an end-of-line test run on the session's valve (as ``--characterize``'s)."""
+        outcome, details = characterization_details(result)
+        self.add(session, "characterization", outcome, result.parameters, details)
 
     def upload(
         self,
@@ -88,19 +101,21 @@ class HistoryHook:
         try:
             result = session.upload(values, progress, cancel)
         except CommunicationError as exc:
-            details = {"written": getattr(exc, "written", 0), "error": str(exc)}
+            failed: Details = {"written": getattr(exc, "written", 0), "error": str(exc)}
             self.add(
-                session, "upload", "communication-error", None, details, getattr(exc, "step", None)
+                session, "upload", "communication-error", None, failed, getattr(exc, "step", None)
             )
             raise
         after: Mapping[str, Raw] | None = None
         if result.stored:
             whole = {p.mnemonic for p in CATALOGUE.file_parameters(session.variant)}
             after = values if whole <= set(values) else session.download()
-        details = {"written": result.written, "chosen": len(values), "mismatches": {
+        details: Details = {"written": result.written, "chosen": len(values), "mismatches": {
             m: [str(want), str(got)] for m, (want, got) in result.mismatches.items()}}  # fmt: skip
         if purpose:
             details["purpose"] = purpose
+        if result.failure:
+            details["error"] = result.failure  # a refused store says why here
         if result.store:
             details["store"] = result.store  # which store happened (CANopen)
         outcome = "ok" if result.stored else "verification-failed"
@@ -108,8 +123,23 @@ class HistoryHook:
         return result
 
 
+def characterization_details(result: Characterization) -> tuple[str, Details]:
+    """The outcome (``passed``/``failed``) and details of a ``characterization`` record: the
+    profile, when it started, every figure with its verdict (docs/history.md)."""
+    details: Details = {
+        "profile": result.profile.name,
+        "started": result.date,
+        "figures": [
+            {"name": f.name, "value": f.value, "above": f.above, "unit": f.unit,
+             "passed": f.passed}
+            for f in result.figures
+        ],
+    }  # fmt: skip
+    return ("passed" if result.passed else "failed"), details
+
+
 def store_and_read(
-    session: Any, history: HistoryHook | None, progress: Progress | None = None
+    session: ValveSession, history: HistoryHook | None, progress: Progress | None = None
 ) -> dict[str, Raw]:
     """The valve's working parameters become its stored ones; then they are read back (what
     it holds now) and, with ``history``, recorded as a ``store``. A failing store raises

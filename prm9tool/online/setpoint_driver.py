@@ -138,6 +138,10 @@ class SetpointDriver:
         else:
             self._write("SETPOVRON", 0)
 
+    def leftovers(self) -> dict[str, int]:
+        """What the link changed and its end would put back (``SetpointLink.leftovers``)."""
+        return self._link.leftovers() if self._controls is None else {}
+
     def _release(self) -> None:
         if self._controls is not None:
             self._controls.drive_setpoint(None)

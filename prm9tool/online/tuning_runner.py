@@ -12,7 +12,7 @@ from __future__ import annotations
 
 import threading
 from collections.abc import Callable, Mapping
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING
 
 from PySide6.QtCore import QObject, Signal
 from shiboken6 import Shiboken
@@ -23,6 +23,8 @@ from prm9tool.errors import CommunicationError, Prm9Error
 from prm9tool.translate import error_text
 
 if TYPE_CHECKING:
+    from prm9tool.device.session import ValveSession
+    from prm9tool.online.connection import ValveConnection
     from prm9tool.online.connection_protocol import ValveIdentity
 
 Procedure = Callable[[Rig], object]
@@ -121,7 +123,7 @@ class ValveRunner(TuningRunner):
 
     restored = Signal(str)
 
-    def __init__(self, connection: Any, parent: QObject | None = None) -> None:
+    def __init__(self, connection: ValveConnection, parent: QObject | None = None) -> None:
         super().__init__(parent)
         self.connection = connection
         self.to_restore: dict[str, int] | None = None  # a broken test's changes (GUI thread)
@@ -129,9 +131,7 @@ class ValveRunner(TuningRunner):
         connection.operation_finished.connect(self._on_operation_finished)
         connection.failed.connect(self._on_connection_failed)
         connection.lost.connect(self._on_connection_lost)
-        reconnected = getattr(connection, "reconnected", None)
-        if reconnected is not None:
-            reconnected.connect(self._on_connection_reconnected)
+        connection.reconnected.connect(self._on_connection_reconnected)
 
     def _start(self, kind: str, procedure: Procedure) -> None:
         if self.connection.streaming_keys:
@@ -155,7 +155,7 @@ class ValveRunner(TuningRunner):
         if values is None:
             return
 
-        def restore(session: Any) -> None:
+        def restore(session: ValveSession) -> None:
             if values:
                 session.write_many(values)
             session.setpoint_link().end()  # the override off, as the test's own end does

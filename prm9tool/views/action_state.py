@@ -11,9 +11,14 @@ from prm9tool.online.connection import ValveConnection
 
 
 def enabled_actions(
-    doc: ParameterDocument, undo: DocumentUndo, access: AccessModel, connection: ValveConnection
+    doc: ParameterDocument,
+    undo: DocumentUndo,
+    access: AccessModel,
+    connection: ValveConnection,
+    uploaded: bool = False,
 ) -> dict[str, bool]:
-    """Action name → enabled, for the actions whose state depends on the models."""
+    """Action name → enabled, for the actions whose state depends on the models;
+    ``uploaded``: an upload was stored in this online session (Verify by restart…)."""
     online, busy = connection.is_online, connection.is_busy
     ready = online and not busy
     return {
@@ -31,6 +36,7 @@ def enabled_actions(
         "store": ready,
         "compare_valve": ready,
         "restart": ready,
+        "verify_restart": ready and uploaded,
         "restore_factory": not busy,
         "view_scope": online,
         "canopen": doc.variant.canopen,

@@ -40,6 +40,7 @@ _ACTIONS: tuple[tuple[str, str, object], ...] = (
     ("store", "", None),
     ("restore_factory", "factory", None),
     ("restart", "restart", None),
+    ("verify_restart", "", None),
     ("hid_configuration", "hid", "Ctrl+H"),
     ("can_bus", "canopen", None),
     ("online", "online", "F5"),
@@ -192,6 +193,14 @@ def _texts() -> dict[str, _Texts]:
                 "Restart the valve electronics (only with the hydraulics disconnected)",
             ),
         ),
+        "verify_restart": _Texts(
+            translate("MainActions", "&Verify by restart…"),
+            translate(
+                "MainActions",
+                "After an upload: restart the valve (hydraulics disconnected) and read back "
+                "that it kept the values",
+            ),
+        ),
         "hid_configuration": _Texts(
             translate("MainActions", "&HID configuration…"),
             translate("MainActions", "Choose the valve to communicate with"),
@@ -283,7 +292,8 @@ class MainActions(QObject):
             "view": ("view_diagram", "view_parameters", "view_scope", None, "access", "language",
                      None, "canopen", "od_browser"),
             "valve": ("valve_selection", "valve_status", None, "upload", "download", "store",
-                      "compare_valve", "history", None, "restore_factory", "restart"),
+                      "compare_valve", "history", None, "restore_factory", "restart",
+                      "verify_restart"),
             "communication": ("hid_configuration", "can_bus", None, "online", "offline"),
             "help": ("help", "homepage", None, "about"),
         }  # fmt: skip

@@ -29,6 +29,7 @@ from PySide6.QtWidgets import (
 )
 
 from prm9tool.catalogue import CATALOGUE
+from prm9tool.catalogue.manual_od import KEPT_AS_WRITTEN, STORED_WITH_1010, VERIFIED_RESTART
 from prm9tool.catalogue.typekey import TypeKey
 from prm9tool.compare.model import Comparison, Side
 from prm9tool.errors import Prm9Error
@@ -111,7 +112,8 @@ class HistoryTableModel(QAbstractTableModel):
         text = self._operations().get(operation) or str(operation)
         why = [self._purposes().get(str(details["purpose"]), str(details["purpose"]))
                if "purpose" in details else "",
-               str(details.get("source", "")), str(details.get("what", ""))]  # fmt: skip
+               str(details.get("source", "")), str(details.get("what", "")),
+               self._stores().get(str(details.get("store")), "")]  # fmt: skip
         shown = ", ".join(part for part in why if part)
         changed = details.get("changes")
         if isinstance(changed, dict) and changed:
@@ -135,6 +137,16 @@ class HistoryTableModel(QAbstractTableModel):
             "compare-apply": self.tr("Values from a compared file, written online"),
             "history-restore": self.tr("Values from the history, written online"),
             "tuning-accepted": self.tr("Tuning accepted, written online"),
+            "restart-verify": self.tr("Restarted and read back (Valve → Verify by restart…)"),
+        }
+
+    def _stores(self) -> dict[str, str]:
+        """How the valve kept an upload (prm9tool.device.canlink.storing; ``store`` in the
+        details of upload, batch-upload and restart-verify records)."""
+        return {
+            STORED_WITH_1010: self.tr("stored with 0x1010"),
+            KEPT_AS_WRITTEN: self.tr("kept by the valve as written (it has no store command)"),
+            VERIFIED_RESTART: self.tr("verified after a restart"),
         }
 
     def _purposes(self) -> dict[str, str]:

@@ -28,7 +28,6 @@ from prm9tool.views.action_state import enabled_actions
 from prm9tool.views.actions import MainActions
 from prm9tool.views.compare_workflow import CompareWorkflow
 from prm9tool.views.dcf_export import DcfExport
-from prm9tool.views.emcy import status_summary
 from prm9tool.views.emulated_valve import EmulatedValveMenu
 from prm9tool.views.file_workflow import FileWorkflow
 from prm9tool.views.help_dialog import HelpWindow, about_html, open_homepage, show_help_page
@@ -194,6 +193,7 @@ class MainWindow(QMainWindow):
             "store": self.valve.store,
             "restore_factory": self.valve.restore_factory,
             "restart": self.valve.restart,
+            "verify_restart": self.valve.verify_by_restart,
             "hid_configuration": self.valve.configure_hid,
             "can_bus": self.valve.configure_can_bus,
             "online": lambda: self.valve.go_online(),
@@ -215,29 +215,18 @@ class MainWindow(QMainWindow):
 
     def _connect_models(self) -> None:
         c, d, s = self.connection, self.doc, self.status
-        for signal in (c.online_changed, c.busy_changed, d.modified_changed, d.type_key_changed):
+        for signal in (c.online_changed, c.busy_changed, c.operation_finished,
+                       d.modified_changed, d.type_key_changed):  # fmt: skip
             signal.connect(self._update_actions)
         self.undo.stack.canUndoChanged.connect(self._update_actions)
         self.undo.stack.canRedoChanged.connect(self._update_actions)
         self.access.level_changed.connect(self._update_actions)
-        c.online_changed.connect(s.set_online)
-        self.sync.active_changed.connect(s.set_synchronised)
-        self.access.level_changed.connect(
-            lambda _l: s.set_expert(self.access.level is Access.EXPERT)
-        )
-        s.set_expert(self.access.level is Access.EXPERT)
+        s.observe(c, d, self.sync, self.access)
         c.online_changed.connect(self.commands.set_online)
         c.online_changed.connect(self._on_connection_online_changed)
-        c.device_changed.connect(lambda info: s.set_firmware(info.firmware if info else ""))
-        c.status_changed.connect(lambda status: s.set_device_status(status_summary(status)))
-        c.samples_lost_changed.connect(s.set_samples_lost)
-        c.reconnecting.connect(
-            lambda seconds: s.set_reconnecting(seconds, getattr(c.lost_valve, "serial", 0))
-        )
-        c.reconnect_ended.connect(lambda: s.set_reconnecting(None))
+        c.live_values_changed.connect(self.parameter_view.model.show_live)
         c.reconnect_ended.connect(self._update_actions)
         c.lost.connect(self._update_actions)  # Go offline stops the search
-        d.type_key_changed.connect(s.set_type_key)
         for signal in (d.modified_changed, d.path_changed):
             signal.connect(self._show_file)
         self.files.about_to_replace.connect(self.sync.stop)
@@ -264,7 +253,8 @@ class MainWindow(QMainWindow):
 
     def _update_actions(self, *_args: object) -> None:
         a = self.commands
-        enabled = enabled_actions(self.doc, self.undo, self.access, self.connection)
+        uploaded = self.valve.verifier.available
+        enabled = enabled_actions(self.doc, self.undo, self.access, self.connection, uploaded)
         for name, value in enabled.items():
             a[name].setEnabled(value)
         a["level_expert" if self.access.level is Access.EXPERT else "level_basic"].setChecked(True)

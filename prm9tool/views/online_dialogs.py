@@ -131,22 +131,25 @@ class RestartDialog(QDialog):
     """Restart only after the user confirms that the hydraulics are disconnected.
 
     With ``factory`` the restart is the one that makes the factory values effective: the
-    dialog says so, and that a backup of the valve's parameters is saved first.
+    dialog says so, and that a backup of the valve's parameters is saved first. With
+    ``verify`` (what will be verified, rich text) it is Valve → Verify by restart….
     """
 
-    def __init__(self, parent: QWidget | None = None, factory: bool = False) -> None:
+    def __init__(
+        self, parent: QWidget | None = None, factory: bool = False, verify: str = ""
+    ) -> None:
         super().__init__(parent)
         self.factory = factory
         title = self.tr("Restore factory values") if factory else self.tr("Restart valve")
-        self.setWindowTitle(title)
-        warning = QLabel(self._warning(factory))
+        self.setWindowTitle(self.tr("Verify by restart") if verify else title)
+        text = self._warning(factory)
+        warning = QLabel(f"{verify}<br><br>{text}" if verify else text)
         warning.setWordWrap(True)
         self.confirm = QCheckBox(self.tr("The hydraulics are disconnected"))
         self.buttons = QDialogButtonBox(QDialogButtonBox.StandardButton.Cancel)
-        self.restart_button = self.buttons.addButton(
-            self.tr("Restore and restart") if factory else self.tr("Restart"),
-            QDialogButtonBox.ButtonRole.AcceptRole,
-        )
+        button = self.tr("Restore and restart") if factory else self.tr("Restart")
+        button = self.tr("Restart and verify") if verify else button
+        self.restart_button = self.buttons.addButton(button, QDialogButtonBox.ButtonRole.AcceptRole)
         self.restart_button.setEnabled(False)
         self.confirm.toggled.connect(self.restart_button.setEnabled)
         self.buttons.accepted.connect(self.accept)

@@ -7,6 +7,7 @@ access level (``CATALOGUE.visible``); columns are mnemonic, description, value a
 
 from __future__ import annotations
 
+from collections.abc import Mapping
 from enum import IntEnum
 
 from PySide6.QtCore import (
@@ -96,6 +97,17 @@ class ParameterTableModel(QAbstractTableModel):
         """Show live values as unknown again (offline they would be stale)."""
         self._live_seen.clear()
         self._emit_all_values()
+
+    def show_live(self, values: Mapping[str, object]) -> None:
+        """Show the live values just read (connected to the connection's live values): the
+        document signals only values that changed, so a valve read again after going offline
+        and online, with the same supply voltage as before, would stay '—' without this."""
+        for mnemonic in values:
+            if mnemonic not in self._live_seen:
+                self._live_seen.add(mnemonic)
+                row = self._rows.get(mnemonic)
+                if row is not None:
+                    self.dataChanged.emit(self.index(row, 0), self.index(row, len(Column) - 1))
 
     def parameter(self, row: int) -> Parameter:
         """The parameter shown in ``row``."""

@@ -6,7 +6,7 @@
 from PySide6 import QtCore
 
 qt_resource_data = b"\
-\x00\x00\x09R\
+\x00\x00\x0bd\
 <\
 !DOCTYPE html>\x0a<\
 html lang=\x22de\x22>\x0a\
@@ -147,17 +147,50 @@ auerhaft (Objekt\
 f dem eigenen We\
 g des Ventils, w\
 o es fehlt).</li\
->\x0a</ul>\x0a<p>Das O\
-szilloskop nimmt\
- die Schieberlag\
-e aus TPDO1; Sol\
-lwertgenerator u\
-nd Einstelltests\
-\x0asenden den Soll\
-wert in RPDO1, w\
-ie eine SPS.</p>\
-\x0a</body>\x0a</html>\
-\x0a\
+>\x0a<li>Ein Ventil\
+ ohne Objekt 0x1\
+010 (die Objektl\
+iste des Handbuc\
+hs hat keines) b\
+eh\xc3\xa4lt jeden Wer\
+t,\x0asobald er ges\
+chrieben ist: Da\
+s Hochladen schr\
+eibt in einer Re\
+ihenfolge, die n\
+ie eine von den\x0a\
+Regeln abgelehnt\
+e Kombination hi\
+nterl\xc3\xa4sst, lies\
+t alles zur\xc3\xbcck \
+und meldet \xe2\x80\x9evo\
+m Ventil wie\x0ages\
+chrieben behalte\
+n (es hat keinen\
+ Speicherbefehl)\
+\xe2\x80\x9c. Ventil \xe2\x86\x92 \
+<b>Durch Neustar\
+t pr\xc3\xbcfen\xe2\x80\xa6</b>\
+\x0astartet es dann\
+ neu (NMT Reset \
+Node, Hydraulik \
+getrennt) und li\
+est zur\xc3\xbcck, ob \
+es die Werte\x0abeh\
+alten hat: \xe2\x80\x9ena\
+ch einem Neustar\
+t gepr\xc3\xbcft\xe2\x80\x9c.</\
+li>\x0a</ul>\x0a<p>Das\
+ Oszilloskop nim\
+mt die Schieberl\
+age aus TPDO1; S\
+ollwertgenerator\
+ und Einstelltes\
+ts\x0asenden den So\
+llwert in RPDO1,\
+ wie eine SPS.</\
+p>\x0a</body>\x0a</htm\
+l>\x0a\
 \x00\x00\x05\xea\
 <\
 !DOCTYPE html>\x0a<\
@@ -362,7 +395,7 @@ un ist, wenn sie\
 r ist.</li>\x0a</ul\
 >\x0a</body>\x0a</html\
 >\x0a\
-\x00\x00\x1eT\
+\x00\x00!\xf3\
 <\
 !DOCTYPE html>\x0a<\
 html lang=\x22cs\x22>\x0a\
@@ -723,133 +756,191 @@ ovoleny pouze p\xc5\
 draulick\xc3\xa9m obvo\
 du; program v\xc3\xa1s\
  po\xc5\xbe\xc3\xa1d\xc3\xa1 o pot\
-vrzen\xc3\xad.</p>\x0a\x0a<h\
-2>Soubory</h2>\x0a<\
-p>Z\xc3\xa1znamy param\
-etr\xc5\xaf (<code>*.p\
-rm</code>) jsou \
-textov\xc3\xa9 soubory\
-. Otev\xc5\x99\xc3\xadt, Ulo\
-\xc5\xbeit, Ulo\xc5\xbeit ja\
-ko,\x0anaposledy ot\
-ev\xc5\x99en\xc3\xa9 soubory\
- a p\xc5\x99eta\xc5\xbeen\xc3\xad \
-my\xc5\xa1\xc3\xad funguj\xc3\xad \
-obvykl\xc3\xbdm zp\xc5\xafso\
-bem; p\xc5\x99ed ztr\xc3\xa1\
-tou\x0aneulo\xc5\xbeen\xc3\xbdc\
-h zm\xc4\x9bn se progr\
-am zept\xc3\xa1. Ka\xc5\xbed\
-ou zm\xc4\x9bnu lze vr\
-\xc3\xa1tit (Ctrl+Z) a\
- znovu prov\xc3\xa9st\x0a\
-(Ctrl+Y). Soubor\
- \xe2\x86\x92 Tisk a Soub\
-or \xe2\x86\x92 Export do\
- PDF vytvo\xc5\x99\xc3\xad p\
-rotokol parametr\
-\xc5\xaf s typov\xc3\xbdm kl\
-\xc3\xad\xc4\x8dem,\x0av\xc3\xbdrobn\xc3\
-\xadm \xc4\x8d\xc3\xadslem, fir\
-mware, souborem,\
- datem, \xc3\xbarovn\xc3\xad\
- opr\xc3\xa1vn\xc4\x9bn\xc3\xad, p\
-ostupov\xc3\xbdm diagr\
-amem a v\xc5\xa1emi\x0apa\
-rametry s jednot\
-kami. Hodnoty zm\
-\xc4\x9bn\xc4\x9bn\xc3\xa9 od ulo\xc5\
-\xbeen\xc3\xad souboru js\
-ou ozna\xc4\x8deny <b>\
-*</b> a \xc5\x99\xc3\xa1dek\x0a\
-\xe2\x80\x9eSoubor\xe2\x80\x9c to \
-uv\xc3\xa1d\xc3\xad; ka\xc5\xbed\xc3\xa1\
- strana uv\xc3\xa1d\xc3\xad \
-typov\xc3\xbd kl\xc3\xad\xc4\x8d a\
- v\xc3\xbdrobn\xc3\xad \xc4\x8d\xc3\xads\
-lo a sv\xc3\xa9 \xc4\x8d\xc3\xadsl\
-o strany; na\x0apos\
-ledn\xc3\xad stran\xc4\x9b j\
-e \xc5\x99\xc3\xa1dek pro da\
-tum, jm\xc3\xa9no a po\
-dpis.</p>\x0a<p><b>\
-Z\xc3\xa1loha ventilu<\
-/b>: p\xc5\x99ipojte s\
-e (re\xc5\xbeim online\
-), Ventil \xe2\x86\x92 St\
-a\xc5\xbeen\xc3\xad z ventil\
-u, pak\x0aSoubor \xe2\x86\
-\x92 <b>Ulo\xc5\xbeit z\xc3\xa1\
-lo\xc5\xben\xc3\xad kopii\xe2\x80\xa6\
-</b> (navr\xc5\xbeen\xc3\xbd\
- n\xc3\xa1zev: typov\xc3\xbd\
- kl\xc3\xad\xc4\x8d, v\xc3\xbdrobn\
-\xc3\xad \xc4\x8d\xc3\xadslo, datu\
-m\x0aa \xc4\x8das). Kopie\
- se zap\xc3\xad\xc5\xa1e a o\
-tev\xc5\x99en\xc3\xbd dokume\
-nt z\xc5\xafstane, jak\
-\xc3\xbd byl: pozd\xc4\x9bj\xc5\
-\xa1\xc3\xad zm\xc4\x9bny se uk\
-l\xc3\xa1daj\xc3\xad do\x0ajeho\
- vlastn\xc3\xadho soub\
-oru, nikdy do z\xc3\
-\xa1lohy. Naproti t\
-omu Ulo\xc5\xbeit jako\
- ud\xc4\x9bl\xc3\xa1 z nov\xc3\xa9\
-ho souboru\x0aotev\xc5\
-\x99en\xc3\xbd dokument.<\
-/p>\x0a\x0a<h2>Kl\xc3\xa1ves\
-nice</h2>\x0a<table\
->\x0a<tr><td>Ctrl+O\
- / Ctrl+S / Ctrl\
-+Shift+S</td><td\
->Otev\xc5\x99\xc3\xadt / Ulo\
-\xc5\xbeit / Ulo\xc5\xbeit j\
-ako</td></tr>\x0a<t\
-r><td>Ctrl+Z / C\
-trl+Y</td><td>Zp\
-\xc4\x9bt / Znovu</td>\
-</tr>\x0a<tr><td>Ct\
-rl+P / Ctrl+E</t\
-d><td>Tisk / Exp\
-ort do PDF</td><\
-/tr>\x0a<tr><td>Ctr\
-l+1 / Ctrl+2 / C\
-trl+3 / Ctrl+4</\
-td><td>Postupov\xc3\
-\xbd diagram / Sezn\
-am parametr\xc5\xaf / \
-Osciloskop / Okn\
-o CANopen</td></\
-tr>\x0a<tr><td>F5 /\
- Shift+F5</td><t\
-d>Re\xc5\xbeim online \
-/ Re\xc5\xbeim offline\
-</td></tr>\x0a<tr><\
-td>Ctrl+U / Ctrl\
-+D</td><td>Na\xc4\x8dt\
+vrzen\xc3\xad.</p>\x0a<p>\
+Ventil \xe2\x86\x92 <b>Ov\
+\xc4\x9b\xc5\x99it restartem\
+\xe2\x80\xa6</b> (po na\xc4\x8d\
+ten\xc3\xad do ventilu\
+, dokud z\xc5\xafst\xc3\xa1v\
+\xc3\xa1 online tent\xc3\xbd\
+\xc5\xbe\x0aventil) venti\
+l po stejn\xc3\xa9m po\
+tvrzen\xc3\xad odpojen\
+\xc3\xa9 hydrauliky re\
+startuje a zp\xc4\x9bt\
+n\xc4\x9b na\xc4\x8dte jeho\x0a\
+parametry: stavo\
+v\xc3\xbd \xc5\x99\xc3\xa1dek ohl\xc3\
+\xa1s\xc3\xad \xe2\x80\x9e\xe2\x80\xa6 zp\xc4\x9b\
+tn\xc4\x9b na\xc4\x8dteno be\
+ze zm\xc4\x9bny \xe2\x80\xa6: o\
+v\xc4\x9b\xc5\x99eno po rest\
+artu\xe2\x80\x9c, nebo\x0ahl\
+\xc3\xa1\xc5\xa1en\xc3\xad vyjmenu\
+je ka\xc5\xbedou hodno\
+tu, kterou si ve\
+ntil neponechal \
+(o\xc4\x8dek\xc3\xa1v\xc3\xa1no \xe2\x86\
+\x92 na\xc4\x8dteno), a h\
+istorie\x0av\xc3\xbdslede\
+k zaznamen\xc3\xa1. Hl\
+\xc3\xa1\xc5\xa1en\xc3\xad o na\xc4\x8dt\
 en\xc3\xad do ventilu \
-/ Sta\xc5\xbeen\xc3\xad z ve\
-ntilu</td></tr>\x0a\
-<tr><td>Ctrl+T /\
- Ctrl+I / Ctrl+H\
-</td><td>V\xc3\xbdb\xc4\x9br\
- ventilu / Stav \
-ventilu / Konfig\
-urace HID</td></\
-tr>\x0a</table>\x0a<p>\
-<b>Skripty a zku\
-\xc5\xa1ebn\xc3\xad stanice<\
-/b>: ventil z Py\
-thonu a ze shell\
-ov\xc3\xbdch skript\xc5\xaf,\
- <a href=\x22script\
-ing_en.html\x22>na \
-t\xc3\xa9to str\xc3\xa1nce</\
-a> (anglicky).</\
-p>\x0a</body>\x0a</htm\
-l>\x0a\
+\xc5\x99\xc3\xadk\xc3\xa1, jak si \
+ventil hodnoty p\
+onech\xc3\xa1v\xc3\xa1:\x0a\xe2\x80\x9eu\
+lo\xc5\xbeeno pomoc\xc3\xad \
+0x1010\xe2\x80\x9c, nebo \
+p\xc5\x99es CANopen u \
+ventilu bez p\xc5\x99\xc3\
+\xadkazu k ulo\xc5\xbeen\xc3\
+\xad \xe2\x80\x9eventil si h\
+odnoty\x0aponechal \
+tak, jak byly za\
+ps\xc3\xa1ny (nem\xc3\xa1 p\xc5\
+\x99\xc3\xadkaz k ulo\xc5\xbeen\
+\xc3\xad)\xe2\x80\x9c. Hodnoty \
+zm\xc4\x9bn\xc4\x9bn\xc3\xa9 onlin\
+e a dosud\x0aneulo\xc5\
+\xbeen\xc3\xa9 je t\xc5\x99eba \
+nejprve ulo\xc5\xbeit \
+(restart by je z\
+tratil). Neozve-\
+li se ventil zno\
+vu, program\x0ap\xc5\x99e\
+jde do re\xc5\xbeimu o\
+ffline a \xc5\x99ekne,\
+ co ventil podle\
+ v\xc5\xa1eho obsahuje\
+; dokument si po\
+nech\xc3\xa1 ka\xc5\xbedou\x0ah\
+odnotu.</p>\x0a\x0a<h2\
+>Soubory</h2>\x0a<p\
+>Z\xc3\xa1znamy parame\
+tr\xc5\xaf (<code>*.pr\
+m</code>) jsou t\
+extov\xc3\xa9 soubory.\
+ Otev\xc5\x99\xc3\xadt, Ulo\xc5\
+\xbeit, Ulo\xc5\xbeit jak\
+o,\x0anaposledy ote\
+v\xc5\x99en\xc3\xa9 soubory \
+a p\xc5\x99eta\xc5\xbeen\xc3\xad m\
+y\xc5\xa1\xc3\xad funguj\xc3\xad o\
+bvykl\xc3\xbdm zp\xc5\xafsob\
+em; p\xc5\x99ed ztr\xc3\xa1t\
+ou\x0aneulo\xc5\xbeen\xc3\xbdch\
+ zm\xc4\x9bn se progra\
+m zept\xc3\xa1. Ka\xc5\xbedo\
+u zm\xc4\x9bnu lze vr\xc3\
+\xa1tit (Ctrl+Z) a \
+znovu prov\xc3\xa9st\x0a(\
+Ctrl+Y). Soubor \
+\xe2\x86\x92 Tisk a Soubo\
+r \xe2\x86\x92 Export do \
+PDF vytvo\xc5\x99\xc3\xad pr\
+otokol parametr\xc5\
+\xaf s typov\xc3\xbdm kl\xc3\
+\xad\xc4\x8dem,\x0av\xc3\xbdrobn\xc3\xad\
+m \xc4\x8d\xc3\xadslem, firm\
+ware, souborem, \
+datem, \xc3\xbarovn\xc3\xad \
+opr\xc3\xa1vn\xc4\x9bn\xc3\xad, po\
+stupov\xc3\xbdm diagra\
+mem a v\xc5\xa1emi\x0apar\
+ametry s jednotk\
+ami. Hodnoty zm\xc4\
+\x9bn\xc4\x9bn\xc3\xa9 od ulo\xc5\xbe\
+en\xc3\xad souboru jso\
+u ozna\xc4\x8deny <b>*\
+</b> a \xc5\x99\xc3\xa1dek\x0a\xe2\
+\x80\x9eSoubor\xe2\x80\x9c to u\
+v\xc3\xa1d\xc3\xad; ka\xc5\xbed\xc3\xa1 \
+strana uv\xc3\xa1d\xc3\xad t\
+ypov\xc3\xbd kl\xc3\xad\xc4\x8d a \
+v\xc3\xbdrobn\xc3\xad \xc4\x8d\xc3\xadsl\
+o a sv\xc3\xa9 \xc4\x8d\xc3\xadslo\
+ strany; na\x0aposl\
+edn\xc3\xad stran\xc4\x9b je\
+ \xc5\x99\xc3\xa1dek pro dat\
+um, jm\xc3\xa9no a pod\
+pis.</p>\x0a<p><b>Z\
+\xc3\xa1loha ventilu</\
+b>: p\xc5\x99ipojte se\
+ (re\xc5\xbeim online)\
+, Ventil \xe2\x86\x92 Sta\
+\xc5\xbeen\xc3\xad z ventilu\
+, pak\x0aSoubor \xe2\x86\x92\
+ <b>Ulo\xc5\xbeit z\xc3\xa1l\
+o\xc5\xben\xc3\xad kopii\xe2\x80\xa6<\
+/b> (navr\xc5\xbeen\xc3\xbd \
+n\xc3\xa1zev: typov\xc3\xbd \
+kl\xc3\xad\xc4\x8d, v\xc3\xbdrobn\xc3\
+\xad \xc4\x8d\xc3\xadslo, datum\
+\x0aa \xc4\x8das). Kopie \
+se zap\xc3\xad\xc5\xa1e a ot\
+ev\xc5\x99en\xc3\xbd dokumen\
+t z\xc5\xafstane, jak\xc3\
+\xbd byl: pozd\xc4\x9bj\xc5\xa1\
+\xc3\xad zm\xc4\x9bny se ukl\
+\xc3\xa1daj\xc3\xad do\x0ajeho \
+vlastn\xc3\xadho soubo\
+ru, nikdy do z\xc3\xa1\
+lohy. Naproti to\
+mu Ulo\xc5\xbeit jako \
+ud\xc4\x9bl\xc3\xa1 z nov\xc3\xa9h\
+o souboru\x0aotev\xc5\x99\
+en\xc3\xbd dokument.</\
+p>\x0a\x0a<h2>Kl\xc3\xa1vesn\
+ice</h2>\x0a<table>\
+\x0a<tr><td>Ctrl+O \
+/ Ctrl+S / Ctrl+\
+Shift+S</td><td>\
+Otev\xc5\x99\xc3\xadt / Ulo\xc5\
+\xbeit / Ulo\xc5\xbeit ja\
+ko</td></tr>\x0a<tr\
+><td>Ctrl+Z / Ct\
+rl+Y</td><td>Zp\xc4\
+\x9bt / Znovu</td><\
+/tr>\x0a<tr><td>Ctr\
+l+P / Ctrl+E</td\
+><td>Tisk / Expo\
+rt do PDF</td></\
+tr>\x0a<tr><td>Ctrl\
++1 / Ctrl+2 / Ct\
+rl+3 / Ctrl+4</t\
+d><td>Postupov\xc3\xbd\
+ diagram / Sezna\
+m parametr\xc5\xaf / O\
+sciloskop / Okno\
+ CANopen</td></t\
+r>\x0a<tr><td>F5 / \
+Shift+F5</td><td\
+>Re\xc5\xbeim online /\
+ Re\xc5\xbeim offline<\
+/td></tr>\x0a<tr><t\
+d>Ctrl+U / Ctrl+\
+D</td><td>Na\xc4\x8dte\
+n\xc3\xad do ventilu /\
+ Sta\xc5\xbeen\xc3\xad z ven\
+tilu</td></tr>\x0a<\
+tr><td>Ctrl+T / \
+Ctrl+I / Ctrl+H<\
+/td><td>V\xc3\xbdb\xc4\x9br \
+ventilu / Stav v\
+entilu / Konfigu\
+race HID</td></t\
+r>\x0a</table>\x0a<p><\
+b>Skripty a zku\xc5\
+\xa1ebn\xc3\xad stanice</\
+b>: ventil z Pyt\
+honu a ze shello\
+v\xc3\xbdch skript\xc5\xaf, \
+<a href=\x22scripti\
+ng_en.html\x22>na t\
+\xc3\xa9to str\xc3\xa1nce</a\
+> (anglicky).</p\
+>\x0a</body>\x0a</html\
+>\x0a\
 \x00\x00\x062\
 <\
 !DOCTYPE html>\x0a<\
@@ -1292,7 +1383,7 @@ t\xc3\xa1len\xc3\xad ka\xc5\xbed\xc3\xa9\
 ho zobrazen\xc3\xa9ho \
 skoku.</p>\x0a</bod\
 y>\x0a</html>\x0a\
-\x00\x00\x1fF\
+\x00\x00\x22\xfd\
 <\
 !DOCTYPE html>\x0a<\
 html lang=\x22de\x22>\x0a\
@@ -1665,136 +1756,195 @@ ter Hydraulik er\
 laubt; das Progr\
 amm l\xc3\xa4sst Sie d\
 as best\xc3\xa4tigen.<\
-/p>\x0a\x0a<h2>Dateien\
-</h2>\x0a<p>Paramet\
-erdateien (<code\
->*.prm</code>) s\
-ind Textdateien.\
- \xc3\x96ffnen, Speich\
-ern, Speichern\x0au\
-nter, die zuletz\
-t ge\xc3\xb6ffneten Da\
-teien und Drag &\
-amp; Drop funkti\
-onieren wie gewo\
-hnt; vor dem\x0aVer\
-lust ungespeiche\
-rter \xc3\x84nderungen\
- fragt das Progr\
-amm nach. Jede \xc3\
-\x84nderung l\xc3\xa4sst \
-sich\x0ar\xc3\xbcckg\xc3\xa4ngi\
-g machen (Strg+Z\
-) und wiederhers\
-tellen (Strg+Y).\
- Datei \xe2\x86\x92 Druck\
-en und Datei \xe2\x86\x92\
- PDF\x0aexportieren\
- erzeugen ein Pa\
-rameterprotokoll\
- mit Typschl\xc3\xbcss\
-el, Seriennummer\
-, Firmware, Date\
-i,\x0aDatum, Berech\
-tigungsstufe, de\
-m Ablaufdiagramm\
- und allen Param\
-etern mit Einhei\
-t. Seit dem\x0aSpei\
-chern ge\xc3\xa4nderte\
- Werte sind mit \
-<b>*</b> markier\
-t, und die Zeile\
- \xe2\x80\x9eDatei\xe2\x80\x9c sag\
-t es; jede Seite\
-\x0anennt Typschl\xc3\xbc\
-ssel und Serienn\
-ummer und tr\xc3\xa4gt\
- ihre Seitenzahl\
-; die letzte Sei\
-te hat eine Zeil\
-e\x0af\xc3\xbcr Datum, Na\
-me und Unterschr\
-ift.</p>\x0a<p><b>E\
-in Ventil sicher\
-n</b>: online ge\
-hen, Ventil \xe2\x86\x92 \
-Aus dem Ventil h\
-erunterladen, da\
-nn\x0aDatei \xe2\x86\x92 <b>\
-Sicherungskopie \
-speichern\xe2\x80\xa6</b>\
- (vorgeschlagene\
-r Name: Typschl\xc3\
-\xbcssel, Seriennum\
-mer,\x0aDatum und U\
-hrzeit). Die Kop\
-ie wird geschrie\
-ben, das ge\xc3\xb6ffn\
-ete Dokument ble\
-ibt, was es war:\
-\x0asp\xc3\xa4tere \xc3\x84nder\
-ungen werden in \
-seine eigene Dat\
-ei gespeichert, \
-nie in die Siche\
-rung. Speichern\x0a\
-unter dagegen ma\
-cht die neue Dat\
-ei zum ge\xc3\xb6ffnet\
-en Dokument.</p>\
-\x0a\x0a<h2>Tastatur</\
-h2>\x0a<table>\x0a<tr>\
-<td>Strg+O / Str\
-g+S / Strg+Umsch\
-alt+S</td><td>\xc3\x96\
-ffnen / Speicher\
-n / Speichern un\
-ter</td></tr>\x0a<t\
-r><td>Strg+Z / S\
-trg+Y</td><td>R\xc3\
-\xbcckg\xc3\xa4ngig / Wie\
-derherstellen</t\
-d></tr>\x0a<tr><td>\
-Strg+P / Strg+E<\
-/td><td>Drucken \
-/ PDF exportiere\
-n</td></tr>\x0a<tr>\
-<td>Strg+1 / Str\
-g+2 / Strg+3 / S\
-trg+4</td><td>Ab\
-laufdiagramm / P\
-arameterliste / \
-Oszilloskop / CA\
-Nopen-Fenster</t\
-d></tr>\x0a<tr><td>\
-F5 / Umschalt+F5\
-</td><td>Online \
-/ Offline</td></\
-tr>\x0a<tr><td>Strg\
-+U / Strg+D</td>\
-<td>In das Venti\
-l hochladen / Au\
-s dem Ventil her\
-unterladen</td><\
+/p>\x0a<p>Ventil \xe2\x86\
+\x92 <b>Durch Neust\
+art pr\xc3\xbcfen\xe2\x80\xa6</\
+b> (nach dem Hoc\
+hladen, solange \
+dasselbe Ventil \
+online\x0ableibt) s\
+tartet das Venti\
+l \xe2\x80\x93 nach derse\
+lben Best\xc3\xa4tigun\
+g zur Hydraulik \
+\xe2\x80\x93 neu und lies\
+t seine\x0aParamete\
+r zur\xc3\xbcck: die S\
+tatuszeile melde\
+t \xe2\x80\x9e\xe2\x80\xa6 unver\xc3\xa4\
+ndert zur\xc3\xbcckgel\
+esen: nach einem\
+ Neustart\x0agepr\xc3\xbc\
+ft\xe2\x80\x9c, oder eine\
+ Meldung nennt j\
+eden Wert, den d\
+as Ventil nicht \
+behalten hat (er\
+wartet \xe2\x86\x92\x0azur\xc3\xbc\
+ckgelesen), und \
+der Verlauf h\xc3\xa4l\
+t das Ergebnis f\
+est. Die Meldung\
+ des Hochladens \
+sagt, wie\x0adas Ve\
+ntil die Werte b\
+eh\xc3\xa4lt: \xe2\x80\x9emit 0\
+x1010 gespeicher\
+t\xe2\x80\x9c oder, \xc3\xbcber\
+ CANopen bei ein\
+em Ventil\x0aohne S\
+peicherbefehl, \xe2\
+\x80\x9evom Ventil wie\
+ geschrieben beh\
+alten (es hat ke\
+inen Speicherbef\
+ehl)\xe2\x80\x9c.\x0aOnline \
+ge\xc3\xa4nderte, noch\
+ nicht gespeiche\
+rte Werte m\xc3\xbcsse\
+n zuerst gespeic\
+hert werden (ein\
+ Neustart\x0aw\xc3\xbcrde\
+ sie verlieren).\
+ Meldet sich das\
+ Ventil nicht wi\
+eder, geht das P\
+rogramm offline \
+und sagt,\x0awas da\
+s Ventil nach be\
+stem Wissen enth\
+\xc3\xa4lt; das Dokume\
+nt beh\xc3\xa4lt jeden\
+ Wert.</p>\x0a\x0a<h2>\
+Dateien</h2>\x0a<p>\
+Parameterdateien\
+ (<code>*.prm</c\
+ode>) sind Textd\
+ateien. \xc3\x96ffnen,\
+ Speichern, Spei\
+chern\x0aunter, die\
+ zuletzt ge\xc3\xb6ffn\
+eten Dateien und\
+ Drag &amp; Drop\
+ funktionieren w\
+ie gewohnt; vor \
+dem\x0aVerlust unge\
+speicherter \xc3\x84nd\
+erungen fragt da\
+s Programm nach.\
+ Jede \xc3\x84nderung \
+l\xc3\xa4sst sich\x0ar\xc3\xbcc\
+kg\xc3\xa4ngig machen \
+(Strg+Z) und wie\
+derherstellen (S\
+trg+Y). Datei \xe2\x86\
+\x92 Drucken und Da\
+tei \xe2\x86\x92 PDF\x0aexpo\
+rtieren erzeugen\
+ ein Parameterpr\
+otokoll mit Typs\
+chl\xc3\xbcssel, Serie\
+nnummer, Firmwar\
+e, Datei,\x0aDatum,\
+ Berechtigungsst\
+ufe, dem Ablaufd\
+iagramm und alle\
+n Parametern mit\
+ Einheit. Seit d\
+em\x0aSpeichern ge\xc3\
+\xa4nderte Werte si\
+nd mit <b>*</b> \
+markiert, und di\
+e Zeile \xe2\x80\x9eDatei\
+\xe2\x80\x9c sagt es; jed\
+e Seite\x0anennt Ty\
+pschl\xc3\xbcssel und \
+Seriennummer und\
+ tr\xc3\xa4gt ihre Sei\
+tenzahl; die let\
+zte Seite hat ei\
+ne Zeile\x0af\xc3\xbcr Da\
+tum, Name und Un\
+terschrift.</p>\x0a\
+<p><b>Ein Ventil\
+ sichern</b>: on\
+line gehen, Vent\
+il \xe2\x86\x92 Aus dem V\
+entil herunterla\
+den, dann\x0aDatei \
+\xe2\x86\x92 <b>Sicherung\
+skopie speichern\
+\xe2\x80\xa6</b> (vorgesc\
+hlagener Name: T\
+ypschl\xc3\xbcssel, Se\
+riennummer,\x0aDatu\
+m und Uhrzeit). \
+Die Kopie wird g\
+eschrieben, das \
+ge\xc3\xb6ffnete Dokum\
+ent bleibt, was \
+es war:\x0asp\xc3\xa4tere\
+ \xc3\x84nderungen wer\
+den in seine eig\
+ene Datei gespei\
+chert, nie in di\
+e Sicherung. Spe\
+ichern\x0aunter dag\
+egen macht die n\
+eue Datei zum ge\
+\xc3\xb6ffneten Dokume\
+nt.</p>\x0a\x0a<h2>Tas\
+tatur</h2>\x0a<tabl\
+e>\x0a<tr><td>Strg+\
+O / Strg+S / Str\
+g+Umschalt+S</td\
+><td>\xc3\x96ffnen / S\
+peichern / Speic\
+hern unter</td><\
 /tr>\x0a<tr><td>Str\
-g+T / Strg+I / S\
-trg+H</td><td>Ve\
-ntilauswahl / Ve\
-ntilstatus / HID\
--Konfiguration</\
-td></tr>\x0a</table\
->\x0a<p><b>Skripte \
-und Pr\xc3\xbcfst\xc3\xa4nde\
-</b>: das Ventil\
- aus Python und \
-Shell-Skripten, \
-<a href=\x22scripti\
-ng_en.html\x22>auf \
-dieser Seite</a>\
- (auf Englisch).\
-</p>\x0a</body>\x0a</h\
-tml>\x0a\
+g+Z / Strg+Y</td\
+><td>R\xc3\xbcckg\xc3\xa4ngi\
+g / Wiederherste\
+llen</td></tr>\x0a<\
+tr><td>Strg+P / \
+Strg+E</td><td>D\
+rucken / PDF exp\
+ortieren</td></t\
+r>\x0a<tr><td>Strg+\
+1 / Strg+2 / Str\
+g+3 / Strg+4</td\
+><td>Ablaufdiagr\
+amm / Parameterl\
+iste / Oszillosk\
+op / CANopen-Fen\
+ster</td></tr>\x0a<\
+tr><td>F5 / Umsc\
+halt+F5</td><td>\
+Online / Offline\
+</td></tr>\x0a<tr><\
+td>Strg+U / Strg\
++D</td><td>In da\
+s Ventil hochlad\
+en / Aus dem Ven\
+til herunterlade\
+n</td></tr>\x0a<tr>\
+<td>Strg+T / Str\
+g+I / Strg+H</td\
+><td>Ventilauswa\
+hl / Ventilstatu\
+s / HID-Konfigur\
+ation</td></tr>\x0a\
+</table>\x0a<p><b>S\
+kripte und Pr\xc3\xbcf\
+st\xc3\xa4nde</b>: das\
+ Ventil aus Pyth\
+on und Shell-Skr\
+ipten, <a href=\x22\
+scripting_en.htm\
+l\x22>auf dieser Se\
+ite</a> (auf Eng\
+lisch).</p>\x0a</bo\
+dy>\x0a</html>\x0a\
 \x00\x00\x05\xaf\
 <\
 !DOCTYPE html>\x0a<\
@@ -1888,7 +2038,7 @@ t to do when it \
 cannot be\x0areache\
 d.</li>\x0a</ul>\x0a</\
 body>\x0a</html>\x0a\
-\x00\x00\x09 \
+\x00\x00\x0b\x1b\
 <\
 !DOCTYPE html>\x0a<\
 html lang=\x22cs\x22>\x0a\
@@ -2025,17 +2175,49 @@ kt 0x1010, nebo \
 vlastn\xc3\xadm zp\xc5\xafso\
 bem ventilu, kde\
  objekt chyb\xc3\xad).\
-</li>\x0a</ul>\x0a<p>O\
-sciloskop bere s\
-kute\xc4\x8dnou polohu\
- z TPDO1; gener\xc3\
-\xa1tor \xc5\xbe\xc3\xa1dan\xc3\xa9 h\
-odnoty a zkou\xc5\xa1k\
-y lad\xc4\x9bn\xc3\xad pos\xc3\xad\
-laj\xc3\xad\x0a\xc5\xbe\xc3\xa1danou \
-hodnotu v RPDO1,\
- jako PLC.</p>\x0a<\
-/body>\x0a</html>\x0a\
+</li>\x0a<li>Ventil\
+ bez objektu 0x1\
+010 (seznam obje\
+kt\xc5\xaf v n\xc3\xa1vodu h\
+o nem\xc3\xa1) si ka\xc5\xbe\
+dou hodnotu pone\
+ch\xc3\xa1, jakmile\x0aje\
+ zaps\xc3\xa1na: na\xc4\x8dt\
+en\xc3\xad do ventilu \
+zapisuje v po\xc5\x99a\
+d\xc3\xad, kter\xc3\xa9 nikd\
+y nezanech\xc3\xa1 kom\
+binaci odm\xc3\xadtnut\
+ou\x0apravidly, v\xc5\xa1\
+e zp\xc4\x9btn\xc4\x9b na\xc4\x8dt\
+e a ohl\xc3\xa1s\xc3\xad \xe2\x80\x9e\
+ventil si hodnot\
+y ponechal tak, \
+jak byly zaps\xc3\xa1n\
+y (nem\xc3\xa1\x0ap\xc5\x99\xc3\xadka\
+z k ulo\xc5\xbeen\xc3\xad)\xe2\x80\
+\x9c. Ventil \xe2\x86\x92 <b\
+>Ov\xc4\x9b\xc5\x99it restar\
+tem\xe2\x80\xa6</b> ho pa\
+k restartuje (NM\
+T reset node,\x0ahy\
+draulika odpojen\
+a) a zp\xc4\x9btn\xc4\x9b na\
+\xc4\x8dte, zda si hod\
+noty ponechal: \xe2\
+\x80\x9eov\xc4\x9b\xc5\x99eno po r\
+estartu\xe2\x80\x9c.</li>\
+\x0a</ul>\x0a<p>Oscilo\
+skop bere skute\xc4\
+\x8dnou polohu z TP\
+DO1; gener\xc3\xa1tor \
+\xc5\xbe\xc3\xa1dan\xc3\xa9 hodnot\
+y a zkou\xc5\xa1ky lad\
+\xc4\x9bn\xc3\xad pos\xc3\xadlaj\xc3\xad\
+\x0a\xc5\xbe\xc3\xa1danou hodno\
+tu v RPDO1, jako\
+ PLC.</p>\x0a</body\
+>\x0a</html>\x0a\
 \x00\x00\x06V\
 <\
 !DOCTYPE html>\x0a<\
@@ -2253,7 +2435,7 @@ ls \xe2\x80\x9e\xe2\x80\x94\xe2\x80\x9c und\
 ht\x0aw\xc3\xa4hlen.</p>\x0a\
 </body>\x0a</html>\x0a\
 \
-\x00\x00\x1b4\
+\x00\x00\x1eh\
 <\
 !DOCTYPE html>\x0a<\
 html lang=\x22en\x22>\x0a\
@@ -2579,119 +2761,170 @@ he\x0ahydraulics di\
 sconnected; the \
 program asks you\
  to confirm this\
-.</p>\x0a\x0a<h2>Files\
-</h2>\x0a<p>Paramet\
-er files (<code>\
-*.prm</code>) ar\
-e text files. Op\
-en, Save, Save A\
-s, the recent\x0afi\
-les and drag and\
- drop work as us\
-ual; the program\
- asks before uns\
-aved changes are\
- lost.\x0aEvery cha\
-nge can be undon\
-e (Ctrl+Z) and r\
-edone (Ctrl+Y). \
-File \xe2\x86\x92 Print a\
-nd File \xe2\x86\x92 Expo\
-rt PDF\x0aproduce a\
- parameter recor\
-d with type key,\
- serial number, \
-firmware, file, \
-date, access lev\
-el,\x0athe flow dia\
-gram and every p\
-arameter with it\
-s unit. Values c\
-hanged since the\
- file was saved\x0a\
-are marked <b>*<\
-/b> and the file\
- line says so; e\
-very page names \
-the type key and\
- serial\x0anumber a\
-nd carries its p\
-age number; the \
-last page has a \
-line for date, n\
-ame and\x0asignatur\
-e.</p>\x0a<p><b>Bac\
-k up a valve</b>\
-: go online, Val\
-ve \xe2\x86\x92 Download \
-from valve, then\
- File \xe2\x86\x92 <b>Sav\
-e backup\x0acopy\xe2\x80\xa6\
-</b> (proposed n\
-ame: type key, s\
-erial number, da\
-te and time). Th\
-e copy is writte\
-n and\x0athe open d\
-ocument stays wh\
-at it was: later\
- changes are sav\
-ed into the docu\
-ment's own file,\
-\x0anever into the \
-backup. Save As,\
- by contrast, ma\
-kes the new file\
- the open docume\
-nt.</p>\x0a\x0a<h2>Key\
-board</h2>\x0a<tabl\
-e>\x0a<tr><td>Ctrl+\
-O / Ctrl+S / Ctr\
-l+Shift+S</td><t\
-d>Open / Save / \
-Save As</td></tr\
->\x0a<tr><td>Ctrl+Z\
- / Ctrl+Y</td><t\
-d>Undo / Redo</t\
-d></tr>\x0a<tr><td>\
-Ctrl+P / Ctrl+E<\
-/td><td>Print / \
-Export PDF</td><\
-/tr>\x0a<tr><td>Ctr\
-l+1 / Ctrl+2 / C\
-trl+3 / Ctrl+4</\
-td><td>Flow diag\
-ram / Parameter \
-list / Oscillosc\
-ope / CANopen wi\
-ndow</td></tr>\x0a<\
-tr><td>F5 / Shif\
-t+F5</td><td>Onl\
-ine / Offline</t\
-d></tr>\x0a<tr><td>\
-Ctrl+U / Ctrl+D<\
-/td><td>Upload t\
-o valve / Downlo\
-ad from valve</t\
-d></tr>\x0a<tr><td>\
-Ctrl+T / Ctrl+I \
-/ Ctrl+H</td><td\
->Valve selection\
- / Valve status \
-/ HID configurat\
-ion</td></tr>\x0a</\
-table>\x0a<p><b>Scr\
-ipts and test be\
-nches</b>: the v\
-alve from Python\
- and shell scrip\
-ts, <a href=\x22scr\
-ipting_en.html\x22>\
-on this page</a>\
- (in English).</\
-p>\x0a</body>\x0a</htm\
-l>\x0a\
-\x00\x00\x08u\
+.</p>\x0a<p>Valve \xe2\
+\x86\x92 <b>Verify by \
+restart\xe2\x80\xa6</b> (\
+after an upload,\
+ while the same \
+valve stays onli\
+ne)\x0arestarts the\
+ valve \xe2\x80\x94 after\
+ the same hydrau\
+lics confirmatio\
+n \xe2\x80\x94 and reads \
+its parameters b\
+ack:\x0athe status \
+bar says \xe2\x80\x9c\xe2\x80\xa6 \
+read back unchan\
+ged \xe2\x80\xa6: verifie\
+d after a restar\
+t\xe2\x80\x9d, or a messa\
+ge lists\x0aeach va\
+lue the valve di\
+d not keep (expe\
+cted \xe2\x86\x92 read ba\
+ck), and the his\
+tory records the\
+ outcome.\x0aThe up\
+load's own messa\
+ge says how the \
+valve kept the v\
+alues: \xe2\x80\x9cstored\
+ with 0x1010\xe2\x80\x9d,\
+ or over\x0aCANopen\
+ on a valve with\
+out a store comm\
+and \xe2\x80\x9ckept by t\
+he valve as writ\
+ten (it has no s\
+tore\x0acommand)\xe2\x80\x9d\
+. Values changed\
+ online and not \
+stored yet must \
+be stored first \
+(a restart would\
+\x0alose them). If \
+the valve does n\
+ot come back, th\
+e program goes o\
+ffline and says \
+what the valve\x0ah\
+olds as far as k\
+nown; the docume\
+nt keeps every v\
+alue.</p>\x0a\x0a<h2>F\
+iles</h2>\x0a<p>Par\
+ameter files (<c\
+ode>*.prm</code>\
+) are text files\
+. Open, Save, Sa\
+ve As, the recen\
+t\x0afiles and drag\
+ and drop work a\
+s usual; the pro\
+gram asks before\
+ unsaved changes\
+ are lost.\x0aEvery\
+ change can be u\
+ndone (Ctrl+Z) a\
+nd redone (Ctrl+\
+Y). File \xe2\x86\x92 Pri\
+nt and File \xe2\x86\x92 \
+Export PDF\x0aprodu\
+ce a parameter r\
+ecord with type \
+key, serial numb\
+er, firmware, fi\
+le, date, access\
+ level,\x0athe flow\
+ diagram and eve\
+ry parameter wit\
+h its unit. Valu\
+es changed since\
+ the file was sa\
+ved\x0aare marked <\
+b>*</b> and the \
+file line says s\
+o; every page na\
+mes the type key\
+ and serial\x0anumb\
+er and carries i\
+ts page number; \
+the last page ha\
+s a line for dat\
+e, name and\x0asign\
+ature.</p>\x0a<p><b\
+>Back up a valve\
+</b>: go online,\
+ Valve \xe2\x86\x92 Downl\
+oad from valve, \
+then File \xe2\x86\x92 <b\
+>Save backup\x0acop\
+y\xe2\x80\xa6</b> (propos\
+ed name: type ke\
+y, serial number\
+, date and time)\
+. The copy is wr\
+itten and\x0athe op\
+en document stay\
+s what it was: l\
+ater changes are\
+ saved into the \
+document's own f\
+ile,\x0anever into \
+the backup. Save\
+ As, by contrast\
+, makes the new \
+file the open do\
+cument.</p>\x0a\x0a<h2\
+>Keyboard</h2>\x0a<\
+table>\x0a<tr><td>C\
+trl+O / Ctrl+S /\
+ Ctrl+Shift+S</t\
+d><td>Open / Sav\
+e / Save As</td>\
+</tr>\x0a<tr><td>Ct\
+rl+Z / Ctrl+Y</t\
+d><td>Undo / Red\
+o</td></tr>\x0a<tr>\
+<td>Ctrl+P / Ctr\
+l+E</td><td>Prin\
+t / Export PDF</\
+td></tr>\x0a<tr><td\
+>Ctrl+1 / Ctrl+2\
+ / Ctrl+3 / Ctrl\
++4</td><td>Flow \
+diagram / Parame\
+ter list / Oscil\
+loscope / CANope\
+n window</td></t\
+r>\x0a<tr><td>F5 / \
+Shift+F5</td><td\
+>Online / Offlin\
+e</td></tr>\x0a<tr>\
+<td>Ctrl+U / Ctr\
+l+D</td><td>Uplo\
+ad to valve / Do\
+wnload from valv\
+e</td></tr>\x0a<tr>\
+<td>Ctrl+T / Ctr\
+l+I / Ctrl+H</td\
+><td>Valve selec\
+tion / Valve sta\
+tus / HID config\
+uration</td></tr\
+>\x0a</table>\x0a<p><b\
+>Scripts and tes\
+t benches</b>: t\
+he valve from Py\
+thon and shell s\
+cripts, <a href=\
+\x22scripting_en.ht\
+ml\x22>on this page\
+</a> (in English\
+).</p>\x0a</body>\x0a<\
+/html>\x0a\
+\x00\x00\x0a4\
 <\
 !DOCTYPE html>\x0a<\
 html lang=\x22en\x22>\x0a\
@@ -2817,18 +3050,46 @@ ermanent (object\
 \x0a0x1010, or the \
 valve's own way \
 where it lacks i\
-t).</li>\x0a</ul>\x0a<\
-p>The oscillosco\
-pe takes the act\
-ual position fro\
-m TPDO1; the set\
-point generator \
-and the tuning\x0at\
-ests send the se\
-tpoint in RPDO1,\
- as a PLC does.<\
-/p>\x0a</body>\x0a</ht\
-ml>\x0a\
+t).</li>\x0a<li>A v\
+alve without obj\
+ect 0x1010 (the \
+manual's object \
+list has none) k\
+eeps every value\
+ as it\x0ais writte\
+n: the upload wr\
+ites in an order\
+ that never leav\
+es a combination\
+ the rules refus\
+e,\x0areads everyth\
+ing back and say\
+s \xe2\x80\x9ckept by the\
+ valve as writte\
+n (it has no sto\
+re command)\xe2\x80\x9d.\x0a\
+Valve \xe2\x86\x92 <b>Ver\
+ify by restart\xe2\x80\
+\xa6</b> then resta\
+rts it (NMT rese\
+t node, hydrauli\
+cs disconnected)\
+\x0aand reads back \
+that it kept the\
+m: \xe2\x80\x9cverified a\
+fter a restart\xe2\x80\
+\x9d.</li>\x0a</ul>\x0a<p\
+>The oscilloscop\
+e takes the actu\
+al position from\
+ TPDO1; the setp\
+oint generator a\
+nd the tuning\x0ate\
+sts send the set\
+point in RPDO1, \
+as a PLC does.</\
+p>\x0a</body>\x0a</htm\
+l>\x0a\
 \x00\x00\x07\xbb\
 <\
 !DOCTYPE html>\x0a<\
@@ -3446,35 +3707,35 @@ qt_resource_struct = b"\
 \x00\x00\x00\x00\x00\x02\x00\x00\x00\x02\x00\x00\x00\x01\
 \x00\x00\x00\x10\x00\x02\x00\x00\x00\x10\x00\x00\x00\x10\
 \x00\x00\x00\x00\x00\x02\x00\x00\x00\x0d\x00\x00\x00\x03\
-\x00\x00\x02\xb6\x00\x00\x00\x00\x00\x01\x00\x00\xbda\
-\x00\x00\x02L\x00\x00\x00\x00\x00\x01\x00\x00\xb7\xc3\
-\x00\x00\x03X\x00\x00\x00\x00\x00\x01\x00\x00\xc7\x97\
-\x00\x00\x02\xd0\x00\x00\x00\x00\x00\x01\x00\x00\xbe\x8e\
-\x00\x00\x022\x00\x00\x00\x00\x00\x01\x00\x00\xb5\xfd\
-\x00\x00\x03t\x00\x00\x00\x00\x00\x01\x00\x00\xc9/\
-\x00\x00\x02\xe8\x00\x00\x00\x00\x00\x01\x00\x00\xc0]\
-\x00\x00\x03:\x00\x00\x00\x00\x00\x01\x00\x00\xc5\xeb\
-\x00\x00\x02d\x00\x00\x00\x00\x00\x01\x00\x00\xb9i\
-\x00\x00\x03\x04\x00\x00\x00\x00\x00\x01\x00\x00\xc2&\
-\x00\x00\x02\x80\x00\x00\x00\x00\x00\x01\x00\x00\xbaf\
-\x00\x00\x02\x9c\x00\x00\x00\x00\x00\x01\x00\x00\xbc\x1f\
-\x00\x00\x03\x18\x00\x00\x00\x00\x00\x01\x00\x00\xc4\xaa\
-\x00\x00\x01J\x00\x00\x00\x00\x00\x01\x00\x00nw\
-\x00\x00\x00\xe6\x00\x00\x00\x00\x00\x01\x00\x00A\xa2\
-\x00\x00\x01\xac\x00\x00\x00\x00\x00\x01\x00\x00\x83\xa8\
-\x00\x00\x00\xc4\x00\x00\x00\x00\x00\x01\x00\x00:Y\
-\x00\x00\x01\x0a\x00\x00\x00\x00\x00\x01\x00\x00H-\
-\x00\x00\x01\x8a\x00\x00\x00\x00\x00\x01\x00\x00}N\
-\x00\x00\x00:\x00\x00\x00\x00\x00\x01\x00\x00\x09V\
-\x00\x00\x02\x0a\x00\x00\x00\x00\x00\x01\x00\x00\xae>\
-\x00\x00\x00\x82\x00\x00\x00\x00\x00\x01\x00\x00\x15\xcb\
-\x00\x00\x01,\x00\x00\x00\x00\x00\x01\x00\x00O-\
-\x00\x00\x01\xd0\x00\x00\x00\x00\x00\x01\x00\x00\x8a\x8d\
-\x00\x00\x01n\x00\x00\x00\x00\x00\x01\x00\x00t*\
+\x00\x00\x02\xb6\x00\x00\x00\x00\x00\x01\x00\x00\xcd\xb7\
+\x00\x00\x02L\x00\x00\x00\x00\x00\x01\x00\x00\xc8\x19\
+\x00\x00\x03X\x00\x00\x00\x00\x00\x01\x00\x00\xd7\xed\
+\x00\x00\x02\xd0\x00\x00\x00\x00\x00\x01\x00\x00\xce\xe4\
+\x00\x00\x022\x00\x00\x00\x00\x00\x01\x00\x00\xc6S\
+\x00\x00\x03t\x00\x00\x00\x00\x00\x01\x00\x00\xd9\x85\
+\x00\x00\x02\xe8\x00\x00\x00\x00\x00\x01\x00\x00\xd0\xb3\
+\x00\x00\x03:\x00\x00\x00\x00\x00\x01\x00\x00\xd6A\
+\x00\x00\x02d\x00\x00\x00\x00\x00\x01\x00\x00\xc9\xbf\
+\x00\x00\x03\x04\x00\x00\x00\x00\x00\x01\x00\x00\xd2|\
+\x00\x00\x02\x80\x00\x00\x00\x00\x00\x01\x00\x00\xca\xbc\
+\x00\x00\x02\x9c\x00\x00\x00\x00\x00\x01\x00\x00\xccu\
+\x00\x00\x03\x18\x00\x00\x00\x00\x00\x01\x00\x00\xd5\x00\
+\x00\x00\x01J\x00\x00\x00\x00\x00\x01\x00\x00w\xdf\
+\x00\x00\x00\xe6\x00\x00\x00\x00\x00\x01\x00\x00GS\
+\x00\x00\x01\xac\x00\x00\x00\x00\x00\x01\x00\x00\x8f\x0b\
+\x00\x00\x00\xc4\x00\x00\x00\x00\x00\x01\x00\x00@\x0a\
+\x00\x00\x01\x0a\x00\x00\x00\x00\x00\x01\x00\x00M\xde\
+\x00\x00\x01\x8a\x00\x00\x00\x00\x00\x01\x00\x00\x88\xb1\
+\x00\x00\x00:\x00\x00\x00\x00\x00\x01\x00\x00\x0bh\
+\x00\x00\x02\x0a\x00\x00\x00\x00\x00\x01\x00\x00\xbe\x94\
+\x00\x00\x00\x82\x00\x00\x00\x00\x00\x01\x00\x00\x17\xdd\
+\x00\x00\x01,\x00\x00\x00\x00\x00\x01\x00\x00T\xde\
+\x00\x00\x01\xd0\x00\x00\x00\x00\x00\x01\x00\x00\x95\xf0\
+\x00\x00\x01n\x00\x00\x00\x00\x00\x01\x00\x00}\x92\
 \x00\x00\x00\x1e\x00\x00\x00\x00\x00\x01\x00\x00\x00\x00\
-\x00\x00\x01\xee\x00\x00\x00\x00\x00\x01\x00\x00\xa5\xc5\
-\x00\x00\x00^\x00\x00\x00\x00\x00\x01\x00\x00\x0fD\
-\x00\x00\x00\xa0\x00\x00\x00\x00\x00\x01\x00\x004#\
+\x00\x00\x01\xee\x00\x00\x00\x00\x00\x01\x00\x00\xb4\x5c\
+\x00\x00\x00^\x00\x00\x00\x00\x00\x01\x00\x00\x11V\
+\x00\x00\x00\xa0\x00\x00\x00\x00\x00\x01\x00\x009\xd4\
 "
 
 def qInitResources():

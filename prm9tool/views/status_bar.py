@@ -9,13 +9,23 @@ Cancel there makes it OFFLINE again.
 from __future__ import annotations
 
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 from PySide6.QtCore import QEvent
 from PySide6.QtWidgets import QFrame, QLabel, QStatusBar, QWidget
 
+from prm9tool.catalogue import Access
+from prm9tool.views.emcy import status_summary
+
+if TYPE_CHECKING:
+    from prm9tool.model.access import AccessModel
+    from prm9tool.model.document import ParameterDocument
+    from prm9tool.online.connection import ValveConnection
+    from prm9tool.online.sync import ValveSync
+
 
 class MainStatusBar(QStatusBar):
-    """Six permanent fields, updated from the window's slots."""
+    """Six permanent fields, following the models (:meth:`observe`)."""
 
     def __init__(self, parent: QWidget | None = None) -> None:
         super().__init__(parent)
@@ -86,6 +96,31 @@ class MainStatusBar(QStatusBar):
             self.file_label,
             self.level_label,
         ]
+
+    def observe(
+        self,
+        connection: ValveConnection,
+        doc: ParameterDocument,
+        sync: ValveSync,
+        access: AccessModel,
+    ) -> None:
+        """Follow the connection, the document, the synchronisation and the access level:
+        every field is set from their signals from now on."""
+        c = connection
+        c.online_changed.connect(self.set_online)
+        sync.active_changed.connect(self.set_synchronised)
+        access.level_changed.connect(lambda _l: self.set_expert(access.level is Access.EXPERT))
+        self.set_expert(access.level is Access.EXPERT)
+        c.device_changed.connect(lambda info: self.set_firmware(info.firmware if info else ""))
+        c.status_changed.connect(lambda status: self.set_device_status(status_summary(status)))
+        c.samples_lost_changed.connect(self.set_samples_lost)
+        c.reconnecting.connect(
+            lambda seconds: self.set_reconnecting(
+                seconds, c.lost_valve.serial if c.lost_valve else 0
+            )
+        )
+        c.reconnect_ended.connect(lambda: self.set_reconnecting(None))
+        doc.type_key_changed.connect(self.set_type_key)
 
     def set_online(self, online: bool) -> None:
         """Show the communication mode."""

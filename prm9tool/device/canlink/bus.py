@@ -41,6 +41,13 @@ HINTS = {
 }
 GENERIC_HINT = "check that the adapter is plugged in, its driver is installed and you may use it"
 
+# The error class bits of an error frame's ID as SocketCAN reports them (linux/can/error.h;
+# python-can keeps them in ``arbitration_id``): the controller went bus-off, and it was
+# restarted (automatically with ``ip link set CHANNEL type can restart-ms 100``).
+CAN_ERR_BUSOFF = 0x040
+CAN_ERR_RESTARTED = 0x100
+BUS_OFF_WORDS = ("bus-off", "busoff", "bus off")  # how adapters' own errors name it
+
 
 @dataclass(frozen=True)
 class CanOptions:
@@ -126,12 +133,19 @@ class CanNetwork:
     lock: threading.RLock = field(default_factory=threading.RLock)
     error_frames: int = 0
     sync_owner: object | None = None  # the scope producing SYNC on this bus (one at a time)
+    bus_off_at: float | None = None  # time.monotonic() the adapter reported bus-off
 
     def on_frame(self, msg: can.Message) -> None:
-        """Every frame on the bus (a python-can listener): heartbeats, boot-ups, EMCY."""
+        """Every frame on the bus (a python-can listener): heartbeats, boot-ups, EMCY, and
+        error frames (a bus-off of the adapter: until it restarts or a frame arrives)."""
         if msg.is_error_frame:
             self.error_frames += 1
+            if msg.arbitration_id & CAN_ERR_RESTARTED:
+                self.bus_off_at = None
+            elif msg.arbitration_id & CAN_ERR_BUSOFF:
+                self.bus_off_at = time.monotonic()
             return
+        self.bus_off_at = None  # a frame arrived: the adapter is on the bus again
         if msg.is_extended_id or msg.is_remote_frame:
             return
         cob, node = msg.arbitration_id & 0x780, msg.arbitration_id & 0x7F
@@ -152,6 +166,14 @@ class CanNetwork:
             seen.emcy_code = int.from_bytes(bytes(msg.data[:2]), "little")
             seen.emcy_register = msg.data[2]
             seen.emcy_at = time.monotonic()
+
+    def is_bus_off(self, refusal: BaseException | None = None) -> bool:
+        """Whether the adapter is off the bus: it reported bus-off in an error frame (as
+        SocketCAN does), or ``refusal`` (its error on sending) names bus-off."""
+        if self.bus_off_at is not None:
+            return True
+        text = str(refusal or "").lower()
+        return any(word in text for word in BUS_OFF_WORDS)
 
     def node_seen(self, node_id: int) -> NodeSeen:
         """What the bus told about ``node_id`` so far."""

@@ -13,6 +13,7 @@ from collections.abc import Iterator
 from contextlib import contextmanager
 from dataclasses import dataclass
 
+from prm9tool.catalogue import CATALOGUE
 from prm9tool.catalogue.variant import Config
 from prm9tool.device.canlink.bus import CanNetwork
 from prm9tool.device.canlink.sdo import (
@@ -26,8 +27,8 @@ from prm9tool.errors import CommunicationError, SdoAbortError
 
 SCAN_WINDOW_S = 0.3
 IDENTIFY_TIMEOUT_S = 0.3
-PCODE = (0x2041, 0)  # the type key: this project's decision (not in the manual)
-CONTROL_MODE = (0x6043, 0)  # 4 = process control: E04 valves only (table 7-16)
+PCODE = CATALOGUE["PCODE"].key  # 0x2041, the type key: this project's decision (not in the manual)
+CONTROL_MODE = CATALOGUE["CTRLMODE"].key  # 0x6043; 4 = process control: E04 only (table 7-16)
 
 
 @dataclass(frozen=True)
@@ -145,7 +146,7 @@ def sdo_channel(shared: CanNetwork, node_id: int, timeout_s: float) -> Iterator[
         if existing is None:
             network.add_node(node)
     try:
-        yield SdoChannel(node, timeout_s, lambda: shared.error_frames)  # type: ignore[arg-type]
+        yield SdoChannel(node, timeout_s, shared)  # type: ignore[arg-type]
     finally:
         if existing is None:
             with shared.lock:

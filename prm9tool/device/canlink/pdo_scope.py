@@ -23,18 +23,18 @@ from collections.abc import Sequence
 
 import numpy as np
 
+from prm9tool.catalogue.signals import SIGNAL_OBJECTS, signal_at_index
 from prm9tool.device.canlink.bus import CanNetwork
-from prm9tool.device.canlink.sampler import DEMAND_KEYS, SIGNAL_OBJECTS, Demand
+from prm9tool.device.canlink.sampler import DEMAND_KEYS, Demand
 from prm9tool.device.canlink.sdo import SdoChannel
 from prm9tool.device.canlink.sync_clock import SlotSamples, SyncClock
 from prm9tool.device.records import NmtState
-from prm9tool.errors import DeviceDisconnectedError, Prm9Error
+from prm9tool.errors import CanBusOffError, DeviceDisconnectedError, Prm9Error
 
 MIN_PERIOD_S = 0.001
 SYNC_AND_TPDO1_BITS = (47 + 3) + (47 + 32 + 3)  # SYNC (no data) + TPDO1 (4 bytes) on the wire
 MAX_BUS_LOAD = 0.5  # decision: the scope takes at most half the bus, SDO and others need room
 SYNCHRONOUS_EVERY_SYNC = 1  # TPDO transmission type 1 (manual table 7-12)
-ENTRY2_KEYS = {0x6301: "position_actual", 0x6381: "process_actual"}
 SETTLE_S = 0.05  # a SYNC's slot is handed out this long after it (its TPDO1 has arrived)
 
 
@@ -64,7 +64,7 @@ class PdoSampler:
         node = int(sdo.node.id or 0)
         if shared.node_seen(node).nmt_state is not NmtState.OPERATIONAL:
             raise NotPdoMappedError(f"node {node} is not OPERATIONAL: no PDOs")
-        mapped = ENTRY2_KEYS.get(sdo.read_u32(0x1A00, 2) >> 16)
+        mapped = signal_at_index(sdo.read_u32(0x1A00, 2) >> 16)  # entry 2: 0x6301 or 0x6381
         read_by_sdo = [k for k in keys if k != mapped and k in SIGNAL_OBJECTS]
         if mapped not in keys or read_by_sdo:
             raise NotPdoMappedError(f"TPDO1 carries {mapped}, not {', '.join(keys)}")
@@ -110,8 +110,11 @@ class PdoSampler:
         """One row per SYNC period up to one settling time ago, shape (n, len(keys)); a
         period without its TPDO1 is NaN in TPDO1's column. Raises the bus's error that stopped
         the SYNC."""
-        if self._clock.error is not None:
-            raise DeviceDisconnectedError(f"the CAN bus refused the SYNC ({self._clock.error})")
+        refusal = self._clock.error
+        if refusal is not None:
+            if self._shared.is_bus_off(refusal):
+                raise CanBusOffError(f"the CAN adapter is bus-off: no SYNC ({refusal})")
+            raise DeviceDisconnectedError(f"the CAN bus refused the SYNC ({refusal})")
         first = self._slots.given
         mapped = self._slots.take(self._clock.ticks - self._settle)
         self._gaps += int(np.isnan(mapped[:, 0]).sum())

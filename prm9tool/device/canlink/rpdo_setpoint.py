@@ -24,6 +24,7 @@ from __future__ import annotations
 from typing import TYPE_CHECKING
 
 from prm9tool.catalogue import CATALOGUE
+from prm9tool.catalogue.signals import SETPOINT_SIGNALS
 from prm9tool.device.canlink.status import device_state, state_text
 from prm9tool.device.records import DeviceState, NmtState
 from prm9tool.device.session import NotAvailableError
@@ -35,8 +36,10 @@ if TYPE_CHECKING:
     from prm9tool.device.canlink.session import CanopenSession
 
 DEADLINE_MS = 500  # RPDO1 reception deadline while the generator runs (the override's watchdog)
-SETPOINT_OBJECTS = {0x6300: "POSSETP", 0x6380: "PRCSETP"}  # RPDO1 entry 2 (table 7-13)
-DEMAND_KEYS = {"POSSETP": "position_setpoint", "PRCSETP": "process_setpoint"}  # scope channels
+# RPDO1 entry 2 (table 7-13): the setpoint object's index -> its mnemonic, and the mnemonic ->
+# the scope channel that shows it (catalogue.signals.SETPOINT_SIGNALS)
+SETPOINT_OBJECTS = {CATALOGUE[m].index: m for m in SETPOINT_SIGNALS.values()}
+DEMAND_KEYS = {m: key for key, m in SETPOINT_SIGNALS.items()}
 ASYNCHRONOUS = (254, 255)
 _NOT_OPERATIONAL = QT_TRANSLATE_NOOP(
     "Errors",
@@ -137,6 +140,10 @@ class RpdoSetpoint(SetpointLink):
             self.writing = "RPDO1TIMER"
             self._session.write("RPDO1TIMER", self._timer_before)
             self._timer_before = None
+
+    def leftovers(self) -> dict[str, int]:
+        """The RPDO1 event timer as it was, while the deadline :meth:`begin` armed is on."""
+        return {} if self._timer_before is None else {"RPDO1TIMER": self._timer_before}
 
     def _check_operational(self) -> None:
         nmt = self._session.nmt_state

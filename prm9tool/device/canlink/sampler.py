@@ -1,8 +1,8 @@
 """Measuring points over CANopen: sampled by SDO at a fixed period in a thread of its own.
 
-A measuring point with an object in the valve's dictionary (actual position 0x6301, process
-actual value 0x6381, supply 0x2003, temperature 0x2002) is read each
-period; the demand value (``position_setpoint``/``process_setpoint``) is the setpoint this tool
+A measuring point with an object in the valve's dictionary (the catalogue's
+``signals.SIGNAL_OBJECTS``: actual position 0x6301, demand value 0x6310, control deviation
+0x6350, process actual value 0x6381, supply 0x2003, temperature 0x2002) is read each period; the demand value (``position_setpoint``/``process_setpoint``) is the setpoint this tool
 sends in RPDO1 while it drives the valve (``demand``; the valve does not report its own); the
 others have no object on a real valve and give NaN (shown as no data, never a made-up curve).
 The stream has one row per period: a period whose reads did not finish in time is a NaN row
@@ -17,44 +17,19 @@ import logging
 import threading
 import time
 from collections.abc import Callable, Sequence
-from dataclasses import dataclass
 
 import numpy as np
 
-from prm9tool.catalogue import CATALOGUE
+from prm9tool.catalogue.signals import SETPOINT_SIGNALS, signal_object
 from prm9tool.errors import Prm9Error, ValueRangeError
 
 log = logging.getLogger(__name__)
 MAX_CHANNELS = 3
 
 
-@dataclass(frozen=True)
-class SignalObject:
-    """Where a measuring point lives in the object dictionary, and its raw conversion."""
-
-    index: int
-    subindex: int
-    signed: bool
-    factor: float = 1.0  # OD raw -> measuring-point raw (signals.py units)
-
-
-# Measuring point -> object (manual tables 7-13, 7-14; units as in catalogue/signals.py).
-def _object(mnemonic: str, signed: bool, factor: float = 1.0) -> SignalObject:
-    """The catalogue's address of ``mnemonic`` (0x6301/1, not the record's count at /0)."""
-    param = CATALOGUE[mnemonic]
-    return SignalObject(param.index, param.subindex, signed, factor)
-
-
-SIGNAL_OBJECTS = {
-    "position_actual": _object("POSACT", True),
-    "process_actual": _object("PRCACT", True),
-    "supply_voltage": _object("PWR", False),
-    "temperature": _object("TEMP", True, 10.0),  # °C -> 0.1 °C
-}
-
 Reader = Callable[[int, int], bytes]
 Demand = Callable[[str], float]  # measuring-point key -> the setpoint this tool sends (NaN: none)
-DEMAND_KEYS = ("position_setpoint", "process_setpoint")
+DEMAND_KEYS = tuple(SETPOINT_SIGNALS)  # the setpoint the tool sends in RPDO1 (not read back)
 
 
 class SdoSampler:
@@ -74,6 +49,8 @@ class SdoSampler:
         self.error: Prm9Error | None = None
         self._read = read
         self._demand = demand
+        # measuring point -> its object's address, sign and factor (the catalogue's table)
+        self._objects = {k: _address(k) for k in self.keys}
         self._rows: list[list[float]] = []
         self._lock = threading.Lock()
         self._stop = threading.Event()
@@ -123,8 +100,18 @@ class SdoSampler:
             self._stop.wait(max(due - time.monotonic(), 0.0))
 
     def _sample(self, key: str) -> float:
-        obj = SIGNAL_OBJECTS.get(key)
+        obj = self._objects[key]
         if obj is None:
             return self._demand(key) if key in DEMAND_KEYS and self._demand else float("nan")
-        data = self._read(obj.index, obj.subindex)
-        return int.from_bytes(data, "little", signed=obj.signed) * obj.factor
+        index, subindex, signed, factor = obj
+        data = self._read(index, subindex)
+        return int.from_bytes(data, "little", signed=signed) * factor
+
+
+def _address(key: str) -> tuple[int, int, bool, float] | None:
+    """Index, sub-index, signedness and factor of the object that holds ``key`` (None)."""
+    found = signal_object(key)
+    if found is None:
+        return None
+    param, factor = found
+    return param.index, param.subindex, param.dtype.natural_range[0] < 0, factor

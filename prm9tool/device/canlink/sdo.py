@@ -3,17 +3,18 @@
 The ``canopen`` package does the SDO protocol (expedited and segmented); this module only
 maps its outcomes: an abort is an :class:`SdoAbortError` with the CiA 301 code, no answer a
 :class:`DeviceTimeoutError` naming node and object, a bus that refuses to send a
-:class:`DeviceDisconnectedError`.
+:class:`DeviceDisconnectedError` — :class:`CanBusOffError` when the adapter is bus-off, which
+is also why no answer can arrive then.
 """
 
 from __future__ import annotations
 
 import threading
-from collections.abc import Callable
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, Protocol
 
 from prm9tool.errors import (
     AbortCode,
+    CanBusOffError,
     DeviceDisconnectedError,
     DeviceTimeoutError,
     SdoAbortError,
@@ -27,6 +28,17 @@ PRM9_DEVICE_TYPE = 0x198  # 0x1000: CiA 408 (manual table 7-5)
 ARGO_HYTOS_VENDOR = 0xE6  # 0x1018/1 (manual §7.6 step 2)
 
 
+class BusHealth(Protocol):
+    """What the bus tells about itself (``bus.CanNetwork``)."""
+
+    @property
+    def error_frames(self) -> int:
+        """Error frames seen on the bus so far."""
+
+    def is_bus_off(self, refusal: BaseException | None = None) -> bool:
+        """Whether the adapter is off the bus (``refusal``: its error on sending)."""
+
+
 class SdoChannel:
     """Serialized SDO uploads and downloads to one node."""
 
@@ -34,12 +46,12 @@ class SdoChannel:
         self,
         node: canopen.RemoteNode,
         timeout_s: float,
-        error_frames: Callable[[], int] | None = None,
+        bus: BusHealth | None = None,
     ) -> None:
-        """``error_frames()``: error frames seen on the bus so far (named in a timeout: a
-        wrong bit rate shows as error frames and no answers)."""
+        """``bus``: its error frames are named in a timeout (a wrong bit rate shows as error
+        frames and no answers), its bus-off makes a timeout or a refusal a CanBusOffError."""
         self.node = node
-        self._error_frames = error_frames
+        self._bus = bus
         self.timeout_s = timeout_s
         self.node.sdo.RESPONSE_TIMEOUT = timeout_s
         # one lock per node object: a scan and the session may share the node's SDO client
@@ -74,19 +86,27 @@ class SdoChannel:
             except canopen.SdoAbortedError as exc:
                 raise SdoAbortError(index, subindex, exc.code) from None
             except canopen.SdoCommunicationError as exc:
+                self._raise_if_bus_off(exc)
                 raise DeviceTimeoutError(
                     f"node {self.node.id}: no SDO answer for 0x{index:04X}/{subindex} within "
                     f"{sdo.RESPONSE_TIMEOUT:g} s ({exc}); {self._what_to_check()}"
                 ) from None
             except (can.CanError, OSError) as exc:
+                self._raise_if_bus_off(exc)
                 raise DeviceDisconnectedError(
                     f"node {self.node.id}: the CAN bus refused to send ({exc})"
                 ) from None
             finally:
                 sdo.RESPONSE_TIMEOUT = self.timeout_s
 
+    def _raise_if_bus_off(self, exc: Exception) -> None:
+        if self._bus is not None and self._bus.is_bus_off(exc):
+            raise CanBusOffError(
+                f"node {self.node.id}: the CAN adapter is bus-off ({exc})"
+            ) from None
+
     def _what_to_check(self) -> str:
-        errors = self._error_frames() if self._error_frames is not None else 0
+        errors = self._bus.error_frames if self._bus is not None else 0
         if errors:
             return (
                 f"the bus saw {errors} error frames: check that the bit rate is the valve's "

@@ -57,6 +57,7 @@ from prm9tool.device.session import ValveSession
 from prm9tool.device.setpoint import SetpointLink
 from prm9tool.errors import (
     AccessDeniedError,
+    CanBusOffError,
     DeviceDisconnectedError,
     DeviceTimeoutError,
     Prm9Error,
@@ -102,6 +103,7 @@ class CanopenSession(UploadSteps, ValveSession):
         self._shared = canbus.acquire(options)
         self._closed = False
         self._snapshot: dict[str, Value] | None = None  # None: no upload is running
+        self._stored_backup: dict[str, Value] | None = None  # the snapshot of the last store
         self._touched: list[str] = []  # parameters the running upload wrote
         self._known: dict[str, Value] = {}  # the valve's working values as last read/written
         self._sampler: SdoSampler | PdoSampler | None = None
@@ -254,7 +256,9 @@ class CanopenSession(UploadSteps, ValveSession):
         if self._store == STORED_WITH_1010:
             self._sdo.download(0x1010, 1, SAVE_SIGNATURE.to_bytes(4, "little"), STORE_TIMEOUT_S)
         self.store_done = self._store
-        self._snapshot = None  # stored: nothing to put back any more
+        # stored: nothing to put back any more — unless the restart verification finds the
+        # valve did not keep the upload (upload_steps._restart_check)
+        self._stored_backup, self._snapshot = self._snapshot, None
 
     def restore_factory(self) -> None:
         """0x1011/1 = "load": factory values at the next reset or power-up. A valve without
@@ -334,6 +338,10 @@ class CanopenSession(UploadSteps, ValveSession):
         try:
             self._shared.network.send_message(cob_id, data)
         except (can.CanError, OSError, RuntimeError) as exc:  # RuntimeError: bus closed
+            if self._shared.is_bus_off(exc):
+                raise CanBusOffError(
+                    f"node {self.node_id}: the CAN adapter is bus-off ({exc})"
+                ) from None
             raise DeviceDisconnectedError(
                 f"node {self.node_id}: the CAN bus refused to send 0x{cob_id:03X} ({exc})"
             ) from None
@@ -401,7 +409,7 @@ class CanopenSession(UploadSteps, ValveSession):
                 raise Prm9Error(f"node {self.node_id} is already open in this program")
             node = canopen.RemoteNode(self.node_id, canopen.ObjectDictionary())
             network.add_node(node)
-        return SdoChannel(node, timeout_s, lambda: self._shared.error_frames)
+        return SdoChannel(node, timeout_s, self._shared)
 
     def _stop_sampler(self) -> None:
         sampler, self._sampler = self._sampler, None

@@ -11,10 +11,11 @@ from __future__ import annotations
 
 import time
 
+from prm9tool.catalogue import CATALOGUE
+from prm9tool.catalogue.error_kinds import ERROR_KINDS, ErrorKind
 from prm9tool.device.canlink.bus import NodeSeen
 from prm9tool.device.canlink.sdo import MISSING, SdoChannel
-from prm9tool.device.emulator.faults import ERROR_KINDS, ErrorKind
-from prm9tool.device.emulator.leds import leds
+from prm9tool.device.leds import leds
 from prm9tool.device.records import DeviceState, NmtState, ValveStatus
 from prm9tool.errors import SdoAbortError
 
@@ -57,8 +58,8 @@ def read_status(sdo: SdoChannel, seen: NodeSeen) -> ValveStatus:
     state = device_state(word)
     register = sdo.read_u32(0x1001, 0) & 0xFF
     code = _error_code(sdo, seen, register)
-    temperature = _optional_int(sdo, 0x2002, signed=True)
-    supply = _optional_int(sdo, 0x2003, signed=False)
+    temperature = _optional_int(sdo, *CATALOGUE["TEMP"].key, signed=True)  # 0x2002
+    supply = _optional_int(sdo, *CATALOGUE["PWR"].key, signed=False)  # 0x2003
     kinds = tuple(k for k in ERROR_KINDS if k.code == code)[:1] if code else ()
     nmt = seen.nmt_state or NmtState.UNKNOWN
     return ValveStatus(

@@ -12,6 +12,7 @@ from collections.abc import Mapping, Sequence
 from typing import TYPE_CHECKING
 
 from prm9tool.catalogue import Parameter
+from prm9tool.catalogue.manual_od import NOT_KEPT_AFTER_RESTART
 from prm9tool.catalogue.variant import Variant
 from prm9tool.device.canlink.storing import (
     KEPT_AS_WRITTEN,
@@ -34,6 +35,7 @@ class UploadSteps:
     """The CANopen session's upload hooks (ValveSession's ``_before_upload`` … ``reload``)."""
 
     _snapshot: dict[str, Value] | None
+    _stored_backup: dict[str, Value] | None
     _touched: list[str]
     _known: dict[str, Value]
     _shared: CanNetwork
@@ -150,10 +152,9 @@ class UploadSteps:
         actual = self._read_entries(params, None, None)
         changed = differences([p for p in params if p.mnemonic in actual], values, actual)
         if changed:
-            return changed, (
-                "after a restart (NMT reset node) the valve reads back values other than the "
-                "upload's: it did not keep them"
-            )
+            if self._kept:  # each write is durable: the backup goes back as after any failure
+                self._snapshot = self._stored_backup
+            return changed, NOT_KEPT_AFTER_RESTART
         self.store_done = VERIFIED_RESTART
         return None
 

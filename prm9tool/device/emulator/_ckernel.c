@@ -49,6 +49,10 @@ enum { /* bits of the raw fault conditions (detect.conditions order) */
     B_COIL_A_OC = 1 << 5, B_COIL_B_OC = 1 << 6, B_TEMPERATURE = 1 << 8, B_MONITORING = 1 << 9
 };
 #define TICK_CYCLES 5
+/* Batches shorter than this keep the GIL: a few cycles take less than a microsecond, while
+ * handing the GIL over makes the caller queue behind every other thread's Python (several
+ * valves stepped 1 ms at a time by their USB links). */
+#define RELEASE_GIL_CYCLES 100
 #define TWO_PI 6.283185307179586 /* 2.0 * math.pi */
 
 /* Python's round(v) returns an int, which has no negative zero: "+ 0.0" turns -0.0 into 0.0. */
@@ -412,7 +416,7 @@ PyDoc_STRVAR(run_doc,
 "in ticks) until one would, which is left for the caller (countdown 0). Captured samples go\n"
 "to capture (3 doubles each, room for n). program: the static setpoint chain (4 doubles:\n"
 "raw, threshold, gain, linearized) of each of the n cycles, or None (the inputs' values).\n"
-"The GIL is released while the cycles run.");
+"The GIL is released while the cycles run (batches of 100 cycles or more).");
 
 static PyObject *run(PyObject *self, PyObject *args)
 {
@@ -440,7 +444,7 @@ static PyObject *run(PyObject *self, PyObject *args)
     const double *c = b_c.buf, *prog = b_prog.buf;
     long done = 0, ticks = 0;
     Py_ssize_t samples = 0;
-    Py_BEGIN_ALLOW_THREADS
+    PyThreadState *released = n >= RELEASE_GIL_CYCLES ? PyEval_SaveThread() : NULL;
     if (!ticking) {
         done = n < countdown ? n : countdown;
         samples = cycles(st, c, in, done, cap, prog);
@@ -461,7 +465,7 @@ static PyObject *run(PyObject *self, PyObject *args)
             countdown = TICK_CYCLES;
         }
     }
-    Py_END_ALLOW_THREADS
+    if (released != NULL) PyEval_RestoreThread(released);
     if (programmed) PyBuffer_Release(&b_prog);
     PyBuffer_Release(&b_cap);
     if (ticking) PyBuffer_Release(&b_t);

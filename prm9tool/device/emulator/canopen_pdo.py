@@ -24,7 +24,7 @@ CAN_ID_MASK = 0x7FF
 SYNC_TYPES = range(241)  # 0 acyclic synchronous, 1-240 every n-th SYNC
 EVENT_TYPES = (254, 255)
 CHANGE_INHIBIT_MS = 10  # decision: event timer 0 -> on change, at most every 10 ms
-CONTROL_MODE = (0x6043, 0)
+CONTROL_MODE = CATALOGUE["CTRLMODE"].key  # 0x6043
 
 
 class Dictionary(Protocol):
@@ -43,7 +43,7 @@ def _mapping_parameters(map_index: int) -> list[Parameter]:
 def mapping(valve: Dictionary, map_index: int) -> list[tuple[int, int, int]]:
     """The ``(index, subindex, bits)`` entries of a mapping object in the current control mode.
 
-    As many as its sub-index 0 says: none on a valve whose PDO maps nothing (E02: PDO2).
+    As many as its sub-index 0 says: none on a PDO that maps nothing (CiA 301).
     """
     mode = int(valve.read(*CONTROL_MODE))
     count = int(valve.read(map_index, 0))
@@ -120,7 +120,7 @@ class TpdoLogic:
         """The mapped bytes, or None when the PDO maps nothing (CiA 301: mapping disabled)."""
         entries = mapping(self._valve, self.channel.map_index)
         if not entries:
-            return None  # e.g. TPDO2 on an E02 valve (no external sensor) is never sent
+            return None  # a TPDO that maps nothing is never sent
         return b"".join(
             self._valve.read_bytes(index, subindex)[: bits // 8]
             for index, subindex, bits in entries
@@ -180,7 +180,7 @@ class RpdoLogic:
 
     def received(self, data: bytes, now_ms: int) -> None:
         """A frame on the RPDO's COB-ID arrived (NMT OPERATIONAL); ignored when the RPDO maps
-        nothing (CiA 301: mapping disabled, e.g. RPDO2 on an E02 valve)."""
+        nothing (CiA 301: mapping disabled)."""
         if not mapping(self._valve, self.channel.map_index):
             return
         if self.channel.event_timer:

@@ -3,9 +3,9 @@
 :class:`CompiledLoop` is driven exactly like :func:`.kernel.control_loop`'s generator
 (``send(n)`` runs ``n`` cycles, ``send(0)`` writes every measuring point back) and reads and
 writes the same :class:`~.loopstate.LoopState`; the cycles themselves run in the C extension
-``_ckernel`` on flat arrays of doubles, without the GIL. What happens between batches (reading
-new coefficients and inputs, the bumpless start of the ramp, the write-back) stays here, in the
-same order as in the reference.
+``_ckernel`` on flat arrays of doubles, without the GIL (batches of 100 cycles or more). What
+happens between batches (reading new coefficients and inputs, the bumpless start of the ramp,
+the write-back) stays here, in the same order as in the reference.
 """
 
 from __future__ import annotations
@@ -216,6 +216,7 @@ class CompiledLoop:
         self.state = st
         self.inputs = array("d", bytes(8 * len(INPUTS)))
         self.coef = array("d")
+        self.coef_of: dict[str, Any] | None = None  # the coefficients ``coef`` was built from
         self.version = -1
         self.inputs_version = -1
         self.last_mode = MODE_OFF
@@ -248,7 +249,8 @@ class CompiledLoop:
         if s.version != self.version:
             c = s.coefficients
             self.version = s.version
-            self.coef = coefficient_array(c)
+            if c is not self.coef_of:  # the firmware's memo hands back the same coefficients
+                self.coef, self.coef_of = coefficient_array(c), c
             self.process_on = bool(c["process_loop"])
             if not self.process_on:
                 self.state[S["dev"]] = self.state[S["dg"]] = 0.0

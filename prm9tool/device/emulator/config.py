@@ -10,7 +10,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Callable
-from typing import Any
+from typing import Any, Generic, TypeVar
 
 import numpy as np
 
@@ -21,8 +21,44 @@ from prm9tool.device.emulator.inputs import INPUT_TYPES
 from prm9tool.device.emulator.loopstate import Curve, evaluate_curve, prepare_curve
 
 Values = Callable[[str], int]
+T = TypeVar("T")
 LETTERS = "ABCDEFGHI"
 LVDT_SATURATION_MA = 3.8  # an intact 4…20 mA loop never reads lower (NAMUR NE 43; assumption)
+
+
+class Memo(Generic[T]):
+    """The last result of a pure function of parameter values and a few other inputs.
+
+    :meth:`get` computes again only when an input or one of the values the last computation
+    read has changed, else it returns the same object: a parameter write that leaves every
+    value the loop's coefficients depend on as it was (an upload of the set the valve already
+    has) costs a comparison, not a rebuild. Which values a computation reads may depend on
+    values (a branch reads what it needs); unchanged values take the same branches. Pass
+    floats among ``inputs`` as ``float.hex`` so that they compare bit for bit.
+    """
+
+    def __init__(self) -> None:
+        self._inputs: tuple[object, ...] | None = None
+        self._names: list[str] = []  # the values the last computation read, in order
+        self._values: list[int] = []
+        self._result: Any = None
+
+    def get(self, values: Values, inputs: tuple[object, ...], compute: Callable[[Values], T]) -> T:
+        """``compute(values)``, or its last result if nothing it depends on has changed."""
+        if inputs == self._inputs and [values(m) for m in self._names] == self._values:
+            return self._result  # type: ignore[no-any-return]
+        names: list[str] = []
+        read: list[int] = []
+
+        def recording(mnemonic: str) -> int:
+            value = values(mnemonic)
+            names.append(mnemonic)
+            read.append(value)
+            return value
+
+        self._result = result = compute(recording)
+        self._inputs, self._names, self._values = inputs, names, read
+        return result
 
 
 def curve_of(values: Values, prefix: str) -> Curve:
@@ -30,6 +66,11 @@ def curve_of(values: Values, prefix: str) -> Curve:
     xs = [values(f"{prefix}X{k}") for k in LETTERS]
     ys = [values(f"{prefix}Y{k}") for k in LETTERS]
     return prepare_curve(xs, ys)
+
+
+def setpoint_curve(values: Values) -> Curve:
+    """The setpoint linearization's characteristic (``SETPLIN``)."""
+    return curve_of(values, "SETPLIN")
 
 
 def ramp_step(ms: int) -> float:

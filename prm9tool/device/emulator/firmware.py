@@ -8,9 +8,9 @@ from __future__ import annotations
 
 import os
 from collections.abc import Callable
+from typing import Any
 
-from prm9tool.catalogue import CATALOGUE, canopen_switches
-from prm9tool.catalogue.canopen_switches import LSS_BIT_TIMINGS_KBIT as LSS_KBIT
+from prm9tool.catalogue import CATALOGUE
 from prm9tool.catalogue.scale import FULL_SCALE
 from prm9tool.catalogue.typekey import TypeKey
 from prm9tool.catalogue.variant import Coils
@@ -22,13 +22,16 @@ from prm9tool.device.emulator.constants import (
     PlantConstants,
 )
 from prm9tool.device.emulator.faults import FaultMonitor
+from prm9tool.device.emulator.interface import latch
 from prm9tool.device.emulator.loopstate import (
     MODE_ACTIVE,
     MODE_HOLD,
     MODE_OFF,
     SIGNAL_ORDER,
+    Curve,
     LoopState,
 )
+from prm9tool.device.emulator.memory import ParameterMemory
 from prm9tool.device.emulator.nvimage import NvImage, is_nonvolatile
 from prm9tool.device.emulator.objdict import ObjectDictionary
 from prm9tool.device.emulator.override import OverrideProgram
@@ -40,7 +43,7 @@ AUTO_CONTROL_WORD = 0x0F  # analog-only mode: the firmware enables itself (decis
 _ACTIVE_STATES = (DeviceState.HOLD, DeviceState.DEVICE_MODE_ACTIVE, DeviceState.FAULT_HOLD)
 
 
-class Firmware:
+class Firmware(ParameterMemory):
     """Object dictionary, NV image, state machine, fault monitor and the loop generator."""
 
     def __init__(
@@ -100,6 +103,8 @@ class Firmware:
         self.setpoint_dirty = True
         self.config_dirty = True
         self.coil_temperature = 25.0
+        self.coefficients_memo: config.Memo[dict[str, Any]] = config.Memo()
+        self.curve_memo: config.Memo[Curve] = config.Memo()
         self.kernel, self.make_loop = kernels.chosen()
         self.gen: kernels.Loop = self.make_loop(self.loop)
         from prm9tool.device.emulator.odsetup import install
@@ -195,80 +200,16 @@ class Firmware:
             if param.node_relative and param.mnemonic not in self.nv.values:
                 od.values[param.key] = param.default_for(self.variant, self.node_id)
 
-    def reset_communication(self) -> None:
-        """NMT reset communication: communication objects back to their power-on values."""
-        od = self.od
-        for param in od.entries.values():
-            if 0x1000 <= param.index <= 0x1FFF and param.group != "od_structure":
-                value = self.nv.values.get(param.mnemonic)
-                if value is None or not is_nonvolatile(param):
-                    value = param.default_for(self.variant, self.node_id)
-                if param.key not in od.getters:
-                    od.values[param.key] = value
-        self.nmt_state = NmtState.PRE_OPERATIONAL
-
-    def reload(self) -> None:
-        """Working values of the stored parameters ← the NV image, without a power cycle.
-
-        Only the parameters the store command keeps change; the state machine, the boot
-        timeline and the latched interface settings stay as they are, and the loop picks the
-        values up in its next cycle.
-        """
-        od = self.od
-        for param in od.entries.values():
-            if is_nonvolatile(param) and param.key not in od.getters:
-                value = self.nv.values.get(param.mnemonic)
-                if value is None:
-                    value = param.default_for(self.variant, self.node_id)
-                od.values[param.key] = value
-        self.setpoint_dirty = self.config_dirty = True
-
-    def nonvolatile_values(self) -> dict[str, int | str]:
-        """The RAM values the store command writes (node-relative defaults left out)."""
-        image = {}
-        for param in self.od.entries.values():
-            if not is_nonvolatile(param):
-                continue
-            value = self.od.values[param.key]
-            if param.node_relative and value == param.default_for(self.variant, self.node_id):
-                continue
-            image[param.mnemonic] = value
-        return image
-
     # --- CANopen interface settings (latched at power-up) ----------------------------------
     def _latch_interface(self) -> None:
-        """Decode the switches (prm9tool.catalogue.canopen_switches, table 7-17) at power-up.
-
-        At node switch 1 (LSS and automatic bit rate) the node ID is the one an LSS master
-        stored (``nv.lss``; none from the factory: the valve waits for an LSS master, CiA 305)
-        and the bit rate is the bus's: the emulated valve hears any rate its bus runs at, so
-        ``bitrate`` is the rate LSS stored, else the interface switch's (what the bus is
-        opened at when served).
-        """
-        baud, node = self.latched_switches
-        settings = (
-            canopen_switches.effective(
-                baud, node, self.value("NODEID"), self.value("BITRATE"), self.value("CANTERM")
-            )
-            if self.variant.canopen
-            else canopen_switches.CanSettings(False, None, None, False)
+        """Decode the switches, the interface objects and the LSS record (``interface.py``)."""
+        latched = latch(self.variant, self.latched_switches, self.value, self.nv.lss)
+        self.can_enabled, self.terminator = latched.can_enabled, latched.terminator
+        self.lss_mode, self.node_id, self.bitrate = (
+            latched.lss_mode,
+            latched.node_id,
+            latched.bitrate,
         )
-        self.can_enabled = settings.can_enabled
-        self.terminator = settings.terminator
-        self.lss_mode = self.variant.canopen and canopen_switches.node_position(node).lss
-        self.node_id = 0
-        self.bitrate = 0
-        if self.variant.canopen:
-            self.node_id = settings.node_id or self.value("NODEID")
-        if self.lss_mode:
-            stored = self.nv.lss.get("node_id", canopen_switches.LSS_UNCONFIGURED)
-            self.node_id = stored if 1 <= stored <= 127 else 0
-        if settings.can_enabled:
-            kbit = settings.bitrate_kbit or canopen_switches.baud_position(baud).bitrate_kbit
-            index = self.nv.lss.get("bit_timing")
-            if self.lss_mode and index is not None and 0 <= index < len(LSS_KBIT):
-                kbit = LSS_KBIT[index]
-            self.bitrate = (kbit or 0) * 1000
 
     @property
     def analog_only(self) -> bool:
@@ -379,20 +320,25 @@ class Firmware:
 
     def value(self, mnemonic: str) -> int:
         """Integer RAM value of a parameter; 0 if it does not exist on this variant."""
-        if not self.od.has(mnemonic):
+        param = self.od.by_mnemonic.get(mnemonic)  # od.has and od.get in one lookup
+        if param is None:
             return 0
-        value = self.od.get(mnemonic)
+        value = self.od.values[param.key]
         return value if isinstance(value, int) else 0
 
     def _refresh_inputs(self) -> None:
         loop = self.loop
         supply = self.supply
         if self.config_dirty:
-            loop.coefficients = config.coefficients(
-                self.variant, self.value, self.plant, self.fw, self.coil_temperature, supply
+            variant, plant, fw = self.variant, self.plant, self.fw
+            temperature = self.coil_temperature
+            loop.coefficients = self.coefficients_memo.get(
+                self.value,
+                (variant, plant, fw, float(temperature).hex(), float(supply).hex()),
+                lambda v: config.coefficients(variant, v, plant, fw, temperature, supply),
             )
             loop.version += 1
-            self.setp_curve = config.curve_of(self.value, "SETPLIN")
+            self.setp_curve = self.curve_memo.get(self.value, (), config.setpoint_curve)
         loop.supply_v = supply
         loop.inputs_version += 1
         thermal.update_reading(self)

@@ -96,7 +96,9 @@ class ObjectDictionary:
     # --- access ------------------------------------------------------------------------
     def read(self, index: int, subindex: int) -> Value:
         """Read with CiA 301 access rules."""
-        param = self.entry(index, subindex)
+        return self._read(self.entry(index, subindex))
+
+    def _read(self, param: Parameter) -> Value:
         key = param.key
         if param.obj_access not in _READABLE:
             raise abort(key, AbortCode.WRITE_ONLY)
@@ -108,7 +110,9 @@ class ObjectDictionary:
 
     def write(self, index: int, subindex: int, value: Value) -> None:
         """Write with CiA 301 access and range rules; runs the check and hook of the entry."""
-        param = self.entry(index, subindex)
+        self._write(self.entry(index, subindex), value)
+
+    def _write(self, param: Parameter, value: Value) -> None:
         key = param.key
         if not param.writable:
             raise abort(key, AbortCode.READ_ONLY)
@@ -127,7 +131,7 @@ class ObjectDictionary:
     def read_bytes(self, index: int, subindex: int) -> bytes:
         """Read and encode per the catalogue data type (little-endian)."""
         param = self.entry(index, subindex)
-        return param.dtype.encode(self.read(index, subindex))
+        return param.dtype.encode(self._read(param))
 
     def write_bytes(self, index: int, subindex: int, data: bytes) -> None:
         """Decode per the catalogue data type and write; wrong lengths abort."""
@@ -142,7 +146,7 @@ class ObjectDictionary:
             value = param.dtype.decode(bytes(data))
         except (struct.error, UnicodeDecodeError) as exc:
             raise abort(param.key, AbortCode.WRONG_LENGTH) from exc
-        self.write(index, subindex, value)
+        self._write(param, value)
 
 
 def validate(param: Parameter, value: Value) -> None:

@@ -100,7 +100,6 @@ class UsbFirmware:
         self._stream: _Stream | None = None
         self.outbox: deque[tuple[float, bytes]] = deque(maxlen=OUTBOX_REPORTS)
         self.internal_errors = 0  # exceptions the handler had to swallow (a bug if > 0)
-        valve.add_cycle_listener(self._on_cycle)
         valve.add_restart_listener(self._on_restart)
 
     @classmethod
@@ -273,11 +272,13 @@ class UsbFirmware:
         capacity = StreamData.capacity(len(request.codes))
         empty = np.empty((0, len(request.codes)), dtype=np.int16)
         self._stream = _Stream(request.codes, capacity, empty, oldest=self._valve.time)
+        self._valve.add_cycle_listener(self._on_cycle)  # only while streaming (see fasttick)
         return StreamStarted(capacity)
 
     def _stream_stop(self) -> None:
         if self._stream is not None:
             self._stream = None
+            self._valve.remove_cycle_listener(self._on_cycle)
             self._valve.capture_stop()
 
     def _on_cycle(self, sim_time: float) -> None:
@@ -305,7 +306,9 @@ class UsbFirmware:
     def _on_restart(self) -> None:
         self._last = None
         self._assembly = None
-        self._stream = None
+        if self._stream is not None:
+            self._stream = None
+            self._valve.remove_cycle_listener(self._on_cycle)
         self.outbox.clear()
 
 

@@ -12,6 +12,7 @@ from __future__ import annotations
 from pathlib import Path
 from typing import Any
 
+from PySide6.QtCore import QEvent
 from PySide6.QtWidgets import (
     QComboBox,
     QDialog,
@@ -66,6 +67,7 @@ class TuningWindow(QDialog):
         self.mode = QLabel()
         self.status = QLabel()
         self.status.setWordWrap(True)
+        self._ready_text = ""  # "Ready." in the language it was shown in
         self.stop_button = QPushButton()
         self.stop_button.setEnabled(False)
         self.stop_button.clicked.connect(self.stop)
@@ -218,8 +220,16 @@ class TuningWindow(QDialog):
         return Path(path) if path else None
 
     # --- texts -----------------------------------------------------------------------------------
-    def retranslate(self) -> None:
-        """Set every text in the program language."""
+    def changeEvent(self, event: QEvent) -> None:
+        """Retranslate when the program language changes (the main window keeps this window);
+        a result in the status line stays until the next test."""
+        if event.type() == QEvent.Type.LanguageChange:
+            self.retranslate(keep_status=True)
+        super().changeEvent(event)
+
+    def retranslate(self, keep_status: bool = False) -> None:
+        """Set every text in the program language (``keep_status``: the status line too only
+        while it says "Ready.")."""
         self.setWindowTitle(self.tr("Tuning and characterization"))
         self.loop.setItemText(0, self.tr("Position controller (spool)"))
         if self.loop.count() > 1:
@@ -241,7 +251,9 @@ class TuningWindow(QDialog):
             self.tabs.setTabText(k, name)
         for page in self.pages():
             page.retranslate()
-        self.status.setText(self.tr("Ready."))
+        if not keep_status or self.status.text() == self._ready_text:
+            self._ready_text = self.tr("Ready.")
+            self.status.setText(self._ready_text)
 
     def closeEvent(self, event: Any) -> None:
         if self.runner.busy:

@@ -8,6 +8,7 @@ stores in its worker thread and reports an ``UploadOutcome``.
 from __future__ import annotations
 
 from collections.abc import Callable, Mapping
+from dataclasses import dataclass
 
 from PySide6.QtCore import QObject, QTime
 from PySide6.QtWidgets import QWidget
@@ -24,6 +25,16 @@ from prm9tool.translate import translated
 from prm9tool.views import prompts
 from prm9tool.views.history_policy import may_upload
 from prm9tool.views.operation_progress import OperationProgress
+
+
+@dataclass(frozen=True)
+class StoredUpload:
+    """The last upload the valve stored: the parameters it sent, how the valve kept them
+    (prm9tool.device.canlink.storing; None: the link's store command) and how many it wrote."""
+
+    mnemonics: frozenset[str]
+    store: str | None
+    written: int
 
 
 class ValveUpload(QObject):
@@ -51,6 +62,9 @@ class ValveUpload(QObject):
         self._pending: dict[str, Raw] = {}
         self._purpose = ""  # what the running upload is for, in the history
         self._uploading: dict[str, Raw] = {}  # the values of the running upload
+        # the last upload stored while online: what it wrote and how (Verify by restart…)
+        self.last_stored: StoredUpload | None = None
+        connection.online_changed.connect(self._on_connection_online_changed)
 
     def upload(self, key: TypeKey, valve_values: Mapping[str, Raw] | None = None) -> bool:
         """Write the document into the valve of type ``key`` (backup first, then write →
@@ -152,7 +166,13 @@ class ValveUpload(QObject):
         else:
             self._report_failure(outcome)
 
+    def _on_connection_online_changed(self, online: bool) -> None:
+        if not online:
+            self.last_stored = None  # a restart verification is of this online session's upload
+
     def _on_stored(self, outcome: UploadOutcome) -> None:
+        store = getattr(outcome, "store", None)
+        self.last_stored = StoredUpload(frozenset(self._uploading), store, outcome.written)
         # values not from the document (a history record) become the document's too
         written = {m: v for m, v in self._uploading.items() if self._doc.values.get(m) != v}
         if written:
@@ -170,8 +190,15 @@ class ValveUpload(QObject):
                 "",
                 count,
             )
-        how = self._store_texts().get(getattr(outcome, "store", None) or "")
-        self._post(message.format(at) + (f" ({how})" if how else ""))
+        how = self._store_texts().get(store or "")
+        hint = ""
+        if store == KEPT_AS_WRITTEN:  # no store command: a restart shows that it really keeps them
+            hint = self.tr("; Valve → Verify by restart… checks that it keeps them")
+        self._post(message.format(at) + (f" ({how})" if how else "") + hint)
+
+    def store_text(self, store: str | None) -> str:
+        """How the valve kept the set, in the program language ("" when not over CANopen)."""
+        return self._store_texts().get(store or "", "")
 
     def _store_texts(self) -> dict[str, str]:
         """How the valve kept the set, as prm9tool.device.canlink.storing names it."""

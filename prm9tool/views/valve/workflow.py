@@ -27,6 +27,7 @@ from prm9tool.views import prompts
 from prm9tool.views.online_dialogs import DiffChoice, OnlineDiffDialog, RestartDialog
 from prm9tool.views.operation_progress import OperationProgress
 from prm9tool.views.valve.finder import ValveFinder
+from prm9tool.views.valve.restart_check import VERIFY_RESTART, RestartVerifier
 from prm9tool.views.valve.upload import ValveUpload
 
 COMPARE = "compare"  # download made on going online, to compare with the document
@@ -61,6 +62,9 @@ class ValveWorkflow(QObject):
             window, doc, connection, sync, self.progress, self.message_posted.emit, access
         )
         self.finder = ValveFinder(window, connection, settings, self.message_posted.emit)
+        self.verifier = RestartVerifier(window, doc, connection, sync, self.uploads,
+                                        self.progress, self.message_posted.emit,
+                                        self._on_compare_finished)  # fmt: skip
         self._restarted_from = ""  # device ID before the restart (a restart may move it)
         # "choose per parameter" in the going-online dialog (the compare workflow sets it)
         self.choose_per_parameter: Callable[[Mapping[str, Raw]], None] | None = None
@@ -71,6 +75,7 @@ class ValveWorkflow(QObject):
         connection.lost.connect(self._on_connection_lost)
         connection.reconnected.connect(self._on_connection_reconnected)
         connection.other_valve.connect(self._on_connection_other_valve)
+        connection.generator_undone.connect(self._on_generator_undone)
         self._back = False  # the valve came back by itself: the comparison says "back online"
         connection.live_values_changed.connect(doc.set_live)
         connection.write_failed.connect(sync.forget)
@@ -303,6 +308,10 @@ class ValveWorkflow(QObject):
         self.progress.start("restart", self.tr("Restarting the valve…"), cancellable=False)
         self._connection.run_job(AFTER_RESTART, _restart_and_read)
 
+    def verify_by_restart(self) -> bool:
+        """Valve → Verify by restart… (``RestartVerifier.start``)."""
+        return self.verifier.start()
+
     # --- results ------------------------------------------------------------------------------------
     def _on_connection_operation_finished(self, name: str, result: object) -> None:
         self.progress.close()
@@ -320,6 +329,8 @@ class ValveWorkflow(QObject):
             self._on_compare_finished(result)
         elif name == "upload":
             self.uploads.finished(result)
+        elif name == VERIFY_RESTART:
+            self.verifier.finished(result)
         elif name == "store":
             self._sync.unstored = False
             at = QTime.currentTime().toString("HH:mm:ss")
@@ -345,6 +356,7 @@ class ValveWorkflow(QObject):
         )
 
     def _on_factory_reset(self, result: _FactoryReset) -> None:
+        self.uploads.last_stored = None  # the valve no longer holds the last upload
         self.take_valve_values(result.values, self.tr("Factory values of the valve"))
         self._connection.record("restore-factory", "ok", result.values, {"backup": result.backup})
         if result.backup is not None:
@@ -359,12 +371,15 @@ class ValveWorkflow(QObject):
 
     def _on_connection_failed(self, message: str) -> None:
         self.progress.close()
+        self.verifier.failed()
         self.message_posted.emit(message)
         prompts.inform(self._window, prompts.Icon.Warning, self.tr("Valve communication"), message)
 
     def _on_connection_lost(self, message: str) -> None:
         busy = self._connection.lost_during_operation  # an upload, download, … was cut off
         self.progress.close()
+        if self.verifier.lost(message):
+            return
         if self._connection.is_reconnecting and not busy:
             self.message_posted.emit(
                 self.tr("Connection to the valve lost; looking for it… ({0})").format(message)
@@ -395,6 +410,14 @@ class ValveWorkflow(QObject):
             self.tr("The valve {0} is back online; reading its parameters…").format(
                 getattr(info, "serial", "")
             )
+        )
+
+    def _on_generator_undone(self, names: list[str]) -> None:
+        self.message_posted.emit(
+            self.tr(
+                "The valve is open again: what the setpoint generator cut off with the link had "
+                "changed is as before ({0})"
+            ).format(", ".join(names))
         )
 
     def _on_connection_other_valve(self, lost: int, found: int, device_id: str) -> None:

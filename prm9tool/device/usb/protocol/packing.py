@@ -16,7 +16,6 @@ from prm9tool.device.usb.protocol.requests import (
     ReadEntries,
     SegmentWrite,
     WriteEntries,
-    runs,
 )
 from prm9tool.device.usb.protocol.wire import BODY_SIZE
 
@@ -27,8 +26,28 @@ READ_ENTRY_OVERHEAD = 1  # length byte in the answer
 WRITE_ENTRY_OVERHEAD = 1  # length byte in the request
 
 
-def _runs_bytes(keys: list[tuple[int, int]], per_entry: list[int]) -> int:
-    return RUN_HEADER * len(runs(keys)) + sum(per_entry)
+class _RunCount:
+    """The runs of a growing address list, counted as addresses are added (as :func:`runs`
+    groups them), so that packing stays linear in the number of entries."""
+
+    def __init__(self) -> None:
+        self.count = 0
+        self._last = (-1, 0, 0)  # index, first subindex, count of the last run
+
+    def after(self, index: int, subindex: int) -> int:
+        """Runs the list would have with ``(index, subindex)`` appended."""
+        last_index, first, count = self._last
+        extends = last_index == index and first + count == subindex and count < 255
+        return self.count if extends else self.count + 1
+
+    def add(self, index: int, subindex: int) -> None:
+        """Append ``(index, subindex)``."""
+        last_index, first, count = self._last
+        if last_index == index and first + count == subindex and count < 255:
+            self._last = (index, first, count + 1)
+        else:
+            self._last = (index, subindex, 1)
+            self.count += 1
 
 
 def pack_reads(items: Sequence[tuple[int, int, int]]) -> list[ReadEntries]:
@@ -39,20 +58,22 @@ def pack_reads(items: Sequence[tuple[int, int, int]]) -> list[ReadEntries]:
     """
     batches: list[ReadEntries] = []
     keys: list[tuple[int, int]] = []
+    runs_ = _RunCount()
     answer = 0
     for index, subindex, size in items:
         need = READ_ENTRY_OVERHEAD + size
         if need > READ_ANSWER_ROOM:
             raise ValueError(f"0x{index:04X}/{subindex}: {size} bytes need a segmented read")
-        trial = [*keys, (index, subindex)]
         if keys and (
             answer + need > READ_ANSWER_ROOM
-            or len(runs(trial)) > MAX_RUNS
-            or len(trial) > MAX_READ_ENTRIES
+            or runs_.after(index, subindex) > MAX_RUNS
+            or len(keys) + 1 > MAX_READ_ENTRIES
         ):
             batches.append(ReadEntries(tuple(keys)))
-            keys, answer, trial = [], 0, [(index, subindex)]
-        keys, answer = trial, answer + need
+            keys, answer, runs_ = [], 0, _RunCount()
+        keys.append((index, subindex))
+        runs_.add(index, subindex)
+        answer += need
     if keys:
         batches.append(ReadEntries(tuple(keys)))
     return batches
@@ -62,22 +83,22 @@ def pack_writes(entries: Sequence[tuple[int, int, bytes]]) -> list[WriteEntries]
     """WRITE requests for ``(index, subindex, encoded value)`` entries, in order."""
     batches: list[WriteEntries] = []
     current: list[tuple[int, int, bytes]] = []
+    runs_ = _RunCount()
+    data_bytes = 0  # length byte + data of the entries in ``current``
     for index, subindex, data in entries:
-        if RUN_HEADER + WRITE_ENTRY_OVERHEAD + len(data) > REQUEST_ROOM:
+        need = WRITE_ENTRY_OVERHEAD + len(data)
+        if RUN_HEADER + need > REQUEST_ROOM:
             raise ValueError(f"0x{index:04X}/{subindex}: {len(data)} bytes need a segmented write")
-        trial = [*current, (index, subindex, data)]
-        if current and _write_size(trial) > REQUEST_ROOM:
+        size = RUN_HEADER * runs_.after(index, subindex) + data_bytes + need
+        if current and size > REQUEST_ROOM:
             batches.append(WriteEntries(tuple(current)))
-            trial = [(index, subindex, data)]
-        current = trial
+            current, data_bytes, runs_ = [], 0, _RunCount()
+        current.append((index, subindex, data))
+        runs_.add(index, subindex)
+        data_bytes += need
     if current:
         batches.append(WriteEntries(tuple(current)))
     return batches
-
-
-def _write_size(entries: list[tuple[int, int, bytes]]) -> int:
-    keys = [(index, subindex) for index, subindex, _ in entries]
-    return _runs_bytes(keys, [WRITE_ENTRY_OVERHEAD + len(d) for _, _, d in entries])
 
 
 def segments(index: int, subindex: int, data: bytes) -> list[SegmentWrite]:

@@ -9,6 +9,8 @@ from prm9tool.errors import ProtocolError
 REPORT_SIZE = 64  # USB full-speed HID interrupt report
 HEADER_SIZE = 2  # opcode, sequence number
 BODY_SIZE = REPORT_SIZE - HEADER_SIZE  # 62
+_FIELDS = {fmt: struct.Struct("<" + fmt) for fmt in "BHhI"}  # compiled once: a report is
+_B, _H, _h, _I = (_FIELDS[fmt] for fmt in "BHhI")  # built and parsed field by field
 
 
 class MalformedReportError(ProtocolError):
@@ -26,28 +28,28 @@ class Writer:
     def __init__(self) -> None:
         self._data = bytearray()
 
-    def _pack(self, fmt: str, value: int) -> Writer:
+    def _pack(self, field: struct.Struct, value: int) -> Writer:
         try:
-            self._data += struct.pack("<" + fmt, value)
+            self._data += field.pack(value)
         except struct.error as exc:
             raise ValueError(f"{value!r} does not fit the field ({exc})") from None
         return self
 
     def u8(self, value: int) -> Writer:
         """Append an unsigned byte."""
-        return self._pack("B", value)
+        return self._pack(_B, value)
 
     def u16(self, value: int) -> Writer:
         """Append an unsigned 16-bit number."""
-        return self._pack("H", value)
+        return self._pack(_H, value)
 
     def i16(self, value: int) -> Writer:
         """Append a signed 16-bit number."""
-        return self._pack("h", value)
+        return self._pack(_h, value)
 
     def u32(self, value: int) -> Writer:
         """Append an unsigned 32-bit number."""
-        return self._pack("I", value)
+        return self._pack(_I, value)
 
     def raw(self, data: bytes) -> Writer:
         """Append bytes as they are."""
@@ -75,25 +77,33 @@ class Reader:
         self._data = bytes(data)
         self._pos = 0
 
-    def _unpack(self, fmt: str, size: int) -> int:
-        chunk = self.raw(size)
-        return int(struct.unpack("<" + fmt, chunk)[0])
+    def _unpack(self, field: struct.Struct) -> int:
+        position = self._pos
+        end = position + field.size
+        if end > len(self._data):
+            raise MalformedReportError(f"field at byte {position} runs past the end of the report")
+        self._pos = end
+        return int(field.unpack_from(self._data, position)[0])
 
     def u8(self) -> int:
         """Next unsigned byte."""
-        return self._unpack("B", 1)
+        position = self._pos
+        if position >= len(self._data):
+            raise MalformedReportError(f"field at byte {position} runs past the end of the report")
+        self._pos = position + 1
+        return self._data[position]
 
     def u16(self) -> int:
         """Next unsigned 16-bit number."""
-        return self._unpack("H", 2)
+        return self._unpack(_H)
 
     def i16(self) -> int:
         """Next signed 16-bit number."""
-        return self._unpack("h", 2)
+        return self._unpack(_h)
 
     def u32(self) -> int:
         """Next unsigned 32-bit number."""
-        return self._unpack("I", 4)
+        return self._unpack(_I)
 
     def raw(self, size: int) -> bytes:
         """Next ``size`` bytes."""

@@ -25,7 +25,6 @@ if TYPE_CHECKING:
     from prm9tool.device.emulator import EmulatedValve
 
 SLOT_S = 0.001  # one USB full-speed frame
-_SPIN_S = 0.0005
 
 
 @dataclass(frozen=True)
@@ -152,7 +151,7 @@ class EmulatorTransport(Transport):
     def _wait_until(self, moment: float) -> None:
         if self.paced:
             while (remaining := moment - self._now()) > 0:
-                time.sleep(min(remaining, _SPIN_S))
+                time.sleep(remaining)  # one wake-up per wait (the GIL is free meanwhile)
         self._clock = max(self._clock, moment)
         if self.valve.running:  # the valve's own real-time thread moves the simulation
             self._stepped_to = self._clock

@@ -6,7 +6,7 @@ state. LEDs 2 and 3 exist only on -CA valves (§5.5); on other valves they read 
 
 from __future__ import annotations
 
-from prm9tool.device.emulator.faults import CAN_ERROR_KEYS, NOTICE_KEYS, ErrorKind
+from prm9tool.catalogue.error_kinds import CAN_ERROR_KEYS, NOTICE_KEYS, ErrorKind
 from prm9tool.device.records import LED_OFF, LedState, NmtState
 
 # (on, off) sequences in seconds; a pattern repeats with its period (CiA 303-3 timing).

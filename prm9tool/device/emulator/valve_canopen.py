@@ -1,0 +1,158 @@
+"""The emulated valve's CANopen side: what its CANopen slave (``canopen_slave.py``) and its
+LSS slave use of it — SDO access as the chosen object dictionary answers it, the node ID and
+bit rate latched at power-up, LSS, NMT and the slave's hooks into the firmware.
+
+A mixin of :class:`~prm9tool.device.emulator.valve.EmulatedValve` (API contract:
+docs/emulator.md); every method takes the valve's lock like the rest of it.
+"""
+
+from __future__ import annotations
+
+import threading
+from collections.abc import Callable
+from typing import TYPE_CHECKING
+
+from prm9tool.catalogue.commissioning import NmtCommand
+from prm9tool.device.emulator import manual_od
+from prm9tool.errors import ValueRangeError
+
+if TYPE_CHECKING:
+    from prm9tool.device.emulator.firmware import Firmware
+
+_NMT_EVENTS: dict[int, str] = {  # CiA 301 command specifier -> NMT event (nmt.NMT_EVENTS)
+    NmtCommand.START: "operational",
+    NmtCommand.STOP: "stopped",
+    NmtCommand.PRE_OPERATIONAL: "preoperational",
+    NmtCommand.RESET_NODE: "reset_node",
+    NmtCommand.RESET_COMMUNICATION: "reset_comm",
+}
+
+
+class CanopenSide:
+    """SDO access, node ID, bit rate, LSS and NMT of an emulated valve (a mixin)."""
+
+    lock: threading.RLock
+    od: str  # manual_od.FULL or manual_od.MANUAL
+    _fw: Firmware
+    _restart_listeners: list[Callable[[], None]]
+    _nmt_handler: Callable[[int], None] | None
+
+    def restart(self) -> None:
+        """Power cycle (the valve's own: :meth:`EmulatedValve.restart`)."""
+        raise NotImplementedError
+
+    def can_read_bytes(self, index: int, subindex: int) -> bytes:
+        """An SDO upload: :meth:`read_bytes` as this valve's CANopen interface answers it."""
+        with self.lock:
+            if self.od == manual_od.MANUAL:
+                return manual_od.read_bytes(self._fw, index, subindex)
+            return self._fw.od.read_bytes(index, subindex)
+
+    def can_write_bytes(self, index: int, subindex: int, data: bytes) -> None:
+        """An SDO download: :meth:`write_bytes` as this valve's CANopen interface takes it."""
+        with self.lock:
+            if self.od == manual_od.MANUAL:
+                manual_od.write_bytes(self._fw, index, subindex, data)
+            else:
+                self._fw.od.write_bytes(index, subindex, data)
+
+    @property
+    def node_id(self) -> int:
+        """CANopen node ID latched at power-up (0 on a valve without -CA)."""
+        return self._fw.node_id
+
+    @property
+    def bitrate(self) -> int:
+        """CAN bit rate latched at power-up in bit/s (0 when CANopen is off)."""
+        return self._fw.bitrate
+
+    @property
+    def can_enabled(self) -> bool:
+        """True on a -CA valve whose interface switch enables CANopen."""
+        return self._fw.can_enabled
+
+    @property
+    def lss_mode(self) -> bool:
+        """Node-ID switch at 1 at power-up: node ID by LSS, automatic bit rate (table 7-17)."""
+        return self._fw.lss_mode
+
+    def lss_assign(self, node_id: int) -> None:
+        """Take ``node_id`` given by an LSS master now: node-relative communication objects
+        follow it as at NMT reset communication."""
+        with self.lock:
+            self._fw.node_id = node_id
+            self._fw.reset_communication()
+
+    def lss_bit_timing(self, index: int) -> None:
+        """CiA 305 activate bit timing: run at the rate of table-0 index ``index`` now."""
+        from prm9tool.catalogue.canopen_switches import LSS_BIT_TIMINGS_KBIT
+
+        with self.lock:
+            self._fw.bitrate = LSS_BIT_TIMINGS_KBIT[index] * 1000
+
+    def lss_store(self, node_id: int, bit_timing: int | None) -> None:
+        """CiA 305 store configuration: the LSS record of the NV image (OSError if it fails)."""
+        from prm9tool.catalogue.canopen_switches import LSS_BIT_TIMINGS_KBIT
+
+        with self.lock:
+            record = dict(self._fw.nv.lss)
+            record["node_id"] = node_id
+            if bit_timing is not None:
+                record["bit_timing"] = bit_timing
+            elif "bit_timing" not in record and self._fw.bitrate // 1000 in LSS_BIT_TIMINGS_KBIT:
+                record["bit_timing"] = LSS_BIT_TIMINGS_KBIT.index(self._fw.bitrate // 1000)
+            self._fw.nv.replace_lss(record)
+
+    # --- hooks for the CANopen slave --------------------------------------------------
+    def add_cycle_listener(self, fn: Callable[[float], None]) -> None:
+        """``fn(sim_time)`` every 1 ms of simulated time (loop thread, lock held)."""
+        with self.lock:  # a new list: a listener may add or remove one while they are called
+            self._fw.cycle_listeners = [*self._fw.cycle_listeners, fn]
+
+    def remove_cycle_listener(self, fn: Callable[[float], None]) -> None:
+        """Stop calling ``fn`` (no error if it is not registered). Without listeners, the
+        compiled kernel may pass the 1 ms tasks that change nothing itself (fasttick)."""
+        with self.lock:
+            self._fw.cycle_listeners = [f for f in self._fw.cycle_listeners if f != fn]
+
+    def add_error_listener(self, fn: Callable[[int, int], None]) -> None:
+        """``fn(emcy_code, error_register)`` on every change of the active error set."""
+        with self.lock:
+            self._fw.faults.listeners.append(fn)
+
+    def add_restart_listener(self, fn: Callable[[], None]) -> None:
+        """``fn()`` after every power cycle."""
+        with self.lock:
+            self._restart_listeners.append(fn)
+
+    def nmt_event(self, event: str) -> None:
+        """NMT state change reported by the CANopen slave (coupling: manual table 7-21)."""
+        from prm9tool.device.emulator.nmt import apply_nmt_event
+
+        with self.lock:
+            if event == "reset_node":
+                self._fw.sm.deactivate()
+                self.restart()
+                return
+            apply_nmt_event(self._fw, event)
+
+    def nmt_command(self, command: int) -> None:
+        """An NMT command for this valve from its USB side (CiA 301 command specifier).
+
+        With the valve on a CAN bus its CANopen slave takes it as if the master had sent it
+        to the valve's node (the slave's NMT state, PDOs and heartbeat follow); otherwise the
+        firmware's NMT state changes directly. Ignored while CANopen is switched off.
+        """
+        event = _NMT_EVENTS.get(int(command))
+        if event is None:
+            raise ValueRangeError(f"unknown NMT command 0x{int(command):02X}")
+        with self.lock:
+            if self._nmt_handler is not None:
+                self._nmt_handler(int(command))
+            elif self.can_enabled and not self._fw.booting:
+                self.nmt_event(event)
+
+    def set_nmt_handler(self, handler: Callable[[int], None] | None) -> None:
+        """The CANopen slave takes the NMT commands of :meth:`nmt_command` (None: it left)."""
+        with self.lock:
+            self._nmt_handler = handler

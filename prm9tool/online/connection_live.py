@@ -1,0 +1,144 @@
+"""The live side of the valve connection: the oscilloscope stream, the setpoint generator and
+the measuring points and read-only values the worker polls between jobs.
+
+:class:`LiveData` is a mixin of :class:`~prm9tool.online.connection.ValveConnection`: its
+signals and GUI-side state (the running stream's keys, its lost samples, whether a generator
+runs) belong to the connection, and its commands queue jobs on the connection's worker like
+every other command. They end with the link: :meth:`LiveData._forget_live` when the session
+closes or breaks (the oscilloscope restarts its own stream once a lost valve is back; the
+generator writes setpoints, so only the user starts it again). QtCore only.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+from typing import TYPE_CHECKING
+
+from PySide6.QtCore import QObject, Signal
+
+from prm9tool.online.connection_worker import Job
+from prm9tool.online.setpoint_driver import GENERATOR_OBJECTS
+
+if TYPE_CHECKING:
+    from prm9tool.device.session import ValveSession
+    from prm9tool.online.connection_worker import ConnectionWorker
+    from prm9tool.scope import GeneratorSettings  # not at run time: numpy, at start-up
+
+    _Base = QObject  # for the type checker: the connection it is mixed into is a QObject
+else:
+    _Base = object
+
+OVERRIDE_OBJECTS = tuple(sorted(GENERATOR_OBJECTS))  # a refused generator start names these
+
+
+class LiveData(_Base):
+    """Stream, generator and polled values of a connection (mixed into ValveConnection)."""
+
+    live_values_changed = Signal(dict)  # {mnemonic: raw}
+    signal_values_changed = Signal(dict)  # {measuring-point key: raw}
+    samples_received = Signal(object)  # numpy (n, k) raw block, in stream key order
+    stream_started = Signal(list)
+    stream_stopped = Signal()
+    samples_lost_changed = Signal(int)  # samples the oscilloscope stream lost since it started
+    # a generator cut off with its session had changed these; the same valve open again, they
+    # were written back (over CANopen: the RPDO1 deadline 0x1400/5 it armed)
+    generator_undone = Signal(list)
+
+    if TYPE_CHECKING:  # the connection's, used here
+        write_failed = Signal(list)
+        _worker: ConnectionWorker
+
+        def _submit(self, job: Job) -> None: ...
+
+    def _init_live(self) -> None:
+        self._stream_keys: list[str] = []  # GUI-side: keys of the running stream
+        self._generator = False  # GUI-side: a setpoint generator was started and not stopped
+        self._samples_lost = 0  # GUI-side: lost samples of the running stream
+
+    @property
+    def streaming_keys(self) -> list[str]:
+        """The measuring points of the running stream ([] when none runs)."""
+        return list(self._stream_keys)
+
+    @property
+    def samples_lost(self) -> int:
+        """Samples the running oscilloscope stream lost since it started (gaps in its sequence
+        numbers: the link or the host could not keep up); 0 when no stream runs."""
+        return self._samples_lost
+
+    def start_stream(self, keys: Sequence[str], rate_hz: int) -> None:
+        """Stream up to three measuring points; samples arrive as ``samples_received``."""
+        names = list(keys)
+
+        def run(session: ValveSession) -> list[str]:
+            started = self._worker.poller.start_stream(session, names, rate_hz)
+            self._worker.clock.restart(rate_hz)
+            return started
+
+        self._submit(Job("stream_start", run, self._on_stream_started, False))
+
+    def stop_stream(self) -> None:
+        """Stop the stream (``stream_stopped`` follows)."""
+        self._submit(
+            Job("stream_stop", self._worker.poller.stop_stream, self._on_stream_stopped, False)
+        )
+
+    def start_generator(self, settings: GeneratorSettings) -> None:
+        """Run the setpoint generator's waveform on the valve's setpoint, off the GUI thread
+        and on the valve's time base (:mod:`prm9tool.online.setpoint_driver`): the override
+        over USB, RPDO1 over CANopen. A refused write arrives as ``failed`` and
+        ``write_failed``."""
+
+        def refused() -> None:
+            self._generator = False
+            self.write_failed.emit(list(OVERRIDE_OBJECTS))
+
+        run = lambda s: self._worker.start_driver(s, settings)  # noqa: E731
+        self._generator = True
+        self._submit(Job("generator", run, None, False, refused))
+
+    @property
+    def generator_running(self) -> bool:
+        """True from start_generator until stop_generator, a refusal or the link's end (what
+        the Tuning window tells the user a test will stop)."""
+        return self._generator
+
+    def stop_generator(self) -> None:
+        """End the waveform and give the setpoint back (SETPOVRON = 0; over CANopen the
+        RPDO1 setpoint from before the generator)."""
+        refused = lambda: self.write_failed.emit(["SETPOVRON"])  # noqa: E731
+        run = lambda s: self._worker.stop_driver(s, switch_off=True)  # noqa: E731
+        self._generator = False
+        self._submit(Job("generator_stop", run, None, False, refused))
+
+    def watch_signals(self, keys: Sequence[str]) -> None:
+        """Measuring points whose values ``signal_values_changed`` carries (≈ 4 Hz)."""
+        self._worker.poller.watched = list(keys)
+
+    def watch_live(self, mnemonics: Sequence[str]) -> None:
+        """Read-only values polled for ``live_values_changed`` (default: the variant's)."""
+        self._worker.poller.live = list(mnemonics)
+        self._worker.poller.live_explicit = True
+
+    def _forget_live(self) -> None:
+        """The session ended (closed or broken): no generator runs, the stream has stopped."""
+        self._generator = False
+        if self._stream_keys:
+            self._stream_keys = []
+            self._set_samples_lost(0)
+            self.stream_stopped.emit()
+
+    def _on_stream_started(self, keys: object) -> None:
+        self._stream_keys = list(keys)  # type: ignore[call-overload]
+        self._set_samples_lost(0)
+        self.stream_started.emit(self._stream_keys)
+
+    def _on_stream_stopped(self, _result: object) -> None:
+        self._stream_keys = []
+        self._set_samples_lost(0)
+        self.stream_stopped.emit()
+
+    def _set_samples_lost(self, count: int) -> None:
+        if count != self._samples_lost:
+            self._samples_lost = count
+            self.samples_lost_changed.emit(count)
