@@ -33,12 +33,12 @@ STAMP = ROOT / "prm9tool" / "_build_stamp.py"
 SPEC = ROOT / "tools" / "prm9tool.spec"
 LAUNCHER = ROOT / "tools" / "onefile_launcher.py"
 sys.path.insert(0, str(ROOT / "tools"))
-from onefile_launcher import MAGIC, TRAILER  # noqa: E402
+from onefile_launcher import MAGIC, TRAILER, file_digest  # noqa: E402
 
 # xz preset of the one file's payload: 1 packs ~20 % smaller than PyInstaller's zlib and in
 # about the time zlib takes; higher presets gain 4 % for three times the build time
 XZ_PRESET = 1
-# the launcher needs the Python runtime and these only (tarfile, lzma, hashlib's own SHA-256)
+# the launcher needs the Python runtime and these only (tarfile, lzma, hashlib's own BLAKE2b)
 LAUNCHER_EXCLUDES = ("_hashlib", "_ssl", "ssl", "_bz2", "bz2", "_decimal", "decimal",
                      "unittest", "pydoc", "multiprocessing")  # fmt: skip
 
@@ -86,14 +86,14 @@ def _pyinstaller(script: Path, dist: Path, work: Path, icon: Path | None) -> int
 
 def _pack(launcher: Path, folder: Path, target: Path) -> None:
     """``target`` = the launcher carrying the folder as an xz tarball, its manifest (every file's
-    size and SHA-256) and a trailer saying where they are."""
+    size and BLAKE2b digest) and a trailer saying where they are."""
     files: dict[str, list] = {}
     for path in sorted(folder.rglob("*")):
         name = path.relative_to(folder).as_posix()
         if path.is_symlink():
             files[name] = [len(os.fsencode(os.readlink(path))), os.readlink(path)]
         elif path.is_file():
-            files[name] = [path.stat().st_size, hashlib.sha256(path.read_bytes()).hexdigest()]
+            files[name] = [path.stat().st_size, file_digest(path)]
     identity = hashlib.sha256(json.dumps(files, sort_keys=True).encode()).hexdigest()[:32]
     manifest = json.dumps({"id": identity, "program": _program_name(), "files": files}).encode()
     target.parent.mkdir(parents=True, exist_ok=True)

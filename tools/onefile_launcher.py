@@ -2,7 +2,7 @@
 
 ``tools/build_executable.py`` builds this file with PyInstaller (``tools/launcher.spec``: the
 Python runtime only, a few MB) and appends the one-folder build of prm9tool to it as an xz
-tarball, followed by a manifest (every file's path, size and SHA-256) and a trailer. At start:
+tarball, followed by a manifest (every file's path, size and BLAKE2b digest) and a trailer. At start:
 
 1. The cache folder is ``$PRM9TOOL_EXE_CACHE`` or the user's cache folder
    (``~/.cache/prm9tool/exe``, ``%LOCALAPPDATA%\\prm9tool\\exe``, ``~/Library/Caches/…``), one
@@ -11,7 +11,7 @@ tarball, followed by a manifest (every file's path, size and SHA-256) and a trai
    no symbolic link); otherwise the program unpacks into a private temporary folder, deleted at
    exit — PyInstaller's own one-file behaviour.
 3. The first start unpacks into a temporary folder beside it, checks every file against the
-   manifest's SHA-256, records each file's size and modification time, and renames the folder
+   manifest's digest, records each file's size and modification time, and renames the folder
    into place (atomic: a start running alongside sees the whole folder or none).
 4. Every later start checks that the folder holds exactly the manifest's files with the
    recorded size and time and no write permission for others; any difference (a file changed,
@@ -181,7 +181,7 @@ def unpack(exe: Path, offset: int, size: int, target: Path, manifest: dict) -> N
         if stat.S_ISLNK(info.st_mode):
             if os.readlink(path) != digest:
                 raise LaunchError(f"{name} in {exe} is damaged")
-        elif info.st_size != length or _sha256(path) != digest:
+        elif info.st_size != length or file_digest(path) != digest:
             raise LaunchError(f"{name} in {exe} is damaged (copy it again)")
         record[name] = [info.st_size, info.st_mtime_ns]
     (target / VERIFIED).write_text(json.dumps({"id": manifest["id"], "files": record}))
@@ -274,8 +274,9 @@ def entries(folder: Path) -> dict[str, os.stat_result]:
     return found
 
 
-def _sha256(path: Path) -> str:
-    digest = hashlib.sha256()
+def file_digest(path: Path) -> str:
+    """BLAKE2b-256 of a file: Python's own, fast without OpenSSL (the launcher carries none)."""
+    digest = hashlib.blake2b(digest_size=32)
     with path.open("rb") as file:
         while chunk := file.read(1 << 20):
             digest.update(chunk)
