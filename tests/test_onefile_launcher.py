@@ -8,6 +8,7 @@ from __future__ import annotations
 import importlib
 import os
 import sys
+import time
 from pathlib import Path
 
 import pytest
@@ -111,3 +112,18 @@ def test_a_file_without_payload_says_so(tmp_path: Path) -> None:
     plain.write_bytes(b"\0" * 100)
     with pytest.raises(launcher.LaunchError, match="carries no program"):
         launcher.read_manifest(plain)
+
+
+def test_other_builds_unused_for_30_days_are_removed(packed: Path, tmp_path: Path) -> None:
+    root = tmp_path / "cache"
+    root.mkdir(mode=0o700)
+    folder = _start(packed, root)
+    assert folder is not None
+    old, recent = root / ("0" * 32), root / ("1" * 32)
+    for other in (old, recent):
+        other.mkdir()
+        (other / launcher.VERIFIED).write_text("{}")
+    month_ago = time.time() - 31 * 86400
+    os.utime(old / launcher.VERIFIED, (month_ago, month_ago))
+    launcher.prune(root, keep=folder.name)
+    assert sorted(p.name for p in root.iterdir()) == sorted([folder.name, recent.name])

@@ -217,24 +217,32 @@ def verified(folder: Path, manifest: dict) -> bool:
 def prune(root: Path, keep: str) -> None:
     """Remove other builds' folders not checked for 30 days (an old copy re-unpacks if used)."""
     now = time.time()
-    os.utime(root / keep / VERIFIED)
-    for entry in root.iterdir():
-        if entry.name == keep or entry.is_symlink():
-            continue
-        try:
-            age = now - (entry / VERIFIED).stat().st_mtime
-        except OSError:
-            age = now - entry.lstat().st_mtime  # an unpacking that never finished
-        if age > PRUNE_AFTER_S:
-            _remove(entry)
+    try:
+        os.utime(root / keep / VERIFIED)
+        for entry in root.iterdir():
+            if entry.name == keep or entry.is_symlink():
+                continue
+            try:
+                age = now - (entry / VERIFIED).stat().st_mtime
+            except OSError:
+                age = now - entry.lstat().st_mtime  # an unpacking that never finished
+            if age > PRUNE_AFTER_S:
+                _remove(entry)
+    except OSError:
+        pass  # tidying up is not worth failing the start for
 
 
 def run(program: Path) -> int:
     """Replace this process with ``program`` (Windows: run it and return its exit code)."""
     argv = [str(program), *sys.argv[1:]]
-    if os.name == "posix":
-        os.execve(program, argv, program_environment())
-    return subprocess.call(argv, env=program_environment())
+    try:
+        if os.name == "posix":
+            os.execve(program, argv, program_environment())
+        return subprocess.call(argv, env=program_environment())
+    except OSError as exc:  # e.g. a cache on a file system mounted noexec
+        raise LaunchError(
+            f"cannot start {program}: {exc} (PRM9TOOL_EXE_CACHE=<folder> unpacks it elsewhere)"
+        ) from exc
 
 
 def run_from_temporary(exe: Path, manifest: dict, offset: int, size: int) -> int:
