@@ -127,3 +127,18 @@ def test_other_builds_unused_for_30_days_are_removed(packed: Path, tmp_path: Pat
     os.utime(old / launcher.VERIFIED, (month_ago, month_ago))
     launcher.prune(root, keep=folder.name)
     assert sorted(p.name for p in root.iterdir()) == sorted([folder.name, recent.name])
+
+
+def test_a_group_writable_umask_does_not_make_every_start_unpack(
+    packed: Path, tmp_path: Path
+) -> None:
+    root = tmp_path / "cache"
+    root.mkdir(mode=0o700)
+    previous = os.umask(0o002)
+    try:
+        folder = _start(packed, root)
+        assert folder is not None
+        assert launcher.verified(folder, launcher.read_manifest(packed)[0])
+    finally:
+        os.umask(previous)
+    assert not (folder / "_internal").stat().st_mode & 0o022

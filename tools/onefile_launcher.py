@@ -1,8 +1,9 @@
 """The single executable's launcher: unpacks the program once into a private, verified cache.
 
-``tools/build_executable.py`` builds this file with PyInstaller (``tools/launcher.spec``: the
-Python runtime only, a few MB) and appends the one-folder build of prm9tool to it as an xz
-tarball, followed by a manifest (every file's path, size and BLAKE2b digest) and a trailer. At start:
+``tools/build_executable.py`` builds this file with PyInstaller (a one-file program of the
+Python runtime only, 14 MB) and adds the one-folder build of prm9tool to it as an xz tarball,
+followed by a manifest (every file's path, size and BLAKE2b digest) and a trailer; on Linux all
+of it sits in the ELF section ``prm9payload``. At start:
 
 1. The cache folder is ``$PRM9TOOL_EXE_CACHE`` or the user's cache folder
    (``~/.cache/prm9tool/exe``, ``%LOCALAPPDATA%\\prm9tool\\exe``, ``~/Library/Caches/…``), one
@@ -167,6 +168,10 @@ def unpack(exe: Path, offset: int, size: int, target: Path, manifest: dict) -> N
             file.seek(offset)
             with tarfile.open(fileobj=_Slice(file, size), mode="r|xz") as archive:
                 archive.extractall(target, filter="data")
+        # tar's data filter leaves folders to the umask: a 002 umask made them group-writable
+        for name, info in entries(target).items():
+            if name.endswith("/") and info.st_mode & 0o022:
+                os.chmod(target / name, 0o755)
     except (tarfile.TarError, lzma.LZMAError, EOFError) as exc:
         raise LaunchError(f"the program in {exe} is damaged (copy it again): {exc}") from exc
     except OSError as exc:
