@@ -20,6 +20,7 @@ from typing import TYPE_CHECKING
 from prm9tool.errors import ExitCode
 
 if TYPE_CHECKING:
+    from PySide6.QtCore import QSettings
     from PySide6.QtWidgets import QApplication, QWidget
 
     from prm9tool.device.canlink.bus import CanOptions
@@ -124,6 +125,7 @@ def create_window(args: argparse.Namespace) -> MainWindow:
     from prm9tool.views.valve.selection import DEFAULT_TYPE_KEY
 
     settings = QSettings()
+    _remember_command_line_bus(args, settings)
     language = str(settings.value("language", i18n.system_language()))
     i18n.set_language(language if language in i18n.LANGUAGES else i18n.DEFAULT_LANGUAGE)
     doc = ParameterDocument(DEFAULT_TYPE_KEY)
@@ -133,6 +135,20 @@ def create_window(args: argparse.Namespace) -> MainWindow:
 
     connection.set_recorder(Recorder(getattr(args, "history_db", None)))
     return MainWindow(doc, undo, AccessModel(), connection, settings)
+
+
+def _remember_command_line_bus(args: argparse.Namespace, settings: QSettings) -> None:
+    """A CAN bus named on the command line becomes the CAN bus dialog's: the dialog offered the
+    bus remembered from before (socketcan can0) while the program talked on this one."""
+    names = ("can_interface", "can_channel", "can_bitrate")
+    given = [getattr(args, name, None) for name in names]
+    if all(value is None for value in given):
+        return  # (the dialog's module is not loaded at every start)
+    from prm9tool.views.can_bus_dialog import BITRATE_KEY, CHANNEL_KEY, INTERFACE_KEY
+
+    for key, value in zip((INTERFACE_KEY, CHANNEL_KEY, BITRATE_KEY), given, strict=True):
+        if value is not None:
+            settings.setValue(key, value)
 
 
 def start(window: MainWindow, plan: StartPlan) -> None:

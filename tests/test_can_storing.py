@@ -5,6 +5,7 @@ in the valve when something goes wrong (prm9tool.device.canlink.storing)."""
 from __future__ import annotations
 
 import json
+from pathlib import Path
 
 import pytest
 from can_link_rig import E04, LinkRig, make_link_rig
@@ -22,8 +23,9 @@ from prm9tool.device.canlink.storing import (
     factory_values,
     safe_order,
 )
-from prm9tool.device.upload_outcome import KEPT_OUTCOME
+from prm9tool.device.upload_outcome import KEPT_OUTCOME, RESTARTED_OUTCOME
 from prm9tool.errors import DeviceTimeoutError, Prm9Error
+from prm9tool.files.prmfile import read_file
 
 NODE = 10
 # the setpoint curve's points XB, XC move right past each other's old place: written in the
@@ -160,12 +162,10 @@ def test_factory_values_without_0x1011_are_uploaded(manual):
     assert {m: held(manual, m) for m in MOVED} == {m: factory[m] for m in MOVED}
 
 
-def test_batch_verify_by_restart_says_what_the_valve_did_not_keep(
-    manual, tmp_path, capsys, monkeypatch
-):
-    """--batch --verify-by-restart against a valve whose memory loses DTAMP: the report and
-    the history say it with the same text as the GUI's Verify by restart…"""
-    nv = manual.valve._fw.nv
+def _batch_verify_losing_dtamp(rig: LinkRig, tmp_path, capsys, monkeypatch) -> tuple[dict, str]:
+    """--batch --verify-by-restart (DTAMP 15 → 20 %) into ``rig``'s valve, whose non-volatile
+    memory loses DTAMP (the restart brings back the old value): its report record and stderr."""
+    nv = rig.valve._fw.nv
     replace = nv.replace
     lost = {"DTAMP": nv.values.get("DTAMP", CATALOGUE["DTAMP"].default)}
     monkeypatch.setattr(nv, "replace", lambda values: replace({**values, **lost}))
@@ -173,14 +173,55 @@ def test_batch_verify_by_restart_says_what_the_valve_did_not_keep(
     assert main(["--new", E04, "-o", str(source)]) == 0
     text = source.read_text(encoding="utf-8").replace("DTAMP = 15", "DTAMP = 20")
     source.write_text(text, encoding="utf-8")
-    bus = ["--can-interface", "virtual", "--can-channel", manual.options.channel]
+    bus = ["--can-interface", "virtual", "--can-channel", rig.options.channel]
     args = ["--batch", str(source), "--device", "can:10", *bus, "--verify-by-restart"]
     code = main([*args, "--report", str(report)])
     out = capsys.readouterr()
-    assert code != 0, out.out
+    assert code == 1, out.err
     record = json.loads(report.read_text(encoding="utf-8"))["valves"][0]
-    assert record["result"] == "store-failed"
-    assert record["error"] == f"{NOT_KEPT_AFTER_RESTART}; {KEPT_OUTCOME}"  # the backup is back
-    assert list(record["mismatches"]) == ["DTAMP"]
+    assert (record["result"], record["failed_step"]) == ("store-failed", "store")
+    assert record["mismatches"] == {"DTAMP": {"expected": 3277, "actual": 2458}}
+    return record, out.err
+
+
+def test_batch_verify_by_restart_says_what_the_valve_did_not_keep(
+    manual, tmp_path, capsys, monkeypatch
+):
+    """--batch --verify-by-restart against a valve whose memory loses DTAMP: the report and
+    the history say it with the same text as the GUI's Verify by restart…"""
+    record, _ = _batch_verify_losing_dtamp(manual, tmp_path, capsys, monkeypatch)
+    # the backup is back
+    assert record["error"] == f"{NOT_KEPT_AFTER_RESTART} (DTAMP: 3277 → 2458); {KEPT_OUTCOME}"
     assert record["store"] == KEPT_AS_WRITTEN  # not "verified after a restart"
-    assert held(manual, "DTAMP") == lost["DTAMP"] == manual.working("DTAMP")
+    assert held(manual, "DTAMP") == 2458 == manual.working("DTAMP")
+
+
+def test_batch_verify_by_restart_on_a_valve_with_0x1010_says_it_runs_on_what_came_back(
+    tmp_path, data_dir, capsys, monkeypatch
+):
+    """The same with a valve that stores with 0x1010: the restart put it on its stored set,
+    which is not the upload; nothing is written after it, the backup file is named."""
+    rig = make_link_rig("with-1010-lost", tmp_path)
+    rig.valve.start()
+    try:
+        record, err = _batch_verify_losing_dtamp(rig, tmp_path, capsys, monkeypatch)
+        working = rig.working("DTAMP")
+    finally:
+        rig.valve.stop()
+        rig.close()
+    backup = record["backup"]
+    assert record["error"] == (
+        f"{NOT_KEPT_AFTER_RESTART} (DTAMP: 3277 → 2458); {RESTARTED_OUTCOME}; the backup of "
+        f"its values before the upload is kept in {backup}: upload it (--batch {backup}) to "
+        "put them back"
+    )
+    assert "failed too" not in record["error"]  # nothing failed: it was just restarted
+    assert record["error"] in err  # what the operator sees
+    assert record["store"] == STORED_WITH_1010  # the store that happened, not verified
+    assert held(rig, "DTAMP") == 2458 == working  # it runs on the set it came back with
+    assert read_file(Path(backup)).values["DTAMP"] == 2458
+    assert main(["--history", str(rig.valve.serial), "--json"]) == 0
+    records = json.loads(capsys.readouterr().out)["records"]
+    upload = next(r for r in records if r["operation"] == "batch-upload")
+    assert (upload["outcome"], upload["details"]["store"]) == ("store-failed", STORED_WITH_1010)
+    assert upload["details"]["error"] == record["error"]

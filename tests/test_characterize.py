@@ -287,3 +287,18 @@ def test_leaving_the_band_names_the_signal_in_the_program_language(qapp):
     finally:
         i18n.set_language("en")
     assert german.startswith("Schieberlage Ist (0x6301) hat das zulässige Band 0 ± 20 % verlassen")
+
+
+def test_an_e04_sweep_after_a_large_step_starts_from_rest():
+    """`--characterize` of an E04 as delivered stopped at its frequency response with
+    "process_actual left the allowed band 0 ± 30 %": the actuator was still at 59 % from the
+    90 % step (0.15 s) when the sweep began after 0.05 s at 0 %."""
+    from prm9tool.characterize.procedures import settle
+
+    rig = EmulatorRig(EmulatedValve("PRM9-06.3Z11/30-24E04S02"))
+    step_test(rig, 90.0, duration_s=0.15, loop="process")
+    bode = bode_test(rig, 10.0, 0.0, 1.0, 20.0, 2.0, "process")  # raised LimitExceededError
+    assert abs(bode.record.channels["process_actual"][0]) < 5.0  # was 59 %
+    before = rig.played_s
+    settle(rig, "process_actual", 0.0, 0.1)  # already there: one hold, no more
+    assert rig.played_s - before == pytest.approx(0.1)

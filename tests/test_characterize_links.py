@@ -310,3 +310,31 @@ def test_the_tuning_window_online_over_canopen(qtbot, can_valve, monkeypatch):
     assert can_valve.working("SETPOVRON") == 0
     if refused:  # said in the window and the valve given back; no figures to check
         pytest.skip(f"the link's pace on this loaded PC refused the sweep: {status}")
+
+
+def test_a_link_pause_that_lost_the_override_stops_the_test(usb_valve, monkeypatch):
+    """In the GUI on a busy PC the end-of-line test's link paused long enough for the firmware
+    to drop the override (0.5 s without a report); the valve then followed its own setpoint
+    (0 %) and the report showed static gain 0.24, hysteresis 100 % as if measured."""
+    import time
+
+    from prm9tool.characterize.procedures import static_test
+    from prm9tool.characterize.rig import LinkTooSlowError, SessionRig
+    from prm9tool.device import factory
+
+    with factory.open_session(f"usb:{PATH.decode()}") as session:
+        rig = SessionRig(session, "USB")
+        read = session.stream_read
+        calls = {"n": 0}
+
+        def stalling_read():
+            calls["n"] += 1
+            if calls["n"] == 300:  # in the middle of the triangle
+                time.sleep(0.8)
+            return read()
+
+        monkeypatch.setattr(session, "stream_read", stalling_read)
+        with pytest.raises(LinkTooSlowError, match="paused longer than the valve keeps"):
+            static_test(rig, 2.0)
+    over = CATALOGUE["SETPOVRON"]
+    assert usb_valve.read(over.index, over.subindex) == 0

@@ -199,3 +199,27 @@ def test_cycles_are_collected_on_the_gui_thread_by_the_program_itself(qtbot):
     del cycle
     qtbot.waitUntil(lambda: where != [], timeout=5000)
     assert where == [threading.main_thread().name]
+
+
+def test_the_can_bus_dialog_shows_the_bus_named_on_the_command_line(qtbot, answers):
+    """``--device can:10 --can-interface udp_multicast --can-channel 239.74.163.2`` went online
+    on that bus, but Communication → CAN bus… offered socketcan can0 (the remembered bus), so
+    "Search the bus" searched another one."""
+    from prm9tool.views.can_bus_dialog import CanBusDialog
+
+    app.create_application()
+    args = _args("--device", "can:10", "--can-interface", "udp_multicast",
+                 "--can-channel", "239.74.163.2", "--can-bitrate", "250000")  # fmt: skip
+    window = app.create_window(args)
+    qtbot.addWidget(window)
+    dialog = CanBusDialog(lambda _bus, _deliver: None, window.settings, window)
+    qtbot.addWidget(dialog)
+    assert dialog.bus() == {"interface": "udp_multicast", "channel": "239.74.163.2",
+                            "bitrate": 250000}  # fmt: skip
+    window.connection.shutdown()
+    window = app.create_window(_args())  # without CAN options: the bus last used
+    qtbot.addWidget(window)
+    assert CanBusDialog(lambda _b, _d: None, window.settings, window).bus()["channel"] == (
+        "239.74.163.2"
+    )
+    window.connection.shutdown()

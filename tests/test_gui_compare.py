@@ -10,6 +10,7 @@ from PySide6.QtCore import Qt
 from PySide6.QtWidgets import QFileDialog
 
 from prm9tool import i18n
+from prm9tool.catalogue import Access
 from prm9tool.catalogue.typekey import TypeKey
 from prm9tool.compare import Comparison, Side
 from prm9tool.files.prmfile import PrmContents, write_file
@@ -373,6 +374,7 @@ def test_the_history_records_what_the_user_did_online_with_its_meaning(
     window.compare.compare_with_file(tmp_path / "other.prm")
     window.show_tuning_window()
     tuning = window.tuning_window
+    window.access.set_level(Access.EXPERT)  # the controllers are locked at Basic level
     tuning.accept_values({"POSKP": 55}, "Autotune")
     qtbot.waitUntil(lambda: len(_records(4304)) == 3, timeout=TIMEOUT)
     _download, applied, accepted = _records(4304)

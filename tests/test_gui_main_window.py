@@ -487,3 +487,22 @@ def test_a_long_status_message_is_read_whole_and_the_fields_come_back(window):
     assert bar.mode_label in shown and bar.status_label in shown  # these always stay
     bar.clearMessage()
     assert all(label.isVisible() for label in bar.labels())
+
+
+def test_a_status_message_stays_whole_when_the_fields_grow_after_it(window):
+    """In Czech, "Online: parametry načteny z ventilu" was cut to "…z ventil" when the firmware
+    and the valve's status arrived after the message and widened their fields."""
+    window.resize(1024, 700)
+    bar = window.status
+    message = "Online: parametry načteny z ventilu"
+    bar.showMessage(message, 8000)
+    assert all(label.isVisible() for label in bar.labels())  # room enough at first
+    bar.set_online(True)
+    bar.set_firmware("1.0.0")
+    bar.set_type_key("PRM9-06.3Z11/30-24E02S02-CA")
+    bar.set_device_status("čeká na CANopen master")
+    needed = bar.fontMetrics().horizontalAdvance(message)
+    taken = sum(label.sizeHint().width() + 6 for label in bar.labels() if label.isVisible())
+    assert bar.width() - taken > needed
+    bar.clearMessage()
+    assert all(label.isVisible() for label in bar.labels())

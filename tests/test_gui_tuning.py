@@ -476,3 +476,21 @@ def test_an_open_tuning_window_follows_the_program_language(qtbot, window):
                          "Autotune starten")  # fmt: skip
     assert shown[4] == "Stopped: a result the user still reads"  # not replaced by "Bereit."
     assert window.windowTitle() == "Tuning and characterization"
+
+
+def test_at_basic_level_accepting_gains_is_refused_as_in_the_controller_dialogs(qtbot):
+    """The Tuning window (open at Basic level from the oscilloscope) accepted an autotune's
+    POSKP…POST1 into the document, and online into the valve, at Basic level, where the
+    diagram and the list lock the controllers."""
+    doc, access = ParameterDocument(E02), AccessModel()
+    w = TuningWindow(doc, access=access)
+    qtbot.addWidget(w)
+    kp = doc.value("POSKP")
+    w.accept_values({"POSKP": kp + 10, "POSKI": 500}, "Autotune")
+    assert doc.value("POSKP") == kp and not doc.modified
+    assert w.status.text() == (
+        "Not accepted: POSKP can only be changed at Expert access level. (View → Access level)"
+    )
+    access.set_level(Access.EXPERT)
+    w.accept_values({"POSKP": kp + 10}, "Autotune")
+    assert doc.value("POSKP") == kp + 10 and w.status.text() == "Accepted: Autotune"

@@ -128,3 +128,32 @@ def test_a_tuning_test_stops_the_generator_first_and_measures_a_real_step(
     assert "— before: overshoot" in tuning.autotune.result.text(), tuning.autotune.result.text()
     assert _override_on(valve) == 0
     assert not scope.running and "recording stopped" in scope.status.text()
+
+
+def test_closing_the_window_during_a_test_stops_it_and_puts_the_valve_back(
+    qtbot, window, monkeypatch, tmp_path
+):
+    """Closing the main window while the Tuning window's end-of-line test ran left the test
+    running in the worker thread past the window's end: the valve kept the test's transparent
+    chain (threshold 0) and the override, and the thread died with "Signal source has been
+    deleted"."""
+    import threading
+
+    from PySide6.QtWidgets import QMessageBox
+
+    valve = emulated(SERIAL)
+    threshold = int(valve.read(*CATALOGUE["THRESETP"].key))
+    assert threshold != 0
+    died: list[BaseException] = []
+    monkeypatch.setattr(threading, "excepthook", lambda args: died.append(args.exc_value))
+    monkeypatch.setattr(QMessageBox, "question", lambda *a: QMessageBox.StandardButton.Yes)
+    window.show_tuning_window("position")
+    tuning = window.tuning_window
+    tuning.report.run_button.click()
+    qtbot.waitUntil(lambda: _override_on(valve) == 1, timeout=TIMEOUT)  # the test drives it
+    assert int(valve.read(*CATALOGUE["THRESETP"].key)) == 0  # the chain made transparent
+    window.close()
+    assert not tuning.runner.busy or tuning.runner.stop_requested.is_set()
+    assert window.connection._worker._thread is None  # the worker ended within its time
+    assert int(valve.read(*CATALOGUE["THRESETP"].key)) == threshold  # put back
+    assert _override_on(valve) == 0 and died == []

@@ -4336,6 +4336,14 @@ Zajistěte, aby to hydraulika bezpečně snesla. Tlačítko Stop test kdykoli uk
             <translation>Přerušeno: %1</translation>
         </message>
         <message>
+            <source>(View → Access level)</source>
+            <translation>(Náhled → Úroveň oprávnění)</translation>
+        </message>
+        <message>
+            <source>Not accepted: %1</source>
+            <translation>Nepřevzato: %1</translation>
+        </message>
+        <message>
             <source>Accepted: %1</source>
             <translation>Převzato: %1</translation>
         </message>
@@ -4618,6 +4626,45 @@ Zajistěte, aby to hydraulika bezpečně snesla. Tlačítko Stop test kdykoli uk
         <message>
             <source>Connecting to {0}…</source>
             <translation>Připojování k {0}…</translation>
+        </message>
+    </context>
+    <context>
+        <name>ValveRestarts</name>
+        <message>
+            <source>Restoring the factory values…</source>
+            <translation>Obnovování továrního nastavení…</translation>
+        </message>
+        <message>
+            <source>Restore factory values</source>
+            <translation>Obnovit tovární nastavení</translation>
+        </message>
+        <message>
+            <source>Set every parameter of the document to the factory default?</source>
+            <translation>Nastavit všechny parametry dokumentu na tovární hodnoty?</translation>
+        </message>
+        <message>
+            <source>Restarting the valve…</source>
+            <translation>Restartování ventilu…</translation>
+        </message>
+        <message>
+            <source>The valve restarted</source>
+            <translation>Ventil byl restartován</translation>
+        </message>
+        <message>
+            <source>{0} kbit/s</source>
+            <translation>{0} kbit/s</translation>
+        </message>
+        <message>
+            <source>The valve restarted at {0} {1}; prm9tool found it there</source>
+            <translation>Ventil se restartoval jako {0} {1}; prm9tool ho tam našel</translation>
+        </message>
+        <message>
+            <source>Factory values of the valve</source>
+            <translation>Tovární nastavení ventilu</translation>
+        </message>
+        <message>
+            <source>Factory values restored; the valve's previous parameters are in {0}</source>
+            <translation>Tovární nastavení obnoveno; dosavadní parametry ventilu jsou v {0}</translation>
         </message>
     </context>
     <context>
@@ -4952,16 +4999,16 @@ Ano je porovná jako obvykle (bez dotazu se nic nezapíše); Ne přejde do reži
             <translation>Ventil hlásí neznámý typový klíč: {0}</translation>
         </message>
         <message>
+            <source>Nothing was sent to the valve</source>
+            <translation>Do ventilu nebylo nic odesláno</translation>
+        </message>
+        <message>
             <source>Storing the parameters in the valve…</source>
             <translation>Ukládání parametrů do paměti ventilu…</translation>
         </message>
         <message>
             <source>Downloading the parameters from the valve…</source>
             <translation>Stahování parametrů z ventilu…</translation>
-        </message>
-        <message>
-            <source>Set every parameter of the document to the factory default?</source>
-            <translation>Nastavit všechny parametry dokumentu na tovární hodnoty?</translation>
         </message>
         <message>
             <source>The valve's parameters are in the document; File → Save backup copy… keeps a copy of them</source>
@@ -4972,40 +5019,8 @@ Ano je porovná jako obvykle (bez dotazu se nic nezapíše); Ne přejde do reži
             <translation>Ventil uložil své parametry v {0}</translation>
         </message>
         <message>
-            <source>{0} kbit/s</source>
-            <translation>{0} kbit/s</translation>
-        </message>
-        <message>
-            <source>The valve restarted at {0} {1}; prm9tool found it there</source>
-            <translation>Ventil se restartoval jako {0} {1}; prm9tool ho tam našel</translation>
-        </message>
-        <message>
-            <source>Restore factory values</source>
-            <translation>Obnovit tovární nastavení</translation>
-        </message>
-        <message>
-            <source>Restoring the factory values…</source>
-            <translation>Obnovování továrního nastavení…</translation>
-        </message>
-        <message>
-            <source>Restarting the valve…</source>
-            <translation>Restartování ventilu…</translation>
-        </message>
-        <message>
             <source>Download from valve</source>
             <translation>Stažení z ventilu</translation>
-        </message>
-        <message>
-            <source>Factory values of the valve</source>
-            <translation>Tovární nastavení ventilu</translation>
-        </message>
-        <message>
-            <source>The valve restarted</source>
-            <translation>Ventil byl restartován</translation>
-        </message>
-        <message>
-            <source>Factory values restored; the valve's previous parameters are in {0}</source>
-            <translation>Tovární nastavení obnoveno; dosavadní parametry ventilu jsou v {0}</translation>
         </message>
         <message>
             <source>Valve communication</source>

@@ -4314,6 +4314,14 @@ Stellen Sie sicher, dass die Hydraulik dafür sicher ist. Stopp beendet ihn jede
             <translation>Abgebrochen: %1</translation>
         </message>
         <message>
+            <source>(View → Access level)</source>
+            <translation>(Ansicht → Berechtigungsstufe)</translation>
+        </message>
+        <message>
+            <source>Not accepted: %1</source>
+            <translation>Nicht übernommen: %1</translation>
+        </message>
+        <message>
             <source>Accepted: %1</source>
             <translation>Übernommen: %1</translation>
         </message>
@@ -4596,6 +4604,45 @@ Stellen Sie sicher, dass die Hydraulik dafür sicher ist. Stopp beendet ihn jede
         <message>
             <source>Connecting to {0}…</source>
             <translation>Verbinden mit {0}…</translation>
+        </message>
+    </context>
+    <context>
+        <name>ValveRestarts</name>
+        <message>
+            <source>Restoring the factory values…</source>
+            <translation>Werkseinstellungen werden wiederhergestellt…</translation>
+        </message>
+        <message>
+            <source>Restore factory values</source>
+            <translation>Werkseinstellungen wiederherstellen</translation>
+        </message>
+        <message>
+            <source>Set every parameter of the document to the factory default?</source>
+            <translation>Alle Parameter des Dokuments auf die Werkseinstellung setzen?</translation>
+        </message>
+        <message>
+            <source>Restarting the valve…</source>
+            <translation>Ventil wird neu gestartet…</translation>
+        </message>
+        <message>
+            <source>The valve restarted</source>
+            <translation>Das Ventil wurde neu gestartet</translation>
+        </message>
+        <message>
+            <source>{0} kbit/s</source>
+            <translation>{0} kbit/s</translation>
+        </message>
+        <message>
+            <source>The valve restarted at {0} {1}; prm9tool found it there</source>
+            <translation>Das Ventil ist als {0} {1} neu gestartet; prm9tool hat es dort gefunden</translation>
+        </message>
+        <message>
+            <source>Factory values of the valve</source>
+            <translation>Werkseinstellungen des Ventils</translation>
+        </message>
+        <message>
+            <source>Factory values restored; the valve's previous parameters are in {0}</source>
+            <translation>Werkseinstellungen wiederhergestellt; die bisherigen Parameter des Ventils sind in {0}</translation>
         </message>
     </context>
     <context>
@@ -4927,16 +4974,16 @@ Ja vergleicht beide wie gewohnt (ohne Rückfrage wird nichts geschrieben); Nein 
             <translation>Das Ventil meldet einen unbekannten Typschlüssel: {0}</translation>
         </message>
         <message>
+            <source>Nothing was sent to the valve</source>
+            <translation>Es wurde nichts an das Ventil gesendet</translation>
+        </message>
+        <message>
             <source>Storing the parameters in the valve…</source>
             <translation>Parameter werden im Ventil gespeichert…</translation>
         </message>
         <message>
             <source>Downloading the parameters from the valve…</source>
             <translation>Parameter werden aus dem Ventil heruntergeladen…</translation>
-        </message>
-        <message>
-            <source>Set every parameter of the document to the factory default?</source>
-            <translation>Alle Parameter des Dokuments auf die Werkseinstellung setzen?</translation>
         </message>
         <message>
             <source>The valve's parameters are in the document; File → Save backup copy… keeps a copy of them</source>
@@ -4947,40 +4994,8 @@ Ja vergleicht beide wie gewohnt (ohne Rückfrage wird nichts geschrieben); Nein 
             <translation>Das Ventil hat seine Parameter um {0} gespeichert</translation>
         </message>
         <message>
-            <source>{0} kbit/s</source>
-            <translation>{0} kbit/s</translation>
-        </message>
-        <message>
-            <source>The valve restarted at {0} {1}; prm9tool found it there</source>
-            <translation>Das Ventil ist als {0} {1} neu gestartet; prm9tool hat es dort gefunden</translation>
-        </message>
-        <message>
-            <source>Restore factory values</source>
-            <translation>Werkseinstellungen wiederherstellen</translation>
-        </message>
-        <message>
-            <source>Restoring the factory values…</source>
-            <translation>Werkseinstellungen werden wiederhergestellt…</translation>
-        </message>
-        <message>
-            <source>Restarting the valve…</source>
-            <translation>Ventil wird neu gestartet…</translation>
-        </message>
-        <message>
             <source>Download from valve</source>
             <translation>Aus dem Ventil herunterladen</translation>
-        </message>
-        <message>
-            <source>Factory values of the valve</source>
-            <translation>Werkseinstellungen des Ventils</translation>
-        </message>
-        <message>
-            <source>The valve restarted</source>
-            <translation>Das Ventil wurde neu gestartet</translation>
-        </message>
-        <message>
-            <source>Factory values restored; the valve's previous parameters are in {0}</source>
-            <translation>Werkseinstellungen wiederhergestellt; die bisherigen Parameter des Ventils sind in {0}</translation>
         </message>
         <message>
             <source>Valve communication</source>

@@ -12,6 +12,7 @@ from prm9tool.cli.batch_history import BatchHistory
 from prm9tool.cli.batch_report import ProgressPrinter, Stopwatch, ValveRecord
 from prm9tool.device.canlink.storing import KEPT_AS_WRITTEN
 from prm9tool.device.factory import CanOptions, DeviceEntry
+from prm9tool.device.records import UploadResult
 from prm9tool.device.session import ValveSession
 from prm9tool.device.upload_outcome import reload_outcome, type_problem
 from prm9tool.errors import CommunicationError, FileFormatError, Prm9Error, TypeKeyError
@@ -153,9 +154,7 @@ class UploadJob:
                 "not uploaded: " + ", ".join(record.absent_in_file),
             )
         if not result.stored:
-            problem = result.failure or _mismatch_text(result.failed_step, result.mismatches)
-            kept = result.store == KEPT_AS_WRITTEN
-            record.error = f"{problem}; {reload_outcome(result.reload_error, kept)}"
+            record.error = _failure_text(result, record.backup)
         elif result.store:
             self.printer.say(who, result.store)
 
@@ -185,6 +184,29 @@ def _copy_progress(exc: CommunicationError, record: ValveRecord) -> None:
     record.parameters_written = getattr(exc, "written", record.parameters_written)
     if getattr(exc, "verified", False):
         record.verification = "passed"
+
+
+def _failure_text(result: UploadResult, backup: str | None) -> str:
+    """Why a valve's upload was not stored and what it holds now (the record's ``error``)."""
+    problem = result.failure or _mismatch_text(result.failed_step, result.mismatches)
+    if result.failure and result.mismatches:  # e.g. not kept through the restart: name them
+        problem = f"{problem} ({_arrows(result.mismatches)})"
+    kept = result.store == KEPT_AS_WRITTEN
+    text = f"{problem}; {reload_outcome(result.reload_error, kept, result.restarted)}"
+    if result.restarted and not kept and backup:  # nothing was put back: the file can
+        text += (
+            f"; the backup of its values before the upload is kept in {backup}: upload it "
+            f"(--batch {backup}) to put them back"
+        )
+    return text
+
+
+def _arrows(mismatches: Mapping[str, tuple[object, object]]) -> str:
+    """The first five ``{mnemonic: (uploaded, read back)}`` as ``M: uploaded → read back``
+    (the GUI's Verify by restart… lists them so) and how many more."""
+    pairs = list(mismatches.items())
+    shown = "; ".join(f"{m}: {w} → {g}" for m, (w, g) in pairs[:5])
+    return shown + (f" (and {len(pairs) - 5} more)" if len(pairs) > 5 else "")
 
 
 def _mismatch_text(step: str | None, mismatches: Mapping[str, tuple[object, object]]) -> str:

@@ -178,7 +178,9 @@ class UploadResult(HtmlRecord):
     :class:`prm9tool.device.session.ValveSession`). ``failure`` says why the step failed when
     ``mismatches`` (``{mnemonic: (uploaded, read back)}``) do not (a refused store). After a
     failed upload the session puts the valve's stored parameters back into its working values
-    (no restart): ``reloaded`` says whether that worked, ``reload_error`` why not. ``skipped``:
+    (no restart): ``reloaded`` says whether that worked, ``reload_error`` why not; ``restarted``:
+    the verification by restart found the set not kept on a valve with a store command, which
+    runs on the set it came back with (nothing is written after the restart). ``skipped``:
     parameters of the set the valve does not have on this link, left out with a warning (never
     a failed upload).
     """
@@ -191,6 +193,7 @@ class UploadResult(HtmlRecord):
     failed_step: str | None = None
     reloaded: bool = False
     reload_error: str | None = None
+    restarted: bool = False
     failure: str | None = None
     skipped: tuple[str, ...] = ()
     # how the valve keeps the set (CANopen: "stored with 0x1010", "kept by the valve as written

@@ -373,9 +373,14 @@ class ValveSession(ABC):
             failed_step=step,
             reloaded=problem is None,
             reload_error=problem,
+            restarted=self._restarted,
             failure=failure,
             store=self.store_done,
         )
+
+    # the upload restarted the valve (verification by restart) and found its store not kept:
+    # the valve runs on what it came back with (a link that can verify by restart sets it)
+    _restarted = False
 
     @property
     def _kept(self) -> bool:

@@ -48,10 +48,20 @@ KEPT_OUTCOME = (
 )
 
 
-def reload_outcome(problem: str | None, kept: bool = False) -> str:
+RESTARTED_OUTCOME = (
+    "it runs on the set it came back with from the restart, its stored set: the upload's values "
+    "except those; nothing was written to it after the restart"
+)
+
+
+def reload_outcome(problem: str | None, kept: bool = False, restarted: bool = False) -> str:
     """What a failed upload left in the valve, given why the reload failed (None: it worked).
     ``kept``: a valve that keeps every write (no store command): the backup's values were
-    written back instead, and ``problem`` says what it holds where that failed."""
+    written back instead, and ``problem`` says what it holds where that failed. ``restarted``
+    (a valve with a store command whose verification by restart found the upload not kept):
+    the restart put its stored set into its working values, nothing is put back."""
+    if restarted and not kept:
+        return RESTARTED_OUTCOME
     if kept:
         return KEPT_OUTCOME if problem is None else f"putting the backup back failed: {problem}"
     if problem is None:

@@ -112,6 +112,8 @@ class CompareWorkflow(QObject):
         comparison = Comparison((self._document(), file_side), self._factory(self._doc.type_key))
         dialog = self._run(comparison, (0,), valve=False)
         if dialog.applied is not None and dialog.applied[1]:
+            if not self._valve.confirms_online_values(dialog.applied[1]):
+                return
             label = self.tr("Values taken from {0}").format(path.name)
             before = dict(self._doc.values)
             self._doc.set_values(dialog.applied[1], label)
@@ -191,6 +193,8 @@ class CompareWorkflow(QObject):
         """A record's parameter set becomes the document's, type key included (``key``), or
         the values ticked in two records (``key`` None: the document keeps its type key):
         one undo step (online it goes to the valve as any edit does)."""
+        if not self._valve.confirms_online_values(values):
+            return
         label = self.tr("Parameters restored from the history")
         if key is None:
             label = self.tr("%n value(s) taken from the history", "", len(values))
@@ -210,5 +214,6 @@ class CompareWorkflow(QObject):
         info = self._connection.device
         if info is None or info.serial != serial or not self._connection.is_online:
             return False
-        self._valve.upload_values(values, "history: a record's values restored")
+        if self._valve.confirms_online_values(values):  # (a No: nothing sent, and said so)
+            self._valve.upload_values(values, "history: a record's values restored")
         return True

@@ -134,7 +134,7 @@ class MainWindow(QMainWindow):
 
         window = getattr(self, "tuning_window", None)
         if window is None or window.doc is not self.doc:
-            window = TuningWindow(self.doc, self.connection, self, control=self.control)
+            window = TuningWindow(self.doc, self.connection, self, self.control, self.access)
             self.tuning_window = window
         index = window.loop.findData(loop)
         if index >= 0 and not window.runner.busy:
@@ -368,7 +368,13 @@ class MainWindow(QMainWindow):
         """Ask about unsaved changes, go offline, remember the window."""
         if self._scope is not None:
             self._scope.stop()  # switches the setpoint generator off while still online
-        if not self.files.maybe_save() or not self.valve.go_offline():
+        tuning = getattr(self, "tuning_window", None)
+        if not self.files.maybe_save():
+            event.ignore()
+            return
+        if tuning is not None and tuning.runner.busy:
+            tuning.stop()  # the test ends and puts the valve back before the link closes
+        if not self.valve.go_offline():
             event.ignore()
             return
         self._save_settings()

@@ -62,6 +62,12 @@ class MainStatusBar(QStatusBar):
         bar's tip."""
         super().showMessage(message, timeout or 0)
         self.setToolTip(message)
+        self._make_room(message)
+
+    def _make_room(self, message: str) -> None:
+        """Hide fields (file, type key, firmware) until ``message`` fits; also when a field
+        grows while the message is shown (the firmware and status arrive just after "Online:
+        parameters read from the valve", and cut its end in Czech)."""
         needed = self.fontMetrics().horizontalAdvance(message) + 24
         for label in (self.file_label, self.type_key_label, self.firmware_label):
             if self._room() >= needed:
@@ -164,6 +170,8 @@ class MainStatusBar(QStatusBar):
     def set_type_key(self, type_key: str) -> None:
         """Show the valve type of the document."""
         self.type_key_label.setText(type_key)
+        if self.currentMessage():
+            self._make_room(self.currentMessage())
 
     def set_file(self, path: Path | None, modified: bool) -> None:
         """Show the file name and a ``*`` when there are unsaved changes."""
@@ -209,6 +217,8 @@ class MainStatusBar(QStatusBar):
             )
         )
         self.lost_label.setVisible(self._lost > 0)
+        if self.currentMessage():
+            self._make_room(self.currentMessage())
 
     def changeEvent(self, event: QEvent) -> None:
         """Retranslate when the program language changes."""

@@ -111,5 +111,5 @@ def factory_upload(session: ValveSession) -> None:
         kept = result.store == KEPT_AS_WRITTEN
         raise Prm9Error(
             f"restoring the factory values failed ({why}); "
-            f"{reload_outcome(result.reload_error, kept)}"
+            f"{reload_outcome(result.reload_error, kept, result.restarted)}"
         )

@@ -44,6 +44,7 @@ class UploadSteps:
     store_done: str | None
     _store: str | None = None  # how this valve keeps parameters (canlink.storing), once known
     verify_by_restart = False  # after the store: NMT reset node, then read every value back
+    _restarted = False  # that restart found the store not kept (ValveSession._restarted)
 
     if TYPE_CHECKING:  # CanopenSession and ValveSession provide these
 
@@ -72,6 +73,7 @@ class UploadSteps:
         online), the others read now. First: how the valve keeps parameters (a valve that
         cannot store refuses the upload here, before anything is written)."""
         self._store = store_kind(self.sdo)
+        self._restarted = False
         self.store_done = self._store if self._kept else None  # each write is kept as it lands
         self._snapshot, self._touched = {}, []
         unknown = [p for p in params if p.mnemonic not in self._known]
@@ -154,6 +156,9 @@ class UploadSteps:
         if changed:
             if self._kept:  # each write is durable: the backup goes back as after any failure
                 self._snapshot = self._stored_backup
+            else:  # the restart put the stored set into the working values: nothing to put
+                # back — writing the backup without a store would leave a set it does not keep
+                self._snapshot, self._restarted = {}, True
             return changed, NOT_KEPT_AFTER_RESTART
         self.store_done = VERIFIED_RESTART
         return None

@@ -28,11 +28,14 @@ from PySide6.QtWidgets import (
 )
 
 from prm9tool.analysis.profile import DEFAULT, Profile, load_profile
+from prm9tool.catalogue import CATALOGUE
 from prm9tool.catalogue.variant import Config
+from prm9tool.model.access import AccessModel
 from prm9tool.model.document import ParameterDocument
 from prm9tool.online.connection_protocol import StatusView
 from prm9tool.online.tuning_runner import SimulationRunner, TuningRunner, ValveRunner
 from prm9tool.online.valve_control import ValveControl
+from prm9tool.translate import translated
 from prm9tool.views.help_dialog import add_context_help
 from prm9tool.views.history_notes import record_online_change
 from prm9tool.views.scope.start import offer_enable
@@ -52,9 +55,11 @@ class TuningWindow(QDialog):
         connection: Any | None = None,
         parent: QWidget | None = None,
         control: ValveControl | None = None,
+        access: AccessModel | None = None,
     ) -> None:
         super().__init__(parent)
         add_context_help(self, "tuning")  # F1
+        self._access = access  # the level whose locked values Accept does not change
         self.setObjectName("tuning_window")
         self.doc, self.connection = doc, connection
         self._control = control  # NMT start and enabling, offered to a valve that would not move
@@ -204,6 +209,13 @@ class TuningWindow(QDialog):
     def accept_values(self, values: dict[str, int], text: str) -> None:
         """Put ``values`` into the document as one undo step (online, on to the valve)."""
         wanted = {k: v for k, v in values.items() if k in self.doc.values}
+        locked = [] if self._access is None else [
+            reason for k in wanted if (reason := self._access.lock_reason(CATALOGUE[k]))
+        ]  # fmt: skip
+        if locked:  # at Basic level the controllers and linearizations are locked everywhere
+            shown = translated(locked[0]) + " " + self.tr("(View → Access level)")
+            self.status.setText(self.tr("Not accepted: %1").replace("%1", shown))
+            return
         before = dict(self.doc.values)
         self.doc.set_values(wanted, text)
         record_online_change(self.connection, "tuning-accepted", before, self.doc.values,

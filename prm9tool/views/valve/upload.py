@@ -77,7 +77,7 @@ class ValveUpload(QObject):
             self._refuse_other_variant(key)
             return False
         known = self._sync.valve_values if valve_values is None else valve_values
-        if not self._basic_user_confirms_expert_values(known):
+        if not self.basic_user_confirms_expert_values(known):
             self._post(self.tr("Nothing was sent to the valve"))
             return False
         # the valve holds the document already (edits went to it, nothing left unstored)
@@ -124,21 +124,27 @@ class ValveUpload(QObject):
         self._progress.start("upload", self.tr("Uploading the parameters to the valve…"))
         self._connection.upload(values, purpose=self._purpose)
 
-    def expert_differences(self, valve_values: Mapping[str, Raw]) -> list[str]:
-        """The Expert-level parameters whose document value differs from the valve's."""
+    def expert_differences(
+        self, valve_values: Mapping[str, Raw], values: Mapping[str, Raw] | None = None
+    ) -> list[str]:
+        """The Expert-level parameters whose value in ``values`` (default: the document's)
+        differs from the valve's."""
         return [
             mnemonic
-            for mnemonic, value in self._doc.values.items()
+            for mnemonic, value in (self._doc.values if values is None else values).items()
             if CATALOGUE[mnemonic].access is Access.EXPERT
             and mnemonic in valve_values
             and valve_values[mnemonic] != value
         ]
 
-    def _basic_user_confirms_expert_values(self, valve_values: Mapping[str, Raw]) -> bool:
-        """At Basic level, sending changes the Basic level cannot make needs a Yes."""
+    def basic_user_confirms_expert_values(
+        self, valve_values: Mapping[str, Raw], values: Mapping[str, Raw] | None = None
+    ) -> bool:
+        """At Basic level, sending changes the Basic level cannot make needs a Yes (``values``:
+        what is sent, default the document)."""
         if self._access is None or self._access.level is not Access.BASIC:
             return True
-        changed = self.expert_differences(valve_values)
+        changed = self.expert_differences(valve_values, values)
         if not changed:
             return True
         shown = ", ".join(changed[:8]) + (", …" if len(changed) > 8 else "")

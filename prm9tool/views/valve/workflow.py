@@ -1,5 +1,6 @@
 """Valve and Communication workflows: online/offline with the diff prompt, upload, download,
-factory values, restart, and what happens when the valve is lost.
+and what happens when the valve is lost; it composes the parts that have their own module
+(finding the valve, the upload, factory values and restart, verify by restart).
 
 Nothing here touches the device: it drives the ValveConnection (which runs the I/O in its
 worker thread) and the document, and reacts to their signals.
@@ -8,11 +9,9 @@ worker thread) and the document, and reacts to their signals.
 from __future__ import annotations
 
 from collections.abc import Callable, Mapping
-from dataclasses import dataclass
-from typing import Any
 
 from PySide6.QtCore import QObject, QSettings, QTime, Signal
-from PySide6.QtWidgets import QDialog, QProgressDialog, QWidget
+from PySide6.QtWidgets import QProgressDialog, QWidget
 
 from prm9tool.catalogue.typekey import TypeKey
 from prm9tool.errors import TypeKeyError
@@ -24,14 +23,14 @@ from prm9tool.online.connection_protocol import ListedValves, ValveListing
 from prm9tool.online.sync import ValveSync
 from prm9tool.translate import error_text
 from prm9tool.views import prompts
-from prm9tool.views.online_dialogs import DiffChoice, OnlineDiffDialog, RestartDialog
+from prm9tool.views.online_dialogs import DiffChoice, OnlineDiffDialog
 from prm9tool.views.operation_progress import OperationProgress
 from prm9tool.views.valve.finder import ValveFinder
 from prm9tool.views.valve.restart_check import VERIFY_RESTART, RestartVerifier
+from prm9tool.views.valve.restarts import ValveRestarts
 from prm9tool.views.valve.upload import ValveUpload
 
 COMPARE = "compare"  # download made on going online, to compare with the document
-AFTER_RESTART = "after_restart"
 
 
 class ValveWorkflow(QObject):
@@ -65,7 +64,9 @@ class ValveWorkflow(QObject):
         self.verifier = RestartVerifier(window, doc, connection, sync, self.uploads,
                                         self.progress, self.message_posted.emit,
                                         self._on_compare_finished)  # fmt: skip
-        self._restarted_from = ""  # device ID before the restart (a restart may move it)
+        self.restarts = ValveRestarts(window, doc, connection, sync, settings, self.uploads,
+                                      self.progress, self.message_posted.emit,
+                                      self.take_valve_values, self._on_compare_finished)  # fmt: skip
         # "choose per parameter" in the going-online dialog (the compare workflow sets it)
         self.choose_per_parameter: Callable[[Mapping[str, Raw]], None] | None = None
         connection.online_changed.connect(self._on_connection_online_changed)
@@ -267,6 +268,17 @@ class ValveWorkflow(QObject):
         """The Expert-level parameters whose document value differs from the valve's."""
         return self.uploads.expert_differences(valve_values)
 
+    def confirms_online_values(self, values: Mapping[str, Raw]) -> bool:
+        """Online, ``values`` about to go into the document, and so to the valve (a compared
+        file's, a history record's): at Basic level Expert-level changes need a Yes, as an
+        upload's do. Offline True (an upload asks later)."""
+        if not self._connection.is_online:
+            return True
+        if self.uploads.basic_user_confirms_expert_values(self._doc.values, values):
+            return True
+        self.message_posted.emit(self.tr("Nothing was sent to the valve"))
+        return False
+
     def store(self) -> None:
         """Valve → Store: the valve keeps what it works with now (also after a restart)."""
         self.progress.start("store", self.tr("Storing the parameters in the valve…"), False)
@@ -278,35 +290,12 @@ class ValveWorkflow(QObject):
         self._connection.download()
 
     def restore_factory(self) -> None:
-        """Factory values: online into the valve (backup, reset, restart, after the user
-        confirmed that the hydraulics are disconnected), offline into the document."""
-        if self._connection.is_online:
-            if RestartDialog(self._window, factory=True).exec() != QDialog.DialogCode.Accepted:
-                return
-            self.progress.start("restore_factory", self.tr("Restoring the factory values…"), False)
-            self._connection.run_job("restore_factory", _back_up_restore_factory_and_read)
-            return
-        answer = prompts.ask(
-            self._window,
-            prompts.Icon.Question,
-            self.tr("Restore factory values"),
-            self.tr("Set every parameter of the document to the factory default?"),
-            prompts.Button.Yes | prompts.Button.No,
-            prompts.Button.No,
-        )
-        if answer == prompts.Button.Yes:
-            defaults = ParameterDocument(self._doc.type_key).values
-            self._doc.set_values(defaults, self.tr("Restore factory values"))
+        """Valve → Restore factory values (``ValveRestarts.restore_factory``)."""
+        self.restarts.restore_factory()
 
     def restart(self) -> None:
-        """Restart the valve after the user confirmed that the hydraulics are disconnected."""
-        dialog = RestartDialog(self._window)
-        if dialog.exec() != QDialog.DialogCode.Accepted:
-            return
-        device = self._connection.device
-        self._restarted_from = device.device_id if device is not None else ""
-        self.progress.start("restart", self.tr("Restarting the valve…"), cancellable=False)
-        self._connection.run_job(AFTER_RESTART, _restart_and_read)
+        """Valve → Restart valve (``ValveRestarts.restart``)."""
+        self.restarts.restart()
 
     def verify_by_restart(self) -> bool:
         """Valve → Verify by restart… (``RestartVerifier.start``)."""
@@ -321,12 +310,8 @@ class ValveWorkflow(QObject):
             self.take_valve_values(result, self.tr("Download from valve"))
             self.message_posted.emit(self.tr("The valve's parameters are in the document; File → "
                                              "Save backup copy… keeps a copy of them"))  # fmt: skip
-        elif name == "restore_factory" and isinstance(result, _FactoryReset):
-            self._on_factory_reset(result)
-        elif name == AFTER_RESTART and isinstance(result, Mapping):
-            self._report_restart()
-            self._sync.stop()
-            self._on_compare_finished(result)
+        elif self.restarts.finished(name, result):
+            pass
         elif name == "upload":
             self.uploads.finished(result)
         elif name == VERIFY_RESTART:
@@ -335,36 +320,6 @@ class ValveWorkflow(QObject):
             self._sync.unstored = False
             at = QTime.currentTime().toString("HH:mm:ss")
             self.message_posted.emit(self.tr("The valve stored its parameters at {0}").format(at))
-
-    def _report_restart(self) -> None:
-        """Say that the valve restarted — and where, when a changed node ID or bit rate moved
-        it and the session followed (the CAN bus dialog then remembers the new bit rate)."""
-        device = self._connection.device
-        if device is None or device.device_id == self._restarted_from:
-            self.message_posted.emit(self.tr("The valve restarted"))
-            return
-        bus = getattr(device, "can_bus", None)
-        if bus is not None and bus[2]:
-            from prm9tool.views.can_bus_dialog import BITRATE_KEY
-
-            self._settings.setValue(BITRATE_KEY, bus[2])
-        rate = self.tr("{0} kbit/s").format(bus[2] // 1000) if bus and bus[2] else ""
-        self.message_posted.emit(
-            self.tr("The valve restarted at {0} {1}; prm9tool found it there").format(
-                device.device_id, rate
-            )
-        )
-
-    def _on_factory_reset(self, result: _FactoryReset) -> None:
-        self.uploads.last_stored = None  # the valve no longer holds the last upload
-        self.take_valve_values(result.values, self.tr("Factory values of the valve"))
-        self._connection.record("restore-factory", "ok", result.values, {"backup": result.backup})
-        if result.backup is not None:
-            self.message_posted.emit(
-                self.tr(
-                    "Factory values restored; the valve's previous parameters are in {0}"
-                ).format(result.backup)
-            )
 
     def _on_connection_progress(self, done: int, total: int, step: str) -> None:
         self.progress.show_step(done, total, step)
@@ -432,28 +387,3 @@ class ValveWorkflow(QObject):
         self.message_posted.emit(
             self.tr("Backup of the valve's parameters saved: {0}").format(path)
         )
-
-
-@dataclass(frozen=True)
-class _FactoryReset:
-    """Result of the factory reset: the valve's values now, and the backup taken before."""
-
-    values: dict[str, Raw]
-    backup: str | None
-
-
-def _back_up_restore_factory_and_read(session: Any) -> _FactoryReset:
-    """Worker job: back the valve's parameters up (as before the first upload), reset them to
-    the factory values, which become effective after a restart, and read them back."""
-    from prm9tool.files.backup import ensure_backup  # *.prm writing, only when needed
-
-    path = ensure_backup(session)
-    session.restore_factory()
-    session.restart()
-    return _FactoryReset(dict(session.download()), None if path is None else str(path))
-
-
-def _restart_and_read(session: Any) -> dict[str, Raw]:
-    """Worker job: restart, then read the (stored) parameters the valve runs with now."""
-    session.restart()
-    return dict(session.download())
