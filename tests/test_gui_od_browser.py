@@ -4,7 +4,7 @@ valve lacks said so, writing only at Expert level."""
 from __future__ import annotations
 
 import pytest
-from can_link_rig import make_link_rig
+from can_link_rig import E02, make_link_rig
 from PySide6.QtWidgets import QInputDialog
 
 from prm9tool.catalogue import Access
@@ -52,6 +52,30 @@ def test_every_object_is_read_and_missing_ones_are_named(qtbot, online):
     assert shown[("0x1003", "0")] == "0"
     assert shown[("0x1003", "1")] == "— (no entry)"  # was "The valve refused the access."
     assert "writing needs the Expert level" in dialog.note.text()
+
+
+def test_an_e02_lists_the_sensor_objects_of_all_valves(qtbot, tmp_path, monkeypatch):
+    """Table 7-14: an E02 -CA has 0x2005-0x2008 and 0x2100 too; with no sensor input 0x2100
+    reads 0 (docs/canopen.md)."""
+    monkeypatch.setenv("PRM9TOOL_DATA_DIR", str(tmp_path / "data"))
+    rig = make_link_rig("od-e02", tmp_path, E02, real_valve=True)
+    connection = ValveConnection(
+        opener=lambda e: factory.open_session(e, can_link=rig.options, type_key=E02)
+    )
+    try:
+        with qtbot.waitSignal(connection.online_changed, timeout=10000):
+            connection.go_online("can:10")
+        dialog = ObjectDictionaryDialog(connection, AccessModel(), rig.valve.variant)
+        qtbot.addWidget(dialog)
+        dialog.read_all()
+        qtbot.waitUntil(lambda: dialog.read.isEnabled(), timeout=10000)
+        shown = rows(dialog)
+        assert (shown[("0x2005", "1")], shown[("0x2008", "0")]) == ("9", "0")
+        assert [shown[("0x2100", str(sub))] for sub in (1, 3, 4, 5, 6)] == ["0"] * 5
+        assert shown[("0x1A01", "0")] == "2" and shown[("0x1601", "1")] == "0x21000210"
+    finally:
+        connection.shutdown()
+        rig.close()
 
 
 def test_expert_writes_an_object(qtbot, online, monkeypatch):
