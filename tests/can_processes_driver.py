@@ -111,20 +111,50 @@ def commission(
 ) -> list[str]:
     """The PLC's part of §7.6: NMT start, then control words 08h → 09h → 0Bh → 0Fh by SDO,
     each followed by the status word the next TPDO1 carries (``"0008"`` …). With 00h first
-    the rising edge of R resets a fault that has gone (table 7-20)."""
+    the rising edge of R resets a fault that has gone (table 7-20).
+
+    Like a PLC that wants the status soon, it first sets TPDO1's event timer (0x1800/5,
+    read/write, 1388h = 5 s as delivered: table 7-13) to STATUS_PERIOD_MS, and puts the 5 s
+    back at the end, so the steps after this one find the valve as delivered."""
     import can
 
     bus = can.Bus(interface="udp_multicast", channel=group)
     seen = []
     try:
+        timer = _sdo_write(bus, node, 0x1800, 5, STATUS_PERIOD_MS)
+        if timer:
+            return [timer]
         bus.send(can.Message(arbitration_id=0, data=bytes([1, node]), is_extended_id=False))
         for word in words:
             request = bytes([0x2B, 0x40, 0x60, 0, word, 0, 0, 0])
             bus.send(can.Message(arbitration_id=0x600 + node, data=request, is_extended_id=False))
             seen.append(_next_status(bus, node, word))
+        timer = _sdo_write(bus, node, 0x1800, 5, DELIVERED_PERIOD_MS)
+        if timer:
+            seen.append(timer)
     finally:
         bus.shutdown()
     return seen
+
+
+STATUS_PERIOD_MS = 50  # TPDO1's event timer while the PLC commissions
+DELIVERED_PERIOD_MS = 0x1388  # as delivered (table 7-13)
+
+
+def _sdo_write(bus: object, node: int, index: int, sub: int, value: int) -> str:
+    """Expedited SDO download of a U16; "" when the valve answered, else what it said."""
+    import can
+
+    request = bytes([0x2B, index & 0xFF, index >> 8, sub, *value.to_bytes(2, "little"), 0, 0])
+    message = can.Message(arbitration_id=0x600 + node, data=request, is_extended_id=False)
+    bus.send(message)  # type: ignore[attr-defined]
+    deadline = time.monotonic() + 15
+    while time.monotonic() < deadline:
+        msg = bus.recv(0.5)  # type: ignore[attr-defined]
+        if msg is None or msg.arbitration_id != 0x580 + node or msg.data[1:4] != request[1:4]:
+            continue
+        return "" if msg.data[0] == 0x60 else f"{index:04X}/{sub} refused {bytes(msg.data).hex()}"
+    return f"no answer to {index:04X}/{sub}"
 
 
 def _next_status(bus: object, node: int, word: int) -> str:

@@ -51,6 +51,7 @@ def _garbage_collected_on_the_main_thread():
 
     gc.disable()
     yield
+    gc.unfreeze()  # a test that ran app.run() froze its start-up objects (the program keeps them)
     _collected[0] += 1
     # the young generations after every test; everything every FULL_COLLECT_EVERY tests (a full
     # collection after each of 1500 tests doubled the run: 4 -> 9.6 min)

@@ -143,7 +143,10 @@ def test_the_sweep_over_can_runs_at_1_khz_to_100_hz_and_lost_samples_do_not_move
     if behind > 0.003:
         pytest.skip(f"the emulated valve was {behind * 1000:.0f} ms behind real time 10 % of it")
     # (a squeezed or stretched time axis would move it by tens of %)
-    assert result.response.bandwidth_hz() == pytest.approx(ref_bw, rel=0.1)
+    lag_ms = np.percentile(lags, [50, 90, 99, 100]) * 1000 if lags else []
+    assert result.response.bandwidth_hz() == pytest.approx(ref_bw, rel=0.1), (
+        f"lag percentiles 50/90/99/100: {lag_ms} ms, lost {result.lost_samples}"
+    )
     assert can_valve.working("POSSETP") == 0  # the setpoint it had, given back
 
 

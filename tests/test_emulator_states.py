@@ -2,10 +2,13 @@
 
 from __future__ import annotations
 
+import time
+
 import pytest
 
 from prm9tool.device.canlink.status import device_state
 from prm9tool.device.emulator import EmulatedValve, Fault
+from prm9tool.device.emulator.constants import FIRMWARE
 from prm9tool.device.emulator.statemachine import STATUS_CONTROL_DEVIATION, DeviceStateMachine
 from prm9tool.device.records import DeviceState
 from prm9tool.errors import AbortCode, SdoAbortError, ValueRangeError
@@ -299,3 +302,37 @@ def test_reset_node_from_inside_the_loop_restarts_cleanly():
     valve.write(0x6300, 1, 8000)
     valve.advance(0.1)
     assert valve.signal("position_actual") == pytest.approx(8000, abs=0.02 * FULL)
+
+
+def _caught_up(valve: EmulatedValve) -> None:
+    """Wait until the paced thread has run every cycle due on its (fake) clock."""
+    deadline = time.monotonic() + 30.0  # a loaded PC: the catch-up is at most a few s of CPU
+    while valve.pacer.lag_s() >= valve.pacer.min_batch * valve.CYCLE_S:
+        assert time.monotonic() < deadline, "the paced valve did not catch up"
+        time.sleep(valve.CYCLE_S)
+
+
+def test_a_report_during_a_stall_of_the_paced_valve_counts_at_its_real_time():
+    """The paced valve's thread held up (the GIL, a loaded PC) catches up the simulated time
+    in a burst; a report that came during the stall counts at the moment it came, as on a real
+    valve, not at the stalled simulated time (the burst then passed the 0.5 s watchdog with no
+    report interleaved and dropped the override although the tool kept sending)."""
+    timeout = FIRMWARE.override_timeout_s
+    valve = booted_ca()
+    valve.write(0x6040, 0, 0x0F)
+    valve.write(0x2050, 2, 8192)
+    valve.write(0x2050, 1, 1)
+    wall = [0.0]
+    valve.pacer.clock = lambda: wall[0]
+    valve.start()
+    try:
+        with valve.lock:  # the valve's thread stalls while the wall clock runs on
+            wall[0] += 1.6 * timeout
+            valve.usb_activity()  # a report arrives at the end of the stall
+        _caught_up(valve)
+        assert valve.read(0x2050, 1) == 1  # kept: the report came 0 s before, not 0.8 s
+        wall[0] += 1.2 * timeout  # no report for longer than the watchdog: dropped
+        _caught_up(valve)
+        assert valve.read(0x2050, 1) == 0
+    finally:
+        valve.stop()

@@ -8,6 +8,7 @@ from types import SimpleNamespace
 
 import pytest
 from gui_support import E02, emulator_connection
+from PySide6.QtCore import QCoreApplication
 
 from prm9tool.device import factory
 from prm9tool.device.emulated import cable_plugged, plug_cable
@@ -93,14 +94,18 @@ def test_a_broken_link_of_the_same_valve_comes_back_at_once(qtbot, connection):
 def test_going_offline_stops_looking(qtbot, connection):
     online(qtbot, connection)
     pull_cable(qtbot, connection)
+    looking = connection._reconnect.looking  # the loop's thread, to see it end
+    assert looking is not None and looking._thread is not None
     with qtbot.waitSignal(connection.reconnect_ended, timeout=TIMEOUT):
         connection.go_offline()
     assert not connection.is_reconnecting
     reconnected = record(connection.reconnected)
     plug_cable(5101)
-    # a listing the loop might still have had running reports nothing: wait one listing
-    with qtbot.waitSignal(connection.online_changed, timeout=TIMEOUT, raising=False):
-        pass
+    # a listing the loop might still have had running reports nothing: its thread ends, what it
+    # posted is delivered, and nothing starts opening the valve (that would make it busy)
+    qtbot.waitUntil(lambda: not looking._thread.is_alive(), timeout=TIMEOUT)
+    QCoreApplication.sendPostedEvents()
+    assert not connection.is_busy
     assert reconnected == [] and not connection.is_online
 
 

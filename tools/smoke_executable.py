@@ -85,7 +85,39 @@ def _smoke(exe: Path) -> int:
         ]
         failed = sum(not _step(exe, name, cmd, check, work, env) for name, cmd, check in steps)
         failed += not _gui(exe, work, env)
+        if (work / "cache" / "prm9tool" / "exe").is_dir():
+            failed += not _cache(exe, work, env)
     return failed
+
+
+def _cache(exe: Path, work: Path, env: dict[str, str]) -> bool:
+    """The one file's unpacked cache: private, checked at start, never used when others can
+    write to it."""
+    root = work / "cache" / "prm9tool" / "exe"
+    builds = [p for p in root.iterdir() if not p.name.startswith(".")]
+    problems = []
+    if len(builds) != 1 or any(p.stat().st_mode & 0o077 for p in (root, *builds)):
+        problems.append(f"expected one private build folder in {root}: {builds}")
+    victim = builds[0] / "_internal" / "base_library.zip"
+    size = victim.stat().st_size
+    with victim.open("ab") as file:
+        file.write(b"tampered")  # a changed file must be noticed and unpacked again
+    if not _step(exe, "--version, a cached file changed", [exe, "--version"], None, work, env):
+        problems.append("did not start after a cached file changed")
+    if victim.stat().st_size != size:
+        problems.append("the changed file was not replaced")
+    shared = work / "shared-cache"
+    shared.mkdir(mode=0o777)
+    shared.chmod(0o777)  # a folder other users may write to: must not be used
+    shared_env = dict(env, PRM9TOOL_EXE_CACHE=str(shared))
+    if not _step(exe, "--version, cache writable by others", [exe, "--version"], None, work,
+                 shared_env):  # fmt: skip
+        problems.append("did not start from a temporary folder")
+    if any(shared.iterdir()):
+        problems.append(f"unpacked into {shared}, which others may write to")
+    for problem in problems:
+        print(f"FAIL {exe.name} cache: {problem}")  # noqa: T201
+    return not problems
 
 
 def _clean_env(work: Path) -> dict[str, str]:
@@ -102,6 +134,7 @@ def _clean_env(work: Path) -> dict[str, str]:
     env.update(
         HOME=str(work),
         XDG_CONFIG_HOME=str(work / "config"),
+        XDG_CACHE_HOME=str(work / "cache"),
         PRM9TOOL_DATA_DIR=str(work / "data"),
         QT_QPA_PLATFORM="offscreen",
         # the emulated valves must run on the compiled control loop the build bundles

@@ -395,7 +395,7 @@ un ist, wenn sie\
 r ist.</li>\x0a</ul\
 >\x0a</body>\x0a</html\
 >\x0a\
-\x00\x00!\xf3\
+\x00\x00#\x15\
 <\
 !DOCTYPE html>\x0a<\
 html lang=\x22cs\x22>\x0a\
@@ -681,266 +681,284 @@ r \xc5\xbe\xc3\xa1dan\xc3\xa9 hodn\
 oty a test\x0alad\xc4\x9b\
 n\xc3\xad z\xc5\xafstanou za\
 staveny, dokud j\
-e nespust\xc3\xadte. P\
-\xc5\x99eru\xc5\xa1en\xc3\xa9 na\xc4\x8d\
+e nespust\xc3\xadte (p\
+o CAN se hl\xc3\xadd\xc3\xa1\
+n\xc3\xad p\xc5\x99\xc3\xadjmu, kt\
+er\xc3\xa9 p\xc5\x99eru\xc5\xa1en\xc3\
+\xbd\x0agener\xc3\xa1tor \xc5\xbe\xc3\
+\xa1dan\xc3\xa9 hodnoty n\
+astavil ve venti\
+lu, vr\xc3\xa1t\xc3\xad, jak\
+mile je ventil z\
+p\xc4\x9bt, a stavov\xc3\xbd\
+ \xc5\x99\xc3\xa1dek\x0ato ohl\xc3\
+\xa1s\xc3\xad). Stav bus-\
+off va\xc5\xa1eho CAN \
+adapt\xc3\xa9ru stavov\
+\xc3\xbd \xc5\x99\xc3\xa1dek uvede\
+; ventil se znov\
+u najde,\x0ajakmile\
+ je adapt\xc3\xa9r op\xc4\
+\x9bt na sb\xc4\x9brnici.\
+ P\xc5\x99eru\xc5\xa1en\xc3\xa9 na\
+\xc4\x8dten\xc3\xad do venti\
+lu ohl\xc3\xa1s\xc3\xad, co \
+se\x0astalo a co ve\
+ntil obsahuje; n\
+epokra\xc4\x8duje samo\
+. Jin\xc3\xbd ventil (\
+jin\xc3\xa9 v\xc3\xbdrobn\xc3\xad \
+\xc4\x8d\xc3\xadslo) na m\xc3\xads\
+t\xc4\x9b\x0aztracen\xc3\xa9ho \
+je nov\xc3\xbd ventil:\
+ program to ohl\xc3\
+\xa1s\xc3\xad a s\xc3\xa1m se k\
+ n\xc4\x9bmu nep\xc5\x99ipoj\
+\xc3\xad. P\xc5\x99echod do \
+re\xc5\xbeimu\x0aonline n\
+ebo offline hled\
+\xc3\xa1n\xc3\xad ukon\xc4\x8d\xc3\xad. \
+U emulovan\xc3\xa9ho v\
+entilu to ukazuj\
+\xc3\xad Ventil \xe2\x86\x92 Em\
+ulovan\xc3\xbd ventil\x0a\
+\xe2\x86\x92 <b>Vyt\xc3\xa1hnou\
+t kabel USB</b> \
+a <b>Znovu zapoj\
+it kabel USB</b>\
+.</p>\x0a<p>Hodnoty\
+ zm\xc4\x9bn\xc4\x9bn\xc3\xa9 onli\
+ne jsou ve venti\
+lu aktivn\xc3\xad, ale\
+ je\xc5\xa1t\xc4\x9b neulo\xc5\xbe\
+en\xc3\xa9: p\xc5\x99i p\xc5\x99ec\
+hodu do\x0are\xc5\xbeimu \
+offline program \
+nab\xc3\xaddne jejich \
+ulo\xc5\xbeen\xc3\xad a Vent\
+il \xe2\x86\x92 <b>Ulo\xc5\xbei\
+t do pam\xc4\x9bti ven\
+tilu</b> je ulo\xc5\
+\xbe\xc3\xad\x0ahned (s \xc4\x8d\xc3\xad\
+m ventil pracuje\
+, s t\xc3\xadm i nasta\
+rtuje; zaznamen\xc3\
+\xa1 se do historie\
+). <b>Na\xc4\x8dten\xc3\xad \
+do ventilu</b> z\
+ap\xc3\xad\xc5\xa1e v\xc5\xa1echny\
+\x0ahodnoty, p\xc5\x99e\xc4\x8d\
+te je zp\xc4\x9bt, por\
+ovn\xc3\xa1 a ulo\xc5\xbe\xc3\xad;\
+ ulo\xc5\xbe\xc3\xad se jen \
+tehdy, je-li ka\xc5\
+\xbed\xc3\xa1 hodnota ov\xc4\
+\x9b\xc5\x99ena.\x0aP\xc5\x99ed pr\
+vn\xc3\xadm na\xc4\x8dten\xc3\xadm\
+ do ventilu prog\
+ram ulo\xc5\xbe\xc3\xad z\xc3\xa1l\
+ohu vlastn\xc3\xadch p\
+arametr\xc5\xaf ventil\
+u do slo\xc5\xbeky\x0au\xc5\xbe\
+ivatelsk\xc3\xbdch dat\
+ (<code>backups/\
+&lt;v\xc3\xbdrobn\xc3\xad \xc4\x8d\
+\xc3\xadslo&gt;/</code\
+>).</p>\x0a<p><b>Re\
+start ventilu</b\
+> a <b>Obnoven\xc3\xad\
+ tov\xc3\xa1rn\xc3\xadho nas\
+taven\xc3\xad</b> jsou\
+ dovoleny pouze \
+p\xc5\x99i\x0aodpojen\xc3\xa9m \
+hydraulick\xc3\xa9m ob\
+vodu; program v\xc3\
+\xa1s po\xc5\xbe\xc3\xa1d\xc3\xa1 o p\
+otvrzen\xc3\xad.</p>\x0a<\
+p>Ventil \xe2\x86\x92 <b>\
+Ov\xc4\x9b\xc5\x99it restart\
+em\xe2\x80\xa6</b> (po na\
+\xc4\x8dten\xc3\xad do venti\
+lu, dokud z\xc5\xafst\xc3\
+\xa1v\xc3\xa1 online tent\
+\xc3\xbd\xc5\xbe\x0aventil) ven\
+til po stejn\xc3\xa9m \
+potvrzen\xc3\xad odpoj\
+en\xc3\xa9 hydrauliky \
+restartuje a zp\xc4\
+\x9btn\xc4\x9b na\xc4\x8dte jeh\
+o\x0aparametry: sta\
+vov\xc3\xbd \xc5\x99\xc3\xa1dek oh\
+l\xc3\xa1s\xc3\xad \xe2\x80\x9e\xe2\x80\xa6 zp\
+\xc4\x9btn\xc4\x9b na\xc4\x8dteno \
+beze zm\xc4\x9bny \xe2\x80\xa6:\
+ ov\xc4\x9b\xc5\x99eno po re\
+startu\xe2\x80\x9c, nebo\x0a\
+hl\xc3\xa1\xc5\xa1en\xc3\xad vyjme\
+nuje ka\xc5\xbedou hod\
+notu, kterou si \
+ventil neponecha\
+l (o\xc4\x8dek\xc3\xa1v\xc3\xa1no \
+\xe2\x86\x92 na\xc4\x8dteno), a\
+ historie\x0av\xc3\xbdsle\
+dek zaznamen\xc3\xa1. \
+Hl\xc3\xa1\xc5\xa1en\xc3\xad o na\xc4\
+\x8dten\xc3\xad do ventil\
+u \xc5\x99\xc3\xadk\xc3\xa1, jak s\
+i ventil hodnoty\
+ ponech\xc3\xa1v\xc3\xa1:\x0a\xe2\x80\
+\x9eulo\xc5\xbeeno pomoc\xc3\
+\xad 0x1010\xe2\x80\x9c, neb\
+o p\xc5\x99es CANopen \
+u ventilu bez p\xc5\
+\x99\xc3\xadkazu k ulo\xc5\xbee\
+n\xc3\xad \xe2\x80\x9eventil si\
+ hodnoty\x0aponecha\
+l tak, jak byly \
+zaps\xc3\xa1ny (nem\xc3\xa1 \
+p\xc5\x99\xc3\xadkaz k ulo\xc5\xbe\
+en\xc3\xad)\xe2\x80\x9c. Hodnot\
+y zm\xc4\x9bn\xc4\x9bn\xc3\xa9 onl\
+ine a dosud\x0aneul\
+o\xc5\xbeen\xc3\xa9 je t\xc5\x99eb\
+a nejprve ulo\xc5\xbei\
+t (restart by je\
+ ztratil). Neozv\
+e-li se ventil z\
+novu, program\x0ap\xc5\
+\x99ejde do re\xc5\xbeimu\
+ offline a \xc5\x99ekn\
+e, co ventil pod\
+le v\xc5\xa1eho obsahu\
+je; dokument si \
+ponech\xc3\xa1 ka\xc5\xbedou\
+\x0ahodnotu.</p>\x0a\x0a<\
+h2>Soubory</h2>\x0a\
+<p>Z\xc3\xa1znamy para\
+metr\xc5\xaf (<code>*.\
+prm</code>) jsou\
+ textov\xc3\xa9 soubor\
+y. Otev\xc5\x99\xc3\xadt, Ul\
+o\xc5\xbeit, Ulo\xc5\xbeit j\
+ako,\x0anaposledy o\
+tev\xc5\x99en\xc3\xa9 soubor\
+y a p\xc5\x99eta\xc5\xbeen\xc3\xad\
+ my\xc5\xa1\xc3\xad funguj\xc3\xad\
+ obvykl\xc3\xbdm zp\xc5\xafs\
+obem; p\xc5\x99ed ztr\xc3\
+\xa1tou\x0aneulo\xc5\xbeen\xc3\xbd\
+ch zm\xc4\x9bn se prog\
+ram zept\xc3\xa1. Ka\xc5\xbe\
+dou zm\xc4\x9bnu lze v\
+r\xc3\xa1tit (Ctrl+Z) \
+a znovu prov\xc3\xa9st\
+\x0a(Ctrl+Y). Soubo\
+r \xe2\x86\x92 Tisk a Sou\
+bor \xe2\x86\x92 Export d\
+o PDF vytvo\xc5\x99\xc3\xad \
+protokol paramet\
+r\xc5\xaf s typov\xc3\xbdm k\
+l\xc3\xad\xc4\x8dem,\x0av\xc3\xbdrobn\
+\xc3\xadm \xc4\x8d\xc3\xadslem, fi\
+rmware, souborem\
+, datem, \xc3\xbarovn\xc3\
+\xad opr\xc3\xa1vn\xc4\x9bn\xc3\xad, \
+postupov\xc3\xbdm diag\
+ramem a v\xc5\xa1emi\x0ap\
+arametry s jedno\
+tkami. Hodnoty z\
+m\xc4\x9bn\xc4\x9bn\xc3\xa9 od ulo\
+\xc5\xbeen\xc3\xad souboru j\
+sou ozna\xc4\x8deny <b\
+>*</b> a \xc5\x99\xc3\xa1dek\
+\x0a\xe2\x80\x9eSoubor\xe2\x80\x9c to\
+ uv\xc3\xa1d\xc3\xad; ka\xc5\xbed\xc3\
+\xa1 strana uv\xc3\xa1d\xc3\xad\
+ typov\xc3\xbd kl\xc3\xad\xc4\x8d \
+a v\xc3\xbdrobn\xc3\xad \xc4\x8d\xc3\xad\
+slo a sv\xc3\xa9 \xc4\x8d\xc3\xads\
+lo strany; na\x0apo\
+sledn\xc3\xad stran\xc4\x9b \
+je \xc5\x99\xc3\xa1dek pro d\
+atum, jm\xc3\xa9no a p\
+odpis.</p>\x0a<p><b\
+>Z\xc3\xa1loha ventilu\
+</b>: p\xc5\x99ipojte \
+se (re\xc5\xbeim onlin\
+e), Ventil \xe2\x86\x92 S\
+ta\xc5\xbeen\xc3\xad z venti\
+lu, pak\x0aSoubor \xe2\
+\x86\x92 <b>Ulo\xc5\xbeit z\xc3\
+\xa1lo\xc5\xben\xc3\xad kopii\xe2\x80\
+\xa6</b> (navr\xc5\xbeen\xc3\
+\xbd n\xc3\xa1zev: typov\xc3\
+\xbd kl\xc3\xad\xc4\x8d, v\xc3\xbdrob\
+n\xc3\xad \xc4\x8d\xc3\xadslo, dat\
+um\x0aa \xc4\x8das). Kopi\
+e se zap\xc3\xad\xc5\xa1e a \
+otev\xc5\x99en\xc3\xbd dokum\
+ent z\xc5\xafstane, ja\
+k\xc3\xbd byl: pozd\xc4\x9bj\
+\xc5\xa1\xc3\xad zm\xc4\x9bny se u\
+kl\xc3\xa1daj\xc3\xad do\x0ajeh\
+o vlastn\xc3\xadho sou\
+boru, nikdy do z\
+\xc3\xa1lohy. Naproti \
+tomu Ulo\xc5\xbeit jak\
+o ud\xc4\x9bl\xc3\xa1 z nov\xc3\
+\xa9ho souboru\x0aotev\
+\xc5\x99en\xc3\xbd dokument.\
+</p>\x0a\x0a<h2>Kl\xc3\xa1ve\
+snice</h2>\x0a<tabl\
+e>\x0a<tr><td>Ctrl+\
+O / Ctrl+S / Ctr\
+l+Shift+S</td><t\
+d>Otev\xc5\x99\xc3\xadt / Ul\
+o\xc5\xbeit / Ulo\xc5\xbeit \
+jako</td></tr>\x0a<\
+tr><td>Ctrl+Z / \
+Ctrl+Y</td><td>Z\
+p\xc4\x9bt / Znovu</td\
+></tr>\x0a<tr><td>C\
+trl+P / Ctrl+E</\
+td><td>Tisk / Ex\
+port do PDF</td>\
+</tr>\x0a<tr><td>Ct\
+rl+1 / Ctrl+2 / \
+Ctrl+3 / Ctrl+4<\
+/td><td>Postupov\
+\xc3\xbd diagram / Sez\
+nam parametr\xc5\xaf /\
+ Osciloskop / Ok\
+no CANopen</td><\
+/tr>\x0a<tr><td>F5 \
+/ Shift+F5</td><\
+td>Re\xc5\xbeim online\
+ / Re\xc5\xbeim offlin\
+e</td></tr>\x0a<tr>\
+<td>Ctrl+U / Ctr\
+l+D</td><td>Na\xc4\x8d\
 ten\xc3\xad do ventilu\
- ohl\xc3\xa1s\xc3\xad, co se\
-\x0astalo a co vent\
-il obsahuje; nep\
-okra\xc4\x8duje samo. \
-Jin\xc3\xbd ventil (ji\
-n\xc3\xa9 v\xc3\xbdrobn\xc3\xad \xc4\x8d\
-\xc3\xadslo) na m\xc3\xadst\xc4\
-\x9b\x0aztracen\xc3\xa9ho je\
- nov\xc3\xbd ventil: p\
-rogram to ohl\xc3\xa1s\
-\xc3\xad a s\xc3\xa1m se k n\
-\xc4\x9bmu nep\xc5\x99ipoj\xc3\xad\
-. P\xc5\x99echod do re\
-\xc5\xbeimu\x0aonline neb\
-o offline hled\xc3\xa1\
-n\xc3\xad ukon\xc4\x8d\xc3\xad. U \
-emulovan\xc3\xa9ho ven\
-tilu to ukazuj\xc3\xad\
- Ventil \xe2\x86\x92 Emul\
-ovan\xc3\xbd ventil\x0a\xe2\x86\
-\x92 <b>Vyt\xc3\xa1hnout \
-kabel USB</b> a \
-<b>Znovu zapojit\
- kabel USB</b>.<\
-/p>\x0a<p>Hodnoty z\
-m\xc4\x9bn\xc4\x9bn\xc3\xa9 online\
- jsou ve ventilu\
- aktivn\xc3\xad, ale j\
-e\xc5\xa1t\xc4\x9b neulo\xc5\xbeen\
-\xc3\xa9: p\xc5\x99i p\xc5\x99echo\
-du do\x0are\xc5\xbeimu of\
-fline program na\
-b\xc3\xaddne jejich ul\
-o\xc5\xbeen\xc3\xad a Ventil\
- \xe2\x86\x92 <b>Ulo\xc5\xbeit \
-do pam\xc4\x9bti venti\
-lu</b> je ulo\xc5\xbe\xc3\
-\xad\x0ahned (s \xc4\x8d\xc3\xadm \
-ventil pracuje, \
-s t\xc3\xadm i nastart\
-uje; zaznamen\xc3\xa1 \
-se do historie).\
- <b>Na\xc4\x8dten\xc3\xad do\
- ventilu</b> zap\
-\xc3\xad\xc5\xa1e v\xc5\xa1echny\x0ah\
-odnoty, p\xc5\x99e\xc4\x8dte\
- je zp\xc4\x9bt, porov\
-n\xc3\xa1 a ulo\xc5\xbe\xc3\xad; u\
-lo\xc5\xbe\xc3\xad se jen te\
-hdy, je-li ka\xc5\xbed\
-\xc3\xa1 hodnota ov\xc4\x9b\xc5\
-\x99ena.\x0aP\xc5\x99ed prvn\
-\xc3\xadm na\xc4\x8dten\xc3\xadm d\
-o ventilu progra\
-m ulo\xc5\xbe\xc3\xad z\xc3\xa1loh\
-u vlastn\xc3\xadch par\
-ametr\xc5\xaf ventilu \
-do slo\xc5\xbeky\x0au\xc5\xbeiv\
-atelsk\xc3\xbdch dat (\
-<code>backups/&l\
-t;v\xc3\xbdrobn\xc3\xad \xc4\x8d\xc3\xad\
-slo&gt;/</code>)\
-.</p>\x0a<p><b>Rest\
-art ventilu</b> \
-a <b>Obnoven\xc3\xad t\
-ov\xc3\xa1rn\xc3\xadho nasta\
-ven\xc3\xad</b> jsou d\
-ovoleny pouze p\xc5\
-\x99i\x0aodpojen\xc3\xa9m hy\
-draulick\xc3\xa9m obvo\
-du; program v\xc3\xa1s\
- po\xc5\xbe\xc3\xa1d\xc3\xa1 o pot\
-vrzen\xc3\xad.</p>\x0a<p>\
-Ventil \xe2\x86\x92 <b>Ov\
-\xc4\x9b\xc5\x99it restartem\
-\xe2\x80\xa6</b> (po na\xc4\x8d\
-ten\xc3\xad do ventilu\
-, dokud z\xc5\xafst\xc3\xa1v\
-\xc3\xa1 online tent\xc3\xbd\
-\xc5\xbe\x0aventil) venti\
-l po stejn\xc3\xa9m po\
-tvrzen\xc3\xad odpojen\
-\xc3\xa9 hydrauliky re\
-startuje a zp\xc4\x9bt\
-n\xc4\x9b na\xc4\x8dte jeho\x0a\
-parametry: stavo\
-v\xc3\xbd \xc5\x99\xc3\xa1dek ohl\xc3\
-\xa1s\xc3\xad \xe2\x80\x9e\xe2\x80\xa6 zp\xc4\x9b\
-tn\xc4\x9b na\xc4\x8dteno be\
-ze zm\xc4\x9bny \xe2\x80\xa6: o\
-v\xc4\x9b\xc5\x99eno po rest\
-artu\xe2\x80\x9c, nebo\x0ahl\
-\xc3\xa1\xc5\xa1en\xc3\xad vyjmenu\
-je ka\xc5\xbedou hodno\
-tu, kterou si ve\
-ntil neponechal \
-(o\xc4\x8dek\xc3\xa1v\xc3\xa1no \xe2\x86\
-\x92 na\xc4\x8dteno), a h\
-istorie\x0av\xc3\xbdslede\
-k zaznamen\xc3\xa1. Hl\
-\xc3\xa1\xc5\xa1en\xc3\xad o na\xc4\x8dt\
-en\xc3\xad do ventilu \
-\xc5\x99\xc3\xadk\xc3\xa1, jak si \
-ventil hodnoty p\
-onech\xc3\xa1v\xc3\xa1:\x0a\xe2\x80\x9eu\
-lo\xc5\xbeeno pomoc\xc3\xad \
-0x1010\xe2\x80\x9c, nebo \
-p\xc5\x99es CANopen u \
-ventilu bez p\xc5\x99\xc3\
-\xadkazu k ulo\xc5\xbeen\xc3\
-\xad \xe2\x80\x9eventil si h\
-odnoty\x0aponechal \
-tak, jak byly za\
-ps\xc3\xa1ny (nem\xc3\xa1 p\xc5\
-\x99\xc3\xadkaz k ulo\xc5\xbeen\
-\xc3\xad)\xe2\x80\x9c. Hodnoty \
-zm\xc4\x9bn\xc4\x9bn\xc3\xa9 onlin\
-e a dosud\x0aneulo\xc5\
-\xbeen\xc3\xa9 je t\xc5\x99eba \
-nejprve ulo\xc5\xbeit \
-(restart by je z\
-tratil). Neozve-\
-li se ventil zno\
-vu, program\x0ap\xc5\x99e\
-jde do re\xc5\xbeimu o\
-ffline a \xc5\x99ekne,\
- co ventil podle\
- v\xc5\xa1eho obsahuje\
-; dokument si po\
-nech\xc3\xa1 ka\xc5\xbedou\x0ah\
-odnotu.</p>\x0a\x0a<h2\
->Soubory</h2>\x0a<p\
->Z\xc3\xa1znamy parame\
-tr\xc5\xaf (<code>*.pr\
-m</code>) jsou t\
-extov\xc3\xa9 soubory.\
- Otev\xc5\x99\xc3\xadt, Ulo\xc5\
-\xbeit, Ulo\xc5\xbeit jak\
-o,\x0anaposledy ote\
-v\xc5\x99en\xc3\xa9 soubory \
-a p\xc5\x99eta\xc5\xbeen\xc3\xad m\
-y\xc5\xa1\xc3\xad funguj\xc3\xad o\
-bvykl\xc3\xbdm zp\xc5\xafsob\
-em; p\xc5\x99ed ztr\xc3\xa1t\
-ou\x0aneulo\xc5\xbeen\xc3\xbdch\
- zm\xc4\x9bn se progra\
-m zept\xc3\xa1. Ka\xc5\xbedo\
-u zm\xc4\x9bnu lze vr\xc3\
-\xa1tit (Ctrl+Z) a \
-znovu prov\xc3\xa9st\x0a(\
-Ctrl+Y). Soubor \
-\xe2\x86\x92 Tisk a Soubo\
-r \xe2\x86\x92 Export do \
-PDF vytvo\xc5\x99\xc3\xad pr\
-otokol parametr\xc5\
-\xaf s typov\xc3\xbdm kl\xc3\
-\xad\xc4\x8dem,\x0av\xc3\xbdrobn\xc3\xad\
-m \xc4\x8d\xc3\xadslem, firm\
-ware, souborem, \
-datem, \xc3\xbarovn\xc3\xad \
-opr\xc3\xa1vn\xc4\x9bn\xc3\xad, po\
-stupov\xc3\xbdm diagra\
-mem a v\xc5\xa1emi\x0apar\
-ametry s jednotk\
-ami. Hodnoty zm\xc4\
-\x9bn\xc4\x9bn\xc3\xa9 od ulo\xc5\xbe\
-en\xc3\xad souboru jso\
-u ozna\xc4\x8deny <b>*\
-</b> a \xc5\x99\xc3\xa1dek\x0a\xe2\
-\x80\x9eSoubor\xe2\x80\x9c to u\
-v\xc3\xa1d\xc3\xad; ka\xc5\xbed\xc3\xa1 \
-strana uv\xc3\xa1d\xc3\xad t\
-ypov\xc3\xbd kl\xc3\xad\xc4\x8d a \
-v\xc3\xbdrobn\xc3\xad \xc4\x8d\xc3\xadsl\
-o a sv\xc3\xa9 \xc4\x8d\xc3\xadslo\
- strany; na\x0aposl\
-edn\xc3\xad stran\xc4\x9b je\
- \xc5\x99\xc3\xa1dek pro dat\
-um, jm\xc3\xa9no a pod\
-pis.</p>\x0a<p><b>Z\
-\xc3\xa1loha ventilu</\
-b>: p\xc5\x99ipojte se\
- (re\xc5\xbeim online)\
-, Ventil \xe2\x86\x92 Sta\
-\xc5\xbeen\xc3\xad z ventilu\
-, pak\x0aSoubor \xe2\x86\x92\
- <b>Ulo\xc5\xbeit z\xc3\xa1l\
-o\xc5\xben\xc3\xad kopii\xe2\x80\xa6<\
-/b> (navr\xc5\xbeen\xc3\xbd \
-n\xc3\xa1zev: typov\xc3\xbd \
-kl\xc3\xad\xc4\x8d, v\xc3\xbdrobn\xc3\
-\xad \xc4\x8d\xc3\xadslo, datum\
-\x0aa \xc4\x8das). Kopie \
-se zap\xc3\xad\xc5\xa1e a ot\
-ev\xc5\x99en\xc3\xbd dokumen\
-t z\xc5\xafstane, jak\xc3\
-\xbd byl: pozd\xc4\x9bj\xc5\xa1\
-\xc3\xad zm\xc4\x9bny se ukl\
-\xc3\xa1daj\xc3\xad do\x0ajeho \
-vlastn\xc3\xadho soubo\
-ru, nikdy do z\xc3\xa1\
-lohy. Naproti to\
-mu Ulo\xc5\xbeit jako \
-ud\xc4\x9bl\xc3\xa1 z nov\xc3\xa9h\
-o souboru\x0aotev\xc5\x99\
-en\xc3\xbd dokument.</\
-p>\x0a\x0a<h2>Kl\xc3\xa1vesn\
-ice</h2>\x0a<table>\
-\x0a<tr><td>Ctrl+O \
-/ Ctrl+S / Ctrl+\
-Shift+S</td><td>\
-Otev\xc5\x99\xc3\xadt / Ulo\xc5\
-\xbeit / Ulo\xc5\xbeit ja\
-ko</td></tr>\x0a<tr\
-><td>Ctrl+Z / Ct\
-rl+Y</td><td>Zp\xc4\
-\x9bt / Znovu</td><\
-/tr>\x0a<tr><td>Ctr\
-l+P / Ctrl+E</td\
-><td>Tisk / Expo\
-rt do PDF</td></\
-tr>\x0a<tr><td>Ctrl\
-+1 / Ctrl+2 / Ct\
-rl+3 / Ctrl+4</t\
-d><td>Postupov\xc3\xbd\
- diagram / Sezna\
-m parametr\xc5\xaf / O\
-sciloskop / Okno\
- CANopen</td></t\
-r>\x0a<tr><td>F5 / \
-Shift+F5</td><td\
->Re\xc5\xbeim online /\
- Re\xc5\xbeim offline<\
-/td></tr>\x0a<tr><t\
-d>Ctrl+U / Ctrl+\
-D</td><td>Na\xc4\x8dte\
-n\xc3\xad do ventilu /\
- Sta\xc5\xbeen\xc3\xad z ven\
-tilu</td></tr>\x0a<\
-tr><td>Ctrl+T / \
-Ctrl+I / Ctrl+H<\
-/td><td>V\xc3\xbdb\xc4\x9br \
-ventilu / Stav v\
-entilu / Konfigu\
-race HID</td></t\
-r>\x0a</table>\x0a<p><\
-b>Skripty a zku\xc5\
-\xa1ebn\xc3\xad stanice</\
-b>: ventil z Pyt\
-honu a ze shello\
-v\xc3\xbdch skript\xc5\xaf, \
-<a href=\x22scripti\
-ng_en.html\x22>na t\
-\xc3\xa9to str\xc3\xa1nce</a\
-> (anglicky).</p\
->\x0a</body>\x0a</html\
->\x0a\
+ / Sta\xc5\xbeen\xc3\xad z v\
+entilu</td></tr>\
+\x0a<tr><td>Ctrl+T \
+/ Ctrl+I / Ctrl+\
+H</td><td>V\xc3\xbdb\xc4\x9b\
+r ventilu / Stav\
+ ventilu / Konfi\
+gurace HID</td><\
+/tr>\x0a</table>\x0a<p\
+><b>Skripty a zk\
+u\xc5\xa1ebn\xc3\xad stanice\
+</b>: ventil z P\
+ythonu a ze shel\
+lov\xc3\xbdch skript\xc5\xaf\
+, <a href=\x22scrip\
+ting_en.html\x22>na\
+ t\xc3\xa9to str\xc3\xa1nce<\
+/a> (anglicky).<\
+/p>\x0a</body>\x0a</ht\
+ml>\x0a\
 \x00\x00\x062\
 <\
 !DOCTYPE html>\x0a<\
@@ -1383,7 +1401,7 @@ t\xc3\xa1len\xc3\xad ka\xc5\xbed\xc3\xa9\
 ho zobrazen\xc3\xa9ho \
 skoku.</p>\x0a</bod\
 y>\x0a</html>\x0a\
-\x00\x00\x22\xfd\
+\x00\x00$@\
 <\
 !DOCTYPE html>\x0a<\
 html lang=\x22de\x22>\x0a\
@@ -1680,271 +1698,291 @@ lwertgenerator u\
 nd ein\x0aTuning-Te\
 st bleiben angeh\
 alten, bis Sie s\
-ie starten. Ein \
-abgebrochenes Ho\
-chladen meldet, \
-was\x0ageschah und \
-was das Ventil e\
-nth\xc3\xa4lt; es wird\
- nicht fortgeset\
-zt. Ein anderes \
-Ventil (andere\x0aS\
-eriennummer) an \
-der Stelle des v\
-erlorenen ist ei\
-n neues Ventil: \
-das Programm sag\
-t es und\x0averbind\
-et sich nicht vo\
-n selbst. Selbst\
- online oder off\
-line gehen beend\
-et die Suche. Mi\
-t\x0aeinem emuliert\
-en Ventil zeigen\
- es Ventil \xe2\x86\x92 E\
-muliertes Ventil\
- \xe2\x86\x92 <b>USB-Kabe\
-l ziehen</b> und\
-\x0a<b>USB-Kabel wi\
-eder einstecken<\
-/b>.</p>\x0a<p>Onli\
-ne ge\xc3\xa4nderte We\
-rte sind im Vent\
-il aktiv, aber n\
+ie starten (\xc3\xbcbe\
+r CAN wird die E\
+mpfangs\xc3\xbcberwach\
+ung,\x0adie ein abg\
+ebrochener Sollw\
+ertgenerator im \
+Ventil gesetzt h\
+atte, zur\xc3\xbcckges\
+etzt, sobald das\
+\x0aVentil wieder d\
+a ist, und die S\
+tatusleiste meld\
+et es). Ein Bus-\
+Off Ihres CAN-Ad\
+apters wird in\x0ad\
+er Statusleiste \
+genannt; das Ven\
+til wird wiederg\
+efunden, sobald \
+der Adapter wied\
+er am Bus\x0aist. E\
+in abgebrochenes\
+ Hochladen melde\
+t, was\x0ageschah u\
+nd was das Venti\
+l enth\xc3\xa4lt; es w\
+ird nicht fortge\
+setzt. Ein ander\
+es Ventil (ander\
+e\x0aSeriennummer) \
+an der Stelle de\
+s verlorenen ist\
+ ein neues Venti\
+l: das Programm \
+sagt es und\x0averb\
+indet sich nicht\
+ von selbst. Sel\
+bst online oder \
+offline gehen be\
+endet die Suche.\
+ Mit\x0aeinem emuli\
+erten Ventil zei\
+gen es Ventil \xe2\x86\
+\x92 Emuliertes Ven\
+til \xe2\x86\x92 <b>USB-K\
+abel ziehen</b> \
+und\x0a<b>USB-Kabel\
+ wieder einsteck\
+en</b>.</p>\x0a<p>O\
+nline ge\xc3\xa4nderte\
+ Werte sind im V\
+entil aktiv, abe\
+r noch nicht ges\
+peichert: beim W\
+echsel\x0aauf offli\
+ne bietet das Pr\
+ogramm an, sie z\
+u speichern, und\
+ Ventil \xe2\x86\x92 <b>I\
+m Ventil speiche\
+rn</b>\x0aspeichert\
+ sie sofort (wom\
+it das Ventil ar\
+beitet, damit st\
+artet es auch; i\
+m Verlauf\x0afestge\
+halten). <b>In d\
+as Ventil hochla\
+den</b>\x0aschreibt\
+ alle Werte, lie\
+st sie zur\xc3\xbcck, \
+vergleicht und s\
+peichert sie; ge\
+speichert wird n\
+ur,\x0awenn jeder W\
+ert best\xc3\xa4tigt w\
+urde. Vor dem er\
+sten Hochladen i\
+n ein Ventil sic\
+hert das\x0aProgram\
+m dessen eigene \
+Parameter im Ben\
+utzerdatenordner\
+ (<code>backups/\
+&lt;Seriennummer\
+&gt;/</code>).</\
+p>\x0a<p><b>Ventil \
+neu starten</b> \
+und <b>Werkseins\
+tellungen wieder\
+herstellen</b> s\
+ind nur bei\x0agetr\
+ennter Hydraulik\
+ erlaubt; das Pr\
+ogramm l\xc3\xa4sst Si\
+e das best\xc3\xa4tige\
+n.</p>\x0a<p>Ventil\
+ \xe2\x86\x92 <b>Durch Ne\
+ustart pr\xc3\xbcfen\xe2\x80\
+\xa6</b> (nach dem \
+Hochladen, solan\
+ge dasselbe Vent\
+il online\x0ableibt\
+) startet das Ve\
+ntil \xe2\x80\x93 nach de\
+rselben Best\xc3\xa4ti\
+gung zur Hydraul\
+ik \xe2\x80\x93 neu und l\
+iest seine\x0aParam\
+eter zur\xc3\xbcck: di\
+e Statuszeile me\
+ldet \xe2\x80\x9e\xe2\x80\xa6 unve\
+r\xc3\xa4ndert zur\xc3\xbcck\
+gelesen: nach ei\
+nem Neustart\x0agep\
+r\xc3\xbcft\xe2\x80\x9c, oder e\
+ine Meldung nenn\
+t jeden Wert, de\
+n das Ventil nic\
+ht behalten hat \
+(erwartet \xe2\x86\x92\x0azu\
+r\xc3\xbcckgelesen), u\
+nd der Verlauf h\
+\xc3\xa4lt das Ergebni\
+s fest. Die Meld\
+ung des Hochlade\
+ns sagt, wie\x0adas\
+ Ventil die Wert\
+e beh\xc3\xa4lt: \xe2\x80\x9emi\
+t 0x1010 gespeic\
+hert\xe2\x80\x9c oder, \xc3\xbc\
+ber CANopen bei \
+einem Ventil\x0aohn\
+e Speicherbefehl\
+, \xe2\x80\x9evom Ventil \
+wie geschrieben \
+behalten (es hat\
+ keinen Speicher\
+befehl)\xe2\x80\x9c.\x0aOnli\
+ne ge\xc3\xa4nderte, n\
 och nicht gespei\
-chert: beim Wech\
-sel\x0aauf offline \
-bietet das Progr\
-amm an, sie zu s\
-peichern, und Ve\
-ntil \xe2\x86\x92 <b>Im V\
-entil speichern<\
-/b>\x0aspeichert si\
-e sofort (womit \
-das Ventil arbei\
-tet, damit start\
-et es auch; im V\
-erlauf\x0afestgehal\
-ten). <b>In das \
-Ventil hochladen\
-</b>\x0aschreibt al\
-le Werte, liest \
-sie zur\xc3\xbcck, ver\
-gleicht und spei\
-chert sie; gespe\
-ichert wird nur,\
-\x0awenn jeder Wert\
- best\xc3\xa4tigt wurd\
-e. Vor dem erste\
-n Hochladen in e\
-in Ventil sicher\
-t das\x0aProgramm d\
-essen eigene Par\
-ameter im Benutz\
-erdatenordner (<\
-code>backups/&lt\
-;Seriennummer&gt\
-;/</code>).</p>\x0a\
-<p><b>Ventil neu\
- starten</b> und\
- <b>Werkseinstel\
-lungen wiederher\
-stellen</b> sind\
- nur bei\x0agetrenn\
-ter Hydraulik er\
-laubt; das Progr\
-amm l\xc3\xa4sst Sie d\
-as best\xc3\xa4tigen.<\
-/p>\x0a<p>Ventil \xe2\x86\
-\x92 <b>Durch Neust\
-art pr\xc3\xbcfen\xe2\x80\xa6</\
-b> (nach dem Hoc\
-hladen, solange \
-dasselbe Ventil \
-online\x0ableibt) s\
-tartet das Venti\
-l \xe2\x80\x93 nach derse\
-lben Best\xc3\xa4tigun\
-g zur Hydraulik \
-\xe2\x80\x93 neu und lies\
-t seine\x0aParamete\
-r zur\xc3\xbcck: die S\
-tatuszeile melde\
-t \xe2\x80\x9e\xe2\x80\xa6 unver\xc3\xa4\
-ndert zur\xc3\xbcckgel\
-esen: nach einem\
- Neustart\x0agepr\xc3\xbc\
-ft\xe2\x80\x9c, oder eine\
- Meldung nennt j\
-eden Wert, den d\
-as Ventil nicht \
-behalten hat (er\
-wartet \xe2\x86\x92\x0azur\xc3\xbc\
-ckgelesen), und \
-der Verlauf h\xc3\xa4l\
-t das Ergebnis f\
-est. Die Meldung\
- des Hochladens \
-sagt, wie\x0adas Ve\
-ntil die Werte b\
-eh\xc3\xa4lt: \xe2\x80\x9emit 0\
-x1010 gespeicher\
-t\xe2\x80\x9c oder, \xc3\xbcber\
- CANopen bei ein\
-em Ventil\x0aohne S\
-peicherbefehl, \xe2\
-\x80\x9evom Ventil wie\
- geschrieben beh\
-alten (es hat ke\
-inen Speicherbef\
-ehl)\xe2\x80\x9c.\x0aOnline \
-ge\xc3\xa4nderte, noch\
- nicht gespeiche\
-rte Werte m\xc3\xbcsse\
-n zuerst gespeic\
-hert werden (ein\
- Neustart\x0aw\xc3\xbcrde\
- sie verlieren).\
- Meldet sich das\
- Ventil nicht wi\
-eder, geht das P\
-rogramm offline \
-und sagt,\x0awas da\
-s Ventil nach be\
-stem Wissen enth\
-\xc3\xa4lt; das Dokume\
-nt beh\xc3\xa4lt jeden\
- Wert.</p>\x0a\x0a<h2>\
-Dateien</h2>\x0a<p>\
-Parameterdateien\
- (<code>*.prm</c\
-ode>) sind Textd\
-ateien. \xc3\x96ffnen,\
- Speichern, Spei\
-chern\x0aunter, die\
- zuletzt ge\xc3\xb6ffn\
-eten Dateien und\
- Drag &amp; Drop\
- funktionieren w\
-ie gewohnt; vor \
-dem\x0aVerlust unge\
-speicherter \xc3\x84nd\
-erungen fragt da\
-s Programm nach.\
- Jede \xc3\x84nderung \
-l\xc3\xa4sst sich\x0ar\xc3\xbcc\
-kg\xc3\xa4ngig machen \
-(Strg+Z) und wie\
-derherstellen (S\
-trg+Y). Datei \xe2\x86\
-\x92 Drucken und Da\
-tei \xe2\x86\x92 PDF\x0aexpo\
-rtieren erzeugen\
- ein Parameterpr\
-otokoll mit Typs\
-chl\xc3\xbcssel, Serie\
-nnummer, Firmwar\
-e, Datei,\x0aDatum,\
- Berechtigungsst\
-ufe, dem Ablaufd\
-iagramm und alle\
-n Parametern mit\
- Einheit. Seit d\
-em\x0aSpeichern ge\xc3\
-\xa4nderte Werte si\
-nd mit <b>*</b> \
-markiert, und di\
-e Zeile \xe2\x80\x9eDatei\
-\xe2\x80\x9c sagt es; jed\
-e Seite\x0anennt Ty\
-pschl\xc3\xbcssel und \
-Seriennummer und\
- tr\xc3\xa4gt ihre Sei\
-tenzahl; die let\
-zte Seite hat ei\
-ne Zeile\x0af\xc3\xbcr Da\
-tum, Name und Un\
-terschrift.</p>\x0a\
-<p><b>Ein Ventil\
- sichern</b>: on\
-line gehen, Vent\
-il \xe2\x86\x92 Aus dem V\
-entil herunterla\
-den, dann\x0aDatei \
-\xe2\x86\x92 <b>Sicherung\
-skopie speichern\
-\xe2\x80\xa6</b> (vorgesc\
-hlagener Name: T\
+cherte Werte m\xc3\xbc\
+ssen zuerst gesp\
+eichert werden (\
+ein Neustart\x0aw\xc3\xbc\
+rde sie verliere\
+n). Meldet sich \
+das Ventil nicht\
+ wieder, geht da\
+s Programm offli\
+ne und sagt,\x0awas\
+ das Ventil nach\
+ bestem Wissen e\
+nth\xc3\xa4lt; das Dok\
+ument beh\xc3\xa4lt je\
+den Wert.</p>\x0a\x0a<\
+h2>Dateien</h2>\x0a\
+<p>Parameterdate\
+ien (<code>*.prm\
+</code>) sind Te\
+xtdateien. \xc3\x96ffn\
+en, Speichern, S\
+peichern\x0aunter, \
+die zuletzt ge\xc3\xb6\
+ffneten Dateien \
+und Drag &amp; D\
+rop funktioniere\
+n wie gewohnt; v\
+or dem\x0aVerlust u\
+ngespeicherter \xc3\
+\x84nderungen fragt\
+ das Programm na\
+ch. Jede \xc3\x84nderu\
+ng l\xc3\xa4sst sich\x0ar\
+\xc3\xbcckg\xc3\xa4ngig mach\
+en (Strg+Z) und \
+wiederherstellen\
+ (Strg+Y). Datei\
+ \xe2\x86\x92 Drucken und\
+ Datei \xe2\x86\x92 PDF\x0ae\
+xportieren erzeu\
+gen ein Paramete\
+rprotokoll mit T\
 ypschl\xc3\xbcssel, Se\
-riennummer,\x0aDatu\
-m und Uhrzeit). \
-Die Kopie wird g\
-eschrieben, das \
-ge\xc3\xb6ffnete Dokum\
-ent bleibt, was \
-es war:\x0asp\xc3\xa4tere\
- \xc3\x84nderungen wer\
-den in seine eig\
-ene Datei gespei\
-chert, nie in di\
-e Sicherung. Spe\
-ichern\x0aunter dag\
-egen macht die n\
-eue Datei zum ge\
-\xc3\xb6ffneten Dokume\
-nt.</p>\x0a\x0a<h2>Tas\
-tatur</h2>\x0a<tabl\
-e>\x0a<tr><td>Strg+\
-O / Strg+S / Str\
-g+Umschalt+S</td\
-><td>\xc3\x96ffnen / S\
-peichern / Speic\
-hern unter</td><\
-/tr>\x0a<tr><td>Str\
-g+Z / Strg+Y</td\
-><td>R\xc3\xbcckg\xc3\xa4ngi\
-g / Wiederherste\
-llen</td></tr>\x0a<\
-tr><td>Strg+P / \
-Strg+E</td><td>D\
-rucken / PDF exp\
-ortieren</td></t\
-r>\x0a<tr><td>Strg+\
-1 / Strg+2 / Str\
-g+3 / Strg+4</td\
-><td>Ablaufdiagr\
-amm / Parameterl\
-iste / Oszillosk\
-op / CANopen-Fen\
-ster</td></tr>\x0a<\
-tr><td>F5 / Umsc\
-halt+F5</td><td>\
-Online / Offline\
-</td></tr>\x0a<tr><\
-td>Strg+U / Strg\
-+D</td><td>In da\
-s Ventil hochlad\
-en / Aus dem Ven\
-til herunterlade\
-n</td></tr>\x0a<tr>\
-<td>Strg+T / Str\
-g+I / Strg+H</td\
-><td>Ventilauswa\
-hl / Ventilstatu\
-s / HID-Konfigur\
-ation</td></tr>\x0a\
-</table>\x0a<p><b>S\
-kripte und Pr\xc3\xbcf\
-st\xc3\xa4nde</b>: das\
- Ventil aus Pyth\
-on und Shell-Skr\
-ipten, <a href=\x22\
-scripting_en.htm\
-l\x22>auf dieser Se\
-ite</a> (auf Eng\
-lisch).</p>\x0a</bo\
-dy>\x0a</html>\x0a\
+riennummer, Firm\
+ware, Datei,\x0aDat\
+um, Berechtigung\
+sstufe, dem Abla\
+ufdiagramm und a\
+llen Parametern \
+mit Einheit. Sei\
+t dem\x0aSpeichern \
+ge\xc3\xa4nderte Werte\
+ sind mit <b>*</\
+b> markiert, und\
+ die Zeile \xe2\x80\x9eDa\
+tei\xe2\x80\x9c sagt es; \
+jede Seite\x0anennt\
+ Typschl\xc3\xbcssel u\
+nd Seriennummer \
+und tr\xc3\xa4gt ihre \
+Seitenzahl; die \
+letzte Seite hat\
+ eine Zeile\x0af\xc3\xbcr\
+ Datum, Name und\
+ Unterschrift.</\
+p>\x0a<p><b>Ein Ven\
+til sichern</b>:\
+ online gehen, V\
+entil \xe2\x86\x92 Aus de\
+m Ventil herunte\
+rladen, dann\x0aDat\
+ei \xe2\x86\x92 <b>Sicher\
+ungskopie speich\
+ern\xe2\x80\xa6</b> (vorg\
+eschlagener Name\
+: Typschl\xc3\xbcssel,\
+ Seriennummer,\x0aD\
+atum und Uhrzeit\
+). Die Kopie wir\
+d geschrieben, d\
+as ge\xc3\xb6ffnete Do\
+kument bleibt, w\
+as es war:\x0asp\xc3\xa4t\
+ere \xc3\x84nderungen \
+werden in seine \
+eigene Datei ges\
+peichert, nie in\
+ die Sicherung. \
+Speichern\x0aunter \
+dagegen macht di\
+e neue Datei zum\
+ ge\xc3\xb6ffneten Dok\
+ument.</p>\x0a\x0a<h2>\
+Tastatur</h2>\x0a<t\
+able>\x0a<tr><td>St\
+rg+O / Strg+S / \
+Strg+Umschalt+S<\
+/td><td>\xc3\x96ffnen \
+/ Speichern / Sp\
+eichern unter</t\
+d></tr>\x0a<tr><td>\
+Strg+Z / Strg+Y<\
+/td><td>R\xc3\xbcckg\xc3\xa4\
+ngig / Wiederher\
+stellen</td></tr\
+>\x0a<tr><td>Strg+P\
+ / Strg+E</td><t\
+d>Drucken / PDF \
+exportieren</td>\
+</tr>\x0a<tr><td>St\
+rg+1 / Strg+2 / \
+Strg+3 / Strg+4<\
+/td><td>Ablaufdi\
+agramm / Paramet\
+erliste / Oszill\
+oskop / CANopen-\
+Fenster</td></tr\
+>\x0a<tr><td>F5 / U\
+mschalt+F5</td><\
+td>Online / Offl\
+ine</td></tr>\x0a<t\
+r><td>Strg+U / S\
+trg+D</td><td>In\
+ das Ventil hoch\
+laden / Aus dem \
+Ventil herunterl\
+aden</td></tr>\x0a<\
+tr><td>Strg+T / \
+Strg+I / Strg+H<\
+/td><td>Ventilau\
+swahl / Ventilst\
+atus / HID-Konfi\
+guration</td></t\
+r>\x0a</table>\x0a<p><\
+b>Skripte und Pr\
+\xc3\xbcfst\xc3\xa4nde</b>: \
+das Ventil aus P\
+ython und Shell-\
+Skripten, <a hre\
+f=\x22scripting_en.\
+html\x22>auf dieser\
+ Seite</a> (auf \
+Englisch).</p>\x0a<\
+/body>\x0a</html>\x0a\
 \x00\x00\x05\xaf\
 <\
 !DOCTYPE html>\x0a<\
@@ -2435,7 +2473,7 @@ ls \xe2\x80\x9e\xe2\x80\x94\xe2\x80\x9c und\
 ht\x0aw\xc3\xa4hlen.</p>\x0a\
 </body>\x0a</html>\x0a\
 \
-\x00\x00\x1eh\
+\x00\x00\x1fc\
 <\
 !DOCTYPE html>\x0a<\
 html lang=\x22en\x22>\x0a\
@@ -2692,238 +2730,254 @@ e setpoint gener\
 ator and a tunin\
 g test\x0astay stop\
 ped until you st\
-art them. An upl\
-oad that was cut\
- off reports wha\
-t happened and w\
-hat the valve ho\
-lds; it\x0ais not r\
-esumed. Another \
-valve (another s\
-erial number) wh\
-ere the lost one\
- was is a new va\
-lve:\x0athe program\
- says so and doe\
-s not connect to\
- it by itself. G\
-oing online or o\
-ffline yourself\x0a\
-stops the search\
-. With an emulat\
-ed valve, Valve \
-\xe2\x86\x92 Emulated val\
-ve \xe2\x86\x92 <b>Pull t\
-he USB cable</b>\
-\x0aand <b>Plug the\
- USB cable back \
-in</b> show it.<\
-/p>\x0a<p>Values ch\
-anged online are\
- active in the v\
-alve but not yet\
- stored: going o\
-ffline offers to\
-\x0astore them, and\
- Valve \xe2\x86\x92 <b>St\
-ore in valve</b>\
- stores them at \
-once (what the v\
-alve works with\x0a\
-becomes what it \
-starts with; rec\
-orded in the his\
-tory). <b>Upload\
- to valve</b> wr\
-ites all values,\
- reads them back\
-, compares and s\
-tores\x0athem; noth\
-ing is stored un\
-less every value\
- was verified. B\
-efore the first \
-upload to a valv\
-e\x0athe program sa\
-ves a backup of \
-the valve's own \
-parameters in th\
-e user data fold\
-er\x0a(<code>backup\
-s/&lt;serial&gt;\
-/</code>).</p>\x0a<\
-p><b>Restart val\
-ve</b> and <b>Re\
-store factory va\
-lues</b> are all\
-owed only with t\
-he\x0ahydraulics di\
-sconnected; the \
-program asks you\
- to confirm this\
-.</p>\x0a<p>Valve \xe2\
-\x86\x92 <b>Verify by \
-restart\xe2\x80\xa6</b> (\
-after an upload,\
- while the same \
-valve stays onli\
-ne)\x0arestarts the\
- valve \xe2\x80\x94 after\
- the same hydrau\
-lics confirmatio\
-n \xe2\x80\x94 and reads \
-its parameters b\
-ack:\x0athe status \
-bar says \xe2\x80\x9c\xe2\x80\xa6 \
-read back unchan\
-ged \xe2\x80\xa6: verifie\
-d after a restar\
-t\xe2\x80\x9d, or a messa\
-ge lists\x0aeach va\
-lue the valve di\
-d not keep (expe\
-cted \xe2\x86\x92 read ba\
-ck), and the his\
-tory records the\
- outcome.\x0aThe up\
-load's own messa\
-ge says how the \
-valve kept the v\
-alues: \xe2\x80\x9cstored\
- with 0x1010\xe2\x80\x9d,\
- or over\x0aCANopen\
- on a valve with\
-out a store comm\
-and \xe2\x80\x9ckept by t\
-he valve as writ\
-ten (it has no s\
-tore\x0acommand)\xe2\x80\x9d\
-. Values changed\
- online and not \
-stored yet must \
-be stored first \
-(a restart would\
-\x0alose them). If \
-the valve does n\
-ot come back, th\
-e program goes o\
-ffline and says \
-what the valve\x0ah\
-olds as far as k\
-nown; the docume\
-nt keeps every v\
-alue.</p>\x0a\x0a<h2>F\
-iles</h2>\x0a<p>Par\
-ameter files (<c\
-ode>*.prm</code>\
-) are text files\
-. Open, Save, Sa\
-ve As, the recen\
-t\x0afiles and drag\
- and drop work a\
-s usual; the pro\
-gram asks before\
- unsaved changes\
- are lost.\x0aEvery\
- change can be u\
-ndone (Ctrl+Z) a\
-nd redone (Ctrl+\
-Y). File \xe2\x86\x92 Pri\
-nt and File \xe2\x86\x92 \
-Export PDF\x0aprodu\
-ce a parameter r\
-ecord with type \
-key, serial numb\
-er, firmware, fi\
-le, date, access\
- level,\x0athe flow\
- diagram and eve\
-ry parameter wit\
-h its unit. Valu\
-es changed since\
- the file was sa\
-ved\x0aare marked <\
-b>*</b> and the \
-file line says s\
-o; every page na\
-mes the type key\
- and serial\x0anumb\
-er and carries i\
-ts page number; \
-the last page ha\
-s a line for dat\
-e, name and\x0asign\
-ature.</p>\x0a<p><b\
->Back up a valve\
-</b>: go online,\
- Valve \xe2\x86\x92 Downl\
-oad from valve, \
-then File \xe2\x86\x92 <b\
->Save backup\x0acop\
-y\xe2\x80\xa6</b> (propos\
-ed name: type ke\
-y, serial number\
-, date and time)\
-. The copy is wr\
-itten and\x0athe op\
-en document stay\
-s what it was: l\
-ater changes are\
- saved into the \
-document's own f\
-ile,\x0anever into \
-the backup. Save\
- As, by contrast\
-, makes the new \
-file the open do\
-cument.</p>\x0a\x0a<h2\
->Keyboard</h2>\x0a<\
-table>\x0a<tr><td>C\
-trl+O / Ctrl+S /\
- Ctrl+Shift+S</t\
-d><td>Open / Sav\
-e / Save As</td>\
-</tr>\x0a<tr><td>Ct\
-rl+Z / Ctrl+Y</t\
-d><td>Undo / Red\
-o</td></tr>\x0a<tr>\
-<td>Ctrl+P / Ctr\
-l+E</td><td>Prin\
-t / Export PDF</\
-td></tr>\x0a<tr><td\
->Ctrl+1 / Ctrl+2\
- / Ctrl+3 / Ctrl\
-+4</td><td>Flow \
-diagram / Parame\
-ter list / Oscil\
-loscope / CANope\
-n window</td></t\
-r>\x0a<tr><td>F5 / \
-Shift+F5</td><td\
->Online / Offlin\
-e</td></tr>\x0a<tr>\
-<td>Ctrl+U / Ctr\
-l+D</td><td>Uplo\
-ad to valve / Do\
-wnload from valv\
-e</td></tr>\x0a<tr>\
-<td>Ctrl+T / Ctr\
-l+I / Ctrl+H</td\
-><td>Valve selec\
-tion / Valve sta\
-tus / HID config\
-uration</td></tr\
->\x0a</table>\x0a<p><b\
->Scripts and tes\
-t benches</b>: t\
-he valve from Py\
-thon and shell s\
-cripts, <a href=\
-\x22scripting_en.ht\
-ml\x22>on this page\
-</a> (in English\
-).</p>\x0a</body>\x0a<\
-/html>\x0a\
+art them (over C\
+AN the reception\
+ deadline a cut-\
+off generator ha\
+d set\x0ain the val\
+ve is put back w\
+hen it is back, \
+and the status b\
+ar says so). A b\
+us-off of your C\
+AN\x0aadapter is na\
+med in the statu\
+s bar; the valve\
+ is found again \
+once the adapter\
+ is back on the\x0a\
+bus. An upload t\
+hat was cut off \
+reports what hap\
+pened and what t\
+he valve holds; \
+it\x0ais not resume\
+d. Another valve\
+ (another serial\
+ number) where t\
+he lost one was \
+is a new valve:\x0a\
+the program says\
+ so and does not\
+ connect to it b\
+y itself. Going \
+online or offlin\
+e yourself\x0astops\
+ the search. Wit\
+h an emulated va\
+lve, Valve \xe2\x86\x92 E\
+mulated valve \xe2\x86\
+\x92 <b>Pull the US\
+B cable</b>\x0aand \
+<b>Plug the USB \
+cable back in</b\
+> show it.</p>\x0a<\
+p>Values changed\
+ online are acti\
+ve in the valve \
+but not yet stor\
+ed: going offlin\
+e offers to\x0astor\
+e them, and Valv\
+e \xe2\x86\x92 <b>Store i\
+n valve</b> stor\
+es them at once \
+(what the valve \
+works with\x0abecom\
+es what it start\
+s with; recorded\
+ in the history)\
+. <b>Upload to v\
+alve</b> writes \
+all values, read\
+s them back, com\
+pares and stores\
+\x0athem; nothing i\
+s stored unless \
+every value was \
+verified. Before\
+ the first uploa\
+d to a valve\x0athe\
+ program saves a\
+ backup of the v\
+alve's own param\
+eters in the use\
+r data folder\x0a(<\
+code>backups/&lt\
+;serial&gt;/</co\
+de>).</p>\x0a<p><b>\
+Restart valve</b\
+> and <b>Restore\
+ factory values<\
+/b> are allowed \
+only with the\x0ahy\
+draulics disconn\
+ected; the progr\
+am asks you to c\
+onfirm this.</p>\
+\x0a<p>Valve \xe2\x86\x92 <b\
+>Verify by resta\
+rt\xe2\x80\xa6</b> (after\
+ an upload, whil\
+e the same valve\
+ stays online)\x0ar\
+estarts the valv\
+e \xe2\x80\x94 after the \
+same hydraulics \
+confirmation \xe2\x80\x94\
+ and reads its p\
+arameters back:\x0a\
+the status bar s\
+ays \xe2\x80\x9c\xe2\x80\xa6 read \
+back unchanged \xe2\
+\x80\xa6: verified aft\
+er a restart\xe2\x80\x9d,\
+ or a message li\
+sts\x0aeach value t\
+he valve did not\
+ keep (expected \
+\xe2\x86\x92 read back), \
+and the history \
+records the outc\
+ome.\x0aThe upload'\
+s own message sa\
+ys how the valve\
+ kept the values\
+: \xe2\x80\x9cstored with\
+ 0x1010\xe2\x80\x9d, or o\
+ver\x0aCANopen on a\
+ valve without a\
+ store command \xe2\
+\x80\x9ckept by the va\
+lve as written (\
+it has no store\x0a\
+command)\xe2\x80\x9d. Val\
+ues changed onli\
+ne and not store\
+d yet must be st\
+ored first (a re\
+start would\x0alose\
+ them). If the v\
+alve does not co\
+me back, the pro\
+gram goes offlin\
+e and says what \
+the valve\x0aholds \
+as far as known;\
+ the document ke\
+eps every value.\
+</p>\x0a\x0a<h2>Files<\
+/h2>\x0a<p>Paramete\
+r files (<code>*\
+.prm</code>) are\
+ text files. Ope\
+n, Save, Save As\
+, the recent\x0afil\
+es and drag and \
+drop work as usu\
+al; the program \
+asks before unsa\
+ved changes are \
+lost.\x0aEvery chan\
+ge can be undone\
+ (Ctrl+Z) and re\
+done (Ctrl+Y). F\
+ile \xe2\x86\x92 Print an\
+d File \xe2\x86\x92 Expor\
+t PDF\x0aproduce a \
+parameter record\
+ with type key, \
+serial number, f\
+irmware, file, d\
+ate, access leve\
+l,\x0athe flow diag\
+ram and every pa\
+rameter with its\
+ unit. Values ch\
+anged since the \
+file was saved\x0aa\
+re marked <b>*</\
+b> and the file \
+line says so; ev\
+ery page names t\
+he type key and \
+serial\x0anumber an\
+d carries its pa\
+ge number; the l\
+ast page has a l\
+ine for date, na\
+me and\x0asignature\
+.</p>\x0a<p><b>Back\
+ up a valve</b>:\
+ go online, Valv\
+e \xe2\x86\x92 Download f\
+rom valve, then \
+File \xe2\x86\x92 <b>Save\
+ backup\x0acopy\xe2\x80\xa6<\
+/b> (proposed na\
+me: type key, se\
+rial number, dat\
+e and time). The\
+ copy is written\
+ and\x0athe open do\
+cument stays wha\
+t it was: later \
+changes are save\
+d into the docum\
+ent's own file,\x0a\
+never into the b\
+ackup. Save As, \
+by contrast, mak\
+es the new file \
+the open documen\
+t.</p>\x0a\x0a<h2>Keyb\
+oard</h2>\x0a<table\
+>\x0a<tr><td>Ctrl+O\
+ / Ctrl+S / Ctrl\
++Shift+S</td><td\
+>Open / Save / S\
+ave As</td></tr>\
+\x0a<tr><td>Ctrl+Z \
+/ Ctrl+Y</td><td\
+>Undo / Redo</td\
+></tr>\x0a<tr><td>C\
+trl+P / Ctrl+E</\
+td><td>Print / E\
+xport PDF</td></\
+tr>\x0a<tr><td>Ctrl\
++1 / Ctrl+2 / Ct\
+rl+3 / Ctrl+4</t\
+d><td>Flow diagr\
+am / Parameter l\
+ist / Oscillosco\
+pe / CANopen win\
+dow</td></tr>\x0a<t\
+r><td>F5 / Shift\
++F5</td><td>Onli\
+ne / Offline</td\
+></tr>\x0a<tr><td>C\
+trl+U / Ctrl+D</\
+td><td>Upload to\
+ valve / Downloa\
+d from valve</td\
+></tr>\x0a<tr><td>C\
+trl+T / Ctrl+I /\
+ Ctrl+H</td><td>\
+Valve selection \
+/ Valve status /\
+ HID configurati\
+on</td></tr>\x0a</t\
+able>\x0a<p><b>Scri\
+pts and test ben\
+ches</b>: the va\
+lve from Python \
+and shell script\
+s, <a href=\x22scri\
+pting_en.html\x22>o\
+n this page</a> \
+(in English).</p\
+>\x0a</body>\x0a</html\
+>\x0a\
 \x00\x00\x0a4\
 <\
 !DOCTYPE html>\x0a<\
@@ -3707,35 +3761,35 @@ qt_resource_struct = b"\
 \x00\x00\x00\x00\x00\x02\x00\x00\x00\x02\x00\x00\x00\x01\
 \x00\x00\x00\x10\x00\x02\x00\x00\x00\x10\x00\x00\x00\x10\
 \x00\x00\x00\x00\x00\x02\x00\x00\x00\x0d\x00\x00\x00\x03\
-\x00\x00\x02\xb6\x00\x00\x00\x00\x00\x01\x00\x00\xcd\xb7\
-\x00\x00\x02L\x00\x00\x00\x00\x00\x01\x00\x00\xc8\x19\
-\x00\x00\x03X\x00\x00\x00\x00\x00\x01\x00\x00\xd7\xed\
-\x00\x00\x02\xd0\x00\x00\x00\x00\x00\x01\x00\x00\xce\xe4\
-\x00\x00\x022\x00\x00\x00\x00\x00\x01\x00\x00\xc6S\
-\x00\x00\x03t\x00\x00\x00\x00\x00\x01\x00\x00\xd9\x85\
-\x00\x00\x02\xe8\x00\x00\x00\x00\x00\x01\x00\x00\xd0\xb3\
-\x00\x00\x03:\x00\x00\x00\x00\x00\x01\x00\x00\xd6A\
-\x00\x00\x02d\x00\x00\x00\x00\x00\x01\x00\x00\xc9\xbf\
-\x00\x00\x03\x04\x00\x00\x00\x00\x00\x01\x00\x00\xd2|\
-\x00\x00\x02\x80\x00\x00\x00\x00\x00\x01\x00\x00\xca\xbc\
-\x00\x00\x02\x9c\x00\x00\x00\x00\x00\x01\x00\x00\xccu\
-\x00\x00\x03\x18\x00\x00\x00\x00\x00\x01\x00\x00\xd5\x00\
-\x00\x00\x01J\x00\x00\x00\x00\x00\x01\x00\x00w\xdf\
-\x00\x00\x00\xe6\x00\x00\x00\x00\x00\x01\x00\x00GS\
-\x00\x00\x01\xac\x00\x00\x00\x00\x00\x01\x00\x00\x8f\x0b\
-\x00\x00\x00\xc4\x00\x00\x00\x00\x00\x01\x00\x00@\x0a\
-\x00\x00\x01\x0a\x00\x00\x00\x00\x00\x01\x00\x00M\xde\
-\x00\x00\x01\x8a\x00\x00\x00\x00\x00\x01\x00\x00\x88\xb1\
+\x00\x00\x02\xb6\x00\x00\x00\x00\x00\x01\x00\x00\xd1\x17\
+\x00\x00\x02L\x00\x00\x00\x00\x00\x01\x00\x00\xcby\
+\x00\x00\x03X\x00\x00\x00\x00\x00\x01\x00\x00\xdbM\
+\x00\x00\x02\xd0\x00\x00\x00\x00\x00\x01\x00\x00\xd2D\
+\x00\x00\x022\x00\x00\x00\x00\x00\x01\x00\x00\xc9\xb3\
+\x00\x00\x03t\x00\x00\x00\x00\x00\x01\x00\x00\xdc\xe5\
+\x00\x00\x02\xe8\x00\x00\x00\x00\x00\x01\x00\x00\xd4\x13\
+\x00\x00\x03:\x00\x00\x00\x00\x00\x01\x00\x00\xd9\xa1\
+\x00\x00\x02d\x00\x00\x00\x00\x00\x01\x00\x00\xcd\x1f\
+\x00\x00\x03\x04\x00\x00\x00\x00\x00\x01\x00\x00\xd5\xdc\
+\x00\x00\x02\x80\x00\x00\x00\x00\x00\x01\x00\x00\xce\x1c\
+\x00\x00\x02\x9c\x00\x00\x00\x00\x00\x01\x00\x00\xcf\xd5\
+\x00\x00\x03\x18\x00\x00\x00\x00\x00\x01\x00\x00\xd8`\
+\x00\x00\x01J\x00\x00\x00\x00\x00\x01\x00\x00zD\
+\x00\x00\x00\xe6\x00\x00\x00\x00\x00\x01\x00\x00Hu\
+\x00\x00\x01\xac\x00\x00\x00\x00\x00\x01\x00\x00\x91p\
+\x00\x00\x00\xc4\x00\x00\x00\x00\x00\x01\x00\x00A,\
+\x00\x00\x01\x0a\x00\x00\x00\x00\x00\x01\x00\x00O\x00\
+\x00\x00\x01\x8a\x00\x00\x00\x00\x00\x01\x00\x00\x8b\x16\
 \x00\x00\x00:\x00\x00\x00\x00\x00\x01\x00\x00\x0bh\
-\x00\x00\x02\x0a\x00\x00\x00\x00\x00\x01\x00\x00\xbe\x94\
+\x00\x00\x02\x0a\x00\x00\x00\x00\x00\x01\x00\x00\xc1\xf4\
 \x00\x00\x00\x82\x00\x00\x00\x00\x00\x01\x00\x00\x17\xdd\
-\x00\x00\x01,\x00\x00\x00\x00\x00\x01\x00\x00T\xde\
-\x00\x00\x01\xd0\x00\x00\x00\x00\x00\x01\x00\x00\x95\xf0\
-\x00\x00\x01n\x00\x00\x00\x00\x00\x01\x00\x00}\x92\
+\x00\x00\x01,\x00\x00\x00\x00\x00\x01\x00\x00V\x00\
+\x00\x00\x01\xd0\x00\x00\x00\x00\x00\x01\x00\x00\x98U\
+\x00\x00\x01n\x00\x00\x00\x00\x00\x01\x00\x00\x7f\xf7\
 \x00\x00\x00\x1e\x00\x00\x00\x00\x00\x01\x00\x00\x00\x00\
-\x00\x00\x01\xee\x00\x00\x00\x00\x00\x01\x00\x00\xb4\x5c\
+\x00\x00\x01\xee\x00\x00\x00\x00\x00\x01\x00\x00\xb7\xbc\
 \x00\x00\x00^\x00\x00\x00\x00\x00\x01\x00\x00\x11V\
-\x00\x00\x00\xa0\x00\x00\x00\x00\x00\x01\x00\x009\xd4\
+\x00\x00\x00\xa0\x00\x00\x00\x00\x00\x01\x00\x00:\xf6\
 "
 
 def qInitResources():

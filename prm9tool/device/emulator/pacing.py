@@ -29,6 +29,7 @@ class Pacer:
         self.min_batch = min_batch
         self.max_batch = max_batch
         self.max_lag_cycles = int(max_lag_s / cycle_s)
+        self.max_lag_s = max_lag_s
         self.start = clock()
         self.cycles_done = 0
         self.dropped_cycles = 0

@@ -253,9 +253,16 @@ class EmulatedValve(CanopenSide):
 
     def usb_activity(self) -> None:
         """Called by the USB firmware for every report it receives and by the CANopen slave
-        for every SDO request (the setpoint override's watchdog)."""
+        for every SDO request (the setpoint override's watchdog).
+
+        The report counts at the moment it came: when the paced thread is behind the wall
+        clock (held up by the GIL or a loaded PC, it then catches up in a burst), that is the
+        simulated time the valve will reach at that moment, not the stalled one; otherwise
+        the burst would pass the watchdog's 0.5 s with no report interleaved, an artefact a
+        real valve, on its own clock, does not have."""
         with self.lock:
-            self._fw.override_last = self._fw.time
+            behind = min(self.pacer.lag_s(), self.pacer.max_lag_s) if self.running else 0.0
+            self._fw.override_last = self._fw.time + max(0.0, behind)
 
     # --- measuring points -------------------------------------------------------------
     def signal(self, key: str) -> float:
