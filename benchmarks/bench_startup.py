@@ -16,6 +16,7 @@ import subprocess
 import sys
 import tempfile
 import time
+from collections.abc import Callable, Sequence
 from pathlib import Path
 
 TYPE_KEY = "PRM9-06.3Z11/30-24E02S02-CA"
@@ -91,27 +92,41 @@ def prm9tool_once() -> dict[str, float]:
     return moments
 
 
-def main() -> int:
-    """Measure and print the figures."""
-    parser = argparse.ArgumentParser(description=__doc__)
+def compare_with_pyside(
+    description: str | None,
+    measure_once: Callable[[], dict[str, float]],
+    rows: Sequence[tuple[str, str]],
+) -> int:
+    """Parse ``--runs``/``--quick``, then print the median of each of ``rows`` (figure name,
+    label) measured by ``measure_once`` in fresh processes, against the reference."""
+    parser = argparse.ArgumentParser(description=description)
     parser.add_argument("--runs", type=int, default=7)
     parser.add_argument("--quick", action="store_true", help="a smoke run: seconds, not figures")
     args = parser.parse_args()
     runs = 1 if args.quick else args.runs
     reference_once()  # warm the file cache for both
-    prm9tool_once()
+    measure_once()
     reference = statistics.median(reference_once() for _ in range(runs))
-    samples = [prm9tool_once() for _ in range(runs)]
+    samples = [measure_once() for _ in range(runs)]
     print(f"runs per figure: {runs} (median), Python {sys.version.split()[0]}")
     print(f"{'python -c import PySide6.QtWidgets':44s} {reference * 1000:7.0f} ms   1.00 x")
-    for name, label in (
-        ("shown", "prm9tool: main window shown"),
-        ("online", "prm9tool --emulator: online"),
-        ("ready", "prm9tool --emulator: valve read, edits live"),
-    ):
+    for name, label in rows:
         value = statistics.median(s[name] for s in samples)
         print(f"{label:44s} {value * 1000:7.0f} ms {value / reference:6.2f} x")
     return 0
+
+
+def main() -> int:
+    """Measure and print the figures."""
+    return compare_with_pyside(
+        __doc__,
+        prm9tool_once,
+        (
+            ("shown", "prm9tool: main window shown"),
+            ("online", "prm9tool --emulator: online"),
+            ("ready", "prm9tool --emulator: valve read, edits live"),
+        ),
+    )
 
 
 if __name__ == "__main__":

@@ -15,12 +15,11 @@ Run:  QT_QPA_PLATFORM=offscreen PYTHONPATH=$PWD python benchmarks/bench_tuning_o
 
 from __future__ import annotations
 
-import argparse
 import os
-import statistics
 import subprocess
 import sys
-import time
+
+from bench_startup import compare_with_pyside
 
 CHILD = r"""
 import sys, time
@@ -41,13 +40,6 @@ print("scipy", time.perf_counter() - start, flush=True)
 """
 
 
-def reference_once() -> float:
-    """Seconds for a fresh ``python -c "import PySide6.QtWidgets"``."""
-    start = time.perf_counter()
-    subprocess.run([sys.executable, "-c", "import PySide6.QtWidgets"], check=True)
-    return time.perf_counter() - start
-
-
 def tuning_once() -> dict[str, float]:
     """Seconds to open the Tuning window, and to import scipy after it, in a fresh process."""
     env = dict(os.environ)
@@ -66,24 +58,14 @@ def tuning_once() -> dict[str, float]:
 
 def main() -> int:
     """Measure and print the figures."""
-    parser = argparse.ArgumentParser(description=__doc__)
-    parser.add_argument("--runs", type=int, default=7)
-    parser.add_argument("--quick", action="store_true", help="a smoke run: seconds, not figures")
-    args = parser.parse_args()
-    runs = 1 if args.quick else args.runs
-    reference_once()  # warm the file cache for both
-    tuning_once()
-    reference = statistics.median(reference_once() for _ in range(runs))
-    samples = [tuning_once() for _ in range(runs)]
-    print(f"runs per figure: {runs} (median), Python {sys.version.split()[0]}")
-    print(f"{'python -c import PySide6.QtWidgets':44s} {reference * 1000:7.0f} ms   1.00 x")
-    for name, label in (
-        ("open", "Tuning window opened the first time"),
-        ("scipy", "then scipy imported (first test run)"),
-    ):
-        value = statistics.median(s[name] for s in samples)
-        print(f"{label:44s} {value * 1000:7.0f} ms {value / reference:6.2f} x")
-    return 0
+    return compare_with_pyside(
+        __doc__,
+        tuning_once,
+        (
+            ("open", "Tuning window opened the first time"),
+            ("scipy", "then scipy imported (first test run)"),
+        ),
+    )
 
 
 if __name__ == "__main__":
