@@ -326,6 +326,13 @@ class Firmware(ParameterMemory):
         value = self.od.values[param.key]
         return value if isinstance(value, int) else 0
 
+    def values_of(self, mnemonics: list[str]) -> list[int]:
+        """:meth:`value` of each mnemonic, in one call."""
+        by_mnemonic, values = self.od.by_mnemonic, self.od.values
+        found = [by_mnemonic.get(m) for m in mnemonics]
+        raw = [0 if param is None else values[param.key] for param in found]
+        return [value if isinstance(value, int) else 0 for value in raw]
+
     def _refresh_inputs(self) -> None:
         loop = self.loop
         supply = self.supply
@@ -336,9 +343,12 @@ class Firmware(ParameterMemory):
                 self.value,
                 (variant, plant, fw, float(temperature).hex(), float(supply).hex()),
                 lambda v: config.coefficients(variant, v, plant, fw, temperature, supply),
+                self.values_of,
             )
             loop.version += 1
-            self.setp_curve = self.curve_memo.get(self.value, (), config.setpoint_curve)
+            self.setp_curve = self.curve_memo.get(
+                self.value, (), config.setpoint_curve, self.values_of
+            )
         loop.supply_v = supply
         loop.inputs_version += 1
         thermal.update_reading(self)

@@ -200,12 +200,13 @@ class UsbFirmware:
                 value: bytes | int = self._valve.read_bytes(index, subindex)
             except SdoAbortError as exc:
                 value = exc.code
-            if ReadReply.entry_size(value) > room:
+            size = 5 if isinstance(value, int) else 1 + len(value)  # ReadReply.entry_size
+            if size > room:
                 if not values:  # too long for any READ answer: the host must read it segmented
                     values.append(int(AbortCode.LENGTH_TOO_HIGH))
                 break
             values.append(value)
-            room -= ReadReply.entry_size(value)
+            room -= size
         return ReadReply(tuple(values))
 
     def _write(self, request: WriteEntries) -> Response:

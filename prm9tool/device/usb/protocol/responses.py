@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import struct
 from collections.abc import Callable
 from dataclasses import dataclass
 
@@ -19,6 +20,8 @@ from prm9tool.device.usb.protocol.requests import (
 from prm9tool.device.usb.protocol.status import StatusReply
 from prm9tool.device.usb.protocol.wire import Reader, Writer
 from prm9tool.errors import AbortCode
+
+_ABORTED = struct.Struct("<BI")  # a READ answer entry refused: ABORT_ENTRY, abort code
 
 
 # --- responses -------------------------------------------------------------------------------
@@ -55,12 +58,19 @@ class ReadReply:
 
     def encode(self, w: Writer) -> None:
         """Write the body: count, then length + data, or 0xFF + abort code (u32), per entry."""
-        w.u8(len(self.values))
+        # Built in one buffer, not field by field: an upload answers ~140 entries (the ranges
+        # are still checked: bytearray refuses a count or length > 255, struct a code > u32).
+        body = bytearray((len(self.values),))
         for value in self.values:
             if isinstance(value, int):
-                w.u8(ABORT_ENTRY).u32(value)
+                try:
+                    body += _ABORTED.pack(ABORT_ENTRY, value)
+                except struct.error as exc:
+                    raise ValueError(f"{value!r} does not fit an abort code ({exc})") from None
             else:
-                w.u8(len(value)).raw(value)
+                body.append(len(value))
+                body += value
+        w.raw(body)
 
     @classmethod
     def decode(cls, r: Reader) -> ReadReply:
