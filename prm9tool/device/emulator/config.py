@@ -56,8 +56,8 @@ class Memo(Generic[T]):
         every parameter write, then costs one call instead of one per value read).
         """
         if inputs == self._inputs:
-            names = self._names
-            current = values_of(names) if values_of else [values(m) for m in names]
+            last = self._names
+            current = values_of(last) if values_of else [values(m) for m in last]
             if current == self._values:
                 return self._result  # type: ignore[no-any-return]
         names: list[str] = []

@@ -51,7 +51,7 @@ class Writer:
         """Append an unsigned 32-bit number."""
         return self._pack(_I, value)
 
-    def raw(self, data: bytes) -> Writer:
+    def raw(self, data: bytes | bytearray) -> Writer:
         """Append bytes as they are."""
         self._data += data
         return self
