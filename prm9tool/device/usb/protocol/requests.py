@@ -86,7 +86,7 @@ def runs(keys: Sequence[tuple[int, int]]) -> list[tuple[int, int, int]]:
 
 
 def _read_run(r: Reader) -> tuple[int, int, int]:
-    index, first, count = r.u16(), r.u8(), r.count(1, 255)
+    index, first, count = r.run(1)
     if first + count > 256:
         raise MalformedReportError(f"run 0x{index:04X}/{first} × {count} passes subindex 255")
     return index, first, count
@@ -108,7 +108,7 @@ class ReadEntries:
         groups = runs(self.addresses)
         w.u8(len(groups))
         for index, first, count in groups:
-            w.u16(index).u8(first).u8(count)
+            w.run(index, first, count)
 
     @classmethod
     def decode(cls, r: Reader) -> ReadEntries:
@@ -140,10 +140,9 @@ class WriteEntries:
         w.u8(len(groups))
         values = iter(self.entries)
         for index, first, count in groups:
-            w.u16(index).u8(first).u8(count)
+            w.run(index, first, count)
             for _ in range(count):
-                data = next(values)[2]
-                w.u8(len(data)).raw(data)
+                w.sized(next(values)[2])
 
     @classmethod
     def decode(cls, r: Reader) -> WriteEntries:
@@ -151,7 +150,7 @@ class WriteEntries:
         entries = []
         for _ in range(r.count(1, MAX_RUNS)):
             index, first, count = _read_run(r)
-            entries += [(index, first + n, r.raw(r.u8())) for n in range(count)]
+            entries += [(index, first + n, r.sized()) for n in range(count)]
         return cls(tuple(entries))
 
 

@@ -11,6 +11,7 @@ HEADER_SIZE = 2  # opcode, sequence number
 BODY_SIZE = REPORT_SIZE - HEADER_SIZE  # 62
 _FIELDS = {fmt: struct.Struct("<" + fmt) for fmt in "BHhI"}  # compiled once: a report is
 _B, _H, _h, _I = (_FIELDS[fmt] for fmt in "BHhI")  # built and parsed field by field
+_RUN = struct.Struct("<HBB")  # index, first subindex, count: one run of consecutive entries
 
 
 class MalformedReportError(ProtocolError):
@@ -50,6 +51,22 @@ class Writer:
     def u32(self, value: int) -> Writer:
         """Append an unsigned 32-bit number."""
         return self._pack(_I, value)
+
+    def run(self, index: int, first: int, count: int) -> Writer:
+        """Append a run of entries: index (u16), first subindex and count (u8 each)."""
+        try:
+            self._data += _RUN.pack(index, first, count)
+        except struct.error as exc:
+            raise ValueError(f"run {index!r}/{first!r} × {count!r} does not fit ({exc})") from None
+        return self
+
+    def sized(self, data: bytes) -> Writer:
+        """Append a length byte and the bytes."""
+        if len(data) > 0xFF:
+            raise ValueError(f"{len(data)} bytes do not fit a length byte")
+        self._data.append(len(data))
+        self._data += data
+        return self
 
     def raw(self, data: bytes | bytearray) -> Writer:
         """Append bytes as they are."""
@@ -113,6 +130,30 @@ class Reader:
         chunk = self._data[self._pos : end]
         self._pos = end
         return chunk
+
+    def run(self, lowest: int) -> tuple[int, int, int]:
+        """Next run of entries: index (u16), first subindex, count (``lowest``…255)."""
+        position = self._pos
+        end = position + _RUN.size
+        if end > len(self._data):
+            raise MalformedReportError(f"field at byte {position} runs past the end of the report")
+        self._pos = end
+        index, first, count = _RUN.unpack_from(self._data, position)
+        if count < lowest:
+            raise MalformedReportError(f"byte {position + 3}: count {count} not in {lowest}…255")
+        return index, first, count
+
+    def sized(self) -> bytes:
+        """Next length byte and that many bytes."""
+        position = self._pos
+        data = self._data
+        if position >= len(data):
+            raise MalformedReportError(f"field at byte {position} runs past the end of the report")
+        end = position + 1 + data[position]
+        if end > len(data):
+            raise MalformedReportError(f"field at byte {position} runs past the end of the report")
+        self._pos = end
+        return data[position + 1 : end]
 
     def count(self, lowest: int, highest: int) -> int:
         """Next byte as a count that must lie in ``lowest…highest``."""
