@@ -42,22 +42,22 @@ class Memo(Generic[T]):
         self._names: list[str] = []  # the values the last computation read, in order
         self._values: list[int] = []
         self._result: Any = None
+        self._reader: Callable[[], list[int]] | None = None  # see get()
 
     def get(
         self,
         values: Values,
         inputs: tuple[object, ...],
         compute: Callable[[Values], T],
-        values_of: Callable[[list[str]], list[int]] | None = None,
+        reader_for: Callable[[list[str]], Callable[[], list[int]]] | None = None,
     ) -> T:
         """``compute(values)``, or its last result if nothing it depends on has changed.
 
-        ``values_of(names)``: ``[values(m) for m in names]`` in one call (the check, run after
-        every parameter write, then costs one call instead of one per value read).
+        ``reader_for(names)``: a function that returns ``[values(m) for m in names]`` in one
+        call; the check, run after every parameter write, then costs one call, not one per value.
         """
         if inputs == self._inputs:
-            last = self._names
-            current = values_of(last) if values_of else [values(m) for m in last]
+            current = self._reader() if self._reader else [values(m) for m in self._names]
             if current == self._values:
                 return self._result  # type: ignore[no-any-return]
         names: list[str] = []
@@ -71,6 +71,7 @@ class Memo(Generic[T]):
 
         self._result = result = compute(recording)
         self._inputs, self._names, self._values = inputs, names, read
+        self._reader = reader_for(names) if reader_for else None
         return result
 
 

@@ -8,6 +8,7 @@ from __future__ import annotations
 
 import os
 from collections.abc import Callable
+from operator import itemgetter
 from typing import Any
 
 from prm9tool.catalogue import CATALOGUE
@@ -326,12 +327,14 @@ class Firmware(ParameterMemory):
         value = self.od.values[param.key]
         return value if isinstance(value, int) else 0
 
-    def values_of(self, mnemonics: list[str]) -> list[int]:
-        """:meth:`value` of each mnemonic, in one call."""
-        by_mnemonic, values = self.od.by_mnemonic, self.od.values
-        found = [by_mnemonic.get(m) for m in mnemonics]
-        raw = [0 if param is None else values[param.key] for param in found]
-        return [value if isinstance(value, int) else 0 for value in raw]
+    def reader_for(self, mnemonics: list[str]) -> Callable[[], list[int]]:
+        """A function returning :meth:`value` of each mnemonic (one C-level lookup if all are
+        numbers on this variant); the loop memos' check."""
+        params = [self.od.by_mnemonic.get(m) for m in mnemonics]
+        if len(params) < 2 or any(p is None or p.is_string for p in params):
+            return lambda: [self.value(m) for m in mnemonics]
+        getter = itemgetter(*[p.key for p in params if p is not None])
+        return lambda: list(getter(self.od.values))
 
     def _refresh_inputs(self) -> None:
         loop = self.loop
@@ -343,11 +346,11 @@ class Firmware(ParameterMemory):
                 self.value,
                 (variant, plant, fw, float(temperature).hex(), float(supply).hex()),
                 lambda v: config.coefficients(variant, v, plant, fw, temperature, supply),
-                self.values_of,
+                self.reader_for,
             )
             loop.version += 1
             self.setp_curve = self.curve_memo.get(
-                self.value, (), config.setpoint_curve, self.values_of
+                self.value, (), config.setpoint_curve, self.reader_for
             )
         loop.supply_v = supply
         loop.inputs_version += 1
