@@ -7,6 +7,7 @@ build their reports here and execute them elsewhere.
 from __future__ import annotations
 
 from collections.abc import Sequence
+from functools import lru_cache
 
 from prm9tool.device.usb.protocol.requests import (
     MAX_READ_ENTRIES,
@@ -54,8 +55,14 @@ def pack_reads(items: Sequence[tuple[int, int, int]]) -> list[ReadEntries]:
     """READ requests for ``(index, subindex, expected size)`` items, in order.
 
     Each request holds only as many entries as their answers fit in one report, so the valve
-    answers every entry in one go; consecutive subindices share one run header.
+    answers every entry in one go; consecutive subindices share one run header. An upload
+    reads the same list twice (verify, then the stored values): the packing is remembered.
     """
+    return list(_pack_reads(tuple(items)))
+
+
+@lru_cache(maxsize=32)
+def _pack_reads(items: tuple[tuple[int, int, int], ...]) -> tuple[ReadEntries, ...]:
     batches: list[ReadEntries] = []
     keys: list[tuple[int, int]] = []
     runs_ = _RunCount()
@@ -76,7 +83,7 @@ def pack_reads(items: Sequence[tuple[int, int, int]]) -> list[ReadEntries]:
         answer += need
     if keys:
         batches.append(ReadEntries(tuple(keys)))
-    return batches
+    return tuple(batches)
 
 
 def pack_writes(entries: Sequence[tuple[int, int, bytes]]) -> list[WriteEntries]:
