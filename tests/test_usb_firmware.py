@@ -54,7 +54,7 @@ def test_read_serial_and_an_unknown_object(firmware):
 
 
 def test_long_value_in_a_read_asks_for_a_segmented_read(firmware, valve, monkeypatch):
-    monkeypatch.setattr(valve, "read_bytes", lambda index, sub: b"x" * 70)
+    monkeypatch.setitem(valve._fw.od.getters, (0x1008, 0), lambda: "x" * 70)  # name: 70 bytes
     answer = decode_response(firmware.handle(encode_request(1, ReadEntries(((0x1008, 0),)))))
     assert answer[2].values == (int(AbortCode.LENGTH_TOO_HIGH),)
 

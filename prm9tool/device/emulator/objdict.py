@@ -8,7 +8,7 @@ sub-indices. Errors are raised as :class:`SdoAbortError` with the CiA 301 abort 
 from __future__ import annotations
 
 import struct
-from collections.abc import Callable
+from collections.abc import Callable, Iterable
 
 from prm9tool.catalogue import CATALOGUE, Catalogue, DataType, ObjAccess, Parameter, Texts
 from prm9tool.catalogue.variant import Variant
@@ -132,6 +132,26 @@ class ObjectDictionary:
         """Read and encode per the catalogue data type (little-endian)."""
         param = self.entry(index, subindex)
         return param.dtype.encode(self._read(param))
+
+    def read_encoded(self, addresses: Iterable[Key], room: int) -> list[bytes | int]:
+        """:meth:`read_bytes` of ``addresses`` in order, a refused entry as its abort code, as
+        many as fit ``room`` bytes at a length byte each (an abort code takes 5 bytes)."""
+        values: list[bytes | int] = []
+        entries = self.entries
+        for key in addresses:
+            param = entries.get(key)
+            try:
+                if param is None:
+                    param = self.entry(*key)  # raises the abort
+                value: bytes | int = param.dtype.encode(self._read(param))
+            except SdoAbortError as exc:
+                value = exc.code
+            size = 5 if isinstance(value, int) else 1 + len(value)
+            if size > room:
+                break
+            values.append(value)
+            room -= size
+        return values
 
     def write_bytes(self, index: int, subindex: int, data: bytes) -> None:
         """Decode per the catalogue data type and write; wrong lengths abort."""

@@ -193,20 +193,9 @@ class UsbFirmware:
         return Done()  # Restart: executed in handle() after the answer is built
 
     def _read(self, request: ReadEntries) -> ReadReply:
-        values: list[bytes | int] = []
-        room = READ_ANSWER_ROOM
-        for index, subindex in request.addresses:
-            try:
-                value: bytes | int = self._valve.read_bytes(index, subindex)
-            except SdoAbortError as exc:
-                value = exc.code
-            size = 5 if isinstance(value, int) else 1 + len(value)  # ReadReply.entry_size
-            if size > room:
-                if not values:  # too long for any READ answer: the host must read it segmented
-                    values.append(int(AbortCode.LENGTH_TOO_HIGH))
-                break
-            values.append(value)
-            room -= size
+        values = self._valve.read_encoded(request.addresses, READ_ANSWER_ROOM)
+        if not values and request.addresses:  # too long for any READ answer: read it segmented
+            values = [int(AbortCode.LENGTH_TOO_HIGH)]
         return ReadReply(tuple(values))
 
     def _write(self, request: WriteEntries) -> Response:

@@ -5,7 +5,7 @@ from __future__ import annotations
 import math
 import os
 import threading
-from collections.abc import Callable, Sequence
+from collections.abc import Callable, Iterable, Sequence
 from typing import TYPE_CHECKING
 
 import numpy as np
@@ -105,6 +105,12 @@ class EmulatedValve(CanopenSide):
         """Read an object encoded per its catalogue data type (little-endian)."""
         with self.lock:
             return self._fw.od.read_bytes(index, subindex)
+
+    def read_encoded(self, addresses: Iterable[tuple[int, int]], room: int) -> list[bytes | int]:
+        """Encoded values (abort codes for refused entries) that fit ``room`` bytes of a USB
+        READ answer (:meth:`.objdict.ObjectDictionary.read_encoded`)."""
+        with self.lock:
+            return self._fw.od.read_encoded(addresses, room)
 
     def write_bytes(self, index: int, subindex: int, data: bytes) -> None:
         """Write encoded bytes; a wrong length aborts (LENGTH_TOO_HIGH / LENGTH_TOO_LOW)."""
