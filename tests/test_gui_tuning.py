@@ -189,6 +189,24 @@ def test_the_profile_refusal_goes_when_the_field_is_cleared_or_a_good_profile_ch
     assert not window.runner.busy  # choosing a profile runs nothing
 
 
+def test_the_profile_refusal_leads_in_the_program_language(qtbot, window, tmp_path):
+    """In German the refusal was the analysis layer's English sentence alone."""
+    from prm9tool import i18n
+
+    report = window.report
+    window.tabs.setCurrentWidget(report)
+    report.profile_path.setText(str(tmp_path / "missing.toml"))
+    i18n.set_language("de")
+    try:
+        report.run_button.click()
+        shown = report.result.text()
+    finally:
+        i18n.set_language("en")
+    assert shown.startswith("Das Abnahmeprofil kann nicht verwendet werden.")
+    assert "missing.toml" in shown  # the file named, as the analysis layer says it
+    assert not window.runner.busy
+
+
 def test_stop_ends_the_test_and_says_so(qtbot, window):
     window.tabs.setCurrentWidget(window.static)
     window.static.period.setValue(60.0)

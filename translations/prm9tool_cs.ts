@@ -1777,6 +1777,10 @@ Poslední akce možná nebyla dokončena. Uložte svou práci pod novým názvem
             <source>No bit rate gave valid frames.</source>
             <translation>Při žádné přenosové rychlosti nepřišly platné rámce.</translation>
         </message>
+        <message>
+            <source>The acceptance profile cannot be used.</source>
+            <translation>Přejímací profil nelze použít.</translation>
+        </message>
     </context>
     <context>
         <name>FileWorkflow</name>

@@ -1767,6 +1767,10 @@ Die letzte Aktion wurde womöglich nicht vollständig ausgeführt. Speichern Sie
             <source>No bit rate gave valid frames.</source>
             <translation>Bei keiner Bitrate kamen gültige Frames an.</translation>
         </message>
+        <message>
+            <source>The acceptance profile cannot be used.</source>
+            <translation>Das Abnahmeprofil kann nicht verwendet werden.</translation>
+        </message>
     </context>
     <context>
         <name>FileWorkflow</name>

@@ -22,6 +22,7 @@ from pathlib import Path
 from typing import Any
 
 from prm9tool.errors import Prm9Error
+from prm9tool.messages import QT_TRANSLATE_NOOP
 
 FIGURES = {  # figure name: unit (step figures are checked for every step amplitude)
     "step_overshoot_pct": "%",
@@ -40,6 +41,8 @@ FIGURES = {  # figure name: unit (step figures are checked for every step amplit
 
 class ProfileError(Prm9Error):
     """An acceptance profile cannot be used; the message names the file and the key."""
+
+    summary = QT_TRANSLATE_NOOP("Errors", "The acceptance profile cannot be used.")
 
 
 @dataclass(frozen=True)

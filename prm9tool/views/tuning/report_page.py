@@ -21,6 +21,7 @@ from prm9tool.characterize.run import (
     write_csv_files,
 )
 from prm9tool.online.characterization_history import run_with_history
+from prm9tool.translate import error_text
 from prm9tool.views.tuning.host import TuningHost
 from prm9tool.views.tuning.pages import Page
 from prm9tool.views.tuning.report import figure_label, limit_text, value_short, verdict, write_pdf
@@ -71,7 +72,7 @@ class ReportPage(Page):
         try:
             profile = load_profile(path) if path else DEFAULT
         except ProfileError as exc:
-            self.result.setText(str(exc))
+            self.result.setText(error_text(exc))
             self._profile_error = True
             return
         what = self.tr("steps of %1 %, a sine sweep of ±%2 % and a triangle over the whole range, about %3 s").replace(
