@@ -52,11 +52,19 @@ def test_a_square_keeps_its_period_with_half_the_tpdo1_frames_lost(can_valve):  
                 link.set(3277 if high else 0)
                 toggles.append(time.perf_counter())
 
-        driver = threading.Thread(target=square)
+        lags: list[float] = []  # how far the in-process valve's simulation fell behind
+
+        def watch() -> None:
+            while not stop.wait(0.002):
+                lags.append(can_valve.valve.pacer.lag_s())
+
+        driver, watcher = threading.Thread(target=square), threading.Thread(target=watch)
         driver.start()
+        watcher.start()
         time.sleep(7 * HALF_S)
         stop.set()
         driver.join()
+        watcher.join()
         time.sleep(0.1)  # the last SYNCs' slots are handed out after their settling time
         blocks = [session.stream_read()]
         lost = session.samples_lost
@@ -79,8 +87,12 @@ def test_a_square_keeps_its_period_with_half_the_tpdo1_frames_lost(can_valve):  
     assert len(actual_edges) == len(demand_edges)
     # (with the samples drawn one after the other, the lag would grow by hundreds of ms per
     # edge; here it is the valve's response plus, at most, a run of lost frames)
+    # The emulated valve runs in this process: a PC that holds it up delays its answer by as
+    # much as its simulation fell behind (a valve of its own never is): that is allowed for.
+    behind = max(lags, default=0.0)
     lag = actual_edges - demand_edges
-    assert (lag > 0).all() and (lag < 0.07).all(), lag
+    # (never before its demand; at the same SYNC when a busy PC skipped the ticks between)
+    assert (lag >= 0).all() and (lag < 0.07 + behind).all(), (lag, behind)
 
 
 @pytest.fixture
