@@ -24,7 +24,7 @@ from pathlib import Path
 from prm9tool.catalogue import CATALOGUE, Parameter
 from prm9tool.catalogue.typekey import TypeKey
 from prm9tool.errors import FileFormatError, FileProblem
-from prm9tool.files.atomicfile import atomic_write
+from prm9tool.files.atomicfile import atomic_write, remove_stale_temporaries
 from prm9tool.files.prmcheck import (
     FORMAT_NAME,
     FORMAT_VERSION,
@@ -222,7 +222,10 @@ def read_bytes(data: bytes, path: str = "<bytes>") -> PrmContents:
 
 
 def read_file(path: str | os.PathLike[str]) -> PrmContents:
-    """Read a *.prm file; raises FileFormatError listing every problem (never anything else)."""
+    """Read a *.prm file; raises FileFormatError listing every problem (never anything else).
+
+    Removes the temporary files that a killed save of it left (atomicfile)."""
+    remove_stale_temporaries(Path(path))
     return _contents_or_raise(check_file(path), os.fspath(path))
 
 
