@@ -88,6 +88,21 @@ class ParameterDocument(QObject):
         return self._path
 
     @property
+    def file_type_key(self) -> TypeKey | None:
+        """The valve type of the file at :attr:`path` (as last opened or saved), None
+        without a file: Save writes into that file only while the document is of its type."""
+        return self._saved[0] if self._path is not None else None
+
+    def detach_file(self) -> None:
+        """The document becomes a new, unsaved one (its values kept): the file it came from
+        stays as it is, and Save asks for a name."""
+        if self._path is None:
+            return
+        self._path = None
+        self.path_changed.emit("")
+        self._emit_modified()
+
+    @property
     def modified(self) -> bool:
         """True when the values differ from the last load/save (undo back to it clears it)."""
         return (self._type_key, self._values) != self._saved
