@@ -245,8 +245,9 @@ class ValveWorkflow(QObject):
 
     def _stamp(self, doc: ParameterDocument) -> None:
         info = self._connection.device
-        doc.source_serial = None if info is None else info.serial
-        doc.source_firmware = None if info is None else info.firmware
+        doc.set_source(
+            None if info is None else info.serial, None if info is None else info.firmware
+        )
 
     def _valve_key(self) -> TypeKey | None:
         info = self._connection.device
