@@ -180,11 +180,11 @@ class FileWorkflow(QObject):
 
     def save_as(self) -> bool:
         """Ask for a file name and save there."""
-        path = self._doc.path
-        if path is not None and self._doc.file_type_key == self._doc.type_key:
-            suggestion = path
+        current = self._doc.path
+        if current is not None and self._doc.file_type_key == self._doc.type_key:
+            suggestion = current
         else:  # beside the file of another type, not over it
-            folder = path.parent if path is not None else Path(self.last_folder())
+            folder = current.parent if current is not None else Path(self.last_folder())
             suggestion = folder / self._suggested_name()
         path, _filter = QFileDialog.getSaveFileName(
             self._window,
