@@ -34,7 +34,7 @@ from prm9tool.files.prmcheck import (
     escape_text,
 )
 from prm9tool.files.prmlexer import CONTROL_CHARACTERS, Lexer, check_integrity, checksum
-from prm9tool.messages import QT_TRANSLATE_NOOP
+from prm9tool.messages import QT_TRANSLATE_NOOP, Message
 
 MAX_FILE_SIZE = 1 << 20  # a full file is about 4 kB; anything near 1 MiB is not a *.prm file
 BANNER = (
@@ -113,12 +113,15 @@ class PrmContents:
         lines.append(entry + self.inline_comments.get(name, hint))
 
 
-def _missing_text(contents: PrmContents, missing: list[str]) -> str:
-    names = ", ".join(missing[:4]) + (f" and {len(missing) - 4} more" if len(missing) > 4 else "")
-    return (
-        f"no value for {names}, which every {contents.type_key} file holds: "
-        "these are not the values of such a valve"
-    )
+_MISSING = QT_TRANSLATE_NOOP(
+    "Problems",
+    "no value for {0}, which every {1} file holds: these are not the values of such a valve",
+)
+
+
+def _missing_text(contents: PrmContents, missing: list[str]) -> Message:
+    names = ", ".join(missing[:4]) + (f" … ({len(missing)})" if len(missing) > 4 else "")
+    return _MISSING(names, str(contents.type_key))
 
 
 def _escape_controls(value: str) -> str:
