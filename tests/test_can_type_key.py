@@ -138,3 +138,27 @@ def test_a_download_under_a_key_whose_objects_the_valve_lacks_is_refused_in_word
     assert "has no object for SENSTYPE" in err and E04 in err
     assert not out.exists()
     assert remembered(data_dir, rig.valve.serial) is None  # a key the valve contradicts
+
+
+def test_an_upload_under_a_files_key_whose_objects_the_valve_lacks_writes_nothing(
+    tmp_path, data_dir
+):
+    """Issue 34 item 5: an E04 file went into such a valve "ok", its E04 parameters skipped
+    as "not available"."""
+    from prm9tool.catalogue.typekey import TypeKey
+    from prm9tool.device.canlink.session import CanopenSession
+    from prm9tool.errors import TypeKeyError
+    from prm9tool.files.prmfile import PrmContents
+
+    rig = make_link_rig("upload-no-sensor", tmp_path, E02, real_valve=True)
+    rig.missing |= {(index, 0xFF) for index in range(0x2005, 0x2009)}
+    values = PrmContents.factory(TypeKey.parse(E04)).values | {"LIMTA": 1800}
+    try:
+        with (
+            CanopenSession(rig.options, 10, type_key=E04) as session,  # the file's key
+            pytest.raises(TypeKeyError, match="has no object for SENSTYPE"),
+        ):
+            session.upload(values)
+        assert rig.working("LIMTA") != 1800 and rig.stored_set() == {}
+    finally:
+        rig.close()

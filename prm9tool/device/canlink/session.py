@@ -31,7 +31,7 @@ from collections.abc import Callable, Mapping, Sequence
 
 import numpy as np
 
-from prm9tool.catalogue import LOAD_SIGNATURE, SAVE_SIGNATURE, Parameter
+from prm9tool.catalogue import CATALOGUE, LOAD_SIGNATURE, SAVE_SIGNATURE, Parameter
 from prm9tool.catalogue.commissioning import NmtCommand
 from prm9tool.catalogue.typekey import TypeKey
 from prm9tool.device.canlink import bus as canbus
@@ -206,6 +206,23 @@ class CanopenSession(UploadSteps, ValveSession):
                 forget(user_data_dir(), self.info.serial, self.info.type_key)
                 raise refusal
         return values
+
+    def _before_upload(self, params: Sequence[Parameter], cancel: threading.Event | None) -> None:
+        """The snapshot (UploadSteps); then, for a key that was given (no 0x2041), the
+        refusal of a key whose objects the snapshot found missing — before anything is
+        written (an E04 file's key on an E02 without the external-sensor objects)."""
+        super()._before_upload(params, cancel)
+        if self.key_given:
+            present = {
+                p.mnemonic: 0
+                for p in CATALOGUE.file_parameters(self.variant)
+                if p.mnemonic not in self.unavailable
+            }
+            key = TypeKey.parse(self.info.type_key)
+            refusal = lacking_objects(self.info.serial, key, present)
+            if refusal is not None:
+                self._snapshot = None  # nothing was written: nothing to put back
+                raise refusal
 
     # --- entries ----------------------------------------------------------------------------
     def _read_entries(
