@@ -559,3 +559,21 @@ def test_taking_the_values_of_another_valve_type_never_overwrites_the_file(
     window.commands["save"].trigger()  # Ctrl+S asks for a name …
     assert len(asked) == 1 and asked[0].startswith(str(tmp_path))
     assert path.read_bytes() == before  # … and the E02 file holds what it held
+
+
+def test_a_document_confirmed_for_another_valve_is_not_asked_about_again(
+    qtbot, window, answers, tmp_path
+):
+    """Issue 34 item 13: "The document was read from valve 1001; you are online with valve
+    4711…" came back at every reconnect after the user had said Yes and both agreed."""
+    window.doc.source_serial = 1001
+    window.files.save_to(tmp_path / "valve_1001.prm")
+    answers.answers = [prompts.Button.Yes]
+    go_online(qtbot, window, f"{E02}:4713")
+    _settled(qtbot, window)  # the same values: online as usual
+    assert len(answers.asked) == 1 and window.doc.source_serial == 4713
+    with qtbot.waitSignal(window.connection.online_changed, timeout=TIMEOUT):
+        window.commands["offline"].trigger()
+    go_online(qtbot, window, f"{E02}:4713")
+    _settled(qtbot, window)
+    assert len(answers.asked) == 1  # the same valve again: no question

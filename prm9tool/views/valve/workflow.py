@@ -164,6 +164,7 @@ class ValveWorkflow(QObject):
             self.go_offline()
             return
         if same_key and not differs:
+            self._stamp(self._doc)  # it holds this valve's set: it is this valve's document
             self._sync.start(values)
             self.message_posted.emit(
                 self.tr("Back online: document and valve agree")
