@@ -160,3 +160,23 @@ def test_restarts_and_frequency_responses_on_the_valve_are_recorded(qtbot, windo
     assert history.model.meaning(run).startswith("Frequency response measured: −3 dB: ")
     restart = history.model.records[operations.index("restart")]
     assert history.model.meaning(restart) == "Restarted (Valve → Restart valve)"
+
+
+@pytest.mark.parametrize(
+    "details",
+    [
+        {"figures": 3},
+        {"figures": [1, "x", {"name": 5, "value": "high", "passed": False}]},
+        {"figures": [{"name": "step", "value": True, "passed": False}]},
+        {"bandwidth_hz": "fast", "phase_90_hz": [1], "proposed": {"POSKP": 5}, "loop": 1},
+    ],
+)
+def test_a_record_with_odd_details_is_shown_not_a_crash(qapp, details):
+    """An exception in a Qt model's data() ends the program: a record written by another
+    version (or by hand) must still be shown."""
+    from prm9tool.views.history_window import HistoryTableModel
+
+    model = HistoryTableModel()
+    for operation in ("characterization", "report-saved", "autotune", "frequency-response"):
+        text = model.meaning({"operation": operation, "details": json.dumps(details)})
+        assert isinstance(text, str) and text

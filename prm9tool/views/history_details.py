@@ -41,11 +41,14 @@ def failing_figures(details: dict[str, Any]) -> list[str]:
     from prm9tool.characterize.run import Figure
     from prm9tool.views.tuning.report import figure_label, value_text
 
-    shown = []
-    for entry in details.get("figures") or []:
+    figures = details.get("figures")
+    shown: list[str] = []
+    for entry in figures if isinstance(figures, list) else []:
         if not isinstance(entry, dict) or entry.get("passed") is not False:
             continue
         value = entry.get("value")
+        if isinstance(value, bool):
+            value = None
         figure = Figure(
             str(entry.get("name", "?")),
             "",

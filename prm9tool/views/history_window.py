@@ -189,7 +189,8 @@ class HistoryTableModel(QAbstractTableModel):
         for key, name in (("bandwidth_hz", "−3 dB"), ("phase_90_hz", "−90°")):
             if key in details:
                 value = details[key]
-                shown = self.tr("not found") if value is None else f"{format_number(value, 1)} Hz"
+                found = isinstance(value, int | float) and not isinstance(value, bool)
+                shown = f"{format_number(value, 1)} Hz" if found else self.tr("not found")
                 parts.append(f"{name}: {shown}")
         return ", ".join(parts)
 
