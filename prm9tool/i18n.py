@@ -100,13 +100,14 @@ def ambiguous_number(param: Parameter, text: str) -> Message | None:
 def parse_value(param: Parameter, text: str) -> int | str:
     """A value typed in a view, to raw; raises ValueRangeError with the reason.
 
-    Takes the decimal separator of the program language and the point (``0,4`` and ``0.4``),
-    but not a number that could be meant with a thousands separator (:func:`ambiguous_number`).
+    Takes the decimal separator of the program language and the point (``0,4`` and ``0.4``
+    in German and Czech; in English ``1,5`` is refused in words), but not a number that could
+    be meant with a thousands separator (:func:`ambiguous_number`).
     """
     ambiguous = ambiguous_number(param, text)
     if ambiguous is not None:
         raise ValueRangeError(ambiguous)
-    return param.parse_display(text)
+    return param.parse_display(text, decimal_point())
 
 
 def system_language() -> str:

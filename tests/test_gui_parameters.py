@@ -119,7 +119,7 @@ def test_a_value_finer_than_the_resolution_is_set_rounded_and_the_status_bar_say
     view, doc, qtbot
 ):
     dialog = view.make_edit_dialog("LIMTB")
-    dialog.set_text("2100,7")  # the decimal comma as well
+    dialog.set_text("2100.7")
     with qtbot.waitSignal(view.message_posted) as posted:
         dialog._buttons.accepted.emit()
     assert dialog.result() == dialog.DialogCode.Accepted

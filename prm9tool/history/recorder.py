@@ -38,7 +38,7 @@ Raw = int | str
 # operations (docs/history.md); "characterization" is reserved for test results (issue 17)
 OPERATIONS = (
     "download", "upload", "store", "restore-factory", "online-edits", "batch-upload",
-    "backup", "characterization",
+    "backup", "characterization", "restart", "autotune", "frequency-response", "report-saved",
 )  # fmt: skip
 
 
@@ -79,7 +79,19 @@ class Details(TypedDict, total=False):
     changes: dict[str, list[int | str]]  # online changes: mnemonic -> [from, to] (raw)
     source: str  # online changes: the file or the history record the values came from
     what: str  # tuning accepted: what was accepted
-    loop: str  # tuning accepted: the loop it was accepted for
+    loop: str  # tuning accepted, autotune, report-saved: the loop
+    pdf: str  # report-saved: the PDF file the test report was saved as
+    rounds: int  # autotune: the rounds it took
+    meets_targets: bool  # autotune: the proposal meets the profile's targets
+    proposed: dict[str, list[int | None]]  # autotune: mnemonic -> [before, proposed] (raw)
+    before: dict[str, float | None]  # autotune: the step with the gains before
+    after: dict[str, float | None]  # autotune: the step with the proposed gains
+    amplitude_pct: float | None  # frequency-response: the sweep's amplitude
+    centre_pct: float | None  # frequency-response: the sweep's centre
+    bandwidth_hz: float | None  # frequency-response: −3 dB (None: not found)
+    phase_90_hz: float | None  # frequency-response: −90° (None: not found)
+    limited_to_hz: float | None  # frequency-response: the sweep's end when the link limited it
+    lost_samples: int  # frequency-response: samples the link lost
 
 
 def now_utc() -> str:

@@ -183,7 +183,8 @@ class CompareWorkflow(QObject):
         info = self._connection.device
         serial = None if info is None else info.serial
         window = HistoryWindow(hook.recorder, serial, self.restore_into_document,
-                               self.restore_to_valve, self._window)  # fmt: skip
+                               self.restore_to_valve, self._window,
+                               None if info is None else info.type_key)  # fmt: skip
         window.database_changed.connect(self._connection.set_recorder)
         self.dialog_created.emit(window)
         window.show()

@@ -171,14 +171,21 @@ class FileWorkflow(QObject):
         return True
 
     def save(self) -> bool:
-        """Save to the current file, or ask for a name if there is none."""
-        if self._doc.path is None:
+        """Save to the current file, or ask for a name if there is none — or if the file is
+        of another valve type than the document now (a valve's values taken, another valve
+        selected): that file is never overwritten unasked."""
+        if self._doc.path is None or self._doc.file_type_key != self._doc.type_key:
             return self.save_as()
         return self.save_to(self._doc.path)
 
     def save_as(self) -> bool:
         """Ask for a file name and save there."""
-        suggestion = self._doc.path or Path(self.last_folder()) / self._suggested_name()
+        current = self._doc.path
+        if current is not None and self._doc.file_type_key == self._doc.type_key:
+            suggestion = current
+        else:  # beside the file of another type, not over it
+            folder = current.parent if current is not None else Path(self.last_folder())
+            suggestion = folder / self._suggested_name()
         path, _filter = QFileDialog.getSaveFileName(
             self._window,
             self.tr("Save parameter file"),

@@ -22,7 +22,7 @@ from PySide6.QtWidgets import (
 
 from prm9tool.catalogue import CATALOGUE, Access, Parameter
 from prm9tool.errors import AccessDeniedError, ValueRangeError
-from prm9tool.i18n import ambiguous_number, current_language, format_value, text
+from prm9tool.i18n import ambiguous_number, current_language, decimal_point, format_value, text
 from prm9tool.model.access import AccessModel
 from prm9tool.model.document import ParameterDocument, Raw
 from prm9tool.model.editing import apply_edit, linked_mnemonics, range_text
@@ -159,8 +159,10 @@ class ParameterEditDialog(QDialog):
         if ambiguous is not None:
             raise ValueRangeError(ambiguous)
         try:
-            raw = self.param.parse_display(entered)
+            raw = self.param.parse_display(entered, decimal_point())
         except ValueRangeError:
+            if "," in entered and decimal_point() == ".":
+                raise  # the catalogue's words: the decimals follow a point
             raise ValueRangeError(
                 self.tr("{0}: “{1}” is not a number.").format(self.param.mnemonic, entered.strip())
             ) from None

@@ -22,6 +22,7 @@ from prm9tool.characterize.run import (
 )
 from prm9tool.online.characterization_history import run_with_history
 from prm9tool.translate import error_text
+from prm9tool.views.history_notes import record_report_saved
 from prm9tool.views.tuning.host import TuningHost
 from prm9tool.views.tuning.pages import Page
 from prm9tool.views.tuning.report import figure_label, limit_text, value_short, verdict, write_pdf
@@ -50,6 +51,7 @@ class ReportPage(Page):
         self.save_button.clicked.connect(self.save)
         self.buttons.insertWidget(1, self.save_button)
         self.last: Characterization | None = None
+        self._from_valve = False  # the last result was measured on the valve (online)
 
     def browse(self) -> None:
         """Choose the acceptance profile file."""
@@ -91,6 +93,7 @@ class ReportPage(Page):
         """Every figure with its verdict."""
         assert isinstance(result, Characterization)
         self.last = result
+        self._from_valve = bool(getattr(self.window_.connection, "is_online", False))
         self.table.setRowCount(len(result.figures))
         for row, f in enumerate(result.figures):
             value, tip = value_short(f)
@@ -116,6 +119,10 @@ class ReportPage(Page):
             write_csv_files(self.last, path.with_suffix(""))
         except OSError as exc:
             self.result.setText(self.tr("Cannot write the report: %1").replace("%1", str(exc)))
+            return
+        if self._from_valve:  # not a run on the simulated valve
+            connection, loop = self.window_.connection, self.window_.current_loop()
+            record_report_saved(connection, self.last, str(path), loop)
 
     def retranslate(self) -> None:
         """Texts."""

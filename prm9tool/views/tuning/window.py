@@ -37,7 +37,7 @@ from prm9tool.online.tuning_runner import SimulationRunner, TuningRunner, ValveR
 from prm9tool.online.valve_control import ValveControl
 from prm9tool.translate import translated
 from prm9tool.views.help_dialog import add_context_help
-from prm9tool.views.history_notes import record_online_change
+from prm9tool.views.history_notes import record_online_change, record_tuning_run
 from prm9tool.views.scope.start import offer_enable
 from prm9tool.views.tuning.autotune import AutotunePage
 from prm9tool.views.tuning.pages import BodePage, Page
@@ -198,6 +198,8 @@ class TuningWindow(QDialog):
         pages: dict[str, Page] = {"autotune": self.autotune, "bode": self.bode}
         pages.update(static=self.static, flow=self.flow or self.report)
         pages.get(kind, self.report).show_result(result)
+        if isinstance(self.runner, ValveRunner):  # the valve moved: into its history
+            record_tuning_run(self.connection, kind, result)
 
     def _on_restored(self, message: str) -> None:
         self.status.setText(message)
