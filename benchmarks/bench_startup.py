@@ -58,6 +58,7 @@ qapp.exec()
 
 def _environment(folder: str) -> dict[str, str]:
     env = dict(os.environ)
+    env.pop("PYTHONDONTWRITEBYTECODE", None)  # an installed program has its bytecode cached
     env.setdefault("QT_QPA_PLATFORM", "offscreen")
     env["XDG_CONFIG_HOME"] = str(Path(folder) / "config")
     env["PRM9TOOL_DATA_DIR"] = str(Path(folder) / "data")
