@@ -224,3 +224,20 @@ def test_the_main_window_status_bar_says_a_value_was_rounded(qtbot, tmp_path):
             window.resize(1024, 700)
             window.grab().save(os.path.join(os.environ["PRM9TOOL_SCREENSHOTS"], "rounded.png"))
         window.doc.mark_saved(None)  # closing asks nothing
+
+
+def test_a_value_shown_as_typed_posts_no_rounding_note_and_a_note_gives_the_real_step(
+    view, doc, qtbot
+):
+    """Issue 34, item 15: "7 % rounded to 7 % (resolution 0.006 %)" — DTAMP's step is
+    100/16384 % = 0.0061 %: 7 % is stored as 7.0007 %, which every view shows as 7 %."""
+    posted: list[str] = []
+    view.message_posted.connect(posted.append)
+    dialog = view.make_edit_dialog("DTAMP")
+    dialog.set_text("7")
+    dialog._buttons.accepted.emit()
+    assert doc.display("DTAMP") == "7" and posted == []
+    dialog = view.make_edit_dialog("DTAMP")
+    dialog.set_text("7.003")
+    dialog._buttons.accepted.emit()
+    assert posted == ["7.003 % rounded to 7 % (resolution 0.0061 %)"]

@@ -297,15 +297,16 @@ class CompareDialog(QDialog):
 
     def _update_summary(self) -> None:
         c = self.comparison
-        lines = [
-            self.tr("%n parameter(s) differ", "", len(c.changed))
-            + ", "
-            + self.tr("%n parameter(s) only on one side", "", len(c.missing))
-            + ", "
-            + self.tr("%n parameter(s) not on the valve, not compared", "", len(c.not_on_valve))
-            + ", "
-            + self.tr("%n shown", "", self.model.rowCount())
+        parts = [
+            self.tr("%n parameter(s) differ", "", len(c.changed)),
+            self.tr("%n parameter(s) only on one side", "", len(c.missing)),
         ]
+        if c.not_on_valve:  # two files have no valve: "0 … not on the valve" said nothing
+            parts.append(
+                self.tr("%n parameter(s) not on the valve, not compared", "", len(c.not_on_valve))
+            )
+        parts.append(self.tr("%n shown", "", self.model.rowCount()))
+        lines = [", ".join(parts)]
         lines += [translated(warning) for warning in c.warnings()]
         self.summary.setText("\n".join(lines))
         for target, button in getattr(self, "apply_buttons", {}).items():
