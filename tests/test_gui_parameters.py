@@ -241,3 +241,42 @@ def test_a_value_shown_as_typed_posts_no_rounding_note_and_a_note_gives_the_real
     dialog.set_text("7.003")
     dialog._buttons.accepted.emit()
     assert posted == ["7.003 % rounded to 7 % (resolution 0.0061 %)"]
+
+
+@pytest.mark.parametrize("language", ["en", "de", "cs"])
+def test_the_edit_dialog_is_wide_enough_for_its_title(view, qtbot, language):
+    """Issue 34, item 20: the title showed as "Paramete… SETPOSUP" (the window manager elides
+    a title longer than the dialog, which was as narrow as its form)."""
+    from PySide6.QtGui import QFont, QFontMetrics
+
+    from prm9tool import i18n
+
+    i18n.set_language(language)
+    try:
+        dialog = view.make_edit_dialog("RAMPSETPOSUP")
+        qtbot.addWidget(dialog)
+        dialog.show()
+        bold = QFont(dialog.font())
+        bold.setBold(True)
+        title = dialog.windowTitle()
+        assert "RAMPSETPOSUP" in title
+        assert dialog.width() >= QFontMetrics(bold).horizontalAdvance(title) + 120
+    finally:
+        i18n.set_language("en")
+
+
+def test_the_columns_keep_their_width_when_a_search_leaves_the_list_empty(view, qtbot):
+    """Issue 34, item 20: the mnemonic, value and unit columns collapsed to their headers."""
+    from prm9tool.views.parameter_model import Column
+
+    view.resize(900, 500)
+    view.show()
+    header = view.table.horizontalHeader()
+    columns = (Column.MNEMONIC, Column.VALUE, Column.UNIT)
+    before = [header.sectionSize(c) for c in columns]
+    view.search.setText("no parameter is called so")
+    assert view.proxy.rowCount() == 0
+    qtbot.wait(20)
+    assert [header.sectionSize(c) for c in columns] == before
+    view.search.setText("LIMT")  # a few rows: as wide as with all of them
+    assert [header.sectionSize(c) for c in columns] == before

@@ -36,7 +36,7 @@ from PySide6.QtWidgets import (
 
 from prm9tool.catalogue import Access
 from prm9tool.compare.model import Comparison, Row
-from prm9tool.i18n import format_value, text
+from prm9tool.i18n import format_shown, text
 from prm9tool.translate import translated
 from prm9tool.views.diagram.layout import layout_for
 from prm9tool.views.help_dialog import add_context_help
@@ -95,7 +95,7 @@ class CompareTableModel(QAbstractTableModel):
                 return translated(self.comparison.sides[side].absent)
             if raw is None:
                 return "—"
-            return f"{format_value(row.parameter, raw)} {row.parameter.unit}".strip()
+            return format_shown(row.parameter, raw)  # a choice with its meaning, as the list
         chosen = self.comparison.choices.get(row.mnemonic)
         side = self._side(column)
         if role == Qt.ItemDataRole.CheckStateRole and column >= FIRST_VALUE and side >= 0:

@@ -14,7 +14,7 @@ from collections.abc import Mapping
 from pathlib import Path
 
 from PySide6.QtCore import QObject, QSettings, Signal
-from PySide6.QtWidgets import QDialog, QFileDialog, QWidget
+from PySide6.QtWidgets import QDialog, QWidget
 
 from prm9tool.catalogue.typekey import TypeKey
 from prm9tool.compare.model import NOT_ON_SOURCE_VALVE, Comparison, Side
@@ -25,7 +25,7 @@ from prm9tool.model.undo import DocumentUndo
 from prm9tool.online.connection import ValveConnection
 from prm9tool.online.sync import ValveSync
 from prm9tool.translate import error_text
-from prm9tool.views import prompts
+from prm9tool.views import file_dialogs, prompts
 from prm9tool.views.compare_view import BOTH, DOCUMENT, VALVE, CompareDialog
 from prm9tool.views.file_reader import read_in_background
 from prm9tool.views.file_workflow import FOLDER_KEY
@@ -92,7 +92,7 @@ class CompareWorkflow(QObject):
         """Compare the document with a *.prm file; the file's chosen values can be taken."""
         if path is None:
             folder = str(self._settings.value(FOLDER_KEY, str(Path.home())))
-            name, _filter = QFileDialog.getOpenFileName(
+            name, _filter = file_dialogs.open_file_name(
                 self._window, self.tr("Compare with file"), folder,
                 self.tr("Parameter files (*.prm);;All files (*)"),
             )  # fmt: skip
