@@ -337,6 +337,7 @@ def test_the_network_view_watches_the_sessions_bus_while_online(
             ok=dialog.buttons.button(QDialogButtonBox.StandardButton.Ok),
             node=dialog.table.item(0, 0).text(), what=dialog.table.item(0, 1).text(),
             state=dialog.state.text(), lss=dialog.lss_panel,
+            described=dialog.table.item(0, 7).text(),
         )  # fmt: skip
         return 0
 
@@ -348,7 +349,8 @@ def test_the_network_view_watches_the_sessions_bus_while_online(
         qtbot.waitUntil(action.isEnabled, timeout=10000)  # greyed out before
         action.trigger()
         assert seen["networks"] == 1 and seen["users"] == 2  # the session's master, shared
-        assert seen["node"] == "can:10" and seen["what"] == "the valve prm9tool is online with"
+        assert seen["node"] == "can:10" and seen["what"] == E04  # its type key, as it told
+        assert seen["described"] == "the valve prm9tool is online with"
         assert seen["search"] is False and seen["ok"] is None and seen["lss"] is None
         assert "Online with can:10 on this bus" in str(seen["state"])
     rig.valve.stop()

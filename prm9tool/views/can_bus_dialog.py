@@ -36,7 +36,7 @@ from prm9tool.catalogue.typekey import TypeKey
 from prm9tool.errors import TypeKeyError
 from prm9tool.files.can_type_keys import remember
 from prm9tool.online.bus_monitor import BusMonitor, HeardNode
-from prm9tool.online.connection_protocol import ListedValves, ValveListing
+from prm9tool.online.connection_protocol import ListedValves, ValveIdentity, ValveListing
 from prm9tool.online.lss_commissioning import LssCommissioning
 from prm9tool.paths import user_data_dir
 from prm9tool.translate import error_text
@@ -103,6 +103,7 @@ class CanBusDialog(QDialog):
         self._monitor = monitor
         self._searching = False  # a search runs: its result comes before the monitor's news
         self._watched: str | None = None  # watch_session_bus(): the valve online on the bus
+        self._watched_valve: ValveIdentity | None = None
         if monitor is not None:
             monitor.nodes_heard.connect(self._on_nodes_heard)
             monitor.failed.connect(self._on_monitor_failed)
@@ -194,13 +195,14 @@ class CanBusDialog(QDialog):
         self._settings.setValue(CHANNEL_KEY, bus["channel"])
         self._settings.setValue(BITRATE_KEY, bus["bitrate"])
 
-    def watch_session_bus(self, bus: dict[str, object], valve: str) -> None:
-        """Online over CAN with ``valve`` (its device ID) on ``bus``: the network view of that
+    def watch_session_bus(self, bus: dict[str, object], valve: ValveIdentity) -> None:
+        """Online over CAN with ``valve`` on ``bus``: the network view of that
         bus, as the nodes tell about themselves. The monitor shares the session's master
         (``bus`` as the session has it), so no second adapter is opened on the channel, and
         nothing is sent: no search (its SDO reads would meet the session's), no other valve to
         go online with. Issue 34, item 12."""
-        self._watched = valve
+        self._watched = valve.device_id
+        self._watched_valve = valve
         self.interface.setCurrentText(str(bus["interface"]))
         self.channel.setText(str(bus["channel"]))
         rate = bus.get("bitrate")
@@ -215,7 +217,7 @@ class CanBusDialog(QDialog):
                 "Online with {0} on this bus: the nodes are shown as they tell about "
                 "themselves (nothing is sent). Go offline to search the bus or to choose "
                 "another valve."
-            ).format(valve)
+            ).format(valve.device_id)
         )
         if self._monitor is not None:
             self._monitor.start(bus)
@@ -308,6 +310,10 @@ class CanBusDialog(QDialog):
         else:
             told = self.tr("heard on the bus")
         cells = [f"can:{node_id}", told]
+        valve = self._watched_valve
+        if valve is not None and self._watched == f"can:{node_id}":
+            cells = [valve.device_id, valve.type_key, str(valve.serial), valve.firmware]
+            cells += ["", "", "", told]
         for column in range(self.table.columnCount()):
             item = QTableWidgetItem(cells[column] if column < len(cells) else "")
             item.setFlags(item.flags() & ~Qt.ItemFlag.ItemIsSelectable)

@@ -47,7 +47,8 @@ class DateDelegate(QStyledItemDelegate):
     ) -> None:
         """The cell's text: the date as ``QLocale()`` writes it (the rest as Qt does)."""
         super().initStyleOption(option, index)
-        model, source = index.model(), QModelIndex(index)
+        model = index.model()
+        source = model.index(index.row(), index.column(), index.parent()) if model else index
         while isinstance(model, QAbstractProxyModel):
             source = model.mapToSource(source)
             model = model.sourceModel()

@@ -66,7 +66,7 @@ class ValveFinder(QObject):
         if device is not None and bus is not None:
             interface, channel, bitrate = bus
             watched = {"interface": interface, "channel": channel, "bitrate": bitrate}
-            dialog.watch_session_bus(watched, device.device_id)
+            dialog.watch_session_bus(watched, device)
         elif device is not None:
             dialog.keep_online(device.device_id)
         accepted = dialog.exec() == QDialog.DialogCode.Accepted
