@@ -354,3 +354,33 @@ def test_the_network_view_watches_the_sessions_bus_while_online(
         assert seen["search"] is False and seen["ok"] is None and seen["lss"] is None
         assert "Online with can:10 on this bus" in str(seen["state"])
     rig.valve.stop()
+
+
+def test_online_over_usb_the_bus_can_be_searched_but_not_gone_online_with(
+    qtbot, tmp_path, answers, monkeypatch
+):
+    """Issue 34, item 12, the other link: online over USB the dialog opens the bus itself (the
+    session is not on it) and searches it; a node is gone online with only after going
+    offline."""
+    from gui_support import E02, go_online, main_window
+
+    seen: dict[str, object] = {}
+
+    def look(dialog: CanBusDialog) -> int:
+        seen.update(
+            search=dialog.search.isEnabled(), interface=dialog.interface.isEnabled(),
+            ok=dialog.buttons.button(QDialogButtonBox.StandardButton.Ok),
+            close=dialog.buttons.button(QDialogButtonBox.StandardButton.Close),
+            state=dialog.state.text(),
+        )  # fmt: skip
+        return 0
+
+    monkeypatch.setattr(CanBusDialog, "exec", look)
+    with main_window(qtbot, tmp_path) as window:
+        go_online(qtbot, window, f"{E02}:4751")
+        action = window.commands["can_bus"]
+        qtbot.waitUntil(action.isEnabled, timeout=10000)
+        action.trigger()
+    assert seen["search"] is True and seen["interface"] is True
+    assert seen["ok"] is None and seen["close"] is not None
+    assert str(seen["state"]).startswith("Online with emulator:")
