@@ -94,3 +94,14 @@ def test_a_record_taken_for_later_is_written_before_any_read(tmp_path):
     assert writer.store().records(4742)[0]["operation"] == "download"  # a read writes it first
     assert writer.write_later() == "recorded"
     assert len(writer.store().records(4742)) == 1  # and only once
+
+
+def test_closing_the_recorder_writes_what_it_took_for_later(tmp_path):
+    from types import SimpleNamespace
+
+    url = f"sqlite:///{tmp_path / 'h.db'}"
+    info = SimpleNamespace(serial=4743, type_key=E02_CA, firmware="1", device_id="emulator:x")
+    writer = Recorder(url, tmp_path / "queue.jsonl")
+    writer.add_later(recorder_module.make_entry(info, "download", "ok", {"DTAMP": 1}))
+    writer.close()
+    assert [r["operation"] for r in Recorder(url).store().records(4743)] == ["download"]

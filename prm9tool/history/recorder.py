@@ -241,8 +241,13 @@ class Recorder:
         return None
 
     def close(self) -> None:
-        """Close the database connections."""
+        """Close the database connections (what :meth:`add_later` took is written first)."""
         with self._lock:
+            if self._later:
+                try:
+                    self.write_later()
+                except HistoryError as exc:
+                    log.error("history: %s", exc)
             if self._store is not None:
                 self._store.close()
                 self._store = None
