@@ -76,6 +76,14 @@ def format_value(param: Parameter, raw: int | str) -> str:
     return localized_number(param.format_display(raw), current_language())
 
 
+def format_shown(param: Parameter, raw: int | str) -> str:
+    """A value with its unit as the parameter list shows it: a choice with its meaning
+    (``-1: on (9-point curve)``), a number with its unit (``2400 mA``)."""
+    if param.choices and isinstance(raw, int):
+        return f"{raw}: {param.choice_text(raw, current_language())}"
+    return f"{format_value(param, raw)} {param.unit}".strip()
+
+
 _AMBIGUOUS = QT_TRANSLATE_NOOP(
     "Problems",
     "{0}: {1} is ambiguous (a thousands separator?); write the number without one, "

@@ -397,6 +397,18 @@ Poslední akce možná nebyla dokončena. Uložte svou práci pod novým názvem
             <translation>Přenosová rychlost</translation>
         </message>
         <message>
+            <source>as the adapter is set</source>
+            <translation>jak je nastaven adaptér</translation>
+        </message>
+        <message>
+            <source>Online with {0} on this bus: the nodes are shown as they tell about themselves (nothing is sent). Go offline to search the bus or to choose another valve.</source>
+            <translation>Online s {0} na této sběrnici: uzly se zobrazují tak, jak o sobě samy dávají vědět (nic se neodesílá). Chcete-li sběrnici prohledat nebo zvolit jiný ventil, přejděte do režimu offline.</translation>
+        </message>
+        <message>
+            <source>Online with {0}: search the bus to watch its nodes; go offline to go online with one of them.</source>
+            <translation>Online s {0}: prohledejte sběrnici a sledujte její uzly; chcete-li se připojit k některému z nich, přejděte nejprve do režimu offline.</translation>
+        </message>
+        <message>
             <source>Searching the bus (node IDs 1…127)…</source>
             <translation>Prohledává se sběrnice (ID uzlů 1…127)…</translation>
         </message>
@@ -435,6 +447,14 @@ Poslední akce možná nebyla dokončena. Uložte svou práci pod novým názvem
         <message>
             <source>new on the bus: search again to identify it</source>
             <translation>nový na sběrnici: pro rozpoznání hledejte znovu</translation>
+        </message>
+        <message>
+            <source>the valve prm9tool is online with</source>
+            <translation>ventil, se kterým je prm9tool online</translation>
+        </message>
+        <message>
+            <source>heard on the bus</source>
+            <translation>slyšen na sběrnici</translation>
         </message>
         <message>
             <source>{0} (boot-up {1:.1f} s ago)</source>
@@ -612,6 +632,14 @@ Poslední akce možná nebyla dokončena. Uložte svou práci pod novým názvem
         <message>
             <source>Position read by the valve at its last power-up</source>
             <translation>Poloha načtená ventilem při posledním zapnutí</translation>
+        </message>
+        <message>
+            <source>Settings made by software (over CANopen)</source>
+            <translation>Nastavení softwarem (přes CANopen)</translation>
+        </message>
+        <message>
+            <source>Settings made by software</source>
+            <translation>Nastavení softwarem</translation>
         </message>
         <message>
             <source>The node-ID switch is not at 0: the switch sets the node ID.</source>
@@ -3252,6 +3280,10 @@ Ano načte a záznam zařadí do fronty; Ne nenačte nic.</translation>
         <message>
             <source>The Expert level unlocks the controllers and the linearizations. Changing them needs the appropriate qualification.</source>
             <translation>Expertní úroveň zpřístupní regulátory a linearizace. Jejich změna vyžaduje odpovídající kvalifikaci.</translation>
+        </message>
+        <message>
+            <source>The password as delivered is written in the help, under “Access levels” (F1, or &lt;a href=&quot;help&quot;&gt;open the help&lt;/a&gt;). A password changed since is known to whoever changed it.</source>
+            <translation>Heslo ve stavu při dodání je uvedeno v nápovědě v části „Úrovně oprávnění“ (F1 nebo &lt;a href=&quot;help&quot;&gt;otevřít nápovědu&lt;/a&gt;). Heslo změněné od té doby zná ten, kdo je změnil.</translation>
         </message>
         <message>
             <source>Password:</source>

@@ -397,6 +397,18 @@ Die letzte Aktion wurde womöglich nicht vollständig ausgeführt. Speichern Sie
             <translation>Bitrate</translation>
         </message>
         <message>
+            <source>as the adapter is set</source>
+            <translation>wie der Adapter eingestellt ist</translation>
+        </message>
+        <message>
+            <source>Online with {0} on this bus: the nodes are shown as they tell about themselves (nothing is sent). Go offline to search the bus or to choose another valve.</source>
+            <translation>Online mit {0} an diesem Bus: Die Knoten werden so gezeigt, wie sie sich selbst melden (es wird nichts gesendet). Gehen Sie offline, um den Bus zu durchsuchen oder ein anderes Ventil zu wählen.</translation>
+        </message>
+        <message>
+            <source>Online with {0}: search the bus to watch its nodes; go offline to go online with one of them.</source>
+            <translation>Online mit {0}: Durchsuchen Sie den Bus, um seine Knoten zu beobachten; um mit einem von ihnen online zu gehen, gehen Sie zuerst offline.</translation>
+        </message>
+        <message>
             <source>Searching the bus (node IDs 1…127)…</source>
             <translation>Bus wird durchsucht (Knoten-IDs 1…127)…</translation>
         </message>
@@ -433,6 +445,14 @@ Die letzte Aktion wurde womöglich nicht vollständig ausgeführt. Speichern Sie
         <message>
             <source>new on the bus: search again to identify it</source>
             <translation>neu am Bus: erneut suchen, um ihn zu erkennen</translation>
+        </message>
+        <message>
+            <source>the valve prm9tool is online with</source>
+            <translation>das Ventil, mit dem prm9tool online ist</translation>
+        </message>
+        <message>
+            <source>heard on the bus</source>
+            <translation>am Bus gehört</translation>
         </message>
         <message>
             <source>{0} (boot-up {1:.1f} s ago)</source>
@@ -610,6 +630,14 @@ Die letzte Aktion wurde womöglich nicht vollständig ausgeführt. Speichern Sie
         <message>
             <source>Position read by the valve at its last power-up</source>
             <translation>Beim letzten Einschalten vom Ventil gelesene Stellung</translation>
+        </message>
+        <message>
+            <source>Settings made by software (over CANopen)</source>
+            <translation>Einstellungen per Software (über CANopen)</translation>
+        </message>
+        <message>
+            <source>Settings made by software</source>
+            <translation>Einstellungen per Software</translation>
         </message>
         <message>
             <source>The node-ID switch is not at 0: the switch sets the node ID.</source>
@@ -3233,6 +3261,10 @@ Ja lädt hoch und stellt den Eintrag in die Warteschlange; Nein lädt nichts hoc
         <message>
             <source>The Expert level unlocks the controllers and the linearizations. Changing them needs the appropriate qualification.</source>
             <translation>Die Expertenstufe gibt die Regler und die Linearisierungen frei. Ihre Änderung erfordert die entsprechende Qualifikation.</translation>
+        </message>
+        <message>
+            <source>The password as delivered is written in the help, under “Access levels” (F1, or &lt;a href=&quot;help&quot;&gt;open the help&lt;/a&gt;). A password changed since is known to whoever changed it.</source>
+            <translation>Das Passwort im Auslieferungszustand steht in der Hilfe unter „Berechtigungsstufen“ (F1 oder &lt;a href=&quot;help&quot;&gt;Hilfe öffnen&lt;/a&gt;). Ein seither geändertes Passwort kennt, wer es geändert hat.</translation>
         </message>
         <message>
             <source>Password:</source>

@@ -18,7 +18,6 @@ from PySide6.QtGui import QColor
 from PySide6.QtWidgets import (
     QAbstractItemView,
     QDialog,
-    QFileDialog,
     QHBoxLayout,
     QHeaderView,
     QLabel,
@@ -38,7 +37,7 @@ from prm9tool.history.chain import other_type
 from prm9tool.history.recorder import Recorder
 from prm9tool.i18n import format_number, format_value
 from prm9tool.translate import error_text
-from prm9tool.views import prompts
+from prm9tool.views import file_dialogs, prompts
 from prm9tool.views.help_dialog import add_context_help
 from prm9tool.views.history_details import (
     MAX_FIGURES,
@@ -464,7 +463,7 @@ class HistoryWindow(QDialog):
 
         (record,) = self.selected()
         if path is None:
-            path, _filter = QFileDialog.getSaveFileName(
+            path, _filter = file_dialogs.save_file_name(
                 self, self.tr("Export record"), f"{record['serial']}_{record['seq']}.prm",
                 self.tr("Parameter files (*.prm);;CSV tables (*.csv)"),
             )  # fmt: skip

@@ -3,7 +3,6 @@
 from __future__ import annotations
 
 from PySide6.QtWidgets import (
-    QFileDialog,
     QHBoxLayout,
     QLabel,
     QLineEdit,
@@ -22,6 +21,7 @@ from prm9tool.characterize.run import (
 )
 from prm9tool.online.characterization_history import run_with_history
 from prm9tool.translate import error_text
+from prm9tool.views import file_dialogs
 from prm9tool.views.history_notes import record_report_saved
 from prm9tool.views.tuning.host import TuningHost
 from prm9tool.views.tuning.pages import Page
@@ -55,7 +55,7 @@ class ReportPage(Page):
 
     def browse(self) -> None:
         """Choose the acceptance profile file."""
-        path, _ = QFileDialog.getOpenFileName(
+        path, _ = file_dialogs.open_file_name(
             self, self.tr("Acceptance profile"), self.profile_path.text(), "TOML (*.toml)"
         )
         if path:

@@ -16,7 +16,6 @@ from PySide6.QtCore import QEvent
 from PySide6.QtWidgets import (
     QComboBox,
     QDialog,
-    QFileDialog,
     QFormLayout,
     QHBoxLayout,
     QLabel,
@@ -36,6 +35,7 @@ from prm9tool.online.connection_protocol import StatusView
 from prm9tool.online.tuning_runner import SimulationRunner, TuningRunner, ValveRunner
 from prm9tool.online.valve_control import ValveControl
 from prm9tool.translate import translated
+from prm9tool.views import file_dialogs
 from prm9tool.views.help_dialog import add_context_help
 from prm9tool.views.history_notes import record_online_change, record_tuning_run
 from prm9tool.views.scope.start import offer_enable
@@ -230,7 +230,7 @@ class TuningWindow(QDialog):
 
     def save_file(self, title: str, pattern: str, suggestion: str) -> Path | None:
         """Ask for a file name to write."""
-        path, _ = QFileDialog.getSaveFileName(self, title, suggestion, pattern)
+        path, _ = file_dialogs.save_file_name(self, title, suggestion, pattern)
         return Path(path) if path else None
 
     # --- texts -----------------------------------------------------------------------------------
