@@ -68,7 +68,9 @@ class PdoChannel:
     last_sent_ms: int = -(10**9)
     last_data: bytes | None = None
     pending: bytes | None = field(default=None, repr=False)  # RPDO data waiting for SYNC
-    deadline_ms: int | None = None  # RPDO: the next frame is due by then (None = not armed)
+    # RPDO: the next frame is due by then (None = not armed), on the time base of
+    # :class:`.canopen_watch.TimingWatches` (wall clock when paced, else simulated)
+    deadline_ms: float | None = None
 
     @property
     def comm_index(self) -> int:
@@ -178,24 +180,16 @@ class RpdoLogic:
         self._length_error = length_error
         self._length_ok = length_ok
 
-    def received(self, data: bytes, now_ms: int) -> None:
+    def received(self, data: bytes) -> bool:
         """A frame on the RPDO's COB-ID arrived (NMT OPERATIONAL); ignored when the RPDO maps
-        nothing (CiA 301: mapping disabled)."""
+        nothing (CiA 301: mapping disabled). True when it was taken (the deadline watch then
+        expects the next one, :meth:`.canopen_watch.TimingWatches.rpdo_received`)."""
         if not mapping(self._valve, self.channel.map_index):
-            return
-        if self.channel.event_timer:
-            self.channel.deadline_ms = now_ms + self.channel.event_timer
+            return False
         if self.channel.trans_type in SYNC_TYPES:
             self.channel.pending = bytes(data)
         else:
             self.apply(bytes(data))
-
-    def deadline_missed(self, now_ms: int) -> bool:
-        """True once when the event timer (0x1400/5) ran out since the last reception."""
-        channel = self.channel
-        if channel.deadline_ms is None or not channel.valid or now_ms <= channel.deadline_ms:
-            return False
-        channel.deadline_ms = None  # one event per loss; the next reception arms it again
         return True
 
     def on_sync(self) -> None:
