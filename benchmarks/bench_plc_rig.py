@@ -1,0 +1,250 @@
+"""The emulated valves as a PLC's test rig: N valves in one ``--serve-emulator`` process, the PLC
+in this one (the ``canopen`` package for commissioning, python-can for SYNC, RPDO1 and TPDO1),
+on python-can's udp_multicast bus inside a private network namespace (``unshare -n``, loopback
+only: multicast never leaves the machine).
+
+Per valve count it prints the share of TPDO1 frames that arrived within 1 ms of their SYNC
+(kernel reception time stamps on both ends), the p50/p99/max latency after SYNC, the SYNCs
+actually sent per second, the EMCYs seen (none expected: every one is a false alarm here),
+and the machine's load average; the single-valve run of the same invocation is the reference.
+
+    .venv/bin/python benchmarks/bench_plc_rig.py [--valves 1,4,8,16,32] [--seconds 10] [--quick]
+
+The SYNC period is 1 ms up to 16 valves and 2 ms above (the issue's 32 valves at 2 ms).
+``--quick`` (a smoke run, CI): 1 and 2 valves for 1 s each. Needs ``unshare -n`` (root or user
+namespaces); without it the benchmark says so and exits 0.
+"""
+
+from __future__ import annotations
+
+import argparse
+import os
+import shutil
+import signal
+import statistics
+import subprocess
+import sys
+import tempfile
+import threading
+import time
+from dataclasses import dataclass
+from pathlib import Path
+
+E02 = "PRM9-06.3Z11/30-24E02S02-CA"
+GROUP = "239.74.163.11"
+NAMESPACE = "ip link set lo up && ip link set lo multicast on && ip route add 224.0.0.0/4 dev lo"
+ON_TIME_S = 0.001
+INSIDE = "PRM9_BENCH_PLC_RIG_INSIDE"
+
+
+@dataclass
+class Result:
+    """One run's figures."""
+
+    valves: int
+    period_ms: float
+    on_time: float  # share of the expected TPDO1 frames within ON_TIME_S of their SYNC
+    p50_ms: float
+    p99_ms: float
+    max_ms: float
+    syncs_per_s: float
+    emcy: int
+    load: float
+
+
+def main() -> int:
+    """Parse the options, run inside a private network namespace, print the table."""
+    parser = argparse.ArgumentParser()
+    parser.add_argument("--valves", default="1,4,8,16,32")
+    parser.add_argument("--seconds", type=float, default=10.0)
+    parser.add_argument("--quick", action="store_true", help="a smoke run: seconds, not figures")
+    args = parser.parse_args()
+    if os.environ.get(INSIDE) != "1":
+        return _enter_namespace()
+    counts = [1, 2] if args.quick else [int(n) for n in args.valves.split(",")]
+    seconds = 1.0 if args.quick else args.seconds
+    if counts[0] != 1:
+        counts.insert(0, 1)  # the reference
+    print(f"PLC rig on udp_multicast {GROUP}, {seconds:g} s per run, load before "
+          f"{os.getloadavg()[0]:.2f}")  # fmt: skip
+    print(f"{'valves':>6} {'SYNC':>6} {'on time':>8} {'p50':>7} {'p99':>7} {'max':>7} "
+          f"{'SYNC/s':>7} {'EMCY':>5} {'load':>5}")  # fmt: skip
+    results = []
+    for count in counts:
+        result = run(count, 1.0 if count <= 16 else 2.0, seconds)
+        results.append(result)
+        print(f"{result.valves:>6} {result.period_ms:>4g}ms {result.on_time:>8.2%} "
+              f"{result.p50_ms:>5.2f}ms {result.p99_ms:>5.2f}ms {result.max_ms:>5.1f}ms "
+              f"{result.syncs_per_s:>7.0f} {result.emcy:>5} {result.load:>5.2f}", flush=True)  # fmt: skip
+    reference = results[0]
+    for result in results[1:]:
+        print(f"{result.valves} valves: on-time share {result.on_time:.2%} against "
+              f"{reference.on_time:.2%} for one valve; p99 {result.p99_ms / max(reference.p99_ms, 1e-3):.1f}x")  # fmt: skip
+    return 0
+
+
+def _enter_namespace() -> int:
+    if shutil.which("unshare") is None or shutil.which("ip") is None:
+        print("bench_plc_rig: needs unshare and ip (iproute2); skipped")
+        return 0
+    probe = subprocess.run(["unshare", "-n", "sh", "-c", NAMESPACE], capture_output=True,
+                           text=True, check=False)  # fmt: skip
+    if probe.returncode != 0:
+        print(f"bench_plc_rig: a private network namespace is not permitted: {probe.stderr}")
+        return 0
+    command = " ".join([sys.executable, *map(_quote, sys.argv)])
+    env = {**os.environ, INSIDE: "1"}
+    return subprocess.run(["unshare", "-n", "sh", "-c", f"{NAMESPACE} && exec {command}"],
+                          env=env, check=False).returncode  # fmt: skip
+
+
+def _quote(text: str) -> str:
+    return "'" + text.replace("'", "'\\''") + "'"
+
+
+def run(count: int, period_ms: float, seconds: float) -> Result:
+    """Serve ``count`` valves (nodes 1…count), commission them, run SYNC for ``seconds``."""
+    import can
+
+    with tempfile.TemporaryDirectory() as data:
+        serve = _serve(count, data)
+        try:
+            bus = can.Bus(interface="udp_multicast", channel=GROUP)
+            try:
+                _commission(bus, count)
+                return _measure(bus, count, period_ms, seconds)
+            finally:
+                bus.shutdown()
+        finally:
+            serve.send_signal(signal.SIGTERM)
+            try:
+                serve.wait(20)
+            except subprocess.TimeoutExpired:
+                serve.kill()
+
+
+def _serve(count: int, data: str) -> subprocess.Popen[str]:
+    command = [sys.executable, "-m", "prm9tool", "--can-interface", "udp_multicast",
+               "--can-channel", GROUP]  # fmt: skip
+    for node in range(1, count + 1):
+        command += ["--serve-emulator", f"{E02}:{7000 + node}", "--node-id", str(node)]
+    env = {**os.environ, "PRM9TOOL_DATA_DIR": data}
+    root = Path(__file__).resolve().parent.parent
+    env["PYTHONPATH"] = os.pathsep.join(filter(None, [str(root), env.get("PYTHONPATH")]))
+    return subprocess.Popen(command, env=env, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL,
+                            stdin=subprocess.DEVNULL, text=True)  # fmt: skip
+
+
+def _commission(bus, count: int) -> None:  # type: ignore[no-untyped-def]
+    """Boot-up of every node, then per node: no heartbeat, TPDO1 every SYNC, TPDO2 off,
+    RPDO1 asynchronous, NMT start, control word 08h → 09h → 0Bh → 0Fh (docs/plc-testing.md)."""
+    import can
+
+    booted: set[int] = set()
+    deadline = time.monotonic() + 30 + count
+    while len(booted) < count:
+        assert time.monotonic() < deadline, f"boot-ups of {sorted(booted)} only"
+        msg = bus.recv(0.5)
+        if msg is not None and msg.arbitration_id & 0x780 == 0x700 and bytes(msg.data) == b"\0":
+            booted.add(msg.arbitration_id & 0x7F)
+    for node in range(1, count + 1):
+        for frame in (
+            "2B 17 10 00 00 00 00 00",  # heartbeat off
+            f"23 00 18 01 {0x80 + node:02X} 01 00 00",  # TPDO1 on 0x180 + node
+            "2F 00 18 02 01 00 00 00",  # TPDO1 every SYNC
+            f"23 01 18 01 {0x80 + node:02X} 02 00 80",  # TPDO2 off
+        ):
+            _sdo(bus, node, frame)
+    bus.send(can.Message(arbitration_id=0, data=b"\x01\x00", is_extended_id=False))
+    time.sleep(0.2)
+    for node in range(1, count + 1):
+        for word in (0x08, 0x09, 0x0B, 0x0F):
+            _sdo(bus, node, f"2B 40 60 00 {word:02X} 00 00 00")
+
+
+def _sdo(bus, node: int, frame: str) -> None:  # type: ignore[no-untyped-def]
+    import can
+
+    data = bytes.fromhex(frame)
+    for _attempt in range(5):
+        bus.send(can.Message(arbitration_id=0x600 + node, data=data, is_extended_id=False))
+        deadline = time.monotonic() + 1.0
+        while time.monotonic() < deadline:
+            msg = bus.recv(0.2)
+            if msg is not None and msg.arbitration_id == 0x580 + node:
+                assert msg.data[0] == 0x60, f"node {node} refused {frame}: {bytes(msg.data).hex()}"
+                return
+    raise AssertionError(f"node {node}: no answer to {frame}")
+
+
+def _measure(bus, count: int, period_ms: float, seconds: float) -> Result:  # type: ignore[no-untyped-def]
+    import can
+
+    sync_times: list[float] = []
+    tpdo: dict[int, list[float]] = {node: [] for node in range(1, count + 1)}
+    emcy = [0]
+    stop = threading.Event()
+
+    def receive() -> None:
+        while not stop.is_set() or bus_pending():
+            msg = bus.recv(0.05)
+            if msg is None:
+                if stop.is_set():
+                    return
+                continue
+            cob, node = msg.arbitration_id & 0x780, msg.arbitration_id & 0x7F
+            if cob == 0x180 and node in tpdo:
+                tpdo[node].append(msg.timestamp)
+            elif cob == 0x080 and node:
+                emcy[0] += 1
+
+    def bus_pending() -> bool:
+        return False
+
+    receiver = threading.Thread(target=receive, daemon=True)
+    receiver.start()
+    period = period_ms / 1000.0
+    rpdo = [can.Message(arbitration_id=0x200 + node, data=bytes([0x0F, 0, 0, 0]),
+                        is_extended_id=False) for node in range(1, count + 1)]  # fmt: skip
+    sync = can.Message(arbitration_id=0x080, data=b"", is_extended_id=False)
+    start = time.monotonic()
+    n = 0
+    while time.monotonic() - start < seconds:
+        n += 1
+        delay = start + n * period - time.monotonic()
+        if delay > 0:
+            time.sleep(delay)
+        sync_times.append(time.time())
+        bus.send(sync)
+        setpoint = (8000 if (n // 500) % 2 else -8000).to_bytes(2, "little", signed=True)
+        for message in rpdo:  # RPDO1 every SYNC: control word 0Fh, a ±50 % square
+            message.data[2:4] = setpoint
+            bus.send(message)
+    elapsed = time.monotonic() - start
+    time.sleep(0.2)
+    stop.set()
+    receiver.join()
+    latencies: list[float] = []
+    on_time = 0
+    for times in tpdo.values():
+        for sent, got in zip(sync_times, times, strict=False):
+            latency = got - sent
+            latencies.append(latency)
+            on_time += latency <= ON_TIME_S
+    expected = len(sync_times) * count
+    latencies.sort() if latencies else latencies.append(float("nan"))
+    return Result(
+        count,
+        period_ms,
+        on_time / max(expected, 1),
+        statistics.median(latencies) * 1e3,
+        latencies[min(len(latencies) - 1, int(0.99 * len(latencies)))] * 1e3,
+        max(latencies) * 1e3,
+        len(sync_times) / elapsed,
+        emcy[0],
+        os.getloadavg()[0],
+    )
+
+
+if __name__ == "__main__":
+    sys.exit(main())
