@@ -29,8 +29,11 @@ from prm9tool.device.records import DeviceState, NmtState
 from prm9tool.errors import CanAdapterError, ExitCode, Prm9Error, TypeKeyError
 
 if TYPE_CHECKING:
+    import can
+
     from prm9tool.catalogue.error_kinds import ErrorKind
     from prm9tool.device.emulator import EmulatedValve
+    from prm9tool.device.emulator.canopen_hub import SharedBus
     from prm9tool.device.emulator.canopen_slave import CanopenSlave
 
 POLL_S = 0.02
@@ -61,16 +64,17 @@ def run(args: argparse.Namespace) -> int:
     options = CanOptions.from_args(args)
     stop = threading.Event()
     served: list[_Served] = []
+    shared = _SharedBus(options)
     try:
         for position, spec in enumerate(args.serve_emulator):
             node = args.node_id[position] if position < len(args.node_id) else None
-            served.append(_serve(spec, position, node, options))
+            served.append(_serve(spec, position, node, shared))
     except TypeKeyError as exc:
-        _close(served)
+        _close(served, shared)
         print(f"prm9tool: --serve-emulator: {exc}", file=sys.stderr)
         return ExitCode.USAGE
     except (CanAdapterError, Prm9Error) as exc:
-        _close(served)
+        _close(served, shared)
         print(f"prm9tool: {exc}", file=sys.stderr)
         return ExitCode.COMMUNICATION
     previous = _on_signals(lambda *_: stop.set())
@@ -82,12 +86,40 @@ def run(args: argparse.Namespace) -> int:
                 _report_lateness(item)
     finally:
         _restore_signals(previous)
-        _close(served)
+        _close(served, shared)
     _say("stopped")
     return ExitCode.OK
 
 
-def _serve(spec: str, position: int, node: int | str | None, options: CanOptions) -> _Served:
+class _SharedBus:
+    """The one bus every served valve is on, opened with the first valve, and its one receive
+    thread (:class:`~prm9tool.device.emulator.canopen_hub.SharedBus`): a bus per valve would
+    decode every frame once per valve (docs/PERFORMANCE.md, "The PLC rig")."""
+
+    def __init__(self, options: CanOptions) -> None:
+        self.options = options
+        self.bus: can.BusABC | None = None
+        self.hub: SharedBus | None = None
+
+    def join(self, valve: EmulatedValve) -> CanopenSlave:
+        if self.bus is None:
+            from prm9tool.device.emulator.canopen_hub import SharedBus
+
+            self.bus = open_bus(self.options, valve.bitrate)
+            self.hub = SharedBus(self.bus)
+        assert self.hub is not None
+        slave = valve.connect_can(self.bus, receive=False)
+        self.hub.attach(slave)
+        return slave
+
+    def close(self) -> None:
+        if self.hub is not None:
+            self.hub.stop()
+        if self.bus is not None:
+            self.bus.shutdown()
+
+
+def _serve(spec: str, position: int, node: int | str | None, shared: _SharedBus) -> _Served:
     type_key, serial = factory.parse_emulator_spec(spec, position + 1)
     valve = factory.emulated_valve(type_key, serial)
     if not valve.variant.canopen:
@@ -96,8 +128,8 @@ def _serve(spec: str, position: int, node: int | str | None, options: CanOptions
         _set_lss(valve)
     elif node is not None:
         _set_node(valve, int(node))
-    bus = open_bus(options, valve.bitrate)
-    slave = valve.connect_can(bus)
+    options = shared.options
+    slave = shared.join(valve)
     emcy: list[str] = []
     valve.add_error_cause_listener(
         lambda code, register, kind: emcy.append(_emcy_line(code, register, kind))
@@ -113,7 +145,6 @@ def _serve(spec: str, position: int, node: int | str | None, options: CanOptions
     def close() -> None:
         valve.stop()
         slave.stop()
-        bus.shutdown()
 
     return _Served(valve, slave, close, emcy, node=slave.node_id)
 
@@ -202,6 +233,7 @@ def _restore_signals(previous: dict[int, Any]) -> None:
         signal.signal(number, handler)
 
 
-def _close(served: list[_Served]) -> None:
+def _close(served: list[_Served], shared: _SharedBus) -> None:
     for item in reversed(served):
         item.close()
+    shared.close()

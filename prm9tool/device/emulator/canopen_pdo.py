@@ -8,6 +8,7 @@ RPDO (CiA 301). Time is counted in whole milliseconds of simulated time.
 
 from __future__ import annotations
 
+import functools
 import logging
 from collections.abc import Callable
 from dataclasses import dataclass, field
@@ -35,9 +36,11 @@ class Dictionary(Protocol):
     def write_bytes(self, index: int, subindex: int, data: bytes) -> None: ...
 
 
-def _mapping_parameters(map_index: int) -> list[Parameter]:
+@functools.cache
+def _mapping_parameters(map_index: int) -> tuple[Parameter, ...]:
+    """The catalogue's entries of a mapping object (fixed: computed once, not per frame)."""
     entries = [p for p in CATALOGUE if p.index == map_index and p.subindex > 0]
-    return sorted(entries, key=lambda p: p.subindex)
+    return tuple(sorted(entries, key=lambda p: p.subindex))
 
 
 def mapping(valve: Dictionary, map_index: int) -> list[tuple[int, int, int]]:
@@ -184,12 +187,13 @@ class RpdoLogic:
         """A frame on the RPDO's COB-ID arrived (NMT OPERATIONAL); ignored when the RPDO maps
         nothing (CiA 301: mapping disabled). True when it was taken (the deadline watch then
         expects the next one, :meth:`.canopen_watch.TimingWatches.rpdo_received`)."""
-        if not mapping(self._valve, self.channel.map_index):
+        entries = mapping(self._valve, self.channel.map_index)
+        if not entries:
             return False
         if self.channel.trans_type in SYNC_TYPES:
             self.channel.pending = bytes(data)
         else:
-            self.apply(bytes(data))
+            self.apply(bytes(data), entries)
         return True
 
     def on_sync(self) -> None:
@@ -198,9 +202,10 @@ class RpdoLogic:
             data, self.channel.pending = self.channel.pending, None
             self.apply(data)
 
-    def apply(self, data: bytes) -> None:
+    def apply(self, data: bytes, entries: list[tuple[int, int, int]] | None = None) -> None:
         """Write the mapped objects; a too short frame is refused (CiA 301 EMCY 0x8210)."""
-        entries = mapping(self._valve, self.channel.map_index)
+        if entries is None:
+            entries = mapping(self._valve, self.channel.map_index)
         if len(data) < sum(bits // 8 for _, _, bits in entries):
             self._length_error()
             return

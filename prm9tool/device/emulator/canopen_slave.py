@@ -14,6 +14,7 @@ from __future__ import annotations
 import logging
 import struct
 import threading
+from collections.abc import Callable
 from typing import TYPE_CHECKING
 
 import can
@@ -50,7 +51,9 @@ CONFIG_POLL_MS = 10  # PDO communication parameters are re-read every 10 ms
 class CanopenSlave:
     """CiA 301 NMT slave, SDO server, 2 RPDO + 2 TPDO, SYNC consumer, heartbeat, EMCY."""
 
-    def __init__(self, valve: EmulatedValve, bus: can.BusABC) -> None:
+    def __init__(self, valve: EmulatedValve, bus: can.BusABC, receive: bool = True) -> None:
+        """``receive``: a receive thread of its own on ``bus``; False when a
+        :class:`~.canopen_hub.SharedBus` hands it the frames (many valves on one bus)."""
         self._valve = valve
         self._bus = bus
         self._sdo = SdoServer(self._sdo_read, self._sdo_write)
@@ -63,9 +66,11 @@ class CanopenSlave:
         self._tpdo_logic = [TpdoLogic(c, valve) for c in self._tpdos]
         self._now_ms = 0
         self._heartbeat_due_ms = 0
-        self._watches = TimingWatches(
-            self._rpdos, lambda: int(self._valve.read(CYCLE_PERIOD, 0)), self._on_watch_event
-        )
+        self._watches = TimingWatches(self._rpdos, lambda: self._period_us, self._on_watch_event)
+        self._period_us = 0  # 0x1006, read with the PDO parameters
+        self._sync_id = 0x080  # 0x1005
+        self.routes: frozenset[int] = frozenset()  # the COB-IDs it takes (SharedBus routing)
+        self.routes_changed: Callable[[], None] = lambda: None
         self._watch_errors: set[str] = set()  # sync_error / rpdo_timeout reported, cause on
         self._closed = False
         self._silent_until_ms = 0  # CiA 305 activate bit timing: no frames until then
@@ -79,10 +84,12 @@ class CanopenSlave:
             valve.add_restart_listener(self._on_restart)
             valve.set_nmt_handler(self._on_local_nmt)
         self._rx_stop = threading.Event()
-        self._rx_thread = threading.Thread(
-            target=self._receive, name=f"prm9-canopen-rx-{valve.serial}", daemon=True
-        )
-        self._rx_thread.start()
+        self._rx_thread: threading.Thread | None = None
+        if receive:
+            self._rx_thread = threading.Thread(
+                target=self._receive, name=f"prm9-canopen-rx-{valve.serial}", daemon=True
+            )
+            self._rx_thread.start()
 
     # --- public --------------------------------------------------------------------------
     @property
@@ -93,7 +100,7 @@ class CanopenSlave:
     def stop(self) -> None:
         """Stop receiving and transmitting for good (the bus itself belongs to the caller)."""
         self._rx_stop.set()
-        if self._rx_thread is not threading.current_thread():
+        if self._rx_thread is not None and self._rx_thread is not threading.current_thread():
             self._rx_thread.join()
         with self._valve.lock:
             self._closed = True
@@ -189,6 +196,18 @@ class CanopenSlave:
             else:
                 self._on_message(msg)
 
+    def rx_wait_s(self) -> float:
+        """How long a receiver may wait for a frame before :meth:`judge_quiet` is due."""
+        return self._watches.wait_s()
+
+    def judge_quiet(self, quiet_until_ms: float) -> None:
+        """No frame for this valve arrived up to ``quiet_until_ms`` (wall clock, ms)."""
+        self._judge_quiet(quiet_until_ms)
+
+    def receive_frame(self, msg: can.Message) -> None:
+        """A frame from the bus (a :class:`~.canopen_hub.SharedBus` calls this)."""
+        self._on_message(msg)
+
     def _judge_quiet(self, quiet_until_ms: float) -> None:
         """``recv`` timed out at ``quiet_until_ms`` (wall clock) with no frame: deadlines before
         then passed unmet. Judged at that moment, not after waiting for the lock (frames that
@@ -230,7 +249,7 @@ class CanopenSlave:
             response = self._sdo.handle(data, self._now_ms)
             if response is not None:
                 self._send(0x580 + self.node_id, response)
-        elif can_id == int(self._valve.read(SYNC_COB_ID, 0)) & 0x7FF:
+        elif can_id == self._sync_id:
             self._on_sync(arrival_ms)
         elif self.state is NmtState.OPERATIONAL:
             for logic in self._rpdo_logic:
@@ -368,3 +387,10 @@ class CanopenSlave:
     def _load_config(self) -> None:
         for channel in (*self._rpdos, *self._tpdos):
             channel.load(self._valve, self._now_ms)
+        self._period_us = int(self._valve.read(CYCLE_PERIOD, 0))
+        self._sync_id = int(self._valve.read(SYNC_COB_ID, 0)) & 0x7FF
+        rpdo_ids = (c.can_id for c in self._rpdos if c.valid)
+        routes = frozenset((0, LSS_REQUEST, self._sync_id, 0x600 + self.node_id, *rpdo_ids))
+        if routes != self.routes:
+            self.routes = routes
+            self.routes_changed()

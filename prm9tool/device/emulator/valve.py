@@ -322,13 +322,15 @@ class EmulatedValve(CanopenSide):
         return self._fw.sm.state
 
     # --- on a CAN bus -------------------------------------------------------------------
-    def connect_can(self, bus: can.BusABC) -> CanopenSlave:
-        """Put the valve on a python-can bus; AccessDeniedError on a valve without -CA."""
+    def connect_can(self, bus: can.BusABC, receive: bool = True) -> CanopenSlave:
+        """Put the valve on a python-can bus; AccessDeniedError on a valve without -CA.
+        ``receive=False``: no receive thread of its own, a
+        :class:`~.canopen_hub.SharedBus` attached to it hands it the frames."""
         if not self.variant.canopen:
             raise AccessDeniedError(f"{self.type_key} has no CANopen interface (no -CA suffix)")
         from prm9tool.device.emulator.canopen_slave import CanopenSlave
 
-        return CanopenSlave(self, bus)
+        return CanopenSlave(self, bus, receive)
 
 
 def _fault(fault: Fault | str) -> Fault:
