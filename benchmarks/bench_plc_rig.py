@@ -74,6 +74,7 @@ def main() -> int:
         counts.insert(0, 1)  # the reference
     print(f"PLC rig on udp_multicast {GROUP}, {seconds:g} s per run, load before "
           f"{os.getloadavg()[0]:.2f}")  # fmt: skip
+    per_frame(500 if args.quick else 5000)
     print(f"{'valves':>6} {'SYNC':>6} {'on time':>8} {'got':>7} {'p50':>7} {'p99':>7} "
           f"{'max':>7} {'SYNC/s':>7} {'EMCY':>5} {'load':>5} {'drops':>6} {'PLC':>6}")  # fmt: skip
     results = []
@@ -91,6 +92,60 @@ def main() -> int:
         print(f"{result.valves} valves: on-time share {result.on_time:.2%} against "
               f"{reference.on_time:.2%} for one valve; p99 {result.p99_ms / max(reference.p99_ms, 1e-3):.1f}x")  # fmt: skip
     return 0
+
+
+def per_frame(n: int) -> None:
+    """The per-frame path of one served valve, in process with a bus that sends nothing: what
+    a SYNC (TPDO1 sampled and encoded) and an RPDO1 cost, against udp_multicast's decoding and
+    1 ms of the control loop."""
+    import can
+    import can.interfaces.udp_multicast.utils as udp
+
+    from prm9tool.device.emulator import EmulatedValve
+
+    class NullBus(can.BusABC):
+        def __init__(self) -> None:
+            super().__init__(channel="null")
+
+        def send(self, msg: can.Message, timeout: float | None = None) -> None:
+            pass
+
+        def _recv_internal(self, timeout: float | None) -> tuple[None, bool]:
+            time.sleep(timeout or 0.01)
+            return None, False
+
+    bus = NullBus()
+    valve = EmulatedValve(E02, 1)
+    slave = valve.connect_can(bus, receive=False)
+    valve.advance(2.0)
+
+    def frame(can_id: int, data: bytes) -> can.Message:
+        return can.Message(arbitration_id=can_id, data=data, is_extended_id=False,
+                           timestamp=time.time())  # fmt: skip
+
+    for data in (bytes.fromhex("2F00180201000000"), *(bytes([0x2B, 0x40, 0x60, 0, w, 0, 0, 0])
+                 for w in (8, 9, 11, 15))):  # fmt: skip
+        slave.receive_frame(frame(0x60A, data))
+    slave.receive_frame(frame(0, b"\x01\x0a"))
+    slave.receive_frame(frame(0x60A, bytes([0x2B, 0x40, 0x60, 0, 15, 0, 0, 0])))
+    sync, rpdo = frame(0x80, b""), frame(0x20A, bytes([15, 0, 0x40, 0x1F]))
+    packed = udp.pack_message(rpdo)
+    steps = {
+        "SYNC (TPDO1 out)": lambda: slave.receive_frame(sync),
+        "RPDO1": lambda: slave.receive_frame(rpdo),
+        "udp_multicast decode": lambda: udp.unpack_message(packed, replace={"timestamp": 1.0}),
+        "udp_multicast encode": lambda: udp.pack_message(rpdo),
+        "1 ms of the loop": lambda: valve.advance(0.001),
+    }
+    costs = []
+    for name, step in steps.items():
+        started = time.perf_counter()
+        for _ in range(n):
+            step()
+        costs.append(f"{name} {(time.perf_counter() - started) / n * 1e6:.1f} us")
+    print("per frame: " + ", ".join(costs))
+    slave.stop()
+    bus.shutdown()
 
 
 def _enter_namespace() -> int:
