@@ -25,6 +25,7 @@ from prm9tool.catalogue.canopen_switches import POSITIONS, node_position
 from prm9tool.cli import serve_input
 from prm9tool.device import factory
 from prm9tool.device.canlink.bus import CanOptions, open_bus
+from prm9tool.device.emulator.paced_group import PacedGroup
 from prm9tool.device.records import DeviceState, NmtState
 from prm9tool.errors import CanAdapterError, ExitCode, Prm9Error, TypeKeyError
 
@@ -37,7 +38,10 @@ if TYPE_CHECKING:
     from prm9tool.device.emulator.canopen_slave import CanopenSlave
 
 POLL_S = 0.02
-LATENESS_REPORT_S = 1.0  # at most one line a second about a simulation that fell behind
+LATENESS_REPORT_S = 1.0
+# the receive thread answers a SYNC within this when a valve's loop holds the GIL (Python's
+# default is 5 ms: a TPDO1 due within 1 ms of its SYNC would wait for it; docs/PERFORMANCE.md)
+SWITCH_INTERVAL_S = 0.0002  # at most one line a second about a simulation that fell behind
 LSS_POSITION = 1  # node-ID switch: LSS and automatic bit rate (table 7-17)
 
 
@@ -62,6 +66,7 @@ class _Served:
 def run(args: argparse.Namespace) -> int:
     """Serve until SIGINT/SIGTERM; returns the exit code (2 bad spec, 6 bus not opened)."""
     options = CanOptions.from_args(args)
+    sys.setswitchinterval(SWITCH_INTERVAL_S)
     stop = threading.Event()
     served: list[_Served] = []
     shared = _SharedBus(options)
@@ -78,6 +83,8 @@ def run(args: argparse.Namespace) -> int:
         print(f"prm9tool: {exc}", file=sys.stderr)
         return ExitCode.COMMUNICATION
     previous = _on_signals(lambda *_: stop.set())
+    pacing = PacedGroup([item.valve for item in served])  # one thread runs them all
+    pacing.start()
     serve_input.listen(sys.stdin, [item.valve for item in served], _say)
     try:
         while not stop.wait(POLL_S):
@@ -86,6 +93,7 @@ def run(args: argparse.Namespace) -> int:
                 _report_lateness(item)
     finally:
         _restore_signals(previous)
+        pacing.stop()
         _close(served, shared)
     _say("stopped")
     return ExitCode.OK
@@ -134,7 +142,6 @@ def _serve(spec: str, position: int, node: int | str | None, shared: _SharedBus)
     valve.add_error_cause_listener(
         lambda code, register, kind: emcy.append(_emcy_line(code, register, kind))
     )
-    valve.start()
     if valve.node_id:
         _say(f"serial {serial}: {type_key} starting as node {valve.node_id} on {options}")
     else:

@@ -10,11 +10,13 @@ One command a line (docs/plc-testing.md, *Faults*)::
 answered in words on the serve log and changes nothing. The fault is physical (a broken wire, a
 low supply): what the firmware then detects, reports by EMCY and how it reacts is the valve's
 own behaviour, exactly what a PLC must handle. stdin at its end (closed, ``/dev/null``) simply
-ends the listening.
+ends the listening; a terminal is read only while the process is in its foreground (reading it
+from the background, ``prm9tool --serve-emulator … &``, would stop the process by SIGTTIN).
 """
 
 from __future__ import annotations
 
+import os
 import threading
 from collections.abc import Callable, Sequence
 from typing import TYPE_CHECKING, TextIO
@@ -30,6 +32,8 @@ USAGE = "commands: inject <serial|node:<id>|all> <FAULT>, clear <…> <FAULT>, f
 
 def listen(stream: TextIO, valves: Sequence[EmulatedValve], say: Callable[[str], None]) -> None:
     """Read commands from ``stream`` in a daemon thread until it ends."""
+    if _background_terminal(stream):
+        return
 
     def run() -> None:
         for line in stream:
@@ -80,3 +84,11 @@ def _faults(valves: Sequence[EmulatedValve]) -> str:
         for v in valves
     ]
     return f"faults: {', '.join(f.value for f in Fault)}; injected: {'; '.join(injected)}"
+
+
+def _background_terminal(stream: TextIO) -> bool:
+    try:
+        fd = stream.fileno()
+        return os.isatty(fd) and os.tcgetpgrp(fd) != os.getpgrp()
+    except (OSError, ValueError, AttributeError):
+        return False  # no file descriptor (a test's stream) or no terminal: read it
