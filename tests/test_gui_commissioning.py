@@ -194,6 +194,9 @@ def test_a_fault_whose_error_display_ended_is_listed_and_enable_resets_it(qtbot,
     qtbot.waitUntil(lambda: str(valve.device_state) == "DEVICE_MODE_ACTIVE", timeout=TIMEOUT)
     valve.inject(Fault.COIL_A_OPEN)
     valve.advance(0.2)
+    with qtbot.waitSignal(window.connection.failed, timeout=TIMEOUT) as refused:
+        panel.buttons["enable"].click()  # the cause is still there: the window says so
+    assert "error 0x5411 (Solenoid A disconnected) is still present" in refused.args[0]
     valve.clear(Fault.COIL_A_OPEN)
     valve.advance(11.0)  # the error's display hold (manual §5.5) is over: no error active
     assert str(valve.device_state) == "FAULT_HOLD" and not valve.status().active_errors
