@@ -56,6 +56,7 @@ class Result:
     load: float
     dropped: int  # datagrams the kernel dropped for a full socket buffer (either process)
     plc_dropped: int  # of those, dropped at the PLC's own socket
+    serve_cpu: float  # CPU seconds the serving process used per second of the run
 
 
 def main() -> int:
@@ -76,7 +77,7 @@ def main() -> int:
           f"{os.getloadavg()[0]:.2f}")  # fmt: skip
     per_frame(500 if args.quick else 5000)
     print(f"{'valves':>6} {'SYNC':>6} {'on time':>8} {'got':>7} {'p50':>7} {'p99':>7} "
-          f"{'max':>7} {'SYNC/s':>7} {'EMCY':>5} {'load':>5} {'drops':>6} {'PLC':>6}")  # fmt: skip
+          f"{'max':>7} {'SYNC/s':>7} {'EMCY':>5} {'load':>5} {'drops':>6} {'PLC':>6} {'CPU':>5}")  # fmt: skip
     results = []
     for count in counts:
         profile = f"{args.profile}.{count}" if args.profile else None
@@ -85,7 +86,7 @@ def main() -> int:
         print(f"{result.valves:>6} {result.period_ms:>4g}ms {result.on_time:>8.2%} "
               f"{result.received:>7.1%} "
               f"{result.p50_ms:>5.2f}ms {result.p99_ms:>5.2f}ms {result.max_ms:>5.1f}ms "
-              f"{result.syncs_per_s:>7.0f} {result.emcy:>5} {result.load:>5.2f} {result.dropped:>6} {result.plc_dropped:>6}",
+              f"{result.syncs_per_s:>7.0f} {result.emcy:>5} {result.load:>5.2f} {result.dropped:>6} {result.plc_dropped:>6} {result.serve_cpu:>5.2f}",
               flush=True)  # fmt: skip
     reference = results[0]
     for result in results[1:]:
@@ -178,7 +179,7 @@ def run(count: int, period_ms: float, seconds: float, profile: str | None = None
             enlarge_receive_buffer(bus)  # the PLC takes 2N + 1 frames a millisecond too
             try:
                 _commission(bus, count)
-                return _measure(bus, count, period_ms, seconds)
+                return _measure(bus, count, period_ms, seconds, serve.pid)
             finally:
                 bus.shutdown()
         finally:
@@ -281,7 +282,13 @@ def _match(sync_times: list[float], per_node) -> tuple[list[float], int]:  # typ
     return latencies or [float("nan")], on_time
 
 
-def _measure(bus, count: int, period_ms: float, seconds: float) -> Result:  # type: ignore[no-untyped-def]
+def _cpu_s(pid: int) -> float:
+    """User + system CPU seconds of process ``pid`` so far (/proc/PID/stat)."""
+    fields = Path(f"/proc/{pid}/stat").read_text().rsplit(")", 1)[1].split()
+    return (int(fields[11]) + int(fields[12])) / os.sysconf("SC_CLK_TCK")
+
+
+def _measure(bus, count: int, period_ms: float, seconds: float, pid: int) -> Result:  # type: ignore[no-untyped-def]
     import can
 
     sync_times: list[float] = []
@@ -312,6 +319,7 @@ def _measure(bus, count: int, period_ms: float, seconds: float) -> Result:  # ty
     rpdo = [can.Message(arbitration_id=0x200 + node, data=bytes([0x0F, 0, 0, 0]),
                         is_extended_id=False) for node in range(1, count + 1)]  # fmt: skip
     sync = can.Message(arbitration_id=0x080, data=b"", is_extended_id=False)
+    cpu_before = _cpu_s(pid)
     start = time.monotonic()
     n = 0
     while time.monotonic() - start < seconds:
@@ -326,6 +334,7 @@ def _measure(bus, count: int, period_ms: float, seconds: float) -> Result:  # ty
             message.data[2:4] = setpoint
             bus.send(message)
     elapsed = time.monotonic() - start
+    cpu = (_cpu_s(pid) - cpu_before) / elapsed
     time.sleep(0.2)
     stop.set()
     receiver.join()
@@ -345,6 +354,7 @@ def _measure(bus, count: int, period_ms: float, seconds: float) -> Result:  # ty
         os.getloadavg()[0],
         _udp_drops() - drops_before,
         _socket_drops(bus) - plc_before,
+        cpu,
     )
 
 
