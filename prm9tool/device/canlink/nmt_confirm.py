@@ -6,7 +6,8 @@ which the tool would refuse its own next step ("node 10 is NMT pre-operational")
 its own NMT start. So :func:`send_and_confirm` sends the command and confirms it within
 :data:`CONFIRM_S` by what the node shows on the bus anyway:
 
-* a heartbeat after the command (its state byte is the truth, whatever was asked);
+* a heartbeat after the command telling the state asked for (one telling another state is
+  taken only at the end of the bound: it may have left the node before the command came);
 * for start: the first TPDO of the node (0x180/0x280 + node ID; CiA 301 sends event-driven
   TPDOs on entering OPERATIONAL);
 * failing both within the bound, for start and pre-operational one SDO read of 0x1000: a node
@@ -57,7 +58,7 @@ def send_and_confirm(
     heard_before = seen.heartbeat_at
     try:
         sdo.node.nmt.send_command(command)
-        state = _wait(seen, heard_before, shown)
+        state = _wait(seen, heard_before, shown, expected)
     finally:
         for cob_id in tpdos:
             shared.network.unsubscribe(cob_id, on_tpdo)
@@ -71,17 +72,19 @@ def send_and_confirm(
 
 
 def _wait(
-    seen: canbus.NodeSeen, heard_before: float | None, shown: threading.Event
+    seen: canbus.NodeSeen, heard_before: float | None, shown: threading.Event, expected: NmtState
 ) -> NmtState | None:
-    """The state a heartbeat after the command told, the expected one when a TPDO showed it,
-    or None when neither came within CONFIRM_S."""
+    """``expected`` once a heartbeat after the command says so (or, for start, a TPDO showed
+    it); at the end of CONFIRM_S the state a later heartbeat told instead (one in flight as
+    the command went out may still tell the old state: it does not end the wait), or None."""
     deadline = time.monotonic() + CONFIRM_S
     while True:
-        if seen.heartbeat_at is not None and seen.heartbeat_at != heard_before:
-            return seen.nmt_state
+        heard = seen.heartbeat_at is not None and seen.heartbeat_at != heard_before
+        if heard and seen.nmt_state is expected:
+            return expected
         if shown.is_set():
             return NmtState.OPERATIONAL
         left = deadline - time.monotonic()
         if left <= 0:
-            return None
+            return seen.nmt_state if heard else None
         shown.wait(min(left, 0.005))
