@@ -99,3 +99,38 @@ def test_each_emcy_is_told_with_the_error_that_raised_it(valves):
     assert [code for code, _ in told] == [0x8100, 0x8100]
     assert told[0][1].startswith("CANopen SYNC not received")
     assert told[1][1].startswith("CANopen RPDO not received within its event timer")
+
+
+def test_the_serve_log_tells_an_lss_valve_waiting_and_its_assignment(capsys, request):
+    import can
+    from canopen_rig import unique_channel
+    from waiting import wait_for
+
+    from prm9tool.cli import serve
+    from prm9tool.device.canlink.bus import CanOptions
+
+    channel = unique_channel(request.node.name)
+    master = can.Bus(interface="virtual", channel=channel)
+    valve = EmulatedValve(E02_CA, 8005, switches=(6, 1))  # node-ID switch 1: LSS
+    bus = can.Bus(interface="virtual", channel=channel)
+    slave = valve.connect_can(bus)
+    try:
+        valve.advance(2.0)
+        item = serve._Served(valve, slave, lambda: None, [], node=slave.node_id)
+        options = CanOptions("virtual", channel)
+        serve._report_changes(item, options)
+        waiting = capsys.readouterr().out
+        assert "serial 8005 (no node ID): NMT initialising, waiting for an LSS master" in waiting
+        assert "node 0" not in waiting
+        for data in ("04 01", "11 14", "04 00"):  # configuration state, node 20, waiting
+            master.send(can.Message(arbitration_id=0x7E5, data=bytes.fromhex(data).ljust(8, b"\0"),
+                                    is_extended_id=False))  # fmt: skip
+        wait_for(lambda: slave.node_id == 20)
+        serve._report_changes(item, options)
+        told = capsys.readouterr().out
+        assert "serial 8005: LSS assigned node ID 20 (was none)" in told
+        assert "serial 8005 node 20: NMT pre-operational" in told
+    finally:
+        slave.stop()
+        bus.shutdown()
+        master.shutdown()
