@@ -20,8 +20,8 @@ from waiting import wait_for
 from prm9tool.device.emulator.canopen_watch import SYNC_TIMEOUT_FACTOR
 from prm9tool.device.records import DeviceState
 
-PERIOD_S = 0.010  # 0x1006 = 10 000 us, the bus
-STALL_S = 0.040  # the loop stands still for four SYNC periods, then catches up
+PERIOD_S = 0.025  # 0x1006 = 25 000 us (the 10 ms bus, with room for a loaded sender)
+STALL_S = 0.100  # the loop stands still for four SYNC periods, then catches up
 LIMIT_S = SYNC_TIMEOUT_FACTOR * PERIOD_S
 
 
@@ -33,7 +33,7 @@ def rig(request: pytest.FixtureRequest):
     rig.close()
 
 
-def _commission(rig: Rig, period_us: int = 10_000) -> None:
+def _commission(rig: Rig, period_us: int = round(PERIOD_S * 1e6)) -> None:
     rig.exchange(
         f"60A 23 06 10 00 {period_us & 0xFF:02X} {period_us >> 8 & 0xFF:02X} "
         f"{period_us >> 16 & 0xFF:02X} 00",
@@ -73,8 +73,9 @@ class _SyncSender:
             n += 1
             self._stop.wait(max(0.0, start + n * self.period_s - time.monotonic()))
             message = can.Message(arbitration_id=0x080, data=b"", is_extended_id=False)
+            before = time.time()  # the virtual bus stamps the frame when it sends it: later
             self.bus.send(message)
-            self.sent.append(message.timestamp or time.time())
+            self.sent.append(before)
 
     def max_gap_s(self) -> float:
         return max(b - a for a, b in itertools.pairwise(self.sent))
@@ -106,8 +107,8 @@ def test_a_loop_that_falls_behind_does_not_miss_a_healthy_sync(rig: Rig):
     rig.drain()
     rig.valve.start()
     with _SyncSender(rig.master, PERIOD_S) as plc:
-        time.sleep(0.2)  # the watch is armed by the first SYNC
-        done = _stalls(rig, count=5, every_s=0.15)
+        time.sleep(0.3)  # the watch is armed by the first SYNC
+        done = _stalls(rig, count=5, every_s=0.3)
         assert done.wait(30.0), "the paced loop never stalled"
         wait_for(lambda: rig.valve.pacer.lag_s() < 0.02, 30.0)  # caught up again
         time.sleep(0.1)
@@ -123,16 +124,18 @@ def test_a_sync_that_stops_is_missed_in_real_time(rig: Rig):
     _commission(rig)
     rig.drain()
     rig.valve.start()
-    with _SyncSender(rig.master, PERIOD_S):
+    with _SyncSender(rig.master, PERIOD_S) as plc:
         time.sleep(0.2)
-    stopped = time.monotonic()
     wait_for(lambda: rig.valve.status().error_code == 0x8100, 5.0)
-    assert time.monotonic() - stopped >= LIMIT_S - 0.002  # not before the limit
-    assert _emcy(rig.drain())[:1] == ["08A 00 81 11 00 00 00 00 00"]
+    emcy = next(m for m in iter(lambda: rig.master.recv(1.0), None) if m.arbitration_id == 0x08A)
+    assert bytes(emcy.data).hex(" ") == "00 81 11 00 00 00 00 00"
+    # never before the limit: a loaded PC may hold the sender up earlier, a real gap then
+    last_before = max(t for t in plc.sent if t < emcy.timestamp)
+    assert emcy.timestamp - last_before >= LIMIT_S
 
 
 def test_an_rpdo_deadline_is_judged_at_reception_while_the_loop_stalls(rig: Rig):
-    rig.exchange("60A 2B 00 14 05 14 00 00 00", "58A 60 00 14 05 00 00 00 00")  # 20 ms
+    rig.exchange("60A 2B 00 14 05 32 00 00 00", "58A 60 00 14 05 00 00 00 00")  # 50 ms
     _commission(rig, period_us=0)
     rig.drain()
     rig.valve.start()
@@ -140,7 +143,7 @@ def test_an_rpdo_deadline_is_judged_at_reception_while_the_loop_stalls(rig: Rig)
     sent: list[float] = []
 
     def plc() -> None:
-        while not stop.wait(0.005):
+        while not stop.wait(0.010):
             message = can.Message(arbitration_id=0x20A, data=bytes(8), is_extended_id=False)
             message.data[0] = 0x0F
             rig.master.send(message)
@@ -150,7 +153,7 @@ def test_an_rpdo_deadline_is_judged_at_reception_while_the_loop_stalls(rig: Rig)
     thread.start()
     try:
         time.sleep(0.1)
-        done = _stalls(rig, count=4, every_s=0.15)
+        done = _stalls(rig, count=4, every_s=0.3)
         assert done.wait(30.0)
         wait_for(lambda: rig.valve.pacer.lag_s() < 0.02, 30.0)
         frames = rig.drain()  # while the RPDOs still come
@@ -158,7 +161,7 @@ def test_an_rpdo_deadline_is_judged_at_reception_while_the_loop_stalls(rig: Rig)
         stop.set()
         thread.join()
     gap = max(b - a for a, b in itertools.pairwise(sent))
-    if gap > 0.020:
+    if gap > 0.050:
         pytest.skip(f"the RPDO sender itself was {gap * 1e3:.1f} ms late")
     assert _emcy(frames) == []
     wait_for(lambda: rig.valve.status().error_code == 0x8100, 5.0)  # it stopped: missed
