@@ -117,7 +117,11 @@ def enlarge_receive_buffer(bus: can.BusABC, size: int = RECEIVE_BUFFER) -> int:
         return 0
     if not isinstance(fd, int) or fd < 0:
         return 0
-    sock = socket.socket(fileno=socket.dup(fd))  # the same socket; closing the copy is safe
+    try:
+        sock = socket.socket(fileno=socket.dup(fd))  # the same socket; closing the copy is safe
+    except OSError as exc:
+        log.info("receive buffer of the CAN socket not enlarged: %s", exc)
+        return 0
     try:
         sock.setsockopt(socket.SOL_SOCKET, socket.SO_RCVBUF, size)
         return int(sock.getsockopt(socket.SOL_SOCKET, socket.SO_RCVBUF))
