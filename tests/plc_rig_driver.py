@@ -99,7 +99,7 @@ def _plc(network, serve, lines, eds, count, period_ms, seconds):  # type: ignore
         serve.stdin.write(f"inject node:{FAULTY} COIL_A_OPEN\n")
         serve.stdin.flush()
         _wait(lambda: (FAULTY, 0x5411) in emcy, 10)
-        states_faulty = nodes[FAULTY].sdo[0x6041].raw & 0x0F
+        states_faulty = _settled_state(nodes[FAULTY])
         serve.stdin.write(f"clear node:{FAULTY} COIL_A_OPEN\n")
         serve.stdin.flush()
         time.sleep(0.5)
@@ -127,6 +127,14 @@ def _plc(network, serve, lines, eds, count, period_ms, seconds):  # type: ignore
         "states": states,
         "tpdo": tpdo,
     }
+
+
+def _settled_state(node) -> int:  # type: ignore[no-untyped-def]
+    """Bits 0…3 of the status word once the fault reaction (a few ms) is over."""
+    deadline = time.monotonic() + 5
+    while (state := node.sdo[0x6041].raw & 0x0F) == 0b0111 and time.monotonic() < deadline:
+        time.sleep(0.01)  # FAULT_REACTION: outputs being switched off
+    return state
 
 
 def _enable(node) -> None:  # type: ignore[no-untyped-def]
