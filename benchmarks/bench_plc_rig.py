@@ -35,6 +35,7 @@ E02 = "PRM9-06.3Z11/30-24E02S02-CA"
 GROUP = "239.74.163.11"
 NAMESPACE = "ip link set lo up && ip link set lo multicast on && ip route add 224.0.0.0/4 dev lo"
 ON_TIME_S = 0.001
+FAULTY = 2  # the node whose coil A is disconnected for the middle third of each run
 INSIDE = "PRM9_BENCH_PLC_RIG_INSIDE"
 sys.path.insert(0, str(Path(__file__).resolve().parent.parent))
 from prm9tool.device.emulator.canopen_hub import enlarge_receive_buffer  # noqa: E402
@@ -47,6 +48,7 @@ class Result:
     valves: int
     period_ms: float
     on_time: float  # share of the expected TPDO1 frames within ON_TIME_S of their SYNC
+    fifo_on_time: float  # the same with each TPDO1 answering the oldest unanswered SYNC
     received: float  # share of the expected TPDO1 frames received at all
     p50_ms: float
     p99_ms: float
@@ -76,7 +78,7 @@ def main() -> int:
     print(f"PLC rig on udp_multicast {GROUP}, {seconds:g} s per run, load before "
           f"{os.getloadavg()[0]:.2f}")  # fmt: skip
     per_frame(500 if args.quick else 5000)
-    print(f"{'valves':>6} {'SYNC':>6} {'on time':>8} {'got':>7} {'p50':>7} {'p99':>7} "
+    print(f"{'valves':>6} {'SYNC':>6} {'on time':>8} {'FIFO':>7} {'got':>7} {'p50':>7} {'p99':>7} "
           f"{'max':>7} {'SYNC/s':>7} {'EMCY':>5} {'load':>5} {'drops':>6} {'PLC':>6} {'CPU':>5}")  # fmt: skip
     results = []
     for count in counts:
@@ -84,6 +86,7 @@ def main() -> int:
         result = run(count, 1.0 if count <= 16 else 2.0, seconds, profile)
         results.append(result)
         print(f"{result.valves:>6} {result.period_ms:>4g}ms {result.on_time:>8.2%} "
+              f"{result.fifo_on_time:>7.2%} "
               f"{result.received:>7.1%} "
               f"{result.p50_ms:>5.2f}ms {result.p99_ms:>5.2f}ms {result.max_ms:>5.1f}ms "
               f"{result.syncs_per_s:>7.0f} {result.emcy:>5} {result.load:>5.2f} {result.dropped:>6} {result.plc_dropped:>6} {result.serve_cpu:>5.2f}",
@@ -179,7 +182,7 @@ def run(count: int, period_ms: float, seconds: float, profile: str | None = None
             enlarge_receive_buffer(bus)  # the PLC takes 2N + 1 frames a millisecond too
             try:
                 _commission(bus, count)
-                return _measure(bus, count, period_ms, seconds, serve.pid)
+                return _measure(bus, count, period_ms, seconds, serve)
             finally:
                 bus.shutdown()
         finally:
@@ -188,6 +191,12 @@ def run(count: int, period_ms: float, seconds: float, profile: str | None = None
                 serve.wait(20)
             except subprocess.TimeoutExpired:
                 serve.kill()
+
+
+def _caused(node: int, data: bytes, count: int) -> bool:
+    """The EMCY of the fault the benchmark injects on FAULTY (5411, and its 0000 reset)."""
+    code = int.from_bytes(bytes(data[:2]), "little")
+    return count >= FAULTY and node == FAULTY and code in (0x5411, 0x0000)
 
 
 def _serve(count: int, data: str, profile: str | None) -> subprocess.Popen[str]:
@@ -200,7 +209,7 @@ def _serve(count: int, data: str, profile: str | None) -> subprocess.Popen[str]:
     root = Path(__file__).resolve().parent.parent
     env["PYTHONPATH"] = os.pathsep.join(filter(None, [str(root), env.get("PYTHONPATH")]))
     return subprocess.Popen(command, env=env, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL,
-                            stdin=subprocess.DEVNULL, text=True)  # fmt: skip
+                            stdin=subprocess.PIPE, text=True)  # fmt: skip
 
 
 def _commission(bus, count: int) -> None:  # type: ignore[no-untyped-def]
@@ -263,6 +272,17 @@ def _socket_drops(bus) -> int:  # type: ignore[no-untyped-def]
     return 0
 
 
+def _fifo_on_time(sync_times: list[float], per_node) -> int:  # type: ignore[no-untyped-def]
+    """TPDO1 frames within ON_TIME_S when each answers the oldest SYNC its node has not
+    answered yet: exact without lost frames; with losses a lower bound (later frames count
+    against earlier SYNCs), as the latest-SYNC matching of :func:`_match` is an upper one."""
+    return sum(
+        0.0 <= got - sent <= ON_TIME_S
+        for times in per_node
+        for sent, got in zip(sync_times, times, strict=False)
+    )
+
+
 def _match(sync_times: list[float], per_node) -> tuple[list[float], int]:  # type: ignore[no-untyped-def]
     """Latency of each TPDO1 after the latest SYNC sent before it (each SYNC answered at most
     once per node: a lost frame does not shift the rest); the count within ON_TIME_S."""
@@ -288,7 +308,7 @@ def _cpu_s(pid: int) -> float:
     return (int(fields[11]) + int(fields[12])) / os.sysconf("SC_CLK_TCK")
 
 
-def _measure(bus, count: int, period_ms: float, seconds: float, pid: int) -> Result:  # type: ignore[no-untyped-def]
+def _measure(bus, count: int, period_ms: float, seconds: float, serve) -> Result:  # type: ignore[no-untyped-def]
     import can
 
     sync_times: list[float] = []
@@ -306,11 +326,16 @@ def _measure(bus, count: int, period_ms: float, seconds: float, pid: int) -> Res
             cob, node = msg.arbitration_id & 0x780, msg.arbitration_id & 0x7F
             if cob == 0x180 and node in tpdo:
                 tpdo[node].append(msg.timestamp)
-            elif cob == 0x080 and node:
-                emcy[0] += 1
+            elif cob == 0x080 and node and not _caused(node, msg.data, count):
+                emcy[0] += 1  # an EMCY the PLC did not cause (the injected fault's are)
 
     def bus_pending() -> bool:
         return False
+
+    def fault(verb: str) -> None:  # on the serve command's stdin (docs/plc-testing.md)
+        if count >= FAULTY:
+            serve.stdin.write(f"{verb} node:{FAULTY} COIL_A_OPEN\n")
+            serve.stdin.flush()
 
     drops_before, plc_before = _udp_drops(), _socket_drops(bus)
     receiver = threading.Thread(target=receive, daemon=True)
@@ -319,7 +344,9 @@ def _measure(bus, count: int, period_ms: float, seconds: float, pid: int) -> Res
     rpdo = [can.Message(arbitration_id=0x200 + node, data=bytes([0x0F, 0, 0, 0]),
                         is_extended_id=False) for node in range(1, count + 1)]  # fmt: skip
     sync = can.Message(arbitration_id=0x080, data=b"", is_extended_id=False)
+    pid = serve.pid
     cpu_before = _cpu_s(pid)
+    injected = cleared = False
     start = time.monotonic()
     n = 0
     while time.monotonic() - start < seconds:
@@ -329,6 +356,12 @@ def _measure(bus, count: int, period_ms: float, seconds: float, pid: int) -> Res
             time.sleep(delay)
         sync_times.append(time.time())
         bus.send(sync)
+        if not injected and n * period >= seconds / 3:
+            injected = True
+            fault("inject")  # the valve faults: its TPDO1 shows FAULT_HOLD, 5411 is caused
+        elif not cleared and n * period >= 2 * seconds / 3:
+            cleared = True
+            fault("clear")
         setpoint = (8000 if (n // 500) % 2 else -8000).to_bytes(2, "little", signed=True)
         for message in rpdo:  # RPDO1 every SYNC: control word 0Fh, a ±50 % square
             message.data[2:4] = setpoint
@@ -339,12 +372,14 @@ def _measure(bus, count: int, period_ms: float, seconds: float, pid: int) -> Res
     stop.set()
     receiver.join()
     latencies, on_time = _match(sync_times, tpdo.values())
+    fifo = _fifo_on_time(sync_times, tpdo.values())
     received = sum(len(t) for t in tpdo.values())
     expected = len(sync_times) * count
     return Result(
         count,
         period_ms,
         on_time / max(expected, 1),
+        fifo / max(expected, 1),
         received / max(expected, 1),
         statistics.median(latencies) * 1e3,
         latencies[min(len(latencies) - 1, int(0.99 * len(latencies)))] * 1e3,
