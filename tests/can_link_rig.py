@@ -144,8 +144,7 @@ def _wrap_sdo(rig: LinkRig) -> None:
                 return
         on_message(msg)
 
-    rig.slave._notifier.remove_listener(on_message)
-    rig.slave._notifier.add_listener(filtered)
+    rig.slave._on_message = filtered  # type: ignore[method-assign]  # its receive thread's
     send = rig.bus.send
 
     def cabled_send(msg: can.Message, timeout: float | None = None) -> None:

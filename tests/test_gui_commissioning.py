@@ -7,6 +7,7 @@ from __future__ import annotations
 import pytest
 from gui_support import E02_CA, emulated, go_online, main_window
 
+from prm9tool.device.emulator import Fault
 from prm9tool.scope import Waveform
 from prm9tool.views import prompts
 
@@ -179,3 +180,28 @@ def test_the_oscilloscopes_buttons_stay_where_they_are_whatever_the_message(qtbo
         qtbot.wait(10)  # the layout settles in the event loop
         assert [_position(button) for button in watched] == before
     assert scope.status.toolTip()  # the cut message is whole in the tip
+
+
+def test_a_fault_whose_error_display_ended_is_listed_and_enable_resets_it(qtbot, window):
+    """Issue 30: after a fault the list said "No error." in FAULT_HOLD and Enable did nothing
+    (08h was no edge of R: R was already 1 in DEVICE_MODE_ACTIVE)."""
+    valve = emulated(SERIAL)
+    status_window = window.show_status_window()
+    panel = status_window.commissioning
+    qtbot.waitUntil(lambda: "Press NMT start, then Enable" in panel.reason.text(), timeout=TIMEOUT)
+    panel.buttons["nmt_start"].click()
+    panel.buttons["enable"].click()
+    qtbot.waitUntil(lambda: str(valve.device_state) == "DEVICE_MODE_ACTIVE", timeout=TIMEOUT)
+    valve.inject(Fault.COIL_A_OPEN)
+    valve.advance(0.2)
+    with qtbot.waitSignal(window.connection.failed, timeout=TIMEOUT) as refused:
+        panel.buttons["enable"].click()  # the cause is still there: the window says so
+    assert "error 0x5411 (Solenoid A disconnected) is still present" in refused.args[0]
+    valve.clear(Fault.COIL_A_OPEN)
+    valve.advance(11.0)  # the error's display hold (manual §5.5) is over: no error active
+    assert str(valve.device_state) == "FAULT_HOLD" and not valve.status().active_errors
+    qtbot.waitUntil(lambda: "still holds the fault" in status_window.errors.item(0).text(),
+                    timeout=TIMEOUT)  # fmt: skip
+    assert "No error." not in status_window.errors.item(0).text()
+    panel.buttons["enable"].click()
+    qtbot.waitUntil(lambda: str(valve.device_state) == "DEVICE_MODE_ACTIVE", timeout=TIMEOUT)

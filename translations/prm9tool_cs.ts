@@ -1809,6 +1809,26 @@ Poslední akce možná nebyla dokončena. Uložte svou práci pod novým názvem
             <source>The acceptance profile cannot be used.</source>
             <translation>Přejímací profil nelze použít.</translation>
         </message>
+        <message>
+            <source>the valve stays in {0}: error 0x{1} ({2}) is still present — remove its cause, then enable again (the control word 08h resets the fault once it is gone)</source>
+            <translation>Ventil zůstává ve stavu {0}: chyba 0x{1} ({2}) stále trvá — odstraňte její příčinu a pak jej znovu povolte (řídicí slovo 08h resetuje poruchu, jakmile pomine)</translation>
+        </message>
+        <message>
+            <source>the valve stays in {0} with no error present: it did not take the fault reset — write the control word 00h, then enable again</source>
+            <translation>Ventil zůstává ve stavu {0}, ačkoli žádná chyba netrvá: reset poruchy nepřijal — zapište řídicí slovo 00h a pak jej znovu povolte</translation>
+        </message>
+        <message>
+            <source>the valve is NMT stopped and takes no control word: send NMT start first</source>
+            <translation>Ventil je ve stavu NMT zastaven a nepřijímá řídicí slovo: nejprve pošlete NMT start</translation>
+        </message>
+        <message>
+            <source>the valve is still starting up (about 2 s after power-up): enable it then</source>
+            <translation>Ventil se ještě spouští (asi 2 s po zapnutí): povolte jej potom</translation>
+        </message>
+        <message>
+            <source>the valve is in {0} after the control word 08h → 09h → 0Bh → 0Fh, not DEVICE_MODE_ACTIVE</source>
+            <translation>Ventil je po řídicím slově 08h → 09h → 0Bh → 0Fh ve stavu {0}, ne DEVICE_MODE_ACTIVE</translation>
+        </message>
     </context>
     <context>
         <name>FileWorkflow</name>
@@ -5049,6 +5069,10 @@ Zajistěte, aby to hydraulika bezpečně snesla. Tlačítko Stop test kdykoli uk
         <message>
             <source>off</source>
             <translation>nesvítí</translation>
+        </message>
+        <message>
+            <source>No error is present any more, but the valve still holds the fault (device state {0}): press Enable (control word 08h → 09h → 0Bh → 0Fh) to reset it.</source>
+            <translation>Žádná chyba již netrvá, ventil však stále drží poruchu (stav zařízení {0}): stiskněte Uvolnit (řídicí slovo 08h → 09h → 0Bh → 0Fh) a resetujte ji.</translation>
         </message>
         <message>
             <source>No error.</source>

@@ -1799,6 +1799,26 @@ Die letzte Aktion wurde womöglich nicht vollständig ausgeführt. Speichern Sie
             <source>The acceptance profile cannot be used.</source>
             <translation>Das Abnahmeprofil kann nicht verwendet werden.</translation>
         </message>
+        <message>
+            <source>the valve stays in {0}: error 0x{1} ({2}) is still present — remove its cause, then enable again (the control word 08h resets the fault once it is gone)</source>
+            <translation>Das Ventil bleibt in {0}: Fehler 0x{1} ({2}) liegt noch an — beseitigen Sie die Ursache und aktivieren Sie es dann erneut (das Steuerwort 08h setzt den Fehler zurück, sobald er behoben ist)</translation>
+        </message>
+        <message>
+            <source>the valve stays in {0} with no error present: it did not take the fault reset — write the control word 00h, then enable again</source>
+            <translation>Das Ventil bleibt in {0}, obwohl kein Fehler anliegt: es hat den Fehler-Reset nicht angenommen — schreiben Sie das Steuerwort 00h und aktivieren Sie es dann erneut</translation>
+        </message>
+        <message>
+            <source>the valve is NMT stopped and takes no control word: send NMT start first</source>
+            <translation>Das Ventil ist NMT-gestoppt und nimmt kein Steuerwort an: senden Sie zuerst NMT-Start</translation>
+        </message>
+        <message>
+            <source>the valve is still starting up (about 2 s after power-up): enable it then</source>
+            <translation>Das Ventil startet noch (etwa 2 s nach dem Einschalten): aktivieren Sie es danach</translation>
+        </message>
+        <message>
+            <source>the valve is in {0} after the control word 08h → 09h → 0Bh → 0Fh, not DEVICE_MODE_ACTIVE</source>
+            <translation>Das Ventil ist nach dem Steuerwort 08h → 09h → 0Bh → 0Fh in {0}, nicht in DEVICE_MODE_ACTIVE</translation>
+        </message>
     </context>
     <context>
         <name>FileWorkflow</name>
@@ -5027,6 +5047,10 @@ Stellen Sie sicher, dass die Hydraulik dafür sicher ist. Stopp beendet ihn jede
         <message>
             <source>off</source>
             <translation>aus</translation>
+        </message>
+        <message>
+            <source>No error is present any more, but the valve still holds the fault (device state {0}): press Enable (control word 08h → 09h → 0Bh → 0Fh) to reset it.</source>
+            <translation>Es liegt kein Fehler mehr an, aber das Ventil hält den Fehlerzustand noch (Gerätezustand {0}): drücken Sie Freigeben (Steuerwort 08h → 09h → 0Bh → 0Fh), um ihn zurückzusetzen.</translation>
         </message>
         <message>
             <source>No error.</source>

@@ -20,7 +20,6 @@ from prm9tool.catalogue import CAPPED_BY, CATALOGUE, Parameter
 from prm9tool.catalogue.commissioning import (
     CONTROL_WORD,
     DISABLE_SEQUENCE,
-    ENABLE_SEQUENCE,
     NmtCommand,
 )
 from prm9tool.catalogue.typekey import TypeKey
@@ -247,9 +246,12 @@ class Valve:
 
     def enable(self) -> None:
         """Control word 08h → 09h → 0Bh → 0Fh (manual §7.4, table 7-19): from INIT or a
-        cleared fault to DEVICE_MODE_ACTIVE, where the valve follows its setpoint."""
-        for word in ENABLE_SEQUENCE:
-            self._session.write(CONTROL_WORD, word)
+        fault whose cause is gone to DEVICE_MODE_ACTIVE, where the valve follows its setpoint.
+        Raises :class:`~prm9tool.device.enabling.NotEnabledError` (an AccessDeniedError) when
+        the valve does not get there, saying why (e.g. which error is still present)."""
+        from prm9tool.device.enabling import enable
+
+        enable(self._session)
 
     def disable(self) -> None:
         """Control word 0Fh → 0Bh → 09h → 08h: back to INIT step by step."""

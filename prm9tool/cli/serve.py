@@ -3,8 +3,11 @@
 Each valve runs its firmware in real time and answers on the bus of ``--can-interface`` /
 ``--can-channel`` until SIGINT or SIGTERM, so a PLC or a CANopen master under development (or
 prm9tool in another process) talks to it as to a real valve. One line goes to stdout when a
-valve is on the bus and one per NMT or device-state change and per EMCY; the stored parameters
-persist in ``<user data dir>/emulator/<serial>.json`` as the GUI's emulated valves' do.
+valve is on the bus and one per NMT or device-state change, per LSS node-ID assignment and per
+EMCY (named by the error that raised it), and one when a valve's simulation fell behind the
+wall clock; the stored parameters persist in ``<user data dir>/emulator/<serial>.json`` as the
+GUI's emulated valves' do. Lines on stdin inject and clear physical faults (:mod:`.serve_input`,
+docs/plc-testing.md).
 """
 
 from __future__ import annotations
@@ -13,63 +16,118 @@ import argparse
 import signal
 import sys
 import threading
+import time
 from collections.abc import Callable
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
 
 from prm9tool.catalogue.canopen_switches import POSITIONS, node_position
+from prm9tool.cli import serve_input
 from prm9tool.device import factory
 from prm9tool.device.canlink.bus import CanOptions, open_bus
-from prm9tool.device.canlink.status import emcy_text
+from prm9tool.device.emulator.paced_group import PacedGroup
 from prm9tool.device.records import DeviceState, NmtState
 from prm9tool.errors import CanAdapterError, ExitCode, Prm9Error, TypeKeyError
 
 if TYPE_CHECKING:
+    import can
+
+    from prm9tool.catalogue.error_kinds import ErrorKind
     from prm9tool.device.emulator import EmulatedValve
+    from prm9tool.device.emulator.canopen_hub import SharedBus
+    from prm9tool.device.emulator.canopen_slave import CanopenSlave
 
 POLL_S = 0.02
+LATENESS_REPORT_S = 1.0
+# the receive thread answers a SYNC within this when a valve's loop holds the GIL (Python's
+# default is 5 ms: a TPDO1 due within 1 ms of its SYNC would wait for it; docs/PERFORMANCE.md)
+SWITCH_INTERVAL_S = 0.0002  # at most one line a second about a simulation that fell behind
 LSS_POSITION = 1  # node-ID switch: LSS and automatic bit rate (table 7-17)
 
 
 @dataclass
 class _Served:
     valve: EmulatedValve
+    slave: CanopenSlave
     close: Callable[[], None]
     emcy: list[str]  # EMCY lines the valve's error listener queued
     nmt: NmtState | None = None  # None: not reported yet
     state: DeviceState | None = None
+    node: int = 0  # the node ID last reported (0: none yet, LSS)
+    lateness_due: float = 0.0  # monotonic time of the next lateness report
+
+    @property
+    def label(self) -> str:
+        """``serial 4711 node 10``, or ``serial 4711 (no node ID)`` before an LSS master."""
+        node = self.slave.node_id
+        return f"serial {self.valve.serial} " + (f"node {node}" if node else "(no node ID)")
 
 
 def run(args: argparse.Namespace) -> int:
     """Serve until SIGINT/SIGTERM; returns the exit code (2 bad spec, 6 bus not opened)."""
     options = CanOptions.from_args(args)
+    sys.setswitchinterval(SWITCH_INTERVAL_S)
     stop = threading.Event()
     served: list[_Served] = []
+    shared = _SharedBus(options)
     try:
         for position, spec in enumerate(args.serve_emulator):
             node = args.node_id[position] if position < len(args.node_id) else None
-            served.append(_serve(spec, position, node, options))
+            served.append(_serve(spec, position, node, shared))
     except TypeKeyError as exc:
-        _close(served)
+        _close(served, shared)
         print(f"prm9tool: --serve-emulator: {exc}", file=sys.stderr)
         return ExitCode.USAGE
     except (CanAdapterError, Prm9Error) as exc:
-        _close(served)
+        _close(served, shared)
         print(f"prm9tool: {exc}", file=sys.stderr)
         return ExitCode.COMMUNICATION
     previous = _on_signals(lambda *_: stop.set())
+    pacing = PacedGroup([item.valve for item in served])  # one thread runs them all
+    pacing.start()
+    serve_input.listen(sys.stdin, [item.valve for item in served], _say)
     try:
         while not stop.wait(POLL_S):
             for item in served:
                 _report_changes(item, options)
+                _report_lateness(item)
     finally:
         _restore_signals(previous)
-        _close(served)
+        pacing.stop()
+        _close(served, shared)
     _say("stopped")
     return ExitCode.OK
 
 
-def _serve(spec: str, position: int, node: int | str | None, options: CanOptions) -> _Served:
+class _SharedBus:
+    """The one bus every served valve is on, opened with the first valve, and its one receive
+    thread (:class:`~prm9tool.device.emulator.canopen_hub.SharedBus`): a bus per valve would
+    decode every frame once per valve (docs/PERFORMANCE.md, "The PLC rig")."""
+
+    def __init__(self, options: CanOptions) -> None:
+        self.options = options
+        self.bus: can.BusABC | None = None
+        self.hub: SharedBus | None = None
+
+    def join(self, valve: EmulatedValve) -> CanopenSlave:
+        if self.bus is None:
+            from prm9tool.device.emulator.canopen_hub import SharedBus
+
+            self.bus = open_bus(self.options, valve.bitrate)
+            self.hub = SharedBus(self.bus)
+        assert self.hub is not None
+        slave = valve.connect_can(self.bus, receive=False)
+        self.hub.attach(slave)
+        return slave
+
+    def close(self) -> None:
+        if self.hub is not None:
+            self.hub.stop()
+        if self.bus is not None:
+            self.bus.shutdown()
+
+
+def _serve(spec: str, position: int, node: int | str | None, shared: _SharedBus) -> _Served:
     type_key, serial = factory.parse_emulator_spec(spec, position + 1)
     valve = factory.emulated_valve(type_key, serial)
     if not valve.variant.canopen:
@@ -78,11 +136,12 @@ def _serve(spec: str, position: int, node: int | str | None, options: CanOptions
         _set_lss(valve)
     elif node is not None:
         _set_node(valve, int(node))
-    bus = open_bus(options, valve.bitrate)
-    slave = valve.connect_can(bus)
+    options = shared.options
+    slave = shared.join(valve)
     emcy: list[str] = []
-    valve.add_error_listener(lambda code, register: emcy.append(_emcy_line(code, register)))
-    valve.start()
+    valve.add_error_cause_listener(
+        lambda code, register, kind: emcy.append(_emcy_line(code, register, kind))
+    )
     if valve.node_id:
         _say(f"serial {serial}: {type_key} starting as node {valve.node_id} on {options}")
     else:
@@ -93,9 +152,8 @@ def _serve(spec: str, position: int, node: int | str | None, options: CanOptions
     def close() -> None:
         valve.stop()
         slave.stop()
-        bus.shutdown()
 
-    return _Served(valve, close, emcy)
+    return _Served(valve, slave, close, emcy, node=slave.node_id)
 
 
 def _set_node(valve: EmulatedValve, node: int) -> None:
@@ -122,24 +180,48 @@ def _set_lss(valve: EmulatedValve) -> None:
 def _report_changes(item: _Served, options: CanOptions) -> None:
     status = item.valve.status()
     while item.emcy:
-        _say(f"serial {item.valve.serial} node {item.valve.node_id}: {item.emcy.pop(0)}")
-    if status.nmt_state != item.nmt:
-        if (
-            item.nmt in (None, NmtState.INITIALISING)
-            and status.nmt_state is NmtState.PRE_OPERATIONAL
-        ):
-            _say(f"serial {item.valve.serial} node {item.valve.node_id}: on the bus {options}")
-        item.nmt = status.nmt_state
-        _say(f"serial {item.valve.serial} node {item.valve.node_id}: NMT {status.nmt_state}")
+        _say(f"{item.label}: {item.emcy.pop(0)}")
+    node = item.slave.node_id
+    if node != item.node:
+        was = f"node {item.node}" if item.node else "none"
+        _say(f"serial {item.valve.serial}: LSS assigned node ID {node} (was {was})")
+        item.node = node
+    # the slave's own NMT state: a valve waiting for an LSS master is still initialising
+    nmt = item.slave.state if node else NmtState.INITIALISING
+    if nmt != item.nmt:
+        if item.nmt in (None, NmtState.INITIALISING) and nmt is NmtState.PRE_OPERATIONAL:
+            _say(f"{item.label}: on the bus {options}")
+        item.nmt = nmt
+        if node:
+            _say(f"{item.label}: NMT {nmt}")
+        else:
+            _say(f"{item.label}: NMT {nmt}, waiting for an LSS master to assign a node ID")
     if status.device_state != item.state:
         item.state = status.device_state
-        _say(f"serial {item.valve.serial} node {item.valve.node_id}: state {status.device_state}")
+        _say(f"{item.label}: state {status.device_state}")
 
 
-def _emcy_line(code: int, register: int) -> str:
-    if code == 0:
+def _report_lateness(item: _Served) -> None:
+    """At most once a second: how often and how far the simulation fell behind real time."""
+    now = time.monotonic()
+    if now < item.lateness_due:
+        return
+    item.lateness_due = now + LATENESS_REPORT_S
+    late = item.valve.pacer.take_lateness()
+    if not late.episodes and not late.dropped_cycles:
+        return
+    dropped = f", {late.dropped_cycles} cycles dropped" if late.dropped_cycles else ""
+    _say(
+        f"{item.label}: simulation fell behind real time {late.episodes}x in the last "
+        f"{LATENESS_REPORT_S:g} s, at most {late.worst_s * 1e3:.1f} ms{dropped} (a busy PC; "
+        "SYNC and RPDO deadlines are judged at reception, so no fault from it)"
+    )
+
+
+def _emcy_line(code: int, register: int, kind: ErrorKind | None) -> str:
+    if code == 0 or kind is None:
         return f"EMCY 0000 (errors cleared), error register 0x{register:02X}"
-    return f"EMCY {code:04X} ({emcy_text(code)}), error register 0x{register:02X}"
+    return f"EMCY {code:04X} ({kind.text}), error register 0x{register:02X}"
 
 
 def _say(line: str) -> None:
@@ -158,6 +240,7 @@ def _restore_signals(previous: dict[int, Any]) -> None:
         signal.signal(number, handler)
 
 
-def _close(served: list[_Served]) -> None:
+def _close(served: list[_Served], shared: _SharedBus) -> None:
     for item in reversed(served):
         item.close()
+    shared.close()

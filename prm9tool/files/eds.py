@@ -186,7 +186,7 @@ def _device_info(key: TypeKey) -> list[str]:
         "GroupMessaging=0",
         "NrOfRXPDO=2",
         "NrOfTXPDO=2",
-        "LSS_Supported=0",
+        "LSS_Supported=1",  # node-ID switch 1: LSS (manual table 7-17, CiA 305)
         "",
         "[DummyUsage]",
         *(f"Dummy{i:04d}=0" for i in range(1, 8)),

@@ -19,7 +19,6 @@ from PySide6.QtCore import QT_TRANSLATE_NOOP, QCoreApplication, QObject, Signal
 from prm9tool.catalogue.commissioning import (
     CONTROL_WORD,
     DISABLE_SEQUENCE,
-    ENABLE_SEQUENCE,
     Blocker,
     NmtCommand,
     blocker,
@@ -174,8 +173,11 @@ class ValveControl(QObject):
         self._connection.run("nmt", lambda s: s.nmt(int(command)))
 
     def enable(self) -> None:
-        """Control word 08h → 09h → 0Bh → 0Fh: from INIT (or a fault) to DEVICE_MODE_ACTIVE."""
-        self._write_in_turn(ENABLE_SEQUENCE)
+        """Control word 08h → 09h → 0Bh → 0Fh: from INIT (or a fault whose cause is gone) to
+        DEVICE_MODE_ACTIVE; when the valve does not get there the job fails saying why."""
+        from prm9tool.device.enabling import enable
+
+        self._connection.run("control word", enable)
 
     def disable(self) -> None:
         """Control word 0Fh → 0Bh → 09h → 08h: back to INIT step by step."""

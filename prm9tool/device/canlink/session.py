@@ -36,10 +36,11 @@ from prm9tool.catalogue.commissioning import NmtCommand
 from prm9tool.catalogue.typekey import TypeKey
 from prm9tool.device.canlink import bus as canbus
 from prm9tool.device.canlink import discovery, relocate
+from prm9tool.device.canlink.nmt_confirm import send_and_confirm
 from prm9tool.device.canlink.pdo_scope import NotPdoMappedError, PdoSampler, min_period_s
 from prm9tool.device.canlink.sampler import SdoSampler
 from prm9tool.device.canlink.sdo import MISSING, SdoChannel
-from prm9tool.device.canlink.status import read_status
+from prm9tool.device.canlink.status import read_status, stopped_status
 from prm9tool.device.canlink.storing import STORED_WITH_1010, factory_upload, store_kind
 from prm9tool.device.canlink.typekeys import forget, lacking_objects, remember, resolve
 from prm9tool.device.canlink.upload_steps import UploadSteps
@@ -108,6 +109,8 @@ class CanopenSession(UploadSteps, ValveSession):
         self._touched: list[str] = []  # parameters the running upload wrote
         self._known: dict[str, Value] = {}  # the valve's working values as last read/written
         self._sampler: SdoSampler | PdoSampler | None = None
+        self._stopped_by_me = False  # this session's NMT stop is in force (no SDO then)
+        self._last_status: ValveStatus | None = None
         self.stream_source = ""  # "pdo" or "sdo" while a stream runs
         # the setpoint this tool sends in RPDO1 now (measuring-point key, raw), None when it
         # does not drive the valve: the oscilloscope's demand channel over CAN
@@ -356,12 +359,22 @@ class CanopenSession(UploadSteps, ValveSession):
         self._sdo = self._open_node(timeout_s)
 
     def status(self) -> ValveStatus:
-        """State 0x6041, error register 0x1001, errors, LEDs derived from them, NMT state."""
-        return read_status(self._sdo, self._shared.node_seen(self.node_id))
+        """State 0x6041, error register 0x1001, errors, LEDs derived from them, NMT state.
+
+        A node this session stopped answers no SDO (CiA 301): its status is then the last one
+        read, NMT stopped, with the device state table 7-21 couples to the stop, instead of a
+        timeout that would call the valve unpowered."""
+        seen = self._shared.node_seen(self.node_id)
+        if self._stopped_by_me and seen.nmt_state is NmtState.STOPPED:
+            return stopped_status(self._last_status, self.node_id)
+        status = read_status(self._sdo, seen)
+        self._last_status = status
+        return status
 
     @property
     def nmt_state(self) -> NmtState | None:
-        """The node's NMT state as its last heartbeat told (None before one was heard)."""
+        """The node's NMT state: as this session's own NMT command left it (confirmed,
+        :mod:`.nmt_confirm`) or as its last heartbeat told (None before either)."""
         return self._shared.node_seen(self.node_id).nmt_state
 
     def setpoint_link(self) -> SetpointLink:
@@ -396,8 +409,10 @@ class CanopenSession(UploadSteps, ValveSession):
 
     def nmt(self, command: int) -> None:
         """Send an NMT command (:class:`~prm9tool.catalogue.commissioning.NmtCommand`) to this
-        node on the bus (no answer comes; the heartbeat shows the new state)."""
-        self._sdo.node.nmt.send_command(command)
+        node and confirm the state it asked for within a bound (:mod:`.nmt_confirm`: the next
+        heartbeat, the first TPDO or an SDO read), so :attr:`nmt_state` tells it at once."""
+        self._stopped_by_me = command == NmtCommand.STOP
+        send_and_confirm(self._shared, self._sdo, self.node_id, command)
 
     # --- measuring points -------------------------------------------------------------------
     def stream_start(self, keys: Sequence[str], rate_hz: int = 5000) -> None:

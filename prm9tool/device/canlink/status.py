@@ -10,6 +10,7 @@ NMT state comes from the heartbeat (table 7-4) and the newest EMCY frame gives t
 from __future__ import annotations
 
 import time
+from dataclasses import replace
 
 from prm9tool.catalogue import CATALOGUE
 from prm9tool.catalogue.error_kinds import ERROR_KINDS, ErrorKind
@@ -17,7 +18,7 @@ from prm9tool.device.canlink.bus import NodeSeen
 from prm9tool.device.canlink.sdo import MISSING, SdoChannel
 from prm9tool.device.leds import leds
 from prm9tool.device.records import DeviceState, NmtState, ValveStatus
-from prm9tool.errors import SdoAbortError
+from prm9tool.errors import AccessDeniedError, SdoAbortError
 
 # CiA 408: 0x6041 bits 3…0 = R M H D tell the device state (docs/canopen.md)
 STATES = {
@@ -76,6 +77,32 @@ def read_status(sdo: SdoChannel, seen: NodeSeen) -> ValveStatus:
         booting=nmt is NmtState.INITIALISING,
         status_word=word,
     )
+
+
+def stopped_status(last: ValveStatus | None, node_id: int) -> ValveStatus:
+    """The status of a node the tool itself stopped: a stopped node answers no SDO (CiA 301,
+    manual table 7-4), so the last status read with NMT stopped and the device state table
+    7-21 couples to the stop (DEVICE_MODE_ACTIVE → fault reaction → FAULT_HOLD, H being 1)."""
+    if last is None:
+        raise StoppedNodeError(
+            f"node {node_id} is NMT stopped (this tool stopped it) and answers no SDO: send "
+            "NMT start or pre-operational to read it"
+        )
+    state = last.device_state
+    if state is DeviceState.DEVICE_MODE_ACTIVE:
+        state = DeviceState.FAULT_HOLD
+    kinds = tuple(k for k in ERROR_KINDS if k.code == last.error_code)[:1]
+    return replace(
+        last,
+        device_state=state,
+        nmt_state=NmtState.STOPPED,
+        leds=_leds(NmtState.STOPPED, kinds),
+        booting=False,
+    )
+
+
+class StoppedNodeError(AccessDeniedError):
+    """The node is NMT stopped by this tool and cannot be read (it answers no SDO)."""
 
 
 def _error_code(sdo: SdoChannel, seen: NodeSeen, register: int) -> int:

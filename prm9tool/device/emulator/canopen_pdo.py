@@ -8,6 +8,7 @@ RPDO (CiA 301). Time is counted in whole milliseconds of simulated time.
 
 from __future__ import annotations
 
+import functools
 import logging
 from collections.abc import Callable
 from dataclasses import dataclass, field
@@ -35,9 +36,11 @@ class Dictionary(Protocol):
     def write_bytes(self, index: int, subindex: int, data: bytes) -> None: ...
 
 
-def _mapping_parameters(map_index: int) -> list[Parameter]:
+@functools.cache
+def _mapping_parameters(map_index: int) -> tuple[Parameter, ...]:
+    """The catalogue's entries of a mapping object (fixed: computed once, not per frame)."""
     entries = [p for p in CATALOGUE if p.index == map_index and p.subindex > 0]
-    return sorted(entries, key=lambda p: p.subindex)
+    return tuple(sorted(entries, key=lambda p: p.subindex))
 
 
 def mapping(valve: Dictionary, map_index: int) -> list[tuple[int, int, int]]:
@@ -68,7 +71,9 @@ class PdoChannel:
     last_sent_ms: int = -(10**9)
     last_data: bytes | None = None
     pending: bytes | None = field(default=None, repr=False)  # RPDO data waiting for SYNC
-    deadline_ms: int | None = None  # RPDO: the next frame is due by then (None = not armed)
+    # RPDO: the next frame is due by then (None = not armed), on the time base of
+    # :class:`.canopen_watch.TimingWatches` (wall clock when paced, else simulated)
+    deadline_ms: float | None = None
 
     @property
     def comm_index(self) -> int:
@@ -178,24 +183,17 @@ class RpdoLogic:
         self._length_error = length_error
         self._length_ok = length_ok
 
-    def received(self, data: bytes, now_ms: int) -> None:
+    def received(self, data: bytes) -> bool:
         """A frame on the RPDO's COB-ID arrived (NMT OPERATIONAL); ignored when the RPDO maps
-        nothing (CiA 301: mapping disabled)."""
-        if not mapping(self._valve, self.channel.map_index):
-            return
-        if self.channel.event_timer:
-            self.channel.deadline_ms = now_ms + self.channel.event_timer
+        nothing (CiA 301: mapping disabled). True when it was taken (the deadline watch then
+        expects the next one, :meth:`.canopen_watch.TimingWatches.rpdo_received`)."""
+        entries = mapping(self._valve, self.channel.map_index)
+        if not entries:
+            return False
         if self.channel.trans_type in SYNC_TYPES:
             self.channel.pending = bytes(data)
         else:
-            self.apply(bytes(data))
-
-    def deadline_missed(self, now_ms: int) -> bool:
-        """True once when the event timer (0x1400/5) ran out since the last reception."""
-        channel = self.channel
-        if channel.deadline_ms is None or not channel.valid or now_ms <= channel.deadline_ms:
-            return False
-        channel.deadline_ms = None  # one event per loss; the next reception arms it again
+            self.apply(bytes(data), entries)
         return True
 
     def on_sync(self) -> None:
@@ -204,9 +202,10 @@ class RpdoLogic:
             data, self.channel.pending = self.channel.pending, None
             self.apply(data)
 
-    def apply(self, data: bytes) -> None:
+    def apply(self, data: bytes, entries: list[tuple[int, int, int]] | None = None) -> None:
         """Write the mapped objects; a too short frame is refused (CiA 301 EMCY 0x8210)."""
-        entries = mapping(self._valve, self.channel.map_index)
+        if entries is None:
+            entries = mapping(self._valve, self.channel.map_index)
         if len(data) < sum(bits // 8 for _, _, bits in entries):
             self._length_error()
             return

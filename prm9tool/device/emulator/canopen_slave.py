@@ -1,8 +1,10 @@
 """The emulated valve as a CiA 301 slave on a python-can bus (manual chapter 7).
 
-:class:`CanopenSlave` receives frames in a python-can Notifier thread and runs its timers
-(heartbeat, PDO event timers) from the valve's 1 ms cycle listener, so the same code runs in
-simulated time under :meth:`EmulatedValve.advance` and in real time under the paced thread.
+:class:`CanopenSlave` receives frames in a thread of its own and runs its timers (heartbeat,
+PDO event timers) from the valve's 1 ms cycle listener, so the same code runs in simulated time
+under :meth:`EmulatedValve.advance` and in real time under the paced thread. The SYNC and RPDO
+deadline watches judge when frames arrived (:mod:`.canopen_watch`), not when the paced loop,
+behind on a busy PC, gets round to them.
 Every object-dictionary access goes through ``valve.read_bytes``/``valve.write_bytes``; every
 public entry point takes ``valve.lock``.
 """
@@ -11,6 +13,8 @@ from __future__ import annotations
 
 import logging
 import struct
+import threading
+from collections.abc import Callable
 from typing import TYPE_CHECKING
 
 import can
@@ -20,6 +24,7 @@ from prm9tool.device.emulator.canopen_lss import LSS_REQUEST, LSS_RESPONSE, LssH
 from prm9tool.device.emulator.canopen_pdo import PdoChannel, RpdoLogic, TpdoLogic, mapping
 from prm9tool.device.emulator.canopen_rules import check_comm_write
 from prm9tool.device.emulator.canopen_sdo import SdoServer
+from prm9tool.device.emulator.canopen_watch import TimingWatches
 from prm9tool.device.records import NmtState
 
 if TYPE_CHECKING:
@@ -40,14 +45,15 @@ NMT_EVENTS = {
 }
 SYNC_COB_ID, CYCLE_PERIOD, EMCY_COB_ID = 0x1005, 0x1006, 0x1014
 HEARTBEAT_TIME, NMT_STARTUP = 0x1017, 0x1F80
-SYNC_TIMEOUT_FACTOR = 1.5  # decision: SYNC missing for 1.5 x 0x1006 = SYNC error (8100h)
 CONFIG_POLL_MS = 10  # PDO communication parameters are re-read every 10 ms
 
 
 class CanopenSlave:
     """CiA 301 NMT slave, SDO server, 2 RPDO + 2 TPDO, SYNC consumer, heartbeat, EMCY."""
 
-    def __init__(self, valve: EmulatedValve, bus: can.BusABC) -> None:
+    def __init__(self, valve: EmulatedValve, bus: can.BusABC, receive: bool = True) -> None:
+        """``receive``: a receive thread of its own on ``bus``; False when a
+        :class:`~.canopen_hub.SharedBus` hands it the frames (many valves on one bus)."""
         self._valve = valve
         self._bus = bus
         self._sdo = SdoServer(self._sdo_read, self._sdo_write)
@@ -60,7 +66,12 @@ class CanopenSlave:
         self._tpdo_logic = [TpdoLogic(c, valve) for c in self._tpdos]
         self._now_ms = 0
         self._heartbeat_due_ms = 0
-        self._last_sync_ms: int | None = None
+        self._watches = TimingWatches(self._rpdos, lambda: self._period_us, self._on_watch_event)
+        self._period_us = 0  # 0x1006, read with the PDO parameters
+        self._sync_id = 0x080  # 0x1005
+        self.routes: frozenset[int] = frozenset()  # the COB-IDs it takes (SharedBus routing)
+        self.routes_changed: Callable[[], None] = lambda: None
+        self._watch_errors: set[str] = set()  # sync_error / rpdo_timeout reported, cause on
         self._closed = False
         self._silent_until_ms = 0  # CiA 305 activate bit timing: no frames until then
         self.state = NmtState.OFF
@@ -72,7 +83,13 @@ class CanopenSlave:
             valve.add_error_listener(self._on_error)
             valve.add_restart_listener(self._on_restart)
             valve.set_nmt_handler(self._on_local_nmt)
-        self._notifier = can.Notifier(bus, [self._on_message], timeout=0.1)
+        self._rx_stop = threading.Event()
+        self._rx_thread: threading.Thread | None = None
+        if receive:
+            self._rx_thread = threading.Thread(
+                target=self._receive, name=f"prm9-canopen-rx-{valve.serial}", daemon=True
+            )
+            self._rx_thread.start()
 
     # --- public --------------------------------------------------------------------------
     @property
@@ -82,7 +99,9 @@ class CanopenSlave:
 
     def stop(self) -> None:
         """Stop receiving and transmitting for good (the bus itself belongs to the caller)."""
-        self._notifier.stop()
+        self._rx_stop.set()
+        if self._rx_thread is not None and self._rx_thread is not threading.current_thread():
+            self._rx_thread.join()
         with self._valve.lock:
             self._closed = True
             self.state = NmtState.OFF
@@ -99,6 +118,7 @@ class CanopenSlave:
         self.lss = LssSlave(self._lss_host()) if self._valve.lss_mode else None
         self._sdo.reset()
         self._length_error = False
+        self._watch_errors.clear()
         self.state = NmtState.INITIALISING if self._valve.can_enabled else NmtState.OFF
 
     def _on_restart(self) -> None:
@@ -124,7 +144,7 @@ class CanopenSlave:
         self._sdo.reset()
         self._valve.nmt_event(NMT_EVENTS[state])
         if state is NmtState.OPERATIONAL:
-            self._last_sync_ms = None
+            self._watches.disarm()
             for channel in (*self._rpdos, *self._tpdos):
                 channel.restart(self._now_ms)
             for logic in self._tpdo_logic:
@@ -137,6 +157,8 @@ class CanopenSlave:
         if self.state is NmtState.INITIALISING:
             return  # manual table 7-4: no NMT service while initialising
         command = data[0]
+        if command == NmtCommand.START:
+            self._watch_errors.clear()  # the "operational" event clears their errors
         if command == NmtCommand.START and self.state is NmtState.OPERATIONAL:
             self._valve.nmt_event("operational")  # confirms; clears a communication error
         elif command == NmtCommand.START:
@@ -158,10 +180,52 @@ class CanopenSlave:
             self._boot_up()
 
     # --- frames ------------------------------------------------------------------------------
+    def _receive(self) -> None:
+        """The receive thread: every frame in order; the watches judged at reception times."""
+        while not self._rx_stop.is_set():
+            try:
+                msg = self._bus.recv(self._watches.wait_s())
+            except Exception as exc:  # a closed or failing bus must not kill the thread silently
+                if self._rx_stop.is_set():
+                    return
+                log.warning("CAN receive failed: %s", exc)
+                self._rx_stop.wait(0.1)
+                continue
+            if msg is None:
+                self._judge_quiet(self._watches.wall_ms())
+            else:
+                self._on_message(msg)
+
+    def rx_wait_s(self) -> float:
+        """How long a receiver may wait for a frame before :meth:`judge_quiet` is due."""
+        return self._watches.wait_s()
+
+    def judge_quiet(self, quiet_until_ms: float) -> None:
+        """No frame for this valve arrived up to ``quiet_until_ms`` (wall clock, ms)."""
+        self._judge_quiet(quiet_until_ms)
+
+    def receive_frame(self, msg: can.Message) -> None:
+        """A frame from the bus (a :class:`~.canopen_hub.SharedBus` calls this)."""
+        self._on_message(msg)
+
+    def _judge_quiet(self, quiet_until_ms: float) -> None:
+        """``recv`` timed out at ``quiet_until_ms`` (wall clock) with no frame: deadlines before
+        then passed unmet. Judged at that moment, not after waiting for the lock (frames that
+        arrived meanwhile are still unread)."""
+        with self._valve.lock:
+            self._watches.follow(self._valve.running, self._now_ms)
+            if self._watches.paced and self.state is NmtState.OPERATIONAL:
+                self._watches.judge(quiet_until_ms)
+
     def _on_message(self, msg: can.Message) -> None:
         if msg.is_error_frame or msg.is_remote_frame or msg.is_extended_id or msg.is_fd:
             return  # a classical CAN node ignores CAN FD frames
         with self._valve.lock:
+            watches = self._watches
+            watches.follow(self._valve.running, self._now_ms)
+            arrival = watches.arrival_ms(msg, self._now_ms)
+            if watches.paced and self.state is NmtState.OPERATIONAL:
+                watches.judge(arrival)  # a frame after a deadline proves it passed unmet
             if msg.arbitration_id == LSS_REQUEST:
                 if self.lss is not None and self.state is not NmtState.OFF:
                     self.lss.handle(bytes(msg.data))
@@ -170,11 +234,11 @@ class CanopenSlave:
                 return
             try:
                 if self.state is not NmtState.OFF:
-                    self._dispatch(msg.arbitration_id, bytes(msg.data))
+                    self._dispatch(msg.arbitration_id, bytes(msg.data), arrival)
             except Exception:  # a firmware bug must not stop the receive thread
                 log.exception("CANopen frame 0x%03X not processed", msg.arbitration_id)
 
-    def _dispatch(self, can_id: int, data: bytes) -> None:
+    def _dispatch(self, can_id: int, data: bytes, arrival_ms: float) -> None:
         if can_id == 0:
             self._on_nmt(data)
             return
@@ -185,17 +249,19 @@ class CanopenSlave:
             response = self._sdo.handle(data, self._now_ms)
             if response is not None:
                 self._send(0x580 + self.node_id, response)
-        elif can_id == int(self._valve.read(SYNC_COB_ID, 0)) & 0x7FF:
-            self._on_sync()
+        elif can_id == self._sync_id:
+            self._on_sync(arrival_ms)
         elif self.state is NmtState.OPERATIONAL:
             for logic in self._rpdo_logic:
-                if logic.channel.valid and logic.channel.can_id == can_id:
-                    logic.received(data, self._now_ms)
+                if logic.channel.valid and logic.channel.can_id == can_id and logic.received(data):
+                    self._watches.rpdo_received(logic.channel, arrival_ms)
+                    self._watch_error_gone("rpdo_timeout", "rpdo_ok")
 
-    def _on_sync(self) -> None:
+    def _on_sync(self, arrival_ms: float) -> None:
         if self.state is not NmtState.OPERATIONAL:
             return
-        self._last_sync_ms = self._now_ms
+        self._watch_error_gone("sync_error", "sync_ok")
+        self._watches.sync_received(arrival_ms)
         for rpdo in self._rpdo_logic:
             rpdo.on_sync()
         for tpdo in self._tpdo_logic:
@@ -227,25 +293,21 @@ class CanopenSlave:
         if self.state is NmtState.OPERATIONAL:
             if self._now_ms % CONFIG_POLL_MS == 0:
                 self._load_config()  # PDO parameters written over USB take effect too
-            self._check_sync_timeout()
-            self._check_rpdo_deadlines()
+            if not self._watches.paced:  # paced: judged by the receive thread
+                self._watches.judge(self._now_ms)
             for tpdo in self._tpdo_logic:
                 self._transmit(tpdo, tpdo.on_tick(self._now_ms))
 
-    def _check_sync_timeout(self) -> None:
-        """0x1006 != 0: a SYNC missing for 1.5 periods is a communication error (EMCY 8100h)."""
-        period_us = int(self._valve.read(CYCLE_PERIOD, 0))
-        if not period_us or self._last_sync_ms is None:
-            return
-        if self._now_ms - self._last_sync_ms > SYNC_TIMEOUT_FACTOR * period_us / 1000:
-            self._last_sync_ms = None  # one event per loss of SYNC
-            self._valve.nmt_event("sync_error")
+    def _on_watch_event(self, event: str) -> None:
+        self._watch_errors.add(event)
+        self._valve.nmt_event(event)
 
-    def _check_rpdo_deadlines(self) -> None:
-        """0x1400/5 != 0: an RPDO not received within it is the event-timer error (8100h)."""
-        for rpdo in self._rpdo_logic:
-            if rpdo.deadline_missed(self._now_ms):
-                self._valve.nmt_event("rpdo_timeout")
+    def _watch_error_gone(self, error: str, event: str) -> None:
+        """The frame a watch missed came again: its error's cause is gone (the fault can be
+        reset, CiA 408); NMT start clears it too."""
+        if error in self._watch_errors:
+            self._watch_errors.discard(error)
+            self._valve.nmt_event(event)
 
     def _heartbeat_ms(self) -> int:
         return int(self._valve.read(HEARTBEAT_TIME, 0))
@@ -325,3 +387,10 @@ class CanopenSlave:
     def _load_config(self) -> None:
         for channel in (*self._rpdos, *self._tpdos):
             channel.load(self._valve, self._now_ms)
+        self._period_us = int(self._valve.read(CYCLE_PERIOD, 0))
+        self._sync_id = int(self._valve.read(SYNC_COB_ID, 0)) & 0x7FF
+        rpdo_ids = (c.can_id for c in self._rpdos if c.valid)
+        routes = frozenset((0, LSS_REQUEST, self._sync_id, 0x600 + self.node_id, *rpdo_ids))
+        if routes != self.routes:
+            self.routes = routes
+            self.routes_changed()

@@ -4,7 +4,8 @@ Each error kind of manual table 5-1 has a raw *condition* the firmware evaluates
 A condition that has lasted its detection delay makes the error *present* (the valve centres
 the spool). An error stays *active* (shown by the LEDs, 0x2040, 0x1001 and the EMCY state) while
 it is present and for ``fault_display_hold_s`` (~10 s, manual §5.5) after the condition went
-away; the valve itself resumes as soon as the error is no longer present.
+away; the valve itself resumes as soon as the error is no longer present. An error that comes
+back while still shown is announced again (its EMCY and a 0x1003 entry): it is a new event.
 """
 
 from __future__ import annotations
@@ -15,6 +16,8 @@ from prm9tool.catalogue import ERROR_HISTORY_DEPTH
 from prm9tool.catalogue.error_kinds import ERROR_KINDS, KINDS, ErrorKind
 
 ErrorListener = Callable[[int, int], None]
+# (EMCY code, error register, the error that caused it or None when all are cleared)
+CauseListener = Callable[[int, int, ErrorKind | None], None]
 
 
 class _Timer:
@@ -34,6 +37,8 @@ class FaultMonitor:
         self.timers = {k.key: _Timer() for k in ERROR_KINDS}
         self.history: list[int] = []  # newest first (0x1003 sub 1 = newest)
         self.listeners: list[ErrorListener] = []
+        self.cause_listeners: list[CauseListener] = []
+        self._returned: list[str] = []  # became present again while still shown
         self.active: tuple[ErrorKind, ...] = ()
         self.any_present = False  # some error is present (the spool must stay centred)
         self.busy = False  # some condition is pending, present or on display hold
@@ -47,6 +52,8 @@ class FaultMonitor:
                     t.since = now
                 if not t.present and now - t.since >= delay - 1e-9:
                     t.present = True
+                    if t.active_until > now:
+                        self._returned.append(key)
                 if t.present:
                     t.active_until = float("inf")
             else:
@@ -60,6 +67,8 @@ class FaultMonitor:
         """Set an error directly (communication errors reported by the CANopen slave)."""
         t = self.timers[key]
         if present:
+            if not t.present and t.active_until > now:
+                self._returned.append(key)
             t.present, t.since, t.active_until = True, now, float("inf")
         elif t.present:
             # a reported-only protocol error (8210) ends with its cause: CiA 301 error reset
@@ -93,6 +102,7 @@ class FaultMonitor:
         """Power cycle: forget every condition (the history is kept in RAM: cleared too)."""
         self.timers = {k.key: _Timer() for k in ERROR_KINDS}
         self.active = ()
+        self._returned.clear()
         self.any_present = self.busy = False
         self.history.clear()
 
@@ -105,13 +115,18 @@ class FaultMonitor:
         self.busy = any(t.since >= 0.0 or t.active_until >= 0.0 for t in timers)
         before = self.active
         self.active = tuple(k for k in ERROR_KINDS if self.timers[k.key].active_until > now)
-        if self.active == before:
+        returned = [KINDS[key] for key in self._returned]
+        self._returned.clear()
+        if self.active == before and not returned:
             return
-        appeared = [k for k in self.active if k not in before]
+        appeared = [k for k in self.active if k not in before] + returned
         for kind in appeared:
             self.history.insert(0, kind.code)
         del self.history[ERROR_HISTORY_DEPTH:]
-        code = appeared[0].code if appeared else self.code()
+        cause = appeared[0] if appeared else (self.active[0] if self.active else None)
+        code = cause.code if cause is not None else 0
         reg = self.register()
         for listener in self.listeners:
             listener(code, reg)
+        for cause_listener in self.cause_listeners:
+            cause_listener(code, reg, cause)

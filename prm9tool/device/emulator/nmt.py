@@ -21,6 +21,8 @@ NMT_EVENTS = (
     "rpdo_timeout",
     "rpdo_length_error",
     "rpdo_length_ok",
+    "sync_ok",
+    "rpdo_ok",
 )
 _ERROR_EVENTS = {
     "comm_error": "communication",
@@ -38,7 +40,8 @@ def apply_nmt_event(fw: Firmware, event: str) -> None:
       ``rpdo_timeout`` (an RPDO missed its event timer 0x1400/5): the communication error
       8100h becomes present (EMCY; LED2 double, triple resp. quadruple flash, table 7-18) and
       a valve in DEVICE_MODE_ACTIVE reacts as above; it goes away with the next
-      ``operational`` event.
+      ``operational`` event, and its cause with ``sync_ok`` (a SYNC came again) resp.
+      ``rpdo_ok`` (the RPDO came again): from then on a fault reset clears it.
     * ``rpdo_length_error`` (an RPDO shorter than its mapping, not processed) makes the CiA 301
       error 8210h present — EMCY, 0x1001 bit 4, 0x1003 — without a fault reaction or LED
       pattern; ``rpdo_length_ok`` (an RPDO of the right length) and ``operational`` end it.
@@ -49,7 +52,9 @@ def apply_nmt_event(fw: Firmware, event: str) -> None:
         return
     sm = fw.sm
     now = fw.time
-    if event in ("rpdo_length_error", "rpdo_length_ok"):
+    if event in ("sync_ok", "rpdo_ok"):
+        fw.faults.force("sync" if event == "sync_ok" else "rpdo_timeout", False, now)
+    elif event in ("rpdo_length_error", "rpdo_length_ok"):
         fw.faults.force("pdo_length", event == "rpdo_length_error", now)
     elif event == "operational":
         fw.nmt_state = NmtState.OPERATIONAL

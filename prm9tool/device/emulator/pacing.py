@@ -4,13 +4,26 @@ The pacer never accumulates sleep errors: the number of cycles due is always com
 the absolute time since :meth:`Pacer.reset`, so a late wake-up is followed by a bigger batch
 and a stall by a run of back-to-back batches until the simulation has caught up. A lag longer
 than ``max_lag_s`` (the process was suspended, a debugger held it) is dropped instead of
-replayed, and counted in ``dropped_cycles``.
+replayed, and counted in ``dropped_cycles``. How far and how often it fell behind (more than
+``LATE_S``) is kept for a report (:meth:`Pacer.take_lateness`, the serve log).
 """
 
 from __future__ import annotations
 
 import time
 from collections.abc import Callable
+from dataclasses import dataclass
+
+LATE_S = 0.010  # behind by more than this: counted as a late episode (a batch is 2 ms)
+
+
+@dataclass(frozen=True)
+class Lateness:
+    """How the simulation kept up since the last report."""
+
+    episodes: int  # times it fell more than LATE_S behind the wall clock
+    worst_s: float  # the largest lag seen
+    dropped_cycles: int  # cycles skipped instead of replayed (a lag beyond max_lag_s)
 
 
 class Pacer:
@@ -33,17 +46,23 @@ class Pacer:
         self.start = clock()
         self.cycles_done = 0
         self.dropped_cycles = 0
+        self._late = False
+        self._episodes = 0
+        self._worst_s = 0.0
+        self._dropped_reported = 0
 
     def reset(self) -> None:
         """Start a new time base at the current wall-clock time."""
         self.start = self.clock()
         self.cycles_done = 0
         self.dropped_cycles = 0
+        self._dropped_reported = 0
 
     def due(self) -> int:
         """Cycles to run now (0 if fewer than ``min_batch`` are due), at most ``max_batch``."""
         target = int((self.clock() - self.start) / self.cycle_s + 1e-6)
         lag = target - self.cycles_done
+        self._note_lag(lag * self.cycle_s)
         if lag > self.max_lag_cycles:
             skipped = lag - self.max_lag_cycles
             self.cycles_done += skipped
@@ -52,6 +71,23 @@ class Pacer:
         if lag < self.min_batch:
             return 0
         return min(lag, self.max_batch)
+
+    def _note_lag(self, lag_s: float) -> None:
+        late = lag_s > LATE_S
+        if late and not self._late:
+            self._episodes += 1
+        self._late = late
+        if lag_s > self._worst_s:
+            self._worst_s = lag_s
+
+    def take_lateness(self) -> Lateness:
+        """Episodes, worst lag and dropped cycles since the last call (then starts afresh)."""
+        report = Lateness(
+            self._episodes, self._worst_s, self.dropped_cycles - self._dropped_reported
+        )
+        self._episodes, self._worst_s = 0, 0.0
+        self._dropped_reported = self.dropped_cycles
+        return report
 
     def done(self, cycles: int) -> None:
         """Record that ``cycles`` cycles were run."""

@@ -8,8 +8,13 @@ step per write, and a single 0Fh does the same in one write.
 Decisions where table 7-20 is garbled (documented in docs/emulator.md):
 
 * FAULT_REACTION ends in FAULT_HOLD when H = 1 and in FAULT when H = 0 (transitions 9/12).
-* A fault is reset by a rising edge of R while no fault condition is present: from FAULT to
-  DISABLED, from FAULT_HOLD to HOLD (transitions 10/11); the level rules then continue.
+* A fault is reset while no fault condition is present by a rising edge of R (CiA 408): from
+  FAULT to DISABLED, from FAULT_HOLD to HOLD (transitions 10/11); the level rules then continue.
+* Table 7-20 gives transition 10 ("reset fault (disabled)") by levels, R = 1 and H = 0, not by
+  an edge: so a control word with R = 1 and H = 0 (08h or 09h) resets FAULT *and* FAULT_HOLD to
+  DISABLED without an edge. That is what makes the documented 08h → 09h → 0Bh → 0Fh leave a
+  fault entered in DEVICE_MODE_ACTIVE (R was already 1 there, so 08h is no edge), and a PLC
+  that sends 0Fh cyclically never re-enables a valve by itself: with H = 1 only an edge resets.
 """
 
 from __future__ import annotations
@@ -47,12 +52,13 @@ class DeviceStateMachine:
     def write_control_word(self, word: int, fault_present: bool) -> None:
         """Apply a new control word (edge of R resets a fault that has gone)."""
         rising_r = bool(word & BIT_R) and not self.control_word & BIT_R
+        reset_disabled = bool(word & BIT_R) and not word & BIT_H  # table 7-20, row 10
         self.control_word = word & 0xFFFF
-        if rising_r and not fault_present:
-            if self.state is S.FAULT:
-                self.state = S.DISABLED  # transition 10
-            elif self.state is S.FAULT_HOLD:
+        if not fault_present and self.state in (S.FAULT, S.FAULT_HOLD):
+            if self.state is S.FAULT_HOLD and rising_r and not reset_disabled:
                 self.state = S.HOLD  # transition 11
+            elif rising_r or reset_disabled:
+                self.state = S.DISABLED  # transition 10
         self._settle()
 
     def fault(self, reaction_s: float) -> None:

@@ -87,6 +87,7 @@ class EmulatedValve(CanopenSide):
         self._restart_listeners: list[Callable[[], None]] = []
         self._nmt_handler: Callable[[int], None] | None = None
         self._thread: threading.Thread | None = None
+        self._grouped = False  # paced by a PacedGroup's thread
         self._stop = threading.Event()
         self.pacer = Pacer(CYCLE_S)
 
@@ -159,7 +160,7 @@ class EmulatedValve(CanopenSide):
     def start(self) -> None:
         """Run paced to the wall clock in a background thread."""
         with self.lock:
-            if self._thread is not None:
+            if self._thread is not None or self._grouped:
                 return
             self._stop.clear()
             self.pacer.reset()
@@ -180,20 +181,38 @@ class EmulatedValve(CanopenSide):
 
     @property
     def running(self) -> bool:
-        """True while the paced thread runs."""
-        return self._thread is not None
+        """True while the valve runs in real time (its paced thread, or a PacedGroup's)."""
+        return self._thread is not None or self._grouped
+
+    def paced_step(self) -> float:
+        """Run the cycles due at this wall-clock moment; returns the seconds until the next
+        batch is due (0: call again at once). The paced thread's step, and a
+        :class:`~.paced_group.PacedGroup`'s for each of its valves."""
+        pacer = self.pacer
+        due = pacer.due()
+        if due == 0:
+            return pacer.wait_s()
+        with self.lock:
+            self._fw.run(due)
+            self._capture.trim()
+        pacer.done(due)
+        return 0.0
+
+    def paced_by_group(self, grouped: bool) -> None:
+        """A :class:`~.paced_group.PacedGroup` paces this valve from now on (True: a new time
+        base at this moment) or no longer (False)."""
+        with self.lock:
+            if grouped and self._thread is not None:
+                raise RuntimeError("the valve already runs in its own paced thread")
+            if grouped and not self._grouped:
+                self.pacer.reset()
+            self._grouped = grouped
 
     def _paced(self) -> None:
-        pacer = self.pacer
         while not self._stop.is_set():
-            due = pacer.due()
-            if due == 0:
-                self._stop.wait(pacer.wait_s())
-                continue
-            with self.lock:
-                self._fw.run(due)
-                self._capture.trim()
-            pacer.done(due)
+            wait = self.paced_step()
+            if wait:
+                self._stop.wait(wait)
 
     # --- inputs and faults ------------------------------------------------------------
     def set_input(self, name: str, value: float) -> None:
@@ -322,13 +341,15 @@ class EmulatedValve(CanopenSide):
         return self._fw.sm.state
 
     # --- on a CAN bus -------------------------------------------------------------------
-    def connect_can(self, bus: can.BusABC) -> CanopenSlave:
-        """Put the valve on a python-can bus; AccessDeniedError on a valve without -CA."""
+    def connect_can(self, bus: can.BusABC, receive: bool = True) -> CanopenSlave:
+        """Put the valve on a python-can bus; AccessDeniedError on a valve without -CA.
+        ``receive=False``: no receive thread of its own, a
+        :class:`~.canopen_hub.SharedBus` attached to it hands it the frames."""
         if not self.variant.canopen:
             raise AccessDeniedError(f"{self.type_key} has no CANopen interface (no -CA suffix)")
         from prm9tool.device.emulator.canopen_slave import CanopenSlave
 
-        return CanopenSlave(self, bus)
+        return CanopenSlave(self, bus, receive)
 
 
 def _fault(fault: Fault | str) -> Fault:

@@ -17,6 +17,7 @@ from prm9tool.device.emulator import manual_od
 from prm9tool.errors import ValueRangeError
 
 if TYPE_CHECKING:
+    from prm9tool.catalogue.error_kinds import ErrorKind
     from prm9tool.device.emulator.firmware import Firmware
 
 _NMT_EVENTS: dict[int, str] = {  # CiA 301 command specifier -> NMT event (nmt.NMT_EVENTS)
@@ -119,6 +120,12 @@ class CanopenSide:
         """``fn(emcy_code, error_register)`` on every change of the active error set."""
         with self.lock:
             self._fw.faults.listeners.append(fn)
+
+    def add_error_cause_listener(self, fn: Callable[[int, int, ErrorKind | None], None]) -> None:
+        """``fn(emcy_code, error_register, kind)`` with each EMCY: ``kind`` is the error that
+        raised it (its ``text`` names the cause: several share 8100h), None when all cleared."""
+        with self.lock:
+            self._fw.faults.cause_listeners.append(fn)
 
     def add_restart_listener(self, fn: Callable[[], None]) -> None:
         """``fn()`` after every power cycle."""

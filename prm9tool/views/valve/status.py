@@ -261,8 +261,18 @@ class ValveStatusWindow(QDialog):
             self.errors.addItem(f"0x{code:04X}  {emcy_text(code, fallback)}")
         if not codes and status.warning:
             self.errors.addItem(f"0x0000  {emcy_text(0, fallback)}")
+        if self.errors.count() == 0 and str(status.device_state) in _FAULT_STATES:
+            # the error's display hold ended, the fault the state machine holds did not
+            self.errors.addItem(
+                self.tr(
+                    "No error is present any more, but the valve still holds the fault "
+                    "(device state {0}): press Enable (control word 08h → 09h → 0Bh → 0Fh) to "
+                    "reset it."
+                ).format(status.device_state)
+            )
         if self.errors.count() == 0:
             self.errors.addItem(self.tr("No error."))
 
 
+_FAULT_STATES = ("FAULT", "FAULT_HOLD", "FAULT_REACTION")
 _FIELDS = ("mode", "firmware", "serial", "type_key", "state", "nmt", "temperature", "supply")

@@ -1,0 +1,132 @@
+"""Many emulated valves on one bus: one python-can bus, one receive thread, frames routed.
+
+With a bus (and a receive thread) per valve, every frame on the bus is received, decoded and
+looked at once per valve: N valves at one SYNC, N RPDOs and N TPDOs per millisecond cost
+N·(2N + 1) decoded frames per millisecond in one Python process — 528 000 a second for 16
+valves, far beyond what it can do (docs/PERFORMANCE.md, "The PLC rig"). :class:`SharedBus`
+receives each frame once and hands it only to the valves that take its COB-ID
+(:attr:`CanopenSlave.routes`: NMT, SYNC, LSS, their SDO and RPDO identifiers): 2N + 1 frames a
+millisecond, each given to one valve (NMT, SYNC and LSS to all).
+
+Deadlines stay judged at reception times (:mod:`.canopen_watch`): every frame on the shared
+socket proves that nothing arrived before it, so at most every :data:`JUDGE_EVERY_MS` the
+valves are judged at the arrival of the frame in hand, and when the bus is quiet at the moment
+``recv`` timed out.
+
+The bus's socket (where it has one: udp_multicast, SocketCAN) gets a receive buffer of
+:data:`RECEIVE_BUFFER` bytes (as far as ``net.core.rmem_max`` allows): the kernel's default
+holds about 200 frames, a 20 ms hold-up of the process at 9 frames a millisecond, and a frame
+the kernel drops for a full buffer is a SYNC or an RPDO the valves never see.
+"""
+
+from __future__ import annotations
+
+import logging
+import socket
+import threading
+import time
+
+import can
+
+from prm9tool.device.emulator.canopen_lss import LSS_REQUEST
+from prm9tool.device.emulator.canopen_slave import CanopenSlave
+
+log = logging.getLogger(__name__)
+
+JUDGE_EVERY_MS = 1.0
+RECEIVE_BUFFER = 4 * 1024 * 1024
+_EVERY_VALVE = (0, LSS_REQUEST)  # NMT and LSS, whatever a valve's state
+
+
+class SharedBus:
+    """One receive thread for every :class:`CanopenSlave` attached (made with
+    ``receive=False`` on the same bus)."""
+
+    def __init__(self, bus: can.BusABC) -> None:
+        self._bus = bus
+        self._slaves: list[CanopenSlave] = []
+        self._routes: dict[int, tuple[CanopenSlave, ...]] = {}
+        self._lock = threading.Lock()
+        self._stop = threading.Event()
+        self._thread = threading.Thread(target=self._receive, name="prm9-canopen-hub", daemon=True)
+        self._started = False
+        enlarge_receive_buffer(bus)
+
+    def attach(self, slave: CanopenSlave) -> None:
+        """Route frames to ``slave`` from now on (starts the receive thread on first use)."""
+        with self._lock:
+            self._slaves.append(slave)
+            slave.routes_changed = self._reroute
+        self._reroute()
+        if not self._started:
+            self._started = True
+            self._thread.start()
+
+    def stop(self) -> None:
+        """End the receive thread (the bus belongs to the caller)."""
+        self._stop.set()
+        if self._started:
+            self._thread.join()
+
+    def _reroute(self) -> None:
+        routes: dict[int, list[CanopenSlave]] = {}
+        with self._lock:
+            for slave in self._slaves:
+                for can_id in (*_EVERY_VALVE, *slave.routes):
+                    takers = routes.setdefault(can_id, [])
+                    if slave not in takers:
+                        takers.append(slave)
+            self._routes = {can_id: tuple(takers) for can_id, takers in routes.items()}
+
+    def _receive(self) -> None:
+        judged_ms = 0.0
+        while not self._stop.is_set():
+            slaves = self._slaves
+            wait = min((s.rx_wait_s() for s in slaves), default=0.1)
+            try:
+                msg = self._bus.recv(wait)
+            except Exception as exc:  # a closed or failing bus must not end the thread silently
+                if self._stop.is_set():
+                    return
+                log.warning("CAN receive failed: %s", exc)
+                self._stop.wait(0.1)
+                continue
+            now_ms = time.monotonic() * 1000.0
+            if msg is None:
+                for slave in slaves:
+                    slave.judge_quiet(now_ms)
+                judged_ms = now_ms
+                continue
+            takers = self._routes.get(msg.arbitration_id, ())
+            for slave in takers:
+                slave.receive_frame(msg)
+            if now_ms - judged_ms >= JUDGE_EVERY_MS:
+                judged_ms = now_ms
+                arrival = now_ms - max(0.0, time.time() - msg.timestamp) * 1000.0
+                for slave in slaves:
+                    if slave not in takers:
+                        slave.judge_quiet(arrival)
+
+
+def enlarge_receive_buffer(bus: can.BusABC, size: int = RECEIVE_BUFFER) -> int:
+    """Ask for a receive buffer of ``size`` bytes on the bus's socket; returns what the kernel
+    granted (0: the bus has no socket, e.g. python-can's virtual bus)."""
+    try:
+        fd = bus.fileno()
+    except (NotImplementedError, AttributeError, OSError):
+        return 0
+    if not isinstance(fd, int) or fd < 0:
+        return 0
+    try:
+        sock = socket.socket(fileno=socket.dup(fd))  # the same socket; closing the copy is safe
+    except OSError as exc:
+        log.info("receive buffer of the CAN socket not enlarged: %s", exc)
+        return 0
+    try:
+        sock.setsockopt(socket.SOL_SOCKET, socket.SO_RCVBUF, size)
+        return int(sock.getsockopt(socket.SOL_SOCKET, socket.SO_RCVBUF))
+    except OSError as exc:
+        log.info("receive buffer of the CAN socket not enlarged: %s", exc)
+        return 0
+    finally:
+        sock.close()
