@@ -196,6 +196,9 @@ def build_parser() -> argparse.ArgumentParser:
     )
     add_device_options(parser)
     add_history_options(parser)
+    from prm9tool.cli.trace import add_trace_options
+
+    add_trace_options(parser)
     return parser
 
 

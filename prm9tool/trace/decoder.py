@@ -63,6 +63,7 @@ class Decoder:
         self._sync = array("d")
         self._sync_frames = array("q")
         self._count = 0
+        self._start = 0.0
         self.incidents = IncidentFinder()
 
     # --- frames in ---------------------------------------------------------------------
@@ -78,6 +79,8 @@ class Decoder:
         number = self._count
         self._count += 1
         time = msg.timestamp
+        if not number:
+            self._start = time
         if msg.is_error_frame:
             self._emit(Event(time, None, Kind.ERROR_FRAME, _error_frame_text(msg), (number,)))
             return
@@ -101,7 +104,7 @@ class Decoder:
         self.events.sort(key=lambda e: e.frames[0] if e.frames else -1)
         nodes = {n: node.od.kind for n, node in self._nodes.items()}
         incidents, sync = self.incidents.finish(self.events, self._sync, self._sync_frames)
-        return Trace(self.path, self._count, self.events, incidents, sync, nodes)
+        return Trace(self.path, self._count, self.events, incidents, sync, nodes, self._start)
 
     # --- services ------------------------------------------------------------------------
     def _nmt(self, number: int, time: float, cob: int, data: bytes) -> None:

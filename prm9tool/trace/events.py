@@ -98,6 +98,7 @@ class Trace:
     incidents: list[Incident]
     sync: SyncFigures
     nodes: dict[int, str] = field(default_factory=dict)  # node -> how it is decoded
+    start: float = 0.0  # the first frame's time stamp (the trace's own clock)
 
     @property
     def not_understood(self) -> list[Event]:
@@ -116,6 +117,7 @@ class Trace:
         return {
             "path": self.path,
             "frames": self.frames,
+            "start": self.start,
             "nodes": {str(node): how for node, how in sorted(self.nodes.items())},
             "counts": self.counts(),
             "sync": self.sync.to_dict(),

@@ -68,7 +68,6 @@ class Recorder:
         import can
 
         try:
-            self.path.parent.mkdir(parents=True, exist_ok=True)
             self._logger = can.Logger(str(self.path))
         except (OSError, ValueError) as exc:
             raise FileFormatError(str(self.path), [FileProblem(0, f"cannot write the trace: {exc}")]) from exc
