@@ -128,16 +128,17 @@ def recording(args: argparse.Namespace) -> Iterator[None]:
         yield
         return
     from prm9tool.device.canlink.bus import CanOptions
-    from prm9tool.trace.record import Recorder
-
     from prm9tool.errors import CommunicationError
+    from prm9tool.trace.record import Recorder
 
     recorder = Recorder(args.record, CanOptions.from_args(args))
     try:
         recorder.start()
     except Prm9Error as exc:  # the bus or the file: nothing runs without its recording
         print(f"prm9tool: cannot record: {exc}", file=sys.stderr)
-        code = ExitCode.COMMUNICATION if isinstance(exc, CommunicationError) else ExitCode.INVALID_FILE
+        code = (
+            ExitCode.COMMUNICATION if isinstance(exc, CommunicationError) else ExitCode.INVALID_FILE
+        )
         raise SystemExit(int(code)) from None
     print(f"prm9tool: recording {recorder.options} into {args.record}", file=sys.stderr)
     try:
@@ -226,7 +227,10 @@ def print_trace(decoded: Trace) -> None:
 
 def print_summary(decoded: Trace, start: float) -> None:
     """Frames, nodes, events by kind, SYNC period and jitter, incidents."""
-    print(f"\n{decoded.frames} frames; events: " + ", ".join(f"{k} {n}" for k, n in sorted(decoded.counts().items())))
+    print(
+        f"\n{decoded.frames} frames; events: "
+        + ", ".join(f"{k} {n}" for k, n in sorted(decoded.counts().items()))
+    )
     for node, how in sorted(decoded.nodes.items()):
         print(f"node {node}: decoded as {how}")
     sync = decoded.sync

@@ -86,7 +86,13 @@ class Decoder:
             return
         data = bytes(msg.data)
         if msg.is_extended_id or msg.is_remote_frame or msg.is_fd:
-            what = "extended-ID" if msg.is_extended_id else "remote" if msg.is_remote_frame else "CAN FD"
+            what = (
+                "extended-ID"
+                if msg.is_extended_id
+                else "remote"
+                if msg.is_remote_frame
+                else "CAN FD"
+            )
             self._not_understood(number, time, msg.arbitration_id, data, f"{what} frame")
             return
         cob = msg.arbitration_id
@@ -115,7 +121,9 @@ class Decoder:
             self._not_understood(number, time, cob, data, "NMT command not 2 bytes long")
             return
         target = data[1]
-        text = f"NMT {words.nmt_command_text(data[0])} → {f'node {target}' if target else 'all nodes'}"
+        text = (
+            f"NMT {words.nmt_command_text(data[0])} → {f'node {target}' if target else 'all nodes'}"
+        )
         self._emit(Event(time, target or None, Kind.NMT, text, (number,)))
         if data[0] in (0x81, 0x82):
             for node in self._nodes.values() if target == 0 else [self._node(target)]:
@@ -140,7 +148,9 @@ class Decoder:
 
     def _time_or_pdo(self, number: int, time: float, cob: int, data: bytes) -> None:
         if cob == 0x100:
-            self._emit(Event(time, None, Kind.TIME, f"TIME stamp {data.hex(' ').upper()}", (number,)))
+            self._emit(
+                Event(time, None, Kind.TIME, f"TIME stamp {data.hex(' ').upper()}", (number,))
+            )
             return
         self._pdo(number, time, cob, data)
 
@@ -181,26 +191,40 @@ class Decoder:
 
     def _sdo_item(self, node: _Node, item: Transfer | int, time: float) -> None:
         if isinstance(item, int):
-            self._emit(Event(time, node.number, Kind.NOT_UNDERSTOOD, "SDO frame outside a transfer", (item,)))
+            self._emit(
+                Event(
+                    time, node.number, Kind.NOT_UNDERSTOOD, "SDO frame outside a transfer", (item,)
+                )
+            )
             return
         address = f"0x{item.index:04X}/{item.subindex}"
         reading = node.od.read(item.index, item.subindex, item.data) if item.data else None
-        what = reading.text if reading else f"{address} = {item.data.hex(' ').upper() or '(no data)'}"
-        verb = "SDO" if item.how == "abort" else "SDO write" if item.direction == DOWNLOAD else "SDO read"
+        what = f": {reading.text}" if reading else f" = {item.data.hex(' ').upper() or '(no data)'}"
+        verb = (
+            "SDO"
+            if item.how == "abort"
+            else "SDO write"
+            if item.direction == DOWNLOAD
+            else "SDO read"
+        )
         if item.abort is not None:
             name = reading.name if reading else _object_name(node.od, item.index, item.subindex)
-            text = f"{verb} {address}{name} aborted: 0x{item.abort:08X} {words.abort_text(item.abort)}"
+            text = (
+                f"{verb} {address}{name} aborted: 0x{item.abort:08X} {words.abort_text(item.abort)}"
+            )
         elif item.incomplete:
             text = f"{verb} {address} incomplete ({item.how}): {item.incomplete}"
         else:
-            text = f"{verb} ({item.how}) {address}: {what}"
+            text = f"{verb} ({item.how}) {address}{what}"
             self._object_seen(node, item, reading)
         values = ((reading.name, reading.value),) if reading and item.abort is None else ()
         self._emit(Event(item.time, node.number, Kind.SDO, text, item.frames, values))
 
     def _heartbeat(self, number: int, time: float, cob: int, data: bytes) -> None:
         if cob in (LSS_MASTER, LSS_SLAVE):
-            self._emit(Event(time, None, Kind.LSS, words.lss_text(data, cob == LSS_MASTER), (number,)))
+            self._emit(
+                Event(time, None, Kind.LSS, words.lss_text(data, cob == LSS_MASTER), (number,))
+            )
             return
         if cob >> 7 != 0xE or not cob & 0x7F:
             self._not_understood(number, time, cob, data, "no CANopen service uses this COB-ID")
@@ -267,7 +291,9 @@ class Decoder:
                 return
             old = f"{device_state(before).value} → " if before is not None else ""
             text = f"device state {old}{words.status_word_text(word)}"
-            self._emit(Event(time, node.number, Kind.STATE, text, (number,), (("status word", word),)))
+            self._emit(
+                Event(time, node.number, Kind.STATE, text, (number,), (("status word", word),))
+            )
             return
         before, node.control_word = node.control_word, word
         if before == word:
@@ -308,7 +334,7 @@ _HANDLERS: dict[int, _Handler] = {
     0x0: Decoder._nmt,
     0x1: Decoder._sync_or_emcy,
     0x2: Decoder._time_or_pdo,
-    **{code: Decoder._pdo for code in range(0x3, 0xB)},
+    **dict.fromkeys(range(3, 11), Decoder._pdo),
     0xB: Decoder._sdo,
     0xC: Decoder._sdo,
     0xE: Decoder._heartbeat,

@@ -59,8 +59,14 @@ class Prm9Dictionary:
         value = param.to_display(raw)
         shown = param.format_display(raw)
         unit = f" {param.unit}" if param.unit else ""
-        hexed = f" (0x{int(raw) & 0xFFFFFFFF:X})" if param.scale == 1.0 and not unit and not param.choices else ""
-        return Reading(param.mnemonic, value, f"{param.text.en} {param.mnemonic} = {shown}{unit}{hexed}")
+        hexed = (
+            f" (0x{int(raw) & 0xFFFFFFFF:X})"
+            if param.scale == 1.0 and not unit and not param.choices
+            else ""
+        )
+        return Reading(
+            param.mnemonic, value, f"{param.text.en} {param.mnemonic} = {shown}{unit}{hexed}"
+        )
 
     def pdo_defaults(self, node: int, receive: bool, control_mode: int) -> list[PdoDefault]:
         kind = "RPDO" if receive else "TPDO"

@@ -48,7 +48,7 @@ class Event:
             "kind": self.kind.value,
             "text": self.text,
             "frames": list(self.frames),
-            "values": {name: value for name, value in self.values},
+            "values": dict(self.values),
         }
 
 
@@ -63,7 +63,12 @@ class Incident:
 
     def to_dict(self) -> dict[str, Any]:
         """The incident as JSON-ready data."""
-        return {"time": self.time, "node": self.node, "what": self.what, "frames": list(self.frames)}
+        return {
+            "time": self.time,
+            "node": self.node,
+            "what": self.what,
+            "frames": list(self.frames),
+        }
 
 
 @dataclass(frozen=True)

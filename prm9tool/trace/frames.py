@@ -32,7 +32,9 @@ def trace_format(path: str | Path) -> str:
     suffix = Path(path).suffix.lower()
     if suffix not in FORMATS:
         known = ", ".join(FORMATS)
-        raise TraceFormatError(str(path), 0, f"unknown trace format {suffix or '(none)'!r}: use {known}")
+        raise TraceFormatError(
+            str(path), 0, f"unknown trace format {suffix or '(none)'!r}: use {known}"
+        )
     return suffix
 
 
@@ -70,13 +72,16 @@ def read_frames(path: str | Path) -> Iterator[can.Message]:
     reader_class = can.io.player.MESSAGE_READERS[suffix]
     name = str(path)
     try:
-        raw = open(path, encoding="utf-8", errors="replace") if suffix in TEXT_FORMATS else open(path, "rb")  # noqa: SIM115
+        if suffix in TEXT_FORMATS:  # closed in the finally below (a generator's lifetime)
+            raw: IO[Any] = open(path, encoding="utf-8", errors="replace")  # noqa: SIM115
+        else:
+            raw = open(path, "rb")  # noqa: SIM115
     except OSError as exc:
         raise TraceFormatError(name, 0, f"cannot open the trace: {exc.strerror or exc}") from exc
     counted = _CountedLines(raw) if suffix in TEXT_FORMATS else None
     count = 0
     try:
-        reader = reader_class(counted if counted is not None else raw)
+        reader = reader_class(counted if counted is not None else raw)  # type: ignore[arg-type]
         for message in reader:
             count += 1
             yield message
@@ -85,7 +90,9 @@ def read_frames(path: str | Path) -> Iterator[can.Message]:
         where = f"line {line}" if counted is not None else f"after frame {count}"
         reason = str(exc) or type(exc).__name__
         raise TraceFormatError(
-            name, line, f"not a valid {suffix[1:].upper()} trace at {where} ({count} frames read before it): {reason}"
+            name,
+            line,
+            f"not a valid {suffix[1:].upper()} trace at {where} ({count} frames read before it): {reason}",
         ) from exc
     finally:
         raw.close()

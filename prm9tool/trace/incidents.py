@@ -10,6 +10,7 @@ median period the trace shows.
 
 from __future__ import annotations
 
+import itertools
 import statistics
 from array import array
 from collections.abc import Sequence
@@ -47,7 +48,10 @@ class IncidentFinder:
             self.cycle_us = value
 
     def finish(
-        self, events: Sequence[Event], sync: array, sync_frames: array  # type: ignore[type-arg]
+        self,
+        events: Sequence[Event],
+        sync: array,
+        sync_frames: array,  # type: ignore[type-arg]
     ) -> tuple[list[Incident], SyncFigures]:
         """The incidents of ``events`` (in frame order) and the SYNC figures."""
         found: list[Incident] = []
@@ -78,7 +82,9 @@ class IncidentFinder:
         if event.kind is Kind.HEARTBEAT:
             boot = event.text == "boot-up"
             if boot and watch.seen:
-                found.append(Incident(event.time, node, f"node {node} rebooted (boot-up)", event.frames))
+                found.append(
+                    Incident(event.time, node, f"node {node} rebooted (boot-up)", event.frames)
+                )
             watch.seen = True
             watch.heartbeats.append((event.time, event.frames[0]))
             if boot:
@@ -103,19 +109,28 @@ class IncidentFinder:
                 what = f"{old.what}; then {event.text}"
                 found[at] = Incident(old.time, node, what, (*old.frames, *event.frames))
         if event.text.startswith("device state DEVICE_MODE_ACTIVE → "):
-            found.append(Incident(event.time, node, f"node {node} left DEVICE_MODE_ACTIVE: {event.text}", event.frames))
+            found.append(
+                Incident(
+                    event.time,
+                    node,
+                    f"node {node} left DEVICE_MODE_ACTIVE: {event.text}",
+                    event.frames,
+                )
+            )
 
     def _setpoint(self, event: Event, watch: _NodeWatch, found: list[Incident]) -> None:
         for name, value in event.values:
             if name in SETPOINTS and isinstance(value, float | int):
                 before, watch.setpoint = watch.setpoint, float(value)
                 if before is not None and abs(value - before) > SETPOINT_JUMP:
-                    what = f"node {event.node}: setpoint {name} jumped {before:.1f} % → {value:.1f} %"
+                    what = (
+                        f"node {event.node}: setpoint {name} jumped {before:.1f} % → {value:.1f} %"
+                    )
                     found.append(Incident(event.time, event.node, what, event.frames))
 
     def _heartbeat_gaps(self, node: int, watch: _NodeWatch, end: float) -> list[Incident]:
         beats = watch.heartbeats
-        periods = [b[0] - a[0] for a, b in zip(beats, beats[1:], strict=False)]
+        periods = [b[0] - a[0] for a, b in itertools.pairwise(beats)]
         configured = self.heartbeat_ms.get(node)
         if configured:
             period, source = configured / 1000.0, f"producer heartbeat time {configured} ms"
@@ -125,8 +140,13 @@ class IncidentFinder:
             return []
         limit = period * TOLERANCE
         found = [
-            Incident(b[0], node, f"node {node}: heartbeat gap of {b[0] - a[0]:.3f} s (limit {limit:.3f} s: {source})", (a[1], b[1]))
-            for a, b in zip(beats, beats[1:], strict=False)
+            Incident(
+                b[0],
+                node,
+                f"node {node}: heartbeat gap of {b[0] - a[0]:.3f} s (limit {limit:.3f} s: {source})",
+                (a[1], b[1]),
+            )
+            for a, b in itertools.pairwise(beats)
             if b[0] - a[0] > limit
         ]
         if beats and end - beats[-1][0] > limit:
@@ -137,7 +157,9 @@ class IncidentFinder:
 
 
 def _sync_figures(
-    sync: array, frames: array, cycle_us: int | None  # type: ignore[type-arg]
+    sync: array,
+    frames: array,
+    cycle_us: int | None,  # type: ignore[type-arg]
 ) -> tuple[SyncFigures, list[Incident]]:
     """The SYNC period and jitter, and the gaps beyond the limit."""
     if len(sync) < 2:
@@ -156,7 +178,12 @@ def _sync_figures(
         period, source = float(np.median(periods)), "the SYNC period the trace shows"
     limit = period * TOLERANCE
     found = [
-        Incident(float(times[i + 1]), None, f"SYNC gap of {periods[i] * 1000:.2f} ms (limit {limit * 1000:.2f} ms: {source})", ())
+        Incident(
+            float(times[i + 1]),
+            None,
+            f"SYNC gap of {periods[i] * 1000:.2f} ms (limit {limit * 1000:.2f} ms: {source})",
+            (),
+        )
         for i in np.flatnonzero(periods > limit)[:1000]
     ]
     return figures, found

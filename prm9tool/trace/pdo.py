@@ -42,7 +42,9 @@ class Pdo:
             result, shift = [], 0
             for entry in self.entries[: self.count]:
                 bits = entry & 0xFF
-                result.append((shift, (1 << bits) - 1, (bits + 7) // 8, entry >> 16, (entry >> 8) & 0xFF))
+                result.append(
+                    (shift, (1 << bits) - 1, (bits + 7) // 8, entry >> 16, (entry >> 8) & 0xFF)
+                )
                 shift += bits
             self._fields = result
         return self._fields

@@ -34,7 +34,15 @@ class Recorder:
     def __init__(self, path: str | Path, options: CanOptions) -> None:
         suffix = Path(path).suffix.lower()
         if suffix not in FORMATS:
-            raise FileFormatError(str(path), [FileProblem(0, f"cannot record into {suffix or 'a file without suffix'!r}: use {', '.join(FORMATS)}")])
+            raise FileFormatError(
+                str(path),
+                [
+                    FileProblem(
+                        0,
+                        f"cannot record into {suffix or 'a file without suffix'!r}: use {', '.join(FORMATS)}",
+                    )
+                ],
+            )
         self.path = Path(path)
         self.options = options
         self.frames = 0
@@ -70,7 +78,9 @@ class Recorder:
         try:
             self._logger = can.Logger(str(self.path))
         except (OSError, ValueError) as exc:
-            raise FileFormatError(str(self.path), [FileProblem(0, f"cannot write the trace: {exc}")]) from exc
+            raise FileFormatError(
+                str(self.path), [FileProblem(0, f"cannot write the trace: {exc}")]
+            ) from exc
         try:
             self._shared = acquire(self.options)
         except Exception:
@@ -97,7 +107,9 @@ class Recorder:
             self._logger = None
         if self._failure is not None:
             failure, self._failure = self._failure, None
-            raise FileFormatError(str(self.path), [FileProblem(0, f"writing the trace failed: {failure}")])
+            raise FileFormatError(
+                str(self.path), [FileProblem(0, f"writing the trace failed: {failure}")]
+            )
 
     def __enter__(self) -> Recorder:
         return self.start()

@@ -74,7 +74,9 @@ class SdoTracker:
         current = self._open
         if cs == 1:  # initiate download
             done = self._close("a new request came before its end")
-            opened = _Open(DOWNLOAD, index, sub, time, "expedited" if data[0] & 0x02 else "segmented")
+            opened = _Open(
+                DOWNLOAD, index, sub, time, "expedited" if data[0] & 0x02 else "segmented"
+            )
             opened.frames.append(number)
             if data[0] & 0x02:
                 n = (data[0] >> 2) & 3 if data[0] & 0x01 else 0
@@ -161,11 +163,11 @@ class SdoTracker:
                 current.data += data[1 : 8 - n]
                 return self._complete() if data[0] & 0x01 else []
             if cs == 6 and current.how == "block":
-                if data[0] & 0x03 == 0:  # initiate response with the size
+                if data[0] & 0x01 == 0:  # initiate response with the size (ss = bit 0)
                     if data[0] & 0x02:
                         current.size = int.from_bytes(data[4:8], "little")
                     return []
-                if data[0] & 0x03 == 1:  # end: bytes of the last segment without data
+                if data[0] & 0x01:  # end: bytes of the last segment without data
                     n = (data[0] >> 2) & 7
                     if n:
                         del current.data[len(current.data) - n :]
@@ -213,4 +215,3 @@ def _block_segment(current: _Open, request: bool) -> bool:
     """Whether a frame is a sub-block segment: from the client in a block download, from the
     server in a block upload."""
     return request == (current.direction == DOWNLOAD)
-
