@@ -39,6 +39,9 @@ class ValveFinder(QObject):
         self._settings = settings
         self._post = post
         connection.type_key_needed.connect(self.on_type_key_needed)
+        from prm9tool.online.trace_recording import BusRecording
+
+        self.recording = BusRecording(self)  # Record… / Stop: CAN bus dialog, trace window
 
     def configure_hid(self) -> ValveListing | None:
         """Show the HID configuration; returns the chosen device entry (or None)."""
@@ -59,7 +62,7 @@ class ValveFinder(QObject):
             self._connection.list_devices_async((), deliver, bus)
 
         monitor, lss = BusMonitor(), LssCommissioning()
-        dialog = CanBusDialog(scan, self._settings, self._window, monitor, lss)
+        dialog = CanBusDialog(scan, self._settings, self._window, monitor, lss, self.recording)
         accepted = dialog.exec() == QDialog.DialogCode.Accepted
         monitor.stop()
         monitor.deleteLater()
