@@ -33,6 +33,7 @@ if TYPE_CHECKING:
 LSS_MASTER, LSS_SLAVE = 0x7E5, 0x7E4
 CONTROL_MODE = CATALOGUE["CTRLMODE"].key  # 0x6043: table 7-13's entry 2 follows it
 _PRM9 = Prm9Dictionary()
+PDO_CACHE = 4096  # decoded payloads kept per PDO
 _RAW = RawDictionary()
 
 
@@ -170,7 +171,22 @@ class Decoder:
         self._pdo_values(node, pdo, number, time, data)
 
     def _pdo_values(self, node: _Node, pdo: Pdo, number: int, time: float, data: bytes) -> None:
-        parts, values = [], []
+        cached = pdo.decoded.get(data)
+        if cached is None:
+            if len(pdo.decoded) >= PDO_CACHE:
+                pdo.decoded.clear()
+            cached = pdo.decoded[data] = self._pdo_text(node, pdo, data)
+        text, values, words_seen = cached  # type: ignore[misc]
+        for index, word in words_seen:
+            self._word(node, index, word, number, time)
+        self._emit(Event(time, pdo.node, Kind.PDO, text, (number,), values))
+
+    @staticmethod
+    def _pdo_text(
+        node: _Node, pdo: Pdo, data: bytes
+    ) -> tuple[str, tuple[tuple[str, float | int | str], ...], tuple[tuple[int, int], ...]]:
+        """A PDO's text, values and control/status words (cached per PDO and data bytes)."""
+        parts, values, words_seen = [], [], []
         for index, sub, reading in pdo.decode(data, node.od):
             if reading is None:
                 parts.append(f"0x{index:04X}/{sub}: unknown object")
@@ -178,10 +194,9 @@ class Decoder:
             parts.append(reading.text)
             values.append((reading.name, reading.value))
             if (index, sub) in _WORDS:
-                raw = reading.value if isinstance(reading.value, int) else 0
-                self._word(node, index, raw, number, time)
+                words_seen.append((index, reading.value if isinstance(reading.value, int) else 0))
         text = f"{pdo.name}: " + ("; ".join(parts) if parts else "no objects mapped")
-        self._emit(Event(time, pdo.node, Kind.PDO, text, (number,), tuple(values)))
+        return text, tuple(values), tuple(words_seen)
 
     def _sdo(self, number: int, time: float, cob: int, data: bytes) -> None:
         node = self._node(cob & 0x7F)

@@ -42,8 +42,22 @@ class Prm9Dictionary:
     """A PRM9 valve: the catalogue's names, scaling and PDO mappings (manual table 7-13)."""
 
     kind = "PRM9"
+    CACHED = 200_000  # readings kept (a trace repeats its values: one Reading serves them all)
+
+    def __init__(self) -> None:
+        self._cache: dict[tuple[int, int, bytes], Reading | None] = {}
 
     def read(self, index: int, subindex: int, data: bytes) -> Reading | None:
+        key = (index, subindex, data)
+        cache = self._cache
+        if key in cache:
+            return cache[key]
+        if len(cache) >= self.CACHED:
+            cache.clear()
+        reading = cache[key] = self._read(index, subindex, data)
+        return reading
+
+    def _read(self, index: int, subindex: int, data: bytes) -> Reading | None:
         param = CATALOGUE.by_address(index, subindex)
         if param is None:
             return None

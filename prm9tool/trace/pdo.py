@@ -23,6 +23,8 @@ class Pdo:
     count: int
     entries: list[int] = field(default_factory=lambda: [0] * 64)
     _fields: list[tuple[int, int, int, int, int]] | None = None  # shift, mask, bytes, index, sub
+    decoded: dict[bytes, object] = field(default_factory=dict)  # the decoder's cache by data
+    _length: int | None = None
 
     @property
     def name(self) -> str:
@@ -51,7 +53,9 @@ class Pdo:
 
     def length(self) -> int:
         """The bytes its mapping fills."""
-        return (sum(entry & 0xFF for entry in self.entries[: self.count]) + 7) // 8
+        if self._length is None:
+            self._length = (sum(entry & 0xFF for entry in self.entries[: self.count]) + 7) // 8
+        return self._length
 
     def set_mapping(self, subindex: int, value: int) -> None:
         """An SDO write to the mapping object."""
@@ -59,7 +63,8 @@ class Pdo:
             self.count = min(value & 0xFF, 64)
         elif subindex <= 64:
             self.entries[subindex - 1] = value & 0xFFFFFFFF
-        self._fields = None
+        self._fields = self._length = None
+        self.decoded.clear()
 
     def decode(self, data: bytes, od: NodeDictionary) -> list[tuple[int, int, Reading | None]]:
         """The mapped objects' values in ``data``: (index, subindex, reading or None)."""
