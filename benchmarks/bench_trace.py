@@ -98,8 +98,17 @@ def measure(what: str, path: str) -> None:
         decoded = trace.read(path)
         count, events = decoded.frames, len(decoded.events)
     seconds = time.perf_counter() - started
-    rss_mib = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024
+    rss_mib = peak_rss_mib()
     print(json.dumps({"frames": count, "events": events, "s": seconds, "rss_mib": rss_mib}))
+
+
+def peak_rss_mib() -> float:
+    """This process's peak resident memory (VmHWM: ru_maxrss would include the parent's, which
+    a child inherits across exec on Linux)."""
+    for line in Path("/proc/self/status").read_text().splitlines():
+        if line.startswith("VmHWM:"):
+            return int(line.split()[1]) / 1024
+    return resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024
 
 
 def in_process(what: str, path: Path) -> dict[str, float]:
@@ -115,8 +124,10 @@ def in_process(what: str, path: Path) -> dict[str, float]:
 def bench_decode(count: int, folder: Path) -> None:
     frames = machine_frames(count)
     for suffix in (".log", ".blf"):
+        write(folder / f"machine{suffix}", frames)
+    del frames
+    for suffix in (".log", ".blf"):
         path = folder / f"machine{suffix}"
-        write(path, frames)
         size = path.stat().st_size / 2**20
         reader, decoder = in_process("reader", path), in_process("decode", path)
         print(

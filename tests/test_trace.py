@@ -279,6 +279,13 @@ def test_the_cli_reports_a_malformed_trace_without_a_traceback(tmp_path, capsys)
         ),
         (["--record", "t.txt"], "t.txt: a trace is one of"),
         (["--decode", "t.asc", "--eds", "200=x.eds"], "NODE=FILE with a node ID"),
+        (["--speed", "2"], "--speed belongs to --replay"),
+        (["--replay", "t.asc", "--only-node", "0"], "--only-node 0: CANopen node IDs are 1…127"),
+        (["--replay", "t.asc", "--batch", "x.prm"], "--replay drives a bus from a trace"),
+        (
+            ["--decode", "t.asc", "--replay", "t.asc"],
+            "--decode reads a trace file and takes no --replay",
+        ),
     ],
 )
 def test_the_cli_refuses_options_that_do_not_fit(argv, problem, capsys):
@@ -329,3 +336,33 @@ def test_the_cli_records_the_bus_for_a_duration(tmp_path):
     assert code == 0
     result = trace.read(path)
     assert result.frames > 0 and {e.text for e in result.events} == {"heartbeat: operational"}
+
+
+# --- replay --------------------------------------------------------------------------------
+def test_a_replay_drives_an_emulated_valve_and_compares_its_answers(golden):
+    """The PLC's frames to node 15 drive a fresh E04 valve: its SDO answers are the recorded
+    ones, and it ends in DEVICE_MODE_ACTIVE as the recorded valve did."""
+    from canopen_rig import unique_channel
+    from trace_rig import SWITCHES, TYPE_KEYS
+    from waiting import wait_for
+
+    from prm9tool.device.canlink.bus import CanOptions
+    from prm9tool.device.emulator import EmulatedValve
+    from prm9tool.trace.replay import replay
+
+    channel = unique_channel("replay")
+    bus = can.Bus(interface="virtual", channel=channel)
+    valve = EmulatedValve(TYPE_KEYS[15], serial=3015, switches=SWITCHES[15])
+    slave = valve.connect_can(bus)
+    valve.start()  # real time, as a valve on a desk
+    try:
+        wait_for(lambda: valve.status().nmt_state == "pre-operational", timeout_s=30)
+        result = replay(golden[0], CanOptions("virtual", channel), only_node=15)
+    finally:
+        valve.stop()
+        slave.stop()
+        bus.shutdown()
+    assert result.sent > 300
+    assert [d for d in result.differences if d.what in ("SDO", "EMCY")] == []
+    states = [e.text for e in result.replayed.events if e.kind is Kind.STATE and e.node == 15]
+    assert states and "DEVICE_MODE_ACTIVE" in states[-1]

@@ -56,6 +56,18 @@ def add_trace_options(parser: argparse.ArgumentParser) -> None:
     )  # fmt: skip
     group.add_argument("--csv", metavar="OUT.csv", help="with --decode: the events as CSV")
     group.add_argument(
+        "--replay", metavar="TRACE",
+        help="put the master's frames of a trace (NMT, SYNC, RPDOs, SDO requests) back on the "
+        "bus of the CAN options with their timing; report the answers that differ (exit 1)",
+    )  # fmt: skip
+    group.add_argument(
+        "--speed", type=float, metavar="X", help="with --replay: X times as fast (default 1)"
+    )
+    group.add_argument(
+        "--only-node", type=int, metavar="N",
+        help="with --replay: only the frames node N receives (NMT, SYNC, its RPDOs and SDO)",
+    )  # fmt: skip
+    group.add_argument(
         "--fail-on-incident", action="store_true",
         help="with --decode: exit 1 when the trace has an incident (CI of PLC code)",
     )  # fmt: skip
@@ -69,8 +81,8 @@ def trace_problem(args: argparse.Namespace) -> str | None:
             return f"{decode_only[0]} belongs to --decode"
     else:
         others = [f for f, d in _OTHERS.items() if getattr(args, d, None) not in (None, False, [])]
-        if args.record:
-            others.insert(0, "--record")
+        if args.record or args.replay:
+            others.insert(0, "--record" if args.record else "--replay")
         if others or args.file:
             what = others[0] if others else f"the file {args.file}"
             return f"--decode reads a trace file and takes no {what}"
@@ -79,6 +91,13 @@ def trace_problem(args: argparse.Namespace) -> str | None:
         if can:
             return f"--decode reads a trace file; {can[0]} names a CAN bus"
         return _eds_problem(args.eds) or _format_problem(args.decode)
+    replay_only = [f for f, d in REPLAY_ONLY.items() if getattr(args, d, None) is not None]
+    if args.replay is None and replay_only:
+        return f"{replay_only[0]} belongs to --replay"
+    if args.replay is not None:
+        problem = _replay_problem(args)
+        if problem is not None:
+            return problem
     if args.duration is not None:
         if not args.record:
             return "--duration belongs to --record"
@@ -87,6 +106,21 @@ def trace_problem(args: argparse.Namespace) -> str | None:
     if args.record:
         return _format_problem(args.record)
     return None
+
+
+def _replay_problem(args: argparse.Namespace) -> str | None:
+    others = [f for f, d in _OTHERS.items() if getattr(args, d, None) not in (None, False, [])]
+    if others or args.file:
+        return (
+            f"--replay drives a bus from a trace and takes no {others[0] if others else args.file}"
+        )
+    if args.speed is not None and args.speed <= 0:
+        return f"--speed {args.speed}: give a factor above 0"
+    if args.only_node is not None and not 1 <= args.only_node <= 127:
+        return f"--only-node {args.only_node}: CANopen node IDs are 1…127"
+    if args.record and Path(args.record).resolve() == Path(args.replay).resolve():
+        return "--record would overwrite the trace --replay reads"
+    return _format_problem(args.replay)
 
 
 def _format_problem(path: str) -> str | None:
@@ -110,6 +144,8 @@ def trace_command(args: argparse.Namespace) -> tuple[str, str] | None:
     """The function that runs a trace command alone (None: none, or --record beside another)."""
     if args.decode is not None:
         return "prm9tool.cli.trace", "decode"
+    if args.replay is not None:
+        return "prm9tool.cli.trace", "replay"
     if args.record and not _other_command(args):
         return "prm9tool.cli.trace", "wait_recording"
     return None
@@ -180,6 +216,47 @@ def decode(args: argparse.Namespace) -> int:
     if args.fail_on_incident and decoded.incidents:
         return ExitCode.VERIFY_FAILED
     return ExitCode.OK
+
+
+def replay(args: argparse.Namespace) -> int:
+    """``--replay TRACE``: the master side on the bus, the answers compared; exit 1 when they
+    differ, 3 for a trace that cannot be read, 6 for a bus that cannot be opened."""
+    from prm9tool.device.canlink.bus import CanOptions
+    from prm9tool.errors import CommunicationError
+    from prm9tool.trace.replay import replay as run_replay
+
+    options = CanOptions.from_args(args)
+    try:
+        result = run_replay(args.replay, options, args.speed or 1.0, args.only_node)
+    except CommunicationError as exc:
+        print(f"prm9tool: {exc}", file=sys.stderr)
+        return ExitCode.COMMUNICATION
+    except Prm9Error as exc:
+        print(f"prm9tool: {exc}", file=sys.stderr)
+        return ExitCode.INVALID_FILE
+    if args.json:
+        report = {
+            "sent": result.sent, "late_s": result.late_s,
+            "differences": [d.to_dict() for d in result.differences],
+        }  # fmt: skip
+        if isinstance(args.json, str):
+            Path(args.json).write_text(json.dumps(report, indent=1), encoding="utf-8")
+        else:
+            print(json.dumps(report, indent=1))
+    else:
+        print(
+            f"{result.sent} frames sent on {options} (at most {result.late_s * 1000:.1f} ms late)"
+        )
+        for d in result.differences:
+            print(
+                f"node {d.node}, {d.what}: recorded {list(d.recorded)}, replayed {list(d.replayed)}"
+            )
+        print(
+            f"{len(result.differences)} differences"
+            if result.differences
+            else "the answers are the same"
+        )
+    return ExitCode.VERIFY_FAILED if result.differences else ExitCode.OK
 
 
 def _eds(given: list[str]) -> dict[int | None, str]:

@@ -34,6 +34,8 @@ LSS_MASTER, LSS_SLAVE = 0x7E5, 0x7E4
 CONTROL_MODE = CATALOGUE["CTRLMODE"].key  # 0x6043: table 7-13's entry 2 follows it
 _PRM9 = Prm9Dictionary()
 PDO_CACHE = 4096  # decoded payloads kept per PDO
+# a PDO's text, its values and the control/status words in it
+_PdoText = tuple[str, tuple[tuple[str, float | int | str], ...], tuple[tuple[int, int], ...]]
 _RAW = RawDictionary()
 
 
@@ -171,20 +173,18 @@ class Decoder:
         self._pdo_values(node, pdo, number, time, data)
 
     def _pdo_values(self, node: _Node, pdo: Pdo, number: int, time: float, data: bytes) -> None:
-        cached = pdo.decoded.get(data)
+        cached: _PdoText | None = pdo.decoded.get(data)  # type: ignore[assignment]
         if cached is None:
             if len(pdo.decoded) >= PDO_CACHE:
                 pdo.decoded.clear()
             cached = pdo.decoded[data] = self._pdo_text(node, pdo, data)
-        text, values, words_seen = cached  # type: ignore[misc]
+        text, values, words_seen = cached
         for index, word in words_seen:
             self._word(node, index, word, number, time)
         self._emit(Event(time, pdo.node, Kind.PDO, text, (number,), values))
 
     @staticmethod
-    def _pdo_text(
-        node: _Node, pdo: Pdo, data: bytes
-    ) -> tuple[str, tuple[tuple[str, float | int | str], ...], tuple[tuple[int, int], ...]]:
+    def _pdo_text(node: _Node, pdo: Pdo, data: bytes) -> _PdoText:
         """A PDO's text, values and control/status words (cached per PDO and data bytes)."""
         parts, values, words_seen = [], [], []
         for index, sub, reading in pdo.decode(data, node.od):
