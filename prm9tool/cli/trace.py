@@ -13,7 +13,6 @@ import contextlib
 import csv
 import json
 import sys
-import time
 from collections.abc import Iterator
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
@@ -185,16 +184,19 @@ def recording(args: argparse.Namespace) -> Iterator[None]:
 
 
 def wait_recording(args: argparse.Namespace) -> int:
-    """``--record`` alone: the recording runs (see :func:`recording`) until ``--duration`` or
-    Ctrl+C."""
+    """``--record`` alone: the recording runs (see :func:`recording`) until ``--duration``,
+    Ctrl+C or SIGTERM; the file is closed with every frame in each case."""
+    import signal
+    import threading
+
+    done = threading.Event()
+    previous = signal.signal(signal.SIGTERM, lambda _signum, _frame: done.set())
     try:
-        if args.duration is not None:
-            time.sleep(args.duration)
-        else:
-            while True:
-                time.sleep(3600)
+        done.wait(args.duration)
     except KeyboardInterrupt:
         pass
+    finally:
+        signal.signal(signal.SIGTERM, previous)
     return ExitCode.OK
 
 
