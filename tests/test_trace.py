@@ -366,3 +366,44 @@ def test_a_replay_drives_an_emulated_valve_and_compares_its_answers(golden):
     assert [d for d in result.differences if d.what in ("SDO", "EMCY")] == []
     states = [e.text for e in result.replayed.events if e.kind is Kind.STATE and e.node == 15]
     assert states and "DEVICE_MODE_ACTIVE" in states[-1]
+
+
+# --- recording beside a session -------------------------------------------------------------
+def test_a_recording_shares_the_bus_of_a_session_and_sees_what_it_sends(tmp_path, request):
+    """The recorder is a listener on the master a CANopen session uses (one bus): the trace
+    holds the session's own SDO requests (sent, python-can does not receive them) and the
+    valve's answers, decoded to the values the session read."""
+    from can_link_rig import make_link_rig
+
+    from prm9tool.device.canlink.bus import acquire, release
+    from prm9tool.device.canlink.session import CanopenSession
+
+    rig = make_link_rig(request.node.name, tmp_path)
+    path = tmp_path / "session.asc"
+    try:
+        with trace.record(path, rig.options) as recorder:
+            session = CanopenSession(rig.options, 10)
+            try:
+                shared = acquire(rig.options)
+                assert shared.users == 3  # the recorder, the session, this look: one bus
+                release(shared)
+                heartbeat = session.read("HEARTBEAT")
+            finally:
+                session.close()
+    finally:
+        rig.close()
+    assert recorder.frames == recorder.written
+    decoded = trace.read(path)
+    reads = [e.text for e in decoded.events if e.kind is Kind.SDO and "0x1017/0" in e.text]
+    assert reads == [
+        f"SDO read (expedited) 0x1017/0: Producer heartbeat time HEARTBEAT = {heartbeat} ms"
+    ]
+    assert decoded.not_understood == []
+
+
+def test_the_api_names_stay_functions_when_their_modules_are_loaded():
+    import prm9tool.trace.decoder
+    import prm9tool.trace.recorder
+    import prm9tool.trace.replay  # noqa: F401
+
+    assert callable(trace.record) and callable(trace.read)

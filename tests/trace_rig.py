@@ -1,6 +1,6 @@
 """Golden traces for the trace decoder: a ``canopen``-package PLC commissions two emulated valves
 on a private virtual bus while prm9tool's recorder writes every frame with python-can's
-``can.Logger`` (prm9tool.trace.record). The valves run on simulated time, so the sequence is
+``can.Logger`` (prm9tool.trace.recorder). The valves run on simulated time, so the sequence is
 the same on a busy machine; only the time stamps are the wall clock's.
 
 The sequence (docs/trace.md's worked example): boot-up of nodes 10 (E02) and 15 (E04); the PLC
@@ -26,7 +26,7 @@ from waiting import wait_for
 from prm9tool.device.canlink.bus import CanOptions
 from prm9tool.device.emulator import EmulatedValve
 from prm9tool.device.emulator.canopen_slave import CanopenSlave
-from prm9tool.trace.record import Recorder
+from prm9tool.trace.recorder import Recorder
 
 NODES = (10, 15)
 SWITCHES = {10: (6, 2), 15: (6, 3)}  # 500 kbit/s, node 10 / node 15

@@ -164,7 +164,7 @@ def recording(args: argparse.Namespace) -> Iterator[None]:
         return
     from prm9tool.device.canlink.bus import CanOptions
     from prm9tool.errors import CommunicationError
-    from prm9tool.trace.record import Recorder
+    from prm9tool.trace.recorder import Recorder
 
     recorder = Recorder(args.record, CanOptions.from_args(args))
     try:

@@ -1,7 +1,7 @@
 """Recording the CAN bus from the GUI: one :class:`BusRecording` per window, started from the
 CAN bus dialog or the trace window (Record… / Stop) and running on while the GUI goes online,
 characterizes or uploads over the same bus — the recorder is a listener on the bus the session
-uses (:mod:`prm9tool.trace.record`). Opening the bus may block, so it starts in a thread of its
+uses (:mod:`prm9tool.trace.recorder`). Opening the bus may block, so it starts in a thread of its
 own; stopping writes what is queued and closes the file. QtCore only.
 """
 
@@ -19,7 +19,7 @@ from prm9tool.errors import Prm9Error
 from prm9tool.translate import error_text
 
 if TYPE_CHECKING:
-    from prm9tool.trace.record import Recorder
+    from prm9tool.trace.recorder import Recorder
 
 log = logging.getLogger(__name__)
 
@@ -76,7 +76,7 @@ class BusRecording(QObject):
 
     def _open(self, bus: dict[str, object], path: str) -> None:
         from prm9tool.device.canlink.bus import CanOptions
-        from prm9tool.trace.record import Recorder
+        from prm9tool.trace.recorder import Recorder
 
         rate = bus.get("bitrate")
         options = CanOptions(

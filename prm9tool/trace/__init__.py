@@ -15,7 +15,7 @@ from prm9tool.trace.events import Event, Incident, Kind, SyncFigures, Trace
 from prm9tool.trace.frames import TraceFormatError
 
 if TYPE_CHECKING:
-    from prm9tool.trace.record import Recorder
+    from prm9tool.trace.recorder import Recorder
 
 __all__ = [
     "Event",
@@ -42,6 +42,6 @@ def read(path: str | Path, eds: Mapping[int | None, str | Path] | None = None) -
 def record(path: str | Path, options: object = None) -> Recorder:
     """A recorder of the bus ``options`` (a ``CanOptions``; default the virtual bus) into the
     trace file ``path``: ``with record("run.asc", options): ...``."""
-    from prm9tool.trace.record import record as make
+    from prm9tool.trace.recorder import record as make
 
     return make(path, options)  # type: ignore[arg-type]
