@@ -32,7 +32,7 @@ def window(qtbot, tmp_path):
     settings = QSettings(str(tmp_path / "settings.ini"), QSettings.Format.IniFormat)
     recording = BusRecording()
     bus = {"interface": "virtual", "channel": unique_channel("gui-trace"), "bitrate": None}
-    window = TraceWindow(recording, bus, settings)
+    window = TraceWindow(recording, lambda: bus, settings)
     qtbot.addWidget(window)
     yield window
     recording.stop()

@@ -407,3 +407,19 @@ def test_the_api_names_stay_functions_when_their_modules_are_loaded():
     import prm9tool.trace.replay  # noqa: F401
 
     assert callable(trace.record) and callable(trace.read)
+
+
+def test_the_cli_replay_reports_answers_that_did_not_come(golden, capsys):
+    """Nobody on the bus: the replay sends the master's frames to node 15, waits for each SDO
+    answer in vain and reports the missing answers (exit 1)."""
+    from canopen_rig import unique_channel
+
+    from prm9tool.cli.main import main
+
+    channel = unique_channel("cli-replay")
+    argv = ["--replay", str(golden[0]), "--only-node", "15", "--speed", "4"]
+    code = main([*argv, "--can-interface", "virtual", "--can-channel", channel])
+    out = capsys.readouterr().out
+    assert code == 1
+    assert "frames sent on virtual channel" in out
+    assert "node 15, SDO: recorded ['SDO read (expedited) 0x1018/1" in out

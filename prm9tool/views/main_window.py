@@ -332,7 +332,7 @@ class MainWindow(QMainWindow):
 
             finder = self.valve.finder
             self.trace_window = TraceWindow(
-                finder.recording, saved_bus(self.settings), self.settings, self
+                finder.recording, lambda: saved_bus(self.settings), self.settings, self
             )
         self.trace_window.show()
         self.trace_window.raise_()

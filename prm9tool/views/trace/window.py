@@ -7,6 +7,7 @@ from __future__ import annotations
 
 import contextlib
 import threading
+from collections.abc import Callable
 from pathlib import Path
 
 import pyqtgraph as pg
@@ -47,7 +48,7 @@ class TraceWindow(QWidget):
     def __init__(
         self,
         recording: BusRecording,
-        bus: dict[str, object],
+        bus: Callable[[], dict[str, object]],
         settings: QSettings,
         parent: QWidget | None = None,
     ) -> None:
@@ -88,7 +89,7 @@ class TraceWindow(QWidget):
         self.plot.setDownsampling(auto=True, mode="peak")
         self.time_line = pg.InfiniteLine(angle=90, movable=False)
         self.plot.addItem(self.time_line)
-        self.recording = RecordControls(recording, lambda: bus, self)
+        self.recording = RecordControls(recording, bus, self)  # the bus chosen last
         self._build_layout()
         self._fill_filters()
         self.resize(1200, 800)
