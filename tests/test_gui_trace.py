@@ -121,3 +121,15 @@ def test_the_can_bus_dialog_offers_record_and_stop(qtbot, tmp_path):
     assert dialog.record_controls is not None
     assert dialog.record_controls.record.isEnabled()
     assert not dialog.record_controls.stop.isEnabled()
+
+
+def test_communication_can_trace_opens_the_window_with_the_dialogs_recording(qtbot, tmp_path):
+    from gui_support import main_window
+
+    with main_window(qtbot, tmp_path) as window:
+        window.commands["can_trace"].trigger()
+        shown = window.trace_window
+        assert isinstance(shown, TraceWindow) and shown.isVisible()
+        assert shown.recording._recording is window.valve.finder.recording
+        window.commands["can_trace"].trigger()
+        assert window.trace_window is shown  # one window, raised again
