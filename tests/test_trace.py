@@ -423,3 +423,33 @@ def test_the_cli_replay_reports_answers_that_did_not_come(golden, capsys):
     assert code == 1
     assert "frames sent on virtual channel" in out
     assert "node 15, SDO: recorded ['SDO read (expedited) 0x1018/1" in out
+
+
+def test_a_truncated_blf_is_an_error_not_a_shorter_trace(golden, tmp_path):
+    whole = tmp_path / "whole.blf"
+    with can.Logger(str(whole)) as logger:
+        for msg in can.LogReader(str(golden[0])):
+            logger.on_message_received(msg)
+    data = whole.read_bytes()
+    cut = tmp_path / "cut.blf"
+    cut.write_bytes(data[: len(data) // 2])
+    with pytest.raises(trace.TraceFormatError) as info:
+        trace.read(cut)
+    assert f"cut.blf: not a valid BLF trace after frame " in str(info.value)
+    assert f"the file is truncated: its header gives {len(data)} bytes" in str(info.value)
+
+
+def test_a_trc_line_python_can_drops_is_an_error_with_its_line(golden, tmp_path):
+    good = tmp_path / "good.trc"
+    with can.Logger(str(good)) as logger:
+        for msg in can.LogReader(str(golden[0])):
+            logger.on_message_received(msg)
+    lines = good.read_text().splitlines()
+    first = next(k for k, line in enumerate(lines) if not line.startswith(";"))
+    lines.insert(first + 3, "      7        30.000 DT")  # too few columns
+    bad = tmp_path / "bad.trc"
+    bad.write_text("\n".join(lines) + "\n")
+    with pytest.raises(trace.TraceFormatError) as info:
+        trace.read(bad)
+    assert info.value.line == first + 4
+    assert "Failed to parse message" in str(info.value)

@@ -4,6 +4,7 @@ a line or frame the reader cannot take: ASC (Vector), BLF (Vector binary), TRC (
 
 from __future__ import annotations
 
+import logging
 from collections.abc import Iterator
 from pathlib import Path
 from typing import IO, TYPE_CHECKING, Any
@@ -25,6 +26,8 @@ class TraceFormatError(FileFormatError):
     def __init__(self, path: str, line: int, text: str) -> None:
         self.line = line
         super().__init__(path, [FileProblem(line, text)])
+        if not line:  # a binary file or the whole file: no line to name
+            self.args = (f"{path}: {text}",)
 
 
 def trace_format(path: str | Path) -> str:
@@ -65,7 +68,9 @@ class _CountedLines:
 
 def read_frames(path: str | Path) -> Iterator[can.Message]:
     """Every frame of the trace ``path`` in file order; TraceFormatError with the line (or, in a
-    binary file, the frame number) where the file stops making sense."""
+    binary file, the frame number) where the file stops making sense: where python-can's
+    reader raises, where it drops a line it cannot parse (it only logs a warning), and for a
+    BLF file shorter than its header says (truncated: python-can would stop silently)."""
     import can
 
     suffix = trace_format(path)
@@ -79,20 +84,59 @@ def read_frames(path: str | Path) -> Iterator[can.Message]:
     except OSError as exc:
         raise TraceFormatError(name, 0, f"cannot open the trace: {exc.strerror or exc}") from exc
     counted = _CountedLines(raw) if suffix in TEXT_FORMATS else None
+    dropped = _DroppedLines(counted)
     count = 0
+
+    def problem(reason: str) -> TraceFormatError:
+        line = dropped.line or (counted.line if counted is not None else 0)
+        where = f"at line {line}" if counted is not None else f"after frame {count}"
+        return TraceFormatError(
+            name, line,
+            f"not a valid {suffix[1:].upper()} trace {where} ({count} frames read before it): {reason}",
+        )  # fmt: skip
+
+    io_log = logging.getLogger("can.io")
+    io_log.addHandler(dropped)
     try:
         reader = reader_class(counted if counted is not None else raw)  # type: ignore[arg-type]
         for message in reader:
+            if dropped.reason:
+                raise problem(dropped.reason)
             count += 1
             yield message
+        if dropped.reason:
+            raise problem(dropped.reason)
+        _check_complete(reader, path, problem)
+    except TraceFormatError:
+        raise
     except Exception as exc:  # python-can's readers raise what their parsing meets
-        line = counted.line if counted is not None else 0
-        where = f"line {line}" if counted is not None else f"after frame {count}"
-        reason = str(exc) or type(exc).__name__
-        raise TraceFormatError(
-            name,
-            line,
-            f"not a valid {suffix[1:].upper()} trace at {where} ({count} frames read before it): {reason}",
-        ) from exc
+        raise problem(str(exc) or type(exc).__name__) from exc
     finally:
+        io_log.removeHandler(dropped)
         raw.close()
+
+
+class _DroppedLines(logging.Handler):
+    """A line python-can's reader dropped with a warning (TRC: "Failed to parse message")."""
+
+    def __init__(self, counted: _CountedLines | None) -> None:
+        super().__init__(logging.WARNING)
+        self._counted = counted
+        self.reason = ""
+        self.line = 0
+
+    def emit(self, record: logging.LogRecord) -> None:
+        if not self.reason and "Writer" not in record.getMessage():
+            self.reason = record.getMessage()
+            self.line = self._counted.line if self._counted is not None else 0
+
+
+def _check_complete(reader: Any, path: str | Path, problem: Any) -> None:
+    """A BLF file shorter than the size its header gives was cut off."""
+    expected = getattr(reader, "file_size", 0)
+    if isinstance(expected, int) and expected > 0:
+        actual = Path(path).stat().st_size
+        if actual < expected:
+            raise problem(
+                f"the file is truncated: its header gives {expected} bytes, it has {actual}"
+            )
