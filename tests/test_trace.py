@@ -435,7 +435,7 @@ def test_a_truncated_blf_is_an_error_not_a_shorter_trace(golden, tmp_path):
     cut.write_bytes(data[: len(data) // 2])
     with pytest.raises(trace.TraceFormatError) as info:
         trace.read(cut)
-    assert f"cut.blf: not a valid BLF trace after frame " in str(info.value)
+    assert "cut.blf: not a valid BLF trace after frame " in str(info.value)
     assert f"the file is truncated: its header gives {len(data)} bytes" in str(info.value)
 
 
