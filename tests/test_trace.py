@@ -10,6 +10,8 @@ from pathlib import Path
 
 import can
 import pytest
+from hypothesis import given
+from hypothesis import strategies as st
 from trace_rig import DEADLINE_MS, record_commissioning
 
 import prm9tool.trace as trace
@@ -453,3 +455,23 @@ def test_a_trc_line_python_can_drops_is_an_error_with_its_line(golden, tmp_path)
         trace.read(bad)
     assert info.value.line == first + 4
     assert "Failed to parse message" in str(info.value)
+
+
+# --- any frames at all ---------------------------------------------------------------------
+_COBS = st.one_of(
+    st.sampled_from([0x000, 0x080, 0x100, 0x7E4, 0x7E5, 0x08A, 0x18A, 0x20A, 0x28A, 0x30A]),
+    st.sampled_from([0x58A, 0x60A, 0x70A, 0x58F, 0x60F]),
+    st.integers(0, 0x7FF),
+)
+_FRAMES = st.lists(st.tuples(_COBS, st.binary(max_size=8), st.booleans()), max_size=40)
+
+
+@given(_FRAMES)
+def test_any_frames_decode_without_an_exception_and_every_frame_is_accounted_for(frames):
+    decoder = Decoder("fuzz")
+    for k, (cob, data, remote) in enumerate(frames):
+        decoder.feed(can.Message(timestamp=k * 0.001, arbitration_id=cob, data=data,
+                                 is_extended_id=False, is_remote_frame=remote and not data))  # fmt: skip
+    result = decoder.result()
+    assert {n for e in result.events for n in e.frames} == set(range(len(frames)))
+    assert all(e.text for e in result.events)
