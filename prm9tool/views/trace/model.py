@@ -27,6 +27,7 @@ class EventTableModel(QAbstractTableModel):
         self._nodes = np.zeros(0, dtype=np.int16)
         self._kinds = np.zeros(0, dtype=np.int8)
         self._rows = np.zeros(0, dtype=np.int64)
+        self._firsts = np.zeros(0, dtype=np.int64)
         self._headers = [
             self.tr("Time (s)"), self.tr("Node"), self.tr("Kind"), self.tr("What"),
             self.tr("Frames"),
@@ -45,6 +46,11 @@ class EventTableModel(QAbstractTableModel):
         position = {kind: k for k, kind in enumerate(KINDS)}
         self._kinds = np.fromiter(
             (position[e.kind] for e in self._events), dtype=np.int8, count=len(self._events)
+        )
+        self._firsts = np.fromiter(
+            (e.frames[0] if e.frames else -1 for e in self._events),
+            dtype=np.int64,
+            count=len(self._events),
         )
         self._rows = np.arange(len(self._events))
         self.endResetModel()
@@ -66,10 +72,16 @@ class EventTableModel(QAbstractTableModel):
         return self._events[int(self._rows[row])]
 
     def row_of_frame(self, frame: int) -> int | None:
-        """The row that shows the event of ``frame`` (None: filtered out)."""
-        for row, number in enumerate(self._rows):
-            if frame in self._events[int(number)].frames:
-                return row
+        """The row that shows the event of ``frame`` (None: filtered out). Events are in the
+        order of their first frames: a binary search, then back over the few events that
+        began earlier (an SDO transfer holds frames after its first)."""
+        firsts = self._firsts[self._rows]
+        left = int(np.searchsorted(firsts, frame, side="left"))
+        if left < len(firsts) and firsts[left] == frame:
+            return left  # the first event of the frame (a state change before its PDO)
+        for candidate in range(left - 1, max(left - 65, -1), -1):
+            if frame in self._events[int(self._rows[candidate])].frames:
+                return candidate
         return None
 
     def rowCount(self, parent: Index = QModelIndex()) -> int:  # noqa: B008
@@ -99,7 +111,10 @@ class EventTableModel(QAbstractTableModel):
         return " ".join(map(str, event.frames[:8])) + (" …" if len(event.frames) > 8 else "")
 
 
-def pdo_series(trace: Trace) -> dict[tuple[int, str], tuple[np.ndarray, np.ndarray]]:
+Series = dict[tuple[int, str], tuple[np.ndarray, np.ndarray]]  # (node, name) -> times, values
+
+
+def pdo_series(trace: Trace) -> Series:
     """Every numeric value the trace's PDOs carry, per (node, name): times (s from the first
     frame) and values in display units."""
     times: dict[tuple[int, str], list[float]] = {}

@@ -9,6 +9,7 @@ import contextlib
 import threading
 from collections.abc import Callable
 from pathlib import Path
+from typing import cast
 
 import pyqtgraph as pg
 from PySide6.QtCore import QSettings, Qt, Signal
@@ -31,7 +32,7 @@ from prm9tool.online.trace_recording import BusRecording
 from prm9tool.trace.events import Kind, Trace
 from prm9tool.translate import error_text
 from prm9tool.views.localized_axis import LocalizedAxis
-from prm9tool.views.trace.model import ALL, NO_NODE, EventTableModel, pdo_series
+from prm9tool.views.trace.model import ALL, NO_NODE, EventTableModel, Series, pdo_series
 from prm9tool.views.trace.record_controls import TRACE_FILTER, RecordControls
 
 FOLDER_KEY = "trace/folder"
@@ -129,7 +130,8 @@ class TraceWindow(QWidget):
 
         def decode() -> None:
             try:
-                result: Trace | Exception = trace.read(path)
+                decoded = trace.read(path)
+                result: object = (decoded, pdo_series(decoded))  # the series off the GUI thread too
             except Exception as exc:  # a Prm9Error, or a bug in the decoder: shown, not raised
                 # without its traceback: its frames would keep this window alive in a cycle
                 # past its deletion (a crash at the next LanguageChange)
@@ -156,16 +158,17 @@ class TraceWindow(QWidget):
                 self.tr("The trace cannot be read: {0}").format(error_text(result))
             )
             return
-        assert isinstance(result, Trace)
-        self.show_trace(result)
+        decoded, series = cast(tuple[Trace, Series], result)
+        self.show_trace(decoded, series)
 
-    def show_trace(self, trace: Trace) -> None:
-        """Show a decoded trace: table, filters, incidents, PDO series."""
+    def show_trace(self, trace: Trace, series: Series | None = None) -> None:
+        """Show a decoded trace: table, filters, incidents, PDO series (``series``: computed
+        already, else here)."""
         self.trace = trace
         self.model.set_trace(trace)
         self._fill_filters()
         self._fill_incidents()
-        self._fill_series()
+        self._fill_series(pdo_series(trace) if series is None else series)
         self.summary.setText(self._summary_text(trace))
         self.table.resizeColumnsToContents()
         self.decoded.emit(trace)
@@ -220,14 +223,13 @@ class TraceWindow(QWidget):
             self.table.selectRow(found)
             self.table.scrollTo(self.model.index(found, 0))
 
-    def _fill_series(self) -> None:
+    def _fill_series(self, series: Series) -> None:
         for curve in self._curves.values():
             self.plot.removeItem(curve)
         self._curves.clear()
         self.series.blockSignals(True)
         self.series.clear()
-        if self.trace is not None:
-            series = pdo_series(self.trace)
+        if series:
             shown = [key for key in series if key[1] in SHOWN] or list(series)[:4]
             order = shown + [key for key in series if key not in shown]  # distinct colours first
             for (node, name), (times, values) in series.items():
