@@ -231,7 +231,7 @@ class Decoder:
             text = f"{verb} {address} incomplete ({item.how}): {item.incomplete}"
         else:
             text = f"{verb} ({item.how}) {address}{what}"
-            self._object_seen(node, item, reading)
+            self._object_seen(node, item)
         values = ((reading.name, reading.value),) if reading and item.abort is None else ()
         self._emit(Event(item.time, node.number, Kind.SDO, text, item.frames, values))
 
@@ -275,7 +275,7 @@ class Decoder:
         self._pdos.forget(node.number)
         self._pdos.add_defaults(node.number, node.od, node.control_mode)
 
-    def _object_seen(self, node: _Node, item: Transfer, reading: object) -> None:
+    def _object_seen(self, node: _Node, item: Transfer) -> None:
         """A value written or read: PDO objects, the control mode, the node's identity."""
         if not item.data or len(item.data) > 4:
             return

@@ -4,6 +4,7 @@ package reads it), else raw. No Qt."""
 
 from __future__ import annotations
 
+import struct
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Any, Protocol
@@ -64,9 +65,7 @@ class Prm9Dictionary:
         size = param.dtype.size
         try:
             raw = param.dtype.decode(data if param.is_string else data[:size])
-        except (ValueError, TypeError, UnicodeDecodeError):
-            return None
-        except Exception:  # struct.error: fewer bytes than the type
+        except (ValueError, TypeError, struct.error):  # fewer bytes than the type
             return None
         if param.is_string:
             return Reading(param.mnemonic, str(raw), f"{param.text.en} = {raw!r}")

@@ -38,7 +38,6 @@ class Event:
     text: str
     frames: tuple[int, ...]
     values: tuple[tuple[str, float | int | str], ...] = ()
-    unit: tuple[str, ...] = ()
 
     def to_dict(self) -> dict[str, Any]:
         """The event as JSON-ready data."""
