@@ -45,7 +45,8 @@ class Recorder:
             )
         self.path = Path(path)
         self.options = options
-        self.frames = 0
+        self.frames = 0  # counted under _count_lock: the Notifier and senders call in at once
+        self._count_lock = threading.Lock()
         self.written = 0
         self.most_waiting = 0
         self._queue: queue.SimpleQueue[can.Message | None] = queue.SimpleQueue()
@@ -58,7 +59,8 @@ class Recorder:
     # --- a python-can listener ----------------------------------------------------------
     def on_message_received(self, msg: can.Message) -> None:
         """A frame of the bus (the Notifier's thread, or the sender's): queued for the file."""
-        self.frames += 1
+        with self._count_lock:
+            self.frames += 1
         self._queue.put(msg)
 
     def __call__(self, msg: can.Message) -> None:
