@@ -57,7 +57,9 @@ class TraceWindow(QWidget):
         self.setWindowTitle(self.tr("CAN trace"))
         self._settings = settings
         self.trace: Trace | None = None
-        self._curves: dict[tuple[int, str], pg.PlotDataItem] = {}
+        self._curves: dict[tuple[int, str], pg.PlotDataItem] = {}  # made when first shown
+        self._series: Series = {}
+        self._colours: dict[tuple[int, str], str] = {}
         self._deliver.connect(self._on_delivered)
         self.open_button = QPushButton(self.tr("Open trace…"))
         self.open_button.clicked.connect(self._on_open_clicked)
@@ -227,29 +229,40 @@ class TraceWindow(QWidget):
         for curve in self._curves.values():
             self.plot.removeItem(curve)
         self._curves.clear()
+        self._series = series
         self.series.blockSignals(True)
         self.series.clear()
-        if series:
-            shown = [key for key in series if key[1] in SHOWN] or list(series)[:4]
-            order = shown + [key for key in series if key not in shown]  # distinct colours first
-            for (node, name), (times, values) in series.items():
-                colour = COLOURS[order.index((node, name)) % len(COLOURS)]
-                curve = self.plot.plot(times, values, pen=pg.mkPen(colour, width=1.5))
-                visible = (node, name) in shown
-                curve.setVisible(visible)
-                self._curves[(node, name)] = curve
-                item = QListWidgetItem(self.tr("node {0}: {1}").format(node, name))
-                item.setData(Qt.ItemDataRole.UserRole, (node, name))
-                item.setForeground(QColor(colour))
-                item.setFlags(item.flags() | Qt.ItemFlag.ItemIsUserCheckable)
-                item.setCheckState(Qt.CheckState.Checked if visible else Qt.CheckState.Unchecked)
-                self.series.addItem(item)
+        shown = [key for key in series if key[1] in SHOWN] or list(series)[:4]
+        order = shown + [key for key in series if key not in shown]  # distinct colours first
+        self._colours = {key: COLOURS[k % len(COLOURS)] for k, key in enumerate(order)}
+        for node, name in series:
+            item = QListWidgetItem(self.tr("node {0}: {1}").format(node, name))
+            item.setData(Qt.ItemDataRole.UserRole, (node, name))
+            item.setForeground(QColor(self._colours[(node, name)]))
+            item.setFlags(item.flags() | Qt.ItemFlag.ItemIsUserCheckable)
+            visible = (node, name) in shown
+            item.setCheckState(Qt.CheckState.Checked if visible else Qt.CheckState.Unchecked)
+            self.series.addItem(item)
+            if visible:
+                self._show_curve((node, name), True)
         self.series.blockSignals(False)
 
+    def _show_curve(self, key: tuple[int, str], visible: bool) -> None:
+        """Show or hide one series; its curve is made when first shown (a trace of many
+        nodes has dozens of series, most never looked at)."""
+        curve = self._curves.get(key)
+        if curve is None:
+            if not visible:
+                return
+            times, values = self._series[key]
+            pen = pg.mkPen(self._colours[key], width=1.5)
+            curve = self._curves[key] = self.plot.plot(times, values, pen=pen)
+        curve.setVisible(visible)
+
     def _on_series_toggled(self, item: QListWidgetItem) -> None:
-        curve = self._curves.get(item.data(Qt.ItemDataRole.UserRole))
-        if curve is not None:
-            curve.setVisible(item.checkState() == Qt.CheckState.Checked)
+        key = item.data(Qt.ItemDataRole.UserRole)
+        if key in self._series:
+            self._show_curve(key, item.checkState() == Qt.CheckState.Checked)
 
     def _on_row_changed(self, current: object, _previous: object) -> None:
         if self.trace is None or not getattr(current, "isValid", lambda: False)():
