@@ -282,6 +282,7 @@ def test_the_cli_reports_a_malformed_trace_without_a_traceback(tmp_path, capsys)
         (["--record", "t.txt"], "t.txt: a trace is one of"),
         (["--decode", "t.asc", "--eds", "200=x.eds"], "NODE=FILE with a node ID"),
         (["--speed", "2"], "--speed belongs to --replay"),
+        (["--record", "t.asc", "--check", "x.prm"], "--record records a CAN bus beside"),
         (["--replay", "t.asc", "--only-node", "0"], "--only-node 0: CANopen node IDs are 1…127"),
         (["--replay", "t.asc", "--batch", "x.prm"], "--replay drives a bus from a trace"),
         (

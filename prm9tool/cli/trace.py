@@ -33,6 +33,14 @@ _OTHERS = {
 }  # fmt: skip
 
 
+# commands that use no bus: nothing to record beside them
+_OFFLINE = {
+    "--new": "new", "--check": "check", "--export-eds": "export_eds", "--diff": "diff",
+    "--history": "history", "--history-check": "history_check",
+    "--history-export": "history_export", "--history-import": "history_import",
+}  # fmt: skip
+
+
 def add_trace_options(parser: argparse.ArgumentParser) -> None:
     """The trace options (docs/trace.md)."""
     group = parser.add_argument_group("CAN traces: record, decode, replay (docs/trace.md)")
@@ -103,6 +111,13 @@ def trace_problem(args: argparse.Namespace) -> str | None:
         if args.duration <= 0:
             return f"--duration {args.duration}: give a time in seconds above 0"
     if args.record:
+        offline = [
+            f for f, d in _OFFLINE.items() if getattr(args, d, None) not in (None, False, [])
+        ]
+        if offline:
+            return (
+                f"--record records a CAN bus beside a command that uses one; {offline[0]} does not"
+            )
         return _format_problem(args.record)
     return None
 
