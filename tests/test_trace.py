@@ -476,3 +476,26 @@ def test_any_frames_decode_without_an_exception_and_every_frame_is_accounted_for
     result = decoder.result()
     assert {n for e in result.events for n in e.frames} == set(range(len(frames)))
     assert all(e.text for e in result.events)
+
+
+def test_the_cli_records_beside_list_devices_on_its_bus(tmp_path, request, capsys):
+    """``--record`` beside ``--list-devices``: one bus; the trace holds the scan's SDO requests
+    (sent by prm9tool) and the valve's answers."""
+    from can_link_rig import make_link_rig
+
+    from prm9tool.cli.main import main
+
+    rig = make_link_rig(request.node.name, tmp_path)
+    path = tmp_path / "scan.log"
+    bus = ["--can-interface", "virtual", "--can-channel", rig.options.channel]
+    try:
+        code = main(["--record", str(path), "--list-devices", *bus])
+    finally:
+        rig.close()
+    assert code == 0 and "can:10" in capsys.readouterr().out
+    decoded = trace.read(path)
+    requests = {e.node for e in decoded.events if e.kind is Kind.SDO}
+    assert 10 in requests and len(requests) > 100  # the scan asked every node ID
+    assert any(
+        e.text.startswith("SDO read (expedited) 0x1000/0") and e.node == 10 for e in decoded.events
+    )
