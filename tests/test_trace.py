@@ -496,6 +496,7 @@ def test_the_cli_records_beside_list_devices_on_its_bus(tmp_path, request, capsy
     decoded = trace.read(path)
     requests = {e.node for e in decoded.events if e.kind is Kind.SDO}
     assert 10 in requests and len(requests) > 100  # the scan asked every node ID
+    assert decoded.nodes == {10: "PRM9"}  # the nodes heard: the one that answered
     assert any(
         e.text.startswith("SDO read (expedited) 0x1000/0") and e.node == 10 for e in decoded.events
     )

@@ -47,6 +47,7 @@ class _Node:
     control_mode: int = 2
     status_word: int | None = None
     control_word: int | None = None
+    heard: bool = False  # it sent a frame (an SDO response, heartbeat, EMCY, TPDO)
 
 
 class Decoder:
@@ -111,7 +112,7 @@ class Decoder:
             for item in node.sdo.finish("the trace ended before its end"):
                 self._sdo_item(node, item, 0.0)
         self.events.sort(key=lambda e: e.frames[0] if e.frames else -1)
-        nodes = {n: node.od.kind for n, node in self._nodes.items()}
+        nodes = {n: node.od.kind for n, node in self._nodes.items() if node.heard}
         incidents, sync = self.incidents.finish(self.events, self._sync, self._sync_frames)
         return Trace(self.path, self._count, self.events, incidents, sync, nodes, self._start)
 
@@ -140,6 +141,7 @@ class Decoder:
             self._emit(Event(time, None, Kind.SYNC, f"SYNC{counter}", (number,)))
             return
         node = self._node(cob & 0x7F)
+        node.heard = True
         if len(data) < 3:
             self._not_understood(number, time, cob, data, "EMCY shorter than 3 bytes")
             return
@@ -166,6 +168,7 @@ class Decoder:
             self._not_understood(number, time, cob, data, "no PDO mapping known for this COB-ID")
             return
         node = self._nodes[pdo.node]
+        node.heard = node.heard or not pdo.receive
         if len(data) < pdo.length():
             text = f"{pdo.name} with {len(data)} bytes, shorter than its mapping ({pdo.length()} bytes)"
             self._emit(Event(time, pdo.node, Kind.PDO, text, (number,)))
@@ -201,6 +204,7 @@ class Decoder:
     def _sdo(self, number: int, time: float, cob: int, data: bytes) -> None:
         node = self._node(cob & 0x7F)
         request = cob >> 7 == 0x0C
+        node.heard = node.heard or not request
         for item in node.sdo.feed(number, time, data, request):
             self._sdo_item(node, item, time)
 
@@ -248,6 +252,7 @@ class Decoder:
             self._not_understood(number, time, cob, data, "heartbeat not 1 byte long")
             return
         node = self._node(cob & 0x7F)
+        node.heard = True
         text = words.heartbeat_text(data[0])
         self._emit(Event(time, node.number, Kind.HEARTBEAT, text, (number,)))
         if data[0] & 0x7F == 0:

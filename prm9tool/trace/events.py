@@ -101,7 +101,7 @@ class Trace:
     events: list[Event]
     incidents: list[Incident]
     sync: SyncFigures
-    nodes: dict[int, str] = field(default_factory=dict)  # node -> how it is decoded
+    nodes: dict[int, str] = field(default_factory=dict)  # node heard -> how it is decoded
     start: float = 0.0  # the first frame's time stamp (the trace's own clock)
 
     @property

@@ -194,7 +194,8 @@ class TraceWindow(QWidget):
             combo.clear()
         self.node.addItem(self.tr("every node"), ALL)
         self.node.addItem(self.tr("the whole bus"), NO_NODE)
-        for node in sorted(self.trace.nodes) if self.trace else ():
+        nodes = {e.node for e in self.trace.events if e.node is not None} if self.trace else set()
+        for node in sorted(nodes):
             self.node.addItem(self.tr("node {0}").format(node), node)
         self.kind.addItem(self.tr("every kind"), None)
         for kind in Kind:
