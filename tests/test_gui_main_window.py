@@ -46,6 +46,7 @@ def test_menus_and_toolbar_are_those_of_the_manual(window):
     assert _menu_texts(window, "communication") == [
         "&HID configuration…",
         "&CAN bus…",
+        "CAN &trace…",  # issue 32: record the bus, decode a trace file
         "O&nline mode",
         "O&ffline mode",
     ]

@@ -1831,6 +1831,29 @@ Poslední akce možná nebyla dokončena. Uložte svou práci pod novým názvem
         </message>
     </context>
     <context>
+        <name>EventTableModel</name>
+        <message>
+            <source>Time (s)</source>
+            <translation>Čas (s)</translation>
+        </message>
+        <message>
+            <source>Node</source>
+            <translation>Uzel</translation>
+        </message>
+        <message>
+            <source>Kind</source>
+            <translation>Druh</translation>
+        </message>
+        <message>
+            <source>What</source>
+            <translation>Co</translation>
+        </message>
+        <message>
+            <source>Frames</source>
+            <translation>Rámce</translation>
+        </message>
+    </context>
+    <context>
         <name>FileWorkflow</name>
         <message>
             <source>untitled</source>
@@ -2872,6 +2895,14 @@ Ano načte a záznam zařadí do fronty; Ne nenačte nic.</translation>
             <translation>Najít ventily na sběrnici CAN a přejít s jedním do režimu online (CANopen)</translation>
         </message>
         <message>
+            <source>CAN &amp;trace…</source>
+            <translation>CAN &amp;záznam…</translation>
+        </message>
+        <message>
+            <source>Record the CAN bus, or read a trace file in words</source>
+            <translation>Zaznamenat sběrnici CAN nebo přečíst soubor záznamu slovy</translation>
+        </message>
+        <message>
             <source>O&amp;nline mode</source>
             <translation>Režim o&amp;nline</translation>
         </message>
@@ -3687,6 +3718,45 @@ Ano načte a záznam zařadí do fronty; Ne nenačte nic.</translation>
         </message>
     </context>
     <context>
+        <name>RecordControls</name>
+        <message>
+            <source>Record…</source>
+            <translation>Zaznamenat…</translation>
+        </message>
+        <message>
+            <source>Record every frame of the CAN bus into a trace file</source>
+            <translation>Zaznamenat každý rámec sběrnice CAN do souboru záznamu</translation>
+        </message>
+        <message>
+            <source>Stop recording</source>
+            <translation>Ukončit záznam</translation>
+        </message>
+        <message>
+            <source>Opening the CAN bus…</source>
+            <translation>Otevírá se sběrnice CAN…</translation>
+        </message>
+        <message>
+            <source>Record the CAN bus</source>
+            <translation>Zaznamenat sběrnici CAN</translation>
+        </message>
+        <message>
+            <source>CAN traces ({0})</source>
+            <translation>Záznamy CAN ({0})</translation>
+        </message>
+        <message>
+            <source>Recording into {0}: {1} frames</source>
+            <translation>Záznam do {0}: {1} rámců</translation>
+        </message>
+        <message>
+            <source>{0} frames recorded into {1}</source>
+            <translation>{0} rámců zaznamenáno do {1}</translation>
+        </message>
+        <message>
+            <source>Not recording: {0}</source>
+            <translation>Nezaznamenává se: {0}</translation>
+        </message>
+    </context>
+    <context>
         <name>RecordDetailsDialog</name>
         <message>
             <source>History record {0} of valve {1}</source>
@@ -4287,6 +4357,77 @@ Na straně PC se nic neztratilo: dokument dál obsahuje každou hodnotu, záloha
         <message>
             <source>output</source>
             <translation>výstup</translation>
+        </message>
+    </context>
+    <context>
+        <name>TraceWindow</name>
+        <message>
+            <source>CAN trace</source>
+            <translation>Záznam CAN</translation>
+        </message>
+        <message>
+            <source>Open trace…</source>
+            <translation>Otevřít záznam…</translation>
+        </message>
+        <message>
+            <source>Open a trace file (ASC, BLF, TRC or candump log).</source>
+            <translation>Otevřete soubor záznamu (ASC, BLF, TRC nebo candump log).</translation>
+        </message>
+        <message>
+            <source>Time (s)</source>
+            <translation>Čas (s)</translation>
+        </message>
+        <message>
+            <source>Node</source>
+            <translation>Uzel</translation>
+        </message>
+        <message>
+            <source>Kind</source>
+            <translation>Druh</translation>
+        </message>
+        <message>
+            <source>Decoding {0}…</source>
+            <translation>Dekóduje se {0}…</translation>
+        </message>
+        <message>
+            <source>Open a CAN trace</source>
+            <translation>Otevřít záznam CAN</translation>
+        </message>
+        <message>
+            <source>CAN traces ({0})</source>
+            <translation>Záznamy CAN ({0})</translation>
+        </message>
+        <message>
+            <source>The trace cannot be read: {0}</source>
+            <translation>Záznam nelze přečíst: {0}</translation>
+        </message>
+        <message>
+            <source>{0}: {1} frames, {2} events, {3} not understood, {4} incidents</source>
+            <translation>{0}: {1} rámců, {2} událostí, {3} nesrozumitelných, {4} incidentů</translation>
+        </message>
+        <message>
+            <source>; SYNC period {0:.3f} ms, jitter {1:.1f} µs</source>
+            <translation>; perioda SYNC {0:.3f} ms, jitter {1:.1f} µs</translation>
+        </message>
+        <message>
+            <source>every node</source>
+            <translation>každý uzel</translation>
+        </message>
+        <message>
+            <source>the whole bus</source>
+            <translation>celá sběrnice</translation>
+        </message>
+        <message>
+            <source>node {0}</source>
+            <translation>uzel {0}</translation>
+        </message>
+        <message>
+            <source>every kind</source>
+            <translation>každý druh</translation>
+        </message>
+        <message>
+            <source>node {0}: {1}</source>
+            <translation>uzel {0}: {1}</translation>
         </message>
     </context>
     <context>

@@ -1821,6 +1821,29 @@ Die letzte Aktion wurde womöglich nicht vollständig ausgeführt. Speichern Sie
         </message>
     </context>
     <context>
+        <name>EventTableModel</name>
+        <message>
+            <source>Time (s)</source>
+            <translation>Zeit (s)</translation>
+        </message>
+        <message>
+            <source>Node</source>
+            <translation>Knoten</translation>
+        </message>
+        <message>
+            <source>Kind</source>
+            <translation>Art</translation>
+        </message>
+        <message>
+            <source>What</source>
+            <translation>Was</translation>
+        </message>
+        <message>
+            <source>Frames</source>
+            <translation>Frames</translation>
+        </message>
+    </context>
+    <context>
         <name>FileWorkflow</name>
         <message>
             <source>untitled</source>
@@ -2855,6 +2878,14 @@ Ja lädt hoch und stellt den Eintrag in die Warteschlange; Nein lädt nichts hoc
             <translation>Ventile an einem CAN-Bus suchen und mit einem online gehen (CANopen)</translation>
         </message>
         <message>
+            <source>CAN &amp;trace…</source>
+            <translation>CAN-&amp;Trace…</translation>
+        </message>
+        <message>
+            <source>Record the CAN bus, or read a trace file in words</source>
+            <translation>Den CAN-Bus aufzeichnen oder eine Trace-Datei im Klartext lesen</translation>
+        </message>
+        <message>
             <source>O&amp;nline mode</source>
             <translation>O&amp;nline-Modus</translation>
         </message>
@@ -3668,6 +3699,45 @@ Ja lädt hoch und stellt den Eintrag in die Warteschlange; Nein lädt nichts hoc
         </message>
     </context>
     <context>
+        <name>RecordControls</name>
+        <message>
+            <source>Record…</source>
+            <translation>Aufzeichnen…</translation>
+        </message>
+        <message>
+            <source>Record every frame of the CAN bus into a trace file</source>
+            <translation>Jeden Frame des CAN-Busses in eine Trace-Datei aufzeichnen</translation>
+        </message>
+        <message>
+            <source>Stop recording</source>
+            <translation>Aufzeichnung beenden</translation>
+        </message>
+        <message>
+            <source>Opening the CAN bus…</source>
+            <translation>CAN-Bus wird geöffnet…</translation>
+        </message>
+        <message>
+            <source>Record the CAN bus</source>
+            <translation>CAN-Bus aufzeichnen</translation>
+        </message>
+        <message>
+            <source>CAN traces ({0})</source>
+            <translation>CAN-Traces ({0})</translation>
+        </message>
+        <message>
+            <source>Recording into {0}: {1} frames</source>
+            <translation>Aufzeichnung in {0}: {1} Frames</translation>
+        </message>
+        <message>
+            <source>{0} frames recorded into {1}</source>
+            <translation>{0} Frames in {1} aufgezeichnet</translation>
+        </message>
+        <message>
+            <source>Not recording: {0}</source>
+            <translation>Keine Aufzeichnung: {0}</translation>
+        </message>
+    </context>
+    <context>
         <name>RecordDetailsDialog</name>
         <message>
             <source>History record {0} of valve {1}</source>
@@ -4265,6 +4335,77 @@ Auf dem PC ging nichts verloren: Das Dokument enthält weiterhin jeden Wert, Sic
         <message>
             <source>output</source>
             <translation>Ausgang</translation>
+        </message>
+    </context>
+    <context>
+        <name>TraceWindow</name>
+        <message>
+            <source>CAN trace</source>
+            <translation>CAN-Trace</translation>
+        </message>
+        <message>
+            <source>Open trace…</source>
+            <translation>Trace öffnen…</translation>
+        </message>
+        <message>
+            <source>Open a trace file (ASC, BLF, TRC or candump log).</source>
+            <translation>Öffnen Sie eine Trace-Datei (ASC, BLF, TRC oder candump-Log).</translation>
+        </message>
+        <message>
+            <source>Time (s)</source>
+            <translation>Zeit (s)</translation>
+        </message>
+        <message>
+            <source>Node</source>
+            <translation>Knoten</translation>
+        </message>
+        <message>
+            <source>Kind</source>
+            <translation>Art</translation>
+        </message>
+        <message>
+            <source>Decoding {0}…</source>
+            <translation>{0} wird dekodiert…</translation>
+        </message>
+        <message>
+            <source>Open a CAN trace</source>
+            <translation>CAN-Trace öffnen</translation>
+        </message>
+        <message>
+            <source>CAN traces ({0})</source>
+            <translation>CAN-Traces ({0})</translation>
+        </message>
+        <message>
+            <source>The trace cannot be read: {0}</source>
+            <translation>Der Trace kann nicht gelesen werden: {0}</translation>
+        </message>
+        <message>
+            <source>{0}: {1} frames, {2} events, {3} not understood, {4} incidents</source>
+            <translation>{0}: {1} Frames, {2} Ereignisse, {3} nicht verstanden, {4} Vorfälle</translation>
+        </message>
+        <message>
+            <source>; SYNC period {0:.3f} ms, jitter {1:.1f} µs</source>
+            <translation>; SYNC-Periode {0:.3f} ms, Jitter {1:.1f} µs</translation>
+        </message>
+        <message>
+            <source>every node</source>
+            <translation>jeder Knoten</translation>
+        </message>
+        <message>
+            <source>the whole bus</source>
+            <translation>der ganze Bus</translation>
+        </message>
+        <message>
+            <source>node {0}</source>
+            <translation>Knoten {0}</translation>
+        </message>
+        <message>
+            <source>every kind</source>
+            <translation>jede Art</translation>
+        </message>
+        <message>
+            <source>node {0}: {1}</source>
+            <translation>Knoten {0}: {1}</translation>
         </message>
     </context>
     <context>

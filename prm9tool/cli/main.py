@@ -46,18 +46,25 @@ def main(argv: Sequence[str] | None = None) -> int:
     try:
         spools_problem = _load_user_spools()
         command = _headless_command(args)
-        if command is not None:
-            module, function = command
-            return int(getattr(importlib.import_module(module), function)(args))
-        from prm9tool.app import run as run_app
+        from prm9tool.cli.trace import recording
 
-        return run_app(args, spools_problem)
+        with recording(args):  # --record beside the command, on its bus
+            if command is not None:
+                module, function = command
+                return int(getattr(importlib.import_module(module), function)(args))
+            from prm9tool.app import run as run_app
+
+            return run_app(args, spools_problem)
     finally:
         undo()
 
 
 def _headless_command(args: argparse.Namespace) -> tuple[str, str] | None:
     """The module and function that run the command ``args`` name (None: the GUI)."""
+    from prm9tool.cli.trace import trace_command
+
+    if (command := trace_command(args)) is not None:
+        return command
     if args.new is not None or args.check is not None:
         return "prm9tool.cli.filetools", "run"
     if args.export_eds is not None:

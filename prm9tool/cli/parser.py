@@ -196,6 +196,9 @@ def build_parser() -> argparse.ArgumentParser:
     )
     add_device_options(parser)
     add_history_options(parser)
+    from prm9tool.cli.trace import add_trace_options
+
+    add_trace_options(parser)
     return parser
 
 
@@ -208,8 +211,8 @@ def add_history_options(parser: argparse.ArgumentParser) -> None:
     )  # fmt: skip
     group.add_argument(
         "--json", nargs="?", const=True, metavar="OUT.json",
-        help="with --diff, --history, --get/--set, --list-devices: print JSON; with "
-        "--characterize: the JSON report file",
+        help="with --diff, --history, --get/--set, --list-devices, --decode, --replay: print "
+        "JSON; with --characterize, --decode, --replay: the JSON report file",
     )  # fmt: skip
     group.add_argument("--history", metavar="SERIAL", help="list the history of a valve")
     group.add_argument(

@@ -33,6 +33,11 @@ def usage_problem(args: argparse.Namespace) -> str | None:
     ``--serve-emulator``, or the one the GUI's emulated -CA valve joins; a file tool takes
     none (an option that would be ignored is an error, not a surprise).
     """
+    from prm9tool.cli.trace import trace_command, trace_problem
+
+    problem = trace_problem(args)
+    if problem is not None or trace_command(args):
+        return problem
     if args.type_key is not None:
         problem = _type_key_problem(args)
         if problem is not None:

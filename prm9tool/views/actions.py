@@ -43,6 +43,7 @@ _ACTIONS: tuple[tuple[str, str, object], ...] = (
     ("verify_restart", "", None),
     ("hid_configuration", "hid", "Ctrl+H"),
     ("can_bus", "canopen", None),
+    ("can_trace", "", None),
     ("online", "online", "F5"),
     ("offline", "offline", "Shift+F5"),
     ("help", "help", SK.HelpContents),
@@ -211,6 +212,10 @@ def _texts() -> dict[str, _Texts]:
                 "MainActions", "Find the valves on a CAN bus and go online with one (CANopen)"
             ),
         ),
+        "can_trace": _Texts(
+            translate("MainActions", "CAN &trace…"),
+            translate("MainActions", "Record the CAN bus, or read a trace file in words"),
+        ),
         "online": _Texts(
             translate("MainActions", "O&nline mode"),
             translate("MainActions", "Connect to the valve"),
@@ -294,7 +299,7 @@ class MainActions(QObject):
             "valve": ("valve_selection", "valve_status", None, "upload", "download", "store",
                       "compare_valve", "history", None, "restore_factory", "restart",
                       "verify_restart"),
-            "communication": ("hid_configuration", "can_bus", None, "online", "offline"),
+            "communication": ("hid_configuration", "can_bus", "can_trace", None, "online", "offline"),
             "help": ("help", "homepage", None, "about"),
         }  # fmt: skip
         for menu_name, items in layout.items():

@@ -38,6 +38,7 @@ from prm9tool.files.can_type_keys import remember
 from prm9tool.online.bus_monitor import BusMonitor, HeardNode
 from prm9tool.online.connection_protocol import ListedValves, ValveIdentity, ValveListing
 from prm9tool.online.lss_commissioning import LssCommissioning
+from prm9tool.online.trace_recording import BusRecording
 from prm9tool.paths import user_data_dir
 from prm9tool.translate import error_text
 from prm9tool.views.can_bus_lss import BusLssActions
@@ -45,6 +46,7 @@ from prm9tool.views.can_lss_panel import LssPanel
 from prm9tool.views.can_node_text import node_description
 from prm9tool.views.help_dialog import add_context_help
 from prm9tool.views.row_table import row_table
+from prm9tool.views.trace.record_controls import RecordControls
 
 INTERFACE_KEY, CHANNEL_KEY, BITRATE_KEY = "can/interface", "can/channel", "can/bitrate"
 INTERFACES = (
@@ -90,9 +92,11 @@ class CanBusDialog(QDialog):
         parent: QWidget | None = None,
         monitor: BusMonitor | None = None,
         lss: LssCommissioning | None = None,
+        recording: BusRecording | None = None,
     ) -> None:
         """``monitor``: keeps the node table live after a search (None: as the scan saw it);
-        ``lss``: shows the devices without a node ID and assigns one (None: not offered)."""
+        ``lss``: shows the devices without a node ID and assigns one (None: not offered);
+        ``recording``: Record… / Stop for this bus (None: not offered)."""
         super().__init__(parent)
         add_context_help(self, "can")  # F1
         self._chosen: str | None = None  # a valve given its node ID here (LSS)
@@ -167,6 +171,10 @@ class CanBusDialog(QDialog):
             self.lss_panel.assigned_id.connect(self.on_lss_assigned)
             self.lss_panel.assigned_many.connect(self._on_search_clicked)
             layout.addWidget(self.lss_panel)
+        self.record_controls: RecordControls | None = None
+        if recording is not None:
+            self.record_controls = RecordControls(recording, self.bus, self)
+            layout.addWidget(self.record_controls)
         layout.addWidget(self.buttons)
         self.resize(1060, 620 if lss is not None else 420)
         self.update_ok()

@@ -93,6 +93,7 @@ class MainWindow(QMainWindow):
         self.status_window: ValveStatusWindow | None = None
         self.help_window: HelpWindow | None = None
         self.canopen_window: QWidget | None = None
+        self.trace_window: QWidget | None = None
         self.setWindowIcon(icon("app"))
         self.setAcceptDrops(True)
         self._connect_actions()
@@ -196,6 +197,7 @@ class MainWindow(QMainWindow):
             "verify_restart": self.valve.verify_by_restart,
             "hid_configuration": self.valve.configure_hid,
             "can_bus": self.valve.configure_can_bus,
+            "can_trace": self.show_trace_window,
             "online": lambda: self.valve.go_online(),
             "offline": self.valve.go_offline,
             "help": self.show_help,
@@ -320,6 +322,21 @@ class MainWindow(QMainWindow):
         self.canopen_window.show()
         self.canopen_window.raise_()
         return self.canopen_window
+
+    def show_trace_window(self) -> QWidget:
+        """Communication → CAN trace: decode a trace file, record the bus of the CAN bus
+        dialog (docs/trace.md)."""
+        if self.trace_window is None:
+            from prm9tool.views.can_bus_dialog import saved_bus
+            from prm9tool.views.trace.window import TraceWindow
+
+            finder = self.valve.finder
+            self.trace_window = TraceWindow(
+                finder.recording, lambda: saved_bus(self.settings), self.settings, self
+            )
+        self.trace_window.show()
+        self.trace_window.raise_()
+        return self.trace_window
 
     def show_help(self) -> HelpWindow:
         """Show the help page of this program."""

@@ -134,6 +134,45 @@ class CanNetwork:
     error_frames: int = 0
     sync_owner: object | None = None  # the scope producing SYNC on this bus (one at a time)
     bus_off_at: float | None = None  # time.monotonic() the adapter reported bus-off
+    taps: list[Any] = field(default_factory=list)  # listeners of every frame, sent ones too
+
+    def add_listener(self, listener: Any) -> None:
+        """One more python-can listener (a trace recorder): every frame the bus receives, from
+        the one Notifier of the bus, and every frame this program sends on it (python-can
+        does not receive its own frames), with its send time and ``is_rx`` False."""
+        with self.lock:
+            self.taps.append(listener)
+            self.network.notifier.add_listener(listener)  # type: ignore[union-attr]
+
+    def remove_listener(self, listener: Any) -> None:
+        """Stop feeding ``listener``."""
+        with self.lock:
+            if listener in self.taps:
+                self.taps.remove(listener)
+            notifier = self.network.notifier
+            if notifier is not None and listener in notifier.listeners:
+                notifier.remove_listener(listener)
+
+    def sent(self, msg: can.Message) -> None:
+        """A frame this program sent: to the listeners of :meth:`add_listener`."""
+        taps = self.taps
+        if not taps:
+            return
+        import can
+
+        copy = can.Message(
+            timestamp=time.time(),
+            arbitration_id=msg.arbitration_id,
+            is_extended_id=msg.is_extended_id,
+            is_remote_frame=msg.is_remote_frame,
+            dlc=msg.dlc,
+            data=msg.data,
+            is_fd=msg.is_fd,
+            is_rx=False,
+            channel=msg.channel,
+        )
+        for listener in list(taps):
+            listener.on_message_received(copy)
 
     def on_frame(self, msg: can.Message) -> None:
         """Every frame on the bus (a python-can listener): heartbeats, boot-ups, EMCY, and
@@ -216,12 +255,25 @@ def _connect(options: CanOptions) -> CanNetwork:
     network.NOTIFIER_CYCLE = 0.1
     shared = CanNetwork(options, network)
     network.listeners.append(_FrameListener(shared))  # type: ignore[arg-type]
+    _tap_sends(bus, shared)
     try:
         network.connect()
     except Exception as exc:
         bus.shutdown()
         raise CanAdapterError(adapter_problem(options, exc)) from exc
     return shared
+
+
+def _tap_sends(bus: can.BusABC, shared: CanNetwork) -> None:
+    """Show every frame sent on ``bus`` to :meth:`CanNetwork.sent` (canopen sends everything,
+    SDO, NMT, SYNC and PDOs, through ``bus.send``)."""
+    send = bus.send
+
+    def tapped(msg: can.Message, timeout: float | None = None) -> None:
+        send(msg, timeout)
+        shared.sent(msg)
+
+    bus.send = tapped  # type: ignore[method-assign]
 
 
 class _FrameListener:

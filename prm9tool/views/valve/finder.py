@@ -39,6 +39,9 @@ class ValveFinder(QObject):
         self._settings = settings
         self._post = post
         connection.type_key_needed.connect(self.on_type_key_needed)
+        from prm9tool.online.trace_recording import BusRecording
+
+        self.recording = BusRecording(self)  # Record… / Stop: CAN bus dialog, trace window
 
     def configure_hid(self) -> ValveListing | None:
         """Show the HID configuration; returns the chosen device entry (or None)."""
@@ -62,7 +65,7 @@ class ValveFinder(QObject):
         bus = getattr(device, "can_bus", None)  # online over CAN: the session's bus
         monitor = BusMonitor()
         lss = LssCommissioning() if bus is None else None  # LSS would move the session's valve
-        dialog = CanBusDialog(scan, self._settings, self._window, monitor, lss)
+        dialog = CanBusDialog(scan, self._settings, self._window, monitor, lss, self.recording)
         if device is not None and bus is not None:
             interface, channel, bitrate = bus
             watched = {"interface": interface, "channel": channel, "bitrate": bitrate}
