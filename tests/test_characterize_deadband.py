@@ -119,9 +119,10 @@ def test_end_of_line_on_e04_reports_the_flow_characteristic(tmp_path):
     from prm9tool.characterize.run import characterize, report_data, write_csv_files
 
     profile = parse_profile(
-        {"test": {"step_amplitudes_pct": [20], "step_duration_s": 1, "bode_duration_s": 4,
-                  "bode_f_min_hz": 0.5, "bode_f_max_hz": 5, "static_period_s": 20},
-         "limits": {"flow_dead_band_pct": {"max": 5}}}
+        {"process": {"test": {"step_amplitudes_pct": [20], "step_duration_s": 1,
+                              "bode_duration_s": 4, "bode_f_min_hz": 0.5, "bode_f_max_hz": 5,
+                              "static_period_s": 20}},
+         "limits": {"flow_dead_band_pct": {"max": 5}}}  # flow figures: the process loop's
     )  # fmt: skip
     result = characterize(rig_of(E04, overlap=0.1), profile)
     figures = {f.name: f for f in result.figures}

@@ -35,7 +35,7 @@ from prm9tool.characterize.rig import (
 from prm9tool.characterize.transparent import TRANSPARENT
 from prm9tool.errors import Prm9Error
 from prm9tool.messages import QT_TRANSLATE_NOOP, Message, Number
-from prm9tool.scope.measure import StepFigures, step_figures
+from prm9tool.scope.measure import StepFigures, step_figures, step_figures_to_setpoint
 
 SAMPLES_PER_PERIOD = 10  # a sweep goes no higher than the sample rate / this (decision)
 SWEEP_MIN_SAMPLES = 256  # what the frequency response needs
@@ -238,6 +238,17 @@ class StepResult:
     record: Record
     figures: StepFigures | None
     loop: str = "position"
+
+    @property
+    def to_setpoint(self) -> StepFigures | None:
+        """The figures measured against the setpoint (the end-of-line test's and the
+        acceptance check's): a step that never came to it is not reached
+        (:func:`~prm9tool.scope.measure.step_figures_to_setpoint`)."""
+        lp = LOOPS[self.loop]
+        channels = self.record.channels
+        if lp.actual not in channels or lp.setpoint not in channels:
+            return None
+        return step_figures_to_setpoint(self.record.t, channels[lp.actual], channels[lp.setpoint])
 
     def caption(self) -> Message:
         """The step and the window its figures were measured on, e.g. "Step 0 → 50 %, window

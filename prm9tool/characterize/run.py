@@ -83,6 +83,12 @@ class Characterization:
     figures: list[Figure] = field(default_factory=list)
     wall_s: float = 0.0
     skipped: list[str] = field(default_factory=list)  # tests this valve cannot run, and why
+    loop: str = "position"  # the loop tested: "process" on an E04 in control mode 4
+
+    @property
+    def limits(self) -> dict[str, Limit]:
+        """The limits of the tested loop's part of the profile."""
+        return self.profile.for_loop(self.loop).limits
 
     @property
     def passed(self) -> bool:
@@ -111,7 +117,9 @@ RESULT_HOOKS: list[Callable[[Characterization], None]] = []
 def planned_s(profile: Profile, flow: bool = False) -> float:
     """Valve seconds the profile's tests play (what a progress bar counts towards): each
     step settles, records STEP_PRE_S and its window; the sweep settles 50 ms, the triangle
-    0.2 s; the flow characteristic (E04 in control mode 4) settles and steps twice."""
+    0.2 s; the flow characteristic (E04 in control mode 4: the process loop's part of the
+    profile) settles and steps twice."""
+    profile = profile.for_loop("process" if flow else "position")
     d = profile.step_duration_s
     steps = len(profile.step_amplitudes_pct) * (max(0.1, d) + STEP_PRE_S + d)
     seconds = steps + 0.05 + profile.bode_duration_s + 0.2 + profile.static_period_s
@@ -130,6 +138,8 @@ def characterize(rig: Rig, profile: Profile, progress: Progress | None = None) -
     e04 = variant.config is Config.E04
     process = e04 and rig.read(["CTRLMODE"])["CTRLMODE"] == 4
     loop = "process" if process else "position"  # E04 in mode 4: the setpoint is the process's
+    result.loop = loop
+    profile = profile.for_loop(loop)  # the windows and limits of that loop
     for amplitude in profile.step_amplitudes_pct:
         say(f"step response {amplitude:g} %")
         result.steps.append(
@@ -163,8 +173,8 @@ def characterize(rig: Rig, profile: Profile, progress: Progress | None = None) -
 
 
 def figures(c: Characterization) -> list[Figure]:
-    """Every figure of ``c`` with its limit from the profile."""
-    limits = c.profile.limits
+    """Every figure of ``c`` with its limit from the profile (its part for ``c.loop``)."""
+    limits = c.limits
     out: list[Figure] = []
 
     def add(
@@ -185,12 +195,14 @@ def figures(c: Characterization) -> list[Figure]:
             out.append(Figure(name, label, value, FIGURES[base], limits.get(base), note))
 
     for step in c.steps:
-        f = step.figures
+        f = step.to_setpoint  # against the setpoint: a step that never came there fails
         a = f"{step.amplitude_pct:g}"
         nan = math.nan
+        missed = f.not_reached("%") if f else None
         add(f"step_{a}_overshoot_pct", f"step {a} %: overshoot", f.overshoot if f else nan,
-            "step_overshoot_pct")  # fmt: skip
-        add(f"step_{a}_rise_s", f"step {a} %: rise time", f.rise_time if f else nan, "step_rise_s")
+            "step_overshoot_pct", missed)  # fmt: skip
+        add(f"step_{a}_rise_s", f"step {a} %: rise time", f.rise_time if f else nan,
+            "step_rise_s", missed if f and math.isnan(f.rise_time) else None)  # fmt: skip
         add(f"step_{a}_settling_s", f"step {a} %: settling time", f.settling_time if f else nan,
             "step_settling_s", f.not_settled("%") if f else None)  # fmt: skip
     if c.bode is not None:
@@ -229,6 +241,7 @@ def report_data(c: Characterization, csv_files: list[Path] | None = None) -> dic
         "link": c.info.link,
         "sample_rate_hz": c.info.sample_rate_hz,
         "profile": c.profile.name,
+        "loop": c.loop,
         "passed": c.passed,
         "notes": c.notes,
         "figures": [

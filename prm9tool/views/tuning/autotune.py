@@ -39,6 +39,8 @@ from prm9tool.views.tuning.report import (
     verdict,
 )
 
+# per loop: the default step amplitude (%) and settling target (ms) of the autotune
+LOOP_DEFAULTS = {"position": (50.0, 40.0), "process": (20.0, 500.0)}
 GREY = "#808080"
 RED, GREEN = "#c00000", "#207020"
 
@@ -72,6 +74,17 @@ class AutotunePage(Page):
         layout.addLayout(row, 1)  # type: ignore[union-attr]
         self.proposal: dict[str, int] = {}
         self.last: Proposal | None = None
+        self._loop = "position"  # the loop whose default targets the fields show
+
+    def set_loop(self, loop: str) -> None:
+        """The step amplitude and settling target follow the loop chosen (the process loop's
+        integrating actuator settles in about 0.5 s, not the spool's 40 ms), unless the user
+        changed them from the previous loop's defaults."""
+        before, after = LOOP_DEFAULTS[self._loop], LOOP_DEFAULTS[loop]
+        self._loop = loop
+        for box, old, new in zip((self.amplitude, self.settling), before, after, strict=True):
+            if box.value() == old:
+                box.setValue(new)
 
     def run(self) -> None:
         """Tune with the chosen method and check the proposal against the profile."""
@@ -83,7 +96,7 @@ class AutotunePage(Page):
         loop = self.window_.current_loop()
         amplitude, limit = self.amplitude.value(), self.limit.value()
         targets = Targets(self.overshoot.value(), self.settling.value() / 1000.0)
-        steps = ", ".join(f"±{a:g}" for a in profile.step_amplitudes_pct)
+        steps = ", ".join(f"±{a:g}" for a in profile.for_loop(loop).step_amplitudes_pct)
         method = "model" if self.method.currentIndex() == 0 else "critical"
         if method == "model":
             what = self.tr("steps of %1 % from 0 %, a few times").replace(
@@ -92,11 +105,11 @@ class AutotunePage(Page):
         else:
             what = self.tr("P only with rising gain until the loop oscillates (steps of 5 %, "
                            "oscillation stopped at ±%1 %)").replace("%1", format_significant(limit, 6))  # fmt: skip
-        seconds = planned_s(profile, loop, targets.settling_s, method)
+        seconds = planned_s(profile.for_loop(loop), loop, targets.settling_s, method)
         what += self.tr(
             "; then the acceptance profile's steps of %1 % and its static test (a triangle of "
             "%2 s) with the present and the proposed gains; about %3 s in all"
-        ).replace("%1", steps).replace("%2", format_significant(profile.static_period_s, 6)).replace(
+        ).replace("%1", steps).replace("%2", format_significant(profile.for_loop(loop).static_period_s, 6)).replace(
             "%3", f"{seconds:.0f}"
         )  # fmt: skip
         self.window_.start(

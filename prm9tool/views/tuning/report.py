@@ -67,6 +67,13 @@ def figure_label(figure: Figure) -> str:
     return base.get(parts[1], figure.name)
 
 
+def loop_name(loop: str) -> str:
+    """The loop a test ran on, in the program language."""
+    if loop == "process":
+        return translate("TuningReport", "process controller (E04): process actual value")
+    return translate("TuningReport", "position controller: spool position")
+
+
 def verdict(passed: bool | None) -> str:
     """PASS / FAIL / — in the program language."""
     if passed is None:
@@ -115,7 +122,9 @@ def step_plot(c: Characterization, index: int) -> Plot:
     rec = step.record
     keys = list(rec.channels)
     return Plot(
-        translate("TuningReport", "Step response %1 %").replace("%1", f"{step.amplitude_pct:g}"),
+        translate("TuningReport", "Step response %1 %").replace(
+            "%1", _local(f"{step.amplitude_pct:g}")
+        ),
         translate("TuningReport", "time [ms]"),
         "%",
         [
@@ -140,13 +149,13 @@ def bode_plots(c: Characterization) -> tuple[Plot, Plot]:
     hz = translate("TuningReport", "frequency [Hz]")
     magnitude = Plot(
         translate("TuningReport", "Frequency response ±%1 %: magnitude").replace(
-            "%1", f"{c.bode.amplitude_pct:g}"
+            "%1", _local(f"{c.bode.amplitude_pct:g}")
         ),
         hz,
         "dB",
         [Series(r.frequency, r.magnitude_db, translate("TuningReport", "magnitude"), COLOURS[0])],
         logx=True,
-        vlines=[(r.bandwidth_hz(), f"−3 dB: {r.bandwidth_hz():.1f} Hz")],
+        vlines=[(r.bandwidth_hz(), _local(f"−3 dB: {r.bandwidth_hz():.1f} Hz"))],
         hlines=[(-3.0, "")],
     )
     phase = Plot(
@@ -156,7 +165,7 @@ def bode_plots(c: Characterization) -> tuple[Plot, Plot]:
         [Series(r.frequency, r.phase_deg, translate("TuningReport", "phase"), COLOURS[1]),
          Series(r.frequency, r.coherence * 100.0, translate("TuningReport", "coherence ×100"), COLOURS[2], True)],
         logx=True,
-        vlines=[(r.phase_90_hz(), f"−90°: {r.phase_90_hz():.1f} Hz")],
+        vlines=[(r.phase_90_hz(), _local(f"−90°: {r.phase_90_hz():.1f} Hz"))],
     )  # fmt: skip
     return magnitude, phase
 
@@ -230,7 +239,11 @@ def _header(c: Characterization) -> str:
         (translate("TuningReport", "Serial number"), str(c.info.serial)),
         (translate("TuningReport", "Firmware"), c.info.firmware),
         (translate("TuningReport", "Date"), c.date),
-        (translate("TuningReport", "Link"), f"{c.info.link}, {c.info.sample_rate_hz:g} Hz"),
+        (
+            translate("TuningReport", "Link"),
+            f"{c.info.link}, {_local(f'{c.info.sample_rate_hz:g}')} Hz",
+        ),
+        (translate("TuningReport", "Loop tested"), loop_name(c.loop)),
         (translate("TuningReport", "Acceptance profile"), c.profile.name),
         (translate("TuningReport", "Result"), verdict(c.passed)),
     ]

@@ -82,6 +82,7 @@ class TuningWindow(QDialog):
         self.static = StaticPage(self)
         self.flow = FlowPage(self) if doc.variant.config is Config.E04 else None
         self.report = ReportPage(self)
+        self.loop.currentIndexChanged.connect(self._on_loop_changed)
         for page in self.pages():
             self.tabs.addTab(page, "")
         top = QFormLayout()
@@ -221,6 +222,9 @@ class TuningWindow(QDialog):
         record_online_change(self.connection, "tuning-accepted", before, self.doc.values,
                              what=text, loop=self.current_loop())  # fmt: skip
         self.status.setText(self.tr("Accepted: %1").replace("%1", text))
+
+    def _on_loop_changed(self) -> None:
+        self.autotune.set_loop(self.current_loop())
 
     def current_loop(self) -> str:
         """``position`` or ``process``."""
