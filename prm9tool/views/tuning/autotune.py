@@ -247,9 +247,8 @@ class AutotunePage(Page):
 
     def accept(self) -> None:
         """The proposal into the document, one undo step."""
-        if self.proposal:
-            self.window_.accept_values(self.proposal, self.tr("Autotune"))
-            self.accept_button.setEnabled(False)
+        if self.proposal and self.window_.accept_values(self.proposal, self.tr("Autotune")):
+            self.accept_button.setEnabled(False)  # refused (access level): kept to accept later
             self.override.setVisible(False)
 
     def retranslate(self) -> None:

@@ -33,8 +33,9 @@ class TuningHost(Protocol):
     def profile(self) -> Profile:
         """The acceptance profile chosen on the test report page (ProfileError if unusable)."""
 
-    def accept_values(self, values: dict[str, int], text: str) -> None:
-        """Put ``values`` into the document as one undo step."""
+    def accept_values(self, values: dict[str, int], text: str) -> bool:
+        """Put ``values`` into the document as one undo step; False (and why in the status
+        line) when the access level locks one of them: the result stays to accept later."""
 
     def current_loop(self) -> str:
         """``position`` or ``process``."""

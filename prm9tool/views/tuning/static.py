@@ -57,9 +57,8 @@ class ProposalPage(Page):
 
     def apply(self) -> None:
         """The proposal into the document, one undo step."""
-        if self.proposal:
-            self.window_.accept_values(self.proposal, self.undo_text())
-            self.apply_button.setEnabled(False)
+        if self.proposal and self.window_.accept_values(self.proposal, self.undo_text()):
+            self.apply_button.setEnabled(False)  # refused (access level): kept to apply later
 
 
 class StaticPage(ProposalPage):

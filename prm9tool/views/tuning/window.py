@@ -29,13 +29,16 @@ from PySide6.QtWidgets import (
 
 from prm9tool.analysis.profile import DEFAULT, Profile, load_profile
 from prm9tool.catalogue import CATALOGUE
+from prm9tool.catalogue.commissioning import Blocker
 from prm9tool.catalogue.variant import Config
+from prm9tool.characterize.procedures import LOOPS, gain_names
 from prm9tool.model.access import AccessModel
 from prm9tool.model.document import ParameterDocument
 from prm9tool.online.connection_protocol import StatusView
 from prm9tool.online.tuning_runner import SimulationRunner, TuningRunner, ValveRunner
-from prm9tool.online.valve_control import ValveControl
+from prm9tool.online.valve_control import ValveControl, blocker_text, status_blocker
 from prm9tool.translate import translated
+from prm9tool.views import prompts
 from prm9tool.views.help_dialog import add_context_help
 from prm9tool.views.history_notes import record_online_change
 from prm9tool.views.scope.start import offer_enable
@@ -140,7 +143,7 @@ class TuningWindow(QDialog):
         (the connection runs one thing on the valve's setpoint at a time): the confirmation and
         the status line say so.
         """
-        if self.runner.busy:
+        if self.runner.busy or not self._may_start(kind):
             return
         generator = bool(getattr(self.connection, "generator_running", False))
         if isinstance(self.runner, SimulationRunner):
@@ -157,6 +160,54 @@ class TuningWindow(QDialog):
         self.status.setText(running)
         self.runner.run(kind, procedure)
         self.progress.start(self.runner, planned_s)
+
+    def _may_start(self, kind: str) -> bool:
+        """Before a long test, what would waste it: a valve that holds a fault (it would not
+        move; refused with the reason) and an access level at which its result could not be
+        accepted (asked: the result is kept, to accept after switching the level)."""
+        if not isinstance(self.runner, SimulationRunner):  # on the valve
+            reason = status_blocker(self._status)
+            if reason in (Blocker.FAULT, Blocker.BOOTING):
+                shown = blocker_text(reason, self._status)
+                self.status.setText(self.tr("Not started: the valve does not follow its setpoint: %1").replace("%1", shown))  # fmt: skip
+                return False
+        locked = self._locked(self._accepts(kind))
+        if not locked:
+            return True
+        answer = prompts.ask(
+            self,
+            prompts.Icon.Warning,
+            self.tr("Tuning"),
+            self.tr(
+                "At the present access level the result of this test cannot be accepted: %1\n\n"
+                "Switch to Expert first (View → Access level), or run the test now and switch "
+                "before you accept: its result is kept. Start the test anyway?"
+            ).replace("%1", locked),
+            prompts.Button.Yes | prompts.Button.No,
+            prompts.Button.No,
+        )
+        return answer == prompts.Button.Yes
+
+    def _accepts(self, kind: str) -> list[str]:
+        """The parameters a test of ``kind`` may propose (what its Accept would change)."""
+        if kind == "autotune":
+            return gain_names(LOOPS[self.current_loop()])
+        if kind == "static":
+            lin = [f"SETPLIN{a}{p}" for p in "ABCDEFGHI" for a in "XY"]
+            return ["SETPLINON", *lin, "OFFSETPOS", "OFFSETNEG"]
+        return ["OFFSETPOS", "OFFSETNEG"] if kind == "flow" else []
+
+    def _locked(self, names: list[str]) -> str:
+        """Why the first of ``names`` that this valve has is locked ("" when none is)."""
+        if self._access is None:
+            return ""
+        for name in names:
+            param = CATALOGUE.get(name)
+            if param is None or name not in self.doc.values:
+                continue
+            if (reason := self._access.lock_reason(param)) is not None:
+                return translated(reason)
+        return ""
 
     def _confirm(self, what: str, generator: bool = False) -> bool:
         text = self.tr(
@@ -207,8 +258,9 @@ class TuningWindow(QDialog):
         self.status.setText(self.tr("Stopped: %1").replace("%1", message))
 
     # --- document --------------------------------------------------------------------------------
-    def accept_values(self, values: dict[str, int], text: str) -> None:
-        """Put ``values`` into the document as one undo step (online, on to the valve)."""
+    def accept_values(self, values: dict[str, int], text: str) -> bool:
+        """Put ``values`` into the document as one undo step (online, on to the valve); False
+        when the access level locks one (the status line says why and where to switch)."""
         wanted = {k: v for k, v in values.items() if k in self.doc.values}
         locked = [] if self._access is None else [
             reason for k in wanted if (reason := self._access.lock_reason(CATALOGUE[k]))
@@ -216,12 +268,13 @@ class TuningWindow(QDialog):
         if locked:  # at Basic level the controllers and linearizations are locked everywhere
             shown = translated(locked[0]) + " " + self.tr("(View → Access level)")
             self.status.setText(self.tr("Not accepted: %1").replace("%1", shown))
-            return
+            return False
         before = dict(self.doc.values)
         self.doc.set_values(wanted, text)
         record_online_change(self.connection, "tuning-accepted", before, self.doc.values,
                              what=text, loop=self.current_loop())  # fmt: skip
         self.status.setText(self.tr("Accepted: %1").replace("%1", text))
+        return True
 
     def _on_loop_changed(self) -> None:
         self.autotune.set_loop(self.current_loop())
