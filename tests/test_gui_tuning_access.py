@@ -16,6 +16,7 @@ from prm9tool.model.document import ParameterDocument
 from prm9tool.views import prompts
 from prm9tool.views.tuning.window import TuningWindow
 
+E02 = "PRM9-06.3Z11/30-24E02S02"
 E04 = "PRM9-06.3Z11/30-24E04S02"
 
 
@@ -82,3 +83,89 @@ def test_the_settling_target_follows_the_loop(basic):
     page.settling.setValue(60.0)  # the user's choice stays
     basic.loop.setCurrentIndex(basic.loop.findData("process"))
     assert page.settling.value() == 60.0 and page.amplitude.value() == 20.0
+
+
+# --- issue 34 item 11: the Tuning window's state -------------------------------------------------
+def test_the_status_line_follows_the_language_and_a_recovered_valve(basic):
+    from PySide6.QtCore import QEvent
+
+    from prm9tool import i18n
+
+    try:
+        i18n.set_language("de")
+        basic.changeEvent(QEvent(QEvent.Type.LanguageChange))
+        basic.stop()  # a line other than "Ready." (as "Fertig." after a test)
+        german = basic.status.text()
+        assert german == basic.tr("Stopping…") != "Stopping…"
+        i18n.set_language("cs")
+        basic.changeEvent(QEvent(QEvent.Type.LanguageChange))
+        assert basic.status.text() != german  # stayed German in the Czech UI
+        assert basic.status.text() == basic.tr("Stopping…")
+    finally:
+        i18n.set_language("en")
+    fault = SimpleNamespace(
+        device_state="FAULT_HOLD", nmt_state="operational", active_errors=(0x8611,),
+        booting=False, error_code=0x8611, error_text="following error", warning=False,
+    )  # fmt: skip
+    well = SimpleNamespace(
+        device_state="DEVICE_MODE_ACTIVE", nmt_state="operational", active_errors=(),
+        booting=False, error_code=0, error_text="", warning=False,
+    )  # fmt: skip
+    basic._on_status_changed(fault)
+    basic._on_failed("report", "the valve reported error 0x8611 (FAULT_HOLD)")
+    assert "FAULT_HOLD" in basic.status.text()
+    basic._on_status_changed(well)  # restarted, or the fault reset
+    assert basic.status.text() == "Ready."  # not the stale "FAULT_HOLD"
+
+
+def test_an_e04_in_control_mode_4_opens_on_the_process_loop(qtbot):
+    w = TuningWindow(ParameterDocument(E04))
+    qtbot.addWidget(w)
+    assert w.current_loop() == "process"
+    assert w.autotune.settling.value() == 500.0
+
+
+def test_reopened_from_the_scope_the_window_keeps_its_loop_and_takes_ctrl_i(qtbot, tmp_path):
+    from gui_support import main_window
+
+    with main_window(qtbot, tmp_path, E04) as window:
+        window.show_tuning_window("process")
+        tuning = window.tuning_window
+        tuning.autotune.amplitude.setValue(30.0)
+        tuning.close()
+        window._build_view("scope").tuning_requested.emit()  # "Tuning and characterization…"
+        assert window.tuning_window is tuning
+        assert tuning.current_loop() == "process"  # was reset to Position, the rest kept
+        assert tuning.autotune.amplitude.value() == 30.0
+        status = window.commands["valve_status"]
+        assert status in tuning.actions()  # Ctrl+I while the Tuning window has focus
+        assert status.shortcut().toString() == "Ctrl+I"
+
+
+def test_a_test_on_the_valve_puts_the_status_it_reads_on_the_main_status_bar(qtbot, monkeypatch):
+    """While a test holds the link the connection polls no status: the status bar went on
+    saying "waiting for a CANopen master" on a valve enabled just before the test."""
+    from gui_support import emulator_connection
+
+    from prm9tool.characterize.procedures import bode_test
+    from prm9tool.device import factory
+
+    connection = emulator_connection()
+    try:
+        entry = factory.list_devices([f"{E02}:5102"])[-1]
+        with qtbot.waitSignal(connection.online_changed, timeout=10000):
+            connection.go_online(entry)
+        w = TuningWindow(ParameterDocument(E02), connection)
+        qtbot.addWidget(w)
+        monkeypatch.setattr(QMessageBox, "question", lambda *a: QMessageBox.StandardButton.Yes)
+        during: list[str] = []
+        connection.status_changed.connect(
+            lambda s: during.append(str(s.device_state)) if w.runner.busy else None
+        )
+        w.start("bode", "a sweep", lambda rig: bode_test(rig, 5.0, 0.0, 5.0, 50.0, 0.2))
+        qtbot.waitUntil(lambda: not w.runner.busy, timeout=60000)
+        assert "Stopped" not in w.status.text(), w.status.text()
+        assert "DEVICE_MODE_ACTIVE" in during  # read by the test, shown while it runs
+    finally:
+        connection.shutdown()
+        factory.forget_emulated_valves()

@@ -9,6 +9,7 @@ as one undo step. The procedures themselves: :mod:`prm9tool.characterize`.
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from pathlib import Path
 from typing import Any
 
@@ -75,7 +76,8 @@ class TuningWindow(QDialog):
         self.mode = QLabel()
         self.status = QLabel()
         self.status.setWordWrap(True)
-        self._ready_text = ""  # "Ready." in the language it was shown in
+        self._render: Callable[[], str] = lambda: self.tr("Ready.")  # the status line's text,
+        self._failure = False  # in the program language when it changes; a failure shown
         self.stop_button = QPushButton()
         self.stop_button.setEnabled(False)
         self.stop_button.clicked.connect(self.stop)
@@ -86,6 +88,8 @@ class TuningWindow(QDialog):
         self.flow = FlowPage(self) if doc.variant.config is Config.E04 else None
         self.report = ReportPage(self)
         self.loop.currentIndexChanged.connect(self._on_loop_changed)
+        if doc.variant.config is Config.E04 and doc.value("CTRLMODE") == 4:  # as delivered:
+            self.loop.setCurrentIndex(self.loop.findData("process"))  # the loop its setpoint drives
         for page in self.pages():
             self.tabs.addTab(page, "")
         top = QFormLayout()
@@ -122,7 +126,15 @@ class TuningWindow(QDialog):
         return runner
 
     def _on_status_changed(self, status: StatusView) -> None:
-        self._status = status
+        before, self._status = self._status, status
+        recovered = status_blocker(before) is not None and status_blocker(status) is None
+        if recovered and self._failure and not self.runner.busy:  # "FAULT_HOLD" after a
+            self._say(lambda: self.tr("Ready."))  # restart or a fault reset: no longer so
+
+    def _say(self, render: Callable[[], str], failure: bool = False) -> None:
+        """Show ``render()`` in the status line; a language change renders it again."""
+        self._render, self._failure = render, failure
+        self.status.setText(render())
 
     def _on_online_changed(self, online: bool) -> None:
         if self.runner.busy:
@@ -157,7 +169,7 @@ class TuningWindow(QDialog):
         if generator:  # stopped here, before the test, whether or not the scope is open
             self.connection.stop_generator()  # type: ignore[union-attr]
             running = self.tr("The oscilloscope's setpoint generator was stopped for the test.") + " " + running  # fmt: skip
-        self.status.setText(running)
+        self._say(lambda: running)
         self.runner.run(kind, procedure)
         self.progress.start(self.runner, planned_s)
 
@@ -168,8 +180,8 @@ class TuningWindow(QDialog):
         if not isinstance(self.runner, SimulationRunner):  # on the valve
             reason = status_blocker(self._status)
             if reason in (Blocker.FAULT, Blocker.BOOTING):
-                shown = blocker_text(reason, self._status)
-                self.status.setText(self.tr("Not started: the valve does not follow its setpoint: %1").replace("%1", shown))  # fmt: skip
+                status, why = self._status, reason
+                self._say(lambda: self.tr("Not started: the valve does not follow its setpoint: %1").replace("%1", blocker_text(why, status)), failure=True)  # fmt: skip
                 return False
         locked = self._locked(self._accepts(kind))
         if not locked:
@@ -231,7 +243,7 @@ class TuningWindow(QDialog):
     def stop(self) -> None:
         """Stop the running test."""
         self.runner.stop()
-        self.status.setText(self.tr("Stopping…"))
+        self._say(lambda: self.tr("Stopping…"))
 
     def _on_busy_changed(self, busy: bool) -> None:
         self.stop_button.setEnabled(busy)
@@ -246,16 +258,16 @@ class TuningWindow(QDialog):
         return [self.autotune, self.bode, self.static, *flow, self.report]
 
     def _on_finished(self, kind: str, result: object) -> None:
-        self.status.setText(self.tr("Done."))
+        self._say(lambda: self.tr("Done."))
         pages: dict[str, Page] = {"autotune": self.autotune, "bode": self.bode}
         pages.update(static=self.static, flow=self.flow or self.report)
         pages.get(kind, self.report).show_result(result)
 
     def _on_restored(self, message: str) -> None:
-        self.status.setText(message)
+        self._say(lambda: message)
 
     def _on_failed(self, _kind: str, message: str) -> None:
-        self.status.setText(self.tr("Stopped: %1").replace("%1", message))
+        self._say(lambda: self.tr("Stopped: %1").replace("%1", message), failure=True)
 
     # --- document --------------------------------------------------------------------------------
     def accept_values(self, values: dict[str, int], text: str) -> bool:
@@ -266,14 +278,14 @@ class TuningWindow(QDialog):
             reason for k in wanted if (reason := self._access.lock_reason(CATALOGUE[k]))
         ]  # fmt: skip
         if locked:  # at Basic level the controllers and linearizations are locked everywhere
-            shown = translated(locked[0]) + " " + self.tr("(View → Access level)")
-            self.status.setText(self.tr("Not accepted: %1").replace("%1", shown))
+            reason = locked[0]
+            self._say(lambda: self.tr("Not accepted: %1").replace("%1", translated(reason) + " " + self.tr("(View → Access level)")))  # fmt: skip
             return False
         before = dict(self.doc.values)
         self.doc.set_values(wanted, text)
         record_online_change(self.connection, "tuning-accepted", before, self.doc.values,
                              what=text, loop=self.current_loop())  # fmt: skip
-        self.status.setText(self.tr("Accepted: %1").replace("%1", text))
+        self._say(lambda: self.tr("Accepted: %1").replace("%1", text))
         return True
 
     def _on_loop_changed(self) -> None:
@@ -320,9 +332,10 @@ class TuningWindow(QDialog):
             self.tabs.setTabText(k, name)
         for page in self.pages():
             page.retranslate()
-        if not keep_status or self.status.text() == self._ready_text:
-            self._ready_text = self.tr("Ready.")
-            self.status.setText(self._ready_text)
+        if keep_status:  # the same line in the new language
+            self._say(self._render, self._failure)
+        else:
+            self._say(lambda: self.tr("Ready."))
 
     def closeEvent(self, event: Any) -> None:
         if self.runner.busy:
