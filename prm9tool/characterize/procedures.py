@@ -340,9 +340,14 @@ class BodeResult:
     centre_pct: float
     record: Record
     response: FrequencyResponse
-    note: str = ""  # set when the link's sample rate limited the sweep
+    note: Message | str = ""  # set when the link's sample rate limited the sweep
     limited_to_hz: float | None = None  # the sweep's highest frequency when it was limited
     lost_samples: int = 0  # responses the link lost (left out of the estimate)
+
+
+SWEEP_LIMITED = QT_TRANSLATE_NOOP(
+    "Characterize", "sweep limited to {0} Hz (of {1} Hz asked) by the link's sample rate of {2} Hz"
+)
 
 
 def bode_test(
@@ -367,7 +372,7 @@ def bode_test(
             f"a sweep needs at least {SWEEP_MIN_SAMPLES} samples; at the link's {fs:g} Hz "
             f"choose a duration of at least {math.ceil(SWEEP_MIN_SAMPLES / fs * 10) / 10:g} s"
         )
-    note = ""
+    note: Message | str = ""
     highest = fs / SAMPLES_PER_PERIOD
     if f_max > highest:
         if f_min * 2.0 > highest:
@@ -375,10 +380,7 @@ def bode_test(
                 f"the link samples at {fs:g} Hz: a sweep from {f_min:g} Hz needs at least "
                 f"{f_min * 2.0 * SAMPLES_PER_PERIOD:g} Hz"
             )
-        note = (
-            f"sweep limited to {highest:g} Hz (of {f_max:g} Hz asked) by the link's sample "
-            f"rate of {fs:g} Hz"
-        )
+        note = SWEEP_LIMITED(Number(f"{highest:g}"), Number(f"{f_max:g}"), Number(f"{fs:g}"))
         f_max = highest
     sweep = centre_pct + amplitude_pct * log_chirp(duration_s, fs, f_min, f_max)
     with preserved(rig, [], chain_changes(rig, loop)):

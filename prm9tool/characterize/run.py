@@ -33,7 +33,7 @@ from prm9tool.characterize.procedures import (
     step_test,
 )
 from prm9tool.characterize.rig import Rig, RigInfo
-from prm9tool.messages import Message
+from prm9tool.messages import QT_TRANSLATE_NOOP, Message
 
 Progress = Callable[[str], None]
 
@@ -82,7 +82,7 @@ class Characterization:
     flow: FlowResult | None = None  # E04 in control mode 4
     figures: list[Figure] = field(default_factory=list)
     wall_s: float = 0.0
-    skipped: list[str] = field(default_factory=list)  # tests this valve cannot run, and why
+    skipped: list[Message | str] = field(default_factory=list)  # tests not run, and why
     loop: str = "position"  # the loop tested: "process" on an E04 in control mode 4
 
     @property
@@ -96,21 +96,22 @@ class Characterization:
         return all(f.passed is not False for f in self.figures)
 
     @property
-    def notes(self) -> list[str]:
+    def notes(self) -> list[Message | str]:
         """What the link limited (a sweep cut at what its sample rate allows, samples lost)
-        and the tests skipped with their reason."""
-        notes = []
+        and the tests skipped with their reason (``str()``: English, a view translates)."""
+        notes: list[Message | str] = []
         bode = self.bode
         if bode is not None and bode.note:
             notes.append(bode.note)
         if bode is not None and bode.lost_samples:
-            notes.append(
-                f"frequency response: {bode.lost_samples} of {len(bode.record.t)} samples lost "
-                "on the link, left out of the estimate"
-            )
-        return notes + self.skipped
+            notes.append(SAMPLES_LOST(bode.lost_samples, len(bode.record.t)))
+        return notes + list(self.skipped)
 
 
+SAMPLES_LOST = QT_TRANSLATE_NOOP(
+    "Characterize",
+    "frequency response: {0} of {1} samples lost on the link, left out of the estimate",
+)
 RESULT_HOOKS: list[Callable[[Characterization], None]] = []
 
 
@@ -243,7 +244,7 @@ def report_data(c: Characterization, csv_files: list[Path] | None = None) -> dic
         "profile": c.profile.name,
         "loop": c.loop,
         "passed": c.passed,
-        "notes": c.notes,
+        "notes": [str(note) for note in c.notes],
         "figures": [
             {
                 "name": f.name,

@@ -11,6 +11,7 @@ from __future__ import annotations
 import html
 import math
 import os
+import re
 import tempfile
 from collections.abc import Mapping
 from pathlib import Path
@@ -24,7 +25,7 @@ from prm9tool.analysis.profile import Limit
 from prm9tool.catalogue import CATALOGUE
 from prm9tool.characterize.run import Characterization, Figure
 from prm9tool.i18n import current_language, format_value
-from prm9tool.messages import localized_number
+from prm9tool.messages import Message, localized_number
 from prm9tool.translate import translated
 from prm9tool.views.paged_print import PageFrame, configure_pdf, print_paged
 from prm9tool.views.record import signature_line
@@ -72,6 +73,39 @@ def loop_name(loop: str) -> str:
     if loop == "process":
         return translate("TuningReport", "process controller (E04): process actual value")
     return translate("TuningReport", "position controller: spool position")
+
+
+_CAN_LINK = re.compile(
+    r"CANopen node (\d+) \((.*)\), (TPDO1 at the tool's SYNC|SDO polling), one sample per ([\d.]+) ms"
+)
+
+
+def link_text(link: str) -> str:
+    """The rig's description of its link (English in the JSON and the history) in the program
+    language: the emulator's, USB, or a CANopen node's with its sampling."""
+    if link == "emulator (stepped faster than real time)":
+        return translate("TuningReport", "emulator (stepped faster than real time)")
+    found = _CAN_LINK.fullmatch(link)
+    if found is None:
+        return link
+    node, bus, how, period = found.groups()
+    how = (
+        translate("TuningReport", "TPDO1 at the tool's SYNC")
+        if how.startswith("TPDO1")
+        else translate("TuningReport", "SDO polling")
+    )
+    return translate("TuningReport", "CANopen node {0} ({1}), {2}, one sample per {3} ms").format(
+        node, bus, how, _local(period)
+    )
+
+
+def profile_name(name: str) -> str:
+    """The built-in profile's name in the program language, a file's as it is."""
+    return translate("TuningReport", "default (built in)") if name == "default" else name
+
+
+def _text(note: object) -> str:
+    return translated(note) if isinstance(note, Message) else str(note)
 
 
 def verdict(passed: bool | None) -> str:
@@ -241,13 +275,13 @@ def _header(c: Characterization) -> str:
         (translate("TuningReport", "Date"), c.date),
         (
             translate("TuningReport", "Link"),
-            f"{c.info.link}, {_local(f'{c.info.sample_rate_hz:g}')} Hz",
+            f"{link_text(c.info.link)}, {_local(f'{c.info.sample_rate_hz:g}')} Hz",
         ),
         (translate("TuningReport", "Loop tested"), loop_name(c.loop)),
-        (translate("TuningReport", "Acceptance profile"), c.profile.name),
+        (translate("TuningReport", "Acceptance profile"), profile_name(c.profile.name)),
         (translate("TuningReport", "Result"), verdict(c.passed)),
     ]
-    rows += [(translate("TuningReport", "Limited by the link"), note) for note in c.notes]
+    rows += [(translate("TuningReport", "Limited by the link"), _text(n)) for n in c.notes]
     body = "".join(f"<tr><td><b>{e(k)}</b></td><td>{e(v)}</td></tr>" for k, v in rows)
     title = e(translate("TuningReport", "PRM9 test report"))
     return f"<h2>{title}</h2><table cellpadding='2'>{body}</table>"
@@ -269,7 +303,8 @@ def _figures(c: Characterization) -> str:
             f"<td style='color:{colour}'><b>{e(verdict(f.passed))}</b></td></tr>"
         )
     heading = "".join(f"<th align='left'>{e(h)}</th>" for h in head)
-    return f"<h3>{e(translate('TuningReport', 'Figures'))}</h3><table cellpadding='2'><tr>{heading}</tr>{''.join(rows)}</table>"
+    title = translate("TuningReport", "Figures")
+    return f"<h3>{e(title)}</h3><table cellpadding='2'><tr>{heading}</tr>{''.join(rows)}</table>"
 
 
 def parameter_rows(parameters: Mapping[str, int | str]) -> list[tuple[str, str]]:

@@ -78,6 +78,7 @@ class TuningWindow(QDialog):
         self.status.setWordWrap(True)
         self._render: Callable[[], str] = lambda: self.tr("Ready.")  # the status line's text,
         self._failure = False  # in the program language when it changes; a failure shown
+        self._shown = ""  # what it rendered last
         self.stop_button = QPushButton()
         self.stop_button.setEnabled(False)
         self.stop_button.clicked.connect(self.stop)
@@ -134,7 +135,8 @@ class TuningWindow(QDialog):
     def _say(self, render: Callable[[], str], failure: bool = False) -> None:
         """Show ``render()`` in the status line; a language change renders it again."""
         self._render, self._failure = render, failure
-        self.status.setText(render())
+        self._shown = render()
+        self.status.setText(self._shown)
 
     def _on_online_changed(self, online: bool) -> None:
         if self.runner.busy:
@@ -332,8 +334,9 @@ class TuningWindow(QDialog):
             self.tabs.setTabText(k, name)
         for page in self.pages():
             page.retranslate()
-        if keep_status:  # the same line in the new language
-            self._say(self._render, self._failure)
+        if keep_status:  # the same line in the new language (a text set from outside stays)
+            if self.status.text() == self._shown:
+                self._say(self._render, self._failure)
         else:
             self._say(lambda: self.tr("Ready."))
 
