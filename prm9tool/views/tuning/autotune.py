@@ -17,7 +17,6 @@ from PySide6.QtWidgets import (
     QComboBox,
     QHBoxLayout,
     QPushButton,
-    QTableWidget,
     QTableWidgetItem,
 )
 
@@ -28,7 +27,7 @@ from prm9tool.characterize.autotune import AutotuneResult
 from prm9tool.characterize.procedures import LOOPS, StepResult, step_window
 from prm9tool.i18n import format_number, format_significant
 from prm9tool.translate import error_text, translated
-from prm9tool.views.tuning.host import TuningHost, gain_text, spin
+from prm9tool.views.tuning.host import TuningHost, figure_table, gain_text, spin
 from prm9tool.views.tuning.pages import Page
 from prm9tool.views.tuning.plot import COLOURS, Plot, Series
 from prm9tool.views.tuning.report import (
@@ -64,8 +63,7 @@ class AutotunePage(Page):
         self.override.setVisible(False)
         self.override.toggled.connect(self._override_toggled)
         self.buttons.insertWidget(2, self.override)
-        self.table = QTableWidget(0, 5)  # figure, before, proposed, limit, result
-        self.table.verticalHeader().setVisible(False)
+        self.table = figure_table(5)  # figure, before, proposed, limit, result
         layout = self.layout()
         layout.removeWidget(self.plot)  # type: ignore[union-attr]
         row = QHBoxLayout()
@@ -189,7 +187,7 @@ class AutotunePage(Page):
                 item = QTableWidgetItem(text)
                 item.setToolTip(tip)
                 self.table.setItem(row, col, item)
-        self.table.resizeColumnsToContents()
+        self.table.resizeRowsToContents()
 
     def _plots(self, result: Proposal) -> list[Plot]:
         actual = LOOPS[result.before.loop].actual

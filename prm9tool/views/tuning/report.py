@@ -16,7 +16,7 @@ import tempfile
 from collections.abc import Mapping
 from pathlib import Path
 
-from PySide6.QtCore import QCoreApplication, QUrl
+from PySide6.QtCore import QCoreApplication, QDateTime, QLocale, Qt, QUrl
 from PySide6.QtGui import QGuiApplication, QTextDocument
 from PySide6.QtPrintSupport import QPrinter
 from PySide6.QtWidgets import QApplication
@@ -97,6 +97,19 @@ def link_text(link: str) -> str:
     return translate("TuningReport", "CANopen node {0} ({1}), {2}, one sample per {3} ms").format(
         node, bus, how, _local(period)
     )
+
+
+def date_text(iso: str) -> str:
+    """The run's date (ISO 8601 in the JSON) as the program language writes dates, in UTC:
+    ``02.12.2026 00:13 UTC`` in German; an unreadable one as it is."""
+    when = QDateTime.fromString(iso, Qt.DateFormat.ISODate)
+    if not when.isValid():
+        return iso
+    locale, utc = QLocale(current_language()), when.toUTC()
+    day = locale.dateFormat(QLocale.FormatType.ShortFormat)
+    day = day if "yyyy" in day else day.replace("yy", "yyyy")  # the year in full
+    hour = locale.timeFormat(QLocale.FormatType.ShortFormat)
+    return f"{locale.toString(utc.date(), day)} {locale.toString(utc.time(), hour)} UTC"
 
 
 def profile_name(name: str) -> str:
@@ -263,7 +276,7 @@ def report_frame(c: Characterization) -> PageFrame:
     subject = translate("TuningReport", "{0} · serial number {1}").format(
         c.info.type_key, c.info.serial
     )
-    return PageFrame(subject, translate("TuningReport", "PRM9 test report"), c.date)
+    return PageFrame(subject, translate("TuningReport", "PRM9 test report"), date_text(c.date))
 
 
 def _header(c: Characterization) -> str:
@@ -272,7 +285,7 @@ def _header(c: Characterization) -> str:
         (translate("TuningReport", "Type key"), c.info.type_key),
         (translate("TuningReport", "Serial number"), str(c.info.serial)),
         (translate("TuningReport", "Firmware"), c.info.firmware),
-        (translate("TuningReport", "Date"), c.date),
+        (translate("TuningReport", "Date"), date_text(c.date)),
         (
             translate("TuningReport", "Link"),
             f"{link_text(c.info.link)}, {_local(f'{c.info.sample_rate_hz:g}')} Hz",

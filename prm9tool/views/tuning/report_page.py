@@ -8,7 +8,6 @@ from PySide6.QtWidgets import (
     QLabel,
     QLineEdit,
     QPushButton,
-    QTableWidget,
     QTableWidgetItem,
 )
 
@@ -23,7 +22,7 @@ from prm9tool.characterize.run import (
 from prm9tool.i18n import format_significant
 from prm9tool.online.characterization_history import run_with_history
 from prm9tool.translate import error_text
-from prm9tool.views.tuning.host import TuningHost
+from prm9tool.views.tuning.host import TuningHost, figure_table
 from prm9tool.views.tuning.pages import Page
 from prm9tool.views.tuning.report import figure_label, limit_text, value_short, verdict, write_pdf
 
@@ -43,7 +42,7 @@ class ReportPage(Page):
         row.addWidget(self.browse_button)
         self.labels["profile"] = QLabel()
         self.form.addRow(self.labels["profile"], row)
-        self.table = QTableWidget(0, 4)
+        self.table = figure_table(4)
         self.layout().insertWidget(3, self.table, 1)  # type: ignore[union-attr]
         self.plot.hide()
         self.save_button = QPushButton()
@@ -101,7 +100,7 @@ class ReportPage(Page):
                 item = QTableWidgetItem(text)
                 item.setToolTip(tip if col == 1 else "")
                 self.table.setItem(row, col, item)
-        self.table.resizeColumnsToContents()
+        self.table.resizeRowsToContents()
         self.result.setText(self.tr("Result: %1").replace("%1", verdict(result.passed)))
         self.save_button.setEnabled(True)
 
