@@ -99,3 +99,24 @@ def test_the_autotune_table_shows_every_column_in_german(qtbot):
         assert table.item(0, 4).text() in ("BESTANDEN", "NICHT BESTANDEN")
     finally:
         i18n.set_language("en")
+
+
+def test_the_frequency_response_page_writes_numbers_as_german_does(qtbot, monkeypatch):
+    """ "Sinus-Sweep 0.2 … 20 Hz" and "−3 dB: 3.8 Hz" had decimal points in German; on the
+    process loop the sweep's range is the loop's (0.2 … 20 Hz), not the spool's 1 … 200 Hz."""
+    from prm9tool.characterize.procedures import bode_test
+
+    i18n.set_language("de")
+    try:
+        w = TuningWindow(ParameterDocument(E04))  # control mode 4: the process loop
+        qtbot.addWidget(w)
+        said: list[str] = []
+        monkeypatch.setattr(w, "start", lambda kind, what, *a: said.append(what))
+        w.bode.run()
+        assert "0,2 … 20 Hz" in said[0], said
+        result = bode_test(EmulatorRig(EmulatedValve(E04)), 10.0, 0.0, 0.2, 20.0, 6.0, "process")
+        w.bode.show_result(result)
+        text = w.bode.result.text()
+        assert re.fullmatch(r"−3 dB: \d+,\d Hz, −90°: \d+,\d Hz\.", text), text
+    finally:
+        i18n.set_language("en")

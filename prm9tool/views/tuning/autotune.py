@@ -72,14 +72,14 @@ class AutotunePage(Page):
         layout.addLayout(row, 1)  # type: ignore[union-attr]
         self.proposal: dict[str, int] = {}
         self.last: Proposal | None = None
-        self._loop = "position"  # the loop whose default targets the fields show
+        self.loop_shown = "position"  # the loop whose default targets the fields show
 
     def set_loop(self, loop: str) -> None:
         """The step amplitude and settling target follow the loop chosen (the process loop's
         integrating actuator settles in about 0.5 s, not the spool's 40 ms), unless the user
         changed them from the previous loop's defaults."""
-        before, after = LOOP_DEFAULTS[self._loop], LOOP_DEFAULTS[loop]
-        self._loop = loop
+        before, after = LOOP_DEFAULTS[self.loop_shown], LOOP_DEFAULTS[loop]
+        self.loop_shown = loop
         for box, old, new in zip((self.amplitude, self.settling), before, after, strict=True):
             if box.value() == old:
                 box.setValue(new)
@@ -94,7 +94,9 @@ class AutotunePage(Page):
         loop = self.window_.current_loop()
         amplitude, limit = self.amplitude.value(), self.limit.value()
         targets = Targets(self.overshoot.value(), self.settling.value() / 1000.0)
-        steps = ", ".join(f"±{a:g}" for a in profile.for_loop(loop).step_amplitudes_pct)
+        steps = ", ".join(
+            f"±{format_significant(a, 6)}" for a in profile.for_loop(loop).step_amplitudes_pct
+        )
         method = "model" if self.method.currentIndex() == 0 else "critical"
         if method == "model":
             what = self.tr("steps of %1 % from 0 %, a few times").replace(

@@ -291,7 +291,9 @@ class TuningWindow(QDialog):
         return True
 
     def _on_loop_changed(self) -> None:
+        before = self.autotune.loop_shown
         self.autotune.set_loop(self.current_loop())
+        self.bode.set_loop(self.current_loop(), before)
 
     def current_loop(self) -> str:
         """``position`` or ``process``."""
