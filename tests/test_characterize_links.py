@@ -96,12 +96,24 @@ def test_characterize_over_usb_with_a_paced_valve(usb_valve, tmp_path, capsys):
     js = tmp_path / "usb.json"
     args = ["--characterize", "--device", f"usb:{PATH.decode()}", "--profile",
             str(tmp_path / "short.toml"), "--json", str(js)]  # fmt: skip
-    assert main(args) == ExitCode.OK, capsys.readouterr().err
+    code = main(args)
+    err = capsys.readouterr().err
+    if "updated the valve's setpoint too seldom" in err:  # refused, with the reason (busy PC)
+        assert code != ExitCode.OK
+        return
     report = json.loads(js.read_text(encoding="utf-8"))
     assert report["valve"]["serial"] == 4711
     assert report["link"] == "USB" and report["sample_rate_hz"] == 5000
-    figures = {f["name"]: f["value"] for f in report["figures"]}
-    assert 15 < figures["bode_bandwidth_hz"] < 100
+    figures = {f["name"]: f for f in report["figures"]}
+    bandwidth = figures["bode_bandwidth_hz"]
+    # issue 34 item 9: a busy PC measured 11.9 Hz (the valve's is ~30 Hz) and passed; the
+    # figure is now right, or known only to lie above where the sweep was usable, and said so
+    if any("sweep usable up to" in note for note in report["notes"]):
+        assert bandwidth["above"] or bandwidth["value"] is None, bandwidth
+    else:
+        assert code == ExitCode.OK, err
+        assert 15 < bandwidth["value"] < 100, bandwidth
+    figures = {name: f["value"] for name, f in figures.items()}
     assert 0.9 < figures["static_gain"] < 1.1
     assert figures["step_25_overshoot_pct"] < 15
     over = CATALOGUE["SETPOVRON"]

@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import json
 import math
+import re
 
 import numpy as np
 import pytest
@@ -107,3 +108,35 @@ def test_a_profile_sets_the_process_loop_apart_and_keeps_its_defaults():
         parse_profile({"process": {"test": {"rise": 1}}})
     with pytest.raises(ProfileError, match=r"\[process\] holds only"):
         parse_profile({"process": {"name": "x"}})
+
+
+# --- issue 34 item 9: a sweep on a PC too busy to update the setpoint -----------------------------
+class HeldRig(EmulatorRig):
+    """An emulated valve behind a PC that writes its setpoint only every ``hold`` samples from
+    ``after`` on (a busy PC over USB: one report per round trip of tens of ms)."""
+
+    def __init__(self, hold: int, after: int = 0) -> None:
+        super().__init__(EmulatedValve("PRM9-06.3Z11/30-24E02S02"))
+        self.hold, self.after = hold, after
+
+    def play(self, setpoint_pct, keys, gaps=False):
+        values = np.asarray(setpoint_pct, dtype=float).copy()
+        if len(values) > 1000:  # the sweep
+            index = np.arange(len(values))
+            held = np.where(index >= self.after, (index // self.hold) * self.hold, index)
+            values = values[held]
+        return super().play(values, keys, gaps)
+
+
+def test_a_sweep_the_pc_could_not_update_is_cut_where_it_stopped_following(qapp):
+    from prm9tool.characterize.procedures import bode_test
+
+    right = bode_test(EmulatorRig(EmulatedValve("PRM9-06.3Z11/30-24E02S02")), 10, 0, 2, 100, 1.5)
+    assert 25 < right.response.bandwidth_hz() < 36  # ~31 Hz
+    held = bode_test(HeldRig(150), 10, 0, 2, 100, 1.5)  # 30 ms holds: read 36 Hz, 18 % high
+    assert re.match(r"sweep usable up to [89]\.\d+ Hz", str(held.note)), str(held.note)
+    assert "held the valve's setpoint for 30 ms" in str(held.note)
+    assert math.isnan(held.response.bandwidth_hz())  # not a wrong figure ...
+    assert held.response.bandwidth_above_hz() <= 9.0  # ... but "above" where it was usable
+    with pytest.raises(Exception, match="updated the valve's setpoint too seldom"):
+        bode_test(HeldRig(1500), 10, 0, 2, 100, 1.5)  # 0.3 s holds: nothing usable

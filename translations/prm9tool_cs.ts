@@ -807,6 +807,10 @@ Poslední akce možná nebyla dokončena. Uložte svou práci pod novým názvem
             <translation>rozmítání omezeno na {0} Hz (požadováno {1} Hz) vzorkovací frekvencí spojení {2} Hz</translation>
         </message>
         <message>
+            <source>sweep usable up to {0} Hz: the PC held the valve's setpoint for {1} ms there (at least {2} updates per period are needed; the PC was busy)</source>
+            <translation>rozmítání použitelné do {0} Hz: počítač tam držel žádanou hodnotu ventilu {1} ms (je třeba nejméně {2} aktualizací za periodu; počítač byl vytížen)</translation>
+        </message>
+        <message>
             <source>frequency response: {0} of {1} samples lost on the link, left out of the estimate</source>
             <translation>frekvenční charakteristika: {0} z {1} vzorků ztraceno na spojení, vynecháno z odhadu</translation>
         </message>

@@ -805,6 +805,10 @@ Die letzte Aktion wurde womöglich nicht vollständig ausgeführt. Speichern Sie
             <translation>Sweep auf {0} Hz begrenzt (statt {1} Hz) durch die Abtastrate der Verbindung von {2} Hz</translation>
         </message>
         <message>
+            <source>sweep usable up to {0} Hz: the PC held the valve's setpoint for {1} ms there (at least {2} updates per period are needed; the PC was busy)</source>
+            <translation>Sweep bis {0} Hz verwendbar: der PC hielt den Sollwert des Ventils dort {1} ms lang (mindestens {2} Aktualisierungen je Periode nötig; der PC war ausgelastet)</translation>
+        </message>
+        <message>
             <source>frequency response: {0} of {1} samples lost on the link, left out of the estimate</source>
             <translation>Frequenzgang: {0} von {1} Abtastwerten auf der Verbindung verloren, in der Schätzung ausgelassen</translation>
         </message>

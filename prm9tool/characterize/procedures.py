@@ -16,10 +16,12 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from prm9tool.analysis.frequency import (
+    UPDATES_PER_PERIOD,
     FrequencyResponse,
     frequency_response,
     frequency_response_with_gaps,
     log_chirp,
+    sweep_updates,
 )
 from prm9tool.analysis.pid import PidGains, critical_gain_rule, from_parameters, oscillation
 from prm9tool.analysis.static import StaticCharacteristic, static_characteristic
@@ -350,6 +352,13 @@ SWEEP_LIMITED = QT_TRANSLATE_NOOP(
 )
 
 
+SWEEP_UPDATED = QT_TRANSLATE_NOOP(
+    "Characterize",
+    "sweep usable up to {0} Hz: the PC held the valve's setpoint for {1} ms there (at least {2} "
+    "updates per period are needed; the PC was busy)",
+)
+
+
 def bode_test(
     rig: Rig,
     amplitude_pct: float = 10.0,
@@ -363,7 +372,9 @@ def bode_test(
 
     A link whose sample rate gives fewer than SAMPLES_PER_PERIOD samples per period at
     ``f_max`` (CANopen) limits the sweep to what it can sample, and :attr:`BodeResult.note`
-    says so; nothing is interpolated.
+    says so; nothing is interpolated. A PC too busy to update the setpoint UPDATES_PER_PERIOD
+    times a period (:func:`~prm9tool.analysis.frequency.sweep_updates`) limits the estimate to
+    the part of the sweep before that, or refuses it (LinkTooSlowError) when too little is left.
     """
     lp = LOOPS[loop]
     fs = rig.info.sample_rate_hz
@@ -387,8 +398,21 @@ def bode_test(
         settle(rig, lp.actual, centre_pct, 0.05)
         band = 2.5 * amplitude_pct + 5.0
         rec = record(rig, sweep, [lp.setpoint, lp.actual], centre_pct, band, gaps=True)
-    limited = f_max if note else None  # (the note says the sweep was limited)
     u, y, missing = rec.channels[lp.setpoint], rec.channels[lp.actual], rig.last_missing
+    updates = sweep_updates(sweep, rig.last_demand, fs, f_min, f_max, 2.0 / 163.84)
+    if updates.usable < len(u):  # a busy PC wrote the setpoint too seldom from there on
+        hold = Number(f"{updates.hold_s * 1000:.0f}")
+        if updates.usable_hz < 2.0 * f_min or updates.usable < SWEEP_MIN_SAMPLES:
+            raise LinkTooSlowError(
+                f"the PC updated the valve's setpoint too seldom for the sweep: it held one "
+                f"value for {hold} ms at {updates.usable_hz:.3g} Hz (at least "
+                f"{UPDATES_PER_PERIOD} updates per period are needed); the test was stopped, "
+                "nothing was measured from it — run it again when the PC is less busy"
+            )
+        note = SWEEP_UPDATED(Number(f"{updates.usable_hz:.3g}"), hold, UPDATES_PER_PERIOD)
+        f_max, end = updates.usable_hz, updates.usable
+        u, y, missing = u[:end], y[:end], missing[:end] if len(missing) else missing
+    limited = f_max if note else None  # (the note says the sweep was limited)
     if missing.any():  # lost on the link: not filled in, the fit uses what arrived
         try:
             response = frequency_response_with_gaps(u, y, missing, fs, f_min, f_max)

@@ -208,10 +208,11 @@ def figures(c: Characterization) -> list[Figure]:
             "step_settling_s", f.not_settled("%") if f else None)  # fmt: skip
     if c.bode is not None:
         r = c.bode.response
+        why = c.bode.note if isinstance(c.bode.note, Message) else None  # a sweep cut short
         add("bode_bandwidth_hz", "−3 dB frequency", r.bandwidth_hz(), "bode_bandwidth_hz",
-            above=r.bandwidth_above_hz())  # fmt: skip
+            why if math.isnan(r.bandwidth_hz()) else None, r.bandwidth_above_hz())  # fmt: skip
         add("bode_phase90_hz", "−90° frequency", r.phase_90_hz(), "bode_phase90_hz",
-            above=r.phase_90_above_hz())  # fmt: skip
+            why if math.isnan(r.phase_90_hz()) else None, r.phase_90_above_hz())  # fmt: skip
     if c.static is not None:
         s = c.static.characteristic
         add("static_gain", "gain", s.gain, "static_gain")
