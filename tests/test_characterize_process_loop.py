@@ -104,6 +104,7 @@ def test_a_profile_sets_the_process_loop_apart_and_keeps_its_defaults():
     assert process.step_duration_s == DEFAULT_PROCESS.step_duration_s  # its own default
     assert process.limits["bode_bandwidth_hz"] == DEFAULT_PROCESS.limits["bode_bandwidth_hz"]
     assert profile.for_loop("position") is profile
+    assert process.for_loop("process") is process  # a part asked again keeps its own limits
     with pytest.raises(ProfileError, match=r"\[process.test\] has no key 'rise'"):
         parse_profile({"process": {"test": {"rise": 1}}})
     with pytest.raises(ProfileError, match=r"\[process\] holds only"):

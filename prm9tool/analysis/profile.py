@@ -87,14 +87,16 @@ class Profile:
     flow_duration_s: float = 1.0
     limits: dict[str, Limit] = field(default_factory=dict)
     process: Profile | None = None  # the E04 process loop's tests and limits (None: DEFAULT's)
+    loop: str = "position"  # the loop these tests and limits are for
 
     def for_loop(self, loop: str) -> Profile:
         """The tests and limits for ``loop``: this profile for the position loop, its
-        ``[process]`` part for the E04 process loop (with the name of the whole)."""
-        if loop != "process":
+        ``[process]`` part for the E04 process loop (with the name of the whole); a part
+        asked for its own loop is itself."""
+        if loop != "process" or self.loop == "process":
             return self
         part = self.process if self.process is not None else DEFAULT_PROCESS
-        return replace(part, name=self.name, process=None)
+        return replace(part, name=self.name, process=None, loop="process")
 
 
 DEFAULT_LIMITS = {  # the spool's position loop of a PRM9-06 (emulator: docs/tuning.md)
@@ -119,13 +121,14 @@ DEFAULT_PROCESS_LIMITS = {
     "static_linearity_pct": Limit(maximum=2.0),
 }
 DEFAULT_PROCESS = Profile(
+    loop="process",
     step_duration_s=1.5,
     bode_f_min_hz=0.2,
     bode_f_max_hz=20.0,
     limits=DEFAULT_PROCESS_LIMITS,
 )
 DEFAULT = Profile(limits=DEFAULT_LIMITS, process=DEFAULT_PROCESS)
-_TEST_KEYS = {f.name for f in fields(Profile)} - {"name", "limits", "process"}
+_TEST_KEYS = {f.name for f in fields(Profile)} - {"name", "limits", "process", "loop"}
 
 
 def load_profile(path: str | Path) -> Profile:
