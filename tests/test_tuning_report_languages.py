@@ -120,3 +120,28 @@ def test_the_frequency_response_page_writes_numbers_as_german_does(qtbot, monkey
         assert re.fullmatch(r"−3 dB: \d+,\d Hz, −90°: \d+,\d Hz\.", text), text
     finally:
         i18n.set_language("en")
+
+
+def test_the_command_lines_report_is_in_the_systems_language(tmp_path):
+    """`--characterize --report` wrote English whatever the language; it now writes the PDF in
+    the program language the GUI would start in (the system's), the JSON staying English."""
+    import json
+    import os
+    import subprocess
+    import sys
+
+    profile = tmp_path / "short.toml"
+    profile.write_text(
+        "[test]\nstep_amplitudes_pct = [25]\nbode_duration_s = 1\nbode_f_min_hz = 2\n"
+        "bode_f_max_hz = 50\nstatic_period_s = 1\n",
+        encoding="utf-8",
+    )
+    pdf, js = tmp_path / "de.pdf", tmp_path / "de.json"
+    env = dict(os.environ, LANG="de_DE.UTF-8", LC_ALL="de_DE.UTF-8", QT_QPA_PLATFORM="offscreen")
+    args = [sys.executable, "-m", "prm9tool", "--characterize", "--emulator", f"{E02}:35",
+            "--profile", str(profile), "--report", str(pdf), "--json", str(js)]  # fmt: skip
+    run = subprocess.run(args, env=env, capture_output=True, text=True, timeout=300)
+    assert pdf.exists(), run.stderr
+    text = " ".join(" ".join(p.extract_text() for p in PdfReader(str(pdf)).pages).split())
+    assert "PRM9-Prüfbericht" in text and "Geprüfter Regelkreis" in text, text[:300]
+    assert json.loads(js.read_text(encoding="utf-8"))["loop"] == "position"
