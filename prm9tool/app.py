@@ -273,9 +273,10 @@ def _opener(args: argparse.Namespace) -> Callable[[object], ValveSession]:
 
         assert isinstance(entry, factory.DeviceEntry | str)  # a listed valve or its device id
         label_key = getattr(args, "type_key", None)  # --type-key: a valve without 0x2041
-        return factory.open_session(
-            entry, paced=True, can_link=_can_link(args), label_key=label_key
-        )
+        device_id = entry.device_id if isinstance(entry, factory.DeviceEntry) else entry
+        # the bus only for a CAN node: reading the dialog's choice imports the CAN views
+        can_link = _can_link(args) if device_id.startswith(f"{factory.CAN}:") else None
+        return factory.open_session(entry, paced=True, can_link=can_link, label_key=label_key)
 
     return open_session
 

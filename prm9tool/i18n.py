@@ -76,6 +76,14 @@ def format_value(param: Parameter, raw: int | str) -> str:
     return localized_number(param.format_display(raw), current_language())
 
 
+def format_shown(param: Parameter, raw: int | str) -> str:
+    """A value with its unit as the parameter list shows it: a choice with its meaning
+    (``-1: on (9-point curve)``), a number with its unit (``2400 mA``)."""
+    if param.choices and isinstance(raw, int):
+        return f"{raw}: {param.choice_text(raw, current_language())}"
+    return f"{format_value(param, raw)} {param.unit}".strip()
+
+
 _AMBIGUOUS = QT_TRANSLATE_NOOP(
     "Problems",
     "{0}: {1} is ambiguous (a thousands separator?); write the number without one, "
@@ -100,13 +108,14 @@ def ambiguous_number(param: Parameter, text: str) -> Message | None:
 def parse_value(param: Parameter, text: str) -> int | str:
     """A value typed in a view, to raw; raises ValueRangeError with the reason.
 
-    Takes the decimal separator of the program language and the point (``0,4`` and ``0.4``),
-    but not a number that could be meant with a thousands separator (:func:`ambiguous_number`).
+    Takes the decimal separator of the program language and the point (``0,4`` and ``0.4``
+    in German and Czech; in English ``1,5`` is refused in words), but not a number that could
+    be meant with a thousands separator (:func:`ambiguous_number`).
     """
     ambiguous = ambiguous_number(param, text)
     if ambiguous is not None:
         raise ValueRangeError(ambiguous)
-    return param.parse_display(text)
+    return param.parse_display(text, decimal_point())
 
 
 def system_language() -> str:

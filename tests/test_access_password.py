@@ -102,3 +102,18 @@ def test_removing_the_settings_key_brings_back_the_default_password(store, setti
     assert not store.check(DEFAULT_PASSWORD)
     settings.remove("access/expert_password")  # documented in the README: "Access levels"
     assert store.check(DEFAULT_PASSWORD) and store.is_default
+
+
+def test_the_password_dialog_says_where_the_delivered_password_is_written(qtbot, store):
+    """Issue 34, item 15: the dialog gave no hint; the manual says only that the Expert level
+    is password-protected (§8.5), the help page says what it is as delivered."""
+    from prm9tool.views import help_dialog
+
+    dialog = PasswordDialog(store)
+    qtbot.addWidget(dialog)
+    assert "The password as delivered is written in the help" in dialog.hint.text()
+    dialog.hint.linkActivated.emit("help")
+    window = help_dialog.help_window(dialog)
+    qtbot.addWidget(window)
+    assert window.isVisible() and window.topic == "help"
+    assert f"The password as delivered is {DEFAULT_PASSWORD}" in window.browser.toPlainText()

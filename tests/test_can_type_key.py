@@ -5,6 +5,8 @@ remembered per serial number."""
 
 from __future__ import annotations
 
+import json
+
 import pytest
 from can_link_rig import E02, E04, make_link_rig
 from PySide6.QtWidgets import QInputDialog
@@ -91,3 +93,72 @@ def test_the_gui_asks_for_the_key_when_going_online_with_device_can(
         assert remembered(data_dir, real.valve.serial) == E04
     finally:
         connection.shutdown()
+
+
+@pytest.fixture
+def open_e02(tmp_path):
+    """A real -CA E02 in spool position control: its objects leave E02/E04 open."""
+    rig = make_link_rig("open-e02", tmp_path, E02, real_valve=True)
+    yield rig
+    rig.close()
+
+
+def test_the_key_given_for_the_serial_goes_before_the_files_and_force_type_keeps_e04_out(
+    open_e02, data_dir, tmp_path, capsys, caplog
+):
+    before = tmp_path / "before.prm"
+    assert main(["--batch", "--download", str(before), *_bus(open_e02), "--type-key", E02]) == 0
+    assert remembered(data_dir, open_e02.valve.serial) == E02
+    e04 = tmp_path / "e04.prm"
+    assert main(["--new", E04, "-o", str(e04)]) == 0
+    capsys.readouterr()
+    stored = open_e02.stored_set()
+    report = tmp_path / "report.json"
+    argv = ["--batch", str(e04), *_bus(open_e02), "--force-type", "--report", str(report)]
+    assert main(argv) == 5  # another parameter set: refused even with --force-type
+    assert f"{E04} taken from its label" not in caplog.text
+    record = json.loads(report.read_text(encoding="utf-8"))["valves"][0]
+    assert record["result"] == "type-mismatch" and record["type_key"] == E02
+    assert record["parameters_written"] == 0 and open_e02.stored_set() == stored
+
+
+def test_a_download_under_a_key_whose_objects_the_valve_lacks_is_refused_in_words(
+    tmp_path, data_dir, capsys
+):
+    rig = make_link_rig("no-sensor", tmp_path, E02, real_valve=True)
+    rig.missing |= {(index, 0xFF) for index in range(0x2005, 0x2009)}  # no external sensor
+    out = tmp_path / "out.prm"
+    try:
+        argv = ["--batch", "--download", str(out), *_bus(rig), "--type-key", E04]
+        assert main(argv) == 6  # "download failed: …", as for a key its objects contradict
+    finally:
+        rig.close()
+    err = capsys.readouterr().err
+    assert "Traceback" not in err and "KeyError" not in err
+    assert "has no object for SENSTYPE" in err and E04 in err
+    assert not out.exists()
+    assert remembered(data_dir, rig.valve.serial) is None  # a key the valve contradicts
+
+
+def test_an_upload_under_a_files_key_whose_objects_the_valve_lacks_writes_nothing(
+    tmp_path, data_dir
+):
+    """Issue 34 item 5: an E04 file went into such a valve "ok", its E04 parameters skipped
+    as "not available"."""
+    from prm9tool.catalogue.typekey import TypeKey
+    from prm9tool.device.canlink.session import CanopenSession
+    from prm9tool.errors import TypeKeyError
+    from prm9tool.files.prmfile import PrmContents
+
+    rig = make_link_rig("upload-no-sensor", tmp_path, E02, real_valve=True)
+    rig.missing |= {(index, 0xFF) for index in range(0x2005, 0x2009)}
+    values = PrmContents.factory(TypeKey.parse(E04)).values | {"LIMTA": 1800}
+    try:
+        with (
+            CanopenSession(rig.options, 10, type_key=E04) as session,  # the file's key
+            pytest.raises(TypeKeyError, match="has no object for SENSTYPE"),
+        ):
+            session.upload(values)
+        assert rig.working("LIMTA") != 1800 and rig.stored_set() == {}
+    finally:
+        rig.close()

@@ -295,3 +295,22 @@ def test_the_window_follows_a_dark_palette(qtbot, qapp, tmp_path):
     finally:
         qapp.setPalette(before)
     qtbot.waitUntil(lambda: window.baud_table.item(0xB, 0).background().color() == light_mark)
+
+
+@pytest.mark.parametrize(
+    ("device_id", "title"),
+    [
+        ("can:10", "Settings made by software (over CANopen)"),
+        ("usb:1-2", "Settings made by software (USB)"),
+        (None, "Settings made by software"),
+    ],
+)
+def test_the_settings_title_names_the_link_they_go_over(qtbot, monkeypatch, device_id, title):
+    """Issue 34, item 15: the window said "(USB)" while connected over CAN."""
+    from types import SimpleNamespace
+
+    window, _valve, link, *_ = open_window(qtbot, online=device_id is not None)
+    device = SimpleNamespace(type_key=E02_CA, device_id=device_id)
+    monkeypatch.setattr(type(link), "device", property(lambda s: device if s.is_online else None))
+    window.refresh()
+    assert window.settings_box.title() == title

@@ -220,6 +220,27 @@ def test_dragging_a_point_down_stops_at_its_left_neighbour(qtbot, setup):
     assert ys[6] == ys[5]
 
 
+def test_dragging_a_point_vertically_keeps_its_x(qtbot, setup):
+    """Issue 34, item 16: a vertical drag also moved the point sideways (X 50 → 49.384 %,
+    saved so): pressed beside the handle's centre, a hand's jitter on the way."""
+    s = setup(E04)
+    dialog = open_dialog(qtbot, s, "ext_sensor_linearization")
+    editor = dialog.editor
+    centre = editor.handle_position(6).toPoint()  # G at +50 %
+    x_before = dialog.points()[0][6]
+    start = QPoint(centre.x() - 4, centre.y() + 3)  # within the handle, not its centre
+    qtbot.mousePress(editor, Qt.MouseButton.LeftButton, pos=start)
+    for step in range(1, 6):  # upwards, wobbling a pixel or two sideways
+        qtbot.mouseMove(editor, QPoint(start.x() + (step % 3) - 1, start.y() - 8 * step))
+    end = QPoint(start.x() + 2, start.y() - 40)
+    qtbot.mouseRelease(editor, Qt.MouseButton.LeftButton, pos=end)
+    xs, ys = dialog.points()
+    assert xs[6] == x_before  # exactly: not a raw step off
+    assert s.doc.value(f"{dialog.prefix}XG") == x_before
+    assert ys[6] > 8192  # it went up
+    assert s.undo.stack.count() == 1
+
+
 def test_a_point_typed_out_of_order_is_refused_with_the_reason(qtbot, setup):
     s = setup(E02)
     dialog = open_dialog(qtbot, s, "setpoint_linearization")

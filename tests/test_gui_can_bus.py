@@ -311,3 +311,76 @@ def _shot(widget, name: str) -> None:
 
     if os.environ.get("PRM9TOOL_SCREENSHOTS"):
         widget.grab().save(str(Path(os.environ["PRM9TOOL_SCREENSHOTS"]) / f"{name}.png"))
+
+
+def test_the_network_view_watches_the_sessions_bus_while_online(
+    qtbot, rig, tmp_path, answers, monkeypatch
+):
+    """Issue 34, item 12: Communication → CAN bus… was greyed out while online. Online over CAN
+    it now shows the bus the session is on — through the session's own master (one adapter
+    open on the channel, not two) — and sends nothing: no search, no LSS, no valve to pick."""
+    from gui_support import main_window
+
+    from prm9tool.device.canlink import bus as canbus
+
+    rig.valve.start()  # real time: its heartbeat runs
+    rig.valve.write(0x1017, 0, 50)
+    connection = ValveConnection(opener=lambda e: factory.open_session(e, can_link=rig.options))
+    seen: dict[str, object] = {}
+
+    def look(dialog: CanBusDialog) -> int:
+        qtbot.waitUntil(lambda: dialog.table.rowCount() == 1, timeout=5000)
+        qtbot.waitUntil(lambda: dialog.table.item(0, 4).text() != "", timeout=5000)
+        shared = [n for o, n in canbus._NETWORKS.items() if o.channel == rig.options.channel]
+        seen.update(
+            networks=len(shared), users=shared[0].users, search=dialog.search.isEnabled(),
+            ok=dialog.buttons.button(QDialogButtonBox.StandardButton.Ok),
+            node=dialog.table.item(0, 0).text(), what=dialog.table.item(0, 1).text(),
+            state=dialog.state.text(), lss=dialog.lss_panel,
+            described=dialog.table.item(0, 7).text(),
+        )  # fmt: skip
+        return 0
+
+    monkeypatch.setattr(CanBusDialog, "exec", look)
+    with main_window(qtbot, tmp_path, E04, connection) as window:
+        with qtbot.waitSignal(window.connection.online_changed, timeout=10000):
+            window.valve.go_online("can:10")
+        action = window.commands["can_bus"]
+        qtbot.waitUntil(action.isEnabled, timeout=10000)  # greyed out before
+        action.trigger()
+        assert seen["networks"] == 1 and seen["users"] == 2  # the session's master, shared
+        assert seen["node"] == "can:10" and seen["what"] == E04  # its type key, as it told
+        assert seen["described"] == "the valve prm9tool is online with"
+        assert seen["search"] is False and seen["ok"] is None and seen["lss"] is None
+        assert "Online with can:10 on this bus" in str(seen["state"])
+    rig.valve.stop()
+
+
+def test_online_over_usb_the_bus_can_be_searched_but_not_gone_online_with(
+    qtbot, tmp_path, answers, monkeypatch
+):
+    """Issue 34, item 12, the other link: online over USB the dialog opens the bus itself (the
+    session is not on it) and searches it; a node is gone online with only after going
+    offline."""
+    from gui_support import E02, go_online, main_window
+
+    seen: dict[str, object] = {}
+
+    def look(dialog: CanBusDialog) -> int:
+        seen.update(
+            search=dialog.search.isEnabled(), interface=dialog.interface.isEnabled(),
+            ok=dialog.buttons.button(QDialogButtonBox.StandardButton.Ok),
+            close=dialog.buttons.button(QDialogButtonBox.StandardButton.Close),
+            state=dialog.state.text(),
+        )  # fmt: skip
+        return 0
+
+    monkeypatch.setattr(CanBusDialog, "exec", look)
+    with main_window(qtbot, tmp_path) as window:
+        go_online(qtbot, window, f"{E02}:4751")
+        action = window.commands["can_bus"]
+        qtbot.waitUntil(action.isEnabled, timeout=10000)
+        action.trigger()
+    assert seen["search"] is True and seen["interface"] is True
+    assert seen["ok"] is None and seen["close"] is not None
+    assert str(seen["state"]).startswith("Online with emulator:")

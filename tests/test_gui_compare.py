@@ -55,6 +55,17 @@ def answer_compare(monkeypatch, choices, target, shown, picture=None):
     monkeypatch.setattr(CompareDialog, "exec", run)
 
 
+def test_comparing_two_files_says_nothing_about_a_valve(qtbot):
+    """Issue 34, item 15: two files compared reported "0 parameters not on the valve"."""
+    i18n.set_language("en")
+    first, second = factory_side("a.prm", LIMTA=1500), factory_side("b.prm")
+    dialog = CompareDialog(Comparison((first, second)), (0, 1))
+    qtbot.addWidget(dialog)
+    assert dialog.summary.text().split("\n")[0] == (
+        "1 parameter differs, 0 parameters only on one side, 1 shown"
+    )
+
+
 def test_the_view_filters_counts_and_enables_apply_only_with_a_choice(qtbot):
     i18n.set_language("en")  # the English plural forms
     document, valve = factory_side("Document", LIMTA=1500, DTAMP=1000), factory_side("Valve")

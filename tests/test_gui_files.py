@@ -333,3 +333,23 @@ def test_after_a_download_the_status_bar_points_to_the_backup_copy(qtbot, window
     with qtbot.waitSignal(window.connection.operation_finished, timeout=10_000):
         window.commands["download"].trigger()
     assert "File → Save backup copy… keeps a copy" in window.status.currentMessage()
+
+
+def test_save_asks_for_a_name_when_the_file_is_of_another_valve_type(window, tmp_path, monkeypatch):
+    """Issue 34 item 3: whatever made the document another valve type, Save does not write
+    that type into the file of the old one."""
+    path = tmp_path / "e02.prm"
+    window.files.save_to(path)
+    before = path.read_bytes()
+    asked: list[str] = []
+    monkeypatch.setattr(
+        QFileDialog, "getSaveFileName", lambda _p, _t, where, _f: (asked.append(where), ("", ""))[1]
+    )
+    window.doc.set_type_key(E04_CA)
+    assert not window.files.save()
+    assert len(asked) == 1 and Path(asked[0]).parent == tmp_path and asked[0] != str(path)
+    assert path.read_bytes() == before
+    window.undo.stack.undo()  # the file's type again: Save writes into it as usual
+    window.doc.set_value("LIMTA", 2000)
+    assert window.files.save() and len(asked) == 1
+    assert prmfile.read_file(path).values["LIMTA"] == 2000

@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+import os
+
 import pytest
 from gui_support import E02, E04_CA, main_window, reject_all_dialogs
 from PySide6.QtCore import Qt
@@ -471,38 +473,85 @@ def test_save_as_and_exit_have_windows_shortcuts_too(window):
     assert all(len(set(v)) == len(v) for v in keys.values())  # no key bound twice
 
 
-def test_a_long_status_message_is_read_whole_and_the_fields_come_back(window):
-    """Issue 25 item 16: the status bar cut "… stored at 03:37:0" (German and Czech are longer)."""
+def _message_lines(bar) -> list[str]:
+    """The lines the message label shows the message in, at its width."""
+    from PySide6.QtGui import QTextLayout
+
+    label = bar.message_label
+    layout = QTextLayout(label.text(), label.font())
+    layout.beginLayout()
+    lines = []
+    while (line := layout.createLine()).isValid():
+        line.setLineWidth(label.contentsRect().width())
+        lines.append(label.text()[line.textStart() : line.textStart() + line.textLength()])
+    layout.endLayout()
+    return lines
+
+
+def test_a_long_status_message_is_read_whole_and_the_fields_stay(qtbot, window):
+    """Issue 25 item 16: the status bar cut "… stored at 03:37:0" (German and Czech are
+    longer); issue 34 item 20: making room for it hid the type key and the file name. The
+    message wraps onto a second line instead; every field stays."""
     window.resize(1024, 700)
     bar = window.status
+    bar.set_type_key("PRM9-06.3Z11/30-24E02S02-CA")
     message = (
         "43 Parameter geschrieben, überprüft und um 03:37:05 gespeichert; das Ventil arbeitet "
         "jetzt mit ihnen"
     )
     bar.showMessage(message, 8000)
-    needed = bar.fontMetrics().horizontalAdvance(message)
-    shown = [label for label in bar.labels() if label.isVisible()]
-    taken = sum(label.sizeHint().width() + 6 for label in shown)
-    assert bar.width() - taken > needed and bar.toolTip() == message
-    assert bar.mode_label in shown and bar.status_label in shown  # these always stay
+    qtbot.waitUntil(lambda: bar.message_label.height() >= 2 * bar.fontMetrics().height())
+    assert all(label.isVisible() for label in bar.labels())  # type key and file name too
+    assert bar.type_key_label.text() == "PRM9-06.3Z11/30-24E02S02-CA"
+    lines = _message_lines(bar)
+    assert len(lines) == 2 and "".join(lines) == message  # whole, on two lines
+    assert bar.message_label.height() >= len(lines) * bar.fontMetrics().height()
+    assert bar.toolTip() == message and bar.currentMessage() == message
+    snapshot_path = os.environ.get("PRM9TOOL_SCREENSHOTS")
+    if snapshot_path:
+        window.grab().save(os.path.join(snapshot_path, "status_long_message.png"))
     bar.clearMessage()
-    assert all(label.isVisible() for label in bar.labels())
+    assert bar.currentMessage() == "" and bar.message_label.text() == ""
 
 
-def test_a_status_message_stays_whole_when_the_fields_grow_after_it(window):
+def test_a_status_message_stays_whole_when_the_fields_grow_after_it(qtbot, window):
     """In Czech, "Online: parametry načteny z ventilu" was cut to "…z ventil" when the firmware
     and the valve's status arrived after the message and widened their fields."""
     window.resize(1024, 700)
     bar = window.status
     message = "Online: parametry načteny z ventilu"
     bar.showMessage(message, 8000)
-    assert all(label.isVisible() for label in bar.labels())  # room enough at first
     bar.set_online(True)
     bar.set_firmware("1.0.0")
     bar.set_type_key("PRM9-06.3Z11/30-24E02S02-CA")
     bar.set_device_status("čeká na CANopen master")
-    needed = bar.fontMetrics().horizontalAdvance(message)
-    taken = sum(label.sizeHint().width() + 6 for label in bar.labels() if label.isVisible())
-    assert bar.width() - taken > needed
-    bar.clearMessage()
+    qtbot.wait(50)  # the layout settles
     assert all(label.isVisible() for label in bar.labels())
+    assert "".join(_message_lines(bar)) == message
+    assert bar.message_label.height() >= len(_message_lines(bar)) * bar.fontMetrics().height()
+
+
+def test_a_message_goes_after_its_timeout(qtbot, window):
+    window.status.showMessage("short", 50)
+    with qtbot.waitSignal(window.status.messageChanged, timeout=5000) as changed:
+        pass
+    assert changed.args == [""] and window.status.currentMessage() == ""
+
+
+@pytest.mark.parametrize(
+    ("language", "on", "off"),
+    [("en", "-1: on (9-point curve)", "0: off"), ("de", "-1: ", "0: "), ("cs", "-1: ", "0: ")],
+)
+def test_the_differ_dialog_shows_a_choice_with_its_meaning_as_the_list(window, language, on, off):
+    """Issue 34, item 20: SETPLINON showed as a bare "-1"/"0" where the list shows
+    "-1: on (9-point curve)"."""
+    from prm9tool.catalogue import CATALOGUE
+    from prm9tool.views.online_dialogs import OnlineDiffDialog
+    from prm9tool.views.parameter_model import format_value
+
+    window.set_language(language)
+    dialog = OnlineDiffDialog({"SETPLINON": -1}, {"SETPLINON": 0}, E02, E02, window)
+    document, valve = dialog.table.item(0, 2).text(), dialog.table.item(0, 3).text()
+    assert document.startswith(on) and valve.startswith(off)
+    window.doc.set_value("SETPLINON", -1)
+    assert document == format_value(window.doc, CATALOGUE["SETPLINON"], live=False)

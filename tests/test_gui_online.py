@@ -531,3 +531,49 @@ def test_valve_store_keeps_the_online_edits_and_the_history_records_them(qtbot, 
     with qtbot.waitSignal(window.connection.online_changed, timeout=TIMEOUT):
         window.commands["offline"].trigger()
     assert answers.asked == []  # stored: nothing left to ask about
+
+
+def test_taking_the_values_of_another_valve_type_never_overwrites_the_file(
+    qtbot, window, monkeypatch, tmp_path
+):
+    """Issue 34 item 3: an E02 file, online with an E04 -CA valve, "Take the valve's values",
+    Ctrl+S: the E02 file was overwritten with the E04 type key, unasked."""
+    from PySide6.QtWidgets import QFileDialog
+
+    path = tmp_path / "e02.prm"
+    window.files.save_to(path)
+    before = path.read_bytes()
+    _choose(monkeypatch, DiffChoice.TAKE_VALVE)
+    go_online(qtbot, window, f"{E04_CA}:4120")
+    _settled(qtbot, window)
+    assert str(window.doc.type_key) == E04_CA
+    assert window.doc.path is None and window.doc.modified  # a new, unsaved document
+    assert window.windowTitle() == "untitled[*] – prm9tool"
+    assert "the document is a new, unsaved one (e02.prm stays as it is)" in (
+        window.status.currentMessage()
+    )
+    asked: list[str] = []
+    monkeypatch.setattr(
+        QFileDialog, "getSaveFileName", lambda _p, _t, where, _f: (asked.append(where), ("", ""))[1]
+    )
+    window.commands["save"].trigger()  # Ctrl+S asks for a name …
+    assert len(asked) == 1 and asked[0].startswith(str(tmp_path))
+    assert path.read_bytes() == before  # … and the E02 file holds what it held
+
+
+def test_a_document_confirmed_for_another_valve_is_not_asked_about_again(
+    qtbot, window, answers, tmp_path
+):
+    """Issue 34 item 13: "The document was read from valve 1001; you are online with valve
+    4711…" came back at every reconnect after the user had said Yes and both agreed."""
+    window.doc.source_serial = 1001
+    window.files.save_to(tmp_path / "valve_1001.prm")
+    answers.answers = [prompts.Button.Yes]
+    go_online(qtbot, window, f"{E02}:4713")
+    _settled(qtbot, window)  # the same values: online as usual
+    assert len(answers.asked) == 1 and window.doc.source_serial == 4713
+    with qtbot.waitSignal(window.connection.online_changed, timeout=TIMEOUT):
+        window.commands["offline"].trigger()
+    go_online(qtbot, window, f"{E02}:4713")
+    _settled(qtbot, window)
+    assert len(answers.asked) == 1  # the same valve again: no question

@@ -119,7 +119,7 @@ def test_a_value_finer_than_the_resolution_is_set_rounded_and_the_status_bar_say
     view, doc, qtbot
 ):
     dialog = view.make_edit_dialog("LIMTB")
-    dialog.set_text("2100,7")  # the decimal comma as well
+    dialog.set_text("2100.7")
     with qtbot.waitSignal(view.message_posted) as posted:
         dialog._buttons.accepted.emit()
     assert dialog.result() == dialog.DialogCode.Accepted
@@ -224,3 +224,59 @@ def test_the_main_window_status_bar_says_a_value_was_rounded(qtbot, tmp_path):
             window.resize(1024, 700)
             window.grab().save(os.path.join(os.environ["PRM9TOOL_SCREENSHOTS"], "rounded.png"))
         window.doc.mark_saved(None)  # closing asks nothing
+
+
+def test_a_value_shown_as_typed_posts_no_rounding_note_and_a_note_gives_the_real_step(
+    view, doc, qtbot
+):
+    """Issue 34, item 15: "7 % rounded to 7 % (resolution 0.006 %)" — DTAMP's step is
+    100/16384 % = 0.0061 %: 7 % is stored as 7.0007 %, which every view shows as 7 %."""
+    posted: list[str] = []
+    view.message_posted.connect(posted.append)
+    dialog = view.make_edit_dialog("DTAMP")
+    dialog.set_text("7")
+    dialog._buttons.accepted.emit()
+    assert doc.display("DTAMP") == "7" and posted == []
+    dialog = view.make_edit_dialog("DTAMP")
+    dialog.set_text("7.003")
+    dialog._buttons.accepted.emit()
+    assert posted == ["7.003 % rounded to 7 % (resolution 0.0061 %)"]
+
+
+@pytest.mark.parametrize("language", ["en", "de", "cs"])
+def test_the_edit_dialog_is_wide_enough_for_its_title(view, qtbot, language):
+    """Issue 34, item 20: the title showed as "Paramete… SETPOSUP" (the window manager elides
+    a title longer than the dialog, which was as narrow as its form)."""
+    from PySide6.QtGui import QFont, QFontMetrics
+
+    from prm9tool import i18n
+
+    i18n.set_language(language)
+    try:
+        dialog = view.make_edit_dialog("RAMPSETPOSUP")
+        qtbot.addWidget(dialog)
+        dialog.show()
+        bold = QFont(dialog.font())
+        bold.setBold(True)
+        title = dialog.windowTitle()
+        assert "RAMPSETPOSUP" in title
+        assert dialog.width() >= QFontMetrics(bold).horizontalAdvance(title) + 120
+    finally:
+        i18n.set_language("en")
+
+
+def test_the_columns_keep_their_width_when_a_search_leaves_the_list_empty(view, qtbot):
+    """Issue 34, item 20: the mnemonic, value and unit columns collapsed to their headers."""
+    from prm9tool.views.parameter_model import Column
+
+    view.resize(900, 500)
+    view.show()
+    header = view.table.horizontalHeader()
+    columns = (Column.MNEMONIC, Column.VALUE, Column.UNIT)
+    before = [header.sectionSize(c) for c in columns]
+    view.search.setText("no parameter is called so")
+    assert view.proxy.rowCount() == 0
+    qtbot.wait(20)
+    assert [header.sectionSize(c) for c in columns] == before
+    view.search.setText("LIMT")  # a few rows: as wide as with all of them
+    assert [header.sectionSize(c) for c in columns] == before

@@ -274,3 +274,36 @@ def test_the_history_window_says_which_store_happened(qtbot):
     assert model.meaning(upload_record) == (
         f"Written, verified and stored: Valve → Upload, {KEPT_AS_WRITTEN}"
     )
+
+
+def test_a_document_uploaded_to_another_valve_is_that_valves_and_verify_shows_its_result(
+    qtbot, window, answers, monkeypatch, tmp_path
+):
+    """Issue 34 items 4 and 13: a document read from valve 1001 and uploaded to valve 4711
+    asked "The document was read from valve 1001 …" again after Verify by restart and every
+    reconnect, showed SNV 1001, and the verification's own result never showed."""
+    from prm9tool.views import prompts
+    from prm9tool.views.parameter_model import Column
+
+    window.doc.source_serial = 1001
+    window.files.save_to(tmp_path / "valve_1001.prm")
+    answers.answers = [prompts.Button.Yes]  # continue with this document on valve 4711
+    window.connection.set_recorder(Recorder())
+    go_online(qtbot, window, f"{E02}:4711")
+    qtbot.waitUntil(lambda: not window.connection.is_busy, timeout=TIMEOUT)
+    assert len(answers.asked) == 1
+    upload(qtbot, window)
+    assert window.doc.source_serial == 4711  # the valve the document was last written to
+    Hydraulics(monkeypatch)
+    result = finish(qtbot, window, "verify_restart", window.valve.verify_by_restart)
+    qtbot.waitUntil(lambda: window.sync.active, timeout=TIMEOUT)
+    assert result.verified
+    assert len(answers.asked) == 1  # not asked again
+    assert window.status.currentMessage().endswith(f": {VERIFIED_RESTART}")
+    with qtbot.waitSignal(window.connection.online_changed, timeout=TIMEOUT):
+        window.commands["offline"].trigger()
+    model = window.parameter_view.model  # offline: the valve the document was written to
+    assert model.data(model.index(model.row_of("SNV"), Column.VALUE)) == "4711"
+    go_online(qtbot, window, f"{E02}:4711")
+    qtbot.waitUntil(lambda: window.sync.active, timeout=TIMEOUT)
+    assert len(answers.asked) == 1  # going online with it again asks nothing either

@@ -16,7 +16,7 @@ from prm9tool.files.prmfile import read_file
 from prm9tool.history.config import database_url
 from prm9tool.history.export import export_record
 from prm9tool.history.importer import import_backups
-from prm9tool.history.recorder import Recorder
+from prm9tool.history.recorder import Recorder, make_entry
 from prm9tool.history.store import MIGRATIONS, SCHEMA_HEAD, HistoryStore
 from prm9tool.paths import user_data_dir
 
@@ -338,3 +338,17 @@ def test_a_gui_characterization_online_is_recorded_and_offline_not(tmp_path):
     (record,) = recorder.store().records(4713)
     assert (record["operation"], record["outcome"]) == ("characterization", "passed")
     assert RESULT_HOOKS == []  # the hook is gone again
+
+
+def test_the_command_line_says_when_a_serial_holds_records_of_another_valve_type(tmp_path, capsys):
+    """Issue 34 item 4: --history 1001 listed the E02 of one run and the E04 of the next as
+    one valve."""
+    url = sqlite_url(tmp_path)
+    store = HistoryStore(url)
+    e02 = "PRM9-06.3Z11/30-24E02S02-CA"
+    store.append(make_entry(Valve(1001, e02), "download", "ok", factory_values(e02)))
+    store.append(make_entry(Valve(1001), "download", "ok", factory_values()))
+    store.close()
+    assert main(["--history", "1001", "--history-db", url]) == ExitCode.OK
+    err = capsys.readouterr().err
+    assert "valve 1001: record 1 is of another type key than the newest record's (" in err

@@ -201,3 +201,44 @@ def test_files_written_in_german_keep_the_point(qapp, language):
     assert out.getvalue().splitlines()[1:] == ["0.000000,12.5", "0.000200,-0.25"]
     text = prmfile.PrmContents.factory(TypeKey.parse(E04_CA)).to_text()
     assert "\nMONTHRES = 9.766  #" in text and "\nPOSKP = 0.4  #" in text
+
+
+def test_a_decimal_comma_in_the_english_program_is_an_error_in_words(qtbot, language):
+    """Issue 34 item 17: "1,5" was taken as 1.5 in the English program."""
+    doc, access = ParameterDocument(E04_CA), AccessModel(Access.EXPERT)
+    view = ParameterListView(doc, access)
+    qtbot.addWidget(view)
+    dialog = view.make_edit_dialog("POSKP")
+    dialog.set_text("1,5")
+    dialog._buttons.accepted.emit()
+    assert dialog.result() != dialog.DialogCode.Accepted
+    assert dialog.error_label.text() == (
+        "POSKP: '1,5' is not a number: the decimals follow a point (1.5)"
+    )
+    assert doc.value("POSKP") == 40 and not doc.modified
+    ctx = BlockContext(doc, access, None, None)
+    block = create_block_dialog("position_controller", ctx, "position_controller")
+    qtbot.addWidget(block)
+    field = block.gain_fields["POSKP"]
+    field.setText("1,5")
+    field.editingFinished.emit()
+    assert doc.value("POSKP") == 40
+    with pytest.raises(ValueRangeError, match="the decimals follow a point"):
+        i18n.parse_value(CATALOGUE["POSKP"], "1,5")
+    language("de")  # the German program writes the comma, and takes the point too
+    assert i18n.parse_value(CATALOGUE["POSKP"], "1,5") == 150
+    assert i18n.parse_value(CATALOGUE["POSKP"], "1.5") == 150
+
+
+def test_a_decimal_comma_in_a_file_is_an_error_with_its_line(qapp, language):
+    """Issue 34 item 17: ``POSKP = 0,9`` read as 0.9 with only the checksum warning."""
+    language("de")  # the file format is the same in every program language
+    text = prmfile.PrmContents.factory(TypeKey.parse(E04_CA)).to_text()
+    lines = text.splitlines()
+    number = next(i for i, line in enumerate(lines, 1) if line.startswith("POSKP ="))
+    lines[number - 1] = "POSKP = 0,9"
+    result = prmfile.check_bytes(("\n".join(lines) + "\n").encode())
+    assert result.contents is None
+    assert [(p.line, p.message) for p in result.errors] == [
+        (number, "POSKP: '0,9' is not a number: the decimals follow a point (0.9)")
+    ]

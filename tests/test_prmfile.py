@@ -599,3 +599,17 @@ def test_the_check_output_in_the_format_specification_is_what_prm9tool_reports()
     text = replace_line(text, "CANTERM =", "CANTERM = 0\nCOLOR = blue")
     output = "".join(p.format("edited.prm") + "\n" for p in problems_of(text))
     assert _doc_block("check") == output
+
+
+def test_values_missing_a_parameter_of_the_key_are_refused_in_words_and_nothing_is_written(
+    tmp_path,
+):
+    """Issue 34 item 6: an E02's values under an E04 key (no SENSTYPE …) were a KeyError."""
+    e02_values = PrmContents.factory(TypeKey.parse("PRM9-06.3Z11/30-24E02S02-CA")).values
+    contents = PrmContents(E04_CA, dict(e02_values))
+    path = tmp_path / "out.prm"
+    with pytest.raises(FileFormatError) as raised:
+        write_file(contents, path)
+    assert f"{path}:0: no value for SENSTYPE, SENSINV" in str(raised.value)
+    assert f"which every {E04_CA} file holds" in str(raised.value)
+    assert not path.exists()

@@ -98,3 +98,44 @@ def test_after_stop_the_legend_marks_the_values_as_those_at_stop(qtbot, scope, c
 def test_language_change_events_alone_keep_the_scope_consistent(scope):
     scope.changeEvent(QEvent(QEvent.Type.LanguageChange))  # no exception, nothing lost
     assert scope.controls.rate.count() > 0
+
+
+@pytest.mark.parametrize("language", ["de", "cs"])
+def test_a_long_measuring_point_name_is_read_whole_in_the_list(qtbot, conn, language, tmp_path):
+    """Issue 34, item 20: "Prozessabweichung nach Verstärkung und Offset …" was cut in the
+    list of a 1024-pixel window: a longer name goes on onto a second line instead."""
+    import os
+
+    from PySide6.QtCore import QRect, Qt
+    from PySide6.QtWidgets import QStyle, QStyleOptionViewItem
+
+    i18n.set_language(language)
+    try:
+        widget = ScopeWidget(conn, ParameterDocument("PRM9-10.3Z11/60-24E04S02-CA"))
+        qtbot.addWidget(widget)
+        widget.resize(1024, 700)
+        widget.show()
+        qtbot.wait(20)
+        points = widget.channels.list
+        assert points.textElideMode() == Qt.TextElideMode.ElideNone
+        wrapped = 0
+        style, metrics = points.style(), points.fontMetrics()
+        for row in range(points.count()):
+            item = points.item(row)
+            option = QStyleOptionViewItem()
+            option.initFrom(points.viewport())
+            option.rect = points.visualItemRect(item)
+            option.features |= QStyleOptionViewItem.ViewItemFeature.WrapText
+            points.itemDelegate().initStyleOption(option, points.indexFromItem(item))
+            room = style.subElementRect(QStyle.SubElement.SE_ItemViewItemText, option, points)
+            flags = Qt.TextFlag.TextWordWrap
+            needed = metrics.boundingRect(QRect(0, 0, room.width() - 4, 10_000), flags, item.text())
+            assert needed.height() <= room.height(), item.text()  # every line of it shown
+            wrapped += needed.height() > metrics.height() + 2
+        assert wrapped >= (language == "de")  # "Prozessabweichung …" took a second line
+        if os.environ.get("PRM9TOOL_SCREENSHOTS"):
+            widget.grab().save(
+                os.path.join(os.environ["PRM9TOOL_SCREENSHOTS"], f"scope_e04_{language}.png")
+            )
+    finally:
+        i18n.set_language("en")

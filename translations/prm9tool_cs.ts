@@ -397,6 +397,18 @@ Poslední akce možná nebyla dokončena. Uložte svou práci pod novým názvem
             <translation>Přenosová rychlost</translation>
         </message>
         <message>
+            <source>as the adapter is set</source>
+            <translation>jak je nastaven adaptér</translation>
+        </message>
+        <message>
+            <source>Online with {0} on this bus: the nodes are shown as they tell about themselves (nothing is sent). Go offline to search the bus or to choose another valve.</source>
+            <translation>Online s {0} na této sběrnici: uzly se zobrazují tak, jak o sobě samy dávají vědět (nic se neodesílá). Chcete-li sběrnici prohledat nebo zvolit jiný ventil, přejděte do režimu offline.</translation>
+        </message>
+        <message>
+            <source>Online with {0}: search the bus to watch its nodes; go offline to go online with one of them.</source>
+            <translation>Online s {0}: prohledejte sběrnici a sledujte její uzly; chcete-li se připojit k některému z nich, přejděte nejprve do režimu offline.</translation>
+        </message>
+        <message>
             <source>Searching the bus (node IDs 1…127)…</source>
             <translation>Prohledává se sběrnice (ID uzlů 1…127)…</translation>
         </message>
@@ -435,6 +447,14 @@ Poslední akce možná nebyla dokončena. Uložte svou práci pod novým názvem
         <message>
             <source>new on the bus: search again to identify it</source>
             <translation>nový na sběrnici: pro rozpoznání hledejte znovu</translation>
+        </message>
+        <message>
+            <source>the valve prm9tool is online with</source>
+            <translation>ventil, se kterým je prm9tool online</translation>
+        </message>
+        <message>
+            <source>heard on the bus</source>
+            <translation>slyšen na sběrnici</translation>
         </message>
         <message>
             <source>{0} (boot-up {1:.1f} s ago)</source>
@@ -612,6 +632,14 @@ Poslední akce možná nebyla dokončena. Uložte svou práci pod novým názvem
         <message>
             <source>Position read by the valve at its last power-up</source>
             <translation>Poloha načtená ventilem při posledním zapnutí</translation>
+        </message>
+        <message>
+            <source>Settings made by software (over CANopen)</source>
+            <translation>Nastavení softwarem (přes CANopen)</translation>
+        </message>
+        <message>
+            <source>Settings made by software</source>
+            <translation>Nastavení softwarem</translation>
         </message>
         <message>
             <source>The node-ID switch is not at 0: the switch sets the node ID.</source>
@@ -2224,6 +2252,10 @@ Ano načte a záznam zařadí do fronty; Ne nenačte nic.</translation>
             <source>User, station, link</source>
             <translation>Uživatel, stanice, připojení</translation>
         </message>
+        <message>
+            <source>Marked {0}: records of another valve type than {1} under this serial number — another valve (emulated valves of two runs of the program may share a serial number); compare or restore them only knowingly.</source>
+            <translation>Označeno {0}: záznamy jiného typu ventilu než {1} pod tímto výrobním číslem — jiný ventil (emulované ventily dvou běhů programu mohou mít stejné výrobní číslo); porovnávejte nebo obnovujte je jen vědomě.</translation>
+        </message>
         <message numerus="yes">
             <source>%n more</source>
             <translation>
@@ -2231,6 +2263,38 @@ Ano načte a záznam zařadí do fronty; Ne nenačte nic.</translation>
                 <numerusform>%n další</numerusform>
                 <numerusform>%n dalších</numerusform>
             </translation>
+        </message>
+        <message>
+            <source>position loop</source>
+            <translation>regulační smyčka polohy</translation>
+        </message>
+        <message>
+            <source>process loop</source>
+            <translation>regulační smyčka procesní veličiny</translation>
+        </message>
+        <message>
+            <source>profile {0}</source>
+            <translation>profil {0}</translation>
+        </message>
+        <message>
+            <source>failed: {0}</source>
+            <translation>nevyhovělo: {0}</translation>
+        </message>
+        <message>
+            <source>PDF {0}</source>
+            <translation>PDF {0}</translation>
+        </message>
+        <message>
+            <source>proposed {0}</source>
+            <translation>navrženo {0}</translation>
+        </message>
+        <message>
+            <source>misses the targets</source>
+            <translation>nesplňuje cíle</translation>
+        </message>
+        <message>
+            <source>not found</source>
+            <translation>nenalezeno</translation>
         </message>
         <message>
             <source>Read from the valve</source>
@@ -2279,6 +2343,22 @@ Ano načte a záznam zařadí do fronty; Ne nenačte nic.</translation>
         <message>
             <source>Restarted and read back (Valve → Verify by restart…)</source>
             <translation>Restartováno a zpětně načteno (Ventil → Ověřit restartem…)</translation>
+        </message>
+        <message>
+            <source>Restarted (Valve → Restart valve)</source>
+            <translation>Restartováno (Ventil → Restart ventilu)</translation>
+        </message>
+        <message>
+            <source>Autotune run</source>
+            <translation>Běh Autotune</translation>
+        </message>
+        <message>
+            <source>Frequency response measured</source>
+            <translation>Frekvenční charakteristika změřena</translation>
+        </message>
+        <message>
+            <source>Test report saved</source>
+            <translation>Zkušební protokol uložen</translation>
         </message>
         <message>
             <source>stored with 0x1010</source>
@@ -3214,6 +3294,10 @@ Ano načte a záznam zařadí do fronty; Ne nenačte nic.</translation>
             <translation>Expertní úroveň zpřístupní regulátory a linearizace. Jejich změna vyžaduje odpovídající kvalifikaci.</translation>
         </message>
         <message>
+            <source>The password as delivered is written in the help, under “Access levels” (F1, or &lt;a href=&quot;help&quot;&gt;open the help&lt;/a&gt;). A password changed since is known to whoever changed it.</source>
+            <translation>Heslo ve stavu při dodání je uvedeno v nápovědě v části „Úrovně oprávnění“ (F1 nebo &lt;a href=&quot;help&quot;&gt;otevřít nápovědu&lt;/a&gt;). Heslo změněné od té doby zná ten, kdo je změnil.</translation>
+        </message>
+        <message>
             <source>Password:</source>
             <translation>Heslo:</translation>
         </message>
@@ -3267,6 +3351,10 @@ Ano načte a záznam zařadí do fronty; Ne nenačte nic.</translation>
         <message>
             <source>{0}: {1} is far outside the range</source>
             <translation>{0}: {1} je daleko mimo rozsah</translation>
+        </message>
+        <message>
+            <source>{0}: {1} is not a number: the decimals follow a point ({2})</source>
+            <translation>{0}: {1} není číslo: desetinná místa následují za tečkou ({2})</translation>
         </message>
         <message>
             <source>{0}: expected text, got {1}</source>
@@ -3383,6 +3471,10 @@ Ano načte a záznam zařadí do fronty; Ne nenačte nic.</translation>
         <message>
             <source>{0} is set twice (first on line {1})</source>
             <translation>{0} je nastaven dvakrát (poprvé na řádku {1})</translation>
+        </message>
+        <message>
+            <source>no value for {0}, which every {1} file holds: these are not the values of such a valve</source>
+            <translation>chybí hodnota {0}, kterou obsahuje každý soubor pro {1}: nejsou to hodnoty takového ventilu</translation>
         </message>
         <message>
             <source>too large to be a parameter file ({0} bytes, more than {1})</source>
@@ -3584,6 +3676,57 @@ Ano načte a záznam zařadí do fronty; Ne nenačte nic.</translation>
         <message>
             <source>PRM9 parameter record {0}</source>
             <translation>Protokol parametrů PRM9 {0}</translation>
+        </message>
+    </context>
+    <context>
+        <name>RecordDetailsDialog</name>
+        <message>
+            <source>History record {0} of valve {1}</source>
+            <translation>Záznam historie {0} ventilu {1}</translation>
+        </message>
+        <message>
+            <source>What was done</source>
+            <translation>Co bylo provedeno</translation>
+        </message>
+        <message>
+            <source>Outcome</source>
+            <translation>Výsledek</translation>
+        </message>
+        <message>
+            <source>Time (UTC)</source>
+            <translation>Čas (UTC)</translation>
+        </message>
+        <message>
+            <source>Type key</source>
+            <translation>Typový klíč</translation>
+        </message>
+        <message>
+            <source>Firmware</source>
+            <translation>Firmware</translation>
+        </message>
+        <message>
+            <source>User, station, link</source>
+            <translation>Uživatel, stanice, připojení</translation>
+        </message>
+        <message>
+            <source>Failed figures:</source>
+            <translation>Nevyhovující hodnoty:</translation>
+        </message>
+        <message>
+            <source>Open the PDF</source>
+            <translation>Otevřít PDF</translation>
+        </message>
+        <message>
+            <source>Compare with the record before</source>
+            <translation>Porovnat s předchozím záznamem</translation>
+        </message>
+        <message>
+            <source>Details:</source>
+            <translation>Podrobnosti:</translation>
+        </message>
+        <message>
+            <source>The PDF cannot be opened: {0}</source>
+            <translation>PDF nelze otevřít: {0}</translation>
         </message>
     </context>
     <context>
@@ -5096,6 +5239,10 @@ Ano je porovná jako obvykle (bez dotazu se nic nezapíše); Ne přejde do reži
         <message>
             <source>Online: parameters read from the valve</source>
             <translation>Online: parametry načteny z ventilu</translation>
+        </message>
+        <message>
+            <source>{0}: the valve is a {1}, so the document is a new, unsaved one ({2} stays as it is)</source>
+            <translation>{0}: ventil je {1}, proto je dokument nový, neuložený ({2} zůstává beze změny)</translation>
         </message>
         <message>
             <source>The valve reports an unknown type key: {0}</source>

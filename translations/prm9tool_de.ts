@@ -397,6 +397,18 @@ Die letzte Aktion wurde womöglich nicht vollständig ausgeführt. Speichern Sie
             <translation>Bitrate</translation>
         </message>
         <message>
+            <source>as the adapter is set</source>
+            <translation>wie der Adapter eingestellt ist</translation>
+        </message>
+        <message>
+            <source>Online with {0} on this bus: the nodes are shown as they tell about themselves (nothing is sent). Go offline to search the bus or to choose another valve.</source>
+            <translation>Online mit {0} an diesem Bus: Die Knoten werden so gezeigt, wie sie sich selbst melden (es wird nichts gesendet). Gehen Sie offline, um den Bus zu durchsuchen oder ein anderes Ventil zu wählen.</translation>
+        </message>
+        <message>
+            <source>Online with {0}: search the bus to watch its nodes; go offline to go online with one of them.</source>
+            <translation>Online mit {0}: Durchsuchen Sie den Bus, um seine Knoten zu beobachten; um mit einem von ihnen online zu gehen, gehen Sie zuerst offline.</translation>
+        </message>
+        <message>
             <source>Searching the bus (node IDs 1…127)…</source>
             <translation>Bus wird durchsucht (Knoten-IDs 1…127)…</translation>
         </message>
@@ -433,6 +445,14 @@ Die letzte Aktion wurde womöglich nicht vollständig ausgeführt. Speichern Sie
         <message>
             <source>new on the bus: search again to identify it</source>
             <translation>neu am Bus: erneut suchen, um ihn zu erkennen</translation>
+        </message>
+        <message>
+            <source>the valve prm9tool is online with</source>
+            <translation>das Ventil, mit dem prm9tool online ist</translation>
+        </message>
+        <message>
+            <source>heard on the bus</source>
+            <translation>am Bus gehört</translation>
         </message>
         <message>
             <source>{0} (boot-up {1:.1f} s ago)</source>
@@ -610,6 +630,14 @@ Die letzte Aktion wurde womöglich nicht vollständig ausgeführt. Speichern Sie
         <message>
             <source>Position read by the valve at its last power-up</source>
             <translation>Beim letzten Einschalten vom Ventil gelesene Stellung</translation>
+        </message>
+        <message>
+            <source>Settings made by software (over CANopen)</source>
+            <translation>Einstellungen per Software (über CANopen)</translation>
+        </message>
+        <message>
+            <source>Settings made by software</source>
+            <translation>Einstellungen per Software</translation>
         </message>
         <message>
             <source>The node-ID switch is not at 0: the switch sets the node ID.</source>
@@ -2210,12 +2238,48 @@ Ja lädt hoch und stellt den Eintrag in die Warteschlange; Nein lädt nichts hoc
             <source>User, station, link</source>
             <translation>Benutzer, Station, Verbindung</translation>
         </message>
+        <message>
+            <source>Marked {0}: records of another valve type than {1} under this serial number — another valve (emulated valves of two runs of the program may share a serial number); compare or restore them only knowingly.</source>
+            <translation>Mit {0} markiert: Einträge eines anderen Ventiltyps als {1} unter dieser Seriennummer — ein anderes Ventil (emulierte Ventile zweier Programmläufe können eine Seriennummer teilen); nur bewusst vergleichen oder wiederherstellen.</translation>
+        </message>
         <message numerus="yes">
             <source>%n more</source>
             <translation>
                 <numerusform>%n weiterer</numerusform>
                 <numerusform>%n weitere</numerusform>
             </translation>
+        </message>
+        <message>
+            <source>position loop</source>
+            <translation>Lageregelkreis</translation>
+        </message>
+        <message>
+            <source>process loop</source>
+            <translation>Prozessregelkreis</translation>
+        </message>
+        <message>
+            <source>profile {0}</source>
+            <translation>Profil {0}</translation>
+        </message>
+        <message>
+            <source>failed: {0}</source>
+            <translation>nicht bestanden: {0}</translation>
+        </message>
+        <message>
+            <source>PDF {0}</source>
+            <translation>PDF {0}</translation>
+        </message>
+        <message>
+            <source>proposed {0}</source>
+            <translation>vorgeschlagen {0}</translation>
+        </message>
+        <message>
+            <source>misses the targets</source>
+            <translation>verfehlt die Ziele</translation>
+        </message>
+        <message>
+            <source>not found</source>
+            <translation>nicht gefunden</translation>
         </message>
         <message>
             <source>Read from the valve</source>
@@ -2264,6 +2328,22 @@ Ja lädt hoch und stellt den Eintrag in die Warteschlange; Nein lädt nichts hoc
         <message>
             <source>Restarted and read back (Valve → Verify by restart…)</source>
             <translation>Neu gestartet und zurückgelesen (Ventil → Durch Neustart prüfen…)</translation>
+        </message>
+        <message>
+            <source>Restarted (Valve → Restart valve)</source>
+            <translation>Neu gestartet (Ventil → Ventil neu starten)</translation>
+        </message>
+        <message>
+            <source>Autotune run</source>
+            <translation>Autotune-Lauf</translation>
+        </message>
+        <message>
+            <source>Frequency response measured</source>
+            <translation>Frequenzgang gemessen</translation>
+        </message>
+        <message>
+            <source>Test report saved</source>
+            <translation>Prüfprotokoll gespeichert</translation>
         </message>
         <message>
             <source>stored with 0x1010</source>
@@ -3195,6 +3275,10 @@ Ja lädt hoch und stellt den Eintrag in die Warteschlange; Nein lädt nichts hoc
             <translation>Die Expertenstufe gibt die Regler und die Linearisierungen frei. Ihre Änderung erfordert die entsprechende Qualifikation.</translation>
         </message>
         <message>
+            <source>The password as delivered is written in the help, under “Access levels” (F1, or &lt;a href=&quot;help&quot;&gt;open the help&lt;/a&gt;). A password changed since is known to whoever changed it.</source>
+            <translation>Das Passwort im Auslieferungszustand steht in der Hilfe unter „Berechtigungsstufen“ (F1 oder &lt;a href=&quot;help&quot;&gt;Hilfe öffnen&lt;/a&gt;). Ein seither geändertes Passwort kennt, wer es geändert hat.</translation>
+        </message>
+        <message>
             <source>Password:</source>
             <translation>Passwort:</translation>
         </message>
@@ -3248,6 +3332,10 @@ Ja lädt hoch und stellt den Eintrag in die Warteschlange; Nein lädt nichts hoc
         <message>
             <source>{0}: {1} is far outside the range</source>
             <translation>{0}: {1} liegt weit außerhalb des Bereichs</translation>
+        </message>
+        <message>
+            <source>{0}: {1} is not a number: the decimals follow a point ({2})</source>
+            <translation>{0}: {1} ist keine Zahl: die Dezimalstellen folgen einem Punkt ({2})</translation>
         </message>
         <message>
             <source>{0}: expected text, got {1}</source>
@@ -3364,6 +3452,10 @@ Ja lädt hoch und stellt den Eintrag in die Warteschlange; Nein lädt nichts hoc
         <message>
             <source>{0} is set twice (first on line {1})</source>
             <translation>{0} ist zweimal gesetzt (zuerst in Zeile {1})</translation>
+        </message>
+        <message>
+            <source>no value for {0}, which every {1} file holds: these are not the values of such a valve</source>
+            <translation>kein Wert für {0}, den jede Datei für {1} enthält: das sind nicht die Werte eines solchen Ventils</translation>
         </message>
         <message>
             <source>too large to be a parameter file ({0} bytes, more than {1})</source>
@@ -3565,6 +3657,57 @@ Ja lädt hoch und stellt den Eintrag in die Warteschlange; Nein lädt nichts hoc
         <message>
             <source>PRM9 parameter record {0}</source>
             <translation>PRM9-Parameterprotokoll {0}</translation>
+        </message>
+    </context>
+    <context>
+        <name>RecordDetailsDialog</name>
+        <message>
+            <source>History record {0} of valve {1}</source>
+            <translation>Verlaufseintrag {0} des Ventils {1}</translation>
+        </message>
+        <message>
+            <source>What was done</source>
+            <translation>Was getan wurde</translation>
+        </message>
+        <message>
+            <source>Outcome</source>
+            <translation>Ergebnis</translation>
+        </message>
+        <message>
+            <source>Time (UTC)</source>
+            <translation>Zeit (UTC)</translation>
+        </message>
+        <message>
+            <source>Type key</source>
+            <translation>Typenschlüssel</translation>
+        </message>
+        <message>
+            <source>Firmware</source>
+            <translation>Firmware</translation>
+        </message>
+        <message>
+            <source>User, station, link</source>
+            <translation>Benutzer, Station, Verbindung</translation>
+        </message>
+        <message>
+            <source>Failed figures:</source>
+            <translation>Nicht bestandene Kennwerte:</translation>
+        </message>
+        <message>
+            <source>Open the PDF</source>
+            <translation>PDF öffnen</translation>
+        </message>
+        <message>
+            <source>Compare with the record before</source>
+            <translation>Mit dem Eintrag davor vergleichen</translation>
+        </message>
+        <message>
+            <source>Details:</source>
+            <translation>Details:</translation>
+        </message>
+        <message>
+            <source>The PDF cannot be opened: {0}</source>
+            <translation>Das PDF lässt sich nicht öffnen: {0}</translation>
         </message>
     </context>
     <context>
@@ -5071,6 +5214,10 @@ Ja vergleicht beide wie gewohnt (ohne Rückfrage wird nichts geschrieben); Nein 
         <message>
             <source>Online: parameters read from the valve</source>
             <translation>Online: Parameter aus dem Ventil gelesen</translation>
+        </message>
+        <message>
+            <source>{0}: the valve is a {1}, so the document is a new, unsaved one ({2} stays as it is)</source>
+            <translation>{0}: das Ventil ist ein {1}, daher ist das Dokument ein neues, ungespeichertes ({2} bleibt unverändert)</translation>
         </message>
         <message>
             <source>The valve reports an unknown type key: {0}</source>

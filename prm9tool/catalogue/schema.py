@@ -278,16 +278,27 @@ class Parameter:
                 return _tidy(text)
         return repr(value)
 
-    def parse_display(self, text: str) -> int | str:
+    def parse_display(self, text: str, decimal: str = ".") -> int | str:
         """Parse a display text to a raw value; raises ValueRangeError with the reason.
 
-        A number is ASCII digits with an optional sign, one decimal point or comma and an
-        exponent (``-2.5``, ``0,4``, ``1e3``); other digits (``２４００``, ``٢٤٠٠``), ``2_400``,
-        ``inf`` and ``nan`` are not numbers, whatever Python's ``float()`` would accept.
+        A number is ASCII digits with an optional sign, one decimal point and an exponent
+        (``-2.5``, ``1e3``); ``decimal`` is a second decimal separator taken as well (``,``:
+        the program language writes ``0,4``). A comma where only the point is the separator
+        (a file, the English program) is refused in words, not read as a point. Other digits
+        (``２４００``, ``٢٤٠٠``), ``2_400``, ``inf`` and ``nan`` are not numbers, whatever
+        Python's ``float()`` would accept.
         """
         if self.is_string:
             return text
-        cleaned = text.strip().replace(",", ".") if text.count(",") == 1 else text.strip()
+        cleaned = text.strip()
+        if decimal != "." and cleaned.count(decimal) == 1:
+            cleaned = cleaned.replace(decimal, ".")
+        elif cleaned.count(",") == 1 and _is_number(cleaned.replace(",", ".")):
+            raise ValueRangeError(
+                QT_TRANSLATE_NOOP(
+                    "Problems", "{0}: {1} is not a number: the decimals follow a point ({2})"
+                )(self.mnemonic, quoted(cleaned), cleaned.replace(",", "."))
+            )
         if self.choices and not _is_number(cleaned):
             for code, label in self.choices:
                 if cleaned.lower() in (label.en.lower(), label.de.lower(), label.cs.lower()):

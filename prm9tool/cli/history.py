@@ -10,6 +10,7 @@ from typing import Any
 
 from prm9tool.errors import ExitCode, FileFormatError, HistoryError
 from prm9tool.history import decoded
+from prm9tool.history.chain import other_type
 from prm9tool.history.recorder import Recorder
 
 
@@ -50,6 +51,13 @@ def _list(recorder: Recorder, serial_text: str, as_json: bool) -> int:
               file=sys.stderr)  # fmt: skip
     for record in records:
         print(summary_line(record))
+    other = other_type(records)
+    if other:  # a valve's type key never changes: another valve under this serial number
+        numbers = ", ".join(str(records[i]["seq"]) for i in other)
+        which = f"records {numbers} are" if len(other) > 1 else f"record {numbers} is"
+        print(f"prm9tool: valve {serial_text}: {which} of another type key than "
+              f"the newest record's ({records[-1]['type_key']}): another valve under the same "
+              "serial number", file=sys.stderr)  # fmt: skip
     return ExitCode.OK
 
 

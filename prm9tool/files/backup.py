@@ -19,7 +19,7 @@ from typing import Any
 from prm9tool.catalogue.typekey import TypeKey
 from prm9tool.errors import FileFormatError, FileProblem
 from prm9tool.files.atomicfile import atomic_write
-from prm9tool.files.prmfile import BANNER, PrmContents, check_bytes, write_file
+from prm9tool.files.prmfile import BANNER, PrmContents, check_bytes, text_for, write_file
 from prm9tool.paths import user_data_dir
 
 Progress = Callable[[int, int, str], None]
@@ -65,7 +65,7 @@ def write_device_file(
     every problem; reading such a file reports those problems, so it is never uploaded as it
     is. Returns the problems (empty for a valid set). FileFormatError only if writing fails.
     """
-    text = contents.to_text()
+    text = text_for(contents, path)
     errors = check_bytes(text.encode("utf-8")).errors
     if not errors:
         write_file(contents, path, backup=backup)

@@ -39,6 +39,19 @@ def remember(data_dir: Path, serial: int, type_key: str) -> None:
     """Remember ``type_key`` for ``serial`` (validated first: TypeKeyError if invalid)."""
     keys = _load(data_dir)
     keys[str(serial)] = str(TypeKey.parse(type_key))
+    _save(data_dir, keys)
+
+
+def forget(data_dir: Path, serial: int, type_key: str) -> None:
+    """Forget the key remembered for ``serial`` if it is ``type_key`` (the valve contradicted
+    it); another key remembered since stays."""
+    keys = _load(data_dir)
+    if keys.get(str(serial)) == type_key:
+        del keys[str(serial)]
+        _save(data_dir, keys)
+
+
+def _save(data_dir: Path, keys: dict[str, object]) -> None:
     path = _path(data_dir)
     path.parent.mkdir(parents=True, exist_ok=True)
     text = json.dumps(keys, indent=1, sort_keys=True) + "\n"

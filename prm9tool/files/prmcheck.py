@@ -303,9 +303,8 @@ def _check_value(
 
 def _rounding(param: Parameter, text: str, raw: int | str) -> Message | None:
     """A warning when ``text`` is not exactly a value the valve can hold, else None."""
-    cleaned = text.replace(",", ".") if text.count(",") == 1 else text
     try:
-        written = float(cleaned)
+        written = float(text)
     except ValueError:
         return None  # a choice label such as "±10 V bipolar"
     stored = param.format_display(raw)

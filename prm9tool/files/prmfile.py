@@ -24,7 +24,7 @@ from pathlib import Path
 from prm9tool.catalogue import CATALOGUE, Parameter
 from prm9tool.catalogue.typekey import TypeKey
 from prm9tool.errors import FileFormatError, FileProblem
-from prm9tool.files.atomicfile import atomic_write
+from prm9tool.files.atomicfile import atomic_write, remove_stale_temporaries
 from prm9tool.files.prmcheck import (
     FORMAT_NAME,
     FORMAT_VERSION,
@@ -34,7 +34,7 @@ from prm9tool.files.prmcheck import (
     escape_text,
 )
 from prm9tool.files.prmlexer import CONTROL_CHARACTERS, Lexer, check_integrity, checksum
-from prm9tool.messages import QT_TRANSLATE_NOOP
+from prm9tool.messages import QT_TRANSLATE_NOOP, Message
 
 MAX_FILE_SIZE = 1 << 20  # a full file is about 4 kB; anything near 1 MiB is not a *.prm file
 BANNER = (
@@ -63,7 +63,14 @@ class PrmContents:
         return cls(type_key, {p.mnemonic: p.default_for(type_key.variant) for p in params})
 
     def to_text(self) -> str:
-        """The file text: header, parameters in catalogue order, unknown entries, checksum."""
+        """The file text: header, parameters in catalogue order, unknown entries, checksum.
+
+        FileFormatError (path ``<parameter set>``) when a value the type key's file must hold
+        is missing: a value may be absent only where a -CA valve has no object at this
+        project's own address (written empty, marked not available)."""
+        missing = self.missing_values()
+        if missing:
+            raise FileFormatError("<parameter set>", [FileProblem(0, _missing_text(self, missing))])
         lines: list[str] = []
         self._emit(lines, "format", f"{FORMAT_NAME} {FORMAT_VERSION}", list(BANNER))
         self._emit(lines, "type_key", str(self.type_key))
@@ -73,8 +80,6 @@ class PrmContents:
             self._emit(lines, "firmware", escape_text(self.firmware))
         for number, param in enumerate(CATALOGUE.file_parameters(self.type_key.variant)):
             raw = self.values.get(param.mnemonic)
-            if raw is None and (param.address_from_manual or not self.type_key.canopen):
-                raise KeyError(param.mnemonic)  # only this project's objects, only on -CA keys
             value = "" if raw is None else param.format_display(raw)
             hint = _hint(param) if raw is not None else NOT_AVAILABLE_HINT
             self._emit(lines, param.mnemonic, value, [""] if number == 0 else [], hint)
@@ -83,6 +88,16 @@ class PrmContents:
         lines.extend(self.comments.get("checksum", [""]))
         lines.append(f"checksum = {checksum(lines)}")
         return "\n".join(lines) + "\n"
+
+    def missing_values(self) -> list[str]:
+        """The parameters of the type key's file without a value that the file cannot mark
+        "not available" (the manual's objects, or any on a key without -CA)."""
+        return [
+            param.mnemonic
+            for param in CATALOGUE.file_parameters(self.type_key.variant)
+            if param.mnemonic not in self.values
+            and (param.address_from_manual or not self.type_key.canopen)
+        ]
 
     def _emit(
         self,
@@ -96,6 +111,17 @@ class PrmContents:
         value = _escape_controls(value)  # values from a device are data, never file structure
         entry = _entry_text(name, value)
         lines.append(entry + self.inline_comments.get(name, hint))
+
+
+_MISSING = QT_TRANSLATE_NOOP(
+    "Problems",
+    "no value for {0}, which every {1} file holds: these are not the values of such a valve",
+)
+
+
+def _missing_text(contents: PrmContents, missing: list[str]) -> Message:
+    names = ", ".join(missing[:4]) + (f" … ({len(missing)})" if len(missing) > 4 else "")
+    return _MISSING(names, str(contents.type_key))
 
 
 def _escape_controls(value: str) -> str:
@@ -199,7 +225,10 @@ def read_bytes(data: bytes, path: str = "<bytes>") -> PrmContents:
 
 
 def read_file(path: str | os.PathLike[str]) -> PrmContents:
-    """Read a *.prm file; raises FileFormatError listing every problem (never anything else)."""
+    """Read a *.prm file; raises FileFormatError listing every problem (never anything else).
+
+    Removes the temporary files that a killed save of it left (atomicfile)."""
+    remove_stale_temporaries(Path(path))
     return _contents_or_raise(check_file(path), os.fspath(path))
 
 
@@ -210,6 +239,14 @@ def _contents_or_raise(result: CheckResult, path: str) -> PrmContents:
 
 
 # --- writing ----------------------------------------------------------------------------------
+def text_for(contents: PrmContents, path: str | os.PathLike[str]) -> str:
+    """``contents.to_text()``; its FileFormatError names ``path``."""
+    try:
+        return contents.to_text()
+    except FileFormatError as exc:
+        raise FileFormatError(os.fspath(path), exc.problems) from None
+
+
 def write_file(
     contents: PrmContents, path: str | os.PathLike[str], backup: bool = True
 ) -> PrmContents:
@@ -221,7 +258,7 @@ def write_file(
     Refuses (FileFormatError, nothing written) to write a file it could not read back, and
     turns I/O errors into FileFormatError (line 0); the old file is then untouched.
     """
-    text = contents.to_text()
+    text = text_for(contents, path)
     result = check_bytes(text.encode("utf-8"))
     if result.contents is None:
         raise FileFormatError(os.fspath(path), result.errors)

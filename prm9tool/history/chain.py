@@ -10,7 +10,7 @@ from __future__ import annotations
 
 import hashlib
 import json
-from collections.abc import Mapping
+from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, field, fields
 from typing import Any
 
@@ -75,3 +75,14 @@ def record_hash(row: Mapping[str, Any]) -> str:
     """SHA-256 (hex) of the hashed fields of a stored row (details/parameters as stored text)."""
     content = canonical([row[name] for name in HASHED])
     return hashlib.sha256(content.encode("utf-8")).hexdigest()
+
+
+def other_type(records: Sequence[Mapping[str, Any]], type_key: str | None = None) -> list[int]:
+    """The positions of the records whose type key is not the chain's: ``type_key`` (the
+    valve's now) or, without one, the newest record's. A valve's type key never changes, so
+    such a record is of another valve recorded under the same serial number (emulated valves
+    of two runs of the program that both took serial 1001)."""
+    if not records:
+        return []
+    wanted = type_key or str(records[-1]["type_key"])
+    return [i for i, record in enumerate(records) if str(record["type_key"]) != wanted]

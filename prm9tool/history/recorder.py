@@ -38,7 +38,7 @@ Raw = int | str
 # operations (docs/history.md); "characterization" is reserved for test results (issue 17)
 OPERATIONS = (
     "download", "upload", "store", "restore-factory", "online-edits", "batch-upload",
-    "backup", "characterization",
+    "backup", "characterization", "restart", "autotune", "frequency-response", "report-saved",
 )  # fmt: skip
 
 
@@ -79,7 +79,19 @@ class Details(TypedDict, total=False):
     changes: dict[str, list[int | str]]  # online changes: mnemonic -> [from, to] (raw)
     source: str  # online changes: the file or the history record the values came from
     what: str  # tuning accepted: what was accepted
-    loop: str  # tuning accepted: the loop it was accepted for
+    loop: str  # tuning accepted, autotune, report-saved: the loop
+    pdf: str  # report-saved: the PDF file the test report was saved as
+    rounds: int  # autotune: the rounds it took
+    meets_targets: bool  # autotune: the proposal meets the profile's targets
+    proposed: dict[str, list[int | None]]  # autotune: mnemonic -> [before, proposed] (raw)
+    before: dict[str, float | None]  # autotune: the step with the gains before
+    after: dict[str, float | None]  # autotune: the step with the proposed gains
+    amplitude_pct: float | None  # frequency-response: the sweep's amplitude
+    centre_pct: float | None  # frequency-response: the sweep's centre
+    bandwidth_hz: float | None  # frequency-response: −3 dB (None: not found)
+    phase_90_hz: float | None  # frequency-response: −90° (None: not found)
+    limited_to_hz: float | None  # frequency-response: the sweep's end when the link limited it
+    lost_samples: int  # frequency-response: samples the link lost
 
 
 def now_utc() -> str:
@@ -129,6 +141,7 @@ class Recorder:
         self.queue = queue or queue_path()
         self._store: HistoryStore | None = None
         self._lock = threading.RLock()
+        self._later: list[Entry] = []  # add_later(): written before the store is next used
 
     def store(self) -> HistoryStore:
         """The open database (opened and migrated on first use); HistoryError if it cannot."""
@@ -139,6 +152,9 @@ class Recorder:
                 self._store = HistoryStore(self.url)
                 self._flush(self._store)
                 self._import_backups_once(self._store)
+            later, self._later = self._later, []
+            for entry in later:  # before anything else reads or writes the store
+                self._append_or_queue(self._store, entry)
             return self._store
 
     def _import_backups_once(self, store: HistoryStore) -> None:
@@ -194,6 +210,39 @@ class Recorder:
             return "queued"
         return "recorded"
 
+    def add_later(self, entry: Entry) -> None:
+        """Take a prepared entry now and write it on the next use of the store (or by
+        :meth:`write_later`): the caller need not wait for the database to open — the first
+        use imports SQLAlchemy and Alembic and checks the migrations (~0.3 s), which delayed
+        the GUI's first download (issue 34, item 22). Every read and write of the store comes
+        after it, so nobody sees the history without it."""
+        with self._lock:
+            self._later.append(entry)
+
+    def write_later(self) -> str:
+        """Write the entries of :meth:`add_later`; ``"recorded"``, or ``"queued"`` when the
+        database cannot be reached (they wait in the local queue then). Raises HistoryError
+        only when the local queue could not take them either."""
+        try:
+            self.store()
+        except HistoryError as exc:
+            with self._lock:
+                later, self._later = self._later, []
+                for entry in later:
+                    self._enqueue(entry, exc)
+            return "queued" if later else "recorded"
+        return "recorded"
+
+    def _append_or_queue(self, store: HistoryStore, entry: Entry) -> None:
+        try:
+            store.append(entry, _marks_backup(entry))
+        except HistoryError as exc:
+            log.warning("history: %s; the record is kept in %s", exc, self.queue)
+            try:
+                self._enqueue(entry, exc)
+            except HistoryError as lost:
+                log.error("history: %s", lost)
+
     def record_safely(self, info: ValveIdentity, *args: Any, **kwargs: Any) -> str | None:
         """:meth:`record`, but a failure is logged and returned as text instead of raised."""
         try:
@@ -204,8 +253,13 @@ class Recorder:
         return None
 
     def close(self) -> None:
-        """Close the database connections."""
+        """Close the database connections (what :meth:`add_later` took is written first)."""
         with self._lock:
+            if self._later:
+                try:
+                    self.write_later()
+                except HistoryError as exc:
+                    log.error("history: %s", exc)
             if self._store is not None:
                 self._store.close()
                 self._store = None

@@ -47,6 +47,7 @@ class ParameterDocument(QObject):
     type_key_changed = Signal(str)
     modified_changed = Signal(bool)
     path_changed = Signal(str)
+    source_changed = Signal()  # source_serial / source_firmware: the valve it belongs to
     validity_changed = Signal()  # problems() may have changed
 
     def __init__(self, type_key: TypeKey | str, parent: QObject | None = None) -> None:
@@ -86,6 +87,29 @@ class ParameterDocument(QObject):
     def path(self) -> Path | None:
         """The file the document was loaded from or saved to."""
         return self._path
+
+    def set_source(self, serial: int | None, firmware: str | None) -> None:
+        """The valve the values were last read from or written to (SNV, FWVER offline; the
+        serial a file is saved with): not an edit, not undoable, not a modification."""
+        if (serial, firmware) == (self.source_serial, self.source_firmware):
+            return
+        self.source_serial, self.source_firmware = serial, firmware
+        self.source_changed.emit()
+
+    @property
+    def file_type_key(self) -> TypeKey | None:
+        """The valve type of the file at :attr:`path` (as last opened or saved), None
+        without a file: Save writes into that file only while the document is of its type."""
+        return self._saved[0] if self._path is not None else None
+
+    def detach_file(self) -> None:
+        """The document becomes a new, unsaved one (its values kept): the file it came from
+        stays as it is, and Save asks for a name."""
+        if self._path is None:
+            return
+        self._path = None
+        self.path_changed.emit("")
+        self._emit_modified()
 
     @property
     def modified(self) -> bool:

@@ -63,12 +63,19 @@ def rounding_note(param: Parameter, entered: str, raw: Raw) -> Message | None:
         typed = float(typed_text)
     except ValueError:
         return None
-    if math.isclose(typed, raw * param.scale, rel_tol=1e-9, abs_tol=param.scale * 1e-6):
+    shown = param.format_display(raw)  # as every editor, the list and the file show it
+    if float(shown) == typed:  # "7 %" of 0.0061 % steps is 7.0007 %, shown as the 7 typed
         return None
     unit = f" {param.unit}" if param.unit else ""
-    return _ROUNDED(
-        Number(typed_text), unit, Number(param.format_display(raw)), Number(param.format_display(1))
-    )
+    return _ROUNDED(Number(typed_text), unit, Number(shown), Number(resolution_text(param)))
+
+
+def resolution_text(param: Parameter) -> str:
+    """One step of ``param`` to two significant digits (``0.0061``, ``0.01``, ``1``): its
+    shortest display text ("0.006") would read back as the step but is not its size."""
+    decimals = max(0, 1 - math.floor(math.log10(param.scale)))
+    text = f"{param.scale:.{decimals}f}"
+    return text.rstrip("0").rstrip(".") if "." in text else text
 
 
 def apply_edit(

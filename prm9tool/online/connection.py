@@ -230,8 +230,12 @@ class ValveConnection(LiveData, QObject):
 
         def run(session: ValveSession) -> object:
             values = session.download(self._worker.progress, self._worker.cancel)
-            if self.history is not None:
-                self.history.download(session, values, tag)
+            hook = self.history
+            if hook is not None:  # the values first: the database may take ~0.3 s to open
+                hook.download_later(session, values, tag)
+                # written even when the link is lost meanwhile (needs_session False)
+                self._worker.jobs.put(Job("history", lambda _s: hook.write_later(), None, False,
+                                          needs_session=False))  # fmt: skip
             return values
 
         self._long_job(tag, run)

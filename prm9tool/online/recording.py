@@ -16,7 +16,7 @@ from typing import TYPE_CHECKING
 
 from prm9tool.catalogue import CATALOGUE
 from prm9tool.errors import CommunicationError, FileFormatError, HistoryError
-from prm9tool.history.recorder import Details, Recorder
+from prm9tool.history.recorder import Details, Recorder, make_entry
 
 if TYPE_CHECKING:
     from prm9tool.characterize.run import Characterization
@@ -69,6 +69,27 @@ class HistoryHook:
     def download(self, session: ValveSession, values: Mapping[str, Raw], purpose: str) -> None:
         """Record a download (also the one that compares document and valve)."""
         self.add(session, "download", "ok", values, {"purpose": purpose} if purpose else {})
+
+    def download_later(
+        self, session: ValveSession, values: Mapping[str, Raw], purpose: str
+    ) -> None:
+        """:meth:`download`, made now and written by :meth:`write_later` (or the next use of
+        the database), so the values need not wait for the database to open."""
+        details: Details = {**({"purpose": purpose} if purpose else {}), **self._context}
+        entry = make_entry(session.info, "download", "ok", values, details)
+        self.recorder.add_later(entry)
+
+    def write_later(self) -> None:
+        """Write what :meth:`download_later` took (a problem goes to ``report``)."""
+        try:
+            status = self.recorder.write_later()
+        except HistoryError as exc:
+            self._report(str(exc))
+            return
+        if status == "queued":
+            self._report(
+                f"the history database cannot be reached; the record waits in {self.recorder.queue}"
+            )
 
     def backup(self, session: ValveSession, path: Path) -> None:
         """Record the backup file taken before the first upload."""

@@ -16,6 +16,7 @@ from PySide6.QtWidgets import (
 
 from prm9tool.model.password import MIN_LENGTH, PasswordStore
 from prm9tool.views.diagram.colours import toned_style
+from prm9tool.views.help_dialog import add_context_help, show_help
 
 
 def _password_field() -> QLineEdit:
@@ -84,6 +85,17 @@ class PasswordDialog(_GrowingDialog):
             )
         )
         intro.setWordWrap(True)
+        # the manual says only that Expert is password-protected (§8.5): where to look
+        self.hint = QLabel(
+            self.tr(
+                "The password as delivered is written in the help, under “Access levels” "
+                '(F1, or <a href="help">open the help</a>). A password changed since is '
+                "known to whoever changed it."
+            )
+        )
+        self.hint.setWordWrap(True)
+        self.hint.linkActivated.connect(self._on_hint_link)
+        add_context_help(self, "help")
         buttons = QDialogButtonBox(
             QDialogButtonBox.StandardButton.Ok | QDialogButtonBox.StandardButton.Cancel
         )
@@ -93,10 +105,14 @@ class PasswordDialog(_GrowingDialog):
         form.addRow(self.tr("Password:"), self.password)
         layout = QVBoxLayout(self)
         layout.addWidget(intro)
+        layout.addWidget(self.hint)
         layout.addLayout(form)
         layout.addWidget(self.error_label)
         layout.addWidget(buttons)
         self._fit()
+
+    def _on_hint_link(self, topic: str) -> None:
+        show_help(self, topic)
 
     def _on_accepted(self) -> None:
         if self._store.check(self.password.text()):

@@ -27,7 +27,7 @@ def enabled_actions(
         "redo": undo.stack.canRedo(),
         "online": not online and not busy,
         "hid_configuration": not online and not busy,  # the valve is chosen before
-        "can_bus": not online and not busy,
+        "can_bus": online or not busy,  # online: the network view of the bus (issue 34)
         "export_dcf": doc.variant.canopen,
         "od_browser": ready,
         "offline": online or connection.is_reconnecting,  # also: stop looking for a lost valve

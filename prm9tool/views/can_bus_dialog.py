@@ -36,7 +36,7 @@ from prm9tool.catalogue.typekey import TypeKey
 from prm9tool.errors import TypeKeyError
 from prm9tool.files.can_type_keys import remember
 from prm9tool.online.bus_monitor import BusMonitor, HeardNode
-from prm9tool.online.connection_protocol import ListedValves, ValveListing
+from prm9tool.online.connection_protocol import ListedValves, ValveIdentity, ValveListing
 from prm9tool.online.lss_commissioning import LssCommissioning
 from prm9tool.paths import user_data_dir
 from prm9tool.translate import error_text
@@ -101,6 +101,9 @@ class CanBusDialog(QDialog):
         self._entries: list[ValveListing] = []
         self._extra: list[int] = []  # nodes heard after the search, not identified (rows after)
         self._monitor = monitor
+        self._searching = False  # a search runs: its result comes before the monitor's news
+        self._watched: str | None = None  # watch_session_bus(): the valve online on the bus
+        self._watched_valve: ValveIdentity | None = None
         if monitor is not None:
             monitor.nodes_heard.connect(self._on_nodes_heard)
             monitor.failed.connect(self._on_monitor_failed)
@@ -192,8 +195,47 @@ class CanBusDialog(QDialog):
         self._settings.setValue(CHANNEL_KEY, bus["channel"])
         self._settings.setValue(BITRATE_KEY, bus["bitrate"])
 
+    def watch_session_bus(self, bus: dict[str, object], valve: ValveIdentity) -> None:
+        """Online over CAN with ``valve`` on ``bus``: the network view of that
+        bus, as the nodes tell about themselves. The monitor shares the session's master
+        (``bus`` as the session has it), so no second adapter is opened on the channel, and
+        nothing is sent: no search (its SDO reads would meet the session's), no other valve to
+        go online with. Issue 34, item 12."""
+        self._watched = valve.device_id
+        self._watched_valve = valve
+        self.interface.setCurrentText(str(bus["interface"]))
+        self.channel.setText(str(bus["channel"]))
+        rate = bus.get("bitrate")
+        if self.bitrate.findData(rate) < 0:
+            self.bitrate.addItem(self.tr("as the adapter is set"), rate)
+        self.bitrate.setCurrentIndex(self.bitrate.findData(rate))
+        for widget in (self.interface, self.channel, self.bitrate, self.search):
+            widget.setEnabled(False)
+        self.buttons.setStandardButtons(QDialogButtonBox.StandardButton.Close)
+        self.state.setText(
+            self.tr(
+                "Online with {0} on this bus: the nodes are shown as they tell about "
+                "themselves (nothing is sent). Go offline to search the bus or to choose "
+                "another valve."
+            ).format(valve.device_id)
+        )
+        if self._monitor is not None:
+            self._monitor.start(bus)
+
+    def keep_online(self, valve: str) -> None:
+        """Online with ``valve`` over another link (USB): the bus can be searched and
+        watched (its own adapter), but going online with a node waits until offline."""
+        self.buttons.setStandardButtons(QDialogButtonBox.StandardButton.Close)
+        self.state.setText(
+            self.tr(
+                "Online with {0}: search the bus to watch its nodes; go offline to go "
+                "online with one of them."
+            ).format(valve)
+        )
+
     def _on_search_clicked(self) -> None:
         self._remember()
+        self._searching = True
         self.search.setEnabled(False)
         self.state.setText(self.tr("Searching the bus (node IDs 1…127)…"))
         if self._monitor is not None:
@@ -203,6 +245,7 @@ class CanBusDialog(QDialog):
     def _on_scanned(self, found: ListedValves) -> None:
         if not isValid(self):
             return
+        self._searching = False
         self.search.setEnabled(True)
         if isinstance(found, Exception):
             self._fill([])
@@ -246,7 +289,7 @@ class CanBusDialog(QDialog):
 
     def _on_nodes_heard(self, nodes: list[HeardNode]) -> None:
         """The monitor's news: NMT state, heartbeat age, last EMCY; new and silent nodes."""
-        if not isValid(self) or not self.search.isEnabled():
+        if not isValid(self) or self._searching:
             return  # a search runs: its result comes first
         rows = {e.device_id: row for row, e in enumerate(self._entries)}
         rows |= {f"can:{n}": len(self._entries) + i for i, n in enumerate(self._extra)}
@@ -260,7 +303,17 @@ class CanBusDialog(QDialog):
         self._extra.append(node_id)
         row = self.table.rowCount()
         self.table.insertRow(row)
-        cells = [f"can:{node_id}", self.tr("new on the bus: search again to identify it")]
+        if self._watched is None:
+            told = self.tr("new on the bus: search again to identify it")
+        elif self._watched == f"can:{node_id}":
+            told = self.tr("the valve prm9tool is online with")
+        else:
+            told = self.tr("heard on the bus")
+        cells = [f"can:{node_id}", told]
+        valve = self._watched_valve
+        if valve is not None and self._watched == f"can:{node_id}":
+            cells = [valve.device_id, valve.type_key, str(valve.serial), valve.firmware]
+            cells += ["", "", "", told]
         for column in range(self.table.columnCount()):
             item = QTableWidgetItem(cells[column] if column < len(cells) else "")
             item.setFlags(item.flags() & ~Qt.ItemFlag.ItemIsSelectable)
@@ -321,6 +374,8 @@ class CanBusDialog(QDialog):
 
     def update_ok(self) -> None:
         ok = self.buttons.button(QDialogButtonBox.StandardButton.Ok)
+        if ok is None:  # watching the session's bus: nothing to choose
+            return
         ok.setEnabled(self.selected_device_id() is not None)
         self.lss_actions.set_selected(self.selected_device_id() is not None)
 

@@ -142,7 +142,6 @@ class CanopenWindow(QDialog):
             )
         )
         self.tables.retranslate()
-        self.settings_box.setTitle(self.tr("Settings made by software (USB)"))
         self.captions[0].setText(self.tr("CAN terminator 120 Ω"))
         self.captions[1].setText(self.tr("Node ID (node switch at 0)"))
         self.captions[2].setText(self.tr("Bit rate (node switch at 0)"))
@@ -159,9 +158,21 @@ class CanopenWindow(QDialog):
         if not hasattr(self, "bitrate"):
             return
         self.tables.show_switches(self.switches)
+        self.settings_box.setTitle(self._settings_title())
         node = self.switches[1] if self.switches is not None else None
         self._show_settings(node)
         self._show_state()
+
+    def _settings_title(self) -> str:
+        """The manual's "settings made by software (USB)" (§8.7), with the link they go
+        over now: online over CAN they are written as CANopen objects, not over USB."""
+        device = self._connection.device if self._connection and self._online() else None
+        link = str(getattr(device, "device_id", "")).partition(":")[0]
+        if link == "can":
+            return self.tr("Settings made by software (over CANopen)")
+        if link in ("usb", "emulator"):
+            return self.tr("Settings made by software (USB)")
+        return self.tr("Settings made by software")
 
     def _value(self, mnemonic: str) -> int:
         return int(self._doc.value(mnemonic))

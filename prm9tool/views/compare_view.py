@@ -36,7 +36,7 @@ from PySide6.QtWidgets import (
 
 from prm9tool.catalogue import Access
 from prm9tool.compare.model import Comparison, Row
-from prm9tool.i18n import format_value, text
+from prm9tool.i18n import format_shown, text
 from prm9tool.translate import translated
 from prm9tool.views.diagram.layout import layout_for
 from prm9tool.views.help_dialog import add_context_help
@@ -95,7 +95,7 @@ class CompareTableModel(QAbstractTableModel):
                 return translated(self.comparison.sides[side].absent)
             if raw is None:
                 return "—"
-            return f"{format_value(row.parameter, raw)} {row.parameter.unit}".strip()
+            return format_shown(row.parameter, raw)  # a choice with its meaning, as the list
         chosen = self.comparison.choices.get(row.mnemonic)
         side = self._side(column)
         if role == Qt.ItemDataRole.CheckStateRole and column >= FIRST_VALUE and side >= 0:
@@ -297,15 +297,16 @@ class CompareDialog(QDialog):
 
     def _update_summary(self) -> None:
         c = self.comparison
-        lines = [
-            self.tr("%n parameter(s) differ", "", len(c.changed))
-            + ", "
-            + self.tr("%n parameter(s) only on one side", "", len(c.missing))
-            + ", "
-            + self.tr("%n parameter(s) not on the valve, not compared", "", len(c.not_on_valve))
-            + ", "
-            + self.tr("%n shown", "", self.model.rowCount())
+        parts = [
+            self.tr("%n parameter(s) differ", "", len(c.changed)),
+            self.tr("%n parameter(s) only on one side", "", len(c.missing)),
         ]
+        if c.not_on_valve:  # two files have no valve: "0 … not on the valve" said nothing
+            parts.append(
+                self.tr("%n parameter(s) not on the valve, not compared", "", len(c.not_on_valve))
+            )
+        parts.append(self.tr("%n shown", "", self.model.rowCount()))
+        lines = [", ".join(parts)]
         lines += [translated(warning) for warning in c.warnings()]
         self.summary.setText("\n".join(lines))
         for target, button in getattr(self, "apply_buttons", {}).items():

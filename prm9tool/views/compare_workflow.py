@@ -12,9 +12,10 @@ from __future__ import annotations
 
 from collections.abc import Mapping
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 from PySide6.QtCore import QObject, QSettings, Signal
-from PySide6.QtWidgets import QDialog, QFileDialog, QWidget
+from PySide6.QtWidgets import QDialog, QWidget
 
 from prm9tool.catalogue.typekey import TypeKey
 from prm9tool.compare.model import NOT_ON_SOURCE_VALVE, Comparison, Side
@@ -25,12 +26,14 @@ from prm9tool.model.undo import DocumentUndo
 from prm9tool.online.connection import ValveConnection
 from prm9tool.online.sync import ValveSync
 from prm9tool.translate import error_text
-from prm9tool.views import prompts
-from prm9tool.views.compare_view import BOTH, DOCUMENT, VALVE, CompareDialog
+from prm9tool.views import file_dialogs, prompts
 from prm9tool.views.file_reader import read_in_background
 from prm9tool.views.file_workflow import FOLDER_KEY
 from prm9tool.views.history_notes import record_online_change
 from prm9tool.views.valve.workflow import ValveWorkflow
+
+if TYPE_CHECKING:  # the compare view is imported when first shown, not at start-up
+    from prm9tool.views.compare_view import CompareDialog
 
 COMPARE_VIEW = "compare_view"  # the download behind Valve → Compare with valve
 
@@ -81,6 +84,8 @@ class CompareWorkflow(QObject):
     ) -> CompareDialog:
         """The compare view of ``comparison``: side 0 the document, side 1 the valve (or,
         not ``valve``, a file)."""
+        from prm9tool.views.compare_view import DOCUMENT, VALVE, CompareDialog
+
         roles = {0: DOCUMENT, 1: VALVE} if valve else {0: DOCUMENT}
         dialog = CompareDialog(comparison, targets, self._access.level, self._window, roles)
         self.dialog_created.emit(dialog)
@@ -92,7 +97,7 @@ class CompareWorkflow(QObject):
         """Compare the document with a *.prm file; the file's chosen values can be taken."""
         if path is None:
             folder = str(self._settings.value(FOLDER_KEY, str(Path.home())))
-            name, _filter = QFileDialog.getOpenFileName(
+            name, _filter = file_dialogs.open_file_name(
                 self._window, self.tr("Compare with file"), folder,
                 self.tr("Parameter files (*.prm);;All files (*)"),
             )  # fmt: skip
@@ -157,6 +162,8 @@ class CompareWorkflow(QObject):
         valve = self._valve_side(values)
         comparison = Comparison((self._document(), valve), self._factory(valve.type_key))
         comparison.choose_all(1)  # the valve's values unless the user picks the document's
+        from prm9tool.views.compare_view import BOTH
+
         dialog = self._run(comparison, (BOTH,))
         if dialog.result() != QDialog.DialogCode.Accepted or dialog.applied is None:
             self._valve.go_offline()
@@ -183,7 +190,8 @@ class CompareWorkflow(QObject):
         info = self._connection.device
         serial = None if info is None else info.serial
         window = HistoryWindow(hook.recorder, serial, self.restore_into_document,
-                               self.restore_to_valve, self._window)  # fmt: skip
+                               self.restore_to_valve, self._window,
+                               None if info is None else info.type_key)  # fmt: skip
         window.database_changed.connect(self._connection.set_recorder)
         self.dialog_created.emit(window)
         window.show()

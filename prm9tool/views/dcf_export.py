@@ -10,13 +10,13 @@ from __future__ import annotations
 from pathlib import Path
 
 from PySide6.QtCore import QObject, Signal
-from PySide6.QtWidgets import QFileDialog, QWidget
+from PySide6.QtWidgets import QWidget
 
 from prm9tool.catalogue.canopen_switches import effective
 from prm9tool.files.atomicfile import atomic_write
 from prm9tool.files.dcf import export_dcf
 from prm9tool.model.document import ParameterDocument
-from prm9tool.views import prompts
+from prm9tool.views import file_dialogs, prompts
 
 
 class DcfExport(QObject):
@@ -31,7 +31,7 @@ class DcfExport(QObject):
     def export_dialog(self, folder: str = "") -> bool:
         """Ask for the file and write it; False when cancelled or failed (said so)."""
         name = str(self._doc.type_key).replace("/", "_").replace(".", "_") + ".dcf"
-        path, _filter = QFileDialog.getSaveFileName(
+        path, _filter = file_dialogs.save_file_name(
             self._window, self.tr("Export DCF"), str(Path(folder) / name),
             self.tr("CANopen device configuration (*.dcf)"),
         )  # fmt: skip

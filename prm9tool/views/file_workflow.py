@@ -7,14 +7,14 @@ from datetime import datetime
 from pathlib import Path
 
 from PySide6.QtCore import QObject, QSettings, Signal
-from PySide6.QtWidgets import QFileDialog, QMenu, QWidget
+from PySide6.QtWidgets import QMenu, QWidget
 
 from prm9tool.catalogue.typekey import TypeKey
 from prm9tool.errors import FileFormatError, FileProblem
 from prm9tool.model.document import ParameterDocument
 from prm9tool.model.undo import DocumentUndo
 from prm9tool.translate import translated
-from prm9tool.views import prompts
+from prm9tool.views import file_dialogs, prompts
 from prm9tool.views.file_reader import read_in_background
 
 MAX_RECENT = 8
@@ -111,7 +111,7 @@ class FileWorkflow(QObject):
         """Ask for a file and open it."""
         if not self.maybe_save():
             return False
-        path, _filter = QFileDialog.getOpenFileName(
+        path, _filter = file_dialogs.open_file_name(
             self._window,
             self.tr("Open parameter file"),
             self.last_folder(),
@@ -171,15 +171,22 @@ class FileWorkflow(QObject):
         return True
 
     def save(self) -> bool:
-        """Save to the current file, or ask for a name if there is none."""
-        if self._doc.path is None:
+        """Save to the current file, or ask for a name if there is none — or if the file is
+        of another valve type than the document now (a valve's values taken, another valve
+        selected): that file is never overwritten unasked."""
+        if self._doc.path is None or self._doc.file_type_key != self._doc.type_key:
             return self.save_as()
         return self.save_to(self._doc.path)
 
     def save_as(self) -> bool:
         """Ask for a file name and save there."""
-        suggestion = self._doc.path or Path(self.last_folder()) / self._suggested_name()
-        path, _filter = QFileDialog.getSaveFileName(
+        current = self._doc.path
+        if current is not None and self._doc.file_type_key == self._doc.type_key:
+            suggestion = current
+        else:  # beside the file of another type, not over it
+            folder = current.parent if current is not None else Path(self.last_folder())
+            suggestion = folder / self._suggested_name()
+        path, _filter = file_dialogs.save_file_name(
             self._window,
             self.tr("Save parameter file"),
             str(suggestion),
@@ -222,7 +229,7 @@ class FileWorkflow(QObject):
         folder = self._settings.value(BACKUP_FOLDER_KEY, self.last_folder())
         stamp = datetime.now().strftime("%Y%m%d-%H%M")
         name = self._suggested_name().removesuffix(".prm") + f"_{stamp}.prm"
-        path, _filter = QFileDialog.getSaveFileName(
+        path, _filter = file_dialogs.save_file_name(
             self._window,
             self.tr("Save backup copy"),
             str(Path(str(folder)) / name),

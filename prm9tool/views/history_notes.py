@@ -10,6 +10,7 @@ until it is stored (Valve → Store, or going offline), which is recorded as bef
 
 from __future__ import annotations
 
+import math
 from collections.abc import Mapping
 from typing import Any
 
@@ -36,3 +37,77 @@ def record_online_change(
     if not changed or record is None or not getattr(connection, "is_online", False):
         return
     record(operation, "ok", None, {**details, "changes": changed, "stored": False})
+
+
+def record_run(connection: Any, operation: str, outcome: str, details: dict[str, Any]) -> None:
+    """Record a test that moved the valve online (``autotune``, ``frequency-response``, a
+    saved test report); nothing offline, where it ran on the simulated valve."""
+    record = getattr(connection, "record", None)
+    if record is not None and getattr(connection, "is_online", False):
+        record(operation, outcome, None, details)
+
+
+def _number(value: object) -> float | None:
+    """A finite figure as JSON takes it (None for NaN, missing or not a number)."""
+    if isinstance(value, bool) or not isinstance(value, int | float) or not math.isfinite(value):
+        return None
+    return round(float(value), 6)
+
+
+def step_details(step: Any) -> dict[str, Any]:
+    """A step response's figures: amplitude (%), overshoot (%), rise and settling time (s)."""
+    figures = getattr(step, "figures", None)
+    shown: dict[str, Any] = {"amplitude_pct": _number(getattr(step, "amplitude_pct", None))}
+    for key, name in (("overshoot_pct", "overshoot"), ("rise_time_s", "rise_time"),
+                      ("settling_time_s", "settling_time")):  # fmt: skip
+        shown[key] = _number(getattr(figures, name, None))
+    return shown
+
+
+def autotune_details(result: Any) -> tuple[str, dict[str, Any]]:
+    """An autotune run's outcome (``proposed``; ``targets-missed`` when its proposal misses
+    the targets) and details: loop, rounds, the gains before → proposed, both steps."""
+    before = dict(getattr(result, "before_values", {}) or {})
+    proposed = dict(getattr(result, "proposed_values", {}) or {})
+    details = {
+        "loop": str(getattr(result, "loop", "")),
+        "rounds": getattr(result, "rounds", None),
+        "meets_targets": bool(getattr(result, "meets_targets", False)),
+        "proposed": {mn: [before.get(mn), value] for mn, value in proposed.items()},
+        "before": step_details(getattr(result, "before", None)),
+        "after": step_details(getattr(result, "after", None)),
+    }
+    return ("proposed" if details["meets_targets"] else "targets-missed"), details
+
+
+def bode_details(result: Any) -> tuple[str, dict[str, Any]]:
+    """A frequency response's outcome (``ok``) and details: the sweep, −3 dB and −90°."""
+    response = getattr(result, "response", None)
+    details: dict[str, Any] = {
+        "amplitude_pct": _number(getattr(result, "amplitude_pct", None)),
+        "centre_pct": _number(getattr(result, "centre_pct", None)),
+        "bandwidth_hz": _number(response.bandwidth_hz()) if response is not None else None,
+        "phase_90_hz": _number(response.phase_90_hz()) if response is not None else None,
+        "limited_to_hz": _number(getattr(result, "limited_to_hz", None)),
+        "lost_samples": getattr(result, "lost_samples", 0),
+    }
+    return "ok", details
+
+
+def record_tuning_run(connection: Any, kind: str, result: Any) -> None:
+    """Record an autotune run or a frequency response of the Tuning window (online; the
+    test report is recorded by its own hook, ``online/characterization_history.py``)."""
+    summaries = {"autotune": autotune_details, "bode": bode_details}
+    operations = {"autotune": "autotune", "bode": "frequency-response"}
+    if kind in summaries:
+        outcome, details = summaries[kind](result)
+        record_run(connection, operations[kind], outcome, details)
+
+
+def record_report_saved(connection: Any, result: Any, pdf: str, loop: str) -> None:
+    """Record that the test report of ``result`` was saved as ``pdf`` (with its figures, so
+    the history names what failed and where the PDF is)."""
+    from prm9tool.online.recording import characterization_details
+
+    outcome, details = characterization_details(result)
+    record_run(connection, "report-saved", outcome, {**details, "pdf": pdf, "loop": loop})

@@ -14,10 +14,10 @@ from pathlib import Path
 from typing import Any
 
 from PySide6.QtCore import QAbstractTableModel, QModelIndex, QPersistentModelIndex, Qt, Signal
+from PySide6.QtGui import QColor
 from PySide6.QtWidgets import (
     QAbstractItemView,
     QDialog,
-    QFileDialog,
     QHBoxLayout,
     QHeaderView,
     QLabel,
@@ -33,24 +33,30 @@ from prm9tool.catalogue.manual_od import KEPT_AS_WRITTEN, STORED_WITH_1010, VERI
 from prm9tool.catalogue.typekey import TypeKey
 from prm9tool.compare.model import Comparison, Side
 from prm9tool.errors import Prm9Error
+from prm9tool.history.chain import other_type
 from prm9tool.history.recorder import Recorder
-from prm9tool.i18n import format_value
+from prm9tool.i18n import format_number, format_value
 from prm9tool.translate import error_text
-from prm9tool.views import prompts
+from prm9tool.views import file_dialogs, prompts
 from prm9tool.views.help_dialog import add_context_help
+from prm9tool.views.history_details import (
+    MAX_FIGURES,
+    RecordDetailsDialog,
+    failing_figures,
+    pdf_of,
+    record_details,
+)
 
 Index = QModelIndex | QPersistentModelIndex
 Record = dict[str, Any]
 MEANING = 3  # the column saying what was done
+TYPE_KEY = 5  # the column of the type key (marked on a record of another valve type)
+OTHER_TYPE_MARK = "⚠ "
 MAX_CHANGES = 4  # changed values listed in that column (all of them in the record)
 
 
 def _details(record: Record) -> dict[str, Any]:
-    try:
-        details = json.loads(record.get("details") or "{}")
-    except (TypeError, ValueError):
-        return {}
-    return details if isinstance(details, dict) else {}
+    return record_details(record)
 
 
 def _change(mnemonic: str, pair: object) -> str:
@@ -70,11 +76,16 @@ class HistoryTableModel(QAbstractTableModel):
     def __init__(self, parent: QWidget | None = None) -> None:
         super().__init__(parent)
         self.records: list[Record] = []
+        self.other_type: set[int] = set()  # rows of another type key than the chain's
+        self.chain_type_key = ""
 
-    def set_records(self, records: list[Record]) -> None:
-        """Show these records."""
+    def set_records(self, records: list[Record], type_key: str | None = None) -> None:
+        """Show these records; those whose type key is not the chain's (``type_key``, the
+        valve's now, else the newest record's) are marked: another valve under this serial."""
         self.beginResetModel()
         self.records = records
+        self.other_type = set(other_type(records, type_key))
+        self.chain_type_key = type_key or (str(records[-1]["type_key"]) if records else "")
         self.endResetModel()
 
     def rowCount(self, parent: Index = QModelIndex()) -> int:  # noqa: B008
@@ -94,6 +105,11 @@ class HistoryTableModel(QAbstractTableModel):
         r = self.records[index.row()]
         if role == Qt.ItemDataRole.ToolTipRole and index.column() == MEANING:
             return self.meaning(r)
+        other = index.row() in self.other_type
+        if other and role == Qt.ItemDataRole.ToolTipRole:
+            return self.other_type_text()
+        if other and role == Qt.ItemDataRole.ForegroundRole:
+            return QColor(170, 0, 0)
         if role != Qt.ItemDataRole.DisplayRole:
             return None
         failed = f" ({r['failed_step']})" if r["failed_step"] else ""
@@ -102,7 +118,17 @@ class HistoryTableModel(QAbstractTableModel):
             self.meaning(r), r["outcome"] + failed, r["type_key"], r["firmware"],
             f"{r['os_user']}@{r['host']}, {r['device_id']}",
         ]  # fmt: skip
+        if other:
+            cells[TYPE_KEY] = OTHER_TYPE_MARK + cells[TYPE_KEY]
         return cells[index.column()]
+
+    def other_type_text(self) -> str:
+        """Why a row is marked (also the window's warning line)."""
+        return self.tr(
+            "Marked {0}: records of another valve type than {1} under this serial number — "
+            "another valve (emulated valves of two runs of the program may share a serial "
+            "number); compare or restore them only knowingly."
+        ).format(OTHER_TYPE_MARK.strip(), self.chain_type_key)
 
     def meaning(self, record: Record) -> str:
         """What the user did, in the program language: the operation, why, and the values
@@ -115,6 +141,10 @@ class HistoryTableModel(QAbstractTableModel):
                str(details.get("source", "")), str(details.get("what", "")),
                self._stores().get(str(details.get("store")), "")]  # fmt: skip
         shown = ", ".join(part for part in why if part)
+        if operation in ("characterization", "report-saved"):
+            shown = ", ".join(part for part in (shown, self._report_text(details)) if part)
+        elif operation in ("autotune", "frequency-response"):
+            shown = ", ".join(part for part in (shown, self._run_text(details)) if part)
         changed = details.get("changes")
         if isinstance(changed, dict) and changed:
             listed = [_change(mn, pair) for mn, pair in list(changed.items())[:MAX_CHANGES]]
@@ -123,6 +153,45 @@ class HistoryTableModel(QAbstractTableModel):
                 listed.append(self.tr("%n more", "", more))
             shown = "; ".join(part for part in (shown, ", ".join(listed)) if part)
         return f"{text}: {shown}" if shown else text
+
+    def _report_text(self, details: dict[str, Any]) -> str:
+        """A test report's loop, profile, failing figures and PDF."""
+        parts = []
+        loops = {"position": self.tr("position loop"), "process": self.tr("process loop")}
+        if details.get("loop"):
+            parts.append(loops.get(str(details["loop"]), str(details["loop"])))
+        if details.get("profile"):
+            parts.append(self.tr("profile {0}").format(details["profile"]))
+        failing = failing_figures(details)
+        if failing:
+            listed = failing[:MAX_FIGURES]
+            if len(failing) > MAX_FIGURES:
+                listed.append(self.tr("%n more", "", len(failing) - MAX_FIGURES))
+            parts.append(self.tr("failed: {0}").format("; ".join(listed)))
+        pdf = pdf_of(details)
+        if pdf is not None:
+            parts.append(self.tr("PDF {0}").format(str(pdf)))
+        return ", ".join(parts)
+
+    def _run_text(self, details: dict[str, Any]) -> str:
+        """An autotune run's loop and proposed gains, a frequency response's figures."""
+        parts = []
+        loops = {"position": self.tr("position loop"), "process": self.tr("process loop")}
+        if details.get("loop"):
+            parts.append(loops.get(str(details["loop"]), str(details["loop"])))
+        proposed = details.get("proposed")
+        if isinstance(proposed, dict) and proposed:
+            listed = [_change(mn, pair) for mn, pair in list(proposed.items())[:MAX_CHANGES]]
+            parts.append(self.tr("proposed {0}").format(", ".join(listed)))
+        if "meets_targets" in details and not details["meets_targets"]:
+            parts.append(self.tr("misses the targets"))
+        for key, name in (("bandwidth_hz", "−3 dB"), ("phase_90_hz", "−90°")):
+            if key in details:
+                value = details[key]
+                found = isinstance(value, int | float) and not isinstance(value, bool)
+                shown = f"{format_number(value, 1)} Hz" if found else self.tr("not found")
+                parts.append(f"{name}: {shown}")
+        return ", ".join(parts)
 
     def _operations(self) -> dict[str, str]:
         return {
@@ -138,6 +207,10 @@ class HistoryTableModel(QAbstractTableModel):
             "history-restore": self.tr("Values from the history, written online"),
             "tuning-accepted": self.tr("Tuning accepted, written online"),
             "restart-verify": self.tr("Restarted and read back (Valve → Verify by restart…)"),
+            "restart": self.tr("Restarted (Valve → Restart valve)"),
+            "autotune": self.tr("Autotune run"),
+            "frequency-response": self.tr("Frequency response measured"),
+            "report-saved": self.tr("Test report saved"),
         }
 
     def _stores(self) -> dict[str, str]:
@@ -176,9 +249,13 @@ class HistoryWindow(QDialog):
         restore_document: Callable[[TypeKey | None, dict[str, int | str]], None],
         restore_valve: Callable[[int, dict[str, int | str]], bool],
         parent: QWidget | None = None,
+        type_key: str | None = None,
     ) -> None:
+        """``type_key``: the type key of the valve ``serial`` is of (the connected one):
+        records of another are marked."""
         super().__init__(parent)
         self._recorder = recorder
+        self._valve_key = (serial, type_key) if serial and type_key else None
         self._restore_document, self._restore_valve = restore_document, restore_valve
         self.setWindowTitle(self.tr("History"))
         add_context_help(self, "history")  # F1
@@ -217,6 +294,7 @@ class HistoryWindow(QDialog):
         self.serial.returnPressed.connect(self.reload)
         self.loaded.connect(self._on_loaded)
         self.table.selectionModel().selectionChanged.connect(self._update_buttons)
+        self.table.doubleClicked.connect(self.open_record)
         self.buttons["compare"].clicked.connect(self.compare_selected)
         self.buttons["document"].clicked.connect(
             lambda: self._restore(self._restore_document_record)
@@ -255,8 +333,13 @@ class HistoryWindow(QDialog):
         else:
             assert isinstance(records, tuple)
             rows, where = records
-            self.model.set_records(rows)
-            self.state.setText(self.tr("%n record(s) in {0}", "", len(rows)).format(where))
+            serial = int(rows[0]["serial"]) if rows else None
+            known = self._valve_key
+            self.model.set_records(rows, known[1] if known and known[0] == serial else None)
+            state = self.tr("%n record(s) in {0}", "", len(rows)).format(where)
+            if self.model.other_type:
+                state += "\n" + self.model.other_type_text()
+            self.state.setText(state)
             self.table.scrollToBottom()
         self._update_buttons()
 
@@ -272,6 +355,32 @@ class HistoryWindow(QDialog):
         for name in ("document", "valve", "export"):
             self.buttons[name].setEnabled(count == 1)
 
+    def open_record(self, index: QModelIndex | None = None) -> QDialog | None:
+        """Double-click: two selected records open their comparison, one record its details
+        (with its PDF and the comparison with the record before)."""
+        selected = self.selected()
+        if len(selected) == 2:
+            return self.compare_selected()
+        row = index.row() if index is not None and index.isValid() else None
+        if row is None:
+            if len(selected) != 1:
+                return None
+            row = self.model.records.index(selected[0])
+        record = self.model.records[row]
+        before = self._record_with_parameters_before(row)
+        dialog = RecordDetailsDialog(record, self.model.meaning(record), before is not None, self)
+        if before is not None:
+            dialog.compare_requested.connect(lambda: self._compare_records([before, record]))
+        dialog.open()
+        return dialog
+
+    def _record_with_parameters_before(self, row: int) -> Record | None:
+        """The nearest earlier record of the same valve type (the ones with a parameter set
+        are known only when read: the comparison says so when one has none)."""
+        key = self.model.records[row]["type_key"]
+        earlier = [r for r in self.model.records[:row] if r["type_key"] == key]
+        return earlier[-1] if earlier else None
+
     def _full(self, record: Record) -> tuple[TypeKey, dict[str, int | str]] | None:
         whole = self._recorder.store().record(record["id"])
         if whole is None or whole["parameters"] is None:
@@ -284,9 +393,12 @@ class HistoryWindow(QDialog):
     def compare_selected(self) -> CompareDialogLike | None:
         """Show the difference of the two selected records in the compare view, from which
         the ticked values go into the document or into the valve they were recorded from."""
+        return self._compare_records(self.selected())
+
+    def _compare_records(self, records: list[Record]) -> CompareDialogLike | None:
         from prm9tool.views.compare_view import DOCUMENT, VALVE, CompareDialog
 
-        sides, records = [], self.selected()
+        sides = []
         for record in records:
             full = self._full(record)
             if full is None:
@@ -351,7 +463,7 @@ class HistoryWindow(QDialog):
 
         (record,) = self.selected()
         if path is None:
-            path, _filter = QFileDialog.getSaveFileName(
+            path, _filter = file_dialogs.save_file_name(
                 self, self.tr("Export record"), f"{record['serial']}_{record['seq']}.prm",
                 self.tr("Parameter files (*.prm);;CSV tables (*.csv)"),
             )  # fmt: skip

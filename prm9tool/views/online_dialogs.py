@@ -20,7 +20,7 @@ from PySide6.QtWidgets import (
 )
 
 from prm9tool.catalogue import CATALOGUE
-from prm9tool.i18n import format_value, text
+from prm9tool.i18n import format_shown, text
 
 Raw = int | str
 
@@ -37,9 +37,7 @@ class DiffChoice(Enum):
 def _cell(mnemonic: str, raw: Raw | None) -> str:
     if raw is None:
         return "—"
-    param = CATALOGUE[mnemonic]
-    unit = f" {param.unit}" if param.unit else ""
-    return format_value(param, raw) + unit
+    return format_shown(CATALOGUE[mnemonic], raw)  # a choice with its meaning, as the list
 
 
 class OnlineDiffDialog(QDialog):

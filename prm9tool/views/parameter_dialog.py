@@ -9,6 +9,7 @@ from __future__ import annotations
 import re
 
 from PySide6.QtCore import QEvent, Signal
+from PySide6.QtGui import QFont, QFontMetrics
 from PySide6.QtWidgets import (
     QComboBox,
     QDialog,
@@ -22,7 +23,7 @@ from PySide6.QtWidgets import (
 
 from prm9tool.catalogue import CATALOGUE, Access, Parameter
 from prm9tool.errors import AccessDeniedError, ValueRangeError
-from prm9tool.i18n import ambiguous_number, current_language, format_value, text
+from prm9tool.i18n import ambiguous_number, current_language, decimal_point, format_value, text
 from prm9tool.model.access import AccessModel
 from prm9tool.model.document import ParameterDocument, Raw
 from prm9tool.model.editing import apply_edit, linked_mnemonics, range_text
@@ -35,6 +36,18 @@ _VALUE_UNIT = re.compile(r"(\d) (?=(?:mA|mV|ms|Hz|V|s|%|°C)\b|%)")
 
 def _unbroken_units(text: str) -> str:
     return _VALUE_UNIT.sub("\\1\u00a0", text)
+
+
+TITLE_BAR_EXTRA_PX = 150  # a window manager's icon and buttons beside the title
+
+
+def title_width(dialog: QWidget, title: str) -> int:
+    """A width at which the window manager shows ``title`` whole ("Paramete… SETPOSUP" was
+    elided in a dialog as narrow as its form, issue 34 item 20): the title in a bold title-bar
+    font, and the bar's icon and buttons."""
+    font = QFont(dialog.font())
+    font.setBold(True)
+    return QFontMetrics(font).horizontalAdvance(title) + TITLE_BAR_EXTRA_PX
 
 
 class ParameterEditDialog(QDialog):
@@ -106,7 +119,9 @@ class ParameterEditDialog(QDialog):
     def retranslate(self) -> None:
         """Set every text in the current language."""
         p = self.param
-        self.setWindowTitle(self.tr("Parameter {0}").format(p.mnemonic))
+        title = self.tr("Parameter {0}").format(p.mnemonic)
+        self.setWindowTitle(title)
+        self.setMinimumWidth(title_width(self, title))
         heading = f"<b>[{p.mnemonic}] {text(p.text)}</b>"
         if p.help is not None:
             heading += f"<br>{text(p.help)}"
@@ -159,8 +174,10 @@ class ParameterEditDialog(QDialog):
         if ambiguous is not None:
             raise ValueRangeError(ambiguous)
         try:
-            raw = self.param.parse_display(entered)
+            raw = self.param.parse_display(entered, decimal_point())
         except ValueRangeError:
+            if "," in entered and decimal_point() == ".":
+                raise  # the catalogue's words: the decimals follow a point
             raise ValueRangeError(
                 self.tr("{0}: “{1}” is not a number.").format(self.param.mnemonic, entered.strip())
             ) from None

@@ -82,6 +82,7 @@ class ParameterTableModel(QAbstractTableModel):
         doc.value_changed.connect(self._on_document_value_changed)
         doc.values_reset.connect(self._on_document_values_reset)
         doc.type_key_changed.connect(self.refresh)
+        doc.source_changed.connect(self._on_document_source_changed)
         access.level_changed.connect(self.refresh)
         self.refresh()
 
@@ -215,6 +216,12 @@ class ParameterTableModel(QAbstractTableModel):
         row = self._rows.get(mnemonic)
         if row is not None:
             self.dataChanged.emit(self.index(row, 0), self.index(row, len(Column) - 1))
+
+    def _on_document_source_changed(self) -> None:
+        for mnemonic in ("SNV", "FWVER"):
+            row = self._rows.get(mnemonic)
+            if row is not None:
+                self.dataChanged.emit(self.index(row, 0), self.index(row, len(Column) - 1))
 
     def _on_document_values_reset(self) -> None:
         self._emit_all_values()

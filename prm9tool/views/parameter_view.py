@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from PySide6.QtCore import QEvent, QModelIndex, Qt, Signal
+from PySide6.QtCore import QEvent, QModelIndex, QSortFilterProxyModel, Qt, Signal
 from PySide6.QtWidgets import (
     QAbstractItemView,
     QCheckBox,
@@ -23,6 +23,26 @@ from prm9tool.views.parameter_model import (
     ParameterFilterProxy,
     ParameterTableModel,
 )
+
+
+class _ListTable(QTableView):
+    """The list's table: a column sized to its contents keeps the width it had with every
+    row shown, so a search that leaves few rows or none no longer collapses the columns to
+    their headers (issue 34 item 20)."""
+
+    def __init__(self) -> None:
+        super().__init__()
+        self._all_rows: dict[int, int] = {}  # column -> its width the last time all rows showed
+
+    def sizeHintForColumn(self, column: int) -> int:
+        """The widest shown row's width, at least the width with every row."""
+        hint = super().sizeHintForColumn(column)
+        proxy = self.model()
+        source = proxy.sourceModel() if isinstance(proxy, QSortFilterProxyModel) else None
+        if source is None or proxy.rowCount() >= source.rowCount():
+            self._all_rows[column] = hint
+            return hint
+        return max(hint, self._all_rows.get(column, 0))
 
 
 class ParameterListView(QWidget):
@@ -51,7 +71,7 @@ class ParameterListView(QWidget):
         self.retranslate()
 
     def _make_table(self) -> QTableView:
-        table = QTableView()
+        table = _ListTable()
         table.setModel(self.proxy)
         table.setSelectionBehavior(QAbstractItemView.SelectionBehavior.SelectRows)
         table.setSelectionMode(QAbstractItemView.SelectionMode.SingleSelection)

@@ -10,10 +10,10 @@ from pathlib import Path
 from typing import TYPE_CHECKING
 
 from PySide6.QtCore import QObject, Signal
-from PySide6.QtWidgets import QDialog, QFileDialog
+from PySide6.QtWidgets import QDialog
 
 from prm9tool.catalogue import Access
-from prm9tool.views import prompts
+from prm9tool.views import file_dialogs, prompts
 
 if TYPE_CHECKING:
     from PySide6.QtGui import QPageLayout, QTextDocument
@@ -99,7 +99,7 @@ class RecordActions(QObject):
         base = doc.path.with_suffix(".pdf") if doc.path else None
         folder = Path(self._window.files.last_folder())
         suggestion = base or folder / (self.file_stem() + ".pdf")
-        path, _filter = QFileDialog.getSaveFileName(
+        path, _filter = file_dialogs.save_file_name(
             self._window, self.tr("Export PDF"), str(suggestion), self.tr("PDF files (*.pdf)")
         )
         if not path:

@@ -288,7 +288,7 @@ with \xe2\x80\x9c\xe2\x80\x94\xe2\x80\x9d a\
 nd cannot be cho\
 sen.</p>\x0a</body>\
 \x0a</html>\x0a\
-\x00\x00\x06\x83\
+\x00\x00\x08\xd6\
 <\
 !DOCTYPE html>\x0a<\
 html lang=\x22de\x22>\x0a\
@@ -393,9 +393,46 @@ en, und was zu\x0at\
 un ist, wenn sie\
  nicht erreichba\
 r ist.</li>\x0a</ul\
->\x0a</body>\x0a</html\
->\x0a\
-\x00\x00#\x15\
+>\x0a<p>Autotune-L\xc3\
+\xa4ufe, Frequenzg\xc3\
+\xa4nge, Pr\xc3\xbcfproto\
+kolle (mit den n\
+icht bestandenen\
+ Kennwerten und,\
+\x0aeinmal gespeich\
+ert, dem PDF) un\
+d Neustarts des \
+Ventils werden e\
+benfalls aufgeze\
+ichnet. Ein\x0a<b>D\
+oppelklick</b> a\
+uf einen Eintrag\
+ zeigt seine Det\
+ails \xe2\x80\x94 jedes F\
+eld, <b>PDF \xc3\xb6ff\
+nen</b>,\x0a<b>Mit \
+dem Eintrag davo\
+r vergleichen</b\
+> \xe2\x80\x94 oder, bei \
+zwei gew\xc3\xa4hlten \
+Eintr\xc3\xa4gen, ihre\
+n Vergleich.\x0aDer\
+ Typenschl\xc3\xbcssel\
+ eines Ventils \xc3\
+\xa4ndert sich nie:\
+ Eintr\xc3\xa4ge eines\
+ anderen Typs un\
+ter derselben\x0aSe\
+riennummer (emul\
+ierte Ventile zw\
+eier L\xc3\xa4ufe k\xc3\xb6n\
+nen eine teilen)\
+ sind mit \xe2\x9a\xa0 ma\
+rkiert, und das\x0a\
+Fenster sagt es.\
+</p>\x0a</body>\x0a</h\
+tml>\x0a\
+\x00\x00$!\
 <\
 !DOCTYPE html>\x0a<\
 html lang=\x22cs\x22>\x0a\
@@ -620,346 +657,363 @@ nline jde ka\xc5\xbed\xc3\
 o ventilu i do d\
 okumentu, v re\xc5\xbe\
 imu offline\x0apouz\
-e do dokumentu.<\
-/p>\x0a<p><b>Kdy\xc5\xbe \
-ventil vypadne</\
-b> (vyta\xc5\xbeen\xc3\xbd k\
-abel USB, vypnut\
-\xc3\xad a zapnut\xc3\xad na\
-p\xc3\xa1jen\xc3\xad, CAN bu\
-s-off,\x0arestart, \
-po kter\xc3\xa9m se ve\
-ntil nevr\xc3\xa1t\xc3\xad),\
- program p\xc5\x99ejde\
- do re\xc5\xbeimu offl\
-ine, v\xc5\xa1echny ho\
-dnoty\x0azachov\xc3\xa1 a\
- ventil s\xc3\xa1m hle\
-d\xc3\xa1: stavov\xc3\xbd \xc5\x99\
-\xc3\xa1dek ukazuje <i\
->Re\xc5\xbeim: OBNOVA \
-SPOJEN\xc3\x8d\xe2\x80\xa6 3 s<\
-/i>. Hled\xc3\xa1 na\x0as\
-tejn\xc3\xa9m spojen\xc3\xad\
- \xe2\x80\x94 po CAN i po\
-d jin\xc3\xbdm \xc4\x8d\xc3\xadsle\
-m uzlu, pokud v\xc3\
+e do dokumentu. \
+P\xc5\x99evezme-li dok\
+ument hodnoty ve\
+ntilu jin\xc3\xa9ho ty\
+pu, stane se nov\
+\xc3\xbdm, neulo\xc5\xbeen\xc3\xbd\
+m dokumentem (je\
+ho soubor si pon\
+ech\xc3\xa1, co obsaho\
+val); dokument n\
+ahran\xc3\xbd do venti\
+lu nebo s n\xc3\xadm s\
+hodn\xc3\xbd od t\xc3\xa9 do\
+by pat\xc5\x99\xc3\xad tomut\
+o ventilu (SNV a\
+ \xc5\xbe\xc3\xa1dn\xc3\xbd dotaz \
+p\xc5\x99i dal\xc5\xa1\xc3\xadm p\xc5\
+\x99ipojen\xc3\xad).</p>\x0a\
+<p><b>Kdy\xc5\xbe vent\
+il vypadne</b> (\
+vyta\xc5\xbeen\xc3\xbd kabel\
+ USB, vypnut\xc3\xad a\
+ zapnut\xc3\xad nap\xc3\xa1j\
+en\xc3\xad, CAN bus-of\
+f,\x0arestart, po k\
+ter\xc3\xa9m se ventil\
+ nevr\xc3\xa1t\xc3\xad), pro\
+gram p\xc5\x99ejde do \
+re\xc5\xbeimu offline,\
+ v\xc5\xa1echny hodnot\
+y\x0azachov\xc3\xa1 a ven\
+til s\xc3\xa1m hled\xc3\xa1:\
+ stavov\xc3\xbd \xc5\x99\xc3\xa1de\
+k ukazuje <i>Re\xc5\
+\xbeim: OBNOVA SPOJ\
+EN\xc3\x8d\xe2\x80\xa6 3 s</i>.\
+ Hled\xc3\xa1 na\x0astejn\
+\xc3\xa9m spojen\xc3\xad \xe2\x80\x94\
+ po CAN i pod ji\
+n\xc3\xbdm \xc4\x8d\xc3\xadslem uz\
+lu, pokud v\xc3\xbdrob\
+n\xc3\xad \xc4\x8d\xc3\xadslo (0x1\
+018/4) \xc5\x99\xc3\xadk\xc3\xa1, \
+\xc5\xbee jde\x0ao tent\xc3\xbd\
+\xc5\xbe ventil. A\xc5\xbe s\
+e ventil vr\xc3\xa1t\xc3\xad\
+, program jej na\
+\xc4\x8dte a porovn\xc3\xa1 \
+s dokumentem jak\
+o p\xc5\x99i\x0ap\xc5\x99echodu\
+ do re\xc5\xbeimu onli\
+ne (<i>Op\xc4\x9bt onl\
+ine</i>, pokud s\
+e shoduj\xc3\xad); bez\
+ v\xc3\xa1s se do vent\
+ilu nic\x0anezap\xc3\xad\xc5\
+\xa1e: hodnoty zm\xc4\x9b\
+n\xc4\x9bn\xc3\xa9 online, k\
+ter\xc3\xa9 ventil p\xc5\x99\
+i vypnut\xc3\xad nap\xc3\xa1\
+jen\xc3\xad ztratil, j\
+sou nab\xc3\xaddnuty\x0av\
+ dialogu rozd\xc3\xadl\
+\xc5\xaf, ne odesl\xc3\xa1ny\
+. Test lad\xc4\x9bn\xc3\xad \
+p\xc5\x99eru\xc5\xa1en\xc3\xbd v\xc3\xbd\
+padkem spojen\xc3\xad \
+zap\xc3\xad\xc5\xa1e zp\xc4\x9bt, \
+co\x0azm\xc4\x9bnil, jakm\
+ile je ventil zp\
+\xc4\x9bt, a ohl\xc3\xa1s\xc3\xad \
+to. Osciloskop z\
+aznamen\xc3\xa1v\xc3\xa1 d\xc3\xa1\
+l; gener\xc3\xa1tor \xc5\xbe\
+\xc3\xa1dan\xc3\xa9 hodnoty \
+a test\x0alad\xc4\x9bn\xc3\xad \
+z\xc5\xafstanou zastav\
+eny, dokud je ne\
+spust\xc3\xadte (po CA\
+N se hl\xc3\xadd\xc3\xa1n\xc3\xad \
+p\xc5\x99\xc3\xadjmu, kter\xc3\xa9\
+ p\xc5\x99eru\xc5\xa1en\xc3\xbd\x0age\
+ner\xc3\xa1tor \xc5\xbe\xc3\xa1dan\
+\xc3\xa9 hodnoty nasta\
+vil ve ventilu, \
+vr\xc3\xa1t\xc3\xad, jakmile\
+ je ventil zp\xc4\x9bt\
+, a stavov\xc3\xbd \xc5\x99\xc3\
+\xa1dek\x0ato ohl\xc3\xa1s\xc3\xad\
+). Stav bus-off \
+va\xc5\xa1eho CAN adap\
+t\xc3\xa9ru stavov\xc3\xbd \xc5\
+\x99\xc3\xa1dek uvede; ve\
+ntil se znovu na\
+jde,\x0ajakmile je \
+adapt\xc3\xa9r op\xc4\x9bt n\
+a sb\xc4\x9brnici. P\xc5\x99\
+eru\xc5\xa1en\xc3\xa9 na\xc4\x8dte\
+n\xc3\xad do ventilu o\
+hl\xc3\xa1s\xc3\xad, co se\x0as\
+talo a co ventil\
+ obsahuje; nepok\
+ra\xc4\x8duje samo. Ji\
+n\xc3\xbd ventil (jin\xc3\
+\xa9 v\xc3\xbdrobn\xc3\xad \xc4\x8d\xc3\xad\
+slo) na m\xc3\xadst\xc4\x9b\x0a\
+ztracen\xc3\xa9ho je n\
+ov\xc3\xbd ventil: pro\
+gram to ohl\xc3\xa1s\xc3\xad\
+ a s\xc3\xa1m se k n\xc4\x9b\
+mu nep\xc5\x99ipoj\xc3\xad. \
+P\xc5\x99echod do re\xc5\xbe\
+imu\x0aonline nebo \
+offline hled\xc3\xa1n\xc3\
+\xad ukon\xc4\x8d\xc3\xad. U em\
+ulovan\xc3\xa9ho venti\
+lu to ukazuj\xc3\xad V\
+entil \xe2\x86\x92 Emulov\
+an\xc3\xbd ventil\x0a\xe2\x86\x92 \
+<b>Vyt\xc3\xa1hnout ka\
+bel USB</b> a <b\
+>Znovu zapojit k\
+abel USB</b>.</p\
+>\x0a<p>Hodnoty zm\xc4\
+\x9bn\xc4\x9bn\xc3\xa9 online j\
+sou ve ventilu a\
+ktivn\xc3\xad, ale je\xc5\
+\xa1t\xc4\x9b neulo\xc5\xbeen\xc3\xa9\
+: p\xc5\x99i p\xc5\x99echodu\
+ do\x0are\xc5\xbeimu offl\
+ine program nab\xc3\
+\xaddne jejich ulo\xc5\
+\xbeen\xc3\xad a Ventil \xe2\
+\x86\x92 <b>Ulo\xc5\xbeit do\
+ pam\xc4\x9bti ventilu\
+</b> je ulo\xc5\xbe\xc3\xad\x0a\
+hned (s \xc4\x8d\xc3\xadm ve\
+ntil pracuje, s \
+t\xc3\xadm i nastartuj\
+e; zaznamen\xc3\xa1 se\
+ do historie). <\
+b>Na\xc4\x8dten\xc3\xad do v\
+entilu</b> zap\xc3\xad\
+\xc5\xa1e v\xc5\xa1echny\x0ahod\
+noty, p\xc5\x99e\xc4\x8dte j\
+e zp\xc4\x9bt, porovn\xc3\
+\xa1 a ulo\xc5\xbe\xc3\xad; ulo\
+\xc5\xbe\xc3\xad se jen tehd\
+y, je-li ka\xc5\xbed\xc3\xa1\
+ hodnota ov\xc4\x9b\xc5\x99e\
+na.\x0aP\xc5\x99ed prvn\xc3\xad\
+m na\xc4\x8dten\xc3\xadm do \
+ventilu program \
+ulo\xc5\xbe\xc3\xad z\xc3\xa1lohu \
+vlastn\xc3\xadch param\
+etr\xc5\xaf ventilu do\
+ slo\xc5\xbeky\x0au\xc5\xbeivat\
+elsk\xc3\xbdch dat (<c\
+ode>backups/&lt;\
+v\xc3\xbdrobn\xc3\xad \xc4\x8d\xc3\xadsl\
+o&gt;/</code>).<\
+/p>\x0a<p><b>Restar\
+t ventilu</b> a \
+<b>Obnoven\xc3\xad tov\
+\xc3\xa1rn\xc3\xadho nastave\
+n\xc3\xad</b> jsou dov\
+oleny pouze p\xc5\x99i\
+\x0aodpojen\xc3\xa9m hydr\
+aulick\xc3\xa9m obvodu\
+; program v\xc3\xa1s p\
+o\xc5\xbe\xc3\xa1d\xc3\xa1 o potvr\
+zen\xc3\xad.</p>\x0a<p>Ve\
+ntil \xe2\x86\x92 <b>Ov\xc4\x9b\
+\xc5\x99it restartem\xe2\x80\
+\xa6</b> (po na\xc4\x8dte\
+n\xc3\xad do ventilu, \
+dokud z\xc5\xafst\xc3\xa1v\xc3\xa1\
+ online tent\xc3\xbd\xc5\xbe\
+\x0aventil) ventil \
+po stejn\xc3\xa9m potv\
+rzen\xc3\xad odpojen\xc3\xa9\
+ hydrauliky rest\
+artuje a zp\xc4\x9btn\xc4\
+\x9b na\xc4\x8dte jeho\x0apa\
+rametry: stavov\xc3\
+\xbd \xc5\x99\xc3\xa1dek ohl\xc3\xa1s\
+\xc3\xad \xe2\x80\x9e\xe2\x80\xa6 zp\xc4\x9btn\
+\xc4\x9b na\xc4\x8dteno beze\
+ zm\xc4\x9bny \xe2\x80\xa6: ov\xc4\
+\x9b\xc5\x99eno po restar\
+tu\xe2\x80\x9c, nebo\x0ahl\xc3\xa1\
+\xc5\xa1en\xc3\xad vyjmenuje\
+ ka\xc5\xbedou hodnotu\
+, kterou si vent\
+il neponechal (o\
+\xc4\x8dek\xc3\xa1v\xc3\xa1no \xe2\x86\x92 \
+na\xc4\x8dteno), a his\
+torie\x0av\xc3\xbdsledek \
+zaznamen\xc3\xa1. Hl\xc3\xa1\
+\xc5\xa1en\xc3\xad o na\xc4\x8dten\
+\xc3\xad do ventilu \xc5\x99\
+\xc3\xadk\xc3\xa1, jak si ve\
+ntil hodnoty pon\
+ech\xc3\xa1v\xc3\xa1:\x0a\xe2\x80\x9eulo\
+\xc5\xbeeno pomoc\xc3\xad 0x\
+1010\xe2\x80\x9c, nebo p\xc5\
+\x99es CANopen u ve\
+ntilu bez p\xc5\x99\xc3\xadk\
+azu k ulo\xc5\xbeen\xc3\xad \
+\xe2\x80\x9eventil si hod\
+noty\x0aponechal ta\
+k, jak byly zaps\
+\xc3\xa1ny (nem\xc3\xa1 p\xc5\x99\xc3\
+\xadkaz k ulo\xc5\xbeen\xc3\xad\
+)\xe2\x80\x9c. Hodnoty zm\
+\xc4\x9bn\xc4\x9bn\xc3\xa9 online \
+a dosud\x0aneulo\xc5\xbee\
+n\xc3\xa9 je t\xc5\x99eba ne\
+jprve ulo\xc5\xbeit (r\
+estart by je ztr\
+atil). Neozve-li\
+ se ventil znovu\
+, program\x0ap\xc5\x99ejd\
+e do re\xc5\xbeimu off\
+line a \xc5\x99ekne, c\
+o ventil podle v\
+\xc5\xa1eho obsahuje; \
+dokument si pone\
+ch\xc3\xa1 ka\xc5\xbedou\x0ahod\
+notu.</p>\x0a\x0a<h2>S\
+oubory</h2>\x0a<p>Z\
+\xc3\xa1znamy parametr\
+\xc5\xaf (<code>*.prm<\
+/code>) jsou tex\
+tov\xc3\xa9 soubory. O\
+tev\xc5\x99\xc3\xadt, Ulo\xc5\xbei\
+t, Ulo\xc5\xbeit jako,\
+\x0anaposledy otev\xc5\
+\x99en\xc3\xa9 soubory a \
+p\xc5\x99eta\xc5\xbeen\xc3\xad my\xc5\
+\xa1\xc3\xad funguj\xc3\xad obv\
+ykl\xc3\xbdm zp\xc5\xafsobem\
+; p\xc5\x99ed ztr\xc3\xa1tou\
+\x0aneulo\xc5\xbeen\xc3\xbdch z\
+m\xc4\x9bn se program \
+zept\xc3\xa1. Ka\xc5\xbedou \
+zm\xc4\x9bnu lze vr\xc3\xa1t\
+it (Ctrl+Z) a zn\
+ovu prov\xc3\xa9st\x0a(Ct\
+rl+Y). Soubor \xe2\x86\
+\x92 Tisk a Soubor \
+\xe2\x86\x92 Export do PD\
+F vytvo\xc5\x99\xc3\xad prot\
+okol parametr\xc5\xaf \
+s typov\xc3\xbdm kl\xc3\xad\xc4\
+\x8dem,\x0av\xc3\xbdrobn\xc3\xadm \
+\xc4\x8d\xc3\xadslem, firmwa\
+re, souborem, da\
+tem, \xc3\xbarovn\xc3\xad op\
+r\xc3\xa1vn\xc4\x9bn\xc3\xad, post\
+upov\xc3\xbdm diagrame\
+m a v\xc5\xa1emi\x0aparam\
+etry s jednotkam\
+i. Hodnoty zm\xc4\x9bn\
+\xc4\x9bn\xc3\xa9 od ulo\xc5\xbeen\
+\xc3\xad souboru jsou \
+ozna\xc4\x8deny <b>*</\
+b> a \xc5\x99\xc3\xa1dek\x0a\xe2\x80\x9e\
+Soubor\xe2\x80\x9c to uv\xc3\
+\xa1d\xc3\xad; ka\xc5\xbed\xc3\xa1 st\
+rana uv\xc3\xa1d\xc3\xad typ\
+ov\xc3\xbd kl\xc3\xad\xc4\x8d a v\xc3\
 \xbdrobn\xc3\xad \xc4\x8d\xc3\xadslo \
-(0x1018/4) \xc5\x99\xc3\xadk\
-\xc3\xa1, \xc5\xbee jde\x0ao te\
-nt\xc3\xbd\xc5\xbe ventil. A\
-\xc5\xbe se ventil vr\xc3\
-\xa1t\xc3\xad, program je\
-j na\xc4\x8dte a porov\
-n\xc3\xa1 s dokumentem\
- jako p\xc5\x99i\x0ap\xc5\x99ec\
-hodu do re\xc5\xbeimu \
-online (<i>Op\xc4\x9bt\
- online</i>, pok\
-ud se shoduj\xc3\xad);\
- bez v\xc3\xa1s se do \
-ventilu nic\x0aneza\
-p\xc3\xad\xc5\xa1e: hodnoty \
-zm\xc4\x9bn\xc4\x9bn\xc3\xa9 onlin\
-e, kter\xc3\xa9 ventil\
- p\xc5\x99i vypnut\xc3\xad n\
-ap\xc3\xa1jen\xc3\xad ztrati\
-l, jsou nab\xc3\xaddnu\
-ty\x0av dialogu roz\
-d\xc3\xadl\xc5\xaf, ne odesl\
-\xc3\xa1ny. Test lad\xc4\x9b\
-n\xc3\xad p\xc5\x99eru\xc5\xa1en\xc3\xbd\
- v\xc3\xbdpadkem spoje\
-n\xc3\xad zap\xc3\xad\xc5\xa1e zp\xc4\
-\x9bt, co\x0azm\xc4\x9bnil, \
-jakmile je venti\
-l zp\xc4\x9bt, a ohl\xc3\xa1\
-s\xc3\xad to. Oscilosk\
-op zaznamen\xc3\xa1v\xc3\xa1\
- d\xc3\xa1l; gener\xc3\xa1to\
-r \xc5\xbe\xc3\xa1dan\xc3\xa9 hodn\
-oty a test\x0alad\xc4\x9b\
-n\xc3\xad z\xc5\xafstanou za\
-staveny, dokud j\
-e nespust\xc3\xadte (p\
-o CAN se hl\xc3\xadd\xc3\xa1\
-n\xc3\xad p\xc5\x99\xc3\xadjmu, kt\
-er\xc3\xa9 p\xc5\x99eru\xc5\xa1en\xc3\
-\xbd\x0agener\xc3\xa1tor \xc5\xbe\xc3\
-\xa1dan\xc3\xa9 hodnoty n\
-astavil ve venti\
-lu, vr\xc3\xa1t\xc3\xad, jak\
-mile je ventil z\
-p\xc4\x9bt, a stavov\xc3\xbd\
- \xc5\x99\xc3\xa1dek\x0ato ohl\xc3\
-\xa1s\xc3\xad). Stav bus-\
-off va\xc5\xa1eho CAN \
-adapt\xc3\xa9ru stavov\
-\xc3\xbd \xc5\x99\xc3\xa1dek uvede\
-; ventil se znov\
-u najde,\x0ajakmile\
- je adapt\xc3\xa9r op\xc4\
-\x9bt na sb\xc4\x9brnici.\
- P\xc5\x99eru\xc5\xa1en\xc3\xa9 na\
-\xc4\x8dten\xc3\xad do venti\
-lu ohl\xc3\xa1s\xc3\xad, co \
-se\x0astalo a co ve\
-ntil obsahuje; n\
-epokra\xc4\x8duje samo\
-. Jin\xc3\xbd ventil (\
-jin\xc3\xa9 v\xc3\xbdrobn\xc3\xad \
-\xc4\x8d\xc3\xadslo) na m\xc3\xads\
-t\xc4\x9b\x0aztracen\xc3\xa9ho \
-je nov\xc3\xbd ventil:\
- program to ohl\xc3\
-\xa1s\xc3\xad a s\xc3\xa1m se k\
- n\xc4\x9bmu nep\xc5\x99ipoj\
-\xc3\xad. P\xc5\x99echod do \
-re\xc5\xbeimu\x0aonline n\
-ebo offline hled\
-\xc3\xa1n\xc3\xad ukon\xc4\x8d\xc3\xad. \
-U emulovan\xc3\xa9ho v\
-entilu to ukazuj\
-\xc3\xad Ventil \xe2\x86\x92 Em\
-ulovan\xc3\xbd ventil\x0a\
-\xe2\x86\x92 <b>Vyt\xc3\xa1hnou\
-t kabel USB</b> \
-a <b>Znovu zapoj\
-it kabel USB</b>\
-.</p>\x0a<p>Hodnoty\
- zm\xc4\x9bn\xc4\x9bn\xc3\xa9 onli\
-ne jsou ve venti\
-lu aktivn\xc3\xad, ale\
- je\xc5\xa1t\xc4\x9b neulo\xc5\xbe\
-en\xc3\xa9: p\xc5\x99i p\xc5\x99ec\
-hodu do\x0are\xc5\xbeimu \
-offline program \
-nab\xc3\xaddne jejich \
-ulo\xc5\xbeen\xc3\xad a Vent\
-il \xe2\x86\x92 <b>Ulo\xc5\xbei\
-t do pam\xc4\x9bti ven\
-tilu</b> je ulo\xc5\
-\xbe\xc3\xad\x0ahned (s \xc4\x8d\xc3\xad\
-m ventil pracuje\
-, s t\xc3\xadm i nasta\
-rtuje; zaznamen\xc3\
-\xa1 se do historie\
-). <b>Na\xc4\x8dten\xc3\xad \
-do ventilu</b> z\
-ap\xc3\xad\xc5\xa1e v\xc5\xa1echny\
-\x0ahodnoty, p\xc5\x99e\xc4\x8d\
-te je zp\xc4\x9bt, por\
-ovn\xc3\xa1 a ulo\xc5\xbe\xc3\xad;\
- ulo\xc5\xbe\xc3\xad se jen \
-tehdy, je-li ka\xc5\
-\xbed\xc3\xa1 hodnota ov\xc4\
-\x9b\xc5\x99ena.\x0aP\xc5\x99ed pr\
-vn\xc3\xadm na\xc4\x8dten\xc3\xadm\
- do ventilu prog\
-ram ulo\xc5\xbe\xc3\xad z\xc3\xa1l\
-ohu vlastn\xc3\xadch p\
-arametr\xc5\xaf ventil\
-u do slo\xc5\xbeky\x0au\xc5\xbe\
-ivatelsk\xc3\xbdch dat\
- (<code>backups/\
-&lt;v\xc3\xbdrobn\xc3\xad \xc4\x8d\
-\xc3\xadslo&gt;/</code\
->).</p>\x0a<p><b>Re\
-start ventilu</b\
-> a <b>Obnoven\xc3\xad\
- tov\xc3\xa1rn\xc3\xadho nas\
-taven\xc3\xad</b> jsou\
- dovoleny pouze \
-p\xc5\x99i\x0aodpojen\xc3\xa9m \
-hydraulick\xc3\xa9m ob\
-vodu; program v\xc3\
-\xa1s po\xc5\xbe\xc3\xa1d\xc3\xa1 o p\
-otvrzen\xc3\xad.</p>\x0a<\
-p>Ventil \xe2\x86\x92 <b>\
-Ov\xc4\x9b\xc5\x99it restart\
-em\xe2\x80\xa6</b> (po na\
-\xc4\x8dten\xc3\xad do venti\
-lu, dokud z\xc5\xafst\xc3\
-\xa1v\xc3\xa1 online tent\
-\xc3\xbd\xc5\xbe\x0aventil) ven\
-til po stejn\xc3\xa9m \
-potvrzen\xc3\xad odpoj\
-en\xc3\xa9 hydrauliky \
-restartuje a zp\xc4\
-\x9btn\xc4\x9b na\xc4\x8dte jeh\
-o\x0aparametry: sta\
-vov\xc3\xbd \xc5\x99\xc3\xa1dek oh\
-l\xc3\xa1s\xc3\xad \xe2\x80\x9e\xe2\x80\xa6 zp\
-\xc4\x9btn\xc4\x9b na\xc4\x8dteno \
-beze zm\xc4\x9bny \xe2\x80\xa6:\
- ov\xc4\x9b\xc5\x99eno po re\
-startu\xe2\x80\x9c, nebo\x0a\
-hl\xc3\xa1\xc5\xa1en\xc3\xad vyjme\
-nuje ka\xc5\xbedou hod\
-notu, kterou si \
-ventil neponecha\
-l (o\xc4\x8dek\xc3\xa1v\xc3\xa1no \
-\xe2\x86\x92 na\xc4\x8dteno), a\
- historie\x0av\xc3\xbdsle\
-dek zaznamen\xc3\xa1. \
-Hl\xc3\xa1\xc5\xa1en\xc3\xad o na\xc4\
-\x8dten\xc3\xad do ventil\
-u \xc5\x99\xc3\xadk\xc3\xa1, jak s\
-i ventil hodnoty\
- ponech\xc3\xa1v\xc3\xa1:\x0a\xe2\x80\
-\x9eulo\xc5\xbeeno pomoc\xc3\
-\xad 0x1010\xe2\x80\x9c, neb\
-o p\xc5\x99es CANopen \
-u ventilu bez p\xc5\
-\x99\xc3\xadkazu k ulo\xc5\xbee\
-n\xc3\xad \xe2\x80\x9eventil si\
- hodnoty\x0aponecha\
-l tak, jak byly \
-zaps\xc3\xa1ny (nem\xc3\xa1 \
-p\xc5\x99\xc3\xadkaz k ulo\xc5\xbe\
-en\xc3\xad)\xe2\x80\x9c. Hodnot\
-y zm\xc4\x9bn\xc4\x9bn\xc3\xa9 onl\
-ine a dosud\x0aneul\
-o\xc5\xbeen\xc3\xa9 je t\xc5\x99eb\
-a nejprve ulo\xc5\xbei\
-t (restart by je\
- ztratil). Neozv\
-e-li se ventil z\
-novu, program\x0ap\xc5\
-\x99ejde do re\xc5\xbeimu\
- offline a \xc5\x99ekn\
-e, co ventil pod\
-le v\xc5\xa1eho obsahu\
-je; dokument si \
-ponech\xc3\xa1 ka\xc5\xbedou\
-\x0ahodnotu.</p>\x0a\x0a<\
-h2>Soubory</h2>\x0a\
-<p>Z\xc3\xa1znamy para\
-metr\xc5\xaf (<code>*.\
-prm</code>) jsou\
- textov\xc3\xa9 soubor\
-y. Otev\xc5\x99\xc3\xadt, Ul\
-o\xc5\xbeit, Ulo\xc5\xbeit j\
-ako,\x0anaposledy o\
-tev\xc5\x99en\xc3\xa9 soubor\
-y a p\xc5\x99eta\xc5\xbeen\xc3\xad\
- my\xc5\xa1\xc3\xad funguj\xc3\xad\
- obvykl\xc3\xbdm zp\xc5\xafs\
-obem; p\xc5\x99ed ztr\xc3\
-\xa1tou\x0aneulo\xc5\xbeen\xc3\xbd\
-ch zm\xc4\x9bn se prog\
-ram zept\xc3\xa1. Ka\xc5\xbe\
-dou zm\xc4\x9bnu lze v\
-r\xc3\xa1tit (Ctrl+Z) \
-a znovu prov\xc3\xa9st\
-\x0a(Ctrl+Y). Soubo\
-r \xe2\x86\x92 Tisk a Sou\
-bor \xe2\x86\x92 Export d\
-o PDF vytvo\xc5\x99\xc3\xad \
-protokol paramet\
-r\xc5\xaf s typov\xc3\xbdm k\
-l\xc3\xad\xc4\x8dem,\x0av\xc3\xbdrobn\
-\xc3\xadm \xc4\x8d\xc3\xadslem, fi\
-rmware, souborem\
-, datem, \xc3\xbarovn\xc3\
-\xad opr\xc3\xa1vn\xc4\x9bn\xc3\xad, \
-postupov\xc3\xbdm diag\
-ramem a v\xc5\xa1emi\x0ap\
-arametry s jedno\
-tkami. Hodnoty z\
-m\xc4\x9bn\xc4\x9bn\xc3\xa9 od ulo\
-\xc5\xbeen\xc3\xad souboru j\
-sou ozna\xc4\x8deny <b\
->*</b> a \xc5\x99\xc3\xa1dek\
-\x0a\xe2\x80\x9eSoubor\xe2\x80\x9c to\
- uv\xc3\xa1d\xc3\xad; ka\xc5\xbed\xc3\
-\xa1 strana uv\xc3\xa1d\xc3\xad\
- typov\xc3\xbd kl\xc3\xad\xc4\x8d \
-a v\xc3\xbdrobn\xc3\xad \xc4\x8d\xc3\xad\
-slo a sv\xc3\xa9 \xc4\x8d\xc3\xads\
-lo strany; na\x0apo\
-sledn\xc3\xad stran\xc4\x9b \
-je \xc5\x99\xc3\xa1dek pro d\
-atum, jm\xc3\xa9no a p\
-odpis.</p>\x0a<p><b\
->Z\xc3\xa1loha ventilu\
-</b>: p\xc5\x99ipojte \
-se (re\xc5\xbeim onlin\
-e), Ventil \xe2\x86\x92 S\
+a sv\xc3\xa9 \xc4\x8d\xc3\xadslo s\
+trany; na\x0aposled\
+n\xc3\xad stran\xc4\x9b je \xc5\
+\x99\xc3\xa1dek pro datum\
+, jm\xc3\xa9no a podpi\
+s.</p>\x0a<p><b>Z\xc3\xa1\
+loha ventilu</b>\
+: p\xc5\x99ipojte se (\
+re\xc5\xbeim online), \
+Ventil \xe2\x86\x92 Sta\xc5\xbe\
+en\xc3\xad z ventilu, \
+pak\x0aSoubor \xe2\x86\x92 <\
+b>Ulo\xc5\xbeit z\xc3\xa1lo\xc5\
+\xben\xc3\xad kopii\xe2\x80\xa6</b\
+> (navr\xc5\xbeen\xc3\xbd n\xc3\
+\xa1zev: typov\xc3\xbd kl\
+\xc3\xad\xc4\x8d, v\xc3\xbdrobn\xc3\xad \
+\xc4\x8d\xc3\xadslo, datum\x0aa\
+ \xc4\x8das). Kopie se\
+ zap\xc3\xad\xc5\xa1e a otev\
+\xc5\x99en\xc3\xbd dokument \
+z\xc5\xafstane, jak\xc3\xbd \
+byl: pozd\xc4\x9bj\xc5\xa1\xc3\xad\
+ zm\xc4\x9bny se ukl\xc3\xa1\
+daj\xc3\xad do\x0ajeho vl\
+astn\xc3\xadho souboru\
+, nikdy do z\xc3\xa1lo\
+hy. Naproti tomu\
+ Ulo\xc5\xbeit jako ud\
+\xc4\x9bl\xc3\xa1 z nov\xc3\xa9ho \
+souboru\x0aotev\xc5\x99en\
+\xc3\xbd dokument.</p>\
+\x0a\x0a<h2>Kl\xc3\xa1vesnic\
+e</h2>\x0a<table>\x0a<\
+tr><td>Ctrl+O / \
+Ctrl+S / Ctrl+Sh\
+ift+S</td><td>Ot\
+ev\xc5\x99\xc3\xadt / Ulo\xc5\xbei\
+t / Ulo\xc5\xbeit jako\
+</td></tr>\x0a<tr><\
+td>Ctrl+Z / Ctrl\
++Y</td><td>Zp\xc4\x9bt\
+ / Znovu</td></t\
+r>\x0a<tr><td>Ctrl+\
+P / Ctrl+E</td><\
+td>Tisk / Export\
+ do PDF</td></tr\
+>\x0a<tr><td>Ctrl+1\
+ / Ctrl+2 / Ctrl\
++3 / Ctrl+4</td>\
+<td>Postupov\xc3\xbd d\
+iagram / Seznam \
+parametr\xc5\xaf / Osc\
+iloskop / Okno C\
+ANopen</td></tr>\
+\x0a<tr><td>F5 / Sh\
+ift+F5</td><td>R\
+e\xc5\xbeim online / R\
+e\xc5\xbeim offline</t\
+d></tr>\x0a<tr><td>\
+Ctrl+U / Ctrl+D<\
+/td><td>Na\xc4\x8dten\xc3\
+\xad do ventilu / S\
 ta\xc5\xbeen\xc3\xad z venti\
-lu, pak\x0aSoubor \xe2\
-\x86\x92 <b>Ulo\xc5\xbeit z\xc3\
-\xa1lo\xc5\xben\xc3\xad kopii\xe2\x80\
-\xa6</b> (navr\xc5\xbeen\xc3\
-\xbd n\xc3\xa1zev: typov\xc3\
-\xbd kl\xc3\xad\xc4\x8d, v\xc3\xbdrob\
-n\xc3\xad \xc4\x8d\xc3\xadslo, dat\
-um\x0aa \xc4\x8das). Kopi\
-e se zap\xc3\xad\xc5\xa1e a \
-otev\xc5\x99en\xc3\xbd dokum\
-ent z\xc5\xafstane, ja\
-k\xc3\xbd byl: pozd\xc4\x9bj\
-\xc5\xa1\xc3\xad zm\xc4\x9bny se u\
-kl\xc3\xa1daj\xc3\xad do\x0ajeh\
-o vlastn\xc3\xadho sou\
-boru, nikdy do z\
-\xc3\xa1lohy. Naproti \
-tomu Ulo\xc5\xbeit jak\
-o ud\xc4\x9bl\xc3\xa1 z nov\xc3\
-\xa9ho souboru\x0aotev\
-\xc5\x99en\xc3\xbd dokument.\
-</p>\x0a\x0a<h2>Kl\xc3\xa1ve\
-snice</h2>\x0a<tabl\
-e>\x0a<tr><td>Ctrl+\
-O / Ctrl+S / Ctr\
-l+Shift+S</td><t\
-d>Otev\xc5\x99\xc3\xadt / Ul\
-o\xc5\xbeit / Ulo\xc5\xbeit \
-jako</td></tr>\x0a<\
-tr><td>Ctrl+Z / \
-Ctrl+Y</td><td>Z\
-p\xc4\x9bt / Znovu</td\
-></tr>\x0a<tr><td>C\
-trl+P / Ctrl+E</\
-td><td>Tisk / Ex\
-port do PDF</td>\
-</tr>\x0a<tr><td>Ct\
-rl+1 / Ctrl+2 / \
-Ctrl+3 / Ctrl+4<\
-/td><td>Postupov\
-\xc3\xbd diagram / Sez\
-nam parametr\xc5\xaf /\
- Osciloskop / Ok\
-no CANopen</td><\
-/tr>\x0a<tr><td>F5 \
-/ Shift+F5</td><\
-td>Re\xc5\xbeim online\
- / Re\xc5\xbeim offlin\
-e</td></tr>\x0a<tr>\
-<td>Ctrl+U / Ctr\
-l+D</td><td>Na\xc4\x8d\
-ten\xc3\xad do ventilu\
- / Sta\xc5\xbeen\xc3\xad z v\
-entilu</td></tr>\
-\x0a<tr><td>Ctrl+T \
-/ Ctrl+I / Ctrl+\
-H</td><td>V\xc3\xbdb\xc4\x9b\
-r ventilu / Stav\
- ventilu / Konfi\
-gurace HID</td><\
-/tr>\x0a</table>\x0a<p\
-><b>Skripty a zk\
-u\xc5\xa1ebn\xc3\xad stanice\
-</b>: ventil z P\
-ythonu a ze shel\
-lov\xc3\xbdch skript\xc5\xaf\
-, <a href=\x22scrip\
-ting_en.html\x22>na\
- t\xc3\xa9to str\xc3\xa1nce<\
-/a> (anglicky).<\
-/p>\x0a</body>\x0a</ht\
-ml>\x0a\
-\x00\x00\x062\
+lu</td></tr>\x0a<tr\
+><td>Ctrl+T / Ct\
+rl+I / Ctrl+H</t\
+d><td>V\xc3\xbdb\xc4\x9br ve\
+ntilu / Stav ven\
+tilu / Konfigura\
+ce HID</td></tr>\
+\x0a</table>\x0a<p><b>\
+Skripty a zku\xc5\xa1e\
+bn\xc3\xad stanice</b>\
+: ventil z Pytho\
+nu a ze shellov\xc3\
+\xbdch skript\xc5\xaf, <a\
+ href=\x22scripting\
+_en.html\x22>na t\xc3\xa9\
+to str\xc3\xa1nce</a> \
+(anglicky).</p>\x0a\
+</body>\x0a</html>\x0a\
+\
+\x00\x00\x08^\
 <\
 !DOCTYPE html>\x0a<\
 html lang=\x22cs\x22>\x0a\
@@ -1059,8 +1113,42 @@ nku se stanicemi\
 , a co d\xc4\x9blat, k\
 dy\xc5\xbe nen\xc3\xad\x0adostu\
 pn\xc3\xa1.</li>\x0a</ul>\
-\x0a</body>\x0a</html>\
-\x0a\
+\x0a<p>Zaznamen\xc3\xa1va\
+j\xc3\xad se tak\xc3\xa9 b\xc4\x9b\
+hy Autotune, fre\
+kven\xc4\x8dn\xc3\xad charak\
+teristiky, zku\xc5\xa1\
+ebn\xc3\xad protokoly \
+(s\x0ahodnotami, kt\
+er\xc3\xa9 nevyhov\xc4\x9bly\
+, a po ulo\xc5\xbeen\xc3\xad\
+ s PDF) a restar\
+ty ventilu. <b>D\
+vojklik</b> na z\
+\xc3\xa1znam\x0auk\xc3\xa1\xc5\xbee j\
+eho podrobnosti \
+\xe2\x80\x94 ka\xc5\xbed\xc3\xa9 pole\
+, <b>Otev\xc5\x99\xc3\xadt P\
+DF</b>, <b>Porov\
+nat s p\xc5\x99edchoz\xc3\
+\xadm z\xc3\xa1znamem</b>\
+ \xe2\x80\x94\x0anebo p\xc5\x99i d\
+vou vybran\xc3\xbdch z\
+\xc3\xa1znamech jejich\
+ porovn\xc3\xa1n\xc3\xad. Ty\
+pov\xc3\xbd kl\xc3\xad\xc4\x8d ven\
+tilu se nikdy ne\
+m\xc4\x9bn\xc3\xad: z\xc3\xa1znamy\
+\x0ajin\xc3\xa9ho typu po\
+d stejn\xc3\xbdm v\xc3\xbdro\
+bn\xc3\xadm \xc4\x8d\xc3\xadslem (\
+emulovan\xc3\xa9 venti\
+ly dvou b\xc4\x9bh\xc5\xaf m\
+ohou m\xc3\xadt stejn\xc3\
+\xa9) jsou\x0aozna\xc4\x8den\
+y \xe2\x9a\xa0 a okno to \
+uv\xc3\xa1d\xc3\xad.</p>\x0a</b\
+ody>\x0a</html>\x0a\
 \x00\x00\x188\
 <\
 !DOCTYPE html>\x0a<\
@@ -1933,7 +2021,7 @@ t\xc3\xa1len\xc3\xad ka\xc5\xbed\xc3\xa9\
 ho zobrazen\xc3\xa9ho \
 skoku.</p>\x0a</bod\
 y>\x0a</html>\x0a\
-\x00\x00$@\
+\x00\x00%u\
 <\
 !DOCTYPE html>\x0a<\
 html lang=\x22de\x22>\x0a\
@@ -2166,356 +2254,376 @@ fort an das Vent\
 il und in das Do\
 kument, offline \
 nur in das Dokum\
-ent.</p>\x0a<p><b>W\
-enn das Ventil w\
-egf\xc3\xa4llt</b> (US\
-B-Kabel gezogen,\
- Spannung aus un\
-d ein, CAN-Bus-o\
-ff, ein\x0aNeustart\
-, nach dem es ni\
-cht zur\xc3\xbcckkommt\
-), geht das Prog\
-ramm offline, be\
-h\xc3\xa4lt alle Werte\
- und\x0asucht das V\
-entil von selbst\
-: die Statusleis\
-te zeigt <i>Modu\
-s: NEU VERBINDEN\
-\xe2\x80\xa6 3 s</i>. Es \
-sucht\x0aauf dersel\
-ben Verbindung \xe2\
-\x80\x94 \xc3\xbcber CAN auc\
-h unter einer an\
-deren Knotennumm\
-er, wenn die\x0aSer\
-iennummer (0x101\
-8/4) sagt, dass \
-es dasselbe Vent\
-il ist. Ist das \
-Ventil zur\xc3\xbcck, \
-liest das\x0aProgra\
-mm es und vergle\
-icht es wie beim\
- Online-Gehen mi\
-t dem Dokument (\
-<i>Wieder online\
-</i>,\x0awenn sie \xc3\
-\xbcbereinstimmen);\
- ohne Sie wird n\
-ichts ins Ventil\
- geschrieben: on\
-line ge\xc3\xa4nderte \
-Werte,\x0adie das V\
-entil beim Aus- \
-und Einschalten \
-verloren hat, we\
-rden im Untersch\
-iede-Dialog\x0aange\
-boten, nicht ges\
-endet. Ein durch\
- die Verbindung \
-abgebrochener Tu\
-ning-Test schrei\
-bt\x0azur\xc3\xbcck, was \
-er ge\xc3\xa4ndert hat\
-te, sobald das V\
-entil wieder da \
-ist, und meldet \
-es. Das Oszillos\
-kop zeichnet wei\
-ter auf; der Sol\
-lwertgenerator u\
-nd ein\x0aTuning-Te\
-st bleiben angeh\
-alten, bis Sie s\
-ie starten (\xc3\xbcbe\
-r CAN wird die E\
-mpfangs\xc3\xbcberwach\
-ung,\x0adie ein abg\
-ebrochener Sollw\
-ertgenerator im \
-Ventil gesetzt h\
-atte, zur\xc3\xbcckges\
-etzt, sobald das\
-\x0aVentil wieder d\
-a ist, und die S\
-tatusleiste meld\
-et es). Ein Bus-\
-Off Ihres CAN-Ad\
-apters wird in\x0ad\
-er Statusleiste \
-genannt; das Ven\
-til wird wiederg\
-efunden, sobald \
-der Adapter wied\
-er am Bus\x0aist. E\
-in abgebrochenes\
- Hochladen melde\
-t, was\x0ageschah u\
-nd was das Venti\
-l enth\xc3\xa4lt; es w\
-ird nicht fortge\
-setzt. Ein ander\
-es Ventil (ander\
-e\x0aSeriennummer) \
-an der Stelle de\
-s verlorenen ist\
- ein neues Venti\
-l: das Programm \
-sagt es und\x0averb\
-indet sich nicht\
- von selbst. Sel\
-bst online oder \
-offline gehen be\
-endet die Suche.\
- Mit\x0aeinem emuli\
-erten Ventil zei\
-gen es Ventil \xe2\x86\
-\x92 Emuliertes Ven\
-til \xe2\x86\x92 <b>USB-K\
-abel ziehen</b> \
-und\x0a<b>USB-Kabel\
- wieder einsteck\
-en</b>.</p>\x0a<p>O\
-nline ge\xc3\xa4nderte\
- Werte sind im V\
-entil aktiv, abe\
-r noch nicht ges\
-peichert: beim W\
-echsel\x0aauf offli\
-ne bietet das Pr\
-ogramm an, sie z\
-u speichern, und\
- Ventil \xe2\x86\x92 <b>I\
-m Ventil speiche\
-rn</b>\x0aspeichert\
- sie sofort (wom\
-it das Ventil ar\
-beitet, damit st\
-artet es auch; i\
-m Verlauf\x0afestge\
-halten). <b>In d\
-as Ventil hochla\
-den</b>\x0aschreibt\
- alle Werte, lie\
-st sie zur\xc3\xbcck, \
-vergleicht und s\
-peichert sie; ge\
-speichert wird n\
-ur,\x0awenn jeder W\
-ert best\xc3\xa4tigt w\
-urde. Vor dem er\
-sten Hochladen i\
-n ein Ventil sic\
-hert das\x0aProgram\
-m dessen eigene \
-Parameter im Ben\
-utzerdatenordner\
- (<code>backups/\
-&lt;Seriennummer\
-&gt;/</code>).</\
-p>\x0a<p><b>Ventil \
-neu starten</b> \
-und <b>Werkseins\
-tellungen wieder\
-herstellen</b> s\
-ind nur bei\x0agetr\
-ennter Hydraulik\
- erlaubt; das Pr\
-ogramm l\xc3\xa4sst Si\
-e das best\xc3\xa4tige\
-n.</p>\x0a<p>Ventil\
- \xe2\x86\x92 <b>Durch Ne\
-ustart pr\xc3\xbcfen\xe2\x80\
-\xa6</b> (nach dem \
-Hochladen, solan\
-ge dasselbe Vent\
-il online\x0ableibt\
-) startet das Ve\
-ntil \xe2\x80\x93 nach de\
-rselben Best\xc3\xa4ti\
-gung zur Hydraul\
-ik \xe2\x80\x93 neu und l\
-iest seine\x0aParam\
-eter zur\xc3\xbcck: di\
-e Statuszeile me\
-ldet \xe2\x80\x9e\xe2\x80\xa6 unve\
-r\xc3\xa4ndert zur\xc3\xbcck\
-gelesen: nach ei\
-nem Neustart\x0agep\
-r\xc3\xbcft\xe2\x80\x9c, oder e\
-ine Meldung nenn\
-t jeden Wert, de\
-n das Ventil nic\
-ht behalten hat \
-(erwartet \xe2\x86\x92\x0azu\
-r\xc3\xbcckgelesen), u\
-nd der Verlauf h\
-\xc3\xa4lt das Ergebni\
-s fest. Die Meld\
-ung des Hochlade\
-ns sagt, wie\x0adas\
- Ventil die Wert\
-e beh\xc3\xa4lt: \xe2\x80\x9emi\
-t 0x1010 gespeic\
-hert\xe2\x80\x9c oder, \xc3\xbc\
-ber CANopen bei \
-einem Ventil\x0aohn\
-e Speicherbefehl\
-, \xe2\x80\x9evom Ventil \
-wie geschrieben \
-behalten (es hat\
- keinen Speicher\
-befehl)\xe2\x80\x9c.\x0aOnli\
-ne ge\xc3\xa4nderte, n\
-och nicht gespei\
-cherte Werte m\xc3\xbc\
-ssen zuerst gesp\
-eichert werden (\
-ein Neustart\x0aw\xc3\xbc\
-rde sie verliere\
-n). Meldet sich \
-das Ventil nicht\
- wieder, geht da\
-s Programm offli\
-ne und sagt,\x0awas\
- das Ventil nach\
- bestem Wissen e\
-nth\xc3\xa4lt; das Dok\
-ument beh\xc3\xa4lt je\
-den Wert.</p>\x0a\x0a<\
-h2>Dateien</h2>\x0a\
-<p>Parameterdate\
-ien (<code>*.prm\
-</code>) sind Te\
-xtdateien. \xc3\x96ffn\
-en, Speichern, S\
-peichern\x0aunter, \
-die zuletzt ge\xc3\xb6\
-ffneten Dateien \
-und Drag &amp; D\
-rop funktioniere\
-n wie gewohnt; v\
-or dem\x0aVerlust u\
-ngespeicherter \xc3\
-\x84nderungen fragt\
- das Programm na\
-ch. Jede \xc3\x84nderu\
-ng l\xc3\xa4sst sich\x0ar\
-\xc3\xbcckg\xc3\xa4ngig mach\
-en (Strg+Z) und \
-wiederherstellen\
- (Strg+Y). Datei\
- \xe2\x86\x92 Drucken und\
- Datei \xe2\x86\x92 PDF\x0ae\
-xportieren erzeu\
-gen ein Paramete\
-rprotokoll mit T\
-ypschl\xc3\xbcssel, Se\
-riennummer, Firm\
-ware, Datei,\x0aDat\
-um, Berechtigung\
-sstufe, dem Abla\
-ufdiagramm und a\
-llen Parametern \
-mit Einheit. Sei\
-t dem\x0aSpeichern \
-ge\xc3\xa4nderte Werte\
- sind mit <b>*</\
-b> markiert, und\
- die Zeile \xe2\x80\x9eDa\
-tei\xe2\x80\x9c sagt es; \
-jede Seite\x0anennt\
- Typschl\xc3\xbcssel u\
-nd Seriennummer \
-und tr\xc3\xa4gt ihre \
-Seitenzahl; die \
-letzte Seite hat\
- eine Zeile\x0af\xc3\xbcr\
- Datum, Name und\
- Unterschrift.</\
-p>\x0a<p><b>Ein Ven\
-til sichern</b>:\
- online gehen, V\
-entil \xe2\x86\x92 Aus de\
-m Ventil herunte\
-rladen, dann\x0aDat\
-ei \xe2\x86\x92 <b>Sicher\
-ungskopie speich\
-ern\xe2\x80\xa6</b> (vorg\
-eschlagener Name\
-: Typschl\xc3\xbcssel,\
- Seriennummer,\x0aD\
-atum und Uhrzeit\
-). Die Kopie wir\
-d geschrieben, d\
-as ge\xc3\xb6ffnete Do\
-kument bleibt, w\
-as es war:\x0asp\xc3\xa4t\
-ere \xc3\x84nderungen \
-werden in seine \
-eigene Datei ges\
-peichert, nie in\
- die Sicherung. \
-Speichern\x0aunter \
-dagegen macht di\
-e neue Datei zum\
- ge\xc3\xb6ffneten Dok\
-ument.</p>\x0a\x0a<h2>\
-Tastatur</h2>\x0a<t\
-able>\x0a<tr><td>St\
-rg+O / Strg+S / \
-Strg+Umschalt+S<\
-/td><td>\xc3\x96ffnen \
-/ Speichern / Sp\
-eichern unter</t\
-d></tr>\x0a<tr><td>\
-Strg+Z / Strg+Y<\
-/td><td>R\xc3\xbcckg\xc3\xa4\
-ngig / Wiederher\
-stellen</td></tr\
->\x0a<tr><td>Strg+P\
- / Strg+E</td><t\
-d>Drucken / PDF \
-exportieren</td>\
-</tr>\x0a<tr><td>St\
-rg+1 / Strg+2 / \
-Strg+3 / Strg+4<\
-/td><td>Ablaufdi\
-agramm / Paramet\
-erliste / Oszill\
-oskop / CANopen-\
-Fenster</td></tr\
->\x0a<tr><td>F5 / U\
-mschalt+F5</td><\
-td>Online / Offl\
-ine</td></tr>\x0a<t\
-r><td>Strg+U / S\
-trg+D</td><td>In\
- das Ventil hoch\
-laden / Aus dem \
-Ventil herunterl\
-aden</td></tr>\x0a<\
-tr><td>Strg+T / \
-Strg+I / Strg+H<\
-/td><td>Ventilau\
-swahl / Ventilst\
-atus / HID-Konfi\
-guration</td></t\
-r>\x0a</table>\x0a<p><\
-b>Skripte und Pr\
-\xc3\xbcfst\xc3\xa4nde</b>: \
-das Ventil aus P\
-ython und Shell-\
-Skripten, <a hre\
-f=\x22scripting_en.\
-html\x22>auf dieser\
- Seite</a> (auf \
-Englisch).</p>\x0a<\
-/body>\x0a</html>\x0a\
-\x00\x00\x05\xaf\
+ent. \xc3\x9cbernimmt \
+das Dokument die\
+ Werte eines Ven\
+tils eines ander\
+en Typs, wird es\
+ ein neues, unge\
+speichertes Doku\
+ment (seine Date\
+i beh\xc3\xa4lt, was s\
+ie enthielt); ei\
+n in ein Ventil \
+hochgeladenes od\
+er mit ihm \xc3\xbcber\
+einstimmendes Do\
+kument geh\xc3\xb6rt v\
+on da an zu dies\
+em Ventil (SNV, \
+und keine Frage \
+beim erneuten Ve\
+rbinden).</p>\x0a<p\
+><b>Wenn das Ven\
+til wegf\xc3\xa4llt</b\
+> (USB-Kabel gez\
+ogen, Spannung a\
+us und ein, CAN-\
+Bus-off, ein\x0aNeu\
+start, nach dem \
+es nicht zur\xc3\xbcck\
+kommt), geht das\
+ Programm offlin\
+e, beh\xc3\xa4lt alle \
+Werte und\x0asucht \
+das Ventil von s\
+elbst: die Statu\
+sleiste zeigt <i\
+>Modus: NEU VERB\
+INDEN\xe2\x80\xa6 3 s</i>\
+. Es sucht\x0aauf d\
+erselben Verbind\
+ung \xe2\x80\x94 \xc3\xbcber CA\
+N auch unter ein\
+er anderen Knote\
+nnummer, wenn di\
+e\x0aSeriennummer (\
+0x1018/4) sagt, \
+dass es dasselbe\
+ Ventil ist. Ist\
+ das Ventil zur\xc3\
+\xbcck, liest das\x0aP\
+rogramm es und v\
+ergleicht es wie\
+ beim Online-Geh\
+en mit dem Dokum\
+ent (<i>Wieder o\
+nline</i>,\x0awenn \
+sie \xc3\xbcbereinstim\
+men); ohne Sie w\
+ird nichts ins V\
+entil geschriebe\
+n: online ge\xc3\xa4nd\
+erte Werte,\x0adie \
+das Ventil beim \
+Aus- und Einscha\
+lten verloren ha\
+t, werden im Unt\
+erschiede-Dialog\
+\x0aangeboten, nich\
+t gesendet. Ein \
+durch die Verbin\
+dung abgebrochen\
+er Tuning-Test s\
+chreibt\x0azur\xc3\xbcck,\
+ was er ge\xc3\xa4nder\
+t hatte, sobald \
+das Ventil wiede\
+r da ist, und me\
+ldet es. Das Osz\
+illoskop zeichne\
+t weiter auf; de\
+r Sollwertgenera\
+tor und ein\x0aTuni\
+ng-Test bleiben \
+angehalten, bis \
+Sie sie starten \
+(\xc3\xbcber CAN wird \
+die Empfangs\xc3\xbcbe\
+rwachung,\x0adie ei\
+n abgebrochener \
+Sollwertgenerato\
+r im Ventil gese\
+tzt hatte, zur\xc3\xbc\
+ckgesetzt, sobal\
+d das\x0aVentil wie\
+der da ist, und \
+die Statusleiste\
+ meldet es). Ein\
+ Bus-Off Ihres C\
+AN-Adapters wird\
+ in\x0ader Statusle\
+iste genannt; da\
+s Ventil wird wi\
+edergefunden, so\
+bald der Adapter\
+ wieder am Bus\x0ai\
+st. Ein abgebroc\
+henes Hochladen \
+meldet, was\x0agesc\
+hah und was das \
+Ventil enth\xc3\xa4lt;\
+ es wird nicht f\
+ortgesetzt. Ein \
+anderes Ventil (\
+andere\x0aSeriennum\
+mer) an der Stel\
+le des verlorene\
+n ist ein neues \
+Ventil: das Prog\
+ramm sagt es und\
+\x0averbindet sich \
+nicht von selbst\
+. Selbst online \
+oder offline geh\
+en beendet die S\
+uche. Mit\x0aeinem \
+emulierten Venti\
+l zeigen es Vent\
+il \xe2\x86\x92 Emulierte\
+s Ventil \xe2\x86\x92 <b>\
+USB-Kabel ziehen\
+</b> und\x0a<b>USB-\
+Kabel wieder ein\
+stecken</b>.</p>\
+\x0a<p>Online ge\xc3\xa4n\
+derte Werte sind\
+ im Ventil aktiv\
+, aber noch nich\
+t gespeichert: b\
+eim Wechsel\x0aauf \
+offline bietet d\
+as Programm an, \
+sie zu speichern\
+, und Ventil \xe2\x86\x92\
+ <b>Im Ventil sp\
+eichern</b>\x0aspei\
+chert sie sofort\
+ (womit das Vent\
+il arbeitet, dam\
+it startet es au\
+ch; im Verlauf\x0af\
+estgehalten). <b\
+>In das Ventil h\
+ochladen</b>\x0asch\
+reibt alle Werte\
+, liest sie zur\xc3\
+\xbcck, vergleicht \
+und speichert si\
+e; gespeichert w\
+ird nur,\x0awenn je\
+der Wert best\xc3\xa4t\
+igt wurde. Vor d\
+em ersten Hochla\
+den in ein Venti\
+l sichert das\x0aPr\
+ogramm dessen ei\
+gene Parameter i\
+m Benutzerdateno\
+rdner (<code>bac\
+kups/&lt;Serienn\
+ummer&gt;/</code\
+>).</p>\x0a<p><b>Ve\
+ntil neu starten\
+</b> und <b>Werk\
+seinstellungen w\
+iederherstellen<\
+/b> sind nur bei\
+\x0agetrennter Hydr\
+aulik erlaubt; d\
+as Programm l\xc3\xa4s\
+st Sie das best\xc3\
+\xa4tigen.</p>\x0a<p>V\
+entil \xe2\x86\x92 <b>Dur\
+ch Neustart pr\xc3\xbc\
+fen\xe2\x80\xa6</b> (nach\
+ dem Hochladen, \
+solange dasselbe\
+ Ventil online\x0ab\
+leibt) startet d\
+as Ventil \xe2\x80\x93 na\
+ch derselben Bes\
+t\xc3\xa4tigung zur Hy\
+draulik \xe2\x80\x93 neu \
+und liest seine\x0a\
+Parameter zur\xc3\xbcc\
+k: die Statuszei\
+le meldet \xe2\x80\x9e\xe2\x80\xa6\
+ unver\xc3\xa4ndert zu\
+r\xc3\xbcckgelesen: na\
+ch einem Neustar\
+t\x0agepr\xc3\xbcft\xe2\x80\x9c, o\
+der eine Meldung\
+ nennt jeden Wer\
+t, den das Venti\
+l nicht behalten\
+ hat (erwartet \xe2\
+\x86\x92\x0azur\xc3\xbcckgelese\
+n), und der Verl\
+auf h\xc3\xa4lt das Er\
+gebnis fest. Die\
+ Meldung des Hoc\
+hladens sagt, wi\
+e\x0adas Ventil die\
+ Werte beh\xc3\xa4lt: \
+\xe2\x80\x9emit 0x1010 ge\
+speichert\xe2\x80\x9c ode\
+r, \xc3\xbcber CANopen\
+ bei einem Venti\
+l\x0aohne Speicherb\
+efehl, \xe2\x80\x9evom Ve\
+ntil wie geschri\
+eben behalten (e\
+s hat keinen Spe\
+icherbefehl)\xe2\x80\x9c.\
+\x0aOnline ge\xc3\xa4nder\
+te, noch nicht g\
+espeicherte Wert\
+e m\xc3\xbcssen zuerst\
+ gespeichert wer\
+den (ein Neustar\
+t\x0aw\xc3\xbcrde sie ver\
+lieren). Meldet \
+sich das Ventil \
+nicht wieder, ge\
+ht das Programm \
+offline und sagt\
+,\x0awas das Ventil\
+ nach bestem Wis\
+sen enth\xc3\xa4lt; da\
+s Dokument beh\xc3\xa4\
+lt jeden Wert.</\
+p>\x0a\x0a<h2>Dateien<\
+/h2>\x0a<p>Paramete\
+rdateien (<code>\
+*.prm</code>) si\
+nd Textdateien. \
+\xc3\x96ffnen, Speiche\
+rn, Speichern\x0aun\
+ter, die zuletzt\
+ ge\xc3\xb6ffneten Dat\
+eien und Drag &a\
+mp; Drop funktio\
+nieren wie gewoh\
+nt; vor dem\x0aVerl\
+ust ungespeicher\
+ter \xc3\x84nderungen \
+fragt das Progra\
+mm nach. Jede \xc3\x84\
+nderung l\xc3\xa4sst s\
+ich\x0ar\xc3\xbcckg\xc3\xa4ngig\
+ machen (Strg+Z)\
+ und wiederherst\
+ellen (Strg+Y). \
+Datei \xe2\x86\x92 Drucke\
+n und Datei \xe2\x86\x92 \
+PDF\x0aexportieren \
+erzeugen ein Par\
+ameterprotokoll \
+mit Typschl\xc3\xbcsse\
+l, Seriennummer,\
+ Firmware, Datei\
+,\x0aDatum, Berecht\
+igungsstufe, dem\
+ Ablaufdiagramm \
+und allen Parame\
+tern mit Einheit\
+. Seit dem\x0aSpeic\
+hern ge\xc3\xa4nderte \
+Werte sind mit <\
+b>*</b> markiert\
+, und die Zeile \
+\xe2\x80\x9eDatei\xe2\x80\x9c sagt\
+ es; jede Seite\x0a\
+nennt Typschl\xc3\xbcs\
+sel und Seriennu\
+mmer und tr\xc3\xa4gt \
+ihre Seitenzahl;\
+ die letzte Seit\
+e hat eine Zeile\
+\x0af\xc3\xbcr Datum, Nam\
+e und Unterschri\
+ft.</p>\x0a<p><b>Ei\
+n Ventil sichern\
+</b>: online geh\
+en, Ventil \xe2\x86\x92 A\
+us dem Ventil he\
+runterladen, dan\
+n\x0aDatei \xe2\x86\x92 <b>S\
+icherungskopie s\
+peichern\xe2\x80\xa6</b> \
+(vorgeschlagener\
+ Name: Typschl\xc3\xbc\
+ssel, Seriennumm\
+er,\x0aDatum und Uh\
+rzeit). Die Kopi\
+e wird geschrieb\
+en, das ge\xc3\xb6ffne\
+te Dokument blei\
+bt, was es war:\x0a\
+sp\xc3\xa4tere \xc3\x84nderu\
+ngen werden in s\
+eine eigene Date\
+i gespeichert, n\
+ie in die Sicher\
+ung. Speichern\x0au\
+nter dagegen mac\
+ht die neue Date\
+i zum ge\xc3\xb6ffnete\
+n Dokument.</p>\x0a\
+\x0a<h2>Tastatur</h\
+2>\x0a<table>\x0a<tr><\
+td>Strg+O / Strg\
++S / Strg+Umscha\
+lt+S</td><td>\xc3\x96f\
+fnen / Speichern\
+ / Speichern unt\
+er</td></tr>\x0a<tr\
+><td>Strg+Z / St\
+rg+Y</td><td>R\xc3\xbc\
+ckg\xc3\xa4ngig / Wied\
+erherstellen</td\
+></tr>\x0a<tr><td>S\
+trg+P / Strg+E</\
+td><td>Drucken /\
+ PDF exportieren\
+</td></tr>\x0a<tr><\
+td>Strg+1 / Strg\
++2 / Strg+3 / St\
+rg+4</td><td>Abl\
+aufdiagramm / Pa\
+rameterliste / O\
+szilloskop / CAN\
+open-Fenster</td\
+></tr>\x0a<tr><td>F\
+5 / Umschalt+F5<\
+/td><td>Online /\
+ Offline</td></t\
+r>\x0a<tr><td>Strg+\
+U / Strg+D</td><\
+td>In das Ventil\
+ hochladen / Aus\
+ dem Ventil heru\
+nterladen</td></\
+tr>\x0a<tr><td>Strg\
++T / Strg+I / St\
+rg+H</td><td>Ven\
+tilauswahl / Ven\
+tilstatus / HID-\
+Konfiguration</t\
+d></tr>\x0a</table>\
+\x0a<p><b>Skripte u\
+nd Pr\xc3\xbcfst\xc3\xa4nde<\
+/b>: das Ventil \
+aus Python und S\
+hell-Skripten, <\
+a href=\x22scriptin\
+g_en.html\x22>auf d\
+ieser Seite</a> \
+(auf Englisch).<\
+/p>\x0a</body>\x0a</ht\
+ml>\x0a\
+\x00\x00\x07\xa7\
 <\
 !DOCTYPE html>\x0a<\
 html lang=\x22en\x22>\x0a\
@@ -2606,8 +2714,40 @@ ostgreSQL server\
 tations, and wha\
 t to do when it \
 cannot be\x0areache\
-d.</li>\x0a</ul>\x0a</\
-body>\x0a</html>\x0a\
+d.</li>\x0a</ul>\x0a<p\
+>Autotune runs, \
+frequency respon\
+ses, test report\
+s (with the figu\
+res that failed \
+and,\x0aonce saved,\
+ the PDF) and re\
+starts on the va\
+lve are recorded\
+ too. <b>Double-\
+click</b> a reco\
+rd\x0afor its detai\
+ls \xe2\x80\x94 every fie\
+ld, <b>Open the \
+PDF</b>, <b>Comp\
+are with the rec\
+ord before</b> \xe2\
+\x80\x94 or,\x0awith two \
+records selected\
+, for their comp\
+arison. A valve'\
+s type key never\
+ changes: record\
+s of\x0aanother typ\
+e under the same\
+ serial number (\
+emulated valves \
+of two runs may \
+share one) are\x0am\
+arked \xe2\x9a\xa0 and th\
+e window says so\
+.</p>\x0a</body>\x0a</\
+html>\x0a\
 \x00\x00\x0b\x1b\
 <\
 !DOCTYPE html>\x0a<\
@@ -3250,7 +3390,7 @@ ls \xe2\x80\x9e\xe2\x80\x94\xe2\x80\x9c und\
 ht\x0aw\xc3\xa4hlen.</p>\x0a\
 </body>\x0a</html>\x0a\
 \
-\x00\x00\x1fc\
+\x00\x00 _\
 <\
 !DOCTYPE html>\x0a<\
 html lang=\x22en\x22>\x0a\
@@ -3446,315 +3586,330 @@ ake the valve's \
 values, send the\
  document's valu\
 es\x0a(upload) or c\
-ancel. Online, e\
-very change goes\
- to the valve at\
- once and into t\
-he document;\x0aoff\
-line, into the d\
-ocument only.</p\
->\x0a<p><b>When the\
- valve drops off\
-</b> (a pulled U\
-SB cable, a powe\
-r cycle, a CAN b\
-us-off, a restar\
-t\x0athat does not \
-come back), the \
-program goes off\
-line, keeps ever\
-y value and look\
-s for the valve\x0a\
-by itself: the s\
-tatus bar reads \
-<i>Mode: RECONNE\
-CTING\xe2\x80\xa6 3 s</i>\
-. It looks on th\
-e same link \xe2\x80\x94 \
-over\x0aCAN also at\
- another node ID\
-, if the serial \
-number (0x1018/4\
-) says it is the\
- same valve. Whe\
-n\x0athe valve is b\
-ack it reads it \
-and compares it \
-with the documen\
-t as on going on\
-line\x0a(<i>Back on\
-line</i> when th\
-ey agree); nothi\
-ng is written to\
- the valve witho\
-ut you: values\x0ac\
-hanged online th\
-at the valve los\
-t in a power cyc\
-le are offered i\
-n the difference\
-s dialog, not\x0ase\
-nt. A tuning tes\
-t cut off by the\
- link writes bac\
-k what it had ch\
-anged as soon as\
- the valve\x0ais ba\
-ck, and says so.\
- The oscilloscop\
-e records on; th\
-e setpoint gener\
-ator and a tunin\
-g test\x0astay stop\
-ped until you st\
-art them (over C\
-AN the reception\
- deadline a cut-\
-off generator ha\
-d set\x0ain the val\
-ve is put back w\
-hen it is back, \
-and the status b\
-ar says so). A b\
-us-off of your C\
-AN\x0aadapter is na\
-med in the statu\
-s bar; the valve\
- is found again \
-once the adapter\
- is back on the\x0a\
-bus. An upload t\
-hat was cut off \
-reports what hap\
-pened and what t\
-he valve holds; \
-it\x0ais not resume\
-d. Another valve\
- (another serial\
- number) where t\
-he lost one was \
-is a new valve:\x0a\
-the program says\
- so and does not\
- connect to it b\
-y itself. Going \
-online or offlin\
-e yourself\x0astops\
- the search. Wit\
-h an emulated va\
-lve, Valve \xe2\x86\x92 E\
-mulated valve \xe2\x86\
-\x92 <b>Pull the US\
-B cable</b>\x0aand \
-<b>Plug the USB \
-cable back in</b\
-> show it.</p>\x0a<\
-p>Values changed\
- online are acti\
-ve in the valve \
-but not yet stor\
-ed: going offlin\
-e offers to\x0astor\
-e them, and Valv\
-e \xe2\x86\x92 <b>Store i\
-n valve</b> stor\
-es them at once \
-(what the valve \
-works with\x0abecom\
-es what it start\
-s with; recorded\
- in the history)\
-. <b>Upload to v\
-alve</b> writes \
-all values, read\
-s them back, com\
-pares and stores\
-\x0athem; nothing i\
-s stored unless \
-every value was \
-verified. Before\
- the first uploa\
-d to a valve\x0athe\
- program saves a\
- backup of the v\
-alve's own param\
-eters in the use\
-r data folder\x0a(<\
-code>backups/&lt\
-;serial&gt;/</co\
-de>).</p>\x0a<p><b>\
-Restart valve</b\
-> and <b>Restore\
- factory values<\
-/b> are allowed \
-only with the\x0ahy\
-draulics disconn\
-ected; the progr\
-am asks you to c\
-onfirm this.</p>\
-\x0a<p>Valve \xe2\x86\x92 <b\
->Verify by resta\
-rt\xe2\x80\xa6</b> (after\
- an upload, whil\
-e the same valve\
- stays online)\x0ar\
-estarts the valv\
-e \xe2\x80\x94 after the \
-same hydraulics \
-confirmation \xe2\x80\x94\
- and reads its p\
-arameters back:\x0a\
+ancel. Taking th\
+e values of a va\
+lve of another t\
+ype makes the do\
+cument a new, un\
+saved one (its f\
+ile keeps what i\
+t held); a docum\
+ent uploaded to \
+a valve, or agre\
+eing with it, is\
+ that valve's fr\
+om then on (SNV,\
+ and no question\
+ when going onli\
+ne with it again\
+). Online, every\
+ change goes to \
+the valve at onc\
+e and into the d\
+ocument;\x0aoffline\
+, into the docum\
+ent only.</p>\x0a<p\
+><b>When the val\
+ve drops off</b>\
+ (a pulled USB c\
+able, a power cy\
+cle, a CAN bus-o\
+ff, a restart\x0ath\
+at does not come\
+ back), the prog\
+ram goes offline\
+, keeps every va\
+lue and looks fo\
+r the valve\x0aby i\
+tself: the statu\
+s bar reads <i>M\
+ode: RECONNECTIN\
+G\xe2\x80\xa6 3 s</i>. It\
+ looks on the sa\
+me link \xe2\x80\x94 over\
+\x0aCAN also at ano\
+ther node ID, if\
+ the serial numb\
+er (0x1018/4) sa\
+ys it is the sam\
+e valve. When\x0ath\
+e valve is back \
+it reads it and \
+compares it with\
+ the document as\
+ on going online\
+\x0a(<i>Back online\
+</i> when they a\
+gree); nothing i\
+s written to the\
+ valve without y\
+ou: values\x0achang\
+ed online that t\
+he valve lost in\
+ a power cycle a\
+re offered in th\
+e differences di\
+alog, not\x0asent. \
+A tuning test cu\
+t off by the lin\
+k writes back wh\
+at it had change\
+d as soon as the\
+ valve\x0ais back, \
+and says so. The\
+ oscilloscope re\
+cords on; the se\
+tpoint generator\
+ and a tuning te\
+st\x0astay stopped \
+until you start \
+them (over CAN t\
+he reception dea\
+dline a cut-off \
+generator had se\
+t\x0ain the valve i\
+s put back when \
+it is back, and \
 the status bar s\
-ays \xe2\x80\x9c\xe2\x80\xa6 read \
-back unchanged \xe2\
-\x80\xa6: verified aft\
-er a restart\xe2\x80\x9d,\
- or a message li\
-sts\x0aeach value t\
-he valve did not\
- keep (expected \
-\xe2\x86\x92 read back), \
-and the history \
-records the outc\
-ome.\x0aThe upload'\
-s own message sa\
-ys how the valve\
- kept the values\
-: \xe2\x80\x9cstored with\
- 0x1010\xe2\x80\x9d, or o\
-ver\x0aCANopen on a\
- valve without a\
- store command \xe2\
-\x80\x9ckept by the va\
-lve as written (\
-it has no store\x0a\
-command)\xe2\x80\x9d. Val\
-ues changed onli\
-ne and not store\
-d yet must be st\
-ored first (a re\
-start would\x0alose\
- them). If the v\
-alve does not co\
-me back, the pro\
-gram goes offlin\
-e and says what \
-the valve\x0aholds \
-as far as known;\
- the document ke\
-eps every value.\
-</p>\x0a\x0a<h2>Files<\
-/h2>\x0a<p>Paramete\
-r files (<code>*\
-.prm</code>) are\
- text files. Ope\
-n, Save, Save As\
-, the recent\x0afil\
-es and drag and \
-drop work as usu\
-al; the program \
-asks before unsa\
-ved changes are \
-lost.\x0aEvery chan\
-ge can be undone\
- (Ctrl+Z) and re\
-done (Ctrl+Y). F\
-ile \xe2\x86\x92 Print an\
-d File \xe2\x86\x92 Expor\
-t PDF\x0aproduce a \
-parameter record\
- with type key, \
-serial number, f\
-irmware, file, d\
-ate, access leve\
-l,\x0athe flow diag\
-ram and every pa\
-rameter with its\
- unit. Values ch\
-anged since the \
-file was saved\x0aa\
-re marked <b>*</\
-b> and the file \
-line says so; ev\
-ery page names t\
-he type key and \
-serial\x0anumber an\
-d carries its pa\
-ge number; the l\
-ast page has a l\
-ine for date, na\
-me and\x0asignature\
-.</p>\x0a<p><b>Back\
- up a valve</b>:\
- go online, Valv\
-e \xe2\x86\x92 Download f\
-rom valve, then \
-File \xe2\x86\x92 <b>Save\
- backup\x0acopy\xe2\x80\xa6<\
-/b> (proposed na\
-me: type key, se\
-rial number, dat\
-e and time). The\
- copy is written\
- and\x0athe open do\
-cument stays wha\
-t it was: later \
-changes are save\
-d into the docum\
-ent's own file,\x0a\
-never into the b\
-ackup. Save As, \
-by contrast, mak\
-es the new file \
-the open documen\
-t.</p>\x0a\x0a<h2>Keyb\
-oard</h2>\x0a<table\
->\x0a<tr><td>Ctrl+O\
- / Ctrl+S / Ctrl\
-+Shift+S</td><td\
->Open / Save / S\
-ave As</td></tr>\
-\x0a<tr><td>Ctrl+Z \
-/ Ctrl+Y</td><td\
->Undo / Redo</td\
-></tr>\x0a<tr><td>C\
-trl+P / Ctrl+E</\
-td><td>Print / E\
-xport PDF</td></\
-tr>\x0a<tr><td>Ctrl\
-+1 / Ctrl+2 / Ct\
-rl+3 / Ctrl+4</t\
-d><td>Flow diagr\
-am / Parameter l\
-ist / Oscillosco\
-pe / CANopen win\
-dow</td></tr>\x0a<t\
-r><td>F5 / Shift\
-+F5</td><td>Onli\
-ne / Offline</td\
-></tr>\x0a<tr><td>C\
-trl+U / Ctrl+D</\
-td><td>Upload to\
- valve / Downloa\
-d from valve</td\
-></tr>\x0a<tr><td>C\
-trl+T / Ctrl+I /\
- Ctrl+H</td><td>\
-Valve selection \
-/ Valve status /\
- HID configurati\
-on</td></tr>\x0a</t\
-able>\x0a<p><b>Scri\
-pts and test ben\
-ches</b>: the va\
-lve from Python \
-and shell script\
-s, <a href=\x22scri\
-pting_en.html\x22>o\
-n this page</a> \
-(in English).</p\
->\x0a</body>\x0a</html\
->\x0a\
+ays so). A bus-o\
+ff of your CAN\x0aa\
+dapter is named \
+in the status ba\
+r; the valve is \
+found again once\
+ the adapter is \
+back on the\x0abus.\
+ An upload that \
+was cut off repo\
+rts what happene\
+d and what the v\
+alve holds; it\x0ai\
+s not resumed. A\
+nother valve (an\
+other serial num\
+ber) where the l\
+ost one was is a\
+ new valve:\x0athe \
+program says so \
+and does not con\
+nect to it by it\
+self. Going onli\
+ne or offline yo\
+urself\x0astops the\
+ search. With an\
+ emulated valve,\
+ Valve \xe2\x86\x92 Emula\
+ted valve \xe2\x86\x92 <b\
+>Pull the USB ca\
+ble</b>\x0aand <b>P\
+lug the USB cabl\
+e back in</b> sh\
+ow it.</p>\x0a<p>Va\
+lues changed onl\
+ine are active i\
+n the valve but \
+not yet stored: \
+going offline of\
+fers to\x0astore th\
+em, and Valve \xe2\x86\
+\x92 <b>Store in va\
+lve</b> stores t\
+hem at once (wha\
+t the valve work\
+s with\x0abecomes w\
+hat it starts wi\
+th; recorded in \
+the history). <b\
+>Upload to valve\
+</b> writes all \
+values, reads th\
+em back, compare\
+s and stores\x0athe\
+m; nothing is st\
+ored unless ever\
+y value was veri\
+fied. Before the\
+ first upload to\
+ a valve\x0athe pro\
+gram saves a bac\
+kup of the valve\
+'s own parameter\
+s in the user da\
+ta folder\x0a(<code\
+>backups/&lt;ser\
+ial&gt;/</code>)\
+.</p>\x0a<p><b>Rest\
+art valve</b> an\
+d <b>Restore fac\
+tory values</b> \
+are allowed only\
+ with the\x0ahydrau\
+lics disconnecte\
+d; the program a\
+sks you to confi\
+rm this.</p>\x0a<p>\
+Valve \xe2\x86\x92 <b>Ver\
+ify by restart\xe2\x80\
+\xa6</b> (after an \
+upload, while th\
+e same valve sta\
+ys online)\x0aresta\
+rts the valve \xe2\x80\
+\x94 after the same\
+ hydraulics conf\
+irmation \xe2\x80\x94 and\
+ reads its param\
+eters back:\x0athe \
+status bar says \
+\xe2\x80\x9c\xe2\x80\xa6 read back\
+ unchanged \xe2\x80\xa6: \
+verified after a\
+ restart\xe2\x80\x9d, or \
+a message lists\x0a\
+each value the v\
+alve did not kee\
+p (expected \xe2\x86\x92 \
+read back), and \
+the history reco\
+rds the outcome.\
+\x0aThe upload's ow\
+n message says h\
+ow the valve kep\
+t the values: \xe2\x80\
+\x9cstored with 0x1\
+010\xe2\x80\x9d, or over\x0a\
+CANopen on a val\
+ve without a sto\
+re command \xe2\x80\x9cke\
+pt by the valve \
+as written (it h\
+as no store\x0acomm\
+and)\xe2\x80\x9d. Values \
+changed online a\
+nd not stored ye\
+t must be stored\
+ first (a restar\
+t would\x0alose the\
+m). If the valve\
+ does not come b\
+ack, the program\
+ goes offline an\
+d says what the \
+valve\x0aholds as f\
+ar as known; the\
+ document keeps \
+every value.</p>\
+\x0a\x0a<h2>Files</h2>\
+\x0a<p>Parameter fi\
+les (<code>*.prm\
+</code>) are tex\
+t files. Open, S\
+ave, Save As, th\
+e recent\x0afiles a\
+nd drag and drop\
+ work as usual; \
+the program asks\
+ before unsaved \
+changes are lost\
+.\x0aEvery change c\
+an be undone (Ct\
+rl+Z) and redone\
+ (Ctrl+Y). File \
+\xe2\x86\x92 Print and Fi\
+le \xe2\x86\x92 Export PD\
+F\x0aproduce a para\
+meter record wit\
+h type key, seri\
+al number, firmw\
+are, file, date,\
+ access level,\x0at\
+he flow diagram \
+and every parame\
+ter with its uni\
+t. Values change\
+d since the file\
+ was saved\x0aare m\
+arked <b>*</b> a\
+nd the file line\
+ says so; every \
+page names the t\
+ype key and seri\
+al\x0anumber and ca\
+rries its page n\
+umber; the last \
+page has a line \
+for date, name a\
+nd\x0asignature.</p\
+>\x0a<p><b>Back up \
+a valve</b>: go \
+online, Valve \xe2\x86\
+\x92 Download from \
+valve, then File\
+ \xe2\x86\x92 <b>Save bac\
+kup\x0acopy\xe2\x80\xa6</b> \
+(proposed name: \
+type key, serial\
+ number, date an\
+d time). The cop\
+y is written and\
+\x0athe open docume\
+nt stays what it\
+ was: later chan\
+ges are saved in\
+to the document'\
+s own file,\x0aneve\
+r into the backu\
+p. Save As, by c\
+ontrast, makes t\
+he new file the \
+open document.</\
+p>\x0a\x0a<h2>Keyboard\
+</h2>\x0a<table>\x0a<t\
+r><td>Ctrl+O / C\
+trl+S / Ctrl+Shi\
+ft+S</td><td>Ope\
+n / Save / Save \
+As</td></tr>\x0a<tr\
+><td>Ctrl+Z / Ct\
+rl+Y</td><td>Und\
+o / Redo</td></t\
+r>\x0a<tr><td>Ctrl+\
+P / Ctrl+E</td><\
+td>Print / Expor\
+t PDF</td></tr>\x0a\
+<tr><td>Ctrl+1 /\
+ Ctrl+2 / Ctrl+3\
+ / Ctrl+4</td><t\
+d>Flow diagram /\
+ Parameter list \
+/ Oscilloscope /\
+ CANopen window<\
+/td></tr>\x0a<tr><t\
+d>F5 / Shift+F5<\
+/td><td>Online /\
+ Offline</td></t\
+r>\x0a<tr><td>Ctrl+\
+U / Ctrl+D</td><\
+td>Upload to val\
+ve / Download fr\
+om valve</td></t\
+r>\x0a<tr><td>Ctrl+\
+T / Ctrl+I / Ctr\
+l+H</td><td>Valv\
+e selection / Va\
+lve status / HID\
+ configuration</\
+td></tr>\x0a</table\
+>\x0a<p><b>Scripts \
+and test benches\
+</b>: the valve \
+from Python and \
+shell scripts, <\
+a href=\x22scriptin\
+g_en.html\x22>on th\
+is page</a> (in \
+English).</p>\x0a</\
+body>\x0a</html>\x0a\
 \x00\x00\x0a4\
 <\
 !DOCTYPE html>\x0a<\
@@ -4538,35 +4693,35 @@ qt_resource_struct = b"\
 \x00\x00\x00\x00\x00\x02\x00\x00\x00\x02\x00\x00\x00\x01\
 \x00\x00\x00\x10\x00\x02\x00\x00\x00\x10\x00\x00\x00\x10\
 \x00\x00\x00\x00\x00\x02\x00\x00\x00\x0d\x00\x00\x00\x03\
-\x00\x00\x02\xb6\x00\x00\x00\x00\x00\x01\x00\x01\x01\xae\
-\x00\x00\x02L\x00\x00\x00\x00\x00\x01\x00\x00\xfc\x10\
-\x00\x00\x03X\x00\x00\x00\x00\x00\x01\x00\x01\x0b\xe4\
-\x00\x00\x02\xd0\x00\x00\x00\x00\x00\x01\x00\x01\x02\xdb\
-\x00\x00\x022\x00\x00\x00\x00\x00\x01\x00\x00\xfaJ\
-\x00\x00\x03t\x00\x00\x00\x00\x00\x01\x00\x01\x0d|\
-\x00\x00\x02\xe8\x00\x00\x00\x00\x00\x01\x00\x01\x04\xaa\
-\x00\x00\x03:\x00\x00\x00\x00\x00\x01\x00\x01\x0a8\
-\x00\x00\x02d\x00\x00\x00\x00\x00\x01\x00\x00\xfd\xb6\
-\x00\x00\x03\x04\x00\x00\x00\x00\x00\x01\x00\x01\x06s\
-\x00\x00\x02\x80\x00\x00\x00\x00\x00\x01\x00\x00\xfe\xb3\
-\x00\x00\x02\x9c\x00\x00\x00\x00\x00\x01\x00\x01\x00l\
-\x00\x00\x03\x18\x00\x00\x00\x00\x00\x01\x00\x01\x08\xf7\
-\x00\x00\x01J\x00\x00\x00\x00\x00\x01\x00\x00\x9b\x87\
-\x00\x00\x00\xe6\x00\x00\x00\x00\x00\x01\x00\x00Yh\
-\x00\x00\x01\xac\x00\x00\x00\x00\x00\x01\x00\x00\xc2\x07\
-\x00\x00\x00\xc4\x00\x00\x00\x00\x00\x01\x00\x00A,\
-\x00\x00\x01\x0a\x00\x00\x00\x00\x00\x01\x00\x00_\xf3\
-\x00\x00\x01\x8a\x00\x00\x00\x00\x00\x01\x00\x00\xacY\
+\x00\x00\x02\xb6\x00\x00\x00\x00\x00\x01\x00\x01\x0bb\
+\x00\x00\x02L\x00\x00\x00\x00\x00\x01\x00\x01\x05\xc4\
+\x00\x00\x03X\x00\x00\x00\x00\x00\x01\x00\x01\x15\x98\
+\x00\x00\x02\xd0\x00\x00\x00\x00\x00\x01\x00\x01\x0c\x8f\
+\x00\x00\x022\x00\x00\x00\x00\x00\x01\x00\x01\x03\xfe\
+\x00\x00\x03t\x00\x00\x00\x00\x00\x01\x00\x01\x170\
+\x00\x00\x02\xe8\x00\x00\x00\x00\x00\x01\x00\x01\x0e^\
+\x00\x00\x03:\x00\x00\x00\x00\x00\x01\x00\x01\x13\xec\
+\x00\x00\x02d\x00\x00\x00\x00\x00\x01\x00\x01\x07j\
+\x00\x00\x03\x04\x00\x00\x00\x00\x00\x01\x00\x01\x10'\
+\x00\x00\x02\x80\x00\x00\x00\x00\x00\x01\x00\x01\x08g\
+\x00\x00\x02\x9c\x00\x00\x00\x00\x00\x01\x00\x01\x0a \
+\x00\x00\x03\x18\x00\x00\x00\x00\x00\x01\x00\x01\x12\xab\
+\x00\x00\x01J\x00\x00\x00\x00\x00\x01\x00\x00\xa2G\
+\x00\x00\x00\xe6\x00\x00\x00\x00\x00\x01\x00\x00^\xf3\
+\x00\x00\x01\xac\x00\x00\x00\x00\x00\x01\x00\x00\xca\xbf\
+\x00\x00\x00\xc4\x00\x00\x00\x00\x00\x01\x00\x00F\xb7\
+\x00\x00\x01\x0a\x00\x00\x00\x00\x00\x01\x00\x00e~\
+\x00\x00\x01\x8a\x00\x00\x00\x00\x00\x01\x00\x00\xb5\x11\
 \x00\x00\x00:\x00\x00\x00\x00\x00\x01\x00\x00\x0bh\
-\x00\x00\x02\x0a\x00\x00\x00\x00\x00\x01\x00\x00\xf2\x8b\
-\x00\x00\x00\x82\x00\x00\x00\x00\x00\x01\x00\x00\x17\xdd\
-\x00\x00\x01,\x00\x00\x00\x00\x00\x01\x00\x00wC\
-\x00\x00\x01\xd0\x00\x00\x00\x00\x00\x01\x00\x00\xc8\xec\
-\x00\x00\x01n\x00\x00\x00\x00\x00\x01\x00\x00\xa1:\
+\x00\x00\x02\x0a\x00\x00\x00\x00\x00\x01\x00\x00\xfc?\
+\x00\x00\x00\x82\x00\x00\x00\x00\x00\x01\x00\x00\x1a0\
+\x00\x00\x01,\x00\x00\x00\x00\x00\x01\x00\x00|\xce\
+\x00\x00\x01\xd0\x00\x00\x00\x00\x00\x01\x00\x00\xd1\xa4\
+\x00\x00\x01n\x00\x00\x00\x00\x00\x01\x00\x00\xa9\xf2\
 \x00\x00\x00\x1e\x00\x00\x00\x00\x00\x01\x00\x00\x00\x00\
-\x00\x00\x01\xee\x00\x00\x00\x00\x00\x01\x00\x00\xe8S\
+\x00\x00\x01\xee\x00\x00\x00\x00\x00\x01\x00\x00\xf2\x07\
 \x00\x00\x00^\x00\x00\x00\x00\x00\x01\x00\x00\x11V\
-\x00\x00\x00\xa0\x00\x00\x00\x00\x00\x01\x00\x00:\xf6\
+\x00\x00\x00\xa0\x00\x00\x00\x00\x00\x01\x00\x00>U\
 "
 
 def qInitResources():

@@ -4,6 +4,11 @@ level.
 Mode is ONLINE only while the document and the valve agree and edits go to the valve; between
 connecting and the user's answer to the differences question it says CONNECTING, and
 Cancel there makes it OFFLINE again.
+
+A message (:meth:`MainStatusBar.showMessage`) is shown in a label of its own, left of the
+fields, that wraps onto a second line when it is longer than the room left: it is read whole
+and the fields (type key and file name too) stay (issue 34 item 20; before, the fields stepped
+aside for a long message and the window did not say which file or valve it showed).
 """
 
 from __future__ import annotations
@@ -11,8 +16,8 @@ from __future__ import annotations
 from pathlib import Path
 from typing import TYPE_CHECKING
 
-from PySide6.QtCore import QEvent
-from PySide6.QtWidgets import QFrame, QLabel, QStatusBar, QWidget
+from PySide6.QtCore import QEvent, QTimer
+from PySide6.QtWidgets import QFrame, QLabel, QSizePolicy, QStatusBar, QWidget
 
 from prm9tool.catalogue import Access
 from prm9tool.views.emcy import status_summary
@@ -35,6 +40,14 @@ class MainStatusBar(QStatusBar):
         self.type_key_label = QLabel()
         self.file_label = QLabel()
         self.level_label = QLabel()
+        self.message_label = QLabel()  # the message, wrapped when longer than the room left
+        self.message_label.setWordWrap(True)
+        self.message_label.setSizePolicy(QSizePolicy.Policy.Ignored, QSizePolicy.Policy.Preferred)
+        self.addWidget(self.message_label, 1)
+        self._message = ""
+        self._message_timer = QTimer(self)
+        self._message_timer.setSingleShot(True)
+        self._message_timer.timeout.connect(self.clearMessage)
         self.lost_label = QLabel()  # shown only while the oscilloscope stream loses samples
         self.lost_label.hide()
         self.addPermanentWidget(self.lost_label)
@@ -51,46 +64,28 @@ class MainStatusBar(QStatusBar):
         self._modified = False
         self._lost = 0
         self._reconnecting: tuple[float, int] | None = None  # (seconds, serial) while looking
-        self._made_room: list[QLabel] = []  # fields hidden while a long message is shown
-        self.messageChanged.connect(self._on_message_changed)
         self.retranslate()
 
     def showMessage(self, message: str, timeout: int | None = 0) -> None:
-        """Show ``message``; while it is longer than the room left of the fields, the file,
-        type key and firmware fields step aside (in that order) so that it is read whole (a
-        message ending "stored at 03:37:0" lost its last digit), and the whole message is the
-        bar's tip."""
-        super().showMessage(message, timeout or 0)
+        """Show ``message`` (for ``timeout`` ms; 0: until the next); the bar's tip is the
+        whole message too."""
+        self._message = message
+        self.message_label.setText(message)
         self.setToolTip(message)
-        self._make_room(message)
+        if timeout:
+            self._message_timer.start(timeout)
+        else:
+            self._message_timer.stop()
+        self.messageChanged.emit(message)
 
-    def _make_room(self, message: str) -> None:
-        """Hide fields (file, type key, firmware) until ``message`` fits; also when a field
-        grows while the message is shown (the firmware and status arrive just after "Online:
-        parameters read from the valve", and cut its end in Czech)."""
-        needed = self.fontMetrics().horizontalAdvance(message) + 24
-        for label in (self.file_label, self.type_key_label, self.firmware_label):
-            if self._room() >= needed:
-                break
-            if label.isVisible():
-                label.hide()
-                self._made_room.append(label)
+    def clearMessage(self) -> None:
+        """Remove the message."""
+        if self._message:
+            self.showMessage("")
 
-    def _room(self) -> int:
-        """The width left of the visible fields."""
-        taken = sum(
-            label.sizeHint().width() + 6 for label in [self.lost_label, *self.labels()]
-            if label.isVisible()
-        )  # fmt: skip
-        return self.width() - taken
-
-    def _on_message_changed(self, message: str) -> None:
-        if message:
-            return
-        self.setToolTip("")
-        for label in self._made_room:
-            label.show()
-        self._made_room.clear()
+    def currentMessage(self) -> str:
+        """The message shown ("" none)."""
+        return self._message
 
     def labels(self) -> list[QLabel]:
         """The six fields from left to right."""
@@ -170,8 +165,6 @@ class MainStatusBar(QStatusBar):
     def set_type_key(self, type_key: str) -> None:
         """Show the valve type of the document."""
         self.type_key_label.setText(type_key)
-        if self.currentMessage():
-            self._make_room(self.currentMessage())
 
     def set_file(self, path: Path | None, modified: bool) -> None:
         """Show the file name and a ``*`` when there are unsaved changes."""
@@ -217,8 +210,6 @@ class MainStatusBar(QStatusBar):
             )
         )
         self.lost_label.setVisible(self._lost > 0)
-        if self.currentMessage():
-            self._make_room(self.currentMessage())
 
     def changeEvent(self, event: QEvent) -> None:
         """Retranslate when the program language changes."""

@@ -31,8 +31,9 @@ from collections.abc import Callable, Mapping, Sequence
 
 import numpy as np
 
-from prm9tool.catalogue import LOAD_SIGNATURE, SAVE_SIGNATURE, Parameter
+from prm9tool.catalogue import CATALOGUE, LOAD_SIGNATURE, SAVE_SIGNATURE, Parameter
 from prm9tool.catalogue.commissioning import NmtCommand
+from prm9tool.catalogue.typekey import TypeKey
 from prm9tool.device.canlink import bus as canbus
 from prm9tool.device.canlink import discovery, relocate
 from prm9tool.device.canlink.pdo_scope import NotPdoMappedError, PdoSampler, min_period_s
@@ -40,7 +41,7 @@ from prm9tool.device.canlink.sampler import SdoSampler
 from prm9tool.device.canlink.sdo import MISSING, SdoChannel
 from prm9tool.device.canlink.status import read_status
 from prm9tool.device.canlink.storing import STORED_WITH_1010, factory_upload, store_kind
-from prm9tool.device.canlink.typekeys import remember, resolve
+from prm9tool.device.canlink.typekeys import forget, lacking_objects, remember, resolve
 from prm9tool.device.canlink.upload_steps import UploadSteps
 from prm9tool.device.records import (
     DeviceInfo,
@@ -152,8 +153,13 @@ class CanopenSession(UploadSteps, ValveSession):
             assert found.derived is not None
             from prm9tool.paths import user_data_dir
 
-            hint = self._label_key or self._type_key_hint
-            key = resolve(found.serial, found.derived, hint, user_data_dir())
+            key = resolve(
+                found.serial,
+                found.derived,
+                self._type_key_hint,
+                user_data_dir(),
+                label=self._label_key,
+            )
             if self._label_key:
                 remember(user_data_dir(), found.serial, key)
         bus = self.options
@@ -184,6 +190,39 @@ class CanopenSession(UploadSteps, ValveSession):
 
             remember(user_data_dir(), self.info.serial, self.info.type_key)
         return result
+
+    def download(
+        self, progress: Progress | None = None, cancel: threading.Event | None = None
+    ) -> dict[str, Value]:
+        """:meth:`ValveSession.download`; a valve whose key was given (no 0x2041) and that
+        lacks objects the manual lists for that key is refused (TypeKeyError), and the key is
+        no longer remembered for it."""
+        values = super().download(progress, cancel)
+        if self.key_given:
+            refusal = lacking_objects(self.info.serial, TypeKey.parse(self.info.type_key), values)
+            if refusal is not None:
+                from prm9tool.paths import user_data_dir
+
+                forget(user_data_dir(), self.info.serial, self.info.type_key)
+                raise refusal
+        return values
+
+    def _before_upload(self, params: Sequence[Parameter], cancel: threading.Event | None) -> None:
+        """The snapshot (UploadSteps); then, for a key that was given (no 0x2041), the
+        refusal of a key whose objects the snapshot found missing — before anything is
+        written (an E04 file's key on an E02 without the external-sensor objects)."""
+        super()._before_upload(params, cancel)
+        if self.key_given:
+            present = {
+                p.mnemonic: 0
+                for p in CATALOGUE.file_parameters(self.variant)
+                if p.mnemonic not in self.unavailable
+            }
+            key = TypeKey.parse(self.info.type_key)
+            refusal = lacking_objects(self.info.serial, key, present)
+            if refusal is not None:
+                self._snapshot = None  # nothing was written: nothing to put back
+                raise refusal
 
     # --- entries ----------------------------------------------------------------------------
     def _read_entries(

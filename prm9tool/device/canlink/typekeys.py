@@ -13,15 +13,25 @@ in ``<user data dir>/can-type-keys.json``.
 from __future__ import annotations
 
 import logging
+from collections.abc import Mapping
 from dataclasses import dataclass
 from pathlib import Path
 
+from prm9tool.catalogue import CATALOGUE
 from prm9tool.catalogue.typekey import TypeKey
 from prm9tool.catalogue.variant import Config
 from prm9tool.errors import TypeKeyError
-from prm9tool.files.can_type_keys import remember, remembered
+from prm9tool.files.can_type_keys import forget, remember, remembered
 
-__all__ = ["Derived", "TypeKeyNeededError", "remember", "remembered", "resolve"]
+__all__ = [
+    "Derived",
+    "TypeKeyNeededError",
+    "forget",
+    "lacking_objects",
+    "remember",
+    "remembered",
+    "resolve",
+]
 
 log = logging.getLogger(__name__)
 
@@ -63,10 +73,21 @@ class TypeKeyNeededError(TypeKeyError):
         )
 
 
-def resolve(serial: int, derived: Derived, hint: str | None, data_dir: Path) -> str:
-    """The type key of a valve without 0x2041: ``hint`` (the batch file's key, the user's
-    answer) or the one remembered for ``serial``, checked against what the OD tells."""
-    candidate = hint or remembered(data_dir, serial)
+def resolve(
+    serial: int,
+    derived: Derived,
+    hint: str | None,
+    data_dir: Path,
+    label: str | None = None,
+) -> str:
+    """The type key of a valve without 0x2041, checked against what the OD tells.
+
+    The user's word goes first: ``label`` (the key read off the valve's label now,
+    ``--type-key``, the GUI's question), then the key remembered for ``serial`` (the label's,
+    given before), and only then ``hint`` (a batch file's key: what the file was made for, not
+    what the valve is; a file of another parameter set is then refused by the type check)."""
+    remembered_key = remembered(data_dir, serial)
+    candidate = label or remembered_key or hint
     if candidate is None:
         raise TypeKeyNeededError(serial, derived)
     key = TypeKey.parse(candidate)
@@ -74,10 +95,30 @@ def resolve(serial: int, derived: Derived, hint: str | None, data_dir: Path) -> 
     if problem:
         raise TypeKeyError(f"valve serial {serial}: {problem}")
     if derived.config is None:
+        source = "its label" if label or remembered_key else "the file"
         log.warning(
-            "valve serial %s: %s taken from its label; its objects cannot confirm %s",
+            "valve serial %s: %s taken from %s; its objects cannot confirm %s",
             serial,
             key,
+            source,
             key.config.value,
         )
     return str(key)
+
+
+def lacking_objects(serial: int, key: TypeKey, values: Mapping[str, object]) -> TypeKeyError | None:
+    """The refusal when a valve read under ``key`` lacks objects the manual lists for it
+    (``values``: what it gave; an object only this project has may be missing on any valve)."""
+    lacking = [
+        p.mnemonic
+        for p in CATALOGUE.file_parameters(key.variant)
+        if p.address_from_manual and p.mnemonic not in values
+    ]
+    if not lacking:
+        return None
+    names = ", ".join(lacking[:4]) + (f" and {len(lacking) - 4} more" if len(lacking) > 4 else "")
+    return TypeKeyError(
+        f"valve serial {serial} has no object for {names}, which every {key} has "
+        f"(manual chapter 7): {key} is not its type key; give the one on its label "
+        "(--type-key KEY)"
+    )

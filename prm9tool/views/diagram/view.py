@@ -12,6 +12,7 @@ CANopen window is the main window's single one.
 from __future__ import annotations
 
 import math
+from typing import TYPE_CHECKING
 
 from PySide6.QtCore import QCoreApplication, QEvent, QRectF, Qt, Signal
 from PySide6.QtGui import (
@@ -31,10 +32,12 @@ from prm9tool.model.access import AccessModel
 from prm9tool.model.document import ParameterDocument
 from prm9tool.online.connection_protocol import DiagramConnection, StepSimulation
 from prm9tool.views.diagram.colours import DiagramColours
-from prm9tool.views.diagram.dialogs import BlockContext, SimulatorFactory, create_block_dialog
 from prm9tool.views.diagram.layout import layout_for
 from prm9tool.views.diagram.scene import DiagramScene
 from prm9tool.views.diagram.summary import block_detail, block_lines
+
+if TYPE_CHECKING:
+    from prm9tool.views.diagram.dialogs import SimulatorFactory
 
 _CTX = "DiagramBlock"
 # Values a block shows besides the parameters it edits.
@@ -212,6 +215,9 @@ class DiagramView(QGraphicsView):
         return DiagramColours.for_palette(self.palette())
 
     def _create_dialog(self, block_id: str) -> QDialog | None:
+        # the block dialogs (and their plots) are imported when the first one opens
+        from prm9tool.views.diagram.dialogs import BlockContext, create_block_dialog
+
         spec = self.diagram.layout.block(block_id)
         ctx = BlockContext(
             self._doc,

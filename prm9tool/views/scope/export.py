@@ -8,10 +8,10 @@ from pathlib import Path
 
 from PySide6.QtCore import QObject
 from PySide6.QtGui import QImageWriter
-from PySide6.QtWidgets import QFileDialog, QWidget
+from PySide6.QtWidgets import QWidget
 
 from prm9tool.scope import write_csv
-from prm9tool.views import prompts
+from prm9tool.views import file_dialogs, prompts
 from prm9tool.views.scope.display import ScopeDisplay
 from prm9tool.views.scope.plot import ScopePlot
 
@@ -42,7 +42,7 @@ class ScopeExport(QObject):
 
     def ask_csv(self, whole: bool) -> None:
         """Export CSV… : ask for the file, write it, say how it went."""
-        path, _ = QFileDialog.getSaveFileName(
+        path, _ = file_dialogs.save_file_name(
             self._parent, self.tr("Export CSV"), "scope.csv", self.tr("CSV files (*.csv)")
         )
         if path:
@@ -50,7 +50,7 @@ class ScopeExport(QObject):
 
     def ask_png(self) -> None:
         """Export PNG… : ask for the file, write it, say how it went."""
-        path, _ = QFileDialog.getSaveFileName(
+        path, _ = file_dialogs.save_file_name(
             self._parent, self.tr("Export PNG"), "scope.png", self.tr("PNG images (*.png)")
         )
         if path:

@@ -11,6 +11,7 @@ from PySide6.QtWidgets import (
     QDoubleSpinBox,
     QGroupBox,
     QLabel,
+    QListView,
     QListWidget,
     QListWidgetItem,
     QMenu,
@@ -41,13 +42,17 @@ MAX_LIST_WIDTH = 340  # px: wider names are elided rather than the legend's in a
 
 
 class _PointList(QListWidget):
-    """The measuring points: as wide as the longest name (within limits), narrower (the names
-    elided, full in the tooltip) in a small window."""
+    """The measuring points: as wide as the longest name (within limits), narrower in a small
+    window; a name wider than the list goes on onto a second line (elided, "Prozessabweichung
+    nach Verstärkung und Offset …" was not told from its neighbours; issue 34 item 20), its
+    tooltip says it all too."""
 
     def __init__(self) -> None:
         super().__init__()
         self.setHorizontalScrollBarPolicy(Qt.ScrollBarPolicy.ScrollBarAlwaysOff)
-        self.setTextElideMode(Qt.TextElideMode.ElideRight)
+        self.setWordWrap(True)
+        self.setTextElideMode(Qt.TextElideMode.ElideNone)
+        self.setResizeMode(QListView.ResizeMode.Adjust)  # wrapped anew when the width changes
 
     def sizeHint(self) -> QSize:
         """The width of the longest name and a scroll bar, up to MAX_LIST_WIDTH."""

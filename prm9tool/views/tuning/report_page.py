@@ -3,7 +3,6 @@
 from __future__ import annotations
 
 from PySide6.QtWidgets import (
-    QFileDialog,
     QHBoxLayout,
     QLabel,
     QLineEdit,
@@ -22,6 +21,8 @@ from prm9tool.characterize.run import (
 from prm9tool.i18n import format_significant
 from prm9tool.online.characterization_history import run_with_history
 from prm9tool.translate import error_text
+from prm9tool.views import file_dialogs
+from prm9tool.views.history_notes import record_report_saved
 from prm9tool.views.tuning.host import TuningHost, figure_table
 from prm9tool.views.tuning.pages import Page
 from prm9tool.views.tuning.report import figure_label, limit_text, value_short, verdict, write_pdf
@@ -50,10 +51,11 @@ class ReportPage(Page):
         self.save_button.clicked.connect(self.save)
         self.buttons.insertWidget(1, self.save_button)
         self.last: Characterization | None = None
+        self._from_valve = False  # the last result was measured on the valve (online)
 
     def browse(self) -> None:
         """Choose the acceptance profile file."""
-        path, _ = QFileDialog.getOpenFileName(
+        path, _ = file_dialogs.open_file_name(
             self, self.tr("Acceptance profile"), self.profile_path.text(), "TOML (*.toml)"
         )
         if path:
@@ -92,6 +94,7 @@ class ReportPage(Page):
         """Every figure with its verdict."""
         assert isinstance(result, Characterization)
         self.last = result
+        self._from_valve = bool(getattr(self.window_.connection, "is_online", False))
         self.table.setRowCount(len(result.figures))
         for row, f in enumerate(result.figures):
             value, tip = value_short(f)
@@ -117,6 +120,10 @@ class ReportPage(Page):
             write_csv_files(self.last, path.with_suffix(""))
         except OSError as exc:
             self.result.setText(self.tr("Cannot write the report: %1").replace("%1", str(exc)))
+            return
+        if self._from_valve:  # not a run on the simulated valve
+            connection, loop = self.window_.connection, self.window_.current_loop()
+            record_report_saved(connection, self.last, str(path), loop)
 
     def retranslate(self) -> None:
         """Texts."""

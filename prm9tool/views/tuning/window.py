@@ -17,7 +17,6 @@ from PySide6.QtCore import QEvent
 from PySide6.QtWidgets import (
     QComboBox,
     QDialog,
-    QFileDialog,
     QFormLayout,
     QHBoxLayout,
     QLabel,
@@ -39,9 +38,9 @@ from prm9tool.online.connection_protocol import StatusView
 from prm9tool.online.tuning_runner import SimulationRunner, TuningRunner, ValveRunner
 from prm9tool.online.valve_control import ValveControl, blocker_text, status_blocker
 from prm9tool.translate import translated
-from prm9tool.views import prompts
+from prm9tool.views import file_dialogs, prompts
 from prm9tool.views.help_dialog import add_context_help
-from prm9tool.views.history_notes import record_online_change
+from prm9tool.views.history_notes import record_online_change, record_tuning_run
 from prm9tool.views.scope.start import offer_enable
 from prm9tool.views.tuning.autotune import AutotunePage
 from prm9tool.views.tuning.pages import BodePage, Page
@@ -264,6 +263,8 @@ class TuningWindow(QDialog):
         pages: dict[str, Page] = {"autotune": self.autotune, "bode": self.bode}
         pages.update(static=self.static, flow=self.flow or self.report)
         pages.get(kind, self.report).show_result(result)
+        if isinstance(self.runner, ValveRunner):  # the valve moved: into its history
+            record_tuning_run(self.connection, kind, result)
 
     def _on_restored(self, message: str) -> None:
         self._say(lambda: message)
@@ -301,7 +302,7 @@ class TuningWindow(QDialog):
 
     def save_file(self, title: str, pattern: str, suggestion: str) -> Path | None:
         """Ask for a file name to write."""
-        path, _ = QFileDialog.getSaveFileName(self, title, suggestion, pattern)
+        path, _ = file_dialogs.save_file_name(self, title, suggestion, pattern)
         return Path(path) if path else None
 
     # --- texts -----------------------------------------------------------------------------------

@@ -58,12 +58,22 @@ class ValveFinder(QObject):
         def scan(bus: dict[str, object], deliver: Callable[[ListedValves], None]) -> None:
             self._connection.list_devices_async((), deliver, bus)
 
-        monitor, lss = BusMonitor(), LssCommissioning()
+        device = self._connection.device if self._connection.is_online else None
+        bus = getattr(device, "can_bus", None)  # online over CAN: the session's bus
+        monitor = BusMonitor()
+        lss = LssCommissioning() if bus is None else None  # LSS would move the session's valve
         dialog = CanBusDialog(scan, self._settings, self._window, monitor, lss)
+        if device is not None and bus is not None:
+            interface, channel, bitrate = bus
+            watched = {"interface": interface, "channel": channel, "bitrate": bitrate}
+            dialog.watch_session_bus(watched, device)
+        elif device is not None:
+            dialog.keep_online(device.device_id)
         accepted = dialog.exec() == QDialog.DialogCode.Accepted
         monitor.stop()
         monitor.deleteLater()
-        lss.deleteLater()
+        if lss is not None:
+            lss.deleteLater()
         if not accepted:
             return
         device_id = dialog.selected_device_id()

@@ -90,6 +90,9 @@ class ValveRestarts(QObject):
             self._on_factory_reset(result)
         elif name == AFTER_RESTART and isinstance(result, Mapping):
             self._report_restart()
+            self._connection.record(
+                "restart", "ok", dict(result), {"command": "Valve → Restart valve"}
+            )
             self._sync.stop()
             self._compare(result)
         else:

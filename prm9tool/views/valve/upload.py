@@ -184,6 +184,9 @@ class ValveUpload(QObject):
         if written:
             with self._sync.suspended():
                 self._doc.set_values(written, self.tr("Values written to the valve"), False)
+        info = self._connection.device
+        if info is not None:  # the document now belongs to the valve it was written to
+            self._doc.set_source(info.serial, info.firmware)
         self._sync.start(self._doc.values)
         at = QTime.currentTime().toString("HH:mm:ss")  # each upload's message differs
         count = outcome.written

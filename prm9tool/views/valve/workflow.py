@@ -164,6 +164,7 @@ class ValveWorkflow(QObject):
             self.go_offline()
             return
         if same_key and not differs:
+            self._stamp(self._doc)  # it holds this valve's set: it is this valve's document
             self._sync.start(values)
             self.message_posted.emit(
                 self.tr("Back online: document and valve agree")
@@ -227,6 +228,7 @@ class ValveWorkflow(QObject):
         key = self._valve_key()
         if key is None:
             return
+        other_type = self._doc.path if key != self._doc.type_key else None
         with self._sync.suspended():
             self._undo.stack.beginMacro(label)
             self._doc.set_type_key(key)
@@ -234,12 +236,19 @@ class ValveWorkflow(QObject):
             self._undo.stack.endMacro()
         self._stamp(self._doc)
         self._sync.start(values)
+        if other_type is not None:  # another valve type: the file keeps what it holds
+            self._doc.detach_file()
+            label = self.tr(
+                "{0}: the valve is a {1}, so the document is a new, unsaved one "
+                "({2} stays as it is)"
+            ).format(label, key, other_type.name)
         self.message_posted.emit(label)
 
     def _stamp(self, doc: ParameterDocument) -> None:
         info = self._connection.device
-        doc.source_serial = None if info is None else info.serial
-        doc.source_firmware = None if info is None else info.firmware
+        doc.set_source(
+            None if info is None else info.serial, None if info is None else info.firmware
+        )
 
     def _valve_key(self) -> TypeKey | None:
         info = self._connection.device

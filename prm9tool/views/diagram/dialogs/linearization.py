@@ -2,7 +2,10 @@
 
 The curve is drawn with its nine points; a point can be dragged with the mouse (kept strictly
 increasing in X and monotonic in Y while dragging) or typed in the table. Releasing a drag is
-one undo step.
+one undo step. A drag moves the point by the mouse's movement since the press (pressing beside
+the handle's centre does not move it), and along the axis the user moves: a sideways (or
+vertical) component smaller than a third of the other, as a hand's jitter, is left out, so a
+vertical drag keeps X exactly (it moved 50 → 49.384 %, issue 34 item 16).
 """
 
 from __future__ import annotations
@@ -40,6 +43,7 @@ class CurveEditor(PlotWidget):
     point_released = Signal(int, int, int)  # index, raw x, raw y — drag finished
 
     GRAB_PX = 11.0
+    JITTER_RATIO = 3.0  # the smaller movement is left out below a third of the larger one
 
     def __init__(self, parent: QWidget | None = None) -> None:
         super().__init__(parent)
@@ -47,6 +51,8 @@ class CurveEditor(PlotWidget):
         self.ys: list[int] = []
         self.editable = True
         self.dragging: int | None = None
+        self._grab = QPointF()  # where the drag was pressed (widget position)
+        self._origin = (0, 0)  # the point's raw (x, y) then
         self.setMouseTracking(True)
         self.set_axes(Axes((-105.0, 105.0), (-105.0, 105.0)))
 
@@ -98,9 +104,24 @@ class CurveEditor(PlotWidget):
         x, y = self.to_value(pos)
         return round(x / PCT), round(y / PCT)
 
+    def _dragged_to(self, pos: QPointF) -> tuple[int, int]:
+        """The raw point the drag has reached at mouse position ``pos``: the point as pressed,
+        moved by the mouse's movement along the axis the user moves (the module docstring)."""
+        dx, dy = pos.x() - self._grab.x(), pos.y() - self._grab.y()
+        if abs(dx) * self.JITTER_RATIO < abs(dy):
+            dx = 0.0
+        elif abs(dy) * self.JITTER_RATIO < abs(dx):
+            dy = 0.0
+        x0, y0 = self._origin
+        x, y = self._raw_at(self.to_pixel(x0 * PCT, y0 * PCT) + QPointF(dx, dy))
+        return (x0 if dx == 0.0 else x), (y0 if dy == 0.0 else y)
+
     def mousePressEvent(self, event: QMouseEvent) -> None:
         if self.editable and event.button() == Qt.MouseButton.LeftButton:
             self.dragging = self._nearest(event.position())
+            if self.dragging is not None:
+                self._grab = event.position()
+                self._origin = (self.xs[self.dragging], self.ys[self.dragging])
             self.update()
 
     def mouseMoveEvent(self, event: QMouseEvent) -> None:
@@ -109,7 +130,7 @@ class CurveEditor(PlotWidget):
             self.setCursor(Qt.CursorShape.OpenHandCursor if near else Qt.CursorShape.ArrowCursor)
             return
         index = self.dragging
-        x, y = clamp_point(self.xs, self.ys, index, *self._raw_at(event.position()))
+        x, y = clamp_point(self.xs, self.ys, index, *self._dragged_to(event.position()))
         self.xs[index], self.ys[index] = x, y
         self._update_curves()
         self.point_dragged.emit(index, x, y)
