@@ -151,7 +151,7 @@ def test_characterize_over_canopen_at_the_links_rate(can_valve, tmp_path, capsys
     if code == ExitCode.OUT_OF_LIMITS and behind > 0.003:  # the valve is in this process
         pytest.skip(f"the emulated valve was {behind * 1000:.0f} ms behind real time: {err}")
     if code == ExitCode.COMMUNICATION:  # a PC too loaded to keep the pace: said, not hidden
-        assert "link lost" in err, err
+        assert "link lost" in err or "updated the valve's setpoint too seldom" in err, err
         assert "nothing was interpolated" in err and not js.exists()
         assert can_valve.working("SETPOVRON") == 0
         pytest.skip(f"the rig refused the run on this loaded PC: {err.strip()}")

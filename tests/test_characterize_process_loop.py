@@ -139,5 +139,19 @@ def test_a_sweep_the_pc_could_not_update_is_cut_where_it_stopped_following(qapp)
     assert "held the valve's setpoint for 30 ms" in str(held.note)
     assert math.isnan(held.response.bandwidth_hz())  # not a wrong figure ...
     assert held.response.bandwidth_above_hz() <= 9.0  # ... but "above" where it was usable
+    assert held.held_s == pytest.approx(0.03)
     with pytest.raises(Exception, match="updated the valve's setpoint too seldom"):
         bode_test(HeldRig(1500), 10, 0, 2, 100, 1.5)  # 0.3 s holds: nothing usable
+
+
+def test_the_frequency_response_page_says_the_pc_cut_the_sweep(qtbot):
+    from prm9tool.characterize.procedures import bode_test
+    from prm9tool.model.document import ParameterDocument
+    from prm9tool.views.tuning.window import TuningWindow
+
+    w = TuningWindow(ParameterDocument("PRM9-06.3Z11/30-24E02S02"))
+    qtbot.addWidget(w)
+    w.bode.show_result(bode_test(HeldRig(150), 10, 0, 2, 100, 1.5))
+    text = w.bode.result.text()
+    assert "The PC held the valve's setpoint for 30 ms at 8" in text, text
+    assert "sample rate limited" not in text  # it was not the link's sample rate

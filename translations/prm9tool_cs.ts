@@ -235,6 +235,10 @@ Poslední akce možná nebyla dokončena. Uložte svou práci pod novým názvem
             <translation>%1 z %2 vzorků se na spojení ztratilo a do odhadu nebyly zahrnuty.</translation>
         </message>
         <message>
+            <source>The PC held the valve's setpoint for %1 ms at %2 Hz: the sweep counts up to there (at least 4 setpoint changes per period).</source>
+            <translation>Počítač držel žádanou hodnotu ventilu při %2 Hz po %1 ms: rozmítání platí jen do tohoto místa (nejméně 4 změny žádané hodnoty za periodu).</translation>
+        </message>
+        <message>
             <source>Amplitude:</source>
             <translation>Amplituda:</translation>
         </message>

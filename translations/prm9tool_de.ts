@@ -235,6 +235,10 @@ Die letzte Aktion wurde womöglich nicht vollständig ausgeführt. Speichern Sie
             <translation>%1 von %2 Messwerten gingen auf der Verbindung verloren und wurden bei der Schätzung ausgelassen.</translation>
         </message>
         <message>
+            <source>The PC held the valve's setpoint for %1 ms at %2 Hz: the sweep counts up to there (at least 4 setpoint changes per period).</source>
+            <translation>Der PC hielt den Sollwert des Ventils bei %2 Hz %1 ms lang: der Sweep zählt bis dorthin (mindestens 4 Sollwertänderungen je Periode).</translation>
+        </message>
+        <message>
             <source>Amplitude:</source>
             <translation>Amplitude:</translation>
         </message>

@@ -345,6 +345,7 @@ class BodeResult:
     note: Message | str = ""  # set when the link's sample rate limited the sweep
     limited_to_hz: float | None = None  # the sweep's highest frequency when it was limited
     lost_samples: int = 0  # responses the link lost (left out of the estimate)
+    held_s: float = 0.0  # the setpoint hold that cut the sweep short (0: none did)
 
 
 SWEEP_LIMITED = QT_TRANSLATE_NOOP(
@@ -424,7 +425,8 @@ def bode_test(
     else:
         response = frequency_response(u, y, fs, f_min, f_max)
     lost = int(missing.sum())
-    return BodeResult(amplitude_pct, centre_pct, rec, response, note, limited, lost)
+    held = updates.hold_s if updates.usable < len(rec.t) else 0.0
+    return BodeResult(amplitude_pct, centre_pct, rec, response, note, limited, lost, held)
 
 
 # --- static characteristic --------------------------------------------------------------------

@@ -167,7 +167,14 @@ class BodePage(Page):
             text += " " + self.tr(
                 "%1 of %2 samples were lost on the link and left out of the estimate."
             ).replace("%1", str(result.lost_samples)).replace("%2", str(len(result.record.t)))
-        if result.limited_to_hz is not None:
+        if result.held_s:  # a busy PC wrote the setpoint too seldom from there on
+            text += " " + self.tr(
+                "The PC held the valve's setpoint for %1 ms at %2 Hz: the sweep counts up to "
+                "there (at least 4 setpoint changes per period)."
+            ).replace("%1", format_number(result.held_s * 1000, 0)).replace(
+                "%2", _g(round(result.limited_to_hz or 0.0, 1))
+            )
+        elif result.limited_to_hz is not None:
             text += " " + self.tr(
                 "The link's sample rate limited the sweep to %1 Hz (nothing interpolated)."
             ).replace("%1", _g(result.limited_to_hz))
