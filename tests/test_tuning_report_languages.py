@@ -5,6 +5,7 @@ and the tables are in the program language and its locale, in all three language
 
 from __future__ import annotations
 
+import dataclasses
 import re
 
 import pytest
@@ -145,3 +146,21 @@ def test_the_command_lines_report_is_in_the_systems_language(tmp_path):
     text = " ".join(" ".join(p.extract_text() for p in PdfReader(str(pdf)).pages).split())
     assert "PRM9-Prüfbericht" in text and "Geprüfter Regelkreis" in text, text[:300]
     assert json.loads(js.read_text(encoding="utf-8"))["loop"] == "position"
+
+
+def test_the_autotunes_verdict_names_the_built_in_profile_in_the_language(qtbot):
+    from prm9tool.analysis.profile import DEFAULT
+
+    i18n.set_language("de")
+    try:
+        w = TuningWindow(ParameterDocument(E02))
+        qtbot.addWidget(w)
+        profile = parse_profile({"test": {"step_amplitudes_pct": [25], "static_period_s": 4}}, "x")
+        profile = dataclasses.replace(profile, name=DEFAULT.name)
+        rig = EmulatorRig(EmulatedValve(E02))
+        w.autotune.show_result(
+            propose(rig, "model", "position", Targets(10, 0.04), 50, 60, profile)
+        )
+        assert "„Standard (eingebaut)“" in w.autotune.result.text()  # was „default“
+    finally:
+        i18n.set_language("en")

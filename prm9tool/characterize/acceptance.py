@@ -143,16 +143,19 @@ class Proposal:
         """True when the proposal passes the acceptance profile."""
         return self.after_check.passed
 
-    def verdict(self, label: Callable[[Figure], str] | None = None) -> Message:
+    def verdict(
+        self, label: Callable[[Figure], str] | None = None, name: str | None = None
+    ) -> Message:
         """The profile check in one sentence (what failed, if anything); ``label`` gives a
-        figure's name and value (a view passes its translated ones)."""
+        figure's name and value, ``name`` the profile's (a view passes its translated ones)."""
         label = label or (lambda f: f"{f.label} {_value(f)}")
+        name = self.profile.name if name is None else name
         failed = self.after_check.failed
         if not failed:
-            return PASSES(self.profile.name)
+            return PASSES(name)
         shown = "; ".join(label(f) for f in failed[:4])
         more = f" (+{len(failed) - 4})" if len(failed) > 4 else ""
-        return FAILS(self.profile.name, shown + more)
+        return FAILS(name, shown + more)
 
 
 PASSES = QT_TRANSLATE_NOOP(

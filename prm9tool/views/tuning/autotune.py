@@ -33,6 +33,7 @@ from prm9tool.views.tuning.plot import COLOURS, Plot, Series
 from prm9tool.views.tuning.report import (
     figure_label,
     limit_text,
+    profile_name,
     value_short,
     value_text,
     verdict,
@@ -159,7 +160,8 @@ class AutotunePage(Page):
                 .replace("%2", failed)
             )
         colour = GREEN if result.passes else RED
-        said = translated(result.verdict(lambda f: f"{figure_label(f)} {value_text(f)}"))
+        label = lambda f: f"{figure_label(f)} {value_text(f)}"  # noqa: E731
+        said = translated(result.verdict(label, profile_name(result.profile.name)))
         lines.append(f'<b><font color="{colour}">{said}</font></b>')
         if doubts:
             warning = self.tr("Do not accept these gains: the identification is not trustworthy.")
