@@ -314,7 +314,10 @@ def test_the_tuning_window_online_over_canopen(qtbot, can_valve, monkeypatch):
         )
         if not refused:
             assert "−3 dB: " in text and " Hz, −90°: " in text, status
-            assert "The link's sample rate limited the sweep to" in text
+            assert (  # by the link's rate, or lower where a busy PC held the setpoint
+                "The link's sample rate limited the sweep to" in text
+                or "The PC held the valve's setpoint for" in text
+            ), text
         if os.environ.get("PRM9TOOL_SCREENSHOTS"):
             w.grab().save(os.path.join(os.environ["PRM9TOOL_SCREENSHOTS"], "tuning_bode_can.png"))
     finally:
