@@ -144,3 +144,22 @@ def test_static_characteristic_with_bins_no_sample_fell_in():
     figures = ("gain", "intercept", "hysteresis_pct", "linearity_pct", "dead_band_pct")
     for name in figures:
         assert getattr(gappy, name) == pytest.approx(getattr(full, name), abs=0.05), name
+
+
+def test_the_dead_band_of_a_linear_valve_does_not_depend_on_the_sample_rate():
+    """Issue 34 item 7: ``static_dead_band_pct`` of one emulated valve was 3.96 % over
+    CANopen (1 kHz) and 0.99 % in-process (5 kHz): a linear response leaves the ±1 % band
+    after 2 % of demand on each side, which the bins counted as one to three bins of dead band
+    depending on where the hunting at 0 and the samples per bin fell. It is now the band less
+    what the straight line itself needs: about 0 for a linear valve at either rate, and a real
+    flat part keeps its width."""
+    found = []
+    for fs in (1000, 5000):
+        x = np.concatenate([np.linspace(-100, 100, 2 * fs), np.linspace(100, -100, 2 * fs)])
+        hunting = 1.2 * np.sin(2 * np.pi * 23.0 * np.arange(len(x)) / fs)
+        found.append(static_characteristic(x, x + hunting).dead_band_pct)
+    assert found[0] == pytest.approx(found[1], abs=0.5)
+    assert max(found) < 0.6  # was a bin (0.99 %) of the threshold's own width
+    x = np.concatenate([np.linspace(-100, 100, 4000), np.linspace(100, -100, 4000)])
+    flat = np.sign(x) * np.maximum(np.abs(x) - 10.0, 0.0)  # flat within ±10 %
+    assert static_characteristic(x, flat).dead_band_pct == pytest.approx(10.0, abs=0.6)

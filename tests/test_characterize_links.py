@@ -96,12 +96,24 @@ def test_characterize_over_usb_with_a_paced_valve(usb_valve, tmp_path, capsys):
     js = tmp_path / "usb.json"
     args = ["--characterize", "--device", f"usb:{PATH.decode()}", "--profile",
             str(tmp_path / "short.toml"), "--json", str(js)]  # fmt: skip
-    assert main(args) == ExitCode.OK, capsys.readouterr().err
+    code = main(args)
+    err = capsys.readouterr().err
+    if "updated the valve's setpoint too seldom" in err:  # refused, with the reason (busy PC)
+        assert code != ExitCode.OK
+        return
     report = json.loads(js.read_text(encoding="utf-8"))
     assert report["valve"]["serial"] == 4711
     assert report["link"] == "USB" and report["sample_rate_hz"] == 5000
-    figures = {f["name"]: f["value"] for f in report["figures"]}
-    assert 15 < figures["bode_bandwidth_hz"] < 100
+    figures = {f["name"]: f for f in report["figures"]}
+    bandwidth = figures["bode_bandwidth_hz"]
+    # issue 34 item 9: a busy PC measured 11.9 Hz (the valve's is ~30 Hz) and passed; the
+    # figure is now right, or known only to lie above where the sweep was usable, and said so
+    if any("sweep usable up to" in note for note in report["notes"]):
+        assert bandwidth["above"] or bandwidth["value"] is None, bandwidth
+    else:
+        assert code == ExitCode.OK, err
+        assert 15 < bandwidth["value"] < 100, bandwidth
+    figures = {name: f["value"] for name, f in figures.items()}
     assert 0.9 < figures["static_gain"] < 1.1
     assert figures["step_25_overshoot_pct"] < 15
     over = CATALOGUE["SETPOVRON"]
@@ -139,7 +151,7 @@ def test_characterize_over_canopen_at_the_links_rate(can_valve, tmp_path, capsys
     if code == ExitCode.OUT_OF_LIMITS and behind > 0.003:  # the valve is in this process
         pytest.skip(f"the emulated valve was {behind * 1000:.0f} ms behind real time: {err}")
     if code == ExitCode.COMMUNICATION:  # a PC too loaded to keep the pace: said, not hidden
-        assert "link lost" in err, err
+        assert "link lost" in err or "updated the valve's setpoint too seldom" in err, err
         assert "nothing was interpolated" in err and not js.exists()
         assert can_valve.working("SETPOVRON") == 0
         pytest.skip(f"the rig refused the run on this loaded PC: {err.strip()}")
@@ -301,8 +313,11 @@ def test_the_tuning_window_online_over_canopen(qtbot, can_valve, monkeypatch):
             "a sweep needs at least" in status and "choose a duration of at least" in status
         )
         if not refused:
-            assert "−3 dB: " in text and " Hz, −90°: " in text, status
-            assert "The link's sample rate limited the sweep to" in text
+            assert "−3 dB: " in text and ", −90°: " in text, status
+            assert (  # by the link's rate, or lower where a busy PC held the setpoint
+                "The link's sample rate limited the sweep to" in text
+                or "The PC held the valve's setpoint for" in text
+            ), text
         if os.environ.get("PRM9TOOL_SCREENSHOTS"):
             w.grab().save(os.path.join(os.environ["PRM9TOOL_SCREENSHOTS"], "tuning_bode_can.png"))
     finally:

@@ -139,8 +139,10 @@ def test_a_tuning_test_on_a_waiting_valve_offers_the_enabling_first(
     waiting = Blocker.WAITING_FOR_MASTER
     qtbot.waitUntil(lambda: status_blocker(tuning._status) is waiting, timeout=TIMEOUT)
     monkeypatch.setattr(QMessageBox, "question", lambda *a: QMessageBox.StandardButton.Yes)
+    answers.answers.append(prompts.Button.Yes)  # at Basic: run it, accept after switching
     answers.answers.append(prompts.Button.Yes)  # enable it
     tuning.autotune.run_button.click()
+    assert "cannot be accepted: POSKP can only be changed at Expert" in answers.asked[-2]
     assert "Enable it now" in answers.asked[-1]
     qtbot.waitUntil(lambda: not tuning.runner.busy, timeout=30_000)
     assert "POSKP: 0.4 → " in tuning.autotune.result.text(), tuning.status.text()

@@ -55,8 +55,13 @@ def test_every_text_is_translated(language):
     assert unfinished == []
 
 
+# the compiled resources hold no texts to translate, and pyside6-lupdate 6.x crashes (SIGSEGV)
+# on some of their compressed byte strings (it did after the tuning help page grew)
+GENERATED = "resources_rc.py"
+
+
 def test_the_translations_cover_every_text_of_the_program(tmp_path):
-    sources = sorted(str(p) for p in (ROOT / "prm9tool").rglob("*.py"))
+    sources = sorted(str(p) for p in (ROOT / "prm9tool").rglob("*.py") if p.name != GENERATED)
     fresh = tmp_path / "fresh.ts"
     subprocess.run(
         [_tool("pyside6-lupdate"), *sources, "-ts", str(fresh)],

@@ -235,6 +235,10 @@ Poslední akce možná nebyla dokončena. Uložte svou práci pod novým názvem
             <translation>%1 z %2 vzorků se na spojení ztratilo a do odhadu nebyly zahrnuty.</translation>
         </message>
         <message>
+            <source>The PC held the valve's setpoint for %1 ms at %2 Hz: the sweep counts up to there (at least 4 setpoint changes per period).</source>
+            <translation>Počítač držel žádanou hodnotu ventilu při %2 Hz po %1 ms: rozmítání platí jen do tohoto místa (nejméně 4 změny žádané hodnoty za periodu).</translation>
+        </message>
+        <message>
             <source>Amplitude:</source>
             <translation>Amplituda:</translation>
         </message>
@@ -829,6 +833,18 @@ Poslední akce možná nebyla dokončena. Uložte svou práci pod novým názvem
         <message>
             <source>{0} left the allowed band {1} ± {2} %; the test was stopped and the valve put back as it was</source>
             <translation>{0}: hodnota opustila povolené pásmo {1} ± {2} %; test byl zastaven a ventil uveden do původního stavu</translation>
+        </message>
+        <message>
+            <source>sweep limited to {0} Hz (of {1} Hz asked) by the link's sample rate of {2} Hz</source>
+            <translation>rozmítání omezeno na {0} Hz (požadováno {1} Hz) vzorkovací frekvencí spojení {2} Hz</translation>
+        </message>
+        <message>
+            <source>sweep usable up to {0} Hz: the PC held the valve's setpoint for {1} ms there (at least {2} updates per period are needed; the PC was busy)</source>
+            <translation>rozmítání použitelné do {0} Hz: počítač tam držel žádanou hodnotu ventilu {1} ms (je třeba nejméně {2} aktualizací za periodu; počítač byl vytížen)</translation>
+        </message>
+        <message>
+            <source>frequency response: {0} of {1} samples lost on the link, left out of the estimate</source>
+            <translation>frekvenční charakteristika: {0} z {1} vzorků ztraceno na spojení, vynecháno z odhadu</translation>
         </message>
     </context>
     <context>
@@ -4249,6 +4265,10 @@ Na straně PC se nic neztratilo: dokument dál obsahuje každou hodnotu, záloha
             <source>Step {0} → {1} %, window {2} … {3} ms</source>
             <translation>Skok {0} → {1} %, okno {2} … {3} ms</translation>
         </message>
+        <message>
+            <source>not reached: the response ended at {0} of the setpoint {1}</source>
+            <translation>nedosaženo: odezva skončila na {0} z žádané hodnoty {1}</translation>
+        </message>
     </context>
     <context>
         <name>StepPanel</name>
@@ -4477,6 +4497,34 @@ Na straně PC se nic neztratilo: dokument dál obsahuje každou hodnotu, záloha
             <translation>skok %1 %: %2</translation>
         </message>
         <message>
+            <source>process controller (E04): process actual value</source>
+            <translation>procesní regulátor (E04): skutečná hodnota procesu</translation>
+        </message>
+        <message>
+            <source>position controller: spool position</source>
+            <translation>polohový regulátor: poloha šoupátka</translation>
+        </message>
+        <message>
+            <source>emulator (stepped faster than real time)</source>
+            <translation>emulátor (počítaný rychleji než v reálném čase)</translation>
+        </message>
+        <message>
+            <source>TPDO1 at the tool's SYNC</source>
+            <translation>TPDO1 při SYNC programu</translation>
+        </message>
+        <message>
+            <source>SDO polling</source>
+            <translation>dotazování SDO</translation>
+        </message>
+        <message>
+            <source>CANopen node {0} ({1}), {2}, one sample per {3} ms</source>
+            <translation>uzel CANopen {0} ({1}), {2}, jeden vzorek za {3} ms</translation>
+        </message>
+        <message>
+            <source>default (built in)</source>
+            <translation>výchozí (vestavěný)</translation>
+        </message>
+        <message>
             <source>PASS</source>
             <translation>VYHOVUJE</translation>
         </message>
@@ -4581,6 +4629,10 @@ Na straně PC se nic neztratilo: dokument dál obsahuje každou hodnotu, záloha
             <translation>Spojení</translation>
         </message>
         <message>
+            <source>Loop tested</source>
+            <translation>Zkoušená regulační smyčka</translation>
+        </message>
+        <message>
             <source>Acceptance profile</source>
             <translation>Přejímací profil</translation>
         </message>
@@ -4591,6 +4643,10 @@ Na straně PC se nic neztratilo: dokument dál obsahuje každou hodnotu, záloha
         <message>
             <source>Limited by the link</source>
             <translation>Omezeno spojením</translation>
+        </message>
+        <message>
+            <source>Figures</source>
+            <translation>Hodnoty</translation>
         </message>
         <message>
             <source>Parameter set</source>
@@ -4661,6 +4717,18 @@ Zajistěte, aby to hydraulika bezpečně snesla. Tlačítko Stop test kdykoli uk
         <message>
             <source>The oscilloscope's setpoint generator was stopped for the test.</source>
             <translation>Generátor žádané hodnoty osciloskopu byl kvůli zkoušce zastaven.</translation>
+        </message>
+        <message>
+            <source>Not started: the valve does not follow its setpoint: %1</source>
+            <translation>Nespuštěno: ventil nesleduje žádanou hodnotu: %1</translation>
+        </message>
+        <message>
+            <source>At the present access level the result of this test cannot be accepted: %1
+
+Switch to Expert first (View → Access level), or run the test now and switch before you accept: its result is kept. Start the test anyway?</source>
+            <translation>Na současné úrovni oprávnění nelze výsledek této zkoušky převzít: %1
+
+Nejprve přepněte na Expert (Náhled → Úroveň oprávnění), nebo zkoušku spusťte nyní a přepněte před převzetím: její výsledek zůstane zachován. Přesto zkoušku spustit?</translation>
         </message>
         <message>
             <source>The oscilloscope's setpoint generator is running: the test stops it (start it again afterwards).</source>

@@ -235,6 +235,10 @@ Die letzte Aktion wurde womöglich nicht vollständig ausgeführt. Speichern Sie
             <translation>%1 von %2 Messwerten gingen auf der Verbindung verloren und wurden bei der Schätzung ausgelassen.</translation>
         </message>
         <message>
+            <source>The PC held the valve's setpoint for %1 ms at %2 Hz: the sweep counts up to there (at least 4 setpoint changes per period).</source>
+            <translation>Der PC hielt den Sollwert des Ventils bei %2 Hz %1 ms lang: der Sweep zählt bis dorthin (mindestens 4 Sollwertänderungen je Periode).</translation>
+        </message>
+        <message>
             <source>Amplitude:</source>
             <translation>Amplitude:</translation>
         </message>
@@ -827,6 +831,18 @@ Die letzte Aktion wurde womöglich nicht vollständig ausgeführt. Speichern Sie
         <message>
             <source>{0} left the allowed band {1} ± {2} %; the test was stopped and the valve put back as it was</source>
             <translation>{0} hat das zulässige Band {1} ± {2} % verlassen; der Test wurde abgebrochen und das Ventil wiederhergestellt, wie es war</translation>
+        </message>
+        <message>
+            <source>sweep limited to {0} Hz (of {1} Hz asked) by the link's sample rate of {2} Hz</source>
+            <translation>Sweep auf {0} Hz begrenzt (statt {1} Hz) durch die Abtastrate der Verbindung von {2} Hz</translation>
+        </message>
+        <message>
+            <source>sweep usable up to {0} Hz: the PC held the valve's setpoint for {1} ms there (at least {2} updates per period are needed; the PC was busy)</source>
+            <translation>Sweep bis {0} Hz verwendbar: der PC hielt den Sollwert des Ventils dort {1} ms lang (mindestens {2} Aktualisierungen je Periode nötig; der PC war ausgelastet)</translation>
+        </message>
+        <message>
+            <source>frequency response: {0} of {1} samples lost on the link, left out of the estimate</source>
+            <translation>Frequenzgang: {0} von {1} Abtastwerten auf der Verbindung verloren, in der Schätzung ausgelassen</translation>
         </message>
     </context>
     <context>
@@ -4227,6 +4243,10 @@ Auf dem PC ging nichts verloren: Das Dokument enthält weiterhin jeden Wert, Sic
             <source>Step {0} → {1} %, window {2} … {3} ms</source>
             <translation>Sprung {0} → {1} %, Fenster {2} … {3} ms</translation>
         </message>
+        <message>
+            <source>not reached: the response ended at {0} of the setpoint {1}</source>
+            <translation>nicht erreicht: die Antwort endete bei {0} des Sollwerts {1}</translation>
+        </message>
     </context>
     <context>
         <name>StepPanel</name>
@@ -4455,6 +4475,34 @@ Auf dem PC ging nichts verloren: Das Dokument enthält weiterhin jeden Wert, Sic
             <translation>Sprung %1 %: %2</translation>
         </message>
         <message>
+            <source>process controller (E04): process actual value</source>
+            <translation>Prozessregler (E04): Prozess-Istwert</translation>
+        </message>
+        <message>
+            <source>position controller: spool position</source>
+            <translation>Lageregler: Schieberposition</translation>
+        </message>
+        <message>
+            <source>emulator (stepped faster than real time)</source>
+            <translation>Emulator (schneller als Echtzeit gerechnet)</translation>
+        </message>
+        <message>
+            <source>TPDO1 at the tool's SYNC</source>
+            <translation>TPDO1 zum SYNC des Programms</translation>
+        </message>
+        <message>
+            <source>SDO polling</source>
+            <translation>SDO-Abfrage</translation>
+        </message>
+        <message>
+            <source>CANopen node {0} ({1}), {2}, one sample per {3} ms</source>
+            <translation>CANopen-Knoten {0} ({1}), {2}, ein Abtastwert je {3} ms</translation>
+        </message>
+        <message>
+            <source>default (built in)</source>
+            <translation>Standard (eingebaut)</translation>
+        </message>
+        <message>
             <source>PASS</source>
             <translation>BESTANDEN</translation>
         </message>
@@ -4559,6 +4607,10 @@ Auf dem PC ging nichts verloren: Das Dokument enthält weiterhin jeden Wert, Sic
             <translation>Verbindung</translation>
         </message>
         <message>
+            <source>Loop tested</source>
+            <translation>Geprüfter Regelkreis</translation>
+        </message>
+        <message>
             <source>Acceptance profile</source>
             <translation>Abnahmeprofil</translation>
         </message>
@@ -4569,6 +4621,10 @@ Auf dem PC ging nichts verloren: Das Dokument enthält weiterhin jeden Wert, Sic
         <message>
             <source>Limited by the link</source>
             <translation>Durch die Verbindung begrenzt</translation>
+        </message>
+        <message>
+            <source>Figures</source>
+            <translation>Kennwerte</translation>
         </message>
         <message>
             <source>Parameter set</source>
@@ -4639,6 +4695,18 @@ Stellen Sie sicher, dass die Hydraulik dafür sicher ist. Stopp beendet ihn jede
         <message>
             <source>The oscilloscope's setpoint generator was stopped for the test.</source>
             <translation>Der Sollwertgenerator des Oszilloskops wurde für die Prüfung angehalten.</translation>
+        </message>
+        <message>
+            <source>Not started: the valve does not follow its setpoint: %1</source>
+            <translation>Nicht gestartet: das Ventil folgt seinem Sollwert nicht: %1</translation>
+        </message>
+        <message>
+            <source>At the present access level the result of this test cannot be accepted: %1
+
+Switch to Expert first (View → Access level), or run the test now and switch before you accept: its result is kept. Start the test anyway?</source>
+            <translation>Auf der jetzigen Berechtigungsstufe kann das Ergebnis dieses Tests nicht übernommen werden: %1
+
+Wechseln Sie zuerst zu Experte (Ansicht → Berechtigungsstufe) oder starten Sie den Test jetzt und wechseln Sie vor dem Übernehmen: sein Ergebnis bleibt erhalten. Den Test trotzdem starten?</translation>
         </message>
         <message>
             <source>The oscilloscope's setpoint generator is running: the test stops it (start it again afterwards).</source>

@@ -9,7 +9,10 @@ A profile is a TOML file (docs/tuning.md shows every key)::
     step_overshoot_pct = { max = 15 }
     bode_bandwidth_hz = { min = 20 }
 
-Any key left out keeps its default; a limit left out is not checked. A figure that could not be
+Any key left out keeps its default; a limit left out is not checked. The E04 process loop has
+its own tests and limits (``[process.test]``, ``[process.limits]``, defaults
+:data:`DEFAULT_PROCESS`): an integrating actuator needs longer windows and cannot meet a
+spool's limits. A figure that could not be
 measured (a step that never settles) fails a limit set on it.
 """
 
@@ -83,9 +86,20 @@ class Profile:
     flow_amplitude_pct: float = 40.0  # E04: process setpoint steps centre ∓ this
     flow_duration_s: float = 1.0
     limits: dict[str, Limit] = field(default_factory=dict)
+    process: Profile | None = None  # the E04 process loop's tests and limits (None: DEFAULT's)
+    loop: str = "position"  # the loop these tests and limits are for
+
+    def for_loop(self, loop: str) -> Profile:
+        """The tests and limits for ``loop``: this profile for the position loop, its
+        ``[process]`` part for the E04 process loop (with the name of the whole); a part
+        asked for its own loop is itself."""
+        if loop != "process" or self.loop == "process":
+            return self
+        part = self.process if self.process is not None else DEFAULT_PROCESS
+        return replace(part, name=self.name, process=None, loop="process")
 
 
-DEFAULT_LIMITS = {
+DEFAULT_LIMITS = {  # the spool's position loop of a PRM9-06 (emulator: docs/tuning.md)
     "step_overshoot_pct": Limit(maximum=15.0),
     "step_rise_s": Limit(maximum=0.03),
     "bode_bandwidth_hz": Limit(minimum=15.0),
@@ -93,8 +107,28 @@ DEFAULT_LIMITS = {
     "static_hysteresis_pct": Limit(maximum=2.0),
     "static_linearity_pct": Limit(maximum=2.0),
 }
-DEFAULT = Profile(limits=DEFAULT_LIMITS)
-_TEST_KEYS = {f.name for f in fields(Profile)} - {"name", "limits"}
+# The E04 process loop closes over an integrating actuator (full stroke in 0.5 s at 100 %
+# opening on the emulator's plant): its steps take ~0.3 s to rise and ~0.5 s to settle, its
+# bandwidth is ~1.2 Hz. Windows three settling times long, a sweep from 0.2 Hz, and limits
+# with a margin over what the factory gains give on the emulator (docs/tuning.md).
+DEFAULT_PROCESS_LIMITS = {
+    "step_overshoot_pct": Limit(maximum=15.0),
+    "step_rise_s": Limit(maximum=0.4),
+    "step_settling_s": Limit(maximum=0.8),
+    "bode_bandwidth_hz": Limit(minimum=0.8),
+    "static_gain": Limit(0.95, 1.05),
+    "static_hysteresis_pct": Limit(maximum=4.0),
+    "static_linearity_pct": Limit(maximum=2.0),
+}
+DEFAULT_PROCESS = Profile(
+    loop="process",
+    step_duration_s=1.5,
+    bode_f_min_hz=0.2,
+    bode_f_max_hz=20.0,
+    limits=DEFAULT_PROCESS_LIMITS,
+)
+DEFAULT = Profile(limits=DEFAULT_LIMITS, process=DEFAULT_PROCESS)
+_TEST_KEYS = {f.name for f in fields(Profile)} - {"name", "limits", "process", "loop"}
 
 
 def load_profile(path: str | Path) -> Profile:
@@ -109,29 +143,57 @@ def load_profile(path: str | Path) -> Profile:
 
 
 def parse_profile(data: dict[str, Any], where: str = "profile") -> Profile:
-    """A profile from parsed TOML (see the module docstring)."""
-    unknown = set(data) - {"name", "test", "limits"}
+    """A profile from parsed TOML (see the module docstring); ``[process.test]`` and
+    ``[process.limits]`` set the E04 process loop's, starting from its own defaults."""
+    unknown = set(data) - {"name", "test", "limits", "process"}
     if unknown:
-        raise ProfileError(f"{where}: unknown key {sorted(unknown)[0]!r} (name, [test], [limits])")
-    changes: dict[str, Any] = {"name": str(data.get("name", Path(where).stem))}
-    for key, value in data.get("test", {}).items():
+        raise ProfileError(
+            f"{where}: unknown key {sorted(unknown)[0]!r} (name, [test], [limits], [process])"
+        )
+    process = data.get("process", {})
+    if not isinstance(process, dict) or not set(process) <= {"test", "limits"}:
+        extra = sorted(set(process) - {"test", "limits"}) if isinstance(process, dict) else []
+        raise ProfileError(
+            f"{where}: [process] holds only [process.test] and [process.limits]"
+            + (f", not {extra[0]!r}" if extra else "")
+        )
+    name = str(data.get("name", Path(where).stem))
+    whole = _part(DEFAULT, data, where, "")
+    # the flow characteristic exists on the process loop only: its keys at the top count there
+    flow = {k: getattr(whole, k) for k in _TEST_KEYS if k.startswith("flow_")}
+    flow_limits = {k: v for k, v in whole.limits.items() if k.startswith("flow_")}
+    base = replace(DEFAULT_PROCESS, limits={**DEFAULT_PROCESS.limits, **flow_limits}, **flow)
+    return replace(whole, name=name, process=_part(base, process, where, "process."))
+
+
+def _part(base: Profile, data: dict[str, Any], where: str, prefix: str) -> Profile:
+    """``base`` with the keys of ``data``'s ``test`` and ``limits`` tables."""
+    changes: dict[str, Any] = {}
+    for key, value in _table(data, "test", where, prefix).items():
         if key not in _TEST_KEYS:
-            raise ProfileError(f"{where}: [test] has no key {key!r}")
+            raise ProfileError(f"{where}: [{prefix}test] has no key {key!r}")
         changes[key] = _number(where, key, value)
-    limits = dict(DEFAULT_LIMITS)
-    for key, value in data.get("limits", {}).items():
+    limits = dict(base.limits)
+    for key, value in _table(data, "limits", where, prefix).items():
         if key not in FIGURES:
             raise ProfileError(
-                f"{where}: [limits] has no figure {key!r}; figures: {', '.join(FIGURES)}"
+                f"{where}: [{prefix}limits] has no figure {key!r}; figures: {', '.join(FIGURES)}"
             )
         if not isinstance(value, dict) or not set(value) <= {"min", "max"}:
-            raise ProfileError(f"{where}: [limits] {key} must be {{ min = …, max = … }}")
+            raise ProfileError(f"{where}: [{prefix}limits] {key} must be {{ min = …, max = … }}")
         lo, hi = value.get("min"), value.get("max")
         limits[key] = Limit(
             None if lo is None else float(_number(where, key, lo)),
             None if hi is None else float(_number(where, key, hi)),
         )
-    return replace(DEFAULT, limits=limits, **changes)
+    return replace(base, limits=limits, **changes)
+
+
+def _table(data: dict[str, Any], key: str, where: str, prefix: str) -> dict[str, Any]:
+    table = data.get(key, {})
+    if not isinstance(table, dict):
+        raise ProfileError(f"{where}: {prefix}{key} must be a table [{prefix}{key}]")
+    return table
 
 
 def _number(where: str, key: str, value: Any) -> Any:

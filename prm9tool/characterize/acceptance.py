@@ -69,7 +69,9 @@ class ProfileCheck:
 def check_gains(
     rig: Rig, loop: str, values: dict[str, int], profile: Profile, static: bool = True
 ) -> ProfileCheck:
-    """Run the profile's steps both ways (and its static triangle) with ``values``."""
+    """Run the profile's steps both ways (and its static triangle) with ``values``; the
+    windows and limits are those of ``loop``'s part of the profile."""
+    profile = profile.for_loop(loop)
     lp = LOOPS[loop]
     steps: list[StepResult] = []
     coils = TypeKey.parse(rig.info.type_key).variant.coils
@@ -90,7 +92,7 @@ def check_gains(
             result = static_test(rig, profile.static_period_s, response=response)
     found = [_step_figure(s, key, profile) for s in steps for key in STEP_FIGURES]
     if result is not None:
-        whole = Characterization(rig.info, profile, "", {}, static=result)
+        whole = Characterization(rig.info, profile, "", {}, static=result, loop=loop)
         found += figures(whole)
     return ProfileCheck(dict(values), steps, result, found)
 
@@ -106,10 +108,12 @@ def _step_figure(step: StepResult, key: str, profile: Profile) -> Figure:
     start = step_start(step)
     end = start + step.amplitude_pct
     label, value = STEP_FIGURES[key]
-    f = step.figures
+    f = step.to_setpoint  # against the setpoint: a step that never came there fails
     name = f"step_{start:g}_{end:g}_{key.removeprefix('step_')}"
     text = f"step {start:g} → {end:g} %: {label}".replace("-", "−")
-    note = f.not_settled("%") if f is not None and key == "step_settling_s" else None
+    note = f.not_reached("%") if f is not None else None
+    if f is not None and key == "step_settling_s":
+        note = f.not_settled("%")
     found = value(f) if f else math.nan
     return Figure(name, text, found, FIGURES[key], profile.limits.get(key), note)
 
@@ -139,16 +143,19 @@ class Proposal:
         """True when the proposal passes the acceptance profile."""
         return self.after_check.passed
 
-    def verdict(self, label: Callable[[Figure], str] | None = None) -> Message:
+    def verdict(
+        self, label: Callable[[Figure], str] | None = None, name: str | None = None
+    ) -> Message:
         """The profile check in one sentence (what failed, if anything); ``label`` gives a
-        figure's name and value (a view passes its translated ones)."""
+        figure's name and value, ``name`` the profile's (a view passes its translated ones)."""
         label = label or (lambda f: f"{f.label} {_value(f)}")
+        name = self.profile.name if name is None else name
         failed = self.after_check.failed
         if not failed:
-            return PASSES(self.profile.name)
+            return PASSES(name)
         shown = "; ".join(label(f) for f in failed[:4])
         more = f" (+{len(failed) - 4})" if len(failed) > 4 else ""
-        return FAILS(self.profile.name, shown + more)
+        return FAILS(name, shown + more)
 
 
 PASSES = QT_TRANSLATE_NOOP(

@@ -26,7 +26,7 @@ from prm9tool.catalogue.variant import Coils, Config
 from prm9tool.characterize.procedures import Record, chain_changes, preserved, record
 from prm9tool.characterize.rig import Rig
 from prm9tool.errors import Prm9Error
-from prm9tool.messages import QT_TRANSLATE_NOOP
+from prm9tool.messages import QT_TRANSLATE_NOOP, Message
 
 QUASI_STATIC_PCT_S = 1500.0  # opening changing faster than this: a transition, not a point
 FLOW_KEYS = ("position_setpoint", "process_actual", "position_actual")  # [1]: band check
@@ -46,19 +46,17 @@ class FlowResult:
 FLOW_PARAMETERS = ("CTRLMODE", "PRCKP", "PRCKI", "PRCKD", "OFFSETPOS")
 
 
-def flow_objects_missing(rig: Rig) -> str:
+def flow_objects_missing(rig: Rig) -> Message | str:
     """Why the flow test cannot run on this valve ("" when it can): it sets the process
     controller's gains, which a valve with only the manual's CANopen objects does not have."""
     absent = [name for name in FLOW_PARAMETERS if name not in rig.read(list(FLOW_PARAMETERS))]
     if not absent:
         return ""
-    return str(
-        QT_TRANSLATE_NOOP(
-            "Characterize",
-            "flow characteristic not measured: this valve has no object for {0} over this "
-            "link (measure it over USB)",
-        )(", ".join(absent))
-    )
+    return QT_TRANSLATE_NOOP(
+        "Characterize",
+        "flow characteristic not measured: this valve has no object for {0} over this "
+        "link (measure it over USB)",
+    )(", ".join(absent))
 
 
 def flow_test(

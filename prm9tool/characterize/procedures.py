@@ -16,10 +16,12 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from prm9tool.analysis.frequency import (
+    UPDATES_PER_PERIOD,
     FrequencyResponse,
     frequency_response,
     frequency_response_with_gaps,
     log_chirp,
+    sweep_updates,
 )
 from prm9tool.analysis.pid import PidGains, critical_gain_rule, from_parameters, oscillation
 from prm9tool.analysis.static import StaticCharacteristic, static_characteristic
@@ -35,7 +37,7 @@ from prm9tool.characterize.rig import (
 from prm9tool.characterize.transparent import TRANSPARENT
 from prm9tool.errors import Prm9Error
 from prm9tool.messages import QT_TRANSLATE_NOOP, Message, Number
-from prm9tool.scope.measure import StepFigures, step_figures
+from prm9tool.scope.measure import StepFigures, step_figures, step_figures_to_setpoint
 
 SAMPLES_PER_PERIOD = 10  # a sweep goes no higher than the sample rate / this (decision)
 SWEEP_MIN_SAMPLES = 256  # what the frequency response needs
@@ -239,6 +241,17 @@ class StepResult:
     figures: StepFigures | None
     loop: str = "position"
 
+    @property
+    def to_setpoint(self) -> StepFigures | None:
+        """The figures measured against the setpoint (the end-of-line test's and the
+        acceptance check's): a step that never came to it is not reached
+        (:func:`~prm9tool.scope.measure.step_figures_to_setpoint`)."""
+        lp = LOOPS[self.loop]
+        channels = self.record.channels
+        if lp.actual not in channels or lp.setpoint not in channels:
+            return None
+        return step_figures_to_setpoint(self.record.t, channels[lp.actual], channels[lp.setpoint])
+
     def caption(self) -> Message:
         """The step and the window its figures were measured on, e.g. "Step 0 → 50 %, window
         −20 … 120 ms" (every view shows it next to the figures)."""
@@ -329,9 +342,22 @@ class BodeResult:
     centre_pct: float
     record: Record
     response: FrequencyResponse
-    note: str = ""  # set when the link's sample rate limited the sweep
+    note: Message | str = ""  # set when the link's sample rate limited the sweep
     limited_to_hz: float | None = None  # the sweep's highest frequency when it was limited
     lost_samples: int = 0  # responses the link lost (left out of the estimate)
+    held_s: float = 0.0  # the setpoint hold that cut the sweep short (0: none did)
+
+
+SWEEP_LIMITED = QT_TRANSLATE_NOOP(
+    "Characterize", "sweep limited to {0} Hz (of {1} Hz asked) by the link's sample rate of {2} Hz"
+)
+
+
+SWEEP_UPDATED = QT_TRANSLATE_NOOP(
+    "Characterize",
+    "sweep usable up to {0} Hz: the PC held the valve's setpoint for {1} ms there (at least {2} "
+    "updates per period are needed; the PC was busy)",
+)
 
 
 def bode_test(
@@ -347,7 +373,9 @@ def bode_test(
 
     A link whose sample rate gives fewer than SAMPLES_PER_PERIOD samples per period at
     ``f_max`` (CANopen) limits the sweep to what it can sample, and :attr:`BodeResult.note`
-    says so; nothing is interpolated.
+    says so; nothing is interpolated. A PC too busy to update the setpoint UPDATES_PER_PERIOD
+    times a period (:func:`~prm9tool.analysis.frequency.sweep_updates`) limits the estimate to
+    the part of the sweep before that, or refuses it (LinkTooSlowError) when too little is left.
     """
     lp = LOOPS[loop]
     fs = rig.info.sample_rate_hz
@@ -356,7 +384,7 @@ def bode_test(
             f"a sweep needs at least {SWEEP_MIN_SAMPLES} samples; at the link's {fs:g} Hz "
             f"choose a duration of at least {math.ceil(SWEEP_MIN_SAMPLES / fs * 10) / 10:g} s"
         )
-    note = ""
+    note: Message | str = ""
     highest = fs / SAMPLES_PER_PERIOD
     if f_max > highest:
         if f_min * 2.0 > highest:
@@ -364,18 +392,28 @@ def bode_test(
                 f"the link samples at {fs:g} Hz: a sweep from {f_min:g} Hz needs at least "
                 f"{f_min * 2.0 * SAMPLES_PER_PERIOD:g} Hz"
             )
-        note = (
-            f"sweep limited to {highest:g} Hz (of {f_max:g} Hz asked) by the link's sample "
-            f"rate of {fs:g} Hz"
-        )
+        note = SWEEP_LIMITED(Number(f"{highest:g}"), Number(f"{f_max:g}"), Number(f"{fs:g}"))
         f_max = highest
     sweep = centre_pct + amplitude_pct * log_chirp(duration_s, fs, f_min, f_max)
     with preserved(rig, [], chain_changes(rig, loop)):
         settle(rig, lp.actual, centre_pct, 0.05)
         band = 2.5 * amplitude_pct + 5.0
         rec = record(rig, sweep, [lp.setpoint, lp.actual], centre_pct, band, gaps=True)
-    limited = f_max if note else None  # (the note says the sweep was limited)
     u, y, missing = rec.channels[lp.setpoint], rec.channels[lp.actual], rig.last_missing
+    updates = sweep_updates(sweep, rig.last_demand, fs, f_min, f_max, 2.0 / 163.84)
+    if updates.usable < len(u):  # a busy PC wrote the setpoint too seldom from there on
+        hold = Number(f"{updates.hold_s * 1000:.0f}")
+        if updates.usable_hz < 2.0 * f_min or updates.usable < SWEEP_MIN_SAMPLES:
+            raise LinkTooSlowError(
+                f"the PC updated the valve's setpoint too seldom for the sweep: it held one "
+                f"value for {hold} ms at {updates.usable_hz:.3g} Hz (at least "
+                f"{UPDATES_PER_PERIOD} updates per period are needed); the test was stopped, "
+                "nothing was measured from it — run it again when the PC is less busy"
+            )
+        note = SWEEP_UPDATED(Number(f"{updates.usable_hz:.3g}"), hold, UPDATES_PER_PERIOD)
+        f_max, end = updates.usable_hz, updates.usable
+        u, y, missing = u[:end], y[:end], missing[:end] if len(missing) else missing
+    limited = f_max if note else None  # (the note says the sweep was limited)
     if missing.any():  # lost on the link: not filled in, the fit uses what arrived
         try:
             response = frequency_response_with_gaps(u, y, missing, fs, f_min, f_max)
@@ -387,7 +425,8 @@ def bode_test(
     else:
         response = frequency_response(u, y, fs, f_min, f_max)
     lost = int(missing.sum())
-    return BodeResult(amplitude_pct, centre_pct, rec, response, note, limited, lost)
+    held = updates.hold_s if updates.usable < len(rec.t) else 0.0
+    return BodeResult(amplitude_pct, centre_pct, rec, response, note, limited, lost, held)
 
 
 # --- static characteristic --------------------------------------------------------------------

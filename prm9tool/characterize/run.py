@@ -33,7 +33,7 @@ from prm9tool.characterize.procedures import (
     step_test,
 )
 from prm9tool.characterize.rig import Rig, RigInfo
-from prm9tool.messages import Message
+from prm9tool.messages import QT_TRANSLATE_NOOP, Message
 
 Progress = Callable[[str], None]
 
@@ -82,7 +82,13 @@ class Characterization:
     flow: FlowResult | None = None  # E04 in control mode 4
     figures: list[Figure] = field(default_factory=list)
     wall_s: float = 0.0
-    skipped: list[str] = field(default_factory=list)  # tests this valve cannot run, and why
+    skipped: list[Message | str] = field(default_factory=list)  # tests not run, and why
+    loop: str = "position"  # the loop tested: "process" on an E04 in control mode 4
+
+    @property
+    def limits(self) -> dict[str, Limit]:
+        """The limits of the tested loop's part of the profile."""
+        return self.profile.for_loop(self.loop).limits
 
     @property
     def passed(self) -> bool:
@@ -90,28 +96,31 @@ class Characterization:
         return all(f.passed is not False for f in self.figures)
 
     @property
-    def notes(self) -> list[str]:
+    def notes(self) -> list[Message | str]:
         """What the link limited (a sweep cut at what its sample rate allows, samples lost)
-        and the tests skipped with their reason."""
-        notes = []
+        and the tests skipped with their reason (``str()``: English, a view translates)."""
+        notes: list[Message | str] = []
         bode = self.bode
         if bode is not None and bode.note:
             notes.append(bode.note)
         if bode is not None and bode.lost_samples:
-            notes.append(
-                f"frequency response: {bode.lost_samples} of {len(bode.record.t)} samples lost "
-                "on the link, left out of the estimate"
-            )
-        return notes + self.skipped
+            notes.append(SAMPLES_LOST(bode.lost_samples, len(bode.record.t)))
+        return notes + list(self.skipped)
 
 
+SAMPLES_LOST = QT_TRANSLATE_NOOP(
+    "Characterize",
+    "frequency response: {0} of {1} samples lost on the link, left out of the estimate",
+)
 RESULT_HOOKS: list[Callable[[Characterization], None]] = []
 
 
 def planned_s(profile: Profile, flow: bool = False) -> float:
     """Valve seconds the profile's tests play (what a progress bar counts towards): each
     step settles, records STEP_PRE_S and its window; the sweep settles 50 ms, the triangle
-    0.2 s; the flow characteristic (E04 in control mode 4) settles and steps twice."""
+    0.2 s; the flow characteristic (E04 in control mode 4: the process loop's part of the
+    profile) settles and steps twice."""
+    profile = profile.for_loop("process" if flow else "position")
     d = profile.step_duration_s
     steps = len(profile.step_amplitudes_pct) * (max(0.1, d) + STEP_PRE_S + d)
     seconds = steps + 0.05 + profile.bode_duration_s + 0.2 + profile.static_period_s
@@ -130,6 +139,8 @@ def characterize(rig: Rig, profile: Profile, progress: Progress | None = None) -
     e04 = variant.config is Config.E04
     process = e04 and rig.read(["CTRLMODE"])["CTRLMODE"] == 4
     loop = "process" if process else "position"  # E04 in mode 4: the setpoint is the process's
+    result.loop = loop
+    profile = profile.for_loop(loop)  # the windows and limits of that loop
     for amplitude in profile.step_amplitudes_pct:
         say(f"step response {amplitude:g} %")
         result.steps.append(
@@ -163,8 +174,8 @@ def characterize(rig: Rig, profile: Profile, progress: Progress | None = None) -
 
 
 def figures(c: Characterization) -> list[Figure]:
-    """Every figure of ``c`` with its limit from the profile."""
-    limits = c.profile.limits
+    """Every figure of ``c`` with its limit from the profile (its part for ``c.loop``)."""
+    limits = c.limits
     out: list[Figure] = []
 
     def add(
@@ -185,20 +196,23 @@ def figures(c: Characterization) -> list[Figure]:
             out.append(Figure(name, label, value, FIGURES[base], limits.get(base), note))
 
     for step in c.steps:
-        f = step.figures
+        f = step.to_setpoint  # against the setpoint: a step that never came there fails
         a = f"{step.amplitude_pct:g}"
         nan = math.nan
+        missed = f.not_reached("%") if f else None
         add(f"step_{a}_overshoot_pct", f"step {a} %: overshoot", f.overshoot if f else nan,
-            "step_overshoot_pct")  # fmt: skip
-        add(f"step_{a}_rise_s", f"step {a} %: rise time", f.rise_time if f else nan, "step_rise_s")
+            "step_overshoot_pct", missed)  # fmt: skip
+        add(f"step_{a}_rise_s", f"step {a} %: rise time", f.rise_time if f else nan,
+            "step_rise_s", missed if f and math.isnan(f.rise_time) else None)  # fmt: skip
         add(f"step_{a}_settling_s", f"step {a} %: settling time", f.settling_time if f else nan,
             "step_settling_s", f.not_settled("%") if f else None)  # fmt: skip
     if c.bode is not None:
         r = c.bode.response
+        why = c.bode.note if isinstance(c.bode.note, Message) else None  # a sweep cut short
         add("bode_bandwidth_hz", "−3 dB frequency", r.bandwidth_hz(), "bode_bandwidth_hz",
-            above=r.bandwidth_above_hz())  # fmt: skip
+            why if math.isnan(r.bandwidth_hz()) else None, r.bandwidth_above_hz())  # fmt: skip
         add("bode_phase90_hz", "−90° frequency", r.phase_90_hz(), "bode_phase90_hz",
-            above=r.phase_90_above_hz())  # fmt: skip
+            why if math.isnan(r.phase_90_hz()) else None, r.phase_90_above_hz())  # fmt: skip
     if c.static is not None:
         s = c.static.characteristic
         add("static_gain", "gain", s.gain, "static_gain")
@@ -229,8 +243,9 @@ def report_data(c: Characterization, csv_files: list[Path] | None = None) -> dic
         "link": c.info.link,
         "sample_rate_hz": c.info.sample_rate_hz,
         "profile": c.profile.name,
+        "loop": c.loop,
         "passed": c.passed,
-        "notes": c.notes,
+        "notes": [str(note) for note in c.notes],
         "figures": [
             {
                 "name": f.name,

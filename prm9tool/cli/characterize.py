@@ -124,8 +124,11 @@ def _write(result: Characterization, outputs: tuple[Path | None, Path | None]) -
     stem = (pdf or js or Path("report")).with_suffix("")
     csv_files = write_csv_files(result, stem)
     if pdf is not None:
-        from prm9tool.views.tuning.report import write_pdf
+        from prm9tool import i18n
+        from prm9tool.views.tuning.report import ensure_app, write_pdf
 
+        ensure_app()  # the PDF in the program language: the system's, as the GUI starts in
+        i18n.set_language(i18n.system_language())
         write_pdf(result, pdf)
     if js is not None:
         text = json.dumps(report_data(result, csv_files), indent=2, ensure_ascii=False)

@@ -23,6 +23,7 @@ from prm9tool.errors import CommunicationError, Prm9Error
 from prm9tool.translate import error_text
 
 if TYPE_CHECKING:
+    from prm9tool.device.records import ValveStatus
     from prm9tool.device.session import ValveSession
     from prm9tool.online.connection import ValveConnection
     from prm9tool.online.connection_protocol import ValveIdentity
@@ -138,10 +139,12 @@ class ValveRunner(TuningRunner):
             self.connection.stop_stream()
         link = _link_name(self.connection.device)
         self._originals = {}
-        self.connection.run_job(
+        signal = getattr(self.connection, "status_changed", None)  # the job holds the link:
+        publish = signal.emit if signal is not None else None  # the status the test reads
+        self.connection.run_job(  # goes to the main window's status bar, not polled meanwhile
             f"tuning:{kind}",
             lambda session: self._execute(
-                _recording(rig_for_session(session, link), self._originals), procedure
+                _recording(rig_for_session(session, link), self._originals, publish), procedure
             ),
         )
 
@@ -177,9 +180,22 @@ class ValveRunner(TuningRunner):
             self._deliver(_Failure(message))
 
 
-def _recording(rig: Rig, originals: dict[str, int]) -> Rig:
-    """``rig`` whose writes first read and keep (in ``originals``) the values they replace."""
-    write = rig.write
+def _recording(
+    rig: Rig, originals: dict[str, int], publish: Callable[[ValveStatus], None] | None = None
+) -> Rig:
+    """``rig`` whose writes first read and keep (in ``originals``) the values they replace,
+    and whose every status read is passed to ``publish``: while a test holds the link the
+    connection polls no status, so the status bar would go on showing the one from before the
+    test (e.g. "waiting for a CANopen master" on a valve enabled just before it)."""
+    write, status = rig.write, rig.status
+    if publish is not None:
+
+        def publishing_status() -> ValveStatus:
+            found = status()
+            publish(found)
+            return found
+
+        setattr(rig, "status", publishing_status)  # noqa: B010 (this instance only)
 
     def recording_write(values: Mapping[str, int]) -> None:
         new = [m for m in values if m not in originals]

@@ -11,7 +11,7 @@ from typing import TextIO
 import numpy as np
 
 from prm9tool.catalogue.signals import Signal
-from prm9tool.messages import Message
+from prm9tool.messages import QT_TRANSLATE_NOOP, Message, Number
 from prm9tool.scope.ripple import not_settled, ripple_at_end
 
 
@@ -99,6 +99,8 @@ class StepFigures:
     t_end: float = math.nan  # end of the measured segment: the next step or the window's end
     ripple: float = math.nan  # not settled: half the peak-to-peak left at the end (NaN: settled)
     ripple_hz: float = math.nan  # ... and its frequency (NaN: settled, or not periodic)
+    reached: bool = True  # measured against the setpoint: False when it never came into the band
+    last: float = math.nan  # the response's last sample (where a step not reached ended)
 
     @property
     def steady_state_error(self) -> float:
@@ -113,9 +115,27 @@ class StepFigures:
     def not_settled(self, unit: str = "%") -> Message | None:
         """Why there is no settling time, with what the response did instead (None: settled),
         e.g. "did not settle within ±2 % of the step: oscillation of ±1.5 % at 24 Hz"."""
+        if not self.reached:
+            return self.not_reached(unit)
         if self.settled:
             return None
         return not_settled(self.band, self.ripple, self.ripple_hz, unit)
+
+    def not_reached(self, unit: str = "%") -> Message | None:
+        """For figures measured against the setpoint (:func:`step_figures_to_setpoint`): the
+        sentence for a response that never came within ±band of it (None: it did), e.g.
+        "not reached: the response ended at 56.5 % of the setpoint 90 %"."""
+        if self.reached:
+            return None
+        return NOT_REACHED(
+            Number(f"{self.last:.3g} {unit}".rstrip().replace("-", "−")),
+            Number(f"{self.target:.3g} {unit}".rstrip().replace("-", "−")),
+        )
+
+
+NOT_REACHED = QT_TRANSLATE_NOOP(
+    "StepFigures", "not reached: the response ended at {0} of the setpoint {1}"
+)
 
 
 @dataclass(frozen=True)
@@ -233,6 +253,18 @@ def step_figures(
     return _measure(t, y, reference, band, comparable, strict=False).figures
 
 
+def step_figures_to_setpoint(
+    t: np.ndarray, y: np.ndarray, reference: np.ndarray, band: float = 0.02
+) -> StepFigures | None:
+    """Figures of the first step measured against the level the reference stepped to (the
+    end-of-line test's definition), not against where the response ended: rise time from 10
+    to 90 % of the way to the setpoint, overshoot beyond it, settling into ±``band`` of the
+    step around it. A response that never came within that band of the setpoint (the window
+    ended while it was still on its way, or it stopped short) has ``reached`` False, no
+    overshoot and no settling time; its rise time only if it passed 90 %."""
+    return _measure(t, y, reference, band, True, strict=False, to_target=True).figures
+
+
 def _measure(
     t: np.ndarray,
     y: np.ndarray,
@@ -240,6 +272,7 @@ def _measure(
     band: float,
     comparable: bool,
     strict: bool,
+    to_target: bool = False,
 ) -> StepMeasurement:
     if len(y) and not np.isfinite(y).any():
         return StepMeasurement(Verdict.NO_DATA)
@@ -263,8 +296,9 @@ def _measure(
         min_size = band * abs(step.after - step.before) if comparable else 0.0
         seg = slice(begin, end)
         verdict, figures = _segment(
-            t[seg], y[seg], step.time, step.after, min_size, band, strict, noise_level(y)
-        )
+            t[seg], y[seg], step.time, step.after, min_size, band, strict, noise_level(y),
+            to_target,
+        )  # fmt: skip
         if figures is not None:
             return StepMeasurement(verdict, figures, len(steps), n)
         verdicts.append(verdict)
@@ -307,8 +341,10 @@ def _segment(
     band: float,
     strict: bool,
     noise: float,
+    to_target: bool = False,
 ) -> tuple[Verdict, StepFigures | None]:
-    """Measure the step at ``t_step`` on the samples of its own segment."""
+    """Measure the step at ``t_step`` on the samples of its own segment (``to_target``:
+    against ``target``, see :func:`step_figures_to_setpoint`)."""
     before, after = y[t < t_step], t >= t_step
     if (strict and len(before) < MIN_BEFORE) or np.count_nonzero(after) < MIN_AFTER:
         return Verdict.TOO_SHORT, None
@@ -326,15 +362,20 @@ def _segment(
     if abs(size) <= max(NOISE_RATIO * noise, min_size):
         return Verdict.NO_RESPONSE, None
     ta, ya = t[after], _smoothed(y, noise, size)[after]
-    t10 = _first_crossing(ta, ya, initial, final, 0.1, t_step)
-    t90 = _first_crossing(ta, ya, initial, final, 0.9, t_step)
-    excess = max(0.0, float(np.max((ya - final) / size)))
+    goal = target if to_target and math.isfinite(target) and target != initial else final
+    size = goal - initial
+    t10 = _first_crossing(ta, ya, initial, goal, 0.1, t_step)
+    t90 = _first_crossing(ta, ya, initial, goal, 0.9, t_step)
+    excess = max(0.0, float(np.max((ya - goal) / size)))
     overshoot = excess * 100.0 if excess * abs(size) > OVERSHOOT_NOISE * sample_noise else 0.0
-    settling = _settling_time(ta, ya, final, band * abs(size), t_step)
+    settling = _settling_time(ta, ya, goal, band * abs(size), t_step)
     end = ripple_at_end(ta, ya)
     if end.amplitude > band * abs(size):  # it ends swinging beyond the band: never settled
         settling = math.nan  # (a last stretch inside it would give a time by chance)
-    left = end if math.isnan(settling) else None
+    reached = bool(np.max((ya - initial) / size) >= 1.0 - band)
+    if not reached:  # no overshoot of, no settling at a level it never came to
+        overshoot, settling = math.nan, math.nan
+    left = end if math.isnan(settling) and reached else None
     figures = StepFigures(
         t_step,
         initial,
@@ -347,6 +388,8 @@ def _segment(
         float(t[-1]),
         left.amplitude if left else math.nan,
         left.frequency_hz if left else math.nan,
+        reached,
+        float(y[-1]),
     )
     return Verdict.MEASURED, figures
 

@@ -117,7 +117,7 @@ class MainWindow(QMainWindow):
         from prm9tool.views.scope.widget import ScopeWidget
 
         self._scope = ScopeWidget(self.connection, self.doc, self, control=self.control)
-        self._scope.tuning_requested.connect(lambda: self.show_tuning_window("position"))
+        self._scope.tuning_requested.connect(lambda: self.show_tuning_window(None))
         return self._scope
 
     def _build_view(self, name: str) -> QWidget:
@@ -129,13 +129,15 @@ class MainWindow(QMainWindow):
         self.stack.add(name, view)
         return view
 
-    def show_tuning_window(self, loop: str = "position") -> None:
-        """Open (or raise) the Tuning window on ``loop`` (``position`` or ``process``)."""
+    def show_tuning_window(self, loop: str | None = None) -> None:
+        """Open (or raise) the Tuning window on ``loop`` (``position`` or ``process``; None:
+        the loop it shows, a new window the one the valve's control mode closes)."""
         from prm9tool.views.tuning.window import TuningWindow
 
         window = getattr(self, "tuning_window", None)
         if window is None or window.doc is not self.doc:
             window = TuningWindow(self.doc, self.connection, self, self.control, self.access)
+            window.addAction(self.commands["valve_status"])  # Ctrl+I there too
             self.tuning_window = window
         index = window.loop.findData(loop)
         if index >= 0 and not window.runner.busy:

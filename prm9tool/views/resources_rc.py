@@ -1149,7 +1149,7 @@ ohou m\xc3\xadt stejn\xc3\
 y \xe2\x9a\xa0 a okno to \
 uv\xc3\xa1d\xc3\xad.</p>\x0a</b\
 ody>\x0a</html>\x0a\
-\x00\x00\x07E\
+\x00\x00\x188\
 <\
 !DOCTYPE html>\x0a<\
 html lang=\x22de\x22>\x0a\
@@ -1191,11 +1191,181 @@ t die Freigabe a\
 n.</p>\x0a<p><b>Ach\
 tung:</b> Jeder \
 Test bewegt den \
-Schieber. Stelle\
-n Sie sicher, da\
+Schieber (an ein\
+em E04 auch den \
+Antrieb). Stelle\
+n Sie\x0asicher, da\
 ss sich die Masc\
-hine\x0abewegen dar\
-f.</p>\x0a<h2>Die S\
+hine bewegen dar\
+f. <b>Stopp</b> \
+beendet einen Te\
+st sofort und st\
+ellt\x0adas Ventil \
+wieder her, wie \
+es war.</p>\x0a\x0a<h2\
+>Der Regelkreis<\
+/h2>\x0a<p><b>Regel\
+kreis</b> w\xc3\xa4hlt\
+, worauf die Tes\
+ts wirken. <b>La\
+geregler (Schieb\
+er)</b>: der Sol\
+lwert\x0aist die Sc\
+hieberposition (\
+Regelungsart 2, \
+CTRLMODE). <b>Pr\
+ozessregler (E04\
+)</b>: der Sollw\
+ert\x0aist der Proz\
+esswert des exte\
+rnen Sensors, de\
+n der Prozessreg\
+ler \xc3\xbcber Schieb\
+er und Antrieb\x0as\
+chlie\xc3\x9ft (Regelu\
+ngsart 4, die Vo\
+reinstellung des\
+ E04). Ein E04 i\
+n Regelungsart 4\
+ \xc3\xb6ffnet auf dem\
+\x0aProzessregelkre\
+is; der Lagerege\
+lkreis braucht R\
+egelungsart 2, e\
+ingestellt, sola\
+nge das Ventil\x0an\
+icht freigegeben\
+ ist.</p>\x0a\x0a<h2>E\
+04: den Prozessr\
+egelkreis einste\
+llen</h2>\x0a<ol>\x0a<\
+li>Zuerst den ex\
+ternen Sensor ei\
+nrichten (die Pa\
+rameter \xe2\x80\x9eExter\
+ner Sensor\xe2\x80\x9c: S\
+ignaltyp\x0aSENSTYP\
+E, Polarit\xc3\xa4t, V\
+erst\xc3\xa4rkung und \
+Offset), so dass\
+ der Prozess-Ist\
+wert dem Antrieb\
+ \xc3\xbcber\x0aseinen Be\
+reich in der ric\
+htigen Richtung \
+folgt. Im Oszill\
+oskop pr\xc3\xbcfen (P\
+rozess-Istwert),\
+\x0aw\xc3\xa4hrend sich d\
+er Antrieb langs\
+am bewegt.</li>\x0a\
+<li>Die Regelung\
+sart auf 4 lasse\
+n und <b>Prozess\
+regler (E04)</b>\
+ w\xc3\xa4hlen.</li>\x0a<\
+li>Der Antrieb i\
+ntegriert: seine\
+ Position \xc3\xa4nder\
+t sich, solange \
+der Schieber off\
+en ist. Die\x0aVorg\
+aben des Autotun\
+e folgen dem Reg\
+elkreis: ein Spr\
+ung von 20 % und\
+ eine Ziel-Ausre\
+gelzeit von\x0a500 \
+ms (die 40 ms de\
+s Schiebers erre\
+icht kein Antrie\
+b). F\xc3\xbcr einen l\
+angsamen oder sc\
+hweren\x0aAntrieb d\
+as Ziel erh\xc3\xb6hen\
+.</li>\x0a<li>Autot\
+une starten, den\
+ Vorschlag pr\xc3\xbcf\
+en (die Spr\xc3\xbcnge\
+ des Profils in \
+beide Richtungen\
+ und\x0aseine stati\
+sche Pr\xc3\xbcfung), \
+\xc3\xbcbernehmen, dan\
+n Ventil \xe2\x86\x92 Im \
+Ventil speichern\
+.</li>\x0a<li>Bei e\
+inem Schieber mi\
+t \xc3\x9cberdeckung m\
+isst die Seite <\
+b>Durchflusskenn\
+linie (E04)</b> \
+die\x0aTotzone und \
+schl\xc3\xa4gt OFFSETP\
+OS/OFFSETNEG f\xc3\xbc\
+r den Prozessreg\
+elkreis vor.</li\
+>\x0a</ol>\x0a\x0a<h2>Ber\
+echtigungsstufe \
+und Fehler</h2>\x0a\
+<p>Reglerverst\xc3\xa4\
+rkungen, Lineari\
+sierungen und Of\
+fsets lassen sic\
+h nur auf der St\
+ufe\x0a<b>Experte</\
+b> \xc3\xa4ndern (Ansi\
+cht \xe2\x86\x92 Berechti\
+gungsstufe). Ein\
+ Test, dessen Er\
+gebnis auf der\x0aj\
+etzigen Stufe ni\
+cht \xc3\xbcbernommen \
+werden k\xc3\xb6nnte, \
+fragt vor dem St\
+art; sein Ergebn\
+is bleibt auf de\
+r\x0aSeite, so dass\
+ Sie danach zu E\
+xperte wechseln \
+und es \xc3\xbcbernehm\
+en k\xc3\xb6nnen, ohne\
+ den Test zu\x0awie\
+derholen.</p>\x0a<p\
+>Ein Ventil, das\
+ einen Fehler h\xc3\
+\xa4lt (FAULT_HOLD,\
+ FAULT), folgt s\
+einem Sollwert n\
+icht: der Test\x0aw\
+ird vor dem Star\
+t abgelehnt, und\
+ die Statuszeile\
+ sagt warum. Um \
+FAULT_HOLD zu ve\
+rlassen, die\x0aUrs\
+ache beseitigen \
+(Ventil \xe2\x86\x92 Vent\
+ilstatus zeigt d\
+en aktiven Fehle\
+r) und dort <b>F\
+reigeben</b>\x0adr\xc3\
+\xbccken: sein erst\
+es Steuerwort 08\
+h ist das Fehler\
+-R\xc3\xbccksetzen (Ha\
+ndbuch Tabellen \
+7-19 und\x0a7-20, \xc3\
+\x9cbergang 10), 09\
+h \xe2\x86\x92 0Bh \xe2\x86\x92 0F\
+h geben das Vent\
+il wieder frei. \
+Ein Ventil ohne \
+CANopen\x0averl\xc3\xa4ss\
+t einen Fehler m\
+it Ventil \xe2\x86\x92 Ve\
+ntil neu starten\
+.</p>\x0a\x0a<h2>Die S\
 eiten</h2>\x0a<ul>\x0a\
 <li><b>Autotune<\
 /b>: modellbasie\
@@ -1208,66 +1378,167 @@ st\xc3\xa4rkungen, die\
 Regel der kritis\
 chen Verst\xc3\xa4rkun\
 g. Der Vorschlag\
- wird den\x0aaktuel\
-len Verst\xc3\xa4rkung\
-en gegen\xc3\xbcberges\
-tellt; <b>Vorges\
-chlagene Verst\xc3\xa4\
-rkungen \xc3\xbcberneh\
-men</b>\x0asetzt si\
-e in das Dokumen\
-t (ein R\xc3\xbcckg\xc3\xa4n\
-gig-Schritt; onl\
-ine auch in das \
-Ventil, im Verla\
-uf\x0afestgehalten)\
-. Dauerhaft spei\
-chern mit Ventil\
- \xe2\x86\x92 Im Ventil s\
-peichern.</li>\x0a<\
-li><b>Frequenzga\
-ng</b>: ein Sinu\
-s-Sweep um einen\
- Arbeitspunkt; d\
-ie Frequenzen be\
-i \xe2\x88\x923 dB\x0aund \xe2\x88\
-\x9290\xc2\xb0.</li>\x0a<li>\
-<b>Statische Ken\
-nlinie</b>: ein \
-langsames Dreiec\
-k; Hysterese, Li\
-nearit\xc3\xa4t und To\
-tband,\x0adazu ein \
-Vorschlag f\xc3\xbcr d\
-ie Linearisierun\
-g.</li>\x0a<li><b>P\
-r\xc3\xbcfbericht</b>:\
- ein Abnahmeprof\
-il (Spr\xc3\xbcnge, Sw\
-eep, statischer \
-Test und ihre\x0aGr\
-enzen) in einem \
-Durchgang; das P\
-DF nennt auf jed\
-er Seite Typschl\
-\xc3\xbcssel und Serie\
-nnummer und\x0alist\
-et den Parameter\
-satz in Anzeigee\
-inheiten; die Ro\
-hdaten gehen als\
- CSV daneben.</l\
-i>\x0a</ul>\x0a<p>Die \
-Registerkarte <b\
->Sprungantwort</\
-b> des Oszillosk\
-ops misst \xc3\x9cbers\
-chwingen, Anstie\
-gs- und\x0aAusregel\
-zeit jedes angez\
-eigten Sprungs.<\
-/p>\x0a</body>\x0a</ht\
-ml>\x0a\
+ wird neben den\x0a\
+jetzigen Verst\xc3\xa4\
+rkungen gezeigt;\
+ <b>Vorgeschlage\
+ne Verst\xc3\xa4rkunge\
+n \xc3\xbcbernehmen</b\
+> setzt sie ins\x0a\
+Dokument (ein R\xc3\
+\xbcckg\xc3\xa4ngig-Schri\
+tt; online auch \
+ins Ventil, mit \
+Eintrag in der H\
+istorie).\x0aDauerh\
+aft speichern mi\
+t Ventil \xe2\x86\x92 Im \
+Ventil speichern\
+.</li>\x0a<li><b>Fr\
+equenzgang</b>: \
+ein Sinus-Sweep \
+um einen Arbeits\
+punkt; die Frequ\
+enzen bei \xe2\x88\x923 d\
+B und\x0a\xe2\x88\x9290\xc2\xb0 (d\
+er Bereich folgt\
+ dem Regelkreis:\
+ 1 \xe2\x80\xa6 200 Hz f\xc3\
+\xbcr den Schieber,\
+ 0,2 \xe2\x80\xa6 20 Hz f\
+\xc3\xbcr den\x0aProzessr\
+egelkreis).</li>\
+\x0a<li><b>Statisch\
+e Kennlinie</b>:\
+ ein langsames D\
+reieck; Hysteres\
+e, Linearit\xc3\xa4t u\
+nd Totzone sowie\
+\x0aein Vorschlag f\
+\xc3\xbcr die Linearis\
+ierung.</li>\x0a<li\
+><b>Pr\xc3\xbcfbericht\
+</b>: ein Abnahm\
+eprofil (Spr\xc3\xbcng\
+e, Sweep, statis\
+che Pr\xc3\xbcfung und\
+ ihre Grenzen)\x0ai\
+n einem Durchlau\
+f; der Bericht n\
+ennt den gepr\xc3\xbcf\
+ten Regelkreis, \
+das PDF nennt au\
+f jeder Seite\x0aTy\
+pschl\xc3\xbcssel und \
+Seriennummer und\
+ f\xc3\xbchrt den Para\
+metersatz in Anz\
+eigeeinheiten au\
+f; die\x0aMessdaten\
+ gehen daneben i\
+n CSV-Dateien. S\
+prungkennwerte w\
+erden gegen den \
+Sollwert gemesse\
+n: ein\x0aSprung, d\
+er ihn nicht err\
+eicht hat, ist \xe2\
+\x80\x9enicht erreicht\
+\xe2\x80\x9c und besteht \
+nicht.</li>\x0a</ul\
+>\x0a\x0a<h2>Das Abnah\
+meprofil (TOML)<\
+/h2>\x0a<p>Leer: da\
+s eingebaute Pro\
+fil. Eine Datei \
+setzt, was davon\
+ abweicht; jeder\
+ Schl\xc3\xbcssel darf\
+\x0afehlen. <code>[\
+test]</code> und\
+ <code>[limits]<\
+/code> gelten f\xc3\
+\xbcr den Lageregel\
+kreis,\x0a<code>[pr\
+ocess.test]</cod\
+e> und <code>[pr\
+ocess.limits]</c\
+ode> f\xc3\xbcr den Pr\
+ozessregelkreis \
+des\x0aE04, dessen \
+eigene Vorgaben \
+Sprungfenster vo\
+n 1,5 s, ein Swe\
+ep von 0,2 bis 2\
+0 Hz,\x0aAnstiegsze\
+it \xe2\x89\xa4 0,4 s, Au\
+sregelzeit \xe2\x89\xa4 0\
+,8 s und \xe2\x88\x923 dB\
+ \xe2\x89\xa5 0,8 Hz sind\
+. Eine Grenze is\
+t\x0a<code>{ min = \
+\xe2\x80\xa6 }</code>, <c\
+ode>{ max = \xe2\x80\xa6 \
+}</code> oder be\
+ides; Zahlen in \
+der Datei mit\x0aDe\
+zimalpunkt.</p>\x0a\
+<pre>\x0aname = \x22PR\
+M9-06 Endpr\xc3\xbcfun\
+g\x22\x0a[test]\x0astep_a\
+mplitudes_pct = \
+[5, 25, 90]\x0astep\
+_duration_s = 0.\
+15\x0astatic_period\
+_s = 20\x0a[limits]\
+\x0astep_overshoot_\
+pct = { max = 15\
+ }\x0astep_rise_s =\
+ { max = 0.03 }\x0a\
+bode_bandwidth_h\
+z = { min = 15 }\
+\x0astatic_hysteres\
+is_pct = { max =\
+ 2 }\x0a\x0a[process.t\
+est]      # E04 \
+in Regelungsart \
+4\x0astep_duration_\
+s = 2.0\x0a[process\
+.limits]\x0astep_ri\
+se_s = { max = 0\
+.5 }\x0astep_settli\
+ng_s = { max = 1\
+.0 }\x0aflow_gain =\
+ { min = 3 }\x0a</p\
+re>\x0a<p>Kennwerte\
+: step_overshoot\
+_pct, step_rise_\
+s, step_settling\
+_s, bode_bandwid\
+th_hz,\x0abode_phas\
+e90_hz, static_g\
+ain, static_hyst\
+eresis_pct, stat\
+ic_linearity_pct\
+,\x0astatic_dead_ba\
+nd_pct, flow_gai\
+n, flow_dead_ban\
+d_pct. Ein unbek\
+annter Schl\xc3\xbcsse\
+l oder ein falsc\
+her\x0aWert wird mi\
+t Datei und Schl\
+\xc3\xbcssel abgelehnt\
+.</p>\x0a<p>Die Kar\
+te <b>Sprungantw\
+ort</b> des Oszi\
+lloskops misst \xc3\
+\x9cberschwingen, A\
+nstiegs- und\x0aAus\
+regelzeit jedes \
+gezeigten Sprung\
+s.</p>\x0a</body>\x0a<\
+/html>\x0a\
 \x00\x00\x06\x87\
 <\
 !DOCTYPE html>\x0a<\
@@ -1375,7 +1646,7 @@ jako \xe2\x80\x9e\xe2\x80\x94\xe2\x80\x9c a\
  nelze je zvolit\
 .</p>\x0a</body>\x0a</\
 html>\x0a\
-\x00\x00\x06\xfc\
+\x00\x00\x17L\
 <\
 !DOCTYPE html>\x0a<\
 html lang=\x22cs\x22>\x0a\
@@ -1414,71 +1685,332 @@ tart a\x0aUvolnit);\
 p>\x0a<p><b>Pozor:<\
 /b> ka\xc5\xbed\xc3\xa1 zkou\
 \xc5\xa1ka pohybuje \xc5\xa1\
-oup\xc3\xa1tkem. Ujist\
-\xc4\x9bte se, \xc5\xbee se \
-stroj sm\xc3\xad pohyb\
-ovat.</p>\x0a<h2>St\
-r\xc3\xa1nky</h2>\x0a<ul>\
-\x0a<li><b>Autotune\
-</b>: podle mode\
-lu (n\xc4\x9bkolik sko\
-k\xc5\xaf, p\xc5\x99izp\xc5\xafsob\
-en\xc3\xbd model, kons\
-tanty, kter\xc3\xa9\x0ane\
-kmitaj\xc3\xad) nebo p\
-odle pravidla kr\
-itick\xc3\xa9ho zes\xc3\xadl\
-en\xc3\xad. N\xc3\xa1vrh se \
-zobraz\xc3\xad vedle s\
-ou\xc4\x8dasn\xc3\xbdch\x0akons\
-tant; <b>P\xc5\x99evz\xc3\
-\xadt navr\xc5\xbeen\xc3\xa9 ko\
-nstanty</b> je v\
-lo\xc5\xbe\xc3\xad do dokume\
-ntu (jeden krok \
-zp\xc4\x9bt; online\x0ai \
-do ventilu, se z\
-\xc3\xa1znamem v histo\
-rii). Trvale je \
-ulo\xc5\xbete p\xc5\x99\xc3\xadkaz\
-em Ventil \xe2\x86\x92 Ul\
+oup\xc3\xa1tkem (u E04\
+ i pohonem). Uji\
+st\xc4\x9bte se, \xc5\xbee s\
+e stroj\x0asm\xc3\xad poh\
+ybovat. <b>Stop<\
+/b> zkou\xc5\xa1ku oka\
+m\xc5\xbeit\xc4\x9b ukon\xc4\x8d\xc3\xad\
+ a vr\xc3\xa1t\xc3\xad venti\
+l do p\xc5\xafvodn\xc3\xadho\
+ stavu.</p>\x0a\x0a<h2\
+>Regula\xc4\x8dn\xc3\xad smy\
+\xc4\x8dka</h2>\x0a<p><b>\
+Regula\xc4\x8dn\xc3\xad smy\xc4\
+\x8dka</b> vol\xc3\xad, n\
+a co zkou\xc5\xa1ky p\xc5\
+\xafsob\xc3\xad. <b>Regul\
+\xc3\xa1tor polohy (\xc5\xa1\
+oup\xc3\xa1tko)</b>:\x0a\xc5\
+\xbe\xc3\xa1dan\xc3\xa1 hodnota\
+ je poloha \xc5\xa1oup\
+\xc3\xa1tka (re\xc5\xbeim re\
+gulace 2, CTRLMO\
+DE). <b>Procesn\xc3\
+\xad regul\xc3\xa1tor\x0a(E0\
+4)</b>: \xc5\xbe\xc3\xa1dan\xc3\
+\xa1 hodnota je pro\
+cesn\xc3\xad veli\xc4\x8dina\
+ extern\xc3\xadho sn\xc3\xad\
+ma\xc4\x8de, kterou pr\
+ocesn\xc3\xad regul\xc3\xa1t\
+or\x0auzav\xc3\xadr\xc3\xa1 p\xc5\x99\
+es \xc5\xa1oup\xc3\xa1tko a \
+pohon (re\xc5\xbeim re\
+gulace 4, v\xc3\xbdcho\
+z\xc3\xad u E04). E04 \
+v re\xc5\xbeimu regula\
+ce 4 se\x0aotev\xc5\x99e \
+na procesn\xc3\xad smy\
+\xc4\x8dce; smy\xc4\x8dka po\
+lohy pot\xc5\x99ebuje \
+re\xc5\xbeim regulace \
+2, nastaven\xc3\xbd, d\
+okud ventil\x0anen\xc3\
+\xad uvoln\xc4\x9bn.</p>\x0a\
+\x0a<h2>E04: lad\xc4\x9bn\
+\xc3\xad procesn\xc3\xad smy\
+\xc4\x8dky</h2>\x0a<ol>\x0a<\
+li>Nejprve nasta\
+vte extern\xc3\xad sn\xc3\
+\xadma\xc4\x8d (parametry\
+ \xe2\x80\x9eExtern\xc3\xad sn\xc3\
+\xadma\xc4\x8d\xe2\x80\x9c: typ si\
+gn\xc3\xa1lu SENSTYPE,\
+\x0apolarita, zes\xc3\xad\
+len\xc3\xad a posunut\xc3\
+\xad), aby skute\xc4\x8dn\
+\xc3\xa1 hodnota proce\
+su sledovala poh\
+on v cel\xc3\xa9m rozs\
+ahu\x0aa ve spr\xc3\xa1vn\
+\xc3\xa9m sm\xc4\x9bru. Ov\xc4\x9b\
+\xc5\x99te to na oscil\
+oskopu (skute\xc4\x8dn\
+\xc3\xa1 hodnota proce\
+su), zat\xc3\xadmco se\
+ pohon\x0apomalu po\
+hybuje.</li>\x0a<li\
+>Ponechte re\xc5\xbeim\
+ regulace 4 a zv\
+olte <b>Procesn\xc3\
+\xad regul\xc3\xa1tor (E0\
+4)</b>.</li>\x0a<li\
+>Pohon integruje\
+: jeho poloha se\
+ m\xc4\x9bn\xc3\xad, dokud j\
+e \xc5\xa1oup\xc3\xa1tko ote\
+v\xc5\x99en\xc3\xa9. V\xc3\xbdchoz\
+\xc3\xad hodnoty\x0aautot\
+une se \xc5\x99\xc3\xadd\xc3\xad s\
+my\xc4\x8dkou: skok 20\
+ % a c\xc3\xadlov\xc3\xa1 do\
+ba ust\xc3\xa1len\xc3\xad 50\
+0 ms (40 ms \xc5\xa1ou\
+p\xc3\xa1tka \xc5\xbe\xc3\xa1dn\xc3\xbd \
+pohon\x0anedos\xc3\xa1hne\
+). Pro pomal\xc3\xbd n\
+ebo t\xc4\x9b\xc5\xbek\xc3\xbd poh\
+on c\xc3\xadl zvy\xc5\xa1te.\
+</li>\x0a<li>Spus\xc5\xa5\
+te autotune, zko\
+ntrolujte n\xc3\xa1vrh\
+ (skoky profilu \
+v obou sm\xc4\x9brech \
+a jeho statickou\
+\x0azkou\xc5\xa1ku), p\xc5\x99e\
+vezm\xc4\x9bte jej a p\
+ak Ventil \xe2\x86\x92 Ul\
 o\xc5\xbeit do pam\xc4\x9bti\
-\x0aventilu.</li>\x0a<\
-li><b>Frekven\xc4\x8dn\
-\xc3\xad charakteristi\
-ka</b>: sinusov\xc3\
-\xbd rozm\xc3\xadtan\xc3\xbd si\
-gn\xc3\xa1l kolem prac\
-ovn\xc3\xadho bodu;\x0afr\
-ekvence p\xc5\x99i \xe2\x88\x92\
-3 dB a \xe2\x88\x9290\xc2\xb0.<\
-/li>\x0a<li><b>Stat\
-ick\xc3\xa1 charakteri\
-stika</b>: pomal\
-\xc3\xbd troj\xc3\xbaheln\xc3\xadk\
-; hystereze, lin\
-earita a p\xc3\xa1smo\x0a\
+ ventilu.</li>\x0a<\
+li>U \xc5\xa1oup\xc3\xa1tka \
+s p\xc5\x99ekryt\xc3\xadm zm\
+\xc4\x9b\xc5\x99\xc3\xad str\xc3\xa1nka \
+<b>Pr\xc5\xaftokov\xc3\xa1 c\
+harakteristika (\
+E04)</b> p\xc3\xa1smo\x0a\
 necitlivosti a n\
-\xc3\xa1vrh linearizac\
-e.</li>\x0a<li><b>P\
-rotokol o zkou\xc5\xa1\
-ce</b>: p\xc5\x99ej\xc3\xadm\
-ac\xc3\xad profil (sko\
-ky, rozm\xc3\xadt\xc3\xa1n\xc3\xad\
-, statick\xc3\xa1 zkou\
-\xc5\xa1ka a jejich\x0ame\
-ze) v jednom b\xc4\x9b\
-hu; PDF uv\xc3\xa1d\xc3\xad \
-na ka\xc5\xbed\xc3\xa9 stran\
-\xc4\x9b typov\xc3\xbd kl\xc3\xad\xc4\
-\x8d a v\xc3\xbdrobn\xc3\xad \xc4\x8d\
-\xc3\xadslo a obsahuje\
- sadu\x0aparametr\xc5\xaf\
- v zobrazovan\xc3\xbdc\
-h jednotk\xc3\xa1ch; n\
-am\xc4\x9b\xc5\x99en\xc3\xa1 data \
-jdou vedle do CS\
-V.</li>\x0a</ul>\x0a<p\
+avrhne OFFSETPOS\
+/OFFSETNEG pro p\
+rocesn\xc3\xad smy\xc4\x8dku\
+.</li>\x0a</ol>\x0a\x0a<h\
+2>\xc3\x9arove\xc5\x88 opr\xc3\xa1\
+vn\xc4\x9bn\xc3\xad a poruch\
+y</h2>\x0a<p>Konsta\
+nty regul\xc3\xa1tor\xc5\xaf\
+, linearizace a \
+posunut\xc3\xad lze m\xc4\
+\x9bnit jen na \xc3\xbaro\
+vni <b>Expert</b\
+>\x0a(N\xc3\xa1hled \xe2\x86\x92 \xc3\
+\x9arove\xc5\x88 opr\xc3\xa1vn\xc4\
+\x9bn\xc3\xad). Zkou\xc5\xa1ka,\
+ jej\xc3\xad\xc5\xbe v\xc3\xbdsled\
+ek by na sou\xc4\x8das\
+n\xc3\xa9 \xc3\xbarovni ne\xc5\xa1\
+lo p\xc5\x99evz\xc3\xadt, se\
+\x0ap\xc5\x99ed spu\xc5\xa1t\xc4\x9bn\
+\xc3\xadm zept\xc3\xa1; jej\xc3\
+\xad v\xc3\xbdsledek z\xc5\xafs\
+tane na str\xc3\xa1nce\
+, tak\xc5\xbee m\xc5\xaf\xc5\xbeet\
+e p\xc5\x99epnout na E\
+xpert\x0adodate\xc4\x8dn\xc4\
+\x9b a p\xc5\x99evz\xc3\xadt je\
+j bez opakov\xc3\xa1n\xc3\
+\xad zkou\xc5\xa1ky.</p>\x0a\
+<p>Ventil, kter\xc3\
+\xbd dr\xc5\xbe\xc3\xad poruchu\
+ (FAULT_HOLD, FA\
+ULT), nesleduje \
+\xc5\xbe\xc3\xa1danou hodnot\
+u: zkou\xc5\xa1ka je\x0ao\
+dm\xc3\xadtnuta p\xc5\x99ed \
+spu\xc5\xa1t\xc4\x9bn\xc3\xadm a s\
+tavov\xc3\xbd \xc5\x99\xc3\xa1dek \
+\xc5\x99ekne pro\xc4\x8d. Pr\
+o opu\xc5\xa1t\xc4\x9bn\xc3\xad FA\
+ULT_HOLD odstra\xc5\
+\x88te p\xc5\x99\xc3\xad\xc4\x8dinu\x0a(\
+Ventil \xe2\x86\x92 Stav \
+ventilu uk\xc3\xa1\xc5\xbee \
+aktivn\xc3\xad chybu) \
+a tam stiskn\xc4\x9bte\
+ <b>Uvolnit</b>:\
+ jeho prvn\xc3\xad \xc5\x99\xc3\
+\xaddic\xc3\xad\x0aslovo 08h\
+ je reset poruch\
+y (p\xc5\x99\xc3\xadru\xc4\x8dka, \
+tabulky 7-19 a 7\
+-20, p\xc5\x99echod 10\
+), 09h \xe2\x86\x92 0Bh \xe2\
+\x86\x92 0Fh ventil\x0azn\
+ovu uvoln\xc3\xad. Ven\
+til bez CANopen \
+opust\xc3\xad poruchu \
+p\xc5\x99\xc3\xadkazem Venti\
+l \xe2\x86\x92 Restart ve\
+ntilu.</p>\x0a\x0a<h2>\
+Str\xc3\xa1nky</h2>\x0a<u\
+l>\x0a<li><b>Autotu\
+ne</b>: podle mo\
+delu (n\xc4\x9bkolik s\
+kok\xc5\xaf, p\xc5\x99izp\xc5\xafs\
+oben\xc3\xbd model, ko\
+nstanty, kter\xc3\xa9\x0a\
+nekmitaj\xc3\xad) nebo\
+ podle pravidla \
+kritick\xc3\xa9ho zes\xc3\
+\xadlen\xc3\xad. N\xc3\xa1vrh s\
+e zobraz\xc3\xad vedle\
+ sou\xc4\x8dasn\xc3\xbdch\x0ako\
+nstant; <b>P\xc5\x99ev\
+z\xc3\xadt navr\xc5\xbeen\xc3\xa9 \
+konstanty</b> je\
+ vlo\xc5\xbe\xc3\xad do doku\
+mentu (jeden kro\
+k zp\xc4\x9bt; online\x0a\
+i do ventilu, se\
+ z\xc3\xa1znamem v his\
+torii). Trvale j\
+e ulo\xc5\xbete p\xc5\x99\xc3\xadk\
+azem Ventil \xe2\x86\x92 \
+Ulo\xc5\xbeit do pam\xc4\x9b\
+ti\x0aventilu.</li>\
+\x0a<li><b>Frekven\xc4\
+\x8dn\xc3\xad charakteris\
+tika</b>: sinuso\
+v\xc3\xbd rozm\xc3\xadtan\xc3\xbd \
+sign\xc3\xa1l kolem pr\
+acovn\xc3\xadho bodu;\x0a\
+frekvence p\xc5\x99i \xe2\
+\x88\x923 dB a \xe2\x88\x9290\xc2\xb0\
+ (rozsah se \xc5\x99\xc3\xad\
+d\xc3\xad smy\xc4\x8dkou: 1 \
+\xe2\x80\xa6 200 Hz pro \xc5\
+\xa1oup\xc3\xa1tko, 0,2 \xe2\
+\x80\xa6 20 Hz pro\x0apro\
+cesn\xc3\xad smy\xc4\x8dku).\
+</li>\x0a<li><b>Sta\
+tick\xc3\xa1 charakter\
+istika</b>: poma\
+l\xc3\xbd troj\xc3\xbaheln\xc3\xad\
+k; hystereze, li\
+nearita a p\xc3\xa1smo\
+\x0anecitlivosti a \
+n\xc3\xa1vrh lineariza\
+ce.</li>\x0a<li><b>\
+Protokol o zkou\xc5\
+\xa1ce</b>: p\xc5\x99ej\xc3\xad\
+mac\xc3\xad profil (sk\
+oky, rozm\xc3\xadt\xc3\xa1n\xc3\
+\xad, statick\xc3\xa1 zko\
+u\xc5\xa1ka a jejich\x0am\
+eze) v jednom b\xc4\
+\x9bhu; protokol uv\
+\xc3\xa1d\xc3\xad zkou\xc5\xa1enou\
+ smy\xc4\x8dku, PDF uv\
+\xc3\xa1d\xc3\xad na ka\xc5\xbed\xc3\xa9\
+ stran\xc4\x9b typov\xc3\xbd\
+ kl\xc3\xad\xc4\x8d\x0aa v\xc3\xbdrob\
+n\xc3\xad \xc4\x8d\xc3\xadslo a ob\
+sahuje sadu para\
+metr\xc5\xaf v zobrazo\
+van\xc3\xbdch jednotk\xc3\
+\xa1ch; nam\xc4\x9b\xc5\x99en\xc3\xa1\
+ data jdou vedle\
+\x0ado CSV. Hodnoty\
+ skok\xc5\xaf se m\xc4\x9b\xc5\x99\
+\xc3\xad v\xc5\xaf\xc4\x8di \xc5\xbe\xc3\xa1da\
+n\xc3\xa9 hodnot\xc4\x9b: sk\
+ok, kter\xc3\xbd ji ne\
+dos\xc3\xa1hl, je \xe2\x80\x9en\
+edosa\xc5\xbeeno\xe2\x80\x9c\x0aa \
+nevyhovuje.</li>\
+\x0a</ul>\x0a\x0a<h2>P\xc5\x99e\
+j\xc3\xadmac\xc3\xad profil \
+(TOML)</h2>\x0a<p>P\
+r\xc3\xa1zdn\xc3\xa9: vestav\
+\xc4\x9bn\xc3\xbd profil. So\
+ubor nastav\xc3\xad, c\
+o se od n\xc4\x9bj li\xc5\
+\xa1\xc3\xad; ka\xc5\xbed\xc3\xbd kl\xc3\
+\xad\xc4\x8d sm\xc3\xad chyb\xc4\x9bt\
+.\x0a<code>[test]</\
+code> a <code>[l\
+imits]</code> pl\
+at\xc3\xad pro smy\xc4\x8dku\
+ polohy,\x0a<code>[\
+process.test]</c\
+ode> a <code>[pr\
+ocess.limits]</c\
+ode> pro procesn\
+\xc3\xad smy\xc4\x8dku E04, \
+jej\xc3\xad\xc5\xbe\x0avlastn\xc3\xad\
+ v\xc3\xbdchoz\xc3\xad hodno\
+ty jsou okna sko\
+k\xc5\xaf 1,5 s, rozm\xc3\
+\xadt\xc3\xa1n\xc3\xad od 0,2 d\
+o 20 Hz, doba n\xc3\
+\xa1b\xc4\x9bhu\x0a\xe2\x89\xa4 0,4 s\
+, doba ust\xc3\xa1len\xc3\
+\xad \xe2\x89\xa4 0,8 s a \xe2\x88\
+\x923 dB \xe2\x89\xa5 0,8 Hz\
+. Mez je <code>{\
+ min = \xe2\x80\xa6 }</co\
+de>,\x0a<code>{ max\
+ = \xe2\x80\xa6 }</code> \
+nebo oboj\xc3\xad; \xc4\x8d\xc3\
+\xadsla v souboru s\
+ desetinnou te\xc4\x8d\
+kou.</p>\x0a<pre>\x0an\
+ame = \x22PRM9-06 v\
+\xc3\xbdstupn\xc3\xad zkou\xc5\xa1\
+ka\x22\x0a[test]\x0astep_\
+amplitudes_pct =\
+ [5, 25, 90]\x0aste\
+p_duration_s = 0\
+.15\x0astatic_perio\
+d_s = 20\x0a[limits\
+]\x0astep_overshoot\
+_pct = { max = 1\
+5 }\x0astep_rise_s \
+= { max = 0.03 }\
+\x0abode_bandwidth_\
+hz = { min = 15 \
+}\x0astatic_hystere\
+sis_pct = { max \
+= 2 }\x0a\x0a[process.\
+test]      # E04\
+ v re\xc5\xbeimu regul\
+ace 4\x0astep_durat\
+ion_s = 2.0\x0a[pro\
+cess.limits]\x0aste\
+p_rise_s = { max\
+ = 0.5 }\x0astep_se\
+ttling_s = { max\
+ = 1.0 }\x0aflow_ga\
+in = { min = 3 }\
+\x0a</pre>\x0a<p>Hodno\
+ty: step_oversho\
+ot_pct, step_ris\
+e_s, step_settli\
+ng_s, bode_bandw\
+idth_hz,\x0abode_ph\
+ase90_hz, static\
+_gain, static_hy\
+steresis_pct, st\
+atic_linearity_p\
+ct,\x0astatic_dead_\
+band_pct, flow_g\
+ain, flow_dead_b\
+and_pct. Nezn\xc3\xa1m\
+\xc3\xbd kl\xc3\xad\xc4\x8d nebo c\
+hybn\xc3\xa1 hodnota s\
+e\x0aodm\xc3\xadtne s uve\
+den\xc3\xadm souboru a\
+ kl\xc3\xad\xc4\x8de.</p>\x0a<p\
 >Karta <b>P\xc5\x99ech\
 odov\xc3\xa1 charakter\
 istika</b> oscil\
@@ -2396,7 +2928,7 @@ y a zkou\xc5\xa1ky lad\
 tu v RPDO1, jako\
  PLC.</p>\x0a</body\
 >\x0a</html>\x0a\
-\x00\x00\x06V\
+\x00\x00\x15\xaa\
 <\
 !DOCTYPE html>\x0a<\
 html lang=\x22en\x22>\x0a\
@@ -2435,71 +2967,316 @@ rs to enable it.\
 </p>\x0a<p><b>Warni\
 ng:</b> every te\
 st moves the spo\
-ol. Make sure th\
-e machine may mo\
-ve.</p>\x0a<h2>The \
-pages</h2>\x0a<ul>\x0a\
-<li><b>Autotune<\
-/b>: model-based\
- (a few steps, a\
- fitted model, g\
-ains that do not\
- oscillate) or\x0at\
-he critical-gain\
- rule. The propo\
-sal is shown aga\
-inst the present\
- gains; <b>Accep\
-t the\x0aproposed g\
-ains</b> puts th\
-em into the docu\
-ment (one undo s\
-tep; online into\
- the valve too,\x0a\
-recorded in the \
-history). Store \
-them with Valve \
-\xe2\x86\x92 Store in val\
-ve.</li>\x0a<li><b>\
-Frequency respon\
-se</b>: a sine s\
-weep around an o\
-perating point; \
-the \xe2\x88\x923 dB and \
-\xe2\x88\x9290\xc2\xb0\x0afrequenc\
-ies.</li>\x0a<li><b\
->Static characte\
-ristic</b>: a sl\
-ow triangle; hys\
-teresis, lineari\
-ty and dead band\
-, and a\x0aproposed\
- linearization.<\
-/li>\x0a<li><b>Test\
- report</b>: an \
-acceptance profi\
-le (steps, sweep\
-, static test an\
-d their limits)\x0a\
-run in one go; t\
-he PDF names typ\
-e key and serial\
- number on every\
- page and lists \
-the parameter\x0ase\
-t in display uni\
-ts; the raw data\
- go to CSV besid\
-e it.</li>\x0a</ul>\
-\x0a<p>The oscillos\
-cope's <b>Step r\
-esponse</b> tab \
-measures oversho\
-ot, rise and set\
-tling time of\x0aan\
-y step it shows.\
-</p>\x0a</body>\x0a</h\
-tml>\x0a\
+ol (on an E04 al\
+so the actuator)\
+. Make sure the\x0a\
+machine may move\
+. <b>Stop</b> en\
+ds a test at onc\
+e and puts the v\
+alve back as it \
+was.</p>\x0a\x0a<h2>Th\
+e loop</h2>\x0a<p><\
+b>Loop</b> choos\
+es what the test\
+s act on. <b>Pos\
+ition controller\
+ (spool)</b>: th\
+e setpoint\x0ais th\
+e spool position\
+ (control mode 2\
+, CTRLMODE). <b>\
+Process controll\
+er (E04)</b>: th\
+e\x0asetpoint is th\
+e process value \
+of the external \
+sensor, which th\
+e process contro\
+ller closes\x0aover\
+ the spool and t\
+he actuator (con\
+trol mode 4, the\
+ E04 default). A\
+n E04 in control\
+ mode 4\x0aopens on\
+ the process loo\
+p; the position \
+loop needs contr\
+ol mode 2, set w\
+hile the valve i\
+s not\x0aenabled.</\
+p>\x0a\x0a<h2>E04: tun\
+ing the process \
+loop</h2>\x0a<ol>\x0a<\
+li>Set up the ex\
+ternal sensor fi\
+rst (the paramet\
+ers \x22External se\
+nsor\x22: signal ty\
+pe\x0aSENSTYPE, pol\
+arity, gain and \
+offset), so that\
+ the process act\
+ual value follow\
+s the actuator\x0ao\
+ver its range in\
+ the right direc\
+tion. Check it o\
+n the oscillosco\
+pe (process actu\
+al value)\x0awhile \
+the actuator mov\
+es slowly.</li>\x0a\
+<li>Leave the co\
+ntrol mode at 4 \
+and choose <b>Pr\
+ocess controller\
+ (E04)</b>.</li>\
+\x0a<li>The actuato\
+r integrates: it\
+s position keeps\
+ changing as lon\
+g as the spool i\
+s open.\x0aThe auto\
+tune's defaults \
+follow the loop:\
+ a 20 % step and\
+ a settling targ\
+et of 500 ms\x0a(th\
+e spool's 40 ms \
+cannot be reache\
+d by an actuator\
+). Raise the tar\
+get for a slow o\
+r heavy\x0aactuator\
+.</li>\x0a<li>Run t\
+he autotune, che\
+ck its proposal \
+(the profile's s\
+teps both ways a\
+nd its static\x0ate\
+st), accept it, \
+then Valve \xe2\x86\x92 S\
+tore in valve.</\
+li>\x0a<li>With an \
+overlapped spool\
+, the <b>Flow ch\
+aracteristic (E0\
+4)</b> page meas\
+ures the dead ba\
+nd\x0aand proposes \
+OFFSETPOS/OFFSET\
+NEG for the proc\
+ess loop.</li>\x0a<\
+/ol>\x0a\x0a<h2>Access\
+ level and fault\
+s</h2>\x0a<p>Contro\
+ller gains, line\
+arizations and o\
+ffsets can be ch\
+anged at <b>Expe\
+rt</b> access le\
+vel\x0aonly (View \xe2\
+\x86\x92 Access level)\
+. A test whose r\
+esult could not \
+be accepted at t\
+he present level\
+\x0aasks before it \
+starts; its resu\
+lt stays on the \
+page, so you can\
+ switch to Exper\
+t afterwards\x0aand\
+ accept it witho\
+ut running the t\
+est again.</p>\x0a<\
+p>A valve that h\
+olds a fault (FA\
+ULT_HOLD, FAULT)\
+ does not follow\
+ its setpoint: t\
+he test is\x0arefus\
+ed before it sta\
+rts and the stat\
+us line says why\
+. To leave FAULT\
+_HOLD remove the\
+ cause\x0a(Valve \xe2\x86\
+\x92 Valve status l\
+ists the active \
+error), then pre\
+ss <b>Enable</b>\
+ there: its firs\
+t\x0acontrol word 0\
+8h is the fault \
+reset (manual ta\
+bles 7-19 and 7-\
+20, transition 1\
+0), 09h \xe2\x86\x92 0Bh \
+\xe2\x86\x92 0Fh enable\x0at\
+he valve again. \
+A valve without \
+CANopen comes ou\
+t of a fault wit\
+h Valve \xe2\x86\x92 Rest\
+art valve.</p>\x0a\x0a\
+<h2>The pages</h\
+2>\x0a<ul>\x0a<li><b>A\
+utotune</b>: mod\
+el-based (a few \
+steps, a fitted \
+model, gains tha\
+t do not oscilla\
+te) or\x0athe criti\
+cal-gain rule. T\
+he proposal is s\
+hown against the\
+ present gains; \
+<b>Accept the\x0apr\
+oposed gains</b>\
+ puts them into \
+the document (on\
+e undo step; onl\
+ine into the val\
+ve too,\x0arecorded\
+ in the history)\
+. Store them wit\
+h Valve \xe2\x86\x92 Stor\
+e in valve.</li>\
+\x0a<li><b>Frequenc\
+y response</b>: \
+a sine sweep aro\
+und an operating\
+ point; the \xe2\x88\x923\
+ dB and \xe2\x88\x9290\xc2\xb0\x0a\
+frequencies (the\
+ sweep's range f\
+ollows the loop:\
+ 1 \xe2\x80\xa6 200 Hz fo\
+r the spool, 0.2\
+ \xe2\x80\xa6 20 Hz for\x0at\
+he process loop)\
+.</li>\x0a<li><b>St\
+atic characteris\
+tic</b>: a slow \
+triangle; hyster\
+esis, linearity \
+and dead band, a\
+nd a\x0aproposed li\
+nearization.</li\
+>\x0a<li><b>Test re\
+port</b>: an acc\
+eptance profile \
+(steps, sweep, s\
+tatic test and t\
+heir limits)\x0arun\
+ in one go; the \
+report names the\
+ loop it tested,\
+ and the PDF nam\
+es type key and \
+serial\x0anumber on\
+ every page and \
+lists the parame\
+ter set in displ\
+ay units; the ra\
+w data go to CSV\
+\x0abeside it. Step\
+ figures are mea\
+sured against th\
+e setpoint: a st\
+ep that did not \
+reach it is\x0a\x22not\
+ reached\x22 and fa\
+ils.</li>\x0a</ul>\x0a\
+\x0a<h2>The accepta\
+nce profile (TOM\
+L)</h2>\x0a<p>Empty\
+: the built-in p\
+rofile. A file s\
+ets what differs\
+ from it; every \
+key may be left \
+out.\x0a<code>[test\
+]</code> and <co\
+de>[limits]</cod\
+e> are for the p\
+osition loop;\x0a<c\
+ode>[process.tes\
+t]</code> and <c\
+ode>[process.lim\
+its]</code> for \
+the E04 process \
+loop, whose\x0aown \
+defaults are 1.5\
+ s step windows,\
+ a sweep from 0.\
+2 to 20 Hz, rise\
+ time \xe2\x89\xa4 0.4 s,\
+ settling\x0atime \xe2\
+\x89\xa4 0.8 s and \xe2\x88\x92\
+3 dB \xe2\x89\xa5 0.8 Hz.\
+ A limit is <cod\
+e>{ min = \xe2\x80\xa6 }<\
+/code>,\x0a<code>{ \
+max = \xe2\x80\xa6 }</cod\
+e> or both.</p>\x0a\
+<pre>\x0aname = \x22PR\
+M9-06 end of lin\
+e\x22\x0a[test]\x0astep_a\
+mplitudes_pct = \
+[5, 25, 90]\x0astep\
+_duration_s = 0.\
+15\x0astatic_period\
+_s = 20\x0a[limits]\
+\x0astep_overshoot_\
+pct = { max = 15\
+ }\x0astep_rise_s =\
+ { max = 0.03 }\x0a\
+bode_bandwidth_h\
+z = { min = 15 }\
+\x0astatic_hysteres\
+is_pct = { max =\
+ 2 }\x0a\x0a[process.t\
+est]      # E04 \
+in control mode \
+4\x0astep_duration_\
+s = 2.0\x0a[process\
+.limits]\x0astep_ri\
+se_s = { max = 0\
+.5 }\x0astep_settli\
+ng_s = { max = 1\
+.0 }\x0aflow_gain =\
+ { min = 3 }\x0a</p\
+re>\x0a<p>Figures: \
+step_overshoot_p\
+ct, step_rise_s,\
+ step_settling_s\
+, bode_bandwidth\
+_hz,\x0abode_phase9\
+0_hz, static_gai\
+n, static_hyster\
+esis_pct, static\
+_linearity_pct,\x0a\
+static_dead_band\
+_pct, flow_gain,\
+ flow_dead_band_\
+pct. An unknown \
+key or a wrong v\
+alue is\x0arefused \
+with the file an\
+d the key named.\
+</p>\x0a<p>The osci\
+lloscope's <b>St\
+ep response</b> \
+tab measures ove\
+rshoot, rise and\
+ settling time o\
+f\x0aany step it sh\
+ows.</p>\x0a</body>\
+\x0a</html>\x0a\
 \x00\x00\x06\xe1\
 <\
 !DOCTYPE html>\x0a<\
@@ -3916,33 +4693,33 @@ qt_resource_struct = b"\
 \x00\x00\x00\x00\x00\x02\x00\x00\x00\x02\x00\x00\x00\x01\
 \x00\x00\x00\x10\x00\x02\x00\x00\x00\x10\x00\x00\x00\x10\
 \x00\x00\x00\x00\x00\x02\x00\x00\x00\x0d\x00\x00\x00\x03\
-\x00\x00\x02\xb6\x00\x00\x00\x00\x00\x01\x00\x00\xda\xcb\
-\x00\x00\x02L\x00\x00\x00\x00\x00\x01\x00\x00\xd5-\
-\x00\x00\x03X\x00\x00\x00\x00\x00\x01\x00\x00\xe5\x01\
-\x00\x00\x02\xd0\x00\x00\x00\x00\x00\x01\x00\x00\xdb\xf8\
-\x00\x00\x022\x00\x00\x00\x00\x00\x01\x00\x00\xd3g\
-\x00\x00\x03t\x00\x00\x00\x00\x00\x01\x00\x00\xe6\x99\
-\x00\x00\x02\xe8\x00\x00\x00\x00\x00\x01\x00\x00\xdd\xc7\
-\x00\x00\x03:\x00\x00\x00\x00\x00\x01\x00\x00\xe3U\
-\x00\x00\x02d\x00\x00\x00\x00\x00\x01\x00\x00\xd6\xd3\
-\x00\x00\x03\x04\x00\x00\x00\x00\x00\x01\x00\x00\xdf\x90\
-\x00\x00\x02\x80\x00\x00\x00\x00\x00\x01\x00\x00\xd7\xd0\
-\x00\x00\x02\x9c\x00\x00\x00\x00\x00\x01\x00\x00\xd9\x89\
-\x00\x00\x03\x18\x00\x00\x00\x00\x00\x01\x00\x00\xe2\x14\
-\x00\x00\x01J\x00\x00\x00\x00\x00\x01\x00\x00\x81\x04\
-\x00\x00\x00\xe6\x00\x00\x00\x00\x00\x01\x00\x00N\x00\
-\x00\x00\x01\xac\x00\x00\x00\x00\x00\x01\x00\x00\x9a(\
+\x00\x00\x02\xb6\x00\x00\x00\x00\x00\x01\x00\x01\x0bb\
+\x00\x00\x02L\x00\x00\x00\x00\x00\x01\x00\x01\x05\xc4\
+\x00\x00\x03X\x00\x00\x00\x00\x00\x01\x00\x01\x15\x98\
+\x00\x00\x02\xd0\x00\x00\x00\x00\x00\x01\x00\x01\x0c\x8f\
+\x00\x00\x022\x00\x00\x00\x00\x00\x01\x00\x01\x03\xfe\
+\x00\x00\x03t\x00\x00\x00\x00\x00\x01\x00\x01\x170\
+\x00\x00\x02\xe8\x00\x00\x00\x00\x00\x01\x00\x01\x0e^\
+\x00\x00\x03:\x00\x00\x00\x00\x00\x01\x00\x01\x13\xec\
+\x00\x00\x02d\x00\x00\x00\x00\x00\x01\x00\x01\x07j\
+\x00\x00\x03\x04\x00\x00\x00\x00\x00\x01\x00\x01\x10'\
+\x00\x00\x02\x80\x00\x00\x00\x00\x00\x01\x00\x01\x08g\
+\x00\x00\x02\x9c\x00\x00\x00\x00\x00\x01\x00\x01\x0a \
+\x00\x00\x03\x18\x00\x00\x00\x00\x00\x01\x00\x01\x12\xab\
+\x00\x00\x01J\x00\x00\x00\x00\x00\x01\x00\x00\xa2G\
+\x00\x00\x00\xe6\x00\x00\x00\x00\x00\x01\x00\x00^\xf3\
+\x00\x00\x01\xac\x00\x00\x00\x00\x00\x01\x00\x00\xca\xbf\
 \x00\x00\x00\xc4\x00\x00\x00\x00\x00\x01\x00\x00F\xb7\
-\x00\x00\x01\x0a\x00\x00\x00\x00\x00\x01\x00\x00T\x8b\
-\x00\x00\x01\x8a\x00\x00\x00\x00\x00\x01\x00\x00\x93\xce\
+\x00\x00\x01\x0a\x00\x00\x00\x00\x00\x01\x00\x00e~\
+\x00\x00\x01\x8a\x00\x00\x00\x00\x00\x01\x00\x00\xb5\x11\
 \x00\x00\x00:\x00\x00\x00\x00\x00\x01\x00\x00\x0bh\
-\x00\x00\x02\x0a\x00\x00\x00\x00\x00\x01\x00\x00\xcb\xa8\
+\x00\x00\x02\x0a\x00\x00\x00\x00\x00\x01\x00\x00\xfc?\
 \x00\x00\x00\x82\x00\x00\x00\x00\x00\x01\x00\x00\x1a0\
-\x00\x00\x01,\x00\x00\x00\x00\x00\x01\x00\x00[\x8b\
-\x00\x00\x01\xd0\x00\x00\x00\x00\x00\x01\x00\x00\xa1\x0d\
-\x00\x00\x01n\x00\x00\x00\x00\x00\x01\x00\x00\x88\xaf\
+\x00\x00\x01,\x00\x00\x00\x00\x00\x01\x00\x00|\xce\
+\x00\x00\x01\xd0\x00\x00\x00\x00\x00\x01\x00\x00\xd1\xa4\
+\x00\x00\x01n\x00\x00\x00\x00\x00\x01\x00\x00\xa9\xf2\
 \x00\x00\x00\x1e\x00\x00\x00\x00\x00\x01\x00\x00\x00\x00\
-\x00\x00\x01\xee\x00\x00\x00\x00\x00\x01\x00\x00\xc1p\
+\x00\x00\x01\xee\x00\x00\x00\x00\x00\x01\x00\x00\xf2\x07\
 \x00\x00\x00^\x00\x00\x00\x00\x00\x01\x00\x00\x11V\
 \x00\x00\x00\xa0\x00\x00\x00\x00\x00\x01\x00\x00>U\
 "

@@ -17,7 +17,6 @@ from PySide6.QtWidgets import (
     QComboBox,
     QHBoxLayout,
     QPushButton,
-    QTableWidget,
     QTableWidgetItem,
 )
 
@@ -28,17 +27,20 @@ from prm9tool.characterize.autotune import AutotuneResult
 from prm9tool.characterize.procedures import LOOPS, StepResult, step_window
 from prm9tool.i18n import format_number, format_significant
 from prm9tool.translate import error_text, translated
-from prm9tool.views.tuning.host import TuningHost, gain_text, spin
+from prm9tool.views.tuning.host import TuningHost, figure_table, gain_text, spin
 from prm9tool.views.tuning.pages import Page
 from prm9tool.views.tuning.plot import COLOURS, Plot, Series
 from prm9tool.views.tuning.report import (
     figure_label,
     limit_text,
+    profile_name,
     value_short,
     value_text,
     verdict,
 )
 
+# per loop: the default step amplitude (%) and settling target (ms) of the autotune
+LOOP_DEFAULTS = {"position": (50.0, 40.0), "process": (20.0, 500.0)}
 GREY = "#808080"
 RED, GREEN = "#c00000", "#207020"
 
@@ -62,8 +64,7 @@ class AutotunePage(Page):
         self.override.setVisible(False)
         self.override.toggled.connect(self._override_toggled)
         self.buttons.insertWidget(2, self.override)
-        self.table = QTableWidget(0, 5)  # figure, before, proposed, limit, result
-        self.table.verticalHeader().setVisible(False)
+        self.table = figure_table(5)  # figure, before, proposed, limit, result
         layout = self.layout()
         layout.removeWidget(self.plot)  # type: ignore[union-attr]
         row = QHBoxLayout()
@@ -72,6 +73,17 @@ class AutotunePage(Page):
         layout.addLayout(row, 1)  # type: ignore[union-attr]
         self.proposal: dict[str, int] = {}
         self.last: Proposal | None = None
+        self.loop_shown = "position"  # the loop whose default targets the fields show
+
+    def set_loop(self, loop: str) -> None:
+        """The step amplitude and settling target follow the loop chosen (the process loop's
+        integrating actuator settles in about 0.5 s, not the spool's 40 ms), unless the user
+        changed them from the previous loop's defaults."""
+        before, after = LOOP_DEFAULTS[self.loop_shown], LOOP_DEFAULTS[loop]
+        self.loop_shown = loop
+        for box, old, new in zip((self.amplitude, self.settling), before, after, strict=True):
+            if box.value() == old:
+                box.setValue(new)
 
     def run(self) -> None:
         """Tune with the chosen method and check the proposal against the profile."""
@@ -83,7 +95,9 @@ class AutotunePage(Page):
         loop = self.window_.current_loop()
         amplitude, limit = self.amplitude.value(), self.limit.value()
         targets = Targets(self.overshoot.value(), self.settling.value() / 1000.0)
-        steps = ", ".join(f"±{a:g}" for a in profile.step_amplitudes_pct)
+        steps = ", ".join(
+            f"±{format_significant(a, 6)}" for a in profile.for_loop(loop).step_amplitudes_pct
+        )
         method = "model" if self.method.currentIndex() == 0 else "critical"
         if method == "model":
             what = self.tr("steps of %1 % from 0 %, a few times").replace(
@@ -92,11 +106,11 @@ class AutotunePage(Page):
         else:
             what = self.tr("P only with rising gain until the loop oscillates (steps of 5 %, "
                            "oscillation stopped at ±%1 %)").replace("%1", format_significant(limit, 6))  # fmt: skip
-        seconds = planned_s(profile, loop, targets.settling_s, method)
+        seconds = planned_s(profile.for_loop(loop), loop, targets.settling_s, method)
         what += self.tr(
             "; then the acceptance profile's steps of %1 % and its static test (a triangle of "
             "%2 s) with the present and the proposed gains; about %3 s in all"
-        ).replace("%1", steps).replace("%2", format_significant(profile.static_period_s, 6)).replace(
+        ).replace("%1", steps).replace("%2", format_significant(profile.for_loop(loop).static_period_s, 6)).replace(
             "%3", f"{seconds:.0f}"
         )  # fmt: skip
         self.window_.start(
@@ -146,7 +160,8 @@ class AutotunePage(Page):
                 .replace("%2", failed)
             )
         colour = GREEN if result.passes else RED
-        said = translated(result.verdict(lambda f: f"{figure_label(f)} {value_text(f)}"))
+        label = lambda f: f"{figure_label(f)} {value_text(f)}"  # noqa: E731
+        said = translated(result.verdict(label, profile_name(result.profile.name)))
         lines.append(f'<b><font color="{colour}">{said}</font></b>')
         if doubts:
             warning = self.tr("Do not accept these gains: the identification is not trustworthy.")
@@ -176,7 +191,7 @@ class AutotunePage(Page):
                 item = QTableWidgetItem(text)
                 item.setToolTip(tip)
                 self.table.setItem(row, col, item)
-        self.table.resizeColumnsToContents()
+        self.table.resizeRowsToContents()
 
     def _plots(self, result: Proposal) -> list[Plot]:
         actual = LOOPS[result.before.loop].actual
@@ -234,9 +249,8 @@ class AutotunePage(Page):
 
     def accept(self) -> None:
         """The proposal into the document, one undo step."""
-        if self.proposal:
-            self.window_.accept_values(self.proposal, self.tr("Autotune"))
-            self.accept_button.setEnabled(False)
+        if self.proposal and self.window_.accept_values(self.proposal, self.tr("Autotune")):
+            self.accept_button.setEnabled(False)  # refused (access level): kept to accept later
             self.override.setVisible(False)
 
     def retranslate(self) -> None:

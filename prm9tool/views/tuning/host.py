@@ -10,7 +10,7 @@ from collections.abc import Callable
 from pathlib import Path
 from typing import Any, Protocol
 
-from PySide6.QtWidgets import QDoubleSpinBox
+from PySide6.QtWidgets import QDoubleSpinBox, QHeaderView, QTableWidget
 
 from prm9tool.analysis.profile import Profile
 from prm9tool.catalogue import CATALOGUE
@@ -33,8 +33,9 @@ class TuningHost(Protocol):
     def profile(self) -> Profile:
         """The acceptance profile chosen on the test report page (ProfileError if unusable)."""
 
-    def accept_values(self, values: dict[str, int], text: str) -> None:
-        """Put ``values`` into the document as one undo step."""
+    def accept_values(self, values: dict[str, int], text: str) -> bool:
+        """Put ``values`` into the document as one undo step; False (and why in the status
+        line) when the access level locks one of them: the result stays to accept later."""
 
     def current_loop(self) -> str:
         """``position`` or ``process``."""
@@ -57,3 +58,16 @@ def gain_text(mnemonic: str, raw: int) -> str:
     """``0.4`` (``0,4`` in German and Czech) with the catalogue's unit."""
     param = CATALOGUE[mnemonic]
     return f"{format_value(param, raw)} {param.unit}".strip()
+
+
+def figure_table(columns: int) -> QTableWidget:
+    """A table of figures whose first column (the figure's name) takes the width left and
+    wraps, and whose other columns fit their contents and headers: beside a plot, a German
+    "Ergebnis" column was cut off behind a scroll bar."""
+    table = QTableWidget(0, columns)
+    table.verticalHeader().setVisible(False)
+    table.setWordWrap(True)
+    header = table.horizontalHeader()
+    header.setSectionResizeMode(QHeaderView.ResizeMode.ResizeToContents)
+    header.setSectionResizeMode(0, QHeaderView.ResizeMode.Stretch)
+    return table

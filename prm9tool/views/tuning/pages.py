@@ -22,6 +22,7 @@ from prm9tool.characterize.procedures import (
     bode_test,
 )
 from prm9tool.characterize.run import Characterization
+from prm9tool.i18n import format_number, format_significant
 from prm9tool.views.tuning.host import TuningHost, spin
 from prm9tool.views.tuning.plot import Plot, paint_plot
 from prm9tool.views.tuning.report import (
@@ -105,6 +106,15 @@ class Page(QWidget):
         self.labels[key].setText(text)
 
 
+def _g(value: float) -> str:
+    """A setting's value as the program language writes it (``0,2`` in German)."""
+    return format_significant(value, 6).replace("-", "−")
+
+
+# per loop: the sweep's default range (Hz): the spool's, the integrating process loop's
+SWEEP_DEFAULTS = {"position": (1.0, 200.0), "process": (0.2, 20.0)}
+
+
 class BodePage(Page):
     """A logarithmic sine sweep around an operating point."""
 
@@ -117,22 +127,31 @@ class BodePage(Page):
         self.f_max = self.field("f_max", spin(200.0, 10.0, 1000.0, "Hz"))
         self.duration = self.field("duration", spin(10.0, 1.0, 60.0, "s"))
 
+    def set_loop(self, loop: str, before: str) -> None:
+        """The sweep's range follows the loop (where the user left the other's default)."""
+        for box, old, new in zip(
+            (self.f_min, self.f_max), SWEEP_DEFAULTS[before], SWEEP_DEFAULTS[loop], strict=True
+        ):
+            if box.value() == old:
+                box.setValue(new)
+
     def run(self) -> None:
         """Sweep."""
         a, c, lo, hi, d = (
             w.value() for w in (self.amplitude, self.centre, self.f_min, self.f_max, self.duration)
         )
         loop = self.window_.current_loop()
-        what = self.tr("a sine sweep %1 … %2 Hz of ±%3 % around %4 %, %5 s").replace("%1", f"{lo:g}").replace(
-            "%2", f"{hi:g}").replace("%3", f"{a:g}").replace("%4", f"{c:g}").replace("%5", f"{d:g}")  # fmt: skip
+        n = _g
+        what = self.tr("a sine sweep %1 … %2 Hz of ±%3 % around %4 %, %5 s").replace("%1", n(lo)).replace(
+            "%2", n(hi)).replace("%3", n(a)).replace("%4", n(c)).replace("%5", n(d))  # fmt: skip
         self.window_.start("bode", what, lambda rig: bode_test(rig, a, c, lo, hi, d, loop))
 
     def _frequency(self, value: float, above: float) -> str:
         """``29.3 Hz``, ``above 100 Hz`` (not reached by the sweep's end) or ``not reached``."""
         if not math.isnan(value):
-            return f"{value:.1f} Hz"
+            return f"{format_number(value, 1)} Hz"
         if not math.isnan(above):
-            return self.tr("above %1 Hz").replace("%1", f"{above:g}")
+            return self.tr("above %1 Hz").replace("%1", _g(above))
         return self.tr("not reached")
 
     def show_result(self, result: object) -> None:
@@ -148,10 +167,17 @@ class BodePage(Page):
             text += " " + self.tr(
                 "%1 of %2 samples were lost on the link and left out of the estimate."
             ).replace("%1", str(result.lost_samples)).replace("%2", str(len(result.record.t)))
-        if result.limited_to_hz is not None:
+        if result.held_s:  # a busy PC wrote the setpoint too seldom from there on
+            text += " " + self.tr(
+                "The PC held the valve's setpoint for %1 ms at %2 Hz: the sweep counts up to "
+                "there (at least 4 setpoint changes per period)."
+            ).replace("%1", format_number(result.held_s * 1000, 0)).replace(
+                "%2", _g(round(result.limited_to_hz or 0.0, 1))
+            )
+        elif result.limited_to_hz is not None:
             text += " " + self.tr(
                 "The link's sample rate limited the sweep to %1 Hz (nothing interpolated)."
-            ).replace("%1", f"{result.limited_to_hz:g}")
+            ).replace("%1", _g(result.limited_to_hz))
         self.result.setText(text)
 
     def retranslate(self) -> None:

@@ -13,6 +13,9 @@ import numpy as np
 from PySide6.QtCore import QPointF, QRectF, Qt
 from PySide6.QtGui import QColor, QFont, QImage, QPainter, QPainterPath, QPen
 
+from prm9tool.i18n import current_language
+from prm9tool.messages import localized_number
+
 COLOURS = ("#1f77b4", "#d62728", "#2ca02c", "#9467bd", "#ff7f0e")
 
 
@@ -38,6 +41,11 @@ class Plot:
     logx: bool = False
     vlines: list[tuple[float, str]] = field(default_factory=list)
     hlines: list[tuple[float, str]] = field(default_factory=list)
+
+
+def _number(value: float) -> str:
+    """A tick label with the program language's decimal separator (``0,5`` in German)."""
+    return localized_number(f"{value:g}".replace("-", "−"), current_language())
 
 
 def _range(values: Sequence[np.ndarray], log: bool) -> tuple[float, float]:
@@ -96,7 +104,7 @@ def paint_plot(painter: QPainter, rect: QRectF, plot: Plot, ink: QColor | None =
         painter.setPen(QPen(grid, 0))
         painter.drawLine(QPointF(x, area.top()), QPointF(x, area.bottom()))
         painter.setPen(QPen(ink, 0))
-        label = f"{10**tick:g}" if plot.logx else f"{tick:g}"
+        label = _number(10**tick if plot.logx else tick)
         painter.drawText(
             QRectF(x - 40, area.bottom() + 2, 80, line), Qt.AlignmentFlag.AlignHCenter, label
         )
@@ -106,7 +114,7 @@ def paint_plot(painter: QPainter, rect: QRectF, plot: Plot, ink: QColor | None =
         painter.drawLine(QPointF(area.left(), y), QPointF(area.right(), y))
         painter.setPen(QPen(ink, 0))
         painter.drawText(QRectF(rect.left(), y - line / 2, area.left() - rect.left() - 4, line),
-                         Qt.AlignmentFlag.AlignRight | Qt.AlignmentFlag.AlignVCenter, f"{tick:g}")  # fmt: skip
+                         Qt.AlignmentFlag.AlignRight | Qt.AlignmentFlag.AlignVCenter, _number(tick))  # fmt: skip
     painter.drawRect(area)
     painter.drawText(QRectF(area.left(), area.bottom() + line, area.width(), line * 1.3),
                      Qt.AlignmentFlag.AlignCenter, plot.xlabel)  # fmt: skip

@@ -11,11 +11,12 @@ from __future__ import annotations
 import html
 import math
 import os
+import re
 import tempfile
 from collections.abc import Mapping
 from pathlib import Path
 
-from PySide6.QtCore import QCoreApplication, QUrl
+from PySide6.QtCore import QCoreApplication, QDateTime, QLocale, Qt, QUrl
 from PySide6.QtGui import QGuiApplication, QTextDocument
 from PySide6.QtPrintSupport import QPrinter
 from PySide6.QtWidgets import QApplication
@@ -24,7 +25,7 @@ from prm9tool.analysis.profile import Limit
 from prm9tool.catalogue import CATALOGUE
 from prm9tool.characterize.run import Characterization, Figure
 from prm9tool.i18n import current_language, format_value
-from prm9tool.messages import localized_number
+from prm9tool.messages import Message, localized_number
 from prm9tool.translate import translated
 from prm9tool.views.paged_print import PageFrame, configure_pdf, print_paged
 from prm9tool.views.record import signature_line
@@ -65,6 +66,59 @@ def figure_label(figure: Figure) -> str:
             translate("TuningReport", "step %1 %: %2").replace("%1", parts[1]).replace("%2", what)
         )
     return base.get(parts[1], figure.name)
+
+
+def loop_name(loop: str) -> str:
+    """The loop a test ran on, in the program language."""
+    if loop == "process":
+        return translate("TuningReport", "process controller (E04): process actual value")
+    return translate("TuningReport", "position controller: spool position")
+
+
+_CAN_LINK = re.compile(
+    r"CANopen node (\d+) \((.*)\), (TPDO1 at the tool's SYNC|SDO polling), one sample per ([\d.]+) ms"
+)
+
+
+def link_text(link: str) -> str:
+    """The rig's description of its link (English in the JSON and the history) in the program
+    language: the emulator's, USB, or a CANopen node's with its sampling."""
+    if link == "emulator (stepped faster than real time)":
+        return translate("TuningReport", "emulator (stepped faster than real time)")
+    found = _CAN_LINK.fullmatch(link)
+    if found is None:
+        return link
+    node, bus, how, period = found.groups()
+    how = (
+        translate("TuningReport", "TPDO1 at the tool's SYNC")
+        if how.startswith("TPDO1")
+        else translate("TuningReport", "SDO polling")
+    )
+    return translate("TuningReport", "CANopen node {0} ({1}), {2}, one sample per {3} ms").format(
+        node, bus, how, _local(period)
+    )
+
+
+def date_text(iso: str) -> str:
+    """The run's date (ISO 8601 in the JSON) as the program language writes dates, in UTC:
+    ``02.12.2026 00:13 UTC`` in German; an unreadable one as it is."""
+    when = QDateTime.fromString(iso, Qt.DateFormat.ISODate)
+    if not when.isValid():
+        return iso
+    locale, utc = QLocale(current_language()), when.toUTC()
+    day = locale.dateFormat(QLocale.FormatType.ShortFormat)
+    day = day if "yyyy" in day else day.replace("yy", "yyyy")  # the year in full
+    hour = locale.timeFormat(QLocale.FormatType.ShortFormat)
+    return f"{locale.toString(utc.date(), day)} {locale.toString(utc.time(), hour)} UTC"
+
+
+def profile_name(name: str) -> str:
+    """The built-in profile's name in the program language, a file's as it is."""
+    return translate("TuningReport", "default (built in)") if name == "default" else name
+
+
+def _text(note: object) -> str:
+    return translated(note) if isinstance(note, Message) else str(note)
 
 
 def verdict(passed: bool | None) -> str:
@@ -115,7 +169,9 @@ def step_plot(c: Characterization, index: int) -> Plot:
     rec = step.record
     keys = list(rec.channels)
     return Plot(
-        translate("TuningReport", "Step response %1 %").replace("%1", f"{step.amplitude_pct:g}"),
+        translate("TuningReport", "Step response %1 %").replace(
+            "%1", _local(f"{step.amplitude_pct:g}")
+        ),
         translate("TuningReport", "time [ms]"),
         "%",
         [
@@ -140,13 +196,13 @@ def bode_plots(c: Characterization) -> tuple[Plot, Plot]:
     hz = translate("TuningReport", "frequency [Hz]")
     magnitude = Plot(
         translate("TuningReport", "Frequency response ±%1 %: magnitude").replace(
-            "%1", f"{c.bode.amplitude_pct:g}"
+            "%1", _local(f"{c.bode.amplitude_pct:g}")
         ),
         hz,
         "dB",
         [Series(r.frequency, r.magnitude_db, translate("TuningReport", "magnitude"), COLOURS[0])],
         logx=True,
-        vlines=[(r.bandwidth_hz(), f"−3 dB: {r.bandwidth_hz():.1f} Hz")],
+        vlines=[(r.bandwidth_hz(), _local(f"−3 dB: {r.bandwidth_hz():.1f} Hz"))],
         hlines=[(-3.0, "")],
     )
     phase = Plot(
@@ -156,7 +212,7 @@ def bode_plots(c: Characterization) -> tuple[Plot, Plot]:
         [Series(r.frequency, r.phase_deg, translate("TuningReport", "phase"), COLOURS[1]),
          Series(r.frequency, r.coherence * 100.0, translate("TuningReport", "coherence ×100"), COLOURS[2], True)],
         logx=True,
-        vlines=[(r.phase_90_hz(), f"−90°: {r.phase_90_hz():.1f} Hz")],
+        vlines=[(r.phase_90_hz(), _local(f"−90°: {r.phase_90_hz():.1f} Hz"))],
     )  # fmt: skip
     return magnitude, phase
 
@@ -220,7 +276,7 @@ def report_frame(c: Characterization) -> PageFrame:
     subject = translate("TuningReport", "{0} · serial number {1}").format(
         c.info.type_key, c.info.serial
     )
-    return PageFrame(subject, translate("TuningReport", "PRM9 test report"), c.date)
+    return PageFrame(subject, translate("TuningReport", "PRM9 test report"), date_text(c.date))
 
 
 def _header(c: Characterization) -> str:
@@ -229,12 +285,16 @@ def _header(c: Characterization) -> str:
         (translate("TuningReport", "Type key"), c.info.type_key),
         (translate("TuningReport", "Serial number"), str(c.info.serial)),
         (translate("TuningReport", "Firmware"), c.info.firmware),
-        (translate("TuningReport", "Date"), c.date),
-        (translate("TuningReport", "Link"), f"{c.info.link}, {c.info.sample_rate_hz:g} Hz"),
-        (translate("TuningReport", "Acceptance profile"), c.profile.name),
+        (translate("TuningReport", "Date"), date_text(c.date)),
+        (
+            translate("TuningReport", "Link"),
+            f"{link_text(c.info.link)}, {_local(f'{c.info.sample_rate_hz:g}')} Hz",
+        ),
+        (translate("TuningReport", "Loop tested"), loop_name(c.loop)),
+        (translate("TuningReport", "Acceptance profile"), profile_name(c.profile.name)),
         (translate("TuningReport", "Result"), verdict(c.passed)),
     ]
-    rows += [(translate("TuningReport", "Limited by the link"), note) for note in c.notes]
+    rows += [(translate("TuningReport", "Limited by the link"), _text(n)) for n in c.notes]
     body = "".join(f"<tr><td><b>{e(k)}</b></td><td>{e(v)}</td></tr>" for k, v in rows)
     title = e(translate("TuningReport", "PRM9 test report"))
     return f"<h2>{title}</h2><table cellpadding='2'>{body}</table>"
@@ -256,7 +316,8 @@ def _figures(c: Characterization) -> str:
             f"<td style='color:{colour}'><b>{e(verdict(f.passed))}</b></td></tr>"
         )
     heading = "".join(f"<th align='left'>{e(h)}</th>" for h in head)
-    return f"<h3>{e(translate('TuningReport', 'Figures'))}</h3><table cellpadding='2'><tr>{heading}</tr>{''.join(rows)}</table>"
+    title = translate("TuningReport", "Figures")
+    return f"<h3>{e(title)}</h3><table cellpadding='2'><tr>{heading}</tr>{''.join(rows)}</table>"
 
 
 def parameter_rows(parameters: Mapping[str, int | str]) -> list[tuple[str, str]]:

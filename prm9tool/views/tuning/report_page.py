@@ -7,7 +7,6 @@ from PySide6.QtWidgets import (
     QLabel,
     QLineEdit,
     QPushButton,
-    QTableWidget,
     QTableWidgetItem,
 )
 
@@ -19,11 +18,12 @@ from prm9tool.characterize.run import (
     planned_s,
     write_csv_files,
 )
+from prm9tool.i18n import format_significant
 from prm9tool.online.characterization_history import run_with_history
 from prm9tool.translate import error_text
 from prm9tool.views import file_dialogs
 from prm9tool.views.history_notes import record_report_saved
-from prm9tool.views.tuning.host import TuningHost
+from prm9tool.views.tuning.host import TuningHost, figure_table
 from prm9tool.views.tuning.pages import Page
 from prm9tool.views.tuning.report import figure_label, limit_text, value_short, verdict, write_pdf
 
@@ -43,7 +43,7 @@ class ReportPage(Page):
         row.addWidget(self.browse_button)
         self.labels["profile"] = QLabel()
         self.form.addRow(self.labels["profile"], row)
-        self.table = QTableWidget(0, 4)
+        self.table = figure_table(4)
         self.layout().insertWidget(3, self.table, 1)  # type: ignore[union-attr]
         self.plot.hide()
         self.save_button = QPushButton()
@@ -77,15 +77,16 @@ class ReportPage(Page):
             self.result.setText(error_text(exc))
             self._profile_error = True
             return
-        what = self.tr("steps of %1 %, a sine sweep of ±%2 % and a triangle over the whole range, about %3 s").replace(
-            "%1", ", ".join(f"{a:g}" for a in profile.step_amplitudes_pct)).replace(
-            "%2", f"{profile.bode_amplitude_pct:g}").replace(
-            "%3", f"{profile.bode_duration_s + profile.static_period_s + 1:.0f}")  # fmt: skip
         connection = self.window_.connection  # online, the result goes into the history too
         flow = (
             self.window_.doc.variant.config is Config.E04
             and self.window_.doc.value("CTRLMODE") == 4
         )
+        part = profile.for_loop("process" if flow else "position")  # what the test runs
+        what = self.tr("steps of %1 %, a sine sweep of ±%2 % and a triangle over the whole range, about %3 s").replace(
+            "%1", ", ".join(format_significant(a, 6) for a in part.step_amplitudes_pct)).replace(
+            "%2", format_significant(part.bode_amplitude_pct, 6)).replace(
+            "%3", f"{planned_s(profile, flow):.0f}")  # fmt: skip
         self.window_.start("report", what, lambda rig: run_with_history(
             connection, lambda: characterize(rig, profile)), planned_s(profile, flow))  # fmt: skip
 
@@ -102,7 +103,7 @@ class ReportPage(Page):
                 item = QTableWidgetItem(text)
                 item.setToolTip(tip if col == 1 else "")
                 self.table.setItem(row, col, item)
-        self.table.resizeColumnsToContents()
+        self.table.resizeRowsToContents()
         self.result.setText(self.tr("Result: %1").replace("%1", verdict(result.passed)))
         self.save_button.setEnabled(True)
 

@@ -57,9 +57,8 @@ class ProposalPage(Page):
 
     def apply(self) -> None:
         """The proposal into the document, one undo step."""
-        if self.proposal:
-            self.window_.accept_values(self.proposal, self.undo_text())
-            self.apply_button.setEnabled(False)
+        if self.proposal and self.window_.accept_values(self.proposal, self.undo_text()):
+            self.apply_button.setEnabled(False)  # refused (access level): kept to apply later
 
 
 class StaticPage(ProposalPage):
@@ -74,7 +73,7 @@ class StaticPage(ProposalPage):
         """Triangle over the whole range."""
         period = self.period.value()
         what = self.tr("a triangle over the whole range −100 … 100 %, %1 s").replace(
-            "%1", f"{period:g}"
+            "%1", format_significant(period, 6)
         )
         self.window_.start("static", what, lambda rig: static_test(rig, period))
 
@@ -162,9 +161,9 @@ class FlowPage(ProposalPage):
                 "process setpoint steps %1 → %2 → %1 % with the process controller proportional "
                 "only, %3 s each"
             )
-            .replace("%1", f"{c - a:g}")
-            .replace("%2", f"{c + a:g}")
-            .replace("%3", f"{d:g}")
+            .replace("%1", format_significant(c - a, 6).replace("-", "−"))
+            .replace("%2", format_significant(c + a, 6).replace("-", "−"))
+            .replace("%3", format_significant(d, 6))
         )
         self.window_.start("flow", what, lambda rig: flow_test(rig, a, c, d))
 

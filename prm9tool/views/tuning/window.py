@@ -9,6 +9,7 @@ as one undo step. The procedures themselves: :mod:`prm9tool.characterize`.
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from pathlib import Path
 from typing import Any
 
@@ -28,14 +29,16 @@ from PySide6.QtWidgets import (
 
 from prm9tool.analysis.profile import DEFAULT, Profile, load_profile
 from prm9tool.catalogue import CATALOGUE
+from prm9tool.catalogue.commissioning import Blocker
 from prm9tool.catalogue.variant import Config
+from prm9tool.characterize.procedures import LOOPS, gain_names
 from prm9tool.model.access import AccessModel
 from prm9tool.model.document import ParameterDocument
 from prm9tool.online.connection_protocol import StatusView
 from prm9tool.online.tuning_runner import SimulationRunner, TuningRunner, ValveRunner
-from prm9tool.online.valve_control import ValveControl
+from prm9tool.online.valve_control import ValveControl, blocker_text, status_blocker
 from prm9tool.translate import translated
-from prm9tool.views import file_dialogs
+from prm9tool.views import file_dialogs, prompts
 from prm9tool.views.help_dialog import add_context_help
 from prm9tool.views.history_notes import record_online_change, record_tuning_run
 from prm9tool.views.scope.start import offer_enable
@@ -72,7 +75,9 @@ class TuningWindow(QDialog):
         self.mode = QLabel()
         self.status = QLabel()
         self.status.setWordWrap(True)
-        self._ready_text = ""  # "Ready." in the language it was shown in
+        self._render: Callable[[], str] = lambda: self.tr("Ready.")  # the status line's text,
+        self._failure = False  # in the program language when it changes; a failure shown
+        self._shown = ""  # what it rendered last
         self.stop_button = QPushButton()
         self.stop_button.setEnabled(False)
         self.stop_button.clicked.connect(self.stop)
@@ -82,6 +87,9 @@ class TuningWindow(QDialog):
         self.static = StaticPage(self)
         self.flow = FlowPage(self) if doc.variant.config is Config.E04 else None
         self.report = ReportPage(self)
+        self.loop.currentIndexChanged.connect(self._on_loop_changed)
+        if doc.variant.config is Config.E04 and doc.value("CTRLMODE") == 4:  # as delivered:
+            self.loop.setCurrentIndex(self.loop.findData("process"))  # the loop its setpoint drives
         for page in self.pages():
             self.tabs.addTab(page, "")
         top = QFormLayout()
@@ -118,7 +126,16 @@ class TuningWindow(QDialog):
         return runner
 
     def _on_status_changed(self, status: StatusView) -> None:
-        self._status = status
+        before, self._status = self._status, status
+        recovered = status_blocker(before) is not None and status_blocker(status) is None
+        if recovered and self._failure and not self.runner.busy:  # "FAULT_HOLD" after a
+            self._say(lambda: self.tr("Ready."))  # restart or a fault reset: no longer so
+
+    def _say(self, render: Callable[[], str], failure: bool = False) -> None:
+        """Show ``render()`` in the status line; a language change renders it again."""
+        self._render, self._failure = render, failure
+        self._shown = render()
+        self.status.setText(self._shown)
 
     def _on_online_changed(self, online: bool) -> None:
         if self.runner.busy:
@@ -139,7 +156,7 @@ class TuningWindow(QDialog):
         (the connection runs one thing on the valve's setpoint at a time): the confirmation and
         the status line say so.
         """
-        if self.runner.busy:
+        if self.runner.busy or not self._may_start(kind):
             return
         generator = bool(getattr(self.connection, "generator_running", False))
         if isinstance(self.runner, SimulationRunner):
@@ -153,9 +170,57 @@ class TuningWindow(QDialog):
         if generator:  # stopped here, before the test, whether or not the scope is open
             self.connection.stop_generator()  # type: ignore[union-attr]
             running = self.tr("The oscilloscope's setpoint generator was stopped for the test.") + " " + running  # fmt: skip
-        self.status.setText(running)
+        self._say(lambda: running)
         self.runner.run(kind, procedure)
         self.progress.start(self.runner, planned_s)
+
+    def _may_start(self, kind: str) -> bool:
+        """Before a long test, what would waste it: a valve that holds a fault (it would not
+        move; refused with the reason) and an access level at which its result could not be
+        accepted (asked: the result is kept, to accept after switching the level)."""
+        if not isinstance(self.runner, SimulationRunner):  # on the valve
+            reason = status_blocker(self._status)
+            if reason in (Blocker.FAULT, Blocker.BOOTING):
+                status, why = self._status, reason
+                self._say(lambda: self.tr("Not started: the valve does not follow its setpoint: %1").replace("%1", blocker_text(why, status)), failure=True)  # fmt: skip
+                return False
+        locked = self._locked(self._accepts(kind))
+        if not locked:
+            return True
+        answer = prompts.ask(
+            self,
+            prompts.Icon.Warning,
+            self.tr("Tuning"),
+            self.tr(
+                "At the present access level the result of this test cannot be accepted: %1\n\n"
+                "Switch to Expert first (View → Access level), or run the test now and switch "
+                "before you accept: its result is kept. Start the test anyway?"
+            ).replace("%1", locked),
+            prompts.Button.Yes | prompts.Button.No,
+            prompts.Button.No,
+        )
+        return answer == prompts.Button.Yes
+
+    def _accepts(self, kind: str) -> list[str]:
+        """The parameters a test of ``kind`` may propose (what its Accept would change)."""
+        if kind == "autotune":
+            return gain_names(LOOPS[self.current_loop()])
+        if kind == "static":
+            lin = [f"SETPLIN{a}{p}" for p in "ABCDEFGHI" for a in "XY"]
+            return ["SETPLINON", *lin, "OFFSETPOS", "OFFSETNEG"]
+        return ["OFFSETPOS", "OFFSETNEG"] if kind == "flow" else []
+
+    def _locked(self, names: list[str]) -> str:
+        """Why the first of ``names`` that this valve has is locked ("" when none is)."""
+        if self._access is None:
+            return ""
+        for name in names:
+            param = CATALOGUE.get(name)
+            if param is None or name not in self.doc.values:
+                continue
+            if (reason := self._access.lock_reason(param)) is not None:
+                return translated(reason)
+        return ""
 
     def _confirm(self, what: str, generator: bool = False) -> bool:
         text = self.tr(
@@ -179,7 +244,7 @@ class TuningWindow(QDialog):
     def stop(self) -> None:
         """Stop the running test."""
         self.runner.stop()
-        self.status.setText(self.tr("Stopping…"))
+        self._say(lambda: self.tr("Stopping…"))
 
     def _on_busy_changed(self, busy: bool) -> None:
         self.stop_button.setEnabled(busy)
@@ -194,7 +259,7 @@ class TuningWindow(QDialog):
         return [self.autotune, self.bode, self.static, *flow, self.report]
 
     def _on_finished(self, kind: str, result: object) -> None:
-        self.status.setText(self.tr("Done."))
+        self._say(lambda: self.tr("Done."))
         pages: dict[str, Page] = {"autotune": self.autotune, "bode": self.bode}
         pages.update(static=self.static, flow=self.flow or self.report)
         pages.get(kind, self.report).show_result(result)
@@ -202,27 +267,34 @@ class TuningWindow(QDialog):
             record_tuning_run(self.connection, kind, result)
 
     def _on_restored(self, message: str) -> None:
-        self.status.setText(message)
+        self._say(lambda: message)
 
     def _on_failed(self, _kind: str, message: str) -> None:
-        self.status.setText(self.tr("Stopped: %1").replace("%1", message))
+        self._say(lambda: self.tr("Stopped: %1").replace("%1", message), failure=True)
 
     # --- document --------------------------------------------------------------------------------
-    def accept_values(self, values: dict[str, int], text: str) -> None:
-        """Put ``values`` into the document as one undo step (online, on to the valve)."""
+    def accept_values(self, values: dict[str, int], text: str) -> bool:
+        """Put ``values`` into the document as one undo step (online, on to the valve); False
+        when the access level locks one (the status line says why and where to switch)."""
         wanted = {k: v for k, v in values.items() if k in self.doc.values}
         locked = [] if self._access is None else [
             reason for k in wanted if (reason := self._access.lock_reason(CATALOGUE[k]))
         ]  # fmt: skip
         if locked:  # at Basic level the controllers and linearizations are locked everywhere
-            shown = translated(locked[0]) + " " + self.tr("(View → Access level)")
-            self.status.setText(self.tr("Not accepted: %1").replace("%1", shown))
-            return
+            reason = locked[0]
+            self._say(lambda: self.tr("Not accepted: %1").replace("%1", translated(reason) + " " + self.tr("(View → Access level)")))  # fmt: skip
+            return False
         before = dict(self.doc.values)
         self.doc.set_values(wanted, text)
         record_online_change(self.connection, "tuning-accepted", before, self.doc.values,
                              what=text, loop=self.current_loop())  # fmt: skip
-        self.status.setText(self.tr("Accepted: %1").replace("%1", text))
+        self._say(lambda: self.tr("Accepted: %1").replace("%1", text))
+        return True
+
+    def _on_loop_changed(self) -> None:
+        before = self.autotune.loop_shown
+        self.autotune.set_loop(self.current_loop())
+        self.bode.set_loop(self.current_loop(), before)
 
     def current_loop(self) -> str:
         """``position`` or ``process``."""
@@ -265,9 +337,11 @@ class TuningWindow(QDialog):
             self.tabs.setTabText(k, name)
         for page in self.pages():
             page.retranslate()
-        if not keep_status or self.status.text() == self._ready_text:
-            self._ready_text = self.tr("Ready.")
-            self.status.setText(self._ready_text)
+        if keep_status:  # the same line in the new language (a text set from outside stays)
+            if self.status.text() == self._shown:
+                self._say(self._render, self._failure)
+        else:
+            self._say(lambda: self.tr("Ready."))
 
     def closeEvent(self, event: Any) -> None:
         if self.runner.busy:
