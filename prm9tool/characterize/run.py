@@ -2,8 +2,7 @@
 
 :func:`characterize` runs the tests of an acceptance profile on a rig and checks every figure
 against its limits; :func:`report_data` is the JSON report and :func:`write_csv_files` the raw
-data. :data:`RESULT_HOOKS` is where a history of results (issue 13) registers a callable that
-receives every finished :class:`Characterization`.
+data. Who ran it records the result in the history (:mod:`prm9tool.service.history`).
 """
 
 from __future__ import annotations
@@ -105,9 +104,6 @@ class Characterization:
         return notes + self.skipped
 
 
-RESULT_HOOKS: list[Callable[[Characterization], None]] = []
-
-
 def planned_s(profile: Profile, flow: bool = False) -> float:
     """Valve seconds the profile's tests play (what a progress bar counts towards): each
     step settles, records STEP_PRE_S and its window; the sweep settles 50 ms, the triangle
@@ -157,8 +153,6 @@ def characterize(rig: Rig, profile: Profile, progress: Progress | None = None) -
             result.flow = flow_test(rig, profile.flow_amplitude_pct, 0.0, profile.flow_duration_s)
     result.figures = figures(result)
     result.wall_s = time.perf_counter() - started
-    for hook in RESULT_HOOKS:
-        hook(result)
     return result
 
 

@@ -18,7 +18,7 @@ BATCH_ONLY = {
     "--all": "all",
     "--verify-by-restart": "verify_by_restart",
 }
-VALUE_COMMANDS = {"--get": "get", "--set": "set", "--store": "store"}
+VALUE_COMMANDS = {"--get": "get", "--set": "set", "--store": "store", "--export-dcf": "export_dcf"}
 FILE_TOOLS = {"--new": "new", "--check": "check", "--export-eds": "export_eds"}
 CAN_OPTIONS = {"--can-interface": "can_interface", "--can-channel": "can_channel",
                "--can-bitrate": "can_bitrate"}  # fmt: skip
@@ -46,7 +46,10 @@ def usage_problem(args: argparse.Namespace) -> str | None:
         return problem
     if args.characterize:
         return _characterize_problem(args)
-    if args.get or args.set or args.store:
+    if args.enable or args.hydraulics_safe:
+        flag = "--enable" if args.enable else "--hydraulics-safe"
+        return f"{flag} belongs to --characterize (it enables the valve before the test)"
+    if args.get or args.set or args.store or args.export_dcf:
         return _values_problem(args)
     if args.profile:
         return "--profile belongs to --characterize"
@@ -159,6 +162,8 @@ def _characterize_problem(args: argparse.Namespace) -> str | None:
         return f"unexpected file {args.file}: --characterize tests a valve"
     if args.json is True:
         return "--characterize writes its JSON report to a file: --json OUT.json"
+    if args.hydraulics_safe and not args.enable:
+        return "--hydraulics-safe confirms --enable: add --enable, or leave it out"
     return None
 
 
@@ -220,7 +225,9 @@ def _values_problem(args: argparse.Namespace) -> str | None:
     """``--get``/``--set [--store]``: one valve, no other command."""
     if args.store and not args.set:
         return "--store belongs to --set (it stores the values --set writes)"
-    name = "--set" if args.set else "--get"
+    if args.export_dcf and (args.get or args.set):
+        return f"--export-dcf and {'--set' if args.set else '--get'} are separate commands: use one at a time"
+    name = "--set" if args.set else "--get" if args.get else "--export-dcf"
     commands = {**BATCH_ONLY, **FILE_TOOLS, **HISTORY_COMMANDS, "--diff": "diff",
                 "--serve-emulator": "serve_emulator", "--list-devices": "list_devices"}  # fmt: skip
     others = [

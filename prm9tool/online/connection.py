@@ -25,10 +25,13 @@ from prm9tool.online.reconnect import LostValve
 from prm9tool.online.valve_listing import default_lister, default_opener, list_in_thread
 
 if TYPE_CHECKING:
+    from pathlib import Path
+
     from prm9tool.device.session import ValveSession
     from prm9tool.history.recorder import Details, Recorder
     from prm9tool.online.connection_protocol import ListedValves, ValveIdentity, ValveListing
-    from prm9tool.online.recording import HistoryHook
+    from prm9tool.service.history import HistoryHook
+    from prm9tool.service.valve import ValveService
 
 log = logging.getLogger(__name__)
 
@@ -85,10 +88,19 @@ class ValveConnection(LiveData, QObject):
 
     def set_recorder(self, recorder: Recorder) -> None:
         """Record every operation on the valve's parameter set into this history."""
-        from prm9tool.online.recording import HistoryHook
+        from prm9tool.service.history import HistoryHook
 
         report = lambda text: self._post(lambda: self.history_problem.emit(text))  # noqa: E731
         self.history = HistoryHook(recorder, report)
+
+    def service(self, session: ValveSession) -> ValveService:
+        """The valve service of the worker's session, recording into this connection's
+        history (worker thread only: the jobs call it with their session)."""
+        from prm9tool.service.valve import service_for
+
+        service = service_for(session)
+        service.history = self.history
+        return service
 
     def check_history(self, on_done: Callable[[object], None]) -> None:
         """Ask whether the history can take records; ``on_done(None or the HistoryError)`` runs
@@ -172,7 +184,8 @@ class ValveConnection(LiveData, QObject):
         """Write values to the valve; failures arrive as ``failed`` and ``write_failed``."""
         values, names = dict(values), list(values)
         failed = lambda: self.write_failed.emit(names)  # noqa: E731
-        self._submit(Job("write", lambda s: s.write_many(values), None, False, failed))
+        # checked as every door checks (read-only, range: the same words), then written
+        self._submit(Job("write", lambda s: self.service(s).write_raw(values), None, False, failed))
 
     def store(self, values: Mapping[str, int | str] | None = None) -> None:
         """Copy the valve's working values to its non-volatile memory; ``values`` (the whole
@@ -189,9 +202,7 @@ class ValveConnection(LiveData, QObject):
     def store_valve(self) -> None:
         """Valve → Store: what the valve works with becomes its stored set (the link's store),
         read back and recorded in the history; result: operation_finished("store", values)."""
-        from prm9tool.online.recording import store_and_read
-
-        self._long_job("store", lambda s: store_and_read(s, self.history, self._worker.progress))
+        self._long_job("store", lambda s: self.service(s).store(self._worker.progress))
 
     def read_many(self, mnemonics: Sequence[str], tag: str = "read") -> None:
         """Read values; the result arrives as operation_finished(tag, {mnemonic: raw})."""
@@ -208,20 +219,20 @@ class ValveConnection(LiveData, QObject):
         """
         values = dict(values)
 
-        def run(session: ValveSession) -> object:
-            if backup:
-                from prm9tool.files.backup import ensure_backup  # *.prm writing, only when needed
+        def backed_up(path: Path | None) -> None:
+            if path is not None:
+                self._post(lambda: self.backup_written.emit(str(path)))
 
-                path = ensure_backup(session, self._worker.progress, self._worker.cancel)
-                if path is not None:
-                    self._post(lambda: self.backup_written.emit(str(path)))
-                    if self.history is not None:
-                        self.history.backup(session, path)
-            if self.history is not None:
-                return self.history.upload(
-                    session, values, self._worker.progress, self._worker.cancel, purpose
-                )
-            return session.upload(values, self._worker.progress, self._worker.cancel)
+        def run(session: ValveSession) -> object:
+            # the one upload sequence (prm9tool.service.upload): rules, backup, upload, history
+            return self.service(session).upload(
+                values,
+                backup=backup,
+                progress=self._worker.progress,
+                cancel=self._worker.cancel,
+                purpose=purpose,
+                on_backup=backed_up,
+            )
 
         self._long_job("upload", run)
 
@@ -229,10 +240,7 @@ class ValveConnection(LiveData, QObject):
         """Read the valve's file parameters; result: operation_finished(tag, {mnemonic: raw})."""
 
         def run(session: ValveSession) -> object:
-            values = session.download(self._worker.progress, self._worker.cancel)
-            if self.history is not None:
-                self.history.download(session, values, tag)
-            return values
+            return self.service(session).download(self._worker.progress, self._worker.cancel, tag)
 
         self._long_job(tag, run)
 

@@ -20,10 +20,7 @@ def can_options(bus: Mapping[str, object]) -> CanOptions:
     """The device factory's ``CanOptions`` of ``bus`` (``interface``, ``channel``, ``bitrate``)."""
     from prm9tool.device import factory
 
-    rate = bus.get("bitrate")
-    return factory.CanOptions(
-        str(bus["interface"]), str(bus["channel"]), int(str(rate)) if rate else None
-    )
+    return factory.CanOptions.from_mapping(bus)
 
 
 def default_lister(

@@ -20,7 +20,7 @@ from prm9tool.characterize.run import (
     planned_s,
     write_csv_files,
 )
-from prm9tool.online.characterization_history import run_with_history
+from prm9tool.service.history import run_with_history
 from prm9tool.translate import error_text
 from prm9tool.views.tuning.host import TuningHost
 from prm9tool.views.tuning.pages import Page

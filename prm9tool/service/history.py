@@ -1,10 +1,14 @@
-"""The GUI's history hook: what the connection's worker thread records, and how.
+"""The history as one observer of a valve's operations: :class:`HistoryHook`.
 
-Runs in the worker thread beside the valve I/O, so a slow database never freezes the window.
+The service (:class:`prm9tool.service.valve.ValveService`) attaches one when a valve is opened
+(unless the caller turns history off) and every operation records through it, whichever door
+started it: the GUI's worker thread, a script's :class:`~prm9tool.api.valve.Valve`, the
+command line. In the GUI it runs in the worker thread beside the valve I/O, so a slow
+database never freezes the window.
 Recording never raises: a record the database cannot take waits in the local queue (see
 :mod:`prm9tool.history.recorder`), and a problem is handed to ``report`` (the connection shows
 it). Whether an upload may start while the database is away is decided before the upload,
-by the user (``ValveConnection.check_history``). QtCore-free.
+by the user (``ValveConnection.check_history``). No Qt.
 """
 
 from __future__ import annotations
@@ -12,7 +16,8 @@ from __future__ import annotations
 import threading
 from collections.abc import Callable, Mapping
 from pathlib import Path
-from typing import TYPE_CHECKING
+from types import SimpleNamespace
+from typing import TYPE_CHECKING, Any
 
 from prm9tool.catalogue import CATALOGUE
 from prm9tool.errors import CommunicationError, FileFormatError, HistoryError
@@ -85,6 +90,11 @@ class HistoryHook:
         outcome, details = characterization_details(result)
         self.add(session, "characterization", outcome, result.parameters, details)
 
+    def characterization_of(self, result: Characterization) -> None:
+        """Record an end-of-line test run on the valve ``result.info`` names (a run on a rig,
+        without the session at hand: the tuning window's test report, ``--characterize``)."""
+        record_characterization(self.recorder, result, self._context)
+
     def upload(
         self,
         session: ValveSession,
@@ -149,3 +159,47 @@ def store_and_read(
     if history is not None:
         history.add(session, "store", "ok", values, {"command": "Valve → Store"})
     return values
+
+
+def record_characterization(
+    recorder: Recorder, result: Characterization, context: Details | None = None
+) -> None:
+    """One ``characterization`` record of the valve the run names (never raises): outcome
+    ``passed``/``failed``, the parameter set the valve ran with (read at the start of the
+    run), every figure with its verdict (:func:`characterization_details`)."""
+    info = result.info
+    valve = SimpleNamespace(type_key=info.type_key, serial=info.serial, firmware=info.firmware,
+                            device_id=info.device_id or info.link)  # fmt: skip
+    outcome, details = characterization_details(result)
+    recorder.record_safely(
+        valve, "characterization", outcome, result.parameters, {**details, **(context or {})}
+    )
+
+
+def run_with_history(connection: Any, run: Callable[[], Characterization]) -> Characterization:
+    """``run()`` (a characterization on the connection's valve, in the GUI's worker) with its
+    result recorded into the connection's history (``connection.history``, a
+    :class:`HistoryHook`); offline (the simulated valve) or with history off nothing is
+    recorded; a run that raises records nothing."""
+    result = run()
+    hook = getattr(connection, "history", None)
+    if hook is not None and getattr(connection, "is_online", False):
+        record_characterization(hook.recorder, result)
+    return result
+
+
+def open_history(
+    url: str | None = None, command: str = "", report: Callable[[str], None] | None = None
+) -> HistoryHook:
+    """The observer a valve gets when it is opened with history on: records into the
+    database ``url`` (default the configured one), every record with ``command`` (what ran
+    it) in its details; ``report`` hears a record the database could not take (default:
+    the ``prm9tool.history`` logger's warning). The database opens on the first record."""
+    import logging
+
+    from prm9tool.history.recorder import Recorder
+
+    if report is None:
+        log = logging.getLogger("prm9tool.history")
+        report = lambda problem: log.warning("history: %s", problem)  # noqa: E731
+    return HistoryHook(Recorder(url), report, {"command": command} if command else None)
