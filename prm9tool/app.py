@@ -75,7 +75,7 @@ def create_application(argv: list[str] | None = None) -> QApplication:
 
     QCoreApplication.setOrganizationName("prm9tool")
     QCoreApplication.setApplicationName("prm9tool")
-    from prm9tool import __version__
+    from prm9tool._version import __version__
 
     QCoreApplication.setApplicationVersion(__version__)
     app = QApplication.instance() or QApplication(argv or sys.argv[:1])

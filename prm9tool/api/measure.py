@@ -108,8 +108,8 @@ class SetpointGenerator:
     """
 
     def __init__(self, session: ValveSession, settings: GeneratorSettings) -> None:
-        from prm9tool.online.setpoint_driver import SetpointDriver
         from prm9tool.service.motion import owner_of
+        from prm9tool.service.setpoint_driver import SetpointDriver
 
         settings.check()  # ValueRangeError: the waveform leaves the setpoint range
         self.settings = settings

@@ -16,7 +16,7 @@ from datetime import UTC, datetime
 from pathlib import Path
 from typing import Any
 
-from prm9tool import __version__
+from prm9tool._version import __version__
 from prm9tool.analysis.profile import FIGURES, Limit, Profile
 from prm9tool.catalogue import CATALOGUE
 from prm9tool.catalogue.typekey import TypeKey

@@ -21,8 +21,8 @@ from PySide6.QtCore import QObject, Qt, Signal
 from prm9tool.online.connection_live import LiveData
 from prm9tool.online.connection_reconnect import ReconnectLink
 from prm9tool.online.connection_worker import ConnectionWorker, Job
-from prm9tool.online.reconnect import LostValve
 from prm9tool.online.valve_listing import default_lister, default_opener, list_in_thread
+from prm9tool.service.reconnect import LostValve
 
 if TYPE_CHECKING:
     from pathlib import Path
@@ -56,7 +56,7 @@ class ValveConnection(LiveData, QObject):
     history_problem = Signal(str)  # a record went to the local queue, or was lost (why)
     # a CANopen valve without 0x2041 whose type key is not known: (device ID, serial, "E02"/"E04")
     type_key_needed = Signal(str, int, str)
-    # the lost valve is looked for (online/reconnect.py): seconds since it was lost
+    # the lost valve is looked for (service/reconnect.py): seconds since it was lost
     reconnecting = Signal(float)
     reconnected = Signal(object)  # DeviceInfo: the same valve is back (online_changed follows)
     reconnect_ended = Signal()  # no longer looking (back, another valve, or the user decided)
@@ -82,7 +82,7 @@ class ValveConnection(LiveData, QObject):
         self._init_live()
         self._posted.connect(self._on_posted, Qt.ConnectionType.QueuedConnection)
         self.history: HistoryHook | None = None  # set_recorder(); used by the worker only
-        self.auto_reconnect = True  # look for a lost valve until it is back (online/reconnect.py)
+        self.auto_reconnect = True  # look for a lost valve until it is back (service/reconnect.py)
         self.lost_during_operation = False  # the last loss cut a long operation off
         self._reconnect = ReconnectLink(self)
 
@@ -247,14 +247,30 @@ class ValveConnection(LiveData, QObject):
     def verify_by_restart(
         self, expected: Mapping[str, int | str], upload_store: str | None
     ) -> None:
-        """Restart the valve and read back that it kept ``expected`` (online/restart_verify.py;
+        """Restart the valve and read back that it kept ``expected`` (service/restart_verify.py;
         only after the hydraulics confirmation); result: operation_finished("verify_restart",
         RestartVerification), a valve that does not come back arrives as ``lost``."""
-        from prm9tool.online.restart_verify import verify_by_restart
+        from prm9tool.service.restart_verify import verify_by_restart
 
         values, progress = dict(expected), self._worker.progress
         work = lambda s: verify_by_restart(s, values, upload_store, self.history, progress)  # noqa: E731
         self._long_job("verify_restart", work)
+
+    def read_each(self, mnemonics: Sequence[str], tag: str) -> None:
+        """Read values one by one; result: operation_finished(tag, {mnemonic: raw or the
+        Prm9Error that refused it})."""
+        names = list(mnemonics)
+        self._long_job(tag, lambda s: self.service(s).read_each(names))
+
+    def restart_valve(self, tag: str) -> None:
+        """Restart (hydraulics confirmed off) and read the stored set; result:
+        operation_finished(tag, {mnemonic: raw})."""
+        self._long_job(tag, lambda s: self.service(s).restart_and_read())
+
+    def factory_reset(self, tag: str) -> None:
+        """Backup, restore the factory values, restart (hydraulics confirmed off), read back;
+        result: operation_finished(tag, (values, backup path or None))."""
+        self._long_job(tag, lambda s: self.service(s).factory_reset_and_read())
 
     def run_job(self, name: str, work: Callable[[ValveSession], object]) -> None:
         """Run ``work(session)`` as a long operation; result: operation_finished(name, …)."""

@@ -263,7 +263,7 @@ class ScopeConnection(LinkState, Protocol):
 
     @property
     def is_reconnecting(self) -> bool:
-        """True while a lost valve is looked for (online/reconnect.py)."""
+        """True while a lost valve is looked for (service/reconnect.py)."""
 
     @property
     def stream_started(self) -> SignalInstance:

@@ -1,5 +1,5 @@
 """The connection's side of finding a lost valve again: runs the :class:`Reconnector` loop
-(online/reconnect.py) for a :class:`~prm9tool.online.connection.ValveConnection`, reopens the
+(service/reconnect.py) for a :class:`~prm9tool.online.connection.ValveConnection`, reopens the
 valve it finds in the connection's worker and checks the serial number the valve tells.
 
 Everything here runs on the GUI thread except the loop (its own thread) and the reopening (the
@@ -14,7 +14,7 @@ from collections.abc import Callable, Mapping, Sequence
 from typing import TYPE_CHECKING, Any
 
 from prm9tool.online.connection_worker import Job
-from prm9tool.online.reconnect import MAX_PAUSE_S, LostValve, Reconnector
+from prm9tool.service.reconnect import MAX_PAUSE_S, LostValve, Reconnector
 
 if TYPE_CHECKING:
     from prm9tool.online.connection import ValveConnection

@@ -19,7 +19,7 @@ from typing import TYPE_CHECKING, cast
 
 from prm9tool.errors import CommunicationError, Prm9Error
 from prm9tool.online.polling import Poller, Schedule
-from prm9tool.online.setpoint_driver import SetpointDriver, StreamClock, setpoint_link
+from prm9tool.service.setpoint_driver import SetpointDriver, StreamClock, setpoint_link
 from prm9tool.translate import error_text
 
 if TYPE_CHECKING:

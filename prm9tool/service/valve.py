@@ -26,7 +26,7 @@ from prm9tool.catalogue.commissioning import (
     NmtCommand,
 )
 from prm9tool.catalogue.typekey import TypeKey
-from prm9tool.errors import CommunicationError, DeviceTimeoutError
+from prm9tool.errors import CommunicationError, DeviceTimeoutError, Prm9Error
 from prm9tool.service import motion, upload
 from prm9tool.service.values import ReadOnlyError, check_rules, read_only_text, user_value
 
@@ -114,6 +114,17 @@ class ValveService:
         """Write raw values (checked first: nothing is sent when one is refused)."""
         self.check_raw(values)
         self.session.write_many(dict(values))
+
+    def read_each(self, mnemonics: list[str]) -> dict[str, Value | Prm9Error]:
+        """Each value one by one, or why the valve could not give it (the object-dictionary
+        browser's Read all: one refusal does not hide the others)."""
+        values: dict[str, Value | Prm9Error] = {}
+        for mnemonic in mnemonics:
+            try:
+                values[mnemonic] = self.session.read(mnemonic)
+            except Prm9Error as exc:
+                values[mnemonic] = exc
+        return values
 
     def status(self) -> ValveStatus:
         """Device state, errors, LEDs, NMT state now. A valve this program stopped by NMT
@@ -210,6 +221,24 @@ class ValveService:
             details = {"backup": None if path is None else str(path)}
             self.history.add(self.session, "restore-factory", "ok", None, details)
         return path
+
+    def restart_and_read(self) -> dict[str, Value]:
+        """Restart the valve (the caller confirmed that the hydraulics are off), then read the
+        stored parameters it runs with now."""
+        self.session.restart()
+        return dict(self.session.download())
+
+    def factory_reset_and_read(self) -> tuple[dict[str, Value], Path | None]:
+        """The window's Restore factory values online: the backup (as before the first
+        upload), the reset, the restart that makes it effective (hydraulics confirmed off),
+        and the factory set read back; returns it and the new backup file (None: it had
+        one). The caller records it with the set read back."""
+        from prm9tool.files.backup import ensure_backup  # *.prm writing, only when needed
+
+        path = ensure_backup(self.session)
+        self.session.restore_factory()
+        self.session.restart()
+        return dict(self.session.download()), path
 
     # --- motion ---------------------------------------------------------------------------
     def characterize(
