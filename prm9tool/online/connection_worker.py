@@ -19,6 +19,7 @@ from typing import TYPE_CHECKING, cast
 
 from prm9tool.errors import CommunicationError, Prm9Error
 from prm9tool.online.polling import Poller, Schedule
+from prm9tool.service.motion import MotionOwner, owner_of
 from prm9tool.service.setpoint_driver import SetpointDriver, StreamClock, setpoint_link
 from prm9tool.translate import error_text
 
@@ -67,6 +68,7 @@ class ConnectionWorker:
         self.poller = Poller()  # worker-side state of the periodic reads
         self.clock = StreamClock()  # the valve's time from its stream (the generator's)
         self._driver: SetpointDriver | None = None  # the running generator
+        self._driver_motion = MotionOwner()  # whose motion it owns (its session's)
         # (serial, {mnemonic: value}): what a generator cut off with its session had changed
         self._left_on: tuple[int, dict[str, int]] | None = None
         self._thread: threading.Thread | None = None
@@ -173,17 +175,27 @@ class ConnectionWorker:
             log.exception("after opening the session")
 
     def start_driver(self, session: ValveSession, settings: GeneratorSettings) -> None:
-        """Run the setpoint generator's waveform (a running one is replaced)."""
+        """Run the setpoint generator's waveform (a running one is replaced); it owns the
+        valve's motion (prm9tool.service.motion: MotionBusyError while another runs)."""
         self.stop_driver(session, switch_off=False)
-        driver = SetpointDriver(session, settings, self._on_driver_refused, self.clock)
-        driver.start()
-        self._driver = driver
+        motion = owner_of(session)
+        motion.take("generator")
+        try:
+            driver = SetpointDriver(session, settings, self._on_driver_refused, self.clock)
+            driver.start()
+        except BaseException:
+            motion.release("generator")
+            raise
+        self._driver, self._driver_motion = driver, motion
 
     def stop_driver(self, session: ValveSession | None, switch_off: bool) -> None:
         """End the waveform; ``switch_off``: give the valve its own setpoint back."""
         driver, self._driver = self._driver, None
         if driver is not None:
-            driver.stop(switch_off)
+            try:
+                driver.stop(switch_off)
+            finally:
+                self._driver_motion.release("generator")
         elif switch_off and session is not None:
             setpoint_link(session).release()  # what a previous session may have left on
 

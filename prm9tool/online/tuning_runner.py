@@ -19,6 +19,7 @@ from shiboken6 import Shiboken
 
 from prm9tool.characterize.canrig import LinkTooSlowError, rig_for_session
 from prm9tool.characterize.rig import Rig
+from prm9tool.service.motion import claim
 from prm9tool.errors import CommunicationError, Prm9Error
 from prm9tool.translate import error_text
 
@@ -138,12 +139,15 @@ class ValveRunner(TuningRunner):
             self.connection.stop_stream()
         link = _link_name(self.connection.device)
         self._originals = {}
-        self.connection.run_job(
-            f"tuning:{kind}",
-            lambda session: self._execute(
-                _recording(rig_for_session(session, link), self._originals), procedure
-            ),
-        )
+        motion = {"report": "characterization", "autotune": "autotune"}.get(kind, "tuning")
+
+        def job(session: ValveSession) -> object:
+            # one owner of the valve's motion (MotionBusyError while a generator runs on it)
+            with claim(session, motion):
+                rig = _recording(rig_for_session(session, link), self._originals)
+                return self._execute(rig, procedure)
+
+        self.connection.run_job(f"tuning:{kind}", job)
 
     def _on_connection_lost(self, message: str) -> None:
         if self._kind:  # cut off: what it changed goes back when the valve is back

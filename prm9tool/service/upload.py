@@ -15,7 +15,7 @@ from typing import TYPE_CHECKING
 
 from prm9tool.catalogue.typekey import TypeKey
 from prm9tool.device.upload_outcome import type_problem
-from prm9tool.errors import FileFormatError, TypeKeyError
+from prm9tool.errors import FileFormatError, Prm9Error, TypeKeyError
 from prm9tool.service.values import check_rules
 
 if TYPE_CHECKING:
@@ -26,7 +26,7 @@ if TYPE_CHECKING:
 __all__ = ["BackupError", "check_type", "upload"]
 
 
-class BackupError(FileFormatError):
+class BackupError(Prm9Error):
     """The backup before the first upload could not be written: nothing was uploaded."""
 
 
