@@ -12,6 +12,7 @@ from prm9tool.cli.main import main
 from prm9tool.device import factory
 from prm9tool.errors import AccessDeniedError, Prm9Error, ValueRangeError
 from prm9tool.files.prmfile import PrmContents, write_file
+from prm9tool.history.recorder import Recorder
 from prm9tool.online.tuning_runner import ValveRunner
 from prm9tool.scope.generator import GeneratorSettings, Waveform
 from prm9tool.service.motion import MotionBusyError
@@ -66,7 +67,7 @@ def test_a_refused_write_has_the_same_words_at_every_door(
     api = _api_refusal(7301, mnemonic, value)
     assert isinstance(api, kind) and str(api).startswith(words)
     cli = _cli_refusal(capsys, 7302, f"{mnemonic}={value}")
-    assert words in cli and "nothing was written" in cli or "read-only" in cli
+    assert (words in cli and "nothing was written" in cli) or "read-only" in cli
     _online(qtbot, connection, 7303)
     assert words in _gui_refusal(qtbot, connection, mnemonic, value)
 
@@ -93,6 +94,7 @@ def test_an_upload_runs_the_same_sequence_at_every_door(qtbot, connection, tmp_p
         result = valve.upload(prm9tool.read_prm(path))
         assert result.stored
     assert main(["--batch", str(path), "--emulator", f"{E02}:7313"]) == 0  # the command line
+    connection.set_recorder(Recorder())  # as the app does
     _online(qtbot, connection, 7314)  # the GUI's worker
     with qtbot.waitSignal(connection.operation_finished, timeout=TIMEOUT) as done:
         connection.upload(values)
@@ -101,11 +103,14 @@ def test_an_upload_runs_the_same_sequence_at_every_door(qtbot, connection, tmp_p
     for serial in (7312, 7313, 7314):
         with prm9tool.connect(f"emulator:{E02}:{serial}", record_history=False) as valve:
             assert valve["LIMTA"] == 1700
-    assert _history(7312) == [("backup", "ok"), ("upload", "ok")]
-    assert _history(7314) == [("backup", "ok"), ("upload", "ok")]
-    assert _history(7313) == [("backup", "ok"), ("batch-upload", "ok")]  # the batch report's
+    assert _history(7312) == _history(7314) == [("backup", "ok"), ("upload", "ok")]
+    # the batch records its report's outcome (docs/batch.md), after the same backup
+    assert _history(7313) == [("backup", "ok"), ("batch-upload", "ok")]
     api, gui = prm9tool.history.records(7312)[-1], prm9tool.history.records(7314)[-1]
-    assert api["parameters"] == gui["parameters"]
+    recorder = Recorder()
+    store = recorder.store()
+    assert store.record(api["id"])["parameters"] == store.record(gui["id"])["parameters"]
+    recorder.close()
     same = {"written", "chosen", "mismatches"}
     assert {k: api["details"][k] for k in same} == {k: gui["details"][k] for k in same}
 
@@ -115,9 +120,11 @@ def test_a_characterization_refuses_while_a_generator_runs_in_the_api_and_the_gu
 ):
     square = GeneratorSettings(Waveform.SQUARE, 10.0, 0.0, 0.5)
     with prm9tool.connect(f"emulator:{E02}:7321", record_history=False) as valve:
-        with valve.generator("square", amplitude=10, period=0.5):
-            with pytest.raises(MotionBusyError) as api:
-                valve.characterize()
+        with (
+            valve.generator("square", amplitude=10, period=0.5),
+            pytest.raises(MotionBusyError) as api,
+        ):
+            valve.characterize()
         assert valve.service.motion.running is None  # the generator gave it back
     assert str(api.value) == (
         "the characterization cannot start while the setpoint generator runs on this valve: "

@@ -36,7 +36,15 @@ log = logging.getLogger("prm9tool.device.factory")
 DEFAULT_EMULATOR_TYPE = DEFAULT_EMULATOR_TYPE_KEY  # one default for the GUI and the CLI
 USB, EMULATOR, CAN, NOT_PRM9 = "usb", "emulator", "can", "not-prm9"
 UNUSABLE_EMULATOR = "emulator-unusable"  # a remembered emulated valve that cannot be made
-__all__ = ["CanOptions", "DeviceEntry", "list_devices", "open_session"]
+__all__ = [
+    "LINKS",
+    "CanOptions",
+    "DeviceEntry",
+    "LinkOptions",
+    "list_devices",
+    "open_link",
+    "open_session",
+]
 
 
 @dataclass(frozen=True)
@@ -298,6 +306,31 @@ def forget_emulated_valves() -> None:
 
 
 # --- opening ---------------------------------------------------------------------------------
+@dataclass(frozen=True)
+class LinkOptions:
+    """How to open a link, whatever its kind: the options :func:`open_session` takes, once.
+
+    ``paced``: an emulated valve runs in real time in its own thread (GUI); False steps its
+    simulation on the link's clock (tests, tools, batch mode). ``link_paced`` (None: as
+    ``paced``) holds the emulated USB link to one report per millisecond of wall-clock time.
+    ``can``: the python-can bus an emulated -CA valve joins. ``can_link``: the bus of a
+    ``can:NODE`` device (None: ``can``, else the virtual bus). ``type_key``: the key to use
+    when a CANopen valve does not tell its own (a file's); ``label_key``: the one the user
+    gave for it, remembered for its serial number.
+    """
+
+    paced: bool = True
+    link_paced: bool | None = None
+    can: CanOptions | None = None
+    can_link: CanOptions | None = None
+    type_key: str | None = None
+    label_key: str | None = None
+
+
+LinkOpener = Callable[[str, str, LinkOptions], ValveSession]  # (rest of the ID, ID, options)
+UNKNOWN_DEVICE = "unknown device {0!r}: expected 'usb:…', 'emulator:…' or 'can:NODE'"
+
+
 def open_session(
     entry: DeviceEntry | str,
     *,
@@ -308,77 +341,84 @@ def open_session(
     can_link: CanOptions | None = None,
     label_key: str | None = None,
 ) -> ValveSession:
-    """Open a session to ``entry`` (a DeviceEntry or its ``device_id``).
+    """Open a session to ``entry`` (a DeviceEntry or its ``device_id``), by the link kind its
+    ID starts with (:data:`LINKS`); the options as :class:`LinkOptions` describes them.
+    :func:`join_can` puts the emulated -CA valve of an open session on a bus afterwards."""
+    options = LinkOptions(paced, link_paced, can, can_link, type_key, label_key)
+    return open_link(entry.device_id if isinstance(entry, DeviceEntry) else entry, options)
 
-    Emulated valves: ``paced`` runs the valve in real time in its own thread (GUI); False
-    steps its simulation on the link's clock instead (tests, tools, batch mode).
-    ``link_paced`` (default: ``paced``) holds the emulated USB link to one report per
-    millisecond of wall-clock time. ``can``: put an emulated -CA valve on that python-can bus
-    before returning (CanBusError if the bus cannot be opened); :func:`join_can` does the same
-    for a session that is already open.
-    ``can:NODE`` opens a CANopen session to that node on the bus ``can_link`` (default:
-    ``can``, else the virtual bus); ``type_key`` is the key to use when the valve does not tell
-    its own (a file's), ``label_key`` the key the user gave for it (``--type-key``, the GUI's
-    question), remembered for its serial number.
-    """
-    device_id = entry.device_id if isinstance(entry, DeviceEntry) else entry
+
+def open_link(device_id: str, options: LinkOptions) -> ValveSession:
+    """The one function that turns a device ID and options into an open link."""
     kind, _, rest = device_id.partition(":")
-    if kind == USB:
-        return _open_usb(rest, device_id)
-    if kind == EMULATOR:
-        link = paced if link_paced is None else link_paced
-        emulated_key, _, serial = rest.rpartition(":")
-        return _open_emulator(emulated_key, int(serial), device_id, (paced, link), can)
-    if kind == CAN and rest.isdigit():
-        from prm9tool.device.canlink.session import CanopenSession
-
-        options = can_link or can or CanOptions()
-        return CanopenSession(options, int(rest), type_key=type_key, label_key=label_key)
-    raise Prm9Error(f"unknown device {device_id!r}: expected 'usb:…', 'emulator:…' or 'can:NODE'")
+    opener = LINKS.get(kind)
+    if opener is None:
+        raise Prm9Error(UNKNOWN_DEVICE.format(device_id))
+    return opener(rest, device_id, options)
 
 
-def _open_usb(path: str, device_id: str) -> ValveSession:
-    from prm9tool.device.usb.discovery import find_serial
+class _SerialFinder:
+    """Finds a USB valve again by its serial number (known once the session identified it)."""
+
+    serial: int | None = None
+
+    def __call__(self) -> bytes | None:
+        from prm9tool.device.usb.discovery import find_serial
+
+        return find_serial(self.serial) if self.serial is not None else None
+
+
+def _open_usb(path: str, device_id: str, _options: LinkOptions) -> ValveSession:
     from prm9tool.device.usb.session import UsbSession
     from prm9tool.device.usb.transport.hidapi import HidTransport
 
-    serial_box: list[int] = []
-    transport = HidTransport(path.encode(), finder=lambda: find_serial(serial_box[0]))
+    finder = _SerialFinder()
+    transport = HidTransport(path.encode(), finder=finder)
     try:
         session = UsbSession(transport, device_id)
     except BaseException:
         transport.close()
         raise
-    serial_box.append(session.info.serial)
+    finder.serial = session.info.serial
     return session
 
 
-def _open_emulator(
-    type_key: str,
-    serial: int,
-    device_id: str,
-    pacing: tuple[bool, bool],
-    can: CanOptions | None,
-) -> ValveSession:
+def _open_emulator(rest: str, device_id: str, options: LinkOptions) -> ValveSession:
     from prm9tool.device.emulated import cable_plugged
     from prm9tool.device.usb.session import UsbSession
     from prm9tool.device.usb.transport.emulator import EmulatorTransport
 
+    type_key, _, serial_text = rest.rpartition(":")
+    serial = int(serial_text)
+    link_paced = options.paced if options.link_paced is None else options.link_paced
     valve = emulated_valve(type_key, serial)
     if not cable_plugged(serial):
         raise DeviceDisconnectedError(f"the USB cable of the emulated valve {serial} is pulled")
     closers: list[Callable[[], None]] = []
     try:
-        if pacing[0]:
+        if options.paced:
             _run(valve)
             closers.append(lambda: _halt(valve))
-        if can is not None and valve.variant.canopen:
-            closers.append(_connect_can(valve, can))
-        transport = EmulatorTransport(valve, paced=pacing[1])
+        if options.can is not None and valve.variant.canopen:
+            closers.append(_connect_can(valve, options.can))
+        transport = EmulatorTransport(valve, paced=link_paced)
         return UsbSession(transport, device_id, on_close=lambda: _all(closers))
     except BaseException:
         _all(closers)
         raise
+
+
+def _open_can(rest: str, device_id: str, options: LinkOptions) -> ValveSession:
+    from prm9tool.device.canlink.session import CanopenSession
+
+    if not rest.isdigit():
+        raise Prm9Error(UNKNOWN_DEVICE.format(device_id))
+    bus = options.can_link or options.can or CanOptions()
+    return CanopenSession(bus, int(rest), type_key=options.type_key, label_key=options.label_key)
+
+
+# The link kinds, as python-can's BACKENDS: the device ID's prefix -> the function that opens it.
+LINKS: dict[str, LinkOpener] = {USB: _open_usb, EMULATOR: _open_emulator, CAN: _open_can}
 
 
 def join_can(session: ValveSession, options: CanOptions) -> bool:

@@ -19,8 +19,8 @@ from shiboken6 import Shiboken
 
 from prm9tool.characterize.canrig import LinkTooSlowError, rig_for_session
 from prm9tool.characterize.rig import Rig
-from prm9tool.service.motion import claim
 from prm9tool.errors import CommunicationError, Prm9Error
+from prm9tool.service.motion import claim
 from prm9tool.translate import error_text
 
 if TYPE_CHECKING:

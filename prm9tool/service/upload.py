@@ -70,6 +70,8 @@ def upload(
     if backup:
         from prm9tool.files.backup import ensure_backup  # *.prm writing, only when needed
 
+        if history is not None:  # the database opens (importing older backup files) before
+            history.problem()  # this backup is written: it is recorded once, at every door
         try:
             path = ensure_backup(session, progress, cancel)
         except FileFormatError as exc:

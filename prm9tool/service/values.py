@@ -18,6 +18,7 @@ from numbers import Real
 from typing import TYPE_CHECKING
 
 from prm9tool.catalogue import CAPPED_BY, CATALOGUE, Parameter
+from prm9tool.catalogue.typekey import TypeKey
 from prm9tool.errors import AccessDeniedError, ValueRangeError
 
 if TYPE_CHECKING:
@@ -75,7 +76,8 @@ def check_rules(session: ValveSession, values: Mapping[str, Value]) -> None:
         held = session.read_many(sorted(caps)) if caps else {}
     except NotAvailableError:  # a valve without the object: it checks the cap itself
         held = {}
-    problems = CATALOGUE.check_rules(session.variant, {**values, **held})  # its caps count
+    variant = TypeKey.parse(session.info.type_key).variant
+    problems = CATALOGUE.check_rules(variant, {**values, **held})  # the valve's caps count
     errors = [p.message for p in problems if p.severity == "error"]
     if errors:
         raise ValueRangeError("; ".join(errors))

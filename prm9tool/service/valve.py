@@ -74,7 +74,8 @@ class ValveService:
         self.session = session
         self.history = history
         self.motion = motion.owner_of(session)
-        self._params = {p.mnemonic: p for p in CATALOGUE.for_variant(session.variant)}
+        self.variant = TypeKey.parse(session.info.type_key).variant
+        self._params = {p.mnemonic: p for p in CATALOGUE.for_variant(self.variant)}
         self._stopped = False  # this program sent NMT stop and nothing since
 
     # --- who ------------------------------------------------------------------------------
@@ -87,9 +88,7 @@ class ValveService:
         """The catalogue entry of one of this valve's parameters; KeyError names the valve."""
         param = self._params.get(mnemonic)
         if param is None:
-            raise KeyError(
-                f"{mnemonic!r} is not a parameter on a {self.session.variant.label} valve"
-            )
+            raise KeyError(f"{mnemonic!r} is not a parameter on a {self.variant.label} valve")
         return param
 
     # --- single values --------------------------------------------------------------------

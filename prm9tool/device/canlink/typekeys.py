@@ -16,10 +16,10 @@ import logging
 from dataclasses import dataclass
 from pathlib import Path
 
+from prm9tool.catalogue.can_type_keys import remember, remembered
 from prm9tool.catalogue.typekey import TypeKey
 from prm9tool.catalogue.variant import Config
 from prm9tool.errors import TypeKeyError
-from prm9tool.catalogue.can_type_keys import remember, remembered
 
 __all__ = ["Derived", "TypeKeyNeededError", "remember", "remembered", "resolve"]
 
