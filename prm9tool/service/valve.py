@@ -35,6 +35,7 @@ if TYPE_CHECKING:
     from prm9tool.characterize.run import Characterization
     from prm9tool.device.records import Progress, UploadResult, Value, ValveStatus
     from prm9tool.device.session import ValveSession
+    from prm9tool.history.recorder import Details
     from prm9tool.service.history import HistoryHook
 
 __all__ = ["NmtStoppedError", "ValveService", "characterize_session", "parse_nmt", "service_for"]
@@ -217,7 +218,7 @@ class ValveService:
         path = self.backup() if backup else None
         self.session.restore_factory()
         if self.history is not None:
-            details = {"backup": None if path is None else str(path)}
+            details: Details = {"backup": None if path is None else str(path)}
             self.history.add(self.session, "restore-factory", "ok", None, details)
         return path
 
