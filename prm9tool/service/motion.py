@@ -19,32 +19,34 @@ from collections.abc import Iterator
 from contextlib import contextmanager
 
 from prm9tool.errors import Prm9Error
+from prm9tool.messages import QT_TRANSLATE_NOOP, Message, Template
 
 __all__ = ["MOTIONS", "MotionBusyError", "MotionOwner", "claim", "owner_of"]
 
 # what each motion is called in a refusal ("… while the setpoint generator runs")
-MOTIONS = {
-    "generator": "the setpoint generator",
-    "capture": "a capture with a stimulus",
-    "tuning": "a tuning test",
-    "characterization": "the characterization",
-    "autotune": "the autotune",
+MOTIONS: dict[str, Template] = {
+    "generator": QT_TRANSLATE_NOOP("Service", "the setpoint generator"),
+    "capture": QT_TRANSLATE_NOOP("Service", "a capture with a stimulus"),
+    "tuning": QT_TRANSLATE_NOOP("Service", "a tuning test"),
+    "characterization": QT_TRANSLATE_NOOP("Service", "the characterization"),
+    "autotune": QT_TRANSLATE_NOOP("Service", "the autotune"),
 }
+BUSY = QT_TRANSLATE_NOOP(
+    "Service", "{0} cannot start while {1} runs on this valve: stop {1} first; nothing was started"
+)
 
 
 class MotionBusyError(Prm9Error):
     """Another motion owns the valve's setpoint (``running``, ``wanted``: keys of MOTIONS)."""
 
     def __init__(self, wanted: str, running: str) -> None:
-        super().__init__(
-            f"{_name(wanted)} cannot start while {_name(running)} runs on this valve: stop "
-            f"{_name(running)} first; nothing was started"
-        )
+        super().__init__(BUSY(_name(wanted), _name(running)))
         self.wanted, self.running = wanted, running
 
 
-def _name(motion: str) -> str:
-    return MOTIONS.get(motion, motion)
+def _name(motion: str) -> Message | str:
+    template = MOTIONS.get(motion)
+    return template() if template is not None else motion
 
 
 class MotionOwner:

@@ -20,6 +20,7 @@ from typing import TYPE_CHECKING
 from prm9tool.catalogue import CAPPED_BY, CATALOGUE, Parameter
 from prm9tool.catalogue.typekey import TypeKey
 from prm9tool.errors import AccessDeniedError, ValueRangeError
+from prm9tool.messages import QT_TRANSLATE_NOOP, Message
 
 if TYPE_CHECKING:
     from prm9tool.device.records import Value
@@ -28,13 +29,16 @@ if TYPE_CHECKING:
 __all__ = ["ReadOnlyError", "check_rules", "read_only_text", "user_value"]
 
 
+EXPECTED_NUMBER = QT_TRANSLATE_NOOP("Service", "{0}: expected a number in {1}, got {2}")
+
+
 class ReadOnlyError(AccessDeniedError):
     """The parameter is read-only (the valve's object dictionary refuses every write)."""
 
 
-def read_only_text(mnemonic: str) -> str:
+def read_only_text(mnemonic: str) -> Message:
     """The refusal of a write to a read-only parameter (every door says it so)."""
-    return f"{mnemonic}: the parameter is read-only"
+    return QT_TRANSLATE_NOOP("Service", "{0}: the parameter is read-only")(mnemonic)
 
 
 def user_value(param: Parameter, value: object) -> Value:
@@ -49,10 +53,8 @@ def user_value(param: Parameter, value: object) -> Value:
     if not param.writable:
         raise ReadOnlyError(read_only_text(param.mnemonic))
     if param.is_string:
-        if not isinstance(value, str):
-            raise ValueRangeError(f"{param.mnemonic}: expected text, got {value!r}")
-        param.check_raw(value)
-        return value
+        param.check_raw(value)  # type: ignore[arg-type]  # "LIMTA: expected text, got 5"
+        return str(value)
     if isinstance(value, str):
         raw = param.parse_display(value)  # "abc": "LIMTA: 'abc' is not a number"
     elif isinstance(value, bool) or not isinstance(value, Real):
