@@ -104,7 +104,7 @@ def test_a_bad_profile_is_refused_and_nothing_is_written(tmp_path, capsys, profi
 @pytest.mark.parametrize(
     ("args", "message"),
     [
-        (["--json", "x.json"], "--json OUT.json belongs to --characterize"),
+        (["--json", "x.json"], "--json [OUT.json] belongs to --diff, --history"),
         (["--profile", "x.toml"], "--profile belongs to --characterize"),
         (["--characterize", "--emulator", E02, "--json"], "--json OUT.json"),
         (["--characterize", "--emulator", E02, "--batch", "a.prm"], "separate commands"),

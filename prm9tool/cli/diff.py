@@ -16,6 +16,7 @@ import json
 import sys
 from typing import Any
 
+from prm9tool.cli.json_output import emit_json
 from prm9tool.compare.export import as_json, value
 from prm9tool.compare.model import NOT_ON_SOURCE_VALVE, Comparison, Row, Side
 from prm9tool.errors import CommunicationError, ExitCode, FileFormatError, Prm9Error
@@ -38,7 +39,9 @@ def run(args: argparse.Namespace) -> int:
         print(f"prm9tool: {exc}", file=sys.stderr)
         return int(exc.code)
     if args.json:
-        print(json.dumps(as_json(comparison), indent=2, ensure_ascii=False))
+        failed = emit_json(json.dumps(as_json(comparison), indent=2, ensure_ascii=False), args.json)
+        if failed is not None:
+            return failed
     else:
         for warning in comparison.warnings():
             print(f"prm9tool: warning: {warning}", file=sys.stderr)

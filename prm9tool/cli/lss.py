@@ -6,8 +6,8 @@ from __future__ import annotations
 import argparse
 import json
 import sys
-from pathlib import Path
 
+from prm9tool.cli.json_output import emit_json
 from prm9tool.device.canlink.bus import CanNetwork, CanOptions, acquire, release
 from prm9tool.device.canlink.lss import LssAddress, LssFailedError, LssMasterLink
 from prm9tool.device.canlink.lss_nodes import answers_at, first_free
@@ -99,17 +99,10 @@ def _scan(shared: CanNetwork, options: CanOptions, as_json: bool | str | None) -
     """``--json``: print the devices as JSON; ``--json OUT.json``: write them there (as
     ``--characterize --json OUT.json`` writes its report)."""
     found = LssMasterLink(shared).scan()
-    if isinstance(as_json, str):
-        from prm9tool.files.atomicfile import atomic_write
-
-        text = json.dumps([_as_dict(a) for a in found], indent=1) + "\n"
-        try:
-            atomic_write(Path(as_json), text.encode("utf-8"), backup=False)
-        except OSError as exc:
-            print(f"prm9tool: --json {as_json}: cannot write it: {exc}", file=sys.stderr)
-            return ExitCode.USAGE
-    elif as_json:
-        print(json.dumps([_as_dict(a) for a in found], indent=1))
+    if as_json:
+        failed = emit_json(json.dumps([_as_dict(a) for a in found], indent=1), as_json)
+        if failed is not None:
+            return failed
     for address in found:
         if not as_json:
             print(

@@ -20,6 +20,7 @@ from prm9tool.api.params import display
 from prm9tool.api.valve import ReadBackError, Valve
 from prm9tool.catalogue import Parameter
 from prm9tool.cli.batch_devices import BatchError, can_options, open_entry, select
+from prm9tool.cli.json_output import emit_json
 from prm9tool.device.records import Value
 from prm9tool.errors import (
     CommunicationError,
@@ -88,10 +89,10 @@ def _run(args: argparse.Namespace, valve: Valve, wanted: list[tuple[str, str]]) 
         raise BatchError(ExitCode.VERIFY_FAILED, str(exc)) from exc
     params = {m: valve.parameter(m) for m in values}
     if args.json:
-        print(json.dumps(as_json(valve, params, values, bool(args.store and raw)), indent=2))
-    else:
-        for mnemonic, shown in values.items():
-            print(line(params[mnemonic], shown))
+        text = json.dumps(as_json(valve, params, values, bool(args.store and raw)), indent=2)
+        return emit_json(text, args.json) or ExitCode.OK
+    for mnemonic, shown in values.items():
+        print(line(params[mnemonic], shown))
     return ExitCode.OK
 
 
