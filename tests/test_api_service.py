@@ -169,3 +169,18 @@ def test_the_can_libraries_log_lines_reach_a_script_in_prm9tools_words(tmp_path,
     assert raw == []
     assert any("prm9tool abandoned an SDO transfer" in text for text in ours)
     assert logging.getLogger("canopen").propagate  # given back once the valve is closed
+
+
+def test_a_capture_names_its_units_and_tells_how_to_get_a_dataframe(valve):
+    data = valve.capture(["demand", "current_a"], 0.01)
+    assert isinstance(data, dict) and set(data) == {"demand", "current_a", "t"}
+    assert data.units == {"demand": "%", "current_a": "mA", "t": "s"}
+    try:
+        import pandas  # noqa: F401
+    except ImportError:
+        with pytest.raises(ImportError, match=r"needs pandas \(pip install pandas\)"):
+            data.to_dataframe()
+    else:
+        frame = data.to_dataframe()
+        assert list(frame.columns) == ["demand [%]", "current_a [mA]"]
+        assert len(frame) == len(data["t"])

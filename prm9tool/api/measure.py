@@ -10,7 +10,7 @@ import logging
 import os
 import time
 from collections.abc import Callable, Sequence
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
@@ -23,7 +23,7 @@ if TYPE_CHECKING:
     from prm9tool.device.session import ValveSession
     from prm9tool.scope.generator import GeneratorSettings
 
-__all__ = ["SetpointGenerator", "capture", "characterize"]
+__all__ = ["Captured", "SetpointGenerator", "capture", "characterize"]
 
 log = logging.getLogger("prm9tool.api")
 
@@ -31,9 +31,31 @@ STREAM_BASE_HZ = 5000  # the valve samples its measuring points every 200 µs (m
 SILENCE_S = 1.0  # no sample for this long (and for 20 sample periods): the stream is dead
 
 
+class Captured(dict[str, np.ndarray]):
+    """What :func:`capture` recorded: a mapping of each signal's key (and ``"t"``) to its
+    samples, with :attr:`units` (the display unit of each, ``"s"`` for ``"t"``) and
+    :meth:`to_dataframe` for pandas users (pandas is optional, not a dependency)."""
+
+    units: dict[str, str]
+    rate_hz: int
+
+    def to_dataframe(self) -> Any:
+        """A pandas ``DataFrame`` indexed by ``t``, one column per signal named
+        ``"key [unit]"``; ImportError saying so where pandas is not installed."""
+        try:
+            import pandas as pd
+        except ImportError as exc:
+            raise ImportError(
+                "to_dataframe() needs pandas (pip install pandas); the capture itself is a "
+                "dict of numpy arrays"
+            ) from exc
+        columns = {f"{key} [{self.units[key]}]": v for key, v in self.items() if key != "t"}
+        return pd.DataFrame(columns, index=pd.Index(self["t"], name="t [s]"))
+
+
 def capture(
     session: ValveSession, keys: Sequence[str], seconds: float, rate_hz: int | None = None
-) -> dict[str, np.ndarray]:
+) -> Captured:
     """``seconds`` of the measuring points ``keys`` in display units, plus ``"t"`` (s)."""
     keys = list(keys)
     _check_keys(session, keys)
@@ -62,10 +84,10 @@ def capture(
     finally:
         session.stream_stop()
     samples = np.concatenate(blocks)[:wanted]
-    data: dict[str, np.ndarray] = {
-        key: samples[:, i] * BY_KEY[key].scale for i, key in enumerate(keys)
-    }
+    data = Captured((key, samples[:, i] * BY_KEY[key].scale) for i, key in enumerate(keys))
     data["t"] = np.arange(wanted) / rate
+    data.units = {**{key: BY_KEY[key].unit for key in keys}, "t": "s"}
+    data.rate_hz = rate
     return data
 
 

@@ -25,10 +25,8 @@ from prm9tool.service.upload import check_type
 from prm9tool.service.valve import ValveService, service_for
 
 if TYPE_CHECKING:
-    import numpy as np
-
     from prm9tool.analysis.profile import Profile
-    from prm9tool.api.measure import SetpointGenerator
+    from prm9tool.api.measure import Captured, SetpointGenerator
     from prm9tool.characterize.run import Characterization
     from prm9tool.device.emulated import EmulatorControls
     from prm9tool.device.session import ValveSession
@@ -229,12 +227,13 @@ class Valve:
 
     def capture(
         self, signals: Sequence[str], seconds: float = 1.0, rate_hz: int | None = None
-    ) -> dict[str, np.ndarray]:
+    ) -> Captured:
         """Record up to three measuring points for ``seconds`` at the valve's sample rate.
 
         ``signals``: the catalogue's signal keys (``demand``, ``position_actual``,
         ``current_a`` …: docs/api.md lists them). Returns one array per key in its display
-        unit (%, mA, V, °C) and ``"t"``, the time of each sample in seconds from the first.
+        unit (%, mA, V, °C) and ``"t"``, the time of each sample in seconds from the first;
+        ``.units`` names each unit, ``.to_dataframe()`` gives pandas users a DataFrame.
         ``rate_hz``: default the fastest the link streams without losing samples.
         """
         from prm9tool.api.measure import capture
