@@ -103,17 +103,27 @@ class ValveService:
 
     def check_raw(self, values: Mapping[str, Value]) -> None:
         """Raw values as the window's document holds them: writable and in range (the
-        document checked the rules); the same words as :meth:`check`."""
+        document checked the rules); the same words as :meth:`check`. A mnemonic this valve
+        lacks is left to the link, which names it."""
         for mnemonic, raw in values.items():
-            param = self.parameter(mnemonic)
+            param = self._params.get(mnemonic)
+            if param is None:
+                continue
             if not param.writable:
                 raise ReadOnlyError(read_only_text(mnemonic))
             param.check_raw(raw)
 
     def write_raw(self, values: Mapping[str, Value]) -> None:
-        """Write raw values (checked first: nothing is sent when one is refused)."""
-        self.check_raw(values)
-        self.session.write_many(dict(values))
+        """Write raw values. A value out of range is refused before anything is sent; a
+        read-only parameter among them is not sent, the others are written, then
+        ReadOnlyError names it (the window's bulk write of a document's differences)."""
+        read_only = [m for m in values if m in self._params and not self._params[m].writable]
+        writable = {m: v for m, v in values.items() if m not in read_only}
+        self.check_raw(writable)
+        if writable:
+            self.session.write_many(writable)
+        if read_only:
+            raise ReadOnlyError(read_only_text(read_only[0]))
 
     def read_each(self, mnemonics: list[str]) -> dict[str, Value | Prm9Error]:
         """Each value one by one, or why the valve could not give it (the object-dictionary
