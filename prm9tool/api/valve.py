@@ -207,7 +207,7 @@ class Valve:
                 "a restart moves the spool to its rest position: switch the hydraulics off "
                 "and call restart(confirm_hydraulics_off=True)"
             )
-        self._session.restart()
+        self._service.restart()
 
     # --- operation ----------------------------------------------------------------------------
     def nmt(self, command: NmtCommand | str) -> None:

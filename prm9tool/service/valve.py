@@ -232,10 +232,15 @@ class ValveService:
             self.history.add(self.session, "restore-factory", "ok", None, details)
         return path
 
-    def restart_and_read(self) -> dict[str, Value]:
-        """Restart the valve (the caller confirmed that the hydraulics are off), then read the
-        stored parameters it runs with now."""
+    def restart(self) -> None:
+        """Restart the valve's electronics and reconnect (the caller confirmed that the
+        hydraulics are off: the spool moves to its rest position while it boots)."""
         self.session.restart()
+        self._stopped = False  # it boots into pre-operational
+
+    def restart_and_read(self) -> dict[str, Value]:
+        """:meth:`restart`, then read the stored parameters the valve runs with now."""
+        self.restart()
         return dict(self.session.download())
 
     def factory_reset_and_read(self) -> tuple[dict[str, Value], Path | None]:
