@@ -184,3 +184,16 @@ def test_a_capture_names_its_units_and_tells_how_to_get_a_dataframe(valve):
         frame = data.to_dataframe()
         assert list(frame.columns) == ["demand [%]", "current_a [mA]"]
         assert len(frame) == len(data["t"])
+
+
+def test_a_closed_valve_is_not_kept_alive_by_its_service():
+    import gc
+    import weakref
+
+    valve = prm9tool.connect(f"emulator:{KEY}:4813", record_history=False)
+    session = weakref.ref(valve.session)
+    valve["LIMTA"] = 1800  # the service is made and used
+    valve.close()
+    del valve
+    gc.collect()
+    assert session() is None

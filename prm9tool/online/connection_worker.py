@@ -15,7 +15,7 @@ import threading
 import time
 from collections.abc import Callable
 from dataclasses import dataclass
-from typing import TYPE_CHECKING, cast
+from typing import TYPE_CHECKING, Protocol, cast
 
 from prm9tool.errors import CommunicationError, Prm9Error
 from prm9tool.online.polling import Poller, Schedule
@@ -24,8 +24,9 @@ from prm9tool.service.setpoint_driver import SetpointDriver, StreamClock, setpoi
 from prm9tool.translate import error_text
 
 if TYPE_CHECKING:
+    from PySide6.QtCore import SignalInstance
+
     from prm9tool.device.session import ValveSession
-    from prm9tool.online.connection import ValveConnection
     from prm9tool.scope import GeneratorSettings  # not at run time: numpy, at start-up
 
 log = logging.getLogger("prm9tool.online.connection")
@@ -49,13 +50,44 @@ class Job:
 IDLE = Job("idle", lambda _s: None)
 
 
+class WorkerHost(Protocol):
+    """What the worker needs of its connection: the signals it reports through and the GUI
+    thread's side of a job (``ValveConnection`` fits it: online/conformance.py)."""
+
+    @property
+    def _stream_keys(self) -> list[str]: ...
+    @property
+    def failed(self) -> SignalInstance: ...
+    @property
+    def write_failed(self) -> SignalInstance: ...
+    @property
+    def progress(self) -> SignalInstance: ...
+    @property
+    def samples_received(self) -> SignalInstance: ...
+    @property
+    def status_changed(self) -> SignalInstance: ...
+    @property
+    def live_values_changed(self) -> SignalInstance: ...
+    @property
+    def signal_values_changed(self) -> SignalInstance: ...
+    @property
+    def generator_undone(self) -> SignalInstance: ...
+    @property
+    def type_key_needed(self) -> SignalInstance: ...
+
+    def _post(self, action: Callable[[], None]) -> None: ...
+    def _finish(self, job: Job, result: object) -> None: ...
+    def _report_lost(self, message: str) -> None: ...
+    def _set_samples_lost(self, count: int) -> None: ...
+
+
 class ConnectionWorker:
     """The worker side of one ValveConnection (``host``); ``opener(entry)`` opens a session,
     ``after_open(session)`` runs in a thread of its own once it is open."""
 
     def __init__(
         self,
-        host: ValveConnection,
+        host: WorkerHost,
         opener: Callable[[object], ValveSession],
         after_open: Callable[[ValveSession], object] | None,
     ) -> None:

@@ -72,7 +72,8 @@ class ValveService:
     """
 
     def __init__(self, session: ValveSession, history: HistoryHook | None = None) -> None:
-        self.session = session
+        # weakly: service_for keeps one service per session without keeping the session alive
+        self._session = weakref.ref(session)
         self.history = history
         self.motion = motion.owner_of(session)
         self.variant = TypeKey.parse(session.info.type_key).variant
@@ -80,6 +81,14 @@ class ValveService:
         self._stopped = False  # this program sent NMT stop and nothing since
 
     # --- who ------------------------------------------------------------------------------
+    @property
+    def session(self) -> ValveSession:
+        """The device layer's session of this valve (whoever uses the service holds it)."""
+        session = self._session()
+        if session is None:
+            raise CommunicationError("the valve's session is closed")
+        return session
+
     @property
     def type_key(self) -> TypeKey:
         """The valve's type key, parsed."""
