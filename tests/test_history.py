@@ -325,7 +325,10 @@ def test_a_gui_characterization_online_is_recorded_and_offline_not(tmp_path):
     info = RigInfo("PRM9-06.3Z11/30-24E04S02-CA", 4713, "1.0.0", "emulator", 5000.0)
     result = Characterization(info, SimpleNamespace(name="p"), "2026-11-24", factory_values())
 
-    connection = SimpleNamespace(history=SimpleNamespace(recorder=recorder), is_online=False)
+    from prm9tool.service.history import HistoryHook
+
+    history = HistoryHook(recorder, lambda problem: None)
+    connection = SimpleNamespace(history=history, is_online=False)
     run_with_history(connection, lambda: result)
     assert recorder.store().records(4713) == []
     connection.is_online = True

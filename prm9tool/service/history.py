@@ -27,6 +27,7 @@ if TYPE_CHECKING:
     from prm9tool.characterize.run import Characterization
     from prm9tool.device.records import UploadResult
     from prm9tool.device.session import ValveSession
+    from prm9tool.history.identity import ValveIdentity
 
 Raw = int | str
 Progress = Callable[[int, int, str], None]
@@ -58,18 +59,34 @@ class HistoryHook:
     ) -> None:
         """Record one operation on the session's valve; ``details``: a :class:`Details`
         (what the GUI's own jobs pass through ``ValveConnection.record`` is still a mapping)."""
-        details = {**(details or {}), **self._context}
+        self.record(session.info, operation, outcome, parameters, details, failed_step)
+
+    def record(
+        self,
+        valve: ValveIdentity,
+        operation: str,
+        outcome: str,
+        parameters: Mapping[str, Raw] | None,
+        details: Details | Mapping[str, object] | None = None,
+        failed_step: str | None = None,
+    ) -> str:
+        """Record one operation on ``valve`` (its type key, serial, firmware, device ID: a
+        session's ``info``, a ``--batch`` report's valve record) — the one place every
+        record is written. Returns ``recorded``, ``queued`` (the database is away: the
+        record waits in the local queue) or ``not recorded: why``; never raises."""
+        merged = {**(details or {}), **self._context}
         try:
             status = self.recorder.record(
-                session.info, operation, outcome, parameters, details, failed_step
+                valve, operation, outcome, parameters, merged, failed_step
             )
         except HistoryError as exc:
             self._report(str(exc))
-            return
+            return f"not recorded: {exc}"
         if status == "queued":
             self._report(
                 f"the history database cannot be reached; the record waits in {self.recorder.queue}"
             )
+        return status
 
     def download(self, session: ValveSession, values: Mapping[str, Raw], purpose: str) -> None:
         """Record a download (also the one that compares document and valve)."""
@@ -92,8 +109,14 @@ class HistoryHook:
 
     def characterization_of(self, result: Characterization) -> None:
         """Record an end-of-line test run on the valve ``result.info`` names (a run on a rig,
-        without the session at hand: the tuning window's test report, ``--characterize``)."""
-        record_characterization(self.recorder, result, self._context)
+        without the session at hand: the tuning window's test report, ``--characterize``):
+        outcome ``passed``/``failed``, the parameter set the valve ran with (read at the
+        start of the run), every figure with its verdict (:func:`characterization_details`)."""
+        info = result.info
+        valve = SimpleNamespace(type_key=info.type_key, serial=info.serial, firmware=info.firmware,
+                                device_id=info.device_id or info.link)  # fmt: skip
+        outcome, details = characterization_details(result)
+        self.record(valve, "characterization", outcome, result.parameters, details)
 
     def upload(
         self,
@@ -161,18 +184,14 @@ def store_and_read(
     return values
 
 
-def record_characterization(
-    recorder: Recorder, result: Characterization, context: Details | None = None
-) -> None:
-    """One ``characterization`` record of the valve the run names (never raises): outcome
-    ``passed``/``failed``, the parameter set the valve ran with (read at the start of the
-    run), every figure with its verdict (:func:`characterization_details`)."""
-    info = result.info
-    valve = SimpleNamespace(type_key=info.type_key, serial=info.serial, firmware=info.firmware,
-                            device_id=info.device_id or info.link)  # fmt: skip
-    outcome, details = characterization_details(result)
-    recorder.record_safely(
-        valve, "characterization", outcome, result.parameters, {**details, **(context or {})}
+def record_characterization(recorder: Recorder, result: Characterization) -> None:
+    """One ``characterization`` record of the valve the run names (never raises), through the
+    observer: what ``--characterize`` records after its run."""
+    import logging
+
+    log = logging.getLogger("prm9tool.history")
+    HistoryHook(recorder, lambda problem: log.error("history: %s", problem)).characterization_of(
+        result
     )
 
 
@@ -184,7 +203,7 @@ def run_with_history(connection: Any, run: Callable[[], Characterization]) -> Ch
     result = run()
     hook = getattr(connection, "history", None)
     if hook is not None and getattr(connection, "is_online", False):
-        record_characterization(hook.recorder, result)
+        hook.characterization_of(result)
     return result
 
 
