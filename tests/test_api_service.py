@@ -197,3 +197,10 @@ def test_a_closed_valve_is_not_kept_alive_by_its_service():
     del valve
     gc.collect()
     assert session() is None
+
+
+def test_verify_by_restart_in_the_api_needs_the_hydraulics_off(valve, monkeypatch):
+    sent = _spy_writes(valve, monkeypatch)
+    with pytest.raises(AccessDeniedError, match="confirm_hydraulics_off=True"):
+        valve.upload(valve.download(), backup=False, verify_by_restart=True)
+    assert sent == []

@@ -169,6 +169,8 @@ class Valve:
         *,
         force_type: bool = False,
         backup: bool = True,
+        verify_by_restart: bool = False,
+        confirm_hydraulics_off: bool = False,
         progress: Progress | None = None,
         cancel: threading.Event | None = None,
     ) -> UploadResult:
@@ -180,12 +182,24 @@ class Valve:
         valve's parameters as its backup file, unless it has one (as the GUI and ``--batch``
         do). A refused or differing value returns a result with ``stored`` False and
         ``failed_step`` set; the valve then runs on its stored set. A broken link raises the
-        CommunicationError naming the failed step.
+        CommunicationError naming the failed step. ``verify_by_restart`` (CANopen, as
+        ``--batch --verify-by-restart``): after the store, restart the valve and read every
+        value back — the spool drops to its rest position, so only with the hydraulics off,
+        which the caller confirms with ``confirm_hydraulics_off=True`` (AccessDeniedError
+        without it, nothing sent); a link without that step ignores it.
         """
+        if verify_by_restart and not confirm_hydraulics_off:
+            raise AccessDeniedError(
+                "verify_by_restart restarts the valve and its spool drops to the rest position: "
+                "switch the hydraulics off and add confirm_hydraulics_off=True"
+            )
         wanted = as_parameter_set(params, self.type_key)
         check_type(wanted.type_key, self.type_key, force_type, "force_type=True")
         # the one upload sequence (prm9tool.service.upload): rules, backup, upload, history
-        return self._service.upload(wanted.raw, backup=backup, progress=progress, cancel=cancel)
+        return self._service.upload(
+            wanted.raw, backup=backup, verify_by_restart=verify_by_restart, progress=progress,
+            cancel=cancel,
+        )  # fmt: skip
 
     def store(self) -> None:
         """Make the working parameters permanent (the valve's non-volatile memory). Recorded
