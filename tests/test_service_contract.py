@@ -137,3 +137,36 @@ def test_a_characterization_refuses_while_a_generator_runs_in_the_api_and_the_gu
         runner.run("report", lambda rig: pytest.fail("the test must not start"))
     assert failed.args == ["report", str(api.value)]
     connection.stop_generator()
+
+
+@pytest.mark.parametrize("od", ["full", "manual"])
+def test_a_refused_write_has_the_same_words_over_canopen(qtbot, tmp_path, request, capsys, od):
+    # the CAN valve, also the one with only the objects the manual lists (no type-key object)
+    from can_link_rig import E04, make_link_rig
+    from reconnect_links import can_connection
+
+    rig = make_link_rig(request.node.name, tmp_path, E04, od=od)
+    bus = {"can_interface": "virtual", "can_channel": rig.options.channel}
+    cli_bus = ["--can-interface", "virtual", "--can-channel", rig.options.channel]
+    words = "CURNORM: the parameter is read-only"
+    connection = can_connection(rig)
+    try:
+        with prm9tool.connect("can:10", type_key=E04, record_history=False, **bus) as valve:
+            with pytest.raises(AccessDeniedError) as api:
+                valve["CURNORM"] = 1000
+            with pytest.raises(ValueRangeError) as range_api:
+                valve["LIMTA"] = 99999
+        assert str(api.value) == words
+        args = ["--device", "can:10", *cli_bus, "--type-key", E04, "--set"]
+        assert main([*args, "CURNORM=1000"]) == 2
+        assert words in capsys.readouterr().err
+        assert main([*args, "LIMTA=99999"]) == 2
+        assert str(range_api.value) in capsys.readouterr().err
+        if od == "full":  # the window asks for a manual-only valve's type key first
+            with qtbot.waitSignal(connection.online_changed, timeout=TIMEOUT):
+                connection.go_online("can:10")
+            assert words in _gui_refusal(qtbot, connection, "CURNORM", 1000)
+            assert str(range_api.value) in _gui_refusal(qtbot, connection, "LIMTA", 99999)
+    finally:
+        connection.shutdown()
+        rig.close()
