@@ -3928,11 +3928,11 @@ Na straně PC se nic neztratilo: dokument dál obsahuje každou hodnotu, záloha
             <translation>generátor žádané hodnoty</translation>
         </message>
         <message>
-            <source>a capture with a stimulus</source>
+            <source>the capture with a stimulus</source>
             <translation>záznam s buzením</translation>
         </message>
         <message>
-            <source>a tuning test</source>
+            <source>the tuning test</source>
             <translation>test ladění</translation>
         </message>
         <message>

@@ -3906,12 +3906,12 @@ Auf dem PC ging nichts verloren: Das Dokument enthält weiterhin jeden Wert, Sic
             <translation>der Sollwertgenerator</translation>
         </message>
         <message>
-            <source>a capture with a stimulus</source>
-            <translation>eine Aufzeichnung mit Anregung</translation>
+            <source>the capture with a stimulus</source>
+            <translation>die Aufzeichnung mit Anregung</translation>
         </message>
         <message>
-            <source>a tuning test</source>
-            <translation>ein Einstelltest</translation>
+            <source>the tuning test</source>
+            <translation>der Einstelltest</translation>
         </message>
         <message>
             <source>the characterization</source>

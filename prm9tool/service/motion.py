@@ -26,8 +26,8 @@ __all__ = ["MOTIONS", "MotionBusyError", "MotionOwner", "claim", "owner_of"]
 # what each motion is called in a refusal ("… while the setpoint generator runs")
 MOTIONS: dict[str, Template] = {
     "generator": QT_TRANSLATE_NOOP("Service", "the setpoint generator"),
-    "capture": QT_TRANSLATE_NOOP("Service", "a capture with a stimulus"),
-    "tuning": QT_TRANSLATE_NOOP("Service", "a tuning test"),
+    "capture": QT_TRANSLATE_NOOP("Service", "the capture with a stimulus"),
+    "tuning": QT_TRANSLATE_NOOP("Service", "the tuning test"),
     "characterization": QT_TRANSLATE_NOOP("Service", "the characterization"),
     "autotune": QT_TRANSLATE_NOOP("Service", "the autotune"),
 }
