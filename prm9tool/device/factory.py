@@ -94,8 +94,8 @@ def free_emulator_serial(type_key: str, first: int, taken: Collection[int] = ())
     for serial in range(first, 2**32):
         if serial in taken:
             continue
-        with _LOCK:
-            valve = _VALVES.get(serial)
+        with EMULATED.lock:
+            valve = EMULATED.valves.get(serial)
         if valve is not None:
             if str(valve.type_key) == wanted:
                 return serial
@@ -256,10 +256,20 @@ def _heard(seen: Any) -> tuple[NmtState | None, float | None, str]:
 
 
 # --- emulated valves of this process ---------------------------------------------------------
-_VALVES: dict[int, EmulatedValve] = {}
-_RUNNING: dict[int, int] = {}  # paced sessions per serial (the valve's thread runs while > 0)
-_LOCK = threading.Lock()
-_EMULATOR_OD = ["full"]  # --od of this process (set_emulator_od)
+class EmulatedValves:
+    """The emulated valves of this process, one per serial number, in one registry: the
+    valves, how many paced sessions run each (its real-time thread runs while > 0) and the
+    object dictionary new ones get (``--od``); one lock guards them all."""
+
+    def __init__(self) -> None:
+        self.valves: dict[int, EmulatedValve] = {}
+        self.running: dict[int, int] = {}
+        self.lock = threading.Lock()
+        self.od = "full"
+
+
+EMULATED = EmulatedValves()
+_VALVES = EMULATED.valves  # by serial number (tests/gui_support.py looks valves up here)
 
 
 def set_emulator_od(od: str) -> None:
@@ -270,20 +280,20 @@ def set_emulator_od(od: str) -> None:
 
     if od not in OD_PROFILES:
         raise Prm9Error(f"--od {od}: one of {', '.join(OD_PROFILES)}")
-    _EMULATOR_OD[0] = od
+    EMULATED.od = od
 
 
 def emulated_valve(type_key: str, serial: int) -> EmulatedValve:
     """The emulated valve with ``serial`` in this process (created with its EEPROM file)."""
     from prm9tool.device.emulator import EmulatedValve
 
-    with _LOCK:
-        valve = _VALVES.get(serial)
+    with EMULATED.lock:
+        valve = EMULATED.valves.get(serial)
         if valve is None:
             valve = EmulatedValve(
-                type_key, serial, nv_path=emulator_nv_path(serial), od=_EMULATOR_OD[0]
+                type_key, serial, nv_path=emulator_nv_path(serial), od=EMULATED.od
             )
-            _VALVES[serial] = valve
+            EMULATED.valves[serial] = valve
         elif str(valve.type_key) != str(TypeKey.parse(type_key)):
             raise Prm9Error(
                 f"emulated valve {serial} is a {valve.type_key}; choose another serial "
@@ -296,13 +306,13 @@ def forget_emulated_valves() -> None:
     """Drop this process's emulated valves (their EEPROM files stay); for tests and tools."""
     from prm9tool.device.emulated import plug_cable
 
-    with _LOCK:
-        for serial in _VALVES:
+    with EMULATED.lock:
+        for serial in EMULATED.valves:
             plug_cable(serial)
-        for serial, valve in _VALVES.items():
-            if _RUNNING.pop(serial, 0):
+        for serial, valve in EMULATED.valves.items():
+            if EMULATED.running.pop(serial, 0):
                 valve.stop()
-        _VALVES.clear()
+        EMULATED.valves.clear()
 
 
 # --- opening ---------------------------------------------------------------------------------
@@ -466,8 +476,8 @@ def _connect_can(valve: EmulatedValve, options: CanOptions) -> Callable[[], None
 def stepped_here(valve: EmulatedValve) -> Iterator[EmulatedValve]:
     """Hold a paced emulated valve's real-time thread while a procedure steps the valve itself
     (the end-of-line test of an open valve runs as fast as the CPU allows), then run it again."""
-    with _LOCK:
-        running = _RUNNING.get(valve.serial, 0)
+    with EMULATED.lock:
+        running = EMULATED.running.get(valve.serial, 0)
     if running:
         _halt(valve)
     try:
@@ -478,17 +488,17 @@ def stepped_here(valve: EmulatedValve) -> Iterator[EmulatedValve]:
 
 
 def _run(valve: EmulatedValve) -> None:
-    with _LOCK:
-        count = _RUNNING.get(valve.serial, 0)
-        _RUNNING[valve.serial] = count + 1
+    with EMULATED.lock:
+        count = EMULATED.running.get(valve.serial, 0)
+        EMULATED.running[valve.serial] = count + 1
         if count == 0 and not valve.running:
             valve.start()
 
 
 def _halt(valve: EmulatedValve) -> None:
-    with _LOCK:
-        count = _RUNNING.get(valve.serial, 0) - 1
-        _RUNNING[valve.serial] = max(count, 0)
+    with EMULATED.lock:
+        count = EMULATED.running.get(valve.serial, 0) - 1
+        EMULATED.running[valve.serial] = max(count, 0)
         if count <= 0 and valve.running:
             valve.stop()
 
