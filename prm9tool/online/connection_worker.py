@@ -18,8 +18,8 @@ from dataclasses import dataclass
 from typing import TYPE_CHECKING, Protocol, cast
 
 from prm9tool.errors import CommunicationError, Prm9Error
-from prm9tool.online.polling import Poller, Schedule
 from prm9tool.service.motion import MotionOwner, owner_of
+from prm9tool.service.polling import Poller, Schedule
 from prm9tool.service.setpoint_driver import SetpointDriver, StreamClock, setpoint_link
 from prm9tool.translate import error_text
 
