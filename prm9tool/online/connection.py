@@ -21,8 +21,8 @@ from PySide6.QtCore import QObject, Qt, Signal
 from prm9tool.online.connection_live import LiveData
 from prm9tool.online.connection_reconnect import ReconnectLink
 from prm9tool.online.connection_worker import ConnectionWorker, Job
-from prm9tool.online.valve_listing import default_lister, default_opener, list_in_thread
 from prm9tool.service.reconnect import LostValve
+from prm9tool.service.valve_listing import default_lister, default_opener, list_in_thread
 
 if TYPE_CHECKING:
     from pathlib import Path
