@@ -15,7 +15,7 @@ from __future__ import annotations
 import importlib
 from typing import Any
 
-__version__ = "0.1.0"
+from prm9tool._version import __version__
 
 # the names' types: __init__.pyi (a TYPE_CHECKING import here would be an import of the API
 # by every module that reads __version__, for import-linter)

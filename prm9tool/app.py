@@ -75,7 +75,7 @@ def create_application(argv: list[str] | None = None) -> QApplication:
 
     QCoreApplication.setOrganizationName("prm9tool")
     QCoreApplication.setApplicationName("prm9tool")
-    from prm9tool import __version__
+    from prm9tool._version import __version__
 
     QCoreApplication.setApplicationVersion(__version__)
     app = QApplication.instance() or QApplication(argv or sys.argv[:1])
@@ -291,7 +291,7 @@ def _can_link(args: argparse.Namespace) -> CanOptions:
         return factory.CanOptions.from_args(args)
     from PySide6.QtCore import QSettings
 
-    from prm9tool.online.valve_listing import can_options
+    from prm9tool.service.valve_listing import can_options
     from prm9tool.views.can_bus_dialog import saved_bus
 
     return can_options(saved_bus(QSettings()))
@@ -319,7 +319,7 @@ def _lister(emulators: Sequence[str], can: dict[str, object] | None = None) -> l
     """The connection's listing, with the remembered emulated valves that cannot be made
     listed as such (the valve selection says why and offers to remove them)."""
     from prm9tool.device import factory
-    from prm9tool.online.valve_listing import default_lister
+    from prm9tool.service.valve_listing import default_lister
 
     usable, unusable = factory.usable_emulators(emulators)
     return [*default_lister(usable, can), *unusable]

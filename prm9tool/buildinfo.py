@@ -15,7 +15,7 @@ import sys
 from dataclasses import dataclass
 from pathlib import Path
 
-from prm9tool import __version__
+from prm9tool._version import __version__
 
 
 @dataclass(frozen=True, kw_only=True)

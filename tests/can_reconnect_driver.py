@@ -50,7 +50,7 @@ def main() -> None:
     from prm9tool.device import factory
     from prm9tool.device.canlink.bus import CanOptions
     from prm9tool.online.connection import ValveConnection
-    from prm9tool.online.valve_listing import default_lister
+    from prm9tool.service.valve_listing import default_lister
 
     out, group = Path(sys.argv[1]), sys.argv[2]
     options = CanOptions("udp_multicast", group)

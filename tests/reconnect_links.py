@@ -21,7 +21,7 @@ from gui_support import E02, E02_CA, emulated, go_online, main_window, session_o
 from prm9tool.catalogue import CATALOGUE
 from prm9tool.device import factory
 from prm9tool.online.connection import ValveConnection
-from prm9tool.online.valve_listing import default_lister
+from prm9tool.service.valve_listing import default_lister
 
 TIMEOUT = 10_000
 USB_SERIAL = 4301

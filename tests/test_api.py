@@ -142,7 +142,7 @@ QUICK = "[test]\nstep_amplitudes_pct = [25.0]\nbode_duration_s = 0.5\nstatic_per
 
 def test_a_characterization_is_recorded_as_the_command_line_records_it(valve, tmp_path):
     from prm9tool.history.recorder import Recorder
-    from prm9tool.online.characterization_history import recording_hook
+    from prm9tool.service.history import record_characterization
 
     (tmp_path / "quick.toml").write_text(QUICK, encoding="utf-8")
     valve.wait_booted()
@@ -155,9 +155,9 @@ def test_a_characterization_is_recorded_as_the_command_line_records_it(valve, tm
     assert record["device_id"] == f"emulator:{KEY}:4711" and record["link"] == "emulator"
     details = record["details"]
     assert details["command"] == "python API"
-    # the same details as --characterize's record (its hook), into the same chain
+    # the same details as --characterize's record, into the same chain
     recorder = Recorder()
-    recording_hook(recorder)(result)
+    record_characterization(recorder, result)
     cli = prm9tool.history.records(4711)[-1]
     assert {k: v for k, v in details.items() if k != "command"} == cli["details"]
     assert (cli["device_id"], cli["link"]) == (record["device_id"], record["link"])

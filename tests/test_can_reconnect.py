@@ -17,7 +17,7 @@ from prm9tool.catalogue.commissioning import NmtCommand
 from prm9tool.device import factory
 from prm9tool.device.records import NmtState
 from prm9tool.online.connection import ValveConnection
-from prm9tool.online.valve_listing import default_lister
+from prm9tool.service.valve_listing import default_lister
 
 TIMEOUT = 30_000  # a lost SDO answer takes its timeout, a bus scan its round
 

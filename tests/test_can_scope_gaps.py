@@ -196,7 +196,7 @@ def test_the_demand_channel_shows_the_sent_setpoint_only_while_the_tool_sends_on
 
 
 def test_a_lost_sample_does_not_blank_the_live_value():
-    from prm9tool.online.polling import latest_values
+    from prm9tool.service.polling import latest_values
 
     block = np.array([[1.0, 5.0, np.nan], [2.0, np.nan, np.nan], [np.nan, np.nan, np.nan]])
     assert latest_values(["a", "b", "c"], block) == {"a": 2.0, "b": 5.0}

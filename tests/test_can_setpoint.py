@@ -15,8 +15,8 @@ from prm9tool.catalogue.commissioning import CONTROL_WORD, ENABLE_SEQUENCE, NmtC
 from prm9tool.device.canlink.rpdo_setpoint import DEADLINE_MS, RpdoSetpoint, RpdoSetpointError
 from prm9tool.device.canlink.session import CanopenSession
 from prm9tool.device.records import DeviceState
-from prm9tool.online.setpoint_driver import SetpointDriver
 from prm9tool.scope import GeneratorSettings, Waveform
+from prm9tool.service.setpoint_driver import SetpointDriver
 
 NODE = 10
 SQUARE = GeneratorSettings(Waveform.SQUARE, 40.0, 10.0, 0.2)  # 10 % … 50 %
@@ -120,7 +120,7 @@ def test_the_session_offers_rpdo1_and_a_synchronous_rpdo_is_refused(online):
     link = session.setpoint_link()
     assert isinstance(link, RpdoSetpoint)
     from prm9tool.device.setpoint import OverrideSetpoint
-    from prm9tool.online.setpoint_driver import GENERATOR_OBJECTS
+    from prm9tool.service.setpoint_driver import GENERATOR_OBJECTS
 
     assert {*link.objects, *OverrideSetpoint(session).objects} == GENERATOR_OBJECTS
     enable(session)

@@ -104,7 +104,7 @@ def test_a_bad_profile_is_refused_and_nothing_is_written(tmp_path, capsys, profi
 @pytest.mark.parametrize(
     ("args", "message"),
     [
-        (["--json", "x.json"], "--json OUT.json belongs to --characterize"),
+        (["--json", "x.json"], "--json [OUT.json] belongs to --diff, --history"),
         (["--profile", "x.toml"], "--profile belongs to --characterize"),
         (["--characterize", "--emulator", E02, "--json"], "--json OUT.json"),
         (["--characterize", "--emulator", E02, "--batch", "a.prm"], "separate commands"),
@@ -135,6 +135,36 @@ def test_a_valve_that_does_not_follow_its_setpoint_is_not_tested(tmp_path, capsy
     assert "does not follow its setpoint: device state INIT" in err
     assert "waits for its master" in err
     assert not js.exists()
+
+
+def test_enable_commissions_a_ca_valve_that_waits_for_its_master_and_then_tests_it(
+    tmp_path, capsys
+):
+    # issue 28: the command line had no way to do what the window offers ("Enable it now?")
+    js = tmp_path / "out.json"
+    (tmp_path / "limits.toml").write_text(FAST, encoding="utf-8")
+    args = ["--characterize", "--emulator", "PRM9-06.3Z11/30-24E02S02-CA:35", "--json", str(js),
+            "--profile", str(tmp_path / "limits.toml")]  # fmt: skip
+    assert main([*args, "--enable"]) == ExitCode.USAGE  # the hydraulics question, as a flag
+    err = capsys.readouterr().err
+    assert "make sure the hydraulics are safe for it and add --hydraulics-safe" in err
+    assert not js.exists()
+    assert main([*args, "--enable", "--hydraulics-safe"]) == ExitCode.OK
+    assert "enabling the valve: NMT start, control word 08h" in capsys.readouterr().err
+    assert json.loads(js.read_text(encoding="utf-8"))["passed"] is True
+
+
+@pytest.mark.parametrize(
+    ("args", "message"),
+    [
+        (["--enable", "--emulator", E02], "--enable belongs to --characterize"),
+        (["--characterize", "--emulator", E02, "--json", "x.json", "--hydraulics-safe"],
+         "--hydraulics-safe confirms --enable"),
+    ],
+)  # fmt: skip
+def test_enable_usage_errors(args, message, capsys):
+    assert main(args) == ExitCode.USAGE
+    assert message in capsys.readouterr().err
 
 
 def test_the_report_pdf_speaks_display_units_and_names_the_valve_on_every_page(tmp_path):

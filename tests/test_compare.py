@@ -142,7 +142,7 @@ def test_diff_with_no_such_valve_exits_4(tmp_path, capsys):
         (["--diff", "a.prm", "b.prm", "--emulator", E04], "leave out --device/--emulator"),
         (["--diff", "a.prm", "b.prm", "c.prm"], "compares two files"),
         (["--diff", "a.prm", "b.prm", "--batch", "x.prm"], "separate commands"),
-        (["--json"], "--json belongs to --diff, --history, --get/--set and --list-devices"),
+        (["--json"], "--json [OUT.json] belongs to --diff, --history, --get/--set, --list-devices"),
     ],
 )
 def test_diff_usage_errors_exit_2(args, problem, capsys):

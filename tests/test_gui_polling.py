@@ -11,7 +11,7 @@ from prm9tool.device.emulator import EmulatedValve
 from prm9tool.device.usb.protocol import Op
 from prm9tool.device.usb.session import UsbSession
 from prm9tool.device.usb.transport.emulator import EmulatorTransport
-from prm9tool.online.polling import Poller
+from prm9tool.service.polling import Poller
 
 E04_CA = "PRM9-10.3Z11/60-24E04S02-CA"
 WATCHED = ["supply_voltage", "temperature", "current_a", "setpoint_threshold", "setpoint_raw",

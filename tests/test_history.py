@@ -318,26 +318,23 @@ def test_a_gui_characterization_online_is_recorded_and_offline_not(tmp_path):
     from types import SimpleNamespace
 
     from prm9tool.characterize.rig import RigInfo
-    from prm9tool.characterize.run import RESULT_HOOKS, Characterization
-    from prm9tool.online.characterization_history import run_with_history
+    from prm9tool.characterize.run import Characterization
+    from prm9tool.service.history import run_with_history
 
     recorder = Recorder(sqlite_url(tmp_path), tmp_path / "q.jsonl")
     info = RigInfo("PRM9-06.3Z11/30-24E04S02-CA", 4713, "1.0.0", "emulator", 5000.0)
     result = Characterization(info, SimpleNamespace(name="p"), "2026-11-24", factory_values())
 
-    def characterize():  # what characterize() does at its end
-        for hook in RESULT_HOOKS:
-            hook(result)
-        return result
+    from prm9tool.service.history import HistoryHook
 
-    connection = SimpleNamespace(history=SimpleNamespace(recorder=recorder), is_online=False)
-    run_with_history(connection, characterize)
+    history = HistoryHook(recorder, lambda problem: None)
+    connection = SimpleNamespace(history=history, is_online=False)
+    run_with_history(connection, lambda: result)
     assert recorder.store().records(4713) == []
     connection.is_online = True
-    assert run_with_history(connection, characterize) is result
+    assert run_with_history(connection, lambda: result) is result
     (record,) = recorder.store().records(4713)
     assert (record["operation"], record["outcome"]) == ("characterization", "passed")
-    assert RESULT_HOOKS == []  # the hook is gone again
 
 
 def test_the_command_line_says_when_a_serial_holds_records_of_another_valve_type(tmp_path, capsys):

@@ -6,6 +6,8 @@ valve left with a half-applied stored configuration."""
 
 from __future__ import annotations
 
+import json
+
 import can
 import pytest
 from lss_rig import make_lss_rig
@@ -152,6 +154,16 @@ def test_lss_scan_lists_identities_and_json(rig, capsys):
     )
 
 
+def test_lss_scan_json_out_file_is_written_like_the_other_json_files(rig, capsys, tmp_path):
+    # issue 28: "--lss-scan --json scan.json" was refused; --json OUT.json means a file everywhere
+    rig.add(4712)
+    out = tmp_path / "scan.json"
+    assert _cli(rig, "--lss-scan", "--json", str(out)) == 0
+    assert capsys.readouterr().out == ""
+    (found,) = json.loads(out.read_text(encoding="utf-8"))
+    assert found["serial"] == 4712
+
+
 def test_an_id_already_taken_is_refused_before_anything_is_sent(rig, capsys):
     rig.add(4700, switches=(6, 2))  # node 10
     valve = rig.add(4712)
@@ -234,7 +246,7 @@ def test_a_valve_that_leaves_the_bus_during_configuration(rig):
         (["--lss-assign", "4711=200"], "--lss-assign 4711=200: CANopen node IDs are 1…127"),
         (["--lss-assign", "4711=21", "4712=21"], "node ID 21 is given to two valves"),
         (["--lss-scan", "--batch", "x.prm"], "--lss-scan and --batch are separate commands"),
-        (["--lss-assign", "4711=21", "--json"], "--json (printing JSON) belongs to --lss-scan"),
+        (["--lss-assign", "4711=21", "--json"], "--json [OUT.json] belongs to --lss-scan"),
     ],
 )
 def test_lss_usage_errors(args, message, capsys):

@@ -20,6 +20,7 @@ ROOT = Path(__file__).resolve().parents[1]
 EXCEPTIONS = ("prm9tool.files.prmdocument:",)
 QT_FREE = (
     "api",
+    "service",
     "analysis",
     "characterize",
     "trace",

@@ -12,8 +12,8 @@ from pathlib import Path
 
 import pytest
 
+from prm9tool import atomicfile
 from prm9tool.catalogue.typekey import TypeKey
-from prm9tool.files import atomicfile
 from prm9tool.files.prmfile import PrmContents, read_file, write_file
 
 E02 = TypeKey.parse("PRM9-06.3Z11/30-24E02S02")
@@ -22,7 +22,7 @@ ROOT = Path(__file__).resolve().parents[1]
 _HANGING_SAVE = """
 import sys, time
 from pathlib import Path
-from prm9tool.files import atomicfile
+from prm9tool import atomicfile
 def half(stream, data):
     stream.write(data[: len(data) // 2]); stream.flush()
     print("writing", flush=True)

@@ -11,11 +11,11 @@ import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
+from prm9tool import atomicfile
 from prm9tool.catalogue import CATALOGUE
 from prm9tool.catalogue.typekey import TypeKey, all_type_keys
 from prm9tool.catalogue.variant import ALL_VARIANTS, Variant
 from prm9tool.errors import FileFormatError, FileProblem
-from prm9tool.files import atomicfile
 from prm9tool.files.prmdocument import load_document, save_document
 from prm9tool.files.prmfile import (
     MAX_FILE_SIZE,

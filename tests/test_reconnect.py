@@ -1,4 +1,4 @@
-"""The reconnect loop on its own (online/reconnect.py), with fake listings and a fake clock."""
+"""The reconnect loop on its own (service/reconnect.py), with fake listings and a fake clock."""
 
 from __future__ import annotations
 
@@ -6,7 +6,7 @@ from dataclasses import dataclass
 
 import pytest
 
-from prm9tool.online.reconnect import (
+from prm9tool.service.reconnect import (
     MAX_PAUSE_S,
     MIN_PAUSE_S,
     LostValve,

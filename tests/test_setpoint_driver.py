@@ -15,8 +15,8 @@ from prm9tool.device import factory
 from prm9tool.device.emulator.constants import CYCLE_S
 from prm9tool.device.setpoint import OverrideSetpoint
 from prm9tool.errors import AbortCode, SdoAbortError
-from prm9tool.online.setpoint_driver import SetpointDriver, StreamClock
 from prm9tool.scope import GeneratorSettings, Waveform
+from prm9tool.service.setpoint_driver import SetpointDriver, StreamClock
 
 E02 = "PRM9-06.3Z11/30-24E02S02"
 

@@ -105,7 +105,6 @@ def test_bad_mnemonics_and_assignments(tmp_path, args, message):
         (["--store", "--emulator", VALVE], "--store belongs to --set"),
         (["--get", "LIMTA"], "--get works on one valve: give one --device ID or --emulator"),
         (["--get", "LIMTA", "--emulator", VALVE, "--batch", "x.prm"], "--get and --batch are"),
-        (["--set", "LIMTA=1", "--emulator", VALVE, "--json", "out.json"], "--json OUT.json"),
         (["--get", "LIMTA", "--emulator", VALVE, "--can-interface", "virtual"], "over USB"),
         (["--get", "LIMTA", "--emulator", VALVE, "--emulator", E02], "one valve"),
     ],

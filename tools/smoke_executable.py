@@ -71,6 +71,20 @@ def _smoke(exe: Path) -> int:
                 ],
                 lambda out: (work / "c.pdf").read_bytes().startswith(b"%PDF"),
             ),
+            (  # a -CA valve waits for its CANopen master: the command line enables it
+                "--characterize --enable (-CA)",
+                [
+                    exe,
+                    "--characterize",
+                    "--emulator",
+                    f"{E02}:78",
+                    "--enable",
+                    "--hydraulics-safe",
+                    "--json",
+                    "ca.json",
+                ],
+                lambda out: json.loads((work / "ca.json").read_text())["passed"] is True,
+            ),
             ("--history", [exe, "--history", "101"], lambda out: "batch-upload" in out),
             (
                 "--get --json",

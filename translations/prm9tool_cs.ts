@@ -4171,6 +4171,41 @@ Na straně PC se nic neztratilo: dokument dál obsahuje každou hodnotu, záloha
         </message>
     </context>
     <context>
+        <name>Service</name>
+        <message>
+            <source>the setpoint generator</source>
+            <translation>generátor žádané hodnoty</translation>
+        </message>
+        <message>
+            <source>the capture with a stimulus</source>
+            <translation>záznam s buzením</translation>
+        </message>
+        <message>
+            <source>the tuning test</source>
+            <translation>test ladění</translation>
+        </message>
+        <message>
+            <source>the characterization</source>
+            <translation>charakterizace</translation>
+        </message>
+        <message>
+            <source>the autotune</source>
+            <translation>Autotune</translation>
+        </message>
+        <message>
+            <source>{0} cannot start while {1} runs on this valve: stop {1} first; nothing was started</source>
+            <translation>{0} nemůže začít, dokud na tomto ventilu běží {1}: nejprve zastavte {1}; nic nebylo spuštěno</translation>
+        </message>
+        <message>
+            <source>{0}: expected a number in {1}, got {2}</source>
+            <translation>{0}: očekáváno číslo v {1}, ne {2}</translation>
+        </message>
+        <message>
+            <source>{0}: the parameter is read-only</source>
+            <translation>{0}: parametr je pouze pro čtení</translation>
+        </message>
+    </context>
+    <context>
         <name>SetpointGenerator</name>
         <message>
             <source>The setpoint generator needs a connected valve.</source>

@@ -4149,6 +4149,41 @@ Auf dem PC ging nichts verloren: Das Dokument enthält weiterhin jeden Wert, Sic
         </message>
     </context>
     <context>
+        <name>Service</name>
+        <message>
+            <source>the setpoint generator</source>
+            <translation>der Sollwertgenerator</translation>
+        </message>
+        <message>
+            <source>the capture with a stimulus</source>
+            <translation>die Aufzeichnung mit Anregung</translation>
+        </message>
+        <message>
+            <source>the tuning test</source>
+            <translation>der Einstelltest</translation>
+        </message>
+        <message>
+            <source>the characterization</source>
+            <translation>die Charakterisierung</translation>
+        </message>
+        <message>
+            <source>the autotune</source>
+            <translation>das Autotune</translation>
+        </message>
+        <message>
+            <source>{0} cannot start while {1} runs on this valve: stop {1} first; nothing was started</source>
+            <translation>{0} kann nicht starten, solange {1} an diesem Ventil läuft: zuerst {1} beenden; nichts wurde gestartet</translation>
+        </message>
+        <message>
+            <source>{0}: expected a number in {1}, got {2}</source>
+            <translation>{0}: erwartet eine Zahl in {1}, nicht {2}</translation>
+        </message>
+        <message>
+            <source>{0}: the parameter is read-only</source>
+            <translation>{0}: der Parameter ist schreibgeschützt</translation>
+        </message>
+    </context>
+    <context>
         <name>SetpointGenerator</name>
         <message>
             <source>The setpoint generator needs a connected valve.</source>

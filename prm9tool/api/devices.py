@@ -7,7 +7,9 @@ Both go through the one device factory of the GUI and the batch mode
 
 from __future__ import annotations
 
-from collections.abc import Sequence
+import logging
+import threading
+from collections.abc import Callable, Sequence
 from typing import TYPE_CHECKING
 
 from prm9tool.device.canlink.bus import CanOptions
@@ -36,10 +38,9 @@ def can_options(
 ) -> CanOptions | None:
     """The CAN bus these python-can settings name (None when none is given); the defaults
     are the command line's (virtual, channel prm9tool, the valve's bit rate)."""
-    given = {"interface": interface, "channel": channel, "bitrate": bitrate}
-    if all(value is None for value in given.values()):
+    if interface is None and channel is None and bitrate is None:
         return None
-    return CanOptions(**{name: value for name, value in given.items() if value is not None})  # type: ignore[arg-type]
+    return CanOptions.of(interface, channel, bitrate)
 
 
 def list_devices(
@@ -122,7 +123,41 @@ def connect(
         )
     # an emulated valve runs in real time in a thread of its own while it is open, as in the GUI
     session = open_session(device, paced=True, can_link=options, label_key=type_key)
+    if kind == CAN:
+        session.add_close_hook(library_logs())
     return Valve(session, history_db=history_db, record_history=record_history)
+
+
+_routing: list[Callable[[], None]] = []  # the undo of the routing while a CAN valve is open
+_routed = 0
+_routing_lock = threading.Lock()
+
+
+def library_logs() -> Callable[[], None]:
+    """While a script has a CANopen valve open, the ``canopen`` and ``can`` libraries'
+    warnings go to the ``prm9tool.api`` logger as prm9tool's sentences (what the command line
+    and the window print), not raw on standard error; returns the release (one per valve)."""
+    global _routed
+    from prm9tool.device.canlink.liblog import route_library_logs
+
+    api_log = logging.getLogger("prm9tool.api")
+    with _routing_lock:
+        if _routed == 0:
+            _routing.append(route_library_logs(lambda message: api_log.warning("%s", message)))
+        _routed += 1
+    released = threading.Event()
+
+    def release() -> None:
+        global _routed
+        with _routing_lock:
+            if released.is_set():
+                return
+            released.set()
+            _routed -= 1
+            if _routed == 0 and _routing:
+                _routing.pop()()
+
+    return release
 
 
 def _usb_by_serial(serial: int) -> str:

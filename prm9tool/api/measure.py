@@ -6,10 +6,11 @@ test). No Qt.
 
 from __future__ import annotations
 
+import logging
 import os
 import time
 from collections.abc import Callable, Sequence
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
@@ -22,7 +23,9 @@ if TYPE_CHECKING:
     from prm9tool.device.session import ValveSession
     from prm9tool.scope.generator import GeneratorSettings
 
-__all__ = ["SetpointGenerator", "capture", "characterize"]
+__all__ = ["Captured", "SetpointGenerator", "capture", "characterize"]
+
+log = logging.getLogger("prm9tool.api")
 
 STREAM_BASE_HZ = 5000  # the valve samples its measuring points every 200 µs (manual §8.7.2)
 SILENCE_S = 1.0  # no sample for this long (and for 20 sample periods): the stream is dead
@@ -30,9 +33,31 @@ TRIAL_S = 0.25  # a CANopen pace is tried this long before a capture at the defa
 TRIAL_MIN_HZ = 50  # decision: the halving stops above this (a PC that slow loses at any pace)
 
 
+class Captured(dict[str, np.ndarray]):
+    """What :func:`capture` recorded: a mapping of each signal's key (and ``"t"``) to its
+    samples, with :attr:`units` (the display unit of each, ``"s"`` for ``"t"``) and
+    :meth:`to_dataframe` for pandas users (pandas is optional, not a dependency)."""
+
+    units: dict[str, str]
+    rate_hz: int
+
+    def to_dataframe(self) -> Any:
+        """A pandas ``DataFrame`` indexed by ``t``, one column per signal named
+        ``"key [unit]"``; ImportError saying so where pandas is not installed."""
+        try:
+            import pandas as pd
+        except ImportError as exc:
+            raise ImportError(
+                "to_dataframe() needs pandas (pip install pandas); the capture itself is a "
+                "dict of numpy arrays"
+            ) from exc
+        columns = {f"{key} [{self.units[key]}]": v for key, v in self.items() if key != "t"}
+        return pd.DataFrame(columns, index=pd.Index(self["t"], name="t [s]"))
+
+
 def capture(
     session: ValveSession, keys: Sequence[str], seconds: float, rate_hz: int | None = None
-) -> dict[str, np.ndarray]:
+) -> Captured:
     """``seconds`` of the measuring points ``keys`` in display units, plus ``"t"`` (s)."""
     keys = list(keys)
     _check_keys(session, keys)
@@ -61,10 +86,10 @@ def capture(
     finally:
         session.stream_stop()
     samples = np.concatenate(blocks)[:wanted]
-    data: dict[str, np.ndarray] = {
-        key: samples[:, i] * BY_KEY[key].scale for i, key in enumerate(keys)
-    }
+    data = Captured((key, samples[:, i] * BY_KEY[key].scale) for i, key in enumerate(keys))
     data["t"] = np.arange(wanted) / rate
+    data.units = {**{key: BY_KEY[key].unit for key in keys}, "t": "s"}
+    data.rate_hz = rate
     return data
 
 
@@ -123,16 +148,21 @@ class SetpointGenerator:
     ``with valve.generator("square", amplitude=20, period=0.5): data = valve.capture(...)``.
     Over USB it drives the service override SETPOVRON/SETPOVR, over CANopen RPDO1; when it
     stops the valve takes its setpoint from where it did before. A refusal while it runs ends
-    it and is raised by :meth:`stop` (the valve's Prm9Error).
+    it and is raised by :meth:`stop` (the valve's Prm9Error). While it runs it owns the valve's
+    motion: a characterization refuses to start (MotionBusyError), and a second generator too.
+    When the block under ``with`` raises (a capture that lost the link), that error is what
+    the script sees; a failure to give the setpoint back is then logged and added as a note.
     """
 
     def __init__(self, session: ValveSession, settings: GeneratorSettings) -> None:
-        from prm9tool.online.setpoint_driver import SetpointDriver
+        from prm9tool.service.motion import owner_of
+        from prm9tool.service.setpoint_driver import SetpointDriver
 
         settings.check()  # ValueRangeError: the waveform leaves the setpoint range
         self.settings = settings
         self.error: Prm9Error | None = None
         self._running = False
+        self._motion = owner_of(session)
         self._driver = SetpointDriver(session, settings, self._refused)
 
     @property
@@ -141,15 +171,26 @@ class SetpointGenerator:
         return self._running
 
     def start(self) -> None:
-        """Take the setpoint over and run the waveform (raises what the valve answered)."""
-        self._driver.start()
+        """Take the setpoint over and run the waveform (raises what the valve answered;
+        MotionBusyError while another motion runs on the valve, nothing sent)."""
+        if self._running:
+            return
+        self._motion.take("generator")
+        try:
+            self._driver.start()
+        except BaseException:
+            self._motion.release("generator")
+            raise
         self._running = True
 
     def stop(self) -> None:
         """End the waveform and give the setpoint back; raises a refusal met while running."""
         if self._running:
             self._running = False
-            self._driver.stop(switch_off=self.error is None)
+            try:
+                self._driver.stop(switch_off=self.error is None)
+            finally:
+                self._motion.release("generator")
         if self.error is not None:
             raise self.error
 
@@ -157,8 +198,15 @@ class SetpointGenerator:
         self.start()
         return self
 
-    def __exit__(self, *exc: object) -> None:
-        self.stop()
+    def __exit__(self, exc_type: object, exc: BaseException | None, tb: object) -> None:
+        if exc is None:
+            self.stop()
+            return
+        try:  # the block's own error is the one that matters (the link lost in a capture)
+            self.stop()
+        except Exception as cleanup:  # reported with the block's error
+            log.warning("setpoint generator: could not give the setpoint back: %s", cleanup)
+            exc.add_note(f"and then the setpoint generator could not stop: {cleanup}")
 
     def __repr__(self) -> str:
         s = self.settings
@@ -178,20 +226,11 @@ def characterize(
     profile: Profile | str | os.PathLike[str] | None,
     progress: Callable[[str], None] | None,
 ) -> Characterization:
-    """The end-of-line test of ``--characterize`` on the open ``session``."""
-    from prm9tool.analysis.profile import DEFAULT, Profile, load_profile
-    from prm9tool.characterize.canrig import rig_for_session
-    from prm9tool.characterize.rig import EmulatorRig
-    from prm9tool.characterize.run import characterize as run
+    """The end-of-line test of ``--characterize`` on the open ``session`` (the valve service's,
+    :meth:`prm9tool.service.valve.ValveService.characterize`: refused while a generator runs;
+    not recorded)."""
+    from prm9tool.service.motion import claim
+    from prm9tool.service.valve import characterize_session
 
-    if profile is None:
-        profile = DEFAULT
-    elif not isinstance(profile, Profile):
-        profile = load_profile(os.fspath(profile))
-    if session.emulator is None:
-        return run(rig_for_session(session), profile, progress)
-    from prm9tool.device.factory import emulated_valve, stepped_here
-
-    # an emulated valve is stepped as fast as the CPU allows, as --characterize --emulator does
-    with stepped_here(emulated_valve(session.info.type_key, session.info.serial)) as valve:
-        return run(EmulatorRig(valve), profile, progress)
+    with claim(session, "characterization"):
+        return characterize_session(session, profile, progress)

@@ -16,33 +16,20 @@ from collections.abc import Callable, Mapping, Sequence
 from typing import TYPE_CHECKING
 
 from prm9tool.api.params import Display, ParameterSet, as_parameter_set, display, lookup
-from prm9tool.catalogue import CAPPED_BY, CATALOGUE, Parameter
-from prm9tool.catalogue.commissioning import (
-    CONTROL_WORD,
-    DISABLE_SEQUENCE,
-    NmtCommand,
-)
+from prm9tool.catalogue import CATALOGUE, Parameter
+from prm9tool.catalogue.commissioning import NmtCommand
 from prm9tool.catalogue.typekey import TypeKey
 from prm9tool.device.records import DeviceInfo, Progress, UploadResult, Value, ValveStatus
-from prm9tool.device.session import NotAvailableError
-from prm9tool.device.upload_outcome import type_problem
-from prm9tool.errors import (
-    AccessDeniedError,
-    DeviceTimeoutError,
-    Prm9Error,
-    TypeKeyError,
-    ValueRangeError,
-)
+from prm9tool.errors import AccessDeniedError, DeviceTimeoutError, Prm9Error
+from prm9tool.service.upload import check_type
+from prm9tool.service.valve import ValveService, service_for
 
 if TYPE_CHECKING:
-    import numpy as np
-
     from prm9tool.analysis.profile import Profile
-    from prm9tool.api.measure import SetpointGenerator
+    from prm9tool.api.measure import Captured, SetpointGenerator
     from prm9tool.characterize.run import Characterization
     from prm9tool.device.emulated import EmulatorControls
     from prm9tool.device.session import ValveSession
-    from prm9tool.online.recording import HistoryHook
     from prm9tool.scope.generator import Waveform
 
 log = logging.getLogger("prm9tool.api")
@@ -75,10 +62,13 @@ class Valve:
         record_history: bool = True,
         command: str = "python API",
     ) -> None:
+        from prm9tool.service.history import open_history
+
         self._session = session
-        self._history_db, self._record_history = history_db, record_history
-        self._command = command  # the records' "command" detail (the CLI's --set names itself)
-        self._hook: HistoryHook | None = None
+        # the history observer (None: off); the records' "command" detail names the door
+        report = lambda problem: log.warning("history: %s", problem)  # noqa: E731
+        history = open_history(history_db, command, report) if record_history else None
+        self._service: ValveService = service_for(session, history)
         self._params = {p.mnemonic: p for p in CATALOGUE.for_variant(session.variant)}
 
     # --- who -----------------------------------------------------------------------------------
@@ -96,6 +86,11 @@ class Valve:
     def session(self) -> ValveSession:
         """The device layer's session under this valve (for what this API does not cover)."""
         return self._session
+
+    @property
+    def service(self) -> ValveService:
+        """The valve service every door shares (prm9tool.service.valve)."""
+        return self._service
 
     @property
     def emulator(self) -> EmulatorControls | None:
@@ -118,7 +113,8 @@ class Valve:
 
     def __setitem__(self, mnemonic: str, value: Display) -> None:
         param = self.parameter(mnemonic)
-        raw = self.check({mnemonic: value})[mnemonic]  # ValueRangeError: nothing is sent
+        # ValueRangeError (wrong type, not a number, out of range), ReadOnlyError: nothing sent
+        raw = self.check({mnemonic: value})[mnemonic]
         self._session.write(mnemonic, raw)
         back = self._session.read(mnemonic)
         if back != raw:
@@ -128,14 +124,12 @@ class Valve:
         """The raw values of ``values`` (display units) if this valve would take them: each in
         its catalogue range and, together with what the valve holds, within the rules between
         parameters (LIMTA/LIMTB at most its CURNORM, manual table 7-14). ValueRangeError
-        names what is not; KeyError an unknown mnemonic. Sends nothing, reads the caps."""
-        raw: dict[str, Value] = {}
-        for mnemonic, value in values.items():
-            param = self.parameter(mnemonic)
-            raw[mnemonic] = param.to_raw(value)
-            param.check_raw(raw[mnemonic])
-        self._check_rules(raw)
-        return raw
+        names what is not (``True``, ``None``, ``"abc"`` are not numbers), ReadOnlyError (an
+        AccessDeniedError) a read-only parameter; KeyError an unknown mnemonic. The same
+        check and words as ``--set`` and the window. Sends nothing, reads the caps."""
+        for mnemonic in values:
+            self.parameter(mnemonic)
+        return self._service.check(values)
 
     def read(self, *mnemonics: str) -> dict[str, Display]:
         """Several parameters at once, in display units."""
@@ -144,8 +138,10 @@ class Valve:
         return {p.mnemonic: display(p, raw[p.mnemonic]) for p in params if p.mnemonic in raw}
 
     def status(self) -> ValveStatus:
-        """Device state, errors, LEDs, temperature, supply voltage and NMT state now."""
-        return self._session.status()
+        """Device state, errors, LEDs, temperature, supply voltage and NMT state now. After
+        this script's own ``nmt("stop")`` a valve that cannot answer says why (NmtStoppedError,
+        a DeviceTimeoutError)."""
+        return self._service.status()
 
     def wait_booted(self, timeout_s: float = 5.0) -> ValveStatus:
         """Ask for the status until the valve has finished booting (about 2 s after power-up
@@ -161,10 +157,8 @@ class Valve:
     # --- the parameter set --------------------------------------------------------------------
     def download(self, progress: Progress | None = None) -> ParameterSet:
         """The valve's parameter set (the working values; the *.prm file's parameters)."""
-        values = self._session.download(progress)
+        values = self._service.download(progress)
         info = self.info
-        if (history := self._history()) is not None:
-            history.download(self._session, values, "")
         return ParameterSet(
             info.type_key, values, serial=info.serial, firmware=info.firmware or None
         )
@@ -175,6 +169,8 @@ class Valve:
         *,
         force_type: bool = False,
         backup: bool = True,
+        verify_by_restart: bool = False,
+        confirm_hydraulics_off: bool = False,
         progress: Progress | None = None,
         cancel: threading.Event | None = None,
     ) -> UploadResult:
@@ -186,39 +182,35 @@ class Valve:
         valve's parameters as its backup file, unless it has one (as the GUI and ``--batch``
         do). A refused or differing value returns a result with ``stored`` False and
         ``failed_step`` set; the valve then runs on its stored set. A broken link raises the
-        CommunicationError naming the failed step.
+        CommunicationError naming the failed step. ``verify_by_restart`` (CANopen, as
+        ``--batch --verify-by-restart``): after the store, restart the valve and read every
+        value back — the spool drops to its rest position, so only with the hydraulics off,
+        which the caller confirms with ``confirm_hydraulics_off=True`` (AccessDeniedError
+        without it, nothing sent); a link without that step ignores it.
         """
+        if verify_by_restart and not confirm_hydraulics_off:
+            raise AccessDeniedError(
+                "verify_by_restart restarts the valve and its spool drops to the rest position: "
+                "switch the hydraulics off and add confirm_hydraulics_off=True"
+            )
         wanted = as_parameter_set(params, self.type_key)
-        problem = type_problem(wanted.type_key, self.type_key, force_type, "force_type=True")
-        if problem is not None:
-            raise TypeKeyError(problem)
-        values = wanted.raw
-        self._check_rules(values)  # a set the valve would refuse to store: nothing is sent
-        if backup:
-            self._backup(progress, cancel)
-        if (history := self._history()) is None:
-            return self._session.upload(values, progress, cancel)
-        return history.upload(self._session, values, progress, cancel)  # as the GUI records it
+        check_type(wanted.type_key, self.type_key, force_type, "force_type=True")
+        # the one upload sequence (prm9tool.service.upload): rules, backup, upload, history
+        return self._service.upload(
+            wanted.raw, backup=backup, verify_by_restart=verify_by_restart, progress=progress,
+            cancel=cancel,
+        )  # fmt: skip
 
     def store(self) -> None:
         """Make the working parameters permanent (the valve's non-volatile memory). Recorded
         as the GUI's Valve → Store is: with the set read back after the store."""
-        if (history := self._history()) is None:
-            self._session.store()
-        else:
-            from prm9tool.online.recording import store_and_read
-
-            store_and_read(self._session, history)
+        self._service.store()
 
     def restore_factory(self, *, backup: bool = True) -> None:
         """Reset the stored parameters to the factory values; they take effect at the next
         :meth:`restart`. ``backup``: first save the valve's parameters as its backup file,
         unless it has one (as the GUI does)."""
-        path = self._backup(None, None) if backup else None
-        self._session.restore_factory()
-        if (history := self._history()) is not None:
-            # no parameter set: the valve runs on its old one until the restart
-            history.add(self._session, "restore-factory", "ok", None, {"backup": path})
+        self._service.restore_factory(backup)
 
     def restart(self, *, confirm_hydraulics_off: bool = False) -> None:
         """Restart the valve's electronics and reconnect. The spool moves to its rest position
@@ -229,43 +221,35 @@ class Valve:
                 "a restart moves the spool to its rest position: switch the hydraulics off "
                 "and call restart(confirm_hydraulics_off=True)"
             )
-        self._session.restart()
+        self._service.restart()
 
     # --- operation ----------------------------------------------------------------------------
     def nmt(self, command: NmtCommand | str) -> None:
         """Send an NMT command as the valve's CANopen master would (manual §7.2): an
         :class:`NmtCommand` or its name (``"start"``, ``"stop"``, ``"pre-operational"``,
         ``"reset-node"``, ``"reset-communication"``). A valve with CANopen off ignores it."""
-        if isinstance(command, str):
-            name = command.strip().upper().replace("-", "_").replace(" ", "_")
-            if name not in NmtCommand.__members__:
-                known = ", ".join(m.lower().replace("_", "-") for m in NmtCommand.__members__)
-                raise ValueError(f"unknown NMT command {command!r}: one of {known}")
-            command = NmtCommand[name]
-        self._session.nmt(int(command))
+        self._service.nmt(command)
 
     def enable(self) -> None:
         """Control word 08h → 09h → 0Bh → 0Fh (manual §7.4, table 7-19): from INIT or a
         fault whose cause is gone to DEVICE_MODE_ACTIVE, where the valve follows its setpoint.
         Raises :class:`~prm9tool.device.enabling.NotEnabledError` (an AccessDeniedError) when
         the valve does not get there, saying why (e.g. which error is still present)."""
-        from prm9tool.device.enabling import enable
-
-        enable(self._session)
+        self._service.enable()
 
     def disable(self) -> None:
         """Control word 0Fh → 0Bh → 09h → 08h: back to INIT step by step."""
-        for word in DISABLE_SEQUENCE:
-            self._session.write(CONTROL_WORD, word)
+        self._service.disable()
 
     def capture(
         self, signals: Sequence[str], seconds: float = 1.0, rate_hz: int | None = None
-    ) -> dict[str, np.ndarray]:
+    ) -> Captured:
         """Record up to three measuring points for ``seconds`` at the valve's sample rate.
 
         ``signals``: the catalogue's signal keys (``demand``, ``position_actual``,
         ``current_a`` …: docs/api.md lists them). Returns one array per key in its display
-        unit (%, mA, V, °C) and ``"t"``, the time of each sample in seconds from the first.
+        unit (%, mA, V, °C) and ``"t"``, the time of each sample in seconds from the first;
+        ``.units`` names each unit, ``.to_dataframe()`` gives pandas users a DataFrame.
         ``rate_hz``: default the fastest the link streams without losing samples.
         """
         from prm9tool.api.measure import capture
@@ -300,21 +284,23 @@ class Valve:
         ``--characterize`` runs it; ``report_data(result)`` of
         :mod:`prm9tool.characterize.run` is its JSON report. The result is recorded in the
         history as ``--characterize`` records it (a ``characterization`` record: verdict,
-        figures, the parameters the valve ran with); a run that raises records nothing."""
-        from prm9tool.api.measure import characterize
+        figures, the parameters the valve ran with); a run that raises records nothing.
+        Refused (MotionBusyError, nothing moved) while this valve's setpoint generator runs."""
+        return self._service.characterize(profile, progress)
 
-        result = characterize(self._session, profile, progress)
-        if (history := self._history()) is not None:
-            history.characterization(self._session, result)
-        return result
+    def export_dcf(self, path: str | os.PathLike[str]) -> int:
+        """Write the valve's CiA 306 DCF (its working values, the node ID and bit rate it runs
+        with after power-up), as the window's File → Export DCF and ``--export-dcf`` do;
+        returns the node ID. TypeKeyError for a valve without CANopen (-CA)."""
+        return self._service.export_dcf(path)
 
     # --- closing ------------------------------------------------------------------------------
     def close(self) -> None:
         """Close the link (idempotent)."""
         self._session.close()
-        if self._hook is not None:
-            self._hook.recorder.close()
-            self._hook = None
+        if (history := self._service.history) is not None:
+            history.recorder.close()
+            self._service.history = None
 
     def __enter__(self) -> Valve:
         return self
@@ -326,43 +312,3 @@ class Valve:
         info = self.info
         state = "closed" if self.closed else "open"
         return f"<Valve {info.device_id} {info.type_key} serial {info.serial} ({state})>"
-
-    # --- internals ----------------------------------------------------------------------------
-    def _check_rules(self, values: Mapping[str, Value]) -> None:
-        """ValueRangeError naming every cross-parameter rule ``values`` break with the
-        valve's own caps (LIMTA/LIMTB at most its CURNORM, manual table 7-14)."""
-        caps = {CAPPED_BY[m] for m in values if m in CAPPED_BY}
-        try:
-            held = self._session.read_many(sorted(caps)) if caps else {}
-        except NotAvailableError:  # a valve without the object: it checks the cap itself
-            held = {}
-        problems = CATALOGUE.check_rules(self._session.variant, {**values, **held})
-        errors = [p.message for p in problems if p.severity == "error"]
-        if errors:
-            raise ValueRangeError("; ".join(errors))
-
-    def _backup(self, progress: Progress | None, cancel: threading.Event | None) -> str | None:
-        """Save the valve's parameters as its backup file unless it has one, and record it;
-        the file's path (None: it had one)."""
-        from prm9tool.files.backup import ensure_backup
-
-        path = ensure_backup(self._session, progress, cancel)
-        if path is None:
-            return None
-        if (history := self._history()) is not None:
-            history.backup(self._session, path)
-        return str(path)
-
-    def _history(self) -> HistoryHook | None:
-        """The history this valve records into (opened on first use); None with
-        ``record_history=False``. A record the database cannot take is logged, never raised."""
-        if not self._record_history:
-            return None
-        if self._hook is None:
-            from prm9tool.history.recorder import Recorder
-            from prm9tool.online.recording import HistoryHook
-
-            report = lambda problem: log.warning("history: %s", problem)  # noqa: E731
-            recorder = Recorder(self._history_db)
-            self._hook = HistoryHook(recorder, report, {"command": self._command})
-        return self._hook

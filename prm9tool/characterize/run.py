@@ -2,8 +2,7 @@
 
 :func:`characterize` runs the tests of an acceptance profile on a rig and checks every figure
 against its limits; :func:`report_data` is the JSON report and :func:`write_csv_files` the raw
-data. :data:`RESULT_HOOKS` is where a history of results (issue 13) registers a callable that
-receives every finished :class:`Characterization`.
+data. Who ran it records the result in the history (:mod:`prm9tool.service.history`).
 """
 
 from __future__ import annotations
@@ -17,7 +16,7 @@ from datetime import UTC, datetime
 from pathlib import Path
 from typing import Any
 
-from prm9tool import __version__
+from prm9tool._version import __version__
 from prm9tool.analysis.profile import FIGURES, Limit, Profile
 from prm9tool.catalogue import CATALOGUE
 from prm9tool.catalogue.typekey import TypeKey
@@ -112,7 +111,6 @@ SAMPLES_LOST = QT_TRANSLATE_NOOP(
     "Characterize",
     "frequency response: {0} of {1} samples lost on the link, left out of the estimate",
 )
-RESULT_HOOKS: list[Callable[[Characterization], None]] = []
 
 
 def planned_s(profile: Profile, flow: bool = False) -> float:
@@ -168,8 +166,6 @@ def characterize(rig: Rig, profile: Profile, progress: Progress | None = None) -
             result.flow = flow_test(rig, profile.flow_amplitude_pct, 0.0, profile.flow_duration_s)
     result.figures = figures(result)
     result.wall_s = time.perf_counter() - started
-    for hook in RESULT_HOOKS:
-        hook(result)
     return result
 
 

@@ -9,6 +9,7 @@ import json
 import logging
 import sys
 
+from prm9tool.cli.json_output import emit_json
 from prm9tool.device.factory import (
     CAN,
     EMULATOR,
@@ -55,7 +56,9 @@ def list_devices(args: argparse.Namespace) -> int:
         for entry in others:
             print(f"prm9tool: {entry.device_id}: not a PRM9: {entry.description}", file=sys.stderr)
         valves = [device_info(e, can_options(args)).to_dict() for e in entries if e not in others]
-        print(json.dumps(valves, indent=2))
+        failed = emit_json(json.dumps(valves, indent=2), args.json)
+        if failed is not None:
+            return failed
     for entry in entries if not args.json else []:
         if entry.kind == NOT_PRM9:
             print(f"{entry.device_id}\tnot a PRM9\t{entry.description}")

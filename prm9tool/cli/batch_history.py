@@ -14,7 +14,7 @@ from pathlib import Path
 from typing import Any
 
 from prm9tool.cli.batch_report import ValveRecord
-from prm9tool.errors import ExitCode, FileFormatError, HistoryError
+from prm9tool.errors import ExitCode, FileFormatError
 from prm9tool.history.config import unreachable_policy
 from prm9tool.history.recorder import Recorder
 
@@ -22,10 +22,16 @@ Raw = int | str
 
 
 class BatchHistory:
-    """Records what the batch run did to each valve (shared by the worker threads)."""
+    """Records what the batch run did to each valve (shared by the worker threads), through
+    the valve service's history observer (:class:`~prm9tool.service.history.HistoryHook`),
+    each record shaped as the batch report's valve record (docs/batch.md)."""
 
     def __init__(self, recorder: Recorder, source: str | None) -> None:
+        from prm9tool.service.history import HistoryHook
+
         self.recorder, self.source = recorder, source
+        # the report's "history" field says what became of each record; nothing else to say
+        self.observer = HistoryHook(recorder, lambda _problem: None)
 
     @classmethod
     def open(cls, args: argparse.Namespace, error: type[Exception]) -> BatchHistory:
@@ -97,12 +103,9 @@ class BatchHistory:
         parameters: Mapping[str, Raw] | None,
         details: dict[str, Any],
     ) -> None:
-        try:
-            record.history = self.recorder.record(
-                record, operation, outcome, parameters, details, record.failed_step
-            )
-        except HistoryError as exc:
-            record.history = f"not recorded: {exc}"
+        record.history = self.observer.record(
+            record, operation, outcome, parameters, details, record.failed_step
+        )
 
     def close(self) -> None:
         """Close the database connections."""

@@ -14,7 +14,7 @@ from datetime import UTC, datetime
 from pathlib import Path
 from typing import Any
 
-from prm9tool import __version__
+from prm9tool._version import __version__
 from prm9tool.errors import ExitCode
 from prm9tool.files.atomicfile import atomic_write
 

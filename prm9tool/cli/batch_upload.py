@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import logging
 from collections.abc import Callable, Mapping
+from pathlib import Path
 
 from prm9tool.catalogue import CATALOGUE
 from prm9tool.catalogue.typekey import TypeKey
@@ -14,10 +15,11 @@ from prm9tool.device.canlink.storing import KEPT_AS_WRITTEN
 from prm9tool.device.factory import CanOptions, DeviceEntry
 from prm9tool.device.records import UploadResult
 from prm9tool.device.session import ValveSession
-from prm9tool.device.upload_outcome import reload_outcome, type_problem
-from prm9tool.errors import CommunicationError, FileFormatError, Prm9Error, TypeKeyError
-from prm9tool.files.backup import ensure_backup, existing_backups
+from prm9tool.device.upload_outcome import reload_outcome
+from prm9tool.errors import CommunicationError, Prm9Error, TypeKeyError
+from prm9tool.files.backup import existing_backups
 from prm9tool.files.prmfile import PrmContents, check_file
+from prm9tool.service.upload import BackupError, check_type, upload
 
 log = logging.getLogger("prm9tool.cli.batch")
 
@@ -96,11 +98,13 @@ class UploadJob:
 
     def _run(self, session: ValveSession, record: ValveRecord) -> None:
         who = str(record.serial)
-        mismatch = type_problem(
-            self.contents.type_key, TypeKey.parse(session.info.type_key), self.force
-        )
-        if mismatch:
-            record.result, record.error = "type-mismatch", mismatch
+        try:
+            check_type(
+                self.contents.type_key, TypeKey.parse(session.info.type_key), self.force,
+                "--force-type",
+            )  # fmt: skip
+        except TypeKeyError as exc:
+            record.result, record.error = "type-mismatch", str(exc)
             return
         values = self.contents.values
         if self.dry_run:
@@ -110,24 +114,21 @@ class UploadJob:
             return
         self.printer.say(who, f"{record.type_key}, firmware {record.firmware}: backing up")
         record.failed_step = "backup"
+
+        def backed_up(path: Path | None) -> None:  # before the first value is written
+            if path is not None:
+                self.history.backup(record, path)
+            self._note_backup(record, path)
+
         try:
-            new_backup = ensure_backup(session, self.printer.callback(who))
-        except FileFormatError as exc:
-            raise Prm9Error(
-                f"the backup could not be written, nothing was uploaded: {exc}"
-            ) from exc
-        if new_backup is not None:
-            self.history.backup(record, new_backup)
-        backups = existing_backups(record.serial)
-        latest = new_backup or (backups[-1] if backups else None)
-        record.backup = str(latest) if latest else None
-        record.backup_valid = check_file(latest).valid if latest else None
-        if new_backup and not record.backup_valid:
-            self.printer.say(who, f"the valve held an invalid parameter set, kept in {latest}")
-        record.failed_step = None
-        if self.verify_by_restart and hasattr(session, "verify_by_restart"):
-            session.verify_by_restart = True  # hydraulics off: the operator confirmed it
-        result = session.upload(values, self.printer.callback(who))
+            # the one upload sequence (prm9tool.service.upload); the batch report says what
+            # the valve refused at the store (store-failed), so the rules are the valve's here
+            result = upload(
+                session, values, rules=False, verify_by_restart=self.verify_by_restart,
+                progress=self.printer.callback(who), on_backup=backed_up,
+            )  # fmt: skip
+        except BackupError as exc:
+            raise Prm9Error(str(exc)) from exc
         record.store = result.store
         record.parameters_written, record.failed_step = result.written, result.failed_step
         record.verification = "passed" if result.verified else "failed"
@@ -157,6 +158,18 @@ class UploadJob:
             record.error = _failure_text(result, record.backup)
         elif result.store:
             self.printer.say(who, result.store)
+
+    def _note_backup(self, record: ValveRecord, new_backup: Path | None) -> None:
+        """The report's backup of the valve: the one just written or its latest."""
+        backups = existing_backups(record.serial)
+        latest = new_backup or (backups[-1] if backups else None)
+        record.backup = str(latest) if latest else None
+        record.backup_valid = check_file(latest).valid if latest else None
+        if new_backup and not record.backup_valid:
+            self.printer.say(
+                str(record.serial), f"the valve held an invalid parameter set, kept in {latest}"
+            )
+        record.failed_step = None
 
 
 def absent_in(contents: PrmContents) -> list[str]:

@@ -5,6 +5,13 @@ writes the PDF report (``--report``), the JSON report (``--json``) and the raw d
 next to them, and exits 0 when every figure is within its limits, 8 when one is not (docs/
 tuning.md). An emulated valve is stepped as fast as the CPU allows; a USB valve runs at its
 stream rate, a CANopen valve (``--device can:N``) at the SDO sample rate its link gives.
+
+A -CA valve as delivered waits for its CANopen master and does not follow its setpoint;
+``--enable`` is that master's part, as the window's "Enable it now?" is: NMT start, then the
+control word 08h → 09h → 0Bh → 0Fh (the valve service's ``commission``), before the test.
+The valve then follows its setpoint and the spool moves: ``--enable`` needs
+``--hydraulics-safe``, the answer to the window's question "make sure the hydraulics are safe
+for it".
 """
 
 from __future__ import annotations
@@ -14,6 +21,7 @@ import json
 import sys
 from collections.abc import Callable
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 from prm9tool.analysis.profile import DEFAULT, Profile, ProfileError, load_profile
 from prm9tool.characterize.canrig import rig_for_session
@@ -25,9 +33,13 @@ from prm9tool.device.factory import emulated_valve, open_session, parse_emulator
 from prm9tool.errors import CommunicationError, ExitCode, Prm9Error
 from prm9tool.files.atomicfile import atomic_write
 
+if TYPE_CHECKING:
+    from prm9tool.device.session import ValveSession
 
-def run(args: argparse.Namespace) -> int:
-    """Entry point of ``--characterize``; returns the exit code."""
+
+def run(args: argparse.Namespace, record: Callable[[Characterization], None] | None = None) -> int:
+    """Entry point of ``--characterize``; returns the exit code. ``record``: hears the result
+    of a run that finished (the history)."""
     try:
         profile = _profile(args)
         outputs = _outputs(args)
@@ -53,6 +65,8 @@ def run(args: argparse.Namespace) -> int:
         return ExitCode.OUT_OF_LIMITS
     finally:
         close()
+    if record is not None:
+        record(result)
     try:
         _write(result, outputs)
     except OSError as exc:
@@ -95,12 +109,18 @@ def _rig(args: argparse.Namespace) -> tuple[Rig, Callable[[], None]]:
         raise BatchError(
             ExitCode.USAGE, "--characterize tests one valve: give one --device or --emulator"
         )
+    enable = bool(getattr(args, "enable", False))
+    if enable and not getattr(args, "hydraulics_safe", False):
+        raise BatchError(ExitCode.USAGE, ENABLE_NEEDS_CONFIRMATION)
     if args.emulator:
         try:
             type_key, serial = parse_emulator_spec(args.emulator[0] or "")
             valve = emulated_valve(type_key, serial)
         except Prm9Error as exc:
             raise BatchError(ExitCode.USAGE, f"--emulator: {exc}") from exc
+        if enable:  # over the emulated valve's USB link, as the window does
+            with open_session(f"emulator:{valve.type_key}:{serial}", paced=False) as session:
+                _commission(session)
         return EmulatorRig(valve), lambda: None
     args.all = False
     entry = select(args)[0]
@@ -111,12 +131,34 @@ def _rig(args: argparse.Namespace) -> tuple[Rig, Callable[[], None]]:
     except Prm9Error as exc:
         raise BatchError(ExitCode.COMMUNICATION, str(exc)) from exc
     try:
+        if enable:
+            _commission(session)
         return rig_for_session(session), session.close
     except BaseException as exc:
         session.close()
         if isinstance(exc, Prm9Error):
             raise BatchError(ExitCode.COMMUNICATION, str(exc)) from exc
         raise
+
+
+ENABLE_NEEDS_CONFIRMATION = (
+    "--enable makes the valve follow its setpoint and the test moves the spool (and on E04 "
+    "the actuator): make sure the hydraulics are safe for it and add --hydraulics-safe"
+)
+
+
+def _commission(session: ValveSession) -> None:
+    """NMT start (when it waits) and the enable sequence, saying so on standard error."""
+    from prm9tool.service.valve import service_for
+
+    print(
+        "prm9tool: enabling the valve: NMT start, control word 08h → 09h → 0Bh → 0Fh",
+        file=sys.stderr,
+    )
+    try:
+        service_for(session).commission()
+    except Prm9Error as exc:
+        raise BatchError(ExitCode.COMMUNICATION, f"--enable: {exc}") from exc
 
 
 def _write(result: Characterization, outputs: tuple[Path | None, Path | None]) -> None:

@@ -14,8 +14,8 @@ from __future__ import annotations
 import argparse
 import json
 import sys
-from typing import Any
 
+from prm9tool.cli.json_output import emit_json
 from prm9tool.compare.export import as_json, value
 from prm9tool.compare.model import NOT_ON_SOURCE_VALVE, Comparison, Row, Side
 from prm9tool.errors import CommunicationError, ExitCode, FileFormatError, Prm9Error
@@ -38,7 +38,9 @@ def run(args: argparse.Namespace) -> int:
         print(f"prm9tool: {exc}", file=sys.stderr)
         return int(exc.code)
     if args.json:
-        print(json.dumps(as_json(comparison), indent=2, ensure_ascii=False))
+        failed = emit_json(json.dumps(as_json(comparison), indent=2, ensure_ascii=False), args.json)
+        if failed is not None:
+            return failed
     else:
         for warning in comparison.warnings():
             print(f"prm9tool: warning: {warning}", file=sys.stderr)
@@ -79,26 +81,24 @@ def valve_side(args: argparse.Namespace) -> Side:
         raise DiffError(exc.code, str(exc)) from exc
     if len(entries) != 1:
         raise DiffError(ExitCode.USAGE, "--diff compares with one valve: select exactly one")
+    from prm9tool.service.history import open_history
+    from prm9tool.service.valve import service_for
+
+    # a download is an operation on the valve's parameter set: the valve service records it
+    warn = lambda problem: print(  # noqa: E731
+        f"prm9tool: warning: history: {problem}", file=sys.stderr
+    )
+    history = open_history(getattr(args, "history_db", None), "--diff", warn)
     try:
         with open_entry(entries[0], can_options(args), args.type_key) as session:
-            values = session.download()
+            values = service_for(session, history).download()
             info = session.info
     except (CommunicationError, Prm9Error) as exc:
         raise DiffError(ExitCode.COMMUNICATION, f"reading the valve failed: {exc}") from exc
+    finally:
+        history.recorder.close()
     key = TypeKey.parse(info.type_key)
-    _record_download(args, info, values)
     return Side(f"valve {info.serial}", key, values)
-
-
-def _record_download(args: argparse.Namespace, info: Any, values: dict[str, Any]) -> None:
-    """A download is an operation on the valve's parameter set: it goes into the history."""
-    from prm9tool.cli.history import recorder_for
-
-    recorder = recorder_for(args)
-    problem = recorder.record_safely(info, "download", "ok", values, {"command": "--diff"})
-    recorder.close()
-    if problem:
-        print(f"prm9tool: warning: the download was not recorded: {problem}", file=sys.stderr)
 
 
 def line(row: Row) -> str:

@@ -8,6 +8,7 @@ import json
 import sys
 from typing import Any
 
+from prm9tool.cli.json_output import emit_json
 from prm9tool.errors import ExitCode, FileFormatError, HistoryError
 from prm9tool.history import decoded
 from prm9tool.history.chain import other_type
@@ -37,15 +38,15 @@ def run(args: argparse.Namespace) -> int:
         recorder.close()
 
 
-def _list(recorder: Recorder, serial_text: str, as_json: bool) -> int:
+def _list(recorder: Recorder, serial_text: str, as_json: bool | str | None) -> int:
     if not serial_text.isdigit():
         print(f"prm9tool: --history {serial_text}: a serial number is a number", file=sys.stderr)
         return ExitCode.USAGE
     records = recorder.store().records(int(serial_text))
     if as_json:
         decoded(records)
-        print(json.dumps({"serial": int(serial_text), "records": records}, indent=2))
-        return ExitCode.OK
+        text = json.dumps({"serial": int(serial_text), "records": records}, indent=2)
+        return emit_json(text, as_json) or ExitCode.OK
     if not records:
         print(f"prm9tool: valve {serial_text} has no records in {recorder.store().shown_url}",
               file=sys.stderr)  # fmt: skip

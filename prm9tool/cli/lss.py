@@ -7,6 +7,7 @@ import argparse
 import json
 import sys
 
+from prm9tool.cli.json_output import emit_json
 from prm9tool.device.canlink.bus import CanNetwork, CanOptions, acquire, release
 from prm9tool.device.canlink.lss import LssAddress, LssFailedError, LssMasterLink
 from prm9tool.device.canlink.lss_nodes import answers_at, first_free
@@ -33,8 +34,8 @@ def lss_problem(args: argparse.Namespace) -> str | None:
     clash = given[1:] + [flag for flag, value in others.items() if value]
     if clash:
         return f"{given[0]} and {clash[0]} are separate commands: use one at a time"
-    if (args.json is not None and given[0] != "--lss-scan") or isinstance(args.json, str):
-        return "--json (printing JSON) belongs to --lss-scan here"
+    if args.json is not None and given[0] != "--lss-scan":
+        return "--json [OUT.json] belongs to --lss-scan here"
     if args.can_interface is None:
         return f"{given[0]} needs --can-interface (and --can-channel) naming the bus"
     if given[0] == "--lss-assign":
@@ -85,7 +86,7 @@ def run(args: argparse.Namespace) -> int:
         return ExitCode.COMMUNICATION
     try:
         if args.lss_scan:
-            return _scan(shared, options, args.json is not None)
+            return _scan(shared, options, args.json)
         return _assign(shared, options, parse_pairs(args.lss_assign))
     except LssFailedError as exc:
         print(f"prm9tool: {exc}", file=sys.stderr)
@@ -94,10 +95,14 @@ def run(args: argparse.Namespace) -> int:
         release(shared)
 
 
-def _scan(shared: CanNetwork, options: CanOptions, as_json: bool) -> int:
+def _scan(shared: CanNetwork, options: CanOptions, as_json: bool | str | None) -> int:
+    """``--json``: print the devices as JSON; ``--json OUT.json``: write them there (as
+    ``--characterize --json OUT.json`` writes its report)."""
     found = LssMasterLink(shared).scan()
     if as_json:
-        print(json.dumps([_as_dict(a) for a in found], indent=1))
+        failed = emit_json(json.dumps([_as_dict(a) for a in found], indent=1), as_json)
+        if failed is not None:
+            return failed
     for address in found:
         if not as_json:
             print(

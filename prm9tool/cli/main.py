@@ -81,6 +81,8 @@ def _headless_command(args: argparse.Namespace) -> tuple[str, str] | None:
         return "prm9tool.cli.history", "run"
     if args.get or args.set:
         return "prm9tool.cli.values", "run"
+    if args.export_dcf:
+        return "prm9tool.cli.values", "export_dcf"
     if args.list_devices or args.batch is not None:
         return "prm9tool.cli.batch", "run"
     return None
@@ -90,14 +92,12 @@ def _characterize(args: argparse.Namespace) -> int:
     """``--characterize``, its result recorded in the history."""
     from prm9tool.cli.characterize import run as run_characterize
     from prm9tool.cli.history import recorder_for
-    from prm9tool.online.characterization_history import record_characterizations
+    from prm9tool.service.history import record_characterization
 
     recorder = recorder_for(args)  # the end-of-line result goes into the history
-    forget = record_characterizations(recorder)
     try:
-        return run_characterize(args)
+        return run_characterize(args, lambda result: record_characterization(recorder, result))
     finally:
-        forget()
         recorder.close()
 
 

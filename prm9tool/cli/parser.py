@@ -182,6 +182,16 @@ def build_parser() -> argparse.ArgumentParser:
     eol.add_argument(
         "--profile", metavar="LIMITS.toml", help="with --characterize: acceptance profile"
     )
+    eol.add_argument(
+        "--enable", action="store_true",
+        help="with --characterize: first enable the valve as its CANopen master would (NMT "
+        "start, control word 08h → 09h → 0Bh → 0Fh; a -CA valve as delivered waits for that); "
+        "the valve then follows its setpoint: needs --hydraulics-safe",
+    )  # fmt: skip
+    eol.add_argument(
+        "--hydraulics-safe", action="store_true",
+        help="with --enable: the hydraulics are safe for the test to move the spool",
+    )  # fmt: skip
     values = parser.add_argument_group("single parameters for shell scripts (no GUI; docs/api.md)")
     values.add_argument(
         "--get", nargs="+", metavar="MNEMONIC",
@@ -194,6 +204,11 @@ def build_parser() -> argparse.ArgumentParser:
     values.add_argument(
         "--store", action="store_true", help="with --set: store the working values permanently"
     )
+    values.add_argument(
+        "--export-dcf", metavar="OUT.dcf",
+        help="write the CiA 306 DCF of the valve of --device/--emulator (its working values, "
+        "node ID and bit rate), as File → Export DCF does",
+    )  # fmt: skip
     add_device_options(parser)
     add_history_options(parser)
     from prm9tool.cli.trace import add_trace_options

@@ -18,7 +18,7 @@ BATCH_ONLY = {
     "--all": "all",
     "--verify-by-restart": "verify_by_restart",
 }
-VALUE_COMMANDS = {"--get": "get", "--set": "set", "--store": "store"}
+VALUE_COMMANDS = {"--get": "get", "--set": "set", "--store": "store", "--export-dcf": "export_dcf"}
 FILE_TOOLS = {"--new": "new", "--check": "check", "--export-eds": "export_eds"}
 CAN_OPTIONS = {"--can-interface": "can_interface", "--can-channel": "can_channel",
                "--can-bitrate": "can_bitrate"}  # fmt: skip
@@ -51,17 +51,15 @@ def usage_problem(args: argparse.Namespace) -> str | None:
         return problem
     if args.characterize:
         return _characterize_problem(args)
-    if args.get or args.set or args.store:
+    if args.enable or args.hydraulics_safe:
+        flag = "--enable" if args.enable else "--hydraulics-safe"
+        return f"{flag} belongs to --characterize (it enables the valve before the test)"
+    if args.get or args.set or args.store or args.export_dcf:
         return _values_problem(args)
     if args.profile:
         return "--profile belongs to --characterize"
     if getattr(args, "od", None) and not (args.emulator or args.serve_emulator):
         return "--od chooses the object dictionary of --emulator or --serve-emulator valves"
-    if isinstance(args.json, str):
-        return (
-            "--json OUT.json belongs to --characterize (--diff, --history, --get/--set and "
-            "--list-devices print JSON)"
-        )
     problem = _compare_history_problem(args)
     if problem is not None:
         return problem
@@ -164,6 +162,8 @@ def _characterize_problem(args: argparse.Namespace) -> str | None:
         return f"unexpected file {args.file}: --characterize tests a valve"
     if args.json is True:
         return "--characterize writes its JSON report to a file: --json OUT.json"
+    if args.hydraulics_safe and not args.enable:
+        return "--hydraulics-safe confirms --enable: add --enable, or leave it out"
     return None
 
 
@@ -177,7 +177,10 @@ def _compare_history_problem(args: argparse.Namespace) -> str | None:
     if len(commands) > 1 or (commands and others):
         return f"{commands[0]} and {(commands[1:] + others)[0]} are separate commands: use one at a time"
     if args.json and commands not in (["--diff"], ["--history"]) and not args.list_devices:
-        return "--json belongs to --diff, --history, --get/--set and --list-devices"
+        return (
+            "--json [OUT.json] belongs to --diff, --history, --get/--set, --list-devices, "
+            "--lss-scan and --characterize"
+        )
     if args.history_unreachable and args.batch is None:
         return "--history-unreachable belongs to the headless production mode (--batch)"
     if args.diff:
@@ -225,7 +228,11 @@ def _values_problem(args: argparse.Namespace) -> str | None:
     """``--get``/``--set [--store]``: one valve, no other command."""
     if args.store and not args.set:
         return "--store belongs to --set (it stores the values --set writes)"
-    name = "--set" if args.set else "--get"
+    if args.export_dcf and (args.get or args.set):
+        return f"--export-dcf and {'--set' if args.set else '--get'} are separate commands: use one at a time"
+    name = "--set" if args.set else "--get" if args.get else "--export-dcf"
+    if args.export_dcf and args.json:
+        return "--export-dcf writes the DCF file it names; --json does not belong to it"
     commands = {**BATCH_ONLY, **FILE_TOOLS, **HISTORY_COMMANDS, "--diff": "diff",
                 "--serve-emulator": "serve_emulator", "--list-devices": "list_devices"}  # fmt: skip
     others = [
@@ -236,8 +243,6 @@ def _values_problem(args: argparse.Namespace) -> str | None:
         return f"{name} and {others[0]} are separate commands: use one at a time"
     if args.file:
         return f"unexpected file {args.file}: {name} works on a valve"
-    if isinstance(args.json, str):
-        return f"--json OUT.json belongs to --characterize ({name} prints JSON with --json alone)"
     if len(args.device) + len(args.emulator) != 1:
         return f"{name} works on one valve: give one --device ID or --emulator TYPEKEY[:SERIAL]"
     can = [flag for flag, dest in CAN_OPTIONS.items() if getattr(args, dest) is not None]

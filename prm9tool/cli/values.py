@@ -20,8 +20,17 @@ from prm9tool.api.params import display
 from prm9tool.api.valve import ReadBackError, Valve
 from prm9tool.catalogue import Parameter
 from prm9tool.cli.batch_devices import BatchError, can_options, open_entry, select
+from prm9tool.cli.json_output import emit_json
 from prm9tool.device.records import Value
-from prm9tool.errors import CommunicationError, ExitCode, Prm9Error, SdoAbortError, ValueRangeError
+from prm9tool.errors import (
+    CommunicationError,
+    ExitCode,
+    Prm9Error,
+    SdoAbortError,
+    TypeKeyError,
+    ValueRangeError,
+)
+from prm9tool.service.values import ReadOnlyError
 
 
 def run(args: argparse.Namespace) -> int:
@@ -80,10 +89,10 @@ def _run(args: argparse.Namespace, valve: Valve, wanted: list[tuple[str, str]]) 
         raise BatchError(ExitCode.VERIFY_FAILED, str(exc)) from exc
     params = {m: valve.parameter(m) for m in values}
     if args.json:
-        print(json.dumps(as_json(valve, params, values, bool(args.store and raw)), indent=2))
-    else:
-        for mnemonic, shown in values.items():
-            print(line(params[mnemonic], shown))
+        text = json.dumps(as_json(valve, params, values, bool(args.store and raw)), indent=2)
+        return emit_json(text, args.json) or ExitCode.OK
+    for mnemonic, shown in values.items():
+        print(line(params[mnemonic], shown))
     return ExitCode.OK
 
 
@@ -95,18 +104,14 @@ def _parameter(valve: Valve, mnemonic: str) -> Parameter:
 
 
 def _checked(valve: Valve, wanted: list[tuple[str, str]]) -> dict[str, Value]:
-    raw: dict[str, Value] = {}
-    for mnemonic, text in wanted:
-        param = _parameter(valve, mnemonic)
-        if not param.writable:
-            raise BatchError(ExitCode.USAGE, f"--set {mnemonic}: the parameter is read-only")
-        try:
-            raw[mnemonic] = param.parse_display(text)
-            param.check_raw(raw[mnemonic])
-        except ValueRangeError as exc:
-            raise BatchError(ExitCode.USAGE, f"--set: {exc}; nothing was written") from exc
-    try:  # together, with what the valve holds (LIMTA at most its CURNORM …)
-        return valve.check({m: display(valve.parameter(m), v) for m, v in raw.items()})
+    """Every value as the valve service checks it (prm9tool.service.values: the words of the
+    API and the window), each alone and then together with what the valve holds."""
+    for mnemonic, _text in wanted:
+        _parameter(valve, mnemonic)
+    try:
+        return valve.check(dict(wanted))
+    except ReadOnlyError as exc:
+        raise BatchError(ExitCode.USAGE, f"--set {exc}") from exc
     except ValueRangeError as exc:
         raise BatchError(ExitCode.USAGE, f"--set: {exc}; nothing was written") from exc
 
@@ -129,4 +134,34 @@ def as_json(
     }
 
 
-__all__ = ["as_json", "line", "parse_assignments", "run"]
+def export_dcf(args: argparse.Namespace) -> int:
+    """Entry point of ``--export-dcf OUT.dcf``: the valve's DCF, as File → Export DCF writes
+    it (the valve service's ``export_dcf``); returns the exit code."""
+    try:
+        entries = select(args)
+        if len(entries) != 1:
+            raise BatchError(ExitCode.USAGE, "--export-dcf works on one valve: select exactly one")
+        session = open_entry(entries[0], can_options(args), args.type_key)
+    except BatchError as exc:
+        print(f"prm9tool: {exc}", file=sys.stderr)
+        return int(exc.code)
+    except CommunicationError as exc:
+        print(f"prm9tool: {exc}", file=sys.stderr)
+        return ExitCode.COMMUNICATION
+    with Valve(session, record_history=False) as valve:
+        try:
+            node = valve.export_dcf(args.export_dcf)
+        except TypeKeyError as exc:  # a valve without CANopen
+            print(f"prm9tool: --export-dcf: {exc}", file=sys.stderr)
+            return ExitCode.USAGE
+        except OSError as exc:
+            print(f"prm9tool: --export-dcf: cannot write {args.export_dcf}: {exc}", file=sys.stderr)
+            return ExitCode.USAGE
+        except CommunicationError as exc:
+            print(f"prm9tool: {exc}", file=sys.stderr)
+            return ExitCode.COMMUNICATION
+    print(f"DCF saved as {args.export_dcf} (node {node})")
+    return ExitCode.OK
+
+
+__all__ = ["as_json", "export_dcf", "line", "parse_assignments", "run"]

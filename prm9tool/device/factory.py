@@ -36,7 +36,15 @@ log = logging.getLogger("prm9tool.device.factory")
 DEFAULT_EMULATOR_TYPE = DEFAULT_EMULATOR_TYPE_KEY  # one default for the GUI and the CLI
 USB, EMULATOR, CAN, NOT_PRM9 = "usb", "emulator", "can", "not-prm9"
 UNUSABLE_EMULATOR = "emulator-unusable"  # a remembered emulated valve that cannot be made
-__all__ = ["CanOptions", "DeviceEntry", "list_devices", "open_session"]
+__all__ = [
+    "LINKS",
+    "CanOptions",
+    "DeviceEntry",
+    "LinkOptions",
+    "list_devices",
+    "open_link",
+    "open_session",
+]
 
 
 @dataclass(frozen=True)
@@ -86,8 +94,8 @@ def free_emulator_serial(type_key: str, first: int, taken: Collection[int] = ())
     for serial in range(first, 2**32):
         if serial in taken:
             continue
-        with _LOCK:
-            valve = _VALVES.get(serial)
+        with EMULATED.lock:
+            valve = EMULATED.valves.get(serial)
         if valve is not None:
             if str(valve.type_key) == wanted:
                 return serial
@@ -248,10 +256,20 @@ def _heard(seen: Any) -> tuple[NmtState | None, float | None, str]:
 
 
 # --- emulated valves of this process ---------------------------------------------------------
-_VALVES: dict[int, EmulatedValve] = {}
-_RUNNING: dict[int, int] = {}  # paced sessions per serial (the valve's thread runs while > 0)
-_LOCK = threading.Lock()
-_EMULATOR_OD = ["full"]  # --od of this process (set_emulator_od)
+class EmulatedValves:
+    """The emulated valves of this process, one per serial number, in one registry: the
+    valves, how many paced sessions run each (its real-time thread runs while > 0) and the
+    object dictionary new ones get (``--od``); one lock guards them all."""
+
+    def __init__(self) -> None:
+        self.valves: dict[int, EmulatedValve] = {}
+        self.running: dict[int, int] = {}
+        self.lock = threading.Lock()
+        self.od = "full"
+
+
+EMULATED = EmulatedValves()
+_VALVES = EMULATED.valves  # by serial number (tests/gui_support.py looks valves up here)
 
 
 def set_emulator_od(od: str) -> None:
@@ -262,20 +280,20 @@ def set_emulator_od(od: str) -> None:
 
     if od not in OD_PROFILES:
         raise Prm9Error(f"--od {od}: one of {', '.join(OD_PROFILES)}")
-    _EMULATOR_OD[0] = od
+    EMULATED.od = od
 
 
 def emulated_valve(type_key: str, serial: int) -> EmulatedValve:
     """The emulated valve with ``serial`` in this process (created with its EEPROM file)."""
     from prm9tool.device.emulator import EmulatedValve
 
-    with _LOCK:
-        valve = _VALVES.get(serial)
+    with EMULATED.lock:
+        valve = EMULATED.valves.get(serial)
         if valve is None:
             valve = EmulatedValve(
-                type_key, serial, nv_path=emulator_nv_path(serial), od=_EMULATOR_OD[0]
+                type_key, serial, nv_path=emulator_nv_path(serial), od=EMULATED.od
             )
-            _VALVES[serial] = valve
+            EMULATED.valves[serial] = valve
         elif str(valve.type_key) != str(TypeKey.parse(type_key)):
             raise Prm9Error(
                 f"emulated valve {serial} is a {valve.type_key}; choose another serial "
@@ -288,16 +306,41 @@ def forget_emulated_valves() -> None:
     """Drop this process's emulated valves (their EEPROM files stay); for tests and tools."""
     from prm9tool.device.emulated import plug_cable
 
-    with _LOCK:
-        for serial in _VALVES:
+    with EMULATED.lock:
+        for serial in EMULATED.valves:
             plug_cable(serial)
-        for serial, valve in _VALVES.items():
-            if _RUNNING.pop(serial, 0):
+        for serial, valve in EMULATED.valves.items():
+            if EMULATED.running.pop(serial, 0):
                 valve.stop()
-        _VALVES.clear()
+        EMULATED.valves.clear()
 
 
 # --- opening ---------------------------------------------------------------------------------
+@dataclass(frozen=True)
+class LinkOptions:
+    """How to open a link, whatever its kind: the options :func:`open_session` takes, once.
+
+    ``paced``: an emulated valve runs in real time in its own thread (GUI); False steps its
+    simulation on the link's clock (tests, tools, batch mode). ``link_paced`` (None: as
+    ``paced``) holds the emulated USB link to one report per millisecond of wall-clock time.
+    ``can``: the python-can bus an emulated -CA valve joins. ``can_link``: the bus of a
+    ``can:NODE`` device (None: ``can``, else the virtual bus). ``type_key``: the key to use
+    when a CANopen valve does not tell its own (a file's); ``label_key``: the one the user
+    gave for it, remembered for its serial number.
+    """
+
+    paced: bool = True
+    link_paced: bool | None = None
+    can: CanOptions | None = None
+    can_link: CanOptions | None = None
+    type_key: str | None = None
+    label_key: str | None = None
+
+
+LinkOpener = Callable[[str, str, LinkOptions], ValveSession]  # (rest of the ID, ID, options)
+UNKNOWN_DEVICE = "unknown device {0!r}: expected 'usb:…', 'emulator:…' or 'can:NODE'"
+
+
 def open_session(
     entry: DeviceEntry | str,
     *,
@@ -308,77 +351,84 @@ def open_session(
     can_link: CanOptions | None = None,
     label_key: str | None = None,
 ) -> ValveSession:
-    """Open a session to ``entry`` (a DeviceEntry or its ``device_id``).
+    """Open a session to ``entry`` (a DeviceEntry or its ``device_id``), by the link kind its
+    ID starts with (:data:`LINKS`); the options as :class:`LinkOptions` describes them.
+    :func:`join_can` puts the emulated -CA valve of an open session on a bus afterwards."""
+    options = LinkOptions(paced, link_paced, can, can_link, type_key, label_key)
+    return open_link(entry.device_id if isinstance(entry, DeviceEntry) else entry, options)
 
-    Emulated valves: ``paced`` runs the valve in real time in its own thread (GUI); False
-    steps its simulation on the link's clock instead (tests, tools, batch mode).
-    ``link_paced`` (default: ``paced``) holds the emulated USB link to one report per
-    millisecond of wall-clock time. ``can``: put an emulated -CA valve on that python-can bus
-    before returning (CanBusError if the bus cannot be opened); :func:`join_can` does the same
-    for a session that is already open.
-    ``can:NODE`` opens a CANopen session to that node on the bus ``can_link`` (default:
-    ``can``, else the virtual bus); ``type_key`` is the key to use when the valve does not tell
-    its own (a file's), ``label_key`` the key the user gave for it (``--type-key``, the GUI's
-    question), remembered for its serial number.
-    """
-    device_id = entry.device_id if isinstance(entry, DeviceEntry) else entry
+
+def open_link(device_id: str, options: LinkOptions) -> ValveSession:
+    """The one function that turns a device ID and options into an open link."""
     kind, _, rest = device_id.partition(":")
-    if kind == USB:
-        return _open_usb(rest, device_id)
-    if kind == EMULATOR:
-        link = paced if link_paced is None else link_paced
-        emulated_key, _, serial = rest.rpartition(":")
-        return _open_emulator(emulated_key, int(serial), device_id, (paced, link), can)
-    if kind == CAN and rest.isdigit():
-        from prm9tool.device.canlink.session import CanopenSession
-
-        options = can_link or can or CanOptions()
-        return CanopenSession(options, int(rest), type_key=type_key, label_key=label_key)
-    raise Prm9Error(f"unknown device {device_id!r}: expected 'usb:…', 'emulator:…' or 'can:NODE'")
+    opener = LINKS.get(kind)
+    if opener is None:
+        raise Prm9Error(UNKNOWN_DEVICE.format(device_id))
+    return opener(rest, device_id, options)
 
 
-def _open_usb(path: str, device_id: str) -> ValveSession:
-    from prm9tool.device.usb.discovery import find_serial
+class _SerialFinder:
+    """Finds a USB valve again by its serial number (known once the session identified it)."""
+
+    serial: int | None = None
+
+    def __call__(self) -> bytes | None:
+        from prm9tool.device.usb.discovery import find_serial
+
+        return find_serial(self.serial) if self.serial is not None else None
+
+
+def _open_usb(path: str, device_id: str, _options: LinkOptions) -> ValveSession:
     from prm9tool.device.usb.session import UsbSession
     from prm9tool.device.usb.transport.hidapi import HidTransport
 
-    serial_box: list[int] = []
-    transport = HidTransport(path.encode(), finder=lambda: find_serial(serial_box[0]))
+    finder = _SerialFinder()
+    transport = HidTransport(path.encode(), finder=finder)
     try:
         session = UsbSession(transport, device_id)
     except BaseException:
         transport.close()
         raise
-    serial_box.append(session.info.serial)
+    finder.serial = session.info.serial
     return session
 
 
-def _open_emulator(
-    type_key: str,
-    serial: int,
-    device_id: str,
-    pacing: tuple[bool, bool],
-    can: CanOptions | None,
-) -> ValveSession:
+def _open_emulator(rest: str, device_id: str, options: LinkOptions) -> ValveSession:
     from prm9tool.device.emulated import cable_plugged
     from prm9tool.device.usb.session import UsbSession
     from prm9tool.device.usb.transport.emulator import EmulatorTransport
 
+    type_key, _, serial_text = rest.rpartition(":")
+    serial = int(serial_text)
+    link_paced = options.paced if options.link_paced is None else options.link_paced
     valve = emulated_valve(type_key, serial)
     if not cable_plugged(serial):
         raise DeviceDisconnectedError(f"the USB cable of the emulated valve {serial} is pulled")
     closers: list[Callable[[], None]] = []
     try:
-        if pacing[0]:
+        if options.paced:
             _run(valve)
             closers.append(lambda: _halt(valve))
-        if can is not None and valve.variant.canopen:
-            closers.append(_connect_can(valve, can))
-        transport = EmulatorTransport(valve, paced=pacing[1])
+        if options.can is not None and valve.variant.canopen:
+            closers.append(_connect_can(valve, options.can))
+        transport = EmulatorTransport(valve, paced=link_paced)
         return UsbSession(transport, device_id, on_close=lambda: _all(closers))
     except BaseException:
         _all(closers)
         raise
+
+
+def _open_can(rest: str, device_id: str, options: LinkOptions) -> ValveSession:
+    from prm9tool.device.canlink.session import CanopenSession
+
+    if not rest.isdigit():
+        raise Prm9Error(UNKNOWN_DEVICE.format(device_id))
+    bus = options.can_link or options.can or CanOptions()
+    return CanopenSession(bus, int(rest), type_key=options.type_key, label_key=options.label_key)
+
+
+# The link kinds, as python-can's BACKENDS: the device ID's prefix -> the function that opens it.
+LINKS: dict[str, LinkOpener] = {USB: _open_usb, EMULATOR: _open_emulator, CAN: _open_can}
 
 
 def join_can(session: ValveSession, options: CanOptions) -> bool:
@@ -426,8 +476,8 @@ def _connect_can(valve: EmulatedValve, options: CanOptions) -> Callable[[], None
 def stepped_here(valve: EmulatedValve) -> Iterator[EmulatedValve]:
     """Hold a paced emulated valve's real-time thread while a procedure steps the valve itself
     (the end-of-line test of an open valve runs as fast as the CPU allows), then run it again."""
-    with _LOCK:
-        running = _RUNNING.get(valve.serial, 0)
+    with EMULATED.lock:
+        running = EMULATED.running.get(valve.serial, 0)
     if running:
         _halt(valve)
     try:
@@ -438,17 +488,17 @@ def stepped_here(valve: EmulatedValve) -> Iterator[EmulatedValve]:
 
 
 def _run(valve: EmulatedValve) -> None:
-    with _LOCK:
-        count = _RUNNING.get(valve.serial, 0)
-        _RUNNING[valve.serial] = count + 1
+    with EMULATED.lock:
+        count = EMULATED.running.get(valve.serial, 0)
+        EMULATED.running[valve.serial] = count + 1
         if count == 0 and not valve.running:
             valve.start()
 
 
 def _halt(valve: EmulatedValve) -> None:
-    with _LOCK:
-        count = _RUNNING.get(valve.serial, 0) - 1
-        _RUNNING[valve.serial] = max(count, 0)
+    with EMULATED.lock:
+        count = EMULATED.running.get(valve.serial, 0) - 1
+        EMULATED.running[valve.serial] = max(count, 0)
         if count <= 0 and valve.running:
             valve.stop()
 

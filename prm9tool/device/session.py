@@ -90,6 +90,10 @@ class ValveSession(ABC):
     methods. Thread-safe as far as the link serializes its exchanges.
     """
 
+    # after the store, restart the valve and read every value back (the hydraulics are off: the
+    # caller confirmed it); a link with that step (CANopen) acts on it, the others ignore it
+    verify_by_restart = False
+
     def __init__(self, device_id: str, on_close: Callable[[], None] | None = None) -> None:
         self._device_id = device_id
         self._on_close: list[Callable[[], None]] = [on_close] if on_close is not None else []

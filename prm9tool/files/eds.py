@@ -16,7 +16,7 @@ from dataclasses import dataclass
 from datetime import datetime
 from enum import IntEnum
 
-from prm9tool import __version__
+from prm9tool._version import __version__
 from prm9tool.catalogue import CAPPED_BY, CATALOGUE, DataType, ObjAccess, Parameter
 from prm9tool.catalogue.pdo import mapping_for_control_mode
 from prm9tool.catalogue.typekey import TypeKey

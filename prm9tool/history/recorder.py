@@ -23,7 +23,7 @@ from datetime import UTC, datetime
 from pathlib import Path
 from typing import TYPE_CHECKING, Any, TypedDict
 
-from prm9tool import __version__
+from prm9tool._version import __version__
 from prm9tool.errors import HistoryError
 from prm9tool.history.chain import Entry
 from prm9tool.history.config import database_url, queue_path

@@ -32,10 +32,7 @@ def open_watch(bus: Mapping[str, object]) -> BusWatch:
     from prm9tool.device.canlink.bus import CanOptions
     from prm9tool.device.canlink.watch import BusWatch
 
-    rate = bus.get("bitrate")
-    return BusWatch(
-        CanOptions(str(bus["interface"]), str(bus["channel"]), int(str(rate)) if rate else None)
-    )
+    return BusWatch(CanOptions.from_mapping(bus))
 
 
 class HeardNode(Protocol):

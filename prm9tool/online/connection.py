@@ -21,14 +21,17 @@ from PySide6.QtCore import QObject, Qt, Signal
 from prm9tool.online.connection_live import LiveData
 from prm9tool.online.connection_reconnect import ReconnectLink
 from prm9tool.online.connection_worker import ConnectionWorker, Job
-from prm9tool.online.reconnect import LostValve
-from prm9tool.online.valve_listing import default_lister, default_opener, list_in_thread
+from prm9tool.service.reconnect import LostValve
+from prm9tool.service.valve_listing import default_lister, default_opener, list_in_thread
 
 if TYPE_CHECKING:
+    from pathlib import Path
+
     from prm9tool.device.session import ValveSession
     from prm9tool.history.recorder import Details, Recorder
     from prm9tool.online.connection_protocol import ListedValves, ValveIdentity, ValveListing
-    from prm9tool.online.recording import HistoryHook
+    from prm9tool.service.history import HistoryHook
+    from prm9tool.service.valve import ValveService
 
 log = logging.getLogger(__name__)
 
@@ -53,7 +56,7 @@ class ValveConnection(LiveData, QObject):
     history_problem = Signal(str)  # a record went to the local queue, or was lost (why)
     # a CANopen valve without 0x2041 whose type key is not known: (device ID, serial, "E02"/"E04")
     type_key_needed = Signal(str, int, str)
-    # the lost valve is looked for (online/reconnect.py): seconds since it was lost
+    # the lost valve is looked for (service/reconnect.py): seconds since it was lost
     reconnecting = Signal(float)
     reconnected = Signal(object)  # DeviceInfo: the same valve is back (online_changed follows)
     reconnect_ended = Signal()  # no longer looking (back, another valve, or the user decided)
@@ -79,16 +82,25 @@ class ValveConnection(LiveData, QObject):
         self._init_live()
         self._posted.connect(self._on_posted, Qt.ConnectionType.QueuedConnection)
         self.history: HistoryHook | None = None  # set_recorder(); used by the worker only
-        self.auto_reconnect = True  # look for a lost valve until it is back (online/reconnect.py)
+        self.auto_reconnect = True  # look for a lost valve until it is back (service/reconnect.py)
         self.lost_during_operation = False  # the last loss cut a long operation off
         self._reconnect = ReconnectLink(self)
 
     def set_recorder(self, recorder: Recorder) -> None:
         """Record every operation on the valve's parameter set into this history."""
-        from prm9tool.online.recording import HistoryHook
+        from prm9tool.service.history import HistoryHook
 
         report = lambda text: self._post(lambda: self.history_problem.emit(text))  # noqa: E731
         self.history = HistoryHook(recorder, report)
+
+    def service(self, session: ValveSession) -> ValveService:
+        """The valve service of the worker's session, recording into this connection's
+        history (worker thread only: the jobs call it with their session)."""
+        from prm9tool.service.valve import service_for
+
+        service = service_for(session)
+        service.history = self.history
+        return service
 
     def check_history(self, on_done: Callable[[object], None]) -> None:
         """Ask whether the history can take records; ``on_done(None or the HistoryError)`` runs
@@ -172,7 +184,8 @@ class ValveConnection(LiveData, QObject):
         """Write values to the valve; failures arrive as ``failed`` and ``write_failed``."""
         values, names = dict(values), list(values)
         failed = lambda: self.write_failed.emit(names)  # noqa: E731
-        self._submit(Job("write", lambda s: s.write_many(values), None, False, failed))
+        # checked as every door checks (read-only, range: the same words), then written
+        self._submit(Job("write", lambda s: self.service(s).write_raw(values), None, False, failed))
 
     def store(self, values: Mapping[str, int | str] | None = None) -> None:
         """Copy the valve's working values to its non-volatile memory; ``values`` (the whole
@@ -189,9 +202,7 @@ class ValveConnection(LiveData, QObject):
     def store_valve(self) -> None:
         """Valve → Store: what the valve works with becomes its stored set (the link's store),
         read back and recorded in the history; result: operation_finished("store", values)."""
-        from prm9tool.online.recording import store_and_read
-
-        self._long_job("store", lambda s: store_and_read(s, self.history, self._worker.progress))
+        self._long_job("store", lambda s: self.service(s).store(self._worker.progress))
 
     def read_many(self, mnemonics: Sequence[str], tag: str = "read") -> None:
         """Read values; the result arrives as operation_finished(tag, {mnemonic: raw})."""
@@ -208,20 +219,20 @@ class ValveConnection(LiveData, QObject):
         """
         values = dict(values)
 
-        def run(session: ValveSession) -> object:
-            if backup:
-                from prm9tool.files.backup import ensure_backup  # *.prm writing, only when needed
+        def backed_up(path: Path | None) -> None:
+            if path is not None:
+                self._post(lambda: self.backup_written.emit(str(path)))
 
-                path = ensure_backup(session, self._worker.progress, self._worker.cancel)
-                if path is not None:
-                    self._post(lambda: self.backup_written.emit(str(path)))
-                    if self.history is not None:
-                        self.history.backup(session, path)
-            if self.history is not None:
-                return self.history.upload(
-                    session, values, self._worker.progress, self._worker.cancel, purpose
-                )
-            return session.upload(values, self._worker.progress, self._worker.cancel)
+        def run(session: ValveSession) -> object:
+            # the one upload sequence (prm9tool.service.upload): rules, backup, upload, history
+            return self.service(session).upload(
+                values,
+                backup=backup,
+                progress=self._worker.progress,
+                cancel=self._worker.cancel,
+                purpose=purpose,
+                on_backup=backed_up,
+            )
 
         self._long_job("upload", run)
 
@@ -229,11 +240,14 @@ class ValveConnection(LiveData, QObject):
         """Read the valve's file parameters; result: operation_finished(tag, {mnemonic: raw})."""
 
         def run(session: ValveSession) -> object:
-            values = session.download(self._worker.progress, self._worker.cancel)
+            # the values first: the history database may take ~0.3 s to open, so the record
+            # is made now and written by a job queued right behind (even when the link is lost
+            # meanwhile: needs_session False)
+            values = self.service(session).download(
+                self._worker.progress, self._worker.cancel, tag, record_later=True
+            )
             hook = self.history
-            if hook is not None:  # the values first: the database may take ~0.3 s to open
-                hook.download_later(session, values, tag)
-                # written even when the link is lost meanwhile (needs_session False)
+            if hook is not None:
                 self._worker.jobs.put(Job("history", lambda _s: hook.write_later(), None, False,
                                           needs_session=False))  # fmt: skip
             return values
@@ -243,14 +257,30 @@ class ValveConnection(LiveData, QObject):
     def verify_by_restart(
         self, expected: Mapping[str, int | str], upload_store: str | None
     ) -> None:
-        """Restart the valve and read back that it kept ``expected`` (online/restart_verify.py;
+        """Restart the valve and read back that it kept ``expected`` (service/restart_verify.py;
         only after the hydraulics confirmation); result: operation_finished("verify_restart",
         RestartVerification), a valve that does not come back arrives as ``lost``."""
-        from prm9tool.online.restart_verify import verify_by_restart
+        from prm9tool.service.restart_verify import verify_by_restart
 
         values, progress = dict(expected), self._worker.progress
         work = lambda s: verify_by_restart(s, values, upload_store, self.history, progress)  # noqa: E731
         self._long_job("verify_restart", work)
+
+    def read_each(self, mnemonics: Sequence[str], tag: str) -> None:
+        """Read values one by one; result: operation_finished(tag, {mnemonic: raw or the
+        Prm9Error that refused it})."""
+        names = list(mnemonics)
+        self._long_job(tag, lambda s: self.service(s).read_each(names))
+
+    def restart_valve(self, tag: str) -> None:
+        """Restart (hydraulics confirmed off) and read the stored set; result:
+        operation_finished(tag, {mnemonic: raw})."""
+        self._long_job(tag, lambda s: self.service(s).restart_and_read())
+
+    def factory_reset(self, tag: str) -> None:
+        """Backup, restore the factory values, restart (hydraulics confirmed off), read back;
+        result: operation_finished(tag, (values, backup path or None))."""
+        self._long_job(tag, lambda s: self.service(s).factory_reset_and_read())
 
     def run_job(self, name: str, work: Callable[[ValveSession], object]) -> None:
         """Run ``work(session)`` as a long operation; result: operation_finished(name, …)."""

@@ -17,7 +17,7 @@ from typing import TYPE_CHECKING
 from PySide6.QtCore import QObject, Signal
 
 from prm9tool.online.connection_worker import Job
-from prm9tool.online.setpoint_driver import GENERATOR_OBJECTS
+from prm9tool.service.setpoint_driver import GENERATOR_OBJECTS
 
 if TYPE_CHECKING:
     from prm9tool.device.session import ValveSession
@@ -85,7 +85,7 @@ class LiveData(_Base):
 
     def start_generator(self, settings: GeneratorSettings) -> None:
         """Run the setpoint generator's waveform on the valve's setpoint, off the GUI thread
-        and on the valve's time base (:mod:`prm9tool.online.setpoint_driver`): the override
+        and on the valve's time base (:mod:`prm9tool.service.setpoint_driver`): the override
         over USB, RPDO1 over CANopen. A refused write arrives as ``failed`` and
         ``write_failed``."""
 

@@ -3,7 +3,7 @@
 The views get the connection injected (``prm9tool.online.connection.ValveConnection`` in the program,
 small fakes in the tests) and must not import the device layer. These protocols name exactly
 the signals and methods each view uses, so mypy checks the views against them and checks that
-``ValveConnection`` provides them (see the ``TYPE_CHECKING`` block at the end). Signals are
+``ValveConnection`` provides them (``online/conformance.py`` proves it to mypy). Signals are
 declared as read-only ``SignalInstance`` properties: a ``Signal`` class attribute of a QObject
 satisfies them.
 
@@ -263,7 +263,7 @@ class ScopeConnection(LinkState, Protocol):
 
     @property
     def is_reconnecting(self) -> bool:
-        """True while a lost valve is looked for (online/reconnect.py)."""
+        """True while a lost valve is looked for (service/reconnect.py)."""
 
     @property
     def stream_started(self) -> SignalInstance:
@@ -325,30 +325,3 @@ class StepSimulation(Protocol):
 
     def stop(self) -> None:
         """Drop pending requests and wait for a running simulation to end."""
-
-
-if TYPE_CHECKING:  # mypy proves that the real connection and records fit the protocols above
-    from prm9tool.device.factory import DeviceEntry
-    from prm9tool.device.records import DeviceInfo, UploadResult, ValveStatus
-    from prm9tool.online.connection import ValveConnection
-    from prm9tool.online.tuning import StepSimulator
-
-    def _conforms(connection: ValveConnection) -> None:
-        diagram: DiagramConnection = connection
-        parameters: ParameterConnection = connection
-        scope: ScopeConnection = connection
-        status: StatusConnection = connection
-        del diagram, parameters, scope, status
-
-    def _records(
-        info: DeviceInfo, entry: DeviceEntry, status: ValveStatus, upload: UploadResult
-    ) -> None:
-        identity: ValveIdentity = info
-        listing: ValveListing = entry
-        snapshot: StatusView = status
-        outcome: UploadOutcome = upload
-        del identity, listing, snapshot, outcome
-
-    def _simulates(simulator: StepSimulator) -> None:
-        simulation: StepSimulation = simulator
-        del simulation

@@ -1,5 +1,5 @@
 """The connection's side of finding a lost valve again: runs the :class:`Reconnector` loop
-(online/reconnect.py) for a :class:`~prm9tool.online.connection.ValveConnection`, reopens the
+(service/reconnect.py) for a :class:`~prm9tool.online.connection.ValveConnection`, reopens the
 valve it finds in the connection's worker and checks the serial number the valve tells.
 
 Everything here runs on the GUI thread except the loop (its own thread) and the reopening (the
@@ -11,22 +11,51 @@ from __future__ import annotations
 
 import logging
 from collections.abc import Callable, Mapping, Sequence
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING, Any, Protocol
 
 from prm9tool.online.connection_worker import Job
-from prm9tool.online.reconnect import MAX_PAUSE_S, LostValve, Reconnector
+from prm9tool.service.reconnect import MAX_PAUSE_S, LostValve, Reconnector
 
 if TYPE_CHECKING:
-    from prm9tool.online.connection import ValveConnection
+    from PySide6.QtCore import SignalInstance
+
+    from prm9tool.online.connection_worker import ConnectionWorker
+
 
 log = logging.getLogger("prm9tool.online.connection")
+
+
+class ReconnectHost(Protocol):
+    """What the loop needs of its connection (``ValveConnection`` fits it:
+    online/conformance.py)."""
+
+    @property
+    def _lister(self) -> Callable[..., Sequence[Any]]: ...
+    @property
+    def _worker(self) -> ConnectionWorker: ...
+
+    @property
+    def is_online(self) -> bool: ...
+    @property
+    def is_busy(self) -> bool: ...
+    @property
+    def reconnecting(self) -> SignalInstance: ...
+    @property
+    def reconnect_ended(self) -> SignalInstance: ...
+    @property
+    def other_valve(self) -> SignalInstance: ...
+
+    def _post(self, action: Callable[[], None]) -> None: ...
+    def _submit(self, job: Job) -> None: ...
+    def _set_busy(self, delta: int) -> None: ...
+    def _on_reopened(self, info: object) -> None: ...
 
 
 class ReconnectLink:
     """The loop of one connection: :meth:`prepare` when the link broke (before the connection
     reports it offline, so that its views know it is looked for), :meth:`go` after."""
 
-    def __init__(self, connection: ValveConnection) -> None:
+    def __init__(self, connection: ReconnectHost) -> None:
         self._conn = connection
         self.looking: Reconnector | None = None
 

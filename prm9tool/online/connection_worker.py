@@ -15,16 +15,18 @@ import threading
 import time
 from collections.abc import Callable
 from dataclasses import dataclass
-from typing import TYPE_CHECKING, cast
+from typing import TYPE_CHECKING, Protocol, cast
 
 from prm9tool.errors import CommunicationError, Prm9Error
-from prm9tool.online.polling import Poller, Schedule
-from prm9tool.online.setpoint_driver import SetpointDriver, StreamClock, setpoint_link
+from prm9tool.service.motion import MotionOwner, owner_of
+from prm9tool.service.polling import Poller, Schedule
+from prm9tool.service.setpoint_driver import SetpointDriver, StreamClock, setpoint_link
 from prm9tool.translate import error_text
 
 if TYPE_CHECKING:
+    from PySide6.QtCore import SignalInstance
+
     from prm9tool.device.session import ValveSession
-    from prm9tool.online.connection import ValveConnection
     from prm9tool.scope import GeneratorSettings  # not at run time: numpy, at start-up
 
 log = logging.getLogger("prm9tool.online.connection")
@@ -48,13 +50,44 @@ class Job:
 IDLE = Job("idle", lambda _s: None)
 
 
+class WorkerHost(Protocol):
+    """What the worker needs of its connection: the signals it reports through and the GUI
+    thread's side of a job (``ValveConnection`` fits it: online/conformance.py)."""
+
+    @property
+    def _stream_keys(self) -> list[str]: ...
+    @property
+    def failed(self) -> SignalInstance: ...
+    @property
+    def write_failed(self) -> SignalInstance: ...
+    @property
+    def progress(self) -> SignalInstance: ...
+    @property
+    def samples_received(self) -> SignalInstance: ...
+    @property
+    def status_changed(self) -> SignalInstance: ...
+    @property
+    def live_values_changed(self) -> SignalInstance: ...
+    @property
+    def signal_values_changed(self) -> SignalInstance: ...
+    @property
+    def generator_undone(self) -> SignalInstance: ...
+    @property
+    def type_key_needed(self) -> SignalInstance: ...
+
+    def _post(self, action: Callable[[], None]) -> None: ...
+    def _finish(self, job: Job, result: object) -> None: ...
+    def _report_lost(self, message: str) -> None: ...
+    def _set_samples_lost(self, count: int) -> None: ...
+
+
 class ConnectionWorker:
     """The worker side of one ValveConnection (``host``); ``opener(entry)`` opens a session,
     ``after_open(session)`` runs in a thread of its own once it is open."""
 
     def __init__(
         self,
-        host: ValveConnection,
+        host: WorkerHost,
         opener: Callable[[object], ValveSession],
         after_open: Callable[[ValveSession], object] | None,
     ) -> None:
@@ -67,6 +100,7 @@ class ConnectionWorker:
         self.poller = Poller()  # worker-side state of the periodic reads
         self.clock = StreamClock()  # the valve's time from its stream (the generator's)
         self._driver: SetpointDriver | None = None  # the running generator
+        self._driver_motion = MotionOwner()  # whose motion it owns (its session's)
         # (serial, {mnemonic: value}): what a generator cut off with its session had changed
         self._left_on: tuple[int, dict[str, int]] | None = None
         self._thread: threading.Thread | None = None
@@ -173,17 +207,27 @@ class ConnectionWorker:
             log.exception("after opening the session")
 
     def start_driver(self, session: ValveSession, settings: GeneratorSettings) -> None:
-        """Run the setpoint generator's waveform (a running one is replaced)."""
+        """Run the setpoint generator's waveform (a running one is replaced); it owns the
+        valve's motion (prm9tool.service.motion: MotionBusyError while another runs)."""
         self.stop_driver(session, switch_off=False)
-        driver = SetpointDriver(session, settings, self._on_driver_refused, self.clock)
-        driver.start()
-        self._driver = driver
+        motion = owner_of(session)
+        motion.take("generator")
+        try:
+            driver = SetpointDriver(session, settings, self._on_driver_refused, self.clock)
+            driver.start()
+        except BaseException:
+            motion.release("generator")
+            raise
+        self._driver, self._driver_motion = driver, motion
 
     def stop_driver(self, session: ValveSession | None, switch_off: bool) -> None:
         """End the waveform; ``switch_off``: give the valve its own setpoint back."""
         driver, self._driver = self._driver, None
         if driver is not None:
-            driver.stop(switch_off)
+            try:
+                driver.stop(switch_off)
+            finally:
+                self._driver_motion.release("generator")
         elif switch_off and session is not None:
             setpoint_link(session).release()  # what a previous session may have left on
 

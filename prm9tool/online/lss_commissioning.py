@@ -142,8 +142,7 @@ def change_rate_on_bus(bus: Mapping[str, object], bitrate: int) -> RateChanged:
 def _options(bus: Mapping[str, object]) -> Any:
     from prm9tool.device.canlink.bus import CanOptions
 
-    rate = bus.get("bitrate")
-    return CanOptions(str(bus["interface"]), str(bus["channel"]), int(str(rate)) if rate else None)
+    return CanOptions.from_mapping(bus)
 
 
 def scan_bus(bus: Mapping[str, object]) -> list[LssDevice]:

@@ -20,6 +20,7 @@ from shiboken6 import Shiboken
 from prm9tool.characterize.canrig import LinkTooSlowError, rig_for_session
 from prm9tool.characterize.rig import Rig
 from prm9tool.errors import CommunicationError, Prm9Error
+from prm9tool.service.motion import claim
 from prm9tool.translate import error_text
 
 if TYPE_CHECKING:
@@ -141,12 +142,16 @@ class ValveRunner(TuningRunner):
         self._originals = {}
         signal = getattr(self.connection, "status_changed", None)  # the job holds the link:
         publish = signal.emit if signal is not None else None  # the status the test reads
-        self.connection.run_job(  # goes to the main window's status bar, not polled meanwhile
-            f"tuning:{kind}",
-            lambda session: self._execute(
-                _recording(rig_for_session(session, link), self._originals, publish), procedure
-            ),
-        )
+        motion = {"report": "characterization", "autotune": "autotune"}.get(kind, "tuning")
+
+        def job(session: ValveSession) -> object:
+            # one owner of the valve's motion (MotionBusyError while a generator runs on it);
+            # the status the test reads goes to the main window's status bar (not polled)
+            with claim(session, motion):
+                rig = _recording(rig_for_session(session, link), self._originals, publish)
+                return self._execute(rig, procedure)
+
+        self.connection.run_job(f"tuning:{kind}", job)
 
     def _on_connection_lost(self, message: str) -> None:
         if self._kind:  # cut off: what it changed goes back when the valve is back

@@ -11,14 +11,12 @@ connection's worker thread; QtCore only, the device layer is reached through the
 
 from __future__ import annotations
 
-from collections.abc import Callable, Sequence
+from collections.abc import Callable
 from typing import TYPE_CHECKING
 
 from PySide6.QtCore import QT_TRANSLATE_NOOP, QCoreApplication, QObject, Signal
 
 from prm9tool.catalogue.commissioning import (
-    CONTROL_WORD,
-    DISABLE_SEQUENCE,
     Blocker,
     NmtCommand,
     blocker,
@@ -169,26 +167,17 @@ class ValveControl(QObject):
 
     # --- commissioning (every link) -----------------------------------------------------------
     def nmt(self, command: NmtCommand) -> None:
-        """Send an NMT command to the valve."""
-        self._connection.run("nmt", lambda s: s.nmt(int(command)))
+        """Send an NMT command to the valve (the valve service's, as a script's)."""
+        self._connection.run("nmt", lambda s: self._connection.service(s).nmt(command))
 
     def enable(self) -> None:
         """Control word 08h → 09h → 0Bh → 0Fh: from INIT (or a fault whose cause is gone) to
         DEVICE_MODE_ACTIVE; when the valve does not get there the job fails saying why."""
-        from prm9tool.device.enabling import enable
-
-        self._connection.run("control word", enable)
+        self._connection.run("control word", lambda s: self._connection.service(s).enable())
 
     def disable(self) -> None:
         """Control word 0Fh → 0Bh → 09h → 08h: back to INIT step by step."""
-        self._write_in_turn(DISABLE_SEQUENCE)
-
-    def _write_in_turn(self, words: Sequence[int]) -> None:
-        def run(session: ValveSession) -> None:
-            for word in words:
-                session.write(CONTROL_WORD, word)
-
-        self._connection.run("control word", run)
+        self._connection.run("control word", lambda s: self._connection.service(s).disable())
 
     # --- the emulated valve -------------------------------------------------------------------
     def set_input(self, name: str, value: float) -> None:

@@ -32,9 +32,9 @@ from PySide6.QtWidgets import (
 )
 from shiboken6 import isValid
 
+from prm9tool.catalogue.can_type_keys import remember
 from prm9tool.catalogue.typekey import TypeKey
 from prm9tool.errors import TypeKeyError
-from prm9tool.files.can_type_keys import remember
 from prm9tool.online.bus_monitor import BusMonitor, HeardNode
 from prm9tool.online.connection_protocol import ListedValves, ValveIdentity, ValveListing
 from prm9tool.online.lss_commissioning import LssCommissioning

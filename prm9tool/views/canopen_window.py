@@ -39,8 +39,8 @@ from prm9tool.model.access import AccessModel
 from prm9tool.model.document import ParameterDocument, Raw
 from prm9tool.model.editing import apply_edit
 from prm9tool.online.connection_protocol import ParameterConnection
-from prm9tool.online.polling import variant_of
 from prm9tool.online.sync import ValveSync
+from prm9tool.service.polling import variant_of
 from prm9tool.translate import error_text
 from prm9tool.views.canopen_tables import SwitchTables
 from prm9tool.views.diagram.colours import toned_style

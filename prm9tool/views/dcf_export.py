@@ -12,10 +12,8 @@ from pathlib import Path
 from PySide6.QtCore import QObject, Signal
 from PySide6.QtWidgets import QWidget
 
-from prm9tool.catalogue.canopen_switches import effective
-from prm9tool.files.atomicfile import atomic_write
-from prm9tool.files.dcf import export_dcf
 from prm9tool.model.document import ParameterDocument
+from prm9tool.service.export import SETTINGS, write_dcf
 from prm9tool.views import file_dialogs, prompts
 
 
@@ -43,14 +41,8 @@ class DcfExport(QObject):
         """Write the DCF of the document to ``path``."""
         doc = self._doc
         values = {m: doc.value(m) for m in doc.values}
-        value = doc.value
-        settings = effective(
-            *(int(value(m)) for m in ("SWBAUD", "SWNODE", "NODEID", "BITRATE", "CANTERM"))
-        )
-        node, rate = settings.node_id or int(value("NODEID")), settings.bitrate_kbit or 500
         try:
-            text = export_dcf(doc.type_key, values, node, rate)
-            atomic_write(path, text.encode("ascii", errors="replace"), backup=False)
+            node = write_dcf(path, doc.type_key, values, {m: doc.value(m) for m in SETTINGS})
         except OSError as exc:
             prompts.ask(
                 self._window,

@@ -18,7 +18,7 @@ from PySide6.QtWidgets import (
 )
 from shiboken6 import Shiboken
 
-from prm9tool import __version__
+from prm9tool._version import __version__
 from prm9tool.buildinfo import build_info
 from prm9tool.i18n import current_language
 from prm9tool.views import resources_rc  # noqa: F401  (registers the :/help/ resources)

@@ -107,7 +107,7 @@ def record_tuning_run(connection: Any, kind: str, result: Any) -> None:
 def record_report_saved(connection: Any, result: Any, pdf: str, loop: str) -> None:
     """Record that the test report of ``result`` was saved as ``pdf`` (with its figures, so
     the history names what failed and where the PDF is)."""
-    from prm9tool.online.recording import characterization_details
+    from prm9tool.service.history import characterization_details
 
     outcome, details = characterization_details(result)
     record_run(connection, "report-saved", outcome, {**details, "pdf": pdf, "loop": loop})

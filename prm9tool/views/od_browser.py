@@ -6,9 +6,6 @@ value: any column) through a QSortFilterProxyModel over the objects' model."""
 
 from __future__ import annotations
 
-from collections.abc import Callable
-from typing import Any
-
 from PySide6.QtCore import QModelIndex, QSortFilterProxyModel, Qt
 from PySide6.QtGui import QStandardItem, QStandardItemModel
 from PySide6.QtWidgets import (
@@ -36,21 +33,6 @@ from prm9tool.views.help_dialog import add_context_help
 
 READ_ALL = "od_read_all"
 COLUMNS = 6
-
-
-def read_every(mnemonics: list[str]) -> Callable[[Any], dict[str, object]]:
-    """The job for the worker: each value, or why it could not be read (as text)."""
-
-    def run(session: Any) -> dict[str, object]:
-        values: dict[str, object] = {}
-        for mnemonic in mnemonics:
-            try:
-                values[mnemonic] = session.read(mnemonic)
-            except Prm9Error as exc:
-                values[mnemonic] = exc
-        return values
-
-    return run
 
 
 class ObjectDictionaryDialog(QDialog):
@@ -116,7 +98,7 @@ class ObjectDictionaryDialog(QDialog):
     def read_all(self) -> None:
         """Read every object (in the connection's worker)."""
         self.read.setEnabled(False)
-        self._connection.run_job(READ_ALL, read_every([p.mnemonic for p in self._params]))
+        self._connection.read_each([p.mnemonic for p in self._params], READ_ALL)
 
     def _show_level(self) -> None:
         expert = self._access.level is Access.EXPERT

@@ -10,6 +10,7 @@ from __future__ import annotations
 import logging
 import threading
 import time
+from collections.abc import Mapping
 from dataclasses import dataclass, field
 from typing import TYPE_CHECKING, Any
 
@@ -58,15 +59,34 @@ class CanOptions:
     bitrate: int | None = None  # None: whatever the bus backend uses by default
 
     @classmethod
+    def of(
+        cls, interface: str | None = None, channel: str | None = None, bitrate: int | None = None
+    ) -> CanOptions:
+        """The options from loose settings; each one not given (None) is the default here.
+        The one place the command line, the API and the GUI's remembered bus become options."""
+        return cls(
+            interface if interface is not None else cls.interface,
+            channel if channel is not None else cls.channel,
+            bitrate,
+        )
+
+    @classmethod
     def from_args(cls, args: Any) -> CanOptions:
         """The options of the CLI's ``--can-interface/--can-channel/--can-bitrate`` (None: the
         default here)."""
-        given = {
-            "interface": args.can_interface,
-            "channel": args.can_channel,
-            "bitrate": args.can_bitrate,
-        }
-        return cls(**{name: value for name, value in given.items() if value is not None})
+        return cls.of(args.can_interface, args.can_channel, args.can_bitrate)
+
+    @classmethod
+    def from_mapping(cls, bus: Mapping[str, object]) -> CanOptions:
+        """The options of a bus the GUI remembers as a dict (``interface``, ``channel``,
+        ``bitrate``: a number, its text, or empty for the default)."""
+        rate = bus.get("bitrate")
+        interface, channel = bus.get("interface"), bus.get("channel")
+        return cls.of(
+            None if interface is None else str(interface),
+            None if channel is None else str(channel),
+            int(str(rate)) if rate else None,
+        )
 
     def __str__(self) -> str:
         rate = f", {self.bitrate} bit/s" if self.bitrate else ""

@@ -18,10 +18,10 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from prm9tool.catalogue import CATALOGUE
+from prm9tool.catalogue.can_type_keys import forget, remember, remembered
 from prm9tool.catalogue.typekey import TypeKey
 from prm9tool.catalogue.variant import Config
 from prm9tool.errors import TypeKeyError
-from prm9tool.files.can_type_keys import forget, remember, remembered
 
 __all__ = [
     "Derived",

@@ -4,7 +4,7 @@ Over USB through the override objects (while SETPOVRON = 1 the firmware takes it
 SETPOVR instead of the analog input), over CANopen through RPDO1 (0x6300/0x6380, manual table
 7-13; prm9tool.device.canlink.rpdo_setpoint).
 The waveform itself runs off the GUI thread, on the valve's own time base
-(``connection.start_generator``, :mod:`prm9tool.online.setpoint_driver`): exact to the
+(``connection.start_generator``, :mod:`prm9tool.service.setpoint_driver`): exact to the
 valve's 200 µs cycle on an emulated valve, timed against the sample stream over a link. This
 class is its switch: it starts it (the override goes on), stops it (SETPOVRON = 0) on Stop,
 when the scope closes and before the program goes offline, and stops and says why when the
@@ -21,8 +21,8 @@ from PySide6.QtCore import QObject, Signal
 from PySide6.QtWidgets import QComboBox, QDoubleSpinBox, QLabel, QPushButton, QWidget
 
 from prm9tool.online.connection_protocol import ScopeConnection
-from prm9tool.online.setpoint_driver import GENERATOR_OBJECTS
 from prm9tool.scope import GeneratorSettings, Waveform, setpoint_limits
+from prm9tool.service.setpoint_driver import GENERATOR_OBJECTS
 from prm9tool.views.scope.rows import SPACE, control_row, section_label
 
 OVERRIDE_OBJECTS = GENERATOR_OBJECTS  # a refusal of one of these stops the generator

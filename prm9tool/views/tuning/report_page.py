@@ -19,7 +19,7 @@ from prm9tool.characterize.run import (
     write_csv_files,
 )
 from prm9tool.i18n import format_significant
-from prm9tool.online.characterization_history import run_with_history
+from prm9tool.service.history import run_with_history
 from prm9tool.translate import error_text
 from prm9tool.views import file_dialogs
 from prm9tool.views.history_notes import record_report_saved

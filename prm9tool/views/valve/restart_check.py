@@ -9,7 +9,7 @@ time while the same valve stays online. It is offered on every link (USB: the re
 CANopen: NMT reset node) and says which store the upload made: "stored with 0x1010", "kept by
 the valve as written (it has no store command)", and after the check "verified after a restart".
 
-Nothing here touches the device: the connection runs prm9tool.online.restart_verify in its
+Nothing here touches the device: the connection runs prm9tool.service.restart_verify in its
 worker thread and reports a ``RestartVerification`` (or ``lost``, when the valve does not come
 back).
 """
@@ -23,8 +23,8 @@ from PySide6.QtWidgets import QDialog, QWidget
 
 from prm9tool.model.document import ParameterDocument, Raw
 from prm9tool.online.connection import ValveConnection
-from prm9tool.online.restart_verify import RestartVerification
 from prm9tool.online.sync import ValveSync
+from prm9tool.service.restart_verify import RestartVerification
 from prm9tool.views import prompts
 from prm9tool.views.online_dialogs import RestartDialog
 from prm9tool.views.operation_progress import OperationProgress

@@ -4,15 +4,14 @@ with the set it comes back with — the factory set taken into the document with
 named, or the restarted valve compared with the document as on going online (a changed node ID
 or bit rate may have moved it; the session followed).
 
-Nothing here touches the device: the connection runs the worker jobs at the end of this module
-in its worker thread and reports their results (``finished``).
+Nothing here touches the device: the connection runs the valve service's operations in its
+worker thread and reports their results (``finished``).
 """
 
 from __future__ import annotations
 
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass
-from typing import Any
 
 from PySide6.QtCore import QObject, QSettings
 from PySide6.QtWidgets import QDialog, QWidget
@@ -59,7 +58,7 @@ class ValveRestarts(QObject):
             if RestartDialog(self._window, factory=True).exec() != QDialog.DialogCode.Accepted:
                 return
             self._progress.start(FACTORY, self.tr("Restoring the factory values…"), False)
-            self._connection.run_job(FACTORY, _back_up_restore_factory_and_read)
+            self._connection.factory_reset(FACTORY)
             return
         answer = prompts.ask(
             self._window,
@@ -81,13 +80,14 @@ class ValveRestarts(QObject):
         device = self._connection.device
         self._restarted_from = device.device_id if device is not None else ""
         self._progress.start("restart", self.tr("Restarting the valve…"), cancellable=False)
-        self._connection.run_job(AFTER_RESTART, _restart_and_read)
+        self._connection.restart_valve(AFTER_RESTART)
 
     def finished(self, name: str, result: object) -> bool:
         """The connection finished operation ``name`` with ``result``; False when it is not
         one of these two."""
-        if name == FACTORY and isinstance(result, _FactoryReset):
-            self._on_factory_reset(result)
+        if name == FACTORY and isinstance(result, tuple):
+            values, backup = result
+            self._on_factory_reset(_FactoryReset(values, None if backup is None else str(backup)))
         elif name == AFTER_RESTART and isinstance(result, Mapping):
             self._report_restart()
             self._connection.record(
@@ -136,20 +136,3 @@ class _FactoryReset:
 
     values: dict[str, Raw]
     backup: str | None
-
-
-def _back_up_restore_factory_and_read(session: Any) -> _FactoryReset:
-    """Worker job: back the valve's parameters up (as before the first upload), reset them to
-    the factory values, which become effective after a restart, and read them back."""
-    from prm9tool.files.backup import ensure_backup  # *.prm writing, only when needed
-
-    path = ensure_backup(session)
-    session.restore_factory()
-    session.restart()
-    return _FactoryReset(dict(session.download()), None if path is None else str(path))
-
-
-def _restart_and_read(session: Any) -> dict[str, Raw]:
-    """Worker job: restart, then read the (stored) parameters the valve runs with now."""
-    session.restart()
-    return dict(session.download())

@@ -1,29 +1,27 @@
-"""Finding and opening valves for the connection: the device factory's listing (USB, emulated
-valves, the nodes on a CAN bus) and opening, imported only when used; the CAN bus the GUI
-remembers as a dict, turned into the factory's options."""
+"""Finding and opening valves for the window's connection: the device factory's listing (USB,
+emulated valves, the nodes on a CAN bus) and opening, imported only when used; the CAN bus the
+GUI remembers as a dict, turned into the factory's options. No Qt."""
 
 from __future__ import annotations
 
 import contextlib
 import threading
 from collections.abc import Callable, Mapping, Sequence
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, TypeVar
 
 if TYPE_CHECKING:
     from prm9tool.device.canlink.bus import CanOptions
     from prm9tool.device.factory import DeviceEntry
     from prm9tool.device.session import ValveSession
-    from prm9tool.online.connection_protocol import ValveListing
+
+Listed = TypeVar("Listed")  # what the lister lists (DeviceEntry; the views see ValveListing)
 
 
 def can_options(bus: Mapping[str, object]) -> CanOptions:
     """The device factory's ``CanOptions`` of ``bus`` (``interface``, ``channel``, ``bitrate``)."""
     from prm9tool.device import factory
 
-    rate = bus.get("bitrate")
-    return factory.CanOptions(
-        str(bus["interface"]), str(bus["channel"]), int(str(rate)) if rate else None
-    )
+    return factory.CanOptions.from_mapping(bus)
 
 
 def default_lister(
@@ -47,10 +45,10 @@ def default_opener(entry: object) -> ValveSession:
 
 
 def list_in_thread(
-    lister: Callable[..., Sequence[ValveListing]],
+    lister: Callable[..., Sequence[Listed]],
     emulators: Sequence[str],
     can: Mapping[str, object] | None,
-    deliver: Callable[[list[ValveListing] | Exception], None],
+    deliver: Callable[[list[Listed] | Exception], None],
 ) -> None:
     """``lister(emulators[, can])`` in a thread of its own; ``deliver`` gets the entries or the
     exception listing raised (e.g. a broken USB stack: the caller says so)."""
@@ -59,7 +57,7 @@ def list_in_thread(
 
     def run() -> None:
         try:
-            found: list[ValveListing] | Exception = list(
+            found: list[Listed] | Exception = list(
                 lister(specs) if bus is None else lister(specs, bus)
             )
         except Exception as exc:

@@ -1,10 +1,14 @@
-"""The GUI's history hook: what the connection's worker thread records, and how.
+"""The history as one observer of a valve's operations: :class:`HistoryHook`.
 
-Runs in the worker thread beside the valve I/O, so a slow database never freezes the window.
+The service (:class:`prm9tool.service.valve.ValveService`) attaches one when a valve is opened
+(unless the caller turns history off) and every operation records through it, whichever door
+started it: the GUI's worker thread, a script's :class:`~prm9tool.api.valve.Valve`, the
+command line. In the GUI it runs in the worker thread beside the valve I/O, so a slow
+database never freezes the window.
 Recording never raises: a record the database cannot take waits in the local queue (see
 :mod:`prm9tool.history.recorder`), and a problem is handed to ``report`` (the connection shows
 it). Whether an upload may start while the database is away is decided before the upload,
-by the user (``ValveConnection.check_history``). QtCore-free.
+by the user (``ValveConnection.check_history``). No Qt.
 """
 
 from __future__ import annotations
@@ -12,7 +16,8 @@ from __future__ import annotations
 import threading
 from collections.abc import Callable, Mapping
 from pathlib import Path
-from typing import TYPE_CHECKING
+from types import SimpleNamespace
+from typing import TYPE_CHECKING, Any
 
 from prm9tool.catalogue import CATALOGUE
 from prm9tool.errors import CommunicationError, FileFormatError, HistoryError
@@ -22,6 +27,7 @@ if TYPE_CHECKING:
     from prm9tool.characterize.run import Characterization
     from prm9tool.device.records import UploadResult
     from prm9tool.device.session import ValveSession
+    from prm9tool.history.identity import ValveIdentity
 
 Raw = int | str
 Progress = Callable[[int, int, str], None]
@@ -53,18 +59,34 @@ class HistoryHook:
     ) -> None:
         """Record one operation on the session's valve; ``details``: a :class:`Details`
         (what the GUI's own jobs pass through ``ValveConnection.record`` is still a mapping)."""
-        details = {**(details or {}), **self._context}
+        self.record(session.info, operation, outcome, parameters, details, failed_step)
+
+    def record(
+        self,
+        valve: ValveIdentity,
+        operation: str,
+        outcome: str,
+        parameters: Mapping[str, Raw] | None,
+        details: Details | Mapping[str, object] | None = None,
+        failed_step: str | None = None,
+    ) -> str:
+        """Record one operation on ``valve`` (its type key, serial, firmware, device ID: a
+        session's ``info``, a ``--batch`` report's valve record) — the one place every
+        record is written. Returns ``recorded``, ``queued`` (the database is away: the
+        record waits in the local queue) or ``not recorded: why``; never raises."""
+        merged = {**(details or {}), **self._context}
         try:
             status = self.recorder.record(
-                session.info, operation, outcome, parameters, details, failed_step
+                valve, operation, outcome, parameters, merged, failed_step
             )
         except HistoryError as exc:
             self._report(str(exc))
-            return
+            return f"not recorded: {exc}"
         if status == "queued":
             self._report(
                 f"the history database cannot be reached; the record waits in {self.recorder.queue}"
             )
+        return status
 
     def download(self, session: ValveSession, values: Mapping[str, Raw], purpose: str) -> None:
         """Record a download (also the one that compares document and valve)."""
@@ -105,6 +127,17 @@ class HistoryHook:
         """Record an end-of-line test run on the session's valve (as ``--characterize``'s)."""
         outcome, details = characterization_details(result)
         self.add(session, "characterization", outcome, result.parameters, details)
+
+    def characterization_of(self, result: Characterization) -> None:
+        """Record an end-of-line test run on the valve ``result.info`` names (a run on a rig,
+        without the session at hand: the tuning window's test report, ``--characterize``):
+        outcome ``passed``/``failed``, the parameter set the valve ran with (read at the
+        start of the run), every figure with its verdict (:func:`characterization_details`)."""
+        info = result.info
+        valve = SimpleNamespace(type_key=info.type_key, serial=info.serial, firmware=info.firmware,
+                                device_id=info.device_id or info.link)  # fmt: skip
+        outcome, details = characterization_details(result)
+        self.record(valve, "characterization", outcome, result.parameters, details)
 
     def upload(
         self,
@@ -170,3 +203,43 @@ def store_and_read(
     if history is not None:
         history.add(session, "store", "ok", values, {"command": "Valve → Store"})
     return values
+
+
+def record_characterization(recorder: Recorder, result: Characterization) -> None:
+    """One ``characterization`` record of the valve the run names (never raises), through the
+    observer: what ``--characterize`` records after its run."""
+    import logging
+
+    log = logging.getLogger("prm9tool.history")
+    HistoryHook(recorder, lambda problem: log.error("history: %s", problem)).characterization_of(
+        result
+    )
+
+
+def run_with_history(connection: Any, run: Callable[[], Characterization]) -> Characterization:
+    """``run()`` (a characterization on the connection's valve, in the GUI's worker) with its
+    result recorded into the connection's history (``connection.history``, a
+    :class:`HistoryHook`); offline (the simulated valve) or with history off nothing is
+    recorded; a run that raises records nothing."""
+    result = run()
+    hook = getattr(connection, "history", None)
+    if hook is not None and getattr(connection, "is_online", False):
+        hook.characterization_of(result)
+    return result
+
+
+def open_history(
+    url: str | None = None, command: str = "", report: Callable[[str], None] | None = None
+) -> HistoryHook:
+    """The observer a valve gets when it is opened with history on: records into the
+    database ``url`` (default the configured one), every record with ``command`` (what ran
+    it) in its details; ``report`` hears a record the database could not take (default:
+    the ``prm9tool.history`` logger's warning). The database opens on the first record."""
+    import logging
+
+    from prm9tool.history.recorder import Recorder
+
+    if report is None:
+        log = logging.getLogger("prm9tool.history")
+        report = lambda problem: log.warning("history: %s", problem)  # noqa: E731
+    return HistoryHook(Recorder(url), report, {"command": command} if command else None)

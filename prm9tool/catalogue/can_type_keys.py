@@ -11,8 +11,8 @@ from __future__ import annotations
 import json
 from pathlib import Path
 
+from prm9tool.atomicfile import atomic_write
 from prm9tool.catalogue.typekey import TypeKey
-from prm9tool.files.atomicfile import atomic_write
 
 FILE_NAME = "can-type-keys.json"
 

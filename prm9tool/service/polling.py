@@ -7,7 +7,7 @@ from __future__ import annotations
 import logging
 import math
 from dataclasses import dataclass, field
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING, Any, Protocol
 
 from prm9tool.catalogue import CATALOGUE
 from prm9tool.catalogue.signals import MAX_CHANNELS, SIGNAL_OBJECTS, signals_for
@@ -20,7 +20,6 @@ if TYPE_CHECKING:
 
     from prm9tool.device.records import DeviceInfo, ValveStatus
     from prm9tool.device.session import ValveSession
-    from prm9tool.online.connection_protocol import ValveIdentity
 
 log = logging.getLogger(__name__)
 WATCH_RATE_HZ = 250  # the slow stream that refreshes the diagram's measuring points
@@ -41,7 +40,15 @@ class PollResult:
     samples_lost: int | None = None  # lost samples of the running stream, when the count changed
 
 
-def variant_of(info: ValveIdentity | None) -> Variant | None:
+class Identified(Protocol):
+    """Anything that names a valve's type key (a DeviceInfo, the views' ValveIdentity)."""
+
+    @property
+    def type_key(self) -> str:
+        """The type key, e.g. ``PRM9-06.3Z11/30-24E02S02-CA``."""
+
+
+def variant_of(info: Identified | None) -> Variant | None:
     """The variant of a DeviceInfo's type key (None offline or if it cannot be parsed)."""
     if info is None:
         return None

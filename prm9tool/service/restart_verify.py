@@ -24,7 +24,7 @@ from prm9tool.errors import CommunicationError
 if TYPE_CHECKING:
     from prm9tool.device.session import ValveSession
     from prm9tool.history.recorder import Details
-    from prm9tool.online.recording import HistoryHook
+    from prm9tool.service.history import HistoryHook
 
 Raw = int | str
 Progress = Callable[[int, int, str], None]

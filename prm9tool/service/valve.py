@@ -1,0 +1,342 @@
+"""One open valve as every front door uses it: :class:`ValveService`.
+
+The GUI's worker thread (``online/connection.py``), the command line (``cli/``) and the Python
+API (:class:`prm9tool.api.valve.Valve`) each hold a session of the device layer
+(:class:`~prm9tool.device.session.ValveSession`) and run the operations below on it through
+the valve's service: the checks of a user's value, the upload sequence, the history records,
+who owns the valve's motion and what an NMT command this program sent means for the answers
+that follow. One service per session (:func:`service_for`), so every door on one open valve
+shares its state. No Qt.
+"""
+
+from __future__ import annotations
+
+import os
+import threading
+import weakref
+from collections.abc import Callable, Mapping
+from pathlib import Path
+from typing import TYPE_CHECKING
+
+from prm9tool.catalogue import CATALOGUE, Parameter
+from prm9tool.catalogue.commissioning import (
+    CONTROL_WORD,
+    DISABLE_SEQUENCE,
+    NmtCommand,
+)
+from prm9tool.catalogue.typekey import TypeKey
+from prm9tool.errors import CommunicationError, DeviceTimeoutError, Prm9Error
+from prm9tool.service import motion, upload
+from prm9tool.service.values import ReadOnlyError, check_rules, read_only_text, user_value
+
+if TYPE_CHECKING:
+    from prm9tool.analysis.profile import Profile
+    from prm9tool.characterize.run import Characterization
+    from prm9tool.device.records import Progress, UploadResult, Value, ValveStatus
+    from prm9tool.device.session import ValveSession
+    from prm9tool.history.recorder import Details
+    from prm9tool.service.history import HistoryHook
+
+__all__ = ["NmtStoppedError", "ValveService", "characterize_session", "parse_nmt", "service_for"]
+
+
+class NmtStoppedError(DeviceTimeoutError):
+    """The valve does not answer because this program stopped it by NMT (manual §7.2)."""
+
+
+def parse_nmt(command: NmtCommand | str | int) -> NmtCommand:
+    """An :class:`NmtCommand`, its name (``"start"``, ``"pre-operational"`` …) or its code."""
+    if isinstance(command, NmtCommand):
+        return command
+    if isinstance(command, int):
+        return NmtCommand(command)
+    name = command.strip().upper().replace("-", "_").replace(" ", "_")
+    if name not in NmtCommand.__members__:
+        known = ", ".join(m.lower().replace("_", "-") for m in NmtCommand.__members__)
+        raise ValueError(f"unknown NMT command {command!r}: one of {known}")
+    return NmtCommand[name]
+
+
+STOPPED_TEXT = (
+    "the valve does not answer: this program stopped it (NMT stop), and a stopped valve "
+    "answers no SDO (manual §7.2); send NMT start or pre-operational first"
+)
+
+
+class ValveService:
+    """The operations on one open valve, the same for every door.
+
+    ``history``: the observer that records every operation (None: history off). Thread-safe
+    as far as the link serializes its exchanges; the motion owner is thread-safe.
+    """
+
+    def __init__(self, session: ValveSession, history: HistoryHook | None = None) -> None:
+        # weakly: service_for keeps one service per session without keeping the session alive
+        self._session = weakref.ref(session)
+        self.history = history
+        self.motion = motion.owner_of(session)
+        self.variant = TypeKey.parse(session.info.type_key).variant
+        self._params = {p.mnemonic: p for p in CATALOGUE.for_variant(self.variant)}
+        self._stopped = False  # this program sent NMT stop and nothing since
+
+    # --- who ------------------------------------------------------------------------------
+    @property
+    def session(self) -> ValveSession:
+        """The device layer's session of this valve (whoever uses the service holds it)."""
+        session = self._session()
+        if session is None:
+            raise CommunicationError("the valve's session is closed")
+        return session
+
+    @property
+    def type_key(self) -> TypeKey:
+        """The valve's type key, parsed."""
+        return TypeKey.parse(self.session.info.type_key)
+
+    def parameter(self, mnemonic: str) -> Parameter:
+        """The catalogue entry of one of this valve's parameters; KeyError names the valve."""
+        param = self._params.get(mnemonic)
+        if param is None:
+            raise KeyError(f"{mnemonic!r} is not a parameter on a {self.variant.label} valve")
+        return param
+
+    # --- single values --------------------------------------------------------------------
+    def check(self, values: Mapping[str, object]) -> dict[str, Value]:
+        """The raw values of ``values`` (display values or texts as typed) if this valve
+        would take them: each as :func:`~prm9tool.service.values.user_value` checks it, then
+        together with the valve's caps (LIMTA at most its CURNORM). Sends nothing."""
+        raw = {m: user_value(self.parameter(m), v) for m, v in values.items()}
+        check_rules(self.session, raw)
+        return raw
+
+    def check_raw(self, values: Mapping[str, Value]) -> None:
+        """Raw values as the window's document holds them: writable and in range (the
+        document checked the rules); the same words as :meth:`check`. A mnemonic this valve
+        lacks is left to the link, which names it."""
+        for mnemonic, raw in values.items():
+            param = self._params.get(mnemonic)
+            if param is None:
+                continue
+            if not param.writable:
+                raise ReadOnlyError(read_only_text(mnemonic))
+            param.check_raw(raw)
+
+    def write_raw(self, values: Mapping[str, Value]) -> None:
+        """Write raw values. A value out of range is refused before anything is sent; a
+        read-only parameter among them is not sent, the others are written, then
+        ReadOnlyError names it (the window's bulk write of a document's differences)."""
+        read_only = [m for m in values if m in self._params and not self._params[m].writable]
+        writable = {m: v for m, v in values.items() if m not in read_only}
+        self.check_raw(writable)
+        if writable:
+            self.session.write_many(writable)
+        if read_only:
+            raise ReadOnlyError(read_only_text(read_only[0]))
+
+    def read_each(self, mnemonics: list[str]) -> dict[str, Value | Prm9Error]:
+        """Each value one by one, or why the valve could not give it (the object-dictionary
+        browser's Read all: one refusal does not hide the others)."""
+        values: dict[str, Value | Prm9Error] = {}
+        for mnemonic in mnemonics:
+            try:
+                values[mnemonic] = self.session.read(mnemonic)
+            except Prm9Error as exc:
+                values[mnemonic] = exc
+        return values
+
+    def status(self) -> ValveStatus:
+        """Device state, errors, LEDs, NMT state now. A valve this program stopped by NMT
+        says so instead of asking whether it is powered."""
+        try:
+            return self.session.status()
+        except DeviceTimeoutError as exc:
+            if self._stopped:
+                raise NmtStoppedError(f"{STOPPED_TEXT} ({exc})") from exc
+            raise
+
+    # --- commissioning --------------------------------------------------------------------
+    def nmt(self, command: NmtCommand | str | int) -> None:
+        """Send an NMT command as the valve's CANopen master would (manual §7.2)."""
+        code = parse_nmt(command)
+        self.session.nmt(int(code))
+        self._stopped = code is NmtCommand.STOP
+
+    def enable(self) -> ValveStatus:
+        """Control word 08h → 09h → 0Bh → 0Fh (manual §7.4, table 7-19): from INIT or a fault
+        whose cause is gone to DEVICE_MODE_ACTIVE; the valve then follows its setpoint.
+        Returns the status read back; raises :class:`~prm9tool.device.enabling.NotEnabledError`
+        saying why (which error is still present, what to do) when it does not get there."""
+        from prm9tool.device.enabling import enable
+
+        return enable(self.session)
+
+    def disable(self) -> None:
+        """Control word 0Fh → 0Bh → 09h → 08h: back to INIT step by step."""
+        for word in DISABLE_SEQUENCE:
+            self.session.write(CONTROL_WORD, word)
+
+    def commission(self) -> ValveStatus:
+        """What the window's "Enable it now?" does: NMT start when the valve waits in
+        pre-operational or stopped, then the enable sequence; returns the status after."""
+        status = self.session.status()
+        if str(status.nmt_state) in ("pre-operational", "stopped"):
+            self.nmt(NmtCommand.START)
+        return self.enable()
+
+    # --- the parameter set ----------------------------------------------------------------
+    def download(
+        self,
+        progress: Progress | None = None,
+        cancel: threading.Event | None = None,
+        purpose: str = "",
+        record_later: bool = False,
+    ) -> dict[str, Value]:
+        """The valve's parameter set (working values), recorded as a download; with
+        ``record_later`` the record is made now and written by the history's ``write_later``
+        (the GUI: the values need not wait for the database to open)."""
+        values = dict(self.session.download(progress, cancel))
+        if self.history is not None:
+            record = self.history.download_later if record_later else self.history.download
+            record(self.session, values, purpose)
+        return values
+
+    def upload(
+        self,
+        values: Mapping[str, Value],
+        *,
+        backup: bool = True,
+        rules: bool = True,
+        verify_by_restart: bool = False,
+        progress: Progress | None = None,
+        cancel: threading.Event | None = None,
+        purpose: str = "",
+        on_backup: Callable[[Path | None], None] | None = None,
+    ) -> UploadResult:
+        """:func:`prm9tool.service.upload.upload` with this valve's history."""
+        return upload.upload(
+            self.session, values, history=self.history, backup=backup, rules=rules,
+            verify_by_restart=verify_by_restart, progress=progress, cancel=cancel,
+            purpose=purpose, on_backup=on_backup,
+        )  # fmt: skip
+
+    def store(self, progress: Progress | None = None) -> dict[str, Value]:
+        """The working parameters become the stored ones, read back and recorded."""
+        from prm9tool.service.history import store_and_read
+
+        return store_and_read(self.session, self.history, progress)
+
+    def backup(
+        self, progress: Progress | None = None, cancel: threading.Event | None = None
+    ) -> Path | None:
+        """The valve's backup file unless it has one (recorded); the new file or None."""
+        from prm9tool.files.backup import ensure_backup
+
+        path = ensure_backup(self.session, progress, cancel)
+        if path is not None and self.history is not None:
+            self.history.backup(self.session, path)
+        return path
+
+    def restore_factory(self, backup: bool = True) -> Path | None:
+        """Reset the stored parameters to the factory values (they take effect at the next
+        restart), after the backup; recorded without a parameter set."""
+        path = self.backup() if backup else None
+        self.session.restore_factory()
+        if self.history is not None:
+            details: Details = {"backup": None if path is None else str(path)}
+            self.history.add(self.session, "restore-factory", "ok", None, details)
+        return path
+
+    def restart(self) -> None:
+        """Restart the valve's electronics and reconnect (the caller confirmed that the
+        hydraulics are off: the spool moves to its rest position while it boots)."""
+        self.session.restart()
+        self._stopped = False  # it boots into pre-operational
+
+    def restart_and_read(self) -> dict[str, Value]:
+        """:meth:`restart`, then read the stored parameters the valve runs with now."""
+        self.restart()
+        return dict(self.session.download())
+
+    def factory_reset_and_read(self) -> tuple[dict[str, Value], Path | None]:
+        """The window's Restore factory values online: the backup (as before the first
+        upload), the reset, the restart that makes it effective (hydraulics confirmed off),
+        and the factory set read back; returns it and the new backup file (None: it had
+        one). The caller records it with the set read back."""
+        from prm9tool.files.backup import ensure_backup  # *.prm writing, only when needed
+
+        path = ensure_backup(self.session)
+        self.session.restore_factory()
+        self.session.restart()
+        return dict(self.session.download()), path
+
+    # --- motion ---------------------------------------------------------------------------
+    def characterize(
+        self, profile: Profile | str | os.PathLike[str] | None = None,
+        progress: Callable[[str], None] | None = None,
+    ) -> Characterization:  # fmt: skip
+        """The end-of-line test (``--characterize``'s) on this valve, recorded; refused with
+        MotionBusyError while another motion (a generator) runs on it."""
+        with motion.claim(self.session, "characterization"):
+            result = characterize_session(self.session, profile, progress)
+        if self.history is not None:
+            self.history.characterization(self.session, result)
+        return result
+
+    # --- files ----------------------------------------------------------------------------
+    def export_dcf(self, path: str | os.PathLike[str]) -> int:
+        """The valve's CiA 306 DCF with its working values (downloaded now) and the node ID
+        and bit rate it runs with after power-up; returns that node ID."""
+        from prm9tool.device.session import NotAvailableError
+        from prm9tool.service.export import SETTINGS, write_dcf
+
+        values = dict(self.session.download())
+        settings: dict[str, Value] = {}
+        for mnemonic in SETTINGS:
+            if mnemonic in values or mnemonic not in self._params:
+                continue
+            try:
+                settings.update(self.session.read_many([mnemonic]))
+            except (NotAvailableError, CommunicationError):  # not on this link
+                continue
+        return write_dcf(path, self.session.info.type_key, values, {**values, **settings})
+
+
+def characterize_session(
+    session: ValveSession,
+    profile: Profile | str | os.PathLike[str] | None,
+    progress: Callable[[str], None] | None,
+) -> Characterization:
+    """The end-of-line test on an open session (the rig its link gives)."""
+    from prm9tool.analysis.profile import DEFAULT, load_profile
+    from prm9tool.analysis.profile import Profile as ProfileType
+    from prm9tool.characterize.canrig import rig_for_session
+    from prm9tool.characterize.rig import EmulatorRig
+    from prm9tool.characterize.run import characterize as run
+
+    if profile is None:
+        profile = DEFAULT
+    elif not isinstance(profile, ProfileType):
+        profile = load_profile(os.fspath(profile))
+    if session.emulator is None:
+        return run(rig_for_session(session), profile, progress)
+    from prm9tool.device.factory import emulated_valve, stepped_here
+
+    # an emulated valve is stepped as fast as the CPU allows, as --characterize --emulator does
+    with stepped_here(emulated_valve(session.info.type_key, session.info.serial)) as valve:
+        return run(EmulatorRig(valve), profile, progress)
+
+
+_SERVICES: weakref.WeakKeyDictionary[object, ValveService] = weakref.WeakKeyDictionary()
+_LOCK = threading.Lock()
+
+
+def service_for(session: ValveSession, history: HistoryHook | None = None) -> ValveService:
+    """The one service of an open session (made on first use; ``history`` attaches the
+    observer when given)."""
+    with _LOCK:
+        service = _SERVICES.get(session)
+        if service is None:
+            service = _SERVICES[session] = ValveService(session, history)
+        elif history is not None:
+            service.history = history
+        return service

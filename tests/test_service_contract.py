@@ -1,0 +1,172 @@
+"""The valve service behind every front door (issue 28): the same operation through the Python
+API, the command line and the GUI's worker (ValveConnection) on the same emulated valves gives
+the same result, the same words for the same refusal and the same history record."""
+
+from __future__ import annotations
+
+import pytest
+from gui_support import E02, emulator_connection
+
+import prm9tool
+from prm9tool.cli.main import main
+from prm9tool.device import factory
+from prm9tool.errors import AccessDeniedError, Prm9Error, ValueRangeError
+from prm9tool.files.prmfile import PrmContents, write_file
+from prm9tool.history.recorder import Recorder
+from prm9tool.online.tuning_runner import ValveRunner
+from prm9tool.scope.generator import GeneratorSettings, Waveform
+from prm9tool.service.motion import MotionBusyError
+
+TIMEOUT = 15_000
+
+
+@pytest.fixture
+def connection(qtbot):
+    conn = emulator_connection()
+    yield conn
+    conn.shutdown()
+    factory.forget_emulated_valves()
+
+
+def _online(qtbot, connection, serial):
+    entry = factory.list_devices([f"{E02}:{serial}"])[-1]
+    with qtbot.waitSignals([connection.online_changed, connection.device_changed], timeout=TIMEOUT):
+        connection.go_online(entry)
+
+
+def _gui_refusal(qtbot, connection, mnemonic, raw):
+    with qtbot.waitSignal(connection.failed, timeout=TIMEOUT) as failed:
+        connection.write(mnemonic, raw)
+    return failed.args[0]
+
+
+def _api_refusal(serial, mnemonic, value):
+    with prm9tool.connect(f"emulator:{E02}:{serial}", record_history=False) as valve:
+        before = valve[mnemonic]
+        with pytest.raises(Prm9Error) as refused:
+            valve[mnemonic] = value
+        assert valve[mnemonic] == before  # nothing was sent
+    return refused.value
+
+
+def _cli_refusal(capsys, serial, assignment):
+    assert main(["--emulator", f"{E02}:{serial}", "--set", assignment]) == 2
+    return capsys.readouterr().err
+
+
+@pytest.mark.parametrize(
+    ("mnemonic", "value", "words", "kind"),
+    [
+        ("CURNORM", 1000, "CURNORM: the parameter is read-only", AccessDeniedError),
+        ("LIMTA", 99999, "LIMTA: 99999 mA is outside", ValueRangeError),
+    ],
+)
+def test_a_refused_write_has_the_same_words_at_every_door(
+    qtbot, connection, capsys, mnemonic, value, words, kind
+):
+    api = _api_refusal(7301, mnemonic, value)
+    assert isinstance(api, kind) and str(api).startswith(words)
+    cli = _cli_refusal(capsys, 7302, f"{mnemonic}={value}")
+    assert (words in cli and "nothing was written" in cli) or "read-only" in cli
+    _online(qtbot, connection, 7303)
+    assert words in _gui_refusal(qtbot, connection, mnemonic, value)
+
+
+def test_not_a_number_has_the_same_words_in_the_api_and_on_the_command_line(capsys):
+    api = _api_refusal(7304, "LIMTA", "abc")
+    assert isinstance(api, ValueRangeError)
+    assert str(api) in _cli_refusal(capsys, 7305, "LIMTA=abc")
+
+
+def _history(serial):
+    return [(r["operation"], r["outcome"]) for r in prm9tool.history.records(serial)]
+
+
+def test_an_upload_runs_the_same_sequence_at_every_door(qtbot, connection, tmp_path):
+    # the same file into three fresh valves: backup first (recorded), then the upload
+    with prm9tool.connect(f"emulator:{E02}:7311", record_history=False) as valve:
+        wanted = valve.download()
+    values = {**wanted.raw, "LIMTA": 1700}
+    path = tmp_path / "set.prm"
+    write_file(PrmContents(wanted.type_key, values), path, backup=False)
+
+    with prm9tool.connect(f"emulator:{E02}:7312") as valve:  # the API
+        result = valve.upload(prm9tool.read_prm(path))
+        assert result.stored
+    assert main(["--batch", str(path), "--emulator", f"{E02}:7313"]) == 0  # the command line
+    connection.set_recorder(Recorder())  # as the app does
+    _online(qtbot, connection, 7314)  # the GUI's worker
+    with qtbot.waitSignal(connection.operation_finished, timeout=TIMEOUT) as done:
+        connection.upload(values)
+    assert done.args[0] == "upload" and done.args[1].stored
+
+    for serial in (7312, 7313, 7314):
+        with prm9tool.connect(f"emulator:{E02}:{serial}", record_history=False) as valve:
+            assert valve["LIMTA"] == 1700
+    assert _history(7312) == _history(7314) == [("backup", "ok"), ("upload", "ok")]
+    # the batch records its report's outcome (docs/batch.md), after the same backup
+    assert _history(7313) == [("backup", "ok"), ("batch-upload", "ok")]
+    api, gui = prm9tool.history.records(7312)[-1], prm9tool.history.records(7314)[-1]
+    recorder = Recorder()
+    store = recorder.store()
+    assert store.record(api["id"])["parameters"] == store.record(gui["id"])["parameters"]
+    recorder.close()
+    same = {"written", "chosen", "mismatches"}
+    assert {k: api["details"][k] for k in same} == {k: gui["details"][k] for k in same}
+
+
+def test_a_characterization_refuses_while_a_generator_runs_in_the_api_and_the_gui(
+    qtbot, connection
+):
+    square = GeneratorSettings(Waveform.SQUARE, 10.0, 0.0, 0.5)
+    with prm9tool.connect(f"emulator:{E02}:7321", record_history=False) as valve:
+        with (
+            valve.generator("square", amplitude=10, period=0.5),
+            pytest.raises(MotionBusyError) as api,
+        ):
+            valve.characterize()
+        assert valve.service.motion.running is None  # the generator gave it back
+    assert str(api.value) == (
+        "the characterization cannot start while the setpoint generator runs on this valve: "
+        "stop the setpoint generator first; nothing was started"
+    )
+    _online(qtbot, connection, 7322)
+    connection.start_generator(square)
+    runner = ValveRunner(connection)
+    with qtbot.waitSignal(runner.failed, timeout=TIMEOUT) as failed:
+        runner.run("report", lambda rig: pytest.fail("the test must not start"))
+    assert failed.args == ["report", str(api.value)]
+    connection.stop_generator()
+
+
+@pytest.mark.parametrize("od", ["full", "manual"])
+def test_a_refused_write_has_the_same_words_over_canopen(qtbot, tmp_path, request, capsys, od):
+    # the CAN valve, also the one with only the objects the manual lists (no type-key object)
+    from can_link_rig import E04, make_link_rig
+    from reconnect_links import can_connection
+
+    rig = make_link_rig(request.node.name, tmp_path, E04, od=od)
+    bus = {"can_interface": "virtual", "can_channel": rig.options.channel}
+    cli_bus = ["--can-interface", "virtual", "--can-channel", rig.options.channel]
+    words = "CURNORM: the parameter is read-only"
+    connection = can_connection(rig)
+    try:
+        with prm9tool.connect("can:10", type_key=E04, record_history=False, **bus) as valve:
+            with pytest.raises(AccessDeniedError) as api:
+                valve["CURNORM"] = 1000
+            with pytest.raises(ValueRangeError) as range_api:
+                valve["LIMTA"] = 99999
+        assert str(api.value) == words
+        args = ["--device", "can:10", *cli_bus, "--type-key", E04, "--set"]
+        assert main([*args, "CURNORM=1000"]) == 2
+        assert words in capsys.readouterr().err
+        assert main([*args, "LIMTA=99999"]) == 2
+        assert str(range_api.value) in capsys.readouterr().err
+        if od == "full":  # the window asks for a manual-only valve's type key first
+            with qtbot.waitSignal(connection.online_changed, timeout=TIMEOUT):
+                connection.go_online("can:10")
+            assert words in _gui_refusal(qtbot, connection, "CURNORM", 1000)
+            assert str(range_api.value) in _gui_refusal(qtbot, connection, "LIMTA", 99999)
+    finally:
+        connection.shutdown()
+        rig.close()
