@@ -138,6 +138,8 @@ class CanopenSession(UploadSteps, ValveSession):
     def identify(self) -> DeviceInfo:
         """Who the node is; NotAPrm9Error for another CANopen device (0x1000, 0x1018/1)."""
         found = discovery.identify_node(self._shared, self.node_id, SDO_TIMEOUT_S)
+        if found.duplicate:
+            raise ProtocolError(f"node {self.node_id}: {found.problem}")
         if found.device_type is None:
             raise DeviceTimeoutError(f"node {self.node_id}: {found.problem}")
         if not found.is_prm9:
