@@ -214,7 +214,10 @@ class _Run:
             if command & 0xE0 != SCS_UPLOAD_SEGMENT:
                 self.fail(AbortCode.INVALID_COMMAND, f"answer 0x{command:02X} is no segment")
             self._check_toggle(command)
-            data += answer[1 : 8 - ((command >> 1) & 7)]
+            segment = answer[1 : 8 - ((command >> 1) & 7)]
+            if not segment and not command & LAST:  # so at most max_bytes + 1 segments
+                self.fail(AbortCode.INVALID_COMMAND, "a segment without data that is not the last")
+            data += segment
             self._check_length(len(data), declared)
             if command & LAST:
                 if declared is not None and len(data) != declared:
