@@ -68,7 +68,7 @@ class SdoChannel:
         self.node = node
         self._bus = bus
         self.timeout_s = timeout_s
-        self.transfer = SdoTransfer(port or CanopenPort(node), node.id)
+        self.transfer = SdoTransfer(port or CanopenPort(node), node.id or 0)
         # one lock per node object: a scan and the session may share the node's SDO client
         self._lock: threading.Lock = node.__dict__.setdefault(
             "_prm9tool_sdo_lock", threading.Lock()
