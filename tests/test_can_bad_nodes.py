@@ -14,7 +14,7 @@ import canopen
 import pytest
 from can_link_rig import E04, make_link_rig
 from canopen_rig import unique_channel
-from support.bad_node import FIRMWARE, TYPE_KEY, BadNode, Fault, prm9_objects
+from support.bad_node import FIRMWARE, TYPE_KEY, BadNode, Fault, Flood, prm9_objects
 
 from prm9tool.catalogue import CATALOGUE
 from prm9tool.catalogue.typekey import TypeKey
@@ -116,7 +116,62 @@ def test_two_nodes_at_one_id_are_named_and_neither_is_written(data_dir, tmp_path
     assert "can:12\tnot identified\tnode 12: two nodes answer at this ID" in out
     assert batch != 0 and "two nodes answer at this ID" in batch_err
     assert download != 0 and not (tmp_path / "o.prm").exists()
-    assert not [r for r in first.aborts if r[1:3] == b"\x10\x10"]  # no store was attempted
+    assert first.writes == []  # neither was written to
+
+
+@pytest.mark.parametrize(
+    ("fault", "kwargs", "listed"),
+    [
+        (Fault.ABORTS, {}, "can:11\tnot identified\tnode 11: answers 0x1000 only: not identified"),
+        (Fault.LATE, {"delay_s": 0.6}, "can:11\tnot identified\tnode 11: answers 0x1000 only"),
+        (
+            Fault.NONE,
+            {"objects": {**prm9_objects(), (0x1000, 0): (0x191).to_bytes(4, "little")}},
+            "can:11\tnot a PRM9\tnode 11: not a PRM9 (device type 0x191, vendor 0xE6)",
+        ),
+    ],
+    ids=["random-aborts", "late-answers", "not-a-valve"],
+)
+def test_a_node_that_aborts_answers_late_or_is_no_valve_is_listed_and_refused(
+    rig, data_dir, tmp_path, capsys, fault, kwargs, listed
+):
+    channel = rig.options.channel
+    with bad_node(channel, 11, fault, **kwargs) as node:
+        code = main(["--list-devices", *bus_args(channel)])
+        out, err = capsys.readouterr()
+        refused = main(["--batch", tuned_file(tmp_path), "--device", "can:11", *bus_args(channel)])
+        refused_err = capsys.readouterr().err
+        served = main(["--batch", tuned_file(tmp_path), "--device", "can:10", *bus_args(channel)])
+        served_err = capsys.readouterr().err
+    for text in (err, refused_err, served_err):
+        no_traceback(text)
+    assert code == 0 and listed in out and f"can:10\t{E04}" in out, out
+    assert refused != 0
+    assert served == 0, served_err
+    assert node.writes == []  # nothing was written to it
+
+
+@pytest.mark.parametrize(
+    ("can_id", "data"),
+    [(0x70B, b"\x05"), (0x08B, bytes([0x00, 0x10, 0x01, 0, 0, 0, 0, 0])), (0x001, bytes(8))],
+    ids=["heartbeat-flood", "emcy-flood", "high-priority-flood"],
+)
+def test_a_flood_beside_the_healthy_valve_does_not_stop_its_batch(
+    rig, data_dir, tmp_path, capsys, can_id, data
+):
+    bus = can.Bus(interface="virtual", channel=rig.options.channel)
+    flood = Flood(bus, can_id, data).start()
+    try:
+        code = main(
+            ["--batch", tuned_file(tmp_path), "--device", "can:10", *bus_args(rig.options.channel)]
+        )
+    finally:
+        flood.stop()
+        bus.shutdown()
+    err = capsys.readouterr().err
+    no_traceback(err)
+    assert code == 0, err
+    assert flood.sent > 0 and rig.stored_set()["LIMTA"] == 1500
 
 
 # --- bounded, exact uploads ----------------------------------------------------------------
@@ -218,7 +273,7 @@ def test_a_control_mode_no_prm9_has_is_refused_before_anything_is_written(
     no_traceback(err)
     assert code != 0
     assert "0x6043 = 127 is no control mode of a PRM9 (manual table 7-16)" in err
-    assert node.objects == before
+    assert node.objects == before and node.writes == []
 
 
 @pytest.mark.parametrize(

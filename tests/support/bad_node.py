@@ -37,6 +37,8 @@ class Fault(Enum):
     NO_TOGGLE = "no-toggle"  # segmented uploads never alternate the toggle bit
     OTHER_OBJECT = "other-object"  # answers for the next sub-index
     SHORT_FRAMES = "short-frames"  # answers with 3 data bytes
+    ABORTS = "aborts"  # aborts every other request after 0x1000 with a random CiA 301 code
+    LATE = "late"  # every answer after 0x1000 comes ``delay_s`` late (set it above the timeout)
 
 
 def prm9_objects(serial: int = 777001, control_mode: int = 2) -> dict[tuple[int, int], bytes]:
@@ -68,11 +70,13 @@ class BadNode:
     segments_sent: int = 0
     requests: int = 0
     aborts: list[bytes] = field(default_factory=list)  # abort frames the client sent
+    writes: list[tuple[int, int]] = field(default_factory=list)  # objects a download began
     _stop: threading.Event = field(default_factory=threading.Event)
     _thread: threading.Thread | None = None
     _upload: bytes = b""
     _pos: int = 0
     _toggle: int = 0
+    _random: random.Random = field(default_factory=lambda: random.Random(301))
 
     def start(self) -> BadNode:
         """Serve in a thread until :meth:`stop`."""
@@ -93,7 +97,7 @@ class BadNode:
                 continue
             answer = self.answer(bytes(msg.data))
             if answer is not None:
-                if self.delay_s:
+                if self.delay_s and self.fault is not Fault.LATE:
                     time.sleep(self.delay_s)
                 self.bus.send(
                     can.Message(
@@ -112,6 +116,11 @@ class BadNode:
         index, subindex = struct.unpack_from("<HB", request, 1)
         if self.fault is Fault.ANSWERS_1000_ONLY and (command != 0x40 or index != 0x1000):
             return None
+        if self.fault is Fault.ABORTS and index != 0x1000 and self.requests % 2:
+            code = self._random.choice((0x06010000, 0x08000000, 0x06060000, 0x05040001))
+            return struct.pack("<BHBI", 0x80, index, subindex, code)
+        if self.fault is Fault.LATE and index != 0x1000:
+            time.sleep(self.delay_s)
         frame = self._answer(command, index, subindex, request)
         if frame is not None and self.fault is Fault.SHORT_FRAMES and index != 0x1000:
             return frame[:3]
@@ -124,6 +133,7 @@ class BadNode:
             return self._segment(command)
         if command & 0xE0 == 0x20:
             data = request[4 : 8 - ((command >> 2) & 3)] if command & 0x02 else b""
+            self.writes.append((index, subindex))
             self.objects[(index, subindex)] = data
             return struct.pack("<BHB4x", 0x60, index, subindex)
         return None
@@ -157,6 +167,39 @@ class BadNode:
         self._pos += len(chunk)
         last = self._pos >= len(value)
         return bytes([toggle | ((7 - len(chunk)) << 1) | last]) + chunk.ljust(7, b"\0")
+
+
+@dataclass
+class Flood:
+    """Frames of one kind sent back to back on ``bus`` from a thread (a heartbeat or EMCY
+    storm, a flood of high-priority frames) until :meth:`stop`; ``sent`` counts them."""
+
+    bus: can.BusABC
+    can_id: int
+    data: bytes
+    sent: int = 0
+    _stop: threading.Event = field(default_factory=threading.Event)
+    _thread: threading.Thread | None = None
+
+    def start(self) -> Flood:
+        """Flood in a thread."""
+        self._thread = threading.Thread(target=self._flood, daemon=True)
+        self._thread.start()
+        return self
+
+    def stop(self) -> None:
+        """End the flood."""
+        self._stop.set()
+        if self._thread is not None:
+            self._thread.join(5)
+
+    def _flood(self) -> None:
+        message = can.Message(arbitration_id=self.can_id, data=self.data, is_extended_id=False)
+        while not self._stop.is_set():
+            self.bus.send(message)
+            self.sent += 1
+            if self.sent % 50 == 0:
+                time.sleep(0.001)  # the in-process virtual bus: let the other threads run
 
 
 class LssFault(Enum):

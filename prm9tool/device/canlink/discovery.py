@@ -169,7 +169,15 @@ def _identify(sdo: SdoChannel, node_id: int) -> NodeInfo:
         return _two_nodes(NodeInfo(node_id, device_type, None), "two answers to one request")
     try:
         vendor: int | None = sdo.read_u32(0x1018, 1)
-    except SdoAbortError:
+    except SdoAbortError as exc:
+        if exc.code not in MISSING:  # refused for another reason: it may be a PRM9
+            return NodeInfo(
+                node_id,
+                device_type,
+                None,
+                problem=f"answers 0x1000 only: not identified ({exc})",
+                detail=str(exc),
+            )
         vendor = None  # no identity object: certainly not a PRM9
     except Prm9Error as exc:
         return NodeInfo(
