@@ -314,3 +314,20 @@ def test_a_well_behaved_raw_node_is_identified():
     assert info.usable, info.problem
     assert (info.serial, info.firmware, info.type_key) == (777001, FIRMWARE, TYPE_KEY)
     assert CATALOGUE["FWVER"].is_string
+
+
+def test_a_padded_answer_with_garbage_is_no_value_of_the_type(data_dir):
+    from prm9tool.device.canlink.session import CanopenSession
+    from prm9tool.errors import ProtocolError
+
+    channel = unique_channel("padding")
+    limta = CATALOGUE["LIMTA"]
+    objects = {**prm9_objects(), limta.key: b"\x60\x09\x12\x34"}  # 2400, then garbage
+    with (
+        bad_node(channel, 11, Fault.NONE, objects=objects) as node,
+        CanopenSession(canbus.CanOptions("virtual", channel), 11) as session,
+    ):
+        with pytest.raises(ProtocolError, match="is no UNSIGNED16"):
+            session.read("LIMTA")
+        node.objects[limta.key] = b"\x60\x09\x00\x00"  # zero padding: the value
+        assert session.read("LIMTA") == 2400
