@@ -174,6 +174,33 @@ def test_a_flood_beside_the_healthy_valve_does_not_stop_its_batch(
     assert flood.sent > 0 and rig.stored_set()["LIMTA"] == 1500
 
 
+@pytest.mark.parametrize(
+    ("first", "other", "evidence"),
+    [
+        (b"\x05", b"\x7f", "its heartbeats alternate between two NMT states"),
+        (b"\x00", None, "two boot-ups less than 0.5 s apart"),
+    ],
+    ids=["alternating-heartbeats", "boot-ups"],
+)
+def test_two_nodes_at_one_id_are_found_by_their_heartbeats(
+    data_dir, capsys, first, other, evidence
+):
+    channel = unique_channel("twin-heartbeats")
+    bus = can.Bus(interface="virtual", channel=channel)
+    flood = Flood(bus, 0x70D, first, other, period_s=0.02)
+    with bad_node(channel, 13, Fault.NONE):
+        flood.start()
+        try:
+            code = main(["--list-devices", *bus_args(channel)])
+        finally:
+            flood.stop()
+            bus.shutdown()
+    out, err = capsys.readouterr()
+    no_traceback(err)
+    assert code == 4
+    assert f"can:13\tnot identified\tnode 13: two nodes answer at this ID ({evidence})" in out
+
+
 # --- bounded, exact uploads ----------------------------------------------------------------
 @pytest.mark.parametrize("fault", [Fault.ENDLESS_NO_SIZE, Fault.ENDLESS_HUGE])
 def test_an_endless_upload_ends_at_its_size_bound_with_the_abort_naming_the_object(fault):

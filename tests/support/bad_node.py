@@ -177,6 +177,8 @@ class Flood:
     bus: can.BusABC
     can_id: int
     data: bytes
+    other: bytes | None = None  # sent in turn with ``data`` (heartbeats of two nodes)
+    period_s: float = 0.0  # 0: back to back
     sent: int = 0
     _stop: threading.Event = field(default_factory=threading.Event)
     _thread: threading.Thread | None = None
@@ -194,11 +196,17 @@ class Flood:
             self._thread.join(5)
 
     def _flood(self) -> None:
-        message = can.Message(arbitration_id=self.can_id, data=self.data, is_extended_id=False)
+        payloads = [self.data] if self.other is None else [self.data, self.other]
+        messages = [
+            can.Message(arbitration_id=self.can_id, data=data, is_extended_id=False)
+            for data in payloads
+        ]
         while not self._stop.is_set():
-            self.bus.send(message)
+            self.bus.send(messages[self.sent % len(messages)])
             self.sent += 1
-            if self.sent % 50 == 0:
+            if self.period_s:
+                self._stop.wait(self.period_s)
+            elif self.sent % 50 == 0:
                 time.sleep(0.001)  # the in-process virtual bus: let the other threads run
 
 

@@ -9,7 +9,8 @@ Each node is identified on its own: a node that stops answering, answers garbage
 values no PRM9 has is listed with what is wrong (``problem``) and never stops the scan. Two
 nodes at one node ID are found by their answers: two answers to the scan's request, or an
 answer that comes when none was asked for (an identification waits for it: ten times the
-first answer's delay, at least :data:`SETTLE_MIN_S`).
+first answer's delay, at least :data:`SETTLE_MIN_S`); and, during the scan, by two boot-ups
+closer than one node can boot or heartbeats alternating between two NMT states.
 """
 
 from __future__ import annotations
@@ -22,7 +23,7 @@ from dataclasses import dataclass
 from prm9tool.catalogue import CATALOGUE
 from prm9tool.catalogue.typekey import TypeKey
 from prm9tool.catalogue.variant import Config
-from prm9tool.device.canlink.bus import CanNetwork
+from prm9tool.device.canlink.bus import TWIN_BOOT_S, CanNetwork
 from prm9tool.device.canlink.sdo import (
     ARGO_HYTOS_VENDOR,
     MISSING,
@@ -81,6 +82,7 @@ class NodeInfo:
 def scan(shared: CanNetwork, window_s: float = SCAN_WINDOW_S, limit: int = 127) -> list[NodeInfo]:
     """Every node that answered or announced itself, identified, by node ID."""
     network = shared.network
+    before = {n: (s.alternations, s.twin_boot_ups) for n, s in list(shared.seen.items())}
     with _answers_counted(shared, limit) as answers:
         network.scanner.reset()
         network.scanner.search(limit)
@@ -91,10 +93,26 @@ def scan(shared: CanNetwork, window_s: float = SCAN_WINDOW_S, limit: int = 127) 
     found = []
     for node_id in sorted(n for n in heard if 0 < n <= limit):
         info = identify_node(shared, node_id)
-        if answers.get(node_id, 0) > 1 and not info.duplicate:
-            info = _two_nodes(info, f"{answers[node_id]} answers to one read of 0x1000")
+        evidence = _twin_evidence(shared, node_id, answers.get(node_id, 0), before)
+        if evidence and not info.duplicate:
+            info = _two_nodes(info, evidence)
         found.append(info)
     return found
+
+
+def _twin_evidence(
+    shared: CanNetwork, node_id: int, answers: int, before: dict[int, tuple[int, int]]
+) -> str:
+    """Why two nodes seem to share ``node_id`` from what the scan heard ("" none)."""
+    if answers > 1:
+        return f"{answers} answers to one read of 0x1000"
+    seen = shared.node_seen(node_id)
+    alternations, twins = before.get(node_id, (0, 0))
+    if seen.twin_boot_ups > twins:
+        return f"two boot-ups less than {TWIN_BOOT_S:g} s apart"
+    if seen.alternations - alternations >= 2:
+        return "its heartbeats alternate between two NMT states"
+    return ""
 
 
 @contextmanager
