@@ -161,11 +161,14 @@ def identify_node(
     scanning a bus, the session's own when opening a node the user chose. Never raises for
     what the node does."""
     with sdo_channel(shared, node_id, timeout_s) as sdo:
-        sdo.transfer.port.drain()  # answers to a scan before: not this identification's
-        strays = sdo.strays
+        sdo.take_strays()  # answers to a scan before: not this identification's
+        strays, timeouts = sdo.strays, sdo.timeouts
         info = _identify(sdo, node_id)
+        if sdo.timeouts != timeouts:
+            return info  # a late answer may follow: no evidence of a second node
         _settle(sdo)
-        extra = sdo.strays - strays + sdo.transfer.port.drain()
+        sdo.take_strays()
+        extra = sdo.strays - strays  # those within the transfers and those after them
         if extra and not info.duplicate:
             return _two_nodes(info, f"{extra} answers nobody asked for")
         return info
@@ -183,7 +186,7 @@ def _identify(sdo: SdoChannel, node_id: int) -> NodeInfo:
             detail=str(exc),
         )
     _settle(sdo)
-    if sdo.transfer.port.drain():
+    if sdo.take_strays():
         return _two_nodes(NodeInfo(node_id, device_type, None), "two answers to one request")
     try:
         vendor: int | None = sdo.read_u32(0x1018, 1)

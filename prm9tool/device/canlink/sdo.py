@@ -143,8 +143,22 @@ class SdoChannel:
 
     @property
     def strays(self) -> int:
-        """Answers that came when none was asked for (a second node at this node ID)."""
+        """Answers that came when none was asked for (a second node at this node ID, or the
+        late answer of a transfer that timed out: :attr:`timeouts`)."""
         return self.transfer.stats.strays
+
+    @property
+    def timeouts(self) -> int:
+        """Transfers that ended without an answer."""
+        return self.transfer.stats.timeouts
+
+    def take_strays(self) -> int:
+        """Drop the answers waiting now that no transfer asked for; how many there were
+        (counted in :attr:`strays`)."""
+        with self._lock:
+            stale = self.transfer.port.drain()
+            self.transfer.stats.strays += stale
+            return stale
 
 
 def max_bytes(index: int, subindex: int) -> int:

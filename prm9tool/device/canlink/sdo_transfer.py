@@ -107,6 +107,7 @@ class TransferStats:
     frames: int = 0  # answers received by the last transfer
     latency_s: float = 0.0  # the first answer of the last transfer came this late
     strays: int = 0  # answers that arrived when none was asked for (since created)
+    timeouts: int = 0  # transfers that ended without an answer (since created)
 
 
 class SdoTransfer:
@@ -258,6 +259,7 @@ class _Run:
             )
 
     def _timeout(self) -> NoReturn:
+        self.client.stats.timeouts += 1  # its answer may still come: a stray, not a twin
         whole = time.monotonic() - self.start
         self.abort(AbortCode.SDO_TIMEOUT)
         if time.monotonic() >= self.deadline and whole > self.answer_s:
