@@ -1,8 +1,9 @@
 """LSS master (CiA 305): finding devices without a node ID and giving them one.
 
-The protocol is the ``canopen`` package's :class:`canopen.lss.LssMaster` (``network.lss``):
-switch state global and selective, Fastscan, inquire, configure node ID and bit timing,
-activate bit timing, store configuration. This module adds what a commissioning tool needs
+The master sends the CiA 305 requests itself on 0x7E5 and reads the answers on 0x7E4 (the
+``canopen`` package's LssMaster took the first frame there as the answer and ran Fastscan
+without bounds, see below): switch state global and selective, Fastscan, inquire, configure
+node ID and bit timing, activate bit timing, store configuration. A commissioning tool needs
 on top: every unconfigured device rather than the first (each one Fastscan finds stays in the
 configuration state, so the next Fastscan finds the next), two devices with the same LSS
 address detected (both answer the selective switch), every CiA 305 error answer turned into
@@ -31,7 +32,7 @@ import struct
 import threading
 import time
 from collections.abc import Callable, Iterator
-from contextlib import contextmanager, suppress
+from contextlib import contextmanager
 from dataclasses import dataclass
 from typing import TYPE_CHECKING
 
@@ -65,7 +66,7 @@ SCAN_ATTEMPTS = 4
 MAX_DEVICES = 127
 FASTSCAN_FRAMES = 1 + 4 * 33  # a round: the reset step, 32 bits and a confirmation per part
 SCAN_LIMIT_S = 120.0  # a whole scan (127 devices at the slowest step would take far longer)
-ANSWER_S = 0.5  # inquire, configure, store: canopen's LssMaster.RESPONSE_TIMEOUT
+ANSWER_S = 0.5  # inquire, configure, store (what canopen's LssMaster waits)
 
 
 @dataclass(frozen=True)
@@ -83,7 +84,7 @@ class LssAddress:
         return self.vendor == ARGO_HYTOS_VENDOR
 
     def as_tuple(self) -> tuple[int, int, int, int]:
-        """(vendor, product, revision, serial) as canopen's LssMaster takes them."""
+        """(vendor, product, revision, serial), the order of the selective switch."""
         return (self.vendor, self.product, self.revision, self.serial)
 
     def describe(self) -> str:
@@ -133,7 +134,6 @@ class LssMasterLink:
 
     def __init__(self, shared: CanNetwork) -> None:
         self._shared = shared
-        self._lss = shared.network.lss
         self._lock = _bus_lock(shared)
         self.latency_s: float | None = None  # the first answer to the last probe
 
@@ -144,11 +144,11 @@ class LssMasterLink:
         LssFailedError ``duplicate`` when two devices answer with one address (neither changed).
         """
         with self._lock:
-            self._lss.send_switch_state_global(WAITING)
+            self._switch_global(WAITING)
             try:
                 found = self._fastscan_all(progress)
             finally:
-                self._lss.send_switch_state_global(WAITING)
+                self._switch_global(WAITING)
             for address in found:
                 self._check_unique(address)
             return found
@@ -202,7 +202,7 @@ class LssMasterLink:
             def ask(number: int, bit: int, sub: int, following: int) -> bool:
                 since = len(heard.frames)
                 request = struct.pack("<BIBBB", CS_FASTSCAN, number, bit, sub, following)
-                self._shared.network.send_message(LSS_REQUEST, request)
+                self._send(request)
                 return heard.wait(CS_IDENTIFY_SLAVE, since, step) is not None
 
             if not ask(0, 0x80, 0, 0):
@@ -220,7 +220,7 @@ class LssMasterLink:
         """Seconds until the first device without a node ID answered (None: none did)."""
         with self._listen() as heard:
             start = time.monotonic()
-            self._lss.send_identify_non_configured_remote_slave()
+            self._send(bytes([0x4C]).ljust(8, b"\0"))  # identify non-configured remote slave
             deadline = start + PROBE_WAIT_S
             while time.monotonic() < deadline and not heard.count(CS_NON_CONFIGURED_SLAVE):
                 time.sleep(0.002)
@@ -233,15 +233,14 @@ class LssMasterLink:
         try:
             self._select(address)
         finally:
-            self._lss.send_switch_state_global(WAITING)
+            self._switch_global(WAITING)
 
     def _select(self, address: LssAddress) -> None:
         """Switch state selective to ``address``: exactly one device must answer."""
         with self._listen() as heard:
             since = len(heard.frames)
-            network = self._shared.network
             for cs, part in zip(CS_SELECTIVE, address.as_tuple(), strict=True):
-                network.send_message(LSS_REQUEST, struct.pack("<BI3x", cs, part))
+                self._send(struct.pack("<BI3x", cs, part))
             start = time.monotonic()
             if heard.wait(CS_SELECTIVE_RESPONSE, since, ANSWER_S) is None:
                 raise LssFailedError(
@@ -273,11 +272,11 @@ class LssMasterLink:
         if not 1 <= node_id <= 127:
             raise LssFailedError(f"node ID {node_id} is outside 1…127", "refused")
         with self._lock:
-            self._lss.send_switch_state_global(WAITING)
+            self._switch_global(WAITING)
             try:
                 self._select(address)
             except LssFailedError:
-                self._lss.send_switch_state_global(WAITING)  # two alike: release both
+                self._switch_global(WAITING)  # two alike: release both
                 raise
             try:
                 before = self._inquire_node_id(address)  # nothing changed yet if it fails
@@ -290,15 +289,15 @@ class LssMasterLink:
                     self._undo(before)
                     raise
             finally:
-                self._lss.send_switch_state_global(WAITING)
+                self._switch_global(WAITING)
 
     def activate_bit_timing(self, switch_delay_ms: int) -> None:
         """Every configured device switches to its pending bit timing (no answer; CiA 305:
         silent for ``switch_delay_ms``, switch, silent for it once more)."""
         with self._lock:
-            self._lss.send_switch_state_global(CONFIGURATION)
-            self._lss.activate_bit_timing(switch_delay_ms)
-            self._lss.send_switch_state_global(WAITING)
+            self._switch_global(CONFIGURATION)
+            self._activate(switch_delay_ms)
+            self._switch_global(WAITING)
             time.sleep(2 * switch_delay_ms / 1000)  # CiA 305: they are silent until then
 
     def change_bus_bit_timing(self, index: int, switch_delay_ms: int) -> int:
@@ -306,21 +305,19 @@ class LssMasterLink:
         ``index``: configure (all must accept), store (all must confirm), activate after
         ``switch_delay_ms``. Returns how many devices switch; LssFailedError when none answers
         or one refuses (then nothing is activated: no device changes its rate now)."""
-        from canopen.lss import LssError
-
         rate = kbit(index)
         with self._lock, self._listen() as heard:
-            self._lss.send_switch_state_global(CONFIGURATION)
+            self._switch_global(CONFIGURATION)
             try:
-                for cs, call in (
-                    (CS_CONFIGURE_BIT_TIMING, lambda: self._lss.configure_bit_timing(index)),
-                    (CS_STORE, self._lss.store_configuration),
+                for cs, request in (
+                    (CS_CONFIGURE_BIT_TIMING, bytes([CS_CONFIGURE_BIT_TIMING, 0, index])),
+                    (CS_STORE, bytes([CS_STORE])),
                 ):
-                    sent = time.monotonic()
-                    with suppress(LssError):  # every answer is judged below, not the first
-                        call()
+                    since, sent = len(heard.frames), time.monotonic()
+                    self._send(request.ljust(8, b"\0"))  # every answer is judged below
+                    heard.wait(cs, since, ANSWER_S)  # the first, then any further ones
                     _settle(heard, cs, sent)
-                    answers = [d for _, d in heard.frames if d and d[0] == cs]
+                    answers = [d for _, d in heard.frames if len(d) >= 2 and d[0] == cs]
                     if not answers:
                         raise LssFailedError(
                             f"no device answers LSS on this bus ({SERVICE[cs]} {rate}): none "
@@ -343,9 +340,9 @@ class LssMasterLink:
                             f"{rate}: {reason}; no device switched now{stored}",
                             "refused",
                         )
-                self._lss.activate_bit_timing(switch_delay_ms)
+                self._activate(switch_delay_ms)
             finally:
-                self._lss.send_switch_state_global(WAITING)
+                self._switch_global(WAITING)
             time.sleep(2 * switch_delay_ms / 1000)  # CiA 305: they are silent until then
         return len(answers)
 
@@ -369,8 +366,29 @@ class LssMasterLink:
     def _ask(self, request: bytes, cs: int, timeout_s: float = ANSWER_S) -> bytes | None:
         """Send an LSS request, return its answer ``cs`` (None: none came in ``timeout_s``)."""
         with self._listen() as heard:
-            self._shared.network.send_message(LSS_REQUEST, request)
+            self._send(request)
             return heard.wait(cs, 0, timeout_s)
+
+    def _activate(self, switch_delay_ms: int) -> None:
+        """Activate bit timing (0x15) after ``switch_delay_ms`` (no answer)."""
+        self._send(struct.pack("<BH5x", 0x15, switch_delay_ms))
+
+    def _switch_global(self, mode: int) -> None:
+        """Switch state global (no answer)."""
+        self._send(bytes([0x04, mode]).ljust(8, b"\0"))
+
+    def _send(self, request: bytes) -> None:
+        """One LSS request on 0x7E5; LssFailedError ``lost`` when the bus refuses it."""
+        import can
+
+        try:
+            self._shared.network.send_message(LSS_REQUEST, request)
+        except (can.CanError, OSError, RuntimeError) as exc:  # RuntimeError: bus closed
+            raise LssFailedError(
+                f"the CAN bus refused to send an LSS request ({exc}); the devices keep what "
+                "they had stored",
+                "lost",
+            ) from None
 
     def _configure(self, address: LssAddress, cs: int, value: int = 0) -> None:
         """One configure/store service; LssFailedError with the CiA 305 error in words."""
