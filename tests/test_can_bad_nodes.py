@@ -358,3 +358,17 @@ def test_a_padded_answer_with_garbage_is_no_value_of_the_type(data_dir):
             session.read("LIMTA")
         node.objects[limta.key] = b"\x60\x09\x00\x00"  # zero padding: the value
         assert session.read("LIMTA") == 2400
+
+
+@pytest.mark.parametrize("fault", [Fault.SHORT, Fault.NO_TOGGLE])
+def test_a_download_from_a_node_whose_uploads_break_writes_no_file(
+    fault, data_dir, tmp_path, capsys
+):
+    channel = unique_channel("download")
+    out = tmp_path / "valve.prm"
+    with bad_node(channel, 11, fault):
+        code = main(["--batch", "--download", str(out), "--device", "can:11", *bus_args(channel)])
+    err = capsys.readouterr().err
+    no_traceback(err)
+    assert code != 0 and not out.exists()
+    assert "not identified: 0x100A/0:" in err
