@@ -91,10 +91,10 @@ class CanopenPort:
     def drain(self) -> int:
         """Empty the answer queue."""
         stale = 0
-        with_queue: queue.Queue[bytes] = self._sdo.responses
+        answers: queue.Queue[bytes] = self._sdo.responses
         while True:
             try:
-                with_queue.get_nowait()
+                answers.get_nowait()
             except queue.Empty:
                 return stale
             stale += 1
