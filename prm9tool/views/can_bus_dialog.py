@@ -245,7 +245,7 @@ class CanBusDialog(QDialog):
         self.update_ok()
 
     def _verdict(self, entry: ValveListing) -> str:
-        """"not a PRM9" for another kind of device; "not identified" for a node that did
+        """``not a PRM9`` for another kind of device, ``not identified`` for a node that did
         not answer, answered what no PRM9 holds or shares its node ID (as --list-devices)."""
         node = entry.can
         if node is not None and (node.device_type is None or node.detail):
