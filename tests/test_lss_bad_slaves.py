@@ -42,11 +42,12 @@ def _cli(rig, *args: str) -> int:
     return main([*args, "--can-interface", "virtual", "--can-channel", rig.options.channel])
 
 
-def test_a_slave_acknowledging_everything_ends_the_scan_naming_it(rig, capsys):
-    rig.add(4711)
+@pytest.mark.parametrize("command", [["--lss-scan"], ["--lss-assign", "4711=22"]])
+def test_a_slave_acknowledging_everything_ends_the_scan_naming_it(rig, capsys, command):
+    valve = rig.add(4711)
     with bad_slave(rig, LssFault.ACKNOWLEDGES_ALL) as slave:
         started = time.monotonic()
-        code = _cli(rig, "--lss-scan")
+        code = _cli(rig, *command)
         took = time.monotonic() - started
     err = capsys.readouterr().err
     assert code != 0 and "Traceback" not in err
@@ -56,6 +57,7 @@ def test_a_slave_acknowledging_everything_ends_the_scan_naming_it(rig, capsys):
     # the probe and the switch commands (not a frame count of the time it took: took is only
     # reported when it fails)
     assert slave.requests <= 2 * FASTSCAN_FRAMES + 10, (slave.requests, took)
+    assert valve.node_id == 0  # the valve beside it kept what it had
 
 
 def test_a_correct_slave_beside_stray_lss_frames_is_found(rig):
