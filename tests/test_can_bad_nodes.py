@@ -152,6 +152,28 @@ def test_a_node_that_aborts_answers_late_or_is_no_valve_is_listed_and_refused(
 
 
 @pytest.mark.parametrize(
+    ("fault", "says"),
+    [(Fault.REFUSES_STORE, "abort 0x08000020"), (Fault.CLAMPS, "verif")],
+    ids=["refused-store", "clamped-read-back"],
+)
+def test_a_refused_store_or_a_clamped_read_back_fails_the_batch_and_stores_nothing(
+    data_dir, tmp_path, capsys, fault, says
+):
+    channel = unique_channel("store")
+    with bad_node(channel, 11, fault, objects=prm9_objects(parameters=True)) as node:
+        code = main(
+            ["--batch", tuned_file(tmp_path, TYPE_KEY), "--device", "can:11", *bus_args(channel)]
+        )
+    err = capsys.readouterr().err
+    no_traceback(err)
+    assert code != 0 and says in err, err
+    assert node.stored is None  # the node never stored a set
+    if fault is Fault.REFUSES_STORE:  # and its working values were put back
+        limta = CATALOGUE["LIMTA"].key
+        assert node.objects[limta] == prm9_objects(parameters=True)[limta]
+
+
+@pytest.mark.parametrize(
     ("can_id", "data"),
     [(0x70B, b"\x05"), (0x08B, bytes([0x00, 0x10, 0x01, 0, 0, 0, 0, 0])), (0x001, bytes(8))],
     ids=["heartbeat-flood", "emcy-flood", "high-priority-flood"],

@@ -38,12 +38,19 @@ class Fault(Enum):
     OTHER_OBJECT = "other-object"  # answers for the next sub-index
     SHORT_FRAMES = "short-frames"  # answers with 3 data bytes
     ABORTS = "aborts"  # aborts every other request after 0x1000 with a random CiA 301 code
+    REFUSES_STORE = "refuses-store"  # 0x1010/1 "save": abort 0x08000020 (cannot store)
+    CLAMPS = "clamps"  # keeps every written number at half of what was written
     LATE = "late"  # every answer after 0x1000 comes ``delay_s`` late (set it above the timeout)
 
 
-def prm9_objects(serial: int = 777001, control_mode: int = 2) -> dict[tuple[int, int], bytes]:
-    """The identity objects of a PRM9 -CA with 0x2041 (this project's type-key object)."""
-    return {
+def prm9_objects(
+    serial: int = 777001, control_mode: int = 2, parameters: bool = False
+) -> dict[tuple[int, int], bytes]:
+    """The identity objects of a PRM9 -CA with 0x2041 (this project's type-key object);
+    ``parameters``: also every catalogue object of its variant at its factory value, and
+    0x1010/1 (store) — enough for a ``--batch`` upload."""
+    objects = _parameters(node_id=11) if parameters else {}
+    return objects | {
         (0x1000, 0): PRM9_DEVICE_TYPE.to_bytes(4, "little"),
         (0x1001, 0): b"\0",
         (0x1008, 0): b"PRM9",
@@ -56,6 +63,19 @@ def prm9_objects(serial: int = 777001, control_mode: int = 2) -> dict[tuple[int,
         (0x2041, 0): TYPE_KEY.encode(),
         (0x6043, 0): control_mode.to_bytes(1, "little", signed=True),
     }
+
+
+def _parameters(node_id: int) -> dict[tuple[int, int], bytes]:
+    from prm9tool.catalogue import CATALOGUE
+    from prm9tool.catalogue.typekey import TypeKey
+
+    variant = TypeKey.parse(TYPE_KEY).variant
+    objects = {
+        p.key: p.dtype.encode(p.default_for(variant, node_id))
+        for p in CATALOGUE.for_variant(variant)
+    }
+    objects[(0x1010, 1)] = (1).to_bytes(4, "little")  # "save" supported on command (CiA 301)
+    return objects
 
 
 @dataclass
@@ -71,6 +91,7 @@ class BadNode:
     requests: int = 0
     aborts: list[bytes] = field(default_factory=list)  # abort frames the client sent
     writes: list[tuple[int, int]] = field(default_factory=list)  # objects a download began
+    stored: dict[tuple[int, int], bytes] | None = None  # what the last store kept (None: none)
     _stop: threading.Event = field(default_factory=threading.Event)
     _thread: threading.Thread | None = None
     _upload: bytes = b""
@@ -134,6 +155,13 @@ class BadNode:
         if command & 0xE0 == 0x20:
             data = request[4 : 8 - ((command >> 2) & 3)] if command & 0x02 else b""
             self.writes.append((index, subindex))
+            if (index, subindex) == (0x1010, 1):
+                if self.fault is Fault.REFUSES_STORE:
+                    return struct.pack("<BHBI", 0x80, index, subindex, 0x08000020)
+                self.stored = dict(self.objects)
+                return struct.pack("<BHB4x", 0x60, index, subindex)
+            if self.fault is Fault.CLAMPS and data and (index, subindex) in self.objects:
+                data = (int.from_bytes(data, "little") // 2).to_bytes(len(data), "little")
             self.objects[(index, subindex)] = data
             return struct.pack("<BHB4x", 0x60, index, subindex)
         return None
