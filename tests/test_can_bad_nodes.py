@@ -153,8 +153,12 @@ def test_a_node_that_aborts_answers_late_or_is_no_valve_is_listed_and_refused(
 
 @pytest.mark.parametrize(
     ("fault", "says"),
-    [(Fault.REFUSES_STORE, "abort 0x08000020"), (Fault.CLAMPS, "verif")],
-    ids=["refused-store", "clamped-read-back"],
+    [
+        (Fault.REFUSES_STORE, "abort 0x08000020"),
+        (Fault.CLAMPS, "LIMTA: wrote 1500, got 750"),
+        (Fault.RESETS, "nothing was stored"),
+    ],
+    ids=["refused-store", "clamped-read-back", "reset-mid-upload"],
 )
 def test_a_refused_store_or_a_clamped_read_back_fails_the_batch_and_stores_nothing(
     data_dir, tmp_path, capsys, fault, says

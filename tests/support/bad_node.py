@@ -40,6 +40,7 @@ class Fault(Enum):
     ABORTS = "aborts"  # aborts every other request after 0x1000 with a random CiA 301 code
     REFUSES_STORE = "refuses-store"  # 0x1010/1 "save": abort 0x08000020 (cannot store)
     CLAMPS = "clamps"  # keeps every written number at half of what was written
+    RESETS = "resets"  # at its first write: silent for 1 s, boot-up, its first objects again
     LATE = "late"  # every answer after 0x1000 comes ``delay_s`` late (set it above the timeout)
 
 
@@ -98,9 +99,11 @@ class BadNode:
     _pos: int = 0
     _toggle: int = 0
     _random: random.Random = field(default_factory=lambda: random.Random(301))
+    _initial: dict[tuple[int, int], bytes] = field(default_factory=dict)
 
     def start(self) -> BadNode:
         """Serve in a thread until :meth:`stop`."""
+        self._initial = dict(self.objects)
         self._thread = threading.Thread(target=self._serve, daemon=True)
         self._thread.start()
         return self
@@ -135,6 +138,9 @@ class BadNode:
             return None
         self.requests += 1
         index, subindex = struct.unpack_from("<HB", request, 1)
+        if self.fault is Fault.RESETS and command & 0xE0 == 0x20 and not self.writes:
+            self._reset()
+            return None
         if self.fault is Fault.ANSWERS_1000_ONLY and (command != 0x40 or index != 0x1000):
             return None
         if self.fault is Fault.ABORTS and index != 0x1000 and self.requests % 2:
@@ -146,6 +152,14 @@ class BadNode:
         if frame is not None and self.fault is Fault.SHORT_FRAMES and index != 0x1000:
             return frame[:3]
         return frame
+
+    def _reset(self) -> None:
+        """A power dip: silent while it boots, then a boot-up and the objects it had."""
+        self.writes.append((-1, -1))  # the reset, in the order of the writes
+        time.sleep(1.0)
+        self.objects = dict(self._initial)
+        boot_up = can.Message(arbitration_id=0x700 + self.node_id, data=b"\0", is_extended_id=False)
+        self.bus.send(boot_up)
 
     def _answer(self, command: int, index: int, subindex: int, request: bytes) -> bytes | None:
         if command == 0x40:
