@@ -86,3 +86,12 @@ def test_a_well_behaved_raw_slave_is_found_and_assigned(rig):
         found = link.scan()
         assert found == [LssAddress(*ADDRESS_4713)]
         link.assign(found[0], 23)
+
+
+def test_two_raw_slaves_with_one_address_are_named_and_neither_changed(rig, capsys):
+    with bad_slave(rig, LssFault.NONE) as first, bad_slave(rig, LssFault.NONE) as second:
+        code = _cli(rig, "--lss-assign", "4713=23")
+    err = capsys.readouterr().err
+    assert code == 2 and "Traceback" not in err
+    assert "2 devices answer with the same LSS address" in err
+    assert not first.configured and not second.configured
