@@ -5,7 +5,6 @@ CanBusOffError; a restart or any frame heard again ends it."""
 from __future__ import annotations
 
 import can
-import canopen
 import pytest
 
 from prm9tool.device.canlink.bus import (
@@ -53,33 +52,39 @@ def test_an_adapters_refusal_that_names_it_is_a_bus_off(shared):
     assert not shared.is_bus_off(can.CanOperationError("Transmit buffer full"))
 
 
-class _Sdo:
-    RESPONSE_TIMEOUT = 0.5
+class _Port:
+    """An SDO port whose sending fails with ``error`` or that never answers (None)."""
 
-    def __init__(self, error: Exception) -> None:
+    def __init__(self, error: Exception | None) -> None:
         self.error = error
 
-    def upload(self, _index: int, _subindex: int) -> bytes:
-        raise self.error
+    def send(self, _data: bytes) -> None:
+        if self.error is not None:
+            raise self.error
+
+    def receive(self, _timeout_s: float) -> bytes | None:
+        return None
+
+    def drain(self) -> int:
+        return 0
 
 
 class _Node:
-    def __init__(self, error: Exception) -> None:
+    def __init__(self) -> None:
         self.id = 10
-        self.sdo = _Sdo(error)
 
 
 @pytest.mark.parametrize(
     ("error", "ordinary"),
     [
-        (canopen.SdoCommunicationError("No SDO response received"), DeviceTimeoutError),
+        (None, DeviceTimeoutError),
         (can.CanOperationError("Failed to transmit: [Errno 105] No buffer space available"),
          DeviceDisconnectedError),
     ],
     ids=["no-answer", "refused"],
 )  # fmt: skip
 def test_an_sdo_failure_during_a_bus_off_says_bus_off(shared, error, ordinary):
-    sdo = SdoChannel(_Node(error), 0.5, shared)  # type: ignore[arg-type]
+    sdo = SdoChannel(_Node(), 0.01, shared, _Port(error))  # type: ignore[arg-type]
     with pytest.raises(ordinary) as plain:
         sdo.upload(0x6041, 0)
     assert not isinstance(plain.value, CanBusOffError)

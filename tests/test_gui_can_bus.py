@@ -297,6 +297,12 @@ def test_the_description_column_is_in_the_program_language(qtbot, settings):
             i18n.set_language(language)
             dialog.search.click()
             assert [dialog.table.item(r, 7).text() for r in range(3)] == rows
+            kinds = {
+                "de": ["kein PRM9", "nicht identifiziert"],
+                "cs": ["není PRM9", "neidentifikováno"],
+            }
+            # a foreign device is no PRM9; a node that did not answer is not identified (issue 29)
+            assert [dialog.table.item(r, 1).text() for r in (1, 2)] == kinds[language]
             if language == "de":
                 dialog.resize(1000, 360)
                 dialog.show()

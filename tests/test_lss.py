@@ -266,7 +266,8 @@ def test_a_restart_from_prm9tool_finds_an_lss_valve_at_its_lss_node_id(rig, data
 
     valve = rig.add(4711)
     LssMasterLink(rig.shared).assign(ADDRESS_4711, 21)
-    wait_for(lambda: valve.status().nmt_state == "pre-operational", 10)
+    # released, it boots at the new node ID: its boot-up says when (not a guessed wait)
+    wait_for(lambda: rig.shared.node_seen(21).boot_ups > 0, 10)
     with CanopenSession(rig.options, 21) as session:
         session.write("NODEID", 30)
         session.store()

@@ -437,6 +437,10 @@ Poslední akce možná nebyla dokončena. Uložte svou práci pod novým názvem
             </translation>
         </message>
         <message>
+            <source>not identified</source>
+            <translation>neidentifikováno</translation>
+        </message>
+        <message>
             <source>not a PRM9</source>
             <translation>není PRM9</translation>
         </message>

@@ -435,6 +435,10 @@ Die letzte Aktion wurde womöglich nicht vollständig ausgeführt. Speichern Sie
             </translation>
         </message>
         <message>
+            <source>not identified</source>
+            <translation>nicht identifiziert</translation>
+        </message>
+        <message>
             <source>not a PRM9</source>
             <translation>kein PRM9</translation>
         </message>

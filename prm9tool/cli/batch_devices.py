@@ -54,14 +54,17 @@ def list_devices(args: argparse.Namespace) -> int:
 
         others = [e for e in entries if e.kind == NOT_PRM9]
         for entry in others:
-            print(f"prm9tool: {entry.device_id}: not a PRM9: {entry.description}", file=sys.stderr)
+            print(
+                f"prm9tool: {entry.device_id}: {_verdict(entry)}: {entry.description}",
+                file=sys.stderr,
+            )
         valves = [device_info(e, can_options(args)).to_dict() for e in entries if e not in others]
         failed = emit_json(json.dumps(valves, indent=2), args.json)
         if failed is not None:
             return failed
     for entry in entries if not args.json else []:
         if entry.kind == NOT_PRM9:
-            print(f"{entry.device_id}\tnot a PRM9\t{entry.description}")
+            print(f"{entry.device_id}\t{_verdict(entry)}\t{entry.description}")
             continue
         print(
             f"{entry.device_id}\t{entry.type_key}\tserial {entry.serial}\tfirmware {entry.firmware}"
@@ -71,6 +74,15 @@ def list_devices(args: argparse.Namespace) -> int:
         print("prm9tool: no valves found" + (f" ({reason})" if reason else ""), file=sys.stderr)
         return ExitCode.NO_DEVICE
     return ExitCode.OK
+
+
+def _verdict(entry: DeviceEntry) -> str:
+    """``not a PRM9`` for another kind of device, ``not identified`` for a node that did not
+    answer, answered what no PRM9 holds or shares its node ID with another."""
+    facts = entry.can
+    if facts is not None and facts.device_type is not None and not facts.detail:
+        return "not a PRM9"
+    return "not identified"
 
 
 def _emulators(args: argparse.Namespace) -> list[DeviceEntry]:

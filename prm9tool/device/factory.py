@@ -220,7 +220,7 @@ def can_entries(options: CanOptions) -> list[DeviceEntry]:
             bitrate=options.bitrate, name=node.name, device_type=node.device_type,
             vendor=node.vendor, detail=node.detail,
         )  # fmt: skip
-        if not node.is_prm9:
+        if not node.usable:  # another device, or one that failed to identify itself
             text = f"node {node.node_id}: {node.problem}"
             entries.append(
                 DeviceEntry(

@@ -280,7 +280,7 @@ class CanBusDialog(QDialog):
             age = entry.heartbeat_age_s
             cells = [
                 entry.device_id,
-                entry.type_key if valve else self.tr("not a PRM9"),
+                entry.type_key if valve else self._verdict(entry),
                 str(entry.serial) if valve else "",
                 entry.firmware,
                 entry.nmt_state or "",
@@ -294,6 +294,14 @@ class CanBusDialog(QDialog):
                     item.setFlags(item.flags() & ~Qt.ItemFlag.ItemIsSelectable)
                 self.table.setItem(row, column, item)
         self.update_ok()
+
+    def _verdict(self, entry: ValveListing) -> str:
+        """``not a PRM9`` for another kind of device, ``not identified`` for a node that did
+        not answer, answered what no PRM9 holds or shares its node ID (as --list-devices)."""
+        node = entry.can
+        if node is not None and (node.device_type is None or node.detail):
+            return self.tr("not identified")
+        return self.tr("not a PRM9")
 
     def _on_nodes_heard(self, nodes: list[HeardNode]) -> None:
         """The monitor's news: NMT state, heartbeat age, last EMCY; new and silent nodes."""

@@ -132,8 +132,14 @@ class NodeSeen:
     boot_ups: int = 0
     boot_up_at: float | None = None  # time.monotonic() of the last boot-up
     period_s: float | None = None  # the time between its last two heartbeats (not boot-ups)
+    # two nodes at this ID (discovery.scan): heartbeats that go back to the state before the
+    # last one (A, B, A: two heartbeat streams interleaved), boot-ups too close for one node
+    alternations: int = 0
+    twin_boot_ups: int = 0
+    last_states: tuple[int, ...] = ()  # the state bytes of the last two heartbeats
 
 
+TWIN_BOOT_S = 0.5  # no node boots twice within this (a PRM9's boot takes ~2 s, manual §7.6)
 NMT_STATES = {  # the state byte of a heartbeat (CiA 301 §7.2.8.3.2.1)
     0x00: NmtState.INITIALISING,
     0x04: NmtState.STOPPED,
@@ -216,9 +222,19 @@ class CanNetwork:
             seen.nmt_state = NMT_STATES.get(code, NmtState.UNKNOWN)
             if code == 0:
                 seen.boot_ups += 1
+                if seen.boot_up_at is not None and now - seen.boot_up_at < TWIN_BOOT_S:
+                    seen.twin_boot_ups += 1
                 seen.boot_up_at, seen.period_s = now, None  # a new life: its period anew
-            elif seen.heartbeat_at is not None and seen.heartbeat_at != seen.boot_up_at:
-                seen.period_s = now - seen.heartbeat_at
+                seen.last_states = ()
+            else:
+                if seen.heartbeat_at is not None and seen.heartbeat_at != seen.boot_up_at:
+                    seen.period_s = now - seen.heartbeat_at
+                if (
+                    len(seen.last_states) == 2
+                    and seen.last_states[0] == code != seen.last_states[1]
+                ):
+                    seen.alternations += 1
+                seen.last_states = (*seen.last_states[-1:], code)
             seen.heartbeat_at = now
         elif cob == 0x080 and len(msg.data) >= 3:
             seen = self.seen.setdefault(node, NodeSeen(node))

@@ -1,8 +1,9 @@
 """LSS master (CiA 305): finding devices without a node ID and giving them one.
 
-The protocol is the ``canopen`` package's :class:`canopen.lss.LssMaster` (``network.lss``):
-switch state global and selective, Fastscan, inquire, configure node ID and bit timing,
-activate bit timing, store configuration. This module adds what a commissioning tool needs
+The master sends the CiA 305 requests itself on 0x7E5 and reads the answers on 0x7E4 (the
+``canopen`` package's LssMaster took the first frame there as the answer and ran Fastscan
+without bounds, see below): switch state global and selective, Fastscan, inquire, configure
+node ID and bit timing, activate bit timing, store configuration. A commissioning tool needs
 on top: every unconfigured device rather than the first (each one Fastscan finds stays in the
 configuration state, so the next Fastscan finds the next), two devices with the same LSS
 address detected (both answer the selective switch), every CiA 305 error answer turned into
@@ -14,14 +15,24 @@ device without a node ID) tells at once whether Fastscan will find anything and 
 answer takes on this bus; each Fastscan step waits ten times that (at least 50 ms). A step
 whose answer came too late makes the scan miss the device (its final check fails, never a
 wrong address); the scan then runs again with twice the wait.
+
+**Answers by their command specifier, scans bounded.** The master sends the Fastscan, the
+selective switch, inquire, configure and store requests itself and takes as the answer only a
+frame on 0x7E4 whose first byte is the CiA 305 command specifier of that answer: any other
+frame there is no answer (``canopen``'s LssMaster takes the first frame, whatever it is). A
+Fastscan round sends at most :data:`FASTSCAN_FRAMES` requests; a scan ends after
+:data:`MAX_DEVICES` devices, when a round finds an address found before (a device that
+acknowledges every request: each round "finds" it again) or after :data:`SCAN_LIMIT_S`,
+saying which.
 """
 
 from __future__ import annotations
 
+import struct
 import threading
 import time
 from collections.abc import Callable, Iterator
-from contextlib import contextmanager, suppress
+from contextlib import contextmanager
 from dataclasses import dataclass
 from typing import TYPE_CHECKING
 
@@ -41,8 +52,10 @@ from prm9tool.device.canlink.sdo import ARGO_HYTOS_VENDOR
 if TYPE_CHECKING:
     from prm9tool.device.canlink.bus import CanNetwork
 
-LSS_RESPONSE = 0x7E4
+LSS_REQUEST, LSS_RESPONSE = 0x7E5, 0x7E4
 CS_SELECTIVE_RESPONSE, CS_IDENTIFY_SLAVE, CS_NON_CONFIGURED_SLAVE = 0x44, 0x4F, 0x50
+CS_SELECTIVE = (0x40, 0x41, 0x42, 0x43)  # vendor, product, revision, serial
+CS_FASTSCAN, CS_INQUIRE_NODE_ID = 0x51, 0x5E
 CS_INQUIRE = (0x5A, 0x5B, 0x5C, 0x5D)  # vendor, product, revision, serial
 WAITING, CONFIGURATION = 0, 1
 ERROR_NONE = 0
@@ -51,6 +64,9 @@ MIN_STEP_S, MAX_STEP_S = 0.05, 0.8
 SETTLE_MIN_S = 0.1  # further answers to a request several devices may answer
 SCAN_ATTEMPTS = 4
 MAX_DEVICES = 127
+FASTSCAN_FRAMES = 1 + 4 * 33  # a round: the reset step, 32 bits and a confirmation per part
+SCAN_LIMIT_S = 120.0  # a whole scan (127 devices at the slowest step would take far longer)
+ANSWER_S = 0.5  # inquire, configure, store (what canopen's LssMaster waits)
 
 
 @dataclass(frozen=True)
@@ -68,7 +84,7 @@ class LssAddress:
         return self.vendor == ARGO_HYTOS_VENDOR
 
     def as_tuple(self) -> tuple[int, int, int, int]:
-        """(vendor, product, revision, serial) as canopen's LssMaster takes them."""
+        """(vendor, product, revision, serial), the order of the selective switch."""
         return (self.vendor, self.product, self.revision, self.serial)
 
     def describe(self) -> str:
@@ -92,6 +108,16 @@ class _Heard:
     def last(self, cs: int) -> bytes | None:
         return next((data for _, data in reversed(self.frames) if data and data[0] == cs), None)
 
+    def wait(self, cs: int, since: int, timeout_s: float) -> bytes | None:
+        """The first answer ``cs`` among the frames from number ``since`` on, waiting up to
+        ``timeout_s`` for it (frames with another command specifier are no answer)."""
+        deadline = time.monotonic() + timeout_s
+        while True:
+            found = next((d for _, d in self.frames[since:] if d and d[0] == cs), None)
+            if found is not None or time.monotonic() >= deadline:
+                return found
+            time.sleep(0.001)
+
 
 _LOCKS: dict[int, threading.Lock] = {}
 _LOCKS_LOCK = threading.Lock()
@@ -108,7 +134,6 @@ class LssMasterLink:
 
     def __init__(self, shared: CanNetwork) -> None:
         self._shared = shared
-        self._lss = shared.network.lss
         self._lock = _bus_lock(shared)
         self.latency_s: float | None = None  # the first answer to the last probe
 
@@ -119,11 +144,11 @@ class LssMasterLink:
         LssFailedError ``duplicate`` when two devices answer with one address (neither changed).
         """
         with self._lock:
-            self._lss.send_switch_state_global(WAITING)
+            self._switch_global(WAITING)
             try:
                 found = self._fastscan_all(progress)
             finally:
-                self._lss.send_switch_state_global(WAITING)
+                self._switch_global(WAITING)
             for address in found:
                 self._check_unique(address)
             return found
@@ -134,17 +159,18 @@ class LssMasterLink:
         if latency is None:
             return found
         step = min(max(10 * latency, MIN_STEP_S), MAX_STEP_S)
-        misses = 0
+        misses, start = 0, time.monotonic()
         while len(found) < MAX_DEVICES:
-            with self._listen() as heard:
-                ok, parts = self._with_timeout(step, self._lss.fast_scan)
-            if ok and parts is not None:
-                address = LssAddress(*(int(p) for p in parts))
+            self._check_time(start, found)
+            answered, address = self._fastscan(step)
+            if address is not None:
+                if address in found:
+                    raise _answers_everything(address, len(found) + 1)
                 found.append(address)
                 if progress is not None:
                     progress(address)
                 continue
-            if not heard.count(CS_IDENTIFY_SLAVE):
+            if not answered:
                 break  # nobody answered its first step: every device was found
             misses += 1
             if misses >= SCAN_ATTEMPTS:
@@ -159,11 +185,42 @@ class LssMasterLink:
             step = min(2 * step, MAX_STEP_S)
         return found
 
+    def _check_time(self, start: float, found: list[LssAddress]) -> None:
+        if time.monotonic() - start > SCAN_LIMIT_S:
+            raise LssFailedError(
+                f"the LSS scan did not end within its bound of {SCAN_LIMIT_S:g} s "
+                f"({len(found)} devices found): devices keep answering Fastscan; prm9tool "
+                "stopped it. Search again with fewer devices on the bus",
+                "endless",
+            )
+
+    def _fastscan(self, step: float) -> tuple[bool, LssAddress | None]:
+        """One Fastscan round (CiA 305): (whether its first step was answered, the address
+        found or None). At most :data:`FASTSCAN_FRAMES` requests."""
+        with self._listen() as heard:
+
+            def ask(number: int, bit: int, sub: int, following: int) -> bool:
+                since = len(heard.frames)
+                request = struct.pack("<BIBBB", CS_FASTSCAN, number, bit, sub, following)
+                self._send(request)
+                return heard.wait(CS_IDENTIFY_SLAVE, since, step) is not None
+
+            if not ask(0, 0x80, 0, 0):
+                return False, None
+            parts = [0, 0, 0, 0]
+            for sub in range(4):
+                for bit in range(31, -1, -1):
+                    if not ask(parts[sub], bit, sub, sub):
+                        parts[sub] |= 1 << bit
+                if not ask(parts[sub], 0, sub, (sub + 1) & 3):
+                    return True, None
+        return True, LssAddress(*parts)
+
     def _probe(self) -> float | None:
         """Seconds until the first device without a node ID answered (None: none did)."""
         with self._listen() as heard:
             start = time.monotonic()
-            self._lss.send_identify_non_configured_remote_slave()
+            self._send(bytes([0x4C]).ljust(8, b"\0"))  # identify non-configured remote slave
             deadline = start + PROBE_WAIT_S
             while time.monotonic() < deadline and not heard.count(CS_NON_CONFIGURED_SLAVE):
                 time.sleep(0.002)
@@ -176,22 +233,21 @@ class LssMasterLink:
         try:
             self._select(address)
         finally:
-            self._lss.send_switch_state_global(WAITING)
+            self._switch_global(WAITING)
 
     def _select(self, address: LssAddress) -> None:
         """Switch state selective to ``address``: exactly one device must answer."""
-        from canopen.lss import LssError
-
         with self._listen() as heard:
+            since = len(heard.frames)
+            for cs, part in zip(CS_SELECTIVE, address.as_tuple(), strict=True):
+                self._send(struct.pack("<BI3x", cs, part))
             start = time.monotonic()
-            try:
-                self._lss.send_switch_state_selective(*address.as_tuple())
-            except LssError:
+            if heard.wait(CS_SELECTIVE_RESPONSE, since, ANSWER_S) is None:
                 raise LssFailedError(
                     f"no device answers to the LSS address {address.describe()}: it left the "
                     "bus or does not take part in LSS (search the bus)",
                     "unanswered",
-                ) from None
+                )
             _settle(heard, CS_SELECTIVE_RESPONSE, start)
             count = heard.count(CS_SELECTIVE_RESPONSE)
         if count > 1:
@@ -216,31 +272,32 @@ class LssMasterLink:
         if not 1 <= node_id <= 127:
             raise LssFailedError(f"node ID {node_id} is outside 1…127", "refused")
         with self._lock:
-            self._lss.send_switch_state_global(WAITING)
+            self._switch_global(WAITING)
             try:
                 self._select(address)
             except LssFailedError:
-                self._lss.send_switch_state_global(WAITING)  # two alike: release both
+                self._switch_global(WAITING)  # two alike: release both
                 raise
             try:
-                before = self._inquire_node_id(address)
-                self._configure(address, CS_CONFIGURE_NODE_ID, node_id)
-                if bit_timing is not None:
-                    self._configure(address, CS_CONFIGURE_BIT_TIMING, bit_timing)
-                self._configure(address, CS_STORE)
-            except LssFailedError:
-                self._undo(before)
-                raise
+                before = self._inquire_node_id(address)  # nothing changed yet if it fails
+                try:
+                    self._configure(address, CS_CONFIGURE_NODE_ID, node_id)
+                    if bit_timing is not None:
+                        self._configure(address, CS_CONFIGURE_BIT_TIMING, bit_timing)
+                    self._configure(address, CS_STORE)
+                except LssFailedError:
+                    self._undo(before)
+                    raise
             finally:
-                self._lss.send_switch_state_global(WAITING)
+                self._switch_global(WAITING)
 
     def activate_bit_timing(self, switch_delay_ms: int) -> None:
         """Every configured device switches to its pending bit timing (no answer; CiA 305:
         silent for ``switch_delay_ms``, switch, silent for it once more)."""
         with self._lock:
-            self._lss.send_switch_state_global(CONFIGURATION)
-            self._lss.activate_bit_timing(switch_delay_ms)
-            self._lss.send_switch_state_global(WAITING)
+            self._switch_global(CONFIGURATION)
+            self._activate(switch_delay_ms)
+            self._switch_global(WAITING)
             time.sleep(2 * switch_delay_ms / 1000)  # CiA 305: they are silent until then
 
     def change_bus_bit_timing(self, index: int, switch_delay_ms: int) -> int:
@@ -248,21 +305,19 @@ class LssMasterLink:
         ``index``: configure (all must accept), store (all must confirm), activate after
         ``switch_delay_ms``. Returns how many devices switch; LssFailedError when none answers
         or one refuses (then nothing is activated: no device changes its rate now)."""
-        from canopen.lss import LssError
-
         rate = kbit(index)
         with self._lock, self._listen() as heard:
-            self._lss.send_switch_state_global(CONFIGURATION)
+            self._switch_global(CONFIGURATION)
             try:
-                for cs, call in (
-                    (CS_CONFIGURE_BIT_TIMING, lambda: self._lss.configure_bit_timing(index)),
-                    (CS_STORE, self._lss.store_configuration),
+                for cs, request in (
+                    (CS_CONFIGURE_BIT_TIMING, bytes([CS_CONFIGURE_BIT_TIMING, 0, index])),
+                    (CS_STORE, bytes([CS_STORE])),
                 ):
-                    sent = time.monotonic()
-                    with suppress(LssError):  # every answer is judged below, not the first
-                        call()
+                    since, sent = len(heard.frames), time.monotonic()
+                    self._send(request.ljust(8, b"\0"))  # every answer is judged below
+                    heard.wait(cs, since, ANSWER_S)  # the first, then any further ones
                     _settle(heard, cs, sent)
-                    answers = [d for _, d in heard.frames if d and d[0] == cs]
+                    answers = [d for _, d in heard.frames if len(d) >= 2 and d[0] == cs]
                     if not answers:
                         raise LssFailedError(
                             f"no device answers LSS on this bus ({SERVICE[cs]} {rate}): none "
@@ -285,46 +340,70 @@ class LssMasterLink:
                             f"{rate}: {reason}; no device switched now{stored}",
                             "refused",
                         )
-                self._lss.activate_bit_timing(switch_delay_ms)
+                self._activate(switch_delay_ms)
             finally:
-                self._lss.send_switch_state_global(WAITING)
+                self._switch_global(WAITING)
             time.sleep(2 * switch_delay_ms / 1000)  # CiA 305: they are silent until then
         return len(answers)
 
     def _inquire_node_id(self, address: LssAddress) -> int:
-        from canopen.lss import LssError
-
-        try:
-            return int(self._lss.inquire_node_id())
-        except LssError:
+        answer = self._ask(bytes([CS_INQUIRE_NODE_ID]) + bytes(7), CS_INQUIRE_NODE_ID)
+        if answer is None:
             raise LssFailedError(
                 f"serial {address.serial}: no answer to inquire node ID: the device left the "
                 "bus during configuration; nothing was changed",
+                "lost",
+            )
+        node_id = answer[1] if len(answer) > 1 else -1
+        if not (1 <= node_id <= 127 or node_id == LSS_UNCONFIGURED):
+            raise LssFailedError(
+                f"serial {address.serial}: inquire node ID answered {node_id}, which is no node "
+                "ID (1…127, 255 unconfigured); nothing was changed",
+                "refused",
+            )
+        return node_id
+
+    def _ask(self, request: bytes, cs: int, timeout_s: float = ANSWER_S) -> bytes | None:
+        """Send an LSS request, return its answer ``cs`` (None: none came in ``timeout_s``)."""
+        with self._listen() as heard:
+            self._send(request)
+            return heard.wait(cs, 0, timeout_s)
+
+    def _activate(self, switch_delay_ms: int) -> None:
+        """Activate bit timing (0x15) after ``switch_delay_ms`` (no answer)."""
+        self._send(struct.pack("<BH5x", 0x15, switch_delay_ms))
+
+    def _switch_global(self, mode: int) -> None:
+        """Switch state global (no answer)."""
+        self._send(bytes([0x04, mode]).ljust(8, b"\0"))
+
+    def _send(self, request: bytes) -> None:
+        """One LSS request on 0x7E5; LssFailedError ``lost`` when the bus refuses it."""
+        import can
+
+        try:
+            self._shared.network.send_message(LSS_REQUEST, request)
+        except (can.CanError, OSError, RuntimeError) as exc:  # RuntimeError: bus closed
+            raise LssFailedError(
+                f"the CAN bus refused to send an LSS request ({exc}); the devices keep what "
+                "they had stored",
                 "lost",
             ) from None
 
     def _configure(self, address: LssAddress, cs: int, value: int = 0) -> None:
         """One configure/store service; LssFailedError with the CiA 305 error in words."""
-        from canopen.lss import LssError
-
-        call: dict[int, Callable[[], None]] = {
-            CS_CONFIGURE_NODE_ID: lambda: self._lss.configure_node_id(value),
-            CS_CONFIGURE_BIT_TIMING: lambda: self._lss.configure_bit_timing(value),
-            CS_STORE: self._lss.store_configuration,
-        }
-        with self._listen() as heard:
-            try:
-                call[cs]()
-            except LssError:
-                answer = heard.last(cs)
-                raise service_problem(address, cs, value, answer) from None
+        # configure bit timing: table selector 0 (CiA 305 table 0), then the table index
+        request = bytes([cs, 0, value]) if cs == CS_CONFIGURE_BIT_TIMING else bytes([cs, value])
+        answer = self._ask(request.ljust(8, b"\0"), cs)
+        if answer is None or len(answer) < 3 or answer[1] != ERROR_NONE:
+            raise service_problem(
+                address, cs, value, answer if answer and len(answer) >= 3 else None
+            )
 
     def _undo(self, before: int) -> None:
         """Put the pending node ID back (best effort: the device may be gone)."""
-        from canopen.lss import LssError
-
-        with suppress(LssError):
-            self._lss.configure_node_id(before if 1 <= before <= 127 else LSS_UNCONFIGURED)
+        node_id = before if 1 <= before <= 127 else LSS_UNCONFIGURED
+        self._ask(bytes([CS_CONFIGURE_NODE_ID, node_id]).ljust(8, b"\0"), CS_CONFIGURE_NODE_ID)
 
     @contextmanager
     def _listen(self) -> Iterator[_Heard]:
@@ -340,13 +419,14 @@ class LssMasterLink:
         finally:
             network.unsubscribe(LSS_RESPONSE, on_answer)
 
-    def _with_timeout(self, timeout_s: float, call: Callable[[], tuple[bool, list[int] | None]]):  # type: ignore[no-untyped-def]
-        saved = self._lss.RESPONSE_TIMEOUT
-        self._lss.RESPONSE_TIMEOUT = timeout_s
-        try:
-            return call()
-        finally:
-            self._lss.RESPONSE_TIMEOUT = saved
+
+def _answers_everything(address: LssAddress, rounds: int) -> LssFailedError:
+    return LssFailedError(
+        f"Fastscan round {rounds} found {address.describe()} once more: a device acknowledges "
+        "every LSS request (it answers for every bit), so Fastscan cannot find the devices "
+        "beside it; prm9tool stopped the scan. Take that device off the bus and search again",
+        "endless",
+    )
 
 
 def _settle(heard: _Heard, cs: int, sent: float) -> None:

@@ -30,7 +30,8 @@ SERVICE = {
 
 
 class LssFailedError(CommunicationError):
-    """An LSS service failed; ``kind``: none, duplicate, taken, refused, lost, unanswered."""
+    """An LSS service failed; ``kind``: none, duplicate, taken, refused, lost, unanswered,
+    endless (devices kept answering past the scan's bounds)."""
 
     summary = QT_TRANSLATE_NOOP("Errors", "Node ID assignment (LSS) did not complete.")
 

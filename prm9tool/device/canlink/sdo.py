@@ -1,10 +1,13 @@
-"""SDO access to one node through the ``canopen`` package's client, with prm9tool's errors.
+"""SDO access to one node, with prm9tool's errors.
 
-The ``canopen`` package does the SDO protocol (expedited and segmented); this module only
-maps its outcomes: an abort is an :class:`SdoAbortError` with the CiA 301 code, no answer a
+The transfers are the master's own, exact and bounded (prm9tool.device.canlink.sdo_transfer);
+the ``canopen`` package's client only delivers the node's answers. This module maps the
+outcomes: an abort is an :class:`SdoAbortError` with the CiA 301 code, an answer the master
+had to abort a :class:`SdoTransferError` (a ProtocolError) saying why, no answer a
 :class:`DeviceTimeoutError` naming node and object, a bus that refuses to send a
 :class:`DeviceDisconnectedError` — :class:`CanBusOffError` when the adapter is bus-off, which
-is also why no answer can arrive then.
+is also why no answer can arrive then. The size bound of each upload is the catalogue's
+(:func:`max_bytes`).
 """
 
 from __future__ import annotations
@@ -12,17 +15,27 @@ from __future__ import annotations
 import threading
 from typing import TYPE_CHECKING, Protocol
 
+from prm9tool.catalogue import CATALOGUE
+from prm9tool.device.canlink.sdo_transfer import (
+    DEFAULT_MAX_BYTES,
+    CanopenPort,
+    SdoPort,
+    SdoTransfer,
+    SdoTransferError,
+)
 from prm9tool.errors import (
     AbortCode,
     CanBusOffError,
     DeviceDisconnectedError,
     DeviceTimeoutError,
-    SdoAbortError,
+    ProtocolError,
 )
 
 if TYPE_CHECKING:
     import canopen
 
+STRING_MAX_BYTES = 255  # the longest VISIBLE_STRING of a PRM9 (names, versions: ≤ 40 chars)
+__all__ = ["MISSING", "SdoChannel", "SdoTransferError", "max_bytes"]
 MISSING = frozenset({AbortCode.NO_SUCH_OBJECT, AbortCode.NO_SUCH_SUBINDEX})
 PRM9_DEVICE_TYPE = 0x198  # 0x1000: CiA 408 (manual table 7-5)
 ARGO_HYTOS_VENDOR = 0xE6  # 0x1018/1 (manual §7.6 step 2)
@@ -47,13 +60,15 @@ class SdoChannel:
         node: canopen.RemoteNode,
         timeout_s: float,
         bus: BusHealth | None = None,
+        port: SdoPort | None = None,
     ) -> None:
         """``bus``: its error frames are named in a timeout (a wrong bit rate shows as error
-        frames and no answers), its bus-off makes a timeout or a refusal a CanBusOffError."""
+        frames and no answers), its bus-off makes a timeout or a refusal a CanBusOffError.
+        ``port``: where the frames go (default: the node's COB-IDs through ``canopen``)."""
         self.node = node
         self._bus = bus
         self.timeout_s = timeout_s
-        self.node.sdo.RESPONSE_TIMEOUT = timeout_s
+        self.transfer = SdoTransfer(port or CanopenPort(node), node.id or 0)
         # one lock per node object: a scan and the session may share the node's SDO client
         self._lock: threading.Lock = node.__dict__.setdefault(
             "_prm9tool_sdo_lock", threading.Lock()
@@ -72,32 +87,24 @@ class SdoChannel:
 
     def _run(self, index: int, subindex: int, data: bytes | None, timeout_s: float | None) -> bytes:
         import can
-        import canopen
 
-        sdo = self.node.sdo
+        answer_s = timeout_s or self.timeout_s
         with self._lock:
             self.requests += 1
-            sdo.RESPONSE_TIMEOUT = timeout_s or self.timeout_s
             try:
                 if data is None:
-                    return bytes(sdo.upload(index, subindex))
-                sdo.download(index, subindex, data)
+                    bound = max_bytes(index, subindex)
+                    return self.transfer.upload(index, subindex, bound, answer_s)
+                self.transfer.download(index, subindex, data, answer_s)
                 return b""
-            except canopen.SdoAbortedError as exc:
-                raise SdoAbortError(index, subindex, exc.code) from None
-            except canopen.SdoCommunicationError as exc:
+            except DeviceTimeoutError as exc:
                 self._raise_if_bus_off(exc)
-                raise DeviceTimeoutError(
-                    f"node {self.node.id}: no SDO answer for 0x{index:04X}/{subindex} within "
-                    f"{sdo.RESPONSE_TIMEOUT:g} s ({exc}); {self._what_to_check()}"
-                ) from None
-            except (can.CanError, OSError) as exc:
+                raise DeviceTimeoutError(f"{exc}; {self._what_to_check()}") from None
+            except (can.CanError, OSError, RuntimeError) as exc:  # RuntimeError: bus closed
                 self._raise_if_bus_off(exc)
                 raise DeviceDisconnectedError(
                     f"node {self.node.id}: the CAN bus refused to send ({exc})"
                 ) from None
-            finally:
-                sdo.RESPONSE_TIMEOUT = self.timeout_s
 
     def _raise_if_bus_off(self, exc: Exception) -> None:
         if self._bus is not None and self._bus.is_bus_off(exc):
@@ -106,6 +113,12 @@ class SdoChannel:
             ) from None
 
     def _what_to_check(self) -> str:
+        answers = self.transfer.stats.frames
+        if answers:  # it answered, then stopped: not a question of power or bit rate
+            return (
+                f"the node answered {answers} frames of this transfer and then stopped "
+                "(it restarted, or its firmware is faulty)"
+            )
         errors = self._bus.error_frames if self._bus is not None else 0
         if errors:
             return (
@@ -115,9 +128,44 @@ class SdoChannel:
         return "is the valve powered, on this bus, at this bit rate?"
 
     def read_u32(self, index: int, subindex: int) -> int:
-        """An UNSIGNED32 (or shorter) object as a number."""
-        return int.from_bytes(self.upload(index, subindex)[:4], "little")
+        """An UNSIGNED32 (or shorter) object as a number (ProtocolError for another size)."""
+        data = self.upload(index, subindex)
+        if not 1 <= len(data) <= 4:
+            raise ProtocolError(
+                f"node {self.node.id}: 0x{index:04X}/{subindex} answered {len(data)} bytes for "
+                "an UNSIGNED32"
+            )
+        return int.from_bytes(data, "little")
 
     def read_text(self, index: int, subindex: int = 0) -> str:
         """A VISIBLE_STRING object."""
         return self.upload(index, subindex).split(b"\0", 1)[0].decode("latin-1")
+
+    @property
+    def strays(self) -> int:
+        """Answers that came when none was asked for (a second node at this node ID, or the
+        late answer of a transfer that timed out: :attr:`timeouts`)."""
+        return self.transfer.stats.strays
+
+    @property
+    def timeouts(self) -> int:
+        """Transfers that ended without an answer."""
+        return self.transfer.stats.timeouts
+
+    def take_strays(self) -> int:
+        """Drop the answers waiting now that no transfer asked for; how many there were
+        (counted in :attr:`strays`)."""
+        with self._lock:
+            stale = self.transfer.port.drain()
+            self.transfer.stats.strays += stale
+            return stale
+
+
+def max_bytes(index: int, subindex: int) -> int:
+    """The size bound of an upload: the catalogue's type size (at least the 4 bytes of an
+    expedited answer: some nodes answer a short type in 4), a string's
+    :data:`STRING_MAX_BYTES`, :data:`DEFAULT_MAX_BYTES` for an object it does not know."""
+    param = CATALOGUE.by_address(index, subindex)
+    if param is None:
+        return DEFAULT_MAX_BYTES
+    return STRING_MAX_BYTES if param.is_string else max(param.dtype.size, 4)

@@ -74,6 +74,25 @@ LINK_PARAMETERS = ("NODEID", "BITRATE")  # take effect at power-up: the tool's l
 __all__ = ["CanopenSession", "NotAPrm9Error"]
 
 
+def _decoded(param: Parameter, data: bytes) -> int:
+    """The number ``data`` holds as ``param``'s type: ProtocolError when it has too few bytes,
+    or more whose value is not that number (an expedited answer may pad a short type to 4
+    bytes, with zeros or its top bit extended; anything else in them is no value of the
+    type)."""
+    dtype = param.dtype
+    size = dtype.size
+    if len(data) < size:
+        raise ProtocolError(f"{param.mnemonic}: {len(data)} bytes for a {dtype.name}")
+    value = int(dtype.decode(data[:size]))
+    rest = data[size:]
+    padding = b"\xff" if data[size - 1] & 0x80 else b"\0"  # zeros or the sign extended
+    if rest and rest not in (bytes(len(rest)), padding * len(rest)):
+        raise ProtocolError(
+            f"{param.mnemonic}: the answer 0x{data[::-1].hex().upper()} is no {dtype.name}"
+        )
+    return value
+
+
 class NotAPrm9Error(AccessDeniedError):
     """The node is some other CANopen device: prm9tool does not write to it."""
 
@@ -142,6 +161,8 @@ class CanopenSession(UploadSteps, ValveSession):
     def identify(self) -> DeviceInfo:
         """Who the node is; NotAPrm9Error for another CANopen device (0x1000, 0x1018/1)."""
         found = discovery.identify_node(self._shared, self.node_id, SDO_TIMEOUT_S)
+        if found.duplicate:
+            raise ProtocolError(f"node {self.node_id}: {found.problem}")
         if found.device_type is None:
             raise DeviceTimeoutError(f"node {self.node_id}: {found.problem}")
         if not found.is_prm9:
@@ -254,10 +275,7 @@ class CanopenSession(UploadSteps, ValveSession):
         if param.is_string:
             value: Value = data.split(b"\0", 1)[0].decode("latin-1")
         else:
-            size = param.dtype.size
-            if len(data) < size:
-                raise ProtocolError(f"{param.mnemonic}: {len(data)} bytes for a {param.dtype.name}")
-            value = param.dtype.decode(data[:size])
+            value = _decoded(param, data)
         self._known[param.mnemonic] = value
         return value
 
