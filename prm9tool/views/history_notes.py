@@ -96,7 +96,7 @@ def bode_details(result: Any) -> tuple[str, dict[str, Any]]:
 
 def record_tuning_run(connection: Any, kind: str, result: Any) -> None:
     """Record an autotune run or a frequency response of the Tuning window (online; the
-    test report is recorded by its own hook, ``online/characterization_history.py``)."""
+    test report is recorded by its own hook, ``service/history.py`` ``run_with_history``)."""
     summaries = {"autotune": autotune_details, "bode": bode_details}
     operations = {"autotune": "autotune", "bode": "frequency-response"}
     if kind in summaries:
