@@ -134,17 +134,20 @@ def test_export_dcf_of_a_valve_without_canopen_says_why(tmp_path, capsys):
 def test_after_the_scripts_own_nmt_stop_status_says_so(tmp_path, request):
     from can_link_rig import E04, make_link_rig
 
+    from prm9tool.device.canlink.status import StoppedNodeError
+
     rig = make_link_rig(request.node.name, tmp_path, E04)
     try:
         bus = {"can_interface": "virtual", "can_channel": rig.options.channel}
         with prm9tool.connect("can:10", record_history=False, **bus) as valve:
             valve.session._sdo.timeout_s = 0.3  # a stopped valve answers no SDO: not long
             valve.nmt("stop")
-            with pytest.raises(DeviceTimeoutError) as caught:
+            # the session knows its own stop (issue 30 item 3): never "is the valve powered"
+            with pytest.raises(StoppedNodeError) as caught:
                 valve.status()
             text = str(caught.value)
-            assert "this program stopped it (NMT stop)" in text
-            assert "is the valve powered" not in text.split("(")[0]
+            assert "NMT stopped (this tool stopped it)" in text
+            assert "is the valve powered" not in text
             valve.nmt("start")
             valve.status()  # it answers again
     finally:
