@@ -7,11 +7,14 @@ it as ``can:10`` and captures the actual position for 1 s, three times at the de
 without loss) and three times at the bus's 1 kHz, on the PC as it is and with a busy-loop
 process on every core. Printed: the rate, the share of NaN (lost) samples, the wall time.
 
-    .venv/bin/python benchmarks/bench_capture_can.py
+    .venv/bin/python benchmarks/bench_capture_can.py [--quick]
+
+``--quick`` (the CI smoke run): one capture of each kind, 0.3 s, on the PC as it is.
 """
 
 from __future__ import annotations
 
+import argparse
 import os
 import time
 
@@ -29,8 +32,8 @@ from prm9tool.device.emulator import EmulatedValve
 TYPE_KEY = "PRM9-06.3Z11/30-24E02S02-CA"
 
 
-def runs(label: str) -> None:
-    """Three captures at the default rate and three at 1 kHz on a fresh valve."""
+def runs(label: str, repeats: int = 3, seconds: float = 1.0) -> None:
+    """``repeats`` captures at the default rate and as many at 1 kHz on a fresh valve."""
     channel = f"bench-capture-can-{time.monotonic_ns()}"
     valve = EmulatedValve(TYPE_KEY, 4712)
     bus = can.Bus(interface="virtual", channel=channel)
@@ -43,9 +46,9 @@ def runs(label: str) -> None:
     valve.start()
     try:
         with CanopenSession(CanOptions("virtual", channel, 1_000_000), 10) as session:
-            for rate in (None, None, None, 1000, 1000, 1000):
+            for rate in (None,) * repeats + (1000,) * repeats:
                 started = time.perf_counter()
-                data = capture(session, ["position_actual"], 1.0, rate)
+                data = capture(session, ["position_actual"], seconds, rate)
                 wall = time.perf_counter() - started
                 hz = 1.0 / float(data["t"][1] - data["t"][0])
                 lost = 100.0 * float(np.isnan(data["position_actual"]).mean())
@@ -58,7 +61,12 @@ def runs(label: str) -> None:
 
 
 def main() -> None:
-    """The PC as it is, then with a busy loop per core."""
+    """The PC as it is, then with a busy loop per core (``--quick``: as it is, once)."""
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--quick", action="store_true", help="one short capture of each kind")
+    if parser.parse_args().quick:
+        runs("as it is", repeats=1, seconds=0.3)
+        return
     runs("as it is")
     cores = os.cpu_count() or 1
     with busy_cores(cores):
