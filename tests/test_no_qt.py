@@ -22,6 +22,7 @@ QT_FREE = (
     "api",
     "analysis",
     "characterize",
+    "twin",
     "scope",
     "compare",
     "history",

@@ -1,0 +1,70 @@
+"""Issue 31 item 2 (start): the plant constants of a varied emulated valve are identified from
+its position-loop steps by least squares, and the twin file keeps them."""
+
+from __future__ import annotations
+
+from dataclasses import replace
+
+import numpy as np
+import pytest
+
+from prm9tool.characterize.rig import EmulatorRig
+from prm9tool.device.emulator import EmulatedValve
+from prm9tool.device.emulator.constants import PLANT
+from prm9tool.twin.identify import FITTED, fit, record, simulate
+from prm9tool.twin.twinfile import TwinFileError, read_twin, write_twin
+
+E02 = "PRM9-06.3Z11/30-24E02S02"
+# a slower spool, a weaker solenoid, more friction (static friction as the factory plant's)
+VARIED = replace(PLANT, spool_mass_kg=0.09, force_n_per_a=25.0, coulomb_friction_n=0.45)
+
+
+@pytest.fixture(scope="module")
+def fitted():
+    valve = EmulatedValve(E02, serial=3101, plant=VARIED)
+    while valve.status().booting:
+        valve.advance(0.05)
+    steps = record(EmulatorRig(valve))
+    return steps, fit(steps)
+
+
+def test_the_constants_a_varied_valve_changed_are_found(fitted):
+    steps, result = fitted
+    assert result.start_rms_pct > 1.0  # the factory plant does not explain this valve
+    assert result.rms_pct < 0.25  # the twin does, to a few LVDT steps
+    for name in ("spool_mass_kg", "force_n_per_a", "coulomb_friction_n"):
+        found = result.constant(name)
+        assert found.determined, found
+        assert found.value == pytest.approx(getattr(VARIED, name), rel=0.10), found
+    for name in ("damping_n_s_per_m", "force_lag_s", "coil_l_h"):  # unchanged: stay put
+        assert result.constant(name).value == pytest.approx(getattr(PLANT, name), rel=0.10)
+    twin = simulate(steps, result.plant)
+    assert np.sqrt(np.mean((twin - steps.actual) ** 2)) == pytest.approx(result.rms_pct)
+
+
+def test_a_constant_the_steps_do_not_see_is_said_to_be_undetermined(fitted):
+    steps, _ = fitted
+    result = fit(steps, free=("thermal_tau_s",), max_evaluations=5)
+    (tau,) = result.constants
+    assert not tau.determined  # the housing's thermal time constant: not in 1.6 s of steps
+    assert tau.value == PLANT.thermal_tau_s  # kept, not invented
+
+
+def test_the_twin_file_keeps_the_fit_and_refuses_what_it_cannot_use(fitted, tmp_path):
+    _, result = fitted
+    path = tmp_path / "valve.toml"
+    write_twin(path, result, 3101, E02, "1.0.0", "position-loop steps, 5000 Hz")
+    twin = read_twin(path)
+    assert twin.plant == result.plant
+    assert (twin.serial, twin.type_key, twin.firmware) == (3101, E02, "1.0.0")
+    assert set(twin.fit["constants"]) == set(FITTED)
+    assert twin.fit["constants"]["force_n_per_a"]["determined"] is True
+    text = path.read_text(encoding="utf-8")
+    path.write_text(text.replace("version = 1", "version = 2"), encoding="utf-8")
+    with pytest.raises(TwinFileError, match="version 2; this prm9tool reads version 1"):
+        read_twin(path)
+    path.write_text(text.replace("spool_mass_kg =", "spool_mas_kg ="), encoding="utf-8")
+    with pytest.raises(TwinFileError, match=r"\[plant\] has no constant 'spool_mas_kg'"):
+        read_twin(path)
+    with pytest.raises(TwinFileError, match="cannot read the twin file"):
+        read_twin(tmp_path / "missing.toml")
