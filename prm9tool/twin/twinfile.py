@@ -14,6 +14,10 @@
     spool_mass_kg = 0.086
     ...
 
+    [parameters]         # the valve's parameter set (raw values) the steps ran with
+    POSKP = 40
+    ...
+
     [fit]
     rms_pct = 0.18
     max_pct = 0.67
@@ -39,6 +43,7 @@ from datetime import UTC, datetime
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
+from prm9tool.catalogue import CATALOGUE
 from prm9tool.errors import Prm9Error
 from prm9tool.files.atomicfile import atomic_write
 
@@ -65,6 +70,7 @@ class Twin:
     source: str
     plant: PlantConstants
     fit: dict[str, Any]
+    parameters: dict[str, int]
 
 
 def write_twin(
@@ -74,9 +80,10 @@ def write_twin(
     type_key: str,
     firmware: str,
     source: str,
+    parameters: dict[str, int] | None = None,
     date: datetime | None = None,
 ) -> None:
-    """Write the twin of ``fit`` to ``path`` (atomically)."""
+    """Write the twin of ``fit`` and the valve's ``parameters`` to ``path`` (atomically)."""
     when = (date or datetime.now(UTC)).isoformat(timespec="seconds")
     lines = [
         f"format = {_text(FORMAT)}",
@@ -90,6 +97,8 @@ def write_twin(
         "[plant]",
     ]
     lines += [f"{f.name} = {_value(getattr(fit.plant, f.name))}" for f in fields(fit.plant)]
+    lines += ["", "[parameters]"]
+    lines += [f"{name} = {int(raw)}" for name, raw in (parameters or {}).items()]
     lines += [
         "",
         "[fit]",
@@ -164,7 +173,20 @@ def read_twin(path: str | Path) -> Twin:
     fit = data.get("fit", {})
     if not isinstance(fit, dict):
         raise TwinFileError(f"{where}: [fit] must be a table")
-    return Twin(plant=PlantConstants(**{**_defaults(), **values}), fit=fit, **head)
+    parameters = data.get("parameters", {})
+    if not isinstance(parameters, dict):
+        raise TwinFileError(f"{where}: [parameters] must be a table")
+    for name, raw in parameters.items():
+        if name not in CATALOGUE:
+            raise TwinFileError(f"{where}: [parameters] has no parameter {name!r}")
+        if isinstance(raw, bool) or not isinstance(raw, int):
+            raise TwinFileError(f"{where}: [parameters] {name} must be a whole number (raw)")
+    return Twin(
+        plant=PlantConstants(**{**_defaults(), **values}),
+        fit=fit,
+        parameters=dict(parameters),
+        **head,
+    )
 
 
 def _defaults() -> dict[str, Any]:
