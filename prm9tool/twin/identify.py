@@ -52,6 +52,7 @@ BOUND = math.log(10.0)  # a constant moves at most tenfold from its start
 DETERMINED_RSE = 0.05  # relative standard error below which a constant counts as determined
 CORRELATED = 0.98  # |correlation| above which two constants are seen only together
 STEP = 0.03  # the Jacobian's finite difference, in log(constant): 3 %
+EXPLAINED_PCT = 0.12  # rms residual of an explained recording: two LVDT steps (0.061 % each)
 
 
 @dataclass(frozen=True)
@@ -88,6 +89,13 @@ class Fit:
     max_pct: float
     start_rms_pct: float
     evaluations: int
+
+    @property
+    def explained(self) -> bool:
+        """True when the fitted plant explains the recording to :data:`EXPLAINED_PCT` rms: else
+        the valve does something the plant's structure cannot represent (or the fit stopped in
+        a local minimum), and its constants are the best the structure allows, not the valve's."""
+        return self.rms_pct <= EXPLAINED_PCT
 
     def constant(self, name: str) -> FittedConstant:
         """The fitted constant ``name``."""
