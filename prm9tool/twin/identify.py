@@ -34,6 +34,7 @@ from prm9tool.errors import Prm9Error
 
 if TYPE_CHECKING:
     from prm9tool.characterize.rig import Rig
+    from prm9tool.characterize.run import Characterization
     from prm9tool.device.emulator.constants import PlantConstants
 
 CYCLE_HZ = 5000.0  # the emulator's loop: one sample per 200 µs cycle
@@ -52,6 +53,7 @@ BOUND = math.log(10.0)  # a constant moves at most tenfold from its start
 DETERMINED_RSE = 0.05  # relative standard error below which a constant counts as determined
 CORRELATED = 0.98  # |correlation| above which two constants are seen only together
 STEP = 0.03  # the Jacobian's finite difference, in log(constant): 3 %
+MAX_LAG = 25  # cycles: the override's latency to the demand is looked for up to 5 ms
 EXPLAINED_PCT = 0.12  # rms residual of an explained recording: two LVDT steps (0.061 % each)
 
 
@@ -65,6 +67,7 @@ class Steps:
     stimulus: np.ndarray
     actual: np.ndarray
     rate_hz: float = CYCLE_HZ
+    demand: bool = False  # the stimulus is the measured demand, not the override written
 
 
 @dataclass(frozen=True)
@@ -148,21 +151,30 @@ def simulate(steps: Steps, plant: PlantConstants) -> np.ndarray:
         valve.advance(0.05)
     rig = EmulatorRig(valve)
     lp = LOOPS["position"]
+    played = np.repeat(steps.stimulus, per)
     try:
-        samples = rig.play(np.repeat(steps.stimulus, per), [lp.actual])
+        samples = rig.play(played, [lp.setpoint, lp.actual])
     finally:
         rig.release()
-    return samples[per - 1 :: per, 0] * BY_KEY[lp.actual].scale
+    actual = samples[:, 1] * BY_KEY[lp.actual].scale
+    if steps.demand:  # the stimulus is a measured demand: drop the override's own latency
+        demand = samples[:, 0] * BY_KEY[lp.setpoint].scale
+        lag = min(
+            range(MAX_LAG),
+            key=lambda k: float(np.abs(demand[k:] - played[: len(played) - k]).sum()),
+        )
+        actual = np.concatenate([actual[lag:], np.full(lag, actual[-1])])
+    return actual[per - 1 :: per]
 
 
 def fit(
-    steps: Steps,
+    steps: Steps | Sequence[Steps],
     start: PlantConstants | None = None,
     free: Sequence[str] = FITTED,
     max_evaluations: int = 200,
 ) -> Fit:
     """Least-squares fit of the constants ``free`` (others stay as in ``start``, by default
-    the emulator's plant) to the recording."""
+    the emulator's plant) to the recording (or recordings: their residuals side by side)."""
     from scipy.optimize import least_squares
 
     from prm9tool.device.emulator.constants import PLANT
@@ -180,10 +192,18 @@ def fit(
         changes: dict[str, Any] = dict(zip(free, map(float, origin * np.exp(x)), strict=True))
         return replace(base, **changes)
 
+    recordings = [steps] if isinstance(steps, Steps) else list(steps)
+    if not recordings:
+        raise Prm9Error("nothing to fit: no recorded steps")
+
     def residual(x: np.ndarray) -> np.ndarray:
-        simulated = simulate(steps, plant_at(x))
-        n = min(len(simulated), len(steps.actual))
-        return simulated[:n] - steps.actual[:n]
+        plant = plant_at(x)
+        parts = []
+        for one in recordings:
+            simulated = simulate(one, plant)
+            n = min(len(simulated), len(one.actual))
+            parts.append(simulated[:n] - one.actual[:n])
+        return np.concatenate(parts)
 
     memo: dict[bytes, np.ndarray] = {}
 
@@ -240,6 +260,38 @@ def fit(
         float(np.sqrt(np.mean(first**2))),
         int(result.nfev),
     )
+
+
+def from_characterization(run: Characterization) -> list[Steps]:
+    """The position-loop steps of a characterization run (any link) as recordings to fit: each
+    step's measured demand is its stimulus (through the transparent chain the run used, the
+    demand is the override's value), from the spool at rest at the step's start."""
+    lp = LOOPS["position"]
+    out = []
+    for step in run.steps:
+        if step.loop != "position":
+            continue
+        channels = step.record.channels
+        if lp.setpoint not in channels or lp.actual not in channels:
+            continue
+        demand = np.asarray(channels[lp.setpoint], dtype=float)
+        actual = np.asarray(channels[lp.actual], dtype=float)
+        good = np.isfinite(demand) & np.isfinite(actual)
+        if not good.all():  # samples a link lost: the stimulus is not known there
+            continue
+        out.append(
+            Steps(
+                run.info.type_key,
+                dict(run.parameters),
+                demand,
+                actual,
+                run.info.sample_rate_hz,
+                demand=True,
+            )
+        )
+    if not out:
+        raise Prm9Error("the characterization has no complete position-loop step to fit")
+    return out
 
 
 def _parameter_set(rig: Rig) -> dict[str, int]:
