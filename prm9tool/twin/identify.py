@@ -53,6 +53,7 @@ BOUND = math.log(10.0)  # a constant moves at most tenfold from its start
 DETERMINED_RSE = 0.05  # relative standard error below which a constant counts as determined
 CORRELATED = 0.98  # |correlation| above which two constants are seen only together
 STEP = 0.03  # the Jacobian's finite difference, in log(constant): 3 %
+BETWEEN_S = 0.1  # the hold between two recordings played on one valve
 MAX_LAG = 25  # cycles: the override's latency to the demand is looked for up to 5 ms
 EXPLAINED_PCT = 0.12  # rms residual of an explained recording: two LVDT steps (0.061 % each)
 
@@ -129,19 +130,24 @@ def record(rig: Rig) -> Steps:
 def simulate(steps: Steps, plant: PlantConstants) -> np.ndarray:
     """The response of an emulated valve with ``plant`` and the recording's parameter set to
     the recording's stimulus, at the recording's sample rate."""
+    return simulate_all([steps], plant)[0]
+
+
+def simulate_all(recordings: Sequence[Steps], plant: PlantConstants) -> list[np.ndarray]:
+    """The responses to several recordings of one valve, played one after the other on one
+    emulated valve (the first recording's type and parameter set), each but the first after a
+    hold of :data:`BETWEEN_S` at its start level: as a characterization run moves from one test
+    to the next, so the spool comes to rest where friction holds it, not at a fresh 0."""
     from prm9tool.catalogue import CATALOGUE
     from prm9tool.catalogue.typekey import TypeKey
     from prm9tool.characterize.rig import EmulatorRig
     from prm9tool.device.emulator import EmulatedValve
 
-    ratio = CYCLE_HZ / steps.rate_hz
-    per = round(ratio)
-    if per < 1 or abs(ratio - per) > 1e-9:
-        raise Prm9Error(f"a recording at {steps.rate_hz:g} Hz: the rate must divide 5000 Hz")
-    key = TypeKey.parse(steps.type_key)
+    first = recordings[0]
+    key = TypeKey.parse(first.type_key)
     analog = TypeKey(key.size, key.spool, key.flow, key.supply, key.config, False)
     valve = EmulatedValve(analog, plant=plant)
-    for mnemonic, raw in {**steps.values, **TRANSPARENT}.items():
+    for mnemonic, raw in {**first.values, **TRANSPARENT}.items():
         param = CATALOGUE[mnemonic]
         try:
             valve.write(param.index, param.subindex, raw)
@@ -151,20 +157,32 @@ def simulate(steps: Steps, plant: PlantConstants) -> np.ndarray:
         valve.advance(0.05)
     rig = EmulatorRig(valve)
     lp = LOOPS["position"]
-    played = np.repeat(steps.stimulus, per)
+    out = []
     try:
-        samples = rig.play(played, [lp.setpoint, lp.actual])
+        for i, steps in enumerate(recordings):
+            ratio = CYCLE_HZ / steps.rate_hz
+            per = round(ratio)
+            if per < 1 or abs(ratio - per) > 1e-9:
+                raise Prm9Error(
+                    f"a recording at {steps.rate_hz:g} Hz: the rate must divide 5000 Hz"
+                )
+            played = np.repeat(steps.stimulus, per)
+            hold = round(BETWEEN_S * CYCLE_HZ) if i else 0
+            samples = rig.play(
+                np.concatenate([np.full(hold, played[0]), played]), [lp.setpoint, lp.actual]
+            )[hold:]
+            actual = samples[:, 1] * BY_KEY[lp.actual].scale
+            if steps.demand:  # the stimulus is a measured demand: drop the override's latency
+                demand = samples[:, 0] * BY_KEY[lp.setpoint].scale
+                lag = min(
+                    range(MAX_LAG),
+                    key=lambda k: float(np.abs(demand[k:] - played[: len(played) - k]).sum()),
+                )
+                actual = np.concatenate([actual[lag:], np.full(lag, actual[-1])])
+            out.append(actual[per - 1 :: per])
     finally:
         rig.release()
-    actual = samples[:, 1] * BY_KEY[lp.actual].scale
-    if steps.demand:  # the stimulus is a measured demand: drop the override's own latency
-        demand = samples[:, 0] * BY_KEY[lp.setpoint].scale
-        lag = min(
-            range(MAX_LAG),
-            key=lambda k: float(np.abs(demand[k:] - played[: len(played) - k]).sum()),
-        )
-        actual = np.concatenate([actual[lag:], np.full(lag, actual[-1])])
-    return actual[per - 1 :: per]
+    return out
 
 
 def fit(
@@ -197,10 +215,8 @@ def fit(
         raise Prm9Error("nothing to fit: no recorded steps")
 
     def residual(x: np.ndarray) -> np.ndarray:
-        plant = plant_at(x)
         parts = []
-        for one in recordings:
-            simulated = simulate(one, plant)
+        for one, simulated in zip(recordings, simulate_all(recordings, plant_at(x)), strict=True):
             n = min(len(simulated), len(one.actual))
             parts.append(simulated[:n] - one.actual[:n])
         return np.concatenate(parts)
