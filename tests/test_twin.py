@@ -115,12 +115,15 @@ def test_a_valve_the_fitted_structure_cannot_represent_is_said_not_to_be_explain
     assert not result.explained
 
 
-def test_a_characterization_run_is_fitted_from_its_steps():
+def test_a_characterization_run_is_fitted_from_its_steps(tmp_path):
     """The end-of-line characterization's own steps (any link records them the same way) are
-    enough to find a weaker solenoid and a slower spool."""
+    enough to find a weaker solenoid and a slower spool; from its JSON report and CSV files
+    as from the run in memory."""
+    import json
+
     from prm9tool.analysis.profile import parse_profile
-    from prm9tool.characterize.run import characterize
-    from prm9tool.twin.identify import from_characterization
+    from prm9tool.characterize.run import characterize, report_data, write_csv_files
+    from prm9tool.twin.identify import from_characterization, from_report
 
     truth = replace(PLANT, force_n_per_a=24.0, spool_mass_kg=0.08)
     valve = EmulatedValve(E02, plant=truth)
@@ -142,3 +145,11 @@ def test_a_characterization_run_is_fitted_from_its_steps():
     assert result.explained, result.rms_pct  # the steps played in the run's order (docs/twin.md)
     assert result.constant("force_n_per_a").value == pytest.approx(24.0, rel=0.05)
     assert result.constant("spool_mass_kg").value == pytest.approx(0.08, rel=0.10)
+    report = tmp_path / "run.json"
+    files = write_csv_files(run, tmp_path / "run")
+    report.write_text(json.dumps(report_data(run, files)), encoding="utf-8")
+    again = from_report(report)
+    assert len(again) == 2 and again[0].type_key == E02
+    assert np.abs(again[1].actual - recordings[1].actual).max() < 1e-3  # CSV's 6 digits
+    from_file = fit(again, free=("spool_mass_kg", "force_n_per_a", "damping_n_s_per_m"))
+    assert from_file.constant("force_n_per_a").value == pytest.approx(24.0, rel=0.05)
