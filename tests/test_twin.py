@@ -153,3 +153,33 @@ def test_a_characterization_run_is_fitted_from_its_steps(tmp_path):
     assert np.abs(again[1].actual - recordings[1].actual).max() < 1e-3  # CSV's 6 digits
     from_file = fit(again, free=("spool_mass_kg", "force_n_per_a", "damping_n_s_per_m"))
     assert from_file.constant("force_n_per_a").value == pytest.approx(24.0, rel=0.05)
+
+
+def test_fit_twin_on_the_command_line_from_a_report(tmp_path, capsys):
+    """``--fit-twin OUT.toml --from RUN.json``: the report's steps fitted, the twin written."""
+    import json
+
+    from prm9tool.analysis.profile import parse_profile
+    from prm9tool.characterize.run import characterize, report_data, write_csv_files
+    from prm9tool.cli.main import main
+
+    valve = EmulatedValve(E02, serial=3107, plant=replace(PLANT, force_n_per_a=24.0))
+    profile = parse_profile(
+        {"test": {"step_amplitudes_pct": [25], "bode_duration_s": 1, "bode_f_min_hz": 5,
+                  "bode_f_max_hz": 50, "static_period_s": 1}}
+    )  # fmt: skip
+    run = characterize(EmulatorRig(valve), profile)
+    report = tmp_path / "run.json"
+    report.write_text(json.dumps(report_data(run, write_csv_files(run, tmp_path / "run"))))
+    out = tmp_path / "twin.toml"
+    assert main(["--fit-twin", str(out), "--from", str(report), "--json"]) == 0
+    summary = json.loads(capsys.readouterr().out)
+    assert summary["explained"]
+    force = next(c for c in summary["constants"] if c["constant"] == "force_n_per_a")
+    assert force["value"] == pytest.approx(24.0, rel=0.05)
+    twin = read_twin(out)
+    assert twin.serial == 3107 and twin.plant.force_n_per_a == pytest.approx(24.0, rel=0.05)
+    assert main(["--fit-twin", str(out)]) == 2  # usage: --from is missing
+    assert "--fit-twin OUT.toml needs --from RUN.json" in capsys.readouterr().err
+    assert main(["--fit-twin", str(out), "--from", str(tmp_path / "none.json")]) == 3
+    assert "cannot read" in capsys.readouterr().err

@@ -182,6 +182,14 @@ def build_parser() -> argparse.ArgumentParser:
     eol.add_argument(
         "--profile", metavar="LIMITS.toml", help="with --characterize: acceptance profile"
     )
+    eol.add_argument(
+        "--fit-twin", metavar="OUT.toml",
+        help="fit the valve's twin (plant constants, docs/twin.md) from --from RUN.json",
+    )  # fmt: skip
+    eol.add_argument(
+        "--from", dest="fit_from", metavar="RUN.json",
+        help="with --fit-twin: a --characterize JSON report (its step CSV files beside it)",
+    )  # fmt: skip
     values = parser.add_argument_group("single parameters for shell scripts (no GUI; docs/api.md)")
     values.add_argument(
         "--get", nargs="+", metavar="MNEMONIC",
