@@ -12,6 +12,7 @@ from prm9tool.catalogue import CATALOGUE
 from prm9tool.characterize.rig import EmulatorRig
 from prm9tool.device.emulator import EmulatedValve
 from prm9tool.device.emulator.constants import PLANT
+from prm9tool.errors import Prm9Error
 from prm9tool.scope import measure_step
 from prm9tool.twin.emulate import emulated_twin
 from prm9tool.twin.identify import FITTED, fit, record, simulate
@@ -183,3 +184,17 @@ def test_fit_twin_on_the_command_line_from_a_report(tmp_path, capsys):
     assert "--fit-twin OUT.toml needs --from RUN.json" in capsys.readouterr().err
     assert main(["--fit-twin", str(out), "--from", str(tmp_path / "none.json")]) == 3
     assert "cannot read" in capsys.readouterr().err
+
+
+def test_a_recording_at_a_links_1_khz_is_fitted_as_well(fitted):
+    """USB and CAN (SYNC) links sample at 1 kHz: every fifth cycle of the valve's loop."""
+    from prm9tool.twin.identify import Steps
+
+    steps, _ = fitted
+    slow = Steps(steps.type_key, steps.values, steps.stimulus[::5], steps.actual[4::5], 1000.0)
+    result = fit(slow)
+    assert result.explained
+    assert result.constant("force_n_per_a").value == pytest.approx(25.0, rel=0.05)
+    assert result.constant("spool_mass_kg").value == pytest.approx(0.09, rel=0.05)
+    with pytest.raises(Prm9Error, match="the rate must divide 5000 Hz"):
+        fit(Steps(steps.type_key, steps.values, steps.stimulus, steps.actual, 3000.0))
