@@ -104,7 +104,8 @@ def test_b_autotune_of_a_detuned_valve_meets_the_targets(factor):
 
 
 def direct_sweep() -> tuple[float, float]:
-    """Smallest Kp (grid 0.05) at which a P-only loop keeps oscillating, and its period."""
+    """Smallest Kp (grid 0.05) at which a P-only loop keeps oscillating, and its period while
+    its swings are small (grown beyond ±20 %, the coils' current limits slow it down)."""
     for kp_raw in range(300, 700, 5):
         valve = booted({**TRANSPARENT, "POSKP": kp_raw, "POSKI": 0, "POSKD": 0})
         put(valve, "SETPOVRON", 1)
@@ -116,7 +117,9 @@ def direct_sweep() -> tuple[float, float]:
             valve.advance(0.1)
         y = valve.capture_read()[:, 0] / 163.84
         if np.ptp(y[-500:]) > 10.0:  # still swinging by more than 10 % after 0.4 s
-            tail = y[-2000:] - y[-2000:].mean()
+            large = np.flatnonzero(np.abs(y[100:] - 5.0) >= 20.0)
+            small = y[100 : 100 + (int(large[0]) if len(large) else len(y))]
+            tail = small - small.mean()
             spectrum = np.abs(np.fft.rfft(tail * np.hanning(len(tail)), 1 << 17))
             f = np.fft.rfftfreq(1 << 17, CYCLE)
             return kp_raw * 0.01, 1.0 / f[int(np.argmax(spectrum[1:])) + 1]

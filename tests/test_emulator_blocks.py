@@ -128,7 +128,14 @@ def test_zero_ramp_time_means_no_ramp():
 
 
 def captured_controller(kp: int, ki: int, kd: int, t1: int) -> np.ndarray:
-    valve = booted(kp=(0x2020, 1, kp), ki=(0x2020, 2, ki), kd=(0x2020, 3, kd), t1=(0x2020, 4, t1))
+    """Without dither: it moves a two-coil spool at the null, and the step must find e = 0."""
+    valve = booted(
+        kp=(0x2020, 1, kp),
+        ki=(0x2020, 2, ki),
+        kd=(0x2020, 3, kd),
+        t1=(0x2020, 4, t1),
+        dt=(0x6361, 1, 0),
+    )
     valve.capture_start(["position_deviation", "controller_output", "position_setpoint"])
     valve.set_input("setpoint", 1.0)
     valve.advance(0.02)

@@ -24,6 +24,7 @@ QT_FREE = (
     "analysis",
     "characterize",
     "trace",
+    "twin",
     "scope",
     "compare",
     "history",

@@ -203,7 +203,9 @@ def simulate_steps(
     key = TypeKey.parse(rig.info.type_key)
     analog = TypeKey(key.size, key.spool, key.flow, key.supply, key.config, False)
     names = [p.mnemonic for p in CATALOGUE.file_parameters(analog.variant) if p.writable]
-    present = rig.read(names)
+    # The control mode is no file parameter, but it says which loop the steps close (an E04
+    # set to mode 2 to tune its position loop); a link without the object leaves the default.
+    present = {**rig.read(["CTRLMODE"]), **rig.read(names)}
     steps = []
     for values in (present, {**present, **proposed}):
         valve = EmulatedValve(analog)

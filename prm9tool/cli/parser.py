@@ -192,6 +192,14 @@ def build_parser() -> argparse.ArgumentParser:
         "--hydraulics-safe", action="store_true",
         help="with --enable: the hydraulics are safe for the test to move the spool",
     )  # fmt: skip
+    eol.add_argument(
+        "--fit-twin", metavar="OUT.toml",
+        help="fit the valve's twin (plant constants, docs/twin.md) from --from RUN.json",
+    )  # fmt: skip
+    eol.add_argument(
+        "--from", dest="fit_from", metavar="RUN.json",
+        help="with --fit-twin: a --characterize JSON report (its step CSV files beside it)",
+    )  # fmt: skip
     values = parser.add_argument_group("single parameters for shell scripts (no GUI; docs/api.md)")
     values.add_argument(
         "--get", nargs="+", metavar="MNEMONIC",

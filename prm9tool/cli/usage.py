@@ -49,6 +49,8 @@ def usage_problem(args: argparse.Namespace) -> str | None:
         getattr(args, d) for d in ("lss_scan", "lss_assign", "find_bitrate")
     ):
         return problem
+    if args.fit_twin is not None or args.fit_from is not None:
+        return _fit_twin_problem(args)
     if args.characterize:
         return _characterize_problem(args)
     if args.enable or args.hydraulics_safe:
@@ -95,6 +97,26 @@ def usage_problem(args: argparse.Namespace) -> str | None:
         return f"{batch_only[0]} belongs to the headless production mode: use it with --batch"
     if not tools and len(args.device) > 1:
         return "the GUI goes online with one valve: give --device once (several: --batch)"
+    return None
+
+
+def _fit_twin_problem(args: argparse.Namespace) -> str | None:
+    if args.fit_twin is None:
+        return "--from RUN.json belongs to --fit-twin OUT.toml"
+    if args.fit_from is None:
+        return "--fit-twin OUT.toml needs --from RUN.json (a --characterize JSON report)"
+    others = [
+        flag
+        for flag, given in (
+            ("--characterize", args.characterize), ("--device", args.device),
+            ("--emulator", args.emulator), ("--batch", args.batch is not None),
+            ("--list-devices", args.list_devices), ("--profile", args.profile),
+            (f"file {args.file}", args.file),
+        )
+        if given
+    ]  # fmt: skip
+    if others:
+        return f"--fit-twin --from RUN.json takes no {others[0]}"
     return None
 
 

@@ -228,33 +228,57 @@ static Py_ssize_t cycles(double *st, const double *c, const double *in, long n, 
         ph += dph;
         if (ph > TWO_PI) ph -= TWO_PI;
         double dv = damp * sin(ph);
-        ka = ca > 0.0 ? ca + dv : 0.0;
-        if (ka < 0.0) ka = 0.0;
-        kb = cb > 0.0 ? cb + dv : 0.0;
-        if (kb < 0.0) kb = 0.0;
-        /* current controllers, PWM duty, solenoid R-L circuits */
+        if (two) {
+            /* the dither rides on the signed demand A - B; its sign picks the solenoid */
+            ka = ca - cb + dv;
+            if (ka < 0.0) {
+                kb = -ka;
+                ka = 0.0;
+            } else {
+                kb = 0.0;
+            }
+        } else {
+            ka = ca > 0.0 ? ca + dv : 0.0;
+            if (ka < 0.0) ka = 0.0;
+            kb = cb > 0.0 ? cb + dv : 0.0;
+            if (kb < 0.0) kb = 0.0;
+        }
+        /* current controllers, PWM duty (-1..1: fast decay), solenoid R-L circuits; at 0 mA
+         * demand the coil is quenched with the full reverse voltage and the integrator cleared */
         if (on_a && mode) {
-            double err = ka - ia;
-            ia_i += cki * err;
-            if (ia_i > vmax_i) ia_i = vmax_i;
-            else if (ia_i < -vmax_i) ia_i = -vmax_i;
-            da = (rff_a * ka + ckp * err + ia_i) * inv_vs;
-            if (da > 1.0) da = 1.0;
-            else if (da < 0.0) da = 0.0;
+            if (ka > 0.0) {
+                double err = ka - ia;
+                ia_i += cki * err;
+                if (ia_i > vmax_i) ia_i = vmax_i;
+                else if (ia_i < -vmax_i) ia_i = -vmax_i;
+                da = (rff_a * ka + ckp * err + ia_i) * inv_vs;
+                if (da > 1.0) da = 1.0;
+                else if (da < -1.0) da = -1.0;
+            } else {
+                ia_i = 0.0;
+                da = ia > 0.0 ? -1.0 : 0.0;
+            }
             ia = ia * aa + ba * (short_a ? vs : da * vs);
+            if (ia < 0.0) ia = 0.0;
         } else {
             da = 0.0;
             ia = (short_a && on_a) ? ia * aa + ba * vs : ia * aa;
         }
         if (on_b && mode) {
-            double err = kb - ib;
-            ib_i += cki * err;
-            if (ib_i > vmax_i) ib_i = vmax_i;
-            else if (ib_i < -vmax_i) ib_i = -vmax_i;
-            db = (rff_b * kb + ckp * err + ib_i) * inv_vs;
-            if (db > 1.0) db = 1.0;
-            else if (db < 0.0) db = 0.0;
+            if (kb > 0.0) {
+                double err = kb - ib;
+                ib_i += cki * err;
+                if (ib_i > vmax_i) ib_i = vmax_i;
+                else if (ib_i < -vmax_i) ib_i = -vmax_i;
+                db = (rff_b * kb + ckp * err + ib_i) * inv_vs;
+                if (db > 1.0) db = 1.0;
+                else if (db < -1.0) db = -1.0;
+            } else {
+                ib_i = 0.0;
+                db = ib > 0.0 ? -1.0 : 0.0;
+            }
             ib = ib * ab + bb * (short_b ? vs : db * vs);
+            if (ib < 0.0) ib = 0.0;
         } else {
             db = 0.0;
             ib = (short_b && on_b) ? ib * ab + bb * vs : ib * ab;

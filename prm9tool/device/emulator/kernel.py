@@ -249,44 +249,71 @@ def control_loop(s: LoopState) -> Generator[None, int, None]:
                 if ph > two_pi:
                     ph -= two_pi
                 dv = damp * sin(ph)
-                ka = ca + dv if ca > 0.0 else 0.0
-                if ka < 0.0:
-                    ka = 0.0
-                kb = cb + dv if cb > 0.0 else 0.0
-                if kb < 0.0:
-                    kb = 0.0
+                if two:
+                    # The dither rides on the signed current demand A − B; the sign says
+                    # which solenoid carries it, so through the null it passes from coil to
+                    # coil and the force stays demand plus a whole sine (docs/emulator.md).
+                    ka = ca - cb + dv
+                    if ka < 0.0:
+                        kb = -ka
+                        ka = 0.0
+                    else:
+                        kb = 0.0
+                else:
+                    ka = ca + dv if ca > 0.0 else 0.0
+                    if ka < 0.0:
+                        ka = 0.0
+                    kb = cb + dv if cb > 0.0 else 0.0
+                    if kb < 0.0:
+                        kb = 0.0
                 # --- current controllers, PWM duty, solenoid R-L circuits -----------------
                 # A shorted stage puts the supply on the coil whatever the duty, until the
                 # firmware opens the stage's safety switch (on_a / on_b False).
+                # Fast decay: a stage reverses the coil voltage (duty −100…100 %) while
+                # current flows; a solenoid current does not reverse (the bridge's diodes
+                # end it at 0). At 0 mA demand the controller quenches the coil with the
+                # full reverse voltage and clears its integrator.
                 if on_a and mode:
-                    err = ka - ia
-                    ia_i += cki * err
-                    if ia_i > vmax_i:
-                        ia_i = vmax_i
-                    elif ia_i < -vmax_i:
-                        ia_i = -vmax_i
-                    da = (rff_a * ka + ckp * err + ia_i) * inv_vs
-                    if da > 1.0:
-                        da = 1.0
-                    elif da < 0.0:
-                        da = 0.0
+                    if ka > 0.0:
+                        err = ka - ia
+                        ia_i += cki * err
+                        if ia_i > vmax_i:
+                            ia_i = vmax_i
+                        elif ia_i < -vmax_i:
+                            ia_i = -vmax_i
+                        da = (rff_a * ka + ckp * err + ia_i) * inv_vs
+                        if da > 1.0:
+                            da = 1.0
+                        elif da < -1.0:
+                            da = -1.0
+                    else:
+                        ia_i = 0.0
+                        da = -1.0 if ia > 0.0 else 0.0
                     ia = ia * aa + ba * (vs if short_a else da * vs)
+                    if ia < 0.0:
+                        ia = 0.0
                 else:
                     da = 0.0
                     ia = ia * aa + ba * vs if short_a and on_a else ia * aa
                 if on_b and mode:
-                    err = kb - ib
-                    ib_i += cki * err
-                    if ib_i > vmax_i:
-                        ib_i = vmax_i
-                    elif ib_i < -vmax_i:
-                        ib_i = -vmax_i
-                    db = (rff_b * kb + ckp * err + ib_i) * inv_vs
-                    if db > 1.0:
-                        db = 1.0
-                    elif db < 0.0:
-                        db = 0.0
+                    if kb > 0.0:
+                        err = kb - ib
+                        ib_i += cki * err
+                        if ib_i > vmax_i:
+                            ib_i = vmax_i
+                        elif ib_i < -vmax_i:
+                            ib_i = -vmax_i
+                        db = (rff_b * kb + ckp * err + ib_i) * inv_vs
+                        if db > 1.0:
+                            db = 1.0
+                        elif db < -1.0:
+                            db = -1.0
+                    else:
+                        ib_i = 0.0
+                        db = -1.0 if ib > 0.0 else 0.0
                     ib = ib * ab + bb * (vs if short_b else db * vs)
+                    if ib < 0.0:
+                        ib = 0.0
                 else:
                     db = 0.0
                     ib = ib * ab + bb * vs if short_b and on_b else ib * ab
