@@ -119,6 +119,8 @@ def _rig(args: argparse.Namespace) -> tuple[Rig, Callable[[], None]]:
         except Prm9Error as exc:
             raise BatchError(ExitCode.USAGE, f"--emulator: {exc}") from exc
         if enable:  # over the emulated valve's USB link, as the window does
+            while valve.status().booting:  # a stepped valve boots only as it is advanced
+                valve.advance(0.05)
             with open_session(f"emulator:{valve.type_key}:{serial}", paced=False) as session:
                 _commission(session)
         return EmulatorRig(valve), lambda: None

@@ -13,6 +13,7 @@ from __future__ import annotations
 
 import os
 import threading
+import time
 import weakref
 from collections.abc import Callable, Mapping
 from pathlib import Path
@@ -38,6 +39,9 @@ if TYPE_CHECKING:
     from prm9tool.service.history import HistoryHook
 
 __all__ = ["NmtStoppedError", "ValveService", "characterize_session", "parse_nmt", "service_for"]
+
+
+BOOT_WAIT_S = 3.0  # commissioning waits at most this for a valve still booting
 
 
 class NmtStoppedError(DeviceTimeoutError):
@@ -177,8 +181,14 @@ class ValveService:
 
     def commission(self) -> ValveStatus:
         """What the window's "Enable it now?" does: NMT start when the valve waits in
-        pre-operational or stopped, then the enable sequence; returns the status after."""
+        pre-operational or stopped, then the enable sequence; returns the status after. A
+        valve still booting is waited for (at most BOOT_WAIT_S), then enabled."""
         status = self.session.status()
+        # just powered up, the valve boots for about 2 s (manual §1.5, §5.6): wait it out
+        deadline = time.monotonic() + BOOT_WAIT_S
+        while status.booting and time.monotonic() < deadline:
+            time.sleep(0.05)
+            status = self.session.status()
         if str(status.nmt_state) in ("pre-operational", "stopped"):
             self.nmt(NmtCommand.START)
         return self.enable()
