@@ -22,6 +22,7 @@ from prm9tool.catalogue import Parameter
 from prm9tool.cli.batch_devices import BatchError, can_options, open_entry, select
 from prm9tool.cli.json_output import emit_json
 from prm9tool.device.records import Value
+from prm9tool.device.session import ValveSession
 from prm9tool.errors import (
     CommunicationError,
     ExitCode,
@@ -37,16 +38,12 @@ def run(args: argparse.Namespace) -> int:
     """Entry point of ``--get``/``--set``; returns the exit code."""
     try:
         wanted = parse_assignments(args.set or [])
-        entries = select(args)
-        if len(entries) != 1:
-            raise BatchError(ExitCode.USAGE, "--get/--set work on one valve: select exactly one")
-        session = open_entry(entries[0], can_options(args), args.type_key)
     except BatchError as exc:
         print(f"prm9tool: {exc}", file=sys.stderr)
         return int(exc.code)
-    except CommunicationError as exc:
-        print(f"prm9tool: {exc}", file=sys.stderr)
-        return ExitCode.COMMUNICATION
+    session = _one_session(args, "--get/--set work")
+    if isinstance(session, int):
+        return session
     with Valve(session, history_db=args.history_db, command="--set --store") as valve:
         try:
             return _run(args, valve, wanted)
@@ -137,17 +134,9 @@ def as_json(
 def export_dcf(args: argparse.Namespace) -> int:
     """Entry point of ``--export-dcf OUT.dcf``: the valve's DCF, as File → Export DCF writes
     it (the valve service's ``export_dcf``); returns the exit code."""
-    try:
-        entries = select(args)
-        if len(entries) != 1:
-            raise BatchError(ExitCode.USAGE, "--export-dcf works on one valve: select exactly one")
-        session = open_entry(entries[0], can_options(args), args.type_key)
-    except BatchError as exc:
-        print(f"prm9tool: {exc}", file=sys.stderr)
-        return int(exc.code)
-    except CommunicationError as exc:
-        print(f"prm9tool: {exc}", file=sys.stderr)
-        return ExitCode.COMMUNICATION
+    session = _one_session(args, "--export-dcf works")
+    if isinstance(session, int):
+        return session
     with Valve(session, record_history=False) as valve:
         try:
             node = valve.export_dcf(args.export_dcf)
@@ -162,6 +151,22 @@ def export_dcf(args: argparse.Namespace) -> int:
             return ExitCode.COMMUNICATION
     print(f"DCF saved as {args.export_dcf} (node {node})")
     return ExitCode.OK
+
+
+def _one_session(args: argparse.Namespace, what: str) -> ValveSession | int:
+    """The session of the one valve the options select, or the exit code after saying why
+    (``what``: "--get/--set work", the start of the refusal of several valves)."""
+    try:
+        entries = select(args)
+        if len(entries) != 1:
+            raise BatchError(ExitCode.USAGE, f"{what} on one valve: select exactly one")
+        return open_entry(entries[0], can_options(args), args.type_key)
+    except BatchError as exc:
+        print(f"prm9tool: {exc}", file=sys.stderr)
+        return int(exc.code)
+    except CommunicationError as exc:
+        print(f"prm9tool: {exc}", file=sys.stderr)
+        return ExitCode.COMMUNICATION
 
 
 __all__ = ["as_json", "export_dcf", "line", "parse_assignments", "run"]
