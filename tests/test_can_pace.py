@@ -130,6 +130,12 @@ def test_the_sweep_over_can_runs_at_1_khz_to_100_hz_and_lost_samples_do_not_move
         finally:
             done.set()
             watcher.join()
+    if result.held_s > 0.0:  # a busy PC held a setpoint: the sweep is used below it only
+        assert result.limited_to_hz is not None and result.limited_to_hz < 100.0
+        pytest.skip(
+            f"this PC held a setpoint {result.held_s * 1000:.0f} ms: the sweep is used up to "
+            f"{result.limited_to_hz:.0f} Hz only (issue 34 item 9)"
+        )
     assert result.limited_to_hz == 100.0  # 1 kHz / 10 samples per period
     assert len(result.record.t) == 3000 and result.record.t[-1] == pytest.approx(2.999)
     assert result.lost_samples >= 0.1 * 3000 * 0.7  # at least most of what was dropped
