@@ -91,11 +91,10 @@ prepare_prefix() {
   if [ ! -f "$WINEPREFIX/system.reg" ]; then
     mkdir -p "$WINEPREFIX"
     wineboot -i >/dev/null 2>&1 || true
-    wineserver -w
   fi
-  wine reg add 'HKCU\Software\Wine' /v Version /d win10 /f >/dev/null 2>&1
+  # (no wineserver -w: Wine's services started by an earlier program may keep it waiting)
+  wine reg add 'HKCU\Software\Wine' /v Version /d win10 /f >/dev/null 2>&1 </dev/null | cat
   cp "$WORK/dlls/"*.dll "$WINEPREFIX/drive_c/windows/system32/"
-  wineserver -w
 }
 
 prepare_python() {
