@@ -1,4 +1,5 @@
-"""Build prm9tool as one executable file (``dist/prm9tool``) or one folder (``dist/prm9tool-folder/``).
+"""Build prm9tool as one executable file (``dist/prm9tool``, on Windows ``dist\\prm9tool.exe``)
+or one folder (``dist/prm9tool-folder/``).
 
 Run from a checkout with the build extra installed (``pip install -e '.[build]'``):
 
@@ -64,7 +65,7 @@ def main(argv: list[str] | None = None) -> int:
             code = _pyinstaller(LAUNCHER, work / "launcher-dist", work / "launcher", icon)
             if code:
                 return code
-            target = args.dist / "prm9tool"
+            target = onefile_target(args.dist)
             _pack(work / "launcher-dist" / _program_name(), folder, target)
             print(f"built {target} ({_size_mb(target):.1f} MB)")  # noqa: T201
     finally:
@@ -150,6 +151,12 @@ def _anonymous(member: tarfile.TarInfo) -> tarfile.TarInfo:
 
 def _program_name() -> str:
     return "prm9tool.exe" if sys.platform == "win32" else "prm9tool"
+
+
+def onefile_target(dist: Path) -> Path:
+    """The one file: ``dist/prm9tool``, on Windows ``dist\\prm9tool.exe`` (Explorer starts
+    only a file named so, and a .prm file can be opened with it)."""
+    return dist / _program_name()
 
 
 def _write_stamp() -> None:

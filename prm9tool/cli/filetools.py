@@ -25,6 +25,20 @@ def to_stdout(output: str | None) -> bool:
     return output == STDOUT
 
 
+def write_stdout(data: bytes) -> None:
+    """A file's bytes to standard output, whatever the console's encoding: a Windows console or
+    pipe is cp1252 (or another ANSI code page) and cannot encode e.g. the unit Ω, so the text
+    layer would raise UnicodeEncodeError; ``-o - > FILE`` gives the same bytes as ``-o FILE``."""
+    sys.stdout.flush()
+    buffer = getattr(sys.stdout, "buffer", None)
+    if buffer is None:  # a replaced stream with no bytes underneath: text it can take
+        encoding = getattr(sys.stdout, "encoding", None) or "utf-8"
+        sys.stdout.write(data.decode("utf-8").encode(encoding, "replace").decode(encoding))
+        return
+    buffer.write(data)
+    buffer.flush()
+
+
 def run(args: argparse.Namespace) -> int:
     """Run ``--new`` or ``--check`` as given in ``args``; returns the exit code."""
     if args.new is not None and args.check is not None:
@@ -46,7 +60,7 @@ def new_file(type_key_text: str, output: str | None) -> int:
     except TypeKeyError as exc:
         return _usage(str(exc))
     if to_stdout(output):
-        sys.stdout.write(contents.to_text())
+        write_stdout(contents.to_text().encode("utf-8"))  # the bytes the file would hold
         return ExitCode.OK
     if Path(output).exists():
         return _usage(f"{output} already exists; --new never overwrites a file")

