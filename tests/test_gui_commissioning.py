@@ -182,6 +182,10 @@ def test_the_oscilloscopes_buttons_stay_where_they_are_whatever_the_message(qtbo
         qtbot.wait(10)  # the layout settles in the event loop
         assert [_position(button) for button in watched] == before
     assert scope.status.toolTip()  # the cut message is whole in the tip
+    # nor a long message of the main window's status bar (it wraps: the bar keeps two lines)
+    window.statusBar().showMessage(" ".join(["The valve said something long."] * 12))
+    qtbot.wait(10)
+    assert [_position(button) for button in watched] == before
 
 
 def test_a_fault_whose_error_display_ended_is_listed_and_enable_resets_it(qtbot, window):

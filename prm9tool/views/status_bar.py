@@ -6,7 +6,8 @@ connecting and the user's answer to the differences question it says CONNECTING,
 Cancel there makes it OFFLINE again.
 
 A message (:meth:`MainStatusBar.showMessage`) is shown in a label of its own, left of the
-fields, that wraps onto a second line when it is longer than the room left: it is read whole
+fields, that wraps onto a second line when it is longer than the room left (the bar always
+has the room for two lines, so a message never moves the window's buttons): it is read whole
 and the fields (type key and file name too) stay (issue 34 item 20; before, the fields stepped
 aside for a long message and the window did not say which file or valve it showed).
 """
@@ -43,6 +44,9 @@ class MainStatusBar(QStatusBar):
         self.message_label = QLabel()  # the message, wrapped when longer than the room left
         self.message_label.setWordWrap(True)
         self.message_label.setSizePolicy(QSizePolicy.Policy.Ignored, QSizePolicy.Policy.Preferred)
+        # room for two lines, always: a message that wraps must not grow the bar and move every
+        # button above it while the user aims (issue 25 item 14); a longer one is the bar's tip
+        self.message_label.setFixedHeight(2 * self.message_label.fontMetrics().lineSpacing())
         self.addWidget(self.message_label, 1)
         self._message = ""
         self._message_timer = QTimer(self)
