@@ -9,6 +9,7 @@ from __future__ import annotations
 from types import SimpleNamespace
 
 import numpy as np
+import pytest
 
 from prm9tool.api import measure
 
@@ -95,12 +96,8 @@ def test_a_default_capture_that_loses_at_every_pace_is_refused_with_the_reason(m
     monkeypatch.setattr(measure, "TRIAL_S", 0.01)
     monkeypatch.setattr(measure, "_check_keys", lambda session, keys: None)
     link = BusierLink(kept=[0])
-    try:
+    with pytest.raises(measure.SamplesLostError, match=r"could not keep the SYNC pace.* at 62 Hz"):
         measure.capture(link, ["position_actual"], 0.1)
-    except measure.SamplesLostError as exc:
-        assert "could not keep the SYNC pace" in str(exc) and "at 62 Hz" in str(exc)
-    else:
-        raise AssertionError("a capture that lost samples at every pace was returned")
     assert link.started[-1] == 62
 
 
