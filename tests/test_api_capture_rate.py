@@ -9,6 +9,7 @@ from __future__ import annotations
 from types import SimpleNamespace
 
 import numpy as np
+import pytest
 
 from prm9tool.api import measure
 
@@ -49,3 +50,59 @@ def test_the_default_rate_over_canopen_is_what_this_pc_keeps(monkeypatch):
     assert hopeless.started == [1000, 500, 250, 125]
     usb = PacedLink(kept_hz=0, limit_hz=0.0)
     assert measure._link_rate(usb, ["position_actual"]) == 5000 and usb.started == []
+
+
+class BusierLink(PacedLink):
+    """Like PacedLink, but the PC gets busier after the trial: each stream started keeps the
+    next of ``kept`` (the last one for the rest); a lost sample is a NaN row."""
+
+    def __init__(self, kept: list[int]) -> None:
+        super().__init__(kept_hz=kept[0])
+        self.kept = kept
+        self.lost = 0
+        self.given = 0
+
+    def stream_start(self, keys, rate_hz):
+        super().stream_start(keys, rate_hz)
+        self.kept_hz = self.kept[min(len(self.started) - 1, len(self.kept) - 1)]
+        self.lost = self.given = 0
+
+    def stream_read(self):
+        rows = np.ones((max(1, self.rate // 20), 1))
+        if self.rate > self.kept_hz:
+            rows[::5] = np.nan  # a fifth lost
+            self.lost += len(rows[::5])
+        self.given += len(rows)
+        return rows
+
+    @property
+    def samples_lost(self) -> int:
+        return self.lost
+
+
+def test_a_capture_at_the_default_rate_that_lost_samples_is_taken_again_slower(monkeypatch):
+    """The trial kept 1 kHz, the capture then lost a fifth of its samples: before, the default
+    capture returned them as NaN; now it is taken again at 500 Hz, which lost nothing."""
+    monkeypatch.setattr(measure, "TRIAL_S", 0.01)
+    monkeypatch.setattr(measure, "_check_keys", lambda session, keys: None)
+    link = BusierLink(kept=[1000, 300, 1000])  # trial at 1 kHz ok, capture lost, again ok
+    data = measure.capture(link, ["position_actual"], 0.2)
+    assert link.started == [1000, 1000, 500]
+    assert data.rate_hz == 500 and len(data["t"]) == 100
+    assert not np.isnan(data["position_actual"]).any()
+
+
+def test_a_default_capture_that_loses_at_every_pace_is_refused_with_the_reason(monkeypatch):
+    monkeypatch.setattr(measure, "TRIAL_S", 0.01)
+    monkeypatch.setattr(measure, "_check_keys", lambda session, keys: None)
+    link = BusierLink(kept=[0])
+    with pytest.raises(measure.SamplesLostError, match=r"could not keep the SYNC pace.* at 62 Hz"):
+        measure.capture(link, ["position_actual"], 0.1)
+    assert link.started[-1] == 62
+
+
+def test_a_capture_at_a_rate_asked_for_keeps_its_gaps_as_nan(monkeypatch):
+    monkeypatch.setattr(measure, "_check_keys", lambda session, keys: None)
+    link = BusierLink(kept=[0])
+    data = measure.capture(link, ["position_actual"], 0.1, rate_hz=1000)
+    assert link.started == [1000] and np.isnan(data["position_actual"]).any()

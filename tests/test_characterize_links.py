@@ -280,8 +280,9 @@ def test_the_sdo_sampler_reads_the_actual_position_not_its_entry_count(can_valve
         samples = session.stream_read()
         session.stream_stop()
         session.write("SETPOVRON", 0)
-    assert session.stream_source == "" and len(samples)
-    assert samples[-1, 0] == pytest.approx(8192, rel=0.03)  # 0x6301/1, not 0x6301/0 (= 1)
+    arrived = samples[~np.isnan(samples[:, 0]), 0]  # a busy PC's late reads are NaN gaps
+    assert session.stream_source == "" and len(arrived)
+    assert arrived[-1] == pytest.approx(8192, rel=0.03)  # 0x6301/1, not 0x6301/0 (= 1)
 
 
 def test_the_tuning_window_online_over_canopen(qtbot, can_valve, monkeypatch):

@@ -15,7 +15,7 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 
 from prm9tool.catalogue.signals import BY_KEY, MAX_CHANNELS, signals_for
-from prm9tool.errors import DeviceTimeoutError, Prm9Error, ValueRangeError
+from prm9tool.errors import CommunicationError, DeviceTimeoutError, Prm9Error, ValueRangeError
 
 if TYPE_CHECKING:
     from prm9tool.analysis.profile import Profile
@@ -23,7 +23,7 @@ if TYPE_CHECKING:
     from prm9tool.device.session import ValveSession
     from prm9tool.scope.generator import GeneratorSettings
 
-__all__ = ["Captured", "SetpointGenerator", "capture", "characterize"]
+__all__ = ["Captured", "SamplesLostError", "SetpointGenerator", "capture", "characterize"]
 
 log = logging.getLogger("prm9tool.api")
 
@@ -55,25 +55,57 @@ class Captured(dict[str, np.ndarray]):
         return pd.DataFrame(columns, index=pd.Index(self["t"], name="t [s]"))
 
 
+class SamplesLostError(CommunicationError):
+    """A capture at the default rate lost samples even at the slowest pace it may take."""
+
+
 def capture(
     session: ValveSession, keys: Sequence[str], seconds: float, rate_hz: int | None = None
 ) -> Captured:
-    """``seconds`` of the measuring points ``keys`` in display units, plus ``"t"`` (s)."""
+    """``seconds`` of the measuring points ``keys`` in display units, plus ``"t"`` (s).
+
+    At the default rate (``rate_hz`` None) nothing is lost: over CANopen a capture that lost a
+    sample (the PC got busier than during the trial) is taken again at half the pace, and
+    SamplesLostError says so where even the slowest pace lost some. With ``rate_hz`` a lost
+    sample is NaN in its place."""
     keys = list(keys)
     _check_keys(session, keys)
     if not seconds > 0:
         raise ValueRangeError(f"capture: {seconds} s is not a duration")
-    rate = rate_hz or _link_rate(session, keys)
+    if rate_hz:
+        return _recorded(keys, _record(session, keys, seconds, rate_hz)[0], rate_hz)
+    rate = _link_rate(session, keys)
+    while True:
+        samples, lost = _record(session, keys, seconds, rate)
+        if not lost or rate >= STREAM_BASE_HZ:  # USB: the valve's own pace, no slower one
+            return _recorded(keys, samples, rate)
+        slower = _slower(rate)
+        if slower is None:
+            raise SamplesLostError(
+                f"capture: this PC could not keep the SYNC pace: {lost} of {len(samples)} "
+                f"samples lost even at {rate} Hz, the slowest default; pass rate_hz to "
+                "accept gaps (NaN in their place)"
+            )
+        log.info("capture: %d samples lost at %d Hz; again at %d Hz", lost, rate, slower)
+        rate = slower
+
+
+def _record(
+    session: ValveSession, keys: list[str], seconds: float, rate: int
+) -> tuple[np.ndarray, int]:
+    """The raw samples of ``seconds`` at ``rate`` and how many of them were lost."""
     wanted = max(1, round(seconds * rate))
     poll_s = max(0.001, 10 / rate)  # about one report's worth of samples
     silence_s = max(SILENCE_S, 20 / rate)
     session.stream_start(keys, rate)
     blocks: list[np.ndarray] = []
-    got, heard = 0, time.monotonic()
+    got, heard, lost = 0, time.monotonic(), 0
     try:
         while got < wanted:
+            before = session.samples_lost
             block = session.stream_read()
             if len(block):
+                lost += min(session.samples_lost - before, wanted - got)
                 blocks.append(block)
                 got += len(block)
                 heard = time.monotonic()
@@ -85,12 +117,22 @@ def capture(
                 time.sleep(poll_s)
     finally:
         session.stream_stop()
-    samples = np.concatenate(blocks)[:wanted]
+    return np.concatenate(blocks)[:wanted], lost
+
+
+def _recorded(keys: list[str], samples: np.ndarray, rate: int) -> Captured:
     data = Captured((key, samples[:, i] * BY_KEY[key].scale) for i, key in enumerate(keys))
-    data["t"] = np.arange(wanted) / rate
+    data["t"] = np.arange(len(samples)) / rate
     data.units = {**{key: BY_KEY[key].unit for key in keys}, "t": "s"}
     data.rate_hz = rate
     return data
+
+
+def _slower(rate: int) -> int | None:
+    """The next pace of the default's halving (None: ``rate`` was its slowest)."""
+    divider = 2 * round(STREAM_BASE_HZ / rate)
+    slower = STREAM_BASE_HZ // divider
+    return None if slower < TRIAL_MIN_HZ else slower
 
 
 def _check_keys(session: ValveSession, keys: list[str]) -> None:

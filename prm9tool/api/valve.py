@@ -250,7 +250,9 @@ class Valve:
         ``current_a`` …: docs/api.md lists them). Returns one array per key in its display
         unit (%, mA, V, °C) and ``"t"``, the time of each sample in seconds from the first;
         ``.units`` names each unit, ``.to_dataframe()`` gives pandas users a DataFrame.
-        ``rate_hz``: default the fastest the link streams without losing samples.
+        ``rate_hz``: default the fastest the link streams without losing samples (over
+        CANopen taken again slower while it lost some; SamplesLostError where even 62 Hz
+        did); a rate asked for keeps a lost sample as NaN in its place.
         """
         from prm9tool.api.measure import capture
 
