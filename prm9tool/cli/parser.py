@@ -195,7 +195,9 @@ def build_parser() -> argparse.ArgumentParser:
     )  # fmt: skip
     eol.add_argument(
         "--fit-twin", metavar="OUT.toml",
-        help="fit the valve's twin (plant constants, docs/twin.md) from --from RUN.json",
+        help="fit the valve's twin (plant constants, docs/twin.md) from --from RUN.json, or "
+        "characterize the one valve of --device/--emulator (--profile) and fit from that run; "
+        "--json [OUT.json] for the fit report",
     )  # fmt: skip
     eol.add_argument(
         "--from", dest="fit_from", metavar="RUN.json",
