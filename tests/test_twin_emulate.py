@@ -109,3 +109,62 @@ def test_the_command_line_uses_a_twin_as_an_emulated_valve(tmp_path, capsys):
     factory.forget_emulated_valves()
     assert main(["--emulator", f"twin:{tmp_path / 'none.toml'}", "--get", "POSKP"]) == 3
     assert "cannot read the twin file" in capsys.readouterr().err
+
+
+# --- item 2: the twin of a valve the fit characterizes itself ----------------------------------
+def test_the_api_characterizes_a_valve_fits_its_twin_and_records_it(tmp_path):
+    """Valve.fit_twin on the twin of a weaker, heavier valve finds that valve's constants
+    from its own characterization, writes the twin file and records run and twin."""
+    from prm9tool.device.emulator.twinfile import read_twin
+
+    measured = _twin(tmp_path / "measured.toml", serial=4111)
+    url = f"sqlite:///{tmp_path / 'history.db'}"
+    out = tmp_path / "fitted.toml"
+    with prm9tool.connect(f"emulator:twin:{measured}", history_db=url) as valve:
+        twin = valve.fit_twin(out)
+    assert twin.path == out
+    fitted = read_twin(out)
+    assert fitted.serial == 4111 and fitted.type_key == E02
+    assert fitted.parameters["POSKP"] == 31  # the set the run ran with
+    assert fitted.plant.force_n_per_a == pytest.approx(VARIED.force_n_per_a, rel=0.05)
+    operations = [r["operation"] for r in prm9tool.history.records(4111, url)]
+    assert operations == ["characterization", "twin"]
+    (record,) = [r for r in prm9tool.history.records(4111, url) if r["operation"] == "twin"]
+    assert record["details"]["twin_file"] == str(out.resolve())
+    assert record["details"]["constants"]["force_n_per_a"]["determined"] is True
+
+
+def test_fit_twin_on_the_command_line_runs_the_characterization_itself(tmp_path, capsys):
+    import json
+
+    from prm9tool.cli.main import main
+
+    measured = _twin(tmp_path / "measured.toml", serial=4112)
+    url = f"sqlite:///{tmp_path / 'history.db'}"
+    out, report = tmp_path / "fitted.toml", tmp_path / "fit.json"
+    argv = ["--fit-twin", str(out), "--emulator", f"twin:{measured}", "--history-db", url]
+    assert main([*argv, "--json", str(report)]) == 0
+    fit = json.loads(report.read_text(encoding="utf-8"))
+    assert fit["explained"] and fit["twin"] == str(out)
+    force = next(c for c in fit["constants"] if c["constant"] == "force_n_per_a")
+    assert force["value"] == pytest.approx(25.0, rel=0.05) and force["determined"]
+    assert [r["operation"] for r in prm9tool.history.records(4112, url)] == [
+        "characterization",
+        "twin",
+    ]
+    capsys.readouterr()
+    assert main(["--fit-twin", str(out)]) == 2
+    assert "--device ID or --emulator KEY" in capsys.readouterr().err
+
+
+@pytest.mark.xfail(
+    strict=True,
+    reason="known (docs/twin.md): a valve opened in real time starts its run from another "
+    "rest and cycle phase than the fit's fresh simulated valve; 0.18-0.27 % rms remain",
+)
+def test_the_twin_of_a_valve_opened_in_real_time_is_explained(tmp_path):
+    measured = _twin(tmp_path / "measured.toml", serial=4113)
+    with prm9tool.connect(f"emulator:twin:{measured}", record_history=False) as valve:
+        twin = valve.fit_twin(tmp_path / "fitted.toml")
+    assert twin.fit.explained
+    assert twin.fit.constant("spool_mass_kg").value == pytest.approx(0.09, rel=0.05)

@@ -11,6 +11,7 @@ characterization on a rig first. :func:`fit_report` is the fit report (``--json`
 from __future__ import annotations
 
 import math
+import os
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 from pathlib import Path
@@ -36,7 +37,7 @@ class ValveTwin:
 
 
 def write_fitted(
-    path: str | Path,
+    path: str | os.PathLike[str],
     recordings: Sequence[Steps],
     serial: int,
     type_key: str,
@@ -50,7 +51,7 @@ def write_fitted(
     return result
 
 
-def twin_of_run(run: Characterization, path: str | Path) -> ValveTwin:
+def twin_of_run(run: Characterization, path: str | os.PathLike[str]) -> ValveTwin:
     """The twin of the valve ``run`` characterized, from the run's position-loop steps,
     written to ``path``. Prm9Error when the run has no complete position-loop step."""
     recordings = from_characterization(run)
@@ -67,7 +68,7 @@ def twin_of_run(run: Characterization, path: str | Path) -> ValveTwin:
 
 def fit_valve(
     rig: Rig,
-    path: str | Path,
+    path: str | os.PathLike[str],
     profile: Profile | None = None,
     progress: Callable[[str], None] | None = None,
 ) -> ValveTwin:
@@ -81,7 +82,7 @@ def fit_valve(
     return twin_of_run(run, path)
 
 
-def fit_report(result: Fit, path: str | Path) -> dict[str, Any]:
+def fit_report(result: Fit, path: str | os.PathLike[str]) -> dict[str, Any]:
     """The fit report (``--fit-twin … --json``): residuals and every fitted constant."""
     return {
         "twin": str(path),
@@ -109,7 +110,7 @@ def history_outcome(result: Fit) -> str:
     return "explained" if result.explained else "not-explained"
 
 
-def history_details(result: Fit, path: str | Path) -> dict[str, Any]:
+def history_details(result: Fit, path: str | os.PathLike[str]) -> dict[str, Any]:
     """What a ``twin`` history record keeps: the file, the residuals, each constant's value
     and whether the data determine it."""
     return {

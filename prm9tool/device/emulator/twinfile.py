@@ -43,6 +43,7 @@ from __future__ import annotations
 
 import json
 import math
+import os
 import tomllib
 from collections.abc import Sequence
 from dataclasses import dataclass, fields
@@ -115,7 +116,7 @@ class Twin:
 
 
 def write_twin(
-    path: str | Path,
+    path: str | os.PathLike[str],
     fit: Fit,
     serial: int,
     type_key: str,
