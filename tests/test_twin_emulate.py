@@ -148,6 +148,8 @@ def test_fit_twin_on_the_command_line_runs_the_characterization_itself(tmp_path,
     assert fit["explained"] and fit["twin"] == str(out)
     force = next(c for c in fit["constants"] if c["constant"] == "force_n_per_a")
     assert force["value"] == pytest.approx(25.0, rel=0.05) and force["determined"]
+    proof = {row["figure"]: row for row in fit["comparison"]}  # the twin characterized too
+    assert proof["bode_bandwidth_hz"]["ratio"] == pytest.approx(1.0, abs=0.05)
     assert [r["operation"] for r in prm9tool.history.records(4112, url)] == [
         "characterization",
         "twin",

@@ -13,6 +13,7 @@ from __future__ import annotations
 
 import argparse
 import json
+import math
 import sys
 from pathlib import Path
 from typing import TYPE_CHECKING
@@ -21,20 +22,29 @@ from prm9tool.errors import CommunicationError, ExitCode, Prm9Error
 
 if TYPE_CHECKING:
     from prm9tool.twin.identify import Fit
+    from prm9tool.twin.proof import Side
 
 
 def run(args: argparse.Namespace) -> int:
     """Fit, write the twin file, print the fit report (``--json``: as JSON)."""
     from prm9tool.twin.fitvalve import fit_report
 
+    sides: list[Side] = []
     if args.fit_from is not None:
         code, result = _from_report(args)
     else:
-        code, result = _from_valve(args)
+        code, result, sides = _from_valve(args)
     if result is None:
         return code
     if args.json:
-        text = json.dumps(fit_report(result, args.fit_twin), indent=2)
+        summary = fit_report(result, args.fit_twin)
+        if sides:  # the proof: the twin characterized as the valve was
+            summary["comparison"] = [
+                {"figure": s.name, "unit": s.unit, "valve": _number(s.valve),
+                 "twin": _number(s.twin), "ratio": _number(s.ratio)}
+                for s in sides
+            ]  # fmt: skip
+        text = json.dumps(summary, indent=2)
         if isinstance(args.json, str):  # --json OUT.json: the fit report into that file
             Path(args.json).write_text(text + "\n", encoding="utf-8")
         else:
@@ -45,7 +55,16 @@ def run(args: argparse.Namespace) -> int:
     for c in result.constants:
         state = "determined" if c.determined else "not determined, kept"
         print(f"  {c.name}: {c.start:g} → {c.value:.4g} ({state})")
+    if sides:
+        from prm9tool.twin.proof import table
+
+        print("the twin characterized as the valve was:")
+        print("\n".join(f"  {line}" for line in table(sides)))
     return ExitCode.OK
+
+
+def _number(value: float) -> float | None:
+    return value if math.isfinite(value) else None  # JSON has no nan
 
 
 def _from_report(args: argparse.Namespace) -> tuple[int, Fit | None]:
@@ -73,8 +92,9 @@ def _from_report(args: argparse.Namespace) -> tuple[int, Fit | None]:
     return ExitCode.OK, result
 
 
-def _from_valve(args: argparse.Namespace) -> tuple[int, Fit | None]:
-    """Characterize the one valve of ``--device``/``--emulator``, record the run, fit."""
+def _from_valve(args: argparse.Namespace) -> tuple[int, Fit | None, list[Side]]:
+    """Characterize the one valve of ``--device``/``--emulator``, record the run, fit, and
+    characterize the twin as the valve was (the side-by-side)."""
     from prm9tool.characterize.procedures import LimitExceededError
     from prm9tool.characterize.rig import Stopped, ValveFaultError
     from prm9tool.characterize.run import characterize
@@ -87,24 +107,24 @@ def _from_valve(args: argparse.Namespace) -> tuple[int, Fit | None]:
     if not Path(args.fit_twin).parent.is_dir():
         print(f"prm9tool: --fit-twin {args.fit_twin}: there is no folder "
               f"{Path(args.fit_twin).parent}", file=sys.stderr)  # fmt: skip
-        return ExitCode.USAGE, None
+        return ExitCode.USAGE, None, []
     try:
         profile = _profile(args)
         rig, close = _rig(args, "--fit-twin")
     except BatchError as exc:
         print(f"prm9tool: {exc}", file=sys.stderr)
-        return int(exc.code), None
+        return int(exc.code), None, []
     try:
         run = characterize(rig, profile, lambda text: print(f"prm9tool: {text}", file=sys.stderr))
     except (Stopped, LimitExceededError, ValveFaultError, ValueError) as exc:
         print(f"prm9tool: test stopped: {exc}", file=sys.stderr)
-        return ExitCode.OUT_OF_LIMITS, None
+        return ExitCode.OUT_OF_LIMITS, None, []
     except CommunicationError as exc:
         print(f"prm9tool: {exc}", file=sys.stderr)
-        return ExitCode.COMMUNICATION, None
+        return ExitCode.COMMUNICATION, None, []
     except Prm9Error as exc:
         print(f"prm9tool: test stopped: {exc}", file=sys.stderr)
-        return ExitCode.OUT_OF_LIMITS, None
+        return ExitCode.OUT_OF_LIMITS, None, []
     finally:
         close()
     recorder = recorder_for(args)
@@ -114,12 +134,20 @@ def _from_valve(args: argparse.Namespace) -> tuple[int, Fit | None]:
             twin = twin_of_run(run, args.fit_twin)
         except OSError as exc:
             print(f"prm9tool: cannot write {args.fit_twin}: {exc.strerror or exc}", file=sys.stderr)
-            return ExitCode.INVALID_FILE, None
+            return ExitCode.INVALID_FILE, None, []
         except Prm9Error as exc:
             print(f"prm9tool: --fit-twin: {exc}", file=sys.stderr)
-            return ExitCode.INVALID_FILE, None
+            return ExitCode.INVALID_FILE, None, []
         details = history_details(twin.fit, twin.path)
         record_twin(recorder, run, history_outcome(twin.fit), details)
     finally:
         recorder.close()
-    return ExitCode.OK, twin.fit
+    from prm9tool.twin.proof import characterize_twin, side_by_side
+
+    print("prm9tool: characterizing the twin as the valve was", file=sys.stderr)
+    try:
+        again = characterize_twin(run, twin.path)
+    except (Prm9Error, ValueError) as exc:  # the twin is written; only its proof is missing
+        print(f"prm9tool: the twin could not be characterized: {exc}", file=sys.stderr)
+        return ExitCode.OK, twin.fit, []
+    return ExitCode.OK, twin.fit, side_by_side(run, again)
