@@ -117,14 +117,18 @@ def _fit_twin_problem(args: argparse.Namespace) -> str | None:
             )
             if given
         ]  # fmt: skip
-        return f"--fit-twin --device/--emulator takes no {others[0]}" if others else None
+        if others:
+            return f"--fit-twin --device/--emulator takes no {others[0]}"
+        if args.hydraulics_safe and not args.enable:
+            return "--hydraulics-safe confirms --enable: add --enable, or leave it out"
+        return None
     others = [
         flag
         for flag, given in (
             ("--characterize", args.characterize), ("--device", args.device),
             ("--emulator", args.emulator), ("--batch", args.batch is not None),
             ("--list-devices", args.list_devices), ("--profile", args.profile),
-            (f"file {args.file}", args.file),
+            ("--enable", args.enable), (f"file {args.file}", args.file),
         )
         if given
     ]  # fmt: skip
