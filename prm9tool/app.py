@@ -53,11 +53,14 @@ def plan_from(args: argparse.Namespace, spools_problem: Prm9Error | None = None)
 
 def _emulator_spec(spec: str) -> str:
     """``TYPEKEY[:SERIAL]`` with the defaults filled in: without a serial the first one from
-    1001 on that is free for this type (``factory.free_emulator_serial``)."""
-    from prm9tool.device.factory import free_emulator_serial
+    1001 on that is free for this type (``factory.free_emulator_serial``). ``twin:FILE`` stays
+    as it is (the twin file names its serial; :func:`_normal_spec` reads it)."""
+    from prm9tool.device.factory import TWIN, free_emulator_serial
     from prm9tool.errors import TypeKeyError
     from prm9tool.views.hid_dialog import DEFAULT_EMULATOR_SERIAL, DEFAULT_EMULATOR_TYPE_KEY
 
+    if spec and spec.startswith(f"{TWIN}:"):
+        return spec
     key, _, serial = (spec or DEFAULT_EMULATOR_TYPE_KEY).partition(":")
     key = key or DEFAULT_EMULATOR_TYPE_KEY
     if not serial:
@@ -223,7 +226,7 @@ def _start_emulated(window: MainWindow, specs: list[str]) -> None:
     The device id goes to the connection as it is, so the device layer is imported in the
     connection's worker thread while the window is already shown.
     """
-    from prm9tool.errors import TypeKeyError
+    from prm9tool.errors import Prm9Error
     from prm9tool.translate import error_text
     from prm9tool.views import prompts
     from prm9tool.views.hid_dialog import (
@@ -235,7 +238,7 @@ def _start_emulated(window: MainWindow, specs: list[str]) -> None:
 
     try:
         normal = [_normal_spec(spec) for spec in specs]
-    except TypeKeyError as exc:
+    except Prm9Error as exc:  # a bad type key or serial, a twin file that cannot be used
         prompts.inform(window, prompts.Icon.Warning, "--emulator", error_text(exc))
         return
     known = saved_emulators(window.settings)
@@ -246,11 +249,17 @@ def _start_emulated(window: MainWindow, specs: list[str]) -> None:
 
 
 def _normal_spec(spec: str) -> str:
-    """``TYPEKEY:SERIAL`` with the type key checked and written the canonical way."""
+    """``TYPEKEY:SERIAL`` with the type key checked and written the canonical way; of
+    ``twin:FILE`` the twin's (made here: the emulated valve of its serial in this process;
+    TwinFileError for a file that cannot be used)."""
     from prm9tool.catalogue.typekey import TypeKey
+    from prm9tool.device import factory
     from prm9tool.errors import TypeKeyError
     from prm9tool.messages import QT_TRANSLATE_NOOP
 
+    if spec.startswith(f"{factory.TWIN}:"):
+        key, number = factory.parse_emulator_spec(spec)
+        return f"{key}:{number}"
     key, _, serial = spec.rpartition(":")
     if not serial.isdigit() or not 0 < int(serial) < 2**32:
         raise TypeKeyError(

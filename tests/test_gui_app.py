@@ -77,6 +77,36 @@ def test_emulator_on_the_command_line_goes_online_and_is_remembered(qtbot, answe
     window.connection.shutdown()
 
 
+def test_a_twin_on_the_command_line_goes_online_as_its_valve(qtbot, answers, tmp_path):
+    """``prm9tool --emulator twin:FILE`` (issue 31): the window goes online with the twin of
+    the file's serial; a twin file that cannot be used is said in words, nothing online."""
+    from dataclasses import replace
+
+    from prm9tool.device.emulator.constants import PLANT
+    from prm9tool.device.emulator.twinfile import write_twin
+    from prm9tool.twin.identify import Fit
+
+    path = tmp_path / "valve.toml"
+    write_twin(path, Fit(replace(PLANT, force_n_per_a=25.0), (), 0.0, 0.0, 0.0, 0), 4301,
+               E04_CA, "1.0.0", "steps", {"POSKP": 31})  # fmt: skip
+    app.create_application()
+    args = _args("--emulator", f"twin:{path}")
+    window = app.create_window(args)
+    qtbot.addWidget(window)
+    with qtbot.waitSignal(window.connection.online_changed, timeout=TIMEOUT):
+        app.start(window, app.plan_from(args))
+    assert window.connection.device.serial == 4301
+    assert factory.EMULATED.valves[4301].plant.force_n_per_a == 25.0
+    window.connection.shutdown()
+    factory.forget_emulated_valves()
+    bad = _args("--emulator", f"twin:{tmp_path / 'none.toml'}")
+    window = app.create_window(bad)
+    qtbot.addWidget(window)
+    app.start(window, app.plan_from(bad))
+    assert "cannot read the twin file" in answers.informed[-1]
+    assert not window.connection.is_online
+
+
 def test_the_emulated_ca_valve_joins_the_command_lines_can_bus_once_online(qtbot, answers):
     import can
 

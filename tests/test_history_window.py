@@ -180,3 +180,12 @@ def test_a_record_with_odd_details_is_shown_not_a_crash(qapp, details):
     for operation in ("characterization", "report-saved", "autotune", "frequency-response"):
         text = model.meaning({"operation": operation, "details": json.dumps(details)})
         assert isinstance(text, str) and text
+
+
+def test_every_operation_the_history_records_has_a_label(qtbot, recorder):
+    """A ``twin`` record (issue 31) reads as words in the window, as every other operation."""
+    from prm9tool.history.recorder import OPERATIONS
+
+    labels = _window(qtbot, recorder, 1).model._operations()
+    assert [op for op in OPERATIONS if op not in labels] == []
+    assert labels["twin"] == "Twin fitted (--fit-twin)"

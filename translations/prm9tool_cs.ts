@@ -2412,6 +2412,10 @@ Ano načte a záznam zařadí do fronty; Ne nenačte nic.</translation>
             <translation>Zkušební protokol uložen</translation>
         </message>
         <message>
+            <source>Twin fitted (--fit-twin)</source>
+            <translation>Digitální dvojče určeno (--fit-twin)</translation>
+        </message>
+        <message>
             <source>stored with 0x1010</source>
             <translation>uloženo pomocí 0x1010</translation>
         </message>

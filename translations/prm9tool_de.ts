@@ -2397,6 +2397,10 @@ Ja lädt hoch und stellt den Eintrag in die Warteschlange; Nein lädt nichts hoc
             <translation>Prüfprotokoll gespeichert</translation>
         </message>
         <message>
+            <source>Twin fitted (--fit-twin)</source>
+            <translation>Digitaler Zwilling ermittelt (--fit-twin)</translation>
+        </message>
+        <message>
             <source>stored with 0x1010</source>
             <translation>mit 0x1010 gespeichert</translation>
         </message>

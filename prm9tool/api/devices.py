@@ -96,13 +96,15 @@ def connect(
 
     ``device``: ``"usb:PATH"`` (as :func:`list_devices` gives it) or a USB valve's serial
     number, ``"emulator:TYPEKEY[:SERIAL]"`` (an emulated valve in this process, its EEPROM in
-    the user data dir; default serial 1) or ``"can:NODE"`` on the bus of ``can_interface``,
+    the user data dir; default serial 1), ``"emulator:twin:FILE"`` (the twin of one measured
+    valve, its serial, plant and parameter set from the twin file: docs/twin.md) or ``"can:NODE"`` on the bus of ``can_interface``,
     ``can_channel``, ``can_bitrate`` (python-can names; default: the virtual bus
     ``prm9tool``). ``type_key``: the key on the label of a CANopen valve that does not tell
     its own. Uploads, downloads and stores go into the history database (``history_db``: an
     SQLAlchemy URL, default the GUI's) unless ``record_history`` is False.
 
-    Raises Prm9Error for an unknown ID, TypeKeyError for a bad emulator spec, a
+    Raises Prm9Error for an unknown ID, TypeKeyError for a bad emulator spec, TwinFileError
+    for a twin file that cannot be used, a
     CommunicationError when the valve does not answer.
     """
     from prm9tool.api.valve import Valve
@@ -119,7 +121,7 @@ def connect(
     elif kind != USB:
         raise Prm9Error(
             f"unknown device {device!r}: expected 'usb:PATH', a serial number, "
-            "'emulator:TYPEKEY[:SERIAL]' or 'can:NODE'"
+            "'emulator:TYPEKEY[:SERIAL]', 'emulator:twin:FILE' or 'can:NODE'"
         )
     # an emulated valve runs in real time in a thread of its own while it is open, as in the GUI
     session = open_session(device, paced=True, can_link=options, label_key=type_key)

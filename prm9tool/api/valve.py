@@ -31,6 +31,7 @@ if TYPE_CHECKING:
     from prm9tool.device.emulated import EmulatorControls
     from prm9tool.device.session import ValveSession
     from prm9tool.scope.generator import Waveform
+    from prm9tool.twin.fitvalve import ValveTwin
 
 log = logging.getLogger("prm9tool.api")
 __all__ = ["ReadBackError", "Valve"]
@@ -289,6 +290,20 @@ class Valve:
         figures, the parameters the valve ran with); a run that raises records nothing.
         Refused (MotionBusyError, nothing moved) while this valve's setpoint generator runs."""
         return self._service.characterize(profile, progress)
+
+    def fit_twin(
+        self,
+        path: str | os.PathLike[str],
+        profile: Profile | str | os.PathLike[str] | None = None,
+        progress: Callable[[str], None] | None = None,
+    ) -> ValveTwin:
+        """The valve's twin (docs/twin.md), as ``--fit-twin OUT.toml --device ID`` makes it:
+        the end-of-line test (moves the spool; recorded as :meth:`characterize` records it),
+        its position-loop steps fitted by least squares, the twin file written to ``path``
+        and recorded in the history (operation ``twin``). The result has the run, the fit
+        (``fit.constants``: which constants the data determine) and the path; open the twin
+        with ``prm9tool.connect(f"emulator:twin:{path}")``."""
+        return self._service.fit_twin(path, profile, progress)
 
     def export_dcf(self, path: str | os.PathLike[str]) -> int:
         """Write the valve's CiA 306 DCF (its working values, the node ID and bit rate it runs

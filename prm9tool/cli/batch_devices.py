@@ -86,8 +86,12 @@ def _verdict(entry: DeviceEntry) -> str:
 
 
 def _emulators(args: argparse.Namespace) -> list[DeviceEntry]:
+    from prm9tool.device.emulator.twinfile import TwinFileError
+
     try:
         return emulator_entries(args.emulator)
+    except TwinFileError as exc:  # --emulator twin:FILE of a file that cannot be used
+        raise BatchError(ExitCode.INVALID_FILE, f"--emulator: {exc}") from exc
     except (TypeKeyError, FileFormatError) as exc:
         raise BatchError(ExitCode.USAGE, f"--emulator: {exc}") from exc
     except Prm9Error as exc:

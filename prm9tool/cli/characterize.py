@@ -104,10 +104,12 @@ def _outputs(args: argparse.Namespace) -> tuple[Path | None, Path | None]:
     return pdf, js
 
 
-def _rig(args: argparse.Namespace) -> tuple[Rig, Callable[[], None]]:
+def _rig(
+    args: argparse.Namespace, command: str = "--characterize"
+) -> tuple[Rig, Callable[[], None]]:
     if len(args.emulator) + len(args.device) != 1:
         raise BatchError(
-            ExitCode.USAGE, "--characterize tests one valve: give one --device or --emulator"
+            ExitCode.USAGE, f"{command} tests one valve: give one --device or --emulator"
         )
     enable = bool(getattr(args, "enable", False))
     if enable and not getattr(args, "hydraulics_safe", False):

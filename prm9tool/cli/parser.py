@@ -48,7 +48,8 @@ def add_device_options(parser: argparse.ArgumentParser) -> None:
         const="",
         metavar="TYPEKEY[:SERIAL]",
         help="use an emulated valve of that type (the GUI goes online with it); repeatable; "
-        f"without TYPEKEY {DEFAULT_EMULATOR_TYPE_KEY}",
+        f"without TYPEKEY {DEFAULT_EMULATOR_TYPE_KEY}; twin:FILE the twin of a measured valve "
+        "(a --fit-twin file: its serial, plant and parameters)",
     )
     # no defaults here: None means "not given" (usage_problem) and CanOptions fills it in
     group.add_argument(
@@ -82,7 +83,7 @@ def add_device_options(parser: argparse.ArgumentParser) -> None:
         default=[],
         metavar="TYPEKEY[:SERIAL]",
         help="run an emulated -CA valve on the CAN bus of --can-interface/--can-channel in real "
-        "time until Ctrl+C or SIGTERM; repeatable",
+        "time until Ctrl+C or SIGTERM; repeatable; twin:FILE the twin of a measured valve",
     )
     serve.add_argument(
         "--node-id",
@@ -194,7 +195,9 @@ def build_parser() -> argparse.ArgumentParser:
     )  # fmt: skip
     eol.add_argument(
         "--fit-twin", metavar="OUT.toml",
-        help="fit the valve's twin (plant constants, docs/twin.md) from --from RUN.json",
+        help="fit the valve's twin (plant constants, docs/twin.md) from --from RUN.json, or "
+        "characterize the one valve of --device/--emulator (--profile) and fit from that run; "
+        "--json [OUT.json] for the fit report",
     )  # fmt: skip
     eol.add_argument(
         "--from", dest="fit_from", metavar="RUN.json",

@@ -26,6 +26,7 @@ from prm9tool.cli import serve_input
 from prm9tool.device import factory
 from prm9tool.device.canlink.bus import CanOptions, open_bus
 from prm9tool.device.emulator.paced_group import PacedGroup
+from prm9tool.device.emulator.twinfile import TwinFileError
 from prm9tool.device.records import DeviceState, NmtState
 from prm9tool.errors import CanAdapterError, ExitCode, Prm9Error, TypeKeyError
 
@@ -64,7 +65,8 @@ class _Served:
 
 
 def run(args: argparse.Namespace) -> int:
-    """Serve until SIGINT/SIGTERM; returns the exit code (2 bad spec, 6 bus not opened)."""
+    """Serve until SIGINT/SIGTERM; returns the exit code (2 bad spec, 3 a twin file that
+    cannot be used, 6 bus not opened)."""
     options = CanOptions.from_args(args)
     sys.setswitchinterval(SWITCH_INTERVAL_S)
     stop = threading.Event()
@@ -78,6 +80,10 @@ def run(args: argparse.Namespace) -> int:
         _close(served, shared)
         print(f"prm9tool: --serve-emulator: {exc}", file=sys.stderr)
         return ExitCode.USAGE
+    except TwinFileError as exc:  # twin:FILE of a file that cannot be used
+        _close(served, shared)
+        print(f"prm9tool: --serve-emulator: {exc}", file=sys.stderr)
+        return ExitCode.INVALID_FILE
     except (CanAdapterError, Prm9Error) as exc:
         _close(served, shared)
         print(f"prm9tool: {exc}", file=sys.stderr)

@@ -1,62 +1,49 @@
-"""``--fit-twin OUT.toml --from RUN.json``: a valve's twin from a characterization's report
-(docs/twin.md). The fit of a valve it moves itself (``--device``/``--emulator``) is not here
-yet."""
+"""``--fit-twin OUT.toml``: a valve's twin (docs/twin.md), fitted from a characterization's
+report (``--from RUN.json``) or from a characterization it runs itself on one valve
+(``--device ID`` with the CAN options, or ``--emulator KEY``; ``--profile`` as
+``--characterize``), both through :mod:`prm9tool.twin.fitvalve`. The run and the twin are
+recorded in the history for the valve's serial. Prints the fit report (``--json``: as JSON).
+
+Exit codes: 0 fitted; 2 usage; 3 a report, CSV or output that cannot be read or written (or a
+run with no position-loop step to fit); 4/6 the valve not found or not answering; 8 the
+characterization stopped.
+"""
 
 from __future__ import annotations
 
 import argparse
 import json
+import math
 import sys
 from pathlib import Path
+from typing import TYPE_CHECKING
 
-from prm9tool.errors import ExitCode, Prm9Error
+from prm9tool.errors import CommunicationError, ExitCode, Prm9Error
+
+if TYPE_CHECKING:
+    from prm9tool.twin.identify import Fit
+    from prm9tool.twin.proof import Side
 
 
 def run(args: argparse.Namespace) -> int:
     """Fit, write the twin file, print the fit report (``--json``: as JSON)."""
-    from prm9tool.twin.identify import fit, from_report
-    from prm9tool.twin.twinfile import write_twin
+    from prm9tool.twin.fitvalve import fit_report
 
-    try:
-        report = json.loads(Path(args.fit_from).read_text(encoding="utf-8"))
-        recordings = from_report(args.fit_from)
-        result = fit(recordings)
-        valve = report["valve"]
-        write_twin(
-            args.fit_twin,
-            result,
-            int(valve.get("serial") or 0),
-            str(valve["type_key"]),
-            str(valve.get("firmware") or ""),
-            f"{len(recordings)} position-loop steps of {args.fit_from} ({report.get('date', '')})",
-            recordings[0].values,
-        )
-    except OSError as exc:
-        print(f"prm9tool: cannot read {args.fit_from}: {exc.strerror or exc}", file=sys.stderr)
-        return ExitCode.INVALID_FILE
-    except (Prm9Error, KeyError, ValueError) as exc:
-        print(f"prm9tool: --fit-twin: {exc}", file=sys.stderr)
-        return ExitCode.INVALID_FILE
-    rows = [
-        {
-            "constant": c.name,
-            "start": c.start,
-            "value": c.value,
-            "relative_se": c.relative_se if c.relative_se != float("inf") else None,
-            "determined": c.determined,
-            "correlated_with": c.correlated_with,
-        }
-        for c in result.constants
-    ]
+    sides: list[Side] = []
+    if args.fit_from is not None:
+        code, result = _from_report(args)
+    else:
+        code, result, sides = _from_valve(args)
+    if result is None:
+        return code
     if args.json:
-        summary = {
-            "twin": str(args.fit_twin),
-            "rms_pct": result.rms_pct,
-            "max_pct": result.max_pct,
-            "start_rms_pct": result.start_rms_pct,
-            "explained": result.explained,
-            "constants": rows,
-        }
+        summary = fit_report(result, args.fit_twin)
+        if sides:  # the proof: the twin characterized as the valve was
+            summary["comparison"] = [
+                {"figure": s.name, "unit": s.unit, "valve": _number(s.valve),
+                 "twin": _number(s.twin), "ratio": _number(s.ratio)}
+                for s in sides
+            ]  # fmt: skip
         text = json.dumps(summary, indent=2)
         if isinstance(args.json, str):  # --json OUT.json: the fit report into that file
             Path(args.json).write_text(text + "\n", encoding="utf-8")
@@ -68,4 +55,99 @@ def run(args: argparse.Namespace) -> int:
     for c in result.constants:
         state = "determined" if c.determined else "not determined, kept"
         print(f"  {c.name}: {c.start:g} → {c.value:.4g} ({state})")
+    if sides:
+        from prm9tool.twin.proof import table
+
+        print("the twin characterized as the valve was:")
+        print("\n".join(f"  {line}" for line in table(sides)))
     return ExitCode.OK
+
+
+def _number(value: float) -> float | None:
+    return value if math.isfinite(value) else None  # JSON has no nan
+
+
+def _from_report(args: argparse.Namespace) -> tuple[int, Fit | None]:
+    from prm9tool.twin.fitvalve import write_fitted
+    from prm9tool.twin.identify import from_report
+
+    try:
+        report = json.loads(Path(args.fit_from).read_text(encoding="utf-8"))
+        recordings = from_report(args.fit_from)
+        valve = report["valve"]
+        result = write_fitted(
+            args.fit_twin,
+            recordings,
+            int(valve.get("serial") or 0),
+            str(valve["type_key"]),
+            str(valve.get("firmware") or ""),
+            f"{len(recordings)} position-loop steps of {args.fit_from} ({report.get('date', '')})",
+        )
+    except OSError as exc:
+        print(f"prm9tool: cannot read {args.fit_from}: {exc.strerror or exc}", file=sys.stderr)
+        return ExitCode.INVALID_FILE, None
+    except (Prm9Error, KeyError, ValueError) as exc:
+        print(f"prm9tool: --fit-twin: {exc}", file=sys.stderr)
+        return ExitCode.INVALID_FILE, None
+    return ExitCode.OK, result
+
+
+def _from_valve(args: argparse.Namespace) -> tuple[int, Fit | None, list[Side]]:
+    """Characterize the one valve of ``--device``/``--emulator``, record the run, fit, and
+    characterize the twin as the valve was (the side-by-side)."""
+    from prm9tool.characterize.procedures import LimitExceededError
+    from prm9tool.characterize.rig import Stopped, ValveFaultError
+    from prm9tool.characterize.run import characterize
+    from prm9tool.cli.batch_devices import BatchError
+    from prm9tool.cli.characterize import _profile, _rig
+    from prm9tool.cli.history import recorder_for
+    from prm9tool.service.history import record_characterization, record_twin
+    from prm9tool.twin.fitvalve import history_details, history_outcome, twin_of_run
+
+    if not Path(args.fit_twin).parent.is_dir():
+        print(f"prm9tool: --fit-twin {args.fit_twin}: there is no folder "
+              f"{Path(args.fit_twin).parent}", file=sys.stderr)  # fmt: skip
+        return ExitCode.USAGE, None, []
+    try:
+        profile = _profile(args)
+        rig, close = _rig(args, "--fit-twin")
+    except BatchError as exc:
+        print(f"prm9tool: {exc}", file=sys.stderr)
+        return int(exc.code), None, []
+    try:
+        run = characterize(rig, profile, lambda text: print(f"prm9tool: {text}", file=sys.stderr))
+    except (Stopped, LimitExceededError, ValveFaultError, ValueError) as exc:
+        print(f"prm9tool: test stopped: {exc}", file=sys.stderr)
+        return ExitCode.OUT_OF_LIMITS, None, []
+    except CommunicationError as exc:
+        print(f"prm9tool: {exc}", file=sys.stderr)
+        return ExitCode.COMMUNICATION, None, []
+    except Prm9Error as exc:
+        print(f"prm9tool: test stopped: {exc}", file=sys.stderr)
+        return ExitCode.OUT_OF_LIMITS, None, []
+    finally:
+        close()
+    recorder = recorder_for(args)
+    try:
+        record_characterization(recorder, run)
+        try:
+            twin = twin_of_run(run, args.fit_twin)
+        except OSError as exc:
+            print(f"prm9tool: cannot write {args.fit_twin}: {exc.strerror or exc}", file=sys.stderr)
+            return ExitCode.INVALID_FILE, None, []
+        except Prm9Error as exc:
+            print(f"prm9tool: --fit-twin: {exc}", file=sys.stderr)
+            return ExitCode.INVALID_FILE, None, []
+        details = history_details(twin.fit, twin.path)
+        record_twin(recorder, run, history_outcome(twin.fit), details)
+    finally:
+        recorder.close()
+    from prm9tool.twin.proof import characterize_twin, side_by_side
+
+    print("prm9tool: characterizing the twin as the valve was", file=sys.stderr)
+    try:
+        again = characterize_twin(run, twin.path)
+    except (Prm9Error, ValueError) as exc:  # the twin is written; only its proof is missing
+        print(f"prm9tool: the twin could not be characterized: {exc}", file=sys.stderr)
+        return ExitCode.OK, twin.fit, []
+    return ExitCode.OK, twin.fit, side_by_side(run, again)

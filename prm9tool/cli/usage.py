@@ -104,14 +104,31 @@ def _fit_twin_problem(args: argparse.Namespace) -> str | None:
     if args.fit_twin is None:
         return "--from RUN.json belongs to --fit-twin OUT.toml"
     if args.fit_from is None:
-        return "--fit-twin OUT.toml needs --from RUN.json (a --characterize JSON report)"
+        if len(args.emulator) + len(args.device) != 1:
+            return (
+                "--fit-twin OUT.toml needs --from RUN.json (a --characterize JSON report) or "
+                "one valve to characterize: --device ID or --emulator KEY"
+            )
+        others = [
+            flag
+            for flag, given in (
+                ("--characterize", args.characterize), ("--batch", args.batch is not None),
+                ("--list-devices", args.list_devices), (f"file {args.file}", args.file),
+            )
+            if given
+        ]  # fmt: skip
+        if others:
+            return f"--fit-twin --device/--emulator takes no {others[0]}"
+        if args.hydraulics_safe and not args.enable:
+            return "--hydraulics-safe confirms --enable: add --enable, or leave it out"
+        return None
     others = [
         flag
         for flag, given in (
             ("--characterize", args.characterize), ("--device", args.device),
             ("--emulator", args.emulator), ("--batch", args.batch is not None),
             ("--list-devices", args.list_devices), ("--profile", args.profile),
-            (f"file {args.file}", args.file),
+            ("--enable", args.enable), (f"file {args.file}", args.file),
         )
         if given
     ]  # fmt: skip

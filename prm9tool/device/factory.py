@@ -1,7 +1,8 @@
 """The one device factory of prm9tool: the GUI and the batch mode list and open valves here.
 
 A device is a USB valve (``usb:<HID path>``), an emulated valve
-(``emulator:<type key>:<serial>``) or a valve on a CAN bus (``can:<node ID>``, on the bus of
+(``emulator:<type key>:<serial>``; ``emulator:twin:<file>`` the twin of one measured valve,
+docs/twin.md) or a valve on a CAN bus (``can:<node ID>``, on the bus of
 the :class:`CanOptions` given). Emulated valves live in this process, one per serial
 number, and keep their non-volatile memory in ``<user data dir>/emulator/<serial>.json``
 (``PRM9TOOL_DATA_DIR`` overrides the user data dir), so what one run stores the next one sees.
@@ -35,6 +36,7 @@ if TYPE_CHECKING:
 log = logging.getLogger("prm9tool.device.factory")
 DEFAULT_EMULATOR_TYPE = DEFAULT_EMULATOR_TYPE_KEY  # one default for the GUI and the CLI
 USB, EMULATOR, CAN, NOT_PRM9 = "usb", "emulator", "can", "not-prm9"
+TWIN = "twin"  # emulator:twin:FILE, --emulator twin:FILE
 UNUSABLE_EMULATOR = "emulator-unusable"  # a remembered emulated valve that cannot be made
 __all__ = [
     "LINKS",
@@ -73,7 +75,15 @@ def emulator_nv_path(serial: int) -> Path:
 
 
 def parse_emulator_spec(spec: str, default_serial: int = 1) -> tuple[str, int]:
-    """``TYPEKEY[:SERIAL]`` → (normalized type key, serial); raises TypeKeyError."""
+    """``TYPEKEY[:SERIAL]`` → (normalized type key, serial); raises TypeKeyError.
+
+    ``twin:FILE`` makes the twin of that twin file the emulated valve of its serial in this
+    process (:func:`twin_valve`; TwinFileError for a file that cannot be used) and returns
+    its type key and serial, so whatever opens ``emulator:KEY:SERIAL`` next opens the twin.
+    """
+    if spec.strip().startswith(f"{TWIN}:"):
+        valve = twin_valve(spec.strip()[len(TWIN) + 1 :])
+        return str(valve.type_key), valve.serial
     text, serial = spec.strip() or DEFAULT_EMULATOR_TYPE, default_serial
     head, sep, tail = text.rpartition(":")
     if sep:
@@ -150,13 +160,16 @@ def usable_emulators(specs: Sequence[str]) -> tuple[list[str], list[DeviceEntry]
 
 def _emulator_entry(valve: EmulatedValve) -> DeviceEntry:
     key = str(valve.type_key)
+    with EMULATED.lock:
+        twin = EMULATED.twins.get(valve.serial)
+    what = "twin of" if twin else "emulated"
     return DeviceEntry(
         f"{EMULATOR}:{key}:{valve.serial}",
         EMULATOR,
         key,
         valve.serial,
         valve.firmware_version,
-        f"emulated {key}, serial {valve.serial}",
+        f"{what} {key}, serial {valve.serial}" + (f" ({twin})" if twin else ""),
     )
 
 
@@ -264,6 +277,7 @@ class EmulatedValves:
     def __init__(self) -> None:
         self.valves: dict[int, EmulatedValve] = {}
         self.running: dict[int, int] = {}
+        self.twins: dict[int, Path] = {}  # serial -> the twin file its valve was made from
         self.lock = threading.Lock()
         self.od = "full"
 
@@ -302,6 +316,35 @@ def emulated_valve(type_key: str, serial: int) -> EmulatedValve:
         return valve
 
 
+def twin_valve(path: str | Path) -> EmulatedValve:
+    """The emulated valve of the twin file ``path`` (issue 31): the measured valve's plant
+    constants, serial, type key, firmware and parameter set, made once per process and then
+    found again by its serial like any emulated valve. Its parameters live in its working
+    memory only (no EEPROM file: the twin file is what it starts from each time). Raises
+    TwinFileError for a file that cannot be used, Prm9Error when another emulated valve has
+    that serial already."""
+    from prm9tool.device.emulator.twinfile import TwinFileError, emulated_twin, read_twin
+
+    where = Path(path).expanduser().resolve()
+    twin = read_twin(where)
+    if not 0 < twin.serial < 2**32:
+        raise TwinFileError(f"{where}: serial {twin.serial} must be a number 1…4294967295")
+    with EMULATED.lock:
+        valve = EMULATED.valves.get(twin.serial)
+        if valve is not None:
+            if EMULATED.twins.get(twin.serial) == where:
+                return valve
+            made = EMULATED.twins.get(twin.serial)
+            raise Prm9Error(
+                f"twin {where}: the emulated valve {twin.serial} is "
+                + (f"the twin of {made} already" if made else f"a plain emulated {valve.type_key}")
+            )
+        valve = emulated_twin(twin, od=EMULATED.od)
+        EMULATED.valves[twin.serial] = valve
+        EMULATED.twins[twin.serial] = where
+        return valve
+
+
 def forget_emulated_valves() -> None:
     """Drop this process's emulated valves (their EEPROM files stay); for tests and tools."""
     from prm9tool.device.emulated import plug_cable
@@ -313,6 +356,7 @@ def forget_emulated_valves() -> None:
             if EMULATED.running.pop(serial, 0):
                 valve.stop()
         EMULATED.valves.clear()
+        EMULATED.twins.clear()
 
 
 # --- opening ---------------------------------------------------------------------------------

@@ -39,6 +39,7 @@ Raw = int | str
 OPERATIONS = (
     "download", "upload", "store", "restore-factory", "online-edits", "batch-upload",
     "backup", "characterization", "restart", "autotune", "frequency-response", "report-saved",
+    "twin",
 )  # fmt: skip
 
 

@@ -139,6 +139,15 @@ class HistoryHook:
         outcome, details = characterization_details(result)
         self.record(valve, "characterization", outcome, result.parameters, details)
 
+    def twin_of(self, result: Characterization, outcome: str, details: Mapping[str, Any]) -> None:
+        """Record the twin fitted from ``result`` (issue 31): operation ``twin``, outcome
+        ``explained``/``not-explained``, the twin file and fit in ``details``
+        (:func:`prm9tool.twin.fitvalve.history_details`), the parameter set of the run."""
+        info = result.info
+        valve = SimpleNamespace(type_key=info.type_key, serial=info.serial, firmware=info.firmware,
+                                device_id=info.device_id or info.link)  # fmt: skip
+        self.record(valve, "twin", outcome, result.parameters, details)
+
     def upload(
         self,
         session: ValveSession,
@@ -213,6 +222,19 @@ def record_characterization(recorder: Recorder, result: Characterization) -> Non
     log = logging.getLogger("prm9tool.history")
     HistoryHook(recorder, lambda problem: log.error("history: %s", problem)).characterization_of(
         result
+    )
+
+
+def record_twin(
+    recorder: Recorder, result: Characterization, outcome: str, details: Mapping[str, Any]
+) -> None:
+    """One ``twin`` record of the valve ``result`` names (never raises): what ``--fit-twin
+    --device``/``--emulator`` records after its fit."""
+    import logging
+
+    log = logging.getLogger("prm9tool.history")
+    HistoryHook(recorder, lambda problem: log.error("history: %s", problem)).twin_of(
+        result, outcome, details
     )
 
 

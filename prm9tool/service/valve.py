@@ -37,6 +37,7 @@ if TYPE_CHECKING:
     from prm9tool.device.session import ValveSession
     from prm9tool.history.recorder import Details
     from prm9tool.service.history import HistoryHook
+    from prm9tool.twin.fitvalve import ValveTwin
 
 __all__ = ["NmtStoppedError", "ValveService", "characterize_session", "parse_nmt", "service_for"]
 
@@ -291,6 +292,23 @@ class ValveService:
         if self.history is not None:
             self.history.characterization(self.session, result)
         return result
+
+    def fit_twin(
+        self,
+        path: str | os.PathLike[str],
+        profile: Profile | str | os.PathLike[str] | None = None,
+        progress: Callable[[str], None] | None = None,
+    ) -> ValveTwin:
+        """Characterize this valve (recorded as :meth:`characterize` records it), fit its twin
+        from the run and write the twin file ``path`` (docs/twin.md); the twin is recorded in
+        the history (operation ``twin``). Prm9Error when the run has no position-loop step."""
+        from prm9tool.twin.fitvalve import history_details, history_outcome, twin_of_run
+
+        result = self.characterize(profile, progress)
+        twin = twin_of_run(result, path)
+        if self.history is not None:
+            self.history.twin_of(result, history_outcome(twin.fit), history_details(twin.fit, path))
+        return twin
 
     # --- files ----------------------------------------------------------------------------
     def export_dcf(self, path: str | os.PathLike[str]) -> int:

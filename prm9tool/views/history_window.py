@@ -211,6 +211,7 @@ class HistoryTableModel(QAbstractTableModel):
             "autotune": self.tr("Autotune run"),
             "frequency-response": self.tr("Frequency response measured"),
             "report-saved": self.tr("Test report saved"),
+            "twin": self.tr("Twin fitted (--fit-twin)"),
         }
 
     def _stores(self) -> dict[str, str]:

@@ -140,6 +140,11 @@ class EmulatedValve(CanopenSide):
 
     # --- simulation -------------------------------------------------------------------
     @property
+    def plant(self) -> PlantConstants:
+        """The plant constants this valve runs on (a twin's: its twin file's)."""
+        return self._fw.plant
+
+    @property
     def time(self) -> float:
         """Simulated seconds since the last power-up."""
         return self._fw.time

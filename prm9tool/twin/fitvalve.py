@@ -1,0 +1,123 @@
+"""A valve's twin from its own characterization (issue 31 item 2): the one implementation
+behind ``--fit-twin OUT.toml --device ID``/``--emulator KEY``, ``--fit-twin … --from RUN.json``,
+``Valve.fit_twin(…)`` and the service's ``fit_twin``.
+
+:func:`twin_of_run` fits the position-loop steps of a characterization run (from any link,
+or read from its JSON report) and writes the twin file; :func:`fit_valve` runs the
+characterization on a rig first. :func:`fit_report` is the fit report (``--json``) and
+:func:`history_details` what a ``twin`` history record keeps of it. No Qt.
+"""
+
+from __future__ import annotations
+
+import math
+import os
+from collections.abc import Callable, Sequence
+from dataclasses import dataclass
+from pathlib import Path
+from typing import TYPE_CHECKING, Any
+
+from prm9tool.device.emulator.twinfile import write_twin
+from prm9tool.twin.identify import Fit, Steps, fit, from_characterization
+
+if TYPE_CHECKING:
+    from prm9tool.analysis.profile import Profile
+    from prm9tool.characterize.rig import Rig
+    from prm9tool.characterize.run import Characterization
+
+
+@dataclass(frozen=True)
+class ValveTwin:
+    """A twin fitted from a characterization: the run (None: fitted from a JSON report), the
+    fit and the twin file written."""
+
+    run: Characterization | None
+    fit: Fit
+    path: Path
+
+
+def write_fitted(
+    path: str | os.PathLike[str],
+    recordings: Sequence[Steps],
+    serial: int,
+    type_key: str,
+    firmware: str,
+    source: str,
+) -> Fit:
+    """Fit ``recordings`` (from the factory plant, :data:`~.identify.FITTED`) and write the
+    twin file ``path``; returns the fit."""
+    result = fit(recordings)
+    write_twin(path, result, serial, type_key, firmware, source, recordings[0].values)
+    return result
+
+
+def twin_of_run(run: Characterization, path: str | os.PathLike[str]) -> ValveTwin:
+    """The twin of the valve ``run`` characterized, from the run's position-loop steps,
+    written to ``path``. Prm9Error when the run has no complete position-loop step."""
+    recordings = from_characterization(run)
+    info = run.info
+    source = (
+        f"{len(recordings)} position-loop steps of the characterization of {run.date} "
+        f"({info.link or 'link'}, {info.sample_rate_hz:g} Hz)"
+    )
+    result = write_fitted(
+        path, recordings, int(info.serial or 0), info.type_key, info.firmware or "", source
+    )
+    return ValveTwin(run, result, Path(path))
+
+
+def fit_valve(
+    rig: Rig,
+    path: str | os.PathLike[str],
+    profile: Profile | None = None,
+    progress: Callable[[str], None] | None = None,
+) -> ValveTwin:
+    """Characterize the valve behind ``rig`` with ``profile`` (default: the built-in one; its
+    steps move the spool: the hydraulics must be safe for it), fit its twin from the run and
+    write it to ``path``."""
+    from prm9tool.analysis.profile import DEFAULT
+    from prm9tool.characterize.run import characterize
+
+    run = characterize(rig, profile or DEFAULT, progress)
+    return twin_of_run(run, path)
+
+
+def fit_report(result: Fit, path: str | os.PathLike[str]) -> dict[str, Any]:
+    """The fit report (``--fit-twin … --json``): residuals and every fitted constant."""
+    return {
+        "twin": str(path),
+        "rms_pct": result.rms_pct,
+        "max_pct": result.max_pct,
+        "start_rms_pct": result.start_rms_pct,
+        "explained": result.explained,
+        "evaluations": result.evaluations,
+        "constants": [
+            {
+                "constant": c.name,
+                "start": c.start,
+                "value": c.value,
+                "relative_se": c.relative_se if math.isfinite(c.relative_se) else None,
+                "determined": c.determined,
+                "correlated_with": c.correlated_with,
+            }
+            for c in result.constants
+        ],
+    }
+
+
+def history_outcome(result: Fit) -> str:
+    """A ``twin`` record's outcome: ``explained`` or ``not-explained`` (docs/history.md)."""
+    return "explained" if result.explained else "not-explained"
+
+
+def history_details(result: Fit, path: str | os.PathLike[str]) -> dict[str, Any]:
+    """What a ``twin`` history record keeps: the file, the residuals, each constant's value
+    and whether the data determine it."""
+    return {
+        "twin_file": str(Path(path).resolve()),
+        "rms_pct": result.rms_pct,
+        "start_rms_pct": result.start_rms_pct,
+        "constants": {
+            c.name: {"value": c.value, "determined": c.determined} for c in result.constants
+        },
+    }
