@@ -5,8 +5,8 @@ The valve side is tests/test_emulator_states.py and the golden frames of §7.6."
 from __future__ import annotations
 
 import pytest
-from can_link_rig import E04, make_link_rig
-from waiting import wait_for
+from support.can_link_rig import E04, make_link_rig
+from support.waiting import wait_for
 
 from prm9tool.catalogue.commissioning import NmtCommand
 from prm9tool.characterize.canrig import rig_for_session

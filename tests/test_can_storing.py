@@ -8,8 +8,8 @@ import json
 from pathlib import Path
 
 import pytest
-from can_link_rig import E04, LinkRig, make_link_rig
-from waiting import wait_for
+from support.can_link_rig import E04, LinkRig, make_link_rig
+from support.waiting import wait_for
 
 from prm9tool.catalogue import CATALOGUE
 from prm9tool.catalogue.manual_od import NOT_KEPT_AFTER_RESTART

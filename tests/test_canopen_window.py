@@ -5,7 +5,7 @@ from __future__ import annotations
 import os
 
 import pytest
-from diagram_fakes import EmulatorConnection
+from support.diagram_fakes import EmulatorConnection
 
 from prm9tool import i18n
 from prm9tool.catalogue import CATALOGUE, Access

@@ -6,7 +6,8 @@ These run the real ValveConnection (worker thread, USB protocol, emulator sessio
 from __future__ import annotations
 
 import pytest
-from gui_support import (
+from PySide6.QtCore import Qt
+from support.gui_support import (
     E02,
     E02_CA,
     emulated,
@@ -16,7 +17,6 @@ from gui_support import (
     record_prompts,
     settings_in,
 )
-from PySide6.QtCore import Qt
 
 from prm9tool import i18n
 from prm9tool.catalogue import Access

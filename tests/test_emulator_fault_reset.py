@@ -120,6 +120,6 @@ def _wait_state(valve, state) -> None:
 
 
 def _wait(condition) -> None:
-    from waiting import wait_for
+    from support.waiting import wait_for
 
     wait_for(condition, 10.0)

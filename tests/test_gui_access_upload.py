@@ -3,8 +3,8 @@ asks first (issue 15, item 19)."""
 
 from __future__ import annotations
 
-from gui_support import E02, go_online, valve_value
 from PySide6.QtWidgets import QDialog
+from support.gui_support import E02, go_online, valve_value
 
 from prm9tool.catalogue import Access
 from prm9tool.views import prompts

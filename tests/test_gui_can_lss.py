@@ -5,9 +5,9 @@ refuses one that answers, gives the valve its ID (stored) and goes online with i
 from __future__ import annotations
 
 import pytest
-from lss_rig import make_lss_rig
 from PySide6.QtCore import QSettings
 from PySide6.QtWidgets import QInputDialog
+from support.lss_rig import make_lss_rig
 
 from prm9tool.device import factory
 from prm9tool.online.connection import ValveConnection
@@ -158,7 +158,7 @@ def test_find_bit_rate_on_an_adapter_without_listen_only_says_what_to_try(qtbot,
 def test_change_node_id_by_lss_warns_that_the_link_moves_and_goes_online_there(
     qtbot, settings, tmp_path, monkeypatch
 ):
-    from gui_support import record_prompts
+    from support.gui_support import record_prompts
 
     from prm9tool.device.canlink.lss import LssAddress, LssMasterLink
     from prm9tool.views import prompts
@@ -240,7 +240,7 @@ def test_assign_node_ids_to_all_gives_consecutive_free_ids_in_one_action(
 def test_change_bit_rate_by_lss_moves_every_lss_valve_and_the_tools_link(
     qtbot, settings, tmp_path, monkeypatch
 ):
-    from gui_support import record_prompts
+    from support.gui_support import record_prompts
 
     from prm9tool.device.canlink.lss import LssMasterLink
     from prm9tool.views import prompts

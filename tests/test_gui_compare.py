@@ -5,9 +5,9 @@ from __future__ import annotations
 import os
 from pathlib import Path
 
-from gui_support import E02, go_online
 from PySide6.QtCore import Qt
 from PySide6.QtWidgets import QFileDialog
+from support.gui_support import E02, go_online
 
 from prm9tool import i18n
 from prm9tool.catalogue import Access

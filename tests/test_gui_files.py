@@ -5,10 +5,10 @@ from __future__ import annotations
 
 from pathlib import Path
 
-from gui_support import E02, E04_CA
 from PySide6.QtCore import QMimeData, QPointF, Qt, QUrl
 from PySide6.QtGui import QDropEvent
 from PySide6.QtWidgets import QFileDialog
+from support.gui_support import E02, E04_CA
 
 from prm9tool.catalogue.typekey import TypeKey
 from prm9tool.files import prmfile
@@ -326,7 +326,7 @@ def test_a_backup_copy_that_cannot_be_written_says_so_and_loses_nothing(window, 
 def test_after_a_download_the_status_bar_points_to_the_backup_copy(qtbot, window):
     """Issue 25 item 8: the backup workflow (Download from valve, then keep a copy) leads to
     Save backup copy, which leaves the document as it is."""
-    from gui_support import go_online
+    from support.gui_support import go_online
 
     go_online(qtbot, window, f"{E02}:4730")
     qtbot.waitUntil(lambda: window.sync.active, timeout=10_000)

@@ -4,8 +4,8 @@ and F1 in a window opening the page about it."""
 from __future__ import annotations
 
 import pytest
-from gui_support import E02
 from PySide6.QtCore import QFile, QIODevice, Qt
+from support.gui_support import E02
 
 from prm9tool import i18n
 from prm9tool.catalogue.typekey import TypeKey

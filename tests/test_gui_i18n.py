@@ -8,9 +8,9 @@ import xml.etree.ElementTree as ET
 from pathlib import Path
 
 import pytest
-from gui_support import main_window, record_prompts
 from PySide6.QtCore import Qt
 from PySide6.QtWidgets import QDialogButtonBox
+from support.gui_support import main_window, record_prompts
 
 from prm9tool import i18n
 from prm9tool.views.parameter_model import Column

@@ -5,8 +5,8 @@ from __future__ import annotations
 import os
 
 import pytest
-from gui_support import E02, E04_CA, main_window, reject_all_dialogs
 from PySide6.QtCore import Qt
+from support.gui_support import E02, E04_CA, main_window, reject_all_dialogs
 
 from prm9tool.catalogue import Access
 from prm9tool.catalogue.typekey import TypeKey

@@ -7,7 +7,7 @@ import json
 from dataclasses import dataclass
 
 import pytest
-from gui_support import E02, settings_in
+from support.gui_support import E02, settings_in
 
 from prm9tool import i18n
 from prm9tool.catalogue import CATALOGUE

@@ -3,8 +3,8 @@
 from __future__ import annotations
 
 import pytest
-from gui_support import E02, E04_CA
 from PySide6.QtCore import Qt
+from support.gui_support import E02, E04_CA
 
 from prm9tool.catalogue import Access
 from prm9tool.model.access import AccessModel
@@ -212,7 +212,7 @@ def test_measured_values_follow_one_rule_in_the_list_and_the_diagram(view, doc):
 def test_the_main_window_status_bar_says_a_value_was_rounded(qtbot, tmp_path):
     import os
 
-    from gui_support import main_window
+    from support.gui_support import main_window
 
     with main_window(qtbot, tmp_path) as window:
         dialog = window.parameter_view.make_edit_dialog("LIMTB")

@@ -10,8 +10,8 @@ import re
 from typing import Any
 
 import pytest
-from can_link_rig import E04, make_link_rig
-from gui_support import E02, go_online, settings_in
+from support.can_link_rig import E04, make_link_rig
+from support.gui_support import E02, go_online, settings_in
 
 from prm9tool import i18n
 from prm9tool.catalogue.manual_od import KEPT_AS_WRITTEN, STORED_WITH_1010, VERIFIED_RESTART

@@ -17,10 +17,10 @@ import time
 from pathlib import Path
 
 import pytest
-from gui_support import record_prompts, session_of
 from PySide6.QtCore import QRect, QSettings, Qt
 from PySide6.QtGui import QImage
 from PySide6.QtWidgets import QLabel, QMessageBox, QWidget
+from support.gui_support import record_prompts, session_of
 
 from prm9tool import app, i18n
 from prm9tool.catalogue import Access

@@ -9,11 +9,11 @@ import json
 import math
 
 import pytest
-from gui_support import E02, go_online
-from history_support import E04, Valve, factory_values
 from PySide6.QtCore import QUrl
 from PySide6.QtGui import QDesktopServices
 from PySide6.QtWidgets import QDialog
+from support.gui_support import E02, go_online
+from support.history_support import E04, Valve, factory_values
 
 from prm9tool.history.recorder import Recorder
 from prm9tool.views.history_details import RecordDetailsDialog

@@ -10,8 +10,8 @@ import json
 
 import can
 import pytest
-from lss_rig import make_lss_rig
-from waiting import wait_for
+from support.lss_rig import make_lss_rig
+from support.waiting import wait_for
 
 from prm9tool.cli.main import main
 from prm9tool.device.canlink.lss import LssAddress, LssFailedError, LssMasterLink

@@ -8,7 +8,7 @@ import threading
 
 import numpy as np
 import pytest
-from waiting import HandClock, wait_for
+from support.waiting import HandClock, wait_for
 
 from prm9tool.catalogue import CATALOGUE
 from prm9tool.device import factory

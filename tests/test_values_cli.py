@@ -9,7 +9,7 @@ import subprocess
 from pathlib import Path
 
 import pytest
-from python_process import run_python
+from support.python_process import run_python
 
 from prm9tool.catalogue import CATALOGUE
 from prm9tool.cli.main import main
