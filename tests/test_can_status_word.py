@@ -34,7 +34,7 @@ def link(request, tmp_path, data_dir):
 def answer_status_word(rig, word: int) -> None:
     """The valve answers ``word`` for 0x6041 (a manufacturer's valve with its own flags)."""
     with rig.valve.lock:
-        rig.valve._fw.od.getters[STATUS] = lambda: word
+        rig.valve.firmware.od.getters[STATUS] = lambda: word
 
 
 @pytest.mark.parametrize(

@@ -161,7 +161,7 @@ def test_values_not_kept_through_the_restart_are_listed_and_recorded(
     win, rig = can_window
     upload(qtbot, win)
     with rig.valve.lock:  # the valve's memory loses DTAMP (it comes back with another value)
-        rig.valve._fw.nv.values["DTAMP"] = 400
+        rig.valve.firmware.nv.values["DTAMP"] = 400
     Hydraulics(monkeypatch)
     result = finish(qtbot, win, "verify_restart", win.valve.verify_by_restart)
     assert not result.verified and result.mismatches == {"DTAMP": (1000, 400)}

@@ -65,7 +65,7 @@ class Link:
         master writes the old values back and they are in its memory again: the values count,
         not which entries the memory holds."""
         with self.valve.lock:
-            memory = dict(self.valve._fw.nv.values)
+            memory = dict(self.valve.firmware.nv.values)
         variant = self.valve.variant
         return {m: memory.get(m, CATALOGUE[m].default_for(variant)) for m in CHANGES}
 

@@ -71,7 +71,7 @@ class LinkRig:
         """The valve's non-volatile memory (what it holds after a power cycle; entries not
         stored yet are at their factory defaults)."""
         with self.valve.lock:
-            return dict(self.valve._fw.nv.values)
+            return dict(self.valve.firmware.nv.values)
 
     def working(self, mnemonic: str) -> int | str:
         """The value the valve works with now (RAM)."""
