@@ -129,7 +129,7 @@ def test_canopen_window_node_id_and_terminator_survive_a_restart(qtbot, window, 
 
 
 def test_the_canopen_block_and_the_toolbar_show_one_canopen_window(qtbot, tmp_path, monkeypatch):
-    from prm9tool.views.canopen_window import CanopenWindow
+    from prm9tool.views.canbus.canopen_window import CanopenWindow
 
     record_prompts(monkeypatch)
     with main_window(qtbot, tmp_path, E02_CA) as window:

@@ -90,7 +90,7 @@ def _file_with(tmp_path, **values):
 def _take_from_the_file(monkeypatch, mnemonics):
     from PySide6.QtCore import Qt
 
-    from prm9tool.views.compare_view import FIRST_VALUE, CompareDialog
+    from prm9tool.views.compare.view import FIRST_VALUE, CompareDialog
 
     def run(dialog):
         model = dialog.model

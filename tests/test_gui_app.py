@@ -205,7 +205,7 @@ def test_the_can_bus_dialog_shows_the_bus_named_on_the_command_line(qtbot, answe
     """``--device can:10 --can-interface udp_multicast --can-channel 239.74.163.2`` went online
     on that bus, but Communication → CAN bus… offered socketcan can0 (the remembered bus), so
     "Search the bus" searched another one."""
-    from prm9tool.views.can_bus_dialog import CanBusDialog
+    from prm9tool.views.canbus.bus_dialog import CanBusDialog
 
     app.create_application()
     args = _args("--device", "can:10", "--can-interface", "udp_multicast",

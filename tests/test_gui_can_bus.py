@@ -13,7 +13,7 @@ from prm9tool.device import factory
 from prm9tool.device.canlink.discovery import IDENTIFY_TIMEOUT_S, SCAN_WINDOW_S
 from prm9tool.device.canlink.session import SDO_TIMEOUT_S
 from prm9tool.online.connection import ValveConnection
-from prm9tool.views.can_bus_dialog import BITRATE_KEY, CHANNEL_KEY, INTERFACE_KEY, CanBusDialog
+from prm9tool.views.canbus.bus_dialog import BITRATE_KEY, CHANNEL_KEY, INTERFACE_KEY, CanBusDialog
 
 IDENTIFY_READS = 7  # discovery.identify_node of a PRM9: 0x1000, 0x1018/1, 0x1008, 0x100A,
 # 0x1018/4, the type key 0x2041 and 0x2005/1 (E04 or E02)

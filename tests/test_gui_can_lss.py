@@ -12,7 +12,7 @@ from support.lss_rig import make_lss_rig
 from prm9tool.device import factory
 from prm9tool.online.connection import ValveConnection
 from prm9tool.online.lss_commissioning import LssCommissioning
-from prm9tool.views.can_bus_dialog import CanBusDialog
+from prm9tool.views.canbus.bus_dialog import CanBusDialog
 
 
 @pytest.fixture

@@ -193,7 +193,7 @@ def test_export_pdf_holds_the_parameters_and_the_diagram(window, tmp_path, monke
 def test_the_record_holds_the_diagram_picture(window):
     from PySide6.QtGui import QImage, QTextDocument
 
-    from prm9tool.views.record import DIAGRAM_URL
+    from prm9tool.views.record.document import DIAGRAM_URL
 
     record = window.records.record()
     picture = record.resource(QTextDocument.ResourceType.ImageResource, QUrl(DIAGRAM_URL))
@@ -253,7 +253,7 @@ def test_a_vanished_recent_file_is_removed_with_a_message(window, tmp_path, answ
 
 
 def test_a_number_for_the_recent_files_in_the_settings_counts_as_none(window, tmp_path):
-    from prm9tool.views.file_workflow import RECENT_KEY
+    from prm9tool.views.files.workflow import RECENT_KEY
     from prm9tool.views.hid_dialog import EMULATORS_KEY, saved_emulators
 
     window.settings.setValue(RECENT_KEY, 5)  # e.g. a hand-edited settings file

@@ -10,7 +10,7 @@ from support.gui_support import E02
 from prm9tool import i18n
 from prm9tool.catalogue.typekey import TypeKey
 from prm9tool.compare import Comparison, Side
-from prm9tool.views.compare_view import CompareDialog
+from prm9tool.views.compare.view import CompareDialog
 from prm9tool.views.help_dialog import TOPICS, help_file, help_window
 
 LANGUAGES = ("en", "de", "cs")

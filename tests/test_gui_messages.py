@@ -16,7 +16,7 @@ from prm9tool.model.document import ParameterDocument
 from prm9tool.model.editing import apply_edit
 from prm9tool.model.undo import DocumentUndo
 from prm9tool.views.hid_dialog import HidConfigurationDialog
-from prm9tool.views.parameter_view import ParameterListView
+from prm9tool.views.parameters.view import ParameterListView
 from prm9tool.views.valve.selection import ValveSelectionDialog
 
 

@@ -10,9 +10,9 @@ from prm9tool.catalogue import Access
 from prm9tool.model.access import AccessModel
 from prm9tool.model.document import ParameterDocument
 from prm9tool.model.undo import DocumentUndo
-from prm9tool.views.parameter_dialog import ParameterEditDialog
-from prm9tool.views.parameter_model import MNEMONIC_ROLE, Column
-from prm9tool.views.parameter_view import ParameterListView
+from prm9tool.views.parameters.dialog import ParameterEditDialog
+from prm9tool.views.parameters.model import MNEMONIC_ROLE, Column
+from prm9tool.views.parameters.view import ParameterListView
 
 
 @pytest.fixture
@@ -267,7 +267,7 @@ def test_the_edit_dialog_is_wide_enough_for_its_title(view, qtbot, language):
 
 def test_the_columns_keep_their_width_when_a_search_leaves_the_list_empty(view, qtbot):
     """Issue 34, item 20: the mnemonic, value and unit columns collapsed to their headers."""
-    from prm9tool.views.parameter_model import Column
+    from prm9tool.views.parameters.model import Column
 
     view.resize(900, 500)
     view.show()

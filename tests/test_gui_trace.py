@@ -112,7 +112,7 @@ def test_record_and_stop_write_a_trace_of_the_bus(qtbot, window, tmp_path):
 
 
 def test_the_can_bus_dialog_offers_record_and_stop(qtbot, tmp_path):
-    from prm9tool.views.can_bus_dialog import CanBusDialog
+    from prm9tool.views.canbus.bus_dialog import CanBusDialog
 
     settings = QSettings(str(tmp_path / "settings.ini"), QSettings.Format.IniFormat)
     recording = BusRecording()

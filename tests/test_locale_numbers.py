@@ -22,9 +22,9 @@ from prm9tool.views.diagram.summary import block_lines
 from prm9tool.views.diagram.view import format_signal
 from prm9tool.views.localized_axis import LocalizedAxis
 from prm9tool.views.online_dialogs import OnlineDiffDialog
-from prm9tool.views.parameter_model import Column
-from prm9tool.views.parameter_view import ParameterListView
-from prm9tool.views.record import record_rows
+from prm9tool.views.parameters.model import Column
+from prm9tool.views.parameters.view import ParameterListView
+from prm9tool.views.record.document import record_rows
 
 COMMA = ["de", "cs"]
 

@@ -13,14 +13,15 @@ from PySide6.QtCore import QObject, Signal
 from PySide6.QtWidgets import QDialog
 
 from prm9tool.catalogue import Access
-from prm9tool.views import file_dialogs, prompts
+from prm9tool.views import prompts
+from prm9tool.views.files import dialogs as file_dialogs
 
 if TYPE_CHECKING:
     from PySide6.QtGui import QPageLayout, QTextDocument
 
     from prm9tool.views.main_window import MainWindow
     from prm9tool.views.paged_print import PageFrame
-    from prm9tool.views.record import RecordHeader
+    from prm9tool.views.record.document import RecordHeader
 
 
 class RecordActions(QObject):
@@ -34,7 +35,7 @@ class RecordActions(QObject):
 
     def header(self) -> RecordHeader:
         """The record's facts besides the document's: access level, the valve online, now."""
-        from prm9tool.views.record import RecordHeader
+        from prm9tool.views.record.document import RecordHeader
 
         w = self._window
         level = self.tr("Expert") if w.access.level is Access.EXPERT else self.tr("Basic")
@@ -53,20 +54,20 @@ class RecordActions(QObject):
 
         Laid out on the pages of ``layout`` (A4 with 15 mm margins unless given).
         """
-        from prm9tool.views.record import A4_LAYOUT, build_record
+        from prm9tool.views.record.document import A4_LAYOUT, build_record
 
         w = self._window
         diagram = getattr(w.views.get("diagram"), "render_picture", None)
         return build_record(w.doc, header or self.header(), diagram, layout or A4_LAYOUT)
 
     def _frame(self, header: RecordHeader) -> PageFrame:
-        from prm9tool.views.record import record_frame
+        from prm9tool.views.record.document import record_frame
 
         return record_frame(self._window.doc, header)
 
     def file_stem(self) -> str:
         """The name a record file is proposed under: type key and serial number."""
-        from prm9tool.views.record import record_file_stem
+        from prm9tool.views.record.document import record_file_stem
 
         doc, info = self._window.doc, self._window.connection.device
         serial = info.serial if info else doc.source_serial
@@ -111,7 +112,7 @@ class RecordActions(QObject):
 
     def export_pdf(self, path: Path) -> bool:
         """Write the record to ``path``; a failure is reported and returns False."""
-        from prm9tool.views.record import write_pdf
+        from prm9tool.views.record.document import write_pdf
 
         header = self.header()
         try:

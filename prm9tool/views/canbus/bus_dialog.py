@@ -41,9 +41,9 @@ from prm9tool.online.lss_commissioning import LssCommissioning
 from prm9tool.online.trace_recording import BusRecording
 from prm9tool.paths import user_data_dir
 from prm9tool.translate import error_text
-from prm9tool.views.can_bus_lss import BusLssActions
-from prm9tool.views.can_lss_panel import LssPanel
-from prm9tool.views.can_node_text import node_description
+from prm9tool.views.canbus.bus_lss import BusLssActions
+from prm9tool.views.canbus.lss_panel import LssPanel
+from prm9tool.views.canbus.node_text import node_description
 from prm9tool.views.help_dialog import add_context_help
 from prm9tool.views.row_table import row_table
 from prm9tool.views.trace.record_controls import RecordControls

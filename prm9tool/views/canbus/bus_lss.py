@@ -16,7 +16,7 @@ from prm9tool.online.lss_commissioning import FoundRate, LssCommissioning, RateC
 from prm9tool.views import prompts
 
 if TYPE_CHECKING:
-    from prm9tool.views.can_bus_dialog import CanBusDialog
+    from prm9tool.views.canbus.bus_dialog import CanBusDialog
 
 
 class BusLssActions(QObject):
