@@ -151,7 +151,7 @@ class CanBusDialog(QDialog):
         rate_row = QHBoxLayout()
         rate_row.addWidget(self.bitrate, 1)
         self._lss = lss
-        self.lss_actions = BusLssActions(self, lss)
+        self.lss_actions = BusLssActions(self, self, lss)
         self.find_rate, self.renumber = self.lss_actions.find_rate, self.lss_actions.renumber
         rate_row.addWidget(self.find_rate)
         form.addRow(self.tr("Bit rate"), rate_row)
