@@ -71,7 +71,7 @@ class MainWindow(QMainWindow):
         self.files = FileWorkflow(self, doc, undo, settings)
         self.valve = ValveWorkflow(self, doc, undo, connection, self.sync, settings, access)
         self.control = ValveControl(connection, self)
-        self.records = RecordActions(self)
+        self.records = RecordActions(self, self)
         self.compare = CompareWorkflow(
             self, doc, undo, access, connection, self.sync, self.valve, settings
         )
