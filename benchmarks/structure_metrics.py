@@ -30,8 +30,12 @@ def _is_type_checking(node: ast.If) -> bool:
     )
 
 
-def imports(tree: ast.Module, name: str, is_pkg: bool) -> tuple[set[str], set[str]]:
-    """(imports at run time at module level, imports under TYPE_CHECKING)."""
+def imports(
+    tree: ast.Module, name: str, is_pkg: bool, known: set[str]
+) -> tuple[set[str], set[str]]:
+    """(imports at run time at module level, imports under TYPE_CHECKING). ``from pkg import
+    sub`` of a module ``pkg.sub`` imports that module, as import-linter counts it, not the
+    package's ``__init__`` (which every submodule import would otherwise close a cycle with)."""
     run, typing_only = set(), set()
 
     def visit(body: list[ast.stmt], into: set[str]) -> None:
@@ -44,8 +48,9 @@ def imports(tree: ast.Module, name: str, is_pkg: bool) -> tuple[set[str], set[st
                     pkg = name.split(".") if is_pkg else name.split(".")[:-1]
                     pkg = pkg[: len(pkg) - node.level + 1]
                     base = ".".join(pkg + ([node.module] if node.module else []))
-                into.add(base)
-                into.update(f"{base}.{a.name}" for a in node.names)
+                for alias in node.names:
+                    full = f"{base}.{alias.name}"
+                    into.add(full if full in known else base)
             elif isinstance(node, ast.If):
                 visit(node.body, typing_only if _is_type_checking(node) else into)
                 visit(node.orelse, into)
@@ -94,6 +99,7 @@ def cycles(graph: dict[str, set[str]]) -> list[list[str]]:
 
 def main() -> None:
     files = sorted(p for p in ROOT.rglob("*.py") if p.name not in GENERATED)
+    modules = {module_name(p) for p in files}
     lines: dict[str, int] = {}
     functions: list[int] = []
     run_edges: dict[str, set[str]] = {}
@@ -108,7 +114,7 @@ def main() -> None:
             for n in ast.walk(tree)
             if isinstance(n, ast.FunctionDef | ast.AsyncFunctionDef) and n.end_lineno
         ]
-        run, typing_only = imports(tree, name, path.name == "__init__.py")
+        run, typing_only = imports(tree, name, path.name == "__init__.py", modules)
         run_edges[name], all_edges[name] = run, run | typing_only
     known = set(lines)
     for graph in (run_edges, all_edges):
