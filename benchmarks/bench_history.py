@@ -5,7 +5,7 @@
    chained) into an open SQLite history: the target is ≤ 5 % of the upload's time.
 2. Listing a valve that has 10 000 records (what Valve → History and ``--history`` read)
    against the bare sqlite3 module fetching the same rows: the target is ≤ 100 ms.
-With ``--postgres`` both run on a throw-away PostgreSQL cluster as well (tests/pg_cluster.py).
+With ``--postgres`` both run on a throw-away PostgreSQL cluster as well (tests/support/pg_cluster.py).
 
     .venv/bin/python benchmarks/bench_history.py [--uploads 5] [--records 10000] [--postgres]
 """
@@ -120,7 +120,7 @@ def main() -> int:
     listing(f"sqlite:///{folder / 'list.sqlite3'}", args.records)
     if args.postgres:
         sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "tests"))
-        from pg_cluster import cluster, new_database
+        from support.pg_cluster import cluster, new_database
 
         with cluster() as server:
             print("PostgreSQL (throw-away cluster on 127.0.0.1):")

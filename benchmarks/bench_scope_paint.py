@@ -28,7 +28,7 @@ from PySide6.QtWidgets import QApplication, QGraphicsItem
 from prm9tool.views.scope.widget import ScopeWidget
 
 sys.path.insert(0, str(Path(__file__).resolve().parent.parent / "tests"))
-from scope_fakes import FakeConnection  # the scope tests' stand-in connection
+from support.scope_fakes import FakeConnection  # the scope tests' stand-in connection
 
 
 def filled_scope(window_s: float) -> ScopeWidget:

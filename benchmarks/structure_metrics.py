@@ -30,8 +30,12 @@ def _is_type_checking(node: ast.If) -> bool:
     )
 
 
-def imports(tree: ast.Module, name: str, is_pkg: bool) -> tuple[set[str], set[str]]:
-    """(imports at run time at module level, imports under TYPE_CHECKING)."""
+def imports(
+    tree: ast.Module, name: str, is_pkg: bool, known: set[str]
+) -> tuple[set[str], set[str]]:
+    """(imports at run time at module level, imports under TYPE_CHECKING). ``from pkg import
+    sub`` of a module ``pkg.sub`` imports that module, as import-linter counts it, not the
+    package's ``__init__`` (which every submodule import would otherwise close a cycle with)."""
     run, typing_only = set(), set()
 
     def visit(body: list[ast.stmt], into: set[str]) -> None:
@@ -44,8 +48,9 @@ def imports(tree: ast.Module, name: str, is_pkg: bool) -> tuple[set[str], set[st
                     pkg = name.split(".") if is_pkg else name.split(".")[:-1]
                     pkg = pkg[: len(pkg) - node.level + 1]
                     base = ".".join(pkg + ([node.module] if node.module else []))
-                into.add(base)
-                into.update(f"{base}.{a.name}" for a in node.names)
+                for alias in node.names:
+                    full = f"{base}.{alias.name}"
+                    into.add(full if full in known else base)
             elif isinstance(node, ast.If):
                 visit(node.body, typing_only if _is_type_checking(node) else into)
                 visit(node.orelse, into)
@@ -56,17 +61,16 @@ def imports(tree: ast.Module, name: str, is_pkg: bool) -> tuple[set[str], set[st
     return run, typing_only
 
 
-def cycles(graph: dict[str, set[str]]) -> int:
-    """Strongly connected components of more than one module (Tarjan)."""
+def cycles(graph: dict[str, set[str]]) -> list[list[str]]:
+    """Strongly connected components of more than one module (Tarjan), each sorted."""
     index: dict[str, int] = {}
     low: dict[str, int] = {}
     stack: list[str] = []
     on: set[str] = set()
-    count = 0
+    found: list[list[str]] = []
     sys.setrecursionlimit(10000)
 
     def strong(v: str) -> None:
-        nonlocal count
         index[v] = low[v] = len(index)
         stack.append(v)
         on.add(v)
@@ -77,23 +81,25 @@ def cycles(graph: dict[str, set[str]]) -> int:
             elif w in on:
                 low[v] = min(low[v], index[w])
         if low[v] == index[v]:
-            size = 0
+            component = []
             while True:
                 w = stack.pop()
                 on.discard(w)
-                size += 1
+                component.append(w)
                 if w == v:
                     break
-            count += size > 1
+            if len(component) > 1:
+                found.append(sorted(component))
 
     for v in graph:
         if v not in index:
             strong(v)
-    return count
+    return sorted(found)
 
 
 def main() -> None:
     files = sorted(p for p in ROOT.rglob("*.py") if p.name not in GENERATED)
+    modules = {module_name(p) for p in files}
     lines: dict[str, int] = {}
     functions: list[int] = []
     run_edges: dict[str, set[str]] = {}
@@ -108,7 +114,7 @@ def main() -> None:
             for n in ast.walk(tree)
             if isinstance(n, ast.FunctionDef | ast.AsyncFunctionDef) and n.end_lineno
         ]
-        run, typing_only = imports(tree, name, path.name == "__init__.py")
+        run, typing_only = imports(tree, name, path.name == "__init__.py", modules)
         run_edges[name], all_edges[name] = run, run | typing_only
     known = set(lines)
     for graph in (run_edges, all_edges):
@@ -120,8 +126,12 @@ def main() -> None:
     print(f"modules 350-400 lines: {sum(350 <= n <= 400 for n in lines.values())}")
     print(f"modules 300-349 lines: {sum(300 <= n < 350 for n in lines.values())}")
     print(f"median function length: {statistics.median(functions)} lines")
-    print(f"import cycles (module level, run time): {cycles(run_edges)}")
-    print(f"import cycles (with TYPE_CHECKING imports): {cycles(all_edges)}")
+    at_run_time, with_typing = cycles(run_edges), cycles(all_edges)
+    print(f"import cycles (module level, run time): {len(at_run_time)}")
+    print(f"import cycles (with TYPE_CHECKING imports): {len(with_typing)}")
+    for kind, components in (("run time", at_run_time), ("with TYPE_CHECKING", with_typing)):
+        for component in components:
+            print(f"  cycle ({kind}): {' <-> '.join(component)}")
 
 
 if __name__ == "__main__":

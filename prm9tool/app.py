@@ -172,7 +172,7 @@ def _remember_command_line_bus(args: argparse.Namespace, settings: QSettings) ->
     given = [getattr(args, name, None) for name in names]
     if all(value is None for value in given):
         return  # (the dialog's module is not loaded at every start)
-    from prm9tool.views.can_bus_dialog import BITRATE_KEY, CHANNEL_KEY, INTERFACE_KEY
+    from prm9tool.views.canbus.bus_dialog import BITRATE_KEY, CHANNEL_KEY, INTERFACE_KEY
 
     for key, value in zip((INTERFACE_KEY, CHANNEL_KEY, BITRATE_KEY), given, strict=True):
         if value is not None:
@@ -301,7 +301,7 @@ def _can_link(args: argparse.Namespace) -> CanOptions:
     from PySide6.QtCore import QSettings
 
     from prm9tool.service.valve_listing import can_options
-    from prm9tool.views.can_bus_dialog import saved_bus
+    from prm9tool.views.canbus.bus_dialog import saved_bus
 
     return can_options(saved_bus(QSettings()))
 

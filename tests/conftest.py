@@ -94,7 +94,7 @@ def spools():
 @pytest.fixture
 def answers(monkeypatch: pytest.MonkeyPatch):
     """Every message box recorded and answered without blocking (``gui_support.Prompts``)."""
-    from gui_support import record_prompts
+    from support.gui_support import record_prompts
 
     return record_prompts(monkeypatch)
 
@@ -105,7 +105,7 @@ def window(qtbot, tmp_path, answers):
 
     A test module that needs another valve or the window online defines its own ``window``.
     """
-    from gui_support import main_window
+    from support.gui_support import main_window
 
     with main_window(qtbot, tmp_path) as win:
         yield win

@@ -279,7 +279,7 @@ def test_reprs_for_notebooks(valve):
 
 
 def test_a_valve_on_a_can_bus_is_listed_and_opened_by_its_node(tmp_path, request):
-    from can_link_rig import E04, make_link_rig
+    from support.can_link_rig import E04, make_link_rig
 
     rig = make_link_rig(request.node.name, tmp_path, E04)
     try:

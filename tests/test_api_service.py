@@ -132,7 +132,7 @@ def test_export_dcf_of_a_valve_without_canopen_says_why(tmp_path, capsys):
 
 
 def test_after_the_scripts_own_nmt_stop_status_says_so(tmp_path, request):
-    from can_link_rig import E04, make_link_rig
+    from support.can_link_rig import E04, make_link_rig
 
     from prm9tool.device.canlink.status import StoppedNodeError
 
@@ -155,7 +155,7 @@ def test_after_the_scripts_own_nmt_stop_status_says_so(tmp_path, request):
 
 
 def test_the_can_libraries_log_lines_reach_a_script_in_prm9tools_words(tmp_path, request, caplog):
-    from can_link_rig import E04, make_link_rig
+    from support.can_link_rig import E04, make_link_rig
 
     rig = make_link_rig(request.node.name, tmp_path, E04)
     caplog.set_level(logging.WARNING)

@@ -1,6 +1,6 @@
 """End-to-end tests of the headless batch mode: real subprocesses, every exit code.
 
-USB valves come from a stand-in ``hid`` module (tests/fake_hid) on PYTHONPATH, so the whole
+USB valves come from a stand-in ``hid`` module (tests/support/fake_hid) on PYTHONPATH, so the whole
 path from the command line through discovery, hidapi backend, protocol and firmware runs.
 """
 
@@ -14,7 +14,7 @@ from datetime import datetime
 from pathlib import Path
 
 import pytest
-from python_process import run_python
+from support.python_process import run_python
 
 from prm9tool import app
 from prm9tool.catalogue import CATALOGUE
@@ -30,7 +30,7 @@ from prm9tool.files.prmfile import PrmContents, read_file, write_file
 
 E04 = "PRM9-06.3Z11/30-24E04S02-CA"
 E02 = "PRM9-06.3Z11/30-24E02S02"
-FAKE_HID = Path(__file__).parent / "fake_hid"
+FAKE_HID = Path(__file__).parent / "support" / "fake_hid"
 
 
 def run(tmp_path: Path, *args: str, fake_hid: str | None = None) -> subprocess.CompletedProcess:

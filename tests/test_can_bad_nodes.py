@@ -12,9 +12,9 @@ from contextlib import contextmanager
 import can
 import canopen
 import pytest
-from can_link_rig import E04, make_link_rig
-from canopen_rig import unique_channel
 from support.bad_node import FIRMWARE, TYPE_KEY, BadNode, Fault, Flood, prm9_objects
+from support.can_link_rig import E04, make_link_rig
+from support.canopen_rig import unique_channel
 
 from prm9tool.catalogue import CATALOGUE
 from prm9tool.catalogue.typekey import TypeKey

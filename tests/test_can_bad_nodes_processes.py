@@ -1,7 +1,7 @@
 """Misbehaving nodes in processes of their own beside a served valve (issue 29), on python-can's
 udp_multicast bus in a private network namespace (as tests/test_can_processes.py): real
 timing — two nodes at one node ID answering 3 ms apart, a node that never ends an upload —
-and prm9tool's commands in further processes. The driver is tests/bad_node_driver.py."""
+and prm9tool's commands in further processes. The driver is tests/support/bad_node_driver.py."""
 
 from __future__ import annotations
 
@@ -15,7 +15,7 @@ import pytest
 from test_can_processes import NAMESPACE, _namespace_problem
 
 E04 = "PRM9-06.3Z11/30-24E04S02-CA"
-DRIVER = Path(__file__).with_name("bad_node_driver.py")
+DRIVER = Path(__file__).parent / "support" / "bad_node_driver.py"
 GROUP = "239.74.163.29"
 
 

@@ -7,8 +7,8 @@ from __future__ import annotations
 import json
 
 import pytest
-from can_link_rig import E04, make_link_rig, unique_channel
-from canopen_rig import foreign_node
+from support.can_link_rig import E04, make_link_rig, unique_channel
+from support.canopen_rig import foreign_node
 
 from prm9tool.catalogue import CATALOGUE
 from prm9tool.catalogue.typekey import TypeKey

@@ -8,7 +8,7 @@ from __future__ import annotations
 import logging
 
 import pytest
-from can_link_rig import E02, E04, make_link_rig
+from support.can_link_rig import E02, E04, make_link_rig
 
 from prm9tool.cli.main import main
 from prm9tool.device.canlink.session import CanopenSession

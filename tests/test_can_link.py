@@ -12,9 +12,9 @@ import time
 import can
 import canopen
 import pytest
-from can_link_rig import E02, E04, LinkRig, make_link_rig
 from canopen.sdo.exceptions import SdoError
-from waiting import wait_for
+from support.can_link_rig import E02, E04, LinkRig, make_link_rig
+from support.waiting import wait_for
 
 from prm9tool.catalogue import CATALOGUE
 from prm9tool.device.canlink import bus as bus_module
@@ -129,8 +129,8 @@ def test_two_masters_on_one_bus_never_leave_a_mixed_stored_set(rig, data_dir):
 
 
 def test_a_node_that_is_not_a_prm9_is_refused(tmp_path, data_dir):
-    from can_link_rig import unique_channel
-    from canopen_rig import foreign_node
+    from support.can_link_rig import unique_channel
+    from support.canopen_rig import foreign_node
 
     channel = unique_channel("other")
     network = foreign_node(channel, NODE, vendor=0x123)
@@ -181,7 +181,7 @@ def test_an_unknown_interface_is_a_clear_error():
 
 
 def test_no_answer_on_an_empty_bus_is_a_timeout_naming_the_bit_rate(tmp_path, data_dir):
-    from can_link_rig import unique_channel
+    from support.can_link_rig import unique_channel
 
     bus = can.Bus(interface="virtual", channel=unique_channel("empty"))
     try:
@@ -324,7 +324,7 @@ def test_the_sync_period_keeps_the_scope_under_half_of_a_slow_bus():
 
 
 def test_a_wrong_bit_rate_shows_as_error_frames_in_the_message(tmp_path, data_dir):
-    from can_link_rig import unique_channel
+    from support.can_link_rig import unique_channel
 
     channel = unique_channel("errors")
     noise = can.Bus(interface="virtual", channel=channel)

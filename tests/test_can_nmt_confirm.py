@@ -5,7 +5,7 @@ heartbeat period later; and a node the tool stopped is NMT stopped, not an unpow
 from __future__ import annotations
 
 import pytest
-from can_link_rig import E04, make_link_rig
+from support.can_link_rig import E04, make_link_rig
 
 from prm9tool.catalogue.commissioning import NmtCommand
 from prm9tool.device.canlink.rpdo_setpoint import RpdoSetpoint

@@ -72,7 +72,7 @@ def test_the_tick_period_is_one_ms_where_the_bus_allows():
 
 @pytest.fixture
 def can_valve(tmp_path, monkeypatch, request):
-    from can_link_rig import make_link_rig
+    from support.can_link_rig import make_link_rig
 
     monkeypatch.setenv("PRM9TOOL_DATA_DIR", str(tmp_path / "data"))
     od = getattr(request, "param", "full")  # "manual": only the objects the manual lists

@@ -23,7 +23,7 @@ from pathlib import Path
 import pytest
 
 E04 = "PRM9-06.3Z11/30-24E04S02-CA"
-DRIVER = Path(__file__).with_name("can_processes_driver.py")
+DRIVER = Path(__file__).parent / "support" / "can_processes_driver.py"
 NAMESPACE = "ip link set lo up && ip link set lo multicast on && ip route add 224.0.0.0/4 dev lo"
 GROUP = "239.74.163.9"
 

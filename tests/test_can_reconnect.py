@@ -1,5 +1,5 @@
 """A CANopen valve that leaves the bus and comes back (power cycle), and the tool's adapter
-going bus-off and recovering (tests/bus_off_rig.py): the connection scans the bus for the
+going bus-off and recovering (tests/support/bus_off_rig.py): the connection scans the bus for the
 valve's serial number (0x1018/4) and goes online with it — also at a new node ID. Emulated -CA
 valve in real time on a private virtual channel (can_link_rig)."""
 
@@ -9,9 +9,9 @@ import os
 from pathlib import Path
 
 import pytest
-from can_link_rig import E02, make_link_rig
-from gui_support import session_of
-from reconnect_links import online_window
+from support.can_link_rig import E02, make_link_rig
+from support.gui_support import session_of
+from support.reconnect_links import online_window
 
 from prm9tool.catalogue.commissioning import NmtCommand
 from prm9tool.device import factory

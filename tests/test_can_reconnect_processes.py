@@ -14,7 +14,7 @@ from pathlib import Path
 import pytest
 from test_can_processes import NAMESPACE, _namespace_problem
 
-DRIVER = Path(__file__).with_name("can_reconnect_driver.py")
+DRIVER = Path(__file__).parent / "support" / "can_reconnect_driver.py"
 GROUP = "239.74.163.23"
 
 

@@ -6,7 +6,7 @@ move — the message says where the valve is and what to do. Emulated valve in r
 from __future__ import annotations
 
 import pytest
-from can_link_rig import make_link_rig
+from support.can_link_rig import make_link_rig
 
 from prm9tool.device.canlink.bus import CanOptions
 from prm9tool.device.canlink.relocate import (

@@ -10,9 +10,9 @@ from types import SimpleNamespace
 
 import numpy as np
 import pytest
-from scope_fakes import FakeConnection
+from support.scope_fakes import FakeConnection
+from support.waiting import wait_for
 from test_can_pace import can_valve, drop_tpdo1  # noqa: F401 (the fixture)
-from waiting import wait_for
 
 from prm9tool.catalogue.signals import BY_KEY
 from prm9tool.device.canlink.session import CanopenSession

@@ -8,8 +8,8 @@ from __future__ import annotations
 import time
 
 import pytest
-from can_link_rig import E04, make_link_rig
-from waiting import HandClock, wait_for
+from support.can_link_rig import E04, make_link_rig
+from support.waiting import HandClock, wait_for
 
 from prm9tool.catalogue.commissioning import CONTROL_WORD, ENABLE_SEQUENCE, NmtCommand
 from prm9tool.device.canlink.rpdo_setpoint import DEADLINE_MS, RpdoSetpoint, RpdoSetpointError

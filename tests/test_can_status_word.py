@@ -5,8 +5,8 @@ The valve side is tests/test_emulator_states.py and the golden frames of §7.6."
 from __future__ import annotations
 
 import pytest
-from can_link_rig import E04, make_link_rig
-from waiting import wait_for
+from support.can_link_rig import E04, make_link_rig
+from support.waiting import wait_for
 
 from prm9tool.catalogue.commissioning import NmtCommand
 from prm9tool.characterize.canrig import rig_for_session
@@ -34,7 +34,7 @@ def link(request, tmp_path, data_dir):
 def answer_status_word(rig, word: int) -> None:
     """The valve answers ``word`` for 0x6041 (a manufacturer's valve with its own flags)."""
     with rig.valve.lock:
-        rig.valve._fw.od.getters[STATUS] = lambda: word
+        rig.valve.firmware.od.getters[STATUS] = lambda: word
 
 
 @pytest.mark.parametrize(

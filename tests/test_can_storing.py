@@ -8,8 +8,8 @@ import json
 from pathlib import Path
 
 import pytest
-from can_link_rig import E04, LinkRig, make_link_rig
-from waiting import wait_for
+from support.can_link_rig import E04, LinkRig, make_link_rig
+from support.waiting import wait_for
 
 from prm9tool.catalogue import CATALOGUE
 from prm9tool.catalogue.manual_od import NOT_KEPT_AFTER_RESTART
@@ -72,7 +72,7 @@ def test_safe_order_puts_limits_and_curve_points_before_what_they_would_pass():
 def test_a_store_capability_of_0_refuses_the_upload_before_writing(tmp_path, data_dir):
     rig = make_link_rig("capability", tmp_path)
     with rig.valve.lock:
-        rig.valve._fw.od.getters[(0x1010, 1)] = lambda: 0  # CiA 301: cannot store at all
+        rig.valve.firmware.od.getters[(0x1010, 1)] = lambda: 0  # CiA 301: cannot store at all
     try:
         with session_for(rig) as session:
             before = session.download()
@@ -165,7 +165,7 @@ def test_factory_values_without_0x1011_are_uploaded(manual):
 def _batch_verify_losing_dtamp(rig: LinkRig, tmp_path, capsys, monkeypatch) -> tuple[dict, str]:
     """--batch --verify-by-restart (DTAMP 15 → 20 %) into ``rig``'s valve, whose non-volatile
     memory loses DTAMP (the restart brings back the old value): its report record and stderr."""
-    nv = rig.valve._fw.nv
+    nv = rig.valve.firmware.nv
     replace = nv.replace
     lost = {"DTAMP": nv.values.get("DTAMP", CATALOGUE["DTAMP"].default)}
     monkeypatch.setattr(nv, "replace", lambda values: replace({**values, **lost}))

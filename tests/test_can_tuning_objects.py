@@ -5,8 +5,8 @@ the tuning says so before it writes or moves anything."""
 from __future__ import annotations
 
 import pytest
-from can_link_rig import E04, make_link_rig
-from waiting import wait_for
+from support.can_link_rig import E04, make_link_rig
+from support.waiting import wait_for
 
 from prm9tool.catalogue import CATALOGUE
 from prm9tool.catalogue.commissioning import NmtCommand

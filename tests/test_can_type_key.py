@@ -8,8 +8,8 @@ from __future__ import annotations
 import json
 
 import pytest
-from can_link_rig import E02, E04, make_link_rig
 from PySide6.QtWidgets import QInputDialog
+from support.can_link_rig import E02, E04, make_link_rig
 
 from prm9tool.cli.main import main
 from prm9tool.device.canlink.typekeys import remembered
@@ -64,7 +64,7 @@ def test_type_key_usage_errors(argv, problem, capsys):
 def test_the_gui_asks_for_the_key_when_going_online_with_device_can(
     qtbot, real, data_dir, tmp_path, monkeypatch
 ):
-    from gui_support import settings_in
+    from support.gui_support import settings_in
 
     from prm9tool.device import factory
     from prm9tool.model.access import AccessModel

@@ -8,7 +8,7 @@ from __future__ import annotations
 import time
 
 import pytest
-from can_link_rig import make_link_rig
+from support.can_link_rig import make_link_rig
 
 from prm9tool.catalogue import CATALOGUE
 from prm9tool.device.canlink.session import CanopenSession

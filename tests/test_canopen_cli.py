@@ -13,7 +13,7 @@ import time
 import can
 import canopen
 import pytest
-from canopen_rig import TIMEOUT_S, unique_channel
+from support.canopen_rig import TIMEOUT_S, unique_channel
 
 from prm9tool import app
 from prm9tool.cli import main as cli

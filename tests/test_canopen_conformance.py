@@ -6,7 +6,7 @@ Frames are written as in the manual: ``COB-ID data bytes`` in hex.
 from __future__ import annotations
 
 import pytest
-from canopen_rig import E04, Rig, make_rig
+from support.canopen_rig import E04, Rig, make_rig
 
 
 @pytest.fixture

@@ -10,7 +10,7 @@ import struct
 from pathlib import Path
 
 import pytest
-from canopen_rig import E02, Rig, make_rig
+from support.canopen_rig import E02, Rig, make_rig
 
 from prm9tool.device.records import DeviceState
 

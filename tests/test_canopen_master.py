@@ -16,7 +16,7 @@ import can
 import canopen
 import pytest
 from canopen.objectdictionary import ODArray, ODRecord, ODVariable, datatypes
-from canopen_rig import BOOT_S, TIMEOUT_S, unique_channel
+from support.canopen_rig import BOOT_S, TIMEOUT_S, unique_channel
 
 from prm9tool.catalogue import CATALOGUE, LOAD_SIGNATURE, SAVE_SIGNATURE
 from prm9tool.catalogue.pdo import mapping_for_control_mode

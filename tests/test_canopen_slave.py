@@ -6,7 +6,7 @@ import struct
 
 import can
 import pytest
-from canopen_rig import E02, E04, Rig, make_rig, unique_channel
+from support.canopen_rig import E02, E04, Rig, make_rig, unique_channel
 
 from prm9tool.device.emulator import EmulatedValve, Fault
 from prm9tool.device.records import DeviceState

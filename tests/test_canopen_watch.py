@@ -14,8 +14,8 @@ import time
 
 import can
 import pytest
-from canopen_rig import E02, Rig, make_rig
-from waiting import wait_for
+from support.canopen_rig import E02, Rig, make_rig
+from support.waiting import wait_for
 
 from prm9tool.device.emulator.canopen_watch import SYNC_TIMEOUT_FACTOR
 from prm9tool.device.records import DeviceState

@@ -5,7 +5,7 @@ from __future__ import annotations
 import os
 
 import pytest
-from diagram_fakes import EmulatorConnection
+from support.diagram_fakes import EmulatorConnection
 
 from prm9tool import i18n
 from prm9tool.catalogue import CATALOGUE, Access
@@ -21,7 +21,7 @@ from prm9tool.model.access import AccessModel
 from prm9tool.model.document import ParameterDocument
 from prm9tool.model.undo import DocumentUndo
 from prm9tool.online.sync import ValveSync
-from prm9tool.views.canopen_window import CanopenWindow
+from prm9tool.views.canbus.canopen_window import CanopenWindow
 
 E02_CA = "PRM9-06.3Z11/30-24E02S02-CA"
 

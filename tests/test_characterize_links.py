@@ -13,7 +13,7 @@ import time
 import numpy as np
 import pytest
 from pypdf import PdfReader
-from usb_fakes import FakeHid
+from support.usb_fakes import FakeHid
 
 from prm9tool.catalogue import CATALOGUE
 from prm9tool.catalogue.commissioning import ENABLE_SEQUENCE, NmtCommand
@@ -122,7 +122,7 @@ def test_characterize_over_usb_with_a_paced_valve(usb_valve, tmp_path, capsys):
 
 @pytest.fixture
 def can_valve(tmp_path, monkeypatch, request):
-    from can_link_rig import make_link_rig
+    from support.can_link_rig import make_link_rig
 
     monkeypatch.setenv("PRM9TOOL_DATA_DIR", str(tmp_path / "data"))
     kind = getattr(request, "param", "")  # "real": without this project's objects (0x2050 …)
@@ -249,7 +249,7 @@ def test_a_valve_without_the_override_objects_is_characterized_over_rpdo1(can_va
 
 @pytest.mark.parametrize("can_valve", ["not-started"], indirect=True)
 def test_a_node_not_operational_is_refused_with_what_to_do_and_nothing_sent(can_valve):
-    from waiting import wait_for
+    from support.waiting import wait_for
 
     from prm9tool.characterize.canrig import rig_for_session
     from prm9tool.characterize.procedures import step_test

@@ -7,8 +7,8 @@ from __future__ import annotations
 import sys
 
 import pytest
-from canopen_rig import E02, make_rig
-from usb_fakes import FakeHid
+from support.canopen_rig import E02, make_rig
+from support.usb_fakes import FakeHid
 
 from prm9tool.catalogue.commissioning import (
     CONTROL_WORD,

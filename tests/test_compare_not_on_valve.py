@@ -7,7 +7,7 @@ from __future__ import annotations
 import json
 
 import pytest
-from can_link_rig import E04, make_link_rig
+from support.can_link_rig import E04, make_link_rig
 
 from prm9tool.catalogue import CATALOGUE
 from prm9tool.catalogue.typekey import TypeKey

@@ -36,8 +36,8 @@ def test_a_valve_without_canopen_has_no_dcf():
 
 
 def test_file_export_dcf_writes_the_documents_valve(qtbot, tmp_path, monkeypatch):
-    from gui_support import E02_CA, main_window, record_prompts
     from PySide6.QtWidgets import QFileDialog
+    from support.gui_support import E02_CA, main_window, record_prompts
 
     record_prompts(monkeypatch)
     target = tmp_path / "valve.dcf"

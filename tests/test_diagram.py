@@ -3,10 +3,10 @@
 from __future__ import annotations
 
 import pytest
-from diagram_fakes import EmulatorConnection
 from PySide6.QtCore import QCoreApplication, QObject, QPoint, QRectF, Qt, QTranslator, Signal
 from PySide6.QtGui import QColor, QImage, QPainter
 from PySide6.QtWidgets import QWidget
+from support.diagram_fakes import EmulatorConnection
 
 from prm9tool.catalogue import Access
 from prm9tool.catalogue.signals import signals_for

@@ -519,7 +519,7 @@ def test_dialogs_open_at_a_default_size_that_fits_a_1024_x_768_screen(qtbot, set
 def test_both_parameter_editors_show_limta_capped_by_curnorm(qtbot, setup):
     """The parameter list's edit dialog and the diagram's field show the same allowed range,
     capped by the nominal coil current (manual table 7-14: LIMTA 0..CURNORM)."""
-    from prm9tool.views.parameter_dialog import ParameterEditDialog
+    from prm9tool.views.parameters.dialog import ParameterEditDialog
 
     s = setup(E02)
     curnorm = int(s.doc.value("CURNORM"))

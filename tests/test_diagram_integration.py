@@ -6,7 +6,8 @@ These run the real ValveConnection (worker thread, USB protocol, emulator sessio
 from __future__ import annotations
 
 import pytest
-from gui_support import (
+from PySide6.QtCore import Qt
+from support.gui_support import (
     E02,
     E02_CA,
     emulated,
@@ -16,7 +17,6 @@ from gui_support import (
     record_prompts,
     settings_in,
 )
-from PySide6.QtCore import Qt
 
 from prm9tool import i18n
 from prm9tool.catalogue import Access
@@ -129,7 +129,7 @@ def test_canopen_window_node_id_and_terminator_survive_a_restart(qtbot, window, 
 
 
 def test_the_canopen_block_and_the_toolbar_show_one_canopen_window(qtbot, tmp_path, monkeypatch):
-    from prm9tool.views.canopen_window import CanopenWindow
+    from prm9tool.views.canbus.canopen_window import CanopenWindow
 
     record_prompts(monkeypatch)
     with main_window(qtbot, tmp_path, E02_CA) as window:

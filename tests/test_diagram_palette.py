@@ -6,10 +6,10 @@ from __future__ import annotations
 from collections.abc import Iterator
 
 import pytest
-from diagram_fakes import EmulatorConnection
 from PySide6.QtCore import QPoint, QRectF
 from PySide6.QtGui import QColor, QImage, QPainter, QPalette
 from PySide6.QtWidgets import QApplication
+from support.diagram_fakes import EmulatorConnection
 from test_diagram import E04_CA, make_view
 
 from prm9tool.catalogue import Access

@@ -105,7 +105,7 @@ def test_enable_says_which_error_is_still_present_and_then_reaches_active():
 
 def _present(valve) -> set[int]:
     """EMCY codes of the errors whose cause is present now (the emulated valve's own view)."""
-    fw = valve._session.emulator.valve._fw
+    fw = valve._session.emulator.valve.firmware
     return {fw.faults.timers[k].present and kind for k, kind in _codes().items()} - {False}
 
 
@@ -120,6 +120,6 @@ def _wait_state(valve, state) -> None:
 
 
 def _wait(condition) -> None:
-    from waiting import wait_for
+    from support.waiting import wait_for
 
     wait_for(condition, 10.0)

@@ -197,7 +197,7 @@ def kind_of(text: str) -> str:
 
 def snapshot(valve: EmulatedValve, events: list[Any]) -> dict[str, Any]:
     """Everything observable, floats as their bits."""
-    fw = valve._fw
+    fw = valve.firmware
     od = {}
     for key, param in fw.od.entries.items():
         try:
@@ -241,8 +241,8 @@ def run(kernel: str, type_key: str, switches: Any, seed: int) -> list[tuple[str,
         valve = EmulatedValve(type_key, switches=switches)
     finally:
         kernels.use(None)
-    assert valve._fw.kernel == kernel
-    fw = valve._fw
+    assert valve.firmware.kernel == kernel
+    fw = valve.firmware
     events: list[Any] = []
     valve.add_error_listener(lambda code, reg: events.append((fw.cycles, code, reg)))
     record = []
@@ -329,7 +329,7 @@ def test_the_compiled_kernel_is_the_default_and_said_once_in_the_log(
     with caplog.at_level("INFO", logger=kernels.__name__):
         first = EmulatedValve(VARIANTS["E02"][0])
         second = EmulatedValve(VARIANTS["E04"][0])
-    assert first._fw.kernel == second._fw.kernel == "compiled"
+    assert first.firmware.kernel == second.firmware.kernel == "compiled"
     said = [r.getMessage() for r in caplog.records if r.name == kernels.__name__]
     assert said == ["emulator: compiled control loop"]
 
@@ -338,7 +338,7 @@ def test_the_environment_variable_forces_the_python_kernel(
     fresh_choice: None, monkeypatch: pytest.MonkeyPatch
 ) -> None:
     monkeypatch.setenv(kernels.ENV, "python")
-    assert EmulatedValve(VARIANTS["E02"][0])._fw.kernel == "python"
+    assert EmulatedValve(VARIANTS["E02"][0]).firmware.kernel == "python"
 
 
 def test_an_unknown_kernel_name_is_a_clear_error(
@@ -362,5 +362,5 @@ def test_a_forced_compiled_kernel_that_is_unavailable_is_a_clear_error_and_else_
     kernels.use(None)
     with caplog.at_level("WARNING", logger=kernels.__name__):
         valve = EmulatedValve(VARIANTS["E02"][0])
-    assert valve._fw.kernel == "python"
+    assert valve.firmware.kernel == "python"
     assert "compiled control loop unavailable (no _ckernel (no compiler))" in caplog.text

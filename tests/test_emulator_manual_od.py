@@ -7,7 +7,7 @@ Frames in the manual's notation (``COB-ID data bytes``, hex).
 from __future__ import annotations
 
 import pytest
-from canopen_rig import E02, E04, Rig, make_rig
+from support.canopen_rig import E02, E04, Rig, make_rig
 
 from prm9tool.catalogue import CATALOGUE
 from prm9tool.catalogue.manual_od import MANUAL_OBJECTS, in_manual

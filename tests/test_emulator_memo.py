@@ -39,7 +39,7 @@ def test_the_coefficients_always_equal_a_fresh_computation():
     """Random parameter writes, input changes and time: after each, the coefficients the loop
     runs on are bit for bit those computed from scratch, and the memo did save rebuilds."""
     valve = EmulatedValve(E04, 1)
-    fw = valve._fw
+    fw = valve.firmware
     sensor_type = CATALOGUE["SENSTYPE"]
     valve.write(sensor_type.index, sensor_type.subindex, 10)  # ratiometric: supply / 2 counts
     rng = random.Random(24)

@@ -3,8 +3,8 @@ asks first (issue 15, item 19)."""
 
 from __future__ import annotations
 
-from gui_support import E02, go_online, valve_value
 from PySide6.QtWidgets import QDialog
+from support.gui_support import E02, go_online, valve_value
 
 from prm9tool.catalogue import Access
 from prm9tool.views import prompts
@@ -90,7 +90,7 @@ def _file_with(tmp_path, **values):
 def _take_from_the_file(monkeypatch, mnemonics):
     from PySide6.QtCore import Qt
 
-    from prm9tool.views.compare_view import FIRST_VALUE, CompareDialog
+    from prm9tool.views.compare.view import FIRST_VALUE, CompareDialog
 
     def run(dialog):
         model = dialog.model

@@ -6,9 +6,9 @@ import os
 from pathlib import Path
 
 import pytest
-from gui_support import record_prompts
 from PySide6.QtCore import QSettings, QTimer
 from PySide6.QtWidgets import QApplication
+from support.gui_support import record_prompts
 
 from prm9tool import app, i18n
 from prm9tool.catalogue.typekey import USER_SPOOLS_FILE, TypeKey, load_user_spools
@@ -188,7 +188,7 @@ def test_a_broken_spools_json_is_shown_once_at_start_in_the_program_language(
 def test_the_window_comes_up_without_the_heavy_modules(tmp_path):
     """numpy, pyqtgraph and the device layer load when first needed (the connection's worker,
     the oscilloscope, a controller dialog), not on the way to the window (docs/PERFORMANCE.md)."""
-    from python_process import run_python
+    from support.python_process import run_python
 
     code = (
         "import sys\n"
@@ -235,7 +235,7 @@ def test_the_can_bus_dialog_shows_the_bus_named_on_the_command_line(qtbot, answe
     """``--device can:10 --can-interface udp_multicast --can-channel 239.74.163.2`` went online
     on that bus, but Communication → CAN bus… offered socketcan can0 (the remembered bus), so
     "Search the bus" searched another one."""
-    from prm9tool.views.can_bus_dialog import CanBusDialog
+    from prm9tool.views.canbus.bus_dialog import CanBusDialog
 
     app.create_application()
     args = _args("--device", "can:10", "--can-interface", "udp_multicast",

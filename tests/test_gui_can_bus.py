@@ -4,16 +4,16 @@ the valve and other nodes, remembers the bus, and going online with the chosen n
 from __future__ import annotations
 
 import pytest
-from can_link_rig import E04, make_link_rig, unique_channel
-from canopen_rig import foreign_node
 from PySide6.QtCore import QSettings
 from PySide6.QtWidgets import QDialogButtonBox, QInputDialog
+from support.can_link_rig import E04, make_link_rig, unique_channel
+from support.canopen_rig import foreign_node
 
 from prm9tool.device import factory
 from prm9tool.device.canlink.discovery import IDENTIFY_TIMEOUT_S, SCAN_WINDOW_S
 from prm9tool.device.canlink.session import SDO_TIMEOUT_S
 from prm9tool.online.connection import ValveConnection
-from prm9tool.views.can_bus_dialog import BITRATE_KEY, CHANNEL_KEY, INTERFACE_KEY, CanBusDialog
+from prm9tool.views.canbus.bus_dialog import BITRATE_KEY, CHANNEL_KEY, INTERFACE_KEY, CanBusDialog
 
 IDENTIFY_READS = 7  # discovery.identify_node of a PRM9: 0x1000, 0x1018/1, 0x1008, 0x100A,
 # 0x1018/4, the type key 0x2041 and 0x2005/1 (E04 or E02)
@@ -325,7 +325,7 @@ def test_the_network_view_watches_the_sessions_bus_while_online(
     """Issue 34, item 12: Communication → CAN bus… was greyed out while online. Online over CAN
     it now shows the bus the session is on — through the session's own master (one adapter
     open on the channel, not two) — and sends nothing: no search, no LSS, no valve to pick."""
-    from gui_support import main_window
+    from support.gui_support import main_window
 
     from prm9tool.device.canlink import bus as canbus
 
@@ -368,7 +368,7 @@ def test_online_over_usb_the_bus_can_be_searched_but_not_gone_online_with(
     """Issue 34, item 12, the other link: online over USB the dialog opens the bus itself (the
     session is not on it) and searches it; a node is gone online with only after going
     offline."""
-    from gui_support import E02, go_online, main_window
+    from support.gui_support import E02, go_online, main_window
 
     seen: dict[str, object] = {}
 

@@ -5,14 +5,14 @@ refuses one that answers, gives the valve its ID (stored) and goes online with i
 from __future__ import annotations
 
 import pytest
-from lss_rig import make_lss_rig
 from PySide6.QtCore import QSettings
 from PySide6.QtWidgets import QInputDialog
+from support.lss_rig import make_lss_rig
 
 from prm9tool.device import factory
 from prm9tool.online.connection import ValveConnection
 from prm9tool.online.lss_commissioning import LssCommissioning
-from prm9tool.views.can_bus_dialog import CanBusDialog
+from prm9tool.views.canbus.bus_dialog import CanBusDialog
 
 
 @pytest.fixture
@@ -80,7 +80,7 @@ def test_assign_node_id_proposes_the_first_free_id_and_goes_online(qtbot, dialog
     ]
     assert dialog.selected_device_id() == "can:21"
     valve = rig.valves[1]
-    assert (valve.node_id, valve._fw.nv.lss["node_id"]) == (21, 21)
+    assert (valve.node_id, valve.firmware.nv.lss["node_id"]) == (21, 21)
     assert panel.state.text() == "Serial 4711 answers as can:21 (stored). Going online with it…"
     connection = ValveConnection(opener=lambda e: factory.open_session(e, can_link=rig.options))
     with qtbot.waitSignal(connection.online_changed, timeout=10000):
@@ -97,7 +97,7 @@ def test_an_id_that_answers_is_refused_and_nothing_is_sent(qtbot, dialog, rig, m
     panel.assign.click()
     assert panel.state.text() == "Node ID 10 is taken: a node answers there. Choose another one."
     assert not [f for f in rig.frames() if f.startswith("7E5")]
-    assert (rig.valves[1].node_id, rig.valves[1]._fw.nv.lss) == (0, {})
+    assert (rig.valves[1].node_id, rig.valves[1].firmware.nv.lss) == (0, {})
     assert dialog.result() == 0  # still open
 
 
@@ -113,7 +113,7 @@ def test_an_id_taken_behind_the_dialogs_back_is_refused_by_the_job(qtbot, dialog
         "Node ID assignment (LSS) did not complete. (node ID 15 is taken: serial 4800 answers "
         "there. Choose a free node ID; nothing was changed)"
     )
-    assert (rig.valves[1].node_id, rig.valves[1]._fw.nv.lss) == (0, {})
+    assert (rig.valves[1].node_id, rig.valves[1].firmware.nv.lss) == (0, {})
 
 
 def test_find_bit_rate_sets_the_rate_the_bus_runs_at(qtbot, settings):
@@ -158,7 +158,7 @@ def test_find_bit_rate_on_an_adapter_without_listen_only_says_what_to_try(qtbot,
 def test_change_node_id_by_lss_warns_that_the_link_moves_and_goes_online_there(
     qtbot, settings, tmp_path, monkeypatch
 ):
-    from gui_support import record_prompts
+    from support.gui_support import record_prompts
 
     from prm9tool.device.canlink.lss import LssAddress, LssMasterLink
     from prm9tool.views import prompts
@@ -201,7 +201,7 @@ def test_change_node_id_by_lss_warns_that_the_link_moves_and_goes_online_there(
             "prm9tool's own link moves with it: a connection to can:21 ends" in (answers.asked[-1])
         )
         assert dialog.selected_device_id() == "can:22"
-        assert (valve.node_id, valve._fw.nv.lss["node_id"]) == (22, 22)
+        assert (valve.node_id, valve.firmware.nv.lss["node_id"]) == (22, 22)
         connection.shutdown()
     finally:
         rig.close()
@@ -232,7 +232,7 @@ def test_assign_node_ids_to_all_gives_consecutive_free_ids_in_one_action(
     qtbot.waitUntil(lambda: dialog.table.rowCount() == 3, timeout=90000)
     assert [dialog.table.item(r, 0).text() for r in range(3)] == ["can:9", "can:10", "can:11"]
     assert [dialog.table.item(r, 2).text() for r in range(3)] == ["4711", "4700", "4712"]
-    assert (rig.valves[1]._fw.nv.lss["node_id"], second._fw.nv.lss["node_id"]) == (9, 11)
+    assert (rig.valves[1].firmware.nv.lss["node_id"], second.firmware.nv.lss["node_id"]) == (9, 11)
     qtbot.waitUntil(lambda: panel.look.isEnabled(), timeout=90000)
     assert panel.table.rowCount() == 0
 
@@ -240,7 +240,7 @@ def test_assign_node_ids_to_all_gives_consecutive_free_ids_in_one_action(
 def test_change_bit_rate_by_lss_moves_every_lss_valve_and_the_tools_link(
     qtbot, settings, tmp_path, monkeypatch
 ):
-    from gui_support import record_prompts
+    from support.gui_support import record_prompts
 
     from prm9tool.device.canlink.lss import LssMasterLink
     from prm9tool.views import prompts
@@ -273,7 +273,7 @@ def test_change_bit_rate_by_lss_moves_every_lss_valve_and_the_tools_link(
         qtbot.waitUntil(lambda: dialog.table.rowCount() == 2, timeout=90000)
         assert dialog.bitrate.currentData() == 250_000
         assert [v.bitrate for v in valves] == [250_000, 250_000]
-        assert [v._fw.nv.lss["bit_timing"] for v in valves] == [3, 3]
+        assert [v.firmware.nv.lss["bit_timing"] for v in valves] == [3, 3]
         assert [dialog.table.item(r, 0).text() for r in range(2)] == ["can:21", "can:22"]
         connection.shutdown()
     finally:

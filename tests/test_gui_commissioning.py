@@ -5,7 +5,7 @@ faults, inputs and cable are in the Valve menu, and the LEDs and error list reac
 from __future__ import annotations
 
 import pytest
-from gui_support import E02_CA, emulated, go_online, main_window
+from support.gui_support import E02_CA, emulated, go_online, main_window
 
 from prm9tool.device.emulator import Fault
 from prm9tool.scope import Waveform

@@ -5,9 +5,9 @@ from __future__ import annotations
 import os
 from pathlib import Path
 
-from gui_support import E02, go_online
 from PySide6.QtCore import Qt
 from PySide6.QtWidgets import QFileDialog
+from support.gui_support import E02, go_online
 
 from prm9tool import i18n
 from prm9tool.catalogue import Access
@@ -16,7 +16,7 @@ from prm9tool.compare import Comparison, Side
 from prm9tool.files.prmfile import PrmContents, write_file
 from prm9tool.history.recorder import Recorder
 from prm9tool.views import prompts
-from prm9tool.views.compare_view import BOTH, DOCUMENT, FIRST_VALUE, VALVE, CompareDialog
+from prm9tool.views.compare.view import BOTH, DOCUMENT, FIRST_VALUE, VALVE, CompareDialog
 from prm9tool.views.online_dialogs import DiffChoice, OnlineDiffDialog
 
 TIMEOUT = 10_000
@@ -250,7 +250,7 @@ def test_the_history_setting_chooses_the_database_for_the_gui_and_the_command_li
     qtbot, window, tmp_path, monkeypatch
 ):
     from prm9tool.history.config import database_url, unreachable_policy
-    from prm9tool.views.history_settings import HistorySettingsDialog
+    from prm9tool.views.history.settings import HistorySettingsDialog
 
     def answer(dialog):
         assert dialog.url.text() == ""  # the default: SQLite on this computer

@@ -6,8 +6,8 @@ from types import SimpleNamespace
 
 import numpy as np
 import pytest
-from gui_support import E02, E04_CA, emulator_connection
 from PySide6.QtCore import QTimer
+from support.gui_support import E02, E04_CA, emulator_connection
 
 from prm9tool.device import factory
 from prm9tool.device.usb.transport.emulator import LinkFaults

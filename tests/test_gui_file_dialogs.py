@@ -14,7 +14,7 @@ from PySide6.QtWidgets import (
 )
 
 from prm9tool import i18n
-from prm9tool.views import file_dialogs
+from prm9tool.views.files import dialogs as file_dialogs
 
 
 def _date_shown(qtbot, folder, file) -> dict[str, str]:

@@ -5,10 +5,10 @@ from __future__ import annotations
 
 from pathlib import Path
 
-from gui_support import E02, E04_CA
 from PySide6.QtCore import QMimeData, QPointF, Qt, QUrl
 from PySide6.QtGui import QDropEvent
 from PySide6.QtWidgets import QFileDialog
+from support.gui_support import E02, E04_CA
 
 from prm9tool.catalogue.typekey import TypeKey
 from prm9tool.files import prmfile
@@ -193,7 +193,7 @@ def test_export_pdf_holds_the_parameters_and_the_diagram(window, tmp_path, monke
 def test_the_record_holds_the_diagram_picture(window):
     from PySide6.QtGui import QImage, QTextDocument
 
-    from prm9tool.views.record import DIAGRAM_URL
+    from prm9tool.views.record.document import DIAGRAM_URL
 
     record = window.records.record()
     picture = record.resource(QTextDocument.ResourceType.ImageResource, QUrl(DIAGRAM_URL))
@@ -253,7 +253,7 @@ def test_a_vanished_recent_file_is_removed_with_a_message(window, tmp_path, answ
 
 
 def test_a_number_for_the_recent_files_in_the_settings_counts_as_none(window, tmp_path):
-    from prm9tool.views.file_workflow import RECENT_KEY
+    from prm9tool.views.files.workflow import RECENT_KEY
     from prm9tool.views.hid_dialog import EMULATORS_KEY, saved_emulators
 
     window.settings.setValue(RECENT_KEY, 5)  # e.g. a hand-edited settings file
@@ -326,7 +326,7 @@ def test_a_backup_copy_that_cannot_be_written_says_so_and_loses_nothing(window, 
 def test_after_a_download_the_status_bar_points_to_the_backup_copy(qtbot, window):
     """Issue 25 item 8: the backup workflow (Download from valve, then keep a copy) leads to
     Save backup copy, which leaves the document as it is."""
-    from gui_support import go_online
+    from support.gui_support import go_online
 
     go_online(qtbot, window, f"{E02}:4730")
     qtbot.waitUntil(lambda: window.sync.active, timeout=10_000)

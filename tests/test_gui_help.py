@@ -4,13 +4,13 @@ and F1 in a window opening the page about it."""
 from __future__ import annotations
 
 import pytest
-from gui_support import E02
 from PySide6.QtCore import QFile, QIODevice, Qt
+from support.gui_support import E02
 
 from prm9tool import i18n
 from prm9tool.catalogue.typekey import TypeKey
 from prm9tool.compare import Comparison, Side
-from prm9tool.views.compare_view import CompareDialog
+from prm9tool.views.compare.view import CompareDialog
 from prm9tool.views.help_dialog import TOPICS, help_file, help_window
 
 LANGUAGES = ("en", "de", "cs")

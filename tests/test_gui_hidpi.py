@@ -8,7 +8,7 @@ import os
 import textwrap
 
 from PySide6.QtGui import QImage
-from python_process import run_python
+from support.python_process import run_python
 
 SCRIPT = textwrap.dedent(
     """

@@ -8,12 +8,12 @@ import xml.etree.ElementTree as ET
 from pathlib import Path
 
 import pytest
-from gui_support import main_window, record_prompts
 from PySide6.QtCore import Qt
 from PySide6.QtWidgets import QDialogButtonBox
+from support.gui_support import main_window, record_prompts
 
 from prm9tool import i18n
-from prm9tool.views.parameter_model import Column
+from prm9tool.views.parameters.model import Column
 
 ROOT = Path(__file__).resolve().parent.parent
 TS = {lang: ROOT / "translations" / f"prm9tool_{lang}.ts" for lang in ("de", "cs")}

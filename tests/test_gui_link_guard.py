@@ -4,8 +4,8 @@ its next restart, or that the rotary switches decide."""
 from __future__ import annotations
 
 import pytest
-from can_link_rig import make_link_rig
-from gui_support import record_prompts, settings_in
+from support.can_link_rig import make_link_rig
+from support.gui_support import record_prompts, settings_in
 
 from prm9tool.device import factory
 from prm9tool.model.access import AccessModel

@@ -5,8 +5,8 @@ from __future__ import annotations
 import os
 
 import pytest
-from gui_support import E02, E04_CA, main_window, reject_all_dialogs
 from PySide6.QtCore import Qt
+from support.gui_support import E02, E04_CA, main_window, reject_all_dialogs
 
 from prm9tool.catalogue import Access
 from prm9tool.catalogue.typekey import TypeKey
@@ -310,7 +310,7 @@ def test_change_password_action_opens_the_dialog_at_expert_level(window, monkeyp
 def test_highlight_follows_a_dark_palette(window, qapp):
     from PySide6.QtGui import QColor, QPalette
 
-    from prm9tool.views.parameter_model import Column as Col
+    from prm9tool.views.parameters.model import Column as Col
 
     old = qapp.palette()
     dark = QPalette(old)
@@ -548,7 +548,7 @@ def test_the_differ_dialog_shows_a_choice_with_its_meaning_as_the_list(window, l
     "-1: on (9-point curve)"."""
     from prm9tool.catalogue import CATALOGUE
     from prm9tool.views.online_dialogs import OnlineDiffDialog
-    from prm9tool.views.parameter_model import format_value
+    from prm9tool.views.parameters.model import format_value
 
     window.set_language(language)
     dialog = OnlineDiffDialog({"SETPLINON": -1}, {"SETPLINON": 0}, E02, E02, window)

@@ -7,7 +7,7 @@ import json
 from dataclasses import dataclass
 
 import pytest
-from gui_support import E02, settings_in
+from support.gui_support import E02, settings_in
 
 from prm9tool import i18n
 from prm9tool.catalogue import CATALOGUE
@@ -16,7 +16,7 @@ from prm9tool.model.document import ParameterDocument
 from prm9tool.model.editing import apply_edit
 from prm9tool.model.undo import DocumentUndo
 from prm9tool.views.hid_dialog import HidConfigurationDialog
-from prm9tool.views.parameter_view import ParameterListView
+from prm9tool.views.parameters.view import ParameterListView
 from prm9tool.views.valve.selection import ValveSelectionDialog
 
 

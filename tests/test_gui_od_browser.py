@@ -4,8 +4,8 @@ valve lacks said so, writing only at Expert level."""
 from __future__ import annotations
 
 import pytest
-from can_link_rig import E02, make_link_rig
 from PySide6.QtWidgets import QInputDialog
+from support.can_link_rig import E02, make_link_rig
 
 from prm9tool.catalogue import Access
 from prm9tool.device import factory

@@ -7,7 +7,8 @@ import json
 import threading
 
 import pytest
-from gui_support import (
+from PySide6.QtWidgets import QDialog, QLabel, QPushButton
+from support.gui_support import (
     E02,
     E02_CA,
     E04_CA,
@@ -17,7 +18,6 @@ from gui_support import (
     session_of,
     valve_value,
 )
-from PySide6.QtWidgets import QDialog, QLabel, QPushButton
 
 from prm9tool.device.usb.transport.emulator import LinkFaults
 from prm9tool.files import backup

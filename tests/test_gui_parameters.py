@@ -3,16 +3,16 @@
 from __future__ import annotations
 
 import pytest
-from gui_support import E02, E04_CA
 from PySide6.QtCore import Qt
+from support.gui_support import E02, E04_CA
 
 from prm9tool.catalogue import Access
 from prm9tool.model.access import AccessModel
 from prm9tool.model.document import ParameterDocument
 from prm9tool.model.undo import DocumentUndo
-from prm9tool.views.parameter_dialog import ParameterEditDialog
-from prm9tool.views.parameter_model import MNEMONIC_ROLE, Column
-from prm9tool.views.parameter_view import ParameterListView
+from prm9tool.views.parameters.dialog import ParameterEditDialog
+from prm9tool.views.parameters.model import MNEMONIC_ROLE, Column
+from prm9tool.views.parameters.view import ParameterListView
 
 
 @pytest.fixture
@@ -212,7 +212,7 @@ def test_measured_values_follow_one_rule_in_the_list_and_the_diagram(view, doc):
 def test_the_main_window_status_bar_says_a_value_was_rounded(qtbot, tmp_path):
     import os
 
-    from gui_support import main_window
+    from support.gui_support import main_window
 
     with main_window(qtbot, tmp_path) as window:
         dialog = window.parameter_view.make_edit_dialog("LIMTB")
@@ -267,7 +267,7 @@ def test_the_edit_dialog_is_wide_enough_for_its_title(view, qtbot, language):
 
 def test_the_columns_keep_their_width_when_a_search_leaves_the_list_empty(view, qtbot):
     """Issue 34, item 20: the mnemonic, value and unit columns collapsed to their headers."""
-    from prm9tool.views.parameter_model import Column
+    from prm9tool.views.parameters.model import Column
 
     view.resize(900, 500)
     view.show()

@@ -7,8 +7,8 @@ import dataclasses
 from types import SimpleNamespace
 
 import pytest
-from gui_support import E02, emulator_connection
 from PySide6.QtCore import QCoreApplication
+from support.gui_support import E02, emulator_connection
 
 from prm9tool.device import factory
 from prm9tool.device.emulated import cable_plugged, plug_cable

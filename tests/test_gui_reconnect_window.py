@@ -2,7 +2,7 @@
 generator, unsaved online edits, an upload, a tuning test. Over USB (the emulated cable pulled
 and plugged back in) and, where the state is the link's own business — the stream, the
 generator, an upload, a tuning test —, also over CANopen: the valve leaves the bus and joins
-again, and the tool's adapter goes bus-off and recovers (tests/reconnect_links.py). What the
+again, and the tool's adapter goes bus-off and recovers (tests/support/reconnect_links.py). What the
 status bar says of a bus-off: tests/test_can_reconnect.py."""
 
 from __future__ import annotations
@@ -11,10 +11,10 @@ import os
 from pathlib import Path
 
 import pytest
-from gui_support import E02, emulated, go_online, main_window
 from PySide6.QtWidgets import QDialog
-from reconnect_links import LINKS, online_window
-from valve_sets import changed_set
+from support.gui_support import E02, emulated, go_online, main_window
+from support.reconnect_links import LINKS, online_window
+from support.valve_sets import changed_set
 
 from prm9tool.catalogue import CATALOGUE
 from prm9tool.catalogue.commissioning import NmtCommand

@@ -14,8 +14,8 @@ import unicodedata
 
 import numpy as np
 import pytest
-from gui_support import E02, E04_CA, main_window
 from pypdf import PdfReader
+from support.gui_support import E02, E04_CA, main_window
 
 MM = 72 / 25.4  # PDF points per millimetre
 

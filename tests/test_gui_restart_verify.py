@@ -10,8 +10,8 @@ import re
 from typing import Any
 
 import pytest
-from can_link_rig import E04, make_link_rig
-from gui_support import E02, go_online, settings_in
+from support.can_link_rig import E04, make_link_rig
+from support.gui_support import E02, go_online, settings_in
 
 from prm9tool import i18n
 from prm9tool.catalogue.manual_od import KEPT_AS_WRITTEN, STORED_WITH_1010, VERIFIED_RESTART
@@ -161,7 +161,7 @@ def test_values_not_kept_through_the_restart_are_listed_and_recorded(
     win, rig = can_window
     upload(qtbot, win)
     with rig.valve.lock:  # the valve's memory loses DTAMP (it comes back with another value)
-        rig.valve._fw.nv.values["DTAMP"] = 400
+        rig.valve.firmware.nv.values["DTAMP"] = 400
     Hydraulics(monkeypatch)
     result = finish(qtbot, win, "verify_restart", win.valve.verify_by_restart)
     assert not result.verified and result.mismatches == {"DTAMP": (1000, 400)}
@@ -259,7 +259,7 @@ def test_online_edits_not_stored_since_the_upload_are_not_lost_by_a_restart(
 
 
 def test_the_history_window_says_which_store_happened(qtbot):
-    from prm9tool.views.history_window import HistoryTableModel
+    from prm9tool.views.history.window import HistoryTableModel
 
     model = HistoryTableModel()
     for store in (STORED_WITH_1010, KEPT_AS_WRITTEN, VERIFIED_RESTART):
@@ -283,7 +283,7 @@ def test_a_document_uploaded_to_another_valve_is_that_valves_and_verify_shows_it
     asked "The document was read from valve 1001 …" again after Verify by restart and every
     reconnect, showed SNV 1001, and the verification's own result never showed."""
     from prm9tool.views import prompts
-    from prm9tool.views.parameter_model import Column
+    from prm9tool.views.parameters.model import Column
 
     window.doc.source_serial = 1001
     window.files.save_to(tmp_path / "valve_1001.prm")

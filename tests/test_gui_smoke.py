@@ -17,10 +17,10 @@ import time
 from pathlib import Path
 
 import pytest
-from gui_support import record_prompts, session_of
 from PySide6.QtCore import QRect, QSettings, Qt
 from PySide6.QtGui import QImage
 from PySide6.QtWidgets import QLabel, QMessageBox, QWidget
+from support.gui_support import record_prompts, session_of
 
 from prm9tool import app, i18n
 from prm9tool.catalogue import Access
@@ -32,8 +32,8 @@ from prm9tool.views import prompts
 from prm9tool.views.access_dialog import ChangePasswordDialog, PasswordDialog
 from prm9tool.views.hid_dialog import EmulatorDialog, HidConfigurationDialog
 from prm9tool.views.online_dialogs import OnlineDiffDialog, RestartDialog
-from prm9tool.views.parameter_dialog import ParameterEditDialog
-from prm9tool.views.parameter_model import Column
+from prm9tool.views.parameters.dialog import ParameterEditDialog
+from prm9tool.views.parameters.model import Column
 from prm9tool.views.valve.selection import ValveSelectionDialog
 
 TIMEOUT = 15_000

@@ -8,7 +8,7 @@ import subprocess
 import sys
 import threading
 
-from gui_support import E02_CA, go_online
+from support.gui_support import E02_CA, go_online
 
 from prm9tool.history import recorder as recorder_module
 from prm9tool.history.recorder import Recorder

@@ -4,7 +4,7 @@
 from __future__ import annotations
 
 import pytest
-from gui_support import go_online
+from support.gui_support import go_online
 
 from prm9tool.catalogue.manual_od import KEPT_AS_WRITTEN, STORED_WITH_1010, VERIFIED_RESTART
 from prm9tool.device.records import UploadResult

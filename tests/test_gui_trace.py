@@ -8,9 +8,9 @@ from pathlib import Path
 
 import can
 import pytest
-from canopen_rig import unique_channel
 from PySide6.QtCore import QSettings, Qt
-from trace_rig import record_commissioning
+from support.canopen_rig import unique_channel
+from support.trace_rig import record_commissioning
 
 import prm9tool.trace as trace
 from prm9tool.online.trace_recording import BusRecording
@@ -112,7 +112,7 @@ def test_record_and_stop_write_a_trace_of_the_bus(qtbot, window, tmp_path):
 
 
 def test_the_can_bus_dialog_offers_record_and_stop(qtbot, tmp_path):
-    from prm9tool.views.can_bus_dialog import CanBusDialog
+    from prm9tool.views.canbus.bus_dialog import CanBusDialog
 
     settings = QSettings(str(tmp_path / "settings.ini"), QSettings.Format.IniFormat)
     recording = BusRecording()
@@ -124,7 +124,7 @@ def test_the_can_bus_dialog_offers_record_and_stop(qtbot, tmp_path):
 
 
 def test_communication_can_trace_opens_the_window_with_the_dialogs_recording(qtbot, tmp_path):
-    from gui_support import main_window
+    from support.gui_support import main_window
 
     with main_window(qtbot, tmp_path) as window:
         window.commands["can_trace"].trigger()

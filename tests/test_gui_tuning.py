@@ -330,7 +330,7 @@ def test_the_position_controller_dialog_opens_the_tuning_window(qtbot):
 def test_online_the_autotune_runs_on_the_connected_valve_and_leaves_it_as_it_was(
     qtbot, monkeypatch, tmp_path
 ):
-    from gui_support import emulator_connection
+    from support.gui_support import emulator_connection
 
     from prm9tool.catalogue import CATALOGUE
     from prm9tool.device import factory

@@ -126,7 +126,7 @@ def test_an_e04_in_control_mode_4_opens_on_the_process_loop(qtbot):
 
 
 def test_reopened_from_the_scope_the_window_keeps_its_loop_and_takes_ctrl_i(qtbot, tmp_path):
-    from gui_support import main_window
+    from support.gui_support import main_window
 
     with main_window(qtbot, tmp_path, E04) as window:
         window.show_tuning_window("process")
@@ -145,7 +145,7 @@ def test_reopened_from_the_scope_the_window_keeps_its_loop_and_takes_ctrl_i(qtbo
 def test_a_test_on_the_valve_puts_the_status_it_reads_on_the_main_status_bar(qtbot, monkeypatch):
     """While a test holds the link the connection polls no status: the status bar went on
     saying "waiting for a CANopen master" on a valve enabled just before the test."""
-    from gui_support import emulator_connection
+    from support.gui_support import emulator_connection
 
     from prm9tool.characterize.procedures import bode_test
     from prm9tool.device import factory

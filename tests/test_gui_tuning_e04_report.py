@@ -7,8 +7,8 @@ from __future__ import annotations
 
 import time
 
-from gui_support import emulated, go_online, main_window
 from PySide6.QtWidgets import QMessageBox
+from support.gui_support import emulated, go_online, main_window
 
 from prm9tool.model.access import Access
 

@@ -8,8 +8,8 @@ and the key built from it failed when it was formatted (issue 14, item 1).
 from __future__ import annotations
 
 import pytest
-from gui_support import E02, E02_CA, main_window
 from PySide6.QtCore import Qt
+from support.gui_support import E02, E02_CA, main_window
 
 from prm9tool.catalogue.typekey import TypeKey
 from prm9tool.catalogue.variant import Config

@@ -7,8 +7,8 @@ import sqlite3
 from pathlib import Path
 
 import pytest
-from history_support import Valve, factory_values, fill
 from sqlalchemy import event
+from support.history_support import Valve, factory_values, fill
 
 from prm9tool.cli.main import main
 from prm9tool.errors import ExitCode, HistoryError
@@ -238,7 +238,7 @@ def test_history_lists_a_valve_as_text_and_json(tmp_path, capsys):
 
 _WRITER = """
 import sys
-from history_support import fill
+from support.history_support import fill
 from prm9tool.history.store import HistoryStore
 store = HistoryStore(sys.argv[1])
 fill(store, 4711, 40)

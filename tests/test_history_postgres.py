@@ -13,8 +13,8 @@ import subprocess
 import sys
 
 import pytest
-from history_support import fill
-from pg_cluster import NoPostgresError, cluster, new_database
+from support.history_support import fill
+from support.pg_cluster import NoPostgresError, cluster, new_database
 
 from prm9tool.errors import HistoryError
 from prm9tool.history.store import HistoryStore

@@ -6,8 +6,8 @@ from __future__ import annotations
 import difflib
 import threading
 
-from gui_support import E02
 from PySide6.QtCore import QTimer
+from support.gui_support import E02
 
 from prm9tool.catalogue.typekey import TypeKey
 from prm9tool.files import prmcheck, prmfile

@@ -22,7 +22,7 @@ ABANDONED = (
 def test_the_command_line_turns_a_real_sdo_abort_into_its_own_message():
     env = {**os.environ, "PYTHONPATH": os.pathsep.join([str(HERE.parent), str(HERE)])}
     done = subprocess.run(
-        [sys.executable, str(HERE / "can_liblog_driver.py")],
+        [sys.executable, str(HERE / "support" / "can_liblog_driver.py")],
         capture_output=True,
         text=True,
         env=env,

@@ -4,8 +4,8 @@ while files keep the point (issue 14, item 14)."""
 from __future__ import annotations
 
 import pytest
-from gui_support import E02, E04_CA
 from PySide6.QtCore import QLocale
+from support.gui_support import E02, E04_CA
 
 from prm9tool import i18n
 from prm9tool.catalogue import CATALOGUE, Access
@@ -22,9 +22,9 @@ from prm9tool.views.diagram.summary import block_lines
 from prm9tool.views.diagram.view import format_signal
 from prm9tool.views.localized_axis import LocalizedAxis
 from prm9tool.views.online_dialogs import OnlineDiffDialog
-from prm9tool.views.parameter_model import Column
-from prm9tool.views.parameter_view import ParameterListView
-from prm9tool.views.record import record_rows
+from prm9tool.views.parameters.model import Column
+from prm9tool.views.parameters.view import ParameterListView
+from prm9tool.views.record.document import record_rows
 
 COMMA = ["de", "cs"]
 
@@ -152,8 +152,8 @@ def test_an_undo_label_shows_the_value_in_the_language(qapp, language):
 
 
 def test_spin_boxes_of_open_windows_follow_a_change_of_language(qtbot, tmp_path, monkeypatch):
-    from gui_support import main_window, record_prompts
     from PySide6.QtWidgets import QDoubleSpinBox
+    from support.gui_support import main_window, record_prompts
 
     record_prompts(monkeypatch)
     with main_window(qtbot, tmp_path) as window:
@@ -167,7 +167,7 @@ def test_spin_boxes_of_open_windows_follow_a_change_of_language(qtbot, tmp_path,
 
 
 def test_live_values_in_the_diagram_are_shown_again_in_a_new_language(qtbot, language):
-    from diagram_fakes import EmulatorConnection
+    from support.diagram_fakes import EmulatorConnection
 
     from prm9tool.device.emulator import EmulatedValve
     from prm9tool.views.diagram.view import DiagramView

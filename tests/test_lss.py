@@ -10,8 +10,8 @@ import json
 
 import can
 import pytest
-from lss_rig import make_lss_rig
-from waiting import wait_for
+from support.lss_rig import make_lss_rig
+from support.waiting import wait_for
 
 from prm9tool.cli.main import main
 from prm9tool.device.canlink.lss import LssAddress, LssFailedError, LssMasterLink
@@ -84,7 +84,7 @@ def test_golden_frames_of_scan_and_assign(rig):
     ]
     start = frames.index(sequence[0])
     assert frames[start : start + len(sequence)] == sequence
-    assert valve._fw.nv.lss == {"node_id": 21, "bit_timing": 3}
+    assert valve.firmware.nv.lss == {"node_id": 21, "bit_timing": 3}
 
 
 def test_activate_bit_timing_frame_and_switch_delay(rig):
@@ -122,7 +122,7 @@ def test_two_devices_with_the_same_identity_are_refused_and_left_alone(rig):
         "revision 0x10000, serial 4711): LSS cannot tell them apart and prm9tool changed neither"
     )
     assert not any(f.startswith(("7E5 11", "7E5 17")) for f in rig.frames())
-    assert [(v.node_id, v._fw.nv.lss) for v in twins] == [(0, {}), (0, {})]
+    assert [(v.node_id, v.firmware.nv.lss) for v in twins] == [(0, {}), (0, {})]
 
 
 def test_assigning_one_of_two_alike_changes_neither_and_releases_both(rig, capsys):
@@ -132,7 +132,7 @@ def test_assigning_one_of_two_alike_changes_neither_and_releases_both(rig, capsy
     assert caught.value.kind == "duplicate"
     wait_for(lambda: [s.lss.state for s in rig.slaves] == [0, 0])  # both waiting again
     assert not any(f.startswith(("7E5 11", "7E5 17")) for f in rig.frames())
-    assert [(v.node_id, v._fw.nv.lss) for v in twins] == [(0, {}), (0, {})]
+    assert [(v.node_id, v.firmware.nv.lss) for v in twins] == [(0, {}), (0, {})]
     assert _cli(rig, "--lss-scan") == 2
     assert "2 devices answer with the same LSS address" in capsys.readouterr().err
 
@@ -172,7 +172,7 @@ def test_an_id_already_taken_is_refused_before_anything_is_sent(rig, capsys):
     err = capsys.readouterr().err
     assert "node ID 10 is taken: serial 4700 answers there. Choose a free node ID; nothing " in err
     assert "(free: 1, 2, 3, …)" in err
-    assert (valve.node_id, valve._fw.nv.lss) == (0, {})
+    assert (valve.node_id, valve.firmware.nv.lss) == (0, {})
 
 
 def test_assign_names_a_serial_that_has_no_lss_device(rig, capsys):
@@ -194,7 +194,7 @@ def test_a_refused_bit_rate_stores_nothing_and_gives_no_node_id(rig):
     frames = rig.frames()
     assert "7E5 11 FF 00 00 00 00 00 00" in frames  # the pending node ID put back
     assert "715 00" not in frames
-    assert (valve.node_id, valve._fw.nv.lss) == (0, {})
+    assert (valve.node_id, valve.firmware.nv.lss) == (0, {})
     assert link.scan() == [ADDRESS_4711]  # still a device without a node ID
 
 
@@ -212,7 +212,7 @@ def test_a_failed_store_is_named_and_the_valve_keeps_no_node_id(rig, monkeypatch
         "serial 4711 refused store configuration: the device could not write its non-volatile "
         "memory (storage media access error); nothing was stored"
     )
-    assert (valve.node_id, valve._fw.nv.lss) == (0, {})
+    assert (valve.node_id, valve.firmware.nv.lss) == (0, {})
 
 
 def test_a_valve_that_leaves_the_bus_during_configuration(rig):
@@ -234,7 +234,7 @@ def test_a_valve_that_leaves_the_bus_during_configuration(rig):
         "configuration; it may or may not have stored the new configuration: power it up and "
         "search the bus (and the devices without a node ID)"
     )
-    assert valve._fw.nv.lss == {}  # it never got the store: nothing half-applied stored
+    assert valve.firmware.nv.lss == {}  # it never got the store: nothing half-applied stored
     valve.restart()
     assert valve.node_id == 0
 
@@ -327,7 +327,7 @@ def test_the_bus_bit_rate_changes_by_lss_on_every_lss_valve_together(rig):
     assert frames[:2] == ["7E5 04 01 00 00 00 00 00 00", "7E5 13 00 03 00 00 00 00 00"]
     assert "7E5 15 64 00 00 00 00 00 00" in frames  # activate, switch delay 100 ms
     wait_for(lambda: [v.bitrate for v in valves] == [250_000] * 2)
-    assert [v._fw.nv.lss["bit_timing"] for v in valves] == [3, 3]
+    assert [v.firmware.nv.lss["bit_timing"] for v in valves] == [3, 3]
     # the emulated valves keep CiA 305's silence in their own (simulated) time: let it end
     wait_for(lambda: all(s._now_ms >= s._silent_until_ms for s in rig.slaves))
     with pytest.raises(LssFailedError) as caught:

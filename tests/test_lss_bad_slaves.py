@@ -11,8 +11,8 @@ from contextlib import contextmanager
 
 import can
 import pytest
-from lss_rig import make_lss_rig
 from support.bad_node import BadLssSlave, LssFault
+from support.lss_rig import make_lss_rig
 
 from prm9tool.cli.main import main
 from prm9tool.device.canlink.lss import FASTSCAN_FRAMES, LssAddress, LssMasterLink

@@ -18,7 +18,7 @@ import pytest
 from test_can_processes import NAMESPACE, _namespace_problem
 
 E04 = "PRM9-06.3Z11/30-24E04S02-CA"
-DRIVER = Path(__file__).with_name("lss_processes_driver.py")
+DRIVER = Path(__file__).parent / "support" / "lss_processes_driver.py"
 GROUP = "239.74.163.21"
 
 

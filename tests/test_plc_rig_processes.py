@@ -13,10 +13,10 @@ import sys
 from pathlib import Path
 
 import pytest
-from plc_rig_driver import CYCLE_FACTOR
+from support.plc_rig_driver import CYCLE_FACTOR
 from test_can_processes import NAMESPACE, _namespace_problem
 
-DRIVER = Path(__file__).with_name("plc_rig_driver.py")
+DRIVER = Path(__file__).parent / "support" / "plc_rig_driver.py"
 GROUP = "239.74.163.12"
 VALVES, PERIOD_MS, SECONDS = 4, 10, 4  # a loaded CI machine keeps 10 ms; the benchmark 1 ms
 

@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 import pytest
-from scope_fakes import FakeConnection
+from support.scope_fakes import FakeConnection
 
 from prm9tool.model.document import ParameterDocument
 from prm9tool.scope import GeneratorSettings, Waveform

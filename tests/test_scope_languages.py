@@ -6,7 +6,7 @@ from __future__ import annotations
 import numpy as np
 import pytest
 from PySide6.QtCore import QEvent
-from scope_fakes import FakeConnection
+from support.scope_fakes import FakeConnection
 
 from prm9tool import i18n
 from prm9tool.model.document import ParameterDocument

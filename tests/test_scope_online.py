@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 import pytest
-from gui_support import E02, emulated, go_online, main_window, session_of
+from support.gui_support import E02, emulated, go_online, main_window, session_of
 
 from prm9tool.catalogue import CATALOGUE
 from prm9tool.errors import AccessDeniedError

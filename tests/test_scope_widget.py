@@ -10,7 +10,7 @@ import pyqtgraph as pg
 import pytest
 from PySide6.QtCore import QCoreApplication, QEvent, Qt
 from PySide6.QtGui import QFontMetrics
-from scope_fakes import FakeConnection
+from support.scope_fakes import FakeConnection
 
 from prm9tool import i18n
 from prm9tool.catalogue.signals import signals_for

@@ -7,7 +7,7 @@ import io
 import time
 
 import pytest
-from waiting import wait_for
+from support.waiting import wait_for
 
 from prm9tool.cli import serve_input
 from prm9tool.device.emulator import EmulatedValve, Fault
@@ -103,8 +103,8 @@ def test_each_emcy_is_told_with_the_error_that_raised_it(valves):
 
 def test_the_serve_log_tells_an_lss_valve_waiting_and_its_assignment(capsys, request):
     import can
-    from canopen_rig import unique_channel
-    from waiting import wait_for
+    from support.canopen_rig import unique_channel
+    from support.waiting import wait_for
 
     from prm9tool.cli import serve
     from prm9tool.device.canlink.bus import CanOptions

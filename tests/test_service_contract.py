@@ -5,7 +5,7 @@ the same result, the same words for the same refusal and the same history record
 from __future__ import annotations
 
 import pytest
-from gui_support import E02, emulator_connection
+from support.gui_support import E02, emulator_connection
 
 import prm9tool
 from prm9tool.cli.main import main
@@ -142,8 +142,8 @@ def test_a_characterization_refuses_while_a_generator_runs_in_the_api_and_the_gu
 @pytest.mark.parametrize("od", ["full", "manual"])
 def test_a_refused_write_has_the_same_words_over_canopen(qtbot, tmp_path, request, capsys, od):
     # the CAN valve, also the one with only the objects the manual lists (no type-key object)
-    from can_link_rig import E04, make_link_rig
-    from reconnect_links import can_connection
+    from support.can_link_rig import E04, make_link_rig
+    from support.reconnect_links import can_connection
 
     rig = make_link_rig(request.node.name, tmp_path, E04, od=od)
     bus = {"can_interface": "virtual", "can_channel": rig.options.channel}

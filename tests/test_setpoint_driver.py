@@ -8,7 +8,7 @@ import threading
 
 import numpy as np
 import pytest
-from waiting import HandClock, wait_for
+from support.waiting import HandClock, wait_for
 
 from prm9tool.catalogue import CATALOGUE
 from prm9tool.device import factory
@@ -39,7 +39,7 @@ def _edges(session, settings: GeneratorSettings, seconds: float):
     first = round(valve.time / CYCLE_S)
     driver = SetpointDriver(session, settings, lambda *_: None)
     driver.start()
-    start = valve._fw.program._start - first  # the waveform's cycle 0 in the capture
+    start = valve.firmware.program._start - first  # the waveform's cycle 0 in the capture
     for _ in range(round(seconds / 0.1)):
         valve.usb_activity()  # the link's traffic, as the driver's keepalive makes it
         valve.advance(0.1)
@@ -70,7 +70,7 @@ def test_the_override_goes_on_with_the_first_value_and_off_at_stop(session):
     assert valve.read(*CATALOGUE["SETPOVR"].key) == 1638  # 10 %
     driver.stop()
     assert valve.read(*CATALOGUE["SETPOVRON"].key) == 0
-    assert valve._fw.program is None
+    assert valve.firmware.program is None
 
 
 def _never(mnemonic: str, exc: Exception) -> None:

@@ -12,7 +12,7 @@ import can
 import pytest
 from hypothesis import given
 from hypothesis import strategies as st
-from trace_rig import DEADLINE_MS, record_commissioning
+from support.trace_rig import DEADLINE_MS, record_commissioning
 
 import prm9tool.trace as trace
 from prm9tool.catalogue import CATALOGUE
@@ -299,7 +299,7 @@ def test_the_cli_refuses_options_that_do_not_fit(argv, problem, capsys):
 
 
 def test_the_cli_records_the_bus_for_a_duration(tmp_path):
-    from canopen_rig import unique_channel
+    from support.canopen_rig import unique_channel
 
     from prm9tool.cli.main import main
 
@@ -345,9 +345,9 @@ def test_the_cli_records_the_bus_for_a_duration(tmp_path):
 def test_a_replay_drives_an_emulated_valve_and_compares_its_answers(golden):
     """The PLC's frames to node 15 drive a fresh E04 valve: its SDO answers are the recorded
     ones, and it ends in DEVICE_MODE_ACTIVE as the recorded valve did."""
-    from canopen_rig import unique_channel
-    from trace_rig import SWITCHES, TYPE_KEYS
-    from waiting import wait_for
+    from support.canopen_rig import unique_channel
+    from support.trace_rig import SWITCHES, TYPE_KEYS
+    from support.waiting import wait_for
 
     from prm9tool.device.canlink.bus import CanOptions
     from prm9tool.device.emulator import EmulatedValve
@@ -376,7 +376,7 @@ def test_a_recording_shares_the_bus_of_a_session_and_sees_what_it_sends(tmp_path
     """The recorder is a listener on the master a CANopen session uses (one bus): the trace
     holds the session's own SDO requests (sent, python-can does not receive them) and the
     valve's answers, decoded to the values the session read."""
-    from can_link_rig import make_link_rig
+    from support.can_link_rig import make_link_rig
 
     from prm9tool.device.canlink.bus import acquire, release
     from prm9tool.device.canlink.session import CanopenSession
@@ -415,7 +415,7 @@ def test_the_api_names_stay_functions_when_their_modules_are_loaded():
 def test_the_cli_replay_reports_answers_that_did_not_come(golden, capsys):
     """Nobody on the bus: the replay sends the master's frames to node 15, waits for each SDO
     answer in vain and reports the missing answers (exit 1)."""
-    from canopen_rig import unique_channel
+    from support.canopen_rig import unique_channel
 
     from prm9tool.cli.main import main
 
@@ -481,7 +481,7 @@ def test_any_frames_decode_without_an_exception_and_every_frame_is_accounted_for
 def test_the_cli_records_beside_list_devices_on_its_bus(tmp_path, request, capsys):
     """``--record`` beside ``--list-devices``: one bus; the trace holds the scan's SDO requests
     (sent by prm9tool) and the valve's answers."""
-    from can_link_rig import make_link_rig
+    from support.can_link_rig import make_link_rig
 
     from prm9tool.cli.main import main
 

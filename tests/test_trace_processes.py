@@ -19,7 +19,7 @@ from test_can_processes import NAMESPACE, _namespace_problem
 import prm9tool.trace as trace
 from prm9tool.trace.events import Kind
 
-DRIVER = Path(__file__).with_name("trace_processes_driver.py")
+DRIVER = Path(__file__).parent / "support" / "trace_processes_driver.py"
 GROUP = "239.74.163.12"
 
 

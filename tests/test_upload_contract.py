@@ -1,7 +1,7 @@
 """The upload contract, one suite over every link (as python-can runs one over every interface).
 
 Each test runs against an emulated valve reached over the emulated USB link, over the hidapi
-backend talking to a fake ``hid`` module (tests/fake_hid, tests/usb_fakes.py), and over
+backend talking to a fake ``hid`` module (tests/support/fake_hid, tests/support/usb_fakes.py), and over
 CANopen on a virtual bus (the ``canopen`` master against the emulated valve's slave), through
 the public API's :class:`~prm9tool.api.valve.Valve`. The contract
 (:mod:`prm9tool.device.session`): write all → read every value back and compare → store, and
@@ -20,8 +20,8 @@ from dataclasses import dataclass
 from pathlib import Path
 
 import pytest
-from can_link_rig import make_link_rig
-from usb_fakes import FakeHid
+from support.can_link_rig import make_link_rig
+from support.usb_fakes import FakeHid
 
 import prm9tool
 from prm9tool.api.valve import Valve
@@ -65,7 +65,7 @@ class Link:
         master writes the old values back and they are in its memory again: the values count,
         not which entries the memory holds."""
         with self.valve.lock:
-            memory = dict(self.valve._fw.nv.values)
+            memory = dict(self.valve.firmware.nv.values)
         variant = self.valve.variant
         return {m: memory.get(m, CATALOGUE[m].default_for(variant)) for m in CHANGES}
 

@@ -7,7 +7,7 @@ import logging
 import threading
 
 import pytest
-from valve_sets import changed_set
+from support.valve_sets import changed_set
 
 from prm9tool.catalogue import CATALOGUE
 from prm9tool.catalogue.typekey import TypeKey

@@ -54,7 +54,7 @@ def test_read_serial_and_an_unknown_object(firmware):
 
 
 def test_long_value_in_a_read_asks_for_a_segmented_read(firmware, valve, monkeypatch):
-    monkeypatch.setitem(valve._fw.od.getters, (0x1008, 0), lambda: "x" * 70)  # name: 70 bytes
+    monkeypatch.setitem(valve.firmware.od.getters, (0x1008, 0), lambda: "x" * 70)  # name: 70 bytes
     answer = decode_response(firmware.handle(encode_request(1, ReadEntries(((0x1008, 0),)))))
     assert answer[2].values == (int(AbortCode.LENGTH_TOO_HIGH),)
 
@@ -187,16 +187,16 @@ def test_a_set_the_catalogue_rejects_is_not_stored(tmp_path):
 def test_the_firmware_listens_to_the_1_ms_task_only_while_it_streams(firmware, valve):
     """Without a listener the compiled kernel passes the 1 ms tasks that change nothing
     itself (fasttick); a USB link that does not stream must not take that away."""
-    listeners = valve._fw.cycle_listeners
+    listeners = valve.firmware.cycle_listeners
     assert listeners == []
     firmware.handle(frame("0a 01 01 00 01 13"))  # stream the supply voltage
-    assert valve._fw.cycle_listeners == [firmware._on_cycle]
+    assert valve.firmware.cycle_listeners == [firmware._on_cycle]
     valve.advance(0.02)
     assert firmware.outbox  # the stream still runs from the 1 ms task
     firmware.handle(frame("0a 02 01 00 01 13"))  # a new stream replaces the old one
-    assert len(valve._fw.cycle_listeners) == 1
+    assert len(valve.firmware.cycle_listeners) == 1
     firmware.handle(frame("0b 03"))  # STREAM_STOP
-    assert valve._fw.cycle_listeners == []
+    assert valve.firmware.cycle_listeners == []
     firmware.handle(frame("0a 04 01 00 01 13"))
     firmware.handle(frame("08 05 62 6f 6f 74"))  # a restart ends the stream too
-    assert valve._fw.cycle_listeners == []
+    assert valve.firmware.cycle_listeners == []

@@ -6,8 +6,8 @@ import sys
 import time
 
 import pytest
-from usb_fakes import FakeHid
-from valve_sets import changed_set
+from support.usb_fakes import FakeHid
+from support.valve_sets import changed_set
 
 from prm9tool.device import factory
 from prm9tool.device.emulator import EmulatedValve

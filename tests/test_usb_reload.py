@@ -5,7 +5,7 @@ from __future__ import annotations
 import threading
 
 import pytest
-from valve_sets import changed_set
+from support.valve_sets import changed_set
 
 from prm9tool.catalogue import CATALOGUE
 from prm9tool.device.emulator import EmulatedValve

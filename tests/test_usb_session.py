@@ -6,7 +6,7 @@ import dataclasses
 import threading
 
 import pytest
-from valve_sets import changed_set
+from support.valve_sets import changed_set
 
 from prm9tool.catalogue import CATALOGUE
 from prm9tool.device.emulator import EmulatedValve, Fault

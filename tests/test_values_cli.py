@@ -9,7 +9,7 @@ import subprocess
 from pathlib import Path
 
 import pytest
-from python_process import run_python
+from support.python_process import run_python
 
 from prm9tool.catalogue import CATALOGUE
 from prm9tool.cli.main import main
@@ -79,7 +79,7 @@ def test_a_value_the_valve_refuses_is_exit_1_and_nothing_is_stored(monkeypatch, 
         assert code == ExitCode.VERIFY_FAILED
         assert "--set DTAMP: 0x6361/1: abort 0x08000022" in capsys.readouterr().err
         assert valve.read(*CATALOGUE["LIMTA"].key) == 1800  # written before, a working value
-        stored = valve._fw.nv.values
+        stored = valve.firmware.nv.values
         assert stored.get("LIMTA", CATALOGUE["LIMTA"].default) == 2400  # nothing stored
     finally:
         factory.forget_emulated_valves()

@@ -33,7 +33,7 @@ from prm9tool.device.emulator import EmulatedValve
 from prm9tool.online.bus_monitor import BusMonitor
 from prm9tool.online.connection import ValveConnection
 from prm9tool.online.lss_commissioning import LssCommissioning
-from prm9tool.views.can_bus_dialog import CanBusDialog
+from prm9tool.views.canbus.bus_dialog import CanBusDialog
 
 CHANNEL = "prm9tool-screenshot"
 

@@ -29,7 +29,7 @@ from prm9tool.model.access import AccessModel
 from prm9tool.model.document import ParameterDocument
 from prm9tool.model.undo import DocumentUndo
 from prm9tool.online.tuning import StepSimulator
-from prm9tool.views.canopen_window import CanopenWindow
+from prm9tool.views.canbus.canopen_window import CanopenWindow
 from prm9tool.views.diagram import DiagramView
 from prm9tool.views.valve.selection import ValveSelectionDialog
 

@@ -283,7 +283,7 @@ class EmulatedValves:
 
 
 EMULATED = EmulatedValves()
-_VALVES = EMULATED.valves  # by serial number (tests/gui_support.py looks valves up here)
+_VALVES = EMULATED.valves  # by serial number (tests/support/gui_support.py looks valves up here)
 
 
 def set_emulator_od(od: str) -> None:

@@ -1,6 +1,6 @@
 """EDS and DCF export of a valve or a parameter set, once for every door.
 
-The window's File → Export DCF (``views/dcf_export.py``), ``--export-dcf`` on the command line
+The window's File → Export DCF (``views/files/dcf_export.py``), ``--export-dcf`` on the command line
 and :meth:`Valve.export_dcf <prm9tool.api.valve.Valve.export_dcf>` write the same file: the
 CiA 306 DCF of :mod:`prm9tool.files.dcf` with the node ID and bit rate the valve runs with
 after power-up (its rotary switches and NODEID/BITRATE, manual table 7-17). No Qt.

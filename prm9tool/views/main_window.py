@@ -26,16 +26,16 @@ from prm9tool.views import prompts
 from prm9tool.views.access_dialog import ChangePasswordDialog, PasswordDialog
 from prm9tool.views.action_state import enabled_actions
 from prm9tool.views.actions import MainActions
-from prm9tool.views.compare_workflow import CompareWorkflow
-from prm9tool.views.dcf_export import DcfExport
+from prm9tool.views.compare.workflow import CompareWorkflow
 from prm9tool.views.emulated_valve import EmulatedValveMenu
-from prm9tool.views.file_workflow import FileWorkflow
+from prm9tool.views.files.dcf_export import DcfExport
+from prm9tool.views.files.workflow import FileWorkflow
 from prm9tool.views.help_dialog import HelpWindow, about_html, open_homepage, show_help_page
 from prm9tool.views.icons import icon
 from prm9tool.views.link_guard import LinkGuard
 from prm9tool.views.page_stack import PageStack
-from prm9tool.views.parameter_view import ParameterListView
-from prm9tool.views.record_actions import RecordActions
+from prm9tool.views.parameters.view import ParameterListView
+from prm9tool.views.record.actions import RecordActions
 from prm9tool.views.status_bar import MainStatusBar
 from prm9tool.views.valve.selection import ValveSelectionDialog
 from prm9tool.views.valve.status import ValveStatusWindow
@@ -71,7 +71,7 @@ class MainWindow(QMainWindow):
         self.files = FileWorkflow(self, doc, undo, settings)
         self.valve = ValveWorkflow(self, doc, undo, connection, self.sync, settings, access)
         self.control = ValveControl(connection, self)
-        self.records = RecordActions(self)
+        self.records = RecordActions(self, self)
         self.compare = CompareWorkflow(
             self, doc, undo, access, connection, self.sync, self.valve, settings
         )
@@ -316,7 +316,7 @@ class MainWindow(QMainWindow):
     def show_canopen_window(self) -> QWidget:
         """Show the CANopen window of a -CA valve."""
         if self.canopen_window is None:
-            from prm9tool.views.canopen_window import CanopenWindow
+            from prm9tool.views.canbus.canopen_window import CanopenWindow
 
             self.canopen_window = CanopenWindow(
                 self.doc, self.connection, self, access=self.access, sync=self.sync
@@ -329,7 +329,7 @@ class MainWindow(QMainWindow):
         """Communication → CAN trace: decode a trace file, record the bus of the CAN bus
         dialog (docs/trace.md)."""
         if self.trace_window is None:
-            from prm9tool.views.can_bus_dialog import saved_bus
+            from prm9tool.views.canbus.bus_dialog import saved_bus
             from prm9tool.views.trace.window import TraceWindow
 
             finder = self.valve.finder

@@ -6,7 +6,7 @@ a serial, a firmware text, a type key in 0x2041, control mode 0x6043 = 2) and th
 misbehaves in one chosen way (:class:`Fault`). :class:`BadLssSlave` is an LSS slave
 (CiA 305) that can acknowledge every request, add stray frames, or answer "inquire node ID"
 with random bytes. Both run a receive thread on their own python-can bus: the ``virtual``
-interface in-process, or ``udp_multicast`` in another process (tests/bad_node_driver.py).
+interface in-process, or ``udp_multicast`` in another process (tests/support/bad_node_driver.py).
 """
 
 from __future__ import annotations

@@ -37,6 +37,7 @@ from dataclasses import dataclass
 from typing import TYPE_CHECKING
 
 from prm9tool.catalogue.canopen_switches import LSS_UNCONFIGURED
+from prm9tool.device.canlink.lss_address import LssAddress
 from prm9tool.device.canlink.lss_errors import (
     CS_CONFIGURE_BIT_TIMING,
     CS_CONFIGURE_NODE_ID,
@@ -47,7 +48,6 @@ from prm9tool.device.canlink.lss_errors import (
     kbit,
     service_problem,
 )
-from prm9tool.device.canlink.sdo import ARGO_HYTOS_VENDOR
 
 if TYPE_CHECKING:
     from prm9tool.device.canlink.bus import CanNetwork
@@ -67,33 +67,6 @@ MAX_DEVICES = 127
 FASTSCAN_FRAMES = 1 + 4 * 33  # a round: the reset step, 32 bits and a confirmation per part
 SCAN_LIMIT_S = 120.0  # a whole scan (127 devices at the slowest step would take far longer)
 ANSWER_S = 0.5  # inquire, configure, store (what canopen's LssMaster waits)
-
-
-@dataclass(frozen=True)
-class LssAddress:
-    """The 128-bit LSS address of a device: its identity object 0x1018/1…4."""
-
-    vendor: int
-    product: int
-    revision: int
-    serial: int
-
-    @property
-    def is_prm9(self) -> bool:
-        """Argo-Hytos' vendor ID 0xE6 (manual §7.6): a PRM9."""
-        return self.vendor == ARGO_HYTOS_VENDOR
-
-    def as_tuple(self) -> tuple[int, int, int, int]:
-        """(vendor, product, revision, serial), the order of the selective switch."""
-        return (self.vendor, self.product, self.revision, self.serial)
-
-    def describe(self) -> str:
-        """``PRM9 (vendor 0xE6), product 0x9, revision 0x10000, serial 4711``."""
-        who = "PRM9" if self.is_prm9 else "not a PRM9"
-        return (
-            f"{who} (vendor 0x{self.vendor:X}), product 0x{self.product:X}, "
-            f"revision 0x{self.revision:X}, serial {self.serial}"
-        )
 
 
 @dataclass

@@ -2,14 +2,10 @@
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING
-
 from prm9tool.catalogue.canopen_switches import LSS_BIT_TIMINGS_KBIT
+from prm9tool.device.canlink.lss_address import LssAddress
 from prm9tool.errors import CommunicationError
 from prm9tool.messages import QT_TRANSLATE_NOOP
-
-if TYPE_CHECKING:
-    from prm9tool.device.canlink.lss import LssAddress
 
 CS_CONFIGURE_NODE_ID, CS_CONFIGURE_BIT_TIMING, CS_STORE = 0x11, 0x13, 0x17
 

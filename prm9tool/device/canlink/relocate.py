@@ -21,8 +21,9 @@ exactly where the valve is, or how to find it.
 from __future__ import annotations
 
 import time
+from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, Protocol
 
 from prm9tool.catalogue.canopen_switches import effective, format_bitrate
 from prm9tool.device.session import NotAvailableError
@@ -32,7 +33,6 @@ from prm9tool.messages import QT_TRANSLATE_NOOP
 if TYPE_CHECKING:
     from prm9tool.device.canlink.bus import CanNetwork, CanOptions
     from prm9tool.device.canlink.sdo import SdoChannel
-    from prm9tool.device.canlink.session import CanopenSession
 
 LSS_POSITION = 1  # node-ID switch: LSS and automatic bit rate (table 7-17)
 SETTINGS = ("SWBAUD", "SWNODE", "NODEID", "BITRATE", "CANTERM")  # effective()'s arguments
@@ -62,7 +62,16 @@ class Whereabouts:
         return f"node {self.node_id}, {rate}"
 
 
-def predict(session: CanopenSession) -> Whereabouts | None:
+class _Settled(Protocol):
+    """What :func:`predict` reads of a CANopen session (``CanopenSession``, which calls it:
+    typed by what it needs, relocate stays below the session)."""
+
+    node_id: int
+
+    def read_many(self, mnemonics: Sequence[str]) -> Mapping[str, int | str]: ...
+
+
+def predict(session: _Settled) -> Whereabouts | None:
     """Where the valve will answer after a restart (None: its objects do not tell)."""
     try:
         values = session.read_many(list(SETTINGS))

@@ -91,6 +91,13 @@ class EmulatedValve(CanopenSide):
         self._stop = threading.Event()
         self.pacer = Pacer(CYCLE_S)
 
+    @property
+    def firmware(self) -> Firmware:
+        """The emulated firmware itself (NV memory, object dictionary, kernel, program): the
+        test hook for what a real valve does not show over its link. Hold :attr:`lock` while
+        touching it from another thread than the paced one."""
+        return self._fw
+
     # --- object dictionary ------------------------------------------------------------
     def read(self, index: int, subindex: int) -> int | str:
         """Read an object; raises SdoAbortError with the CiA 301 abort code."""

@@ -11,7 +11,8 @@ from PySide6.QtGui import QImageWriter
 from PySide6.QtWidgets import QWidget
 
 from prm9tool.scope import write_csv
-from prm9tool.views import file_dialogs, prompts
+from prm9tool.views import prompts
+from prm9tool.views.files import dialogs as file_dialogs
 from prm9tool.views.scope.display import ScopeDisplay
 from prm9tool.views.scope.plot import ScopePlot
 

@@ -28,7 +28,7 @@ from prm9tool.i18n import current_language, format_value
 from prm9tool.messages import Message, localized_number
 from prm9tool.translate import translated
 from prm9tool.views.paged_print import PageFrame, configure_pdf, print_paged
-from prm9tool.views.record import signature_line
+from prm9tool.views.record.document import signature_line
 from prm9tool.views.tuning.plot import COLOURS, Plot, Series, plot_image
 
 translate = QCoreApplication.translate

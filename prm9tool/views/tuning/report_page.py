@@ -21,8 +21,8 @@ from prm9tool.characterize.run import (
 from prm9tool.i18n import format_significant
 from prm9tool.service.history import run_with_history
 from prm9tool.translate import error_text
-from prm9tool.views import file_dialogs
-from prm9tool.views.history_notes import record_report_saved
+from prm9tool.views.files import dialogs as file_dialogs
+from prm9tool.views.history.notes import record_report_saved
 from prm9tool.views.tuning.host import TuningHost, figure_table
 from prm9tool.views.tuning.pages import Page
 from prm9tool.views.tuning.report import figure_label, limit_text, value_short, verdict, write_pdf

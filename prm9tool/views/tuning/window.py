@@ -38,9 +38,10 @@ from prm9tool.online.connection_protocol import StatusView
 from prm9tool.online.tuning_runner import SimulationRunner, TuningRunner, ValveRunner
 from prm9tool.online.valve_control import ValveControl, blocker_text, status_blocker
 from prm9tool.translate import translated
-from prm9tool.views import file_dialogs, prompts
+from prm9tool.views import prompts
+from prm9tool.views.files import dialogs as file_dialogs
 from prm9tool.views.help_dialog import add_context_help
-from prm9tool.views.history_notes import record_online_change, record_tuning_run
+from prm9tool.views.history.notes import record_online_change, record_tuning_run
 from prm9tool.views.scope.start import offer_enable
 from prm9tool.views.tuning.autotune import AutotunePage
 from prm9tool.views.tuning.pages import BodePage, Page

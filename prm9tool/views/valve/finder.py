@@ -56,7 +56,7 @@ class ValveFinder(QObject):
         """Communication → CAN bus: choose the bus and a valve on it, then go online with it."""
         from prm9tool.online.bus_monitor import BusMonitor
         from prm9tool.online.lss_commissioning import LssCommissioning
-        from prm9tool.views.can_bus_dialog import CanBusDialog
+        from prm9tool.views.canbus.bus_dialog import CanBusDialog
 
         def scan(bus: dict[str, object], deliver: Callable[[ListedValves], None]) -> None:
             self._connection.list_devices_async((), deliver, bus)
@@ -125,7 +125,7 @@ class ValveFinder(QObject):
         """Going online with a CANopen valve that does not tell its type key (``--device
         can:N``): ask for the key on its label (until it fits or the user cancels), remember
         it for the serial number and go online again."""
-        from prm9tool.views.can_bus_dialog import ask_type_key
+        from prm9tool.views.canbus.bus_dialog import ask_type_key
 
         while True:
             key, problem = ask_type_key(self._window, serial, told)

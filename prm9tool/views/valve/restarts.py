@@ -108,7 +108,7 @@ class ValveRestarts(QObject):
             return
         bus = getattr(device, "can_bus", None)
         if bus is not None and bus[2]:
-            from prm9tool.views.can_bus_dialog import BITRATE_KEY
+            from prm9tool.views.canbus.bus_dialog import BITRATE_KEY
 
             self._settings.setValue(BITRATE_KEY, bus[2])
         rate = self.tr("{0} kbit/s").format(bus[2] // 1000) if bus and bus[2] else ""

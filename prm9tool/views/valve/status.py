@@ -22,8 +22,8 @@ from PySide6.QtWidgets import (
 from prm9tool.i18n import format_measured
 from prm9tool.online.connection_protocol import StatusConnection, StatusView, ValveIdentity
 from prm9tool.online.valve_control import ValveControl
-from prm9tool.views.commissioning_panel import CommissioningPanel
 from prm9tool.views.emcy import emcy_text
+from prm9tool.views.valve.commissioning import CommissioningPanel
 
 COLOURS = {
     "white": "#f4f4f4",

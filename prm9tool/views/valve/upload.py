@@ -23,7 +23,7 @@ from prm9tool.online.connection_protocol import UploadOutcome
 from prm9tool.online.sync import ValveSync
 from prm9tool.translate import translated
 from prm9tool.views import prompts
-from prm9tool.views.history_policy import may_upload
+from prm9tool.views.history.policy import may_upload
 from prm9tool.views.operation_progress import OperationProgress
 
 
@@ -103,7 +103,7 @@ class ValveUpload(QObject):
 
     def upload_values(self, values: Mapping[str, Raw], purpose: str = "") -> None:
         """Upload exactly ``values`` (write, read back, store), once the history can record
-        it or the user said to go ahead without it (views/history_policy.py); ``purpose``
+        it or the user said to go ahead without it (views/history/policy.py); ``purpose``
         goes into the history record (e.g. ``compare``)."""
         self._pending = dict(values)
         self._purpose = purpose

@@ -3,7 +3,7 @@
 another, and here a ``canopen``-package PLC that commissions both, runs setpoints at 1 kHz SYNC
 and provokes an RPDO-deadline fault on node 10 (its RPDO1 stops). Writes result.json.
 
-    python tests/trace_processes_driver.py OUT_DIR GROUP
+    python tests/support/trace_processes_driver.py OUT_DIR GROUP
 """
 
 from __future__ import annotations

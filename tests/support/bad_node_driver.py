@@ -18,7 +18,7 @@ import sys
 import time
 from pathlib import Path
 
-sys.path.insert(0, str(Path(__file__).parent))
+sys.path.insert(0, str(Path(__file__).resolve().parents[1]))  # tests/: the support package
 
 E04 = "PRM9-06.3Z11/30-24E04S02-CA"
 NODES = (  # one process each
@@ -32,6 +32,7 @@ NODES = (  # one process each
 def serve(group: str, specs: list[str]) -> None:
     """Serve the bad nodes ``specs`` until SIGTERM."""
     import can
+
     from support.bad_node import BadNode, Fault, prm9_objects
 
     bus = can.Bus(interface="udp_multicast", channel=group)

@@ -20,13 +20,13 @@ from pathlib import Path
 
 import can
 import canopen
-from canopen_rig import E02, E04, unique_channel
-from waiting import wait_for
 
 from prm9tool.device.canlink.bus import CanOptions
 from prm9tool.device.emulator import EmulatedValve
 from prm9tool.device.emulator.canopen_slave import CanopenSlave
 from prm9tool.trace.recorder import Recorder
+from support.canopen_rig import E02, E04, unique_channel
+from support.waiting import wait_for
 
 NODES = (10, 15)
 SWITCHES = {10: (6, 2), 15: (6, 3)}  # 500 kbit/s, node 10 / node 15

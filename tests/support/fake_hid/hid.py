@@ -1,7 +1,7 @@
 """Stand-in for hidapi's ``hid`` module in subprocess tests (put this folder on PYTHONPATH).
 
 ``PRM9TOOL_FAKE_HID`` lists the valves, ``;``-separated: ``TYPEKEY,SERIAL[,option=N]...``
-with the options of :class:`usb_fakes.FakeCable` (``unplug_after_out``,
+with the options of :class:`support.usb_fakes.FakeCable` (``unplug_after_out``,
 ``corrupt_reads_after_out``). Each valve appears as ``/dev/hidraw<n>``.
 """
 
@@ -10,9 +10,9 @@ from __future__ import annotations
 import os
 import sys
 
-sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__)))))
 
-from usb_fakes import FakeHid
+from support.usb_fakes import FakeHid
 
 from prm9tool.device.emulator import EmulatedValve
 

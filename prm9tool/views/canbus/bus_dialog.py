@@ -41,9 +41,9 @@ from prm9tool.online.lss_commissioning import LssCommissioning
 from prm9tool.online.trace_recording import BusRecording
 from prm9tool.paths import user_data_dir
 from prm9tool.translate import error_text
-from prm9tool.views.can_bus_lss import BusLssActions
-from prm9tool.views.can_lss_panel import LssPanel
-from prm9tool.views.can_node_text import node_description
+from prm9tool.views.canbus.bus_lss import BusLssActions
+from prm9tool.views.canbus.lss_panel import LssPanel
+from prm9tool.views.canbus.node_text import node_description
 from prm9tool.views.help_dialog import add_context_help
 from prm9tool.views.row_table import row_table
 from prm9tool.views.trace.record_controls import RecordControls
@@ -151,7 +151,7 @@ class CanBusDialog(QDialog):
         rate_row = QHBoxLayout()
         rate_row.addWidget(self.bitrate, 1)
         self._lss = lss
-        self.lss_actions = BusLssActions(self, lss)
+        self.lss_actions = BusLssActions(self, self, lss)
         self.find_rate, self.renumber = self.lss_actions.find_rate, self.lss_actions.renumber
         rate_row.addWidget(self.find_rate)
         form.addRow(self.tr("Bit rate"), rate_row)

@@ -16,8 +16,8 @@ from PySide6.QtWidgets import (
 
 from prm9tool.model.access import AccessModel
 from prm9tool.model.document import ParameterDocument
-from prm9tool.views.parameter_dialog import ParameterEditDialog
-from prm9tool.views.parameter_model import (
+from prm9tool.views.parameters.dialog import ParameterEditDialog
+from prm9tool.views.parameters.model import (
     MNEMONIC_ROLE,
     Column,
     ParameterFilterProxy,

@@ -7,11 +7,11 @@ import itertools
 from dataclasses import dataclass, field
 
 import can
-from canopen_rig import unique_channel
 
 from prm9tool.device.canlink.bus import CanNetwork, CanOptions, acquire, release
 from prm9tool.device.emulator import EmulatedValve
 from prm9tool.device.emulator.canopen_slave import CanopenSlave
+from support.canopen_rig import unique_channel
 
 E04 = "PRM9-06.3Z11/30-24E04S02-CA"
 LSS_SWITCHES = (6, 1)  # interface switch 500 kbit/s, node-ID switch 1 (LSS)

@@ -6,26 +6,51 @@ jobs run off the GUI thread in :class:`~prm9tool.online.lss_commissioning.LssCom
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING
+from typing import Protocol
 
 from PySide6.QtCore import QObject
-from PySide6.QtWidgets import QInputDialog, QPushButton
+from PySide6.QtWidgets import QComboBox, QInputDialog, QLabel, QPushButton, QTableWidget, QWidget
 from shiboken6 import isValid
 
+from prm9tool.online.connection_protocol import ValveListing
 from prm9tool.online.lss_commissioning import FoundRate, LssCommissioning, RateChanged
 from prm9tool.views import prompts
 
-if TYPE_CHECKING:
-    from prm9tool.views.can_bus_dialog import CanBusDialog
+
+class LssHost(Protocol):
+    """What the LSS actions use of the CAN bus dialog (``CanBusDialog``, which holds them:
+    typed by what they need, this module stays below the dialog)."""
+
+    bitrate: QComboBox
+    state: QLabel
+    table: QTableWidget
+
+    @property
+    def entries(self) -> list[ValveListing]: ...
+
+    def bus(self) -> dict[str, object]: ...
+
+    def taken(self) -> set[int]: ...
+
+    def selected_device_id(self) -> str | None: ...
+
+    def search_bus(self) -> None: ...
+
+    def stop_monitor(self) -> None: ...
+
+    def update_ok(self) -> None: ...
+
+    def on_lss_assigned(self, device_id: str) -> None: ...
 
 
 class BusLssActions(QObject):
     """The CAN bus dialog's "Find bit rate" and "Change node ID by LSS…" (off the GUI thread
     in :class:`LssCommissioning`); hidden without one."""
 
-    def __init__(self, dialog: CanBusDialog, lss: LssCommissioning | None) -> None:
-        super().__init__(dialog)
-        self._dialog, self._lss = dialog, lss
+    def __init__(self, dialog: LssHost, widget: QWidget, lss: LssCommissioning | None) -> None:
+        """``widget``: the dialog as a widget (the parent of the questions it asks)."""
+        super().__init__(widget)
+        self._dialog, self._widget, self._lss = dialog, widget, lss
         self.find_rate = QPushButton(self.tr("Find bit rate"))
         self.find_rate.setToolTip(
             self.tr("Listen at each bit rate in listen-only mode (nothing is sent)")
@@ -60,7 +85,7 @@ class BusLssActions(QObject):
 
     def _on_rate_found(self, found: FoundRate) -> None:
         d = self._dialog
-        if not isValid(d):
+        if not isValid(self._widget):
             return
         self.find_rate.setEnabled(True)
         d.bitrate.setCurrentIndex(max(d.bitrate.findData(found.bitrate), 0))
@@ -73,7 +98,7 @@ class BusLssActions(QObject):
 
     def _on_lss_failed(self, job: str, reason: str) -> None:
         d = self._dialog
-        if isValid(d) and job in ("bitrate", "renumber", "rate"):
+        if isValid(self._widget) and job in ("bitrate", "renumber", "rate"):
             self.find_rate.setEnabled(True)
             self.change_rate.setEnabled(True)
             d.state.setText(reason)
@@ -90,7 +115,7 @@ class BusLssActions(QObject):
         old, taken = int(device_id.removeprefix("can:")), d.taken()
         proposal = next((n for n in range(1, 128) if n not in taken), 1)
         new, ok = QInputDialog.getInt(
-            d,
+            self._widget,
             self.tr("Change node ID by LSS"),
             self.tr("New node ID for serial {0}, now {1} (1…127):").format(entry.serial, old),
             proposal,
@@ -107,7 +132,7 @@ class BusLssActions(QObject):
             )
             return
         answer = prompts.ask(
-            d,
+            self._widget,
             prompts.Icon.Warning,
             self.tr("Change node ID by LSS"),
             self.tr(
@@ -136,7 +161,7 @@ class BusLssActions(QObject):
         old = int(str(d.bitrate.currentData()))
         rates = [d.bitrate.itemText(i) for i in range(d.bitrate.count())]
         text, ok = QInputDialog.getItem(
-            d,
+            self._widget,
             self.tr("Change bit rate by LSS"),
             self.tr("New bit rate of the bus:"),
             rates,
@@ -149,7 +174,7 @@ class BusLssActions(QObject):
         if new == old:
             return
         answer = prompts.ask(
-            d,
+            self._widget,
             prompts.Icon.Warning,
             self.tr("Change bit rate by LSS"),
             self.tr(
@@ -171,7 +196,7 @@ class BusLssActions(QObject):
 
     def _on_rate_changed(self, done: RateChanged) -> None:
         d = self._dialog
-        if not isValid(d):
+        if not isValid(self._widget):
             return
         self.change_rate.setEnabled(True)
         d.bitrate.setCurrentIndex(max(d.bitrate.findData(done.bitrate), 0))

@@ -26,14 +26,15 @@ from prm9tool.model.undo import DocumentUndo
 from prm9tool.online.connection import ValveConnection
 from prm9tool.online.sync import ValveSync
 from prm9tool.translate import error_text
-from prm9tool.views import file_dialogs, prompts
-from prm9tool.views.file_reader import read_in_background
-from prm9tool.views.file_workflow import FOLDER_KEY
-from prm9tool.views.history_notes import record_online_change
+from prm9tool.views import prompts
+from prm9tool.views.files import dialogs as file_dialogs
+from prm9tool.views.files.reader import read_in_background
+from prm9tool.views.files.workflow import FOLDER_KEY
+from prm9tool.views.history.notes import record_online_change
 from prm9tool.views.valve.workflow import ValveWorkflow
 
 if TYPE_CHECKING:  # the compare view is imported when first shown, not at start-up
-    from prm9tool.views.compare_view import CompareDialog
+    from prm9tool.views.compare.view import CompareDialog
 
 COMPARE_VIEW = "compare_view"  # the download behind Valve → Compare with valve
 
@@ -84,7 +85,7 @@ class CompareWorkflow(QObject):
     ) -> CompareDialog:
         """The compare view of ``comparison``: side 0 the document, side 1 the valve (or,
         not ``valve``, a file)."""
-        from prm9tool.views.compare_view import DOCUMENT, VALVE, CompareDialog
+        from prm9tool.views.compare.view import DOCUMENT, VALVE, CompareDialog
 
         roles = {0: DOCUMENT, 1: VALVE} if valve else {0: DOCUMENT}
         dialog = CompareDialog(comparison, targets, self._access.level, self._window, roles)
@@ -162,7 +163,7 @@ class CompareWorkflow(QObject):
         valve = self._valve_side(values)
         comparison = Comparison((self._document(), valve), self._factory(valve.type_key))
         comparison.choose_all(1)  # the valve's values unless the user picks the document's
-        from prm9tool.views.compare_view import BOTH
+        from prm9tool.views.compare.view import BOTH
 
         dialog = self._run(comparison, (BOTH,))
         if dialog.result() != QDialog.DialogCode.Accepted or dialog.applied is None:
@@ -182,7 +183,7 @@ class CompareWorkflow(QObject):
     # --- Valve → History ----------------------------------------------------------------------
     def show_history(self) -> QDialog | None:
         """The history of the connected valve (or of a serial number typed in)."""
-        from prm9tool.views.history_window import HistoryWindow
+        from prm9tool.views.history.window import HistoryWindow
 
         hook = self._connection.history
         if hook is None:

@@ -15,13 +15,13 @@ from dataclasses import dataclass, field
 from pathlib import Path
 
 import can
-from canopen_rig import BOOT_S, unique_channel
 
 from prm9tool.catalogue import CATALOGUE
 from prm9tool.device.canlink.bus import CanOptions
 from prm9tool.device.emulator import EmulatedValve
 from prm9tool.device.emulator.canopen_slave import CanopenSlave
 from prm9tool.errors import AbortCode, SdoAbortError
+from support.canopen_rig import BOOT_S, unique_channel
 
 E02 = "PRM9-06.3Z11/30-24E02S02-CA"
 E04 = "PRM9-06.3Z11/30-24E04S02-CA"
@@ -71,7 +71,7 @@ class LinkRig:
         """The valve's non-volatile memory (what it holds after a power cycle; entries not
         stored yet are at their factory defaults)."""
         with self.valve.lock:
-            return dict(self.valve._fw.nv.values)
+            return dict(self.valve.firmware.nv.values)
 
     def working(self, mnemonic: str) -> int | str:
         """The value the valve works with now (RAM)."""

@@ -1,6 +1,6 @@
 """The CANopen window (manual §8.7, figure 8-17): rotary switches, terminator, node ID.
 
-On top the two switch tables (:mod:`prm9tool.views.canopen_tables`, marks "a", "c", "d").
+On top the two switch tables (:mod:`prm9tool.views.canbus.canopen_tables`, marks "a", "c", "d").
 Below: the terminator on/off choice (mark "b") and the node ID
 1…127 used when the node-ID switch is at 0 (mark "e"), plus the software bit rate.
 
@@ -42,7 +42,7 @@ from prm9tool.online.connection_protocol import ParameterConnection
 from prm9tool.online.sync import ValveSync
 from prm9tool.service.polling import variant_of
 from prm9tool.translate import error_text
-from prm9tool.views.canopen_tables import SwitchTables
+from prm9tool.views.canbus.canopen_tables import SwitchTables
 from prm9tool.views.diagram.colours import toned_style
 from prm9tool.views.diagram.dialogs.fields import not_on_enter
 from prm9tool.views.help_dialog import add_context_help

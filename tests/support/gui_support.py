@@ -75,7 +75,7 @@ def _modal_dialogs() -> list[type]:
     from PySide6.QtPrintSupport import QPrintDialog
 
     from prm9tool.views.access_dialog import ChangePasswordDialog, PasswordDialog
-    from prm9tool.views.can_bus_dialog import CanBusDialog
+    from prm9tool.views.canbus.bus_dialog import CanBusDialog
     from prm9tool.views.hid_dialog import EmulatorDialog, HidConfigurationDialog
     from prm9tool.views.online_dialogs import OnlineDiffDialog, RestartDialog
     from prm9tool.views.valve.selection import ValveSelectionDialog

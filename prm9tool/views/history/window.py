@@ -37,9 +37,10 @@ from prm9tool.history.chain import other_type
 from prm9tool.history.recorder import Recorder
 from prm9tool.i18n import format_number, format_value
 from prm9tool.translate import error_text
-from prm9tool.views import file_dialogs, prompts
+from prm9tool.views import prompts
+from prm9tool.views.files import dialogs as file_dialogs
 from prm9tool.views.help_dialog import add_context_help
-from prm9tool.views.history_details import (
+from prm9tool.views.history.details import (
     MAX_FIGURES,
     RecordDetailsDialog,
     failing_figures,
@@ -397,7 +398,7 @@ class HistoryWindow(QDialog):
         return self._compare_records(self.selected())
 
     def _compare_records(self, records: list[Record]) -> CompareDialogLike | None:
-        from prm9tool.views.compare_view import DOCUMENT, VALVE, CompareDialog
+        from prm9tool.views.compare.view import DOCUMENT, VALVE, CompareDialog
 
         sides = []
         for record in records:
@@ -416,7 +417,7 @@ class HistoryWindow(QDialog):
     def _on_compare_applied(self, applied: object, serial: int) -> None:
         """Ticked values of two records: into the document (one undo step, its type key kept)
         or into the valve they came from (a transactional upload)."""
-        from prm9tool.views.compare_view import DOCUMENT
+        from prm9tool.views.compare.view import DOCUMENT
 
         if not isinstance(applied, tuple) or not applied[1]:
             return
@@ -450,7 +451,7 @@ class HistoryWindow(QDialog):
 
     def edit_settings(self) -> None:
         """Choose the database and the policy; the new database is used from now on."""
-        from prm9tool.views.history_settings import HistorySettingsDialog
+        from prm9tool.views.history.settings import HistorySettingsDialog
 
         dialog = HistorySettingsDialog(self)
         if dialog.exec() == QDialog.DialogCode.Accepted:

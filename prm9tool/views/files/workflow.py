@@ -14,8 +14,9 @@ from prm9tool.errors import FileFormatError, FileProblem
 from prm9tool.model.document import ParameterDocument
 from prm9tool.model.undo import DocumentUndo
 from prm9tool.translate import translated
-from prm9tool.views import file_dialogs, prompts
-from prm9tool.views.file_reader import read_in_background
+from prm9tool.views import prompts
+from prm9tool.views.files import dialogs as file_dialogs
+from prm9tool.views.files.reader import read_in_background
 
 MAX_RECENT = 8
 MAX_LISTED_PROBLEMS = 200  # a message box lists at most this many, then says how many more

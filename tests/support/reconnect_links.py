@@ -2,7 +2,7 @@
 link: a main window online with an emulated valve over USB (its cable pulled and plugged back
 through Valve → Emulated valve) or over CANopen — an emulated -CA valve in real time on a
 private virtual bus whose CAN cable is pulled (it leaves the bus, runs on, and joins again), or
-whose master's adapter goes bus-off and recovers (tests/bus_off_rig.py).
+whose master's adapter goes bus-off and recovers (tests/support/bus_off_rig.py).
 """
 
 from __future__ import annotations
@@ -14,14 +14,14 @@ from pathlib import Path
 from typing import Any
 
 import pytest
-from bus_off_rig import Adapter, install
-from can_link_rig import LinkRig, make_link_rig
-from gui_support import E02, E02_CA, emulated, go_online, main_window, session_of
 
 from prm9tool.catalogue import CATALOGUE
 from prm9tool.device import factory
 from prm9tool.online.connection import ValveConnection
 from prm9tool.service.valve_listing import default_lister
+from support.bus_off_rig import Adapter, install
+from support.can_link_rig import LinkRig, make_link_rig
+from support.gui_support import E02, E02_CA, emulated, go_online, main_window, session_of
 
 TIMEOUT = 10_000
 USB_SERIAL = 4301

@@ -14,7 +14,8 @@ from PySide6.QtWidgets import QWidget
 
 from prm9tool.model.document import ParameterDocument
 from prm9tool.service.export import SETTINGS, write_dcf
-from prm9tool.views import file_dialogs, prompts
+from prm9tool.views import prompts
+from prm9tool.views.files import dialogs as file_dialogs
 
 
 class DcfExport(QObject):

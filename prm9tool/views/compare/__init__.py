@@ -1,0 +1,1 @@
+"""Comparing parameter sets: the comparison view and the workflow that opens it."""

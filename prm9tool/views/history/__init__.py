@@ -1,0 +1,1 @@
+"""The valve history window: records, details, notes, retention and the database settings."""
