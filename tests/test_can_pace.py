@@ -194,3 +194,24 @@ def test_above_the_sweeps_end_cannot_confirm_a_maximum_or_a_minimum_beyond_it():
     assert above.passed is True
     assert Figure("b", "b", 100.0, "Hz", Limit(150.0, None), above=True).passed is False
     assert Figure("b", "b", 100.0, "Hz", Limit(None, 200.0), above=True).passed is False
+
+
+def test_a_sweep_a_busy_pc_cut_below_the_profiles_minimum_is_refused_not_failed():
+    """Issue 34 item 9, met again at a real screen: the Tuning window's end-of-line test of a
+    healthy valve said FAIL "−3 dB above 3.43 Hz" (limit ≥ 15 Hz) because a busy PC held the
+    setpoint and the sweep was used only up to 3.43 Hz. That decides nothing: refused."""
+    from dataclasses import replace
+
+    from prm9tool.characterize.run import refuse_undecided
+
+    info = RigInfo(E02 + "-CA", 1, "1.0", "CANopen node 10", 1000.0)
+    cut = replace(_first_order(300.0, 1000.0, 4.0, 3.43), limited_to_hz=3.43, held_s=0.016)
+    c = Characterization(info, DEFAULT, "2026-11-26", {}, bode=cut)
+    c.figures = figures(c)
+    with pytest.raises(LinkTooSlowError, match=r"used only up to 3\.\d+ Hz.*minimum 15 Hz"):
+        refuse_undecided(c)
+    # the same cut without a hold (the link's own rate limit) stays a verdict
+    c = Characterization(info, DEFAULT, "2026-11-26", {}, bode=replace(cut, held_s=0.0))
+    c.figures = figures(c)
+    refuse_undecided(c)
+    assert not c.passed

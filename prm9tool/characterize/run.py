@@ -31,7 +31,7 @@ from prm9tool.characterize.procedures import (
     static_test,
     step_test,
 )
-from prm9tool.characterize.rig import Rig, RigInfo
+from prm9tool.characterize.rig import LinkTooSlowError, Rig, RigInfo
 from prm9tool.messages import QT_TRANSLATE_NOOP, Message
 
 Progress = Callable[[str], None]
@@ -165,8 +165,27 @@ def characterize(rig: Rig, profile: Profile, progress: Progress | None = None) -
         else:
             result.flow = flow_test(rig, profile.flow_amplitude_pct, 0.0, profile.flow_duration_s)
     result.figures = figures(result)
+    refuse_undecided(result)
     result.wall_s = time.perf_counter() - started
     return result
+
+
+def refuse_undecided(c: Characterization) -> None:
+    """Raise LinkTooSlowError when a busy PC cut the sweep short (a setpoint held too long)
+    below a minimum the profile asks: "above 3.43 Hz" against "≥ 15 Hz" says nothing about the
+    valve, and failing it would be a wrong verdict on a healthy valve (issue 34 item 9)."""
+    bode = c.bode
+    if bode is None or bode.held_s <= 0.0:
+        return
+    for f in c.figures:
+        low = f.limit.minimum if f.limit is not None else None
+        if f.above and low is not None and f.value < low:
+            raise LinkTooSlowError(
+                f"this PC held the valve's setpoint {bode.held_s * 1000:.0f} ms during the "
+                f"sweep, so it was used only up to {f.value:.3g} Hz: the {f.label} cannot be "
+                f"judged against its minimum {low:g} {f.unit}; nothing was judged — run the "
+                "test again when the PC is less busy"
+            )
 
 
 def figures(c: Characterization) -> list[Figure]:
