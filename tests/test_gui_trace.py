@@ -133,3 +133,9 @@ def test_communication_can_trace_opens_the_window_with_the_dialogs_recording(qtb
         assert shown.recording._recording is window.valve.finder.recording
         window.commands["can_trace"].trigger()
         assert window.trace_window is shown  # one window, raised again
+
+
+def test_the_window_fits_the_screen(window):
+    free = window.screen().availableGeometry()
+    assert window.width() <= free.width()
+    assert window.height() <= free.height()
