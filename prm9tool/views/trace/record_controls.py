@@ -7,7 +7,6 @@ from collections.abc import Callable
 
 from PySide6.QtCore import QTimer
 from PySide6.QtWidgets import (
-    QFileDialog,
     QHBoxLayout,
     QLabel,
     QPushButton,
@@ -16,6 +15,7 @@ from PySide6.QtWidgets import (
 )
 
 from prm9tool.online.trace_recording import BusRecording
+from prm9tool.views import file_dialogs
 
 TRACE_FILTER = "*.asc *.blf *.trc *.log"
 REFRESH_MS = 500
@@ -62,7 +62,7 @@ class RecordControls(QWidget):
         self._show_buttons()
 
     def _on_record_clicked(self) -> None:
-        path, _filter = QFileDialog.getSaveFileName(
+        path, _filter = file_dialogs.save_file_name(
             self, self.tr("Record the CAN bus"), "trace.asc",
             self.tr("CAN traces ({0})").format(TRACE_FILTER),
         )  # fmt: skip
