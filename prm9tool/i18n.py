@@ -64,8 +64,12 @@ def format_measured(value: float, unit: str) -> str:
 
 
 def format_significant(value: float, digits: int) -> str:
-    """``value`` to ``digits`` significant digits (``%g``) as the program language writes it."""
-    return localized_number(f"{value:.{digits}g}", current_language())
+    """``value`` to ``digits`` significant digits (``%g``) as the program language writes it;
+    a large number written out (4999 to three digits is ``5000``, not ``5e+03``)."""
+    text = f"{value:.{digits}g}"
+    if "e+" in text and abs(value) < 1e15:
+        text = f"{float(text):.0f}"
+    return localized_number(text, current_language())
 
 
 def format_value(param: Parameter, raw: int | str) -> str:

@@ -531,3 +531,25 @@ def test_both_parameter_editors_show_limta_capped_by_curnorm(qtbot, setup):
     assert field.range == capped
     assert field.toolTip() == f"LIMTA: {capped}"
     assert edit._labels["range"].text() == capped
+
+
+def test_both_editors_refuse_a_limta_beyond_the_range_they_show(qtbot, setup):
+    """9999 mA on a valve with CURNORM 2600 mA: the refusal names the range the dialog shows
+    (0 … 2600 mA), not the catalogue's 0 … 4000 mA that contradicts it."""
+    from prm9tool.views.parameters.dialog import ParameterEditDialog
+
+    s = setup(E02)
+    curnorm = int(s.doc.value("CURNORM"))
+    expected = f"LIMTA: 9999 mA is outside the allowed range 0 … {curnorm} mA"
+    edit = ParameterEditDialog(s.doc, s.ctx.access, "LIMTA")
+    qtbot.addWidget(edit)
+    edit.set_text("9999")
+    edit._buttons.accepted.emit()
+    assert expected in edit.error_label.text().replace("\u00a0", " ")
+    dialog = open_dialog(qtbot, s, "current_limit")
+    field = dialog.fields["LIMTA"]
+    field.setText("9999")
+    field.editingFinished.emit()
+    assert str(curnorm) in dialog.error_label.text()
+    assert "4000" not in dialog.error_label.text()
+    assert s.doc.value("LIMTA") != 9999

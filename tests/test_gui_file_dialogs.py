@@ -68,3 +68,45 @@ def test_no_filter_is_left_on_the_application(qtbot, tmp_path):
     assert not isinstance(
         view.itemDelegateForColumn(file_dialogs.DATE_COLUMN), file_dialogs.DateDelegate
     )
+
+
+def test_a_bare_file_name_is_suggested_in_the_home_folder(monkeypatch, tmp_path):
+    """A new user at a real screen: Save the test report and Record… opened in the folder
+    prm9tool was started from (the program's own source tree there), not in the home folder
+    as Save does; a bare name or none now starts in the home folder, a path is kept."""
+    from pathlib import Path
+
+    home = tmp_path / "home"
+    monkeypatch.setattr(Path, "home", classmethod(lambda cls: home))
+    asked: list[str] = []
+
+    def fake(_parent, _caption, folder="", _filter="", *args, **kwargs):
+        asked.append(folder)
+        return "", ""
+
+    monkeypatch.setattr(QFileDialog, "getSaveFileName", fake)
+    monkeypatch.setattr(QFileDialog, "getOpenFileName", fake)
+    file_dialogs.save_file_name(None, "Save the test report", "1001-report.pdf", "PDF (*.pdf)")
+    file_dialogs.open_file_name(None, "Open a trace", "", "*.asc")
+    file_dialogs.save_file_name(None, "Save", str(tmp_path / "kept.prm"), "*.prm")
+    assert asked == [str(home / "1001-report.pdf"), str(home), str(tmp_path / "kept.prm")]
+
+
+def test_record_suggests_its_trace_in_the_home_folder(monkeypatch, qtbot, tmp_path):
+    from pathlib import Path
+
+    from prm9tool.online.trace_recording import BusRecording
+    from prm9tool.views.trace.record_controls import RecordControls
+
+    home = tmp_path / "home"
+    monkeypatch.setattr(Path, "home", classmethod(lambda cls: home))
+    asked: list[str] = []
+    monkeypatch.setattr(
+        QFileDialog,
+        "getSaveFileName",
+        lambda _p, _c, folder, *a, **k: asked.append(folder) or ("", ""),
+    )
+    controls = RecordControls(BusRecording(), dict)
+    qtbot.addWidget(controls)
+    controls.record.click()
+    assert asked == [str(home / "trace.asc")]

@@ -556,3 +556,10 @@ def test_the_differ_dialog_shows_a_choice_with_its_meaning_as_the_list(window, l
     assert document.startswith(on) and valve.startswith(off)
     window.doc.set_value("SETPLINON", -1)
     assert document == format_value(window.doc, CATALOGUE["SETPLINON"], live=False)
+
+
+def test_first_window_fits_the_screen(window):
+    """A first start on a small screen (here offscreen's) keeps the status bar on the screen."""
+    free = window.screen().availableGeometry()
+    assert window.width() <= free.width()
+    assert window.height() <= free.height()

@@ -577,3 +577,21 @@ def test_a_document_confirmed_for_another_valve_is_not_asked_about_again(
     go_online(qtbot, window, f"{E02}:4713")
     _settled(qtbot, window)
     assert len(answers.asked) == 1  # the same valve again: no question
+
+
+def test_a_second_factory_reset_still_says_it_was_done(qtbot, window, answers, monkeypatch):
+    """With the valve's backup kept from before, the reset said nothing at all: the user at the
+    screen saw the dialog close and did not know whether the values were restored."""
+    _online_with_limta_2000(qtbot, window, 4107)
+
+    def confirm(dialog):
+        dialog.confirm.setChecked(True)
+        return QDialog.DialogCode.Accepted
+
+    monkeypatch.setattr(RestartDialog, "exec", confirm)
+    for _ in range(2):
+        window.status.showMessage("")
+        with qtbot.waitSignal(window.connection.operation_finished, timeout=TIMEOUT):
+            window.commands["restore_factory"].trigger()
+        assert "Factory values restored" in window.status.currentMessage()
+    assert len(backup.existing_backups(4107)) == 1

@@ -133,3 +133,22 @@ def test_communication_can_trace_opens_the_window_with_the_dialogs_recording(qtb
         assert shown.recording._recording is window.valve.finder.recording
         window.commands["can_trace"].trigger()
         assert window.trace_window is shown  # one window, raised again
+
+
+def test_the_window_fits_the_screen(window):
+    free = window.screen().availableGeometry()
+    assert window.width() <= free.width()
+    assert window.height() <= free.height()
+
+
+def test_a_long_failure_wraps_and_does_not_widen_the_window(qtbot, window):
+    """Record… without an adapter: the reason (a long line of python-can's) grew the trace window
+    beyond a 1366-pixel screen; it wraps in the window's width and is whole in the tip."""
+    window.show()
+    width = window.width()
+    reason = "cannot open the CAN interface 'socketcan', channel 'can0': " + "x" * 40 + " y" * 200
+    window.recording._recording.failed.emit(reason)
+    qtbot.wait(10)  # the layout follows in the event loop
+    assert window.width() == width
+    assert window.minimumSizeHint().width() <= width
+    assert reason in window.recording.state.toolTip()

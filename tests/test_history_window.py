@@ -189,3 +189,27 @@ def test_every_operation_the_history_records_has_a_label(qtbot, recorder):
     labels = _window(qtbot, recorder, 1).model._operations()
     assert [op for op in OPERATIONS if op not in labels] == []
     assert labels["twin"] == "Twin fitted (--fit-twin)"
+
+
+@pytest.mark.parametrize("lang", ["de", "cs"])
+def test_every_column_title_is_whole_in_german_and_czech(qtbot, recorder, lang):
+    """German at a real screen: the last title read "tzer, Station, Verbin" (the stretched last
+    column got only the room left); each column is now as wide as its title and cells."""
+    from prm9tool import i18n
+
+    values = factory_values(E02_CA)
+    recorder.record(Valve(1001, E02_CA), "download", "ok", values, {"purpose": "compare"})
+    i18n.set_language(lang)
+    try:
+        window = HistoryWindow(recorder, 1001, lambda *_a: None, lambda *_a: True, None, None)
+        qtbot.addWidget(window)
+        window.show()
+        qtbot.waitUntil(lambda: window.model.rowCount() == 1, timeout=TIMEOUT)
+        qtbot.wait(10)  # the header follows in the event loop
+        header = window.table.horizontalHeader()
+        metrics = header.fontMetrics()
+        for column in range(window.model.columnCount()):
+            title = str(window.model.headerData(column, header.orientation()))
+            assert header.sectionSize(column) >= metrics.horizontalAdvance(title), title
+    finally:
+        i18n.set_language("en")

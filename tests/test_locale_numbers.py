@@ -242,3 +242,12 @@ def test_a_decimal_comma_in_a_file_is_an_error_with_its_line(qapp, language):
     assert [(p.line, p.message) for p in result.errors] == [
         (number, "POSKP: '0,9' is not a number: the decimals follow a point (0.9)")
     ]
+
+
+@pytest.mark.parametrize(
+    ("value", "digits", "shown"),
+    [(4999.0, 3, "5000"), (123456.0, 3, "123000"), (0.000012345, 3, "1.23e-05"), (2.5, 3, "2.5")],
+)
+def test_significant_digits_are_written_out_for_large_numbers(language, value, digits, shown):
+    language("en")
+    assert i18n.format_significant(value, digits) == shown

@@ -6,6 +6,7 @@ from __future__ import annotations
 import numpy as np
 import pytest
 from PySide6.QtCore import QEvent
+from PySide6.QtWidgets import QComboBox
 from support.scope_fakes import FakeConnection
 
 from prm9tool import i18n
@@ -38,13 +39,25 @@ def _switch(qtbot, scope, language):
 
 @pytest.mark.parametrize("language", ["de", "cs"])
 def test_the_drop_downs_are_as_wide_as_their_texts_after_a_switch(qtbot, scope, language):
-    """ "Rollen (ohne Trig", "Náběžná hra": their width was that of the English texts."""
+    """ "Rollen (ohne Trig", "Náběžná hra", the generator's "Rechtec": their width was that
+    of the English texts."""
     _switch(qtbot, scope, language)
     c = scope.controls
-    for combo in (c.mode, c.edge, c.rate, c.time_window):
+    for combo in (c.mode, c.edge, c.rate, c.time_window, scope.generator_panel.waveform):
         metrics = combo.fontMetrics()
         widest = max(metrics.horizontalAdvance(combo.itemText(i)) for i in range(combo.count()))
         assert combo.width() > widest + 16, (combo.currentText(), combo.width(), widest)
+
+
+@pytest.mark.parametrize("language", ["de", "cs"])
+def test_the_waveform_is_as_wide_as_a_new_drop_down_of_its_texts(qtbot, scope, language):
+    """ "Rechtec" on a real screen: the waveform kept the width of "Square" after the switch."""
+    _switch(qtbot, scope, language)
+    combo = scope.generator_panel.waveform
+    fresh = QComboBox()
+    qtbot.addWidget(fresh)
+    fresh.addItems([combo.itemText(i) for i in range(combo.count())])
+    assert combo.width() >= fresh.sizeHint().width(), [combo.itemText(i) for i in range(3)]
 
 
 def test_the_interval_takes_the_decimal_comma_of_german(qtbot, scope):

@@ -657,3 +657,17 @@ def test_the_status_shows_the_rate_the_link_really_delivers(scope, conn):
     assert scope.status.text() == (
         "Recording at 500 Hz of the 1000 Hz asked for: 500 samples lost on the link."
     )
+
+
+def test_a_rate_near_the_one_asked_for_is_written_out_not_in_powers_of_ten(scope, conn):
+    """One sample lost of 5000 at 5 kHz: the link delivers 4999 Hz, shown as 5000 (three digits),
+    not as "5e+03", which a user at the screen read as a fault."""
+    scope.preselect("position_actual")
+    scope.controls.rate.setCurrentIndex(scope.controls.rate.findData(5000))
+    scope.start()
+    conn.samples_received.emit(_step_block(5000, 100, channels=1))
+    conn.samples_lost = 1
+    scope._update_status()
+    assert scope.status.text() == (
+        "Recording at 5000 Hz of the 5000 Hz asked for: 1 samples lost on the link."
+    )

@@ -500,3 +500,18 @@ def test_the_cli_records_beside_list_devices_on_its_bus(tmp_path, request, capsy
     assert any(
         e.text.startswith("SDO read (expedited) 0x1000/0") and e.node == 10 for e in decoded.events
     )
+
+
+def test_a_bus_that_cannot_be_opened_leaves_the_chosen_file_as_it_was(tmp_path):
+    """Record… on a PC without the adapter: no empty trace is left, an existing file is kept."""
+    from prm9tool.device.canlink.bus import CanOptions
+    from prm9tool.errors import CanAdapterError
+    from prm9tool.trace.recorder import Recorder
+
+    fresh, kept = tmp_path / "new.asc", tmp_path / "kept.asc"
+    kept.write_text("an earlier trace\n", encoding="utf-8")
+    for path in (fresh, kept):
+        with pytest.raises(CanAdapterError):
+            Recorder(path, CanOptions("no-such-interface", "x", None)).start()
+    assert not fresh.exists()
+    assert kept.read_text(encoding="utf-8") == "an earlier trace\n"

@@ -5120,6 +5120,10 @@ Nejprve přepněte na Expert (Náhled → Úroveň oprávnění), nebo zkoušku 
             <source>Factory values restored; the valve's previous parameters are in {0}</source>
             <translation>Tovární nastavení obnoveno; dosavadní parametry ventilu jsou v {0}</translation>
         </message>
+        <message>
+            <source>Factory values restored; the valve's backup from before is kept</source>
+            <translation>Tovární nastavení obnoveno; dřívější záloha ventilu zůstává zachována</translation>
+        </message>
     </context>
     <context>
         <name>ValveSelectionDialog</name>

@@ -5098,6 +5098,10 @@ Wechseln Sie zuerst zu Experte (Ansicht → Berechtigungsstufe) oder starten Sie
             <source>Factory values restored; the valve's previous parameters are in {0}</source>
             <translation>Werkseinstellungen wiederhergestellt; die bisherigen Parameter des Ventils sind in {0}</translation>
         </message>
+        <message>
+            <source>Factory values restored; the valve's backup from before is kept</source>
+            <translation>Werkseinstellungen wiederhergestellt; die frühere Sicherung des Ventils bleibt erhalten</translation>
+        </message>
     </context>
     <context>
         <name>ValveSelectionDialog</name>

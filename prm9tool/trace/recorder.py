@@ -74,20 +74,22 @@ class Recorder:
 
     # --- start and stop --------------------------------------------------------------------
     def start(self) -> Recorder:
-        """Open the file and the bus (shared with every session on it) and start recording."""
+        """Open the bus (shared with every session on it), then the file, and start recording;
+        a bus that cannot be opened leaves the file as it was (no empty trace, nothing lost)."""
         import can
 
+        shared = acquire(self.options)
         try:
             self._logger = can.Logger(str(self.path))
         except (OSError, ValueError) as exc:
+            release(shared)
             raise FileFormatError(
                 str(self.path), [FileProblem(0, f"cannot write the trace: {exc}")]
             ) from exc
-        try:
-            self._shared = acquire(self.options)
-        except Exception:
-            self._logger.stop()
+        except BaseException:
+            release(shared)
             raise
+        self._shared = shared
         self._writer = threading.Thread(target=self._write, name="trace recorder", daemon=True)
         self._writer.start()
         self.started_at = time.monotonic()

@@ -36,6 +36,7 @@ from prm9tool.views.link_guard import LinkGuard
 from prm9tool.views.page_stack import PageStack
 from prm9tool.views.parameters.view import ParameterListView
 from prm9tool.views.record.actions import RecordActions
+from prm9tool.views.screen_fit import fit_to_screen
 from prm9tool.views.status_bar import MainStatusBar
 from prm9tool.views.valve.selection import ValveSelectionDialog
 from prm9tool.views.valve.status import ValveStatusWindow
@@ -373,7 +374,7 @@ class MainWindow(QMainWindow):
         if isinstance(geometry, QByteArray) and not geometry.isEmpty():
             self.restoreGeometry(geometry)
         else:
-            self.resize(1200, 800)
+            fit_to_screen(self, 1200, 800)
         state = self.settings.value("window/state")
         if isinstance(state, QByteArray):
             self.restoreState(state)

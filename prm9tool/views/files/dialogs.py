@@ -17,6 +17,7 @@ from __future__ import annotations
 
 from collections.abc import Iterator
 from contextlib import contextmanager
+from pathlib import Path
 from typing import Any
 
 from PySide6.QtCore import (
@@ -89,13 +90,34 @@ def dates_in_program_language() -> Iterator[None]:
             app.removeEventFilter(watcher)
 
 
+def _from_home(args: tuple[Any, ...], kwargs: dict[str, Any]) -> tuple[Any, ...]:
+    """The dialog's folder argument (the third, or ``dir``): a bare file name or none starts in
+    the home folder, not in the folder prm9tool was started from; a path is kept."""
+    if "dir" in kwargs:
+        kwargs["dir"] = _in_home(kwargs["dir"])
+        return args
+    if len(args) >= 3:
+        return (*args[:2], _in_home(args[2]), *args[3:])
+    return args
+
+
+def _in_home(folder: Any) -> Any:
+    if not isinstance(folder, str) or Path(folder).is_absolute():
+        return folder
+    return str(Path.home() / folder) if folder else str(Path.home())
+
+
 def open_file_name(*args: Any, **kwargs: Any) -> tuple[str, str]:
-    """``QFileDialog.getOpenFileName(...)``, dates in the program language."""
+    """``QFileDialog.getOpenFileName(...)``, dates in the program language; a relative folder
+    is taken from the home folder."""
+    args = _from_home(args, kwargs)
     with dates_in_program_language():
         return QFileDialog.getOpenFileName(*args, **kwargs)
 
 
 def save_file_name(*args: Any, **kwargs: Any) -> tuple[str, str]:
-    """``QFileDialog.getSaveFileName(...)``, dates in the program language."""
+    """``QFileDialog.getSaveFileName(...)``, dates in the program language; a suggested bare
+    file name is put in the home folder."""
+    args = _from_home(args, kwargs)
     with dates_in_program_language():
         return QFileDialog.getSaveFileName(*args, **kwargs)

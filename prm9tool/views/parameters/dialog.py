@@ -26,7 +26,7 @@ from prm9tool.errors import AccessDeniedError, ValueRangeError
 from prm9tool.i18n import ambiguous_number, current_language, decimal_point, format_value, text
 from prm9tool.model.access import AccessModel
 from prm9tool.model.document import ParameterDocument, Raw
-from prm9tool.model.editing import apply_edit, linked_mnemonics, range_text
+from prm9tool.model.editing import allowed_range, apply_edit, linked_mnemonics, range_text
 from prm9tool.translate import error_text, translated
 from prm9tool.views.diagram.colours import toned_style
 
@@ -188,7 +188,7 @@ class ParameterEditDialog(QDialog):
                     self.param.mnemonic,
                     entered.strip(),
                     unit,
-                    range_text(self.param, None, unit=False),
+                    capped_range(self.param, self._doc),
                 )
             )
         return raw
@@ -215,3 +215,9 @@ class ParameterEditDialog(QDialog):
     def _clear_error(self) -> None:
         self._error = None
         self.error_label.hide()
+
+
+def capped_range(param: Parameter, doc: ParameterDocument) -> str:
+    """``0 … 2600`` for LIMTA under CURNORM 2600 mA: the range the dialog shows, without unit."""
+    low, high, _cap = allowed_range(param, doc)
+    return f"{format_value(param, low)} … {format_value(param, high)}"

@@ -134,6 +134,7 @@ class GeneratorPanel(QWidget):
         super().__init__(parent)
         low, high = setpoint_limits()
         self.waveform = QComboBox()
+        self.waveform.setSizeAdjustPolicy(QComboBox.SizeAdjustPolicy.AdjustToContents)  # "Rechteck"
         for waveform in Waveform:
             self.waveform.addItem("", waveform)
         self.amplitude, self.offset, self.period = (QDoubleSpinBox() for _ in range(3))

@@ -6,9 +6,16 @@ from __future__ import annotations
 from collections.abc import Callable
 
 from PySide6.QtCore import QTimer
-from PySide6.QtWidgets import QFileDialog, QHBoxLayout, QLabel, QPushButton, QWidget
+from PySide6.QtWidgets import (
+    QHBoxLayout,
+    QLabel,
+    QPushButton,
+    QSizePolicy,
+    QWidget,
+)
 
 from prm9tool.online.trace_recording import BusRecording
+from prm9tool.views.files import dialogs as file_dialogs
 
 TRACE_FILTER = "*.asc *.blf *.trc *.log"
 REFRESH_MS = 500
@@ -29,7 +36,9 @@ class RecordControls(QWidget):
         self.record = QPushButton(self.tr("Record…"))
         self.record.setToolTip(self.tr("Record every frame of the CAN bus into a trace file"))
         self.stop = QPushButton(self.tr("Stop recording"))
-        self.state = QLabel()
+        self.state = QLabel()  # wraps: a failure's reason is long, and widened the window
+        self.state.setWordWrap(True)
+        self.state.setSizePolicy(QSizePolicy.Policy.Ignored, QSizePolicy.Policy.Preferred)
         self.record.clicked.connect(self._on_record_clicked)
         self.stop.clicked.connect(recording.stop)
         recording.started.connect(lambda _p: self._show())
@@ -53,7 +62,7 @@ class RecordControls(QWidget):
         self._show_buttons()
 
     def _on_record_clicked(self) -> None:
-        path, _filter = QFileDialog.getSaveFileName(
+        path, _filter = file_dialogs.save_file_name(
             self, self.tr("Record the CAN bus"), "trace.asc",
             self.tr("CAN traces ({0})").format(TRACE_FILTER),
         )  # fmt: skip
@@ -79,5 +88,7 @@ class RecordControls(QWidget):
         self._show_buttons()
 
     def _on_recording_failed(self, reason: str) -> None:
-        self.state.setText(self.tr("Not recording: {0}").format(reason))
+        message = self.tr("Not recording: {0}").format(reason)
+        self.state.setText(message)
+        self.state.setToolTip(message)
         self._show_buttons()

@@ -32,6 +32,7 @@ from prm9tool.online.trace_recording import BusRecording
 from prm9tool.trace.events import Kind, Trace
 from prm9tool.translate import error_text
 from prm9tool.views.localized_axis import LocalizedAxis
+from prm9tool.views.screen_fit import fit_to_screen
 from prm9tool.views.trace.model import ALL, NO_NODE, EventTableModel, Series, pdo_series
 from prm9tool.views.trace.record_controls import TRACE_FILTER, RecordControls
 
@@ -95,7 +96,7 @@ class TraceWindow(QWidget):
         self.recording = RecordControls(recording, bus, self)  # the bus chosen last
         self._build_layout()
         self._fill_filters()
-        self.resize(1200, 800)
+        fit_to_screen(self, 1200, 800)
 
     def _build_layout(self) -> None:
         bar = QHBoxLayout()

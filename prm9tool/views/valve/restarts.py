@@ -128,6 +128,8 @@ class ValveRestarts(QObject):
                     "Factory values restored; the valve's previous parameters are in {0}"
                 ).format(result.backup)
             )
+        else:  # its backup was kept from before: still say it was done
+            self._post(self.tr("Factory values restored; the valve's backup from before is kept"))
 
 
 @dataclass(frozen=True)
