@@ -110,7 +110,10 @@ def test_characterize_over_usb_with_a_paced_valve(usb_valve, tmp_path, capsys):
     # issue 34 item 9: a busy PC measured 11.9 Hz (the valve's is ~30 Hz) and passed; the
     # figure is now right, or known only to lie above where the sweep was usable, and said so
     if any("sweep usable up to" in note for note in report["notes"]):
-        assert bandwidth["above"] or bandwidth["value"] is None, bandwidth
+        # known only to lie above where the sweep was usable, or found below that point: then
+        # it is the valve's (~30 Hz), not the 11.9 Hz a held setpoint made of it
+        if bandwidth["value"] is not None and not bandwidth["above"]:
+            assert 15 < bandwidth["value"] < 100, bandwidth
     else:
         assert code == ExitCode.OK, err
         assert 15 < bandwidth["value"] < 100, bandwidth
