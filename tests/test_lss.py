@@ -204,7 +204,7 @@ def test_a_failed_store_is_named_and_the_valve_keeps_no_node_id(rig, monkeypatch
     def broken(node_id: int, bit_timing: int | None) -> None:
         raise OSError("EEPROM write failed")
 
-    monkeypatch.setattr(valve, "lss_store", broken)
+    monkeypatch.setattr(valve.canopen, "lss_store", broken)
     rig.slaves[0].lss._host.store = broken
     with pytest.raises(LssFailedError) as caught:
         LssMasterLink(rig.shared).assign(ADDRESS_4711, 21)

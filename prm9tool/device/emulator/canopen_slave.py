@@ -28,7 +28,7 @@ from prm9tool.device.emulator.canopen_watch import TimingWatches
 from prm9tool.device.records import NmtState
 
 if TYPE_CHECKING:
-    from prm9tool.device.emulator.valve import EmulatedValve
+    from prm9tool.device.emulator.valve_canopen import SlaveValve
 
 log = logging.getLogger(__name__)
 
@@ -51,7 +51,7 @@ CONFIG_POLL_MS = 10  # PDO communication parameters are re-read every 10 ms
 class CanopenSlave:
     """CiA 301 NMT slave, SDO server, 2 RPDO + 2 TPDO, SYNC consumer, heartbeat, EMCY."""
 
-    def __init__(self, valve: EmulatedValve, bus: can.BusABC, receive: bool = True) -> None:
+    def __init__(self, valve: SlaveValve, bus: can.BusABC, receive: bool = True) -> None:
         """``receive``: a receive thread of its own on ``bus``; False when a
         :class:`~.canopen_hub.SharedBus` hands it the frames (many valves on one bus)."""
         self._valve = valve
@@ -82,7 +82,7 @@ class CanopenSlave:
             valve.add_cycle_listener(self._on_cycle)
             valve.add_error_listener(self._on_error)
             valve.add_restart_listener(self._on_restart)
-            valve.set_nmt_handler(self._on_local_nmt)
+            valve.canopen.set_nmt_handler(self._on_local_nmt)
         self._rx_stop = threading.Event()
         self._rx_thread: threading.Thread | None = None
         if receive:
@@ -105,7 +105,7 @@ class CanopenSlave:
         with self._valve.lock:
             self._closed = True
             self.state = NmtState.OFF
-            self._valve.set_nmt_handler(None)
+            self._valve.canopen.set_nmt_handler(None)
 
     def _on_local_nmt(self, command: int) -> None:
         """An NMT command from the valve's USB side: as if the master sent it to this node."""
@@ -142,7 +142,7 @@ class CanopenSlave:
             return
         self.state = state
         self._sdo.reset()
-        self._valve.nmt_event(NMT_EVENTS[state])
+        self._valve.canopen.nmt_event(NMT_EVENTS[state])
         if state is NmtState.OPERATIONAL:
             self._watches.disarm()
             for channel in (*self._rpdos, *self._tpdos):
@@ -160,7 +160,7 @@ class CanopenSlave:
         if command == NmtCommand.START:
             self._watch_errors.clear()  # the "operational" event clears their errors
         if command == NmtCommand.START and self.state is NmtState.OPERATIONAL:
-            self._valve.nmt_event("operational")  # confirms; clears a communication error
+            self._valve.canopen.nmt_event("operational")  # confirms; clears a communication error
         elif command == NmtCommand.START:
             self._enter(NmtState.OPERATIONAL)
         elif command == NmtCommand.STOP:
@@ -169,13 +169,13 @@ class CanopenSlave:
             self._enter(NmtState.PRE_OPERATIONAL)
         elif command == NmtCommand.RESET_NODE:
             self.state = NmtState.INITIALISING
-            self._valve.nmt_event("reset_node")  # restarts the valve -> _on_restart
+            self._valve.canopen.nmt_event("reset_node")  # restarts the valve -> _on_restart
         elif command == NmtCommand.RESET_COMMUNICATION:
             self.state = NmtState.INITIALISING
-            self._valve.nmt_event("reset_comm")
+            self._valve.canopen.nmt_event("reset_comm")
             pending = self.lss.reset_communication() if self.lss is not None else None
             if pending is not None:  # CiA 305: the pending node ID becomes active now
-                self._valve.lss_assign(pending)
+                self._valve.canopen.lss_assign(pending)
                 self.node_id = pending
             self._boot_up()
 
@@ -300,14 +300,14 @@ class CanopenSlave:
 
     def _on_watch_event(self, event: str) -> None:
         self._watch_errors.add(event)
-        self._valve.nmt_event(event)
+        self._valve.canopen.nmt_event(event)
 
     def _watch_error_gone(self, error: str, event: str) -> None:
         """The frame a watch missed came again: its error's cause is gone (the fault can be
         reset, CiA 408); NMT start clears it too."""
         if error in self._watch_errors:
             self._watch_errors.discard(error)
-            self._valve.nmt_event(event)
+            self._valve.canopen.nmt_event(event)
 
     def _heartbeat_ms(self) -> int:
         return int(self._valve.read(HEARTBEAT_TIME, 0))
@@ -332,13 +332,13 @@ class CanopenSlave:
         """CiA 301: EMCY 8210, 0x1001 bit 4 and a 0x1003 entry, through the valve's error
         bookkeeping like every other error (the EMCY comes from :meth:`_on_error`)."""
         self._length_error = True
-        self._valve.nmt_event("rpdo_length_error")
+        self._valve.canopen.nmt_event("rpdo_length_error")
 
     def _rpdo_length_ok(self) -> None:
         """An RPDO of the right length ends the 8210 error (reset EMCY after the display hold)."""
         if self._length_error:
             self._length_error = False
-            self._valve.nmt_event("rpdo_length_ok")
+            self._valve.canopen.nmt_event("rpdo_length_ok")
 
     # --- LSS (CiA 305) --------------------------------------------------------------------
     def _lss_host(self) -> LssHost:
@@ -348,7 +348,7 @@ class CanopenSlave:
             active_node_id=lambda: self.node_id,
             send=lambda data: self._send(LSS_RESPONSE, data),
             boot_with=self._lss_boot,
-            store=valve.lss_store,
+            store=valve.canopen.lss_store,
             activate_bit_timing=self._lss_activate_bit_timing,
         )
 
@@ -358,27 +358,27 @@ class CanopenSlave:
 
     def _lss_boot(self, node_id: int) -> None:
         """A node ID for a valve that had none: NMT initialisation with it (boot-up)."""
-        self._valve.lss_assign(node_id)
+        self._valve.canopen.lss_assign(node_id)
         self.node_id = node_id
         if not self._valve.status().booting:
             self._boot_up()
 
     def _lss_activate_bit_timing(self, index: int, delay_ms: int) -> None:
         """CiA 305: silent for the switch delay, then at the new rate, silent once more."""
-        self._valve.lss_bit_timing(index)
+        self._valve.canopen.lss_bit_timing(index)
         self._silent_until_ms = self._now_ms + 2 * delay_ms
 
     # --- SDO access ------------------------------------------------------------------------
     def _sdo_read(self, index: int, subindex: int) -> bytes:
         if index in (0x1600, 0x1A00) and subindex == 2:
-            self._valve.can_read_bytes(index, subindex)  # existence and access check
+            self._valve.canopen.can_read_bytes(index, subindex)  # existence and access check
             entry_index, entry_sub, bits = mapping(self._valve, index)[subindex - 1]
             return struct.pack("<I", (entry_index << 16) | (entry_sub << 8) | bits)
-        return self._valve.can_read_bytes(index, subindex)
+        return self._valve.canopen.can_read_bytes(index, subindex)
 
     def _sdo_write(self, index: int, subindex: int, data: bytes) -> None:
         check_comm_write(index, subindex, data, self.state)
-        self._valve.can_write_bytes(index, subindex, data)
+        self._valve.canopen.can_write_bytes(index, subindex, data)
         if 0x1000 <= index < 0x2000:
             self._load_config()
             if index == HEARTBEAT_TIME:

@@ -20,10 +20,10 @@ OPEN_LOAD_MIN_V = 1.0  # on-state open-load check only above 1 V average at the 
 OPEN_LOAD_MA = 10.0  # ... where a connected coil carries far more than 10 mA (assumption)
 
 if TYPE_CHECKING:
-    from prm9tool.device.emulator.firmware import Firmware
+    from prm9tool.device.emulator.fwstate import FirmwareState
 
 
-def static_conditions(fw: Firmware) -> dict[str, tuple[bool, float]]:
+def static_conditions(fw: FirmwareState) -> dict[str, tuple[bool, float]]:
     """Conditions that only inputs, parameters or injected faults change (with their delays).
 
     Evaluated when those change; :func:`conditions` adds the dynamic ones every 1 ms.
@@ -35,7 +35,7 @@ def static_conditions(fw: Firmware) -> dict[str, tuple[bool, float]]:
     }
 
 
-def static_alarm(fw: Firmware) -> bool:
+def static_alarm(fw: FirmwareState) -> bool:
     """True if the 1 ms task must evaluate the condition table.
 
     That is when a static condition or the supply is raised, or when the plant has a cut
@@ -53,7 +53,7 @@ def static_alarm(fw: Firmware) -> bool:
     )
 
 
-def conditions(fw: Firmware) -> dict[str, tuple[bool, float]]:
+def conditions(fw: FirmwareState) -> dict[str, tuple[bool, float]]:
     """Every raw condition with its detection delay (static ones as last evaluated)."""
     c = fw.fw
     ia, ib = fw.loop.current_ma
@@ -78,7 +78,7 @@ def conditions(fw: Firmware) -> dict[str, tuple[bool, float]]:
     return result
 
 
-def _open_load(fw: Firmware, coil: int) -> bool:
+def _open_load(fw: FirmwareState, coil: int) -> bool:
     """Open-load diagnostic of output stage ``coil`` (0 = A, 1 = B).
 
     On-state (the stage applies at least OPEN_LOAD_MIN_V on average): no current flows. Off-state
@@ -91,14 +91,14 @@ def _open_load(fw: Firmware, coil: int) -> bool:
     return loop.coil_open[coil]
 
 
-def _overcurrent(fw: Firmware, current_ma: float, key: str, fault: Fault) -> bool:
+def _overcurrent(fw: FirmwareState, current_ma: float, key: str, fault: Fault) -> bool:
     """Comparator on the coil current; once tripped, the stage diagnostic keeps seeing the short."""
     if current_ma > fw.fw.overcurrent_ma:
         return True
     return fw.faults.is_present(key) and fault in fw.injected
 
 
-def _setpoint_error(fw: Firmware) -> bool:
+def _setpoint_error(fw: FirmwareState) -> bool:
     if loop_inputs.digital_setpoint(fw) or fw.value("SETPOVRON"):
         return False
     kind = INPUT_TYPES.get(fw.value("AINSETP"))
@@ -107,7 +107,7 @@ def _setpoint_error(fw: Firmware) -> bool:
     return kind.signal_error(loop_inputs.setpoint_electrical(fw), fw.supply, fw.fw)
 
 
-def _sensor_error(fw: Firmware) -> bool:
+def _sensor_error(fw: FirmwareState) -> bool:
     if fw.variant.config is not Config.E04:
         return False
     if Fault.SENSOR_BREAK in fw.injected:
@@ -118,7 +118,7 @@ def _sensor_error(fw: Firmware) -> bool:
     return kind.signal_error(fw.inputs["sensor"], fw.supply, fw.fw)
 
 
-def _supply_error(fw: Firmware) -> bool:
+def _supply_error(fw: FirmwareState) -> bool:
     c = fw.fw
     v = fw.supply
     if fw.faults.is_present("supply"):
@@ -127,7 +127,7 @@ def _supply_error(fw: Firmware) -> bool:
     return not c.supply_min_v <= v <= c.supply_max_v
 
 
-def _temperature_error(fw: Firmware) -> bool:
+def _temperature_error(fw: FirmwareState) -> bool:
     c = fw.fw
     limit = c.temp_error_c
     if fw.faults.is_present("temperature"):
@@ -135,7 +135,7 @@ def _temperature_error(fw: Firmware) -> bool:
     return fw.temperature > limit
 
 
-def _monitoring(fw: Firmware) -> bool:
+def _monitoring(fw: FirmwareState) -> bool:
     """|0x6350| beyond 0x6353, counted in DEVICE_MODE_ACTIVE; kept until the deviation is back.
 
     While the monitoring error holds the spool centred the demand value keeps following the

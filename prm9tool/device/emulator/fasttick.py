@@ -13,16 +13,17 @@ from __future__ import annotations
 
 import math
 from array import array
-from typing import TYPE_CHECKING, cast
+from typing import TYPE_CHECKING, Protocol, cast
 
-from prm9tool.device.emulator import config, detect, override, thermal
+import numpy as np
+
+from prm9tool.device.emulator import config, detect, thermal
 from prm9tool.device.emulator.constants import CYCLE_S, TICK_CYCLES
 from prm9tool.device.emulator.states import Fault
 from prm9tool.device.records import DeviceState
 
 if TYPE_CHECKING:
-    from prm9tool.device.emulator.ckernel import CompiledLoop
-    from prm9tool.device.emulator.firmware import Firmware
+    from prm9tool.device.emulator.fwstate import FirmwareState
 
 MAX_DEADLINES = 16  # _ckernel.c: room for detection delays and display holds
 MAX_TICKS = 1 << 40  # no limit: the batch's length bounds it
@@ -45,14 +46,24 @@ CONDITION_BITS = (  # detect.conditions' keys in the C kernel's bit order
 _FAULTED = (DeviceState.FAULT, DeviceState.FAULT_HOLD)
 
 
-def compiled_batch(fw: Firmware, cycles: int, span: int) -> tuple[int, int]:
+class Batches(Protocol):
+    """The compiled loop (:class:`.ckernel.CompiledLoop`) as these batches drive it."""
+
+    def prepare(self) -> None: ...
+    def cycles(
+        self, n: int, countdown: int, tick: array | None, program: np.ndarray | None
+    ) -> tuple[int, int, int]: ...
+    def write_back(self) -> None: ...
+
+
+def compiled_batch(fw: FirmwareState, cycles: int, span: int) -> tuple[int, int]:
     """Run up to ``cycles`` cycles on the compiled loop: (cycles run, cycles to the next 1 ms
     task; 0 = it is due). The override program's values go in cycle by cycle."""
-    gen = cast("CompiledLoop", fw.gen)
+    gen = cast("Batches", fw.gen)
     n = min(cycles, span)
     program = None
     if fw.program is not None and fw.override_on:
-        program = override.program_rows(fw, cycles)
+        program = program_rows(fw, cycles)
         n = len(program)
     tick = parameters(fw) if n > fw.tick_countdown else None
     gen.prepare()
@@ -62,11 +73,11 @@ def compiled_batch(fw: Firmware, cycles: int, span: int) -> tuple[int, int]:
         fw.ticks += ticks
         commit(fw, cast("array", tick))
     if program is not None:
-        override.program_ran(fw, program[n - 1])
+        program_ran(fw, program[n - 1])
     return n, countdown
 
 
-def parameters(fw: Firmware) -> array | None:
+def parameters(fw: FirmwareState) -> array | None:
     """The C kernel's tick parameters, or None if the next 1 ms task may do something."""
     faults = fw.faults
     state = fw.sm.state
@@ -159,7 +170,7 @@ def parameters(fw: Firmware) -> array | None:
     )
 
 
-def commit(fw: Firmware, tick: array) -> None:
+def commit(fw: FirmwareState, tick: array) -> None:
     """After the kernel passed 1 ms tasks: the thermal model's state and reading as they left it.
 
     (The reading reaches the loop as :meth:`.firmware.Firmware.tick` hands it on.)
@@ -169,4 +180,31 @@ def commit(fw: Firmware, tick: array) -> None:
     if temperature != fw.temperature:
         fw.temperature = temperature
         fw.loop.temperature_c = temperature
+        fw.loop.inputs_version += 1
+
+
+def program_rows(fw: FirmwareState, cycles: int) -> np.ndarray:
+    """The static setpoint chain of the override program's next cycles, for the compiled loop.
+
+    The value of this cycle is applied already (``Firmware._apply_program``); the compiled loop
+    takes it and the following ones cycle by cycle, instead of one batch per value.
+    """
+    program = fw.program
+    assert program is not None
+    raw = program.upcoming(fw.cycles, cycles)
+    version = fw.loop.version  # a parameter write rebuilds the coefficients: a new version
+    if program.chain is None or program.chain[0] != version:
+        program.chain = (version, config.setpoint_chain(fw.variant, fw.value))
+    rows = config.static_setpoint_array(program.chain[1], raw, fw.setp_curve)
+    return np.ascontiguousarray(rows)
+
+
+def program_ran(fw: FirmwareState, row: np.ndarray) -> None:
+    """SETPOVR and the setpoint chain ← the last cycle's, as ``Firmware._apply_program`` sets."""
+    value = int(row[0])
+    if fw.od.values.get(fw.setpovr_key) != value:
+        fw.od.values[fw.setpovr_key] = value
+        signals = (float(row[0]), float(row[1]), float(row[2]), float(row[3]))
+        fw.loop.static_signals = signals
+        fw.loop.target = signals[3]
         fw.loop.inputs_version += 1

@@ -13,10 +13,10 @@ from prm9tool.device.emulator.inputs import CANOPEN_TYPE, INPUT_TYPES
 from prm9tool.device.emulator.states import Fault
 
 if TYPE_CHECKING:
-    from prm9tool.device.emulator.firmware import Firmware
+    from prm9tool.device.emulator.fwstate import FirmwareState
 
 
-def refresh_sensor(fw: Firmware, supply: float) -> None:
+def refresh_sensor(fw: FirmwareState, supply: float) -> None:
     """The external sensor's value (or its broken-wire value) into the loop's mailbox."""
     loop = fw.loop
     kind = INPUT_TYPES.get(fw.value("SENSTYPE"))
@@ -31,19 +31,19 @@ def refresh_sensor(fw: Firmware, supply: float) -> None:
     )
 
 
-def digital_setpoint(fw: Firmware) -> bool:
+def digital_setpoint(fw: FirmwareState) -> bool:
     """True if the setpoint comes from the object dictionary (0x6300/0x6380)."""
     return fw.can_enabled or fw.value("AINSETP") == CANOPEN_TYPE
 
 
-def setpoint_electrical(fw: Firmware) -> float:
+def setpoint_electrical(fw: FirmwareState) -> float:
     """The analog setpoint input as the A/D converter sees it (0 with a cut wire)."""
     if Fault.SETPOINT_WIRE_BREAK in fw.injected:
         return 0.0
     return fw.inputs["setpoint"]
 
 
-def raw_setpoint(fw: Firmware, supply: float) -> float:
+def raw_setpoint(fw: FirmwareState, supply: float) -> float:
     """The setpoint before polarity: override, object dictionary or analog input."""
     if fw.value("SETPOVRON"):
         return float(fw.value("SETPOVR"))

@@ -10,15 +10,11 @@ time. It takes effect while SETPOVRON = 1, like a value written over the link.
 from __future__ import annotations
 
 from collections.abc import Callable
-from typing import TYPE_CHECKING
 
 import numpy as np
 
 from prm9tool.device.emulator import config
 from prm9tool.device.emulator.constants import CYCLE_S
-
-if TYPE_CHECKING:
-    from prm9tool.device.emulator.firmware import Firmware
 
 Source = Callable[[np.ndarray], np.ndarray]
 BLOCK_CYCLES = 250  # the source is evaluated 50 ms ahead at a time
@@ -60,30 +56,3 @@ class OverrideProgram:
             raise ValueError(f"setpoint source returned shape {values.shape}")
         self._first, self._values = k, values
         self._changes = np.flatnonzero(np.diff(values)) + 1
-
-
-def program_rows(fw: Firmware, cycles: int) -> np.ndarray:
-    """The static setpoint chain of the override program's next cycles, for the compiled loop.
-
-    The value of this cycle is applied already (``Firmware._apply_program``); the compiled loop
-    takes it and the following ones cycle by cycle, instead of one batch per value.
-    """
-    program = fw.program
-    assert program is not None
-    raw = program.upcoming(fw.cycles, cycles)
-    version = fw.loop.version  # a parameter write rebuilds the coefficients: a new version
-    if program.chain is None or program.chain[0] != version:
-        program.chain = (version, config.setpoint_chain(fw.variant, fw.value))
-    rows = config.static_setpoint_array(program.chain[1], raw, fw.setp_curve)
-    return np.ascontiguousarray(rows)
-
-
-def program_ran(fw: Firmware, row: np.ndarray) -> None:
-    """SETPOVR and the setpoint chain ← the last cycle's, as ``Firmware._apply_program`` sets."""
-    value = int(row[0])
-    if fw.od.values.get(fw.setpovr_key) != value:
-        fw.od.values[fw.setpovr_key] = value
-        signals = (float(row[0]), float(row[1]), float(row[2]), float(row[3]))
-        fw.loop.static_signals = signals
-        fw.loop.target = signals[3]
-        fw.loop.inputs_version += 1

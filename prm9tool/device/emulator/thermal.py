@@ -14,13 +14,13 @@ from prm9tool.device.emulator import config
 from prm9tool.device.emulator.states import Fault
 
 if TYPE_CHECKING:
-    from prm9tool.device.emulator.firmware import Firmware
+    from prm9tool.device.emulator.fwstate import FirmwareState
 
 THERMAL_TICKS = 10  # the thermal model runs every 10 ms (time constant: minutes)
 COIL_REFRESH_K = 0.5  # coil resistance re-computed when the model moved this much
 
 
-def step(fw: Firmware, dt: float) -> None:
+def step(fw: FirmwareState, dt: float) -> None:
     """Advance the model by ``dt`` seconds and update the temperature reading."""
     ia, ib = fw.loop.current_ma
     plant = fw.plant
@@ -36,7 +36,7 @@ def step(fw: Firmware, dt: float) -> None:
         fw.config_dirty = True
 
 
-def update_reading(fw: Firmware) -> None:
+def update_reading(fw: FirmwareState) -> None:
     """The electronics temperature reading, °C (an injected over-temperature forces it)."""
     if Fault.OVER_TEMPERATURE in fw.injected:
         fw.temperature = fw.fw.injected_temperature_c
@@ -44,13 +44,13 @@ def update_reading(fw: Firmware) -> None:
         fw.temperature = fw.inputs["ambient_temperature"] + fw.temperature_rise
 
 
-def warning_after(fw: Firmware) -> bool:
+def warning_after(fw: FirmwareState) -> bool:
     """The temperature warning (> 70 °C, manual table 5-1, with hysteresis) at the reading."""
     c = fw.fw
     temp = fw.temperature
     return temp > c.temp_warning_c or (fw.warning and temp > c.temp_warning_c - c.temp_hysteresis_c)
 
 
-def update_warning(fw: Firmware) -> None:
+def update_warning(fw: FirmwareState) -> None:
     """Temperature warning (> 70 °C, manual table 5-1) with hysteresis."""
     fw.warning = warning_after(fw)

@@ -36,6 +36,7 @@ from prm9tool.errors import AccessDeniedError, ValueRangeError
 if TYPE_CHECKING:
     import can
 
+    from prm9tool.catalogue.error_kinds import ErrorKind
     from prm9tool.device.emulator.canopen_slave import CanopenSlave
 
 INPUT_NAMES = (
@@ -49,11 +50,12 @@ INPUT_NAMES = (
 )
 
 
-class EmulatedValve(CanopenSide):
+class EmulatedValve:
     """An emulated PRM9 valve: firmware, control loop, plant, faults, LEDs and NV memory.
 
     Every public method takes :attr:`lock`; the paced thread holds it for one batch of at most
-    10 ms of simulated time, so callers wait at most that long.
+    10 ms of simulated time, so callers wait at most that long. Its CANopen side (SDO access,
+    LSS, NMT: what its CANopen slave uses) is the part :attr:`canopen`.
     """
 
     CYCLE_S = CYCLE_S
@@ -85,7 +87,7 @@ class EmulatedValve(CanopenSide):
         )
         self._capture = Capture(self._fw.loop)
         self._restart_listeners: list[Callable[[], None]] = []
-        self._nmt_handler: Callable[[int], None] | None = None
+        self.canopen = CanopenSide(self.lock, self._fw, od, self.restart)
         self._thread: threading.Thread | None = None
         self._grouped = False  # paced by a PacedGroup's thread
         self._stop = threading.Event()
@@ -144,6 +146,59 @@ class EmulatedValve(CanopenSide):
             self._fw.power_up()
             for listener in self._restart_listeners:
                 listener()
+
+    # --- listeners (the CANopen slave's and the USB firmware's hooks) -------------------
+    def add_cycle_listener(self, fn: Callable[[float], None]) -> None:
+        """``fn(sim_time)`` every 1 ms of simulated time (loop thread, lock held)."""
+        with self.lock:  # a new list: a listener may add or remove one while they are called
+            self._fw.cycle_listeners = [*self._fw.cycle_listeners, fn]
+
+    def remove_cycle_listener(self, fn: Callable[[float], None]) -> None:
+        """Stop calling ``fn`` (no error if it is not registered). Without listeners, the
+        compiled kernel may pass the 1 ms tasks that change nothing itself (fasttick)."""
+        with self.lock:
+            self._fw.cycle_listeners = [f for f in self._fw.cycle_listeners if f != fn]
+
+    def add_error_listener(self, fn: Callable[[int, int], None]) -> None:
+        """``fn(emcy_code, error_register)`` on every change of the active error set."""
+        with self.lock:
+            self._fw.faults.listeners.append(fn)
+
+    def add_error_cause_listener(self, fn: Callable[[int, int, ErrorKind | None], None]) -> None:
+        """``fn(emcy_code, error_register, kind)`` with each EMCY: ``kind`` is the error that
+        raised it (its ``text`` names the cause: several share 8100h), None when all cleared."""
+        with self.lock:
+            self._fw.faults.cause_listeners.append(fn)
+
+    def add_restart_listener(self, fn: Callable[[], None]) -> None:
+        """``fn()`` after every power cycle."""
+        with self.lock:
+            self._restart_listeners.append(fn)
+
+    # --- CANopen (the part :attr:`canopen`; these read it for the program) -------------
+    @property
+    def node_id(self) -> int:
+        """CANopen node ID latched at power-up (0 on a valve without -CA)."""
+        return self._fw.node_id
+
+    @property
+    def bitrate(self) -> int:
+        """CAN bit rate latched at power-up in bit/s (0 when CANopen is off)."""
+        return self._fw.bitrate
+
+    @property
+    def can_enabled(self) -> bool:
+        """True on a -CA valve whose interface switch enables CANopen."""
+        return self._fw.can_enabled
+
+    @property
+    def lss_mode(self) -> bool:
+        """Node-ID switch at 1 at power-up: node ID by LSS, automatic bit rate (table 7-17)."""
+        return self._fw.lss_mode
+
+    def nmt_command(self, command: int) -> None:
+        """An NMT command from the USB side (:meth:`.valve_canopen.CanopenSide.nmt_command`)."""
+        self.canopen.nmt_command(command)
 
     # --- simulation -------------------------------------------------------------------
     @property

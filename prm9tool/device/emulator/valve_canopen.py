@@ -2,23 +2,25 @@
 LSS slave use of it — SDO access as the chosen object dictionary answers it, the node ID and
 bit rate latched at power-up, LSS, NMT and the slave's hooks into the firmware.
 
-A mixin of :class:`~prm9tool.device.emulator.valve.EmulatedValve` (API contract:
-docs/emulator.md); every method takes the valve's lock like the rest of it.
+A part the :class:`~prm9tool.device.emulator.valve.EmulatedValve` holds as ``valve.canopen``
+(API contract: docs/emulator.md): it is given the valve's lock, firmware, object-dictionary
+profile and power cycle, not the valve; every method takes the valve's lock like the rest of it.
 """
 
 from __future__ import annotations
 
 import threading
 from collections.abc import Callable
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, Protocol
 
 from prm9tool.catalogue.commissioning import NmtCommand
 from prm9tool.device.emulator import manual_od
+from prm9tool.device.emulator.canopen_pdo import Dictionary
 from prm9tool.errors import ValueRangeError
 
 if TYPE_CHECKING:
-    from prm9tool.catalogue.error_kinds import ErrorKind
     from prm9tool.device.emulator.firmware import Firmware
+    from prm9tool.device.records import ValveStatus
 
 _NMT_EVENTS: dict[int, str] = {  # CiA 301 command specifier -> NMT event (nmt.NMT_EVENTS)
     NmtCommand.START: "operational",
@@ -30,17 +32,17 @@ _NMT_EVENTS: dict[int, str] = {  # CiA 301 command specifier -> NMT event (nmt.N
 
 
 class CanopenSide:
-    """SDO access, node ID, bit rate, LSS and NMT of an emulated valve (a mixin)."""
+    """SDO access, LSS and NMT of an emulated valve (``valve.canopen``)."""
 
-    lock: threading.RLock
-    od: str  # manual_od.FULL or manual_od.MANUAL
-    _fw: Firmware
-    _restart_listeners: list[Callable[[], None]]
-    _nmt_handler: Callable[[int], None] | None
-
-    def restart(self) -> None:
-        """Power cycle (the valve's own: :meth:`EmulatedValve.restart`)."""
-        raise NotImplementedError
+    def __init__(
+        self, lock: threading.RLock, fw: Firmware, od: str, restart: Callable[[], None]
+    ) -> None:
+        """``od``: manual_od.FULL or manual_od.MANUAL; ``restart``: the valve's power cycle."""
+        self.lock = lock
+        self.od = od
+        self._fw = fw
+        self._restart = restart
+        self._nmt_handler: Callable[[int], None] | None = None
 
     def can_read_bytes(self, index: int, subindex: int) -> bytes:
         """An SDO upload: :meth:`read_bytes` as this valve's CANopen interface answers it."""
@@ -56,26 +58,6 @@ class CanopenSide:
                 manual_od.write_bytes(self._fw, index, subindex, data)
             else:
                 self._fw.od.write_bytes(index, subindex, data)
-
-    @property
-    def node_id(self) -> int:
-        """CANopen node ID latched at power-up (0 on a valve without -CA)."""
-        return self._fw.node_id
-
-    @property
-    def bitrate(self) -> int:
-        """CAN bit rate latched at power-up in bit/s (0 when CANopen is off)."""
-        return self._fw.bitrate
-
-    @property
-    def can_enabled(self) -> bool:
-        """True on a -CA valve whose interface switch enables CANopen."""
-        return self._fw.can_enabled
-
-    @property
-    def lss_mode(self) -> bool:
-        """Node-ID switch at 1 at power-up: node ID by LSS, automatic bit rate (table 7-17)."""
-        return self._fw.lss_mode
 
     def lss_assign(self, node_id: int) -> None:
         """Take ``node_id`` given by an LSS master now: node-relative communication objects
@@ -104,34 +86,6 @@ class CanopenSide:
                 record["bit_timing"] = LSS_BIT_TIMINGS_KBIT.index(self._fw.bitrate // 1000)
             self._fw.nv.replace_lss(record)
 
-    # --- hooks for the CANopen slave --------------------------------------------------
-    def add_cycle_listener(self, fn: Callable[[float], None]) -> None:
-        """``fn(sim_time)`` every 1 ms of simulated time (loop thread, lock held)."""
-        with self.lock:  # a new list: a listener may add or remove one while they are called
-            self._fw.cycle_listeners = [*self._fw.cycle_listeners, fn]
-
-    def remove_cycle_listener(self, fn: Callable[[float], None]) -> None:
-        """Stop calling ``fn`` (no error if it is not registered). Without listeners, the
-        compiled kernel may pass the 1 ms tasks that change nothing itself (fasttick)."""
-        with self.lock:
-            self._fw.cycle_listeners = [f for f in self._fw.cycle_listeners if f != fn]
-
-    def add_error_listener(self, fn: Callable[[int, int], None]) -> None:
-        """``fn(emcy_code, error_register)`` on every change of the active error set."""
-        with self.lock:
-            self._fw.faults.listeners.append(fn)
-
-    def add_error_cause_listener(self, fn: Callable[[int, int, ErrorKind | None], None]) -> None:
-        """``fn(emcy_code, error_register, kind)`` with each EMCY: ``kind`` is the error that
-        raised it (its ``text`` names the cause: several share 8100h), None when all cleared."""
-        with self.lock:
-            self._fw.faults.cause_listeners.append(fn)
-
-    def add_restart_listener(self, fn: Callable[[], None]) -> None:
-        """``fn()`` after every power cycle."""
-        with self.lock:
-            self._restart_listeners.append(fn)
-
     def nmt_event(self, event: str) -> None:
         """NMT state change reported by the CANopen slave (coupling: manual table 7-21)."""
         from prm9tool.device.emulator.nmt import apply_nmt_event
@@ -139,7 +93,7 @@ class CanopenSide:
         with self.lock:
             if event == "reset_node":
                 self._fw.sm.deactivate()
-                self.restart()
+                self._restart()
                 return
             apply_nmt_event(self._fw, event)
 
@@ -156,10 +110,36 @@ class CanopenSide:
         with self.lock:
             if self._nmt_handler is not None:
                 self._nmt_handler(int(command))
-            elif self.can_enabled and not self._fw.booting:
+            elif self._fw.can_enabled and not self._fw.booting:
                 self.nmt_event(event)
 
     def set_nmt_handler(self, handler: Callable[[int], None] | None) -> None:
         """The CANopen slave takes the NMT commands of :meth:`nmt_command` (None: it left)."""
         with self.lock:
             self._nmt_handler = handler
+
+
+class SlaveValve(Dictionary, Protocol):
+    """What the slave uses of an :class:`~.valve.EmulatedValve`: its CANopen part
+    ``canopen`` (SDO access, LSS, NMT), its lock, listeners and what it tells."""
+
+    lock: threading.RLock
+    canopen: CanopenSide
+
+    @property
+    def serial(self) -> int: ...
+    @property
+    def node_id(self) -> int: ...
+    @property
+    def bitrate(self) -> int: ...
+    @property
+    def can_enabled(self) -> bool: ...
+    @property
+    def lss_mode(self) -> bool: ...
+    @property
+    def running(self) -> bool: ...
+    def status(self) -> ValveStatus: ...
+    def usb_activity(self) -> None: ...
+    def add_cycle_listener(self, fn: Callable[[float], None]) -> None: ...
+    def add_error_listener(self, fn: Callable[[int, int], None]) -> None: ...
+    def add_restart_listener(self, fn: Callable[[], None]) -> None: ...
