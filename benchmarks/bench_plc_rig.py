@@ -33,11 +33,13 @@ from pathlib import Path
 
 E02 = "PRM9-06.3Z11/30-24E02S02-CA"
 GROUP = "239.74.163.11"
+PER_FRAME_GROUP = "239.74.163.13"  # the per-frame measurement's own bus (sends go nowhere)
 NAMESPACE = "ip link set lo up && ip link set lo multicast on && ip route add 224.0.0.0/4 dev lo"
 ON_TIME_S = 0.001
 FAULTY = 2  # the node whose coil A is disconnected for the middle third of each run
 INSIDE = "PRM9_BENCH_PLC_RIG_INSIDE"
-sys.path.insert(0, str(Path(__file__).resolve().parent.parent))
+TREE = os.environ.get("PRM9_BENCH_TREE") or str(Path(__file__).resolve().parent.parent)
+sys.path.insert(0, TREE)  # the prm9tool under test (--compare: another checkout's)
 from prm9tool.device.emulator.canopen_hub import enlarge_receive_buffer  # noqa: E402
 
 
@@ -68,87 +70,174 @@ def main() -> int:
     parser.add_argument("--seconds", type=float, default=10.0)
     parser.add_argument("--quick", action="store_true", help="a smoke run: seconds, not figures")
     parser.add_argument("--profile", help="sample the serving process's stacks into this file")
+    parser.add_argument("--compare", metavar="TREE",
+                        help="another checkout of prm9tool (e.g. before a change): each run "
+                        "serves from it and from this tree in turn, and the ratios are printed")  # fmt: skip
+    parser.add_argument("--per-frame-only", type=int, metavar="N", help=argparse.SUPPRESS)
     args = parser.parse_args()
     if os.environ.get(INSIDE) != "1":
         return _enter_namespace()
+    if args.per_frame_only:
+        per_frame(args.per_frame_only)
+        return 0
     counts = [1, 2] if args.quick else [int(n) for n in args.valves.split(",")]
     seconds = 1.0 if args.quick else args.seconds
     if counts[0] != 1:
         counts.insert(0, 1)  # the reference
     print(f"PLC rig on udp_multicast {GROUP}, {seconds:g} s per run, load before "
           f"{os.getloadavg()[0]:.2f}")  # fmt: skip
-    per_frame(500 if args.quick else 5000)
-    print(f"{'valves':>6} {'SYNC':>6} {'on time':>8} {'FIFO':>7} {'got':>7} {'p50':>7} {'p99':>7} "
-          f"{'max':>7} {'SYNC/s':>7} {'EMCY':>5} {'load':>5} {'drops':>6} {'PLC':>6} {'CPU':>5}")  # fmt: skip
-    results = []
+    trees = [("this", TREE)] if not args.compare else [("compare", args.compare), ("this", TREE)]
+    for label, tree in trees:
+        print(f"[{label}: {tree}]", flush=True)
+        subprocess.run([sys.executable, __file__, "--per-frame-only",
+                        str(500 if args.quick else 5000)], env={**os.environ, "PRM9_BENCH_TREE": tree},
+                       check=False)  # fmt: skip
+        if label == "this":
+            _plc_side(500 if args.quick else 5000)
+    print(f"{'tree':>7} {'valves':>6} {'SYNC':>6} {'on time':>8} {'FIFO':>7} {'got':>7} {'p50':>7} "
+          f"{'p99':>7} {'max':>7} {'SYNC/s':>7} {'EMCY':>5} {'load':>5} {'drops':>6} {'PLC':>6} "
+          f"{'CPU':>5}")  # fmt: skip
+    results: dict[str, list[Result]] = {label: [] for label, _ in trees}
     for count in counts:
-        profile = f"{args.profile}.{count}" if args.profile else None
-        result = run(count, 1.0 if count <= 16 else 2.0, seconds, profile)
-        results.append(result)
-        print(f"{result.valves:>6} {result.period_ms:>4g}ms {result.on_time:>8.2%} "
-              f"{result.fifo_on_time:>7.2%} "
-              f"{result.received:>7.1%} "
-              f"{result.p50_ms:>5.2f}ms {result.p99_ms:>5.2f}ms {result.max_ms:>5.1f}ms "
-              f"{result.syncs_per_s:>7.0f} {result.emcy:>5} {result.load:>5.2f} {result.dropped:>6} {result.plc_dropped:>6} {result.serve_cpu:>5.2f}",
-              flush=True)  # fmt: skip
-    reference = results[0]
-    for result in results[1:]:
+        for label, tree in trees:  # alternating: the load changes between runs
+            profile = f"{args.profile}.{label}.{count}" if args.profile else None
+            result = run(count, 1.0 if count <= 16 else 2.0, seconds, profile, tree)
+            results[label].append(result)
+            print(f"{label:>7} {result.valves:>6} {result.period_ms:>4g}ms {result.on_time:>8.2%} "
+                  f"{result.fifo_on_time:>7.2%} "
+                  f"{result.received:>7.1%} "
+                  f"{result.p50_ms:>5.2f}ms {result.p99_ms:>5.2f}ms {result.max_ms:>5.1f}ms "
+                  f"{result.syncs_per_s:>7.0f} {result.emcy:>5} {result.load:>5.2f} {result.dropped:>6} {result.plc_dropped:>6} {result.serve_cpu:>5.2f}",
+                  flush=True)  # fmt: skip
+    mine = results["this"]
+    reference = mine[0]
+    for result in mine[1:]:
         print(f"{result.valves} valves: on-time share {result.on_time:.2%} against "
               f"{reference.on_time:.2%} for one valve; p99 {result.p99_ms / max(reference.p99_ms, 1e-3):.1f}x")  # fmt: skip
+    if args.compare:
+        for before, after in zip(results["compare"], mine, strict=True):
+            print(f"{after.valves} valves, this tree against the compared one: on time "
+                  f"{after.on_time:.2%} / {before.on_time:.2%}, received {after.received:.1%} / "
+                  f"{before.received:.1%}, serve CPU per frame received "
+                  f"{_cpu_per_frame(after) / max(_cpu_per_frame(before), 1e-9):.2f}x")  # fmt: skip
     return 0
 
 
+def _cpu_per_frame(result: Result) -> float:
+    """CPU seconds of the serving process per TPDO1 it got out (a rough per-frame cost)."""
+    return result.serve_cpu / max(result.received * result.valves * 1000 / result.period_ms, 1e-9)
+
+
 def per_frame(n: int) -> None:
-    """The per-frame path of one served valve, in process with a bus that sends nothing: what
-    a SYNC (TPDO1 sampled and encoded) and an RPDO1 cost, against udp_multicast's decoding and
-    1 ms of the control loop."""
+    """CPU cost of the per-frame path of one served valve (µs), on a udp_multicast bus of its
+    own inside the namespace, the way the tree under test serves it (``canopen_udp`` where the
+    tree has it, else python-can's ``can.Message``), and what N valves need per millisecond of
+    one core; then the PLC side: python-can's path against the lean one this benchmark uses."""
     import can
     import can.interfaces.udp_multicast.utils as udp
 
     from prm9tool.device.emulator import EmulatedValve
 
-    class NullBus(can.BusABC):
-        def __init__(self) -> None:
-            super().__init__(channel="null")
-
-        def send(self, msg: can.Message, timeout: float | None = None) -> None:
-            pass
-
-        def _recv_internal(self, timeout: float | None) -> tuple[None, bool]:
-            time.sleep(timeout or 0.01)
-            return None, False
-
-    bus = NullBus()
+    try:
+        from prm9tool.device.emulator import canopen_udp
+    except ImportError:  # a tree from before the fast path (--compare)
+        canopen_udp = None  # type: ignore[assignment]
+    bus = can.Bus(interface="udp_multicast", channel=PER_FRAME_GROUP)
     valve = EmulatedValve(E02, 1)
     slave = valve.connect_can(bus, receive=False)
     valve.advance(2.0)
+    fast = canopen_udp is not None and hasattr(slave, "receive_data")
 
     def frame(can_id: int, data: bytes) -> can.Message:
         return can.Message(arbitration_id=can_id, data=data, is_extended_id=False,
                            timestamp=time.time())  # fmt: skip
 
+    def deliver(can_id: int, data: bytes) -> None:  # as the tree's SharedBus hands it on
+        raw = udp.pack_message(frame(can_id, data))
+        if fast:
+            can_id, data = canopen_udp.decode(raw)  # type: ignore[union-attr,misc]
+            slave.receive_data(can_id, data, time.time())
+        else:
+            slave.receive_frame(udp.unpack_message(raw, replace={"timestamp": time.time()},
+                                                   check=True))  # fmt: skip
+
     for data in (bytes.fromhex("2F00180201000000"), *(bytes([0x2B, 0x40, 0x60, 0, w, 0, 0, 0])
                  for w in (8, 9, 11, 15))):  # fmt: skip
-        slave.receive_frame(frame(0x60A, data))
-    slave.receive_frame(frame(0, b"\x01\x0a"))
-    slave.receive_frame(frame(0x60A, bytes([0x2B, 0x40, 0x60, 0, 15, 0, 0, 0])))
-    sync, rpdo = frame(0x80, b""), frame(0x20A, bytes([15, 0, 0x40, 0x1F]))
-    packed = udp.pack_message(rpdo)
+        deliver(0x60A, data)
+    deliver(0, b"\x01\x0a")
+    deliver(0x60A, bytes([0x2B, 0x40, 0x60, 0, 15, 0, 0, 0]))
+    rpdo_data = bytes([15, 0, 0x40, 0x1F])
+    packed = udp.pack_message(frame(0x20A, rpdo_data))
+    if fast:
+        decode = lambda: canopen_udp.decode(packed)  # type: ignore[union-attr]  # noqa: E731
+    else:
+        decode = lambda: udp.unpack_message(packed, replace={"timestamp": 1.0}, check=True)  # noqa: E731
     steps = {
-        "SYNC (TPDO1 out)": lambda: slave.receive_frame(sync),
-        "RPDO1": lambda: slave.receive_frame(rpdo),
-        "udp_multicast decode": lambda: udp.unpack_message(packed, replace={"timestamp": 1.0}),
-        "udp_multicast encode": lambda: udp.pack_message(rpdo),
+        "decode": decode,
+        "SYNC (TPDO1 out)": lambda: deliver_raw(0x80, b""),
+        "RPDO1": lambda: deliver_raw(0x20A, rpdo_data),
         "1 ms of the loop": lambda: valve.advance(0.001),
     }
-    costs = []
+    sync_msg, rpdo_msg = frame(0x80, b""), frame(0x20A, rpdo_data)
+
+    def deliver_raw(can_id: int, data: bytes) -> None:  # the handling alone, decoded already
+        if fast:
+            slave.receive_data(can_id, data, time.time())
+        else:
+            slave.receive_frame(sync_msg if can_id == 0x80 else rpdo_msg)
+
+    costs = {}
     for name, step in steps.items():
-        started = time.perf_counter()
+        started = time.process_time()
         for _ in range(n):
             step()
-        costs.append(f"{name} {(time.perf_counter() - started) / n * 1e6:.1f} us")
-    print("per frame: " + ", ".join(costs))
+        costs[name] = (time.process_time() - started) / n * 1e6
+    print(f"per frame ({'canopen_udp' if fast else 'can.Message'}): "
+          + ", ".join(f"{k} {v:.1f} us" for k, v in costs.items()))  # fmt: skip
+    for count, period_ms in ((16, 1.0), (32, 2.0)):
+        frames_in = 1 + count  # one SYNC and an RPDO1 per valve each period
+        need = (frames_in * costs["decode"] + count * (costs["SYNC (TPDO1 out)"] + costs["RPDO1"])
+                + count * period_ms * costs["1 ms of the loop"])  # fmt: skip
+        print(f"  serving {count} valves @ {period_ms:g} ms needs {need:.0f} us of CPU per period "
+              f"= {need / (period_ms * 10):.0f} % of one core")  # fmt: skip
     slave.stop()
+    bus.shutdown()
+
+
+def _plc_side(n: int) -> None:
+    """A PLC's own cost per frame: python-can (``can.Message``, what a PLC script with the
+    ``canopen`` package pays) against the lean path of this benchmark's PLC (canopen_udp)."""
+    import can
+    import can.interfaces.udp_multicast.utils as udp
+
+    from prm9tool.device.emulator import canopen_udp
+
+    bus = can.Bus(interface="udp_multicast", channel=PER_FRAME_GROUP)
+    send = canopen_udp.sender(bus)
+    assert send is not None
+    msg = can.Message(arbitration_id=0x201, data=bytes(4), is_extended_id=False)
+    packed = udp.pack_message(
+        can.Message(arbitration_id=0x181, data=bytes(4), is_extended_id=False)
+    )
+    steps = {
+        "python-can send": lambda: bus.send(msg),
+        "lean send": lambda: send(0x201, b"\x0f\x00\x00\x00"),
+        "python-can decode": lambda: udp.unpack_message(
+            packed, replace={"timestamp": 1.0}, check=True
+        ),
+        "lean decode": lambda: canopen_udp.decode(packed),
+    }
+    costs = {}
+    for name, step in steps.items():
+        started = time.process_time()
+        for _ in range(n):
+            step()
+        costs[name] = (time.process_time() - started) / n * 1e6
+    print("PLC per frame: " + ", ".join(f"{k} {v:.1f} us" for k, v in costs.items()))
+    for kind in ("python-can", "lean"):
+        need = 16 * costs[f"{kind} decode"] + 17 * costs[f"{kind} send"]
+        print(f"  a {kind} PLC at 16 valves @ 1 ms needs {need:.0f} us of CPU per ms "
+              f"= {need / 10:.0f} % of one core (16 TPDO1 in, SYNC and 16 RPDO1 out)")  # fmt: skip
     bus.shutdown()
 
 
@@ -171,12 +260,15 @@ def _quote(text: str) -> str:
     return "'" + text.replace("'", "'\\''") + "'"
 
 
-def run(count: int, period_ms: float, seconds: float, profile: str | None = None) -> Result:
-    """Serve ``count`` valves (nodes 1…count), commission them, run SYNC for ``seconds``."""
+def run(
+    count: int, period_ms: float, seconds: float, profile: str | None = None, tree: str = TREE
+) -> Result:
+    """Serve ``count`` valves (nodes 1…count) from ``tree``, commission them, run SYNC for
+    ``seconds``."""
     import can
 
     with tempfile.TemporaryDirectory() as data:
-        serve = _serve(count, data, profile)
+        serve = _serve(count, data, profile, tree)
         try:
             bus = can.Bus(interface="udp_multicast", channel=GROUP)
             enlarge_receive_buffer(bus)  # the PLC takes 2N + 1 frames a millisecond too
@@ -199,15 +291,14 @@ def _caused(node: int, data: bytes, count: int) -> bool:
     return count >= FAULTY and node == FAULTY and code in (0x5411, 0x0000)
 
 
-def _serve(count: int, data: str, profile: str | None) -> subprocess.Popen[str]:
+def _serve(count: int, data: str, profile: str | None, tree: str) -> subprocess.Popen[str]:
     sampler = [str(Path(__file__).with_name("stack_sampler.py")), profile] if profile else []
     command = [sys.executable, *sampler, "-m", "prm9tool", "--can-interface", "udp_multicast",
                "--can-channel", GROUP]  # fmt: skip
     for node in range(1, count + 1):
         command += ["--serve-emulator", f"{E02}:{7000 + node}", "--node-id", str(node)]
     env = {**os.environ, "PRM9TOOL_DATA_DIR": data}
-    root = Path(__file__).resolve().parent.parent
-    env["PYTHONPATH"] = os.pathsep.join(filter(None, [str(root), env.get("PYTHONPATH")]))
+    env["PYTHONPATH"] = os.pathsep.join(filter(None, [tree, env.get("PYTHONPATH")]))
     return subprocess.Popen(command, env=env, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL,
                             stdin=subprocess.PIPE, text=True)  # fmt: skip
 
@@ -309,28 +400,30 @@ def _cpu_s(pid: int) -> float:
 
 
 def _measure(bus, count: int, period_ms: float, seconds: float, serve) -> Result:  # type: ignore[no-untyped-def]
-    import can
+    """The PLC's run, lean: datagrams decoded and sent without ``can.Message``
+    (``canopen_udp``: a Python PLC's own per-frame cost would otherwise be measured too)."""
+    from prm9tool.device.emulator import canopen_udp
 
+    receive_frame, send = canopen_udp.receiver(bus), canopen_udp.sender(bus)
+    assert receive_frame is not None and send is not None
     sync_times: list[float] = []
     tpdo: dict[int, list[float]] = {node: [] for node in range(1, count + 1)}
     emcy = [0]
     stop = threading.Event()
 
     def receive() -> None:
-        while not stop.is_set() or bus_pending():
-            msg = bus.recv(0.05)
-            if msg is None:
+        while True:
+            frame = receive_frame(0.05)
+            if frame is None:
                 if stop.is_set():
                     return
                 continue
-            cob, node = msg.arbitration_id & 0x780, msg.arbitration_id & 0x7F
+            can_id, data, timestamp = frame
+            cob, node = can_id & 0x780, can_id & 0x7F
             if cob == 0x180 and node in tpdo:
-                tpdo[node].append(msg.timestamp)
-            elif cob == 0x080 and node and not _caused(node, msg.data, count):
+                tpdo[node].append(timestamp)
+            elif cob == 0x080 and node and not _caused(node, data, count):
                 emcy[0] += 1  # an EMCY the PLC did not cause (the injected fault's are)
-
-    def bus_pending() -> bool:
-        return False
 
     def fault(verb: str) -> None:  # on the serve command's stdin (docs/plc-testing.md)
         if count >= FAULTY:
@@ -341,9 +434,6 @@ def _measure(bus, count: int, period_ms: float, seconds: float, serve) -> Result
     receiver = threading.Thread(target=receive, daemon=True)
     receiver.start()
     period = period_ms / 1000.0
-    rpdo = [can.Message(arbitration_id=0x200 + node, data=bytes([0x0F, 0, 0, 0]),
-                        is_extended_id=False) for node in range(1, count + 1)]  # fmt: skip
-    sync = can.Message(arbitration_id=0x080, data=b"", is_extended_id=False)
     pid = serve.pid
     cpu_before = _cpu_s(pid)
     injected = cleared = False
@@ -355,7 +445,7 @@ def _measure(bus, count: int, period_ms: float, seconds: float, serve) -> Result
         if delay > 0:
             time.sleep(delay)
         sync_times.append(time.time())
-        bus.send(sync)
+        send(0x080, b"")
         if not injected and n * period >= seconds / 3:
             injected = True
             fault("inject")  # the valve faults: its TPDO1 shows FAULT_HOLD, 5411 is caused
@@ -363,9 +453,9 @@ def _measure(bus, count: int, period_ms: float, seconds: float, serve) -> Result
             cleared = True
             fault("clear")
         setpoint = (8000 if (n // 500) % 2 else -8000).to_bytes(2, "little", signed=True)
-        for message in rpdo:  # RPDO1 every SYNC: control word 0Fh, a ±50 % square
-            message.data[2:4] = setpoint
-            bus.send(message)
+        rpdo = b"\x0f\x00" + setpoint  # RPDO1 every SYNC: control word 0Fh, a ±50 % square
+        for node in range(1, count + 1):
+            send(0x200 + node, rpdo)
     elapsed = time.monotonic() - start
     cpu = (_cpu_s(pid) - cpu_before) / elapsed
     time.sleep(0.2)

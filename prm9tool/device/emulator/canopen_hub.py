@@ -28,6 +28,7 @@ import time
 
 import can
 
+from prm9tool.device.emulator import canopen_udp
 from prm9tool.device.emulator.canopen_lss import LSS_REQUEST
 from prm9tool.device.emulator.canopen_slave import CanopenSlave
 
@@ -50,6 +51,8 @@ class SharedBus:
         self._stop = threading.Event()
         self._thread = threading.Thread(target=self._receive, name="prm9-canopen-hub", daemon=True)
         self._started = False
+        # python-can's udp_multicast: datagrams decoded without can.Message (canopen_udp)
+        self._receive_frame = canopen_udp.receiver(bus) or self._receive_message
         enlarge_receive_buffer(bus)
 
     def attach(self, slave: CanopenSlave) -> None:
@@ -80,11 +83,12 @@ class SharedBus:
 
     def _receive(self) -> None:
         judged_ms = 0.0
+        receive = self._receive_frame
         while not self._stop.is_set():
             slaves = self._slaves
             wait = min((s.rx_wait_s() for s in slaves), default=0.1)
             try:
-                msg = self._bus.recv(wait)
+                frame = receive(wait)
             except Exception as exc:  # a closed or failing bus must not end the thread silently
                 if self._stop.is_set():
                     return
@@ -92,20 +96,30 @@ class SharedBus:
                 self._stop.wait(0.1)
                 continue
             now_ms = time.monotonic() * 1000.0
-            if msg is None:
+            if frame is None:
                 for slave in slaves:
                     slave.judge_quiet(now_ms)
                 judged_ms = now_ms
                 continue
-            takers = self._routes.get(msg.arbitration_id, ())
+            can_id, data, timestamp = frame
+            takers = self._routes.get(can_id, ())
             for slave in takers:
-                slave.receive_frame(msg)
+                slave.receive_data(can_id, data, timestamp)
             if now_ms - judged_ms >= JUDGE_EVERY_MS:
                 judged_ms = now_ms
-                arrival = now_ms - max(0.0, time.time() - msg.timestamp) * 1000.0
+                arrival = now_ms - max(0.0, time.time() - timestamp) * 1000.0
                 for slave in slaves:
                     if slave not in takers:
                         slave.judge_quiet(arrival)
+
+    def _receive_message(self, timeout: float | None) -> canopen_udp.Frame | None:
+        """The next classical data frame through ``bus.recv`` (any python-can bus)."""
+        deadline = time.monotonic() + (timeout or 0.0)
+        while (msg := self._bus.recv(timeout)) is not None:
+            if not (msg.is_error_frame or msg.is_remote_frame or msg.is_extended_id or msg.is_fd):
+                return msg.arbitration_id, bytes(msg.data), msg.timestamp
+            timeout = max(0.0, deadline - time.monotonic())  # a classical node ignores it
+        return None
 
 
 def enlarge_receive_buffer(bus: can.BusABC, size: int = RECEIVE_BUFFER) -> int:

@@ -43,18 +43,25 @@ def _mapping_parameters(map_index: int) -> tuple[Parameter, ...]:
     return tuple(sorted(entries, key=lambda p: p.subindex))
 
 
-def mapping(valve: Dictionary, map_index: int) -> list[tuple[int, int, int]]:
+Entries = tuple[tuple[int, int, int], ...]  # (index, subindex, bits) of each mapped object
+
+
+def mapping(valve: Dictionary, map_index: int) -> Entries:
     """The ``(index, subindex, bits)`` entries of a mapping object in the current control mode.
 
     As many as its sub-index 0 says: none on a PDO that maps nothing (CiA 301).
     """
-    mode = int(valve.read(*CONTROL_MODE))
-    count = int(valve.read(map_index, 0))
+    return _entries(map_index, int(valve.read(*CONTROL_MODE)), int(valve.read(map_index, 0)))
+
+
+@functools.cache
+def _entries(map_index: int, mode: int, count: int) -> Entries:
+    """The entries for a control mode and count (fixed: computed once, not per frame)."""
     result = []
     for param in _mapping_parameters(map_index)[:count]:
         value = mapping_for_control_mode(param, mode)
         result.append((value >> 16, (value >> 8) & 0xFF, value & 0xFF))
-    return result
+    return tuple(result)
 
 
 @dataclass
@@ -74,6 +81,7 @@ class PdoChannel:
     # RPDO: the next frame is due by then (None = not armed), on the time base of
     # :class:`.canopen_watch.TimingWatches` (wall clock when paced, else simulated)
     deadline_ms: float | None = None
+    map_count: int = 0  # the mapping's sub-index 0 (read-only: read with the parameters)
 
     @property
     def comm_index(self) -> int:
@@ -98,6 +106,7 @@ class PdoChannel:
     def load(self, valve: Dictionary, now_ms: int) -> None:
         """Refresh the configuration from the object dictionary (a new event timer restarts)."""
         self.cob_id = int(valve.read(self.comm_index, 1))
+        self.map_count = int(valve.read(self.map_index, 0))
         self.trans_type = int(valve.read(self.comm_index, 2))
         timer = int(valve.read(self.comm_index, 5))
         if timer != self.event_timer:
@@ -114,6 +123,14 @@ class PdoChannel:
         self.deadline_ms = None
 
 
+def channel_mapping(valve: Dictionary, channel: PdoChannel) -> Entries:
+    """:func:`mapping` of a loaded channel: its count as loaded (read-only, so it changes only
+    with a power-up, which loads the channel again), the control mode read now."""
+    if not channel.map_count:
+        return ()
+    return _entries(channel.map_index, int(valve.read(*CONTROL_MODE)), channel.map_count)
+
+
 class TpdoLogic:
     """When a TPDO is due and what it carries."""
 
@@ -123,7 +140,7 @@ class TpdoLogic:
 
     def data(self) -> bytes | None:
         """The mapped bytes, or None when the PDO maps nothing (CiA 301: mapping disabled)."""
-        entries = mapping(self._valve, self.channel.map_index)
+        entries = channel_mapping(self._valve, self.channel)
         if not entries:
             return None  # a TPDO that maps nothing is never sent
         return b"".join(
@@ -187,13 +204,12 @@ class RpdoLogic:
         """A frame on the RPDO's COB-ID arrived (NMT OPERATIONAL); ignored when the RPDO maps
         nothing (CiA 301: mapping disabled). True when it was taken (the deadline watch then
         expects the next one, :meth:`.canopen_watch.TimingWatches.rpdo_received`)."""
-        entries = mapping(self._valve, self.channel.map_index)
-        if not entries:
+        if not self.channel.map_count:
             return False
         if self.channel.trans_type in SYNC_TYPES:
-            self.channel.pending = bytes(data)
+            self.channel.pending = data
         else:
-            self.apply(bytes(data), entries)
+            self.apply(data)
         return True
 
     def on_sync(self) -> None:
@@ -202,10 +218,10 @@ class RpdoLogic:
             data, self.channel.pending = self.channel.pending, None
             self.apply(data)
 
-    def apply(self, data: bytes, entries: list[tuple[int, int, int]] | None = None) -> None:
+    def apply(self, data: bytes, entries: Entries | None = None) -> None:
         """Write the mapped objects; a too short frame is refused (CiA 301 EMCY 0x8210)."""
         if entries is None:
-            entries = mapping(self._valve, self.channel.map_index)
+            entries = channel_mapping(self._valve, self.channel)
         if len(data) < sum(bits // 8 for _, _, bits in entries):
             self._length_error()
             return

@@ -20,6 +20,7 @@ from typing import TYPE_CHECKING
 import can
 
 from prm9tool.catalogue.commissioning import NmtCommand
+from prm9tool.device.emulator import canopen_udp
 from prm9tool.device.emulator.canopen_lss import LSS_REQUEST, LSS_RESPONSE, LssHost, LssSlave
 from prm9tool.device.emulator.canopen_pdo import PdoChannel, RpdoLogic, TpdoLogic, mapping
 from prm9tool.device.emulator.canopen_rules import check_comm_write
@@ -56,6 +57,7 @@ class CanopenSlave:
         :class:`~.canopen_hub.SharedBus` hands it the frames (many valves on one bus)."""
         self._valve = valve
         self._bus = bus
+        self._send_frame = canopen_udp.sender(bus) or self._send_message  # no Message on UDP
         self._sdo = SdoServer(self._sdo_read, self._sdo_write)
         self._rpdos = [PdoChannel(n, transmit=False) for n in (1, 2)]
         self._tpdos = [PdoChannel(n, transmit=True) for n in (1, 2)]
@@ -205,8 +207,13 @@ class CanopenSlave:
         self._judge_quiet(quiet_until_ms)
 
     def receive_frame(self, msg: can.Message) -> None:
-        """A frame from the bus (a :class:`~.canopen_hub.SharedBus` calls this)."""
+        """A frame from the bus."""
         self._on_message(msg)
+
+    def receive_data(self, can_id: int, data: bytes, timestamp: float) -> None:
+        """A classical data frame from the bus, received at ``timestamp`` (``time.time``'s
+        epoch, s): a :class:`~.canopen_hub.SharedBus` calls this, without ``can.Message``."""
+        self._on_frame(can_id, data, timestamp)
 
     def _judge_quiet(self, quiet_until_ms: float) -> None:
         """``recv`` timed out at ``quiet_until_ms`` (wall clock) with no frame: deadlines before
@@ -220,23 +227,26 @@ class CanopenSlave:
     def _on_message(self, msg: can.Message) -> None:
         if msg.is_error_frame or msg.is_remote_frame or msg.is_extended_id or msg.is_fd:
             return  # a classical CAN node ignores CAN FD frames
+        self._on_frame(msg.arbitration_id, bytes(msg.data), msg.timestamp)
+
+    def _on_frame(self, can_id: int, data: bytes, timestamp: float) -> None:
         with self._valve.lock:
             watches = self._watches
             watches.follow(self._valve.running, self._now_ms)
-            arrival = watches.arrival_ms(msg, self._now_ms)
+            arrival = watches.arrival_ms(timestamp, self._now_ms)
             if watches.paced and self.state is NmtState.OPERATIONAL:
                 watches.judge(arrival)  # a frame after a deadline proves it passed unmet
-            if msg.arbitration_id == LSS_REQUEST:
+            if can_id == LSS_REQUEST:
                 if self.lss is not None and self.state is not NmtState.OFF:
-                    self.lss.handle(bytes(msg.data))
+                    self.lss.handle(data)
                 return
-            if self.state in (NmtState.OFF, NmtState.INITIALISING) and msg.arbitration_id:
+            if self.state in (NmtState.OFF, NmtState.INITIALISING) and can_id:
                 return
             try:
                 if self.state is not NmtState.OFF:
-                    self._dispatch(msg.arbitration_id, bytes(msg.data), arrival)
+                    self._dispatch(can_id, data, arrival)
             except Exception:  # a firmware bug must not stop the receive thread
-                log.exception("CANopen frame 0x%03X not processed", msg.arbitration_id)
+                log.exception("CANopen frame 0x%03X not processed", can_id)
 
     def _dispatch(self, can_id: int, data: bytes, arrival_ms: float) -> None:
         if can_id == 0:
@@ -271,9 +281,12 @@ class CanopenSlave:
         if self._now_ms < self._silent_until_ms:
             return
         try:
-            self._bus.send(can.Message(arbitration_id=can_id, data=data, is_extended_id=False))
+            self._send_frame(can_id, data)
         except can.CanError as exc:
             log.warning("CAN transmit of 0x%03X failed: %s", can_id, exc)
+
+    def _send_message(self, can_id: int, data: bytes) -> None:
+        self._bus.send(can.Message(arbitration_id=can_id, data=data, is_extended_id=False))
 
     # --- timers ----------------------------------------------------------------------------
     def _on_cycle(self, sim_time: float) -> None:

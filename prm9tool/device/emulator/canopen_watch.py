@@ -23,8 +23,6 @@ import time
 from collections.abc import Callable, Sequence
 from typing import Protocol
 
-import can
-
 SYNC_TIMEOUT_FACTOR = 1.5  # decision: SYNC missing for 1.5 x 0x1006 = SYNC error (8100h)
 RX_POLL_S = 0.1  # the receive thread looks at its stop flag at least this often
 MAX_AGE_S = 5.0  # a time stamp older than this (or in the future) is not a reception time
@@ -72,11 +70,12 @@ class TimingWatches:
         """The present moment on the watches' time base."""
         return self.wall_ms() if self.paced else sim_ms
 
-    def arrival_ms(self, msg: can.Message, sim_ms: float) -> float:
-        """When ``msg`` arrived, on the watches' time base (its time stamp when paced)."""
+    def arrival_ms(self, timestamp: float, sim_ms: float) -> float:
+        """When a frame received at ``timestamp`` (``time.time``'s epoch; 0: none) arrived, on
+        the watches' time base (its time stamp when paced)."""
         if not self.paced:
             return sim_ms
-        age = time.time() - msg.timestamp if msg.timestamp else 0.0
+        age = time.time() - timestamp if timestamp else 0.0
         if not 0.0 <= age <= MAX_AGE_S:
             age = 0.0  # no usable time stamp: it arrives now
         return self.wall_ms() - age * 1000.0

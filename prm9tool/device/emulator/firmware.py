@@ -315,9 +315,10 @@ class Firmware(ParameterMemory):
 
     # --- inputs to the loop -----------------------------------------------------------
     def _on_parameter_changed(self, mnemonic: str) -> None:
+        if mnemonic == "CONTROLWORD":
+            return  # its hook told the state machine, which the 1 ms task reads, not the inputs
         self.setpoint_dirty = True
         self.config_dirty = True
-        del mnemonic
 
     def value(self, mnemonic: str) -> int:
         """Integer RAM value of a parameter; 0 if it does not exist on this variant."""

@@ -52,7 +52,8 @@ class ObjectDictionary:
     ``getters`` supply live values (read-only process data); ``hooks`` replace the plain store
     of a validated write (commands such as 0x1010 "save"); ``checks`` validate a value beyond
     the catalogue range (cross-parameter limits, device-state rules) and refuse it by raising
-    :class:`SdoAbortError`; ``on_change`` is told the mnemonic after every accepted write.
+    :class:`SdoAbortError`; ``on_change`` is told the mnemonic after every accepted write that
+    ran a hook or changed the stored value.
     """
 
     def __init__(self, variant: Variant, catalogue: Catalogue = CATALOGUE) -> None:
@@ -124,6 +125,9 @@ class ObjectDictionary:
         if hook is not None:
             hook(value)
         else:
+            old = self.values.get(key)
+            if old is not None and type(old) is type(value) and old == value:
+                return  # the same value again (an RPDO each SYNC): nothing downstream changes
             self.values[key] = value
         if self.on_change is not None:
             self.on_change(param.mnemonic)

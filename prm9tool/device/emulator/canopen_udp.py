@@ -1,0 +1,134 @@
+"""python-can's udp_multicast datagrams without ``can.Message`` objects, for the served valves.
+
+A datagram of python-can's ``udp_multicast`` interface is a msgpack map of a message's eleven
+fields (``can.interfaces.udp_multicast.utils.pack_message``). Per frame, building a
+``can.Message`` (its checks), the dict and the map, and back on reception, cost more than the
+emulated valve's own SYNC and RPDO handling (docs/PERFORMANCE.md, "The PLC rig"). Here:
+
+- :func:`sender` sends a classical frame as the bytes ``pack_message`` would make of
+  ``can.Message(arbitration_id=…, data=…, is_extended_id=False)``: a header per CAN-ID made
+  once, then the data length and the data (bit-identical: tests/test_canopen_udp.py);
+- :func:`receiver` takes a datagram off the socket with its kernel time stamp, as the bus
+  does, and decodes it with msgpack's C unpacker to ``(can_id, data, timestamp)``, skipping
+  frames a classical CAN node ignores (extended, remote, error, CAN FD).
+
+Both reach python-can's socket wrapper (``bus._multicast``, python-can ≥ 4.4); on any other bus,
+or a bus with receive filters, they return None and the caller keeps ``bus.send``/``bus.recv``.
+"""
+
+from __future__ import annotations
+
+import logging
+from collections.abc import Callable
+
+import can
+import msgpack
+
+log = logging.getLogger(__name__)
+
+Frame = tuple[int, bytes, float]  # CAN-ID, data, reception time stamp (s, time.time's epoch)
+Send = Callable[[int, bytes], None]
+Receive = Callable[[float | None], Frame | None]  # None: nothing arrived within the timeout
+_IGNORED = ("is_extended_id", "is_remote_frame", "is_error_frame", "is_fd")
+_unpack = msgpack.unpackb
+
+
+def _pack(value: object) -> bytes:
+    return msgpack.packb(value, use_bin_type=True)  # type: ignore[no-any-return]
+
+
+def _after(key: str, value: object) -> bytes:
+    return _pack(key) + _pack(value)
+
+
+# the fields after "dlc", in pack_message's order: data, then three flags
+_DATA_KEY = _pack("data")
+_TAIL = _after("is_fd", False) + _after("bitrate_switch", False)
+_TAIL += _after("error_state_indicator", False)
+
+
+def _header(can_id: int) -> bytes:
+    """The map's fields up to the value of "dlc" for a classical data frame from this node."""
+    head = b"\x8b" + _after("timestamp", 0.0) + _after("arbitration_id", can_id)
+    for key, value in (("is_extended_id", False), ("is_remote_frame", False)):
+        head += _after(key, value)
+    return head + _after("is_error_frame", False) + _after("channel", None) + _pack("dlc")
+
+
+def datagram(can_id: int, data: bytes, headers: dict[int, bytes] | None = None) -> bytes:
+    """What python-can's udp_multicast sends for a classical data frame (0…8 bytes)."""
+    head = headers.get(can_id) if headers is not None else None
+    if head is None:
+        head = _header(can_id)
+        if headers is not None:
+            headers[can_id] = head
+    size = len(data)
+    return b"".join((head, bytes((size, *_DATA_KEY, 0xC4, size)), data, _TAIL))
+
+
+def decode(raw: bytes) -> tuple[int, bytes] | None:
+    """``(can_id, data)`` of a datagram, or None for one a classical CAN node ignores
+    (extended, remote, error or CAN FD frame) or that is no python-can frame (logged)."""
+    try:
+        fields = _unpack(raw, raw=False)
+        can_id, data = int(fields["arbitration_id"]), bytes(fields["data"])
+        ignored = any(fields.get(flag) for flag in _IGNORED)
+    except Exception as exc:  # not a python-can datagram: named, not fatal
+        log.warning("a datagram on the CAN group that is no CAN frame: %s", exc)
+        return None
+    if ignored or not 0 <= can_id <= 0x7FF or len(data) > 8:
+        return None
+    return can_id, data
+
+
+def _socket_wrapper(bus: can.BusABC) -> object | None:
+    try:
+        from can.interfaces.udp_multicast import UdpMulticastBus
+    except ImportError:  # pragma: no cover - python-can without the interface
+        return None
+    if not isinstance(bus, UdpMulticastBus):
+        return None
+    wrapper = getattr(bus, "_multicast", None)
+    if not (callable(getattr(wrapper, "send", None)) and callable(getattr(wrapper, "recv", None))):
+        return None
+    return wrapper
+
+
+def sender(bus: can.BusABC) -> Send | None:
+    """A function sending ``(can_id, data)`` as a classical frame on ``bus``, or None when the
+    bus is not python-can's udp_multicast (then ``bus.send`` it is)."""
+    wrapper = _socket_wrapper(bus)
+    if wrapper is None:
+        return None
+    send = wrapper.send  # type: ignore[attr-defined]
+    headers: dict[int, bytes] = {}
+
+    def send_frame(can_id: int, data: bytes) -> None:
+        try:
+            send(datagram(can_id, data, headers), None)
+        except can.CanError:
+            raise
+        except OSError as exc:
+            raise can.CanOperationError(f"failed to send via socket: {exc}") from exc
+
+    return send_frame
+
+
+def receiver(bus: can.BusABC) -> Receive | None:
+    """A function returning the next classical frame on ``bus`` (None on timeout), or None
+    when the bus is not python-can's udp_multicast or filters its frames."""
+    wrapper = _socket_wrapper(bus)
+    if wrapper is None or getattr(bus, "filters", None):
+        return None
+    recv = wrapper.recv  # type: ignore[attr-defined]
+
+    def receive(timeout: float | None) -> Frame | None:
+        while result := recv(timeout):
+            timeout = 0.0  # after a datagram that is no frame for a classical node: the next
+            raw, _, timestamp = result
+            frame = decode(raw)
+            if frame is not None:
+                return frame[0], frame[1], timestamp
+        return None
+
+    return receive
