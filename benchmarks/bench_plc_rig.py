@@ -61,6 +61,9 @@ class Result:
     dropped: int  # datagrams the kernel dropped for a full socket buffer (either process)
     plc_dropped: int  # of those, dropped at the PLC's own socket
     serve_cpu: float  # CPU seconds the serving process used per second of the run
+    serve_wait: float  # seconds its threads waited, runnable, for a CPU per second of the run
+    plc_cpu: float  # the same two for this (the PLC's) process
+    plc_wait: float
 
 
 def main() -> int:
@@ -96,7 +99,7 @@ def main() -> int:
             _plc_side(500 if args.quick else 5000)
     print(f"{'tree':>7} {'valves':>6} {'SYNC':>6} {'on time':>8} {'FIFO':>7} {'got':>7} {'p50':>7} "
           f"{'p99':>7} {'max':>7} {'SYNC/s':>7} {'EMCY':>5} {'load':>5} {'drops':>6} {'PLC':>6} "
-          f"{'CPU':>5}")  # fmt: skip
+          f"{'CPU':>5} {'wait':>5} {'PLC CPU':>7} {'wait':>5}")  # fmt: skip
     results: dict[str, list[Result]] = {label: [] for label, _ in trees}
     for count in counts:
         for label, tree in trees:  # alternating: the load changes between runs
@@ -107,7 +110,7 @@ def main() -> int:
                   f"{result.fifo_on_time:>7.2%} "
                   f"{result.received:>7.1%} "
                   f"{result.p50_ms:>5.2f}ms {result.p99_ms:>5.2f}ms {result.max_ms:>5.1f}ms "
-                  f"{result.syncs_per_s:>7.0f} {result.emcy:>5} {result.load:>5.2f} {result.dropped:>6} {result.plc_dropped:>6} {result.serve_cpu:>5.2f}",
+                  f"{result.syncs_per_s:>7.0f} {result.emcy:>5} {result.load:>5.2f} {result.dropped:>6} {result.plc_dropped:>6} {result.serve_cpu:>5.2f} {result.serve_wait:>5.2f} {result.plc_cpu:>7.2f} {result.plc_wait:>5.2f}",
                   flush=True)  # fmt: skip
     mine = results["this"]
     reference = mine[0]
@@ -393,6 +396,19 @@ def _match(sync_times: list[float], per_node) -> tuple[list[float], int]:  # typ
     return latencies or [float("nan")], on_time
 
 
+def _run_s(pid: int) -> tuple[float, float]:
+    """(CPU seconds, seconds waited runnable for a CPU) of all threads of process ``pid``
+    (/proc/PID/task/*/schedstat: the OS's share is the wait)."""
+    cpu = wait = 0
+    for task in Path(f"/proc/{pid}/task").iterdir():
+        try:
+            run_ns, wait_ns, _ = (task / "schedstat").read_text().split()
+        except (OSError, ValueError):
+            continue  # a thread that ended meanwhile
+        cpu, wait = cpu + int(run_ns), wait + int(wait_ns)
+    return cpu / 1e9, wait / 1e9
+
+
 def _cpu_s(pid: int) -> float:
     """User + system CPU seconds of process ``pid`` so far (/proc/PID/stat)."""
     fields = Path(f"/proc/{pid}/stat").read_text().rsplit(")", 1)[1].split()
@@ -436,6 +452,7 @@ def _measure(bus, count: int, period_ms: float, seconds: float, serve) -> Result
     period = period_ms / 1000.0
     pid = serve.pid
     cpu_before = _cpu_s(pid)
+    serve_before, plc_before_run = _run_s(pid), _run_s(os.getpid())
     injected = cleared = False
     start = time.monotonic()
     n = 0
@@ -458,6 +475,7 @@ def _measure(bus, count: int, period_ms: float, seconds: float, serve) -> Result
             send(0x200 + node, rpdo)
     elapsed = time.monotonic() - start
     cpu = (_cpu_s(pid) - cpu_before) / elapsed
+    serve_after, plc_after = _run_s(pid), _run_s(os.getpid())
     time.sleep(0.2)
     stop.set()
     receiver.join()
@@ -480,6 +498,9 @@ def _measure(bus, count: int, period_ms: float, seconds: float, serve) -> Result
         _udp_drops() - drops_before,
         _socket_drops(bus) - plc_before,
         cpu,
+        (serve_after[1] - serve_before[1]) / elapsed,
+        (plc_after[0] - plc_before_run[0]) / elapsed,
+        (plc_after[1] - plc_before_run[1]) / elapsed,
     )
 
 
