@@ -175,11 +175,14 @@ def per_frame(n: int) -> None:
         decode = lambda: canopen_udp.decode(packed)  # type: ignore[union-attr]  # noqa: E731
     else:
         decode = lambda: udp.unpack_message(packed, replace={"timestamp": 1.0}, check=True)  # noqa: E731
+    valve.start()  # paced: the watches on the wall clock, as served
+    deliver_raw_sync = lambda: deliver_raw(0x80, b"")  # noqa: E731
     steps = {
         "decode": decode,
-        "SYNC (TPDO1 out)": lambda: deliver_raw(0x80, b""),
+        "SYNC (TPDO1 out)": deliver_raw_sync,
         "RPDO1": lambda: deliver_raw(0x20A, rpdo_data),
-        "1 ms of the loop": lambda: valve.advance(0.001),
+        "hub: wait asked": slave.rx_wait_s,  # per valve; per frame before, per ms now
+        "hub: judged quiet": lambda: slave.judge_quiet(time.monotonic() * 1e3),  # per valve, ms
     }
     sync_msg, rpdo_msg = frame(0x80, b""), frame(0x20A, rpdo_data)
 
@@ -195,12 +198,19 @@ def per_frame(n: int) -> None:
         for _ in range(n):
             step()
         costs[name] = (time.process_time() - started) / n * 1e6
+    valve.stop()
+    started = time.process_time()
+    for _ in range(n):
+        valve.advance(0.001)
+    costs["1 ms of the loop"] = (time.process_time() - started) / n * 1e6
     print(f"per frame ({'canopen_udp' if fast else 'can.Message'}): "
           + ", ".join(f"{k} {v:.1f} us" for k, v in costs.items()))  # fmt: skip
     for count, period_ms in ((16, 1.0), (32, 2.0)):
         frames_in = 1 + count  # one SYNC and an RPDO1 per valve each period
+        asked = period_ms if fast else frames_in  # the hub asks each valve per ms / per frame
         need = (frames_in * costs["decode"] + count * (costs["SYNC (TPDO1 out)"] + costs["RPDO1"])
-                + count * period_ms * costs["1 ms of the loop"])  # fmt: skip
+                + count * period_ms * (costs["1 ms of the loop"] + costs["hub: judged quiet"])
+                + asked * count * costs["hub: wait asked"])  # fmt: skip
         print(f"  serving {count} valves @ {period_ms:g} ms needs {need:.0f} us of CPU per period "
               f"= {need / (period_ms * 10):.0f} % of one core")  # fmt: skip
     slave.stop()

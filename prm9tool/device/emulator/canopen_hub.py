@@ -11,7 +11,8 @@ millisecond, each given to one valve (NMT, SYNC and LSS to all).
 Deadlines stay judged at reception times (:mod:`.canopen_watch`): every frame on the shared
 socket proves that nothing arrived before it, so at most every :data:`JUDGE_EVERY_MS` the
 valves are judged at the arrival of the frame in hand, and when the bus is quiet at the moment
-``recv`` timed out.
+``recv`` timed out. How long ``recv`` may wait (the next deadline of any valve) is asked of the
+valves at most every :data:`JUDGE_EVERY_MS` too, not per frame (N valves × 2N + 1 frames).
 
 The bus's socket (where it has one: udp_multicast, SocketCAN) gets a receive buffer of
 :data:`RECEIVE_BUFFER` bytes (as far as ``net.core.rmem_max`` allows): the kernel's default
@@ -22,6 +23,7 @@ the kernel drops for a full buffer is a SYNC or an RPDO the valves never see.
 from __future__ import annotations
 
 import logging
+import math
 import socket
 import threading
 import time
@@ -84,11 +86,19 @@ class SharedBus:
     def _receive(self) -> None:
         judged_ms = 0.0
         receive = self._receive_frame
+        due_ms, asked_ms = 0.0, -math.inf  # when a watch is next due; when that was asked
         while not self._stop.is_set():
             slaves = self._slaves
-            wait = min((s.rx_wait_s() for s in slaves), default=0.1)
+            now_ms = time.monotonic() * 1000.0
+            wait_ms = due_ms - now_ms
+            if now_ms - asked_ms >= JUDGE_EVERY_MS:  # not per frame: N valves x N frames
+                asked_ms = now_ms
+                due_ms = now_ms + min((s.rx_wait_s() for s in slaves), default=0.1) * 1000.0
+                wait_ms = due_ms - now_ms
+            else:  # a frame since may have armed an earlier deadline: ask again within 1 ms
+                wait_ms = min(wait_ms, JUDGE_EVERY_MS)
             try:
-                frame = receive(wait)
+                frame = receive(max(0.0, wait_ms) / 1000.0)
             except Exception as exc:  # a closed or failing bus must not end the thread silently
                 if self._stop.is_set():
                     return
@@ -99,7 +109,7 @@ class SharedBus:
             if frame is None:
                 for slave in slaves:
                     slave.judge_quiet(now_ms)
-                judged_ms = now_ms
+                judged_ms, asked_ms = now_ms, -math.inf  # judged: ask for the next due now
                 continue
             can_id, data, timestamp = frame
             takers = self._routes.get(can_id, ())
