@@ -22,7 +22,7 @@ from test_can_processes import NAMESPACE, _namespace_problem
 DRIVER = Path(__file__).parent / "support" / "plc_rig_driver.py"
 GROUP = "239.74.163.12"
 VALVES, SECONDS = 16, 4  # the machine: 16 valves (the benchmark: 1 ms, 60 s)
-HEADROOM = 4  # the serving process may use a quarter of the CPU share this process gets
+HEADROOM = 6  # the serving process may use a sixth of the CPU share this process gets
 PERIOD_LIMITS_MS = (2, 20)  # 2 ms: the 32-valve rate; 20 ms: still a real PLC's cycle
 SQUARE = 4096  # plc_rig_driver's setpoint square, ±25 %
 
@@ -46,12 +46,13 @@ def _period_ms() -> int:
         valve.advance(2.0)
         for data in ("2F00180201000000", "2B40600008000000", "2B40600009000000",
                      "2B4060000B000000", "2B4060000F000000"):  # fmt: skip
-            slave.receive_data(0x601, bytes.fromhex(data), time.time())
-        slave.receive_data(0, b"\x01\x01", time.time())
+            slave.receive_data(0x60A, bytes.fromhex(data), time.time())  # node 10
+        slave.receive_data(0, b"\x01\x0a", time.time())  # NMT start: OPERATIONAL
+        assert slave.state.name == "OPERATIONAL", slave.state
         rounds = 300
         wall, cpu = time.perf_counter(), time.process_time()
         for _ in range(rounds):
-            slave.receive_data(0x201, b"\x0f\x00\x00\x10", time.time())
+            slave.receive_data(0x20A, b"\x0f\x00\x00\x10", time.time())
             slave.receive_data(0x080, b"", time.time())
             valve.advance(0.001)
         cpu, wall = time.process_time() - cpu, time.perf_counter() - wall

@@ -119,8 +119,8 @@ class SharedBus:
                 judged_ms = now_ms
                 arrival = now_ms - max(0.0, time.time() - timestamp) * 1000.0
                 for slave in slaves:
-                    if slave not in takers:
-                        slave.judge_quiet(arrival)
+                    if slave not in takers:  # frames keep coming: a busy valve waits for one
+                        slave.judge_quiet(arrival, wait=False)
 
     def _receive_message(self, timeout: float | None) -> canopen_udp.Frame | None:
         """The next classical data frame through ``bus.recv`` (any python-can bus)."""

@@ -202,9 +202,17 @@ class CanopenSlave:
         """How long a receiver may wait for a frame before :meth:`judge_quiet` is due."""
         return self._watches.wait_s()
 
-    def judge_quiet(self, quiet_until_ms: float) -> None:
-        """No frame for this valve arrived up to ``quiet_until_ms`` (wall clock, ms)."""
-        self._judge_quiet(quiet_until_ms)
+    def judge_quiet(self, quiet_until_ms: float, wait: bool = True) -> None:
+        """No frame for this valve arrived up to ``quiet_until_ms`` (wall clock, ms).
+        ``wait=False``: not now if the valve is busy (its paced thread runs a batch): a later
+        call judges what passed meanwhile, and the receiving thread is not held up."""
+        if wait:
+            self._judge_quiet(quiet_until_ms)
+        elif self._valve.lock.acquire(blocking=False):
+            try:
+                self._judge_quiet(quiet_until_ms)
+            finally:
+                self._valve.lock.release()
 
     def receive_frame(self, msg: can.Message) -> None:
         """A frame from the bus."""
