@@ -9,6 +9,13 @@ actually sent per second, the EMCYs seen (none expected: every one is a false al
 and the machine's load average; the single-valve run of the same invocation is the reference.
 
     .venv/bin/python benchmarks/bench_plc_rig.py [--valves 1,4,8,16,32] [--seconds 10] [--quick]
+        [--compare OTHER_CHECKOUT] [--profile OUT]
+
+First the per-frame path in CPU time (what N valves need of a core per period) and the PLC's
+own cost per frame; then the rig, with each process's CPU and run-queue wait per second (the
+OS's share). The PLC here is lean (frames through ``canopen_udp``, no ``can.Message``), so the
+figures are the serving process's. ``--compare`` serves each run from another checkout and
+from this one in turn and prints the ratios (docs/PERFORMANCE.md, "The PLC rig").
 
 The SYNC period is 1 ms up to 16 valves and 2 ms above (the issue's 32 valves at 2 ms).
 ``--quick`` (a smoke run, CI): 1 and 2 valves for 1 s each. Needs ``unshare -n`` (root or user
