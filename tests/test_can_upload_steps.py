@@ -61,7 +61,7 @@ def test_a_valve_that_restarts_between_verify_and_store_is_not_reported_stored(t
             store = session.store
 
             def brown_out_then_store() -> None:
-                rig.valve.canopen.nmt_event("reset_node")  # power dip after the verify
+                rig.valve.nmt_event("reset_node")  # power dip after the verify
                 deadline = time.monotonic() + 5
                 while rig.valve.status().nmt_state != "pre-operational":
                     assert time.monotonic() < deadline

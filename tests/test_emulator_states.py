@@ -174,9 +174,9 @@ def test_can_led_follows_the_nmt_state():
     valve = booted_ca()
     assert valve.status().nmt_state == "pre-operational"
     assert valve.status().leds[2].pattern == "2.5Hz"
-    valve.canopen.nmt_event("operational")
+    valve.nmt_event("operational")
     assert valve.status().leds[2].pattern == "on"
-    valve.canopen.nmt_event("stopped")
+    valve.nmt_event("stopped")
     assert valve.status().leds[2].pattern == "single_flash"
 
 
@@ -185,9 +185,9 @@ def test_can_led_follows_the_nmt_state():
 )
 def test_nmt_events_take_an_active_valve_to_fault_reaction(event):
     valve = booted_ca()
-    valve.canopen.nmt_event("operational")
+    valve.nmt_event("operational")
     valve.write(0x6040, 0, 0x0F)
-    valve.canopen.nmt_event(event)
+    valve.nmt_event(event)
     assert valve.status().device_state is S.FAULT_REACTION
     valve.advance(0.01)
     assert valve.status().device_state is S.FAULT_HOLD
@@ -195,12 +195,12 @@ def test_nmt_events_take_an_active_valve_to_fault_reaction(event):
 
 def test_comm_error_is_an_error_until_operational_again():
     valve = booted_ca()
-    valve.canopen.nmt_event("comm_error")
+    valve.nmt_event("comm_error")
     status = valve.status()
     assert status.error_code == 0x8100
     assert status.error_register == 0x11
     assert status.leds[1].pattern == "double_flash"
-    valve.canopen.nmt_event("operational")
+    valve.nmt_event("operational")
     valve.advance(10.1)
     assert valve.status().error_code == 0
 
@@ -215,15 +215,15 @@ def test_comm_error_is_an_error_until_operational_again():
 )
 def test_can_errors_of_table_7_18_flash_led2_and_go_when_operational_again(event, text, led2):
     valve = booted_ca()
-    valve.canopen.nmt_event("operational")
-    valve.canopen.nmt_event(event)
+    valve.nmt_event("operational")
+    valve.nmt_event(event)
     status = valve.status()
     assert (status.error_code, status.error_register) == (0x8100, 0x11)
     assert text in status.error_text
     assert status.leds[0].color == "green" and status.leds[0].pattern == "on"
     assert status.leds[1].pattern == led2
     assert status.leds[2].pattern == "single_flash"
-    valve.canopen.nmt_event("operational")
+    valve.nmt_event("operational")
     valve.advance(10.1)
     assert valve.status().error_code == 0
     assert valve.status().leds[1].pattern == "off"
@@ -232,7 +232,7 @@ def test_can_errors_of_table_7_18_flash_led2_and_go_when_operational_again(event
 def test_reset_node_power_cycles():
     valve = booted_ca()
     valve.write(0x6332, 1, 500)  # not stored
-    valve.canopen.nmt_event("reset_node")
+    valve.nmt_event("reset_node")
     assert valve.status().booting
     assert valve.read(0x6332, 1) == 0
 
@@ -241,7 +241,7 @@ def test_reset_communication_restores_communication_objects():
     valve = booted_ca()
     valve.write(0x1017, 0, 50)
     valve.write(0x6332, 1, 500)
-    valve.canopen.nmt_event("reset_comm")
+    valve.nmt_event("reset_comm")
     assert valve.read(0x1017, 0) == 1000
     assert valve.read(0x6332, 1) == 500
     assert valve.status().nmt_state == "pre-operational"
@@ -249,7 +249,7 @@ def test_reset_communication_restores_communication_objects():
 
 def test_unknown_nmt_event_is_refused():
     with pytest.raises(ValueRangeError, match="unknown NMT event 'start'"):
-        booted_ca().canopen.nmt_event("start")
+        booted_ca().nmt_event("start")
 
 
 def test_setpoint_override_times_out_without_usb_activity():
@@ -289,7 +289,7 @@ def test_reset_node_from_inside_the_loop_restarts_cleanly():
     def listener(now: float) -> None:
         if not fired and now >= 2.5:
             fired.append(now)
-            valve.canopen.nmt_event("reset_node")
+            valve.nmt_event("reset_node")
 
     valve.add_cycle_listener(listener)
     valve.advance(1.0)  # 2.0 -> 2.5 s, power cycle, then 0 -> 0.5 s

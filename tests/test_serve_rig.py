@@ -92,10 +92,10 @@ def test_each_emcy_is_told_with_the_error_that_raised_it(valves):
     valve = valves[0]
     told: list[tuple[int, str | None]] = []
     valve.add_error_cause_listener(lambda code, _reg, kind: told.append((code, kind and kind.text)))
-    valve.canopen.nmt_event("operational")
-    valve.canopen.nmt_event("sync_error")
-    valve.canopen.nmt_event("operational")
-    valve.canopen.nmt_event("rpdo_timeout")
+    valve.nmt_event("operational")
+    valve.nmt_event("sync_error")
+    valve.nmt_event("operational")
+    valve.nmt_event("rpdo_timeout")
     assert [code for code, _ in told] == [0x8100, 0x8100]
     assert told[0][1].startswith("CANopen SYNC not received")
     assert told[1][1].startswith("CANopen RPDO not received within its event timer")

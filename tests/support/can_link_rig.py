@@ -140,7 +140,7 @@ def _wrap_sdo(rig: LinkRig) -> None:
             if rig.silent_after is not None and rig.requests > rig.silent_after:
                 return
             if rig.reset_at is not None and rig.requests == rig.reset_at:
-                rig.valve.canopen.nmt_event("reset_node")
+                rig.valve.nmt_event("reset_node")
                 return
         on_message(msg)
 

@@ -200,6 +200,11 @@ class EmulatedValve:
         """An NMT command from the USB side (:meth:`.valve_canopen.CanopenSide.nmt_command`)."""
         self.canopen.nmt_command(command)
 
+    def nmt_event(self, event: str) -> None:
+        """An NMT state change or communication error as the CANopen slave reports it (how a
+        test causes one: docs/emulator.md, the fault table): :attr:`canopen`'s."""
+        self.canopen.nmt_event(event)
+
     # --- simulation -------------------------------------------------------------------
     @property
     def plant(self) -> PlantConstants:
