@@ -1,6 +1,7 @@
 """The emulated valve's CANopen side: what its CANopen slave (``canopen_slave.py``) and its
-LSS slave use of it — SDO access as the chosen object dictionary answers it, the node ID and
-bit rate latched at power-up, LSS, NMT and the slave's hooks into the firmware.
+LSS slave do to it — SDO access as the chosen object dictionary answers it, LSS (node ID, bit
+timing, store), NMT events and commands — and :class:`SlaveValve`, all the slave uses of a
+valve (this part, the lock, the listeners and what the valve tells: node ID, bit rate, …).
 
 A part the :class:`~prm9tool.device.emulator.valve.EmulatedValve` holds as ``valve.canopen``
 (API contract: docs/emulator.md): it is given the valve's lock, firmware, object-dictionary
