@@ -14,6 +14,13 @@ its own tests and limits (``[process.test]``, ``[process.limits]``, defaults
 :data:`DEFAULT_PROCESS`): an integrating actuator needs longer windows and cannot meet a
 spool's limits. A figure that could not be
 measured (a step that never settles) fails a limit set on it.
+
+``[drift]`` (and ``[process.drift]``) set how far a figure of the field signature may be from
+the same figure of the valve's birth certificate (its end-of-line test in the history, issue 31;
+:mod:`prm9tool.characterize.drift`): ``bode_bandwidth_hz = { relative = 15 }`` (± % of the
+birth certificate's value), ``static_hysteresis_pct = { absolute = 0.5 }`` (± in the figure's
+unit: percentage points for the figures in %); defaults :data:`DEFAULT_DRIFT` and
+:data:`DEFAULT_PROCESS_DRIFT`, a figure without one is reported and not judged.
 """
 
 from __future__ import annotations
@@ -72,6 +79,34 @@ class Limit:
 
 
 @dataclass(frozen=True)
+class DriftLimit:
+    """How far a figure may drift from its birth certificate's value (None: not checked that
+    way): ``relative`` in % of that value, ``absolute`` in the figure's unit. Within both."""
+
+    relative: float | None = None
+    absolute: float | None = None
+
+    def passed(self, reference: float, value: float) -> bool:
+        """True when ``value`` is within the limit around ``reference`` (NaN: False)."""
+        if math.isnan(value) or math.isnan(reference):
+            return False
+        change = abs(value - reference)
+        if self.relative is not None and change > abs(reference) * self.relative / 100.0:
+            return False
+        return self.absolute is None or change <= self.absolute
+
+    def text(self, unit: str = "") -> str:
+        """``± 15 %`` (relative), ``± 0.5 pp``/``± 0.03`` (absolute)."""
+        parts = []
+        if self.relative is not None:
+            parts.append(f"± {self.relative:g} %")
+        if self.absolute is not None:
+            shown = "pp" if unit == "%" else unit
+            parts.append(f"± {self.absolute:g} {shown}".strip())
+        return ", ".join(parts) or "—"
+
+
+@dataclass(frozen=True)
 class Profile:
     """What to run and the limits (the defaults suit a PRM9-06 on the emulator's plant)."""
 
@@ -86,6 +121,7 @@ class Profile:
     flow_amplitude_pct: float = 40.0  # E04: process setpoint steps centre ∓ this
     flow_duration_s: float = 1.0
     limits: dict[str, Limit] = field(default_factory=dict)
+    drift: dict[str, DriftLimit] = field(default_factory=dict)  # the signature's, per figure
     process: Profile | None = None  # the E04 process loop's tests and limits (None: DEFAULT's)
     loop: str = "position"  # the loop these tests and limits are for
 
@@ -120,15 +156,40 @@ DEFAULT_PROCESS_LIMITS = {
     "static_hysteresis_pct": Limit(maximum=4.0),
     "static_linearity_pct": Limit(maximum=2.0),
 }
+# How far the field signature's figures may be from the birth certificate's (decisions, with a
+# margin over what the signature and the end-of-line test of one unchanged emulated valve
+# differ by: −3 dB 1.8 %, −90° 0.4 %, hysteresis 0.04 pp, dead band 0.1 pp; docs/twin.md).
+# The linearity is not judged: the signature's loop spans ±50 %, not the whole range.
+DEFAULT_DRIFT = {
+    "step_overshoot_pct": DriftLimit(absolute=3.0),
+    "step_rise_s": DriftLimit(relative=25.0),
+    "step_settling_s": DriftLimit(relative=50.0),
+    "bode_bandwidth_hz": DriftLimit(relative=15.0),
+    "bode_phase90_hz": DriftLimit(relative=15.0),
+    "static_gain": DriftLimit(absolute=0.03),
+    "static_hysteresis_pct": DriftLimit(absolute=0.5),
+    "static_dead_band_pct": DriftLimit(absolute=0.5),
+}
+DEFAULT_PROCESS_DRIFT = {  # the E04 process loop: an actuator's, slower and less repeatable
+    "step_overshoot_pct": DriftLimit(absolute=5.0),
+    "step_rise_s": DriftLimit(relative=30.0),
+    "step_settling_s": DriftLimit(relative=50.0),
+    "bode_bandwidth_hz": DriftLimit(relative=20.0),
+    "bode_phase90_hz": DriftLimit(relative=20.0),
+    "static_gain": DriftLimit(absolute=0.05),
+    "static_hysteresis_pct": DriftLimit(absolute=1.0),
+    "static_dead_band_pct": DriftLimit(absolute=1.0),
+}
 DEFAULT_PROCESS = Profile(
     loop="process",
     step_duration_s=1.5,
     bode_f_min_hz=0.2,
     bode_f_max_hz=20.0,
     limits=DEFAULT_PROCESS_LIMITS,
+    drift=DEFAULT_PROCESS_DRIFT,
 )
-DEFAULT = Profile(limits=DEFAULT_LIMITS, process=DEFAULT_PROCESS)
-_TEST_KEYS = {f.name for f in fields(Profile)} - {"name", "limits", "process", "loop"}
+DEFAULT = Profile(limits=DEFAULT_LIMITS, drift=DEFAULT_DRIFT, process=DEFAULT_PROCESS)
+_TEST_KEYS = {f.name for f in fields(Profile)} - {"name", "limits", "drift", "process", "loop"}
 
 
 def load_profile(path: str | Path) -> Profile:
@@ -145,17 +206,19 @@ def load_profile(path: str | Path) -> Profile:
 def parse_profile(data: dict[str, Any], where: str = "profile") -> Profile:
     """A profile from parsed TOML (see the module docstring); ``[process.test]`` and
     ``[process.limits]`` set the E04 process loop's, starting from its own defaults."""
-    unknown = set(data) - {"name", "test", "limits", "process"}
+    unknown = set(data) - {"name", "test", "limits", "drift", "process"}
     if unknown:
         raise ProfileError(
-            f"{where}: unknown key {sorted(unknown)[0]!r} (name, [test], [limits], [process])"
+            f"{where}: unknown key {sorted(unknown)[0]!r} (name, [test], [limits], [drift], "
+            "[process])"
         )
     process = data.get("process", {})
-    if not isinstance(process, dict) or not set(process) <= {"test", "limits"}:
-        extra = sorted(set(process) - {"test", "limits"}) if isinstance(process, dict) else []
+    parts = {"test", "limits", "drift"}
+    if not isinstance(process, dict) or not set(process) <= parts:
+        extra = sorted(set(process) - parts) if isinstance(process, dict) else []
         raise ProfileError(
-            f"{where}: [process] holds only [process.test] and [process.limits]"
-            + (f", not {extra[0]!r}" if extra else "")
+            f"{where}: [process] holds only [process.test], [process.limits] and "
+            "[process.drift]" + (f", not {extra[0]!r}" if extra else "")
         )
     name = str(data.get("name", Path(where).stem))
     whole = _part(DEFAULT, data, where, "")
@@ -186,7 +249,27 @@ def _part(base: Profile, data: dict[str, Any], where: str, prefix: str) -> Profi
             None if lo is None else float(_number(where, key, lo)),
             None if hi is None else float(_number(where, key, hi)),
         )
-    return replace(base, limits=limits, **changes)
+    drift = dict(base.drift)
+    for key, value in _table(data, "drift", where, prefix).items():
+        if key not in FIGURES:
+            raise ProfileError(
+                f"{where}: [{prefix}drift] has no figure {key!r}; figures: {', '.join(FIGURES)}"
+            )
+        if not isinstance(value, dict) or not value or not set(value) <= {"relative", "absolute"}:
+            raise ProfileError(
+                f"{where}: [{prefix}drift] {key} must be {{ relative = … }} (% of the birth "
+                "certificate's value) and/or { absolute = … } (in the figure's unit)"
+            )
+        rel, ab = value.get("relative"), value.get("absolute")
+        for name, number in (("relative", rel), ("absolute", ab)):
+            if number is not None and (not _is_number(number) or number < 0):
+                raise ProfileError(
+                    f"{where}: [{prefix}drift] {key}: {name} must be a number ≥ 0, not {number!r}"
+                )
+        drift[key] = DriftLimit(
+            None if rel is None else float(rel), None if ab is None else float(ab)
+        )
+    return replace(base, limits=limits, drift=drift, **changes)
 
 
 def _table(data: dict[str, Any], key: str, where: str, prefix: str) -> dict[str, Any]:
