@@ -89,7 +89,9 @@ class Reference:
         from dataclasses import replace
 
         part = DEFAULT.for_loop(self.loop)
-        known = {k: v for k, v in self.tests.items() if hasattr(part, k) and k != "loop"}
+        known: dict[str, Any] = {
+            k: v for k, v in self.tests.items() if hasattr(part, k) and k != "loop"
+        }
         return replace(part, **known) if known else part
 
 
@@ -131,7 +133,9 @@ def reference_of(
     for f in details.get("figures", []):
         value = f.get("value")
         number = math.nan if value is None else float(value)
-        figures[str(f["name"])] = ReferenceFigure(number, str(f.get("unit", "")), bool(f.get("above")))
+        figures[str(f["name"])] = ReferenceFigure(
+            number, str(f.get("unit", "")), bool(f.get("above"))
+        )
     tests = details.get("tests") if isinstance(details.get("tests"), dict) else {}
     curves = details.get("curves") if isinstance(details.get("curves"), dict) else None
     return Reference(
@@ -328,9 +332,12 @@ class DriftReport:
             "passed": self.passed,
             "summary": self.summary(),
             "reference": {
-                "record": ref.record_id, "date": ref.date, "outcome": ref.outcome,
-                "end_of_line": ref.end_of_line, "profile": ref.profile,
-            },  # fmt: skip
+                "record": ref.record_id,
+                "date": ref.date,
+                "outcome": ref.outcome,
+                "end_of_line": ref.end_of_line,
+                "profile": ref.profile,
+            },
             "motion_s": round(self.plan.motion_s, 2),
             "figures": [_item_dict(i) for i in self.items],
             "lines": self.lines(),

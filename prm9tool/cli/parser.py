@@ -194,6 +194,12 @@ def build_parser() -> argparse.ArgumentParser:
         help="with --enable: the hydraulics are safe for the test to move the spool",
     )  # fmt: skip
     eol.add_argument(
+        "--signature", action="store_true",
+        help="the field signature of one valve (≤ 20 s of motion) against its birth "
+        "certificate in the history (its end-of-line test): the drift in words, --report "
+        "OUT.pdf, --json [OUT.json]; exit 0 no drift, 8 drifted, 7 no birth certificate",
+    )  # fmt: skip
+    eol.add_argument(
         "--fit-twin", metavar="OUT.toml",
         help="fit the valve's twin (plant constants, docs/twin.md) from --from RUN.json, or "
         "characterize the one valve of --device/--emulator (--profile) and fit from that run; "
