@@ -437,7 +437,9 @@ def curves(result: Characterization) -> dict[str, Any]:
     out: dict[str, Any] = {"steps": steps}
     if result.bode is not None:
         r = result.bode.response
-        keep = np.unique(np.geomspace(1, len(r.frequency), BODE_POINTS).astype(int) - 1)
+        reliable = np.flatnonzero(r.reliable())  # the points its figures were found on
+        picks = np.geomspace(1, max(1, len(reliable)), BODE_POINTS).astype(int) - 1
+        keep = reliable[np.unique(picks)] if len(reliable) else np.zeros(0, dtype=int)
         out["bode"] = {
             "frequency": _thin(r.frequency[keep], BODE_POINTS),
             "magnitude_db": _thin(r.magnitude_db[keep], BODE_POINTS),

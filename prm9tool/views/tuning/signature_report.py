@@ -163,30 +163,38 @@ def _array(values: list[float | None]) -> np.ndarray:
 
 
 def step_plots(report: DriftReport) -> list[Plot]:
-    """Each of today's steps, with the birth certificate's step of the same amplitude under it
-    (dashed) where its record kept one."""
+    """One plot per step size: today's step up, today's step down mirrored (×−1, so an
+    asymmetry shows) and the birth certificate's step up (dashed) where its record kept one."""
     from prm9tool.characterize.procedures import LOOPS
 
     lp = LOOPS[report.today.loop]
     kept = {}
     for step in (report.reference.curves or {}).get("steps", []):
         kept[float(step.get("amplitude_pct", math.nan))] = step
+    sizes = sorted({abs(s.amplitude_pct) for s in report.today.steps})
     plots = []
-    for step in report.today.steps:
-        ch = step.record.channels
-        t = step.record.t * 1000
-        series = [
-            Series(t, ch[lp.setpoint], translate("SignatureReport", "setpoint"), COLOURS[0], True),
-            Series(t, ch[lp.actual], translate("SignatureReport", "today"), COLOURS[1]),
-        ]
-        old = kept.get(step.amplitude_pct)
+    for size in sizes:
+        up = [s for s in report.today.steps if s.amplitude_pct == size]
+        down = [s for s in report.today.steps if s.amplitude_pct == -size]
+        series = []
+        for step in up[:1]:
+            t, ch = step.record.t * 1000, step.record.channels
+            series.append(Series(t, ch[lp.setpoint], translate("SignatureReport", "setpoint"), COLOURS[0], True))  # fmt: skip
+            series.append(Series(t, ch[lp.actual], translate("SignatureReport", "today"), COLOURS[1]))  # fmt: skip
+        for step in down[:1]:
+            t, ch = step.record.t * 1000, step.record.channels
+            series.append(
+                Series(t, -ch[lp.actual], translate("SignatureReport", "today, step down ×−1"),
+                       COLOURS[4])
+            )  # fmt: skip
+        old = kept.get(size)
         if old is not None:
             series.append(
                 Series(_array(old["t"]) * 1000, _array(old["actual"]),
                        translate("SignatureReport", "birth certificate"), COLOURS[3], True)
             )  # fmt: skip
-        title = translate("SignatureReport", "Step response %1 %").replace(
-            "%1", _local(f"{step.amplitude_pct:g}".replace("-", "−"))
+        title = translate("SignatureReport", "Step response ±%1 %").replace(
+            "%1", _local(f"{size:g}")
         )
         plots.append(Plot(title, translate("SignatureReport", "time [ms]"), "%", series))
     return plots
@@ -198,11 +206,11 @@ def bode_plots(report: DriftReport) -> list[Plot]:
     if bode is None:
         return []
     r = bode.response
+    ok = r.reliable()  # the points the figures were found on (coherent enough)
     hz = translate("SignatureReport", "frequency [Hz]")
-    magnitude = [
-        Series(r.frequency, r.magnitude_db, translate("SignatureReport", "today"), COLOURS[1])
-    ]
-    phase = [Series(r.frequency, r.phase_deg, translate("SignatureReport", "today"), COLOURS[1])]
+    today = translate("SignatureReport", "today")
+    magnitude = [Series(r.frequency[ok], r.magnitude_db[ok], today, COLOURS[1])]
+    phase = [Series(r.frequency[ok], r.phase_deg[ok], today, COLOURS[1])]
     old = (report.reference.curves or {}).get("bode")
     if old:
         f = _array(old["frequency"])
