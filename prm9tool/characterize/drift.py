@@ -24,7 +24,7 @@ from typing import Any
 import numpy as np
 
 from prm9tool._version import __version__
-from prm9tool.analysis.profile import DEFAULT, DriftLimit, Profile
+from prm9tool.analysis.profile import DEFAULT, SMALL_STEP_PCT, DriftLimit, Profile
 from prm9tool.characterize.rig import Rig
 from prm9tool.characterize.run import Characterization, Figure, Progress
 from prm9tool.characterize.signature import Plan, plan, run_signature
@@ -251,13 +251,12 @@ def _judge(limit: DriftLimit | None, today: Figure, ref: ReferenceFigure) -> boo
 
 def compare(today: Characterization, reference: Reference, profile: Profile) -> list[DriftItem]:
     """Each figure of the signature against the birth certificate's (profile's ``[drift]``
-    limits for the loop; a step figure's limit is its kind's)."""
+    limits for the loop: :func:`limit_of`)."""
     limits = profile.for_loop(today.loop).drift
     items = []
     for f in today.figures:
-        base = _base(f.name)
         ref = reference.figures.get(f.name)
-        limit = limits.get(base)
+        limit = limit_of(f.name, limits)
         if ref is None:
             items.append(DriftItem(f.name, f.label, f.unit, f.value, None, limit, None, f.above))
             continue
@@ -270,12 +269,19 @@ def compare(today: Characterization, reference: Reference, profile: Profile) -> 
     return items
 
 
-def _base(name: str) -> str:
-    """``step_-5_rise_s`` → ``step_rise_s``; other figures are their own kind."""
+def limit_of(name: str, limits: Mapping[str, DriftLimit]) -> DriftLimit | None:
+    """The drift limit of figure ``name``: its own (``step_5_rise_s``), else its kind's
+    (``step_rise_s``; for a step of at least SMALL_STEP_PCT only), else None."""
+    if name in limits:
+        return limits[name]
     parts = name.split("_")
-    if parts[0] == "step" and len(parts) == 4:
-        return f"step_{parts[2]}_{parts[3]}"
-    return name
+    if parts[0] != "step" or len(parts) != 4:
+        return None
+    try:
+        small = abs(float(parts[1])) < SMALL_STEP_PCT
+    except ValueError:
+        return None
+    return None if small else limits.get(f"step_{parts[2]}_{parts[3]}")
 
 
 @dataclass

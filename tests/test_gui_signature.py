@@ -1,0 +1,105 @@
+"""Issue 31 item 5 in the Tuning window: "Compare with birth certificate" runs the field
+signature on the connected valve off the GUI thread, shows the drift and saves the PDF;
+without a birth certificate it says how to make one; offline it asks for the valve."""
+
+from __future__ import annotations
+
+import os
+from pathlib import Path
+
+import pytest
+from PySide6.QtWidgets import QMessageBox
+
+from prm9tool.model.document import ParameterDocument
+from prm9tool.views.tuning.window import TuningWindow
+
+E02 = "PRM9-06.3Z11/30-24E02S02"
+SHOTS = os.environ.get("PRM9TOOL_SCREENSHOTS")
+
+
+@pytest.fixture
+def online(qtbot, tmp_path):
+    """A connection online with emulated valve 7201, recording into a fresh history."""
+    from support.gui_support import emulator_connection
+
+    from prm9tool.device import factory
+    from prm9tool.history.recorder import Recorder
+
+    connection = emulator_connection()  # unpaced: the link's reports step the valve
+    recorder = Recorder(f"sqlite:///{tmp_path / 'history.db'}", queue=tmp_path / "q.jsonl")
+    connection.set_recorder(recorder)
+    try:
+        entry = factory.list_devices([f"{E02}:7201"])[-1]
+        with qtbot.waitSignal(connection.online_changed, timeout=10000):
+            connection.go_online(entry)
+        yield connection, recorder
+    finally:
+        connection.shutdown()
+        recorder.close()
+        factory.forget_emulated_valves()
+
+
+def _window(qtbot, connection=None) -> TuningWindow:
+    w = TuningWindow(ParameterDocument(E02), connection)
+    qtbot.addWidget(w)
+    w.show()
+    return w
+
+
+def test_offline_the_comparison_asks_for_the_valve(qtbot):
+    w = _window(qtbot)
+    w.tabs.setCurrentWidget(w.signature)
+    assert w.signature.run_button.text() == "Compare with birth certificate"
+    w.signature.run_button.click()
+    assert "go online with the valve first" in w.signature.result.text()
+    assert not w.runner.busy
+
+
+def test_without_a_birth_certificate_the_window_says_how_to_make_one(qtbot, online, monkeypatch):
+    connection, _recorder = online
+    w = _window(qtbot, connection)
+    monkeypatch.setattr(QMessageBox, "question", lambda *a: QMessageBox.StandardButton.Yes)
+    w.signature.run_button.click()
+    qtbot.waitUntil(lambda: not w.runner.busy, timeout=30000)
+    assert "no end-of-line test of serial 7201" in w.status.text()
+    assert "Run the end-of-line test" in w.status.text()
+    assert not w.signature.save_button.isEnabled()
+
+
+def test_the_comparison_runs_on_the_valve_shows_the_drift_and_saves_the_pdf(
+    qtbot, online, monkeypatch, tmp_path
+):
+    from prm9tool.analysis.profile import DEFAULT
+    from prm9tool.characterize.rig import EmulatorRig
+    from prm9tool.characterize.run import characterize
+    from prm9tool.device import factory
+    from prm9tool.service.history import record_characterization
+
+    connection, recorder = online
+    # its birth certificate: the end-of-line test of the same valve (stepped here)
+    valve = factory.emulated_valve(E02, 7201)
+    record_characterization(recorder, characterize(EmulatorRig(valve), DEFAULT))
+    w = _window(qtbot, connection)
+    w.tabs.setCurrentWidget(w.signature)
+    asked = []
+    monkeypatch.setattr(
+        QMessageBox, "question", lambda *a: asked.append(a[2]) or QMessageBox.StandardButton.Yes
+    )
+    w.signature.run_button.click()
+    assert "moves the spool" in asked[0] and "at most 20 s" in asked[0]
+    assert w.runner.busy  # off the GUI thread: the window is still there to Stop it
+    qtbot.waitUntil(lambda: not w.runner.busy, timeout=180000)
+    page = w.signature
+    assert "since the end-of-line test on" in page.result.text(), w.status.text()
+    rows = {page.table.item(r, 0).text(): r for r in range(page.table.rowCount())}
+    assert "−3 dB frequency" in rows and "hysteresis" in rows
+    assert page.table.item(rows["−3 dB frequency"], 4).text() == "± 15 %"
+    assert page.plot.plots  # today's step and Bode over the birth certificate's
+    assert any("birth certificate" in s.label for p in page.plot.plots for s in p.series)
+    if SHOTS:
+        w.grab().save(str(Path(SHOTS) / "tuning_signature.png"))
+    monkeypatch.setattr(w, "save_file", lambda *_a: tmp_path / "drift.pdf")
+    page.save_button.click()
+    assert (tmp_path / "drift.pdf").read_bytes().startswith(b"%PDF")
+    operations = [r["operation"] for r in recorder.store().records(7201)]
+    assert operations[-1] == "signature"
