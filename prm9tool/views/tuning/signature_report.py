@@ -176,23 +176,23 @@ def step_plots(report: DriftReport) -> list[Plot]:
     for size in sizes:
         up = [s for s in report.today.steps if s.amplitude_pct == size]
         down = [s for s in report.today.steps if s.amplitude_pct == -size]
-        series = []
-        for step in up[:1]:
-            t, ch = step.record.t * 1000, step.record.channels
-            series.append(Series(t, ch[lp.setpoint], translate("SignatureReport", "setpoint"), COLOURS[0], True))  # fmt: skip
-            series.append(Series(t, ch[lp.actual], translate("SignatureReport", "today"), COLOURS[1]))  # fmt: skip
-        for step in down[:1]:
-            t, ch = step.record.t * 1000, step.record.channels
-            series.append(
-                Series(t, -ch[lp.actual], translate("SignatureReport", "today, step down ×−1"),
-                       COLOURS[4])
-            )  # fmt: skip
+        series = []  # drawn in order: the birth certificate and the step down beneath today's
         old = kept.get(size)
         if old is not None:
+            t_old, y_old = _array(old["t"]) * 1000, _array(old["actual"])
+            label = translate("SignatureReport", "birth certificate")
+            series.append(Series(t_old, y_old, label, COLOURS[3], True))
+        for step in down[:1]:
+            t, y = step.record.t * 1000, -step.record.channels[lp.actual]
+            label = translate("SignatureReport", "today, step down ×−1")
+            series.append(Series(t, y, label, COLOURS[4]))
+        for step in up[:1]:
+            t, ch = step.record.t * 1000, step.record.channels
+            label = translate("SignatureReport", "setpoint")
+            series.append(Series(t, ch[lp.setpoint], label, COLOURS[0], True))
             series.append(
-                Series(_array(old["t"]) * 1000, _array(old["actual"]),
-                       translate("SignatureReport", "birth certificate"), COLOURS[3], True)
-            )  # fmt: skip
+                Series(t, ch[lp.actual], translate("SignatureReport", "today"), COLOURS[1])
+            )
         title = translate("SignatureReport", "Step response ±%1 %").replace(
             "%1", _local(f"{size:g}")
         )
