@@ -4292,7 +4292,7 @@ Auf dem PC ging nichts verloren: Das Dokument enthält weiterhin jeden Wert, Sic
         </message>
         <message>
             <source>pp</source>
-            <translation>Pp.</translation>
+            <translation>Pp</translation>
         </message>
         <message>
             <source>not judged</source>
