@@ -457,7 +457,10 @@ def curves(result: Characterization) -> dict[str, Any]:
 def tests_of(result: Characterization) -> dict[str, float]:
     """The test settings of a run's loop (the ``tests`` of a characterization record): what a
     later signature needs to measure alike."""
-    part = result.profile.for_loop(result.loop)
+    for_loop = getattr(result.profile, "for_loop", None)
+    if for_loop is None:  # a run without a profile of its own (a record made by hand)
+        return {}
+    part = for_loop(result.loop)
     return {
         "step_duration_s": part.step_duration_s,
         "bode_amplitude_pct": part.bode_amplitude_pct,
