@@ -254,3 +254,63 @@ def test_the_api_compares_with_the_birth_certificate_it_recorded(tmp_path):
         "characterization",
         "signature",
     ]
+
+
+# --- over CANopen ------------------------------------------------------------------------------
+SHORT = """name = "short"
+[test]
+step_amplitudes_pct = [5, 50]
+step_duration_s = 0.1
+bode_f_min_hz = 2
+bode_f_max_hz = 100
+bode_duration_s = 3
+static_period_s = 4
+"""
+
+
+def test_the_signature_runs_over_canopen_with_its_sweep_within_the_link(
+    tmp_path, monkeypatch, capsys
+):
+    """An emulated -CA valve on a virtual bus (TPDO1 at the tool's SYNC): its end-of-line test
+    and its signature over CANopen, the sweep within what the link samples."""
+    from support.can_link_rig import make_link_rig
+
+    from prm9tool.catalogue import CATALOGUE
+    from prm9tool.catalogue.commissioning import ENABLE_SEQUENCE, NmtCommand
+    from prm9tool.cli.main import main
+    from prm9tool.errors import ExitCode
+
+    monkeypatch.setenv("PRM9TOOL_DATA_DIR", str(tmp_path / "data"))
+    rig = make_link_rig("signature-can", tmp_path, E02 + "-CA")
+    rig.valve.nmt_command(NmtCommand.START)
+    for value in ENABLE_SEQUENCE:
+        rig.valve.write(CATALOGUE["CONTROLWORD"].index, CATALOGUE["CONTROLWORD"].subindex, value)
+    rig.valve.start()
+    try:
+        (tmp_path / "short.toml").write_text(SHORT, encoding="utf-8")
+        url = f"sqlite:///{tmp_path / 'history.db'}"
+        can = ["--device", "can:10", "--can-interface", "virtual",
+               "--can-channel", rig.options.channel, "--history-db", url]  # fmt: skip
+        eol = tmp_path / "eol.json"
+        code = main(["--characterize", *can, "--profile", str(tmp_path / "short.toml"), "--json", str(eol)])  # fmt: skip
+        err = capsys.readouterr().err
+        if not eol.exists():  # a PC too loaded for the link's pace: said, not hidden
+            pytest.skip(f"the end-of-line test did not run on this loaded PC: {err.strip()}")
+        assert code in (ExitCode.OK, ExitCode.OUT_OF_LIMITS), err
+        js = tmp_path / "drift.json"
+        code = main(["--signature", *can, "--json", str(js)])
+        err = capsys.readouterr().err
+        if code == ExitCode.COMMUNICATION:
+            pytest.skip(f"the link refused the signature on this loaded PC: {err.strip()}")
+        assert js.exists(), err
+        data = json.loads(js.read_text(encoding="utf-8"))
+        assert code == (ExitCode.OK if data["passed"] else ExitCode.OUT_OF_LIMITS)
+        assert data["link"].startswith("CANopen node 10 (virtual ")
+        assert data["motion_s"] <= MOTION_LIMIT_S
+        names = {f["name"] for f in data["figures"]}
+        assert {"step_50_rise_s", "step_-50_rise_s", "bode_bandwidth_hz", "static_hysteresis_pct"} <= names  # fmt: skip
+        assert data["reference"]["profile"] == "short"
+        assert rig.working("SETPOVRON") == 0  # the override is off again
+    finally:
+        rig.valve.stop()
+        rig.close()

@@ -49,7 +49,8 @@ MOTION_LIMIT_S = 20.0  # the issue's "≤ 20 s of motion"
 SWEEP_S = 3.0  # the short sweep around the bandwidth
 LOOP_S = 10.0  # the hysteresis loop at the reference's rate
 SWEEP_BELOW, SWEEP_ABOVE = 4.0, 3.0  # the sweep spans bandwidth / 4 … bandwidth × 3
-PROCESS_SWEEP_S = 6.0  # the E04 process loop: ~1 Hz, slower
+PROCESS_SWEEP_S = 6.0
+SWEEP_SAMPLES = 1250.0  # a slow link's sweep lasts this many samples: 1000 arrive (the fit's)  # the E04 process loop: ~1 Hz, slower
 PROCESS_LOOP_S = 6.0
 
 
@@ -109,7 +110,7 @@ def plan(
         part.bode_amplitude_pct,
         f_min,
         f_max,
-        PROCESS_SWEEP_S if process else SWEEP_S,
+        max(PROCESS_SWEEP_S if process else SWEEP_S, SWEEP_SAMPLES / (sample_rate_hz or 1e9)),
         span,
         period,
     )
@@ -157,7 +158,7 @@ def run_signature(
         result.steps.append(step_test(rig, amplitude, duration_s=p.step_duration_s, loop=loop))
     say(f"frequency response ±{p.sweep_amplitude_pct:g} %, {p.sweep_f_min_hz:.3g} … "
         f"{p.sweep_f_max_hz:.3g} Hz")  # fmt: skip
-    duration = max(p.sweep_s, 256.0 / rig.info.sample_rate_hz)  # a slow link's minimum
+    duration = max(p.sweep_s, SWEEP_SAMPLES / rig.info.sample_rate_hz)
     result.bode = bode_test(
         rig, p.sweep_amplitude_pct, 0.0, p.sweep_f_min_hz, p.sweep_f_max_hz, duration, loop
     )
