@@ -314,3 +314,24 @@ def test_the_signature_runs_over_canopen_with_its_sweep_within_the_link(
     finally:
         rig.valve.stop()
         rig.close()
+
+
+def test_an_e04_process_loop_is_compared_by_its_large_steps():
+    """E04 in control mode 4 (its default): the signature tests the process loop within 20 s;
+    a slower actuator drifts in the large step, an unchanged one does not; the sweep and
+    the static loop's figures are reported, not judged, by default (docs/twin.md)."""
+    from prm9tool.service.history import characterization_details
+
+    e04 = "PRM9-06.3Z11/30-24E04S02"
+    run = characterize(EmulatorRig(EmulatedValve(e04, serial=7301)), DEFAULT)
+    assert run.loop == "process"
+    outcome, details = characterization_details(run, curves=True)
+    records = [{"id": 1, "operation": "characterization", "outcome": outcome, "details": details}]
+    same = signature(EmulatorRig(EmulatedValve(e04, serial=7301)), lambda s: records)
+    assert same.today.loop == "process" and same.plan.motion_s <= MOTION_LIMIT_S
+    assert same.passed, "\n".join(same.lines())
+    verdicts = _verdicts(same)
+    assert verdicts["step_90_rise_s"] is False and verdicts["bode_bandwidth_hz"] is None
+    slower = EmulatedValve(e04, serial=7301, plant=replace(PLANT, actuator_full_speed_s=1.0))
+    worn = signature(EmulatorRig(slower), lambda s: records)
+    assert _verdicts(worn)["step_90_rise_s"] is True, "\n".join(worn.lines())

@@ -176,15 +176,14 @@ DEFAULT_DRIFT = {
     "static_hysteresis_pct": DriftLimit(absolute=0.5),
     "static_dead_band_pct": DriftLimit(absolute=0.5),
 }
-DEFAULT_PROCESS_DRIFT = {  # the E04 process loop: an actuator's, slower and less repeatable
+# The E04 process loop (an integrating actuator, ~1 Hz): a 5 s sweep from 0.4 Hz and a 4 s loop
+# over ±20 % do not measure its −3 dB frequency, gain and dead band as the end-of-line test's
+# 10 s from 0.2 Hz and 20 s over the whole range do (on one unchanged emulated E04: −3 dB
+# +32 %, dead band −1.2 pp, gain −0.05): by default only its large steps are judged.
+DEFAULT_PROCESS_DRIFT = {
     "step_overshoot_pct": DriftLimit(absolute=5.0),
     "step_rise_s": DriftLimit(relative=30.0),
     "step_settling_s": DriftLimit(relative=50.0),
-    "bode_bandwidth_hz": DriftLimit(relative=20.0),
-    "bode_phase90_hz": DriftLimit(relative=20.0),
-    "static_gain": DriftLimit(absolute=0.05),
-    "static_hysteresis_pct": DriftLimit(absolute=1.0),
-    "static_dead_band_pct": DriftLimit(absolute=1.0),
 }
 DEFAULT_PROCESS = Profile(
     loop="process",

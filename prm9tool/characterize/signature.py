@@ -48,10 +48,11 @@ from prm9tool.characterize.run import Characterization, Progress, figures, refus
 MOTION_LIMIT_S = 20.0  # the "≤ 20 s of motion"
 SWEEP_S = 3.0  # the short sweep around the bandwidth
 LOOP_S = 10.0  # the hysteresis loop at the reference's rate
-SWEEP_BELOW, SWEEP_ABOVE = 4.0, 3.0  # the sweep spans bandwidth / 4 … bandwidth × 3
-PROCESS_SWEEP_S = 6.0
-SWEEP_SAMPLES = 1250.0  # a slow link's sweep lasts this many samples: 1000 arrive (the fit's)  # the E04 process loop: ~1 Hz, slower
-PROCESS_LOOP_S = 6.0
+SWEEP_SPAN = {"position": (4.0, 3.0), "process": (3.0, 5.0)}  # bandwidth / a … bandwidth × b
+# (the E04 process loop's −90° lies at ~4.7 times its −3 dB frequency)
+PROCESS_SWEEP_S = 5.0  # the E04 process loop: ~1 Hz, slower; with its 1.5 s step windows
+PROCESS_LOOP_S = 4.0  # (three steps) 18.3 s in all
+SWEEP_SAMPLES = 1250.0  # a slow link's sweep lasts this many samples: 1000 arrive (the fit's)
 
 
 @dataclass(frozen=True)
@@ -92,13 +93,16 @@ def plan(
     ups = sorted({abs(a) for a in (steps_pct or part.step_amplitudes_pct) if a})
     small, large = (ups[0], ups[-1]) if ups else (5.0, 90.0)
     amplitudes = (small, -small) if small == large else (small, -small, large, -large)
+    if loop == "process" and small != large:  # an actuator's 1.5 s windows: within 20 s
+        amplitudes = (small, large, -large)
     f_lo, f_hi = part.bode_f_min_hz, part.bode_f_max_hz
     if bandwidth_hz is None or not math.isfinite(bandwidth_hz) or bandwidth_hz <= 0:
         bandwidth_hz = math.sqrt(f_lo * f_hi)
-    f_max = min(f_hi, bandwidth_hz * SWEEP_ABOVE)
+    below, above = SWEEP_SPAN[loop]
+    f_max = min(f_hi, bandwidth_hz * above)
     if sample_rate_hz:
         f_max = min(f_max, sample_rate_hz / SAMPLES_PER_PERIOD)
-    f_min = max(f_lo, min(bandwidth_hz / SWEEP_BELOW, f_max / 2.5))
+    f_min = max(f_lo, min(bandwidth_hz / below, f_max / 2.5))
     process = loop == "process"
     period = PROCESS_LOOP_S if process else LOOP_S
     rate = 400.0 / part.static_period_s  # the reference triangle: −100 → 100 → −100 %
