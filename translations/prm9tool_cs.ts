@@ -2428,6 +2428,10 @@ Ano načte a záznam zařadí do fronty; Ne nenačte nic.</translation>
             <translation>Digitální dvojče určeno (--fit-twin)</translation>
         </message>
         <message>
+            <source>Compared with the birth certificate (--signature)</source>
+            <translation>Porovnáno s rodným listem (--signature)</translation>
+        </message>
+        <message>
             <source>stored with 0x1010</source>
             <translation>uloženo pomocí 0x1010</translation>
         </message>

@@ -2413,6 +2413,10 @@ Ja lädt hoch und stellt den Eintrag in die Warteschlange; Nein lädt nichts hoc
             <translation>Digitaler Zwilling ermittelt (--fit-twin)</translation>
         </message>
         <message>
+            <source>Compared with the birth certificate (--signature)</source>
+            <translation>Mit der Geburtsurkunde verglichen (--signature)</translation>
+        </message>
+        <message>
             <source>stored with 0x1010</source>
             <translation>mit 0x1010 gespeichert</translation>
         </message>
