@@ -92,7 +92,9 @@ def plan(
     part = profile.for_loop(loop)
     ups = sorted({abs(a) for a in (steps_pct or part.step_amplitudes_pct) if a})
     small, large = (ups[0], ups[-1]) if ups else (5.0, 90.0)
-    amplitudes = (small, -small) if small == large else (small, -small, large, -large)
+    amplitudes: tuple[float, ...] = (
+        (small, -small) if small == large else (small, -small, large, -large)
+    )
     if loop == "process" and small != large:  # an actuator's 1.5 s windows: within 20 s
         amplitudes = (small, large, -large)
     f_lo, f_hi = part.bode_f_min_hz, part.bode_f_max_hz
