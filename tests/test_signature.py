@@ -140,6 +140,9 @@ def test_the_first_passed_characterization_is_the_birth_certificate():
     assert first.what == "the first characterization on 2026-11-20"
     with pytest.raises(NoReferenceError):
         reference_of(records, 1, E02, loop="process")  # of the other loop: none
+    other = [{**records[1], "type_key": "PRM9-06.3Z11/30-24E04S02"}]
+    with pytest.raises(NoReferenceError):
+        reference_of(other, 1, E02)  # the serial's record of another valve type is not its
 
 
 def test_the_drift_limits_come_from_the_profile_and_a_bad_one_is_refused(birth):

@@ -123,6 +123,8 @@ def reference_of(
         if record.get("operation") != "characterization":
             continue
         details = _details(record)
+        if record.get("type_key") not in (None, type_key):  # the serial of another valve type
+            continue
         if _loop_of(details) == loop and details.get("figures"):
             candidates.append((record, details))
     if not candidates:

@@ -11,6 +11,7 @@ from __future__ import annotations
 import html
 import math
 import os
+import re
 import tempfile
 from pathlib import Path
 
@@ -38,7 +39,9 @@ translate = QCoreApplication.translate
 
 
 def _label(item: DriftItem) -> str:
-    return figure_label(Figure(item.name, item.label, item.today, item.unit, None))
+    """The figure's name in the program language, a step down with its minus sign."""
+    text = figure_label(Figure(item.name, item.label, item.today, item.unit, None))
+    return re.sub(r"(?<=\s)-(?=\d)", "−", text)
 
 
 def value_text(value: float | None, unit: str, above: bool = False) -> str:
