@@ -16,8 +16,10 @@ EXIT_CODE_TEXT = {
     ExitCode.NO_DEVICE: "no valve found, or none with the --device ID",
     ExitCode.TYPE_MISMATCH: "the file's type key does not fit the valve",
     ExitCode.COMMUNICATION: "communication error (valve gone, timeout, backup not written)",
-    ExitCode.HISTORY: "the history database cannot be used (nothing uploaded with 'refuse')",
-    ExitCode.OUT_OF_LIMITS: "--characterize: a figure is outside the acceptance profile's limits",
+    ExitCode.HISTORY: "the history database cannot be used (nothing uploaded with 'refuse'); "
+    "--signature: no birth certificate in the history",
+    ExitCode.OUT_OF_LIMITS: "--characterize: a figure is outside the acceptance profile's limits; "
+    "--signature: a figure drifted beyond its limit",
 }
 DIFF_EXIT_TEXT = "--diff: 0 equal, 1 they differ, 3 invalid file, 4 no such valve"
 
