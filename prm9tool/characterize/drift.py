@@ -338,6 +338,7 @@ class DriftReport:
             "profile": self.today.profile.name,
             "verdict": self.verdict,
             "passed": self.passed,
+            "acceptance_passed": self.today.passed,  # today's figures against [limits]
             "summary": self.summary(),
             "reference": {
                 "record": ref.record_id,
