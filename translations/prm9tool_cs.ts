@@ -852,7 +852,7 @@ Poslední akce možná nebyla dokončena. Uložte svou práci pod novým názvem
         </message>
         <message>
             <source>the history holds no end-of-line test of serial {0} ({1}) to compare with: make its birth certificate first — run the end-of-line test on this valve (Tuning window → Test report → Run the end-of-line test, online; or prm9tool --characterize --device ID --report OUT.pdf) with the history on; nothing was moved</source>
-            <translation>historie neobsahuje žádnou výstupní zkoušku výrobního čísla {0} ({1}) k porovnání: nejprve vytvořte jeho rodný list — proveďte na tomto ventilu výstupní zkoušku (okno Ladění a charakterizace → Zkušební protokol → Spustit výstupní zkoušku, online; nebo prm9tool --characterize --device ID --report OUT.pdf) se zapnutou historií; nic se nepohnulo</translation>
+            <translation>historie neobsahuje žádnou výstupní zkoušku výrobního čísla {0} ({1}) k porovnání: nejprve vytvořte jeho rodný list — proveďte na tomto ventilu výstupní zkoušku (okno Ladění a charakterizace → Protokol o zkoušce → Spustit výstupní zkoušku, online; nebo prm9tool --characterize --device ID --report OUT.pdf) se zapnutou historií; nic se nepohnulo</translation>
         </message>
         <message>
             <source>the birth certificate is kept in the history, which is off for this valve: open it with the history on; nothing was moved</source>
@@ -4295,7 +4295,7 @@ Na straně PC se nic neztratilo: dokument dál obsahuje každou hodnotu, záloha
         </message>
         <message>
             <source>A short field signature of the valve, compared with its birth certificate: the end-of-line test kept in the history for its serial. Each figure is judged against the drift limits of the acceptance profile chosen on the Test report page ([drift]; empty: the defaults).</source>
-            <translation>Krátký polní podpis ventilu porovnaný s jeho rodným listem: výstupní zkouškou uloženou v historii k jeho výrobnímu číslu. Každý ukazatel se posuzuje podle mezí driftu přejímacího profilu zvoleného na stránce Zkušební protokol ([drift]; prázdné: výchozí).</translation>
+            <translation>Krátký polní podpis ventilu porovnaný s jeho rodným listem: výstupní zkouškou uloženou v historii k jeho výrobnímu číslu. Každý ukazatel se posuzuje podle mezí driftu přejímacího profilu zvoleného na stránce Protokol o zkoušce ([drift]; prázdné: výchozí).</translation>
         </message>
         <message>
             <source>Compare with birth certificate</source>

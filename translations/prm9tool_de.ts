@@ -850,7 +850,7 @@ Die letzte Aktion wurde womöglich nicht vollständig ausgeführt. Speichern Sie
         </message>
         <message>
             <source>the history holds no end-of-line test of serial {0} ({1}) to compare with: make its birth certificate first — run the end-of-line test on this valve (Tuning window → Test report → Run the end-of-line test, online; or prm9tool --characterize --device ID --report OUT.pdf) with the history on; nothing was moved</source>
-            <translation>der Verlauf enthält keine Endprüfung der Seriennummer {0} ({1}) zum Vergleich: Erstellen Sie zuerst ihre Geburtsurkunde — führen Sie an diesem Ventil die Endprüfung durch (Fenster Einstellung und Charakterisierung → Prüfprotokoll → Endprüfung starten, online; oder prm9tool --characterize --device ID --report OUT.pdf) bei eingeschaltetem Verlauf; es wurde nichts bewegt</translation>
+            <translation>der Verlauf enthält keine Endprüfung der Seriennummer {0} ({1}) zum Vergleich: Erstellen Sie zuerst ihre Geburtsurkunde — führen Sie an diesem Ventil die Endprüfung durch (Fenster Einstellung und Charakterisierung → Prüfbericht → Endprüfung starten, online; oder prm9tool --characterize --device ID --report OUT.pdf) bei eingeschaltetem Verlauf; es wurde nichts bewegt</translation>
         </message>
         <message>
             <source>the birth certificate is kept in the history, which is off for this valve: open it with the history on; nothing was moved</source>
@@ -4273,7 +4273,7 @@ Auf dem PC ging nichts verloren: Das Dokument enthält weiterhin jeden Wert, Sic
         </message>
         <message>
             <source>A short field signature of the valve, compared with its birth certificate: the end-of-line test kept in the history for its serial. Each figure is judged against the drift limits of the acceptance profile chosen on the Test report page ([drift]; empty: the defaults).</source>
-            <translation>Eine kurze Feldsignatur des Ventils, verglichen mit seiner Geburtsurkunde: der Endprüfung, die der Verlauf zu seiner Seriennummer aufbewahrt. Jeder Kennwert wird an den Driftgrenzen des auf der Seite Prüfprotokoll gewählten Abnahmeprofils gemessen ([drift]; leer: die Vorgaben).</translation>
+            <translation>Eine kurze Feldsignatur des Ventils, verglichen mit seiner Geburtsurkunde: der Endprüfung, die der Verlauf zu seiner Seriennummer aufbewahrt. Jeder Kennwert wird an den Driftgrenzen des auf der Seite Prüfbericht gewählten Abnahmeprofils gemessen ([drift]; leer: die Vorgaben).</translation>
         </message>
         <message>
             <source>Compare with birth certificate</source>
