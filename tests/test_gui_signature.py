@@ -104,3 +104,27 @@ def test_the_comparison_runs_on_the_valve_shows_the_drift_and_saves_the_pdf(
     assert (tmp_path / "drift.pdf").read_bytes().startswith(b"%PDF")
     operations = [r["operation"] for r in recorder.store().records(7201)]
     assert operations[-1] == "signature"
+
+
+def test_the_drift_table_speaks_the_program_language(qapp):
+    """Numbers with the language's decimal comma, the unit after it: a Czech "p. b." kept its
+    points (it read "p, b," when the whole cell was localized)."""
+    from prm9tool import i18n
+    from prm9tool.analysis.profile import DriftLimit
+    from prm9tool.characterize.drift import DriftItem
+    from prm9tool.views.tuning.signature_report import change_text, limit_text, verdict_text
+
+    hysteresis = DriftItem("static_hysteresis_pct", "hysteresis", "%", 1.1, 0.3,
+                           DriftLimit(absolute=0.5), True)  # fmt: skip
+    phase = DriftItem("bode_phase90_hz", "−90° frequency", "Hz", 24.1, 29.7,
+                      DriftLimit(relative=15.0), True)  # fmt: skip
+    rise = DriftItem("step_90_rise_s", "rise", "s", 0.01, 0.008, DriftLimit(absolute=0.002), True)
+    shown = {}
+    for language in ("en", "de", "cs"):
+        i18n.set_language(language)
+        shown[language] = (change_text(hysteresis), limit_text(hysteresis), change_text(phase),
+                           limit_text(phase), limit_text(rise), verdict_text(True))  # fmt: skip
+    i18n.set_language("en")
+    assert shown["en"] == ("+0.8 pp", "± 0.5 pp", "−19 %", "± 15 %", "± 2 ms", "DRIFTED")
+    assert shown["de"] == ("+0,8 Pp", "± 0,5 Pp", "−19 %", "± 15 %", "± 2 ms", "DRIFT")
+    assert shown["cs"] == ("+0,8 p. b.", "± 0,5 p. b.", "−19 %", "± 15 %", "± 2 ms", "DRIFT")

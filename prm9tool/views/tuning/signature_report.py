@@ -62,9 +62,10 @@ def change_text(item: DriftItem) -> str:
         return "—"
     if item.today_above or item.reference_above:
         return "—"
-    if item.unit == "%":
-        text = f"{item.change:+.2g} " + translate("SignatureReport", "pp")
-    elif not item.unit:
+    if item.unit == "%":  # the unit after localizing: a Czech "p. b." keeps its points
+        number = _local(f"{item.change:+.2g}".replace("-", "−"))
+        return f"{number} " + translate("SignatureReport", "pp")
+    if not item.unit:
         text = f"{item.change:+.3f}"
     elif math.isfinite(item.relative_pct):
         text = f"{item.relative_pct:+.0f} %"
@@ -86,7 +87,7 @@ def limit_text(item: DriftItem) -> str:
             parts.append(_local(f"± {limit.absolute * 1000:g} ms"))
         else:
             unit = translate("SignatureReport", "pp") if item.unit == "%" else item.unit
-            parts.append(_local(f"± {limit.absolute:g} {unit}".strip()))
+            parts.append(f"{_local(f'± {limit.absolute:g}')} {unit}".strip())
     return ", ".join(parts)
 
 
