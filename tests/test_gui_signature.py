@@ -90,6 +90,9 @@ def test_the_comparison_runs_on_the_valve_shows_the_drift_and_saves_the_pdf(
     assert w.runner.busy  # off the GUI thread: the window is still there to Stop it
     qtbot.waitUntil(lambda: not w.runner.busy, timeout=180000)
     page = w.signature
+    status = w.status.text()
+    if "too seldom" in status or "link lost" in status:  # a PC too loaded: said, not hidden
+        pytest.skip(f"the test was refused on this loaded PC: {status}")
     text = page.result.text()
     assert text.startswith("No figure drifted beyond its limit since the end-of-line test on"), text
     rows = {page.table.item(r, 0).text(): r for r in range(page.table.rowCount())}
