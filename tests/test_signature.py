@@ -23,6 +23,7 @@ from prm9tool.device.emulator import EmulatedValve
 from prm9tool.device.emulator.constants import PLANT
 from prm9tool.history.recorder import Recorder
 from prm9tool.service.history import record_characterization
+from prm9tool.service.motion import MotionBusyError
 
 E02 = "PRM9-06.3Z11/30-24E02S02"
 SLOWER_SPOOL = {"spool_mass_kg": 0.12, "damping_n_s_per_m": 100.0}  # bench_twin's
@@ -251,6 +252,9 @@ def test_the_api_compares_with_the_birth_certificate_it_recorded(tmp_path):
             valve.signature()
         valve.characterize()
         report = valve.signature()
+        with valve.generator("sine", amplitude=5, period=1.0):  # one owner of the motion
+            with pytest.raises(MotionBusyError, match="the field signature cannot start"):
+                valve.signature()
     assert report.passed, "\n".join(report.lines())
     assert report.to_dict()["valve"]["serial"] == 7104
     assert [r["operation"] for r in prm9tool.history.records(7104, url)] == [
