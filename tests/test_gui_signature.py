@@ -4,6 +4,7 @@ without a birth certificate it says how to make one; offline it asks for the val
 
 from __future__ import annotations
 
+import json
 import os
 from pathlib import Path
 
@@ -131,3 +132,21 @@ def test_the_drift_table_speaks_the_program_language(qapp):
     assert shown["en"] == ("+0.8 pp", "± 0.5 pp", "−19 %", "± 15 %", "± 2 ms", "DRIFTED")
     assert shown["de"] == ("+0,8 Pp", "± 0,5 Pp", "−19 %", "± 15 %", "± 2 ms", "DRIFT")
     assert shown["cs"] == ("+0,8 p. b.", "± 0,5 p. b.", "−19 %", "± 15 %", "± 2 ms", "DRIFT")
+
+
+def test_a_characterization_record_shows_its_figures_not_its_curves(qtbot):
+    """The curves a record keeps for a later signature are some thousand numbers: the
+    record's details dialog names them and shows the rest."""
+    from prm9tool.views.history.details import RecordDetailsDialog
+
+    details = {"profile": "default", "figures": [], "curves": {"steps": [{"t": [0.0] * 160}]}}
+    record = {
+        "seq": 1,
+        "serial": 7201,
+        "operation": "characterization",
+        "details": json.dumps(details),
+    }  # as the store gives it: JSON text
+    dialog = RecordDetailsDialog(record, "Test report", False)
+    qtbot.addWidget(dialog)
+    text = dialog.text.toPlainText()
+    assert '"curves": "…"' in text and '"profile": "default"' in text and "0.0" not in text
