@@ -87,6 +87,10 @@ class SignaturePage(Page):
         self.plot.show_plots(plots(result))
         self.save_button.setEnabled(True)
 
+    def show_failure(self, message: str) -> None:
+        """Why the comparison did not run or stopped (the status line's "Ready." may follow)."""
+        self.result.setText(message)
+
     def save(self) -> None:
         """The drift report as PDF."""
         if self.last is None:

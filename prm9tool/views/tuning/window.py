@@ -272,8 +272,10 @@ class TuningWindow(QDialog):
     def _on_restored(self, message: str) -> None:
         self._say(lambda: message)
 
-    def _on_failed(self, _kind: str, message: str) -> None:
+    def _on_failed(self, kind: str, message: str) -> None:
         self._say(lambda: self.tr("Stopped: %1").replace("%1", message), failure=True)
+        if kind == "signature":  # a refusal (no birth certificate) stays on its page
+            self.signature.show_failure(message)
 
     # --- document --------------------------------------------------------------------------------
     def accept_values(self, values: dict[str, int], text: str) -> bool:
