@@ -850,6 +850,14 @@ Poslední akce možná nebyla dokončena. Uložte svou práci pod novým názvem
             <source>frequency response: {0} of {1} samples lost on the link, left out of the estimate</source>
             <translation>frekvenční charakteristika: {0} z {1} vzorků ztraceno na spojení, vynecháno z odhadu</translation>
         </message>
+        <message>
+            <source>the history holds no end-of-line test of serial {0} ({1}) to compare with: make its birth certificate first — run the end-of-line test on this valve (Tuning window → Test report → Run the end-of-line test, online; or prm9tool --characterize --device ID --report OUT.pdf) with the history on; nothing was moved</source>
+            <translation>historie neobsahuje žádnou výstupní zkoušku výrobního čísla {0} ({1}) k porovnání: nejprve vytvořte jeho rodný list — proveďte na tomto ventilu výstupní zkoušku (okno Ladění a charakterizace → Protokol o zkoušce → Spustit výstupní zkoušku, online; nebo prm9tool --characterize --device ID --report OUT.pdf) se zapnutou historií; nic se nepohnulo</translation>
+        </message>
+        <message>
+            <source>the birth certificate is kept in the history, which is off for this valve: open it with the history on; nothing was moved</source>
+            <translation>rodný list je uložen v historii, která je pro tento ventil vypnutá: otevřete jej se zapnutou historií; nic se nepohnulo</translation>
+        </message>
     </context>
     <context>
         <name>CommissioningPanel</name>
@@ -1849,6 +1857,10 @@ Poslední akce možná nebyla dokončena. Uložte svou práci pod novým názvem
             <source>the valve is in {0} after the control word 08h → 09h → 0Bh → 0Fh, not DEVICE_MODE_ACTIVE</source>
             <translation>Ventil je po řídicím slově 08h → 09h → 0Bh → 0Fh ve stavu {0}, ne DEVICE_MODE_ACTIVE</translation>
         </message>
+        <message>
+            <source>The valve has no birth certificate in the history.</source>
+            <translation>Ventil nemá v historii rodný list.</translation>
+        </message>
     </context>
     <context>
         <name>EventTableModel</name>
@@ -2414,6 +2426,10 @@ Ano načte a záznam zařadí do fronty; Ne nenačte nic.</translation>
         <message>
             <source>Twin fitted (--fit-twin)</source>
             <translation>Digitální dvojče určeno (--fit-twin)</translation>
+        </message>
+        <message>
+            <source>Compared with the birth certificate (--signature)</source>
+            <translation>Porovnáno s rodným listem (--signature)</translation>
         </message>
         <message>
             <source>stored with 0x1010</source>
@@ -4201,6 +4217,10 @@ Na straně PC se nic neztratilo: dokument dál obsahuje každou hodnotu, záloha
             <translation>Autotune</translation>
         </message>
         <message>
+            <source>the field signature</source>
+            <translation>polní podpis</translation>
+        </message>
+        <message>
             <source>{0} cannot start while {1} runs on this valve: stop {1} first; nothing was started</source>
             <translation>{0} nemůže začít, dokud na tomto ventilu běží {1}: nejprve zastavte {1}; nic nebylo spuštěno</translation>
         </message>
@@ -4253,6 +4273,200 @@ Na straně PC se nic neztratilo: dokument dál obsahuje každou hodnotu, záloha
         <message>
             <source>This type is not recommended for a valve with %1 (manual table 8-4).</source>
             <translation>Tento typ se pro ventil s %1 nedoporučuje (příručka, tabulka 8-4).</translation>
+        </message>
+    </context>
+    <context>
+        <name>SignaturePage</name>
+        <message>
+            <source>The birth certificate is compared with the valve itself: go online with the valve first.</source>
+            <translation>Rodný list se porovnává se samotným ventilem: nejprve se s ventilem připojte online.</translation>
+        </message>
+        <message>
+            <source>a small and a large step each way, a short sine sweep and a hysteresis loop, at most %1 s</source>
+            <translation>malý a velký skok v obou směrech, krátký sinusový rozmítaný signál a hysterezní smyčka, nejvýše %1 s</translation>
+        </message>
+        <message>
+            <source>Save the drift report</source>
+            <translation>Uložit protokol o driftu</translation>
+        </message>
+        <message>
+            <source>Cannot write the report: %1</source>
+            <translation>Protokol nelze zapsat: %1</translation>
+        </message>
+        <message>
+            <source>A short field signature of the valve, compared with its birth certificate: the end-of-line test kept in the history for its serial. Each figure is judged against the drift limits of the acceptance profile chosen on the Test report page ([drift]; empty: the defaults).</source>
+            <translation>Krátký polní podpis ventilu porovnaný s jeho rodným listem: výstupní zkouškou uloženou v historii k jeho výrobnímu číslu. Každý ukazatel se posuzuje podle mezí driftu přejímacího profilu zvoleného na stránce Protokol o zkoušce ([drift]; prázdné: výchozí).</translation>
+        </message>
+        <message>
+            <source>Compare with birth certificate</source>
+            <translation>Porovnat s rodným listem</translation>
+        </message>
+        <message>
+            <source>Save PDF…</source>
+            <translation>Uložit PDF…</translation>
+        </message>
+    </context>
+    <context>
+        <name>SignatureReport</name>
+        <message>
+            <source>not reached</source>
+            <translation>nedosaženo</translation>
+        </message>
+        <message>
+            <source>above %1</source>
+            <translation>nad %1</translation>
+        </message>
+        <message>
+            <source>pp</source>
+            <translation>p. b.</translation>
+        </message>
+        <message>
+            <source>not judged</source>
+            <translation>neposouzeno</translation>
+        </message>
+        <message>
+            <source>DRIFTED</source>
+            <translation>DRIFT</translation>
+        </message>
+        <message>
+            <source>within</source>
+            <translation>v mezích</translation>
+        </message>
+        <message>
+            <source>the end-of-line test on %1</source>
+            <translation>výstupní zkoušky %1</translation>
+        </message>
+        <message>
+            <source>the first characterization on %1</source>
+            <translation>první charakterizace %1</translation>
+        </message>
+        <message>
+            <source>No figure drifted beyond its limit since %1.</source>
+            <translation>Od %1 žádný ukazatel nepřekročil svou mez driftu.</translation>
+        </message>
+        <message>
+            <source>%1 %2, was %3</source>
+            <translation>%1 %2, bylo %3</translation>
+        </message>
+        <message>
+            <source>Drifted since %1: %2.</source>
+            <translation>Drift od %1: %2.</translation>
+        </message>
+        <message>
+            <source>Figure</source>
+            <translation>Ukazatel</translation>
+        </message>
+        <message>
+            <source>Today</source>
+            <translation>Dnes</translation>
+        </message>
+        <message>
+            <source>Birth certificate</source>
+            <translation>Rodný list</translation>
+        </message>
+        <message>
+            <source>Change</source>
+            <translation>Změna</translation>
+        </message>
+        <message>
+            <source>Drift limit</source>
+            <translation>Mez driftu</translation>
+        </message>
+        <message>
+            <source>Result</source>
+            <translation>Výsledek</translation>
+        </message>
+        <message>
+            <source>birth certificate</source>
+            <translation>rodný list</translation>
+        </message>
+        <message>
+            <source>today, step down ×−1</source>
+            <translation>dnes, skok dolů ×−1</translation>
+        </message>
+        <message>
+            <source>setpoint</source>
+            <translation>žádaná hodnota</translation>
+        </message>
+        <message>
+            <source>today</source>
+            <translation>dnes</translation>
+        </message>
+        <message>
+            <source>Step response ±%1 %</source>
+            <translation>Přechodová charakteristika ±%1 %</translation>
+        </message>
+        <message>
+            <source>time [ms]</source>
+            <translation>čas [ms]</translation>
+        </message>
+        <message>
+            <source>frequency [Hz]</source>
+            <translation>frekvence [Hz]</translation>
+        </message>
+        <message>
+            <source>Frequency response: magnitude</source>
+            <translation>Frekvenční charakteristika: amplituda</translation>
+        </message>
+        <message>
+            <source>Frequency response: phase</source>
+            <translation>Frekvenční charakteristika: fáze</translation>
+        </message>
+        <message>
+            <source>The birth certificate's record keeps its figures but not its curves (recorded by an older prm9tool): the plots show today's only.</source>
+            <translation>Záznam rodného listu obsahuje jeho ukazatele, ale ne křivky (zaznamenal jej starší prm9tool): grafy ukazují jen dnešní.</translation>
+        </message>
+        <message>
+            <source>Type key</source>
+            <translation>Objednací kód</translation>
+        </message>
+        <message>
+            <source>Serial number</source>
+            <translation>Výrobní číslo</translation>
+        </message>
+        <message>
+            <source>Firmware</source>
+            <translation>Firmware</translation>
+        </message>
+        <message>
+            <source>Date</source>
+            <translation>Datum</translation>
+        </message>
+        <message>
+            <source>Link</source>
+            <translation>Spojení</translation>
+        </message>
+        <message>
+            <source>Loop tested</source>
+            <translation>Zkoušená regulační smyčka</translation>
+        </message>
+        <message>
+            <source>Drift limits</source>
+            <translation>Meze driftu</translation>
+        </message>
+        <message>
+            <source>Motion</source>
+            <translation>Pohyb</translation>
+        </message>
+        <message>
+            <source>no drift</source>
+            <translation>bez driftu</translation>
+        </message>
+        <message>
+            <source>Limited by the link</source>
+            <translation>Omezeno spojením</translation>
+        </message>
+        <message>
+            <source>PRM9 field signature and drift report</source>
+            <translation>Polní podpis a protokol o driftu PRM9</translation>
+        </message>
+        <message>
+            <source>{0} · serial number {1}</source>
+            <translation>{0} · výrobní číslo {1}</translation>
+        </message>
+        <message>
+            <source>PRM9 drift report</source>
+            <translation>Protokol o driftu PRM9</translation>
         </message>
     </context>
     <context>
@@ -4848,6 +5062,10 @@ Nejprve přepněte na Expert (Náhled → Úroveň oprávnění), nebo zkoušku 
         <message>
             <source>Ready.</source>
             <translation>Připraveno.</translation>
+        </message>
+        <message>
+            <source>Birth certificate</source>
+            <translation>Rodný list</translation>
         </message>
         <message>
             <source>Flow characteristic (E04)</source>

@@ -848,6 +848,14 @@ Die letzte Aktion wurde womöglich nicht vollständig ausgeführt. Speichern Sie
             <source>frequency response: {0} of {1} samples lost on the link, left out of the estimate</source>
             <translation>Frequenzgang: {0} von {1} Abtastwerten auf der Verbindung verloren, in der Schätzung ausgelassen</translation>
         </message>
+        <message>
+            <source>the history holds no end-of-line test of serial {0} ({1}) to compare with: make its birth certificate first — run the end-of-line test on this valve (Tuning window → Test report → Run the end-of-line test, online; or prm9tool --characterize --device ID --report OUT.pdf) with the history on; nothing was moved</source>
+            <translation>der Verlauf enthält keine Endprüfung der Seriennummer {0} ({1}) zum Vergleich: Erstellen Sie zuerst ihre Geburtsurkunde — führen Sie an diesem Ventil die Endprüfung durch (Fenster Einstellung und Charakterisierung → Prüfbericht → Endprüfung starten, online; oder prm9tool --characterize --device ID --report OUT.pdf) bei eingeschaltetem Verlauf; es wurde nichts bewegt</translation>
+        </message>
+        <message>
+            <source>the birth certificate is kept in the history, which is off for this valve: open it with the history on; nothing was moved</source>
+            <translation>die Geburtsurkunde steht im Verlauf, der für dieses Ventil ausgeschaltet ist: Öffnen Sie es mit eingeschaltetem Verlauf; es wurde nichts bewegt</translation>
+        </message>
     </context>
     <context>
         <name>CommissioningPanel</name>
@@ -1839,6 +1847,10 @@ Die letzte Aktion wurde womöglich nicht vollständig ausgeführt. Speichern Sie
             <source>the valve is in {0} after the control word 08h → 09h → 0Bh → 0Fh, not DEVICE_MODE_ACTIVE</source>
             <translation>Das Ventil ist nach dem Steuerwort 08h → 09h → 0Bh → 0Fh in {0}, nicht in DEVICE_MODE_ACTIVE</translation>
         </message>
+        <message>
+            <source>The valve has no birth certificate in the history.</source>
+            <translation>Das Ventil hat keine Geburtsurkunde im Verlauf.</translation>
+        </message>
     </context>
     <context>
         <name>EventTableModel</name>
@@ -2399,6 +2411,10 @@ Ja lädt hoch und stellt den Eintrag in die Warteschlange; Nein lädt nichts hoc
         <message>
             <source>Twin fitted (--fit-twin)</source>
             <translation>Digitaler Zwilling ermittelt (--fit-twin)</translation>
+        </message>
+        <message>
+            <source>Compared with the birth certificate (--signature)</source>
+            <translation>Mit der Geburtsurkunde verglichen (--signature)</translation>
         </message>
         <message>
             <source>stored with 0x1010</source>
@@ -4179,6 +4195,10 @@ Auf dem PC ging nichts verloren: Das Dokument enthält weiterhin jeden Wert, Sic
             <translation>das Autotune</translation>
         </message>
         <message>
+            <source>the field signature</source>
+            <translation>die Feldsignatur</translation>
+        </message>
+        <message>
             <source>{0} cannot start while {1} runs on this valve: stop {1} first; nothing was started</source>
             <translation>{0} kann nicht starten, solange {1} an diesem Ventil läuft: zuerst {1} beenden; nichts wurde gestartet</translation>
         </message>
@@ -4231,6 +4251,200 @@ Auf dem PC ging nichts verloren: Das Dokument enthält weiterhin jeden Wert, Sic
         <message>
             <source>This type is not recommended for a valve with %1 (manual table 8-4).</source>
             <translation>Dieser Typ wird für ein Ventil mit %1 nicht empfohlen (Anleitung Tabelle 8-4).</translation>
+        </message>
+    </context>
+    <context>
+        <name>SignaturePage</name>
+        <message>
+            <source>The birth certificate is compared with the valve itself: go online with the valve first.</source>
+            <translation>Die Geburtsurkunde wird mit dem Ventil selbst verglichen: Gehen Sie zuerst mit dem Ventil online.</translation>
+        </message>
+        <message>
+            <source>a small and a large step each way, a short sine sweep and a hysteresis loop, at most %1 s</source>
+            <translation>ein kleiner und ein großer Sprung in jede Richtung, ein kurzer Sinus-Sweep und eine Hystereseschleife, höchstens %1 s</translation>
+        </message>
+        <message>
+            <source>Save the drift report</source>
+            <translation>Driftbericht speichern</translation>
+        </message>
+        <message>
+            <source>Cannot write the report: %1</source>
+            <translation>Der Bericht kann nicht geschrieben werden: %1</translation>
+        </message>
+        <message>
+            <source>A short field signature of the valve, compared with its birth certificate: the end-of-line test kept in the history for its serial. Each figure is judged against the drift limits of the acceptance profile chosen on the Test report page ([drift]; empty: the defaults).</source>
+            <translation>Eine kurze Feldsignatur des Ventils, verglichen mit seiner Geburtsurkunde: der Endprüfung, die der Verlauf zu seiner Seriennummer aufbewahrt. Jeder Kennwert wird an den Driftgrenzen des auf der Seite Prüfbericht gewählten Abnahmeprofils gemessen ([drift]; leer: die Vorgaben).</translation>
+        </message>
+        <message>
+            <source>Compare with birth certificate</source>
+            <translation>Mit Geburtsurkunde vergleichen</translation>
+        </message>
+        <message>
+            <source>Save PDF…</source>
+            <translation>PDF speichern…</translation>
+        </message>
+    </context>
+    <context>
+        <name>SignatureReport</name>
+        <message>
+            <source>not reached</source>
+            <translation>nicht erreicht</translation>
+        </message>
+        <message>
+            <source>above %1</source>
+            <translation>über %1</translation>
+        </message>
+        <message>
+            <source>pp</source>
+            <translation>Pp</translation>
+        </message>
+        <message>
+            <source>not judged</source>
+            <translation>nicht bewertet</translation>
+        </message>
+        <message>
+            <source>DRIFTED</source>
+            <translation>DRIFT</translation>
+        </message>
+        <message>
+            <source>within</source>
+            <translation>innerhalb</translation>
+        </message>
+        <message>
+            <source>the end-of-line test on %1</source>
+            <translation>der Endprüfung am %1</translation>
+        </message>
+        <message>
+            <source>the first characterization on %1</source>
+            <translation>der ersten Charakterisierung am %1</translation>
+        </message>
+        <message>
+            <source>No figure drifted beyond its limit since %1.</source>
+            <translation>Kein Kennwert ist seit %1 über seine Grenze hinaus gedriftet.</translation>
+        </message>
+        <message>
+            <source>%1 %2, was %3</source>
+            <translation>%1 %2, war %3</translation>
+        </message>
+        <message>
+            <source>Drifted since %1: %2.</source>
+            <translation>Gedriftet seit %1: %2.</translation>
+        </message>
+        <message>
+            <source>Figure</source>
+            <translation>Kennwert</translation>
+        </message>
+        <message>
+            <source>Today</source>
+            <translation>Heute</translation>
+        </message>
+        <message>
+            <source>Birth certificate</source>
+            <translation>Geburtsurkunde</translation>
+        </message>
+        <message>
+            <source>Change</source>
+            <translation>Änderung</translation>
+        </message>
+        <message>
+            <source>Drift limit</source>
+            <translation>Driftgrenze</translation>
+        </message>
+        <message>
+            <source>Result</source>
+            <translation>Ergebnis</translation>
+        </message>
+        <message>
+            <source>birth certificate</source>
+            <translation>Geburtsurkunde</translation>
+        </message>
+        <message>
+            <source>today, step down ×−1</source>
+            <translation>heute, Sprung abwärts ×−1</translation>
+        </message>
+        <message>
+            <source>setpoint</source>
+            <translation>Sollwert</translation>
+        </message>
+        <message>
+            <source>today</source>
+            <translation>heute</translation>
+        </message>
+        <message>
+            <source>Step response ±%1 %</source>
+            <translation>Sprungantwort ±%1 %</translation>
+        </message>
+        <message>
+            <source>time [ms]</source>
+            <translation>Zeit [ms]</translation>
+        </message>
+        <message>
+            <source>frequency [Hz]</source>
+            <translation>Frequenz [Hz]</translation>
+        </message>
+        <message>
+            <source>Frequency response: magnitude</source>
+            <translation>Frequenzgang: Betrag</translation>
+        </message>
+        <message>
+            <source>Frequency response: phase</source>
+            <translation>Frequenzgang: Phase</translation>
+        </message>
+        <message>
+            <source>The birth certificate's record keeps its figures but not its curves (recorded by an older prm9tool): the plots show today's only.</source>
+            <translation>Der Eintrag der Geburtsurkunde enthält ihre Kennwerte, aber nicht ihre Kurven (von einem älteren prm9tool aufgezeichnet): Die Diagramme zeigen nur die heutigen.</translation>
+        </message>
+        <message>
+            <source>Type key</source>
+            <translation>Typschlüssel</translation>
+        </message>
+        <message>
+            <source>Serial number</source>
+            <translation>Seriennummer</translation>
+        </message>
+        <message>
+            <source>Firmware</source>
+            <translation>Firmware</translation>
+        </message>
+        <message>
+            <source>Date</source>
+            <translation>Datum</translation>
+        </message>
+        <message>
+            <source>Link</source>
+            <translation>Verbindung</translation>
+        </message>
+        <message>
+            <source>Loop tested</source>
+            <translation>Geprüfter Regelkreis</translation>
+        </message>
+        <message>
+            <source>Drift limits</source>
+            <translation>Driftgrenzen</translation>
+        </message>
+        <message>
+            <source>Motion</source>
+            <translation>Bewegung</translation>
+        </message>
+        <message>
+            <source>no drift</source>
+            <translation>keine Drift</translation>
+        </message>
+        <message>
+            <source>Limited by the link</source>
+            <translation>Durch die Verbindung begrenzt</translation>
+        </message>
+        <message>
+            <source>PRM9 field signature and drift report</source>
+            <translation>PRM9-Feldsignatur und Driftbericht</translation>
+        </message>
+        <message>
+            <source>{0} · serial number {1}</source>
+            <translation>{0} · Seriennummer {1}</translation>
+        </message>
+        <message>
+            <source>PRM9 drift report</source>
+            <translation>PRM9-Driftbericht</translation>
         </message>
     </context>
     <context>
@@ -4826,6 +5040,10 @@ Wechseln Sie zuerst zu Experte (Ansicht → Berechtigungsstufe) oder starten Sie
         <message>
             <source>Ready.</source>
             <translation>Bereit.</translation>
+        </message>
+        <message>
+            <source>Birth certificate</source>
+            <translation>Geburtsurkunde</translation>
         </message>
         <message>
             <source>Flow characteristic (E04)</source>

@@ -14,6 +14,15 @@ its own tests and limits (``[process.test]``, ``[process.limits]``, defaults
 :data:`DEFAULT_PROCESS`): an integrating actuator needs longer windows and cannot meet a
 spool's limits. A figure that could not be
 measured (a step that never settles) fails a limit set on it.
+
+``[drift]`` (and ``[process.drift]``) set how far a figure of the field signature may be from
+the same figure of the valve's birth certificate (its end-of-line test in the history, issue 31;
+:mod:`prm9tool.characterize.drift`): ``bode_bandwidth_hz = { relative = 15 }`` (± % of the
+birth certificate's value), ``static_hysteresis_pct = { absolute = 0.5 }`` (± in the figure's
+unit: percentage points for the figures in %); defaults :data:`DEFAULT_DRIFT` and
+:data:`DEFAULT_PROCESS_DRIFT`, a figure without one is reported and not judged. A step
+figure's limit holds for the steps of at least :data:`SMALL_STEP_PCT`; a smaller step's figures
+are judged only against a limit named with its amplitude (``step_5_rise_s = { … }``).
 """
 
 from __future__ import annotations
@@ -72,6 +81,34 @@ class Limit:
 
 
 @dataclass(frozen=True)
+class DriftLimit:
+    """How far a figure may drift from its birth certificate's value (None: not checked that
+    way): ``relative`` in % of that value, ``absolute`` in the figure's unit. Within both."""
+
+    relative: float | None = None
+    absolute: float | None = None
+
+    def passed(self, reference: float, value: float) -> bool:
+        """True when ``value`` is within the limit around ``reference`` (NaN: False)."""
+        if math.isnan(value) or math.isnan(reference):
+            return False
+        change = abs(value - reference)
+        if self.relative is not None and change > abs(reference) * self.relative / 100.0:
+            return False
+        return self.absolute is None or change <= self.absolute
+
+    def text(self, unit: str = "") -> str:
+        """``± 15 %`` (relative), ``± 0.5 pp``/``± 0.03`` (absolute)."""
+        parts = []
+        if self.relative is not None:
+            parts.append(f"± {self.relative:g} %")
+        if self.absolute is not None:
+            shown = "pp" if unit == "%" else unit
+            parts.append(f"± {self.absolute:g} {shown}".strip())
+        return ", ".join(parts) or "—"
+
+
+@dataclass(frozen=True)
 class Profile:
     """What to run and the limits (the defaults suit a PRM9-06 on the emulator's plant)."""
 
@@ -86,6 +123,7 @@ class Profile:
     flow_amplitude_pct: float = 40.0  # E04: process setpoint steps centre ∓ this
     flow_duration_s: float = 1.0
     limits: dict[str, Limit] = field(default_factory=dict)
+    drift: dict[str, DriftLimit] = field(default_factory=dict)  # the signature's, per figure
     process: Profile | None = None  # the E04 process loop's tests and limits (None: DEFAULT's)
     loop: str = "position"  # the loop these tests and limits are for
 
@@ -120,15 +158,43 @@ DEFAULT_PROCESS_LIMITS = {
     "static_hysteresis_pct": Limit(maximum=4.0),
     "static_linearity_pct": Limit(maximum=2.0),
 }
+# How far the field signature's figures may be from the birth certificate's (decisions, with a
+# margin over what the signature and the end-of-line test of one unchanged emulated valve
+# differ by: −3 dB 1.8 %, −90° 0.4 %, hysteresis 0.04 pp, dead band 0.1 pp; docs/twin.md).
+# The linearity is not judged: the signature's loop spans ±50 %, not the whole range.
+# A small step's figures depend on where in the null's dither the step starts (the 5 % step's
+# rise time 6.7 … 13 ms on one unchanged emulated valve): no drift limit of a kind holds for
+# steps below this, only one named with the step's amplitude.
+SMALL_STEP_PCT = 20.0
+DEFAULT_DRIFT = {
+    "step_overshoot_pct": DriftLimit(absolute=3.0),
+    "step_rise_s": DriftLimit(relative=25.0),
+    "step_settling_s": DriftLimit(relative=50.0),
+    "bode_bandwidth_hz": DriftLimit(relative=15.0),
+    "bode_phase90_hz": DriftLimit(relative=15.0),
+    "static_gain": DriftLimit(absolute=0.03),
+    "static_hysteresis_pct": DriftLimit(absolute=0.5),
+    "static_dead_band_pct": DriftLimit(absolute=0.5),
+}
+# The E04 process loop (an integrating actuator, ~1 Hz): a 5 s sweep from 0.4 Hz and a 4 s loop
+# over ±20 % do not measure its −3 dB frequency, gain and dead band as the end-of-line test's
+# 10 s from 0.2 Hz and 20 s over the whole range do (on one unchanged emulated E04: −3 dB
+# +32 %, dead band −1.2 pp, gain −0.05): by default only its large steps are judged.
+DEFAULT_PROCESS_DRIFT = {
+    "step_overshoot_pct": DriftLimit(absolute=5.0),
+    "step_rise_s": DriftLimit(relative=30.0),
+    "step_settling_s": DriftLimit(relative=50.0),
+}
 DEFAULT_PROCESS = Profile(
     loop="process",
     step_duration_s=1.5,
     bode_f_min_hz=0.2,
     bode_f_max_hz=20.0,
     limits=DEFAULT_PROCESS_LIMITS,
+    drift=DEFAULT_PROCESS_DRIFT,
 )
-DEFAULT = Profile(limits=DEFAULT_LIMITS, process=DEFAULT_PROCESS)
-_TEST_KEYS = {f.name for f in fields(Profile)} - {"name", "limits", "process", "loop"}
+DEFAULT = Profile(limits=DEFAULT_LIMITS, drift=DEFAULT_DRIFT, process=DEFAULT_PROCESS)
+_TEST_KEYS = {f.name for f in fields(Profile)} - {"name", "limits", "drift", "process", "loop"}
 
 
 def load_profile(path: str | Path) -> Profile:
@@ -145,17 +211,19 @@ def load_profile(path: str | Path) -> Profile:
 def parse_profile(data: dict[str, Any], where: str = "profile") -> Profile:
     """A profile from parsed TOML (see the module docstring); ``[process.test]`` and
     ``[process.limits]`` set the E04 process loop's, starting from its own defaults."""
-    unknown = set(data) - {"name", "test", "limits", "process"}
+    unknown = set(data) - {"name", "test", "limits", "drift", "process"}
     if unknown:
         raise ProfileError(
-            f"{where}: unknown key {sorted(unknown)[0]!r} (name, [test], [limits], [process])"
+            f"{where}: unknown key {sorted(unknown)[0]!r} (name, [test], [limits], [drift], "
+            "[process])"
         )
     process = data.get("process", {})
-    if not isinstance(process, dict) or not set(process) <= {"test", "limits"}:
-        extra = sorted(set(process) - {"test", "limits"}) if isinstance(process, dict) else []
+    parts = {"test", "limits", "drift"}
+    if not isinstance(process, dict) or not set(process) <= parts:
+        extra = sorted(set(process) - parts) if isinstance(process, dict) else []
         raise ProfileError(
-            f"{where}: [process] holds only [process.test] and [process.limits]"
-            + (f", not {extra[0]!r}" if extra else "")
+            f"{where}: [process] holds only [process.test], [process.limits] and "
+            "[process.drift]" + (f", not {extra[0]!r}" if extra else "")
         )
     name = str(data.get("name", Path(where).stem))
     whole = _part(DEFAULT, data, where, "")
@@ -186,7 +254,39 @@ def _part(base: Profile, data: dict[str, Any], where: str, prefix: str) -> Profi
             None if lo is None else float(_number(where, key, lo)),
             None if hi is None else float(_number(where, key, hi)),
         )
-    return replace(base, limits=limits, **changes)
+    drift = dict(base.drift)
+    for key, value in _table(data, "drift", where, prefix).items():
+        if key not in FIGURES and not _one_step(key):
+            raise ProfileError(
+                f"{where}: [{prefix}drift] has no figure {key!r}; figures: {', '.join(FIGURES)}"
+            )
+        if not isinstance(value, dict) or not value or not set(value) <= {"relative", "absolute"}:
+            raise ProfileError(
+                f"{where}: [{prefix}drift] {key} must be {{ relative = … }} (% of the birth "
+                "certificate's value) and/or { absolute = … } (in the figure's unit)"
+            )
+        rel, ab = value.get("relative"), value.get("absolute")
+        for name, number in (("relative", rel), ("absolute", ab)):
+            if number is not None and (not _is_number(number) or number < 0):
+                raise ProfileError(
+                    f"{where}: [{prefix}drift] {key}: {name} must be a number ≥ 0, not {number!r}"
+                )
+        drift[key] = DriftLimit(
+            None if rel is None else float(rel), None if ab is None else float(ab)
+        )
+    return replace(base, limits=limits, drift=drift, **changes)
+
+
+def _one_step(key: str) -> bool:
+    """``step_5_rise_s``: a step figure's drift limit for the step of that amplitude only."""
+    parts = key.split("_")
+    if len(parts) != 4 or parts[0] != "step" or f"step_{parts[2]}_{parts[3]}" not in FIGURES:
+        return False
+    try:
+        float(parts[1])
+    except ValueError:
+        return False
+    return True
 
 
 def _table(data: dict[str, Any], key: str, where: str, prefix: str) -> dict[str, Any]:

@@ -27,6 +27,7 @@ from prm9tool.service.valve import ValveService, service_for
 if TYPE_CHECKING:
     from prm9tool.analysis.profile import Profile
     from prm9tool.api.measure import Captured, SetpointGenerator
+    from prm9tool.characterize.drift import DriftReport
     from prm9tool.characterize.run import Characterization
     from prm9tool.device.emulated import EmulatorControls
     from prm9tool.device.session import ValveSession
@@ -304,6 +305,22 @@ class Valve:
         (``fit.constants``: which constants the data determine) and the path; open the twin
         with ``prm9tool.connect(f"emulator:twin:{path}")``."""
         return self._service.fit_twin(path, profile, progress)
+
+    def signature(
+        self,
+        profile: Profile | str | os.PathLike[str] | None = None,
+        progress: Callable[[str], None] | None = None,
+    ) -> DriftReport:
+        """The field signature compared with the valve's birth certificate, as ``--signature``
+        runs it (docs/twin.md "The birth certificate"): at most 20 s of motion (the spool
+        moves: make sure the hydraulics are safe for it), each figure compared with the same
+        figure of the valve's end-of-line test in the history and judged against the
+        profile's ``[drift]`` limits. The result: ``passed``, ``drifted`` (the figures beyond
+        their limit), ``lines()`` (in words), ``to_dict()`` (the JSON report); recorded as a
+        ``signature``. NoReferenceError, nothing moved, when the history holds no
+        characterization of this serial (run :meth:`characterize` first) or is off;
+        MotionBusyError while this valve's setpoint generator runs."""
+        return self._service.signature(profile, progress)
 
     def export_dcf(self, path: str | os.PathLike[str]) -> int:
         """Write the valve's CiA 306 DCF (its working values, the node ID and bit rate it runs

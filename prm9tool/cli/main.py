@@ -77,6 +77,8 @@ def _headless_command(args: argparse.Namespace) -> tuple[str, str] | None:
         return "prm9tool.cli.main", "_characterize"
     if args.fit_twin is not None:
         return "prm9tool.cli.twin", "run"
+    if args.signature:
+        return "prm9tool.cli.signature", "run"
     if args.diff:
         return "prm9tool.cli.diff", "run"
     if any(getattr(args, dest) not in (None, False) for dest in HISTORY_COMMANDS.values()):

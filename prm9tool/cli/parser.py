@@ -16,8 +16,10 @@ EXIT_CODE_TEXT = {
     ExitCode.NO_DEVICE: "no valve found, or none with the --device ID",
     ExitCode.TYPE_MISMATCH: "the file's type key does not fit the valve",
     ExitCode.COMMUNICATION: "communication error (valve gone, timeout, backup not written)",
-    ExitCode.HISTORY: "the history database cannot be used (nothing uploaded with 'refuse')",
-    ExitCode.OUT_OF_LIMITS: "--characterize: a figure is outside the acceptance profile's limits",
+    ExitCode.HISTORY: "the history database cannot be used (nothing uploaded with 'refuse'); "
+    "--signature: no birth certificate in the history",
+    ExitCode.OUT_OF_LIMITS: "--characterize: a figure is outside the acceptance profile's limits; "
+    "--signature: a figure drifted beyond its limit",
 }
 DIFF_EXIT_TEXT = "--diff: 0 equal, 1 they differ, 3 invalid file, 4 no such valve"
 
@@ -192,6 +194,12 @@ def build_parser() -> argparse.ArgumentParser:
     eol.add_argument(
         "--hydraulics-safe", action="store_true",
         help="with --enable: the hydraulics are safe for the test to move the spool",
+    )  # fmt: skip
+    eol.add_argument(
+        "--signature", action="store_true",
+        help="the field signature of one valve (≤ 20 s of motion) against its birth "
+        "certificate in the history (its end-of-line test): the drift in words, --report "
+        "OUT.pdf, --json [OUT.json]; exit 0 no drift, 8 drifted, 7 no birth certificate",
     )  # fmt: skip
     eol.add_argument(
         "--fit-twin", metavar="OUT.toml",

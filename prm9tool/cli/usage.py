@@ -51,6 +51,8 @@ def usage_problem(args: argparse.Namespace) -> str | None:
         return problem
     if args.fit_twin is not None or args.fit_from is not None:
         return _fit_twin_problem(args)
+    if args.signature:
+        return _signature_problem(args)
     if args.characterize:
         return _characterize_problem(args)
     if args.enable or args.hydraulics_safe:
@@ -203,6 +205,17 @@ def _characterize_problem(args: argparse.Namespace) -> str | None:
         return "--characterize writes its JSON report to a file: --json OUT.json"
     if args.hydraulics_safe and not args.enable:
         return "--hydraulics-safe confirms --enable: add --enable, or leave it out"
+    return None
+
+
+def _signature_problem(args: argparse.Namespace) -> str | None:
+    if args.characterize:
+        return "--signature and --characterize are separate commands: use one at a time"
+    if len(args.emulator) + len(args.device) != 1:
+        return "--signature tests one valve: give one --device or --emulator"
+    problem = _characterize_problem(args)
+    if problem is not None and "--json OUT.json" not in problem:
+        return problem.replace("--characterize", "--signature")
     return None
 
 

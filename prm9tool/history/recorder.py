@@ -39,7 +39,7 @@ Raw = int | str
 OPERATIONS = (
     "download", "upload", "store", "restore-factory", "online-edits", "batch-upload",
     "backup", "characterization", "restart", "autotune", "frequency-response", "report-saved",
-    "twin",
+    "twin", "signature",
 )  # fmt: skip
 
 
@@ -93,6 +93,10 @@ class Details(TypedDict, total=False):
     phase_90_hz: float | None  # frequency-response: −90° (None: not found)
     limited_to_hz: float | None  # frequency-response: the sweep's end when the link limited it
     lost_samples: int  # frequency-response: samples the link lost
+    tests: dict[str, float]  # characterization: the test settings of its loop
+    curves: dict[str, Any]  # characterization: its steps and Bode, thinned (for a signature)
+    reference: dict[str, Any]  # signature: the birth certificate it was compared with
+    drifted: list[str]  # signature: the figures beyond their drift limit
 
 
 def now_utc() -> str:

@@ -142,7 +142,8 @@ class ValveRunner(TuningRunner):
         self._originals = {}
         signal = getattr(self.connection, "status_changed", None)  # the job holds the link:
         publish = signal.emit if signal is not None else None  # the status the test reads
-        motion = {"report": "characterization", "autotune": "autotune"}.get(kind, "tuning")
+        motion = {"report": "characterization", "autotune": "autotune",
+                  "signature": "signature"}.get(kind, "tuning")  # fmt: skip
 
         def job(session: ValveSession) -> object:
             # one owner of the valve's motion (MotionBusyError while a generator runs on it);

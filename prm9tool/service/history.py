@@ -24,6 +24,7 @@ from prm9tool.errors import CommunicationError, FileFormatError, HistoryError
 from prm9tool.history.recorder import Details, Recorder, make_entry
 
 if TYPE_CHECKING:
+    from prm9tool.characterize.drift import DriftReport
     from prm9tool.characterize.run import Characterization
     from prm9tool.device.records import UploadResult
     from prm9tool.device.session import ValveSession
@@ -125,7 +126,7 @@ class HistoryHook:
 
     def characterization(self, session: ValveSession, result: Characterization) -> None:
         """Record an end-of-line test run on the session's valve (as ``--characterize``'s)."""
-        outcome, details = characterization_details(result)
+        outcome, details = characterization_details(result, curves=True)
         self.add(session, "characterization", outcome, result.parameters, details)
 
     def characterization_of(self, result: Characterization) -> None:
@@ -136,7 +137,7 @@ class HistoryHook:
         info = result.info
         valve = SimpleNamespace(type_key=info.type_key, serial=info.serial, firmware=info.firmware,
                                 device_id=info.device_id or info.link)  # fmt: skip
-        outcome, details = characterization_details(result)
+        outcome, details = characterization_details(result, curves=True)
         self.record(valve, "characterization", outcome, result.parameters, details)
 
     def twin_of(self, result: Characterization, outcome: str, details: Mapping[str, Any]) -> None:
@@ -147,6 +148,25 @@ class HistoryHook:
         valve = SimpleNamespace(type_key=info.type_key, serial=info.serial, firmware=info.firmware,
                                 device_id=info.device_id or info.link)  # fmt: skip
         self.record(valve, "twin", outcome, result.parameters, details)
+
+    def signature_of(self, report: DriftReport) -> str:
+        """Record a field signature compared with the birth certificate (issue 31 item 5):
+        operation ``signature``, outcome ``no-drift``/``drifted``, the birth certificate it
+        was compared with and every figure's drift in ``details``
+        (:func:`prm9tool.characterize.drift.history_details`), the parameter set of the run."""
+        from prm9tool.characterize.drift import history_details
+
+        info = report.today.info
+        valve = SimpleNamespace(type_key=info.type_key, serial=info.serial, firmware=info.firmware,
+                                device_id=info.device_id or info.link)  # fmt: skip
+        return self.record(
+            valve, "signature", report.verdict, report.today.parameters, history_details(report)
+        )
+
+    def records_of(self, serial: int) -> list[dict[str, Any]]:
+        """The serial's records, oldest first (HistoryError when the database cannot be
+        read: a signature then refuses, as it cannot find the birth certificate)."""
+        return self.recorder.store().records(serial)
 
     def upload(
         self,
@@ -186,18 +206,27 @@ class HistoryHook:
         return result
 
 
-def characterization_details(result: Characterization) -> tuple[str, Details]:
+def characterization_details(result: Characterization, curves: bool = False) -> tuple[str, Details]:
     """The outcome (``passed``/``failed``) and details of a ``characterization`` record: the
-    profile, when it started, every figure with its verdict (docs/history.md)."""
+    profile, when it started, the loop and the test settings, every figure with its verdict
+    (docs/history.md); ``curves``: also the steps and the Bode, thinned (what a later field
+    signature plots its own over: :func:`prm9tool.characterize.drift.curves`)."""
+    from prm9tool.characterize.drift import curves as thinned
+    from prm9tool.characterize.drift import tests_of
+
     details: Details = {
         "profile": result.profile.name,
         "started": result.date,
+        "loop": result.loop,
+        "tests": tests_of(result),
         "figures": [
             {"name": f.name, "value": f.value, "above": f.above, "unit": f.unit,
              "passed": f.passed}
             for f in result.figures
         ],
     }  # fmt: skip
+    if curves:
+        details["curves"] = thinned(result)
     return ("passed" if result.passed else "failed"), details
 
 
@@ -236,6 +265,31 @@ def record_twin(
     HistoryHook(recorder, lambda problem: log.error("history: %s", problem)).twin_of(
         result, outcome, details
     )
+
+
+def record_signature(recorder: Recorder, report: DriftReport) -> None:
+    """One ``signature`` record of the valve the report names (never raises): what
+    ``--signature`` records after its run."""
+    import logging
+
+    log = logging.getLogger("prm9tool.history")
+    HistoryHook(recorder, lambda problem: log.error("history: %s", problem)).signature_of(report)
+
+
+def signature_with_history(connection: Any, rig: Any, profile: Any = None) -> DriftReport:
+    """The field signature on ``rig`` (the GUI's worker: the connection's valve) compared with
+    the birth certificate in the connection's history, and recorded there (a ``signature``
+    record). With the history off, or offline, it refuses (NoReferenceError) before anything
+    moves."""
+    from prm9tool.characterize.drift import signature
+
+    hook: HistoryHook | None = getattr(connection, "history", None)
+    if not getattr(connection, "is_online", False):
+        hook = None
+    report = signature(rig, hook.records_of if hook is not None else None, profile)
+    if hook is not None:
+        hook.signature_of(report)
+    return report
 
 
 def run_with_history(connection: Any, run: Callable[[], Characterization]) -> Characterization:

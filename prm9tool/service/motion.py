@@ -30,6 +30,7 @@ MOTIONS: dict[str, Template] = {
     "tuning": QT_TRANSLATE_NOOP("Service", "the tuning test"),
     "characterization": QT_TRANSLATE_NOOP("Service", "the characterization"),
     "autotune": QT_TRANSLATE_NOOP("Service", "the autotune"),
+    "signature": QT_TRANSLATE_NOOP("Service", "the field signature"),
 }
 BUSY = QT_TRANSLATE_NOOP(
     "Service", "{0} cannot start while {1} runs on this valve: stop {1} first; nothing was started"

@@ -17,7 +17,7 @@ import time
 import weakref
 from collections.abc import Callable, Mapping
 from pathlib import Path
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, TypeVar
 
 from prm9tool.catalogue import CATALOGUE, Parameter
 from prm9tool.catalogue.commissioning import (
@@ -32,6 +32,8 @@ from prm9tool.service.values import ReadOnlyError, check_rules, read_only_text, 
 
 if TYPE_CHECKING:
     from prm9tool.analysis.profile import Profile
+    from prm9tool.characterize.drift import DriftReport
+    from prm9tool.characterize.rig import Rig
     from prm9tool.characterize.run import Characterization
     from prm9tool.device.records import Progress, UploadResult, Value, ValveStatus
     from prm9tool.device.session import ValveSession
@@ -42,6 +44,7 @@ if TYPE_CHECKING:
 __all__ = ["NmtStoppedError", "ValveService", "characterize_session", "parse_nmt", "service_for"]
 
 
+T = TypeVar("T")
 BOOT_WAIT_S = 3.0  # commissioning waits at most this for a valve still booting
 
 
@@ -310,6 +313,25 @@ class ValveService:
             self.history.twin_of(result, history_outcome(twin.fit), history_details(twin.fit, path))
         return twin
 
+    def signature(
+        self, profile: Profile | str | os.PathLike[str] | None = None,
+        progress: Callable[[str], None] | None = None,
+    ) -> DriftReport:  # fmt: skip
+        """The field signature (≤ 20 s of motion) compared with the valve's birth certificate
+        in the history (:mod:`prm9tool.characterize.drift`), recorded as a ``signature``;
+        NoReferenceError (nothing moved) without one or with the history off; MotionBusyError
+        while another motion runs on the valve."""
+        from prm9tool.characterize.drift import signature
+
+        records = self.history.records_of if self.history is not None else None
+        with motion.claim(self.session, "signature"):
+            report = on_session_rig(
+                self.session, lambda rig: signature(rig, records, _profile(profile), progress)
+            )
+        if self.history is not None:
+            self.history.signature_of(report)
+        return report
+
     # --- files ----------------------------------------------------------------------------
     def export_dcf(self, path: str | os.PathLike[str]) -> int:
         """The valve's CiA 306 DCF with its working values (downloaded now) and the node ID
@@ -352,6 +374,31 @@ def characterize_session(
     # an emulated valve is stepped as fast as the CPU allows, as --characterize --emulator does
     with stepped_here(emulated_valve(session.info.type_key, session.info.serial)) as valve:
         return run(EmulatorRig(valve), profile, progress)
+
+
+def _profile(profile: Profile | str | os.PathLike[str] | None) -> Profile:
+    from prm9tool.analysis.profile import DEFAULT, load_profile
+    from prm9tool.analysis.profile import Profile as ProfileType
+
+    if profile is None:
+        return DEFAULT
+    if isinstance(profile, ProfileType):
+        return profile
+    return load_profile(os.fspath(profile))
+
+
+def on_session_rig(session: ValveSession, work: Callable[[Rig], T]) -> T:
+    """``work(rig)`` on the rig an open session's link gives; an emulated valve is stepped as
+    fast as the CPU allows, as ``--characterize --emulator`` does."""
+    from prm9tool.characterize.canrig import rig_for_session
+    from prm9tool.characterize.rig import EmulatorRig
+
+    if session.emulator is None:
+        return work(rig_for_session(session))
+    from prm9tool.device.factory import emulated_valve, stepped_here
+
+    with stepped_here(emulated_valve(session.info.type_key, session.info.serial)) as valve:
+        return work(EmulatorRig(valve))
 
 
 _SERVICES: weakref.WeakKeyDictionary[object, ValveService] = weakref.WeakKeyDictionary()

@@ -1223,7 +1223,7 @@ ohou m\xc3\xadt stejn\xc3\
 y \xe2\x9a\xa0 a okno to \
 uv\xc3\xa1d\xc3\xad.</p>\x0a</b\
 ody>\x0a</html>\x0a\
-\x00\x00\x188\
+\x00\x00\x1b\x93\
 <\
 !DOCTYPE html>\x0a<\
 html lang=\x22de\x22>\x0a\
@@ -1519,100 +1519,154 @@ er ihn nicht err\
 eicht hat, ist \xe2\
 \x80\x9enicht erreicht\
 \xe2\x80\x9c und besteht \
-nicht.</li>\x0a</ul\
->\x0a\x0a<h2>Das Abnah\
-meprofil (TOML)<\
-/h2>\x0a<p>Leer: da\
-s eingebaute Pro\
-fil. Eine Datei \
-setzt, was davon\
- abweicht; jeder\
- Schl\xc3\xbcssel darf\
-\x0afehlen. <code>[\
-test]</code> und\
- <code>[limits]<\
-/code> gelten f\xc3\
-\xbcr den Lageregel\
-kreis,\x0a<code>[pr\
-ocess.test]</cod\
-e> und <code>[pr\
-ocess.limits]</c\
-ode> f\xc3\xbcr den Pr\
-ozessregelkreis \
-des\x0aE04, dessen \
-eigene Vorgaben \
-Sprungfenster vo\
-n 1,5 s, ein Swe\
-ep von 0,2 bis 2\
-0 Hz,\x0aAnstiegsze\
-it \xe2\x89\xa4 0,4 s, Au\
-sregelzeit \xe2\x89\xa4 0\
-,8 s und \xe2\x88\x923 dB\
- \xe2\x89\xa5 0,8 Hz sind\
-. Eine Grenze is\
-t\x0a<code>{ min = \
-\xe2\x80\xa6 }</code>, <c\
-ode>{ max = \xe2\x80\xa6 \
-}</code> oder be\
-ides; Zahlen in \
-der Datei mit\x0aDe\
-zimalpunkt.</p>\x0a\
-<pre>\x0aname = \x22PR\
-M9-06 Endpr\xc3\xbcfun\
-g\x22\x0a[test]\x0astep_a\
-mplitudes_pct = \
-[5, 25, 90]\x0astep\
-_duration_s = 0.\
-15\x0astatic_period\
-_s = 20\x0a[limits]\
-\x0astep_overshoot_\
-pct = { max = 15\
- }\x0astep_rise_s =\
- { max = 0.03 }\x0a\
-bode_bandwidth_h\
-z = { min = 15 }\
-\x0astatic_hysteres\
-is_pct = { max =\
- 2 }\x0a\x0a[process.t\
-est]      # E04 \
-in Regelungsart \
-4\x0astep_duration_\
-s = 2.0\x0a[process\
-.limits]\x0astep_ri\
-se_s = { max = 0\
-.5 }\x0astep_settli\
-ng_s = { max = 1\
-.0 }\x0aflow_gain =\
- { min = 3 }\x0a</p\
-re>\x0a<p>Kennwerte\
-: step_overshoot\
-_pct, step_rise_\
-s, step_settling\
-_s, bode_bandwid\
-th_hz,\x0abode_phas\
-e90_hz, static_g\
-ain, static_hyst\
-eresis_pct, stat\
-ic_linearity_pct\
-,\x0astatic_dead_ba\
-nd_pct, flow_gai\
-n, flow_dead_ban\
-d_pct. Ein unbek\
-annter Schl\xc3\xbcsse\
-l oder ein falsc\
-her\x0aWert wird mi\
-t Datei und Schl\
-\xc3\xbcssel abgelehnt\
-.</p>\x0a<p>Die Kar\
-te <b>Sprungantw\
-ort</b> des Oszi\
-lloskops misst \xc3\
-\x9cberschwingen, A\
-nstiegs- und\x0aAus\
-regelzeit jedes \
-gezeigten Sprung\
-s.</p>\x0a</body>\x0a<\
-/html>\x0a\
+nicht.</li>\x0a<li>\
+<b>Geburtsurkund\
+e</b> (online): \
+<b>Mit Geburtsur\
+kunde vergleiche\
+n</b> spielt ein\
+e kurze\x0aFeldsign\
+atur (ein kleine\
+r und ein gro\xc3\x9fe\
+r Sprung in jede\
+ Richtung, ein k\
+urzer Sweep um d\
+ie\x0aBandbreite de\
+s Ventils, eine \
+Hystereseschleif\
+e; h\xc3\xb6chstens 20\
+ s Bewegung) und\
+ vergleicht jede\
+n\x0aKennwert mit d\
+er Endpr\xc3\xbcfung d\
+es Ventils, die \
+die Historie zu \
+seiner Seriennum\
+mer aufbewahrt:\x0a\
+heute, damals, d\
+ie \xc3\x84nderung und\
+ die Driftgrenze\
+ (der Teil <code\
+>[drift]</code> \
+des Profils, z. \
+B.\x0a<code>bode_ph\
+ase90_hz = { rel\
+ative = 15 }</co\
+de>) und ob er g\
+edriftet ist; di\
+e heutigen Spr\xc3\xbc\
+nge\x0aund der Freq\
+uenzgang werden \
+\xc3\xbcber die der Ge\
+burtsurkunde gez\
+eichnet, <b>PDF \
+speichern\xe2\x80\xa6</b>\
+\x0aschreibt den Dr\
+iftbericht. Ohne\
+ Endpr\xc3\xbcfung in \
+der Historie sag\
+t sie, wie man e\
+ine erstellt,\x0aun\
+d bewegt nichts \
+(Befehlszeile: <\
+code>prm9tool --\
+signature --devi\
+ce ID --report d\
+rift.pdf</code>)\
+.</li>\x0a</ul>\x0a\x0a<h\
+2>Das Abnahmepro\
+fil (TOML)</h2>\x0a\
+<p>Leer: das ein\
+gebaute Profil. \
+Eine Datei setzt\
+, was davon abwe\
+icht; jeder Schl\
+\xc3\xbcssel darf\x0afehl\
+en. <code>[test]\
+</code> und <cod\
+e>[limits]</code\
+> gelten f\xc3\xbcr de\
+n Lageregelkreis\
+,\x0a<code>[process\
+.test]</code> un\
+d <code>[process\
+.limits]</code> \
+f\xc3\xbcr den Prozess\
+regelkreis des\x0aE\
+04, dessen eigen\
+e Vorgaben Sprun\
+gfenster von 1,5\
+ s, ein Sweep vo\
+n 0,2 bis 20 Hz,\
+\x0aAnstiegszeit \xe2\x89\
+\xa4 0,4 s, Ausrege\
+lzeit \xe2\x89\xa4 0,8 s \
+und \xe2\x88\x923 dB \xe2\x89\xa5 \
+0,8 Hz sind. Ein\
+e Grenze ist\x0a<co\
+de>{ min = \xe2\x80\xa6 }\
+</code>, <code>{\
+ max = \xe2\x80\xa6 }</co\
+de> oder beides;\
+ Zahlen in der D\
+atei mit\x0aDezimal\
+punkt.</p>\x0a<pre>\
+\x0aname = \x22PRM9-06\
+ Endpr\xc3\xbcfung\x22\x0a[t\
+est]\x0astep_amplit\
+udes_pct = [5, 2\
+5, 90]\x0astep_dura\
+tion_s = 0.15\x0ast\
+atic_period_s = \
+20\x0a[limits]\x0astep\
+_overshoot_pct =\
+ { max = 15 }\x0ast\
+ep_rise_s = { ma\
+x = 0.03 }\x0abode_\
+bandwidth_hz = {\
+ min = 15 }\x0astat\
+ic_hysteresis_pc\
+t = { max = 2 }\x0a\
+\x0a[process.test] \
+     # E04 in Re\
+gelungsart 4\x0aste\
+p_duration_s = 2\
+.0\x0a[process.limi\
+ts]\x0astep_rise_s \
+= { max = 0.5 }\x0a\
+step_settling_s \
+= { max = 1.0 }\x0a\
+flow_gain = { mi\
+n = 3 }\x0a</pre>\x0a<\
+p>Kennwerte: ste\
+p_overshoot_pct,\
+ step_rise_s, st\
+ep_settling_s, b\
+ode_bandwidth_hz\
+,\x0abode_phase90_h\
+z, static_gain, \
+static_hysteresi\
+s_pct, static_li\
+nearity_pct,\x0asta\
+tic_dead_band_pc\
+t, flow_gain, fl\
+ow_dead_band_pct\
+. Ein unbekannte\
+r Schl\xc3\xbcssel ode\
+r ein falscher\x0aW\
+ert wird mit Dat\
+ei und Schl\xc3\xbcsse\
+l abgelehnt.</p>\
+\x0a<p>Die Karte <b\
+>Sprungantwort</\
+b> des Oszillosk\
+ops misst \xc3\x9cbers\
+chwingen, Anstie\
+gs- und\x0aAusregel\
+zeit jedes gezei\
+gten Sprungs.</p\
+>\x0a</body>\x0a</html\
+>\x0a\
 \x00\x00\x06\x87\
 <\
 !DOCTYPE html>\x0a<\
@@ -1720,7 +1774,7 @@ jako \xe2\x80\x9e\xe2\x80\x94\xe2\x80\x9c a\
  nelze je zvolit\
 .</p>\x0a</body>\x0a</\
 html>\x0a\
-\x00\x00\x17L\
+\x00\x00\x1ad\
 <\
 !DOCTYPE html>\x0a<\
 html lang=\x22cs\x22>\x0a\
@@ -2002,99 +2056,149 @@ ok, kter\xc3\xbd ji ne\
 dos\xc3\xa1hl, je \xe2\x80\x9en\
 edosa\xc5\xbeeno\xe2\x80\x9c\x0aa \
 nevyhovuje.</li>\
-\x0a</ul>\x0a\x0a<h2>P\xc5\x99e\
-j\xc3\xadmac\xc3\xad profil \
-(TOML)</h2>\x0a<p>P\
-r\xc3\xa1zdn\xc3\xa9: vestav\
-\xc4\x9bn\xc3\xbd profil. So\
-ubor nastav\xc3\xad, c\
-o se od n\xc4\x9bj li\xc5\
-\xa1\xc3\xad; ka\xc5\xbed\xc3\xbd kl\xc3\
-\xad\xc4\x8d sm\xc3\xad chyb\xc4\x9bt\
-.\x0a<code>[test]</\
-code> a <code>[l\
-imits]</code> pl\
-at\xc3\xad pro smy\xc4\x8dku\
- polohy,\x0a<code>[\
-process.test]</c\
-ode> a <code>[pr\
-ocess.limits]</c\
-ode> pro procesn\
-\xc3\xad smy\xc4\x8dku E04, \
-jej\xc3\xad\xc5\xbe\x0avlastn\xc3\xad\
- v\xc3\xbdchoz\xc3\xad hodno\
-ty jsou okna sko\
-k\xc5\xaf 1,5 s, rozm\xc3\
-\xadt\xc3\xa1n\xc3\xad od 0,2 d\
-o 20 Hz, doba n\xc3\
-\xa1b\xc4\x9bhu\x0a\xe2\x89\xa4 0,4 s\
-, doba ust\xc3\xa1len\xc3\
-\xad \xe2\x89\xa4 0,8 s a \xe2\x88\
-\x923 dB \xe2\x89\xa5 0,8 Hz\
-. Mez je <code>{\
- min = \xe2\x80\xa6 }</co\
-de>,\x0a<code>{ max\
- = \xe2\x80\xa6 }</code> \
-nebo oboj\xc3\xad; \xc4\x8d\xc3\
-\xadsla v souboru s\
- desetinnou te\xc4\x8d\
-kou.</p>\x0a<pre>\x0an\
-ame = \x22PRM9-06 v\
-\xc3\xbdstupn\xc3\xad zkou\xc5\xa1\
-ka\x22\x0a[test]\x0astep_\
-amplitudes_pct =\
- [5, 25, 90]\x0aste\
-p_duration_s = 0\
-.15\x0astatic_perio\
-d_s = 20\x0a[limits\
-]\x0astep_overshoot\
-_pct = { max = 1\
-5 }\x0astep_rise_s \
-= { max = 0.03 }\
-\x0abode_bandwidth_\
-hz = { min = 15 \
-}\x0astatic_hystere\
-sis_pct = { max \
-= 2 }\x0a\x0a[process.\
-test]      # E04\
- v re\xc5\xbeimu regul\
-ace 4\x0astep_durat\
-ion_s = 2.0\x0a[pro\
-cess.limits]\x0aste\
-p_rise_s = { max\
- = 0.5 }\x0astep_se\
-ttling_s = { max\
- = 1.0 }\x0aflow_ga\
-in = { min = 3 }\
-\x0a</pre>\x0a<p>Hodno\
-ty: step_oversho\
-ot_pct, step_ris\
-e_s, step_settli\
-ng_s, bode_bandw\
-idth_hz,\x0abode_ph\
-ase90_hz, static\
-_gain, static_hy\
-steresis_pct, st\
-atic_linearity_p\
-ct,\x0astatic_dead_\
-band_pct, flow_g\
-ain, flow_dead_b\
-and_pct. Nezn\xc3\xa1m\
-\xc3\xbd kl\xc3\xad\xc4\x8d nebo c\
-hybn\xc3\xa1 hodnota s\
-e\x0aodm\xc3\xadtne s uve\
-den\xc3\xadm souboru a\
- kl\xc3\xad\xc4\x8de.</p>\x0a<p\
->Karta <b>P\xc5\x99ech\
-odov\xc3\xa1 charakter\
-istika</b> oscil\
-oskopu m\xc4\x9b\xc5\x99\xc3\xad p\
-\xc5\x99ekmit, dobu n\xc3\
-\xa1b\xc4\x9bhu a dobu\x0aus\
-t\xc3\xa1len\xc3\xad ka\xc5\xbed\xc3\xa9\
-ho zobrazen\xc3\xa9ho \
-skoku.</p>\x0a</bod\
-y>\x0a</html>\x0a\
+\x0a<li><b>Rodn\xc3\xbd l\
+ist</b> (online)\
+: <b>Porovnat s \
+rodn\xc3\xbdm listem</\
+b> p\xc5\x99ehraje kr\xc3\
+\xa1tk\xc3\xbd poln\xc3\xad pod\
+pis\x0a(mal\xc3\xbd a vel\
+k\xc3\xbd skok v obou \
+sm\xc4\x9brech, kr\xc3\xa1tk\
+\xc3\xa9 rozm\xc3\xadt\xc3\xa1n\xc3\xad \
+kolem \xc5\xa1\xc3\xad\xc5\x99ky p\
+\xc3\xa1sma ventilu, h\
+ysterezn\xc3\xad\x0asmy\xc4\x8d\
+ka; nejv\xc3\xbd\xc5\xa1e 20\
+ s pohybu) a por\
+ovn\xc3\xa1 ka\xc5\xbed\xc3\xbd uk\
+azatel s v\xc3\xbdstup\
+n\xc3\xad zkou\xc5\xa1kou ve\
+ntilu ulo\xc5\xbeenou\x0a\
+v historii k jeh\
+o v\xc3\xbdrobn\xc3\xadmu \xc4\x8d\
+\xc3\xadslu: dnes, teh\
+dy, zm\xc4\x9bna a mez\
+ driftu (\xc4\x8d\xc3\xa1st\x0a\
+<code>[drift]</c\
+ode> profilu, na\
+p\xc5\x99. <code>bode_\
+phase90_hz = { r\
+elative = 15 }</\
+code>) a zda\x0ase \
+posunul; dne\xc5\xa1n\xc3\
+\xad skoky a frekve\
+n\xc4\x8dn\xc3\xad charakter\
+istika se kresl\xc3\
+\xad p\xc5\x99es ty z rod\
+n\xc3\xa9ho listu,\x0a<b>\
+Ulo\xc5\xbeit PDF\xe2\x80\xa6</\
+b> zap\xc3\xad\xc5\xa1e prot\
+okol o driftu. B\
+ez v\xc3\xbdstupn\xc3\xad zk\
+ou\xc5\xa1ky v histori\
+i \xc5\x99ekne, jak ji\
+\x0avytvo\xc5\x99it, a ni\
+c nepohne (p\xc5\x99\xc3\xad\
+kazov\xc3\xbd \xc5\x99\xc3\xa1dek:\
+\x0a<code>prm9tool \
+--signature --de\
+vice ID --report\
+ drift.pdf</code\
+>).</li>\x0a</ul>\x0a\x0a\
+<h2>P\xc5\x99ej\xc3\xadmac\xc3\xad\
+ profil (TOML)</\
+h2>\x0a<p>Pr\xc3\xa1zdn\xc3\xa9\
+: vestav\xc4\x9bn\xc3\xbd pr\
+ofil. Soubor nas\
+tav\xc3\xad, co se od \
+n\xc4\x9bj li\xc5\xa1\xc3\xad; ka\xc5\
+\xbed\xc3\xbd kl\xc3\xad\xc4\x8d sm\xc3\xad\
+ chyb\xc4\x9bt.\x0a<code>\
+[test]</code> a \
+<code>[limits]</\
+code> plat\xc3\xad pro\
+ smy\xc4\x8dku polohy,\
+\x0a<code>[process.\
+test]</code> a <\
+code>[process.li\
+mits]</code> pro\
+ procesn\xc3\xad smy\xc4\x8d\
+ku E04, jej\xc3\xad\xc5\xbe\x0a\
+vlastn\xc3\xad v\xc3\xbdchoz\
+\xc3\xad hodnoty jsou \
+okna skok\xc5\xaf 1,5 \
+s, rozm\xc3\xadt\xc3\xa1n\xc3\xad \
+od 0,2 do 20 Hz,\
+ doba n\xc3\xa1b\xc4\x9bhu\x0a\xe2\
+\x89\xa4 0,4 s, doba u\
+st\xc3\xa1len\xc3\xad \xe2\x89\xa4 0,\
+8 s a \xe2\x88\x923 dB \xe2\x89\
+\xa5 0,8 Hz. Mez je\
+ <code>{ min = \xe2\
+\x80\xa6 }</code>,\x0a<co\
+de>{ max = \xe2\x80\xa6 }\
+</code> nebo obo\
+j\xc3\xad; \xc4\x8d\xc3\xadsla v s\
+ouboru s desetin\
+nou te\xc4\x8dkou.</p>\
+\x0a<pre>\x0aname = \x22P\
+RM9-06 v\xc3\xbdstupn\xc3\
+\xad zkou\xc5\xa1ka\x22\x0a[tes\
+t]\x0astep_amplitud\
+es_pct = [5, 25,\
+ 90]\x0astep_durati\
+on_s = 0.15\x0astat\
+ic_period_s = 20\
+\x0a[limits]\x0astep_o\
+vershoot_pct = {\
+ max = 15 }\x0astep\
+_rise_s = { max \
+= 0.03 }\x0abode_ba\
+ndwidth_hz = { m\
+in = 15 }\x0astatic\
+_hysteresis_pct \
+= { max = 2 }\x0a\x0a[\
+process.test]   \
+   # E04 v re\xc5\xbei\
+mu regulace 4\x0ast\
+ep_duration_s = \
+2.0\x0a[process.lim\
+its]\x0astep_rise_s\
+ = { max = 0.5 }\
+\x0astep_settling_s\
+ = { max = 1.0 }\
+\x0aflow_gain = { m\
+in = 3 }\x0a</pre>\x0a\
+<p>Hodnoty: step\
+_overshoot_pct, \
+step_rise_s, ste\
+p_settling_s, bo\
+de_bandwidth_hz,\
+\x0abode_phase90_hz\
+, static_gain, s\
+tatic_hysteresis\
+_pct, static_lin\
+earity_pct,\x0astat\
+ic_dead_band_pct\
+, flow_gain, flo\
+w_dead_band_pct.\
+ Nezn\xc3\xa1m\xc3\xbd kl\xc3\xad\xc4\
+\x8d nebo chybn\xc3\xa1 h\
+odnota se\x0aodm\xc3\xadt\
+ne s uveden\xc3\xadm s\
+ouboru a kl\xc3\xad\xc4\x8de\
+.</p>\x0a<p>Karta <\
+b>P\xc5\x99echodov\xc3\xa1 c\
+harakteristika</\
+b> osciloskopu m\
+\xc4\x9b\xc5\x99\xc3\xad p\xc5\x99ekmit,\
+ dobu n\xc3\xa1b\xc4\x9bhu a\
+ dobu\x0aust\xc3\xa1len\xc3\xad\
+ ka\xc5\xbed\xc3\xa9ho zobra\
+zen\xc3\xa9ho skoku.</\
+p>\x0a</body>\x0a</htm\
+l>\x0a\
 \x00\x00%u\
 <\
 !DOCTYPE html>\x0a<\
@@ -3074,7 +3178,7 @@ ol\x0a--replay trac\
 e.asc</code>.</p\
 >\x0a</body>\x0a</html\
 >\x0a\
-\x00\x00\x15\xaa\
+\x00\x00\x18\xb0\
 <\
 !DOCTYPE html>\x0a<\
 html lang=\x22en\x22>\x0a\
@@ -3336,93 +3440,141 @@ e setpoint: a st\
 ep that did not \
 reach it is\x0a\x22not\
  reached\x22 and fa\
-ils.</li>\x0a</ul>\x0a\
-\x0a<h2>The accepta\
-nce profile (TOM\
-L)</h2>\x0a<p>Empty\
-: the built-in p\
-rofile. A file s\
-ets what differs\
- from it; every \
-key may be left \
-out.\x0a<code>[test\
-]</code> and <co\
-de>[limits]</cod\
-e> are for the p\
-osition loop;\x0a<c\
-ode>[process.tes\
-t]</code> and <c\
-ode>[process.lim\
-its]</code> for \
-the E04 process \
-loop, whose\x0aown \
-defaults are 1.5\
- s step windows,\
- a sweep from 0.\
-2 to 20 Hz, rise\
- time \xe2\x89\xa4 0.4 s,\
- settling\x0atime \xe2\
-\x89\xa4 0.8 s and \xe2\x88\x92\
-3 dB \xe2\x89\xa5 0.8 Hz.\
- A limit is <cod\
-e>{ min = \xe2\x80\xa6 }<\
-/code>,\x0a<code>{ \
-max = \xe2\x80\xa6 }</cod\
-e> or both.</p>\x0a\
-<pre>\x0aname = \x22PR\
-M9-06 end of lin\
-e\x22\x0a[test]\x0astep_a\
-mplitudes_pct = \
-[5, 25, 90]\x0astep\
-_duration_s = 0.\
-15\x0astatic_period\
-_s = 20\x0a[limits]\
-\x0astep_overshoot_\
-pct = { max = 15\
- }\x0astep_rise_s =\
- { max = 0.03 }\x0a\
-bode_bandwidth_h\
-z = { min = 15 }\
-\x0astatic_hysteres\
-is_pct = { max =\
- 2 }\x0a\x0a[process.t\
-est]      # E04 \
-in control mode \
-4\x0astep_duration_\
-s = 2.0\x0a[process\
-.limits]\x0astep_ri\
+ils.</li>\x0a<li><b\
+>Birth certifica\
+te</b> (online):\
+ <b>Compare with\
+ birth certifica\
+te</b> plays a s\
+hort\x0afield signa\
+ture (a small an\
+d a large step e\
+ach way, a short\
+ sweep around th\
+e valve's\x0abandwi\
+dth, a hysteresi\
+s loop; at most \
+20 s of motion) \
+and compares eac\
+h figure with th\
+e\x0avalve's end-of\
+-line test kept \
+in the history f\
+or its serial: t\
+oday, then, the \
+change and the\x0ad\
+rift limit (the \
+profile's <code>\
+[drift]</code> p\
+art, e.g.\x0a<code>\
+bode_phase90_hz \
+= { relative = 1\
+5 }</code>), and\
+ whether it drif\
+ted; today's ste\
+ps and\x0aBode are \
+drawn over the b\
+irth certificate\
+'s, and <b>Save \
+PDF\xe2\x80\xa6</b> write\
+s the drift repo\
+rt.\x0aWithout an e\
+nd-of-line test \
+in the history i\
+t says how to ma\
+ke one and moves\
+ nothing\x0a(comman\
+d line: <code>pr\
+m9tool --signatu\
+re --device ID -\
+-report drift.pd\
+f</code>).</li>\x0a\
+</ul>\x0a\x0a<h2>The a\
+cceptance profil\
+e (TOML)</h2>\x0a<p\
+>Empty: the buil\
+t-in profile. A \
+file sets what d\
+iffers from it; \
+every key may be\
+ left out.\x0a<code\
+>[test]</code> a\
+nd <code>[limits\
+]</code> are for\
+ the position lo\
+op;\x0a<code>[proce\
+ss.test]</code> \
+and <code>[proce\
+ss.limits]</code\
+> for the E04 pr\
+ocess loop, whos\
+e\x0aown defaults a\
+re 1.5 s step wi\
+ndows, a sweep f\
+rom 0.2 to 20 Hz\
+, rise time \xe2\x89\xa4 \
+0.4 s, settling\x0a\
+time \xe2\x89\xa4 0.8 s a\
+nd \xe2\x88\x923 dB \xe2\x89\xa5 0\
+.8 Hz. A limit i\
+s <code>{ min = \
+\xe2\x80\xa6 }</code>,\x0a<c\
+ode>{ max = \xe2\x80\xa6 \
+}</code> or both\
+.</p>\x0a<pre>\x0aname\
+ = \x22PRM9-06 end \
+of line\x22\x0a[test]\x0a\
+step_amplitudes_\
+pct = [5, 25, 90\
+]\x0astep_duration_\
+s = 0.15\x0astatic_\
+period_s = 20\x0a[l\
+imits]\x0astep_over\
+shoot_pct = { ma\
+x = 15 }\x0astep_ri\
 se_s = { max = 0\
-.5 }\x0astep_settli\
-ng_s = { max = 1\
-.0 }\x0aflow_gain =\
- { min = 3 }\x0a</p\
-re>\x0a<p>Figures: \
-step_overshoot_p\
-ct, step_rise_s,\
- step_settling_s\
-, bode_bandwidth\
-_hz,\x0abode_phase9\
-0_hz, static_gai\
-n, static_hyster\
-esis_pct, static\
-_linearity_pct,\x0a\
-static_dead_band\
-_pct, flow_gain,\
- flow_dead_band_\
-pct. An unknown \
-key or a wrong v\
-alue is\x0arefused \
-with the file an\
-d the key named.\
-</p>\x0a<p>The osci\
-lloscope's <b>St\
-ep response</b> \
-tab measures ove\
-rshoot, rise and\
- settling time o\
-f\x0aany step it sh\
-ows.</p>\x0a</body>\
-\x0a</html>\x0a\
+.03 }\x0abode_bandw\
+idth_hz = { min \
+= 15 }\x0astatic_hy\
+steresis_pct = {\
+ max = 2 }\x0a\x0a[pro\
+cess.test]      \
+# E04 in control\
+ mode 4\x0astep_dur\
+ation_s = 2.0\x0a[p\
+rocess.limits]\x0as\
+tep_rise_s = { m\
+ax = 0.5 }\x0astep_\
+settling_s = { m\
+ax = 1.0 }\x0aflow_\
+gain = { min = 3\
+ }\x0a</pre>\x0a<p>Fig\
+ures: step_overs\
+hoot_pct, step_r\
+ise_s, step_sett\
+ling_s, bode_ban\
+dwidth_hz,\x0abode_\
+phase90_hz, stat\
+ic_gain, static_\
+hysteresis_pct, \
+static_linearity\
+_pct,\x0astatic_dea\
+d_band_pct, flow\
+_gain, flow_dead\
+_band_pct. An un\
+known key or a w\
+rong value is\x0are\
+fused with the f\
+ile and the key \
+named.</p>\x0a<p>Th\
+e oscilloscope's\
+ <b>Step respons\
+e</b> tab measur\
+es overshoot, ri\
+se and settling \
+time of\x0aany step\
+ it shows.</p>\x0a<\
+/body>\x0a</html>\x0a\
 \x00\x00\x06\xe1\
 <\
 !DOCTYPE html>\x0a<\
@@ -4908,33 +5060,33 @@ qt_resource_struct = b"\
 \x00\x00\x00\x00\x00\x02\x00\x00\x00\x02\x00\x00\x00\x01\
 \x00\x00\x00\x10\x00\x02\x00\x00\x00\x10\x00\x00\x00\x10\
 \x00\x00\x00\x00\x00\x02\x00\x00\x00\x0d\x00\x00\x00\x03\
-\x00\x00\x02\xb6\x00\x00\x00\x00\x00\x01\x00\x01\x18\xd2\
-\x00\x00\x02L\x00\x00\x00\x00\x00\x01\x00\x01\x134\
-\x00\x00\x03X\x00\x00\x00\x00\x00\x01\x00\x01#\x08\
-\x00\x00\x02\xd0\x00\x00\x00\x00\x00\x01\x00\x01\x19\xff\
-\x00\x00\x022\x00\x00\x00\x00\x00\x01\x00\x01\x11n\
-\x00\x00\x03t\x00\x00\x00\x00\x00\x01\x00\x01$\xa0\
-\x00\x00\x02\xe8\x00\x00\x00\x00\x00\x01\x00\x01\x1b\xce\
-\x00\x00\x03:\x00\x00\x00\x00\x00\x01\x00\x01!\x5c\
-\x00\x00\x02d\x00\x00\x00\x00\x00\x01\x00\x01\x14\xda\
-\x00\x00\x03\x04\x00\x00\x00\x00\x00\x01\x00\x01\x1d\x97\
-\x00\x00\x02\x80\x00\x00\x00\x00\x00\x01\x00\x01\x15\xd7\
-\x00\x00\x02\x9c\x00\x00\x00\x00\x00\x01\x00\x01\x17\x90\
-\x00\x00\x03\x18\x00\x00\x00\x00\x00\x01\x00\x01 \x1b\
-\x00\x00\x01J\x00\x00\x00\x00\x00\x01\x00\x00\xa6\xf0\
-\x00\x00\x00\xe6\x00\x00\x00\x00\x00\x01\x00\x00c\x9c\
-\x00\x00\x01\xac\x00\x00\x00\x00\x00\x01\x00\x00\xd3\xe0\
+\x00\x00\x02\xb6\x00\x00\x00\x00\x00\x01\x00\x01\x22K\
+\x00\x00\x02L\x00\x00\x00\x00\x00\x01\x00\x01\x1c\xad\
+\x00\x00\x03X\x00\x00\x00\x00\x00\x01\x00\x01,\x81\
+\x00\x00\x02\xd0\x00\x00\x00\x00\x00\x01\x00\x01#x\
+\x00\x00\x022\x00\x00\x00\x00\x00\x01\x00\x01\x1a\xe7\
+\x00\x00\x03t\x00\x00\x00\x00\x00\x01\x00\x01.\x19\
+\x00\x00\x02\xe8\x00\x00\x00\x00\x00\x01\x00\x01%G\
+\x00\x00\x03:\x00\x00\x00\x00\x00\x01\x00\x01*\xd5\
+\x00\x00\x02d\x00\x00\x00\x00\x00\x01\x00\x01\x1eS\
+\x00\x00\x03\x04\x00\x00\x00\x00\x00\x01\x00\x01'\x10\
+\x00\x00\x02\x80\x00\x00\x00\x00\x00\x01\x00\x01\x1fP\
+\x00\x00\x02\x9c\x00\x00\x00\x00\x00\x01\x00\x01!\x09\
+\x00\x00\x03\x18\x00\x00\x00\x00\x00\x01\x00\x01)\x94\
+\x00\x00\x01J\x00\x00\x00\x00\x00\x01\x00\x00\xadc\
+\x00\x00\x00\xe6\x00\x00\x00\x00\x00\x01\x00\x00f\xf7\
+\x00\x00\x01\xac\x00\x00\x00\x00\x00\x01\x00\x00\xddY\
 \x00\x00\x00\xc4\x00\x00\x00\x00\x00\x01\x00\x00K`\
-\x00\x00\x01\x0a\x00\x00\x00\x00\x00\x01\x00\x00j'\
-\x00\x00\x01\x8a\x00\x00\x00\x00\x00\x01\x00\x00\xbe2\
+\x00\x00\x01\x0a\x00\x00\x00\x00\x00\x01\x00\x00m\x82\
+\x00\x00\x01\x8a\x00\x00\x00\x00\x00\x01\x00\x00\xc4\xa5\
 \x00\x00\x00:\x00\x00\x00\x00\x00\x01\x00\x00\x10\x11\
-\x00\x00\x02\x0a\x00\x00\x00\x00\x00\x01\x00\x01\x09\xaf\
+\x00\x00\x02\x0a\x00\x00\x00\x00\x00\x01\x00\x01\x13(\
 \x00\x00\x00\x82\x00\x00\x00\x00\x00\x01\x00\x00\x1e\xd9\
-\x00\x00\x01,\x00\x00\x00\x00\x00\x01\x00\x00\x81w\
-\x00\x00\x01\xd0\x00\x00\x00\x00\x00\x01\x00\x00\xda\xc5\
-\x00\x00\x01n\x00\x00\x00\x00\x00\x01\x00\x00\xae\x9b\
+\x00\x00\x01,\x00\x00\x00\x00\x00\x01\x00\x00\x87\xea\
+\x00\x00\x01\xd0\x00\x00\x00\x00\x00\x01\x00\x00\xe4>\
+\x00\x00\x01n\x00\x00\x00\x00\x00\x01\x00\x00\xb5\x0e\
 \x00\x00\x00\x1e\x00\x00\x00\x00\x00\x01\x00\x00\x00\x00\
-\x00\x00\x01\xee\x00\x00\x00\x00\x00\x01\x00\x00\xfb(\
+\x00\x00\x01\xee\x00\x00\x00\x00\x00\x01\x00\x01\x04\xa1\
 \x00\x00\x00^\x00\x00\x00\x00\x00\x01\x00\x00\x15\xff\
 \x00\x00\x00\xa0\x00\x00\x00\x00\x00\x01\x00\x00B\xfe\
 "

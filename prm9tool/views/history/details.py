@@ -113,7 +113,10 @@ class RecordDetailsDialog(QDialog):
             label = QLabel("\n".join(self.failing))
             self.labels["failed"] = label
             form.addRow(self.tr("Failed figures:"), label)
-        self.text = QPlainTextEdit(json.dumps(details, indent=1, ensure_ascii=False))
+        shown = dict(details)
+        if isinstance(shown.get("curves"), dict):  # a characterization's curves for a later
+            shown["curves"] = "…"  # signature: some thousand numbers, not for reading here
+        self.text = QPlainTextEdit(json.dumps(shown, indent=1, ensure_ascii=False))
         self.text.setReadOnly(True)
         self.pdf = pdf_of(details)
         self.pdf_button = QPushButton(self.tr("Open the PDF"))

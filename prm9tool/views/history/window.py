@@ -213,6 +213,7 @@ class HistoryTableModel(QAbstractTableModel):
             "frequency-response": self.tr("Frequency response measured"),
             "report-saved": self.tr("Test report saved"),
             "twin": self.tr("Twin fitted (--fit-twin)"),
+            "signature": self.tr("Compared with the birth certificate (--signature)"),
         }
 
     def _stores(self) -> dict[str, str]:

@@ -47,6 +47,7 @@ from prm9tool.views.tuning.autotune import AutotunePage
 from prm9tool.views.tuning.pages import BodePage, Page
 from prm9tool.views.tuning.progress import TestProgress
 from prm9tool.views.tuning.report_page import ReportPage
+from prm9tool.views.tuning.signature_page import SignaturePage
 from prm9tool.views.tuning.static import FlowPage, StaticPage
 
 
@@ -88,6 +89,7 @@ class TuningWindow(QDialog):
         self.static = StaticPage(self)
         self.flow = FlowPage(self) if doc.variant.config is Config.E04 else None
         self.report = ReportPage(self)
+        self.signature = SignaturePage(self)  # Compare with birth certificate (issue 31)
         self.loop.currentIndexChanged.connect(self._on_loop_changed)
         if doc.variant.config is Config.E04 and doc.value("CTRLMODE") == 4:  # as delivered:
             self.loop.setCurrentIndex(self.loop.findData("process"))  # the loop its setpoint drives
@@ -257,12 +259,12 @@ class TuningWindow(QDialog):
     def pages(self) -> list[Page]:
         """The tabs' pages in order (the flow characteristic on E04 only)."""
         flow = [self.flow] if self.flow is not None else []
-        return [self.autotune, self.bode, self.static, *flow, self.report]
+        return [self.autotune, self.bode, self.static, *flow, self.report, self.signature]
 
     def _on_finished(self, kind: str, result: object) -> None:
         self._say(lambda: self.tr("Done."))
         pages: dict[str, Page] = {"autotune": self.autotune, "bode": self.bode}
-        pages.update(static=self.static, flow=self.flow or self.report)
+        pages.update(static=self.static, flow=self.flow or self.report, signature=self.signature)
         pages.get(kind, self.report).show_result(result)
         if isinstance(self.runner, ValveRunner):  # the valve moved: into its history
             record_tuning_run(self.connection, kind, result)
@@ -270,8 +272,10 @@ class TuningWindow(QDialog):
     def _on_restored(self, message: str) -> None:
         self._say(lambda: message)
 
-    def _on_failed(self, _kind: str, message: str) -> None:
+    def _on_failed(self, kind: str, message: str) -> None:
         self._say(lambda: self.tr("Stopped: %1").replace("%1", message), failure=True)
+        if kind == "signature":  # a refusal (no birth certificate) stays on its page
+            self.signature.show_failure(message)
 
     # --- document --------------------------------------------------------------------------------
     def accept_values(self, values: dict[str, int], text: str) -> bool:
@@ -331,7 +335,8 @@ class TuningWindow(QDialog):
             mode = self.tr("Online: the tests move the connected valve.")
         self.mode.setText(mode)
         names = [self.tr("Autotune"), self.tr("Frequency response"),
-                 self.tr("Static characteristic"), self.tr("Test report")]  # fmt: skip
+                 self.tr("Static characteristic"), self.tr("Test report"),
+                 self.tr("Birth certificate")]  # fmt: skip
         if self.flow is not None:
             names.insert(3, self.tr("Flow characteristic (E04)"))
         for k, name in enumerate(names):
