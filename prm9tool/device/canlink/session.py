@@ -33,7 +33,6 @@ import numpy as np
 
 from prm9tool.catalogue import CATALOGUE, LOAD_SIGNATURE, SAVE_SIGNATURE, Parameter
 from prm9tool.catalogue.commissioning import NmtCommand
-from prm9tool.catalogue.typekey import TypeKey
 from prm9tool.device.canlink import bus as canbus
 from prm9tool.device.canlink import discovery, relocate
 from prm9tool.device.canlink.nmt_confirm import send_and_confirm
@@ -42,7 +41,7 @@ from prm9tool.device.canlink.sampler import SdoSampler
 from prm9tool.device.canlink.sdo import MISSING, SdoChannel
 from prm9tool.device.canlink.status import read_status, stopped_status
 from prm9tool.device.canlink.storing import STORED_WITH_1010, factory_upload
-from prm9tool.device.canlink.typekeys import forget, lacking_objects, remember, resolve
+from prm9tool.device.canlink.typekeys import GivenKey
 from prm9tool.device.canlink.upload_steps import CanopenUploadSteps
 from prm9tool.device.records import (
     DeviceInfo,
@@ -120,9 +119,7 @@ class CanopenSession(ValveSession):
             raise Prm9Error(f"CANopen node IDs are 1…127, not {node_id}")
         super().__init__(f"can:{node_id}", on_close)
         self.node_id = node_id
-        self._type_key_hint = type_key
-        self._label_key = label_key
-        self.key_given = False  # True: the type key was given, the valve has no 0x2041
+        self._key = GivenKey(type_key, label_key)  # the key given where the valve tells none
         self._shared = canbus.acquire(options)
         self._closed = False
         self._upload = CanopenUploadSteps(
@@ -162,6 +159,11 @@ class CanopenSession(ValveSession):
         """True once the session released the bus."""
         return self._closed
 
+    @property
+    def key_given(self) -> bool:
+        """True: the type key was given, the valve has no 0x2041."""
+        return self._key.given
+
     # --- identity ---------------------------------------------------------------------------
     def identify(self) -> DeviceInfo:
         """Who the node is; NotAPrm9Error for another CANopen device (0x1000, 0x1018/1)."""
@@ -176,21 +178,7 @@ class CanopenSession(ValveSession):
             )
         if found.problem:
             raise ProtocolError(f"node {self.node_id}: {found.problem}")
-        key = found.type_key
-        self.key_given = key is None
-        if key is None:
-            assert found.derived is not None
-            from prm9tool.paths import user_data_dir
-
-            key = resolve(
-                found.serial,
-                found.derived,
-                self._type_key_hint,
-                user_data_dir(),
-                label=self._label_key,
-            )
-            if self._label_key:
-                remember(user_data_dir(), found.serial, key)
+        key = self._key.key_of(found.serial, found.type_key, found.derived)
         bus = self.options
         return DeviceInfo(
             type_key=key,
@@ -214,10 +202,8 @@ class CanopenSession(ValveSession):
         """:meth:`ValveSession.upload`; a valve without 0x2041 that stored a set for the type
         key given (the batch file's) keeps that key remembered for its serial number."""
         result = super().upload(values, progress, cancel)
-        if result.stored and self.key_given:
-            from prm9tool.paths import user_data_dir
-
-            remember(user_data_dir(), self.info.serial, self.info.type_key)
+        if result.stored:
+            self._key.stored(self.info.serial, self.info.type_key)
         return result
 
     def download(
@@ -227,13 +213,7 @@ class CanopenSession(ValveSession):
         lacks objects the manual lists for that key is refused (TypeKeyError), and the key is
         no longer remembered for it."""
         values = super().download(progress, cancel)
-        if self.key_given:
-            refusal = lacking_objects(self.info.serial, TypeKey.parse(self.info.type_key), values)
-            if refusal is not None:
-                from prm9tool.paths import user_data_dir
-
-                forget(user_data_dir(), self.info.serial, self.info.type_key)
-                raise refusal
+        self._key.check_download(self.info.serial, self.info.type_key, values)
         return values
 
     def _key_refusal(self) -> TypeKeyError | None:
@@ -247,7 +227,7 @@ class CanopenSession(ValveSession):
             for p in CATALOGUE.file_parameters(self.variant)
             if p.mnemonic not in self.unavailable
         }
-        return lacking_objects(self.info.serial, TypeKey.parse(self.info.type_key), present)
+        return self._key.refusal(self.info.serial, self.info.type_key, present)
 
     # --- entries ----------------------------------------------------------------------------
     def _read_entries(
