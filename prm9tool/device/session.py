@@ -145,8 +145,10 @@ class ValveSession(ABC):
     transactional upload (write all → read back and compare → store), download, parameters the
     valve lacks on this link (:attr:`unavailable`), close hooks. A link is one subclass
     (:class:`prm9tool.device.usb.session.UsbSession`,
-    :class:`prm9tool.device.canopen.session.CanopenSession`) implementing the abstract
-    methods. Thread-safe as far as the link serializes its exchanges.
+    :class:`prm9tool.device.canlink.session.CanopenSession`) implementing the abstract
+    methods; a link whose upload needs steps of its own gives the session another
+    :class:`UploadSteps` part (:attr:`upload_steps`). Thread-safe as far as the link serializes
+    its exchanges.
     """
 
     # after the store, restart the valve and read every value back (the hydraulics are off: the

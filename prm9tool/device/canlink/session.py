@@ -38,7 +38,7 @@ from prm9tool.device.canlink import discovery, relocate
 from prm9tool.device.canlink.nmt_confirm import send_and_confirm
 from prm9tool.device.canlink.pdo_scope import NotPdoMappedError, PdoSampler, min_period_s
 from prm9tool.device.canlink.sampler import SdoSampler
-from prm9tool.device.canlink.sdo import MISSING, SdoChannel
+from prm9tool.device.canlink.sdo import MISSING, SdoChannel, decoded
 from prm9tool.device.canlink.status import read_status, stopped_status
 from prm9tool.device.canlink.storing import STORED_WITH_1010, factory_upload
 from prm9tool.device.canlink.typekeys import GivenKey
@@ -72,25 +72,6 @@ STORE_TIMEOUT_S = 3.0  # writing the non-volatile memory takes longer than an SD
 BOOT_TIMEOUT_S = 10.0  # NMT reset node -> boot-up (the valve takes about 2 s, manual §7.6)
 LINK_PARAMETERS = ("NODEID", "BITRATE")  # take effect at power-up: the tool's link moves
 __all__ = ["CanopenSession", "NotAPrm9Error"]
-
-
-def _decoded(param: Parameter, data: bytes) -> int:
-    """The number ``data`` holds as ``param``'s type: ProtocolError when it has too few bytes,
-    or more whose value is not that number (an expedited answer may pad a short type to 4
-    bytes, with zeros or its top bit extended; anything else in them is no value of the
-    type)."""
-    dtype = param.dtype
-    size = dtype.size
-    if len(data) < size:
-        raise ProtocolError(f"{param.mnemonic}: {len(data)} bytes for a {dtype.name}")
-    value = int(dtype.decode(data[:size]))
-    rest = data[size:]
-    padding = b"\xff" if data[size - 1] & 0x80 else b"\0"  # zeros or the sign extended
-    if rest and rest not in (bytes(len(rest)), padding * len(rest)):
-        raise ProtocolError(
-            f"{param.mnemonic}: the answer 0x{data[::-1].hex().upper()} is no {dtype.name}"
-        )
-    return value
 
 
 class NotAPrm9Error(AccessDeniedError):
@@ -256,7 +237,7 @@ class CanopenSession(ValveSession):
         if param.is_string:
             value: Value = data.split(b"\0", 1)[0].decode("latin-1")
         else:
-            value = _decoded(param, data)
+            value = decoded(param, data)
         self._upload.known[param.mnemonic] = value
         return value
 
