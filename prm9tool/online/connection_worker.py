@@ -271,7 +271,7 @@ class ConnectionWorker:
         if self._driver is not None and self.session is not None:
             left_on = self._driver.leftovers()  # its end cannot run: put back when it is back
             if left_on:
-                serial = int(getattr(getattr(self.session, "info", None), "serial", 0))
+                serial = self.session.info.serial
                 self._left_on = (serial, left_on)
         self.stop_driver(None, switch_off=False)  # the link may be gone: nothing to write
         session, self.session = self.session, None
