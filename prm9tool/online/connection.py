@@ -415,12 +415,12 @@ class ValveConnection(QObject):
         thread as ``device_changed``."""
 
         def work(session: ValveSession) -> object:
-            before = getattr(session, "info", None)
+            before = session.info
             try:
                 return run(session)
             finally:
-                after = getattr(session, "info", None)
-                if after is not before and after is not None:
+                after = session.info
+                if after is not before:
                     self._post(lambda: self._on_identity_changed(after))
 
         return work
