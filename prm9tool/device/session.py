@@ -15,11 +15,12 @@ step)`` and stop at the next report when ``cancel`` is set. Failures raise the t
    store **and** it stored the verified working values. The store copies the working values
    into non-volatile memory and a restart replaces the working values with the stored ones, so
    a valve that restarted (brown-out) before the store stored its old set. How a link makes
-   sure is its own (:meth:`UploadSteps.store_problem`, the link's part of the upload): over USB it reads every value back
-   once more and compares — a valve that restarted reads back its old values; over CANopen
-   the master watches the node's boot-up frame, which a restarting node sends (CiA 301), from
-   before the first write to the store's acknowledgement, and reads back one value the upload
-   changed (prm9tool.device.canlink.session). A refused store (abort, e.g. 0x08000020) is
+   sure is its own (:meth:`UploadSteps.store_problem`, the link's part of the upload): over
+   USB it reads every value back once more and compares — a valve that restarted reads back
+   its old values; over CANopen the master watches the node's boot-up frame, which a
+   restarting node sends (CiA 301), from before the first write to the store's
+   acknowledgement, and reads back one value the upload changed
+   (prm9tool.device.canlink.session). A refused store (abort, e.g. 0x08000020) is
    ``failed_step`` ``store`` with the reason in ``failure``.
 
 A link may leave out writing a value the valve is known to hold already (read during this

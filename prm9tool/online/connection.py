@@ -5,9 +5,9 @@ One worker thread owns the session; the GUI thread only queues jobs (go online, 
 worker polls the valve on its own schedule, whether or not jobs keep arriving: the
 oscilloscope stream (every 20 ms), status and read-only live values (≈ 2 Hz) and watched
 measuring points (≈ 7 Hz); those live commands, their signals and their state are the part
-the connection holds, :class:`LiveData` (connection_live.py). A communication error ends the session: the connection reports ``lost``,
-is offline afterwards and looks for the same valve again (connection_reconnect.py). QtCore
-only; the device layer is imported lazily.
+the connection holds, :class:`LiveData` (connection_live.py). A communication error ends the
+session: the connection reports ``lost``, is offline afterwards and looks for the same valve
+again (connection_reconnect.py). QtCore only; the device layer is imported lazily.
 """
 
 from __future__ import annotations
