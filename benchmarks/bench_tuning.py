@@ -22,7 +22,8 @@ from collections.abc import Callable
 from prm9tool.analysis.model import Targets
 from prm9tool.analysis.profile import DEFAULT
 from prm9tool.characterize.autotune import model_tune
-from prm9tool.characterize.procedures import bode_test, critical_gain_tune, static_test
+from prm9tool.characterize.critical_gain import critical_gain_tune
+from prm9tool.characterize.procedures import bode_test, static_test
 from prm9tool.characterize.rig import EmulatorRig
 from prm9tool.characterize.run import characterize
 from prm9tool.device.emulator import EmulatedValve

@@ -53,9 +53,11 @@ def plan_from(args: argparse.Namespace, spools_problem: Prm9Error | None = None)
 
 def _emulator_spec(spec: str) -> str:
     """``TYPEKEY[:SERIAL]`` with the defaults filled in: without a serial the first one from
-    1001 on that is free for this type (``factory.free_emulator_serial``). ``twin:FILE`` stays
-    as it is (the twin file names its serial; :func:`_normal_spec` reads it)."""
-    from prm9tool.device.factory import TWIN, free_emulator_serial
+    1001 on that is free for this type (``emulated_valves.free_emulator_serial``).
+    ``twin:FILE`` stays as it is (the twin file names its serial; :func:`_normal_spec` reads
+    it)."""
+    from prm9tool.device.emulated_valves import free_emulator_serial
+    from prm9tool.device.factory import TWIN
     from prm9tool.errors import TypeKeyError
     from prm9tool.views.hid_dialog import DEFAULT_EMULATOR_SERIAL, DEFAULT_EMULATOR_TYPE_KEY
 

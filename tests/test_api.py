@@ -15,7 +15,7 @@ import pytest
 import prm9tool
 from prm9tool.api import EXPORTS, Valve
 from prm9tool.catalogue.typekey import TypeKey
-from prm9tool.device import factory
+from prm9tool.device import emulated_valves
 from prm9tool.errors import AccessDeniedError, FileFormatError, TypeKeyError, ValueRangeError
 from prm9tool.files.prmfile import PrmContents, write_file
 
@@ -41,7 +41,7 @@ SNIPPET = textwrap.dedent(
 @pytest.fixture(autouse=True)
 def _fresh_emulators():
     yield
-    factory.forget_emulated_valves()
+    emulated_valves.forget_emulated_valves()
 
 
 @pytest.fixture

@@ -12,7 +12,7 @@ import pytest
 
 import prm9tool
 from prm9tool.cli.parser import build_parser
-from prm9tool.device import factory
+from prm9tool.device import emulated_valves
 
 PAGE = Path(__file__).resolve().parents[1] / "docs" / "api.md"
 BLOCK = re.compile(r"^```python\n(.*?)^```$", re.MULTILINE | re.DOTALL)
@@ -21,7 +21,7 @@ BLOCK = re.compile(r"^```python\n(.*?)^```$", re.MULTILINE | re.DOTALL)
 @pytest.fixture(autouse=True)
 def _fresh_emulators():
     yield
-    factory.forget_emulated_valves()
+    emulated_valves.forget_emulated_valves()
 
 
 def blocks() -> list[str]:

@@ -21,7 +21,7 @@ from prm9tool.catalogue import CATALOGUE
 from prm9tool.catalogue.typekey import TypeKey
 from prm9tool.cli import batch
 from prm9tool.cli.main import main
-from prm9tool.device import factory
+from prm9tool.device import emulated_valves
 from prm9tool.device.emulator import EmulatedValve
 from prm9tool.device.usb.session import UsbSession
 from prm9tool.device.usb.transport.emulator import EmulatorTransport, LinkFaults
@@ -381,7 +381,7 @@ def test_unplugged_at_the_store_step_the_report_keeps_what_was_written_and_verif
     die_after: list[int] = []
 
     def open_on_a_faulty_link(entry):
-        transport = EmulatorTransport(factory.emulated_valve(entry.type_key, entry.serial))
+        transport = EmulatorTransport(emulated_valves.emulated_valve(entry.type_key, entry.serial))
         transport.faults = LinkFaults(die_after=die_after[0] if die_after else None)
         links.append(transport)
         return UsbSession(transport, entry.device_id)
@@ -393,7 +393,7 @@ def test_unplugged_at_the_store_step_the_report_keeps_what_was_written_and_verif
         args = ["--batch", str(source), "--emulator", f"{E04}:92"]
         assert main([*args, "--report", str(tmp_path / "r.json")]) == ExitCode.COMMUNICATION
     finally:
-        factory.forget_emulated_valves()
+        emulated_valves.forget_emulated_valves()
     record = report(tmp_path, "r.json")["valves"][0]
     assert (record["result"], record["failed_step"]) == ("communication-error", "store")
     assert record["parameters_written"] == len(read_file(source).values)
@@ -494,7 +494,7 @@ def test_a_refused_store_is_reported_truthfully_and_the_valve_reloaded(tmp_path,
     valves = []
 
     def open_a_valve_that_refuses_to_store(entry):
-        valve = factory.emulated_valve(entry.type_key, entry.serial)
+        valve = emulated_valves.emulated_valve(entry.type_key, entry.serial)
         valve.store = refuse  # type: ignore[method-assign]
         valves.append(valve)
         return UsbSession(EmulatorTransport(valve), entry.device_id)
@@ -508,7 +508,7 @@ def test_a_refused_store_is_reported_truthfully_and_the_valve_reloaded(tmp_path,
         assert main([*args, "--report", str(tmp_path / "r.json")]) == ExitCode.VERIFY_FAILED
         working = {m: valves[0].read(*CATALOGUE[m].key) for m in ("LIMTA", "DTAMP")}
     finally:
-        factory.forget_emulated_valves()
+        emulated_valves.forget_emulated_valves()
     record = report(tmp_path, "r.json")["valves"][0]
     assert (record["result"], record["failed_step"]) == ("store-failed", "store")
     assert record["parameters_written"] == len(read_file(source).values)
@@ -596,7 +596,7 @@ def test_a_valve_listed_again_after_its_link_broke_is_reported_not_retried(
     opened: list[EmulatorTransport] = []
 
     def open_and_pull_the_cable(entry):
-        transport = EmulatorTransport(factory.emulated_valve(entry.type_key, entry.serial))
+        transport = EmulatorTransport(emulated_valves.emulated_valve(entry.type_key, entry.serial))
         transport.faults = LinkFaults(die_after=transport.reports_on_link + 30)  # in the run
         opened.append(transport)
         if not plugged_back:
@@ -608,7 +608,7 @@ def test_a_valve_listed_again_after_its_link_broke_is_reported_not_retried(
         args = ["--batch", str(source), "--emulator", f"{E04}:93"]
         assert main([*args, "--report", str(tmp_path / "r.json")]) == ExitCode.COMMUNICATION
     finally:
-        factory.forget_emulated_valves()
+        emulated_valves.forget_emulated_valves()
     record = report(tmp_path, "r.json")["valves"][0]
     assert record["result"] == "communication-error" and len(opened) == 1  # no retry
     if plugged_back:

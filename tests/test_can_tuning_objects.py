@@ -11,7 +11,7 @@ from support.waiting import wait_for
 from prm9tool.catalogue import CATALOGUE
 from prm9tool.catalogue.commissioning import NmtCommand
 from prm9tool.characterize.canrig import rig_for_session
-from prm9tool.characterize.procedures import critical_gain_tune
+from prm9tool.characterize.critical_gain import critical_gain_tune
 from prm9tool.device.canlink.session import CanopenSession
 from prm9tool.device.records import DeviceState
 from prm9tool.errors import Prm9Error

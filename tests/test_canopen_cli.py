@@ -17,7 +17,7 @@ from support.canopen_rig import TIMEOUT_S, unique_channel
 
 from prm9tool import app
 from prm9tool.cli import main as cli
-from prm9tool.device import factory
+from prm9tool.device import emulated_valves, factory
 from prm9tool.errors import CanBusError
 
 E04_CA = "PRM9-06.3Z11/30-24E04S02-CA"
@@ -49,7 +49,7 @@ def _open(argv: list[str]) -> object:
 @pytest.fixture(autouse=True)
 def _forget_valves():
     yield
-    factory.forget_emulated_valves()
+    emulated_valves.forget_emulated_valves()
 
 
 def test_command_line_puts_the_emulated_ca_valve_on_the_chosen_virtual_channel():
@@ -60,7 +60,7 @@ def test_command_line_puts_the_emulated_ca_valve_on_the_chosen_virtual_channel()
     argv = ["--emulator", f"{E04_CA}:{SERIAL}", "--can-interface", "virtual"]
     session = _open([*argv, "--can-channel", channel])
     try:
-        node_id = factory.emulated_valve(E04_CA, SERIAL).node_id
+        node_id = emulated_valves.emulated_valve(E04_CA, SERIAL).node_id
         _wait_for(listener, 0x700 + node_id, b"\x00")  # boot-up, paced in real time
         node = network.add_node(node_id)
         node.sdo.RESPONSE_TIMEOUT = TIMEOUT_S
@@ -85,7 +85,7 @@ def test_an_unknown_can_interface_is_reported_and_the_usb_session_keeps_working(
         assert session.read("LIMTA") == 2400  # type: ignore[attr-defined]  # USB unaffected
     finally:
         session.close()  # type: ignore[attr-defined]
-    assert not factory.emulated_valve(E04_CA, SERIAL).running  # nothing left running
+    assert not emulated_valves.emulated_valve(E04_CA, SERIAL).running  # nothing left running
 
 
 def test_the_bus_is_released_when_the_session_closes(monkeypatch):
@@ -101,4 +101,4 @@ def test_the_bus_is_released_when_the_session_closes(monkeypatch):
     session = _open([*argv, "--can-channel", unique_channel("release")])
     assert len(opened) == 1 and not opened[0]._is_shutdown
     session.close()  # type: ignore[attr-defined]
-    assert opened[0]._is_shutdown and not factory.emulated_valve(E04_CA, SERIAL).running
+    assert opened[0]._is_shutdown and not emulated_valves.emulated_valve(E04_CA, SERIAL).running

@@ -17,11 +17,11 @@ from prm9tool.analysis.model import Targets
 from prm9tool.analysis.static import linearization_values, propose_linearization
 from prm9tool.catalogue import CATALOGUE
 from prm9tool.characterize.autotune import model_tune
+from prm9tool.characterize.critical_gain import critical_gain_tune
 from prm9tool.characterize.procedures import (
     TRANSPARENT,
     LimitExceededError,
     bode_test,
-    critical_gain_tune,
     static_test,
     step_test,
 )
@@ -184,7 +184,7 @@ def test_a_limit_exceeded_stops_the_step_and_restores():
 def test_over_a_link_the_figures_agree_with_the_stepped_emulator():
     """SessionRig: the override written at the link's pace, samples from the stream."""
     from prm9tool.characterize.rig import SessionRig
-    from prm9tool.device import factory
+    from prm9tool.device import emulated_valves, factory
 
     session = factory.open_session(f"emulator:{E02}:61", paced=False)
     try:
@@ -194,7 +194,7 @@ def test_over_a_link_the_figures_agree_with_the_stepped_emulator():
         assert rig.read(["SETPOVRON", "THRESETP"]) == {"SETPOVRON": 0, "THRESETP": 819}
     finally:
         session.close()
-        factory.forget_emulated_valves()
+        emulated_valves.forget_emulated_valves()
     stepped = bode_test(EmulatorRig(booted()), 10.0, 0.0, 2.0, 100.0, 2.0).response.bandwidth_hz()
     assert linked == pytest.approx(stepped, rel=0.05)
     assert static.gain == pytest.approx(1.0, abs=0.03)

@@ -9,7 +9,7 @@ import pytest
 from pypdf import PdfReader
 
 from prm9tool.cli.main import main
-from prm9tool.device import factory
+from prm9tool.device import emulated_valves
 from prm9tool.errors import ExitCode
 
 E02 = "PRM9-06.3Z11/30-24E02S02"
@@ -31,7 +31,7 @@ static_hysteresis_pct = { max = 3 }
 @pytest.fixture(autouse=True)
 def _fresh_emulators():
     yield
-    factory.forget_emulated_valves()
+    emulated_valves.forget_emulated_valves()
 
 
 def run(tmp_path, profile: str, serial: int, *extra: str) -> int:

@@ -18,7 +18,7 @@ from support.usb_fakes import FakeHid
 from prm9tool.catalogue import CATALOGUE
 from prm9tool.catalogue.commissioning import ENABLE_SEQUENCE, NmtCommand
 from prm9tool.cli.main import main
-from prm9tool.device import factory
+from prm9tool.device import emulated_valves, factory
 from prm9tool.device.emulator import EmulatedValve
 from prm9tool.device.usb.transport.hidapi import HidTransport
 from prm9tool.errors import ExitCode
@@ -75,7 +75,7 @@ def step_s(rig) -> float:
 @pytest.fixture(autouse=True)
 def _fresh_emulators():
     yield
-    factory.forget_emulated_valves()
+    emulated_valves.forget_emulated_valves()
 
 
 @pytest.fixture

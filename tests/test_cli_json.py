@@ -9,7 +9,7 @@ import pytest
 
 from prm9tool.catalogue.typekey import TypeKey
 from prm9tool.cli.main import main
-from prm9tool.device import factory
+from prm9tool.device import emulated_valves
 from prm9tool.errors import ExitCode
 from prm9tool.files.prmfile import PrmContents, write_file
 from prm9tool.model.document import ParameterDocument
@@ -20,7 +20,7 @@ E04 = "PRM9-06.3Z11/30-24E04S02-CA"
 @pytest.fixture(autouse=True)
 def _fresh_emulators():
     yield
-    factory.forget_emulated_valves()
+    emulated_valves.forget_emulated_valves()
 
 
 def _prm(folder, name, **values):

@@ -18,7 +18,7 @@ from prm9tool.catalogue.commissioning import (
     NmtCommand,
     blocker,
 )
-from prm9tool.device import factory
+from prm9tool.device import emulated_valves, factory
 from prm9tool.device.emulator import EmulatedValve
 from prm9tool.device.usb.protocol import Nmt, decode_request, encode_request
 from prm9tool.device.usb.protocol.wire import MalformedReportError
@@ -32,12 +32,12 @@ CA = "PRM9-06.3Z11/30-24E02S02-CA"
 
 @pytest.fixture
 def session():
-    factory.forget_emulated_valves()  # a fresh valve for each test
+    emulated_valves.forget_emulated_valves()  # a fresh valve for each test
     opened = factory.open_session(f"emulator:{CA}:9001", paced=False)
     opened.transport.valve.advance(2.0)  # booted: pre-operational, INIT
     yield opened
     opened.close()
-    factory.forget_emulated_valves()
+    emulated_valves.forget_emulated_valves()
 
 
 def test_the_nmt_request_is_one_byte_and_refuses_unknown_commands():

@@ -20,7 +20,7 @@ from support.gui_support import (
 
 from prm9tool import i18n
 from prm9tool.catalogue import Access
-from prm9tool.device import factory
+from prm9tool.device import emulated_valves
 from prm9tool.model.access import AccessModel
 from prm9tool.model.document import ParameterDocument
 from prm9tool.model.undo import DocumentUndo
@@ -78,7 +78,7 @@ def paced_window(qtbot, tmp_path, monkeypatch):
     win.show()
     yield win
     connection.shutdown()
-    factory.forget_emulated_valves()
+    emulated_valves.forget_emulated_valves()
 
 
 def test_a_red_dot_opens_the_scope_with_its_measuring_point(qtbot, paced_window):

@@ -12,7 +12,7 @@ from support.canopen_rig import E02, E04, Rig, make_rig
 from prm9tool.catalogue import CATALOGUE
 from prm9tool.catalogue.manual_od import MANUAL_OBJECTS, in_manual
 from prm9tool.cli.main import main
-from prm9tool.device import factory
+from prm9tool.device import emulated_valves
 
 
 @pytest.fixture
@@ -128,13 +128,13 @@ def test_e02_manual_valve(request: pytest.FixtureRequest):
 
 def test_the_option_reaches_the_emulated_valves_of_the_process(tmp_path, monkeypatch, capsys):
     monkeypatch.setenv("PRM9TOOL_DATA_DIR", str(tmp_path))
-    factory.forget_emulated_valves()
+    emulated_valves.forget_emulated_valves()
     try:
-        factory.set_emulator_od("manual")
-        assert factory.emulated_valve(E04, 99).od == "manual"
+        emulated_valves.set_emulator_od("manual")
+        assert emulated_valves.emulated_valve(E04, 99).od == "manual"
     finally:
-        factory.set_emulator_od("full")
-        factory.forget_emulated_valves()
+        emulated_valves.set_emulator_od("full")
+        emulated_valves.forget_emulated_valves()
     assert main(["--od", "manual", "--list-devices"]) == 2
     assert "--od chooses the object dictionary of --emulator or --serve-emulator" in (
         capsys.readouterr().err

@@ -199,12 +199,12 @@ def test_the_valve_list_says_in_german_why_a_remembered_emulated_valve_cannot_be
     from PySide6.QtCore import QSettings
 
     from prm9tool import i18n
-    from prm9tool.device import factory
+    from prm9tool.device import emulated_valves, factory
     from prm9tool.views.hid_dialog import HidConfigurationDialog
 
     monkeypatch.setenv("PRM9TOOL_DATA_DIR", str(tmp_path))
-    factory.forget_emulated_valves()
-    EmulatedValve(E02_CA, nv_path=factory.emulator_nv_path(7007)).store()
+    emulated_valves.forget_emulated_valves()
+    EmulatedValve(E02_CA, nv_path=emulated_valves.emulator_nv_path(7007)).store()
     _usable, unusable = factory.usable_emulators([f"{E04}:7007"])
     settings = QSettings(str(tmp_path / "s.ini"), QSettings.Format.IniFormat)
     try:
@@ -215,5 +215,5 @@ def test_the_valve_list_says_in_german_why_a_remembered_emulated_valve_cannot_be
         text = dialog.table.item(0, 4).text()
     finally:
         i18n.set_language("en")
-        factory.forget_emulated_valves()
+        emulated_valves.forget_emulated_valves()
     assert f"das Abbild gehört zu einem Ventil {E02_CA}, nicht zu {E04}" in text

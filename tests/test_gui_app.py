@@ -13,7 +13,7 @@ from support.gui_support import record_prompts
 from prm9tool import app, i18n
 from prm9tool.catalogue.typekey import USER_SPOOLS_FILE, TypeKey, load_user_spools
 from prm9tool.cli.main import build_parser, main
-from prm9tool.device import factory
+from prm9tool.device import emulated_valves, factory
 from prm9tool.errors import TypeKeyError
 from prm9tool.files import prmfile
 
@@ -25,7 +25,7 @@ TIMEOUT = 15_000
 def answers(monkeypatch, tmp_path):
     QSettings.setPath(QSettings.Format.NativeFormat, QSettings.Scope.UserScope, str(tmp_path))
     yield record_prompts(monkeypatch)
-    factory.forget_emulated_valves()
+    emulated_valves.forget_emulated_valves()
     i18n.set_language("en")
 
 
@@ -46,7 +46,7 @@ def test_an_emulator_of_another_type_does_not_take_the_serial_of_a_stored_valve(
     e02 = "PRM9-06.3Z11/30-24E02S02-CA"
     with factory.open_session(f"emulator:{e02}:1001", paced=False) as session:
         session.store()
-    factory.forget_emulated_valves()  # the first program has ended
+    emulated_valves.forget_emulated_valves()  # the first program has ended
     assert app.plan_from(_args("--emulator", E04_CA)).emulators == [f"{E04_CA}:1002"]
     assert app.plan_from(_args("--emulator")).emulators == [f"{e02}:1001"]  # its values again
     with factory.open_session(f"emulator:{E04_CA}:1002", paced=False) as session:
@@ -96,9 +96,9 @@ def test_a_twin_on_the_command_line_goes_online_as_its_valve(qtbot, answers, tmp
     with qtbot.waitSignal(window.connection.online_changed, timeout=TIMEOUT):
         app.start(window, app.plan_from(args))
     assert window.connection.device.serial == 4301
-    assert factory.EMULATED.valves[4301].plant.force_n_per_a == 25.0
+    assert emulated_valves.EMULATED.valves[4301].plant.force_n_per_a == 25.0
     window.connection.shutdown()
-    factory.forget_emulated_valves()
+    emulated_valves.forget_emulated_valves()
     bad = _args("--emulator", f"twin:{tmp_path / 'none.toml'}")
     window = app.create_window(bad)
     qtbot.addWidget(window)
@@ -119,7 +119,7 @@ def test_the_emulated_ca_valve_joins_the_command_lines_can_bus_once_online(qtbot
         qtbot.addWidget(window)
         with qtbot.waitSignal(window.connection.online_changed, timeout=TIMEOUT):
             app.start(window, app.plan_from(args))
-        node = factory.emulated_valve(E04_CA, 4202).node_id
+        node = emulated_valves.emulated_valve(E04_CA, 4202).node_id
         seen: list[int] = []
 
         def boot_up() -> bool:

@@ -9,7 +9,7 @@ import pytest
 from PySide6.QtCore import QTimer
 from support.gui_support import E02, E04_CA, emulator_connection
 
-from prm9tool.device import factory
+from prm9tool.device import emulated_valves, factory
 from prm9tool.device.usb.transport.emulator import LinkFaults
 from prm9tool.errors import CommunicationError
 from prm9tool.files import backup
@@ -23,7 +23,7 @@ def connection(qtbot):
     conn = emulator_connection()
     yield conn
     conn.shutdown()
-    factory.forget_emulated_valves()
+    emulated_valves.forget_emulated_valves()
 
 
 @pytest.fixture
@@ -32,7 +32,7 @@ def paced_connection(qtbot):
     conn = emulator_connection(paced=True)
     yield conn
     conn.shutdown()
-    factory.forget_emulated_valves()
+    emulated_valves.forget_emulated_valves()
 
 
 def _online(qtbot, connection, spec=f"{E02}:5001"):
@@ -175,7 +175,7 @@ def test_a_can_bus_that_cannot_be_opened_is_reported_and_the_valve_stays_online(
         assert read.args[1] == {"LIMTA": 2400}
     finally:
         conn.shutdown()
-        factory.forget_emulated_valves()
+        emulated_valves.forget_emulated_valves()
 
 
 def test_watched_measuring_points_are_reported(qtbot, paced_connection):
@@ -331,7 +331,7 @@ def test_listing_the_valves_does_not_hold_up_the_gui_thread(qtbot):
     assert [e.serial for e in delivered[0]] == [5005]
     assert threads[0] is not QThread.currentThread()
     conn.shutdown()
-    factory.forget_emulated_valves()
+    emulated_valves.forget_emulated_valves()
 
 
 def test_a_listing_that_fails_delivers_the_error(qtbot):

@@ -360,12 +360,12 @@ def test_hid_dialog_lists_valves_despite_two_saved_emulators_with_one_serial(qtb
 def test_a_saved_emulated_valve_that_cannot_be_made_is_listed_with_why_and_can_go(qtbot, window):
     """An E04-CA remembered at 1001 where an E02-CA left its EEPROM image: every listing
     failed, the dialog stayed empty and nothing could be removed."""
-    from prm9tool.device import factory
+    from prm9tool.device import emulated_valves, factory
     from prm9tool.views.hid_dialog import EMULATORS_KEY, HidConfigurationDialog, saved_emulators
 
     with factory.open_session(f"emulator:{E02}:1001", paced=False) as session:
         session.store()
-    factory.forget_emulated_valves()
+    emulated_valves.forget_emulated_valves()
     window.settings.setValue(EMULATORS_KEY, [f"{E04_CA}:1001", f"{E02}:80"])
     from prm9tool import app
 

@@ -10,7 +10,7 @@ import pytest
 from PySide6.QtCore import QCoreApplication
 from support.gui_support import E02, emulator_connection
 
-from prm9tool.device import factory
+from prm9tool.device import emulated_valves, factory
 from prm9tool.device.emulated import cable_plugged, plug_cable
 from prm9tool.device.usb.transport.emulator import LinkFaults
 
@@ -23,7 +23,7 @@ def connection(qtbot):
     conn = emulator_connection(reconnect=True)
     yield conn
     conn.shutdown()
-    factory.forget_emulated_valves()
+    emulated_valves.forget_emulated_valves()
 
 
 @pytest.fixture
@@ -31,7 +31,7 @@ def paced_connection(qtbot):
     conn = emulator_connection(paced=True, reconnect=True)
     yield conn
     conn.shutdown()
-    factory.forget_emulated_valves()
+    emulated_valves.forget_emulated_valves()
 
 
 def online(qtbot, connection, spec=SPEC):

@@ -259,7 +259,7 @@ def test_online_edits_not_stored_since_the_upload_are_not_lost_by_a_restart(
 
 
 def test_the_history_window_says_which_store_happened(qtbot):
-    from prm9tool.views.history.window import HistoryTableModel
+    from prm9tool.views.history.table import HistoryTableModel
 
     model = HistoryTableModel()
     for store in (STORED_WITH_1010, KEPT_AS_WRITTEN, VERIFIED_RESTART):

@@ -23,7 +23,7 @@ def online(qtbot, tmp_path):
     """A connection online with emulated valve 7201, recording into a fresh history."""
     from support.gui_support import emulator_connection
 
-    from prm9tool.device import factory
+    from prm9tool.device import emulated_valves, factory
     from prm9tool.history.recorder import Recorder
 
     connection = emulator_connection()  # unpaced: the link's reports step the valve
@@ -37,7 +37,7 @@ def online(qtbot, tmp_path):
     finally:
         connection.shutdown()
         recorder.close()
-        factory.forget_emulated_valves()
+        emulated_valves.forget_emulated_valves()
 
 
 def _window(qtbot, connection=None) -> TuningWindow:
@@ -77,12 +77,12 @@ def test_the_comparison_runs_on_the_valve_shows_the_drift_and_saves_the_pdf(
     from prm9tool.analysis.profile import DEFAULT
     from prm9tool.characterize.rig import EmulatorRig
     from prm9tool.characterize.run import characterize
-    from prm9tool.device import factory
+    from prm9tool.device import emulated_valves
     from prm9tool.service.history import record_characterization
 
     connection, recorder = online
     # its birth certificate: the end-of-line test of the same valve (stepped here)
-    valve = factory.emulated_valve(E02, 7201)
+    valve = emulated_valves.emulated_valve(E02, 7201)
     record_characterization(recorder, characterize(EmulatorRig(valve), DEFAULT))
     w = _window(qtbot, connection)
     w.tabs.setCurrentWidget(w.signature)

@@ -25,7 +25,7 @@ from support.gui_support import record_prompts, session_of
 from prm9tool import app, i18n
 from prm9tool.catalogue import Access
 from prm9tool.cli.main import build_parser
-from prm9tool.device import factory
+from prm9tool.device import emulated_valves
 from prm9tool.online.connection_worker import PROGRESS_PERIOD_S
 from prm9tool.scope.generator import GeneratorSettings, Waveform
 from prm9tool.views import prompts
@@ -69,7 +69,7 @@ def program(qtbot, tmp_path, monkeypatch):
     yield start
     for window in started:
         window.connection.shutdown()
-    factory.forget_emulated_valves()
+    emulated_valves.forget_emulated_valves()
     i18n.set_language("en")
 
 

@@ -333,7 +333,7 @@ def test_online_the_autotune_runs_on_the_connected_valve_and_leaves_it_as_it_was
     from support.gui_support import emulator_connection
 
     from prm9tool.catalogue import CATALOGUE
-    from prm9tool.device import factory
+    from prm9tool.device import emulated_valves, factory
 
     connection = emulator_connection()  # unpaced: the link's reports step the valve
     try:
@@ -350,13 +350,13 @@ def test_online_the_autotune_runs_on_the_connected_valve_and_leaves_it_as_it_was
         w.autotune.run_button.click()
         finish(qtbot, w, 120.0)  # real time: the tests, and a parameter exchange between them
         assert "POSKP: 0.4 → " in w.autotune.result.text(), w.status.text()
-        valve = factory.emulated_valve(E02, 5101)
+        valve = emulated_valves.emulated_valve(E02, 5101)
         for mnemonic, raw in {"POSKP": 40, "THRESETP": 819, "SETPOVRON": 0}.items():
             param = CATALOGUE[mnemonic]
             assert valve.read(param.index, param.subindex) == raw
     finally:
         connection.shutdown()
-        factory.forget_emulated_valves()
+        emulated_valves.forget_emulated_valves()
 
 
 def test_static_proposes_offsets_with_the_linearization_as_one_undo_step(qtbot):

@@ -148,7 +148,7 @@ def test_a_test_on_the_valve_puts_the_status_it_reads_on_the_main_status_bar(qtb
     from support.gui_support import emulator_connection
 
     from prm9tool.characterize.procedures import bode_test
-    from prm9tool.device import factory
+    from prm9tool.device import emulated_valves, factory
 
     connection = emulator_connection()
     try:
@@ -168,4 +168,4 @@ def test_a_test_on_the_valve_puts_the_status_it_reads_on_the_main_status_bar(qtb
         assert "DEVICE_MODE_ACTIVE" in during  # read by the test, shown while it runs
     finally:
         connection.shutdown()
-        factory.forget_emulated_valves()
+        emulated_valves.forget_emulated_valves()

@@ -316,12 +316,12 @@ def test_a_characterization_is_recorded_with_its_verdict_and_figures(tmp_path, c
     from test_characterize_cli import E02, FAST
     from test_characterize_cli import run as characterize
 
-    from prm9tool.device import factory
+    from prm9tool.device import emulated_valves
 
     try:
         code = characterize(tmp_path, FAST, 7201, "--json", str(tmp_path / "r.json"))
     finally:
-        factory.forget_emulated_valves()
+        emulated_valves.forget_emulated_valves()
     assert code == ExitCode.OK
     capsys.readouterr()
     assert main(["--history", "7201", "--json"]) == ExitCode.OK

@@ -17,7 +17,8 @@ from support.history_support import E04, Valve, factory_values
 
 from prm9tool.history.recorder import Recorder
 from prm9tool.views.history.details import RecordDetailsDialog
-from prm9tool.views.history.window import TYPE_KEY, HistoryWindow
+from prm9tool.views.history.table import TYPE_KEY
+from prm9tool.views.history.window import HistoryWindow
 
 TIMEOUT = 10_000
 E02_CA = "PRM9-06.3Z11/30-24E02S02-CA"
@@ -174,7 +175,7 @@ def test_restarts_and_frequency_responses_on_the_valve_are_recorded(qtbot, windo
 def test_a_record_with_odd_details_is_shown_not_a_crash(qapp, details):
     """An exception in a Qt model's data() ends the program: a record written by another
     version (or by hand) must still be shown."""
-    from prm9tool.views.history.window import HistoryTableModel
+    from prm9tool.views.history.table import HistoryTableModel
 
     model = HistoryTableModel()
     for operation in ("characterization", "report-saved", "autotune", "frequency-response"):

@@ -193,7 +193,7 @@ def test_files_written_in_german_keep_the_point(qapp, language):
     import numpy as np
 
     from prm9tool.catalogue.signals import BY_KEY
-    from prm9tool.scope.measure import write_csv
+    from prm9tool.scope.readout import write_csv
 
     language("de")
     out = io.StringIO()

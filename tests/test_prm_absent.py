@@ -12,7 +12,7 @@ import pytest
 from prm9tool.catalogue import CATALOGUE
 from prm9tool.catalogue.typekey import TypeKey
 from prm9tool.cli.main import main
-from prm9tool.device import factory
+from prm9tool.device import emulated_valves, factory
 from prm9tool.files.prmcheck import NOT_AVAILABLE_HINT
 from prm9tool.files.prmfile import PrmContents, check_bytes, check_file
 
@@ -83,7 +83,7 @@ def test_batch_reports_every_parameter_it_did_not_write(tmp_path, data_dir, caps
         with factory.open_session(factory.list_devices([spec])[-1]) as session:
             kept = session.read("POST1")
     finally:
-        factory.forget_emulated_valves()
+        emulated_valves.forget_emulated_valves()
     record = json.loads((tmp_path / "r").read_text(encoding="utf-8"))["valves"][0]
     assert code == 0 and record["result"] == "ok"
     assert record["absent_in_file"] == ["POST1"] and "POST1" in record["skipped"]

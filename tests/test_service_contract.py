@@ -9,7 +9,7 @@ from support.gui_support import E02, emulator_connection
 
 import prm9tool
 from prm9tool.cli.main import main
-from prm9tool.device import factory
+from prm9tool.device import emulated_valves, factory
 from prm9tool.errors import AccessDeniedError, Prm9Error, ValueRangeError
 from prm9tool.files.prmfile import PrmContents, write_file
 from prm9tool.history.recorder import Recorder
@@ -25,7 +25,7 @@ def connection(qtbot):
     conn = emulator_connection()
     yield conn
     conn.shutdown()
-    factory.forget_emulated_valves()
+    emulated_valves.forget_emulated_valves()
 
 
 def _online(qtbot, connection, serial):

@@ -11,7 +11,7 @@ import pytest
 from support.waiting import HandClock, wait_for
 
 from prm9tool.catalogue import CATALOGUE
-from prm9tool.device import factory
+from prm9tool.device import emulated_valves, factory
 from prm9tool.device.emulator.constants import CYCLE_S
 from prm9tool.device.setpoint import OverrideSetpoint
 from prm9tool.errors import AbortCode, SdoAbortError
@@ -23,12 +23,12 @@ E02 = "PRM9-06.3Z11/30-24E02S02"
 
 @pytest.fixture
 def session():
-    factory.forget_emulated_valves()
+    emulated_valves.forget_emulated_valves()
     opened = factory.open_session(f"emulator:{E02}:7201", paced=False)
     opened.transport.valve.advance(2.0)  # booted, running from the analog input
     yield opened
     opened.close()
-    factory.forget_emulated_valves()
+    emulated_valves.forget_emulated_valves()
 
 
 def _edges(session, settings: GeneratorSettings, seconds: float):

@@ -18,7 +18,7 @@ from prm9tool.characterize.drift import NoReferenceError, compare, reference_of,
 from prm9tool.characterize.rig import EmulatorRig
 from prm9tool.characterize.run import characterize
 from prm9tool.characterize.signature import MOTION_LIMIT_S
-from prm9tool.device import factory
+from prm9tool.device import emulated_valves
 from prm9tool.device.emulator import EmulatedValve
 from prm9tool.device.emulator.constants import PLANT
 from prm9tool.history.recorder import Recorder
@@ -33,9 +33,9 @@ STATIC = ("static_gain", "static_hysteresis_pct", "static_dead_band_pct")
 
 @pytest.fixture(autouse=True)
 def _fresh_emulators():
-    factory.forget_emulated_valves()
+    emulated_valves.forget_emulated_valves()
     yield
-    factory.forget_emulated_valves()
+    emulated_valves.forget_emulated_valves()
 
 
 @pytest.fixture(scope="module")
@@ -215,7 +215,7 @@ def test_signature_on_the_command_line_exits_by_its_verdict(tmp_path, capsys):
     assert "no figure drifted beyond its limit since the end-of-line test on" in out
     # the same serial with a slower spool (its twin file: the plant changed after the test)
     parameters = json.loads(eol.read_text(encoding="utf-8"))["parameters"]
-    factory.forget_emulated_valves()
+    emulated_valves.forget_emulated_valves()
     twin = _twin_file(tmp_path / "worn.toml", 7103, parameters, SLOWER_SPOOL)
     pdf, js = tmp_path / "drift.pdf", tmp_path / "drift.json"
     argv = ["--signature", "--emulator", f"twin:{twin}", "--history-db", url]

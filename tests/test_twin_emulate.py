@@ -12,7 +12,7 @@ import pytest
 import prm9tool
 from prm9tool.catalogue import CATALOGUE
 from prm9tool.cli import serve
-from prm9tool.device import factory
+from prm9tool.device import emulated_valves, factory
 from prm9tool.device.canlink.bus import CanOptions
 from prm9tool.device.emulator.constants import PLANT
 from prm9tool.device.emulator.twinfile import TwinFileError, write_twin
@@ -26,9 +26,9 @@ VARIED = replace(PLANT, spool_mass_kg=0.09, force_n_per_a=25.0)
 
 @pytest.fixture(autouse=True)
 def _fresh_emulators():
-    factory.forget_emulated_valves()
+    emulated_valves.forget_emulated_valves()
     yield
-    factory.forget_emulated_valves()
+    emulated_valves.forget_emulated_valves()
 
 
 def _twin(path, serial=4101, type_key=E02, parameters=None):
@@ -43,13 +43,13 @@ def test_connect_opens_the_twin_of_a_twin_file(tmp_path):
     with prm9tool.connect(f"emulator:twin:{path}") as valve:
         assert valve.info.serial == 4101
         assert str(valve.type_key) == E02
-        emulated = factory.EMULATED.valves[4101]
+        emulated = emulated_valves.EMULATED.valves[4101]
         assert emulated.read(*CATALOGUE["POSKP"].key) == 31  # the valve's own parameter set
         assert emulated.plant == VARIED  # that valve's plant, not the emulator's default
         assert emulated.firmware_version == "1.0.0"
     # opened again in the same process: the same twin, not a second valve
     with prm9tool.connect(f"emulator:twin:{path}") as valve:
-        assert factory.EMULATED.valves[4101] is emulated
+        assert emulated_valves.EMULATED.valves[4101] is emulated
 
 
 def test_the_emulator_option_lists_a_twin_by_its_serial_and_file(tmp_path):
@@ -71,11 +71,11 @@ def test_a_twin_file_that_cannot_be_used_is_refused_in_words(tmp_path):
         prm9tool.connect(f"emulator:twin:{bad}")
     with pytest.raises(TwinFileError, match="cannot read the twin file"):
         factory.emulator_entries([f"twin:{tmp_path / 'missing.toml'}"])
-    assert not factory.EMULATED.valves  # nothing half-made
+    assert not emulated_valves.EMULATED.valves  # nothing half-made
 
 
 def test_a_twin_does_not_replace_another_emulated_valve_of_its_serial(tmp_path):
-    factory.emulated_valve(E02, 4103)
+    emulated_valves.emulated_valve(E02, 4103)
     path = _twin(tmp_path / "valve.toml", serial=4103)
     with pytest.raises(Prm9Error, match="is a plain emulated"):
         factory.emulator_entries([f"twin:{path}"])
@@ -106,7 +106,7 @@ def test_the_command_line_uses_a_twin_as_an_emulated_valve(tmp_path, capsys):
     path = _twin(tmp_path / "valve.toml", serial=4106)
     assert main(["--emulator", f"twin:{path}", "--get", "POSKP"]) == 0
     assert capsys.readouterr().out.split() == ["POSKP", "0.31"]  # the twin's set, not 0.40
-    factory.forget_emulated_valves()
+    emulated_valves.forget_emulated_valves()
     assert main(["--emulator", f"twin:{tmp_path / 'none.toml'}", "--get", "POSKP"]) == 3
     assert "cannot read the twin file" in capsys.readouterr().err
 

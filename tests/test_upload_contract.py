@@ -26,7 +26,7 @@ from support.usb_fakes import FakeHid
 import prm9tool
 from prm9tool.api.valve import Valve
 from prm9tool.catalogue import CATALOGUE
-from prm9tool.device import factory
+from prm9tool.device import emulated_valves
 from prm9tool.device.emulator import EmulatedValve
 from prm9tool.device.session import ValveSession
 from prm9tool.errors import AbortCode, SdoAbortError, TypeKeyError, ValueRangeError
@@ -126,7 +126,7 @@ def link(request, tmp_path: Path, monkeypatch: pytest.MonkeyPatch, data_dir) -> 
         valve,
         lambda: UsbSession(HidTransport(HID_PATH, timeout_s=0.2), f"usb:{HID_PATH.decode()}"),
     )
-    factory.forget_emulated_valves()
+    emulated_valves.forget_emulated_valves()
 
 
 def test_upload_writes_verifies_stores_and_reports_each_step(link):

@@ -9,7 +9,7 @@ import can
 import pytest
 
 from prm9tool.catalogue.typekey import DEFAULT_EMULATOR_TYPE_KEY
-from prm9tool.device import factory
+from prm9tool.device import emulated_valves, factory
 from prm9tool.errors import Prm9Error, TypeKeyError
 
 E02 = "PRM9-06.3Z11/30-24E02S02"
@@ -21,12 +21,12 @@ def _fresh_emulators(monkeypatch):
     for name in ("hid", "hidraw"):  # no USB on the test machine
         monkeypatch.setitem(__import__("sys").modules, name, None)
     yield
-    factory.forget_emulated_valves()
+    emulated_valves.forget_emulated_valves()
 
 
 def test_nv_path_follows_the_data_dir(tmp_path, monkeypatch):
     monkeypatch.setenv("PRM9TOOL_DATA_DIR", str(tmp_path / "elsewhere"))
-    assert factory.emulator_nv_path(42) == tmp_path / "elsewhere" / "emulator" / "42.json"
+    assert emulated_valves.emulator_nv_path(42) == tmp_path / "elsewhere" / "emulator" / "42.json"
 
 
 @pytest.mark.parametrize(
@@ -66,7 +66,7 @@ def test_specs_without_serial_get_the_lowest_free_ones():
 def test_a_serial_whose_image_is_of_another_type_is_not_given_to_a_spec_without_serial():
     with factory.open_session(f"emulator:{E02}:1", paced=False) as session:
         session.store()  # a valve of an earlier run left its EEPROM image
-    factory.forget_emulated_valves()
+    emulated_valves.forget_emulated_valves()
     entries = factory.list_devices([E04CA, E02])
     assert [(e.type_key, e.serial) for e in entries] == [(E04CA, 2), (E02, 1)]
 
@@ -82,15 +82,15 @@ def test_stored_parameters_survive_the_process(tmp_path):
     with factory.open_session(entry, paced=False) as session:
         session.write("LIMTA", 1777)
         session.store()
-    factory.forget_emulated_valves()  # as if the process ended
-    assert factory.emulator_nv_path(6).exists()
+    emulated_valves.forget_emulated_valves()  # as if the process ended
+    assert emulated_valves.emulator_nv_path(6).exists()
     with factory.open_session(f"emulator:{E02}:6", paced=False) as session:
         assert session.read("LIMTA") == 1777
 
 
 def test_paced_session_runs_the_valve_in_real_time_until_closed():
     entry = factory.list_devices([f"{E02}:8"])[0]
-    valve = factory.emulated_valve(E02, 8)
+    valve = emulated_valves.emulated_valve(E02, 8)
     with factory.open_session(entry) as session:
         assert valve.running
         second = factory.open_session(entry)
@@ -115,11 +115,11 @@ def test_can_options_put_an_emulated_ca_valve_on_the_bus():
         entry = factory.list_devices([f"{E04CA}:9"])[0]
         options = factory.CanOptions("virtual", "factory-test")
         with factory.open_session(entry, paced=False, can=options):
-            factory.emulated_valve(E04CA, 9).advance(6.0)  # past the boot-up
+            emulated_valves.emulated_valve(E04CA, 9).advance(6.0)  # past the boot-up
             frames = []
             while (frame := listener.recv(0.05)) is not None:
                 frames.append(frame.arbitration_id)
-        node = factory.emulated_valve(E04CA, 9).node_id
+        node = emulated_valves.emulated_valve(E04CA, 9).node_id
         assert 0x700 + node in frames  # boot-up / heartbeat of that node
     finally:
         listener.shutdown()

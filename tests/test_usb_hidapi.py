@@ -9,7 +9,7 @@ import pytest
 from support.usb_fakes import FakeHid
 from support.valve_sets import changed_set
 
-from prm9tool.device import factory
+from prm9tool.device import emulated_valves, factory
 from prm9tool.device.emulator import EmulatedValve
 from prm9tool.device.usb.session import UsbSession
 from prm9tool.device.usb.transport.hidapi import HidTransport, UsbFilter, load_hid
@@ -23,7 +23,7 @@ PATH = b"/dev/hidraw3"
 @pytest.fixture(autouse=True)
 def _fresh_emulators():
     yield
-    factory.forget_emulated_valves()
+    emulated_valves.forget_emulated_valves()
 
 
 @pytest.fixture

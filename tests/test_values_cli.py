@@ -13,7 +13,7 @@ from support.python_process import run_python
 
 from prm9tool.catalogue import CATALOGUE
 from prm9tool.cli.main import main
-from prm9tool.device import factory
+from prm9tool.device import emulated_valves
 from prm9tool.errors import AbortCode, ExitCode, SdoAbortError
 
 E02 = "PRM9-06.3Z11/30-24E02S02-CA"
@@ -65,7 +65,7 @@ def test_a_value_above_the_valves_cap_writes_nothing(tmp_path):
 
 
 def test_a_value_the_valve_refuses_is_exit_1_and_nothing_is_stored(monkeypatch, capsys):
-    valve = factory.emulated_valve(E02, 21)  # the one --emulator opens in this process
+    valve = emulated_valves.emulated_valve(E02, 21)  # the one --emulator opens in this process
     key, write = CATALOGUE["DTAMP"].key, valve.write_bytes
 
     def refuse_dither(index, subindex, data):
@@ -82,7 +82,7 @@ def test_a_value_the_valve_refuses_is_exit_1_and_nothing_is_stored(monkeypatch, 
         stored = valve.firmware.nv.values
         assert stored.get("LIMTA", CATALOGUE["LIMTA"].default) == 2400  # nothing stored
     finally:
-        factory.forget_emulated_valves()
+        emulated_valves.forget_emulated_valves()
 
 
 @pytest.mark.parametrize(

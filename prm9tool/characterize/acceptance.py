@@ -24,14 +24,13 @@ from prm9tool.analysis.profile import FIGURES, Profile
 from prm9tool.catalogue.typekey import TypeKey
 from prm9tool.catalogue.variant import Coils
 from prm9tool.characterize.autotune import AutotuneResult, model_tune, simulate_steps
+from prm9tool.characterize.critical_gain import CriticalGainResult, critical_gain_tune
 from prm9tool.characterize.procedures import (
     LOOPS,
-    CriticalGainResult,
     StaticResult,
     StepResult,
     _step,
     chain_changes,
-    critical_gain_tune,
     gain_names,
     preserved,
     static_test,

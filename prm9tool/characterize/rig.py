@@ -339,7 +339,7 @@ class SessionRig(Rig):
         status = session.status()
         if status.error_code:
             raise ValveFaultError(REPORTED(f"{status.error_code:#06x}", status.error_text))
-        if "SETPOVRON" in getattr(link, "objects", ()) and not session.read("SETPOVRON"):
+        if "SETPOVRON" in link.objects and not session.read("SETPOVRON"):
             # the firmware drops the override after 0.5 s without a report: a PC that paused
             # the link that long left the valve on its own setpoint for the rest of the play
             raise LinkTooSlowError(

@@ -29,7 +29,8 @@ from prm9tool.characterize.procedures import LimitExceededError
 from prm9tool.characterize.rig import EmulatorRig, Rig, Stopped, ValveFaultError
 from prm9tool.characterize.run import Characterization, characterize, report_data, write_csv_files
 from prm9tool.cli.batch_devices import BatchError, can_options, select
-from prm9tool.device.factory import emulated_valve, open_session, parse_emulator_spec
+from prm9tool.device.emulated_valves import emulated_valve
+from prm9tool.device.factory import open_session, parse_emulator_spec
 from prm9tool.errors import CommunicationError, ExitCode, Prm9Error
 from prm9tool.files.atomicfile import atomic_write
 

@@ -36,7 +36,7 @@ def main(argv: Sequence[str] | None = None) -> int:
         print(build_info().line(qt_version()))
         return ExitCode.OK
     if args.od:
-        from prm9tool.device.factory import set_emulator_od
+        from prm9tool.device.emulated_valves import set_emulator_od
 
         set_emulator_od(args.od)
     # the CAN libraries' warnings as prm9tool's messages, not their raw log lines

@@ -23,7 +23,7 @@ from typing import TYPE_CHECKING, Any
 
 from prm9tool.catalogue.canopen_switches import POSITIONS, node_position
 from prm9tool.cli import serve_input
-from prm9tool.device import factory
+from prm9tool.device import emulated_valves, factory
 from prm9tool.device.canlink.bus import CanOptions, open_bus
 from prm9tool.device.emulator.paced_group import PacedGroup
 from prm9tool.device.emulator.twinfile import TwinFileError
@@ -135,7 +135,7 @@ class _SharedBus:
 
 def _serve(spec: str, position: int, node: int | str | None, shared: _SharedBus) -> _Served:
     type_key, serial = factory.parse_emulator_spec(spec, position + 1)
-    valve = factory.emulated_valve(type_key, serial)
+    valve = emulated_valves.emulated_valve(type_key, serial)
     if not valve.variant.canopen:
         raise TypeKeyError(f"{type_key} has no CANopen interface: serve a -CA valve")
     if node == "lss":

@@ -4,26 +4,32 @@ A device is a USB valve (``usb:<HID path>``), an emulated valve
 (``emulator:<type key>:<serial>``; ``emulator:twin:<file>`` the twin of one measured valve,
 docs/twin.md) or a valve on a CAN bus (``can:<node ID>``, on the bus of
 the :class:`CanOptions` given). Emulated valves live in this process, one per serial
-number, and keep their non-volatile memory in ``<user data dir>/emulator/<serial>.json``
-(``PRM9TOOL_DATA_DIR`` overrides the user data dir), so what one run stores the next one sees.
+number (:mod:`prm9tool.device.emulated_valves`), and keep their non-volatile memory in
+``<user data dir>/emulator/<serial>.json`` (``PRM9TOOL_DATA_DIR`` overrides the user data
+dir), so what one run stores the next one sees.
 """
 
 from __future__ import annotations
 
 import logging
-import threading
-from collections.abc import Callable, Collection, Iterator, Sequence
-from contextlib import contextmanager
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass
-from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
 from prm9tool.catalogue.typekey import DEFAULT_EMULATOR_TYPE_KEY, TypeKey
 from prm9tool.device.canlink.bus import CanOptions
+from prm9tool.device.emulated_valves import (
+    connect_can,
+    emulated_valve,
+    end_paced,
+    free_emulator_serial,
+    run_paced,
+    twin_file,
+    twin_valve,
+)
 from prm9tool.device.records import CanNodeFacts, NmtState
 from prm9tool.device.session import ValveSession
 from prm9tool.errors import (
-    CanBusError,
     CommunicationError,
     DeviceDisconnectedError,
     Prm9Error,
@@ -67,13 +73,6 @@ class DeviceEntry:
     can: CanNodeFacts | None = None  # CAN nodes: what the description says, for the views
 
 
-def emulator_nv_path(serial: int) -> Path:
-    """The EEPROM image file of the emulated valve with ``serial``."""
-    from prm9tool.paths import user_data_dir
-
-    return user_data_dir() / "emulator" / f"{serial}.json"
-
-
 def parse_emulator_spec(spec: str, default_serial: int = 1) -> tuple[str, int]:
     """``TYPEKEY[:SERIAL]`` → (normalized type key, serial); raises TypeKeyError.
 
@@ -91,28 +90,6 @@ def parse_emulator_spec(spec: str, default_serial: int = 1) -> tuple[str, int]:
             raise TypeKeyError(f"emulator {spec!r}: serial {tail!r} must be a number 1…4294967295")
         text, serial = head, int(tail)
     return str(TypeKey.parse(text)), serial
-
-
-def free_emulator_serial(type_key: str, first: int, taken: Collection[int] = ()) -> int:
-    """The lowest serial from ``first`` on, not in ``taken``, that a ``type_key`` valve may
-    have: no emulated valve of another type in this process and no EEPROM image of another
-    type on disk. So ``--emulator`` of a new type does not fail on the image a valve of
-    another type left at the default serial; the same type finds its stored values again."""
-    from prm9tool.device.emulator.nvimage import stored_type_key
-
-    wanted = str(TypeKey.parse(type_key))
-    for serial in range(first, 2**32):
-        if serial in taken:
-            continue
-        with EMULATED.lock:
-            valve = EMULATED.valves.get(serial)
-        if valve is not None:
-            if str(valve.type_key) == wanted:
-                return serial
-            continue
-        if stored_type_key(emulator_nv_path(serial)) in (None, wanted):
-            return serial
-    raise TypeKeyError(f"no free serial for an emulated {type_key}")
 
 
 def emulator_entries(specs: Sequence[str]) -> list[DeviceEntry]:
@@ -160,8 +137,7 @@ def usable_emulators(specs: Sequence[str]) -> tuple[list[str], list[DeviceEntry]
 
 def _emulator_entry(valve: EmulatedValve) -> DeviceEntry:
     key = str(valve.type_key)
-    with EMULATED.lock:
-        twin = EMULATED.twins.get(valve.serial)
+    twin = twin_file(valve.serial)
     what = "twin of" if twin else "emulated"
     return DeviceEntry(
         f"{EMULATOR}:{key}:{valve.serial}",
@@ -268,97 +244,6 @@ def _heard(seen: Any) -> tuple[NmtState | None, float | None, str]:
     return now.nmt_state, now.heartbeat_age_s, now.last_emcy
 
 
-# --- emulated valves of this process ---------------------------------------------------------
-class EmulatedValves:
-    """The emulated valves of this process, one per serial number, in one registry: the
-    valves, how many paced sessions run each (its real-time thread runs while > 0) and the
-    object dictionary new ones get (``--od``); one lock guards them all."""
-
-    def __init__(self) -> None:
-        self.valves: dict[int, EmulatedValve] = {}
-        self.running: dict[int, int] = {}
-        self.twins: dict[int, Path] = {}  # serial -> the twin file its valve was made from
-        self.lock = threading.Lock()
-        self.od = "full"
-
-
-EMULATED = EmulatedValves()
-_VALVES = EMULATED.valves  # by serial number (tests/support/gui_support.py looks valves up here)
-
-
-def set_emulator_od(od: str) -> None:
-    """The object dictionary of the emulated valves this process makes from now on (``--od``):
-    ``full`` or ``manual`` (only the objects the manual lists; prm9tool.device.emulator.manual_od).
-    """
-    from prm9tool.device.emulator.manual_od import OD_PROFILES
-
-    if od not in OD_PROFILES:
-        raise Prm9Error(f"--od {od}: one of {', '.join(OD_PROFILES)}")
-    EMULATED.od = od
-
-
-def emulated_valve(type_key: str, serial: int) -> EmulatedValve:
-    """The emulated valve with ``serial`` in this process (created with its EEPROM file)."""
-    from prm9tool.device.emulator import EmulatedValve
-
-    with EMULATED.lock:
-        valve = EMULATED.valves.get(serial)
-        if valve is None:
-            valve = EmulatedValve(
-                type_key, serial, nv_path=emulator_nv_path(serial), od=EMULATED.od
-            )
-            EMULATED.valves[serial] = valve
-        elif str(valve.type_key) != str(TypeKey.parse(type_key)):
-            raise Prm9Error(
-                f"emulated valve {serial} is a {valve.type_key}; choose another serial "
-                f"for a {type_key}"
-            )
-        return valve
-
-
-def twin_valve(path: str | Path) -> EmulatedValve:
-    """The emulated valve of the twin file ``path`` (issue 31): the measured valve's plant
-    constants, serial, type key, firmware and parameter set, made once per process and then
-    found again by its serial like any emulated valve. Its parameters live in its working
-    memory only (no EEPROM file: the twin file is what it starts from each time). Raises
-    TwinFileError for a file that cannot be used, Prm9Error when another emulated valve has
-    that serial already."""
-    from prm9tool.device.emulator.twinfile import TwinFileError, emulated_twin, read_twin
-
-    where = Path(path).expanduser().resolve()
-    twin = read_twin(where)
-    if not 0 < twin.serial < 2**32:
-        raise TwinFileError(f"{where}: serial {twin.serial} must be a number 1…4294967295")
-    with EMULATED.lock:
-        valve = EMULATED.valves.get(twin.serial)
-        if valve is not None:
-            if EMULATED.twins.get(twin.serial) == where:
-                return valve
-            made = EMULATED.twins.get(twin.serial)
-            raise Prm9Error(
-                f"twin {where}: the emulated valve {twin.serial} is "
-                + (f"the twin of {made} already" if made else f"a plain emulated {valve.type_key}")
-            )
-        valve = emulated_twin(twin, od=EMULATED.od)
-        EMULATED.valves[twin.serial] = valve
-        EMULATED.twins[twin.serial] = where
-        return valve
-
-
-def forget_emulated_valves() -> None:
-    """Drop this process's emulated valves (their EEPROM files stay); for tests and tools."""
-    from prm9tool.device.emulated import plug_cable
-
-    with EMULATED.lock:
-        for serial in EMULATED.valves:
-            plug_cable(serial)
-        for serial, valve in EMULATED.valves.items():
-            if EMULATED.running.pop(serial, 0):
-                valve.stop()
-        EMULATED.valves.clear()
-        EMULATED.twins.clear()
-
-
 # --- opening ---------------------------------------------------------------------------------
 @dataclass(frozen=True)
 class LinkOptions:
@@ -451,10 +336,10 @@ def _open_emulator(rest: str, device_id: str, options: LinkOptions) -> ValveSess
     closers: list[Callable[[], None]] = []
     try:
         if options.paced:
-            _run(valve)
-            closers.append(lambda: _halt(valve))
+            run_paced(valve)
+            closers.append(lambda: end_paced(valve))
         if options.can is not None and valve.variant.canopen:
-            closers.append(_connect_can(valve, options.can))
+            closers.append(connect_can(valve, options.can))
         transport = EmulatorTransport(valve, paced=link_paced)
         return UsbSession(transport, device_id, on_close=lambda: _all(closers))
     except BaseException:
@@ -491,60 +376,8 @@ def join_can(session: ValveSession, options: CanOptions) -> bool:
     transport = session.transport
     if not isinstance(transport, EmulatorTransport) or not transport.valve.variant.canopen:
         return False
-    session.add_close_hook(_connect_can(transport.valve, options))
+    session.add_close_hook(connect_can(transport.valve, options))
     return True
-
-
-def _connect_can(valve: EmulatedValve, options: CanOptions) -> Callable[[], None]:
-    import can
-
-    kwargs: dict[str, Any] = {"interface": options.interface, "channel": options.channel}
-    bitrate = options.bitrate if options.bitrate is not None else valve.bitrate
-    if bitrate:  # default: the bit rate the valve's switches (or BITRATE) select
-        kwargs["bitrate"] = bitrate
-    try:
-        bus = can.Bus(**kwargs)
-    except (can.CanError, OSError, ValueError, ImportError) as exc:
-        raise CanBusError(f"cannot open CAN bus {options}: {exc}") from exc
-    slave = valve.connect_can(bus)
-
-    def close() -> None:
-        """Take the valve off the bus and release the bus."""
-        slave.stop()
-        bus.shutdown()
-
-    return close
-
-
-@contextmanager
-def stepped_here(valve: EmulatedValve) -> Iterator[EmulatedValve]:
-    """Hold a paced emulated valve's real-time thread while a procedure steps the valve itself
-    (the end-of-line test of an open valve runs as fast as the CPU allows), then run it again."""
-    with EMULATED.lock:
-        running = EMULATED.running.get(valve.serial, 0)
-    if running:
-        _halt(valve)
-    try:
-        yield valve
-    finally:
-        if running:
-            _run(valve)
-
-
-def _run(valve: EmulatedValve) -> None:
-    with EMULATED.lock:
-        count = EMULATED.running.get(valve.serial, 0)
-        EMULATED.running[valve.serial] = count + 1
-        if count == 0 and not valve.running:
-            valve.start()
-
-
-def _halt(valve: EmulatedValve) -> None:
-    with EMULATED.lock:
-        count = EMULATED.running.get(valve.serial, 0) - 1
-        EMULATED.running[valve.serial] = max(count, 0)
-        if count <= 0 and valve.running:
-            valve.stop()
 
 
 def _all(closers: list[Callable[[], None]]) -> None:

@@ -15,17 +15,18 @@ step)`` and stop at the next report when ``cancel`` is set. Failures raise the t
    store **and** it stored the verified working values. The store copies the working values
    into non-volatile memory and a restart replaces the working values with the stored ones, so
    a valve that restarted (brown-out) before the store stored its old set. How a link makes
-   sure is its own (:meth:`ValveSession._store_problem`): over USB it reads every value back
-   once more and compares — a valve that restarted reads back its old values; over CANopen
-   the master watches the node's boot-up frame, which a restarting node sends (CiA 301), from
-   before the first write to the store's acknowledgement, and reads back one value the upload
-   changed (prm9tool.device.canlink.session). A refused store (abort, e.g. 0x08000020) is
+   sure is its own (:meth:`UploadSteps.store_problem`, the link's part of the upload): over
+   USB it reads every value back once more and compares — a valve that restarted reads back
+   its old values; over CANopen the master watches the node's boot-up frame, which a
+   restarting node sends (CiA 301), from before the first write to the store's
+   acknowledgement, and reads back one value the upload changed
+   (prm9tool.device.canlink.session). A refused store (abort, e.g. 0x08000020) is
    ``failed_step`` ``store`` with the reason in ``failure``.
 
 A link may leave out writing a value the valve is known to hold already (read during this
 upload or just before it); the verify step still reads every value back, and a value that
 reads back differently from what the link believed is written and verified after all
-(:meth:`ValveSession._verify_entries`).
+(:meth:`UploadSteps.verify`).
 
 After any failure (also a cancel) the session asks the valve to reload its stored parameters
 (USB: RELOAD; CANopen: the master writes back the working values it read before the upload,
@@ -67,7 +68,7 @@ from prm9tool.device.upload_outcome import (
 from prm9tool.errors import CommunicationError, Prm9Error, SdoAbortError
 
 log = logging.getLogger("prm9tool.device.session")
-__all__ = ["NotAvailableError", "ValveSession"]
+__all__ = ["NotAvailableError", "UploadSteps", "ValveSession"]
 
 
 class NotAvailableError(Prm9Error):
@@ -79,6 +80,65 @@ class NotAvailableError(Prm9Error):
         super().__init__(f"not available over CANopen on this valve: {', '.join(mnemonics)}")
 
 
+class UploadSteps:
+    """The link's own steps of the upload contract, a part its session holds
+    (:attr:`ValveSession.upload_steps`; the contract itself is :meth:`ValveSession.upload`).
+
+    This one is the USB link's: nothing before the first write, every value written in the
+    file's order and read back, the store made sure of by reading every value back once more,
+    and after a failure the valve reloads its stored set itself (:meth:`ValveSession.reload`).
+    A link that needs more (CANopen: a snapshot to put back, writes left out, the boot-up
+    watch, verification by restart) gives its session another part
+    (prm9tool.device.canlink.upload_steps)."""
+
+    def __init__(self, session: ValveSession) -> None:
+        self._session = session
+        # the upload restarted the valve (verification by restart) and found its store not
+        # kept: the valve runs on what it came back with (a link that can verify by restart)
+        self.restarted = False
+
+    @property
+    def kept(self) -> bool:
+        """True on a valve that keeps every write (a failed upload puts the backup back)."""
+        return False
+
+    def before(self, params: Sequence[Parameter], cancel: threading.Event | None) -> None:
+        """Runs before an upload writes anything (a link that cannot reload the stored set
+        without a restart takes its snapshot of the working values here)."""
+        del params, cancel  # the USB protocol reloads the stored set itself
+
+    def order(self, params: list[Parameter], values: Mapping[str, Value]) -> list[Parameter]:
+        """The order the upload writes ``params`` in (a link may need a safe one)."""
+        del values
+        return params
+
+    def marker(self) -> object:
+        """Taken before an upload writes anything; :meth:`store_problem` gets it back (a link
+        that can watch the valve restart notes its state here)."""
+        return None
+
+    def verify(
+        self,
+        params: Sequence[Parameter],
+        values: Mapping[str, Value],
+        steps: Steps | None,
+        cancel: threading.Event | None,
+    ) -> dict[str, Value | SdoAbortError]:
+        """The verify step's read-back of every value (a link that left out writes corrects
+        them here; see the module docstring)."""
+        del values
+        return self._session._read_entries(params, steps, cancel)
+
+    def store_problem(
+        self, params: Sequence[Parameter], values: Mapping[str, Value], marker: object
+    ) -> tuple[dict[str, tuple[Value, Value]], str] | None:
+        """After the acknowledged store: (mismatches, why) when the stored set may not be the
+        upload, None when it is. Here: every value read back once more and compared."""
+        del marker
+        changed = differences(params, values, self._session._read_entries(params, None, None))
+        return (changed, RESTARTED_BEFORE_STORE) if changed else None
+
+
 class ValveSession(ABC):
     """One open valve, whatever the link: the interface the GUI, ``--batch`` and the backups use.
 
@@ -86,8 +146,10 @@ class ValveSession(ABC):
     transactional upload (write all → read back and compare → store), download, parameters the
     valve lacks on this link (:attr:`unavailable`), close hooks. A link is one subclass
     (:class:`prm9tool.device.usb.session.UsbSession`,
-    :class:`prm9tool.device.canopen.session.CanopenSession`) implementing the abstract
-    methods. Thread-safe as far as the link serializes its exchanges.
+    :class:`prm9tool.device.canlink.session.CanopenSession`) implementing the abstract
+    methods; a link whose upload needs steps of its own gives the session another
+    :class:`UploadSteps` part (:attr:`upload_steps`). Thread-safe as far as the link serializes
+    its exchanges.
     """
 
     # after the store, restart the valve and read every value back (the hydraulics are off: the
@@ -99,6 +161,7 @@ class ValveSession(ABC):
         self._on_close: list[Callable[[], None]] = [on_close] if on_close is not None else []
         self.unavailable: set[str] = set()  # parameters this valve lacks on this link
         self.store_done: str | None = None  # how the last store kept the set (UploadResult)
+        self.upload_steps = UploadSteps(self)  # the link's steps of the upload (a part)
 
     def _start(self) -> None:
         """Identify the valve once the link is up (subclasses call this from __init__)."""
@@ -193,37 +256,6 @@ class ValveSession(ABC):
     def _close_link(self) -> None:
         """Stop any stream and release the link (called once)."""
 
-    def _before_upload(self, params: Sequence[Parameter], cancel: threading.Event | None) -> None:
-        """Runs before an upload writes anything (a link that cannot reload the stored set
-        without a restart takes its snapshot of the working values here)."""
-        del params, cancel  # the USB protocol reloads the stored set itself
-
-    def _restart_marker(self) -> object:
-        """Taken before an upload writes anything; :meth:`_store_problem` gets it back (a link
-        that can watch the valve restart notes its state here)."""
-        return None
-
-    def _verify_entries(
-        self,
-        params: Sequence[Parameter],
-        values: Mapping[str, Value],
-        steps: Steps | None,
-        cancel: threading.Event | None,
-    ) -> dict[str, Value | SdoAbortError]:
-        """The verify step's read-back of every value (a link that left out writes corrects
-        them here; see the module docstring)."""
-        del values
-        return self._read_entries(params, steps, cancel)
-
-    def _store_problem(
-        self, params: Sequence[Parameter], values: Mapping[str, Value], marker: object
-    ) -> tuple[dict[str, tuple[Value, Value]], str] | None:
-        """After the acknowledged store: (mismatches, why) when the stored set may not be the
-        upload, None when it is. Here: every value read back once more and compared."""
-        del marker
-        changed = differences(params, values, self._read_entries(params, None, None))
-        return (changed, RESTARTED_BEFORE_STORE) if changed else None
-
     # --- single values --------------------------------------------------------------------
     def read(self, mnemonic: str) -> Value:
         """Raw value of one parameter (NotAvailableError: the valve lacks it on this link)."""
@@ -279,22 +311,23 @@ class ValveSession(ABC):
         params = self._checked(values)
         total = 2 * len(params) + 1
         step, writing, verified = "write", Steps(progress, total, 0, "write"), False
+        link = self.upload_steps
         try:
-            self._before_upload(params, cancel)
-            params = self._write_order(params, values)
-            marker = self._restart_marker()
+            link.before(params, cancel)
+            params = link.order(params, values)
+            marker = link.marker()
             written = self._write_entries(params, values, writing, cancel)
             step = "verify"
             verify = Steps(progress, total, len(params), step)
             params = [p for p in params if p.mnemonic not in self.unavailable]
-            actual = self._verify_entries(params, values, verify, cancel)
+            actual = link.verify(params, values, verify, cancel)
             mismatches = differences(params, values, actual)
             if mismatches:
                 return self._failed(written, mismatches, start, "verify")
             step, verified = "store", True
             check_cancel(cancel, step)
             self.store()
-            problem = self._store_problem(params, values, marker)
+            problem = link.store_problem(params, values, marker)
             if problem is not None:
                 return self._failed(written, problem[0], start, "store", True, problem[1])
         except RefusedError as refused:
@@ -307,10 +340,10 @@ class ValveSession(ABC):
             return self._failed(written, {}, start, "store", True, why)
         except OperationCancelledError as exc:
             reverted = self._revert()
-            raise OperationCancelledError(exc.step, reload_outcome(reverted, self._kept)) from exc
+            raise OperationCancelledError(exc.step, reload_outcome(reverted, link.kept)) from exc
         except CommunicationError as exc:
             reverted = self._revert()
-            raise step_error(exc, step, reverted, writing.done, verified, self._kept) from exc
+            raise step_error(exc, step, reverted, writing.done, verified, link.kept) from exc
         if progress:
             progress(total, total, "store")
         skipped = tuple(sorted(set(values) & self.unavailable))
@@ -377,24 +410,10 @@ class ValveSession(ABC):
             failed_step=step,
             reloaded=problem is None,
             reload_error=problem,
-            restarted=self._restarted,
+            restarted=self.upload_steps.restarted,
             failure=failure,
             store=self.store_done,
         )
-
-    # the upload restarted the valve (verification by restart) and found its store not kept:
-    # the valve runs on what it came back with (a link that can verify by restart sets it)
-    _restarted = False
-
-    @property
-    def _kept(self) -> bool:
-        """True on a valve that keeps every write (a failed upload puts the backup back)."""
-        return False
-
-    def _write_order(self, params: list[Parameter], values: Mapping[str, Value]) -> list[Parameter]:
-        """The order the upload writes ``params`` in (a link may need a safe one)."""
-        del values
-        return params
 
     def _revert(self) -> str | None:
         """After a failed upload: working values ← stored ones (best effort); why it failed."""

@@ -17,7 +17,7 @@ a dead link a CommunicationError. No Qt.
 from __future__ import annotations
 
 from abc import ABC, abstractmethod
-from typing import Any
+from typing import Protocol
 
 KEEPALIVE_S = 0.1  # the override's watchdog is 500 ms; rewrite at least this often
 
@@ -61,10 +61,16 @@ class SetpointLink(ABC):
         return {}
 
 
+class Writes(Protocol):
+    """What the override needs of its session: writing one raw value (a ValveSession)."""
+
+    def write(self, mnemonic: str, raw: int | str) -> None: ...
+
+
 class OverrideSetpoint(SetpointLink):
     """The service override SETPOVRON/SETPOVR (see the module docstring)."""
 
-    def __init__(self, session: Any) -> None:
+    def __init__(self, session: Writes) -> None:
         self._session = session
         self._last = 0
 

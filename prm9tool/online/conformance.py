@@ -12,6 +12,7 @@ if TYPE_CHECKING:
     from prm9tool.device.factory import DeviceEntry
     from prm9tool.device.records import DeviceInfo, UploadResult, ValveStatus
     from prm9tool.online.connection import ValveConnection
+    from prm9tool.online.connection_live import LiveData
     from prm9tool.online.connection_protocol import (
         DiagramConnection,
         ParameterConnection,
@@ -24,7 +25,7 @@ if TYPE_CHECKING:
         ValveListing,
     )
     from prm9tool.online.connection_reconnect import ReconnectHost
-    from prm9tool.online.connection_worker import WorkerHost
+    from prm9tool.online.connection_worker import LiveReports, WorkerHost
     from prm9tool.online.tuning import StepSimulator
 
     def _conforms(connection: ValveConnection) -> None:
@@ -35,6 +36,10 @@ if TYPE_CHECKING:
         worker_host: WorkerHost = connection
         reconnect_host: ReconnectHost = connection
         del diagram, parameters, scope, status, worker_host, reconnect_host
+
+    def _reports(live: LiveData) -> None:
+        reports: LiveReports = live
+        del reports
 
     def _records(
         info: DeviceInfo, entry: DeviceEntry, status: ValveStatus, upload: UploadResult

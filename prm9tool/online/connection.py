@@ -4,10 +4,10 @@ One worker thread owns the session; the GUI thread only queues jobs (go online, 
 …) and receives results as signals, so the GUI never blocks on the valve. Between jobs the
 worker polls the valve on its own schedule, whether or not jobs keep arriving: the
 oscilloscope stream (every 20 ms), status and read-only live values (≈ 2 Hz) and watched
-measuring points (≈ 7 Hz); those live commands and their state are :class:`LiveData`
-(connection_live.py). A communication error ends the session: the connection reports ``lost``,
-is offline afterwards and looks for the same valve again (connection_reconnect.py). QtCore
-only; the device layer is imported lazily.
+measuring points (≈ 7 Hz); those live commands, their signals and their state are the part
+the connection holds, :class:`LiveData` (connection_live.py). A communication error ends the
+session: the connection reports ``lost``, is offline afterwards and looks for the same valve
+again (connection_reconnect.py). QtCore only; the device layer is imported lazily.
 """
 
 from __future__ import annotations
@@ -16,7 +16,7 @@ import logging
 from collections.abc import Callable, Mapping, Sequence
 from typing import TYPE_CHECKING, cast
 
-from PySide6.QtCore import QObject, Qt, Signal
+from PySide6.QtCore import QObject, Qt, Signal, SignalInstance
 
 from prm9tool.online.connection_live import LiveData
 from prm9tool.online.connection_reconnect import ReconnectLink
@@ -30,6 +30,7 @@ if TYPE_CHECKING:
     from prm9tool.device.session import ValveSession
     from prm9tool.history.recorder import Details, Recorder
     from prm9tool.online.connection_protocol import ListedValves, ValveIdentity, ValveListing
+    from prm9tool.scope import GeneratorSettings  # not at run time: numpy, at start-up
     from prm9tool.service.history import HistoryHook
     from prm9tool.service.valve import ValveService
 
@@ -39,9 +40,10 @@ Opener = Callable[[object], "ValveSession"]  # entry -> the open session
 Lister = Callable[..., "Sequence[ValveListing]"]  # (emulator specs[, CAN bus dict]) -> entries
 
 
-class ValveConnection(LiveData, QObject):
+class ValveConnection(QObject):
     """Online/offline state and asynchronous operations on one valve (docs/ARCHITECTURE.md);
-    its stream, generator and polled values in :class:`LiveData` (connection_live.py)."""
+    its stream, generator and polled values are its part :attr:`live`, a
+    :class:`LiveData` (connection_live.py), whose signals and commands it shows as its own."""
 
     online_changed = Signal(bool)
     device_changed = Signal(object)  # DeviceInfo or None
@@ -79,7 +81,7 @@ class ValveConnection(LiveData, QObject):
         self._online = False
         self._device: ValveIdentity | None = None
         self._busy = 0
-        self._init_live()
+        self.live = LiveData(self._worker, self._submit, self.write_failed.emit, self)
         self._posted.connect(self._on_posted, Qt.ConnectionType.QueuedConnection)
         self.history: HistoryHook | None = None  # set_recorder(); used by the worker only
         self.auto_reconnect = True  # look for a lost valve until it is back (service/reconnect.py)
@@ -314,6 +316,81 @@ class ValveConnection(LiveData, QObject):
         self.stop_reconnecting()
         self._worker.stop(timeout_s)
 
+    # --- the live part's signals and commands (connection_live.py) ---------------------------
+    @property
+    def live_values_changed(self) -> SignalInstance:
+        """{mnemonic: raw} of the polled read-only values."""
+        return self.live.live_values_changed
+
+    @property
+    def signal_values_changed(self) -> SignalInstance:
+        """{measuring-point key: raw} of the watched measuring points."""
+        return self.live.signal_values_changed
+
+    @property
+    def samples_received(self) -> SignalInstance:
+        """A numpy (n, k) raw block of the running stream, in its key order."""
+        return self.live.samples_received
+
+    @property
+    def stream_started(self) -> SignalInstance:
+        """The stream runs (its keys)."""
+        return self.live.stream_started
+
+    @property
+    def stream_stopped(self) -> SignalInstance:
+        """The stream stopped (asked for, or with the link)."""
+        return self.live.stream_stopped
+
+    @property
+    def samples_lost_changed(self) -> SignalInstance:
+        """Samples the running stream lost since it started."""
+        return self.live.samples_lost_changed
+
+    @property
+    def generator_undone(self) -> SignalInstance:
+        """What a generator cut off with its session had changed, written back (mnemonics)."""
+        return self.live.generator_undone
+
+    @property
+    def streaming_keys(self) -> list[str]:
+        """:attr:`LiveData.streaming_keys`."""
+        return self.live.streaming_keys
+
+    @property
+    def samples_lost(self) -> int:
+        """:attr:`LiveData.samples_lost`."""
+        return self.live.samples_lost
+
+    @property
+    def generator_running(self) -> bool:
+        """:attr:`LiveData.generator_running`."""
+        return self.live.generator_running
+
+    def start_stream(self, keys: Sequence[str], rate_hz: int) -> None:
+        """:meth:`LiveData.start_stream`."""
+        self.live.start_stream(keys, rate_hz)
+
+    def stop_stream(self) -> None:
+        """:meth:`LiveData.stop_stream`."""
+        self.live.stop_stream()
+
+    def start_generator(self, settings: GeneratorSettings) -> None:
+        """:meth:`LiveData.start_generator`."""
+        self.live.start_generator(settings)
+
+    def stop_generator(self) -> None:
+        """:meth:`LiveData.stop_generator`."""
+        self.live.stop_generator()
+
+    def watch_signals(self, keys: Sequence[str]) -> None:
+        """:meth:`LiveData.watch_signals`."""
+        self.live.watch_signals(keys)
+
+    def watch_live(self, mnemonics: Sequence[str]) -> None:
+        """:meth:`LiveData.watch_live`."""
+        self.live.watch_live(mnemonics)
+
     # --- GUI-thread helpers --------------------------------------------------------------------
     def _submit(self, job: Job) -> None:
         if job.needs_session and not self._online:
@@ -338,12 +415,12 @@ class ValveConnection(LiveData, QObject):
         thread as ``device_changed``."""
 
         def work(session: ValveSession) -> object:
-            before = getattr(session, "info", None)
+            before = session.info
             try:
                 return run(session)
             finally:
-                after = getattr(session, "info", None)
-                if after is not before and after is not None:
+                after = session.info
+                if after is not before:
                     self._post(lambda: self._on_identity_changed(after))
 
         return work
@@ -379,9 +456,8 @@ class ValveConnection(LiveData, QObject):
         self._online = False
         self._device = None
         self._busy = 0
-        self._generator = False
         self.busy_changed.emit(False)
-        self._forget_live()
+        self.live.forget()
         self.device_changed.emit(None)
         self.online_changed.emit(False)
 

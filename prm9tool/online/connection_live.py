@@ -1,38 +1,36 @@
 """The live side of the valve connection: the oscilloscope stream, the setpoint generator and
 the measuring points and read-only values the worker polls between jobs.
 
-:class:`LiveData` is a mixin of :class:`~prm9tool.online.connection.ValveConnection`: its
-signals and GUI-side state (the running stream's keys, its lost samples, whether a generator
-runs) belong to the connection, and its commands queue jobs on the connection's worker like
-every other command. They end with the link: :meth:`LiveData._forget_live` when the session
+:class:`LiveData` is a part :class:`~prm9tool.online.connection.ValveConnection` holds (its
+``live``), a QObject of its own: its signals, its GUI-side state (the running stream's keys,
+its lost samples, whether a generator runs) and its commands, which queue jobs on the
+connection's worker like every other command (``submit``). The connection shows its signals
+and commands as its own. They end with the link: :meth:`LiveData.forget` when the session
 closes or breaks (the oscilloscope restarts its own stream once a lost valve is back; the
 generator writes setpoints, so only the user starts it again). QtCore only.
 """
 
 from __future__ import annotations
 
-from collections.abc import Sequence
+from collections.abc import Callable, Sequence
 from typing import TYPE_CHECKING
 
 from PySide6.QtCore import QObject, Signal
 
-from prm9tool.online.connection_worker import Job
+from prm9tool.online.connection_worker import ConnectionWorker, Job
 from prm9tool.service.setpoint_driver import GENERATOR_OBJECTS
 
 if TYPE_CHECKING:
     from prm9tool.device.session import ValveSession
-    from prm9tool.online.connection_worker import ConnectionWorker
     from prm9tool.scope import GeneratorSettings  # not at run time: numpy, at start-up
-
-    _Base = QObject  # for the type checker: the connection it is mixed into is a QObject
-else:
-    _Base = object
 
 OVERRIDE_OBJECTS = tuple(sorted(GENERATOR_OBJECTS))  # a refused generator start names these
 
 
-class LiveData(_Base):
-    """Stream, generator and polled values of a connection (mixed into ValveConnection)."""
+class LiveData(QObject):
+    """Stream, generator and polled values of one connection (its ``live`` part):
+    ``submit(job)`` queues a job on the connection's ``worker``, ``write_refused(mnemonics)``
+    reports objects whose write failed (the connection's ``write_failed``)."""
 
     live_values_changed = Signal(dict)  # {mnemonic: raw}
     signal_values_changed = Signal(dict)  # {measuring-point key: raw}
@@ -44,13 +42,15 @@ class LiveData(_Base):
     # were written back (over CANopen: the RPDO1 deadline 0x1400/5 it armed)
     generator_undone = Signal(list)
 
-    if TYPE_CHECKING:  # the connection's, used here
-        write_failed = Signal(list)
-        _worker: ConnectionWorker
-
-        def _submit(self, job: Job) -> None: ...
-
-    def _init_live(self) -> None:
+    def __init__(
+        self,
+        worker: ConnectionWorker,
+        submit: Callable[[Job], None],
+        write_refused: Callable[[list[str]], None],
+        parent: QObject | None = None,
+    ) -> None:
+        super().__init__(parent)
+        self._worker, self._submit, self._write_refused = worker, submit, write_refused
         self._stream_keys: list[str] = []  # GUI-side: keys of the running stream
         self._generator = False  # GUI-side: a setpoint generator was started and not stopped
         self._samples_lost = 0  # GUI-side: lost samples of the running stream
@@ -86,12 +86,12 @@ class LiveData(_Base):
     def start_generator(self, settings: GeneratorSettings) -> None:
         """Run the setpoint generator's waveform on the valve's setpoint, off the GUI thread
         and on the valve's time base (:mod:`prm9tool.service.setpoint_driver`): the override
-        over USB, RPDO1 over CANopen. A refused write arrives as ``failed`` and
-        ``write_failed``."""
+        over USB, RPDO1 over CANopen. A refused write arrives as the connection's ``failed``
+        and ``write_failed``."""
 
         def refused() -> None:
             self._generator = False
-            self.write_failed.emit(list(OVERRIDE_OBJECTS))
+            self._write_refused(list(OVERRIDE_OBJECTS))
 
         run = lambda s: self._worker.start_driver(s, settings)  # noqa: E731
         self._generator = True
@@ -106,7 +106,7 @@ class LiveData(_Base):
     def stop_generator(self) -> None:
         """End the waveform and give the setpoint back (SETPOVRON = 0; over CANopen the
         RPDO1 setpoint from before the generator)."""
-        refused = lambda: self.write_failed.emit(["SETPOVRON"])  # noqa: E731
+        refused = lambda: self._write_refused(["SETPOVRON"])  # noqa: E731
         run = lambda s: self._worker.stop_driver(s, switch_off=True)  # noqa: E731
         self._generator = False
         self._submit(Job("generator_stop", run, None, False, refused))
@@ -120,7 +120,12 @@ class LiveData(_Base):
         self._worker.poller.live = list(mnemonics)
         self._worker.poller.live_explicit = True
 
-    def _forget_live(self) -> None:
+    def samples_lost_counted(self, count: int) -> None:
+        """The worker counted ``count`` lost samples of the stream (none runs: ignored)."""
+        if self._stream_keys:
+            self._set_samples_lost(count)
+
+    def forget(self) -> None:
         """The session ended (closed or broken): no generator runs, the stream has stopped."""
         self._generator = False
         if self._stream_keys:

@@ -50,12 +50,29 @@ class Job:
 IDLE = Job("idle", lambda _s: None)
 
 
-class WorkerHost(Protocol):
-    """What the worker needs of its connection: the signals it reports through and the GUI
-    thread's side of a job (``ValveConnection`` fits it: online/conformance.py)."""
+class LiveReports(Protocol):
+    """What the worker reports the live data through: the connection's ``live`` part
+    (online/connection_live.py ``LiveData`` fits it: online/conformance.py)."""
 
     @property
-    def _stream_keys(self) -> list[str]: ...
+    def samples_received(self) -> SignalInstance: ...
+    @property
+    def live_values_changed(self) -> SignalInstance: ...
+    @property
+    def signal_values_changed(self) -> SignalInstance: ...
+    @property
+    def generator_undone(self) -> SignalInstance: ...
+
+    def samples_lost_counted(self, count: int) -> None: ...
+
+
+class WorkerHost(Protocol):
+    """What the worker needs of its connection: the signals it reports through, its live
+    part and the GUI thread's side of a job (``ValveConnection`` fits it:
+    online/conformance.py)."""
+
+    @property
+    def live(self) -> LiveReports: ...
     @property
     def failed(self) -> SignalInstance: ...
     @property
@@ -63,22 +80,13 @@ class WorkerHost(Protocol):
     @property
     def progress(self) -> SignalInstance: ...
     @property
-    def samples_received(self) -> SignalInstance: ...
-    @property
     def status_changed(self) -> SignalInstance: ...
-    @property
-    def live_values_changed(self) -> SignalInstance: ...
-    @property
-    def signal_values_changed(self) -> SignalInstance: ...
-    @property
-    def generator_undone(self) -> SignalInstance: ...
     @property
     def type_key_needed(self) -> SignalInstance: ...
 
     def _post(self, action: Callable[[], None]) -> None: ...
     def _finish(self, job: Job, result: object) -> None: ...
     def _report_lost(self, message: str) -> None: ...
-    def _set_samples_lost(self, count: int) -> None: ...
 
 
 class ConnectionWorker:
@@ -256,14 +264,14 @@ class ConnectionWorker:
             self._host._post(lambda: self._host.failed.emit(text))
             return
         names = sorted(values)
-        self._host._post(lambda: self._host.generator_undone.emit(names))
+        self._host._post(lambda: self._host.live.generator_undone.emit(names))
 
     def close(self) -> None:
         """Stop the generator and close the session (a broken link closes quietly)."""
         if self._driver is not None and self.session is not None:
             left_on = self._driver.leftovers()  # its end cannot run: put back when it is back
             if left_on:
-                serial = int(getattr(getattr(self.session, "info", None), "serial", 0))
+                serial = self.session.info.serial
                 self._left_on = (serial, left_on)
         self.stop_driver(None, switch_off=False)  # the link may be gone: nothing to write
         session, self.session = self.session, None
@@ -289,18 +297,16 @@ class ConnectionWorker:
         if result.samples is not None:
             samples = result.samples
             self.clock.samples_arrived(len(samples))
-            self._host._post(lambda: self._host.samples_received.emit(samples))
+            self._host._post(lambda: self._host.live.samples_received.emit(samples))
         if result.samples_lost is not None:
             lost = result.samples_lost
-            self._host._post(
-                lambda: self._host._set_samples_lost(lost) if self._host._stream_keys else None
-            )
+            self._host._post(lambda: self._host.live.samples_lost_counted(lost))
         if result.status is not None:
             valve_status = result.status
             self._host._post(lambda: self._host.status_changed.emit(valve_status))
         if result.live:
             live = result.live
-            self._host._post(lambda: self._host.live_values_changed.emit(live))
+            self._host._post(lambda: self._host.live.live_values_changed.emit(live))
         if result.signals:
             values = result.signals
-            self._host._post(lambda: self._host.signal_values_changed.emit(values))
+            self._host._post(lambda: self._host.live.signal_values_changed.emit(values))

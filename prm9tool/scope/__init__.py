@@ -37,18 +37,14 @@ if TYPE_CHECKING:
         setpoint_limits,
     )
     from prm9tool.scope.measure import (
-        CursorReadout,
-        Step,
         StepFigures,
         StepMeasurement,
         Verdict,
-        cursor_readout,
-        find_step,
-        find_steps,
         measure_step,
         step_figures,
-        write_csv,
     )
+    from prm9tool.scope.readout import CursorReadout, cursor_readout, write_csv
+    from prm9tool.scope.steps import Step, find_step, find_steps
     from prm9tool.scope.trigger import (
         Edge,
         Frame,
@@ -110,18 +106,14 @@ _WHERE = {
             "setpoint_limits",
         ),
         "measure": (
-            "CursorReadout",
-            "Step",
             "StepFigures",
             "StepMeasurement",
             "Verdict",
-            "cursor_readout",
-            "find_step",
-            "find_steps",
             "measure_step",
             "step_figures",
-            "write_csv",
         ),
+        "readout": ("CursorReadout", "cursor_readout", "write_csv"),
+        "steps": ("Step", "find_step", "find_steps"),
         "trigger": (
             "Edge",
             "Frame",

@@ -1,72 +1,24 @@
-"""Measuring on captured samples: cursors, step-response figures and CSV export."""
+"""Step-response figures on captured samples: a step of the reference (or of the response)
+measured into rise, overshoot and settling figures, with a verdict when it cannot be; where
+the reference steps is :mod:`prm9tool.scope.steps`, the cursors and CSV export
+:mod:`prm9tool.scope.readout`."""
 
 from __future__ import annotations
 
 import math
-from collections.abc import Sequence
 from dataclasses import dataclass
 from enum import StrEnum
-from typing import TextIO
 
 import numpy as np
 
-from prm9tool.catalogue.signals import Signal
 from prm9tool.messages import QT_TRANSLATE_NOOP, Message, Number
 from prm9tool.scope.ripple import not_settled, ripple_at_end
+from prm9tool.scope.steps import find_steps
 
-
-@dataclass(frozen=True)
-class CursorReadout:
-    """Values of every channel at cursors A and B (NaN outside the data) and their differences."""
-
-    t_a: float
-    t_b: float
-    a: np.ndarray
-    b: np.ndarray
-
-    @property
-    def dt(self) -> float:
-        """B − A in seconds."""
-        return self.t_b - self.t_a
-
-    @property
-    def frequency(self) -> float:
-        """1 / |Δt| in Hz (NaN when the cursors coincide)."""
-        return 1.0 / abs(self.dt) if self.dt else math.nan
-
-    @property
-    def delta(self) -> np.ndarray:
-        """B − A per channel."""
-        return self.b - self.a
-
-
-def cursor_readout(t: np.ndarray, values: np.ndarray, t_a: float, t_b: float) -> CursorReadout:
-    """Linearly interpolated channel values at times ``t_a`` and ``t_b`` (between the samples
-    that arrived; a channel without any gives NaN)."""
-
-    def at(when: float) -> np.ndarray:
-        if len(t) == 0 or not t[0] <= when <= t[-1]:
-            return np.full(values.shape[1], math.nan)
-        return np.array([_interp(when, t, values[:, c]) for c in range(values.shape[1])])
-
-    return CursorReadout(t_a, t_b, at(t_a), at(t_b))
-
-
-def _interp(when: float, t: np.ndarray, y: np.ndarray) -> float:
-    """``y`` at ``when`` between the samples that arrived (NaN: lost, over CANopen)."""
-    ok = np.isfinite(y)
-    if ok.all():
-        return float(np.interp(when, t, y))
-    return float(np.interp(when, t[ok], y[ok])) if ok.any() else math.nan
-
-
-# --- step response ---------------------------------------------------------------------------
 NOISE_RATIO = 10.0  # a response smaller than 10 σ of its noise is no response
 OVERSHOOT_NOISE = 3.0  # an overshoot within 3 σ of the noise reads as 0
 SMOOTH_SAMPLES = 5  # median filter on a noisy response before peaks and crossings
 SMOOTH_ABOVE = 1e-3  # noise σ (share of the step) from which the response is filtered
-JUMP_SHARE = 0.2  # a reference step moves at least 20 % of the reference's span ...
-JUMP_SAMPLES = 3  # ... within at most 3 samples (one edge)
 MIN_BEFORE = 3  # samples before a step needed to know where the response started
 MIN_AFTER = 10  # samples after a step needed for any figure
 TAIL_SHARE = 0.2  # the response must be at rest over the last 20 % of its segment ...
@@ -139,18 +91,6 @@ NOT_REACHED = QT_TRANSLATE_NOOP(
 
 
 @dataclass(frozen=True)
-class Step:
-    """One step of a reference: from sample ``start`` (the first one moved) to ``stop``
-    (the first one at the new level), and the levels on either side."""
-
-    start: int
-    stop: int
-    time: float
-    before: float
-    after: float
-
-
-@dataclass(frozen=True)
 class StepMeasurement:
     """The outcome of :func:`measure_step`: a verdict, and figures when it is MEASURED.
 
@@ -162,42 +102,6 @@ class StepMeasurement:
     figures: StepFigures | None = None
     steps: int = 0
     measured: int = -1
-
-
-def find_steps(t: np.ndarray, reference: np.ndarray) -> list[Step]:
-    """Every step of ``reference`` (a square wave has one per half period), in time order.
-
-    A step is a jump of at least 20 % of the reference's span within at most three samples;
-    the levels are the medians of the reference between its neighbouring steps. A ramp or a
-    sine has no steps.
-    """
-    if len(reference) < 3:
-        return []
-    span = float(np.ptp(reference))
-    d = np.diff(reference)
-    moved = np.flatnonzero(np.abs(d) >= JUMP_SHARE * span) if span > 0 else np.empty(0, int)
-    edges: list[tuple[int, int]] = []  # (first moved sample, first sample at the new level)
-    for k in moved:
-        last = edges[-1] if edges else None
-        if last is not None and k + 1 - last[1] < JUMP_SAMPLES and d[k] * d[last[0]] > 0:
-            edges[-1] = (last[0], int(k) + 1)
-        else:
-            edges.append((int(k), int(k) + 1))
-    bounds = [0, *(stop for _, stop in edges)]
-    ends = [start + 1 for start, _ in edges[1:]] + [len(reference)]
-    steps = []
-    for n, (start, stop) in enumerate(edges):
-        before = float(np.median(reference[bounds[n] : start + 1]))
-        after = float(np.median(reference[stop : ends[n]]))
-        if abs(after - before) >= JUMP_SHARE * span:
-            steps.append(Step(start, stop, float(t[start + 1]), before, after))
-    return steps
-
-
-def find_step(t: np.ndarray, reference: np.ndarray) -> tuple[float, float, float] | None:
-    """The first step of a reference signal: ``(time, level before, level after)``."""
-    steps = find_steps(t, reference)
-    return (steps[0].time, steps[0].before, steps[0].after) if steps else None
 
 
 def noise_level(y: np.ndarray) -> float:
@@ -476,15 +380,3 @@ def _first_crossing(
         return float(t[k])
     p0, p1 = progress[k - 1], progress[k]
     return float(t[k - 1] + (t[k] - t[k - 1]) * (share - p0) / (p1 - p0))
-
-
-# --- CSV -------------------------------------------------------------------------------------
-def write_csv(out: TextIO, t: np.ndarray, values: np.ndarray, signals: Sequence[Signal]) -> int:
-    """Write ``time [s]`` and one column per signal (``key [unit]``); returns the row count."""
-    if values.shape != (len(t), len(signals)):
-        raise ValueError("one column per signal and one row per time stamp expected")
-    header = ",".join(["time [s]"] + [f"{s.key} [{s.unit}]" for s in signals])
-    table = np.column_stack([t, values]) if len(t) else np.empty((0, len(signals) + 1))
-    fmt = ["%.6f"] + ["%.6g"] * len(signals)
-    np.savetxt(out, table, delimiter=",", fmt=fmt, header=header, comments="")
-    return len(t)

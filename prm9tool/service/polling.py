@@ -129,7 +129,7 @@ class Poller:
             if len(block):
                 self._last_row.update(latest_values(self.stream_keys, block))
                 result.samples = block
-            lost = int(getattr(session, "samples_lost", 0))
+            lost = session.samples_lost
             if lost != self._lost_reported:
                 self._lost_reported = result.samples_lost = lost
         if status:

@@ -93,7 +93,7 @@ class SetpointDriver:
         self._settings = settings
         self._on_refused = on_refused
         self._clock = clock or StreamClock()
-        self._controls = getattr(session, "emulator", None)
+        self._controls = session.emulator
         self._link = setpoint_link(session)
         self._stop = threading.Event()
         self._thread = threading.Thread(target=self._run, name="setpoint-generator", daemon=True)

@@ -369,7 +369,7 @@ def characterize_session(
         profile = load_profile(os.fspath(profile))
     if session.emulator is None:
         return run(rig_for_session(session), profile, progress)
-    from prm9tool.device.factory import emulated_valve, stepped_here
+    from prm9tool.device.emulated_valves import emulated_valve, stepped_here
 
     # an emulated valve is stepped as fast as the CPU allows, as --characterize --emulator does
     with stepped_here(emulated_valve(session.info.type_key, session.info.serial)) as valve:
@@ -395,7 +395,7 @@ def on_session_rig(session: ValveSession, work: Callable[[Rig], T]) -> T:
 
     if session.emulator is None:
         return work(rig_for_session(session))
-    from prm9tool.device.factory import emulated_valve, stepped_here
+    from prm9tool.device.emulated_valves import emulated_valve, stepped_here
 
     with stepped_here(emulated_valve(session.info.type_key, session.info.serial)) as valve:
         return work(EmulatorRig(valve))

@@ -13,7 +13,7 @@ from PySide6.QtCore import QSettings
 from PySide6.QtWidgets import QFileDialog
 
 from prm9tool import i18n
-from prm9tool.device import factory
+from prm9tool.device import emulated_valves, factory
 from prm9tool.model.access import AccessModel
 from prm9tool.model.document import ParameterDocument
 from prm9tool.model.undo import DocumentUndo
@@ -129,7 +129,7 @@ def main_window(
         yield window
     finally:
         window.connection.shutdown()
-        factory.forget_emulated_valves()
+        emulated_valves.forget_emulated_valves()
         i18n.set_language("en")
 
 
@@ -159,4 +159,4 @@ def session_of(window: Any) -> Any:
 
 def emulated(serial: int) -> Any:
     """The emulated valve with ``serial``."""
-    return factory._VALVES[serial]
+    return emulated_valves.EMULATED.valves[serial]

@@ -15,7 +15,7 @@ from __future__ import annotations
 import threading
 from typing import TYPE_CHECKING, Protocol
 
-from prm9tool.catalogue import CATALOGUE
+from prm9tool.catalogue import CATALOGUE, Parameter
 from prm9tool.device.canlink.sdo_transfer import (
     DEFAULT_MAX_BYTES,
     CanopenPort,
@@ -35,7 +35,7 @@ if TYPE_CHECKING:
     import canopen
 
 STRING_MAX_BYTES = 255  # the longest VISIBLE_STRING of a PRM9 (names, versions: ≤ 40 chars)
-__all__ = ["MISSING", "SdoChannel", "SdoTransferError", "max_bytes"]
+__all__ = ["MISSING", "SdoChannel", "SdoTransferError", "decoded", "max_bytes"]
 MISSING = frozenset({AbortCode.NO_SUCH_OBJECT, AbortCode.NO_SUCH_SUBINDEX})
 PRM9_DEVICE_TYPE = 0x198  # 0x1000: CiA 408 (manual table 7-5)
 ARGO_HYTOS_VENDOR = 0xE6  # 0x1018/1 (manual §7.6 step 2)
@@ -169,3 +169,22 @@ def max_bytes(index: int, subindex: int) -> int:
     if param is None:
         return DEFAULT_MAX_BYTES
     return STRING_MAX_BYTES if param.is_string else max(param.dtype.size, 4)
+
+
+def decoded(param: Parameter, data: bytes) -> int:
+    """The number ``data`` holds as ``param``'s type: ProtocolError when it has too few bytes,
+    or more whose value is not that number (an expedited answer may pad a short type to 4
+    bytes, with zeros or its top bit extended; anything else in them is no value of the
+    type)."""
+    dtype = param.dtype
+    size = dtype.size
+    if len(data) < size:
+        raise ProtocolError(f"{param.mnemonic}: {len(data)} bytes for a {dtype.name}")
+    value = int(dtype.decode(data[:size]))
+    rest = data[size:]
+    padding = b"\xff" if data[size - 1] & 0x80 else b"\0"  # zeros or the sign extended
+    if rest and rest not in (bytes(len(rest)), padding * len(rest)):
+        raise ProtocolError(
+            f"{param.mnemonic}: the answer 0x{data[::-1].hex().upper()} is no {dtype.name}"
+        )
+    return value

@@ -33,17 +33,16 @@ import numpy as np
 
 from prm9tool.catalogue import CATALOGUE, LOAD_SIGNATURE, SAVE_SIGNATURE, Parameter
 from prm9tool.catalogue.commissioning import NmtCommand
-from prm9tool.catalogue.typekey import TypeKey
 from prm9tool.device.canlink import bus as canbus
 from prm9tool.device.canlink import discovery, relocate
 from prm9tool.device.canlink.nmt_confirm import send_and_confirm
 from prm9tool.device.canlink.pdo_scope import NotPdoMappedError, PdoSampler, min_period_s
 from prm9tool.device.canlink.sampler import SdoSampler
-from prm9tool.device.canlink.sdo import MISSING, SdoChannel
+from prm9tool.device.canlink.sdo import MISSING, SdoChannel, decoded
 from prm9tool.device.canlink.status import read_status, stopped_status
-from prm9tool.device.canlink.storing import STORED_WITH_1010, factory_upload, store_kind
-from prm9tool.device.canlink.typekeys import forget, lacking_objects, remember, resolve
-from prm9tool.device.canlink.upload_steps import UploadSteps
+from prm9tool.device.canlink.storing import STORED_WITH_1010, factory_upload
+from prm9tool.device.canlink.typekeys import GivenKey
+from prm9tool.device.canlink.upload_steps import CanopenUploadSteps
 from prm9tool.device.records import (
     DeviceInfo,
     NmtState,
@@ -65,6 +64,7 @@ from prm9tool.errors import (
     Prm9Error,
     ProtocolError,
     SdoAbortError,
+    TypeKeyError,
 )
 
 SDO_TIMEOUT_S = 0.5
@@ -74,31 +74,13 @@ LINK_PARAMETERS = ("NODEID", "BITRATE")  # take effect at power-up: the tool's l
 __all__ = ["CanopenSession", "NotAPrm9Error"]
 
 
-def _decoded(param: Parameter, data: bytes) -> int:
-    """The number ``data`` holds as ``param``'s type: ProtocolError when it has too few bytes,
-    or more whose value is not that number (an expedited answer may pad a short type to 4
-    bytes, with zeros or its top bit extended; anything else in them is no value of the
-    type)."""
-    dtype = param.dtype
-    size = dtype.size
-    if len(data) < size:
-        raise ProtocolError(f"{param.mnemonic}: {len(data)} bytes for a {dtype.name}")
-    value = int(dtype.decode(data[:size]))
-    rest = data[size:]
-    padding = b"\xff" if data[size - 1] & 0x80 else b"\0"  # zeros or the sign extended
-    if rest and rest not in (bytes(len(rest)), padding * len(rest)):
-        raise ProtocolError(
-            f"{param.mnemonic}: the answer 0x{data[::-1].hex().upper()} is no {dtype.name}"
-        )
-    return value
-
-
 class NotAPrm9Error(AccessDeniedError):
     """The node is some other CANopen device: prm9tool does not write to it."""
 
 
-class CanopenSession(UploadSteps, ValveSession):
-    """One PRM9 -CA valve as a node on a CAN bus, the tool its CANopen master."""
+class CanopenSession(ValveSession):
+    """One PRM9 -CA valve as a node on a CAN bus, the tool its CANopen master; the upload's
+    CANopen steps are the part it holds (:class:`CanopenUploadSteps`)."""
 
     def __init__(
         self,
@@ -118,15 +100,16 @@ class CanopenSession(UploadSteps, ValveSession):
             raise Prm9Error(f"CANopen node IDs are 1…127, not {node_id}")
         super().__init__(f"can:{node_id}", on_close)
         self.node_id = node_id
-        self._type_key_hint = type_key
-        self._label_key = label_key
-        self.key_given = False  # True: the type key was given, the valve has no 0x2041
+        self._key = GivenKey(type_key, label_key)  # the key given where the valve tells none
         self._shared = canbus.acquire(options)
         self._closed = False
-        self._snapshot: dict[str, Value] | None = None  # None: no upload is running
-        self._stored_backup: dict[str, Value] | None = None  # the snapshot of the last store
-        self._touched: list[str] = []  # parameters the running upload wrote
-        self._known: dict[str, Value] = {}  # the valve's working values as last read/written
+        self._upload = CanopenUploadSteps(
+            self,
+            lambda: self._sdo,
+            lambda: self._shared.node_seen(self.node_id).boot_ups,
+            self._key_refusal,
+        )
+        self.upload_steps = self._upload
         self._sampler: SdoSampler | PdoSampler | None = None
         self._stopped_by_me = False  # this session's NMT stop is in force (no SDO then)
         self._last_status: ValveStatus | None = None
@@ -157,6 +140,11 @@ class CanopenSession(UploadSteps, ValveSession):
         """True once the session released the bus."""
         return self._closed
 
+    @property
+    def key_given(self) -> bool:
+        """True: the type key was given, the valve has no 0x2041."""
+        return self._key.given
+
     # --- identity ---------------------------------------------------------------------------
     def identify(self) -> DeviceInfo:
         """Who the node is; NotAPrm9Error for another CANopen device (0x1000, 0x1018/1)."""
@@ -171,21 +159,7 @@ class CanopenSession(UploadSteps, ValveSession):
             )
         if found.problem:
             raise ProtocolError(f"node {self.node_id}: {found.problem}")
-        key = found.type_key
-        self.key_given = key is None
-        if key is None:
-            assert found.derived is not None
-            from prm9tool.paths import user_data_dir
-
-            key = resolve(
-                found.serial,
-                found.derived,
-                self._type_key_hint,
-                user_data_dir(),
-                label=self._label_key,
-            )
-            if self._label_key:
-                remember(user_data_dir(), found.serial, key)
+        key = self._key.key_of(found.serial, found.type_key, found.derived)
         bus = self.options
         return DeviceInfo(
             type_key=key,
@@ -209,10 +183,8 @@ class CanopenSession(UploadSteps, ValveSession):
         """:meth:`ValveSession.upload`; a valve without 0x2041 that stored a set for the type
         key given (the batch file's) keeps that key remembered for its serial number."""
         result = super().upload(values, progress, cancel)
-        if result.stored and self.key_given:
-            from prm9tool.paths import user_data_dir
-
-            remember(user_data_dir(), self.info.serial, self.info.type_key)
+        if result.stored:
+            self._key.stored(self.info.serial, self.info.type_key)
         return result
 
     def download(
@@ -222,31 +194,21 @@ class CanopenSession(UploadSteps, ValveSession):
         lacks objects the manual lists for that key is refused (TypeKeyError), and the key is
         no longer remembered for it."""
         values = super().download(progress, cancel)
-        if self.key_given:
-            refusal = lacking_objects(self.info.serial, TypeKey.parse(self.info.type_key), values)
-            if refusal is not None:
-                from prm9tool.paths import user_data_dir
-
-                forget(user_data_dir(), self.info.serial, self.info.type_key)
-                raise refusal
+        self._key.check_download(self.info.serial, self.info.type_key, values)
         return values
 
-    def _before_upload(self, params: Sequence[Parameter], cancel: threading.Event | None) -> None:
-        """The snapshot (UploadSteps); then, for a key that was given (no 0x2041), the
-        refusal of a key whose objects the snapshot found missing — before anything is
-        written (an E04 file's key on an E02 without the external-sensor objects)."""
-        super()._before_upload(params, cancel)
-        if self.key_given:
-            present = {
-                p.mnemonic: 0
-                for p in CATALOGUE.file_parameters(self.variant)
-                if p.mnemonic not in self.unavailable
-            }
-            key = TypeKey.parse(self.info.type_key)
-            refusal = lacking_objects(self.info.serial, key, present)
-            if refusal is not None:
-                self._snapshot = None  # nothing was written: nothing to put back
-                raise refusal
+    def _key_refusal(self) -> TypeKeyError | None:
+        """Asked after the upload's snapshot, before anything is written: for a key that was
+        given (no 0x2041), the refusal of a key whose objects the snapshot found missing (an
+        E04 file's key on an E02 without the external-sensor objects)."""
+        if not self.key_given:
+            return None
+        present = {
+            p.mnemonic: 0
+            for p in CATALOGUE.file_parameters(self.variant)
+            if p.mnemonic not in self.unavailable
+        }
+        return self._key.refusal(self.info.serial, self.info.type_key, present)
 
     # --- entries ----------------------------------------------------------------------------
     def _read_entries(
@@ -275,8 +237,8 @@ class CanopenSession(UploadSteps, ValveSession):
         if param.is_string:
             value: Value = data.split(b"\0", 1)[0].decode("latin-1")
         else:
-            value = _decoded(param, data)
-        self._known[param.mnemonic] = value
+            value = decoded(param, data)
+        self._upload.known[param.mnemonic] = value
         return value
 
     def _write_entries(
@@ -287,7 +249,8 @@ class CanopenSession(UploadSteps, ValveSession):
         cancel: threading.Event | None,
     ) -> int:
         done = 0
-        holds = self._snapshot or {}  # during an upload: what the valve holds already
+        upload = self._upload
+        holds = upload.snapshot or {}  # during an upload: what the valve holds already
         for param in params:
             check_cancel(cancel, "write")
             if holds.get(param.mnemonic, holds) == values[param.mnemonic]:
@@ -295,10 +258,10 @@ class CanopenSession(UploadSteps, ValveSession):
             elif param.mnemonic not in self.unavailable:
                 data = param.dtype.encode(values[param.mnemonic])
                 try:
-                    self._known.pop(param.mnemonic, None)  # unknown if the answer is lost
+                    upload.known.pop(param.mnemonic, None)  # unknown if the answer is lost
                     self._sdo.download(param.index, param.subindex, data)
-                    self._known[param.mnemonic] = values[param.mnemonic]
-                    self._touched.append(param.mnemonic)
+                    upload.known[param.mnemonic] = values[param.mnemonic]
+                    upload.touched.append(param.mnemonic)
                     done += 1
                 except SdoAbortError as exc:
                     if exc.code not in MISSING:
@@ -312,13 +275,16 @@ class CanopenSession(UploadSteps, ValveSession):
     def store(self) -> None:
         """0x1010/1 = "save": the working parameters become the stored ones; a valve without
         a store command kept every write already (prm9tool.device.canlink.storing)."""
-        self._store = self._store or store_kind(self._sdo)
-        if self._store == STORED_WITH_1010:
+        kind = self._upload.store_kind()
+        if kind == STORED_WITH_1010:
             self._sdo.download(0x1010, 1, SAVE_SIGNATURE.to_bytes(4, "little"), STORE_TIMEOUT_S)
-        self.store_done = self._store
-        # stored: nothing to put back any more — unless the restart verification finds the
-        # valve did not keep the upload (upload_steps._restart_check)
-        self._stored_backup, self._snapshot = self._snapshot, None
+        self.store_done = kind
+        self._upload.stored()
+
+    def reload(self) -> None:
+        """Working values ← those read before the upload, for the parameters it wrote (the
+        module's decision; :meth:`CanopenUploadSteps.reload`)."""
+        self._upload.reload()
 
     def restore_factory(self) -> None:
         """0x1011/1 = "load": factory values at the next reset or power-up. A valve without
@@ -336,7 +302,7 @@ class CanopenSession(UploadSteps, ValveSession):
         off). ValveMovedError says where it is when the session cannot follow."""
         self._stop_sampler()
         after = relocate.predict(self)
-        self._known.clear()  # the valve comes back with its stored set
+        self._upload.known.clear()  # the valve comes back with its stored set
         nodes = [self.node_id, *([after.node_id] if after and after.node_id else [])]
         boot_ups = {n: self._shared.node_seen(n).boot_ups for n in nodes}  # the old one first
         old = self.node_id

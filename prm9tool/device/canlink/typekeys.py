@@ -122,3 +122,50 @@ def lacking_objects(serial: int, key: TypeKey, values: Mapping[str, object]) -> 
         f"(manual chapter 7): {key} is not its type key; give the one on its label "
         "(--type-key KEY)"
     )
+
+
+class GivenKey:
+    """The type key of one session's valve where the valve does not tell it (no 0x2041): the
+    key given with the session (a file's, ``hint``) or read off the valve's label (``label``,
+    which goes first and is remembered for its serial at once), resolved against what the
+    objects tell; remembered once a set was stored under it, forgotten when the valve turns
+    out to lack objects the key needs. A part of the CANopen session."""
+
+    def __init__(self, hint: str | None, label: str | None) -> None:
+        self._hint, self._label = hint, label
+        self.given = False  # True: the valve has no 0x2041, the key was given
+
+    def key_of(self, serial: int, told: str | None, derived: Derived | None) -> str:
+        """The valve's key: the one it ``told`` (0x2041), else the given one (TypeKeyError
+        when none fits what its objects tell, ``derived``)."""
+        self.given = told is None
+        if told is not None:
+            return told
+        assert derived is not None
+        key = resolve(serial, derived, self._hint, _folder(), label=self._label)
+        if self._label:
+            remember(_folder(), serial, key)
+        return key
+
+    def stored(self, serial: int, key: str) -> None:
+        """A set was stored under the given key: it stays remembered for ``serial``."""
+        if self.given:
+            remember(_folder(), serial, key)
+
+    def check_download(self, serial: int, key: str, values: Mapping[str, object]) -> None:
+        """A given key whose objects the download found missing is refused (TypeKeyError)
+        and no longer remembered for ``serial``."""
+        refusal = self.refusal(serial, key, values)
+        if refusal is not None:
+            forget(_folder(), serial, key)
+            raise refusal
+
+    def refusal(self, serial: int, key: str, values: Mapping[str, object]) -> TypeKeyError | None:
+        """:func:`lacking_objects` for a given key (None for a key the valve told)."""
+        return lacking_objects(serial, TypeKey.parse(key), values) if self.given else None
+
+
+def _folder() -> Path:
+    from prm9tool.paths import user_data_dir
+
+    return user_data_dir()
