@@ -5,7 +5,7 @@ the same result, the same words for the same refusal and the same history record
 from __future__ import annotations
 
 import pytest
-from support.gui_support import E02, emulator_connection
+from support.gui_support import E02, E02_CA, emulator_connection
 
 import prm9tool
 from prm9tool.cli.main import main
@@ -18,6 +18,7 @@ from prm9tool.scope.generator import GeneratorSettings, Waveform
 from prm9tool.service.motion import MotionBusyError
 
 TIMEOUT = 15_000
+CAPPED_RANGE = "LIMTA: 99999 mA is outside the allowed range 0 … 2600 mA"
 
 
 @pytest.fixture
@@ -28,8 +29,8 @@ def connection(qtbot):
     factory.forget_emulated_valves()
 
 
-def _online(qtbot, connection, serial):
-    entry = factory.list_devices([f"{E02}:{serial}"])[-1]
+def _online(qtbot, connection, serial, type_key=E02):
+    entry = factory.list_devices([f"{type_key}:{serial}"])[-1]
     with qtbot.waitSignals([connection.online_changed, connection.device_changed], timeout=TIMEOUT):
         connection.go_online(entry)
 
@@ -58,7 +59,8 @@ def _cli_refusal(capsys, serial, assignment):
     ("mnemonic", "value", "words", "kind"),
     [
         ("CURNORM", 1000, "CURNORM: the parameter is read-only", AccessDeniedError),
-        ("LIMTA", 99999, "LIMTA: 99999 mA is outside", ValueRangeError),
+        # the range every editor shows: 0 … CURNORM (2600 mA on this valve), not 0 … 4000 mA
+        ("LIMTA", 99999, CAPPED_RANGE, ValueRangeError),
     ],
 )
 def test_a_refused_write_has_the_same_words_at_every_door(
@@ -70,6 +72,27 @@ def test_a_refused_write_has_the_same_words_at_every_door(
     assert (words in cli and "nothing was written" in cli) or "read-only" in cli
     _online(qtbot, connection, 7303)
     assert words in _gui_refusal(qtbot, connection, mnemonic, value)
+
+
+def test_limta_beyond_its_cap_has_the_editors_words_at_every_door(qtbot, connection, capsys):
+    # the parameter editors (model/editing.py) and the block dialogs refuse LIMTA = 99999 mA
+    # with 0 … CURNORM; the command line, the API and the GUI's worker said 0 … 4000 mA
+    from prm9tool.model.access import AccessModel
+    from prm9tool.model.document import ParameterDocument
+    from prm9tool.model.editing import apply_edit
+
+    with prm9tool.connect(f"emulator:{E02_CA}:7306", record_history=False) as valve:
+        doc = ParameterDocument(E02_CA)  # the factory values, as the valve's
+        assert doc.value("CURNORM") == valve["CURNORM"] == 2600
+        with pytest.raises(ValueRangeError) as api:
+            valve.check({"LIMTA": 99999})
+    with pytest.raises(ValueRangeError) as editor:
+        apply_edit(doc, AccessModel(), "LIMTA", 99999)
+    assert str(api.value) == str(editor.value) == CAPPED_RANGE
+    assert main(["--emulator", f"{E02_CA}:7307", "--set", "LIMTA=99999"]) == 2
+    assert f"--set: {CAPPED_RANGE}; nothing was written" in capsys.readouterr().err
+    _online(qtbot, connection, 7308, E02_CA)
+    assert CAPPED_RANGE in _gui_refusal(qtbot, connection, "LIMTA", 99999)
 
 
 def test_not_a_number_has_the_same_words_in_the_api_and_on_the_command_line(capsys):

@@ -19,7 +19,7 @@ from collections.abc import Callable, Mapping
 from pathlib import Path
 from typing import TYPE_CHECKING
 
-from prm9tool.catalogue import CATALOGUE, Parameter
+from prm9tool.catalogue import CAPPED_BY, CATALOGUE, Parameter
 from prm9tool.catalogue.commissioning import (
     CONTROL_WORD,
     DISABLE_SEQUENCE,
@@ -28,7 +28,13 @@ from prm9tool.catalogue.commissioning import (
 from prm9tool.catalogue.typekey import TypeKey
 from prm9tool.errors import CommunicationError, DeviceTimeoutError, Prm9Error
 from prm9tool.service import motion, upload
-from prm9tool.service.values import ReadOnlyError, check_rules, read_only_text, user_value
+from prm9tool.service.values import (
+    ReadOnlyError,
+    caps_held,
+    check_rules,
+    read_only_text,
+    user_value,
+)
 
 if TYPE_CHECKING:
     from prm9tool.analysis.profile import Profile
@@ -66,6 +72,10 @@ STOPPED_TEXT = (
     "the valve does not answer: this program stopped it (NMT stop), and a stopped valve "
     "answers no SDO (manual §7.2); send NMT start or pre-operational first"
 )
+
+
+def _in_catalogue_range(param: Parameter, raw: Value) -> bool:
+    return not isinstance(raw, int) or param.raw_min <= raw <= param.raw_max
 
 
 class ValveService:
@@ -110,20 +120,27 @@ class ValveService:
         """The raw values of ``values`` (display values or texts as typed) if this valve
         would take them: each as :func:`~prm9tool.service.values.user_value` checks it, then
         together with the valve's caps (LIMTA at most its CURNORM). Sends nothing."""
-        raw = {m: user_value(self.parameter(m), v) for m, v in values.items()}
-        check_rules(self.session, raw)
+        params = {m: self.parameter(m) for m in values}
+        held = caps_held(self.session, values)  # LIMTA's range is 0 … the valve's CURNORM
+        raw = {m: user_value(params[m], v, held) for m, v in values.items()}
+        check_rules(self.session, raw, held)
         return raw
 
     def check_raw(self, values: Mapping[str, Value]) -> None:
         """Raw values as the window's document holds them: writable and in range (the
         document checked the rules); the same words as :meth:`check`. A mnemonic this valve
         lacks is left to the link, which names it."""
+        held: dict[str, Value] | None = None
         for mnemonic, raw in values.items():
             param = self._params.get(mnemonic)
             if param is None:
                 continue
             if not param.writable:
                 raise ReadOnlyError(read_only_text(mnemonic))
+            cap = CAPPED_BY.get(mnemonic)
+            if cap is not None and not _in_catalogue_range(param, raw):
+                held = caps_held(self.session, values) if held is None else held
+                param.check_raw(raw, held.get(cap))  # 0 … CURNORM, as the editors say
             param.check_raw(raw)
 
     def write_raw(self, values: Mapping[str, Value]) -> None:
