@@ -4,6 +4,8 @@ the same result, the same words for the same refusal and the same history record
 
 from __future__ import annotations
 
+import json
+
 import pytest
 from support.gui_support import E02, E02_CA, emulator_connection
 
@@ -192,4 +194,54 @@ def test_a_refused_write_has_the_same_words_over_canopen(qtbot, tmp_path, reques
             assert str(range_api.value) in _gui_refusal(qtbot, connection, "LIMTA", 99999)
     finally:
         connection.shutdown()
+        rig.close()
+
+
+@pytest.mark.slow  # three buses of LSS searches (about 20 s)
+def test_lss_is_one_operation_at_every_door(qtbot, request, capsys):
+    # cli/lss.py, online/lss_commissioning.py and prm9tool.lss_* are the service's LSS
+    from support.lss_rig import make_lss_rig
+
+    from prm9tool.online.lss_commissioning import LssCommissioning
+
+    rig = make_lss_rig(request.node.name)
+    try:
+        rig.add(4700, switches=(6, 2))  # node 10 by its switch
+        for serial in (4711, 4712, 4713):
+            rig.add(serial)  # switch 1: no node ID
+        bus = {"can_interface": "virtual", "can_channel": rig.options.channel}
+        cli_bus = ["--can-interface", "virtual", "--can-channel", rig.options.channel]
+        gui_bus = {"interface": "virtual", "channel": rig.options.channel}
+        lss = LssCommissioning()
+
+        api_found = prm9tool.lss_scan(**bus)
+        assert main(["--lss-scan", "--json", *cli_bus]) == 0
+        cli_found = json.loads(capsys.readouterr().out)
+        with qtbot.waitSignal(lss.scanned, timeout=TIMEOUT) as scanned:
+            lss.scan(gui_bus)
+        assert [d.to_dict() for d in api_found] == cli_found
+        assert scanned.args[0] == api_found and {d.serial for d in api_found} == {4711, 4712, 4713}
+
+        # the same refusal: node 10 answers already
+        with pytest.raises(prm9tool.CommunicationError) as api:
+            prm9tool.lss_assign({4711: 10}, **bus)
+        assert main(["--lss-assign", "4711=10", *cli_bus]) == 2
+        cli = capsys.readouterr().err
+        with qtbot.waitSignal(lss.failed, timeout=TIMEOUT) as failed:
+            lss.assign(gui_bus, api_found[0], 10)
+        assert str(api.value).startswith("node ID 10 is taken: serial 4700 answers there")
+        assert cli == f"prm9tool: {api.value}\n" and str(api.value) in failed.args[1]
+
+        # the same result: stored, answering at the new node ID
+        (given,) = prm9tool.lss_assign({4711: 21}, **bus)
+        assert given.to_dict() == {"serial": 4711, "node_id": 21, "device": "can:21"}
+        assert main(["--lss-assign", "4712=22", *cli_bus]) == 0
+        assert capsys.readouterr().out == "serial 4712: node 22, stored; it answers as can:22\n"
+        device = next(d for d in api_found if d.serial == 4713)
+        with qtbot.waitSignal(lss.assigned, timeout=TIMEOUT) as assigned:
+            lss.assign(gui_bus, device, 23)
+        assert assigned.args[0].device_id == "can:23"
+        nodes = {v.firmware.nv.lss.get("node_id") for v in rig.valves[1:]}
+        assert nodes == {21, 22, 23}
+    finally:
         rig.close()
