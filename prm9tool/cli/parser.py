@@ -194,6 +194,18 @@ def build_parser() -> argparse.ArgumentParser:
         help="with --enable: the hydraulics are safe for the test to move the spool",
     )  # fmt: skip
     eol.add_argument(
+        "--autotune", nargs="?", const="position", choices=("position", "process"),
+        metavar="LOOP",
+        help="the Tuning window's autotune of the one valve of --device/--emulator (LOOP: "
+        "position, or process on E04): gains proposed and checked against --profile, the "
+        "valve's own gains back after; --json [OUT.json] or --report OUT.json for the record",
+    )  # fmt: skip
+    eol.add_argument(
+        "--apply", action="store_true",
+        help="with --autotune: write the proposed gains and store them (only a proposal that "
+        "passes the profile and rests on a trustworthy model)",
+    )  # fmt: skip
+    eol.add_argument(
         "--fit-twin", metavar="OUT.toml",
         help="fit the valve's twin (plant constants, docs/twin.md) from --from RUN.json, or "
         "characterize the one valve of --device/--emulator (--profile) and fit from that run; "

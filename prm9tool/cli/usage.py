@@ -51,15 +51,18 @@ def usage_problem(args: argparse.Namespace) -> str | None:
         return problem
     if args.fit_twin is not None or args.fit_from is not None:
         return _fit_twin_problem(args)
-    if args.characterize:
+    if args.characterize or args.autotune is not None:
         return _characterize_problem(args)
+    if args.apply:
+        return "--apply belongs to --autotune (it applies the proposed gains)"
     if args.enable or args.hydraulics_safe:
         flag = "--enable" if args.enable else "--hydraulics-safe"
-        return f"{flag} belongs to --characterize (it enables the valve before the test)"
+        return (f"{flag} belongs to --characterize or --autotune (it enables the valve before "
+                "the test)")  # fmt: skip
     if args.get or args.set or args.store or args.export_dcf:
         return _values_problem(args)
     if args.profile:
-        return "--profile belongs to --characterize"
+        return "--profile belongs to --characterize or --autotune"
     if getattr(args, "od", None) and not (args.emulator or args.serve_emulator):
         return "--od chooses the object dictionary of --emulator or --serve-emulator valves"
     problem = _compare_history_problem(args)
@@ -190,16 +193,22 @@ def _serve_problem(args: argparse.Namespace, batch_only: list[str]) -> str | Non
 
 
 def _characterize_problem(args: argparse.Namespace) -> str | None:
+    """--characterize's and --autotune's: tests that move one valve."""
+    command = "--characterize" if args.characterize else "--autotune"
     options = {**BATCH_ONLY, **FILE_TOOLS, **HISTORY_COMMANDS, "--diff": "diff", **VALUE_COMMANDS}
     others = [flag for flag, dest in options.items()
               if dest != "report" and getattr(args, dest) not in (None, False)]  # fmt: skip
     if args.batch is not None or args.list_devices:
         others.insert(0, "--batch" if args.batch is not None else "--list-devices")
+    if args.characterize and args.autotune is not None:
+        others.insert(0, "--autotune")
     if others:
-        return f"--characterize and {others[0]} are separate commands: use one at a time"
+        return f"{command} and {others[0]} are separate commands: use one at a time"
     if args.file:
-        return f"unexpected file {args.file}: --characterize tests a valve"
-    if args.json is True:
+        return f"unexpected file {args.file}: {command} tests a valve"
+    if args.apply and args.characterize:
+        return "--apply belongs to --autotune (it applies the proposed gains)"
+    if args.json is True and args.characterize:
         return "--characterize writes its JSON report to a file: --json OUT.json"
     if args.hydraulics_safe and not args.enable:
         return "--hydraulics-safe confirms --enable: add --enable, or leave it out"

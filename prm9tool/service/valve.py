@@ -15,7 +15,8 @@ import os
 import threading
 import time
 import weakref
-from collections.abc import Callable, Mapping
+from collections.abc import Callable, Iterator, Mapping
+from contextlib import contextmanager
 from pathlib import Path
 from typing import TYPE_CHECKING
 
@@ -38,10 +39,12 @@ from prm9tool.service.values import (
 
 if TYPE_CHECKING:
     from prm9tool.analysis.profile import Profile
+    from prm9tool.characterize.rig import Rig
     from prm9tool.characterize.run import Characterization
     from prm9tool.device.records import Progress, UploadResult, Value, ValveStatus
     from prm9tool.device.session import ValveSession
     from prm9tool.history.recorder import Details
+    from prm9tool.service.autotune import AutotuneOutcome, AutotuneSettings
     from prm9tool.service.history import HistoryHook
     from prm9tool.twin.fitvalve import ValveTwin
 
@@ -310,6 +313,32 @@ class ValveService:
             self.history.characterization(self.session, result)
         return result
 
+    def autotune(
+        self,
+        settings: AutotuneSettings | None = None,
+        apply: bool = False,
+        progress: Callable[[str], None] | None = None,
+    ) -> AutotuneOutcome:
+        """The Tuning window's autotune on this valve (``service/autotune.py``): the proposal,
+        checked against the acceptance profile, the valve's own gains back afterwards;
+        ``apply``: then write the proposed gains and store them, when the proposal passes the
+        acceptance profile and its model is trustworthy (``may_apply``). Refused with MotionBusyError
+        while another motion runs; recorded in the history as the window records it."""
+        from prm9tool.service import autotune as tuning
+
+        checked = (settings or tuning.AutotuneSettings()).checked()
+        with motion.claim(self.session, "autotune"):
+            with session_rig(self.session) as rig:
+                proposal = tuning.run(rig, checked, progress)
+            apply = apply and tuning.may_apply(proposal)
+            if apply:
+                self.write_raw(proposal.values)
+                self.store()  # read back and recorded, as every door's store
+        if self.history is not None:
+            outcome, details = tuning.details(proposal, apply)
+            self.history.add(self.session, "autotune", outcome, None, details)
+        return tuning.AutotuneOutcome(proposal, apply)
+
     def fit_twin(
         self,
         path: str | os.PathLike[str],
@@ -354,21 +383,31 @@ def characterize_session(
     """The end-of-line test on an open session (the rig its link gives)."""
     from prm9tool.analysis.profile import DEFAULT, load_profile
     from prm9tool.analysis.profile import Profile as ProfileType
-    from prm9tool.characterize.canrig import rig_for_session
-    from prm9tool.characterize.rig import EmulatorRig
     from prm9tool.characterize.run import characterize as run
 
     if profile is None:
         profile = DEFAULT
     elif not isinstance(profile, ProfileType):
         profile = load_profile(os.fspath(profile))
+    with session_rig(session) as rig:
+        return run(rig, profile, progress)
+
+
+@contextmanager
+def session_rig(session: ValveSession) -> Iterator[Rig]:
+    """The rig the tests that move the valve run on: the link's (a USB stream, CANopen SDO
+    samples) or, for an emulated valve, the valve itself stepped as fast as the CPU allows
+    (as ``--characterize --emulator`` does)."""
+    from prm9tool.characterize.canrig import rig_for_session
+    from prm9tool.characterize.rig import EmulatorRig
+
     if session.emulator is None:
-        return run(rig_for_session(session), profile, progress)
+        yield rig_for_session(session)
+        return
     from prm9tool.device.factory import emulated_valve, stepped_here
 
-    # an emulated valve is stepped as fast as the CPU allows, as --characterize --emulator does
     with stepped_here(emulated_valve(session.info.type_key, session.info.serial)) as valve:
-        return run(EmulatorRig(valve), profile, progress)
+        yield EmulatorRig(valve)
 
 
 _SERVICES: weakref.WeakKeyDictionary[object, ValveService] = weakref.WeakKeyDictionary()
