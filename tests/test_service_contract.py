@@ -107,6 +107,14 @@ def _history(serial):
     return [(r["operation"], r["outcome"]) for r in prm9tool.history.records(serial)]
 
 
+def _parameters(record_id):
+    recorder = Recorder()
+    try:
+        return recorder.store().record(record_id)["parameters"]
+    finally:
+        recorder.close()
+
+
 def test_an_upload_runs_the_same_sequence_at_every_door(qtbot, connection, tmp_path):
     # the same file into three fresh valves: backup first (recorded), then the upload
     with prm9tool.connect(f"emulator:{E02}:7311", record_history=False) as valve:
@@ -138,6 +146,13 @@ def test_an_upload_runs_the_same_sequence_at_every_door(qtbot, connection, tmp_p
     recorder.close()
     same = {"written", "chosen", "mismatches"}
     assert {k: api["details"][k] for k in same} == {k: gui["details"][k] for k in same}
+    # the batch's record has the upload's shape, with its batch context added (issue 28)
+    batch = prm9tool.history.records(7313)[-1]
+    assert set(batch["details"]) - set(api["details"]) == {"file", "verification"}
+    assert set(api["details"]) <= set(batch["details"])  # "command": "python API", "--batch"
+    assert {k: batch["details"][k] for k in same} == {k: api["details"][k] for k in same}
+    assert batch["details"]["file"] == str(path) and batch["details"]["command"] == "--batch"
+    assert _parameters(batch["id"]) == _parameters(api["id"])
 
 
 def test_a_characterization_refuses_while_a_generator_runs_in_the_api_and_the_gui(
@@ -245,3 +260,60 @@ def test_lss_is_one_operation_at_every_door(qtbot, request, capsys):
         assert nodes == {21, 22, 23}
     finally:
         rig.close()
+
+
+def test_an_autotune_refuses_while_a_generator_runs_in_the_api_and_the_gui(qtbot, connection):
+    from prm9tool.service import autotune
+
+    valve = prm9tool.connect(f"emulator:{E02}:7331", record_history=False)
+    with (
+        valve,
+        valve.generator("square", amplitude=10, period=0.5),
+        pytest.raises(MotionBusyError) as api,
+    ):
+        valve.autotune()
+    assert str(api.value) == (
+        "the autotune cannot start while the setpoint generator runs on this valve: "
+        "stop the setpoint generator first; nothing was started"
+    )
+    _online(qtbot, connection, 7332)
+    connection.start_generator(GeneratorSettings(Waveform.SQUARE, 10.0, 0.0, 0.5))
+    runner = ValveRunner(connection)
+    settings = autotune.AutotuneSettings()
+    with qtbot.waitSignal(runner.failed, timeout=TIMEOUT) as failed:
+        runner.run("autotune", lambda rig: autotune.run(rig, settings))
+    assert failed.args == ["autotune", str(api.value)]
+    connection.stop_generator()
+
+
+@pytest.mark.slow  # three autotune runs (about 40 s)
+def test_an_autotune_gives_the_same_result_and_record_at_every_door(
+    qtbot, connection, capsys, tmp_path
+):
+    from prm9tool.service import autotune
+    from prm9tool.views.history.notes import record_tuning_run
+
+    with prm9tool.connect(f"emulator:{E02}:7333") as valve:  # the API
+        api = valve.autotune()
+    assert main(["--autotune", "--emulator", f"{E02}:7334", "--json"]) == 0  # the command line
+    cli = json.loads(capsys.readouterr().out)
+    connection.set_recorder(Recorder())
+    _online(qtbot, connection, 7335)  # the GUI's worker, as the Tuning window runs it
+    runner = ValveRunner(connection)
+    with qtbot.waitSignal(runner.finished, timeout=120_000) as finished:
+        runner.run("autotune", lambda rig: autotune.run(rig, autotune.AutotuneSettings()))
+    gui = autotune.AutotuneOutcome(finished.args[1])
+    record_tuning_run(connection, "autotune", finished.args[1])  # as the window does
+
+    for outcome in (api.to_dict(), cli, gui.to_dict()):
+        assert outcome["outcome"] == "proposed" and outcome["passes"] and not outcome["applied"]
+        assert outcome["loop"] == "position" and outcome["method"] == "model"
+        assert set(outcome["proposed"]) == {"POSKP", "POSKI", "POSKD", "POST1"}
+    assert set(api.to_dict()) == set(cli) == set(gui.to_dict())
+    qtbot.waitUntil(lambda: _history(7335) == [("autotune", "proposed")], timeout=TIMEOUT)
+    assert _history(7333) == _history(7334) == [("autotune", "proposed")]
+    records = [prm9tool.history.records(s)[-1]["details"] for s in (7333, 7334, 7335)]
+    shapes = [set(r) - {"command"} for r in records]
+    assert shapes[0] == shapes[1] == shapes[2] == set(cli) - {"outcome", "verdict"}
+    for record, outcome in zip(records, (api.to_dict(), cli, gui.to_dict()), strict=True):
+        assert record["proposed"] == outcome["proposed"]
