@@ -8,6 +8,7 @@ import json
 
 import pytest
 from support.gui_support import E02, E02_CA, emulator_connection
+from support.waiting import wait_for
 
 import prm9tool
 from prm9tool.cli.main import main
@@ -212,6 +213,20 @@ def test_a_refused_write_has_the_same_words_over_canopen(qtbot, tmp_path, reques
         rig.close()
 
 
+LSS_TIMEOUT = 90_000  # a Fastscan, the checks of a node ID and the boot at it (busy PC)
+
+
+def _lss_job(qtbot, lss, done, start):
+    """The result of an LSS job of the CAN bus window's adapter (fails with its words)."""
+    got, failed = [], []
+    done.connect(got.append)
+    lss.failed.connect(lambda _job, why: failed.append(why))
+    start()
+    qtbot.waitUntil(lambda: bool(got or failed), timeout=LSS_TIMEOUT)
+    assert not failed, failed
+    return got[0]
+
+
 @pytest.mark.slow  # three buses of LSS searches (about 20 s)
 def test_lss_is_one_operation_at_every_door(qtbot, request, capsys):
     # cli/lss.py, online/lss_commissioning.py and prm9tool.lss_* are the service's LSS
@@ -232,17 +247,16 @@ def test_lss_is_one_operation_at_every_door(qtbot, request, capsys):
         api_found = prm9tool.lss_scan(**bus)
         assert main(["--lss-scan", "--json", *cli_bus]) == 0
         cli_found = json.loads(capsys.readouterr().out)
-        with qtbot.waitSignal(lss.scanned, timeout=TIMEOUT) as scanned:
-            lss.scan(gui_bus)
+        scanned = _lss_job(qtbot, lss, lss.scanned, lambda: lss.scan(gui_bus))
         assert [d.to_dict() for d in api_found] == cli_found
-        assert scanned.args[0] == api_found and {d.serial for d in api_found} == {4711, 4712, 4713}
+        assert scanned == api_found and {d.serial for d in api_found} == {4711, 4712, 4713}
 
         # the same refusal: node 10 answers already
         with pytest.raises(prm9tool.CommunicationError) as api:
             prm9tool.lss_assign({4711: 10}, **bus)
         assert main(["--lss-assign", "4711=10", *cli_bus]) == 2
         cli = capsys.readouterr().err
-        with qtbot.waitSignal(lss.failed, timeout=TIMEOUT) as failed:
+        with qtbot.waitSignal(lss.failed, timeout=LSS_TIMEOUT) as failed:
             lss.assign(gui_bus, api_found[0], 10)
         assert str(api.value).startswith("node ID 10 is taken: serial 4700 answers there")
         assert cli == f"prm9tool: {api.value}\n" and str(api.value) in failed.args[1]
@@ -253,9 +267,8 @@ def test_lss_is_one_operation_at_every_door(qtbot, request, capsys):
         assert main(["--lss-assign", "4712=22", *cli_bus]) == 0
         assert capsys.readouterr().out == "serial 4712: node 22, stored; it answers as can:22\n"
         device = next(d for d in api_found if d.serial == 4713)
-        with qtbot.waitSignal(lss.assigned, timeout=TIMEOUT) as assigned:
-            lss.assign(gui_bus, device, 23)
-        assert assigned.args[0].device_id == "can:23"
+        assigned = _lss_job(qtbot, lss, lss.assigned, lambda: lss.assign(gui_bus, device, 23))
+        assert assigned.device_id == "can:23"
         nodes = {v.firmware.nv.lss.get("node_id") for v in rig.valves[1:]}
         assert nodes == {21, 22, 23}
     finally:
@@ -317,3 +330,124 @@ def test_an_autotune_gives_the_same_result_and_record_at_every_door(
     assert shapes[0] == shapes[1] == shapes[2] == set(cli) - {"outcome", "verdict"}
     for record, outcome in zip(records, (api.to_dict(), cli, gui.to_dict()), strict=True):
         assert record["proposed"] == outcome["proposed"]
+
+
+def _gui_job(qtbot, connection, start, tag, timeout=TIMEOUT):
+    """Start a job of the GUI's worker and return its result (operation_finished(tag, …))."""
+    with qtbot.waitSignal(
+        connection.operation_finished, timeout=timeout, check_params_cb=lambda n, _r: n == tag
+    ) as done:
+        start()
+    return done.args[1]
+
+
+def test_download_store_factory_values_and_restart_are_the_same_at_every_door(
+    qtbot, connection, capsys, tmp_path
+):
+    from prm9tool.files.prmfile import read_file
+
+    with prm9tool.connect(f"emulator:{E02}:7341") as valve:  # the API
+        api_values = dict(valve.download().raw)
+        valve["LIMTA"] = 1700
+        valve.store()
+        valve.restore_factory(backup=False)
+        valve.restart(confirm_hydraulics_off=True)
+        api_after = dict(valve.download().raw)
+    out = tmp_path / "7342.prm"  # the command line
+    assert main(["--batch", "--download", str(out), "--emulator", f"{E02}:7342"]) == 0
+    cli_values = dict(read_file(out).values)
+    assert main(["--emulator", f"{E02}:7342", "--set", "LIMTA=1700", "--store"]) == 0
+    capsys.readouterr()
+    connection.set_recorder(Recorder())
+    _online(qtbot, connection, 7343)  # the GUI's worker
+    gui_values = _gui_job(qtbot, connection, connection.download, "download")
+    connection.write("LIMTA", 1700)
+    _gui_job(qtbot, connection, connection.store_valve, "store")
+    _gui_job(qtbot, connection, lambda: connection.factory_reset("factory"), "factory")
+    gui_after = _gui_job(qtbot, connection, lambda: connection.restart_valve("restart"), "restart")
+
+    assert api_values == cli_values == dict(gui_values)  # the same set, read three ways
+    assert api_after == dict(gui_after) == api_values and api_after["LIMTA"] == 2400
+    stores = {s: [r for r in prm9tool.history.records(s) if r["operation"] == "store"]
+              for s in (7341, 7342, 7343)}  # fmt: skip
+    assert [len(found) for found in stores.values()] == [1, 1, 1]
+    assert {json.loads(_parameters(found[0]["id"]))["LIMTA"] for found in stores.values()} == {1700}
+    # the service records the factory reset and the restart at both doors
+    api_records, gui_records = (
+        [
+            r
+            for r in prm9tool.history.records(serial)
+            if r["operation"] in ("restore-factory", "restart")
+        ]
+        for serial in (7341, 7343)
+    )
+    assert [r["operation"] for r in api_records] == ["restore-factory", "restart"]
+    assert [r["operation"] for r in gui_records] == ["restore-factory", "restart"]
+    assert set(api_records[0]["details"]) - {"command"} == set(gui_records[0]["details"])
+
+
+def test_a_diff_against_a_file_is_the_same_in_the_api_and_on_the_command_line(capsys, tmp_path):
+    from prm9tool.compare.export import as_json
+
+    with prm9tool.connect(f"emulator:{E02}:7351", record_history=False) as valve:
+        wanted = valve.download()
+    path = tmp_path / "set.prm"
+    write_file(PrmContents(wanted.type_key, {**wanted.raw, "LIMTA": 1700}), path, backup=False)
+    with prm9tool.connect(f"emulator:{E02}:7352", record_history=False) as valve:
+        api = as_json(prm9tool.diff(path, valve))
+    assert main(["--diff", str(path), "--emulator", f"{E02}:7353", "--json"]) == 1
+    cli = json.loads(capsys.readouterr().out)
+    changed = lambda report: [r["mnemonic"] for r in report["differences"]]  # noqa: E731
+    assert changed(api) == changed(cli) == ["LIMTA"]
+
+
+def _gui_status(qtbot, connection):
+    got = []
+    connection.run("status", lambda s: connection.service(s).status(), got.append)
+    qtbot.waitUntil(lambda: bool(got), timeout=TIMEOUT)
+    return got[0]
+
+
+def test_commissioning_a_ca_valve_gives_the_same_state_in_the_api_and_the_gui(qtbot, connection):
+    # a -CA valve as delivered waits for its master: NMT start, then the enable sequence
+    # (manual §7.2, §7.4), through the valve service at both doors
+    from prm9tool.catalogue.commissioning import NmtCommand
+    from prm9tool.online.valve_control import ValveControl
+
+    with prm9tool.connect(f"emulator:{E02_CA}:7361", record_history=False) as valve:
+        before = str(valve.wait_booted().device_state)
+        valve.nmt("start")
+        valve.enable()
+        api = valve.status()
+    _online(qtbot, connection, 7362, E02_CA)
+    booted = []  # the valve boots about 2 s after power-up (manual §1.5): a job waits for it
+    connection.run("boot", lambda s: wait_for(lambda: not s.status().booting, 10), booted.append)
+    qtbot.waitUntil(lambda: bool(booted), timeout=TIMEOUT)
+    control = ValveControl(connection)
+    said = []
+    connection.failed.connect(said.append)
+    control.nmt(NmtCommand.START)
+    control.enable()
+    gui = _gui_status(qtbot, connection)  # the worker runs its jobs in order
+    assert gui.device_state == api.device_state, said
+    assert before == "INIT" and str(api.device_state) == "DEVICE_MODE_ACTIVE"
+    assert str(gui.nmt_state) == str(api.nmt_state) == "operational"
+
+
+def test_the_dcf_export_is_the_same_file_at_every_door(qtbot, capsys, tmp_path):
+    from prm9tool.model.document import ParameterDocument
+    from prm9tool.views.files.dcf_export import DcfExport
+
+    with prm9tool.connect(f"emulator:{E02_CA}:7371", record_history=False) as valve:
+        assert valve.export_dcf(tmp_path / "api.dcf") == valve.export_dcf(tmp_path / "api.dcf")
+        values = valve.download().raw
+    args = ["--emulator", f"{E02_CA}:7372", "--export-dcf", str(tmp_path / "cli.dcf")]
+    assert main(args) == 0
+    assert capsys.readouterr().out.startswith(f"DCF saved as {tmp_path / 'cli.dcf'} (node ")
+    doc = ParameterDocument(E02_CA)  # the window's File → Export DCF writes the document
+    doc.set_values(dict(values), "online")
+    assert DcfExport(doc, None).export(tmp_path / "gui.dcf")
+    texts = [
+        (tmp_path / f"{door}.dcf").read_text(encoding="utf-8") for door in ("api", "cli", "gui")
+    ]
+    assert texts[0] == texts[1] == texts[2]

@@ -277,28 +277,45 @@ class ValveService:
             self.history.add(self.session, "restore-factory", "ok", None, details)
         return path
 
-    def restart(self) -> None:
+    def restart(self, command: str | None = None) -> None:
         """Restart the valve's electronics and reconnect (the caller confirmed that the
-        hydraulics are off: the spool moves to its rest position while it boots)."""
+        hydraulics are off: the spool moves to its rest position while it boots); recorded
+        (``restart``, without a parameter set; ``command``: what ran it)."""
+        self._restart()
+        self._record_restart(None, command)
+
+    def _restart(self) -> None:
         self.session.restart()
         self._stopped = False  # it boots into pre-operational
 
-    def restart_and_read(self) -> dict[str, Value]:
-        """:meth:`restart`, then read the stored parameters the valve runs with now."""
-        self.restart()
-        return dict(self.session.download())
+    def _record_restart(self, values: Mapping[str, Value] | None, command: str | None) -> None:
+        if self.history is not None:
+            details: Details = {"command": command} if command else {}
+            self.history.add(self.session, "restart", "ok", values, details)
+
+    def restart_and_read(self, command: str | None = None) -> dict[str, Value]:
+        """:meth:`restart`, then read the stored parameters the valve runs with now; recorded
+        with them (the window's Restart valve)."""
+        self._restart()
+        values = dict(self.session.download())
+        self._record_restart(values, command)
+        return values
 
     def factory_reset_and_read(self) -> tuple[dict[str, Value], Path | None]:
         """The window's Restore factory values online: the backup (as before the first
         upload), the reset, the restart that makes it effective (hydraulics confirmed off),
         and the factory set read back; returns it and the new backup file (None: it had
-        one). The caller records it with the set read back."""
+        one); recorded with the set read back (the record of :meth:`restore_factory`)."""
         from prm9tool.files.backup import ensure_backup  # *.prm writing, only when needed
 
         path = ensure_backup(self.session)
         self.session.restore_factory()
-        self.session.restart()
-        return dict(self.session.download()), path
+        self._restart()
+        values = dict(self.session.download())
+        if self.history is not None:
+            details: Details = {"backup": None if path is None else str(path)}
+            self.history.add(self.session, "restore-factory", "ok", values, details)
+        return values, path
 
     # --- motion ---------------------------------------------------------------------------
     def characterize(
