@@ -451,3 +451,31 @@ def test_the_dcf_export_is_the_same_file_at_every_door(qtbot, capsys, tmp_path):
         (tmp_path / f"{door}.dcf").read_text(encoding="utf-8") for door in ("api", "cli", "gui")
     ]
     assert texts[0] == texts[1] == texts[2]
+
+
+@pytest.mark.parametrize("od", ["full", "manual"])
+def test_a_download_over_canopen_is_the_same_set_at_every_door(qtbot, tmp_path, request, od):
+    # the CAN valve, also the one with only the objects the manual lists (no type-key object)
+    from support.can_link_rig import E04, make_link_rig
+    from support.reconnect_links import can_connection
+
+    from prm9tool.files.prmfile import read_file
+
+    rig = make_link_rig(request.node.name, tmp_path, E04, od=od)
+    bus = {"can_interface": "virtual", "can_channel": rig.options.channel}
+    cli_bus = ["--can-interface", "virtual", "--can-channel", rig.options.channel]
+    connection = can_connection(rig)
+    try:
+        with prm9tool.connect("can:10", type_key=E04, **bus) as valve:
+            api = dict(valve.download().raw)
+        out = tmp_path / "can10.prm"
+        args = ["--batch", "--download", str(out), "--device", "can:10", *cli_bus]
+        assert main([*args, "--type-key", E04]) == 0
+        assert dict(read_file(out).values) == api
+        if od == "full":  # the window asks for a manual-only valve's type key first
+            with qtbot.waitSignal(connection.online_changed, timeout=TIMEOUT):
+                connection.go_online("can:10")
+            assert dict(_gui_job(qtbot, connection, connection.download, "download")) == api
+    finally:
+        connection.shutdown()
+        rig.close()
