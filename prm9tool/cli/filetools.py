@@ -40,9 +40,8 @@ def write_stdout(data: bytes) -> None:
 
 
 def run(args: argparse.Namespace) -> int:
-    """Run ``--new`` or ``--check`` as given in ``args``; returns the exit code."""
-    if args.new is not None and args.check is not None:
-        return _usage("use --new and --check one at a time")
+    """Run ``--new`` or ``--check`` as given in ``args`` (argparse refuses both together);
+    returns the exit code."""
     if args.new is not None:
         return new_file(args.new, args.output)
     return check(args.check)

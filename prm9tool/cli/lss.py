@@ -30,7 +30,8 @@ def lss_problem(args: argparse.Namespace) -> str | None:
               "--characterize": args.characterize, "--device": args.device,
               "--emulator": args.emulator, "--all": args.all, "--type-key": args.type_key,
               "--node-id": args.node_id}  # fmt: skip
-    clash = given[1:] + [flag for flag, value in others.items() if value]
+    # two LSS commands together: argparse refuses them (a mutually exclusive group)
+    clash = [flag for flag, value in others.items() if value]
     if clash:
         return f"{given[0]} and {clash[0]} are separate commands: use one at a time"
     if args.json is not None and given[0] != "--lss-scan":

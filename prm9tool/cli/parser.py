@@ -94,7 +94,8 @@ def add_device_options(parser: argparse.ArgumentParser) -> None:
         help="with --serve-emulator: node ID 1-127 of the valve named at the same position, "
         "or 'lss': node-ID switch at 1, no node ID until an LSS master gives one",
     )
-    lss = parser.add_argument_group("valves without a node ID: LSS, CiA 305 (no GUI)")
+    lss_group = parser.add_argument_group("valves without a node ID: LSS, CiA 305 (no GUI)")
+    lss = lss_group.add_mutually_exclusive_group()  # one LSS command at a time (argparse says so)
     lss.add_argument(
         "--lss-scan",
         action="store_true",
@@ -136,11 +137,12 @@ def build_parser() -> argparse.ArgumentParser:
     parser.add_argument("file", nargs="?", help="*.prm file to open in the GUI")
     parser.add_argument("--version", action="store_true", help="print the version and exit")
     files = parser.add_argument_group("offline file tools (no GUI)")
-    files.add_argument(
+    tool = files.add_mutually_exclusive_group()  # one file tool at a time
+    tool.add_argument(
         "--new", metavar="TYPEKEY", help="write the factory defaults for TYPEKEY to the -o file"
     )
-    files.add_argument("--check", metavar="FILE.prm", help="validate a *.prm file")
-    files.add_argument("--export-eds", metavar="TYPEKEY", help="write a CiA 306 EDS for TYPEKEY")
+    tool.add_argument("--check", metavar="FILE.prm", help="validate a *.prm file")
+    tool.add_argument("--export-eds", metavar="TYPEKEY", help="write a CiA 306 EDS for TYPEKEY")
     files.add_argument(
         "-o",
         "--output",
@@ -175,7 +177,8 @@ def build_parser() -> argparse.ArgumentParser:
         "--dry-run", action="store_true", help="with --batch: check everything, write nothing"
     )
     eol = parser.add_argument_group("end-of-line test (no GUI; docs/tuning.md)")
-    eol.add_argument(
+    test = eol.add_mutually_exclusive_group()  # one test of a valve at a time
+    test.add_argument(
         "--characterize",
         action="store_true",
         help="step responses, Bode and static characteristic of one valve (--report OUT.pdf)",
@@ -193,7 +196,7 @@ def build_parser() -> argparse.ArgumentParser:
         "--hydraulics-safe", action="store_true",
         help="with --enable: the hydraulics are safe for the test to move the spool",
     )  # fmt: skip
-    eol.add_argument(
+    test.add_argument(
         "--autotune", nargs="?", const="position", choices=("position", "process"),
         metavar="LOOP",
         help="the Tuning window's autotune of the one valve of --device/--emulator (LOOP: "
@@ -205,7 +208,7 @@ def build_parser() -> argparse.ArgumentParser:
         help="with --autotune: write the proposed gains and store them (only a proposal that "
         "passes the profile and rests on a trustworthy model)",
     )  # fmt: skip
-    eol.add_argument(
+    test.add_argument(
         "--fit-twin", metavar="OUT.toml",
         help="fit the valve's twin (plant constants, docs/twin.md) from --from RUN.json, or "
         "characterize the one valve of --device/--emulator (--profile) and fit from that run; "

@@ -1,5 +1,11 @@
 """Which combinations of command-line options make sense: checked before anything runs, so an
-option that would be ignored is an error, not a surprise."""
+option that would be ignored is an error, not a surprise.
+
+Where argparse can say it, the parser does (``cli/parser.py``: mutually exclusive groups for
+the LSS commands, the file tools and the tests of a valve — ``--characterize``,
+``--autotune``, ``--fit-twin`` —, ``choices`` for ``--autotune LOOP``); the checks here are
+the ones argparse cannot express (an option that belongs to a command in another group, a
+command with a device it cannot take)."""
 
 from __future__ import annotations
 
@@ -115,8 +121,8 @@ def _fit_twin_problem(args: argparse.Namespace) -> str | None:
         others = [
             flag
             for flag, given in (
-                ("--characterize", args.characterize), ("--batch", args.batch is not None),
-                ("--list-devices", args.list_devices), (f"file {args.file}", args.file),
+                ("--batch", args.batch is not None), ("--list-devices", args.list_devices),
+                (f"file {args.file}", args.file),
             )
             if given
         ]  # fmt: skip
@@ -128,8 +134,7 @@ def _fit_twin_problem(args: argparse.Namespace) -> str | None:
     others = [
         flag
         for flag, given in (
-            ("--characterize", args.characterize), ("--device", args.device),
-            ("--emulator", args.emulator), ("--batch", args.batch is not None),
+            ("--device", args.device), ("--emulator", args.emulator), ("--batch", args.batch is not None),
             ("--list-devices", args.list_devices), ("--profile", args.profile),
             ("--enable", args.enable), (f"file {args.file}", args.file),
         )
@@ -200,8 +205,6 @@ def _characterize_problem(args: argparse.Namespace) -> str | None:
               if dest != "report" and getattr(args, dest) not in (None, False)]  # fmt: skip
     if args.batch is not None or args.list_devices:
         others.insert(0, "--batch" if args.batch is not None else "--list-devices")
-    if args.characterize and args.autotune is not None:
-        others.insert(0, "--autotune")
     if others:
         return f"{command} and {others[0]} are separate commands: use one at a time"
     if args.file:
