@@ -479,3 +479,24 @@ def test_a_download_over_canopen_is_the_same_set_at_every_door(qtbot, tmp_path, 
     finally:
         connection.shutdown()
         rig.close()
+
+
+def test_the_eds_export_is_the_same_file_in_the_api_and_on_the_command_line(tmp_path):
+    # the window has no EDS export (File → Export DCF writes the valve's configuration)
+    with prm9tool.connect(f"emulator:{E02_CA}:7381", record_history=False) as valve:
+        valve.export_eds(tmp_path / "api.eds")
+    args = ["--export-eds", E02_CA, "-o", str(tmp_path / "cli.eds")]
+    assert main(args) == 0
+    # the same file but its creation time (CiA 306 [FileInfo], the minute it was written)
+    texts = [
+        [line for line in (tmp_path / f"{door}.eds").read_bytes().split(b"\r\n")
+         if not line.startswith((b"CreationTime=", b"CreationDate="))]
+        for door in ("api", "cli")
+    ]  # fmt: skip
+    assert texts[0] == texts[1] and b"[DeviceInfo]" in texts[0]
+    with (
+        prm9tool.connect(f"emulator:{E02}:7382", record_history=False) as valve,
+        pytest.raises(prm9tool.TypeKeyError) as api,
+    ):
+        valve.export_eds(tmp_path / "no.eds")
+    assert str(api.value).startswith(f"{E02} has no CANopen interface")

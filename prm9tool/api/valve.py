@@ -338,6 +338,13 @@ class Valve:
         with ``prm9tool.connect(f"emulator:twin:{path}")``."""
         return self._service.fit_twin(path, profile, progress)
 
+    def export_eds(self, path: str | os.PathLike[str]) -> None:
+        """Write the CiA 306 EDS of this valve's type (what ``--export-eds TYPEKEY -o
+        FILE.eds`` writes); a valve without CANopen is a TypeKeyError."""
+        from prm9tool.service.export import write_eds
+
+        write_eds(path, self.info.type_key)
+
     def export_dcf(self, path: str | os.PathLike[str]) -> int:
         """Write the valve's CiA 306 DCF (its working values, the node ID and bit rate it runs
         with after power-up), as the window's File → Export DCF and ``--export-dcf`` do;
