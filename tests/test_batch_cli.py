@@ -453,6 +453,10 @@ def gui(monkeypatch):
         (["--new", E04, "--check", "x.prm"], "argument --check: not allowed with argument --new"),
         (["--autotune", "sideways", "--emulator"], "argument --autotune: invalid choice"),
         (["--apply", "--emulator"], "--apply belongs to --autotune"),
+        (["--diff", "a.prm", "b.prm", "--history", "5"],
+         "argument --history: not allowed with argument --diff"),
+        (["--history-check", "--history-import"],
+         "argument --history-import: not allowed with argument --history-check"),
     ],
 )  # fmt: skip
 def test_options_that_do_not_fit_the_command_exit_2(gui, capsys, argv, named):

@@ -246,23 +246,24 @@ def build_parser() -> argparse.ArgumentParser:
 def add_history_options(parser: argparse.ArgumentParser) -> None:
     """``--diff`` and the history commands (docs/history.md)."""
     group = parser.add_argument_group("compare and history (no GUI)")
-    group.add_argument(
+    command = group.add_mutually_exclusive_group()  # --diff or one history command
+    command.add_argument(
         "--diff", nargs="+", metavar="FILE.prm",
         help="compare two *.prm files, or one with the valve of --device/--emulator",
     )  # fmt: skip
     group.add_argument(
         "--json", nargs="?", const=True, metavar="OUT.json",
-        help="with --diff, --history, --get/--set, --list-devices, --decode, --replay: print "
-        "JSON; with --characterize, --decode, --replay: the JSON report file",
+        help="with --diff, --history, --get/--set, --list-devices, --decode, --replay, "
+        "--autotune: print JSON; with --characterize, --decode, --replay: the JSON report file",
     )  # fmt: skip
-    group.add_argument("--history", metavar="SERIAL", help="list the history of a valve")
-    group.add_argument(
+    command.add_argument("--history", metavar="SERIAL", help="list the history of a valve")
+    command.add_argument(
         "--history-check", action="store_true", help="verify every valve's hash chain"
     )
-    group.add_argument(
+    command.add_argument(
         "--history-export", type=int, metavar="ID", help="write record ID to -o FILE.prm/.csv"
     )
-    group.add_argument(
+    command.add_argument(
         "--history-import", action="store_true", help="import the old backup files once"
     )
     group.add_argument(

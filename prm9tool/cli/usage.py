@@ -2,8 +2,8 @@
 option that would be ignored is an error, not a surprise.
 
 Where argparse can say it, the parser does (``cli/parser.py``: mutually exclusive groups for
-the LSS commands, the file tools and the tests of a valve — ``--characterize``,
-``--autotune``, ``--fit-twin`` —, ``choices`` for ``--autotune LOOP``); the checks here are
+the LSS commands, the file tools, the tests of a valve — ``--characterize``,
+``--autotune``, ``--fit-twin`` — and ``--diff`` with the history commands, ``choices`` for ``--autotune LOOP``); the checks here are
 the ones argparse cannot express (an option that belongs to a command in another group, a
 command with a device it cannot take)."""
 
@@ -225,12 +225,12 @@ def _compare_history_problem(args: argparse.Namespace) -> str | None:
     commands = history + (["--diff"] if args.diff else [])
     others = [flag for flag, dest in FILE_TOOLS.items() if getattr(args, dest) is not None]
     others += ["--batch"] * (args.batch is not None) + ["--list-devices"] * args.list_devices
-    if len(commands) > 1 or (commands and others):
-        return f"{commands[0]} and {(commands[1:] + others)[0]} are separate commands: use one at a time"
+    if commands and others:  # two of them together: argparse refuses (one exclusive group)
+        return f"{commands[0]} and {others[0]} are separate commands: use one at a time"
     if args.json and commands not in (["--diff"], ["--history"]) and not args.list_devices:
         return (
             "--json [OUT.json] belongs to --diff, --history, --get/--set, --list-devices, "
-            "--lss-scan and --characterize"
+            "--lss-scan, --characterize and --autotune"
         )
     if args.history_unreachable and args.batch is None:
         return "--history-unreachable belongs to the headless production mode (--batch)"
