@@ -17,7 +17,8 @@ EXIT_CODE_TEXT = {
     ExitCode.TYPE_MISMATCH: "the file's type key does not fit the valve",
     ExitCode.COMMUNICATION: "communication error (valve gone, timeout, backup not written)",
     ExitCode.HISTORY: "the history database cannot be used (nothing uploaded with 'refuse')",
-    ExitCode.OUT_OF_LIMITS: "--characterize: a figure is outside the acceptance profile's limits",
+    ExitCode.OUT_OF_LIMITS: "--characterize: a figure is outside the acceptance profile's limits; "
+    "--autotune: the proposal fails it",
 }
 DIFF_EXIT_TEXT = "--diff: 0 equal, 1 they differ, 3 invalid file, 4 no such valve"
 
