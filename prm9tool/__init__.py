@@ -46,8 +46,11 @@ __all__ = [
     "api",
     "connect",
     "diff",
+    "find_bitrate",
     "history",
     "list_devices",
+    "lss_assign",
+    "lss_scan",
     "read_prm",
     "write_prm",
 ]

@@ -69,7 +69,16 @@ from prm9tool.api import (
     diff as diff,
 )
 from prm9tool.api import (
+    find_bitrate as find_bitrate,
+)
+from prm9tool.api import (
     list_devices as list_devices,
+)
+from prm9tool.api import (
+    lss_assign as lss_assign,
+)
+from prm9tool.api import (
+    lss_scan as lss_scan,
 )
 from prm9tool.api import (
     read_prm as read_prm,

@@ -59,7 +59,7 @@ def test_every_python_block_runs(tmp_path, monkeypatch):
     history = [line.split()[1:] for line in shown[-7:]]
     assert history == [
         [operation, "ok", "python", "API"]
-        for operation in ("download", "backup", "upload", "download", "store", "restore-factory")
+        for operation in ("backup", "upload", "download", "store", "restore-factory", "restart")
     ] + [["characterization", "passed", "python", "API"]]  # the end-of-line test is recorded
 
 

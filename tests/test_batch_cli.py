@@ -445,8 +445,20 @@ def gui(monkeypatch):
         (["--batch", "x.prm", "y.prm"], "y.prm"),
         (["--batch", "--download", "out.prm", "-o", "o.prm"], "-o/--output"),
         (["--batch", "x.prm", "--check", "x.prm"], "--check"),
+        # issue 28: where argparse can say it, it does (mutually exclusive groups, choices)
+        (["--lss-scan", "--find-bitrate", "--can-interface", "virtual"],
+         "argument --find-bitrate: not allowed with argument --lss-scan"),
+        (["--characterize", "--autotune", "--emulator"],
+         "argument --autotune: not allowed with argument --characterize"),
+        (["--new", E04, "--check", "x.prm"], "argument --check: not allowed with argument --new"),
+        (["--autotune", "sideways", "--emulator"], "argument --autotune: invalid choice"),
+        (["--apply", "--emulator"], "--apply belongs to --autotune"),
+        (["--diff", "a.prm", "b.prm", "--history", "5"],
+         "argument --history: not allowed with argument --diff"),
+        (["--history-check", "--history-import"],
+         "argument --history-import: not allowed with argument --history-check"),
     ],
-)
+)  # fmt: skip
 def test_options_that_do_not_fit_the_command_exit_2(gui, capsys, argv, named):
     assert main(argv) == ExitCode.USAGE
     message = capsys.readouterr().err.splitlines()[-1]

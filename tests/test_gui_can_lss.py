@@ -111,8 +111,8 @@ def test_an_id_taken_behind_the_dialogs_back_is_refused_by_the_job(qtbot, dialog
     qtbot.waitUntil(lambda: panel.assign.isEnabled(), timeout=90000)
     assert panel.state.text() == (
         "Node ID assignment (LSS) did not complete. (node ID 15 is taken: serial 4800 answers "
-        "there. Choose a free node ID; nothing was changed)"
-    )
+        "there. Choose a free node ID; nothing was changed (free: 1, 2, 3, …))"
+    )  # the words of --lss-assign and prm9tool.lss_assign: one LSS service (issue 28)
     assert (rig.valves[1].node_id, rig.valves[1].firmware.nv.lss) == (0, {})
 
 

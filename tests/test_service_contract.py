@@ -4,8 +4,11 @@ the same result, the same words for the same refusal and the same history record
 
 from __future__ import annotations
 
+import json
+
 import pytest
-from support.gui_support import E02, emulator_connection
+from support.gui_support import E02, E02_CA, emulator_connection
+from support.waiting import wait_for
 
 import prm9tool
 from prm9tool.cli.main import main
@@ -18,6 +21,7 @@ from prm9tool.scope.generator import GeneratorSettings, Waveform
 from prm9tool.service.motion import MotionBusyError
 
 TIMEOUT = 15_000
+CAPPED_RANGE = "LIMTA: 99999 mA is outside the allowed range 0 … 2600 mA"
 
 
 @pytest.fixture
@@ -28,8 +32,8 @@ def connection(qtbot):
     emulated_valves.forget_emulated_valves()
 
 
-def _online(qtbot, connection, serial):
-    entry = factory.list_devices([f"{E02}:{serial}"])[-1]
+def _online(qtbot, connection, serial, type_key=E02):
+    entry = factory.list_devices([f"{type_key}:{serial}"])[-1]
     with qtbot.waitSignals([connection.online_changed, connection.device_changed], timeout=TIMEOUT):
         connection.go_online(entry)
 
@@ -58,7 +62,8 @@ def _cli_refusal(capsys, serial, assignment):
     ("mnemonic", "value", "words", "kind"),
     [
         ("CURNORM", 1000, "CURNORM: the parameter is read-only", AccessDeniedError),
-        ("LIMTA", 99999, "LIMTA: 99999 mA is outside", ValueRangeError),
+        # the range every editor shows: 0 … CURNORM (2600 mA on this valve), not 0 … 4000 mA
+        ("LIMTA", 99999, CAPPED_RANGE, ValueRangeError),
     ],
 )
 def test_a_refused_write_has_the_same_words_at_every_door(
@@ -72,6 +77,27 @@ def test_a_refused_write_has_the_same_words_at_every_door(
     assert words in _gui_refusal(qtbot, connection, mnemonic, value)
 
 
+def test_limta_beyond_its_cap_has_the_editors_words_at_every_door(qtbot, connection, capsys):
+    # the parameter editors (model/editing.py) and the block dialogs refuse LIMTA = 99999 mA
+    # with 0 … CURNORM; the command line, the API and the GUI's worker said 0 … 4000 mA
+    from prm9tool.model.access import AccessModel
+    from prm9tool.model.document import ParameterDocument
+    from prm9tool.model.editing import apply_edit
+
+    with prm9tool.connect(f"emulator:{E02_CA}:7306", record_history=False) as valve:
+        doc = ParameterDocument(E02_CA)  # the factory values, as the valve's
+        assert doc.value("CURNORM") == valve["CURNORM"] == 2600
+        with pytest.raises(ValueRangeError) as api:
+            valve.check({"LIMTA": 99999})
+    with pytest.raises(ValueRangeError) as editor:
+        apply_edit(doc, AccessModel(), "LIMTA", 99999)
+    assert str(api.value) == str(editor.value) == CAPPED_RANGE
+    assert main(["--emulator", f"{E02_CA}:7307", "--set", "LIMTA=99999"]) == 2
+    assert f"--set: {CAPPED_RANGE}; nothing was written" in capsys.readouterr().err
+    _online(qtbot, connection, 7308, E02_CA)
+    assert CAPPED_RANGE in _gui_refusal(qtbot, connection, "LIMTA", 99999)
+
+
 def test_not_a_number_has_the_same_words_in_the_api_and_on_the_command_line(capsys):
     api = _api_refusal(7304, "LIMTA", "abc")
     assert isinstance(api, ValueRangeError)
@@ -80,6 +106,14 @@ def test_not_a_number_has_the_same_words_in_the_api_and_on_the_command_line(caps
 
 def _history(serial):
     return [(r["operation"], r["outcome"]) for r in prm9tool.history.records(serial)]
+
+
+def _parameters(record_id):
+    recorder = Recorder()
+    try:
+        return recorder.store().record(record_id)["parameters"]
+    finally:
+        recorder.close()
 
 
 def test_an_upload_runs_the_same_sequence_at_every_door(qtbot, connection, tmp_path):
@@ -113,6 +147,13 @@ def test_an_upload_runs_the_same_sequence_at_every_door(qtbot, connection, tmp_p
     recorder.close()
     same = {"written", "chosen", "mismatches"}
     assert {k: api["details"][k] for k in same} == {k: gui["details"][k] for k in same}
+    # the batch's record has the upload's shape, with its batch context added (issue 28)
+    batch = prm9tool.history.records(7313)[-1]
+    assert set(batch["details"]) - set(api["details"]) == {"file", "verification"}
+    assert set(api["details"]) <= set(batch["details"])  # "command": "python API", "--batch"
+    assert {k: batch["details"][k] for k in same} == {k: api["details"][k] for k in same}
+    assert batch["details"]["file"] == str(path) and batch["details"]["command"] == "--batch"
+    assert _parameters(batch["id"]) == _parameters(api["id"])
 
 
 def test_a_characterization_refuses_while_a_generator_runs_in_the_api_and_the_gui(
@@ -170,3 +211,292 @@ def test_a_refused_write_has_the_same_words_over_canopen(qtbot, tmp_path, reques
     finally:
         connection.shutdown()
         rig.close()
+
+
+LSS_TIMEOUT = 90_000  # a Fastscan, the checks of a node ID and the boot at it (busy PC)
+
+
+def _lss_job(qtbot, lss, done, start):
+    """The result of an LSS job of the CAN bus window's adapter (fails with its words)."""
+    got, failed = [], []
+    done.connect(got.append)
+    lss.failed.connect(lambda _job, why: failed.append(why))
+    start()
+    qtbot.waitUntil(lambda: bool(got or failed), timeout=LSS_TIMEOUT)
+    assert not failed, failed
+    return got[0]
+
+
+@pytest.mark.slow  # three buses of LSS searches (about 20 s)
+def test_lss_is_one_operation_at_every_door(qtbot, request, capsys):
+    # cli/lss.py, online/lss_commissioning.py and prm9tool.lss_* are the service's LSS
+    from support.lss_rig import make_lss_rig
+
+    from prm9tool.online.lss_commissioning import LssCommissioning
+
+    rig = make_lss_rig(request.node.name)
+    try:
+        rig.add(4700, switches=(6, 2))  # node 10 by its switch
+        for serial in (4711, 4712, 4713):
+            rig.add(serial)  # switch 1: no node ID
+        bus = {"can_interface": "virtual", "can_channel": rig.options.channel}
+        cli_bus = ["--can-interface", "virtual", "--can-channel", rig.options.channel]
+        gui_bus = {"interface": "virtual", "channel": rig.options.channel}
+        lss = LssCommissioning()
+
+        api_found = prm9tool.lss_scan(**bus)
+        assert main(["--lss-scan", "--json", *cli_bus]) == 0
+        cli_found = json.loads(capsys.readouterr().out)
+        scanned = _lss_job(qtbot, lss, lss.scanned, lambda: lss.scan(gui_bus))
+        assert [d.to_dict() for d in api_found] == cli_found
+        assert scanned == api_found and {d.serial for d in api_found} == {4711, 4712, 4713}
+
+        # the same refusal: node 10 answers already
+        with pytest.raises(prm9tool.CommunicationError) as api:
+            prm9tool.lss_assign({4711: 10}, **bus)
+        assert main(["--lss-assign", "4711=10", *cli_bus]) == 2
+        cli = capsys.readouterr().err
+        with qtbot.waitSignal(lss.failed, timeout=LSS_TIMEOUT) as failed:
+            lss.assign(gui_bus, api_found[0], 10)
+        assert str(api.value).startswith("node ID 10 is taken: serial 4700 answers there")
+        assert cli == f"prm9tool: {api.value}\n" and str(api.value) in failed.args[1]
+
+        # the same result: stored, answering at the new node ID
+        (given,) = prm9tool.lss_assign({4711: 21}, **bus)
+        assert given.to_dict() == {"serial": 4711, "node_id": 21, "device": "can:21"}
+        assert main(["--lss-assign", "4712=22", *cli_bus]) == 0
+        assert capsys.readouterr().out == "serial 4712: node 22, stored; it answers as can:22\n"
+        device = next(d for d in api_found if d.serial == 4713)
+        assigned = _lss_job(qtbot, lss, lss.assigned, lambda: lss.assign(gui_bus, device, 23))
+        assert assigned.device_id == "can:23"
+        nodes = {v.firmware.nv.lss.get("node_id") for v in rig.valves[1:]}
+        assert nodes == {21, 22, 23}
+    finally:
+        rig.close()
+
+
+def test_an_autotune_refuses_while_a_generator_runs_in_the_api_and_the_gui(qtbot, connection):
+    from prm9tool.service import autotune
+
+    valve = prm9tool.connect(f"emulator:{E02}:7331", record_history=False)
+    with (
+        valve,
+        valve.generator("square", amplitude=10, period=0.5),
+        pytest.raises(MotionBusyError) as api,
+    ):
+        valve.autotune()
+    assert str(api.value) == (
+        "the autotune cannot start while the setpoint generator runs on this valve: "
+        "stop the setpoint generator first; nothing was started"
+    )
+    _online(qtbot, connection, 7332)
+    connection.start_generator(GeneratorSettings(Waveform.SQUARE, 10.0, 0.0, 0.5))
+    runner = ValveRunner(connection)
+    settings = autotune.AutotuneSettings()
+    with qtbot.waitSignal(runner.failed, timeout=TIMEOUT) as failed:
+        runner.run("autotune", lambda rig: autotune.run(rig, settings))
+    assert failed.args == ["autotune", str(api.value)]
+    connection.stop_generator()
+
+
+@pytest.mark.slow  # three autotune runs (about 40 s)
+def test_an_autotune_gives_the_same_result_and_record_at_every_door(
+    qtbot, connection, capsys, tmp_path
+):
+    from prm9tool.service import autotune
+    from prm9tool.views.history.notes import record_tuning_run
+
+    with prm9tool.connect(f"emulator:{E02}:7333") as valve:  # the API
+        api = valve.autotune()
+    assert main(["--autotune", "--emulator", f"{E02}:7334", "--json"]) == 0  # the command line
+    cli = json.loads(capsys.readouterr().out)
+    connection.set_recorder(Recorder())
+    _online(qtbot, connection, 7335)  # the GUI's worker, as the Tuning window runs it
+    runner = ValveRunner(connection)
+    with qtbot.waitSignal(runner.finished, timeout=120_000) as finished:
+        runner.run("autotune", lambda rig: autotune.run(rig, autotune.AutotuneSettings()))
+    gui = autotune.AutotuneOutcome(finished.args[1])
+    record_tuning_run(connection, "autotune", finished.args[1])  # as the window does
+
+    for outcome in (api.to_dict(), cli, gui.to_dict()):
+        assert outcome["outcome"] == "proposed" and outcome["passes"] and not outcome["applied"]
+        assert outcome["loop"] == "position" and outcome["method"] == "model"
+        assert set(outcome["proposed"]) == {"POSKP", "POSKI", "POSKD", "POST1"}
+    assert set(api.to_dict()) == set(cli) == set(gui.to_dict())
+    qtbot.waitUntil(lambda: _history(7335) == [("autotune", "proposed")], timeout=TIMEOUT)
+    assert _history(7333) == _history(7334) == [("autotune", "proposed")]
+    records = [prm9tool.history.records(s)[-1]["details"] for s in (7333, 7334, 7335)]
+    shapes = [set(r) - {"command"} for r in records]
+    assert shapes[0] == shapes[1] == shapes[2] == set(cli) - {"outcome", "verdict"}
+    for record, outcome in zip(records, (api.to_dict(), cli, gui.to_dict()), strict=True):
+        assert record["proposed"] == outcome["proposed"]
+
+
+def _gui_job(qtbot, connection, start, tag, timeout=TIMEOUT):
+    """Start a job of the GUI's worker and return its result (operation_finished(tag, …))."""
+    with qtbot.waitSignal(
+        connection.operation_finished, timeout=timeout, check_params_cb=lambda n, _r: n == tag
+    ) as done:
+        start()
+    return done.args[1]
+
+
+def test_download_store_factory_values_and_restart_are_the_same_at_every_door(
+    qtbot, connection, capsys, tmp_path
+):
+    from prm9tool.files.prmfile import read_file
+
+    with prm9tool.connect(f"emulator:{E02}:7341") as valve:  # the API
+        api_values = dict(valve.download().raw)
+        valve["LIMTA"] = 1700
+        valve.store()
+        valve.restore_factory(backup=False)
+        valve.restart(confirm_hydraulics_off=True)
+        api_after = dict(valve.download().raw)
+    out = tmp_path / "7342.prm"  # the command line
+    assert main(["--batch", "--download", str(out), "--emulator", f"{E02}:7342"]) == 0
+    cli_values = dict(read_file(out).values)
+    assert main(["--emulator", f"{E02}:7342", "--set", "LIMTA=1700", "--store"]) == 0
+    capsys.readouterr()
+    connection.set_recorder(Recorder())
+    _online(qtbot, connection, 7343)  # the GUI's worker
+    gui_values = _gui_job(qtbot, connection, connection.download, "download")
+    connection.write("LIMTA", 1700)
+    _gui_job(qtbot, connection, connection.store_valve, "store")
+    _gui_job(qtbot, connection, lambda: connection.factory_reset("factory"), "factory")
+    gui_after = _gui_job(qtbot, connection, lambda: connection.restart_valve("restart"), "restart")
+
+    assert api_values == cli_values == dict(gui_values)  # the same set, read three ways
+    assert api_after == dict(gui_after) == api_values and api_after["LIMTA"] == 2400
+    stores = {s: [r for r in prm9tool.history.records(s) if r["operation"] == "store"]
+              for s in (7341, 7342, 7343)}  # fmt: skip
+    assert [len(found) for found in stores.values()] == [1, 1, 1]
+    assert {json.loads(_parameters(found[0]["id"]))["LIMTA"] for found in stores.values()} == {1700}
+    # the service records the factory reset and the restart at both doors
+    api_records, gui_records = (
+        [
+            r
+            for r in prm9tool.history.records(serial)
+            if r["operation"] in ("restore-factory", "restart")
+        ]
+        for serial in (7341, 7343)
+    )
+    assert [r["operation"] for r in api_records] == ["restore-factory", "restart"]
+    assert [r["operation"] for r in gui_records] == ["restore-factory", "restart"]
+    assert set(api_records[0]["details"]) - {"command"} == set(gui_records[0]["details"])
+
+
+def test_a_diff_against_a_file_is_the_same_in_the_api_and_on_the_command_line(capsys, tmp_path):
+    from prm9tool.compare.export import as_json
+
+    with prm9tool.connect(f"emulator:{E02}:7351", record_history=False) as valve:
+        wanted = valve.download()
+    path = tmp_path / "set.prm"
+    write_file(PrmContents(wanted.type_key, {**wanted.raw, "LIMTA": 1700}), path, backup=False)
+    with prm9tool.connect(f"emulator:{E02}:7352", record_history=False) as valve:
+        api = as_json(prm9tool.diff(path, valve))
+    assert main(["--diff", str(path), "--emulator", f"{E02}:7353", "--json"]) == 1
+    cli = json.loads(capsys.readouterr().out)
+    changed = lambda report: [r["mnemonic"] for r in report["differences"]]  # noqa: E731
+    assert changed(api) == changed(cli) == ["LIMTA"]
+
+
+def _gui_status(qtbot, connection):
+    got = []
+    connection.run("status", lambda s: connection.service(s).status(), got.append)
+    qtbot.waitUntil(lambda: bool(got), timeout=TIMEOUT)
+    return got[0]
+
+
+def test_commissioning_a_ca_valve_gives_the_same_state_in_the_api_and_the_gui(qtbot, connection):
+    # a -CA valve as delivered waits for its master: NMT start, then the enable sequence
+    # (manual §7.2, §7.4), through the valve service at both doors
+    from prm9tool.catalogue.commissioning import NmtCommand
+    from prm9tool.online.valve_control import ValveControl
+
+    with prm9tool.connect(f"emulator:{E02_CA}:7361", record_history=False) as valve:
+        before = str(valve.wait_booted().device_state)
+        valve.nmt("start")
+        valve.enable()
+        api = valve.status()
+    _online(qtbot, connection, 7362, E02_CA)
+    booted = []  # the valve boots about 2 s after power-up (manual §1.5): a job waits for it
+    connection.run("boot", lambda s: wait_for(lambda: not s.status().booting, 10), booted.append)
+    qtbot.waitUntil(lambda: bool(booted), timeout=TIMEOUT)
+    control = ValveControl(connection)
+    said = []
+    connection.failed.connect(said.append)
+    control.nmt(NmtCommand.START)
+    control.enable()
+    gui = _gui_status(qtbot, connection)  # the worker runs its jobs in order
+    assert gui.device_state == api.device_state, said
+    assert before == "INIT" and str(api.device_state) == "DEVICE_MODE_ACTIVE"
+    assert str(gui.nmt_state) == str(api.nmt_state) == "operational"
+
+
+def test_the_dcf_export_is_the_same_file_at_every_door(qtbot, capsys, tmp_path):
+    from prm9tool.model.document import ParameterDocument
+    from prm9tool.views.files.dcf_export import DcfExport
+
+    with prm9tool.connect(f"emulator:{E02_CA}:7371", record_history=False) as valve:
+        assert valve.export_dcf(tmp_path / "api.dcf") == valve.export_dcf(tmp_path / "api.dcf")
+        values = valve.download().raw
+    args = ["--emulator", f"{E02_CA}:7372", "--export-dcf", str(tmp_path / "cli.dcf")]
+    assert main(args) == 0
+    assert capsys.readouterr().out.startswith(f"DCF saved as {tmp_path / 'cli.dcf'} (node ")
+    doc = ParameterDocument(E02_CA)  # the window's File → Export DCF writes the document
+    doc.set_values(dict(values), "online")
+    assert DcfExport(doc, None).export(tmp_path / "gui.dcf")
+    texts = [
+        (tmp_path / f"{door}.dcf").read_text(encoding="utf-8") for door in ("api", "cli", "gui")
+    ]
+    assert texts[0] == texts[1] == texts[2]
+
+
+@pytest.mark.parametrize("od", ["full", "manual"])
+def test_a_download_over_canopen_is_the_same_set_at_every_door(qtbot, tmp_path, request, od):
+    # the CAN valve, also the one with only the objects the manual lists (no type-key object)
+    from support.can_link_rig import E04, make_link_rig
+    from support.reconnect_links import can_connection
+
+    from prm9tool.files.prmfile import read_file
+
+    rig = make_link_rig(request.node.name, tmp_path, E04, od=od)
+    bus = {"can_interface": "virtual", "can_channel": rig.options.channel}
+    cli_bus = ["--can-interface", "virtual", "--can-channel", rig.options.channel]
+    connection = can_connection(rig)
+    try:
+        with prm9tool.connect("can:10", type_key=E04, **bus) as valve:
+            api = dict(valve.download().raw)
+        out = tmp_path / "can10.prm"
+        args = ["--batch", "--download", str(out), "--device", "can:10", *cli_bus]
+        assert main([*args, "--type-key", E04]) == 0
+        assert dict(read_file(out).values) == api
+        if od == "full":  # the window asks for a manual-only valve's type key first
+            with qtbot.waitSignal(connection.online_changed, timeout=TIMEOUT):
+                connection.go_online("can:10")
+            assert dict(_gui_job(qtbot, connection, connection.download, "download")) == api
+    finally:
+        connection.shutdown()
+        rig.close()
+
+
+def test_the_eds_export_is_the_same_file_in_the_api_and_on_the_command_line(tmp_path):
+    # the window has no EDS export (File → Export DCF writes the valve's configuration)
+    with prm9tool.connect(f"emulator:{E02_CA}:7381", record_history=False) as valve:
+        valve.export_eds(tmp_path / "api.eds")
+    args = ["--export-eds", E02_CA, "-o", str(tmp_path / "cli.eds")]
+    assert main(args) == 0
+    # the same file but its creation time (CiA 306 [FileInfo], the minute it was written)
+    texts = [
+        [line for line in (tmp_path / f"{door}.eds").read_bytes().split(b"\r\n")
+         if not line.startswith((b"CreationTime=", b"CreationDate="))]
+        for door in ("api", "cli")
+    ]  # fmt: skip
+    assert texts[0] == texts[1] and b"[DeviceInfo]" in texts[0]
+    with (
+        prm9tool.connect(f"emulator:{E02}:7382", record_history=False) as valve,
+        pytest.raises(prm9tool.TypeKeyError) as api,
+    ):
+        valve.export_eds(tmp_path / "no.eds")
+    assert str(api.value).startswith(f"{E02} has no CANopen interface")

@@ -46,7 +46,8 @@ def test_set_without_store_is_forgotten(tmp_path):
 def test_a_value_out_of_range_writes_nothing(tmp_path):
     done = run(tmp_path, "--emulator", VALVE, "--set", "DYNFREQ=120", "LIMTA=99999", "--store")
     assert done.returncode == ExitCode.USAGE
-    assert "LIMTA: 99999 mA is outside the allowed range 0 … 4000 mA; nothing was written" in (
+    # the range the editors show: 0 … CURNORM (2600 mA on this valve), not the catalogue's 4000
+    assert "LIMTA: 99999 mA is outside the allowed range 0 … 2600 mA; nothing was written" in (
         done.stderr
     )
     assert done.stdout == ""

@@ -13,6 +13,9 @@ if TYPE_CHECKING:
     from prm9tool.api.compare import diff as diff
     from prm9tool.api.devices import connect as connect
     from prm9tool.api.devices import list_devices as list_devices
+    from prm9tool.api.lss import find_bitrate as find_bitrate
+    from prm9tool.api.lss import lss_assign as lss_assign
+    from prm9tool.api.lss import lss_scan as lss_scan
     from prm9tool.api.measure import SetpointGenerator as SetpointGenerator
     from prm9tool.api.params import ParameterSet as ParameterSet
     from prm9tool.api.params import read_prm as read_prm
@@ -47,6 +50,9 @@ EXPORTS = {
     "write_prm": "prm9tool.api.params",
     "diff": "prm9tool.api.compare",
     "SetpointGenerator": "prm9tool.api.measure",
+    "lss_scan": "prm9tool.api.lss",
+    "lss_assign": "prm9tool.api.lss",
+    "find_bitrate": "prm9tool.api.lss",
     "SIGNALS": "prm9tool.catalogue.signals",
     "NmtCommand": "prm9tool.catalogue.commissioning",
     "DeviceInfo": "prm9tool.device.records",

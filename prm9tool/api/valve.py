@@ -32,6 +32,7 @@ if TYPE_CHECKING:
     from prm9tool.device.emulated import EmulatorControls
     from prm9tool.device.session import ValveSession
     from prm9tool.scope.generator import Waveform
+    from prm9tool.service.autotune import AutotuneOutcome
     from prm9tool.twin.fitvalve import ValveTwin
 
 log = logging.getLogger("prm9tool.api")
@@ -292,6 +293,38 @@ class Valve:
         Refused (MotionBusyError, nothing moved) while this valve's setpoint generator runs."""
         return self._service.characterize(profile, progress)
 
+    def autotune(
+        self,
+        loop: str = "position",
+        *,
+        method: str = "model",
+        overshoot_pct: float = 10.0,
+        settling_ms: float | None = None,
+        amplitude_pct: float | None = None,
+        limit_pct: float = 60.0,
+        profile: Profile | str | os.PathLike[str] | None = None,
+        apply: bool = False,
+        progress: Callable[[str], None] | None = None,
+    ) -> AutotuneOutcome:
+        """The Tuning window's autotune of ``loop`` (``position``; ``process`` on E04): steps
+        with the present gains, a plant model fitted, gains chosen for ``overshoot_pct`` and
+        ``settling_ms`` (``method="critical"``: P only with rising gain until the loop
+        oscillates, stopped at ±``limit_pct``), the proposal checked against the acceptance
+        profile. The valve's own gains are back afterwards; ``apply=True`` then writes the
+        proposed ones and stores them. Returns an AutotuneOutcome (``proposed``, ``passes``,
+        ``verdict()``, ``to_dict()``), recorded in the history as the window records it
+        (``autotune``). Moves the spool. Refused (MotionBusyError, nothing moved) while this
+        valve's setpoint generator runs; ValueError for a setting out of its range."""
+        from prm9tool.analysis.profile import Profile as ProfileType
+        from prm9tool.analysis.profile import load_profile
+        from prm9tool.service.autotune import AutotuneSettings
+
+        if profile is not None and not isinstance(profile, ProfileType):
+            profile = load_profile(os.fspath(profile))
+        settings = AutotuneSettings(loop, method, overshoot_pct, settling_ms, amplitude_pct,
+                                    limit_pct, profile)  # fmt: skip
+        return self._service.autotune(settings, apply, progress)
+
     def fit_twin(
         self,
         path: str | os.PathLike[str],
@@ -321,6 +354,13 @@ class Valve:
         characterization of this serial (run :meth:`characterize` first) or is off;
         MotionBusyError while this valve's setpoint generator runs."""
         return self._service.signature(profile, progress)
+
+    def export_eds(self, path: str | os.PathLike[str]) -> None:
+        """Write the CiA 306 EDS of this valve's type (what ``--export-eds TYPEKEY -o
+        FILE.eds`` writes); a valve without CANopen is a TypeKeyError."""
+        from prm9tool.service.export import write_eds
+
+        write_eds(path, self.info.type_key)
 
     def export_dcf(self, path: str | os.PathLike[str]) -> int:
         """Write the valve's CiA 306 DCF (its working values, the node ID and bit rate it runs

@@ -314,8 +314,14 @@ class Parameter:
         return raw
 
     # --- validation --------------------------------------------------------------------
-    def check_raw(self, raw: int | str) -> None:
-        """Raise ValueRangeError with a user-facing message if ``raw`` is not allowed."""
+    def check_raw(self, raw: int | str, cap: int | str | None = None) -> None:
+        """Raise ValueRangeError with a user-facing message if ``raw`` is not allowed.
+
+        ``cap``: the raw value of the parameter that caps this one (LIMTA and LIMTB: the
+        valve's CURNORM, manual table 7-14), when known; a value outside the catalogue's range
+        is then refused with the range every editor shows (``0 … 2600 mA``), not the
+        catalogue's ``0 … 4000 mA`` that contradicts it. Within the catalogue's range the rule
+        between parameters names the cap (``CATALOGUE.check_rules``)."""
         if self.is_string:
             if not isinstance(raw, str):
                 raise ValueRangeError(
@@ -338,7 +344,8 @@ class Parameter:
                 )
             )
         if not self.raw_min <= raw <= self.raw_max:
-            lo, hi = self.format_display(self.raw_min), self.format_display(self.raw_max)
+            high = min(self.raw_max, cap) if isinstance(cap, int) else self.raw_max
+            lo, hi = self.format_display(self.raw_min), self.format_display(high)
             unit = f" {self.unit}" if self.unit else ""
             raise ValueRangeError(
                 QT_TRANSLATE_NOOP(

@@ -67,17 +67,14 @@ class BatchHistory:
         if record.result == "dry-run":
             self._add(record, "download", "ok", record.current, {"command": "--batch --dry-run"})
             return
+        from prm9tool.service.history import upload_details
+
         stored = record.result == "ok"
-        details: dict[str, Any] = {
-            "file": self.source,
-            "written": record.parameters_written,
-            "verification": record.verification,
-            "mismatches": len(record.mismatches),
-        }
-        if record.error:
-            details["error"] = record.error
-        if record.store:
-            details["store"] = record.store
+        mismatches = {m: (d.get("expected"), d.get("actual")) for m, d in record.mismatches.items()}
+        # the upload record's fields (service/history.py), then the batch's context
+        details: dict[str, Any] = dict(upload_details(
+            record.parameters_written, len(values), mismatches, record.error, record.store))  # fmt: skip
+        details.update(command="--batch", file=self.source, verification=record.verification)
         parameters = values if stored else None  # not stored: the valve kept its stored set
         self._add(record, "batch-upload", record.result, parameters, details)
 

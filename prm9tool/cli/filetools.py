@@ -14,7 +14,6 @@ from pathlib import Path
 from prm9tool.catalogue.typekey import TypeKey
 from prm9tool.errors import ExitCode, FileFormatError, FileProblem, Prm9Error, TypeKeyError
 from prm9tool.files import eds
-from prm9tool.files.atomicfile import atomic_write
 from prm9tool.files.prmfile import PrmContents, check_file, write_file
 
 STDOUT = "-"  # ``-o -``: standard output, for every command that takes -o
@@ -40,9 +39,8 @@ def write_stdout(data: bytes) -> None:
 
 
 def run(args: argparse.Namespace) -> int:
-    """Run ``--new`` or ``--check`` as given in ``args``; returns the exit code."""
-    if args.new is not None and args.check is not None:
-        return _usage("use --new and --check one at a time")
+    """Run ``--new`` or ``--check`` as given in ``args`` (argparse refuses both together);
+    returns the exit code."""
     if args.new is not None:
         return new_file(args.new, args.output)
     return check(args.check)
@@ -105,6 +103,8 @@ def _usage(message: str) -> int:
 def export_eds_command(args: argparse.Namespace) -> int:
     """``prm9tool --export-eds TYPEKEY [-o FILE.eds]`` (standard output without -o or with
     ``-o -``); returns the exit code."""
+    from prm9tool.service.export import write_eds
+
     try:
         text = eds.export_eds(args.export_eds)
     except Prm9Error as exc:
@@ -115,7 +115,7 @@ def export_eds_command(args: argparse.Namespace) -> int:
         return ExitCode.OK
     path = Path(args.output)
     try:
-        atomic_write(path, text.replace("\n", "\r\n").encode("ascii"), backup=False)
+        write_eds(path, args.export_eds)  # the valve service's, as Valve.export_eds()
     except OSError as exc:
         sys.stderr.write(f"prm9tool: cannot write {path}: {exc.strerror or exc}\n")
         return ExitCode.USAGE

@@ -8,14 +8,13 @@ import json
 import sys
 
 from prm9tool.cli.json_output import emit_json
-from prm9tool.device.canlink.bus import CanNetwork, CanOptions, acquire, release
-from prm9tool.device.canlink.lss import LssAddress, LssFailedError, LssMasterLink
-from prm9tool.device.canlink.lss_nodes import answers_at, first_free
+from prm9tool.device.canlink.bus import CanOptions
 from prm9tool.errors import CanAdapterError, ExitCode
+from prm9tool.service import lss
+from prm9tool.service.lss import LssFailedError
 
 LSS_COMMANDS = {"--lss-scan": "lss_scan", "--lss-assign": "lss_assign",
                 "--find-bitrate": "find_bitrate"}  # fmt: skip
-BOOT_TIMEOUT_S = 10.0  # LSS release -> boot-up at the new node ID (as after NMT reset node)
 EXIT_FOR = {"duplicate": ExitCode.USAGE, "taken": ExitCode.USAGE, "refused": ExitCode.VERIFY_FAILED,
             "lost": ExitCode.COMMUNICATION, "none": ExitCode.NO_DEVICE,
             "unanswered": ExitCode.COMMUNICATION}  # fmt: skip
@@ -31,7 +30,8 @@ def lss_problem(args: argparse.Namespace) -> str | None:
               "--characterize": args.characterize, "--device": args.device,
               "--emulator": args.emulator, "--all": args.all, "--type-key": args.type_key,
               "--node-id": args.node_id}  # fmt: skip
-    clash = given[1:] + [flag for flag, value in others.items() if value]
+    # two LSS commands together: argparse refuses them (a mutually exclusive group)
+    clash = [flag for flag, value in others.items() if value]
     if clash:
         return f"{given[0]} and {clash[0]} are separate commands: use one at a time"
     if args.json is not None and given[0] != "--lss-scan":
@@ -61,117 +61,56 @@ def _pairs_problem(pairs: list[str]) -> str | None:
         parsed = parse_pairs(pairs)
     except ValueError as exc:
         return str(exc)
-    for serial, node in parsed:
-        if not 1 <= node <= 127:
-            return f"--lss-assign {serial}={node}: CANopen node IDs are 1…127"
-    serials, nodes = [s for s, _ in parsed], [n for _, n in parsed]
-    twice = next((s for s in serials if serials.count(s) > 1), None)
-    if twice is not None:
-        return f"--lss-assign: serial {twice} is given twice"
-    both = next((n for n in nodes if nodes.count(n) > 1), None)
-    if both is not None:
-        return f"--lss-assign: node ID {both} is given to two valves"
-    return None
+    return lss.plan_problem(parsed)
 
 
 def run(args: argparse.Namespace) -> int:
-    """The LSS command ``args`` names; its exit code."""
+    """The LSS command ``args`` names; its exit code (the valve service's LSS, as the CAN bus
+    window's and the API's)."""
     options = CanOptions.from_args(args)
     if args.find_bitrate:
         return _find_bitrate(options)
     try:
-        shared = acquire(options)
+        if args.lss_scan:
+            return _scan(options, args.json)
+        return _assign(options, parse_pairs(args.lss_assign))
     except CanAdapterError as exc:
         print(f"prm9tool: {exc}", file=sys.stderr)
         return ExitCode.COMMUNICATION
-    try:
-        if args.lss_scan:
-            return _scan(shared, options, args.json)
-        return _assign(shared, options, parse_pairs(args.lss_assign))
     except LssFailedError as exc:
         print(f"prm9tool: {exc}", file=sys.stderr)
         return EXIT_FOR.get(exc.kind, ExitCode.COMMUNICATION)
-    finally:
-        release(shared)
 
 
-def _scan(shared: CanNetwork, options: CanOptions, as_json: bool | str | None) -> int:
+def _scan(options: CanOptions, as_json: bool | str | None) -> int:
     """``--json``: print the devices as JSON; ``--json OUT.json``: write them there (as
     ``--characterize --json OUT.json`` writes its report)."""
-    found = LssMasterLink(shared).scan()
+    found = lss.scan(options)
     if as_json:
-        failed = emit_json(json.dumps([_as_dict(a) for a in found], indent=1), as_json)
+        failed = emit_json(json.dumps([d.to_dict() for d in found], indent=1), as_json)
         if failed is not None:
             return failed
-    for address in found:
-        if not as_json:
-            print(
-                f"serial {address.serial}\t{'PRM9' if address.is_prm9 else 'not a PRM9'}\t"
-                f"vendor 0x{address.vendor:X}\tproduct 0x{address.product:X}\t"
-                f"revision 0x{address.revision:X}"
-            )
+    else:
+        for device in found:
+            print(device.describe())
     if not found:
-        print(f"prm9tool: {nothing_found(options)}", file=sys.stderr)
+        print(f"prm9tool: {lss.nothing_found(options)}", file=sys.stderr)
         return ExitCode.NO_DEVICE
     return ExitCode.OK
 
 
 def nothing_found(options: CanOptions) -> str:
     """What an empty Fastscan means and what to check."""
-    return (
-        f"no device without a node ID answered on {options}: every device on the bus has a "
-        "node ID (--list-devices lists them), or none is at node-ID switch 1, or the bus runs "
-        "at another bit rate than the adapter (--find-bitrate)"
-    )
+    return lss.nothing_found(options)
 
 
-def _as_dict(address: LssAddress) -> dict[str, object]:
-    return {
-        "serial": address.serial,
-        "vendor": address.vendor,
-        "product": address.product,
-        "revision": address.revision,
-        "prm9": address.is_prm9,
-    }
+def _assign(options: CanOptions, pairs: list[tuple[int, int]]) -> int:
+    def said(done: lss.Assigned) -> None:
+        print(f"serial {done.device.serial}: node {done.node_id}, stored; it answers as "
+              f"{done.device_id}", flush=True)  # fmt: skip
 
-
-def _assign(shared: CanNetwork, options: CanOptions, pairs: list[tuple[int, int]]) -> int:
-    from prm9tool.device.canlink.discovery import scan as scan_nodes
-
-    taken = {info.node_id: info for info in scan_nodes(shared)}
-    for _serial, node in pairs:
-        if node in taken:
-            who = taken[node]
-            what = f"serial {who.serial}" if who.serial else who.problem or "a device"
-            raise LssFailedError(
-                f"node ID {node} is taken: {what} answers there. Choose a free node ID; "
-                f"nothing was changed (free: {', '.join(map(str, first_free(set(taken), 3)))}, …)",
-                "taken",
-            )
-    link = LssMasterLink(shared)
-    found = {address.serial: address for address in link.scan()}
-    missing = [serial for serial, _ in pairs if serial not in found]
-    if missing:
-        listed = ", ".join(str(s) for s in sorted(found)) or "none"
-        raise LssFailedError(
-            f"no device without a node ID has serial {missing[0]} (devices without a node ID: "
-            f"{listed}); nothing was changed",
-            "none",
-        )
-    failed = 0
-    for serial, node in pairs:
-        link.assign(found[serial], node)
-        if answers_at(shared, node, serial, BOOT_TIMEOUT_S):
-            print(f"serial {serial}: node {node}, stored; it answers as can:{node}")
-        else:
-            failed += 1
-            print(
-                f"prm9tool: serial {serial}: node {node} was stored, but the valve does not "
-                f"answer as can:{node} within {BOOT_TIMEOUT_S:g} s: search the bus "
-                f"(--list-devices {_bus_args(options)})",
-                file=sys.stderr,
-            )
-    return ExitCode.COMMUNICATION if failed else ExitCode.OK
+    lss.assign(options, list(pairs), said)
+    return ExitCode.OK
 
 
 def _find_bitrate(options: CanOptions) -> int:
@@ -200,7 +139,3 @@ def _find_bitrate(options: CanOptions) -> int:
         return ExitCode.COMMUNICATION
     print(f"the bus runs at {rate} bit/s: use --can-bitrate {rate}")
     return ExitCode.OK
-
-
-def _bus_args(options: CanOptions) -> str:
-    return f"--can-interface {options.interface} --can-channel {options.channel}"

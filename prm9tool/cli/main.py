@@ -75,6 +75,8 @@ def _headless_command(args: argparse.Namespace) -> tuple[str, str] | None:
         return "prm9tool.cli.lss", "run"
     if args.characterize:
         return "prm9tool.cli.main", "_characterize"
+    if args.autotune is not None:
+        return "prm9tool.cli.autotune", "run"
     if args.fit_twin is not None:
         return "prm9tool.cli.twin", "run"
     if args.signature:

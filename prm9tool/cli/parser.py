@@ -19,7 +19,7 @@ EXIT_CODE_TEXT = {
     ExitCode.HISTORY: "the history database cannot be used (nothing uploaded with 'refuse'); "
     "--signature: no birth certificate in the history",
     ExitCode.OUT_OF_LIMITS: "--characterize: a figure is outside the acceptance profile's limits; "
-    "--signature: a figure drifted beyond its limit",
+    "--autotune: the proposal fails it; --signature: a figure drifted beyond its limit",
 }
 DIFF_EXIT_TEXT = "--diff: 0 equal, 1 they differ, 3 invalid file, 4 no such valve"
 
@@ -96,7 +96,8 @@ def add_device_options(parser: argparse.ArgumentParser) -> None:
         help="with --serve-emulator: node ID 1-127 of the valve named at the same position, "
         "or 'lss': node-ID switch at 1, no node ID until an LSS master gives one",
     )
-    lss = parser.add_argument_group("valves without a node ID: LSS, CiA 305 (no GUI)")
+    lss_group = parser.add_argument_group("valves without a node ID: LSS, CiA 305 (no GUI)")
+    lss = lss_group.add_mutually_exclusive_group()  # one LSS command at a time (argparse says so)
     lss.add_argument(
         "--lss-scan",
         action="store_true",
@@ -138,11 +139,12 @@ def build_parser() -> argparse.ArgumentParser:
     parser.add_argument("file", nargs="?", help="*.prm file to open in the GUI")
     parser.add_argument("--version", action="store_true", help="print the version and exit")
     files = parser.add_argument_group("offline file tools (no GUI)")
-    files.add_argument(
+    tool = files.add_mutually_exclusive_group()  # one file tool at a time
+    tool.add_argument(
         "--new", metavar="TYPEKEY", help="write the factory defaults for TYPEKEY to the -o file"
     )
-    files.add_argument("--check", metavar="FILE.prm", help="validate a *.prm file")
-    files.add_argument("--export-eds", metavar="TYPEKEY", help="write a CiA 306 EDS for TYPEKEY")
+    tool.add_argument("--check", metavar="FILE.prm", help="validate a *.prm file")
+    tool.add_argument("--export-eds", metavar="TYPEKEY", help="write a CiA 306 EDS for TYPEKEY")
     files.add_argument(
         "-o",
         "--output",
@@ -177,7 +179,8 @@ def build_parser() -> argparse.ArgumentParser:
         "--dry-run", action="store_true", help="with --batch: check everything, write nothing"
     )
     eol = parser.add_argument_group("end-of-line test (no GUI; docs/tuning.md)")
-    eol.add_argument(
+    test = eol.add_mutually_exclusive_group()  # one test of a valve at a time
+    test.add_argument(
         "--characterize",
         action="store_true",
         help="step responses, Bode and static characteristic of one valve (--report OUT.pdf)",
@@ -195,13 +198,25 @@ def build_parser() -> argparse.ArgumentParser:
         "--hydraulics-safe", action="store_true",
         help="with --enable: the hydraulics are safe for the test to move the spool",
     )  # fmt: skip
+    test.add_argument(
+        "--autotune", nargs="?", const="position", choices=("position", "process"),
+        metavar="LOOP",
+        help="the Tuning window's autotune of the one valve of --device/--emulator (LOOP: "
+        "position, or process on E04): gains proposed and checked against --profile, the "
+        "valve's own gains back after; --json [OUT.json] or --report OUT.json for the record",
+    )  # fmt: skip
     eol.add_argument(
+        "--apply", action="store_true",
+        help="with --autotune: write the proposed gains and store them (only a proposal that "
+        "passes the profile and rests on a trustworthy model)",
+    )  # fmt: skip
+    test.add_argument(
         "--signature", action="store_true",
         help="the field signature of one valve (≤ 20 s of motion) against its birth "
         "certificate in the history (its end-of-line test): the drift in words, --report "
         "OUT.pdf, --json [OUT.json]; exit 0 no drift, 8 drifted, 7 no birth certificate",
     )  # fmt: skip
-    eol.add_argument(
+    test.add_argument(
         "--fit-twin", metavar="OUT.toml",
         help="fit the valve's twin (plant constants, docs/twin.md) from --from RUN.json, or "
         "characterize the one valve of --device/--emulator (--profile) and fit from that run; "
@@ -239,23 +254,24 @@ def build_parser() -> argparse.ArgumentParser:
 def add_history_options(parser: argparse.ArgumentParser) -> None:
     """``--diff`` and the history commands (docs/history.md)."""
     group = parser.add_argument_group("compare and history (no GUI)")
-    group.add_argument(
+    command = group.add_mutually_exclusive_group()  # --diff or one history command
+    command.add_argument(
         "--diff", nargs="+", metavar="FILE.prm",
         help="compare two *.prm files, or one with the valve of --device/--emulator",
     )  # fmt: skip
     group.add_argument(
         "--json", nargs="?", const=True, metavar="OUT.json",
-        help="with --diff, --history, --get/--set, --list-devices, --decode, --replay: print "
-        "JSON; with --characterize, --decode, --replay: the JSON report file",
+        help="with --diff, --history, --get/--set, --list-devices, --decode, --replay, "
+        "--autotune: print JSON; with --characterize, --decode, --replay: the JSON report file",
     )  # fmt: skip
-    group.add_argument("--history", metavar="SERIAL", help="list the history of a valve")
-    group.add_argument(
+    command.add_argument("--history", metavar="SERIAL", help="list the history of a valve")
+    command.add_argument(
         "--history-check", action="store_true", help="verify every valve's hash chain"
     )
-    group.add_argument(
+    command.add_argument(
         "--history-export", type=int, metavar="ID", help="write record ID to -o FILE.prm/.csv"
     )
-    group.add_argument(
+    command.add_argument(
         "--history-import", action="store_true", help="import the old backup files once"
     )
     group.add_argument(

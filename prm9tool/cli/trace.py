@@ -30,6 +30,7 @@ _OTHERS = {
     "list_devices", "--characterize": "characterize", "--diff": "diff", "--get": "get",
     "--set": "set", "--serve-emulator": "serve_emulator", "--new": "new", "--check": "check",
     "--export-eds": "export_eds", "--history": "history", "--lss-scan": "lss_scan",
+    "--autotune": "autotune",
 }  # fmt: skip
 
 

@@ -1,5 +1,11 @@
 """Which combinations of command-line options make sense: checked before anything runs, so an
-option that would be ignored is an error, not a surprise."""
+option that would be ignored is an error, not a surprise.
+
+Where argparse can say it, the parser does (``cli/parser.py``: mutually exclusive groups for
+the LSS commands, the file tools, the tests of a valve — ``--characterize``,
+``--autotune``, ``--fit-twin`` — and ``--diff`` with the history commands, ``choices`` for ``--autotune LOOP``); the checks here are
+the ones argparse cannot express (an option that belongs to a command in another group, a
+command with a device it cannot take)."""
 
 from __future__ import annotations
 
@@ -53,15 +59,18 @@ def usage_problem(args: argparse.Namespace) -> str | None:
         return _fit_twin_problem(args)
     if args.signature:
         return _signature_problem(args)
-    if args.characterize:
+    if args.characterize or args.autotune is not None:
         return _characterize_problem(args)
+    if args.apply:
+        return "--apply belongs to --autotune (it applies the proposed gains)"
     if args.enable or args.hydraulics_safe:
         flag = "--enable" if args.enable else "--hydraulics-safe"
-        return f"{flag} belongs to --characterize (it enables the valve before the test)"
+        return (f"{flag} belongs to --characterize or --autotune (it enables the valve before "
+                "the test)")  # fmt: skip
     if args.get or args.set or args.store or args.export_dcf:
         return _values_problem(args)
     if args.profile:
-        return "--profile belongs to --characterize"
+        return "--profile belongs to --characterize or --autotune"
     if getattr(args, "od", None) and not (args.emulator or args.serve_emulator):
         return "--od chooses the object dictionary of --emulator or --serve-emulator valves"
     problem = _compare_history_problem(args)
@@ -114,8 +123,8 @@ def _fit_twin_problem(args: argparse.Namespace) -> str | None:
         others = [
             flag
             for flag, given in (
-                ("--characterize", args.characterize), ("--batch", args.batch is not None),
-                ("--list-devices", args.list_devices), (f"file {args.file}", args.file),
+                ("--batch", args.batch is not None), ("--list-devices", args.list_devices),
+                (f"file {args.file}", args.file),
             )
             if given
         ]  # fmt: skip
@@ -127,8 +136,7 @@ def _fit_twin_problem(args: argparse.Namespace) -> str | None:
     others = [
         flag
         for flag, given in (
-            ("--characterize", args.characterize), ("--device", args.device),
-            ("--emulator", args.emulator), ("--batch", args.batch is not None),
+            ("--device", args.device), ("--emulator", args.emulator), ("--batch", args.batch is not None),
             ("--list-devices", args.list_devices), ("--profile", args.profile),
             ("--enable", args.enable), (f"file {args.file}", args.file),
         )
@@ -192,16 +200,20 @@ def _serve_problem(args: argparse.Namespace, batch_only: list[str]) -> str | Non
 
 
 def _characterize_problem(args: argparse.Namespace) -> str | None:
+    """--characterize's and --autotune's: tests that move one valve."""
+    command = "--characterize" if args.characterize else "--autotune"
     options = {**BATCH_ONLY, **FILE_TOOLS, **HISTORY_COMMANDS, "--diff": "diff", **VALUE_COMMANDS}
     others = [flag for flag, dest in options.items()
               if dest != "report" and getattr(args, dest) not in (None, False)]  # fmt: skip
     if args.batch is not None or args.list_devices:
         others.insert(0, "--batch" if args.batch is not None else "--list-devices")
     if others:
-        return f"--characterize and {others[0]} are separate commands: use one at a time"
+        return f"{command} and {others[0]} are separate commands: use one at a time"
     if args.file:
-        return f"unexpected file {args.file}: --characterize tests a valve"
-    if args.json is True:
+        return f"unexpected file {args.file}: {command} tests a valve"
+    if args.apply and args.characterize:
+        return "--apply belongs to --autotune (it applies the proposed gains)"
+    if args.json is True and args.characterize:
         return "--characterize writes its JSON report to a file: --json OUT.json"
     if args.hydraulics_safe and not args.enable:
         return "--hydraulics-safe confirms --enable: add --enable, or leave it out"
@@ -226,12 +238,12 @@ def _compare_history_problem(args: argparse.Namespace) -> str | None:
     commands = history + (["--diff"] if args.diff else [])
     others = [flag for flag, dest in FILE_TOOLS.items() if getattr(args, dest) is not None]
     others += ["--batch"] * (args.batch is not None) + ["--list-devices"] * args.list_devices
-    if len(commands) > 1 or (commands and others):
-        return f"{commands[0]} and {(commands[1:] + others)[0]} are separate commands: use one at a time"
+    if commands and others:  # two of them together: argparse refuses (one exclusive group)
+        return f"{commands[0]} and {others[0]} are separate commands: use one at a time"
     if args.json and commands not in (["--diff"], ["--history"]) and not args.list_devices:
         return (
             "--json [OUT.json] belongs to --diff, --history, --get/--set, --list-devices, "
-            "--lss-scan and --characterize"
+            "--lss-scan, --characterize and --autotune"
         )
     if args.history_unreachable and args.batch is None:
         return "--history-unreachable belongs to the headless production mode (--batch)"

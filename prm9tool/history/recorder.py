@@ -82,8 +82,11 @@ class Details(TypedDict, total=False):
     what: str  # tuning accepted: what was accepted
     loop: str  # tuning accepted, autotune, report-saved: the loop
     pdf: str  # report-saved: the PDF file the test report was saved as
-    rounds: int  # autotune: the rounds it took
-    meets_targets: bool  # autotune: the proposal meets the profile's targets
+    rounds: int | None  # autotune: the rounds it took (None: the critical-gain method)
+    method: str  # autotune: "model" or "critical"
+    passes: bool  # autotune: the proposal passes the acceptance profile
+    applied: bool  # autotune: the proposed gains were written and stored
+    meets_targets: bool | None  # autotune: the model's proposal meets the targets
     proposed: dict[str, list[int | None]]  # autotune: mnemonic -> [before, proposed] (raw)
     before: dict[str, float | None]  # autotune: the step with the gains before
     after: dict[str, float | None]  # autotune: the step with the proposed gains

@@ -9,7 +9,7 @@ from __future__ import annotations
 import math
 
 from prm9tool.catalogue import CAPPED_BY, CATALOGUE, Access, Parameter
-from prm9tool.errors import AccessDeniedError, ValueRangeError
+from prm9tool.errors import AccessDeniedError
 from prm9tool.i18n import format_value
 from prm9tool.messages import QT_TRANSLATE_NOOP, Message, Number
 from prm9tool.model.access import AccessModel
@@ -81,20 +81,12 @@ def resolution_text(param: Parameter) -> str:
 def _refuse_beyond_cap(param: Parameter, doc: ParameterDocument, raw: Raw) -> None:
     """A capped value (LIMTA ≤ CURNORM) beyond even the catalogue's range is refused with the
     range the editors show (0 … 2600 mA), not the catalogue's 0 … 4000 mA that contradicts it;
-    within the catalogue's range the document's rule names the cap."""
-    low, high, cap = allowed_range(param, doc)
+    within the catalogue's range the document's rule names the cap. The one check every door
+    makes (``Parameter.check_raw`` with the cap, as the valve service's)."""
+    cap = CAPPED_BY.get(param.mnemonic)
     if cap is None or not isinstance(raw, int) or param.raw_min <= raw <= param.raw_max:
         return
-    unit = f" {param.unit}" if param.unit else ""
-    raise ValueRangeError(
-        QT_TRANSLATE_NOOP("Problems", "{0}: {1}{2} is outside the allowed range {3} … {4}{2}")(
-            param.mnemonic,
-            Number(param.format_display(raw)),
-            unit,
-            Number(param.format_display(low)),
-            Number(param.format_display(high)),
-        )
-    )
+    param.check_raw(raw, doc.value(cap))
 
 
 def apply_edit(

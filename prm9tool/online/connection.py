@@ -277,7 +277,8 @@ class ValveConnection(QObject):
     def restart_valve(self, tag: str) -> None:
         """Restart (hydraulics confirmed off) and read the stored set; result:
         operation_finished(tag, {mnemonic: raw})."""
-        self._long_job(tag, lambda s: self.service(s).restart_and_read())
+        work = lambda s: self.service(s).restart_and_read("Valve → Restart valve")  # noqa: E731
+        self._long_job(tag, work)
 
     def factory_reset(self, tag: str) -> None:
         """Backup, restore the factory values, restart (hydraulics confirmed off), read back;
@@ -305,11 +306,11 @@ class ValveConnection(QObject):
 
     def restore_factory(self) -> None:
         """Reset the valve to its factory values; result: operation_finished("restore_factory")."""
-        self._long_job("restore_factory", lambda s: s.restore_factory())
+        self._long_job("restore_factory", lambda s: self.service(s).restore_factory(False))
 
     def restart(self) -> None:
         """Restart the valve electronics; result: operation_finished("restart", None)."""
-        self._long_job("restart", lambda s: s.restart())
+        self._long_job("restart", lambda s: self.service(s).restart())
 
     def shutdown(self, timeout_s: float = 3.0) -> None:
         """Close the session and end the worker thread (application exit)."""

@@ -1,10 +1,12 @@
 """LSS commissioning for the CAN bus dialog: Fastscan, node-ID assignment and finding the bit
 rate (listen-only), off the GUI thread.
 
-:class:`LssCommissioning` runs one LSS job at a time (``prm9tool.device.canlink.lss``) in a
-thread of its own on the bus the dialog names (the master shared with the live network view
-and any session on that bus) and delivers the outcome on the GUI thread through a queued
-signal. The dialog sees plain :class:`LssDevice` records, never the device layer. QtCore only.
+:class:`LssCommissioning` runs one LSS job at a time — the valve service's
+(``prm9tool.service.lss``, the same operations as ``--lss-scan``/``--lss-assign`` and the API's
+``lss_scan``/``lss_assign``) — in a thread of its own on the bus the dialog names (the master
+shared with the live network view and any session on that bus) and delivers the outcome on the
+GUI thread through a queued signal. The dialog sees plain :class:`LssDevice` records, never the
+device layer. QtCore only.
 """
 
 from __future__ import annotations
@@ -13,172 +15,50 @@ import contextlib
 import logging
 import threading
 from collections.abc import Callable, Mapping
-from dataclasses import dataclass
 from typing import Any
 
 from PySide6.QtCore import QObject, Signal
 
 from prm9tool.errors import Prm9Error
+from prm9tool.service import lss
+from prm9tool.service.lss import Assigned, FoundRate, LssDevice, RateChanged, Renumbered
 from prm9tool.translate import error_text
 
+__all__ = ["Assigned", "FoundRate", "LssCommissioning", "LssDevice", "RateChanged", "Renumbered"]
+
 log = logging.getLogger(__name__)
-SWITCH_DELAY_MS = 200  # decision: CiA 305 activate bit timing's switch delay
-ANSWER_TIMEOUT_S = 10.0  # release -> boot-up at the new node ID (as after NMT reset node)
 
 
-@dataclass(frozen=True)
-class LssDevice:
-    """A device without a node ID as Fastscan found it (its identity object 0x1018)."""
-
-    vendor: int
-    product: int
-    revision: int
-    serial: int
-    is_prm9: bool
+def scan_bus(bus: Mapping[str, object]) -> list[LssDevice]:
+    """Every device without a node ID on ``bus`` (the worker thread's job)."""
+    return lss.scan(bus)
 
 
-@dataclass(frozen=True)
-class Assigned:
-    """A device that answers at the node ID it was given (stored)."""
-
-    device: LssDevice
-    node_id: int
-
-    @property
-    def device_id(self) -> str:
-        """``can:NODE``."""
-        return f"can:{self.node_id}"
-
-
-@dataclass(frozen=True)
-class FoundRate:
-    """The bus's bit rate found by listening, and the nodes heard at it."""
-
-    bitrate: int
-    nodes: tuple[int, ...]
+def assign_on_bus(bus: Mapping[str, object], device: LssDevice, node_id: int) -> Assigned:
+    """Give ``device`` ``node_id`` and store it (the service's one assignment)."""
+    return lss.assign(bus, [(device, node_id)])[0]
 
 
 def assign_all_on_bus(
     bus: Mapping[str, object], plan: list[tuple[LssDevice, int]]
 ) -> list[Assigned]:
-    """Every device of ``plan`` gets its node ID, one after the other (blocking); on a failure
-    the error names the valves that got theirs already."""
-    from prm9tool.device.canlink.lss import LssFailedError
-
-    done: list[Assigned] = []
-    for device, node_id in plan:
-        try:
-            done.append(assign_on_bus(bus, device, node_id))
-        except LssFailedError as exc:
-            given = ", ".join(f"serial {a.device.serial} → {a.device_id}" for a in done)
-            if given:
-                raise LssFailedError(f"{exc} (given before: {given})", exc.kind) from exc
-            raise
-    return done
+    """Every device of ``plan`` gets its node ID, one after the other."""
+    return lss.assign(bus, list(plan))
 
 
 def find_bitrate_on_bus(bus: Mapping[str, object]) -> FoundRate:
-    """Listen-only at each rate a PRM9 supports (blocking; never transmits)."""
-    from prm9tool.device.canlink.bitrate import find_bitrate
-
-    rate, heard = find_bitrate(_options({**bus, "bitrate": None}))
-    nodes = next(h.nodes for h in heard if h.bitrate == rate)
-    return FoundRate(rate, tuple(sorted(nodes)))
-
-
-@dataclass(frozen=True)
-class Renumbered:
-    """A configured valve that answers at the node ID LSS gave it (stored)."""
-
-    serial: int
-    old_node_id: int
-    node_id: int
-
-    @property
-    def device_id(self) -> str:
-        """``can:NODE``."""
-        return f"can:{self.node_id}"
+    """Listen-only at each rate a PRM9 supports (never transmits)."""
+    return lss.find_bitrate(bus)
 
 
 def renumber_on_bus(bus: Mapping[str, object], node_id: int, new_node_id: int) -> Renumbered:
-    """The valve at ``node_id`` (switch 1) gets ``new_node_id`` by LSS (blocking)."""
-    from prm9tool.device.canlink.bus import acquire, release
-    from prm9tool.device.canlink.lss_nodes import renumber
-
-    shared = acquire(_options(bus))
-    try:
-        serial = renumber(shared, node_id, new_node_id, ANSWER_TIMEOUT_S)
-    finally:
-        release(shared)
-    return Renumbered(serial, node_id, new_node_id)
-
-
-@dataclass(frozen=True)
-class RateChanged:
-    """The LSS devices of a bus switched to ``bitrate`` (stored)."""
-
-    bitrate: int
-    devices: int
+    """The valve at ``node_id`` (switch 1) gets ``new_node_id`` by LSS."""
+    return lss.renumber(bus, node_id, new_node_id)
 
 
 def change_rate_on_bus(bus: Mapping[str, object], bitrate: int) -> RateChanged:
-    """Every LSS device of ``bus`` goes to ``bitrate`` by LSS (blocking); the tool's bus at
-    the old rate is released, so the next search opens the adapter at the new one."""
-    from prm9tool.catalogue.canopen_switches import lss_bit_timing
-    from prm9tool.device.canlink.bus import acquire, release
-    from prm9tool.device.canlink.lss import LssFailedError, LssMasterLink
-
-    index = lss_bit_timing(bitrate // 1000)
-    if index is None:
-        raise LssFailedError(f"a PRM9 does not run at {bitrate} bit/s", "refused")
-    shared = acquire(_options(bus))
-    try:
-        devices = LssMasterLink(shared).change_bus_bit_timing(index, SWITCH_DELAY_MS)
-    finally:
-        release(shared)
-    return RateChanged(bitrate, devices)
-
-
-def _options(bus: Mapping[str, object]) -> Any:
-    from prm9tool.device.canlink.bus import CanOptions
-
-    return CanOptions.from_mapping(bus)
-
-
-def scan_bus(bus: Mapping[str, object]) -> list[LssDevice]:
-    """Every device without a node ID on ``bus`` (blocking; the worker thread's job)."""
-    from prm9tool.device.canlink.bus import acquire, release
-    from prm9tool.device.canlink.lss import LssMasterLink
-
-    shared = acquire(_options(bus))
-    try:
-        found = LssMasterLink(shared).scan()
-    finally:
-        release(shared)
-    return [LssDevice(a.vendor, a.product, a.revision, a.serial, a.is_prm9) for a in found]
-
-
-def assign_on_bus(bus: Mapping[str, object], device: LssDevice, node_id: int) -> Assigned:
-    """Give ``device`` ``node_id`` and store it, refusing an ID that answers; returns once the
-    device answers there (blocking)."""
-    from prm9tool.device.canlink.bus import acquire, release
-    from prm9tool.device.canlink.lss import LssAddress, LssFailedError, LssMasterLink
-    from prm9tool.device.canlink.lss_nodes import answers_at, check_free
-
-    shared = acquire(_options(bus))
-    try:
-        check_free(shared, node_id)
-        address = LssAddress(device.vendor, device.product, device.revision, device.serial)
-        LssMasterLink(shared).assign(address, node_id)
-        if not answers_at(shared, node_id, device.serial, ANSWER_TIMEOUT_S):
-            raise LssFailedError(
-                f"serial {device.serial}: node {node_id} was stored, but the valve does not "
-                f"answer as can:{node_id} within {ANSWER_TIMEOUT_S:g} s: search the bus",
-                "lost",
-            )
-    finally:
-        release(shared)
-    return Assigned(device, node_id)
+    """Every LSS device of ``bus`` goes to ``bitrate`` by LSS."""
+    return lss.change_rate(bus, bitrate)
 
 
 class LssCommissioning(QObject):

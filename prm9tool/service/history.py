@@ -193,17 +193,33 @@ class HistoryHook:
         if result.stored:
             whole = {p.mnemonic for p in CATALOGUE.file_parameters(session.variant)}
             after = values if whole <= set(values) else session.download()
-        details: Details = {"written": result.written, "chosen": len(values), "mismatches": {
-            m: [str(want), str(got)] for m, (want, got) in result.mismatches.items()}}  # fmt: skip
+        details = upload_details(result.written, len(values), result.mismatches,
+                                 result.failure, result.store)  # fmt: skip
         if purpose:
             details["purpose"] = purpose
-        if result.failure:
-            details["error"] = result.failure  # a refused store says why here
-        if result.store:
-            details["store"] = result.store  # which store happened (CANopen)
         outcome = "ok" if result.stored else "verification-failed"
         self.add(session, "upload", outcome, after, details, result.failed_step)
         return result
+
+
+def upload_details(
+    written: int,
+    chosen: int,
+    mismatches: Mapping[str, tuple[object, object]],
+    error: str | None = None,
+    store: str | None = None,
+) -> Details:
+    """The details of an upload record, the same whichever door uploaded (``upload`` of the
+    window and the API, ``batch-upload`` of ``--batch``, which adds its batch context):
+    parameters written, values given, mismatches {mnemonic: [wanted, read]}, why it failed
+    (a refused store says why here) and which store happened (CANopen)."""
+    details: Details = {"written": written, "chosen": chosen, "mismatches": {
+        m: [str(want), str(got)] for m, (want, got) in mismatches.items()}}  # fmt: skip
+    if error:
+        details["error"] = error
+    if store:
+        details["store"] = store
+    return details
 
 
 def characterization_details(result: Characterization, curves: bool = False) -> tuple[str, Details]:

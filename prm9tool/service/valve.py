@@ -15,11 +15,12 @@ import os
 import threading
 import time
 import weakref
-from collections.abc import Callable, Mapping
+from collections.abc import Callable, Iterator, Mapping
+from contextlib import contextmanager
 from pathlib import Path
-from typing import TYPE_CHECKING, TypeVar
+from typing import TYPE_CHECKING
 
-from prm9tool.catalogue import CATALOGUE, Parameter
+from prm9tool.catalogue import CAPPED_BY, CATALOGUE, Parameter
 from prm9tool.catalogue.commissioning import (
     CONTROL_WORD,
     DISABLE_SEQUENCE,
@@ -28,7 +29,13 @@ from prm9tool.catalogue.commissioning import (
 from prm9tool.catalogue.typekey import TypeKey
 from prm9tool.errors import CommunicationError, DeviceTimeoutError, Prm9Error
 from prm9tool.service import motion, upload
-from prm9tool.service.values import ReadOnlyError, check_rules, read_only_text, user_value
+from prm9tool.service.values import (
+    ReadOnlyError,
+    caps_held,
+    check_rules,
+    read_only_text,
+    user_value,
+)
 
 if TYPE_CHECKING:
     from prm9tool.analysis.profile import Profile
@@ -38,13 +45,13 @@ if TYPE_CHECKING:
     from prm9tool.device.records import Progress, UploadResult, Value, ValveStatus
     from prm9tool.device.session import ValveSession
     from prm9tool.history.recorder import Details
+    from prm9tool.service.autotune import AutotuneOutcome, AutotuneSettings
     from prm9tool.service.history import HistoryHook
     from prm9tool.twin.fitvalve import ValveTwin
 
 __all__ = ["NmtStoppedError", "ValveService", "characterize_session", "parse_nmt", "service_for"]
 
 
-T = TypeVar("T")
 BOOT_WAIT_S = 3.0  # commissioning waits at most this for a valve still booting
 
 
@@ -69,6 +76,10 @@ STOPPED_TEXT = (
     "the valve does not answer: this program stopped it (NMT stop), and a stopped valve "
     "answers no SDO (manual §7.2); send NMT start or pre-operational first"
 )
+
+
+def _in_catalogue_range(param: Parameter, raw: Value) -> bool:
+    return not isinstance(raw, int) or param.raw_min <= raw <= param.raw_max
 
 
 class ValveService:
@@ -113,20 +124,27 @@ class ValveService:
         """The raw values of ``values`` (display values or texts as typed) if this valve
         would take them: each as :func:`~prm9tool.service.values.user_value` checks it, then
         together with the valve's caps (LIMTA at most its CURNORM). Sends nothing."""
-        raw = {m: user_value(self.parameter(m), v) for m, v in values.items()}
-        check_rules(self.session, raw)
+        params = {m: self.parameter(m) for m in values}
+        held = caps_held(self.session, values)  # LIMTA's range is 0 … the valve's CURNORM
+        raw = {m: user_value(params[m], v, held) for m, v in values.items()}
+        check_rules(self.session, raw, held)
         return raw
 
     def check_raw(self, values: Mapping[str, Value]) -> None:
         """Raw values as the window's document holds them: writable and in range (the
         document checked the rules); the same words as :meth:`check`. A mnemonic this valve
         lacks is left to the link, which names it."""
+        held: dict[str, Value] | None = None
         for mnemonic, raw in values.items():
             param = self._params.get(mnemonic)
             if param is None:
                 continue
             if not param.writable:
                 raise ReadOnlyError(read_only_text(mnemonic))
+            cap = CAPPED_BY.get(mnemonic)
+            if cap is not None and not _in_catalogue_range(param, raw):
+                held = caps_held(self.session, values) if held is None else held
+                param.check_raw(raw, held.get(cap))  # 0 … CURNORM, as the editors say
             param.check_raw(raw)
 
     def write_raw(self, values: Mapping[str, Value]) -> None:
@@ -260,28 +278,45 @@ class ValveService:
             self.history.add(self.session, "restore-factory", "ok", None, details)
         return path
 
-    def restart(self) -> None:
+    def restart(self, command: str | None = None) -> None:
         """Restart the valve's electronics and reconnect (the caller confirmed that the
-        hydraulics are off: the spool moves to its rest position while it boots)."""
+        hydraulics are off: the spool moves to its rest position while it boots); recorded
+        (``restart``, without a parameter set; ``command``: what ran it)."""
+        self._restart()
+        self._record_restart(None, command)
+
+    def _restart(self) -> None:
         self.session.restart()
         self._stopped = False  # it boots into pre-operational
 
-    def restart_and_read(self) -> dict[str, Value]:
-        """:meth:`restart`, then read the stored parameters the valve runs with now."""
-        self.restart()
-        return dict(self.session.download())
+    def _record_restart(self, values: Mapping[str, Value] | None, command: str | None) -> None:
+        if self.history is not None:
+            details: Details = {"command": command} if command else {}
+            self.history.add(self.session, "restart", "ok", values, details)
+
+    def restart_and_read(self, command: str | None = None) -> dict[str, Value]:
+        """:meth:`restart`, then read the stored parameters the valve runs with now; recorded
+        with them (the window's Restart valve)."""
+        self._restart()
+        values = dict(self.session.download())
+        self._record_restart(values, command)
+        return values
 
     def factory_reset_and_read(self) -> tuple[dict[str, Value], Path | None]:
         """The window's Restore factory values online: the backup (as before the first
         upload), the reset, the restart that makes it effective (hydraulics confirmed off),
         and the factory set read back; returns it and the new backup file (None: it had
-        one). The caller records it with the set read back."""
+        one); recorded with the set read back (the record of :meth:`restore_factory`)."""
         from prm9tool.files.backup import ensure_backup  # *.prm writing, only when needed
 
         path = ensure_backup(self.session)
         self.session.restore_factory()
-        self.session.restart()
-        return dict(self.session.download()), path
+        self._restart()
+        values = dict(self.session.download())
+        if self.history is not None:
+            details: Details = {"backup": None if path is None else str(path)}
+            self.history.add(self.session, "restore-factory", "ok", values, details)
+        return values, path
 
     # --- motion ---------------------------------------------------------------------------
     def characterize(
@@ -295,6 +330,32 @@ class ValveService:
         if self.history is not None:
             self.history.characterization(self.session, result)
         return result
+
+    def autotune(
+        self,
+        settings: AutotuneSettings | None = None,
+        apply: bool = False,
+        progress: Callable[[str], None] | None = None,
+    ) -> AutotuneOutcome:
+        """The Tuning window's autotune on this valve (``service/autotune.py``): the proposal,
+        checked against the acceptance profile, the valve's own gains back afterwards;
+        ``apply``: then write the proposed gains and store them, when the proposal passes the
+        acceptance profile and its model is trustworthy (``may_apply``). Refused with MotionBusyError
+        while another motion runs; recorded in the history as the window records it."""
+        from prm9tool.service import autotune as tuning
+
+        checked = (settings or tuning.AutotuneSettings()).checked()
+        with motion.claim(self.session, "autotune"):
+            with session_rig(self.session) as rig:
+                proposal = tuning.run(rig, checked, progress)
+            apply = apply and tuning.may_apply(proposal)
+            if apply:
+                self.write_raw(proposal.values)
+                self.store()  # read back and recorded, as every door's store
+        if self.history is not None:
+            outcome, details = tuning.details(proposal, apply)
+            self.history.add(self.session, "autotune", outcome, None, details)
+        return tuning.AutotuneOutcome(proposal, apply)
 
     def fit_twin(
         self,
@@ -324,10 +385,8 @@ class ValveService:
         from prm9tool.characterize.drift import signature
 
         records = self.history.records_of if self.history is not None else None
-        with motion.claim(self.session, "signature"):
-            report = on_session_rig(
-                self.session, lambda rig: signature(rig, records, _profile(profile), progress)
-            )
+        with motion.claim(self.session, "signature"), session_rig(self.session) as rig:
+            report = signature(rig, records, _profile(profile), progress)
         if self.history is not None:
             self.history.signature_of(report)
         return report
@@ -359,21 +418,31 @@ def characterize_session(
     """The end-of-line test on an open session (the rig its link gives)."""
     from prm9tool.analysis.profile import DEFAULT, load_profile
     from prm9tool.analysis.profile import Profile as ProfileType
-    from prm9tool.characterize.canrig import rig_for_session
-    from prm9tool.characterize.rig import EmulatorRig
     from prm9tool.characterize.run import characterize as run
 
     if profile is None:
         profile = DEFAULT
     elif not isinstance(profile, ProfileType):
         profile = load_profile(os.fspath(profile))
+    with session_rig(session) as rig:
+        return run(rig, profile, progress)
+
+
+@contextmanager
+def session_rig(session: ValveSession) -> Iterator[Rig]:
+    """The rig the tests that move the valve run on: the link's (a USB stream, CANopen SDO
+    samples) or, for an emulated valve, the valve itself stepped as fast as the CPU allows
+    (as ``--characterize --emulator`` does)."""
+    from prm9tool.characterize.canrig import rig_for_session
+    from prm9tool.characterize.rig import EmulatorRig
+
     if session.emulator is None:
-        return run(rig_for_session(session), profile, progress)
+        yield rig_for_session(session)
+        return
     from prm9tool.device.emulated_valves import emulated_valve, stepped_here
 
-    # an emulated valve is stepped as fast as the CPU allows, as --characterize --emulator does
     with stepped_here(emulated_valve(session.info.type_key, session.info.serial)) as valve:
-        return run(EmulatorRig(valve), profile, progress)
+        yield EmulatorRig(valve)
 
 
 def _profile(profile: Profile | str | os.PathLike[str] | None) -> Profile:
@@ -385,20 +454,6 @@ def _profile(profile: Profile | str | os.PathLike[str] | None) -> Profile:
     if isinstance(profile, ProfileType):
         return profile
     return load_profile(os.fspath(profile))
-
-
-def on_session_rig(session: ValveSession, work: Callable[[Rig], T]) -> T:
-    """``work(rig)`` on the rig an open session's link gives; an emulated valve is stepped as
-    fast as the CPU allows, as ``--characterize --emulator`` does."""
-    from prm9tool.characterize.canrig import rig_for_session
-    from prm9tool.characterize.rig import EmulatorRig
-
-    if session.emulator is None:
-        return work(rig_for_session(session))
-    from prm9tool.device.emulated_valves import emulated_valve, stepped_here
-
-    with stepped_here(emulated_valve(session.info.type_key, session.info.serial)) as valve:
-        return work(EmulatorRig(valve))
 
 
 _SERVICES: weakref.WeakKeyDictionary[object, ValveService] = weakref.WeakKeyDictionary()

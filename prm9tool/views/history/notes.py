@@ -54,30 +54,14 @@ def _number(value: object) -> float | None:
     return round(float(value), 6)
 
 
-def step_details(step: Any) -> dict[str, Any]:
-    """A step response's figures: amplitude (%), overshoot (%), rise and settling time (s)."""
-    figures = getattr(step, "figures", None)
-    shown: dict[str, Any] = {"amplitude_pct": _number(getattr(step, "amplitude_pct", None))}
-    for key, name in (("overshoot_pct", "overshoot"), ("rise_time_s", "rise_time"),
-                      ("settling_time_s", "settling_time")):  # fmt: skip
-        shown[key] = _number(getattr(figures, name, None))
-    return shown
-
-
 def autotune_details(result: Any) -> tuple[str, dict[str, Any]]:
-    """An autotune run's outcome (``proposed``; ``targets-missed`` when its proposal misses
-    the targets) and details: loop, rounds, the gains before → proposed, both steps."""
-    before = dict(getattr(result, "before_values", {}) or {})
-    proposed = dict(getattr(result, "proposed_values", {}) or {})
-    details = {
-        "loop": str(getattr(result, "loop", "")),
-        "rounds": getattr(result, "rounds", None),
-        "meets_targets": bool(getattr(result, "meets_targets", False)),
-        "proposed": {mn: [before.get(mn), value] for mn, value in proposed.items()},
-        "before": step_details(getattr(result, "before", None)),
-        "after": step_details(getattr(result, "after", None)),
-    }
-    return ("proposed" if details["meets_targets"] else "targets-missed"), details
+    """An autotune run's record, the one every door writes (``service/autotune.py``
+    ``details``): outcome ``proposed`` or ``targets-missed``, loop, method, rounds, the gains
+    before → proposed, both steps, the profile and its verdict."""
+    from prm9tool.service.autotune import details
+
+    outcome, record = details(result)
+    return outcome, dict(record)
 
 
 def bode_details(result: Any) -> tuple[str, dict[str, Any]]:

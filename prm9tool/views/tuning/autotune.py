@@ -22,10 +22,12 @@ from PySide6.QtWidgets import (
 
 from prm9tool.analysis.model import Targets
 from prm9tool.analysis.profile import ProfileError
-from prm9tool.characterize.acceptance import TRIES, Proposal, propose, step_start
+from prm9tool.characterize.acceptance import TRIES, Proposal, step_start
 from prm9tool.characterize.autotune import AutotuneResult
 from prm9tool.characterize.procedures import LOOPS, StepResult, step_window
 from prm9tool.i18n import format_number, format_significant
+from prm9tool.service import autotune
+from prm9tool.service.autotune import LOOP_DEFAULTS, AutotuneSettings
 from prm9tool.translate import error_text, translated
 from prm9tool.views.tuning.host import TuningHost, figure_table, gain_text, spin
 from prm9tool.views.tuning.pages import Page
@@ -39,8 +41,6 @@ from prm9tool.views.tuning.report import (
     verdict,
 )
 
-# per loop: the default step amplitude (%) and settling target (ms) of the autotune
-LOOP_DEFAULTS = {"position": (50.0, 40.0), "process": (20.0, 500.0)}
 GREY = "#808080"
 RED, GREEN = "#c00000", "#207020"
 
@@ -95,6 +95,9 @@ class AutotunePage(Page):
         loop = self.window_.current_loop()
         amplitude, limit = self.amplitude.value(), self.limit.value()
         targets = Targets(self.overshoot.value(), self.settling.value() / 1000.0)
+        settings = AutotuneSettings(loop, "model" if self.method.currentIndex() == 0 else
+                                    "critical", targets.overshoot_pct, self.settling.value(),
+                                    amplitude, limit, profile)  # fmt: skip
         steps = ", ".join(
             f"±{format_significant(a, 6)}" for a in profile.for_loop(loop).step_amplitudes_pct
         )
@@ -116,7 +119,7 @@ class AutotunePage(Page):
         self.window_.start(
             "autotune",
             what,
-            lambda rig: propose(rig, method, loop, targets, amplitude, limit, profile),
+            lambda rig: autotune.run(rig, settings),  # --autotune's, Valve.autotune()'s
             seconds,
         )
 
@@ -172,7 +175,7 @@ class AutotunePage(Page):
         self.override.blockSignals(True)
         self.override.setChecked(False)
         self.override.blockSignals(False)
-        refused = bool(doubts) or not result.passes
+        refused = not autotune.may_apply(result)  # the rule of --autotune --apply
         self.override.setVisible(refused)
         self.accept_button.setEnabled(not refused)
 

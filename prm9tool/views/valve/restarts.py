@@ -89,10 +89,7 @@ class ValveRestarts(QObject):
             values, backup = result
             self._on_factory_reset(_FactoryReset(values, None if backup is None else str(backup)))
         elif name == AFTER_RESTART and isinstance(result, Mapping):
-            self._report_restart()
-            self._connection.record(
-                "restart", "ok", dict(result), {"command": "Valve → Restart valve"}
-            )
+            self._report_restart()  # recorded by the valve service (as every door's restart)
             self._sync.stop()
             self._compare(result)
         else:
@@ -121,7 +118,6 @@ class ValveRestarts(QObject):
     def _on_factory_reset(self, result: _FactoryReset) -> None:
         self._uploads.last_stored = None  # the valve no longer holds the last upload
         self._take_values(result.values, self.tr("Factory values of the valve"))
-        self._connection.record("restore-factory", "ok", result.values, {"backup": result.backup})
         if result.backup is not None:
             self._post(
                 self.tr(

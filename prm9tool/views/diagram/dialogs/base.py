@@ -21,7 +21,7 @@ from PySide6.QtWidgets import (
     QWidget,
 )
 
-from prm9tool.catalogue import CATALOGUE
+from prm9tool.catalogue import CAPPED_BY, CATALOGUE
 from prm9tool.errors import AccessDeniedError, ValueRangeError
 from prm9tool.i18n import text
 from prm9tool.model.access import AccessModel
@@ -195,12 +195,13 @@ class BlockDialog(QDialog):
 
     def check_values(self, values: Mapping[str, Raw]) -> None:
         """Raise AccessDeniedError / ValueRangeError if ``values`` may not be set together."""
+        trial = {**self.doc.values, **values}
         for mnemonic, raw in values.items():
             param = CATALOGUE[mnemonic]
             if not self.access.may_edit(param):
                 raise AccessDeniedError(self.access.why_locked(param))
-            param.check_raw(raw)
-        trial = {**self.doc.values, **values}
+            cap = CAPPED_BY.get(mnemonic)  # LIMTA: 0 … CURNORM, as every editor says
+            param.check_raw(raw, trial.get(cap) if cap else None)
         for problem in CATALOGUE.check_rules(self.doc.variant, trial):
             if problem.severity == "error" and set(problem.mnemonics) & set(values):
                 raise ValueRangeError(problem.message)
