@@ -9,6 +9,7 @@ import numpy as np
 import pytest
 from pypdf import PdfReader
 from PySide6.QtWidgets import QMessageBox
+from support.waiting import work_timeout_s
 
 from prm9tool.model.access import Access, AccessModel
 from prm9tool.model.document import ParameterDocument
@@ -39,6 +40,13 @@ def finish(qtbot, w: TuningWindow, timeout_s: float = 30.0) -> None:
     qtbot.waitUntil(lambda: not w.runner.busy, timeout=round(timeout_s * 1000))
 
 
+# A model-based autotune with its acceptance checks costs about 100 times the reference work
+# (support.waiting.reference_work_s; measured alone on a quiet 2-core PC, 5.5–7.7 s against
+# 0.06–0.10 s, the most of 8 runs): its wait follows the pace this PC keeps now (issue 34:
+# a fixed 30 s timed out with --busy 4).
+AUTOTUNE_WORK = 100.0
+
+
 def shot(w: TuningWindow, name: str) -> None:
     if SHOTS:
         w.grab().save(str(Path(SHOTS) / f"tuning_{name}.png"))
@@ -55,9 +63,10 @@ def test_model_autotune_proposes_and_accepts_as_one_undo_step(qtbot, window, tmp
     ways and its static test) before it is offered; this one passes."""
     use_profile(window, tmp_path, "[test]\nstep_amplitudes_pct = [25, 90]\nstatic_period_s = 4\n")
     assert "Offline" in window.mode.text()
+    wait_s = work_timeout_s(AUTOTUNE_WORK)
     window.autotune.run_button.click()
     assert window.progress.isVisible()  # a test with Stop and a progress bar
-    finish(qtbot, window)
+    finish(qtbot, window, wait_s)
     assert not window.progress.isVisible()
     page = window.autotune
     text = page.result.text()
@@ -92,8 +101,9 @@ def test_a_proposal_that_fails_the_profile_says_so_and_needs_accept_anyway(qtbot
         tmp_path,
         "[test]\nstatic_period_s = 4\n[limits]\nstep_overshoot_pct = { max = 1 }\n",
     )
+    wait_s = work_timeout_s(AUTOTUNE_WORK)
     window.autotune.run_button.click()
-    finish(qtbot, window)
+    finish(qtbot, window, wait_s)
     page = window.autotune
     text = page.result.text()
     assert "fails the acceptance profile" in text and "step 0 → 5 %: overshoot" in text
