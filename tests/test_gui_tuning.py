@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import os
+import re
 from pathlib import Path
 
 import numpy as np
@@ -546,3 +547,13 @@ def test_at_basic_level_accepting_gains_is_refused_as_in_the_controller_dialogs(
     access.set_level(Access.EXPERT)
     w.accept_values({"POSKP": kp + 10}, "Autotune")
     assert doc.value("POSKP") == kp + 10 and w.status.text() == "Accepted: Autotune"
+
+
+def test_a_figure_and_its_unit_stay_on_one_line_in_the_status(qtbot, window):
+    """Issue 34 (a new user): "about 53 s in all" wrapped between "53" and "s"."""
+    window.autotune.run_button.click()
+    shown = window.status.text()
+    window.runner.stop()
+    finish(qtbot, window)
+    assert re.search(r"about \d+\u00a0s in all", shown), shown
+    assert not re.search(r"\d (s|ms|Hz|%)(\W|$)", shown), shown
