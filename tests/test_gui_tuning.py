@@ -10,7 +10,7 @@ import numpy as np
 import pytest
 from pypdf import PdfReader
 from PySide6.QtWidgets import QMessageBox
-from support.waiting import work_timeout_s
+from support.waiting import AUTOTUNE_WORK, work_timeout_s
 
 from prm9tool.model.access import Access, AccessModel
 from prm9tool.model.document import ParameterDocument
@@ -39,13 +39,6 @@ def window(qtbot):
 
 def finish(qtbot, w: TuningWindow, timeout_s: float = 30.0) -> None:
     qtbot.waitUntil(lambda: not w.runner.busy, timeout=round(timeout_s * 1000))
-
-
-# A model-based autotune with its acceptance checks costs about 100 times the reference work
-# (support.waiting.reference_work_s; measured alone on a quiet 2-core PC, 5.5–7.7 s against
-# 0.06–0.10 s, the most of 8 runs): its wait follows the pace this PC keeps now (issue 34:
-# a fixed 30 s timed out with --busy 4).
-AUTOTUNE_WORK = 100.0
 
 
 def shot(w: TuningWindow, name: str) -> None:
