@@ -210,7 +210,9 @@ class ValveStatusWindow(QDialog):
         """The least height is what the layout needs at this width, wrapped texts included (a
         dialog's minimum ignores them: the LEDs' box lost its bottom edge; issue 34)."""
         layout = self.layout()
-        needed = layout.totalHeightForWidth(self.width()) if layout.hasHeightForWidth() else 0
+        if layout is None or not layout.hasHeightForWidth():
+            return
+        needed = layout.totalHeightForWidth(self.width())
         if needed > 0 and needed != self.minimumHeight():
             self.setMinimumHeight(needed)
 
