@@ -257,7 +257,7 @@ def test_online_a_test_asks_first_and_does_nothing_when_declined(qtbot, monkeypa
         QMessageBox, "question", lambda *a: asked.append(a[2]) or QMessageBox.StandardButton.No
     )
     w.autotune.run_button.click()
-    assert "moves the spool" in asked[0] and "50 %" in asked[0]
+    assert "moves the spool" in asked[0] and "50\u00a0%" in asked[0]  # one line: issue 34
     assert connection.jobs == []
     monkeypatch.setattr(QMessageBox, "question", lambda *a: QMessageBox.StandardButton.Yes)
     w.autotune.run_button.click()
