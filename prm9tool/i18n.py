@@ -72,6 +72,15 @@ def format_significant(value: float, digits: int) -> str:
     return localized_number(text, current_language())
 
 
+# A value and its unit stay on one line where a text wraps ("53 s", never "53" / "s").
+_VALUE_UNIT = re.compile(r"(\d) (?=(?:mA|mV|ms|Hz|V|s|%|°C|dB)(?![\w])|%)")
+
+
+def unbroken_units(text: str) -> str:
+    """``text`` with a no-break space between each number and its unit."""
+    return _VALUE_UNIT.sub("\\1\u00a0", text)
+
+
 def format_value(param: Parameter, raw: int | str) -> str:
     """A parameter value as the views show it: the shortest exact decimal (as in a file), with
     the decimal separator of the program language; texts are shown as they are."""

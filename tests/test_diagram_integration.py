@@ -145,3 +145,25 @@ def test_the_canopen_block_and_the_toolbar_show_one_canopen_window(qtbot, tmp_pa
         window.commands["canopen"].trigger()
         assert window.canopen_window is first
         assert window.findChildren(CanopenWindow) == [first]
+
+
+def test_the_diagram_says_why_its_points_read_a_dash_while_the_scope_records(qtbot, paced_window):
+    """Issue 34 (a new user): with a recording running in the background, most measuring
+    points of the diagram showed "—" and only their tooltips said why (the valve streams three
+    points at a time). Shown while the oscilloscope records, the diagram says it."""
+    window = paced_window
+    view = _online(qtbot, window, f"{E02}:4709")
+    window.open_scope("position_actual")
+    scope = window.views["scope"]
+    scope.start()
+    qtbot.waitUntil(lambda: scope.capture is not None and scope.capture.buffer.total > 100,
+                    timeout=TIMEOUT)  # fmt: skip
+    window.show_view("diagram")
+    assert "records in the background" in window.status.currentMessage()
+    assert "show — until the recording stops" in window.status.currentMessage()
+    dot = view.diagram.dots["current_a"]
+    qtbot.waitUntil(lambda: dot.value_text.endswith("—"), timeout=TIMEOUT)
+    scope.stop()
+    window.show_view("parameters")
+    window.show_view("diagram")
+    assert "records in the background" not in window.status.currentMessage()

@@ -6,6 +6,7 @@ from __future__ import annotations
 
 import pytest
 from support.gui_support import E02_CA, emulated, go_online, main_window
+from support.waiting import AUTOTUNE_ON_A_VALVE_WORK, work_timeout_s
 
 from prm9tool.device.emulator import Fault
 from prm9tool.scope import Waveform
@@ -141,10 +142,11 @@ def test_a_tuning_test_on_a_waiting_valve_offers_the_enabling_first(
     monkeypatch.setattr(QMessageBox, "question", lambda *a: QMessageBox.StandardButton.Yes)
     answers.answers.append(prompts.Button.Yes)  # at Basic: run it, accept after switching
     answers.answers.append(prompts.Button.Yes)  # enable it
+    wait_s = work_timeout_s(AUTOTUNE_ON_A_VALVE_WORK)  # a fixed 30 s timed out on a busy PC
     tuning.autotune.run_button.click()
     assert "cannot be accepted: POSKP can only be changed at Expert" in answers.asked[-2]
     assert "Enable it now" in answers.asked[-1]
-    qtbot.waitUntil(lambda: not tuning.runner.busy, timeout=30_000)
+    qtbot.waitUntil(lambda: not tuning.runner.busy, timeout=round(wait_s * 1000))
     assert "POSKP: 0.4 → " in tuning.autotune.result.text(), tuning.status.text()
 
 
@@ -211,3 +213,29 @@ def test_a_fault_whose_error_display_ended_is_listed_and_enable_resets_it(qtbot,
     assert "No error." not in status_window.errors.item(0).text()
     panel.buttons["enable"].click()
     qtbot.waitUntil(lambda: str(valve.device_state) == "DEVICE_MODE_ACTIVE", timeout=TIMEOUT)
+
+
+@pytest.mark.parametrize("language", ["en", "de", "cs"])
+def test_the_valve_status_window_shows_its_bottom_edge(qtbot, window, language):
+    """Issue 34 (a new user): the window opened lower than its wrapped texts need, so the
+    LEDs' box lost its bottom edge; its least height now counts the wrapped lines."""
+    from prm9tool import i18n
+
+    i18n.set_language(language)
+    try:
+        status_window = window.show_status_window()
+        layout = status_window.layout()
+        qtbot.waitUntil(lambda: "CANopen" in status_window.commissioning.reason.text(),
+                        timeout=TIMEOUT)  # fmt: skip
+        leds = status_window._groups["leds"]
+
+        def whole() -> bool:
+            return (
+                status_window.height() >= layout.totalHeightForWidth(status_window.width())
+                and leds.height() >= leds.layout().totalHeightForWidth(leds.width())
+                and leds.geometry().bottom() < status_window.height()
+            )
+
+        qtbot.waitUntil(whole, timeout=TIMEOUT)  # the layout follows the texts in the event loop
+    finally:
+        i18n.set_language("en")

@@ -475,17 +475,11 @@ def test_save_as_and_exit_have_windows_shortcuts_too(window):
 
 
 def _message_lines(bar) -> list[str]:
-    """The lines the message label shows the message in, at its width."""
-    from PySide6.QtGui import QTextLayout
-
+    """The lines the message label shows the message in, each checked to fit its width."""
     label = bar.message_label
-    layout = QTextLayout(label.text(), label.font())
-    layout.beginLayout()
-    lines = []
-    while (line := layout.createLine()).isValid():
-        line.setLineWidth(label.contentsRect().width())
-        lines.append(label.text()[line.textStart() : line.textStart() + line.textLength()])
-    layout.endLayout()
+    lines = label.text().split("\n") if label.text() else []
+    width = label.contentsRect().width()
+    assert all(label.fontMetrics().horizontalAdvance(line) <= width for line in lines), lines
     return lines
 
 
@@ -505,7 +499,7 @@ def test_a_long_status_message_is_read_whole_and_the_fields_stay(qtbot, window):
     assert all(label.isVisible() for label in bar.labels())  # type key and file name too
     assert bar.type_key_label.text() == "PRM9-06.3Z11/30-24E02S02-CA"
     lines = _message_lines(bar)
-    assert len(lines) == 2 and "".join(lines) == message  # whole, on two lines
+    assert len(lines) == 2 and " ".join(lines) == message  # whole, on two lines
     assert bar.message_label.height() >= len(lines) * bar.fontMetrics().height()
     assert bar.toolTip() == message and bar.currentMessage() == message
     snapshot_path = os.environ.get("PRM9TOOL_SCREENSHOTS")
@@ -528,8 +522,35 @@ def test_a_status_message_stays_whole_when_the_fields_grow_after_it(qtbot, windo
     bar.set_device_status("čeká na CANopen master")
     qtbot.wait(50)  # the layout settles
     assert all(label.isVisible() for label in bar.labels())
-    assert "".join(_message_lines(bar)) == message
+    assert " ".join(_message_lines(bar)) == message
     assert bar.message_label.height() >= len(_message_lines(bar)) * bar.fontMetrics().height()
+
+
+def test_a_longer_message_breaks_at_spaces_only_and_ends_in_an_ellipsis(qtbot, window):
+    """Issue 34 (a new user): a long message broke inside the type key at a hyphen and its
+    third line hid below the bar, behind the "samples lost" field. It keeps to two lines,
+    broken at spaces; what does not fit ends in "…" (the whole is the bar's tip)."""
+    window.resize(1024, 700)
+    bar = window.status
+    bar.set_type_key("PRM9-06.3Z11/30-24E04S02-CA")
+    bar.set_samples_lost(1234)
+    message = (
+        "Backup of the valve's parameters saved: /home/user/.local/share/prm9tool/backups/"
+        "4711/PRM9-06.3Z11_30-24E04S02-CA_4711_20261202-031652.prm, the valve "
+        "PRM9-06.3Z11/30-24E04S02-CA works with them now and the history has the record"
+    )
+    bar.showMessage(message)
+    qtbot.waitUntil(lambda: bar.lost_label.isVisible())
+    qtbot.wait(50)  # the layout settles
+    lines = _message_lines(bar)
+    assert len(lines) == 2 and lines[-1].endswith("…")
+    words = message.split(" ")
+    assert all(w in words for w in " ".join(lines).rstrip("…").split(" ")[:-1])  # no broken word
+    assert bar.message_label.geometry().right() < bar.lost_label.geometry().left()
+    assert bar.toolTip() == message
+    snapshot_path = os.environ.get("PRM9TOOL_SCREENSHOTS")
+    if snapshot_path:
+        window.grab().save(os.path.join(snapshot_path, "status_longer_message.png"))
 
 
 def test_a_message_goes_after_its_timeout(qtbot, window):

@@ -152,3 +152,16 @@ def test_a_long_failure_wraps_and_does_not_widen_the_window(qtbot, window):
     assert window.width() == width
     assert window.minimumSizeHint().width() <= width
     assert reason in window.recording.state.toolTip()
+
+
+def test_an_empty_trace_plots_a_plain_time_axis(qtbot, window, tmp_path):
+    """Issue 34 (a new user): the empty trace's plot read "Time (s) (x0.001)" from −500 to
+    500: no scale factor appended to the label, and the first second from the start."""
+    path = tmp_path / "empty.log"
+    path.write_text("", encoding="utf-8")
+    _open(qtbot, window, path)
+    for name in ("left", "bottom"):
+        assert "x0.001" not in window.plot.getAxis(name).labelString()
+        assert "×" not in window.plot.getAxis(name).labelString()
+    (x_low, x_high), _y = window.plot.viewRange()
+    assert x_low >= 0.0 and x_high == pytest.approx(1.0)

@@ -3,12 +3,14 @@
 from __future__ import annotations
 
 import os
+import re
 from pathlib import Path
 
 import numpy as np
 import pytest
 from pypdf import PdfReader
 from PySide6.QtWidgets import QMessageBox
+from support.waiting import AUTOTUNE_WORK, work_timeout_s
 
 from prm9tool.model.access import Access, AccessModel
 from prm9tool.model.document import ParameterDocument
@@ -55,9 +57,10 @@ def test_model_autotune_proposes_and_accepts_as_one_undo_step(qtbot, window, tmp
     ways and its static test) before it is offered; this one passes."""
     use_profile(window, tmp_path, "[test]\nstep_amplitudes_pct = [25, 90]\nstatic_period_s = 4\n")
     assert "Offline" in window.mode.text()
+    wait_s = work_timeout_s(AUTOTUNE_WORK)
     window.autotune.run_button.click()
     assert window.progress.isVisible()  # a test with Stop and a progress bar
-    finish(qtbot, window)
+    finish(qtbot, window, wait_s)
     assert not window.progress.isVisible()
     page = window.autotune
     text = page.result.text()
@@ -92,8 +95,9 @@ def test_a_proposal_that_fails_the_profile_says_so_and_needs_accept_anyway(qtbot
         tmp_path,
         "[test]\nstatic_period_s = 4\n[limits]\nstep_overshoot_pct = { max = 1 }\n",
     )
+    wait_s = work_timeout_s(AUTOTUNE_WORK)
     window.autotune.run_button.click()
-    finish(qtbot, window)
+    finish(qtbot, window, wait_s)
     page = window.autotune
     text = page.result.text()
     assert "fails the acceptance profile" in text and "step 0 → 5 %: overshoot" in text
@@ -253,7 +257,7 @@ def test_online_a_test_asks_first_and_does_nothing_when_declined(qtbot, monkeypa
         QMessageBox, "question", lambda *a: asked.append(a[2]) or QMessageBox.StandardButton.No
     )
     w.autotune.run_button.click()
-    assert "moves the spool" in asked[0] and "50 %" in asked[0]
+    assert "moves the spool" in asked[0] and "50\u00a0%" in asked[0]  # one line: issue 34
     assert connection.jobs == []
     monkeypatch.setattr(QMessageBox, "question", lambda *a: QMessageBox.StandardButton.Yes)
     w.autotune.run_button.click()
@@ -536,3 +540,13 @@ def test_at_basic_level_accepting_gains_is_refused_as_in_the_controller_dialogs(
     access.set_level(Access.EXPERT)
     w.accept_values({"POSKP": kp + 10}, "Autotune")
     assert doc.value("POSKP") == kp + 10 and w.status.text() == "Accepted: Autotune"
+
+
+def test_a_figure_and_its_unit_stay_on_one_line_in_the_status(qtbot, window):
+    """Issue 34 (a new user): "about 53 s in all" wrapped between "53" and "s"."""
+    window.autotune.run_button.click()
+    shown = window.status.text()
+    window.runner.stop()
+    finish(qtbot, window)
+    assert re.search(r"about \d+\u00a0s in all", shown), shown
+    assert not re.search(r"\d (s|ms|Hz|%)(\W|$)", shown), shown

@@ -152,3 +152,19 @@ def test_a_long_measuring_point_name_is_read_whole_in_the_list(qtbot, conn, lang
             )
     finally:
         i18n.set_language("en")
+
+
+@pytest.mark.parametrize("language", ["en", "de", "cs"])
+def test_the_export_button_has_room_for_its_arrow_beside_its_text(qtbot, scope, language):
+    """Issue 34 (a new user): the Export button's menu arrow was drawn over its text (a tool
+    button squeezed to its text); it is a push button with its menu, as high as Start."""
+    from PySide6.QtWidgets import QPushButton
+
+    _switch(qtbot, scope, language)
+    export = scope.controls.export
+    assert isinstance(export, QPushButton) and export.menu() is not None
+    text = export.fontMetrics().horizontalAdvance(export.text())
+    assert export.width() >= text + export.style().pixelMetric(
+        export.style().PixelMetric.PM_MenuButtonIndicator
+    )
+    assert export.height() == scope.controls.start.height()

@@ -247,6 +247,18 @@ def test_the_cli_prints_the_trace_and_its_incidents(golden, capsys):
     assert main(["--decode", str(golden[0]), "--fail-on-incident"]) == 1
 
 
+@pytest.mark.parametrize("suffix", [".log", ".asc"])
+def test_the_cli_says_an_empty_trace_holds_no_frame(tmp_path, capsys, suffix):
+    """Issue 34: an empty trace printed "events: " with nothing after it."""
+    from prm9tool.cli.main import main
+
+    path = tmp_path / f"empty{suffix}"
+    path.write_text("", encoding="utf-8")
+    assert main(["--decode", str(path)]) == 0
+    out = capsys.readouterr().out
+    assert out.splitlines()[0] == "0 frames; events: none (the trace holds no frame)"
+
+
 def test_the_cli_writes_json_and_csv(golden, tmp_path, capsys):
     from prm9tool.cli.main import main
 

@@ -3113,6 +3113,10 @@ Ano načte a záznam zařadí do fronty; Ne nenačte nic.</translation>
     <context>
         <name>MainWindow</name>
         <message>
+            <source>The oscilloscope records in the background: the valve sends three measuring points at a time, so the diagram's other points show — until the recording stops.</source>
+            <translation>Osciloskop zaznamenává na pozadí: ventil posílá tři měřicí body najednou, proto ostatní měřicí body diagramu ukazují — až do konce záznamu.</translation>
+        </message>
+        <message>
             <source>The oscilloscope works in online mode only.</source>
             <translation>Osciloskop je dostupný pouze v režimu online.</translation>
         </message>

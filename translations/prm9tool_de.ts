@@ -3095,6 +3095,10 @@ Ja lädt hoch und stellt den Eintrag in die Warteschlange; Nein lädt nichts hoc
     <context>
         <name>MainWindow</name>
         <message>
+            <source>The oscilloscope records in the background: the valve sends three measuring points at a time, so the diagram's other points show — until the recording stops.</source>
+            <translation>Das Oszilloskop zeichnet im Hintergrund auf: das Ventil sendet drei Messpunkte gleichzeitig, daher zeigen die übrigen Messpunkte des Diagramms — bis die Aufzeichnung endet.</translation>
+        </message>
+        <message>
             <source>The oscilloscope works in online mode only.</source>
             <translation>Das Oszilloskop arbeitet nur im Online-Modus.</translation>
         </message>

@@ -322,10 +322,10 @@ def print_trace(decoded: Trace) -> None:
 
 def print_summary(decoded: Trace, start: float) -> None:
     """Frames, nodes, events by kind, SYNC period and jitter, incidents."""
-    print(
-        f"\n{decoded.frames} frames; events: "
-        + ", ".join(f"{k} {n}" for k, n in sorted(decoded.counts().items()))
-    )
+    counts = ", ".join(f"{k} {n}" for k, n in sorted(decoded.counts().items()))
+    if not decoded.frames:  # a recording of a silent bus: said, not an empty list
+        counts = "none (the trace holds no frame)"
+    print(f"{chr(10) if decoded.events else ''}{decoded.frames} frames; events: {counts or 'none'}")
     for node, how in sorted(decoded.nodes.items()):
         print(f"node {node}: decoded as {how}")
     sync = decoded.sync

@@ -152,9 +152,15 @@ class ConnectionWorker:
                     self.guarded(functools.partial(self._poll, *due))
 
     def _execute(self, job: Job) -> None:
+        if job.needs_session and self.session is None:
+            # queued while online (the connection refuses it offline), its session closed
+            # since: by a lost link, already reported, or going offline. Said again it was a
+            # second error after "the valve did not come back" (issue 34)
+            if job.on_error is not None:
+                self._host._post(job.on_error)
+            return
+
         def run() -> None:
-            if job.needs_session and self.session is None:
-                raise CommunicationError("The valve is not connected.")
             # a job that needs no session (going online) ignores its argument
             result = job.run(cast("ValveSession", self.session))
             self._host._post(lambda: self._host._finish(job, result))

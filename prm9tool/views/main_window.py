@@ -162,6 +162,19 @@ class MainWindow(QMainWindow):
         self.stack.show_page(name)
         self.commands[f"view_{name}"].setChecked(True)
         self.settings.setValue(VIEW_KEY, name)
+        self._note_background_recording(name)
+
+    def _note_background_recording(self, view: str) -> None:
+        """The valve streams three measuring points at a time: while the oscilloscope records
+        them, the diagram's others read "—" (said, not only in their tooltips; issue 34)."""
+        note = self.tr(
+            "The oscilloscope records in the background: the valve sends three measuring "
+            "points at a time, so the diagram's other points show — until the recording stops."
+        )
+        if view == "diagram" and self._scope is not None and self._scope.running:
+            self.status.showMessage(note, 15000)
+        elif self.status.currentMessage() == note:
+            self.status.clearMessage()  # stopped since: the note would mislead
 
     def current_view(self) -> str:
         """Name of the view shown."""

@@ -17,7 +17,8 @@ from __future__ import annotations
 from pathlib import Path
 from typing import TYPE_CHECKING
 
-from PySide6.QtCore import QEvent, QTimer
+from PySide6.QtCore import QEvent, Qt, QTimer
+from PySide6.QtGui import QFontMetrics, QResizeEvent
 from PySide6.QtWidgets import QFrame, QLabel, QSizePolicy, QStatusBar, QWidget
 
 from prm9tool.catalogue import Access
@@ -28,6 +29,47 @@ if TYPE_CHECKING:
     from prm9tool.model.document import ParameterDocument
     from prm9tool.online.connection import ValveConnection
     from prm9tool.online.sync import ValveSync
+
+
+def two_lines(text: str, metrics: QFontMetrics, width: int) -> str:
+    """``text`` on at most two lines of ``width`` pixels, broken at spaces only (never inside
+    a type key or a file name at its hyphens); what does not fit ends in "…"."""
+    words, first = text.split(" "), ""
+    taken = 0
+    for word in words:
+        candidate = f"{first} {word}" if first else word
+        if first and metrics.horizontalAdvance(candidate) > width:
+            break
+        first, taken = candidate, taken + 1
+    first = metrics.elidedText(first, Qt.TextElideMode.ElideRight, width)
+    rest = " ".join(words[taken:])
+    if not rest:
+        return first
+    return f"{first}\n{metrics.elidedText(rest, Qt.TextElideMode.ElideRight, width)}"
+
+
+class MessageLabel(QLabel):
+    """The status bar's message on the two lines the bar has room for (:func:`two_lines`),
+    laid out again when its width changes; the whole message is the bar's tip (issue 34: a
+    message wrapped at a hyphen and its third line hid under the bar's edge)."""
+
+    def __init__(self) -> None:
+        super().__init__()
+        self._message = ""
+
+    def set_message(self, message: str) -> None:
+        """Show ``message``."""
+        self._message = message
+        self._fit()
+
+    def resizeEvent(self, event: QResizeEvent) -> None:
+        """Lay the message out again for the new width."""
+        super().resizeEvent(event)
+        self._fit()
+
+    def _fit(self) -> None:
+        width = max(1, self.contentsRect().width())
+        self.setText(two_lines(self._message, self.fontMetrics(), width) if self._message else "")
 
 
 class MainStatusBar(QStatusBar):
@@ -41,8 +83,7 @@ class MainStatusBar(QStatusBar):
         self.type_key_label = QLabel()
         self.file_label = QLabel()
         self.level_label = QLabel()
-        self.message_label = QLabel()  # the message, wrapped when longer than the room left
-        self.message_label.setWordWrap(True)
+        self.message_label = MessageLabel()  # the message on two lines at most
         self.message_label.setSizePolicy(QSizePolicy.Policy.Ignored, QSizePolicy.Policy.Preferred)
         # room for two lines, always: a message that wraps must not grow the bar and move every
         # button above it while the user aims (issue 25 item 14); a longer one is the bar's tip
@@ -74,7 +115,7 @@ class MainStatusBar(QStatusBar):
         """Show ``message`` (for ``timeout`` ms; 0: until the next); the bar's tip is the
         whole message too."""
         self._message = message
-        self.message_label.setText(message)
+        self.message_label.set_message(message)
         self.setToolTip(message)
         if timeout:
             self._message_timer.start(timeout)

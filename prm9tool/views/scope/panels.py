@@ -16,7 +16,6 @@ from PySide6.QtWidgets import (
     QListWidgetItem,
     QMenu,
     QPushButton,
-    QToolButton,
     QVBoxLayout,
     QWidget,
 )
@@ -231,9 +230,9 @@ class ControlPanel(QWidget):
         self.pre.setDecimals(0)
         self.pre.setSuffix(" %")
         self.pre.setValue(20)
-        self.export = QToolButton()
-        self.export.setPopupMode(QToolButton.ToolButtonPopupMode.InstantPopup)
-        self.export.setToolButtonStyle(Qt.ToolButtonStyle.ToolButtonTextOnly)
+        # a push button with its menu: the arrow has room of its own beside the text (a tool
+        # button's drew over the "t" of "Export"), and it is as high as Start beside it
+        self.export = QPushButton()
         self.export.setMenu(QMenu(self.export))
         self._units: list[str] = []
         self._build_layout()

@@ -88,6 +88,8 @@ class TraceWindow(QWidget):
         axes = {name: LocalizedAxis(name) for name in ("left", "bottom")}
         self.plot = self.graphics.addPlot(row=0, col=0, axisItems=axes)
         self.plot.setLabel("bottom", self.tr("Time (s)"))
+        for name in ("left", "bottom"):  # the label names the unit: no "(×0.001)" added to it
+            self.plot.getAxis(name).enableAutoSIPrefix(False)
         self.plot.showGrid(x=True, y=True, alpha=0.3)
         self.plot.setClipToView(True)
         self.plot.setDownsampling(auto=True, mode="peak")
@@ -172,6 +174,8 @@ class TraceWindow(QWidget):
         self._fill_filters()
         self._fill_incidents()
         self._fill_series(pdo_series(trace) if series is None else series)
+        if not trace.frames:  # nothing to plot: the first second from the start, no negative time
+            self.plot.setRange(xRange=(0.0, 1.0), yRange=(0.0, 1.0), padding=0.0)
         self.summary.setText(self._summary_text(trace))
         self.table.resizeColumnsToContents()
         self.decoded.emit(trace)

@@ -32,6 +32,7 @@ from prm9tool.catalogue import CATALOGUE
 from prm9tool.catalogue.commissioning import Blocker
 from prm9tool.catalogue.variant import Config
 from prm9tool.characterize.procedures import LOOPS, gain_names
+from prm9tool.i18n import unbroken_units
 from prm9tool.model.access import AccessModel
 from prm9tool.model.document import ParameterDocument
 from prm9tool.online.connection_protocol import StatusView
@@ -138,7 +139,7 @@ class TuningWindow(QDialog):
         """Show ``render()`` in the status line; a language change renders it again."""
         self._render, self._failure = render, failure
         self._shown = render()
-        self.status.setText(self._shown)
+        self.status.setText(unbroken_units(self._shown))
 
     def _on_online_changed(self, online: bool) -> None:
         if self.runner.busy:
@@ -236,7 +237,7 @@ class TuningWindow(QDialog):
                 "The oscilloscope's setpoint generator is running: the test stops it (start it "
                 "again afterwards)."
             )
-        answer = QMessageBox.question(self, self.tr("Tuning"), text)
+        answer = QMessageBox.question(self, self.tr("Tuning"), unbroken_units(text))
         return answer == QMessageBox.StandardButton.Yes
 
     def profile(self) -> Profile:

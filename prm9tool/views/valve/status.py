@@ -7,7 +7,15 @@ The LEDs blink by themselves in the pattern the valve reports (manual tables 5-1
 from __future__ import annotations
 
 from PySide6.QtCore import QEvent, QPointF, QRectF, Qt, QTimer
-from PySide6.QtGui import QColor, QPainter, QPaintEvent, QPen, QRadialGradient
+from PySide6.QtGui import (
+    QColor,
+    QPainter,
+    QPaintEvent,
+    QPen,
+    QRadialGradient,
+    QResizeEvent,
+    QShowEvent,
+)
 from PySide6.QtWidgets import (
     QDialog,
     QFormLayout,
@@ -185,7 +193,28 @@ class ValveStatusWindow(QDialog):
         """Retranslate when the program language changes."""
         if event.type() == QEvent.Type.LanguageChange:
             self.retranslate()
+            QTimer.singleShot(0, self, self._keep_whole)
         super().changeEvent(event)
+
+    def showEvent(self, event: QShowEvent) -> None:
+        """Shown: at least as high as its wrapped texts need at its width."""
+        super().showEvent(event)
+        self._keep_whole()
+
+    def resizeEvent(self, event: QResizeEvent) -> None:
+        """Narrower: the wrapped texts take more lines; the window's least height follows."""
+        super().resizeEvent(event)
+        self._keep_whole()
+
+    def _keep_whole(self) -> None:
+        """The least height is what the layout needs at this width, wrapped texts included (a
+        dialog's minimum ignores them: the LEDs' box lost its bottom edge; issue 34)."""
+        layout = self.layout()
+        if layout is None or not layout.hasHeightForWidth():
+            return
+        needed = layout.totalHeightForWidth(self.width())
+        if needed > 0 and needed != self.minimumHeight():
+            self.setMinimumHeight(needed)
 
     def _on_connection_online_changed(self, online: bool) -> None:
         if not online:
@@ -199,6 +228,7 @@ class ValveStatusWindow(QDialog):
     def _on_connection_status_changed(self, status: StatusView) -> None:
         self._status = status
         self._show_status(status)
+        QTimer.singleShot(0, self, self._keep_whole)  # a longer text may need another line
 
     def _show_device(self, info: ValveIdentity | None) -> None:
         online = self._connection.is_online
