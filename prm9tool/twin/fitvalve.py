@@ -18,7 +18,7 @@ from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
 from prm9tool.device.emulator.twinfile import write_twin
-from prm9tool.twin.identify import Fit, Steps, fit, from_characterization
+from prm9tool.twin.identify import FITTED, JOINT, Fit, Steps, fit, from_characterization
 
 if TYPE_CHECKING:
     from prm9tool.analysis.profile import Profile
@@ -46,7 +46,8 @@ def write_fitted(
 ) -> Fit:
     """Fit ``recordings`` (from the factory plant, :data:`~.identify.FITTED`) and write the
     twin file ``path``; returns the fit."""
-    result = fit(recordings)
+    joint = any(r.kind != "step" for r in recordings)
+    result = fit(recordings, free=JOINT if joint else FITTED)
     write_twin(path, result, serial, type_key, firmware, source, recordings[0].values)
     return result
 
