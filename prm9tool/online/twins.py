@@ -91,3 +91,17 @@ def twin_plant(serial: int | None, url: str | None = None) -> TwinPlant | None:
         if not choice.problem:
             return TwinPlant(read_twin(choice.path).plant, choice.path, choice.date, serial)
     return None
+
+
+def spec_serial(spec: str) -> int | None:
+    """The serial of an emulator spec (``TYPEKEY:SERIAL``, or ``twin:FILE``: its file's);
+    None when it has none that can be read."""
+    from prm9tool.twin.twinfile import read_twin
+
+    if spec.startswith("twin:"):
+        try:
+            return read_twin(spec[len("twin:") :]).serial
+        except Prm9Error:
+            return None
+    tail = spec.rpartition(":")[2]
+    return int(tail) if tail.isdigit() else None

@@ -158,7 +158,6 @@ def simulate_all(
     to the next, so the spool comes to rest where friction holds it, not at a fresh 0.
     ``offsets``: cycles added to each recording's hold (:func:`dither_offsets`), so that the
     simulated dither is in the phase the measured spool shows at the recording's start."""
-    from prm9tool.catalogue import CATALOGUE
     from prm9tool.catalogue.typekey import TypeKey
     from prm9tool.characterize.rig import EmulatorRig
     from prm9tool.device.emulator import EmulatedValve
@@ -245,7 +244,13 @@ def dither_offsets(recordings: Sequence[Steps], plant: PlantConstants) -> list[i
         period = round(CYCLE_HZ / dither_frequency_hz(steps))
         scores: dict[int, float] = {}
 
-        def score(extra: int, i: int = i, steps: Steps = steps, period: int = period) -> float:
+        def score(
+            extra: int,
+            i: int = i,
+            steps: Steps = steps,
+            period: int = period,
+            scores: dict[int, float] = scores,
+        ) -> float:
             extra %= period
             if extra not in scores:
                 played = simulate_all(recordings[: i + 1], plant, [*offsets, extra])[-1]
@@ -300,8 +305,13 @@ def fit(
     kinds = {r.kind for r in recordings}
     total = sum(lengths)
     weights = [  # each kind of measurement counts alike, whatever its number of samples
-        math.sqrt(total / (len(kinds) * sum(n for n, o in zip(lengths, recordings, strict=True)
-                                            if o.kind == r.kind)))
+        math.sqrt(
+            total
+            / (
+                len(kinds)
+                * sum(n for n, o in zip(lengths, recordings, strict=True) if o.kind == r.kind)
+            )
+        )
         for r in recordings
     ]
 
@@ -379,7 +389,9 @@ def fit(
         constants.append(FittedConstant(name, float(initial[i]), value, rse, determined, partner))
     fitted: dict[str, Any] = {c.name: c.value for c in constants}
     plant = replace(base, **fitted)
-    final = cached(np.array([math.log(c.value / o) for c, o in zip(constants, origin)]))
+    final = cached(
+        np.array([math.log(c.value / o) for c, o in zip(constants, origin, strict=True)])
+    )
     spans = np.cumsum([0, *lengths])
     parts = {  # unweighted, per kind of measurement
         kind: np.concatenate(
