@@ -50,15 +50,14 @@ FITTED = (  # the spool's dynamics, the solenoid and its force, friction
     "force_lag_s",
     "coil_l_h",
 )
-# with the sweep and the static characteristic (:func:`from_characterization`, ``joint``): the
-# centring spring (the static gain's and the sweep's low end) and the break-away friction
-JOINT = (*FITTED, "spring_n_per_m", "static_friction_n")
-SWEEP_AT = (0.3, 0.6, 1.0, 1.5, 2.0)  # sweep windows at these multiples of the −3 dB frequency
-STATIC_AT = (0.0, 50.0)  # the triangle's windows where it passes these demands (%), going up
+# with the static characteristic (:func:`from_characterization`, ``joint``): the
+# break-away friction too (the spring stays: only its ratio to the force constant is seen)
+JOINT = (*FITTED, "static_friction_n")
+STATIC_AT = (0.0,)  # the triangle's windows where it passes these demands (%), going up
 STATIC_WINDOW_S = 0.2  # each static window's span
-# a window's lead-in, not in the residual: the sweep's spool meets the valve's within a few
-# periods of its loop; on the slow triangle the integrator has to take up the ramp first
-SWEEP_LEAD_S = 0.1
+# a window's lead-in, not in the residual: on the slow triangle the integrator has to take
+# up the ramp first
+JOINT_EVALUATIONS = 12  # the joint fit's, from the steps' solution (each plays every window)
 STATIC_LEAD_S = 0.3
 BOUND = math.log(10.0)  # a constant moves at most tenfold from its start
 DETERMINED_RSE = 0.05  # relative standard error below which a constant counts as determined
@@ -67,6 +66,7 @@ STEP = 0.03  # the Jacobian's finite difference, in log(constant): 3 %
 BETWEEN_S = 0.1  # the hold between two recordings played on one valve
 MAX_LAG = 25  # cycles: the override's latency to the demand is looked for up to 5 ms
 ALIGN_COARSE = 4  # cycles: the first search of a recording's dither offset
+TASK_CYCLES = 5  # the firmware's 1 ms task: a window's demand meets it in one of 5 phases
 EXPLAINED_PCT = 0.12  # rms residual of an explained recording: two LVDT steps (0.061 % each)
 
 
@@ -81,8 +81,9 @@ class Steps:
     actual: np.ndarray
     rate_hz: float = CYCLE_HZ
     demand: bool = False  # the stimulus is the measured demand, not the override written
-    kind: str = "step"  # "step", "sweep" (the frequency response's) or "static" (the triangle)
+    kind: str = "step"  # "step", or "static": a window of the static characteristic's triangle
     skip: int = 0  # samples at the start left out of the residual (a window's lead-in)
+    tail: int = 0  # samples at the end left out (where a demand's latency ran out of window)
 
 
 @dataclass(frozen=True)
@@ -107,7 +108,7 @@ class Fit:
     max_pct: float
     start_rms_pct: float
     evaluations: int
-    # rms residual per kind of measurement fitted ("step", "sweep", "static": the branches)
+    # rms residual per kind of measurement fitted ("step", "static": the triangle's windows)
     parts_rms_pct: dict[str, float] = field(default_factory=dict)
 
     @property
@@ -234,14 +235,17 @@ def dither_offsets(recordings: Sequence[Steps], plant: PlantConstants) -> list[i
     offsets), the offset within one dither period whose simulated step, with ``plant``, is
     nearest the measured one: first every :data:`ALIGN_COARSE` cycles, then each cycle around
     the best (the fit aligns on its start plant, then again on the fitted one). Zero for a
-    window of the sweep or the triangle and where the rest does not show the dither
+    window of the triangle and where the rest does not show the dither
     (:func:`_rest`)."""
     offsets: list[int] = []
     for i, steps in enumerate(recordings):
-        if steps.kind != "step" or not _rest(steps):
+        window = steps.kind != "step"
+        if not window and not _rest(steps):
             offsets.append(0)
             continue
-        period = round(CYCLE_HZ / dither_frequency_hz(steps))
+        # a window: the phase of the firmware's 1 ms task its demand meets (the dither's at
+        # 10 % of motion matters less); a step: the dither's phase at its rest
+        period = TASK_CYCLES if window else round(CYCLE_HZ / dither_frequency_hz(steps))
         scores: dict[int, float] = {}
 
         def score(
@@ -254,14 +258,42 @@ def dither_offsets(recordings: Sequence[Steps], plant: PlantConstants) -> list[i
             extra %= period
             if extra not in scores:
                 played = simulate_all(recordings[: i + 1], plant, [*offsets, extra])[-1]
-                n = min(len(played), len(steps.actual))
-                scores[extra] = float(np.mean((played[:n] - steps.actual[:n]) ** 2))
+                end = min(len(played), len(steps.actual) - steps.tail)
+                error = played[steps.skip : end] - steps.actual[steps.skip : end]
+                scores[extra] = float(np.mean(error**2))
             return scores[extra]
 
-        best = min(range(0, period, ALIGN_COARSE), key=score)
-        best = min(range(best - ALIGN_COARSE + 1, best + ALIGN_COARSE), key=score) % period
+        coarse = 1 if window else ALIGN_COARSE
+        best = min(range(0, period, coarse), key=score)
+        if coarse > 1:
+            best = min(range(best - coarse + 1, best + coarse), key=score) % period
         offsets.append(best)
     return offsets
+
+
+def window_shifts(
+    recordings: Sequence[Steps], plant: PlantConstants, offsets: Sequence[int]
+) -> list[int]:
+    """Per recording, the samples by which the simulated window is moved against the measured
+    one (0 for a step): the shift, up to the window's tail, that explains it best. A window
+    starts in the middle of a test, and the valve's own latency from the override to the
+    response on that link is not in its record; the simulated window from a hold is otherwise
+    the same motion."""
+    played = simulate_all(recordings, plant, offsets)
+    out = []
+    for steps, simulated in zip(recordings, played, strict=True):
+        if steps.kind == "step" or not steps.tail:
+            out.append(0)
+            continue
+        end = min(len(simulated), len(steps.actual)) - steps.tail
+        measured = steps.actual[steps.skip : end]
+
+        errors = {
+            k: float(np.mean((simulated[steps.skip - k : end - k] - measured) ** 2))
+            for k in range(-steps.tail + 1, steps.tail)
+        }
+        out.append(min(errors, key=errors.__getitem__))
+    return out
 
 
 def fit(
@@ -297,11 +329,12 @@ def fit(
     first_fit: Fit | None = None
     if len(only_steps) < len(recordings) and only_steps:
         # the steps first (a few seconds), the joint residual from their plant on: each of its
-        # evaluations plays the sweep and the triangle too (30 s of valve time by default)
+        # evaluations plays the triangle's windows too
         first_fit = fit(only_steps, start, [n for n in free if n in FITTED], max_evaluations)
+        max_evaluations = JOINT_EVALUATIONS
         base = replace(base, **{c.name: c.value for c in first_fit.constants})
         origin = np.array([float(getattr(base, n)) for n in free])
-    lengths = [len(r.actual) - r.skip for r in recordings]
+    lengths = [len(r.actual) - r.skip - r.tail for r in recordings]
     kinds = {r.kind for r in recordings}
     total = sum(lengths)
     weights = [  # each kind of measurement counts alike, whatever its number of samples
@@ -316,14 +349,19 @@ def fit(
     ]
 
     offsets = dither_offsets(recordings, base)
+    shifts = window_shifts(recordings, base, offsets)
 
     def residual(x: np.ndarray) -> np.ndarray:
         parts = []
         played = simulate_all(recordings, plant_at(x), offsets)
         for i, (one, simulated) in enumerate(zip(recordings, played, strict=True)):
-            part = np.zeros(len(one.actual) - one.skip)  # (a simulation ends where it ends)
-            n = min(len(simulated), len(one.actual)) - one.skip
-            part[:n] = simulated[one.skip : one.skip + n] - one.actual[one.skip : one.skip + n]
+            end = len(one.actual) - one.tail
+            part = np.zeros(end - one.skip)  # (a simulation ends where it ends)
+            k = shifts[i]
+            n = min(len(simulated) + k, end) - one.skip
+            part[:n] = (
+                simulated[one.skip - k : one.skip - k + n] - one.actual[one.skip : one.skip + n]
+            )
             parts.append(weights[i] * part)
         return np.concatenate(parts)
 
@@ -354,8 +392,9 @@ def fit(
     # the spool follows the dither with a lag the plant sets: aligned again on the fitted
     # plant, and fitted on from there when that moved an offset
     again = dither_offsets(recordings, plant_at(result.x))
-    if again != offsets:
-        offsets[:] = again
+    moved = window_shifts(recordings, plant_at(result.x), again)
+    if again != offsets or moved != shifts:
+        offsets[:], shifts[:] = again, moved
         memo.clear()
         evaluations = int(result.nfev)
         result = least_squares(
@@ -427,13 +466,20 @@ def _windows(whole: Steps, centres: Sequence[tuple[int, float]], lead_s: float) 
     evaluation (30 s of valve time with the default profile) would make the fit minutes long."""
     fs = whole.rate_hz
     lead = round(lead_s * fs)
+    tail = math.ceil(MAX_LAG * fs / CYCLE_HZ) + 1  # the latency's shift fills these
     out = []
     for centre, span_s in centres:
         a = max(0, centre - round(span_s * fs / 2) - lead)
         b = min(len(whole.stimulus), centre + round(span_s * fs / 2))
         if b - a > lead + round(span_s * fs / 2):
             out.append(
-                replace(whole, stimulus=whole.stimulus[a:b], actual=whole.actual[a:b], skip=lead)
+                replace(
+                    whole,
+                    stimulus=whole.stimulus[a:b],
+                    actual=whole.actual[a:b],
+                    skip=lead,
+                    tail=tail,
+                )
             )
     return out
 
@@ -454,9 +500,11 @@ def from_characterization(run: Characterization, joint: bool = True) -> list[Ste
     """The position-loop steps of a characterization run (any link) as recordings to fit: each
     step's measured demand is its stimulus (through the transparent chain the run used, the
     demand is the override's value), from the spool at rest at the step's start. ``joint``:
-    the frequency response's sweep (its measured demand, ``kind="sweep"``) and the static
-    characteristic's triangle (the override written, through the valve's own chain,
-    ``kind="static"``) follow, where the run has them complete, in the run's order."""
+    windows of the static characteristic's triangle (the override written, through the
+    valve's own chain, ``kind="static"``: where it passes 0 going up and going down) follow,
+    where the run has it complete. The frequency response's sweep is not among them: a window
+    of it simulated from a hold does not reproduce the valve's own sweep even on the valve's
+    own plant (docs/twin.md), so it would pull the constants off."""
     lp = LOOPS["position"]
     out = []
     for step in run.steps:
@@ -485,24 +533,7 @@ def from_characterization(run: Characterization, joint: bool = True) -> list[Ste
     if not joint or run.loop != "position":
         return out
     base = out[0]
-    bode, static = run.bode, run.static
-    fs = run.info.sample_rate_hz
-    if bode is not None and not bode.lost_samples and not bode.held_s:
-        demand = np.asarray(bode.record.channels[lp.setpoint], dtype=float)
-        actual = np.asarray(bode.record.channels[lp.actual], dtype=float)
-        if np.isfinite(demand).all() and np.isfinite(actual).all():
-            f0 = run.profile.bode_f_min_hz
-            f1 = bode.limited_to_hz or run.profile.bode_f_max_hz
-            near = bode.response.bandwidth_hz()
-            near = near if math.isfinite(near) else bode.response.phase_90_hz()
-            near = near if math.isfinite(near) else f1 / 4.0
-            centres = []
-            for f in (near * k for k in SWEEP_AT):
-                if 1.5 * f0 <= f <= f1 / 1.1:  # the chirp's frequency at t: f0·(f1/f0)^(t/T)
-                    t = len(demand) / fs * math.log(f / f0) / math.log(f1 / f0)
-                    centres.append((round(t * fs), max(2.0 / f, 0.05)))
-            sweep = replace(base, stimulus=demand, actual=actual, kind="sweep")
-            out += _windows(sweep, centres, SWEEP_LEAD_S)
+    static = run.static
     if static is not None and static.response_key == lp.actual:
         demand = np.asarray(static.demand, dtype=float)
         actual = np.asarray(static.record.channels[lp.actual], dtype=float)[: len(demand)]
