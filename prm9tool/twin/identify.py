@@ -66,6 +66,7 @@ STEP = 0.03  # the Jacobian's finite difference, in log(constant): 3 %
 BETWEEN_S = 0.1  # the hold between two recordings played on one valve
 MAX_LAG = 25  # cycles: the override's latency to the demand is looked for up to 5 ms
 ALIGN_COARSE = 4  # cycles: the first search of a recording's dither offset
+ALIGN_ROUNDS = 3  # alignments on the fitted plant, each followed by a fit from there
 TASK_CYCLES = 5  # the firmware's 1 ms task: a window's demand meets it in one of 5 phases
 EXPLAINED_PCT = 0.12  # rms residual of an explained recording: two LVDT steps (0.061 % each)
 
@@ -390,10 +391,12 @@ def fit(
         cached, x0, jac=jacobian, bounds=(-BOUND, BOUND), x_scale=1.0, max_nfev=max_evaluations
     )
     # the spool follows the dither with a lag the plant sets: aligned again on the fitted
-    # plant, and fitted on from there when that moved an offset
-    again = dither_offsets(recordings, plant_at(result.x))
-    moved = window_shifts(recordings, plant_at(result.x), again)
-    if again != offsets or moved != shifts:
+    # plant, and fitted on from there while that moves an offset (at most ALIGN_ROUNDS times)
+    for _round in range(ALIGN_ROUNDS):
+        again = dither_offsets(recordings, plant_at(result.x))
+        moved = window_shifts(recordings, plant_at(result.x), again)
+        if again == offsets and moved == shifts:
+            break
         offsets[:], shifts[:] = again, moved
         memo.clear()
         evaluations = int(result.nfev)

@@ -125,15 +125,9 @@ class EmulatorDialog(QDialog):
         self.twin.clear()
         self.twin.addItem(self.tr("none"), "")
         for choice in self._twins(self.serial.value()):
-            text = (
-                self.tr("fitted %1: %2").replace("%1", choice.date[:10]).replace("%2", choice.path)
-            )
+            text = self.tr("fitted {0}: {1}").format(choice.date[:10], choice.path)
             if choice.problem:
-                text = (
-                    self.tr("%1 (cannot be used: %2)")
-                    .replace("%1", text)
-                    .replace("%2", choice.problem)
-                )
+                text = self.tr("{0} (cannot be used: {1})").format(text, choice.problem)
             self.twin.addItem(text, "" if choice.problem else choice.path)
         self.twin.blockSignals(False)
 

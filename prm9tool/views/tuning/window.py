@@ -328,15 +328,10 @@ class TuningWindow(QDialog):
         self.stop_button.setText(self.tr("Stop"))
         if isinstance(self.runner, SimulationRunner) and self.runner.twin is not None:
             twin = self.runner.twin
-            mode = (
-                self.tr(
-                    "Offline: the tests run on the twin of serial %1 (fitted %2, %3) with the "
-                    "document's values."
-                )
-                .replace("%1", str(twin.serial))
-                .replace("%2", twin.date[:10])
-                .replace("%3", twin.path)
-            )
+            mode = self.tr(
+                "Offline: the tests run on the twin of serial {0} (fitted {1}, {2}) with the "
+                "document's values."
+            ).format(twin.serial, twin.date[:10], twin.path)
         elif isinstance(self.runner, SimulationRunner):
             mode = (
                 self.tr("Offline: the tests run on an emulated valve with the document's values.")

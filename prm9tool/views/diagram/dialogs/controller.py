@@ -173,10 +173,8 @@ class ControllerDialog(BlockDialog):
         twin = getattr(self.simulator, "twin", None)
         if twin is None:
             return self.tr("Simulated on the emulator's plant (no twin of this serial).")
-        return (
-            self.tr("Simulated on the twin of serial %1 (fitted %2).")
-            .replace("%1", str(twin.serial))
-            .replace("%2", twin.date[:10])
+        return self.tr("Simulated on the twin of serial {0} (fitted {1}).").format(
+            twin.serial, twin.date[:10]
         )
 
     # --- sliders ------------------------------------------------------------------------------------
