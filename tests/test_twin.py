@@ -140,8 +140,11 @@ def test_a_characterization_run_is_fitted_from_its_steps(tmp_path):
         }
     )
     run = characterize(EmulatorRig(valve), profile)
-    recordings = from_characterization(run)
+    recordings = from_characterization(run, joint=False)
     assert len(recordings) == 2  # 0 → 25 %, 0 → 90 %
+    # with the static characteristic: the triangle's windows through 0 % going up and down
+    windows = [r for r in from_characterization(run) if r.kind == "static"]
+    assert windows and all(r.skip > 0 and r.tail > 0 for r in windows)
     result = fit(recordings, free=("spool_mass_kg", "force_n_per_a", "damping_n_s_per_m"))
     assert result.explained, result.rms_pct  # the steps played in the run's order (docs/twin.md)
     assert result.constant("force_n_per_a").value == pytest.approx(24.0, rel=0.05)
