@@ -88,6 +88,11 @@ def run_one(name: str, key: str, changed: dict[str, Any], params: dict[str, int]
         state = "determined" if c.determined else "NOT determined (kept)"
         mark = " *" if c.name in changed else ""
         print(f"    {c.name}{mark}: true {true:g}, fitted {c.value:.4g}, {state}")
+    fitted = {c.name for c in fit.constants}
+    for constant, true in changed.items():
+        if constant not in fitted:
+            print(f"    {constant} *: true {true:g}, NOT fitted (the twin keeps "
+                  f"{getattr(fit.plant, constant):g}: not in this run's data)")  # fmt: skip
     met = True
     print(f"    {'figure':<28} {'valve':>9} {'twin':>9}  twin/valve")
     for s in sides:
@@ -104,7 +109,10 @@ def main() -> None:
     parser.add_argument("--valve", help="only the valve whose name starts with this")
     args = parser.parse_args()
     chosen = [v for v in VALVES if args.valve is None or v[0].startswith(args.valve)]
-    results = {v[0]: run_one(*v) for v in chosen[: 2 if args.quick else None]}
+    results = {}
+    for valve in chosen[: 2 if args.quick else None]:
+        results[valve[0]] = run_one(*valve)
+        print(flush=True)
     print("\ntargets met:", ", ".join(f"{k}: {'yes' if ok else 'NO'}" for k, ok in results.items()))
 
 

@@ -333,7 +333,8 @@ def fit(
         # evaluations plays the triangle's windows too
         first_fit = fit(only_steps, start, [n for n in free if n in FITTED], max_evaluations)
         max_evaluations = JOINT_EVALUATIONS
-        base = replace(base, **{c.name: c.value for c in first_fit.constants})
+        stepped: dict[str, Any] = {c.name: c.value for c in first_fit.constants}
+        base = replace(base, **stepped)
         origin = np.array([float(getattr(base, n)) for n in free])
     lengths = [len(r.actual) - r.skip - r.tail for r in recordings]
     kinds = {r.kind for r in recordings}
