@@ -38,6 +38,7 @@ if TYPE_CHECKING:
     from prm9tool.characterize.run import Characterization
     from prm9tool.device.emulator.constants import PlantConstants
 
+POSITION_MODE = 2  # CTRLMODE of spool position control (an E04's position loop)
 CYCLE_HZ = 5000.0  # the emulator's loop: one sample per 200 µs cycle
 # 0 → ±5, ±25, ±90 % and back: small steps see the friction, large ones the force limits
 LEVELS_PCT = (0.0, 25.0, 0.0, -25.0, 0.0, 5.0, 0.0, -5.0, 0.0, 90.0, 0.0, -90.0, 0.0)
@@ -334,6 +335,13 @@ def fit(
         first_fit = fit(only_steps, start, [n for n in free if n in FITTED], max_evaluations)
         max_evaluations = JOINT_EVALUATIONS
         stepped: dict[str, Any] = {c.name: c.value for c in first_fit.constants}
+        if "static_friction_n" in free and "coulomb_friction_n" in stepped:
+            # the break-away friction from the start's ratio to the sliding friction the steps
+            # found: below that sliding friction it would hardly act, and the fit not see it
+            ratio = base.static_friction_n / base.coulomb_friction_n
+            stepped["static_friction_n"] = max(
+                base.static_friction_n, ratio * stepped["coulomb_friction_n"]
+            )
         base = replace(base, **stepped)
         origin = np.array([float(getattr(base, n)) for n in free])
     lengths = [len(r.actual) - r.skip - r.tail for r in recordings]
@@ -509,7 +517,15 @@ def from_characterization(run: Characterization, joint: bool = True) -> list[Ste
     where the run has it complete. The frequency response's sweep is not among them: a window
     of it simulated from a hold does not reproduce the valve's own sweep even on the valve's
     own plant (docs/twin.md), so it would pull the constants off."""
+    from prm9tool.catalogue.typekey import Config, TypeKey
+
     lp = LOOPS["position"]
+    values = dict(run.parameters)
+    e04 = TypeKey.parse(run.info.type_key).variant.config is Config.E04
+    if e04 and run.loop == "position" and "CTRLMODE" not in values:
+        # the run tested an E04's position loop, so it was not in control mode 4 (the process
+        # loop, its default); the run does not keep the mode: spool position control (2)
+        values["CTRLMODE"] = POSITION_MODE
     out = []
     for step in run.steps:
         if step.loop != "position":
@@ -525,7 +541,7 @@ def from_characterization(run: Characterization, joint: bool = True) -> list[Ste
         out.append(
             Steps(
                 run.info.type_key,
-                dict(run.parameters),
+                values,
                 demand,
                 actual,
                 run.info.sample_rate_hz,
