@@ -335,13 +335,6 @@ def fit(
         first_fit = fit(only_steps, start, [n for n in free if n in FITTED], max_evaluations)
         max_evaluations = JOINT_EVALUATIONS
         stepped: dict[str, Any] = {c.name: c.value for c in first_fit.constants}
-        if "static_friction_n" in free and "coulomb_friction_n" in stepped:
-            # the break-away friction from the start's ratio to the sliding friction the steps
-            # found: below that sliding friction it would hardly act, and the fit not see it
-            ratio = base.static_friction_n / base.coulomb_friction_n
-            stepped["static_friction_n"] = max(
-                base.static_friction_n, ratio * stepped["coulomb_friction_n"]
-            )
         base = replace(base, **stepped)
         origin = np.array([float(getattr(base, n)) for n in free])
     lengths = [len(r.actual) - r.skip - r.tail for r in recordings]
