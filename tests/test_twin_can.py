@@ -5,10 +5,13 @@ and characterizes the twin as the valve was."""
 
 from __future__ import annotations
 
+import contextlib
 import json
+import threading
 from dataclasses import replace
 
 import can
+import numpy as np
 import pytest
 from support.can_link_rig import LinkRig, _wrap_sdo
 from support.canopen_rig import BOOT_S, unique_channel
@@ -35,6 +38,26 @@ bode_f_max_hz = 100
 bode_duration_s = 3
 static_period_s = 4
 """
+
+
+@contextlib.contextmanager
+def emulator_lag(valve):
+    """How far the emulated valve's simulation fell behind real time while the block ran,
+    sampled every 2 ms (as tests/test_characterize_links.py measures it)."""
+    lags: list[float] = []
+    done = threading.Event()
+
+    def watch() -> None:
+        while not done.wait(0.002):
+            lags.append(valve.pacer.lag_s())
+
+    watcher = threading.Thread(target=watch)
+    watcher.start()
+    try:
+        yield lags
+    finally:
+        done.set()
+        watcher.join()
 
 
 @pytest.fixture
@@ -65,11 +88,16 @@ def test_a_manual_only_can_valve_is_identified_twinned_and_compared(
     (tmp_path / "short.toml").write_text(PROFILE, encoding="utf-8")
     out, report = tmp_path / "twin.toml", tmp_path / "fit.json"
     url = f"sqlite:///{tmp_path / 'history.db'}"
-    code = main(["--fit-twin", str(out), "--device", "can:10", "--can-interface", "virtual",
-                 "--can-channel", manual_only_valve.options.channel, "--profile",
-                 str(tmp_path / "short.toml"), "--type-key", E02_CA, "--history-db", url,
-                 "--json", str(report)])  # fmt: skip
+    with emulator_lag(manual_only_valve.valve) as lags:
+        code = main(["--fit-twin", str(out), "--device", "can:10", "--can-interface", "virtual",
+                     "--can-channel", manual_only_valve.options.channel, "--profile",
+                     str(tmp_path / "short.toml"), "--type-key", E02_CA, "--history-db", url,
+                     "--json", str(report)])  # fmt: skip
     err = capsys.readouterr().err
+    behind = float(np.percentile(lags, 90)) if lags else 0.0
+    if behind > 0.003:  # the valve is in this process: a loaded PC made it lag real time, so
+        # its TPDOs describe the PC's load, not the valve (as tests/test_characterize_links)
+        pytest.skip(f"the emulated valve was {behind * 1000:.0f} ms behind real time")
     if code in (ExitCode.COMMUNICATION, ExitCode.OUT_OF_LIMITS) and (
         "nothing was interpolated" in err or "too seldom" in err or "a sweep needs" in err
     ):  # a PC too loaded to keep the bus's pace: the rig refused, said so, touched nothing
