@@ -1755,6 +1755,10 @@ Poslední akce možná nebyla dokončena. Uložte svou práci pod novým názvem
             <translation>žádné: soustava emulátoru</translation>
         </message>
         <message>
+            <source>A twin brings its own type key, serial number and parameter set.</source>
+            <translation>Dvojče si přináší vlastní typový klíč, výrobní číslo a sadu parametrů.</translation>
+        </message>
+        <message>
             <source>Browse…</source>
             <translation>Procházet…</translation>
         </message>

@@ -1745,6 +1745,10 @@ Die letzte Aktion wurde womöglich nicht vollständig ausgeführt. Speichern Sie
             <translation>keine: die Strecke des Emulators</translation>
         </message>
         <message>
+            <source>A twin brings its own type key, serial number and parameter set.</source>
+            <translation>Ein Zwilling bringt seinen eigenen Typenschlüssel, seine Seriennummer und seinen Parametersatz mit.</translation>
+        </message>
+        <message>
             <source>Browse…</source>
             <translation>Durchsuchen…</translation>
         </message>

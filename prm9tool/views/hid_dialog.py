@@ -97,6 +97,9 @@ class EmulatorDialog(QDialog):
         self.twin = QComboBox()  # "" (no twin) or a twin file of the serial's history
         self.twin_file = QLineEdit()
         self.twin_file.setPlaceholderText(self.tr("none: the emulator's plant"))
+        self.twin_file.setToolTip(
+            self.tr("A twin brings its own type key, serial number and parameter set.")
+        )
         self.browse = QPushButton(self.tr("Browse…"))
         self.browse.clicked.connect(self._on_browse_clicked)
         self.twin.currentIndexChanged.connect(self._on_twin_chosen)
