@@ -489,6 +489,19 @@ def _windows(whole: Steps, centres: Sequence[tuple[int, float]], lead_s: float) 
     return out
 
 
+def _with_mode(type_key: str, parameters: dict[str, int], loop: str) -> dict[str, int]:
+    """A run's parameter set with the control mode it ran in where it does not keep it: a
+    run that tested an E04's position loop was not in control mode 4 (the process loop, the
+    E04's default), so spool position control (2)."""
+    from prm9tool.catalogue.typekey import Config, TypeKey
+
+    values = dict(parameters)
+    e04 = TypeKey.parse(type_key).variant.config is Config.E04
+    if e04 and loop == "position" and "CTRLMODE" not in values:
+        values["CTRLMODE"] = POSITION_MODE
+    return values
+
+
 def _write(valve: Any, values: dict[str, int]) -> None:
     """Write ``values`` (raw) into the emulated ``valve``'s working memory."""
     from prm9tool.catalogue import CATALOGUE
@@ -510,15 +523,8 @@ def from_characterization(run: Characterization, joint: bool = True) -> list[Ste
     where the run has it complete. The frequency response's sweep is not among them: a window
     of it simulated from a hold does not reproduce the valve's own sweep even on the valve's
     own plant (docs/twin.md), so it would pull the constants off."""
-    from prm9tool.catalogue.typekey import Config, TypeKey
-
     lp = LOOPS["position"]
-    values = dict(run.parameters)
-    e04 = TypeKey.parse(run.info.type_key).variant.config is Config.E04
-    if e04 and run.loop == "position" and "CTRLMODE" not in values:
-        # the run tested an E04's position loop, so it was not in control mode 4 (the process
-        # loop, its default); the run does not keep the mode: spool position control (2)
-        values["CTRLMODE"] = POSITION_MODE
+    values = _with_mode(run.info.type_key, run.parameters, run.loop)
     out = []
     for step in run.steps:
         if step.loop != "position":
@@ -600,7 +606,8 @@ def from_report(path: str | Path) -> list[Steps]:
         actual = table[:, head.index(lp.actual)]
         if not (np.isfinite(demand).all() and np.isfinite(actual).all()):
             continue
-        out.append(Steps(type_key, dict(parameters), demand, actual, rate, demand=True))
+        values = _with_mode(type_key, parameters, str(report.get("loop", "position")))
+        out.append(Steps(type_key, values, demand, actual, rate, demand=True))
     if not out:
         raise Prm9Error(f"{where}: no complete position-loop step to fit (its CSV files?)")
     return out
