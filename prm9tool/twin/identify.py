@@ -55,6 +55,8 @@ FITTED = (  # the spool's dynamics, the solenoid and its force, friction
 # break-away friction too (the spring stays: only its ratio to the force constant is seen)
 JOINT = (*FITTED, "static_friction_n")
 STATIC_AT = (0.0,)  # the triangle's windows where it passes these demands (%), going up
+SWEEP_AT = (0.5, 1.0, 1.5)  # sweep windows at these multiples of the −3 dB frequency
+SWEEP_LEAD_S = 0.1
 STATIC_WINDOW_S = 0.2  # each static window's span
 # a window's lead-in, not in the residual: on the slow triangle the integrator has to take
 # up the ramp first
@@ -68,7 +70,9 @@ BETWEEN_S = 0.1  # the hold between two recordings played on one valve
 MAX_LAG = 25  # cycles: the override's latency to the demand is looked for up to 5 ms
 ALIGN_COARSE = 4  # cycles: the first search of a recording's dither offset
 ALIGN_ROUNDS = 3  # alignments on the fitted plant, each followed by a fit from there
-TASK_CYCLES = 5  # the firmware's 1 ms task: a window's demand meets it in one of 5 phases
+# the dither (80 Hz: 62.5 cycles) and the firmware's 1 ms task (5 cycles) repeat together
+# every 125 cycles: a window's phase of both
+PHASE_CYCLES = 125
 EXPLAINED_PCT = 0.12  # rms residual of an explained recording: two LVDT steps (0.061 % each)
 
 
@@ -86,6 +90,7 @@ class Steps:
     kind: str = "step"  # "step", or "static": a window of the static characteristic's triangle
     skip: int = 0  # samples at the start left out of the residual (a window's lead-in)
     tail: int = 0  # samples at the end left out (where a demand's latency ran out of window)
+    start: int = 0  # a window: its first sample in the record it was cut from
 
 
 @dataclass(frozen=True)
@@ -240,14 +245,23 @@ def dither_offsets(recordings: Sequence[Steps], plant: PlantConstants) -> list[i
     window of the triangle and where the rest does not show the dither
     (:func:`_rest`)."""
     offsets: list[int] = []
+    first_of: dict[str, tuple[int, int]] = {}  # a record's first window: (its start, cycles)
     for i, steps in enumerate(recordings):
         window = steps.kind != "step"
+        per = round(CYCLE_HZ / steps.rate_hz)
+        if window and steps.kind in first_of:
+            # a later window of the same record: the dither and the 1 ms task are where they
+            # were that many samples after the first window, as in the valve's record
+            start, cycles = first_of[steps.kind]
+            wanted = cycles + (steps.start - start) * per
+            offsets.append((wanted - _cycles_before(recordings, offsets, i)) % PHASE_CYCLES)
+            continue
         if not window and not _rest(steps):
             offsets.append(0)
             continue
-        # a window: the phase of the firmware's 1 ms task its demand meets (the dither's at
-        # 10 % of motion matters less); a step: the dither's phase at its rest
-        period = TASK_CYCLES if window else round(CYCLE_HZ / dither_frequency_hz(steps))
+        # the first window of a record: the phase of the dither and of the firmware's 1 ms task
+        # it meets; a step: the dither's phase at its rest
+        period = PHASE_CYCLES if window else round(CYCLE_HZ / dither_frequency_hz(steps))
         scores: dict[int, float] = {}
 
         def score(
@@ -265,12 +279,23 @@ def dither_offsets(recordings: Sequence[Steps], plant: PlantConstants) -> list[i
                 scores[extra] = float(np.mean(error**2))
             return scores[extra]
 
-        coarse = 1 if window else ALIGN_COARSE
-        best = min(range(0, period, coarse), key=score)
-        if coarse > 1:
-            best = min(range(best - coarse + 1, best + coarse), key=score) % period
+        best = min(range(0, period, ALIGN_COARSE), key=score)
+        best = min(range(best - ALIGN_COARSE + 1, best + ALIGN_COARSE), key=score) % period
         offsets.append(best)
+        if window:
+            first_of[steps.kind] = (steps.start, _cycles_before(recordings, offsets, i))
     return offsets
+
+
+def _cycles_before(recordings: Sequence[Steps], offsets: Sequence[int], i: int) -> int:
+    """Cycles :func:`simulate_all` plays before recording ``i``'s own samples (the holds, with
+    ``offsets[i]`` when it is given, and the recordings before it)."""
+    cycles = 0
+    for j in range(i + 1):
+        cycles += round(BETWEEN_S * CYCLE_HZ) + (offsets[j] if j < len(offsets) else 0)
+        if j < i:
+            cycles += len(recordings[j].stimulus) * round(CYCLE_HZ / recordings[j].rate_hz)
+    return cycles
 
 
 def window_shifts(
@@ -484,6 +509,7 @@ def _windows(whole: Steps, centres: Sequence[tuple[int, float]], lead_s: float) 
                     actual=whole.actual[a:b],
                     skip=lead,
                     tail=tail,
+                    start=a,
                 )
             )
     return out
@@ -552,7 +578,24 @@ def from_characterization(run: Characterization, joint: bool = True) -> list[Ste
     if not joint or run.loop != "position":
         return out
     base = out[0]
-    static = run.static
+    bode, static = run.bode, run.static
+    fs = run.info.sample_rate_hz
+    if bode is not None and not bode.lost_samples and not bode.held_s:
+        demand = np.asarray(bode.record.channels[lp.setpoint], dtype=float)
+        actual = np.asarray(bode.record.channels[lp.actual], dtype=float)
+        if np.isfinite(demand).all() and np.isfinite(actual).all():
+            f0 = run.profile.bode_f_min_hz
+            f1 = bode.limited_to_hz or run.profile.bode_f_max_hz
+            near = bode.response.bandwidth_hz()
+            near = near if math.isfinite(near) else bode.response.phase_90_hz()
+            near = near if math.isfinite(near) else f1 / 4.0
+            centres = []
+            for f in (near * k for k in SWEEP_AT):
+                if 1.5 * f0 <= f <= f1 / 1.1:  # the chirp's frequency at t: f0·(f1/f0)^(t/T)
+                    t = len(demand) / fs * math.log(f / f0) / math.log(f1 / f0)
+                    centres.append((round(t * fs), max(2.0 / f, 0.05)))
+            sweep = replace(base, stimulus=demand, actual=actual, kind="sweep")
+            out += _windows(sweep, centres, SWEEP_LEAD_S)
     if static is not None and static.response_key == lp.actual:
         demand = np.asarray(static.demand, dtype=float)
         actual = np.asarray(static.record.channels[lp.actual], dtype=float)[: len(demand)]
