@@ -109,7 +109,8 @@ def test_a_manual_only_can_valve_is_identified_twinned_and_compared(
     fit = json.loads(report.read_text(encoding="utf-8"))
     records = prm9tool.history.records(4401, url)
     assert [r["operation"] for r in records] == ["characterization", "twin"]
-    proof = {row["figure"]: row for row in fit["comparison"]}  # the twin characterized too
+    assert "comparison" in fit, err  # the twin characterized too
+    proof = {row["figure"]: row for row in fit["comparison"]}
     assert {"bode_bandwidth_hz", "step_25_overshoot_pct", "static_dead_band_pct"} <= set(proof)
     if not fit["explained"]:
         # the valve runs in real time in this process: on a loaded PC its TPDO1 samples come
