@@ -347,6 +347,8 @@ def test_the_step_response_is_drawn_with_its_figures(qtbot, setup):
     s.simulator.response_ready.emit(response)
     assert [c.colour.name() for c in dialog.plot.curves][-1] == "#1f6fb2"
     assert "overshoot 0.0 %" in dialog.figures.text()
+    # which plant it ran on (issue 31): this simulator has no twin
+    assert "Simulated on the emulator's plant" in dialog.figures.text()
     dialog.close()
     assert s.simulator.stopped
 

@@ -140,8 +140,11 @@ def test_a_characterization_run_is_fitted_from_its_steps(tmp_path):
         }
     )
     run = characterize(EmulatorRig(valve), profile)
-    recordings = from_characterization(run)
+    recordings = from_characterization(run, joint=False)
     assert len(recordings) == 2  # 0 → 25 %, 0 → 90 %
+    # with the static characteristic: the triangle's windows through 0 % going up and down
+    windows = [r for r in from_characterization(run) if r.kind == "static"]
+    assert windows and all(r.skip > 0 and r.tail > 0 for r in windows)
     result = fit(recordings, free=("spool_mass_kg", "force_n_per_a", "damping_n_s_per_m"))
     assert result.explained, result.rms_pct  # the steps played in the run's order (docs/twin.md)
     assert result.constant("force_n_per_a").value == pytest.approx(24.0, rel=0.05)
@@ -198,3 +201,31 @@ def test_a_recording_at_a_links_1_khz_is_fitted_as_well(fitted):
     assert result.constant("spool_mass_kg").value == pytest.approx(0.09, rel=0.05)
     with pytest.raises(Prm9Error, match="the rate must divide 5000 Hz"):
         fit(Steps(steps.type_key, steps.values, steps.stimulus, steps.actual, 3000.0))
+
+
+def test_the_twin_of_an_e04_position_loop_run_runs_its_position_loop():
+    """A run keeps no CTRLMODE: the twin of an E04 whose position loop was characterized ran
+    the process loop (mode 4, the E04's default) and missed every figure (docs/twin.md)."""
+    from prm9tool.analysis.profile import parse_profile
+    from prm9tool.characterize.run import characterize
+    from prm9tool.twin.identify import from_characterization, simulate_all
+
+    valve = EmulatedValve("PRM9-06.3Z11/30-24E04S02", plant=replace(PLANT, spool_mass_kg=0.08))
+    valve.write(*CATALOGUE["CTRLMODE"].key, 2)
+    profile = parse_profile(
+        {
+            "test": {
+                "step_amplitudes_pct": [25],
+                "bode_duration_s": 1,
+                "bode_f_min_hz": 5,
+                "bode_f_max_hz": 50,
+                "static_period_s": 1,
+            }
+        }
+    )
+    run = characterize(EmulatorRig(valve), profile)
+    assert run.loop == "position"
+    (steps,) = from_characterization(run, joint=False)
+    assert steps.values["CTRLMODE"] == 2
+    (simulated,) = simulate_all([steps], valve.plant)
+    assert np.sqrt(np.mean((simulated - steps.actual) ** 2)) < 0.12  # its own plant: explained

@@ -159,14 +159,15 @@ def test_fit_twin_on_the_command_line_runs_the_characterization_itself(tmp_path,
     assert "--device ID or --emulator KEY" in capsys.readouterr().err
 
 
-@pytest.mark.xfail(
-    strict=True,
-    reason="known (docs/twin.md): a valve opened in real time starts its run from another "
-    "rest and cycle phase than the fit's fresh simulated valve; 0.18-0.27 % rms remain",
-)
 def test_the_twin_of_a_valve_opened_in_real_time_is_explained(tmp_path):
+    """A valve that ran in real time before its run starts each step in another phase of its
+    dither than a fresh simulated valve (0.18-0.27 % rms were left before the fit aligned it,
+    identify.dither_offsets)."""
     measured = _twin(tmp_path / "measured.toml", serial=4113)
     with prm9tool.connect(f"emulator:twin:{measured}", record_history=False) as valve:
         twin = valve.fit_twin(tmp_path / "fitted.toml")
-    assert twin.fit.explained
+    assert twin.fit.explained, twin.fit
+    assert twin.fit.constant("force_n_per_a").value == pytest.approx(25.0, rel=0.02)
+    # the sweep's windows tell the mass from the coil inductance, which the steps alone trade
+    # (0.069 to 0.084 kg for 0.09 over four runs, each explained; docs/twin.md)
     assert twin.fit.constant("spool_mass_kg").value == pytest.approx(0.09, rel=0.05)

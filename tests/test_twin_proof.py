@@ -47,3 +47,21 @@ def _factory_bandwidth(tmp_path) -> float:
 
     run = characterize(EmulatorRig(EmulatedValve(E02, serial=5202)), DEFAULT)
     return next(f.value for f in run.figures if f.name == "bode_bandwidth_hz")
+
+
+def test_the_twin_of_a_canopen_valve_is_commissioned_for_its_proof(tmp_path):
+    """A -CA twin waits for its master as the valve did: the proof enables it first (found
+    with the manual-only CAN valve, tests/test_twin_can.py: "device state INIT")."""
+    from types import SimpleNamespace
+
+    from prm9tool.analysis.profile import parse_profile
+    from prm9tool.device.emulator.twinfile import write_twin
+    from prm9tool.twin.identify import Fit
+
+    path = tmp_path / "twin.toml"
+    plant = replace(PLANT, force_n_per_a=24.0)
+    write_twin(path, Fit(plant, (), 0.02, 0.06, 1.4, 20), 5203, E02 + "-CA", "1.0.0", "x", {})
+    profile = parse_profile({"test": {"step_amplitudes_pct": [25], "static_period_s": 1}})
+    again = characterize_twin(SimpleNamespace(profile=profile), path)
+    figures = {f.name: f.value for f in again.figures}
+    assert 0.0 < figures["step_25_rise_s"] < 0.05

@@ -1271,6 +1271,14 @@ Poslední akce možná nebyla dokončena. Uložte svou práci pod novým názvem
             <source>Value (%)</source>
             <translation>Hodnota (%)</translation>
         </message>
+        <message>
+            <source>Simulated on the emulator's plant (no twin of this serial).</source>
+            <translation>Simulováno na soustavě emulátoru (žádné dvojče tohoto výrobního čísla).</translation>
+        </message>
+        <message>
+            <source>Simulated on the twin of serial {0} (fitted {1}).</source>
+            <translation>Simulováno na dvojčeti výrobního čísla {0} (identifikováno {1}).</translation>
+        </message>
     </context>
     <context>
         <name>CurrentDitherDialog</name>
@@ -1751,8 +1759,48 @@ Poslední akce možná nebyla dokončena. Uložte svou práci pod novým názvem
             <translation>Přidat emulovaný ventil</translation>
         </message>
         <message>
+            <source>none: the emulator's plant</source>
+            <translation>žádné: soustava emulátoru</translation>
+        </message>
+        <message>
+            <source>A twin brings its own type key, serial number and parameter set.</source>
+            <translation>Dvojče si přináší vlastní typový klíč, výrobní číslo a sadu parametrů.</translation>
+        </message>
+        <message>
+            <source>Browse…</source>
+            <translation>Procházet…</translation>
+        </message>
+        <message>
             <source>Serial number:</source>
             <translation>Výrobní číslo:</translation>
+        </message>
+        <message>
+            <source>Twin from the history:</source>
+            <translation>Dvojče z historie:</translation>
+        </message>
+        <message>
+            <source>Twin file:</source>
+            <translation>Soubor dvojčete:</translation>
+        </message>
+        <message>
+            <source>none</source>
+            <translation>žádné</translation>
+        </message>
+        <message>
+            <source>fitted {0}: {1}</source>
+            <translation>identifikováno {0}: {1}</translation>
+        </message>
+        <message>
+            <source>{0} (cannot be used: {1})</source>
+            <translation>{0} (nelze použít: {1})</translation>
+        </message>
+        <message>
+            <source>Twin file</source>
+            <translation>Soubor dvojčete</translation>
+        </message>
+        <message>
+            <source>Twin files (*.toml)</source>
+            <translation>Soubory dvojčat (*.toml)</translation>
         </message>
     </context>
     <context>
@@ -5040,8 +5088,16 @@ Nejprve přepněte na Expert (Náhled → Úroveň oprávnění), nebo zkoušku 
             <translation>Stop</translation>
         </message>
         <message>
+            <source>Offline: the tests run on the twin of serial {0} (fitted {1}, {2}) with the document's values.</source>
+            <translation>Offline: zkoušky běží na dvojčeti výrobního čísla {0} (identifikováno {1}, {2}) s hodnotami dokumentu.</translation>
+        </message>
+        <message>
             <source>Offline: the tests run on an emulated valve with the document's values.</source>
             <translation>Offline: testy běží na emulovaném ventilu s hodnotami dokumentu.</translation>
+        </message>
+        <message>
+            <source>The emulator's plant: this serial has no twin in the history.</source>
+            <translation>Soustava emulátoru: toto výrobní číslo nemá v historii dvojče.</translation>
         </message>
         <message>
             <source>Online: the tests move the connected valve.</source>

@@ -1261,6 +1261,14 @@ Die letzte Aktion wurde womöglich nicht vollständig ausgeführt. Speichern Sie
             <source>Value (%)</source>
             <translation>Wert (%)</translation>
         </message>
+        <message>
+            <source>Simulated on the emulator's plant (no twin of this serial).</source>
+            <translation>Simuliert mit der Strecke des Emulators (kein Zwilling dieser Seriennummer).</translation>
+        </message>
+        <message>
+            <source>Simulated on the twin of serial {0} (fitted {1}).</source>
+            <translation>Simuliert mit dem Zwilling der Seriennummer {0} (angepasst {1}).</translation>
+        </message>
     </context>
     <context>
         <name>CurrentDitherDialog</name>
@@ -1741,8 +1749,48 @@ Die letzte Aktion wurde womöglich nicht vollständig ausgeführt. Speichern Sie
             <translation>Emuliertes Ventil hinzufügen</translation>
         </message>
         <message>
+            <source>none: the emulator's plant</source>
+            <translation>keine: die Strecke des Emulators</translation>
+        </message>
+        <message>
+            <source>A twin brings its own type key, serial number and parameter set.</source>
+            <translation>Ein Zwilling bringt seinen eigenen Typenschlüssel, seine Seriennummer und seinen Parametersatz mit.</translation>
+        </message>
+        <message>
+            <source>Browse…</source>
+            <translation>Durchsuchen…</translation>
+        </message>
+        <message>
             <source>Serial number:</source>
             <translation>Seriennummer:</translation>
+        </message>
+        <message>
+            <source>Twin from the history:</source>
+            <translation>Zwilling aus der Historie:</translation>
+        </message>
+        <message>
+            <source>Twin file:</source>
+            <translation>Zwillingsdatei:</translation>
+        </message>
+        <message>
+            <source>none</source>
+            <translation>keiner</translation>
+        </message>
+        <message>
+            <source>fitted {0}: {1}</source>
+            <translation>angepasst {0}: {1}</translation>
+        </message>
+        <message>
+            <source>{0} (cannot be used: {1})</source>
+            <translation>{0} (nicht verwendbar: {1})</translation>
+        </message>
+        <message>
+            <source>Twin file</source>
+            <translation>Zwillingsdatei</translation>
+        </message>
+        <message>
+            <source>Twin files (*.toml)</source>
+            <translation>Zwillingsdateien (*.toml)</translation>
         </message>
     </context>
     <context>
@@ -5018,8 +5066,16 @@ Wechseln Sie zuerst zu Experte (Ansicht → Berechtigungsstufe) oder starten Sie
             <translation>Stopp</translation>
         </message>
         <message>
+            <source>Offline: the tests run on the twin of serial {0} (fitted {1}, {2}) with the document's values.</source>
+            <translation>Offline: Die Tests laufen auf dem Zwilling der Seriennummer {0} (angepasst {1}, {2}) mit den Werten des Dokuments.</translation>
+        </message>
+        <message>
             <source>Offline: the tests run on an emulated valve with the document's values.</source>
             <translation>Offline: Die Tests laufen auf einem emulierten Ventil mit den Werten des Dokuments.</translation>
+        </message>
+        <message>
+            <source>The emulator's plant: this serial has no twin in the history.</source>
+            <translation>Strecke des Emulators: Diese Seriennummer hat keinen Zwilling in der Historie.</translation>
         </message>
         <message>
             <source>Online: the tests move the connected valve.</source>

@@ -37,6 +37,8 @@ from prm9tool.translate import translated
 
 if TYPE_CHECKING:
     from prm9tool.device.emulator import EmulatedValve
+    from prm9tool.device.emulator.constants import PlantConstants
+    from prm9tool.online.twins import TwinPlant
 
 Raw = int | str
 
@@ -132,15 +134,22 @@ def simulation_values(base: Mapping[str, Raw], loop: str) -> dict[str, Raw]:
     return values
 
 
-def simulate_step(type_key: str | TypeKey, values: Mapping[str, Raw], loop: str) -> StepResponse:
+def simulate_step(
+    type_key: str | TypeKey,
+    values: Mapping[str, Raw],
+    loop: str,
+    plant: PlantConstants | None = None,
+) -> StepResponse:
     """Run the emulated valve through a setpoint step and return the loop's response.
 
     The autotune's step (:func:`prm9tool.characterize.autotune.emulated_step`: from rest at
     0 %, the same window, every 200 µs cycle), so the dialog and the autotune give the same
     figures for the same gains. Blocking (tens of milliseconds): call it off the GUI thread.
-    Raises Prm9Error subclasses if the emulated valve refuses a parameter.
+    Raises Prm9Error subclasses if the emulated valve refuses a parameter. ``plant``: the
+    emulated valve's plant constants (a twin's, :mod:`prm9tool.online.twins`; default: the
+    emulator's).
     """
-    valve = _prepared_valve(type_key, values, loop)
+    valve = _prepared_valve(type_key, values, loop, plant)
     lp = LOOPS[loop]
     result = emulated_step(valve, loop, lp.step_pct, lp.simulated_s)
     channels = result.record.channels
@@ -154,12 +163,17 @@ def simulate_step(type_key: str | TypeKey, values: Mapping[str, Raw], loop: str)
     )
 
 
-def _prepared_valve(type_key: str | TypeKey, values: Mapping[str, Raw], loop: str) -> EmulatedValve:
+def _prepared_valve(
+    type_key: str | TypeKey,
+    values: Mapping[str, Raw],
+    loop: str,
+    plant: PlantConstants | None = None,
+) -> EmulatedValve:
     """A fresh analog-only emulated valve holding the simulation's parameter set."""
     from prm9tool.device.emulator import EmulatedValve  # lazy: the emulator is heavy to import
 
     analog = analog_type_key(type_key)
-    valve = EmulatedValve(analog)
+    valve = EmulatedValve(analog) if plant is None else EmulatedValve(analog, plant=plant)
     for mnemonic, raw in simulation_values(values, loop).items():
         param = CATALOGUE.get(mnemonic)
         if param is not None and param.writable and param.applies(analog.variant):
@@ -207,8 +221,10 @@ class StepSimulator(QObject):
         base_values: Mapping[str, Raw],
         loop: str,
         parent: QObject | None = None,
+        twin: TwinPlant | None = None,
     ) -> None:
         super().__init__(parent)
+        self.twin = twin  # the plant it runs on: this twin's, else (None) the emulator's
         if loop not in LOOPS:
             raise ValueError(f"unknown loop {loop!r}; expected one of {', '.join(LOOPS)}")
         self.type_key, self.loop = type_key, loop
@@ -223,8 +239,12 @@ class StepSimulator(QObject):
 
     @classmethod
     def for_document(cls, document: ParameterDocument, loop: str) -> StepSimulator:
-        """A simulator for ``document``'s valve type and current parameter values."""
-        return cls(str(document.type_key), dict(document.values), loop)
+        """A simulator for ``document``'s valve type and current parameter values, on the
+        plant of the newest twin the history has for the document's serial (if any)."""
+        from prm9tool.online.twins import twin_plant
+
+        twin = twin_plant(document.source_serial)
+        return cls(str(document.type_key), dict(document.values), loop, twin=twin)
 
     @property
     def busy(self) -> bool:
@@ -261,7 +281,8 @@ class StepSimulator(QObject):
             if values is None:
                 return
             try:
-                response = simulate_step(self.type_key, {**self._base, **values}, self.loop)
+                plant = self.twin.plant if self.twin is not None else None
+                response = simulate_step(self.type_key, {**self._base, **values}, self.loop, plant)
             except (Prm9Error, ValueError) as exc:
                 relay.failed.emit(str(exc))
                 continue

@@ -28,6 +28,7 @@ if TYPE_CHECKING:
     from prm9tool.device.session import ValveSession
     from prm9tool.online.connection import ValveConnection
     from prm9tool.online.connection_protocol import ValveIdentity
+    from prm9tool.online.twins import TwinPlant
 
 Procedure = Callable[[Rig], object]
 
@@ -238,10 +239,15 @@ class SimulationRunner(TuningRunner):
     """Procedures on an emulated valve holding the document's values (no valve touched)."""
 
     def __init__(
-        self, type_key: str, values: Mapping[str, int | str], parent: QObject | None = None
+        self,
+        type_key: str,
+        values: Mapping[str, int | str],
+        parent: QObject | None = None,
+        twin: TwinPlant | None = None,
     ) -> None:
         super().__init__(parent)
         self.type_key, self.values = type_key, dict(values)
+        self.twin = twin  # the plant the tests run on: this twin's, else (None) the emulator's
         self._relay = _Relay()
         self._relay.done.connect(self._deliver)
         self._thread: threading.Thread | None = None
@@ -270,7 +276,9 @@ class SimulationRunner(TuningRunner):
         from prm9tool.device.emulator import EmulatedValve
         from prm9tool.online.tuning import analog_type_key
 
-        valve = EmulatedValve(analog_type_key(self.type_key))
+        plant = self.twin.plant if self.twin is not None else None
+        key = analog_type_key(self.type_key)
+        valve = EmulatedValve(key) if plant is None else EmulatedValve(key, plant=plant)
         for mnemonic, raw in self.values.items():
             param = CATALOGUE.get(mnemonic)
             if param is not None and param.writable and param.applies(valve.variant):

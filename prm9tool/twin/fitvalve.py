@@ -18,7 +18,7 @@ from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
 from prm9tool.device.emulator.twinfile import write_twin
-from prm9tool.twin.identify import Fit, Steps, fit, from_characterization
+from prm9tool.twin.identify import FITTED, JOINT, Fit, Steps, fit, from_characterization
 
 if TYPE_CHECKING:
     from prm9tool.analysis.profile import Profile
@@ -44,9 +44,11 @@ def write_fitted(
     firmware: str,
     source: str,
 ) -> Fit:
-    """Fit ``recordings`` (from the factory plant, :data:`~.identify.FITTED`) and write the
-    twin file ``path``; returns the fit."""
-    result = fit(recordings)
+    """Fit ``recordings`` (from the factory plant: :data:`~.identify.FITTED` from steps alone,
+    :data:`~.identify.JOINT` with windows of the sweep and the triangle) and write the twin
+    file ``path``; returns the fit."""
+    joint = any(r.kind != "step" for r in recordings)
+    result = fit(recordings, free=JOINT if joint else FITTED)
     write_twin(path, result, serial, type_key, firmware, source, recordings[0].values)
     return result
 
@@ -55,9 +57,12 @@ def twin_of_run(run: Characterization, path: str | os.PathLike[str]) -> ValveTwi
     """The twin of the valve ``run`` characterized, from the run's position-loop steps,
     written to ``path``. Prm9Error when the run has no complete position-loop step."""
     recordings = from_characterization(run)
+    joint = any(r.kind != "step" for r in recordings)
     info = run.info
     source = (
-        f"{len(recordings)} position-loop steps of the characterization of {run.date} "
+        f"{sum(r.kind == 'step' for r in recordings)} position-loop steps"
+        f"{', the sweep and the static characteristic' if joint else ''}"
+        f" of the characterization of {run.date} "
         f"({info.link or 'link'}, {info.sample_rate_hz:g} Hz)"
     )
     result = write_fitted(
@@ -89,6 +94,7 @@ def fit_report(result: Fit, path: str | os.PathLike[str]) -> dict[str, Any]:
         "rms_pct": result.rms_pct,
         "max_pct": result.max_pct,
         "start_rms_pct": result.start_rms_pct,
+        "parts_rms_pct": dict(result.parts_rms_pct),
         "explained": result.explained,
         "evaluations": result.evaluations,
         "constants": [

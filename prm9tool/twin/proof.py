@@ -44,6 +44,17 @@ def characterize_twin(run: Characterization, twin: str | os.PathLike[str]) -> Ch
     from prm9tool.device.emulator.twinfile import emulated_twin
 
     valve = emulated_twin(os.fspath(twin))
+    if valve.type_key.canopen:  # a -CA twin waits for its master, as the valve did: its
+        # commissioning (NMT start, control word 08h → 09h → 0Bh → 0Fh; manual §7.6)
+        from prm9tool.catalogue import CATALOGUE
+        from prm9tool.catalogue.commissioning import ENABLE_SEQUENCE, NmtCommand
+
+        while valve.status().booting:
+            valve.advance(0.05)
+        valve.nmt_command(NmtCommand.START)
+        word = CATALOGUE["CONTROLWORD"]
+        for value in ENABLE_SEQUENCE:
+            valve.write(word.index, word.subindex, value)
     return characterize(EmulatorRig(valve), run.profile)
 
 

@@ -11,12 +11,15 @@ from collections.abc import Callable, Sequence
 from PySide6.QtCore import QEvent, QSettings, Qt
 from PySide6.QtWidgets import (
     QAbstractItemView,
+    QComboBox,
     QDialog,
     QDialogButtonBox,
+    QFileDialog,
     QFormLayout,
     QHBoxLayout,
     QHeaderView,
     QLabel,
+    QLineEdit,
     QPushButton,
     QSpinBox,
     QTableWidget,
@@ -28,6 +31,7 @@ from shiboken6 import isValid
 
 from prm9tool.catalogue.typekey import DEFAULT_EMULATOR_TYPE_KEY, TypeKey
 from prm9tool.online.connection_protocol import ListedValves, ValveListing
+from prm9tool.online.twins import TwinChoice, spec_serial, twins_of
 from prm9tool.translate import error_text
 from prm9tool.views.valve.selection import ValveSelectionDialog
 
@@ -72,10 +76,17 @@ def describe(entry: ValveListing) -> list[str]:
 
 
 class EmulatorDialog(QDialog):
-    """Add an emulated valve: type key (the valve-selection builder) and serial number."""
+    """Add an emulated valve: type key (the valve-selection builder) and serial number, or the
+    twin of a measured valve (issue 31): one of the serial's twins in the history, or a twin
+    file (docs/twin.md)."""
 
-    def __init__(self, parent: QWidget | None = None) -> None:
+    def __init__(
+        self,
+        parent: QWidget | None = None,
+        twins: Callable[[int], Sequence[TwinChoice]] | None = None,
+    ) -> None:
         super().__init__(parent)
+        self._twins = twins or twins_of
         self.setWindowTitle(self.tr("Add emulated valve"))
         self.selection = ValveSelectionDialog(TypeKey.parse(DEFAULT_EMULATOR_TYPE_KEY), self)
         self.selection.setWindowFlags(Qt.WindowType.Widget)
@@ -83,8 +94,23 @@ class EmulatorDialog(QDialog):
         self.serial = QSpinBox()
         self.serial.setRange(1, 99_999_999)
         self.serial.setValue(1002)
+        self.twin = QComboBox()  # "" (no twin) or a twin file of the serial's history
+        self.twin_file = QLineEdit()
+        self.twin_file.setPlaceholderText(self.tr("none: the emulator's plant"))
+        self.twin_file.setToolTip(
+            self.tr("A twin brings its own type key, serial number and parameter set.")
+        )
+        self.browse = QPushButton(self.tr("Browse…"))
+        self.browse.clicked.connect(self._on_browse_clicked)
+        self.twin.currentIndexChanged.connect(self._on_twin_chosen)
+        self.serial.valueChanged.connect(self._list_twins)
+        file_row = QHBoxLayout()
+        file_row.addWidget(self.twin_file, 1)
+        file_row.addWidget(self.browse)
         form = QFormLayout()
         form.addRow(self.tr("Serial number:"), self.serial)
+        form.addRow(self.tr("Twin from the history:"), self.twin)
+        form.addRow(self.tr("Twin file:"), file_row)
         buttons = QDialogButtonBox(
             QDialogButtonBox.StandardButton.Ok | QDialogButtonBox.StandardButton.Cancel
         )
@@ -94,9 +120,38 @@ class EmulatorDialog(QDialog):
         layout.addWidget(self.selection)
         layout.addLayout(form)
         layout.addWidget(buttons)
+        self._list_twins()
+
+    def _list_twins(self) -> None:
+        """The twins the history has for the serial entered (newest first)."""
+        self.twin.blockSignals(True)
+        self.twin.clear()
+        self.twin.addItem(self.tr("none"), "")
+        for choice in self._twins(self.serial.value()):
+            text = self.tr("fitted {0}: {1}").format(choice.date[:10], choice.path)
+            if choice.problem:
+                text = self.tr("{0} (cannot be used: {1})").format(text, choice.problem)
+            self.twin.addItem(text, "" if choice.problem else choice.path)
+        self.twin.blockSignals(False)
+
+    def _on_twin_chosen(self, _index: int) -> None:
+        path = self.twin.currentData()
+        if path:
+            self.twin_file.setText(str(path))
+
+    def _on_browse_clicked(self) -> None:
+        path, _filter = QFileDialog.getOpenFileName(
+            self, self.tr("Twin file"), self.twin_file.text(), self.tr("Twin files (*.toml)")
+        )
+        if path:
+            self.twin_file.setText(path)
 
     def spec(self) -> str:
-        """``TYPEKEY:SERIAL`` of the emulated valve."""
+        """``TYPEKEY:SERIAL`` of the emulated valve, or ``twin:FILE`` for a twin (its file
+        brings its type key and serial)."""
+        twin = self.twin_file.text().strip()
+        if twin:
+            return f"twin:{twin}"
         return f"{self.selection.selected_type_key()}:{self.serial.value()}"
 
 
@@ -254,8 +309,13 @@ class HidConfigurationDialog(QDialog):
             self.add_emulator(dialog.spec())
 
     def add_emulator(self, spec: str) -> None:
-        """Add an emulated valve ``TYPEKEY:SERIAL`` to the list and select it."""
-        emulators = one_per_serial([*saved_emulators(self._settings), spec])
+        """Add an emulated valve ``TYPEKEY:SERIAL`` (or a twin, ``twin:FILE``) to the list and
+        select it; it replaces an entry of the same serial (one serial is one valve)."""
+        serial = spec_serial(spec)
+        kept = [
+            e for e in saved_emulators(self._settings) if serial is None or spec_serial(e) != serial
+        ]
+        emulators = one_per_serial([*kept, spec])
         self._settings.setValue(EMULATORS_KEY, emulators)
         self._select_last = True
         self.refresh()
@@ -265,6 +325,10 @@ class HidConfigurationDialog(QDialog):
         if entry is None:
             return
         spec = f"{entry.type_key}:{entry.serial}"
-        emulators = [e for e in saved_emulators(self._settings) if e != spec]
+        emulators = [
+            e
+            for e in saved_emulators(self._settings)
+            if e != spec and not (e.startswith("twin:") and spec_serial(e) == entry.serial)
+        ]
         self._settings.setValue(EMULATORS_KEY, emulators)
         self.refresh()

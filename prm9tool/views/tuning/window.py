@@ -121,7 +121,10 @@ class TuningWindow(QDialog):
         if self.connection is not None and self.connection.is_online:
             runner: TuningRunner = ValveRunner(self.connection, self)
         else:
-            runner = SimulationRunner(str(self.doc.type_key), dict(self.doc.values), self)
+            from prm9tool.online.twins import twin_plant
+
+            twin = twin_plant(self.doc.source_serial)  # its newest twin's plant, if it has one
+            runner = SimulationRunner(str(self.doc.type_key), dict(self.doc.values), self, twin)
         runner.finished.connect(self._on_finished)
         runner.failed.connect(self._on_failed)
         runner.busy_changed.connect(self._on_busy_changed)
@@ -328,9 +331,17 @@ class TuningWindow(QDialog):
             self.loop.setItemText(1, self.tr("Process controller (E04)"))
         self._loop_label.setText(self.tr("Loop:"))
         self.stop_button.setText(self.tr("Stop"))
-        if isinstance(self.runner, SimulationRunner):
+        if isinstance(self.runner, SimulationRunner) and self.runner.twin is not None:
+            twin = self.runner.twin
             mode = self.tr(
-                "Offline: the tests run on an emulated valve with the document's values."
+                "Offline: the tests run on the twin of serial {0} (fitted {1}, {2}) with the "
+                "document's values."
+            ).format(twin.serial, twin.date[:10], twin.path)
+        elif isinstance(self.runner, SimulationRunner):
+            mode = (
+                self.tr("Offline: the tests run on an emulated valve with the document's values.")
+                + " "
+                + self.tr("The emulator's plant: this serial has no twin in the history.")
             )
         else:
             mode = self.tr("Online: the tests move the connected valve.")

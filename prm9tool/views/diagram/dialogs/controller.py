@@ -165,7 +165,17 @@ class ControllerDialog(BlockDialog):
         y_range = (low - 0.08 * span, peak + 0.12 * span)
         self.plot.set_axes(Axes(x_range, y_range, self.tr("Time (ms)"), self.tr("Value (%)")))
         self.plot.set_curves(curves)
-        self.figures.setText(response.summary())
+        self.figures.setText(response.summary() + "\n" + self._plant_text())
+
+    def _plant_text(self) -> str:
+        """Which plant the simulated step ran on: the twin of the document's serial, else the
+        emulator's own (issue 31 item 3)."""
+        twin = getattr(self.simulator, "twin", None)
+        if twin is None:
+            return self.tr("Simulated on the emulator's plant (no twin of this serial).")
+        return self.tr("Simulated on the twin of serial {0} (fitted {1}).").format(
+            twin.serial, twin.date[:10]
+        )
 
     # --- sliders ------------------------------------------------------------------------------------
     def _on_slider_value_changed(self, position: int) -> None:
