@@ -91,7 +91,7 @@ def test_the_comparison_runs_on_the_valve_shows_the_drift_and_saves_the_pdf(
         QMessageBox, "question", lambda *a: asked.append(a[2]) or QMessageBox.StandardButton.Yes
     )
     w.signature.run_button.click()
-    assert "moves the spool" in asked[0] and "at most 20 s" in asked[0]
+    assert "moves the spool" in asked[0] and "at most 20\u00a0s" in asked[0]  # one line (i18n)
     assert w.runner.busy  # off the GUI thread: the window is still there to Stop it
     qtbot.waitUntil(lambda: not w.runner.busy, timeout=180000)
     page = w.signature

@@ -233,7 +233,7 @@ def test_signature_on_the_command_line_exits_by_its_verdict(tmp_path, capsys):
     ("args", "message"),
     [
         (["--signature"], "--signature tests one valve"),
-        (["--signature", "--characterize", "--emulator", E02], "separate commands"),
+        (["--signature", "--characterize", "--emulator", E02], "not allowed with argument"),
         (["--signature", "--emulator", E02, "--hydraulics-safe"], "--hydraulics-safe confirms"),
     ],
 )
