@@ -194,6 +194,9 @@ def _clean_env(work: Path) -> dict[str, str]:
     )
     if WINDOWS:  # the one file's cache and the user's settings folders
         env.update(LOCALAPPDATA=str(work / "cache"), APPDATA=str(work / "config"))
+        # platformdirs (prm9tool/paths.py) asks Windows, not these variables: its overrides
+        env.update(WIN_PD_OVERRIDE_LOCAL_APPDATA=str(work / "cache"),
+                   WIN_PD_OVERRIDE_APPDATA=str(work / "config"))  # fmt: skip
     return env
 
 
