@@ -16,7 +16,9 @@ from prm9tool import paths
 from prm9tool.catalogue.can_adapters import adapters, default_adapter
 from prm9tool.device.usb.transport.hidapi import shown_path
 
-WINDOWS_PATH = rb"\\?\HID#VID_0483&PID_5750&MI_00#7&2a0b0f6b&0&0000#{4d1e55b2-f16f-11cf-88cb-001111000030}"
+WINDOWS_PATH = (
+    rb"\\?\HID#VID_0483&PID_5750&MI_00#7&2a0b0f6b&0&0000#{4d1e55b2-f16f-11cf-88cb-001111000030}"
+)
 
 
 @pytest.fixture

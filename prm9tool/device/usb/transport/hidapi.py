@@ -139,22 +139,30 @@ class HidTransport(Transport):
             device.open_path(path)
             device.set_nonblocking(1)  # read(…, 0) must not block; timeouts > 0 still wait
         except (OSError, ValueError) as exc:
-            raise DeviceDisconnectedError(f"cannot open USB device {shown_path(path)}: {exc}") from exc
+            raise DeviceDisconnectedError(
+                f"cannot open USB device {shown_path(path)}: {exc}"
+            ) from exc
         return device
 
     def _write(self, report: bytes) -> None:
         try:
             written = self._device.write(bytes([REPORT_ID]) + report)
         except (OSError, ValueError) as exc:
-            raise DeviceDisconnectedError(f"USB valve {shown_path(self.path)} is gone: {exc}") from exc
+            raise DeviceDisconnectedError(
+                f"USB valve {shown_path(self.path)} is gone: {exc}"
+            ) from exc
         if written < 0:
-            raise DeviceDisconnectedError(f"USB valve {shown_path(self.path)} is gone (write failed)")
+            raise DeviceDisconnectedError(
+                f"USB valve {shown_path(self.path)} is gone (write failed)"
+            )
 
     def _read(self, timeout_s: float) -> bytes | None:
         try:
             data = self._device.read(REPORT_SIZE, max(0, round(timeout_s * 1000)))
         except (OSError, ValueError) as exc:
-            raise DeviceDisconnectedError(f"USB valve {shown_path(self.path)} is gone: {exc}") from exc
+            raise DeviceDisconnectedError(
+                f"USB valve {shown_path(self.path)} is gone: {exc}"
+            ) from exc
         if not data:
             return None
         return bytes(data[:REPORT_SIZE]).ljust(REPORT_SIZE, b"\x00")
