@@ -44,7 +44,7 @@ MACOS: tuple[Adapter, ...] = (
     Adapter("slcan", "/dev/tty.usbmodem1"),
     Adapter("gs_usb", "0"),
 )
-EVERYWHERE = (Adapter("udp_multicast", "prm9tool"), Adapter("virtual", "prm9tool"))
+EVERYWHERE = (Adapter("udp_multicast", "239.74.163.2"), Adapter("virtual", "prm9tool"))
 
 
 def adapters(platform: str | None = None) -> tuple[Adapter, ...]:
