@@ -142,3 +142,11 @@ def test_windows_settings_go_to_an_ini_file_in_appdata(qapp, tmp_path, monkeypat
         assert Path(QSettings().fileName()) == tmp_path / "prm9tool" / "prm9tool.ini"
     finally:
         QSettings.setDefaultFormat(QSettings.Format.NativeFormat)
+
+
+def test_the_slcan_adapter_offered_on_windows_can_be_opened():
+    import can
+
+    assert "slcan" in {adapter.interface for adapter in adapters("win32")}
+    bus = can.Bus(interface="slcan", channel="loop://", bitrate=500_000)  # pyserial's loopback
+    bus.shutdown()
