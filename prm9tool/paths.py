@@ -24,6 +24,9 @@ import sys
 from pathlib import Path
 
 from platformdirs.api import PlatformDirsABC
+from platformdirs.macos import MacOS
+from platformdirs.unix import Unix
+from platformdirs.windows import Windows
 
 APP = "prm9tool"
 
@@ -53,14 +56,14 @@ def settings_dir() -> Path:
 
 def _dirs(*, roaming: bool) -> PlatformDirsABC:
     """platformdirs' conventions of the platform this runs on, chosen at each call (not at
-    import, as ``platformdirs.user_data_dir`` does: the tests fake the platform)."""
+    import, as ``platformdirs.user_data_dir`` does: the tests fake the platform). The modules
+    are imported above, on the real platform: each reads ``sys.platform`` as it loads."""
+    dirs: type[PlatformDirsABC] = Unix
     if sys.platform == "win32":
-        from platformdirs.windows import Windows as Dirs
+        dirs = Windows
     elif sys.platform == "darwin":
-        from platformdirs.macos import MacOS as Dirs  # type: ignore[assignment]
-    else:
-        from platformdirs.unix import Unix as Dirs  # type: ignore[assignment]
-    return Dirs(APP, appauthor=False, roaming=roaming)
+        dirs = MacOS
+    return dirs(APP, appauthor=False, roaming=roaming)
 
 
 def _legacy_data_dir() -> Path | None:
