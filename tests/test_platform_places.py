@@ -25,6 +25,7 @@ WINDOWS_PATH = (
 def home(tmp_path, monkeypatch):
     """A home folder of its own, without prm9tool's override of the data folder."""
     monkeypatch.setenv("HOME", str(tmp_path))
+    monkeypatch.setenv("USERPROFILE", str(tmp_path))  # "~" on Windows (the Windows stage)
     monkeypatch.setattr(Path, "home", classmethod(lambda cls: tmp_path))
     monkeypatch.delenv("PRM9TOOL_DATA_DIR", raising=False)
     monkeypatch.delenv("XDG_DATA_HOME", raising=False)
