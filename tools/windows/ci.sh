@@ -128,6 +128,12 @@ prepare_prefix() {
   # (no wineserver -w: Wine's services started by an earlier program may keep it waiting)
   wine reg add 'HKCU\Software\Wine' /v Version /d win10 /f >/dev/null 2>&1 </dev/null | cat
   cp "$WORK/dlls/"*.dll "$WINEPREFIX/drive_c/windows/system32/"
+  # Wine's server and services (services.exe, winedevice, plugplay) started here with their
+  # output not a pipe: started by a later `wine … | cat` (wpy), they inherit the pipe and keep
+  # `cat` waiting after the program ended (seen: the stage stalled). Persistent until the EXIT
+  # trap's wineserver -k.
+  wineserver -p </dev/null >/dev/null 2>&1
+  wine cmd /c exit </dev/null >/dev/null 2>&1 || true
 }
 
 prepare_python() {
