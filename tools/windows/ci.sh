@@ -131,7 +131,9 @@ prepare_prefix() {
   # Wine's server and services (services.exe, winedevice, plugplay) started here with their
   # output not a pipe: started by a later `wine … | cat` (wpy), they inherit the pipe and keep
   # `cat` waiting after the program ended (seen: the stage stalled). Persistent until the EXIT
-  # trap's wineserver -k.
+  # trap's wineserver -k; the server of the steps above (not persistent) is ended first.
+  wineserver -k </dev/null >/dev/null 2>&1 || true
+  wineserver -w </dev/null >/dev/null 2>&1 || true
   wineserver -p </dev/null >/dev/null 2>&1
   wine cmd /c exit </dev/null >/dev/null 2>&1 || true
 }
