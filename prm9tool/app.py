@@ -80,6 +80,13 @@ def create_application(argv: list[str] | None = None) -> QApplication:
 
     QCoreApplication.setOrganizationName("prm9tool")
     QCoreApplication.setApplicationName("prm9tool")
+    folder = settings_folder()
+    if folder is not None:
+        from PySide6.QtCore import QSettings
+
+        ini = QSettings.Format.IniFormat
+        QSettings.setDefaultFormat(ini)
+        QSettings.setPath(ini, QSettings.Scope.UserScope, str(folder))
     from prm9tool._version import __version__
 
     QCoreApplication.setApplicationVersion(__version__)
@@ -87,6 +94,19 @@ def create_application(argv: list[str] | None = None) -> QApplication:
     assert isinstance(app, QApplication)
     collect_garbage_on_the_gui_thread(app)
     return app
+
+
+def settings_folder() -> Path | None:
+    """Where QSettings keeps the remembered settings when not in Qt's native place: on Windows
+    the file ``%APPDATA%\\prm9tool\\prm9tool.ini`` (this folder, then organization and
+    application name), roaming with the user's profile and visible, instead of the registry.
+    None elsewhere: Qt's native places are the platform's (Linux ``$XDG_CONFIG_HOME``, macOS
+    ``~/Library/Preferences``); paths.py says where the data goes."""
+    if sys.platform != "win32":
+        return None
+    from prm9tool.paths import settings_dir
+
+    return settings_dir().parent
 
 
 GC_INTERVAL_MS = 1000

@@ -69,6 +69,10 @@ def _isolated_user_dirs(tmp_path_factory: pytest.TempPathFactory, monkeypatch: p
     monkeypatch.setenv("PRM9TOOL_DATA_DIR", str(base / "data"))
     monkeypatch.setenv("XDG_CONFIG_HOME", str(base / "config"))
     monkeypatch.setenv("XDG_DATA_HOME", str(base / "share"))
+    # Windows (the Windows stage): platformdirs asks Windows for these folders, not the
+    # environment's LOCALAPPDATA/APPDATA; its own override variables it honours
+    monkeypatch.setenv("WIN_PD_OVERRIDE_APPDATA", str(base / "appdata"))
+    monkeypatch.setenv("WIN_PD_OVERRIDE_LOCAL_APPDATA", str(base / "localappdata"))
     return base
 
 

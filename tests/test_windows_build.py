@@ -58,9 +58,10 @@ def test_the_kernel_source_compiles_with_signal_h_included(tmp_path):
 def test_the_smoke_test_accepts_the_python_kernel_on_windows_only(
     tmp_path, monkeypatch, capsys, windows, kernel
 ):
-    exe = tmp_path / "prm9tool"  # a build whose compiled kernel is missing
+    exe = tmp_path / "prm9tool"  # a build whose compiled kernel is missing (as it logs it)
     exe.write_text(
         '#!/bin/sh\n[ "$PRM9TOOL_EMULATOR_KERNEL" = compiled ] && exit 2\n'
+        "echo 'emulator: compiled control loop unavailable (no module); using the Python one' >&2\n"
         'echo \'{"values": {"LIMTA": 2400}}\'\n',
         encoding="utf-8",
     )
@@ -69,3 +70,14 @@ def test_the_smoke_test_accepts_the_python_kernel_on_windows_only(
     assert smoke_executable._kernel(exe, tmp_path, {"PATH": "/usr/bin:/bin"}) == kernel
     said = capsys.readouterr().out
     assert ("emulator kernel: python" in said) == windows
+
+
+def test_the_smoke_test_knows_what_the_program_logs_without_its_compiled_kernel(
+    monkeypatch, caplog
+):
+    from prm9tool.device.emulator import kernels
+
+    monkeypatch.setattr(kernels, "compiled_unavailable", lambda: "no module _ckernel")
+    with caplog.at_level("WARNING", logger=kernels.log.name):
+        assert kernels.choose("")[0] == "python"
+    assert smoke_executable.FALLBACK in caplog.text

@@ -26,6 +26,7 @@ DIFF_EXIT_TEXT = "--diff: 0 equal, 1 they differ, 3 invalid file, 4 no such valv
 
 def add_device_options(parser: argparse.ArgumentParser) -> None:
     """Device selection shared by the GUI and the batch mode (one device factory)."""
+    from prm9tool.catalogue.can_adapters import EVERYWHERE, adapters
     from prm9tool.catalogue.typekey import DEFAULT_EMULATOR_TYPE_KEY  # loaded at start anyway
 
     group = parser.add_argument_group("device selection")
@@ -56,9 +57,11 @@ def add_device_options(parser: argparse.ArgumentParser) -> None:
     # no defaults here: None means "not given" (usage_problem) and CanOptions fills it in
     group.add_argument(
         "--can-interface",
-        help="python-can interface of the CAN bus (socketcan, pcan, kvaser, ixxat, vector, "
-        "slcan, udp_multicast, virtual, ...; default: virtual): valves on it are can:NODE; "
-        "an --emulator -CA valve joins it",
+        help="python-can interface of the CAN bus (this system's, each with its usual "
+        "--can-channel: "
+        + ", ".join(f"{a.interface} {a.channel}" for a in adapters() if a not in EVERYWHERE)
+        + "; udp_multicast, virtual, ...; default: virtual): valves on it are can:NODE; an "
+        "--emulator -CA valve joins it",
     )
     group.add_argument("--can-channel", help="python-can channel (default: prm9tool)")
     group.add_argument(

@@ -152,6 +152,7 @@ def _emulator_entry(valve: EmulatedValve) -> DeviceEntry:
 def usb_entries() -> list[DeviceEntry]:
     """Entries for the valves on USB (raises CommunicationError when hidapi is missing)."""
     from prm9tool.device.usb.discovery import usb_valves
+    from prm9tool.device.usb.transport.hidapi import shown_path
 
     return [
         DeviceEntry(
@@ -160,7 +161,7 @@ def usb_entries() -> list[DeviceEntry]:
             v.type_key,
             v.serial,
             v.firmware,
-            f"USB {v.path.decode(errors='replace')} {v.product}".rstrip(),
+            f"USB {shown_path(v.path)} {v.product}".rstrip(),  # as Device Manager shows it
         )
         for v in usb_valves()
     ]

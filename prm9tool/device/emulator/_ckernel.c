@@ -16,6 +16,25 @@
 #include <stdint.h>
 #include <string.h>
 
+#ifdef __MINGW32__
+/* mingw-w64 links a sin() of its own (libmingwex: x87 long double, then rounded), up to 10 ulp
+ * from the C runtime's; CPython's math.sin is the Universal C runtime's (ucrtbase.dll, loaded
+ * with python3XX.dll), so this kernel calls that one, looked up at import. MSVC links the
+ * ucrt's sin directly. (docs/executable.md "The emulator's kernel on Windows") */
+#define WIN32_LEAN_AND_MEAN
+#include <windows.h>
+static double (*crt_sin)(double) = sin;
+static void use_crt_sin(void)
+{
+    HMODULE ucrt = GetModuleHandleA("ucrtbase.dll");
+    FARPROC found = ucrt ? GetProcAddress(ucrt, "sin") : NULL;
+    if (found) crt_sin = (double (*)(double))(void (*)(void))found;
+}
+#define sin(x) crt_sin(x)
+#else
+#define use_crt_sin() ((void)0)
+#endif
+
 enum { /* dynamic state */
     S_R, S_X, S_V, S_ACT, S_IA, S_IB, S_F, S_IA_I, S_IB_I, S_P_INT, S_P_D, S_P_PREV,
     S_Q_INT, S_Q_D, S_Q_PREV, S_PH, S_CAP_COUNT, S_W, S_U, S_CA, S_CB, S_KA, S_KB, S_DA, S_DB,
@@ -521,6 +540,7 @@ static int exec_module(PyObject *m)
 #ifndef SOURCE_HASH
 #define SOURCE_HASH ""
 #endif
+    use_crt_sin();
     if (PyModule_AddStringConstant(m, "SOURCE_HASH", SOURCE_HASH) < 0) return -1;
     if (PyModule_AddIntConstant(m, "STATE_COUNT", S_COUNT) < 0) return -1;
     if (PyModule_AddIntConstant(m, "COEFFICIENT_COUNT", C_COUNT) < 0) return -1;

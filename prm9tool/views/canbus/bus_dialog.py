@@ -32,6 +32,7 @@ from PySide6.QtWidgets import (
 )
 from shiboken6 import isValid
 
+from prm9tool.catalogue.can_adapters import adapters, default_adapter, usual_channel
 from prm9tool.catalogue.can_type_keys import remember
 from prm9tool.catalogue.typekey import TypeKey
 from prm9tool.errors import TypeKeyError
@@ -49,17 +50,6 @@ from prm9tool.views.row_table import row_table
 from prm9tool.views.trace.record_controls import RecordControls
 
 INTERFACE_KEY, CHANNEL_KEY, BITRATE_KEY = "can/interface", "can/channel", "can/bitrate"
-INTERFACES = (
-    "socketcan",
-    "pcan",
-    "kvaser",
-    "ixxat",
-    "vector",
-    "slcan",
-    "gs_usb",
-    "udp_multicast",
-    "virtual",
-)
 BITRATES = (20_000, 50_000, 125_000, 250_000, 500_000, 800_000, 1_000_000)  # table 7-17
 DEFAULT_BITRATE = 500_000  # delivery state (manual table 7-22)
 # (bus as a dict, deliver): scans off the GUI thread, deliver(entries or exception) on it
@@ -76,8 +66,8 @@ def saved_bus(settings: QSettings) -> dict[str, object]:
     except ValueError:
         rate = DEFAULT_BITRATE
     return {
-        "interface": str(settings.value(INTERFACE_KEY, "socketcan")),
-        "channel": str(settings.value(CHANNEL_KEY, "can0")),
+        "interface": str(settings.value(INTERFACE_KEY, default_adapter().interface)),
+        "channel": str(settings.value(CHANNEL_KEY, default_adapter().channel)),
         "bitrate": rate,
     }
 
@@ -115,9 +105,12 @@ class CanBusDialog(QDialog):
         bus = saved_bus(settings)
         self.interface = QComboBox()
         self.interface.setEditable(True)
-        self.interface.addItems(INTERFACES)
+        # this platform's adapters (catalogue/can_adapters.py: pcan PCAN_USBBUS1 first on
+        # Windows, socketcan can0 on Linux)
+        self.interface.addItems([adapter.interface for adapter in adapters()])
         self.interface.setCurrentText(str(bus["interface"]))
         self.channel = QLineEdit(str(bus["channel"]))
+        self.interface.currentTextChanged.connect(self._on_interface_changed)
         self.bitrate = QComboBox()
         for rate in BITRATES:
             self.bitrate.addItem(f"{rate // 1000} kbit/s", rate)
@@ -186,6 +179,15 @@ class CanBusDialog(QDialog):
             "channel": self.channel.text().strip(),
             "bitrate": self.bitrate.currentData(),
         }
+
+    def _on_interface_changed(self, interface: str) -> None:
+        """Another adapter chosen: its usual channel replaces the channel of the one before
+        (``PCAN_USBBUS1`` for pcan, ``COM3`` for slcan on Windows) unless the user typed one
+        of their own."""
+        usual = usual_channel(interface.strip())
+        channel = self.channel.text().strip()
+        if usual is not None and (not channel or channel in {a.channel for a in adapters()}):
+            self.channel.setText(usual)
 
     def selected_device_id(self) -> str | None:
         """``can:NODE`` of the chosen PRM9 (None: none chosen)."""

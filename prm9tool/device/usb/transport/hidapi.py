@@ -75,6 +75,22 @@ class UsbFilter:
         return self.product.lower() in str(info.get("product_string") or "").lower()
 
 
+def shown_path(path: bytes, platform: str | None = None) -> str:
+    """A HID device path as the user's system shows it. On Windows hidapi's path is the device
+    interface's name, ``\\\\?\\HID#VID_0483&PID_5750#7&2a0b0f6b&0&0000#{4d1e55b2-…}``; Device
+    Manager shows the device instance path ``HID\\VID_0483&PID_5750\\7&2A0B0F6B&0&0000``
+    (Properties → Details), which this returns. Elsewhere the path as it is (``/dev/hidraw3``,
+    ``1-2:1.0``, macOS ``DevSrvsID:4294968125``)."""
+    text = path.decode(errors="replace")
+    if (sys.platform if platform is None else platform) != "win32":
+        return text
+    name = text.removeprefix("\\\\?\\").removeprefix("\\\\.\\")
+    head, _, last = name.rpartition("#")
+    if head and last.startswith("{") and last.endswith("}"):  # the interface class GUID
+        name = head
+    return name.replace("#", "\\").upper() if "#" in name else text
+
+
 def _hex_env(name: str) -> int:
     text = os.environ.get(name, "").strip()
     if not text:
@@ -123,22 +139,30 @@ class HidTransport(Transport):
             device.open_path(path)
             device.set_nonblocking(1)  # read(…, 0) must not block; timeouts > 0 still wait
         except (OSError, ValueError) as exc:
-            raise DeviceDisconnectedError(f"cannot open USB device {path.decode()}: {exc}") from exc
+            raise DeviceDisconnectedError(
+                f"cannot open USB device {shown_path(path)}: {exc}"
+            ) from exc
         return device
 
     def _write(self, report: bytes) -> None:
         try:
             written = self._device.write(bytes([REPORT_ID]) + report)
         except (OSError, ValueError) as exc:
-            raise DeviceDisconnectedError(f"USB valve {self.path.decode()} is gone: {exc}") from exc
+            raise DeviceDisconnectedError(
+                f"USB valve {shown_path(self.path)} is gone: {exc}"
+            ) from exc
         if written < 0:
-            raise DeviceDisconnectedError(f"USB valve {self.path.decode()} is gone (write failed)")
+            raise DeviceDisconnectedError(
+                f"USB valve {shown_path(self.path)} is gone (write failed)"
+            )
 
     def _read(self, timeout_s: float) -> bytes | None:
         try:
             data = self._device.read(REPORT_SIZE, max(0, round(timeout_s * 1000)))
         except (OSError, ValueError) as exc:
-            raise DeviceDisconnectedError(f"USB valve {self.path.decode()} is gone: {exc}") from exc
+            raise DeviceDisconnectedError(
+                f"USB valve {shown_path(self.path)} is gone: {exc}"
+            ) from exc
         if not data:
             return None
         return bytes(data[:REPORT_SIZE]).ljust(REPORT_SIZE, b"\x00")
@@ -155,7 +179,7 @@ class HidTransport(Transport):
             path = self._finder() if self._finder else self.path
             if path is None:
                 self._broken = DeviceDisconnectedError(
-                    f"the valve did not come back on USB after its restart ({self.path.decode()})"
+                    f"the valve did not come back on USB after its restart ({shown_path(self.path)})"
                 )
                 raise self._broken
             self.path = path
