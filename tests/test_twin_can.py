@@ -20,7 +20,7 @@ import prm9tool
 from prm9tool.catalogue import CATALOGUE
 from prm9tool.catalogue.commissioning import ENABLE_SEQUENCE, NmtCommand
 from prm9tool.cli.main import main
-from prm9tool.device import factory
+from prm9tool.device import emulated_valves
 from prm9tool.device.canlink.bus import CanOptions
 from prm9tool.device.emulator import EmulatedValve
 from prm9tool.device.emulator.constants import PLANT
@@ -80,7 +80,7 @@ def manual_only_valve(request, tmp_path, monkeypatch):
     yield rig
     valve.stop()
     rig.close()
-    factory.forget_emulated_valves()
+    emulated_valves.forget_emulated_valves()
 
 
 def test_a_manual_only_can_valve_is_identified_twinned_and_compared(
