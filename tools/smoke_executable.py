@@ -107,7 +107,10 @@ def _smoke(exe: Path) -> int:
             # the cache's check starts --version (and checks its output) anyway
             left_out = ("--get --json", "--version") if cached else ("--get --json",)
             steps = [step for step in steps if step[0] not in left_out]
-        if WINDOWS and (os.cpu_count() or 1) >= 2:  # two starts at a time: they take minutes
+        # two starts at a time (PRM9TOOL_SMOKE_LANES=2, Windows only): off by default — two
+        # starts of the one file at once raced in the launcher's cache check under Wine
+        # (FileNotFoundError in onefile_launcher.entries, issue 33): not fixed yet
+        if WINDOWS and os.environ.get("PRM9TOOL_SMOKE_LANES") == "2":
             failed = _two_lanes(exe, steps, work, env)
         else:
             failed = _lane(exe, steps, work, env) + (not _gui(exe, work, env))
