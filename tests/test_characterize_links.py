@@ -3,17 +3,16 @@ in front of a paced emulated valve) and CANopen (an emulated -CA valve on a virt
 
 from __future__ import annotations
 
-import contextlib
 import json
 import os
 import sys
-import threading
 import time
 
 import numpy as np
 import pytest
 from pypdf import PdfReader
 from support.usb_fakes import FakeHid
+from support.waiting import emulator_lag
 
 from prm9tool.catalogue import CATALOGUE
 from prm9tool.catalogue.commissioning import ENABLE_SEQUENCE, NmtCommand
@@ -43,27 +42,6 @@ static_gain = { min = 0.9, max = 1.1 }
 static_linearity_pct = { max = 5 }
 static_hysteresis_pct = { max = 8 }
 """
-
-
-@contextlib.contextmanager
-def emulator_lag(valve):
-    """How far the emulated valve's simulation (in this process) fell behind real time while
-    the block ran, sampled every 2 ms: a valve of its own never does, so a figure measured
-    while it did describes the PC's load, not the valve."""
-    lags: list[float] = []
-    done = threading.Event()
-
-    def watch() -> None:
-        while not done.wait(0.002):
-            lags.append(valve.pacer.lag_s())
-
-    watcher = threading.Thread(target=watch)
-    watcher.start()
-    try:
-        yield lags
-    finally:
-        done.set()
-        watcher.join()
 
 
 def step_s(rig) -> float:

@@ -5,9 +5,7 @@ and characterizes the twin as the valve was."""
 
 from __future__ import annotations
 
-import contextlib
 import json
-import threading
 from dataclasses import replace
 
 import can
@@ -15,6 +13,7 @@ import numpy as np
 import pytest
 from support.can_link_rig import LinkRig, _wrap_sdo
 from support.canopen_rig import BOOT_S, unique_channel
+from support.waiting import emulator_lag
 
 import prm9tool
 from prm9tool.catalogue import CATALOGUE
@@ -39,26 +38,6 @@ bode_f_max_hz = 100
 bode_duration_s = 3
 static_period_s = 4
 """
-
-
-@contextlib.contextmanager
-def emulator_lag(valve):
-    """How far the emulated valve's simulation fell behind real time while the block ran,
-    sampled every 2 ms (as tests/test_characterize_links.py measures it)."""
-    lags: list[float] = []
-    done = threading.Event()
-
-    def watch() -> None:
-        while not done.wait(0.002):
-            lags.append(valve.pacer.lag_s())
-
-    watcher = threading.Thread(target=watch)
-    watcher.start()
-    try:
-        yield lags
-    finally:
-        done.set()
-        watcher.join()
 
 
 @pytest.fixture

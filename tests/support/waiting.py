@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+import contextlib
+import threading
 import time
 from collections.abc import Callable
 
@@ -67,3 +69,24 @@ AUTOTUNE_WORK = 100.0
 # The same on an emulated valve through the connection's worker (every step a session
 # operation): 12.5–13.8 s against 0.07–0.30 s, 46–167 times.
 AUTOTUNE_ON_A_VALVE_WORK = 170.0
+
+
+@contextlib.contextmanager
+def emulator_lag(valve):
+    """How far the emulated valve's simulation (in this process) fell behind real time while
+    the block ran, sampled every 2 ms: a valve of its own never does, so a figure measured
+    while it did describes the PC's load, not the valve."""
+    lags: list[float] = []
+    done = threading.Event()
+
+    def watch() -> None:
+        while not done.wait(0.002):
+            lags.append(valve.pacer.lag_s())
+
+    watcher = threading.Thread(target=watch)
+    watcher.start()
+    try:
+        yield lags
+    finally:
+        done.set()
+        watcher.join()
