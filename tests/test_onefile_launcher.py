@@ -142,3 +142,28 @@ def test_a_group_writable_umask_does_not_make_every_start_unpack(
     finally:
         os.umask(previous)
     assert not (folder / "_internal").stat().st_mode & 0o022
+
+
+def test_windows_modes_do_not_make_every_start_unpack(
+    packed: Path, tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """Windows reports every writable file as 0o666 and every folder as 0o777 (its access
+    control is not in st_mode): judged by mode bits, no start would ever find its folder
+    verified, each would unpack the program again and remove the folder another start runs
+    from (two starts at once failed with FileNotFoundError under Wine)."""
+    root = tmp_path / "cache"
+    root.mkdir(mode=0o700)
+    folder = _start(packed, root)
+    assert folder is not None
+    for path in [folder, *folder.rglob("*")]:
+        if not path.is_symlink():
+            path.chmod(0o777 if path.is_dir() else 0o666)  # what os.stat says on Windows
+    manifest = launcher.read_manifest(packed)[0]
+    assert not launcher.verified(folder, manifest)  # on POSIX: others may write: unpack again
+    monkeypatch.setattr(launcher, "POSIX", False)
+    assert launcher.verified(folder, manifest)
+    stamp = (folder / "_internal" / "libx.so.1").stat().st_mtime_ns
+    assert _start(packed, root) == folder  # reused, not unpacked again
+    assert (folder / "_internal" / "libx.so.1").stat().st_mtime_ns == stamp
+    (folder / "_internal" / "libx.so.1").write_bytes(b"changed")
+    assert not launcher.verified(folder, manifest)  # a changed file still unpacks again

@@ -46,6 +46,10 @@ SECTION = struct.Struct("<II16xQQ")  # ELF64 section header: name, type, offset,
 SECTION_NAME = b"prm9payload"
 VERIFIED = ".verified.json"
 PRUNE_AFTER_S = 30 * 86400
+# POSIX: owner and mode bits say who may write; Windows reports every writable file as 0o666
+# and every folder as 0o777 (its access control lists are not in st_mode), and the per-user
+# %LOCALAPPDATA% is guarded by them
+POSIX = os.name == "posix"
 
 
 class LaunchError(Exception):
@@ -133,7 +137,7 @@ def private(path: Path) -> bool:
         return False
     if not stat.S_ISDIR(info.st_mode):
         return False
-    if os.name != "posix":
+    if not POSIX:
         return True  # per-user %LOCALAPPDATA%: Windows' own access control
     return info.st_uid == os.geteuid() and not info.st_mode & 0o022
 
@@ -202,7 +206,7 @@ def verified(folder: Path, manifest: dict) -> bool:
         return False
     if record.get("id") != manifest["id"] or set(record["files"]) != set(manifest["files"]):
         return False
-    uid = os.geteuid() if os.name == "posix" else None
+    uid = os.geteuid() if POSIX else None
     files = record["files"]
     found = entries(folder)
     found.pop(VERIFIED, None)
@@ -212,7 +216,9 @@ def verified(folder: Path, manifest: dict) -> bool:
         if stat.S_ISLNK(info.st_mode):
             ok = [info.st_size, info.st_mtime_ns] == files[name]
         else:
-            ok = not info.st_mode & 0o022 and (uid is None or info.st_uid == uid)
+            # the mode bits only where they say something (see POSIX): on Windows they would
+            # call every file writable by others and unpack the program again at every start
+            ok = uid is None or (not info.st_mode & 0o022 and info.st_uid == uid)
             ok = ok and (name.endswith("/") or [info.st_size, info.st_mtime_ns] == files[name])
         if not ok:
             return False
