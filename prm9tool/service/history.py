@@ -308,6 +308,35 @@ def signature_with_history(connection: Any, rig: Any, profile: Any = None) -> Dr
     return report
 
 
+def birth_certificate_problem(connection: Any) -> Exception | None:
+    """Why :func:`signature_with_history` would refuse on the connection's valve before it
+    moves — the history is off, or holds no end-of-line test of this serial (for either loop:
+    which one the valve runs is read from it in the worker) — or None. The window asks this
+    before its hydraulics and enabling questions, so a refusal asks nothing and enables
+    nothing first; offline the worker's own check says why."""
+    from prm9tool.characterize.drift import NO_HISTORY, NoReferenceError, reference_of
+
+    device = getattr(connection, "device", None)
+    if device is None or not getattr(connection, "is_online", False):
+        return None
+    hook: HistoryHook | None = getattr(connection, "history", None)
+    if hook is None:
+        return NoReferenceError(NO_HISTORY())
+    serial, type_key = int(device.serial), str(device.type_key)
+    try:
+        records = hook.records_of(serial)
+    except HistoryError as exc:
+        return exc
+    problem: Exception | None = None
+    for loop in ("position", "process"):
+        try:
+            reference_of(records, serial, type_key, loop)
+            return None
+        except NoReferenceError as exc:
+            problem = problem or exc
+    return problem
+
+
 def run_with_history(connection: Any, run: Callable[[], Characterization]) -> Characterization:
     """``run()`` (a characterization on the connection's valve, in the GUI's worker) with its
     result recorded into the connection's history (``connection.history``, a

@@ -14,7 +14,7 @@ from PySide6.QtWidgets import QLabel, QPushButton, QTableWidgetItem
 from prm9tool.analysis.profile import ProfileError
 from prm9tool.characterize.drift import DriftReport
 from prm9tool.characterize.signature import MOTION_LIMIT_S
-from prm9tool.service.history import signature_with_history
+from prm9tool.service.history import birth_certificate_problem, signature_with_history
 from prm9tool.translate import error_text
 from prm9tool.views.tuning.host import TuningHost, figure_table
 from prm9tool.views.tuning.pages import Page
@@ -54,6 +54,10 @@ class SignaturePage(Page):
                     "the valve first."
                 )
             )
+            return
+        problem = birth_certificate_problem(connection)  # before the questions: none asked
+        if problem is not None:
+            self.result.setText(error_text(problem))
             return
         try:
             profile = self.window_.profile()  # the drift limits: the Test report page's profile
