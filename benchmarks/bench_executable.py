@@ -35,13 +35,23 @@ def start_once(command: list[str], cache: str) -> float:
         env.update(XDG_CACHE_HOME=cache)
         env.pop("PRM9TOOL_EXE_CACHE", None)
         start = time.time()
-        done = subprocess.run(
-            [*command, "--emulator"], env=env, capture_output=True, text=True, timeout=120
-        )
+        try:
+            done = subprocess.run(
+                [*command, "--emulator"], env=env, capture_output=True, text=True, timeout=120
+            )
+        except subprocess.TimeoutExpired as exc:  # say what it printed: why it did not end
+            raise RuntimeError(
+                f"{command[0]} did not end within 120 s after its window:\n"
+                f"{_text(exc.stdout)}\n{_text(exc.stderr)}"
+            ) from None
     for line in done.stdout.splitlines():
         if line.startswith("shown "):
             return float(line.split()[1]) - start
     raise RuntimeError(f"{command[0]} showed no window:\n{done.stdout}\n{done.stderr}")
+
+
+def _text(output: bytes | str | None) -> str:
+    return output.decode(errors="replace") if isinstance(output, bytes) else output or ""
 
 
 def size_mb(path: Path) -> float:

@@ -393,6 +393,8 @@ def show_library_messages(window: MainWindow) -> LibraryLog:
 
 def run(args: argparse.Namespace, spools_problem: Prm9Error | None = None) -> int:
     """Start the GUI (``spools_problem``: why spools.json was left out); returns the exit code."""
+    from PySide6.QtCore import Qt
+
     from prm9tool.display import missing_x11_message, missing_x11_packages
 
     missing = missing_x11_packages()
@@ -407,9 +409,14 @@ def run(args: argparse.Namespace, spools_problem: Prm9Error | None = None) -> in
     start(window, plan_from(args, spools_problem))
     freeze_start_up_objects()
     _probe_start_up(window)
+    # the window closed is the end of the program: a result that arrives afterwards and shows
+    # a dialog (a valve still connecting when the window was closed) would otherwise take back
+    # Qt's own quit, and the program run on with no window (issue 34)
+    app.lastWindowClosed.connect(app.quit, Qt.ConnectionType.QueuedConnection)
     try:
         code = app.exec()
     finally:
+        app.lastWindowClosed.disconnect(app.quit)
         library_log.close()
     return ExitCode.OK if code == 0 else int(code)
 

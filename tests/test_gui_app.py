@@ -144,9 +144,36 @@ def test_a_bad_emulator_type_key_is_reported(qtbot, answers):
     assert not window.connection.is_online
 
 
-def test_run_shows_the_window_and_returns_when_it_closes(answers):
+def test_run_shows_the_window_and_returns_when_it_closes(qapp, answers):
+    # qapp: a timer set before the application exists never fires (the test alone hung)
     QTimer.singleShot(300, QApplication.closeAllWindows)
     assert app.run(_args()) == 0
+
+
+def test_run_ends_when_a_late_result_shows_a_dialog_after_the_window_closed(qapp, answers):
+    """Closed while the valve was still connecting: the result that arrives afterwards showed a
+    dialog, which took Qt's quit back, and the program ran on with no window (the executable's
+    start-up benchmark hung in CI). The window closed is the end of the program."""
+    from PySide6.QtWidgets import QDialog
+
+    from prm9tool.views.main_window import MainWindow
+
+    def close_then_late_dialog() -> None:
+        window = next(w for w in QApplication.topLevelWidgets() if isinstance(w, MainWindow))
+        window.close()
+        late = QDialog(window)  # what a result arriving now shows
+        late.show()
+        QTimer.singleShot(0, late.hide)
+
+    QTimer.singleShot(0, close_then_late_dialog)
+    guard = QTimer()  # a hang fails the test instead of the suite
+    guard.setSingleShot(True)
+    guard.timeout.connect(lambda: QApplication.exit(99))
+    guard.start(TIMEOUT)
+    try:
+        assert app.run(_args()) == 0
+    finally:
+        guard.stop()
 
 
 def _broken_spools_json() -> Path:

@@ -178,6 +178,18 @@ def test_a_can_bus_that_cannot_be_opened_is_reported_and_the_valve_stays_online(
         emulated_valves.forget_emulated_valves()
 
 
+def test_a_valve_connected_while_the_window_closes_is_not_reported_online(qtbot, connection):
+    """The window closed while the worker was still connecting: its late result reaches no one
+    (it showed the differences' progress dialog after the window had gone, and Qt's quit was
+    taken back: the program ran on with no window)."""
+    seen = _record(connection.online_changed)
+    connection.go_online(factory.list_devices([f"{E02}:5001"])[-1])
+    connection.shutdown(timeout_s=60)  # the worker connects, posts its result, and ends
+    qtbot.wait(50)  # the queued result is delivered now, if at all
+    assert seen == []
+    assert not connection.is_online
+
+
 def test_watched_measuring_points_are_reported(qtbot, paced_connection):
     connection = paced_connection
     _online(qtbot, connection, f"{E04_CA}:5002")

@@ -81,6 +81,7 @@ class ValveConnection(QObject):
         self._online = False
         self._device: ValveIdentity | None = None
         self._busy = 0
+        self._ended = False  # shutdown(): the worker's late results are dropped
         self.live = LiveData(self._worker, self._submit, self.write_failed.emit, self)
         self._posted.connect(self._on_posted, Qt.ConnectionType.QueuedConnection)
         self.history: HistoryHook | None = None  # set_recorder(); used by the worker only
@@ -164,6 +165,7 @@ class ValveConnection(QObject):
             busy = self.tr("The valve connection is busy; wait until it is done.")
             self.failed.emit(busy if self.is_busy else self.tr("Already online; go offline first."))
             return
+        self._ended = False  # started again after a shutdown
         self._worker.start()
         self._set_busy(+1)  # connecting: no second session may be opened meanwhile
         done = lambda: self._set_busy(-1)  # noqa: E731
@@ -315,6 +317,7 @@ class ValveConnection(QObject):
     def shutdown(self, timeout_s: float = 3.0) -> None:
         """Close the session and end the worker thread (application exit)."""
         self.stop_reconnecting()
+        self._ended = True  # what the worker still posts reaches no one: the window closed
         self._worker.stop(timeout_s)
 
     # --- the live part's signals and commands (connection_live.py) ---------------------------
@@ -442,7 +445,8 @@ class ValveConnection(QObject):
 
     def _on_posted(self, action: object) -> None:
         assert callable(action)
-        action()
+        if not self._ended:
+            action()
 
     def _on_opened(self, info: object) -> None:
         self._set_busy(-1)
