@@ -27,7 +27,7 @@ from PySide6.QtWidgets import QApplication, QGraphicsScene
 from prm9tool.catalogue import CATALOGUE, Access
 from prm9tool.catalogue.signals import signals_for
 from prm9tool.catalogue.typekey import TypeKey
-from prm9tool.characterize.procedures import LOOPS, STEP_PRE_S
+from prm9tool.characterize.frame import LOOPS, STEP_PRE_S
 from prm9tool.device.emulator import EmulatedValve
 from prm9tool.model.access import AccessModel
 from prm9tool.model.document import ParameterDocument

@@ -19,7 +19,8 @@ from prm9tool.analysis.profile import DEFAULT
 from prm9tool.catalogue import CATALOGUE
 from prm9tool.catalogue.commissioning import ENABLE_SEQUENCE, NmtCommand
 from prm9tool.characterize.canrig import CanRig, tick_period_s
-from prm9tool.characterize.procedures import BodeResult, Record, bode_test
+from prm9tool.characterize.frame import Record
+from prm9tool.characterize.procedures import BodeResult, bode_test
 from prm9tool.characterize.rig import EmulatorRig, LinkTooSlowError, RigInfo
 from prm9tool.characterize.run import Characterization, figures, report_data
 from prm9tool.device.canlink.session import CanopenSession

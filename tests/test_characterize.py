@@ -18,13 +18,8 @@ from prm9tool.analysis.static import linearization_values, propose_linearization
 from prm9tool.catalogue import CATALOGUE
 from prm9tool.characterize.autotune import model_tune
 from prm9tool.characterize.critical_gain import critical_gain_tune
-from prm9tool.characterize.procedures import (
-    TRANSPARENT,
-    LimitExceededError,
-    bode_test,
-    static_test,
-    step_test,
-)
+from prm9tool.characterize.frame import LimitExceededError
+from prm9tool.characterize.procedures import TRANSPARENT, bode_test, static_test, step_test
 from prm9tool.characterize.rig import EmulatorRig, Stopped
 from prm9tool.device.emulator import EmulatedValve
 from prm9tool.scope.measure import step_figures
@@ -218,7 +213,8 @@ def test_an_identification_without_response_or_with_a_bad_fit_is_not_trustworthy
 
     from prm9tool.analysis.model import MAX_FIT_ERROR_PCT, PlantModel
     from prm9tool.characterize.autotune import doubts
-    from prm9tool.characterize.procedures import Record, StepResult
+    from prm9tool.characterize.frame import Record
+    from prm9tool.characterize.procedures import StepResult
 
     good = PlantModel(1.0, 0.002, 0.001, 0.0005, 2, False, 3.0)
     flat = StepResult(50.0, Record(np.zeros(3), {}), None)
@@ -296,7 +292,7 @@ def test_an_e04_sweep_after_a_large_step_starts_from_rest():
     """`--characterize` of an E04 as delivered stopped at its frequency response with
     "process_actual left the allowed band 0 ± 30 %": the actuator was still at 59 % from the
     90 % step (0.15 s) when the sweep began after 0.05 s at 0 %."""
-    from prm9tool.characterize.procedures import settle
+    from prm9tool.characterize.frame import settle
 
     rig = EmulatorRig(EmulatedValve("PRM9-06.3Z11/30-24E04S02"))
     step_test(rig, 90.0, duration_s=0.15, loop="process")

@@ -113,7 +113,7 @@ def test_the_dialog_and_the_autotune_give_the_same_figures_for_the_same_gains():
     """Issue 25 item 5: the dialog said 0.9 % / 13.6 ms where the autotune said 0.0 % / 17.2 ms
     for the same gains (another stimulus, a 60 ms window). Now both take the autotune's step."""
     from prm9tool.characterize.autotune import simulate_steps
-    from prm9tool.characterize.procedures import STEP_PRE_S, STEP_WINDOW_S
+    from prm9tool.characterize.frame import STEP_PRE_S, STEP_WINDOW_S
     from prm9tool.characterize.rig import EmulatorRig
     from prm9tool.device.emulator import EmulatedValve
 

@@ -25,17 +25,8 @@ from prm9tool.catalogue.typekey import TypeKey
 from prm9tool.catalogue.variant import Coils
 from prm9tool.characterize.autotune import AutotuneResult, model_tune, simulate_steps
 from prm9tool.characterize.critical_gain import CriticalGainResult, critical_gain_tune
-from prm9tool.characterize.procedures import (
-    LOOPS,
-    StaticResult,
-    StepResult,
-    _step,
-    chain_changes,
-    gain_names,
-    preserved,
-    static_test,
-    step_window,
-)
+from prm9tool.characterize.frame import LOOPS, chain_changes, gain_names, preserved, step_window
+from prm9tool.characterize.procedures import StaticResult, StepResult, _step, static_test
 from prm9tool.characterize.rig import Rig
 from prm9tool.characterize.run import Characterization, Figure, figures
 from prm9tool.messages import QT_TRANSLATE_NOOP, Message

@@ -31,15 +31,8 @@ from prm9tool.analysis.pid import CYCLE_S, from_parameters, to_parameters
 from prm9tool.catalogue.scale import FULL_SCALE, PERCENT, from_percent
 from prm9tool.catalogue.typekey import TypeKey
 from prm9tool.catalogue.variant import Coils
-from prm9tool.characterize.procedures import (
-    LOOPS,
-    StepResult,
-    _step,
-    chain_changes,
-    gain_names,
-    preserved,
-    step_window,
-)
+from prm9tool.characterize.frame import LOOPS, chain_changes, gain_names, preserved, step_window
+from prm9tool.characterize.procedures import StepResult, _step
 from prm9tool.characterize.rig import Rig
 from prm9tool.errors import Prm9Error
 from prm9tool.messages import QT_TRANSLATE_NOOP, Message

@@ -1,7 +1,7 @@
 """The critical-gain autotune (APOSYS 10): the loop on P only, Kp raised until a setpoint step
 keeps it oscillating, the critical gain narrowed by bisection, then the rule's gains from the
 critical gain and period (:func:`prm9tool.analysis.pid.critical_gain_rule`). It moves the valve
-with the frame of :mod:`prm9tool.characterize.procedures`: the gains and the setpoint chain
+with the frame of :mod:`prm9tool.characterize.frame`: the gains and the setpoint chain
 saved and put back in every case, the stimulus recorded within a limit.
 """
 
@@ -13,14 +13,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from prm9tool.analysis.pid import PidGains, critical_gain_rule, from_parameters, oscillation
-from prm9tool.characterize.procedures import (
-    LOOPS,
-    Loop,
-    chain_changes,
-    gain_names,
-    preserved,
-    record,
-)
+from prm9tool.characterize.frame import LOOPS, Loop, chain_changes, gain_names, preserved, record
 from prm9tool.characterize.rig import Rig, retried
 from prm9tool.errors import Prm9Error
 

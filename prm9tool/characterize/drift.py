@@ -429,7 +429,7 @@ def _thin(values: np.ndarray, points: int) -> list[float]:
 def curves(result: Characterization) -> dict[str, Any]:
     """The steps and the Bode of a run, thinned to a few hundred numbers, for the plot of a
     later signature over its birth certificate (the ``curves`` of a characterization record)."""
-    from prm9tool.characterize.procedures import LOOPS
+    from prm9tool.characterize.frame import LOOPS
 
     lp = LOOPS[result.loop]
     steps = []

@@ -23,7 +23,7 @@ from prm9tool.analysis.flow import FlowCharacteristic, flow_characteristic, velo
 from prm9tool.catalogue import CATALOGUE
 from prm9tool.catalogue.typekey import TypeKey
 from prm9tool.catalogue.variant import Coils, Config
-from prm9tool.characterize.procedures import Record, chain_changes, preserved, record
+from prm9tool.characterize.frame import Record, chain_changes, preserved, record
 from prm9tool.characterize.rig import Rig
 from prm9tool.errors import Prm9Error
 from prm9tool.messages import QT_TRANSLATE_NOOP, Message

@@ -22,8 +22,8 @@ from prm9tool.catalogue import CATALOGUE
 from prm9tool.catalogue.typekey import TypeKey
 from prm9tool.catalogue.variant import Config
 from prm9tool.characterize.flow import FlowResult, flow_objects_missing, flow_test
+from prm9tool.characterize.frame import STEP_PRE_S
 from prm9tool.characterize.procedures import (
-    STEP_PRE_S,
     BodeResult,
     StaticResult,
     StepResult,

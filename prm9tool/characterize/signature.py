@@ -34,9 +34,9 @@ from prm9tool.analysis.static import static_characteristic
 from prm9tool.catalogue import CATALOGUE
 from prm9tool.catalogue.typekey import TypeKey
 from prm9tool.catalogue.variant import Config
+from prm9tool.characterize.frame import STEP_PRE_S
 from prm9tool.characterize.procedures import (
     SAMPLES_PER_PERIOD,
-    STEP_PRE_S,
     StaticResult,
     bode_test,
     static_test,

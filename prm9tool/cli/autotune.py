@@ -18,7 +18,7 @@ import json
 import sys
 
 from prm9tool.api.valve import Valve
-from prm9tool.characterize.procedures import LimitExceededError
+from prm9tool.characterize.frame import LimitExceededError
 from prm9tool.characterize.rig import Stopped, ValveFaultError
 from prm9tool.cli.batch_devices import BatchError
 from prm9tool.cli.characterize import ENABLE_NEEDS_CONFIRMATION

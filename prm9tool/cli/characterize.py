@@ -25,7 +25,7 @@ from typing import TYPE_CHECKING
 
 from prm9tool.analysis.profile import DEFAULT, Profile, ProfileError, load_profile
 from prm9tool.characterize.canrig import rig_for_session
-from prm9tool.characterize.procedures import LimitExceededError
+from prm9tool.characterize.frame import LimitExceededError
 from prm9tool.characterize.rig import EmulatorRig, Rig, Stopped, ValveFaultError
 from prm9tool.characterize.run import Characterization, characterize, report_data, write_csv_files
 from prm9tool.cli.batch_devices import BatchError, can_options, select

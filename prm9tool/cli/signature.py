@@ -18,7 +18,7 @@ import sys
 from pathlib import Path
 
 from prm9tool.characterize.drift import DriftReport, NoReferenceError, signature
-from prm9tool.characterize.procedures import LimitExceededError
+from prm9tool.characterize.frame import LimitExceededError
 from prm9tool.characterize.rig import Stopped, ValveFaultError
 from prm9tool.cli.batch_devices import BatchError
 from prm9tool.cli.characterize import _profile, _rig

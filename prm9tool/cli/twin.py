@@ -95,7 +95,7 @@ def _from_report(args: argparse.Namespace) -> tuple[int, Fit | None]:
 def _from_valve(args: argparse.Namespace) -> tuple[int, Fit | None, list[Side]]:
     """Characterize the one valve of ``--device``/``--emulator``, record the run, fit, and
     characterize the twin as the valve was (the side-by-side)."""
-    from prm9tool.characterize.procedures import LimitExceededError
+    from prm9tool.characterize.frame import LimitExceededError
     from prm9tool.characterize.rig import Stopped, ValveFaultError
     from prm9tool.characterize.run import characterize
     from prm9tool.cli.batch_devices import BatchError

@@ -25,7 +25,8 @@ from PySide6.QtCore import QCoreApplication, QObject, Signal
 from prm9tool.catalogue import CATALOGUE
 from prm9tool.catalogue.typekey import TypeKey
 from prm9tool.characterize.autotune import emulated_step
-from prm9tool.characterize.procedures import LOOPS, STEP_CAPTION
+from prm9tool.characterize.frame import LOOPS
+from prm9tool.characterize.procedures import STEP_CAPTION
 from prm9tool.characterize.transparent import NO_SHAPING, UNITY_GAIN
 from prm9tool.errors import Prm9Error
 from prm9tool.i18n import format_number

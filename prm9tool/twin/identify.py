@@ -29,7 +29,7 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 
 from prm9tool.catalogue.signals import BY_KEY
-from prm9tool.characterize.procedures import LOOPS, chain_changes, preserved
+from prm9tool.characterize.frame import LOOPS, chain_changes, preserved
 from prm9tool.characterize.transparent import TRANSPARENT
 from prm9tool.errors import Prm9Error
 

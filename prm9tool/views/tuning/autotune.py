@@ -24,7 +24,8 @@ from prm9tool.analysis.model import Targets
 from prm9tool.analysis.profile import ProfileError
 from prm9tool.characterize.acceptance import TRIES, Proposal, step_start
 from prm9tool.characterize.autotune import AutotuneResult
-from prm9tool.characterize.procedures import LOOPS, StepResult, step_window
+from prm9tool.characterize.frame import LOOPS, step_window
+from prm9tool.characterize.procedures import StepResult
 from prm9tool.i18n import format_number, format_significant
 from prm9tool.service import autotune
 from prm9tool.service.autotune import LOOP_DEFAULTS, AutotuneSettings

@@ -169,7 +169,7 @@ def _array(values: list[float | None]) -> np.ndarray:
 def step_plots(report: DriftReport) -> list[Plot]:
     """One plot per step size: today's step up, today's step down mirrored (×−1, so an
     asymmetry shows) and the birth certificate's step up (dashed) where its record kept one."""
-    from prm9tool.characterize.procedures import LOOPS
+    from prm9tool.characterize.frame import LOOPS
 
     lp = LOOPS[report.today.loop]
     kept = {}

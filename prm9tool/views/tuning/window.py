@@ -31,7 +31,7 @@ from prm9tool.analysis.profile import DEFAULT, Profile, load_profile
 from prm9tool.catalogue import CATALOGUE
 from prm9tool.catalogue.commissioning import Blocker
 from prm9tool.catalogue.variant import Config
-from prm9tool.characterize.procedures import LOOPS, gain_names
+from prm9tool.characterize.frame import LOOPS, gain_names
 from prm9tool.i18n import unbroken_units
 from prm9tool.model.access import AccessModel
 from prm9tool.model.document import ParameterDocument
