@@ -19,8 +19,9 @@ from prm9tool.catalogue import CATALOGUE
 from prm9tool.characterize.autotune import model_tune
 from prm9tool.characterize.critical_gain import critical_gain_tune
 from prm9tool.characterize.frame import LimitExceededError
-from prm9tool.characterize.procedures import TRANSPARENT, bode_test, static_test, step_test
+from prm9tool.characterize.procedures import bode_test, static_test, step_test
 from prm9tool.characterize.rig import EmulatorRig, Stopped
+from prm9tool.characterize.transparent import TRANSPARENT
 from prm9tool.device.emulator import EmulatedValve
 from prm9tool.scope.measure import step_figures
 

@@ -7,21 +7,9 @@ the parameter "not available over CANopen on this valve": it is skipped and list
 :attr:`unavailable`. Store is 0x1010/1 "save", restore factory values 0x1011/1 "load",
 restart NMT reset node.
 
-**Decision (reverting a failed upload).** CiA 301 has no "reload the stored set into RAM"
-short of resetting the node, which power-cycles the electronics and drops the spool. So
-before an upload writes anything the session reads the working values of the parameters it is
-going to write (a snapshot) and, after a failed upload, writes them back: the valve then runs
-on with the values it had, its stored set untouched, and nothing moves. The snapshot costs one
-SDO read per parameter, except for the values this session read or wrote last (the batch's
-backup and the GUI's going online read them all): docs/can-link.md, docs/PERFORMANCE.md.
-
-**Decision (fewer frames, the same guarantees).** An upload does not send a value the snapshot
-shows the valve holding already (the verify step reads every value back all the same, and one
-that reads back otherwise is written and verified after all); and it makes sure of the store
-not by reading every value once more but by watching for the node's boot-up frame — which a
-node sends whenever it restarts (CiA 301) — from before the first write until the store's
-acknowledgement, plus one read-back of a value the upload changed. A valve that restarted
-before the store stored its old set, and said so on the bus.
+The upload's decisions (the snapshot that reverts a failed upload, fewer frames with the same
+guarantees) are in :mod:`prm9tool.device.canlink.upload_steps`, which carries them out; the
+entry reads and writes are :mod:`prm9tool.device.canlink.entries`.
 """
 
 from __future__ import annotations
@@ -35,10 +23,11 @@ from prm9tool.catalogue import CATALOGUE, LOAD_SIGNATURE, SAVE_SIGNATURE, Parame
 from prm9tool.catalogue.commissioning import NmtCommand
 from prm9tool.device.canlink import bus as canbus
 from prm9tool.device.canlink import discovery, relocate
+from prm9tool.device.canlink.entries import SdoEntries
 from prm9tool.device.canlink.nmt_confirm import send_and_confirm
 from prm9tool.device.canlink.pdo_scope import NotPdoMappedError, PdoSampler, min_period_s
 from prm9tool.device.canlink.sampler import SdoSampler
-from prm9tool.device.canlink.sdo import MISSING, SdoChannel, decoded
+from prm9tool.device.canlink.sdo import MISSING, SdoChannel
 from prm9tool.device.canlink.status import read_status, stopped_status
 from prm9tool.device.canlink.storing import STORED_WITH_1010, factory_upload
 from prm9tool.device.canlink.typekeys import GivenKey
@@ -47,12 +36,10 @@ from prm9tool.device.records import (
     DeviceInfo,
     NmtState,
     Progress,
-    RefusedError,
     Steps,
     UploadResult,
     Value,
     ValveStatus,
-    check_cancel,
 )
 from prm9tool.device.session import ValveSession
 from prm9tool.device.setpoint import SetpointLink
@@ -110,6 +97,7 @@ class CanopenSession(ValveSession):
             self._key_refusal,
         )
         self.upload_steps = self._upload
+        self._entries = SdoEntries(lambda: self._sdo, self.unavailable, self._upload)
         self._sampler: SdoSampler | PdoSampler | None = None
         self._stopped_by_me = False  # this session's NMT stop is in force (no SDO then)
         self._last_status: ValveStatus | None = None
@@ -214,32 +202,7 @@ class CanopenSession(ValveSession):
     def _read_entries(
         self, params: Sequence[Parameter], steps: Steps | None, cancel: threading.Event | None
     ) -> dict[str, Value | SdoAbortError]:
-        step = steps.step if steps else "read"
-        results: dict[str, Value | SdoAbortError] = {}
-        for param in params:
-            check_cancel(cancel, step)
-            if param.mnemonic not in self.unavailable:
-                outcome = self._read_one(param)
-                if outcome is not None:
-                    results[param.mnemonic] = outcome
-            if steps:
-                steps.advance(1)
-        return results
-
-    def _read_one(self, param: Parameter) -> Value | SdoAbortError | None:
-        try:
-            data = self._sdo.upload(param.index, param.subindex)
-        except SdoAbortError as exc:
-            if exc.code in MISSING:
-                self.unavailable.add(param.mnemonic)
-                return None
-            return exc
-        if param.is_string:
-            value: Value = data.split(b"\0", 1)[0].decode("latin-1")
-        else:
-            value = decoded(param, data)
-        self._upload.known[param.mnemonic] = value
-        return value
+        return self._entries.read(params, steps, cancel)
 
     def _write_entries(
         self,
@@ -248,28 +211,7 @@ class CanopenSession(ValveSession):
         steps: Steps | None,
         cancel: threading.Event | None,
     ) -> int:
-        done = 0
-        upload = self._upload
-        holds = upload.snapshot or {}  # during an upload: what the valve holds already
-        for param in params:
-            check_cancel(cancel, "write")
-            if holds.get(param.mnemonic, holds) == values[param.mnemonic]:
-                done += 1  # the valve holds it: not sent (the verify step reads it back)
-            elif param.mnemonic not in self.unavailable:
-                data = param.dtype.encode(values[param.mnemonic])
-                try:
-                    upload.known.pop(param.mnemonic, None)  # unknown if the answer is lost
-                    self._sdo.download(param.index, param.subindex, data)
-                    upload.known[param.mnemonic] = values[param.mnemonic]
-                    upload.touched.append(param.mnemonic)
-                    done += 1
-                except SdoAbortError as exc:
-                    if exc.code not in MISSING:
-                        raise RefusedError(param.mnemonic, exc, done) from exc
-                    self.unavailable.add(param.mnemonic)
-            if steps:
-                steps.advance(1)
-        return done
+        return self._entries.write(params, values, steps, cancel)
 
     # --- commands ---------------------------------------------------------------------------
     def store(self) -> None:

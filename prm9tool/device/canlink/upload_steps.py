@@ -1,9 +1,25 @@
 """The upload's steps over CANopen that differ from the USB link's: the snapshot for putting
 the working values back, the writes left out, the verify that corrects them and how the store
-is made sure of (see the decisions in prm9tool.device.canlink.session). A part the
+is made sure of (the decisions below). A part the
 :class:`~prm9tool.device.canlink.session.CanopenSession` holds as its
 :attr:`~prm9tool.device.session.ValveSession.upload_steps`; it owns the upload's state, the
 session its SDO channel and the bus.
+
+**Decision (reverting a failed upload).** CiA 301 has no "reload the stored set into RAM"
+short of resetting the node, which power-cycles the electronics and drops the spool. So
+before an upload writes anything the session reads the working values of the parameters it is
+going to write (a snapshot) and, after a failed upload, writes them back: the valve then runs
+on with the values it had, its stored set untouched, and nothing moves. The snapshot costs one
+SDO read per parameter, except for the values this session read or wrote last (the batch's
+backup and the GUI's going online read them all): docs/can-link.md, docs/PERFORMANCE.md.
+
+**Decision (fewer frames, the same guarantees).** An upload does not send a value the snapshot
+shows the valve holding already (the verify step reads every value back all the same, and one
+that reads back otherwise is written and verified after all); and it makes sure of the store
+not by reading every value once more but by watching for the node's boot-up frame — which a
+node sends whenever it restarts (CiA 301) — from before the first write until the store's
+acknowledgement, plus one read-back of a value the upload changed. A valve that restarted
+before the store stored its old set, and said so on the bus.
 """
 
 from __future__ import annotations
