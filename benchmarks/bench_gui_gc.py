@@ -47,6 +47,7 @@ def main(argv: list[str] | None = None) -> int:
     runs, tick_s = (2, 0.1) if options.quick else (10, 1.0)
 
     from prm9tool import app
+    from prm9tool.app import start_plan
     from prm9tool.cli.parser import build_parser
     from prm9tool.views.tuning.window import TuningWindow
 
@@ -54,7 +55,7 @@ def main(argv: list[str] | None = None) -> int:
     qapp = app.create_application()
     window = app.create_window(args)
     window.show()
-    app.start(window, app.plan_from(args))
+    start_plan.start(window, start_plan.plan_from(args))
     deadline = time.monotonic() + 60.0
     while not window.connection.is_online and time.monotonic() < deadline:
         qapp.processEvents()

@@ -38,6 +38,7 @@ TYPE_KEY = "PRM9-06.3Z11/30-24E02S02-CA"
 CHILD = r"""
 import os, sys, time
 from prm9tool import app
+from prm9tool.app import start_plan
 from prm9tool.cli.main import build_parser
 from PySide6.QtCore import QTimer
 
@@ -62,7 +63,7 @@ window.connection.online_changed.connect(on_online)
 timer = QTimer()
 timer.timeout.connect(poll)
 timer.start(5)
-app.start(window, app.plan_from(args))
+start_plan.start(window, start_plan.plan_from(args))
 QTimer.singleShot(20000, lambda: os._exit(3))
 qapp.exec()
 """

@@ -16,6 +16,7 @@ import pytest
 from support.canopen_rig import TIMEOUT_S, unique_channel
 
 from prm9tool import app
+from prm9tool.app import start_plan
 from prm9tool.cli import main as cli
 from prm9tool.device import emulated_valves, factory
 from prm9tool.errors import CanBusError
@@ -36,7 +37,7 @@ def _wait_for(bus: can.BusABC, can_id: int, data: bytes) -> None:
 def _open(argv: list[str]) -> object:
     """Open the session as the GUI does, then join the CAN bus (the session stays open)."""
     args = cli.build_parser().parse_args(argv)
-    entry = factory.list_devices(app.plan_from(args).emulators)[0]
+    entry = factory.list_devices(start_plan.plan_from(args).emulators)[0]
     session = app._opener(args)(entry)
     try:
         app._joiner(args)(session)
@@ -78,7 +79,7 @@ def test_an_unknown_can_interface_is_reported_and_the_usb_session_keeps_working(
     args = cli.build_parser().parse_args(
         ["--emulator", f"{E04_CA}:{SERIAL}", "--can-interface", "no-such-interface"]
     )
-    session = app._opener(args)(factory.list_devices(app.plan_from(args).emulators)[0])
+    session = app._opener(args)(factory.list_devices(start_plan.plan_from(args).emulators)[0])
     try:
         with pytest.raises(CanBusError, match="cannot open CAN bus"):
             app._joiner(args)(session)

@@ -11,6 +11,7 @@ from PySide6.QtWidgets import QApplication
 from support.gui_support import record_prompts
 
 from prm9tool import app, i18n
+from prm9tool.app import start_plan
 from prm9tool.catalogue.typekey import USER_SPOOLS_FILE, TypeKey, load_user_spools
 from prm9tool.cli.main import build_parser, main
 from prm9tool.device import emulated_valves, factory
@@ -34,10 +35,14 @@ def _args(*argv):
 
 
 def test_plan_fills_in_the_emulator_defaults():
-    assert app.plan_from(_args("--emulator")).emulators == ["PRM9-06.3Z11/30-24E02S02-CA:1001"]
-    plan = app.plan_from(_args("valve.prm", "--emulator", f"{E04_CA}:7"))
+    assert start_plan.plan_from(_args("--emulator")).emulators == [
+        "PRM9-06.3Z11/30-24E02S02-CA:1001"
+    ]
+    plan = start_plan.plan_from(_args("valve.prm", "--emulator", f"{E04_CA}:7"))
     assert plan.emulators == [f"{E04_CA}:7"] and str(plan.file) == "valve.prm"
-    assert app.plan_from(_args()).emulators == [] and app.plan_from(_args()).file is None
+    assert (
+        start_plan.plan_from(_args()).emulators == [] and start_plan.plan_from(_args()).file is None
+    )
 
 
 def test_an_emulator_of_another_type_does_not_take_the_serial_of_a_stored_valve():
@@ -47,8 +52,10 @@ def test_an_emulator_of_another_type_does_not_take_the_serial_of_a_stored_valve(
     with factory.open_session(f"emulator:{e02}:1001", paced=False) as session:
         session.store()
     emulated_valves.forget_emulated_valves()  # the first program has ended
-    assert app.plan_from(_args("--emulator", E04_CA)).emulators == [f"{E04_CA}:1002"]
-    assert app.plan_from(_args("--emulator")).emulators == [f"{e02}:1001"]  # its values again
+    assert start_plan.plan_from(_args("--emulator", E04_CA)).emulators == [f"{E04_CA}:1002"]
+    assert start_plan.plan_from(_args("--emulator")).emulators == [
+        f"{e02}:1001"
+    ]  # its values again
     with factory.open_session(f"emulator:{E04_CA}:1002", paced=False) as session:
         assert session.read("PCODE") == E04_CA
 
@@ -59,7 +66,7 @@ def test_a_file_on_the_command_line_is_opened(qtbot, tmp_path, answers):
     app.create_application()
     window = app.create_window(_args(str(path)))
     qtbot.addWidget(window)
-    app.start(window, app.plan_from(_args(str(path))))
+    start_plan.start(window, start_plan.plan_from(_args(str(path))))
     assert window.doc.path == path and str(window.doc.type_key) == E04_CA
     window.connection.shutdown()
 
@@ -70,7 +77,7 @@ def test_emulator_on_the_command_line_goes_online_and_is_remembered(qtbot, answe
     window = app.create_window(args)
     qtbot.addWidget(window)
     with qtbot.waitSignal(window.connection.online_changed, timeout=TIMEOUT):
-        app.start(window, app.plan_from(args))
+        start_plan.start(window, start_plan.plan_from(args))
     assert window.connection.device.serial == 4201
     assert f"{E04_CA}:4201" in window.settings.value("hid/emulators")
     assert window.settings.value("hid/selected") == f"emulator:{E04_CA}:4201"
@@ -94,7 +101,7 @@ def test_a_twin_on_the_command_line_goes_online_as_its_valve(qtbot, answers, tmp
     window = app.create_window(args)
     qtbot.addWidget(window)
     with qtbot.waitSignal(window.connection.online_changed, timeout=TIMEOUT):
-        app.start(window, app.plan_from(args))
+        start_plan.start(window, start_plan.plan_from(args))
     assert window.connection.device.serial == 4301
     assert emulated_valves.EMULATED.valves[4301].plant.force_n_per_a == 25.0
     window.connection.shutdown()
@@ -102,7 +109,7 @@ def test_a_twin_on_the_command_line_goes_online_as_its_valve(qtbot, answers, tmp
     bad = _args("--emulator", f"twin:{tmp_path / 'none.toml'}")
     window = app.create_window(bad)
     qtbot.addWidget(window)
-    app.start(window, app.plan_from(bad))
+    start_plan.start(window, start_plan.plan_from(bad))
     assert "cannot read the twin file" in answers.informed[-1]
     assert not window.connection.is_online
 
@@ -118,7 +125,7 @@ def test_the_emulated_ca_valve_joins_the_command_lines_can_bus_once_online(qtbot
         window = app.create_window(args)
         qtbot.addWidget(window)
         with qtbot.waitSignal(window.connection.online_changed, timeout=TIMEOUT):
-            app.start(window, app.plan_from(args))
+            start_plan.start(window, start_plan.plan_from(args))
         node = emulated_valves.emulated_valve(E04_CA, 4202).node_id
         seen: list[int] = []
 
@@ -139,7 +146,7 @@ def test_a_bad_emulator_type_key_is_reported(qtbot, answers):
     args = _args("--emulator", "PRM9-07.3Z11/30-24E02S02")
     window = app.create_window(args)
     qtbot.addWidget(window)
-    app.start(window, app.plan_from(args))
+    start_plan.start(window, start_plan.plan_from(args))
     assert "nominal size '07'" in answers.informed[-1]
     assert not window.connection.is_online
 
@@ -204,7 +211,7 @@ def test_a_broken_spools_json_is_shown_once_at_start_in_the_program_language(
     window = app.create_window(_args())
     qtbot.addWidget(window)
     window.set_language("de")
-    app.start(window, app.plan_from(_args(), caught.value))
+    start_plan.start(window, start_plan.plan_from(_args(), caught.value))
     assert answers.informed == [
         f"Schieberkatalog: Schieberkatalog {path}: Eintrag 1: coils 'C' muss AB, A oder B sein"
         "\n\nBis die Datei korrigiert ist, kennt prm9tool nur die mitgelieferten Schieber."

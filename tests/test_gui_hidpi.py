@@ -15,6 +15,7 @@ SCRIPT = textwrap.dedent(
     import sys, tempfile
     from PySide6.QtCore import QSettings, QSize, QTimer
     from prm9tool import app
+    from prm9tool.app import start_plan
     from prm9tool.cli.main import build_parser
     from prm9tool.views.icons import icon
 
@@ -24,7 +25,7 @@ SCRIPT = textwrap.dedent(
     window = app.create_window(args)
     window.resize(1024, 700)
     window.show()
-    app.start(window, app.plan_from(args))
+    start_plan.start(window, start_plan.plan_from(args))
 
     def shot():
         picture = window.grab()

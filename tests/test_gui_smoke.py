@@ -23,6 +23,7 @@ from PySide6.QtWidgets import QLabel, QMessageBox, QWidget
 from support.gui_support import record_prompts, session_of
 
 from prm9tool import app, i18n
+from prm9tool.app import start_plan
 from prm9tool.catalogue import Access
 from prm9tool.cli.main import build_parser
 from prm9tool.device import emulated_valves
@@ -62,7 +63,7 @@ def program(qtbot, tmp_path, monkeypatch):
         window.resize(1280, 800)
         qtbot.addWidget(window)
         window.show()
-        app.start(window, app.plan_from(build_parser().parse_args(args)))
+        start_plan.start(window, start_plan.plan_from(build_parser().parse_args(args)))
         started.append(window)
         return qapp, window
 

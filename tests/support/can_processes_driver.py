@@ -38,6 +38,7 @@ GUI = """
 import os, sys, json, time
 from PySide6.QtCore import QTimer
 from prm9tool import app
+from prm9tool.app import start_plan
 from prm9tool.cli.main import build_parser
 from prm9tool.scope.generator import GeneratorSettings, Waveform
 args = build_parser().parse_args(sys.argv[1:])
@@ -85,7 +86,7 @@ connection.signal_values_changed.connect(values)
 connection.samples_received.connect(samples)
 connection.failed.connect(lambda text: seen["failed"].append(text))
 QTimer.singleShot(80000, lambda: finish(timeout=True))
-app.start(window, app.plan_from(args))
+start_plan.start(window, start_plan.plan_from(args))
 qt.exec()
 """
 
