@@ -14,7 +14,8 @@ import pytest
 
 import prm9tool
 from prm9tool.analysis.profile import DEFAULT, DriftLimit, ProfileError, parse_profile
-from prm9tool.characterize.drift import NoReferenceError, compare, reference_of, signature
+from prm9tool.characterize.birth_certificate import NoReferenceError, reference_of
+from prm9tool.characterize.drift import compare, signature
 from prm9tool.characterize.rig import EmulatorRig
 from prm9tool.characterize.run import characterize
 from prm9tool.characterize.signature import MOTION_LIMIT_S

@@ -17,7 +17,8 @@ import json
 import sys
 from pathlib import Path
 
-from prm9tool.characterize.drift import DriftReport, NoReferenceError, signature
+from prm9tool.characterize.birth_certificate import NoReferenceError
+from prm9tool.characterize.drift import DriftReport, signature
 from prm9tool.characterize.frame import LimitExceededError
 from prm9tool.characterize.rig import Stopped, ValveFaultError
 from prm9tool.cli.batch_devices import BatchError

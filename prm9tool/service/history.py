@@ -226,9 +226,9 @@ def characterization_details(result: Characterization, curves: bool = False) -> 
     """The outcome (``passed``/``failed``) and details of a ``characterization`` record: the
     profile, when it started, the loop and the test settings, every figure with its verdict
     (docs/history.md); ``curves``: also the steps and the Bode, thinned (what a later field
-    signature plots its own over: :func:`prm9tool.characterize.drift.curves`)."""
-    from prm9tool.characterize.drift import curves as thinned
-    from prm9tool.characterize.drift import tests_of
+    signature plots its own over: :func:`prm9tool.characterize.birth_certificate.curves`)."""
+    from prm9tool.characterize.birth_certificate import curves as thinned
+    from prm9tool.characterize.birth_certificate import tests_of
 
     details: Details = {
         "profile": result.profile.name,
@@ -314,7 +314,7 @@ def birth_certificate_problem(connection: Any) -> Exception | None:
     which one the valve runs is read from it in the worker) — or None. The window asks this
     before its hydraulics and enabling questions, so a refusal asks nothing and enables
     nothing first; offline the worker's own check says why."""
-    from prm9tool.characterize.drift import NO_HISTORY, NoReferenceError, reference_of
+    from prm9tool.characterize.birth_certificate import NO_HISTORY, NoReferenceError, reference_of
 
     device = getattr(connection, "device", None)
     if device is None or not getattr(connection, "is_online", False):
