@@ -7,15 +7,15 @@ PRM9" (not selectable), each with its NMT state, heartbeat age and last EMCY. Fr
 on, a :class:`~prm9tool.online.bus_monitor.BusMonitor` keeps these live while the dialog is open
 (fed off the GUI thread, a few times a second): the ages tick, a node that boots is marked so, a
 node that appears is added ("new on the bus"), one whose heartbeat stops is shown silent (the
-network view). OK goes online with the chosen valve (``can:NODE``). docs/can-link.md.
+network view; the table is :mod:`.node_table`). OK goes online with the chosen valve
+(``can:NODE``). docs/can-link.md.
 """
 
 from __future__ import annotations
 
 from collections.abc import Callable
 
-from PySide6.QtCore import QCoreApplication, QSettings, Qt
-from PySide6.QtGui import QBrush, QPalette
+from PySide6.QtCore import QCoreApplication, QSettings
 from PySide6.QtWidgets import (
     QComboBox,
     QDialog,
@@ -26,7 +26,6 @@ from PySide6.QtWidgets import (
     QLabel,
     QLineEdit,
     QPushButton,
-    QTableWidgetItem,
     QVBoxLayout,
     QWidget,
 )
@@ -44,9 +43,8 @@ from prm9tool.paths import user_data_dir
 from prm9tool.translate import error_text
 from prm9tool.views.canbus.bus_lss import BusLssActions
 from prm9tool.views.canbus.lss_panel import LssPanel
-from prm9tool.views.canbus.node_text import node_description
+from prm9tool.views.canbus.node_table import NodeTable
 from prm9tool.views.help_dialog import add_context_help
-from prm9tool.views.row_table import row_table
 from prm9tool.views.trace.record_controls import RecordControls
 
 INTERFACE_KEY, CHANNEL_KEY, BITRATE_KEY = "can/interface", "can/channel", "can/bitrate"
@@ -54,8 +52,6 @@ BITRATES = (20_000, 50_000, 125_000, 250_000, 500_000, 800_000, 1_000_000)  # ta
 DEFAULT_BITRATE = 500_000  # delivery state (manual table 7-22)
 # (bus as a dict, deliver): scans off the GUI thread, deliver(entries or exception) on it
 Scanner = Callable[[dict[str, object], Callable[[ListedValves], None]], None]
-BOOT_SHOWN_S = 10.0  # a boot-up is pointed out this long
-NMT_COLUMN, HEARTBEAT_COLUMN, EMCY_COLUMN = 4, 5, 6
 
 
 def saved_bus(settings: QSettings) -> dict[str, object]:
@@ -92,12 +88,8 @@ class CanBusDialog(QDialog):
         self._chosen: str | None = None  # a valve given its node ID here (LSS)
         self.setWindowTitle(self.tr("CAN bus"))
         self._scan, self._settings = scan, settings
-        self._entries: list[ValveListing] = []
-        self._extra: list[int] = []  # nodes heard after the search, not identified (rows after)
         self._monitor = monitor
         self._searching = False  # a search runs: its result comes before the monitor's news
-        self._watched: str | None = None  # watch_session_bus(): the valve online on the bus
-        self._watched_valve: ValveIdentity | None = None
         if monitor is not None:
             monitor.nodes_heard.connect(self._on_nodes_heard)
             monitor.failed.connect(self._on_monitor_failed)
@@ -119,18 +111,8 @@ class CanBusDialog(QDialog):
         self.search.clicked.connect(self._on_search_clicked)
         self.state = QLabel(self.tr("Search the bus to list its nodes."))
         self.state.setWordWrap(True)
-        self.table = row_table(
-            [
-                self.tr("Node"),
-                self.tr("Type key"),
-                self.tr("Serial"),
-                self.tr("Firmware"),
-                self.tr("NMT state"),
-                self.tr("Heartbeat"),
-                self.tr("Last EMCY"),
-                self.tr("Description"),
-            ]
-        )
+        self.nodes = NodeTable()
+        self.table = self.nodes.widget
         self.table.itemSelectionChanged.connect(self.update_ok)
         self.table.doubleClicked.connect(lambda _i: self._accept_if_valve())
         self.buttons = QDialogButtonBox(
@@ -194,9 +176,9 @@ class CanBusDialog(QDialog):
         if self._chosen is not None:
             return self._chosen
         row = self.table.currentRow()
-        if not 0 <= row < len(self._entries):
+        if not 0 <= row < len(self.nodes.entries):
             return None
-        entry = self._entries[row]
+        entry = self.nodes.entries[row]
         return entry.device_id if entry.kind == "can" else None
 
     def _remember(self) -> None:
@@ -211,8 +193,7 @@ class CanBusDialog(QDialog):
         (``bus`` as the session has it), so no second adapter is opened on the channel, and
         nothing is sent: no search (its SDO reads would meet the session's), no other valve to
         go online with. Issue 34, item 12."""
-        self._watched = valve.device_id
-        self._watched_valve = valve
+        self.nodes.watched = valve
         self.interface.setCurrentText(str(bus["interface"]))
         self.channel.setText(str(bus["channel"]))
         rate = bus.get("bitrate")
@@ -258,13 +239,13 @@ class CanBusDialog(QDialog):
         self._searching = False
         self.search.setEnabled(True)
         if isinstance(found, Exception):
-            self._fill([])
+            self._fill_table([])
             self.state.setText(
                 self.tr("The bus could not be searched: {0}").format(error_text(found))
             )
             return
         nodes = [e for e in found if e.kind in ("can", "not-prm9")]
-        self._fill(nodes)
+        self._fill_table(nodes)
         if self.lss_panel is not None:
             self.lss_panel.start_scan()
         valves = sum(e.kind == "can" for e in nodes)
@@ -274,92 +255,15 @@ class CanBusDialog(QDialog):
             + self.tr("%n of them PRM9 valve(s).", "", valves)
         )
 
-    def _fill(self, entries: list[ValveListing]) -> None:
-        self._entries, self._extra = entries, []
-        self.table.setRowCount(len(entries))
-        for row, entry in enumerate(entries):
-            valve = entry.kind == "can"
-            age = entry.heartbeat_age_s
-            cells = [
-                entry.device_id,
-                entry.type_key if valve else self._verdict(entry),
-                str(entry.serial) if valve else "",
-                entry.firmware,
-                entry.nmt_state or "",
-                self.tr("{0:.1f} s ago").format(age) if age is not None else self.tr("none"),
-                entry.last_emcy,
-                node_description(entry),
-            ]
-            for column, text in enumerate(cells):
-                item = QTableWidgetItem(text)
-                if not valve:
-                    item.setFlags(item.flags() & ~Qt.ItemFlag.ItemIsSelectable)
-                self.table.setItem(row, column, item)
+    def _fill_table(self, entries: list[ValveListing]) -> None:
+        self.nodes.fill(entries)
         self.update_ok()
-
-    def _verdict(self, entry: ValveListing) -> str:
-        """``not a PRM9`` for another kind of device, ``not identified`` for a node that did
-        not answer, answered what no PRM9 holds or shares its node ID (as --list-devices)."""
-        node = entry.can
-        if node is not None and (node.device_type is None or node.detail):
-            return self.tr("not identified")
-        return self.tr("not a PRM9")
 
     def _on_nodes_heard(self, nodes: list[HeardNode]) -> None:
         """The monitor's news: NMT state, heartbeat age, last EMCY; new and silent nodes."""
         if not isValid(self) or self._searching:
             return  # a search runs: its result comes first
-        rows = {e.device_id: row for row, e in enumerate(self._entries)}
-        rows |= {f"can:{n}": len(self._entries) + i for i, n in enumerate(self._extra)}
-        for node in nodes:
-            row = rows.get(node.device_id)
-            if row is None:
-                row = self._add_new_node(node.node_id)
-            self._show_heard(row, node)
-
-    def _add_new_node(self, node_id: int) -> int:
-        self._extra.append(node_id)
-        row = self.table.rowCount()
-        self.table.insertRow(row)
-        if self._watched is None:
-            told = self.tr("new on the bus: search again to identify it")
-        elif self._watched == f"can:{node_id}":
-            told = self.tr("the valve prm9tool is online with")
-        else:
-            told = self.tr("heard on the bus")
-        cells = [f"can:{node_id}", told]
-        valve = self._watched_valve
-        if valve is not None and self._watched == f"can:{node_id}":
-            cells = [valve.device_id, valve.type_key, str(valve.serial), valve.firmware]
-            cells += ["", "", "", told]
-        for column in range(self.table.columnCount()):
-            item = QTableWidgetItem(cells[column] if column < len(cells) else "")
-            item.setFlags(item.flags() & ~Qt.ItemFlag.ItemIsSelectable)
-            self.table.setItem(row, column, item)
-        return row
-
-    def _show_heard(self, row: int, node: HeardNode) -> None:
-        state, age = node.nmt_state or "", node.heartbeat_age_s
-        booted = node.boot_up_age_s
-        if booted is not None and booted < BOOT_SHOWN_S:
-            state = self.tr("{0} (boot-up {1:.1f} s ago)").format(state, booted)
-        if node.silent:
-            beat = self.tr("silent for {0:.1f} s").format(age)
-        else:
-            beat = self.tr("{0:.1f} s ago").format(age) if age is not None else self.tr("none")
-        role = QPalette.ColorRole.PlaceholderText if node.silent else QPalette.ColorRole.Text
-        for column, text in (
-            (NMT_COLUMN, state),
-            (HEARTBEAT_COLUMN, beat),
-            (EMCY_COLUMN, node.last_emcy),
-        ):
-            item = self.table.item(row, column)
-            if item is not None:
-                item.setText(text)
-        for column in range(self.table.columnCount()):
-            item = self.table.item(row, column)
-            if item is not None:
-                item.setForeground(QBrush(self.palette().color(role)))
+        self.nodes.show_heard(nodes)
 
     def _on_monitor_failed(self, reason: str) -> None:
         if isValid(self):
@@ -368,7 +272,7 @@ class CanBusDialog(QDialog):
     @property
     def entries(self) -> list[ValveListing]:
         """The nodes the last search listed, by row."""
-        return self._entries
+        return self.nodes.entries
 
     def search_bus(self) -> None:
         """Search the bus as entered (as the button does)."""
@@ -381,8 +285,7 @@ class CanBusDialog(QDialog):
 
     def taken(self) -> set[int]:
         """Node IDs that answered the search or were heard since."""
-        ids = {int(e.device_id.removeprefix("can:")) for e in self._entries}
-        return ids | set(self._extra)
+        return self.nodes.taken()
 
     def on_lss_assigned(self, device_id: str) -> None:
         """A valve answers at the node ID it was given: go online with it."""
@@ -400,7 +303,7 @@ class CanBusDialog(QDialog):
     def _accept_if_valve(self) -> None:
         if self.selected_device_id() is None:
             return
-        entry = self._entries[self.table.currentRow()]
+        entry = self.nodes.entries[self.table.currentRow()]
         if entry.type_key.startswith("?") and not self._ask_type_key(entry):
             return
         self._remember()
