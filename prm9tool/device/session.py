@@ -20,7 +20,7 @@ step)`` and stop at the next report when ``cancel`` is set. Failures raise the t
    its old values; over CANopen the master watches the node's boot-up frame, which a
    restarting node sends (CiA 301), from before the first write to the store's
    acknowledgement, and reads back one value the upload changed
-   (prm9tool.device.canlink.session). A refused store (abort, e.g. 0x08000020) is
+   (prm9tool.device.canlink.upload_steps). A refused store (abort, e.g. 0x08000020) is
    ``failed_step`` ``store`` with the reason in ``failure``.
 
 A link may leave out writing a value the valve is known to hold already (read during this
@@ -30,7 +30,7 @@ reads back differently from what the link believed is written and verified after
 
 After any failure (also a cancel) the session asks the valve to reload its stored parameters
 (USB: RELOAD; CANopen: the master writes back the working values it read before the upload,
-prm9tool.device.canlink.session), so it runs on its stored set.
+prm9tool.device.canlink.upload_steps), so it runs on its stored set.
 """
 
 from __future__ import annotations
