@@ -126,7 +126,7 @@ class RpdoSetpoint(SetpointLink):
         CATALOGUE[self._object].check_raw(raw)
         self._last = raw
         self._send(raw)
-        self._session.sent_setpoint = (DEMAND_KEYS[self._object], float(raw))
+        self._session.stream.sent_setpoint = (DEMAND_KEYS[self._object], float(raw))
 
     def keep_alive(self) -> None:
         """The last frame again (keeps the reception deadline)."""
@@ -134,7 +134,7 @@ class RpdoSetpoint(SetpointLink):
 
     def end(self) -> None:
         """The setpoint the valve had before, and the event timer as it was."""
-        self._session.sent_setpoint = None  # from now on the valve's own (or its PLC's)
+        self._session.stream.sent_setpoint = None  # from now on the valve's own (or its PLC's)
         self._send(self._before)
         if self._timer_before is not None:
             self.writing = "RPDO1TIMER"

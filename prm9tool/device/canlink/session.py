@@ -9,7 +9,8 @@ restart NMT reset node.
 
 The upload's decisions (the snapshot that reverts a failed upload, fewer frames with the same
 guarantees) are in :mod:`prm9tool.device.canlink.upload_steps`, which carries them out; the
-entry reads and writes are :mod:`prm9tool.device.canlink.entries`.
+entry reads and writes are :mod:`prm9tool.device.canlink.entries`, the measuring-point stream
+:mod:`prm9tool.device.canlink.stream`: parts the session holds.
 """
 
 from __future__ import annotations
@@ -25,11 +26,11 @@ from prm9tool.device.canlink import bus as canbus
 from prm9tool.device.canlink import discovery, relocate
 from prm9tool.device.canlink.entries import SdoEntries
 from prm9tool.device.canlink.nmt_confirm import send_and_confirm
-from prm9tool.device.canlink.pdo_scope import NotPdoMappedError, PdoSampler, min_period_s
-from prm9tool.device.canlink.sampler import SdoSampler
+from prm9tool.device.canlink.pdo_scope import min_period_s
 from prm9tool.device.canlink.sdo import MISSING, SdoChannel
 from prm9tool.device.canlink.status import read_status, stopped_status
 from prm9tool.device.canlink.storing import STORED_WITH_1010, factory_upload
+from prm9tool.device.canlink.stream import CanStream
 from prm9tool.device.canlink.typekeys import GivenKey
 from prm9tool.device.canlink.upload_steps import CanopenUploadSteps
 from prm9tool.device.records import (
@@ -98,13 +99,9 @@ class CanopenSession(ValveSession):
         )
         self.upload_steps = self._upload
         self._entries = SdoEntries(lambda: self._sdo, self.unavailable, self._upload)
-        self._sampler: SdoSampler | PdoSampler | None = None
+        self.stream = CanStream(lambda: self._shared, lambda: self._sdo)
         self._stopped_by_me = False  # this session's NMT stop is in force (no SDO then)
         self._last_status: ValveStatus | None = None
-        self.stream_source = ""  # "pdo" or "sdo" while a stream runs
-        # the setpoint this tool sends in RPDO1 now (measuring-point key, raw), None when it
-        # does not drive the valve: the oscilloscope's demand channel over CAN
-        self.sent_setpoint: tuple[str, float] | None = None
         self._lost_before = 0
         try:
             self._sdo = self._open_node(timeout_s)
@@ -242,7 +239,7 @@ class CanopenSession(ValveSession):
         """NMT reset node, then find the valve again — at its old node, or where a changed node
         ID or bit rate puts it (prm9tool.device.canlink.relocate) — and identify it (hydraulics
         off). ValveMovedError says where it is when the session cannot follow."""
-        self._stop_sampler()
+        self.stream.stop()
         after = relocate.predict(self)
         self._upload.known.clear()  # the valve comes back with its stored set
         nodes = [self.node_id, *([after.node_id] if after and after.node_id else [])]
@@ -340,44 +337,35 @@ class CanopenSession(ValveSession):
         self._stopped_by_me = command == NmtCommand.STOP
         send_and_confirm(self._shared, self._sdo, self.node_id, command)
 
-    # --- measuring points -------------------------------------------------------------------
+    # --- measuring points (the part it holds: canlink/stream.py) --------------------------
     def stream_start(self, keys: Sequence[str], rate_hz: int = 5000) -> None:
         """Sample ``keys`` at ``rate_hz``: TPDO1 at a SYNC the tool produces when they are its
         mapped value and the node is OPERATIONAL, else by SDO (what the bus does not deliver
         counts as lost; :attr:`stream_source` says which)."""
-        self._stop_sampler()
-        try:
-            self._sampler = PdoSampler(self._shared, self._sdo, keys, rate_hz, self._demand)
-            self.stream_source = "pdo"
-        except NotPdoMappedError:
-            self._sampler = SdoSampler(self._sdo.upload, keys, rate_hz, self._demand)
-            self.stream_source = "sdo"
+        self.stream.start(keys, rate_hz)
 
-    def _demand(self, key: str) -> float:
-        """The setpoint this tool sends now as measuring point ``key`` (NaN: it sends none,
-        or another one): the valve reports no demand value over CANopen."""
-        sent = self.sent_setpoint
-        return sent[1] if sent is not None and sent[0] == key else float("nan")
+    @property
+    def stream_source(self) -> str:
+        """``pdo`` or ``sdo`` while a stream runs, else empty."""
+        return self.stream.source
 
     def stream_read(self) -> np.ndarray:
         """Samples taken since the last call: shape (n, len(keys)), raw values."""
-        if self._sampler is None:
-            return np.empty((0, 1))
-        return self._sampler.read()
+        return self.stream.read()
 
     @property
     def samples_lost(self) -> int:
         """Sample periods the bus could not serve since :meth:`stream_start`."""
-        return self._sampler.lost if self._sampler is not None else 0
+        return self.stream.lost
 
     @property
     def sample_rate_hz(self) -> float:
         """The rate the running stream really achieves (0 when none runs)."""
-        return self._sampler.achieved_hz if self._sampler is not None else 0.0
+        return self.stream.achieved_hz
 
     def stream_stop(self) -> None:
         """Stop sampling."""
-        self._stop_sampler()
+        self.stream.stop()
 
     # --- internals --------------------------------------------------------------------------
     def _open_node(self, timeout_s: float) -> SdoChannel:
@@ -391,14 +379,8 @@ class CanopenSession(ValveSession):
             network.add_node(node)
         return SdoChannel(node, timeout_s, self._shared)
 
-    def _stop_sampler(self) -> None:
-        sampler, self._sampler = self._sampler, None
-        self.stream_source = ""
-        if sampler is not None:
-            sampler.stop()
-
     def _close_link(self) -> None:
-        self._stop_sampler()
+        self.stream.stop()
         self._release()
 
     def _release(self) -> None:
