@@ -10,7 +10,7 @@ import prm9tool
 PACKAGE = Path(prm9tool.__file__).parent
 GUI_MODULES = ("PySide6.QtWidgets", "PySide6.QtGui", "PySide6.QtPrintSupport", "pyqtgraph")
 # Modules allowed to use Qt GUI classes: the views and the application shell.
-GUI_ALLOWED = ("views", "app.py", "model/undo.py")
+GUI_ALLOWED = ("views", "app/", "model/undo.py")
 
 
 def _imports(path: Path) -> set[str]:
