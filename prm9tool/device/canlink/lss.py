@@ -23,17 +23,15 @@ frame there is no answer (``canopen``'s LssMaster takes the first frame, whateve
 Fastscan round sends at most :data:`FASTSCAN_FRAMES` requests; a scan ends after
 :data:`MAX_DEVICES` devices, when a round finds an address found before (a device that
 acknowledges every request: each round "finds" it again) or after :data:`SCAN_LIMIT_S`,
-saying which.
+saying which. The frames themselves — requests, answers by their command specifier, one
+conversation per bus at a time — are :mod:`prm9tool.device.canlink.lss_exchange`.
 """
 
 from __future__ import annotations
 
 import struct
-import threading
 import time
-from collections.abc import Callable, Iterator
-from contextlib import contextmanager
-from dataclasses import dataclass
+from collections.abc import Callable
 from typing import TYPE_CHECKING
 
 from prm9tool.catalogue.canopen_switches import LSS_UNCONFIGURED
@@ -48,11 +46,11 @@ from prm9tool.device.canlink.lss_errors import (
     kbit,
     service_problem,
 )
+from prm9tool.device.canlink.lss_exchange import ANSWER_S, LssExchange, settle
 
 if TYPE_CHECKING:
     from prm9tool.device.canlink.bus import CanNetwork
 
-LSS_REQUEST, LSS_RESPONSE = 0x7E5, 0x7E4
 CS_SELECTIVE_RESPONSE, CS_IDENTIFY_SLAVE, CS_NON_CONFIGURED_SLAVE = 0x44, 0x4F, 0x50
 CS_SELECTIVE = (0x40, 0x41, 0x42, 0x43)  # vendor, product, revision, serial
 CS_FASTSCAN, CS_INQUIRE_NODE_ID = 0x51, 0x5E
@@ -61,53 +59,19 @@ WAITING, CONFIGURATION = 0, 1
 ERROR_NONE = 0
 PROBE_WAIT_S = 0.5  # how long "identify non-configured" waits for a first answer (canopen's)
 MIN_STEP_S, MAX_STEP_S = 0.05, 0.8
-SETTLE_MIN_S = 0.1  # further answers to a request several devices may answer
 SCAN_ATTEMPTS = 4
 MAX_DEVICES = 127
 FASTSCAN_FRAMES = 1 + 4 * 33  # a round: the reset step, 32 bits and a confirmation per part
 SCAN_LIMIT_S = 120.0  # a whole scan (127 devices at the slowest step would take far longer)
-ANSWER_S = 0.5  # inquire, configure, store (what canopen's LssMaster waits)
-
-
-@dataclass
-class _Heard:
-    """The LSS answers (COB-ID 0x7E4) since :meth:`LssMasterLink._listen` started."""
-
-    frames: list[tuple[float, bytes]]
-
-    def count(self, cs: int) -> int:
-        return sum(1 for _, data in self.frames if data and data[0] == cs)
-
-    def last(self, cs: int) -> bytes | None:
-        return next((data for _, data in reversed(self.frames) if data and data[0] == cs), None)
-
-    def wait(self, cs: int, since: int, timeout_s: float) -> bytes | None:
-        """The first answer ``cs`` among the frames from number ``since`` on, waiting up to
-        ``timeout_s`` for it (frames with another command specifier are no answer)."""
-        deadline = time.monotonic() + timeout_s
-        while True:
-            found = next((d for _, d in self.frames[since:] if d and d[0] == cs), None)
-            if found is not None or time.monotonic() >= deadline:
-                return found
-            time.sleep(0.001)
-
-
-_LOCKS: dict[int, threading.Lock] = {}
-_LOCKS_LOCK = threading.Lock()
-
-
-def _bus_lock(shared: CanNetwork) -> threading.Lock:
-    """One LSS conversation at a time per bus (LSS requests carry no address)."""
-    with _LOCKS_LOCK:
-        return _LOCKS.setdefault(id(shared.network), threading.Lock())
 
 
 class LssMasterLink:
-    """LSS services on one shared bus, through ``shared.network.lss``."""
+    """LSS services on one shared bus, their frames exchanged through the part it holds
+    (:class:`~prm9tool.device.canlink.lss_exchange.LssExchange`)."""
 
     def __init__(self, shared: CanNetwork) -> None:
-        self._shared = shared
-        self._lock = _bus_lock(shared)
+        self._frames = LssExchange(shared)
+        self._lock = self._frames.lock
         self.latency_s: float | None = None  # the first answer to the last probe
 
     # --- finding devices ---------------------------------------------------------------
@@ -117,11 +81,11 @@ class LssMasterLink:
         LssFailedError ``duplicate`` when two devices answer with one address (neither changed).
         """
         with self._lock:
-            self._switch_global(WAITING)
+            self._frames.switch_global(WAITING)
             try:
                 found = self._fastscan_all(progress)
             finally:
-                self._switch_global(WAITING)
+                self._frames.switch_global(WAITING)
             for address in found:
                 self._check_unique(address)
             return found
@@ -170,12 +134,12 @@ class LssMasterLink:
     def _fastscan(self, step: float) -> tuple[bool, LssAddress | None]:
         """One Fastscan round (CiA 305): (whether its first step was answered, the address
         found or None). At most :data:`FASTSCAN_FRAMES` requests."""
-        with self._listen() as heard:
+        with self._frames.listen() as heard:
 
             def ask(number: int, bit: int, sub: int, following: int) -> bool:
                 since = len(heard.frames)
                 request = struct.pack("<BIBBB", CS_FASTSCAN, number, bit, sub, following)
-                self._send(request)
+                self._frames.send(request)
                 return heard.wait(CS_IDENTIFY_SLAVE, since, step) is not None
 
             if not ask(0, 0x80, 0, 0):
@@ -191,9 +155,9 @@ class LssMasterLink:
 
     def _probe(self) -> float | None:
         """Seconds until the first device without a node ID answered (None: none did)."""
-        with self._listen() as heard:
+        with self._frames.listen() as heard:
             start = time.monotonic()
-            self._send(bytes([0x4C]).ljust(8, b"\0"))  # identify non-configured remote slave
+            self._frames.send(bytes([0x4C]).ljust(8, b"\0"))  # identify non-configured remote slave
             deadline = start + PROBE_WAIT_S
             while time.monotonic() < deadline and not heard.count(CS_NON_CONFIGURED_SLAVE):
                 time.sleep(0.002)
@@ -206,14 +170,14 @@ class LssMasterLink:
         try:
             self._select(address)
         finally:
-            self._switch_global(WAITING)
+            self._frames.switch_global(WAITING)
 
     def _select(self, address: LssAddress) -> None:
         """Switch state selective to ``address``: exactly one device must answer."""
-        with self._listen() as heard:
+        with self._frames.listen() as heard:
             since = len(heard.frames)
             for cs, part in zip(CS_SELECTIVE, address.as_tuple(), strict=True):
-                self._send(struct.pack("<BI3x", cs, part))
+                self._frames.send(struct.pack("<BI3x", cs, part))
             start = time.monotonic()
             if heard.wait(CS_SELECTIVE_RESPONSE, since, ANSWER_S) is None:
                 raise LssFailedError(
@@ -221,7 +185,7 @@ class LssMasterLink:
                     "bus or does not take part in LSS (search the bus)",
                     "unanswered",
                 )
-            _settle(heard, CS_SELECTIVE_RESPONSE, start)
+            settle(heard, CS_SELECTIVE_RESPONSE, start)
             count = heard.count(CS_SELECTIVE_RESPONSE)
         if count > 1:
             raise LssFailedError(
@@ -245,11 +209,11 @@ class LssMasterLink:
         if not 1 <= node_id <= 127:
             raise LssFailedError(f"node ID {node_id} is outside 1…127", "refused")
         with self._lock:
-            self._switch_global(WAITING)
+            self._frames.switch_global(WAITING)
             try:
                 self._select(address)
             except LssFailedError:
-                self._switch_global(WAITING)  # two alike: release both
+                self._frames.switch_global(WAITING)  # two alike: release both
                 raise
             try:
                 before = self._inquire_node_id(address)  # nothing changed yet if it fails
@@ -262,15 +226,15 @@ class LssMasterLink:
                     self._undo(before)
                     raise
             finally:
-                self._switch_global(WAITING)
+                self._frames.switch_global(WAITING)
 
     def activate_bit_timing(self, switch_delay_ms: int) -> None:
         """Every configured device switches to its pending bit timing (no answer; CiA 305:
         silent for ``switch_delay_ms``, switch, silent for it once more)."""
         with self._lock:
-            self._switch_global(CONFIGURATION)
-            self._activate(switch_delay_ms)
-            self._switch_global(WAITING)
+            self._frames.switch_global(CONFIGURATION)
+            self._frames.activate(switch_delay_ms)
+            self._frames.switch_global(WAITING)
             time.sleep(2 * switch_delay_ms / 1000)  # CiA 305: they are silent until then
 
     def change_bus_bit_timing(self, index: int, switch_delay_ms: int) -> int:
@@ -279,17 +243,17 @@ class LssMasterLink:
         ``switch_delay_ms``. Returns how many devices switch; LssFailedError when none answers
         or one refuses (then nothing is activated: no device changes its rate now)."""
         rate = kbit(index)
-        with self._lock, self._listen() as heard:
-            self._switch_global(CONFIGURATION)
+        with self._lock, self._frames.listen() as heard:
+            self._frames.switch_global(CONFIGURATION)
             try:
                 for cs, request in (
                     (CS_CONFIGURE_BIT_TIMING, bytes([CS_CONFIGURE_BIT_TIMING, 0, index])),
                     (CS_STORE, bytes([CS_STORE])),
                 ):
                     since, sent = len(heard.frames), time.monotonic()
-                    self._send(request.ljust(8, b"\0"))  # every answer is judged below
+                    self._frames.send(request.ljust(8, b"\0"))  # every answer is judged below
                     heard.wait(cs, since, ANSWER_S)  # the first, then any further ones
-                    _settle(heard, cs, sent)
+                    settle(heard, cs, sent)
                     answers = [d for _, d in heard.frames if len(d) >= 2 and d[0] == cs]
                     if not answers:
                         raise LssFailedError(
@@ -313,14 +277,14 @@ class LssMasterLink:
                             f"{rate}: {reason}; no device switched now{stored}",
                             "refused",
                         )
-                self._activate(switch_delay_ms)
+                self._frames.activate(switch_delay_ms)
             finally:
-                self._switch_global(WAITING)
+                self._frames.switch_global(WAITING)
             time.sleep(2 * switch_delay_ms / 1000)  # CiA 305: they are silent until then
         return len(answers)
 
     def _inquire_node_id(self, address: LssAddress) -> int:
-        answer = self._ask(bytes([CS_INQUIRE_NODE_ID]) + bytes(7), CS_INQUIRE_NODE_ID)
+        answer = self._frames.ask(bytes([CS_INQUIRE_NODE_ID]) + bytes(7), CS_INQUIRE_NODE_ID)
         if answer is None:
             raise LssFailedError(
                 f"serial {address.serial}: no answer to inquire node ID: the device left the "
@@ -336,38 +300,11 @@ class LssMasterLink:
             )
         return node_id
 
-    def _ask(self, request: bytes, cs: int, timeout_s: float = ANSWER_S) -> bytes | None:
-        """Send an LSS request, return its answer ``cs`` (None: none came in ``timeout_s``)."""
-        with self._listen() as heard:
-            self._send(request)
-            return heard.wait(cs, 0, timeout_s)
-
-    def _activate(self, switch_delay_ms: int) -> None:
-        """Activate bit timing (0x15) after ``switch_delay_ms`` (no answer)."""
-        self._send(struct.pack("<BH5x", 0x15, switch_delay_ms))
-
-    def _switch_global(self, mode: int) -> None:
-        """Switch state global (no answer)."""
-        self._send(bytes([0x04, mode]).ljust(8, b"\0"))
-
-    def _send(self, request: bytes) -> None:
-        """One LSS request on 0x7E5; LssFailedError ``lost`` when the bus refuses it."""
-        import can
-
-        try:
-            self._shared.network.send_message(LSS_REQUEST, request)
-        except (can.CanError, OSError, RuntimeError) as exc:  # RuntimeError: bus closed
-            raise LssFailedError(
-                f"the CAN bus refused to send an LSS request ({exc}); the devices keep what "
-                "they had stored",
-                "lost",
-            ) from None
-
     def _configure(self, address: LssAddress, cs: int, value: int = 0) -> None:
         """One configure/store service; LssFailedError with the CiA 305 error in words."""
         # configure bit timing: table selector 0 (CiA 305 table 0), then the table index
         request = bytes([cs, 0, value]) if cs == CS_CONFIGURE_BIT_TIMING else bytes([cs, value])
-        answer = self._ask(request.ljust(8, b"\0"), cs)
+        answer = self._frames.ask(request.ljust(8, b"\0"), cs)
         if answer is None or len(answer) < 3 or answer[1] != ERROR_NONE:
             raise service_problem(
                 address, cs, value, answer if answer and len(answer) >= 3 else None
@@ -376,21 +313,9 @@ class LssMasterLink:
     def _undo(self, before: int) -> None:
         """Put the pending node ID back (best effort: the device may be gone)."""
         node_id = before if 1 <= before <= 127 else LSS_UNCONFIGURED
-        self._ask(bytes([CS_CONFIGURE_NODE_ID, node_id]).ljust(8, b"\0"), CS_CONFIGURE_NODE_ID)
-
-    @contextmanager
-    def _listen(self) -> Iterator[_Heard]:
-        heard = _Heard([])
-
-        def on_answer(can_id: int, data: bytearray, timestamp: float) -> None:
-            heard.frames.append((time.monotonic(), bytes(data)))
-
-        network = self._shared.network
-        network.subscribe(LSS_RESPONSE, on_answer)
-        try:
-            yield heard
-        finally:
-            network.unsubscribe(LSS_RESPONSE, on_answer)
+        self._frames.ask(
+            bytes([CS_CONFIGURE_NODE_ID, node_id]).ljust(8, b"\0"), CS_CONFIGURE_NODE_ID
+        )
 
 
 def _answers_everything(address: LssAddress, rounds: int) -> LssFailedError:
@@ -400,17 +325,3 @@ def _answers_everything(address: LssAddress, rounds: int) -> LssFailedError:
         "beside it; prm9tool stopped the scan. Take that device off the bus and search again",
         "endless",
     )
-
-
-def _settle(heard: _Heard, cs: int, sent: float) -> None:
-    """Wait for further answers ``cs`` to a request sent at ``sent`` (several devices may
-    answer): until none came for ten times the first answer's delay (at least 0.1 s)."""
-    times = [t for t, d in heard.frames if d and d[0] == cs]
-    quiet = max(10 * (times[0] - sent), SETTLE_MIN_S) if times else SETTLE_MIN_S
-    while True:
-        times = [t for t, d in heard.frames if d and d[0] == cs]
-        last = times[-1] if times else sent
-        left = last + quiet - time.monotonic()
-        if left <= 0:
-            return
-        time.sleep(min(left, 0.01))
