@@ -134,7 +134,8 @@ def test_characterize_over_canopen_at_the_links_rate(can_valve, tmp_path, capsys
         pytest.skip(f"the emulated valve was {behind * 1000:.0f} ms behind real time: {err}")
     if code == ExitCode.COMMUNICATION:  # a PC too loaded to keep the pace: said, not hidden
         assert "link lost" in err or "updated the valve's setpoint too seldom" in err, err
-        assert "nothing was interpolated" in err and not js.exists()
+        # either refusal says the run stopped and nothing of it was made up or kept
+        assert "the test was stopped" in err and not js.exists(), err
         assert can_valve.working("SETPOVRON") == 0
         pytest.skip(f"the rig refused the run on this loaded PC: {err.strip()}")
     if "a sweep needs at least" in err:  # the pace this PC keeps is too slow for the profile
