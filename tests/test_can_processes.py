@@ -103,8 +103,9 @@ def test_a_plc_commissions_the_valve_and_tpdo1_shows_the_cia_408_status_words(ou
 def test_characterize_in_another_process(outcome):
     done = outcome["characterize"]
     if done["code"] == 6:  # a PC too loaded to keep the bus's pace: said, not hidden
-        assert "link lost" in done["err"], done["err"]
-        assert "nothing was interpolated" in done["err"], done["err"]
+        err = done["err"]
+        assert "link lost" in err or "updated the valve's setpoint too seldom" in err, err
+        assert "the test was stopped" in err, err  # nothing of it made up or kept
         return
     if "measure it over USB" in done["err"]:  # E04 flow test: no gains to set on this link
         assert done["code"] == 8 and "nothing was changed" in done["err"], done["err"]

@@ -191,7 +191,7 @@ def test_the_tuning_windows_rig_over_canopen(can_valve):
     assert can_valve.working("SETPOVRON") == 0
     assert can_valve.working("POSKP") == CATALOGUE["POSKP"].default
     if too_slow is not None:  # the refusal and the valve's state were checked, not the figures
-        assert "nothing was interpolated" in str(too_slow), too_slow
+        assert "the test was stopped" in str(too_slow), too_slow
         pytest.skip(f"the rig refused a test on this loaded PC: {too_slow}")
 
 
