@@ -73,6 +73,16 @@ def _headless_command(args: argparse.Namespace) -> tuple[str, str] | None:
         return "prm9tool.cli.serve", "run"
     if args.lss_scan or args.lss_assign or args.find_bitrate:
         return "prm9tool.cli.lss", "run"
+    if (
+        args.restart
+        or args.restore_factory
+        or args.disable
+        or (
+            args.enable
+            and not (args.characterize or args.autotune or args.fit_twin or args.signature)
+        )
+    ):
+        return "prm9tool.cli.valve_commands", "run"
     if args.characterize:
         return "prm9tool.cli.main", "_characterize"
     if args.autotune is not None:

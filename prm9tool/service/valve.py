@@ -180,6 +180,18 @@ class ValveService:
                 raise NmtStoppedError(f"{STOPPED_TEXT} ({exc})") from exc
             raise
 
+    def wait_booted(self, timeout_s: float = 5.0) -> ValveStatus:
+        """Ask for the status until the valve has finished booting (about 2 s after power-up
+        or a restart, manual §1.5, §5.6) and return it; DeviceTimeoutError after
+        ``timeout_s``. A booting valve ignores its setpoint, NMT commands and the control
+        word."""
+        deadline = time.monotonic() + timeout_s
+        while (status := self.session.status()).booting:
+            if time.monotonic() > deadline:
+                raise DeviceTimeoutError(f"the valve has not finished booting in {timeout_s} s")
+            time.sleep(0.05)
+        return status
+
     # --- commissioning --------------------------------------------------------------------
     def nmt(self, command: NmtCommand | str | int) -> None:
         """Send an NMT command as the valve's CANopen master would (manual §7.2)."""
