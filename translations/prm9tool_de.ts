@@ -1563,6 +1563,25 @@ Die letzte Aktion wurde womöglich nicht vollständig ausgeführt. Speichern Sie
         </message>
     </context>
     <context>
+        <name>EdsExport</name>
+        <message>
+            <source>Export EDS</source>
+            <translation>EDS exportieren</translation>
+        </message>
+        <message>
+            <source>CANopen electronic data sheet (*.eds)</source>
+            <translation>CANopen-Gerätebeschreibung (*.eds)</translation>
+        </message>
+        <message>
+            <source>Cannot write “{0}”: {1}</source>
+            <translation>„{0}“ kann nicht geschrieben werden: {1}</translation>
+        </message>
+        <message>
+            <source>EDS saved as {0}</source>
+            <translation>EDS gespeichert als {0}</translation>
+        </message>
+    </context>
+    <context>
         <name>Emcy</name>
         <message>
             <source>Warning: electronics temperature above 70 °C</source>
@@ -2816,6 +2835,14 @@ Ja lädt hoch und stellt den Eintrag in die Warteschlange; Nein lädt nichts hoc
         <message>
             <source>Save the valve's CANopen configuration as a CiA 306 DCF (for a PLC configurator)</source>
             <translation>CANopen-Konfiguration des Ventils als CiA-306-DCF speichern (für einen SPS-Konfigurator)</translation>
+        </message>
+        <message>
+            <source>Export &amp;EDS…</source>
+            <translation>ED&amp;S exportieren…</translation>
+        </message>
+        <message>
+            <source>Save the CiA 306 EDS of the valve's type (its object dictionary, for a PLC configurator)</source>
+            <translation>CiA-306-EDS des Ventiltyps speichern (sein Objektverzeichnis, für einen SPS-Konfigurator)</translation>
         </message>
         <message>
             <source>&amp;Export PDF…</source>

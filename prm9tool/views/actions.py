@@ -24,6 +24,7 @@ _ACTIONS: tuple[tuple[str, str, object], ...] = (
     ("print", "print", SK.Print),
     ("export_pdf", "pdf", "Ctrl+E"),
     ("export_dcf", "", None),
+    ("export_eds", "", None),
     ("exit", "exit", (SK.Quit, "Ctrl+Q")),  # nor a Quit key
     ("view_diagram", "diagram", "Ctrl+1"),
     ("view_parameters", "parameters", "Ctrl+2"),
@@ -127,6 +128,14 @@ def _texts() -> dict[str, _Texts]:
             translate(
                 "MainActions",
                 "Save the valve's CANopen configuration as a CiA 306 DCF (for a PLC configurator)",
+            ),
+        ),
+        "export_eds": _Texts(
+            translate("MainActions", "Export &EDS…"),
+            translate(
+                "MainActions",
+                "Save the CiA 306 EDS of the valve's type (its object dictionary, for a PLC "
+                "configurator)",
             ),
         ),
         "export_pdf": _Texts(
@@ -292,8 +301,8 @@ class MainActions(QObject):
         """File, View, Valve, Communication, Help (manual §8.5)."""
         layout: dict[str, tuple[str | None, ...]] = {
             "file": ("new", "open", "recent", "save", "save_as", "save_copy", None, "undo",
-                     "redo", None, "print", "export_pdf", "export_dcf", None, "compare_file", None,
-                     "exit"),
+                     "redo", None, "print", "export_pdf", "export_dcf", "export_eds", None,
+                     "compare_file", None, "exit"),
             "view": ("view_diagram", "view_parameters", "view_scope", None, "access", "language",
                      None, "canopen", "od_browser"),
             "valve": ("valve_selection", "valve_status", None, "upload", "download", "store",
