@@ -14,8 +14,8 @@ from pathlib import Path
 from PySide6.QtCore import QObject, Signal
 from PySide6.QtWidgets import QWidget
 
-from prm9tool.model.document import ParameterDocument
 from prm9tool.errors import TypeKeyError
+from prm9tool.model.document import ParameterDocument
 from prm9tool.service.export import SETTINGS, write_dcf, write_eds
 from prm9tool.views import prompts
 from prm9tool.views.files import dialogs as file_dialogs
