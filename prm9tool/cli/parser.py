@@ -155,8 +155,9 @@ def build_parser() -> argparse.ArgumentParser:
         help="output file of --new or --export-eds; - is standard output",
     )
     batch = parser.add_argument_group("headless production mode (no GUI)")
-    batch.add_argument("--list-devices", action="store_true", help="list valves and exit")
-    batch.add_argument(
+    listing = batch.add_mutually_exclusive_group()  # list the valves, or upload into them
+    listing.add_argument("--list-devices", action="store_true", help="list valves and exit")
+    listing.add_argument(
         "--batch",
         nargs="?",
         const="",

@@ -2,10 +2,14 @@
 option that would be ignored is an error, not a surprise.
 
 Where argparse can say it, the parser does (``cli/parser.py``: mutually exclusive groups for
-the LSS commands, the file tools, the tests of a valve — ``--characterize``,
-``--autotune``, ``--fit-twin`` — and ``--diff`` with the history commands, ``choices`` for ``--autotune LOOP``); the checks here are
-the ones argparse cannot express (an option that belongs to a command in another group, a
-command with a device it cannot take)."""
+the LSS commands, the file tools, ``--list-devices`` and ``--batch``, the tests and commands
+of a valve — ``--characterize``, ``--autotune``, ``--signature``, ``--fit-twin``,
+``--restart``, ``--restore-factory``, ``--disable`` — and ``--diff`` with the history commands,
+``choices`` for ``--autotune LOOP``); the checks here are the ones argparse cannot express: an
+option that modifies a command (``--store`` of ``--set``, ``--apply`` of ``--autotune``,
+``--enable`` of a test or alone), a command with an option or a device of another group, a
+number of values argparse's ``nargs`` cannot say (``--diff`` one or two files), a value
+judged against another option. tests/test_cli_usage.py shows each one's words."""
 
 from __future__ import annotations
 
@@ -153,6 +157,7 @@ def _fit_twin_problem(args: argparse.Namespace) -> str | None:
 
 
 def _command(args: argparse.Namespace) -> str:
+    # --list-devices and --batch: argparse refuses the pair (one exclusive group)
     if args.serve_emulator:
         others = [
             flag
@@ -259,8 +264,6 @@ def _valve_command_problem(args: argparse.Namespace) -> str | None:
 
 
 def _signature_problem(args: argparse.Namespace) -> str | None:
-    if args.characterize:
-        return "--signature and --characterize are separate commands: use one at a time"
     if len(args.emulator) + len(args.device) != 1:
         return "--signature tests one valve: give one --device or --emulator"
     problem = _characterize_problem(args)
@@ -306,7 +309,7 @@ def _diff_problem(args: argparse.Namespace) -> str | None:
 
 
 def _list_devices_problem(args: argparse.Namespace, batch_only: list[str]) -> str | None:
-    given = {"--batch": args.batch is not None, "--device": args.device, "-o": args.output}
+    given = {"--device": args.device, "-o": args.output}  # --batch: argparse refuses it
     extra = batch_only + [flag for flag, value in given.items() if value]
     if args.file:
         extra.append(f"the file {args.file}")
