@@ -131,7 +131,7 @@ def _texts() -> dict[str, _Texts]:
             ),
         ),
         "export_eds": _Texts(
-            translate("MainActions", "Export &EDS…"),
+            translate("MainActions", "Expor&t EDS…"),
             translate(
                 "MainActions",
                 "Save the CiA 306 EDS of the valve's type (its object dictionary, for a PLC "
