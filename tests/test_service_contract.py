@@ -634,3 +634,41 @@ def test_enable_of_a_valve_without_canopen_says_why_and_sends_nothing(capsys):
     err = capsys.readouterr().err
     assert "this valve's CANopen is off" in err and "nothing was sent" in err
     assert "0x6040" not in err  # not the valve's SDO abort
+
+
+@pytest.mark.parametrize("od", ["full", "manual"])
+def test_restart_enable_and_disable_over_canopen_are_the_apis(tmp_path, request, capsys, od):
+    # a -CA valve on a CAN bus (also the one with only the manual's objects): --enable,
+    # --disable and --restart on the command line give the API's states; the restart comes
+    # back in pre-operational (a restart over CAN drops the spool: hence --hydraulics-safe)
+    from support.can_link_rig import E04, make_link_rig
+
+    rig = make_link_rig(request.node.name, tmp_path, E04, od=od)
+    rig.valve.start()  # real time: the restart's boot takes its ~2 s
+    bus = {"can_interface": "virtual", "can_channel": rig.options.channel}
+    cli = ["--device", "can:10", "--can-interface", "virtual", "--can-channel",
+           rig.options.channel, "--type-key", E04, "--hydraulics-safe", "--json"]  # fmt: skip
+    try:
+        assert main([*cli, "--enable"]) == 0
+        enabled = json.loads(capsys.readouterr().out)
+        assert main([*cli, "--disable"]) == 0
+        disabled = json.loads(capsys.readouterr().out)
+        with prm9tool.connect("can:10", type_key=E04, **bus) as valve:
+            api = valve.commission()
+            valve.disable()
+            api_off = valve.status()
+            before = dict(valve.download().raw)
+        assert enabled["status"]["device_state"] == str(api.device_state) == "DEVICE_MODE_ACTIVE"
+        # the command line sent NMT start and saw it confirmed; the API found it operational
+        # already (no heartbeat heard yet: "unknown" over a link that only asks)
+        assert enabled["status"]["nmt_state"] == "operational", (enabled, api)
+        assert disabled["status"]["device_state"] == str(api_off.device_state) == "INIT"
+        assert main([*cli[:-1], "--restart"]) == 0
+        out = capsys.readouterr().out
+        assert out.startswith("the valve restarted; it runs with its stored parameters")
+        assert "NMT pre-operational: it waits for its CANopen master" in out
+        assert [r["operation"] for r in _records(rig.valve.serial, "restart")] == ["restart"]
+        assert json.loads(_parameters(_records(rig.valve.serial, "restart")[0]["id"])) == before
+    finally:
+        rig.valve.stop()
+        rig.close()

@@ -215,7 +215,8 @@ class ValveService:
 
     def commission(self) -> ValveStatus:
         """What the window's "Enable it now?" does: NMT start when the valve waits in
-        pre-operational or stopped, then the enable sequence; returns the status after. A
+        pre-operational or stopped (or the link has not heard its NMT state yet), then the
+        enable sequence; returns the status after. A
         valve still booting is waited for (at most BOOT_WAIT_S), then enabled."""
         status = self.session.status()
         # just powered up, the valve boots for about 2 s (manual §1.5, §5.6): wait it out
@@ -223,7 +224,9 @@ class ValveService:
         while status.booting and time.monotonic() < deadline:
             time.sleep(0.05)
             status = self.session.status()
-        if str(status.nmt_state) in ("pre-operational", "stopped"):
+        # a CANopen master that heard no heartbeat yet cannot tell: NMT start, which an
+        # operational valve ignores (CiA 301), rather than an enable in pre-operational
+        if str(status.nmt_state) in ("pre-operational", "stopped", "unknown"):
             self.nmt(NmtCommand.START)
         return self.enable()
 
