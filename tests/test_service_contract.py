@@ -672,3 +672,20 @@ def test_restart_enable_and_disable_over_canopen_are_the_apis(tmp_path, request,
     finally:
         rig.valve.stop()
         rig.close()
+
+
+def test_an_enable_the_valve_refuses_has_the_same_words_in_the_api_and_on_the_command_line(
+    capsys,
+):
+    from prm9tool.device.enabling import NotEnabledError
+
+    with prm9tool.connect(f"emulator:{E02_CA}:7398", record_history=False) as valve:
+        valve.commission()
+        valve.session.emulator.set_fault("COIL_A_OPEN", True)
+        wait_for(lambda: str(valve.status().device_state) == "FAULT_HOLD", 10)
+        with pytest.raises(NotEnabledError) as api:
+            valve.commission()
+    assert main(["--emulator", f"{E02_CA}:7398", "--enable", "--hydraulics-safe"]) == 1
+    err = capsys.readouterr().err
+    assert f"prm9tool: --enable: {api.value}" in err
+    assert "error 0x5411 (Solenoid A disconnected) is still present" in err
