@@ -56,6 +56,10 @@ KEPT = [
      "--set and --list-devices are separate commands: use one at a time"),
     (["--diff", "a.prm", "--new", E02], "--diff and --new are separate commands: use one at a "
      "time"),
+    (["--lss-scan", "--restart", *CAN], "--lss-scan and --restart are separate commands"),
+    (["--decode", "t.asc", "--enable"], "--decode reads a trace file and takes no --enable"),
+    (["--replay", "t.asc", "--disable", *CAN], "--replay drives a bus from a trace and takes no "
+     "--disable"),
     # a command with a device, a file or a bus it cannot take
     (["--restore-factory", "--hydraulics-safe"], "--restore-factory works on one valve: give "
      "one --device ID or --emulator TYPEKEY[:SERIAL]"),
