@@ -2854,10 +2854,6 @@ Ano načte a záznam zařadí do fronty; Ne nenačte nic.</translation>
             <translation>Uložit konfiguraci CANopen ventilu jako DCF podle CiA 306 (pro konfigurátor PLC)</translation>
         </message>
         <message>
-            <source>Save the CiA 306 EDS of the valve's type (its object dictionary, for a PLC configurator)</source>
-            <translation>Uložit EDS typu ventilu podle CiA 306 (jeho slovník objektů, pro konfigurátor PLC)</translation>
-        </message>
-        <message>
             <source>&amp;Export PDF…</source>
             <translation>&amp;Export do PDF…</translation>
         </message>
@@ -3096,6 +3092,10 @@ Ano načte a záznam zařadí do fronty; Ne nenačte nic.</translation>
         <message>
             <source>Expor&amp;t EDS…</source>
             <translation>Export ED&amp;S…</translation>
+        </message>
+        <message>
+            <source>Save the valve type's CiA 306 EDS (for a PLC configurator)</source>
+            <translation>Uložit EDS typu ventilu podle CiA 306 (pro konfigurátor PLC)</translation>
         </message>
         <message>
             <source>Compare the parameters with a *.prm file, take chosen values</source>

@@ -2837,10 +2837,6 @@ Ja lädt hoch und stellt den Eintrag in die Warteschlange; Nein lädt nichts hoc
             <translation>CANopen-Konfiguration des Ventils als CiA-306-DCF speichern (für einen SPS-Konfigurator)</translation>
         </message>
         <message>
-            <source>Save the CiA 306 EDS of the valve's type (its object dictionary, for a PLC configurator)</source>
-            <translation>CiA-306-EDS des Ventiltyps speichern (sein Objektverzeichnis, für einen SPS-Konfigurator)</translation>
-        </message>
-        <message>
             <source>&amp;Export PDF…</source>
             <translation>PDF &amp;exportieren…</translation>
         </message>
@@ -3079,6 +3075,10 @@ Ja lädt hoch und stellt den Eintrag in die Warteschlange; Nein lädt nichts hoc
         <message>
             <source>Expor&amp;t EDS…</source>
             <translation>EDS e&amp;xportieren…</translation>
+        </message>
+        <message>
+            <source>Save the valve type's CiA 306 EDS (for a PLC configurator)</source>
+            <translation>CiA-306-EDS des Ventiltyps speichern (für einen SPS-Konfigurator)</translation>
         </message>
         <message>
             <source>Compare the parameters with a *.prm file, take chosen values</source>

@@ -132,11 +132,7 @@ def _texts() -> dict[str, _Texts]:
         ),
         "export_eds": _Texts(
             translate("MainActions", "Expor&t EDS…"),
-            translate(
-                "MainActions",
-                "Save the CiA 306 EDS of the valve's type (its object dictionary, for a PLC "
-                "configurator)",
-            ),
+            translate("MainActions", "Save the valve type's CiA 306 EDS (for a PLC configurator)"),
         ),
         "export_pdf": _Texts(
             translate("MainActions", "&Export PDF…"),
