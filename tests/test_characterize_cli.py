@@ -157,7 +157,8 @@ def test_enable_commissions_a_ca_valve_that_waits_for_its_master_and_then_tests_
 @pytest.mark.parametrize(
     ("args", "message"),
     [
-        (["--enable", "--emulator", E02], "--enable belongs to --characterize"),
+        (["--enable", "--emulator", E02], "--enable: enabled, the valve follows its setpoint"),
+        (["--hydraulics-safe", "--emulator", E02], "--hydraulics-safe answers the hydraulics"),
         (["--characterize", "--emulator", E02, "--json", "x.json", "--hydraulics-safe"],
          "--hydraulics-safe confirms --enable"),
     ],

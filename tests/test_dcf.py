@@ -51,3 +51,49 @@ def test_file_export_dcf_writes_the_documents_valve(qtbot, tmp_path, monkeypatch
     limta = CATALOGUE["LIMTA"]
     section = text.split(f"[{limta.index:04X}sub{limta.subindex:X}]", 1)[1].split("\n\n", 1)[0]
     assert "ParameterValue=1700" in section
+
+
+def test_file_export_eds_writes_the_documents_type_offline(qtbot, tmp_path, monkeypatch):
+    # the window's EDS is the valve service's write_eds, as --export-eds writes it (issue 28)
+    from PySide6.QtWidgets import QFileDialog
+    from support.gui_support import E02_CA, main_window, record_prompts
+
+    from prm9tool.service.export import eds_text
+
+    record_prompts(monkeypatch)
+    target = tmp_path / "valve.eds"
+    monkeypatch.setattr(QFileDialog, "getSaveFileName", lambda *_a, **_k: (str(target), ""))
+    with main_window(qtbot, tmp_path, E02_CA) as window:
+        action = window.commands["export_eds"]
+        assert action.isEnabled() and not window.connection.is_online
+        assert action in window.commands.menus["file"].actions()
+        action.trigger()
+        assert window.status.currentMessage() == f"EDS saved as {target}"
+    text = target.read_bytes().decode("ascii")
+    expected = eds_text(E02_CA)
+    same = lambda t: [x for x in t.split("\r\n") if not x.startswith("Creation")]  # noqa: E731
+    assert same(text) == same(expected) and "[DeviceInfo]" in text
+
+
+def test_file_export_eds_to_an_unwritable_path_says_so_and_writes_nothing(
+    qtbot, tmp_path, monkeypatch
+):
+    from PySide6.QtWidgets import QFileDialog
+    from support.gui_support import E02_CA, main_window, record_prompts
+
+    asked = record_prompts(monkeypatch)
+    folder = tmp_path / "no such folder"
+    target = folder / "valve.eds"
+    monkeypatch.setattr(QFileDialog, "getSaveFileName", lambda *_a, **_k: (str(target), ""))
+    with main_window(qtbot, tmp_path, E02_CA) as window:
+        window.commands["export_eds"].trigger()
+        assert "EDS saved" not in window.status.currentMessage()
+    assert not folder.exists() and not list(tmp_path.glob("*.eds*"))
+    assert any(f"Export EDS: Cannot write “{target}”" in text for text in asked.asked), asked
+
+
+def test_file_export_eds_is_off_for_a_valve_without_canopen(qtbot, tmp_path):
+    from support.gui_support import E02, main_window
+
+    with main_window(qtbot, tmp_path, E02) as window:
+        assert not window.commands["export_eds"].isEnabled()

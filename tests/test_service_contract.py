@@ -11,6 +11,7 @@ from support.gui_support import E02, E02_CA, emulator_connection
 from support.waiting import wait_for
 
 import prm9tool
+from prm9tool.catalogue.typekey import TypeKey
 from prm9tool.cli.main import main
 from prm9tool.device import emulated_valves, factory
 from prm9tool.errors import AccessDeniedError, Prm9Error, ValueRangeError
@@ -481,22 +482,210 @@ def test_a_download_over_canopen_is_the_same_set_at_every_door(qtbot, tmp_path, 
         rig.close()
 
 
-def test_the_eds_export_is_the_same_file_in_the_api_and_on_the_command_line(tmp_path):
-    # the window has no EDS export (File → Export DCF writes the valve's configuration)
+def test_the_eds_export_is_the_same_file_at_every_door(qtbot, tmp_path):
+    from prm9tool.model.document import ParameterDocument
+    from prm9tool.views.files.dcf_export import EdsExport
+
     with prm9tool.connect(f"emulator:{E02_CA}:7381", record_history=False) as valve:
         valve.export_eds(tmp_path / "api.eds")
     args = ["--export-eds", E02_CA, "-o", str(tmp_path / "cli.eds")]
     assert main(args) == 0
+    # the window's File → Export EDS writes the document's type, offline too
+    assert EdsExport(ParameterDocument(E02_CA), None).export(tmp_path / "gui.eds")
     # the same file but its creation time (CiA 306 [FileInfo], the minute it was written)
     texts = [
         [line for line in (tmp_path / f"{door}.eds").read_bytes().split(b"\r\n")
          if not line.startswith((b"CreationTime=", b"CreationDate="))]
-        for door in ("api", "cli")
+        for door in ("api", "cli", "gui")
     ]  # fmt: skip
-    assert texts[0] == texts[1] and b"[DeviceInfo]" in texts[0]
+    assert texts[0] == texts[1] == texts[2] and b"[DeviceInfo]" in texts[0]
     with (
         prm9tool.connect(f"emulator:{E02}:7382", record_history=False) as valve,
         pytest.raises(prm9tool.TypeKeyError) as api,
     ):
         valve.export_eds(tmp_path / "no.eds")
     assert str(api.value).startswith(f"{E02} has no CANopen interface")
+
+
+def test_a_diff_of_two_files_gives_the_same_differences_in_the_window_and_on_the_command_line(
+    qtbot, monkeypatch, capsys, tmp_path
+):
+    # File → Compare with file… and --diff are one comparison (prm9tool.compare.model)
+    from support.gui_support import main_window, record_prompts
+
+    from prm9tool.compare.export import value
+    from prm9tool.views.compare.view import CompareDialog
+
+    first = PrmContents.factory(TypeKey.parse(E02))
+    first.values.update(LIMTA=1700, POSKP=120)
+    second = PrmContents.factory(TypeKey.parse(E02_CA))  # CANopen objects: missing
+    second.values.update(LIMTA=1800, RAMPUPA=250)
+    a, b = tmp_path / "a.prm", tmp_path / "b.prm"
+    write_file(first, a, backup=False)
+    write_file(second, b, backup=False)
+    assert main(["--diff", str(a), str(b), "--json"]) == 1
+    cli = [
+        (d["mnemonic"], d["a"], d["b"]) for d in json.loads(capsys.readouterr().out)["differences"]
+    ]
+
+    record_prompts(monkeypatch)
+    shown = []
+    monkeypatch.setattr(CompareDialog, "exec", lambda dialog: shown.append(dialog) or 0)
+    with main_window(qtbot, tmp_path, E02) as window:
+        window.doc.set_values(dict(first.values), "a.prm")
+        window.compare.compare_with_file(b)
+        qtbot.waitUntil(lambda: bool(shown), timeout=TIMEOUT)
+        rows = shown[0].model.comparison.rows
+        gui = [(r.mnemonic, value(r, 0), value(r, 1)) for r in rows if r.differs]
+    assert gui == cli
+    assert {"LIMTA", "POSKP", "NODEID"} <= {mnemonic for mnemonic, _a, _b in cli}
+
+
+def _records(serial, *operations):
+    return [r for r in prm9tool.history.records(serial) if r["operation"] in operations]
+
+
+def test_restart_and_factory_values_on_the_command_line_are_the_windows(qtbot, connection, capsys):
+    # --restart and --restore-factory run the window's operations of the valve service
+    # (restart_and_read, factory_reset_and_read) and record as the window does
+    for serial in (7391, 7392):  # a value that the factory reset takes back
+        assert main(["--emulator", f"{E02}:{serial}", "--set", "LIMTA=1700", "--store"]) == 0
+    capsys.readouterr()
+    cli = ["--emulator", f"{E02}:7391", "--hydraulics-safe", "--json"]
+    assert main([*cli, "--restore-factory"]) == 0
+    factory = json.loads(capsys.readouterr().out)
+    assert main([*cli, "--restart"]) == 0
+    restarted = json.loads(capsys.readouterr().out)
+    connection.set_recorder(Recorder())
+    _online(qtbot, connection, 7392)  # the GUI's worker
+    gui_factory, _backup = _gui_job(qtbot, connection, lambda: connection.factory_reset("f"), "f")
+    gui_restart = _gui_job(qtbot, connection, lambda: connection.restart_valve("r"), "r")
+
+    assert factory["operation"] == "restore-factory" and restarted["operation"] == "restart"
+    assert factory["values"]["LIMTA"] == restarted["values"]["LIMTA"] == 2400
+    with prm9tool.connect(f"emulator:{E02}:7391", record_history=False) as valve:
+        shown = {m: valve.parameter(m) for m in gui_factory}
+        from prm9tool.api.params import display
+
+        assert factory["values"] == {m: display(shown[m], v) for m, v in gui_factory.items()}
+        assert restarted["values"] == {m: display(shown[m], v) for m, v in gui_restart.items()}
+    cli_records = _records(7391, "restore-factory", "restart")
+    gui_records = _records(7392, "restore-factory", "restart")
+    assert [r["operation"] for r in cli_records] == ["restore-factory", "restart"]
+    assert [r["operation"] for r in gui_records] == ["restore-factory", "restart"]
+    for mine, theirs in zip(cli_records, gui_records, strict=True):
+        assert set(mine["details"]) - {"command"} == set(theirs["details"]) - {"command"}
+        assert _parameters(mine["id"]) == _parameters(theirs["id"])  # the set read back
+    assert cli_records[1]["details"]["command"] == "--restart"
+
+
+@pytest.mark.parametrize(
+    ("command", "words"),
+    [
+        ("--restart", "restarting the valve electronics is only allowed with the hydraulic "
+         "circuit disconnected"),
+        ("--restore-factory", "the valve's stored parameters are reset to the factory values"),
+        ("--enable", "enabled, the valve follows its setpoint"),
+        ("--disable", "disabled, the valve stops following its setpoint"),
+    ],
+)  # fmt: skip
+def test_a_command_that_moves_the_spool_asks_the_hydraulics_question(capsys, command, words):
+    # the window asks before a restart (RestartDialog); the command line refuses without the
+    # answer, in the window's words, and sends nothing
+    assert main(["--emulator", f"{E02_CA}:7393", command]) == 2
+    err = capsys.readouterr().err
+    assert f"error: {command}: {words}" in err and err.rstrip().endswith("add --hydraulics-safe")
+    assert _history(7393) == []
+
+
+def test_enable_and_disable_are_the_same_at_every_door(qtbot, connection, capsys):
+    # --enable alone commissions a -CA valve (NMT start, 08h → 09h → 0Bh → 0Fh) as the API's
+    # commission() and the status window's NMT start + Enable; --disable back to INIT
+    from prm9tool.catalogue.commissioning import NmtCommand
+    from prm9tool.online.valve_control import ValveControl
+
+    with prm9tool.connect(f"emulator:{E02_CA}:7394", record_history=False) as valve:
+        api = valve.commission()
+        valve.disable()
+        api_off = valve.status()
+    cli = ["--emulator", f"{E02_CA}:7395", "--hydraulics-safe", "--json"]
+    assert main([*cli, "--enable"]) == 0
+    enabled = json.loads(capsys.readouterr().out)["status"]
+    assert main([*cli, "--disable"]) == 0
+    disabled = json.loads(capsys.readouterr().out)["status"]
+    _online(qtbot, connection, 7396, E02_CA)
+    booted = []
+    connection.run("boot", lambda s: wait_for(lambda: not s.status().booting, 10), booted.append)
+    qtbot.waitUntil(lambda: bool(booted), timeout=TIMEOUT)
+    control = ValveControl(connection)
+    control.nmt(NmtCommand.START)
+    control.enable()
+    gui = _gui_status(qtbot, connection)
+    control.disable()
+    gui_off = _gui_status(qtbot, connection)
+    assert str(api.device_state) == enabled["device_state"] == str(gui.device_state)
+    assert enabled["device_state"] == "DEVICE_MODE_ACTIVE" and enabled["nmt_state"] == "operational"
+    assert str(api_off.device_state) == disabled["device_state"] == str(gui_off.device_state)
+    assert disabled["device_state"] == "INIT"
+
+
+def test_enable_of_a_valve_without_canopen_says_why_and_sends_nothing(capsys):
+    assert main(["--emulator", f"{E02}:7397", "--enable", "--hydraulics-safe"]) == 2
+    err = capsys.readouterr().err
+    assert "this valve's CANopen is off" in err and "nothing was sent" in err
+    assert "0x6040" not in err  # not the valve's SDO abort
+
+
+@pytest.mark.parametrize("od", ["full", "manual"])
+def test_restart_enable_and_disable_over_canopen_are_the_apis(tmp_path, request, capsys, od):
+    # a -CA valve on a CAN bus (also the one with only the manual's objects): --enable,
+    # --disable and --restart on the command line give the API's states; the restart comes
+    # back in pre-operational (a restart over CAN drops the spool: hence --hydraulics-safe)
+    from support.can_link_rig import E04, make_link_rig
+
+    rig = make_link_rig(request.node.name, tmp_path, E04, od=od)
+    rig.valve.start()  # real time: the restart's boot takes its ~2 s
+    bus = {"can_interface": "virtual", "can_channel": rig.options.channel}
+    cli = ["--device", "can:10", "--can-interface", "virtual", "--can-channel",
+           rig.options.channel, "--type-key", E04, "--hydraulics-safe", "--json"]  # fmt: skip
+    try:
+        assert main([*cli, "--enable"]) == 0
+        enabled = json.loads(capsys.readouterr().out)
+        assert main([*cli, "--disable"]) == 0
+        disabled = json.loads(capsys.readouterr().out)
+        with prm9tool.connect("can:10", type_key=E04, **bus) as valve:
+            api = valve.commission()
+            valve.disable()
+            api_off = valve.status()
+            before = dict(valve.download().raw)
+        assert enabled["status"]["device_state"] == str(api.device_state) == "DEVICE_MODE_ACTIVE"
+        # the command line sent NMT start and saw it confirmed; the API found it operational
+        # already (no heartbeat heard yet: "unknown" over a link that only asks)
+        assert enabled["status"]["nmt_state"] == "operational", (enabled, api)
+        assert disabled["status"]["device_state"] == str(api_off.device_state) == "INIT"
+        assert main([*cli[:-1], "--restart"]) == 0
+        out = capsys.readouterr().out
+        assert out.startswith("the valve restarted; it runs with its stored parameters")
+        assert "NMT pre-operational: it waits for its CANopen master" in out
+        assert [r["operation"] for r in _records(rig.valve.serial, "restart")] == ["restart"]
+        assert json.loads(_parameters(_records(rig.valve.serial, "restart")[0]["id"])) == before
+    finally:
+        rig.valve.stop()
+        rig.close()
+
+
+def test_an_enable_the_valve_refuses_has_the_same_words_in_the_api_and_on_the_command_line(
+    capsys,
+):
+    from prm9tool.device.enabling import NotEnabledError
+
+    with prm9tool.connect(f"emulator:{E02_CA}:7398", record_history=False) as valve:
+        valve.commission()
+        valve.session.emulator.set_fault("COIL_A_OPEN", True)
+        wait_for(lambda: str(valve.status().device_state) == "FAULT_HOLD", 10)
+        with pytest.raises(NotEnabledError) as api:
+            valve.commission()
+    assert main(["--emulator", f"{E02_CA}:7398", "--enable", "--hydraulics-safe"]) == 1
+    err = capsys.readouterr().err
+    assert f"prm9tool: --enable: {api.value}" in err
+    assert "error 0x5411 (Solenoid A disconnected) is still present" in err

@@ -1573,6 +1573,25 @@ Poslední akce možná nebyla dokončena. Uložte svou práci pod novým názvem
         </message>
     </context>
     <context>
+        <name>EdsExport</name>
+        <message>
+            <source>Export EDS</source>
+            <translation>Export EDS</translation>
+        </message>
+        <message>
+            <source>CANopen electronic data sheet (*.eds)</source>
+            <translation>Elektronický datový list CANopen (*.eds)</translation>
+        </message>
+        <message>
+            <source>Cannot write “{0}”: {1}</source>
+            <translation>„{0}“ nelze zapsat: {1}</translation>
+        </message>
+        <message>
+            <source>EDS saved as {0}</source>
+            <translation>EDS uloženo jako {0}</translation>
+        </message>
+    </context>
+    <context>
         <name>Emcy</name>
         <message>
             <source>Warning: electronics temperature above 70 °C</source>
@@ -3069,6 +3088,14 @@ Ano načte a záznam zařadí do fronty; Ne nenačte nic.</translation>
         <message>
             <source>Co&amp;mpare with file…</source>
             <translation>Po&amp;rovnat se souborem…</translation>
+        </message>
+        <message>
+            <source>Expor&amp;t EDS…</source>
+            <translation>Export ED&amp;S…</translation>
+        </message>
+        <message>
+            <source>Save the valve type's CiA 306 EDS (for a PLC configurator)</source>
+            <translation>Uložit EDS typu ventilu podle CiA 306 (pro konfigurátor PLC)</translation>
         </message>
         <message>
             <source>Compare the parameters with a *.prm file, take chosen values</source>

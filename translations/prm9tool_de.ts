@@ -1563,6 +1563,25 @@ Die letzte Aktion wurde womöglich nicht vollständig ausgeführt. Speichern Sie
         </message>
     </context>
     <context>
+        <name>EdsExport</name>
+        <message>
+            <source>Export EDS</source>
+            <translation>EDS exportieren</translation>
+        </message>
+        <message>
+            <source>CANopen electronic data sheet (*.eds)</source>
+            <translation>CANopen-Gerätebeschreibung (*.eds)</translation>
+        </message>
+        <message>
+            <source>Cannot write “{0}”: {1}</source>
+            <translation>„{0}“ kann nicht geschrieben werden: {1}</translation>
+        </message>
+        <message>
+            <source>EDS saved as {0}</source>
+            <translation>EDS gespeichert als {0}</translation>
+        </message>
+    </context>
+    <context>
         <name>Emcy</name>
         <message>
             <source>Warning: electronics temperature above 70 °C</source>
@@ -3052,6 +3071,14 @@ Ja lädt hoch und stellt den Eintrag in die Warteschlange; Nein lädt nichts hoc
         <message>
             <source>Co&amp;mpare with file…</source>
             <translation>Mit Datei &amp;vergleichen…</translation>
+        </message>
+        <message>
+            <source>Expor&amp;t EDS…</source>
+            <translation>EDS e&amp;xportieren…</translation>
+        </message>
+        <message>
+            <source>Save the valve type's CiA 306 EDS (for a PLC configurator)</source>
+            <translation>CiA-306-EDS des Ventiltyps speichern (für einen SPS-Konfigurator)</translation>
         </message>
         <message>
             <source>Compare the parameters with a *.prm file, take chosen values</source>

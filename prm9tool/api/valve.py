@@ -11,7 +11,6 @@ from __future__ import annotations
 import logging
 import os
 import threading
-import time
 from collections.abc import Callable, Mapping, Sequence
 from typing import TYPE_CHECKING
 
@@ -20,7 +19,7 @@ from prm9tool.catalogue import CATALOGUE, Parameter
 from prm9tool.catalogue.commissioning import NmtCommand
 from prm9tool.catalogue.typekey import TypeKey
 from prm9tool.device.records import DeviceInfo, Progress, UploadResult, Value, ValveStatus
-from prm9tool.errors import AccessDeniedError, DeviceTimeoutError, Prm9Error
+from prm9tool.errors import AccessDeniedError, Prm9Error
 from prm9tool.service.upload import check_type
 from prm9tool.service.valve import ValveService, service_for
 
@@ -151,11 +150,7 @@ class Valve:
         or a restart, manual §1.5, §5.6), and return it; DeviceTimeoutError after
         ``timeout_s``. A booting valve ignores its setpoint, NMT commands and the control word.
         """
-        deadline = time.monotonic() + timeout_s
-        while (status := self._session.status()).booting:
-            if time.monotonic() > deadline:
-                raise DeviceTimeoutError(f"the valve has not finished booting in {timeout_s} s")
-        return status
+        return self._service.wait_booted(timeout_s)
 
     # --- the parameter set --------------------------------------------------------------------
     def download(self, progress: Progress | None = None) -> ParameterSet:
@@ -239,6 +234,13 @@ class Valve:
         Raises :class:`~prm9tool.device.enabling.NotEnabledError` (an AccessDeniedError) when
         the valve does not get there, saying why (e.g. which error is still present)."""
         self._service.enable()
+
+    def commission(self) -> ValveStatus:
+        """What its CANopen master does to a -CA valve as delivered (and ``--enable`` and
+        the window's "Enable it now?"): NMT start when it waits in pre-operational or
+        stopped, then :meth:`enable`; a valve still booting is waited for. Returns the
+        status after; NotEnabledError as :meth:`enable`."""
+        return self._service.commission()
 
     def disable(self) -> None:
         """Control word 0Fh → 0Bh → 09h → 08h: back to INIT step by step."""

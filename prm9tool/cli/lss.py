@@ -29,7 +29,9 @@ def lss_problem(args: argparse.Namespace) -> str | None:
               "--serve-emulator": args.serve_emulator, "--diff": args.diff,
               "--characterize": args.characterize, "--device": args.device,
               "--emulator": args.emulator, "--all": args.all, "--type-key": args.type_key,
-              "--node-id": args.node_id}  # fmt: skip
+              "--node-id": args.node_id, "--restart": args.restart,
+              "--restore-factory": args.restore_factory, "--enable": args.enable,
+              "--disable": args.disable}  # fmt: skip
     # two LSS commands together: argparse refuses them (a mutually exclusive group)
     clash = [flag for flag, value in others.items() if value]
     if clash:

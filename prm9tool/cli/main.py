@@ -73,6 +73,10 @@ def _headless_command(args: argparse.Namespace) -> tuple[str, str] | None:
         return "prm9tool.cli.serve", "run"
     if args.lss_scan or args.lss_assign or args.find_bitrate:
         return "prm9tool.cli.lss", "run"
+    tests = (args.characterize, args.autotune is not None, args.fit_twin is not None,
+             args.signature)  # fmt: skip
+    if args.restart or args.restore_factory or args.disable or (args.enable and not any(tests)):
+        return "prm9tool.cli.valve_commands", "run"  # --enable alone: enable and exit
     if args.characterize:
         return "prm9tool.cli.main", "_characterize"
     if args.autotune is not None:

@@ -155,8 +155,9 @@ def build_parser() -> argparse.ArgumentParser:
         help="output file of --new or --export-eds; - is standard output",
     )
     batch = parser.add_argument_group("headless production mode (no GUI)")
-    batch.add_argument("--list-devices", action="store_true", help="list valves and exit")
-    batch.add_argument(
+    listing = batch.add_mutually_exclusive_group()  # list the valves, or upload into them
+    listing.add_argument("--list-devices", action="store_true", help="list valves and exit")
+    listing.add_argument(
         "--batch",
         nargs="?",
         const="",
@@ -181,8 +182,10 @@ def build_parser() -> argparse.ArgumentParser:
     batch.add_argument(
         "--dry-run", action="store_true", help="with --batch: check everything, write nothing"
     )
-    eol = parser.add_argument_group("end-of-line test (no GUI; docs/tuning.md)")
-    test = eol.add_mutually_exclusive_group()  # one test of a valve at a time
+    eol = parser.add_argument_group(
+        "tests and commands of one valve (no GUI; docs/tuning.md, docs/api.md)"
+    )
+    test = eol.add_mutually_exclusive_group()  # one test or command of a valve at a time
     test.add_argument(
         "--characterize",
         action="store_true",
@@ -193,13 +196,35 @@ def build_parser() -> argparse.ArgumentParser:
     )
     eol.add_argument(
         "--enable", action="store_true",
-        help="with --characterize: first enable the valve as its CANopen master would (NMT "
-        "start, control word 08h → 09h → 0Bh → 0Fh; a -CA valve as delivered waits for that); "
-        "the valve then follows its setpoint: needs --hydraulics-safe",
+        help="enable the valve as its CANopen master would (NMT start, control word 08h → 09h "
+        "→ 0Bh → 0Fh; a -CA valve as delivered waits for that): alone, enable the one valve of "
+        "--device/--emulator and exit; with --characterize, --autotune, --fit-twin, "
+        "--signature first, before the test; the valve then follows its setpoint: needs "
+        "--hydraulics-safe",
+    )  # fmt: skip
+    test.add_argument(
+        "--disable", action="store_true",
+        help="control word 0Fh → 0Bh → 09h → 08h: the valve back to INIT, no longer following "
+        "its setpoint (the spool returns to its rest position): needs --hydraulics-safe",
+    )  # fmt: skip
+    test.add_argument(
+        "--restart", action="store_true",
+        help="restart the valve's electronics, as Valve → Restart valve (the spool returns to "
+        "its spring-centred position: hydraulics disconnected!, --hydraulics-safe; a -CA valve "
+        "comes back waiting for its master) and print how it came back; recorded; --json "
+        "[OUT.json]",
+    )  # fmt: skip
+    test.add_argument(
+        "--restore-factory", action="store_true",
+        help="as Valve → Restore factory values: the valve's backup file (if it has none), the "
+        "factory values stored, the restart that makes them effective (hydraulics "
+        "disconnected!, --hydraulics-safe); recorded; --json [OUT.json]",
     )  # fmt: skip
     eol.add_argument(
         "--hydraulics-safe", action="store_true",
-        help="with --enable: the hydraulics are safe for the test to move the spool",
+        help="the answer to the window's hydraulics question, for --enable, --disable, "
+        "--restart and --restore-factory: the hydraulics are safe for the spool to move "
+        "(disconnected, for a restart)",
     )  # fmt: skip
     test.add_argument(
         "--autotune", nargs="?", const="position", choices=("position", "process"),
@@ -265,7 +290,8 @@ def add_history_options(parser: argparse.ArgumentParser) -> None:
     group.add_argument(
         "--json", nargs="?", const=True, metavar="OUT.json",
         help="with --diff, --history, --get/--set, --list-devices, --decode, --replay, "
-        "--autotune: print JSON; with --characterize, --decode, --replay: the JSON report file",
+        "--autotune, --restart, --restore-factory, --enable, --disable: print JSON (or write "
+        "it to OUT.json); with --characterize, --decode, --replay: the JSON report file",
     )  # fmt: skip
     command.add_argument("--history", metavar="SERIAL", help="list the history of a valve")
     command.add_argument(

@@ -30,7 +30,8 @@ _OTHERS = {
     "list_devices", "--characterize": "characterize", "--diff": "diff", "--get": "get",
     "--set": "set", "--serve-emulator": "serve_emulator", "--new": "new", "--check": "check",
     "--export-eds": "export_eds", "--history": "history", "--lss-scan": "lss_scan",
-    "--autotune": "autotune",
+    "--autotune": "autotune", "--restart": "restart", "--restore-factory": "restore_factory",
+    "--enable": "enable", "--disable": "disable",
 }  # fmt: skip
 
 

@@ -2,10 +2,14 @@
 option that would be ignored is an error, not a surprise.
 
 Where argparse can say it, the parser does (``cli/parser.py``: mutually exclusive groups for
-the LSS commands, the file tools, the tests of a valve — ``--characterize``,
-``--autotune``, ``--fit-twin`` — and ``--diff`` with the history commands, ``choices`` for ``--autotune LOOP``); the checks here are
-the ones argparse cannot express (an option that belongs to a command in another group, a
-command with a device it cannot take)."""
+the LSS commands, the file tools, ``--list-devices`` and ``--batch``, the tests and commands
+of a valve — ``--characterize``, ``--autotune``, ``--signature``, ``--fit-twin``,
+``--restart``, ``--restore-factory``, ``--disable`` — and ``--diff`` with the history commands,
+``choices`` for ``--autotune LOOP``); the checks here are the ones argparse cannot express: an
+option that modifies a command (``--store`` of ``--set``, ``--apply`` of ``--autotune``,
+``--enable`` of a test or alone), a command with an option or a device of another group, a
+number of values argparse's ``nargs`` cannot say (``--diff`` one or two files), a value
+judged against another option. tests/test_cli_usage.py shows each one's words."""
 
 from __future__ import annotations
 
@@ -61,12 +65,17 @@ def usage_problem(args: argparse.Namespace) -> str | None:
         return _signature_problem(args)
     if args.characterize or args.autotune is not None:
         return _characterize_problem(args)
+    from prm9tool.cli.valve_commands import command_of
+
+    if command_of(args) is not None:
+        return _valve_command_problem(args)
     if args.apply:
         return "--apply belongs to --autotune (it applies the proposed gains)"
-    if args.enable or args.hydraulics_safe:
-        flag = "--enable" if args.enable else "--hydraulics-safe"
-        return (f"{flag} belongs to --characterize or --autotune (it enables the valve before "
-                "the test)")  # fmt: skip
+    if args.hydraulics_safe:
+        return (
+            "--hydraulics-safe answers the hydraulics question of --enable, --disable, "
+            "--restart or --restore-factory: add one of them, or leave it out"
+        )
     if args.get or args.set or args.store or args.export_dcf:
         return _values_problem(args)
     if args.profile:
@@ -148,6 +157,7 @@ def _fit_twin_problem(args: argparse.Namespace) -> str | None:
 
 
 def _command(args: argparse.Namespace) -> str:
+    # --list-devices and --batch: argparse refuses the pair (one exclusive group)
     if args.serve_emulator:
         others = [
             flag
@@ -220,9 +230,40 @@ def _characterize_problem(args: argparse.Namespace) -> str | None:
     return None
 
 
+def _valve_command_problem(args: argparse.Namespace) -> str | None:
+    """``--restart``, ``--restore-factory``, ``--enable``, ``--disable``: one valve, no other
+    command, the hydraulics question answered (``--hydraulics-safe``)."""
+    from prm9tool.cli.valve_commands import COMMANDS, command_of, confirmation_problem
+
+    flag = command_of(args)
+    assert flag is not None
+    given = [f for f, dest in COMMANDS.items() if getattr(args, dest)]
+    if len(given) > 1:  # --enable is also --characterize's: argparse cannot refuse the pair
+        return f"{given[0]} and {given[1]} are separate commands: use one at a time"
+    commands = {**BATCH_ONLY, **FILE_TOOLS, **HISTORY_COMMANDS, **VALUE_COMMANDS,
+                "--diff": "diff", "--serve-emulator": "serve_emulator",
+                "--list-devices": "list_devices", "--apply": "apply", "--profile": "profile",
+                "--node-id": "node_id"}  # fmt: skip
+    others = [f for f, dest in commands.items() if getattr(args, dest) not in (None, False, [])]
+    others = ["--batch"] * (args.batch is not None) + others
+    if others:
+        return f"{flag} and {others[0]} are separate commands: use one at a time"
+    if args.file:
+        return f"unexpected file {args.file}: {flag} works on a valve"
+    if len(args.device) + len(args.emulator) != 1:
+        return f"{flag} works on one valve: give one --device ID or --emulator TYPEKEY[:SERIAL]"
+    can = [f for f, dest in CAN_OPTIONS.items() if getattr(args, dest) is not None]
+    if can and args.emulator:
+        return (
+            f"{flag} with --emulator uses the emulated valve over USB; {can[0]} names a bus for "
+            "--device can:NODE"
+        )
+    if not args.hydraulics_safe:
+        return confirmation_problem(flag)
+    return None
+
+
 def _signature_problem(args: argparse.Namespace) -> str | None:
-    if args.characterize:
-        return "--signature and --characterize are separate commands: use one at a time"
     if len(args.emulator) + len(args.device) != 1:
         return "--signature tests one valve: give one --device or --emulator"
     problem = _characterize_problem(args)
@@ -268,7 +309,7 @@ def _diff_problem(args: argparse.Namespace) -> str | None:
 
 
 def _list_devices_problem(args: argparse.Namespace, batch_only: list[str]) -> str | None:
-    given = {"--batch": args.batch is not None, "--device": args.device, "-o": args.output}
+    given = {"--device": args.device, "-o": args.output}  # --batch: argparse refuses it
     extra = batch_only + [flag for flag, value in given.items() if value]
     if args.file:
         extra.append(f"the file {args.file}")

@@ -180,6 +180,18 @@ class ValveService:
                 raise NmtStoppedError(f"{STOPPED_TEXT} ({exc})") from exc
             raise
 
+    def wait_booted(self, timeout_s: float = 5.0) -> ValveStatus:
+        """Ask for the status until the valve has finished booting (about 2 s after power-up
+        or a restart, manual §1.5, §5.6) and return it; DeviceTimeoutError after
+        ``timeout_s``. A booting valve ignores its setpoint, NMT commands and the control
+        word."""
+        deadline = time.monotonic() + timeout_s
+        while (status := self.session.status()).booting:
+            if time.monotonic() > deadline:
+                raise DeviceTimeoutError(f"the valve has not finished booting in {timeout_s} s")
+            time.sleep(0.05)
+        return status
+
     # --- commissioning --------------------------------------------------------------------
     def nmt(self, command: NmtCommand | str | int) -> None:
         """Send an NMT command as the valve's CANopen master would (manual §7.2)."""
@@ -203,7 +215,8 @@ class ValveService:
 
     def commission(self) -> ValveStatus:
         """What the window's "Enable it now?" does: NMT start when the valve waits in
-        pre-operational or stopped, then the enable sequence; returns the status after. A
+        pre-operational or stopped (or the link has not heard its NMT state yet), then the
+        enable sequence; returns the status after. A
         valve still booting is waited for (at most BOOT_WAIT_S), then enabled."""
         status = self.session.status()
         # just powered up, the valve boots for about 2 s (manual §1.5, §5.6): wait it out
@@ -211,7 +224,9 @@ class ValveService:
         while status.booting and time.monotonic() < deadline:
             time.sleep(0.05)
             status = self.session.status()
-        if str(status.nmt_state) in ("pre-operational", "stopped"):
+        # a CANopen master that heard no heartbeat yet cannot tell: NMT start, which an
+        # operational valve ignores (CiA 301), rather than an enable in pre-operational
+        if str(status.nmt_state) in ("pre-operational", "stopped", "unknown"):
             self.nmt(NmtCommand.START)
         return self.enable()
 

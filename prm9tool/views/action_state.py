@@ -29,6 +29,7 @@ def enabled_actions(
         "hid_configuration": not online and not busy,  # the valve is chosen before
         "can_bus": online or not busy,  # online: the network view of the bus (issue 34)
         "export_dcf": doc.variant.canopen,
+        "export_eds": doc.variant.canopen,  # the type's: online and offline alike
         "od_browser": ready,
         "offline": online or connection.is_reconnecting,  # also: stop looking for a lost valve
         "upload": ready,

@@ -24,6 +24,7 @@ _ACTIONS: tuple[tuple[str, str, object], ...] = (
     ("print", "print", SK.Print),
     ("export_pdf", "pdf", "Ctrl+E"),
     ("export_dcf", "", None),
+    ("export_eds", "", None),
     ("exit", "exit", (SK.Quit, "Ctrl+Q")),  # nor a Quit key
     ("view_diagram", "diagram", "Ctrl+1"),
     ("view_parameters", "parameters", "Ctrl+2"),
@@ -128,6 +129,10 @@ def _texts() -> dict[str, _Texts]:
                 "MainActions",
                 "Save the valve's CANopen configuration as a CiA 306 DCF (for a PLC configurator)",
             ),
+        ),
+        "export_eds": _Texts(
+            translate("MainActions", "Expor&t EDS…"),
+            translate("MainActions", "Save the valve type's CiA 306 EDS (for a PLC configurator)"),
         ),
         "export_pdf": _Texts(
             translate("MainActions", "&Export PDF…"),
@@ -292,8 +297,8 @@ class MainActions(QObject):
         """File, View, Valve, Communication, Help (manual §8.5)."""
         layout: dict[str, tuple[str | None, ...]] = {
             "file": ("new", "open", "recent", "save", "save_as", "save_copy", None, "undo",
-                     "redo", None, "print", "export_pdf", "export_dcf", None, "compare_file", None,
-                     "exit"),
+                     "redo", None, "print", "export_pdf", "export_dcf", "export_eds", None,
+                     "compare_file", None, "exit"),
             "view": ("view_diagram", "view_parameters", "view_scope", None, "access", "language",
                      None, "canopen", "od_browser"),
             "valve": ("valve_selection", "valve_status", None, "upload", "download", "store",

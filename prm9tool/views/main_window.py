@@ -28,7 +28,7 @@ from prm9tool.views.action_state import enabled_actions
 from prm9tool.views.actions import MainActions
 from prm9tool.views.compare.workflow import CompareWorkflow
 from prm9tool.views.emulated_valve import EmulatedValveMenu
-from prm9tool.views.files.dcf_export import DcfExport
+from prm9tool.views.files.dcf_export import DcfExport, EdsExport
 from prm9tool.views.files.workflow import FileWorkflow
 from prm9tool.views.help_dialog import HelpWindow, about_html, open_homepage, show_help_page
 from prm9tool.views.icons import icon
@@ -77,6 +77,7 @@ class MainWindow(QMainWindow):
             self, doc, undo, access, connection, self.sync, self.valve, settings
         )
         self.dcf = DcfExport(doc, self)
+        self.eds = EdsExport(doc, self)
         self.link_guard = LinkGuard(doc, connection, self)
         self.commands = MainActions(self)
         self.commands.build_menus(self.menuBar())
@@ -194,6 +195,7 @@ class MainWindow(QMainWindow):
             "print": self.records.print_record,
             "export_pdf": self.records.export_pdf_dialog,
             "export_dcf": lambda: self.dcf.export_dialog(self.files.last_folder()),
+            "export_eds": lambda: self.eds.export_dialog(self.files.last_folder()),
             "od_browser": self.show_object_dictionary,
             "exit": self.close,
             "view_diagram": lambda: self.show_view("diagram"),
@@ -250,7 +252,7 @@ class MainWindow(QMainWindow):
         self.files.about_to_replace.connect(self.sync.stop)
         self.files.document_replaced.connect(self.valve.compare_again)
         for source in (self.files, self.valve, self.records, self.compare, self.dcf,
-                       self.parameter_view):  # fmt: skip
+                       self.eds, self.parameter_view):  # fmt: skip
             source.message_posted.connect(lambda text: s.showMessage(text, 8000))
 
     def show_object_dictionary(self) -> None:

@@ -1,0 +1,55 @@
+"""``--restart``, ``--restore-factory``, ``--enable`` and ``--disable`` on the command line
+(cli/valve_commands.py): what they print, ``--json OUT.json``, the backup named once."""
+
+from __future__ import annotations
+
+import json
+
+from prm9tool.cli.main import main
+from prm9tool.errors import ExitCode
+
+E02 = "PRM9-06.3Z11/30-24E02S02"
+E02_CA = f"{E02}-CA"
+
+
+def test_restore_factory_names_the_backup_it_took_and_then_the_one_it_kept(capsys):
+    args = ["--emulator", f"{E02}:7401", "--restore-factory", "--hydraulics-safe"]
+    assert main(args) == ExitCode.OK
+    out = capsys.readouterr().out.splitlines()
+    assert out[0].startswith("factory values restored; the valve's previous parameters are in ")
+    assert out[0].endswith(".prm")
+    assert main(args) == ExitCode.OK
+    again = capsys.readouterr().out.splitlines()
+    assert again[0] == "factory values restored; the valve's backup from before is kept"
+    assert again[1].startswith("device state ")  # a valve without CANopen waits for no master
+    assert "waits for its CANopen master" not in again[1]
+
+
+def test_the_json_of_a_valve_command_goes_to_the_file_it_names(capsys, tmp_path):
+    target = tmp_path / "enabled.json"
+    args = ["--emulator", f"{E02_CA}:7402", "--enable", "--hydraulics-safe", "--json", str(target)]
+    assert main(args) == ExitCode.OK
+    assert capsys.readouterr().out == ""
+    report = json.loads(target.read_text(encoding="utf-8"))
+    assert report["operation"] == "enable" and report["device"]["serial"] == 7402
+    assert report["status"]["device_state"] == "DEVICE_MODE_ACTIVE"
+
+
+def test_a_restart_of_a_ca_valve_says_it_waits_for_its_master(capsys):
+    args = ["--emulator", f"{E02_CA}:7403", "--restart", "--hydraulics-safe"]
+    assert main(args) == ExitCode.OK
+    captured = capsys.readouterr()
+    assert "the spool returns to its spring-centred position" in captured.err
+    lines = captured.out.splitlines()
+    assert lines[0].startswith("the valve restarted; it runs with its stored parameters (")
+    assert lines[1] == (
+        "device state INIT, NMT pre-operational: it waits for its CANopen master and does not "
+        "follow its setpoint (--enable --hydraulics-safe enables it)"
+    )
+
+
+def test_disable_of_a_valve_without_canopen_is_refused_in_words(capsys):
+    args = ["--emulator", f"{E02}:7404", "--disable", "--hydraulics-safe"]
+    assert main(args) == ExitCode.USAGE
+    err = capsys.readouterr().err
+    assert err.startswith("prm9tool: --disable: this valve's CANopen is off")
