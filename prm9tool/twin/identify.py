@@ -103,6 +103,7 @@ class FittedConstant:
     relative_se: float  # standard error of log(value): relative; inf when not seen at all
     determined: bool
     correlated_with: str | None = None  # the constant only seen together with this one
+    reason: str | None = None  # why it is not determined, where the fit can say (kept)
 
 
 @dataclass(frozen=True)
