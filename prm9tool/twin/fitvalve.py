@@ -13,11 +13,19 @@ from __future__ import annotations
 import math
 import os
 from collections.abc import Callable, Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
 from prm9tool.device.emulator.twinfile import write_twin
+from prm9tool.twin.actuator import (
+    NOT_IN_POSITION_RUN,
+    PROCESS_MODE,
+    fit_actuator,
+    free_constants,
+    from_process_run,
+    kept,
+)
 from prm9tool.twin.identify import FITTED, JOINT, Fit, Steps, fit, from_characterization
 
 if TYPE_CHECKING:
@@ -48,14 +56,51 @@ def write_fitted(
     :data:`~.identify.JOINT` with windows of the sweep and the triangle) and write the twin
     file ``path``; returns the fit."""
     joint = any(r.kind != "step" for r in recordings)
-    result = fit(recordings, free=JOINT if joint else FITTED)
+    result = with_actuator_kept(fit(recordings, free=JOINT if joint else FITTED), type_key)
     write_twin(path, result, serial, type_key, firmware, source, recordings[0].values)
     return result
 
 
+def with_actuator_kept(result: Fit, type_key: str) -> Fit:
+    """An E04's fit from its position loop with the actuator's constants listed as not
+    determined, and why (:data:`~.actuator.NOT_IN_POSITION_RUN`); other fits as they are."""
+    from prm9tool.catalogue.typekey import TypeKey
+    from prm9tool.catalogue.variant import Config
+
+    if TypeKey.parse(type_key).variant.config is not Config.E04:
+        return result
+    names = [n for n in free_constants(type_key) if n not in {c.name for c in result.constants}]
+    extra = kept(result.plant, names, NOT_IN_POSITION_RUN)
+    return replace(result, constants=(*result.constants, *extra))
+
+
+def twin_of_process_run(run: Characterization, path: str | os.PathLike[str]) -> ValveTwin:
+    """The twin of an E04 whose process loop ``run`` characterized (control mode 4): its
+    actuator fitted from the run's process-loop steps and flow characteristic
+    (:func:`~.actuator.fit_actuator`), the spool's constants kept and said so."""
+    recordings = from_process_run(run)
+    result = fit_actuator(recordings)
+    info = run.info
+    steps = sum(r.kind == "process" for r in recordings)
+    flow = any(r.kind == "flow" for r in recordings)
+    source = (
+        f"{steps} process-loop steps{' and the flow characteristic' if flow else ''}"
+        f" of the characterization of {run.date} "
+        f"({info.link or 'link'}, {info.sample_rate_hz:g} Hz)"
+    )
+    values = {**run.parameters, "CTRLMODE": PROCESS_MODE}
+    serial, firmware = int(info.serial or 0), info.firmware or ""
+    write_twin(path, result, serial, info.type_key, firmware, source, values)
+    return ValveTwin(run, result, Path(path))
+
+
 def twin_of_run(run: Characterization, path: str | os.PathLike[str]) -> ValveTwin:
-    """The twin of the valve ``run`` characterized, from the run's position-loop steps,
-    written to ``path``. Prm9Error when the run has no complete position-loop step."""
+    """The twin of the valve ``run`` characterized, written to ``path``: from the run's
+    position-loop steps (with windows of its sweep and triangle), or on an E04 whose process
+    loop was characterized from its process-loop steps and flow test
+    (:func:`twin_of_process_run`). Prm9Error when the run has no complete step to fit."""
+    if run.loop == "process":
+        return twin_of_process_run(run, path)
     recordings = from_characterization(run)
     joint = any(r.kind != "step" for r in recordings)
     info = run.info
@@ -105,6 +150,7 @@ def fit_report(result: Fit, path: str | os.PathLike[str]) -> dict[str, Any]:
                 "relative_se": c.relative_se if math.isfinite(c.relative_se) else None,
                 "determined": c.determined,
                 "correlated_with": c.correlated_with,
+                "reason": c.reason,
             }
             for c in result.constants
         ],
@@ -124,6 +170,7 @@ def history_details(result: Fit, path: str | os.PathLike[str]) -> dict[str, Any]
         "rms_pct": result.rms_pct,
         "start_rms_pct": result.start_rms_pct,
         "constants": {
-            c.name: {"value": c.value, "determined": c.determined} for c in result.constants
+            c.name: {"value": c.value, "determined": c.determined, "reason": c.reason}
+            for c in result.constants
         },
     }
