@@ -228,16 +228,10 @@ def fit_actuator(
 
     kinds = {r.kind for r in recordings}
     lengths = [len(r.actual) for r in recordings]
-    weights = np.array(
-        [
-            math.sqrt(
-                sum(lengths)
-                / (len(kinds) * sum(n for n, o in zip(lengths, recordings, strict=True)
-                                    if o.kind == r.kind))
-            )  # fmt: skip
-            for r in recordings
-        ]
-    )
+    per_kind = {k: sum(n for n, r in zip(lengths, recordings, strict=True) if r.kind == k)
+                for k in kinds}  # fmt: skip
+    weights = np.array([math.sqrt(sum(lengths) / (len(kinds) * per_kind[r.kind]))
+                        for r in recordings])  # fmt: skip
     memo: dict[bytes, np.ndarray] = {}
 
     def residual(x: np.ndarray) -> np.ndarray:
@@ -287,22 +281,20 @@ def fit_actuator(
             FittedConstant(name, float(origin[i]), value, rse[i], determined, partners[i], why)
         )
     constants += kept(base, FITTED, NOT_IN_PROCESS_RUN)
-    plant = replace(base, **{c.name: c.value for c in constants})
+    found_values: dict[str, Any] = {c.name: c.value for c in constants}
+    plant = replace(base, **found_values)
     final = residual(np.array([_x_of(c.value, o, n in LINEAR) for c, o, n in
                                zip(constants, origin, free, strict=False)]))  # fmt: skip
     spans = np.cumsum([0, *lengths])
-    parts = {
-        kind: np.concatenate(
-            [final[spans[i] : spans[i + 1]] / weights[i]
-             for i, r in enumerate(recordings) if r.kind == kind]
-        )  # fmt: skip
-        for kind in sorted(kinds)
-    }
-    ours = parts.get("process", final)
-    before = np.concatenate(
-        [first[spans[i] : spans[i + 1]] / weights[i]
-         for i, r in enumerate(recordings) if r.kind == "process"] or [first]
-    )  # fmt: skip
+
+    def part(values: np.ndarray, kind: str) -> np.ndarray:
+        """The unweighted residual of the recordings of ``kind``."""
+        pieces = [values[spans[i] : spans[i + 1]] / weights[i]
+                  for i, r in enumerate(recordings) if r.kind == kind]  # fmt: skip
+        return np.concatenate(pieces) if pieces else values
+
+    parts = {kind: part(final, kind) for kind in sorted(kinds)}
+    ours, before = part(final, "process"), part(first, "process")
     return Fit(
         plant,
         tuple(constants),
