@@ -77,7 +77,6 @@ NOT_IN_POSITION_RUN = (
     "a position-loop run does not record the process value: the actuator is not in its "
     "data (characterize the E04 in control mode 4, its default): kept"
 )
-NOT_ON_TWO_COILS = "a two-coil valve drives its actuator both ways: no spring return in its plant"
 
 
 @dataclass(frozen=True)
