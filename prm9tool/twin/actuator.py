@@ -31,7 +31,7 @@ import numpy as np
 
 from prm9tool.catalogue.scale import FULL_SCALE
 from prm9tool.catalogue.signals import BY_KEY
-from prm9tool.characterize.procedures import LOOPS
+from prm9tool.characterize.procedures import LOOPS, STEP_PRE_S
 from prm9tool.characterize.transparent import TRANSPARENT
 from prm9tool.errors import Prm9Error
 from prm9tool.twin.identify import (
@@ -68,7 +68,6 @@ STATIC_END_PCT = -100.0  # where the static characteristic's triangle ends, befo
 # the control monitoring as late and wide as it goes: a trial plant far from the valve's must
 # not stop the simulation with a fault (the run itself had none; a diagnostic, not dynamics)
 UNMONITORED = {"MONTHRES": FULL_SCALE, "MONDELAY": 5000}
-SETTLE_S = 1.5  # a step's hold at its start level before it (settle(): the step's window)
 NOT_IN_PROCESS_RUN = (
     "a process-loop run does not step the spool's position loop on its own (the loop at "
     "about 1 Hz hardly sees the spool): kept"
@@ -137,7 +136,7 @@ def from_process_run(run: Characterization) -> list[Steps]:
 def simulate_process(recordings: Sequence[Steps], plant: PlantConstants) -> list[np.ndarray]:
     """The process value of an emulated E04 with ``plant`` (analog, control mode 4) to each
     recording's stimulus, played one after the other on one valve, each after a hold at its
-    start level as the procedure held the valve (a step: :data:`SETTLE_S`; the flow test: the
+    start level as the procedure held the valve (a step: :func:`settle_cycles`; the flow test: the
     triangle's end, then as long as each of its halves at its second level). The control
     monitoring is off (:data:`UNMONITORED`)."""
     from prm9tool.catalogue.typekey import TypeKey
@@ -170,7 +169,7 @@ def simulate_process(recordings: Sequence[Steps], plant: PlantConstants) -> list
                 _write(valve, {**steps.values, **UNMONITORED})
                 hold = np.full(len(played) - len(played) // 2, played[-1])
             else:
-                hold = np.full(round(SETTLE_S * CYCLE_HZ), played[0])
+                hold = np.full(settle_cycles(steps), played[0])
             samples = rig.play(np.concatenate([hold, played]), [lp.setpoint, lp.actual])
             samples = samples[len(hold) :]
             actual = samples[:, 1] * BY_KEY[lp.actual].scale
@@ -185,6 +184,14 @@ def simulate_process(recordings: Sequence[Steps], plant: PlantConstants) -> list
     finally:
         rig.release()
     return out
+
+
+def settle_cycles(steps: Steps) -> int:
+    """The hold the procedure settled a step with (``procedures.settle``, which returns after
+    one hold when the loop is there): max(0.1 s, the step's window), in cycles — 1.5 s with
+    the default profile's process loop."""
+    window = len(steps.stimulus) / steps.rate_hz - STEP_PRE_S
+    return round(max(0.1, window) * CYCLE_HZ)
 
 
 def free_constants(type_key: str) -> tuple[str, ...]:
