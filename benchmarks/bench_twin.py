@@ -1,10 +1,10 @@
 """Twins of varied emulated valves (issue 31 items 2 and 4): the proof for each.
 
-Seven emulated valves whose plant constants (or, for the dead band, the threshold parameter)
+Nine emulated valves whose plant constants (or, for the dead band, the threshold parameter)
 were changed are characterized with the default profile (stepped as fast as the CPU allows),
 their twin is fitted from that run (the steps, then the joint residual with windows of the
-sweep and of the static triangle: ``prm9tool.twin.fitvalve.twin_of_run``, as ``--fit-twin``
-does), and the twin is characterized again with the same procedure. For each it prints the
+sweep and of the static triangle; an E04 in control mode 4 from its process-loop steps and
+flow test: ``prm9tool.twin.fitvalve.twin_of_run``, as ``--fit-twin`` does), and the twin is characterized again with the same procedure. For each it prints the
 changed constants (true → fitted, determined or not), the residuals, and every figure of both
 runs side by side: ratios twin/valve, differences in percentage points for the figures in %,
 with the issue's targets checked (−3 dB within 5 %, overshoot within 1 pp, dead band and
@@ -46,6 +46,10 @@ VALVES: tuple[tuple[str, str, dict[str, Any], dict[str, int]], ...] = (
     ("static friction only", E02, {"static_friction_n": 1.2}, {}),
     ("E04 position loop, slower actuator", E04, {"actuator_full_speed_s": 1.0,
                                                   "spool_mass_kg": 0.08}, {"CTRLMODE": 2}),
+    # control mode 4 (the E04's default): the process loop and its actuator
+    ("E04 process loop, slower actuator", E04, {"actuator_full_speed_s": 1.0}, {}),
+    ("E04 process loop, slower actuator and overlap", E04, {"actuator_full_speed_s": 0.8,
+                                                             "spool_overlap": 0.03}, {}),
 )  # fmt: skip
 TARGETS = {  # figure name suffix: (kind, limit)
     "bode_bandwidth_hz": ("ratio", 0.05),
@@ -85,7 +89,7 @@ def run_one(name: str, key: str, changed: dict[str, Any], params: dict[str, int]
           f" ({verdict}); {parts}; {fit.evaluations} evaluations, {wall:.0f} s")  # fmt: skip
     for c in fit.constants:
         true = getattr(truth, c.name)
-        state = "determined" if c.determined else "NOT determined (kept)"
+        state = "determined" if c.determined else f"NOT determined ({c.reason or 'kept'})"
         mark = " *" if c.name in changed else ""
         print(f"    {c.name}{mark}: true {true:g}, fitted {c.value:.4g}, {state}")
     fitted = {c.name for c in fit.constants}

@@ -36,6 +36,13 @@ importing the identification above it (``prm9tool.twin``, which fits what is wri
     relative_se = 0.003
     determined = true
 
+    [fit.constants.actuator_full_speed_s]   # an E04 characterized on its position loop
+    start = 0.5
+    value = 0.5
+    relative_se = inf
+    determined = false
+    reason = "a position-loop run does not record the process value: …"
+
 A file that cannot be used raises :class:`TwinFileError` naming the file and the key.
 """
 
@@ -160,6 +167,9 @@ def write_twin(
         ]
         if c.correlated_with is not None:
             lines.append(f"correlated_with = {_text(c.correlated_with)}")
+        reason = getattr(c, "reason", None)  # why it is not determined (kept), where said
+        if reason:
+            lines.append(f"reason = {_text(reason)}")
     atomic_write(Path(path), ("\n".join(lines) + "\n").encode("utf-8"), backup=False)
 
 
