@@ -10,6 +10,7 @@ do not exist (abort 0x06020000). Faults: :meth:`LinkRig.refuse` (an SDO abort on
 from __future__ import annotations
 
 import itertools
+import time
 from collections.abc import Callable
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -152,3 +153,70 @@ def _wrap_sdo(rig: LinkRig) -> None:
             send(msg, timeout)
 
     rig.bus.send = cabled_send  # type: ignore[method-assign]
+
+
+@dataclass
+class SyncStepper:
+    """The valve of a :class:`LinkRig` stepped by the master's SYNC instead of paced to the
+    wall clock, so sample ``k`` of a SYNC-paced test is the valve at exactly ``k`` periods
+    whatever the PC's load. Paced, its firmware runs in batches of 2–10 ms, and SYNCs 1 ms apart
+    found one state twice (repeated samples no real valve gives).
+
+    At SYNC ``k`` of a play (the master's :class:`~prm9tool.device.canlink.sync_clock.SyncClock`
+    sends it ``k`` periods after the play's first, at most half a period late, or skips it) the
+    valve runs up to ``k`` periods from the play's first SYNC, then takes the SYNC: its
+    synchronous RPDO takes effect and its TPDO1 answers with the state at that SYNC (CiA 301).
+    The answer carries the SYNC's time stamp plus 1 µs — a real valve answers at once and the
+    master's interface stamps the frame on reception — not the moment this process's receive
+    thread got to it, so the master places it by the SYNC it answers however busy the PC is.
+    Between plays the valve does not run (nothing records it then). What the master's path
+    still loses on a busy PC (a tick skipped, a SYNC sent too late: bridged) is counted."""
+
+    rig: LinkRig
+    period_s: float
+    syncs: int = 0
+    skipped: int = 0  # ticks the master did not send (the valve ran through them)
+    _origin: float | None = None  # the time stamp of the play's first SYNC
+    _last: float = 0.0
+    _tick: int = 0  # the tick of the play the valve is at
+    _answer_at: float | None = None  # the stamp for the answer to the SYNC being taken
+
+    PLAY_GAP_S = 0.05  # SYNCs further apart than this: a new play
+
+    def install(self) -> SyncStepper:
+        """Stop the valve's paced thread (if any) and step it by SYNC from now on. The valve's
+        bus must keep the time stamps it is given (``preserve_timestamps=True``)."""
+        rig = self.rig
+        rig.valve.stop()
+        on_message: Callable[[can.Message], None] = rig.slave._on_message
+        send = rig.bus.send
+        tpdo = 0x180 + rig.slave.node_id
+
+        def stepped(msg: can.Message) -> None:
+            if msg.arbitration_id != 0x80 or msg.dlc or rig.unplugged:
+                on_message(msg)
+                return
+            stamp = msg.timestamp
+            if self._origin is None or stamp - self._last > self.PLAY_GAP_S:
+                self._origin, tick, periods = stamp, 0, 1
+            else:
+                tick = max(self._tick + 1, int((stamp - self._origin) / self.period_s + 0.25))
+                periods = tick - self._tick
+                self.skipped += periods - 1
+            self._last, self._tick = stamp, tick
+            self.syncs += 1
+            rig.valve.advance(periods * self.period_s)
+            self._answer_at = stamp + 1e-6
+            try:
+                on_message(msg)  # the SYNC: RPDO1 taken, TPDO1 sent
+            finally:
+                self._answer_at = None
+
+        def stamped_send(msg: can.Message, timeout: float | None = None) -> None:
+            answer = msg.arbitration_id == tpdo and self._answer_at is not None
+            msg.timestamp = self._answer_at if answer else time.time()
+            send(msg, timeout)
+
+        rig.slave._on_message = stepped  # type: ignore[method-assign]
+        rig.bus.send = stamped_send  # type: ignore[method-assign]
+        return self
