@@ -21,6 +21,7 @@ from typing import TYPE_CHECKING
 from prm9tool.errors import CommunicationError, ExitCode, Prm9Error
 
 if TYPE_CHECKING:
+    from prm9tool.characterize.run import Characterization
     from prm9tool.twin.identify import Fit
     from prm9tool.twin.proof import Side
 
@@ -31,7 +32,7 @@ def run(args: argparse.Namespace) -> int:
 
     sides: list[Side] = []
     if args.fit_from is not None:
-        code, result = _from_report(args)
+        code, result, sides = _from_report(args)
     else:
         code, result, sides = _from_valve(args)
     if result is None:
@@ -67,29 +68,18 @@ def _number(value: float) -> float | None:
     return value if math.isfinite(value) else None  # JSON has no nan
 
 
-def _from_report(args: argparse.Namespace) -> tuple[int, Fit | None]:
-    from prm9tool.twin.fitvalve import write_fitted
-    from prm9tool.twin.identify import from_report
+def _from_report(args: argparse.Namespace) -> tuple[int, Fit | None, list[Side]]:
+    """The run of a ``--characterize --json`` report read back (its steps, sweep and static
+    characteristic: :mod:`prm9tool.twin.report`), fitted and recorded as ``--device`` does
+    (the twin only: the run was recorded when it was measured), and the side-by-side."""
+    from prm9tool.twin.report import run_of_report
 
     try:
-        report = json.loads(Path(args.fit_from).read_text(encoding="utf-8"))
-        recordings = from_report(args.fit_from)
-        valve = report["valve"]
-        result = write_fitted(
-            args.fit_twin,
-            recordings,
-            int(valve.get("serial") or 0),
-            str(valve["type_key"]),
-            str(valve.get("firmware") or ""),
-            f"{len(recordings)} position-loop steps of {args.fit_from} ({report.get('date', '')})",
-        )
-    except OSError as exc:
-        print(f"prm9tool: cannot read {args.fit_from}: {exc.strerror or exc}", file=sys.stderr)
-        return ExitCode.INVALID_FILE, None
-    except (Prm9Error, KeyError, ValueError) as exc:
+        run = run_of_report(args.fit_from)
+    except Prm9Error as exc:
         print(f"prm9tool: --fit-twin: {exc}", file=sys.stderr)
-        return ExitCode.INVALID_FILE, None
-    return ExitCode.OK, result
+        return ExitCode.INVALID_FILE, None, []
+    return _fit_run(args, run)
 
 
 def _from_valve(args: argparse.Namespace) -> tuple[int, Fit | None, list[Side]]:
@@ -101,8 +91,7 @@ def _from_valve(args: argparse.Namespace) -> tuple[int, Fit | None, list[Side]]:
     from prm9tool.cli.batch_devices import BatchError
     from prm9tool.cli.characterize import _profile, _rig
     from prm9tool.cli.history import recorder_for
-    from prm9tool.service.history import record_characterization, record_twin
-    from prm9tool.twin.fitvalve import history_details, history_outcome, twin_of_run
+    from prm9tool.service.history import record_characterization
 
     if not Path(args.fit_twin).parent.is_dir():
         print(f"prm9tool: --fit-twin {args.fit_twin}: there is no folder "
@@ -130,20 +119,35 @@ def _from_valve(args: argparse.Namespace) -> tuple[int, Fit | None, list[Side]]:
     recorder = recorder_for(args)
     try:
         record_characterization(recorder, run)
-        try:
-            twin = twin_of_run(run, args.fit_twin)
-        except OSError as exc:
-            print(f"prm9tool: cannot write {args.fit_twin}: {exc.strerror or exc}", file=sys.stderr)
-            return ExitCode.INVALID_FILE, None, []
-        except Prm9Error as exc:
-            print(f"prm9tool: --fit-twin: {exc}", file=sys.stderr)
-            return ExitCode.INVALID_FILE, None, []
-        details = history_details(twin.fit, twin.path)
-        record_twin(recorder, run, history_outcome(twin.fit), details)
     finally:
         recorder.close()
+    return _fit_run(args, run)
+
+
+def _fit_run(args: argparse.Namespace, run: Characterization) -> tuple[int, Fit | None, list[Side]]:
+    """Fit the twin of ``run``, write it, record it, characterize it as the valve was."""
+    from prm9tool.cli.history import recorder_for
+    from prm9tool.service.history import record_twin
+    from prm9tool.twin.fitvalve import history_details, history_outcome, twin_of_run
     from prm9tool.twin.proof import characterize_twin, side_by_side
 
+    if not Path(args.fit_twin).parent.is_dir():
+        print(f"prm9tool: --fit-twin {args.fit_twin}: there is no folder "
+              f"{Path(args.fit_twin).parent}", file=sys.stderr)  # fmt: skip
+        return ExitCode.USAGE, None, []
+    try:
+        twin = twin_of_run(run, args.fit_twin)
+    except OSError as exc:
+        print(f"prm9tool: cannot write {args.fit_twin}: {exc.strerror or exc}", file=sys.stderr)
+        return ExitCode.INVALID_FILE, None, []
+    except Prm9Error as exc:
+        print(f"prm9tool: --fit-twin: {exc}", file=sys.stderr)
+        return ExitCode.INVALID_FILE, None, []
+    recorder = recorder_for(args)
+    try:
+        record_twin(recorder, run, history_outcome(twin.fit), history_details(twin.fit, twin.path))
+    finally:
+        recorder.close()
     print("prm9tool: characterizing the twin as the valve was", file=sys.stderr)
     try:
         again = characterize_twin(run, twin.path)
