@@ -9,13 +9,17 @@ do not exist (abort 0x06020000). Faults: :meth:`LinkRig.refuse` (an SDO abort on
 
 from __future__ import annotations
 
+import collections
 import itertools
 import time
 from collections.abc import Callable
 from dataclasses import dataclass, field
 from pathlib import Path
+from typing import Any
 
 import can
+import numpy as np
+import pytest
 
 from prm9tool.catalogue import CATALOGUE
 from prm9tool.device.canlink.bus import CanOptions
@@ -162,30 +166,62 @@ class SyncStepper:
     whatever the PC's load. Paced, its firmware runs in batches of 2–10 ms, and SYNCs 1 ms apart
     found one state twice (repeated samples no real valve gives).
 
-    At SYNC ``k`` of a play (the master's :class:`~prm9tool.device.canlink.sync_clock.SyncClock`
-    sends it ``k`` periods after the play's first, at most half a period late, or skips it) the
-    valve runs up to ``k`` periods from the play's first SYNC, then takes the SYNC: its
-    synchronous RPDO takes effect and its TPDO1 answers with the state at that SYNC (CiA 301).
-    The answer carries the SYNC's time stamp plus 1 µs — a real valve answers at once and the
-    master's interface stamps the frame on reception — not the moment this process's receive
-    thread got to it, so the master places it by the SYNC it answers however busy the PC is.
-    Between plays the valve does not run (nothing records it then). What the master's path
-    still loses on a busy PC (a tick skipped, a SYNC sent too late: bridged) is counted."""
+    A SYNC carries no number (manual §7.2.5), and on a loaded PC its time stamp does not tell
+    it either (a thread waits for Python's GIL for milliseconds): :meth:`install` watches the
+    master's :class:`~prm9tool.device.canlink.sync_clock.SyncClock` (in this process) for the
+    number of each SYNC it sends, without changing what it does. At SYNC ``k`` of a play the
+    valve runs up to ``k`` periods from the play's first SYNC (through the ticks the master
+    skipped), then takes the SYNC: its synchronous RPDO takes effect and its TPDO1 answers with
+    the state at that SYNC (CiA 301). The answer carries the SYNC's time stamp plus 1 µs — a
+    real valve answers at once and the master's interface stamps the frame on reception — not
+    the moment this process's receive thread got to it, so the master places it by the SYNC it
+    answers. Between plays the valve does not run (nothing records it then). What the master's
+    path still loses on a busy PC (a tick its thread reached too late is skipped, a SYNC sent
+    too late is void: bridged by a straight line) it loses as with a real valve; :attr:`lost`
+    counts those samples (observed where the master bridges them) and :attr:`skipped` the
+    ticks the valve ran through unseen."""
 
     rig: LinkRig
     period_s: float
     syncs: int = 0
     skipped: int = 0  # ticks the master did not send (the valve ran through them)
-    _origin: float | None = None  # the time stamp of the play's first SYNC
-    _last: float = 0.0
+    recorded: int = 0  # samples of the plays whose response the master kept
+    lost: int = 0  # of them, lost on the master's side and bridged (a skipped or late SYNC)
     _tick: int = 0  # the tick of the play the valve is at
     _answer_at: float | None = None  # the stamp for the answer to the SYNC being taken
+    _numbers: collections.deque[int] = field(default_factory=collections.deque)
 
-    PLAY_GAP_S = 0.05  # SYNCs further apart than this: a new play
+    def install(self, monkeypatch: pytest.MonkeyPatch) -> SyncStepper:
+        """Stop the valve's paced thread (if any), watch the master's SYNC numbers and step the
+        valve by SYNC from now on. The valve's bus must keep the time stamps it is given
+        (``preserve_timestamps=True``)."""
+        from prm9tool.device.canlink import sync_clock
 
-    def install(self) -> SyncStepper:
-        """Stop the valve's paced thread (if any) and step it by SYNC from now on. The valve's
-        bus must keep the time stamps it is given (``preserve_timestamps=True``)."""
+        numbers = self._numbers
+
+        class NumberedClock(sync_clock.SyncClock):
+            def __init__(self, *args: Any, **kwargs: Any) -> None:
+                super().__init__(*args, **kwargs)
+                send = self._send
+
+                def numbered(cob_id: int, data: bytes) -> None:
+                    with self._lock:
+                        numbers.append(self._ticks[-1])  # appended just before the send
+                    send(cob_id, data)
+
+                self._send = numbered
+
+        monkeypatch.setattr("prm9tool.characterize.canrig.SyncClock", NumberedClock)
+        from prm9tool.characterize import canrig
+
+        bridged = canrig.bridged
+
+        def counted(response: np.ndarray) -> np.ndarray:
+            self.recorded += len(response)
+            self.lost += int(np.isnan(response).sum())
+            return bridged(response)
+
+        monkeypatch.setattr(canrig, "bridged", counted)
         rig = self.rig
         rig.valve.stop()
         on_message: Callable[[can.Message], None] = rig.slave._on_message
@@ -196,17 +232,13 @@ class SyncStepper:
             if msg.arbitration_id != 0x80 or msg.dlc or rig.unplugged:
                 on_message(msg)
                 return
-            stamp = msg.timestamp
-            if self._origin is None or stamp - self._last > self.PLAY_GAP_S:
-                self._origin, tick, periods = stamp, 0, 1
-            else:
-                tick = max(self._tick + 1, int((stamp - self._origin) / self.period_s + 0.25))
-                periods = tick - self._tick
-                self.skipped += periods - 1
-            self._last, self._tick = stamp, tick
+            tick = numbers.popleft() if numbers else self._tick + 1  # a SYNC of another master
+            periods = 1 if tick == 0 else tick - self._tick  # tick 0: a play's first
+            self.skipped += max(0, periods - 1)
+            self._tick = tick
             self.syncs += 1
-            rig.valve.advance(periods * self.period_s)
-            self._answer_at = stamp + 1e-6
+            rig.valve.advance(max(1, periods) * self.period_s)
+            self._answer_at = msg.timestamp + 1e-6
             try:
                 on_message(msg)  # the SYNC: RPDO1 taken, TPDO1 sent
             finally:
