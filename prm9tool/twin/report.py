@@ -16,6 +16,7 @@ from __future__ import annotations
 import csv
 import json
 import math
+import os
 from dataclasses import fields, replace
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
@@ -31,7 +32,7 @@ TIME = "time [s]"
 DEMAND = "demand [%]"
 
 
-def run_of_report(path: str | Path) -> Characterization:
+def run_of_report(path: str | os.PathLike[str]) -> Characterization:
     """The run the report ``path`` describes (Prm9Error naming the file when it cannot be read
     or is not a characterization report). CSV paths are taken as written, else beside it."""
     from prm9tool.analysis.profile import DEFAULT
@@ -59,8 +60,8 @@ def run_of_report(path: str | Path) -> Characterization:
         raise Prm9Error(f"cannot read the report {where}: {exc.strerror or exc}") from None
     except (ValueError, KeyError, TypeError, AttributeError) as exc:
         raise Prm9Error(f"{where}: not a characterization report ({exc})") from None
-    known = {f.name for f in fields(DEFAULT)}
-    settings = {k: float(v) for k, v in tests.items() if k in known and _number(v)}
+    known = {f.name for f in fields(DEFAULT) if f.type in (float, "float")}
+    settings: dict[str, Any] = {k: float(v) for k, v in tests.items() if k in known and _number(v)}
     profile = replace(DEFAULT, name=str(report.get("profile") or DEFAULT.name), **settings)
     run = Characterization(info, profile, str(report.get("date") or ""), parameters)
     run.loop = str(report.get("loop") or "position")
@@ -87,7 +88,9 @@ def run_of_report(path: str | Path) -> Characterization:
             0.0,
             Record(t, record),
             response,
-            limited_to_hz=float(limited) if _number(limited) else None,
+            limited_to_hz=float(limited)
+            if isinstance(limited, int | float) and _number(limited)
+            else None,
             lost_samples=int(sweep.get("lost_samples") or 0),
             held_s=float(sweep.get("held_s") or 0.0),
         )
