@@ -14,6 +14,7 @@ from __future__ import annotations
 
 import math
 from pathlib import Path
+from typing import TYPE_CHECKING, cast
 
 from PySide6.QtWidgets import QHBoxLayout, QLabel, QLineEdit, QPushButton, QTableWidgetItem
 
@@ -26,6 +27,10 @@ from prm9tool.translate import error_text
 from prm9tool.views.files import dialogs as file_dialogs
 from prm9tool.views.tuning.host import TuningHost, figure_table
 from prm9tool.views.tuning.pages import Page
+from prm9tool.views.tuning.report import figure_label
+
+if TYPE_CHECKING:
+    from prm9tool.characterize.run import Figure
 
 
 def _g(value: float | None, digits: int = 4) -> str:
@@ -190,7 +195,8 @@ class TwinPage(Page):
             compared = (
                 f"{_g(s.difference, 3)} pp" if s.unit == "%" else _g(s.ratio, 3)
             )  # percentage points for the figures in %, else the ratio
-            cells = (s.label, f"{_g(s.valve)} {s.unit}", f"{_g(s.twin)} {s.unit}", compared)
+            label = figure_label(cast("Figure", s))  # by its name, as the test report's
+            cells = (label, f"{_g(s.valve)} {s.unit}", f"{_g(s.twin)} {s.unit}", compared)
             for col, value in enumerate(cells):
                 self.sides.setItem(row, col, QTableWidgetItem(value.strip()))
         self.constants.resizeRowsToContents()
