@@ -105,24 +105,24 @@ def test_a_manual_only_can_valve_is_identified_twinned_and_compared(
     assert fit["explained"], fit  # exact samples: the plant structure explains them
     force = next(c for c in fit["constants"] if c["constant"] == "force_n_per_a")
     assert force["determined"] and force["value"] == pytest.approx(24.0, rel=0.05), force
-    assert proof["step_25_overshoot_pct"]["twin"] == pytest.approx(
-        proof["step_25_overshoot_pct"]["valve"], abs=1.0
-    )
-    bandwidth = proof["bode_bandwidth_hz"]
-    if bandwidth["valve"] is not None and bandwidth["twin"] is not None:
-        assert bandwidth["ratio"] == pytest.approx(1.0, abs=0.05), bandwidth
-    assert (
-        abs(proof["static_dead_band_pct"]["twin"] - proof["static_dead_band_pct"]["valve"]) <= 0.2
-    )
-    # The hysteresis of a 4 s triangle depends on the link it is measured over: over CAN (the
-    # setpoint in RPDO1, taking effect at the SYNC whose TPDO1 still shows the state before
-    # it, one sample per 1 ms) the valve's reads 1.84 %, the same plant on the emulator's rig
-    # (the proof's: 5 kHz, the override) 1.21 %. The twin is judged against its own plant on
-    # the proof's rig; the proof's own valve/twin difference is the link's (docs/twin.md).
+    # The twin is judged against its own plant on the proof's rig (the emulator's: 5 kHz, the
+    # override), what the fit had to find. The valve's column is measured over CAN, and some
+    # figures depend on the link: the hysteresis of a 4 s triangle reads 1.84 % over CAN (the
+    # setpoint in RPDO1 takes effect at the SYNC whose TPDO1 still shows the state before it,
+    # one sample per 1 ms) for 1.21 % on the proof's rig, and a sweep the master lost samples
+    # of reads its −3 dB frequency lower (22.4 Hz for 24.5 Hz on a loaded run): docs/twin.md.
     truth = {f.name: f.value for f in characterize_twin_plant(VARIED, tmp_path)}
-    assert proof["static_hysteresis_pct"]["twin"] == pytest.approx(
-        truth["static_hysteresis_pct"], abs=0.2
-    ), (proof["static_hysteresis_pct"], truth["static_hysteresis_pct"])
+    for name, within in (("step_25_overshoot_pct", 1.0), ("static_dead_band_pct", 0.2),
+                         ("static_hysteresis_pct", 0.2)):  # fmt: skip
+        assert proof[name]["twin"] == pytest.approx(truth[name], abs=within), (name, proof[name])
+    assert proof["bode_bandwidth_hz"]["twin"] == pytest.approx(
+        truth["bode_bandwidth_hz"], rel=0.05
+    ), proof["bode_bandwidth_hz"]
+    # what the link does not change, the valve's own figures over CAN show alike
+    for name, within in (("step_25_overshoot_pct", 1.0), ("static_dead_band_pct", 0.2)):
+        assert proof[name]["twin"] == pytest.approx(proof[name]["valve"], abs=within), proof[name]
+    if stepper.lost == 0:  # a sweep the master lost no sample of
+        assert proof["bode_bandwidth_hz"]["ratio"] == pytest.approx(1.0, abs=0.05), proof
 
 
 def characterize_twin_plant(plant, tmp_path):
