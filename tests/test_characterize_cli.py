@@ -53,7 +53,8 @@ def test_a_good_valve_passes_with_pdf_json_and_csv(tmp_path, capsys):
     assert names["step_90_overshoot_pct"]["max"] == 15
     assert report["parameters"]["POSKP"] == 40
     assert [Path(p).name for p in report["csv"]] == [
-        "out-step-5.csv", "out-step-25.csv", "out-step-90.csv", "out-bode.csv", "out-static.csv"
+        "out-step-5.csv", "out-step-25.csv", "out-step-90.csv", "out-bode.csv", "out-sweep.csv",
+        "out-static.csv"
     ]  # fmt: skip
     assert all(Path(p).exists() for p in report["csv"])
     assert (tmp_path / "out-step-25.csv").read_text(encoding="utf-8").startswith("time [s],")

@@ -1,7 +1,14 @@
 """Issue 31 "done means": a valve on CAN with only the manual's objects is identified, twinned
 and compared — ``prm9tool --fit-twin OUT.toml --device can:10`` characterizes it at the bus's
 SYNC pace (the setpoint in RPDO1: such a valve has no override), fits the twin from that run
-and characterizes the twin as the valve was."""
+and characterizes the twin as the valve was.
+
+The valve is emulated in this process, stepped by the master's SYNC (``SyncStepper``: one
+sample period of its firmware after each SYNC it answers) rather than paced to the wall
+clock: paced, its firmware runs in batches of 2–10 ms, so several SYNCs of 1 ms found the same
+state and the fit saw repeated samples no real valve gives (0.26–0.31 % rms). Stepped, each
+sample is the valve at its SYNC's time and the master's path is the real one: SDO, RPDO1 at
+the tool's SYNC, TPDO1, ``--fit-twin --device can:10``, only the manual's objects."""
 
 from __future__ import annotations
 
@@ -9,15 +16,14 @@ import json
 from dataclasses import replace
 
 import can
-import numpy as np
 import pytest
-from support.can_link_rig import LinkRig, _wrap_sdo
+from support.can_link_rig import LinkRig, SyncStepper, _wrap_sdo
 from support.canopen_rig import BOOT_S, unique_channel
-from support.waiting import emulator_lag
 
 import prm9tool
 from prm9tool.catalogue import CATALOGUE
 from prm9tool.catalogue.commissioning import ENABLE_SEQUENCE, NmtCommand
+from prm9tool.characterize.canrig import tick_period_s
 from prm9tool.cli.main import main
 from prm9tool.device import emulated_valves
 from prm9tool.device.canlink.bus import CanOptions
@@ -28,6 +34,7 @@ from prm9tool.errors import ExitCode
 
 E02_CA = "PRM9-06.3Z11/30-24E02S02-CA"
 VARIED = replace(PLANT, force_n_per_a=24.0, spool_mass_kg=0.08)  # weaker and heavier
+LOST_SHARE = 0.01  # beyond this share of samples lost and bridged the fit may be off
 PROFILE = """name = "short, over CAN"
 [test]
 step_amplitudes_pct = [25]
@@ -43,11 +50,12 @@ static_period_s = 4
 @pytest.fixture
 def manual_only_valve(request, tmp_path, monkeypatch):
     """A booted -CA valve of the varied plant with only the manual's objects (``od="manual"``),
-    node 10 on its own virtual channel, commissioned (NMT start, enabled) and in real time."""
+    node 10 on its own virtual channel, commissioned (NMT start, enabled), stepped by the
+    master's SYNC at the pace the tool chooses for this bus (1 ms)."""
     monkeypatch.setenv("PRM9TOOL_DATA_DIR", str(tmp_path / "data"))
     channel = unique_channel(request.node.name)
     valve = EmulatedValve(E02_CA, 4401, nv_path=tmp_path / "4401.json", od="manual", plant=VARIED)
-    bus = can.Bus(interface="virtual", channel=channel)
+    bus = can.Bus(interface="virtual", channel=channel, preserve_timestamps=True)
     rig = LinkRig(valve, valve.connect_can(bus), bus, CanOptions("virtual", channel))
     _wrap_sdo(rig)
     valve.advance(BOOT_S)
@@ -55,9 +63,8 @@ def manual_only_valve(request, tmp_path, monkeypatch):
     word = CATALOGUE["CONTROLWORD"]
     for value in ENABLE_SEQUENCE:
         valve.write(word.index, word.subindex, value)
-    valve.start()
-    yield rig
-    valve.stop()
+    valve.advance(0.1)  # the enable sequence taken (the firmware's 1 ms task)
+    yield SyncStepper(rig, tick_period_s(None)).install(monkeypatch)
     rig.close()
     emulated_valves.forget_emulated_valves()
 
@@ -65,19 +72,16 @@ def manual_only_valve(request, tmp_path, monkeypatch):
 def test_a_manual_only_can_valve_is_identified_twinned_and_compared(
     manual_only_valve, tmp_path, capsys
 ):
+    stepper = manual_only_valve
+    rig = stepper.rig
     (tmp_path / "short.toml").write_text(PROFILE, encoding="utf-8")
     out, report = tmp_path / "twin.toml", tmp_path / "fit.json"
     url = f"sqlite:///{tmp_path / 'history.db'}"
-    with emulator_lag(manual_only_valve.valve) as lags:
-        code = main(["--fit-twin", str(out), "--device", "can:10", "--can-interface", "virtual",
-                     "--can-channel", manual_only_valve.options.channel, "--profile",
+    code = main(["--fit-twin", str(out), "--device", "can:10", "--can-interface", "virtual",
+                     "--can-channel", rig.options.channel, "--profile",
                      str(tmp_path / "short.toml"), "--type-key", E02_CA, "--history-db", url,
-                     "--json", str(report)])  # fmt: skip
+                 "--json", str(report)])  # fmt: skip
     err = capsys.readouterr().err
-    behind = float(np.percentile(lags, 90)) if lags else 0.0
-    if behind > 0.003:  # the valve is in this process: a loaded PC made it lag real time, so
-        # its TPDOs describe the PC's load, not the valve (as tests/test_characterize_links)
-        pytest.skip(f"the emulated valve was {behind * 1000:.0f} ms behind real time")
     if code in (ExitCode.COMMUNICATION, ExitCode.OUT_OF_LIMITS) and (
         "nothing was interpolated" in err or "too seldom" in err or "a sweep needs" in err
     ):  # a PC too loaded to keep the bus's pace: the rig refused, said so, touched nothing
@@ -91,19 +95,47 @@ def test_a_manual_only_can_valve_is_identified_twinned_and_compared(
     assert "comparison" in fit, err  # the twin characterized too
     proof = {row["figure"]: row for row in fit["comparison"]}
     assert {"bode_bandwidth_hz", "step_25_overshoot_pct", "static_dead_band_pct"} <= set(proof)
-    if not fit["explained"]:
-        # the valve runs in real time in this process: on a loaded PC its TPDO1 samples come
-        # early or late against the SYNC (a sample held twice, one out of order), which no
-        # plant explains (0.5 % rms with the valve's own plant on one run); then the fitted
-        # constants describe that, and the figures are not judged
-        pytest.xfail(f"the run's samples jittered on this loaded PC: {fit['rms_pct']:.2f} % rms")
+    lost = stepper.lost / max(1, stepper.recorded)
+    if not fit["explained"] and lost > LOST_SHARE:  # the master's SYNC thread came late (a
+        # loaded PC): those samples are straight lines, not the valve; without them the
+        # samples are exact and the fit is judged
+        pytest.skip(f"this loaded PC lost {stepper.lost} of {stepper.recorded} samples "
+                    f"({lost:.1%}) on the master's side, bridged by the rig: fit "
+                    f"{fit['rms_pct']:.3f} % rms")  # fmt: skip
+    assert fit["explained"], fit  # exact samples: the plant structure explains them
     force = next(c for c in fit["constants"] if c["constant"] == "force_n_per_a")
     assert force["determined"] and force["value"] == pytest.approx(24.0, rel=0.05), force
-    assert proof["step_25_overshoot_pct"]["twin"] == pytest.approx(
-        proof["step_25_overshoot_pct"]["valve"], abs=1.0
-    )
-    bandwidth = proof["bode_bandwidth_hz"]
-    if bandwidth["valve"] is not None and bandwidth["twin"] is not None:
-        assert bandwidth["ratio"] == pytest.approx(1.0, abs=0.05), bandwidth
-    for name in ("static_dead_band_pct", "static_hysteresis_pct"):
-        assert abs(proof[name]["twin"] - proof[name]["valve"]) <= 0.2, proof[name]
+    # The twin is judged against its own plant on the proof's rig (the emulator's: 5 kHz, the
+    # override), what the fit had to find. The valve's column is measured over CAN, and some
+    # figures depend on the link: the hysteresis of a 4 s triangle reads 1.84 % over CAN (the
+    # setpoint in RPDO1 takes effect at the SYNC whose TPDO1 still shows the state before it,
+    # one sample per 1 ms) for 1.21 % on the proof's rig, and a sweep the master lost samples
+    # of reads its −3 dB frequency lower (22.4 Hz for 24.5 Hz on a loaded run): docs/twin.md.
+    truth = {f.name: f.value for f in characterize_twin_plant(VARIED, tmp_path)}
+    for name, within in (("step_25_overshoot_pct", 1.0), ("static_dead_band_pct", 0.2),
+                         ("static_hysteresis_pct", 0.2)):  # fmt: skip
+        assert proof[name]["twin"] == pytest.approx(truth[name], abs=within), (name, proof[name])
+    assert proof["bode_bandwidth_hz"]["twin"] == pytest.approx(
+        truth["bode_bandwidth_hz"], rel=0.05
+    ), proof["bode_bandwidth_hz"]
+    # what the link does not change, the valve's own figures over CAN show alike
+    for name, within in (("step_25_overshoot_pct", 1.0), ("static_dead_band_pct", 0.2)):
+        assert proof[name]["twin"] == pytest.approx(proof[name]["valve"], abs=within), proof[name]
+    if stepper.lost == 0:  # a sweep the master lost no sample of
+        assert proof["bode_bandwidth_hz"]["ratio"] == pytest.approx(1.0, abs=0.05), proof
+
+
+def characterize_twin_plant(plant, tmp_path):
+    """The figures of ``plant`` on the rig the proof characterizes a twin on (the emulator's
+    own, commissioned as :func:`prm9tool.twin.proof.characterize_twin` does)."""
+    from prm9tool.analysis.profile import load_profile
+    from prm9tool.characterize.rig import EmulatorRig
+    from prm9tool.characterize.run import characterize
+
+    valve = EmulatedValve(E02_CA, 4402, nv_path=tmp_path / "4402.json", od="manual", plant=plant)
+    valve.advance(BOOT_S)
+    valve.nmt_command(NmtCommand.START)
+    word = CATALOGUE["CONTROLWORD"]
+    for value in ENABLE_SEQUENCE:
+        valve.write(word.index, word.subindex, value)
+    return characterize(EmulatorRig(valve), load_profile(tmp_path / "short.toml")).figures

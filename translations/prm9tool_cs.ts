@@ -5155,8 +5155,147 @@ Nejprve přepněte na Expert (Náhled → Úroveň oprávnění), nebo zkoušku 
             <translation>Rodný list</translation>
         </message>
         <message>
+            <source>Twin</source>
+            <translation>Dvojče</translation>
+        </message>
+        <message>
             <source>Flow characteristic (E04)</source>
             <translation>Průtoková charakteristika (E04)</translation>
+        </message>
+    </context>
+    <context>
+        <name>TwinPage</name>
+        <message>
+            <source>Save the twin file</source>
+            <translation>Uložit soubor dvojčete</translation>
+        </message>
+        <message>
+            <source>Twin file (*.toml)</source>
+            <translation>Soubor dvojčete (*.toml)</translation>
+        </message>
+        <message>
+            <source>There is no folder %1 for the twin file.</source>
+            <translation>Pro soubor dvojčete neexistuje složka %1.</translation>
+        </message>
+        <message>
+            <source>A twin is fitted to a valve's own measurement: go online with the valve, or fit it from a characterization report (Fit from a report…).</source>
+            <translation>Dvojče se identifikuje z měření samotného ventilu: přejděte s ventilem do režimu online, nebo je identifikujte ze zprávy charakterizace (Identifikovat ze zprávy…).</translation>
+        </message>
+        <message>
+            <source>the end-of-line test (steps, a sine sweep and a triangle, about %1 s), then the twin fitted to it</source>
+            <translation>výstupní zkoušku (skoky, sinusový rozmítaný signál a trojúhelník, asi %1 s), poté z ní identifikované dvojče</translation>
+        </message>
+        <message>
+            <source>Characterization report</source>
+            <translation>Zpráva charakterizace</translation>
+        </message>
+        <message>
+            <source>JSON report (*.json)</source>
+            <translation>Zpráva JSON (*.json)</translation>
+        </message>
+        <message>
+            <source>Fitting the twin of %1…</source>
+            <translation>Identifikuje se dvojče z %1…</translation>
+        </message>
+        <message>
+            <source>Not fitted: %1</source>
+            <translation>Neidentifikováno: %1</translation>
+        </message>
+        <message>
+            <source>explained by the plant structure</source>
+            <translation>vysvětleno strukturou soustavy</translation>
+        </message>
+        <message>
+            <source>NOT explained by the plant structure: its constants are the best it allows</source>
+            <translation>strukturou soustavy NEVYSVĚTLENO: její konstanty jsou to nejlepší, co dovoluje</translation>
+        </message>
+        <message>
+            <source>Twin written to %1 and recorded in the history. Residual %2 % → %3 % rms (%4).</source>
+            <translation>Dvojče zapsáno do %1 a zaznamenáno v historii. Reziduum %2 % → %3 % rms (%4).</translation>
+        </message>
+        <message>
+            <source>Fitted: %1.</source>
+            <translation>Identifikováno: %1.</translation>
+        </message>
+        <message>
+            <source>The twin could not be characterized: %1</source>
+            <translation>Dvojče nebylo možné charakterizovat: %1</translation>
+        </message>
+        <message>
+            <source>determined</source>
+            <translation>určeno</translation>
+        </message>
+        <message>
+            <source>not determined, kept</source>
+            <translation>neurčeno, ponecháno</translation>
+        </message>
+        <message>
+            <source>(seen only with %1)</source>
+            <translation>(viditelné jen společně s %1)</translation>
+        </message>
+        <message>
+            <source>steps</source>
+            <translation>skoky</translation>
+        </message>
+        <message>
+            <source>sweep</source>
+            <translation>rozmítání</translation>
+        </message>
+        <message>
+            <source>static characteristic</source>
+            <translation>statická charakteristika</translation>
+        </message>
+        <message>
+            <source>A twin is the emulator's plant with the constants of this valve, fitted to its characterization (steps, sweep and static characteristic) and kept in a twin file with its serial and parameter set (docs/twin.md). Fit twin of the valve runs the end-of-line test of the profile chosen on the Test report page on the connected valve; Fit from a report… takes a characterization's JSON report (prm9tool --characterize --json) and its CSV files. Both record the twin in the history for the serial; offline tuning then runs on it.</source>
+            <translation>Dvojče je soustava emulátoru s konstantami tohoto ventilu, identifikovanými z jeho charakterizace (skoky, rozmítání a statická charakteristika) a uloženými v souboru dvojčete s jeho výrobním číslem a sadou parametrů (docs/twin.md). „Identifikovat dvojče ventilu“ provede na připojeném ventilu výstupní zkoušku profilu zvoleného na stránce Protokol o zkoušce; „Identifikovat ze zprávy…“ vezme zprávu JSON charakterizace (prm9tool --characterize --json) s jejími soubory CSV. Obojí zaznamená dvojče v historii výrobního čísla; ladění offline pak běží na něm.</translation>
+        </message>
+        <message>
+            <source>Twin file:</source>
+            <translation>Soubor dvojčete:</translation>
+        </message>
+        <message>
+            <source>Browse…</source>
+            <translation>Procházet…</translation>
+        </message>
+        <message>
+            <source>Fit twin of the valve</source>
+            <translation>Identifikovat dvojče ventilu</translation>
+        </message>
+        <message>
+            <source>Fit from a report…</source>
+            <translation>Identifikovat ze zprávy…</translation>
+        </message>
+        <message>
+            <source>Constant</source>
+            <translation>Konstanta</translation>
+        </message>
+        <message>
+            <source>Start</source>
+            <translation>Počátek</translation>
+        </message>
+        <message>
+            <source>Fitted</source>
+            <translation>Identifikováno</translation>
+        </message>
+        <message>
+            <source>Data</source>
+            <translation>Data</translation>
+        </message>
+        <message>
+            <source>Figure</source>
+            <translation>Ukazatel</translation>
+        </message>
+        <message>
+            <source>Valve</source>
+            <translation>Ventil</translation>
+        </message>
+        <message>
+            <source>Twin</source>
+            <translation>Dvojče</translation>
+        </message>
+        <message>
+            <source>Twin − valve, twin/valve</source>
+            <translation>Dvojče − ventil, dvojče/ventil</translation>
         </message>
     </context>
     <context>

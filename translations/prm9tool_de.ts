@@ -5133,8 +5133,147 @@ Wechseln Sie zuerst zu Experte (Ansicht → Berechtigungsstufe) oder starten Sie
             <translation>Geburtsurkunde</translation>
         </message>
         <message>
+            <source>Twin</source>
+            <translation>Zwilling</translation>
+        </message>
+        <message>
             <source>Flow characteristic (E04)</source>
             <translation>Durchflusskennlinie (E04)</translation>
+        </message>
+    </context>
+    <context>
+        <name>TwinPage</name>
+        <message>
+            <source>Save the twin file</source>
+            <translation>Zwillingsdatei speichern</translation>
+        </message>
+        <message>
+            <source>Twin file (*.toml)</source>
+            <translation>Zwillingsdatei (*.toml)</translation>
+        </message>
+        <message>
+            <source>There is no folder %1 for the twin file.</source>
+            <translation>Für die Zwillingsdatei gibt es keinen Ordner %1.</translation>
+        </message>
+        <message>
+            <source>A twin is fitted to a valve's own measurement: go online with the valve, or fit it from a characterization report (Fit from a report…).</source>
+            <translation>Ein Zwilling wird an die Messung eines Ventils selbst angepasst: gehen Sie mit dem Ventil online oder passen Sie ihn an einen Charakterisierungsbericht an (Aus einem Bericht anpassen…).</translation>
+        </message>
+        <message>
+            <source>the end-of-line test (steps, a sine sweep and a triangle, about %1 s), then the twin fitted to it</source>
+            <translation>die Endprüfung (Sprünge, ein Sinus-Sweep und ein Dreieck, etwa %1 s), danach der daran angepasste Zwilling</translation>
+        </message>
+        <message>
+            <source>Characterization report</source>
+            <translation>Charakterisierungsbericht</translation>
+        </message>
+        <message>
+            <source>JSON report (*.json)</source>
+            <translation>JSON-Bericht (*.json)</translation>
+        </message>
+        <message>
+            <source>Fitting the twin of %1…</source>
+            <translation>Zwilling aus %1 wird angepasst…</translation>
+        </message>
+        <message>
+            <source>Not fitted: %1</source>
+            <translation>Nicht angepasst: %1</translation>
+        </message>
+        <message>
+            <source>explained by the plant structure</source>
+            <translation>von der Struktur der Strecke erklärt</translation>
+        </message>
+        <message>
+            <source>NOT explained by the plant structure: its constants are the best it allows</source>
+            <translation>NICHT von der Struktur der Strecke erklärt: ihre Konstanten sind das Beste, was sie zulässt</translation>
+        </message>
+        <message>
+            <source>Twin written to %1 and recorded in the history. Residual %2 % → %3 % rms (%4).</source>
+            <translation>Zwilling in %1 geschrieben und in der Historie festgehalten. Residuum %2 % → %3 % rms (%4).</translation>
+        </message>
+        <message>
+            <source>Fitted: %1.</source>
+            <translation>Angepasst: %1.</translation>
+        </message>
+        <message>
+            <source>The twin could not be characterized: %1</source>
+            <translation>Der Zwilling konnte nicht charakterisiert werden: %1</translation>
+        </message>
+        <message>
+            <source>determined</source>
+            <translation>bestimmt</translation>
+        </message>
+        <message>
+            <source>not determined, kept</source>
+            <translation>nicht bestimmt, beibehalten</translation>
+        </message>
+        <message>
+            <source>(seen only with %1)</source>
+            <translation>(nur zusammen mit %1 sichtbar)</translation>
+        </message>
+        <message>
+            <source>steps</source>
+            <translation>Sprünge</translation>
+        </message>
+        <message>
+            <source>sweep</source>
+            <translation>Sweep</translation>
+        </message>
+        <message>
+            <source>static characteristic</source>
+            <translation>statische Kennlinie</translation>
+        </message>
+        <message>
+            <source>A twin is the emulator's plant with the constants of this valve, fitted to its characterization (steps, sweep and static characteristic) and kept in a twin file with its serial and parameter set (docs/twin.md). Fit twin of the valve runs the end-of-line test of the profile chosen on the Test report page on the connected valve; Fit from a report… takes a characterization's JSON report (prm9tool --characterize --json) and its CSV files. Both record the twin in the history for the serial; offline tuning then runs on it.</source>
+            <translation>Ein Zwilling ist die Strecke des Emulators mit den Konstanten dieses Ventils, angepasst an seine Charakterisierung (Sprünge, Sweep und statische Kennlinie) und in einer Zwillingsdatei mit seiner Seriennummer und seinem Parametersatz abgelegt (docs/twin.md). „Zwilling des Ventils anpassen“ führt die Endprüfung des auf der Seite Prüfbericht gewählten Profils am verbundenen Ventil aus; „Aus einem Bericht anpassen…“ nimmt den JSON-Bericht einer Charakterisierung (prm9tool --characterize --json) mit seinen CSV-Dateien. Beide halten den Zwilling in der Historie der Seriennummer fest; die Offline-Abstimmung läuft dann auf ihm.</translation>
+        </message>
+        <message>
+            <source>Twin file:</source>
+            <translation>Zwillingsdatei:</translation>
+        </message>
+        <message>
+            <source>Browse…</source>
+            <translation>Durchsuchen…</translation>
+        </message>
+        <message>
+            <source>Fit twin of the valve</source>
+            <translation>Zwilling des Ventils anpassen</translation>
+        </message>
+        <message>
+            <source>Fit from a report…</source>
+            <translation>Aus einem Bericht anpassen…</translation>
+        </message>
+        <message>
+            <source>Constant</source>
+            <translation>Konstante</translation>
+        </message>
+        <message>
+            <source>Start</source>
+            <translation>Start</translation>
+        </message>
+        <message>
+            <source>Fitted</source>
+            <translation>Angepasst</translation>
+        </message>
+        <message>
+            <source>Data</source>
+            <translation>Daten</translation>
+        </message>
+        <message>
+            <source>Figure</source>
+            <translation>Kennwert</translation>
+        </message>
+        <message>
+            <source>Valve</source>
+            <translation>Ventil</translation>
+        </message>
+        <message>
+            <source>Twin</source>
+            <translation>Zwilling</translation>
+        </message>
+        <message>
+            <source>Twin − valve, twin/valve</source>
+            <translation>Zwilling − Ventil, Zwilling/Ventil</translation>
         </message>
     </context>
     <context>

@@ -275,13 +275,41 @@ def report_data(c: Characterization, csv_files: list[Path] | None = None) -> dic
             for f in c.figures
         ],
         "parameters": c.parameters,
+        "tests": _tests(c),  # what the records were played with (``--fit-twin --from``)
+        "sweep": _sweep(c.bode),
         "csv": [str(p) for p in csv_files or []],
         "wall_s": round(c.wall_s, 3),
     }
 
 
+def _tests(c: Characterization) -> dict[str, float]:
+    """The test settings of the run's loop: where the sweep's chirp was at which frequency,
+    the triangle's period (a twin fitted from the report needs them: docs/twin.md)."""
+    part = c.profile.for_loop(c.loop)
+    return {
+        "step_duration_s": part.step_duration_s,
+        "bode_amplitude_pct": part.bode_amplitude_pct,
+        "bode_f_min_hz": part.bode_f_min_hz,
+        "bode_f_max_hz": part.bode_f_max_hz,
+        "bode_duration_s": part.bode_duration_s,
+        "static_period_s": part.static_period_s,
+    }
+
+
+def _sweep(bode: BodeResult | None) -> dict[str, Any] | None:
+    """What limited the sweep (its record is ``-sweep.csv``); None without one."""
+    if bode is None:
+        return None
+    return {
+        "limited_to_hz": bode.limited_to_hz,
+        "lost_samples": bode.lost_samples,
+        "held_s": bode.held_s,
+    }
+
+
 def write_csv_files(c: Characterization, stem: Path) -> list[Path]:
-    """Raw data: ``<stem>-step-<a>.csv``, ``<stem>-bode.csv``, ``<stem>-static.csv``."""
+    """Raw data: ``<stem>-step-<a>.csv``, ``<stem>-bode.csv`` (the frequency response),
+    ``<stem>-sweep.csv`` (the sweep's time record), ``<stem>-static.csv``."""
     written = []
     for step in c.steps:
         path = stem.with_name(f"{stem.name}-step-{step.amplitude_pct:g}.csv")
@@ -296,6 +324,9 @@ def write_csv_files(c: Characterization, stem: Path) -> list[Path]:
             "coherence": r.coherence,
         }
         _table(path, r.frequency, columns, "frequency [Hz]")
+        written.append(path)
+        path = stem.with_name(f"{stem.name}-sweep.csv")
+        _table(path, c.bode.record.t, c.bode.record.channels)
         written.append(path)
     if c.flow is not None:
         path = stem.with_name(f"{stem.name}-flow.csv")

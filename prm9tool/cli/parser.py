@@ -252,7 +252,8 @@ def build_parser() -> argparse.ArgumentParser:
     )  # fmt: skip
     eol.add_argument(
         "--from", dest="fit_from", metavar="RUN.json",
-        help="with --fit-twin: a --characterize JSON report (its step CSV files beside it)",
+        help="with --fit-twin: a --characterize JSON report (its CSV files beside it: steps, "
+        "sweep, static characteristic)",
     )  # fmt: skip
     values = parser.add_argument_group("single parameters for shell scripts (no GUI; docs/api.md)")
     values.add_argument(

@@ -13,7 +13,6 @@ from __future__ import annotations
 
 import argparse
 import json
-import math
 import sys
 from pathlib import Path
 from typing import TYPE_CHECKING
@@ -21,30 +20,24 @@ from typing import TYPE_CHECKING
 from prm9tool.errors import CommunicationError, ExitCode, Prm9Error
 
 if TYPE_CHECKING:
-    from prm9tool.twin.identify import Fit
-    from prm9tool.twin.proof import Side
+    from prm9tool.characterize.run import Characterization
+    from prm9tool.service.twin import ProvenTwin
 
 
 def run(args: argparse.Namespace) -> int:
     """Fit, write the twin file, print the fit report (``--json``: as JSON)."""
-    from prm9tool.twin.fitvalve import fit_report
-
-    sides: list[Side] = []
     if args.fit_from is not None:
-        code, result = _from_report(args)
+        code, proven = _from_report(args)
     else:
-        code, result, sides = _from_valve(args)
-    if result is None:
+        code, proven = _from_valve(args)
+    if proven is None:
         return code
+    result, sides = proven.twin.fit, proven.sides
+    if proven.proof_problem:
+        print(f"prm9tool: the twin could not be characterized: {proven.proof_problem}",
+              file=sys.stderr)  # fmt: skip
     if args.json:
-        summary = fit_report(result, args.fit_twin)
-        if sides:  # the proof: the twin characterized as the valve was
-            summary["comparison"] = [
-                {"figure": s.name, "unit": s.unit, "valve": _number(s.valve),
-                 "twin": _number(s.twin), "ratio": _number(s.ratio)}
-                for s in sides
-            ]  # fmt: skip
-        text = json.dumps(summary, indent=2)
+        text = json.dumps(proven.report(), indent=2)
         if isinstance(args.json, str):  # --json OUT.json: the fit report into that file
             Path(args.json).write_text(text + "\n", encoding="utf-8")
         else:
@@ -63,36 +56,21 @@ def run(args: argparse.Namespace) -> int:
     return ExitCode.OK
 
 
-def _number(value: float) -> float | None:
-    return value if math.isfinite(value) else None  # JSON has no nan
-
-
-def _from_report(args: argparse.Namespace) -> tuple[int, Fit | None]:
-    from prm9tool.twin.fitvalve import write_fitted
-    from prm9tool.twin.identify import from_report
+def _from_report(args: argparse.Namespace) -> tuple[int, ProvenTwin | None]:
+    """The run of a ``--characterize --json`` report read back (its steps, sweep and static
+    characteristic: :mod:`prm9tool.twin.report`), fitted and recorded as ``--device`` does
+    (the twin only: the run was recorded when it was measured), and the side-by-side."""
+    from prm9tool.twin.report import run_of_report
 
     try:
-        report = json.loads(Path(args.fit_from).read_text(encoding="utf-8"))
-        recordings = from_report(args.fit_from)
-        valve = report["valve"]
-        result = write_fitted(
-            args.fit_twin,
-            recordings,
-            int(valve.get("serial") or 0),
-            str(valve["type_key"]),
-            str(valve.get("firmware") or ""),
-            f"{len(recordings)} position-loop steps of {args.fit_from} ({report.get('date', '')})",
-        )
-    except OSError as exc:
-        print(f"prm9tool: cannot read {args.fit_from}: {exc.strerror or exc}", file=sys.stderr)
-        return ExitCode.INVALID_FILE, None
-    except (Prm9Error, KeyError, ValueError) as exc:
+        run = run_of_report(args.fit_from)
+    except Prm9Error as exc:
         print(f"prm9tool: --fit-twin: {exc}", file=sys.stderr)
         return ExitCode.INVALID_FILE, None
-    return ExitCode.OK, result
+    return _fit_run(args, run)
 
 
-def _from_valve(args: argparse.Namespace) -> tuple[int, Fit | None, list[Side]]:
+def _from_valve(args: argparse.Namespace) -> tuple[int, ProvenTwin | None]:
     """Characterize the one valve of ``--device``/``--emulator``, record the run, fit, and
     characterize the twin as the valve was (the side-by-side)."""
     from prm9tool.characterize.frame import LimitExceededError
@@ -101,53 +79,64 @@ def _from_valve(args: argparse.Namespace) -> tuple[int, Fit | None, list[Side]]:
     from prm9tool.cli.batch_devices import BatchError
     from prm9tool.cli.characterize import _profile, _rig
     from prm9tool.cli.history import recorder_for
-    from prm9tool.service.history import record_characterization, record_twin
-    from prm9tool.twin.fitvalve import history_details, history_outcome, twin_of_run
+    from prm9tool.service.history import record_characterization
 
     if not Path(args.fit_twin).parent.is_dir():
         print(f"prm9tool: --fit-twin {args.fit_twin}: there is no folder "
               f"{Path(args.fit_twin).parent}", file=sys.stderr)  # fmt: skip
-        return ExitCode.USAGE, None, []
+        return ExitCode.USAGE, None
     try:
         profile = _profile(args)
         rig, close = _rig(args, "--fit-twin")
     except BatchError as exc:
         print(f"prm9tool: {exc}", file=sys.stderr)
-        return int(exc.code), None, []
+        return int(exc.code), None
     try:
         run = characterize(rig, profile, lambda text: print(f"prm9tool: {text}", file=sys.stderr))
     except (Stopped, LimitExceededError, ValveFaultError, ValueError) as exc:
         print(f"prm9tool: test stopped: {exc}", file=sys.stderr)
-        return ExitCode.OUT_OF_LIMITS, None, []
+        return ExitCode.OUT_OF_LIMITS, None
     except CommunicationError as exc:
         print(f"prm9tool: {exc}", file=sys.stderr)
-        return ExitCode.COMMUNICATION, None, []
+        return ExitCode.COMMUNICATION, None
     except Prm9Error as exc:
         print(f"prm9tool: test stopped: {exc}", file=sys.stderr)
-        return ExitCode.OUT_OF_LIMITS, None, []
+        return ExitCode.OUT_OF_LIMITS, None
     finally:
         close()
     recorder = recorder_for(args)
     try:
         record_characterization(recorder, run)
-        try:
-            twin = twin_of_run(run, args.fit_twin)
-        except OSError as exc:
-            print(f"prm9tool: cannot write {args.fit_twin}: {exc.strerror or exc}", file=sys.stderr)
-            return ExitCode.INVALID_FILE, None, []
-        except Prm9Error as exc:
-            print(f"prm9tool: --fit-twin: {exc}", file=sys.stderr)
-            return ExitCode.INVALID_FILE, None, []
-        details = history_details(twin.fit, twin.path)
-        record_twin(recorder, run, history_outcome(twin.fit), details)
     finally:
         recorder.close()
-    from prm9tool.twin.proof import characterize_twin, side_by_side
+    return _fit_run(args, run)
 
-    print("prm9tool: characterizing the twin as the valve was", file=sys.stderr)
+
+def _fit_run(args: argparse.Namespace, run: Characterization) -> tuple[int, ProvenTwin | None]:
+    """Fit the twin of ``run``, write it, record it, characterize it as the valve was
+    (:func:`prm9tool.service.twin.fit_proven`, as the Tuning window's Twin page)."""
+    import logging
+
+    from prm9tool.cli.history import recorder_for
+    from prm9tool.service.history import HistoryHook
+    from prm9tool.service.twin import fit_proven
+
+    if not Path(args.fit_twin).parent.is_dir():
+        print(f"prm9tool: --fit-twin {args.fit_twin}: there is no folder "
+              f"{Path(args.fit_twin).parent}", file=sys.stderr)  # fmt: skip
+        return ExitCode.USAGE, None
+    log = logging.getLogger("prm9tool.history")
+    recorder = recorder_for(args)
     try:
-        again = characterize_twin(run, twin.path)
-    except (Prm9Error, ValueError) as exc:  # the twin is written; only its proof is missing
-        print(f"prm9tool: the twin could not be characterized: {exc}", file=sys.stderr)
-        return ExitCode.OK, twin.fit, []
-    return ExitCode.OK, twin.fit, side_by_side(run, again)
+        hook = HistoryHook(recorder, lambda problem: log.error("history: %s", problem))
+        proven = fit_proven(run, args.fit_twin, hook,
+                            lambda text: print(f"prm9tool: {text}", file=sys.stderr))  # fmt: skip
+    except OSError as exc:
+        print(f"prm9tool: cannot write {args.fit_twin}: {exc.strerror or exc}", file=sys.stderr)
+        return ExitCode.INVALID_FILE, None
+    except Prm9Error as exc:
+        print(f"prm9tool: --fit-twin: {exc}", file=sys.stderr)
+        return ExitCode.INVALID_FILE, None
+    finally:
+        recorder.close()
+    return ExitCode.OK, proven

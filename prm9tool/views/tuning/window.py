@@ -50,6 +50,7 @@ from prm9tool.views.tuning.progress import TestProgress
 from prm9tool.views.tuning.report_page import ReportPage
 from prm9tool.views.tuning.signature_page import SignaturePage
 from prm9tool.views.tuning.static import FlowPage, StaticPage
+from prm9tool.views.tuning.twin_page import TwinPage
 
 
 class TuningWindow(QDialog):
@@ -91,6 +92,7 @@ class TuningWindow(QDialog):
         self.flow = FlowPage(self) if doc.variant.config is Config.E04 else None
         self.report = ReportPage(self)
         self.signature = SignaturePage(self)  # Compare with birth certificate (issue 31)
+        self.twin = TwinPage(self)  # Fit twin (issue 31)
         self.loop.currentIndexChanged.connect(self._on_loop_changed)
         if doc.variant.config is Config.E04 and doc.value("CTRLMODE") == 4:  # as delivered:
             self.loop.setCurrentIndex(self.loop.findData("process"))  # the loop its setpoint drives
@@ -263,12 +265,14 @@ class TuningWindow(QDialog):
     def pages(self) -> list[Page]:
         """The tabs' pages in order (the flow characteristic on E04 only)."""
         flow = [self.flow] if self.flow is not None else []
-        return [self.autotune, self.bode, self.static, *flow, self.report, self.signature]
+        return [self.autotune, self.bode, self.static, *flow, self.report, self.signature,
+                self.twin]  # fmt: skip
 
     def _on_finished(self, kind: str, result: object) -> None:
         self._say(lambda: self.tr("Done."))
         pages: dict[str, Page] = {"autotune": self.autotune, "bode": self.bode}
-        pages.update(static=self.static, flow=self.flow or self.report, signature=self.signature)
+        pages.update(static=self.static, flow=self.flow or self.report, signature=self.signature,
+                     twin=self.twin)  # fmt: skip
         pages.get(kind, self.report).show_result(result)
         if isinstance(self.runner, ValveRunner):  # the valve moved: into its history
             record_tuning_run(self.connection, kind, result)
@@ -280,6 +284,8 @@ class TuningWindow(QDialog):
         self._say(lambda: self.tr("Stopped: %1").replace("%1", message), failure=True)
         if kind == "signature":  # a refusal (no birth certificate) stays on its page
             self.signature.show_failure(message)
+        elif kind == "twin":
+            self.twin.show_failure(message)
 
     # --- document --------------------------------------------------------------------------------
     def accept_values(self, values: dict[str, int], text: str) -> bool:
@@ -348,7 +354,7 @@ class TuningWindow(QDialog):
         self.mode.setText(mode)
         names = [self.tr("Autotune"), self.tr("Frequency response"),
                  self.tr("Static characteristic"), self.tr("Test report"),
-                 self.tr("Birth certificate")]  # fmt: skip
+                 self.tr("Birth certificate"), self.tr("Twin")]  # fmt: skip
         if self.flow is not None:
             names.insert(3, self.tr("Flow characteristic (E04)"))
         for k, name in enumerate(names):
@@ -366,4 +372,5 @@ class TuningWindow(QDialog):
             self.runner.stop()
         if isinstance(self.runner, SimulationRunner):
             self.runner.wait()
+        self.twin.reports.wait()  # a report's fit writes its twin file first
         super().closeEvent(event)
