@@ -674,18 +674,43 @@ def test_restart_enable_and_disable_over_canopen_are_the_apis(tmp_path, request,
         rig.close()
 
 
-def test_an_enable_the_valve_refuses_has_the_same_words_in_the_api_and_on_the_command_line(
-    capsys,
+@pytest.mark.parametrize(
+    ("serial", "command"),
+    [
+        (7398, []),  # --enable alone
+        (7460, ["--characterize", "--json", "{tmp}/run.json"]),
+        (7461, ["--autotune"]),
+        (7462, ["--signature"]),
+        (7463, ["--fit-twin", "{tmp}/twin.toml"]),
+    ],
+)
+def test_an_enable_the_valve_refuses_has_the_same_words_and_code_at_every_door(
+    capsys, tmp_path, serial, command
 ):
+    # issue 28: --enable alone exited 1 when the valve refused, the same --enable before a
+    # test 6 (communication); one rule (cli/enabling.py): the valve refused, exit 1
     from prm9tool.device.enabling import NotEnabledError
 
-    with prm9tool.connect(f"emulator:{E02_CA}:7398", record_history=False) as valve:
+    with prm9tool.connect(f"emulator:{E02_CA}:{serial}", record_history=False) as valve:
         valve.commission()
         valve.session.emulator.set_fault("COIL_A_OPEN", True)
         wait_for(lambda: str(valve.status().device_state) == "FAULT_HOLD", 10)
         with pytest.raises(NotEnabledError) as api:
             valve.commission()
-    assert main(["--emulator", f"{E02_CA}:7398", "--enable", "--hydraulics-safe"]) == 1
+    args = [a.format(tmp=tmp_path) for a in command]
+    assert main([*args, "--emulator", f"{E02_CA}:{serial}", "--enable", "--hydraulics-safe"]) == 1
     err = capsys.readouterr().err
     assert f"prm9tool: --enable: {api.value}" in err
     assert "error 0x5411 (Solenoid A disconnected) is still present" in err
+    assert list(tmp_path.iterdir()) == []  # no test ran, no report, no twin
+
+
+@pytest.mark.parametrize("command", [[], ["--characterize", "--json", "{tmp}/run.json"]])
+def test_enable_of_a_valve_without_canopen_is_refused_alike_before_a_test(
+    capsys, tmp_path, command
+):
+    args = [a.format(tmp=tmp_path) for a in command]
+    assert main([*args, "--emulator", f"{E02}:7464", "--enable", "--hydraulics-safe"]) == 2
+    err = capsys.readouterr().err
+    assert "prm9tool: --enable: this valve's CANopen is off" in err and "nothing was sent" in err
+    assert list(tmp_path.iterdir()) == []

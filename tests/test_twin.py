@@ -124,7 +124,8 @@ def test_a_characterization_run_is_fitted_from_its_steps(tmp_path):
 
     from prm9tool.analysis.profile import parse_profile
     from prm9tool.characterize.run import characterize, report_data, write_csv_files
-    from prm9tool.twin.identify import from_characterization, from_report
+    from prm9tool.twin.identify import from_characterization
+    from prm9tool.twin.report import run_of_report
 
     truth = replace(PLANT, force_n_per_a=24.0, spool_mass_kg=0.08)
     valve = EmulatedValve(E02, plant=truth)
@@ -152,7 +153,7 @@ def test_a_characterization_run_is_fitted_from_its_steps(tmp_path):
     report = tmp_path / "run.json"
     files = write_csv_files(run, tmp_path / "run")
     report.write_text(json.dumps(report_data(run, files)), encoding="utf-8")
-    again = from_report(report)
+    again = from_characterization(run_of_report(report), joint=False)  # --fit-twin --from's
     assert len(again) == 2 and again[0].type_key == E02
     assert np.abs(again[1].actual - recordings[1].actual).max() < 1e-3  # CSV's 6 digits
     from_file = fit(again, free=("spool_mass_kg", "force_n_per_a", "damping_n_s_per_m"))

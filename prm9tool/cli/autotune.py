@@ -22,6 +22,7 @@ from prm9tool.characterize.frame import LimitExceededError
 from prm9tool.characterize.rig import Stopped, ValveFaultError
 from prm9tool.cli.batch_devices import BatchError
 from prm9tool.cli.characterize import ENABLE_NEEDS_CONFIRMATION
+from prm9tool.cli.enabling import commission
 from prm9tool.cli.json_output import emit_json
 from prm9tool.errors import CommunicationError, ExitCode, Prm9Error
 from prm9tool.service.autotune import AutotuneOutcome
@@ -42,7 +43,7 @@ def run(args: argparse.Namespace) -> int:
     with Valve(session, history_db=args.history_db, command="--autotune") as valve:
         try:
             if args.enable:
-                _commission(valve)
+                commission(valve.service)  # cli/enabling.py: its words and exit code
             outcome = valve.autotune(
                 args.autotune, profile=args.profile or None, apply=args.apply,
                 progress=lambda text: print(f"prm9tool: {text}", file=sys.stderr),
@@ -80,12 +81,3 @@ def summary(outcome: AutotuneOutcome) -> str:
     gains = ", ".join(f"{mn} {outcome.present.get(mn)} → {v}" for mn, v in outcome.proposed.items())
     state = "applied and stored" if outcome.applied else "not applied"
     return f"{outcome.loop} loop: {gains} (raw; {state})\n{outcome.verdict()}"
-
-
-def _commission(valve: Valve) -> None:
-    print("prm9tool: enabling the valve: NMT start, control word 08h → 09h → 0Bh → 0Fh",
-          file=sys.stderr)  # fmt: skip
-    try:
-        valve.service.commission()
-    except Prm9Error as exc:
-        raise BatchError(ExitCode.COMMUNICATION, f"--enable: {exc}") from exc

@@ -153,17 +153,11 @@ ENABLE_NEEDS_CONFIRMATION = (
 
 
 def _commission(session: ValveSession) -> None:
-    """NMT start (when it waits) and the enable sequence, saying so on standard error."""
+    """``--enable`` before the test (``cli/enabling.py``: its words and exit code)."""
+    from prm9tool.cli.enabling import commission
     from prm9tool.service.valve import service_for
 
-    print(
-        "prm9tool: enabling the valve: NMT start, control word 08h → 09h → 0Bh → 0Fh",
-        file=sys.stderr,
-    )
-    try:
-        service_for(session).commission()
-    except Prm9Error as exc:
-        raise BatchError(ExitCode.COMMUNICATION, f"--enable: {exc}") from exc
+    commission(service_for(session))
 
 
 def _write(result: Characterization, outputs: tuple[Path | None, Path | None]) -> None:

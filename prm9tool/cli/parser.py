@@ -10,7 +10,7 @@ from prm9tool.errors import ExitCode
 EXIT_CODE_TEXT = {
     ExitCode.OK: "done: every valve uploaded and verified (or listed, downloaded, file valid)",
     ExitCode.VERIFY_FAILED: "a valve read back differently, refused a value or the store; "
-    "nothing stored",
+    "nothing stored; --enable: the valve refused to be enabled",
     ExitCode.USAGE: "usage error (options, several valves and no selection, ...)",
     ExitCode.INVALID_FILE: "invalid *.prm file (or --download cannot write its file)",
     ExitCode.NO_DEVICE: "no valve found, or none with the --device ID",

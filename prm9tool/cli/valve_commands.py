@@ -10,7 +10,8 @@ valve follow its setpoint (NMT start when it waits, then the control word 08h �
 0Fh, as ``--characterize --enable``), ``--disable`` takes it back to INIT (0Fh → 0Bh → 09h →
 08h). The restart and the factory reset are recorded in the history as the window records
 them (``restart`` and ``restore-factory``, with the set read back after); ``--json [OUT.json]``
-for what happened. Exit codes as ``--batch`` (docs/batch.md). No Qt.
+for what happened. Exit codes as ``--batch`` (docs/batch.md); a failed ``--enable`` or
+``--disable`` as ``cli/enabling.py`` rules for every ``--enable``. No Qt.
 """
 
 from __future__ import annotations
@@ -22,10 +23,12 @@ from typing import Any
 
 from prm9tool.api.params import display
 from prm9tool.api.valve import Valve
+from prm9tool.cli.batch_devices import BatchError
+from prm9tool.cli.enabling import commission, exit_code_of, takes_control_word
 from prm9tool.cli.json_output import emit_json
 from prm9tool.cli.values import _one_session
 from prm9tool.device.records import Value, ValveStatus
-from prm9tool.errors import CommunicationError, ExitCode, Prm9Error
+from prm9tool.errors import ExitCode, Prm9Error
 
 # the options, in the order usage_problem names them, and the attribute each sets
 COMMANDS = {"--restart": "restart", "--restore-factory": "restore_factory",
@@ -50,16 +53,6 @@ DISABLE_WARNING = (
 )
 WARNINGS = {"restart": RESTART_WARNING, "restore_factory": FACTORY_WARNING,
             "enable": ENABLE_WARNING, "disable": DISABLE_WARNING}  # fmt: skip
-
-
-NO_CONTROL_WORD = (
-    "this valve's CANopen is off (a valve without -CA, or CANopen switched off): it enables "
-    "itself when it is ready and takes no control word (manual §7.4); nothing was sent"
-)
-
-
-class NoControlWordError(Prm9Error):
-    """``--enable``/``--disable`` of a valve that is not a CANopen slave (NMT off)."""
 
 
 def command_of(args: argparse.Namespace) -> str | None:
@@ -88,15 +81,12 @@ def run(args: argparse.Namespace) -> int:
     with Valve(session, history_db=args.history_db, command=flag) as valve:
         try:
             report, lines = _run(flag, valve)
-        except NoControlWordError as exc:
+        except BatchError as exc:  # --enable: cli/enabling.py's words and exit code
+            print(f"prm9tool: {exc}", file=sys.stderr)
+            return int(exc.code)
+        except Prm9Error as exc:  # the same rule: 2 CANopen off, 6 the link, 1 the valve refused
             print(f"prm9tool: {flag}: {exc}", file=sys.stderr)
-            return ExitCode.USAGE
-        except CommunicationError as exc:
-            print(f"prm9tool: {flag}: {exc}", file=sys.stderr)
-            return ExitCode.COMMUNICATION
-        except Prm9Error as exc:  # the valve refused: not enabled (a fault), an SDO abort
-            print(f"prm9tool: {flag}: {exc}", file=sys.stderr)
-            return ExitCode.VERIFY_FAILED
+            return exit_code_of(exc)
         if args.json:
             text = json.dumps({"device": valve.info.to_dict(), **report}, indent=2)
             return emit_json(text, args.json) or ExitCode.OK
@@ -108,8 +98,8 @@ def run(args: argparse.Namespace) -> int:
 def _run(flag: str, valve: Valve) -> tuple[dict[str, Any], list[str]]:
     """Run ``flag`` through the valve service: the JSON report and the lines to print."""
     service = valve.service
-    if flag in ("--enable", "--disable") and str(service.wait_booted().nmt_state) in ("off", ""):
-        raise NoControlWordError(NO_CONTROL_WORD)
+    if flag in ("--enable", "--disable"):
+        takes_control_word(service)  # CANopen off: refused, nothing sent (exit 2)
     print(f"prm9tool: {flag}: {WARNINGS[COMMANDS[flag]]}", file=sys.stderr)
     if flag == "--restart":
         values = service.restart_and_read()  # the window's Restart valve (recorded)
@@ -128,7 +118,7 @@ def _run(flag: str, valve: Valve) -> tuple[dict[str, Any], list[str]]:
                   "values": _shown(valve, values)}  # fmt: skip
         return report, said
     if flag == "--enable":
-        status = service.commission()  # NMT start when it waits, then 08h → 09h → 0Bh → 0Fh
+        status = commission(service, say=False)  # NMT start when it waits, then 08h … 0Fh
         return {"operation": "enable", "status": status.to_dict()}, [_state(status)]
     service.disable()
     status = service.status()

@@ -23,7 +23,6 @@ from __future__ import annotations
 import math
 from collections.abc import Sequence
 from dataclasses import dataclass, field, fields, replace
-from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
 import numpy as np
@@ -626,48 +625,6 @@ def from_characterization(run: Characterization, joint: bool = True) -> list[Ste
                 for level in levels
             ]
             out += _windows(triangle, centres, STATIC_LEAD_S)
-    return out
-
-
-def from_report(path: str | Path) -> list[Steps]:
-    """The position-loop steps of a characterization's JSON report (``--characterize --json``
-    with its CSV files, the ``-step-<a>.csv`` ones), as :func:`from_characterization` takes
-    them from the run in memory. CSV paths are taken as written, else next to the report."""
-    import csv
-    import json
-
-    where = Path(path)
-    try:
-        report = json.loads(where.read_text(encoding="utf-8"))
-        valve, rate = report["valve"], float(report["sample_rate_hz"])
-        type_key, parameters, files = valve["type_key"], report["parameters"], report["csv"]
-    except OSError as exc:
-        raise Prm9Error(f"cannot read the report {where}: {exc.strerror or exc}") from None
-    except (ValueError, KeyError, TypeError) as exc:
-        raise Prm9Error(f"{where}: not a characterization report ({exc})") from None
-    lp = LOOPS["position"]
-    out = []
-    for name in files:
-        if "-step-" not in Path(name).name:
-            continue
-        csv_path = Path(name) if Path(name).exists() else where.parent / Path(name).name
-        try:
-            with csv_path.open(encoding="utf-8", newline="") as stream:
-                rows = list(csv.reader(stream))
-        except OSError as exc:
-            raise Prm9Error(f"cannot read {csv_path}: {exc.strerror or exc}") from None
-        head = rows[0]
-        if lp.setpoint not in head or lp.actual not in head:
-            continue  # a process-loop step
-        table = np.array(rows[1:], dtype=float)
-        demand = table[:, head.index(lp.setpoint)]
-        actual = table[:, head.index(lp.actual)]
-        if not (np.isfinite(demand).all() and np.isfinite(actual).all()):
-            continue
-        values = _with_mode(type_key, parameters, str(report.get("loop", "position")))
-        out.append(Steps(type_key, values, demand, actual, rate, demand=True))
-    if not out:
-        raise Prm9Error(f"{where}: no complete position-loop step to fit (its CSV files?)")
     return out
 
 
