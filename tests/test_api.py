@@ -176,7 +176,7 @@ def test_record_history_false_records_nothing(tmp_path):
         valve.characterize(tmp_path / "quick.toml")
         valve.upload(valve.download(), backup=False)  # a backup file becomes a record when
         valve.store()  # a history is first opened (the import of old backups)
-        valve.restore_factory(backup=False)
+        valve.restore_factory(confirm_hydraulics_off=True, backup=False)
     assert prm9tool.history.records(4712) == []
 
 
@@ -185,7 +185,7 @@ def test_store_and_factory_reset_are_recorded_as_the_gui_records_them(valve):
 
     valve["LIMTA"] = 1900
     valve.store()
-    valve.restore_factory()
+    valve.restore_factory(only_reset=True)
     records = prm9tool.history.records(4711)
     assert [r["operation"] for r in records] == ["store", "backup", "restore-factory"]
     store = Recorder().store()
@@ -242,9 +242,23 @@ def test_parameter_set_checks_values_and_round_trips(tmp_path):
 def test_restart_needs_the_hydraulics_confirmed(valve):
     with pytest.raises(AccessDeniedError, match="confirm_hydraulics_off=True"):
         valve.restart()
-    valve.restore_factory()
+    assert valve.restore_factory(only_reset=True) is None  # nothing moves: no question
     valve.restart(confirm_hydraulics_off=True)
     assert valve["LIMTA"] == 2400
+
+
+def test_restore_factory_restarts_like_the_window_and_needs_the_hydraulics_confirmed(valve):
+    # issue 28: the API's restore_factory() only reset, --restore-factory and the window
+    # reset, restart and read the factory set back; now the API too, asking first
+    valve["LIMTA"] = 1900
+    valve.store()
+    with pytest.raises(AccessDeniedError, match=r"restore_factory\(confirm_hydraulics_off=True\)"):
+        valve.restore_factory()
+    assert valve["LIMTA"] == 1900  # nothing sent
+    assert [r["operation"] for r in prm9tool.history.records(4711)] == ["store"]
+    factory = valve.restore_factory(confirm_hydraulics_off=True)
+    assert factory is not None and factory["LIMTA"] == 2400 == valve["LIMTA"]  # effective now
+    assert dict(factory.raw) == dict(valve.download().raw)
 
 
 def test_nmt_enable_generator_and_capture(valve):

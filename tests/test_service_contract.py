@@ -351,7 +351,7 @@ def test_download_store_factory_values_and_restart_are_the_same_at_every_door(
         api_values = dict(valve.download().raw)
         valve["LIMTA"] = 1700
         valve.store()
-        valve.restore_factory(backup=False)
+        api_factory = dict(valve.restore_factory(confirm_hydraulics_off=True, backup=False).raw)
         valve.restart(confirm_hydraulics_off=True)
         api_after = dict(valve.download().raw)
     out = tmp_path / "7342.prm"  # the command line
@@ -364,10 +364,11 @@ def test_download_store_factory_values_and_restart_are_the_same_at_every_door(
     gui_values = _gui_job(qtbot, connection, connection.download, "download")
     connection.write("LIMTA", 1700)
     _gui_job(qtbot, connection, connection.store_valve, "store")
-    _gui_job(qtbot, connection, lambda: connection.factory_reset("factory"), "factory")
+    gui_factory, _ = _gui_job(qtbot, connection, lambda: connection.factory_reset("f"), "f")
     gui_after = _gui_job(qtbot, connection, lambda: connection.restart_valve("restart"), "restart")
 
     assert api_values == cli_values == dict(gui_values)  # the same set, read three ways
+    assert api_factory == dict(gui_factory) == api_values  # restarted and read back at both
     assert api_after == dict(gui_after) == api_values and api_after["LIMTA"] == 2400
     stores = {s: [r for r in prm9tool.history.records(s) if r["operation"] == "store"]
               for s in (7341, 7342, 7343)}  # fmt: skip
@@ -385,6 +386,7 @@ def test_download_store_factory_values_and_restart_are_the_same_at_every_door(
     assert [r["operation"] for r in api_records] == ["restore-factory", "restart"]
     assert [r["operation"] for r in gui_records] == ["restore-factory", "restart"]
     assert set(api_records[0]["details"]) - {"command"} == set(gui_records[0]["details"])
+    assert _parameters(api_records[0]["id"]) == _parameters(gui_records[0]["id"])  # the set
 
 
 def test_a_diff_against_a_file_is_the_same_in_the_api_and_on_the_command_line(capsys, tmp_path):
@@ -548,7 +550,7 @@ def _records(serial, *operations):
 def test_restart_and_factory_values_on_the_command_line_are_the_windows(qtbot, connection, capsys):
     # --restart and --restore-factory run the window's operations of the valve service
     # (restart_and_read, factory_reset_and_read) and record as the window does
-    for serial in (7391, 7392):  # a value that the factory reset takes back
+    for serial in (7391, 7392, 7465):  # a value that the factory reset takes back
         assert main(["--emulator", f"{E02}:{serial}", "--set", "LIMTA=1700", "--store"]) == 0
     capsys.readouterr()
     cli = ["--emulator", f"{E02}:7391", "--hydraulics-safe", "--json"]
@@ -577,6 +579,16 @@ def test_restart_and_factory_values_on_the_command_line_are_the_windows(qtbot, c
         assert set(mine["details"]) - {"command"} == set(theirs["details"]) - {"command"}
         assert _parameters(mine["id"]) == _parameters(theirs["id"])  # the set read back
     assert cli_records[1]["details"]["command"] == "--restart"
+    # the API's restore_factory() is the same operation: reset, restart, the set read back
+    with prm9tool.connect(f"emulator:{E02}:7465") as valve:
+        with pytest.raises(AccessDeniedError, match="a restart moves the spool"):
+            valve.restore_factory()  # the hydraulics question, as --hydraulics-safe
+        assert valve["LIMTA"] == 1700  # nothing sent
+        api_factory = valve.restore_factory(confirm_hydraulics_off=True)
+    assert api_factory is not None and dict(api_factory.raw) == gui_factory
+    (api_record,) = _records(7465, "restore-factory")
+    assert set(api_record["details"]) - {"command"} == set(cli_records[0]["details"]) - {"command"}
+    assert _parameters(api_record["id"]) == _parameters(cli_records[0]["id"])
 
 
 @pytest.mark.parametrize(

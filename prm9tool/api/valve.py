@@ -204,11 +204,35 @@ class Valve:
         as the GUI's Valve → Store is: with the set read back after the store."""
         self._service.store()
 
-    def restore_factory(self, *, backup: bool = True) -> None:
-        """Reset the stored parameters to the factory values; they take effect at the next
-        :meth:`restart`. ``backup``: first save the valve's parameters as its backup file,
-        unless it has one (as the GUI does)."""
-        self._service.restore_factory(backup)
+    def restore_factory(
+        self,
+        *,
+        confirm_hydraulics_off: bool = False,
+        only_reset: bool = False,
+        backup: bool = True,
+    ) -> ParameterSet | None:
+        """Restore the factory values as the window (online) and ``--restore-factory`` do:
+        first save the valve's parameters as its backup file, unless it has one; reset the
+        stored parameters to the factory values; restart the valve, which makes them
+        effective; return the factory set read back (as :meth:`download`). The restart moves
+        the spool to its rest position: only with the hydraulics off, which the caller
+        confirms with ``confirm_hydraulics_off=True`` (AccessDeniedError without it, nothing
+        sent). ``only_reset=True``: only the reset (nothing moves, no confirmation needed;
+        the valve runs on its old set until :meth:`restart`); returns None."""
+        if not (confirm_hydraulics_off or only_reset):
+            raise AccessDeniedError(
+                "restore_factory() restarts the valve to make the factory values effective, "
+                "and a restart moves the spool to its rest position: switch the hydraulics off "
+                "and call restore_factory(confirm_hydraulics_off=True), or "
+                "restore_factory(only_reset=True) to reset now and restart() later"
+            )
+        values, _path = self._service.restore_factory(backup=backup, restart=not only_reset)
+        if values is None:
+            return None
+        info = self.info
+        return ParameterSet(
+            info.type_key, values, serial=info.serial, firmware=info.firmware or None
+        )
 
     def restart(self, *, confirm_hydraulics_off: bool = False) -> None:
         """Restart the valve's electronics and reconnect. The spool moves to its rest position

@@ -107,7 +107,7 @@ def _run(flag: str, valve: Valve) -> tuple[dict[str, Any], list[str]]:
         said += _after_restart(service.wait_booted())
         return {"operation": "restart", "values": _shown(valve, values)}, said
     if flag == "--restore-factory":
-        values, backup = service.factory_reset_and_read()  # the window's, online (recorded)
+        factory, backup = service.restore_factory()  # the window's, online (recorded)
         kept = (
             f"the valve's previous parameters are in {backup}"
             if backup is not None
@@ -115,7 +115,7 @@ def _run(flag: str, valve: Valve) -> tuple[dict[str, Any], list[str]]:
         )
         said = [f"factory values restored; {kept}", *_after_restart(service.wait_booted())]
         report = {"operation": "restore-factory", "backup": None if backup is None else str(backup),
-                  "values": _shown(valve, values)}  # fmt: skip
+                  "values": _shown(valve, factory or {})}  # fmt: skip
         return report, said
     if flag == "--enable":
         status = commission(service, say=False)  # NMT start when it waits, then 08h … 0Fh

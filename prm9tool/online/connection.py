@@ -285,7 +285,7 @@ class ValveConnection(QObject):
     def factory_reset(self, tag: str) -> None:
         """Backup, restore the factory values, restart (hydraulics confirmed off), read back;
         result: operation_finished(tag, (values, backup path or None))."""
-        self._long_job(tag, lambda s: self.service(s).factory_reset_and_read())
+        self._long_job(tag, lambda s: self.service(s).restore_factory())
 
     def run_job(self, name: str, work: Callable[[ValveSession], object]) -> None:
         """Run ``work(session)`` as a long operation; result: operation_finished(name, …)."""
@@ -305,10 +305,6 @@ class ValveConnection(QObject):
     def cancel(self) -> None:
         """Ask the running long operation to stop at the next safe point."""
         self._worker.cancel.set()
-
-    def restore_factory(self) -> None:
-        """Reset the valve to its factory values; result: operation_finished("restore_factory")."""
-        self._long_job("restore_factory", lambda s: self.service(s).restore_factory(False))
 
     def restart(self) -> None:
         """Restart the valve electronics; result: operation_finished("restart", None)."""

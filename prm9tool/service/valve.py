@@ -283,15 +283,27 @@ class ValveService:
             self.history.backup(self.session, path)
         return path
 
-    def restore_factory(self, backup: bool = True) -> Path | None:
-        """Reset the stored parameters to the factory values (they take effect at the next
-        restart), after the backup; recorded without a parameter set."""
+    def restore_factory(
+        self, *, backup: bool = True, restart: bool = True
+    ) -> tuple[dict[str, Value] | None, Path | None]:
+        """Restore factory values, the one operation of every door (the window's online,
+        ``--restore-factory``, the API's ``restore_factory()``): the backup (as before the
+        first upload; recorded), the stored parameters reset to the factory values, then the
+        restart that makes them effective (the caller confirmed that the hydraulics are off)
+        and the factory set read back. Returns that set and the new backup file (None: it had
+        one, or ``backup`` is False); recorded as ``restore-factory`` with the set read back.
+        ``restart=False``: only the reset (nothing moves; the valve runs on its old set until
+        a :meth:`restart`): returns no set, recorded without one."""
         path = self.backup() if backup else None
         self.session.restore_factory()
+        values: dict[str, Value] | None = None
+        if restart:
+            self._restart()
+            values = dict(self.session.download())
         if self.history is not None:
             details: Details = {"backup": None if path is None else str(path)}
-            self.history.add(self.session, "restore-factory", "ok", None, details)
-        return path
+            self.history.add(self.session, "restore-factory", "ok", values, details)
+        return values, path
 
     def restart(self, command: str | None = None) -> None:
         """Restart the valve's electronics and reconnect (the caller confirmed that the
@@ -316,22 +328,6 @@ class ValveService:
         values = dict(self.session.download())
         self._record_restart(values, command)
         return values
-
-    def factory_reset_and_read(self) -> tuple[dict[str, Value], Path | None]:
-        """The window's Restore factory values online: the backup (as before the first
-        upload), the reset, the restart that makes it effective (hydraulics confirmed off),
-        and the factory set read back; returns it and the new backup file (None: it had
-        one); recorded with the set read back (the record of :meth:`restore_factory`)."""
-        from prm9tool.files.backup import ensure_backup  # *.prm writing, only when needed
-
-        path = ensure_backup(self.session)
-        self.session.restore_factory()
-        self._restart()
-        values = dict(self.session.download())
-        if self.history is not None:
-            details: Details = {"backup": None if path is None else str(path)}
-            self.history.add(self.session, "restore-factory", "ok", values, details)
-        return values, path
 
     # --- motion ---------------------------------------------------------------------------
     def characterize(
