@@ -56,10 +56,19 @@ def test_every_python_block_runs(tmp_path, monkeypatch):
     assert "[('LIMTA', 1800, 1700), ('DYNFREQ', 80, 120)]" in shown
     assert any(line.startswith("the file is for PRM9-06.3Z11/30-24E04S02-CA") for line in shown)
     assert any("confirm_hydraulics_off=True" in line for line in shown)
-    history = [line.split()[1:] for line in shown[-7:]]
+    assert "2400 2400" in shown  # restore_factory() restarted: the factory set is effective
+    history = [line.split()[1:] for line in shown[-8:]]
     assert history == [
         [operation, "ok", "python", "API"]
-        for operation in ("backup", "upload", "download", "store", "restore-factory", "restart")
+        for operation in (
+            "backup",
+            "upload",
+            "download",
+            "store",
+            "restore-factory",
+            "restore-factory",
+            "restart",
+        )  # with restart, then only_reset=True
     ] + [["characterization", "passed", "python", "API"]]  # the end-of-line test is recorded
 
 
