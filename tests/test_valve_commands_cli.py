@@ -53,3 +53,15 @@ def test_disable_of_a_valve_without_canopen_is_refused_in_words(capsys):
     assert main(args) == ExitCode.USAGE
     err = capsys.readouterr().err
     assert err.startswith("prm9tool: --disable: this valve's CANopen is off")
+
+
+def test_one_rule_for_the_exit_code_of_an_enable_that_fails():
+    # issue 28: a refusal by the valve is not a communication error, alone or before a test
+    from prm9tool.cli.enabling import NoControlWordError, exit_code_of
+    from prm9tool.device.enabling import NotEnabledError
+    from prm9tool.errors import AbortCode, DeviceTimeoutError, SdoAbortError
+
+    assert exit_code_of(NotEnabledError("the valve stays in FAULT_HOLD")) == ExitCode.VERIFY_FAILED
+    assert exit_code_of(SdoAbortError(0x6040, 0, AbortCode.GENERAL_ERROR)) == 1
+    assert exit_code_of(NoControlWordError("CANopen off")) == ExitCode.USAGE
+    assert exit_code_of(DeviceTimeoutError("no SDO answer for 0x6040/0")) == 6
