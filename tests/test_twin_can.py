@@ -105,37 +105,16 @@ def test_a_manual_only_can_valve_is_identified_twinned_and_compared(
     assert fit["explained"], fit  # exact samples: the plant structure explains them
     force = next(c for c in fit["constants"] if c["constant"] == "force_n_per_a")
     assert force["determined"] and force["value"] == pytest.approx(24.0, rel=0.05), force
-    # The twin is judged against its own plant on the proof's rig (the emulator's: 5 kHz, the
-    # override), what the fit had to find. The valve's column is measured over CAN, and some
-    # figures depend on the link: the hysteresis of a 4 s triangle reads 1.84 % over CAN (the
-    # setpoint in RPDO1 takes effect at the SYNC whose TPDO1 still shows the state before it,
-    # one sample per 1 ms) for 1.21 % on the proof's rig, and a sweep the master lost samples
-    # of reads its −3 dB frequency lower (22.4 Hz for 24.5 Hz on a loaded run): docs/twin.md.
-    truth = {f.name: f.value for f in characterize_twin_plant(VARIED, tmp_path)}
+    # The proof ran over the valve's kind of link (an emulated -CA twin with only the manual's
+    # objects on a CAN bus of its own, through the CAN master at the valve's 1 ms SYNC): the
+    # figures that depend on the link (the hysteresis of a 4 s triangle: 1.84 % over CAN for
+    # 1.21 % on the emulator's 5 kHz rig) are compared like with like, within the issue's targets.
+    assert fit["comparison_link"].startswith("CANopen node"), fit["comparison_link"]
+    assert "TPDO1 at the tool's SYNC, one sample per 1 ms" in fit["comparison_link"]
     for name, within in (("step_25_overshoot_pct", 1.0), ("static_dead_band_pct", 0.2),
                          ("static_hysteresis_pct", 0.2)):  # fmt: skip
-        assert proof[name]["twin"] == pytest.approx(truth[name], abs=within), (name, proof[name])
-    assert proof["bode_bandwidth_hz"]["twin"] == pytest.approx(
-        truth["bode_bandwidth_hz"], rel=0.05
-    ), proof["bode_bandwidth_hz"]
-    # what the link does not change, the valve's own figures over CAN show alike
-    for name, within in (("step_25_overshoot_pct", 1.0), ("static_dead_band_pct", 0.2)):
         assert proof[name]["twin"] == pytest.approx(proof[name]["valve"], abs=within), proof[name]
-    if stepper.lost == 0:  # a sweep the master lost no sample of
+    twin_lost = any("lost" in note for note in fit["comparison_notes"])
+    if stepper.lost == 0 and not twin_lost:  # sweeps neither side lost samples of (a lost
+        # sample reads the −3 dB frequency lower: 22.4 Hz for 24.5 Hz on a loaded run)
         assert proof["bode_bandwidth_hz"]["ratio"] == pytest.approx(1.0, abs=0.05), proof
-
-
-def characterize_twin_plant(plant, tmp_path):
-    """The figures of ``plant`` on the rig the proof characterizes a twin on (the emulator's
-    own, commissioned as :func:`prm9tool.twin.proof.characterize_twin` does)."""
-    from prm9tool.analysis.profile import load_profile
-    from prm9tool.characterize.rig import EmulatorRig
-    from prm9tool.characterize.run import characterize
-
-    valve = EmulatedValve(E02_CA, 4402, nv_path=tmp_path / "4402.json", od="manual", plant=plant)
-    valve.advance(BOOT_S)
-    valve.nmt_command(NmtCommand.START)
-    word = CATALOGUE["CONTROLWORD"]
-    for value in ENABLE_SEQUENCE:
-        valve.write(word.index, word.subindex, value)
-    return characterize(EmulatorRig(valve), load_profile(tmp_path / "short.toml")).figures
