@@ -70,9 +70,15 @@ def manual_only_valve(request, tmp_path, monkeypatch):
 
 
 def test_a_manual_only_can_valve_is_identified_twinned_and_compared(
-    manual_only_valve, tmp_path, capsys
+    manual_only_valve, tmp_path, capsys, monkeypatch
 ):
+    from prm9tool.twin import proof as proof_module
+
     stepper = manual_only_valve
+    dictionaries = []  # the object dictionary the proof gave the twin
+    told = proof_module.object_dictionary
+    monkeypatch.setattr(proof_module, "object_dictionary",
+                        lambda run: dictionaries.append(told(run)) or dictionaries[-1])  # fmt: skip
     rig = stepper.rig
     (tmp_path / "short.toml").write_text(PROFILE, encoding="utf-8")
     out, report = tmp_path / "twin.toml", tmp_path / "fit.json"
@@ -110,6 +116,7 @@ def test_a_manual_only_can_valve_is_identified_twinned_and_compared(
     # figures that depend on the link (the hysteresis of a 4 s triangle: 1.84 % over CAN for
     # 1.21 % on the emulator's 5 kHz rig) are compared like with like, within the targets.
     assert fit["comparison_link"].startswith("CANopen node"), fit["comparison_link"]
+    assert dictionaries == ["manual"]  # as the valve: only the manual's objects
     assert "TPDO1 at the tool's SYNC, one sample per 1 ms" in fit["comparison_link"]
     for name, within in (("step_25_overshoot_pct", 1.0), ("static_dead_band_pct", 0.2),
                          ("static_hysteresis_pct", 0.2)):  # fmt: skip
