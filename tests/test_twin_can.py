@@ -13,6 +13,7 @@ the tool's SYNC, TPDO1, ``--fit-twin --device can:10``, only the manual's object
 from __future__ import annotations
 
 import json
+import re
 from dataclasses import replace
 
 import can
@@ -121,7 +122,17 @@ def test_a_manual_only_can_valve_is_identified_twinned_and_compared(
     for name, within in (("step_25_overshoot_pct", 1.0), ("static_dead_band_pct", 0.2),
                          ("static_hysteresis_pct", 0.2)):  # fmt: skip
         assert proof[name]["twin"] == pytest.approx(proof[name]["valve"], abs=within), proof[name]
-    twin_lost = any("lost" in note for note in fit["comparison_notes"])
-    if stepper.lost == 0 and not twin_lost:  # sweeps neither side lost samples of (a lost
-        # sample reads the −3 dB frequency lower: 22.4 Hz for 24.5 Hz on a loaded run)
+    if lost <= LOST_SHARE and lost_share(fit["comparison_notes"]) <= LOST_SHARE:  # neither
+        # side's master lost many samples (a sweep that lost more read its −3 dB frequency
+        # lower: 22.4 Hz for 24.5 Hz on a loaded run)
         assert proof["bode_bandwidth_hz"]["ratio"] == pytest.approx(1.0, abs=0.05), proof
+
+
+def lost_share(notes):
+    """The share of its sweep's samples the twin's run lost, from its notes ("frequency
+    response: 39 of 3000 samples lost on the link, …"; none: 0)."""
+    for note in notes:
+        found = re.search(r"(\d+) of (\d+) samples lost", note)
+        if found:
+            return int(found[1]) / int(found[2])
+    return 0.0
