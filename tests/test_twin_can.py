@@ -1,11 +1,13 @@
 """Issue 31 "done means": a valve on CAN with only the manual's objects is identified, twinned
 and compared — ``prm9tool --fit-twin OUT.toml --device can:10`` characterizes it at the bus's
 SYNC pace (the setpoint in RPDO1: such a valve has no override), fits the twin from that run
-and characterizes the twin as the valve was.
+and characterizes the twin as the valve was: over CAN too (an emulated -CA twin with only the
+manual's objects on a bus of its own, through the CAN master at the run's 1 ms SYNC), so the
+side-by-side compares valve and twin, not two links.
 
-The valve is emulated in this process, stepped by the master's SYNC (``SyncStepper``: one
-sample period of its firmware after each SYNC it answers) rather than paced to the wall
-clock: paced, its firmware runs in batches of 2–10 ms, so several SYNCs of 1 ms found the same
+The valve is emulated in this process, stepped by the master's SYNC (``SyncStepper`` of
+:mod:`prm9tool.twin.syncstep`, as the proof's twin is: one sample period of its firmware
+after each SYNC it answers) rather than paced to the wall clock: paced, its firmware runs in batches of 2–10 ms, so several SYNCs of 1 ms found the same
 state and the fit saw repeated samples no real valve gives (0.26–0.31 % rms). Stepped, each
 sample is the valve at its SYNC's time and the master's path is the real one: SDO, RPDO1 at
 the tool's SYNC, TPDO1, ``--fit-twin --device can:10``, only the manual's objects."""
