@@ -9,8 +9,9 @@ The valve is emulated in this process, stepped by the master's SYNC (``SyncStepp
 :mod:`prm9tool.twin.syncstep`, as the proof's twin is: one sample period of its firmware
 after each SYNC it answers) rather than paced to the wall clock: paced, its firmware runs in
 batches of 2–10 ms, so several SYNCs of 1 ms found the same state and the fit saw repeated
-samples no real valve gives (0.26–0.31 % rms). Stepped, each sample is the valve at its SYNC's time and the master's path is the real one: SDO, RPDO1 at
-the tool's SYNC, TPDO1, ``--fit-twin --device can:10``, only the manual's objects."""
+samples no real valve gives (0.26–0.31 % rms). Stepped, each sample is the valve at its
+SYNC's time and the master's path is the real one: SDO, RPDO1 at the tool's SYNC, TPDO1,
+``--fit-twin --device can:10``, only the manual's objects."""
 
 from __future__ import annotations
 
