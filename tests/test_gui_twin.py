@@ -78,6 +78,7 @@ def test_offline_the_valve_is_asked_for_and_a_report_is_fitted(qtbot, tmp_path, 
     text = page.result.text()
     assert text.startswith(f"Twin written to {out} and recorded in the history."), text
     assert "sweep" in text and "static characteristic" in text  # the whole run fitted
+    assert "The twin was characterized over: emulator" in text  # the proof says its link
     constants = _rows(page.constants)
     assert constants["force_n_per_a"][3] == "determined"
     assert float(constants["force_n_per_a"][2]) == pytest.approx(24.0, rel=0.05)

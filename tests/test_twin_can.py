@@ -1,18 +1,22 @@
 """Issue 31 "done means": a valve on CAN with only the manual's objects is identified, twinned
 and compared — ``prm9tool --fit-twin OUT.toml --device can:10`` characterizes it at the bus's
 SYNC pace (the setpoint in RPDO1: such a valve has no override), fits the twin from that run
-and characterizes the twin as the valve was.
+and characterizes the twin as the valve was: over CAN too (an emulated -CA twin with only the
+manual's objects on a bus of its own, through the CAN master at the run's 1 ms SYNC), so the
+side-by-side compares valve and twin, not two links.
 
-The valve is emulated in this process, stepped by the master's SYNC (``SyncStepper``: one
-sample period of its firmware after each SYNC it answers) rather than paced to the wall
-clock: paced, its firmware runs in batches of 2–10 ms, so several SYNCs of 1 ms found the same
-state and the fit saw repeated samples no real valve gives (0.26–0.31 % rms). Stepped, each
-sample is the valve at its SYNC's time and the master's path is the real one: SDO, RPDO1 at
-the tool's SYNC, TPDO1, ``--fit-twin --device can:10``, only the manual's objects."""
+The valve is emulated in this process, stepped by the master's SYNC (``SyncStepper`` of
+:mod:`prm9tool.twin.syncstep`, as the proof's twin is: one sample period of its firmware
+after each SYNC it answers) rather than paced to the wall clock: paced, its firmware runs in
+batches of 2–10 ms, so several SYNCs of 1 ms found the same state and the fit saw repeated
+samples no real valve gives (0.26–0.31 % rms). Stepped, each sample is the valve at its
+SYNC's time and the master's path is the real one: SDO, RPDO1 at the tool's SYNC, TPDO1,
+``--fit-twin --device can:10``, only the manual's objects."""
 
 from __future__ import annotations
 
 import json
+import re
 from dataclasses import replace
 
 import can
@@ -70,9 +74,15 @@ def manual_only_valve(request, tmp_path, monkeypatch):
 
 
 def test_a_manual_only_can_valve_is_identified_twinned_and_compared(
-    manual_only_valve, tmp_path, capsys
+    manual_only_valve, tmp_path, capsys, monkeypatch
 ):
+    from prm9tool.twin import proof as proof_module
+
     stepper = manual_only_valve
+    dictionaries = []  # the object dictionary the proof gave the twin
+    told = proof_module.object_dictionary
+    monkeypatch.setattr(proof_module, "object_dictionary",
+                        lambda run: dictionaries.append(told(run)) or dictionaries[-1])  # fmt: skip
     rig = stepper.rig
     (tmp_path / "short.toml").write_text(PROFILE, encoding="utf-8")
     out, report = tmp_path / "twin.toml", tmp_path / "fit.json"
@@ -105,37 +115,27 @@ def test_a_manual_only_can_valve_is_identified_twinned_and_compared(
     assert fit["explained"], fit  # exact samples: the plant structure explains them
     force = next(c for c in fit["constants"] if c["constant"] == "force_n_per_a")
     assert force["determined"] and force["value"] == pytest.approx(24.0, rel=0.05), force
-    # The twin is judged against its own plant on the proof's rig (the emulator's: 5 kHz, the
-    # override), what the fit had to find. The valve's column is measured over CAN, and some
-    # figures depend on the link: the hysteresis of a 4 s triangle reads 1.84 % over CAN (the
-    # setpoint in RPDO1 takes effect at the SYNC whose TPDO1 still shows the state before it,
-    # one sample per 1 ms) for 1.21 % on the proof's rig, and a sweep the master lost samples
-    # of reads its −3 dB frequency lower (22.4 Hz for 24.5 Hz on a loaded run): docs/twin.md.
-    truth = {f.name: f.value for f in characterize_twin_plant(VARIED, tmp_path)}
+    # The proof ran over the valve's kind of link (an emulated -CA twin with only the manual's
+    # objects on a CAN bus of its own, through the CAN master at the valve's 1 ms SYNC): the
+    # figures that depend on the link (the hysteresis of a 4 s triangle: 1.84 % over CAN for
+    # 1.21 % on the emulator's 5 kHz rig) are compared like with like, within the issue's targets.
+    assert fit["comparison_link"].startswith("CANopen node"), fit["comparison_link"]
+    assert dictionaries == ["manual"]  # as the valve: only the manual's objects
+    assert "TPDO1 at the tool's SYNC, one sample per 1 ms" in fit["comparison_link"]
     for name, within in (("step_25_overshoot_pct", 1.0), ("static_dead_band_pct", 0.2),
                          ("static_hysteresis_pct", 0.2)):  # fmt: skip
-        assert proof[name]["twin"] == pytest.approx(truth[name], abs=within), (name, proof[name])
-    assert proof["bode_bandwidth_hz"]["twin"] == pytest.approx(
-        truth["bode_bandwidth_hz"], rel=0.05
-    ), proof["bode_bandwidth_hz"]
-    # what the link does not change, the valve's own figures over CAN show alike
-    for name, within in (("step_25_overshoot_pct", 1.0), ("static_dead_band_pct", 0.2)):
         assert proof[name]["twin"] == pytest.approx(proof[name]["valve"], abs=within), proof[name]
-    if stepper.lost == 0:  # a sweep the master lost no sample of
+    if lost <= LOST_SHARE and lost_share(fit["comparison_notes"]) <= LOST_SHARE:  # neither
+        # side's master lost many samples (a sweep that lost more read its −3 dB frequency
+        # lower: 22.4 Hz for 24.5 Hz on a loaded run)
         assert proof["bode_bandwidth_hz"]["ratio"] == pytest.approx(1.0, abs=0.05), proof
 
 
-def characterize_twin_plant(plant, tmp_path):
-    """The figures of ``plant`` on the rig the proof characterizes a twin on (the emulator's
-    own, commissioned as :func:`prm9tool.twin.proof.characterize_twin` does)."""
-    from prm9tool.analysis.profile import load_profile
-    from prm9tool.characterize.rig import EmulatorRig
-    from prm9tool.characterize.run import characterize
-
-    valve = EmulatedValve(E02_CA, 4402, nv_path=tmp_path / "4402.json", od="manual", plant=plant)
-    valve.advance(BOOT_S)
-    valve.nmt_command(NmtCommand.START)
-    word = CATALOGUE["CONTROLWORD"]
-    for value in ENABLE_SEQUENCE:
-        valve.write(word.index, word.subindex, value)
-    return characterize(EmulatorRig(valve), load_profile(tmp_path / "short.toml")).figures
+def lost_share(notes):
+    """The share of its sweep's samples the twin's run lost, from its notes ("frequency
+    response: 39 of 3000 samples lost on the link, …"; none: 0)."""
+    for note in notes:
+        found = re.search(r"(\d+) of (\d+) samples lost", note)
+        if found:
+            return int(found[1]) / int(found[2])
+    return 0.0

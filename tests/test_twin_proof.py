@@ -62,6 +62,23 @@ def test_the_twin_of_a_canopen_valve_is_commissioned_for_its_proof(tmp_path):
     plant = replace(PLANT, force_n_per_a=24.0)
     write_twin(path, Fit(plant, (), 0.02, 0.06, 1.4, 20), 5203, E02 + "-CA", "1.0.0", "x", {})
     profile = parse_profile({"test": {"step_amplitudes_pct": [25], "static_period_s": 1}})
-    again = characterize_twin(SimpleNamespace(profile=profile), path)
+    run = SimpleNamespace(profile=profile, info=SimpleNamespace(link="USB"))  # measured by USB
+    again = characterize_twin(run, path)
+    assert not again.info.link.startswith("CANopen")  # a USB run's twin: the emulator's rig
     figures = {f.name: f.value for f in again.figures}
     assert 0.0 < figures["step_25_rise_s"] < 0.05
+
+
+def test_the_proof_emulates_the_object_dictionary_the_valve_had():
+    """A CAN run that read none of the parameters whose address is this project's decision
+    was a valve with only the manual's objects: its twin gets only those; one that read any
+    had the full dictionary."""
+    from types import SimpleNamespace
+
+    from prm9tool.catalogue import CATALOGUE
+    from prm9tool.twin.proof import object_dictionary
+
+    manual = {p.key: 0 for p in CATALOGUE if p.address_from_manual}
+    decided = next(p.key for p in CATALOGUE if not p.address_from_manual)
+    assert object_dictionary(SimpleNamespace(parameters=manual)) == "manual"
+    assert object_dictionary(SimpleNamespace(parameters={**manual, decided: 0})) == "full"

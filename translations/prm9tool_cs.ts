@@ -5222,6 +5222,10 @@ Nejprve přepněte na Expert (Náhled → Úroveň oprávnění), nebo zkoušku 
             <translation>Dvojče nebylo možné charakterizovat: %1</translation>
         </message>
         <message>
+            <source>The twin was characterized over: %1.</source>
+            <translation>Dvojče bylo charakterizováno přes: %1.</translation>
+        </message>
+        <message>
             <source>determined</source>
             <translation>určeno</translation>
         </message>

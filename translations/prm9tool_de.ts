@@ -5200,6 +5200,10 @@ Wechseln Sie zuerst zu Experte (Ansicht → Berechtigungsstufe) oder starten Sie
             <translation>Der Zwilling konnte nicht charakterisiert werden: %1</translation>
         </message>
         <message>
+            <source>The twin was characterized over: %1.</source>
+            <translation>Der Zwilling wurde charakterisiert über: %1.</translation>
+        </message>
+        <message>
             <source>determined</source>
             <translation>bestimmt</translation>
         </message>

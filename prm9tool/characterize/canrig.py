@@ -84,9 +84,18 @@ CHECK_S = 0.2  # a stop request is looked at this often during a play
 class CanRig(Rig):
     """A -CA valve over an open :class:`CanopenSession` (see the module docstring)."""
 
-    def __init__(self, session: CanopenSession, period_s: float | None = None) -> None:
+    def __init__(
+        self,
+        session: CanopenSession,
+        period_s: float | None = None,
+        clock: type[SyncClock] | None = None,
+    ) -> None:
+        """``period_s``: the sample period (None: the bus's pace, or measured for SDO
+        polling); ``clock``: the SYNC producer's class (None: :class:`SyncClock`; an emulated
+        valve stepped by SYNC needs its master's, :mod:`prm9tool.twin.syncstep`)."""
         super().__init__()
         self.session = session
+        self._clock = clock
         self._link: SetpointLink | None = None  # taken at the first play, until release()
         self._lock = threading.Lock()  # one frame at a time, in order (set vs. keep-alive)
         self._sent = 0.0  # perf_counter of the last frame
@@ -198,7 +207,8 @@ class CanRig(Rig):
             self._send(values[k])
             sent[k] = True
 
-        clock = SyncClock(self.session.send_frame, self.period_s, before_sync, limit=n)
+        make = self._clock or SyncClock
+        clock = make(self.session.send_frame, self.period_s, before_sync, limit=n)
         slots = SlotSamples(clock)
 
         def on_tpdo(_can_id: int, data: bytearray, timestamp: float) -> None:

@@ -51,7 +51,7 @@ def run(args: argparse.Namespace) -> int:
     if sides:
         from prm9tool.twin.proof import table
 
-        print("the twin characterized as the valve was:")
+        print(f"the twin characterized as the valve was ({proven.proof_link}):")
         print("\n".join(f"  {line}" for line in table(sides)))
     return ExitCode.OK
 

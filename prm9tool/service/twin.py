@@ -30,6 +30,8 @@ class ProvenTwin:
     twin: ValveTwin
     sides: list[Side] = field(default_factory=list)
     proof_problem: str = ""
+    proof_link: str = ""  # the link the twin was characterized over (its run's ``link``)
+    proof_notes: list[str] = field(default_factory=list)  # what that link limited (lost …)
 
     def report(self) -> dict[str, Any]:
         """The fit report (``--fit-twin … --json``) with the side-by-side (``comparison``)."""
@@ -47,6 +49,8 @@ class ProvenTwin:
                  "twin": number(s.twin), "ratio": number(s.ratio)}
                 for s in self.sides
             ]  # fmt: skip
+            summary["comparison_link"] = self.proof_link
+            summary["comparison_notes"] = list(self.proof_notes)
         return summary
 
 
@@ -73,4 +77,5 @@ def fit_proven(
         again = characterize_twin(run, twin.path)
     except (Prm9Error, ValueError) as exc:  # the twin is written; only its proof is missing
         return ProvenTwin(twin, [], str(exc))
-    return ProvenTwin(twin, side_by_side(run, again))
+    notes = [str(note) for note in again.notes]
+    return ProvenTwin(twin, side_by_side(run, again), proof_link=again.info.link, proof_notes=notes)

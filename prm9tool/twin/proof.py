@@ -4,13 +4,20 @@ in percentage points for the figures in % (overshoot, dead band, hysteresis). No
 
 from __future__ import annotations
 
+import itertools
 import math
 import os
 from dataclasses import dataclass
 from typing import TYPE_CHECKING
 
+from prm9tool.errors import Prm9Error
+
 if TYPE_CHECKING:
     from prm9tool.characterize.run import Characterization
+    from prm9tool.device.emulator import EmulatedValve
+
+ENABLED_S = 0.1  # the enable sequence taken before the master comes (the firmware's 1 ms task)
+_channels = itertools.count()  # the private buses' channels of this process
 
 
 @dataclass(frozen=True)
@@ -36,26 +43,95 @@ class Side:
         return self.twin - self.valve
 
 
+CAN_LINK = "CANopen node"  # how a CAN run's link begins (CanRig's RigInfo.link)
+
+
 def characterize_twin(run: Characterization, twin: str | os.PathLike[str]) -> Characterization:
-    """The twin file ``twin`` characterized as ``run`` was (its profile), on an emulated valve
-    stepped as fast as the CPU allows."""
+    """The twin file ``twin`` characterized as ``run`` was: its profile, over the same kind of
+    link. A run over CANopen (``run.info.link`` "CANopen node …") characterizes the twin as an
+    emulated -CA valve on a private virtual CAN bus through the CAN master at the run's sample
+    period (:func:`characterize_twin_over_can`); any other run on an emulated valve stepped as
+    fast as the CPU allows, through the override at 5 kHz (a USB run's path)."""
+    if run.info.link.startswith(CAN_LINK):
+        return characterize_twin_over_can(run, twin)
     from prm9tool.characterize.rig import EmulatorRig
     from prm9tool.characterize.run import characterize
     from prm9tool.device.emulator.twinfile import emulated_twin
 
     valve = emulated_twin(os.fspath(twin))
-    if valve.type_key.canopen:  # a -CA twin waits for its master, as the valve did: its
-        # commissioning (NMT start, control word 08h → 09h → 0Bh → 0Fh; manual §7.6)
-        from prm9tool.catalogue import CATALOGUE
-        from prm9tool.catalogue.commissioning import ENABLE_SEQUENCE, NmtCommand
-
-        while valve.status().booting:
-            valve.advance(0.05)
-        valve.nmt_command(NmtCommand.START)
-        word = CATALOGUE["CONTROLWORD"]
-        for value in ENABLE_SEQUENCE:
-            valve.write(word.index, word.subindex, value)
+    if valve.type_key.canopen:  # a -CA twin waits for its master, as the valve did
+        _commission(valve)
     return characterize(EmulatorRig(valve), run.profile)
+
+
+def characterize_twin_over_can(
+    run: Characterization, twin: str | os.PathLike[str]
+) -> Characterization:
+    """The twin characterized as the CAN run ``run`` was: an emulated -CA valve with the
+    valve's object dictionary (only the manual's objects when the valve had no others, see
+    :func:`object_dictionary`) on a virtual CAN channel of its own, reached by the tool's
+    CANopen master (:class:`~prm9tool.characterize.canrig.CanRig`: setpoint in RPDO1, TPDO1
+    at the tool's SYNC) at the run's sample period, and stepped by that SYNC
+    (:class:`~prm9tool.twin.syncstep.SyncStepper`): sample ``k`` is the twin at ``k``
+    periods, as the valve's was at its SYNC. It runs in real time (the profile's length)."""
+    import uuid
+
+    import can
+
+    from prm9tool.characterize.canrig import CanRig
+    from prm9tool.characterize.run import characterize
+    from prm9tool.device.canlink.bus import CanOptions
+    from prm9tool.device.canlink.session import CanopenSession
+    from prm9tool.device.emulator.twinfile import emulated_twin
+    from prm9tool.twin.syncstep import SyncStepper
+
+    valve = emulated_twin(os.fspath(twin), od=object_dictionary(run))
+    if not valve.type_key.canopen:
+        raise Prm9Error(f"the twin of a CAN run is a -CA valve, not {valve.type_key}")
+    period_s = 1.0 / run.info.sample_rate_hz
+    channel = f"prm9tool-twin-proof-{uuid.uuid4().hex[:12]}-{next(_channels)}"
+    bus = can.Bus(interface="virtual", channel=channel, preserve_timestamps=True)
+    try:
+        stepper = SyncStepper(valve, bus, period_s).attach()
+        slave = valve.connect_can(bus)
+        try:
+            _commission(valve)
+            valve.advance(ENABLED_S)
+            session = CanopenSession(
+                CanOptions("virtual", channel), slave.node_id, type_key=str(valve.type_key)
+            )
+            try:
+                return characterize(CanRig(session, period_s, stepper.clock), run.profile)
+            finally:
+                session.close()
+        finally:
+            slave.stop()
+    finally:
+        bus.shutdown()
+
+
+def object_dictionary(run: Characterization) -> str:
+    """The object dictionary the run's valve had, as the emulator names it: ``manual`` when
+    it read none of the parameters whose address is this project's decision (a valve with
+    only the objects of the manual's tables), else ``full``."""
+    from prm9tool.catalogue import CATALOGUE
+
+    decided = {p.key for p in CATALOGUE if not p.address_from_manual}
+    return "full" if decided & set(run.parameters) else "manual"
+
+
+def _commission(valve: EmulatedValve) -> None:
+    """Boot ``valve`` and start it as its master did the valve's: NMT start, control word
+    08h → 09h → 0Bh → 0Fh (manual §7.6)."""
+    from prm9tool.catalogue import CATALOGUE
+    from prm9tool.catalogue.commissioning import ENABLE_SEQUENCE, NmtCommand
+
+    while valve.status().booting:
+        valve.advance(0.05)
+    valve.nmt_command(NmtCommand.START)
+    word = CATALOGUE["CONTROLWORD"]
+    for value in ENABLE_SEQUENCE:
+        valve.write(word.index, word.subindex, value)
 
 
 def side_by_side(run: Characterization, again: Characterization) -> list[Side]:

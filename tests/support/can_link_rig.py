@@ -9,13 +9,10 @@ do not exist (abort 0x06020000). Faults: :meth:`LinkRig.refuse` (an SDO abort on
 
 from __future__ import annotations
 
-import collections
 import itertools
-import time
 from collections.abc import Callable
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import Any
 
 import can
 import numpy as np
@@ -26,6 +23,7 @@ from prm9tool.device.canlink.bus import CanOptions
 from prm9tool.device.emulator import EmulatedValve
 from prm9tool.device.emulator.canopen_slave import CanopenSlave
 from prm9tool.errors import AbortCode, SdoAbortError
+from prm9tool.twin.syncstep import SyncStepper as PackageStepper
 from support.canopen_rig import BOOT_S, unique_channel
 
 E02 = "PRM9-06.3Z11/30-24E02S02-CA"
@@ -161,59 +159,37 @@ def _wrap_sdo(rig: LinkRig) -> None:
 
 @dataclass
 class SyncStepper:
-    """The valve of a :class:`LinkRig` stepped by the master's SYNC instead of paced to the
-    wall clock, so sample ``k`` of a SYNC-paced test is the valve at exactly ``k`` periods
-    whatever the PC's load. Paced, its firmware runs in batches of 2–10 ms, and SYNCs 1 ms apart
-    found one state twice (repeated samples no real valve gives).
-
-    A SYNC carries no number (manual §7.2.5), and on a loaded PC its time stamp does not tell
-    it either (a thread waits for Python's GIL for milliseconds): :meth:`install` watches the
-    master's :class:`~prm9tool.device.canlink.sync_clock.SyncClock` (in this process) for the
-    number of each SYNC it sends, without changing what it does. At SYNC ``k`` of a play the
-    valve runs up to ``k`` periods from the play's first SYNC (through the ticks the master
-    skipped), then takes the SYNC: its synchronous RPDO takes effect and its TPDO1 answers with
-    the state at that SYNC (CiA 301). The answer carries the SYNC's time stamp plus 1 µs — a
-    real valve answers at once and the master's interface stamps the frame on reception — not
-    the moment this process's receive thread got to it, so the master places it by the SYNC it
-    answers. Between plays the valve does not run (nothing records it then). What the master's
-    path still loses on a busy PC (a tick its thread reached too late is skipped, a SYNC sent
-    too late is void: bridged by a straight line) it loses as with a real valve; :attr:`lost`
-    counts those samples (observed where the master bridges them) and :attr:`skipped` the
-    ticks the valve ran through unseen."""
+    """The valve of a :class:`LinkRig` stepped by the master's SYNC
+    (:class:`prm9tool.twin.syncstep.SyncStepper`, which says how) for a test that runs the
+    tool's own path (the command line's CanRig): :meth:`install` makes that path's SYNC clock
+    the stepper's. :attr:`lost` counts the samples the master lost and bridged (a skipped or
+    late SYNC) of the :attr:`recorded` ones; :attr:`skipped` the ticks the valve ran through
+    unseen."""
 
     rig: LinkRig
     period_s: float
-    syncs: int = 0
-    skipped: int = 0  # ticks the master did not send (the valve ran through them)
     recorded: int = 0  # samples of the plays whose response the master kept
     lost: int = 0  # of them, lost on the master's side and bridged (a skipped or late SYNC)
-    _tick: int = 0  # the tick of the play the valve is at
-    _answer_at: float | None = None  # the stamp for the answer to the SYNC being taken
-    _numbers: collections.deque[int] = field(default_factory=collections.deque)
+    stepper: PackageStepper | None = None
+
+    @property
+    def syncs(self) -> int:
+        """SYNCs the valve took."""
+        return self.stepper.syncs if self.stepper is not None else 0
+
+    @property
+    def skipped(self) -> int:
+        """Ticks the master did not send (the valve ran through them)."""
+        return self.stepper.skipped if self.stepper is not None else 0
 
     def install(self, monkeypatch: pytest.MonkeyPatch) -> SyncStepper:
-        """Stop the valve's paced thread (if any), watch the master's SYNC numbers and step the
-        valve by SYNC from now on. The valve's bus must keep the time stamps it is given
-        (``preserve_timestamps=True``)."""
-        from prm9tool.device.canlink import sync_clock
-
-        numbers = self._numbers
-
-        class NumberedClock(sync_clock.SyncClock):
-            def __init__(self, *args: Any, **kwargs: Any) -> None:
-                super().__init__(*args, **kwargs)
-                send = self._send
-
-                def numbered(cob_id: int, data: bytes) -> None:
-                    with self._lock:
-                        numbers.append(self._ticks[-1])  # appended just before the send
-                    send(cob_id, data)
-
-                self._send = numbered
-
-        monkeypatch.setattr("prm9tool.characterize.canrig.SyncClock", NumberedClock)
+        """Stop the valve's paced thread (if any), make the tool's CanRig produce SYNC with the
+        stepper's clock and step the valve by SYNC from now on (its bus must keep the time
+        stamps it is given: ``preserve_timestamps=True``)."""
         from prm9tool.characterize import canrig
 
+        self.stepper = PackageStepper(self.rig.valve, self.rig.bus, self.period_s).attach()
+        monkeypatch.setattr(canrig, "SyncClock", self.stepper.clock)
         bridged = canrig.bridged
 
         def counted(response: np.ndarray) -> np.ndarray:
@@ -222,33 +198,4 @@ class SyncStepper:
             return bridged(response)
 
         monkeypatch.setattr(canrig, "bridged", counted)
-        rig = self.rig
-        rig.valve.stop()
-        on_message: Callable[[can.Message], None] = rig.slave._on_message
-        send = rig.bus.send
-        tpdo = 0x180 + rig.slave.node_id
-
-        def stepped(msg: can.Message) -> None:
-            if msg.arbitration_id != 0x80 or msg.dlc or rig.unplugged:
-                on_message(msg)
-                return
-            tick = numbers.popleft() if numbers else self._tick + 1  # a SYNC of another master
-            periods = 1 if tick == 0 else tick - self._tick  # tick 0: a play's first
-            self.skipped += max(0, periods - 1)
-            self._tick = tick
-            self.syncs += 1
-            rig.valve.advance(max(1, periods) * self.period_s)
-            self._answer_at = msg.timestamp + 1e-6
-            try:
-                on_message(msg)  # the SYNC: RPDO1 taken, TPDO1 sent
-            finally:
-                self._answer_at = None
-
-        def stamped_send(msg: can.Message, timeout: float | None = None) -> None:
-            answer = msg.arbitration_id == tpdo and self._answer_at is not None
-            msg.timestamp = self._answer_at if answer else time.time()
-            send(msg, timeout)
-
-        rig.slave._on_message = stepped  # type: ignore[method-assign]
-        rig.bus.send = stamped_send  # type: ignore[method-assign]
         return self

@@ -182,6 +182,10 @@ class TwinPage(Page):
             text += " " + self.tr("The twin could not be characterized: %1").replace(
                 "%1", result.proof_problem
             )
+        elif result.proof_link:  # over the valve's kind of link (its run's, in English)
+            text += " " + self.tr("The twin was characterized over: %1.").replace(
+                "%1", result.proof_link
+            )
         self.result.setText(text)
         self.constants.setRowCount(len(fit.constants))
         for row, c in enumerate(fit.constants):
