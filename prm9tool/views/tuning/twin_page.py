@@ -41,6 +41,12 @@ def _g(value: float | None, digits: int = 4) -> str:
     return format_significant(value, digits).replace("-", "−")
 
 
+def _with_unit(value: float | None, unit: str) -> str:
+    """``0.0158 s``; a figure not measured is "—" alone (not "— s")."""
+    shown = _g(value)
+    return shown if shown == "—" else f"{shown} {unit}".strip()
+
+
 def _twin_serial(path: Path) -> int | None:
     """The serial an existing twin file is of (None: no such file, or not a twin file)."""
     try:
@@ -223,7 +229,7 @@ class TwinPage(Page):
                 f"{_g(s.difference, 3)} pp" if s.unit == "%" else _g(s.ratio, 3)
             )  # percentage points for the figures in %, else the ratio
             label = figure_label(cast("Figure", s))  # by its name, as the test report's
-            cells = (label, f"{_g(s.valve)} {s.unit}", f"{_g(s.twin)} {s.unit}", compared)
+            cells = (label, _with_unit(s.valve, s.unit), _with_unit(s.twin, s.unit), compared)
             for col, value in enumerate(cells):
                 self.sides.setItem(row, col, QTableWidgetItem(value.strip()))
         self.constants.resizeRowsToContents()
