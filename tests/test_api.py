@@ -316,3 +316,13 @@ def test_an_unknown_device_id_is_a_clear_error():
         prm9tool.connect("com3")
     with pytest.raises(TypeKeyError, match="must start with 'PRM9-'"):
         prm9tool.connect("emulator:XYZ:1")
+
+
+def test_a_test_on_a_ca_valve_waiting_for_its_master_says_to_commission_it():
+    """A -CA valve as delivered waits for its master: the script is told what to call."""
+    from prm9tool.characterize.rig import WaitsForMasterError
+
+    with prm9tool.connect("emulator:PRM9-06.3Z11/30-24E02S02-CA:4791") as valve:
+        valve.wait_booted()
+        with pytest.raises(WaitsForMasterError, match=r"call valve\.commission\(\) first"):
+            valve.characterize()

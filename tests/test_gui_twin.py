@@ -140,3 +140,48 @@ def test_online_the_valve_is_characterized_fitted_and_recorded(
     assert operations[-2:] == ["characterization", "twin"]
     if SHOTS:
         w.grab().save(str(Path(SHOTS) / "tuning_twin.png"))
+
+
+def test_a_report_of_another_serial_does_not_overwrite_the_twin_the_field_names(
+    qtbot, tmp_path, monkeypatch
+):
+    """The field still names the twin of serial 3127 (its suggestion, or a fit before): a
+    report of serial 3128 asks where its twin goes, suggesting 3128's name, and a cancel
+    writes nothing and keeps the field."""
+    from prm9tool.views.files import dialogs
+
+    w = _window(qtbot)
+    page = w.twin
+    kept = tmp_path / "3127-twin.toml"
+    kept.write_text('format = "prm9tool twin"\nversion = 1\nserial = 3127\n', encoding="utf-8")
+    page.out.setText(str(kept))
+    report = tmp_path / "run.json"
+    report.write_text(json.dumps({"valve": {"serial": 3128}}), encoding="utf-8")
+    monkeypatch.setattr(dialogs, "open_file_name", lambda *_a, **_k: (str(report), ""))
+    asked = []
+    monkeypatch.setattr(w, "save_file", lambda *a: asked.append(a[2]))  # cancelled
+    page.from_report.click()
+    assert asked == ["3128-twin.toml"]
+    assert not page.reports.busy and page.out.text() == str(kept)
+    assert kept.read_text(encoding="utf-8").endswith("serial = 3127\n")
+
+
+def test_a_figure_not_measured_is_a_dash_without_a_unit(qtbot, tmp_path):
+    """The 5 % step of a valve that never settles within ±2 %: "—", not "— s"."""
+    import math
+    from types import SimpleNamespace
+
+    from prm9tool.service.twin import ProvenTwin
+    from prm9tool.twin.proof import Side
+
+    w = _window(qtbot)
+    fit = SimpleNamespace(explained=True, start_rms_pct=1.0, rms_pct=0.5, parts_rms_pct={},
+                          constants=[])  # fmt: skip
+    sides = [
+        Side("step_5_settling_s", "step 5 %: settling time", "s", math.nan, math.nan),
+        Side("step_25_settling_s", "step 25 %: settling time", "s", 0.0244, 0.0158),
+    ]
+    w.twin.show_result(ProvenTwin(SimpleNamespace(fit=fit, path=tmp_path / "t.toml"), sides))
+    rows = list(_rows(w.twin.sides).values())
+    assert rows[0][1:] == ["—", "—", "—"]
+    assert rows[1][1:3] == ["0.0244 s", "0.0158 s"]

@@ -77,8 +77,12 @@ def test_a_twin_file_that_cannot_be_used_is_refused_in_words(tmp_path):
 def test_a_twin_does_not_replace_another_emulated_valve_of_its_serial(tmp_path):
     emulated_valves.emulated_valve(E02, 4103)
     path = _twin(tmp_path / "valve.toml", serial=4103)
-    with pytest.raises(Prm9Error, match="is a plain emulated"):
+    with pytest.raises(Prm9Error, match="is a plain emulated") as refused:
         factory.emulator_entries([f"twin:{path}"])
+    assert str(refused.value).endswith(
+        "in this process, which has one emulated valve per serial: open the twin in a new "
+        "process (prm9tool --emulator twin:FILE, a new Python session)"
+    )  # what to do, not only what is wrong
     other = _twin(tmp_path / "other.toml", serial=4104)
     factory.emulator_entries([f"twin:{other}"])
     copy = tmp_path / "copy.toml"

@@ -65,3 +65,30 @@ def test_one_rule_for_the_exit_code_of_an_enable_that_fails():
     assert exit_code_of(SdoAbortError(0x6040, 0, AbortCode.GENERAL_ERROR)) == 1
     assert exit_code_of(NoControlWordError("CANopen off")) == ExitCode.USAGE
     assert exit_code_of(DeviceTimeoutError("no SDO answer for 0x6040/0")) == 6
+
+
+def test_fit_twin_of_a_ca_valve_waiting_for_its_master_says_how_to_enable_it(capsys, tmp_path):
+    """A -CA valve as delivered waits for its master: the refusal names --enable."""
+    args = ["--fit-twin", str(tmp_path / "t.toml"), "--emulator", f"{E02_CA}:7405"]
+    assert main(args) == ExitCode.OUT_OF_LIMITS
+    err = capsys.readouterr().err
+    assert "waits for its master to enable it); nothing was tested; add --enable " in err
+    assert "--hydraulics-safe to enable it before the test" in err
+
+
+def test_disable_over_can_before_a_heartbeat_does_not_say_nmt_unknown(capsys, tmp_path, data_dir):
+    """A fresh session over CAN has heard no heartbeat yet (0x1017, 1 s): the NMT state is not
+    known, and the line says so in words rather than "NMT unknown"."""
+    from support.can_link_rig import make_link_rig
+
+    rig = make_link_rig("disable-nmt", tmp_path)
+    rig.valve.start()
+    bus = ["--can-interface", "virtual", "--can-channel", rig.options.channel]
+    try:
+        assert main(["--device", "can:10", *bus, "--disable", "--hydraulics-safe"]) == 0
+    finally:
+        rig.valve.stop()
+        rig.close()
+    out = capsys.readouterr().out
+    assert "NMT unknown" not in out
+    assert out.startswith("device state INIT, NMT state not heard yet (it answers SDO: ")

@@ -8,10 +8,11 @@ batch mode's type check and backup, and what it did recorded in the history. No 
 
 from __future__ import annotations
 
+import contextlib
 import logging
 import os
 import threading
-from collections.abc import Callable, Mapping, Sequence
+from collections.abc import Callable, Iterator, Mapping, Sequence
 from typing import TYPE_CHECKING
 
 from prm9tool.api.params import Display, ParameterSet, as_parameter_set, display, lookup
@@ -317,7 +318,8 @@ class Valve:
         history as ``--characterize`` records it (a ``characterization`` record: verdict,
         figures, the parameters the valve ran with); a run that raises records nothing.
         Refused (MotionBusyError, nothing moved) while this valve's setpoint generator runs."""
-        return self._service.characterize(profile, progress)
+        with _enable_hint():
+            return self._service.characterize(profile, progress)
 
     def autotune(
         self,
@@ -349,7 +351,8 @@ class Valve:
             profile = load_profile(os.fspath(profile))
         settings = AutotuneSettings(loop, method, overshoot_pct, settling_ms, amplitude_pct,
                                     limit_pct, profile)  # fmt: skip
-        return self._service.autotune(settings, apply, progress)
+        with _enable_hint():
+            return self._service.autotune(settings, apply, progress)
 
     def fit_twin(
         self,
@@ -363,7 +366,8 @@ class Valve:
         and recorded in the history (operation ``twin``). The result has the run, the fit
         (``fit.constants``: which constants the data determine) and the path; open the twin
         with ``prm9tool.connect(f"emulator:twin:{path}")``."""
-        return self._service.fit_twin(path, profile, progress)
+        with _enable_hint():
+            return self._service.fit_twin(path, profile, progress)
 
     def signature(
         self,
@@ -379,7 +383,8 @@ class Valve:
         ``signature``. NoReferenceError, nothing moved, when the history holds no
         characterization of this serial (run :meth:`characterize` first) or is off;
         MotionBusyError while this valve's setpoint generator runs."""
-        return self._service.signature(profile, progress)
+        with _enable_hint():
+            return self._service.signature(profile, progress)
 
     def export_eds(self, path: str | os.PathLike[str]) -> None:
         """Write the CiA 306 EDS of this valve's type (what ``--export-eds TYPEKEY -o
@@ -412,3 +417,17 @@ class Valve:
         info = self.info
         state = "closed" if self.closed else "open"
         return f"<Valve {info.device_id} {info.type_key} serial {info.serial} ({state})>"
+
+
+@contextlib.contextmanager
+def _enable_hint() -> Iterator[None]:
+    """A -CA valve that waits for its CANopen master: the error says how a script enables it."""
+    from prm9tool.characterize.rig import WaitsForMasterError
+
+    try:
+        yield
+    except WaitsForMasterError as exc:
+        raise WaitsForMasterError(
+            f"{exc}; call valve.commission() first (NMT start, then the control word 08h → 09h "
+            "→ 0Bh → 0Fh, as its master does)"
+        ) from None

@@ -94,6 +94,11 @@ class ValveFaultError(Prm9Error):
     """The valve reported an error during a procedure; the test was stopped."""
 
 
+class WaitsForMasterError(ValveFaultError):
+    """A -CA valve with CANopen on waits for its master to enable it (device state INIT): the
+    caller may say how to enable it (the window's question, the command line's ``--enable``)."""
+
+
 @dataclass(frozen=True)
 class RigInfo:
     """What the report says about the valve and the link."""
@@ -173,7 +178,7 @@ class Rig(ABC):
             seen = status.device_state.value
             if status.status_word is not None:  # over CANopen: the word it was read from
                 seen = f"{seen} (status word 0x{status.status_word:04X})"
-            raise ValveFaultError(template(seen))
+            raise (WaitsForMasterError if waiting else ValveFaultError)(template(seen))
 
     def check(self) -> None:
         """Raise :class:`Stopped` if a stop was requested."""

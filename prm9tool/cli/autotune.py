@@ -21,7 +21,7 @@ from prm9tool.api.valve import Valve
 from prm9tool.characterize.frame import LimitExceededError
 from prm9tool.characterize.rig import Stopped, ValveFaultError
 from prm9tool.cli.batch_devices import BatchError
-from prm9tool.cli.characterize import ENABLE_NEEDS_CONFIRMATION
+from prm9tool.cli.characterize import ENABLE_NEEDS_CONFIRMATION, stopped_text
 from prm9tool.cli.enabling import commission
 from prm9tool.cli.json_output import emit_json
 from prm9tool.errors import CommunicationError, ExitCode, Prm9Error
@@ -55,7 +55,7 @@ def run(args: argparse.Namespace) -> int:
             print(f"prm9tool: --autotune: {exc}", file=sys.stderr)
             return ExitCode.USAGE
         except (Stopped, LimitExceededError, ValveFaultError) as exc:
-            print(f"prm9tool: test stopped: {exc}", file=sys.stderr)
+            print(f"prm9tool: {stopped_text(exc)}", file=sys.stderr)
             return ExitCode.OUT_OF_LIMITS
         except CommunicationError as exc:
             print(f"prm9tool: {exc}", file=sys.stderr)

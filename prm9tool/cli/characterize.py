@@ -26,7 +26,13 @@ from typing import TYPE_CHECKING
 from prm9tool.analysis.profile import DEFAULT, Profile, ProfileError, load_profile
 from prm9tool.characterize.canrig import rig_for_session
 from prm9tool.characterize.frame import LimitExceededError
-from prm9tool.characterize.rig import EmulatorRig, Rig, Stopped, ValveFaultError
+from prm9tool.characterize.rig import (
+    EmulatorRig,
+    Rig,
+    Stopped,
+    ValveFaultError,
+    WaitsForMasterError,
+)
 from prm9tool.characterize.run import Characterization, characterize, report_data, write_csv_files
 from prm9tool.cli.batch_devices import BatchError, can_options, select
 from prm9tool.device.emulated_valves import emulated_valve
@@ -53,7 +59,7 @@ def run(args: argparse.Namespace, record: Callable[[Characterization], None] | N
             rig, profile, lambda text: print(f"prm9tool: {text}", file=sys.stderr)
         )
     except (Stopped, LimitExceededError, ValveFaultError) as exc:
-        print(f"prm9tool: test stopped: {exc}", file=sys.stderr)
+        print(f"prm9tool: {stopped_text(exc)}", file=sys.stderr)
         return ExitCode.OUT_OF_LIMITS
     except CommunicationError as exc:
         print(f"prm9tool: {exc}", file=sys.stderr)
@@ -81,6 +87,19 @@ def run(args: argparse.Namespace, record: Callable[[Characterization], None] | N
     verdict = "PASSED" if result.passed else "FAILED"
     print(f"{result.info.type_key} serial {result.info.serial}: {verdict}")
     return ExitCode.OK if result.passed else ExitCode.OUT_OF_LIMITS
+
+
+ENABLE_HINT = (
+    "add --enable --hydraulics-safe to enable it before the test (NMT start, control word "
+    "08h → 09h → 0Bh → 0Fh, as its master does)"
+)
+
+
+def stopped_text(exc: Exception) -> str:
+    """ "test stopped: …" in words, with how to enable a valve that waits for its master."""
+    if isinstance(exc, WaitsForMasterError):
+        return f"test stopped: {exc}; {ENABLE_HINT}"
+    return f"test stopped: {exc}"
 
 
 def _profile(args: argparse.Namespace) -> Profile:

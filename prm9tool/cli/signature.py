@@ -22,7 +22,7 @@ from prm9tool.characterize.drift import DriftReport, signature
 from prm9tool.characterize.frame import LimitExceededError
 from prm9tool.characterize.rig import Stopped, ValveFaultError
 from prm9tool.cli.batch_devices import BatchError
-from prm9tool.cli.characterize import _profile, _rig
+from prm9tool.cli.characterize import _profile, _rig, stopped_text
 from prm9tool.errors import CommunicationError, ExitCode, HistoryError, Prm9Error
 from prm9tool.files.atomicfile import atomic_write
 
@@ -55,7 +55,7 @@ def run(args: argparse.Namespace) -> int:
             print(f"prm9tool: the birth certificate cannot be read: {exc}", file=sys.stderr)
             return ExitCode.HISTORY
         except (Stopped, LimitExceededError, ValveFaultError, ValueError) as exc:
-            print(f"prm9tool: test stopped: {exc}", file=sys.stderr)
+            print(f"prm9tool: {stopped_text(exc)}", file=sys.stderr)
             return ExitCode.OUT_OF_LIMITS
         except CommunicationError as exc:
             print(f"prm9tool: {exc}", file=sys.stderr)

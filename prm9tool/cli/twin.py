@@ -77,7 +77,7 @@ def _from_valve(args: argparse.Namespace) -> tuple[int, ProvenTwin | None]:
     from prm9tool.characterize.rig import Stopped, ValveFaultError
     from prm9tool.characterize.run import characterize
     from prm9tool.cli.batch_devices import BatchError
-    from prm9tool.cli.characterize import _profile, _rig
+    from prm9tool.cli.characterize import _profile, _rig, stopped_text
     from prm9tool.cli.history import recorder_for
     from prm9tool.service.history import record_characterization
 
@@ -94,7 +94,7 @@ def _from_valve(args: argparse.Namespace) -> tuple[int, ProvenTwin | None]:
     try:
         run = characterize(rig, profile, lambda text: print(f"prm9tool: {text}", file=sys.stderr))
     except (Stopped, LimitExceededError, ValveFaultError, ValueError) as exc:
-        print(f"prm9tool: test stopped: {exc}", file=sys.stderr)
+        print(f"prm9tool: {stopped_text(exc)}", file=sys.stderr)
         return ExitCode.OUT_OF_LIMITS, None
     except CommunicationError as exc:
         print(f"prm9tool: {exc}", file=sys.stderr)

@@ -137,6 +137,11 @@ def _shown(valve: Valve, values: dict[str, Value]) -> dict[str, Any]:
 
 
 def _state(status: ValveStatus) -> str:
+    if str(status.nmt_state) == "unknown":  # over CAN, before its first heartbeat (0x1017)
+        return (
+            f"device state {status.device_state}, NMT state not heard yet (it answers SDO: "
+            "pre-operational or operational; its heartbeat had not come)"
+        )
     return f"device state {status.device_state}, NMT {status.nmt_state}"
 
 

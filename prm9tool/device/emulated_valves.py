@@ -89,6 +89,8 @@ def twin_valve(path: str | Path) -> EmulatedValve:
             raise Prm9Error(
                 f"twin {where}: the emulated valve {twin.serial} is "
                 + (f"the twin of {made} already" if made else f"a plain emulated {valve.type_key}")
+                + " in this process, which has one emulated valve per serial: open the twin in "
+                "a new process (prm9tool --emulator twin:FILE, a new Python session)"
             )
         valve = emulated_twin(twin, od=EMULATED.od)
         EMULATED.valves[twin.serial] = valve

@@ -12,7 +12,9 @@ each constant and whether the data determine it, and the twin characterized as t
 
 from __future__ import annotations
 
+import json
 import math
+import tomllib
 from pathlib import Path
 from typing import TYPE_CHECKING, cast
 
@@ -37,6 +39,31 @@ def _g(value: float | None, digits: int = 4) -> str:
     if value is None or not math.isfinite(value):
         return "—"
     return format_significant(value, digits).replace("-", "−")
+
+
+def _with_unit(value: float | None, unit: str) -> str:
+    """``0.0158 s``; a figure not measured is "—" alone (not "— s")."""
+    shown = _g(value)
+    return shown if shown == "—" else f"{shown} {unit}".strip()
+
+
+def _twin_serial(path: Path) -> int | None:
+    """The serial an existing twin file is of (None: no such file, or not a twin file)."""
+    try:
+        serial = tomllib.loads(path.read_text(encoding="utf-8")).get("serial")
+    except (OSError, UnicodeDecodeError, tomllib.TOMLDecodeError):
+        return None
+    return serial if isinstance(serial, int) else None
+
+
+def _report_serial(path: Path) -> int | None:
+    """The valve's serial in a characterization's JSON report (None: not readable here; the
+    fit itself says why)."""
+    try:
+        serial = json.loads(path.read_text(encoding="utf-8")).get("valve", {}).get("serial")
+    except (OSError, UnicodeDecodeError, ValueError, AttributeError):
+        return None
+    return serial if isinstance(serial, int) else None
 
 
 class TwinPage(Page):
@@ -70,27 +97,33 @@ class TwinPage(Page):
         self.last: ProvenTwin | None = None
         self._busy = {"test": False, "report": False}  # a test on the valve, a report's fit
 
-    def _suggested(self) -> str:
-        serial = getattr(getattr(self.window_.connection, "device", None), "serial", None)
+    def _suggested(self, serial: int | None = None) -> str:
+        serial = serial or getattr(getattr(self.window_.connection, "device", None), "serial", None)
         serial = serial or self.window_.doc.source_serial
         return f"{serial}-twin.toml" if serial else "twin.toml"
 
-    def _browse(self) -> None:
+    def _browse(self, serial: int | None = None) -> None:
         path = self.window_.save_file(
-            self.tr("Save the twin file"), self.tr("Twin file (*.toml)"), self._suggested()
+            self.tr("Save the twin file"), self.tr("Twin file (*.toml)"), self._suggested(serial)
         )
         if path is not None:
             self.out.setText(str(path))
 
-    def _target(self) -> Path | None:
-        """The twin file to write (asked for when the field is empty); None: cancelled or a
+    def _target(self, serial: int | None = None) -> Path | None:
+        """The twin file to write for the valve ``serial`` (asked for when the field is empty
+        or names the twin of another serial: never overwritten unasked); None: cancelled or a
         folder that does not exist (the result line says so)."""
         text = self.out.text().strip()
-        if not text:
-            self._browse()
-            text = self.out.text().strip()
-            if not text:
+        if not text or (serial and _twin_serial(Path(text)) not in (None, serial)):
+            chosen = self.window_.save_file(
+                self.tr("Save the twin file"),
+                self.tr("Twin file (*.toml)"),
+                self._suggested(serial),
+            )
+            if chosen is None:  # cancelled: the field keeps what it named
                 return None
+            text = str(chosen)
+            self.out.setText(text)
         path = Path(text)
         if not path.parent.is_dir():
             self.result.setText(
@@ -115,7 +148,7 @@ class TwinPage(Page):
         except ProfileError as exc:
             self.result.setText(error_text(exc))
             return
-        path = self._target()
+        path = self._target(getattr(getattr(connection, "device", None), "serial", None))
         if path is None:
             return
         seconds = planned_s(profile)
@@ -132,7 +165,7 @@ class TwinPage(Page):
         )
         if not name:
             return
-        path = self._target()
+        path = self._target(_report_serial(Path(name)))
         if path is None:
             return
         self.result.setText(self.tr("Fitting the twin of %1…").replace("%1", name))
@@ -200,7 +233,7 @@ class TwinPage(Page):
                 f"{_g(s.difference, 3)} pp" if s.unit == "%" else _g(s.ratio, 3)
             )  # percentage points for the figures in %, else the ratio
             label = figure_label(cast("Figure", s))  # by its name, as the test report's
-            cells = (label, f"{_g(s.valve)} {s.unit}", f"{_g(s.twin)} {s.unit}", compared)
+            cells = (label, _with_unit(s.valve, s.unit), _with_unit(s.twin, s.unit), compared)
             for col, value in enumerate(cells):
                 self.sides.setItem(row, col, QTableWidgetItem(value.strip()))
         self.constants.resizeRowsToContents()
