@@ -18,6 +18,11 @@ The bus's socket (where it has one: udp_multicast, SocketCAN) gets a receive buf
 :data:`RECEIVE_BUFFER` bytes (as far as ``net.core.rmem_max`` allows): the kernel's default
 holds about 200 frames, a 20 ms hold-up of the process at 9 frames a millisecond, and a frame
 the kernel drops for a full buffer is a SYNC or an RPDO the valves never see.
+
+The valves' simulation runs in this thread too (:meth:`SharedBus.pace`, a
+:class:`~.paced_group.PacedGroup` given the bus as its driver): one due batch between two
+frames, and ``recv`` waits no longer than the next batch is due. A paced thread of its own
+took the GIL from this one at every system call of ``recv`` (docs/PERFORMANCE.md).
 """
 
 from __future__ import annotations
@@ -27,12 +32,16 @@ import math
 import socket
 import threading
 import time
+from typing import TYPE_CHECKING
 
 import can
 
 from prm9tool.device.emulator import canopen_udp
 from prm9tool.device.emulator.canopen_lss import LSS_REQUEST
 from prm9tool.device.emulator.canopen_slave import CanopenSlave
+
+if TYPE_CHECKING:
+    from prm9tool.device.emulator.paced_group import PacedGroup
 
 log = logging.getLogger(__name__)
 
@@ -53,6 +62,8 @@ class SharedBus:
         self._stop = threading.Event()
         self._thread = threading.Thread(target=self._receive, name="prm9-canopen-hub", daemon=True)
         self._started = False
+        self._pacing: PacedGroup | None = None
+        self._pacing_lock = threading.Lock()  # held while a batch of it runs
         # python-can's udp_multicast: datagrams decoded without can.Message (canopen_udp)
         self._receive_frame = canopen_udp.receiver(bus) or self._receive_message
         enlarge_receive_buffer(bus)
@@ -72,6 +83,25 @@ class SharedBus:
         self._stop.set()
         if self._started:
             self._thread.join()
+
+    def pace(self, group: PacedGroup | None) -> None:
+        """Run ``group``'s batches in the receive thread from now on (None: no longer;
+        returns when none of its batches runs any more). Starts the thread if need be."""
+        with self._pacing_lock:
+            self._pacing = group
+        if group is not None and not self._started:
+            self._started = True
+            self._thread.start()
+
+    def _step_pacing(self) -> float:
+        """One due batch of the paced group, if any; seconds until the next is due."""
+        with self._pacing_lock:
+            group = self._pacing
+            if group is None:
+                return math.inf
+            if time.monotonic() < group.next_due:
+                return group.next_due - time.monotonic()
+            return group.step_one()
 
     def _reroute(self) -> None:
         routes: dict[int, list[CanopenSlave]] = {}
@@ -97,6 +127,8 @@ class SharedBus:
                 wait_ms = due_ms - now_ms
             else:  # a frame since may have armed an earlier deadline: ask again within 1 ms
                 wait_ms = min(wait_ms, JUDGE_EVERY_MS)
+            if self._pacing is not None:  # the next batch of the simulation
+                wait_ms = min(wait_ms, self._step_pacing() * 1000.0)
             try:
                 frame = receive(max(0.0, wait_ms) / 1000.0)
             except Exception as exc:  # a closed or failing bus must not end the thread silently
