@@ -4,14 +4,18 @@ valves the kernel dropped a third of the frames (docs/PERFORMANCE.md, "The PLC r
 
 from __future__ import annotations
 
+import select
+import socket
+import struct
 import threading
 import time
 
 import can
 import pytest
+from can.interfaces.udp_multicast.bus import SO_TIMESTAMPNS
 from support.waiting import wait_for
 
-from prm9tool.device.emulator import EmulatedValve
+from prm9tool.device.emulator import EmulatedValve, canopen_udp
 from prm9tool.device.emulator.canopen_hub import SharedBus
 from prm9tool.device.emulator.paced_group import PacedGroup
 
@@ -64,3 +68,48 @@ def test_after_stop_no_batch_runs(hub_and_valves):
     hub_thread_waits = 0.05  # the receive thread's next few loops (it waits at most 1 ms each)
     time.sleep(hub_thread_waits)
     assert [valve.time for valve in valves] == stopped
+
+
+class _Wrapper:
+    """What python-can's udp_multicast socket wrapper has that the queued-datagram path uses."""
+
+    timestamp_nanosecond = True
+    max_buffer = 4096
+    received_timestamp_struct = "@ll"
+    received_ancillary_buffer_size = socket.CMSG_SPACE(struct.calcsize("@ll"))
+
+    def __init__(self, sock: socket.socket) -> None:
+        self._socket = sock
+
+
+@pytest.mark.skipif(not hasattr(socket, "MSG_DONTWAIT"), reason="no MSG_DONTWAIT")
+def test_a_queued_datagram_is_taken_with_its_kernel_time_stamp_without_waiting():
+    """The receive thread takes each queued datagram without ``select`` first (one system
+    call, not two); with none queued it says so at once and python-can's ``recv`` waits."""
+    receiving = socket.socket(socket.AF_INET, socket.SOCK_DGRAM)
+    sending = socket.socket(socket.AF_INET, socket.SOCK_DGRAM)
+    try:
+        receiving.bind(("127.0.0.1", 0))
+        receiving.setsockopt(socket.SOL_SOCKET, SO_TIMESTAMPNS, 1)
+        take = canopen_udp._queued(_Wrapper(receiving))
+        assert take is not None
+        assert take() is None  # nothing queued: no wait
+        before = time.time()
+        sending.sendto(canopen_udp.datagram(0x181, b"\x01\x02"), receiving.getsockname())
+        wait_for(lambda: select.select([receiving], [], [], 0)[0])
+        queued = take()
+        assert queued is not None
+        raw, stamp = queued
+        assert canopen_udp.decode(raw) == (0x181, b"\x01\x02")
+        assert before - 1.0 <= stamp <= time.time()  # the kernel's reception time
+        assert take() is None
+    finally:
+        receiving.close()
+        sending.close()
+
+
+def test_a_socket_without_nanosecond_time_stamps_keeps_python_can_s_path():
+    with socket.socket(socket.AF_INET, socket.SOCK_DGRAM) as sock:
+        wrapper = _Wrapper(sock)
+        wrapper.timestamp_nanosecond = False
+        assert canopen_udp._queued(wrapper) is None

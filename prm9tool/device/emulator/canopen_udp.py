@@ -10,7 +10,10 @@ emulated valve's own SYNC and RPDO handling (docs/PERFORMANCE.md, "The PLC rig")
   once, then the data length and the data (bit-identical: tests/test_canopen_udp.py);
 - :func:`receiver` takes a datagram off the socket with its kernel time stamp, as the bus
   does, and decodes it with msgpack's C unpacker to ``(can_id, data, timestamp)``, skipping
-  frames a classical CAN node ignores (extended, remote, error, CAN FD).
+  frames a classical CAN node ignores (extended, remote, error, CAN FD). A datagram already
+  queued is taken without ``select`` first (``MSG_DONTWAIT``, where the socket gives time
+  stamps in nanoseconds: Linux): 2.1 against 3.9 µs a datagram, 17 of them a millisecond at
+  16 valves.
 
 Both reach python-can's socket wrapper (``bus._multicast``, python-can ≥ 4.4); on any other bus,
 or a bus with receive filters, they return None and the caller keeps ``bus.send``/``bus.recv``.
@@ -19,6 +22,8 @@ or a bus with receive filters, they return None and the caller keeps ``bus.send`
 from __future__ import annotations
 
 import logging
+import socket
+import struct
 from collections.abc import Callable
 
 import can
@@ -121,14 +126,62 @@ def receiver(bus: can.BusABC) -> Receive | None:
     if wrapper is None or getattr(bus, "filters", None):
         return None
     recv = wrapper.recv  # type: ignore[attr-defined]
+    take = _queued(wrapper)
 
     def receive(timeout: float | None) -> Frame | None:
-        while result := recv(timeout):
+        while True:
+            queued = take() if take is not None else None
+            if queued is None:
+                result = recv(timeout)
+                if not result:
+                    return None
+                raw, _, timestamp = result
+            else:
+                raw, timestamp = queued
             timeout = 0.0  # after a datagram that is no frame for a classical node: the next
-            raw, _, timestamp = result
             frame = decode(raw)
             if frame is not None:
                 return frame[0], frame[1], timestamp
-        return None
 
     return receive
+
+
+def _queued(wrapper: object) -> Callable[[], tuple[bytes, float] | None] | None:
+    """A function taking the next datagram already queued at python-can's socket with its
+    kernel time stamp (None when none is), as ``wrapper.recv`` would after its ``select``; or
+    None where the socket gives no time stamps in nanoseconds (python-can's own path then)."""
+    sock = getattr(wrapper, "_socket", None)
+    dontwait = getattr(socket, "MSG_DONTWAIT", 0)
+    if not (
+        isinstance(sock, socket.socket)
+        and dontwait
+        and getattr(wrapper, "timestamp_nanosecond", False)
+    ):
+        return None
+    try:
+        from can.interfaces.udp_multicast.bus import SO_TIMESTAMPNS
+    except ImportError:  # pragma: no cover - python-can without the constant
+        return None
+    size = int(getattr(wrapper, "max_buffer", 0))
+    ancillary = int(getattr(wrapper, "received_ancillary_buffer_size", 0))
+    stamp = struct.Struct(str(getattr(wrapper, "received_timestamp_struct", "@ll"))).unpack
+    if not size or not ancillary:
+        return None
+
+    def take() -> tuple[bytes, float] | None:
+        try:
+            raw, control, _, _ = sock.recvmsg(size, ancillary, dontwait)
+        except (BlockingIOError, InterruptedError):
+            return None
+        except OSError as exc:
+            raise can.CanOperationError(f"Failed to receive from IP/UDP socket: {exc}") from exc
+        if len(control) != 1 or control[0][:2] != (socket.SOL_SOCKET, SO_TIMESTAMPNS):
+            raise can.CanOperationError("received control message type that was not requested")
+        seconds, nanoseconds = stamp(control[0][2])
+        if nanoseconds >= 1e9:
+            raise can.CanOperationError(
+                f"Timestamp nanoseconds field was out of range: {nanoseconds}"
+            )
+        return raw, seconds + nanoseconds * 1.0e-9
+
+    return take
