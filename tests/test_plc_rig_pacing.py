@@ -7,10 +7,12 @@ from __future__ import annotations
 import select
 import socket
 import struct
+import sys
 import threading
 import time
 
 import can
+import can.interfaces.udp_multicast.utils as udp_utils
 import pytest
 from can.interfaces.udp_multicast.bus import SO_TIMESTAMPNS
 from support.waiting import wait_for
@@ -113,3 +115,50 @@ def test_a_socket_without_nanosecond_time_stamps_keeps_python_can_s_path():
         wrapper = _Wrapper(sock)
         wrapper.timestamp_nanosecond = False
         assert canopen_udp._queued(wrapper) is None
+
+
+def _arrives(sending: socket.socket, receiving: socket.socket, raw: bytes) -> bool:
+    """Whether ``raw`` sent to ``receiving`` arrives there (a later marker datagram, which
+    always passes, proves the kernel handled the first one)."""
+    marker = b"not a CAN frame"
+    sending.sendto(raw, receiving.getsockname())
+    sending.sendto(marker, receiving.getsockname())
+    first = None
+    while True:
+        wait_for(lambda: select.select([receiving], [], [], 0)[0])
+        got = receiving.recv(4096)
+        if got == marker:
+            return first == raw
+        first = got
+
+
+@pytest.mark.skipif(sys.platform != "linux", reason="Linux socket filters")
+def test_the_kernel_lets_only_the_routed_can_ids_reach_the_served_valves():
+    """The valves' own frames (looped back by multicast) and other nodes' never reach the
+    socket; every routed CAN-ID does, in both python-can's and the lean datagrams, and any
+    datagram that is not a classical frame as python-can lays it out still arrives."""
+    receiving = socket.socket(socket.AF_INET, socket.SOCK_DGRAM)
+    sending = socket.socket(socket.AF_INET, socket.SOCK_DGRAM)
+    try:
+        receiving.bind(("127.0.0.1", 0))
+        routed = {0x000, 0x07F, 0x080, 0x20A, 0x60A, 0x7E5}
+        assert canopen_udp.filter_ids(receiving.fileno(), routed)
+        for can_id in (*routed, 0x18A, 0x58A, 0x70A, 0x005, 0x0FF):
+            for raw in (
+                canopen_udp.datagram(can_id, b"\x0f\x00"),
+                udp_utils.pack_message(
+                    can.Message(
+                        arbitration_id=can_id,
+                        data=b"\x0f",
+                        is_extended_id=False,
+                        timestamp=time.time(),
+                    )
+                ),
+            ):
+                assert _arrives(sending, receiving, raw) is (can_id in routed), hex(can_id)
+        assert _arrives(sending, receiving, b"\x81\xa1x\x01")  # no frame: judged as before
+        assert not canopen_udp.filter_ids(receiving.fileno(), set(range(300)))  # too many ...
+        assert _arrives(sending, receiving, canopen_udp.datagram(0x18A, b""))  # ... none
+    finally:
+        receiving.close()
+        sending.close()

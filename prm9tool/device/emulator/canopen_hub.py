@@ -14,6 +14,11 @@ valves are judged at the arrival of the frame in hand, and when the bus is quiet
 ``recv`` timed out. How long ``recv`` may wait (the next deadline of any valve) is asked of the
 valves at most every :data:`JUDGE_EVERY_MS` too, not per frame (N valves × 2N + 1 frames).
 
+On udp_multicast the socket gets a kernel filter (:func:`.canopen_udp.filter_ids`) that lets
+only the routed CAN-IDs through: every frame the valves send comes back to their own socket
+(multicast loopback, which the PLC on the same PC needs), at 16 valves 16 TPDO1 a millisecond
+that cost a system call and a decoding each and filled half the receive buffer, to be dropped.
+
 The bus's socket (where it has one: udp_multicast, SocketCAN) gets a receive buffer of
 :data:`RECEIVE_BUFFER` bytes (as far as ``net.core.rmem_max`` allows): the kernel's default
 holds about 200 frames, a 20 ms hold-up of the process at 9 frames a millisecond, and a frame
@@ -65,7 +70,9 @@ class SharedBus:
         self._pacing: PacedGroup | None = None
         self._pacing_lock = threading.Lock()  # held while a batch of it runs
         # python-can's udp_multicast: datagrams decoded without can.Message (canopen_udp)
-        self._receive_frame = canopen_udp.receiver(bus) or self._receive_message
+        udp = canopen_udp.receiver(bus)
+        self._receive_frame = udp or self._receive_message
+        self._filtered = udp is not None  # the socket's kernel filter follows the routes
         enlarge_receive_buffer(bus)
 
     def attach(self, slave: CanopenSlave) -> None:
@@ -112,6 +119,8 @@ class SharedBus:
                     if slave not in takers:
                         takers.append(slave)
             self._routes = {can_id: tuple(takers) for can_id, takers in routes.items()}
+            if self._filtered:  # the valves' own frames, looped back, never reach the socket
+                self._filtered = canopen_udp.filter_ids(self._bus.fileno(), set(self._routes))
 
     def _receive(self) -> None:
         judged_ms = 0.0
