@@ -147,10 +147,11 @@ class SharedBus:
                 self._stop.wait(0.1)
                 continue
             now_ms = time.monotonic() * 1000.0
-            if frame is None:
-                for slave in slaves:
-                    slave.judge_quiet(now_ms)
-                judged_ms, asked_ms = now_ms, -math.inf  # judged: ask for the next due now
+            if frame is None:  # quiet until now: judged if a deadline passed (or 1 ms went by)
+                if now_ms >= due_ms or now_ms - judged_ms >= JUDGE_EVERY_MS:  # not when only
+                    for slave in slaves:  # a batch of the simulation was due (8 a ms at 16)
+                        slave.judge_quiet(now_ms)
+                    judged_ms, asked_ms = now_ms, -math.inf  # judged: ask for the next due now
                 continue
             can_id, data, timestamp = frame
             takers = self._routes.get(can_id, ())

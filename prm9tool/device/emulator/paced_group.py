@@ -85,16 +85,18 @@ class PacedGroup:
         the next batch of any valve is due (0: one is due now)."""
         now = time.monotonic()
         due = self._due
-        index = min(range(len(due)), key=due.__getitem__, default=-1)
-        if index >= 0 and due[index] <= now:
+        earliest = min(due, default=math.inf)  # min and index of a list: no Python per valve
+        if earliest <= now:
+            index = due.index(earliest)
             try:
                 wait = self.valves[index].paced_step()
             except Exception:  # a firmware bug must not stop the thread that runs the others
                 log.exception("paced batch of valve %d failed", self.valves[index].serial)
                 wait = 0.1
             due[index] = now + wait
-        self.next_due = min(due, default=math.inf)
-        return max(0.0, self.next_due - now)
+            earliest = min(due)
+        self.next_due = earliest
+        return max(0.0, earliest - now)
 
     def _run(self) -> None:
         while not self._stop.is_set():
