@@ -67,6 +67,18 @@ class CanopenSlave:
         self._length_error = False  # EMCY 8210 reported and not yet reset
         self._tpdo_logic = [TpdoLogic(c, valve) for c in self._tpdos]
         self._rpdo_by_id: dict[int, RpdoLogic] = {}  # the valid RPDOs (_load_config)
+        pdo_addresses = [  # what _load_config reads, in one call
+            (index, sub)
+            for c in (*self._rpdos, *self._tpdos)
+            for index, sub in (
+                (c.comm_index, 1),
+                (c.map_index, 0),
+                (c.comm_index, 2),
+                (c.comm_index, 5),
+            )
+        ]
+        self._config_addresses = (*pdo_addresses, (CYCLE_PERIOD, 0), (SYNC_COB_ID, 0))
+        self._config_values: tuple[int | str, ...] = ()  # as last loaded (node ID first)
         self._now_ms = 0
         self._heartbeat_due_ms = 0
         self._watches = TimingWatches(self._rpdos, lambda: self._period_us, self._on_watch_event)
@@ -411,6 +423,12 @@ class CanopenSlave:
                 self._heartbeat_due_ms = self._now_ms + self._heartbeat_ms()
 
     def _load_config(self) -> None:
+        """The PDO, SYNC and cycle parameters from the object dictionary (every 10 ms while
+        OPERATIONAL: one read of all of them; nothing more unless one or the node ID changed)."""
+        values = (self.node_id, *self._valve.read_values(self._config_addresses))
+        if values == self._config_values:
+            return
+        self._config_values = values
         for channel in (*self._rpdos, *self._tpdos):
             channel.load(self._valve, self._now_ms)
         self._period_us = int(self._valve.read(CYCLE_PERIOD, 0))
