@@ -52,6 +52,7 @@ log = logging.getLogger(__name__)
 
 JUDGE_EVERY_MS = 1.0
 RECEIVE_BUFFER = 4 * 1024 * 1024
+BATCH_LAG_S = 0.005  # frames first while the simulation's due batch waits less than this
 _EVERY_VALVE = (0, LSS_REQUEST)  # NMT and LSS, whatever a valve's state
 
 
@@ -110,6 +111,11 @@ class SharedBus:
                 return group.next_due - time.monotonic()
             return group.step_one()
 
+    def _pacing_behind_s(self) -> float:
+        """How long the paced group's earliest batch has been due (0: none is)."""
+        group = self._pacing
+        return 0.0 if group is None else max(0.0, time.monotonic() - group.next_due)
+
     def _reroute(self) -> None:
         routes: dict[int, list[CanopenSlave]] = {}
         with self._lock:
@@ -126,6 +132,7 @@ class SharedBus:
         judged_ms = 0.0
         receive = self._receive_frame
         due_ms, asked_ms = 0.0, -math.inf  # when a watch is next due; when that was asked
+        queued = False  # the last receive returned a frame: more may be waiting
         while not self._stop.is_set():
             slaves = self._slaves
             now_ms = time.monotonic() * 1000.0
@@ -136,8 +143,12 @@ class SharedBus:
                 wait_ms = due_ms - now_ms
             else:  # a frame since may have armed an earlier deadline: ask again within 1 ms
                 wait_ms = min(wait_ms, JUDGE_EVERY_MS)
-            if self._pacing is not None:  # the next batch of the simulation
+            if self._pacing is not None and not (queued and self._pacing_behind_s() < BATCH_LAG_S):
+                # the next batch of the simulation, when no frame waits (a SYNC's TPDO1 goes
+                # first) or the simulation fell BATCH_LAG_S behind its due time
                 wait_ms = min(wait_ms, self._step_pacing() * 1000.0)
+            elif queued:
+                wait_ms = 0.0  # frames came one after another: take the next one at once
             try:
                 frame = receive(max(0.0, wait_ms) / 1000.0)
             except Exception as exc:  # a closed or failing bus must not end the thread silently
@@ -146,6 +157,7 @@ class SharedBus:
                 log.warning("CAN receive failed: %s", exc)
                 self._stop.wait(0.1)
                 continue
+            queued = frame is not None
             now_ms = time.monotonic() * 1000.0
             if frame is None:  # quiet until now: judged if a deadline passed (or 1 ms went by)
                 if now_ms >= due_ms or now_ms - judged_ms >= JUDGE_EVERY_MS:  # not when only
