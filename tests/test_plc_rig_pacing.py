@@ -162,3 +162,56 @@ def test_the_kernel_lets_only_the_routed_can_ids_reach_the_served_valves():
     finally:
         receiving.close()
         sending.close()
+
+
+class _Recorder:
+    """A served valve and a paced group as the receive thread sees them, logging its calls."""
+
+    routes = frozenset({0x080})
+
+    def __init__(self) -> None:
+        self.log: list[str] = []
+        self.routes_changed = lambda: None
+        self.next_due = 0.0
+        self.first_batch_runs = threading.Event()
+        self.release = threading.Event()
+
+    def rx_wait_s(self) -> float:
+        return 0.1
+
+    def judge_quiet(self, _until_ms: float, wait: bool = True) -> None:
+        pass
+
+    def receive_data(self, can_id: int, data: bytes, _timestamp: float) -> None:
+        self.log.append(f"frame {data.hex()}")
+
+    def step_one(self) -> float:
+        if not self.log:  # the first batch holds the thread while the frames queue up
+            self.first_batch_runs.set()
+            self.release.wait(5.0)
+        self.log.append("batch")
+        self.next_due = time.monotonic()  # another valve's batch is due at once
+        time.sleep(0.0005)  # not a busy loop of batches while the test waits
+        return 0.0
+
+
+def test_queued_frames_are_taken_before_the_next_batch_of_the_simulation():
+    """A SYNC waiting in the socket is answered before the simulation's next batch runs
+    (a batch is 16 µs a valve: 32 of them between a SYNC and its TPDO1s cost its deadline)."""
+    channel = f"prm9tool-order-{time.monotonic_ns()}"
+    bus, master = (can.Bus(interface="virtual", channel=channel) for _ in range(2))
+    hub = SharedBus(bus)
+    recorder = _Recorder()
+    try:
+        hub.attach(recorder)  # type: ignore[arg-type]
+        hub.pace(recorder)  # type: ignore[arg-type]
+        assert recorder.first_batch_runs.wait(5.0)
+        for k in range(3):
+            master.send(can.Message(arbitration_id=0x080, data=bytes([k]), is_extended_id=False))
+        recorder.release.set()
+        wait_for(lambda: recorder.log.count("batch") >= 3)
+    finally:
+        hub.stop()
+        bus.shutdown()
+        master.shutdown()
+    assert recorder.log[:5] == ["batch", "frame 00", "frame 01", "frame 02", "batch"]
