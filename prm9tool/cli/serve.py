@@ -89,7 +89,8 @@ def run(args: argparse.Namespace) -> int:
         print(f"prm9tool: {exc}", file=sys.stderr)
         return ExitCode.COMMUNICATION
     previous = _on_signals(lambda *_: stop.set())
-    pacing = PacedGroup([item.valve for item in served])  # one thread runs them all
+    # the bus's receive thread runs them all between frames: no paced thread to take its GIL
+    pacing = PacedGroup([item.valve for item in served], driver=shared.hub)
     pacing.start()
     serve_input.listen(sys.stdin, [item.valve for item in served], _say)
     try:

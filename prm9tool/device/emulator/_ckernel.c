@@ -494,7 +494,8 @@ static PyObject *run(PyObject *self, PyObject *args)
         samples = cycles(st, c, in, done, cap, prog);
         countdown -= done;
     } else {
-        const long max_ticks = (long)t[T_MAX_TICKS];
+        /* int64_t, not long: Windows' long has 32 bits, and (long)2^40 there was negative */
+        const int64_t max_ticks = (int64_t)t[T_MAX_TICKS];
         const int64_t count0 = (int64_t)t[T_CYCLES0], ticks0 = (int64_t)t[T_TICKS0];
         while (done < n) {
             long seg = n - done < countdown ? n - done : countdown;

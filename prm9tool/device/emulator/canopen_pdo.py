@@ -28,12 +28,17 @@ CHANGE_INHIBIT_MS = 10  # decision: event timer 0 -> on change, at most every 10
 CONTROL_MODE = CATALOGUE["CTRLMODE"].key  # 0x6043
 
 
+Entries = tuple[tuple[int, int, int], ...]  # (index, subindex, bits) of each mapped object
+
+
 class Dictionary(Protocol):
     """The part of the emulated valve a PDO channel needs."""
 
     def read(self, index: int, subindex: int) -> int | str: ...
     def read_bytes(self, index: int, subindex: int) -> bytes: ...
     def write_bytes(self, index: int, subindex: int, data: bytes) -> None: ...
+    def read_mapped(self, entries: Entries) -> bytes: ...
+    def write_mapped(self, entries: Entries, data: bytes) -> list[SdoAbortError]: ...
 
 
 @functools.cache
@@ -41,9 +46,6 @@ def _mapping_parameters(map_index: int) -> tuple[Parameter, ...]:
     """The catalogue's entries of a mapping object (fixed: computed once, not per frame)."""
     entries = [p for p in CATALOGUE if p.index == map_index and p.subindex > 0]
     return tuple(sorted(entries, key=lambda p: p.subindex))
-
-
-Entries = tuple[tuple[int, int, int], ...]  # (index, subindex, bits) of each mapped object
 
 
 def mapping(valve: Dictionary, map_index: int) -> Entries:
@@ -62,6 +64,12 @@ def _entries(map_index: int, mode: int, count: int) -> Entries:
         value = mapping_for_control_mode(param, mode)
         result.append((value >> 16, (value >> 8) & 0xFF, value & 0xFF))
     return tuple(result)
+
+
+@functools.cache
+def mapped_size(entries: Entries) -> int:
+    """The bytes a PDO mapping these entries carries."""
+    return sum(bits // 8 for _, _, bits in entries)
 
 
 @dataclass
@@ -143,10 +151,7 @@ class TpdoLogic:
         entries = channel_mapping(self._valve, self.channel)
         if not entries:
             return None  # a TPDO that maps nothing is never sent
-        return b"".join(
-            self._valve.read_bytes(index, subindex)[: bits // 8]
-            for index, subindex, bits in entries
-        )
+        return self._valve.read_mapped(entries)
 
     def on_sync(self) -> bytes | None:
         """Data to send on a SYNC (transmission types 0-240), or None."""
@@ -222,15 +227,9 @@ class RpdoLogic:
         """Write the mapped objects; a too short frame is refused (CiA 301 EMCY 0x8210)."""
         if entries is None:
             entries = channel_mapping(self._valve, self.channel)
-        if len(data) < sum(bits // 8 for _, _, bits in entries):
+        if len(data) < mapped_size(entries):
             self._length_error()
             return
         self._length_ok()
-        offset = 0
-        for index, subindex, bits in entries:
-            size = bits // 8
-            try:
-                self._valve.write_bytes(index, subindex, data[offset : offset + size])
-            except SdoAbortError as exc:
-                log.info("RPDO%d: %s", self.channel.number, exc)
-            offset += size
+        for exc in self._valve.write_mapped(entries, data):
+            log.info("RPDO%d: %s", self.channel.number, exc)

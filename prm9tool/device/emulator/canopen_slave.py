@@ -66,6 +66,19 @@ class CanopenSlave:
         ]
         self._length_error = False  # EMCY 8210 reported and not yet reset
         self._tpdo_logic = [TpdoLogic(c, valve) for c in self._tpdos]
+        self._rpdo_by_id: dict[int, RpdoLogic] = {}  # the valid RPDOs (_load_config)
+        pdo_addresses = [  # what _load_config reads, in one call
+            (index, sub)
+            for c in (*self._rpdos, *self._tpdos)
+            for index, sub in (
+                (c.comm_index, 1),
+                (c.map_index, 0),
+                (c.comm_index, 2),
+                (c.comm_index, 5),
+            )
+        ]
+        self._config_addresses = (*pdo_addresses, (CYCLE_PERIOD, 0), (SYNC_COB_ID, 0))
+        self._config_values: tuple[int | str, ...] = ()  # as last loaded (node ID first)
         self._now_ms = 0
         self._heartbeat_due_ms = 0
         self._watches = TimingWatches(self._rpdos, lambda: self._period_us, self._on_watch_event)
@@ -270,20 +283,24 @@ class CanopenSlave:
         elif can_id == self._sync_id:
             self._on_sync(arrival_ms)
         elif self.state is NmtState.OPERATIONAL:
-            for logic in self._rpdo_logic:
-                if logic.channel.valid and logic.channel.can_id == can_id and logic.received(data):
-                    self._watches.rpdo_received(logic.channel, arrival_ms)
+            logic = self._rpdo_by_id.get(can_id)  # the valid RPDOs by CAN-ID (_load_config)
+            if logic is not None and logic.received(data):
+                self._watches.rpdo_received(logic.channel, arrival_ms)
+                if self._watch_errors:
                     self._watch_error_gone("rpdo_timeout", "rpdo_ok")
 
     def _on_sync(self, arrival_ms: float) -> None:
         if self.state is not NmtState.OPERATIONAL:
             return
-        self._watch_error_gone("sync_error", "sync_ok")
+        if self._watch_errors:
+            self._watch_error_gone("sync_error", "sync_ok")
         self._watches.sync_received(arrival_ms)
         for rpdo in self._rpdo_logic:
-            rpdo.on_sync()
+            if rpdo.channel.pending is not None:
+                rpdo.on_sync()
         for tpdo in self._tpdo_logic:
-            self._transmit(tpdo, tpdo.on_sync())
+            if (data := tpdo.on_sync()) is not None:
+                self._transmit(tpdo, data)
 
     def _send(self, can_id: int, data: bytes) -> None:
         if self._now_ms < self._silent_until_ms:
@@ -406,11 +423,21 @@ class CanopenSlave:
                 self._heartbeat_due_ms = self._now_ms + self._heartbeat_ms()
 
     def _load_config(self) -> None:
+        """The PDO, SYNC and cycle parameters from the object dictionary (every 10 ms while
+        OPERATIONAL: one read of all of them; nothing more unless one or the node ID changed)."""
+        values = (self.node_id, *self._valve.read_values(self._config_addresses))
+        if values == self._config_values:
+            return
+        self._config_values = values
         for channel in (*self._rpdos, *self._tpdos):
             channel.load(self._valve, self._now_ms)
         self._period_us = int(self._valve.read(CYCLE_PERIOD, 0))
         self._sync_id = int(self._valve.read(SYNC_COB_ID, 0)) & 0x7FF
-        rpdo_ids = (c.can_id for c in self._rpdos if c.valid)
+        self._rpdo_by_id = {}
+        for logic in reversed(self._rpdo_logic):  # two on one CAN-ID: the first takes it
+            if logic.channel.valid:
+                self._rpdo_by_id[logic.channel.can_id] = logic
+        rpdo_ids = tuple(self._rpdo_by_id)
         routes = frozenset((0, LSS_REQUEST, self._sync_id, 0x600 + self.node_id, *rpdo_ids))
         if routes != self.routes:
             self.routes = routes

@@ -26,7 +26,10 @@ if TYPE_CHECKING:
     from prm9tool.device.emulator.fwstate import FirmwareState
 
 MAX_DEADLINES = 16  # _ckernel.c: room for detection delays and display holds
-MAX_TICKS = 1 << 40  # no limit: the batch's length bounds it
+# no limit (a batch's length bounds the ticks), and it fits a C long on every platform: 1 << 40
+# was cast to a 32-bit long on Windows (LLP64) and came out negative, so the kernel gave every
+# 1 ms task back to Python (no faster than the Python loop, 33x the parameters() calls)
+MAX_TICKS = 2**31 - 1
 THERMAL_DT = thermal.THERMAL_TICKS * TICK_CYCLES * CYCLE_S  # as Firmware.tick computes it
 TICK_DEADLINES = 44  # _ckernel.c: where the deadlines start (checked by ckernel.py)
 TICK_RISE, TICK_TEMPERATURE = 37, 38  # _ckernel.c: the thermal state the kernel writes back

@@ -72,6 +72,9 @@ class ObjectDictionary:
         self.hooks: dict[Key, Hook] = {}
         self.checks: dict[Key, Hook] = {}
         self.on_change: Callable[[str], None] | None = None
+        # PDO mappings' entries resolved once: ((index, subindex, bits), ...) -> (param, bytes)
+        self._mapped: dict[tuple[tuple[int, int, int], ...], tuple[tuple[Parameter, int], ...]]
+        self._mapped = {}
 
     # --- lookups -----------------------------------------------------------------------
     def entry(self, index: int, subindex: int) -> Parameter:
@@ -136,6 +139,32 @@ class ObjectDictionary:
         """Read and encode per the catalogue data type (little-endian)."""
         param = self.entry(index, subindex)
         return param.dtype.encode(self._read(param))
+
+    def read_mapped(self, entries: tuple[tuple[int, int, int], ...]) -> bytes:
+        """What a PDO mapping ``(index, subindex, bits)`` entries carries: :meth:`read_bytes`
+        of each, cut to its bits, joined (an entry that does not exist aborts)."""
+        plan = self._mapped.get(entries)
+        if plan is None:
+            plan = tuple((self.entry(index, sub), bits // 8) for index, sub, bits in entries)
+            self._mapped[entries] = plan
+        read = self._read
+        return b"".join([param.dtype.encode(read(param))[:size] for param, size in plan])
+
+    def write_mapped(
+        self, entries: tuple[tuple[int, int, int], ...], data: bytes
+    ) -> list[SdoAbortError]:
+        """:meth:`write_bytes` of each entry's bytes of ``data`` in turn (long enough: the
+        caller checked); the entries that refused their value, as their aborts."""
+        refused: list[SdoAbortError] = []
+        offset = 0
+        for index, sub, bits in entries:
+            size = bits // 8
+            try:
+                self.write_bytes(index, sub, data[offset : offset + size])
+            except SdoAbortError as exc:
+                refused.append(exc)
+            offset += size
+        return refused
 
     def read_encoded(self, addresses: Iterable[Key], room: int) -> list[bytes | int]:
         """:meth:`read_bytes` of ``addresses`` in order, a refused entry as its abort code, as

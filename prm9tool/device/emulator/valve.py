@@ -31,7 +31,7 @@ from prm9tool.device.emulator.states import Fault
 from prm9tool.device.emulator.valve_canopen import CanopenSide
 from prm9tool.device.leds import leds
 from prm9tool.device.records import DeviceState, ValveStatus
-from prm9tool.errors import AccessDeniedError, ValueRangeError
+from prm9tool.errors import AccessDeniedError, SdoAbortError, ValueRangeError
 
 if TYPE_CHECKING:
     import can
@@ -115,6 +115,24 @@ class EmulatedValve:
         """Read an object encoded per its catalogue data type (little-endian)."""
         with self.lock:
             return self._fw.od.read_bytes(index, subindex)
+
+    def read_values(self, addresses: tuple[tuple[int, int], ...]) -> tuple[int | str, ...]:
+        """:meth:`read` of each address, under one lock (the CANopen slave's parameter poll)."""
+        with self.lock:
+            read = self._fw.od.read
+            return tuple(read(index, subindex) for index, subindex in addresses)
+
+    def read_mapped(self, entries: tuple[tuple[int, int, int], ...]) -> bytes:
+        """A PDO's data: the mapped ``(index, subindex, bits)`` objects encoded and joined."""
+        with self.lock:
+            return self._fw.od.read_mapped(entries)
+
+    def write_mapped(
+        self, entries: tuple[tuple[int, int, int], ...], data: bytes
+    ) -> list[SdoAbortError]:
+        """A received PDO's data into the mapped objects; the aborts of those that refused."""
+        with self.lock:
+            return self._fw.od.write_mapped(entries, data)
 
     def read_encoded(self, addresses: Iterable[tuple[int, int]], room: int) -> list[bytes | int]:
         """Encoded values (abort codes for refused entries) that fit ``room`` bytes of a USB
