@@ -180,8 +180,11 @@ def test_a_figure_not_measured_is_a_dash_without_a_unit(qtbot, tmp_path):
     sides = [
         Side("step_5_settling_s", "step 5 %: settling time", "s", math.nan, math.nan),
         Side("step_25_settling_s", "step 25 %: settling time", "s", 0.0244, 0.0158),
+        Side("step_25_overshoot_pct", "step 25 %: overshoot", "%", 2.0, 1.5),
     ]
     w.twin.show_result(ProvenTwin(SimpleNamespace(fit=fit, path=tmp_path / "t.toml"), sides))
     rows = list(_rows(w.twin.sides).values())
     assert rows[0][1:] == ["—", "—", "—"]
-    assert rows[1][1:3] == ["0.0244 s", "0.0158 s"]
+    assert rows[1][1:] == ["0.0244 s", "0.0158 s", "×0.648 (twin/valve)"]  # each row its kind
+    assert rows[2][3] == "−0.5 pp (twin − valve)"
+    assert w.twin.sides.horizontalHeaderItem(3).text() == "Twin compared with valve"

@@ -82,3 +82,26 @@ def test_the_proof_emulates_the_object_dictionary_the_valve_had():
     decided = next(p.key for p in CATALOGUE if not p.address_from_manual)
     assert object_dictionary(SimpleNamespace(parameters=manual)) == "manual"
     assert object_dictionary(SimpleNamespace(parameters={**manual, decided: 0})) == "full"
+
+
+def test_the_table_says_not_reached_and_each_rows_kind_of_comparison():
+    """A settling time neither side reached reads "not reached", never nan; the last column
+    says per row whether it is a difference in pp (figures in %) or a ratio."""
+    import math
+
+    from prm9tool.twin.proof import Side
+
+    header, unreached, overshoot, bandwidth, zero = table(
+        [
+            Side("step_5_settling_s", "step 5 %: settling time", "s", math.nan, math.nan),
+            Side("step_5_overshoot_pct", "step 5 %: overshoot", "%", 2.0, 2.5),
+            Side("bode_bandwidth_hz", "−3 dB frequency", "Hz", 40.0, 39.0),
+            Side("step_5_delay_s", "step 5 %: delay", "s", 0.0, 0.001),
+        ]
+    )
+    assert "nan" not in "\n".join([header, unreached, overshoot, bandwidth, zero])
+    assert header.split()[-4:] == ["twin", "compared", "with", "valve"]
+    assert unreached.split()[-6:] == ["not", "reached", "not", "reached", "s", "—"]
+    assert overshoot.endswith("%     +0.5 pp (twin − valve)")
+    assert bandwidth.endswith("Hz    ×0.975 (twin/valve)")
+    assert zero.endswith("s     —")  # no ratio to a valve's 0

@@ -5238,6 +5238,14 @@ Nejprve přepněte na Expert (Náhled → Úroveň oprávnění), nebo zkoušku 
             <translation>(viditelné jen společně s %1)</translation>
         </message>
         <message>
+            <source>%1 pp (twin − valve)</source>
+            <translation>%1 p. b. (dvojče − ventil)</translation>
+        </message>
+        <message>
+            <source>×%1 (twin/valve)</source>
+            <translation>×%1 (dvojče/ventil)</translation>
+        </message>
+        <message>
             <source>steps</source>
             <translation>skoky</translation>
         </message>
@@ -5298,8 +5306,8 @@ Nejprve přepněte na Expert (Náhled → Úroveň oprávnění), nebo zkoušku 
             <translation>Dvojče</translation>
         </message>
         <message>
-            <source>Twin − valve, twin/valve</source>
-            <translation>Dvojče − ventil, dvojče/ventil</translation>
+            <source>Twin compared with valve</source>
+            <translation>Dvojče ve srovnání s ventilem</translation>
         </message>
     </context>
     <context>

@@ -5216,6 +5216,14 @@ Wechseln Sie zuerst zu Experte (Ansicht → Berechtigungsstufe) oder starten Sie
             <translation>(nur zusammen mit %1 sichtbar)</translation>
         </message>
         <message>
+            <source>%1 pp (twin − valve)</source>
+            <translation>%1 Pp (Zwilling − Ventil)</translation>
+        </message>
+        <message>
+            <source>×%1 (twin/valve)</source>
+            <translation>×%1 (Zwilling/Ventil)</translation>
+        </message>
+        <message>
             <source>steps</source>
             <translation>Sprünge</translation>
         </message>
@@ -5276,8 +5284,8 @@ Wechseln Sie zuerst zu Experte (Ansicht → Berechtigungsstufe) oder starten Sie
             <translation>Zwilling</translation>
         </message>
         <message>
-            <source>Twin − valve, twin/valve</source>
-            <translation>Zwilling − Ventil, Zwilling/Ventil</translation>
+            <source>Twin compared with valve</source>
+            <translation>Zwilling verglichen mit dem Ventil</translation>
         </message>
     </context>
     <context>

@@ -13,6 +13,8 @@ from typing import TYPE_CHECKING
 from prm9tool.errors import Prm9Error
 
 if TYPE_CHECKING:
+    from collections.abc import Callable, Mapping
+
     from prm9tool.characterize.run import Characterization
     from prm9tool.device.emulator import EmulatedValve
 
@@ -144,10 +146,44 @@ def side_by_side(run: Characterization, again: Characterization) -> list[Side]:
     ]
 
 
+# How the last column compares a figure, by its kind ("%1" the number): the figures in % by
+# their difference in percentage points, the others by their ratio. The GUI passes its
+# translations of the same texts.
+COMPARED = {"difference": "%1 pp (twin − valve)", "ratio": "×%1 (twin/valve)"}
+NOT_REACHED = "not reached"  # a figure not measured (a settling time never reached: nan)
+
+
+def compared(
+    side: Side,
+    number: Callable[[float], str] = lambda v: f"{v:.3g}",
+    texts: Mapping[str, str] = COMPARED,
+    nothing: str = "—",
+) -> str:
+    """The last column's cell of ``side``: ``+0.42 pp (twin − valve)`` for a figure in %,
+    ``×0.987 (twin/valve)`` for the others; ``nothing`` where there is nothing to compare (a
+    figure one side did not reach, a valve's figure of 0). ``number`` writes the number (the
+    GUI's in the program language), ``texts`` the kinds (:data:`COMPARED`, translated)."""
+    if side.unit == "%":
+        kind, value = "difference", side.difference
+        shown = number(value) if value < 0 else "+" + number(value)
+    else:
+        kind, value = "ratio", side.ratio
+        shown = number(value)
+    if not math.isfinite(value):
+        return nothing
+    return texts[kind].replace("%1", shown)
+
+
 def table(sides: list[Side]) -> list[str]:
-    """The side-by-side as text lines (the command line's)."""
-    lines = [f"{'figure':<34} {'valve':>10} {'twin':>10}  twin/valve"]
+    """The side-by-side as text lines (the command line's): a figure not reached is "not
+    reached", the last column says each row's kind of comparison (:func:`compared`)."""
+
+    def value(v: float) -> str:
+        return f"{v:.4g}" if math.isfinite(v) else NOT_REACHED
+
+    lines = [f"{'figure':<34} {'valve':>11} {'twin':>11}  {'unit':<4}  twin compared with valve"]
     for s in sides:
-        extra = f"{s.difference:+.2f} pp" if s.unit == "%" else f"{s.ratio:.3f}"
-        lines.append(f"{s.label:<34} {s.valve:>10.4g} {s.twin:>10.4g}  {extra}  {s.unit}")
+        lines.append(
+            f"{s.label:<34} {value(s.valve):>11} {value(s.twin):>11}  {s.unit:<4}  {compared(s)}"
+        )
     return lines

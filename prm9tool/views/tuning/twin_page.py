@@ -7,7 +7,7 @@ the twin, writes the twin file and records the run and the twin in the history �
 (:mod:`prm9tool.online.twin_fit`). **Fit from a report…** does what ``--fit-twin OUT.toml
 --from RUN.json`` does, with or without a valve. The page shows the fit report: the residuals,
 each constant and whether the data determine it, and the twin characterized as the valve was
-(twin/valve).
+(a figure in % by twin − valve in percentage points, the others by twin/valve).
 """
 
 from __future__ import annotations
@@ -26,6 +26,7 @@ from prm9tool.i18n import format_significant
 from prm9tool.online.twin_fit import ReportFit, history_of, valve_procedure
 from prm9tool.service.twin import ProvenTwin
 from prm9tool.translate import error_text
+from prm9tool.twin import proof
 from prm9tool.views.files import dialogs as file_dialogs
 from prm9tool.views.tuning.host import TuningHost, figure_table
 from prm9tool.views.tuning.pages import Page
@@ -227,11 +228,11 @@ class TwinPage(Page):
                 state += " " + self.tr("(seen only with %1)").replace("%1", c.correlated_with)
             for col, value in enumerate((c.name, _g(c.start), _g(c.value), state)):
                 self.constants.setItem(row, col, QTableWidgetItem(value))
+        kinds = {"difference": self.tr("%1 pp (twin − valve)"),
+                 "ratio": self.tr("×%1 (twin/valve)")}  # fmt: skip
         self.sides.setRowCount(len(result.sides))
         for row, s in enumerate(result.sides):
-            compared = (
-                f"{_g(s.difference, 3)} pp" if s.unit == "%" else _g(s.ratio, 3)
-            )  # percentage points for the figures in %, else the ratio
+            compared = proof.compared(s, lambda v: _g(v, 3), kinds)  # the command line's
             label = figure_label(cast("Figure", s))  # by its name, as the test report's
             cells = (label, _with_unit(s.valve, s.unit), _with_unit(s.twin, s.unit), compared)
             for col, value in enumerate(cells):
@@ -269,7 +270,7 @@ class TwinPage(Page):
                 self.tr("Figure"),
                 self.tr("Valve"),
                 self.tr("Twin"),
-                self.tr("Twin − valve, twin/valve"),
+                self.tr("Twin compared with valve"),
             ]
         )
         if self.last is not None:
