@@ -39,7 +39,10 @@ def test_a_restart_of_a_ca_valve_says_it_waits_for_its_master(capsys):
     args = ["--emulator", f"{E02_CA}:7403", "--restart", "--hydraulics-safe"]
     assert main(args) == ExitCode.OK
     captured = capsys.readouterr()
-    assert "the spool returns to its spring-centred position" in captured.err
+    assert captured.err == (  # what is done, not the refusal's "only allowed with …"
+        "prm9tool: --restart: restarting the valve (hydraulics confirmed safe): the spool "
+        "returns to its spring-centred position and the setpoint is ignored for a few seconds …\n"
+    )
     lines = captured.out.splitlines()
     assert lines[0].startswith("the valve restarted; it runs with its stored parameters (")
     assert lines[1] == (
@@ -92,3 +95,25 @@ def test_disable_over_can_before_a_heartbeat_does_not_say_nmt_unknown(capsys, tm
     out = capsys.readouterr().out
     assert "NMT unknown" not in out
     assert out.startswith("device state INIT, NMT state not heard yet (it answers SDO: ")
+
+
+def test_confirmed_enable_and_disable_say_what_they_do_not_the_warning(capsys):
+    for flag, said in (
+        ("--enable", "enabling the valve (hydraulics confirmed safe): it follows its setpoint"),
+        ("--disable", "disabling the valve (hydraulics confirmed safe): the spool returns to "
+         "its rest position"),
+    ):  # fmt: skip
+        assert main(["--emulator", f"{E02_CA}:7405", flag, "--hydraulics-safe"]) == ExitCode.OK
+        assert capsys.readouterr().err == f"prm9tool: {flag}: {said} …\n"
+
+
+def test_a_confirmed_factory_reset_says_what_it_does(capsys):
+    args = ["--emulator", f"{E02}:7406", "--restore-factory", "--hydraulics-safe"]
+    assert main(args) == ExitCode.OK
+    err = capsys.readouterr().err
+    assert err == (
+        "prm9tool: --restore-factory: restoring the factory values (hydraulics confirmed safe), "
+        "then restarting the valve: the spool returns to its spring-centred position and the "
+        "setpoint is ignored for a few seconds …\n"
+    )
+    assert "only allowed with" not in err

@@ -54,6 +54,19 @@ DISABLE_WARNING = (
 WARNINGS = {"restart": RESTART_WARNING, "restore_factory": FACTORY_WARNING,
             "enable": ENABLE_WARNING, "disable": DISABLE_WARNING}  # fmt: skip
 
+# What is being done, once --hydraulics-safe confirmed the warning (the warning itself, shown
+# after the confirmation, read like a refusal)
+DOING = {
+    "restart": "restarting the valve (hydraulics confirmed safe): the spool returns to its "
+    "spring-centred position and the setpoint is ignored for a few seconds",
+    "restore_factory": "restoring the factory values (hydraulics confirmed safe), then "
+    "restarting the valve: the spool returns to its spring-centred position and the setpoint "
+    "is ignored for a few seconds",
+    "enable": "enabling the valve (hydraulics confirmed safe): it follows its setpoint",
+    "disable": "disabling the valve (hydraulics confirmed safe): the spool returns to its rest "
+    "position",
+}
+
 
 def command_of(args: argparse.Namespace) -> str | None:
     """The valve command ``args`` name alone (``--enable`` beside a test is that test's)."""
@@ -100,7 +113,7 @@ def _run(flag: str, valve: Valve) -> tuple[dict[str, Any], list[str]]:
     service = valve.service
     if flag in ("--enable", "--disable"):
         takes_control_word(service)  # CANopen off: refused, nothing sent (exit 2)
-    print(f"prm9tool: {flag}: {WARNINGS[COMMANDS[flag]]}", file=sys.stderr)
+    print(f"prm9tool: {flag}: {DOING[COMMANDS[flag]]} …", file=sys.stderr)
     if flag == "--restart":
         values = service.restart_and_read()  # the window's Restart valve (recorded)
         said = [f"the valve restarted; it runs with its stored parameters ({len(values)} read)"]
