@@ -7,6 +7,7 @@ from __future__ import annotations
 import pytest
 
 from prm9tool.cli.main import main
+from prm9tool.cli.parser import SHORT_USAGE
 from prm9tool.errors import ExitCode
 
 E02 = "PRM9-06.3Z11/30-24E02S02"
@@ -124,7 +125,8 @@ KEPT = [
 def test_a_rule_argparse_cannot_say_is_refused_in_words(argv, words, capsys):
     assert main(argv) == ExitCode.USAGE
     err = capsys.readouterr().err
-    assert f"prm9tool: error: {words}" in err, err.splitlines()[-1]
+    assert err.startswith(f"{SHORT_USAGE}\nprm9tool: error: {words}"), err
+    assert len(err.splitlines()) == 2  # one usage line and the sentence, not 27 lines
 
 
 ARGPARSE = [
@@ -141,4 +143,20 @@ ARGPARSE = [
 def test_argparse_refuses_two_commands_of_one_group(argv, second, first, capsys):
     assert main(argv) == ExitCode.USAGE
     err = capsys.readouterr().err
-    assert f"argument {second}: not allowed with argument {first}" in err
+    assert (
+        err
+        == f"{SHORT_USAGE}\nprm9tool: error: argument {second}: not allowed with argument {first}\n"
+    )
+
+
+def test_a_refusal_prints_one_usage_line_and_help_the_whole_usage(capsys):
+    assert SHORT_USAGE == "usage: prm9tool [options] [file] — prm9tool --help lists them"
+    assert main(["--no-such-option"]) == ExitCode.USAGE
+    assert capsys.readouterr().err.splitlines() == [
+        SHORT_USAGE,
+        "prm9tool: error: unrecognized arguments: --no-such-option",
+    ]
+    assert main(["--help"]) == ExitCode.OK
+    shown = capsys.readouterr().out
+    assert shown.startswith("usage: prm9tool [-h] [--version]")  # argparse's, unchanged
+    assert "--restore-factory" in shown.split("\n\n", 1)[0]  # the whole usage

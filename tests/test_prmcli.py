@@ -9,6 +9,7 @@ import sys
 
 import pytest
 
+from prm9tool.cli.parser import SHORT_USAGE
 from prm9tool.errors import ExitCode
 from prm9tool.files.prmfile import read_file
 
@@ -95,10 +96,12 @@ def test_new_never_overwrites_an_existing_file(tmp_path):
 def test_new_usage_errors(tmp_path, args, message):
     result = prm9tool(*args, cwd=tmp_path)
     assert result.returncode == ExitCode.USAGE
-    assert result.stderr.endswith(  # argparse's refusals start with the usage lines
-        f"prm9tool: error: {message}"
-        + (" (or -o - for standard output)\n" if "-o FILE" in message else "\n")
+    refusal = f"prm9tool: error: {message}" + (
+        " (or -o - for standard output)\n" if "-o FILE" in message else "\n"
     )
+    # argparse's refusal after one short usage line (not 27); --new's own without a usage
+    assert result.stderr in (refusal, f"{SHORT_USAGE}\n{refusal}")
+    assert ("not allowed with" in message) == result.stderr.startswith(SHORT_USAGE)
     assert list(tmp_path.iterdir()) == []
 
 

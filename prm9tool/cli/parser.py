@@ -4,6 +4,7 @@ production mode, the end-of-line test, device selection, compare and history (do
 from __future__ import annotations
 
 import argparse
+from typing import NoReturn
 
 from prm9tool.errors import ExitCode
 
@@ -22,6 +23,17 @@ EXIT_CODE_TEXT = {
     "--autotune: the proposal fails it; --signature: a figure drifted beyond its limit",
 }
 DIFF_EXIT_TEXT = "--diff: 0 equal, 1 they differ, 3 invalid file, 4 no such valve"
+
+# A refusal's usage: one line, not the 27 lines of the whole usage before its one sentence
+SHORT_USAGE = "usage: prm9tool [options] [file] — prm9tool --help lists them"
+
+
+class Parser(argparse.ArgumentParser):
+    """argparse's parser whose refusals print :data:`SHORT_USAGE` and the sentence (exit 2);
+    ``--help`` prints the whole usage, as argparse's."""
+
+    def error(self, message: str) -> NoReturn:
+        self.exit(ExitCode.USAGE, f"{SHORT_USAGE}\n{self.prog}: error: {message}\n")
 
 
 def add_device_options(parser: argparse.ArgumentParser) -> None:
@@ -133,7 +145,7 @@ def node_id_arg(text: str) -> int | str:
 
 def build_parser() -> argparse.ArgumentParser:
     """The complete argument parser."""
-    parser = argparse.ArgumentParser(
+    parser = Parser(
         prog="prm9tool",
         description="Parameterize PRM9 proportional valves (GUI, file tools, batch upload).",
         epilog=_epilog(),
