@@ -12,7 +12,7 @@ from prm9tool.characterize.rig import EmulatorRig
 from prm9tool.device.emulator import EmulatedValve
 from prm9tool.device.emulator.constants import PLANT
 from prm9tool.twin.fitvalve import fit_valve
-from prm9tool.twin.proof import characterize_twin, side_by_side, table
+from prm9tool.twin.proof import characterize_twin, compared, side_by_side, table
 
 E02 = "PRM9-06.3Z11/30-24E02S02"
 VALVES = {  # two of benchmarks/bench_twin.py's six, which the plant structure represents
@@ -102,6 +102,7 @@ def test_the_table_says_not_reached_and_each_rows_kind_of_comparison():
     assert "nan" not in "\n".join([header, unreached, overshoot, bandwidth, zero])
     assert header.split()[-4:] == ["twin", "compared", "with", "valve"]
     assert unreached.split()[-6:] == ["not", "reached", "not", "reached", "s", "—"]
-    assert overshoot.endswith("%     +0.5 pp (twin − valve)")
+    assert overshoot.endswith("%     +0.50 pp (twin − valve)")
     assert bandwidth.endswith("Hz    ×0.975 (twin/valve)")
     assert zero.endswith("s     —")  # no ratio to a valve's 0
+    assert compared(Side("o", "o", "%", 1.0, 1.0 - 1e-9)) == "-0.00 pp (twin − valve)"

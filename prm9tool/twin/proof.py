@@ -155,22 +155,27 @@ NOT_REACHED = "not reached"  # a figure not measured (a settling time never reac
 
 def compared(
     side: Side,
-    number: Callable[[float], str] = lambda v: f"{v:.3g}",
+    number: Callable[[float], str] | None = None,
     texts: Mapping[str, str] = COMPARED,
     nothing: str = "—",
 ) -> str:
     """The last column's cell of ``side``: ``+0.42 pp (twin − valve)`` for a figure in %,
     ``×0.987 (twin/valve)`` for the others; ``nothing`` where there is nothing to compare (a
     figure one side did not reach, a valve's figure of 0). ``number`` writes the number (the
-    GUI's in the program language), ``texts`` the kinds (:data:`COMPARED`, translated)."""
+    GUI's in the program language; by default two decimals of a difference, three of a
+    ratio), ``texts`` the kinds (:data:`COMPARED`, translated)."""
     if side.unit == "%":
         kind, value = "difference", side.difference
-        shown = number(value) if value < 0 else "+" + number(value)
     else:
         kind, value = "ratio", side.ratio
-        shown = number(value)
     if not math.isfinite(value):
         return nothing
+    if number is None:
+        shown = f"{value:.2f}" if kind == "difference" else f"{value:.3f}"
+    else:
+        shown = number(value)
+    if kind == "difference" and not shown.startswith(("-", "−")):  # −0.0 has its sign
+        shown = "+" + shown
     return texts[kind].replace("%1", shown)
 
 
