@@ -166,8 +166,11 @@ def test_run_ends_when_a_late_result_shows_a_dialog_after_the_window_closed(qapp
     from prm9tool.views.main_window import MainWindow
 
     def close_then_late_dialog() -> None:
-        window = next(w for w in QApplication.topLevelWidgets() if isinstance(w, MainWindow))
-        window.close()
+        # run()'s window: the visible one (earlier tests' windows may linger, hidden or not)
+        window = next(
+            w for w in QApplication.topLevelWidgets() if isinstance(w, MainWindow) and w.isVisible()
+        )
+        QApplication.closeAllWindows()  # it, and any window an earlier test left open
         late = QDialog(window)  # what a result arriving now shows
         late.show()
         QTimer.singleShot(0, late.hide)
