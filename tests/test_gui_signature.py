@@ -21,23 +21,10 @@ SHOTS = os.environ.get("PRM9TOOL_SCREENSHOTS")
 @pytest.fixture
 def online(qtbot, tmp_path):
     """A connection online with emulated valve 7201, recording into a fresh history."""
-    from support.gui_support import emulator_connection
+    from support.gui_support import online_recording
 
-    from prm9tool.device import emulated_valves, factory
-    from prm9tool.history.recorder import Recorder
-
-    connection = emulator_connection()  # unpaced: the link's reports step the valve
-    recorder = Recorder(f"sqlite:///{tmp_path / 'history.db'}", queue=tmp_path / "q.jsonl")
-    connection.set_recorder(recorder)
-    try:
-        entry = factory.list_devices([f"{E02}:7201"])[-1]
-        with qtbot.waitSignal(connection.online_changed, timeout=10000):
-            connection.go_online(entry)
-        yield connection, recorder
-    finally:
-        connection.shutdown()
-        recorder.close()
-        emulated_valves.forget_emulated_valves()
+    with online_recording(qtbot, tmp_path, f"{E02}:7201") as both:
+        yield both
 
 
 def _window(qtbot, connection=None) -> TuningWindow:

@@ -92,23 +92,10 @@ def test_offline_the_valve_is_asked_for_and_a_report_is_fitted(qtbot, tmp_path, 
 @pytest.fixture
 def online(qtbot, tmp_path):
     """A connection online with emulated valve 7301, recording into a fresh history."""
-    from support.gui_support import emulator_connection
+    from support.gui_support import online_recording
 
-    from prm9tool.device import emulated_valves, factory
-    from prm9tool.history.recorder import Recorder
-
-    connection = emulator_connection()  # unpaced: the link's reports step the valve
-    recorder = Recorder(f"sqlite:///{tmp_path / 'history.db'}", queue=tmp_path / "q.jsonl")
-    connection.set_recorder(recorder)
-    try:
-        entry = factory.list_devices([f"{E02}:7301"])[-1]
-        with qtbot.waitSignal(connection.online_changed, timeout=10000):
-            connection.go_online(entry)
-        yield connection, recorder
-    finally:
-        connection.shutdown()
-        recorder.close()
-        emulated_valves.forget_emulated_valves()
+    with online_recording(qtbot, tmp_path, f"{E02}:7301") as both:
+        yield both
 
 
 def test_online_the_valve_is_characterized_fitted_and_recorded(

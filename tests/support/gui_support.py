@@ -160,3 +160,23 @@ def session_of(window: Any) -> Any:
 def emulated(serial: int) -> Any:
     """The emulated valve with ``serial``."""
     return emulated_valves.EMULATED.valves[serial]
+
+
+@contextmanager
+def online_recording(qtbot: Any, tmp_path: Path, spec: str) -> Iterator[tuple[Any, Any]]:
+    """A connection online with the emulated valve ``spec`` (unpaced: the link's reports step
+    it), recording into a fresh history in ``tmp_path``: (connection, recorder)."""
+    from prm9tool.history.recorder import Recorder
+
+    connection = emulator_connection()
+    recorder = Recorder(f"sqlite:///{tmp_path / 'history.db'}", queue=tmp_path / "q.jsonl")
+    connection.set_recorder(recorder)
+    try:
+        entry = factory.list_devices([spec])[-1]
+        with qtbot.waitSignal(connection.online_changed, timeout=10000):
+            connection.go_online(entry)
+        yield connection, recorder
+    finally:
+        connection.shutdown()
+        recorder.close()
+        emulated_valves.forget_emulated_valves()
