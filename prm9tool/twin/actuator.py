@@ -30,8 +30,7 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 
 from prm9tool.catalogue.scale import FULL_SCALE
-from prm9tool.catalogue.signals import BY_KEY
-from prm9tool.characterize.frame import LOOPS, STEP_PRE_S
+from prm9tool.characterize.frame import LOOPS
 from prm9tool.characterize.transparent import TRANSPARENT
 from prm9tool.errors import Prm9Error
 from prm9tool.twin.identify import (
@@ -39,11 +38,12 @@ from prm9tool.twin.identify import (
     CYCLE_HZ,
     DETERMINED_RSE,
     FITTED,
-    MAX_LAG,
     Fit,
     FittedConstant,
     Steps,
     _write,
+    measured_actual,
+    settled_cycles,
 )
 
 if TYPE_CHECKING:
@@ -172,14 +172,7 @@ def simulate_process(recordings: Sequence[Steps], plant: PlantConstants) -> list
                 hold = np.full(settle_cycles(steps), played[0])
             samples = rig.play(np.concatenate([hold, played]), [lp.setpoint, lp.actual])
             samples = samples[len(hold) :]
-            actual = samples[:, 1] * BY_KEY[lp.actual].scale
-            if steps.demand:  # the stimulus is a measured demand: drop the override's latency
-                demand = samples[:, 0] * BY_KEY[lp.setpoint].scale
-                lag = min(
-                    range(MAX_LAG),
-                    key=lambda k: float(np.abs(demand[k:] - played[: len(played) - k]).sum()),
-                )
-                actual = np.concatenate([actual[lag:], np.full(lag, actual[-1])])
+            actual = measured_actual(samples, played, steps, lp)
             out.append(actual[per - 1 :: per])
     finally:
         rig.release()
@@ -190,8 +183,7 @@ def settle_cycles(steps: Steps) -> int:
     """The hold the procedure settled a step with (``frame.settle``, which returns after
     one hold when the loop is there): max(0.1 s, the step's window), in cycles — 1.5 s with
     the default profile's process loop."""
-    window = len(steps.stimulus) / steps.rate_hz - STEP_PRE_S
-    return round(max(0.1, window) * CYCLE_HZ)
+    return settled_cycles(steps)
 
 
 def free_constants(type_key: str) -> tuple[str, ...]:

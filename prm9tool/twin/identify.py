@@ -196,14 +196,7 @@ def simulate_all(
             samples = rig.play(
                 np.concatenate([np.full(hold, played[0]), played]), [lp.setpoint, lp.actual]
             )[hold:]
-            actual = samples[:, 1] * BY_KEY[lp.actual].scale
-            if steps.demand:  # the stimulus is a measured demand: drop the override's latency
-                demand = samples[:, 0] * BY_KEY[lp.setpoint].scale
-                lag = min(
-                    range(MAX_LAG),
-                    key=lambda k: float(np.abs(demand[k:] - played[: len(played) - k]).sum()),
-                )
-                actual = np.concatenate([actual[lag:], np.full(lag, actual[-1])])
+            actual = measured_actual(samples, played, steps, lp)
             if steps.kind == "static":
                 _write(valve, TRANSPARENT)
             out.append(actual[per - 1 :: per])
@@ -221,9 +214,29 @@ def hold_cycles(steps: Steps) -> int:
     history: 0.1 s instead of the 0.15 s the default profile's steps settle with left 0.5 %
     rms on the true plant of a valve with 1.2 N of static friction, 0.000 % with it."""
     if steps.kind == "step" and steps.demand:
-        window = len(steps.stimulus) / steps.rate_hz - STEP_PRE_S
-        return round(max(0.1, window) * CYCLE_HZ)
+        return settled_cycles(steps)
     return round(BETWEEN_S * CYCLE_HZ)
+
+
+def settled_cycles(steps: Steps) -> int:
+    """The hold the procedure settled a measured step with (``frame.settle``, which returns
+    after one hold when the loop is there): max(0.1 s, the step's window), in cycles."""
+    window = len(steps.stimulus) / steps.rate_hz - STEP_PRE_S
+    return round(max(0.1, window) * CYCLE_HZ)
+
+
+def measured_actual(samples: np.ndarray, played: np.ndarray, steps: Steps, lp: Any) -> np.ndarray:
+    """The actual value of a replayed recording in %; when the stimulus is a measured demand,
+    shifted by the override's latency (the lag that best lines the demand up with it)."""
+    actual = samples[:, 1] * BY_KEY[lp.actual].scale
+    if steps.demand:
+        demand = samples[:, 0] * BY_KEY[lp.setpoint].scale
+        lag = min(
+            range(MAX_LAG),
+            key=lambda k: float(np.abs(demand[k:] - played[: len(played) - k]).sum()),
+        )
+        actual = np.concatenate([actual[lag:], np.full(lag, actual[-1])])
+    return actual
 
 
 def dither_frequency_hz(steps: Steps) -> float:
