@@ -240,24 +240,10 @@ def _valve_command_problem(args: argparse.Namespace) -> str | None:
     given = [f for f, dest in COMMANDS.items() if getattr(args, dest)]
     if len(given) > 1:  # --enable is also --characterize's: argparse cannot refuse the pair
         return f"{given[0]} and {given[1]} are separate commands: use one at a time"
-    commands = {**BATCH_ONLY, **FILE_TOOLS, **HISTORY_COMMANDS, **VALUE_COMMANDS,
-                "--diff": "diff", "--serve-emulator": "serve_emulator",
-                "--list-devices": "list_devices", "--apply": "apply", "--profile": "profile",
-                "--node-id": "node_id"}  # fmt: skip
-    others = [f for f, dest in commands.items() if getattr(args, dest) not in (None, False, [])]
-    others = ["--batch"] * (args.batch is not None) + others
-    if others:
-        return f"{flag} and {others[0]} are separate commands: use one at a time"
-    if args.file:
-        return f"unexpected file {args.file}: {flag} works on a valve"
-    if len(args.device) + len(args.emulator) != 1:
-        return f"{flag} works on one valve: give one --device ID or --emulator TYPEKEY[:SERIAL]"
-    can = [f for f, dest in CAN_OPTIONS.items() if getattr(args, dest) is not None]
-    if can and args.emulator:
-        return (
-            f"{flag} with --emulator uses the emulated valve over USB; {can[0]} names a bus for "
-            "--device can:NODE"
-        )
+    others = {**VALUE_COMMANDS, "--apply": "apply", "--profile": "profile", "--node-id": "node_id"}
+    problem = _one_valve_problem(args, flag, others)
+    if problem:
+        return problem
     if not args.hydraulics_safe:
         return confirmation_problem(flag)
     return None
@@ -338,19 +324,26 @@ def _values_problem(args: argparse.Namespace) -> str | None:
     name = "--set" if args.set else "--get" if args.get else "--export-dcf"
     if args.export_dcf and args.json:
         return "--export-dcf writes the DCF file it names; --json does not belong to it"
+    return _one_valve_problem(args, name, {})
+
+
+def _one_valve_problem(
+    args: argparse.Namespace, name: str, also_refused: dict[str, str]
+) -> str | None:
+    """A command of one valve (``name``): no other command beside it (nor ``also_refused``),
+    no file, exactly one valve, and no bus options for an emulated (USB) valve."""
     commands = {**BATCH_ONLY, **FILE_TOOLS, **HISTORY_COMMANDS, "--diff": "diff",
-                "--serve-emulator": "serve_emulator", "--list-devices": "list_devices"}  # fmt: skip
-    others = [
-        flag for flag, dest in commands.items() if getattr(args, dest) not in (None, False, [])
-    ]
-    others += ["--batch"] * (args.batch is not None)
+                "--serve-emulator": "serve_emulator", "--list-devices": "list_devices",
+                **also_refused}  # fmt: skip
+    others = [f for f, dest in commands.items() if getattr(args, dest) not in (None, False, [])]
+    others = ["--batch"] * (args.batch is not None) + others
     if others:
         return f"{name} and {others[0]} are separate commands: use one at a time"
     if args.file:
         return f"unexpected file {args.file}: {name} works on a valve"
     if len(args.device) + len(args.emulator) != 1:
         return f"{name} works on one valve: give one --device ID or --emulator TYPEKEY[:SERIAL]"
-    can = [flag for flag, dest in CAN_OPTIONS.items() if getattr(args, dest) is not None]
+    can = [f for f, dest in CAN_OPTIONS.items() if getattr(args, dest) is not None]
     if can and args.emulator:
         return (
             f"{name} with --emulator uses the emulated valve over USB; {can[0]} names a bus for "
