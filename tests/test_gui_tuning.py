@@ -484,6 +484,44 @@ def test_the_legend_goes_to_the_corner_the_curves_leave_free(qapp):
     assert legend_box(area, (120, 50), np.zeros((0, 2))).topRight() == area.topRight()
 
 
+def test_steps_both_ways_leave_room_for_the_legend_above_their_curves(qapp):
+    """Acceptance steps of ±25 % fill the top and the bottom of the plot, so every corner
+    covered a curve (the legend hid the +25 % step on screen): the plot's range now leaves
+    room above the data, and the second direction's lines (same colours) add no entries."""
+    from PySide6.QtCore import QRectF
+    from PySide6.QtGui import QColor, QImage, QPainter
+
+    from prm9tool.views.tuning.plot import COLOURS, Plot, Series, paint_plot
+
+    t = np.linspace(-20, 150, 400)
+    series = []
+    for k, target in enumerate((25.0, -25.0)):
+        response = np.where(t < 5, 0.0, target * (1 - np.exp(-np.clip(t - 5, 0, None) / 4)))
+        named = k == 0
+        series += [
+            Series(t, response * 0.98, "before" if named else "", "#888888", True),
+            Series(t, response, "proposed" if named else "", COLOURS[1]),
+        ]
+    image = QImage(340, 260, QImage.Format.Format_RGB32)
+    image.fill(QColor("white"))
+    painter = QPainter(image)
+    painted = paint_plot(painter, QRectF(0, 0, 340, 260), Plot("±25 %", "ms", "%", series))
+    painter.end()
+    box = painted.legend
+    assert box is not None
+    assert box.height() < 3.5 * painter.fontMetrics().height()  # two entries, not four
+    for s in series:
+        xy = painted.pixels(s)
+        inside = (
+            (xy[:, 0] >= box.left())
+            & (xy[:, 0] <= box.right())
+            & (xy[:, 1] >= box.top())
+            & (xy[:, 1] <= box.bottom())
+        )
+        assert not inside.any(), f"the legend hides {inside.sum()} points of a curve"
+    assert painted.y_range[1] > 25 * 1.2  # the room is above the data
+
+
 def test_a_marker_label_is_drawn_whole_inside_the_plot(qtbot):
     """Issue 25 item 9: the "−3 dB" label of the Bode plot lost its top to the plot's clip."""
     import numpy as np

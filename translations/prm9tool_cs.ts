@@ -97,6 +97,14 @@ Poslední akce možná nebyla dokončena. Uložte svou práci pod novým názvem
             <translation>čas [ms]</translation>
         </message>
         <message>
+            <source>before</source>
+            <translation>před</translation>
+        </message>
+        <message>
+            <source>proposed</source>
+            <translation>návrh</translation>
+        </message>
+        <message>
             <source>no response</source>
             <translation>bez odezvy</translation>
         </message>
@@ -129,16 +137,12 @@ Poslední akce možná nebyla dokončena. Uložte svou práci pod novým názvem
             <translation>Dříve zkoušeno, profil nesplněn: %1 (%2).</translation>
         </message>
         <message>
-            <source>%1 before</source>
-            <translation>%1 před</translation>
-        </message>
-        <message>
-            <source>%1 proposed</source>
-            <translation>%1 návrh</translation>
-        </message>
-        <message>
             <source>Acceptance steps of %1 %</source>
             <translation>Přejímací skoky o %1 %</translation>
+        </message>
+        <message>
+            <source>Acceptance steps of %1 % from %2 %</source>
+            <translation>Přejímací skoky o %1 % od %2 %</translation>
         </message>
         <message>
             <source>Autotune</source>

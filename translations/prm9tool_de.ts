@@ -97,6 +97,14 @@ Die letzte Aktion wurde womöglich nicht vollständig ausgeführt. Speichern Sie
             <translation>Zeit [ms]</translation>
         </message>
         <message>
+            <source>before</source>
+            <translation>vorher</translation>
+        </message>
+        <message>
+            <source>proposed</source>
+            <translation>Vorschlag</translation>
+        </message>
+        <message>
             <source>no response</source>
             <translation>keine Antwort</translation>
         </message>
@@ -129,16 +137,12 @@ Die letzte Aktion wurde womöglich nicht vollständig ausgeführt. Speichern Sie
             <translation>Zuvor versucht, Profil nicht bestanden: %1 (%2).</translation>
         </message>
         <message>
-            <source>%1 before</source>
-            <translation>%1 vorher</translation>
-        </message>
-        <message>
-            <source>%1 proposed</source>
-            <translation>%1 Vorschlag</translation>
-        </message>
-        <message>
             <source>Acceptance steps of %1 %</source>
             <translation>Abnahmesprünge um %1 %</translation>
+        </message>
+        <message>
+            <source>Acceptance steps of %1 % from %2 %</source>
+            <translation>Abnahmesprünge um %1 % ab %2 %</translation>
         </message>
         <message>
             <source>Autotune</source>

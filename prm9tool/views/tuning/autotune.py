@@ -217,19 +217,21 @@ class AutotunePage(Page):
             )
         ]
         pairs = zip(result.before_check.steps, result.after_check.steps, strict=True)
-        by_size: dict[float, list[Series]] = {}
+        by_size: dict[tuple[float, float], list[Series]] = {}
         for before, after in pairs:
-            start = step_start(after)
-            ends = (
-                format_significant(v, 6).replace("-", "−")
-                for v in (start, start + after.amplitude_pct)
-            )
-            name = "{} → {} %".format(*ends)
-            series = by_size.setdefault(abs(after.amplitude_pct), [])
-            series.append(line(before, self.tr("%1 before").replace("%1", name), GREY, True))
-            series.append(line(after, self.tr("%1 proposed").replace("%1", name), COLOURS[1]))
-        for size, series in by_size.items():
+            series = by_size.setdefault((abs(after.amplitude_pct), step_start(after)), [])
+            # the steps both ways share their colours: one legend entry each, not four
+            first = not series
+            series.append(line(before, self.tr("before") if first else "", GREY, True))
+            series.append(line(after, self.tr("proposed") if first else "", COLOURS[1]))
+        for (size, start), series in by_size.items():
             title = self.tr("Acceptance steps of %1 %").replace("%1", format_significant(size, 6))
+            if start:  # steps around an operating point (the E04 process loop's)
+                title = (
+                    self.tr("Acceptance steps of %1 % from %2 %")
+                    .replace("%1", format_significant(size, 6))
+                    .replace("%2", format_significant(start, 6).replace("-", "−"))
+                )
             plots.append(Plot(title, ms, pct, series))
         return plots
 

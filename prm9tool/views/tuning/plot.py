@@ -11,7 +11,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 from PySide6.QtCore import QPointF, QRectF, Qt
-from PySide6.QtGui import QColor, QFont, QImage, QPainter, QPainterPath, QPen
+from PySide6.QtGui import QColor, QFont, QFontMetrics, QImage, QPainter, QPainterPath, QPen
 
 from prm9tool.i18n import current_language
 from prm9tool.messages import localized_number
@@ -21,7 +21,8 @@ COLOURS = ("#1f77b4", "#d62728", "#2ca02c", "#9467bd", "#ff7f0e")
 
 @dataclass
 class Series:
-    """One line: x, y, its legend text and colour (index into COLOURS or a name)."""
+    """One line: x, y, its legend text ("": not in the legend) and colour (index into
+    COLOURS or a name)."""
 
     x: np.ndarray
     y: np.ndarray
@@ -71,8 +72,28 @@ def _ticks(lo: float, hi: float, log: bool) -> list[float]:
     return [first + k * step for k in range(int((hi - first) / step) + 1)]
 
 
-def paint_plot(painter: QPainter, rect: QRectF, plot: Plot, ink: QColor | None = None) -> None:
-    """Draw ``plot`` into ``rect`` (axes, grid, lines, legend, markers)."""
+@dataclass(frozen=True)
+class Painted:
+    """Where :func:`paint_plot` drew: the data's rectangle, its x and y ranges (x as log10 on
+    a log axis) and the legend's box (None without one)."""
+
+    area: QRectF
+    x_range: tuple[float, float]
+    y_range: tuple[float, float]
+    legend: QRectF | None
+
+    def pixels(self, series: Series, logx: bool = False) -> np.ndarray:
+        """The finite points of ``series`` in pixels, shape (n, 2)."""
+        (x0, x1), (y0, y1), a = self.x_range, self.y_range, self.area
+        ok = np.isfinite(series.x) & np.isfinite(series.y) & ((series.x > 0) if logx else True)
+        x = np.log10(series.x[ok]) if logx else series.x[ok]
+        px = a.left() + (x - x0) / (x1 - x0) * a.width()
+        py = a.bottom() - (series.y[ok] - y0) / (y1 - y0) * a.height()
+        return np.column_stack([px, py])
+
+
+def paint_plot(painter: QPainter, rect: QRectF, plot: Plot, ink: QColor | None = None) -> Painted:
+    """Draw ``plot`` into ``rect`` (axes, grid, lines, legend, markers); where it went."""
     ink = ink or QColor("black")
     font = QFont(painter.font())
     font.setPixelSize(min(max(9, int(rect.height() / 22)), max(9, int(rect.width() / 60))))
@@ -94,6 +115,16 @@ def paint_plot(painter: QPainter, rect: QRectF, plot: Plot, ink: QColor | None =
     def py(y: float) -> float:
         return area.bottom() - (y - y0) / (y1 - y0) * area.height()
 
+    named = [s for s in plot.series if s.label]  # a line without a label is not in the legend
+    legend = _legend_size(named, metrics, line)
+    inner = area.adjusted(line * 0.5, line * 0.5, -line * 0.5, -line * 0.5)
+    points = _pixels(plot.series, px, py, plot.logx)
+    if named and _covered(legend_box(inner, legend, points), points):
+        # every corner would hide data (steps both ways fill the top and the bottom): room
+        # above the data for the legend, which no choice of corner can give
+        free = area.height() - legend[1] - line
+        if free > area.height() / 3:
+            y1 = y0 + (y1 - y0) * area.height() / free
     painter.setPen(QPen(ink, 0))
     painter.drawText(QRectF(rect.left(), rect.top(), rect.width(), line * 1.4),
                      Qt.AlignmentFlag.AlignCenter, plot.title)  # fmt: skip
@@ -151,16 +182,14 @@ def paint_plot(painter: QPainter, rect: QRectF, plot: Plot, ink: QColor | None =
     for s in plot.series:
         _line(painter, s, px, py)
     painter.restore()
-    if not plot.series:
-        return
-    width = max(metrics.horizontalAdvance(s.label) for s in plot.series) + line * 2.3
-    size = (width, line * (len(plot.series) + 0.4))
-    points = _pixels(plot.series, px, py, plot.logx)
-    box = legend_box(area.adjusted(line * 0.5, line * 0.5, -line * 0.5, -line * 0.5), size, points)
+    if not named:
+        return Painted(area, (x0, x1), (y0, y1), None)
+    width = legend[0]
+    box = legend_box(inner, legend, _pixels(plot.series, px, py, plot.logx))
     backdrop = QColor("black" if ink.lightness() > 128 else "white")  # under the text
     backdrop.setAlpha(220)
     painter.fillRect(box, backdrop)
-    for k, s in enumerate(plot.series):
+    for k, s in enumerate(named):
         y = box.top() + line * (k + 0.2)
         painter.setPen(QPen(QColor(s.colour), 2))
         painter.drawLine(
@@ -171,6 +200,7 @@ def paint_plot(painter: QPainter, rect: QRectF, plot: Plot, ink: QColor | None =
         painter.drawText(
             QRectF(box.left() + line * 2.1, y, width, line), Qt.AlignmentFlag.AlignLeft, s.label
         )
+    return Painted(area, (x0, x1), (y0, y1), box)
 
 
 def _pixels(series: Sequence[Series], px: object, py: object, logx: bool) -> np.ndarray:
@@ -182,6 +212,23 @@ def _pixels(series: Sequence[Series], px: object, py: object, logx: bool) -> np.
         step = max(1, len(x) // 500)
         rows += [(px(float(a)), py(float(b))) for a, b in zip(x[::step], y[::step], strict=True)]  # type: ignore[operator]
     return np.array(rows, dtype=float).reshape(-1, 2)
+
+
+def _legend_size(
+    series: Sequence[Series], metrics: QFontMetrics, line: float
+) -> tuple[float, float]:
+    """The legend's (w, h) in pixels; (0, 0) without lines."""
+    if not series:
+        return (0.0, 0.0)
+    width = max(metrics.horizontalAdvance(s.label) for s in series) + line * 2.3
+    return (width, line * (len(series) + 0.4))
+
+
+def _covered(box: QRectF, points: np.ndarray) -> int:
+    """How many of the data ``points`` (pixels, shape (n, 2)) ``box`` covers."""
+    x, y = points[:, 0], points[:, 1]
+    inside = (x >= box.left()) & (x <= box.right()) & (y >= box.top()) & (y <= box.bottom())
+    return int(inside.sum())
 
 
 def legend_box(area: QRectF, size: tuple[float, float], points: np.ndarray) -> QRectF:
@@ -196,12 +243,7 @@ def legend_box(area: QRectF, size: tuple[float, float], points: np.ndarray) -> Q
         QRectF(area.left(), area.bottom() - h, w, h),
     ]
 
-    def covered(box: QRectF) -> int:
-        x, y = points[:, 0], points[:, 1]
-        inside = (x >= box.left()) & (x <= box.right()) & (y >= box.top()) & (y <= box.bottom())
-        return int(inside.sum())
-
-    return min(corners, key=covered)
+    return min(corners, key=lambda box: _covered(box, points))
 
 
 def _marker(
