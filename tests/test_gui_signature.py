@@ -54,7 +54,8 @@ def test_without_a_birth_certificate_the_window_says_how_to_make_one(qtbot, onli
         QMessageBox, "question", lambda *a: asked.append(a[2]) or QMessageBox.StandardButton.Yes
     )
     w.signature.run_button.click()
-    message = w.signature.result.text()  # it stays on the page
+    message = w.signature.result.text()  # it stays on the page, a sentence
+    assert message.startswith("Not compared: the history holds no")
     assert "no end-of-line test of serial 7201" in message
     assert "Run the end-of-line test" in message
     assert asked == [] and not w.runner.busy  # nothing asked, nothing started

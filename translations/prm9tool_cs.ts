@@ -4369,6 +4369,10 @@ Na straně PC se nic neztratilo: dokument dál obsahuje každou hodnotu, záloha
             <translation>malý a velký skok v obou směrech, krátký sinusový rozmítaný signál a hysterezní smyčka, nejvýše %1 s</translation>
         </message>
         <message>
+            <source>Not compared: %1</source>
+            <translation>Neporovnáno: %1</translation>
+        </message>
+        <message>
             <source>Save the drift report</source>
             <translation>Uložit protokol o driftu</translation>
         </message>

@@ -4347,6 +4347,10 @@ Auf dem PC ging nichts verloren: Das Dokument enthält weiterhin jeden Wert, Sic
             <translation>ein kleiner und ein großer Sprung in jede Richtung, ein kurzer Sinus-Sweep und eine Hystereseschleife, höchstens %1 s</translation>
         </message>
         <message>
+            <source>Not compared: %1</source>
+            <translation>Nicht verglichen: %1</translation>
+        </message>
+        <message>
             <source>Save the drift report</source>
             <translation>Driftbericht speichern</translation>
         </message>

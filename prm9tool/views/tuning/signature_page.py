@@ -57,7 +57,7 @@ class SignaturePage(Page):
             return
         problem = birth_certificate_problem(connection)  # before the questions: none asked
         if problem is not None:
-            self.result.setText(error_text(problem))
+            self.show_failure(error_text(problem))
             return
         try:
             profile = self.window_.profile()  # the drift limits: the Test report page's profile
@@ -93,7 +93,7 @@ class SignaturePage(Page):
 
     def show_failure(self, message: str) -> None:
         """Why the comparison did not run or stopped (the status line's "Ready." may follow)."""
-        self.result.setText(message)
+        self.result.setText(self.tr("Not compared: %1").replace("%1", message))
 
     def save(self) -> None:
         """The drift report as PDF."""
