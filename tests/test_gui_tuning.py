@@ -167,6 +167,21 @@ def test_report_page_runs_a_profile_and_saves_pdf(qtbot, window, tmp_path, monke
     text = " ".join(PdfReader(tmp_path / "r.pdf").pages[0].extract_text().split())
     assert "PRM9 test report" in text and E02 in text
     assert (tmp_path / "r-static.csv").exists()
+    # what limited the run (here a busy PC's sweep) is on the page too, not only in the PDF
+    verdict_line = window.report.result.text()
+    assert verdict_line in ("Result: PASS", "Result: FAIL")  # nothing limited this run
+    from dataclasses import replace
+
+    from prm9tool.characterize.procedures import SWEEP_UPDATED
+    from prm9tool.messages import Number
+
+    busy = SWEEP_UPDATED(Number("19.8"), Number("37"), 4)
+    window.report.show_result(replace(window.report.last, skipped=[busy]))
+    assert window.report.result.text().splitlines() == [
+        verdict_line,
+        "Limited by the link: sweep usable up to 19.8 Hz: the PC held the valve's setpoint for "
+        "37 ms there (at least 4 updates per period are needed; the PC was busy)",
+    ]
 
 
 def test_a_bad_profile_is_reported_and_nothing_runs(qtbot, window, tmp_path):

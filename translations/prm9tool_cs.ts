@@ -3945,6 +3945,10 @@ Ano načte a záznam zařadí do fronty; Ne nenačte nic.</translation>
             <translation>Výsledek: %1</translation>
         </message>
         <message>
+            <source>Limited by the link: %1</source>
+            <translation>Omezeno spojením: %1</translation>
+        </message>
+        <message>
             <source>Save the test report</source>
             <translation>Uložit protokol o zkoušce</translation>
         </message>

@@ -3926,6 +3926,10 @@ Ja lädt hoch und stellt den Eintrag in die Warteschlange; Nein lädt nichts hoc
             <translation>Ergebnis: %1</translation>
         </message>
         <message>
+            <source>Limited by the link: %1</source>
+            <translation>Durch die Verbindung begrenzt: %1</translation>
+        </message>
+        <message>
             <source>Save the test report</source>
             <translation>Prüfbericht speichern</translation>
         </message>

@@ -20,7 +20,7 @@ from prm9tool.characterize.run import (
 )
 from prm9tool.i18n import format_significant
 from prm9tool.service.history import run_with_history
-from prm9tool.translate import error_text
+from prm9tool.translate import error_text, translated
 from prm9tool.views.files import dialogs as file_dialogs
 from prm9tool.views.history.notes import record_report_saved
 from prm9tool.views.tuning.host import TuningHost, figure_table
@@ -104,7 +104,10 @@ class ReportPage(Page):
                 item.setToolTip(tip if col == 1 else "")
                 self.table.setItem(row, col, item)
         self.table.resizeRowsToContents()
-        self.result.setText(self.tr("Result: %1").replace("%1", verdict(result.passed)))
+        text = self.tr("Result: %1").replace("%1", verdict(result.passed))
+        for note in result.notes:  # what the link or a busy PC limited, as the PDF says it
+            text += "\n" + self.tr("Limited by the link: %1").replace("%1", translated(note))
+        self.result.setText(text)
         self.save_button.setEnabled(True)
 
     def save(self) -> None:
