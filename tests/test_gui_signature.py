@@ -81,9 +81,11 @@ def test_the_comparison_runs_on_the_valve_shows_the_drift_and_saves_the_pdf(
     monkeypatch.setattr(
         QMessageBox, "question", lambda *a: asked.append(a[2]) or QMessageBox.StandardButton.Yes
     )
+    w.signature.result.setText("Not compared: an earlier refusal")
     w.signature.run_button.click()
     assert "moves the spool" in asked[0] and "at most 20\u00a0s" in asked[0]  # one line (i18n)
     assert w.runner.busy  # off the GUI thread: the window is still there to Stop it
+    assert w.signature.result.text() == ""  # the earlier refusal is not this run's answer
     qtbot.waitUntil(lambda: not w.runner.busy, timeout=180000)
     page = w.signature
     status = w.status.text()
@@ -127,6 +129,14 @@ def test_the_drift_table_speaks_the_program_language(qapp):
     assert shown["en"] == ("+0.8 pp", "± 0.5 pp", "−19 %", "± 15 %", "± 2 ms", "DRIFTED")
     assert shown["de"] == ("+0,8 Pp", "± 0,5 Pp", "−19 %", "± 15 %", "± 2 ms", "DRIFT")
     assert shown["cs"] == ("+0,8 p. b.", "± 0,5 p. b.", "−19 %", "± 15 %", "± 2 ms", "DRIFT")
+    # a change that rounds to nothing has no minus sign (the gain read "−0.000" on screen)
+    from prm9tool.characterize import drift
+
+    gain = DriftItem("static_gain", "gain", "", 0.99995, 1.0, DriftLimit(absolute=0.03), False)
+    still = DriftItem("bode_bandwidth_hz", "−3 dB", "Hz", 29.9, 30.0, DriftLimit(relative=15.0),
+                      False)  # fmt: skip
+    assert (change_text(gain), drift.change_text(gain)) == ("+0.000", "+0.000")
+    assert (change_text(still), drift.change_text(still)) == ("+0 %", "+0 %")
 
 
 def test_a_characterization_record_shows_its_figures_not_its_curves(qtbot):

@@ -87,14 +87,24 @@ def shown(value: float, unit: str, above: bool = False) -> str:
     return f"above {text}" if above else text
 
 
+def signed_change(item: DriftItem) -> tuple[str, str]:
+    """The change as a signed number (``−19``, ``+0.8``, ``−0.040``, with the minus sign) and
+    its kind: ``"%"`` relative (Hz, s), ``"pp"`` (figures in %), ``""`` (the gain). A change
+    that rounds to zero is ``+0``, never ``−0.000``."""
+    if item.unit == "%":
+        number, kind = f"{item.change:+.2g}", "pp"
+    elif not item.unit:  # the gain: a ratio already
+        number, kind = f"{round(item.change, 3) + 0.0:+.3f}", ""
+    else:
+        number, kind = f"{round(item.relative_pct) + 0.0:+.0f}", "%"
+    return number.replace("-", "−"), kind
+
+
 def change_text(item: DriftItem) -> str:
     """``−19 %`` for the figures in Hz and s, ``+0.8 pp`` for those in %, ``−0.040`` for
     the gain."""
-    if item.unit == "%":
-        return f"{item.change:+.2g} pp".replace("-", "−")
-    if not item.unit:  # the gain: a ratio already
-        return f"{item.change:+.3f}".replace("-", "−")
-    return f"{item.relative_pct:+.0f} %".replace("-", "−")
+    number, kind = signed_change(item)
+    return f"{number} {kind}".strip()
 
 
 def _judge(limit: DriftLimit | None, today: Figure, ref: ReferenceFigure) -> bool | None:

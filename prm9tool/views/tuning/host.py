@@ -26,9 +26,10 @@ class TuningHost(Protocol):
 
     def start(
         self, kind: str, what: str, procedure: Callable[..., Any], planned_s: float | None = None
-    ) -> None:
+    ) -> bool:
         """Confirm (on a valve) what the test will do, then run ``procedure(rig)``;
-        ``planned_s``: the valve seconds it plays (the progress bar; None: unknown)."""
+        ``planned_s``: the valve seconds it plays (the progress bar; None: unknown). True when
+        it started."""
 
     def profile(self) -> Profile:
         """The acceptance profile chosen on the test report page (ProfileError if unusable)."""

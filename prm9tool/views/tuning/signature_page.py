@@ -68,9 +68,9 @@ class SignaturePage(Page):
             "a small and a large step each way, a short sine sweep and a hysteresis loop, at "
             "most %1 s"
         ).replace("%1", f"{MOTION_LIMIT_S:.0f}")
-        self.window_.start(
-            "signature", what, lambda rig: signature_with_history(connection, rig, profile), 15.0
-        )
+        run = lambda rig: signature_with_history(connection, rig, profile)  # noqa: E731
+        if self.window_.start("signature", what, run, 15.0):
+            self.result.clear()  # an earlier refusal is not the answer to this run
 
     def show_result(self, result: object) -> None:
         """The drift table, the sentence and today's curves over the birth certificate's."""

@@ -20,7 +20,7 @@ from PySide6.QtCore import QCoreApplication, QUrl
 from PySide6.QtGui import QTextDocument
 from PySide6.QtPrintSupport import QPrinter
 
-from prm9tool.characterize.drift import DriftItem, DriftReport
+from prm9tool.characterize.drift import DriftItem, DriftReport, signed_change
 from prm9tool.characterize.run import Figure
 from prm9tool.views.paged_print import PageFrame, configure_pdf, print_paged
 from prm9tool.views.record.document import signature_line
@@ -62,16 +62,12 @@ def change_text(item: DriftItem) -> str:
         return "—"
     if item.today_above or item.reference_above:
         return "—"
-    if item.unit == "%":  # the unit after localizing: a Czech "p. b." keeps its points
-        number = _local(f"{item.change:+.2g}".replace("-", "−"))
-        return f"{number} " + translate("SignatureReport", "pp")
-    if not item.unit:
-        text = f"{item.change:+.3f}"
-    elif math.isfinite(item.relative_pct):
-        text = f"{item.relative_pct:+.0f} %"
-    else:
+    if item.unit and item.unit != "%" and not math.isfinite(item.relative_pct):
         return "—"
-    return _local(text.replace("-", "−"))
+    number, kind = signed_change(item)
+    if kind == "pp":  # the unit after localizing: a Czech "p. b." keeps its points
+        return f"{_local(number)} " + translate("SignatureReport", "pp")
+    return _local(f"{number} {kind}".strip())
 
 
 def limit_text(item: DriftItem) -> str:

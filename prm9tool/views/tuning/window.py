@@ -157,22 +157,22 @@ class TuningWindow(QDialog):
         self.runner = self._make_runner()
         self.retranslate()
 
-    def start(self, kind: str, what: str, procedure: Any, planned_s: float | None = None) -> None:
+    def start(self, kind: str, what: str, procedure: Any, planned_s: float | None = None) -> bool:
         """Confirm (on a valve) what the test will do, then run ``procedure(rig)``.
 
         ``planned_s``: the valve seconds the test plays, for the progress bar (None: unknown,
         the bar only shows that it runs). A running setpoint generator is stopped by the test
         (the connection runs one thing on the valve's setpoint at a time): the confirmation and
-        the status line say so.
+        the status line say so. True when it started (False: refused, or not confirmed).
         """
         if self.runner.busy or not self._may_start(kind):
-            return
+            return False
         generator = bool(getattr(self.connection, "generator_running", False))
         if isinstance(self.runner, SimulationRunner):
             self.runner.values = dict(self.doc.values)  # the document as it is now
             generator = False  # the test does not touch the valve
         elif not self._confirm(what, generator):
-            return
+            return False
         else:
             offer_enable(self, self._control, self._status, self.tr("Tuning"))
         running = self.tr("Running: %1").replace("%1", what)
@@ -182,6 +182,7 @@ class TuningWindow(QDialog):
         self._say(lambda: running)
         self.runner.run(kind, procedure)
         self.progress.start(self.runner, planned_s)
+        return True
 
     def _may_start(self, kind: str) -> bool:
         """Before a long test, what would waste it: a valve that holds a fault (it would not
