@@ -75,6 +75,8 @@ class ObjectDictionary:
         # PDO mappings' entries resolved once: ((index, subindex, bits), ...) -> (param, bytes)
         self._mapped: dict[tuple[tuple[int, int, int], ...], tuple[tuple[Parameter, int], ...]]
         self._mapped = {}
+        # and for writing: (index, subindex, bytes, (param, struct unpack) or None: write_bytes)
+        self._written: dict[tuple[tuple[int, int, int], ...], tuple[_Written, ...]] = {}
 
     # --- lookups -----------------------------------------------------------------------
     def entry(self, index: int, subindex: int) -> Parameter:
@@ -155,15 +157,25 @@ class ObjectDictionary:
     ) -> list[SdoAbortError]:
         """:meth:`write_bytes` of each entry's bytes of ``data`` in turn (long enough: the
         caller checked); the entries that refused their value, as their aborts."""
+        plan = self._written.get(entries)
+        if plan is None:  # resolved once per mapping, as read_mapped's: an RPDO each SYNC
+            plan = tuple(
+                _write_plan(self.entries.get((i, s)), i, s, bits) for i, s, bits in entries
+            )
+            self._written[entries] = plan
         refused: list[SdoAbortError] = []
         offset = 0
-        for index, sub, bits in entries:
-            size = bits // 8
+        write = self._write
+        for index, sub, size, direct in plan:
+            chunk = data[offset : offset + size]
+            offset += size
             try:
-                self.write_bytes(index, sub, data[offset : offset + size])
+                if direct is None or len(chunk) != size:  # the general path and its aborts
+                    self.write_bytes(index, sub, chunk)
+                else:  # write_bytes' checks passed already: a writable entry of this size
+                    write(direct[0], int(direct[1](chunk)[0]))
             except SdoAbortError as exc:
                 refused.append(exc)
-            offset += size
         return refused
 
     def read_encoded(self, addresses: Iterable[Key], room: int) -> list[bytes | int]:
@@ -200,6 +212,20 @@ class ObjectDictionary:
         except (struct.error, UnicodeDecodeError) as exc:
             raise abort(param.key, AbortCode.WRONG_LENGTH) from exc
         self._write(param, value)
+
+
+_Written = tuple[int, int, int, tuple[Parameter, Callable[[bytes], tuple[int, ...]]] | None]
+
+
+def _write_plan(param: Parameter | None, index: int, sub: int, bits: int) -> _Written:
+    """How :meth:`ObjectDictionary.write_mapped` writes an entry: decoded by its struct right
+    away when :meth:`~ObjectDictionary.write_bytes` would only check what holds for every frame
+    (it exists, is writable, a number of exactly this size), else through ``write_bytes``."""
+    size = bits // 8
+    codec = None if param is None else param.dtype.codec
+    if param is None or codec is None or not param.writable or codec.size != size:
+        return index, sub, size, None
+    return index, sub, size, (param, codec.unpack)
 
 
 def validate(param: Parameter, value: Value) -> None:

@@ -127,6 +127,15 @@ class EmulatedValve:
         with self.lock:
             return self._fw.od.read_mapped(entries)
 
+    def pdo_sampler(self, entries: tuple[tuple[int, int, int], ...]) -> Callable[[], bytes] | None:
+        """A function returning :meth:`read_mapped` of ``entries`` the fast way (the compiled
+        loop's state read directly, :mod:`.pdo_fast`), or None when the mapping has none.
+        Call it with :attr:`lock` held (the CANopen slave does)."""
+        from prm9tool.device.emulator import pdo_fast
+
+        with self.lock:
+            return pdo_fast.sampler(self._fw, entries)
+
     def write_mapped(
         self, entries: tuple[tuple[int, int, int], ...], data: bytes
     ) -> list[SdoAbortError]:
