@@ -40,6 +40,7 @@ class Dictionary(Protocol):
     def read_mapped(self, entries: Entries) -> bytes: ...
     def write_mapped(self, entries: Entries, data: bytes) -> list[SdoAbortError]: ...
     def pdo_sampler(self, entries: Entries) -> Callable[[], bytes] | None: ...
+    def control_mode(self) -> int: ...
 
 
 @functools.cache
@@ -137,7 +138,7 @@ def channel_mapping(valve: Dictionary, channel: PdoChannel) -> Entries:
     with a power-up, which loads the channel again), the control mode read now."""
     if not channel.map_count:
         return ()
-    return _entries(channel.map_index, int(valve.read(*CONTROL_MODE)), channel.map_count)
+    return _entries(channel.map_index, valve.control_mode(), channel.map_count)
 
 
 class TpdoLogic:

@@ -251,9 +251,11 @@ class CanopenSlave:
         self._on_frame(msg.arbitration_id, bytes(msg.data), msg.timestamp)
 
     def _on_frame(self, can_id: int, data: bytes, timestamp: float) -> None:
-        with self._valve.lock:
+        valve = self._valve
+        with valve.lock:
             watches = self._watches
-            watches.follow(self._valve.running, self._now_ms)
+            if watches.paced != valve.running:  # (a call fewer per frame when it is)
+                watches.follow(valve.running, self._now_ms)
             arrival = watches.arrival_ms(timestamp, self._now_ms)
             if watches.paced and self.state is NmtState.OPERATIONAL:
                 watches.judge(arrival)  # a frame after a deadline proves it passed unmet

@@ -102,7 +102,8 @@ class ObjectDictionary:
     # --- access ------------------------------------------------------------------------
     def read(self, index: int, subindex: int) -> Value:
         """Read with CiA 301 access rules."""
-        return self._read(self.entry(index, subindex))
+        param = self.entries.get((index, subindex))  # entry()'s look-up, its abort if absent
+        return self._read(param if param is not None else self.entry(index, subindex))
 
     def _read(self, param: Parameter) -> Value:
         key = param.key

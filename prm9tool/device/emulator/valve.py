@@ -39,6 +39,7 @@ if TYPE_CHECKING:
     from prm9tool.catalogue.error_kinds import ErrorKind
     from prm9tool.device.emulator.canopen_slave import CanopenSlave
 
+_CONTROL_MODE = CATALOGUE["CTRLMODE"].key  # 0x6043
 INPUT_NAMES = (
     "setpoint",
     "sensor",
@@ -126,6 +127,16 @@ class EmulatedValve:
         """A PDO's data: the mapped ``(index, subindex, bits)`` objects encoded and joined."""
         with self.lock:
             return self._fw.od.read_mapped(entries)
+
+    def control_mode(self) -> int:
+        """0x6043 as :meth:`read` answers it, by one look-up: a PDO's mapping follows it, and
+        it is read for every PDO sent or received."""
+        with self.lock:
+            od = self._fw.od
+            value = od.values.get(_CONTROL_MODE)
+            if value is None or _CONTROL_MODE in od.getters:  # as read() answers
+                value = od.read(*_CONTROL_MODE)
+            return int(value)
 
     def pdo_sampler(self, entries: tuple[tuple[int, int, int], ...]) -> Callable[[], bytes] | None:
         """A function returning :meth:`read_mapped` of ``entries`` the fast way (the compiled
