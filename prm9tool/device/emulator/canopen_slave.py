@@ -304,6 +304,10 @@ class CanopenSlave:
     def _on_sync(self, arrival_ms: float) -> None:
         if self.state is not NmtState.OPERATIONAL:
             return
+        if self._watches.paced:  # the TPDOs sample the moment the SYNC came, as a valve's
+            self._valve.run_due_by(arrival_ms / 1000.0)  # (the watches' clock is monotonic)
+            if self.state is not NmtState.OPERATIONAL:
+                return  # those cycles' 1 ms tasks changed it (a power cycle, an NMT reset)
         if self._watch_errors:
             self._watch_error_gone("sync_error", "sync_ok")
         self._watches.sync_received(arrival_ms)

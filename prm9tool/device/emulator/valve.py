@@ -299,14 +299,31 @@ class EmulatedValve:
         batch is due (0: call again at once). The paced thread's step, and a
         :class:`~.paced_group.PacedGroup`'s for each of its valves."""
         pacer = self.pacer
-        due = pacer.due()
-        if due == 0:
-            return pacer.wait_s()
-        with self.lock:
+        with self.lock:  # the pacer too: a SYNC may run the cycles due by it (run_due_by)
+            due = pacer.due()
+            if due == 0:
+                return pacer.wait_s()
             self._fw.run(due)
             self._capture.trim()
-        pacer.done(due)
+            pacer.done(due)
         return 0.0
+
+    def run_due_by(self, at: float) -> int:
+        """While running in real time: the cycles of the present batch due by ``at``
+        (``time.monotonic``), run now; returns how many. The CANopen slave's SYNC: the batch
+        of 2 ms or more would let several SYNCs of 1 ms sample the same state, where a real
+        valve's TPDO carries a value of the moment the SYNC came (issue 30). Nothing when the
+        simulation is behind the wall clock (:meth:`.pacing.Pacer.due_by`): its batches catch
+        up, frames first."""
+        with self.lock:
+            if not self.running:
+                return 0
+            due = self.pacer.due_by(at)
+            if due:
+                self._fw.run(due)
+                self._capture.trim()
+                self.pacer.done(due)
+            return due
 
     def paced_by_group(self, grouped: bool) -> None:
         """A :class:`~.paced_group.PacedGroup` paces this valve from now on (True: a new time
