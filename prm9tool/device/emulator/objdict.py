@@ -9,6 +9,8 @@ from __future__ import annotations
 
 import struct
 from collections.abc import Callable, Iterable
+from operator import itemgetter
+from typing import Any
 
 from prm9tool.catalogue import CATALOGUE, Catalogue, DataType, ObjAccess, Parameter, Texts
 from prm9tool.catalogue.variant import Variant
@@ -39,6 +41,11 @@ def _sub0(index: int, highest: int) -> Parameter:
         in_file=False,
         source="CiA 301 (derived from the catalogue's sub-indices)",
     )
+
+
+def _no_reader(values: dict[Key, Value]) -> Any:
+    """read_all's mark for addresses read one at a time (never called)."""
+    raise NotImplementedError
 
 
 def abort(key: Key, code: AbortCode) -> SdoAbortError:
@@ -77,6 +84,7 @@ class ObjectDictionary:
         self._mapped = {}
         # and for writing: (index, subindex, bytes, (param, struct unpack) or None: write_bytes)
         self._written: dict[tuple[tuple[int, int, int], ...], tuple[_Written, ...]] = {}
+        self._readers: dict[tuple[Key, ...], Callable[[dict[Key, Value]], Any]] = {}
 
     # --- lookups -----------------------------------------------------------------------
     def entry(self, index: int, subindex: int) -> Parameter:
@@ -137,6 +145,27 @@ class ObjectDictionary:
             self.values[key] = value
         if self.on_change is not None:
             self.on_change(param.mnemonic)
+
+    def read_all(self, addresses: tuple[Key, ...]) -> tuple[Value, ...]:
+        """:meth:`read` of each address: those stored plainly (readable, no getter) by one
+        C-level look-up of them all (the CANopen slave's poll every 10 ms, its heartbeat time
+        every 1 ms), the others, or a value not stored, through :meth:`read`."""
+        get = self._readers.get(addresses)
+        if get is None:
+            plain = all(
+                (p := self.entries.get(key)) is not None
+                and p.obj_access in _READABLE
+                and key not in self.getters
+                for key in addresses
+            )
+            get = itemgetter(*addresses) if plain and len(addresses) > 1 else _no_reader
+            self._readers[addresses] = get
+        if get is not _no_reader:
+            try:
+                return get(self.values)  # type: ignore[no-any-return]
+            except KeyError:  # not stored: read() answers the default
+                pass
+        return tuple([self.read(index, subindex) for index, subindex in addresses])
 
     def read_bytes(self, index: int, subindex: int) -> bytes:
         """Read and encode per the catalogue data type (little-endian)."""

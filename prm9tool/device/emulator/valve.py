@@ -120,8 +120,7 @@ class EmulatedValve:
     def read_values(self, addresses: tuple[tuple[int, int], ...]) -> tuple[int | str, ...]:
         """:meth:`read` of each address, under one lock (the CANopen slave's parameter poll)."""
         with self.lock:
-            read = self._fw.od.read
-            return tuple(read(index, subindex) for index, subindex in addresses)
+            return self._fw.od.read_all(addresses)
 
     def read_mapped(self, entries: tuple[tuple[int, int, int], ...]) -> bytes:
         """A PDO's data: the mapped ``(index, subindex, bits)`` objects encoded and joined."""
