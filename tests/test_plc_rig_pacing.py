@@ -4,6 +4,7 @@ valves the kernel dropped a third of the frames (docs/PERFORMANCE.md, "The PLC r
 
 from __future__ import annotations
 
+import itertools
 import select
 import socket
 import struct
@@ -215,3 +216,41 @@ def test_queued_frames_are_taken_before_the_next_batch_of_the_simulation():
         bus.shutdown()
         master.shutdown()
     assert recorder.log[:5] == ["batch", "frame 00", "frame 01", "frame 02", "batch"]
+
+
+class _Frames:
+    """A bus as far as a CANopen slave without a receive thread sends on it."""
+
+    def __init__(self) -> None:
+        self.sent: list[tuple[int, bytes]] = []
+
+    def send(self, msg: can.Message, timeout: float | None = None) -> None:
+        self.sent.append((msg.arbitration_id, bytes(msg.data)))
+
+    def recv(self, timeout: float | None = None) -> None:
+        return None
+
+
+def test_a_sync_samples_the_valve_advanced_to_its_arrival_not_the_last_batch():
+    """Paced in batches of 2 ms or more, several 1 ms SYNCs found the same simulated moment
+    (a real valve would not repeat a sample): the cycles due by a SYNC's arrival run first.
+    No batch runs here but those (the pacer's time base is set back by 5 cycles each time)."""
+    bus = _Frames()
+    valve = EmulatedValve(E02_CA, 8103)
+    slave = valve.connect_can(bus, receive=False)  # type: ignore[arg-type]
+    valve.advance(2.0)
+    for data in (bytes.fromhex("2F00180201000000"), bytes.fromhex("2B40600008000000")):
+        slave.receive_data(0x60A, data, time.time())  # TPDO1 on every SYNC
+    slave.receive_data(0, b"\x01\x0a", time.time())
+    valve.paced_by_group(True)  # paced by a group, whose batches never run in this test
+    times = []
+    for _ in range(20):
+        pacer = valve.pacer
+        stamp, now = time.time(), time.monotonic()  # the SYNC arrived 5 cycles into a batch
+        pacer.start = now - (pacer.cycles_done + 5) * pacer.cycle_s
+        slave.receive_data(0x80, b"", stamp)
+        times.append(valve.time)
+    valve.paced_by_group(False)
+    assert sum(1 for can_id, _ in bus.sent if can_id == 0x18A) == 20
+    steps = [round((b - a) / valve.CYCLE_S) for a, b in itertools.pairwise(times)]
+    assert all(1 <= step <= 10 for step in steps), steps  # each SYNC a moment of its own

@@ -41,6 +41,11 @@ class DataType(IntEnum):
         """The full range the type can hold."""
         return _RANGES[self]
 
+    @property
+    def codec(self) -> struct.Struct | None:
+        """The little-endian struct of a number type (None for strings)."""
+        return _STRUCTS.get(self)
+
     def encode(self, value: int | str) -> bytes:
         """Encode a raw value little-endian as on the CAN bus."""
         codec = _STRUCTS.get(self)

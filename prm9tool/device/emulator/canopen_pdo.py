@@ -39,6 +39,8 @@ class Dictionary(Protocol):
     def write_bytes(self, index: int, subindex: int, data: bytes) -> None: ...
     def read_mapped(self, entries: Entries) -> bytes: ...
     def write_mapped(self, entries: Entries, data: bytes) -> list[SdoAbortError]: ...
+    def pdo_sampler(self, entries: Entries) -> Callable[[], bytes] | None: ...
+    def control_mode(self) -> int: ...
 
 
 @functools.cache
@@ -136,21 +138,30 @@ def channel_mapping(valve: Dictionary, channel: PdoChannel) -> Entries:
     with a power-up, which loads the channel again), the control mode read now."""
     if not channel.map_count:
         return ()
-    return _entries(channel.map_index, int(valve.read(*CONTROL_MODE)), channel.map_count)
+    return _entries(channel.map_index, valve.control_mode(), channel.map_count)
 
 
 class TpdoLogic:
     """When a TPDO is due and what it carries."""
 
-    def __init__(self, channel: PdoChannel, valve: Dictionary) -> None:
+    def __init__(self, channel: PdoChannel, valve: Dictionary, fast: bool = True) -> None:
+        """``fast``: the mapped data through ``valve.pdo_sampler`` where the mapping has one
+        (:mod:`.pdo_fast`; False: always ``read_mapped``, the reference path)."""
         self.channel = channel
         self._valve = valve
+        self._fast = fast
+        self._sampled: Entries = ()  # the mapping _sample was made for
+        self._sample: Callable[[], bytes] | None = None
 
     def data(self) -> bytes | None:
         """The mapped bytes, or None when the PDO maps nothing (CiA 301: mapping disabled)."""
         entries = channel_mapping(self._valve, self.channel)
         if not entries:
             return None  # a TPDO that maps nothing is never sent
+        if entries is not self._sampled and self._fast:  # _entries hands out one tuple each
+            self._sampled, self._sample = entries, self._valve.pdo_sampler(entries)
+        if self._sample is not None:
+            return self._sample()
         return self._valve.read_mapped(entries)
 
     def on_sync(self) -> bytes | None:

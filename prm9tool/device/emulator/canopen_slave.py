@@ -22,7 +22,14 @@ import can
 from prm9tool.catalogue.commissioning import NmtCommand
 from prm9tool.device.emulator import canopen_udp
 from prm9tool.device.emulator.canopen_lss import LSS_REQUEST, LSS_RESPONSE, LssHost, LssSlave
-from prm9tool.device.emulator.canopen_pdo import PdoChannel, RpdoLogic, TpdoLogic, mapping
+from prm9tool.device.emulator.canopen_pdo import (
+    EVENT_TYPES,
+    SYNC_TYPES,
+    PdoChannel,
+    RpdoLogic,
+    TpdoLogic,
+    mapping,
+)
 from prm9tool.device.emulator.canopen_rules import check_comm_write
 from prm9tool.device.emulator.canopen_sdo import SdoServer
 from prm9tool.device.emulator.canopen_watch import TimingWatches
@@ -46,6 +53,7 @@ NMT_EVENTS = {
 }
 SYNC_COB_ID, CYCLE_PERIOD, EMCY_COB_ID = 0x1005, 0x1006, 0x1014
 HEARTBEAT_TIME, NMT_STARTUP = 0x1017, 0x1F80
+_HEARTBEAT = ((HEARTBEAT_TIME, 0), (NMT_STARTUP, 0))  # read together (a look-up of two)
 CONFIG_POLL_MS = 10  # PDO communication parameters are re-read every 10 ms
 
 
@@ -66,6 +74,10 @@ class CanopenSlave:
         ]
         self._length_error = False  # EMCY 8210 reported and not yet reset
         self._tpdo_logic = [TpdoLogic(c, valve) for c in self._tpdos]
+        # the valid TPDOs a SYNC may send and those the 1 ms task may (_load_config): per frame
+        # and per millisecond only these are asked
+        self._sync_tpdos: tuple[TpdoLogic, ...] = ()
+        self._tick_tpdos: tuple[TpdoLogic, ...] = ()
         self._rpdo_by_id: dict[int, RpdoLogic] = {}  # the valid RPDOs (_load_config)
         pdo_addresses = [  # what _load_config reads, in one call
             (index, sub)
@@ -231,11 +243,6 @@ class CanopenSlave:
         """A frame from the bus."""
         self._on_message(msg)
 
-    def receive_data(self, can_id: int, data: bytes, timestamp: float) -> None:
-        """A classical data frame from the bus, received at ``timestamp`` (``time.time``'s
-        epoch, s): a :class:`~.canopen_hub.SharedBus` calls this, without ``can.Message``."""
-        self._on_frame(can_id, data, timestamp)
-
     def _judge_quiet(self, quiet_until_ms: float) -> None:
         """``recv`` timed out at ``quiet_until_ms`` (wall clock) with no frame: deadlines before
         then passed unmet. Judged at that moment, not after waiting for the lock (frames that
@@ -250,10 +257,14 @@ class CanopenSlave:
             return  # a classical CAN node ignores CAN FD frames
         self._on_frame(msg.arbitration_id, bytes(msg.data), msg.timestamp)
 
-    def _on_frame(self, can_id: int, data: bytes, timestamp: float) -> None:
-        with self._valve.lock:
+    def receive_data(self, can_id: int, data: bytes, timestamp: float) -> None:
+        """A classical data frame from the bus, received at ``timestamp`` (``time.time``'s
+        epoch, s): a :class:`~.canopen_hub.SharedBus` calls this, without ``can.Message``."""
+        valve = self._valve
+        with valve.lock:
             watches = self._watches
-            watches.follow(self._valve.running, self._now_ms)
+            if watches.paced != valve.running:  # (a call fewer per frame when it is)
+                watches.follow(valve.running, self._now_ms)
             arrival = watches.arrival_ms(timestamp, self._now_ms)
             if watches.paced and self.state is NmtState.OPERATIONAL:
                 watches.judge(arrival)  # a frame after a deadline proves it passed unmet
@@ -268,6 +279,8 @@ class CanopenSlave:
                     self._dispatch(can_id, data, arrival)
             except Exception:  # a firmware bug must not stop the receive thread
                 log.exception("CANopen frame 0x%03X not processed", can_id)
+
+    _on_frame = receive_data  # every frame, whoever received it
 
     def _dispatch(self, can_id: int, data: bytes, arrival_ms: float) -> None:
         if can_id == 0:
@@ -292,13 +305,17 @@ class CanopenSlave:
     def _on_sync(self, arrival_ms: float) -> None:
         if self.state is not NmtState.OPERATIONAL:
             return
+        if self._watches.paced:  # the TPDOs sample the moment the SYNC came, as a valve's
+            self._valve.run_due_by(arrival_ms / 1000.0)  # (the watches' clock is monotonic)
+            if self.state is not NmtState.OPERATIONAL:
+                return  # those cycles' 1 ms tasks changed it (a power cycle, an NMT reset)
         if self._watch_errors:
             self._watch_error_gone("sync_error", "sync_ok")
         self._watches.sync_received(arrival_ms)
         for rpdo in self._rpdo_logic:
             if rpdo.channel.pending is not None:
                 rpdo.on_sync()
-        for tpdo in self._tpdo_logic:
+        for tpdo in self._sync_tpdos:
             if (data := tpdo.on_sync()) is not None:
                 self._transmit(tpdo, data)
 
@@ -333,7 +350,7 @@ class CanopenSlave:
                 self._load_config()  # PDO parameters written over USB take effect too
             if not self._watches.paced:  # paced: judged by the receive thread
                 self._watches.judge(self._now_ms)
-            for tpdo in self._tpdo_logic:
+            for tpdo in self._tick_tpdos:
                 self._transmit(tpdo, tpdo.on_tick(self._now_ms))
 
     def _on_watch_event(self, event: str) -> None:
@@ -347,8 +364,8 @@ class CanopenSlave:
             self._watch_errors.discard(error)
             self._valve.canopen.nmt_event(event)
 
-    def _heartbeat_ms(self) -> int:
-        return int(self._valve.read(HEARTBEAT_TIME, 0))
+    def _heartbeat_ms(self) -> int:  # every 1 ms: with the poll's one look-up
+        return int(self._valve.read_values(_HEARTBEAT)[0])
 
     def _transmit(self, logic: TpdoLogic, data: bytes | None) -> None:
         if data is None or not logic.channel.valid:
@@ -433,6 +450,12 @@ class CanopenSlave:
             channel.load(self._valve, self._now_ms)
         self._period_us = int(self._valve.read(CYCLE_PERIOD, 0))
         self._sync_id = int(self._valve.read(SYNC_COB_ID, 0)) & 0x7FF
+        self._sync_tpdos = tuple(
+            t for t in self._tpdo_logic if t.channel.valid and t.channel.trans_type in SYNC_TYPES
+        )
+        self._tick_tpdos = tuple(
+            t for t in self._tpdo_logic if t.channel.valid and t.channel.trans_type in EVENT_TYPES
+        )
         self._rpdo_by_id = {}
         for logic in reversed(self._rpdo_logic):  # two on one CAN-ID: the first takes it
             if logic.channel.valid:

@@ -9,6 +9,8 @@ from __future__ import annotations
 
 import struct
 from collections.abc import Callable, Iterable
+from operator import itemgetter
+from typing import Any
 
 from prm9tool.catalogue import CATALOGUE, Catalogue, DataType, ObjAccess, Parameter, Texts
 from prm9tool.catalogue.variant import Variant
@@ -39,6 +41,11 @@ def _sub0(index: int, highest: int) -> Parameter:
         in_file=False,
         source="CiA 301 (derived from the catalogue's sub-indices)",
     )
+
+
+def _no_reader(values: dict[Key, Value]) -> Any:
+    """read_all's mark for addresses read one at a time (never called)."""
+    raise NotImplementedError
 
 
 def abort(key: Key, code: AbortCode) -> SdoAbortError:
@@ -75,6 +82,9 @@ class ObjectDictionary:
         # PDO mappings' entries resolved once: ((index, subindex, bits), ...) -> (param, bytes)
         self._mapped: dict[tuple[tuple[int, int, int], ...], tuple[tuple[Parameter, int], ...]]
         self._mapped = {}
+        # and for writing: (index, subindex, bytes, (param, struct unpack) or None: write_bytes)
+        self._written: dict[tuple[tuple[int, int, int], ...], tuple[_Written, ...]] = {}
+        self._readers: dict[tuple[Key, ...], Callable[[dict[Key, Value]], Any]] = {}
 
     # --- lookups -----------------------------------------------------------------------
     def entry(self, index: int, subindex: int) -> Parameter:
@@ -100,7 +110,8 @@ class ObjectDictionary:
     # --- access ------------------------------------------------------------------------
     def read(self, index: int, subindex: int) -> Value:
         """Read with CiA 301 access rules."""
-        return self._read(self.entry(index, subindex))
+        param = self.entries.get((index, subindex))  # entry()'s look-up, its abort if absent
+        return self._read(param if param is not None else self.entry(index, subindex))
 
     def _read(self, param: Parameter) -> Value:
         key = param.key
@@ -135,6 +146,27 @@ class ObjectDictionary:
         if self.on_change is not None:
             self.on_change(param.mnemonic)
 
+    def read_all(self, addresses: tuple[Key, ...]) -> tuple[Value, ...]:
+        """:meth:`read` of each address: those stored plainly (readable, no getter) by one
+        C-level look-up of them all (the CANopen slave's poll every 10 ms, its heartbeat time
+        every 1 ms), the others, or a value not stored, through :meth:`read`."""
+        get = self._readers.get(addresses)
+        if get is None:
+            plain = all(
+                (p := self.entries.get(key)) is not None
+                and p.obj_access in _READABLE
+                and key not in self.getters
+                for key in addresses
+            )
+            get = itemgetter(*addresses) if plain and len(addresses) > 1 else _no_reader
+            self._readers[addresses] = get
+        if get is not _no_reader:
+            try:
+                return get(self.values)  # type: ignore[no-any-return]
+            except KeyError:  # not stored: read() answers the default
+                pass
+        return tuple([self.read(index, subindex) for index, subindex in addresses])
+
     def read_bytes(self, index: int, subindex: int) -> bytes:
         """Read and encode per the catalogue data type (little-endian)."""
         param = self.entry(index, subindex)
@@ -155,15 +187,25 @@ class ObjectDictionary:
     ) -> list[SdoAbortError]:
         """:meth:`write_bytes` of each entry's bytes of ``data`` in turn (long enough: the
         caller checked); the entries that refused their value, as their aborts."""
+        plan = self._written.get(entries)
+        if plan is None:  # resolved once per mapping, as read_mapped's: an RPDO each SYNC
+            plan = tuple(
+                _write_plan(self.entries.get((i, s)), i, s, bits) for i, s, bits in entries
+            )
+            self._written[entries] = plan
         refused: list[SdoAbortError] = []
         offset = 0
-        for index, sub, bits in entries:
-            size = bits // 8
+        write = self._write
+        for index, sub, size, direct in plan:
+            chunk = data[offset : offset + size]
+            offset += size
             try:
-                self.write_bytes(index, sub, data[offset : offset + size])
+                if direct is None or len(chunk) != size:  # the general path and its aborts
+                    self.write_bytes(index, sub, chunk)
+                else:  # write_bytes' checks passed already: a writable entry of this size
+                    write(direct[0], int(direct[1](chunk)[0]))
             except SdoAbortError as exc:
                 refused.append(exc)
-            offset += size
         return refused
 
     def read_encoded(self, addresses: Iterable[Key], room: int) -> list[bytes | int]:
@@ -200,6 +242,20 @@ class ObjectDictionary:
         except (struct.error, UnicodeDecodeError) as exc:
             raise abort(param.key, AbortCode.WRONG_LENGTH) from exc
         self._write(param, value)
+
+
+_Written = tuple[int, int, int, tuple[Parameter, Callable[[bytes], tuple[int, ...]]] | None]
+
+
+def _write_plan(param: Parameter | None, index: int, sub: int, bits: int) -> _Written:
+    """How :meth:`ObjectDictionary.write_mapped` writes an entry: decoded by its struct right
+    away when :meth:`~ObjectDictionary.write_bytes` would only check what holds for every frame
+    (it exists, is writable, a number of exactly this size), else through ``write_bytes``."""
+    size = bits // 8
+    codec = None if param is None else param.dtype.codec
+    if param is None or codec is None or not param.writable or codec.size != size:
+        return index, sub, size, None
+    return index, sub, size, (param, codec.unpack)
 
 
 def validate(param: Parameter, value: Value) -> None:

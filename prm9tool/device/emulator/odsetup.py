@@ -64,7 +64,7 @@ def _pv(fw: Firmware, signal: str) -> int:
 def _live(fw: Firmware) -> None:
     _getter(fw, "PWR", lambda: int(min(65535, max(0, round(fw.supply * 1000)))))
     _getter(fw, "TEMP", lambda: int(min(127, max(-128, round(fw.temperature)))))
-    _getter(fw, "STATUSWORD", lambda: fw.sm.status_word(_status_flags(fw)))
+    _getter(fw, "STATUSWORD", lambda: fw.sm.status_word(status_flags(fw)))
     _getter(fw, "CONTROLWORD", lambda: fw.sm.control_word)
     _getter(fw, "POSACT", lambda: _pv(fw, "position_actual"))
     _getter(fw, "DEMAND", lambda: _pv(fw, "demand"))
@@ -85,7 +85,7 @@ def _errors(fw: Firmware) -> None:
         fw.od.hooks[fw.od.param("ERRCOUNT").key] = lambda _v: fw.faults.clear_history()
 
 
-def _status_flags(fw: Firmware) -> int:
+def status_flags(fw: Firmware) -> int:
     """The CiA 408 upper status-word flags the emulated valve has (docs/canopen.md)."""
     flags = STATUS_LOCAL if fw.analog_only else 0
     active = fw.sm.state is DeviceState.DEVICE_MODE_ACTIVE

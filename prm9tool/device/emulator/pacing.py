@@ -72,6 +72,13 @@ class Pacer:
             return 0
         return min(lag, self.max_batch)
 
+    def due_by(self, at: float) -> int:
+        """Cycles of the batch in progress due by ``at`` (a time of ``clock``): the lag then if
+        it is at most ``min_batch`` (the simulation keeping up), else 0 (it is behind: the
+        batches catch up, :meth:`due`)."""
+        lag = int((at - self.start) / self.cycle_s + 1e-6) - self.cycles_done
+        return lag if 0 < lag <= self.min_batch else 0
+
     def _note_lag(self, lag_s: float) -> None:
         late = lag_s > LATE_S
         if late and not self._late:

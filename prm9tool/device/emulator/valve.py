@@ -39,6 +39,7 @@ if TYPE_CHECKING:
     from prm9tool.catalogue.error_kinds import ErrorKind
     from prm9tool.device.emulator.canopen_slave import CanopenSlave
 
+_CONTROL_MODE = CATALOGUE["CTRLMODE"].key  # 0x6043
 INPUT_NAMES = (
     "setpoint",
     "sensor",
@@ -119,13 +120,31 @@ class EmulatedValve:
     def read_values(self, addresses: tuple[tuple[int, int], ...]) -> tuple[int | str, ...]:
         """:meth:`read` of each address, under one lock (the CANopen slave's parameter poll)."""
         with self.lock:
-            read = self._fw.od.read
-            return tuple(read(index, subindex) for index, subindex in addresses)
+            return self._fw.od.read_all(addresses)
 
     def read_mapped(self, entries: tuple[tuple[int, int, int], ...]) -> bytes:
         """A PDO's data: the mapped ``(index, subindex, bits)`` objects encoded and joined."""
         with self.lock:
             return self._fw.od.read_mapped(entries)
+
+    def control_mode(self) -> int:
+        """0x6043 as :meth:`read` answers it, by one look-up: a PDO's mapping follows it, and
+        it is read for every PDO sent or received."""
+        with self.lock:
+            od = self._fw.od
+            value = od.values.get(_CONTROL_MODE)
+            if value is None or _CONTROL_MODE in od.getters:  # as read() answers
+                value = od.read(*_CONTROL_MODE)
+            return int(value)
+
+    def pdo_sampler(self, entries: tuple[tuple[int, int, int], ...]) -> Callable[[], bytes] | None:
+        """A function returning :meth:`read_mapped` of ``entries`` the fast way (the compiled
+        loop's state read directly, :mod:`.pdo_fast`), or None when the mapping has none.
+        Call it with :attr:`lock` held (the CANopen slave does)."""
+        from prm9tool.device.emulator import pdo_fast
+
+        with self.lock:
+            return pdo_fast.sampler(self._fw, entries)
 
     def write_mapped(
         self, entries: tuple[tuple[int, int, int], ...], data: bytes
@@ -279,14 +298,31 @@ class EmulatedValve:
         batch is due (0: call again at once). The paced thread's step, and a
         :class:`~.paced_group.PacedGroup`'s for each of its valves."""
         pacer = self.pacer
-        due = pacer.due()
-        if due == 0:
-            return pacer.wait_s()
-        with self.lock:
+        with self.lock:  # the pacer too: a SYNC may run the cycles due by it (run_due_by)
+            due = pacer.due()
+            if due == 0:
+                return pacer.wait_s()
             self._fw.run(due)
             self._capture.trim()
-        pacer.done(due)
+            pacer.done(due)
         return 0.0
+
+    def run_due_by(self, at: float) -> int:
+        """While running in real time: the cycles of the present batch due by ``at``
+        (``time.monotonic``), run now; returns how many. The CANopen slave's SYNC: the batch
+        of 2 ms or more would let several SYNCs of 1 ms sample the same state, where a real
+        valve's TPDO carries a value of the moment the SYNC came (issue 30). Nothing when the
+        simulation is behind the wall clock (:meth:`.pacing.Pacer.due_by`): its batches catch
+        up, frames first."""
+        with self.lock:
+            if not self.running:
+                return 0
+            due = self.pacer.due_by(at)
+            if due:
+                self._fw.run(due)
+                self._capture.trim()
+                self.pacer.done(due)
+            return due
 
     def paced_by_group(self, grouped: bool) -> None:
         """A :class:`~.paced_group.PacedGroup` paces this valve from now on (True: a new time
