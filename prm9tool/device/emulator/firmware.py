@@ -382,6 +382,17 @@ class Firmware(ParameterMemory):
         self.gen.send(0)
         return self.loop
 
+    def compiled_state(self):  # type: ignore[no-untyped-def]
+        """The compiled loop's state array as :meth:`flush` leaves it, without the copy into
+        the mailbox (the PDO fast path reads its measuring points from there, pdo_fast.py).
+        Only for the compiled kernel (``gen`` with ``prepare``/``write_back``)."""
+        if self.setpoint_dirty or self.config_dirty:
+            self._refresh_inputs()
+        gen = self.gen
+        gen.prepare()  # type: ignore[attr-defined]
+        gen.write_back()  # type: ignore[attr-defined]
+        return gen.state  # type: ignore[attr-defined]
+
     def signal_values(self) -> dict[str, float]:
         """Latest value of every measuring point."""
         return dict(zip(SIGNAL_ORDER, self.flush().signals, strict=True))

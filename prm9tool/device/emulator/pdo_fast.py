@@ -60,7 +60,7 @@ def sampler(fw: Firmware, entries: Entries) -> Callable[[], bytes] | None:
 
         def status_and_actual() -> bytes:
             word = fw.sm.status_word(status_flags(fw))
-            return pack(word, clamp_pv(_flushed(fw)[slot]))
+            return pack(word, clamp_pv(fw.compiled_state()[slot]))
 
         return status_and_actual
 
@@ -72,18 +72,8 @@ def sampler(fw: Firmware, entries: Entries) -> Callable[[], bytes] | None:
                 values.append(fw.sm.status_word(status_flags(fw)))
                 continue
             if state is None:
-                state = _flushed(fw)
+                state = fw.compiled_state()
             values.append(clamp_pv(state[slot]))
         return pack(*values)
 
     return any_order
-
-
-def _flushed(fw: Firmware):  # type: ignore[no-untyped-def]
-    """The compiled loop's state after what :meth:`.firmware.Firmware.flush` does to it."""
-    if fw.setpoint_dirty or fw.config_dirty:
-        fw._refresh_inputs()
-    gen = fw.gen
-    gen.prepare()  # type: ignore[attr-defined]
-    gen.write_back()  # type: ignore[attr-defined]
-    return gen.state  # type: ignore[attr-defined]
