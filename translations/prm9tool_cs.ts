@@ -1932,6 +1932,10 @@ Poslední akce možná nebyla dokončena. Uložte svou práci pod novým názvem
             <source>The valve has no birth certificate in the history.</source>
             <translation>Ventil nemá v historii rodný list.</translation>
         </message>
+        <message>
+            <source>The valve stopped sending its measuring points.</source>
+            <translation>Ventil přestal posílat své měřicí body.</translation>
+        </message>
     </context>
     <context>
         <name>EventTableModel</name>

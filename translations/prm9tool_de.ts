@@ -1922,6 +1922,10 @@ Die letzte Aktion wurde womöglich nicht vollständig ausgeführt. Speichern Sie
             <source>The valve has no birth certificate in the history.</source>
             <translation>Das Ventil hat keine Geburtsurkunde im Verlauf.</translation>
         </message>
+        <message>
+            <source>The valve stopped sending its measuring points.</source>
+            <translation>Das Ventil sendet seine Messpunkte nicht mehr.</translation>
+        </message>
     </context>
     <context>
         <name>EventTableModel</name>

@@ -14,6 +14,7 @@ from collections.abc import Callable, Sequence
 from typing import TYPE_CHECKING
 
 from prm9tool.errors import DeviceTimeoutError
+from prm9tool.messages import QT_TRANSLATE_NOOP
 
 if TYPE_CHECKING:
     import numpy as np
@@ -33,6 +34,9 @@ def silence_bound_s(rate_hz: float) -> float:
 
 class StreamSilentError(DeviceTimeoutError):
     """The valve sent no sample of a running stream for :func:`silence_bound_s`."""
+
+    # the link may still answer (an NMT stop ends the TPDOs only): not "did not answer"
+    summary = QT_TRANSLATE_NOOP("Errors", "The valve stopped sending its measuring points.")
 
 
 class StreamReader:
@@ -82,8 +86,8 @@ class StreamReader:
 
     def silent_words(self, expected: int | None = None) -> str:
         """What a dead stream is called at every door."""
-        got = f"{self.received} of {expected}" if expected is not None else f"{self.received}"
-        return f"the valve sent no samples for {self.silence_s:.1f} s ({got} received)"
+        wanted = f" of {expected}" if expected is not None else ""
+        return f"the valve sent no samples for {self.silence_s:.1f} s ({self.received} received{wanted})"
 
     def stop(self) -> None:
         """Stop the stream (nothing happens where it is not running)."""
