@@ -179,7 +179,7 @@ def characterize(
     :meth:`prm9tool.service.valve.ValveService.characterize`: refused while a generator runs;
     not recorded)."""
     from prm9tool.service.motion import claim
-    from prm9tool.service.valve import characterize_session
+    from prm9tool.service.rigs import characterize_session
 
     with claim(session, "characterization"):
         return characterize_session(session, profile, progress)
