@@ -35,7 +35,7 @@ def silence_bound_s(rate_hz: float) -> float:
 class StreamSilentError(DeviceTimeoutError):
     """The valve sent no sample of a running stream for :func:`silence_bound_s`."""
 
-    # the link may still answer (an NMT stop ends the TPDOs only): not "did not answer"
+    # the link may still answer its requests while the stream is silent: not "did not answer"
     summary = QT_TRANSLATE_NOOP("Errors", "The valve stopped sending its measuring points.")
 
 

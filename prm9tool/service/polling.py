@@ -143,7 +143,7 @@ class Poller:
 
     def _drain(self, reader: StreamReader, result: PollResult) -> None:
         """The oscilloscope's new samples and lost count; a dead stream is stopped and said in
-        the capture's words (the link may still answer: an NMT stop ends the TPDOs only)."""
+        the capture's words; the session stays open (its requests may still be answered)."""
         try:
             block = reader.read()
         except StreamSilentError as silent:
