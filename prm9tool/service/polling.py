@@ -13,7 +13,6 @@ from prm9tool.catalogue import CATALOGUE
 from prm9tool.catalogue.signals import MAX_CHANNELS, SIGNAL_OBJECTS, signals_for
 from prm9tool.catalogue.typekey import TypeKey
 from prm9tool.catalogue.variant import Variant
-from prm9tool.device.stream import StreamReader, StreamSilentError
 from prm9tool.errors import Prm9Error, SdoAbortError
 
 if TYPE_CHECKING:
@@ -21,6 +20,7 @@ if TYPE_CHECKING:
 
     from prm9tool.device.records import DeviceInfo, ValveStatus
     from prm9tool.device.session import ValveSession
+    from prm9tool.device.stream import StreamReader, StreamSilentError
 
 log = logging.getLogger(__name__)
 WATCH_RATE_HZ = 250  # the slow stream that refreshes the diagram's measuring points
@@ -112,6 +112,8 @@ class Poller:
     def start_stream(self, session: ValveSession, keys: list[str], rate_hz: int) -> list[str]:
         """Start the oscilloscope's stream (the watch stream gives way): the stream reader
         of the API's capture, open-ended, drained by :meth:`poll`."""
+        from prm9tool.device.stream import StreamReader  # not at the window's start
+
         self._stop_watch(session)
         self.stop_stream(session)
         reader = StreamReader(session, keys, rate_hz)
@@ -144,6 +146,8 @@ class Poller:
     def _drain(self, reader: StreamReader, result: PollResult) -> None:
         """The oscilloscope's new samples and lost count; a dead stream is stopped and said in
         the capture's words; the session stays open (its requests may still be answered)."""
+        from prm9tool.device.stream import StreamSilentError
+
         try:
             block = reader.read()
         except StreamSilentError as silent:
