@@ -4235,6 +4235,10 @@ Na straně PC se nic neztratilo: dokument dál obsahuje každou hodnotu, záloha
             <translation>Záznam se zastavil: datový tok převzala jiná operace (test ladění…).</translation>
         </message>
         <message>
+            <source>The recording stopped: {0}</source>
+            <translation>Záznam se zastavil: {0}</translation>
+        </message>
+        <message>
             <source>The link dropped: the setpoint generator has stopped.</source>
             <translation>Spojení se přerušilo: generátor žádané hodnoty se zastavil.</translation>
         </message>

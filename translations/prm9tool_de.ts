@@ -4213,6 +4213,10 @@ Auf dem PC ging nichts verloren: Das Dokument enthält weiterhin jeden Wert, Sic
             <translation>Die Aufzeichnung wurde beendet: Ein anderer Vorgang (ein Tuning-Test…) hat den Datenstrom übernommen.</translation>
         </message>
         <message>
+            <source>The recording stopped: {0}</source>
+            <translation>Die Aufzeichnung wurde beendet: {0}</translation>
+        </message>
+        <message>
             <source>The link dropped: the setpoint generator has stopped.</source>
             <translation>Die Verbindung ist abgebrochen: Der Sollwertgenerator wurde gestoppt.</translation>
         </message>

@@ -344,6 +344,11 @@ class ValveConnection(QObject):
         return self.live.stream_stopped
 
     @property
+    def stream_silent(self) -> SignalInstance:
+        """A dead stream was stopped: the capture's words (``failed`` says them too)."""
+        return self.live.stream_silent
+
+    @property
     def samples_lost_changed(self) -> SignalInstance:
         """Samples the running stream lost since it started."""
         return self.live.samples_lost_changed

@@ -130,7 +130,7 @@ class LiveData(QObject):
         """The worker stopped a stream that sent nothing for its silence bound: said as the
         connection's ``failed`` (the API's capture raises the same words), then stopped."""
         if self._stream_keys:
-            self.stream_silent.emit(text)
+            self.stream_silent.emit(text)  # the connection's failed too
             self._on_stream_stopped(None)
 
     def forget(self) -> None:
