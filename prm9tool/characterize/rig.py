@@ -229,6 +229,8 @@ class EmulatorRig(Rig):
         valve = self.valve
         over = CATALOGUE["SETPOVR"]
         self.write({"SETPOVR": counts(float(setpoint_pct[0])), "SETPOVRON": 1})
+        # the emulated valve's own capture, not a session's stream (no StreamReader): the rig
+        # steps the valve's time itself, so every cycle's sample is there and none can be late
         valve.capture_start(list(keys), 1)
         values = [counts(float(v)) for v in setpoint_pct]
         blocks = []
