@@ -12,6 +12,7 @@ import numpy as np
 import pytest
 
 from prm9tool.api import measure
+from prm9tool.service import stream
 
 
 class PacedLink:
@@ -39,17 +40,17 @@ class PacedLink:
 
 
 def test_the_default_rate_over_canopen_is_what_this_pc_keeps(monkeypatch):
-    monkeypatch.setattr(measure, "TRIAL_S", 0.01)
+    monkeypatch.setattr(stream, "TRIAL_S", 0.01)
     busy = PacedLink(kept_hz=300)
-    assert measure._link_rate(busy, ["position_actual"]) == 250  # was 1000, losing samples
+    assert stream.link_rate(busy, ["position_actual"]) == 250  # was 1000, losing samples
     assert busy.started == [1000, 500, 250]  # tried from the bus's pace down
     quiet = PacedLink(kept_hz=1000)
-    assert measure._link_rate(quiet, ["position_actual"]) == 1000
+    assert stream.link_rate(quiet, ["position_actual"]) == 1000
     hopeless = PacedLink(kept_hz=0)
-    assert measure._link_rate(hopeless, ["position_actual"]) == 62  # the slowest, untried
+    assert stream.link_rate(hopeless, ["position_actual"]) == 62  # the slowest, untried
     assert hopeless.started == [1000, 500, 250, 125]
     usb = PacedLink(kept_hz=0, limit_hz=0.0)
-    assert measure._link_rate(usb, ["position_actual"]) == 5000 and usb.started == []
+    assert stream.link_rate(usb, ["position_actual"]) == 5000 and usb.started == []
 
 
 class BusierLink(PacedLink):
@@ -83,7 +84,7 @@ class BusierLink(PacedLink):
 def test_a_capture_at_the_default_rate_that_lost_samples_is_taken_again_slower(monkeypatch):
     """The trial kept 1 kHz, the capture then lost a fifth of its samples: before, the default
     capture returned them as NaN; now it is taken again at 500 Hz, which lost nothing."""
-    monkeypatch.setattr(measure, "TRIAL_S", 0.01)
+    monkeypatch.setattr(stream, "TRIAL_S", 0.01)
     monkeypatch.setattr(measure, "_check_keys", lambda session, keys: None)
     link = BusierLink(kept=[1000, 300, 1000])  # trial at 1 kHz ok, capture lost, again ok
     data = measure.capture(link, ["position_actual"], 0.2)
@@ -93,7 +94,7 @@ def test_a_capture_at_the_default_rate_that_lost_samples_is_taken_again_slower(m
 
 
 def test_a_default_capture_that_loses_at_every_pace_is_refused_with_the_reason(monkeypatch):
-    monkeypatch.setattr(measure, "TRIAL_S", 0.01)
+    monkeypatch.setattr(stream, "TRIAL_S", 0.01)
     monkeypatch.setattr(measure, "_check_keys", lambda session, keys: None)
     link = BusierLink(kept=[0])
     with pytest.raises(measure.SamplesLostError, match=r"could not keep the SYNC pace.* at 62 Hz"):

@@ -162,6 +162,23 @@ def test_a_stream_stopped_by_someone_else_stops_the_recording_and_says_so(scope,
     assert scope.running and "recording stopped" not in scope.status.text()
 
 
+def test_a_stream_gone_dead_stops_the_recording_in_the_captures_words(scope, conn):
+    """The worker stopped a stream that sent nothing (tests/test_stream_contract.py): the note
+    says why, not "another operation took the stream"."""
+    scope.preselect("demand")
+    scope.start()
+    conn.samples_received.emit(_step_block(100, 10, channels=1))
+    conn.stream_silent.emit("the valve sent no samples for 1.0 s (100 received)")
+    conn.stream_stopped.emit()
+    assert not scope.running
+    status = scope.status.text()
+    assert "The recording stopped: the valve sent no samples for 1.0 s (100 received)" in status
+    assert "another operation" not in status
+    scope.start()
+    conn.stream_stopped.emit()  # a later stop by a tuning test says its own words again
+    assert "another operation" in scope.status.text()
+
+
 def test_changing_channels_or_rate_while_running_restarts_cleanly(scope, conn):
     scope.preselect("demand")
     scope.start()

@@ -1932,6 +1932,10 @@ Poslední akce možná nebyla dokončena. Uložte svou práci pod novým názvem
             <source>The valve has no birth certificate in the history.</source>
             <translation>Ventil nemá v historii rodný list.</translation>
         </message>
+        <message>
+            <source>The valve stopped sending its measuring points.</source>
+            <translation>Ventil přestal posílat své měřicí body.</translation>
+        </message>
     </context>
     <context>
         <name>EventTableModel</name>
@@ -4229,6 +4233,10 @@ Na straně PC se nic neztratilo: dokument dál obsahuje každou hodnotu, záloha
         <message>
             <source>The recording stopped: another operation (a tuning test…) took the stream.</source>
             <translation>Záznam se zastavil: datový tok převzala jiná operace (test ladění…).</translation>
+        </message>
+        <message>
+            <source>The recording stopped: {0}</source>
+            <translation>Záznam se zastavil: {0}</translation>
         </message>
         <message>
             <source>The link dropped: the setpoint generator has stopped.</source>

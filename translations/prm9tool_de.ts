@@ -1922,6 +1922,10 @@ Die letzte Aktion wurde womöglich nicht vollständig ausgeführt. Speichern Sie
             <source>The valve has no birth certificate in the history.</source>
             <translation>Das Ventil hat keine Geburtsurkunde im Verlauf.</translation>
         </message>
+        <message>
+            <source>The valve stopped sending its measuring points.</source>
+            <translation>Das Ventil sendet seine Messpunkte nicht mehr.</translation>
+        </message>
     </context>
     <context>
         <name>EventTableModel</name>
@@ -4207,6 +4211,10 @@ Auf dem PC ging nichts verloren: Das Dokument enthält weiterhin jeden Wert, Sic
         <message>
             <source>The recording stopped: another operation (a tuning test…) took the stream.</source>
             <translation>Die Aufzeichnung wurde beendet: Ein anderer Vorgang (ein Tuning-Test…) hat den Datenstrom übernommen.</translation>
+        </message>
+        <message>
+            <source>The recording stopped: {0}</source>
+            <translation>Die Aufzeichnung wurde beendet: {0}</translation>
         </message>
         <message>
             <source>The link dropped: the setpoint generator has stopped.</source>

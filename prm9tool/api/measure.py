@@ -8,14 +8,14 @@ from __future__ import annotations
 
 import logging
 import os
-import time
 from collections.abc import Callable, Sequence
 from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
 from prm9tool.catalogue.signals import BY_KEY, MAX_CHANNELS, signals_for
-from prm9tool.errors import CommunicationError, DeviceTimeoutError, Prm9Error, ValueRangeError
+from prm9tool.errors import Prm9Error, ValueRangeError
+from prm9tool.service.stream import SamplesLostError, record
 
 if TYPE_CHECKING:
     from prm9tool.analysis.profile import Profile
@@ -26,11 +26,6 @@ if TYPE_CHECKING:
 __all__ = ["Captured", "SamplesLostError", "SetpointGenerator", "capture", "characterize"]
 
 log = logging.getLogger("prm9tool.api")
-
-STREAM_BASE_HZ = 5000  # the valve samples its measuring points every 200 µs (manual §8.7.2)
-SILENCE_S = 1.0  # no sample for this long (and for 20 sample periods): the stream is dead
-TRIAL_S = 0.25  # a CANopen pace is tried this long before a capture at the default rate
-TRIAL_MIN_HZ = 50  # decision: the halving stops above this (a PC that slow loses at any pace)
 
 
 class Captured(dict[str, np.ndarray]):
@@ -55,14 +50,12 @@ class Captured(dict[str, np.ndarray]):
         return pd.DataFrame(columns, index=pd.Index(self["t"], name="t [s]"))
 
 
-class SamplesLostError(CommunicationError):
-    """A capture at the default rate lost samples even at the slowest pace it may take."""
-
-
 def capture(
     session: ValveSession, keys: Sequence[str], seconds: float, rate_hz: int | None = None
 ) -> Captured:
-    """``seconds`` of the measuring points ``keys`` in display units, plus ``"t"`` (s).
+    """``seconds`` of the measuring points ``keys`` in display units, plus ``"t"`` (s): the
+    valve service's recording (:func:`prm9tool.service.stream.record`, the oscilloscope's
+    stream reader) with units.
 
     At the default rate (``rate_hz`` None) nothing is lost: over CANopen a capture that lost a
     sample (the PC got busier than during the trial) is taken again at half the pace, and
@@ -70,54 +63,8 @@ def capture(
     sample is NaN in its place."""
     keys = list(keys)
     _check_keys(session, keys)
-    if not seconds > 0:
-        raise ValueRangeError(f"capture: {seconds} s is not a duration")
-    if rate_hz:
-        return _recorded(keys, _record(session, keys, seconds, rate_hz)[0], rate_hz)
-    rate = _link_rate(session, keys)
-    while True:
-        samples, lost = _record(session, keys, seconds, rate)
-        if not lost or rate >= STREAM_BASE_HZ:  # USB: the valve's own pace, no slower one
-            return _recorded(keys, samples, rate)
-        slower = _slower(rate)
-        if slower is None:
-            raise SamplesLostError(
-                f"capture: this PC could not keep the SYNC pace: {lost} of {len(samples)} "
-                f"samples lost even at {rate} Hz, the slowest default; pass rate_hz to "
-                "accept gaps (NaN in their place)"
-            )
-        log.info("capture: %d samples lost at %d Hz; again at %d Hz", lost, rate, slower)
-        rate = slower
-
-
-def _record(
-    session: ValveSession, keys: list[str], seconds: float, rate: int
-) -> tuple[np.ndarray, int]:
-    """The raw samples of ``seconds`` at ``rate`` and how many of them were lost."""
-    wanted = max(1, round(seconds * rate))
-    poll_s = max(0.001, 10 / rate)  # about one report's worth of samples
-    silence_s = max(SILENCE_S, 20 / rate)
-    session.stream_start(keys, rate)
-    blocks: list[np.ndarray] = []
-    got, heard, lost = 0, time.monotonic(), 0
-    try:
-        while got < wanted:
-            before = session.samples_lost
-            block = session.stream_read()
-            if len(block):
-                lost += min(session.samples_lost - before, wanted - got)
-                blocks.append(block)
-                got += len(block)
-                heard = time.monotonic()
-            elif time.monotonic() - heard > silence_s:
-                raise DeviceTimeoutError(
-                    f"the valve sent no samples for {silence_s:.1f} s ({got} of {wanted})"
-                )
-            else:
-                time.sleep(poll_s)
-    finally:
-        session.stream_stop()
-    return np.concatenate(blocks)[:wanted], lost
+    taken = record(session, keys, seconds, rate_hz)
+    return _recorded(keys, taken.samples, taken.rate_hz)
 
 
 def _recorded(keys: list[str], samples: np.ndarray, rate: int) -> Captured:
@@ -126,13 +73,6 @@ def _recorded(keys: list[str], samples: np.ndarray, rate: int) -> Captured:
     data.units = {**{key: BY_KEY[key].unit for key in keys}, "t": "s"}
     data.rate_hz = rate
     return data
-
-
-def _slower(rate: int) -> int | None:
-    """The next pace of the default's halving (None: ``rate`` was its slowest)."""
-    divider = 2 * round(STREAM_BASE_HZ / rate)
-    slower = STREAM_BASE_HZ // divider
-    return None if slower < TRIAL_MIN_HZ else slower
 
 
 def _check_keys(session: ValveSession, keys: list[str]) -> None:
@@ -149,39 +89,6 @@ def _check_keys(session: ValveSession, keys: list[str]) -> None:
                 f"capture: {key!r} is not a measuring point{where} on a "
                 f"{session.variant.label} valve (known: {known})"
             )
-
-
-def _link_rate(session: ValveSession, keys: list[str]) -> int:
-    """The fastest rate the link streams without losing samples: 5000 Hz divided by a whole
-    number. Over USB the valve's own 5 kHz; over CANopen the SYNC + TPDO pace of the bus
-    (docs/can-link.md) only if this PC keeps it: the tool's SYNC thread skips a tick it
-    reaches late, and a loaded PC lost 13-32 % of the samples at 1 kHz. So each pace from the
-    bus's, halving, is tried for TRIAL_S and the first that lost nothing is taken (the last
-    above TRIAL_MIN_HZ without a trial when none did)."""
-    limit = session.info.stream_rate_limit_hz
-    if not limit or limit >= STREAM_BASE_HZ:
-        return STREAM_BASE_HZ
-    divider = int(np.ceil(STREAM_BASE_HZ / limit))
-    while True:
-        rate = STREAM_BASE_HZ // divider
-        slowest = STREAM_BASE_HZ // (2 * divider) < TRIAL_MIN_HZ
-        if slowest or _streams_without_loss(session, keys, rate):
-            return rate
-        divider *= 2
-
-
-def _streams_without_loss(session: ValveSession, keys: list[str], rate: int) -> bool:
-    """True when ``rate`` streamed TRIAL_S without a lost sample."""
-    session.stream_start(keys, rate)
-    try:
-        until = time.monotonic() + TRIAL_S
-        while time.monotonic() < until:
-            session.stream_read()
-            time.sleep(min(0.02, TRIAL_S / 10))
-        session.stream_read()
-        return session.samples_lost == 0
-    finally:
-        session.stream_stop()
 
 
 class SetpointGenerator:
@@ -272,7 +179,7 @@ def characterize(
     :meth:`prm9tool.service.valve.ValveService.characterize`: refused while a generator runs;
     not recorded)."""
     from prm9tool.service.motion import claim
-    from prm9tool.service.valve import characterize_session
+    from prm9tool.service.rigs import characterize_session
 
     with claim(session, "characterization"):
         return characterize_session(session, profile, progress)

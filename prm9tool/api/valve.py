@@ -151,7 +151,7 @@ class Valve:
         or a restart, manual §1.5, §5.6), and return it; DeviceTimeoutError after
         ``timeout_s``. A booting valve ignores its setpoint, NMT commands and the control word.
         """
-        return self._service.wait_booted(timeout_s)
+        return self._service.commissioning.wait_booted(timeout_s)
 
     # --- the parameter set --------------------------------------------------------------------
     def download(self, progress: Progress | None = None) -> ParameterSet:
@@ -251,25 +251,25 @@ class Valve:
         """Send an NMT command as the valve's CANopen master would (manual §7.2): an
         :class:`NmtCommand` or its name (``"start"``, ``"stop"``, ``"pre-operational"``,
         ``"reset-node"``, ``"reset-communication"``). A valve with CANopen off ignores it."""
-        self._service.nmt(command)
+        self._service.commissioning.nmt(command)
 
     def enable(self) -> None:
         """Control word 08h → 09h → 0Bh → 0Fh (manual §7.4, table 7-19): from INIT or a
         fault whose cause is gone to DEVICE_MODE_ACTIVE, where the valve follows its setpoint.
         Raises :class:`~prm9tool.device.enabling.NotEnabledError` (an AccessDeniedError) when
         the valve does not get there, saying why (e.g. which error is still present)."""
-        self._service.enable()
+        self._service.commissioning.enable()
 
     def commission(self) -> ValveStatus:
         """What its CANopen master does to a -CA valve as delivered (and ``--enable`` and
         the window's "Enable it now?"): NMT start when it waits in pre-operational or
         stopped, then :meth:`enable`; a valve still booting is waited for. Returns the
         status after; NotEnabledError as :meth:`enable`."""
-        return self._service.commission()
+        return self._service.commissioning.commission()
 
     def disable(self) -> None:
         """Control word 0Fh → 0Bh → 09h → 08h: back to INIT step by step."""
-        self._service.disable()
+        self._service.commissioning.disable()
 
     def capture(
         self, signals: Sequence[str], seconds: float = 1.0, rate_hz: int | None = None

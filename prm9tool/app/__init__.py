@@ -259,6 +259,7 @@ def run(args: argparse.Namespace, spools_problem: Prm9Error | None = None) -> in
     """Start the GUI (``spools_problem``: why spools.json was left out); returns the exit code."""
     from PySide6.QtCore import Qt
 
+    from prm9tool.app.outside_close import watch_outside_close
     from prm9tool.display import missing_x11_message, missing_x11_packages
 
     missing = missing_x11_packages()
@@ -266,6 +267,9 @@ def run(args: argparse.Namespace, spools_problem: Prm9Error | None = None) -> in
         sys.stderr.write(missing_x11_message(missing))
         return ExitCode.USAGE
     app = create_application()
+    # a window destroyed from outside (XDestroyWindow) tells Qt nothing: closed as by its
+    # button; watched from before the window shows (the start may run events of its own)
+    outside = watch_outside_close(app)
     window = create_window(args)
     sys.excepthook = lambda *exc: show_internal_error(window, *exc)
     library_log = show_library_messages(window)
@@ -280,6 +284,8 @@ def run(args: argparse.Namespace, spools_problem: Prm9Error | None = None) -> in
     try:
         code = app.exec()
     finally:
+        if outside is not None:
+            app.removeNativeEventFilter(outside)
         app.lastWindowClosed.disconnect(app.quit)
         library_log.close()
     return ExitCode.OK if code == 0 else int(code)

@@ -22,6 +22,7 @@ import numpy as np
 from prm9tool.catalogue import CATALOGUE
 from prm9tool.catalogue.scale import FULL_SCALE
 from prm9tool.device.records import DeviceState, NmtState, ValveStatus
+from prm9tool.device.stream import StreamReader
 from prm9tool.errors import CommunicationError, Prm9Error
 from prm9tool.messages import QT_TRANSLATE_NOOP
 
@@ -228,6 +229,8 @@ class EmulatorRig(Rig):
         valve = self.valve
         over = CATALOGUE["SETPOVR"]
         self.write({"SETPOVR": counts(float(setpoint_pct[0])), "SETPOVRON": 1})
+        # the emulated valve's own capture, not a session's stream (no StreamReader): the rig
+        # steps the valve's time itself, so every cycle's sample is there and none can be late
         valve.capture_start(list(keys), 1)
         values = [counts(float(v)) for v in setpoint_pct]
         blocks = []
@@ -324,23 +327,24 @@ class SessionRig(Rig):
         session = self.session
         n = len(setpoint_pct)
         link = self._link
-        session.stream_start(list(keys), self.rate_hz)
+        # the stream reader of every capture: a valve that goes silent ends the play in the
+        # capture's words instead of waiting for samples that never come
+        reader = StreamReader(session, keys, self.rate_hz)
+        reader.start()
         link.begin(counts(float(setpoint_pct[0])))  # again each play: the valve may have dropped it
         blocks: list[np.ndarray] = []
         demand = np.empty(n)
-        received = 0
         try:
-            while received < n:
+            while (received := reader.received) < n:
                 self.check()
                 value = float(setpoint_pct[received])
                 link.set(counts(value))
-                block = session.stream_read()
+                block = reader.read(expected=n)
                 blocks.append(block)
                 demand[received : received + len(block)] = value
-                received += len(block)
                 self.played_s += len(block) / self.rate_hz
         finally:
-            session.stream_stop()
+            reader.stop()
         status = session.status()
         if status.error_code:
             raise ValveFaultError(REPORTED(f"{status.error_code:#06x}", status.error_text))

@@ -49,7 +49,7 @@ def exit_code_of(exc: Prm9Error) -> ExitCode:
 
 def takes_control_word(service: ValveService) -> None:
     """NoControlWordError when the valve, booted, has CANopen off (nothing sent to it)."""
-    if str(service.wait_booted().nmt_state) in ("off", ""):
+    if str(service.commissioning.wait_booted().nmt_state) in ("off", ""):
         raise NoControlWordError(NO_CONTROL_WORD)
 
 
@@ -62,6 +62,6 @@ def commission(service: ValveService, say: bool = True) -> ValveStatus:
         takes_control_word(service)
         if say:
             print(f"prm9tool: {ENABLING}", file=sys.stderr)
-        return service.commission()
+        return service.commissioning.commission()
     except Prm9Error as exc:
         raise BatchError(exit_code_of(exc), f"--enable: {exc}") from exc

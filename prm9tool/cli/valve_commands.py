@@ -117,7 +117,7 @@ def _run(flag: str, valve: Valve) -> tuple[dict[str, Any], list[str]]:
     if flag == "--restart":
         values = service.restart_and_read()  # the window's Restart valve (recorded)
         said = [f"the valve restarted; it runs with its stored parameters ({len(values)} read)"]
-        said += _after_restart(service.wait_booted())
+        said += _after_restart(service.commissioning.wait_booted())
         return {"operation": "restart", "values": _shown(valve, values)}, said
     if flag == "--restore-factory":
         factory, backup = service.restore_factory()  # the window's, online (recorded)
@@ -126,14 +126,17 @@ def _run(flag: str, valve: Valve) -> tuple[dict[str, Any], list[str]]:
             if backup is not None
             else "the valve's backup from before is kept"
         )
-        said = [f"factory values restored; {kept}", *_after_restart(service.wait_booted())]
+        said = [
+            f"factory values restored; {kept}",
+            *_after_restart(service.commissioning.wait_booted()),
+        ]
         report = {"operation": "restore-factory", "backup": None if backup is None else str(backup),
                   "values": _shown(valve, factory or {})}  # fmt: skip
         return report, said
     if flag == "--enable":
         status = commission(service, say=False)  # NMT start when it waits, then 08h … 0Fh
         return {"operation": "enable", "status": status.to_dict()}, [_state(status)]
-    service.disable()
+    service.commissioning.disable()
     status = service.status()
     return {"operation": "disable", "status": status.to_dict()}, [_state(status)]
 

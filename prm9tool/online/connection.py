@@ -83,6 +83,7 @@ class ValveConnection(QObject):
         self._busy = 0
         self._ended = False  # shutdown(): the worker's late results are dropped
         self.live = LiveData(self._worker, self._submit, self.write_failed.emit, self)
+        self.live.stream_silent.connect(self.failed)  # a dead stream, in the capture's words
         self._posted.connect(self._on_posted, Qt.ConnectionType.QueuedConnection)
         self.history: HistoryHook | None = None  # set_recorder(); used by the worker only
         self.auto_reconnect = True  # look for a lost valve until it is back (service/reconnect.py)
@@ -341,6 +342,11 @@ class ValveConnection(QObject):
     def stream_stopped(self) -> SignalInstance:
         """The stream stopped (asked for, or with the link)."""
         return self.live.stream_stopped
+
+    @property
+    def stream_silent(self) -> SignalInstance:
+        """A dead stream was stopped: the capture's words (``failed`` says them too)."""
+        return self.live.stream_silent
 
     @property
     def samples_lost_changed(self) -> SignalInstance:

@@ -38,6 +38,7 @@ class LiveData(QObject):
     stream_started = Signal(list)
     stream_stopped = Signal()
     samples_lost_changed = Signal(int)  # samples the oscilloscope stream lost since it started
+    stream_silent = Signal(str)  # the stream sent nothing for its bound and was stopped: why
     # a generator cut off with its session had changed these; the same valve open again, they
     # were written back (over CANopen: the RPDO1 deadline 0x1400/5 it armed)
     generator_undone = Signal(list)
@@ -124,6 +125,13 @@ class LiveData(QObject):
         """The worker counted ``count`` lost samples of the stream (none runs: ignored)."""
         if self._stream_keys:
             self._set_samples_lost(count)
+
+    def stream_went_silent(self, text: str) -> None:
+        """The worker stopped a stream that sent nothing for its silence bound: said as the
+        connection's ``failed`` (the API's capture raises the same words), then stopped."""
+        if self._stream_keys:
+            self.stream_silent.emit(text)  # the connection's failed too
+            self._on_stream_stopped(None)
 
     def forget(self) -> None:
         """The session ended (closed or broken): no generator runs, the stream has stopped."""

@@ -278,6 +278,11 @@ class ScopeConnection(LinkState, Protocol):
         """Emitted when the stream has stopped (whoever stopped it)."""
 
     @property
+    def stream_silent(self) -> SignalInstance:
+        """Emitted with why, when a stream that sent nothing for its silence bound was stopped
+        (``failed`` with the same words and ``stream_stopped`` follow)."""
+
+    @property
     def status_changed(self) -> SignalInstance:
         """Emitted (≈ 2 Hz) with the valve's status (device state, NMT state, errors)."""
 

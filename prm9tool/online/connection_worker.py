@@ -64,6 +64,7 @@ class LiveReports(Protocol):
     def generator_undone(self) -> SignalInstance: ...
 
     def samples_lost_counted(self, count: int) -> None: ...
+    def stream_went_silent(self, text: str) -> None: ...
 
 
 class WorkerHost(Protocol):
@@ -307,6 +308,9 @@ class ConnectionWorker:
         if result.samples_lost is not None:
             lost = result.samples_lost
             self._host._post(lambda: self._host.live.samples_lost_counted(lost))
+        if result.stream_silent is not None:  # the poller stopped it; the link still answers
+            silent = error_text(result.stream_silent)
+            self._host._post(lambda: self._host.live.stream_went_silent(silent))
         if result.status is not None:
             valve_status = result.status
             self._host._post(lambda: self._host.status_changed.emit(valve_status))

@@ -168,16 +168,22 @@ class ValveControl(QObject):
     # --- commissioning (every link) -----------------------------------------------------------
     def nmt(self, command: NmtCommand) -> None:
         """Send an NMT command to the valve (the valve service's, as a script's)."""
-        self._connection.run("nmt", lambda s: self._connection.service(s).nmt(command))
+        self._connection.run(
+            "nmt", lambda s: self._connection.service(s).commissioning.nmt(command)
+        )
 
     def enable(self) -> None:
         """Control word 08h → 09h → 0Bh → 0Fh: from INIT (or a fault whose cause is gone) to
         DEVICE_MODE_ACTIVE; when the valve does not get there the job fails saying why."""
-        self._connection.run("control word", lambda s: self._connection.service(s).enable())
+        self._connection.run(
+            "control word", lambda s: self._connection.service(s).commissioning.enable()
+        )
 
     def disable(self) -> None:
         """Control word 0Fh → 0Bh → 09h → 08h: back to INIT step by step."""
-        self._connection.run("control word", lambda s: self._connection.service(s).disable())
+        self._connection.run(
+            "control word", lambda s: self._connection.service(s).commissioning.disable()
+        )
 
     # --- the emulated valve -------------------------------------------------------------------
     def set_input(self, name: str, value: float) -> None:

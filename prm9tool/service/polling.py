@@ -20,6 +20,7 @@ if TYPE_CHECKING:
 
     from prm9tool.device.records import DeviceInfo, ValveStatus
     from prm9tool.device.session import ValveSession
+    from prm9tool.device.stream import StreamReader, StreamSilentError
 
 log = logging.getLogger(__name__)
 WATCH_RATE_HZ = 250  # the slow stream that refreshes the diagram's measuring points
@@ -38,6 +39,7 @@ class PollResult:
     signals: dict[str, float] = field(default_factory=dict)
     samples: np.ndarray | None = None  # (n, channels) raw block of the running stream
     samples_lost: int | None = None  # lost samples of the running stream, when the count changed
+    stream_silent: StreamSilentError | None = None  # the stream went dead and was stopped
 
 
 class Identified(Protocol):
@@ -76,7 +78,7 @@ class Poller:
         self.live: list[str] = []
         self.live_explicit = False
         self.watched: list[str] = []
-        self.stream_keys: list[str] = []
+        self._stream: StreamReader | None = None  # the oscilloscope's (the API's capture's)
         self._last_row: dict[str, float] = {}
         self._watch_chunk: list[str] = []
         self._watch_index = 0
@@ -84,10 +86,15 @@ class Poller:
         self._readable: set[str] = set()  # measuring points with an object (SIGNAL_OBJECTS)
         self._lost_reported = 0
 
+    @property
+    def stream_keys(self) -> list[str]:
+        """The measuring points of the oscilloscope's running stream ([] when none runs)."""
+        return list(self._stream.keys) if self._stream is not None else []
+
     def reset(self, info: DeviceInfo) -> None:
         """A session to the valve ``info`` was opened."""
         variant = variant_of(info)
-        self.stream_keys, self._watch_chunk, self._last_row = [], [], {}
+        self._stream, self._watch_chunk, self._last_row = None, [], {}
         self._signal_keys = {s.key for s in signals_for(variant)} if variant else set()
         self._readable = {
             key
@@ -99,24 +106,27 @@ class Poller:
 
     def forget_streams(self) -> None:
         """The session closed: no stream runs any more."""
-        self.stream_keys, self._watch_chunk = [], []
+        self._stream, self._watch_chunk = None, []
 
     # --- the oscilloscope stream -----------------------------------------------------------------
     def start_stream(self, session: ValveSession, keys: list[str], rate_hz: int) -> list[str]:
-        """Start the oscilloscope's stream (the watch stream gives way)."""
+        """Start the oscilloscope's stream (the watch stream gives way): the stream reader
+        of the API's capture, open-ended, drained by :meth:`poll`."""
+        from prm9tool.device.stream import StreamReader  # not at the window's start
+
         self._stop_watch(session)
-        if self.stream_keys:
-            session.stream_stop()
-        session.stream_start(keys, rate_hz)
-        self.stream_keys, self._last_row = list(keys), {}
+        self.stop_stream(session)
+        reader = StreamReader(session, keys, rate_hz)
+        reader.start()
+        self._stream, self._last_row = reader, {}
         self._lost_reported = 0
         return self.stream_keys
 
     def stop_stream(self, session: ValveSession) -> None:
         """Stop the oscilloscope's stream."""
-        if self.stream_keys:
-            self.stream_keys = []
-            session.stream_stop()
+        reader, self._stream = self._stream, None
+        if reader is not None:
+            reader.stop()
 
     # --- polling ----------------------------------------------------------------------------------
     def poll(
@@ -124,20 +134,31 @@ class Poller:
     ) -> PollResult:
         """Read what is due; communication errors propagate (the link is lost)."""
         result = PollResult()
-        if stream and self.stream_keys:
-            block = session.stream_read()
-            if len(block):
-                self._last_row.update(latest_values(self.stream_keys, block))
-                result.samples = block
-            lost = session.samples_lost
-            if lost != self._lost_reported:
-                self._lost_reported = result.samples_lost = lost
+        if stream and self._stream is not None:
+            self._drain(self._stream, result)
         if status:
             result.status = session.status()
             result.live = self._read_live(session)
         if signals and (self.watched or self._watch_chunk):
             result.signals = self._read_signals(session)
         return result
+
+    def _drain(self, reader: StreamReader, result: PollResult) -> None:
+        """The oscilloscope's new samples and lost count; a dead stream is stopped and said in
+        the capture's words; the session stays open (its requests may still be answered)."""
+        from prm9tool.device.stream import StreamSilentError
+
+        try:
+            block = reader.read()
+        except StreamSilentError as silent:
+            self.stop_stream(reader.session)
+            result.stream_silent = silent
+            return
+        if len(block):
+            self._last_row.update(latest_values(reader.keys, block))
+            result.samples = block
+        if reader.lost != self._lost_reported:
+            self._lost_reported = result.samples_lost = reader.lost
 
     def _read_live(self, session: ValveSession) -> dict[str, int | str]:
         """Read the live values; one the valve refuses is dropped from the list, not retried."""
@@ -166,6 +187,8 @@ class Poller:
             live = {k: self._last_row.get(k, math.nan) for k in self.watched}
             live.update(self._read_objects(session, [k for k in live if math.isnan(live[k])]))
             return live
+        # the watch stream is no StreamReader: it takes the newest row of a chunk restarted at
+        # each visit; a lost sample or a silent visit only leaves a value for the next visit
         values: dict[str, float] = {}
         if self._watch_chunk:
             block = session.stream_read()

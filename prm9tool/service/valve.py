@@ -13,22 +13,17 @@ from __future__ import annotations
 
 import os
 import threading
-import time
 import weakref
-from collections.abc import Callable, Iterator, Mapping
-from contextlib import contextmanager
+from collections.abc import Callable, Mapping
 from pathlib import Path
 from typing import TYPE_CHECKING
 
 from prm9tool.catalogue import CAPPED_BY, CATALOGUE, Parameter
-from prm9tool.catalogue.commissioning import (
-    CONTROL_WORD,
-    DISABLE_SEQUENCE,
-    NmtCommand,
-)
 from prm9tool.catalogue.typekey import TypeKey
-from prm9tool.errors import CommunicationError, DeviceTimeoutError, Prm9Error
+from prm9tool.errors import CommunicationError, Prm9Error
 from prm9tool.service import motion, upload
+from prm9tool.service.commissioning import Commissioning
+from prm9tool.service.rigs import characterize_session, profile_of, session_rig
 from prm9tool.service.values import (
     ReadOnlyError,
     caps_held,
@@ -40,7 +35,6 @@ from prm9tool.service.values import (
 if TYPE_CHECKING:
     from prm9tool.analysis.profile import Profile
     from prm9tool.characterize.drift import DriftReport
-    from prm9tool.characterize.rig import Rig
     from prm9tool.characterize.run import Characterization
     from prm9tool.device.records import Progress, UploadResult, Value, ValveStatus
     from prm9tool.device.session import ValveSession
@@ -49,33 +43,7 @@ if TYPE_CHECKING:
     from prm9tool.service.history import HistoryHook
     from prm9tool.twin.fitvalve import ValveTwin
 
-__all__ = ["NmtStoppedError", "ValveService", "characterize_session", "parse_nmt", "service_for"]
-
-
-BOOT_WAIT_S = 3.0  # commissioning waits at most this for a valve still booting
-
-
-class NmtStoppedError(DeviceTimeoutError):
-    """The valve does not answer because this program stopped it by NMT (manual §7.2)."""
-
-
-def parse_nmt(command: NmtCommand | str | int) -> NmtCommand:
-    """An :class:`NmtCommand`, its name (``"start"``, ``"pre-operational"`` …) or its code."""
-    if isinstance(command, NmtCommand):
-        return command
-    if isinstance(command, int):
-        return NmtCommand(command)
-    name = command.strip().upper().replace("-", "_").replace(" ", "_")
-    if name not in NmtCommand.__members__:
-        known = ", ".join(m.lower().replace("_", "-") for m in NmtCommand.__members__)
-        raise ValueError(f"unknown NMT command {command!r}: one of {known}")
-    return NmtCommand[name]
-
-
-STOPPED_TEXT = (
-    "the valve does not answer: this program stopped it (NMT stop), and a stopped valve "
-    "answers no SDO (manual §7.2); send NMT start or pre-operational first"
-)
+__all__ = ["ValveService", "service_for"]
 
 
 def _in_catalogue_range(param: Parameter, raw: Value) -> bool:
@@ -96,7 +64,8 @@ class ValveService:
         self.motion = motion.owner_of(session)
         self.variant = TypeKey.parse(session.info.type_key).variant
         self._params = {p.mnemonic: p for p in CATALOGUE.for_variant(self.variant)}
-        self._stopped = False  # this program sent NMT stop and nothing since
+        # NMT, control word, and what an NMT stop this program sent means for what follows
+        self.commissioning = Commissioning(lambda: self.session)
 
     # --- who ------------------------------------------------------------------------------
     @property
@@ -171,64 +140,8 @@ class ValveService:
         return values
 
     def status(self) -> ValveStatus:
-        """Device state, errors, LEDs, NMT state now. A valve this program stopped by NMT
-        says so instead of asking whether it is powered."""
-        try:
-            return self.session.status()
-        except DeviceTimeoutError as exc:
-            if self._stopped:
-                raise NmtStoppedError(f"{STOPPED_TEXT} ({exc})") from exc
-            raise
-
-    def wait_booted(self, timeout_s: float = 5.0) -> ValveStatus:
-        """Ask for the status until the valve has finished booting (about 2 s after power-up
-        or a restart, manual §1.5, §5.6) and return it; DeviceTimeoutError after
-        ``timeout_s``. A booting valve ignores its setpoint, NMT commands and the control
-        word."""
-        deadline = time.monotonic() + timeout_s
-        while (status := self.session.status()).booting:
-            if time.monotonic() > deadline:
-                raise DeviceTimeoutError(f"the valve has not finished booting in {timeout_s} s")
-            time.sleep(0.05)
-        return status
-
-    # --- commissioning --------------------------------------------------------------------
-    def nmt(self, command: NmtCommand | str | int) -> None:
-        """Send an NMT command as the valve's CANopen master would (manual §7.2)."""
-        code = parse_nmt(command)
-        self.session.nmt(int(code))
-        self._stopped = code is NmtCommand.STOP
-
-    def enable(self) -> ValveStatus:
-        """Control word 08h → 09h → 0Bh → 0Fh (manual §7.4, table 7-19): from INIT or a fault
-        whose cause is gone to DEVICE_MODE_ACTIVE; the valve then follows its setpoint.
-        Returns the status read back; raises :class:`~prm9tool.device.enabling.NotEnabledError`
-        saying why (which error is still present, what to do) when it does not get there."""
-        from prm9tool.device.enabling import enable
-
-        return enable(self.session)
-
-    def disable(self) -> None:
-        """Control word 0Fh → 0Bh → 09h → 08h: back to INIT step by step."""
-        for word in DISABLE_SEQUENCE:
-            self.session.write(CONTROL_WORD, word)
-
-    def commission(self) -> ValveStatus:
-        """What the window's "Enable it now?" does: NMT start when the valve waits in
-        pre-operational or stopped (or the link has not heard its NMT state yet), then the
-        enable sequence; returns the status after. A
-        valve still booting is waited for (at most BOOT_WAIT_S), then enabled."""
-        status = self.session.status()
-        # just powered up, the valve boots for about 2 s (manual §1.5, §5.6): wait it out
-        deadline = time.monotonic() + BOOT_WAIT_S
-        while status.booting and time.monotonic() < deadline:
-            time.sleep(0.05)
-            status = self.session.status()
-        # a CANopen master that heard no heartbeat yet cannot tell: NMT start, which an
-        # operational valve ignores (CiA 301), rather than an enable in pre-operational
-        if str(status.nmt_state) in ("pre-operational", "stopped", "unknown"):
-            self.nmt(NmtCommand.START)
-        return self.enable()
+        """:meth:`Commissioning.status`: a valve this program stopped by NMT says so."""
+        return self.commissioning.status()
 
     # --- the parameter set ----------------------------------------------------------------
     def download(
@@ -314,7 +227,7 @@ class ValveService:
 
     def _restart(self) -> None:
         self.session.restart()
-        self._stopped = False  # it boots into pre-operational
+        self.commissioning.restarted()
 
     def _record_restart(self, values: Mapping[str, Value] | None, command: str | None) -> None:
         if self.history is not None:
@@ -397,7 +310,7 @@ class ValveService:
 
         records = self.history.records_of if self.history is not None else None
         with motion.claim(self.session, "signature"), session_rig(self.session) as rig:
-            report = signature(rig, records, _profile(profile), progress)
+            report = signature(rig, records, profile_of(profile), progress)
         if self.history is not None:
             self.history.signature_of(report)
         return report
@@ -419,52 +332,6 @@ class ValveService:
             except (NotAvailableError, CommunicationError):  # not on this link
                 continue
         return write_dcf(path, self.session.info.type_key, values, {**values, **settings})
-
-
-def characterize_session(
-    session: ValveSession,
-    profile: Profile | str | os.PathLike[str] | None,
-    progress: Callable[[str], None] | None,
-) -> Characterization:
-    """The end-of-line test on an open session (the rig its link gives)."""
-    from prm9tool.analysis.profile import DEFAULT, load_profile
-    from prm9tool.analysis.profile import Profile as ProfileType
-    from prm9tool.characterize.run import characterize as run
-
-    if profile is None:
-        profile = DEFAULT
-    elif not isinstance(profile, ProfileType):
-        profile = load_profile(os.fspath(profile))
-    with session_rig(session) as rig:
-        return run(rig, profile, progress)
-
-
-@contextmanager
-def session_rig(session: ValveSession) -> Iterator[Rig]:
-    """The rig the tests that move the valve run on: the link's (a USB stream, CANopen SDO
-    samples) or, for an emulated valve, the valve itself stepped as fast as the CPU allows
-    (as ``--characterize --emulator`` does)."""
-    from prm9tool.characterize.canrig import rig_for_session
-    from prm9tool.characterize.rig import EmulatorRig
-
-    if session.emulator is None:
-        yield rig_for_session(session)
-        return
-    from prm9tool.device.emulated_valves import emulated_valve, stepped_here
-
-    with stepped_here(emulated_valve(session.info.type_key, session.info.serial)) as valve:
-        yield EmulatorRig(valve)
-
-
-def _profile(profile: Profile | str | os.PathLike[str] | None) -> Profile:
-    from prm9tool.analysis.profile import DEFAULT, load_profile
-    from prm9tool.analysis.profile import Profile as ProfileType
-
-    if profile is None:
-        return DEFAULT
-    if isinstance(profile, ProfileType):
-        return profile
-    return load_profile(os.fspath(profile))
 
 
 _SERVICES: weakref.WeakKeyDictionary[object, ValveService] = weakref.WeakKeyDictionary()

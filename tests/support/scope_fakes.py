@@ -13,6 +13,7 @@ class FakeConnection(QObject):
     samples_received = Signal(object)
     stream_started = Signal(list)
     stream_stopped = Signal()
+    stream_silent = Signal(str)
     failed = Signal(str)
     write_failed = Signal(list)
     status_changed = Signal(object)

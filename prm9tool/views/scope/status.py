@@ -68,6 +68,10 @@ class ScopeStatusText(QObject):
         """The recording stopped because another operation took the stream."""
         return self.tr("The recording stopped: another operation (a tuning test…) took the stream.")
 
+    def stream_silent(self, why: str) -> str:
+        """The recording stopped because the valve sent no more samples."""
+        return self.tr("The recording stopped: {0}").format(why)
+
     def generator_link_dropped(self) -> str:
         """The setpoint generator stopped with the link."""
         return self.tr("The link dropped: the setpoint generator has stopped.")

@@ -68,6 +68,7 @@ class ScopeWidget(QWidget):
         self._running = False
         self._resume = False  # recording when the link broke: again when the valve is back
         self._accepting = False  # False between a (re)start request and stream_started
+        self._silent = ""  # why the stream that stops next went dead (stream_silent)
         # why the generator or the recording stopped without the user: in the language of the
         # moment it is shown (a text made at the time stayed English after a switch)
         self._generator_note: Callable[[], str] | None = None
@@ -131,6 +132,7 @@ class ScopeWidget(QWidget):
         conn.samples_received.connect(self._on_samples_received)
         conn.stream_started.connect(self._on_stream_started)
         conn.stream_stopped.connect(self._on_stream_stopped)
+        conn.stream_silent.connect(self._on_stream_silent)
         conn.failed.connect(self._on_failed)
         conn.status_changed.connect(self._on_status_changed)
         self._document.type_key_changed.connect(self._on_type_key_changed)
@@ -219,6 +221,10 @@ class ScopeWidget(QWidget):
             self.display.engine.rearm()
             self._accepting = True
 
+    def _on_stream_silent(self, text: str) -> None:
+        """The valve stopped sending: the stop that follows says so, not "another operation"."""
+        self._silent = text
+
     def _on_stream_stopped(self) -> None:
         """The stream ended while samples flowed, and not by the scope (a tuning test streams
         itself): the recording stops, the display holds what came, the status says so."""
@@ -231,7 +237,11 @@ class ScopeWidget(QWidget):
         self._accepting = False
         self.display.hold_all()
         self._timer.stop()
-        self._recording_note = self._texts.stream_taken
+        silent, self._silent = self._silent, ""
+        texts = self._texts
+        self._recording_note = (
+            (lambda: texts.stream_silent(silent)) if silent else texts.stream_taken
+        )
         self._update_controls()
         self._update_status()
 
