@@ -88,6 +88,33 @@ def test_a_well_behaved_raw_slave_is_found_and_assigned(rig):
         link.assign(found[0], 23)
 
 
+def test_a_slow_device_beside_fast_ones_is_found_without_losing_rounds(rig, monkeypatch):
+    """A device answering each request 6 ms late beside three that answer at once: its late
+    answer to one Fastscan step came after the next request and was taken as that step's
+    answer (a wrong bit, the round lost — and every round after it, the step's wait does not
+    help), the way a busy PC delays an emulated valve's answer. The master now listens a
+    while longer after an answered step, as long as the probe saw the answers spread."""
+    rounds = []
+    original = LssMasterLink._fastscan
+    monkeypatch.setattr(
+        LssMasterLink,
+        "_fastscan",
+        lambda self, *a: rounds.append(original(self, *a)) or rounds[-1],
+    )
+    for serial in (4711, 4712):
+        rig.add(serial)
+    bus = can.Bus(interface="virtual", channel=rig.options.channel)
+    slow = BadLssSlave(bus, ADDRESS_4713, delay_s=0.006).start()
+    try:
+        found = LssMasterLink(rig.shared).scan()
+    finally:
+        slow.stop()
+        bus.shutdown()
+    assert sorted(a.serial for a in found) == [4711, 4712, 4713]
+    lost = [r for r in rounds if r == (True, None)]
+    assert not lost, f"{len(lost)} of {len(rounds)} Fastscan rounds lost"
+
+
 def test_two_raw_slaves_with_one_address_are_named_and_neither_changed(rig, capsys):
     with bad_slave(rig, LssFault.NONE) as first, bad_slave(rig, LssFault.NONE) as second:
         code = _cli(rig, "--lss-assign", "4713=23")

@@ -269,6 +269,7 @@ class BadLssSlave:
     bus: can.BusABC
     address: tuple[int, int, int, int]
     fault: LssFault = LssFault.NONE
+    delay_s: float = 0.0  # each answer this long after its request (a slow device)
     requests: int = 0
     configured: bool = False  # Fastscan or the selective switch chose it
     _selective: list[int] = field(default_factory=list)
@@ -295,8 +296,17 @@ class BadLssSlave:
             if msg is None or msg.arbitration_id != 0x7E5:
                 continue
             self.requests += 1
-            for answer in self.answers(bytes(msg.data)):
-                self.bus.send(can.Message(arbitration_id=0x7E4, data=answer, is_extended_id=False))
+            answers = [
+                can.Message(arbitration_id=0x7E4, data=a, is_extended_id=False)
+                for a in self.answers(bytes(msg.data))
+            ]
+            if self.delay_s and answers:  # each late by itself, not behind the one before
+                threading.Timer(
+                    self.delay_s, lambda out=answers: [self.bus.send(m) for m in out]
+                ).start()
+                continue
+            for message in answers:
+                self.bus.send(message)
 
     def answers(self, request: bytes) -> list[bytes]:
         """The frames this slave sends for one request."""

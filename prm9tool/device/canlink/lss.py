@@ -14,7 +14,11 @@ Timing is derived, not guessed: "identify non-configured remote slave" (answered
 device without a node ID) tells at once whether Fastscan will find anything and how long an
 answer takes on this bus; each Fastscan step waits ten times that (at least 50 ms). A step
 whose answer came too late makes the scan miss the device (its final check fails, never a
-wrong address); the scan then runs again with twice the wait.
+wrong address); the scan then runs again with twice the wait. An answered step waits a little
+more (three times the spread of the devices' answers to the probe, at least twice its
+latency) before the next request, so that another device's answer to it is not taken as the
+next step's (on a virtual bus each device's answer arrives; on a real bus identical answers
+merge into one frame, but a slow device's comes late there too).
 
 **Answers by their command specifier, scans bounded.** The master sends the Fastscan, the
 selective switch, inquire, configure and store requests itself and takes as the answer only a
@@ -58,7 +62,9 @@ CS_INQUIRE = (0x5A, 0x5B, 0x5C, 0x5D)  # vendor, product, revision, serial
 WAITING, CONFIGURATION = 0, 1
 ERROR_NONE = 0
 PROBE_WAIT_S = 0.5  # how long "identify non-configured" waits for a first answer (canopen's)
+PROBE_MORE_S = 0.02  # and at least this long after it for the other devices' answers
 MIN_STEP_S, MAX_STEP_S = 0.05, 0.8
+MIN_SETTLE_S = 0.002  # the least wait for further answers to an answered Fastscan step
 SCAN_ATTEMPTS = 4
 MAX_DEVICES = 127
 FASTSCAN_FRAMES = 1 + 4 * 33  # a round: the reset step, 32 bits and a confirmation per part
@@ -73,6 +79,7 @@ class LssMasterLink:
         self._frames = LssExchange(shared)
         self._lock = self._frames.lock
         self.latency_s: float | None = None  # the first answer to the last probe
+        self.spread_s = 0.0  # from its first answer to its last (several devices)
 
     # --- finding devices ---------------------------------------------------------------
     def scan(self, progress: Callable[[LssAddress], None] | None = None) -> list[LssAddress]:
@@ -96,10 +103,13 @@ class LssMasterLink:
         if latency is None:
             return found
         step = min(max(10 * latency, MIN_STEP_S), MAX_STEP_S)
+        # after an answered step, the later answers of the other devices before the next
+        # step (a virtual bus delivers each device's answer; on a real one they merge)
+        after = min(max(3 * self.spread_s, 2 * latency, MIN_SETTLE_S), step)
         misses, start = 0, time.monotonic()
         while len(found) < MAX_DEVICES:
             self._check_time(start, found)
-            answered, address = self._fastscan(step)
+            answered, address = self._fastscan(step, after)
             if address is not None:
                 if address in found:
                     raise _answers_everything(address, len(found) + 1)
@@ -120,6 +130,7 @@ class LssMasterLink:
                     "none",
                 )
             step = min(2 * step, MAX_STEP_S)
+            after = min(2 * after, step)
         return found
 
     def _check_time(self, start: float, found: list[LssAddress]) -> None:
@@ -131,16 +142,22 @@ class LssMasterLink:
                 "endless",
             )
 
-    def _fastscan(self, step: float) -> tuple[bool, LssAddress | None]:
+    def _fastscan(self, step: float, after: float) -> tuple[bool, LssAddress | None]:
         """One Fastscan round (CiA 305): (whether its first step was answered, the address
-        found or None). At most :data:`FASTSCAN_FRAMES` requests."""
+        found or None). At most :data:`FASTSCAN_FRAMES` requests. An answered step waits
+        ``after`` more: an answer of another device to it, come after the next request, was
+        taken as that one's answer — a wrong bit, the round lost (seen under load with three
+        devices on a virtual bus: every round of four failed)."""
         with self._frames.listen() as heard:
 
             def ask(number: int, bit: int, sub: int, following: int) -> bool:
                 since = len(heard.frames)
                 request = struct.pack("<BIBBB", CS_FASTSCAN, number, bit, sub, following)
                 self._frames.send(request)
-                return heard.wait(CS_IDENTIFY_SLAVE, since, step) is not None
+                if heard.wait(CS_IDENTIFY_SLAVE, since, step) is None:
+                    return False
+                time.sleep(after)
+                return True
 
             if not ask(0, 0x80, 0, 0):
                 return False, None
@@ -161,8 +178,12 @@ class LssMasterLink:
             deadline = start + PROBE_WAIT_S
             while time.monotonic() < deadline and not heard.count(CS_NON_CONFIGURED_SLAVE):
                 time.sleep(0.002)
+            if heard.count(CS_NON_CONFIGURED_SLAVE):  # the other devices' answers, for spread_s
+                first = time.monotonic() - start
+                time.sleep(min(max(20 * first, PROBE_MORE_S), PROBE_WAIT_S))
             answers = [t for t, data in heard.frames if data and data[0] == CS_NON_CONFIGURED_SLAVE]
         self.latency_s = answers[0] - start if answers else None
+        self.spread_s = answers[-1] - answers[0] if answers else 0.0
         return self.latency_s
 
     def _check_unique(self, address: LssAddress) -> None:
