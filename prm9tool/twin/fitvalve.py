@@ -26,7 +26,8 @@ from prm9tool.twin.actuator import (
     from_process_run,
     kept,
 )
-from prm9tool.twin.identify import FITTED, Fit, Steps, fit, from_characterization
+from prm9tool.twin.identify import FITTED, Fit, fit
+from prm9tool.twin.recording import Steps, from_characterization
 
 if TYPE_CHECKING:
     from prm9tool.analysis.profile import Profile
