@@ -26,6 +26,7 @@ from prm9tool.twin.actuator import (
     from_process_run,
     kept,
 )
+from prm9tool.twin.breakaway import fit_with_breakaway
 from prm9tool.twin.identify import FITTED, Fit, fit
 from prm9tool.twin.recording import Steps, from_characterization
 
@@ -65,11 +66,30 @@ def write_fitted(
     firmware: str,
     source: str,
 ) -> Fit:
-    """Fit ``recordings`` (:func:`fit_with_friction`: from the factory plant, the static
-    friction scanned) and write the twin file ``path``; returns the fit."""
-    result = with_kept(fit(recordings, free=FITTED), type_key)
+    """Fit ``recordings`` and write the twin file ``path``; returns the fit (:func:`fitted`)."""
+    result = with_kept(fitted(recordings), type_key)
     write_twin(path, result, serial, type_key, firmware, source, recordings[0].values)
     return result
+
+
+def fitted(recordings: Sequence[Steps]) -> Fit:
+    """The fit of a position-loop run's ``recordings`` from the factory plant: the steps, the
+    break-away friction in a stage of its own (:func:`~.breakaway.fit_with_breakaway`), then
+    the joint residual with the sweep's and the triangle's windows from there."""
+    from prm9tool.device.emulator.constants import PLANT
+
+    steps = [r for r in recordings if r.kind == "step"]
+    if not steps:
+        return fit(recordings, free=FITTED)
+    first = fit(steps, free=FITTED)
+    plant, static, evaluations = fit_with_breakaway(steps, first, PLANT, STATIC_FRICTION_KEPT)
+    result = fit(recordings, start=plant, free=FITTED)
+    return replace(
+        result,
+        constants=(*result.constants, static),
+        start_rms_pct=first.start_rms_pct,
+        evaluations=result.evaluations + first.evaluations + evaluations,
+    )
 
 
 def with_kept(result: Fit, type_key: str) -> Fit:
