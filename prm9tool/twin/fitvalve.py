@@ -37,14 +37,12 @@ if TYPE_CHECKING:
 
 
 STATIC = "static_friction_n"
-# Why the break-away friction is not fitted (docs/twin.md, "Static friction"): measured on
-# emulated valves whose true plant explains their run to 0.000 % rms
+# Why the break-away friction is kept where its stage (twin/breakaway.py) found nothing better
+# (docs/twin.md, "Static friction")
 STATIC_FRICTION_KEPT = (
-    "the run does not separate it from the sliding friction and the spool's mass and damping: "
-    "where the spool sticks (at the null, a small step's start) it sticks and slips, and "
-    "other combinations of the four explain the steps as well (a valve with 0.6 N sliding, "
-    "0.8 N break-away friction was explained to 0.07 % rms by 0.57 N and 0.59 N); the "
-    "static curve hardly sees it (the integrator pushes through it): kept"
+    "the run has no step of at most 20 %, or the break-away friction its small steps' scan "
+    "found did not explain the steps better than this one: where the spool sticks it sticks "
+    "and slips, and the steps' residual does not slope towards the friction: kept"
 )
 
 
