@@ -14,7 +14,9 @@ What stick-slip leaves in a small step that does not depend on when each slip ha
 (:data:`SMALL_STEP_PCT`) — a loss with a basin some tenths of a newton wide about the break-away
 friction — in a one-dimensional scan with the other constants fixed, refits those with the
 friction found (from the previous plant and from the factory plant, the better one), and
-repeats (:data:`ROUNDS`), keeping the round that explains the steps best. It keeps the result only where it explains the
+repeats (:data:`ROUNDS`), keeping the round that explains the steps best; not where the
+steps' fit explains them and the friction kept already gives the small steps' positions to
+one LVDT count (:data:`AGREES`). It keeps the result only where it explains the
 steps better than the default kept, and says whether the scan pins the friction
 (:func:`_spread`). No Qt.
 """
@@ -45,6 +47,10 @@ ROUNDS = 3  # scan and refit; the round whose refit explains the steps best is k
 # of break-away friction the run cannot tell apart
 COUNT_PCT = 0.061
 DETERMINED_SPREAD = 0.05  # half that range relative to the value: determined below it
+AGREES = (
+    "the steps are explained with it, and their small steps' positions agree with it to one "
+    "LVDT count: the run cannot tell a better one: kept"
+)
 
 
 def small_steps(recordings: Sequence[Steps]) -> list[Steps]:
@@ -109,6 +115,10 @@ def fit_with_breakaway(
     kept = FittedConstant(STATIC, initial, initial, math.inf, False, None, kept_reason)
     if not small:
         return stepped.plant, kept, 0
+    if stepped.explained and sorted_loss(small, stepped.plant, initial) <= COUNT_PCT:
+        # the friction kept already gives the small steps' positions to one LVDT count: no
+        # scan can tell a better one from the run (and it would cost minutes)
+        return stepped.plant, replace(kept, reason=AGREES), 0
     free = [n for n in FITTED if any(c.name == n for c in stepped.constants)]
     best_plant, best_rms, best_losses = stepped.plant, stepped.rms_pct, None
     plant, evaluations = stepped.plant, 0
