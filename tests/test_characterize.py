@@ -302,3 +302,25 @@ def test_an_e04_sweep_after_a_large_step_starts_from_rest():
     before = rig.played_s
     settle(rig, "process_actual", 0.0, 0.1)  # already there: one hold, no more
     assert rig.played_s - before == pytest.approx(0.1)
+
+
+def test_a_single_coil_valve_is_characterized_on_its_one_side():
+    """A single-coil valve has no negative signal range and no objects for its ramps
+    (RAMPSETNEG*, manual §8.7.2): the transparent chain leaves them out (reading them was an
+    SDO abort 0x6333/1), the sweep runs clear of the null and the triangle from 0 to 100 %."""
+    from prm9tool.analysis.profile import DEFAULT
+    from prm9tool.characterize.frame import chain_changes
+    from prm9tool.characterize.run import characterize
+
+    valve = EmulatedValve("PRM9-06.2Z51/30-24E02S02")
+    while valve.status().booting:
+        valve.advance(0.05)
+    rig = EmulatorRig(valve)
+    assert not any(k.startswith("RAMPSETNEG") for k in chain_changes(rig))
+    run = characterize(rig, DEFAULT)
+    assert run.bode is not None and run.static is not None
+    sweep = run.bode.record.channels["position_setpoint"]
+    assert run.bode.centre_pct > DEFAULT.bode_amplitude_pct and sweep.min() >= 0.0
+    assert run.static.demand.min() == pytest.approx(0.0) and run.static.demand.max() > 99.0
+    assert {f.name for f in run.figures if f.passed is False} == set()
+    assert valve.status().active_errors == ()

@@ -15,7 +15,9 @@ from prm9tool.device.emulator.constants import PLANT
 from prm9tool.errors import Prm9Error
 from prm9tool.scope import measure_step
 from prm9tool.twin.emulate import emulated_twin
-from prm9tool.twin.identify import FITTED, fit, record, simulate
+from prm9tool.twin.identify import FITTED, fit
+from prm9tool.twin.recording import record
+from prm9tool.twin.replay import simulate
 from prm9tool.twin.twinfile import TwinFileError, read_twin, write_twin
 
 E02 = "PRM9-06.3Z11/30-24E02S02"
@@ -124,7 +126,7 @@ def test_a_characterization_run_is_fitted_from_its_steps(tmp_path):
 
     from prm9tool.analysis.profile import parse_profile
     from prm9tool.characterize.run import characterize, report_data, write_csv_files
-    from prm9tool.twin.identify import from_characterization
+    from prm9tool.twin.recording import from_characterization
     from prm9tool.twin.report import run_of_report
 
     truth = replace(PLANT, force_n_per_a=24.0, spool_mass_kg=0.08)
@@ -192,7 +194,7 @@ def test_fit_twin_on_the_command_line_from_a_report(tmp_path, capsys):
 
 def test_a_recording_at_a_links_1_khz_is_fitted_as_well(fitted):
     """USB and CAN (SYNC) links sample at 1 kHz: every fifth cycle of the valve's loop."""
-    from prm9tool.twin.identify import Steps
+    from prm9tool.twin.recording import Steps
 
     steps, _ = fitted
     slow = Steps(steps.type_key, steps.values, steps.stimulus[::5], steps.actual[4::5], 1000.0)
@@ -209,7 +211,8 @@ def test_the_twin_of_an_e04_position_loop_run_runs_its_position_loop():
     the process loop (mode 4, the E04's default) and missed every figure (docs/twin.md)."""
     from prm9tool.analysis.profile import parse_profile
     from prm9tool.characterize.run import characterize
-    from prm9tool.twin.identify import from_characterization, simulate_all
+    from prm9tool.twin.recording import from_characterization
+    from prm9tool.twin.replay import simulate_all
 
     valve = EmulatedValve("PRM9-06.3Z11/30-24E04S02", plant=replace(PLANT, spool_mass_kg=0.08))
     valve.write(*CATALOGUE["CTRLMODE"].key, 2)
@@ -239,7 +242,8 @@ def test_each_step_is_replayed_after_the_hold_the_procedure_settled_it_with():
     rms on the later steps (docs/twin.md)."""
     from prm9tool.analysis.profile import DEFAULT
     from prm9tool.characterize.run import characterize
-    from prm9tool.twin.identify import from_characterization, hold_cycles, simulate_all
+    from prm9tool.twin.recording import from_characterization
+    from prm9tool.twin.replay import hold_cycles, simulate_all
 
     truth = replace(PLANT, static_friction_n=1.2)
     run = characterize(EmulatorRig(EmulatedValve(E02, plant=truth)), DEFAULT)

@@ -166,7 +166,7 @@ def test_fit_twin_on_the_command_line_runs_the_characterization_itself(tmp_path,
 def test_the_twin_of_a_valve_opened_in_real_time_is_explained(tmp_path):
     """A valve that ran in real time before its run starts each step in another phase of its
     dither than a fresh simulated valve (0.18-0.27 % rms were left before the fit aligned it,
-    identify.dither_offsets)."""
+    replay.dither_offsets)."""
     measured = _twin(tmp_path / "measured.toml", serial=4113)
     with prm9tool.connect(f"emulator:twin:{measured}", record_history=False) as valve:
         twin = valve.fit_twin(tmp_path / "fitted.toml")

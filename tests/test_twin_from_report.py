@@ -92,3 +92,37 @@ def test_a_report_that_cannot_be_used_is_refused_in_words(report, tmp_path, caps
     assert main(["--fit-twin", str(out), "--from", str(broken)]) == 3
     assert "broken-step-25.csv: not a table of numbers" in capsys.readouterr().err
     assert not out.exists()
+
+
+def test_an_e04_process_run_from_its_report_is_fitted_on_its_steps(tmp_path, capsys):
+    """An E04 in control mode 4 read back from its JSON report (whose flow record the
+    reader does not take): fitted on its process-loop steps alone — a process-loop step's CSV
+    has the spool demand (position_setpoint) too, which once made it a position-loop step and
+    the report "no complete process-loop step to fit". What the steps determine is said so
+    (the actuator's speed), what they do not is kept with why (the spool's constants)."""
+    from prm9tool.analysis.profile import DEFAULT
+    from prm9tool.twin.actuator import NOT_IN_PROCESS_RUN
+    from prm9tool.twin.identify import FITTED
+
+    plant = replace(PLANT, actuator_full_speed_s=1.0)
+    valve = EmulatedValve("PRM9-06.3Z11/30-24E04S02", serial=3118, plant=plant)
+    run = characterize(EmulatorRig(valve), DEFAULT)
+    assert run.loop == "process" and run.flow is not None
+    path = tmp_path / "run.json"
+    path.write_text(json.dumps(report_data(run, write_csv_files(run, tmp_path / "run"))))
+    assert run_of_report(path).flow is None  # so the fit has the steps only
+    out, fit_json = tmp_path / "twin.toml", tmp_path / "fit.json"
+    url = f"sqlite:///{tmp_path / 'history.db'}"
+    args = ["--fit-twin", str(out), "--from", str(path), "--history-db", url]
+    assert main([*args, "--json", str(fit_json)]) == 0, capsys.readouterr().err
+    fit = json.loads(fit_json.read_text(encoding="utf-8"))
+    assert set(fit["parts_rms_pct"]) == {"process"}  # the steps, no flow record
+    assert fit["explained"]
+    constants = {c["constant"]: c for c in fit["constants"]}
+    speed = constants["actuator_full_speed_s"]
+    assert speed["determined"] and speed["value"] == pytest.approx(1.0, rel=0.02)
+    for name in FITTED:
+        assert not constants[name]["determined"]
+        assert constants[name]["reason"] == NOT_IN_PROCESS_RUN
+        assert constants[name]["value"] == getattr(PLANT, name)  # kept, not invented
+    assert read_twin(out).plant.actuator_full_speed_s == pytest.approx(1.0, rel=0.02)

@@ -15,7 +15,9 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from prm9tool.catalogue import CATALOGUE
 from prm9tool.catalogue.signals import BY_KEY
+from prm9tool.catalogue.typekey import TypeKey
 from prm9tool.characterize.rig import Rig
 from prm9tool.characterize.transparent import TRANSPARENT
 from prm9tool.errors import Prm9Error
@@ -135,6 +137,10 @@ def chain_changes(rig: Rig, loop: str = "position") -> dict[str, int]:
     if loop == "process":
         for key in ("GAINSETPOS", "GAINSETNEG", "OFFSETPOS", "OFFSETNEG"):
             del wanted[key]
+    # a single-coil valve has no negative signal range, and no object for its ramps (manual
+    # §8.7.2, fig. 8-18): what its type does not have is not part of its chain
+    variant = TypeKey.parse(rig.info.type_key).variant
+    wanted = {k: v for k, v in wanted.items() if CATALOGUE[k].on_device(variant)}
     present = rig.read(list(wanted))
     return {k: v for k, v in wanted.items() if k in present and present[k] != v}
 

@@ -20,7 +20,7 @@ from prm9tool._version import __version__
 from prm9tool.analysis.profile import FIGURES, Limit, Profile
 from prm9tool.catalogue import CATALOGUE
 from prm9tool.catalogue.typekey import TypeKey
-from prm9tool.catalogue.variant import Config
+from prm9tool.catalogue.variant import Coils, Config
 from prm9tool.characterize.flow import FlowResult, flow_objects_missing, flow_test
 from prm9tool.characterize.frame import STEP_PRE_S
 from prm9tool.characterize.procedures import (
@@ -144,11 +144,17 @@ def characterize(rig: Rig, profile: Profile, progress: Progress | None = None) -
         result.steps.append(
             step_test(rig, amplitude, duration_s=profile.step_duration_s, loop=loop)
         )
-    say(f"frequency response ±{profile.bode_amplitude_pct:g} %")
+    # a single-coil valve has one side only (manual §8.7.2: no negative signal range; its
+    # spring returns the spool, or an E04's actuator): the sweep runs about twice its
+    # amplitude, clear of the null, and the triangle from 0
+    one_side = variant.coils is not Coils.AB
+    centre = 2.0 * profile.bode_amplitude_pct if one_side else 0.0
+    about = f"{centre:g} " if one_side else ""
+    say(f"frequency response {about}±{profile.bode_amplitude_pct:g} %")
     result.bode = bode_test(
         rig,
         profile.bode_amplitude_pct,
-        0.0,
+        centre,
         profile.bode_f_min_hz,
         profile.bode_f_max_hz,
         profile.bode_duration_s,
@@ -156,7 +162,8 @@ def characterize(rig: Rig, profile: Profile, progress: Progress | None = None) -
     )
     say("static characteristic")
     response = "process_actual" if process else "position_actual"
-    result.static = static_test(rig, profile.static_period_s, response=response)
+    low = 0.0 if one_side else -100.0
+    result.static = static_test(rig, profile.static_period_s, low, response=response)
     if process:
         say("flow characteristic")
         why_not = flow_objects_missing(rig)

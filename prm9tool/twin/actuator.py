@@ -33,18 +33,9 @@ from prm9tool.catalogue.scale import FULL_SCALE
 from prm9tool.characterize.frame import LOOPS
 from prm9tool.characterize.transparent import TRANSPARENT
 from prm9tool.errors import Prm9Error
-from prm9tool.twin.identify import (
-    CORRELATED,
-    CYCLE_HZ,
-    DETERMINED_RSE,
-    FITTED,
-    Fit,
-    FittedConstant,
-    Steps,
-    _write,
-    measured_actual,
-    settled_cycles,
-)
+from prm9tool.twin.identify import CORRELATED, DETERMINED_RSE, FITTED, Fit, FittedConstant
+from prm9tool.twin.recording import CYCLE_HZ, Steps
+from prm9tool.twin.replay import measured_actual, settled_cycles, write_values
 
 if TYPE_CHECKING:
     from prm9tool.characterize.run import Characterization
@@ -146,7 +137,7 @@ def simulate_process(recordings: Sequence[Steps], plant: PlantConstants) -> list
     key = TypeKey.parse(recordings[0].type_key)
     analog = TypeKey(key.size, key.spool, key.flow, key.supply, key.config, False)
     valve = EmulatedValve(analog, plant=plant)
-    _write(valve, {**recordings[0].values, **UNMONITORED})
+    write_values(valve, {**recordings[0].values, **UNMONITORED})
     rig = EmulatorRig(valve)
     lp = LOOPS["process"]
     out = []
@@ -158,15 +149,15 @@ def simulate_process(recordings: Sequence[Steps], plant: PlantConstants) -> list
                 raise Prm9Error(
                     f"a recording at {steps.rate_hz:g} Hz: the rate must divide 5000 Hz"
                 )
-            _write(valve, {**steps.values, **UNMONITORED})
+            write_values(valve, {**steps.values, **UNMONITORED})
             played = np.repeat(steps.stimulus, per)
             if isinstance(steps, FlowSteps):
                 # after the triangle's end through the valve's own chain, as in the run: the
                 # flow test's first hold starts where that left the actuator
-                _write(valve, {**steps.own, **UNMONITORED})
+                write_values(valve, {**steps.own, **UNMONITORED})
                 span = abs(STATIC_END_PCT) / max(steps.triangle_pct_s, 1.0)
                 rig.play(np.linspace(0.0, STATIC_END_PCT, round(span * CYCLE_HZ)), [lp.actual])
-                _write(valve, {**steps.values, **UNMONITORED})
+                write_values(valve, {**steps.values, **UNMONITORED})
                 hold = np.full(len(played) - len(played) // 2, played[-1])
             else:
                 hold = np.full(settle_cycles(steps), played[0])

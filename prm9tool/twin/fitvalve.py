@@ -26,7 +26,9 @@ from prm9tool.twin.actuator import (
     from_process_run,
     kept,
 )
-from prm9tool.twin.identify import FITTED, Fit, Steps, fit, from_characterization
+from prm9tool.twin.breakaway import fit_with_breakaway
+from prm9tool.twin.identify import FITTED, Fit, fit
+from prm9tool.twin.recording import Steps, from_characterization
 
 if TYPE_CHECKING:
     from prm9tool.analysis.profile import Profile
@@ -35,14 +37,12 @@ if TYPE_CHECKING:
 
 
 STATIC = "static_friction_n"
-# Why the break-away friction is not fitted (docs/twin.md, "Static friction"): measured on
-# emulated valves whose true plant explains their run to 0.000 % rms
+# Why the break-away friction is kept where its stage (twin/breakaway.py) found nothing better
+# (docs/twin.md, "Static friction")
 STATIC_FRICTION_KEPT = (
-    "the run does not separate it from the sliding friction and the spool's mass and damping: "
-    "where the spool sticks (at the null, a small step's start) it sticks and slips, and "
-    "other combinations of the four explain the steps as well (a valve with 0.6 N sliding, "
-    "0.8 N break-away friction was explained to 0.07 % rms by 0.57 N and 0.59 N); the "
-    "static curve hardly sees it (the integrator pushes through it): kept"
+    "the run has no step of at most 20 %, or the break-away friction its small steps' scan "
+    "found did not explain the steps better than this one: where the spool sticks it sticks "
+    "and slips, and the steps' residual does not slope towards the friction: kept"
 )
 
 
@@ -64,11 +64,30 @@ def write_fitted(
     firmware: str,
     source: str,
 ) -> Fit:
-    """Fit ``recordings`` (:func:`fit_with_friction`: from the factory plant, the static
-    friction scanned) and write the twin file ``path``; returns the fit."""
-    result = with_kept(fit(recordings, free=FITTED), type_key)
+    """Fit ``recordings`` and write the twin file ``path``; returns the fit (:func:`fitted`)."""
+    result = with_kept(fitted(recordings), type_key)
     write_twin(path, result, serial, type_key, firmware, source, recordings[0].values)
     return result
+
+
+def fitted(recordings: Sequence[Steps]) -> Fit:
+    """The fit of a position-loop run's ``recordings`` from the factory plant: the steps, the
+    break-away friction in a stage of its own (:func:`~.breakaway.fit_with_breakaway`), then
+    the joint residual with the sweep's and the triangle's windows from there."""
+    from prm9tool.device.emulator.constants import PLANT
+
+    steps = [r for r in recordings if r.kind == "step"]
+    if not steps:
+        return fit(recordings, free=FITTED)
+    first = fit(steps, free=FITTED)
+    plant, static, evaluations = fit_with_breakaway(steps, first, PLANT, STATIC_FRICTION_KEPT)
+    result = fit(recordings, start=plant, free=FITTED)
+    return replace(
+        result,
+        constants=(*result.constants, static),
+        start_rms_pct=first.start_rms_pct,
+        evaluations=result.evaluations + first.evaluations + evaluations,
+    )
 
 
 def with_kept(result: Fit, type_key: str) -> Fit:

@@ -71,7 +71,8 @@ def run_of_report(path: str | os.PathLike[str]) -> Characterization:
     )
     for name in step_files:
         t, columns = tables[name]
-        loop = "position" if "position_setpoint" in columns else "process"
+        # a process-loop step records the spool demand (position_setpoint) as well
+        loop = "process" if "process_setpoint" in columns else "position"
         run.steps.append(StepResult(_amplitude(name), Record(t, columns), None, loop))
     bode_csv = _ending(files, "-bode.csv")
     sweep_csv = _ending(files, "-sweep.csv")
