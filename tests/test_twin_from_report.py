@@ -94,29 +94,55 @@ def test_a_report_that_cannot_be_used_is_refused_in_words(report, tmp_path, caps
     assert not out.exists()
 
 
-def test_an_e04_process_run_from_its_report_is_fitted_on_its_steps(tmp_path, capsys):
-    """An E04 in control mode 4 read back from its JSON report (whose flow record the
-    reader does not take): fitted on its process-loop steps alone — a process-loop step's CSV
-    has the spool demand (position_setpoint) too, which once made it a position-loop step and
-    the report "no complete process-loop step to fit". What the steps determine is said so
-    (the actuator's speed), what they do not is kept with why (the spool's constants)."""
+@pytest.fixture(scope="module")
+def e04_reports(tmp_path_factory):
+    """An E04 in control mode 4 (actuator full stroke 1 s) characterized; its JSON report with
+    the flow record (``-flow.csv``) and one without it, and the run."""
     from prm9tool.analysis.profile import DEFAULT
-    from prm9tool.twin.actuator import NOT_IN_PROCESS_RUN
-    from prm9tool.twin.identify import FITTED
 
+    where = tmp_path_factory.mktemp("e04")
     plant = replace(PLANT, actuator_full_speed_s=1.0)
     valve = EmulatedValve("PRM9-06.3Z11/30-24E04S02", serial=3118, plant=plant)
     run = characterize(EmulatorRig(valve), DEFAULT)
     assert run.loop == "process" and run.flow is not None
-    path = tmp_path / "run.json"
-    path.write_text(json.dumps(report_data(run, write_csv_files(run, tmp_path / "run"))))
-    assert run_of_report(path).flow is None  # so the fit has the steps only
+    data = report_data(run, write_csv_files(run, where / "run"))
+    full, steps_only = where / "run.json", where / "steps-only.json"
+    full.write_text(json.dumps(data))
+    data["csv"] = [name for name in data["csv"] if not name.endswith("-flow.csv")]
+    steps_only.write_text(json.dumps(data))
+    return full, steps_only, run
+
+
+@pytest.mark.timeout(600)  # a default E04 characterization and the fit of its flow record
+@pytest.mark.parametrize("with_flow", [True, False], ids=["with-flow-record", "steps-only"])
+def test_an_e04_process_run_from_its_report_is_fitted_on_what_it_recorded(
+    e04_reports, with_flow, tmp_path, capsys
+):
+    """An E04's process-loop run read back from its JSON report: fitted on its process-loop
+    steps and its flow record (``-flow.csv``, which the reader did not take before), and on
+    the steps alone from a report without that file — a process-loop step's CSV has the
+    spool demand (position_setpoint) too, which once made it a position-loop step and the
+    report "no complete process-loop step to fit". What the records determine is said so
+    (the actuator's speed), what they do not is kept with why (the spool's constants)."""
+    from prm9tool.twin.actuator import NOT_IN_PROCESS_RUN
+    from prm9tool.twin.identify import FITTED
+
+    full, steps_only, run = e04_reports
+    report = full if with_flow else steps_only
+    again = run_of_report(report)
+    if with_flow:  # the flow test read back, its figures measured again
+        assert again.flow is not None
+        assert again.flow.characteristic.gain_positive == pytest.approx(
+            run.flow.characteristic.gain_positive, rel=1e-3
+        )
+    else:
+        assert again.flow is None
     out, fit_json = tmp_path / "twin.toml", tmp_path / "fit.json"
     url = f"sqlite:///{tmp_path / 'history.db'}"
-    args = ["--fit-twin", str(out), "--from", str(path), "--history-db", url]
+    args = ["--fit-twin", str(out), "--from", str(report), "--history-db", url]
     assert main([*args, "--json", str(fit_json)]) == 0, capsys.readouterr().err
     fit = json.loads(fit_json.read_text(encoding="utf-8"))
-    assert set(fit["parts_rms_pct"]) == {"process"}  # the steps, no flow record
+    assert set(fit["parts_rms_pct"]) == ({"process", "flow"} if with_flow else {"process"})
     assert fit["explained"]
     constants = {c["constant"]: c for c in fit["constants"]}
     speed = constants["actuator_full_speed_s"]

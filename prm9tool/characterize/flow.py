@@ -111,11 +111,18 @@ def flow_test(
     with preserved(rig, [], changes):
         rig.play(np.full(n, low), [FLOW_KEYS[1]], gaps=True)  # settle at the start
         rec = record(rig, stimulus, list(FLOW_KEYS), centre_pct, amplitude_pct + 15.0)
+    return flow_result(rec, fs, present["PRCKP"])
+
+
+def flow_result(rec: Record, fs: float, prckp_raw: int) -> FlowResult:
+    """The flow test's analysis of its record (``process_actual`` and ``position_actual`` at
+    ``fs``) with the process controller's Kp (raw PRCKP) it ran with — the test's and a
+    report's read back (:mod:`prm9tool.twin.report`)."""
     speed = velocity(rec.channels["process_actual"], fs)
     opening = rec.channels["position_actual"]
     # the spool crossing its dead band at a step is not a flow point: the smoothed velocity
     # lags it there; only samples where the spool moves slowly enough count
     steady = np.abs(velocity(opening, fs)) < QUASI_STATIC_PCT_S
     flow = flow_characteristic(opening[steady], speed[steady])
-    kp = present["PRCKP"] * CATALOGUE["PRCKP"].scale
+    kp = prckp_raw * CATALOGUE["PRCKP"].scale
     return FlowResult(rec, speed, flow, kp, deviation_offset(flow.band, kp))

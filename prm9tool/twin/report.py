@@ -1,13 +1,15 @@
 """A characterization run read back from its JSON report and the CSV files beside it
 (``--characterize --json``: ``-step-<a>.csv``, ``-sweep.csv``, ``-bode.csv``,
-``-static.csv``), so ``--fit-twin OUT.toml --from RUN.json`` fits what ``--fit-twin --device``
-fits from the run in memory — the steps, windows of the sweep and of the static
-characteristic's triangle — through the one :func:`prm9tool.twin.fitvalve.twin_of_run`.
+``-static.csv``, an E04 process-loop run's ``-flow.csv``), so ``--fit-twin OUT.toml --from
+RUN.json`` fits what ``--fit-twin --device`` fits from the run in memory — the steps, windows of
+the sweep and of the static characteristic's triangle, the flow test — through the one
+:func:`prm9tool.twin.fitvalve.twin_of_run`.
 
 What an older report does not have is left out, not guessed: without the time record of the
 sweep (``-sweep.csv``, written since this version) or the test settings (``tests``: where the
 chirp is at which frequency) the sweep is not fitted; without ``-static.csv`` the triangle is
-not. The figures are measured again from the records (as the run measured them), so the
+not; without ``-flow.csv`` an E04's process-loop run is fitted on its steps. The figures are
+measured again from the records (as the run measured them), so the
 twin can be characterized as the valve was and the two set side by side. No Qt.
 """
 
@@ -95,6 +97,14 @@ def run_of_report(path: str | os.PathLike[str]) -> Characterization:
             lost_samples=int(sweep.get("lost_samples") or 0),
             held_s=float(sweep.get("held_s") or 0.0),
         )
+    flow_csv = _ending(files, "-flow.csv")
+    if flow_csv is not None and run.loop == "process" and "PRCKP" in parameters:
+        from prm9tool.characterize.flow import flow_result
+
+        t, columns = tables[flow_csv]
+        columns.pop("velocity [%/s]", None)  # derived: computed again from the record
+        if {"process_actual", "position_actual"} <= columns.keys():
+            run.flow = flow_result(Record(t, columns), rate, parameters["PRCKP"])
     static_csv = _ending(files, "-static.csv")
     if static_csv is not None:
         t, columns = tables[static_csv]
