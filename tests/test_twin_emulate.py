@@ -116,6 +116,7 @@ def test_the_command_line_uses_a_twin_as_an_emulated_valve(tmp_path, capsys):
 
 
 # --- item 2: the twin of a valve the fit characterizes itself ----------------------------------
+@pytest.mark.timeout(600)  # a characterization and its fit: 116 s on a quiet PC
 def test_the_api_characterizes_a_valve_fits_its_twin_and_records_it(tmp_path):
     """Valve.fit_twin on the twin of a weaker, heavier valve finds that valve's constants
     from its own characterization, writes the twin file and records run and twin."""
@@ -163,6 +164,7 @@ def test_fit_twin_on_the_command_line_runs_the_characterization_itself(tmp_path,
     assert "--device ID or --emulator KEY" in capsys.readouterr().err
 
 
+@pytest.mark.timeout(600)  # a characterization and its fit: 116 s on a quiet PC
 def test_the_twin_of_a_valve_opened_in_real_time_is_explained(tmp_path):
     """A valve that ran in real time before its run starts each step in another phase of its
     dither than a fresh simulated valve (0.18-0.27 % rms were left before the fit aligned it,
