@@ -33,7 +33,7 @@ from prm9tool.catalogue.typekey import TypeKey
 from prm9tool.catalogue.variant import Coils
 from prm9tool.characterize.frame import LOOPS, chain_changes, gain_names, preserved, step_window
 from prm9tool.characterize.procedures import StepResult, _step
-from prm9tool.characterize.rig import Rig
+from prm9tool.characterize.rig import Rig, write_values
 from prm9tool.errors import Prm9Error
 from prm9tool.messages import QT_TRANSLATE_NOOP, Message
 
@@ -202,12 +202,7 @@ def simulate_steps(
     steps = []
     for values in (present, {**present, **proposed}):
         valve = EmulatedValve(analog)
-        for mnemonic, raw in values.items():
-            param = CATALOGUE[mnemonic]
-            try:
-                valve.write(param.index, param.subindex, raw)
-            except Prm9Error:  # e.g. a CANopen setpoint type on the analog copy: keep default
-                continue
+        write_values(valve, values)
         steps.append(emulated_step(valve, loop, amplitude_pct, duration_s))
     return steps[0], steps[1]
 

@@ -15,7 +15,7 @@ import time
 from abc import ABC, abstractmethod
 from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass
-from typing import TYPE_CHECKING, TypeVar
+from typing import TYPE_CHECKING, Any, TypeVar
 
 import numpy as np
 
@@ -366,3 +366,14 @@ class SessionRig(Rig):
     def release(self) -> None:
         """Give the setpoint back (the link's end: over USB the override off)."""
         self._link.end()
+
+
+def write_values(valve: Any, values: Mapping[str, int]) -> None:
+    """Write ``values`` (raw) into the emulated ``valve``'s working memory; one the valve
+    refuses (e.g. a CANopen setpoint type on an analog copy) keeps its default."""
+    for mnemonic, raw in values.items():
+        param = CATALOGUE[mnemonic]
+        try:
+            valve.write(param.index, param.subindex, raw)
+        except Prm9Error:
+            continue

@@ -31,11 +31,12 @@ import numpy as np
 
 from prm9tool.catalogue.scale import FULL_SCALE
 from prm9tool.characterize.frame import LOOPS
+from prm9tool.characterize.rig import write_values
 from prm9tool.characterize.transparent import TRANSPARENT
 from prm9tool.errors import Prm9Error
 from prm9tool.twin.identify import CORRELATED, DETERMINED_RSE, FITTED, Fit, FittedConstant
 from prm9tool.twin.recording import CYCLE_HZ, Steps
-from prm9tool.twin.replay import measured_actual, settled_cycles, write_values
+from prm9tool.twin.replay import measured_actual, settled_cycles
 
 if TYPE_CHECKING:
     from prm9tool.characterize.run import Characterization

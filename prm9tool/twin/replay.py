@@ -47,7 +47,7 @@ def simulate_all(
     ``offsets``: cycles added to each recording's hold (:func:`dither_offsets`), so that the
     simulated dither is in the phase the measured spool shows at the recording's start."""
     from prm9tool.catalogue.typekey import TypeKey
-    from prm9tool.characterize.rig import EmulatorRig
+    from prm9tool.characterize.rig import EmulatorRig, write_values
     from prm9tool.device.emulator import EmulatedValve
 
     first = recordings[0]
@@ -228,15 +228,3 @@ def window_shifts(
         }
         out.append(min(errors, key=errors.__getitem__))
     return out
-
-
-def write_values(valve: Any, values: dict[str, int]) -> None:
-    """Write ``values`` (raw) into the emulated ``valve``'s working memory."""
-    from prm9tool.catalogue import CATALOGUE
-
-    for mnemonic, raw in values.items():
-        param = CATALOGUE[mnemonic]
-        try:
-            valve.write(param.index, param.subindex, raw)
-        except Prm9Error:  # e.g. a CANopen setpoint type on the analog copy: keep default
-            continue
