@@ -26,6 +26,7 @@ from __future__ import annotations
 
 import argparse
 import bisect
+import json
 import os
 import shutil
 import signal
@@ -83,6 +84,8 @@ def main() -> int:
     parser.add_argument("--compare", metavar="TREE",
                         help="another checkout of prm9tool (e.g. before a change): each run "
                         "serves from it and from this tree in turn, and the ratios are printed")  # fmt: skip
+    parser.add_argument("--dump", metavar="PREFIX",
+                        help="write each run's SYNC and TPDO1 times to PREFIX.N.json")  # fmt: skip
     parser.add_argument("--per-frame-only", type=int, metavar="N", help=argparse.SUPPRESS)
     args = parser.parse_args()
     if os.environ.get(INSIDE) != "1":
@@ -111,7 +114,8 @@ def main() -> int:
     for count in counts:
         for label, tree in trees:  # alternating: the load changes between runs
             profile = f"{args.profile}.{label}.{count}" if args.profile else None
-            result = run(count, 1.0 if count <= 16 else 2.0, seconds, profile, tree)
+            dump = f"{args.dump}.{label}.{count}.json" if args.dump else None
+            result = run(count, 1.0 if count <= 16 else 2.0, seconds, profile, tree, dump)
             results[label].append(result)
             print(f"{label:>7} {result.valves:>6} {result.period_ms:>4g}ms {result.on_time:>8.2%} "
                   f"{result.fifo_on_time:>7.2%} "
@@ -281,7 +285,12 @@ def _quote(text: str) -> str:
 
 
 def run(
-    count: int, period_ms: float, seconds: float, profile: str | None = None, tree: str = TREE
+    count: int,
+    period_ms: float,
+    seconds: float,
+    profile: str | None = None,
+    tree: str = TREE,
+    dump: str | None = None,
 ) -> Result:
     """Serve ``count`` valves (nodes 1…count) from ``tree``, commission them, run SYNC for
     ``seconds``."""
@@ -294,7 +303,7 @@ def run(
             enlarge_receive_buffer(bus)  # the PLC takes 2N + 1 frames a millisecond too
             try:
                 _commission(bus, count)
-                return _measure(bus, count, period_ms, seconds, serve)
+                return _measure(bus, count, period_ms, seconds, serve, dump)
             finally:
                 bus.shutdown()
         finally:
@@ -432,7 +441,7 @@ def _cpu_s(pid: int) -> float:
     return (int(fields[11]) + int(fields[12])) / os.sysconf("SC_CLK_TCK")
 
 
-def _measure(bus, count: int, period_ms: float, seconds: float, serve) -> Result:  # type: ignore[no-untyped-def]
+def _measure(bus, count: int, period_ms: float, seconds: float, serve, dump: str | None) -> Result:  # type: ignore[no-untyped-def]
     """The PLC's run, lean: datagrams decoded and sent without ``can.Message``
     (``canopen_udp``: a Python PLC's own per-frame cost would otherwise be measured too)."""
     from prm9tool.device.emulator import canopen_udp
@@ -496,6 +505,8 @@ def _measure(bus, count: int, period_ms: float, seconds: float, serve) -> Result
     time.sleep(0.2)
     stop.set()
     receiver.join()
+    if dump:
+        Path(dump).write_text(json.dumps({"sync": sync_times, "tpdo1": tpdo}))
     latencies, on_time = _match(sync_times, tpdo.values())
     fifo = _fifo_on_time(sync_times, tpdo.values())
     received = sum(len(t) for t in tpdo.values())

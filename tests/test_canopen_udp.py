@@ -92,3 +92,39 @@ def test_an_rpdo_repeating_its_setpoint_leaves_the_loop_inputs_as_they_are():
     valve.write_bytes(0x6300, 1, b"\x00\x20")  # a new setpoint does
     fw.flush()
     assert fw.loop.inputs_version > version
+
+
+class _Wrapper:
+    """python-can's socket wrapper as :func:`canopen_udp.receiver` uses it, over a socket
+    pair: ``recv`` (python-can's ``select`` and read) is counted."""
+
+    timestamp_nanosecond = True
+    max_buffer = 4096
+    received_ancillary_buffer_size = 64
+    received_timestamp_struct = "@ll"
+
+    def __init__(self, sock):
+        self._socket = sock
+        self.recv_calls: list[float | None] = []
+
+    def recv(self, timeout):
+        self.recv_calls.append(timeout)
+
+
+@pytest.mark.skipif(not hasattr(__import__("socket"), "MSG_DONTWAIT"), reason="POSIX only")
+def test_no_wait_asked_and_nothing_queued_returns_without_select(monkeypatch):
+    import socket
+
+    mine, _other = socket.socketpair(socket.AF_UNIX, socket.SOCK_DGRAM)
+    wrapper = _Wrapper(mine)
+    monkeypatch.setattr(canopen_udp, "_socket_wrapper", lambda bus: wrapper)
+    receive = canopen_udp.receiver(object())  # type: ignore[arg-type]
+    assert receive is not None
+    try:
+        assert receive(0.0) is None
+        assert wrapper.recv_calls == []  # one system call, not a select after it
+        assert receive(0.01) is None
+        assert wrapper.recv_calls == [0.01]  # a wait asked: python-can's select waits
+    finally:
+        mine.close()
+        _other.close()

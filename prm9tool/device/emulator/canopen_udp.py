@@ -134,6 +134,8 @@ def receiver(bus: can.BusABC) -> Receive | None:
         while True:
             queued = take() if take is not None else None
             if queued is None:
+                if take is not None and timeout == 0.0:
+                    return None  # nothing queued, and no wait asked: no select after it
                 result = recv(timeout)
                 if not result:
                     return None

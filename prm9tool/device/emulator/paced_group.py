@@ -7,7 +7,7 @@ thread that receives the bus's frames, which must answer a SYNC within a millise
 the same simulation, drift-free per valve (each keeps its own :class:`~.pacing.Pacer`).
 
 Given a *driver* (:class:`~.canopen_hub.SharedBus`), the group has no thread at all: the bus's
-receive thread runs one due batch at a time between frames (:meth:`PacedGroup.step_one`).
+receive thread runs the batches due at that moment between frames (:meth:`PacedGroup.step_one`).
 With a thread of its own, every datagram the receive thread takes off the socket (two system
 calls, each releasing the GIL) handed the GIL to the paced thread for up to a switch interval
 while its batch ran: at 16 valves the receive thread fell behind and the kernel dropped 35 000
@@ -28,6 +28,12 @@ if TYPE_CHECKING:
 
 log = logging.getLogger(__name__)
 
+# Every valve whose batch is due runs in one call, for at most BUDGET_S (frames wait no
+# longer); a valve whose cycles a SYNC ran meanwhile (EmulatedValve.run_due_by) is only
+# rescheduled, without a call or its lock: at a 1 ms SYNC nearly every batch found nothing to
+# run, and 16 valves woke the thread 10 000 times a second for it (docs/PERFORMANCE.md).
+BUDGET_S = 0.0002
+
 
 class PaceDriver(Protocol):
     """A thread that runs a group's batches between its own work (the bus's receive thread)."""
@@ -42,6 +48,7 @@ class PacedGroup:
 
     def __init__(self, valves: Sequence[EmulatedValve], driver: PaceDriver | None = None) -> None:
         self.valves = tuple(valves)
+        self._pacers = tuple(valve.pacer for valve in self.valves)
         self._driver = driver
         self._stop = threading.Event()
         self._thread: threading.Thread | None = None
@@ -81,19 +88,29 @@ class PacedGroup:
             valve.paced_by_group(False)
 
     def step_one(self) -> float:
-        """Run the batch of the valve due longest, if any is due; returns the seconds until
-        the next batch of any valve is due (0: one is due now)."""
+        """Run the batches of the valves due now, the one due longest first, for at most
+        :data:`BUDGET_S` of this thread's time; returns the seconds until the next batch of
+        any valve is due (0: one is due now)."""
         now = time.monotonic()
         due = self._due
         earliest = min(due, default=math.inf)  # min and index of a list: no Python per valve
-        if earliest <= now:
+        until = now + BUDGET_S
+        while earliest <= now:
             index = due.index(earliest)
-            try:
-                wait = self.valves[index].paced_step()
-            except Exception:  # a firmware bug must not stop the thread that runs the others
-                log.exception("paced batch of valve %d failed", self.valves[index].serial)
-                wait = 0.1
-            due[index] = now + wait
+            ready_at = self._pacers[index].batch_due_at()  # a SYNC may have run its cycles
+            if ready_at > now:  # nothing due yet: no call, no lock
+                due[index] = ready_at
+            else:
+                try:
+                    wait = self.valves[index].paced_step()
+                except Exception:  # a firmware bug must not stop the thread that runs the rest
+                    log.exception("paced batch of valve %d failed", self.valves[index].serial)
+                    wait = 0.1
+                now = time.monotonic()
+                due[index] = now + wait
+                if now >= until:
+                    earliest = min(due)
+                    break
             earliest = min(due)
         self.next_due = earliest
         return max(0.0, earliest - now)

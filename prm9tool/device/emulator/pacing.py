@@ -100,10 +100,13 @@ class Pacer:
         """Record that ``cycles`` cycles were run."""
         self.cycles_done += cycles
 
+    def batch_due_at(self) -> float:
+        """When (a time of ``clock``) the next batch of ``min_batch`` cycles is due."""
+        return self.start + (self.cycles_done + self.min_batch) * self.cycle_s
+
     def wait_s(self) -> float:
         """Seconds until the next batch of ``min_batch`` cycles is due (0 if already due)."""
-        next_due = self.start + (self.cycles_done + self.min_batch) * self.cycle_s
-        return max(0.0, next_due - self.clock())
+        return max(0.0, self.batch_due_at() - self.clock())
 
     def lag_s(self) -> float:
         """How far the simulation is behind the wall clock, in seconds."""
