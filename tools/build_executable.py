@@ -50,7 +50,8 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("--mode", choices=("onefile", "onedir", "both"), default="onefile")
     parser.add_argument("--dist", type=Path, default=ROOT / "dist", help="output folder")
     args = parser.parse_args(argv)
-    work = ROOT / "build" / "pyinstaller"
+    # one work folder per platform: the Windows stage builds under Wine beside the Linux build
+    work = ROOT / "build" / ("pyinstaller-windows" if sys.platform == "win32" else "pyinstaller")
     icon = _render_icon(work)
     _write_stamp()
     try:

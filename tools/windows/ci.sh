@@ -193,7 +193,7 @@ run_tests() {
 }
 
 build_exe() {
-  rm -rf "$ROOT/build/pyinstaller" "$ROOT/dist/windows"
+  rm -rf "$ROOT/build/pyinstaller-windows" "$ROOT/dist/windows"
   QT_QPA_PLATFORM=offscreen wpy tools/build_executable.py --mode onefile --dist dist/windows
   [ -f dist/windows/prm9tool.exe ]
   ls -la dist/windows/prm9tool.exe
