@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # The Windows stage (docs/executable.md, "Windows"): prm9tool's Windows build under Debian's
-# Wine, on this Linux CI. .ci/run calls it after the Linux stages; it also runs alone on a fresh
-# Debian machine (as root, or with sudo):
+# Wine, on this Linux CI. .ci/run runs it beside the Linux stages, its parts one after the
+# other; it also runs alone on a fresh Debian machine (as root, or with sudo):
 #
 #   tools/windows/ci.sh            # everything: tests, exe, smoke test
 #   tools/windows/ci.sh prepare    # the Wine prefix and the Windows Python only
