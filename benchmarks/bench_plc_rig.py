@@ -9,15 +9,18 @@ actually sent per second, the EMCYs seen (none expected: every one is a false al
 and the machine's load average; the single-valve run of the same invocation is the reference.
 
     .venv/bin/python benchmarks/bench_plc_rig.py [--valves 1,4,8,16,32] [--seconds 10] [--quick]
-        [--compare OTHER_CHECKOUT] [--profile OUT]
+        [--compare OTHER_CHECKOUT] [--profile OUT] [--dump PREFIX]
 
 First the per-frame path in CPU time (what N valves need of a core per period) and the PLC's
 own cost per frame; then the rig, with each process's CPU and run-queue wait per second (the
 OS's share). The PLC here is lean (frames through ``canopen_udp``, no ``can.Message``), so the
 figures are the serving process's. ``--compare`` serves each run from another checkout and
 from this one in turn and prints the ratios (docs/PERFORMANCE.md, "The PLC rig").
+``--dump`` writes each run's SYNC send times and each node's TPDO1 reception times to
+``PREFIX.TREE.N.json`` (where the late frames are: docs/PERFORMANCE.md).
 
-The SYNC period is 1 ms up to 16 valves and 2 ms above (the issue's 32 valves at 2 ms).
+The SYNC period is 1 ms up to 16 valves and 2 ms above (the issue's 32 valves at 2 ms), or
+``--period MS`` for every run.
 ``--quick`` (a smoke run, CI): 1 and 2 valves for 1 s each. Needs ``unshare -n`` (root or user
 namespaces); without it the benchmark says so and exits 0.
 """
@@ -84,6 +87,8 @@ def main() -> int:
     parser.add_argument("--compare", metavar="TREE",
                         help="another checkout of prm9tool (e.g. before a change): each run "
                         "serves from it and from this tree in turn, and the ratios are printed")  # fmt: skip
+    parser.add_argument("--period", type=float, metavar="MS",
+                        help="the SYNC period for every run (default: 1 ms, 2 ms above 16 valves)")  # fmt: skip
     parser.add_argument("--dump", metavar="PREFIX",
                         help="write each run's SYNC and TPDO1 times to PREFIX.N.json")  # fmt: skip
     parser.add_argument("--per-frame-only", type=int, metavar="N", help=argparse.SUPPRESS)
@@ -115,7 +120,8 @@ def main() -> int:
         for label, tree in trees:  # alternating: the load changes between runs
             profile = f"{args.profile}.{label}.{count}" if args.profile else None
             dump = f"{args.dump}.{label}.{count}.json" if args.dump else None
-            result = run(count, 1.0 if count <= 16 else 2.0, seconds, profile, tree, dump)
+            period = args.period or (1.0 if count <= 16 else 2.0)
+            result = run(count, period, seconds, profile, tree, dump)
             results[label].append(result)
             print(f"{label:>7} {result.valves:>6} {result.period_ms:>4g}ms {result.on_time:>8.2%} "
                   f"{result.fifo_on_time:>7.2%} "
