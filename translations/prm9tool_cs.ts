@@ -2227,6 +2227,22 @@ Uvolnit ho nyní (NMT start, řídicí slovo 08h → 09h → 0Bh → 0Fh)?</tran
             <source>No web browser could be started. The home page is {0}</source>
             <translation>Nepodařilo se spustit webový prohlížeč. Domovská stránka je {0}</translation>
         </message>
+        <message>
+            <source>unknown</source>
+            <translation>neznámé</translation>
+        </message>
+        <message>
+            <source>{0} (single executable)</source>
+            <translation>{0} (samostatný spustitelný soubor)</translation>
+        </message>
+        <message>
+            <source>commit</source>
+            <translation>Revize</translation>
+        </message>
+        <message>
+            <source>built</source>
+            <translation>Sestaveno</translation>
+        </message>
     </context>
     <context>
         <name>HelpWindow</name>

@@ -2213,6 +2213,22 @@ Jetzt freigeben (NMT Start, Steuerwort 08h → 09h → 0Bh → 0Fh)?</translatio
             <source>No web browser could be started. The home page is {0}</source>
             <translation>Es konnte kein Webbrowser gestartet werden. Die Homepage ist {0}</translation>
         </message>
+        <message>
+            <source>unknown</source>
+            <translation>unbekannt</translation>
+        </message>
+        <message>
+            <source>{0} (single executable)</source>
+            <translation>{0} (eigenständige Programmdatei)</translation>
+        </message>
+        <message>
+            <source>commit</source>
+            <translation>Revision</translation>
+        </message>
+        <message>
+            <source>built</source>
+            <translation>Erstellt</translation>
+        </message>
     </context>
     <context>
         <name>HelpWindow</name>
@@ -4210,7 +4226,7 @@ Auf dem PC ging nichts verloren: Das Dokument enthält weiterhin jeden Wert, Sic
         </message>
         <message>
             <source>The recording stopped: another operation (a tuning test…) took the stream.</source>
-            <translation>Die Aufzeichnung wurde beendet: Ein anderer Vorgang (ein Tuning-Test…) hat den Datenstrom übernommen.</translation>
+            <translation>Die Aufzeichnung wurde beendet: Ein anderer Vorgang (ein Einstell- oder Prüftest…) hat den Datenstrom übernommen.</translation>
         </message>
         <message>
             <source>The recording stopped: {0}</source>
@@ -4222,7 +4238,7 @@ Auf dem PC ging nichts verloren: Das Dokument enthält weiterhin jeden Wert, Sic
         </message>
         <message>
             <source>The setpoint generator has stopped: another operation (a tuning test, an upload…) drives the valve now.</source>
-            <translation>Der Sollwertgenerator wurde gestoppt: Ein anderer Vorgang (ein Tuning-Test, ein Hochladen…) steuert jetzt das Ventil.</translation>
+            <translation>Der Sollwertgenerator wurde gestoppt: Ein anderer Vorgang (ein Einstell- oder Prüftest, das Hochladen in das Ventil…) steuert jetzt das Ventil.</translation>
         </message>
         <message>
             <source>The valve refused a value of the setpoint generator ({0}): the generator has stopped.</source>
