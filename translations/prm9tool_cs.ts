@@ -5755,6 +5755,18 @@ Nejprve přepněte na Expert (Náhled → Úroveň oprávnění), nebo zkoušku 
             <translation>Žádný stav: ventil je v režimu offline.</translation>
         </message>
         <message>
+            <source>off (no CANopen)</source>
+            <translation>vypnuto (bez CANopen)</translation>
+        </message>
+        <message>
+            <source>initialising</source>
+            <translation>inicializace</translation>
+        </message>
+        <message>
+            <source>unknown</source>
+            <translation>neznámý</translation>
+        </message>
+        <message>
             <source>white</source>
             <translation>bílá</translation>
         </message>

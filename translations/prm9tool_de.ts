@@ -5733,6 +5733,18 @@ Wechseln Sie zuerst zu Experte (Ansicht → Berechtigungsstufe) oder starten Sie
             <translation>Kein Status: Das Ventil ist offline.</translation>
         </message>
         <message>
+            <source>off (no CANopen)</source>
+            <translation>aus (kein CANopen)</translation>
+        </message>
+        <message>
+            <source>initialising</source>
+            <translation>Initialisierung</translation>
+        </message>
+        <message>
+            <source>unknown</source>
+            <translation>unbekannt</translation>
+        </message>
+        <message>
             <source>white</source>
             <translation>weiß</translation>
         </message>
