@@ -5982,7 +5982,7 @@ Ano je porovná jako obvykle (bez dotazu se nic nezapíše); Ne přejde do reži
         </message>
         <message>
             <source>The valve's parameters are in the document; File → Save backup copy… keeps a copy of them</source>
-            <translation>Parametry ventilu jsou v dokumentu; Soubor → Uložit záložní kopii… z nich uloží kopii</translation>
+            <translation>Parametry ventilu v dokumentu; zálohu uloží Soubor → Uložit záložní kopii…</translation>
         </message>
         <message>
             <source>The valve stored its parameters at {0}</source>

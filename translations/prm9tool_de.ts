@@ -5957,7 +5957,7 @@ Ja vergleicht beide wie gewohnt (ohne Rückfrage wird nichts geschrieben); Nein 
         </message>
         <message>
             <source>The valve's parameters are in the document; File → Save backup copy… keeps a copy of them</source>
-            <translation>Die Parameter des Ventils sind im Dokument; Datei → Sicherungskopie speichern… bewahrt eine Kopie davon auf</translation>
+            <translation>Ventilparameter im Dokument; sichern mit Datei → Sicherungskopie speichern…</translation>
         </message>
         <message>
             <source>The valve stored its parameters at {0}</source>
