@@ -132,6 +132,7 @@ class StepPanel(QWidget):
         settling = self.figures["settling"]  # "did not settle …: oscillation of …"
         settling.setWordWrap(True)
         settling.setMinimumHeight(settling.fontMetrics().lineSpacing() * 3)  # room kept for it
+        settling.setAlignment(Qt.AlignmentFlag.AlignLeft | Qt.AlignmentFlag.AlignTop)  # by its name
         channels, self.form = QFormLayout(), QFormLayout()  # short labels: wide combos
         channels.setFieldGrowthPolicy(QFormLayout.FieldGrowthPolicy.AllNonFixedFieldsGrow)
         fields = [self.reference, self.response, *self.figures.values()]
