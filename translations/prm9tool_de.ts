@@ -4652,7 +4652,7 @@ Auf dem PC ging nichts verloren: Das Dokument enthält weiterhin jeden Wert, Sic
         </message>
         <message>
             <source>Settling time ±2 %</source>
-            <translation>Einschwingzeit ±2 %</translation>
+            <translation>Ausregelzeit ±2 %</translation>
         </message>
         <message>
             <source>Steady-state error</source>
