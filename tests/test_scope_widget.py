@@ -698,5 +698,5 @@ def test_the_settling_time_stands_on_the_line_of_its_name(qtbot, scope):
     qtbot.waitUntil(panel.isVisible)
     field, label = panel.figures["settling"], panel.labels[5]
     assert field.height() > 2 * field.fontMetrics().lineSpacing()
-    assert field.alignment() & Qt.AlignmentFlag.AlignTop
+    assert field.alignment() & label.alignment() & Qt.AlignmentFlag.AlignTop
     assert abs(field.geometry().top() - label.geometry().top()) <= 4

@@ -139,6 +139,7 @@ class StepPanel(QWidget):
         self.labels = [QLabel() for _ in fields]
         for n, (label, field) in enumerate(zip(self.labels, fields, strict=True)):
             (channels if n < 2 else self.form).addRow(label, field)
+        self.labels[fields.index(settling)].setAlignment(settling.alignment())  # one line
         layout = QVBoxLayout(self)
         layout.addLayout(channels)
         layout.addLayout(self.form)
