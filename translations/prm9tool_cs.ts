@@ -2407,6 +2407,86 @@ Ano načte a záznam zařadí do fronty; Ne nenačte nic.</translation>
             <translation>Uživatel, stanice, připojení</translation>
         </message>
         <message>
+            <source>ok</source>
+            <translation>ok</translation>
+        </message>
+        <message>
+            <source>passed</source>
+            <translation>vyhověl</translation>
+        </message>
+        <message>
+            <source>failed</source>
+            <translation>nevyhověl</translation>
+        </message>
+        <message>
+            <source>verification-failed</source>
+            <translation>ověření selhalo</translation>
+        </message>
+        <message>
+            <source>store-failed</source>
+            <translation>uložení selhalo</translation>
+        </message>
+        <message>
+            <source>communication-error</source>
+            <translation>chyba komunikace</translation>
+        </message>
+        <message>
+            <source>type-mismatch</source>
+            <translation>jiný typ ventilu</translation>
+        </message>
+        <message>
+            <source>error</source>
+            <translation>chyba</translation>
+        </message>
+        <message>
+            <source>dry-run</source>
+            <translation>zkušební běh</translation>
+        </message>
+        <message>
+            <source>downloaded</source>
+            <translation>načteno z ventilu</translation>
+        </message>
+        <message>
+            <source>proposed</source>
+            <translation>návrh</translation>
+        </message>
+        <message>
+            <source>targets-missed</source>
+            <translation>cíle nesplněny</translation>
+        </message>
+        <message>
+            <source>explained</source>
+            <translation>vysvětleno</translation>
+        </message>
+        <message>
+            <source>not-explained</source>
+            <translation>nevysvětleno</translation>
+        </message>
+        <message>
+            <source>no-drift</source>
+            <translation>bez driftu</translation>
+        </message>
+        <message>
+            <source>drifted</source>
+            <translation>zjištěn drift</translation>
+        </message>
+        <message>
+            <source>backup</source>
+            <translation>záloha</translation>
+        </message>
+        <message>
+            <source>write</source>
+            <translation>zápis</translation>
+        </message>
+        <message>
+            <source>verify</source>
+            <translation>ověření</translation>
+        </message>
+        <message>
+            <source>store</source>
+            <translation>uložení</translation>
+        </message>
+        <message>
             <source>Marked {0}: records of another valve type than {1} under this serial number — another valve (emulated valves of two runs of the program may share a serial number); compare or restore them only knowingly.</source>
             <translation>Označeno {0}: záznamy jiného typu ventilu než {1} pod tímto výrobním číslem — jiný ventil (emulované ventily dvou běhů programu mohou mít stejné výrobní číslo); porovnávejte nebo obnovujte je jen vědomě.</translation>
         </message>

@@ -2393,6 +2393,86 @@ Ja lädt hoch und stellt den Eintrag in die Warteschlange; Nein lädt nichts hoc
             <translation>Benutzer, Station, Verbindung</translation>
         </message>
         <message>
+            <source>ok</source>
+            <translation>ok</translation>
+        </message>
+        <message>
+            <source>passed</source>
+            <translation>bestanden</translation>
+        </message>
+        <message>
+            <source>failed</source>
+            <translation>nicht bestanden</translation>
+        </message>
+        <message>
+            <source>verification-failed</source>
+            <translation>Prüfung fehlgeschlagen</translation>
+        </message>
+        <message>
+            <source>store-failed</source>
+            <translation>Speichern fehlgeschlagen</translation>
+        </message>
+        <message>
+            <source>communication-error</source>
+            <translation>Kommunikationsfehler</translation>
+        </message>
+        <message>
+            <source>type-mismatch</source>
+            <translation>falscher Ventiltyp</translation>
+        </message>
+        <message>
+            <source>error</source>
+            <translation>Fehler</translation>
+        </message>
+        <message>
+            <source>dry-run</source>
+            <translation>Probelauf</translation>
+        </message>
+        <message>
+            <source>downloaded</source>
+            <translation>heruntergeladen</translation>
+        </message>
+        <message>
+            <source>proposed</source>
+            <translation>Vorschlag</translation>
+        </message>
+        <message>
+            <source>targets-missed</source>
+            <translation>Ziele verfehlt</translation>
+        </message>
+        <message>
+            <source>explained</source>
+            <translation>erklärt</translation>
+        </message>
+        <message>
+            <source>not-explained</source>
+            <translation>nicht erklärt</translation>
+        </message>
+        <message>
+            <source>no-drift</source>
+            <translation>keine Drift</translation>
+        </message>
+        <message>
+            <source>drifted</source>
+            <translation>Drift festgestellt</translation>
+        </message>
+        <message>
+            <source>backup</source>
+            <translation>Sicherung</translation>
+        </message>
+        <message>
+            <source>write</source>
+            <translation>Schreiben</translation>
+        </message>
+        <message>
+            <source>verify</source>
+            <translation>Prüfen</translation>
+        </message>
+        <message>
+            <source>store</source>
+            <translation>Speichern</translation>
+        </message>
+        <message>
             <source>Marked {0}: records of another valve type than {1} under this serial number — another valve (emulated valves of two runs of the program may share a serial number); compare or restore them only knowingly.</source>
             <translation>Mit {0} markiert: Einträge eines anderen Ventiltyps als {1} unter dieser Seriennummer — ein anderes Ventil (emulierte Ventile zweier Programmläufe können eine Seriennummer teilen); nur bewusst vergleichen oder wiederherstellen.</translation>
         </message>

@@ -21,6 +21,7 @@ from prm9tool.views.history.details import MAX_FIGURES, failing_figures, pdf_of,
 Index = QModelIndex | QPersistentModelIndex
 Record = dict[str, Any]
 MEANING = 3  # the column saying what was done
+OUTCOME = 4  # the column of the outcome (and the step that failed)
 TYPE_KEY = 5  # the column of the type key (marked on a record of another valve type)
 OTHER_TYPE_MARK = "⚠ "
 MAX_CHANGES = 4  # changed values listed in that column (all of them in the record)
@@ -83,15 +84,54 @@ class HistoryTableModel(QAbstractTableModel):
             return QColor(170, 0, 0)
         if role != Qt.ItemDataRole.DisplayRole:
             return None
-        failed = f" ({r['failed_step']})" if r["failed_step"] else ""
         cells = [
             str(r["seq"]), r["recorded_at"][:19].replace("T", " "), r["operation"],
-            self.meaning(r), r["outcome"] + failed, r["type_key"], r["firmware"],
+            self.meaning(r), self.outcome(r), r["type_key"], r["firmware"],
             f"{r['os_user']}@{r['host']}, {r['device_id']}",
         ]  # fmt: skip
         if other:
             cells[TYPE_KEY] = OTHER_TYPE_MARK + cells[TYPE_KEY]
         return cells[index.column()]
+
+    def outcome(self, record: Record) -> str:
+        """The outcome and the step that failed, in the program language (German read
+        "passed", "no-drift"); a word this program does not know stays as recorded. English
+        shows the recorded words, as ``--history`` does."""
+        outcome = str(record["outcome"])
+        text = self._outcomes().get(outcome, outcome)
+        step = record["failed_step"]
+        if not step:
+            return text
+        return f"{text} ({self._steps().get(str(step), str(step))})"
+
+    def _outcomes(self) -> dict[str, str]:
+        """The outcomes docs/history.md names (their English is the recorded word)."""
+        return {
+            "ok": self.tr("ok"),
+            "passed": self.tr("passed"),
+            "failed": self.tr("failed"),
+            "verification-failed": self.tr("verification-failed"),
+            "store-failed": self.tr("store-failed"),
+            "communication-error": self.tr("communication-error"),
+            "type-mismatch": self.tr("type-mismatch"),
+            "error": self.tr("error"),
+            "dry-run": self.tr("dry-run"),
+            "downloaded": self.tr("downloaded"),
+            "proposed": self.tr("proposed"),
+            "targets-missed": self.tr("targets-missed"),
+            "explained": self.tr("explained"),
+            "not-explained": self.tr("not-explained"),
+            "no-drift": self.tr("no-drift"),
+            "drifted": self.tr("drifted"),
+        }
+
+    def _steps(self) -> dict[str, str]:
+        return {
+            "backup": self.tr("backup"),
+            "write": self.tr("write"),
+            "verify": self.tr("verify"),
+            "store": self.tr("store"),
+        }
 
     def other_type_text(self) -> str:
         """Why a row is marked (also the window's warning line)."""
