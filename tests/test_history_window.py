@@ -17,7 +17,7 @@ from support.history_support import E04, Valve, factory_values
 
 from prm9tool.history.recorder import Recorder
 from prm9tool.views.history.details import RecordDetailsDialog
-from prm9tool.views.history.table import OUTCOME, TYPE_KEY
+from prm9tool.views.history.table import OPERATION, OUTCOME, TYPE_KEY
 from prm9tool.views.history.window import HistoryWindow
 
 TIMEOUT = 10_000
@@ -46,9 +46,9 @@ def _select(window: HistoryWindow, *rows: int) -> None:
         )
 
 
-def test_the_outcome_is_in_the_program_language(qtbot, recorder):
-    """The German History read "passed", "no-drift" and "verification-failed (verify)"; English
-    shows the recorded words, as --history does."""
+def test_the_operation_and_outcome_are_in_the_program_language(qtbot, recorder):
+    """The German History read "characterization", "passed", "no-drift" and
+    "verification-failed (verify)"; English shows the recorded words, as --history does."""
     from prm9tool import i18n
 
     valve = Valve(1001, E02_CA)
@@ -62,8 +62,11 @@ def test_the_outcome_is_in_the_program_language(qtbot, recorder):
     i18n.set_language("de")
     try:
         german = [model.data(model.index(row, OUTCOME)) for row in range(4)]
+        operations = [model.data(model.index(row, OPERATION)) for row in range(3)]
     finally:
         i18n.set_language("en")
+    assert operations == ["Endprüfung", "Vergleich mit Geburtsurkunde", "Hochladen"]
+    assert model.data(model.index(0, OPERATION)) == "characterization"
     assert german == [
         "bestanden",
         "keine Drift",

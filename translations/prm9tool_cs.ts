@@ -2487,6 +2487,70 @@ Ano načte a záznam zařadí do fronty; Ne nenačte nic.</translation>
             <translation>uložení</translation>
         </message>
         <message>
+            <source>download</source>
+            <translation>stažení z ventilu</translation>
+        </message>
+        <message>
+            <source>upload</source>
+            <translation>načtení do ventilu</translation>
+        </message>
+        <message>
+            <source>batch-upload</source>
+            <translation>načtení do ventilu (--batch)</translation>
+        </message>
+        <message>
+            <source>online-edits</source>
+            <translation>změny online</translation>
+        </message>
+        <message>
+            <source>restore-factory</source>
+            <translation>tovární nastavení</translation>
+        </message>
+        <message>
+            <source>characterization</source>
+            <translation>výstupní zkouška</translation>
+        </message>
+        <message>
+            <source>compare-apply</source>
+            <translation>převzato z porovnání</translation>
+        </message>
+        <message>
+            <source>history-restore</source>
+            <translation>obnoveno z historie</translation>
+        </message>
+        <message>
+            <source>tuning-accepted</source>
+            <translation>ladění převzato</translation>
+        </message>
+        <message>
+            <source>restart-verify</source>
+            <translation>ověření restartem</translation>
+        </message>
+        <message>
+            <source>restart</source>
+            <translation>restart</translation>
+        </message>
+        <message>
+            <source>autotune</source>
+            <translation>autotune</translation>
+        </message>
+        <message>
+            <source>frequency-response</source>
+            <translation>frekvenční charakteristika</translation>
+        </message>
+        <message>
+            <source>report-saved</source>
+            <translation>protokol uložen</translation>
+        </message>
+        <message>
+            <source>twin</source>
+            <translation>dvojče</translation>
+        </message>
+        <message>
+            <source>signature</source>
+            <translation>porovnání s rodným listem</translation>
+        </message>
+        <message>
             <source>Marked {0}: records of another valve type than {1} under this serial number — another valve (emulated valves of two runs of the program may share a serial number); compare or restore them only knowingly.</source>
             <translation>Označeno {0}: záznamy jiného typu ventilu než {1} pod tímto výrobním číslem — jiný ventil (emulované ventily dvou běhů programu mohou mít stejné výrobní číslo); porovnávejte nebo obnovujte je jen vědomě.</translation>
         </message>

@@ -2473,6 +2473,70 @@ Ja lädt hoch und stellt den Eintrag in die Warteschlange; Nein lädt nichts hoc
             <translation>Speichern</translation>
         </message>
         <message>
+            <source>download</source>
+            <translation>Herunterladen</translation>
+        </message>
+        <message>
+            <source>upload</source>
+            <translation>Hochladen</translation>
+        </message>
+        <message>
+            <source>batch-upload</source>
+            <translation>Hochladen (--batch)</translation>
+        </message>
+        <message>
+            <source>online-edits</source>
+            <translation>Online-Änderungen</translation>
+        </message>
+        <message>
+            <source>restore-factory</source>
+            <translation>Werkseinstellungen</translation>
+        </message>
+        <message>
+            <source>characterization</source>
+            <translation>Endprüfung</translation>
+        </message>
+        <message>
+            <source>compare-apply</source>
+            <translation>Vergleich übernommen</translation>
+        </message>
+        <message>
+            <source>history-restore</source>
+            <translation>aus Verlauf wiederhergestellt</translation>
+        </message>
+        <message>
+            <source>tuning-accepted</source>
+            <translation>Einstellung übernommen</translation>
+        </message>
+        <message>
+            <source>restart-verify</source>
+            <translation>Prüfung durch Neustart</translation>
+        </message>
+        <message>
+            <source>restart</source>
+            <translation>Neustart</translation>
+        </message>
+        <message>
+            <source>autotune</source>
+            <translation>Autotune</translation>
+        </message>
+        <message>
+            <source>frequency-response</source>
+            <translation>Frequenzgang</translation>
+        </message>
+        <message>
+            <source>report-saved</source>
+            <translation>Prüfbericht gespeichert</translation>
+        </message>
+        <message>
+            <source>twin</source>
+            <translation>Zwilling</translation>
+        </message>
+        <message>
+            <source>signature</source>
+            <translation>Vergleich mit Geburtsurkunde</translation>
+        </message>
+        <message>
             <source>Marked {0}: records of another valve type than {1} under this serial number — another valve (emulated valves of two runs of the program may share a serial number); compare or restore them only knowingly.</source>
             <translation>Mit {0} markiert: Einträge eines anderen Ventiltyps als {1} unter dieser Seriennummer — ein anderes Ventil (emulierte Ventile zweier Programmläufe können eine Seriennummer teilen); nur bewusst vergleichen oder wiederherstellen.</translation>
         </message>

@@ -20,6 +20,7 @@ from prm9tool.views.history.details import MAX_FIGURES, failing_figures, pdf_of,
 
 Index = QModelIndex | QPersistentModelIndex
 Record = dict[str, Any]
+OPERATION = 2  # the column of the operation
 MEANING = 3  # the column saying what was done
 OUTCOME = 4  # the column of the outcome (and the step that failed)
 TYPE_KEY = 5  # the column of the type key (marked on a record of another valve type)
@@ -85,13 +86,42 @@ class HistoryTableModel(QAbstractTableModel):
         if role != Qt.ItemDataRole.DisplayRole:
             return None
         cells = [
-            str(r["seq"]), r["recorded_at"][:19].replace("T", " "), r["operation"],
+            str(r["seq"]), r["recorded_at"][:19].replace("T", " "), self.operation(r),
             self.meaning(r), self.outcome(r), r["type_key"], r["firmware"],
             f"{r['os_user']}@{r['host']}, {r['device_id']}",
         ]  # fmt: skip
         if other:
             cells[TYPE_KEY] = OTHER_TYPE_MARK + cells[TYPE_KEY]
         return cells[index.column()]
+
+    def operation(self, record: Record) -> str:
+        """The operation in a word of the program language (German read "download",
+        "characterization"); English shows the recorded word, as ``--history`` does."""
+        operation = str(record["operation"])
+        return self._operation_names().get(operation, operation)
+
+    def _operation_names(self) -> dict[str, str]:
+        """The operations docs/history.md names (their English is the recorded word)."""
+        return {
+            "download": self.tr("download"),
+            "upload": self.tr("upload"),
+            "batch-upload": self.tr("batch-upload"),
+            "store": self.tr("store"),
+            "online-edits": self.tr("online-edits"),
+            "backup": self.tr("backup"),
+            "restore-factory": self.tr("restore-factory"),
+            "characterization": self.tr("characterization"),
+            "compare-apply": self.tr("compare-apply"),
+            "history-restore": self.tr("history-restore"),
+            "tuning-accepted": self.tr("tuning-accepted"),
+            "restart-verify": self.tr("restart-verify"),
+            "restart": self.tr("restart"),
+            "autotune": self.tr("autotune"),
+            "frequency-response": self.tr("frequency-response"),
+            "report-saved": self.tr("report-saved"),
+            "twin": self.tr("twin"),
+            "signature": self.tr("signature"),
+        }
 
     def outcome(self, record: Record) -> str:
         """The outcome and the step that failed, in the program language (German read
