@@ -2609,7 +2609,7 @@ Ja lädt hoch und stellt den Eintrag in die Warteschlange; Nein lädt nichts hoc
         </message>
         <message>
             <source>Test report</source>
-            <translation>Prüfprotokoll</translation>
+            <translation>Prüfbericht</translation>
         </message>
         <message>
             <source>Values from a compared file, written online</source>
@@ -2641,7 +2641,7 @@ Ja lädt hoch und stellt den Eintrag in die Warteschlange; Nein lädt nichts hoc
         </message>
         <message>
             <source>Test report saved</source>
-            <translation>Prüfprotokoll gespeichert</translation>
+            <translation>Prüfbericht gespeichert</translation>
         </message>
         <message>
             <source>Twin fitted (--fit-twin)</source>
