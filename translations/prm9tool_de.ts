@@ -1789,7 +1789,7 @@ Die letzte Aktion wurde womöglich nicht vollständig ausgeführt. Speichern Sie
         </message>
         <message>
             <source>Twin from the history:</source>
-            <translation>Zwilling aus der Historie:</translation>
+            <translation>Zwilling aus dem Verlauf:</translation>
         </message>
         <message>
             <source>Twin file:</source>
@@ -5282,7 +5282,7 @@ Wechseln Sie zuerst zu Experte (Ansicht → Berechtigungsstufe) oder starten Sie
         </message>
         <message>
             <source>The emulator's plant: this serial has no twin in the history.</source>
-            <translation>Strecke des Emulators: Diese Seriennummer hat keinen Zwilling in der Historie.</translation>
+            <translation>Strecke des Emulators: Diese Seriennummer hat keinen Zwilling im Verlauf.</translation>
         </message>
         <message>
             <source>Online: the tests move the connected valve.</source>
@@ -5369,7 +5369,7 @@ Wechseln Sie zuerst zu Experte (Ansicht → Berechtigungsstufe) oder starten Sie
         </message>
         <message>
             <source>Twin written to %1 and recorded in the history. Residual %2 % → %3 % rms (%4).</source>
-            <translation>Zwilling in %1 geschrieben und in der Historie festgehalten. Residuum %2 % → %3 % rms (%4).</translation>
+            <translation>Zwilling in %1 geschrieben und im Verlauf festgehalten. Residuum %2 % → %3 % rms (%4).</translation>
         </message>
         <message>
             <source>Fitted: %1.</source>
@@ -5417,7 +5417,7 @@ Wechseln Sie zuerst zu Experte (Ansicht → Berechtigungsstufe) oder starten Sie
         </message>
         <message>
             <source>A twin is the emulator's plant with the constants of this valve, fitted to its characterization (steps, sweep and static characteristic) and kept in a twin file with its serial and parameter set (docs/twin.md). Fit twin of the valve runs the end-of-line test of the profile chosen on the Test report page on the connected valve; Fit from a report… takes a characterization's JSON report (prm9tool --characterize --json) and its CSV files. Both record the twin in the history for the serial; offline tuning then runs on it.</source>
-            <translation>Ein Zwilling ist die Strecke des Emulators mit den Konstanten dieses Ventils, angepasst an seine Charakterisierung (Sprünge, Sweep und statische Kennlinie) und in einer Zwillingsdatei mit seiner Seriennummer und seinem Parametersatz abgelegt (docs/twin.md). „Zwilling des Ventils anpassen“ führt die Endprüfung des auf der Seite Prüfbericht gewählten Profils am verbundenen Ventil aus; „Aus einem Bericht anpassen…“ nimmt den JSON-Bericht einer Charakterisierung (prm9tool --characterize --json) mit seinen CSV-Dateien. Beide halten den Zwilling in der Historie der Seriennummer fest; die Offline-Abstimmung läuft dann auf ihm.</translation>
+            <translation>Ein Zwilling ist die Strecke des Emulators mit den Konstanten dieses Ventils, angepasst an seine Charakterisierung (Sprünge, Sweep und statische Kennlinie) und in einer Zwillingsdatei mit seiner Seriennummer und seinem Parametersatz abgelegt (docs/twin.md). „Zwilling des Ventils anpassen“ führt die Endprüfung des auf der Seite Prüfbericht gewählten Profils am verbundenen Ventil aus; „Aus einem Bericht anpassen…“ nimmt den JSON-Bericht einer Charakterisierung (prm9tool --characterize --json) mit seinen CSV-Dateien. Beide halten den Zwilling im Verlauf der Seriennummer fest; die Offline-Abstimmung läuft dann auf ihm.</translation>
         </message>
         <message>
             <source>Twin file:</source>
