@@ -396,7 +396,8 @@ def test_the_dialog_draws_the_dither_the_valve_applies(qtbot, setup):
     )["dither"]
     assert drawn == pytest.approx(applied, rel=0.01)
     assert drawn == pytest.approx(0.15 * 0.10 * 2600, rel=0.01)  # factory 15 % (docs/emulator.md)
-    assert "±39 mA peak" in dialog.curnorm_label.text()
+    assert "±39\u00a0mA peak" in dialog.curnorm_label.text()  # a value and unit stay together
+    assert "CURNORM: 2600\u00a0mA" in dialog.curnorm_label.text()  # German: "2600" / "mA"
 
 
 def test_enter_in_a_field_commits_it_and_keeps_the_dialog_open(qtbot, setup):
