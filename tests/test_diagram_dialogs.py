@@ -283,6 +283,7 @@ def test_at_basic_level_one_value_sets_all_four_ramps_in_one_step(qtbot, setup):
     s = setup(E02, Access.BASIC)
     dialog = open_dialog(qtbot, s, "ramps")
     assert dialog.all_field.isVisibleTo(dialog)
+    assert dialog.all_unit.isVisibleTo(dialog) and dialog.all_unit.text() == "ms"  # it had none
     assert not any(dialog.fields[mn].isVisibleTo(dialog) for mn in dialog.present)
     type_into(dialog.all_field, "400")
     assert {s.doc.value(mn) for mn in dialog.present} == {400}
@@ -296,7 +297,7 @@ def test_at_basic_level_one_value_sets_all_four_ramps_in_one_step(qtbot, setup):
 def test_at_expert_level_each_ramp_has_its_own_field(qtbot, setup):
     s = setup(E02)
     dialog = open_dialog(qtbot, s, "ramps")
-    assert not dialog.all_field.isVisibleTo(dialog)
+    assert not dialog.all_field.isVisibleTo(dialog) and not dialog.all_unit.isVisibleTo(dialog)
     type_into(dialog.fields["RAMPSETNEGDOWN"], "250")
     assert s.doc.value("RAMPSETNEGDOWN") == 250
     assert s.doc.value("RAMPSETPOSUP") == 0
