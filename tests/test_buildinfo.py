@@ -53,3 +53,25 @@ def test_about_lists_the_commit_and_build(qapp: object) -> None:
     rows = dict(versions())
     assert rows["commit"] == buildinfo.build_info().commit
     assert "built" in rows
+
+
+def test_about_names_the_build_in_the_program_language(
+    qapp: object, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """The German About box read "built  unknown (single executable)"."""
+    from prm9tool import i18n
+    from prm9tool.views import help_dialog
+
+    info = buildinfo.BuildInfo(
+        version=__version__, commit="unknown", built="unknown", frozen=True, python="3"
+    )
+    monkeypatch.setattr(help_dialog, "build_info", lambda: info)
+    i18n.set_language("de")
+    try:
+        rows = dict(help_dialog.versions())
+        about = help_dialog.about_html("", "", "")
+    finally:
+        i18n.set_language("en")
+    assert rows["Revision"] == "unbekannt"
+    assert rows["Erstellt"] == "unbekannt (eigenständige Programmdatei)"
+    assert "unknown" not in about and "single" not in about

@@ -283,6 +283,7 @@ def test_at_basic_level_one_value_sets_all_four_ramps_in_one_step(qtbot, setup):
     s = setup(E02, Access.BASIC)
     dialog = open_dialog(qtbot, s, "ramps")
     assert dialog.all_field.isVisibleTo(dialog)
+    assert dialog.all_unit.isVisibleTo(dialog) and dialog.all_unit.text() == "ms"  # it had none
     assert not any(dialog.fields[mn].isVisibleTo(dialog) for mn in dialog.present)
     type_into(dialog.all_field, "400")
     assert {s.doc.value(mn) for mn in dialog.present} == {400}
@@ -296,7 +297,7 @@ def test_at_basic_level_one_value_sets_all_four_ramps_in_one_step(qtbot, setup):
 def test_at_expert_level_each_ramp_has_its_own_field(qtbot, setup):
     s = setup(E02)
     dialog = open_dialog(qtbot, s, "ramps")
-    assert not dialog.all_field.isVisibleTo(dialog)
+    assert not dialog.all_field.isVisibleTo(dialog) and not dialog.all_unit.isVisibleTo(dialog)
     type_into(dialog.fields["RAMPSETNEGDOWN"], "250")
     assert s.doc.value("RAMPSETNEGDOWN") == 250
     assert s.doc.value("RAMPSETPOSUP") == 0
@@ -396,7 +397,8 @@ def test_the_dialog_draws_the_dither_the_valve_applies(qtbot, setup):
     )["dither"]
     assert drawn == pytest.approx(applied, rel=0.01)
     assert drawn == pytest.approx(0.15 * 0.10 * 2600, rel=0.01)  # factory 15 % (docs/emulator.md)
-    assert "±39 mA peak" in dialog.curnorm_label.text()
+    assert "±39\u00a0mA peak" in dialog.curnorm_label.text()  # a value and unit stay together
+    assert "CURNORM: 2600\u00a0mA" in dialog.curnorm_label.text()  # German: "2600" / "mA"
 
 
 def test_enter_in_a_field_commits_it_and_keeps_the_dialog_open(qtbot, setup):

@@ -125,6 +125,21 @@ def test_a_valve_without_canopen_enables_itself_and_offers_no_commissioning(qtbo
         assert window.status.status_label.text() == "Status: ok"
 
 
+def test_a_valve_without_canopen_has_its_nmt_state_in_the_program_language(qtbot, tmp_path):
+    """The German Valve status read "CANopen-NMT-Zustand: off" for a USB valve."""
+    from prm9tool import i18n
+
+    with main_window(qtbot, tmp_path) as window:
+        go_online(qtbot, window, "PRM9-06.3Z11/30-24E04S02:4303")
+        emulated(4303).advance(2.0)
+        i18n.set_language("de")
+        try:
+            field = window.show_status_window().fields["nmt"]
+            qtbot.waitUntil(lambda: field.text() == "aus (kein CANopen)", timeout=TIMEOUT)
+        finally:
+            i18n.set_language("en")
+
+
 def test_a_tuning_test_on_a_waiting_valve_offers_the_enabling_first(
     qtbot, window, answers, monkeypatch
 ):

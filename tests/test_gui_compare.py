@@ -128,6 +128,19 @@ def test_an_invalid_file_is_named_and_nothing_changes(window, tmp_path, answers)
     assert not window.doc.modified
 
 
+def test_an_invalid_file_to_compare_names_its_first_problem_in_the_box(window, tmp_path, answers):
+    """The box said only "kaputt.prm kann nicht verglichen werden.": the reason was in the
+    details alone, while File → Open names the first problem."""
+    contents = PrmContents.factory(TypeKey.parse(E02))
+    write_file(contents, tmp_path / "range.prm")
+    text = (tmp_path / "range.prm").read_text(encoding="utf-8")
+    (tmp_path / "range.prm").write_text(text.replace("THRESETP = 5", "THRESETP = 500"))
+    window.compare.compare_with_file(tmp_path / "range.prm")
+    lead = answers.informed[-1].split("\n")[:2]
+    assert lead[0].endswith("range.prm cannot be compared.")
+    assert lead[1].startswith("range.prm:") and "THRESETP" in lead[1]
+
+
 def test_going_online_choose_per_parameter_makes_both_sides_agree(qtbot, window, monkeypatch):
     window.doc.set_value("LIMTA", 1500)
     window.doc.set_value("DTAMP", 1000)

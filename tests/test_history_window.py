@@ -17,7 +17,7 @@ from support.history_support import E04, Valve, factory_values
 
 from prm9tool.history.recorder import Recorder
 from prm9tool.views.history.details import RecordDetailsDialog
-from prm9tool.views.history.table import TYPE_KEY
+from prm9tool.views.history.table import OPERATION, OUTCOME, TYPE_KEY
 from prm9tool.views.history.window import HistoryWindow
 
 TIMEOUT = 10_000
@@ -44,6 +44,35 @@ def _select(window: HistoryWindow, *rows: int) -> None:
             window.model.index(row, 0),
             selection.SelectionFlag.Select | selection.SelectionFlag.Rows,
         )
+
+
+def test_the_operation_and_outcome_are_in_the_program_language(qtbot, recorder):
+    """The German History read "characterization", "passed", "no-drift" and
+    "verification-failed (verify)"; English shows the recorded words, as --history does."""
+    from prm9tool import i18n
+
+    valve = Valve(1001, E02_CA)
+    recorder.record(valve, "characterization", "passed", None)
+    recorder.record(valve, "signature", "no-drift", None)
+    recorder.record(valve, "upload", "verification-failed", None, failed_step="verify")
+    recorder.record(valve, "upload", "a-new-outcome", None)
+    model = _window(qtbot, recorder, 1001).model
+    english = [model.data(model.index(row, OUTCOME)) for row in range(4)]
+    assert english == ["passed", "no-drift", "verification-failed (verify)", "a-new-outcome"]
+    i18n.set_language("de")
+    try:
+        german = [model.data(model.index(row, OUTCOME)) for row in range(4)]
+        operations = [model.data(model.index(row, OPERATION)) for row in range(3)]
+    finally:
+        i18n.set_language("en")
+    assert operations == ["Endprüfung", "Vergleich mit Geburtsurkunde", "Hochladen"]
+    assert model.data(model.index(0, OPERATION)) == "characterization"
+    assert german == [
+        "bestanden",
+        "keine Drift",
+        "Prüfung fehlgeschlagen (Prüfen)",
+        "a-new-outcome",
+    ]
 
 
 def test_records_of_another_valve_type_under_the_same_serial_are_marked(qtbot, recorder):

@@ -168,3 +168,22 @@ def test_the_export_button_has_room_for_its_arrow_beside_its_text(qtbot, scope, 
         export.style().PixelMetric.PM_MenuButtonIndicator
     )
     assert export.height() == scope.controls.start.height()
+
+
+@pytest.mark.parametrize("height", range(600, 640, 5))
+def test_the_names_on_a_shared_german_axis_are_not_cut_at_its_end(qtbot, scope, conn, height):
+    """ "Sollwert nach Rampe (0x6310), Schieberlage Ist (0x630" at a 1200 × 615 scope: the
+    names were fitted to the axis without the margins and the space pyqtgraph draws around
+    them, and were cut at the top."""
+    _switch(qtbot, scope, "de")
+    scope.resize(1200, height)
+    qtbot.wait(10)
+    for key in ("demand", "position_actual"):
+        scope.preselect(key)
+    scope.start()
+    conn.samples_received.emit(np.zeros((100, 2)))
+    scope._redraw()
+    qtbot.wait(10)
+    axis = scope.plot.axes[0]
+    assert scope.plot.shared_axes() == {1: 0}
+    assert axis.label.boundingRect().width() <= axis.size().height(), axis.labelText

@@ -688,3 +688,15 @@ def test_a_rate_near_the_one_asked_for_is_written_out_not_in_powers_of_ten(scope
     assert scope.status.text() == (
         "Recording at 5000 Hz of the 5000 Hz asked for: 1 samples lost on the link."
     )
+
+
+def test_the_settling_time_stands_on_the_line_of_its_name(qtbot, scope):
+    """ "Einschwingzeit ±2 %" and its "—" a line apart: the figure keeps three lines of room
+    for a "did not settle" and was centred in them."""
+    panel = scope.step_panel
+    panel.parentWidget().parentWidget().setCurrentWidget(panel)  # the tab of the panel
+    qtbot.waitUntil(panel.isVisible)
+    field, label = panel.figures["settling"], panel.labels[5]
+    assert field.height() > 2 * field.fontMetrics().lineSpacing()
+    assert field.alignment() & label.alignment() & Qt.AlignmentFlag.AlignTop
+    assert abs(field.geometry().top() - label.geometry().top()) <= 4

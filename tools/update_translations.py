@@ -51,7 +51,11 @@ def main() -> int:
         restyle(ts)
         if not args.no_release:
             qm = ROOT / "prm9tool" / "translations" / f"prm9tool_{language}.qm"
-            subprocess.run([_tool("pyside6-lrelease"), str(ts), "-qm", str(qm)], check=True)
+            # compiled beside it, then put in its place: a running prm9tool maps the .qm it
+            # loaded into memory and died (SIGSEGV, SIGBUS) when lrelease rewrote it in place
+            fresh = qm.with_suffix(".qm.new")
+            subprocess.run([_tool("pyside6-lrelease"), str(ts), "-qm", str(fresh)], check=True)
+            fresh.replace(qm)
     return 0
 
 

@@ -2227,6 +2227,22 @@ Uvolnit ho nyní (NMT start, řídicí slovo 08h → 09h → 0Bh → 0Fh)?</tran
             <source>No web browser could be started. The home page is {0}</source>
             <translation>Nepodařilo se spustit webový prohlížeč. Domovská stránka je {0}</translation>
         </message>
+        <message>
+            <source>unknown</source>
+            <translation>neznámé</translation>
+        </message>
+        <message>
+            <source>{0} (single executable)</source>
+            <translation>{0} (samostatný spustitelný soubor)</translation>
+        </message>
+        <message>
+            <source>commit</source>
+            <translation>Revize</translation>
+        </message>
+        <message>
+            <source>built</source>
+            <translation>Sestaveno</translation>
+        </message>
     </context>
     <context>
         <name>HelpWindow</name>
@@ -2389,6 +2405,150 @@ Ano načte a záznam zařadí do fronty; Ne nenačte nic.</translation>
         <message>
             <source>User, station, link</source>
             <translation>Uživatel, stanice, připojení</translation>
+        </message>
+        <message>
+            <source>ok</source>
+            <translation>ok</translation>
+        </message>
+        <message>
+            <source>passed</source>
+            <translation>vyhověl</translation>
+        </message>
+        <message>
+            <source>failed</source>
+            <translation>nevyhověl</translation>
+        </message>
+        <message>
+            <source>verification-failed</source>
+            <translation>ověření selhalo</translation>
+        </message>
+        <message>
+            <source>store-failed</source>
+            <translation>uložení selhalo</translation>
+        </message>
+        <message>
+            <source>communication-error</source>
+            <translation>chyba komunikace</translation>
+        </message>
+        <message>
+            <source>type-mismatch</source>
+            <translation>jiný typ ventilu</translation>
+        </message>
+        <message>
+            <source>error</source>
+            <translation>chyba</translation>
+        </message>
+        <message>
+            <source>dry-run</source>
+            <translation>zkušební běh</translation>
+        </message>
+        <message>
+            <source>downloaded</source>
+            <translation>načteno z ventilu</translation>
+        </message>
+        <message>
+            <source>proposed</source>
+            <translation>návrh</translation>
+        </message>
+        <message>
+            <source>targets-missed</source>
+            <translation>cíle nesplněny</translation>
+        </message>
+        <message>
+            <source>explained</source>
+            <translation>vysvětleno</translation>
+        </message>
+        <message>
+            <source>not-explained</source>
+            <translation>nevysvětleno</translation>
+        </message>
+        <message>
+            <source>no-drift</source>
+            <translation>bez driftu</translation>
+        </message>
+        <message>
+            <source>drifted</source>
+            <translation>zjištěn drift</translation>
+        </message>
+        <message>
+            <source>backup</source>
+            <translation>záloha</translation>
+        </message>
+        <message>
+            <source>write</source>
+            <translation>zápis</translation>
+        </message>
+        <message>
+            <source>verify</source>
+            <translation>ověření</translation>
+        </message>
+        <message>
+            <source>store</source>
+            <translation>uložení</translation>
+        </message>
+        <message>
+            <source>download</source>
+            <translation>stažení z ventilu</translation>
+        </message>
+        <message>
+            <source>upload</source>
+            <translation>načtení do ventilu</translation>
+        </message>
+        <message>
+            <source>batch-upload</source>
+            <translation>načtení do ventilu (--batch)</translation>
+        </message>
+        <message>
+            <source>online-edits</source>
+            <translation>změny online</translation>
+        </message>
+        <message>
+            <source>restore-factory</source>
+            <translation>tovární nastavení</translation>
+        </message>
+        <message>
+            <source>characterization</source>
+            <translation>výstupní zkouška</translation>
+        </message>
+        <message>
+            <source>compare-apply</source>
+            <translation>převzato z porovnání</translation>
+        </message>
+        <message>
+            <source>history-restore</source>
+            <translation>obnoveno z historie</translation>
+        </message>
+        <message>
+            <source>tuning-accepted</source>
+            <translation>ladění převzato</translation>
+        </message>
+        <message>
+            <source>restart-verify</source>
+            <translation>ověření restartem</translation>
+        </message>
+        <message>
+            <source>restart</source>
+            <translation>restart</translation>
+        </message>
+        <message>
+            <source>autotune</source>
+            <translation>autotune</translation>
+        </message>
+        <message>
+            <source>frequency-response</source>
+            <translation>frekvenční charakteristika</translation>
+        </message>
+        <message>
+            <source>report-saved</source>
+            <translation>protokol uložen</translation>
+        </message>
+        <message>
+            <source>twin</source>
+            <translation>dvojče</translation>
+        </message>
+        <message>
+            <source>signature</source>
+            <translation>porovnání s rodným listem</translation>
         </message>
         <message>
             <source>Marked {0}: records of another valve type than {1} under this serial number — another valve (emulated valves of two runs of the program may share a serial number); compare or restore them only knowingly.</source>
@@ -5739,6 +5899,18 @@ Nejprve přepněte na Expert (Náhled → Úroveň oprávnění), nebo zkoušku 
             <translation>Žádný stav: ventil je v režimu offline.</translation>
         </message>
         <message>
+            <source>off (no CANopen)</source>
+            <translation>vypnuto (bez CANopen)</translation>
+        </message>
+        <message>
+            <source>initialising</source>
+            <translation>inicializace</translation>
+        </message>
+        <message>
+            <source>unknown</source>
+            <translation>neznámý</translation>
+        </message>
+        <message>
             <source>white</source>
             <translation>bílá</translation>
         </message>
@@ -5954,7 +6126,7 @@ Ano je porovná jako obvykle (bez dotazu se nic nezapíše); Ne přejde do reži
         </message>
         <message>
             <source>The valve's parameters are in the document; File → Save backup copy… keeps a copy of them</source>
-            <translation>Parametry ventilu jsou v dokumentu; Soubor → Uložit záložní kopii… z nich uloží kopii</translation>
+            <translation>Parametry ventilu v dokumentu; zálohu uloží Soubor → Uložit záložní kopii…</translation>
         </message>
         <message>
             <source>The valve stored its parameters at {0}</source>

@@ -1789,7 +1789,7 @@ Die letzte Aktion wurde womöglich nicht vollständig ausgeführt. Speichern Sie
         </message>
         <message>
             <source>Twin from the history:</source>
-            <translation>Zwilling aus der Historie:</translation>
+            <translation>Zwilling aus dem Verlauf:</translation>
         </message>
         <message>
             <source>Twin file:</source>
@@ -2213,6 +2213,22 @@ Jetzt freigeben (NMT Start, Steuerwort 08h → 09h → 0Bh → 0Fh)?</translatio
             <source>No web browser could be started. The home page is {0}</source>
             <translation>Es konnte kein Webbrowser gestartet werden. Die Homepage ist {0}</translation>
         </message>
+        <message>
+            <source>unknown</source>
+            <translation>unbekannt</translation>
+        </message>
+        <message>
+            <source>{0} (single executable)</source>
+            <translation>{0} (eigenständige Programmdatei)</translation>
+        </message>
+        <message>
+            <source>commit</source>
+            <translation>Revision</translation>
+        </message>
+        <message>
+            <source>built</source>
+            <translation>Erstellt</translation>
+        </message>
     </context>
     <context>
         <name>HelpWindow</name>
@@ -2377,6 +2393,150 @@ Ja lädt hoch und stellt den Eintrag in die Warteschlange; Nein lädt nichts hoc
             <translation>Benutzer, Station, Verbindung</translation>
         </message>
         <message>
+            <source>ok</source>
+            <translation>ok</translation>
+        </message>
+        <message>
+            <source>passed</source>
+            <translation>bestanden</translation>
+        </message>
+        <message>
+            <source>failed</source>
+            <translation>nicht bestanden</translation>
+        </message>
+        <message>
+            <source>verification-failed</source>
+            <translation>Prüfung fehlgeschlagen</translation>
+        </message>
+        <message>
+            <source>store-failed</source>
+            <translation>Speichern fehlgeschlagen</translation>
+        </message>
+        <message>
+            <source>communication-error</source>
+            <translation>Kommunikationsfehler</translation>
+        </message>
+        <message>
+            <source>type-mismatch</source>
+            <translation>falscher Ventiltyp</translation>
+        </message>
+        <message>
+            <source>error</source>
+            <translation>Fehler</translation>
+        </message>
+        <message>
+            <source>dry-run</source>
+            <translation>Probelauf</translation>
+        </message>
+        <message>
+            <source>downloaded</source>
+            <translation>heruntergeladen</translation>
+        </message>
+        <message>
+            <source>proposed</source>
+            <translation>Vorschlag</translation>
+        </message>
+        <message>
+            <source>targets-missed</source>
+            <translation>Ziele verfehlt</translation>
+        </message>
+        <message>
+            <source>explained</source>
+            <translation>erklärt</translation>
+        </message>
+        <message>
+            <source>not-explained</source>
+            <translation>nicht erklärt</translation>
+        </message>
+        <message>
+            <source>no-drift</source>
+            <translation>keine Drift</translation>
+        </message>
+        <message>
+            <source>drifted</source>
+            <translation>Drift festgestellt</translation>
+        </message>
+        <message>
+            <source>backup</source>
+            <translation>Sicherung</translation>
+        </message>
+        <message>
+            <source>write</source>
+            <translation>Schreiben</translation>
+        </message>
+        <message>
+            <source>verify</source>
+            <translation>Prüfen</translation>
+        </message>
+        <message>
+            <source>store</source>
+            <translation>Speichern</translation>
+        </message>
+        <message>
+            <source>download</source>
+            <translation>Herunterladen</translation>
+        </message>
+        <message>
+            <source>upload</source>
+            <translation>Hochladen</translation>
+        </message>
+        <message>
+            <source>batch-upload</source>
+            <translation>Hochladen (--batch)</translation>
+        </message>
+        <message>
+            <source>online-edits</source>
+            <translation>Online-Änderungen</translation>
+        </message>
+        <message>
+            <source>restore-factory</source>
+            <translation>Werkseinstellungen</translation>
+        </message>
+        <message>
+            <source>characterization</source>
+            <translation>Endprüfung</translation>
+        </message>
+        <message>
+            <source>compare-apply</source>
+            <translation>Vergleich übernommen</translation>
+        </message>
+        <message>
+            <source>history-restore</source>
+            <translation>aus Verlauf wiederhergestellt</translation>
+        </message>
+        <message>
+            <source>tuning-accepted</source>
+            <translation>Einstellung übernommen</translation>
+        </message>
+        <message>
+            <source>restart-verify</source>
+            <translation>Prüfung durch Neustart</translation>
+        </message>
+        <message>
+            <source>restart</source>
+            <translation>Neustart</translation>
+        </message>
+        <message>
+            <source>autotune</source>
+            <translation>Autotune</translation>
+        </message>
+        <message>
+            <source>frequency-response</source>
+            <translation>Frequenzgang</translation>
+        </message>
+        <message>
+            <source>report-saved</source>
+            <translation>Prüfbericht gespeichert</translation>
+        </message>
+        <message>
+            <source>twin</source>
+            <translation>Zwilling</translation>
+        </message>
+        <message>
+            <source>signature</source>
+            <translation>Vergleich mit Geburtsurkunde</translation>
+        </message>
+        <message>
             <source>Marked {0}: records of another valve type than {1} under this serial number — another valve (emulated valves of two runs of the program may share a serial number); compare or restore them only knowingly.</source>
             <translation>Mit {0} markiert: Einträge eines anderen Ventiltyps als {1} unter dieser Seriennummer — ein anderes Ventil (emulierte Ventile zweier Programmläufe können eine Seriennummer teilen); nur bewusst vergleichen oder wiederherstellen.</translation>
         </message>
@@ -2449,7 +2609,7 @@ Ja lädt hoch und stellt den Eintrag in die Warteschlange; Nein lädt nichts hoc
         </message>
         <message>
             <source>Test report</source>
-            <translation>Prüfprotokoll</translation>
+            <translation>Prüfbericht</translation>
         </message>
         <message>
             <source>Values from a compared file, written online</source>
@@ -2481,7 +2641,7 @@ Ja lädt hoch und stellt den Eintrag in die Warteschlange; Nein lädt nichts hoc
         </message>
         <message>
             <source>Test report saved</source>
-            <translation>Prüfprotokoll gespeichert</translation>
+            <translation>Prüfbericht gespeichert</translation>
         </message>
         <message>
             <source>Twin fitted (--fit-twin)</source>
@@ -4210,7 +4370,7 @@ Auf dem PC ging nichts verloren: Das Dokument enthält weiterhin jeden Wert, Sic
         </message>
         <message>
             <source>The recording stopped: another operation (a tuning test…) took the stream.</source>
-            <translation>Die Aufzeichnung wurde beendet: Ein anderer Vorgang (ein Tuning-Test…) hat den Datenstrom übernommen.</translation>
+            <translation>Die Aufzeichnung wurde beendet: Ein anderer Vorgang (ein Einstell- oder Prüftest…) hat den Datenstrom übernommen.</translation>
         </message>
         <message>
             <source>The recording stopped: {0}</source>
@@ -4222,7 +4382,7 @@ Auf dem PC ging nichts verloren: Das Dokument enthält weiterhin jeden Wert, Sic
         </message>
         <message>
             <source>The setpoint generator has stopped: another operation (a tuning test, an upload…) drives the valve now.</source>
-            <translation>Der Sollwertgenerator wurde gestoppt: Ein anderer Vorgang (ein Tuning-Test, ein Hochladen…) steuert jetzt das Ventil.</translation>
+            <translation>Der Sollwertgenerator wurde gestoppt: Ein anderer Vorgang (ein Einstell- oder Prüftest, das Hochladen in das Ventil…) steuert jetzt das Ventil.</translation>
         </message>
         <message>
             <source>The valve refused a value of the setpoint generator ({0}): the generator has stopped.</source>
@@ -4636,7 +4796,7 @@ Auf dem PC ging nichts verloren: Das Dokument enthält weiterhin jeden Wert, Sic
         </message>
         <message>
             <source>Settling time ±2 %</source>
-            <translation>Einschwingzeit ±2 %</translation>
+            <translation>Ausregelzeit ±2 %</translation>
         </message>
         <message>
             <source>Steady-state error</source>
@@ -5122,7 +5282,7 @@ Wechseln Sie zuerst zu Experte (Ansicht → Berechtigungsstufe) oder starten Sie
         </message>
         <message>
             <source>The emulator's plant: this serial has no twin in the history.</source>
-            <translation>Strecke des Emulators: Diese Seriennummer hat keinen Zwilling in der Historie.</translation>
+            <translation>Strecke des Emulators: Diese Seriennummer hat keinen Zwilling im Verlauf.</translation>
         </message>
         <message>
             <source>Online: the tests move the connected valve.</source>
@@ -5209,7 +5369,7 @@ Wechseln Sie zuerst zu Experte (Ansicht → Berechtigungsstufe) oder starten Sie
         </message>
         <message>
             <source>Twin written to %1 and recorded in the history. Residual %2 % → %3 % rms (%4).</source>
-            <translation>Zwilling in %1 geschrieben und in der Historie festgehalten. Residuum %2 % → %3 % rms (%4).</translation>
+            <translation>Zwilling in %1 geschrieben und im Verlauf festgehalten. Residuum %2 % → %3 % rms (%4).</translation>
         </message>
         <message>
             <source>Fitted: %1.</source>
@@ -5257,7 +5417,7 @@ Wechseln Sie zuerst zu Experte (Ansicht → Berechtigungsstufe) oder starten Sie
         </message>
         <message>
             <source>A twin is the emulator's plant with the constants of this valve, fitted to its characterization (steps, sweep and static characteristic) and kept in a twin file with its serial and parameter set (docs/twin.md). Fit twin of the valve runs the end-of-line test of the profile chosen on the Test report page on the connected valve; Fit from a report… takes a characterization's JSON report (prm9tool --characterize --json) and its CSV files. Both record the twin in the history for the serial; offline tuning then runs on it.</source>
-            <translation>Ein Zwilling ist die Strecke des Emulators mit den Konstanten dieses Ventils, angepasst an seine Charakterisierung (Sprünge, Sweep und statische Kennlinie) und in einer Zwillingsdatei mit seiner Seriennummer und seinem Parametersatz abgelegt (docs/twin.md). „Zwilling des Ventils anpassen“ führt die Endprüfung des auf der Seite Prüfbericht gewählten Profils am verbundenen Ventil aus; „Aus einem Bericht anpassen…“ nimmt den JSON-Bericht einer Charakterisierung (prm9tool --characterize --json) mit seinen CSV-Dateien. Beide halten den Zwilling in der Historie der Seriennummer fest; die Offline-Abstimmung läuft dann auf ihm.</translation>
+            <translation>Ein Zwilling ist die Strecke des Emulators mit den Konstanten dieses Ventils, angepasst an seine Charakterisierung (Sprünge, Sweep und statische Kennlinie) und in einer Zwillingsdatei mit seiner Seriennummer und seinem Parametersatz abgelegt (docs/twin.md). „Zwilling des Ventils anpassen“ führt die Endprüfung des auf der Seite Prüfbericht gewählten Profils am verbundenen Ventil aus; „Aus einem Bericht anpassen…“ nimmt den JSON-Bericht einer Charakterisierung (prm9tool --characterize --json) mit seinen CSV-Dateien. Beide halten den Zwilling im Verlauf der Seriennummer fest; die Offline-Abstimmung läuft dann auf ihm.</translation>
         </message>
         <message>
             <source>Twin file:</source>
@@ -5717,6 +5877,18 @@ Wechseln Sie zuerst zu Experte (Ansicht → Berechtigungsstufe) oder starten Sie
             <translation>Kein Status: Das Ventil ist offline.</translation>
         </message>
         <message>
+            <source>off (no CANopen)</source>
+            <translation>aus (kein CANopen)</translation>
+        </message>
+        <message>
+            <source>initialising</source>
+            <translation>Initialisierung</translation>
+        </message>
+        <message>
+            <source>unknown</source>
+            <translation>unbekannt</translation>
+        </message>
+        <message>
             <source>white</source>
             <translation>weiß</translation>
         </message>
@@ -5929,7 +6101,7 @@ Ja vergleicht beide wie gewohnt (ohne Rückfrage wird nichts geschrieben); Nein 
         </message>
         <message>
             <source>The valve's parameters are in the document; File → Save backup copy… keeps a copy of them</source>
-            <translation>Die Parameter des Ventils sind im Dokument; Datei → Sicherungskopie speichern… bewahrt eine Kopie davon auf</translation>
+            <translation>Ventilparameter im Dokument; sichern mit Datei → Sicherungskopie speichern…</translation>
         </message>
         <message>
             <source>The valve stored its parameters at {0}</source>

@@ -130,12 +130,20 @@ def _version(package: str) -> str:
 
 
 def versions() -> list[tuple[str, str]]:
-    """(component, version) of the program and what it runs on."""
+    """(component, version) of the program and what it runs on; the build's rows in the program
+    language (German About read "built  unknown")."""
     info = build_info()
+
+    def known(value: str) -> str:
+        return QCoreApplication.translate("Help", "unknown") if value == "unknown" else value
+
+    built = known(info.built)
+    if info.frozen:
+        built = QCoreApplication.translate("Help", "{0} (single executable)").format(built)
     return [
         ("prm9tool", __version__),
-        ("commit", info.commit),
-        ("built", info.built + (" (single executable)" if info.frozen else "")),
+        (QCoreApplication.translate("Help", "commit"), known(info.commit)),
+        (QCoreApplication.translate("Help", "built"), built),
         ("Python", platform.python_version()),
         ("Qt", qVersion()),
         ("PySide6", pyside_version),

@@ -25,7 +25,7 @@ from prm9tool.model.document import ParameterDocument, Raw
 from prm9tool.model.undo import DocumentUndo
 from prm9tool.online.connection import ValveConnection
 from prm9tool.online.sync import ValveSync
-from prm9tool.translate import error_text
+from prm9tool.translate import error_text, translated
 from prm9tool.views import prompts
 from prm9tool.views.files import dialogs as file_dialogs
 from prm9tool.views.files.reader import read_in_background
@@ -110,9 +110,11 @@ class CompareWorkflow(QObject):
         if contents is None:
             return  # the user cancelled the reading
         if isinstance(contents, FileFormatError):
+            lead = self.tr("{0} cannot be compared.").format(path.name)
+            if contents.problems:  # the first one in the box, as File → Open says it
+                lead = f"{lead}\n{translated(contents.problems[0].located(path.name))}"
             prompts.inform(self._window, prompts.Icon.Warning, self.tr("Compare with file"),
-                           self.tr("{0} cannot be compared.").format(path.name),
-                           error_text(contents))  # fmt: skip
+                           lead, error_text(contents))  # fmt: skip
             return
         file_side = Side(path.name, contents.type_key, contents.values, NOT_ON_SOURCE_VALVE())
         comparison = Comparison((self._document(), file_side), self._factory(self._doc.type_key))

@@ -20,7 +20,9 @@ from prm9tool.views.history.details import MAX_FIGURES, failing_figures, pdf_of,
 
 Index = QModelIndex | QPersistentModelIndex
 Record = dict[str, Any]
+OPERATION = 2  # the column of the operation
 MEANING = 3  # the column saying what was done
+OUTCOME = 4  # the column of the outcome (and the step that failed)
 TYPE_KEY = 5  # the column of the type key (marked on a record of another valve type)
 OTHER_TYPE_MARK = "⚠ "
 MAX_CHANGES = 4  # changed values listed in that column (all of them in the record)
@@ -83,15 +85,83 @@ class HistoryTableModel(QAbstractTableModel):
             return QColor(170, 0, 0)
         if role != Qt.ItemDataRole.DisplayRole:
             return None
-        failed = f" ({r['failed_step']})" if r["failed_step"] else ""
         cells = [
-            str(r["seq"]), r["recorded_at"][:19].replace("T", " "), r["operation"],
-            self.meaning(r), r["outcome"] + failed, r["type_key"], r["firmware"],
+            str(r["seq"]), r["recorded_at"][:19].replace("T", " "), self.operation(r),
+            self.meaning(r), self.outcome(r), r["type_key"], r["firmware"],
             f"{r['os_user']}@{r['host']}, {r['device_id']}",
         ]  # fmt: skip
         if other:
             cells[TYPE_KEY] = OTHER_TYPE_MARK + cells[TYPE_KEY]
         return cells[index.column()]
+
+    def operation(self, record: Record) -> str:
+        """The operation in a word of the program language (German read "download",
+        "characterization"); English shows the recorded word, as ``--history`` does."""
+        operation = str(record["operation"])
+        return self._operation_names().get(operation, operation)
+
+    def _operation_names(self) -> dict[str, str]:
+        """The operations docs/history.md names (their English is the recorded word)."""
+        return {
+            "download": self.tr("download"),
+            "upload": self.tr("upload"),
+            "batch-upload": self.tr("batch-upload"),
+            "store": self.tr("store"),
+            "online-edits": self.tr("online-edits"),
+            "backup": self.tr("backup"),
+            "restore-factory": self.tr("restore-factory"),
+            "characterization": self.tr("characterization"),
+            "compare-apply": self.tr("compare-apply"),
+            "history-restore": self.tr("history-restore"),
+            "tuning-accepted": self.tr("tuning-accepted"),
+            "restart-verify": self.tr("restart-verify"),
+            "restart": self.tr("restart"),
+            "autotune": self.tr("autotune"),
+            "frequency-response": self.tr("frequency-response"),
+            "report-saved": self.tr("report-saved"),
+            "twin": self.tr("twin"),
+            "signature": self.tr("signature"),
+        }
+
+    def outcome(self, record: Record) -> str:
+        """The outcome and the step that failed, in the program language (German read
+        "passed", "no-drift"); a word this program does not know stays as recorded. English
+        shows the recorded words, as ``--history`` does."""
+        outcome = str(record["outcome"])
+        text = self._outcomes().get(outcome, outcome)
+        step = record["failed_step"]
+        if not step:
+            return text
+        return f"{text} ({self._steps().get(str(step), str(step))})"
+
+    def _outcomes(self) -> dict[str, str]:
+        """The outcomes docs/history.md names (their English is the recorded word)."""
+        return {
+            "ok": self.tr("ok"),
+            "passed": self.tr("passed"),
+            "failed": self.tr("failed"),
+            "verification-failed": self.tr("verification-failed"),
+            "store-failed": self.tr("store-failed"),
+            "communication-error": self.tr("communication-error"),
+            "type-mismatch": self.tr("type-mismatch"),
+            "error": self.tr("error"),
+            "dry-run": self.tr("dry-run"),
+            "downloaded": self.tr("downloaded"),
+            "proposed": self.tr("proposed"),
+            "targets-missed": self.tr("targets-missed"),
+            "explained": self.tr("explained"),
+            "not-explained": self.tr("not-explained"),
+            "no-drift": self.tr("no-drift"),
+            "drifted": self.tr("drifted"),
+        }
+
+    def _steps(self) -> dict[str, str]:
+        return {
+            "backup": self.tr("backup"),
+            "write": self.tr("write"),
+            "verify": self.tr("verify"),
+            "store": self.tr("store"),
+        }
 
     def other_type_text(self) -> str:
         """Why a row is marked (also the window's warning line)."""

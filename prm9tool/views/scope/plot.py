@@ -195,10 +195,13 @@ class ScopePlot(QWidget):
         fit along the axis (without object numbers if need be), else the legend's colour
         squares ("■ ■ [%]"): the legend above the plot names the channels, the axis's tooltip
         too. A cut "Demand value…, Spool position actual (…" named nothing readable."""
-        room = self._label_room
-        metrics = QFontMetrics(self.axes[0].label.font())
+        label = self.axes[0].label
+        # pyqtgraph draws the text with a space after it (its empty units) inside the margins
+        # of the label's text document: "… (0x630" was cut at the top by those few pixels
+        room = self._label_room - 2 * label.document().documentMargin()
+        metrics = QFontMetrics(label.font())
         for candidate in (names, [OBJECT_NUMBER.sub("", name) for name in names]):
-            if metrics.horizontalAdvance(f"{', '.join(candidate)} [{unit}]") <= room:
+            if metrics.horizontalAdvance(f"{', '.join(candidate)} [{unit}] ") <= room:
                 break
         else:
             candidate = ["■"] * len(members)

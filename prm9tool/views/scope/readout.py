@@ -132,12 +132,14 @@ class StepPanel(QWidget):
         settling = self.figures["settling"]  # "did not settle …: oscillation of …"
         settling.setWordWrap(True)
         settling.setMinimumHeight(settling.fontMetrics().lineSpacing() * 3)  # room kept for it
+        settling.setAlignment(Qt.AlignmentFlag.AlignLeft | Qt.AlignmentFlag.AlignTop)  # by its name
         channels, self.form = QFormLayout(), QFormLayout()  # short labels: wide combos
         channels.setFieldGrowthPolicy(QFormLayout.FieldGrowthPolicy.AllNonFixedFieldsGrow)
         fields = [self.reference, self.response, *self.figures.values()]
         self.labels = [QLabel() for _ in fields]
         for n, (label, field) in enumerate(zip(self.labels, fields, strict=True)):
             (channels if n < 2 else self.form).addRow(label, field)
+        self.labels[fields.index(settling)].setAlignment(settling.alignment())  # one line
         layout = QVBoxLayout(self)
         layout.addLayout(channels)
         layout.addLayout(self.form)

@@ -250,13 +250,23 @@ class ValveStatusWindow(QDialog):
                 state.setText("—")
             return
         self.fields["state"].setText(str(status.device_state))
-        self.fields["nmt"].setText(status.nmt_state)
+        self.fields["nmt"].setText(self._nmt_text(str(status.nmt_state)))
         self.fields["temperature"].setText(f"{format_measured(status.temperature_c, '°C')} °C")
         self.fields["supply"].setText(f"{format_measured(status.supply_v, 'V')} V")
         self._show_errors(status)
         for led, state, led_state in zip(self.leds, self._led_states, status.leds, strict=False):
             led.set_state(led_state.color, led_state.pattern, led_state.lit)
             state.setText(self._led_text(led_state.color, led_state.pattern))
+
+    def _nmt_text(self, state: str) -> str:
+        """The NMT state as CANopen names it (CiA 301: "pre-operational", "operational",
+        "stopped"); the program's own words in the program language (German read "off")."""
+        words = {
+            "off": self.tr("off (no CANopen)"),
+            "initialising": self.tr("initialising"),
+            "unknown": self.tr("unknown"),
+        }
+        return words.get(state, state)
 
     def _led_text(self, colour: str, pattern: str) -> str:
         """An LED's state in words, colour above pattern, e.g. "green\nblinking 2.5 Hz"."""

@@ -11,7 +11,7 @@ from __future__ import annotations
 from PySide6.QtWidgets import QLabel, QWidget
 
 from prm9tool.catalogue import CATALOGUE, dither
-from prm9tool.i18n import format_significant
+from prm9tool.i18n import format_significant, unbroken_units
 from prm9tool.views.diagram.curves import dither_wave
 from prm9tool.views.diagram.dialogs.base import BlockContext, BlockDialog
 from prm9tool.views.diagram.dialogs.plot import BLUE, GREEN, RED, Axes, Curve, PlotWidget
@@ -46,14 +46,16 @@ class CurrentDitherDialog(BlockDialog):
     def refresh_extra(self) -> None:
         curnorm = self.curnorm()
         amplitude = dither.amplitude_ma(float(self.doc.value("DTAMP")), curnorm)
-        self.curnorm_label.setText(
-            self.tr("Nominal coil current CURNORM: %1 mA — no limit may exceed it.").replace(
-                "%1", str(curnorm)
+        self.curnorm_label.setText(  # wrapped, but never between "2600" and "mA"
+            unbroken_units(
+                self.tr("Nominal coil current CURNORM: %1 mA — no limit may exceed it.").replace(
+                    "%1", str(curnorm)
+                )
+                + "\n"
+                + self.tr("Dither: ±%1 mA peak (DTAMP 100 % = %2 % of CURNORM).")
+                .replace("%1", f"{amplitude:.0f}")
+                .replace("%2", format_significant(dither.FULL_SCALE * 100, 6))
             )
-            + "\n"
-            + self.tr("Dither: ±%1 mA peak (DTAMP 100 % = %2 % of CURNORM).")
-            .replace("%1", f"{amplitude:.0f}")
-            .replace("%2", format_significant(dither.FULL_SCALE * 100, 6))
         )
         freq = dither.frequency_hz(float(self.doc.value("DYNFREQ")))
         curves, lines = [], []

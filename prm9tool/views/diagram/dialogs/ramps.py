@@ -6,7 +6,7 @@ all four ramps are set together with one value (one undo step, :mod:`prm9tool.mo
 
 from __future__ import annotations
 
-from PySide6.QtWidgets import QLabel, QWidget
+from PySide6.QtWidgets import QHBoxLayout, QLabel, QWidget
 
 from prm9tool.catalogue import CATALOGUE, Access
 from prm9tool.views.diagram.curves import ramp_preview
@@ -31,7 +31,14 @@ class RampsDialog(BlockDialog):
         # prm9tool.model.editing links to every ramp of the valve.
         self.all_field = ValueField("RAMPSETPOSUP", self.apply_value, self.show_error)
         self.all_caption = QLabel()
-        self.form.addRow(self.all_caption, self.all_field)
+        row = QWidget()  # with its unit, as every other field of the dialogs
+        layout = QHBoxLayout(row)
+        layout.setContentsMargins(0, 0, 0, 0)
+        layout.addWidget(self.all_field)
+        self.all_unit = QLabel(CATALOGUE["RAMPSETPOSUP"].unit)
+        layout.addWidget(self.all_unit)
+        layout.addStretch(1)
+        self.form.addRow(self.all_caption, row)
         self.note = QLabel()
         self.note.setWordWrap(True)
         self.form.addRow(self.note)
