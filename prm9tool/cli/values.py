@@ -111,6 +111,10 @@ def _checked(valve: Valve, wanted: list[tuple[str, str]]) -> dict[str, Value]:
         raise BatchError(ExitCode.USAGE, f"--set {exc}") from exc
     except ValueRangeError as exc:
         raise BatchError(ExitCode.USAGE, f"--set: {exc}; nothing was written") from exc
+    except SdoAbortError as exc:  # the caps (CURNORM) the check reads from the valve
+        raise BatchError(ExitCode.VERIFY_FAILED, f"--set: {exc}; nothing was written") from exc
+    except CommunicationError as exc:
+        raise BatchError(ExitCode.COMMUNICATION, f"--set: {exc}; nothing was written") from exc
 
 
 def line(param: Parameter, value: Any) -> str:
@@ -146,9 +150,13 @@ def export_dcf(args: argparse.Namespace) -> int:
         except OSError as exc:
             print(f"prm9tool: --export-dcf: cannot write {args.export_dcf}: {exc}", file=sys.stderr)
             return ExitCode.USAGE
-        except CommunicationError as exc:
-            print(f"prm9tool: {exc}", file=sys.stderr)
-            return ExitCode.COMMUNICATION
+        except Prm9Error as exc:  # 6 the link, 1 the valve refused a read
+            print(f"prm9tool: --export-dcf: {exc}; no DCF was written", file=sys.stderr)
+            return (
+                ExitCode.COMMUNICATION
+                if isinstance(exc, CommunicationError)
+                else ExitCode.VERIFY_FAILED
+            )
     print(f"DCF saved as {args.export_dcf} (node {node})")
     return ExitCode.OK
 
