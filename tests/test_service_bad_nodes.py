@@ -166,6 +166,46 @@ def test_a_restart_without_a_boot_up_is_exit_6_naming_the_node(data_dir, capsys,
     assert "--restart: node 11: no boot-up within 1 s after the reset" in err, err
 
 
+# --- --disable, --enable ------------------------------------------------------------------------
+ACTIVE = {**prm9_objects(parameters=True), (0x6041, 0): b"\x0f\x00"}  # DEVICE_MODE_ACTIVE
+
+
+def test_disable_of_a_valve_that_stays_active_is_exit_1_saying_it_follows_its_setpoint(
+    data_dir, capsys
+):
+    started = time.monotonic()
+    with nodes({"objects": ACTIVE}) as (channel, (node,)):
+        code = cli(channel, "--disable", "--hydraulics-safe")
+    err = said(capsys)
+    assert code == ExitCode.VERIFY_FAILED, err
+    assert (
+        "prm9tool: --disable: the valve stays in DEVICE_MODE_ACTIVE after the control word "
+        "0Fh → 0Bh → 09h → 08h and still follows its setpoint" in err
+    ), err
+    assert node.writes.count((0x6040, 0)) == 4
+    assert time.monotonic() - started < 5
+
+
+def test_api_disable_of_a_valve_that_stays_active_raises_not_disabled(data_dir):
+    from prm9tool.device.enabling import NotDisabledError
+
+    with (
+        nodes({"objects": ACTIVE}) as (channel, _),
+        prm9tool.connect("can:11", can_interface="virtual", can_channel=channel) as valve,
+        pytest.raises(NotDisabledError, match="still follows its setpoint"),
+    ):
+        valve.disable()
+    assert issubclass(NotDisabledError, prm9tool.AccessDeniedError)
+
+
+def test_enable_of_a_node_that_ignores_the_control_word_is_exit_1_in_words(data_dir, capsys):
+    with nodes({"fault": Fault.NONE}) as (channel, _):
+        code = cli(channel, "--enable", "--hydraulics-safe")
+    err = said(capsys)
+    assert code == ExitCode.VERIFY_FAILED
+    assert "--enable: the valve is in NOT_READY after the control word 08h → 09h → 0Bh → 0Fh" in err
+
+
 # --- nodes that are no valve, none, or two -------------------------------------------------------
 @pytest.mark.parametrize(
     "command",
