@@ -82,6 +82,16 @@ def test_set_on_a_node_that_breaks_after_identifying_is_exit_6_in_words(
     assert time.monotonic() - started < 5
 
 
+def test_set_on_a_node_that_resets_at_the_write_says_nothing_was_stored(data_dir, capsys):
+    with nodes({"fault": Fault.RESETS}) as (channel, (node,)):
+        code = cli(channel, "--set", "LIMTA=1500", "--store")
+    err = said(capsys)
+    assert code == ExitCode.COMMUNICATION
+    assert "prm9tool: --set LIMTA: node 11: no SDO answer for 0x2004/2" in err, err
+    assert "nothing was stored; until the valve restarts" in err, err
+    assert node.stored is None
+
+
 def test_get_from_a_node_silent_after_identifying_is_exit_6_in_words(data_dir, capsys):
     with nodes({"fault": Fault.ANSWERS_1000_ONLY, "sound": IDENTITY}) as (channel, _):
         code = cli(channel, "--get", "LIMTA")
@@ -105,7 +115,11 @@ def test_a_refused_store_or_a_clamped_value_is_exit_1_and_nothing_stored(
         code = cli(channel, "--set", "LIMTA=1500", "--store")
     err = said(capsys)
     assert code == ExitCode.VERIFY_FAILED
-    assert says in err and "nothing was stored" in err, err
+    assert says in err, err
+    assert (
+        "; nothing was stored; until the valve restarts, it works with what it now holds for "
+        "LIMTA" in err
+    ), err
     assert node.stored is None
 
 
