@@ -254,7 +254,7 @@ def test_no_node_a_foreign_node_or_two_nodes_are_exit_4_and_nothing_written(
         code = cli(channel, *command)
     err = said(capsys)
     assert code == ExitCode.NO_DEVICE, err
-    assert says in err, err
+    assert says in err and err.count("write") <= 1, err  # said once
     assert all(node.writes == [] for node in started)
     assert not (tmp_path / "x.dcf").exists()
 
