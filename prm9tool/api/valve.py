@@ -268,7 +268,9 @@ class Valve:
         return self._service.commissioning.commission()
 
     def disable(self) -> None:
-        """Control word 0Fh → 0Bh → 09h → 08h: back to INIT step by step."""
+        """Control word 0Fh → 0Bh → 09h → 08h: back to INIT step by step. Raises
+        :class:`~prm9tool.device.enabling.NotDisabledError` (an AccessDeniedError) when the
+        valve stays in DEVICE_MODE_ACTIVE, still following its setpoint."""
         self._service.commissioning.disable()
 
     def capture(

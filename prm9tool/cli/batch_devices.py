@@ -163,9 +163,9 @@ def _select_can(args: argparse.Namespace, chosen: list[DeviceEntry]) -> list[Dev
             )
         others = [e for e in matches if e.kind == NOT_PRM9]
         if others:
-            raise BatchError(
-                ExitCode.NO_DEVICE, f"{others[0].description}; prm9tool does not write to it"
-            )
+            said = others[0].description  # two nodes at one ID: "… writes to neither" already
+            tail = "" if "writes to neither" in said else "; prm9tool does not write to it"
+            raise BatchError(ExitCode.NO_DEVICE, f"{said}{tail}")
         chosen += matches
     if args.all:
         chosen += prm9

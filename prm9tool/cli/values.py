@@ -68,10 +68,11 @@ def _run(args: argparse.Namespace, valve: Valve, wanted: list[tuple[str, str]]) 
     names = [m for m, _ in wanted] + [m for m in args.get or [] if m not in raw]
     for mnemonic in args.get or []:
         _parameter(valve, mnemonic)
-    doing = ""
+    doing, sent = "", []
     try:
         for mnemonic, value in raw.items():
             doing = f"--set {mnemonic}: "
+            sent.append(mnemonic)  # a value read back differently was written too
             valve[mnemonic] = display(valve.parameter(mnemonic), value)
         doing = "--store: "
         if args.store and raw:
@@ -79,9 +80,9 @@ def _run(args: argparse.Namespace, valve: Valve, wanted: list[tuple[str, str]]) 
         doing = ""
         values = valve.read(*names) if names else {}
     except (ReadBackError, SdoAbortError) as exc:
-        raise BatchError(ExitCode.VERIFY_FAILED, f"{doing}{exc}; nothing was stored") from exc
+        raise BatchError(ExitCode.VERIFY_FAILED, _failed(doing, exc, sent)) from exc
     except CommunicationError as exc:
-        raise BatchError(ExitCode.COMMUNICATION, str(exc)) from exc
+        raise BatchError(ExitCode.COMMUNICATION, _failed(doing, exc, sent)) from exc
     except Prm9Error as exc:  # a parameter the valve lacks on this link
         raise BatchError(ExitCode.VERIFY_FAILED, str(exc)) from exc
     params = {m: valve.parameter(m) for m in values}
@@ -91,6 +92,22 @@ def _run(args: argparse.Namespace, valve: Valve, wanted: list[tuple[str, str]]) 
     for mnemonic, shown in values.items():
         print(line(params[mnemonic], shown))
     return ExitCode.OK
+
+
+def _failed(doing: str, exc: Prm9Error, sent: list[str]) -> str:
+    """The words of a ``--set``/``--store``/``--get`` that failed while ``doing``, with what
+    it leaves in the valve (``sent``: the values written, or begun)."""
+    if not doing:  # the values' final read: whatever was set (and stored) stays
+        return str(exc)
+    if doing == "--store: " and isinstance(exc, CommunicationError):
+        return (
+            f"{doing}{exc}; whether the valve stored the values is not known: read them back "
+            "(--get) once it answers again"
+        )
+    return (
+        f"{doing}{exc}; nothing was stored; until the valve restarts, it works with what it "
+        f"now holds for {', '.join(sent)}"
+    )
 
 
 def _parameter(valve: Valve, mnemonic: str) -> Parameter:
@@ -111,6 +128,10 @@ def _checked(valve: Valve, wanted: list[tuple[str, str]]) -> dict[str, Value]:
         raise BatchError(ExitCode.USAGE, f"--set {exc}") from exc
     except ValueRangeError as exc:
         raise BatchError(ExitCode.USAGE, f"--set: {exc}; nothing was written") from exc
+    except SdoAbortError as exc:  # the caps (CURNORM) the check reads from the valve
+        raise BatchError(ExitCode.VERIFY_FAILED, f"--set: {exc}; nothing was written") from exc
+    except CommunicationError as exc:
+        raise BatchError(ExitCode.COMMUNICATION, f"--set: {exc}; nothing was written") from exc
 
 
 def line(param: Parameter, value: Any) -> str:
@@ -146,9 +167,13 @@ def export_dcf(args: argparse.Namespace) -> int:
         except OSError as exc:
             print(f"prm9tool: --export-dcf: cannot write {args.export_dcf}: {exc}", file=sys.stderr)
             return ExitCode.USAGE
-        except CommunicationError as exc:
-            print(f"prm9tool: {exc}", file=sys.stderr)
-            return ExitCode.COMMUNICATION
+        except Prm9Error as exc:  # 6 the link, 1 the valve refused a read
+            print(f"prm9tool: --export-dcf: {exc}; no DCF was written", file=sys.stderr)
+            return (
+                ExitCode.COMMUNICATION
+                if isinstance(exc, CommunicationError)
+                else ExitCode.VERIFY_FAILED
+            )
     print(f"DCF saved as {args.export_dcf} (node {node})")
     return ExitCode.OK
 

@@ -136,8 +136,7 @@ def _run(flag: str, valve: Valve) -> tuple[dict[str, Any], list[str]]:
     if flag == "--enable":
         status = commission(service, say=False)  # NMT start when it waits, then 08h … 0Fh
         return {"operation": "enable", "status": status.to_dict()}, [_state(status)]
-    service.commissioning.disable()
-    status = service.status()
+    status = service.commissioning.disable()  # NotDisabledError: still active (exit 1)
     return {"operation": "disable", "status": status.to_dict()}, [_state(status)]
 
 

@@ -12,7 +12,7 @@ from __future__ import annotations
 import time
 from collections.abc import Callable
 
-from prm9tool.catalogue.commissioning import CONTROL_WORD, ENABLE_SEQUENCE
+from prm9tool.catalogue.commissioning import CONTROL_WORD, DISABLE_SEQUENCE, ENABLE_SEQUENCE
 from prm9tool.catalogue.error_kinds import ERROR_KINDS
 from prm9tool.device.records import DeviceState, NmtState, ValveStatus
 from prm9tool.device.session import ValveSession
@@ -47,10 +47,39 @@ _OTHER = QT_TRANSLATE_NOOP(
     "the valve is in {0} after the control word 08h → 09h → 0Bh → 0Fh, not DEVICE_MODE_ACTIVE",
 )
 
+_STILL_ACTIVE = QT_TRANSLATE_NOOP(
+    "Errors",
+    "the valve stays in DEVICE_MODE_ACTIVE after the control word 0Fh → 0Bh → 09h → 08h and "
+    "still follows its setpoint — make the hydraulics safe, then look for another CANopen "
+    "master enabling it or restart the valve",
+)
+
 
 class NotEnabledError(AccessDeniedError):
     """The enable sequence did not bring the valve to DEVICE_MODE_ACTIVE (the message says
     why and what to do)."""
+
+
+class NotDisabledError(AccessDeniedError):
+    """The disable sequence left the valve in DEVICE_MODE_ACTIVE: it still follows its
+    setpoint (the message says so and what to do)."""
+
+
+def disable(session: ValveSession, sleep: Callable[[float], None] = time.sleep) -> ValveStatus:
+    """Write 0Fh → 0Bh → 09h → 08h and return the status once the valve has left
+    DEVICE_MODE_ACTIVE; raise :class:`NotDisabledError` when it is still there after
+    CONFIRM_S (it would go on following its setpoint)."""
+    for word in DISABLE_SEQUENCE:
+        session.write(CONTROL_WORD, word)
+    waited = 0.0
+    while True:
+        status = session.status()
+        if status.device_state is not DeviceState.DEVICE_MODE_ACTIVE:
+            return status
+        if waited >= CONFIRM_S:
+            raise NotDisabledError(_STILL_ACTIVE())
+        sleep(POLL_S)
+        waited += POLL_S
 
 
 def enable(session: ValveSession, sleep: Callable[[float], None] = time.sleep) -> ValveStatus:

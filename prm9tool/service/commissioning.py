@@ -11,7 +11,7 @@ import time
 from collections.abc import Callable
 from typing import TYPE_CHECKING
 
-from prm9tool.catalogue.commissioning import CONTROL_WORD, DISABLE_SEQUENCE, NmtCommand
+from prm9tool.catalogue.commissioning import NmtCommand
 from prm9tool.errors import DeviceTimeoutError
 
 if TYPE_CHECKING:
@@ -93,11 +93,13 @@ class Commissioning:
 
         return enable(self._session())
 
-    def disable(self) -> None:
-        """Control word 0Fh → 0Bh → 09h → 08h: back to INIT step by step."""
-        session = self._session()
-        for word in DISABLE_SEQUENCE:
-            session.write(CONTROL_WORD, word)
+    def disable(self) -> ValveStatus:
+        """Control word 0Fh → 0Bh → 09h → 08h: back to INIT step by step; returns the status
+        read back; :class:`~prm9tool.device.enabling.NotDisabledError` when the valve stays in
+        DEVICE_MODE_ACTIVE (it would still follow its setpoint)."""
+        from prm9tool.device.enabling import disable
+
+        return disable(self._session())
 
     def commission(self) -> ValveStatus:
         """What the window's "Enable it now?" does: NMT start when the valve waits in

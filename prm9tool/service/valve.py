@@ -211,12 +211,22 @@ class ValveService:
         self.session.restore_factory()
         values: dict[str, Value] | None = None
         if restart:
-            self._restart()
-            values = dict(self.session.download())
+            try:
+                self._restart()
+                values = dict(self.session.download())
+            except Prm9Error as exc:  # half done: the reset is in the valve, say so
+                self._record_factory(path, None, "restart-failed")
+                exc.args = (f"{exc}; {_factory_loaded(path)}",)
+                raise
+        self._record_factory(path, values, "ok")
+        return values, path
+
+    def _record_factory(
+        self, path: Path | None, values: dict[str, Value] | None, outcome: str
+    ) -> None:
         if self.history is not None:
             details: Details = {"backup": None if path is None else str(path)}
-            self.history.add(self.session, "restore-factory", "ok", values, details)
-        return values, path
+            self.history.add(self.session, "restore-factory", outcome, values, details)
 
     def restart(self, command: str | None = None) -> None:
         """Restart the valve's electronics and reconnect (the caller confirmed that the
@@ -332,6 +342,20 @@ class ValveService:
             except (NotAvailableError, CommunicationError):  # not on this link
                 continue
         return write_dcf(path, self.session.info.type_key, values, {**values, **settings})
+
+
+def _factory_loaded(backup: Path | None) -> str:
+    """What a restore of the factory values whose restart failed has done already."""
+    kept = (
+        f"the valve's previous parameters are in {backup}"
+        if backup is not None
+        else "the valve's backup from before is kept"
+    )
+    return (
+        "the factory values were already loaded in the valve: they take effect at its next "
+        f"restart or power-up ({kept}); restart it (hydraulics disconnected) and check its "
+        "parameters"
+    )
 
 
 _SERVICES: weakref.WeakKeyDictionary[object, ValveService] = weakref.WeakKeyDictionary()

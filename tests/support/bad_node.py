@@ -44,6 +44,9 @@ class Fault(Enum):
     LATE = "late"  # every answer after 0x1000 comes ``delay_s`` late (set it above the timeout)
 
 
+IDENTITY = frozenset({0x1000, 0x1001, 0x1008, 0x100A, 0x1018, 0x2041, 0x6043})
+
+
 def prm9_objects(
     serial: int = 777001, control_mode: int = 2, parameters: bool = False
 ) -> dict[tuple[int, int], bytes]:
@@ -88,6 +91,8 @@ class BadNode:
     fault: Fault = Fault.NONE
     objects: dict[tuple[int, int], bytes] = field(default_factory=prm9_objects)
     delay_s: float = 0.0  # each answer this late (a second node at one ID answers later)
+    # the objects (by index) the fault spares; IDENTITY: it identifies as a PRM9, then fails
+    sound: frozenset[int] = frozenset({0x1000})
     segments_sent: int = 0
     requests: int = 0
     aborts: list[bytes] = field(default_factory=list)  # abort frames the client sent
@@ -100,6 +105,7 @@ class BadNode:
     _toggle: int = 0
     _random: random.Random = field(default_factory=lambda: random.Random(301))
     _initial: dict[tuple[int, int], bytes] = field(default_factory=dict)
+    _sound_upload: bool = False
 
     def start(self) -> BadNode:
         """Serve in a thread until :meth:`stop`."""
@@ -141,15 +147,20 @@ class BadNode:
         if self.fault is Fault.RESETS and command & 0xE0 == 0x20 and not self.writes:
             self._reset()
             return None
-        if self.fault is Fault.ANSWERS_1000_ONLY and (command != 0x40 or index != 0x1000):
+        sound = index in self.sound or (command & 0xE0 == 0x60 and self._sound_upload)
+        if self.fault is Fault.ANSWERS_1000_ONLY and not (sound and command & 0xE0 in (0x40, 0x60)):
             return None
-        if self.fault is Fault.ABORTS and index != 0x1000 and self.requests % 2:
+        if self.fault is Fault.ABORTS and not sound and self.requests % 2:
             code = self._random.choice((0x06010000, 0x08000000, 0x06060000, 0x05040001))
             return struct.pack("<BHBI", 0x80, index, subindex, code)
-        if self.fault is Fault.LATE and index != 0x1000:
+        if self.fault is Fault.LATE and not sound:
             time.sleep(self.delay_s)
-        frame = self._answer(command, index, subindex, request)
-        if frame is not None and self.fault is Fault.SHORT_FRAMES and index != 0x1000:
+        fault, self.fault = self.fault, (Fault.NONE if sound else self.fault)
+        try:
+            frame = self._answer(command, index, subindex, request)
+        finally:
+            self.fault = fault
+        if frame is not None and self.fault is Fault.SHORT_FRAMES and not sound:
             return frame[:3]
         return frame
 
@@ -184,12 +195,13 @@ class BadNode:
         value = self.objects.get((index, subindex))
         if value is None:
             return struct.pack("<BHBI", 0x80, index, subindex, 0x06020000)
-        if self.fault is Fault.OTHER_OBJECT and index != 0x1000:
+        if self.fault is Fault.OTHER_OBJECT:
             subindex += 1
         if len(value) <= 4:
             command = 0x43 | ((4 - len(value)) << 2)
             return struct.pack("<BHB", command, index, subindex) + value.ljust(4, b"\0")
         self._upload, self._pos, self._toggle = value, 0, 0
+        self._sound_upload = self.fault is Fault.NONE
         if self.fault is Fault.ENDLESS_NO_SIZE:
             return struct.pack("<BHB4x", 0x40, index, subindex)
         size = 0xFFFFFFFF if self.fault is Fault.ENDLESS_HUGE else len(value)
