@@ -1929,6 +1929,10 @@ Poslední akce možná nebyla dokončena. Uložte svou práci pod novým názvem
             <translation>Ventil je po řídicím slově 08h → 09h → 0Bh → 0Fh ve stavu {0}, ne DEVICE_MODE_ACTIVE</translation>
         </message>
         <message>
+            <source>the valve stays in DEVICE_MODE_ACTIVE after the control word 0Fh → 0Bh → 09h → 08h and still follows its setpoint — make the hydraulics safe, then look for another CANopen master enabling it or restart the valve</source>
+            <translation>Ventil po řídicím slově 0Fh → 0Bh → 09h → 08h zůstává ve stavu DEVICE_MODE_ACTIVE a dál sleduje žádanou hodnotu – uveďte hydrauliku do bezpečného stavu, pak hledejte jiný CANopen master, který ho uvolňuje, nebo ventil restartujte</translation>
+        </message>
+        <message>
             <source>The valve has no birth certificate in the history.</source>
             <translation>Ventil nemá v historii rodný list.</translation>
         </message>

@@ -1900,11 +1900,11 @@ Die letzte Aktion wurde womöglich nicht vollständig ausgeführt. Speichern Sie
         </message>
         <message>
             <source>the valve stays in {0}: error 0x{1} ({2}) is still present — remove its cause, then enable again (the control word 08h resets the fault once it is gone)</source>
-            <translation>Das Ventil bleibt in {0}: Fehler 0x{1} ({2}) liegt noch an — beseitigen Sie die Ursache und aktivieren Sie es dann erneut (das Steuerwort 08h setzt den Fehler zurück, sobald er behoben ist)</translation>
+            <translation>Das Ventil bleibt in {0}: Fehler 0x{1} ({2}) liegt noch an — beseitigen Sie die Ursache und geben Sie es dann erneut frei (das Steuerwort 08h setzt den Fehler zurück, sobald er behoben ist)</translation>
         </message>
         <message>
             <source>the valve stays in {0} with no error present: it did not take the fault reset — write the control word 00h, then enable again</source>
-            <translation>Das Ventil bleibt in {0}, obwohl kein Fehler anliegt: es hat den Fehler-Reset nicht angenommen — schreiben Sie das Steuerwort 00h und aktivieren Sie es dann erneut</translation>
+            <translation>Das Ventil bleibt in {0}, obwohl kein Fehler anliegt: es hat den Fehler-Reset nicht angenommen — schreiben Sie das Steuerwort 00h und geben Sie es dann erneut frei</translation>
         </message>
         <message>
             <source>the valve is NMT stopped and takes no control word: send NMT start first</source>
@@ -1912,11 +1912,15 @@ Die letzte Aktion wurde womöglich nicht vollständig ausgeführt. Speichern Sie
         </message>
         <message>
             <source>the valve is still starting up (about 2 s after power-up): enable it then</source>
-            <translation>Das Ventil startet noch (etwa 2 s nach dem Einschalten): aktivieren Sie es danach</translation>
+            <translation>Das Ventil startet noch (etwa 2 s nach dem Einschalten): geben Sie es danach frei</translation>
         </message>
         <message>
             <source>the valve is in {0} after the control word 08h → 09h → 0Bh → 0Fh, not DEVICE_MODE_ACTIVE</source>
             <translation>Das Ventil ist nach dem Steuerwort 08h → 09h → 0Bh → 0Fh in {0}, nicht in DEVICE_MODE_ACTIVE</translation>
+        </message>
+        <message>
+            <source>the valve stays in DEVICE_MODE_ACTIVE after the control word 0Fh → 0Bh → 09h → 08h and still follows its setpoint — make the hydraulics safe, then look for another CANopen master enabling it or restart the valve</source>
+            <translation>Das Ventil bleibt nach dem Steuerwort 0Fh → 0Bh → 09h → 08h in DEVICE_MODE_ACTIVE und folgt weiter seinem Sollwert – bringen Sie die Hydraulik in einen sicheren Zustand und suchen Sie dann nach einem anderen CANopen-Master, der es freigibt, oder starten Sie das Ventil neu</translation>
         </message>
         <message>
             <source>The valve has no birth certificate in the history.</source>
