@@ -76,3 +76,27 @@ def test_a_valve_a_sync_kept_up_is_not_called():
     valves[0].paced_step = lambda: (_ for _ in ()).throw(RuntimeError("firmware bug"))  # type: ignore[method-assign]
     _until_due([valves[0].pacer])
     assert group.step_one() >= 0.0  # a failing valve is logged; the rest go on
+
+
+def test_a_grouped_valve_runs_small_batches_and_a_sync_still_catches_up_a_whole_one():
+    from prm9tool.device.emulator import EmulatedValve
+    from prm9tool.device.emulator.pacing import CATCH_UP, GROUPED_MIN_BATCH
+
+    valve = EmulatedValve("PRM9-06.3Z11/30-24E02S02-CA", 8101)
+    valve.advance(2.0)
+    own = valve.pacer.min_batch
+    valve.paced_by_group(True)
+    try:
+        assert valve.pacer.min_batch == GROUPED_MIN_BATCH < own  # between frames, not on a SYNC
+        start = valve.pacer.start
+        deadline = start + (GROUPED_MIN_BATCH + 0.5) * valve.pacer.cycle_s
+        while time.monotonic() < deadline:
+            time.sleep(max(0.0, deadline - time.monotonic()))
+        assert valve.paced_step() == 0.0  # a batch ran (with 10 cycles it would have waited)
+        assert valve.pacer.cycles_done >= GROUPED_MIN_BATCH
+        # a SYNC after a stall of CATCH_UP cycles still samples the moment it came
+        done = valve.pacer.cycles_done
+        assert valve.pacer.due_by(start + (done + CATCH_UP) * valve.pacer.cycle_s) == CATCH_UP
+    finally:
+        valve.paced_by_group(False)
+    assert valve.pacer.min_batch == own  # its own paced thread's batch again

@@ -15,6 +15,15 @@ from collections.abc import Callable
 from dataclasses import dataclass
 
 LATE_S = 0.010  # behind by more than this: counted as a late episode (a batch is 2 ms)
+# A valve paced in a group by the bus's receive thread (--serve-emulator) runs its batch once
+# this many cycles (0.4 ms) are due, not 10: the simulation then runs between frames, and a
+# SYNC finds at most a few cycles to run before its TPDO (EmulatedValve.run_due_by) instead of
+# a whole millisecond of every valve's, and the state is 0.4 ms behind at most while it keeps
+# up. On a quiet 2-core PC, 32 valves at a 2 ms SYNC: TPDO1 within 1 ms better in 4 of 5
+# paired runs (median +2 points), 16 at 1 ms unchanged (docs/PERFORMANCE.md, "issue 30,
+# fourth stop").
+GROUPED_MIN_BATCH = 2
+CATCH_UP = 10  # a SYNC runs at most this many due cycles; more: behind, the batches catch up
 
 
 @dataclass(frozen=True)
@@ -40,6 +49,7 @@ class Pacer:
         self.cycle_s = cycle_s
         self.clock = clock
         self.min_batch = min_batch
+        self.catch_up = CATCH_UP
         self.max_batch = max_batch
         self.max_lag_cycles = int(max_lag_s / cycle_s)
         self.max_lag_s = max_lag_s
@@ -74,10 +84,10 @@ class Pacer:
 
     def due_by(self, at: float) -> int:
         """Cycles of the batch in progress due by ``at`` (a time of ``clock``): the lag then if
-        it is at most ``min_batch`` (the simulation keeping up), else 0 (it is behind: the
+        it is at most :data:`CATCH_UP` (the simulation keeping up), else 0 (it is behind: the
         batches catch up, :meth:`due`)."""
         lag = int((at - self.start) / self.cycle_s + 1e-6) - self.cycles_done
-        return lag if 0 < lag <= self.min_batch else 0
+        return lag if 0 < lag <= self.catch_up else 0
 
     def _note_lag(self, lag_s: float) -> None:
         late = lag_s > LATE_S

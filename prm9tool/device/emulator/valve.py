@@ -26,7 +26,7 @@ from prm9tool.device.emulator.constants import (
 )
 from prm9tool.device.emulator.firmware import Firmware
 from prm9tool.device.emulator.override import OverrideProgram, Source
-from prm9tool.device.emulator.pacing import Pacer
+from prm9tool.device.emulator.pacing import GROUPED_MIN_BATCH, Pacer
 from prm9tool.device.emulator.states import Fault
 from prm9tool.device.emulator.valve_canopen import CanopenSide
 from prm9tool.device.leds import leds
@@ -93,6 +93,7 @@ class EmulatedValve:
         self._grouped = False  # paced by a PacedGroup's thread
         self._stop = threading.Event()
         self.pacer = Pacer(CYCLE_S)
+        self._own_min_batch = self.pacer.min_batch  # its own paced thread's batch
 
     @property
     def firmware(self) -> Firmware:
@@ -326,12 +327,14 @@ class EmulatedValve:
 
     def paced_by_group(self, grouped: bool) -> None:
         """A :class:`~.paced_group.PacedGroup` paces this valve from now on (True: a new time
-        base at this moment) or no longer (False)."""
+        base at this moment, batches of :data:`~.pacing.GROUPED_MIN_BATCH` cycles) or no
+        longer (False)."""
         with self.lock:
             if grouped and self._thread is not None:
                 raise RuntimeError("the valve already runs in its own paced thread")
             if grouped and not self._grouped:
                 self.pacer.reset()
+            self.pacer.min_batch = GROUPED_MIN_BATCH if grouped else self._own_min_batch
             self._grouped = grouped
 
     def _paced(self) -> None:
