@@ -362,7 +362,7 @@ with \xe2\x80\x9c\xe2\x80\x94\xe2\x80\x9d a\
 nd cannot be cho\
 sen.</p>\x0a</body>\
 \x0a</html>\x0a\
-\x00\x00\x08\xd6\
+\x00\x00\x08\xd4\
 <\
 !DOCTYPE html>\x0a<\
 html lang=\x22de\x22>\x0a\
@@ -469,43 +469,43 @@ un ist, wenn sie\
 r ist.</li>\x0a</ul\
 >\x0a<p>Autotune-L\xc3\
 \xa4ufe, Frequenzg\xc3\
-\xa4nge, Pr\xc3\xbcfproto\
-kolle (mit den n\
-icht bestandenen\
- Kennwerten und,\
-\x0aeinmal gespeich\
-ert, dem PDF) un\
-d Neustarts des \
-Ventils werden e\
-benfalls aufgeze\
-ichnet. Ein\x0a<b>D\
-oppelklick</b> a\
-uf einen Eintrag\
- zeigt seine Det\
-ails \xe2\x80\x94 jedes F\
-eld, <b>PDF \xc3\xb6ff\
-nen</b>,\x0a<b>Mit \
-dem Eintrag davo\
-r vergleichen</b\
-> \xe2\x80\x94 oder, bei \
-zwei gew\xc3\xa4hlten \
-Eintr\xc3\xa4gen, ihre\
-n Vergleich.\x0aDer\
- Typenschl\xc3\xbcssel\
- eines Ventils \xc3\
-\xa4ndert sich nie:\
- Eintr\xc3\xa4ge eines\
- anderen Typs un\
-ter derselben\x0aSe\
-riennummer (emul\
-ierte Ventile zw\
-eier L\xc3\xa4ufe k\xc3\xb6n\
-nen eine teilen)\
- sind mit \xe2\x9a\xa0 ma\
-rkiert, und das\x0a\
-Fenster sagt es.\
-</p>\x0a</body>\x0a</h\
-tml>\x0a\
+\xa4nge, Pr\xc3\xbcfberic\
+hte (mit den nic\
+ht bestandenen K\
+ennwerten und,\x0ae\
+inmal gespeicher\
+t, dem PDF) und \
+Neustarts des Ve\
+ntils werden ebe\
+nfalls aufgezeic\
+hnet. Ein\x0a<b>Dop\
+pelklick</b> auf\
+ einen Eintrag z\
+eigt seine Detai\
+ls \xe2\x80\x94 jedes Fel\
+d, <b>PDF \xc3\xb6ffne\
+n</b>,\x0a<b>Mit de\
+m Eintrag davor \
+vergleichen</b> \
+\xe2\x80\x94 oder, bei zw\
+ei gew\xc3\xa4hlten Ei\
+ntr\xc3\xa4gen, ihren \
+Vergleich.\x0aDer T\
+ypenschl\xc3\xbcssel e\
+ines Ventils \xc3\xa4n\
+dert sich nie: E\
+intr\xc3\xa4ge eines a\
+nderen Typs unte\
+r derselben\x0aSeri\
+ennummer (emulie\
+rte Ventile zwei\
+er L\xc3\xa4ufe k\xc3\xb6nne\
+n eine teilen) s\
+ind mit \xe2\x9a\xa0 mark\
+iert, und das\x0aFe\
+nster sagt es.</\
+p>\x0a</body>\x0a</htm\
+l>\x0a\
 \x00\x00$!\
 <\
 !DOCTYPE html>\x0a<\
@@ -1223,7 +1223,7 @@ ohou m\xc3\xadt stejn\xc3\
 y \xe2\x9a\xa0 a okno to \
 uv\xc3\xa1d\xc3\xad.</p>\x0a</b\
 ody>\x0a</html>\x0a\
-\x00\x00\x1b\x93\
+\x00\x00\x1b\x88\
 <\
 !DOCTYPE html>\x0a<\
 html lang=\x22de\x22>\x0a\
@@ -1463,210 +1463,209 @@ Dokument (ein R\xc3\
 \xbcckg\xc3\xa4ngig-Schri\
 tt; online auch \
 ins Ventil, mit \
-Eintrag in der H\
-istorie).\x0aDauerh\
-aft speichern mi\
-t Ventil \xe2\x86\x92 Im \
-Ventil speichern\
-.</li>\x0a<li><b>Fr\
-equenzgang</b>: \
-ein Sinus-Sweep \
-um einen Arbeits\
-punkt; die Frequ\
-enzen bei \xe2\x88\x923 d\
-B und\x0a\xe2\x88\x9290\xc2\xb0 (d\
-er Bereich folgt\
- dem Regelkreis:\
- 1 \xe2\x80\xa6 200 Hz f\xc3\
-\xbcr den Schieber,\
- 0,2 \xe2\x80\xa6 20 Hz f\
-\xc3\xbcr den\x0aProzessr\
-egelkreis).</li>\
-\x0a<li><b>Statisch\
-e Kennlinie</b>:\
- ein langsames D\
-reieck; Hysteres\
-e, Linearit\xc3\xa4t u\
-nd Totzone sowie\
-\x0aein Vorschlag f\
-\xc3\xbcr die Linearis\
-ierung.</li>\x0a<li\
-><b>Pr\xc3\xbcfbericht\
-</b>: ein Abnahm\
-eprofil (Spr\xc3\xbcng\
-e, Sweep, statis\
-che Pr\xc3\xbcfung und\
- ihre Grenzen)\x0ai\
-n einem Durchlau\
-f; der Bericht n\
-ennt den gepr\xc3\xbcf\
-ten Regelkreis, \
-das PDF nennt au\
-f jeder Seite\x0aTy\
-pschl\xc3\xbcssel und \
-Seriennummer und\
- f\xc3\xbchrt den Para\
-metersatz in Anz\
-eigeeinheiten au\
-f; die\x0aMessdaten\
- gehen daneben i\
-n CSV-Dateien. S\
-prungkennwerte w\
-erden gegen den \
-Sollwert gemesse\
-n: ein\x0aSprung, d\
-er ihn nicht err\
-eicht hat, ist \xe2\
-\x80\x9enicht erreicht\
-\xe2\x80\x9c und besteht \
-nicht.</li>\x0a<li>\
-<b>Geburtsurkund\
-e</b> (online): \
-<b>Mit Geburtsur\
-kunde vergleiche\
-n</b> spielt ein\
-e kurze\x0aFeldsign\
-atur (ein kleine\
-r und ein gro\xc3\x9fe\
-r Sprung in jede\
- Richtung, ein k\
-urzer Sweep um d\
-ie\x0aBandbreite de\
-s Ventils, eine \
-Hystereseschleif\
-e; h\xc3\xb6chstens 20\
- s Bewegung) und\
- vergleicht jede\
-n\x0aKennwert mit d\
-er Endpr\xc3\xbcfung d\
-es Ventils, die \
-die Historie zu \
-seiner Seriennum\
-mer aufbewahrt:\x0a\
-heute, damals, d\
-ie \xc3\x84nderung und\
- die Driftgrenze\
- (der Teil <code\
->[drift]</code> \
-des Profils, z. \
-B.\x0a<code>bode_ph\
-ase90_hz = { rel\
-ative = 15 }</co\
-de>) und ob er g\
-edriftet ist; di\
-e heutigen Spr\xc3\xbc\
-nge\x0aund der Freq\
-uenzgang werden \
-\xc3\xbcber die der Ge\
-burtsurkunde gez\
-eichnet, <b>PDF \
-speichern\xe2\x80\xa6</b>\
-\x0aschreibt den Dr\
-iftbericht. Ohne\
- Endpr\xc3\xbcfung in \
-der Historie sag\
-t sie, wie man e\
-ine erstellt,\x0aun\
-d bewegt nichts \
-(Befehlszeile: <\
-code>prm9tool --\
-signature --devi\
-ce ID --report d\
-rift.pdf</code>)\
-.</li>\x0a</ul>\x0a\x0a<h\
-2>Das Abnahmepro\
-fil (TOML)</h2>\x0a\
-<p>Leer: das ein\
-gebaute Profil. \
-Eine Datei setzt\
-, was davon abwe\
-icht; jeder Schl\
-\xc3\xbcssel darf\x0afehl\
-en. <code>[test]\
-</code> und <cod\
-e>[limits]</code\
-> gelten f\xc3\xbcr de\
-n Lageregelkreis\
-,\x0a<code>[process\
-.test]</code> un\
-d <code>[process\
-.limits]</code> \
-f\xc3\xbcr den Prozess\
-regelkreis des\x0aE\
-04, dessen eigen\
-e Vorgaben Sprun\
-gfenster von 1,5\
- s, ein Sweep vo\
-n 0,2 bis 20 Hz,\
-\x0aAnstiegszeit \xe2\x89\
-\xa4 0,4 s, Ausrege\
-lzeit \xe2\x89\xa4 0,8 s \
-und \xe2\x88\x923 dB \xe2\x89\xa5 \
-0,8 Hz sind. Ein\
-e Grenze ist\x0a<co\
-de>{ min = \xe2\x80\xa6 }\
-</code>, <code>{\
- max = \xe2\x80\xa6 }</co\
-de> oder beides;\
- Zahlen in der D\
-atei mit\x0aDezimal\
-punkt.</p>\x0a<pre>\
-\x0aname = \x22PRM9-06\
- Endpr\xc3\xbcfung\x22\x0a[t\
-est]\x0astep_amplit\
-udes_pct = [5, 2\
-5, 90]\x0astep_dura\
-tion_s = 0.15\x0ast\
-atic_period_s = \
-20\x0a[limits]\x0astep\
-_overshoot_pct =\
- { max = 15 }\x0ast\
-ep_rise_s = { ma\
-x = 0.03 }\x0abode_\
-bandwidth_hz = {\
- min = 15 }\x0astat\
-ic_hysteresis_pc\
-t = { max = 2 }\x0a\
-\x0a[process.test] \
-     # E04 in Re\
-gelungsart 4\x0aste\
-p_duration_s = 2\
-.0\x0a[process.limi\
-ts]\x0astep_rise_s \
-= { max = 0.5 }\x0a\
-step_settling_s \
-= { max = 1.0 }\x0a\
-flow_gain = { mi\
-n = 3 }\x0a</pre>\x0a<\
-p>Kennwerte: ste\
-p_overshoot_pct,\
- step_rise_s, st\
-ep_settling_s, b\
-ode_bandwidth_hz\
-,\x0abode_phase90_h\
-z, static_gain, \
-static_hysteresi\
-s_pct, static_li\
-nearity_pct,\x0asta\
-tic_dead_band_pc\
-t, flow_gain, fl\
-ow_dead_band_pct\
-. Ein unbekannte\
-r Schl\xc3\xbcssel ode\
-r ein falscher\x0aW\
-ert wird mit Dat\
-ei und Schl\xc3\xbcsse\
-l abgelehnt.</p>\
-\x0a<p>Die Karte <b\
->Sprungantwort</\
-b> des Oszillosk\
-ops misst \xc3\x9cbers\
-chwingen, Anstie\
-gs- und\x0aAusregel\
-zeit jedes gezei\
-gten Sprungs.</p\
->\x0a</body>\x0a</html\
->\x0a\
+Eintrag im Verla\
+uf).\x0aDauerhaft s\
+peichern mit Ven\
+til \xe2\x86\x92 Im Venti\
+l speichern.</li\
+>\x0a<li><b>Frequen\
+zgang</b>: ein S\
+inus-Sweep um ei\
+nen Arbeitspunkt\
+; die Frequenzen\
+ bei \xe2\x88\x923 dB und\
+\x0a\xe2\x88\x9290\xc2\xb0 (der Be\
+reich folgt dem \
+Regelkreis: 1 \xe2\x80\
+\xa6 200 Hz f\xc3\xbcr de\
+n Schieber, 0,2 \
+\xe2\x80\xa6 20 Hz f\xc3\xbcr d\
+en\x0aProzessregelk\
+reis).</li>\x0a<li>\
+<b>Statische Ken\
+nlinie</b>: ein \
+langsames Dreiec\
+k; Hysterese, Li\
+nearit\xc3\xa4t und To\
+tzone sowie\x0aein \
+Vorschlag f\xc3\xbcr d\
+ie Linearisierun\
+g.</li>\x0a<li><b>P\
+r\xc3\xbcfbericht</b>:\
+ ein Abnahmeprof\
+il (Spr\xc3\xbcnge, Sw\
+eep, statische P\
+r\xc3\xbcfung und ihre\
+ Grenzen)\x0ain ein\
+em Durchlauf; de\
+r Bericht nennt \
+den gepr\xc3\xbcften R\
+egelkreis, das P\
+DF nennt auf jed\
+er Seite\x0aTypschl\
+\xc3\xbcssel und Serie\
+nnummer und f\xc3\xbch\
+rt den Parameter\
+satz in Anzeigee\
+inheiten auf; di\
+e\x0aMessdaten gehe\
+n daneben in CSV\
+-Dateien. Sprung\
+kennwerte werden\
+ gegen den Sollw\
+ert gemessen: ei\
+n\x0aSprung, der ih\
+n nicht erreicht\
+ hat, ist \xe2\x80\x9enic\
+ht erreicht\xe2\x80\x9c u\
+nd besteht nicht\
+.</li>\x0a<li><b>Ge\
+burtsurkunde</b>\
+ (online): <b>Mi\
+t Geburtsurkunde\
+ vergleichen</b>\
+ spielt eine kur\
+ze\x0aFeldsignatur \
+(ein kleiner und\
+ ein gro\xc3\x9fer Spr\
+ung in jede Rich\
+tung, ein kurzer\
+ Sweep um die\x0aBa\
+ndbreite des Ven\
+tils, eine Hyste\
+reseschleife; h\xc3\
+\xb6chstens 20 s Be\
+wegung) und verg\
+leicht jeden\x0aKen\
+nwert mit der En\
+dpr\xc3\xbcfung des Ve\
+ntils, die der V\
+erlauf zu seiner\
+ Seriennummer au\
+fbewahrt:\x0aheute,\
+ damals, die \xc3\x84n\
+derung und die D\
+riftgrenze (der \
+Teil <code>[drif\
+t]</code> des Pr\
+ofils, z. B.\x0a<co\
+de>bode_phase90_\
+hz = { relative \
+= 15 }</code>) u\
+nd ob er gedrift\
+et ist; die heut\
+igen Spr\xc3\xbcnge\x0aun\
+d der Frequenzga\
+ng werden \xc3\xbcber \
+die der Geburtsu\
+rkunde gezeichne\
+t, <b>PDF speich\
+ern\xe2\x80\xa6</b>\x0aschre\
+ibt den Driftber\
+icht. Ohne Endpr\
+\xc3\xbcfung im Verlau\
+f sagt sie, wie \
+man eine erstell\
+t,\x0aund bewegt ni\
+chts (Befehlszei\
+le: <code>prm9to\
+ol --signature -\
+-device ID --rep\
+ort drift.pdf</c\
+ode>).</li>\x0a</ul\
+>\x0a\x0a<h2>Das Abnah\
+meprofil (TOML)<\
+/h2>\x0a<p>Leer: da\
+s eingebaute Pro\
+fil. Eine Datei \
+setzt, was davon\
+ abweicht; jeder\
+ Schl\xc3\xbcssel darf\
+\x0afehlen. <code>[\
+test]</code> und\
+ <code>[limits]<\
+/code> gelten f\xc3\
+\xbcr den Lageregel\
+kreis,\x0a<code>[pr\
+ocess.test]</cod\
+e> und <code>[pr\
+ocess.limits]</c\
+ode> f\xc3\xbcr den Pr\
+ozessregelkreis \
+des\x0aE04, dessen \
+eigene Vorgaben \
+Sprungfenster vo\
+n 1,5 s, ein Swe\
+ep von 0,2 bis 2\
+0 Hz,\x0aAnstiegsze\
+it \xe2\x89\xa4 0,4 s, Au\
+sregelzeit \xe2\x89\xa4 0\
+,8 s und \xe2\x88\x923 dB\
+ \xe2\x89\xa5 0,8 Hz sind\
+. Eine Grenze is\
+t\x0a<code>{ min = \
+\xe2\x80\xa6 }</code>, <c\
+ode>{ max = \xe2\x80\xa6 \
+}</code> oder be\
+ides; Zahlen in \
+der Datei mit\x0aDe\
+zimalpunkt.</p>\x0a\
+<pre>\x0aname = \x22PR\
+M9-06 Endpr\xc3\xbcfun\
+g\x22\x0a[test]\x0astep_a\
+mplitudes_pct = \
+[5, 25, 90]\x0astep\
+_duration_s = 0.\
+15\x0astatic_period\
+_s = 20\x0a[limits]\
+\x0astep_overshoot_\
+pct = { max = 15\
+ }\x0astep_rise_s =\
+ { max = 0.03 }\x0a\
+bode_bandwidth_h\
+z = { min = 15 }\
+\x0astatic_hysteres\
+is_pct = { max =\
+ 2 }\x0a\x0a[process.t\
+est]      # E04 \
+in Regelungsart \
+4\x0astep_duration_\
+s = 2.0\x0a[process\
+.limits]\x0astep_ri\
+se_s = { max = 0\
+.5 }\x0astep_settli\
+ng_s = { max = 1\
+.0 }\x0aflow_gain =\
+ { min = 3 }\x0a</p\
+re>\x0a<p>Kennwerte\
+: step_overshoot\
+_pct, step_rise_\
+s, step_settling\
+_s, bode_bandwid\
+th_hz,\x0abode_phas\
+e90_hz, static_g\
+ain, static_hyst\
+eresis_pct, stat\
+ic_linearity_pct\
+,\x0astatic_dead_ba\
+nd_pct, flow_gai\
+n, flow_dead_ban\
+d_pct. Ein unbek\
+annter Schl\xc3\xbcsse\
+l oder ein falsc\
+her\x0aWert wird mi\
+t Datei und Schl\
+\xc3\xbcssel abgelehnt\
+.</p>\x0a<p>Die Kar\
+te <b>Sprungantw\
+ort</b> des Oszi\
+lloskops misst \xc3\
+\x9cberschwingen, A\
+nstiegs- und\x0aAus\
+regelzeit jedes \
+gezeigten Sprung\
+s.</p>\x0a</body>\x0a<\
+/html>\x0a\
 \x00\x00\x06\x87\
 <\
 !DOCTYPE html>\x0a<\
@@ -5060,35 +5059,35 @@ qt_resource_struct = b"\
 \x00\x00\x00\x00\x00\x02\x00\x00\x00\x02\x00\x00\x00\x01\
 \x00\x00\x00\x10\x00\x02\x00\x00\x00\x10\x00\x00\x00\x10\
 \x00\x00\x00\x00\x00\x02\x00\x00\x00\x0d\x00\x00\x00\x03\
-\x00\x00\x02\xb6\x00\x00\x00\x00\x00\x01\x00\x01\x22K\
-\x00\x00\x02L\x00\x00\x00\x00\x00\x01\x00\x01\x1c\xad\
-\x00\x00\x03X\x00\x00\x00\x00\x00\x01\x00\x01,\x81\
-\x00\x00\x02\xd0\x00\x00\x00\x00\x00\x01\x00\x01#x\
-\x00\x00\x022\x00\x00\x00\x00\x00\x01\x00\x01\x1a\xe7\
-\x00\x00\x03t\x00\x00\x00\x00\x00\x01\x00\x01.\x19\
-\x00\x00\x02\xe8\x00\x00\x00\x00\x00\x01\x00\x01%G\
-\x00\x00\x03:\x00\x00\x00\x00\x00\x01\x00\x01*\xd5\
-\x00\x00\x02d\x00\x00\x00\x00\x00\x01\x00\x01\x1eS\
-\x00\x00\x03\x04\x00\x00\x00\x00\x00\x01\x00\x01'\x10\
-\x00\x00\x02\x80\x00\x00\x00\x00\x00\x01\x00\x01\x1fP\
-\x00\x00\x02\x9c\x00\x00\x00\x00\x00\x01\x00\x01!\x09\
-\x00\x00\x03\x18\x00\x00\x00\x00\x00\x01\x00\x01)\x94\
-\x00\x00\x01J\x00\x00\x00\x00\x00\x01\x00\x00\xadc\
-\x00\x00\x00\xe6\x00\x00\x00\x00\x00\x01\x00\x00f\xf7\
-\x00\x00\x01\xac\x00\x00\x00\x00\x00\x01\x00\x00\xddY\
-\x00\x00\x00\xc4\x00\x00\x00\x00\x00\x01\x00\x00K`\
-\x00\x00\x01\x0a\x00\x00\x00\x00\x00\x01\x00\x00m\x82\
-\x00\x00\x01\x8a\x00\x00\x00\x00\x00\x01\x00\x00\xc4\xa5\
+\x00\x00\x02\xb6\x00\x00\x00\x00\x00\x01\x00\x01\x22>\
+\x00\x00\x02L\x00\x00\x00\x00\x00\x01\x00\x01\x1c\xa0\
+\x00\x00\x03X\x00\x00\x00\x00\x00\x01\x00\x01,t\
+\x00\x00\x02\xd0\x00\x00\x00\x00\x00\x01\x00\x01#k\
+\x00\x00\x022\x00\x00\x00\x00\x00\x01\x00\x01\x1a\xda\
+\x00\x00\x03t\x00\x00\x00\x00\x00\x01\x00\x01.\x0c\
+\x00\x00\x02\xe8\x00\x00\x00\x00\x00\x01\x00\x01%:\
+\x00\x00\x03:\x00\x00\x00\x00\x00\x01\x00\x01*\xc8\
+\x00\x00\x02d\x00\x00\x00\x00\x00\x01\x00\x01\x1eF\
+\x00\x00\x03\x04\x00\x00\x00\x00\x00\x01\x00\x01'\x03\
+\x00\x00\x02\x80\x00\x00\x00\x00\x00\x01\x00\x01\x1fC\
+\x00\x00\x02\x9c\x00\x00\x00\x00\x00\x01\x00\x01 \xfc\
+\x00\x00\x03\x18\x00\x00\x00\x00\x00\x01\x00\x01)\x87\
+\x00\x00\x01J\x00\x00\x00\x00\x00\x01\x00\x00\xadV\
+\x00\x00\x00\xe6\x00\x00\x00\x00\x00\x01\x00\x00f\xea\
+\x00\x00\x01\xac\x00\x00\x00\x00\x00\x01\x00\x00\xddL\
+\x00\x00\x00\xc4\x00\x00\x00\x00\x00\x01\x00\x00K^\
+\x00\x00\x01\x0a\x00\x00\x00\x00\x00\x01\x00\x00mu\
+\x00\x00\x01\x8a\x00\x00\x00\x00\x00\x01\x00\x00\xc4\x98\
 \x00\x00\x00:\x00\x00\x00\x00\x00\x01\x00\x00\x10\x11\
-\x00\x00\x02\x0a\x00\x00\x00\x00\x00\x01\x00\x01\x13(\
-\x00\x00\x00\x82\x00\x00\x00\x00\x00\x01\x00\x00\x1e\xd9\
-\x00\x00\x01,\x00\x00\x00\x00\x00\x01\x00\x00\x87\xea\
-\x00\x00\x01\xd0\x00\x00\x00\x00\x00\x01\x00\x00\xe4>\
-\x00\x00\x01n\x00\x00\x00\x00\x00\x01\x00\x00\xb5\x0e\
+\x00\x00\x02\x0a\x00\x00\x00\x00\x00\x01\x00\x01\x13\x1b\
+\x00\x00\x00\x82\x00\x00\x00\x00\x00\x01\x00\x00\x1e\xd7\
+\x00\x00\x01,\x00\x00\x00\x00\x00\x01\x00\x00\x87\xdd\
+\x00\x00\x01\xd0\x00\x00\x00\x00\x00\x01\x00\x00\xe41\
+\x00\x00\x01n\x00\x00\x00\x00\x00\x01\x00\x00\xb5\x01\
 \x00\x00\x00\x1e\x00\x00\x00\x00\x00\x01\x00\x00\x00\x00\
-\x00\x00\x01\xee\x00\x00\x00\x00\x00\x01\x00\x01\x04\xa1\
+\x00\x00\x01\xee\x00\x00\x00\x00\x00\x01\x00\x01\x04\x94\
 \x00\x00\x00^\x00\x00\x00\x00\x00\x01\x00\x00\x15\xff\
-\x00\x00\x00\xa0\x00\x00\x00\x00\x00\x01\x00\x00B\xfe\
+\x00\x00\x00\xa0\x00\x00\x00\x00\x00\x01\x00\x00B\xfc\
 "
 
 def qInitResources():
