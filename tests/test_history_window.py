@@ -9,7 +9,7 @@ import json
 import math
 
 import pytest
-from PySide6.QtCore import QUrl
+from PySide6.QtCore import Qt, QUrl
 from PySide6.QtGui import QDesktopServices
 from PySide6.QtWidgets import QDialog
 from support.gui_support import E02, go_online
@@ -17,7 +17,7 @@ from support.history_support import E04, Valve, factory_values
 
 from prm9tool.history.recorder import Recorder
 from prm9tool.views.history.details import RecordDetailsDialog
-from prm9tool.views.history.table import OPERATION, OUTCOME, TYPE_KEY
+from prm9tool.views.history.table import MEANING, OPERATION, OUTCOME, TYPE_KEY
 from prm9tool.views.history.window import HistoryWindow
 
 TIMEOUT = 10_000
@@ -73,6 +73,43 @@ def test_the_operation_and_outcome_are_in_the_program_language(qtbot, recorder):
         "Prüfung fehlgeschlagen (Prüfen)",
         "a-new-outcome",
     ]
+
+
+def test_an_open_window_follows_a_language_switch_in_every_column_and_title(qtbot, recorder):
+    """The model builds its words once per language: a switch with the window open rebuilds
+    them (the Operation column, What was done and the titles), the selection stays."""
+    from prm9tool import i18n
+
+    recorder.record(Valve(1001, E02_CA), "download", "ok", None, {"purpose": "compare"})
+    window = _window(qtbot, recorder, 1001)
+    window.show()
+    _select(window, 0)
+    model = window.model
+
+    def shown() -> tuple[object, object, object]:
+        return (
+            model.data(model.index(0, OPERATION)),
+            model.data(model.index(0, MEANING)),
+            model.headerData(OPERATION, Qt.Orientation.Horizontal, Qt.ItemDataRole.DisplayRole),
+        )
+
+    assert shown() == ("download", "Read from the valve: going online", "Operation")
+    try:
+        with qtbot.waitSignals([model.headerDataChanged, model.dataChanged], timeout=TIMEOUT):
+            i18n.set_language("de")
+        german = shown()
+        i18n.set_language("cs")
+        czech = shown()
+    finally:
+        i18n.set_language("en")
+    assert german == ("Herunterladen", "Aus dem Ventil gelesen: beim Online-Gehen", "Vorgang")
+    assert czech == (
+        "stažení z ventilu",
+        "Načteno z ventilu: při přechodu do režimu online",
+        "Operace",
+    )
+    assert shown() == ("download", "Read from the valve: going online", "Operation")
+    assert window.selected() == model.records  # the switch did not reset the model
 
 
 def test_records_of_another_valve_type_under_the_same_serial_are_marked(qtbot, recorder):

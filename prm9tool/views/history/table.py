@@ -6,6 +6,7 @@ A model over the record summaries (``HistoryTableModel``); the window is
 
 from __future__ import annotations
 
+from dataclasses import dataclass
 from typing import Any
 
 from PySide6.QtCore import QAbstractTableModel, QModelIndex, QPersistentModelIndex, Qt
@@ -43,14 +44,52 @@ def _change(mnemonic: str, pair: object) -> str:
     )
 
 
+@dataclass(frozen=True)
+class _Texts:
+    """The model's fixed words in one program language: built once per language (not in each
+    call of ``data()``), by :meth:`HistoryTableModel.retranslate`."""
+
+    headers: list[str]
+    operation_names: dict[str, str]  # the Operation column
+    outcomes: dict[str, str]
+    steps: dict[str, str]
+    operations: dict[str, str]  # the What was done column
+    stores: dict[str, str]
+    purposes: dict[str, str]
+    loops: dict[str, str]
+
+
 class HistoryTableModel(QAbstractTableModel):
-    """One row per record, oldest first."""
+    """One row per record, oldest first; its words follow the program language through
+    :meth:`retranslate` (the window calls it at a LanguageChange)."""
 
     def __init__(self, parent: QWidget | None = None) -> None:
         super().__init__(parent)
         self.records: list[Record] = []
         self.other_type: set[int] = set()  # rows of another type key than the chain's
         self.chain_type_key = ""
+        self._texts = self._build_texts()
+
+    def retranslate(self) -> None:
+        """Build the words again in the program language, and have the views read them."""
+        self._texts = self._build_texts()
+        columns = self.columnCount()
+        self.headerDataChanged.emit(Qt.Orientation.Horizontal, 0, columns - 1)
+        if self.records:
+            self.dataChanged.emit(self.index(0, 0), self.index(len(self.records) - 1, columns - 1))
+
+    def _build_texts(self) -> _Texts:
+        loops = {"position": self.tr("position loop"), "process": self.tr("process loop")}
+        return _Texts(
+            headers=self._headers(),
+            operation_names=self._operation_names(),
+            outcomes=self._outcomes(),
+            steps=self._steps(),
+            operations=self._operations(),
+            stores=self._stores(),
+            purposes=self._purposes(),
+            loops=loops,
+        )
 
     def set_records(self, records: list[Record], type_key: str | None = None) -> None:
         """Show these records; those whose type key is not the chain's (``type_key``, the
@@ -70,9 +109,12 @@ class HistoryTableModel(QAbstractTableModel):
     def headerData(self, section: int, orientation: Qt.Orientation, role: int = 0) -> Any:
         if orientation != Qt.Orientation.Horizontal or role != Qt.ItemDataRole.DisplayRole:
             return None
+        return self._texts.headers[section]
+
+    def _headers(self) -> list[str]:
         return [self.tr("No."), self.tr("Time (UTC)"), self.tr("Operation"),
                 self.tr("What was done"), self.tr("Outcome"), self.tr("Type key"),
-                self.tr("Firmware"), self.tr("User, station, link")][section]  # fmt: skip
+                self.tr("Firmware"), self.tr("User, station, link")]  # fmt: skip
 
     def data(self, index: Index, role: int = 0) -> Any:
         r = self.records[index.row()]
@@ -98,7 +140,7 @@ class HistoryTableModel(QAbstractTableModel):
         """The operation in a word of the program language (German read "download",
         "characterization"); English shows the recorded word, as ``--history`` does."""
         operation = str(record["operation"])
-        return self._operation_names().get(operation, operation)
+        return self._texts.operation_names.get(operation, operation)
 
     def _operation_names(self) -> dict[str, str]:
         """The operations docs/history.md names (their English is the recorded word)."""
@@ -128,11 +170,11 @@ class HistoryTableModel(QAbstractTableModel):
         "passed", "no-drift"); a word this program does not know stays as recorded. English
         shows the recorded words, as ``--history`` does."""
         outcome = str(record["outcome"])
-        text = self._outcomes().get(outcome, outcome)
+        text = self._texts.outcomes.get(outcome, outcome)
         step = record["failed_step"]
         if not step:
             return text
-        return f"{text} ({self._steps().get(str(step), str(step))})"
+        return f"{text} ({self._texts.steps.get(str(step), str(step))})"
 
     def _outcomes(self) -> dict[str, str]:
         """The outcomes docs/history.md names (their English is the recorded word)."""
@@ -176,11 +218,11 @@ class HistoryTableModel(QAbstractTableModel):
         it changed in display units ("Tuning accepted online: Autotune; POSKP 0.4 → 0.6")."""
         details = _details(record)
         operation = record["operation"]
-        text = self._operations().get(operation) or str(operation)
-        why = [self._purposes().get(str(details["purpose"]), str(details["purpose"]))
+        text = self._texts.operations.get(operation) or str(operation)
+        why = [self._texts.purposes.get(str(details["purpose"]), str(details["purpose"]))
                if "purpose" in details else "",
                str(details.get("source", "")), str(details.get("what", "")),
-               self._stores().get(str(details.get("store")), "")]  # fmt: skip
+               self._texts.stores.get(str(details.get("store")), "")]  # fmt: skip
         shown = ", ".join(part for part in why if part)
         if operation in ("characterization", "report-saved"):
             shown = ", ".join(part for part in (shown, self._report_text(details)) if part)
@@ -198,9 +240,8 @@ class HistoryTableModel(QAbstractTableModel):
     def _report_text(self, details: dict[str, Any]) -> str:
         """A test report's loop, profile, failing figures and PDF."""
         parts = []
-        loops = {"position": self.tr("position loop"), "process": self.tr("process loop")}
         if details.get("loop"):
-            parts.append(loops.get(str(details["loop"]), str(details["loop"])))
+            parts.append(self._texts.loops.get(str(details["loop"]), str(details["loop"])))
         if details.get("profile"):
             parts.append(self.tr("profile {0}").format(details["profile"]))
         failing = failing_figures(details)
@@ -217,9 +258,8 @@ class HistoryTableModel(QAbstractTableModel):
     def _run_text(self, details: dict[str, Any]) -> str:
         """An autotune run's loop and proposed gains, a frequency response's figures."""
         parts = []
-        loops = {"position": self.tr("position loop"), "process": self.tr("process loop")}
         if details.get("loop"):
-            parts.append(loops.get(str(details["loop"]), str(details["loop"])))
+            parts.append(self._texts.loops.get(str(details["loop"]), str(details["loop"])))
         proposed = details.get("proposed")
         if isinstance(proposed, dict) and proposed:
             listed = [_change(mn, pair) for mn, pair in list(proposed.items())[:MAX_CHANGES]]

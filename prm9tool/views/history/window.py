@@ -12,7 +12,7 @@ import threading
 from collections.abc import Callable
 from pathlib import Path
 
-from PySide6.QtCore import QModelIndex, Signal
+from PySide6.QtCore import QEvent, QModelIndex, Signal
 from PySide6.QtWidgets import (
     QAbstractItemView,
     QDialog,
@@ -109,6 +109,12 @@ class HistoryWindow(QDialog):
         self.resize(980, 520)
         if serial:
             self.reload()
+
+    def changeEvent(self, event: QEvent) -> None:
+        """The table follows the program language: its model builds its words again."""
+        if event.type() == QEvent.Type.LanguageChange:
+            self.model.retranslate()
+        super().changeEvent(event)
 
     # --- loading (off the GUI thread) -------------------------------------------------------
     def reload(self) -> None:
