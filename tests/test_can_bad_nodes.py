@@ -12,7 +12,7 @@ from contextlib import contextmanager
 import can
 import canopen
 import pytest
-from support.bad_node import FIRMWARE, TYPE_KEY, BadNode, Fault, Flood, prm9_objects
+from support.bad_node import FIRMWARE, TYPE_KEY, Fault, Flood, prm9_objects, serving_node
 from support.can_link_rig import E04, make_link_rig
 from support.canopen_rig import unique_channel
 
@@ -31,17 +31,6 @@ def rig(tmp_path, request):
     rig = make_link_rig(request.node.name, tmp_path)
     yield rig
     rig.close()
-
-
-@contextmanager
-def bad_node(channel: str, node_id: int, fault: Fault, **kwargs: object) -> Iterator[BadNode]:
-    bus = can.Bus(interface="virtual", channel=channel, receive_own_messages=False)
-    node = BadNode(bus, node_id, fault, **kwargs).start()  # type: ignore[arg-type]
-    try:
-        yield node
-    finally:
-        node.stop()
-        bus.shutdown()
 
 
 def bus_args(channel: str) -> list[str]:
@@ -76,7 +65,7 @@ def no_traceback(err: str) -> None:
 def test_a_node_answering_0x1000_only_is_listed_as_such_beside_the_healthy_valve(
     rig, data_dir, capsys
 ):
-    with bad_node(rig.options.channel, 11, Fault.ANSWERS_1000_ONLY):
+    with serving_node(rig.options.channel, 11, Fault.ANSWERS_1000_ONLY):
         code = main(["--list-devices", *bus_args(rig.options.channel)])
     out, err = capsys.readouterr()
     no_traceback(err)
@@ -86,7 +75,7 @@ def test_a_node_answering_0x1000_only_is_listed_as_such_beside_the_healthy_valve
 
 
 def test_batch_to_the_healthy_valve_succeeds_beside_a_broken_node(rig, data_dir, tmp_path, capsys):
-    with bad_node(rig.options.channel, 11, Fault.ANSWERS_1000_ONLY):
+    with serving_node(rig.options.channel, 11, Fault.ANSWERS_1000_ONLY):
         code = main(
             ["--batch", tuned_file(tmp_path), "--device", "can:10", *bus_args(rig.options.channel)]
         )
@@ -99,8 +88,8 @@ def test_batch_to_the_healthy_valve_succeeds_beside_a_broken_node(rig, data_dir,
 def test_two_nodes_at_one_id_are_named_and_neither_is_written(data_dir, tmp_path, capsys):
     channel = unique_channel("dup")
     with (
-        bad_node(channel, 12, Fault.NONE) as first,
-        bad_node(channel, 12, Fault.NONE, objects=prm9_objects(777002), delay_s=0.004),
+        serving_node(channel, 12, Fault.NONE) as first,
+        serving_node(channel, 12, Fault.NONE, objects=prm9_objects(777002), delay_s=0.004),
     ):
         listed = main(["--list-devices", *bus_args(channel)])
         out, err = capsys.readouterr()
@@ -136,7 +125,7 @@ def test_a_node_that_aborts_answers_late_or_is_no_valve_is_listed_and_refused(
     rig, data_dir, tmp_path, capsys, fault, kwargs, listed
 ):
     channel = rig.options.channel
-    with bad_node(channel, 11, fault, **kwargs) as node:
+    with serving_node(channel, 11, fault, **kwargs) as node:
         code = main(["--list-devices", *bus_args(channel)])
         out, err = capsys.readouterr()
         refused = main(["--batch", tuned_file(tmp_path), "--device", "can:11", *bus_args(channel)])
@@ -164,7 +153,7 @@ def test_a_refused_store_or_a_clamped_read_back_fails_the_batch_and_stores_nothi
     data_dir, tmp_path, capsys, fault, says
 ):
     channel = unique_channel("store")
-    with bad_node(channel, 11, fault, objects=prm9_objects(parameters=True)) as node:
+    with serving_node(channel, 11, fault, objects=prm9_objects(parameters=True)) as node:
         code = main(
             ["--batch", tuned_file(tmp_path, TYPE_KEY), "--device", "can:11", *bus_args(channel)]
         )
@@ -214,7 +203,7 @@ def test_two_nodes_at_one_id_are_found_by_their_heartbeats(
     channel = unique_channel("twin-heartbeats")
     bus = can.Bus(interface="virtual", channel=channel)
     flood = Flood(bus, 0x70D, first, other, period_s=0.02)
-    with bad_node(channel, 13, Fault.NONE):
+    with serving_node(channel, 13, Fault.NONE):
         flood.start()
         try:
             code = main(["--list-devices", *bus_args(channel)])
@@ -232,7 +221,7 @@ def test_two_nodes_at_one_id_are_found_by_their_heartbeats(
 def test_an_endless_upload_ends_at_its_size_bound_with_the_abort_naming_the_object(fault):
     channel = unique_channel("endless")
     with (
-        bad_node(channel, 11, fault) as node,
+        serving_node(channel, 11, fault) as node,
         channel_to(channel, 11) as sdo,
         pytest.raises(SdoTransferError) as caught,
     ):
@@ -255,7 +244,7 @@ def test_an_endless_upload_ends_at_its_size_bound_with_the_abort_naming_the_obje
 def test_an_upload_that_breaks_the_protocol_is_an_error_never_a_value(fault, code):
     channel = unique_channel("exact")
     with (
-        bad_node(channel, 11, fault) as node,
+        serving_node(channel, 11, fault) as node,
         channel_to(channel, 11) as sdo,
         pytest.raises(SdoTransferError) as caught,
     ):
@@ -270,7 +259,7 @@ def test_a_node_whose_uploads_break_is_listed_not_identified_never_with_a_value(
     fault, data_dir, capsys
 ):
     channel = unique_channel("listing")
-    with bad_node(channel, 11, fault):
+    with serving_node(channel, 11, fault):
         code = main(["--list-devices", *bus_args(channel)])
     out, err = capsys.readouterr()
     no_traceback(err)
@@ -282,7 +271,7 @@ def test_a_node_whose_uploads_break_is_listed_not_identified_never_with_a_value(
 def test_an_answer_to_another_request_is_named_not_a_timeout():
     channel = unique_channel("other")
     with (
-        bad_node(channel, 11, Fault.OTHER_OBJECT),
+        serving_node(channel, 11, Fault.OTHER_OBJECT),
         channel_to(channel, 11) as sdo,
         pytest.raises(SdoTransferError, match="an answer to another request"),
     ):
@@ -292,7 +281,7 @@ def test_an_answer_to_another_request_is_named_not_a_timeout():
 def test_a_timeout_after_answers_names_what_happened_and_aborts_with_the_index():
     channel = unique_channel("stopped")
     with (
-        bad_node(channel, 11, Fault.ANSWERS_1000_ONLY) as node,
+        serving_node(channel, 11, Fault.ANSWERS_1000_ONLY) as node,
         channel_to(channel, 11, 0.1) as sdo,
     ):
         assert sdo.read_u32(0x1000, 0) == 0x198
@@ -305,7 +294,7 @@ def test_a_timeout_after_answers_names_what_happened_and_aborts_with_the_index()
 def test_short_answer_frames_are_errors():
     channel = unique_channel("short-frames")
     with (
-        bad_node(channel, 11, Fault.SHORT_FRAMES),
+        serving_node(channel, 11, Fault.SHORT_FRAMES),
         channel_to(channel, 11) as sdo,
         pytest.raises(SdoTransferError, match="an answer of 3 bytes"),
     ):
@@ -317,7 +306,7 @@ def test_a_control_mode_no_prm9_has_is_refused_before_anything_is_written(
     data_dir, tmp_path, capsys
 ):
     channel = unique_channel("mode")
-    with bad_node(channel, 11, Fault.NONE, objects=prm9_objects(control_mode=127)) as node:
+    with serving_node(channel, 11, Fault.NONE, objects=prm9_objects(control_mode=127)) as node:
         before = dict(node.objects)
         code = main(
             ["--batch", tuned_file(tmp_path, TYPE_KEY), "--device", "can:11", *bus_args(channel)]
@@ -349,7 +338,7 @@ def test_values_no_prm9_holds_make_the_node_not_identified(objects, problem):
     channel = unique_channel("values")
     shared = canbus.acquire(canbus.CanOptions("virtual", channel))
     try:
-        with bad_node(channel, 11, Fault.NONE, objects={**prm9_objects(), **objects}):
+        with serving_node(channel, 11, Fault.NONE, objects={**prm9_objects(), **objects}):
             info = identify_node(shared, 11)
     finally:
         canbus.release(shared)
@@ -360,7 +349,7 @@ def test_a_well_behaved_raw_node_is_identified():
     channel = unique_channel("good")
     shared = canbus.acquire(canbus.CanOptions("virtual", channel))
     try:
-        with bad_node(channel, 11, Fault.NONE):
+        with serving_node(channel, 11, Fault.NONE):
             info = identify_node(shared, 11)
     finally:
         canbus.release(shared)
@@ -377,7 +366,7 @@ def test_a_padded_answer_with_garbage_is_no_value_of_the_type(data_dir):
     limta = CATALOGUE["LIMTA"]
     objects = {**prm9_objects(), limta.key: b"\x60\x09\x12\x34"}  # 2400, then garbage
     with (
-        bad_node(channel, 11, Fault.NONE, objects=objects) as node,
+        serving_node(channel, 11, Fault.NONE, objects=objects) as node,
         CanopenSession(canbus.CanOptions("virtual", channel), 11) as session,
     ):
         with pytest.raises(ProtocolError, match="is no UNSIGNED16"):
@@ -392,7 +381,7 @@ def test_a_download_from_a_node_whose_uploads_break_writes_no_file(
 ):
     channel = unique_channel("download")
     out = tmp_path / "valve.prm"
-    with bad_node(channel, 11, fault):
+    with serving_node(channel, 11, fault):
         code = main(["--batch", "--download", str(out), "--device", "can:11", *bus_args(channel)])
     err = capsys.readouterr().err
     no_traceback(err)

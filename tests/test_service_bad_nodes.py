@@ -8,11 +8,10 @@ from __future__ import annotations
 
 import time
 from collections.abc import Iterator
-from contextlib import contextmanager
+from contextlib import ExitStack, contextmanager
 
-import can
 import pytest
-from support.bad_node import IDENTITY, BadNode, Fault, prm9_objects
+from support.bad_node import IDENTITY, BadNode, Fault, prm9_objects, serving_node
 from support.canopen_rig import unique_channel
 
 import prm9tool
@@ -28,18 +27,14 @@ def nodes(*specs: dict[str, object]) -> Iterator[tuple[str, list[BadNode]]]:
     """BadNodes at node 11 on a fresh virtual channel (each spec: BadNode's keywords; none:
     nothing answers at node 11); yields the channel and the nodes."""
     channel = unique_channel("service")
-    buses = [can.Bus(interface="virtual", channel=channel) for _ in specs]
-    started = []
-    try:
-        for bus, spec in zip(buses, specs, strict=True):
-            spec = {"objects": prm9_objects(parameters=True), **spec}
-            started.append(BadNode(bus, 11, **spec).start())  # type: ignore[arg-type]
+    with ExitStack() as stack:
+        started = [
+            stack.enter_context(
+                serving_node(channel, 11, **{"objects": prm9_objects(parameters=True), **spec})
+            )
+            for spec in specs
+        ]
         yield channel, started
-    finally:
-        for node in started:
-            node.stop()
-        for bus in buses:
-            bus.shutdown()
 
 
 def cli(channel: str, *args: str) -> int:

@@ -7,6 +7,8 @@ misbehaves in one chosen way (:class:`Fault`). :class:`BadLssSlave` is an LSS sl
 (CiA 305) that can acknowledge every request, add stray frames, or answer "inquire node ID"
 with random bytes. Both run a receive thread on their own python-can bus: the ``virtual``
 interface in-process, or ``udp_multicast`` in another process (tests/support/bad_node_driver.py).
+:func:`serving_node` is the in-process set-up the tests share: a BadNode on a bus of its own
+on a virtual channel, stopped and its bus shut down afterwards.
 """
 
 from __future__ import annotations
@@ -15,8 +17,11 @@ import random
 import struct
 import threading
 import time
+from collections.abc import Iterator
+from contextlib import contextmanager
 from dataclasses import dataclass, field
 from enum import Enum
+from typing import Any
 
 import can
 
@@ -221,6 +226,24 @@ class BadNode:
         self._pos += len(chunk)
         last = self._pos >= len(value)
         return bytes([toggle | ((7 - len(chunk)) << 1) | last]) + chunk.ljust(7, b"\0")
+
+
+@contextmanager
+def serving_node(
+    channel: str, node_id: int, fault: Fault = Fault.NONE, **kwargs: Any
+) -> Iterator[BadNode]:
+    """A started :class:`BadNode` at ``node_id`` with ``fault`` (``kwargs``: its other fields)
+    on a bus of its own on the in-process ``virtual`` interface's ``channel``; stopped, and its
+    bus shut down, at the end of the ``with``."""
+    bus = can.Bus(interface="virtual", channel=channel, receive_own_messages=False)
+    node: BadNode | None = None
+    try:
+        node = BadNode(bus, node_id, fault, **kwargs).start()
+        yield node
+    finally:
+        if node is not None:
+            node.stop()
+        bus.shutdown()
 
 
 @dataclass
