@@ -91,6 +91,12 @@ def main() -> int:
                         help="the SYNC period for every run (default: 1 ms, 2 ms above 16 valves)")  # fmt: skip
     parser.add_argument("--dump", metavar="PREFIX",
                         help="write each run's SYNC and TPDO1 times to PREFIX.N.json")  # fmt: skip
+    parser.add_argument("--serve-lag", action="store_true",
+                        help="also print the serving process's own view: each valve's SYNC "
+                        "handled how long after it arrived (benchmarks/serve_lag.py)")  # fmt: skip
+    parser.add_argument("--toggle-min-batch", metavar="A,B",
+                        help="with --serve-lag: switch the valves' batch size between A and B "
+                        "cycles every 0.5 s, figures per size (a paired comparison)")  # fmt: skip
     parser.add_argument("--per-frame-only", type=int, metavar="N", help=argparse.SUPPRESS)
     args = parser.parse_args()
     if os.environ.get(INSIDE) != "1":
@@ -98,6 +104,8 @@ def main() -> int:
     if args.per_frame_only:
         per_frame(args.per_frame_only)
         return 0
+    if args.quick:
+        args.serve_lag = True  # the probe is smoke-run too
     counts = [1, 2] if args.quick else [int(n) for n in args.valves.split(",")]
     seconds = 1.0 if args.quick else args.seconds
     if counts[0] != 1:
@@ -121,7 +129,8 @@ def main() -> int:
             profile = f"{args.profile}.{label}.{count}" if args.profile else None
             dump = f"{args.dump}.{label}.{count}.json" if args.dump else None
             period = args.period or (1.0 if count <= 16 else 2.0)
-            result = run(count, period, seconds, profile, tree, dump)
+            lag = _lag_probe(args, label, count)
+            result = run(count, period, seconds, profile, tree, dump, lag)
             results[label].append(result)
             print(f"{label:>7} {result.valves:>6} {result.period_ms:>4g}ms {result.on_time:>8.2%} "
                   f"{result.fifo_on_time:>7.2%} "
@@ -129,6 +138,11 @@ def main() -> int:
                   f"{result.p50_ms:>5.2f}ms {result.p99_ms:>5.2f}ms {result.max_ms:>5.1f}ms "
                   f"{result.syncs_per_s:>7.0f} {result.emcy:>5} {result.load:>5.2f} {result.dropped:>6} {result.plc_dropped:>6} {result.serve_cpu:>5.2f} {result.serve_wait:>5.2f} {result.plc_cpu:>7.2f} {result.plc_wait:>5.2f}",
                   flush=True)  # fmt: skip
+            if lag:
+                from serve_lag import summary
+
+                print("\n".join(summary(lag[1])), flush=True)
+                Path(lag[1]).unlink()
     mine = results["this"]
     reference = mine[0]
     for result in mine[1:]:
@@ -141,6 +155,15 @@ def main() -> int:
                   f"{before.received:.1%}, serve CPU per frame received "
                   f"{_cpu_per_frame(after) / max(_cpu_per_frame(before), 1e-9):.2f}x")  # fmt: skip
     return 0
+
+
+def _lag_probe(args: argparse.Namespace, label: str, count: int) -> list[str]:
+    """The serve_lag.py command-line prefix for this run (empty: no --serve-lag)."""
+    if not args.serve_lag:
+        return []
+    out = str(Path(tempfile.gettempdir()) / f"prm9-serve-lag.{os.getpid()}.{label}.{count}.json")
+    toggle = ["--toggle-min-batch", args.toggle_min_batch] if args.toggle_min_batch else []
+    return [str(Path(__file__).with_name("serve_lag.py")), out, *toggle]
 
 
 def _cpu_per_frame(result: Result) -> float:
@@ -297,13 +320,14 @@ def run(
     profile: str | None = None,
     tree: str = TREE,
     dump: str | None = None,
+    lag: list[str] | None = None,
 ) -> Result:
     """Serve ``count`` valves (nodes 1…count) from ``tree``, commission them, run SYNC for
     ``seconds``."""
     import can
 
     with tempfile.TemporaryDirectory() as data:
-        serve = _serve(count, data, profile, tree)
+        serve = _serve(count, data, profile, tree, lag or [])
         try:
             bus = can.Bus(interface="udp_multicast", channel=GROUP)
             enlarge_receive_buffer(bus)  # the PLC takes 2N + 1 frames a millisecond too
@@ -326,8 +350,9 @@ def _caused(node: int, data: bytes, count: int) -> bool:
     return count >= FAULTY and node == FAULTY and code in (0x5411, 0x0000)
 
 
-def _serve(count: int, data: str, profile: str | None, tree: str) -> subprocess.Popen[str]:
-    sampler = [str(Path(__file__).with_name("stack_sampler.py")), profile] if profile else []
+def _serve(count: int, data: str, profile: str | None, tree: str,
+           lag: list[str]) -> subprocess.Popen[str]:  # fmt: skip
+    sampler = [str(Path(__file__).with_name("stack_sampler.py")), profile] if profile else lag
     command = [sys.executable, *sampler, "-m", "prm9tool", "--can-interface", "udp_multicast",
                "--can-channel", GROUP]  # fmt: skip
     for node in range(1, count + 1):
