@@ -25,6 +25,7 @@ from prm9tool.catalogue.canopen_switches import POSITIONS, node_position
 from prm9tool.cli import serve_input
 from prm9tool.device import emulated_valves, factory
 from prm9tool.device.canlink.bus import CanOptions, open_bus
+from prm9tool.device.emulator.canopen_watch import LATE_SYNC_MS
 from prm9tool.device.emulator.paced_group import PacedGroup
 from prm9tool.device.emulator.twinfile import TwinFileError
 from prm9tool.device.records import DeviceState, NmtState
@@ -93,11 +94,13 @@ def run(args: argparse.Namespace) -> int:
     pacing = PacedGroup([item.valve for item in served], driver=shared.hub)
     pacing.start()
     serve_input.listen(sys.stdin, [item.valve for item in served], _say)
+    unanswered_due = [time.monotonic() + LATENESS_REPORT_S]
     try:
         while not stop.wait(POLL_S):
             for item in served:
                 _report_changes(item, options)
                 _report_lateness(item)
+            _report_unanswered(served, unanswered_due)
     finally:
         _restore_signals(previous)
         pacing.stop()
@@ -223,6 +226,29 @@ def _report_lateness(item: _Served) -> None:
         f"{LATENESS_REPORT_S:g} s, at most {late.worst_s * 1e3:.1f} ms{dropped} (a busy PC; "
         "SYNC and RPDO deadlines are judged at reception, so no fault from it)"
     )
+
+
+def _report_unanswered(served: list[_Served], due: list[float]) -> None:
+    """At most once a second, one line for every valve: the SYNCs it left without TPDO, as it
+    got to them over LATE_SYNC_MS after they arrived (this PC fell behind the bus)."""
+    now = time.monotonic()
+    if now < due[0]:
+        return
+    due[0] = now + LATENESS_REPORT_S
+    counts, worst = [], 0.0
+    for item in served:
+        count, late_ms = item.slave.take_unanswered_syncs()
+        if count:
+            counts.append(f"{item.label} {count}x")
+            worst = max(worst, late_ms)
+    if counts:
+        _say(
+            f"SYNCs answered with no TPDO in the last {LATENESS_REPORT_S:g} s, as this PC got "
+            f"to them more than {LATE_SYNC_MS:g} ms after they arrived (at most "
+            f"{worst:.0f} ms): {', '.join(counts)}. A TPDO that late would carry the state of "
+            "a later moment; serve fewer valves per process or a slower SYNC "
+            '(docs/plc-testing.md, "Limits")'
+        )
 
 
 def _emcy_line(code: int, register: int, kind: ErrorKind | None) -> str:

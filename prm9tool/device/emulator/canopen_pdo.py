@@ -178,6 +178,15 @@ class TpdoLogic:
         channel.sync_count = 0
         return self.data()
 
+    def count_sync(self) -> None:
+        """A SYNC this TPDO does not answer (the serving PC got to it too late): the every-
+        n-th count goes on as :meth:`on_sync` counts, nothing is sampled or sent."""
+        channel = self.channel
+        if channel.valid and channel.trans_type in SYNC_TYPES and channel.trans_type:
+            channel.sync_count += 1
+            if channel.sync_count >= channel.trans_type:
+                channel.sync_count = 0
+
     def on_tick(self, now_ms: int) -> bytes | None:
         """Data to send at ``now_ms`` (event timer, or change of data when the timer is 0)."""
         channel = self.channel

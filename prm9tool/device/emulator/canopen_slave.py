@@ -32,7 +32,7 @@ from prm9tool.device.emulator.canopen_pdo import (
 )
 from prm9tool.device.emulator.canopen_rules import check_comm_write
 from prm9tool.device.emulator.canopen_sdo import SdoServer
-from prm9tool.device.emulator.canopen_watch import TimingWatches
+from prm9tool.device.emulator.canopen_watch import LATE_SYNC_MS, TimingWatches
 from prm9tool.device.records import NmtState
 
 if TYPE_CHECKING:
@@ -99,6 +99,8 @@ class CanopenSlave:
         self.routes: frozenset[int] = frozenset()  # the COB-IDs it takes (SharedBus routing)
         self.routes_changed: Callable[[], None] = lambda: None
         self._watch_errors: set[str] = set()  # sync_error / rpdo_timeout reported, cause on
+        self._unanswered_syncs = 0  # SYNCs it got to over LATE_SYNC_MS late (no TPDO)
+        self._unanswered_worst_ms = 0.0
         self._closed = False
         self._silent_until_ms = 0  # CiA 305 activate bit timing: no frames until then
         self.state = NmtState.OFF
@@ -305,19 +307,36 @@ class CanopenSlave:
     def _on_sync(self, arrival_ms: float) -> None:
         if self.state is not NmtState.OPERATIONAL:
             return
-        if self._watches.paced:  # the TPDOs sample the moment the SYNC came, as a valve's
+        watches = self._watches
+        late_ms = watches.wall_ms() - arrival_ms if watches.paced else 0.0
+        answer = late_ms <= LATE_SYNC_MS
+        if not answer:  # behind the bus: a TPDO now would carry a state sampled that late
+            self._unanswered_syncs += 1
+            self._unanswered_worst_ms = max(self._unanswered_worst_ms, late_ms)
+        elif watches.paced:  # the TPDOs sample the moment the SYNC came, as a valve's
             self._valve.run_due_by(arrival_ms / 1000.0)  # (the watches' clock is monotonic)
             if self.state is not NmtState.OPERATIONAL:
                 return  # those cycles' 1 ms tasks changed it (a power cycle, an NMT reset)
         if self._watch_errors:
             self._watch_error_gone("sync_error", "sync_ok")
-        self._watches.sync_received(arrival_ms)
+        watches.sync_received(arrival_ms)
         for rpdo in self._rpdo_logic:
             if rpdo.channel.pending is not None:
                 rpdo.on_sync()
         for tpdo in self._sync_tpdos:
-            if (data := tpdo.on_sync()) is not None:
+            if not answer:
+                tpdo.count_sync()
+            elif (data := tpdo.on_sync()) is not None:
                 self._transmit(tpdo, data)
+
+    def take_unanswered_syncs(self) -> tuple[int, float]:
+        """SYNCs left without TPDO since the last call, as they came over
+        :data:`~.canopen_watch.LATE_SYNC_MS` late to this valve (the PC fell behind the bus),
+        and the latest of them (ms after it arrived); then counts afresh."""
+        with self._valve.lock:
+            taken = (self._unanswered_syncs, self._unanswered_worst_ms)
+            self._unanswered_syncs, self._unanswered_worst_ms = 0, 0.0
+        return taken
 
     def _send(self, can_id: int, data: bytes) -> None:
         if self._now_ms < self._silent_until_ms:

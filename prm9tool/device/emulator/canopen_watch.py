@@ -26,6 +26,9 @@ from typing import Protocol
 SYNC_TIMEOUT_FACTOR = 1.5  # decision: SYNC missing for 1.5 x 0x1006 = SYNC error (8100h)
 RX_POLL_S = 0.1  # the receive thread looks at its stop flag at least this often
 MAX_AGE_S = 5.0  # a time stamp older than this (or in the future) is not a reception time
+# decision: a SYNC the paced valve gets to more than this after it arrived (the PC fell behind
+# the bus: frames queued in the socket) is counted but answered with no TPDO (CanopenSlave)
+LATE_SYNC_MS = 10.0
 
 
 class Deadline(Protocol):
