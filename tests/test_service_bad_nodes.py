@@ -148,6 +148,27 @@ def test_export_dcf_from_a_node_silent_after_identifying_is_exit_6_and_no_file(
     assert "no DCF was written" in err and not out.exists()
 
 
+# --- --signature, --characterize ----------------------------------------------------------------
+@pytest.mark.parametrize(
+    "command",
+    [["--signature"], ["--characterize", "--json", "eol.json"]],
+    ids=["signature", "characterize"],
+)
+def test_a_test_whose_set_up_the_node_refuses_is_exit_1_naming_the_command(
+    data_dir, tmp_path, monkeypatch, capsys, command
+):
+    # an SDO abort while the rig is made (before anything moves): the valve refused, as
+    # --set and --export-dcf say it, not a communication error (exit 1, not 6)
+    monkeypatch.chdir(tmp_path)
+    with nodes({"fault": Fault.ABORTS, "sound": IDENTITY}) as (channel, _):
+        code = cli(channel, *command, "--history-db", f"sqlite:///{tmp_path / 'h.db'}")
+    err = said(capsys)
+    assert code == ExitCode.VERIFY_FAILED, err
+    assert f"prm9tool: {command[0]}: 0x6301/1: abort 0x05040001" in err, err
+    assert err.rstrip().endswith("; nothing was tested"), err
+    assert not (tmp_path / "eol.json").exists()
+
+
 # --- --restore-factory, --restart --------------------------------------------------------------
 def test_restore_factory_whose_restart_fails_says_the_factory_values_are_stored(
     data_dir, capsys, quick_boot
