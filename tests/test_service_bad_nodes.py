@@ -239,6 +239,24 @@ def test_enable_of_a_node_that_ignores_the_control_word_is_exit_1_in_words(data_
     err = said(capsys)
     assert code == ExitCode.VERIFY_FAILED
     assert "--enable: the valve is in NOT_READY after the control word 08h → 09h → 0Bh → 0Fh" in err
+    assert (  # what to do, as every other refusal of the enable says it
+        ": it has not finished starting up (about 2 s after power-up) — wait until it has, then "
+        "enable again; if it stays in NOT_READY, check its supply voltage (19.2 … 28 V)" in err
+    ), err
+
+
+def test_api_enable_of_a_valve_still_not_ready_says_to_wait_and_check_the_supply(data_dir):
+    from prm9tool.device.enabling import NotEnabledError
+
+    with (
+        nodes({"fault": Fault.NONE}) as (channel, _),
+        prm9tool.connect("can:11", can_interface="virtual", can_channel=channel) as valve,
+        pytest.raises(NotEnabledError) as caught,
+    ):
+        valve.enable()
+    words = str(caught.value)
+    assert words.startswith("the valve is in NOT_READY after the control word"), words
+    assert "wait until it has, then enable again" in words and "check its supply" in words
 
 
 # --- nodes that are no valve, none, or two -------------------------------------------------------
