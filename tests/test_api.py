@@ -180,6 +180,26 @@ def test_record_history_false_records_nothing(tmp_path):
     assert prm9tool.history.records(4712) == []
 
 
+@pytest.mark.parametrize("door", ["api", "cli"])
+def test_a_factory_reset_on_a_fresh_history_records_its_backup_once(door, capsys):
+    # the backup is the first record: opening the database imports old backup files, and it
+    # took the one just written as well — two backup records of one file
+    from prm9tool.cli.main import main
+
+    if door == "api":
+        with prm9tool.connect(f"emulator:{KEY}:4713") as valve:
+            valve.restore_factory(confirm_hydraulics_off=True)
+    else:
+        assert main(["--emulator", f"{KEY}:4713", "--restore-factory", "--hydraulics-safe"]) == 0
+    records = prm9tool.history.records(4713)
+    assert [r["operation"] for r in records] == ["backup", "restore-factory"], records
+    assert records[0]["details"]["file"] == records[1]["details"]["backup"]
+    with prm9tool.connect(f"emulator:{KEY}:4713") as valve:  # the backup is there: none more
+        valve.restore_factory(confirm_hydraulics_off=True)
+    operations = [r["operation"] for r in prm9tool.history.records(4713)]
+    assert operations == ["backup", "restore-factory", "restore-factory"], operations
+
+
 def test_store_and_factory_reset_are_recorded_as_the_gui_records_them(valve):
     from prm9tool.history.recorder import Recorder
 

@@ -143,6 +143,27 @@ def test_export_dcf_from_a_node_silent_after_identifying_is_exit_6_and_no_file(
     assert "no DCF was written" in err and not out.exists()
 
 
+# --- --signature, --characterize ----------------------------------------------------------------
+@pytest.mark.parametrize(
+    "command",
+    [["--signature"], ["--characterize", "--json", "eol.json"]],
+    ids=["signature", "characterize"],
+)
+def test_a_test_whose_set_up_the_node_refuses_is_exit_1_naming_the_command(
+    data_dir, tmp_path, monkeypatch, capsys, command
+):
+    # an SDO abort while the rig is made (before anything moves): the valve refused, as
+    # --set and --export-dcf say it, not a communication error (exit 1, not 6)
+    monkeypatch.chdir(tmp_path)
+    with nodes({"fault": Fault.ABORTS, "sound": IDENTITY}) as (channel, _):
+        code = cli(channel, *command, "--history-db", f"sqlite:///{tmp_path / 'h.db'}")
+    err = said(capsys)
+    assert code == ExitCode.VERIFY_FAILED, err
+    assert f"prm9tool: {command[0]}: 0x6301/1: abort 0x05040001" in err, err
+    assert err.rstrip().endswith("; nothing was tested"), err
+    assert not (tmp_path / "eol.json").exists()
+
+
 # --- --restore-factory, --restart --------------------------------------------------------------
 def test_restore_factory_whose_restart_fails_says_the_factory_values_are_stored(
     data_dir, capsys, quick_boot
@@ -213,6 +234,24 @@ def test_enable_of_a_node_that_ignores_the_control_word_is_exit_1_in_words(data_
     err = said(capsys)
     assert code == ExitCode.VERIFY_FAILED
     assert "--enable: the valve is in NOT_READY after the control word 08h → 09h → 0Bh → 0Fh" in err
+    assert (  # what to do, as every other refusal of the enable says it
+        ": it has not finished starting up (about 2 s after power-up) — wait until it has, then "
+        "enable again; if it stays in NOT_READY, check its supply voltage (19.2 … 28 V)" in err
+    ), err
+
+
+def test_api_enable_of_a_valve_still_not_ready_says_to_wait_and_check_the_supply(data_dir):
+    from prm9tool.device.enabling import NotEnabledError
+
+    with (
+        nodes({"fault": Fault.NONE}) as (channel, _),
+        prm9tool.connect("can:11", can_interface="virtual", can_channel=channel) as valve,
+        pytest.raises(NotEnabledError) as caught,
+    ):
+        valve.enable()
+    words = str(caught.value)
+    assert words.startswith("the valve is in NOT_READY after the control word"), words
+    assert "wait until it has, then enable again" in words and "check its supply" in words
 
 
 # --- nodes that are no valve, none, or two -------------------------------------------------------

@@ -1925,6 +1925,10 @@ Poslední akce možná nebyla dokončena. Uložte svou práci pod novým názvem
             <translation>Ventil se ještě spouští (asi 2 s po zapnutí): povolte jej potom</translation>
         </message>
         <message>
+            <source>the valve is in NOT_READY after the control word 08h → 09h → 0Bh → 0Fh: it has not finished starting up (about 2 s after power-up) — wait until it has, then enable again; if it stays in NOT_READY, check its supply voltage (19.2 … 28 V)</source>
+            <translation>Ventil je po řídicím slově 08h → 09h → 0Bh → 0Fh ve stavu NOT_READY: ještě nedokončil spuštění (asi 2 s po zapnutí) — počkejte, až se spustí, a pak jej znovu povolte; pokud zůstane ve stavu NOT_READY, zkontrolujte jeho napájecí napětí (19,2 … 28 V)</translation>
+        </message>
+        <message>
             <source>the valve is in {0} after the control word 08h → 09h → 0Bh → 0Fh, not DEVICE_MODE_ACTIVE</source>
             <translation>Ventil je po řídicím slově 08h → 09h → 0Bh → 0Fh ve stavu {0}, ne DEVICE_MODE_ACTIVE</translation>
         </message>

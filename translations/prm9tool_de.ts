@@ -1915,6 +1915,10 @@ Die letzte Aktion wurde womöglich nicht vollständig ausgeführt. Speichern Sie
             <translation>Das Ventil startet noch (etwa 2 s nach dem Einschalten): geben Sie es danach frei</translation>
         </message>
         <message>
+            <source>the valve is in NOT_READY after the control word 08h → 09h → 0Bh → 0Fh: it has not finished starting up (about 2 s after power-up) — wait until it has, then enable again; if it stays in NOT_READY, check its supply voltage (19.2 … 28 V)</source>
+            <translation>Das Ventil ist nach dem Steuerwort 08h → 09h → 0Bh → 0Fh in NOT_READY: es hat seinen Start noch nicht beendet (etwa 2 s nach dem Einschalten) — warten Sie, bis es gestartet ist, und geben Sie es dann erneut frei; bleibt es in NOT_READY, prüfen Sie seine Versorgungsspannung (19,2 … 28 V)</translation>
+        </message>
+        <message>
             <source>the valve is in {0} after the control word 08h → 09h → 0Bh → 0Fh, not DEVICE_MODE_ACTIVE</source>
             <translation>Das Ventil ist nach dem Steuerwort 08h → 09h → 0Bh → 0Fh in {0}, nicht in DEVICE_MODE_ACTIVE</translation>
         </message>

@@ -37,7 +37,7 @@ from prm9tool.characterize.run import Characterization, characterize, report_dat
 from prm9tool.cli.batch_devices import BatchError, can_options, select
 from prm9tool.device.emulated_valves import emulated_valve
 from prm9tool.device.factory import open_session, parse_emulator_spec
-from prm9tool.errors import CommunicationError, ExitCode, Prm9Error
+from prm9tool.errors import CommunicationError, ExitCode, Prm9Error, SdoAbortError
 from prm9tool.files.atomicfile import atomic_write
 
 if TYPE_CHECKING:
@@ -160,6 +160,10 @@ def _rig(
         return rig_for_session(session), session.close
     except BaseException as exc:
         session.close()
+        if isinstance(exc, SdoAbortError):  # the valve refused a read: 1, as --set, --export-dcf
+            raise BatchError(
+                ExitCode.VERIFY_FAILED, f"{command}: {exc}; nothing was tested"
+            ) from exc
         if isinstance(exc, Prm9Error):
             raise BatchError(ExitCode.COMMUNICATION, str(exc)) from exc
         raise

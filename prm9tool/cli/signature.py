@@ -6,7 +6,7 @@ words on standard output, the PDF (``--report OUT.pdf``) and the JSON (``--json`
 ``--json OUT.json`` writes it), a ``signature`` history record. ``--enable --hydraulics-safe``
 as with ``--characterize``. Exit 0: no figure drifted beyond its limit; 8: one did (or the
 test was stopped); 7: no birth certificate in the history (nothing moved); 2 usage; 4/6 the
-valve not found or not answering. Through :func:`prm9tool.characterize.drift.signature`, as the
+valve not found or not answering; 1 the valve refused an access before the test (SDO abort). Through :func:`prm9tool.characterize.drift.signature`, as the
 window and ``Valve.signature()``.
 """
 

@@ -42,6 +42,14 @@ _STOPPED = QT_TRANSLATE_NOOP(
 _BOOTING = QT_TRANSLATE_NOOP(
     "Errors", "the valve is still starting up (about 2 s after power-up): enable it then"
 )
+# NOT_READY is CiA 408's state before the valve's start-up (power on, self test) is done; the
+# start-up takes about 2 s after power-up (manual §1.5, §5.6), the supply 19.2 … 28 V (§2.2)
+_NOT_READY = QT_TRANSLATE_NOOP(
+    "Errors",
+    "the valve is in NOT_READY after the control word 08h → 09h → 0Bh → 0Fh: it has not "
+    "finished starting up (about 2 s after power-up) — wait until it has, then enable again; "
+    "if it stays in NOT_READY, check its supply voltage (19.2 … 28 V)",
+)
 _OTHER = QT_TRANSLATE_NOOP(
     "Errors",
     "the valve is in {0} after the control word 08h → 09h → 0Bh → 0Fh, not DEVICE_MODE_ACTIVE",
@@ -100,6 +108,8 @@ def why_not(status: ValveStatus) -> Message:
         return _BOOTING()
     if status.nmt_state is NmtState.STOPPED:
         return _STOPPED()
+    if state is DeviceState.NOT_READY:
+        return _NOT_READY()
     if state in _FAULTS:
         code = next(iter(status.active_errors), status.error_code)
         if code:

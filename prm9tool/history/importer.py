@@ -34,14 +34,18 @@ class ImportResult:
     problems: list[tuple[Path, str]] = field(default_factory=list)
 
 
-def import_backups(store: HistoryStore, folder: Path | None = None) -> ImportResult:
-    """Import every backup file under ``folder`` (default: the user data dir's backups)."""
+def import_backups(
+    store: HistoryStore, folder: Path | None = None, skip: Path | None = None
+) -> ImportResult:
+    """Import every backup file under ``folder`` (default: the user data dir's backups);
+    ``skip``: a file the caller records itself (the backup just written), left out."""
     root = folder or user_data_dir() / "backups"
     result = ImportResult()
     files = sorted(root.glob("*/*.prm"), key=_age) if root.is_dir() else []
+    skipped = None if skip is None else source_name(skip)
     for path in files:
         source = source_name(path)
-        if store.imported(source):
+        if source == skipped or store.imported(source):
             result.skipped += 1
             continue
         try:

@@ -151,23 +151,26 @@ class Recorder:
         self._lock = threading.RLock()
         self._later: list[Entry] = []  # add_later(): written before the store is next used
 
-    def store(self) -> HistoryStore:
-        """The open database (opened and migrated on first use); HistoryError if it cannot."""
+    def store(self, recording: Entry | None = None) -> HistoryStore:
+        """The open database (opened and migrated on first use); HistoryError if it cannot.
+        ``recording``: the entry the caller appends next; when it records a backup file just
+        written, the first opening's import leaves that file to it (one record, not two)."""
         from prm9tool.history.store import HistoryStore  # SQLAlchemy: only when recording
 
         with self._lock:
             if self._store is None:
                 self._store = HistoryStore(self.url)
                 self._flush(self._store)
-                self._import_backups_once(self._store)
+                self._import_backups_once(self._store, _backup_file(recording))
             later, self._later = self._later, []
             for entry in later:  # before anything else reads or writes the store
                 self._append_or_queue(self._store, entry)
             return self._store
 
-    def _import_backups_once(self, store: HistoryStore) -> None:
+    def _import_backups_once(self, store: HistoryStore, recorded: Path | None = None) -> None:
         """The backup files of earlier versions become records, once per database and station
-        (a marker file remembers it; the import itself never adds a file twice either)."""
+        (a marker file remembers it; the import itself never adds a file twice either).
+        ``recorded``: a backup file the entry being added records itself, not imported."""
         import hashlib
 
         from prm9tool.history.importer import import_backups
@@ -178,7 +181,7 @@ class Recorder:
         marker = user_data_dir() / f"history-imported-{digest}"
         if marker.exists() or not backups.is_dir():
             return
-        result = import_backups(store, backups)
+        result = import_backups(store, backups, skip=recorded)
         for path, problem in result.problems:
             log.warning("history: backup %s not imported: %s", path, problem)
         with contextlib.suppress(OSError):
@@ -211,7 +214,7 @@ class Recorder:
     def add(self, entry: Entry) -> str:
         """Append a prepared entry (database, else the local queue)."""
         try:
-            self.store().append(entry, _marks_backup(entry))
+            self.store(entry).append(entry, _marks_backup(entry))
         except HistoryError as exc:
             log.warning("history: %s; the record is kept in %s", exc, self.queue)
             self._enqueue(entry, exc)
@@ -325,12 +328,20 @@ class Recorder:
             os.fsync(queue.fileno())
 
 
+def _backup_file(entry: Entry | None) -> Path | None:
+    """The backup file a ``backup`` entry records as it is written (None: none)."""
+    if entry is None or entry.operation != "backup":
+        return None
+    path = entry.details.get("file")
+    return Path(path) if path else None
+
+
 def _marks_backup(entry: Entry) -> Any:
     """A backup file recorded as it is written is never imported again (importer.py)."""
-    path = entry.details.get("file") if entry.operation == "backup" else None
-    if not path:
+    path = _backup_file(entry)
+    if path is None:
         return None
     from prm9tool.history.importer import mark_imported, source_name
 
-    source = source_name(Path(path))
+    source = source_name(path)
     return lambda conn, record_id: mark_imported(conn, source, record_id)
