@@ -98,11 +98,16 @@ def test_an_open_window_follows_a_language_switch_in_every_column_and_title(qtbo
         with qtbot.waitSignals([model.headerDataChanged, model.dataChanged], timeout=TIMEOUT):
             i18n.set_language("de")
         german = shown()
+        own = (window.windowTitle(), window.buttons["compare"].text(), window.state.text())
         i18n.set_language("cs")
         czech = shown()
     finally:
         i18n.set_language("en")
     assert german == ("Herunterladen", "Aus dem Ventil gelesen: beim Online-Gehen", "Vorgang")
+    # the window's own words too: title, buttons and the state line
+    assert own[:2] == ("Verlauf", "Die zwei gewählten Einträge vergleichen")
+    assert own[2].startswith("1 Eintrag in ")
+    assert window.windowTitle() == "History"
     assert czech == (
         "stažení z ventilu",
         "Načteno z ventilu: při přechodu do režimu online",

@@ -59,12 +59,12 @@ class HistoryWindow(QDialog):
         self._recorder = recorder
         self._valve_key = (serial, type_key) if serial and type_key else None
         self._restore_document, self._restore_valve = restore_document, restore_valve
-        self.setWindowTitle(self.tr("History"))
         add_context_help(self, "history")  # F1
         self.serial = QLineEdit(str(serial) if serial else "")
-        self.serial.setPlaceholderText(self.tr("serial number"))
-        show = QPushButton(self.tr("Show"))
+        show = self._show = QPushButton()
+        self._serial_label = QLabel()
         self.state = QLabel()
+        self._shown: tuple[int, str, bool] | None = None  # records, where, error: the state line
         self.state.setWordWrap(True)
         self.model = HistoryTableModel(self)
         self.table = QTableView(self)
@@ -75,17 +75,14 @@ class HistoryWindow(QDialog):
         # not stretched: the last column got only the room left ("tzer, Station, Verbin")
         self.table.horizontalHeader().setStretchLastSection(False)
         top = QHBoxLayout()
-        top.addWidget(QLabel(self.tr("Valve serial number:")))
+        top.addWidget(self._serial_label)
         top.addWidget(self.serial)
         top.addWidget(show)
         top.addStretch(1)
         self.buttons = {
-            "compare": QPushButton(self.tr("Compare the two selected records")),
-            "document": QPushButton(self.tr("Restore into the document")),
-            "valve": QPushButton(self.tr("Restore to the valve")),
-            "export": QPushButton(self.tr("Export…")),
-            "settings": QPushButton(self.tr("Database…")),
+            key: QPushButton() for key in ("compare", "document", "valve", "export", "settings")
         }
+        self._retranslate()
         actions = QHBoxLayout()
         for button in self.buttons.values():
             actions.addWidget(button)
@@ -111,10 +108,37 @@ class HistoryWindow(QDialog):
             self.reload()
 
     def changeEvent(self, event: QEvent) -> None:
-        """The table follows the program language: its model builds its words again."""
+        """The window follows the program language: its own words, and the table's (its model
+        builds them again)."""
         if event.type() == QEvent.Type.LanguageChange:
             self.model.retranslate()
+            self._retranslate()
         super().changeEvent(event)
+
+    def _retranslate(self) -> None:
+        self.setWindowTitle(self.tr("History"))
+        self.serial.setPlaceholderText(self.tr("serial number"))
+        self._show.setText(self.tr("Show"))
+        self._serial_label.setText(self.tr("Valve serial number:"))
+        texts = {
+            "compare": self.tr("Compare the two selected records"),
+            "document": self.tr("Restore into the document"),
+            "valve": self.tr("Restore to the valve"),
+            "export": self.tr("Export…"),
+            "settings": self.tr("Database…"),
+        }
+        for key, text in texts.items():
+            self.buttons[key].setText(text)
+        if self._shown is not None and not self._shown[2]:  # an error keeps its own words
+            self.state.setText(self._state_text())
+
+    def _state_text(self) -> str:
+        assert self._shown is not None
+        count, where, _error = self._shown
+        state = self.tr("%n record(s) in {0}", "", count).format(where)
+        if self.model.other_type:
+            state += "\n" + self.model.other_type_text()
+        return state
 
     # --- loading (off the GUI thread) -------------------------------------------------------
     def reload(self) -> None:
@@ -138,6 +162,7 @@ class HistoryWindow(QDialog):
     def _on_loaded(self, records: object, error: object) -> None:
         if isinstance(error, Exception):
             self.model.set_records([])
+            self._shown = (0, "", True)
             self.state.setText(error_text(error))
         else:
             assert isinstance(records, tuple)
@@ -145,10 +170,8 @@ class HistoryWindow(QDialog):
             serial = int(rows[0]["serial"]) if rows else None
             known = self._valve_key
             self.model.set_records(rows, known[1] if known and known[0] == serial else None)
-            state = self.tr("%n record(s) in {0}", "", len(rows)).format(where)
-            if self.model.other_type:
-                state += "\n" + self.model.other_type_text()
-            self.state.setText(state)
+            self._shown = (len(rows), where, False)
+            self.state.setText(self._state_text())
             self.table.scrollToBottom()
         self._update_buttons()
 
