@@ -230,7 +230,8 @@ def _report_lateness(item: _Served) -> None:
 
 def _report_unanswered(served: list[_Served], due: list[float]) -> None:
     """At most once a second, one line for every valve: the SYNCs it left without TPDO, as it
-    got to them over LATE_SYNC_MS after they arrived (this PC fell behind the bus)."""
+    got to them over LATE_SYNC_MS and two SYNC periods after they arrived (this PC fell
+    behind the bus)."""
     now = time.monotonic()
     if now < due[0]:
         return
@@ -244,8 +245,9 @@ def _report_unanswered(served: list[_Served], due: list[float]) -> None:
     if counts:
         _say(
             f"SYNCs answered with no TPDO in the last {LATENESS_REPORT_S:g} s, as this PC got "
-            f"to them more than {LATE_SYNC_MS:g} ms after they arrived (at most "
-            f"{worst:.0f} ms): {', '.join(counts)}. A TPDO that late would carry the state of "
+            f"to them more than {LATE_SYNC_MS:g} ms and two SYNC periods after they arrived "
+            f"(at most {worst:.0f} ms): {', '.join(counts)}. A TPDO that late would carry the "
+            "state of "
             "a later moment; serve fewer valves per process or a slower SYNC "
             '(docs/plc-testing.md, "Limits")'
         )

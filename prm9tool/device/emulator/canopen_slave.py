@@ -32,7 +32,11 @@ from prm9tool.device.emulator.canopen_pdo import (
 )
 from prm9tool.device.emulator.canopen_rules import check_comm_write
 from prm9tool.device.emulator.canopen_sdo import SdoServer
-from prm9tool.device.emulator.canopen_watch import LATE_SYNC_MS, TimingWatches
+from prm9tool.device.emulator.canopen_watch import (
+    LATE_SYNC_MS,
+    LATE_SYNC_PERIODS,
+    TimingWatches,
+)
 from prm9tool.device.records import NmtState
 
 if TYPE_CHECKING:
@@ -101,6 +105,7 @@ class CanopenSlave:
         self._watch_errors: set[str] = set()  # sync_error / rpdo_timeout reported, cause on
         self._unanswered_syncs = 0  # SYNCs it got to over LATE_SYNC_MS late (no TPDO)
         self._unanswered_worst_ms = 0.0
+        self._sync_arrival_ms: float | None = None  # the last SYNC's (its interval: lateness)
         self._closed = False
         self._silent_until_ms = 0  # CiA 305 activate bit timing: no frames until then
         self.state = NmtState.OFF
@@ -309,7 +314,9 @@ class CanopenSlave:
             return
         watches = self._watches
         late_ms = watches.wall_ms() - arrival_ms if watches.paced else 0.0
-        answer = late_ms <= LATE_SYNC_MS
+        previous, self._sync_arrival_ms = self._sync_arrival_ms, arrival_ms
+        interval_ms = arrival_ms - previous if previous is not None else 0.0
+        answer = late_ms <= max(LATE_SYNC_MS, LATE_SYNC_PERIODS * interval_ms)
         if not answer:  # behind the bus: a TPDO now would carry a state sampled that late
             self._unanswered_syncs += 1
             self._unanswered_worst_ms = max(self._unanswered_worst_ms, late_ms)
@@ -330,9 +337,9 @@ class CanopenSlave:
                 self._transmit(tpdo, data)
 
     def take_unanswered_syncs(self) -> tuple[int, float]:
-        """SYNCs left without TPDO since the last call, as they came over
-        :data:`~.canopen_watch.LATE_SYNC_MS` late to this valve (the PC fell behind the bus),
-        and the latest of them (ms after it arrived); then counts afresh."""
+        """SYNCs left without TPDO since the last call, as they came to this valve over
+        :data:`~.canopen_watch.LATE_SYNC_MS` and two SYNC intervals late (the PC fell behind
+        the bus), and the latest of them (ms after it arrived); then counts afresh."""
         with self._valve.lock:
             taken = (self._unanswered_syncs, self._unanswered_worst_ms)
             self._unanswered_syncs, self._unanswered_worst_ms = 0, 0.0

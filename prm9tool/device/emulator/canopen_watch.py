@@ -26,9 +26,12 @@ from typing import Protocol
 SYNC_TIMEOUT_FACTOR = 1.5  # decision: SYNC missing for 1.5 x 0x1006 = SYNC error (8100h)
 RX_POLL_S = 0.1  # the receive thread looks at its stop flag at least this often
 MAX_AGE_S = 5.0  # a time stamp older than this (or in the future) is not a reception time
-# decision: a SYNC the paced valve gets to more than this after it arrived (the PC fell behind
-# the bus: frames queued in the socket) is counted but answered with no TPDO (CanopenSlave)
+# decision: a SYNC the paced valve gets to more than this, and more than LATE_SYNC_PERIODS of
+# the SYNC's interval, after it arrived (the PC fell behind the bus: frames queued in its
+# socket) is counted but answered with no TPDO (CanopenSlave); at a slow SYNC a steady delay
+# of a few ms is still answered
 LATE_SYNC_MS = 10.0
+LATE_SYNC_PERIODS = 2.0
 
 
 class Deadline(Protocol):
