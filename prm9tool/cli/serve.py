@@ -247,8 +247,7 @@ def _report_unanswered(served: list[_Served], due: list[float]) -> None:
             f"SYNCs answered with no TPDO in the last {LATENESS_REPORT_S:g} s, as this PC got "
             f"to them more than {LATE_SYNC_MS:g} ms and two SYNC periods after they arrived "
             f"(at most {worst:.0f} ms): {', '.join(counts)}. A TPDO that late would carry the "
-            "state of "
-            "a later moment; serve fewer valves per process or a slower SYNC "
+            "state of a later moment; serve fewer valves per process or a slower SYNC "
             '(docs/plc-testing.md, "Limits")'
         )
 
