@@ -339,8 +339,8 @@ class CanopenSlave:
     def take_unanswered_syncs(self) -> tuple[int, float]:
         """SYNCs left without TPDO since the last call, as they came to this valve over
         :data:`~.canopen_watch.LATE_SYNC_MS` and two SYNC intervals late (the PC fell behind
-        the bus), and how late the latest-handled of them was at most (ms after it arrived);
-        then counts afresh."""
+        the bus), and the most any of them was late (ms after it arrived); then counts
+        afresh."""
         with self._valve.lock:
             taken = (self._unanswered_syncs, self._unanswered_worst_ms)
             self._unanswered_syncs, self._unanswered_worst_ms = 0, 0.0
