@@ -285,3 +285,16 @@ def test_every_column_title_is_whole_in_german_and_czech(qtbot, recorder, lang):
             assert header.sectionSize(column) >= metrics.horizontalAdvance(title), title
     finally:
         i18n.set_language("en")
+
+
+def test_a_serial_that_is_no_number_clears_the_last_valve_s_records(qtbot, recorder):
+    """Enter on "abc" after valve 1001's records showed them on under "Type a valve's serial
+    number." as if they were abc's (seen under Xvfb)."""
+    recorder.record(Valve(1001, E02_CA), "download", "ok", None, {"purpose": "compare"})
+    window = _window(qtbot, recorder, 1001)
+    assert window.model.rowCount() == 1
+    window.serial.setText("abc")
+    qtbot.keyClick(window.serial, Qt.Key.Key_Return)
+    assert window.state.text() == "Type a valve's serial number."
+    assert window.model.rowCount() == 0
+    assert not window.buttons["export"].isEnabled()

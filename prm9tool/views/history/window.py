@@ -144,8 +144,11 @@ class HistoryWindow(QDialog):
     def reload(self) -> None:
         """Read the records of the serial number typed in."""
         text = self.serial.text().strip()
-        if not text.isdigit():
+        if not text.isdigit():  # the last valve's records must not stand under another text
+            self.model.set_records([])
+            self._shown = None
             self.state.setText(self.tr("Type a valve's serial number."))
+            self._update_buttons()
             return
         self.state.setText(self.tr("Reading the history…"))
         threading.Thread(target=self._read, args=(int(text),), daemon=True, name="history").start()
