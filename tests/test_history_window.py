@@ -167,7 +167,7 @@ def test_a_test_report_names_its_failing_figures_and_its_pdf(qtbot, recorder, tm
         dialog = window.open_record(window.model.index(1, 0))  # double-click
         assert isinstance(dialog, RecordDetailsDialog)
         qtbot.addWidget(dialog)
-        assert dialog.pdf_button.isVisible() or not dialog.isVisible()
+        assert dialog.isVisible() and dialog.pdf_button.isVisible()
         assert dialog.failing == failed.removeprefix("failed: ").split("; ")
         assert dialog.open_pdf() and opened == [QUrl.fromLocalFile(str(pdf))]
     pdf.unlink()  # moved away since: said so, nothing opened
@@ -182,6 +182,7 @@ def test_a_double_click_opens_the_details_and_from_there_the_comparison(qtbot, r
     window.table.doubleClicked.emit(window.model.index(1, 3))
     (dialog,) = [d for d in window.findChildren(RecordDetailsDialog) if d.isVisible()]
     assert dialog.labels["Type key"].text() == E04
+    assert not dialog.pdf_button.isVisible()  # a download names no PDF (it offered one)
     assert json.loads(dialog.text.toPlainText()) == json.loads(window.model.records[1]["details"])
     dialog.compare_button.click()  # with the record before
     compare = [d for d in window.findChildren(QDialog) if type(d).__name__ == "CompareDialog"]

@@ -120,7 +120,6 @@ class RecordDetailsDialog(QDialog):
         self.text.setReadOnly(True)
         self.pdf = pdf_of(details)
         self.pdf_button = QPushButton(self.tr("Open the PDF"))
-        self.pdf_button.setVisible(self.pdf is not None)
         self.pdf_button.setToolTip(str(self.pdf or ""))
         self.pdf_button.clicked.connect(self.open_pdf)
         self.compare_button = QPushButton(self.tr("Compare with the record before"))
@@ -129,6 +128,9 @@ class RecordDetailsDialog(QDialog):
         buttons = QDialogButtonBox(QDialogButtonBox.StandardButton.Close)
         buttons.addButton(self.pdf_button, QDialogButtonBox.ButtonRole.ActionRole)
         buttons.addButton(self.compare_button, QDialogButtonBox.ButtonRole.ActionRole)
+        # after addButton, which shows every button it lays out (a record without a PDF
+        # offered "Open the PDF" and then said "cannot be opened: None")
+        self.pdf_button.setVisible(self.pdf is not None)
         buttons.rejected.connect(self.reject)
         layout = QVBoxLayout(self)
         layout.addLayout(form)
