@@ -97,6 +97,9 @@ def main() -> int:
     parser.add_argument("--toggle-min-batch", metavar="A,B",
                         help="with --serve-lag: switch the valves' batch size between A and B "
                         "cycles every 0.5 s, figures per size (a paired comparison)")  # fmt: skip
+    parser.add_argument("--toggle-quiet-ticks", action="store_true",
+                        help="with --serve-lag: switch between the compiled kernel passing the "
+                        "valves' quiet 1 ms tasks and every 1 ms task in Python, every 0.5 s")  # fmt: skip
     parser.add_argument("--per-frame-only", type=int, metavar="N", help=argparse.SUPPRESS)
     args = parser.parse_args()
     if os.environ.get(INSIDE) != "1":
@@ -163,6 +166,8 @@ def _lag_probe(args: argparse.Namespace, label: str, count: int) -> list[str]:
         return []
     out = str(Path(tempfile.gettempdir()) / f"prm9-serve-lag.{os.getpid()}.{label}.{count}.json")
     toggle = ["--toggle-min-batch", args.toggle_min_batch] if args.toggle_min_batch else []
+    if args.toggle_quiet_ticks:
+        toggle = ["--toggle-quiet-ticks"]
     return [str(Path(__file__).with_name("serve_lag.py")), out, *toggle]
 
 

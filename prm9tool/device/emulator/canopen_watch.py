@@ -19,6 +19,7 @@ to follow and the watches judge simulated milliseconds, as the loop's 1 ms task 
 
 from __future__ import annotations
 
+import math
 import time
 from collections.abc import Callable, Sequence
 from typing import Protocol
@@ -32,6 +33,7 @@ MAX_AGE_S = 5.0  # a time stamp older than this (or in the future) is not a rece
 # of a few ms is still answered
 LATE_SYNC_MS = 10.0
 LATE_SYNC_PERIODS = 2.0
+QUIET_FOREVER = 2**31 - 1  # no deadline armed: no 1 ms task judges anything
 
 
 class Deadline(Protocol):
@@ -126,14 +128,26 @@ class TimingWatches:
                 channel.deadline_ms = None  # one event per loss; the next reception arms it
                 self._report("rpdo_timeout")
 
-    def wait_s(self) -> float:
-        """How long the receive thread may wait for a frame before it must judge (paced)."""
-        if not self.paced:
-            return RX_POLL_S
+    def _earliest_due(self) -> float | None:
+        """The earliest deadline armed (ms on the present time base), or None."""
         due = [c.deadline_ms for c in self._rpdos if c.deadline_ms is not None and c.valid]
         period_us = self._period_us()
         if period_us and self.last_sync_ms is not None:
             due.append(self.last_sync_ms + SYNC_TIMEOUT_FACTOR * period_us / 1e3)
-        if not due:
+        return min(due) if due else None
+
+    def wait_s(self) -> float:
+        """How long the receive thread may wait for a frame before it must judge (paced)."""
+        if not self.paced:
             return RX_POLL_S
-        return min(RX_POLL_S, max(0.0, (min(due) - self.wall_ms()) / 1000.0 + 1e-4))
+        due = self._earliest_due()
+        if due is None:
+            return RX_POLL_S
+        return min(RX_POLL_S, max(0.0, (due - self.wall_ms()) / 1000.0 + 1e-4))
+
+    def quiet_ticks(self, first_ms: int) -> int:
+        """In simulated time: how many of the 1 ms tasks at ``first_ms``, ``first_ms`` + 1, …
+        would judge nothing (the first after a deadline reports it; one fewer, against
+        rounding)."""
+        due = self._earliest_due()
+        return QUIET_FOREVER if due is None else max(0, math.floor(due) - first_ms)

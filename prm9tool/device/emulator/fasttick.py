@@ -1,7 +1,8 @@
 """The compiled loop's batches, and when it may pass the firmware's 1 ms task itself.
 
 Most 1 ms tasks change nothing: no fault condition changes, no detection delay or display hold
-ends, the state machine and the loop's mode stay, no listener is registered. The compiled
+ends, the state machine and the loop's mode stay, no cycle listener has anything to do (each
+says for how many tasks: ``valve.add_cycle_listener(fn, quiet)``). The compiled
 kernel (``_ckernel.tick_is_noop``) re-checks per millisecond what can change within a batch
 (coil currents, PWM duties, LVDT loop current, control deviation, time) against the firmware
 state summarized here; the first task that would do anything is left to
@@ -82,10 +83,11 @@ def compiled_batch(fw: FirmwareState, cycles: int, span: int) -> tuple[int, int]
 
 def parameters(fw: FirmwareState) -> array | None:
     """The C kernel's tick parameters, or None if the next 1 ms task may do something."""
+    max_ticks = listeners_quiet(fw) if fw.cycle_listeners else MAX_TICKS
     faults = fw.faults
     state = fw.sm.state
     if (
-        fw.cycle_listeners
+        max_ticks <= 0
         or faults.any_present
         or state is DeviceState.FAULT_REACTION
         or (fw.analog_only and not fw.booting and state in _FAULTED)
@@ -127,7 +129,7 @@ def parameters(fw: FirmwareState) -> array | None:
             fw.cycles,
             fw.booting,
             c.boot_s,
-            MAX_TICKS,
+            max_ticks,
             fw.override_on,
             fw.override_last,
             c.override_timeout_s,
@@ -171,6 +173,22 @@ def parameters(fw: FirmwareState) -> array | None:
             *[0.0] * (3 * MAX_DEADLINES - len(deadlines)),
         ],
     )
+
+
+def listeners_quiet(fw: FirmwareState) -> int:
+    """How many of the next 1 ms tasks every cycle listener would pass doing nothing (0: one
+    has none it would, or says nothing: the next task runs in Python)."""
+    quiet = fw.cycle_quiet
+    first_ms = fw.ticks + 1  # the next task's millisecond (Firmware.tick counts them)
+    least = MAX_TICKS
+    for listener in fw.cycle_listeners:
+        check = quiet.get(listener)
+        if check is None:
+            return 0
+        least = min(least, check(first_ms))
+        if least <= 0:
+            return 0
+    return least
 
 
 def commit(fw: FirmwareState, tick: array) -> None:

@@ -99,6 +99,9 @@ class Firmware(ParameterMemory):
         self.can_enabled = self.terminator = False
         self.lss_mode = False  # node-ID switch at 1 (LSS, table 7-17)
         self.cycle_listeners: list[Callable[[float], None]] = []
+        # per listener that has one: how many 1 ms tasks from the given ms on it would pass
+        # doing nothing (the compiled kernel may pass those tasks itself: fasttick)
+        self.cycle_quiet: dict[Callable[[float], None], Callable[[int], int]] = {}
         self.program: OverrideProgram | None = None  # a setpoint waveform on SETPOVR
         self.setpovr_key = CATALOGUE["SETPOVR"].key
         self.setpoint_dirty = True

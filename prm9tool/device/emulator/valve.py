@@ -186,16 +186,32 @@ class EmulatedValve:
                 listener()
 
     # --- listeners (the CANopen slave's and the USB firmware's hooks) -------------------
-    def add_cycle_listener(self, fn: Callable[[float], None]) -> None:
-        """``fn(sim_time)`` every 1 ms of simulated time (loop thread, lock held)."""
+    def add_cycle_listener(
+        self, fn: Callable[[float], None], quiet: Callable[[int], int] | None = None
+    ) -> None:
+        """``fn(sim_time)`` every 1 ms of simulated time (loop thread, lock held).
+
+        ``quiet(first_ms)``: how many 1 ms tasks from the one at ``first_ms`` (simulated ms
+        since power-up, as :attr:`tick_ms` counts) on ``fn`` would pass doing nothing; the
+        compiled kernel may pass those itself, without calling ``fn`` (:mod:`.fasttick`).
+        Without it every 1 ms task runs in Python while ``fn`` is registered."""
         with self.lock:  # a new list: a listener may add or remove one while they are called
             self._fw.cycle_listeners = [*self._fw.cycle_listeners, fn]
+            if quiet is not None:
+                self._fw.cycle_quiet = {**self._fw.cycle_quiet, fn: quiet}
 
     def remove_cycle_listener(self, fn: Callable[[float], None]) -> None:
         """Stop calling ``fn`` (no error if it is not registered). Without listeners, the
         compiled kernel may pass the 1 ms tasks that change nothing itself (fasttick)."""
         with self.lock:
             self._fw.cycle_listeners = [f for f in self._fw.cycle_listeners if f != fn]
+            self._fw.cycle_quiet = {f: q for f, q in self._fw.cycle_quiet.items() if f != fn}
+
+    @property
+    def tick_ms(self) -> int:
+        """The simulated millisecond of the last 1 ms task since power-up (those the compiled
+        kernel passed included): what a cycle listener was last, or would have been, given."""
+        return self._fw.ticks
 
     def add_error_listener(self, fn: Callable[[int, int], None]) -> None:
         """``fn(emcy_code, error_register)`` on every change of the active error set."""
