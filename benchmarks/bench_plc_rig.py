@@ -9,7 +9,7 @@ actually sent per second, the EMCYs seen (none expected: every one is a false al
 and the machine's load average; the single-valve run of the same invocation is the reference.
 
     .venv/bin/python benchmarks/bench_plc_rig.py [--valves 1,4,8,16,32] [--seconds 10] [--quick]
-        [--compare OTHER_CHECKOUT] [--profile OUT] [--dump PREFIX]
+        [--compare OTHER_CHECKOUT] [--profile OUT] [--dump PREFIX] [--floor]
 
 First the per-frame path in CPU time (what N valves need of a core per period) and the PLC's
 own cost per frame; then the rig, with each process's CPU and run-queue wait per second (the
@@ -21,7 +21,10 @@ from this one in turn and prints the ratios (docs/PERFORMANCE.md, "The PLC rig")
 
 The SYNC period is 1 ms up to 16 valves and 2 ms above (the issue's 32 valves at 2 ms), or
 ``--period MS`` for every run.
-``--quick`` (a smoke run, CI): 1 and 2 valves for 1 s each. Needs ``unshare -n`` (root or user
+``--floor`` first serves each run with ``serve_floor.py``: nodes that only answer frames, no
+valve behind them — the share of TPDO1 on time that no implementation of the served valves
+can beat on this machine, measured beside the real one.
+``--quick`` (a smoke run, CI): 1 and 2 valves for 1 s each, the floor too. Needs ``unshare -n`` (root or user
 namespaces); without it the benchmark says so and exits 0.
 """
 
@@ -49,6 +52,7 @@ NAMESPACE = "ip link set lo up && ip link set lo multicast on && ip route add 22
 ON_TIME_S = 0.001
 FAULTY = 2  # the node whose coil A is disconnected for the middle third of each run
 INSIDE = "PRM9_BENCH_PLC_RIG_INSIDE"
+FLOOR = "(serve_floor.py)"  # --floor: the "tree" of nodes that only answer frames
 TREE = os.environ.get("PRM9_BENCH_TREE") or str(Path(__file__).resolve().parent.parent)
 sys.path.insert(0, TREE)  # the prm9tool under test (--compare: another checkout's)
 from prm9tool.device.emulator.canopen_hub import enlarge_receive_buffer  # noqa: E402
@@ -100,6 +104,9 @@ def main() -> int:
     parser.add_argument("--toggle-quiet-ticks", action="store_true",
                         help="with --serve-lag: switch between the compiled kernel passing the "
                         "valves' quiet 1 ms tasks and every 1 ms task in Python, every 0.5 s")  # fmt: skip
+    parser.add_argument("--floor", action="store_true",
+                        help="serve with benchmarks/serve_floor.py instead of prm9tool: nodes "
+                        "that only answer frames (the machine's floor for any implementation)")  # fmt: skip
     parser.add_argument("--per-frame-only", type=int, metavar="N", help=argparse.SUPPRESS)
     args = parser.parse_args()
     if os.environ.get(INSIDE) != "1":
@@ -108,7 +115,7 @@ def main() -> int:
         per_frame(args.per_frame_only)
         return 0
     if args.quick:
-        args.serve_lag = True  # the probe is smoke-run too
+        args.serve_lag = args.floor = True  # the probe and the floor are smoke-run too
     counts = [1, 2] if args.quick else [int(n) for n in args.valves.split(",")]
     seconds = 1.0 if args.quick else args.seconds
     if counts[0] != 1:
@@ -116,11 +123,15 @@ def main() -> int:
     print(f"PLC rig on udp_multicast {GROUP}, {seconds:g} s per run, load before "
           f"{os.getloadavg()[0]:.2f}")  # fmt: skip
     trees = [("this", TREE)] if not args.compare else [("compare", args.compare), ("this", TREE)]
+    if args.floor:
+        trees = [("floor", FLOOR), *trees]
     for label, tree in trees:
         print(f"[{label}: {tree}]", flush=True)
         subprocess.run([sys.executable, __file__, "--per-frame-only",
                         str(500 if args.quick else 5000)], env={**os.environ, "PRM9_BENCH_TREE": tree},
                        check=False)  # fmt: skip
+        if label == "floor":
+            continue
         if label == "this":
             _plc_side(500 if args.quick else 5000)
     print(f"{'tree':>7} {'valves':>6} {'SYNC':>6} {'on time':>8} {'FIFO':>7} {'got':>7} {'p50':>7} "
@@ -132,7 +143,7 @@ def main() -> int:
             profile = f"{args.profile}.{label}.{count}" if args.profile else None
             dump = f"{args.dump}.{label}.{count}.json" if args.dump else None
             period = args.period or (1.0 if count <= 16 else 2.0)
-            lag = _lag_probe(args, label, count)
+            lag = _lag_probe(args, label, count) if tree != FLOOR else []
             result = run(count, period, seconds, profile, tree, dump, lag)
             results[label].append(result)
             print(f"{label:>7} {result.valves:>6} {result.period_ms:>4g}ms {result.on_time:>8.2%} "
@@ -151,6 +162,11 @@ def main() -> int:
     for result in mine[1:]:
         print(f"{result.valves} valves: on-time share {result.on_time:.2%} against "
               f"{reference.on_time:.2%} for one valve; p99 {result.p99_ms / max(reference.p99_ms, 1e-3):.1f}x")  # fmt: skip
+    if args.floor:
+        for floor, served in zip(results["floor"], mine, strict=True):
+            print(f"{served.valves} valves: on time {served.on_time:.2%} served, "
+                  f"{floor.on_time:.2%} at the floor (serve_floor.py), its CPU "
+                  f"{served.serve_cpu:.2f} / {floor.serve_cpu:.2f} core")  # fmt: skip
     if args.compare:
         for before, after in zip(results["compare"], mine, strict=True):
             print(f"{after.valves} valves, this tree against the compared one: on time "
@@ -357,6 +373,11 @@ def _caused(node: int, data: bytes, count: int) -> bool:
 
 def _serve(count: int, data: str, profile: str | None, tree: str,
            lag: list[str]) -> subprocess.Popen[str]:  # fmt: skip
+    if tree == FLOOR:
+        floor = [sys.executable, str(Path(__file__).with_name("serve_floor.py")), GROUP, str(count)]
+        return subprocess.Popen(floor, env={**os.environ, "PYTHONPATH": TREE},
+                                stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL,
+                                stdin=subprocess.PIPE, text=True)  # fmt: skip
     sampler = [str(Path(__file__).with_name("stack_sampler.py")), profile] if profile else lag
     command = [sys.executable, *sampler, "-m", "prm9tool", "--can-interface", "udp_multicast",
                "--can-channel", GROUP]  # fmt: skip
