@@ -102,7 +102,7 @@ def _steps(seed: int) -> list[tuple[str, Any]]:
             )
             steps.append(("usb", (index, sub, rng.choice(values))))
         elif kind < 0.88:
-            steps.append(("frame", (0, bytes((rng.choice((1, 1, 2, 0x80, 0x82)), NODE)))))
+            steps.append(("frame", (0, bytes((rng.choice((1, 1, 2, 0x80, 0x81, 0x82)), NODE)))))
         elif kind < 0.91:
             steps.append(("frame", (0x600 + NODE, bytes((0x40, 0x18, 0x10, 0x01, 0, 0, 0, 0)))))
         elif kind < 0.93:

@@ -368,14 +368,17 @@ class CanopenSlave:
 
     def _quiet_ticks(self, first_ms: int) -> int:
         """How many 1 ms tasks from ``first_ms`` on :meth:`_on_cycle` would pass doing
-        nothing: none while booting, while an SDO transfer may time out or while a TPDO sends
-        on change of its data; else up to the next heartbeat and, while OPERATIONAL, the next
+        nothing: all while booting or waiting for a node ID (LSS), none while an SDO transfer
+        may time out or while a TPDO sends on change of its data; else up to the next heartbeat and, while OPERATIONAL, the next
         TPDO event timer, (in simulated time) watch deadline and, if the PDO parameters differ
         from those loaded (a USB write), their next poll. Nothing else changes them between
         two calls: a batch of the compiled kernel runs with the valve's lock held."""
         if self._closed or self.state is NmtState.OFF:
             return QUIET_FOREVER
-        if self.state is NmtState.INITIALISING or self._sdo.busy:
+        if self.state is NmtState.INITIALISING:  # boot-up once booted, with a node ID (LSS)
+            booting = self._valve.status().booting  # its end is a task the kernel leaves
+            return QUIET_FOREVER if booting or not self.node_id else 0
+        if self._sdo.busy:
             return 0
         values = self._valve.read_values(self._quiet_addresses)  # one look-up for both
         quiet = QUIET_FOREVER
