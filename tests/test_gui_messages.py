@@ -184,10 +184,10 @@ def test_valve_selection_marks_the_spools_of_the_users_spools_json(
     dialog = ValveSelectionDialog()
     qtbot.addWidget(dialog)
     items = {dialog.spool.itemData(row): dialog.spool.itemText(row) for row in range(len(spools))}
-    assert items["3Z11"] == "3Z11 – zwei Magnete A und B"
-    assert items["3Y11"] == "3Y11 – zwei Magnete A und B (Annahme)"
-    assert items["3Z12"] == "3Z12 – zwei Magnete A und B (Ihre spools.json)"  # replaced ours
-    assert items["4Z21"] == "4Z21 – ein Magnet auf Seite B (Ihre spools.json)"
+    assert items["3Z11"] == "3Z11 – zwei Spulen A und B"
+    assert items["3Y11"] == "3Y11 – zwei Spulen A und B (Annahme)"
+    assert items["3Z12"] == "3Z12 – zwei Spulen A und B (Ihre spools.json)"  # replaced ours
+    assert items["4Z21"] == "4Z21 – eine Spule auf Seite B (Ihre spools.json)"
     language("en")
     assert dialog.spool.itemText(dialog.spool.findData("4Z21")) == (
         "4Z21 – one solenoid on side B (your spools.json)"

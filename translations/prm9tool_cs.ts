@@ -1721,7 +1721,7 @@ Poslední akce možná nebyla dokončena. Uložte svou práci pod novým názvem
         </message>
         <message>
             <source>Node-ID switch:</source>
-            <translation>Přepínač ID uzlu:</translation>
+            <translation>Přepínač Node ID:</translation>
         </message>
         <message>
             <source>The valve reads its rotary switches at power-up only: restart it (Valve → Restart valve) for a new position to apply. The setpoint input counts only while the valve takes its setpoint from the analog input (no CANopen, no setpoint generator).</source>
@@ -2833,7 +2833,7 @@ Ano načte a záznam zařadí do fronty; Ne nenačte nic.</translation>
         </message>
         <message>
             <source>The node-ID switch is at position {0}: the switches decide node ID and bit rate (manual table 7-17), so this change does not move the valve; it stays at node {1}.</source>
-            <translation>Přepínač ID uzlu je v poloze {0}: ID uzlu a přenosovou rychlost určují přepínače (návod, tabulka 7-17), tato změna tedy ventil nepřesune; zůstává uzlem {1}.</translation>
+            <translation>Přepínač Node ID je v poloze {0}: Node ID a přenosovou rychlost určují přepínače (návod, tabulka 7-17), tato změna tedy ventil nepřesune; zůstává uzlem {1}.</translation>
         </message>
         <message>
             <source>The node-ID switch is at position 1 (LSS): an LSS master sets node ID and bit rate (manual table 7-17; Communication → CAN bus). NODEID and BITRATE apply at position 0 only, so this change does not move the valve.</source>

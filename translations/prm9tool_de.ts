@@ -418,7 +418,7 @@ Die letzte Aktion wurde womöglich nicht vollständig ausgeführt. Speichern Sie
         </message>
         <message>
             <source>Searching the bus (node IDs 1…127)…</source>
-            <translation>Bus wird durchsucht (Knoten-IDs 1…127)…</translation>
+            <translation>Bus wird durchsucht (Node-IDs 1…127)…</translation>
         </message>
         <message>
             <source>The bus could not be searched: {0}</source>
@@ -1358,7 +1358,7 @@ Die letzte Aktion wurde womöglich nicht vollständig ausgeführt. Speichern Sie
         <name>DiagramBlock</name>
         <message>
             <source>spool position (LVDT)</source>
-            <translation>Schieberposition (LVDT)</translation>
+            <translation>Schieberlage (LVDT)</translation>
         </message>
         <message>
             <source>Setpoint input</source>
@@ -1613,11 +1613,11 @@ Die letzte Aktion wurde womöglich nicht vollständig ausgeführt. Speichern Sie
         </message>
         <message>
             <source>Solenoid A over-current or disconnected</source>
-            <translation>Magnet A Überstrom oder nicht angeschlossen</translation>
+            <translation>Spule A Überstrom oder nicht angeschlossen</translation>
         </message>
         <message>
             <source>Solenoid B over-current or disconnected</source>
-            <translation>Magnet B Überstrom oder nicht angeschlossen</translation>
+            <translation>Spule B Überstrom oder nicht angeschlossen</translation>
         </message>
         <message>
             <source>Internal position sensor error</source>
@@ -1711,7 +1711,7 @@ Die letzte Aktion wurde womöglich nicht vollständig ausgeführt. Speichern Sie
         </message>
         <message>
             <source>Node-ID switch:</source>
-            <translation>Schalter Knoten-ID:</translation>
+            <translation>Schalter Node-ID:</translation>
         </message>
         <message>
             <source>The valve reads its rotary switches at power-up only: restart it (Valve → Restart valve) for a new position to apply. The setpoint input counts only while the valve takes its setpoint from the analog input (no CANopen, no setpoint generator).</source>
@@ -2817,11 +2817,11 @@ Ja lädt hoch und stellt den Eintrag in die Warteschlange; Nein lädt nichts hoc
         </message>
         <message>
             <source>The node-ID switch is at position {0}: the switches decide node ID and bit rate (manual table 7-17), so this change does not move the valve; it stays at node {1}.</source>
-            <translation>Der Knoten-ID-Schalter steht auf Position {0}: Die Schalter bestimmen Knoten-ID und Bitrate (Handbuch, Tabelle 7-17), diese Änderung verschiebt das Ventil also nicht; es bleibt Knoten {1}.</translation>
+            <translation>Der Node-ID-Schalter steht auf Stellung {0}: Die Schalter bestimmen Node-ID und Bitrate (Handbuch, Tabelle 7-17), diese Änderung verschiebt das Ventil also nicht; es bleibt Knoten {1}.</translation>
         </message>
         <message>
             <source>The node-ID switch is at position 1 (LSS): an LSS master sets node ID and bit rate (manual table 7-17; Communication → CAN bus). NODEID and BITRATE apply at position 0 only, so this change does not move the valve.</source>
-            <translation>Der Node-ID-Schalter steht auf Position 1 (LSS): Node-ID und Bitrate setzt ein LSS-Master (Handbuch Tabelle 7-17; Kommunikation → CAN-Bus). NODEID und BITRATE gelten nur in Position 0, diese Änderung verschiebt das Ventil also nicht.</translation>
+            <translation>Der Node-ID-Schalter steht auf Stellung 1 (LSS): Node-ID und Bitrate setzt ein LSS-Master (Handbuch Tabelle 7-17; Kommunikation → CAN-Bus). NODEID und BITRATE gelten nur in Stellung 0, diese Änderung verschiebt das Ventil also nicht.</translation>
         </message>
         <message>
             <source>After the valve's next power-up or restart it answers at node {0}, {1}. Store the change and restart the valve from prm9tool (Valve → Restart valve): prm9tool then finds it there again — where it cannot change the adapter's bit rate itself (SocketCAN), it says how. After a power-up, find it under Communication → CAN bus (node {0}, bit rate {1}).</source>
@@ -5004,7 +5004,7 @@ Auf dem PC ging nichts verloren: Das Dokument enthält weiterhin jeden Wert, Sic
         </message>
         <message>
             <source>position controller: spool position</source>
-            <translation>Lageregler: Schieberposition</translation>
+            <translation>Lageregler: Schieberlage</translation>
         </message>
         <message>
             <source>emulator (stepped faster than real time)</source>
@@ -5803,11 +5803,11 @@ Wechseln Sie zuerst zu Experte (Ansicht → Berechtigungsstufe) oder starten Sie
         </message>
         <message>
             <source>two solenoids A and B</source>
-            <translation>zwei Magnete A und B</translation>
+            <translation>zwei Spulen A und B</translation>
         </message>
         <message>
             <source>one solenoid on side {0}</source>
-            <translation>ein Magnet auf Seite {0}</translation>
+            <translation>eine Spule auf Seite {0}</translation>
         </message>
     </context>
     <context>

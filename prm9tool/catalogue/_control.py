@@ -163,7 +163,7 @@ CURRENT_AND_DITHER: list[Parameter] = [
         applies=COIL_A,
         text=T(
             "Solenoid A: maximum current",
-            "Magnet A: maximaler Strom",
+            "Spule A: maximaler Strom",
             "Magnet A: maximální přípustná hodnota",
         ),
         source="fig. 8-18, table 7-14",
@@ -182,7 +182,7 @@ CURRENT_AND_DITHER: list[Parameter] = [
         applies=COIL_B,
         text=T(
             "Solenoid B: maximum current",
-            "Magnet B: maximaler Strom",
+            "Spule B: maximaler Strom",
             "Magnet B: maximální přípustná hodnota",
         ),
         source="fig. 8-18, table 7-14",
