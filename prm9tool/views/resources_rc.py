@@ -1223,7 +1223,7 @@ ohou m\xc3\xadt stejn\xc3\
 y \xe2\x9a\xa0 a okno to \
 uv\xc3\xa1d\xc3\xad.</p>\x0a</b\
 ody>\x0a</html>\x0a\
-\x00\x00\x1b\x88\
+\x00\x00\x1b\x84\
 <\
 !DOCTYPE html>\x0a<\
 html lang=\x22de\x22>\x0a\
@@ -1285,387 +1285,387 @@ ts wirken. <b>La\
 geregler (Schieb\
 er)</b>: der Sol\
 lwert\x0aist die Sc\
-hieberposition (\
-Regelungsart 2, \
-CTRLMODE). <b>Pr\
-ozessregler (E04\
-)</b>: der Sollw\
-ert\x0aist der Proz\
-esswert des exte\
-rnen Sensors, de\
-n der Prozessreg\
-ler \xc3\xbcber Schieb\
-er und Antrieb\x0as\
-chlie\xc3\x9ft (Regelu\
-ngsart 4, die Vo\
-reinstellung des\
- E04). Ein E04 i\
-n Regelungsart 4\
- \xc3\xb6ffnet auf dem\
-\x0aProzessregelkre\
-is; der Lagerege\
-lkreis braucht R\
-egelungsart 2, e\
-ingestellt, sola\
-nge das Ventil\x0an\
-icht freigegeben\
- ist.</p>\x0a\x0a<h2>E\
-04: den Prozessr\
-egelkreis einste\
-llen</h2>\x0a<ol>\x0a<\
-li>Zuerst den ex\
-ternen Sensor ei\
-nrichten (die Pa\
-rameter \xe2\x80\x9eExter\
-ner Sensor\xe2\x80\x9c: S\
-ignaltyp\x0aSENSTYP\
-E, Polarit\xc3\xa4t, V\
-erst\xc3\xa4rkung und \
-Offset), so dass\
- der Prozess-Ist\
-wert dem Antrieb\
- \xc3\xbcber\x0aseinen Be\
-reich in der ric\
-htigen Richtung \
-folgt. Im Oszill\
-oskop pr\xc3\xbcfen (P\
-rozess-Istwert),\
-\x0aw\xc3\xa4hrend sich d\
-er Antrieb langs\
-am bewegt.</li>\x0a\
-<li>Die Regelung\
-sart auf 4 lasse\
-n und <b>Prozess\
-regler (E04)</b>\
- w\xc3\xa4hlen.</li>\x0a<\
-li>Der Antrieb i\
-ntegriert: seine\
- Position \xc3\xa4nder\
-t sich, solange \
-der Schieber off\
-en ist. Die\x0aVorg\
-aben des Autotun\
-e folgen dem Reg\
-elkreis: ein Spr\
-ung von 20 % und\
- eine Ziel-Ausre\
-gelzeit von\x0a500 \
-ms (die 40 ms de\
-s Schiebers erre\
-icht kein Antrie\
-b). F\xc3\xbcr einen l\
-angsamen oder sc\
-hweren\x0aAntrieb d\
-as Ziel erh\xc3\xb6hen\
-.</li>\x0a<li>Autot\
-une starten, den\
- Vorschlag pr\xc3\xbcf\
-en (die Spr\xc3\xbcnge\
- des Profils in \
-beide Richtungen\
- und\x0aseine stati\
-sche Pr\xc3\xbcfung), \
-\xc3\xbcbernehmen, dan\
-n Ventil \xe2\x86\x92 Im \
-Ventil speichern\
-.</li>\x0a<li>Bei e\
-inem Schieber mi\
-t \xc3\x9cberdeckung m\
-isst die Seite <\
-b>Durchflusskenn\
-linie (E04)</b> \
-die\x0aTotzone und \
-schl\xc3\xa4gt OFFSETP\
-OS/OFFSETNEG f\xc3\xbc\
-r den Prozessreg\
-elkreis vor.</li\
->\x0a</ol>\x0a\x0a<h2>Ber\
-echtigungsstufe \
-und Fehler</h2>\x0a\
-<p>Reglerverst\xc3\xa4\
-rkungen, Lineari\
-sierungen und Of\
-fsets lassen sic\
-h nur auf der St\
-ufe\x0a<b>Experte</\
-b> \xc3\xa4ndern (Ansi\
-cht \xe2\x86\x92 Berechti\
-gungsstufe). Ein\
- Test, dessen Er\
-gebnis auf der\x0aj\
-etzigen Stufe ni\
-cht \xc3\xbcbernommen \
-werden k\xc3\xb6nnte, \
-fragt vor dem St\
-art; sein Ergebn\
-is bleibt auf de\
-r\x0aSeite, so dass\
- Sie danach zu E\
-xperte wechseln \
-und es \xc3\xbcbernehm\
-en k\xc3\xb6nnen, ohne\
- den Test zu\x0awie\
-derholen.</p>\x0a<p\
->Ein Ventil, das\
- einen Fehler h\xc3\
-\xa4lt (FAULT_HOLD,\
- FAULT), folgt s\
-einem Sollwert n\
-icht: der Test\x0aw\
-ird vor dem Star\
-t abgelehnt, und\
- die Statuszeile\
- sagt warum. Um \
-FAULT_HOLD zu ve\
-rlassen, die\x0aUrs\
-ache beseitigen \
-(Ventil \xe2\x86\x92 Vent\
-ilstatus zeigt d\
-en aktiven Fehle\
-r) und dort <b>F\
-reigeben</b>\x0adr\xc3\
-\xbccken: sein erst\
-es Steuerwort 08\
-h ist das Fehler\
--R\xc3\xbccksetzen (Ha\
-ndbuch Tabellen \
-7-19 und\x0a7-20, \xc3\
-\x9cbergang 10), 09\
-h \xe2\x86\x92 0Bh \xe2\x86\x92 0F\
-h geben das Vent\
-il wieder frei. \
-Ein Ventil ohne \
-CANopen\x0averl\xc3\xa4ss\
-t einen Fehler m\
-it Ventil \xe2\x86\x92 Ve\
-ntil neu starten\
-.</p>\x0a\x0a<h2>Die S\
-eiten</h2>\x0a<ul>\x0a\
-<li><b>Autotune<\
-/b>: modellbasie\
-rt (einige Spr\xc3\xbc\
-nge, ein angepas\
-stes Modell, Ver\
-st\xc3\xa4rkungen, die\
-\x0anicht schwingen\
-) oder nach der \
-Regel der kritis\
-chen Verst\xc3\xa4rkun\
-g. Der Vorschlag\
- wird neben den\x0a\
-jetzigen Verst\xc3\xa4\
-rkungen gezeigt;\
- <b>Vorgeschlage\
-ne Verst\xc3\xa4rkunge\
-n \xc3\xbcbernehmen</b\
-> setzt sie ins\x0a\
-Dokument (ein R\xc3\
-\xbcckg\xc3\xa4ngig-Schri\
-tt; online auch \
-ins Ventil, mit \
-Eintrag im Verla\
-uf).\x0aDauerhaft s\
-peichern mit Ven\
-til \xe2\x86\x92 Im Venti\
-l speichern.</li\
->\x0a<li><b>Frequen\
-zgang</b>: ein S\
-inus-Sweep um ei\
-nen Arbeitspunkt\
-; die Frequenzen\
- bei \xe2\x88\x923 dB und\
-\x0a\xe2\x88\x9290\xc2\xb0 (der Be\
-reich folgt dem \
-Regelkreis: 1 \xe2\x80\
-\xa6 200 Hz f\xc3\xbcr de\
-n Schieber, 0,2 \
-\xe2\x80\xa6 20 Hz f\xc3\xbcr d\
-en\x0aProzessregelk\
-reis).</li>\x0a<li>\
-<b>Statische Ken\
-nlinie</b>: ein \
-langsames Dreiec\
-k; Hysterese, Li\
-nearit\xc3\xa4t und To\
-tzone sowie\x0aein \
-Vorschlag f\xc3\xbcr d\
-ie Linearisierun\
-g.</li>\x0a<li><b>P\
-r\xc3\xbcfbericht</b>:\
- ein Abnahmeprof\
-il (Spr\xc3\xbcnge, Sw\
-eep, statische P\
-r\xc3\xbcfung und ihre\
- Grenzen)\x0ain ein\
-em Durchlauf; de\
-r Bericht nennt \
-den gepr\xc3\xbcften R\
-egelkreis, das P\
-DF nennt auf jed\
-er Seite\x0aTypschl\
-\xc3\xbcssel und Serie\
-nnummer und f\xc3\xbch\
-rt den Parameter\
-satz in Anzeigee\
-inheiten auf; di\
-e\x0aMessdaten gehe\
-n daneben in CSV\
--Dateien. Sprung\
-kennwerte werden\
- gegen den Sollw\
-ert gemessen: ei\
-n\x0aSprung, der ih\
-n nicht erreicht\
- hat, ist \xe2\x80\x9enic\
-ht erreicht\xe2\x80\x9c u\
-nd besteht nicht\
-.</li>\x0a<li><b>Ge\
-burtsurkunde</b>\
- (online): <b>Mi\
-t Geburtsurkunde\
- vergleichen</b>\
- spielt eine kur\
-ze\x0aFeldsignatur \
-(ein kleiner und\
- ein gro\xc3\x9fer Spr\
-ung in jede Rich\
-tung, ein kurzer\
- Sweep um die\x0aBa\
-ndbreite des Ven\
-tils, eine Hyste\
-reseschleife; h\xc3\
-\xb6chstens 20 s Be\
-wegung) und verg\
-leicht jeden\x0aKen\
-nwert mit der En\
-dpr\xc3\xbcfung des Ve\
-ntils, die der V\
-erlauf zu seiner\
- Seriennummer au\
-fbewahrt:\x0aheute,\
- damals, die \xc3\x84n\
-derung und die D\
-riftgrenze (der \
-Teil <code>[drif\
-t]</code> des Pr\
-ofils, z. B.\x0a<co\
-de>bode_phase90_\
-hz = { relative \
-= 15 }</code>) u\
-nd ob er gedrift\
-et ist; die heut\
-igen Spr\xc3\xbcnge\x0aun\
-d der Frequenzga\
-ng werden \xc3\xbcber \
-die der Geburtsu\
-rkunde gezeichne\
-t, <b>PDF speich\
-ern\xe2\x80\xa6</b>\x0aschre\
-ibt den Driftber\
-icht. Ohne Endpr\
-\xc3\xbcfung im Verlau\
-f sagt sie, wie \
-man eine erstell\
-t,\x0aund bewegt ni\
-chts (Befehlszei\
-le: <code>prm9to\
-ol --signature -\
--device ID --rep\
-ort drift.pdf</c\
-ode>).</li>\x0a</ul\
->\x0a\x0a<h2>Das Abnah\
-meprofil (TOML)<\
-/h2>\x0a<p>Leer: da\
-s eingebaute Pro\
-fil. Eine Datei \
-setzt, was davon\
- abweicht; jeder\
- Schl\xc3\xbcssel darf\
-\x0afehlen. <code>[\
-test]</code> und\
- <code>[limits]<\
-/code> gelten f\xc3\
-\xbcr den Lageregel\
-kreis,\x0a<code>[pr\
-ocess.test]</cod\
-e> und <code>[pr\
-ocess.limits]</c\
-ode> f\xc3\xbcr den Pr\
-ozessregelkreis \
-des\x0aE04, dessen \
-eigene Vorgaben \
-Sprungfenster vo\
-n 1,5 s, ein Swe\
-ep von 0,2 bis 2\
-0 Hz,\x0aAnstiegsze\
-it \xe2\x89\xa4 0,4 s, Au\
-sregelzeit \xe2\x89\xa4 0\
-,8 s und \xe2\x88\x923 dB\
- \xe2\x89\xa5 0,8 Hz sind\
-. Eine Grenze is\
-t\x0a<code>{ min = \
-\xe2\x80\xa6 }</code>, <c\
-ode>{ max = \xe2\x80\xa6 \
-}</code> oder be\
-ides; Zahlen in \
-der Datei mit\x0aDe\
-zimalpunkt.</p>\x0a\
-<pre>\x0aname = \x22PR\
-M9-06 Endpr\xc3\xbcfun\
-g\x22\x0a[test]\x0astep_a\
-mplitudes_pct = \
-[5, 25, 90]\x0astep\
-_duration_s = 0.\
-15\x0astatic_period\
-_s = 20\x0a[limits]\
-\x0astep_overshoot_\
-pct = { max = 15\
- }\x0astep_rise_s =\
- { max = 0.03 }\x0a\
+hieberlage (Rege\
+lungsart 2, CTRL\
+MODE). <b>Prozes\
+sregler (E04)</b\
+>: der Sollwert\x0a\
+ist der Prozessw\
+ert des externen\
+ Sensors, den de\
+r Prozessregler \
+\xc3\xbcber Schieber u\
+nd Antrieb\x0aschli\
+e\xc3\x9ft (Regelungsa\
+rt 4, die Vorein\
+stellung des E04\
+). Ein E04 in Re\
+gelungsart 4 \xc3\xb6f\
+fnet auf dem\x0aPro\
+zessregelkreis; \
+der Lageregelkre\
+is braucht Regel\
+ungsart 2, einge\
+stellt, solange \
+das Ventil\x0anicht\
+ freigegeben ist\
+.</p>\x0a\x0a<h2>E04: \
+den Prozessregel\
+kreis einstellen\
+</h2>\x0a<ol>\x0a<li>Z\
+uerst den extern\
+en Sensor einric\
+hten (die Parame\
+ter \xe2\x80\x9eExterner \
+Sensor\xe2\x80\x9c: Signa\
+ltyp\x0aSENSTYPE, P\
+olarit\xc3\xa4t, Verst\
+\xc3\xa4rkung und Offs\
+et), so dass der\
+ Prozess-Istwert\
+ dem Antrieb \xc3\xbcb\
+er\x0aseinen Bereic\
+h in der richtig\
+en Richtung folg\
+t. Im Oszillosko\
+p pr\xc3\xbcfen (Proze\
+ss-Istwert),\x0aw\xc3\xa4\
+hrend sich der A\
+ntrieb langsam b\
+ewegt.</li>\x0a<li>\
+Die Regelungsart\
+ auf 4 lassen un\
+d <b>Prozessregl\
+er (E04)</b> w\xc3\xa4\
+hlen.</li>\x0a<li>D\
+er Antrieb integ\
+riert: seine Pos\
+ition \xc3\xa4ndert si\
+ch, solange der \
+Schieber offen i\
+st. Die\x0aVorgaben\
+ des Autotune fo\
+lgen dem Regelkr\
+eis: ein Sprung \
+von 20 % und ein\
+e Ziel-Ausregelz\
+eit von\x0a500 ms (\
+die 40 ms des Sc\
+hiebers erreicht\
+ kein Antrieb). \
+F\xc3\xbcr einen langs\
+amen oder schwer\
+en\x0aAntrieb das Z\
+iel erh\xc3\xb6hen.</l\
+i>\x0a<li>Autotune \
+starten, den Vor\
+schlag pr\xc3\xbcfen (\
+die Spr\xc3\xbcnge des\
+ Profils in beid\
+e Richtungen und\
+\x0aseine statische\
+ Pr\xc3\xbcfung), \xc3\xbcbe\
+rnehmen, dann Ve\
+ntil \xe2\x86\x92 Im Vent\
+il speichern.</l\
+i>\x0a<li>Bei einem\
+ Schieber mit \xc3\x9c\
+berdeckung misst\
+ die Seite <b>Du\
+rchflusskennlini\
+e (E04)</b> die\x0a\
+Totzone und schl\
+\xc3\xa4gt OFFSETPOS/O\
+FFSETNEG f\xc3\xbcr de\
+n Prozessregelkr\
+eis vor.</li>\x0a</\
+ol>\x0a\x0a<h2>Berecht\
+igungsstufe und \
+Fehler</h2>\x0a<p>R\
+eglerverst\xc3\xa4rkun\
+gen, Linearisier\
+ungen und Offset\
+s lassen sich nu\
+r auf der Stufe\x0a\
+<b>Experte</b> \xc3\
+\xa4ndern (Ansicht \
+\xe2\x86\x92 Berechtigung\
+sstufe). Ein Tes\
+t, dessen Ergebn\
+is auf der\x0ajetzi\
+gen Stufe nicht \
+\xc3\xbcbernommen werd\
+en k\xc3\xb6nnte, frag\
+t vor dem Start;\
+ sein Ergebnis b\
+leibt auf der\x0aSe\
+ite, so dass Sie\
+ danach zu Exper\
+te wechseln und \
+es \xc3\xbcbernehmen k\
+\xc3\xb6nnen, ohne den\
+ Test zu\x0awiederh\
+olen.</p>\x0a<p>Ein\
+ Ventil, das ein\
+en Fehler h\xc3\xa4lt \
+(FAULT_HOLD, FAU\
+LT), folgt seine\
+m Sollwert nicht\
+: der Test\x0awird \
+vor dem Start ab\
+gelehnt, und die\
+ Statuszeile sag\
+t warum. Um FAUL\
+T_HOLD zu verlas\
+sen, die\x0aUrsache\
+ beseitigen (Ven\
+til \xe2\x86\x92 Ventilst\
+atus zeigt den a\
+ktiven Fehler) u\
+nd dort <b>Freig\
+eben</b>\x0adr\xc3\xbccke\
+n: sein erstes S\
+teuerwort 08h is\
+t das Fehler-R\xc3\xbc\
+cksetzen (Handbu\
+ch Tabellen 7-19\
+ und\x0a7-20, \xc3\x9cber\
+gang 10), 09h \xe2\x86\
+\x92 0Bh \xe2\x86\x92 0Fh ge\
+ben das Ventil w\
+ieder frei. Ein \
+Ventil ohne CANo\
+pen\x0averl\xc3\xa4sst ei\
+nen Fehler mit V\
+entil \xe2\x86\x92 Ventil\
+ neu starten.</p\
+>\x0a\x0a<h2>Die Seite\
+n</h2>\x0a<ul>\x0a<li>\
+<b>Autotune</b>:\
+ modellbasiert (\
+einige Spr\xc3\xbcnge,\
+ ein angepasstes\
+ Modell, Verst\xc3\xa4\
+rkungen, die\x0anic\
+ht schwingen) od\
+er nach der Rege\
+l der kritischen\
+ Verst\xc3\xa4rkung. D\
+er Vorschlag wir\
+d neben den\x0ajetz\
+igen Verst\xc3\xa4rkun\
+gen gezeigt; <b>\
+Vorgeschlagene V\
+erst\xc3\xa4rkungen \xc3\xbc\
+bernehmen</b> se\
+tzt sie ins\x0aDoku\
+ment (ein R\xc3\xbcckg\
+\xc3\xa4ngig-Schritt; \
+online auch ins \
+Ventil, mit Eint\
+rag im Verlauf).\
+\x0aDauerhaft speic\
+hern mit Ventil \
+\xe2\x86\x92 Im Ventil sp\
+eichern.</li>\x0a<l\
+i><b>Frequenzgan\
+g</b>: ein Sinus\
+-Sweep um einen \
+Arbeitspunkt; di\
+e Frequenzen bei\
+ \xe2\x88\x923 dB und\x0a\xe2\x88\x92\
+90\xc2\xb0 (der Bereic\
+h folgt dem Rege\
+lkreis: 1 \xe2\x80\xa6 20\
+0 Hz f\xc3\xbcr den Sc\
+hieber, 0,2 \xe2\x80\xa6 \
+20 Hz f\xc3\xbcr den\x0aP\
+rozessregelkreis\
+).</li>\x0a<li><b>S\
+tatische Kennlin\
+ie</b>: ein lang\
+sames Dreieck; H\
+ysterese, Linear\
+it\xc3\xa4t und Totzon\
+e sowie\x0aein Vors\
+chlag f\xc3\xbcr die L\
+inearisierung.</\
+li>\x0a<li><b>Pr\xc3\xbcf\
+bericht</b>: ein\
+ Abnahmeprofil (\
+Spr\xc3\xbcnge, Sweep,\
+ statische Pr\xc3\xbcf\
+ung und ihre Gre\
+nzen)\x0ain einem D\
+urchlauf; der Be\
+richt nennt den \
+gepr\xc3\xbcften Regel\
+kreis, das PDF n\
+ennt auf jeder S\
+eite\x0aTypschl\xc3\xbcss\
+el und Seriennum\
+mer und f\xc3\xbchrt d\
+en Parametersatz\
+ in Anzeigeeinhe\
+iten auf; die\x0aMe\
+ssdaten gehen da\
+neben in CSV-Dat\
+eien. Sprungkenn\
+werte werden geg\
+en den Sollwert \
+gemessen: ein\x0aSp\
+rung, der ihn ni\
+cht erreicht hat\
+, ist \xe2\x80\x9enicht e\
+rreicht\xe2\x80\x9c und b\
+esteht nicht.</l\
+i>\x0a<li><b>Geburt\
+surkunde</b> (on\
+line): <b>Mit Ge\
+burtsurkunde ver\
+gleichen</b> spi\
+elt eine kurze\x0aF\
+eldsignatur (ein\
+ kleiner und ein\
+ gro\xc3\x9fer Sprung \
+in jede Richtung\
+, ein kurzer Swe\
+ep um die\x0aBandbr\
+eite des Ventils\
+, eine Hysterese\
+schleife; h\xc3\xb6chs\
+tens 20 s Bewegu\
+ng) und vergleic\
+ht jeden\x0aKennwer\
+t mit der Endpr\xc3\
+\xbcfung des Ventil\
+s, die der Verla\
+uf zu seiner Ser\
+iennummer aufbew\
+ahrt:\x0aheute, dam\
+als, die \xc3\x84nderu\
+ng und die Drift\
+grenze (der Teil\
+ <code>[drift]</\
+code> des Profil\
+s, z. B.\x0a<code>b\
+ode_phase90_hz =\
+ { relative = 15\
+ }</code>) und o\
+b er gedriftet i\
+st; die heutigen\
+ Spr\xc3\xbcnge\x0aund de\
+r Frequenzgang w\
+erden \xc3\xbcber die \
+der Geburtsurkun\
+de gezeichnet, <\
+b>PDF speichern\xe2\
+\x80\xa6</b>\x0aschreibt \
+den Driftbericht\
+. Ohne Endpr\xc3\xbcfu\
+ng im Verlauf sa\
+gt sie, wie man \
+eine erstellt,\x0au\
+nd bewegt nichts\
+ (Befehlszeile: \
+<code>prm9tool -\
+-signature --dev\
+ice ID --report \
+drift.pdf</code>\
+).</li>\x0a</ul>\x0a\x0a<\
+h2>Das Abnahmepr\
+ofil (TOML)</h2>\
+\x0a<p>Leer: das ei\
+ngebaute Profil.\
+ Eine Datei setz\
+t, was davon abw\
+eicht; jeder Sch\
+l\xc3\xbcssel darf\x0afeh\
+len. <code>[test\
+]</code> und <co\
+de>[limits]</cod\
+e> gelten f\xc3\xbcr d\
+en Lageregelkrei\
+s,\x0a<code>[proces\
+s.test]</code> u\
+nd <code>[proces\
+s.limits]</code>\
+ f\xc3\xbcr den Prozes\
+sregelkreis des\x0a\
+E04, dessen eige\
+ne Vorgaben Spru\
+ngfenster von 1,\
+5 s, ein Sweep v\
+on 0,2 bis 20 Hz\
+,\x0aAnstiegszeit \xe2\
+\x89\xa4 0,4 s, Ausreg\
+elzeit \xe2\x89\xa4 0,8 s\
+ und \xe2\x88\x923 dB \xe2\x89\xa5\
+ 0,8 Hz sind. Ei\
+ne Grenze ist\x0a<c\
+ode>{ min = \xe2\x80\xa6 \
+}</code>, <code>\
+{ max = \xe2\x80\xa6 }</c\
+ode> oder beides\
+; Zahlen in der \
+Datei mit\x0aDezima\
+lpunkt.</p>\x0a<pre\
+>\x0aname = \x22PRM9-0\
+6 Endpr\xc3\xbcfung\x22\x0a[\
+test]\x0astep_ampli\
+tudes_pct = [5, \
+25, 90]\x0astep_dur\
+ation_s = 0.15\x0as\
+tatic_period_s =\
+ 20\x0a[limits]\x0aste\
+p_overshoot_pct \
+= { max = 15 }\x0as\
+tep_rise_s = { m\
+ax = 0.03 }\x0abode\
+_bandwidth_hz = \
+{ min = 15 }\x0asta\
+tic_hysteresis_p\
+ct = { max = 2 }\
+\x0a\x0a[process.test]\
+      # E04 in R\
+egelungsart 4\x0ast\
+ep_duration_s = \
+2.0\x0a[process.lim\
+its]\x0astep_rise_s\
+ = { max = 0.5 }\
+\x0astep_settling_s\
+ = { max = 1.0 }\
+\x0aflow_gain = { m\
+in = 3 }\x0a</pre>\x0a\
+<p>Kennwerte: st\
+ep_overshoot_pct\
+, step_rise_s, s\
+tep_settling_s, \
 bode_bandwidth_h\
-z = { min = 15 }\
-\x0astatic_hysteres\
-is_pct = { max =\
- 2 }\x0a\x0a[process.t\
-est]      # E04 \
-in Regelungsart \
-4\x0astep_duration_\
-s = 2.0\x0a[process\
-.limits]\x0astep_ri\
-se_s = { max = 0\
-.5 }\x0astep_settli\
-ng_s = { max = 1\
-.0 }\x0aflow_gain =\
- { min = 3 }\x0a</p\
-re>\x0a<p>Kennwerte\
-: step_overshoot\
-_pct, step_rise_\
-s, step_settling\
-_s, bode_bandwid\
-th_hz,\x0abode_phas\
-e90_hz, static_g\
-ain, static_hyst\
-eresis_pct, stat\
-ic_linearity_pct\
-,\x0astatic_dead_ba\
-nd_pct, flow_gai\
-n, flow_dead_ban\
-d_pct. Ein unbek\
-annter Schl\xc3\xbcsse\
-l oder ein falsc\
-her\x0aWert wird mi\
-t Datei und Schl\
-\xc3\xbcssel abgelehnt\
-.</p>\x0a<p>Die Kar\
-te <b>Sprungantw\
-ort</b> des Oszi\
-lloskops misst \xc3\
-\x9cberschwingen, A\
-nstiegs- und\x0aAus\
-regelzeit jedes \
-gezeigten Sprung\
-s.</p>\x0a</body>\x0a<\
-/html>\x0a\
+z,\x0abode_phase90_\
+hz, static_gain,\
+ static_hysteres\
+is_pct, static_l\
+inearity_pct,\x0ast\
+atic_dead_band_p\
+ct, flow_gain, f\
+low_dead_band_pc\
+t. Ein unbekannt\
+er Schl\xc3\xbcssel od\
+er ein falscher\x0a\
+Wert wird mit Da\
+tei und Schl\xc3\xbcss\
+el abgelehnt.</p\
+>\x0a<p>Die Karte <\
+b>Sprungantwort<\
+/b> des Oszillos\
+kops misst \xc3\x9cber\
+schwingen, Ansti\
+egs- und\x0aAusrege\
+lzeit jedes geze\
+igten Sprungs.</\
+p>\x0a</body>\x0a</htm\
+l>\x0a\
 \x00\x00\x06\x87\
 <\
 !DOCTYPE html>\x0a<\
@@ -3031,14 +3031,14 @@ ap\xc3\xad\xc5\xa1e dvojklik\
 objekt.</li>\x0a<li\
 >N\xc3\xa1hled \xe2\x86\x92 <b>\
 Okno CANopen</b>\
-: ID uzlu, p\xc5\x99en\
+: Node ID, p\xc5\x99en\
 osov\xc3\xa1 rychlost \
 a zakon\xc4\x8dovac\xc3\xad \
 odpor. Ventil \xc4\x8d\
 te\x0asv\xc3\xa9 oto\xc4\x8dn\xc3\xa9\
  p\xc5\x99ep\xc3\xadna\xc4\x8de po\
  zapnut\xc3\xad; zm\xc4\x9bn\
-\xc4\x9bn\xc3\xa9 ID uzlu ne\
+\xc4\x9bn\xc3\xa9 Node ID ne\
 bo rychlost plat\
 \xc3\xad po restartu a\
  po Ventil \xe2\x86\x92\x0aR\
@@ -5059,33 +5059,33 @@ qt_resource_struct = b"\
 \x00\x00\x00\x00\x00\x02\x00\x00\x00\x02\x00\x00\x00\x01\
 \x00\x00\x00\x10\x00\x02\x00\x00\x00\x10\x00\x00\x00\x10\
 \x00\x00\x00\x00\x00\x02\x00\x00\x00\x0d\x00\x00\x00\x03\
-\x00\x00\x02\xb6\x00\x00\x00\x00\x00\x01\x00\x01\x22>\
-\x00\x00\x02L\x00\x00\x00\x00\x00\x01\x00\x01\x1c\xa0\
-\x00\x00\x03X\x00\x00\x00\x00\x00\x01\x00\x01,t\
-\x00\x00\x02\xd0\x00\x00\x00\x00\x00\x01\x00\x01#k\
-\x00\x00\x022\x00\x00\x00\x00\x00\x01\x00\x01\x1a\xda\
-\x00\x00\x03t\x00\x00\x00\x00\x00\x01\x00\x01.\x0c\
-\x00\x00\x02\xe8\x00\x00\x00\x00\x00\x01\x00\x01%:\
-\x00\x00\x03:\x00\x00\x00\x00\x00\x01\x00\x01*\xc8\
-\x00\x00\x02d\x00\x00\x00\x00\x00\x01\x00\x01\x1eF\
-\x00\x00\x03\x04\x00\x00\x00\x00\x00\x01\x00\x01'\x03\
-\x00\x00\x02\x80\x00\x00\x00\x00\x00\x01\x00\x01\x1fC\
-\x00\x00\x02\x9c\x00\x00\x00\x00\x00\x01\x00\x01 \xfc\
-\x00\x00\x03\x18\x00\x00\x00\x00\x00\x01\x00\x01)\x87\
-\x00\x00\x01J\x00\x00\x00\x00\x00\x01\x00\x00\xadV\
-\x00\x00\x00\xe6\x00\x00\x00\x00\x00\x01\x00\x00f\xea\
-\x00\x00\x01\xac\x00\x00\x00\x00\x00\x01\x00\x00\xddL\
+\x00\x00\x02\xb6\x00\x00\x00\x00\x00\x01\x00\x01\x22:\
+\x00\x00\x02L\x00\x00\x00\x00\x00\x01\x00\x01\x1c\x9c\
+\x00\x00\x03X\x00\x00\x00\x00\x00\x01\x00\x01,p\
+\x00\x00\x02\xd0\x00\x00\x00\x00\x00\x01\x00\x01#g\
+\x00\x00\x022\x00\x00\x00\x00\x00\x01\x00\x01\x1a\xd6\
+\x00\x00\x03t\x00\x00\x00\x00\x00\x01\x00\x01.\x08\
+\x00\x00\x02\xe8\x00\x00\x00\x00\x00\x01\x00\x01%6\
+\x00\x00\x03:\x00\x00\x00\x00\x00\x01\x00\x01*\xc4\
+\x00\x00\x02d\x00\x00\x00\x00\x00\x01\x00\x01\x1eB\
+\x00\x00\x03\x04\x00\x00\x00\x00\x00\x01\x00\x01&\xff\
+\x00\x00\x02\x80\x00\x00\x00\x00\x00\x01\x00\x01\x1f?\
+\x00\x00\x02\x9c\x00\x00\x00\x00\x00\x01\x00\x01 \xf8\
+\x00\x00\x03\x18\x00\x00\x00\x00\x00\x01\x00\x01)\x83\
+\x00\x00\x01J\x00\x00\x00\x00\x00\x01\x00\x00\xadR\
+\x00\x00\x00\xe6\x00\x00\x00\x00\x00\x01\x00\x00f\xe6\
+\x00\x00\x01\xac\x00\x00\x00\x00\x00\x01\x00\x00\xddH\
 \x00\x00\x00\xc4\x00\x00\x00\x00\x00\x01\x00\x00K^\
-\x00\x00\x01\x0a\x00\x00\x00\x00\x00\x01\x00\x00mu\
-\x00\x00\x01\x8a\x00\x00\x00\x00\x00\x01\x00\x00\xc4\x98\
+\x00\x00\x01\x0a\x00\x00\x00\x00\x00\x01\x00\x00mq\
+\x00\x00\x01\x8a\x00\x00\x00\x00\x00\x01\x00\x00\xc4\x94\
 \x00\x00\x00:\x00\x00\x00\x00\x00\x01\x00\x00\x10\x11\
-\x00\x00\x02\x0a\x00\x00\x00\x00\x00\x01\x00\x01\x13\x1b\
+\x00\x00\x02\x0a\x00\x00\x00\x00\x00\x01\x00\x01\x13\x17\
 \x00\x00\x00\x82\x00\x00\x00\x00\x00\x01\x00\x00\x1e\xd7\
-\x00\x00\x01,\x00\x00\x00\x00\x00\x01\x00\x00\x87\xdd\
-\x00\x00\x01\xd0\x00\x00\x00\x00\x00\x01\x00\x00\xe41\
-\x00\x00\x01n\x00\x00\x00\x00\x00\x01\x00\x00\xb5\x01\
+\x00\x00\x01,\x00\x00\x00\x00\x00\x01\x00\x00\x87\xd9\
+\x00\x00\x01\xd0\x00\x00\x00\x00\x00\x01\x00\x00\xe4-\
+\x00\x00\x01n\x00\x00\x00\x00\x00\x01\x00\x00\xb4\xfd\
 \x00\x00\x00\x1e\x00\x00\x00\x00\x00\x01\x00\x00\x00\x00\
-\x00\x00\x01\xee\x00\x00\x00\x00\x00\x01\x00\x01\x04\x94\
+\x00\x00\x01\xee\x00\x00\x00\x00\x00\x01\x00\x01\x04\x90\
 \x00\x00\x00^\x00\x00\x00\x00\x00\x01\x00\x00\x15\xff\
 \x00\x00\x00\xa0\x00\x00\x00\x00\x00\x01\x00\x00B\xfc\
 "
