@@ -557,11 +557,11 @@ Die letzte Aktion wurde womöglich nicht vollständig ausgeführt. Speichern Sie
         </message>
         <message>
             <source>The valve reads its two rotary switches at power-up only; the marked rows are the positions it read at its last start. Terminator, node ID and bit rate set here are stored in the valve and take effect after the next restart.</source>
-            <translation>Das Ventil liest seine beiden Drehschalter nur beim Einschalten; die markierten Zeilen sind die beim letzten Start gelesenen Stellungen. Hier eingestellter Abschlusswiderstand, Node-ID und Baudrate werden im Ventil gespeichert und nach dem nächsten Neustart wirksam.</translation>
+            <translation>Das Ventil liest seine beiden Drehschalter nur beim Einschalten; die markierten Zeilen sind die beim letzten Start gelesenen Stellungen. Hier eingestellter Abschlusswiderstand, Node-ID und Bitrate werden im Ventil gespeichert und nach dem nächsten Neustart wirksam.</translation>
         </message>
         <message>
             <source>Interface / bit-rate switch</source>
-            <translation>Schalter Schnittstelle / Baudrate</translation>
+            <translation>Schalter Schnittstelle / Bitrate</translation>
         </message>
         <message>
             <source>Node-ID switch</source>
@@ -577,7 +577,7 @@ Die letzte Aktion wurde womöglich nicht vollständig ausgeführt. Speichern Sie
         </message>
         <message>
             <source>Interface / bit rate</source>
-            <translation>Schnittstelle / Baudrate</translation>
+            <translation>Schnittstelle / Bitrate</translation>
         </message>
         <message>
             <source>Terminator</source>
@@ -597,7 +597,7 @@ Die letzte Aktion wurde womöglich nicht vollständig ausgeführt. Speichern Sie
         </message>
         <message>
             <source>Bit rate (node switch at 0)</source>
-            <translation>Baudrate (Node-Schalter auf 0)</translation>
+            <translation>Bitrate (Node-Schalter auf 0)</translation>
         </message>
         <message>
             <source>on</source>
@@ -609,11 +609,11 @@ Die letzte Aktion wurde womöglich nicht vollständig ausgeführt. Speichern Sie
         </message>
         <message>
             <source>Overridden: with the node-ID switch at 1 (LSS) the valve detects the bit rate of the bus.</source>
-            <translation>Außer Kraft: Steht der Node-ID-Schalter auf 1 (LSS), erkennt das Ventil die Baudrate des Busses.</translation>
+            <translation>Außer Kraft: Steht der Node-ID-Schalter auf 1 (LSS), erkennt das Ventil die Bitrate des Busses.</translation>
         </message>
         <message>
             <source>Overridden: with the node-ID switch at 0 the bit rate set by software below applies.</source>
-            <translation>Außer Kraft: Steht der Node-ID-Schalter auf 0, gilt die unten per Software eingestellte Baudrate.</translation>
+            <translation>Außer Kraft: Steht der Node-ID-Schalter auf 0, gilt die unten per Software eingestellte Bitrate.</translation>
         </message>
         <message>
             <source>CANopen off, analog setpoint only</source>
@@ -637,7 +637,7 @@ Die letzte Aktion wurde womöglich nicht vollständig ausgeführt. Speichern Sie
         </message>
         <message>
             <source>LSS, automatic bit rate</source>
-            <translation>LSS, automatische Baudrate</translation>
+            <translation>LSS, automatische Bitrate</translation>
         </message>
         <message>
             <source>Position read by the valve at its last power-up</source>
@@ -673,15 +673,15 @@ Die letzte Aktion wurde womöglich nicht vollständig ausgeführt. Speichern Sie
         </message>
         <message>
             <source>automatic bit rate</source>
-            <translation>automatische Baudrate</translation>
+            <translation>automatische Bitrate</translation>
         </message>
         <message>
             <source>The node-ID switch is at 0: node ID and bit rate are the ones set below (the interface switch's bit rate is struck through); its positions 9…F still switch the terminator on.</source>
-            <translation>Der Node-ID-Schalter steht auf 0: Node-ID und Baudrate sind die unten eingestellten (die Baudrate des Schnittstellenschalters ist durchgestrichen); seine Stellungen 9…F schalten den Abschlusswiderstand trotzdem ein.</translation>
+            <translation>Der Node-ID-Schalter steht auf 0: Node-ID und Bitrate sind die unten eingestellten (die Bitrate des Schnittstellenschalters ist durchgestrichen); seine Stellungen 9…F schalten den Abschlusswiderstand trotzdem ein.</translation>
         </message>
         <message>
             <source>The node-ID switch is at 1 (LSS, automatic bit rate): the interface switch has no function, the terminator follows the setting below.</source>
-            <translation>Der Node-ID-Schalter steht auf 1 (LSS, automatische Baudrate): Der Schnittstellenschalter hat keine Funktion, der Abschlusswiderstand folgt der Einstellung unten.</translation>
+            <translation>Der Node-ID-Schalter steht auf 1 (LSS, automatische Bitrate): Der Schnittstellenschalter hat keine Funktion, der Abschlusswiderstand folgt der Einstellung unten.</translation>
         </message>
         <message>
             <source>After the next restart the valve uses:</source>
@@ -1493,7 +1493,7 @@ Die letzte Aktion wurde womöglich nicht vollständig ausgeführt. Speichern Sie
         </message>
         <message>
             <source>auto bit rate</source>
-            <translation>Baudrate auto</translation>
+            <translation>Bitrate auto</translation>
         </message>
         <message>
             <source>Node ID %1 · %2</source>

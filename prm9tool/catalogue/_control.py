@@ -259,7 +259,7 @@ CANOPEN_SETTINGS: list[Parameter] = [
         choices=_BITRATES,
         text=T(
             "CANopen bit rate (node switch at 0)",
-            "CANopen-Baudrate (Schalter auf 0)",
+            "CANopen-Bitrate (Schalter auf 0)",
             "Přenosová rychlost CANopen (přepínač v poloze 0)",
         ),
         source="table 7-1 (object 0x2030/2: decision)",

@@ -135,7 +135,7 @@ LIVE: list[Parameter] = [
         applies=CA_ONLY,
         text=T(
             "Interface/bit-rate switch position",
-            "Stellung Schalter Schnittstelle/Baudrate",
+            "Stellung Schalter Schnittstelle/Bitrate",
             "Poloha přepínače rozhraní/přenosová rychlost",
         ),
         source="table 7-17, 7-22 (object: decision)",
