@@ -76,6 +76,19 @@ class ScopeDisplay(QObject):
         self._legend_ticks = 0  # the first values of the new recording at once (not "at stop")
         self.plot.set_time_interactive(False)
 
+    def clear(self) -> None:
+        """Drop the held recording: the plot no longer shows it (its channels were set anew,
+        a file was opened, another valve is online), so neither do the read-outs, the
+        export or the legend's values at Stop."""
+        self.capture = None
+        self._frame = None
+        self._shown = EMPTY
+        self._frozen = None
+        self._drawn_total = -1
+        self._legend_held = False
+        self.plot.set_time_interactive(False)
+        self.update_readouts()
+
     def set_trigger(self, settings: TriggerSettings, window_s: float) -> None:
         """New trigger set-up or time window; searching starts at the newest sample."""
         rate = self.capture.rate_hz if self.capture is not None else 1

@@ -15,6 +15,7 @@ grid is an opaque item of its own under all three views, the y axes are cached p
 
 from __future__ import annotations
 
+import math
 import re
 from collections.abc import Sequence
 
@@ -147,9 +148,11 @@ class ScopePlot(QWidget):
 
     # --- channels and data ---------------------------------------------------------------------
     def set_channels(self, signals: Sequence[MeasuringPoint]) -> None:
-        """Show one axis, curve and legend entry per signal (at most three)."""
+        """Show one axis, curve and legend entry per signal (at most three), with nothing
+        drawn: the values of the trace that goes go with it (no "at stop:" above no trace)."""
         for slot in range(MAX_CHANNELS):
             self.legend[slot].setVisible(slot < len(signals))
+            self.legend[slot].set_value(math.nan)
             self.curves[slot].setData([], [])
             self._auto[slot] = True
         self._channels = len(signals)

@@ -279,11 +279,12 @@ class ScopeWidget(QWidget):
         self.controls.set_channels(signals)
         self.cursor_panel.set_channels(signals)
         self.step_panel.set_channels(signals)
-        if self._running:
-            if keys:
-                self._start_capture(keys)
-            else:
+        if self._running and keys:
+            self._start_capture(keys)
+        else:  # the plot dropped the held trace: its data and values at Stop go with it
+            if self._running:
                 self.stop()
+            self.display.clear()
         self._update_controls()
 
     def _on_rate_changed(self, _rate: int) -> None:
