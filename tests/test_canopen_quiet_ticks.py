@@ -12,16 +12,15 @@ dictionary and device state after every step.
 
 from __future__ import annotations
 
-import contextlib
 import random
 import struct
 from typing import Any
 
 import pytest
+from support.valve_steps import run_step, sdo_download
 
 from prm9tool.device.emulator import EmulatedValve, Fault
 from prm9tool.device.emulator.kernels import compiled_unavailable
-from prm9tool.errors import SdoAbortError
 
 pytestmark = pytest.mark.skipif(
     compiled_unavailable() is not None, reason=f"compiled kernel: {compiled_unavailable()}"
@@ -57,11 +56,6 @@ def _valve(quiet: bool) -> tuple[EmulatedValve, TimedRecorder, Any]:
     return valve, bus, slave
 
 
-def _sdo(index: int, sub: int, value: int, size: int) -> bytes:
-    command = {1: 0x2F, 2: 0x2B, 4: 0x23}[size]
-    return struct.pack("<BHB", command, index, sub) + value.to_bytes(4, "little", signed=value < 0)
-
-
 def _steps(seed: int) -> list[tuple[str, Any]]:
     rng = random.Random(seed)
     steps: list[tuple[str, Any]] = [("advance", 2.0)]
@@ -72,10 +66,10 @@ def _steps(seed: int) -> list[tuple[str, Any]]:
         (0x1006, 0, 4000, 4),  # SYNC every 4 ms
         (0x1800, 2, 1, 1),
     ):
-        steps.append(("frame", (0x600 + NODE, _sdo(index, sub, value, size))))
+        steps.append(("frame", (0x600 + NODE, sdo_download(index, sub, value, size))))
     steps.append(("frame", (0, bytes((1, NODE)))))
     for word in (8, 9, 11, 15):
-        steps.append(("frame", (0x600 + NODE, _sdo(0x6040, 0, word, 2))))
+        steps.append(("frame", (0x600 + NODE, sdo_download(0x6040, 0, word, 2))))
     for _ in range(STEPS):
         kind = rng.random()
         if kind < 0.25:
@@ -95,7 +89,9 @@ def _steps(seed: int) -> list[tuple[str, Any]]:
                     (0x1006, 0, 4, (0, 1000, 4000)),
                 )
             )
-            steps.append(("frame", (0x600 + NODE, _sdo(index, sub, rng.choice(values), size))))
+            steps.append(
+                ("frame", (0x600 + NODE, sdo_download(index, sub, rng.choice(values), size)))
+            )
         elif kind < 0.84:
             index, sub, values = rng.choice(  # read by the slave's 10 ms poll
                 ((0x1017, 0, (0, 3, 11)), (0x1801, 5, (0, 9, 40)), (0x1800, 2, (1, 2, 3)))
@@ -114,23 +110,6 @@ def _steps(seed: int) -> list[tuple[str, Any]]:
     return steps
 
 
-def _run(valve: EmulatedValve, slave: Any, step: tuple[str, Any]) -> None:
-    kind, arg = step
-    if kind == "frame":
-        slave.receive_data(*arg, 0.0)
-    elif kind == "advance":
-        valve.advance(arg)
-    elif kind == "usb":
-        with contextlib.suppress(SdoAbortError):  # both refuse alike (their dictionaries agree)
-            valve.write(*arg)
-    elif kind == "inject":
-        valve.inject(arg)
-    elif kind == "clear":
-        valve.clear(arg)
-    elif kind == "restart":
-        valve.restart()
-
-
 def _state(valve: EmulatedValve) -> tuple[Any, ...]:
     fw = valve.firmware
     return (sorted(fw.od.values.items()), fw.sm.state, fw.faults.code(), fw.time, fw.ticks)
@@ -141,7 +120,7 @@ def test_passing_quiet_1_ms_tasks_sends_the_same_frames_at_the_same_time(seed: i
     quiet, python = _valve(quiet=True), _valve(quiet=False)
     for number, step in enumerate(_steps(seed)):
         for valve, _, slave in (quiet, python):
-            _run(valve, slave, step)
+            run_step(valve, slave, step)
         assert quiet[1].frames == python[1].frames, f"step {number}: {step}"
         assert _state(quiet[0]) == _state(python[0]), f"step {number}: {step}"
     sent = {can_id for _, can_id, _ in quiet[1].frames}
@@ -158,8 +137,8 @@ def test_an_operational_valve_leaves_few_1_ms_tasks_to_python(
     valve, bus, slave = _valve(quiet=True)
     valve.advance(2.0)
     for word in (8, 9, 11, 15):
-        slave.receive_data(0x600 + NODE, _sdo(0x6040, 0, word, 2), 0.0)
-    slave.receive_data(0x600 + NODE, _sdo(0x1801, 2, 1, 1), 0.0)  # TPDO2 on SYNC too
+        slave.receive_data(0x600 + NODE, sdo_download(0x6040, 0, word, 2), 0.0)
+    slave.receive_data(0x600 + NODE, sdo_download(0x1801, 2, 1, 1), 0.0)  # TPDO2 on SYNC too
     slave.receive_data(0, bytes((1, NODE)), 0.0)
     fw = valve.firmware
     python_tick = fw.tick

@@ -17,6 +17,7 @@ import struct
 from typing import Any
 
 import pytest
+from support.valve_steps import run_step, sdo_download
 
 from prm9tool.catalogue import CATALOGUE
 from prm9tool.device.emulator import EmulatedValve, Fault, kernels
@@ -91,23 +92,18 @@ def _state(valve: EmulatedValve, versions: bool = True) -> tuple[Any, ...]:
     )
 
 
-def _sdo(index: int, sub: int, value: int, size: int) -> bytes:
-    command = {1: 0x2F, 2: 0x2B, 4: 0x23}[size]
-    return struct.pack("<BHB", command, index, sub) + value.to_bytes(4, "little", signed=value < 0)
-
-
 def _steps(seed: int, process: bool) -> list[tuple[str, Any]]:
     """The scenario: commissioning as the PLC rig does it, then random steps."""
     rng = random.Random(seed)
     steps: list[tuple[str, Any]] = [
         ("advance", 2.0),
-        ("frame", (0x600 + NODE, _sdo(0x1800, 2, 1, 1))),
+        ("frame", (0x600 + NODE, sdo_download(0x1800, 2, 1, 1))),
     ]
     if process:
-        steps.append(("frame", (0x600 + NODE, _sdo(0x6043, 0, 4, 1))))
+        steps.append(("frame", (0x600 + NODE, sdo_download(0x6043, 0, 4, 1))))
     steps.append(("frame", (0, bytes((1, NODE)))))
     for word in (8, 9, 11, 15):
-        steps.append(("frame", (0x600 + NODE, _sdo(0x6040, 0, word, 2))))
+        steps.append(("frame", (0x600 + NODE, sdo_download(0x6040, 0, word, 2))))
     monthres = CATALOGUE["MONTHRES"]
     for _ in range(STEPS):
         kind = rng.random()
@@ -125,14 +121,17 @@ def _steps(seed: int, process: bool) -> list[tuple[str, Any]]:
         elif kind < 0.89:
             value = rng.choice((0, 50, 400, 2000, 16384))
             steps.append(
-                ("frame", (0x600 + NODE, _sdo(monthres.index, monthres.subindex, value, 2)))
+                ("frame", (0x600 + NODE, sdo_download(monthres.index, monthres.subindex, value, 2)))
             )
         elif kind < 0.91:
             value = rng.randint(-16384, 16384)
-            steps.append(("frame", (0x600 + NODE, _sdo(0x6300, 1, value, 2))))
+            steps.append(("frame", (0x600 + NODE, sdo_download(0x6300, 1, value, 2))))
         elif kind < 0.93:
             steps.append(
-                ("frame", (0x600 + NODE, _sdo(0x1800, 2, rng.choice((0, 1, 1, 1, 2, 255)), 1)))
+                (
+                    "frame",
+                    (0x600 + NODE, sdo_download(0x1800, 2, rng.choice((0, 1, 1, 1, 2, 255)), 1)),
+                )
             )
         elif kind < 0.95:
             steps.append((rng.choice(("inject", "clear")), rng.choice(list(Fault))))
@@ -147,23 +146,6 @@ def _steps(seed: int, process: bool) -> list[tuple[str, Any]]:
     return steps
 
 
-def _run(valve: EmulatedValve, slave: Any, step: tuple[str, Any]) -> None:
-    kind, arg = step
-    if kind == "frame":
-        can_id, data = arg
-        slave.receive_data(can_id, data, 0.0)
-    elif kind == "advance":
-        valve.advance(arg)
-    elif kind == "inject":
-        valve.inject(arg)
-    elif kind == "clear":
-        valve.clear(arg)
-    elif kind == "input":
-        valve.set_input(*arg)
-    elif kind == "restart":
-        valve.restart()
-
-
 @pytest.mark.parametrize(("type_key", "seed"), [(E02, 1), (E02, 2), (E04, 3)])
 def test_fast_pdo_paths_send_and_store_what_the_object_dictionary_does(type_key: str, seed: int):
     valves = [
@@ -172,7 +154,7 @@ def test_fast_pdo_paths_send_and_store_what_the_object_dictionary_does(type_key:
     ]
     for number, step in enumerate(_steps(seed, process=type_key == E04)):
         for valve, _, slave in valves:
-            _run(valve, slave, step)
+            run_step(valve, slave, step)
         first = valves[0]
         for k, other in enumerate(valves[1:], 1):
             assert other[1].frames == first[1].frames, f"step {number}: {step}"
