@@ -148,8 +148,8 @@ class ScopePlot(QWidget):
 
     # --- channels and data ---------------------------------------------------------------------
     def set_channels(self, signals: Sequence[MeasuringPoint]) -> None:
-        """Show one axis, curve and legend entry per signal (at most three), with nothing
-        drawn: the values of the trace that goes go with it (no "at stop:" above no trace)."""
+        """Show one axis, curve and legend entry per signal (at most three), nothing drawn
+        yet: a trace's legend values leave with it (no "at stop:" above an empty plot)."""
         for slot in range(MAX_CHANNELS):
             self.legend[slot].setVisible(slot < len(signals))
             self.legend[slot].set_value(math.nan)
