@@ -137,6 +137,14 @@ def minimal_cascade(cycles: int) -> float:
     return x
 
 
+def _operational_and_enabled(valve: EmulatedValve) -> None:
+    """Booted, NMT OPERATIONAL, DEVICE_MODE_ACTIVE by the manual's 08h → 09h → 0Bh → 0Fh."""
+    valve.advance(2.0)
+    valve.nmt_command(1)
+    for word in (0x08, 0x09, 0x0B, 0x0F):
+        valve.write(0x6040, 0, word)
+
+
 def can_valve_cycle_s(seconds: float, repeat: int, quiet: bool) -> float:
     """Best-of-repeat time per cycle of an E02 -CA valve OPERATIONAL on a (virtual) bus in
     simulated time, 0.1 s a step: the CANopen slave's quiet 1 ms tasks passed by the compiled
@@ -144,10 +152,7 @@ def can_valve_cycle_s(seconds: float, repeat: int, quiet: bool) -> float:
     bus = can.Bus(interface="virtual", channel=f"bench-emulator-quiet-{time.monotonic_ns()}")
     valve = new_valve("compiled", TYPE_KEYS["E02"])
     slave = valve.connect_can(bus, receive=False)
-    valve.advance(2.0)
-    valve.nmt_command(1)
-    for word in (0x08, 0x09, 0x0B, 0x0F):
-        valve.write(0x6040, 0, word)
+    _operational_and_enabled(valve)
     if not quiet:
         valve.firmware.cycle_quiet = {}
     times = []
@@ -172,10 +177,7 @@ def paced_bus_share(count: int, seconds: float, kernel_name: str) -> tuple[float
     for position, bus in enumerate(buses, start=2):  # node switch 2…: node IDs 10, 15, ...
         valve = new_valve(kernel_name, TYPE_KEYS["E04"], switches=(6, position))
         slaves.append(valve.connect_can(bus))
-        valve.advance(2.0)  # booted
-        valve.nmt_command(1)  # operational
-        for word in (0x01, 0x03, 0x07, 0x0F):  # enabled: the loop controls
-            valve.write(0x6040, 0, word)
+        _operational_and_enabled(valve)
         valve.write(0x6300, 1, 4000)  # a setpoint, as an RPDO would bring it
         valves.append(valve)
     sims = [v.time for v in valves]

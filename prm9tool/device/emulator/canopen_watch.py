@@ -24,6 +24,8 @@ import time
 from collections.abc import Callable, Sequence
 from typing import Protocol
 
+from prm9tool.device.emulator.fasttick import MAX_TICKS
+
 SYNC_TIMEOUT_FACTOR = 1.5  # decision: SYNC missing for 1.5 x 0x1006 = SYNC error (8100h)
 RX_POLL_S = 0.1  # the receive thread looks at its stop flag at least this often
 MAX_AGE_S = 5.0  # a time stamp older than this (or in the future) is not a reception time
@@ -33,7 +35,7 @@ MAX_AGE_S = 5.0  # a time stamp older than this (or in the future) is not a rece
 # of a few ms is still answered
 LATE_SYNC_MS = 10.0
 LATE_SYNC_PERIODS = 2.0
-QUIET_FOREVER = 2**31 - 1  # no deadline armed: no 1 ms task judges anything
+QUIET_FOREVER = MAX_TICKS  # no deadline armed: no 1 ms task judges anything
 
 
 class Deadline(Protocol):
